@@ -1,0 +1,439 @@
+import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs';
+import type { PhysicsWorld } from './world';
+import {
+  assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
+} from './validate';
+
+/**
+ * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of
+ * bitecs' `addEntity` so that the capacity is enforced where the entity is made.
+ * @returns the new entity id (>= 1; ids of removed entities are reused).
+ * @throws RangeError if the world already holds `capacity` entities.
+ */
+export function createEntity(world: PhysicsWorld): number {
+  if (world.entityIndex.aliveCount >= world.capacity) {
+    throw new RangeError(
+      `createEntity: the world is full (capacity ${world.capacity} entities); remove entities or create the world with a larger capacity`,
+    );
+  }
+  const eid = addEntity(world);
+  world.spawnStamp[eid] = world.spawnStamp[eid]! + 1;
+  return eid;
+}
+
+/** Options of `addBody`. Vectors have `world.dimensions` components. Unknown fields are rejected. */
+export interface BodyOptions {
+  /** Centre of mass, m. Default origin. */
+  position?: ArrayLike<number>;
+  /** Linear velocity, m/s. Default 0. */
+  velocity?: ArrayLike<number>;
+  /** Mass, kg, finite and > 0. Default 1 kg, or from `density` if that is given. Ignored for static and kinematic bodies (infinite mass). */
+  mass?: number;
+  /** Density, kg/m^2 in 2D (mass = density pi r^2) or kg/m^3 in 3D (mass = density 4/3 pi r^3); needs `radius`. Exclusive with `mass`. */
+  density?: number;
+  /** Collision radius, m, > 0: the body becomes a ball (circle in 2D, sphere in 3D). Without it the body does not collide. */
+  radius?: number;
+  /** Restitution in [0, 1]. Default 0. */
+  restitution?: number;
+  /** Kinetic friction coefficient mu_k >= 0. Default 0.6. */
+  friction?: number;
+  /** Static friction coefficient mu_s >= 0. Default equal to `friction`. */
+  staticFriction?: number;
+  /** Never moves; infinite mass. Default false. */
+  static?: boolean;
+  /** Moves with its velocity only; infinite mass in contacts. Default false. */
+  kinematic?: boolean;
+  /** Linear drag coefficient k in F = -k v, N s/m, >= 0. */
+  linearDrag?: number;
+  /** Quadratic drag coefficient k in F = -k |v| v, kg/m, >= 0. */
+  quadraticDrag?: number;
+  /** Whether a ball turns (friction spins it, it can roll). Default true for dynamic balls. */
+  rotates?: boolean;
+  /** Initial angular velocity, rad/s: a number (about z) in 2D, a 3-vector in 3D. Needs `rotates`. */
+  angularVelocity?: number | ArrayLike<number>;
+  /** Initial angle in 2D, rad (counter-clockwise). */
+  angle?: number;
+}
+
+const BODY_OPTIONS = [
+  'position', 'velocity', 'mass', 'density', 'radius', 'restitution', 'friction', 'staticFriction', 'static',
+  'kinematic', 'linearDrag', 'quadraticDrag', 'rotates', 'angularVelocity', 'angle',
+] as const;
+
+/**
+ * Adds a body: position, velocity, mass and a force accumulator, plus a ball collider with its
+ * material if `radius` is given, drag if asked for, and rotation (moment of inertia of a solid disc
+ * m r^2 / 2 in 2D or solid sphere 2 m r^2 / 5 in 3D) for dynamic balls.
+ *
+ * @returns the entity id.
+ * @throws TypeError on an unknown option or a value of the wrong type (e.g. a 2-vector in a 3D world).
+ * @throws RangeError on mass <= 0 or NaN, radius <= 0, restitution outside [0, 1], negative friction or
+ *   drag, both `static` and `kinematic`, both `mass` and `density`, or a full world.
+ * @example
+ * const ball = addBody(world, { position: [0, 5], radius: 0.5, mass: 2, restitution: 0.8 });
+ */
+export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number {
+  const where = 'addBody';
+  assertKnownKeys(where, options, BODY_OPTIONS);
+  const d = world.dimensions;
+  if (options.position !== undefined) assertVector(where, 'position', options.position, d);
+  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
+  if (options.radius !== undefined) assertPositive(where, 'radius', options.radius);
+  if (options.mass !== undefined && options.density !== undefined) {
+    throw new RangeError(`${where}: give mass or density, not both (mass ${describe(options.mass)}, density ${describe(options.density)})`);
+  }
+  if (options.mass !== undefined) assertPositive(where, 'mass', options.mass);
+  if (options.density !== undefined) {
+    assertPositive(where, 'density', options.density);
+    if (options.radius === undefined) throw new RangeError(`${where}: density needs a radius`);
+  }
+  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
+  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
+  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  if (options.linearDrag !== undefined) assertNonNegative(where, 'linearDrag', options.linearDrag);
+  if (options.quadraticDrag !== undefined) assertNonNegative(where, 'quadraticDrag', options.quadraticDrag);
+  if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
+  const isStatic = options.static === true;
+  const isKinematic = options.kinematic === true;
+  if (isStatic && isKinematic) throw new RangeError(`${where}: a body cannot be both static and kinematic`);
+  const rotates = options.rotates ?? (options.radius !== undefined && !isStatic && !isKinematic);
+  if (options.angularVelocity !== undefined) {
+    if (d === 2) assertFinite(where, 'angularVelocity', options.angularVelocity);
+    else assertVector(where, 'angularVelocity', options.angularVelocity, 3);
+    if (!rotates) throw new RangeError(`${where}: angularVelocity needs rotates: true`);
+  }
+
+  const eid = createEntity(world);
+  const c = world.components;
+  addComponent(world, eid, c.Position);
+  addComponent(world, eid, c.Velocity);
+  addComponent(world, eid, c.Mass);
+  if (options.position) {
+    const p = options.position;
+    c.Position.x[eid] = p[0]!; c.Position.y[eid] = p[1]!; c.Position.z[eid] = d === 3 ? p[2]! : 0;
+    c.PreviousPosition.x[eid] = p[0]!; c.PreviousPosition.y[eid] = p[1]!; c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
+  }
+  if (isStatic) {
+    addComponent(world, eid, c.Static);
+    setMassUnchecked(world, eid, 0);
+  } else {
+    if (options.velocity) {
+      const v = options.velocity;
+      c.Velocity.x[eid] = v[0]!; c.Velocity.y[eid] = v[1]!; c.Velocity.z[eid] = d === 3 ? v[2]! : 0;
+    }
+    if (isKinematic) {
+      addComponent(world, eid, c.Kinematic);
+      setMassUnchecked(world, eid, 0);
+    } else {
+      addComponent(world, eid, c.Force);
+      let mass = options.mass ?? 1;
+      if (options.density !== undefined) mass = options.density * ballMeasure(d, options.radius!);
+      setMassUnchecked(world, eid, mass);
+    }
+  }
+  if (options.radius !== undefined) {
+    addComponent(world, eid, c.Ball);
+    c.Ball.radius[eid] = options.radius;
+    addComponent(world, eid, c.Material);
+    setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
+  }
+  if (options.linearDrag !== undefined) {
+    addComponent(world, eid, c.LinearDrag);
+    c.LinearDrag.k[eid] = options.linearDrag;
+  }
+  if (options.quadraticDrag !== undefined) {
+    addComponent(world, eid, c.QuadraticDrag);
+    c.QuadraticDrag.k[eid] = options.quadraticDrag;
+  }
+  if (d === 2) {
+    addComponent(world, eid, c.Angle);
+    if (options.angle !== undefined) c.Angle.value[eid] = options.angle;
+  } else {
+    addComponent(world, eid, c.Orientation);
+  }
+  if (rotates) {
+    addComponent(world, eid, c.AngularVelocity);
+    addComponent(world, eid, c.Torque);
+    addComponent(world, eid, c.Inertia);
+    if (!isStatic && !isKinematic && options.radius !== undefined) {
+      const m = c.Mass.value[eid]!, r = options.radius;
+      const I = d === 2 ? 0.5 * m * r * r : 0.4 * m * r * r;
+      c.Inertia.value[eid] = I;
+      c.Inertia.inv[eid] = 1 / I;
+    }
+    const w = options.angularVelocity;
+    if (w !== undefined) {
+      if (typeof w === 'number') c.AngularVelocity.z[eid] = w;
+      else { c.AngularVelocity.x[eid] = w[0]!; c.AngularVelocity.y[eid] = w[1]!; c.AngularVelocity.z[eid] = w[2]!; }
+    }
+  }
+  return eid;
+}
+
+/** Area of a disc (2D) or volume of a ball (3D) of radius r, m^2 or m^3. */
+function ballMeasure(d: 2 | 3, r: number): number {
+  return d === 2 ? Math.PI * r * r : (4 / 3) * Math.PI * r * r * r;
+}
+
+/** Options of `addParticle`. */
+export interface ParticleOptions {
+  /** Position, m. Default origin. */
+  position?: ArrayLike<number>;
+  /** Velocity, m/s. Default 0. */
+  velocity?: ArrayLike<number>;
+}
+
+/**
+ * Adds a bare particle: position and velocity only. It feels the world's uniform gravity and
+ * nothing else until given more components (any force-law component brings a force accumulator and
+ * a 1 kg mass). The cheapest thing a world can move: use it for large particle counts.
+ * @throws TypeError | RangeError on bad vectors or a full world.
+ */
+export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}): number {
+  const where = 'addParticle';
+  assertKnownKeys(where, options, ['position', 'velocity']);
+  const d = world.dimensions;
+  if (options.position !== undefined) assertVector(where, 'position', options.position, d);
+  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
+  const eid = createEntity(world);
+  const c = world.components;
+  addComponent(world, eid, c.Position);
+  addComponent(world, eid, c.Velocity);
+  const p = options.position, v = options.velocity;
+  if (p) {
+    c.Position.x[eid] = p[0]!; c.Position.y[eid] = p[1]!; c.Position.z[eid] = d === 3 ? p[2]! : 0;
+    c.PreviousPosition.x[eid] = p[0]!; c.PreviousPosition.y[eid] = p[1]!; c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
+  }
+  if (v) { c.Velocity.x[eid] = v[0]!; c.Velocity.y[eid] = v[1]!; c.Velocity.z[eid] = d === 3 ? v[2]! : 0; }
+  return eid;
+}
+
+/** Options of `addSegment`. */
+export interface SegmentOptions {
+  /** First end point, m. */
+  a: ArrayLike<number>;
+  /** Second end point, m. */
+  b: ArrayLike<number>;
+  /** Thickness radius, m, >= 0 (a capsule). Default 0. */
+  radius?: number;
+  /** Restitution in [0, 1]. Default 0. */
+  restitution?: number;
+  /** Kinetic friction coefficient >= 0. Default 0.6. */
+  friction?: number;
+  /** Static friction coefficient >= 0. Default equal to `friction`. */
+  staticFriction?: number;
+}
+
+/**
+ * Adds a static line segment (an inclined wall, ramp or floor) that balls collide with, end points
+ * included. @returns its entity id. @throws TypeError | RangeError on bad end points, negative radius,
+ * restitution outside [0, 1], negative friction, or a full world.
+ */
+export function addSegment(world: PhysicsWorld, options: SegmentOptions): number {
+  const where = 'addSegment';
+  if (options === undefined) throw new TypeError(`${where}: options with end points a and b are required`);
+  assertKnownKeys(where, options, ['a', 'b', 'radius', 'restitution', 'friction', 'staticFriction']);
+  const d = world.dimensions;
+  assertVector(where, 'a', options.a, d);
+  assertVector(where, 'b', options.b, d);
+  if (options.radius !== undefined) assertNonNegative(where, 'radius', options.radius);
+  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
+  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
+  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  const eid = createEntity(world);
+  const c = world.components;
+  addComponent(world, eid, c.Segment);
+  addComponent(world, eid, c.Static);
+  addComponent(world, eid, c.Material);
+  const S = c.Segment;
+  S.ax[eid] = options.a[0]!; S.ay[eid] = options.a[1]!; S.az[eid] = d === 3 ? options.a[2]! : 0;
+  S.bx[eid] = options.b[0]!; S.by[eid] = options.b[1]!; S.bz[eid] = d === 3 ? options.b[2]! : 0;
+  S.radius[eid] = options.radius ?? 0;
+  setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
+  return eid;
+}
+
+/** Options of `setBoundary`. */
+export interface BoundaryOptions {
+  /** Inner corner with the smallest coordinates, m. */
+  min: ArrayLike<number>;
+  /** Inner corner with the largest coordinates, m; each component > min's. */
+  max: ArrayLike<number>;
+  /** Restitution of the walls in [0, 1]. Default 0. */
+  restitution?: number;
+  /** Kinetic friction coefficient of the walls, >= 0. Default 0.6. */
+  friction?: number;
+  /** Static friction coefficient of the walls, >= 0. Default equal to friction. */
+  staticFriction?: number;
+}
+
+/**
+ * Encloses the world in an axis-aligned box: balls collide with its inside faces (walls, floor and
+ * ceiling; in 3D also front and back). Replaces any previous boundary.
+ * @throws TypeError | RangeError on bad corners (max must exceed min on every axis) or material values.
+ */
+export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void {
+  const where = 'setBoundary';
+  if (options === undefined) throw new TypeError(`${where}: options with corners min and max are required`);
+  assertKnownKeys(where, options, ['min', 'max', 'restitution', 'friction', 'staticFriction']);
+  const d = world.dimensions;
+  assertVector(where, 'min', options.min, d);
+  assertVector(where, 'max', options.max, d);
+  for (let i = 0; i < d; i++) {
+    if (!(options.max[i]! > options.min[i]!)) {
+      throw new RangeError(`${where}: max[${i}] must be > min[${i}], got min ${describe(options.min)}, max ${describe(options.max)}`);
+    }
+  }
+  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
+  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
+  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  const box = world.collision.boundary;
+  box.enabled = true;
+  for (let i = 0; i < 3; i++) {
+    box.min[i] = i < d ? options.min[i]! : 0;
+    box.max[i] = i < d ? options.max[i]! : 0;
+  }
+  box.restitution = options.restitution ?? 0;
+  box.friction = options.friction ?? 0.6;
+  box.staticFriction = options.staticFriction ?? box.friction;
+}
+
+/** Removes the boundary box. */
+export function clearBoundary(world: PhysicsWorld): void {
+  world.collision.boundary.enabled = false;
+}
+
+function assertAlive(where: string, world: PhysicsWorld, eid: number): void {
+  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid)) {
+    throw new RangeError(`${where}: entity ${describe(eid)} does not exist in this world`);
+  }
+}
+
+/**
+ * Removes an entity and everything that references it (springs and joints attached to it, cached
+ * contacts), so no force ever acts on a recycled id.
+ * @throws RangeError if the entity does not exist.
+ */
+export function removeBody(world: PhysicsWorld, eid: number): void {
+  assertAlive('removeBody', world, eid);
+  for (const hook of world.removeHooks) hook(world, eid);
+  removeEntity(world, eid);
+}
+
+function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void {
+  world.components.Mass.value[eid] = mass;
+  world.components.Mass.inv[eid] = mass > 0 ? 1 / mass : 0;
+}
+
+/**
+ * Sets a dynamic body's mass and inverse mass together (and rescales its moment of inertia if it
+ * has one, keeping the shape's distribution).
+ * @param mass kg, finite and > 0.
+ * @throws RangeError on mass <= 0, NaN or infinite, on a static or kinematic body (infinite mass), or a missing entity.
+ */
+export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
+  assertAlive('setMass', world, eid);
+  assertPositive('setMass', 'mass', mass);
+  const c = world.components;
+  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic)) {
+    throw new RangeError(`setMass: entity ${eid} is static or kinematic and has infinite mass`);
+  }
+  if (!hasComponent(world, eid, c.Mass)) addComponent(world, eid, c.Mass);
+  const old = c.Mass.value[eid]!;
+  setMassUnchecked(world, eid, mass);
+  if (hasComponent(world, eid, c.Inertia) && c.Inertia.value[eid]! > 0 && old > 0) {
+    const I = c.Inertia.value[eid]! * (mass / old);
+    c.Inertia.value[eid] = I;
+    c.Inertia.inv[eid] = 1 / I;
+  }
+}
+
+function setMaterialUnchecked(world: PhysicsWorld, eid: number, restitution?: number, friction?: number, staticFriction?: number): void {
+  const M = world.components.Material;
+  if (restitution !== undefined) M.restitution[eid] = restitution;
+  if (friction !== undefined) {
+    M.friction[eid] = friction;
+    M.staticFriction[eid] = friction;
+  }
+  if (staticFriction !== undefined) M.staticFriction[eid] = staticFriction;
+}
+
+/** Material fields for `setMaterial`; omitted fields keep their value. */
+export interface MaterialOptions {
+  /** Restitution in [0, 1]. */
+  restitution?: number;
+  /** Kinetic friction coefficient >= 0 (also sets static friction unless that is given). */
+  friction?: number;
+  /** Static friction coefficient >= 0. */
+  staticFriction?: number;
+}
+
+/**
+ * Sets a body's surface material.
+ * @throws TypeError on unknown fields; RangeError on restitution outside [0, 1], negative friction, or a missing entity.
+ */
+export function setMaterial(world: PhysicsWorld, eid: number, material: MaterialOptions): void {
+  const where = 'setMaterial';
+  assertAlive(where, world, eid);
+  assertKnownKeys(where, material, ['restitution', 'friction', 'staticFriction']);
+  if (material.restitution !== undefined) assertInRange(where, 'restitution', material.restitution, 0, 1);
+  if (material.friction !== undefined) assertNonNegative(where, 'friction', material.friction);
+  if (material.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', material.staticFriction);
+  const c = world.components;
+  if (!hasComponent(world, eid, c.Material)) addComponent(world, eid, c.Material);
+  setMaterialUnchecked(world, eid, material.restitution, material.friction, material.staticFriction);
+}
+
+/**
+ * Sets a ball's radius, m (> 0), and rescales its moment of inertia if it has one.
+ * @throws RangeError on radius <= 0 or NaN, or a missing entity.
+ */
+export function setRadius(world: PhysicsWorld, eid: number, radius: number): void {
+  assertAlive('setRadius', world, eid);
+  assertPositive('setRadius', 'radius', radius);
+  const c = world.components;
+  if (!hasComponent(world, eid, c.Ball)) addComponent(world, eid, c.Ball);
+  const old = c.Ball.radius[eid]!;
+  c.Ball.radius[eid] = radius;
+  if (hasComponent(world, eid, c.Inertia) && c.Inertia.value[eid]! > 0 && old > 0) {
+    const I = c.Inertia.value[eid]! * (radius * radius) / (old * old);
+    c.Inertia.value[eid] = I;
+    c.Inertia.inv[eid] = 1 / I;
+  }
+}
+
+/**
+ * Moves a body to `position` (m) without sweeping through what lies between: its previous position is
+ * set too, so nothing collides along the jump and a renderer does not interpolate across it.
+ * @throws TypeError | RangeError on a bad vector or a missing entity.
+ */
+export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLike<number>): void {
+  assertAlive('setPosition', world, eid);
+  assertVector('setPosition', 'position', position, world.dimensions);
+  const c = world.components;
+  const z = world.dimensions === 3 ? position[2]! : 0;
+  c.Position.x[eid] = position[0]!; c.Position.y[eid] = position[1]!; c.Position.z[eid] = z;
+  c.PreviousPosition.x[eid] = position[0]!; c.PreviousPosition.y[eid] = position[1]!; c.PreviousPosition.z[eid] = z;
+}
+
+/** Sets a body's velocity, m/s. @throws TypeError | RangeError on a bad vector or a missing entity. */
+export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLike<number>): void {
+  assertAlive('setVelocity', world, eid);
+  assertVector('setVelocity', 'velocity', velocity, world.dimensions);
+  const c = world.components;
+  c.Velocity.x[eid] = velocity[0]!; c.Velocity.y[eid] = velocity[1]!; c.Velocity.z[eid] = world.dimensions === 3 ? velocity[2]! : 0;
+}
+
+/**
+ * Applies an impulse J (N s) at the centre of mass: v += J / m. For throws, kicks and explosions.
+ * @throws TypeError | RangeError on a bad vector or a missing entity.
+ */
+export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>): void {
+  assertAlive('applyImpulse', world, eid);
+  assertVector('applyImpulse', 'impulse', impulse, world.dimensions);
+  const c = world.components;
+  const im = hasComponent(world, eid, c.Mass) ? c.Mass.inv[eid]! : 0;
+  c.Velocity.x[eid] = c.Velocity.x[eid]! + impulse[0]! * im;
+  c.Velocity.y[eid] = c.Velocity.y[eid]! + impulse[1]! * im;
+  if (world.dimensions === 3) c.Velocity.z[eid] = c.Velocity.z[eid]! + impulse[2]! * im;
+}

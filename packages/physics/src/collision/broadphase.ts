@@ -1,0 +1,301 @@
+import { query } from 'bitecs';
+import type { PhysicsWorld } from '../world';
+import type { CollisionState } from './state';
+
+/** Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. */
+export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2 } as const);
+
+/** Pair kinds written by the broadphase into `CollisionState.pairKind`. */
+export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
+
+/** Bodies whose reach (radius + speculative margin) exceeds this many times the mean reach skip the grid. */
+const OVERSIZED_FACTOR = 2.5;
+
+/** The 2D half neighbourhood: each unordered pair of neighbouring cells is visited once. */
+const HALF_2D: readonly number[] = [1, 0, 1, 1, 0, 1, -1, 1];
+/** The 3D half neighbourhood: 13 of the 26 neighbours. */
+const HALF_3D: readonly number[] = (() => {
+  const out: number[] = [];
+  for (let dz = -1; dz <= 1; dz++)
+    for (let dy = -1; dy <= 1; dy++)
+      for (let dx = -1; dx <= 1; dx++)
+        if (dz > 0 || (dz === 0 && dy > 0) || (dz === 0 && dy === 0 && dx > 0)) out.push(dx, dy, dz);
+  return out;
+})();
+
+function hashCell(cx: number, cy: number, cz: number): number {
+  return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663) ^ Math.imul(cz, 83492791)) >>> 0;
+}
+
+function ensurePairs(cs: CollisionState, needed: number): void {
+  if (needed <= cs.pairA.length) return;
+  let n = cs.pairA.length;
+  while (n < needed) n *= 2;
+  const a = new Int32Array(n), b = new Int32Array(n), k = new Uint8Array(n);
+  a.set(cs.pairA.subarray(0, cs.pairCount));
+  b.set(cs.pairB.subarray(0, cs.pairCount));
+  k.set(cs.pairKind.subarray(0, cs.pairCount));
+  cs.pairA = a; cs.pairB = b; cs.pairKind = k;
+}
+
+function pushPair(cs: CollisionState, kind: number, a: number, b: number): void {
+  const i = cs.pairCount;
+  if (i >= cs.pairA.length) ensurePairs(cs, i + 1);
+  cs.pairA[i] = a;
+  cs.pairB[i] = b;
+  cs.pairKind[i] = kind;
+  cs.pairCount = i + 1;
+}
+
+function ensureGrid(cs: CollisionState, bodies: number, tableSize: number): void {
+  const g = cs.grid;
+  if (g.sorted.length < bodies) {
+    let n = Math.max(64, g.sorted.length);
+    while (n < bodies) n *= 2;
+    g.sorted = new Int32Array(n);
+    g.cellX = new Int32Array(n);
+    g.cellY = new Int32Array(n);
+    g.cellZ = new Int32Array(n);
+    g.bucketOf = new Int32Array(n);
+    g.oversized = new Int32Array(n);
+    g.candidates = new Int32Array(n);
+  }
+  if (g.bucketStart.length < tableSize + 1) g.bucketStart = new Int32Array(tableSize + 1);
+  g.tableSize = tableSize;
+}
+
+/**
+ * Collide stage, part 1: finds candidate pairs of bodies that may touch during this step.
+ *
+ * Every body with `Position` and `Ball` takes part, placed where it was at the start of the step
+ * (`PreviousPosition`) and grown by a speculative margin |v| h + d_spec / 2, so that pairs that will
+ * meet during the step are found before they overlap (speculative contacts, Catto, "Continuous
+ * Collision", GDC 2013). Bodies go into a uniform spatial-hash grid whose cell edge is twice the
+ * largest reach of ordinary bodies; each body is tested against its own cell and half of its
+ * neighbours, so the cost grows linearly with the body count at fixed density. Bodies much larger or
+ * faster than the mean are kept out of the grid and query the cells their reach covers. Static
+ * segments query the cells along their bounding box.
+ *
+ * Also fills the per-body scratch the solver reads: effective inverse mass and inertia (0 for static
+ * and kinematic bodies), body type and margin.
+ */
+export function broadphaseSystem(world: PhysicsWorld): void {
+  const c = world.components;
+  const cs = world.collision;
+  cs.pairCount = 0;
+  const balls = query(world, [c.Position, c.Ball]);
+  const n = balls.length;
+  cs.stats.pairs = 0;
+  if (n === 0) return;
+
+  const h = world.h;
+  const is3D = world.dimensions === 3;
+  const invMass = cs.invMass, invInertia = cs.invInertia, margin = cs.margin, type = cs.bodyType;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const radius = c.Ball.radius;
+  const mInv = c.Mass.inv;
+  const halfSpec = 0.5 * cs.settings.speculativeDistance;
+
+  // Per-body scratch. Dynamic first, then overwrite the special cases.
+  let reachSum = 0;
+  for (let i = 0; i < n; i++) {
+    const e = balls[i]!;
+    invMass[e] = mInv[e]!;
+    invInertia[e] = 0;
+    type[e] = BodyType.Dynamic;
+    const sx = vx[e]!, sy = vy[e]!, sz = vz[e]!;
+    const m = Math.sqrt(sx * sx + sy * sy + sz * sz) * h + halfSpec;
+    margin[e] = m;
+    reachSum += radius[e]! + m;
+  }
+  let ents = query(world, [c.Ball, c.Inertia, c.AngularVelocity]);
+  const iInv = c.Inertia.inv;
+  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invInertia[e] = iInv[e]!; }
+  ents = query(world, [c.Ball, c.Kinematic]);
+  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Kinematic; }
+  ents = query(world, [c.Ball, c.Position, c.Static]);
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Static; margin[e] = halfSpec;
+    // Static bodies are never integrated: where they are is where they were.
+    ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
+  }
+
+  // Cell size from the reach of ordinary bodies; outliers go to the oversized list.
+  const g = cs.grid;
+  const limit = OVERSIZED_FACTOR * (reachSum / n);
+  let maxReach = 0;
+  let maxReachAll = 0;
+  for (let i = 0; i < n; i++) {
+    const e = balls[i]!;
+    const r = radius[e]! + margin[e]!;
+    if (r > maxReachAll) maxReachAll = r;
+    if (r <= limit && r > maxReach) maxReach = r;
+  }
+  const cell = 2 * maxReach;
+  const invCell = 1 / cell;
+  g.cellSize = cell;
+
+  let table = 16;
+  while (table < 2 * n) table *= 2;
+  ensureGrid(cs, n, table);
+  const mask = table - 1;
+  const start = g.bucketStart;
+  start.fill(0, 0, table + 1);
+  const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, bucketOf = g.bucketOf, over = g.oversized;
+  let overCount = 0;
+
+  // Counting sort by bucket: count, prefix sum, place.
+  for (let i = 0; i < n; i++) {
+    const e = balls[i]!;
+    if (radius[e]! + margin[e]! > limit) { bucketOf[i] = -1; over[overCount++] = e; continue; }
+    const cx = Math.floor(ox[e]! * invCell), cy = Math.floor(oy[e]! * invCell), cz = is3D ? Math.floor(oz[e]! * invCell) : 0;
+    const b = hashCell(cx, cy, cz) & mask;
+    bucketOf[i] = b;
+    start[b + 1]!++;
+  }
+  g.oversizedCount = overCount;
+  for (let b = 0; b < table; b++) start[b + 1]! += start[b]!;
+  // Place: reuse the cell arrays' tail-free layout; a cursor per bucket is start[b] advanced in place,
+  // then restored by shifting (start[b] ends at the next bucket's start).
+  for (let i = 0; i < n; i++) {
+    const b = bucketOf[i]!;
+    if (b < 0) continue;
+    const e = balls[i]!;
+    const p = start[b]!++;
+    sorted[p] = e;
+    cellX[p] = Math.floor(ox[e]! * invCell);
+    cellY[p] = Math.floor(oy[e]! * invCell);
+    cellZ[p] = is3D ? Math.floor(oz[e]! * invCell) : 0;
+  }
+  for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
+  start[0] = 0;
+  const small = n - overCount;
+
+  // Pairs among grid bodies: own cell (later entries only) and half the neighbours.
+  const offsets = is3D ? HALF_3D : HALF_2D;
+  const stride = is3D ? 3 : 2;
+  const nOffsets = offsets.length / stride;
+  for (let p = 0; p < small; p++) {
+    const e = sorted[p]!;
+    const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
+    const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+    const reach = radius[e]! + margin[e]!;
+    const te = type[e]!;
+    // Own cell.
+    const own = hashCell(cx, cy, cz) & mask;
+    for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
+      if (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz) continue;
+      const f = sorted[q]!;
+      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
+      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+      const rr = reach + radius[f]! + margin[f]!;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+    }
+    for (let k = 0; k < nOffsets; k++) {
+      const nx = cx + offsets[k * stride]!, ny = cy + offsets[k * stride + 1]!, nz = is3D ? cz + offsets[k * stride + 2]! : 0;
+      const bucket = hashCell(nx, ny, nz) & mask;
+      for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
+        if (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz) continue;
+        const f = sorted[q]!;
+        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
+        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const rr = reach + radius[f]! + margin[f]!;
+        if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+      }
+    }
+  }
+
+  // Oversized bodies: against each other directly, against grid bodies by a range query.
+  for (let i = 0; i < overCount; i++) {
+    const e = over[i]!;
+    const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+    const reach = radius[e]! + margin[e]!;
+    const te = type[e]!;
+    for (let j = i + 1; j < overCount; j++) {
+      const f = over[j]!;
+      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
+      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+      const rr = reach + radius[f]! + margin[f]!;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+    }
+    const found = queryBox(world, cs, x - reach, y - reach, z - reach, x + reach, y + reach, z + reach, small);
+    const cand = g.candidates;
+    for (let k = 0; k < found; k++) {
+      const f = cand[k]!;
+      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
+      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+      const rr = reach + radius[f]! + margin[f]!;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+    }
+  }
+
+  // Static segments against moving balls near their bounding box.
+  const segs = query(world, [c.Segment]);
+  if (segs.length > 0) {
+    const S = c.Segment;
+    for (let i = 0; i < segs.length; i++) {
+      const s = segs[i]!;
+      const pad = S.radius[s]! + maxReachAll;
+      const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!, bx = S.bx[s]!, by = S.by[s]!, bz = S.bz[s]!;
+      const found = queryBox(
+        world, cs,
+        Math.min(ax, bx) - pad, Math.min(ay, by) - pad, Math.min(az, bz) - pad,
+        Math.max(ax, bx) + pad, Math.max(ay, by) + pad, Math.max(az, bz) + pad,
+        small,
+      );
+      const cand = g.candidates;
+      for (let k = 0; k < found; k++) {
+        const f = cand[k]!;
+        if (type[f] !== BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+      }
+      for (let j = 0; j < overCount; j++) {
+        const f = over[j]!;
+        if (type[f] !== BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+      }
+    }
+  }
+  cs.stats.pairs = cs.pairCount;
+}
+
+/**
+ * Writes into `cs.grid.candidates` every grid body whose cell overlaps the box [lo, hi] widened by
+ * half a cell (so bodies whose reach crosses into the box are included) and returns their count;
+ * scans every grid body instead when the box covers more cells than there are bodies.
+ */
+function queryBox(
+  world: PhysicsWorld, cs: CollisionState,
+  x0: number, y0: number, z0: number, x1: number, y1: number, z1: number,
+  small: number,
+): number {
+  const g = cs.grid;
+  const inv = 1 / g.cellSize;
+  const half = 0.5 * g.cellSize;
+  const is3D = world.dimensions === 3;
+  const cx0 = Math.floor((x0 - half) * inv), cx1 = Math.floor((x1 + half) * inv);
+  const cy0 = Math.floor((y0 - half) * inv), cy1 = Math.floor((y1 + half) * inv);
+  const cz0 = is3D ? Math.floor((z0 - half) * inv) : 0, cz1 = is3D ? Math.floor((z1 + half) * inv) : 0;
+  const cells = (cx1 - cx0 + 1) * (cy1 - cy0 + 1) * (cz1 - cz0 + 1);
+  const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, start = g.bucketStart;
+  const out = g.candidates;
+  let count = 0;
+  if (!(cells <= small)) {
+    for (let p = 0; p < small; p++) {
+      const x = cellX[p]!, y = cellY[p]!, z = cellZ[p]!;
+      if (x >= cx0 && x <= cx1 && y >= cy0 && y <= cy1 && z >= cz0 && z <= cz1) out[count++] = sorted[p]!;
+    }
+    return count;
+  }
+  const mask = g.tableSize - 1;
+  for (let cz = cz0; cz <= cz1; cz++)
+    for (let cy = cy0; cy <= cy1; cy++)
+      for (let cx = cx0; cx <= cx1; cx++) {
+        const b = hashCell(cx, cy, cz) & mask;
+        for (let q = start[b]!, end = start[b + 1]!; q < end; q++) {
+          if (cellX[q] === cx && cellY[q] === cy && cellZ[q] === cz) out[count++] = sorted[q]!;
+        }
+      }
+  return count;
+}

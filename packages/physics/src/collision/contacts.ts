@@ -1,0 +1,204 @@
+/**
+ * Contact storage: one row per contact point, structure of arrays, grown by doubling (never per step).
+ *
+ * Contacts are transient solver data, not entities: tens of thousands a step would be too slow as
+ * bitecs entities. Read them through `world.collision.contacts` (rows 0..count-1) after a step.
+ *
+ * Sign convention: the normal (nx, ny, nz) points from body A to body B, and the normal relative
+ * velocity is vn = (v_B - v_A) . n, negative when approaching. A is 0 (the static world) for
+ * contacts with the boundary box, static segments and static balls.
+ */
+
+/**
+ * What body A of a contact is:
+ * - `Ball` (0): two balls, both entities (either may be kinematic);
+ * - `Boundary` (1): ball B against a face of the boundary box; `feature` is the face
+ *   (0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z);
+ * - `Segment` (2): ball B against the static segment entity `feature`;
+ * - `StaticBall` (3): ball B against the static ball entity `feature`.
+ */
+export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3 } as const);
+
+/** The contact rows of one step. */
+export interface ContactBuffer {
+  /** Rows in use. */
+  count: number;
+  /** Rows allocated. */
+  capacity: number;
+  /** ContactKind of each row. */
+  kind: Uint8Array;
+  /** Body A entity id (0 = static world). */
+  a: Int32Array;
+  /** Body B entity id (always a moving body). */
+  b: Int32Array;
+  /** Static feature: boundary face or static entity id, see ContactKind. */
+  feature: Int32Array;
+  /** Unit normal from A to B. */
+  nx: Float64Array; ny: Float64Array; nz: Float64Array;
+  /** Separation along the normal where the bodies were at the start of the step, m (< 0: overlap). */
+  separation: Float64Array;
+  /** Distance from A's centre to the contact point along +n, m (0 for the static world). */
+  ra: Float64Array;
+  /** Distance from B's centre to the contact point along -n, m. */
+  rb: Float64Array;
+  /** Combined restitution, [0, 1]. */
+  restitution: Float64Array;
+  /** Combined kinetic friction coefficient. */
+  friction: Float64Array;
+  /** Friction bound used this step: mu_s while sticking, mu_k while sliding. */
+  frictionBound: Float64Array;
+  /** Effective mass along the normal, kg. */
+  normalMass: Float64Array;
+  /** Effective mass along the tangents, kg. */
+  tangentMass: Float64Array;
+  /** 1 if body A has infinite mass (static world, kinematic): the contact uses the stiffer static softness. */
+  rigidPartner: Uint8Array;
+  /** Accumulated normal impulse of a solver substep, N s (>= 0). Warm-started from the previous step. */
+  normalImpulse: Float64Array;
+  /** Largest normal impulse applied in any substep this step, N s (restitution applies only if > 0). */
+  maxNormalImpulse: Float64Array;
+  /** Normal impulse delivered over the whole step (sum over substeps), N s: the compression impulse. */
+  totalNormalImpulse: Float64Array;
+  /**
+   * Normal relative speed at impact, m/s (negative: approaching): the start-of-step speed plus what
+   * gravity adds across the speculative gap, so a bounce neither loses nor gains that energy.
+   */
+  impactVelocity: Float64Array;
+  /** Accumulated friction impulse along tangent 1, N s. */
+  tangentImpulse1: Float64Array;
+  /** Accumulated friction impulse along tangent 2 (3D only), N s. */
+  tangentImpulse2: Float64Array;
+  /** Tangent 1 (3D: first axis of the basis (n, t1, t2); 2D: (-ny, nx)). */
+  t1x: Float64Array; t1y: Float64Array; t1z: Float64Array;
+  /** Tangent 2 (3D only): n x t1. */
+  t2x: Float64Array; t2y: Float64Array; t2z: Float64Array;
+  /** Normal relative velocity at the start of the step, before this step's gravity, m/s (negative: approaching). */
+  relativeVelocity: Float64Array;
+  /** Spawn stamps of A (or of the static feature) and B when the contact was made, to validate the warm-start cache. */
+  stampA: Uint32Array;
+  stampB: Uint32Array;
+}
+
+const FLOAT_FIELDS = [
+  'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'restitution', 'friction', 'frictionBound', 'normalMass',
+  'tangentMass', 'normalImpulse', 'maxNormalImpulse', 'totalNormalImpulse', 'impactVelocity', 'tangentImpulse1', 'tangentImpulse2',
+  't1x', 't1y', 't1z', 't2x', 't2y', 't2z', 'relativeVelocity',
+] as const;
+const INT_FIELDS = ['a', 'b', 'feature'] as const;
+const UINT_FIELDS = ['stampA', 'stampB'] as const;
+
+/**
+ * Allocates a contact buffer with room for `capacity` rows. Written as one object literal on purpose:
+ * an object that gains many properties through computed keys drops into V8's slow dictionary mode.
+ */
+export function createContactBuffer(capacity = 1024): ContactBuffer {
+  const f = (): Float64Array => new Float64Array(capacity);
+  return {
+    count: 0, capacity, kind: new Uint8Array(capacity),
+    a: new Int32Array(capacity), b: new Int32Array(capacity), feature: new Int32Array(capacity),
+    nx: f(), ny: f(), nz: f(), separation: f(), ra: f(), rb: f(), restitution: f(), friction: f(),
+    frictionBound: f(), normalMass: f(), tangentMass: f(), rigidPartner: new Uint8Array(capacity), normalImpulse: f(), maxNormalImpulse: f(), totalNormalImpulse: f(), impactVelocity: f(),
+    tangentImpulse1: f(), tangentImpulse2: f(), t1x: f(), t1y: f(), t1z: f(), t2x: f(), t2y: f(), t2z: f(),
+    relativeVelocity: f(), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
+  };
+}
+
+/** Doubles the rows of `buf` until it holds at least `needed`, keeping rows 0..count-1. */
+export function growContactBuffer(buf: ContactBuffer, needed: number): void {
+  if (needed <= buf.capacity) return;
+  let cap = buf.capacity;
+  while (cap < needed) cap *= 2;
+  const rec = buf as unknown as Record<string, Float64Array | Int32Array | Uint32Array | Uint8Array>;
+  const grow = <T extends Float64Array | Int32Array | Uint32Array | Uint8Array>(old: T, make: (n: number) => T): T => {
+    const next = make(cap);
+    next.set(old.subarray(0, buf.count));
+    return next;
+  };
+  buf.kind = grow(buf.kind, (n) => new Uint8Array(n));
+  buf.rigidPartner = grow(buf.rigidPartner, (n) => new Uint8Array(n));
+  for (const f of FLOAT_FIELDS) rec[f] = grow(rec[f] as Float64Array, (n) => new Float64Array(n));
+  for (const f of INT_FIELDS) rec[f] = grow(rec[f] as Int32Array, (n) => new Int32Array(n));
+  for (const f of UINT_FIELDS) rec[f] = grow(rec[f] as Uint32Array, (n) => new Uint32Array(n));
+  buf.capacity = cap;
+}
+
+/**
+ * Warm-start cache: the accumulated impulses of the previous step's contacts, found by
+ * (kind, a, b, feature) in an open-addressing hash table (linear probing). Starting the solver from
+ * last step's impulses is what lets a few iterations hold a deep pile still (Catto, "Iterative
+ * Dynamics with Temporal Coherence", GDC 2005).
+ */
+export interface WarmStartCache {
+  /** Power-of-two slot count. */
+  size: number;
+  /** Slot -> row + 1 in `rows` (0 = empty). */
+  slots: Int32Array;
+  /** The previous step's contacts (rows 0..count-1). */
+  rows: ContactBuffer;
+}
+
+/** Makes an empty cache. */
+export function createWarmStartCache(): WarmStartCache {
+  return { size: 0, slots: new Int32Array(0), rows: createContactBuffer(16) };
+}
+
+function hashKey(kind: number, a: number, b: number, f: number): number {
+  let h = Math.imul(a ^ (kind << 28), 0x9e3779b1);
+  h ^= Math.imul(b, 0x85ebca77);
+  h ^= Math.imul(f, 0xc2b2ae3d);
+  h ^= h >>> 15;
+  return Math.imul(h, 0x27d4eb2f) >>> 0;
+}
+
+/**
+ * Stores this step's contacts as the cache for the next step. The cache swaps buffers with `current`
+ * (no copying): afterwards `current` holds stale rows and must be refilled from count 0.
+ * Returns the buffer the caller should use as its next `current`.
+ */
+export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
+  const spare = cache.rows;
+  cache.rows = current;
+  const n = current.count;
+  let size = cache.size;
+  if (size < 2 * n || size === 0) {
+    size = 16;
+    while (size < 2 * n) size *= 2;
+    cache.slots = new Int32Array(size);
+    cache.size = size;
+  } else {
+    cache.slots.fill(0);
+  }
+  const mask = size - 1;
+  const slots = cache.slots;
+  const kind = current.kind, a = current.a, b = current.b, f = current.feature;
+  for (let i = 0; i < n; i++) {
+    let s = hashKey(kind[i]!, a[i]!, b[i]!, f[i]!) & mask;
+    while (slots[s] !== 0) s = (s + 1) & mask;
+    slots[s] = i + 1;
+  }
+  spare.count = 0;
+  return spare;
+}
+
+/**
+ * Finds the previous step's row of the contact (kind, a, b, feature) with matching spawn stamps,
+ * or -1 if it is new.
+ */
+export function findWarmStart(
+  cache: WarmStartCache, kind: number, a: number, b: number, f: number, stampA: number, stampB: number,
+): number {
+  if (cache.size === 0) return -1;
+  const mask = cache.size - 1;
+  const slots = cache.slots;
+  const rows = cache.rows;
+  let s = hashKey(kind, a, b, f) & mask;
+  for (;;) {
+    const r = slots[s]!;
+    if (r === 0) return -1;
+    const i = r - 1;
+    if (rows.kind[i] === kind && rows.a[i] === a && rows.b[i] === b && rows.feature[i] === f) {
+      return rows.stampA[i] === stampA && rows.stampB[i] === stampB ? i : -1;
+    }
+    s = (s + 1) & mask;
+  }
+}

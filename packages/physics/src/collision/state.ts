@@ -1,0 +1,171 @@
+import { createContactBuffer, createWarmStartCache, type ContactBuffer, type WarmStartCache } from './contacts';
+
+/**
+ * Contact solver tuning (Box2D v3's soft step; the defaults are Box2D's). Set at world creation from
+ * the world options; the fields may be changed between steps.
+ */
+export interface CollisionSettings {
+  /** Solver substeps a (world) step, integer >= 1. Default 4. */
+  solverSubsteps: number;
+  /** Sequential-impulse passes with soft bias per solver substep, integer >= 1. Default 1. */
+  solverIterations: number;
+  /** Passes without bias per solver substep (remove the push-out velocity), integer >= 0. Default 1. */
+  relaxIterations: number;
+  /** Approach speed below which contacts do not bounce, m/s. */
+  restitutionThreshold: number;
+  /** Sequential-impulse passes of the restitution solve at the end of a step, integer >= 1. Default 4. */
+  restitutionIterations: number;
+  /** Stiffness of contact softness, Hz (capped at a quarter of the substep rate). Default 30 Hz. */
+  contactHertz: number;
+  /** Damping ratio of contact softness, dimensionless. Default 10 (heavily overdamped: no bounce from push-out). */
+  contactDampingRatio: number;
+  /** Fastest speed at which overlapping bodies are pushed apart, m/s. Default 3 m/s. */
+  contactPushSpeed: number;
+  /** Gap within which contacts are kept even without approach speed, m. Default 0.1 m (Box2D v3 pads its bounding boxes by the same margin), so a body knocked sideways during a step still meets the contacts it runs into. */
+  speculativeDistance: number;
+  /** Tangential speed below which a contact sticks and static friction applies, m/s. Default 0.01 m/s. */
+  stickSpeed: number;
+}
+
+/**
+ * The axis-aligned box that keeps bodies in (walls on all sides, floor and ceiling included).
+ * `min` and `max` are its inner corners, m. Its surface has its own restitution and friction.
+ */
+export interface Boundary {
+  /** Whether the box is active. */
+  enabled: boolean;
+  /** Inner corner with the smallest coordinates, m (x, y, z). */
+  readonly min: Float64Array;
+  /** Inner corner with the largest coordinates, m (x, y, z). */
+  readonly max: Float64Array;
+  /** Restitution of the walls, [0, 1]. */
+  restitution: number;
+  /** Kinetic friction coefficient of the walls, >= 0. */
+  friction: number;
+  /** Static friction coefficient of the walls, >= 0. */
+  staticFriction: number;
+}
+
+/** Everything the collide stage keeps between and within steps. */
+export interface CollisionState {
+  /** Tuning, see CollisionSettings. */
+  readonly settings: CollisionSettings;
+  /** The boundary box (disabled until `setBoundary`). */
+  readonly boundary: Boundary;
+  /** Candidate pairs from the broadphase (rows 0..pairCount-1), see `PairKind`. */
+  pairCount: number;
+  /** First entity of each pair: the lower ball id, or the segment. */
+  pairA: Int32Array;
+  /** Second entity of each pair: a ball. */
+  pairB: Int32Array;
+  /** PairKind of each pair. */
+  pairKind: Uint8Array;
+  /** Contacts of the current step. */
+  contacts: ContactBuffer;
+  /** Impulses of the previous step's contacts, for warm starting. */
+  readonly cache: WarmStartCache;
+  /** Per-entity scratch (capacity + 1): effective inverse mass this step (0 for static and kinematic). */
+  readonly invMass: Float64Array;
+  /** Per-entity scratch: effective inverse moment of inertia this step. */
+  readonly invInertia: Float64Array;
+  /** Per-entity scratch: speculative margin |v| h + speculativeDistance / 2, m. */
+  readonly margin: Float64Array;
+  /** Per-entity scratch: BodyType (0 dynamic, 1 kinematic, 2 static) of this step's colliders. */
+  readonly bodyType: Uint8Array;
+  /** Solver bodies of this step: the moving bodies that have at least one contact. */
+  solverBodies: Int32Array;
+  solverBodyCount: number;
+  /** Per-entity scratch: the value of `solverStamp` when the body was put in `solverBodies`. */
+  readonly solverMark: Float64Array;
+  /** Counter that makes `solverMark` entries of earlier (sub)steps stale. */
+  solverStamp: number;
+  /**
+   * Per-entity scratch, nine arrays: displacement within the step so far (x, y, z), m; the base the
+   * displacement is added to (x, y, z), m; rotation still to apply (x, y, z), rad.
+   */
+  readonly delta: Float64Array[];
+  /** Broadphase grid scratch, see broadphase.ts. */
+  readonly grid: GridScratch;
+  /** Statistics of the last step: candidate pairs, contacts, and the deepest overlap left at its end (m). */
+  readonly stats: { pairs: number; contacts: number; maxOverlap: number };
+}
+
+/** Spatial-hash grid scratch, sized by the body count and grown by doubling. */
+export interface GridScratch {
+  /** Cell edge, m, chosen each step from the body sizes and speeds. */
+  cellSize: number;
+  /** Hash table size (power of two) and its bucket start offsets (size + 1). */
+  tableSize: number;
+  bucketStart: Int32Array;
+  /** Bodies sorted by bucket: entity ids, and their cell coordinates. */
+  sorted: Int32Array;
+  cellX: Int32Array;
+  cellY: Int32Array;
+  cellZ: Int32Array;
+  /** Per sorted body: its bucket. */
+  bucketOf: Int32Array;
+  /** Bodies too large or fast for the cell size, checked by range queries. */
+  oversized: Int32Array;
+  oversizedCount: number;
+  /** Output of range queries. */
+  candidates: Int32Array;
+}
+
+/** Creates the collision state of a world with room for `capacity` entities. */
+export function createCollisionState(
+  capacity: number,
+  options: { solverSubsteps: number; solverIterations: number; restitutionThreshold: number },
+): CollisionState {
+  const n = capacity + 1;
+  return {
+    settings: {
+      solverSubsteps: options.solverSubsteps,
+      solverIterations: options.solverIterations,
+      relaxIterations: 1,
+      restitutionThreshold: options.restitutionThreshold,
+      restitutionIterations: 4,
+      contactHertz: 60,
+      contactDampingRatio: 10,
+      contactPushSpeed: 3,
+      speculativeDistance: 0.1,
+      stickSpeed: 0.01,
+    },
+    boundary: {
+      enabled: false,
+      min: new Float64Array(3),
+      max: new Float64Array(3),
+      restitution: 0,
+      friction: 0.6,
+      staticFriction: 0.6,
+    },
+    pairCount: 0,
+    pairA: new Int32Array(1024),
+    pairB: new Int32Array(1024),
+    pairKind: new Uint8Array(1024),
+    contacts: createContactBuffer(1024),
+    cache: createWarmStartCache(),
+    invMass: new Float64Array(n),
+    invInertia: new Float64Array(n),
+    margin: new Float64Array(n),
+    bodyType: new Uint8Array(n),
+    solverBodies: new Int32Array(256),
+    solverBodyCount: 0,
+    solverMark: new Float64Array(n),
+    solverStamp: 0,
+    delta: Array.from({ length: 9 }, () => new Float64Array(n)),
+    grid: {
+      cellSize: 1,
+      tableSize: 0,
+      bucketStart: new Int32Array(1),
+      sorted: new Int32Array(0),
+      cellX: new Int32Array(0),
+      cellY: new Int32Array(0),
+      cellZ: new Int32Array(0),
+      bucketOf: new Int32Array(0),
+      oversized: new Int32Array(0),
+      oversizedCount: 0,
+      candidates: new Int32Array(0),
+    },
+    stats: { pairs: 0, contacts: 0, maxOverlap: 0 },
+  };
+}

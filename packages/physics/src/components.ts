@@ -1,0 +1,139 @@
+/**
+ * Component stores. Every physical quantity is a bitecs 0.4 component: a plain object of typed
+ * arrays indexed by entity id (`Position.x[eid]`). Stores are made per world with the world's
+ * capacity, so two worlds never share data; they live on `world.components`.
+ *
+ * Rules that hold for every store here:
+ * - Length is capacity + 1 because bitecs entity ids start at 1 (index 0 is never a body; the
+ *   contact solver uses it to mean "the static world").
+ * - Physical quantities are Float64Array, SI units, y up, angles counter-clockwise.
+ * - In a 2D world the z fields exist and stay 0; 2D rotation uses the z component of angular
+ *   quantities (rotation about the axis out of the screen).
+ * - When a component is added to an entity its fields are reset to the defaults documented
+ *   below (bitecs recycles ids and leaves old data behind, so nothing is inherited).
+ */
+
+/** A 3-vector store: one Float64Array a component. */
+export interface Vec3Store {
+  /** x component, per entity. */
+  x: Float64Array;
+  /** y component, per entity (y is up). */
+  y: Float64Array;
+  /** z component, per entity (0 in a 2D world). */
+  z: Float64Array;
+}
+
+function vec3(n: number): Vec3Store {
+  return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
+}
+
+/** The stores of one world; see each field for meaning, unit and default. */
+export interface Components {
+  /** Position of the body's centre of mass, m. Default (0, 0, 0). */
+  Position: Vec3Store;
+  /** Linear velocity of the centre of mass, m/s. Default 0. */
+  Velocity: Vec3Store;
+  /**
+   * Position at the start of the most recent step, m. Written by the integrate stage for every
+   * moving body; read by the collision stage (contacts are found where bodies were, as Box2D
+   * does, and solved speculatively) and by renderers to interpolate between steps.
+   */
+  PreviousPosition: Vec3Store;
+  /**
+   * Force accumulator, N. Cleared at stage 2 of every step and summed by the force laws of
+   * stage 3. Only bodies with this component feel force laws; adding any force-law component
+   * adds it automatically. A body without it still feels the world's uniform gravity.
+   */
+  Force: Vec3Store;
+  /**
+   * Mass: `value` in kg (> 0 for dynamic bodies) and `inv` = 1 / value in 1/kg; `inv` = 0 means
+   * infinite mass (static or kinematic). Default 1 kg. Write both through `setMass` so they stay
+   * consistent; the solver reads only `inv`.
+   */
+  Mass: { value: Float64Array; inv: Float64Array };
+  /**
+   * Round collision shape: a circle in a 2D world, a sphere in a 3D world (Rapier's "ball").
+   * `radius` in m, > 0. Default 0.5 m.
+   */
+  Ball: { radius: Float64Array };
+  /**
+   * Static line segment from (ax, ay, az) to (bx, by, bz), m: an inclined wall or floor that
+   * bodies collide with, end points included (a body hitting an end point bounces off the point).
+   * `radius` thickens it into a capsule, m, >= 0 (default 0). Segments never move.
+   */
+  Segment: {
+    ax: Float64Array; ay: Float64Array; az: Float64Array;
+    bx: Float64Array; by: Float64Array; bz: Float64Array;
+    radius: Float64Array;
+  };
+  /**
+   * Surface material for contacts. `restitution` in [0, 1] (ratio of separating to approaching
+   * normal speed; default 0); `friction` the kinetic Coulomb coefficient mu_k >= 0 (default 0.6);
+   * `staticFriction` mu_s >= 0 used while a contact sticks (default equal to friction).
+   * A pair combines as Box2D does: restitution = max(e_a, e_b), friction = sqrt(mu_a mu_b).
+   */
+  Material: { restitution: Float64Array; friction: Float64Array; staticFriction: Float64Array };
+  /** Tag: the body never moves and has infinite mass (walls, pegs). */
+  Static: object;
+  /** Tag: the body moves with its velocity, ignores forces, and has infinite mass in contacts. */
+  Kinematic: object;
+  /**
+   * Linear (viscous, Stokes) drag F = -k v, with `k` in N s/m = kg/s, >= 0.
+   * Source: Ramtal and Dobre, ch. 7 (drag); Stokes' law for small Reynolds numbers.
+   */
+  LinearDrag: { k: Float64Array };
+  /**
+   * Quadratic (form) drag F = -k |v| v, with `k` in N s^2/m^2 = kg/m, >= 0
+   * (k = rho C_d A / 2 for a fluid of density rho, drag coefficient C_d and frontal area A).
+   * Source: Ramtal and Dobre, ch. 7; any fluid-mechanics text for the drag equation.
+   */
+  QuadraticDrag: { k: Float64Array };
+  /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
+  Angle: { value: Float64Array };
+  /**
+   * Unit quaternion orientation in a 3D world (x, y, z, w), rotating body frame to world frame.
+   * Default identity (0, 0, 0, 1).
+   */
+  Orientation: { x: Float64Array; y: Float64Array; z: Float64Array; w: Float64Array };
+  /** Angular velocity, rad/s, world frame. In 2D only z is used (counter-clockwise positive). Default 0. */
+  AngularVelocity: Vec3Store;
+  /** Torque accumulator, N m, world frame; cleared with Force. In 2D only z is used. */
+  Torque: Vec3Store;
+  /**
+   * Scalar moment of inertia about the centre of mass: `value` in kg m^2, `inv` in 1/(kg m^2),
+   * `inv` = 0 locks rotation. For a ball: solid disc m r^2 / 2 in 2D, solid sphere 2 m r^2 / 5 in 3D.
+   * Default 0 (no rotation) until set by `addBody` or `setInertia`.
+   */
+  Inertia: { value: Float64Array; inv: Float64Array };
+}
+
+/** Allocates every store of a world with room for `capacity` entities (ids 1..capacity). */
+export function createComponents(capacity: number): Components {
+  const n = capacity + 1;
+  const f = (): Float64Array => new Float64Array(n);
+  return {
+    Position: vec3(n),
+    Velocity: vec3(n),
+    PreviousPosition: vec3(n),
+    Force: vec3(n),
+    Mass: { value: f(), inv: f() },
+    Ball: { radius: f() },
+    Segment: { ax: f(), ay: f(), az: f(), bx: f(), by: f(), bz: f(), radius: f() },
+    Material: { restitution: f(), friction: f(), staticFriction: f() },
+    Static: {},
+    Kinematic: {},
+    LinearDrag: { k: f() },
+    QuadraticDrag: { k: f() },
+    Angle: { value: f() },
+    Orientation: { x: f(), y: f(), z: f(), w: f() },
+    AngularVelocity: vec3(n),
+    Torque: vec3(n),
+    Inertia: { value: f(), inv: f() },
+  };
+}
+
+/** Default material values, documented on `Components.Material`. */
+export const DEFAULT_MATERIAL = Object.freeze({ restitution: 0, friction: 0.6 });
+
+/** Default ball radius in m, documented on `Components.Ball`. */
+export const DEFAULT_RADIUS = 0.5;

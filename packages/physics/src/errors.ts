@@ -1,0 +1,53 @@
+import type { PhysicsWorld } from './world';
+
+/**
+ * Thrown by `step` when a body's state becomes NaN or infinite. It is a RangeError so callers that
+ * catch bad input catch it too. The step stops at the stage that found it, so the NaN does not reach
+ * the collision solver or any other body. `entity`, `field` and `stage` say where.
+ */
+export class NonFiniteStateError extends RangeError {
+  /** The entity whose state is not finite. */
+  readonly entity: number;
+  /** The field, e.g. 'Velocity.y'. */
+  readonly field: string;
+  /** The stage that found it. */
+  readonly stage: string;
+  constructor(entity: number, field: string, value: number, stage: string, detail: string) {
+    super(
+      `bitphysics: entity ${entity} has a non-finite ${field} (${value}) after stage '${stage}'. ${detail} ` +
+        'A NaN or infinity was written into a component, or a force law divided by zero (add softening), or the step is unstable (smaller dt or more substeps).',
+    );
+    this.name = 'NonFiniteStateError';
+    this.entity = entity;
+    this.field = field;
+    this.stage = stage;
+  }
+}
+
+/**
+ * Finds the first entity of `ents` with a non-finite position, velocity, force or inverse mass and
+ * throws a NonFiniteStateError naming it. Called by systems whose cheap running check (a sum that
+ * turned NaN) failed; returns quietly if nothing is non-finite (the sum overflowed on huge but
+ * finite values).
+ */
+export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, stage: string): void {
+  const c = world.components;
+  const fields: Array<[string, Float64Array]> = [
+    ['Position.x', c.Position.x], ['Position.y', c.Position.y], ['Position.z', c.Position.z],
+    ['Velocity.x', c.Velocity.x], ['Velocity.y', c.Velocity.y], ['Velocity.z', c.Velocity.z],
+    ['AngularVelocity.z', c.AngularVelocity.z], ['AngularVelocity.x', c.AngularVelocity.x], ['AngularVelocity.y', c.AngularVelocity.y],
+  ];
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    for (const [name, arr] of fields) {
+      const v = arr[e]!;
+      if (!Number.isFinite(v)) {
+        const f = (a: Float64Array) => a[e];
+        const detail =
+          `Its inputs: previous position (${f(c.PreviousPosition.x)}, ${f(c.PreviousPosition.y)}, ${f(c.PreviousPosition.z)}), ` +
+          `force (${f(c.Force.x)}, ${f(c.Force.y)}, ${f(c.Force.z)}) N, inverse mass ${f(c.Mass.inv)} 1/kg.`;
+        throw new NonFiniteStateError(e, name, v, stage, detail);
+      }
+    }
+  }
+}

@@ -1,0 +1,16 @@
+import type { PhysicsWorld } from '../world';
+import type { IntegratorName } from './names';
+import { semiImplicitEuler } from './semi-implicit-euler';
+
+/** An integration scheme: advances every moving body of the world by h seconds. */
+export type Integrator = (world: PhysicsWorld, h: number) => void;
+
+/** The scheme behind each name of `INTEGRATOR_NAMES`. */
+export const INTEGRATORS: Record<IntegratorName, Integrator> = {
+  'semi-implicit-euler': semiImplicitEuler,
+};
+
+/** Stage 4: advances the world by `world.h` with the world's chosen scheme. */
+export function integrateSystem(world: PhysicsWorld): void {
+  INTEGRATORS[world.integrator](world, world.h);
+}

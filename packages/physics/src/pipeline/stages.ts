@@ -1,0 +1,50 @@
+import type { PhysicsWorld } from '../world';
+import { clearForcesSystem } from '../forces/clear';
+import { linearDragSystem, quadraticDragSystem } from '../forces/drag';
+import { integrateSystem } from '../integrators/integrate';
+import { broadphaseSystem } from '../collision/broadphase';
+import { narrowphaseSystem } from '../collision/narrowphase';
+import { contactSolverSystem } from '../collision/solver';
+
+/** A system: a plain function of the world, run once per (sub)step in its stage. */
+export type System = (world: PhysicsWorld) => void;
+
+/**
+ * The stages of a step, in order (DESIGN.md, "The step"):
+ * 1. `spawn`: emitters and lifetimes (once per step);
+ * 2. `clearForces`: zero the force and torque accumulators;
+ * 3. `forces`: one system per force law, user forces too;
+ * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states);
+ * 5. `collide`: broadphase, narrowphase, contact solver (impulses, restitution, friction, position correction);
+ * 6. `constraints`: position-based links;
+ * 7. `finalize`: sleeping, diagnostics (once per step).
+ * Stages 2 to 6 run once per substep.
+ */
+export const STAGES = ['spawn', 'clearForces', 'forces', 'integrate', 'collide', 'constraints', 'finalize'] as const;
+
+/** One of `STAGES`. */
+export type StageName = (typeof STAGES)[number];
+
+/** The stages that run once per substep, in order. */
+export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'integrate', 'collide', 'constraints'];
+
+/**
+ * The default pipeline: every stage with its built-in systems, in run order. A world starts with a
+ * copy of it in `world.stages`; hook in with `addSystem`.
+ */
+export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
+  { stage: 'spawn', systems: [] },
+  { stage: 'clearForces', systems: [clearForcesSystem] },
+  { stage: 'forces', systems: [linearDragSystem, quadraticDragSystem] },
+  { stage: 'integrate', systems: [integrateSystem] },
+  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
+  { stage: 'constraints', systems: [] },
+  { stage: 'finalize', systems: [] },
+]);
+
+/** A fresh copy of the default systems of every stage. */
+export function createStages(): Record<StageName, System[]> {
+  const stages = {} as Record<StageName, System[]>;
+  for (const { stage, systems } of PIPELINE) stages[stage] = [...systems];
+  return stages;
+}

@@ -1,0 +1,113 @@
+import type { PhysicsWorld } from '../world';
+import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages';
+import { describe } from '../validate';
+
+const now: () => number =
+  typeof globalThis.performance?.now === 'function' ? () => globalThis.performance.now() : () => Date.now();
+
+function runStage(world: PhysicsWorld, stage: StageName): void {
+  const systems = world.stages[stage];
+  if (systems.length === 0) return;
+  const t0 = now();
+  for (let i = 0; i < systems.length; i++) systems[i]!(world);
+  world.timings[stage] += now() - t0;
+}
+
+/**
+ * Advances the world by one fixed step of `world.dt` seconds: `spawn`, then `substeps` times
+ * (`clearForces`, `forces`, `integrate`, `collide`, `constraints`) with h = dt / substeps, then
+ * `finalize`. `world.time` advances by h after each substep's integrate stage; `world.timings`
+ * holds the milliseconds each stage took in this step.
+ *
+ * @throws RangeError if more entities exist than the world's capacity (entities added with bitecs'
+ *   own `addEntity` bypass the check of `createEntity`; this catches them before their data is lost).
+ * @throws NonFiniteStateError (a RangeError) if a body's state became NaN or infinite; the message
+ *   names the entity and field (see `integrateSystem`).
+ */
+export function step(world: PhysicsWorld): void {
+  if (world.entityIndex.maxId > world.capacity) {
+    throw new RangeError(
+      `step: entity id ${world.entityIndex.maxId} exceeds the world's capacity ${world.capacity}; ` +
+        'create entities with createEntity/addBody, or make the world with a larger capacity',
+    );
+  }
+  const timings = world.timings;
+  for (const s of STAGES) timings[s] = 0;
+  runStage(world, 'spawn');
+  const n = world.substeps;
+  const h = world.dt / n;
+  world.h = h;
+  const t0 = world.time;
+  for (let s = 0; s < n; s++) {
+    world.time = t0 + s * h;
+    for (const stage of SUBSTEP_STAGES) {
+      runStage(world, stage);
+      if (stage === 'integrate') world.time = t0 + (s + 1) * h;
+    }
+  }
+  world.time = t0 + world.dt;
+  runStage(world, 'finalize');
+  world.steps++;
+}
+
+/**
+ * Runs `step` `count` times. @throws RangeError unless count is a non-negative integer.
+ */
+export function stepMany(world: PhysicsWorld, count: number): void {
+  if (!Number.isInteger(count) || count < 0) {
+    throw new RangeError(`stepMany: count must be a non-negative integer, got ${describe(count)}`);
+  }
+  for (let i = 0; i < count; i++) step(world);
+}
+
+/**
+ * Evaluates every force law at the world's current state: clears the accumulators and runs the
+ * `forces` stage. Multi-stage integrators call it at each trial state, which is why every force
+ * law must be a pure function of the state arrays it reads.
+ */
+export function evaluateForces(world: PhysicsWorld): void {
+  const clear = world.stages.clearForces;
+  for (let i = 0; i < clear.length; i++) clear[i]!(world);
+  const forces = world.stages.forces;
+  for (let i = 0; i < forces.length; i++) forces[i]!(world);
+}
+
+/** Where `addSystem` inserts a system within its stage. */
+export interface AddSystemOptions {
+  /** Insert just before this system (which must be in the stage). */
+  before?: System;
+  /** Insert just after this system (which must be in the stage). */
+  after?: System;
+}
+
+/**
+ * Hooks `system` into `stage` of this world, at the end of the stage unless `before` or `after`
+ * names a system already there. User force laws go in `'forces'`.
+ * @throws RangeError on an unknown stage or a `before`/`after` system that is not in the stage.
+ * @throws TypeError if `system` is not a function.
+ */
+export function addSystem(world: PhysicsWorld, stage: StageName, system: System, options: AddSystemOptions = {}): void {
+  if (!(STAGES as readonly string[]).includes(stage)) {
+    throw new RangeError(`addSystem: stage must be one of ${STAGES.join(', ')}, got ${describe(stage)}`);
+  }
+  if (typeof system !== 'function') throw new TypeError(`addSystem: system must be a function, got ${describe(system)}`);
+  const list = world.stages[stage];
+  const anchor = options.before ?? options.after;
+  if (anchor === undefined) {
+    list.push(system);
+    return;
+  }
+  const i = list.indexOf(anchor);
+  if (i < 0) throw new RangeError(`addSystem: the ${options.before ? 'before' : 'after'} system is not in stage '${stage}'`);
+  list.splice(options.before ? i : i + 1, 0, system);
+}
+
+/** Removes `system` from `stage`; returns whether it was there. */
+export function removeSystem(world: PhysicsWorld, stage: StageName, system: System): boolean {
+  const list = world.stages[stage];
+  if (!list) throw new RangeError(`removeSystem: stage must be one of ${STAGES.join(', ')}, got ${describe(stage)}`);
+  const i = list.indexOf(system);
+  if (i < 0) return false;
+  list.splice(i, 1);
+  return true;
+}

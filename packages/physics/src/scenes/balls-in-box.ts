@@ -1,0 +1,126 @@
+import type { PhysicsWorld } from '../world';
+import { addBody, setBoundary } from '../bodies';
+import { Rng } from '../rng';
+import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertFinite } from '../validate';
+import type { SceneDefinition } from './types';
+
+/** Options of the `balls-in-box` scene. */
+export interface BallsInBoxOptions {
+  /** Number of balls, integer in [1, 10_000_000]. Default 1000. */
+  count?: number;
+  /** Seed of the jitter. Default 1. */
+  seed?: number;
+  /** Ball radius, m, > 0. Default 0.5 m. */
+  radius?: number;
+  /** Grid pitch of the starting layout, m; must exceed 2 radius. Default 1.5 m. */
+  spacing?: number;
+  /** Restitution of balls and walls, [0, 1]. Default 0.5. */
+  restitution?: number;
+  /** Friction coefficient of balls and walls, >= 0. Default 0.1. */
+  friction?: number;
+  /** Mass of each ball, kg, > 0. Default 1 kg. */
+  mass?: number;
+}
+
+/** The resolved layout of `balls-in-box`: what a peer engine needs to build the same scene. */
+export interface BallsInBoxLayout {
+  /** Number of balls. */
+  count: number;
+  /** Starting centres, m: x0, y0, x1, y1, ... */
+  positions: Float64Array;
+  /** Ball radius, m. */
+  radius: number;
+  /** Ball mass, kg. */
+  mass: number;
+  /** Restitution, friction. */
+  restitution: number;
+  friction: number;
+  /** Inner corners of the box, m. */
+  min: [number, number];
+  max: [number, number];
+  /** Gravity, m/s^2. */
+  gravity: [number, number];
+}
+
+const OPTIONS = ['count', 'seed', 'radius', 'spacing', 'restitution', 'friction', 'mass'] as const;
+
+/**
+ * Computes the `balls-in-box` layout: `count` balls on a grid of pitch `spacing`, jittered by up to
+ * 40% of the free space between neighbours (so nothing overlaps), in a closed box ceil(2 sqrt(N))
+ * cells wide and one cell taller than the rows of balls; gravity (0, -10) m/s^2.
+ * @throws TypeError | RangeError on bad options.
+ */
+export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLayout {
+  const where = 'balls-in-box';
+  assertKnownKeys(where, options, OPTIONS);
+  const count = options.count ?? 1000;
+  assertInteger(where, 'count', count, 1, 10_000_000);
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const radius = options.radius ?? 0.5;
+  assertPositive(where, 'radius', radius);
+  const spacing = options.spacing ?? 1.5;
+  assertPositive(where, 'spacing', spacing);
+  if (!(spacing > 2 * radius)) throw new RangeError(`${where}: spacing must exceed 2 radius (${2 * radius}), got ${spacing}`);
+  const restitution = options.restitution ?? 0.5;
+  assertInRange(where, 'restitution', restitution, 0, 1);
+  const friction = options.friction ?? 0.1;
+  assertNonNegative(where, 'friction', friction);
+  const mass = options.mass ?? 1;
+  assertPositive(where, 'mass', mass);
+
+  const columns = Math.max(1, Math.ceil(2 * Math.sqrt(count)));
+  const rows = Math.ceil(count / columns);
+  const width = columns * spacing;
+  const height = (rows + 1) * spacing;
+  const rng = new Rng(seed);
+  const jitter = 0.4 * (spacing - 2 * radius);
+  const positions = new Float64Array(2 * count);
+  for (let i = 0; i < count; i++) {
+    const col = i % columns, row = Math.floor(i / columns);
+    positions[2 * i] = (col + 0.5) * spacing + rng.range(-jitter, jitter);
+    positions[2 * i + 1] = (row + 0.5) * spacing + rng.range(-jitter, jitter);
+  }
+  return {
+    count, positions, radius, mass, restitution, friction,
+    min: [0, 0], max: [width, height], gravity: [0, -10],
+  };
+}
+
+/** Handles returned by the `balls-in-box` builder. */
+export interface BallsInBoxHandles {
+  /** Entity ids of the balls, in layout order. */
+  balls: Uint32Array;
+  /** The layout used. */
+  layout: BallsInBoxLayout;
+}
+
+/**
+ * `balls-in-box`: N balls of radius 0.5 m (restitution 0.5, friction 0.1) fall from a jittered 1.5 m
+ * grid into a closed box; gravity -10 m/s^2. The benchmark scene compared against rapier2d and matter-js.
+ */
+export const ballsInBox: SceneDefinition<BallsInBoxOptions, BallsInBoxHandles> = {
+  name: 'balls-in-box',
+  description: 'N balls (r 0.5 m, e 0.5, mu 0.1) fall from a jittered grid into a closed box; 2D',
+  defaultCount: 1000,
+  worldOptions(options = {}) {
+    const count = options.count ?? 1000;
+    return { dimensions: 2, capacity: count + 16, gravity: [0, -10] };
+  },
+  build(world: PhysicsWorld, options: BallsInBoxOptions = {}): BallsInBoxHandles {
+    if (world.dimensions !== 2) throw new RangeError(`balls-in-box: needs a 2D world, got dimensions ${world.dimensions}`);
+    const layout = ballsInBoxLayout(options);
+    setBoundary(world, { min: layout.min, max: layout.max, restitution: layout.restitution, friction: layout.friction });
+    const balls = new Uint32Array(layout.count);
+    const p = layout.positions;
+    const pos = [0, 0];
+    for (let i = 0; i < layout.count; i++) {
+      pos[0] = p[2 * i]!; pos[1] = p[2 * i + 1]!;
+      balls[i] = addBody(world, {
+        position: pos, radius: layout.radius, mass: layout.mass,
+        restitution: layout.restitution, friction: layout.friction,
+      });
+    }
+    return { balls, layout };
+  },
+};

@@ -1,0 +1,76 @@
+import type { PhysicsWorld } from '../world';
+import { addParticle } from '../bodies';
+import { Rng } from '../rng';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate';
+import type { SceneDefinition } from './types';
+
+/** Options of the `particles` scene. */
+export interface ParticlesOptions {
+  /** Number of particles, integer in [1, 16_000_000]. Default 100_000. */
+  count?: number;
+  /** Seed of the initial state. Default 1. */
+  seed?: number;
+}
+
+/** The resolved initial state of `particles`, for peers such as the plain-loop baseline. */
+export interface ParticlesLayout {
+  count: number;
+  /** x0, y0, x1, y1, ... m, uniform in [-50, 50] x [0, 100]. */
+  positions: Float64Array;
+  /** vx0, vy0, ... m/s, uniform in [-5, 5]^2. */
+  velocities: Float64Array;
+  /** Gravity, m/s^2. */
+  gravity: [number, number];
+}
+
+/** Computes the `particles` initial state. @throws TypeError | RangeError on bad options. */
+export function particlesLayout(options: ParticlesOptions = {}): ParticlesLayout {
+  const where = 'particles';
+  assertKnownKeys(where, options, ['count', 'seed']);
+  const count = options.count ?? 100_000;
+  assertInteger(where, 'count', count, 1, 16_000_000);
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const rng = new Rng(seed);
+  const positions = new Float64Array(2 * count);
+  const velocities = new Float64Array(2 * count);
+  for (let i = 0; i < count; i++) {
+    positions[2 * i] = rng.range(-50, 50);
+    positions[2 * i + 1] = rng.range(0, 100);
+    velocities[2 * i] = rng.range(-5, 5);
+    velocities[2 * i + 1] = rng.range(-5, 5);
+  }
+  return { count, positions, velocities, gravity: [0, -10] };
+}
+
+/** Handles of the `particles` scene. */
+export interface ParticlesHandles {
+  /** Entity ids in layout order. */
+  particles: Uint32Array;
+}
+
+/**
+ * `particles`: N free particles under gravity (0, -10) m/s^2, no collisions, no forces: the pure cost
+ * of the framework's step, compared in the bench with the same integration as a bare loop.
+ */
+export const particles: SceneDefinition<ParticlesOptions, ParticlesHandles> = {
+  name: 'particles',
+  description: 'N free particles under gravity, no collisions: the framework overhead against a bare loop; 2D',
+  defaultCount: 100_000,
+  worldOptions(options = {}) {
+    const count = options.count ?? 100_000;
+    return { dimensions: 2, capacity: count, gravity: [0, -10] };
+  },
+  build(world: PhysicsWorld, options: ParticlesOptions = {}): ParticlesHandles {
+    if (world.dimensions !== 2) throw new RangeError(`particles: needs a 2D world, got dimensions ${world.dimensions}`);
+    const layout = particlesLayout(options);
+    const ids = new Uint32Array(layout.count);
+    const p = [0, 0], v = [0, 0];
+    for (let i = 0; i < layout.count; i++) {
+      p[0] = layout.positions[2 * i]!; p[1] = layout.positions[2 * i + 1]!;
+      v[0] = layout.velocities[2 * i]!; v[1] = layout.velocities[2 * i + 1]!;
+      ids[i] = addParticle(world, { position: p, velocity: v });
+    }
+    return { particles: ids };
+  },
+};

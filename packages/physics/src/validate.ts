@@ -1,0 +1,121 @@
+/**
+ * Argument checks for the API boundary. Every public entry point validates its input with
+ * these so that a bad value is reported where it enters, naming the parameter and the value,
+ * instead of spreading through the world as NaN.
+ *
+ * Conventions: a value of the wrong type throws `TypeError`; a value of the right type outside
+ * its valid range throws `RangeError`. Messages read `<where>: <param> must be <rule>, got <value>`.
+ */
+
+/** Formats a value for an error message: numbers as written, strings quoted, objects as JSON. */
+export function describe(value: unknown): string {
+  if (typeof value === 'number') return Object.is(value, -0) ? '-0' : String(value);
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (value === undefined) return 'undefined';
+  if (value === null) return 'null';
+  if (typeof value === 'function') return 'a function';
+  try {
+    const text = JSON.stringify(value);
+    return text.length > 80 ? `${text.slice(0, 77)}...` : text;
+  } catch {
+    return Object.prototype.toString.call(value);
+  }
+}
+
+/**
+ * Throws unless `value` is a finite number.
+ * @throws TypeError if not a number; RangeError if NaN or infinite.
+ */
+export function assertFinite(where: string, param: string, value: unknown): asserts value is number {
+  if (typeof value !== 'number') {
+    throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
+  }
+  if (!Number.isFinite(value)) {
+    throw new RangeError(`${where}: ${param} must be finite, got ${describe(value)}`);
+  }
+}
+
+/** Throws unless `value` is a finite number > 0. @throws TypeError | RangeError */
+export function assertPositive(where: string, param: string, value: unknown): asserts value is number {
+  assertFinite(where, param, value);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0, got ${describe(value)}`);
+}
+
+/** Throws unless `value` is a finite number >= 0. @throws TypeError | RangeError */
+export function assertNonNegative(where: string, param: string, value: unknown): asserts value is number {
+  assertFinite(where, param, value);
+  if (!(value >= 0)) throw new RangeError(`${where}: ${param} must be >= 0, got ${describe(value)}`);
+}
+
+/** Throws unless `value` is a finite number in the closed interval [min, max]. @throws TypeError | RangeError */
+export function assertInRange(
+  where: string,
+  param: string,
+  value: unknown,
+  min: number,
+  max: number,
+): asserts value is number {
+  assertFinite(where, param, value);
+  if (!(value >= min && value <= max)) {
+    throw new RangeError(`${where}: ${param} must be in [${min}, ${max}], got ${describe(value)}`);
+  }
+}
+
+/** Throws unless `value` is an integer in [min, max]. @throws TypeError | RangeError */
+export function assertInteger(
+  where: string,
+  param: string,
+  value: unknown,
+  min: number,
+  max: number,
+): asserts value is number {
+  assertFinite(where, param, value);
+  if (!Number.isInteger(value)) throw new RangeError(`${where}: ${param} must be an integer, got ${describe(value)}`);
+  if (value < min || value > max) {
+    throw new RangeError(`${where}: ${param} must be an integer in [${min}, ${max}], got ${describe(value)}`);
+  }
+}
+
+/**
+ * Throws unless `value` is an array (or typed array) of `length` finite numbers.
+ * @throws TypeError if not array-like of numbers or of the wrong length; RangeError if an element is not finite.
+ */
+export function assertVector(
+  where: string,
+  param: string,
+  value: unknown,
+  length: number,
+): asserts value is ArrayLike<number> {
+  const ok = Array.isArray(value) || ArrayBuffer.isView(value);
+  if (!ok || (value as ArrayLike<unknown>).length !== length) {
+    throw new TypeError(`${where}: ${param} must be an array of ${length} numbers, got ${describe(value)}`);
+  }
+  const arr = value as ArrayLike<unknown>;
+  for (let i = 0; i < length; i++) {
+    const v = arr[i];
+    if (typeof v !== 'number') {
+      throw new TypeError(`${where}: ${param}[${i}] must be a number, got ${describe(v)}`);
+    }
+    if (!Number.isFinite(v)) {
+      throw new RangeError(`${where}: ${param}[${i}] must be finite, got ${describe(v)} (in ${describe(value)})`);
+    }
+  }
+}
+
+/**
+ * Throws a TypeError naming the first key of `options` that is not in `known`.
+ * Catches misspelt options (`restituion`) that would otherwise be silently ignored.
+ * @throws TypeError if `options` is not a plain object or has an unknown key.
+ */
+export function assertKnownKeys(where: string, options: unknown, known: readonly string[]): void {
+  if (options === undefined) return;
+  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+    throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
+  }
+  for (const key of Object.keys(options)) {
+    if (!known.includes(key)) {
+      throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${known.join(', ')}`);
+    }
+  }
+}

@@ -1,0 +1,235 @@
+import { addComponent, createEntityIndex, createWorld, hasComponent, observe, onAdd, type World } from 'bitecs';
+import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, type Components } from './components';
+import { createCollisionState, type CollisionState } from './collision/state';
+import { createStages, type StageName, type System, STAGES } from './pipeline/stages';
+import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names';
+import { Rng } from './rng';
+import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
+
+/** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
+export interface PhysicsWorldOptions {
+  /** 2 for a planar world (x, y), 3 for a spatial one (x, y, z). Default 2. */
+  dimensions?: 2 | 3;
+  /**
+   * Most entities alive at once (bodies, walls, springs, emitters: every entity counts).
+   * Integer in [1, 16_777_216]. Stores are allocated once at this size. Default 10_000.
+   */
+  capacity?: number;
+  /** Uniform gravitational acceleration, m/s^2, an array of `dimensions` numbers. Default (0, -9.81[, 0]). */
+  gravity?: ArrayLike<number>;
+  /** Fixed time step, s, finite and > 0. Default 1/60. */
+  dt?: number;
+  /** Substeps a step: the force, integrate, collide and constraint stages run this many times with dt / substeps. Integer in [1, 64]. Default 1. */
+  substeps?: number;
+  /** Integration scheme by name; see `INTEGRATOR_NAMES`. Default 'semi-implicit-euler'. */
+  integrator?: IntegratorName;
+  /** Seed of the world's random number generator (scenes, emitters, turbulence). Any finite number. Default 1. */
+  seed?: number;
+  /**
+   * Contact solver substeps a step (Box2D v3's soft step: gravity, contacts and positions advance in
+   * this many substeps, contacts found once). Integer in [1, 16]. Default 4.
+   */
+  solverSubsteps?: number;
+  /** Sequential-impulse passes per solver substep. Integer in [1, 50]. Default 1. */
+  solverIterations?: number;
+  /**
+   * Approach speed below which a contact does not bounce, m/s, >= 0 (restitution is treated as 0
+   * below it, so resting bodies do not jitter). Default 0.5 m/s. Box2D uses the same idea with 1 m/s.
+   */
+  restitutionThreshold?: number;
+}
+
+const KNOWN_OPTIONS = [
+  'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
+  'solverSubsteps', 'solverIterations', 'restitutionThreshold',
+] as const;
+
+/** The largest capacity a world accepts (2^24 entities). */
+export const MAX_CAPACITY = 16_777_216;
+
+/** Wall-clock milliseconds spent in each stage during the most recent step (all substeps summed). */
+export type StageTimings = Record<StageName, number>;
+
+/** The data a physics world carries besides bitecs' own bookkeeping. */
+export interface PhysicsWorldContext {
+  /** 2 or 3. */
+  readonly dimensions: 2 | 3;
+  /** Most entities alive at once. */
+  readonly capacity: number;
+  /** Uniform gravity, m/s^2 (x, y, z); z is 0 in 2D. Mutable: write through `setGravity`. */
+  readonly gravity: Float64Array;
+  /** Fixed step, s. Change with `setTimeStep`. */
+  dt: number;
+  /** Substeps per step. */
+  substeps: number;
+  /** Current (sub)step length, s, set by `step` while it runs: dt / substeps. */
+  h: number;
+  /** Name of the integration scheme in use. */
+  integrator: IntegratorName;
+  /** Simulated time, s, of the current state. Force laws that vary in time read it (integrators set trial times). */
+  time: number;
+  /** Whole steps taken since creation. */
+  steps: number;
+  /** The world's seeded random number generator. */
+  readonly rng: Rng;
+  /** Component stores, see `Components`. */
+  readonly components: Components;
+  /** The systems of each stage, run in the order of `STAGES`. Add your own with `addSystem`. */
+  readonly stages: Record<StageName, System[]>;
+  /** Collision configuration, broadphase grid, contacts and solver scratch; see `CollisionState`. */
+  readonly collision: CollisionState;
+  /** Milliseconds spent in each stage in the last step. */
+  readonly timings: StageTimings;
+  /**
+   * Count of times each entity id has been spawned (Uint32, capacity + 1). Caches keyed by entity id
+   * compare it so data of a removed body never carries over to the body that recycles its id.
+   */
+  readonly spawnStamp: Uint32Array;
+  /** Internal: bitecs' entity index, read for the live count and the highest id. */
+  readonly entityIndex: ReturnType<typeof createEntityIndex>;
+  /** Internal: removal hooks (springs, joints and caches that reference a removed entity). */
+  readonly removeHooks: Array<(world: PhysicsWorld, eid: number) => void>;
+}
+
+/** A bitecs world carrying a physics context. */
+export type PhysicsWorld = World<PhysicsWorldContext>;
+
+/**
+ * Creates a physics world: component stores of fixed capacity, the staged pipeline, collision
+ * state and a seeded random number generator.
+ *
+ * @throws TypeError on an unknown option name or a value of the wrong type.
+ * @throws RangeError on a value out of range (dt <= 0, capacity < 1, substeps not an integer, ...).
+ * @example
+ * const world = createPhysicsWorld({ dimensions: 2, capacity: 1000, gravity: [0, -9.81] });
+ */
+export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWorld {
+  const where = 'createPhysicsWorld';
+  assertKnownKeys(where, options, KNOWN_OPTIONS);
+  const dimensions = options.dimensions ?? 2;
+  if (dimensions !== 2 && dimensions !== 3) {
+    throw new RangeError(`${where}: dimensions must be 2 or 3, got ${describe(dimensions)}`);
+  }
+  const capacity = options.capacity ?? 10_000;
+  assertInteger(where, 'capacity', capacity, 1, MAX_CAPACITY);
+  const gravity = new Float64Array(3);
+  if (options.gravity !== undefined) {
+    assertVector(where, 'gravity', options.gravity, dimensions);
+    for (let i = 0; i < dimensions; i++) gravity[i] = options.gravity[i]!;
+  } else {
+    gravity[1] = -9.81;
+  }
+  const dt = options.dt ?? 1 / 60;
+  assertPositive(where, 'dt', dt);
+  const substeps = options.substeps ?? 1;
+  assertInteger(where, 'substeps', substeps, 1, 64);
+  const integrator = options.integrator ?? 'semi-implicit-euler';
+  if (typeof integrator !== 'string' || !(INTEGRATOR_NAMES as readonly string[]).includes(integrator)) {
+    throw new RangeError(`${where}: integrator must be one of ${INTEGRATOR_NAMES.map((n) => `'${n}'`).join(', ')}, got ${describe(integrator)}`);
+  }
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const solverSubsteps = options.solverSubsteps ?? 4;
+  assertInteger(where, 'solverSubsteps', solverSubsteps, 1, 16);
+  const solverIterations = options.solverIterations ?? 1;
+  assertInteger(where, 'solverIterations', solverIterations, 1, 50);
+  const restitutionThreshold = options.restitutionThreshold ?? 0.5;
+  assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
+
+  const entityIndex = createEntityIndex();
+  const components = createComponents(capacity);
+  const timings = {} as StageTimings;
+  for (const s of STAGES) timings[s] = 0;
+  const context: PhysicsWorldContext = {
+    dimensions,
+    capacity,
+    gravity,
+    dt,
+    substeps,
+    h: dt / substeps,
+    integrator,
+    time: 0,
+    steps: 0,
+    rng: new Rng(seed),
+    components,
+    stages: createStages(),
+    collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold }),
+    timings,
+    spawnStamp: new Uint32Array(capacity + 1),
+    entityIndex,
+    removeHooks: [],
+  };
+  const world = createWorld(context, entityIndex) as PhysicsWorld;
+  installDefaults(world);
+  return world;
+}
+
+/**
+ * Resets a component's fields for an entity when the component is added (ids are recycled and
+ * bitecs leaves old data behind), and makes every force-law component bring the Force accumulator.
+ */
+function installDefaults(world: PhysicsWorld): void {
+  const c = world.components;
+  const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
+    s.x[eid] = 0; s.y[eid] = 0; s.z[eid] = 0;
+  };
+  // Position is where every body starts: reset all its per-entity motion state, so a recycled id
+  // never inherits velocity, spin or force from the entity that had it before.
+  observe(world, onAdd(c.Position), (eid: number) => {
+    c.Position.x[eid] = 0; c.Position.y[eid] = 0; c.Position.z[eid] = 0;
+    c.PreviousPosition.x[eid] = 0; c.PreviousPosition.y[eid] = 0; c.PreviousPosition.z[eid] = 0;
+    c.Velocity.x[eid] = 0; c.Velocity.y[eid] = 0; c.Velocity.z[eid] = 0;
+    c.AngularVelocity.x[eid] = 0; c.AngularVelocity.y[eid] = 0; c.AngularVelocity.z[eid] = 0;
+    c.Force.x[eid] = 0; c.Force.y[eid] = 0; c.Force.z[eid] = 0;
+    c.Torque.x[eid] = 0; c.Torque.y[eid] = 0; c.Torque.z[eid] = 0;
+  });
+  observe(world, onAdd(c.Velocity), zero3(c.Velocity));
+  observe(world, onAdd(c.Force), zero3(c.Force));
+  observe(world, onAdd(c.AngularVelocity), zero3(c.AngularVelocity));
+  observe(world, onAdd(c.Torque), zero3(c.Torque));
+  observe(world, onAdd(c.Mass), (eid: number) => { c.Mass.value[eid] = 1; c.Mass.inv[eid] = 1; });
+  observe(world, onAdd(c.Ball), (eid: number) => { c.Ball.radius[eid] = DEFAULT_RADIUS; });
+  observe(world, onAdd(c.Material), (eid: number) => {
+    c.Material.restitution[eid] = DEFAULT_MATERIAL.restitution;
+    c.Material.friction[eid] = DEFAULT_MATERIAL.friction;
+    c.Material.staticFriction[eid] = DEFAULT_MATERIAL.friction;
+  });
+  observe(world, onAdd(c.Segment), (eid: number) => {
+    const s = c.Segment;
+    s.ax[eid] = 0; s.ay[eid] = 0; s.az[eid] = 0; s.bx[eid] = 0; s.by[eid] = 0; s.bz[eid] = 0; s.radius[eid] = 0;
+  });
+  observe(world, onAdd(c.Angle), (eid: number) => { c.Angle.value[eid] = 0; });
+  observe(world, onAdd(c.Orientation), (eid: number) => {
+    c.Orientation.x[eid] = 0; c.Orientation.y[eid] = 0; c.Orientation.z[eid] = 0; c.Orientation.w[eid] = 1;
+  });
+  observe(world, onAdd(c.Inertia), (eid: number) => { c.Inertia.value[eid] = 0; c.Inertia.inv[eid] = 0; });
+  observe(world, onAdd(c.LinearDrag), (eid: number) => { c.LinearDrag.k[eid] = 0; });
+  observe(world, onAdd(c.QuadraticDrag), (eid: number) => { c.QuadraticDrag.k[eid] = 0; });
+  registerForceLaw(world, c.LinearDrag);
+  registerForceLaw(world, c.QuadraticDrag);
+  // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.
+  observe(world, onAdd(c.Force), (eid: number) => addComponentIfMissing(world, eid, c.Mass));
+  observe(world, onAdd(c.Ball), (eid: number) => {
+    addComponentIfMissing(world, eid, c.Mass);
+    addComponentIfMissing(world, eid, c.Material);
+  });
+}
+
+/**
+ * Declares `component` a force law: whenever it is added to an entity, the Force accumulator is
+ * added too, so the law's system has somewhere to write. Use it for your own force-law components.
+ */
+export function registerForceLaw(world: PhysicsWorld, component: object): void {
+  const force = world.components.Force;
+  observe(world, onAdd(component), (eid: number) => {
+    addComponentIfMissing(world, eid, force);
+  });
+}
+
+/** Adds `component` to `eid` unless it already has it (then its data is left untouched). */
+export function addComponentIfMissing(world: PhysicsWorld, eid: number, component: object): void {
+  if (!hasComponent(world, eid, component)) addComponent(world, eid, component);
+}
+
+/** Names the stage order for documentation and tooling. */
+export { STAGES };

@@ -1,0 +1,133 @@
+// Builds the gallery of games (dist/site), the bench CLI (packages/bench/dist) and the packages'
+// ESM bundles (packages/*/dist). Run directly (`npm run build`) or import the functions.
+import * as esbuild from 'esbuild';
+import { existsSync, readdirSync, readFileSync, statSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+export const siteDir = join(root, 'dist', 'site');
+
+/** Workspace packages resolve to their TypeScript sources under this condition. */
+const conditions = ['bitphysics-source'];
+
+/** Every game folder: games/<name>/ holding main.ts and index.html. */
+export function gameFolders() {
+  const games = join(root, 'games');
+  return readdirSync(games)
+    .filter((name) => statSync(join(games, name)).isDirectory())
+    .filter((name) => existsSync(join(games, name, 'main.ts')) && existsSync(join(games, name, 'index.html')))
+    .sort();
+}
+
+/**
+ * The gallery's registry: each game folder's game.json ({ title, summary, category, order }) plus its
+ * folder name, sorted by category order then `order`. Written to dist/site/registry.json.
+ * @throws Error naming the folder if a game.json is missing or lacks a title or summary.
+ */
+export function readRegistry() {
+  const categories = ['Games', 'Labs', 'Benchmarks'];
+  const entries = gameFolders().map((folder) => {
+    const file = join(root, 'games', folder, 'game.json');
+    if (!existsSync(file)) throw new Error(`games/${folder}/game.json is missing`);
+    const meta = JSON.parse(readFileSync(file, 'utf8'));
+    if (typeof meta.title !== 'string' || typeof meta.summary !== 'string') {
+      throw new Error(`games/${folder}/game.json needs a title and a summary`);
+    }
+    const category = meta.category ?? 'Labs';
+    if (!categories.includes(category)) throw new Error(`games/${folder}/game.json: category must be one of ${categories.join(', ')}`);
+    return { folder, title: meta.title, summary: meta.summary, category, order: meta.order ?? 100 };
+  });
+  entries.sort((a, b) => categories.indexOf(a.category) - categories.indexOf(b.category) || a.order - b.order || a.title.localeCompare(b.title));
+  return entries;
+}
+
+/** Writes dist/site/registry.json. */
+export function writeRegistry() {
+  mkdirSync(siteDir, { recursive: true });
+  writeFileSync(join(siteDir, 'registry.json'), JSON.stringify(readRegistry(), null, 2));
+}
+
+/** esbuild options for the site: every game's main.ts bundled, every page and picture copied. */
+export function siteOptions({ minify = false } = {}) {
+  const games = join(root, 'games');
+  const entryPoints = [join(games, 'index.html'), join(games, 'gallery.ts'), join(games, 'gallery.css')];
+  for (const name of gameFolders()) {
+    entryPoints.push(join(games, name, 'main.ts'), join(games, name, 'index.html'));
+    for (const file of readdirSync(join(games, name))) {
+      if (/\.(png|jpg|svg|css)$/.test(file)) entryPoints.push(join(games, name, file));
+    }
+  }
+  return {
+    entryPoints: entryPoints.filter((p) => existsSync(p)),
+    outbase: games,
+    outdir: siteDir,
+    bundle: true,
+    format: 'esm',
+    platform: 'browser',
+    target: 'es2022',
+    conditions,
+    sourcemap: true,
+    minify,
+    loader: { '.html': 'copy', '.png': 'copy', '.jpg': 'copy', '.svg': 'copy' },
+    logLevel: 'warning',
+  };
+}
+
+/** Builds the site once into dist/site. */
+export async function buildSite(options = {}) {
+  rmSync(siteDir, { recursive: true, force: true });
+  mkdirSync(siteDir, { recursive: true });
+  await esbuild.build(siteOptions(options));
+  writeRegistry();
+  return siteDir;
+}
+
+/** Builds the bench CLI into packages/bench/dist/cli.js (workspace code bundled, peers external). */
+export async function buildBench() {
+  await esbuild.build({
+    entryPoints: [join(root, 'packages', 'bench', 'src', 'cli.ts')],
+    outfile: join(root, 'packages', 'bench', 'dist', 'cli.js'),
+    bundle: true,
+    format: 'esm',
+    platform: 'node',
+    target: 'node20',
+    conditions,
+    external: ['@dimforge/*', 'matter-js', 'cli-progress', 'bitecs'],
+    sourcemap: true,
+    banner: { js: '#!/usr/bin/env node' },
+    logLevel: 'warning',
+  });
+}
+
+/** Builds each library package's ESM bundle (packages/<name>/dist/index.js), dependencies external. */
+export async function buildPackages() {
+  for (const name of ['physics', 'render-pixi', 'render-three']) {
+    const entry = join(root, 'packages', name, 'src', 'index.ts');
+    if (!existsSync(entry)) continue;
+    await esbuild.build({
+      entryPoints: [entry],
+      outfile: join(root, 'packages', name, 'dist', 'index.js'),
+      bundle: true,
+      format: 'esm',
+      platform: 'neutral',
+      target: 'es2022',
+      conditions,
+      packages: 'external',
+      sourcemap: true,
+      logLevel: 'warning',
+    });
+  }
+}
+
+if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const benchOnly = process.argv.includes('--bench-only');
+  if (benchOnly) {
+    await buildBench();
+  } else {
+    await buildPackages();
+    await buildBench();
+    await buildSite({ minify: true });
+    console.log(`built ${gameFolders().length} games into ${siteDir}`);
+  }
+}
