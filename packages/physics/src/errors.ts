@@ -32,9 +32,10 @@ export class NonFiniteStateError extends RangeError {
  */
 export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, stage: string): void {
   const c = world.components;
+  // Velocities first: a NaN velocity makes the position NaN in the same step, and the velocity is the cause.
   const fields: Array<[string, Float64Array]> = [
-    ['Position.x', c.Position.x], ['Position.y', c.Position.y], ['Position.z', c.Position.z],
     ['Velocity.x', c.Velocity.x], ['Velocity.y', c.Velocity.y], ['Velocity.z', c.Velocity.z],
+    ['Position.x', c.Position.x], ['Position.y', c.Position.y], ['Position.z', c.Position.z],
     ['AngularVelocity.z', c.AngularVelocity.z], ['AngularVelocity.x', c.AngularVelocity.x], ['AngularVelocity.y', c.AngularVelocity.y],
   ];
   for (let i = 0; i < ents.length; i++) {

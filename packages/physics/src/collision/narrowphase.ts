@@ -21,6 +21,51 @@ function pushContact(
 }
 
 /**
+ * Earliest time t in (0, h] at which two spheres with centre offset r (B minus A) and relative
+ * velocity w come to centre distance R, i.e. the smaller root of |r + w t|^2 = R^2; 0 if they
+ * already touch or overlap, or do not meet within h. (Ericson, Real-Time Collision Detection, 5.5.7.)
+ */
+export function sweepSphere(rx: number, ry: number, rz: number, wx: number, wy: number, wz: number, R: number, h: number): number {
+  const c = rx * rx + ry * ry + rz * rz - R * R;
+  if (c <= 0) return 0;
+  const b = rx * wx + ry * wy + rz * wz;
+  if (b >= 0) return 0;
+  const a = wx * wx + wy * wy + wz * wz;
+  const disc = b * b - a * c;
+  if (disc < 0) return 0;
+  const t = (-b - Math.sqrt(disc)) / a;
+  return t > 0 && t <= h ? t : 0;
+}
+
+/**
+ * Earliest time t in (0, h] at which a sphere centre starting at p (relative to the segment's first
+ * end point) and moving with velocity w comes within R of the segment from 0 to e: against the
+ * segment's side (the infinite line, accepted if the touching point lies between the end points) or
+ * against either end point. 0 if it already touches or does not reach the segment within h.
+ */
+export function sweepSegment(
+  px: number, py: number, pz: number, ex: number, ey: number, ez: number,
+  wx: number, wy: number, wz: number, R: number, h: number,
+): number {
+  const len2 = ex * ex + ey * ey + ez * ez;
+  let best = 0;
+  if (len2 > 0) {
+    // Side: remove the components along the segment and sweep against the line.
+    const pe = (px * ex + py * ey + pz * ez) / len2, we = (wx * ex + wy * ey + wz * ez) / len2;
+    const t = sweepSphere(px - pe * ex, py - pe * ey, pz - pe * ez, wx - we * ex, wy - we * ey, wz - we * ez, R, h);
+    if (t > 0) {
+      const u = pe + we * t;
+      if (u >= 0 && u <= 1) return t;
+    }
+  }
+  const t0 = sweepSphere(px, py, pz, wx, wy, wz, R, h);
+  if (t0 > 0) best = t0;
+  const t1 = sweepSphere(px - ex, py - ey, pz - ez, wx, wy, wz, R, h);
+  if (t1 > 0 && (best === 0 || t1 < best)) best = t1;
+  return best;
+}
+
+/**
  * Collide stage, part 2: turns candidate pairs into contacts, one point a pair, with normal and
  * separation measured where the bodies were at the start of the step. A contact is kept if the gap
  * could close this step: separation < max(0, -v_n) h + d_spec, with v_n the normal relative velocity
@@ -29,6 +74,11 @@ function pushContact(
  * Shapes: ball-ball (circle-circle in 2D, sphere-sphere in 3D: centre distance minus radii);
  * ball-segment (distance to the closest point of the segment, so end points act as round corners;
  * Ericson, Real-Time Collision Detection, 5.1.2); ball-boundary (distance to each face of the box).
+ *
+ * The normal of a contact that will close during the step is taken where the bodies first touch
+ * (a swept test along their relative velocity), not where they were at the start: an oblique
+ * impact then bounces about the true line of centres (Box2D takes the start-of-step normal, which
+ * bends the bounce by up to the angle the bodies turn through in one step).
  */
 export function narrowphaseSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -49,17 +99,23 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     const b = pairB[i]!;
     if (kind === PairKind.BallBall) {
       const a = pairA[i]!;
-      let dx = ox[b]! - ox[a]!, dy = oy[b]! - oy[a]!, dz = oz[b]! - oz[a]!;
-      const d2 = dx * dx + dy * dy + dz * dz;
-      let d = Math.sqrt(d2);
-      if (d > 1e-12) { const inv = 1 / d; dx *= inv; dy *= inv; dz *= inv; } else { dx = 0; dy = 1; dz = 0; d = 0; }
+      const rx = ox[b]! - ox[a]!, ry = oy[b]! - oy[a]!, rz = oz[b]! - oz[a]!;
       const ra = radius[a]!, rb = radius[b]!;
-      const sep = d - ra - rb;
+      const R = ra + rb;
       const ta = type[a]!, tb = type[b]!;
       // Velocity of a static body is 0 by definition (its store is not read).
-      const vax = ta === BodyType.Static ? 0 : vx[a]!, vay = ta === BodyType.Static ? 0 : vy[a]!, vaz = ta === BodyType.Static ? 0 : vz[a]!;
-      const vbx = tb === BodyType.Static ? 0 : vx[b]!, vby = tb === BodyType.Static ? 0 : vy[b]!, vbz = tb === BodyType.Static ? 0 : vz[b]!;
-      const vn = (vbx - vax) * dx + (vby - vay) * dy + (vbz - vaz) * dz;
+      const wx = (tb === BodyType.Static ? 0 : vx[b]!) - (ta === BodyType.Static ? 0 : vx[a]!);
+      const wy = (tb === BodyType.Static ? 0 : vy[b]!) - (ta === BodyType.Static ? 0 : vy[a]!);
+      const wz = (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!);
+      let dx = rx, dy = ry, dz = rz;
+      // Normal where the balls first touch during the step, if they do (see sweepNormal).
+      const t = sweepSphere(rx, ry, rz, wx, wy, wz, R, h);
+      if (t > 0) { dx += wx * t; dy += wy * t; dz += wz * t; }
+      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      if (d > 1e-12) { const inv = 1 / d; dx *= inv; dy *= inv; dz *= inv; } else { dx = 0; dy = 1; dz = 0; }
+      // Gap along that normal where the balls were at the start of the step.
+      const sep = rx * dx + ry * dy + rz * dz - R;
+      const vn = wx * dx + wy * dy + wz * dz;
       if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
       if (ta === BodyType.Static) {
         pushContact(buf, ContactKind.StaticBall, 0, b, a, dx, dy, dz, sep, 0, rb);
@@ -72,25 +128,29 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const s = pairA[i]!;
       const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!;
       const ex = S.bx[s]! - ax, ey = S.by[s]! - ay, ez = S.bz[s]! - az;
-      const px = ox[b]!, py = oy[b]!, pz = oz[b]!;
+      const wx = vx[b]!, wy = vy[b]!, wz = vz[b]!;
+      const R = S.radius[s]! + radius[b]!;
+      // Where the ball's centre is when it first touches the segment this step (or at the start).
+      const t = sweepSegment(ox[b]! - ax, oy[b]! - ay, oz[b]! - az, ex, ey, ez, wx, wy, wz, R, h);
+      const px = ox[b]! + wx * t, py = oy[b]! + wy * t, pz = oz[b]! + wz * t;
       const len2 = ex * ex + ey * ey + ez * ez;
-      let t = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
-      t = t < 0 ? 0 : t > 1 ? 1 : t;
-      let dx = px - (ax + t * ex), dy = py - (ay + t * ey), dz = pz - (az + t * ez);
-      let d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      let u = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
+      u = u < 0 ? 0 : u > 1 ? 1 : u;
+      const qx = ax + u * ex, qy = ay + u * ey, qz = az + u * ez;
+      let dx = px - qx, dy = py - qy, dz = pz - qz;
+      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
       if (d > 1e-12) {
         const inv = 1 / d; dx *= inv; dy *= inv; dz *= inv;
       } else {
         // Centre exactly on the segment: push out along the segment's left normal (2D) or +y.
         const el = Math.sqrt(len2);
         if (el > 0 && world.dimensions === 2) { dx = -ey / el; dy = ex / el; dz = 0; } else { dx = 0; dy = 1; dz = 0; }
-        d = 0;
       }
-      const rb = radius[b]!;
-      const sep = d - S.radius[s]! - rb;
-      const vn = vx[b]! * dx + vy[b]! * dy + vz[b]! * dz;
+      // Gap along that normal from the same feature point, where the ball was at the start of the step.
+      const sep = (ox[b]! - qx) * dx + (oy[b]! - qy) * dy + (oz[b]! - qz) * dz - R;
+      const vn = wx * dx + wy * dy + wz * dz;
       if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
-      pushContact(buf, ContactKind.Segment, 0, b, s, dx, dy, dz, sep, 0, rb);
+      pushContact(buf, ContactKind.Segment, 0, b, s, dx, dy, dz, sep, 0, radius[b]!);
     }
   }
 
