@@ -88,6 +88,84 @@ export interface Components {
    * Source: Ramtal and Dobre, ch. 7; any fluid-mechanics text for the drag equation.
    */
   QuadraticDrag: { k: Float64Array };
+  /**
+   * Per-body scale of the world's uniform gravity, dimensionless (1 = normal, 0 = floats, -1 = falls
+   * up). Default 1. A force law: the body gets a force accumulator.
+   */
+  GravityScale: { value: Float64Array };
+  /** Tag: the body takes part in mutual Newtonian gravity with every other tagged body (its mass is `Mass.value`). */
+  MutualGravity: object;
+  /**
+   * A Newtonian attractor of `mass` kg that pulls every dynamic body with a force accumulator:
+   * F = -G M m r / (r^2 + eps^2)^(3/2), r from the attractor, eps = `softening` (m, >= 0). The
+   * attractor itself can be static (a sun, a black hole) or move. Source: Ramtal and Dobre ch. 6.
+   */
+  Attractor: { mass: Float64Array; softening: Float64Array };
+  /** Electric charge, C. Charged bodies repel or attract in pairs (Coulomb) and feel electric and magnetic fields. Default 0. */
+  Charge: { value: Float64Array };
+  /**
+   * A uniform electric field, V/m, filling the world: E(t) = E0 + A cos(omega t + phase), with E0 =
+   * (x, y, z), A = (ampX, ampY, ampZ), `omega` rad/s, `phase` rad. Charged bodies feel q E.
+   */
+  ElectricField: { x: Float64Array; y: Float64Array; z: Float64Array; ampX: Float64Array; ampY: Float64Array; ampZ: Float64Array; omega: Float64Array; phase: Float64Array };
+  /**
+   * A uniform magnetic field, T: B(t) = B0 + A cos(omega t + phase), fields as ElectricField. In a 2D
+   * world only z is used (B out of the screen). Charged bodies feel the Lorentz force q v x B.
+   */
+  MagneticField: { x: Float64Array; y: Float64Array; z: Float64Array; ampX: Float64Array; ampY: Float64Array; ampZ: Float64Array; omega: Float64Array; phase: Float64Array };
+  /**
+   * General central force about the point (cx, cy, cz): F = k r^(n-1) r_hat, r the distance from the
+   * centre. k < 0 attracts. n = 2 is Hooke's law (k = -stiffness), n = -1 inverse-square gravity
+   * (k = -G M m). Units of k: N / m^(n-1). Source: Ramtal and Dobre ch. 6, "central forces".
+   */
+  CentralForce: { cx: Float64Array; cy: Float64Array; cz: Float64Array; k: Float64Array; n: Float64Array };
+  /**
+   * Lift perpendicular to the velocity relative to the air: F = k |v_rel| (axis x v_rel), with `k`
+   * in kg/m (k = rho C_L A / 2) and `axis` the unit span axis (default z: in 2D the lift points to
+   * the left of the motion). Source: Ramtal and Dobre ch. 7, "lift".
+   */
+  Lift: { k: Float64Array; axisX: Float64Array; axisY: Float64Array; axisZ: Float64Array };
+  /**
+   * Buoyancy and fluid drag for a body in a FluidRegion: `shape` 0 = ball of radius `radius` (circle
+   * in 2D: area per unit depth), 1 = box of half extents (halfX, halfY, halfZ) (2D: rectangle). The
+   * fluid pushes up with rho g V_submerged and drags with -f k |v_rel| v_rel, f the submerged fraction
+   * and `dragCoefficient` k in kg/m. Source: Ramtal and Dobre ch. 7, "upthrust".
+   */
+  Buoyancy: { shape: Float64Array; radius: Float64Array; halfX: Float64Array; halfY: Float64Array; halfZ: Float64Array; dragCoefficient: Float64Array };
+  /**
+   * A body of fluid below the horizontal surface y = `surface` (m), of `density` kg/m^3 (2D: kg/m^2),
+   * optionally limited to x in [minX, maxX] and z in [minZ, maxZ] (defaults: unlimited).
+   */
+  FluidRegion: { surface: Float64Array; density: Float64Array; minX: Float64Array; maxX: Float64Array; minZ: Float64Array; maxZ: Float64Array };
+  /**
+   * A spring between bodies `a` and `b` (entity ids), or between body `b` and the fixed anchor
+   * (anchorX, anchorY, anchorZ) when `a` is 0. Hooke: F = -stiffness (L - restLength) along the
+   * spring, plus damping -damping (relative velocity along the spring). `oneSided` 1 makes a bungee
+   * (pulls only while stretched). Units: stiffness N/m, damping N s/m, lengths m. The spring is its
+   * own entity; removing either body removes it. Source: Ramtal and Dobre ch. 8.
+   */
+  Spring: {
+    a: Int32Array; b: Int32Array; restLength: Float64Array; stiffness: Float64Array; damping: Float64Array;
+    oneSided: Uint8Array; anchorX: Float64Array; anchorY: Float64Array; anchorZ: Float64Array;
+  };
+  /**
+   * Periodic driving force F = F0 cos(omega t + phase), F0 = (x, y, z) in N, omega rad/s, phase rad.
+   * Source: Ramtal and Dobre ch. 8, "forced oscillations".
+   */
+  DrivingForce: { x: Float64Array; y: Float64Array; z: Float64Array; omega: Float64Array; phase: Float64Array };
+  /**
+   * Seeded random driving force: a smooth random vector of magnitude up to `magnitude` N whose
+   * direction and size change over `correlationTime` s (value noise, a pure function of time and
+   * `seed`, so every integrator sees the same force at the same time).
+   */
+  RandomForce: { magnitude: Float64Array; correlationTime: Float64Array; seed: Float64Array };
+  /**
+   * Rocket thrust with burning fuel: while `fuel` (kg) lasts, a force ve mdot along the unit
+   * direction (dirX, dirY, dirZ) (world frame), with `exhaustVelocity` ve (m/s) and `massFlowRate`
+   * mdot (kg/s); the body's mass drops by mdot per second and `fuel` with it. Source: Ramtal and
+   * Dobre ch. 6, "rockets"; Tsiolkovsky's equation dv = ve ln(m0 / m1).
+   */
+  Thrust: { exhaustVelocity: Float64Array; massFlowRate: Float64Array; fuel: Float64Array; dirX: Float64Array; dirY: Float64Array; dirZ: Float64Array };
   /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
   Angle: { value: Float64Array };
   /**
@@ -124,6 +202,23 @@ export function createComponents(capacity: number): Components {
     Kinematic: {},
     LinearDrag: { k: f() },
     QuadraticDrag: { k: f() },
+    GravityScale: { value: f() },
+    MutualGravity: {},
+    Attractor: { mass: f(), softening: f() },
+    Charge: { value: f() },
+    ElectricField: { x: f(), y: f(), z: f(), ampX: f(), ampY: f(), ampZ: f(), omega: f(), phase: f() },
+    MagneticField: { x: f(), y: f(), z: f(), ampX: f(), ampY: f(), ampZ: f(), omega: f(), phase: f() },
+    CentralForce: { cx: f(), cy: f(), cz: f(), k: f(), n: f() },
+    Lift: { k: f(), axisX: f(), axisY: f(), axisZ: f() },
+    Buoyancy: { shape: f(), radius: f(), halfX: f(), halfY: f(), halfZ: f(), dragCoefficient: f() },
+    FluidRegion: { surface: f(), density: f(), minX: f(), maxX: f(), minZ: f(), maxZ: f() },
+    Spring: {
+      a: new Int32Array(n), b: new Int32Array(n), restLength: f(), stiffness: f(), damping: f(),
+      oneSided: new Uint8Array(n), anchorX: f(), anchorY: f(), anchorZ: f(),
+    },
+    DrivingForce: { x: f(), y: f(), z: f(), omega: f(), phase: f() },
+    RandomForce: { magnitude: f(), correlationTime: f(), seed: f() },
+    Thrust: { exhaustVelocity: f(), massFlowRate: f(), fuel: f(), dirX: f(), dirY: f(), dirZ: f() },
     Angle: { value: f() },
     Orientation: { x: f(), y: f(), z: f(), w: f() },
     AngularVelocity: vec3(n),

@@ -17,7 +17,7 @@ export { step, stepMany, evaluateForces, addSystem, removeSystem } from './pipel
 export type { AddSystemOptions } from './pipeline/step';
 export { createFixedStepLoop } from './pipeline/loop';
 export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop';
-export { INTEGRATOR_NAMES } from './integrators/names';
+export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names';
 export type { IntegratorName } from './integrators/names';
 export { INTEGRATORS, integrateSystem } from './integrators/integrate';
 export type { Integrator } from './integrators/integrate';
@@ -30,8 +30,32 @@ export { ContactKind } from './collision/contacts';
 export type { ContactBuffer } from './collision/contacts';
 export type { CollisionState, CollisionSettings, Boundary } from './collision/state';
 export {
-  kineticEnergy, gravitationalPotentialEnergy, contactSpringEnergy, totalEnergy, linearMomentum, contactCount, stageTimings,
+  kineticEnergy, gravitationalPotentialEnergy, newtonianPotentialEnergy, springPotentialEnergy, electricPotentialEnergy,
+  centralPotentialEnergy, potentialEnergy, contactSpringEnergy, totalEnergy, linearMomentum, angularMomentum,
+  contactCount, stageTimings,
 } from './diagnostics/energy';
+export { createRecorder } from './diagnostics/recorder';
+export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder';
+export {
+  setGravityScale, enableMutualGravity, setAttractor, setCharge, addElectricField, addMagneticField, setCentralForce,
+  setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust,
+} from './forces/api';
+export type { FieldOptions, BuoyancyOptions, SpringOptions } from './forces/api';
+export {
+  G_SI, COULOMB_SI, MAX_WIND_MODES, setGravitation, setElectrostatics, setWind, windAt,
+} from './forces/settings';
+export type { ForceLawSettings, WindField, WindOptions, GravitationOptions, GravityMethod } from './forces/settings';
+export type { ForceLaw } from './forces/law';
+export { gravityScaleSystem, mutualGravitySystem, attractorSystem } from './forces/gravity';
+export { coulombSystem, lorentzSystem, fieldsAt } from './forces/electromagnetism';
+export { centralForceSystem } from './forces/central';
+export { liftSystem } from './forces/drag';
+export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid';
+export { springSystem } from './forces/spring';
+export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving';
+export { thrustSystem, burnFuelSystem } from './forces/thrust';
+export { buildTree, treeField, worldTree, barnesHutGravity } from './forces/barnes-hut';
+export type { GravityTree } from './forces/barnes-hut';
 export { NonFiniteStateError } from './errors';
 export { Rng } from './rng';
 export * from './scenes/index';

@@ -4,6 +4,8 @@ import { createCollisionState, type CollisionState } from './collision/state';
 import { createStages, type StageName, type System, STAGES } from './pipeline/stages';
 import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names';
 import { Rng } from './rng';
+import { createForceLawSettings, type ForceLawSettings } from './forces/settings';
+import { removeSpringsOf } from './forces/spring';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
@@ -68,6 +70,10 @@ export interface PhysicsWorldContext {
   integrator: IntegratorName;
   /** Simulated time, s, of the current state. Force laws that vary in time read it (integrators set trial times). */
   time: number;
+  /** Simulated time at the start of the current (sub)step, s (set by `step`; the rocket law reads it). */
+  substepStart: number;
+  /** Constants and fields the force laws read (G, softening, Coulomb constant, wind); see forces/settings.ts. */
+  readonly laws: ForceLawSettings;
   /** Whole steps taken since creation. */
   steps: number;
   /** The world's seeded random number generator. */
@@ -149,6 +155,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     h: dt / substeps,
     integrator,
     time: 0,
+    substepStart: 0,
+    laws: createForceLawSettings(),
     steps: 0,
     rng: new Rng(seed),
     components,
@@ -157,7 +165,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     timings,
     spawnStamp: new Uint32Array(capacity + 1),
     entityIndex,
-    removeHooks: [],
+    removeHooks: [removeSpringsOf],
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);
@@ -205,8 +213,40 @@ function installDefaults(world: PhysicsWorld): void {
   observe(world, onAdd(c.Inertia), (eid: number) => { c.Inertia.value[eid] = 0; c.Inertia.inv[eid] = 0; });
   observe(world, onAdd(c.LinearDrag), (eid: number) => { c.LinearDrag.k[eid] = 0; });
   observe(world, onAdd(c.QuadraticDrag), (eid: number) => { c.QuadraticDrag.k[eid] = 0; });
-  registerForceLaw(world, c.LinearDrag);
-  registerForceLaw(world, c.QuadraticDrag);
+  observe(world, onAdd(c.GravityScale), (eid: number) => { c.GravityScale.value[eid] = 1; });
+  observe(world, onAdd(c.Attractor), (eid: number) => { c.Attractor.mass[eid] = 0; c.Attractor.softening[eid] = 0; });
+  observe(world, onAdd(c.Charge), (eid: number) => { c.Charge.value[eid] = 0; });
+  const zeroField = (F: typeof c.ElectricField) => (eid: number) => {
+    F.x[eid] = 0; F.y[eid] = 0; F.z[eid] = 0; F.ampX[eid] = 0; F.ampY[eid] = 0; F.ampZ[eid] = 0; F.omega[eid] = 0; F.phase[eid] = 0;
+  };
+  observe(world, onAdd(c.ElectricField), zeroField(c.ElectricField));
+  observe(world, onAdd(c.MagneticField), zeroField(c.MagneticField));
+  observe(world, onAdd(c.CentralForce), (eid: number) => {
+    const C = c.CentralForce; C.cx[eid] = 0; C.cy[eid] = 0; C.cz[eid] = 0; C.k[eid] = 0; C.n[eid] = 2;
+  });
+  observe(world, onAdd(c.Lift), (eid: number) => { c.Lift.k[eid] = 0; c.Lift.axisX[eid] = 0; c.Lift.axisY[eid] = 0; c.Lift.axisZ[eid] = 1; });
+  observe(world, onAdd(c.Buoyancy), (eid: number) => {
+    const B = c.Buoyancy; B.shape[eid] = 0; B.radius[eid] = 0.5; B.halfX[eid] = 0.5; B.halfY[eid] = 0.5; B.halfZ[eid] = 0.5; B.dragCoefficient[eid] = 0;
+  });
+  observe(world, onAdd(c.FluidRegion), (eid: number) => {
+    const F = c.FluidRegion; F.surface[eid] = 0; F.density[eid] = 1000;
+    F.minX[eid] = -Infinity; F.maxX[eid] = Infinity; F.minZ[eid] = -Infinity; F.maxZ[eid] = Infinity;
+  });
+  observe(world, onAdd(c.Spring), (eid: number) => {
+    const S = c.Spring; S.a[eid] = 0; S.b[eid] = 0; S.restLength[eid] = 1; S.stiffness[eid] = 0; S.damping[eid] = 0;
+    S.oneSided[eid] = 0; S.anchorX[eid] = 0; S.anchorY[eid] = 0; S.anchorZ[eid] = 0;
+  });
+  observe(world, onAdd(c.DrivingForce), (eid: number) => {
+    const D = c.DrivingForce; D.x[eid] = 0; D.y[eid] = 0; D.z[eid] = 0; D.omega[eid] = 0; D.phase[eid] = 0;
+  });
+  observe(world, onAdd(c.RandomForce), (eid: number) => { c.RandomForce.magnitude[eid] = 0; c.RandomForce.correlationTime[eid] = 1; c.RandomForce.seed[eid] = eid; });
+  observe(world, onAdd(c.Thrust), (eid: number) => {
+    const T = c.Thrust; T.exhaustVelocity[eid] = 0; T.massFlowRate[eid] = 0; T.fuel[eid] = 0; T.dirX[eid] = 0; T.dirY[eid] = 1; T.dirZ[eid] = 0;
+  });
+  for (const law of [
+    c.LinearDrag, c.QuadraticDrag, c.GravityScale, c.MutualGravity, c.Charge, c.CentralForce, c.Lift, c.Buoyancy,
+    c.DrivingForce, c.RandomForce, c.Thrust,
+  ]) registerForceLaw(world, law);
   // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.
   observe(world, onAdd(c.Force), (eid: number) => addComponentIfMissing(world, eid, c.Mass));
   observe(world, onAdd(c.Ball), (eid: number) => {

@@ -1,6 +1,7 @@
 import { Not, query } from 'bitecs';
 import type { PhysicsWorld } from '../world';
 import { currentSeparation } from '../collision/narrowphase';
+import { fieldsAt } from '../forces/electromagnetism';
 
 /**
  * Diagnostics, computed on demand (never inside the step, so they cost nothing unless asked for).
@@ -35,21 +36,134 @@ export function kineticEnergy(world: PhysicsWorld): number {
 }
 
 /**
- * Potential energy of the world's uniform gravity, J: sum of -m g . x, zero at the origin
- * (so with g = (0, -g) it is m g y).
+ * Potential energy of the world's uniform gravity, J: sum of -s m g . x, zero at the origin (so with
+ * g = (0, -g) it is s m g y), s the body's GravityScale (1 without one).
  */
 export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
   const g = world.gravity;
   const gx = g[0]!, gy = g[1]!, gz = g[2]!;
-  const ents = massive(world);
+  let ents = massive(world);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     sum -= m[e]! * (gx * px[e]! + gy * py[e]! + gz * pz[e]!);
   }
+  ents = query(world, [c.GravityScale, c.Position, c.Mass, Not(c.Static), Not(c.Kinematic)]);
+  const scale = c.GravityScale.value;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    sum -= (scale[e]! - 1) * m[e]! * (gx * px[e]! + gy * py[e]! + gz * pz[e]!);
+  }
   return sum;
+}
+
+/**
+ * Newtonian potential energy, J: -G m_i m_j / sqrt(r^2 + eps^2) summed over mutual-gravity pairs
+ * (the softened Plummer potential whose gradient the force law uses), plus -G M m / sqrt(r^2 + eps_a^2)
+ * for every attractor and every dynamic body it pulls. Direct O(N^2) sum, whatever the force method.
+ */
+export function newtonianPotentialEnergy(world: PhysicsWorld): number {
+  const c = world.components;
+  const L = world.laws;
+  const G = L.gravitationalConstant, eps2 = L.gravitySoftening ** 2;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
+  let sum = 0;
+  const mutual = query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]);
+  for (let i = 0; i < mutual.length; i++) {
+    const a = mutual[i]!;
+    for (let j = i + 1; j < mutual.length; j++) {
+      const b = mutual[j]!;
+      const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + eps2;
+      if (r2 > 0) sum -= (G * m[a]! * m[b]!) / Math.sqrt(r2);
+    }
+  }
+  const sources = query(world, [c.Attractor, c.Position]);
+  if (sources.length > 0) {
+    const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
+    for (let s = 0; s < sources.length; s++) {
+      const a = sources[s]!;
+      const gm = G * c.Attractor.mass[a]!, e2 = c.Attractor.softening[a]! ** 2;
+      for (let i = 0; i < bodies.length; i++) {
+        const b = bodies[i]!;
+        if (b === a) continue;
+        const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + e2;
+        if (r2 > 0) sum -= (gm * m[b]!) / Math.sqrt(r2);
+      }
+    }
+  }
+  return sum;
+}
+
+/** Elastic energy of the springs, J: stiffness (L - restLength)^2 / 2 each (bungees only while stretched). */
+export function springPotentialEnergy(world: PhysicsWorld): number {
+  const c = world.components;
+  const S = c.Spring;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const springs = query(world, [c.Spring]);
+  let sum = 0;
+  for (let i = 0; i < springs.length; i++) {
+    const s = springs[i]!;
+    const a = S.a[s]!, b = S.b[s]!;
+    const ax = a === 0 ? S.anchorX[s]! : px[a]!, ay = a === 0 ? S.anchorY[s]! : py[a]!, az = a === 0 ? S.anchorZ[s]! : pz[a]!;
+    const stretch = Math.hypot(px[b]! - ax, py[b]! - ay, pz[b]! - az) - S.restLength[s]!;
+    if (S.oneSided[s] === 1 && stretch <= 0) continue;
+    sum += 0.5 * S.stiffness[s]! * stretch * stretch;
+  }
+  return sum;
+}
+
+const E = new Float64Array(3), B = new Float64Array(3);
+
+/**
+ * Electric potential energy, J: k q_i q_j / sqrt(r^2 + eps^2) over charged pairs, plus -q E . x in
+ * the uniform electric field at the current time (conservative while the field is constant).
+ */
+export function electricPotentialEnergy(world: PhysicsWorld): number {
+  const c = world.components;
+  const K = world.laws.coulombConstant, eps2 = world.laws.electricSoftening ** 2;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, q = c.Charge.value;
+  const ents = query(world, [c.Charge, c.Position]);
+  let sum = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const a = ents[i]!;
+    for (let j = i + 1; j < ents.length; j++) {
+      const b = ents[j]!;
+      const r2 = (px[b]! - px[a]!) ** 2 + (py[b]! - py[a]!) ** 2 + (pz[b]! - pz[a]!) ** 2 + eps2;
+      if (r2 > 0) sum += (K * q[a]! * q[b]!) / Math.sqrt(r2);
+    }
+  }
+  fieldsAt(world, world.time, E, B);
+  if (E[0] !== 0 || E[1] !== 0 || E[2] !== 0) {
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      sum -= q[e]! * (E[0]! * px[e]! + E[1]! * py[e]! + E[2]! * pz[e]!);
+    }
+  }
+  return sum;
+}
+
+/** Potential energy of central forces, J: U(r) = -k r^n / n (n != 0), -k ln r (n = 0), so that F = -dU/dr = k r^(n-1). */
+export function centralPotentialEnergy(world: PhysicsWorld): number {
+  const c = world.components;
+  const C = c.CentralForce;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const ents = query(world, [c.CentralForce, c.Position]);
+  let sum = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const r = Math.hypot(px[e]! - C.cx[e]!, py[e]! - C.cy[e]!, pz[e]! - C.cz[e]!);
+    const n = C.n[e]!, k = C.k[e]!;
+    sum += n === 0 ? -k * Math.log(r) : (-k * Math.pow(r, n)) / n;
+  }
+  return sum;
+}
+
+/** Every potential energy the world knows, J: uniform and Newtonian gravity, springs, electric, central. */
+export function potentialEnergy(world: PhysicsWorld): number {
+  return gravitationalPotentialEnergy(world) + newtonianPotentialEnergy(world) + springPotentialEnergy(world) +
+    electricPotentialEnergy(world) + centralPotentialEnergy(world);
 }
 
 /**
@@ -77,9 +191,41 @@ export function contactSpringEnergy(world: PhysicsWorld): number {
   return sum;
 }
 
-/** Total mechanical energy, J: kinetic plus every potential energy the world knows. */
+/**
+ * Total mechanical energy, J: kinetic, every potential energy, and the elastic energy held in
+ * overlapping contacts. Conserved by conservative systems up to the integrator's error.
+ */
 export function totalEnergy(world: PhysicsWorld): number {
-  return kineticEnergy(world) + gravitationalPotentialEnergy(world);
+  return kineticEnergy(world) + potentialEnergy(world) + contactSpringEnergy(world);
+}
+
+/**
+ * Total angular momentum about `about` (m; default the origin), kg m^2/s, into `out` (length 3):
+ * sum of m (x - about) x v plus the spin I w of bodies with a scalar moment of inertia. In 2D only
+ * out[2] (about z) is nonzero.
+ */
+export function angularMomentum(world: PhysicsWorld, about: ArrayLike<number> = [0, 0, 0], out: Float64Array = new Float64Array(3)): Float64Array {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, m = c.Mass.value;
+  const ox = about[0] ?? 0, oy = about[1] ?? 0, oz = about[2] ?? 0;
+  let lx = 0, ly = 0, lz = 0;
+  let ents = massive(world);
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const rx = px[e]! - ox, ry = py[e]! - oy, rz = pz[e]! - oz, k = m[e]!;
+    lx += k * (ry * vz[e]! - rz * vy[e]!);
+    ly += k * (rz * vx[e]! - rx * vz[e]!);
+    lz += k * (rx * vy[e]! - ry * vx[e]!);
+  }
+  ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.Static), Not(c.Kinematic)]);
+  const I = c.Inertia.value, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    lx += I[e]! * wx[e]!; ly += I[e]! * wy[e]!; lz += I[e]! * wz[e]!;
+  }
+  out[0] = world.dimensions === 2 ? 0 : lx; out[1] = world.dimensions === 2 ? 0 : ly; out[2] = lz;
+  return out;
 }
 
 /**

@@ -1,14 +1,22 @@
 import type { PhysicsWorld } from '../world';
 import type { IntegratorName } from './names';
 import { semiImplicitEuler } from './semi-implicit-euler';
+import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes';
+import { implicitEuler } from './implicit-euler';
 
 /** An integration scheme: advances every moving body of the world by h seconds. */
 export type Integrator = (world: PhysicsWorld, h: number) => void;
 
 /** The scheme behind each name of `INTEGRATOR_NAMES`. */
-export const INTEGRATORS: Record<IntegratorName, Integrator> = {
+export const INTEGRATORS: Readonly<Record<IntegratorName, Integrator>> = Object.freeze({
+  'explicit-euler': explicitEuler,
   'semi-implicit-euler': semiImplicitEuler,
-};
+  'implicit-euler': implicitEuler,
+  rk2,
+  rk4,
+  'position-verlet': positionVerlet,
+  'velocity-verlet': velocityVerlet,
+});
 
 /** Stage 4: advances the world by `world.h` with the world's chosen scheme. */
 export function integrateSystem(world: PhysicsWorld): void {

@@ -1,6 +1,13 @@
 import type { PhysicsWorld } from '../world';
 import { clearForcesSystem } from '../forces/clear';
-import { linearDragSystem, quadraticDragSystem } from '../forces/drag';
+import { linearDragSystem, liftSystem, quadraticDragSystem } from '../forces/drag';
+import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity';
+import { coulombSystem, lorentzSystem } from '../forces/electromagnetism';
+import { centralForceSystem } from '../forces/central';
+import { buoyancySystem } from '../forces/fluid';
+import { springSystem } from '../forces/spring';
+import { drivingForceSystem, randomForceSystem } from '../forces/driving';
+import { burnFuelSystem, thrustSystem } from '../forces/thrust';
 import { integrateSystem } from '../integrators/integrate';
 import { broadphaseSystem } from '../collision/broadphase';
 import { narrowphaseSystem } from '../collision/narrowphase';
@@ -35,8 +42,15 @@ export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'i
 export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
   { stage: 'spawn', systems: [] },
   { stage: 'clearForces', systems: [clearForcesSystem] },
-  { stage: 'forces', systems: [linearDragSystem, quadraticDragSystem] },
-  { stage: 'integrate', systems: [integrateSystem] },
+  {
+    stage: 'forces',
+    systems: [
+      gravityScaleSystem, mutualGravitySystem, attractorSystem, coulombSystem, lorentzSystem, centralForceSystem,
+      linearDragSystem, quadraticDragSystem, liftSystem, buoyancySystem, springSystem, drivingForceSystem,
+      randomForceSystem, thrustSystem,
+    ],
+  },
+  { stage: 'integrate', systems: [integrateSystem, burnFuelSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [] },
   { stage: 'finalize', systems: [] },

@@ -40,6 +40,7 @@ export function step(world: PhysicsWorld): void {
   const t0 = world.time;
   for (let s = 0; s < n; s++) {
     world.time = t0 + s * h;
+    world.substepStart = world.time;
     for (const stage of SUBSTEP_STAGES) {
       runStage(world, stage);
       if (stage === 'integrate') world.time = t0 + (s + 1) * h;

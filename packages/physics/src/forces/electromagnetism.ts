@@ -1,0 +1,87 @@
+import { query } from 'bitecs';
+import type { PhysicsWorld } from '../world';
+import type { ForceLaw } from './law';
+
+/**
+ * Coulomb's law between every pair of charged bodies: F on b = k q_a q_b (x_b - x_a) / (r^2 + eps^2)^(3/2)
+ * (like charges repel), and the opposite on a. Softening eps from `setElectrostatics`. Position-only.
+ * Source: Ramtal and Dobre ch. 10.
+ */
+export const coulombSystem: ForceLaw = (world: PhysicsWorld): void => {
+  const c = world.components;
+  const ents = query(world, [c.Charge, c.Position, c.Force]);
+  const n = ents.length;
+  if (n < 2) return;
+  const K = world.laws.coulombConstant, eps2 = world.laws.electricSoftening ** 2;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, q = c.Charge.value;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  for (let i = 0; i < n; i++) {
+    const a = ents[i]!;
+    const qa = K * q[a]!;
+    if (qa === 0) continue;
+    const xa = px[a]!, ya = py[a]!, za = pz[a]!;
+    let sx = 0, sy = 0, sz = 0;
+    for (let j = i + 1; j < n; j++) {
+      const b = ents[j]!;
+      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
+      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+      if (r2 === 0) continue;
+      const k = (qa * q[b]!) / (r2 * Math.sqrt(r2));
+      const kx = k * dx, ky = k * dy, kz = k * dz;
+      fx[b] = fx[b]! + kx; fy[b] = fy[b]! + ky; fz[b] = fz[b]! + kz;
+      sx -= kx; sy -= ky; sz -= kz;
+    }
+    fx[a] = fx[a]! + sx; fy[a] = fy[a]! + sy; fz[a] = fz[a]! + sz;
+  }
+};
+coulombSystem.velocityDependent = false;
+
+const E = new Float64Array(3);
+const B = new Float64Array(3);
+
+/**
+ * The total uniform electric and magnetic field at time t (sum over ElectricField and MagneticField
+ * entities), written into e and b (V/m and T).
+ */
+export function fieldsAt(world: PhysicsWorld, t: number, e: Float64Array, b: Float64Array): void {
+  const c = world.components;
+  e.fill(0); b.fill(0);
+  const sum = (ents: ArrayLike<number>, F: typeof c.ElectricField, out: Float64Array) => {
+    for (let i = 0; i < ents.length; i++) {
+      const f = ents[i]!;
+      const k = Math.cos(F.omega[f]! * t + F.phase[f]!);
+      out[0] = out[0]! + F.x[f]! + F.ampX[f]! * k;
+      out[1] = out[1]! + F.y[f]! + F.ampY[f]! * k;
+      out[2] = out[2]! + F.z[f]! + F.ampZ[f]! * k;
+    }
+  };
+  sum(query(world, [c.ElectricField]), c.ElectricField, e);
+  sum(query(world, [c.MagneticField]), c.MagneticField, b);
+}
+
+/**
+ * Electric and magnetic fields on charges: the Lorentz force F = q (E + v x B) on every body with a
+ * charge. In a 2D world B is along z (out of the screen): v x B = (v_y B_z, -v_x B_z). Velocity-
+ * dependent (the magnetic part). Source: Ramtal and Dobre ch. 10; Griffiths, Introduction to
+ * Electrodynamics, eq. 5.1.
+ */
+export const lorentzSystem: ForceLaw = (world: PhysicsWorld): void => {
+  const c = world.components;
+  if (query(world, [c.ElectricField]).length === 0 && query(world, [c.MagneticField]).length === 0) return;
+  const ents = query(world, [c.Charge, c.Force, c.Velocity]);
+  if (ents.length === 0) return;
+  fieldsAt(world, world.time, E, B);
+  const ex = E[0]!, ey = E[1]!, ez = E[2]!;
+  const is2D = world.dimensions === 2;
+  const bx = is2D ? 0 : B[0]!, by = is2D ? 0 : B[1]!, bz = B[2]!;
+  const q = c.Charge.value, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const qe = q[e]!;
+    const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
+    fx[e] = fx[e]! + qe * (ex + uy * bz - uz * by);
+    fy[e] = fy[e]! + qe * (ey + uz * bx - ux * bz);
+    fz[e] = fz[e]! + qe * (ez + ux * by - uy * bx);
+  }
+};

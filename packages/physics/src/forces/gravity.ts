@@ -1,0 +1,90 @@
+import { Not, query } from 'bitecs';
+import type { PhysicsWorld } from '../world';
+import type { ForceLaw } from './law';
+import { barnesHutGravity } from './barnes-hut';
+
+/**
+ * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator
+ * applies as an acceleration) the body feels s m g. Position-only.
+ */
+export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
+  const c = world.components;
+  const ents = query(world, [c.GravityScale, c.Force, c.Mass]);
+  if (ents.length === 0) return;
+  const g = world.gravity;
+  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const s = c.GravityScale.value, m = c.Mass.value, fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const k = (s[e]! - 1) * m[e]!;
+    fx[e] = fx[e]! + k * gx; fy[e] = fy[e]! + k * gy; fz[e] = fz[e]! + k * gz;
+  }
+};
+gravityScaleSystem.velocityDependent = false;
+
+/**
+ * Mutual Newtonian gravity between every pair of bodies tagged MutualGravity, with Plummer softening:
+ * F_ij = G m_i m_j (x_j - x_i) / (|x_j - x_i|^2 + eps^2)^(3/2) on i, and the opposite on j (Newton's
+ * third law, so momentum is conserved to rounding). 'direct' sums all N(N-1)/2 pairs; 'barnes-hut'
+ * approximates far groups by their centre of mass (see barnes-hut.ts). Position-only.
+ * Source: Ramtal and Dobre ch. 6 and 12; Aarseth, Gravitational N-Body Simulations (2003), ch. 2.
+ */
+export const mutualGravitySystem: ForceLaw = (world: PhysicsWorld): void => {
+  const c = world.components;
+  const ents = query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]);
+  const n = ents.length;
+  if (n < 2) return;
+  const L = world.laws;
+  if (L.gravityMethod === 'barnes-hut') { barnesHutGravity(world, ents); return; }
+  const G = L.gravitationalConstant, eps2 = L.gravitySoftening * L.gravitySoftening;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  for (let i = 0; i < n; i++) {
+    const a = ents[i]!;
+    const xa = px[a]!, ya = py[a]!, za = pz[a]!, gma = G * m[a]!;
+    let sx = 0, sy = 0, sz = 0;
+    for (let j = i + 1; j < n; j++) {
+      const b = ents[j]!;
+      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
+      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+      if (r2 === 0) continue;
+      const k = (gma * m[b]!) / (r2 * Math.sqrt(r2));
+      const kx = k * dx, ky = k * dy, kz = k * dz;
+      sx += kx; sy += ky; sz += kz;
+      fx[b] = fx[b]! - kx; fy[b] = fy[b]! - ky; fz[b] = fz[b]! - kz;
+    }
+    fx[a] = fx[a]! + sx; fy[a] = fy[a]! + sy; fz[a] = fz[a]! + sz;
+  }
+};
+mutualGravitySystem.velocityDependent = false;
+
+/**
+ * Attractors (fixed or moving masses, e.g. a sun or a black hole) pull every dynamic body with a
+ * force accumulator: F = -G M m r / (r^2 + eps^2)^(3/2), r from the attractor to the body, eps the
+ * attractor's softening. An attractor does not pull itself; attractors that are dynamic bodies are
+ * pulled by the others. Position-only. Source: Ramtal and Dobre ch. 6.
+ */
+export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
+  const c = world.components;
+  const sources = query(world, [c.Attractor, c.Position]);
+  if (sources.length === 0) return;
+  const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
+  const G = world.laws.gravitationalConstant;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const M = c.Attractor.mass, soft = c.Attractor.softening;
+  for (let s = 0; s < sources.length; s++) {
+    const a = sources[s]!;
+    const xa = px[a]!, ya = py[a]!, za = pz[a]!, gm = G * M[a]!, eps2 = soft[a]! * soft[a]!;
+    for (let i = 0; i < bodies.length; i++) {
+      const b = bodies[i]!;
+      if (b === a) continue;
+      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
+      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+      if (r2 === 0) continue;
+      const k = (-gm * m[b]!) / (r2 * Math.sqrt(r2));
+      fx[b] = fx[b]! + k * dx; fy[b] = fy[b]! + k * dy; fz[b] = fz[b]! + k * dz;
+    }
+  }
+};
+attractorSystem.velocityDependent = false;

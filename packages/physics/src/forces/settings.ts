@@ -1,0 +1,202 @@
+import type { PhysicsWorld } from '../world';
+import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate';
+import { Rng } from '../rng';
+
+/** Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018). */
+export const G_SI = 6.6743e-11;
+/** Coulomb constant k = 1 / (4 pi eps0), N m^2 C^-2 (CODATA 2018). */
+export const COULOMB_SI = 8.9875517923e9;
+
+/** How mutual gravity is summed: every pair ('direct', O(N^2)) or by a Barnes-Hut tree ('barnes-hut'). */
+export type GravityMethod = 'direct' | 'barnes-hut';
+
+/** World-wide constants and fields the force laws read. Change with the setters below. */
+export interface ForceLawSettings {
+  /** G, m^3 kg^-1 s^-2; default the SI value. Games often use scaled units (see setGravitation). */
+  gravitationalConstant: number;
+  /** Plummer softening length eps of mutual gravity, m (>= 0): the pair force is G m m r / (r^2 + eps^2)^(3/2). */
+  gravitySoftening: number;
+  /** Summation of mutual gravity. */
+  gravityMethod: GravityMethod;
+  /** Barnes-Hut opening angle theta (> 0): a cell of size s at distance d is one body if s / d < theta. */
+  openingAngle: number;
+  /** Coulomb constant, N m^2 C^-2. */
+  coulombConstant: number;
+  /** Softening of the Coulomb force, m (>= 0). */
+  electricSoftening: number;
+  /** The wind field drag and lift are measured against. */
+  readonly wind: WindField;
+}
+
+/**
+ * The wind (the velocity of the air, m/s) at a point and time:
+ * u(x, t) = u0 + A cos(omega t + phase) + turbulence(x, t), where the turbulence is a sum of random
+ * Fourier modes (Kraichnan, Phys. Fluids 13, 1970) with divergence-free directions, seeded, with
+ * root-mean-square speed `intensity` (per component), wavelengths around `lengthScale` and
+ * frequencies around 1 / `timeScale`. A pure function of position and time.
+ */
+export interface WindField {
+  /** Mean wind u0, m/s. */
+  readonly velocity: Float64Array;
+  /** Gust amplitude A, m/s. */
+  readonly gust: Float64Array;
+  /** Gust angular frequency omega, rad/s, and phase, rad. */
+  gustOmega: number;
+  gustPhase: number;
+  /** Turbulence: number of modes in use (0 = none), and per mode: wave vector (3), frequency, phase, unit amplitude direction (3). */
+  modes: number;
+  readonly modeData: Float64Array;
+  /** RMS turbulent speed per component, m/s. */
+  intensity: number;
+}
+
+/** Turbulence modes the wind field can hold. */
+export const MAX_WIND_MODES = 32;
+
+/** Default settings: SI constants, direct gravity, no softening, no wind. */
+export function createForceLawSettings(): ForceLawSettings {
+  return {
+    gravitationalConstant: G_SI,
+    gravitySoftening: 0,
+    gravityMethod: 'direct',
+    openingAngle: 0.5,
+    coulombConstant: COULOMB_SI,
+    electricSoftening: 0,
+    wind: {
+      velocity: new Float64Array(3), gust: new Float64Array(3), gustOmega: 0, gustPhase: 0,
+      modes: 0, modeData: new Float64Array(MAX_WIND_MODES * 8), intensity: 0,
+    },
+  };
+}
+
+/** Options of `setGravitation`. */
+export interface GravitationOptions {
+  /** G, m^3 kg^-1 s^-2, finite and >= 0 (use 1 for game units). */
+  constant?: number;
+  /** Softening length, m, >= 0. */
+  softening?: number;
+  /** 'direct' or 'barnes-hut'. */
+  method?: GravityMethod;
+  /** Barnes-Hut opening angle, > 0 (0.5 is a common accuracy / speed balance). */
+  openingAngle?: number;
+}
+
+/**
+ * Sets the constant, softening and summation method of Newtonian gravity (mutual and attractors).
+ * @throws TypeError on unknown options; RangeError on G < 0, softening < 0, theta <= 0, an unknown method.
+ */
+export function setGravitation(world: PhysicsWorld, options: GravitationOptions): void {
+  const where = 'setGravitation';
+  assertKnownKeys(where, options, ['constant', 'softening', 'method', 'openingAngle']);
+  const L = world.laws;
+  if (options.constant !== undefined) { assertNonNegative(where, 'constant', options.constant); L.gravitationalConstant = options.constant; }
+  if (options.softening !== undefined) { assertNonNegative(where, 'softening', options.softening); L.gravitySoftening = options.softening; }
+  if (options.method !== undefined) {
+    if (options.method !== 'direct' && options.method !== 'barnes-hut') {
+      throw new RangeError(`${where}: method must be 'direct' or 'barnes-hut', got ${describe(options.method)}`);
+    }
+    L.gravityMethod = options.method;
+  }
+  if (options.openingAngle !== undefined) { assertPositive(where, 'openingAngle', options.openingAngle); L.openingAngle = options.openingAngle; }
+}
+
+/**
+ * Sets the Coulomb constant (N m^2 C^-2, >= 0) and softening (m, >= 0) of the electric pair force.
+ * @throws TypeError on unknown options; RangeError on negative values.
+ */
+export function setElectrostatics(world: PhysicsWorld, options: { constant?: number; softening?: number }): void {
+  const where = 'setElectrostatics';
+  assertKnownKeys(where, options, ['constant', 'softening']);
+  if (options.constant !== undefined) { assertNonNegative(where, 'constant', options.constant); world.laws.coulombConstant = options.constant; }
+  if (options.softening !== undefined) { assertNonNegative(where, 'softening', options.softening); world.laws.electricSoftening = options.softening; }
+}
+
+/** Options of `setWind`. Vectors have `world.dimensions` components. */
+export interface WindOptions {
+  /** Mean wind, m/s. */
+  velocity?: ArrayLike<number>;
+  /** Gust amplitude, m/s. */
+  gust?: ArrayLike<number>;
+  /** Gust angular frequency, rad/s (>= 0). */
+  gustOmega?: number;
+  /** Gust phase, rad. */
+  gustPhase?: number;
+  /** Turbulence; omit or intensity 0 for none. */
+  turbulence?: { intensity: number; lengthScale: number; timeScale: number; seed?: number; modes?: number };
+}
+
+/**
+ * Sets the wind that drag and lift act against. Replaces the whole wind field.
+ * @throws TypeError on unknown options or bad vectors; RangeError on negative intensity, non-positive
+ *   length or time scale, or a mode count outside [1, 32].
+ */
+export function setWind(world: PhysicsWorld, options: WindOptions): void {
+  const where = 'setWind';
+  assertKnownKeys(where, options, ['velocity', 'gust', 'gustOmega', 'gustPhase', 'turbulence']);
+  const d = world.dimensions;
+  const w = world.laws.wind;
+  w.velocity.fill(0); w.gust.fill(0); w.gustOmega = 0; w.gustPhase = 0; w.modes = 0; w.intensity = 0;
+  if (options.velocity !== undefined) { assertVector(where, 'velocity', options.velocity, d); for (let i = 0; i < d; i++) w.velocity[i] = options.velocity[i]!; }
+  if (options.gust !== undefined) { assertVector(where, 'gust', options.gust, d); for (let i = 0; i < d; i++) w.gust[i] = options.gust[i]!; }
+  if (options.gustOmega !== undefined) { assertNonNegative(where, 'gustOmega', options.gustOmega); w.gustOmega = options.gustOmega; }
+  if (options.gustPhase !== undefined) { assertFinite(where, 'gustPhase', options.gustPhase); w.gustPhase = options.gustPhase; }
+  const t = options.turbulence;
+  if (t !== undefined) {
+    assertKnownKeys(`${where}: turbulence`, t, ['intensity', 'lengthScale', 'timeScale', 'seed', 'modes']);
+    assertNonNegative(where, 'turbulence.intensity', t.intensity);
+    assertPositive(where, 'turbulence.lengthScale', t.lengthScale);
+    assertPositive(where, 'turbulence.timeScale', t.timeScale);
+    const modes = t.modes ?? 16;
+    assertInteger(where, 'turbulence.modes', modes, 1, MAX_WIND_MODES);
+    const rng = new Rng(t.seed ?? 1);
+    w.intensity = t.intensity;
+    w.modes = t.intensity > 0 ? modes : 0;
+    const data = w.modeData;
+    for (let m = 0; m < modes; m++) {
+      // Random direction (in the plane for 2D), wavelength log-uniform in [L/2, 2L].
+      let kx: number, ky: number, kz: number;
+      if (d === 2) { const a = rng.range(0, 2 * Math.PI); kx = Math.cos(a); ky = Math.sin(a); kz = 0; }
+      else { const zc = rng.range(-1, 1), a = rng.range(0, 2 * Math.PI), r = Math.sqrt(1 - zc * zc); kx = r * Math.cos(a); ky = r * Math.sin(a); kz = zc; }
+      const wavelength = t.lengthScale * Math.pow(2, rng.range(-1, 1));
+      const kmag = (2 * Math.PI) / wavelength;
+      // Amplitude direction perpendicular to k (divergence-free field).
+      let ax: number, ay: number, az: number;
+      if (d === 2) { ax = -ky; ay = kx; az = 0; }
+      else {
+        const px = rng.normal(), py = rng.normal(), pz = rng.normal();
+        ax = py * kz - pz * ky; ay = pz * kx - px * kz; az = px * ky - py * kx;
+        const n = Math.hypot(ax, ay, az) || 1;
+        ax /= n; ay /= n; az /= n;
+      }
+      const o = m * 8;
+      data[o] = kx * kmag; data[o + 1] = ky * kmag; data[o + 2] = kz * kmag;
+      data[o + 3] = (1 / t.timeScale) * Math.pow(2, rng.range(-1, 1));
+      data[o + 4] = rng.range(0, 2 * Math.PI);
+      data[o + 5] = ax; data[o + 6] = ay; data[o + 7] = az;
+    }
+  }
+}
+
+/**
+ * The wind velocity at (x, y, z) and time t, m/s, written into out[0..2]. Each turbulent mode has
+ * amplitude intensity sqrt(2 d / modes) in a d-dimensional world: a cosine has mean square 1/2 and a
+ * random unit direction puts 1/d of its square on each axis, so each component's RMS is `intensity`.
+ */
+export function windAt(world: PhysicsWorld, x: number, y: number, z: number, t: number, out: Float64Array): void {
+  const w = world.laws.wind;
+  const gc = w.gustOmega === 0 && w.gustPhase === 0 ? 1 : Math.cos(w.gustOmega * t + w.gustPhase);
+  let u = w.velocity[0]! + w.gust[0]! * gc;
+  let v = w.velocity[1]! + w.gust[1]! * gc;
+  let s = w.velocity[2]! + w.gust[2]! * gc;
+  const modes = w.modes;
+  if (modes > 0) {
+    const data = w.modeData;
+    const amp = w.intensity * Math.sqrt((2 * world.dimensions) / modes);
+    for (let m = 0; m < modes; m++) {
+      const o = m * 8;
+      const c = amp * Math.cos(data[o]! * x + data[o + 1]! * y + data[o + 2]! * z - data[o + 3]! * t + data[o + 4]!);
+      u += c * data[o + 5]!; v += c * data[o + 6]!; s += c * data[o + 7]!;
+    }
+  }
+  out[0] = u; out[1] = v; out[2] = s;
+}

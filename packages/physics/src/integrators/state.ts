@@ -1,0 +1,322 @@
+import type { PhysicsWorld } from '../world';
+import { evaluateForces } from '../pipeline/step';
+import { forcedBodies, freeBodies, spinningBodies } from './queries';
+import { hasComponent } from 'bitecs';
+import { reportNonFinite } from '../errors';
+
+/**
+ * Shared machinery of the multi-stage integrators: the list of moving bodies, a copy of the state at
+ * the start of the step, accelerations at the current (trial) state, and helpers that write trial
+ * states into the component arrays so that the force laws, which read those arrays, see them.
+ *
+ * The state of a body is (x, v) and, for bodies that turn, (angle or orientation, w). Accelerations:
+ * a = F / m + g for bodies with a force accumulator, a = g for bare particles; angular
+ * alpha = I^-1 (tau - w x I w) (see `angularAcceleration`).
+ */
+export interface IntegratorScratch {
+  /** Entities the scratch is sized for (capacity + 1 slots). */
+  readonly size: number;
+  /** Moving bodies this step: forced bodies first (indices < nForced), then free particles. */
+  movers: Int32Array;
+  nMovers: number;
+  nForced: number;
+  /** Turning bodies this step, and 1 in `torqued` for those with a torque accumulator and inertia. */
+  spinners: Int32Array;
+  nSpinners: number;
+  readonly torqued: Uint8Array;
+  /** State at the start of the step, per entity: x, y, z, vx, vy, vz. */
+  readonly x0: Float64Array[];
+  /** Angular state at the start of the step: angle (2D) or quaternion x, y, z, w (3D); w x, y, z. */
+  readonly q0: Float64Array[];
+  readonly w0: Float64Array[];
+  /** Accelerations at the current state: linear a x, y, z; angular alpha x, y, z. */
+  readonly acc: Float64Array[];
+  readonly alpha: Float64Array[];
+  /** The current stage's position slope (the velocity) x, y, z and orientation slope (see `orientationSlope`). */
+  readonly kv: Float64Array[];
+  readonly kq: Float64Array[];
+  /** Weighted sums of stage slopes (RK schemes): x-slope x, y, z; v-slope x, y, z; q-slope x, y, z, w; w-slope x, y, z. */
+  readonly sum: Float64Array[];
+}
+
+const f = (n: number): Float64Array => new Float64Array(n);
+
+/** The world's integrator scratch, made on first use (only multi-stage schemes need it). */
+export function getScratch(world: PhysicsWorld): IntegratorScratch {
+  const existing = (world as { integratorScratch?: IntegratorScratch }).integratorScratch;
+  if (existing) return existing;
+  const n = world.capacity + 1;
+  const s: IntegratorScratch = {
+    size: n,
+    movers: new Int32Array(64),
+    nMovers: 0,
+    nForced: 0,
+    spinners: new Int32Array(64),
+    nSpinners: 0,
+    torqued: new Uint8Array(n),
+    x0: [f(n), f(n), f(n), f(n), f(n), f(n)],
+    q0: [f(n), f(n), f(n), f(n)],
+    w0: [f(n), f(n), f(n)],
+    acc: [f(n), f(n), f(n)],
+    alpha: [f(n), f(n), f(n)],
+    kv: [f(n), f(n), f(n)],
+    kq: [f(n), f(n), f(n), f(n)],
+    sum: [f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n), f(n)],
+  };
+  (world as { integratorScratch?: IntegratorScratch }).integratorScratch = s;
+  return s;
+}
+
+/** Fills the movers and spinners lists for this step. */
+export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
+  const forced = forcedBodies(world);
+  const free = freeBodies(world);
+  const n = forced.length + free.length;
+  if (s.movers.length < n) s.movers = new Int32Array(Math.max(n, s.movers.length * 2));
+  const m = s.movers;
+  for (let i = 0; i < forced.length; i++) m[i] = forced[i]!;
+  for (let i = 0; i < free.length; i++) m[forced.length + i] = free[i]!;
+  s.nMovers = n;
+  s.nForced = forced.length;
+
+  const c = world.components;
+  const spin = spinningBodies(world);
+  if (s.spinners.length < spin.length) s.spinners = new Int32Array(Math.max(spin.length, s.spinners.length * 2));
+  let k = 0;
+  for (let i = 0; i < spin.length; i++) {
+    const e = spin[i]!;
+    if (hasComponent(world, e, c.Kinematic)) continue;
+    s.spinners[k++] = e;
+    s.torqued[e] = hasComponent(world, e, c.Torque) && hasComponent(world, e, c.Inertia) && c.Inertia.inv[e]! > 0 ? 1 : 0;
+  }
+  s.nSpinners = k;
+}
+
+/** Copies the current state of every mover and spinner into x0 / q0 / w0 and sets PreviousPosition. */
+export function saveState(world: PhysicsWorld, s: IntegratorScratch): void {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
+  const m = s.movers;
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    x0[e] = px[e]!; y0[e] = py[e]!; z0[e] = pz[e]!;
+    ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
+    u0[e] = vx[e]!; v0[e] = vy[e]!; w0[e] = vz[e]!;
+  }
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
+  const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
+  const sp = s.spinners;
+  const is2D = world.dimensions === 2;
+  const ang = c.Angle.value, q = c.Orientation;
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    if (is2D) qa[e] = ang[e]!;
+    else { qa[e] = q.x[e]!; qb[e] = q.y[e]!; qc[e] = q.z[e]!; qd[e] = q.w[e]!; }
+    wa[e] = wx[e]!; wb[e] = wy[e]!; wc[e] = wz[e]!;
+  }
+}
+
+/**
+ * Evaluates the force laws at the state now in the component arrays (at simulated time `time`) and
+ * writes linear and angular accelerations into `acc` and `alpha`. The world's time is restored.
+ */
+export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time: number): void {
+  const saved = world.time;
+  world.time = time;
+  evaluateForces(world);
+  world.time = saved;
+  accelerations(world, s);
+}
+
+/** Accelerations from the force and torque accumulators as they are (no force evaluation). */
+export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
+  const c = world.components;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z, im = c.Mass.inv;
+  const g = world.gravity;
+  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
+  const m = s.movers;
+  for (let i = 0; i < s.nForced; i++) {
+    const e = m[i]!;
+    const k = im[e]!;
+    ax[e] = fx[e]! * k + gx; ay[e] = fy[e]! * k + gy; az[e] = fz[e]! * k + gz;
+  }
+  for (let i = s.nForced; i < s.nMovers; i++) {
+    const e = m[i]!;
+    ax[e] = gx; ay[e] = gy; az[e] = gz;
+  }
+  angularAcceleration(world, s);
+}
+
+/**
+ * Angular acceleration of every spinner: alpha = tau / I about z in 2D; in 3D with a scalar moment of
+ * inertia (balls) alpha = tau I^-1 (the gyroscopic term w x I w vanishes for isotropic inertia).
+ */
+export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
+  const c = world.components;
+  const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z, ii = c.Inertia.inv;
+  const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
+  const sp = s.spinners;
+  const torqued = s.torqued;
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    if (torqued[e] === 0) { bx[e] = 0; by[e] = 0; bz[e] = 0; continue; }
+    const k = ii[e]!;
+    bx[e] = tx[e]! * k; by[e] = ty[e]! * k; bz[e] = tz[e]! * k;
+  }
+}
+
+/**
+ * Writes the trial state x = x0 + cx dx, v = v0 + cv dv for every mover, where (dx, dv) are the
+ * given per-entity slope arrays (velocity and acceleration of an earlier stage), and likewise for
+ * spinners (angle/orientation from w, w from alpha). Used by the Runge-Kutta schemes.
+ */
+export function writeTrial(
+  world: PhysicsWorld, s: IntegratorScratch,
+  cx: number, dx: Float64Array[], cv: number, dv: Float64Array[],
+  cq: number, dq: Float64Array[], cw: number, dw: Float64Array[],
+): void {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
+  const [dxx, dxy, dxz] = dx as [Float64Array, Float64Array, Float64Array];
+  const [dvx, dvy, dvz] = dv as [Float64Array, Float64Array, Float64Array];
+  const m = s.movers;
+  const is2D = world.dimensions === 2;
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    px[e] = x0[e]! + cx * dxx[e]!; py[e] = y0[e]! + cx * dxy[e]!;
+    vx[e] = u0[e]! + cv * dvx[e]!; vy[e] = v0[e]! + cv * dvy[e]!;
+    if (!is2D) { pz[e] = z0[e]! + cx * dxz[e]!; vz[e] = w0[e]! + cv * dvz[e]!; }
+  }
+  writeAngularTrial(world, s, cq, dq, cw, dw);
+}
+
+/**
+ * Angular part of `writeTrial`. 2D: angle = angle0 + cq dq, w = w0 + cw dw (dq, dw: angular
+ * velocity and acceleration slopes). 3D: q = q0 + cq dq with dq a quaternion slope (q' = w q / 2),
+ * normalised; w = w0 + cw dw.
+ */
+export function writeAngularTrial(
+  world: PhysicsWorld, s: IntegratorScratch, cq: number, dq: Float64Array[], cw: number, dw: Float64Array[],
+): void {
+  if (s.nSpinners === 0) return;
+  const c = world.components;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
+  const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
+  const sp = s.spinners;
+  if (world.dimensions === 2) {
+    const ang = c.Angle.value;
+    const d = dq[0]!, dwz = dw[2]!;
+    for (let i = 0; i < s.nSpinners; i++) {
+      const e = sp[i]!;
+      ang[e] = qa[e]! + cq * d[e]!;
+      wz[e] = wc[e]! + cw * dwz[e]!;
+    }
+    return;
+  }
+  const q = c.Orientation;
+  const [d0, d1, d2, d3] = dq as [Float64Array, Float64Array, Float64Array, Float64Array];
+  const [e0, e1, e2] = dw as [Float64Array, Float64Array, Float64Array];
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    let x = qa[e]! + cq * d0[e]!, y = qb[e]! + cq * d1[e]!, z = qc[e]! + cq * d2[e]!, w = qd[e]! + cq * d3[e]!;
+    const inv = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
+    x *= inv; y *= inv; z *= inv; w *= inv;
+    q.x[e] = x; q.y[e] = y; q.z[e] = z; q.w[e] = w;
+    wx[e] = wa[e]! + cw * e0[e]!; wy[e] = wb[e]! + cw * e1[e]!; wz[e] = wc[e]! + cw * e2[e]!;
+  }
+}
+
+/**
+ * Orientation slope of every spinner at the current state, written into `out`: in 2D the angular
+ * velocity w_z (into out[0]); in 3D the quaternion derivative q' = (w, 0) q / 2 (world-frame w)
+ * into out[0..3].
+ */
+export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
+  const c = world.components;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const sp = s.spinners;
+  if (world.dimensions === 2) {
+    const o = out[0]!;
+    for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; o[e] = wz[e]!; }
+    return;
+  }
+  const q = c.Orientation;
+  const [o0, o1, o2, o3] = out as [Float64Array, Float64Array, Float64Array, Float64Array];
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
+    const x = q.x[e]!, y = q.y[e]!, z = q.z[e]!, w = q.w[e]!;
+    o0[e] = 0.5 * (ax * w + ay * z - az * y);
+    o1[e] = 0.5 * (-ax * z + ay * w + az * x);
+    o2[e] = 0.5 * (ax * y - ay * x + az * w);
+    o3[e] = 0.5 * (-ax * x - ay * y - az * z);
+  }
+}
+
+/**
+ * Evaluates the slopes of the current state in the component arrays at `time`: position slope kv
+ * (a copy of the velocity), acceleration acc, orientation slope kq, angular acceleration alpha.
+ * `evaluate` false reuses the force accumulators as they are (the pipeline evaluated them at the
+ * start of the step).
+ */
+export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: number, evaluate: boolean): void {
+  if (evaluate) accelerationsAt(world, s, time); else accelerations(world, s);
+  const c = world.components;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const [kx, ky, kz] = s.kv as [Float64Array, Float64Array, Float64Array];
+  const m = s.movers;
+  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; kx[e] = vx[e]!; ky[e] = vy[e]!; kz[e] = vz[e]!; }
+  orientationSlope(world, s, s.kq);
+}
+
+/** sum = (reset ? 0 : sum) + weight * (current stage slopes), for every mover and spinner. */
+export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: number, reset: boolean): void {
+  const S = s.sum;
+  const lin = [s.kv[0]!, s.kv[1]!, s.kv[2]!, s.acc[0]!, s.acc[1]!, s.acc[2]!];
+  const m = s.movers;
+  for (let k = 0; k < 6; k++) {
+    const out = S[k]!, src = lin[k]!;
+    if (reset) for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[e] = weight * src[e]!; }
+    else for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[e] = out[e]! + weight * src[e]!; }
+  }
+  const nq = world.dimensions === 2 ? 1 : 4;
+  const ang = [s.kq[0]!, s.kq[1]!, s.kq[2]!, s.kq[3]!, s.alpha[0]!, s.alpha[1]!, s.alpha[2]!];
+  const sp = s.spinners;
+  for (let k = 0; k < 7; k++) {
+    if (k >= nq && k < 4) continue;
+    const out = S[6 + k]!, src = ang[k]!;
+    if (reset) for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[e] = weight * src[e]!; }
+    else for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[e] = out[e]! + weight * src[e]!; }
+  }
+}
+
+/** The sum arrays grouped as writeTrial expects: [x-slope], [v-slope], [q-slope], [w-slope]. */
+export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[], Float64Array[], Float64Array[]] {
+  const S = s.sum;
+  return [[S[0]!, S[1]!, S[2]!], [S[3]!, S[4]!, S[5]!], [S[6]!, S[7]!, S[8]!, S[9]!], [S[10]!, S[11]!, S[12]!]];
+}
+
+/** Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first. */
+export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  let sum = 0;
+  const m = s.movers;
+  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; sum += px[e]! + py[e]! + pz[e]! + vx[e]! + vy[e]! + vz[e]!; }
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const sp = s.spinners;
+  for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; sum += wx[e]! + wy[e]! + wz[e]!; }
+  if (sum - sum !== 0) {
+    reportNonFinite(world, m.subarray(0, s.nMovers), 'integrate');
+    reportNonFinite(world, sp.subarray(0, s.nSpinners), 'integrate');
+  }
+}
