@@ -1,0 +1,173 @@
+import { Graphics } from 'pixi.js';
+import { query } from 'bitecs';
+import type { PhysicsWorld } from '@bitphysics/physics';
+import type { BallLayer } from './balls';
+import type { Camera } from './camera';
+import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from './validate';
+
+/** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */
+export interface DebugOptions {
+  /** Draw each ball's velocity as an arrow from its centre. Default true. */
+  velocities?: boolean;
+  /** Arrow length per unit speed, s (an arrow is |v| velocityScale metres long), > 0. Default 0.1 s. */
+  velocityScale?: number;
+  /** Most velocity arrows drawn (the first balls shown), integer in [0, 1_000_000]. Default 2000. */
+  maxArrows?: number;
+  /**
+   * Draw the last step's contacts (from `world.collision.cache.rows`): a dot at each contact point
+   * and its normal (from body A to body B). Contacts that carried impulse are red, speculative
+   * ones (no impulse) grey. Default true.
+   */
+  contacts?: boolean;
+  /** Length of a drawn contact normal, CSS px, > 0. Default 14 px. */
+  normalLength?: number;
+  /** Most contacts drawn, integer in [0, 1_000_000]. Default 4000. */
+  maxContacts?: number;
+  /** Outline walls: segment capsules and their end points, and the boundary box's faces. Default true. */
+  walls?: boolean;
+}
+
+/** Fully resolved debug options. */
+export type ResolvedDebugOptions = Required<DebugOptions>;
+
+const DEBUG_OPTIONS = ['velocities', 'velocityScale', 'maxArrows', 'contacts', 'normalLength', 'maxContacts', 'walls'] as const;
+
+/** Checks debug options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
+export function resolveDebugOptions(where: string, options: DebugOptions = {}): ResolvedDebugOptions {
+  assertKnownKeys(where, options, DEBUG_OPTIONS);
+  const velocities = options.velocities ?? true;
+  assertBoolean(where, 'debug.velocities', velocities);
+  const velocityScale = options.velocityScale ?? 0.1;
+  assertPositive(where, 'debug.velocityScale', velocityScale);
+  const maxArrows = options.maxArrows ?? 2000;
+  assertInteger(where, 'debug.maxArrows', maxArrows, 0, 1_000_000);
+  const contacts = options.contacts ?? true;
+  assertBoolean(where, 'debug.contacts', contacts);
+  const normalLength = options.normalLength ?? 14;
+  assertPositive(where, 'debug.normalLength', normalLength);
+  const maxContacts = options.maxContacts ?? 4000;
+  assertInteger(where, 'debug.maxContacts', maxContacts, 0, 1_000_000);
+  const walls = options.walls ?? true;
+  assertBoolean(where, 'debug.walls', walls);
+  return { velocities, velocityScale, maxArrows, contacts, normalLength, maxContacts, walls };
+}
+
+const ARROW = 0x7cf2a0;
+const CONTACT_ACTIVE = 0xff4d5e;
+const CONTACT_SPECULATIVE = 0x9aa0a6;
+const WALL_DEBUG = 0xffd166;
+
+/**
+ * The debug overlay: velocity arrows, contact points and normals of the last step, wall outlines.
+ * One pixi Graphics redrawn each frame (pixi allocates its own path objects while drawing; bounded
+ * by maxArrows and maxContacts). Reads component stores and the contact cache; computes nothing physical.
+ */
+export class DebugLayer {
+  /** The Graphics the overlay is drawn into; sits above the balls. */
+  readonly graphics = new Graphics({ label: 'debug' });
+  /** The options in use. */
+  readonly options: ResolvedDebugOptions;
+  /** Contacts drawn in the last frame. */
+  contactsDrawn = 0;
+  /** Arrows drawn in the last frame. */
+  arrowsDrawn = 0;
+
+  /** @param options resolved options (see `resolveDebugOptions`). */
+  constructor(options: ResolvedDebugOptions) {
+    this.options = options;
+  }
+
+  /** Redraws the overlay for the state shown at interpolation factor `alpha`. */
+  draw(world: PhysicsWorld, balls: BallLayer, camera: Camera, alpha: number): void {
+    const g = this.graphics;
+    g.clear();
+    const o = this.options;
+    const c = world.components;
+    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
+    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
+    this.arrowsDrawn = 0;
+    this.contactsDrawn = 0;
+
+    if (o.walls) this.drawWalls(world, camera);
+
+    if (o.velocities && o.maxArrows > 0) {
+      const vx = c.Velocity.x, vy = c.Velocity.y;
+      const k = o.velocityScale * ppm;
+      const n = Math.min(balls.count, o.maxArrows);
+      const eids = balls.eids;
+      let drawn = 0;
+      for (let i = 0; i < n; i++) {
+        const e = eids[i]!;
+        const dx = vx[e]! * k, dy = -vy[e]! * k;
+        const len = Math.sqrt(dx * dx + dy * dy);
+        if (len < 2) continue;
+        const sx = x0 + (ox[e]! + (px[e]! - ox[e]!) * alpha) * ppm;
+        const sy = y0 - (oy[e]! + (py[e]! - oy[e]!) * alpha) * ppm;
+        const tx = sx + dx, ty = sy + dy;
+        const hl = Math.min(8, len * 0.35);
+        const ux = dx / len, uy = dy / len;
+        g.moveTo(sx, sy).lineTo(tx, ty);
+        g.moveTo(tx - ux * hl - uy * hl * 0.5, ty - uy * hl + ux * hl * 0.5).lineTo(tx, ty)
+          .lineTo(tx - ux * hl + uy * hl * 0.5, ty - uy * hl - ux * hl * 0.5);
+        drawn++;
+      }
+      if (drawn > 0) g.stroke({ width: 1.5, color: ARROW, alpha: 0.9 });
+      this.arrowsDrawn = drawn;
+    }
+
+    if (o.contacts && o.maxContacts > 0) {
+      const rows = world.collision.cache.rows;
+      const n = Math.min(rows.count, o.maxContacts);
+      const b = rows.b, nx = rows.nx, ny = rows.ny, rb = rows.rb, J = rows.totalNormalImpulse;
+      const L = o.normalLength;
+      // Two passes (active, then speculative) so each colour is one stroke.
+      for (let pass = 0; pass < 2; pass++) {
+        let any = false;
+        for (let i = 0; i < n; i++) {
+          const active = J[i]! > 0;
+          if (active !== (pass === 0)) continue;
+          const e = b[i]!;
+          // The contact point lies rb behind B's centre along the normal (contacts.ts: rb is measured along -n).
+          const cx = ox[e]! + (px[e]! - ox[e]!) * alpha - nx[i]! * rb[i]!;
+          const cy = oy[e]! + (py[e]! - oy[e]!) * alpha - ny[i]! * rb[i]!;
+          const sx = x0 + cx * ppm, sy = y0 - cy * ppm;
+          g.moveTo(sx, sy).lineTo(sx + nx[i]! * L, sy - ny[i]! * L);
+          g.circle(sx, sy, 2.5);
+          any = true;
+        }
+        if (any) g.stroke({ width: 1.25, color: pass === 0 ? CONTACT_ACTIVE : CONTACT_SPECULATIVE, alpha: 0.95 });
+      }
+      this.contactsDrawn = n;
+    }
+  }
+
+  /** Releases the Graphics. */
+  destroy(): void {
+    this.graphics.destroy();
+  }
+
+  private drawWalls(world: PhysicsWorld, camera: Camera): void {
+    const g = this.graphics;
+    const S = world.components.Segment;
+    const segs = query(world, [S]);
+    let any = false;
+    for (let i = 0; i < segs.length; i++) {
+      const e = segs[i]!;
+      const ax = camera.toScreenX(S.ax[e]!), ay = camera.toScreenY(S.ay[e]!);
+      const bx = camera.toScreenX(S.bx[e]!), by = camera.toScreenY(S.by[e]!);
+      const r = Math.max(camera.toScreenLength(S.radius[e]!), 0);
+      g.moveTo(ax, ay).lineTo(bx, by);
+      g.circle(ax, ay, r + 3);
+      g.circle(bx, by, r + 3);
+      any = true;
+    }
+    const box = world.collision.boundary;
+    if (box.enabled) {
+      const x1 = camera.toScreenX(box.min[0]!), x2 = camera.toScreenX(box.max[0]!);
+      const y1 = camera.toScreenY(box.max[1]!), y2 = camera.toScreenY(box.min[1]!);
+      g.rect(x1, y1, x2 - x1, y2 - y1);
+      any = true;
+    }
+    if (any) g.stroke({ width: 1, color: WALL_DEBUG, alpha: 0.9 });
+  }
+}

@@ -1,0 +1,23 @@
+/**
+ * @bitphysics/render-pixi: draws a 2D bitphysics world with pixi.js 8.
+ *
+ * The renderer only reads component stores (Position, PreviousPosition, Ball, Angle, Velocity,
+ * Segment), the boundary box and the contact cache; it computes no physics. It owns the conversion
+ * from SI metres (y up) to CSS pixels (y down): see `Camera`.
+ *
+ * Entry points: `WorldRenderer` (everything), `Camera` (metres <-> pixels, no pixi inside),
+ * `createBallTexture` (the shared circle texture), colour helpers.
+ */
+export { WorldRenderer } from './renderer';
+export type { WorldRendererOptions, RendererStats } from './renderer';
+export { Camera, assertWorldRect } from './camera';
+export type { CameraOptions, WorldRect, Point2 } from './camera';
+export type { BallMode } from './balls';
+export { createBallTexture, ballTextureDiameter } from './textures';
+export type { BallTextureOptions } from './textures';
+export { parseColor, seededColor, hslToRgb } from './colors';
+export type { ColorInput } from './colors';
+export { resolveTrailOptions } from './trails';
+export type { TrailOptions } from './trails';
+export { resolveDebugOptions } from './debug';
+export type { DebugOptions } from './debug';
