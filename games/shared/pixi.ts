@@ -1,0 +1,95 @@
+/**
+ * The pixi-specific part of the game shell: the Application sized to the window, and
+ * `startPixiGame`, which joins a `WorldRenderer` to the renderer-agnostic `createGameShell`.
+ * 3D games use `createGameShell` directly with a three.js render function instead.
+ */
+import { Application, type ColorSource } from 'pixi.js';
+import type { PhysicsWorld } from '@bitphysics/physics';
+import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
+import { createGameShell, type GameShell, type GameShellOptions } from './shell';
+
+/** Options of `createPixiApp`. */
+export interface PixiAppOptions {
+  /** Canvas background colour. Default 0x10141c. */
+  background?: ColorSource;
+  /** Element the canvas is appended to (the canvas fills the window). Default document.body. */
+  parent?: HTMLElement;
+  /** Device pixel ratio to render at, in (0, 4]. Default min(devicePixelRatio, 2). */
+  resolution?: number;
+  /** Multisample antialiasing of the canvas. Default true. */
+  antialias?: boolean;
+}
+
+/**
+ * Creates a pixi Application (WebGL) whose canvas fills the window and follows its resizes. Its
+ * ticker is not started: the game loop renders explicitly with `app.render()` after updating.
+ * @throws RangeError if resolution is not in (0, 4]; whatever pixi throws when WebGL is unavailable.
+ */
+export async function createPixiApp(options: PixiAppOptions = {}): Promise<Application> {
+  const resolution = options.resolution ?? Math.min(window.devicePixelRatio || 1, 2);
+  if (!(resolution > 0 && resolution <= 4)) throw new RangeError(`createPixiApp: resolution must be in (0, 4], got ${resolution}`);
+  const app = new Application();
+  await app.init({
+    resizeTo: window,
+    background: options.background ?? 0x10141c,
+    antialias: options.antialias ?? false,
+    resolution,
+    autoDensity: true,
+    preference: 'webgl',
+    autoStart: false,
+    sharedTicker: false,
+  });
+  app.ticker.stop();
+  const canvas = app.canvas;
+  canvas.style.display = 'block';
+  canvas.style.touchAction = 'none';
+  (options.parent ?? document.body).append(canvas);
+  return app;
+}
+
+/** Options of `startPixiGame`: the shell's options (minus `render`) plus the pixi parts. */
+export interface PixiGameOptions extends Omit<GameShellOptions, 'render'> {
+  /** Options for the WorldRenderer (its `app` is filled in). */
+  renderer?: Omit<WorldRendererOptions, 'app'>;
+  /** Options for the Application. */
+  app?: PixiAppOptions;
+  /** Extra drawing each frame, after the world renderer and before the frame is presented (pointer previews, overlays). */
+  onFrame?: (alpha: number, world: PhysicsWorld) => void;
+}
+
+/** What `startPixiGame` returns. */
+export interface PixiGame {
+  /** The shell (also `window.game`, with `renderer` and `app` exposed on it). */
+  shell: GameShell & { renderer: WorldRenderer; app: Application };
+  /** The pixi Application. */
+  app: Application;
+  /** The world renderer; it follows the shell's world across resets. */
+  renderer: WorldRenderer;
+}
+
+/**
+ * Starts a 2D pixi game: Application, shell (world, loop, keys, HUD, window.game, ready flag) and a
+ * WorldRenderer that follows the shell's world across resets. Each frame: the renderer places the
+ * display objects for alpha, `onFrame` draws extras, `app.render()` presents.
+ * @throws whatever createPixiApp, createGameShell or the WorldRenderer constructor throws (bad options).
+ */
+export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame> {
+  const { renderer: rendererOptions, app: appOptions, onFrame, ...shellOptions } = options;
+  const app = await createPixiApp(appOptions);
+  let renderer: WorldRenderer | null = null;
+  const shell = createGameShell({
+    ...shellOptions,
+    render: (alpha, world) => {
+      if (!renderer) return;
+      renderer.render(alpha);
+      onFrame?.(alpha, world);
+      app.render();
+    },
+  });
+  const worldRenderer = new WorldRenderer(shell.world, { ...rendererOptions, app });
+  renderer = worldRenderer;
+  shell.onWorldChange((world) => worldRenderer.setWorld(world));
+  const exposed = shell.expose({ renderer: worldRenderer, app });
+  shell.start();
+  return { shell: exposed, app, renderer: worldRenderer };
+}

@@ -1,0 +1,189 @@
+import { step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+import { exposeGame, markReady, type GameHandle, type GameStats } from './contract';
+import { createHud, type ControlHint, type Hud } from './hud';
+import { bindKeys, type KeyBinding } from './keys';
+import { createGameLoop, type GameLoop } from './loop';
+
+/** Options of `createGameShell`. */
+export interface GameShellOptions {
+  /** Title shown in the HUD. Non-empty. */
+  title: string;
+  /** Builds a fresh world with the game's scene; called once at start and on every reset. */
+  createWorld: () => PhysicsWorld;
+  /** Draws a frame of `world` at interpolation factor `alpha` in [0, 1] (1 while paused). */
+  render: (alpha: number, world: PhysicsWorld) => void;
+  /** Runs one step of `world`. Default `step(world)` from @bitphysics/physics; wrap it to add game rules. */
+  step?: (world: PhysicsWorld) => void;
+  /** Body count for the HUD. Default: every live entity. */
+  bodies?: (world: PhysicsWorld) => number;
+  /** Legend lines shown after the built-in P / N / R lines. */
+  controls?: readonly ControlHint[];
+  /** Extra keys (the built-in P, N and R cannot be rebound). */
+  keys?: readonly KeyBinding[];
+  /** Start paused. Default false. */
+  paused?: boolean;
+  /** Longest real frame time fed to the fixed-step loop, s. Default 0.1. */
+  maxFrameTime?: number;
+  /** Most physics steps per frame. Default 4. */
+  maxStepsPerFrame?: number;
+  /** Element the HUD goes into. Default document.body. */
+  hudParent?: HTMLElement;
+}
+
+/**
+ * The running shell of a game; it is also `window.game` (the page contract, see contract.ts), so
+ * tests can read `world`, toggle `paused` and call `stats()`, `step()`, `reset()`.
+ */
+export interface GameShell extends GameHandle {
+  /** The world shown now; `reset` replaces it. */
+  readonly world: PhysicsWorld;
+  /** Paused: frames are drawn, no steps run. Settable. @throws TypeError if set to a non-boolean. */
+  paused: boolean;
+  /** { entities, steps, fps }: live entities and steps of the current world, measured frames per second. */
+  stats(): GameStats;
+  /** Pauses (if running) and advances exactly one step: the N key. */
+  step(): void;
+  /** Replaces the world with a fresh one from `createWorld` (pause state kept): the R key. */
+  reset(): void;
+  /** Flips `paused`: the P key. */
+  togglePause(): void;
+  /** The frame loop. */
+  readonly loop: GameLoop;
+  /** The HUD. */
+  readonly hud: Hud;
+  /** Calls `listener` with each new world after a reset. @returns a function that removes the listener. */
+  onWorldChange(listener: (world: PhysicsWorld) => void): () => void;
+  /**
+   * Adds game-specific fields to the shell (and so to `window.game`) and returns it typed with them.
+   * @throws TypeError if a field would replace a built-in one.
+   */
+  expose<E extends object>(extras: E): GameShell & E;
+  /** Starts the frame loop (done by `createGameShell` unless `start: false` was implied by a wrapper). */
+  start(): void;
+  /** Stops the loop, unbinds the keys and removes the HUD. */
+  destroy(): void;
+}
+
+/** The built-in legend lines. */
+export const SHELL_CONTROLS: readonly ControlHint[] = Object.freeze([
+  { keys: 'P', action: 'pause / resume' },
+  { keys: 'N', action: 'single step (pauses)' },
+  { keys: 'R', action: 'reset' },
+]);
+
+/**
+ * Creates a game shell: world lifecycle, fixed-step loop on requestAnimationFrame, P / N / R keys,
+ * HUD (fps, bodies, steps, legend), `window.game` and the ready flag (`document.body.dataset.ready`
+ * becomes 'true' after the first drawn frame). Renderer-agnostic: the game supplies `render`.
+ * The loop is not started: call `start()` once the renderer is in place.
+ * @throws TypeError if title is empty or createWorld/render is not a function; whatever
+ *   `createWorld` throws.
+ */
+export function createGameShell(options: GameShellOptions): GameShell {
+  const where = 'createGameShell';
+  if (typeof options.createWorld !== 'function') throw new TypeError(`${where}: createWorld must be a function`);
+  if (typeof options.render !== 'function') throw new TypeError(`${where}: render must be a function`);
+  const stepWorld = options.step ?? physicsStep;
+  const bodies = options.bodies ?? ((w: PhysicsWorld) => w.entityIndex.aliveCount);
+  const render = options.render;
+  const hud = createHud({
+    title: options.title,
+    controls: [...SHELL_CONTROLS, ...(options.controls ?? [])],
+    ...(options.hudParent ? { parent: options.hudParent } : {}),
+  });
+  let world = options.createWorld();
+  const listeners = new Set<(w: PhysicsWorld) => void>();
+  let lastHud = -Infinity;
+
+  const updateHud = (): void => {
+    hud.update(loop.fps, bodies(world), world.steps, loop.paused);
+  };
+
+  const loop = createGameLoop({
+    dt: world.dt,
+    step: () => stepWorld(world),
+    render: (alpha) => {
+      render(alpha, world);
+      const now = performance.now();
+      if (now - lastHud >= 250) {
+        lastHud = now;
+        updateHud();
+      }
+    },
+    ...(options.maxFrameTime !== undefined ? { maxFrameTime: options.maxFrameTime } : {}),
+    ...(options.maxStepsPerFrame !== undefined ? { maxStepsPerFrame: options.maxStepsPerFrame } : {}),
+    onError: (error) => {
+      console.error(error);
+      hud.showError(`The simulation stopped: ${error instanceof Error ? error.message : String(error)}`);
+    },
+  });
+  loop.paused = options.paused ?? false;
+
+  const builtIn = new Set(['world', 'paused', 'stats', 'step', 'reset', 'togglePause', 'loop', 'hud', 'onWorldChange', 'expose', 'start', 'destroy']);
+
+  const shell: GameShell = {
+    get world() { return world; },
+    get paused() { return loop.paused; },
+    set paused(value: boolean) {
+      loop.paused = value;
+      updateHud();
+    },
+    stats() {
+      return { entities: world.entityIndex.aliveCount, steps: world.steps, fps: loop.fps };
+    },
+    step() {
+      loop.paused = true;
+      loop.stepOnce();
+      updateHud();
+    },
+    reset() {
+      world = options.createWorld();
+      loop.setTimeStep(world.dt);
+      loop.resetClock();
+      for (const l of listeners) l(world);
+      updateHud();
+    },
+    togglePause() {
+      shell.paused = !loop.paused;
+    },
+    loop,
+    hud,
+    onWorldChange(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    expose<E extends object>(extras: E): GameShell & E {
+      for (const key of Object.keys(extras)) {
+        if (builtIn.has(key)) throw new TypeError(`GameShell.expose: ${JSON.stringify(key)} is a built-in field of the shell`);
+      }
+      return Object.assign(shell, extras);
+    },
+    start() {
+      loop.start();
+    },
+    destroy() {
+      loop.stop();
+      unbind();
+      hud.destroy();
+      if (window.game === shell) delete window.game;
+    },
+  };
+
+  const extraKeys = options.keys ?? [];
+  for (const k of extraKeys) {
+    if (['p', 'n', 'r'].includes(k.key.toLowerCase())) throw new TypeError(`${where}: key ${JSON.stringify(k.key)} is built in (P pause, N step, R reset)`);
+  }
+  const unbind = bindKeys([
+    { key: 'p', label: 'pause / resume', action: () => shell.togglePause() },
+    { key: 'n', label: 'single step', action: () => shell.step(), repeat: true },
+    { key: 'r', label: 'reset', action: () => shell.reset() },
+    ...extraKeys,
+  ]);
+
+  exposeGame(shell);
+  loop.afterFirstFrame(() => {
+    updateHud();
+    markReady();
+  });
+  return shell;
+}
