@@ -1,0 +1,65 @@
+// `npm run thumbnails [-- folder ...] [-- --seconds=1.5]`: opens each registered game (or the named
+// folders) in headless Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play,
+// and writes a screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
+import { writeFileSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+import { launchChromium, readRegistry, repoRoot, startSite } from '../test/browser/chromium.mjs';
+
+const WIDTH = 640;
+const HEIGHT = 400;
+
+const args = process.argv.slice(2);
+const secondsArg = args.find((a) => a.startsWith('--seconds='));
+const seconds = secondsArg ? Number(secondsArg.slice('--seconds='.length)) : 1.5;
+if (!(seconds >= 0 && Number.isFinite(seconds))) {
+  console.error(`--seconds must be a number >= 0, got ${secondsArg}`);
+  process.exit(1);
+}
+const registry = await readRegistry();
+const wanted = args.filter((a) => !a.startsWith('--'));
+for (const folder of wanted) {
+  if (!registry.some((e) => e.folder === folder)) {
+    console.error(`${folder} is not a registered game (games/${folder}/ needs main.ts, index.html and game.json)`);
+    process.exit(1);
+  }
+}
+const entries = wanted.length ? registry.filter((e) => wanted.includes(e.folder)) : registry;
+
+const site = await startSite();
+const browser = await launchChromium();
+let failed = false;
+try {
+  for (const entry of entries) {
+    const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT }, deviceScaleFactor: 1 });
+    const page = await context.newPage();
+    const errors = [];
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    page.on('pageerror', (e) => errors.push(e.message));
+    try {
+      await page.goto(`${site.url}${entry.folder}/`);
+      await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 60_000 });
+      // Play `seconds` of simulated time (independent of how fast software WebGL draws).
+      await page.waitForFunction((s) => (window.game?.world?.time ?? 0) >= s, seconds, { timeout: 120_000 });
+      await page.addStyleTag({ content: 'body > *:not(canvas) { visibility: hidden !important; }' });
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      const png = await page.locator('canvas').first().screenshot();
+      const file = join(repoRoot, 'games', entry.folder, 'thumbnail.png');
+      writeFileSync(file, png);
+      const kb = statSync(file).size / 1024;
+      console.log(`${entry.folder}: ${file} (${kb.toFixed(1)} KB)${kb > 150 ? '  WARNING: larger than 150 KB' : ''}`);
+      if (errors.length) {
+        failed = true;
+        console.error(`${entry.folder}: page errors:\n  ${errors.join('\n  ')}`);
+      }
+    } catch (error) {
+      failed = true;
+      console.error(`${entry.folder}: ${error instanceof Error ? error.message : String(error)}`);
+    } finally {
+      await context.close();
+    }
+  }
+} finally {
+  await browser.close();
+  await site.stop();
+}
+process.exit(failed ? 1 : 0);

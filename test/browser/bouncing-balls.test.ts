@@ -1,0 +1,165 @@
+/**
+ * Bouncing balls in headless Chromium: click and drag spawn balls, P pauses (nothing moves while
+ * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
+ * The tests share one page with a small ball count (?count=8); before each, the game is reset
+ * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
+ * same seeded scene.
+ */
+import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
+import { Harness, type GamePage } from './harness';
+
+/** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
+interface BallsGame {
+  paused: boolean;
+  ballIds(): number[];
+  positions(): number[];
+  spawn(x: number, y: number, vx?: number, vy?: number): number;
+  renderer: { stats: { balls: number; frames: number } };
+  world: { steps: number; components: { Velocity: { x: Float64Array; y: Float64Array } } };
+}
+
+const COUNT = 8;
+/** Segments in the scene (games/bouncing-balls/scene.ts SEGMENTS). */
+const SEGMENTS = 3;
+
+function balls(g: GamePage) {
+  return g.page.evaluate(() => {
+    const game = window.game as unknown as BallsGame;
+    return { ids: game.ballIds(), positions: game.positions(), shown: game.renderer.stats.balls, steps: game.world.steps, paused: game.paused };
+  });
+}
+
+describe('bouncing balls', () => {
+  let h: Harness;
+  let page: GamePage;
+  beforeAll(async () => {
+    h = await Harness.start();
+    page = await h.openGame('bouncing-balls', { query: { count: COUNT } });
+  });
+  beforeEach(async () => {
+    await page.page.evaluate(() => {
+      const game = window.game as unknown as { reset(): void; paused: boolean };
+      game.reset();
+      game.paused = false;
+    });
+    await page.frames(2);
+    page.errors.length = 0;
+  });
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  const open = async () => page;
+
+  it('starts with ?count balls plus the walls, shows the legend and the readout', async () => {
+    const g = await open();
+    const stats = await g.stats();
+    expect(stats.entities).toBe(COUNT + SEGMENTS);
+    const b = await balls(g);
+    expect(b.ids.length).toBe(COUNT);
+    await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 8, null);
+    const legend = await g.page.locator('.bp-legend').innerText();
+    for (const key of ['P', 'N', 'R', 'Click', 'Drag']) expect(legend).toContain(key);
+    await g.waitFor(() => /\d+ fps/.test(document.querySelector('[data-hud="fps"]')?.textContent ?? ''), null);
+    expect(await g.page.locator('[data-hud="bodies"]').innerText()).toBe(`${COUNT} bodies`);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('a click adds exactly one ball, drawn on the next frame', async () => {
+    const g = await open();
+    const before = await g.stats();
+    await g.clickCanvas(0.5, 0.45);
+    const after = await g.waitFor((n) => { const s = window.game!.stats(); return s.entities === n + 1 ? s : null; }, before.entities);
+    expect(after.entities).toBe(before.entities + 1);
+    await g.frames(2);
+    const b = await balls(g);
+    expect(b.ids.length).toBe(COUNT + 1);
+    expect(b.shown).toBe(COUNT + 1);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('a drag throws a ball in the direction of the drag', async () => {
+    const g = await open();
+    await g.press('p'); // paused, so the new ball keeps the velocity it was thrown with
+    await g.dragCanvas([0.3, 0.5], [0.6, 0.5], 10);
+    const v = await g.waitFor(() => {
+      const game = window.game as unknown as BallsGame;
+      const ids = game.ballIds();
+      if (ids.length !== 9) return null;
+      const e = ids[ids.length - 1]!;
+      return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]! };
+    }, null);
+    expect(v.vx).toBeGreaterThan(0.5);
+    expect(Math.abs(v.vy)).toBeLessThan(Math.abs(v.vx));
+    expect(g.errors).toEqual([]);
+  });
+
+  it('P pauses: nothing moves while paused, motion resumes after', async () => {
+    const g = await open();
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    // A ball high up in the box, certain to fall once the game runs again.
+    await g.page.evaluate(() => (window.game as unknown as BallsGame).spawn(8, 9.5, 1, 0));
+    const a = await balls(g);
+    await g.frames(10);
+    const b = await balls(g);
+    expect(b.steps).toBe(a.steps);
+    expect(b.positions).toEqual(a.positions);
+    await g.press('p');
+    await g.waitFor(() => !window.game!.paused, null);
+    await g.waitFor((p0) => {
+      const p = (window.game as unknown as BallsGame).positions();
+      return p.length === p0.length && p.some((v, i) => Math.abs(v - p0[i]!) > 1e-6);
+    }, a.positions);
+    expect((await balls(g)).steps).toBeGreaterThan(a.steps);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('N advances exactly one step (and pauses)', async () => {
+    const g = await open();
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    const a = await balls(g);
+    await g.press('n');
+    await g.waitFor((s) => window.game!.stats().steps === s + 1, a.steps);
+    await g.frames(8);
+    const b = await balls(g);
+    expect(b.steps).toBe(a.steps + 1);
+    expect(b.paused).toBe(true);
+    expect(b.positions).not.toEqual(a.positions);
+    // N while running pauses and steps once.
+    await g.press('p');
+    await g.waitFor(() => !window.game!.paused, null);
+    await g.press('n');
+    await g.waitFor(() => window.game!.paused, null);
+    const c = await balls(g);
+    await g.frames(5);
+    expect((await balls(g)).steps).toBe(c.steps);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('R resets to the same seeded scene, keeping the pause state', async () => {
+    const g = await open();
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    await g.press('r');
+    const first = await balls(g);
+    expect(first.steps).toBe(0);
+    expect(first.ids.length).toBe(COUNT);
+    // Play, add a ball, then reset again: same count, same positions, step 0, still paused.
+    await g.press('p');
+    await g.waitFor(() => window.game!.stats().steps > 20, null, 30_000);
+    await g.clickCanvas(0.5, 0.45);
+    await g.waitFor((n) => window.game!.stats().entities === n + 1, COUNT + SEGMENTS);
+    await g.press('p');
+    await g.waitFor(() => window.game!.paused, null);
+    await g.press('r');
+    const second = await balls(g);
+    expect(second.steps).toBe(0);
+    expect((await g.stats()).entities).toBe(COUNT + SEGMENTS);
+    expect(second.positions).toEqual(first.positions);
+    expect(second.paused).toBe(true);
+    await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 8, null);
+    expect(g.errors).toEqual([]);
+  });
+});

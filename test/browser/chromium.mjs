@@ -1,0 +1,145 @@
+// Headless Chromium and the site server for browser tests and scripts (plain JS so that
+// scripts/thumbnails.mjs can import it without a TypeScript step; types in chromium.d.mts).
+import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { createHash } from 'node:crypto';
+
+/** Repository root. */
+export const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+
+/**
+ * Chromium flags: no sandbox (containers), nothing fetched in the background, WebGL through
+ * SwiftShader (software, so it works without a GPU). Headless is set by `launchChromium`.
+ */
+export const CHROMIUM_ARGS = Object.freeze([
+  '--no-sandbox',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
+]);
+
+/**
+ * Path of the Chromium to run: $CHROMIUM_PATH if set, else /usr/bin/chromium if it exists, else the
+ * binary bundled with @sparticuz/chromium (unpacked to /tmp on first use; nothing is downloaded).
+ * @throws Error if $CHROMIUM_PATH is set but does not exist.
+ */
+export async function chromiumPath() {
+  const fromEnv = process.env.CHROMIUM_PATH;
+  if (fromEnv) {
+    if (!existsSync(fromEnv)) throw new Error(`CHROMIUM_PATH is ${fromEnv}, which does not exist`);
+    return fromEnv;
+  }
+  if (existsSync('/usr/bin/chromium')) return '/usr/bin/chromium';
+  const sparticuz = (await import('@sparticuz/chromium')).default;
+  return sparticuz.executablePath();
+}
+
+/** Launches headless Chromium with `CHROMIUM_ARGS`. @returns a playwright-core Browser. */
+export async function launchChromium() {
+  const { chromium } = await import('playwright-core');
+  return chromium.launch({ executablePath: await chromiumPath(), headless: true, args: [...CHROMIUM_ARGS] });
+}
+
+/** A TCP port that was free a moment ago on 127.0.0.1 (the OS picks it). */
+export function freePort() {
+  return new Promise((resolvePort, reject) => {
+    const server = createServer();
+    server.unref();
+    server.on('error', reject);
+    server.listen(0, '127.0.0.1', () => {
+      const address = server.address();
+      const port = typeof address === 'object' && address ? address.port : 0;
+      server.close(() => resolvePort(port));
+    });
+  });
+}
+
+function pidAlive(pid) {
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (error) {
+    return error && error.code === 'EPERM';
+  }
+}
+
+/**
+ * Takes the site lock: scripts/serve.mjs rebuilds into the one shared dist/site directory (and
+ * serves registry.json from it), so two servers of the same checkout must not overlap. Waits until
+ * the holder (another test file or the thumbnail script) releases it; a lock whose process is gone
+ * is taken over.
+ * @param {{ timeoutMs?: number }} [options] how long to wait, ms (default 110 s).
+ * @returns {Promise<() => void>} a function that releases the lock (idempotent; also runs on exit).
+ * @throws Error when the lock is still held after `timeoutMs`, naming the holder's pid.
+ */
+export async function acquireSiteLock({ timeoutMs = 110_000 } = {}) {
+  const key = createHash('sha1').update(repoRoot).digest('hex').slice(0, 12);
+  const dir = join(tmpdir(), `bitphysics-site-${key}.lock`);
+  const owner = join(dir, 'owner');
+  const deadline = Date.now() + timeoutMs;
+  for (;;) {
+    try {
+      mkdirSync(dir);
+      writeFileSync(owner, String(process.pid));
+      break;
+    } catch (error) {
+      if (error.code !== 'EEXIST') throw error;
+      let pid = NaN;
+      try { pid = Number(readFileSync(owner, 'utf8')); } catch { /* being written or removed */ }
+      if (Number.isInteger(pid) && pid > 0 && !pidAlive(pid)) {
+        rmSync(dir, { recursive: true, force: true });
+        continue;
+      }
+      if (Date.now() > deadline) throw new Error(`acquireSiteLock: ${dir} still held by pid ${pid} after ${timeoutMs} ms`);
+      await new Promise((r) => setTimeout(r, 100));
+    }
+  }
+  let released = false;
+  const release = () => {
+    if (released) return;
+    released = true;
+    process.off('exit', release);
+    try {
+      if (readFileSync(owner, 'utf8') === String(process.pid)) rmSync(dir, { recursive: true, force: true });
+    } catch { /* already gone */ }
+  };
+  process.on('exit', release);
+  return release;
+}
+
+/**
+ * Builds the site and serves it (scripts/serve.mjs `startServer`, no watching) on a free port,
+ * holding the site lock until `stop`.
+ * @returns {Promise<{ url: string, stop: () => Promise<void> }>} url ends with '/'.
+ */
+export async function startSite() {
+  const release = await acquireSiteLock();
+  try {
+    const { startServer } = await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href);
+    const port = await freePort();
+    const server = await startServer({ port, watch: false });
+    return {
+      url: server.url,
+      stop: async () => {
+        try { await server.stop(); } finally { release(); }
+      },
+    };
+  } catch (error) {
+    release();
+    throw error;
+  }
+}
+
+/**
+ * The gallery registry (scripts/build.mjs `readRegistry`): one entry per game folder.
+ * @returns {Promise<Array<{ folder: string, title: string, summary: string, category: string, order: number }>>}
+ */
+export async function readRegistry() {
+  const build = await import(pathToFileURL(join(repoRoot, 'scripts', 'build.mjs')).href);
+  return build.readRegistry();
+}

@@ -1,0 +1,253 @@
+/**
+ * Browser test harness: one built site served by scripts/serve.mjs on a free port and one headless
+ * Chromium (SwiftShader WebGL) per test file, and helpers to open pages, collect their errors, wait
+ * for the page contract (`document.body.dataset.ready === 'true'`, `window.game`), read stats, check
+ * the canvas is not blank, and send keys, clicks and drags.
+ *
+ * Browser test files take a cross-process lock for the server (dist/site is shared), so they run one
+ * after another even when vitest runs files in parallel.
+ *
+ * @example
+ * let h: Harness;
+ * beforeAll(async () => { h = await Harness.start(); });
+ * afterAll(async () => { await h?.close(); });
+ * it('plays', async () => {
+ *   const g = await h.openGame('bouncing-balls', { query: { count: 8 } });
+ *   expect((await g.stats()).entities).toBeGreaterThan(0);
+ *   expect(await g.canvasColors()).toBeGreaterThan(8);
+ *   expect(g.errors).toEqual([]);
+ * });
+ */
+import type { Browser, BrowserContext, Page } from 'playwright-core';
+import type { GameStats } from '../../games/shared/contract';
+import { launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
+import { decodePng, distinctColors } from './png';
+
+export { readRegistry, type RegistryEntry };
+
+/** Viewport of pages opened by the harness unless given: small, so software WebGL stays quick. */
+export const DEFAULT_VIEWPORT = Object.freeze({ width: 800, height: 500 });
+
+/** `T` without its falsy members: what `GamePage.waitFor` resolves to. */
+export type Truthy<T> = Exclude<T, null | undefined | false | 0 | ''>;
+
+/** Options of `Harness.open` / `Harness.openGame`. */
+export interface OpenOptions {
+  /** Query string: '?count=8' / 'count=8', or an object ({ count: 8, debug: true }). */
+  query?: string | Record<string, string | number | boolean>;
+  /** Page size, CSS px. Default DEFAULT_VIEWPORT. */
+  viewport?: { width: number; height: number };
+  /** Wait for the ready flag before returning. Default true. */
+  waitReady?: boolean;
+  /** How long to wait for the ready flag, ms. Default 30 000. */
+  readyTimeoutMs?: number;
+}
+
+function toQuery(query: OpenOptions['query']): string {
+  if (query === undefined) return '';
+  if (typeof query === 'string') return query === '' ? '' : query.startsWith('?') ? query : `?${query}`;
+  const params = new URLSearchParams();
+  for (const [k, v] of Object.entries(query)) params.set(k, v === true ? '1' : v === false ? '0' : String(v));
+  const text = params.toString();
+  return text ? `?${text}` : '';
+}
+
+/** One server and one browser, shared by the tests of a file. */
+export class Harness {
+  /** Base URL of the site, ending with '/'. */
+  readonly url: string;
+  /** The browser. */
+  readonly browser: Browser;
+  private readonly stopServer: () => Promise<void>;
+  private readonly pages = new Set<GamePage>();
+
+  private constructor(url: string, browser: Browser, stopServer: () => Promise<void>) {
+    this.url = url;
+    this.browser = browser;
+    this.stopServer = stopServer;
+  }
+
+  /** Builds and serves the site on a free port and launches Chromium. Call in beforeAll. */
+  static async start(): Promise<Harness> {
+    const site = await startSite();
+    try {
+      const browser = await launchChromium();
+      return new Harness(site.url, browser, site.stop);
+    } catch (error) {
+      await site.stop();
+      throw error;
+    }
+  }
+
+  /**
+   * Opens `path` (relative to the site root, '' for the gallery) in a fresh browser context and,
+   * unless `waitReady` is false, waits for the ready flag.
+   * @throws Error (with the page's errors) if the ready flag is not set in time.
+   */
+  async open(path: string, options: OpenOptions = {}): Promise<GamePage> {
+    const context = await this.browser.newContext({ viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1 });
+    const page = await context.newPage();
+    const gp = new GamePage(context, page);
+    this.pages.add(gp);
+    await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query));
+    if (options.waitReady !== false) await gp.waitReady(options.readyTimeoutMs);
+    return gp;
+  }
+
+  /** Opens the game in games/<folder>/ (served at /<folder>/). See `open`. */
+  openGame(folder: string, options: OpenOptions = {}): Promise<GamePage> {
+    return this.open(`${folder}/`, options);
+  }
+
+  /** Closes every page, the browser and the server (and releases the site lock). */
+  async close(): Promise<void> {
+    for (const p of this.pages) await p.close();
+    this.pages.clear();
+    try {
+      await this.browser.close();
+    } finally {
+      await this.stopServer();
+    }
+  }
+}
+
+/** A page opened by the harness, with the errors it produced and helpers for the game contract. */
+export class GamePage {
+  /** The playwright page. */
+  readonly page: Page;
+  /**
+   * Everything that went wrong on the page so far: console errors, uncaught exceptions, and
+   * responses with HTTP status >= 400 or failed requests. Tests usually expect it to stay empty.
+   */
+  readonly errors: string[] = [];
+  private readonly context: BrowserContext;
+
+  constructor(context: BrowserContext, page: Page) {
+    this.context = context;
+    this.page = page;
+    page.on('console', (m) => { if (m.type() === 'error') this.errors.push(`console.error: ${m.text()}`); });
+    page.on('pageerror', (e) => this.errors.push(`page error: ${e.message}`));
+    page.on('response', (r) => { if (r.status() >= 400) this.errors.push(`HTTP ${r.status()}: ${r.url()}`); });
+    page.on('requestfailed', (r) => this.errors.push(`request failed: ${r.url()} (${r.failure()?.errorText ?? 'unknown'})`));
+  }
+
+  /**
+   * Waits until `document.body.dataset.ready === 'true'`.
+   * @throws Error naming the page and listing its errors when `timeoutMs` (default 30 000) passes first.
+   */
+  async waitReady(timeoutMs = 30_000): Promise<void> {
+    try {
+      await this.page.waitForFunction(() => document.body?.dataset.ready === 'true', null, { timeout: timeoutMs, polling: 50 });
+    } catch (error) {
+      throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; page errors: ${JSON.stringify(this.errors)}; ${String(error)}`);
+    }
+  }
+
+  /** `window.game.stats()`. @throws Error if the page has no window.game. */
+  stats(): Promise<GameStats> {
+    return this.page.evaluate(() => {
+      if (!window.game) throw new Error('window.game is missing');
+      return window.game.stats();
+    });
+  }
+
+  /**
+   * Polls `predicate` in the page (every animation frame) until it returns a truthy value and
+   * returns that value. @throws Error (playwright TimeoutError) after `timeoutMs` (default 10 000).
+   */
+  async waitFor<A, R>(predicate: (arg: A) => R, arg: A, timeoutMs = 10_000): Promise<Truthy<R>> {
+    // The predicate is serialised and run in the page; playwright's generic "unboxed" argument type
+    // does not line up with a plain generic, hence the widening.
+    const handle = await this.page.waitForFunction(predicate as (arg: unknown) => R, arg as unknown, { timeout: timeoutMs });
+    return (await handle.jsonValue()) as Truthy<R>;
+  }
+
+  /** Waits for `n` (>= 1) animation frames in the page. */
+  async frames(n = 1): Promise<void> {
+    await this.page.evaluate(async (count) => {
+      for (let i = 0; i < count; i++) await new Promise<number>((r) => requestAnimationFrame(r));
+    }, n);
+  }
+
+  /**
+   * Distinct colours (RGB) drawn on the first canvas matching `selector` (default 'canvas'): 1 for a
+   * blank canvas, hundreds for a drawn scene. Reads the canvas in the page right after the game's
+   * next animation frame (drawImage onto a 2D canvas: fast); if that comes back blank (a canvas not
+   * drawn from requestAnimationFrame, whose buffer was already presented) it falls back to an element
+   * screenshot, decoded in Node, which always shows what is on screen.
+   * @throws Error if there is no such canvas.
+   */
+  async canvasColors(selector = 'canvas'): Promise<number> {
+    const inPage = await this.page.evaluate(async (sel) => {
+      const canvas = document.querySelector(sel);
+      if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
+      await new Promise<number>((r) => requestAnimationFrame(r));
+      const w = canvas.width, h = canvas.height;
+      const copy = new OffscreenCanvas(w, h).getContext('2d');
+      if (!copy || w === 0 || h === 0) return 0;
+      copy.drawImage(canvas, 0, 0);
+      const data = copy.getImageData(0, 0, w, h).data;
+      const seen = new Set<number>();
+      for (let i = 0; i < data.length; i += 4) seen.add((data[i]! << 16) | (data[i + 1]! << 8) | data[i + 2]!);
+      return seen.size;
+    }, selector);
+    if (inPage > 1) return inPage;
+    return this.screenshotColors(selector);
+  }
+
+  /**
+   * Distinct colours in an element screenshot of the first element matching `selector`, taken with
+   * every other element hidden (so HUD text drawn over a blank canvas cannot pass for a scene).
+   */
+  async screenshotColors(selector = 'canvas'): Promise<number> {
+    const target = this.page.locator(selector).first();
+    await target.evaluate((el) => {
+      el.setAttribute('data-harness-shot', '');
+      const style = document.createElement('style');
+      style.id = 'harness-shot-style';
+      style.textContent = '* { visibility: hidden !important; } [data-harness-shot] { visibility: visible !important; }';
+      document.head.append(style);
+    });
+    try {
+      return distinctColors(decodePng(await target.screenshot()));
+    } finally {
+      await target.evaluate((el) => {
+        el.removeAttribute('data-harness-shot');
+        document.getElementById('harness-shot-style')?.remove();
+      });
+    }
+  }
+
+  /** Presses `key` (a playwright key name: 'p', 'N', 'Space'). */
+  async press(key: string): Promise<void> {
+    await this.page.keyboard.press(key);
+  }
+
+  /** The canvas' box in CSS px. @throws Error if there is no visible canvas. */
+  async canvasBox(selector = 'canvas'): Promise<{ x: number; y: number; width: number; height: number }> {
+    const box = await this.page.locator(selector).first().boundingBox();
+    if (!box) throw new Error(`no visible ${selector} on ${this.page.url()}`);
+    return box;
+  }
+
+  /** Clicks the canvas at fractions (fx, fy) of its width and height (0.5, 0.5 is the centre). */
+  async clickCanvas(fx = 0.5, fy = 0.5): Promise<void> {
+    const b = await this.canvasBox();
+    await this.page.mouse.click(b.x + b.width * fx, b.y + b.height * fy);
+  }
+
+  /** Drags on the canvas from fractions `from` to `to` in `steps` mouse moves (>= 1). */
+  async dragCanvas(from: [number, number], to: [number, number], steps = 8): Promise<void> {
+    const b = await this.canvasBox();
+    const m = this.page.mouse;
+    await m.move(b.x + b.width * from[0], b.y + b.height * from[1]);
+    await m.down();
+    await m.move(b.x + b.width * to[0], b.y + b.height * to[1], { steps });
+    await m.up();
+  }
+
+  /** Closes the page and its context. */
+  async close(): Promise<void> {
+    await this.context.close().catch(() => undefined);
+  }
+}

@@ -1,0 +1,271 @@
+/**
+ * @bitphysics/render-pixi: the pixi-free parts (camera, colours) in Node, the renderer itself in
+ * headless Chromium, hosted by the bouncing-balls page (window.game.renderer is a WorldRenderer).
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Camera } from '../../packages/render-pixi/src/camera';
+import { parseColor, seededColor } from '../../packages/render-pixi/src/colors';
+import { numberParam, flagParam, choiceParam } from '../../games/shared/params';
+import { Harness, type GamePage } from './harness';
+
+describe('Camera (metres to pixels)', () => {
+  it('fits a view centred with padding and flips y', () => {
+    const cam = new Camera({ width: 800, height: 600, padding: 10, view: { minX: 0, minY: 0, maxX: 16, maxY: 10 } });
+    // Limited by width: (800 - 20) / 16 = 48.75 px/m; height used (10 m) = 487.5 px < 580.
+    expect(cam.pixelsPerMeter).toBeCloseTo(48.75, 12);
+    expect(cam.toScreenX(0)).toBeCloseTo(10, 9);
+    expect(cam.toScreenX(16)).toBeCloseTo(790, 9);
+    expect(cam.toScreenY(5)).toBeCloseTo(300, 9); // view centre at screen centre
+    expect(cam.toScreenY(10)).toBeLessThan(cam.toScreenY(0)); // y up in the world is up on screen
+    const p = cam.screenToWorld(cam.toScreenX(3.25), cam.toScreenY(7.5));
+    expect(p.x).toBeCloseTo(3.25, 12);
+    expect(p.y).toBeCloseTo(7.5, 12);
+  });
+
+  it('refits on resize and bumps its version', () => {
+    const cam = new Camera({ width: 800, height: 600, padding: 0, view: { minX: -1, minY: -1, maxX: 1, maxY: 1 } });
+    const v = cam.version;
+    cam.resize(300, 900);
+    expect(cam.version).toBeGreaterThan(v);
+    expect(cam.pixelsPerMeter).toBeCloseTo(150, 12);
+    expect(cam.toScreenY(0)).toBeCloseTo(450, 12);
+  });
+
+  it('keeps the screen centre when switching to a fixed scale', () => {
+    const cam = new Camera({ width: 400, height: 400, pixelsPerMeter: 20 });
+    expect(cam.toScreenX(0)).toBeCloseTo(0, 12); // default: world origin at the bottom-left corner
+    expect(cam.toScreenY(0)).toBeCloseTo(400, 12);
+    const cx = cam.toWorldX(200), cy = cam.toWorldY(200);
+    cam.setPixelsPerMeter(80);
+    expect(cam.toWorldX(200)).toBeCloseTo(cx, 12);
+    expect(cam.toWorldY(200)).toBeCloseTo(cy, 12);
+  });
+
+  it('rejects bad input naming the option and the value', () => {
+    expect(() => new Camera({ pixelsPerMeter: 0 })).toThrow(RangeError);
+    expect(() => new Camera({ pixelsPerMeter: 0 })).toThrow(/pixelsPerMeter must be > 0, got 0/);
+    expect(() => new Camera({ width: Number.NaN })).toThrow(/width must be finite, got NaN/);
+    expect(() => new Camera({ view: { minX: 0, minY: 0, maxX: 0, maxY: 1 } })).toThrow(/view must have maxX > minX/);
+    expect(() => new Camera({ zoom: 2 } as never)).toThrow(TypeError);
+    expect(() => new Camera({ padding: '5' } as never)).toThrow(/padding must be a number, got "5"/);
+    expect(() => new Camera().resize(-1, 10)).toThrow(/width must be > 0, got -1/);
+  });
+});
+
+describe('colours and URL parameters', () => {
+  it('parses colours and rejects bad ones', () => {
+    expect(parseColor('t', 'c', '#ff8000')).toBe(0xff8000);
+    expect(parseColor('t', 'c', '#f80')).toBe(0xff8800);
+    expect(parseColor('t', 'c', 0x123456)).toBe(0x123456);
+    expect(() => parseColor('t', 'c', 'red')).toThrow(RangeError);
+    expect(() => parseColor('t', 'c', 0x1000000)).toThrow(/c must be an integer 0xRRGGBB/);
+    expect(() => parseColor('t', 'c', null)).toThrow(TypeError);
+  });
+
+  it('seeds colours deterministically per (seed, id, spawn stamp)', () => {
+    expect(seededColor(1, 5, 1, null)).toBe(seededColor(1, 5, 1, null));
+    const distinct = new Set(Array.from({ length: 50 }, (_, i) => seededColor(1, i + 1, 1, null)));
+    expect(distinct.size).toBeGreaterThan(40);
+    expect(seededColor(1, 5, 2, null)).not.toBe(seededColor(1, 5, 1, null));
+    expect([0x111111, 0x222222]).toContain(seededColor(7, 3, 1, [0x111111, 0x222222]));
+  });
+
+  it('reads URL parameters with clear errors', () => {
+    expect(numberParam('count', { default: 40, min: 1, max: 100, integer: true }, '?count=8')).toBe(8);
+    expect(numberParam('count', { default: 40, min: 1, max: 100 }, '')).toBe(40);
+    expect(() => numberParam('count', { default: 40, min: 1, max: 100, integer: true }, '?count=2.5')).toThrow(/count must be an integer in \[1, 100\], got "2.5"/);
+    expect(() => numberParam('count', { default: 40, min: 1, max: 100 }, '?count=abc')).toThrow(RangeError);
+    expect(flagParam('debug', '?debug')).toBe(true);
+    expect(flagParam('debug', '?debug=0')).toBe(false);
+    expect(() => flagParam('debug', '?debug=maybe')).toThrow(RangeError);
+    expect(choiceParam('mode', ['a', 'b'] as const, 'a', '?mode=b')).toBe('b');
+    expect(() => choiceParam('mode', ['a', 'b'] as const, 'a', '?mode=c')).toThrow(/mode must be one of a, b, got "c"/);
+  });
+});
+
+/** What the renderer tests read from window.game on the bouncing-balls page. */
+interface Host {
+  paused: boolean;
+  world: { steps: number; collision: { boundary: { min: Float64Array; max: Float64Array } }; components: Record<string, Record<string, Float64Array>> };
+  ballIds(): number[];
+  spawn(x: number, y: number, vx?: number, vy?: number): number;
+  remove(eid: number): void;
+  step(): void;
+  reset(): void;
+  renderer: {
+    constructor: new (world: unknown, options?: unknown) => unknown;
+    stats: { balls: number; mode: string; contacts: number; arrows: number; segments: number };
+    mode: string;
+    camera: { width: number; height: number; pixelsPerMeter: number; toScreenX(x: number): number; toScreenY(y: number): number };
+    render(alpha: number): void;
+    drawnPosition(eid: number): { x: number; y: number } | null;
+    setColor(eid: number, color: unknown): void;
+    clearColor(eid: number): void;
+    colorOf(eid: number): number;
+    setTrails(options: unknown): void;
+    setDebug(options: unknown): void;
+    trailsEnabled: boolean;
+  };
+}
+
+describe('WorldRenderer in the browser', () => {
+  let h: Harness;
+  let g: GamePage;
+  beforeAll(async () => {
+    h = await Harness.start();
+    g = await h.openGame('bouncing-balls', { query: { count: 8, trails: 0 } });
+  });
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('rejects bad options and arguments with RangeError/TypeError naming them', async () => {
+    const results = await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      const R = game.renderer.constructor;
+      const attempt = (f: () => unknown): string => {
+        try { f(); return 'no error'; } catch (e) { return `${(e as Error).name}: ${(e as Error).message}`; }
+      };
+      const w = game.world;
+      const id = game.ballIds()[0]!;
+      return [
+        attempt(() => new R(w, { pixelsPerMeter: -1 })),
+        attempt(() => new R(w, { balls: 'quads' })),
+        attempt(() => new R(w, { trails: { length: 1 } })),
+        attempt(() => new R(w, { debug: { velocityScale: 'x' } })),
+        attempt(() => new R(w, { colour: 1 })),
+        attempt(() => new R(w, { palette: [] })),
+        attempt(() => new R(w, { segmentColor: '#12' })),
+        attempt(() => new R({}, {})),
+        attempt(() => game.renderer.render(2)),
+        attempt(() => game.renderer.setColor(999_999, 0xff0000)),
+        attempt(() => game.renderer.setColor(id, 'red')),
+        attempt(() => game.renderer.setTrails({ width: 0 })),
+      ];
+    });
+    expect(results[0]).toMatch(/^RangeError: .*pixelsPerMeter must be > 0, got -1/);
+    expect(results[1]).toMatch(/^RangeError: .*balls must be 'sprites', 'particles' or 'auto', got "quads"/);
+    expect(results[2]).toMatch(/^RangeError: .*trails\.length must be an integer in \[2, 1024\], got 1/);
+    expect(results[3]).toMatch(/^TypeError: .*debug\.velocityScale must be a number, got "x"/);
+    expect(results[4]).toMatch(/^TypeError: .*unknown option "colour"/);
+    expect(results[5]).toMatch(/^RangeError: .*palette must not be empty/);
+    expect(results[6]).toMatch(/^RangeError: .*segmentColor must be a hex colour/);
+    expect(results[7]).toMatch(/^TypeError: .*world must be a physics world/);
+    expect(results[8]).toMatch(/^RangeError: .*alpha must be in \[0, 1\], got 2/);
+    expect(results[9]).toMatch(/^RangeError: .*eid must be a live entity id of the world, got 999999/);
+    expect(results[10]).toMatch(/^RangeError: .*color must be a hex colour/);
+    expect(results[11]).toMatch(/^RangeError: .*trails\.width must be an integer in \[1, 64\], got 0/);
+  });
+
+  it('interpolates between PreviousPosition and Position with alpha, y flipped', async () => {
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      game.paused = true;
+      const e = game.spawn(4, 8, 3, 0);
+      game.step(); // one step: PreviousPosition is the start of it, Position the end
+      const P = game.world.components.Position!, O = game.world.components.PreviousPosition!;
+      const cam = game.renderer.camera;
+      const at = (alpha: number) => { game.renderer.render(alpha); const p = game.renderer.drawnPosition(e)!; return [p.x, p.y]; };
+      return {
+        a0: at(0), a1: at(1), ah: at(0.5),
+        prev: [cam.toScreenX(O.x![e]!), cam.toScreenY(O.y![e]!)],
+        cur: [cam.toScreenX(P.x![e]!), cam.toScreenY(P.y![e]!)],
+        moved: P.x![e]! - O.x![e]!,
+        fell: P.y![e]! - O.y![e]!,
+      };
+    });
+    expect(r.moved).toBeGreaterThan(0);
+    expect(r.fell).toBeLessThan(0);
+    expect(r.a0[0]).toBeCloseTo(r.prev[0]!, 6);
+    expect(r.a0[1]).toBeCloseTo(r.prev[1]!, 6);
+    expect(r.a1[0]).toBeCloseTo(r.cur[0]!, 6);
+    expect(r.a1[1]).toBeCloseTo(r.cur[1]!, 6);
+    expect(r.ah[0]).toBeCloseTo((r.prev[0]! + r.cur[0]!) / 2, 6);
+    expect(r.a1[1]).toBeGreaterThan(r.a0[1]); // falling in the world is moving down the screen
+  });
+
+  it('gives entities display objects as they come and takes them away as they go', async () => {
+    await g.page.evaluate(() => { (window.game as unknown as Host).paused = true; });
+    const n0 = await g.waitFor(() => { const game = window.game as unknown as Host; return game.renderer.stats.balls === game.ballIds().length && game.renderer.stats.balls; }, null);
+    const added = await g.page.evaluate(() => (window.game as unknown as Host).spawn(12, 8));
+    await g.waitFor((n) => (window.game as unknown as Host).renderer.stats.balls === n + 1, n0);
+    expect(await g.page.evaluate((e) => (window.game as unknown as Host).renderer.drawnPosition(e) !== null, added)).toBe(true);
+    await g.page.evaluate((e) => (window.game as unknown as Host).remove(e), added);
+    await g.waitFor((n) => (window.game as unknown as Host).renderer.stats.balls === n, n0);
+    expect(await g.page.evaluate((e) => (window.game as unknown as Host).renderer.drawnPosition(e), added)).toBeNull();
+    expect(g.errors).toEqual([]);
+  });
+
+  it('keeps seeded colours deterministic and lets users set and clear their own', async () => {
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      game.reset();
+      const id = game.ballIds()[1]!;
+      const seeded = game.renderer.colorOf(id);
+      game.renderer.setColor(id, '#ff0000');
+      const user = game.renderer.colorOf(id);
+      game.renderer.clearColor(id);
+      const back = game.renderer.colorOf(id);
+      game.renderer.setColor(id, 0x00ff00);
+      game.reset(); // a new world: user colours are forgotten, seeded ones come back identical
+      return { seeded, user, back, afterReset: game.renderer.colorOf(game.ballIds()[1]!) };
+    });
+    expect(r.user).toBe(0xff0000);
+    expect(r.back).toBe(r.seeded);
+    expect(r.afterReset).toBe(r.seeded);
+  });
+
+  it('draws the debug overlay (contacts, arrows) and trails on demand', async () => {
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      game.renderer.setDebug(true);
+      game.renderer.setTrails({ length: 20 });
+      game.paused = false;
+    });
+    const s = await g.waitFor(() => {
+      const st = (window.game as unknown as Host).renderer.stats;
+      return st.contacts > 0 && st.arrows > 0 ? { ...st } : null;
+    }, null, 30_000);
+    expect(s.segments).toBe(3);
+    expect(await g.page.evaluate(() => (window.game as unknown as Host).renderer.trailsEnabled)).toBe(true);
+    expect(await g.canvasColors()).toBeGreaterThan(16);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      game.renderer.setDebug(false);
+      game.renderer.setTrails(false);
+    });
+    await g.waitFor(() => (window.game as unknown as Host).renderer.stats.contacts === 0, null);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('keeps the boundary in view when the window is resized', async () => {
+    await g.page.setViewportSize({ width: 420, height: 640 });
+    await g.waitFor(() => (window.game as unknown as Host).renderer.camera.width === 420, null);
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      const cam = game.renderer.camera, box = game.world.collision.boundary;
+      return { x0: cam.toScreenX(box.min[0]!), x1: cam.toScreenX(box.max[0]!), yTop: cam.toScreenY(box.max[1]!), yBottom: cam.toScreenY(box.min[1]!), w: cam.width, h: cam.height };
+    });
+    expect(r.h).toBe(640);
+    expect(r.x0).toBeGreaterThanOrEqual(0);
+    expect(r.x1).toBeLessThanOrEqual(r.w);
+    expect(r.yTop).toBeGreaterThanOrEqual(0);
+    expect(r.yBottom).toBeLessThanOrEqual(r.h);
+    expect(r.x1 - r.x0).toBeGreaterThan(r.w * 0.8); // fitted, not just inside
+    await g.page.setViewportSize({ width: 800, height: 500 });
+  });
+
+  it('uses the ParticleContainer path from 1000 balls on (auto) or when asked', async () => {
+    const big = await h.openGame('bouncing-balls', { query: { count: 1200, trails: 0 } });
+    const s = await big.waitFor(() => { const st = (window.game as unknown as Host).renderer.stats; return st.balls === 1200 ? { ...st } : null; }, null, 30_000);
+    expect(s.mode).toBe('particles');
+    expect(await big.canvasColors()).toBeGreaterThan(16);
+    expect(big.errors).toEqual([]);
+    await big.close();
+    const small = await h.openGame('bouncing-balls', { query: { count: 8, mode: 'particles' } });
+    expect(await small.page.evaluate(() => (window.game as unknown as Host).renderer.mode)).toBe('particles');
+    expect(await small.canvasColors()).toBeGreaterThan(16);
+    expect(small.errors).toEqual([]);
+    await small.close();
+  });
+});
