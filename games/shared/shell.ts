@@ -58,7 +58,7 @@ export interface GameShell extends GameHandle {
    * @throws TypeError if a field would replace a built-in one.
    */
   expose<E extends object>(extras: E): GameShell & E;
-  /** Starts the frame loop (done by `createGameShell` unless `start: false` was implied by a wrapper). */
+  /** Starts the frame loop. `createGameShell` does not start it (the renderer is usually made after the shell); `startPixiGame` does. */
   start(): void;
   /** Stops the loop, unbinds the keys and removes the HUD. */
   destroy(): void;

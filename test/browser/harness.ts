@@ -122,6 +122,7 @@ export class GamePage {
   readonly errors: string[] = [];
   private readonly context: BrowserContext;
 
+  /** Wraps `page` (in its own `context`) and starts collecting its errors. Made by `Harness.open`. */
   constructor(context: BrowserContext, page: Page) {
     this.context = context;
     this.page = page;
