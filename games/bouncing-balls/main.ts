@@ -42,6 +42,7 @@ const mode = choiceParam('mode', ['auto', 'sprites', 'particles'] as const, 'aut
 
 let handles: BouncingBallsHandles;
 
+/** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const options = {
     count: params.count, seed: params.seed, gravity: params.gravity, restitution: params.restitution,
@@ -52,6 +53,7 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
+/** Trail settings: one trail per ball up to 400 balls (36 frames long). */
 function trailOptions(count: number) {
   return { length: 36, maxEntities: Math.min(400, Math.max(1, count + 200)) };
 }
@@ -80,18 +82,21 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 
+/** Gives the heavy balls of `world` their user colour (the others keep their seeded colours). */
 function colorHeavy(world: PhysicsWorld): void {
   for (const e of handles.balls) if (isHeavy(world, e)) renderer.setColor(e, HEAVY_COLOR);
 }
 colorHeavy(shell.world);
 shell.onWorldChange((world) => colorHeavy(world));
 
+/** Turns trails on or off (the T key and the panel). */
 function setTrails(on: boolean): void {
   params.trails = on;
   renderer.setTrails(on ? trailOptions(params.count) : false);
   panel.refresh();
 }
 
+/** Turns the debug overlay on or off (the D key and the panel). */
 function setDebug(on: boolean): void {
   params.debug = on;
   renderer.setDebug(on);
@@ -127,11 +132,13 @@ let pointerId = -1;
 let startX = 0, startY = 0, lastX = 0, lastY = 0;
 let dragged = false;
 
+/** The pointer position in CSS px relative to the canvas' top-left corner. */
 function local(event: PointerEvent): [number, number] {
   const rect = canvas.getBoundingClientRect();
   return [event.clientX - rect.left, event.clientY - rect.top];
 }
 
+/** Records a pointer sample (px, px, ms) in the ring used for the throw velocity. */
 function sample(x: number, y: number, t: number): void {
   sampleX[sampleHead] = x; sampleY[sampleHead] = y; sampleT[sampleHead] = t;
   sampleHead = (sampleHead + 1) % SAMPLES;
@@ -156,6 +163,7 @@ canvas.addEventListener('pointermove', (event) => {
   sample(lastX, lastY, event.timeStamp);
 });
 
+/** Pointer released: a click drops a ball where it was pressed, a drag throws one from where it was let go. */
 function release(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
@@ -185,6 +193,7 @@ function release(event: PointerEvent, cancelled: boolean): void {
 canvas.addEventListener('pointerup', (event) => release(event, false));
 canvas.addEventListener('pointercancel', (event) => release(event, true));
 
+/** Draws the pointer preview: the ball to be dropped, or the throw line while dragging. */
 function drawPointer(): void {
   overlay.clear();
   if (pointerId === -1) return;

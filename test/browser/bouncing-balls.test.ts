@@ -162,4 +162,43 @@ describe('bouncing balls', () => {
     await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 8, null);
     expect(g.errors).toEqual([]);
   });
+
+  it('the panel sets gravity, drag and restitution, and rebuilds with a new ball count', async () => {
+    const g = await open();
+    // lil-gui labels each input and select with its controller's name (aria-labelledby).
+    const field = (name: string) => g.page.getByLabel(name, { exact: true });
+    await field('gravity (m/s²)').fill('3.5');
+    await field('gravity (m/s²)').press('Enter');
+    await field('drag k (kg/s | kg/m)').fill('0.4');
+    await field('drag k (kg/s | kg/m)').press('Enter');
+    await field('drag').selectOption('quadratic');
+    await field('restitution').fill('0.25');
+    await field('restitution').press('Enter');
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { world: { gravity: Float64Array; components: Record<string, Record<string, Float64Array>> } };
+      const e = game.ballIds()[0]!;
+      const c = game.world.components;
+      return { gy: game.world.gravity[1], kq: c.QuadraticDrag!.k![e], kl: c.LinearDrag!.k![e], e: c.Material!.restitution![e] };
+    });
+    expect(r.gy).toBeCloseTo(-3.5, 12);
+    expect(r.kq).toBeCloseTo(0.4, 12);
+    expect(r.kl ?? 0).toBe(0);
+    expect(r.e).toBeCloseTo(0.25, 12);
+    await field('balls (rebuilds)').fill('30');
+    await field('balls (rebuilds)').press('Enter');
+    await g.waitFor(() => window.game!.stats().entities === 30 + 3, null);
+    // The rebuilt world keeps the panel's settings.
+    expect(await g.page.evaluate(() => (window.game as unknown as { world: { gravity: Float64Array } }).world.gravity[1])).toBeCloseTo(-3.5, 12);
+    await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 30, null);
+    expect(g.errors).toEqual([]);
+    // Back to the test count for the other tests.
+    await field('balls (rebuilds)').fill('8');
+    await field('balls (rebuilds)').press('Enter');
+    await field('gravity (m/s²)').fill('9.81');
+    await field('gravity (m/s²)').press('Enter');
+    await field('drag').selectOption('none');
+    await field('restitution').fill('0.8');
+    await field('restitution').press('Enter');
+    await g.waitFor(() => window.game!.stats().entities === 8 + 3, null);
+  });
 });
