@@ -120,6 +120,18 @@ describe('entities', () => {
   });
 });
 
+describe('previous position', () => {
+  test('after a step with substeps, PreviousPosition is where bodies were when the step began (renderers interpolate from it)', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0], substeps: 4 });
+    const b = addBody(world, { position: [0, 0], velocity: [1, 0] });
+    step(world);
+    expect(world.components.PreviousPosition.x[b]).toBe(0);
+    expect(world.components.Position.x[b]).toBeCloseTo(1 / 60, 12);
+    step(world);
+    expect(world.components.PreviousPosition.x[b]).toBeCloseTo(1 / 60, 12);
+  });
+});
+
 describe('fixed-step loop', () => {
   test('runs whole steps, keeps the remainder as alpha, clamps the backlog', () => {
     let steps = 0;

@@ -1,5 +1,6 @@
 import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from './world';
+import { setInertia } from './rigid';
 import {
   assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
 } from './validate';
@@ -53,11 +54,18 @@ export interface BodyOptions {
   angularVelocity?: number | ArrayLike<number>;
   /** Initial angle in 2D, rad (counter-clockwise). */
   angle?: number;
+  /** Initial orientation in 3D: a quaternion (x, y, z, w), normalised here. Default identity. */
+  orientation?: ArrayLike<number>;
+  /**
+   * Rotational inertia, overriding the ball's: a number (kg m^2; 2D, or isotropic 3D) or, in 3D, the
+   * principal moments (Ix, Iy, Iz) along the body axes (see `setInertia`). Makes the body turn.
+   */
+  inertia?: number | ArrayLike<number>;
 }
 
 const BODY_OPTIONS = [
   'position', 'velocity', 'mass', 'density', 'radius', 'restitution', 'friction', 'staticFriction', 'static',
-  'kinematic', 'linearDrag', 'quadraticDrag', 'rotates', 'angularVelocity', 'angle',
+  'kinematic', 'linearDrag', 'quadraticDrag', 'rotates', 'angularVelocity', 'angle', 'orientation', 'inertia',
 ] as const;
 
 /**
@@ -93,10 +101,17 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
   if (options.linearDrag !== undefined) assertNonNegative(where, 'linearDrag', options.linearDrag);
   if (options.quadraticDrag !== undefined) assertNonNegative(where, 'quadraticDrag', options.quadraticDrag);
   if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
+  if (options.orientation !== undefined) {
+    if (d !== 3) throw new TypeError(`${where}: orientation is for 3D worlds; use angle in 2D`);
+    assertVector(where, 'orientation', options.orientation, 4);
+    if (!(Math.hypot(options.orientation[0]!, options.orientation[1]!, options.orientation[2]!, options.orientation[3]!) > 0)) {
+      throw new RangeError(`${where}: orientation must not be the zero quaternion`);
+    }
+  }
   const isStatic = options.static === true;
   const isKinematic = options.kinematic === true;
   if (isStatic && isKinematic) throw new RangeError(`${where}: a body cannot be both static and kinematic`);
-  const rotates = options.rotates ?? (options.radius !== undefined && !isStatic && !isKinematic);
+  const rotates = options.rotates ?? ((options.radius !== undefined || options.inertia !== undefined) && !isStatic && !isKinematic);
   if (options.angularVelocity !== undefined) {
     if (d === 2) assertFinite(where, 'angularVelocity', options.angularVelocity);
     else assertVector(where, 'angularVelocity', options.angularVelocity, 3);
@@ -150,6 +165,11 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
     if (options.angle !== undefined) c.Angle.value[eid] = options.angle;
   } else {
     addComponent(world, eid, c.Orientation);
+    const q = options.orientation;
+    if (q) {
+      const n = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
+      c.Orientation.x[eid] = q[0]! / n; c.Orientation.y[eid] = q[1]! / n; c.Orientation.z[eid] = q[2]! / n; c.Orientation.w[eid] = q[3]! / n;
+    }
   }
   if (rotates) {
     addComponent(world, eid, c.AngularVelocity);
@@ -161,6 +181,7 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
       c.Inertia.value[eid] = I;
       c.Inertia.inv[eid] = 1 / I;
     }
+    if (options.inertia !== undefined) setInertia(world, eid, options.inertia);
     const w = options.angularVelocity;
     if (w !== undefined) {
       if (typeof w === 'number') c.AngularVelocity.z[eid] = w;
@@ -436,4 +457,13 @@ export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLik
   c.Velocity.x[eid] = c.Velocity.x[eid]! + impulse[0]! * im;
   c.Velocity.y[eid] = c.Velocity.y[eid]! + impulse[1]! * im;
   if (world.dimensions === 3) c.Velocity.z[eid] = c.Velocity.z[eid]! + impulse[2]! * im;
+}
+
+/**
+ * Sets the world's uniform gravitational acceleration, m/s^2 (`world.dimensions` numbers).
+ * @throws TypeError | RangeError on a vector of the wrong length or with non-finite entries.
+ */
+export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): void {
+  assertVector('setGravity', 'gravity', gravity, world.dimensions);
+  for (let i = 0; i < 3; i++) world.gravity[i] = i < world.dimensions ? gravity[i]! : 0;
 }

@@ -183,6 +183,21 @@ export interface Components {
    * Default 0 (no rotation) until set by `addBody` or `setInertia`.
    */
   Inertia: { value: Float64Array; inv: Float64Array };
+  /**
+   * Principal moments of inertia in the body frame, kg m^2 (x, y, z), and their inverses (invX...,
+   * 1/(kg m^2); 0 locks rotation about that axis). The body frame's axes are the principal axes; the
+   * world-frame tensor is I_w = R diag(x, y, z) R^T with R from `Orientation`. 3D only. A body with
+   * this component turns by Euler's equations I dw/dt = tau - w x I w (its `Inertia` is not used).
+   */
+  InertiaTensor: { x: Float64Array; y: Float64Array; z: Float64Array; invX: Float64Array; invY: Float64Array; invZ: Float64Array };
+  /** Angular damping: torque -k w, with `k` in N m s (>= 0). A torque law. */
+  AngularDamping: { k: Float64Array };
+  /**
+   * Static infinite plane n . x = d with unit normal (nx, ny, nz) pointing out of the solid side (m for
+   * d): balls stay on the side n points to. In 2D it is an infinite line (nz = 0). Collides like a
+   * segment; its Material gives restitution and friction.
+   */
+  Plane: { nx: Float64Array; ny: Float64Array; nz: Float64Array; d: Float64Array };
 }
 
 /** Allocates every store of a world with room for `capacity` entities (ids 1..capacity). */
@@ -224,6 +239,9 @@ export function createComponents(capacity: number): Components {
     AngularVelocity: vec3(n),
     Torque: vec3(n),
     Inertia: { value: f(), inv: f() },
+    InertiaTensor: { x: f(), y: f(), z: f(), invX: f(), invY: f(), invZ: f() },
+    AngularDamping: { k: f() },
+    Plane: { nx: f(), ny: f(), nz: f(), d: f() },
   };
 }
 

@@ -8,9 +8,17 @@ export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS } from './components
 export type { Components, Vec3Store } from './components';
 export {
   createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,
-  setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse,
+  setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse, setGravity,
 } from './bodies';
 export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies';
+export {
+  inertiaOfSolidSphere, inertiaOfSphericalShell, inertiaOfSolidBox, inertiaOfSolidCylinder, inertiaOfDisc, inertiaOfRectangle,
+  setInertia, applyForceAtPoint, applyImpulseAtPoint, spinAngularMomentum, spinKineticEnergy, setAngularDamping, addPlane,
+} from './rigid';
+export type { PlaneOptions } from './rigid';
+export { rotateVector, rotateVectorInverse, rotateFrom, rotateInPlace } from './math/quaternion';
+export { eulerAcceleration } from './integrators/euler-equations';
+export { angularDampingSystem } from './forces/angular-damping';
 export { STAGES, SUBSTEP_STAGES, PIPELINE } from './pipeline/stages';
 export type { StageName, System } from './pipeline/stages';
 export { step, stepMany, evaluateForces, addSystem, removeSystem } from './pipeline/step';
@@ -54,7 +62,9 @@ export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid'
 export { springSystem } from './forces/spring';
 export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving';
 export { thrustSystem, burnFuelSystem } from './forces/thrust';
-export { buildTree, treeField, worldTree, barnesHutGravity } from './forces/barnes-hut';
+export {
+  buildTree, treeField, treeFields, treeFieldsSorted, worldTree, worldTreeFields, barnesHutGravity,
+} from './forces/barnes-hut';
 export type { GravityTree } from './forces/barnes-hut';
 export { NonFiniteStateError } from './errors';
 export { Rng } from './rng';

@@ -211,6 +211,14 @@ function installDefaults(world: PhysicsWorld): void {
     c.Orientation.x[eid] = 0; c.Orientation.y[eid] = 0; c.Orientation.z[eid] = 0; c.Orientation.w[eid] = 1;
   });
   observe(world, onAdd(c.Inertia), (eid: number) => { c.Inertia.value[eid] = 0; c.Inertia.inv[eid] = 0; });
+  observe(world, onAdd(c.InertiaTensor), (eid: number) => {
+    const T = c.InertiaTensor; T.x[eid] = 0; T.y[eid] = 0; T.z[eid] = 0; T.invX[eid] = 0; T.invY[eid] = 0; T.invZ[eid] = 0;
+  });
+  observe(world, onAdd(c.AngularDamping), (eid: number) => {
+    c.AngularDamping.k[eid] = 0;
+    addComponentIfMissing(world, eid, c.Torque);
+  });
+  observe(world, onAdd(c.Plane), (eid: number) => { c.Plane.nx[eid] = 0; c.Plane.ny[eid] = 1; c.Plane.nz[eid] = 0; c.Plane.d[eid] = 0; });
   observe(world, onAdd(c.LinearDrag), (eid: number) => { c.LinearDrag.k[eid] = 0; });
   observe(world, onAdd(c.QuadraticDrag), (eid: number) => { c.QuadraticDrag.k[eid] = 0; });
   observe(world, onAdd(c.GravityScale), (eid: number) => { c.GravityScale.value[eid] = 1; });

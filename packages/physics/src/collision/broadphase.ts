@@ -1,4 +1,4 @@
-import { query } from 'bitecs';
+import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { CollisionState } from './state';
 
@@ -68,7 +68,7 @@ function ensureGrid(cs: CollisionState, bodies: number, tableSize: number): void
  * Collide stage, part 1: finds candidate pairs of bodies that may touch during this step.
  *
  * Every body with `Position` and `Ball` takes part, placed where it was at the start of the step
- * (`PreviousPosition`) and grown by a speculative margin |v| h + d_spec / 2, so that pairs that will
+ * (`PreviousPosition`) and grown by a speculative margin |v| h + min(d_spec / 2, r / 4), so that pairs that will
  * meet during the step are found before they overlap (speculative contacts, Catto, "Continuous
  * Collision", GDC 2013). Bodies go into a uniform spatial-hash grid whose cell edge is twice the
  * largest reach of ordinary bodies; each body is tested against its own cell and half of its
@@ -106,7 +106,10 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     invInertia[e] = 0;
     type[e] = BodyType.Dynamic;
     const sx = vx[e]!, sy = vy[e]!, sz = vz[e]!;
-    const m = Math.sqrt(sx * sx + sy * sy + sz * sz) * h + halfSpec;
+    // The speculative pad shrinks for small balls (a quarter radius) so a heap of marbles does not
+    // turn every neighbour within 5 cm into a contact.
+    const r = radius[e]!;
+    const m = Math.sqrt(sx * sx + sy * sy + sz * sz) * h + (halfSpec < 0.25 * r ? halfSpec : 0.25 * r);
     margin[e] = m;
     reachSum += radius[e]! + m;
   }
@@ -118,7 +121,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   ents = query(world, [c.Ball, c.Position, c.Static]);
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Static; margin[e] = halfSpec;
+    invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Static; margin[e] = Math.min(halfSpec, 0.25 * radius[e]!);
     // Static bodies are never integrated: where they are is where they were.
     ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
   }

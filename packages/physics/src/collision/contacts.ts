@@ -15,9 +15,10 @@
  * - `Boundary` (1): ball B against a face of the boundary box; `feature` is the face
  *   (0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z);
  * - `Segment` (2): ball B against the static segment entity `feature`;
- * - `StaticBall` (3): ball B against the static ball entity `feature`.
+ * - `StaticBall` (3): ball B against the static ball entity `feature`;
+ * - `Plane` (4): ball B against the static plane entity `feature`.
  */
-export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3 } as const);
+export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3, Plane: 4 } as const);
 
 /** The contact rows of one step. */
 export interface ContactBuffer {

@@ -1,4 +1,4 @@
-import { query } from 'bitecs';
+import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts';
 import { BodyType, PairKind } from './broadphase';
@@ -68,12 +68,15 @@ export function sweepSegment(
 /**
  * Collide stage, part 2: turns candidate pairs into contacts, one point a pair, with normal and
  * separation measured where the bodies were at the start of the step. A contact is kept if the gap
- * could close this step: separation < max(0, -v_n) h + d_spec, with v_n the normal relative velocity
- * after integration (speculative contact, Catto GDC 2013; the same test Box2D v3 applies).
+ * could close this step: separation < max(0, -v_n) h + d, with v_n the normal relative velocity
+ * after integration and d the speculative distance, at most a quarter of the pair's radii (half the
+ * ball's against static geometry) so small balls do not collect distant neighbours (speculative
+ * contact, Catto GDC 2013; the same test Box2D v3 applies).
  *
  * Shapes: ball-ball (circle-circle in 2D, sphere-sphere in 3D: centre distance minus radii);
  * ball-segment (distance to the closest point of the segment, so end points act as round corners;
- * Ericson, Real-Time Collision Detection, 5.1.2); ball-boundary (distance to each face of the box).
+ * Ericson, Real-Time Collision Detection, 5.1.2); ball-boundary (distance to each face of the box);
+ * ball-plane (signed distance n . x - d minus the radius).
  *
  * The normal of a contact that will close during the step is taken where the bodies first touch
  * (a swept test along their relative velocity), not where they were at the start: an oblique
@@ -87,6 +90,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
   buf.count = 0;
   const h = world.h;
   const spec = cs.settings.speculativeDistance;
+  const spec0 = spec;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   const radius = c.Ball.radius;
@@ -116,7 +120,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       // Gap along that normal where the balls were at the start of the step.
       const sep = rx * dx + ry * dy + rz * dz - R;
       const vn = wx * dx + wy * dy + wz * dz;
-      if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
+      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.25 * R ? spec : 0.25 * R)) continue;
       if (ta === BodyType.Static) {
         pushContact(buf, ContactKind.StaticBall, 0, b, a, dx, dy, dz, sep, 0, rb);
       } else if (tb === BodyType.Static) {
@@ -149,7 +153,8 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       // Gap along that normal from the same feature point, where the ball was at the start of the step.
       const sep = (ox[b]! - qx) * dx + (oy[b]! - qy) * dy + (oz[b]! - qz) * dz - R;
       const vn = wx * dx + wy * dy + wz * dz;
-      if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
+      const rb = radius[b]!;
+      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.5 * rb ? spec : 0.5 * rb)) continue;
       pushContact(buf, ContactKind.Segment, 0, b, s, dx, dy, dz, sep, 0, radius[b]!);
     }
   }
@@ -164,6 +169,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const b = balls[i]!;
       if (type[b] === BodyType.Static) continue;
       const r = radius[b]!;
+      const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
       const x = ox[b]!, y = oy[b]!;
       const sx = vx[b]!, sy = vy[b]!;
       let sep = x - r - minX;
@@ -180,6 +186,23 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
         if (sep < (sz < 0 ? -sz * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 4, 0, 0, 1, sep, 0, r);
         sep = maxZ - z - r;
         if (sep < (sz > 0 ? sz * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 5, 0, 0, -1, sep, 0, r);
+      }
+    }
+  }
+  const planes = query(world, [c.Plane]);
+  if (planes.length > 0) {
+    const balls = query(world, [c.Position, c.Ball]);
+    const Pl = c.Plane;
+    for (let j = 0; j < planes.length; j++) {
+      const p = planes[j]!;
+      const nx = Pl.nx[p]!, ny = Pl.ny[p]!, nz = Pl.nz[p]!, d = Pl.d[p]!;
+      for (let i = 0; i < balls.length; i++) {
+        const b = balls[i]!;
+        if (type[b] === BodyType.Static) continue;
+        const r = radius[b]!;
+        const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
+        const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;
+        if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) pushContact(buf, ContactKind.Plane, 0, b, p, nx, ny, nz, sep, 0, r);
       }
     }
   }
@@ -212,6 +235,10 @@ export function currentSeparation(world: PhysicsWorld, buf: ContactBuffer, i: nu
       case 4: return pz[b]! - r - box.min[2]!;
       default: return box.max[2]! - pz[b]! - r;
     }
+  }
+  if (kind === ContactKind.Plane) {
+    const Pl = c.Plane;
+    return px[b]! * Pl.nx[f]! + py[b]! * Pl.ny[f]! + pz[b]! * Pl.nz[f]! - Pl.d[f]! - radius[b]!;
   }
   const S = c.Segment;
   const ax = S.ax[f]!, ay = S.ay[f]!, az = S.az[f]!;

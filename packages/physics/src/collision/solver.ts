@@ -2,6 +2,7 @@ import type { PhysicsWorld } from '../world';
 import { ContactKind, findWarmStart, storeWarmStart, type ContactBuffer } from './contacts';
 import { BodyType } from './broadphase';
 import { reportNonFinite } from '../errors';
+import { rotateInPlace } from '../math/quaternion';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -190,7 +191,7 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     if (!is2D) { pz[e] = bz[e]! + dz[e]!; check += pz[e]!; }
     if (invInertia[e]! > 0) {
       if (is2D) angle[e] = angle[e]! + rz[e]!;
-      else rotateQuaternion(q.x, q.y, q.z, q.w, e, rx[e]!, ry[e]!, rz[e]!);
+      else rotateInPlace(q.x, q.y, q.z, q.w, e, rx[e]!, ry[e]!, rz[e]!);
     }
   }
   if (check - check !== 0) reportNonFinite(world, list.subarray(0, count), 'collide');
@@ -556,22 +557,4 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
     }
   }
   vx[0] = 0; vy[0] = 0; vz[0] = 0;
-}
-
-/** Rotates quaternion e by the rotation vector (ax, ay, az): angle |a| about a, world frame. */
-function rotateQuaternion(
-  qx: Float64Array, qy: Float64Array, qz: Float64Array, qw: Float64Array, e: number, ax: number, ay: number, az: number,
-): void {
-  const angle = Math.sqrt(ax * ax + ay * ay + az * az);
-  if (angle === 0) return;
-  const s = Math.sin(0.5 * angle) / angle;
-  const dx = ax * s, dy = ay * s, dz = az * s, dw = Math.cos(0.5 * angle);
-  const x = qx[e]!, y = qy[e]!, z = qz[e]!, w = qw[e]!;
-  let nx = dw * x + dx * w + dy * z - dz * y;
-  let ny = dw * y - dx * z + dy * w + dz * x;
-  let nz = dw * z + dx * y - dy * x + dz * w;
-  let nw = dw * w - dx * x - dy * y - dz * z;
-  const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-  nx *= inv; ny *= inv; nz *= inv; nw *= inv;
-  qx[e] = nx; qy[e] = ny; qz[e] = nz; qw[e] = nw;
 }

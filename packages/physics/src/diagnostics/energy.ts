@@ -1,7 +1,10 @@
-import { Not, query } from 'bitecs';
+import { Not, query } from '../query';
 import type { PhysicsWorld } from '../world';
 import { currentSeparation } from '../collision/narrowphase';
 import { fieldsAt } from '../forces/electromagnetism';
+import { spinAngularMomentum, spinKineticEnergy } from '../rigid';
+
+const spin = new Float64Array(3);
 
 /**
  * Diagnostics, computed on demand (never inside the step, so they cost nothing unless asked for).
@@ -26,11 +29,15 @@ export function kineticEnergy(world: PhysicsWorld): number {
     const e = ents[i]!;
     sum += m[e]! * (vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!);
   }
-  ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.Static), Not(c.Kinematic)]);
+  ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z, I = c.Inertia.value;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     sum += I[e]! * (wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]!);
+  }
+  if (world.dimensions === 3) {
+    ents = query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic)]);
+    for (let i = 0; i < ents.length; i++) sum += 2 * spinKineticEnergy(world, ents[i]!);
   }
   return 0.5 * sum;
 }
@@ -218,11 +225,18 @@ export function angularMomentum(world: PhysicsWorld, about: ArrayLike<number> = 
     ly += k * (rz * vx[e]! - rx * vz[e]!);
     lz += k * (rx * vy[e]! - ry * vx[e]!);
   }
-  ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.Static), Not(c.Kinematic)]);
+  ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
   const I = c.Inertia.value, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     lx += I[e]! * wx[e]!; ly += I[e]! * wy[e]!; lz += I[e]! * wz[e]!;
+  }
+  if (world.dimensions === 3) {
+    ents = query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic)]);
+    for (let i = 0; i < ents.length; i++) {
+      spinAngularMomentum(world, ents[i]!, spin);
+      lx += spin[0]!; ly += spin[1]!; lz += spin[2]!;
+    }
   }
   out[0] = world.dimensions === 2 ? 0 : lx; out[1] = world.dimensions === 2 ? 0 : ly; out[2] = lz;
   return out;

@@ -1,250 +1,873 @@
 import type { PhysicsWorld } from '../world';
 
 /**
- * Barnes-Hut tree for mutual gravity (Barnes and Hut, Nature 324, 1986): a quadtree in 2D, an octree
- * in 3D, built over the bodies each time forces are evaluated. A far cell acts as one body at its
- * centre of mass. Opening test (Barnes 1994, the "b_max" form): a cell of edge s whose centre of mass
- * lies delta from its geometric centre is opened when the body is nearer than s / theta + delta, so
- * a body is never approximated by a cell it sits in. Leaves hold up to LEAF_SIZE bodies, summed
- * directly with the same Plummer softening as the direct sum.
+ * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
+ * force evaluation (so the force stays a pure function of the positions, as RK4 needs), with Plummer
+ * softening and an opening angle theta. Cells interact with cells (a dual-tree walk) through
+ * second-order Taylor expansions, so a step costs O(N) after an O(N log N) build, and the forces
+ * conserve total momentum to rounding.
  *
- * Cost: O(N log N) per evaluation. Unlike the direct sum, forces are not exactly pairwise opposite,
- * so total momentum drifts slightly; the drift is reported by the bench and bounded in the tests.
- * Everything lives in typed arrays grown by doubling and reused between evaluations.
+ * Sources: Barnes and Hut, Nature 324 (1986) 446 (the tree, the opening angle); Dehnen, ApJ 536
+ * (2000) L39 and J. Comput. Phys. 179 (2002) 27 (falcON: the mutual cell-cell interactions, the
+ * walk, momentum conservation); Greengard and Rokhlin, J. Comput. Phys. 73 (1987) 325 (local
+ * expansions); Salmon and Warren, J. Comput. Phys. 111 (1994) 136 (b_max); Aarseth, Gravitational
+ * N-Body Simulations (2003) ch. 2 (Plummer softening).
+ *
+ * Build. The bodies are copied into tree order: every cell is split about its geometric centre into
+ * its 4 (8) quadrants by a stable counting sort that moves the body data between two buffers, so each
+ * cell and each leaf holds a contiguous range of bodies and nearby bodies sit near each other in
+ * memory. Nodes are stored in depth-first preorder: the first child of node k is k + 1 and `skip[k]`
+ * is the node after k's subtree (k + 1 for a leaf). Empty quadrants get no node. A cell is a leaf when
+ * it holds at most LEAF_SIZE bodies or is smaller than MIN_CELL_FRACTION of the root (coincident
+ * bodies then share one leaf and are summed directly).
+ *
+ * Moments. Each cell keeps its mass M, centre of mass c, second moment S = sum m (x - c)(x - c)^T
+ * (2D: xx, xy, yy; 3D: 6 components; added up from the children by the parallel-axis theorem) and
+ * r = b_max, a bound on the distance from c to any of its bodies: the smaller of the distance from c
+ * to the farthest corner of the cell's tight bounding box and max over children (|c_child - c| + r_child).
+ *
+ * Kernel. A body of mass m at y pulls x with G m grad_x g, g = (|y - x|^2 + eps^2)^(-1/2), the Plummer
+ * potential; the direct sum and every near interaction here use exactly F = G m m d / (d^2 + eps^2)^(3/2).
+ * Writing D_n = d^n g / (du / 2)^n, u = |R|^2 (D1 = -g^3, D2 = 3 g^5, D3 = -15 g^7), the derivative
+ * tensors of g at R are T1 = R D1, T2 = R R D2 + I D1, T3 = R R R D3 + (I R)_sym D2, for any eps, so the
+ * expansions below are Taylor expansions of the softened potential itself: no special case at small r.
+ *
+ * Cell-cell interaction (multipole to local, both ways at once). For cells A, B with R = c_B - c_A,
+ * the field of B's bodies at c_A + delta, to total order 3 in the potential, is
+ *   a(delta) = G [ -(M_B T1 + T3:S_B / 2) + M_B T2 . delta - M_B (T3 : delta delta) / 2 ],
+ * and symmetrically on B (R -> -R flips the odd tensors), with T3:S = R (D3 R.S.R + D2 tr S) + 2 D2 S.R.
+ * The error is O(((r_A + r_B) / |R|)^3) of the monopole field, like a quadrupole Barnes-Hut. Each
+ * cell accumulates these field polynomials about its centre of mass; a downward pass shifts them to
+ * the children (exactly: they are polynomials) and evaluates them at the bodies. Because the
+ * expansions are about the centres of mass and both directions use the same tensors, the forces on A
+ * and on B sum to exactly zero, as do the direct pair forces: momentum is conserved to rounding.
+ *
+ * Walk (Dehnen 2002). Starting from the root's self-interaction: a cell's self-interaction becomes
+ * those of its children and the interactions of each pair of children; a pair of cells interacts by
+ * the expansion when |R| > (r_A + r_B) / min(theta, 1) (opening angle theta: the cells' sizes seen
+ * from each other), directly (every body pair, once for both) when both are leaves or the pair holds
+ * few bodies, and otherwise the larger cell (by r) is split. The two cells of a pair never overlap
+ * (they are disjoint subtrees), so a body is never approximated by a cell containing it, and every
+ * pair of bodies is counted exactly once, either directly or inside exactly one cell-cell expansion.
+ * With theta -> 0 every pair is summed directly and the result is the direct sum, to rounding.
+ *
+ * All arrays live on the tree (one per world), grown by doubling and reused: no allocation per body
+ * or per step once they have grown.
  */
 
-/** Bodies a leaf holds before it splits. */
-const LEAF_SIZE = 8;
-/** Cells smaller than this fraction of the root never split (coincident bodies share a leaf). */
+/** Most bodies a leaf holds before it splits. */
+const TUNE = (globalThis as { __bh?: Record<string, number> }).__bh ?? {};
+const LEAF_SIZE = TUNE.leaf ?? 8;
+/** Pairs of cells holding at most this many body pairs (n_A n_B) are summed directly: cheaper and exact. */
+const DIRECT_PAIRS = TUNE.pairs ?? 16;
+/** Cells with at most this many bodies sum their self-interaction directly. */
+const DIRECT_SELF = TUNE.self ?? 8;
+/** Cells smaller than this fraction of the root never split (so at most ~31 levels). */
 const MIN_CELL_FRACTION = 1e-9;
+/** Depth bound: MIN_CELL_FRACTION > 2^-31, with margin. */
+const MAX_DEPTH = 64;
 
-/** The tree's arrays; one per world, reused. */
+/** Float64 slots per node, 2D: [cx, cy, M, Sxx, Sxy, Syy, r, Txxx, Txxy, Txyy, Tyyy, -] (T: third moment). */
+const NF2 = 12;
+/** 3D: [cx, cy, cz, M, Sxx, Syy, Szz, Sxy, Sxz, Syz, r, -]. */
+const NF3 = 12;
+/** Local field polynomial per node, 2D: [a0x, a0y, Jxx, Jxy, Jyy, Kxxx, Kxxy, Kxyy, Kyyy, Hxxxx, Hxxxy, Hxxyy, Hxyyy, Hyyyy]. */
+const NL2 = 14;
+/** 3D: [a0 x y z, J xx yy zz xy xz yz, K xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz]. */
+const NL3 = 19;
+
+/** The tree's arrays; one per world, reused between evaluations. */
 export interface GravityTree {
   dims: 2 | 3;
+  /** Bodies in the last build. */
+  n: number;
+  /** Nodes in the last build (depth-first preorder, root 0). */
   nodeCount: number;
-  capacity: number;
-  /** Cell centre and half edge, m. */
-  cx: Float64Array; cy: Float64Array; cz: Float64Array; half: Float64Array;
-  /** Mass (kg) and centre of mass (m) of the bodies below. */
-  mass: Float64Array; mx: Float64Array; my: Float64Array; mz: Float64Array;
-  /** Index of the first of the 4 (8) children, or -1 for a leaf. */
-  child: Int32Array;
-  /** Leaf: first body (index into the body arrays) of its list, -1 if none; and the count. */
-  first: Int32Array; count: Int32Array;
-  /** Per body (index i of the input order): next body in its leaf's list; position and mass copies. */
-  next: Int32Array; bx: Float64Array; by: Float64Array; bz: Float64Array; bm: Float64Array;
-  /** Traversal stack. */
+  /** Bodies in tree order (slot s): position, m, and mass, kg. Length >= n. */
+  x: Float64Array; y: Float64Array; z: Float64Array; m: Float64Array;
+  /** perm[s]: input index of the body in slot s; slot[i]: slot of input body i. */
+  perm: Int32Array; slot: Int32Array;
+  /** Second buffer of the partition (ping-pong) and the quadrant of each slot. */
+  x2: Float64Array; y2: Float64Array; z2: Float64Array; m2: Float64Array; perm2: Int32Array; code: Uint8Array;
+  /** Per node, stride 8 (2D) or 12 (3D): centre of mass (m), mass (kg), second moment S (kg m^2), r = b_max (m). */
+  node: Float64Array;
+  /** Per node, stride 6: tight bounding box min x, y, z, max x, y, z, m. */
+  box: Float64Array;
+  /** Per node: first slot, end slot (exclusive), and the node after its subtree (k + 1 for a leaf). */
+  start: Int32Array; end: Int32Array; skip: Int32Array;
+  /** Per node, stride 9 (2D) or 19 (3D): field polynomial about the centre of mass (without G). */
+  local: Float64Array;
+  /** Pair stack of the walk. */
   stack: Int32Array;
+  /** Per-depth quadrant counts and offsets of the build. */
+  counts: Int32Array;
+  /** Field at each slot, m/s^2 (tree order), from the last treeFieldsSorted call. */
+  ax: Float64Array; ay: Float64Array; az: Float64Array;
+  /** Smallest half edge that still splits, m. */
+  minHalf: number;
+  /** Interactions in the last evaluation: cell-cell expansions and direct body pairs. */
+  stats: { cellPairs: number; bodyPairs: number; visits: number };
 }
 
 function createTree(dims: 2 | 3): GravityTree {
-  const n = 1024;
+  const nodes = 1024;
   return {
-    dims, nodeCount: 0, capacity: n,
-    cx: new Float64Array(n), cy: new Float64Array(n), cz: new Float64Array(n), half: new Float64Array(n),
-    mass: new Float64Array(n), mx: new Float64Array(n), my: new Float64Array(n), mz: new Float64Array(n),
-    child: new Int32Array(n), first: new Int32Array(n), count: new Int32Array(n),
-    next: new Int32Array(0), bx: new Float64Array(0), by: new Float64Array(0), bz: new Float64Array(0), bm: new Float64Array(0),
+    dims, n: 0, nodeCount: 0,
+    x: new Float64Array(0), y: new Float64Array(0), z: new Float64Array(0), m: new Float64Array(0),
+    perm: new Int32Array(0), slot: new Int32Array(0),
+    x2: new Float64Array(0), y2: new Float64Array(0), z2: new Float64Array(0), m2: new Float64Array(0),
+    perm2: new Int32Array(0), code: new Uint8Array(0),
+    node: new Float64Array(nodes * (dims === 3 ? NF3 : NF2)), box: new Float64Array(nodes * 6),
+    start: new Int32Array(nodes), end: new Int32Array(nodes), skip: new Int32Array(nodes),
+    local: new Float64Array(nodes * (dims === 3 ? NL3 : NL2)),
     stack: new Int32Array(4096),
+    counts: new Int32Array(MAX_DEPTH * 16),
+    ax: new Float64Array(0), ay: new Float64Array(0), az: new Float64Array(0),
+    minHalf: 0,
+    stats: { cellPairs: 0, bodyPairs: 0, visits: 0 },
   };
 }
 
-function growNodes(t: GravityTree, needed: number): void {
-  if (needed <= t.capacity) return;
-  let n = t.capacity;
-  while (n < needed) n *= 2;
-  const f = (a: Float64Array) => { const b = new Float64Array(n); b.set(a); return b; };
-  const i = (a: Int32Array) => { const b = new Int32Array(n); b.set(a); return b; };
-  t.cx = f(t.cx); t.cy = f(t.cy); t.cz = f(t.cz); t.half = f(t.half);
-  t.mass = f(t.mass); t.mx = f(t.mx); t.my = f(t.my); t.mz = f(t.mz);
-  t.child = i(t.child); t.first = i(t.first); t.count = i(t.count);
-  t.capacity = n;
-}
-
-function newNode(t: GravityTree, cx: number, cy: number, cz: number, half: number): number {
-  const k = t.nodeCount++;
-  if (k >= t.capacity) growNodes(t, k + 1);
-  t.cx[k] = cx; t.cy[k] = cy; t.cz[k] = cz; t.half[k] = half;
-  t.child[k] = -1; t.first[k] = -1; t.count[k] = 0;
-  return k;
-}
-
-/** The tree of a world (created on first use). */
+/** The tree of a world (created on first use, kept on the world). */
 export function worldTree(world: PhysicsWorld): GravityTree {
   const holder = world as { gravityTree?: GravityTree };
   if (!holder.gravityTree || holder.gravityTree.dims !== world.dimensions) holder.gravityTree = createTree(world.dimensions);
   return holder.gravityTree;
 }
 
+function growBodies(t: GravityTree, n: number): void {
+  if (t.x.length >= n) return;
+  const size = Math.max(n, 2 * t.x.length, 64);
+  t.x = new Float64Array(size); t.y = new Float64Array(size); t.z = new Float64Array(size); t.m = new Float64Array(size);
+  t.x2 = new Float64Array(size); t.y2 = new Float64Array(size); t.z2 = new Float64Array(size); t.m2 = new Float64Array(size);
+  t.perm = new Int32Array(size); t.perm2 = new Int32Array(size); t.slot = new Int32Array(size); t.code = new Uint8Array(size);
+  t.ax = new Float64Array(size); t.ay = new Float64Array(size); t.az = new Float64Array(size);
+}
+
+function growNodes(t: GravityTree, needed: number): void {
+  const cap = t.start.length;
+  if (needed <= cap) return;
+  let n = cap;
+  while (n < needed) n *= 2;
+  const nf = t.dims === 3 ? NF3 : NF2;
+  const node = new Float64Array(n * nf); node.set(t.node); t.node = node;
+  const box = new Float64Array(n * 6); box.set(t.box); t.box = box;
+  const s = new Int32Array(n); s.set(t.start); t.start = s;
+  const e = new Int32Array(n); e.set(t.end); t.end = e;
+  const k = new Int32Array(n); k.set(t.skip); t.skip = k;
+  t.local = new Float64Array(n * (t.dims === 3 ? NL3 : NL2));
+}
+
 /**
- * Builds the tree over n bodies with positions (x, y, z) and masses m (arrays indexed 0..n-1).
- * Bodies of zero mass are kept (they still get forces) but weigh nothing.
+ * Builds the tree over n bodies with positions (x, y, z), m, and masses m, kg (>= 0), arrays indexed
+ * 0..n-1 (z is ignored in 2D). Bodies of zero mass are kept (they still get a field) but weigh
+ * nothing. Non-finite positions do not hang the build (they end in one leaf) but give NaN fields.
  */
 export function buildTree(
   t: GravityTree, n: number,
   x: ArrayLike<number>, y: ArrayLike<number>, z: ArrayLike<number>, m: ArrayLike<number>,
 ): void {
   const is3D = t.dims === 3;
-  if (t.next.length < n) {
-    const size = Math.max(n, 2 * t.next.length);
-    t.next = new Int32Array(size); t.bx = new Float64Array(size); t.by = new Float64Array(size);
-    t.bz = new Float64Array(size); t.bm = new Float64Array(size);
-  }
+  growBodies(t, n);
+  const bx = t.x, by = t.y, bz = t.z, bm = t.m, perm = t.perm;
   let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
-  const bx = t.bx, by = t.by, bz = t.bz, bm = t.bm;
   for (let i = 0; i < n; i++) {
     const px = x[i]!, py = y[i]!, pz = is3D ? z[i]! : 0;
-    bx[i] = px; by[i] = py; bz[i] = pz; bm[i] = m[i]!;
+    bx[i] = px; by[i] = py; bz[i] = pz; bm[i] = m[i]!; perm[i] = i;
     if (px < minX) minX = px; if (px > maxX) maxX = px;
     if (py < minY) minY = py; if (py > maxY) maxY = py;
     if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz;
   }
-  const half = 0.5 * Math.max(maxX - minX, maxY - minY, is3D ? maxZ - minZ : 0) * (1 + 1e-9) + 1e-12;
+  t.n = n;
   t.nodeCount = 0;
-  growNodes(t, Math.max(16, (2 * n) / LEAF_SIZE + 64));
-  newNode(t, 0.5 * (minX + maxX), 0.5 * (minY + maxY), is3D ? 0.5 * (minZ + maxZ) : 0, half);
-  const minHalf = half * MIN_CELL_FRACTION;
-  for (let i = 0; i < n; i++) insert(t, 0, i, minHalf);
-  computeMoments(t);
+  if (n === 0) return;
+  const half = 0.5 * Math.max(maxX - minX, maxY - minY, is3D ? maxZ - minZ : 0) * (1 + 1e-9) + 1e-300;
+  t.minHalf = half * MIN_CELL_FRACTION;
+  growNodes(t, Math.max(64, Math.ceil((3 * n) / LEAF_SIZE) + 64));
+  buildNode(t, 0, n, 0.5 * (minX + maxX), 0.5 * (minY + maxY), is3D ? 0.5 * (minZ + maxZ) : 0, half, true, 0);
+  const slot = t.slot;
+  for (let s = 0; s < n; s++) slot[perm[s]!] = s;
 }
 
-function childIndex(t: GravityTree, node: number, i: number): number {
-  let q = 0;
-  if (t.bx[i]! >= t.cx[node]!) q |= 1;
-  if (t.by[i]! >= t.cy[node]!) q |= 2;
-  if (t.dims === 3 && t.bz[i]! >= t.cz[node]!) q |= 4;
-  return q;
-}
-
-function insert(t: GravityTree, start: number, i: number, minHalf: number): void {
-  let node = start;
-  for (;;) {
-    const c = t.child[node]!;
-    if (c >= 0) { node = c + childIndex(t, node, i); continue; }
-    if (t.count[node]! < LEAF_SIZE || t.half[node]! < minHalf) {
-      t.next[i] = t.first[node]!;
-      t.first[node] = i;
-      t.count[node] = t.count[node]! + 1;
-      return;
+/**
+ * Builds node k = nodeCount over slots [lo, hi), whose data is in the first buffer (inA) or the
+ * second. On return the data of [lo, hi) is in the first buffer, in tree order, and the subtree's
+ * moments are set.
+ */
+function buildNode(
+  t: GravityTree, lo: number, hi: number, cx: number, cy: number, cz: number, half: number, inA: boolean, depth: number,
+): void {
+  const k = t.nodeCount++;
+  if (k >= t.start.length) growNodes(t, k + 1);
+  t.start[k] = lo; t.end[k] = hi;
+  const is3D = t.dims === 3;
+  if (hi - lo <= LEAF_SIZE || !(half > t.minHalf) || depth >= MAX_DEPTH - 1) {
+    if (!inA) {
+      const x = t.x, y = t.y, z = t.z, m = t.m, p = t.perm, x2 = t.x2, y2 = t.y2, z2 = t.z2, m2 = t.m2, p2 = t.perm2;
+      for (let s = lo; s < hi; s++) { x[s] = x2[s]!; y[s] = y2[s]!; z[s] = z2[s]!; m[s] = m2[s]!; p[s] = p2[s]!; }
     }
-    // Split: make the children, then push the leaf's bodies down.
-    const h = 0.5 * t.half[node]!;
-    const cx = t.cx[node]!, cy = t.cy[node]!, cz = t.cz[node]!;
-    const kids = t.dims === 3 ? 8 : 4;
-    const base = t.nodeCount;
-    growNodes(t, base + kids);
-    for (let q = 0; q < kids; q++) {
-      newNode(t, cx + (q & 1 ? h : -h), cy + (q & 2 ? h : -h), t.dims === 3 ? cz + (q & 4 ? h : -h) : 0, h);
-    }
-    let j = t.first[node]!;
-    t.child[node] = base; t.first[node] = -1; t.count[node] = 0;
-    while (j >= 0) {
-      const nextJ = t.next[j]!;
-      insert(t, base + childIndex(t, node, j), j, minHalf);
-      j = nextJ;
-    }
-    node = base + childIndex(t, node, i);
+    t.skip[k] = k + 1;
+    if (is3D) leafMoments3(t, k, lo, hi); else leafMoments2(t, k, lo, hi);
+    return;
   }
+  // Stable counting sort of [lo, hi) by quadrant into the other buffer.
+  const sx = inA ? t.x : t.x2, sy = inA ? t.y : t.y2, sz = inA ? t.z : t.z2, sm = inA ? t.m : t.m2, sp = inA ? t.perm : t.perm2;
+  const dx = inA ? t.x2 : t.x, dy = inA ? t.y2 : t.y, dz = inA ? t.z2 : t.z, dm = inA ? t.m2 : t.m, dp = inA ? t.perm2 : t.perm;
+  const code = t.code, counts = t.counts, base = depth * 16;
+  for (let q = 0; q < 8; q++) counts[base + q] = 0;
+  if (is3D) {
+    for (let s = lo; s < hi; s++) {
+      const q = (sx[s]! >= cx ? 1 : 0) | (sy[s]! >= cy ? 2 : 0) | (sz[s]! >= cz ? 4 : 0);
+      code[s] = q; counts[base + q]!++;
+    }
+  } else {
+    for (let s = lo; s < hi; s++) {
+      const q = (sx[s]! >= cx ? 1 : 0) | (sy[s]! >= cy ? 2 : 0);
+      code[s] = q; counts[base + q]!++;
+    }
+  }
+  const kids = is3D ? 8 : 4;
+  const ob = base + 8;
+  let acc = lo;
+  for (let q = 0; q < kids; q++) { counts[ob + q] = acc; acc += counts[base + q]!; }
+  if (is3D) {
+    for (let s = lo; s < hi; s++) {
+      const d = counts[ob + code[s]!]!++;
+      dx[d] = sx[s]!; dy[d] = sy[s]!; dz[d] = sz[s]!; dm[d] = sm[s]!; dp[d] = sp[s]!;
+    }
+  } else {
+    for (let s = lo; s < hi; s++) {
+      const d = counts[ob + code[s]!]!++;
+      dx[d] = sx[s]!; dy[d] = sy[s]!; dm[d] = sm[s]!; dp[d] = sp[s]!;
+    }
+  }
+  const h = 0.5 * half;
+  let pos = lo;
+  for (let q = 0; q < kids; q++) {
+    const c = counts[base + q]!;
+    if (c === 0) continue;
+    buildNode(t, pos, pos + c, cx + (q & 1 ? h : -h), cy + (q & 2 ? h : -h), is3D ? cz + (q & 4 ? h : -h) : 0, h, !inA, depth + 1);
+    pos += c;
+  }
+  t.skip[k] = t.nodeCount;
+  if (is3D) cellMoments3(t, k); else cellMoments2(t, k);
 }
 
-/** Mass and centre of mass of every cell; children are always created after their parent. */
-function computeMoments(t: GravityTree): void {
-  const kids = t.dims === 3 ? 8 : 4;
-  for (let k = t.nodeCount - 1; k >= 0; k--) {
-    let M = 0, X = 0, Y = 0, Z = 0;
-    const c = t.child[k]!;
-    if (c < 0) {
-      for (let j = t.first[k]!; j >= 0; j = t.next[j]!) {
-        const w = t.bm[j]!;
-        M += w; X += w * t.bx[j]!; Y += w * t.by[j]!; Z += w * t.bz[j]!;
-      }
-    } else {
-      for (let q = 0; q < kids; q++) {
-        const w = t.mass[c + q]!;
-        M += w; X += w * t.mx[c + q]!; Y += w * t.my[c + q]!; Z += w * t.mz[c + q]!;
-      }
-    }
-    t.mass[k] = M;
-    if (M > 0) { t.mx[k] = X / M; t.my[k] = Y / M; t.mz[k] = Z / M; }
-    else { t.mx[k] = t.cx[k]!; t.my[k] = t.cy[k]!; t.mz[k] = t.cz[k]!; }
+function leafMoments2(t: GravityTree, k: number, lo: number, hi: number): void {
+  const x = t.x, y = t.y, m = t.m;
+  let M = 0, X = 0, Y = 0, minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (let s = lo; s < hi; s++) {
+    const w = m[s]!, px = x[s]!, py = y[s]!;
+    M += w; X += w * px; Y += w * py;
+    if (px < minX) minX = px; if (px > maxX) maxX = px;
+    if (py < minY) minY = py; if (py > maxY) maxY = py;
+  }
+  let cx: number, cy: number;
+  if (M > 0) { cx = X / M; cy = Y / M; } else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); }
+  let sxx = 0, sxy = 0, syy = 0, txxx = 0, txxy = 0, txyy = 0, tyyy = 0;
+  for (let s = lo; s < hi; s++) {
+    const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy;
+    const wxx = w * dx * dx, wyy = w * dy * dy, wxy = w * dx * dy;
+    sxx += wxx; sxy += wxy; syy += wyy;
+    txxx += wxx * dx; txxy += wxx * dy; txyy += wyy * dx; tyyy += wyy * dy;
+  }
+  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy);
+  const o = k * NF2, F = t.node;
+  F[o] = cx; F[o + 1] = cy; F[o + 2] = M; F[o + 3] = sxx; F[o + 4] = sxy; F[o + 5] = syy;
+  F[o + 6] = Math.sqrt(ex * ex + ey * ey);
+  F[o + 7] = txxx; F[o + 8] = txxy; F[o + 9] = txyy; F[o + 10] = tyyy; F[o + 11] = 0;
+  const b = k * 6, B = t.box;
+  B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
+}
+
+function cellMoments2(t: GravityTree, k: number): void {
+  const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
+  let M = 0, X = 0, Y = 0, minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (let c = k + 1; c < end; c = skip[c]!) {
+    const o = c * NF2, w = F[o + 2]!, b = c * 6;
+    M += w; X += w * F[o]!; Y += w * F[o + 1]!;
+    if (B[b]! < minX) minX = B[b]!; if (B[b + 1]! < minY) minY = B[b + 1]!;
+    if (B[b + 3]! > maxX) maxX = B[b + 3]!; if (B[b + 4]! > maxY) maxY = B[b + 4]!;
+  }
+  let cx: number, cy: number;
+  if (M > 0) { cx = X / M; cy = Y / M; } else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); }
+  // Parallel-axis theorem, d = c_child - c: S += S_c + M_c d d; T += T_c + 3 sym(d S_c) + M_c d d d.
+  let sxx = 0, sxy = 0, syy = 0, txxx = 0, txxy = 0, txyy = 0, tyyy = 0, reach = 0;
+  for (let c = k + 1; c < end; c = skip[c]!) {
+    const o = c * NF2, w = F[o + 2]!, dx = F[o]! - cx, dy = F[o + 1]! - cy;
+    const cxx = F[o + 3]!, cxy = F[o + 4]!, cyy = F[o + 5]!;
+    const wxx = w * dx * dx, wxy = w * dx * dy, wyy = w * dy * dy;
+    sxx += cxx + wxx; sxy += cxy + wxy; syy += cyy + wyy;
+    txxx += F[o + 7]! + 3 * dx * cxx + wxx * dx;
+    txxy += F[o + 8]! + 2 * dx * cxy + dy * cxx + wxx * dy;
+    txyy += F[o + 9]! + 2 * dy * cxy + dx * cyy + wyy * dx;
+    tyyy += F[o + 10]! + 3 * dy * cyy + wyy * dy;
+    const r = Math.sqrt(dx * dx + dy * dy) + F[o + 6]!;
+    if (r > reach) reach = r;
+  }
+  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy);
+  const o = k * NF2;
+  F[o] = cx; F[o + 1] = cy; F[o + 2] = M; F[o + 3] = sxx; F[o + 4] = sxy; F[o + 5] = syy;
+  F[o + 6] = Math.min(Math.sqrt(ex * ex + ey * ey), reach);
+  F[o + 7] = txxx; F[o + 8] = txxy; F[o + 9] = txyy; F[o + 10] = tyyy; F[o + 11] = 0;
+  const b = k * 6;
+  B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
+}
+
+function leafMoments3(t: GravityTree, k: number, lo: number, hi: number): void {
+  const x = t.x, y = t.y, z = t.z, m = t.m;
+  let M = 0, X = 0, Y = 0, Z = 0;
+  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
+  for (let s = lo; s < hi; s++) {
+    const w = m[s]!, px = x[s]!, py = y[s]!, pz = z[s]!;
+    M += w; X += w * px; Y += w * py; Z += w * pz;
+    if (px < minX) minX = px; if (px > maxX) maxX = px;
+    if (py < minY) minY = py; if (py > maxY) maxY = py;
+    if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz;
+  }
+  let cx: number, cy: number, cz: number;
+  if (M > 0) { cx = X / M; cy = Y / M; cz = Z / M; }
+  else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); cz = 0.5 * (minZ + maxZ); }
+  let sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
+  for (let s = lo; s < hi; s++) {
+    const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy, dz = z[s]! - cz;
+    sxx += w * dx * dx; syy += w * dy * dy; szz += w * dz * dz;
+    sxy += w * dx * dy; sxz += w * dx * dz; syz += w * dy * dz;
+  }
+  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy), ez = Math.max(cz - minZ, maxZ - cz);
+  const o = k * NF3, F = t.node;
+  F[o] = cx; F[o + 1] = cy; F[o + 2] = cz; F[o + 3] = M;
+  F[o + 4] = sxx; F[o + 5] = syy; F[o + 6] = szz; F[o + 7] = sxy; F[o + 8] = sxz; F[o + 9] = syz;
+  F[o + 10] = Math.sqrt(ex * ex + ey * ey + ez * ez); F[o + 11] = 0;
+  const b = k * 6, B = t.box;
+  B[b] = minX; B[b + 1] = minY; B[b + 2] = minZ; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = maxZ;
+}
+
+function cellMoments3(t: GravityTree, k: number): void {
+  const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
+  let M = 0, X = 0, Y = 0, Z = 0;
+  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
+  for (let c = k + 1; c < end; c = skip[c]!) {
+    const o = c * NF3, w = F[o + 3]!, b = c * 6;
+    M += w; X += w * F[o]!; Y += w * F[o + 1]!; Z += w * F[o + 2]!;
+    if (B[b]! < minX) minX = B[b]!; if (B[b + 1]! < minY) minY = B[b + 1]!; if (B[b + 2]! < minZ) minZ = B[b + 2]!;
+    if (B[b + 3]! > maxX) maxX = B[b + 3]!; if (B[b + 4]! > maxY) maxY = B[b + 4]!; if (B[b + 5]! > maxZ) maxZ = B[b + 5]!;
+  }
+  let cx: number, cy: number, cz: number;
+  if (M > 0) { cx = X / M; cy = Y / M; cz = Z / M; }
+  else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); cz = 0.5 * (minZ + maxZ); }
+  let sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0, reach = 0;
+  for (let c = k + 1; c < end; c = skip[c]!) {
+    const o = c * NF3, w = F[o + 3]!, dx = F[o]! - cx, dy = F[o + 1]! - cy, dz = F[o + 2]! - cz;
+    sxx += F[o + 4]! + w * dx * dx; syy += F[o + 5]! + w * dy * dy; szz += F[o + 6]! + w * dz * dz;
+    sxy += F[o + 7]! + w * dx * dy; sxz += F[o + 8]! + w * dx * dz; syz += F[o + 9]! + w * dy * dz;
+    const r = Math.sqrt(dx * dx + dy * dy + dz * dz) + F[o + 10]!;
+    if (r > reach) reach = r;
+  }
+  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy), ez = Math.max(cz - minZ, maxZ - cz);
+  const o = k * NF3;
+  F[o] = cx; F[o + 1] = cy; F[o + 2] = cz; F[o + 3] = M;
+  F[o + 4] = sxx; F[o + 5] = syy; F[o + 6] = szz; F[o + 7] = sxy; F[o + 8] = sxz; F[o + 9] = syz;
+  F[o + 10] = Math.min(Math.sqrt(ex * ex + ey * ey + ez * ez), reach); F[o + 11] = 0;
+  const b = k * 6;
+  B[b] = minX; B[b + 1] = minY; B[b + 2] = minZ; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = maxZ;
+}
+
+/** 1 / min(theta, 1)^2: cells interact by expansion when |R|^2 > (r_A + r_B)^2 times this. */
+function openFactor(theta: number): number {
+  return theta < 1 ? 1 / (theta * theta) : 1;
+}
+
+/**
+ * Field (m/s^2) at every body of the built tree, with constant G (m^3 kg^-1 s^-2), Plummer softening
+ * eps2 = eps^2 (m^2, >= 0) and opening angle theta (> 0). Written into t.ax, t.ay, t.az in tree order
+ * (slot s holds input body t.perm[s]); see treeFields for input order. Interaction counts go to t.stats.
+ */
+export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number): void {
+  const n = t.n;
+  t.ax.fill(0, 0, n); t.ay.fill(0, 0, n); t.az.fill(0, 0, n);
+  t.stats.cellPairs = 0; t.stats.bodyPairs = 0;
+  if (n === 0) return;
+  const f = openFactor(theta);
+  if (t.dims === 3) {
+    t.local.fill(0, 0, t.nodeCount * NL3);
+    walk3(t, eps2, f);
+    down3(t, G);
+  } else {
+    t.local.fill(0, 0, t.nodeCount * NL2);
+    walk2(t, eps2, f);
+    down2(t, G);
   }
 }
 
 /**
- * Gravitational field (acceleration, m/s^2) at body i of the built tree: sum of G m_j d / (d^2 + eps^2)^(3/2)
- * over the accepted cells and the leaf bodies met, excluding i itself. Written into out[0..2].
+ * Field (m/s^2) at every body of the built tree, in input order: body i gets (ax[i], ay[i], az[i]).
+ * Same method and arguments as treeFieldsSorted.
  */
-export function treeField(t: GravityTree, i: number, G: number, eps2: number, theta: number, out: Float64Array): void {
-  const x = t.bx[i]!, y = t.by[i]!, z = t.bz[i]!;
-  const kids = t.dims === 3 ? 8 : 4;
-  const invTheta = 1 / theta;
-  let ax = 0, ay = 0, az = 0;
-  let stack = t.stack;
+export function treeFields(t: GravityTree, G: number, eps2: number, theta: number, ax: Float64Array, ay: Float64Array, az: Float64Array): void {
+  treeFieldsSorted(t, G, eps2, theta);
+  const perm = t.perm, tx = t.ax, ty = t.ay, tz = t.az;
+  for (let s = 0; s < t.n; s++) { const i = perm[s]!; ax[i] = tx[s]!; ay[i] = ty[s]!; az[i] = tz[s]!; }
+}
+
+function growStack(t: GravityTree, needed: number): Int32Array {
+  const a = new Int32Array(Math.max(needed, 2 * t.stack.length)); a.set(t.stack); t.stack = a;
+  return a;
+}
+
+/** Direct sum over the pairs of slots [lo, hi) (each pair once, both bodies), without G. */
+function directSelf2(t: GravityTree, lo: number, hi: number, eps2: number): void {
+  const X = t.x, Y = t.y, Mb = t.m, AX = t.ax, AY = t.ay;
+  for (let i = lo; i < hi - 1; i++) {
+    const xi = X[i]!, yi = Y[i]!, mi = Mb[i]!;
+    let sx = 0, sy = 0;
+    for (let j = i + 1; j < hi; j++) {
+      const dx = X[j]! - xi, dy = Y[j]! - yi;
+      const r2 = dx * dx + dy * dy + eps2;
+      if (r2 > 0) {
+        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, mj = Mb[j]!;
+        sx += mj * wx; sy += mj * wy;
+        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy;
+      }
+    }
+    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy;
+  }
+}
+
+/** Direct sum between slots [lo, hi) and [lo2, hi2) (disjoint), both ways, without G. */
+function directPair2(t: GravityTree, lo: number, hi: number, lo2: number, hi2: number, eps2: number): void {
+  const X = t.x, Y = t.y, Mb = t.m, AX = t.ax, AY = t.ay;
+  for (let i = lo; i < hi; i++) {
+    const xi = X[i]!, yi = Y[i]!, mi = Mb[i]!;
+    let sx = 0, sy = 0;
+    for (let j = lo2; j < hi2; j++) {
+      const dx = X[j]! - xi, dy = Y[j]! - yi;
+      const r2 = dx * dx + dy * dy + eps2;
+      if (r2 > 0) {
+        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, mj = Mb[j]!;
+        sx += mj * wx; sy += mj * wy;
+        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy;
+      }
+    }
+    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy;
+  }
+}
+
+/** The dual-tree walk (2D): direct sums into t.ax/t.ay, expansions into t.local (both without G). */
+function walk2(t: GravityTree, eps2: number, f: number): void {
+  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
+  let st = t.stack;
   let sp = 0;
-  stack[sp++] = 0;
+  let cellPairs = 0, bodyPairs = 0, visits = 0;
+  st[sp++] = 0; st[sp++] = 0;
   while (sp > 0) {
-    const k = stack[--sp]!;
-    const M = t.mass[k]!;
-    if (M === 0) continue;
-    const c = t.child[k]!;
-    if (c < 0) {
-      for (let j = t.first[k]!; j >= 0; j = t.next[j]!) {
-        if (j === i) continue;
-        const dx = t.bx[j]! - x, dy = t.by[j]! - y, dz = t.bz[j]! - z;
-        const r2 = dx * dx + dy * dy + dz * dz + eps2;
-        if (r2 === 0) continue;
-        const f = t.bm[j]! / (r2 * Math.sqrt(r2));
-        ax += f * dx; ay += f * dy; az += f * dz;
+    const b = st[--sp]!, a = st[--sp]!;
+    visits++;
+    if (sp + 80 > st.length) st = growStack(t, sp + 80);
+    const lo = start[a]!, hi = end[a]!;
+    if (a === b) {
+      const sa = skip[a]!;
+      if (sa === a + 1 || hi - lo <= DIRECT_SELF) {
+        directSelf2(t, lo, hi, eps2);
+        bodyPairs += ((hi - lo) * (hi - lo - 1)) >> 1;
+        continue;
+      }
+      for (let c = a + 1; c < sa; c = skip[c]!) {
+        st[sp++] = c; st[sp++] = c;
+        for (let d = skip[c]!; d < sa; d = skip[d]!) { st[sp++] = c; st[sp++] = d; }
       }
       continue;
     }
-    const dx = t.mx[k]! - x, dy = t.my[k]! - y, dz = t.mz[k]! - z;
-    const d2 = dx * dx + dy * dy + dz * dz;
-    const ox = t.mx[k]! - t.cx[k]!, oy = t.my[k]! - t.cy[k]!, oz = t.mz[k]! - t.cz[k]!;
-    const open = 2 * t.half[k]! * invTheta + Math.sqrt(ox * ox + oy * oy + oz * oz);
-    if (d2 < open * open) {
-      if (sp + kids > stack.length) { const s2 = new Int32Array(stack.length * 2); s2.set(stack); t.stack = stack = s2; }
-      for (let q = 0; q < kids; q++) stack[sp++] = c + q;
+    const lo2 = start[b]!, hi2 = end[b]!;
+    const na = hi - lo, nb = hi2 - lo2;
+    if (na * nb <= DIRECT_PAIRS) {
+      directPair2(t, lo, hi, lo2, hi2, eps2);
+      bodyPairs += na * nb;
       continue;
     }
-    const r2 = d2 + eps2;
-    const f = M / (r2 * Math.sqrt(r2));
-    ax += f * dx; ay += f * dy; az += f * dz;
+    const oa = a * NF2, ob = b * NF2;
+    const X = F[ob]! - F[oa]!, Y = F[ob + 1]! - F[oa + 1]!;
+    const u = X * X + Y * Y;
+    const ra = F[oa + 6]!, rb = F[ob + 6]!, rs = ra + rb;
+    if (u > rs * rs * f) {
+      // Mutual cell-cell expansion to order 4 (see the header).
+      const g2 = 1 / (u + eps2), g = Math.sqrt(g2);
+      const D1 = -g * g2, D2 = -3 * D1 * g2, D3 = -5 * D2 * g2, D4 = -7 * D3 * g2;
+      const x2 = X * X, y2 = Y * Y, xy = X * Y;
+      const t1x = X * D1, t1y = Y * D1;
+      const t2xx = x2 * D2 + D1, t2xy = xy * D2, t2yy = y2 * D2 + D1;
+      const t3xxx = X * (x2 * D3 + 3 * D2), t3xxy = Y * (x2 * D3 + D2), t3xyy = X * (y2 * D3 + D2), t3yyy = Y * (y2 * D3 + 3 * D2);
+      const t4xxxx = x2 * (x2 * D4 + 6 * D3) + 3 * D2, t4xxxy = xy * (x2 * D4 + 3 * D3);
+      const t4xxyy = x2 * y2 * D4 + (x2 + y2) * D3 + D2, t4xyyy = xy * (y2 * D4 + 3 * D3), t4yyyy = y2 * (y2 * D4 + 6 * D3) + 3 * D2;
+      // Per cell: q = T3:S / 2, P = T4:S / 2 (symmetric), O = T4:T / 6 (see the header for the closed forms).
+      let sxx = F[oa + 3]!, sxy = F[oa + 4]!, syy = F[oa + 5]!;
+      let srx = sxx * X + sxy * Y, sry = sxy * X + syy * Y, rsr = X * srx + Y * sry, tr = sxx + syy;
+      let c0 = D3 * rsr + D2 * tr, c1 = D4 * rsr + D3 * tr;
+      const qax = 0.5 * X * c0 + D2 * srx, qay = 0.5 * Y * c0 + D2 * sry;
+      const pAxx = 0.5 * (x2 * c1 + c0) + 2 * D3 * X * srx + D2 * sxx;
+      const pAxy = 0.5 * xy * c1 + D3 * (srx * Y + X * sry) + D2 * sxy;
+      const pAyy = 0.5 * (y2 * c1 + c0) + 2 * D3 * Y * sry + D2 * syy;
+      let txxx = F[oa + 7]!, txxy = F[oa + 8]!, txyy = F[oa + 9]!, tyyy = F[oa + 10]!;
+      let s3x = txxx * x2 + 2 * txxy * xy + txyy * y2, s3y = txxy * x2 + 2 * txyy * xy + tyyy * y2;
+      let vx = txxx + txyy, vy = txxy + tyyy;
+      let c3 = D4 * (X * s3x + Y * s3y) + 3 * D3 * (vx * X + vy * Y);
+      const oAx = (X * c3 + 3 * D3 * s3x + 3 * D2 * vx) / 6, oAy = (Y * c3 + 3 * D3 * s3y + 3 * D2 * vy) / 6;
+      sxx = F[ob + 3]!; sxy = F[ob + 4]!; syy = F[ob + 5]!;
+      srx = sxx * X + sxy * Y; sry = sxy * X + syy * Y; rsr = X * srx + Y * sry; tr = sxx + syy;
+      c0 = D3 * rsr + D2 * tr; c1 = D4 * rsr + D3 * tr;
+      const qbx = 0.5 * X * c0 + D2 * srx, qby = 0.5 * Y * c0 + D2 * sry;
+      const pBxx = 0.5 * (x2 * c1 + c0) + 2 * D3 * X * srx + D2 * sxx;
+      const pBxy = 0.5 * xy * c1 + D3 * (srx * Y + X * sry) + D2 * sxy;
+      const pByy = 0.5 * (y2 * c1 + c0) + 2 * D3 * Y * sry + D2 * syy;
+      txxx = F[ob + 7]!; txxy = F[ob + 8]!; txyy = F[ob + 9]!; tyyy = F[ob + 10]!;
+      s3x = txxx * x2 + 2 * txxy * xy + txyy * y2; s3y = txxy * x2 + 2 * txyy * xy + tyyy * y2;
+      vx = txxx + txyy; vy = txxy + tyyy;
+      c3 = D4 * (X * s3x + Y * s3y) + 3 * D3 * (vx * X + vy * Y);
+      const oBx = (X * c3 + 3 * D3 * s3x + 3 * D2 * vx) / 6, oBy = (Y * c3 + 3 * D3 * s3y + 3 * D2 * vy) / 6;
+      const Ma = F[oa + 2]!, Mb = F[ob + 2]!;
+      let l = a * NL2;
+      L[l] = L[l]! - (Mb * t1x + qbx + oBx); L[l + 1] = L[l + 1]! - (Mb * t1y + qby + oBy);
+      L[l + 2] = L[l + 2]! + Mb * t2xx + pBxx; L[l + 3] = L[l + 3]! + Mb * t2xy + pBxy; L[l + 4] = L[l + 4]! + Mb * t2yy + pByy;
+      L[l + 5] = L[l + 5]! - Mb * t3xxx; L[l + 6] = L[l + 6]! - Mb * t3xxy; L[l + 7] = L[l + 7]! - Mb * t3xyy; L[l + 8] = L[l + 8]! - Mb * t3yyy;
+      L[l + 9] = L[l + 9]! + Mb * t4xxxx; L[l + 10] = L[l + 10]! + Mb * t4xxxy; L[l + 11] = L[l + 11]! + Mb * t4xxyy;
+      L[l + 12] = L[l + 12]! + Mb * t4xyyy; L[l + 13] = L[l + 13]! + Mb * t4yyyy;
+      l = b * NL2;
+      L[l] = L[l]! + (Ma * t1x + qax - oAx); L[l + 1] = L[l + 1]! + (Ma * t1y + qay - oAy);
+      L[l + 2] = L[l + 2]! + Ma * t2xx + pAxx; L[l + 3] = L[l + 3]! + Ma * t2xy + pAxy; L[l + 4] = L[l + 4]! + Ma * t2yy + pAyy;
+      L[l + 5] = L[l + 5]! + Ma * t3xxx; L[l + 6] = L[l + 6]! + Ma * t3xxy; L[l + 7] = L[l + 7]! + Ma * t3xyy; L[l + 8] = L[l + 8]! + Ma * t3yyy;
+      L[l + 9] = L[l + 9]! + Ma * t4xxxx; L[l + 10] = L[l + 10]! + Ma * t4xxxy; L[l + 11] = L[l + 11]! + Ma * t4xxyy;
+      L[l + 12] = L[l + 12]! + Ma * t4xyyy; L[l + 13] = L[l + 13]! + Ma * t4yyyy;
+      cellPairs++;
+      continue;
+    }
+    const leafA = skip[a] === a + 1, leafB = skip[b] === b + 1;
+    if (leafA && leafB) {
+      directPair2(t, lo, hi, lo2, hi2, eps2);
+      bodyPairs += na * nb;
+      continue;
+    }
+    if (!leafA && (leafB || ra >= rb)) {
+      const sa = skip[a]!;
+      for (let c = a + 1; c < sa; c = skip[c]!) { st[sp++] = c; st[sp++] = b; }
+    } else {
+      const sb = skip[b]!;
+      for (let c = b + 1; c < sb; c = skip[c]!) { st[sp++] = a; st[sp++] = c; }
+    }
+  }
+  t.stats.cellPairs = cellPairs; t.stats.bodyPairs = bodyPairs; t.stats.visits = visits;
+}
+
+/**
+ * Downward pass (2D): shift each cell's field polynomial a(d) = a0 + J d + K d d / 2 + H d d d / 6 to its
+ * children (exactly, by Horner's rule) and evaluate it at the leaves' bodies, times G.
+ */
+function down2(t: GravityTree, G: number): void {
+  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
+  const X = t.x, Y = t.y, AX = t.ax, AY = t.ay;
+  const nodeCount = t.nodeCount;
+  const third = 1 / 3;
+  for (let k = 0; k < nodeCount; k++) {
+    const o = k * NF2, l = k * NL2, sk = skip[k]!;
+    const cx = F[o]!, cy = F[o + 1]!;
+    const a0x = L[l]!, a0y = L[l + 1]!, jxx = L[l + 2]!, jxy = L[l + 3]!, jyy = L[l + 4]!;
+    const kxxx = L[l + 5]!, kxxy = L[l + 6]!, kxyy = L[l + 7]!, kyyy = L[l + 8]!;
+    const h0 = L[l + 9]!, h1 = L[l + 10]!, h2 = L[l + 11]!, h3 = L[l + 12]!, h4 = L[l + 13]!;
+    if (sk === k + 1) {
+      for (let s = start[k]!, e = end[k]!; s < e; s++) {
+        const dx = X[s]! - cx, dy = Y[s]! - cy;
+        // K1 = K + H d / 3, J1 = J + K1 d / 2, a = a0 + J1 d.
+        const k0 = kxxx + third * (h0 * dx + h1 * dy), k1 = kxxy + third * (h1 * dx + h2 * dy);
+        const k2 = kxyy + third * (h2 * dx + h3 * dy), k3 = kyyy + third * (h3 * dx + h4 * dy);
+        const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
+        AX[s] = G * (AX[s]! + a0x + j0 * dx + j1 * dy);
+        AY[s] = G * (AY[s]! + a0y + j1 * dx + j2 * dy);
+      }
+      continue;
+    }
+    for (let c = k + 1; c < sk; c = skip[c]!) {
+      const oc = c * NF2, lc = c * NL2;
+      const dx = F[oc]! - cx, dy = F[oc + 1]! - cy;
+      // Hd, then K' = K + Hd, J' = J + (K + Hd / 2) d, a0' = a0 + (J + (K + Hd / 3) d / 2) d.
+      const hd0 = h0 * dx + h1 * dy, hd1 = h1 * dx + h2 * dy, hd2 = h2 * dx + h3 * dy, hd3 = h3 * dx + h4 * dy;
+      let k0 = kxxx + third * hd0, k1 = kxxy + third * hd1, k2 = kxyy + third * hd2, k3 = kyyy + third * hd3;
+      const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
+      L[lc] = L[lc]! + a0x + j0 * dx + j1 * dy;
+      L[lc + 1] = L[lc + 1]! + a0y + j1 * dx + j2 * dy;
+      k0 = kxxx + 0.5 * hd0; k1 = kxxy + 0.5 * hd1; k2 = kxyy + 0.5 * hd2; k3 = kyyy + 0.5 * hd3;
+      L[lc + 2] = L[lc + 2]! + jxx + k0 * dx + k1 * dy;
+      L[lc + 3] = L[lc + 3]! + jxy + k1 * dx + k2 * dy;
+      L[lc + 4] = L[lc + 4]! + jyy + k2 * dx + k3 * dy;
+      L[lc + 5] = L[lc + 5]! + kxxx + hd0; L[lc + 6] = L[lc + 6]! + kxxy + hd1;
+      L[lc + 7] = L[lc + 7]! + kxyy + hd2; L[lc + 8] = L[lc + 8]! + kyyy + hd3;
+      L[lc + 9] = L[lc + 9]! + h0; L[lc + 10] = L[lc + 10]! + h1; L[lc + 11] = L[lc + 11]! + h2;
+      L[lc + 12] = L[lc + 12]! + h3; L[lc + 13] = L[lc + 13]! + h4;
+    }
+  }
+}
+
+function directSelf3(t: GravityTree, lo: number, hi: number, eps2: number): void {
+  const X = t.x, Y = t.y, Z = t.z, Mb = t.m, AX = t.ax, AY = t.ay, AZ = t.az;
+  for (let i = lo; i < hi - 1; i++) {
+    const xi = X[i]!, yi = Y[i]!, zi = Z[i]!, mi = Mb[i]!;
+    let sx = 0, sy = 0, sz = 0;
+    for (let j = i + 1; j < hi; j++) {
+      const dx = X[j]! - xi, dy = Y[j]! - yi, dz = Z[j]! - zi;
+      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+      if (r2 > 0) {
+        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, wz = w * dz, mj = Mb[j]!;
+        sx += mj * wx; sy += mj * wy; sz += mj * wz;
+        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy; AZ[j] = AZ[j]! - mi * wz;
+      }
+    }
+    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy; AZ[i] = AZ[i]! + sz;
+  }
+}
+
+function directPair3(t: GravityTree, lo: number, hi: number, lo2: number, hi2: number, eps2: number): void {
+  const X = t.x, Y = t.y, Z = t.z, Mb = t.m, AX = t.ax, AY = t.ay, AZ = t.az;
+  for (let i = lo; i < hi; i++) {
+    const xi = X[i]!, yi = Y[i]!, zi = Z[i]!, mi = Mb[i]!;
+    let sx = 0, sy = 0, sz = 0;
+    for (let j = lo2; j < hi2; j++) {
+      const dx = X[j]! - xi, dy = Y[j]! - yi, dz = Z[j]! - zi;
+      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+      if (r2 > 0) {
+        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, wz = w * dz, mj = Mb[j]!;
+        sx += mj * wx; sy += mj * wy; sz += mj * wz;
+        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy; AZ[j] = AZ[j]! - mi * wz;
+      }
+    }
+    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy; AZ[i] = AZ[i]! + sz;
+  }
+}
+
+/** The dual-tree walk (3D); see walk2. */
+function walk3(t: GravityTree, eps2: number, f: number): void {
+  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
+  let st = t.stack;
+  let sp = 0;
+  let cellPairs = 0, bodyPairs = 0, visits = 0;
+  st[sp++] = 0; st[sp++] = 0;
+  while (sp > 0) {
+    const b = st[--sp]!, a = st[--sp]!;
+    visits++;
+    if (sp + 160 > st.length) st = growStack(t, sp + 160);
+    const lo = start[a]!, hi = end[a]!;
+    if (a === b) {
+      const sa = skip[a]!;
+      if (sa === a + 1 || hi - lo <= DIRECT_SELF) {
+        directSelf3(t, lo, hi, eps2);
+        bodyPairs += ((hi - lo) * (hi - lo - 1)) >> 1;
+        continue;
+      }
+      for (let c = a + 1; c < sa; c = skip[c]!) {
+        st[sp++] = c; st[sp++] = c;
+        for (let d = skip[c]!; d < sa; d = skip[d]!) { st[sp++] = c; st[sp++] = d; }
+      }
+      continue;
+    }
+    const lo2 = start[b]!, hi2 = end[b]!;
+    const na = hi - lo, nb = hi2 - lo2;
+    if (na * nb <= DIRECT_PAIRS) {
+      directPair3(t, lo, hi, lo2, hi2, eps2);
+      bodyPairs += na * nb;
+      continue;
+    }
+    const oa = a * NF3, ob = b * NF3;
+    const X = F[ob]! - F[oa]!, Y = F[ob + 1]! - F[oa + 1]!, Z = F[ob + 2]! - F[oa + 2]!;
+    const u = X * X + Y * Y + Z * Z;
+    const ra = F[oa + 10]!, rb = F[ob + 10]!, rs = ra + rb;
+    if (u > rs * rs * f) {
+      const g2 = 1 / (u + eps2), g = Math.sqrt(g2);
+      const D1 = -g * g2, D2 = -3 * D1 * g2, D3 = -5 * D2 * g2;
+      const t1x = X * D1, t1y = Y * D1, t1z = Z * D1;
+      const t2xx = X * X * D2 + D1, t2yy = Y * Y * D2 + D1, t2zz = Z * Z * D2 + D1;
+      const t2xy = X * Y * D2, t2xz = X * Z * D2, t2yz = Y * Z * D2;
+      const x2 = X * X, y2 = Y * Y, z2 = Z * Z;
+      const t3xxx = X * (x2 * D3 + 3 * D2), t3xxy = Y * (x2 * D3 + D2), t3xxz = Z * (x2 * D3 + D2);
+      const t3xyy = X * (y2 * D3 + D2), t3xyz = X * Y * Z * D3, t3xzz = X * (z2 * D3 + D2);
+      const t3yyy = Y * (y2 * D3 + 3 * D2), t3yyz = Z * (y2 * D3 + D2), t3yzz = Y * (z2 * D3 + D2);
+      const t3zzz = Z * (z2 * D3 + 3 * D2);
+      const Ma = F[oa + 3]!, Mb = F[ob + 3]!;
+      let sxx = F[oa + 4]!, syy = F[oa + 5]!, szz = F[oa + 6]!, sxy = F[oa + 7]!, sxz = F[oa + 8]!, syz = F[oa + 9]!;
+      let srx = sxx * X + sxy * Y + sxz * Z, sry = sxy * X + syy * Y + syz * Z, srz = sxz * X + syz * Y + szz * Z;
+      let k = D3 * (X * srx + Y * sry + Z * srz) + D2 * (sxx + syy + szz);
+      const qax = 0.5 * (X * k + 2 * D2 * srx), qay = 0.5 * (Y * k + 2 * D2 * sry), qaz = 0.5 * (Z * k + 2 * D2 * srz);
+      sxx = F[ob + 4]!; syy = F[ob + 5]!; szz = F[ob + 6]!; sxy = F[ob + 7]!; sxz = F[ob + 8]!; syz = F[ob + 9]!;
+      srx = sxx * X + sxy * Y + sxz * Z; sry = sxy * X + syy * Y + syz * Z; srz = sxz * X + syz * Y + szz * Z;
+      k = D3 * (X * srx + Y * sry + Z * srz) + D2 * (sxx + syy + szz);
+      const qbx = 0.5 * (X * k + 2 * D2 * srx), qby = 0.5 * (Y * k + 2 * D2 * sry), qbz = 0.5 * (Z * k + 2 * D2 * srz);
+      let l = a * NL3;
+      L[l] = L[l]! - (Mb * t1x + qbx); L[l + 1] = L[l + 1]! - (Mb * t1y + qby); L[l + 2] = L[l + 2]! - (Mb * t1z + qbz);
+      L[l + 3] = L[l + 3]! + Mb * t2xx; L[l + 4] = L[l + 4]! + Mb * t2yy; L[l + 5] = L[l + 5]! + Mb * t2zz;
+      L[l + 6] = L[l + 6]! + Mb * t2xy; L[l + 7] = L[l + 7]! + Mb * t2xz; L[l + 8] = L[l + 8]! + Mb * t2yz;
+      L[l + 9] = L[l + 9]! - Mb * t3xxx; L[l + 10] = L[l + 10]! - Mb * t3xxy; L[l + 11] = L[l + 11]! - Mb * t3xxz;
+      L[l + 12] = L[l + 12]! - Mb * t3xyy; L[l + 13] = L[l + 13]! - Mb * t3xyz; L[l + 14] = L[l + 14]! - Mb * t3xzz;
+      L[l + 15] = L[l + 15]! - Mb * t3yyy; L[l + 16] = L[l + 16]! - Mb * t3yyz; L[l + 17] = L[l + 17]! - Mb * t3yzz;
+      L[l + 18] = L[l + 18]! - Mb * t3zzz;
+      l = b * NL3;
+      L[l] = L[l]! + (Ma * t1x + qax); L[l + 1] = L[l + 1]! + (Ma * t1y + qay); L[l + 2] = L[l + 2]! + (Ma * t1z + qaz);
+      L[l + 3] = L[l + 3]! + Ma * t2xx; L[l + 4] = L[l + 4]! + Ma * t2yy; L[l + 5] = L[l + 5]! + Ma * t2zz;
+      L[l + 6] = L[l + 6]! + Ma * t2xy; L[l + 7] = L[l + 7]! + Ma * t2xz; L[l + 8] = L[l + 8]! + Ma * t2yz;
+      L[l + 9] = L[l + 9]! + Ma * t3xxx; L[l + 10] = L[l + 10]! + Ma * t3xxy; L[l + 11] = L[l + 11]! + Ma * t3xxz;
+      L[l + 12] = L[l + 12]! + Ma * t3xyy; L[l + 13] = L[l + 13]! + Ma * t3xyz; L[l + 14] = L[l + 14]! + Ma * t3xzz;
+      L[l + 15] = L[l + 15]! + Ma * t3yyy; L[l + 16] = L[l + 16]! + Ma * t3yyz; L[l + 17] = L[l + 17]! + Ma * t3yzz;
+      L[l + 18] = L[l + 18]! + Ma * t3zzz;
+      cellPairs++;
+      continue;
+    }
+    const leafA = skip[a] === a + 1, leafB = skip[b] === b + 1;
+    if (leafA && leafB) {
+      directPair3(t, lo, hi, lo2, hi2, eps2);
+      bodyPairs += na * nb;
+      continue;
+    }
+    if (!leafA && (leafB || ra >= rb)) {
+      const sa = skip[a]!;
+      for (let c = a + 1; c < sa; c = skip[c]!) { st[sp++] = c; st[sp++] = b; }
+    } else {
+      const sb = skip[b]!;
+      for (let c = b + 1; c < sb; c = skip[c]!) { st[sp++] = a; st[sp++] = c; }
+    }
+  }
+  t.stats.cellPairs = cellPairs; t.stats.bodyPairs = bodyPairs; t.stats.visits = visits;
+}
+
+/** Downward pass (3D); see down2. */
+function down3(t: GravityTree, G: number): void {
+  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
+  const X = t.x, Y = t.y, Z = t.z, AX = t.ax, AY = t.ay, AZ = t.az;
+  const nodeCount = t.nodeCount;
+  for (let k = 0; k < nodeCount; k++) {
+    const o = k * NF3, l = k * NL3, sk = skip[k]!;
+    const cx = F[o]!, cy = F[o + 1]!, cz = F[o + 2]!;
+    const a0x = L[l]!, a0y = L[l + 1]!, a0z = L[l + 2]!;
+    const jxx = L[l + 3]!, jyy = L[l + 4]!, jzz = L[l + 5]!, jxy = L[l + 6]!, jxz = L[l + 7]!, jyz = L[l + 8]!;
+    const kxxx = L[l + 9]!, kxxy = L[l + 10]!, kxxz = L[l + 11]!, kxyy = L[l + 12]!, kxyz = L[l + 13]!;
+    const kxzz = L[l + 14]!, kyyy = L[l + 15]!, kyyz = L[l + 16]!, kyzz = L[l + 17]!, kzzz = L[l + 18]!;
+    if (sk === k + 1) {
+      for (let s = start[k]!, e = end[k]!; s < e; s++) {
+        const dx = X[s]! - cx, dy = Y[s]! - cy, dz = Z[s]! - cz;
+        const kdxx = kxxx * dx + kxxy * dy + kxxz * dz, kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
+        const kdzz = kxzz * dx + kyzz * dy + kzzz * dz, kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
+        const kdxz = kxxz * dx + kxyz * dy + kxzz * dz, kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
+        AX[s] = G * (AX[s]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz));
+        AY[s] = G * (AY[s]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz));
+        AZ[s] = G * (AZ[s]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz));
+      }
+      continue;
+    }
+    for (let c = k + 1; c < sk; c = skip[c]!) {
+      const oc = c * NF3, lc = c * NL3;
+      const dx = F[oc]! - cx, dy = F[oc + 1]! - cy, dz = F[oc + 2]! - cz;
+      const kdxx = kxxx * dx + kxxy * dy + kxxz * dz, kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
+      const kdzz = kxzz * dx + kyzz * dy + kzzz * dz, kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
+      const kdxz = kxxz * dx + kxyz * dy + kxzz * dz, kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
+      L[lc] = L[lc]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
+      L[lc + 1] = L[lc + 1]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
+      L[lc + 2] = L[lc + 2]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
+      L[lc + 3] = L[lc + 3]! + jxx + kdxx; L[lc + 4] = L[lc + 4]! + jyy + kdyy; L[lc + 5] = L[lc + 5]! + jzz + kdzz;
+      L[lc + 6] = L[lc + 6]! + jxy + kdxy; L[lc + 7] = L[lc + 7]! + jxz + kdxz; L[lc + 8] = L[lc + 8]! + jyz + kdyz;
+      for (let q = 9; q < NL3; q++) L[lc + q] = L[lc + q]! + L[l + q]!;
+    }
+  }
+}
+
+/**
+ * Field (m/s^2) at input body i of the built tree by a classic Barnes-Hut walk for that body alone:
+ * a cell is used as a whole (monopole plus quadrupole, the same softened expansion as above with
+ * delta = 0) when the body is farther than r / min(theta, 1) from its centre of mass, otherwise
+ * opened; leaves are summed directly, excluding i itself. Written into out[0..2]. For a few bodies;
+ * treeFields is much faster for all of them, and slightly more accurate at the same theta.
+ */
+export function treeField(t: GravityTree, i: number, G: number, eps2: number, theta: number, out: Float64Array): void {
+  const s = t.slot[i]!;
+  const is3D = t.dims === 3, nf = is3D ? NF3 : NF2;
+  const F = t.node, skip = t.skip, start = t.start, end = t.end, X = t.x, Y = t.y, Z = t.z, Mb = t.m;
+  const xi = X[s]!, yi = Y[s]!, zi = is3D ? Z[s]! : 0;
+  const f = openFactor(theta);
+  let ax = 0, ay = 0, az = 0;
+  let k = 0;
+  while (k < t.nodeCount) {
+    const o = k * nf;
+    const Dx = F[o]! - xi, Dy = F[o + 1]! - yi, Dz = is3D ? F[o + 2]! - zi : 0;
+    const u = Dx * Dx + Dy * Dy + Dz * Dz;
+    const r = F[o + (is3D ? 10 : 6)]!;
+    const next = skip[k]!;
+    if (!(u > r * r * f)) {
+      if (next === k + 1) {
+        for (let j = start[k]!; j < end[k]!; j++) {
+          const dx = X[j]! - xi, dy = Y[j]! - yi, dz = is3D ? Z[j]! - zi : 0;
+          const r2 = dx * dx + dy * dy + dz * dz + eps2;
+          if (j === s || r2 === 0) continue;
+          const w = Mb[j]! / (r2 * Math.sqrt(r2));
+          ax += w * dx; ay += w * dy; az += w * dz;
+        }
+      }
+      k++;
+      continue;
+    }
+    // a = D (M g^3 + (15/2) g^7 D.S.D - (3/2) tr S g^5) - 3 g^5 S.D (the cell-cell a0 term with delta = 0).
+    const g2 = 1 / (u + eps2), g = Math.sqrt(g2), g3 = g * g2, g5 = g3 * g2;
+    let sx: number, sy: number, sz: number, M: number, tr: number;
+    if (is3D) {
+      sx = F[o + 4]! * Dx + F[o + 7]! * Dy + F[o + 8]! * Dz;
+      sy = F[o + 7]! * Dx + F[o + 5]! * Dy + F[o + 9]! * Dz;
+      sz = F[o + 8]! * Dx + F[o + 9]! * Dy + F[o + 6]! * Dz;
+      M = F[o + 3]!; tr = F[o + 4]! + F[o + 5]! + F[o + 6]!;
+    } else {
+      sx = F[o + 3]! * Dx + F[o + 4]! * Dy; sy = F[o + 4]! * Dx + F[o + 5]! * Dy; sz = 0;
+      M = F[o + 2]!; tr = F[o + 3]! + F[o + 5]!;
+    }
+    const w = M * g3 + g5 * (7.5 * g2 * (Dx * sx + Dy * sy + Dz * sz) - 1.5 * tr);
+    ax += w * Dx - 3 * g5 * sx; ay += w * Dy - 3 * g5 * sy; az += w * Dz - 3 * g5 * sz;
+    k = next;
   }
   out[0] = G * ax; out[1] = G * ay; out[2] = G * az;
 }
 
-const field = new Float64Array(3);
+interface GatherHolder { gravityGather?: Float64Array[] }
+
+function gatherScratch(world: PhysicsWorld, n: number): Float64Array[] {
+  const holder = world as GatherHolder;
+  if (!holder.gravityGather || holder.gravityGather[0]!.length < n) {
+    const size = Math.max(n, 2 * (holder.gravityGather?.[0]!.length ?? 0), 1024);
+    holder.gravityGather = [new Float64Array(size), new Float64Array(size), new Float64Array(size), new Float64Array(size)];
+  }
+  return holder.gravityGather;
+}
 
 /**
- * Mutual gravity by Barnes-Hut for the bodies `ents` (tagged MutualGravity): adds m_i g_i to each
- * body's force accumulator. Called by mutualGravitySystem when the world's method is 'barnes-hut'.
+ * Builds the world's tree over the bodies `ents` (entity ids) from their Position and Mass, and
+ * evaluates the field at all of them with the world's G, softening and opening angle. Returns the
+ * tree: the field of entity ents[t.perm[s]] is (t.ax[s], t.ay[s], t.az[s]), m/s^2.
  */
-export function barnesHutGravity(world: PhysicsWorld, ents: ArrayLike<number>): void {
+export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): GravityTree {
   const c = world.components;
   const n = ents.length;
   const t = worldTree(world);
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
-  // Gather into the tree's body order (index i = position in ents).
   const xs = gatherScratch(world, n);
-  for (let i = 0; i < n; i++) { const e = ents[i]!; xs[0]![i] = px[e]!; xs[1]![i] = py[e]!; xs[2]![i] = pz[e]!; xs[3]![i] = m[e]!; }
-  buildTree(t, n, xs[0]!, xs[1]!, xs[2]!, xs[3]!);
+  const gx = xs[0]!, gy = xs[1]!, gz = xs[2]!, gm = xs[3]!;
+  for (let i = 0; i < n; i++) { const e = ents[i]!; gx[i] = px[e]!; gy[i] = py[e]!; gz[i] = pz[e]!; gm[i] = m[e]!; }
+  buildTree(t, n, gx, gy, gz, gm);
   const L = world.laws;
-  const G = L.gravitationalConstant, eps2 = L.gravitySoftening * L.gravitySoftening, theta = L.openingAngle;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  for (let i = 0; i < n; i++) {
-    const e = ents[i]!;
-    treeField(t, i, G, eps2, theta, field);
-    const mass = m[e]!;
-    fx[e] = fx[e]! + mass * field[0]!; fy[e] = fy[e]! + mass * field[1]!; fz[e] = fz[e]! + mass * field[2]!;
-  }
+  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle);
+  return t;
 }
 
-function gatherScratch(world: PhysicsWorld, n: number): Float64Array[] {
-  const holder = world as { gravityGather?: Float64Array[] };
-  if (!holder.gravityGather || holder.gravityGather[0]!.length < n) {
-    const size = Math.max(n, 1024);
-    holder.gravityGather = [new Float64Array(size), new Float64Array(size), new Float64Array(size), new Float64Array(size)];
+/**
+ * Mutual gravity by the tree for the bodies `ents` (tagged MutualGravity): adds m_i g_i to each
+ * body's force accumulator, g_i the tree field. Called by mutualGravitySystem when the world's method
+ * is 'barnes-hut'.
+ */
+export function barnesHutGravity(world: PhysicsWorld, ents: ArrayLike<number>): void {
+  const t = worldTreeFields(world, ents);
+  const c = world.components;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const perm = t.perm, ax = t.ax, ay = t.ay, az = t.az, m = t.m;
+  for (let s = 0; s < t.n; s++) {
+    const e = ents[perm[s]!]!, w = m[s]!;
+    fx[e] = fx[e]! + w * ax[s]!; fy[e] = fy[e]! + w * ay[s]!; fz[e] = fz[e]! + w * az[s]!;
   }
-  return holder.gravityGather;
 }

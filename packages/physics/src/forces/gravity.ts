@@ -1,4 +1,4 @@
-import { Not, query } from 'bitecs';
+import { Not, query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { ForceLaw } from './law';
 import { barnesHutGravity } from './barnes-hut';

@@ -1,4 +1,5 @@
-import { query, removeEntity } from 'bitecs';
+import { removeEntity } from 'bitecs';
+import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { ForceLaw } from './law';
 

@@ -1,4 +1,4 @@
-import { query } from 'bitecs';
+import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { ForceLaw } from './law';
 

@@ -1,7 +1,7 @@
 import type { PhysicsWorld } from '../world';
 import { advanceKinematic } from './semi-implicit-euler';
 import { accelerationsAt, checkFinite, gather, getScratch, saveState, stageSlopes, type IntegratorScratch } from './state';
-import { rotateFrom } from './schemes';
+import { rotateFrom } from '../math/quaternion';
 
 /** Newton iterations before implicit Euler gives up on a step. */
 const MAX_NEWTON = 30;

@@ -1,4 +1,5 @@
-import { Not, query, type QueryResult } from 'bitecs';
+import { type QueryResult } from 'bitecs';
+import { Not, query } from '../query';
 import type { PhysicsWorld } from '../world';
 
 /**
@@ -22,10 +23,16 @@ export function kinematicBodies(world: PhysicsWorld): QueryResult {
   return query(world, [c.Position, c.Velocity, c.Kinematic, Not(c.Static)]);
 }
 
-/** Bodies that turn under torque: angular velocity, inertia and a torque accumulator. */
+/** Bodies that turn under torque with a scalar moment of inertia: angular velocity, inertia, a torque accumulator. */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
-  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.Static), Not(c.Kinematic)]);
+  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
+}
+
+/** 3D bodies with a principal inertia tensor: they turn by Euler's equations, torque or not. */
+export function tensorBodies(world: PhysicsWorld): QueryResult {
+  const c = world.components;
+  return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic)]);
 }
 
 /** Bodies whose orientation follows their angular velocity: 2D `Angle` or 3D `Orientation`. */
@@ -34,4 +41,15 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
   return world.dimensions === 2
     ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static)])
     : query(world, [c.AngularVelocity, c.Orientation, Not(c.Static)]);
+}
+
+/**
+ * Spinning bodies whose orientation the semi-implicit scheme advances with w h: all of them but the
+ * 3D inertia-tensor bodies (the rigid-body splitting turns those itself).
+ */
+export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
+  const c = world.components;
+  return world.dimensions === 2
+    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static)])
+    : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static)]);
 }

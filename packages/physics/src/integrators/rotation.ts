@@ -1,14 +1,30 @@
 import type { PhysicsWorld } from '../world';
 import { reportNonFinite } from '../errors';
-import { spinningBodies, torquedBodies } from './queries';
+import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries';
+import { rotateInPlace } from '../math/quaternion';
+import { splitRigidRotation } from './euler-equations';
+import { hasComponent } from 'bitecs';
+
 
 /**
- * Angular velocity update from torque with a scalar moment of inertia: w += tau I^-1 h
- * (2D: the z component; 3D: bodies whose inertia is isotropic, such as balls). Newton's second law
- * for rotation, Ramtal and Dobre ch. 13.
+ * Angular velocity update of the semi-implicit Euler scheme: w += tau I^-1 h with a scalar moment of
+ * inertia (2D: the z component; 3D: isotropic bodies such as balls), Newton's second law for rotation
+ * (Ramtal and Dobre ch. 13); for 3D bodies with a principal inertia tensor, a torque kick and the
+ * symplectic splitting of the free rigid body (`splitRigidRotation`), which also turns the orientation.
  */
 export function applyTorques(world: PhysicsWorld, h: number): void {
   const c = world.components;
+  if (world.dimensions === 3) {
+    // Principal inertia tensors: the free rigid-body splitting turns w and the orientation together
+    // (euler-equations.ts), so advanceOrientations leaves these bodies alone.
+    const tensors = tensorBodies(world);
+    const T = c.Torque;
+    for (let i = 0; i < tensors.length; i++) {
+      const e = tensors[i]!;
+      const has = hasComponent(world, e, T);
+      splitRigidRotation(world, e, h, has ? T.x[e]! : 0, has ? T.y[e]! : 0, has ? T.z[e]! : 0);
+    }
+  }
   const ents = torquedBodies(world);
   if (ents.length === 0) return;
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
@@ -38,7 +54,7 @@ export function applyTorques(world: PhysicsWorld, h: number): void {
  */
 export function advanceOrientations(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const ents = spinningBodies(world);
+  const ents = simpleSpinningBodies(world);
   if (ents.length === 0) return;
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   let check = 0;
@@ -56,20 +72,7 @@ export function advanceOrientations(world: PhysicsWorld, h: number): void {
       const e = ents[i]!;
       const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
       check += ax + ay + az;
-      const speed = Math.sqrt(ax * ax + ay * ay + az * az);
-      if (speed === 0) continue;
-      const half = 0.5 * speed * h;
-      const s = Math.sin(half) / speed;
-      const dx = ax * s, dy = ay * s, dz = az * s, dw = Math.cos(half);
-      const x = qx[e]!, y = qy[e]!, z = qz[e]!, w = qw[e]!;
-      // d * q (Hamilton product)
-      let nx = dw * x + dx * w + dy * z - dz * y;
-      let ny = dw * y - dx * z + dy * w + dz * x;
-      let nz = dw * z + dx * y - dy * x + dz * w;
-      let nw = dw * w - dx * x - dy * y - dz * z;
-      const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-      nx *= inv; ny *= inv; nz *= inv; nw *= inv;
-      qx[e] = nx; qy[e] = ny; qz[e] = nz; qw[e] = nw;
+      if (ax !== 0 || ay !== 0 || az !== 0) rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
     }
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');

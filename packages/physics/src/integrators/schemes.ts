@@ -5,6 +5,7 @@ import {
   accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, stageSlopes, sumGroups, writeTrial,
   type IntegratorScratch,
 } from './state';
+import { rotateFrom } from '../math/quaternion';
 
 /**
  * The explicit and multi-stage integration schemes. Each advances every moving body by h from the
@@ -218,24 +219,4 @@ function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, 
     if (is2D) { ang[e] = qa[e]! + rz; continue; }
     rotateFrom(q.x, q.y, q.z, q.w, e, qa[e]!, qb[e]!, qc[e]!, qd[e]!, rx, ry, rz);
   }
-}
-
-/** q[e] = exp(r / 2) (x, y, z, w): the start orientation rotated by the rotation vector r (world frame). */
-export function rotateFrom(
-  qx: Float64Array, qy: Float64Array, qz: Float64Array, qw: Float64Array, e: number,
-  x: number, y: number, z: number, w: number, rx: number, ry: number, rz: number,
-): void {
-  const angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
-  let dx = 0, dy = 0, dz = 0, dw = 1;
-  if (angle > 0) {
-    const k = Math.sin(0.5 * angle) / angle;
-    dx = rx * k; dy = ry * k; dz = rz * k; dw = Math.cos(0.5 * angle);
-  }
-  let nx = dw * x + dx * w + dy * z - dz * y;
-  let ny = dw * y - dx * z + dy * w + dz * x;
-  let nz = dw * z + dx * y - dy * x + dz * w;
-  let nw = dw * w - dx * x - dy * y - dz * z;
-  const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-  nx *= inv; ny *= inv; nz *= inv; nw *= inv;
-  qx[e] = nx; qy[e] = ny; qz[e] = nz; qw[e] = nw;
 }

@@ -3,6 +3,7 @@ import { evaluateForces } from '../pipeline/step';
 import { forcedBodies, freeBodies, spinningBodies } from './queries';
 import { hasComponent } from 'bitecs';
 import { reportNonFinite } from '../errors';
+import { eulerAcceleration } from './euler-equations';
 
 /**
  * Shared machinery of the multi-stage integrators: the list of moving bodies, a copy of the state at
@@ -87,7 +88,10 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
     const e = spin[i]!;
     if (hasComponent(world, e, c.Kinematic)) continue;
     s.spinners[k++] = e;
-    s.torqued[e] = hasComponent(world, e, c.Torque) && hasComponent(world, e, c.Inertia) && c.Inertia.inv[e]! > 0 ? 1 : 0;
+    // 2: Euler's equations with a principal inertia tensor (gyroscopic term even without torque);
+    // 1: scalar inertia under torque; 0: spins freely at constant w.
+    s.torqued[e] = world.dimensions === 3 && hasComponent(world, e, c.InertiaTensor) ? 2
+      : hasComponent(world, e, c.Torque) && hasComponent(world, e, c.Inertia) && c.Inertia.inv[e]! > 0 ? 1 : 0;
   }
   s.nSpinners = k;
 }
@@ -152,9 +156,12 @@ export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
   angularAcceleration(world, s);
 }
 
+const euler = new Float64Array(3);
+
 /**
  * Angular acceleration of every spinner: alpha = tau / I about z in 2D; in 3D with a scalar moment of
- * inertia (balls) alpha = tau I^-1 (the gyroscopic term w x I w vanishes for isotropic inertia).
+ * inertia (balls) alpha = tau I^-1 (the gyroscopic term w x I w vanishes for isotropic inertia); with
+ * a principal inertia tensor, Euler's equations (see `eulerAcceleration`).
  */
 export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
@@ -164,7 +171,14 @@ export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): 
   const torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    if (torqued[e] === 0) { bx[e] = 0; by[e] = 0; bz[e] = 0; continue; }
+    const kind = torqued[e]!;
+    if (kind === 0) { bx[e] = 0; by[e] = 0; bz[e] = 0; continue; }
+    if (kind === 2) {
+      const has = hasComponent(world, e, c.Torque);
+      eulerAcceleration(world, e, has ? tx[e]! : 0, has ? ty[e]! : 0, has ? tz[e]! : 0, euler);
+      bx[e] = euler[0]!; by[e] = euler[1]!; bz[e] = euler[2]!;
+      continue;
+    }
     const k = ii[e]!;
     bx[e] = tx[e]! * k; by[e] = ty[e]! * k; bz[e] = tz[e]! * k;
   }

@@ -8,6 +8,7 @@ import { buoyancySystem } from '../forces/fluid';
 import { springSystem } from '../forces/spring';
 import { drivingForceSystem, randomForceSystem } from '../forces/driving';
 import { burnFuelSystem, thrustSystem } from '../forces/thrust';
+import { angularDampingSystem } from '../forces/angular-damping';
 import { integrateSystem } from '../integrators/integrate';
 import { broadphaseSystem } from '../collision/broadphase';
 import { narrowphaseSystem } from '../collision/narrowphase';
@@ -47,7 +48,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
     systems: [
       gravityScaleSystem, mutualGravitySystem, attractorSystem, coulombSystem, lorentzSystem, centralForceSystem,
       linearDragSystem, quadraticDragSystem, liftSystem, buoyancySystem, springSystem, drivingForceSystem,
-      randomForceSystem, thrustSystem,
+      randomForceSystem, thrustSystem, angularDampingSystem,
     ],
   },
   { stage: 'integrate', systems: [integrateSystem, burnFuelSystem] },

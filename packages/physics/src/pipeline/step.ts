@@ -1,6 +1,7 @@
 import type { PhysicsWorld } from '../world';
 import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages';
 import { describe } from '../validate';
+import { query } from '../query';
 
 const now: () => number =
   typeof globalThis.performance?.now === 'function' ? () => globalThis.performance.now() : () => Date.now();
@@ -38,6 +39,7 @@ export function step(world: PhysicsWorld): void {
   const h = world.dt / n;
   world.h = h;
   const t0 = world.time;
+  const movers = n > 1 ? snapshotStepStart(world) : null;
   for (let s = 0; s < n; s++) {
     world.time = t0 + s * h;
     world.substepStart = world.time;
@@ -47,8 +49,38 @@ export function step(world: PhysicsWorld): void {
     }
   }
   world.time = t0 + world.dt;
+  if (movers) restoreStepStart(world, movers);
   runStage(world, 'finalize');
   world.steps++;
+}
+
+const moverTerms = (world: PhysicsWorld) => [world.components.Position, world.components.Velocity];
+const stepStarts = new WeakMap<PhysicsWorld, Float64Array[]>();
+
+/**
+ * With substeps, each substep overwrites PreviousPosition (the collision stage needs the start of
+ * its own substep), so the start of the whole step is kept here and written back at the end: after
+ * `step`, PreviousPosition is always where bodies were when the step began, which is what renderers
+ * interpolate from.
+ */
+function snapshotStepStart(world: PhysicsWorld): ArrayLike<number> {
+  const ents = query(world, moverTerms(world));
+  let stepStart = stepStarts.get(world);
+  if (!stepStart) {
+    const n = world.capacity + 1;
+    stepStart = [new Float64Array(n), new Float64Array(n), new Float64Array(n)];
+    stepStarts.set(world, stepStart);
+  }
+  const P = world.components.Position;
+  const [x, y, z] = stepStart as [Float64Array, Float64Array, Float64Array];
+  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; x[e] = P.x[e]!; y[e] = P.y[e]!; z[e] = P.z[e]!; }
+  return ents;
+}
+
+function restoreStepStart(world: PhysicsWorld, ents: ArrayLike<number>): void {
+  const O = world.components.PreviousPosition;
+  const [x, y, z] = stepStarts.get(world) as [Float64Array, Float64Array, Float64Array];
+  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; O.x[e] = x[e]!; O.y[e] = y[e]!; O.z[e] = z[e]!; }
 }
 
 /**

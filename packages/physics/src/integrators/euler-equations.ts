@@ -1,0 +1,123 @@
+import type { PhysicsWorld } from '../world';
+import { rotateVector, rotateVectorInverse } from '../math/quaternion';
+
+const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3);
+
+/**
+ * Angular acceleration of a 3D body with principal moments (Ix, Iy, Iz) from Euler's equations,
+ * I dw/dt = tau - w x (I w), evaluated in the body frame (where I is diagonal) and rotated back:
+ * alpha = R I^-1 (R^T tau - w_b x I w_b), w_b = R^T w. Writes into res[0..2] (rad/s^2).
+ * Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5; Ramtal and Dobre ch. 15.
+ */
+export function eulerAcceleration(world: PhysicsWorld, e: number, torqueX: number, torqueY: number, torqueZ: number, res: Float64Array): void {
+  const c = world.components;
+  const q = c.Orientation, T = c.InertiaTensor;
+  const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+  rotateVectorInverse(qx, qy, qz, qw, c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!, b);
+  rotateVectorInverse(qx, qy, qz, qw, torqueX, torqueY, torqueZ, t);
+  const wx = b[0]!, wy = b[1]!, wz = b[2]!;
+  const Lx = T.x[e]! * wx, Ly = T.y[e]! * wy, Lz = T.z[e]! * wz;
+  const ax = (t[0]! - (wy * Lz - wz * Ly)) * T.invX[e]!;
+  const ay = (t[1]! - (wz * Lx - wx * Lz)) * T.invY[e]!;
+  const az = (t[2]! - (wx * Ly - wy * Lx)) * T.invZ[e]!;
+  rotateVector(qx, qy, qz, qw, ax, ay, az, out);
+  res[0] = out[0]!; res[1] = out[1]!; res[2] = out[2]!;
+}
+
+const wb = new Float64Array(3), tb = new Float64Array(3), back = new Float64Array(3);
+
+/**
+ * Semi-implicit Euler's angular velocity update for a body with a principal inertia tensor:
+ * the torque kick w += h I^-1 tau, then the gyroscopic term solved implicitly by one Newton step on
+ * f(w2) = I (w2 - w1) + h w2 x (I w2) = 0 in the body frame: w2 = w1 - J^-1 f(w1),
+ * J = I + h (skew(w1) I - skew(I w1)). An explicit gyroscopic update gains energy every step and
+ * eventually blows up (an asymmetric top spun at 1 rad/s does within 10^5 steps at h = 1/60);
+ * the implicit step is stable and slightly dissipative. Axes with a zero moment stay locked.
+ * Source: Catto, "Numerical Methods", GDC 2015; Bullet's btRigidBody::computeGyroscopicImpulseImplicit_Body.
+ */
+export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number, torqueX: number, torqueY: number, torqueZ: number): void {
+  const c = world.components;
+  const q = c.Orientation, T = c.InertiaTensor, W = c.AngularVelocity;
+  const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+  rotateVectorInverse(qx, qy, qz, qw, W.x[e]!, W.y[e]!, W.z[e]!, wb);
+  rotateVectorInverse(qx, qy, qz, qw, torqueX, torqueY, torqueZ, tb);
+  const Ix = T.x[e]!, Iy = T.y[e]!, Iz = T.z[e]!, ix = T.invX[e]!, iy = T.invY[e]!, iz = T.invZ[e]!;
+  let wx = wb[0]! + h * tb[0]! * ix, wy = wb[1]! + h * tb[1]! * iy, wz = wb[2]! + h * tb[2]! * iz;
+  if (ix > 0 && iy > 0 && iz > 0) {
+    const Lx = Ix * wx, Ly = Iy * wy, Lz = Iz * wz;
+    const fx = h * (wy * Lz - wz * Ly), fy = h * (wz * Lx - wx * Lz), fz = h * (wx * Ly - wy * Lx);
+    const a00 = Ix, a01 = h * wz * (Iz - Iy), a02 = h * wy * (Iz - Iy);
+    const a10 = h * wz * (Ix - Iz), a11 = Iy, a12 = h * wx * (Ix - Iz);
+    const a20 = h * wy * (Iy - Ix), a21 = h * wx * (Iy - Ix), a22 = Iz;
+    // Solve J d = -f by Cramer's rule.
+    const c00 = a11 * a22 - a12 * a21, c01 = a12 * a20 - a10 * a22, c02 = a10 * a21 - a11 * a20;
+    const det = a00 * c00 + a01 * c01 + a02 * c02;
+    if (det !== 0) {
+      const inv = 1 / det;
+      const bx = -fx, by = -fy, bz = -fz;
+      const dx = (bx * c00 + by * (a02 * a21 - a01 * a22) + bz * (a01 * a12 - a02 * a11)) * inv;
+      const dy = (bx * c01 + by * (a00 * a22 - a02 * a20) + bz * (a02 * a10 - a00 * a12)) * inv;
+      const dz = (bx * c02 + by * (a01 * a20 - a00 * a21) + bz * (a00 * a11 - a01 * a10)) * inv;
+      wx += dx; wy += dy; wz += dz;
+    }
+  } else {
+    if (ix === 0) wx = 0;
+    if (iy === 0) wy = 0;
+    if (iz === 0) wz = 0;
+  }
+  rotateVector(qx, qy, qz, qw, wx, wy, wz, back);
+  W.x[e] = back[0]!; W.y[e] = back[1]!; W.z[e] = back[2]!;
+}
+
+const Lw = new Float64Array(3), Lb = new Float64Array(3), wOut = new Float64Array(3);
+
+/** Turns the body-frame momentum (Lb) and the orientation q[e] by angle a about body axis k (0, 1, 2). */
+function rotateAboutBodyAxis(q: PhysicsWorld['components']['Orientation'], e: number, k: number, a: number): void {
+  if (a === 0) return;
+  // The body turns by +a about its axis k: in the body frame the (fixed) world momentum turns by -a.
+  const cs = Math.cos(a), sn = Math.sin(a);
+  const i = (k + 1) % 3, j = (k + 2) % 3;
+  const li = Lb[i]!, lj = Lb[j]!;
+  Lb[i] = cs * li + sn * lj;
+  Lb[j] = -sn * li + cs * lj;
+  // q <- q (cos a/2, sin a/2 e_k): a rotation about a body axis multiplies on the right.
+  const hc = Math.cos(0.5 * a), hs = Math.sin(0.5 * a);
+  const dx = k === 0 ? hs : 0, dy = k === 1 ? hs : 0, dz = k === 2 ? hs : 0, dw = hc;
+  const x = q.x[e]!, y = q.y[e]!, z = q.z[e]!, w = q.w[e]!;
+  q.x[e] = w * dx + x * dw + y * dz - z * dy;
+  q.y[e] = w * dy - x * dz + y * dw + z * dx;
+  q.z[e] = w * dz + x * dy - y * dx + z * dw;
+  q.w[e] = w * dw - x * dx - y * dy - z * dz;
+}
+
+/**
+ * Semi-implicit Euler's rotation step for a body with a principal inertia tensor: a torque kick
+ * L += h tau, then the free rigid-body flow split into exact rotations about the principal axes in
+ * the symmetric sequence x(h/2) y(h/2) z(h) y(h/2) x(h/2), each turning the body by h L_k / I_k about
+ * its axis k (Dullweber, Leimkuhler and McLachlan, J. Chem. Phys. 107, 1997; Hairer, Lubich and
+ * Wanner, Geometric Numerical Integration, VII.5). Symplectic and second order for the free flow:
+ * |L| is conserved exactly, the energy error stays bounded (no drift), orientation and angular
+ * velocity stay consistent. Updates both the angular velocity and the orientation. Axes with a zero
+ * moment stay locked.
+ */
+export function splitRigidRotation(world: PhysicsWorld, e: number, h: number, torqueX: number, torqueY: number, torqueZ: number): void {
+  const c = world.components;
+  const q = c.Orientation, T = c.InertiaTensor, W = c.AngularVelocity;
+  const Ix = T.x[e]!, Iy = T.y[e]!, Iz = T.z[e]!, ix = T.invX[e]!, iy = T.invY[e]!, iz = T.invZ[e]!;
+  // World momentum plus the torque kick, then into the body frame.
+  rotateVectorInverse(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, W.x[e]!, W.y[e]!, W.z[e]!, Lb);
+  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, Lb[0]! * Ix, Lb[1]! * Iy, Lb[2]! * Iz, Lw);
+  rotateVectorInverse(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, Lw[0]! + h * torqueX, Lw[1]! + h * torqueY, Lw[2]! + h * torqueZ, Lb);
+  if (ix === 0) Lb[0] = 0;
+  if (iy === 0) Lb[1] = 0;
+  if (iz === 0) Lb[2] = 0;
+  rotateAboutBodyAxis(q, e, 0, 0.5 * h * Lb[0]! * ix);
+  rotateAboutBodyAxis(q, e, 1, 0.5 * h * Lb[1]! * iy);
+  rotateAboutBodyAxis(q, e, 2, h * Lb[2]! * iz);
+  rotateAboutBodyAxis(q, e, 1, 0.5 * h * Lb[1]! * iy);
+  rotateAboutBodyAxis(q, e, 0, 0.5 * h * Lb[0]! * ix);
+  const n = 1 / Math.hypot(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!);
+  q.x[e] = q.x[e]! * n; q.y[e] = q.y[e]! * n; q.z[e] = q.z[e]! * n; q.w[e] = q.w[e]! * n;
+  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, Lb[0]! * ix, Lb[1]! * iy, Lb[2]! * iz, wOut);
+  W.x[e] = wOut[0]!; W.y[e] = wOut[1]!; W.z[e] = wOut[2]!;
+}
