@@ -166,6 +166,41 @@ export interface Components {
    * Dobre ch. 6, "rockets"; Tsiolkovsky's equation dv = ve ln(m0 / m1).
    */
   Thrust: { exhaustVelocity: Float64Array; massFlowRate: Float64Array; fuel: Float64Array; dirX: Float64Array; dirY: Float64Array; dirZ: Float64Array };
+  /**
+   * A swirl about an axis through (cx, cy, cz): tangential force F = k r^(n-1) (axis x r_hat), r the
+   * distance from the axis, `k` in N / m^(n-1) (positive: counter-clockwise about the axis), axis unit
+   * (default z, the only axis that makes sense in 2D). Particles in a whirlpool or tornado.
+   */
+  Vortex: { cx: Float64Array; cy: Float64Array; cz: Float64Array; axisX: Float64Array; axisY: Float64Array; axisZ: Float64Array; k: Float64Array; n: Float64Array };
+  /**
+   * A particle emitter on an entity with Position (and Velocity, to pass some of it on). See
+   * particles/emitter.ts and `addEmitter` for every field; all units SI (rates per second, speeds
+   * m/s, angles rad, lifetimes s).
+   */
+  Emitter: {
+    rate: Float64Array; carry: Float64Array; pendingBurst: Float64Array; enabled: Uint8Array;
+    shape: Uint8Array; size: Float64Array; sizeY: Float64Array; sizeZ: Float64Array;
+    dirX: Float64Array; dirY: Float64Array; dirZ: Float64Array; spread: Float64Array;
+    speedMin: Float64Array; speedMax: Float64Array; lifeMin: Float64Array; lifeMax: Float64Array;
+    inherit: Float64Array; mass: Float64Array; linearDrag: Float64Array; quadraticDrag: Float64Array;
+    gravityScale: Float64Array; radius: Float64Array;
+    colorStart: Uint32Array; colorEnd: Uint32Array; sizeStart: Float64Array; sizeEnd: Float64Array;
+    alphaStart: Float64Array; alphaEnd: Float64Array;
+    deathEmitter: Int32Array; deathCount: Float64Array; maxGeneration: Float64Array; policy: Uint8Array;
+    spawned: Float64Array; dropped: Float64Array;
+  };
+  /** Age and lifetime of a particle, s: it is removed when `age` reaches `duration`. */
+  Lifetime: { age: Float64Array; duration: Float64Array };
+  /**
+   * What a particle looks like over its life, for renderers: colour (0xRRGGBB), size (m) and alpha
+   * (0..1) at birth and at death, interpolated linearly in age / duration; `emitter` that made it;
+   * `generation` (0 for emitted, +1 for each burst on death).
+   */
+  Particle: {
+    emitter: Int32Array; generation: Float64Array;
+    colorStart: Uint32Array; colorEnd: Uint32Array; sizeStart: Float64Array; sizeEnd: Float64Array;
+    alphaStart: Float64Array; alphaEnd: Float64Array;
+  };
   /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
   Angle: { value: Float64Array };
   /**
@@ -234,6 +269,24 @@ export function createComponents(capacity: number): Components {
     DrivingForce: { x: f(), y: f(), z: f(), omega: f(), phase: f() },
     RandomForce: { magnitude: f(), correlationTime: f(), seed: f() },
     Thrust: { exhaustVelocity: f(), massFlowRate: f(), fuel: f(), dirX: f(), dirY: f(), dirZ: f() },
+    Vortex: { cx: f(), cy: f(), cz: f(), axisX: f(), axisY: f(), axisZ: f(), k: f(), n: f() },
+    Emitter: {
+      rate: f(), carry: f(), pendingBurst: f(), enabled: new Uint8Array(n),
+      shape: new Uint8Array(n), size: f(), sizeY: f(), sizeZ: f(),
+      dirX: f(), dirY: f(), dirZ: f(), spread: f(),
+      speedMin: f(), speedMax: f(), lifeMin: f(), lifeMax: f(),
+      inherit: f(), mass: f(), linearDrag: f(), quadraticDrag: f(), gravityScale: f(), radius: f(),
+      colorStart: new Uint32Array(n), colorEnd: new Uint32Array(n), sizeStart: f(), sizeEnd: f(),
+      alphaStart: f(), alphaEnd: f(),
+      deathEmitter: new Int32Array(n), deathCount: f(), maxGeneration: f(), policy: new Uint8Array(n),
+      spawned: f(), dropped: f(),
+    },
+    Lifetime: { age: f(), duration: f() },
+    Particle: {
+      emitter: new Int32Array(n), generation: f(),
+      colorStart: new Uint32Array(n), colorEnd: new Uint32Array(n), sizeStart: f(), sizeEnd: f(),
+      alphaStart: f(), alphaEnd: f(),
+    },
     Angle: { value: f() },
     Orientation: { x: f(), y: f(), z: f(), w: f() },
     AngularVelocity: vec3(n),

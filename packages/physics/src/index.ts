@@ -46,8 +46,14 @@ export { createRecorder } from './diagnostics/recorder';
 export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder';
 export {
   setGravityScale, enableMutualGravity, setAttractor, setCharge, addElectricField, addMagneticField, setCentralForce,
-  setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust,
+  setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust, setVortex,
 } from './forces/api';
+export { vortexSystem } from './forces/vortex';
+export {
+  addEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
+  EmitterShape, CapacityPolicy,
+} from './particles/emitter';
+export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter';
 export type { FieldOptions, BuoyancyOptions, SpringOptions } from './forces/api';
 export {
   G_SI, COULOMB_SI, MAX_WIND_MODES, setGravitation, setElectrostatics, setWind, windAt,

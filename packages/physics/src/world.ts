@@ -251,8 +251,12 @@ function installDefaults(world: PhysicsWorld): void {
   observe(world, onAdd(c.Thrust), (eid: number) => {
     const T = c.Thrust; T.exhaustVelocity[eid] = 0; T.massFlowRate[eid] = 0; T.fuel[eid] = 0; T.dirX[eid] = 0; T.dirY[eid] = 1; T.dirZ[eid] = 0;
   });
+  observe(world, onAdd(c.Vortex), (eid: number) => {
+    const V = c.Vortex; V.cx[eid] = 0; V.cy[eid] = 0; V.cz[eid] = 0; V.axisX[eid] = 0; V.axisY[eid] = 0; V.axisZ[eid] = 1; V.k[eid] = 0; V.n[eid] = 1;
+  });
+  observe(world, onAdd(c.Lifetime), (eid: number) => { c.Lifetime.age[eid] = 0; c.Lifetime.duration[eid] = 1; });
   for (const law of [
-    c.LinearDrag, c.QuadraticDrag, c.GravityScale, c.MutualGravity, c.Charge, c.CentralForce, c.Lift, c.Buoyancy,
+    c.LinearDrag, c.Vortex, c.QuadraticDrag, c.GravityScale, c.MutualGravity, c.Charge, c.CentralForce, c.Lift, c.Buoyancy,
     c.DrivingForce, c.RandomForce, c.Thrust,
   ]) registerForceLaw(world, law);
   // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.

@@ -369,3 +369,29 @@ export function setThrust(world: PhysicsWorld, eid: number, options: { exhaustVe
   T.exhaustVelocity[eid] = options.exhaustVelocity; T.massFlowRate[eid] = options.massFlowRate; T.fuel[eid] = options.fuel;
   T.dirX[eid] = x / n; T.dirY[eid] = y / n; T.dirZ[eid] = z / n;
 }
+
+/**
+ * Gives the body a vortex force F = k r^(n-1) (axis x r_hat) about the axis through `centre`
+ * (axis unit 3-vector, default z). @throws TypeError | RangeError on bad values or a missing body.
+ */
+export function setVortex(world: PhysicsWorld, eid: number, options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> }): void {
+  const where = 'setVortex';
+  assertBody(where, world, eid);
+  assertKnownKeys(where, options, ['centre', 'k', 'n', 'axis']);
+  assertVector(where, 'centre', options.centre, world.dimensions);
+  assertFinite(where, 'k', options.k);
+  if (options.n !== undefined) assertFinite(where, 'n', options.n);
+  let ax = 0, ay = 0, az = 1;
+  if (options.axis !== undefined) {
+    assertVector(where, 'axis', options.axis, 3);
+    const len = Math.hypot(options.axis[0]!, options.axis[1]!, options.axis[2]!);
+    if (!(len > 0)) throw new RangeError(`${where}: axis must not be zero`);
+    ax = options.axis[0]! / len; ay = options.axis[1]! / len; az = options.axis[2]! / len;
+  }
+  const c = world.components;
+  addComponentIfMissing(world, eid, c.Vortex);
+  const [x, y, z] = vec3(world, options.centre);
+  const V = c.Vortex;
+  V.cx[eid] = x; V.cy[eid] = y; V.cz[eid] = z; V.axisX[eid] = ax; V.axisY[eid] = ay; V.axisZ[eid] = az;
+  V.k[eid] = options.k; V.n[eid] = options.n ?? 1;
+}

@@ -9,6 +9,8 @@ import { springSystem } from '../forces/spring';
 import { drivingForceSystem, randomForceSystem } from '../forces/driving';
 import { burnFuelSystem, thrustSystem } from '../forces/thrust';
 import { angularDampingSystem } from '../forces/angular-damping';
+import { vortexSystem } from '../forces/vortex';
+import { emitterSystem, lifetimeSystem } from '../particles/emitter';
 import { integrateSystem } from '../integrators/integrate';
 import { broadphaseSystem } from '../collision/broadphase';
 import { narrowphaseSystem } from '../collision/narrowphase';
@@ -41,14 +43,14 @@ export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'i
  * copy of it in `world.stages`; hook in with `addSystem`.
  */
 export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
-  { stage: 'spawn', systems: [] },
+  { stage: 'spawn', systems: [lifetimeSystem, emitterSystem] },
   { stage: 'clearForces', systems: [clearForcesSystem] },
   {
     stage: 'forces',
     systems: [
       gravityScaleSystem, mutualGravitySystem, attractorSystem, coulombSystem, lorentzSystem, centralForceSystem,
       linearDragSystem, quadraticDragSystem, liftSystem, buoyancySystem, springSystem, drivingForceSystem,
-      randomForceSystem, thrustSystem, angularDampingSystem,
+      randomForceSystem, thrustSystem, angularDampingSystem, vortexSystem,
     ],
   },
   { stage: 'integrate', systems: [integrateSystem, burnFuelSystem] },

@@ -1,0 +1,550 @@
+import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
+import type { PhysicsWorld } from '../world';
+import { createEntity } from '../bodies';
+import { query } from '../query';
+import {
+  assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
+} from '../validate';
+
+/**
+ * Particle systems (Ramtal and Dobre ch. 12): emitters spawn particles with a rate and in bursts,
+ * from a shape, in a direction with a spread, with speeds and lifetimes drawn from ranges, passing
+ * on part of the emitter's velocity; particles carry the force laws the emitter gives them (mass,
+ * drag, gravity scale, a collider) and a look over their life (colour, size, alpha) for renderers;
+ * they expire when their lifetime runs out, and may burst into particles of another emitter when
+ * they do (fireworks), up to a generation limit.
+ *
+ * Capacity: a world never grows. When it is full an emitter applies its policy: 'drop-new' skips the
+ * spawn (counted in `Emitter.dropped`), 'recycle-oldest' removes the oldest particle first (a FIFO of
+ * spawn order, stale entries skipped). No exception is thrown in the middle of a game, and a long run
+ * with constant churn keeps the entity count and the heap flat.
+ *
+ * Everything random comes from the world's seeded generator, so a scene replays identically.
+ */
+
+/** Emitter shapes: where a particle starts relative to the emitter. */
+export const EmitterShape = Object.freeze({
+  /** At the emitter. */
+  Point: 0,
+  /** Uniformly inside a disc (2D) or ball (3D) of radius `size`. */
+  Disc: 1,
+  /** On a circle (2D) or sphere (3D) of radius `size`. */
+  Ring: 2,
+  /** Uniformly inside a box of half extents (size, sizeY, sizeZ). */
+  Box: 3,
+  /** Uniformly along a segment of half length `size` along x. */
+  Line: 4,
+} as const);
+
+/** What an emitter does when the world is full: drop the new particle, or remove the oldest. */
+export const CapacityPolicy = Object.freeze({ DropNew: 0, RecycleOldest: 1 } as const);
+
+/** Options of `addEmitter`. Vectors have `world.dimensions` components. Ranges are [min, max] or one number. */
+export interface EmitterOptions {
+  /**
+   * Put the emitter on this existing body (a ship's exhaust, a firework shell): it emits from the
+   * body's position and passes on the body's velocity. Exclusive with position and velocity.
+   */
+  attachTo?: number;
+  /** Where a standalone emitter is, m. */
+  position?: ArrayLike<number>;
+  /** A standalone emitter's velocity, m/s: it then moves as a kinematic body (no gravity). */
+  velocity?: ArrayLike<number>;
+  /** Particles per second, >= 0. Default 0 (bursts only). */
+  rate?: number;
+  /** Spawn shape. Default 'point'. */
+  shape?: 'point' | 'disc' | 'ring' | 'box' | 'line';
+  /** Radius (disc, ring), half extents (box) or half length (line), m. A number or [x, y(, z)]. */
+  size?: number | ArrayLike<number>;
+  /** Mean direction of emission (normalised here). Default up. */
+  direction?: ArrayLike<number>;
+  /** Half-angle of the emission cone (2D: fan), rad, in [0, pi]. Default pi (every direction). */
+  spread?: number;
+  /** Launch speed range, m/s, >= 0. Default [1, 2]. */
+  speed?: number | [number, number];
+  /** Lifetime range, s, > 0. Default [1, 2]. */
+  lifetime?: number | [number, number];
+  /** Fraction of the emitter's (or dying parent's) velocity added to each particle, in [0, 1]. Default 0. */
+  inheritVelocity?: number;
+  /** What particles carry. */
+  particle?: EmittedParticleOptions;
+  /** Burst into particles of another emitter when a particle of this one dies. */
+  onDeath?: { emitter: number; count: number; maxGeneration: number };
+  /** Full-world policy. Default 'drop-new'. */
+  policy?: 'drop-new' | 'recycle-oldest';
+  /** Whether it emits at its rate. Default true. */
+  enabled?: boolean;
+}
+
+/** Per-particle properties an emitter hands out. */
+export interface EmittedParticleOptions {
+  /** Mass, kg, > 0. Needed for force laws (attractors, drag); default 0 = a bare particle that feels gravity only. */
+  mass?: number;
+  /** Linear drag coefficient, N s/m (>= 0; needs no mass: one is given). */
+  linearDrag?: number;
+  /** Quadratic drag coefficient, kg/m (>= 0). */
+  quadraticDrag?: number;
+  /** Gravity scale (1 = normal). */
+  gravityScale?: number;
+  /** Collider radius, m (> 0 makes particles collide: splashes on the ground). Default none. */
+  radius?: number;
+  /** Colour at birth and death, 0xRRGGBB. Default white to white. */
+  colorStart?: number;
+  colorEnd?: number;
+  /** Drawn size at birth and death, m (>= 0). Default 0.1 to 0.1. */
+  sizeStart?: number;
+  sizeEnd?: number;
+  /** Opacity at birth and death, [0, 1]. Default 1 to 0 (fading). */
+  alphaStart?: number;
+  alphaEnd?: number;
+}
+
+/** A hook run for every particle that expires, before it is removed. */
+export type ParticleDeathHook = (world: PhysicsWorld, eid: number) => void;
+
+interface ParticleBook {
+  /** FIFO of spawned particles (eid and spawn stamp), oldest at head; stale entries skipped. */
+  ids: Int32Array; stamps: Uint32Array; head: number; count: number;
+  hooks: ParticleDeathHook[];
+  /** Scratch: expired particles this step, and bursts to spawn (x, y, z, vx, vy, vz, emitter, count, generation). */
+  expired: Int32Array; bursts: Float64Array; burstCount: number;
+}
+
+const books = new WeakMap<PhysicsWorld, ParticleBook>();
+
+function book(world: PhysicsWorld): ParticleBook {
+  let b = books.get(world);
+  if (!b) {
+    const n = world.capacity + 1;
+    b = {
+      ids: new Int32Array(n), stamps: new Uint32Array(n), head: 0, count: 0, hooks: [],
+      expired: new Int32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
+    };
+    books.set(world, b);
+  }
+  return b;
+}
+
+function pushParticle(world: PhysicsWorld, b: ParticleBook, eid: number): void {
+  const size = b.ids.length;
+  if (b.count === size) compact(world, b);
+  const i = (b.head + b.count) % size;
+  b.ids[i] = eid;
+  b.stamps[i] = world.spawnStamp[eid]!;
+  b.count++;
+}
+
+/** Drops stale entries (particles already gone, or ids reused) from the FIFO, keeping order. */
+function compact(world: PhysicsWorld, b: ParticleBook): void {
+  const size = b.ids.length;
+  const P = world.components.Particle;
+  let w = 0;
+  for (let k = 0; k < b.count; k++) {
+    const i = (b.head + k) % size;
+    const e = b.ids[i]!;
+    if (live(world, e, b.stamps[i]!)) { b.ids[w] = e; b.stamps[w] = b.stamps[i]!; w++; }
+  }
+  b.head = 0;
+  b.count = w;
+  void P;
+}
+
+function live(world: PhysicsWorld, e: number, stamp: number): boolean {
+  return world.spawnStamp[e] === stamp && entityExists(world, e) && hasComponent(world, e, world.components.Particle);
+}
+
+/** Removes the oldest live particle; false if there is none. */
+function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
+  const size = b.ids.length;
+  while (b.count > 0) {
+    const e = b.ids[b.head]!, stamp = b.stamps[b.head]!;
+    b.head = (b.head + 1) % size;
+    b.count--;
+    if (live(world, e, stamp)) { removeParticle(world, e); return true; }
+  }
+  return false;
+}
+
+function removeParticle(world: PhysicsWorld, e: number): void {
+  for (const hook of world.removeHooks) hook(world, e);
+  removeEntity(world, e);
+}
+
+const sample = new Float64Array(6);
+
+/**
+ * Draws a start offset and velocity for a particle of emitter `em` (into `sample`): shape offset,
+ * direction within the spread, speed in range.
+ */
+function draw(world: PhysicsWorld, em: number): void {
+  const E = world.components.Emitter;
+  const rng = world.rng;
+  const is3D = world.dimensions === 3;
+  let ox = 0, oy = 0, oz = 0;
+  const shape = E.shape[em]!, s = E.size[em]!;
+  if (shape === EmitterShape.Disc || shape === EmitterShape.Ring) {
+    if (is3D) {
+      const z = rng.range(-1, 1), a = rng.range(0, 2 * Math.PI), r = Math.sqrt(1 - z * z);
+      const rad = shape === EmitterShape.Ring ? s : s * Math.cbrt(rng.next());
+      ox = rad * r * Math.cos(a); oy = rad * r * Math.sin(a); oz = rad * z;
+    } else {
+      const a = rng.range(0, 2 * Math.PI);
+      const rad = shape === EmitterShape.Ring ? s : s * Math.sqrt(rng.next());
+      ox = rad * Math.cos(a); oy = rad * Math.sin(a);
+    }
+  } else if (shape === EmitterShape.Box) {
+    ox = rng.range(-s, s); oy = rng.range(-E.sizeY[em]!, E.sizeY[em]!); oz = is3D ? rng.range(-E.sizeZ[em]!, E.sizeZ[em]!) : 0;
+  } else if (shape === EmitterShape.Line) {
+    ox = rng.range(-s, s);
+  }
+  const speed = rng.range(E.speedMin[em]!, E.speedMax[em]!);
+  const spread = E.spread[em]!;
+  const dx = E.dirX[em]!, dy = E.dirY[em]!, dz = E.dirZ[em]!;
+  let vx: number, vy: number, vz: number;
+  if (!is3D) {
+    const a = Math.atan2(dy, dx) + rng.range(-spread, spread);
+    vx = Math.cos(a); vy = Math.sin(a); vz = 0;
+  } else {
+    // Uniform in the cone of half-angle `spread` about d: cos(theta) uniform in [cos spread, 1].
+    const ct = rng.range(Math.cos(spread), 1), st = Math.sqrt(Math.max(0, 1 - ct * ct)), phi = rng.range(0, 2 * Math.PI);
+    // Orthonormal basis (u, w) perpendicular to d.
+    let ux: number, uy: number, uz: number;
+    if (Math.abs(dx) < 0.9) { ux = 0; uy = dz; uz = -dy; } else { ux = -dz; uy = 0; uz = dx; }
+    const un = Math.hypot(ux, uy, uz); ux /= un; uy /= un; uz /= un;
+    const wx = dy * uz - dz * uy, wy = dz * ux - dx * uz, wz = dx * uy - dy * ux;
+    const cp = Math.cos(phi) * st, sp = Math.sin(phi) * st;
+    vx = ct * dx + cp * ux + sp * wx; vy = ct * dy + cp * uy + sp * wy; vz = ct * dz + cp * uz + sp * wz;
+  }
+  sample[0] = ox; sample[1] = oy; sample[2] = oz;
+  sample[3] = vx * speed; sample[4] = vy * speed; sample[5] = vz * speed;
+}
+
+/**
+ * Spawns one particle of emitter `em` at (x, y, z) + shape offset with inherited velocity
+ * (bx, by, bz) (already scaled), applying the capacity policy. Returns the entity or 0 if dropped.
+ */
+function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y: number, z: number, bx: number, by: number, bz: number, generation: number): number {
+  const c = world.components;
+  const E = c.Emitter;
+  if (world.entityIndex.aliveCount >= world.capacity) {
+    if (E.policy[em] !== CapacityPolicy.RecycleOldest || !recycleOldest(world, b)) {
+      E.dropped[em] = E.dropped[em]! + 1;
+      return 0;
+    }
+  }
+  draw(world, em);
+  const e = createEntity(world);
+  addComponent(world, e, c.Position);
+  addComponent(world, e, c.Velocity);
+  addComponent(world, e, c.Lifetime);
+  addComponent(world, e, c.Particle);
+  const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
+  c.Position.x[e] = px; c.Position.y[e] = py; c.Position.z[e] = pz;
+  c.PreviousPosition.x[e] = px; c.PreviousPosition.y[e] = py; c.PreviousPosition.z[e] = pz;
+  c.Velocity.x[e] = sample[3]! + bx; c.Velocity.y[e] = sample[4]! + by; c.Velocity.z[e] = sample[5]! + bz;
+  const L = c.Lifetime;
+  L.age[e] = 0;
+  L.duration[e] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
+  const P = c.Particle;
+  P.emitter[e] = em; P.generation[e] = generation;
+  P.colorStart[e] = E.colorStart[em]!; P.colorEnd[e] = E.colorEnd[em]!;
+  P.sizeStart[e] = E.sizeStart[em]!; P.sizeEnd[e] = E.sizeEnd[em]!;
+  P.alphaStart[e] = E.alphaStart[em]!; P.alphaEnd[e] = E.alphaEnd[em]!;
+  const mass = E.mass[em]!, ld = E.linearDrag[em]!, qd = E.quadraticDrag[em]!, gs = E.gravityScale[em]!, r = E.radius[em]!;
+  if (mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0) {
+    addComponent(world, e, c.Mass);
+    const m = mass > 0 ? mass : 1;
+    c.Mass.value[e] = m; c.Mass.inv[e] = 1 / m;
+    addComponent(world, e, c.Force);
+    if (ld > 0) { addComponent(world, e, c.LinearDrag); c.LinearDrag.k[e] = ld; }
+    if (qd > 0) { addComponent(world, e, c.QuadraticDrag); c.QuadraticDrag.k[e] = qd; }
+    if (gs !== 1) { addComponent(world, e, c.GravityScale); c.GravityScale.value[e] = gs; }
+    if (r > 0) { addComponent(world, e, c.Ball); c.Ball.radius[e] = r; }
+  }
+  pushParticle(world, b, e);
+  E.spawned[em] = E.spawned[em]! + 1;
+  return e;
+}
+
+function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: number, x: number, y: number, z: number, vx: number, vy: number, vz: number, generation: number): void {
+  const k = world.components.Emitter.inherit[em]!;
+  for (let i = 0; i < count; i++) spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation);
+}
+
+/**
+ * Stage 1, first: ages every particle by dt, and removes the ones whose lifetime ran out, after
+ * running the death hooks and recording bursts into their emitter's death emitter (if the particle's
+ * generation is below the limit). Removals happen after the pass over the live list (bitecs trap).
+ */
+export function lifetimeSystem(world: PhysicsWorld): void {
+  const c = world.components;
+  const ents = query(world, [c.Lifetime]);
+  if (ents.length === 0) return;
+  const b = book(world);
+  const L = c.Lifetime, P = c.Particle, E = c.Emitter;
+  const dt = world.dt;
+  // A particle expires at the first step whose end reaches its lifetime; the slack absorbs the
+  // rounding of summed steps (thirty steps of 1/60 s add up to just under 0.5 s).
+  const slack = 1e-9 * dt;
+  const age = L.age, duration = L.duration;
+  let n = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const a = age[e]! + dt;
+    age[e] = a;
+    if (a >= duration[e]! - slack) b.expired[n++] = e;
+  }
+  if (n === 0) return;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  b.burstCount = 0;
+  for (let k = 0; k < n; k++) {
+    const e = b.expired[k]!;
+    for (const hook of b.hooks) hook(world, e);
+    if (hasComponent(world, e, P)) {
+      const em = P.emitter[e]!;
+      if (em > 0 && entityExists(world, em) && hasComponent(world, em, E)) {
+        const target = E.deathEmitter[em]!, gen = P.generation[e]!;
+        if (target > 0 && gen < E.maxGeneration[em]! && entityExists(world, target) && hasComponent(world, target, E)) {
+          if ((b.burstCount + 1) * 9 > b.bursts.length) { const nb = new Float64Array(b.bursts.length * 2); nb.set(b.bursts); b.bursts = nb; }
+          const o = b.burstCount++ * 9;
+          const B = b.bursts;
+          B[o] = px[e]!; B[o + 1] = py[e]!; B[o + 2] = pz[e]!; B[o + 3] = vx[e]!; B[o + 4] = vy[e]!; B[o + 5] = vz[e]!;
+          B[o + 6] = target; B[o + 7] = E.deathCount[em]!; B[o + 8] = gen + 1;
+        }
+      }
+    }
+    removeParticle(world, e);
+  }
+  const B = b.bursts;
+  for (let k = 0; k < b.burstCount; k++) {
+    const o = k * 9;
+    spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
+  }
+}
+
+/**
+ * Stage 1, second: every enabled emitter spawns rate x dt particles (the fraction carried to the
+ * next step) plus any burst requested with `burst`.
+ */
+export function emitterSystem(world: PhysicsWorld): void {
+  const c = world.components;
+  const ems = query(world, [c.Emitter, c.Position]);
+  if (ems.length === 0) return;
+  const b = book(world);
+  const E = c.Emitter;
+  const dt = world.dt;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  for (let i = 0; i < ems.length; i++) {
+    const em = ems[i]!;
+    let n = E.pendingBurst[em]!;
+    E.pendingBurst[em] = 0;
+    if (E.enabled[em] === 1 && E.rate[em]! > 0) {
+      const carry = E.carry[em]! + E.rate[em]! * dt;
+      const whole = Math.floor(carry);
+      E.carry[em] = carry - whole;
+      n += whole;
+    }
+    if (n === 0) continue;
+    const moving = hasComponent(world, em, c.Velocity);
+    spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
+  }
+}
+
+function range(where: string, name: string, v: number | [number, number] | undefined, fallback: [number, number], positive: boolean): [number, number] {
+  if (v === undefined) return fallback;
+  const pair: [number, number] = typeof v === 'number' ? [v, v] : v;
+  if (!Array.isArray(pair) || pair.length !== 2) throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${describe(v)}`);
+  for (let i = 0; i < 2; i++) { if (positive) assertPositive(where, `${name}[${i}]`, pair[i]); else assertNonNegative(where, `${name}[${i}]`, pair[i]); }
+  if (!(pair[1] >= pair[0])) throw new RangeError(`${where}: ${name} must be [min, max] with max >= min, got ${describe(v)}`);
+  return pair;
+}
+
+const SHAPES: Record<string, number> = { point: 0, disc: 1, ring: 2, box: 3, line: 4 };
+
+/**
+ * Adds an emitter entity. @returns its entity id.
+ * @throws TypeError on unknown options or malformed vectors; RangeError on negative rates, speeds or
+ *   sizes, lifetimes <= 0, spread outside [0, pi], inherit outside [0, 1], a death emitter that does
+ *   not exist or is not an emitter, or a full world.
+ */
+export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): number {
+  const where = 'addEmitter';
+  assertKnownKeys(where, options, ['attachTo', 'position', 'velocity', 'rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled']);
+  const d = world.dimensions;
+  if (options.attachTo !== undefined) {
+    if (options.position !== undefined || options.velocity !== undefined) throw new TypeError(`${where}: attachTo excludes position and velocity (the body has its own)`);
+    const host = options.attachTo;
+    if (typeof host !== 'number' || !entityExists(world, host) || !hasComponent(world, host, world.components.Position)) {
+      throw new RangeError(`${where}: attachTo ${describe(host)} is not a body in this world`);
+    }
+    if (hasComponent(world, host, world.components.Emitter)) throw new RangeError(`${where}: entity ${host} already has an emitter`);
+  }
+  if (options.position !== undefined) assertVector(where, 'position', options.position, d);
+  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
+  const rate = options.rate ?? 0;
+  assertNonNegative(where, 'rate', rate);
+  const shape = options.shape ?? 'point';
+  if (!(shape in SHAPES)) throw new RangeError(`${where}: shape must be one of ${Object.keys(SHAPES).join(', ')}, got ${describe(shape)}`);
+  let size: [number, number, number] = [0, 0, 0];
+  if (options.size !== undefined) {
+    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); size = [options.size, options.size, options.size]; }
+    else { assertVector(where, 'size', options.size, d); for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]); size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0]; }
+  }
+  let dir = [0, 1, 0];
+  if (options.direction !== undefined) {
+    assertVector(where, 'direction', options.direction, d);
+    const v = [options.direction[0]!, options.direction[1]!, d === 3 ? options.direction[2]! : 0];
+    const n = Math.hypot(v[0]!, v[1]!, v[2]!);
+    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
+    dir = [v[0]! / n, v[1]! / n, v[2]! / n];
+  }
+  const spread = options.spread ?? Math.PI;
+  assertInRange(where, 'spread', spread, 0, Math.PI);
+  const speed = range(where, 'speed', options.speed, [1, 2], false);
+  const life = range(where, 'lifetime', options.lifetime, [1, 2], true);
+  const inherit = options.inheritVelocity ?? 0;
+  assertInRange(where, 'inheritVelocity', inherit, 0, 1);
+  const p = options.particle ?? {};
+  assertKnownKeys(`${where}: particle`, p, ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd']);
+  if (p.mass !== undefined) assertPositive(where, 'particle.mass', p.mass);
+  if (p.linearDrag !== undefined) assertNonNegative(where, 'particle.linearDrag', p.linearDrag);
+  if (p.quadraticDrag !== undefined) assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag);
+  if (p.gravityScale !== undefined) assertFinite(where, 'particle.gravityScale', p.gravityScale);
+  if (p.radius !== undefined) assertPositive(where, 'particle.radius', p.radius);
+  for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff);
+  for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) assertNonNegative(where, `particle.${k}`, p[k]);
+  for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) assertInRange(where, `particle.${k}`, p[k], 0, 1);
+  const c = world.components;
+  if (options.onDeath !== undefined) {
+    const od = options.onDeath;
+    assertKnownKeys(`${where}: onDeath`, od, ['emitter', 'count', 'maxGeneration']);
+    if (!entityExists(world, od.emitter) || !hasComponent(world, od.emitter, c.Emitter)) {
+      throw new RangeError(`${where}: onDeath.emitter ${describe(od.emitter)} is not an emitter in this world`);
+    }
+    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
+    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
+  }
+  const policy = options.policy ?? 'drop-new';
+  if (policy !== 'drop-new' && policy !== 'recycle-oldest') throw new RangeError(`${where}: policy must be 'drop-new' or 'recycle-oldest', got ${describe(policy)}`);
+
+  let em: number;
+  if (options.attachTo !== undefined) {
+    em = options.attachTo;
+  } else {
+    em = createEntity(world);
+    addComponent(world, em, c.Position);
+    if (options.position) {
+      c.Position.x[em] = options.position[0]!; c.Position.y[em] = options.position[1]!; c.Position.z[em] = d === 3 ? options.position[2]! : 0;
+      c.PreviousPosition.x[em] = c.Position.x[em]!; c.PreviousPosition.y[em] = c.Position.y[em]!; c.PreviousPosition.z[em] = c.Position.z[em]!;
+    }
+    if (options.velocity) {
+      addComponent(world, em, c.Velocity);
+      addComponent(world, em, c.Kinematic);
+      c.Velocity.x[em] = options.velocity[0]!; c.Velocity.y[em] = options.velocity[1]!; c.Velocity.z[em] = d === 3 ? options.velocity[2]! : 0;
+    }
+  }
+  addComponent(world, em, c.Emitter);
+  const E = c.Emitter;
+  E.rate[em] = rate; E.carry[em] = 0; E.pendingBurst[em] = 0; E.enabled[em] = options.enabled === false ? 0 : 1;
+  E.shape[em] = SHAPES[shape]!; E.size[em] = size[0]; E.sizeY[em] = size[1]; E.sizeZ[em] = size[2];
+  E.dirX[em] = dir[0]!; E.dirY[em] = dir[1]!; E.dirZ[em] = dir[2]!; E.spread[em] = spread;
+  E.speedMin[em] = speed[0]; E.speedMax[em] = speed[1]; E.lifeMin[em] = life[0]; E.lifeMax[em] = life[1];
+  E.inherit[em] = inherit;
+  E.mass[em] = p.mass ?? 0; E.linearDrag[em] = p.linearDrag ?? 0; E.quadraticDrag[em] = p.quadraticDrag ?? 0;
+  E.gravityScale[em] = p.gravityScale ?? 1; E.radius[em] = p.radius ?? 0;
+  E.colorStart[em] = p.colorStart ?? 0xffffff; E.colorEnd[em] = p.colorEnd ?? p.colorStart ?? 0xffffff;
+  E.sizeStart[em] = p.sizeStart ?? 0.1; E.sizeEnd[em] = p.sizeEnd ?? p.sizeStart ?? 0.1;
+  E.alphaStart[em] = p.alphaStart ?? 1; E.alphaEnd[em] = p.alphaEnd ?? 0;
+  E.deathEmitter[em] = options.onDeath?.emitter ?? 0; E.deathCount[em] = options.onDeath?.count ?? 0;
+  E.maxGeneration[em] = options.onDeath?.maxGeneration ?? 0;
+  E.policy[em] = policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
+  E.spawned[em] = 0; E.dropped[em] = 0;
+  return em;
+}
+
+function assertEmitter(where: string, world: PhysicsWorld, em: number): void {
+  if (typeof em !== 'number' || !Number.isInteger(em) || em < 1 || !entityExists(world, em) || !hasComponent(world, em, world.components.Emitter)) {
+    throw new RangeError(`${where}: ${describe(em)} is not an emitter in this world`);
+  }
+}
+
+/**
+ * Asks emitter `em` for `count` particles at the next spawn stage (e.g. a firework shell bursting,
+ * a splash). @throws RangeError on a missing emitter or a count that is not a non-negative integer.
+ */
+export function burst(world: PhysicsWorld, em: number, count: number): void {
+  assertEmitter('burst', world, em);
+  assertInteger('burst', 'count', count, 0, 10_000_000);
+  const E = world.components.Emitter;
+  E.pendingBurst[em] = E.pendingBurst[em]! + count;
+}
+
+/**
+ * Spawns `count` particles of emitter `em` now, at `position` (default: the emitter's) with
+ * `velocity` passed on at the emitter's inherit fraction. Returns how many were spawned (fewer if the
+ * world was full and the policy drops). @throws RangeError on a missing emitter or bad values.
+ */
+export function emitNow(world: PhysicsWorld, em: number, count: number, position?: ArrayLike<number>, velocity?: ArrayLike<number>): number {
+  const where = 'emitNow';
+  assertEmitter(where, world, em);
+  assertInteger(where, 'count', count, 0, 10_000_000);
+  const d = world.dimensions;
+  if (position !== undefined) assertVector(where, 'position', position, d);
+  if (velocity !== undefined) assertVector(where, 'velocity', velocity, d);
+  const P = world.components.Position;
+  const x = position ? position[0]! : P.x[em]!, y = position ? position[1]! : P.y[em]!, z = position && d === 3 ? position[2]! : position ? 0 : P.z[em]!;
+  const k = world.components.Emitter.inherit[em]!;
+  const before = world.components.Emitter.spawned[em]!;
+  const b = book(world);
+  for (let i = 0; i < count; i++) {
+    spawnOne(world, b, em, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0);
+  }
+  return world.components.Emitter.spawned[em]! - before;
+}
+
+/** Turns an emitter's continuous emission on or off. @throws RangeError on a missing emitter. */
+export function setEmitterEnabled(world: PhysicsWorld, em: number, enabled: boolean): void {
+  assertEmitter('setEmitterEnabled', world, em);
+  world.components.Emitter.enabled[em] = enabled ? 1 : 0;
+}
+
+/** Sets an emitter's rate, particles/s (>= 0). @throws RangeError. */
+export function setEmitterRate(world: PhysicsWorld, em: number, rate: number): void {
+  assertEmitter('setEmitterRate', world, em);
+  assertNonNegative('setEmitterRate', 'rate', rate);
+  world.components.Emitter.rate[em] = rate;
+}
+
+/**
+ * Registers a hook run for every particle that expires, just before it is removed (its components are
+ * still readable). Returns a function that unregisters it. @throws TypeError if not a function.
+ */
+export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): () => void {
+  if (typeof hook !== 'function') throw new TypeError(`onParticleDeath: hook must be a function, got ${describe(hook)}`);
+  const b = book(world);
+  b.hooks.push(hook);
+  return () => { const i = b.hooks.indexOf(hook); if (i >= 0) b.hooks.splice(i, 1); };
+}
+
+/** A particle's look now: colour 0xRRGGBB, size (m) and alpha, linear in age / duration. */
+export interface ParticleLook { color: number; size: number; alpha: number }
+
+/**
+ * The look of particle `eid` at its current age (for renderers), written into `out`.
+ * Colours interpolate per channel.
+ */
+export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook): ParticleLook {
+  const c = world.components;
+  const P = c.Particle, L = c.Lifetime;
+  const d = L.duration[eid]!;
+  let t = d > 0 ? L.age[eid]! / d : 1;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  const a = P.colorStart[eid]!, b = P.colorEnd[eid]!;
+  const r = ((a >> 16) & 255) + (((b >> 16) & 255) - ((a >> 16) & 255)) * t;
+  const g = ((a >> 8) & 255) + (((b >> 8) & 255) - ((a >> 8) & 255)) * t;
+  const bl = (a & 255) + ((b & 255) - (a & 255)) * t;
+  out.color = (Math.round(r) << 16) | (Math.round(g) << 8) | Math.round(bl);
+  out.size = P.sizeStart[eid]! + (P.sizeEnd[eid]! - P.sizeStart[eid]!) * t;
+  out.alpha = P.alphaStart[eid]! + (P.alphaEnd[eid]! - P.alphaStart[eid]!) * t;
+  return out;
+}
