@@ -32,6 +32,9 @@ export interface ContactBuffer {
   a: Int32Array;
   /** Body B entity id (always a moving body). */
   b: Int32Array;
+  /** Solver-body indices of A and B this step (0 = static world); set by the solver. */
+  ia: Int32Array;
+  ib: Int32Array;
   /** Static feature: boundary face or static entity id, see ContactKind. */
   feature: Int32Array;
   /** Unit normal from A to B. */
@@ -69,10 +72,8 @@ export interface ContactBuffer {
   tangentImpulse1: Float64Array;
   /** Accumulated friction impulse along tangent 2 (3D only), N s. */
   tangentImpulse2: Float64Array;
-  /** Tangent 1 (3D: first axis of the basis (n, t1, t2); 2D: (-ny, nx)). */
+  /** Tangent 1 (3D: first axis of the basis (n, t1, n x t1); 2D: (-ny, nx)). */
   t1x: Float64Array; t1y: Float64Array; t1z: Float64Array;
-  /** Tangent 2 (3D only): n x t1. */
-  t2x: Float64Array; t2y: Float64Array; t2z: Float64Array;
   /** Normal relative velocity at the start of the step, before this step's gravity, m/s (negative: approaching). */
   relativeVelocity: Float64Array;
   /** Spawn stamps of A (or of the static feature) and B when the contact was made, to validate the warm-start cache. */
@@ -83,9 +84,9 @@ export interface ContactBuffer {
 const FLOAT_FIELDS = [
   'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'restitution', 'friction', 'frictionBound', 'normalMass',
   'tangentMass', 'normalImpulse', 'maxNormalImpulse', 'totalNormalImpulse', 'impactVelocity', 'tangentImpulse1', 'tangentImpulse2',
-  't1x', 't1y', 't1z', 't2x', 't2y', 't2z', 'relativeVelocity',
+  't1x', 't1y', 't1z', 'relativeVelocity',
 ] as const;
-const INT_FIELDS = ['a', 'b', 'feature'] as const;
+const INT_FIELDS = ['a', 'b', 'ia', 'ib', 'feature'] as const;
 const UINT_FIELDS = ['stampA', 'stampB'] as const;
 
 /**
@@ -96,10 +97,11 @@ export function createContactBuffer(capacity = 1024): ContactBuffer {
   const f = (): Float64Array => new Float64Array(capacity);
   return {
     count: 0, capacity, kind: new Uint8Array(capacity),
-    a: new Int32Array(capacity), b: new Int32Array(capacity), feature: new Int32Array(capacity),
+    a: new Int32Array(capacity), b: new Int32Array(capacity), ia: new Int32Array(capacity), ib: new Int32Array(capacity),
+    feature: new Int32Array(capacity),
     nx: f(), ny: f(), nz: f(), separation: f(), ra: f(), rb: f(), restitution: f(), friction: f(),
     frictionBound: f(), normalMass: f(), tangentMass: f(), rigidPartner: new Uint8Array(capacity), normalImpulse: f(), maxNormalImpulse: f(), totalNormalImpulse: f(), impactVelocity: f(),
-    tangentImpulse1: f(), tangentImpulse2: f(), t1x: f(), t1y: f(), t1z: f(), t2x: f(), t2y: f(), t2z: f(),
+    tangentImpulse1: f(), tangentImpulse2: f(), t1x: f(), t1y: f(), t1z: f(),
     relativeVelocity: f(), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
   };
 }

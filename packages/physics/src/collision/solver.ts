@@ -3,22 +3,24 @@ import { ContactKind, findWarmStart, storeWarmStart, type ContactBuffer } from '
 import { BodyType } from './broadphase';
 import { reportNonFinite } from '../errors';
 import { rotateInPlace } from '../math/quaternion';
+import type { CollisionState } from './state';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
  * v3.0 solver.c and contact_solver.c), fitted to a pipeline where the integrate stage has already run:
  *
- * 1. gather the moving bodies that have contacts and rewind this step's gravity from their velocity
- *    (the integrate stage added g dt; the substeps add it back in pieces);
+ * 1. gather the moving bodies that have contacts into a packed solver state (one row per body, kept
+ *    apart from the components: Box2D's b2BodyState) and rewind this step's gravity from their
+ *    velocity (the integrate stage added g dt; the substeps add it back in pieces);
  * 2. prepare each contact: combined material, effective masses, tangent basis, the normal relative
  *    velocity at the start of the step (for restitution), and last step's impulses (warm start);
  * 3. `solverSubsteps` times, with h_s = h / substeps:
  *    integrate gravity (v += g h_s); warm start; solve with soft bias (non-penetration, then Coulomb
  *    friction |lambda_t| <= mu lambda_n, mu_s while sticking); move the bodies (dx += v h_s); relax
  *    (solve again without bias, so push-out velocity does not survive as kinetic energy);
- * 4. restitution: contacts that approached faster than the threshold and carried an impulse get
- *    v_n = -e v_n0, with v_n0 the approach speed at the start of the step;
- * 5. write positions and store the impulses for the next step's warm start.
+ * 4. restitution (see applyRestitution);
+ * 5. write velocities and positions back to the components and store the impulses for the next
+ *    step's warm start.
  *
  * Separation is tracked linearly: s = s0 + (dx_B - dx_A) . n, with s0 measured where the bodies
  * were at the start of the step. s > 0 is a speculative gap the bodies may close this substep
@@ -46,18 +48,18 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const dyn = makeSoft(hertz, st.contactDampingRatio, hs);
   const rigid = makeSoft(2 * hertz, st.contactDampingRatio, hs);
   const is2D = world.dimensions === 2;
+  const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   for (let s = 0; s < substeps; s++) {
     integrateVelocities(world, hs);
-    warmStart(world, buf);
+    if (is2D) warmStart2D(cs, buf); else warmStart3D(cs, buf);
     for (let it = 0; it < st.solverIterations; it++) {
-      if (is2D) solve2D(world, buf, hs, true, dyn, rigid); else solve3D(world, buf, hs, true, dyn, rigid);
+      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
     }
     integratePositions(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
-      if (is2D) solve2D(world, buf, hs, false, dyn, rigid); else solve3D(world, buf, hs, false, dyn, rigid);
+      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
     }
     // The accumulated impulse is what this substep delivered (warm start plus corrections).
-    const LN = buf.normalImpulse, TOT = buf.totalNormalImpulse;
     for (let i = 0, n = buf.count; i < n; i++) TOT[i] = TOT[i]! + LN[i]!;
   }
   applyRestitution(world, buf);
@@ -81,125 +83,167 @@ function makeSoft(hertz: number, zeta: number, h: number): Softness {
   return { biasRate: omega / a1, massScale: a2 * a3, impulseScale: a3 };
 }
 
+/** Row stride of the packed solver state: 8 in 2D, 12 in 3D (see CollisionState.bodyState). */
+function stride(world: PhysicsWorld): number {
+  return world.dimensions === 2 ? 8 : 12;
+}
+
 /**
- * Collects the moving bodies touched by contacts into `solverBodies`, zeroes their displacement,
- * remembers where the integrator put them (so the integrator's own position update is kept beyond
- * what x0 + v h explains) and rewinds this step's gravity from dynamic bodies' velocities.
+ * Gives every moving body touched by a contact a solver index (0 is the static world), fills its
+ * packed row (velocity with this step's gravity rewound, zero displacement, inverse mass and
+ * inertia) and its extra row (where the integrator put it, beyond x0 + v h; the rotation still owed),
+ * and writes each contact's solver indices.
  */
 function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
   const c = world.components;
   const n = buf.count;
-  const mark = cs.solverMark;
+  const mark = cs.solverMark, index = cs.solverIndex;
   const stamp = ++cs.solverStamp;
   let list = cs.solverBodies;
-  let count = 0;
-  const A = buf.a, B = buf.b;
+  let count = 1;
+  list[0] = 0;
+  const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib;
   for (let i = 0; i < n; i++) {
     const a = A[i]!, b = B[i]!;
-    if (a !== 0 && mark[a] !== stamp) {
-      mark[a] = stamp;
-      if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
-      list[count++] = a;
+    if (a === 0) {
+      IA[i] = 0;
+    } else {
+      if (mark[a] !== stamp) {
+        mark[a] = stamp;
+        if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
+        index[a] = count; list[count++] = a;
+      }
+      IA[i] = index[a]!;
     }
     if (mark[b] !== stamp) {
       mark[b] = stamp;
       if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
-      list[count++] = b;
+      index[b] = count; list[count++] = b;
     }
+    IB[i] = index[b]!;
   }
   cs.solverBodies = list;
   cs.solverBodyCount = count;
 
-  const [dx, dy, dz, bx, by, bz] = cs.delta as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
+  const S = stride(world);
+  if (cs.bodyState.length < count * 12) {
+    cs.bodyState = new Float64Array(Math.max(count * 12, cs.bodyState.length * 2));
+    cs.bodyExtra = new Float64Array(Math.max(count * 6, cs.bodyExtra.length * 2));
+  }
+  const sb = cs.bodyState, ex = cs.bodyExtra;
+  sb.fill(0, 0, S);
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   const h = world.h;
   const g = world.gravity;
   const gx = g[0]! * h, gy = g[1]! * h, gz = g[2]! * h;
-  const type = cs.bodyType;
-  const invInertia = cs.invInertia;
-  const rx = cs.delta[6]!, ry = cs.delta[7]!, rz = cs.delta[8]!;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  for (let k = 0; k < count; k++) {
+  const type = cs.bodyType, invMass = cs.invMass, invInertia = cs.invInertia;
+  const is2D = S === 8;
+  for (let k = 1; k < count; k++) {
     const e = list[k]!;
-    dx[e] = 0; dy[e] = 0; dz[e] = 0;
-    if (type[e] !== BodyType.Dynamic) continue;
+    const o = k * S, q = k * 6;
+    const ii = invInertia[e]!;
+    const dynamic = type[e] === BodyType.Dynamic;
+    // The integrator moved x by v h (plus anything of its own); keep that extra as the base.
+    ex[q] = px[e]! - vx[e]! * h; ex[q + 1] = py[e]! - vy[e]! * h; ex[q + 2] = pz[e]! - vz[e]! * h;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    if (invInertia[e]! > 0) { rx[e] = -wx[e]! * h; ry[e] = -wy[e]! * h; rz[e] = -wz[e]! * h; }
-    // Base: where x0 + v h would not explain the integrator's result (0 for semi-implicit Euler).
-    bx[e] = px[e]! - vx[e]! * h; by[e] = py[e]! - vy[e]! * h; bz[e] = pz[e]! - vz[e]! * h;
-    vx[e] = vx[e]! - gx; vy[e] = vy[e]! - gy; vz[e] = vz[e]! - gz;
+    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
+    if (is2D) {
+      sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 ? wz[e]! : 0;
+      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii;
+    } else {
+      sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
+      sb[o + 3] = ii > 0 ? wx[e]! : 0; sb[o + 4] = ii > 0 ? wy[e]! : 0; sb[o + 5] = ii > 0 ? wz[e]! : 0;
+      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii;
+    }
   }
 }
 
 /** Adds one substep of gravity to the dynamic solver bodies. */
 function integrateVelocities(world: PhysicsWorld, hs: number): void {
   const cs = world.collision;
-  const c = world.components;
-  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType, sb = cs.bodyState;
+  const S = stride(world);
   const g = world.gravity;
   const gx = g[0]! * hs, gy = g[1]! * hs, gz = g[2]! * hs;
-  for (let k = 0; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    vx[e] = vx[e]! + gx; vy[e] = vy[e]! + gy; vz[e] = vz[e]! + gz;
+  for (let k = 1; k < count; k++) {
+    if (type[list[k]!] !== BodyType.Dynamic) continue;
+    const o = k * S;
+    sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
+    if (S === 12) sb[o + 2] = sb[o + 2]! + gz;
   }
 }
 
-/** Advances the solver bodies' displacement by one substep. */
+/** Advances the solver bodies' displacement (and the rotation owed) by one substep. */
 function integratePositions(world: PhysicsWorld, hs: number): void {
   const cs = world.collision;
-  const c = world.components;
-  const list = cs.solverBodies, count = cs.solverBodyCount;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const dx = cs.delta[0]!, dy = cs.delta[1]!, dz = cs.delta[2]!;
-  const rx = cs.delta[6]!, ry = cs.delta[7]!, rz = cs.delta[8]!;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const invInertia = cs.invInertia;
-  for (let k = 0; k < count; k++) {
-    const e = list[k]!;
-    dx[e] = dx[e]! + vx[e]! * hs; dy[e] = dy[e]! + vy[e]! * hs; dz[e] = dz[e]! + vz[e]! * hs;
-    if (invInertia[e]! > 0) { rx[e] = rx[e]! + wx[e]! * hs; ry[e] = ry[e]! + wy[e]! * hs; rz[e] = rz[e]! + wz[e]! * hs; }
+  const count = cs.solverBodyCount, sb = cs.bodyState, ex = cs.bodyExtra;
+  if (stride(world) === 8) {
+    for (let k = 1; k < count; k++) {
+      const o = k * 8;
+      sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
+      if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+    }
+    return;
+  }
+  for (let k = 1; k < count; k++) {
+    const o = k * 12;
+    sb[o + 6] = sb[o + 6]! + sb[o]! * hs; sb[o + 7] = sb[o + 7]! + sb[o + 1]! * hs; sb[o + 8] = sb[o + 8]! + sb[o + 2]! * hs;
+    if (sb[o + 10]! > 0) {
+      const q = k * 6;
+      ex[q + 3] = ex[q + 3]! + sb[o + 3]! * hs; ex[q + 4] = ex[q + 4]! + sb[o + 4]! * hs; ex[q + 5] = ex[q + 5]! + sb[o + 5]! * hs;
+    }
   }
 }
 
 /**
- * Writes the final positions of the dynamic solver bodies (base + displacement) and turns rotating
- * balls by the difference between the spin the solver gave them and the spin the integrator assumed.
- * Records the deepest overlap left, measured linearly as in the solve.
+ * Writes the solver bodies back: velocities; positions (base + displacement) and orientations (turned
+ * by the rotation owed) of dynamic bodies. Records the deepest overlap left, measured linearly as in
+ * the solve.
  */
 function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
   const c = world.components;
-  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
-  const [dx, dy, dz, bx, by, bz] = cs.delta as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
-  const rx = cs.delta[6]!, ry = cs.delta[7]!, rz = cs.delta[8]!;
+  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType, sb = cs.bodyState, ex = cs.bodyExtra;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const invInertia = cs.invInertia;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   const angle = c.Angle.value;
   const q = c.Orientation;
   const is2D = world.dimensions === 2;
+  const S = stride(world);
   let check = 0;
-  for (let k = 0; k < count; k++) {
+  for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
-    const x = bx[e]! + dx[e]!, y = by[e]! + dy[e]!;
-    px[e] = x; py[e] = y;
-    check += x + y;
-    if (!is2D) { pz[e] = bz[e]! + dz[e]!; check += pz[e]!; }
-    if (invInertia[e]! > 0) {
-      if (is2D) angle[e] = angle[e]! + rz[e]!;
-      else rotateInPlace(q.x, q.y, q.z, q.w, e, rx[e]!, ry[e]!, rz[e]!);
+    const o = k * S, r = k * 6;
+    if (is2D) {
+      vx[e] = sb[o]!; vy[e] = sb[o + 1]!;
+      const x = ex[r]! + sb[o + 3]!, y = ex[r + 1]! + sb[o + 4]!;
+      px[e] = x; py[e] = y;
+      check += x + y + sb[o]! + sb[o + 1]!;
+      if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
+    } else {
+      vx[e] = sb[o]!; vy[e] = sb[o + 1]!; vz[e] = sb[o + 2]!;
+      const x = ex[r]! + sb[o + 6]!, y = ex[r + 1]! + sb[o + 7]!, z = ex[r + 2]! + sb[o + 8]!;
+      px[e] = x; py[e] = y; pz[e] = z;
+      check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
+      if (sb[o + 10]! > 0) {
+        wx[e] = sb[o + 3]!; wy[e] = sb[o + 4]!; wz[e] = sb[o + 5]!;
+        rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + 3]!, ex[r + 4]!, ex[r + 5]!);
+      }
     }
   }
-  if (check - check !== 0) reportNonFinite(world, list.subarray(0, count), 'collide');
+  if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   let deepest = 0;
-  const A = buf.a, B = buf.b, S = buf.separation, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
+  const IA = buf.ia, IB = buf.ib, S0 = buf.separation, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
+  const dOff = is2D ? 3 : 6;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = A[i]!, b = B[i]!;
-    const s = S[i]! + (dx[b]! - dx[a]!) * NX[i]! + (dy[b]! - dy[a]!) * NY[i]! + (dz[b]! - dz[a]!) * NZ[i]!;
+    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff;
+    let s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+    if (!is2D) s += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   cs.stats.maxOverlap = -deepest;
@@ -211,34 +255,35 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const st = cs.settings;
   const n = buf.count;
   const is2D = world.dimensions === 2;
-  const invMass = cs.invMass, invInertia = cs.invInertia;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const S = stride(world);
+  const sb = cs.bodyState;
   const eM = c.Material.restitution, fM = c.Material.friction, sM = c.Material.staticFriction;
   const box = cs.boundary;
   const cache = cs.cache;
   const prev = cache.rows;
   const stamp = world.spawnStamp;
   const stick = st.stickSpeed;
-  const A = buf.a, B = buf.b, K = buf.kind, F = buf.feature;
+  const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib, K = buf.kind, F = buf.feature;
   const NX = buf.nx, NY = buf.ny, NZ = buf.nz;
-  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, T2X = buf.t2x, T2Y = buf.t2y, T2Z = buf.t2z;
+  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z;
   const RA = buf.ra, RB = buf.rb;
   const NM = buf.normalMass, TM = buf.tangentMass, RP = buf.rigidPartner;
   const E = buf.restitution, MU = buf.friction, FB = buf.frictionBound, RV = buf.relativeVelocity;
   const IV = buf.impactVelocity, TOT = buf.totalNormalImpulse, S0 = buf.separation;
-  const type = cs.bodyType;
-  const g = world.gravity;
-  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, MAXN = buf.maxNormalImpulse;
   const SA = buf.stampA, SB = buf.stampB;
   const pN = prev.normalImpulse, p1 = prev.tangentImpulse1, p2 = prev.tangentImpulse2;
+  const type = cs.bodyType;
+  const g = world.gravity;
+  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const im = is2D ? 5 : 9, iI = is2D ? 6 : 10;
 
   for (let i = 0; i < n; i++) {
     const a = A[i]!, b = B[i]!, kind = K[i]!, f = F[i]!;
+    const oa = IA[i]! * S, ob = IB[i]! * S;
     const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-    const imA = invMass[a]!, imB = invMass[b]!;
-    const iiA = invInertia[a]!, iiB = invInertia[b]!;
+    const imA = sb[oa + im]!, imB = sb[ob + im]!;
+    const iiA = sb[oa + iI]!, iiB = sb[ob + iI]!;
     const ra = RA[i]!, rb = RB[i]!;
     const k = imA + imB;
     NM[i] = k > 0 ? 1 / k : 0;
@@ -246,22 +291,16 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
     TM[i] = kt > 0 ? 1 / kt : 0;
     RP[i] = imA === 0 || imB === 0 ? 1 : 0;
 
-    // Tangent basis.
+    // Tangent basis (3D: t1 stored, t2 = n x t1 recomputed where needed).
     let t1x: number, t1y: number, t1z: number;
     if (is2D) {
       t1x = -ny; t1y = nx; t1z = 0;
+    } else if (Math.abs(nx) < 0.57735) {
+      const inv = 1 / Math.sqrt(ny * ny + nz * nz);
+      t1x = 0; t1y = nz * inv; t1z = -ny * inv;
     } else {
-      // A unit vector perpendicular to n, continuous except where n crosses |n_x| = 1/sqrt(3).
-      if (Math.abs(nx) < 0.57735) {
-        const inv = 1 / Math.sqrt(ny * ny + nz * nz);
-        t1x = 0; t1y = nz * inv; t1z = -ny * inv;
-      } else {
-        const inv = 1 / Math.sqrt(nx * nx + ny * ny);
-        t1x = ny * inv; t1y = -nx * inv; t1z = 0;
-      }
-      T2X[i] = ny * t1z - nz * t1y;
-      T2Y[i] = nz * t1x - nx * t1z;
-      T2Z[i] = nx * t1y - ny * t1x;
+      const inv = 1 / Math.sqrt(nx * nx + ny * ny);
+      t1x = ny * inv; t1y = -nx * inv; t1z = 0;
     }
     T1X[i] = t1x; T1Y[i] = t1y; T1Z[i] = t1z;
 
@@ -278,7 +317,19 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
     MU[i] = mu;
 
     // Relative velocity at the start of the step (gravity rewound): for restitution and stick/slip.
-    const dvx = vx[b]! - vx[a]!, dvy = vy[b]! - vy[a]!, dvz = vz[b]! - vz[a]!;
+    let dvx: number, dvy: number, dvz: number, vt: number;
+    if (is2D) {
+      dvx = sb[ob]! - sb[oa]!; dvy = sb[ob + 1]! - sb[oa + 1]!; dvz = 0;
+      vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + 2]! * rb - sb[oa + 2]! * ra);
+    } else {
+      dvx = sb[ob]! - sb[oa]!; dvy = sb[ob + 1]! - sb[oa + 1]!; dvz = sb[ob + 2]! - sb[oa + 2]!;
+      // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
+      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!, sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!, sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
+      const cx = dvx + sy * nz - sz * ny, cy = dvy + sz * nx - sx * nz, cz = dvz + sx * ny - sy * nx;
+      const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+      const u1 = cx * t1x + cy * t1y + cz * t1z, u2 = cx * t2x + cy * t2y + cz * t2z;
+      vt = Math.sqrt(u1 * u1 + u2 * u2);
+    }
     const rv = dvx * nx + dvy * ny + dvz * nz;
     RV[i] = rv;
     // Speed at impact: v^2 = v0^2 - 2 a_n s across a gap s > 0 with relative normal acceleration a_n from gravity.
@@ -287,17 +338,6 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
     const v2 = gap > 0 ? rv * rv - 2 * an * gap : rv * rv;
     IV[i] = rv < 0 && v2 > 0 ? -Math.sqrt(v2) : rv;
     TOT[i] = 0;
-    let vt: number;
-    if (is2D) {
-      vt = Math.abs(dvx * t1x + dvy * t1y - wz[b]! * rb - wz[a]! * ra);
-    } else {
-      // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
-      const sx = -rb * wx[b]! - ra * wx[a]!, sy = -rb * wy[b]! - ra * wy[a]!, sz = -rb * wz[b]! - ra * wz[a]!;
-      const cx = dvx + sy * nz - sz * ny, cy = dvy + sz * nx - sx * nz, cz = dvz + sx * ny - sy * nx;
-      const u1 = cx * t1x + cy * t1y + cz * t1z;
-      const u2 = cx * T2X[i]! + cy * T2Y[i]! + cz * T2Z[i]!;
-      vt = Math.sqrt(u1 * u1 + u2 * u2);
-    }
     FB[i] = vt < stick ? Math.max(mus, mu) : mu;
 
     // Warm start from last step's impulses of the same pair.
@@ -315,76 +355,66 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   }
 }
 
-/** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep). */
-function warmStart(world: PhysicsWorld, buf: ContactBuffer): void {
-  const c = world.components;
-  const cs = world.collision;
-  const n = buf.count;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const invMass = cs.invMass, invInertia = cs.invInertia;
-  const A = buf.a, B = buf.b, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb;
-  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, T2X = buf.t2x, T2Y = buf.t2y, T2Z = buf.t2z;
-  const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2;
-  if (world.dimensions === 2) {
-    for (let i = 0; i < n; i++) {
-      const ln = LN[i]!, lt = L1[i]!;
-      if (ln === 0 && lt === 0) continue;
-      const a = A[i]!, b = B[i]!;
-      const nx = NX[i]!, ny = NY[i]!;
-      const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
-      const imA = invMass[a]!, imB = invMass[b]!;
-      vx[a] = vx[a]! - imA * Px; vy[a] = vy[a]! - imA * Py;
-      vx[b] = vx[b]! + imB * Px; vy[b] = vy[b]! + imB * Py;
-      wz[a] = wz[a]! - invInertia[a]! * RA[i]! * lt;
-      wz[b] = wz[b]! - invInertia[b]! * RB[i]! * lt;
-    }
-    vx[0] = 0; vy[0] = 0; wz[0] = 0;
-    return;
+/** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
+function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
+  const n = buf.count, sb = cs.bodyState;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb;
+  const LN = buf.normalImpulse, LT = buf.tangentImpulse1;
+  for (let i = 0; i < n; i++) {
+    const ln = LN[i]!, lt = LT[i]!;
+    if (ln === 0 && lt === 0) continue;
+    const a = IA[i]! * 8, b = IB[i]! * 8;
+    const nx = NX[i]!, ny = NY[i]!;
+    const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
+    const imA = sb[a + 5]!, imB = sb[b + 5]!;
+    sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
+    sb[b] = sb[b]! + imB * Px; sb[b + 1] = sb[b + 1]! + imB * Py;
+    sb[a + 2] = sb[a + 2]! - sb[a + 6]! * RA[i]! * lt;
+    sb[b + 2] = sb[b + 2]! - sb[b + 6]! * RB[i]! * lt;
   }
+}
+
+/** Applies every contact's accumulated impulse, 3D. Angular: dw_A = -I_A^-1 (ra n x P), dw_B = I_B^-1 (-rb n x P). */
+function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
+  const n = buf.count, sb = cs.bodyState;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb;
+  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z;
+  const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2;
   for (let i = 0; i < n; i++) {
     const ln = LN[i]!, l1 = L1[i]!, l2 = L2[i]!;
     if (ln === 0 && l1 === 0 && l2 === 0) continue;
-    const a = A[i]!, b = B[i]!;
-    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-    const Px = ln * nx + l1 * T1X[i]! + l2 * T2X[i]!;
-    const Py = ln * ny + l1 * T1Y[i]! + l2 * T2Y[i]!;
-    const Pz = ln * nz + l1 * T1Z[i]! + l2 * T2Z[i]!;
-    const imA = invMass[a]!, imB = invMass[b]!;
-    vx[a] = vx[a]! - imA * Px; vy[a] = vy[a]! - imA * Py; vz[a] = vz[a]! - imA * Pz;
-    vx[b] = vx[b]! + imB * Px; vy[b] = vy[b]! + imB * Py; vz[b] = vz[b]! + imB * Pz;
-    // Angular: dw_A = -I_A^-1 (ra n x P), dw_B = I_B^-1 (-rb n x P).
+    const a = IA[i]! * 12, b = IB[i]! * 12;
+    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!, t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    const Px = ln * nx + l1 * t1x + l2 * t2x, Py = ln * ny + l1 * t1y + l2 * t2y, Pz = ln * nz + l1 * t1z + l2 * t2z;
+    const imA = sb[a + 9]!, imB = sb[b + 9]!;
+    sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py; sb[a + 2] = sb[a + 2]! - imA * Pz;
+    sb[b] = sb[b]! + imB * Px; sb[b + 1] = sb[b + 1]! + imB * Py; sb[b + 2] = sb[b + 2]! + imB * Pz;
     const cx = ny * Pz - nz * Py, cy = nz * Px - nx * Pz, cz = nx * Py - ny * Px;
-    const ka = invInertia[a]! * RA[i]!, kb = invInertia[b]! * RB[i]!;
-    wx[a] = wx[a]! - ka * cx; wy[a] = wy[a]! - ka * cy; wz[a] = wz[a]! - ka * cz;
-    wx[b] = wx[b]! - kb * cx; wy[b] = wy[b]! - kb * cy; wz[b] = wz[b]! - kb * cz;
+    const ka = sb[a + 10]! * RA[i]!, kb = sb[b + 10]! * RB[i]!;
+    sb[a + 3] = sb[a + 3]! - ka * cx; sb[a + 4] = sb[a + 4]! - ka * cy; sb[a + 5] = sb[a + 5]! - ka * cz;
+    sb[b + 3] = sb[b + 3]! - kb * cx; sb[b + 4] = sb[b + 4]! - kb * cy; sb[b + 5] = sb[b + 5]! - kb * cz;
   }
-  vx[0] = 0; vy[0] = 0; vz[0] = 0; wx[0] = 0; wy[0] = 0; wz[0] = 0;
 }
 
-function solve2D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
-  const c = world.components;
-  const cs = world.collision;
-  const n = buf.count;
+function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
+  const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
   const push = cs.settings.contactPushSpeed;
-  const vx = c.Velocity.x, vy = c.Velocity.y, wz = c.AngularVelocity.z;
-  const dx = cs.delta[0]!, dy = cs.delta[1]!;
-  const invMass = cs.invMass, invInertia = cs.invInertia;
-  const A = buf.a, B = buf.b, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
   const NM = buf.normalMass, TM = buf.tangentMass, FB = buf.frictionBound, RP = buf.rigidPartner;
   const LN = buf.normalImpulse, LT = buf.tangentImpulse1, MAXN = buf.maxNormalImpulse;
   const dBias = dyn.biasRate, dMass = dyn.massScale, dImp = dyn.impulseScale;
   const rBias = rigid.biasRate, rMass = rigid.massScale, rImp = rigid.impulseScale;
 
   for (let i = 0; i < n; i++) {
-    const a = A[i]!, b = B[i]!;
+    const a = IA[i]! * 8, b = IB[i]! * 8;
     const nx = NX[i]!, ny = NY[i]!;
-    const imA = invMass[a]!, imB = invMass[b]!;
-    let vax = vx[a]!, vay = vy[a]!, vbx = vx[b]!, vby = vy[b]!;
+    const imA = sb[a + 5]!, imB = sb[b + 5]!;
+    let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[b]!, vby = sb[b + 1]!;
 
     // Non-penetration, soft when overlapping and useBias, speculative when apart.
-    const s = S0[i]! + (dx[b]! - dx[a]!) * nx + (dy[b]! - dy[a]!) * ny;
+    const s = S0[i]! + (sb[b + 3]! - sb[a + 3]!) * nx + (sb[b + 4]! - sb[a + 4]!) * ny;
     let bias = 0, massScale = 1, impulseScale = 0;
     if (s > 0) {
       bias = s * invH;
@@ -406,7 +436,7 @@ function solve2D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: b
 
     // Coulomb friction along t = (-ny, nx) at the contact point.
     const ra = RA[i]!, rb = RB[i]!;
-    let wa = wz[a]!, wb = wz[b]!;
+    let wa = sb[a + 2]!, wb = sb[b + 2]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
     lambda = -TM[i]! * vt;
     const maxF = FB[i]! * newN;
@@ -417,36 +447,29 @@ function solve2D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: b
     LT[i] = newT;
     Px = -lambda * ny; Py = lambda * nx;
     vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
-    wa -= invInertia[a]! * ra * lambda; wb -= invInertia[b]! * rb * lambda;
+    wa -= sb[a + 6]! * ra * lambda; wb -= sb[b + 6]! * rb * lambda;
 
-    vx[a] = vax; vy[a] = vay; vx[b] = vbx; vy[b] = vby;
-    wz[a] = wa; wz[b] = wb;
+    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
+    sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
   }
-  // Index 0 is the static world; keep it at rest whatever rounding wrote there.
-  vx[0] = 0; vy[0] = 0; wz[0] = 0;
 }
 
-function solve3D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
-  const c = world.components;
-  const cs = world.collision;
-  const n = buf.count;
+function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
+  const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
   const push = cs.settings.contactPushSpeed;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const dx = cs.delta[0]!, dy = cs.delta[1]!, dz = cs.delta[2]!;
-  const invMass = cs.invMass, invInertia = cs.invInertia;
-  const A = buf.a, B = buf.b, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
-  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, T2X = buf.t2x, T2Y = buf.t2y, T2Z = buf.t2z;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
+  const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z;
   const NM = buf.normalMass, TM = buf.tangentMass, FB = buf.frictionBound, RP = buf.rigidPartner;
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, MAXN = buf.maxNormalImpulse;
 
   for (let i = 0; i < n; i++) {
-    const a = A[i]!, b = B[i]!;
+    const a = IA[i]! * 12, b = IB[i]! * 12;
     const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-    const imA = invMass[a]!, imB = invMass[b]!;
+    const imA = sb[a + 9]!, imB = sb[b + 9]!;
+    let vax = sb[a]!, vay = sb[a + 1]!, vaz = sb[a + 2]!, vbx = sb[b]!, vby = sb[b + 1]!, vbz = sb[b + 2]!;
 
-    const s = S0[i]! + (dx[b]! - dx[a]!) * nx + (dy[b]! - dy[a]!) * ny + (dz[b]! - dz[a]!) * nz;
+    const s = S0[i]! + (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
     let bias = 0, massScale = 1, impulseScale = 0;
     if (s > 0) {
       bias = s * invH;
@@ -455,24 +478,24 @@ function solve3D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: b
       bias = soft.biasRate * s; massScale = soft.massScale; impulseScale = soft.impulseScale;
       if (bias < -push) bias = -push;
     }
-    const vn = (vx[b]! - vx[a]!) * nx + (vy[b]! - vy[a]!) * ny + (vz[b]! - vz[a]!) * nz;
+    const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz;
     const oldN = LN[i]!;
     let newN = oldN - NM[i]! * massScale * (vn + bias) - impulseScale * oldN;
     if (newN < 0) newN = 0;
     const dl = newN - oldN;
     LN[i] = newN;
     if (dl > MAXN[i]!) MAXN[i] = dl;
-    if (dl !== 0) {
-      vx[a] = vx[a]! - imA * dl * nx; vy[a] = vy[a]! - imA * dl * ny; vz[a] = vz[a]! - imA * dl * nz;
-      vx[b] = vx[b]! + imB * dl * nx; vy[b] = vy[b]! + imB * dl * ny; vz[b] = vz[b]! + imB * dl * nz;
-    }
+    vax -= imA * dl * nx; vay -= imA * dl * ny; vaz -= imA * dl * nz;
+    vbx += imB * dl * nx; vby += imB * dl * ny; vbz += imB * dl * nz;
 
     // Friction in the tangent plane, clamped to the Coulomb cone.
     const ra = RA[i]!, rb = RB[i]!;
-    let ux = vx[b]! - vx[a]!, uy = vy[b]! - vy[a]!, uz = vz[b]! - vz[a]!;
-    const sx = -rb * wx[b]! - ra * wx[a]!, sy = -rb * wy[b]! - ra * wy[a]!, sz = -rb * wz[b]! - ra * wz[a]!;
+    let wax = sb[a + 3]!, way = sb[a + 4]!, waz = sb[a + 5]!, wbx = sb[b + 3]!, wby = sb[b + 4]!, wbz = sb[b + 5]!;
+    let ux = vbx - vax, uy = vby - vay, uz = vbz - vaz;
+    const sx = -rb * wbx - ra * wax, sy = -rb * wby - ra * way, sz = -rb * wbz - ra * waz;
     ux += sy * nz - sz * ny; uy += sz * nx - sx * nz; uz += sx * ny - sy * nx;
-    const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!, t2x = T2X[i]!, t2y = T2Y[i]!, t2z = T2Z[i]!;
+    const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     const tm = TM[i]!;
     const o1 = L1[i]!, o2 = L2[i]!;
     let n1 = o1 - tm * (ux * t1x + uy * t1y + uz * t1z);
@@ -484,15 +507,16 @@ function solve3D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: b
     L1[i] = n1; L2[i] = n2;
     if (d1 !== 0 || d2 !== 0) {
       const Px = d1 * t1x + d2 * t2x, Py = d1 * t1y + d2 * t2y, Pz = d1 * t1z + d2 * t2z;
-      vx[a] = vx[a]! - imA * Px; vy[a] = vy[a]! - imA * Py; vz[a] = vz[a]! - imA * Pz;
-      vx[b] = vx[b]! + imB * Px; vy[b] = vy[b]! + imB * Py; vz[b] = vz[b]! + imB * Pz;
+      vax -= imA * Px; vay -= imA * Py; vaz -= imA * Pz;
+      vbx += imB * Px; vby += imB * Py; vbz += imB * Pz;
       const cx = ny * Pz - nz * Py, cy = nz * Px - nx * Pz, cz = nx * Py - ny * Px;
-      const ka = invInertia[a]! * ra, kb = invInertia[b]! * rb;
-      wx[a] = wx[a]! - ka * cx; wy[a] = wy[a]! - ka * cy; wz[a] = wz[a]! - ka * cz;
-      wx[b] = wx[b]! - kb * cx; wy[b] = wy[b]! - kb * cy; wz[b] = wz[b]! - kb * cz;
+      const ka = sb[a + 10]! * ra, kb = sb[b + 10]! * rb;
+      wax -= ka * cx; way -= ka * cy; waz -= ka * cz;
+      wbx -= kb * cx; wby -= kb * cy; wbz -= kb * cz;
     }
+    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = vaz; sb[a + 3] = wax; sb[a + 4] = way; sb[a + 5] = waz;
+    sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = vbz; sb[b + 3] = wbx; sb[b + 4] = wby; sb[b + 5] = wbz;
   }
-  vx[0] = 0; vy[0] = 0; vz[0] = 0; wx[0] = 0; wy[0] = 0; wz[0] = 0;
 }
 
 /**
@@ -508,20 +532,18 @@ function solve3D(world: PhysicsWorld, buf: ContactBuffer, hs: number, useBias: b
  * pile from creating energy.
  */
 function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
-  const c = world.components;
   const cs = world.collision;
   const threshold = cs.settings.restitutionThreshold;
   const iterations = cs.settings.restitutionIterations;
-  const n = buf.count;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const invMass = cs.invMass;
-  const A = buf.a, B = buf.b, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
+  const n = buf.count, sb = cs.bodyState;
+  const S = stride(world), is2D = S === 8, im = is2D ? 5 : 9;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const NM = buf.normalMass, E = buf.restitution, RV = buf.relativeVelocity, IV = buf.impactVelocity;
   const MAXN = buf.maxNormalImpulse, TOT = buf.totalNormalImpulse;
-  // Reuse relativeVelocity as the target speed and maxNormalImpulse as the rebound's accumulated
-  // impulse (both are spent by now); a negative target marks a contact that takes no part.
-  // A contact that closed its gap only in the last substep may still be approaching: the impulse to
-  // stop that is part of its compression, so it counts toward the cap too.
+  // Reuse relativeVelocity as the target speed, maxNormalImpulse as the rebound's accumulated impulse
+  // and totalNormalImpulse as its cap (all spent by now); a negative target marks a contact that
+  // takes no part. A contact that closed its gap only in the last substep may still be approaching:
+  // the impulse to stop that is part of its compression, so it counts toward the cap too.
   let bouncing = 0;
   for (let i = 0; i < n; i++) {
     const e = E[i]!;
@@ -529,8 +551,9 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -threshold) {
       RV[i] = -e * IV[i]!;
-      const a = A[i]!, b = B[i]!;
-      const vn = (vx[b]! - vx[a]!) * NX[i]! + (vy[b]! - vy[a]!) * NY[i]! + (vz[b]! - vz[a]!) * NZ[i]!;
+      const a = IA[i]! * S, b = IB[i]! * S;
+      let vn = (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+      if (!is2D) vn += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
       bouncing++;
@@ -541,9 +564,10 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
     for (let i = 0; i < n; i++) {
       const target = RV[i]!;
       if (target < 0) continue;
-      const a = A[i]!, b = B[i]!;
+      const a = IA[i]! * S, b = IB[i]! * S;
       const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-      const vn = (vx[b]! - vx[a]!) * nx + (vy[b]! - vy[a]!) * ny + (vz[b]! - vz[a]!) * nz;
+      let vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny;
+      if (!is2D) vn += (sb[b + 2]! - sb[a + 2]!) * nz;
       const old = MAXN[i]!;
       let acc = old - NM[i]! * (vn - target);
       if (acc < 0) acc = 0;
@@ -551,10 +575,10 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       const dl = acc - old;
       if (dl === 0) continue;
       MAXN[i] = acc;
-      const imA = invMass[a]!, imB = invMass[b]!;
-      vx[a] = vx[a]! - imA * dl * nx; vy[a] = vy[a]! - imA * dl * ny; vz[a] = vz[a]! - imA * dl * nz;
-      vx[b] = vx[b]! + imB * dl * nx; vy[b] = vy[b]! + imB * dl * ny; vz[b] = vz[b]! + imB * dl * nz;
+      const ka = sb[a + im]! * dl, kb = sb[b + im]! * dl;
+      sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
+      sb[b] = sb[b]! + kb * nx; sb[b + 1] = sb[b + 1]! + kb * ny;
+      if (!is2D) { sb[a + 2] = sb[a + 2]! - ka * nz; sb[b + 2] = sb[b + 2]! + kb * nz; }
     }
   }
-  vx[0] = 0; vy[0] = 0; vz[0] = 0;
 }

@@ -72,18 +72,27 @@ export interface CollisionState {
   readonly margin: Float64Array;
   /** Per-entity scratch: BodyType (0 dynamic, 1 kinematic, 2 static) of this step's colliders. */
   readonly bodyType: Uint8Array;
-  /** Solver bodies of this step: the moving bodies that have at least one contact. */
+  /**
+   * Solver bodies of this step: the moving bodies that have at least one contact, as entity ids;
+   * index 0 is the static world. Their working state lives in `bodyState`, packed.
+   */
   solverBodies: Int32Array;
+  /** Solver bodies in use, the static world included. */
   solverBodyCount: number;
-  /** Per-entity scratch: the value of `solverStamp` when the body was put in `solverBodies`. */
+  /** Per-entity scratch: the value of `solverStamp` when the body was given a solver index. */
   readonly solverMark: Float64Array;
-  /** Counter that makes `solverMark` entries of earlier (sub)steps stale. */
+  /** Per-entity scratch: the body's index in `solverBodies` this step. */
+  readonly solverIndex: Int32Array;
+  /** Counter that makes `solverMark` entries of earlier steps stale. */
   solverStamp: number;
   /**
-   * Per-entity scratch, nine arrays: displacement within the step so far (x, y, z), m; the base the
-   * displacement is added to (x, y, z), m; rotation still to apply (x, y, z), rad.
+   * Packed solver state, one row per solver body (Box2D v3's b2BodyState, kept apart from the
+   * components users touch): 2D rows of 8 (vx, vy, w, dx, dy, 1/m, 1/I, pad), 3D rows of 12 (vx, vy,
+   * vz, wx, wy, wz, dx, dy, dz, 1/m, 1/I, pad); d is the displacement within the step, m.
    */
-  readonly delta: Float64Array[];
+  bodyState: Float64Array;
+  /** Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply (x, y, z), rad. */
+  bodyExtra: Float64Array;
   /** Broadphase grid scratch, see broadphase.ts. */
   readonly grid: GridScratch;
   /** Statistics of the last step: candidate pairs, contacts, and the deepest overlap left at its end (m). */
@@ -151,8 +160,10 @@ export function createCollisionState(
     solverBodies: new Int32Array(256),
     solverBodyCount: 0,
     solverMark: new Float64Array(n),
+    solverIndex: new Int32Array(n),
     solverStamp: 0,
-    delta: Array.from({ length: 9 }, () => new Float64Array(n)),
+    bodyState: new Float64Array(12 * 256),
+    bodyExtra: new Float64Array(6 * 256),
     grid: {
       cellSize: 1,
       tableSize: 0,

@@ -1,0 +1,85 @@
+import type { PhysicsWorld } from '../world';
+import { addBody, setBoundary } from '../bodies';
+import { Rng } from '../rng';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate';
+import type { SceneDefinition } from './types';
+
+/** Options of the `spheres-in-box` scene. */
+export interface SpheresInBoxOptions {
+  /** Number of spheres, integer in [1, 2_000_000]. Default 5000. */
+  count?: number;
+  /** Seed of the jitter. Default 1. */
+  seed?: number;
+}
+
+/** The resolved layout of `spheres-in-box`, for peer engines. */
+export interface SpheresInBoxLayout {
+  count: number;
+  /** Centres, m: x0, y0, z0, x1, ... */
+  positions: Float64Array;
+  radius: number;
+  mass: number;
+  restitution: number;
+  friction: number;
+  /** Inner corners of the box, m. */
+  min: [number, number, number];
+  max: [number, number, number];
+  gravity: [number, number, number];
+}
+
+/**
+ * The `spheres-in-box` layout: spheres of radius 0.5 m (1 kg, restitution 0.5, friction 0.1) on a
+ * jittered 1.5 m grid about eight layers deep (a square footprint of ceil(sqrt(N / 8)) cells a side),
+ * in a closed box one cell taller than the layers; gravity (0, -10, 0).
+ * @throws TypeError | RangeError on bad options.
+ */
+export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresInBoxLayout {
+  const where = 'spheres-in-box';
+  assertKnownKeys(where, options, ['count', 'seed']);
+  const count = options.count ?? 5000;
+  assertInteger(where, 'count', count, 1, 2_000_000);
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const spacing = 1.5, radius = 0.5;
+  const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));
+  const layers = Math.ceil(count / (side * side));
+  const rng = new Rng(seed);
+  const jitter = 0.4 * (spacing - 2 * radius);
+  const positions = new Float64Array(3 * count);
+  for (let i = 0; i < count; i++) {
+    const x = i % side, z = Math.floor(i / side) % side, y = Math.floor(i / (side * side));
+    positions[3 * i] = (x + 0.5) * spacing + rng.range(-jitter, jitter);
+    positions[3 * i + 1] = (y + 0.5) * spacing + rng.range(-jitter, jitter);
+    positions[3 * i + 2] = (z + 0.5) * spacing + rng.range(-jitter, jitter);
+  }
+  return {
+    count, positions, radius, mass: 1, restitution: 0.5, friction: 0.1,
+    min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],
+  };
+}
+
+/** Handles of `spheres-in-box`. */
+export interface SpheresInBoxHandles { spheres: Uint32Array; layout: SpheresInBoxLayout }
+
+/** `spheres-in-box`: the 3D benchmark scene compared against rapier3d. */
+export const spheresInBox: SceneDefinition<SpheresInBoxOptions, SpheresInBoxHandles> = {
+  name: 'spheres-in-box',
+  description: 'N spheres (r 0.5 m, e 0.5, mu 0.1) fall from a jittered grid about eight layers deep into a closed box; 3D',
+  defaultCount: 5000,
+  worldOptions(options = {}) {
+    const count = options.count ?? 5000;
+    return { dimensions: 3, capacity: count + 16, gravity: [0, -10, 0] };
+  },
+  build(world: PhysicsWorld, options: SpheresInBoxOptions = {}): SpheresInBoxHandles {
+    if (world.dimensions !== 3) throw new RangeError(`spheres-in-box: needs a 3D world, got dimensions ${world.dimensions}`);
+    const layout = spheresInBoxLayout(options);
+    setBoundary(world, { min: layout.min, max: layout.max, restitution: layout.restitution, friction: layout.friction });
+    const spheres = new Uint32Array(layout.count);
+    const p = layout.positions, pos = [0, 0, 0];
+    for (let i = 0; i < layout.count; i++) {
+      pos[0] = p[3 * i]!; pos[1] = p[3 * i + 1]!; pos[2] = p[3 * i + 2]!;
+      spheres[i] = addBody(world, { position: pos, radius: layout.radius, mass: layout.mass, restitution: layout.restitution, friction: layout.friction });
+    }
+    return { spheres, layout };
+  },
+};
