@@ -2,10 +2,11 @@
  * @bitphysics/render-pixi: draws a 2D bitphysics world with pixi.js 8.
  *
  * The renderer only reads component stores (Position, PreviousPosition, Ball, Angle, Velocity,
- * Segment), the boundary box and the contact cache; it computes no physics. It owns the conversion
- * from SI metres (y up) to CSS pixels (y down): see `Camera`.
+ * Segment, Particle, Lifetime), the boundary box and the contact cache; it computes no physics. It
+ * owns the conversion from SI metres (y up) to CSS pixels (y down): see `Camera`.
  *
- * Entry points: `WorldRenderer` (everything), `Camera` (metres <-> pixels, no pixi inside),
+ * Entry points: `WorldRenderer` (everything), `ParticleLayer` (emitted particles: sparks, smoke;
+ * also the renderer's `particles` option), `Camera` (metres <-> pixels, no pixi inside),
  * `createBallTexture` (the shared circle texture), colour helpers.
  */
 export { WorldRenderer } from './renderer';
@@ -19,5 +20,11 @@ export { parseColor, seededColor, hslToRgb } from './colors';
 export type { ColorInput } from './colors';
 export { resolveTrailOptions } from './trails';
 export type { TrailOptions } from './trails';
+export {
+  ParticleLayer, createSoftParticleTexture, createStreakTexture, resolveParticleLayerOptions, resolveParticleTrailOptions,
+} from './particles';
+export type {
+  ParticleLayerOptions, ParticleTrailOptions, ParticleLayerStats, ResolvedParticleLayerOptions, ResolvedParticleTrailOptions,
+} from './particles';
 export { resolveDebugOptions } from './debug';
 export type { DebugOptions } from './debug';

@@ -5,6 +5,7 @@ import { BallLayer, type BallMode } from './balls';
 import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera';
 import { parseColor, type ColorInput } from './colors';
 import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug';
+import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles';
 import { createBallTexture } from './textures';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails';
 import { WallLayer } from './walls';
@@ -60,11 +61,17 @@ export interface WorldRendererOptions {
   debug?: boolean | DebugOptions;
   /** Edge of the shared ball texture, px, integer in [8, 1024]. Default 128. */
   textureSize?: number;
+  /**
+   * Particle layer (entities with Particle and Position, see `ParticleLayer`), drawn above the
+   * trails and below the balls: `true` for defaults, layer options, or `false` (default) for none.
+   * Particles that also have a Ball (emitted with a collider radius) are drawn by the ball layer too.
+   */
+  particles?: boolean | ParticleLayerOptions;
 }
 
 const RENDERER_OPTIONS = [
   'app', 'width', 'height', 'pixelsPerMeter', 'view', 'padding', 'balls', 'particleThreshold', 'rotation', 'colorSeed',
-  'palette', 'segmentColor', 'boundaryColor', 'trails', 'debug', 'textureSize',
+  'palette', 'segmentColor', 'boundaryColor', 'trails', 'debug', 'textureSize', 'particles',
 ] as const;
 
 /** What the renderer drew in its last frame (one object, updated in place by `render`). */
@@ -81,6 +88,14 @@ export interface RendererStats {
   arrows: number;
   /** Frames rendered since creation. */
   frames: number;
+}
+
+/** Validates particle layer options up front (before anything is allocated); returns them as given. */
+function particleLayerOptions(where: string, options: true | ParticleLayerOptions): ParticleLayerOptions {
+  if (options === true) return {};
+  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: particles must be a boolean or an options object, got ${describe(options)}`);
+  resolveParticleLayerOptions(where, options);
+  return options;
 }
 
 function checkWorld(where: string, world: unknown): asserts world is PhysicsWorld {
@@ -102,7 +117,7 @@ function checkWorld(where: string, world: unknown): asserts world is PhysicsWorl
  *   the framework converts units.
  * - Optional trails and a debug overlay (velocities, contacts, wall outlines).
  *
- * Layers, bottom to top: walls, trails, balls, debug. The hot path (`render`) allocates nothing per
+ * Layers, bottom to top: walls, trails, particles (optional), balls, debug. The hot path (`render`) allocates nothing per
  * entity; trails and debug rebuild pixi Graphics, whose cost is bounded by their options.
  *
  * @example
@@ -124,6 +139,8 @@ export class WorldRenderer {
   private readonly debugHolder = new Container({ label: 'debug-holder' });
   private trails: TrailLayer | null = null;
   private debug: DebugLayer | null = null;
+  private particleLayer: ParticleLayer | null = null;
+  private readonly particleHolder = new Container({ label: 'particle-holder' });
   private readonly ballMode: BallMode | 'auto';
   private readonly threshold: number;
   private readonly fitBoundary: boolean;
@@ -186,6 +203,8 @@ export class WorldRenderer {
       : resolveTrailOptions(where, options.trails === true ? {} : options.trails);
     const debugOptions = options.debug === undefined || options.debug === false ? null
       : resolveDebugOptions(where, options.debug === true ? {} : options.debug);
+    const particleOptions = options.particles === undefined || options.particles === false ? null
+      : particleLayerOptions(where, options.particles);
 
     this.camera = new Camera({
       width, height, padding,
@@ -200,7 +219,8 @@ export class WorldRenderer {
     this.texture = createBallTexture({ size: textureSize, mark: rotation });
     this.balls = new BallLayer(this.texture, mode === 'particles' ? 'particles' : 'sprites', rotation, colorSeed, palette);
     this.walls = new WallLayer(segmentColor, boundaryColor);
-    this.root.addChild(this.walls.graphics, this.trailHolder, this.balls.container, this.debugHolder);
+    this.root.addChild(this.walls.graphics, this.trailHolder, this.particleHolder, this.balls.container, this.debugHolder);
+    if (particleOptions) this.installParticles(particleOptions);
     this.bindWorld(world);
     if (trailOptions) this.installTrails(trailOptions);
     if (debugOptions) this.installDebug(debugOptions);
@@ -260,6 +280,7 @@ export class WorldRenderer {
       trails.draw(world, balls, this.camera, alpha);
     }
     balls.update(world, this.camera, alpha, stepped);
+    this.particleLayer?.render(world, this.camera, alpha);
     const debug = this.debug;
     if (debug) debug.draw(world, balls, this.camera, alpha);
     const s = this.stats;
@@ -355,6 +376,31 @@ export class WorldRenderer {
     if (resolved) this.installDebug(resolved);
   }
 
+  /**
+   * The particle layer, or null when particles are off. Its `stats` say how many particles were drawn;
+   * `setBlend` and `setTrails` change it in place.
+   */
+  get particles(): ParticleLayer | null {
+    return this.particleLayer;
+  }
+
+  /**
+   * Turns the particle layer on (`true` or options, replacing the current layer) or off (`false`).
+   * @throws TypeError | RangeError on bad options (named with their value); Error after `destroy`.
+   */
+  setParticles(options: boolean | ParticleLayerOptions): void {
+    this.assertAlive('setParticles');
+    const resolved = options === false ? null : particleLayerOptions('WorldRenderer.setParticles', options);
+    if (this.particleLayer) {
+      this.particleLayer.destroy();
+      this.particleLayer = null;
+    }
+    if (resolved) {
+      this.installParticles(resolved);
+      this.particleLayer!.bind(this.worldRef);
+    }
+  }
+
   /** Whether the debug overlay is on. */
   get debugEnabled(): boolean {
     return this.debug !== null;
@@ -371,6 +417,7 @@ export class WorldRenderer {
     this.root.parent?.removeChild(this.root);
     this.trails?.destroy();
     this.debug?.destroy();
+    this.particleLayer?.destroy();
     this.balls.destroy();
     this.walls.destroy();
     this.root.destroy({ children: true });
@@ -382,6 +429,7 @@ export class WorldRenderer {
     this.balls.bind(world);
     this.walls.bind(world);
     this.trails?.bind(world);
+    this.particleLayer?.bind(world);
     this.lastSteps = -1;
     this.boxSeen[0] = -1;
   }
@@ -394,6 +442,12 @@ export class WorldRenderer {
     this.balls.listener = trails;
     // Balls already shown get a trail too.
     for (let i = 0; i < this.balls.count; i++) trails.added(this.balls.eids[i]!);
+  }
+
+  private installParticles(options: ParticleLayerOptions): void {
+    const layer = new ParticleLayer(options);
+    this.particleLayer = layer;
+    this.particleHolder.addChild(layer.container);
   }
 
   private installDebug(options: ReturnType<typeof resolveDebugOptions>): void {
