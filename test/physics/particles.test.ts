@@ -116,7 +116,7 @@ describe('emitters', () => {
       addEmitter(world, { rate: 100, lifetime: [0.5, 1], speed: [1, 5], shape: 'disc', size: 2 });
       stepMany(world, 100);
       const P = world.components.Position;
-      return query(world, [world.components.Particle]).map((e) => [P.x[e], P.y[e]]);
+      return Array.from(query(world, [world.components.Particle]), (e) => [P.x[e], P.y[e]]);
     };
     expect(run()).toEqual(run());
   });
