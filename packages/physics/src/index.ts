@@ -71,6 +71,10 @@ export { thrustSystem, burnFuelSystem } from './forces/thrust';
 export {
   buildTree, treeField, treeFields, treeFieldsSorted, worldTree, worldTreeFields, barnesHutGravity,
 } from './forces/barnes-hut';
+export {
+  directField, sampleIndices, fieldErrorStats, gravityFieldError, forceErrorMedian, gravityMomentumRate,
+} from './forces/gravity-accuracy';
+export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy';
 export type { GravityTree } from './forces/barnes-hut';
 export { NonFiniteStateError } from './errors';
 export { Rng } from './rng';
