@@ -121,6 +121,8 @@ export interface GravityTree {
   ax: Float64Array; ay: Float64Array; az: Float64Array;
   /** Smallest half edge that still splits, m. */
   minHalf: number;
+  /** The last build met a non-finite position: no tree was built and every field is NaN. */
+  nonFinite: boolean;
   /** Work of the last evaluation: cell-cell expansions, direct body pairs, and cell pairs visited by the walk. */
   stats: { cellPairs: number; bodyPairs: number; visits: number };
 }
@@ -143,7 +145,7 @@ function createTree(dims: 2 | 3): GravityTree {
     taskI: new Int32Array(MAX_DEPTH * 8 * 5), taskF: new Float64Array(MAX_DEPTH * 8 * 4),
     parent: new Int32Array(nodes),
     ax: new Float64Array(0), ay: new Float64Array(0), az: new Float64Array(0),
-    minHalf: 0,
+    minHalf: 0, nonFinite: false,
     stats: { cellPairs: 0, bodyPairs: 0, visits: 0 },
   };
 }
@@ -208,7 +210,8 @@ function spread3(v: number): number {
 /**
  * Builds the tree over n bodies with positions (x, y, z), m, and masses m, kg (>= 0), arrays indexed
  * 0..n-1 (z is ignored in 2D). Bodies of zero mass are kept (they still get a field) but weigh
- * nothing. Non-finite positions do not hang the build (they end in one leaf) but give NaN fields.
+ * nothing. A non-finite position (NaN, infinite) builds no tree and makes every field NaN, so that the
+ * integrator reports the body instead of the tree degenerating into one O(N^2) leaf.
  *
  * The bodies are sorted by Morton (Z-order) key, computed in the root cube (16 bits per axis in 2D,
  * 10 in 3D) by a stable least-significant-digit radix sort, so the quadtree's cells down to the key
@@ -222,15 +225,23 @@ export function buildTree(
   const is3D = t.dims === 3;
   growBodies(t, n);
   let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
+  let bad = false;
   for (let i = 0; i < n; i++) {
     const px = x[i]!, py = y[i]!;
     if (px < minX) minX = px; if (px > maxX) maxX = px;
     if (py < minY) minY = py; if (py > maxY) maxY = py;
-    if (is3D) { const pz = z[i]!; if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz; }
+    if (px - px !== 0 || py - py !== 0) bad = true; // NaN or infinite
+    if (is3D) { const pz = z[i]!; if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz; if (pz - pz !== 0) bad = true; }
   }
   if (!is3D) { minZ = 0; maxZ = 0; }
   t.n = n;
   t.nodeCount = 0;
+  t.nonFinite = bad;
+  if (bad) {
+    // No tree: every field is NaN (see treeFieldsSorted), so the integrator reports the body.
+    for (let i = 0; i < n; i++) { t.perm[i] = i; t.slot[i] = i; t.x[i] = x[i]!; t.y[i] = y[i]!; t.z[i] = is3D ? z[i]! : 0; t.m[i] = m[i]!; }
+    return;
+  }
   if (n === 0) return;
   const half = 0.5 * Math.max(maxX - minX, maxY - minY, maxZ - minZ) * (1 + 1e-9) + 1e-300;
   const cx = 0.5 * (minX + maxX), cy = 0.5 * (minY + maxY), cz = 0.5 * (minZ + maxZ);
@@ -502,7 +513,8 @@ function openFactor(theta: number): number {
 export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number): void {
   const n = t.n;
   t.ax.fill(0, 0, n); t.ay.fill(0, 0, n); t.az.fill(0, 0, n);
-  t.stats.cellPairs = 0; t.stats.bodyPairs = 0;
+  t.stats.cellPairs = 0; t.stats.bodyPairs = 0; t.stats.visits = 0;
+  if (t.nonFinite) { t.ax.fill(NaN, 0, n); t.ay.fill(NaN, 0, n); t.az.fill(NaN, 0, n); return; }
   if (n === 0) return;
   const f = openFactor(theta);
   if (t.dims === 3) {
@@ -897,6 +909,7 @@ function down3(t: GravityTree, G: number): void {
  * treeFields is much faster for all of them, and slightly more accurate at the same theta.
  */
 export function treeField(t: GravityTree, i: number, G: number, eps2: number, theta: number, out: Float64Array): void {
+  if (t.nonFinite) { out[0] = NaN; out[1] = NaN; out[2] = NaN; return; }
   const s = t.slot[i]!;
   const is3D = t.dims === 3, nf = is3D ? NF3 : NF2;
   const F = t.node, skip = t.skip, start = t.start, end = t.end, X = t.x, Y = t.y, Z = t.z, Mb = t.m;
