@@ -906,7 +906,8 @@ function down3(t: GravityTree, G: number): void {
  * a cell is used as a whole (monopole plus quadrupole, the same softened expansion as above with
  * delta = 0) when the body is farther than r / min(theta, 1) from its centre of mass, otherwise
  * opened; leaves are summed directly, excluding i itself. Written into out[0..2]. For a few bodies;
- * treeFields is much faster for all of them, and slightly more accurate at the same theta.
+ * treeFields is much faster for all of them and more accurate at the same theta (on a clustered 2D
+ * set at theta = 0.5: median error 0.4% here, 0.07% there).
  */
 export function treeField(t: GravityTree, i: number, G: number, eps2: number, theta: number, out: Float64Array): void {
   if (t.nonFinite) { out[0] = NaN; out[1] = NaN; out[2] = NaN; return; }
