@@ -18,7 +18,11 @@ export interface ForceLawSettings {
   gravitySoftening: number;
   /** Summation of mutual gravity. */
   gravityMethod: GravityMethod;
-  /** Barnes-Hut opening angle theta (> 0): a cell of size s at distance d is one body if s / d < theta. */
+  /**
+   * Barnes-Hut opening angle theta (> 0): two cells of radii r_A, r_B whose centres of mass are R apart
+   * interact as wholes (by their multipole expansions) when (r_A + r_B) / R < min(theta, 1); smaller is
+   * more accurate and slower (see forces/barnes-hut.ts).
+   */
   openingAngle: number;
   /** Coulomb constant, N m^2 C^-2. */
   coulombConstant: number;
@@ -77,7 +81,7 @@ export interface GravitationOptions {
   softening?: number;
   /** 'direct' or 'barnes-hut'. */
   method?: GravityMethod;
-  /** Barnes-Hut opening angle, > 0 (0.5 is a common accuracy / speed balance). */
+  /** Barnes-Hut opening angle, > 0: cells interact as wholes when (r_A + r_B) / R < theta (0.5: ~0.1% median force error; 0.7: faster, ~0.1-0.6%). */
   openingAngle?: number;
 }
 
