@@ -1,0 +1,263 @@
+/**
+ * The three.js part of the game shell (the 3D counterpart of './pixi'): `createThreeApp` makes a
+ * WebGL renderer whose canvas fills the window, a scene, a perspective camera with orbit controls
+ * (three's own OrbitControls addon) and resize handling; `startThreeGame` joins a `WorldRenderer3D`
+ * to the renderer-agnostic `createGameShell` (page contract, fixed-step loop, P / N / R keys, HUD).
+ * 2D games never load this file, so they never load three.js.
+ */
+import {
+  ACESFilmicToneMapping, Color, PCFShadowMap, PerspectiveCamera, SRGBColorSpace, Scene, WebGLRenderer,
+} from 'three';
+import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import type { PhysicsWorld } from '@bitphysics/physics';
+import { WorldRenderer3D, createOrbitControls, frameBox, type OrbitOptions, type WorldRenderer3DOptions } from '@bitphysics/render-three';
+import { createGameShell, type GameShell, type GameShellOptions } from './shell';
+import type { ControlHint } from './hud';
+
+/** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
+export interface ThreeAppOptions {
+  /** Background colour, 0xRRGGBB. Default 0x10141c. */
+  background?: number;
+  /** Element the canvas is appended to (the canvas fills the window). Default document.body. */
+  parent?: HTMLElement;
+  /** Device pixel ratio to render at, in (0, 4]. Default min(devicePixelRatio, 2). */
+  pixelRatio?: number;
+  /**
+   * Multisample antialiasing. Default: on, except under a software WebGL implementation
+   * (SwiftShader, llvmpipe), where it costs most of the frame (`isSoftwareWebGL`).
+   */
+  antialias?: boolean;
+  /** Shadow maps (PCF filtered). Default true. */
+  shadows?: boolean;
+  /** Vertical field of view, degrees, in (0, 180). Default 50. */
+  fov?: number;
+  /** Camera position, scene units. Default (6, 4.5, 8). */
+  cameraPosition?: ArrayLike<number>;
+  /** Orbit controls options, or false for none. Default {} (three's defaults: left drag orbits). */
+  controls?: OrbitOptions | false;
+}
+
+const APP_OPTIONS = ['background', 'parent', 'pixelRatio', 'antialias', 'shadows', 'fov', 'cameraPosition', 'controls'];
+
+let softwareGL: boolean | null = null;
+
+/**
+ * Whether WebGL runs in software (SwiftShader, llvmpipe, "Software" renderers, as in headless
+ * Chromium): asks a throwaway context for its unmasked renderer string (WEBGL_debug_renderer_info).
+ * Cached after the first call; false when the string is not available.
+ */
+export function isSoftwareWebGL(): boolean {
+  if (softwareGL !== null) return softwareGL;
+  softwareGL = false;
+  try {
+    const gl = document.createElement('canvas').getContext('webgl2') ?? document.createElement('canvas').getContext('webgl');
+    if (gl) {
+      const ext = gl.getExtension('WEBGL_debug_renderer_info');
+      const name = ext ? String(gl.getParameter(ext.UNMASKED_RENDERER_WEBGL)) : String(gl.getParameter(gl.RENDERER));
+      softwareGL = /swiftshader|llvmpipe|software|softpipe/i.test(name);
+      gl.getExtension('WEBGL_lose_context')?.loseContext();
+    }
+  } catch {
+    softwareGL = false;
+  }
+  return softwareGL;
+}
+
+/** What the WebGL renderer did in the last frame (`WebGLRenderer.info`). */
+export interface FrameInfo {
+  /** Draw calls, shadow passes included. */
+  calls: number;
+  /** Triangles drawn. */
+  triangles: number;
+  /** Line segments drawn. */
+  lines: number;
+  /** Points drawn. */
+  points: number;
+  /** Geometries and textures held on the GPU. */
+  geometries: number;
+  textures: number;
+}
+
+/** A three.js page: renderer, scene, camera, controls, sized to the window. */
+export interface ThreeApp {
+  /** The WebGL renderer. */
+  readonly renderer: WebGLRenderer;
+  /** The scene. */
+  readonly scene: Scene;
+  /** The camera (its aspect follows the window). */
+  readonly camera: PerspectiveCamera;
+  /** The orbit controls, or null when turned off. */
+  readonly controls: OrbitControls | null;
+  /** The canvas. */
+  readonly canvas: HTMLCanvasElement;
+  /** Updates the controls (damping) and draws the scene. */
+  render(): void;
+  /** Draw calls, triangles and GPU resources of the last `render`. */
+  info(): FrameInfo;
+  /**
+   * Converts a pointer position (clientX, clientY, CSS px) to normalised device coordinates
+   * (-1..1, y up) of the canvas, written into `out` (allocated if omitted).
+   */
+  toNdc(clientX: number, clientY: number, out?: [number, number]): [number, number];
+  /** Frames the camera on the box (min, max), scene units (see render-three's `frameBox`). */
+  frame(min: ArrayLike<number>, max: ArrayLike<number>, direction?: ArrayLike<number>): void;
+  /** Stops following resizes, disposes the controls and the renderer, removes the canvas. */
+  destroy(): void;
+}
+
+/**
+ * Creates the WebGL renderer (sRGB output, ACES tone mapping, PCF-filtered shadows), a scene with a
+ * background colour, a perspective camera and orbit controls; the canvas fills the window and
+ * follows its resizes. Nothing is drawn until `render`.
+ * @throws TypeError on an unknown option; RangeError on pixelRatio outside (0, 4] or fov outside (0, 180);
+ *   whatever three.js throws when WebGL is unavailable.
+ */
+export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
+  const where = 'createThreeApp';
+  for (const key of Object.keys(options)) {
+    if (!APP_OPTIONS.includes(key)) throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${APP_OPTIONS.join(', ')}`);
+  }
+  const pixelRatio = options.pixelRatio ?? Math.min(window.devicePixelRatio || 1, 2);
+  if (!(pixelRatio > 0 && pixelRatio <= 4)) throw new RangeError(`${where}: pixelRatio must be in (0, 4], got ${pixelRatio}`);
+  const fov = options.fov ?? 50;
+  if (!(fov > 0 && fov < 180)) throw new RangeError(`${where}: fov must be in (0, 180) degrees, got ${fov}`);
+  const cameraPosition = options.cameraPosition ?? [6, 4.5, 8];
+  if (cameraPosition.length !== 3 || !Array.from(cameraPosition).every(Number.isFinite)) {
+    throw new RangeError(`${where}: cameraPosition must be 3 finite numbers, got ${JSON.stringify(Array.from(cameraPosition))}`);
+  }
+  const parent = options.parent ?? document.body;
+  const renderer = new WebGLRenderer({ antialias: options.antialias ?? !isSoftwareWebGL(), powerPreference: 'high-performance' });
+  renderer.setPixelRatio(pixelRatio);
+  renderer.outputColorSpace = SRGBColorSpace;
+  renderer.toneMapping = ACESFilmicToneMapping;
+  renderer.toneMappingExposure = 1;
+  renderer.shadowMap.enabled = options.shadows ?? true;
+  renderer.shadowMap.type = PCFShadowMap;
+  const canvas = renderer.domElement;
+  canvas.style.display = 'block';
+  canvas.style.touchAction = 'none';
+  parent.append(canvas);
+  const scene = new Scene();
+  scene.background = new Color(options.background ?? 0x10141c);
+  const camera = new PerspectiveCamera(fov, 1, 0.01, 1000);
+  camera.position.set(cameraPosition[0]!, cameraPosition[1]!, cameraPosition[2]!);
+  const controls = options.controls === false ? null : createOrbitControls(camera, canvas, options.controls ?? {});
+
+  const resize = (): void => {
+    const w = Math.max(1, parent === document.body ? window.innerWidth : parent.clientWidth);
+    const h = Math.max(1, parent === document.body ? window.innerHeight : parent.clientHeight);
+    renderer.setSize(w, h, true);
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+  };
+  resize();
+  window.addEventListener('resize', resize);
+
+  return {
+    renderer, scene, camera, controls, canvas,
+    render() {
+      controls?.update();
+      renderer.render(scene, camera);
+    },
+    info() {
+      const i = renderer.info;
+      return {
+        calls: i.render.calls, triangles: i.render.triangles, lines: i.render.lines, points: i.render.points,
+        geometries: i.memory.geometries, textures: i.memory.textures,
+      };
+    },
+    toNdc(clientX, clientY, out = [0, 0]) {
+      const rect = canvas.getBoundingClientRect();
+      out[0] = ((clientX - rect.left) / Math.max(1, rect.width)) * 2 - 1;
+      out[1] = -(((clientY - rect.top) / Math.max(1, rect.height)) * 2 - 1);
+      return out;
+    },
+    frame(min, max, direction) {
+      frameBox(camera, controls, min, max, direction ? { direction } : {});
+    },
+    destroy() {
+      window.removeEventListener('resize', resize);
+      controls?.dispose();
+      renderer.dispose();
+      canvas.remove();
+    },
+  };
+}
+
+/** Legend lines for the default orbit controls. */
+export const ORBIT_CONTROLS: readonly ControlHint[] = Object.freeze([
+  { keys: 'Drag', action: 'orbit the camera' },
+  { keys: 'Wheel', action: 'zoom' },
+  { keys: 'Right-drag', action: 'pan' },
+]);
+
+/** Legend lines for orbit controls with the left button left to the game (`leftButton: 'none'`). */
+export const ORBIT_CONTROLS_RIGHT: readonly ControlHint[] = Object.freeze([
+  { keys: 'Right-drag', action: 'orbit the camera (Shift: pan)' },
+  { keys: 'Wheel', action: 'zoom' },
+]);
+
+/** Options of `startThreeGame`: the shell's options (minus `render`) plus the three.js parts. */
+export interface ThreeGameOptions extends Omit<GameShellOptions, 'render'> {
+  /** Options for the WorldRenderer3D (its `scene` is filled in). */
+  renderer?: Omit<WorldRenderer3DOptions, 'scene'>;
+  /** Options for the app (renderer, camera, controls). */
+  app?: ThreeAppOptions;
+  /**
+   * What the camera frames at start: the world's boundary box (`'boundary'`, the default), a box
+   * { min, max } in metres, or null to keep `app.cameraPosition`.
+   */
+  view?: 'boundary' | { min: ArrayLike<number>; max: ArrayLike<number> } | null;
+  /** Direction from the framed box's centre to the camera. Default (0.9, 0.65, 1.25). */
+  viewDirection?: ArrayLike<number>;
+  /** Extra work each frame after the world renderer placed its instances and before the frame is drawn (arrows, labels, camera follow). */
+  onFrame?: (alpha: number, world: PhysicsWorld) => void;
+}
+
+/** What `startThreeGame` returns. */
+export interface ThreeGame {
+  /** The shell (also `window.game`, with `renderer` and `app` exposed on it). */
+  shell: GameShell & { renderer: WorldRenderer3D; app: ThreeApp };
+  /** The three.js app. */
+  app: ThreeApp;
+  /** The world renderer; it follows the shell's world across resets. */
+  renderer: WorldRenderer3D;
+}
+
+/**
+ * Starts a 3D game: app (WebGL renderer, scene, camera, orbit controls), shell (world, loop, keys,
+ * HUD, window.game, ready flag) and a WorldRenderer3D that follows the shell's world across resets.
+ * Each frame: the world renderer places the instances for alpha, `onFrame` runs, the app draws.
+ * Async like `startPixiGame`, so games start the same way.
+ * @throws whatever createThreeApp, createGameShell or the WorldRenderer3D constructor throws (bad options, no WebGL).
+ */
+export async function startThreeGame(options: ThreeGameOptions): Promise<ThreeGame> {
+  const { renderer: rendererOptions, app: appOptions, onFrame, view, viewDirection, ...shellOptions } = options;
+  const app = createThreeApp(appOptions);
+  let renderer: WorldRenderer3D | null = null;
+  const shell = createGameShell({
+    ...shellOptions,
+    render: (alpha, world) => {
+      if (!renderer) return;
+      renderer.render(alpha);
+      onFrame?.(alpha, world);
+      app.render();
+    },
+  });
+  const worldRenderer = new WorldRenderer3D(shell.world, { ...rendererOptions, scene: app.scene });
+  renderer = worldRenderer;
+  shell.onWorldChange((world) => worldRenderer.setWorld(world));
+  const v = view === undefined ? 'boundary' : view;
+  if (v !== null) {
+    const k = worldRenderer.unitsPerMeter;
+    const box = shell.world.collision.boundary;
+    const min = v === 'boundary' ? (box.enabled ? box.min : null) : v.min;
+    const max = v === 'boundary' ? (box.enabled ? box.max : null) : v.max;
+    if (min && max) {
+      app.frame([min[0]! * k, min[1]! * k, min[2]! * k], [max[0]! * k, max[1]! * k, max[2]! * k], viewDirection);
+    }
+  }
+  const exposed = shell.expose({ renderer: worldRenderer, app });
+  shell.start();
+  return { shell: exposed, app, renderer: worldRenderer };
+}

@@ -1,0 +1,110 @@
+import { MOUSE, TOUCH, Vector3, type PerspectiveCamera } from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { assertBoolean, assertKnownKeys, assertPositive, assertVector, describe } from './validate';
+
+/** Options of `createOrbitControls`. Every field optional; unknown fields are rejected. */
+export interface OrbitOptions {
+  /** Point orbited, scene units. Default (0, 0, 0). */
+  target?: ArrayLike<number>;
+  /** Smooth (damped) motion; the controls then need `update()` every frame. Default true. */
+  damping?: boolean;
+  /** Closest zoom, scene units, > 0. Default 0.01. */
+  minDistance?: number;
+  /** Farthest zoom, scene units, > minDistance. Default 1e6. */
+  maxDistance?: number;
+  /**
+   * What the left mouse button does: `'rotate'` (three's default), or `'none'` when the game uses
+   * left drags itself (throwing, picking); the right button then rotates (with Shift / Ctrl: pans)
+   * and the wheel or middle button zooms. Default 'rotate'.
+   */
+  leftButton?: 'rotate' | 'none';
+}
+
+const ORBIT_OPTIONS = ['target', 'damping', 'minDistance', 'maxDistance', 'leftButton'] as const;
+
+/**
+ * Camera controls from three.js' own addons: an `OrbitControls` (orbit around a target, zoom, pan;
+ * mouse and touch) with the framework's defaults.
+ * @throws TypeError | RangeError on bad options (named).
+ */
+export function createOrbitControls(camera: PerspectiveCamera, domElement: HTMLElement, options: OrbitOptions = {}): OrbitControls {
+  const where = 'createOrbitControls';
+  assertKnownKeys(where, options, ORBIT_OPTIONS);
+  const target = options.target ?? [0, 0, 0];
+  assertVector(where, 'target', target, 3);
+  const damping = options.damping ?? true;
+  assertBoolean(where, 'damping', damping);
+  const minDistance = options.minDistance ?? 0.01;
+  assertPositive(where, 'minDistance', minDistance);
+  const maxDistance = options.maxDistance ?? 1e6;
+  assertPositive(where, 'maxDistance', maxDistance);
+  if (!(maxDistance > minDistance)) throw new RangeError(`${where}: maxDistance must be > minDistance, got ${maxDistance} <= ${minDistance}`);
+  const left = options.leftButton ?? 'rotate';
+  if (left !== 'rotate' && left !== 'none') throw new RangeError(`${where}: leftButton must be 'rotate' or 'none', got ${describe(left)}`);
+  const controls = new OrbitControls(camera, domElement);
+  controls.target.set(target[0]!, target[1]!, target[2]!);
+  controls.enableDamping = damping;
+  controls.dampingFactor = 0.12;
+  controls.minDistance = minDistance;
+  controls.maxDistance = maxDistance;
+  controls.screenSpacePanning = true;
+  if (left === 'none') {
+    controls.mouseButtons = { LEFT: null, MIDDLE: MOUSE.DOLLY, RIGHT: MOUSE.ROTATE };
+    controls.touches = { ONE: null, TWO: TOUCH.DOLLY_ROTATE };
+  }
+  controls.update();
+  return controls;
+}
+
+/** Options of `frameBox`. */
+export interface FrameOptions {
+  /** Direction from the box's centre to the camera, any non-zero 3-vector. Default (0.9, 0.65, 1.25). */
+  direction?: ArrayLike<number>;
+  /** Extra room around the box, a factor >= 1 on the fitted distance. Default 1.15. */
+  margin?: number;
+}
+
+const scratch = new Vector3();
+
+/**
+ * Places a perspective camera so the whole box (min, max) (scene units) is in view, looking at its
+ * centre from `direction`; sets the orbit target there and near/far planes to suit the distance.
+ * The fitted distance keeps the box's bounding sphere inside the narrower of the vertical and
+ * horizontal fields of view: d = r / sin(fov / 2).
+ * @throws TypeError | RangeError on bad corners (max must exceed min on every axis) or options.
+ */
+export function frameBox(
+  camera: PerspectiveCamera, controls: { target: Vector3; update(): unknown } | null,
+  min: ArrayLike<number>, max: ArrayLike<number>, options: FrameOptions = {},
+): void {
+  const where = 'frameBox';
+  assertVector(where, 'min', min, 3);
+  assertVector(where, 'max', max, 3);
+  for (let i = 0; i < 3; i++) {
+    if (!(max[i]! >= min[i]!)) throw new RangeError(`${where}: max[${i}] must be >= min[${i}], got ${describe(min)} and ${describe(max)}`);
+  }
+  assertKnownKeys(where, options, ['direction', 'margin']);
+  const d = options.direction ?? [0.9, 0.65, 1.25];
+  assertVector(where, 'direction', d, 3);
+  const margin = options.margin ?? 1.15;
+  assertPositive(where, 'margin', margin);
+  if (margin < 1) throw new RangeError(`${where}: margin must be >= 1, got ${margin}`);
+  const cx = 0.5 * (min[0]! + max[0]!), cy = 0.5 * (min[1]! + max[1]!), cz = 0.5 * (min[2]! + max[2]!);
+  const r = Math.max(1e-6, 0.5 * Math.hypot(max[0]! - min[0]!, max[1]! - min[1]!, max[2]! - min[2]!));
+  const vfov = (camera.fov * Math.PI) / 180;
+  const hfov = 2 * Math.atan(Math.tan(vfov / 2) * camera.aspect);
+  const fov = Math.min(vfov, hfov);
+  const dist = (r / Math.sin(fov / 2)) * margin;
+  scratch.set(d[0]!, d[1]!, d[2]!);
+  if (!(scratch.lengthSq() > 0)) throw new RangeError(`${where}: direction must not be zero`);
+  scratch.normalize();
+  camera.position.set(cx + scratch.x * dist, cy + scratch.y * dist, cz + scratch.z * dist);
+  camera.near = Math.max(1e-4, dist / 200);
+  camera.far = dist * 200;
+  camera.updateProjectionMatrix();
+  camera.lookAt(cx, cy, cz);
+  if (controls) {
+    controls.target.set(cx, cy, cz);
+    controls.update();
+  }
+}
