@@ -155,11 +155,18 @@ export class EnvironmentLayer {
       // translucent and without depth writes so balls show through. The floor is drawn separately.
       const back = glass(st, BackSide);
       const front = glass(st, FrontSide);
-      const hidden = new MeshStandardMaterial({ visible: false });
-      this.owned.push(back, front, hidden);
-      // BoxGeometry groups: +x, -x, +y, -y, +z, -z; -y is the floor.
-      const inner = new Mesh(geometry, [back, back, back, hidden, back, back]);
-      const outer = new Mesh(geometry, [front, front, front, hidden, front, front]);
+      this.owned.push(back, front);
+      // The walls and the ceiling as one index range (one draw call a side): BoxGeometry's groups
+      // are +x, -x, +y, -y, +z, -z, and -y (the floor) is drawn separately.
+      const walls = geometry.clone();
+      const index = geometry.index!.array;
+      const kept: number[] = [];
+      for (const g of geometry.groups) if (g.materialIndex !== 3) for (let i = g.start; i < g.start + g.count; i++) kept.push(index[i]!);
+      walls.setIndex(kept);
+      walls.clearGroups();
+      this.owned.push(walls);
+      const inner = new Mesh(walls, back);
+      const outer = new Mesh(walls, front);
       inner.position.set(cx, cy, cz);
       outer.position.set(cx, cy, cz);
       inner.renderOrder = 2;
