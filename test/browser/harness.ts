@@ -85,7 +85,8 @@ export class Harness {
    * @throws Error (with the page's errors) if the ready flag is not set in time.
    */
   async open(path: string, options: OpenOptions = {}): Promise<GamePage> {
-    const context = await this.browser.newContext({ viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1 });
+    // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
+    const context = await this.browser.newContext({ viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: 'en-US' });
     const page = await context.newPage();
     const gp = new GamePage(context, page);
     this.pages.add(gp);
