@@ -3,6 +3,7 @@ import fc from 'fast-check';
 import {
   addBody, addParticle, addSegment, applyImpulse, ballsInBox, createEntity, createFixedStepLoop, createPhysicsWorld,
   NonFiniteStateError, removeBody, Rng, setBoundary, setMass, setMaterial, setRadius, step, stepMany, addSystem,
+  setTimeStep, setAngularVelocity, setOrientation,
 } from '@bitphysics/physics';
 import { addEntity } from 'bitecs';
 
@@ -199,5 +200,26 @@ describe('tunnelling', () => {
       expect(Math.abs(P.y[ball]!)).toBeLessThan(50 - 0.1 + 1e-6);
       expect(P.x[ball]!).toBeGreaterThan(-50 + 0.1 - 1e-6);
     }
+  });
+});
+
+describe('setters', () => {
+  test('setTimeStep changes dt and substeps; bad values are refused', () => {
+    const world = createPhysicsWorld();
+    setTimeStep(world, 0.01, 2);
+    expect([world.dt, world.substeps, world.h]).toEqual([0.01, 2, 0.005]);
+    expect(() => setTimeStep(world, 0)).toThrow(/dt must be > 0, got 0/);
+    expect(() => setTimeStep(world, 0.01, 0)).toThrow(/substeps must be an integer in \[1, 64\], got 0/);
+  });
+  test('setAngularVelocity and setOrientation write the stores (normalising quaternions)', () => {
+    const world = createPhysicsWorld({ dimensions: 3 });
+    const b = addBody(world, { radius: 1 });
+    setAngularVelocity(world, b, [1, 2, 3]);
+    setOrientation(world, b, [0, 0, 2, 0]);
+    const c = world.components;
+    expect([c.AngularVelocity.x[b], c.AngularVelocity.y[b], c.AngularVelocity.z[b]]).toEqual([1, 2, 3]);
+    expect([c.Orientation.x[b], c.Orientation.y[b], c.Orientation.z[b], c.Orientation.w[b]]).toEqual([0, 0, 1, 0]);
+    expect(() => setOrientation(world, b, [0, 0, 0, 0])).toThrow(/zero quaternion/);
+    expect(() => setAngularVelocity(world, b, 3)).toThrow(TypeError);
   });
 });

@@ -467,3 +467,60 @@ export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): voi
   assertVector('setGravity', 'gravity', gravity, world.dimensions);
   for (let i = 0; i < 3; i++) world.gravity[i] = i < world.dimensions ? gravity[i]! : 0;
 }
+
+/**
+ * Changes the world's fixed step (s, finite and > 0) and optionally its substeps (integer in [1, 64]).
+ * @throws TypeError | RangeError on bad values.
+ */
+export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number): void {
+  assertPositive('setTimeStep', 'dt', dt);
+  if (substeps !== undefined) {
+    if (!Number.isInteger(substeps) || substeps < 1 || substeps > 64) {
+      throw new RangeError(`setTimeStep: substeps must be an integer in [1, 64], got ${describe(substeps)}`);
+    }
+    world.substeps = substeps;
+  }
+  world.dt = dt;
+  world.h = dt / world.substeps;
+}
+
+/**
+ * Sets a body's angular velocity, rad/s: a number (about z) in 2D, a 3-vector (world frame) in 3D.
+ * @throws TypeError | RangeError on a bad value or a missing entity.
+ */
+export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelocity: number | ArrayLike<number>): void {
+  const where = 'setAngularVelocity';
+  assertAlive(where, world, eid);
+  const c = world.components;
+  if (!hasComponent(world, eid, c.AngularVelocity)) addComponent(world, eid, c.AngularVelocity);
+  if (world.dimensions === 2) {
+    assertFinite(where, 'angularVelocity', angularVelocity);
+    c.AngularVelocity.z[eid] = angularVelocity as number;
+    return;
+  }
+  assertVector(where, 'angularVelocity', angularVelocity, 3);
+  const w = angularVelocity as ArrayLike<number>;
+  c.AngularVelocity.x[eid] = w[0]!; c.AngularVelocity.y[eid] = w[1]!; c.AngularVelocity.z[eid] = w[2]!;
+}
+
+/**
+ * Sets a body's orientation: the angle (rad) in 2D, or a quaternion (x, y, z, w), normalised here, in 3D.
+ * @throws TypeError | RangeError on a bad value, a zero quaternion, or a missing entity.
+ */
+export function setOrientation(world: PhysicsWorld, eid: number, orientation: number | ArrayLike<number>): void {
+  const where = 'setOrientation';
+  assertAlive(where, world, eid);
+  const c = world.components;
+  if (world.dimensions === 2) {
+    assertFinite(where, 'orientation', orientation);
+    if (!hasComponent(world, eid, c.Angle)) addComponent(world, eid, c.Angle);
+    c.Angle.value[eid] = orientation as number;
+    return;
+  }
+  assertVector(where, 'orientation', orientation, 4);
+  const q = orientation as ArrayLike<number>;
+  const n = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
+  if (!(n > 0)) throw new RangeError(`${where}: orientation must not be the zero quaternion`);
+  if (!hasComponent(world, eid, c.Orientation)) addComponent(world, eid, c.Orientation);
+  c.Orientation.x[eid] = q[0]! / n; c.Orientation.y[eid] = q[1]! / n; c.Orientation.z[eid] = q[2]! / n; c.Orientation.w[eid] = q[3]! / n;
+}

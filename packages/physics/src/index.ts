@@ -8,7 +8,8 @@ export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS } from './components
 export type { Components, Vec3Store } from './components';
 export {
   createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,
-  setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse, setGravity,
+  setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse, setGravity, setTimeStep,
+  setAngularVelocity, setOrientation,
 } from './bodies';
 export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies';
 export {

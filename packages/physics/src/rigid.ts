@@ -166,9 +166,10 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
 
 /**
  * World-frame angular momentum of one body about its centre of mass, kg m^2/s: I_w w (scalar or tensor).
- * Written into out (length 3) and returned.
+ * Written into out (length 3) and returned. @throws RangeError if the entity is not a body.
  */
 export function spinAngularMomentum(world: PhysicsWorld, eid: number, out: Float64Array = new Float64Array(3)): Float64Array {
+  assertBody('spinAngularMomentum', world, eid);
   const c = world.components;
   const wx = c.AngularVelocity.x[eid]!, wy = c.AngularVelocity.y[eid]!, wz = c.AngularVelocity.z[eid]!;
   if (world.dimensions === 3 && hasComponent(world, eid, c.InertiaTensor)) {
@@ -183,11 +184,13 @@ export function spinAngularMomentum(world: PhysicsWorld, eid: number, out: Float
   return out;
 }
 
+const spinL = new Float64Array(3);
+
 /**
- * Rotational kinetic energy of one body, J: w . (I_w w) / 2.
+ * Rotational kinetic energy of one body, J: w . (I_w w) / 2. @throws RangeError if the entity is not a body.
  */
 export function spinKineticEnergy(world: PhysicsWorld, eid: number): number {
-  const L = spinAngularMomentum(world, eid, new Float64Array(3));
+  const L = spinAngularMomentum(world, eid, spinL);
   const c = world.components;
   return 0.5 * (L[0]! * c.AngularVelocity.x[eid]! + L[1]! * c.AngularVelocity.y[eid]! + L[2]! * c.AngularVelocity.z[eid]!);
 }
