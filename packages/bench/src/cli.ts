@@ -1,0 +1,156 @@
+/**
+ * bitphysics-bench: times a scene of @bitphysics/physics headless in Node, optionally side by side
+ * with peer engines (rapier2d, matter, plain-loop), and reports ms per step, throughput, contacts,
+ * memory, scene-specific quality (e.g. the largest overlap of a settled pile) and ours/peer ratios.
+ *
+ *   npm run bench -- --scene balls-in-box --count 5000 --steps 300 --vs rapier2d,matter
+ *   npm run bench -- --scene particles --count 1000000 --steps 100 --vs plain-loop
+ *   npm run bench -- --list
+ *
+ * Exit codes: 0 done, 1 a run failed, 2 usage error (unknown scene, engine or flag; bad number).
+ */
+import { realpathSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import cliProgress from 'cli-progress';
+import { parseBenchArgs, USAGE, type BenchArgs } from './args';
+import { UsageError, USAGE_EXIT_CODE } from './errors';
+import { ENGINES, enginesFor } from './engines/index';
+import { resolveScene, sceneNames } from './scenes/index';
+import { runBenchmark, SceneBuildError } from './runner';
+import { humanReport, jsonRecords, table } from './report';
+
+/** Where the CLI writes: injectable so the CLI can run inside another program. */
+export interface CliIO {
+  /** Results (human table or JSON lines). */
+  out(text: string): void;
+  /** Notes, warnings, errors. */
+  err(text: string): void;
+  /** Whether stdout is a terminal (enables the progress bar). */
+  readonly isTTY: boolean;
+}
+
+const processIO: CliIO = {
+  out: (text) => process.stdout.write(`${text}\n`),
+  err: (text) => process.stderr.write(`${text}\n`),
+  isTTY: process.stdout.isTTY === true,
+};
+
+/**
+ * Runs the CLI with `argv` (arguments after the script name) and returns the exit code:
+ * 0 success, 1 failure of a run, 2 usage error. Never calls process.exit.
+ */
+export async function main(argv: readonly string[], io: CliIO = processIO): Promise<number> {
+  let args: BenchArgs;
+  try {
+    args = parseBenchArgs(argv);
+  } catch (error) {
+    if (error instanceof UsageError) {
+      io.err(`bitphysics-bench: ${error.message}`);
+      io.err('run with --help for usage');
+      return USAGE_EXIT_CODE;
+    }
+    throw error;
+  }
+  if (args.help) {
+    io.out(USAGE);
+    return 0;
+  }
+  if (args.list) {
+    listScenes(args.json, io);
+    return 0;
+  }
+  return run(args, io);
+}
+
+/** Prints every scene with its description, default count, limit and the engines that support it. */
+function listScenes(json: boolean, io: CliIO): void {
+  const rows: string[][] = [['scene', 'engines', 'default count', 'max count', 'description']];
+  for (const name of sceneNames()) {
+    const s = resolveScene(name)!;
+    const engines = enginesFor(name);
+    if (json) {
+      io.out(JSON.stringify({
+        scene: name, description: s.definition.description, engines,
+        defaultCount: s.definition.defaultCount, maxCount: s.bench.maxCount,
+      }));
+    } else {
+      rows.push([name, engines.join(', '), String(s.definition.defaultCount), String(s.bench.maxCount), s.definition.description]);
+    }
+  }
+  if (!json) {
+    io.out(table(rows, ['l', 'l', 'r', 'r', 'l']));
+    io.out('');
+    io.out('engines:');
+    io.out(table(Object.values(ENGINES).map((e) => [`  ${e.name}`, e.description]), ['l', 'l']));
+  }
+}
+
+/** Runs the benchmark the arguments describe and prints its results. */
+async function run(args: BenchArgs, io: CliIO): Promise<number> {
+  const scene = resolveScene(args.scene)!;
+  const adapters = args.engines.map((name) => ENGINES[name]!);
+  const showBar = io.isTTY && !args.json;
+  const bar = showBar
+    ? new cliProgress.SingleBar(
+      { format: `${args.scene} [{bar}] {percentage}% | {value}/{total} steps | {duration_formatted}`, stream: process.stderr, hideCursor: true, clearOnComplete: true },
+      cliProgress.Presets.shades_classic,
+    )
+    : undefined;
+  let started = false;
+  try {
+    const result = await runBenchmark(
+      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed },
+      {
+        steps: args.steps, warmup: args.warmup, block: args.block,
+        onProgress: bar
+          ? (done, total) => {
+            if (!started) { bar.start(total, 0); started = true; }
+            bar.update(done);
+          }
+          : undefined,
+      },
+    );
+    if (started) bar?.stop();
+    if (args.json) {
+      for (const record of jsonRecords(result, { times: args.times })) io.out(JSON.stringify(record));
+    } else {
+      io.out(humanReport(result, scene.bench));
+    }
+    return 0;
+  } catch (error) {
+    if (started) bar?.stop();
+    if (error instanceof SceneBuildError) {
+      io.err(`bitphysics-bench: ${error.message}`);
+      return error.cause instanceof RangeError || error.cause instanceof TypeError ? USAGE_EXIT_CODE : 1;
+    }
+    io.err(`bitphysics-bench: ${(error as Error).stack ?? String(error)}`);
+    return 1;
+  }
+}
+
+/** Whether this module is the program being run (not imported). */
+function isMain(): boolean {
+  const script = process.argv[1];
+  if (!script) return false;
+  try {
+    return realpathSync(script) === realpathSync(fileURLToPath(import.meta.url));
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * Exits once stdout and stderr have flushed. Exiting explicitly matters: after a run with rapier the
+ * process could otherwise linger for a second or more while V8 finishes background WASM compilation.
+ */
+function exitAfterFlush(code: number): void {
+  process.exitCode = code;
+  process.stdout.write('', () => process.stderr.write('', () => process.exit(code)));
+}
+
+if (isMain()) {
+  main(process.argv.slice(2)).then(exitAfterFlush, (error: unknown) => {
+    process.stderr.write(`bitphysics-bench: ${(error as Error)?.stack ?? String(error)}\n`);
+    exitAfterFlush(1);
+  });
+}

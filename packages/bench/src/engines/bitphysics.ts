@@ -1,0 +1,64 @@
+import { query } from 'bitecs';
+import { contactCount, createPhysicsWorld, SCENES, step, type PhysicsWorld } from '@bitphysics/physics';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
+import { resolveScene } from '../scenes/index';
+
+/**
+ * Our engine: any scene of the physics package's `SCENES` registry, built by the scene's own
+ * builder in a world made from the scene's `worldOptions` (plus the run's seed), stepped with `step`.
+ */
+export const bitphysicsEngine: EngineAdapter = {
+  name: 'bitphysics',
+  description: 'this framework (@bitphysics/physics): the scene builder from SCENES, stepped with step(world)',
+  supports(scene: string): boolean {
+    return Object.prototype.hasOwnProperty.call(SCENES, scene);
+  },
+  async create(options: SceneRunOptions): Promise<EngineInstance> {
+    const resolved = resolveScene(options.scene);
+    if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
+    const { definition, bench } = resolved;
+    const sceneOptions = { count: options.count, seed: options.seed };
+    const w: PhysicsWorld = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed });
+    const handles = definition.build(w, sceneOptions);
+    const ids = bench.bodyIds ? Uint32Array.from(bench.bodyIds(handles)) : Uint32Array.from(query(w, [w.components.Position]));
+    const dims = w.dimensions;
+    const notes = [
+      `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
+        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, no sleeping`,
+    ];
+    return {
+      engine: 'bitphysics',
+      notes,
+      step(): void {
+        step(w);
+      },
+      stats() {
+        return { bodies: ids.length, contacts: contactCount(w) };
+      },
+      snapshot(): BodySnapshot {
+        const c = w.components;
+        const positions = new Float64Array(ids.length * dims);
+        const radius = new Float64Array(ids.length);
+        let round = false;
+        for (let i = 0; i < ids.length; i++) {
+          const e = ids[i]!;
+          positions[i * dims] = c.Position.x[e]!;
+          positions[i * dims + 1] = c.Position.y[e]!;
+          if (dims === 3) positions[i * dims + 2] = c.Position.z[e]!;
+          radius[i] = c.Ball.radius[e]!;
+          if (radius[i]! > 0) round = true;
+        }
+        return round ? { dimensions: dims, count: ids.length, positions, radius } : { dimensions: dims, count: ids.length, positions };
+      },
+      dispose(): void {
+        // Nothing outside the JS heap: the world's typed arrays go with the instance.
+      },
+    };
+  },
+};
+
+/** Formats a time step as 1/N when it is one. */
+export function fmtDt(dt: number): string {
+  const n = 1 / dt;
+  return Math.abs(n - Math.round(n)) < 1e-9 ? `1/${Math.round(n)}` : String(dt);
+}

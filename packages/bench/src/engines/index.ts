@@ -1,0 +1,23 @@
+import type { EngineAdapter } from './types';
+import { bitphysicsEngine } from './bitphysics';
+import { rapier2dEngine } from './rapier2d';
+import { matterEngine } from './matter';
+import { plainLoopEngine } from './plain-loop';
+
+/** Our engine's name; it runs in every benchmark and is the numerator of every ratio. */
+export const OURS = 'bitphysics';
+
+/** Every engine the bench can run, by name (`--vs` takes these names). */
+export const ENGINES: Readonly<Record<string, EngineAdapter>> = Object.freeze({
+  [bitphysicsEngine.name]: bitphysicsEngine,
+  [rapier2dEngine.name]: rapier2dEngine,
+  [matterEngine.name]: matterEngine,
+  [plainLoopEngine.name]: plainLoopEngine,
+});
+
+/** Names of the engines that can build `scene`, ours first. */
+export function enginesFor(scene: string): string[] {
+  return Object.values(ENGINES).filter((e) => e.supports(scene)).map((e) => e.name);
+}
+
+export type { EngineAdapter, EngineInstance, EngineStats, BodySnapshot, SceneRunOptions } from './types';

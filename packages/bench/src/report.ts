@@ -1,0 +1,145 @@
+import { OURS } from './engines/index';
+import type { BenchResult, EngineResult } from './runner';
+import type { BenchScene, ExtraValue } from './scenes/types';
+
+/** A peer's time ratio against our engine. */
+export interface Ratio {
+  /** The peer engine. */
+  readonly peer: string;
+  /** Our median step time divided by the peer's: < 1 means bitphysics is faster. */
+  readonly ratio: number;
+}
+
+/** Ours/peer ratios of median step times, one per peer, in run order. Empty without ours or peers. */
+export function ratios(result: BenchResult): Ratio[] {
+  const ours = result.engines.find((e) => e.engine === OURS);
+  if (!ours) return [];
+  return result.engines
+    .filter((e) => e.engine !== OURS)
+    .map((e) => ({ peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median }));
+}
+
+/** Rounds to `digits` significant digits (keeps JSON lines short without losing what matters). */
+function sig(value: number, digits = 6): number {
+  return Number.isFinite(value) && value !== 0 ? Number(value.toPrecision(digits)) : value;
+}
+
+/**
+ * The JSON objects of a run, one per engine: `scene, engine, count, steps, msPerStep {median, min,
+ * max, mean, p90}, contacts`, then `warmup, seed, bodyStepsPerSecond, heapUsedMB, engineMemoryMB,
+ * setupMs`, the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
+ * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `times`, every
+ * step's milliseconds as `timesMs`.
+ */
+export function jsonRecords(result: BenchResult, options: { times?: boolean } = {}): Array<Record<string, unknown>> {
+  const r = new Map(ratios(result).map((x) => [x.peer, x.ratio]));
+  return result.engines.map((e) => {
+    const record: Record<string, unknown> = {
+      scene: result.scene.scene,
+      engine: e.engine,
+      count: result.scene.count,
+      steps: result.steps,
+      msPerStep: {
+        median: sig(e.msPerStep.median), min: sig(e.msPerStep.min), max: sig(e.msPerStep.max),
+        mean: sig(e.msPerStep.mean), p90: sig(e.msPerStep.p90),
+      },
+      contacts: e.contacts,
+      warmup: result.warmup,
+      seed: result.scene.seed,
+      bodyStepsPerSecond: sig(e.bodyStepsPerSecond, 4),
+      heapUsedMB: sig(result.heapUsedMB, 4),
+      engineMemoryMB: sig(e.engineMemoryMB, 4),
+      setupMs: sig(e.setupMs, 4),
+    };
+    for (const [k, v] of Object.entries(e.extra)) if (!(k in record)) record[k] = v;
+    const ratio = r.get(e.engine);
+    if (ratio !== undefined) {
+      record.ratio = sig(ratio, 4);
+      record.ratioOf = `${OURS}/${e.engine}`;
+    }
+    if (options.times) record.timesMs = Array.from(e.times, (t) => sig(t, 4));
+    return record;
+  });
+}
+
+/** Formats a rate with an SI prefix: 1.75e6 -> "1.75 M". */
+export function formatRate(value: number): string {
+  if (!Number.isFinite(value)) return String(value);
+  const units: Array<[number, string]> = [[1e9, 'G'], [1e6, 'M'], [1e3, 'k']];
+  for (const [f, u] of units) if (Math.abs(value) >= f) return `${(value / f).toPrecision(3)} ${u}`;
+  return value.toPrecision(3);
+}
+
+/** Formats milliseconds with 3 significant digits but at least 3 decimals below 1 ms. */
+export function formatMs(ms: number): string {
+  return ms >= 100 ? ms.toFixed(1) : ms >= 10 ? ms.toFixed(2) : ms.toFixed(3);
+}
+
+/**
+ * Lays out rows of cells as a table, columns two spaces apart. `align` gives each column's
+ * alignment ('l' left, 'r' right); by default the first column is left-aligned, the rest right.
+ */
+export function table(rows: readonly (readonly string[])[], align?: readonly ('l' | 'r')[]): string {
+  const widths: number[] = [];
+  for (const row of rows) row.forEach((cell, i) => { widths[i] = Math.max(widths[i] ?? 0, cell.length); });
+  const left = (i: number): boolean => (align ? align[i] === 'l' : i === 0);
+  return rows
+    .map((row) => row.map((cell, i) => (left(i) ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!))).join('  ').trimEnd())
+    .join('\n');
+}
+
+/**
+ * The human-readable report of a run: a header, one table row per engine (standard columns then
+ * the scene's extra columns), the ours/peer ratios, the process heap, and notes about each engine's
+ * configuration and the scene.
+ */
+export function humanReport(result: BenchResult, scene: BenchScene): string {
+  const { scene: s } = result;
+  const lines: string[] = [];
+  lines.push(
+    `${s.scene}: ${s.count} bodies, ${result.steps} timed steps after ${result.warmup} warm-up, seed ${s.seed}` +
+      (result.engines.length > 1 ? `, engines alternating every ${result.block} steps` : ''),
+    '',
+  );
+  const columns = scene.columns ?? [];
+  const header = ['engine', 'median ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
+  const rows: string[][] = [header];
+  for (const e of result.engines) {
+    rows.push([
+      e.engine,
+      formatMs(e.msPerStep.median),
+      formatMs(e.msPerStep.min),
+      formatMs(e.msPerStep.max),
+      formatRate(e.bodyStepsPerSecond),
+      e.contacts === null ? '-' : String(e.contacts),
+      e.setupMs.toFixed(0),
+      e.engineMemoryMB.toFixed(1),
+      ...columns.map((c) => (c.key in e.extra ? c.format(e.extra[c.key] as ExtraValue) : '-')),
+    ]);
+  }
+  lines.push(table(rows));
+  const r = ratios(result);
+  if (r.length > 0) {
+    lines.push('', 'time ratio ours/peer (median step; < 1: bitphysics is faster):');
+    lines.push(table(r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3)])));
+  }
+  lines.push('', `heap used: ${result.heapUsedMB.toFixed(1)} MB (V8 heap of the whole process after timing)`);
+  const extras = otherExtras(result.engines, new Set(columns.map((c) => c.key)));
+  if (extras.length > 0) lines.push(...extras);
+  const notes = [...result.engines.flatMap((e) => e.notes), ...(scene.notes ?? [])];
+  if (result.engines.some((e) => e.engine === 'matter')) {
+    notes.push('matter-js is not SI (pixels, milliseconds): it ran at 100 px/m with its gravity scaled to 10 m/s^2; its results are converted back to metres.');
+  }
+  if (notes.length > 0) lines.push('', 'notes:', ...notes.map((n) => `  ${n}`));
+  return lines.join('\n');
+}
+
+/** Lines for extra fields that have no column, one per engine that has any. */
+function otherExtras(engines: readonly EngineResult[], shown: ReadonlySet<string>): string[] {
+  const out: string[] = [];
+  for (const e of engines) {
+    const fields = Object.entries(e.extra).filter(([k]) => !shown.has(k));
+    if (fields.length > 0) out.push(`${e.engine}: ${fields.map(([k, v]) => `${k} ${typeof v === 'number' ? sig(v, 6) : v}`).join(', ')}`);
+  }
+  return out;
+}

@@ -1,0 +1,174 @@
+import { performance } from 'node:perf_hooks';
+import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types';
+import type { BenchScene, ExtraValue } from './scenes/types';
+import { summarize, type TimeSummary } from './stats';
+import { collectGarbage, sampleMemory } from './memory';
+
+/**
+ * An engine failed to build the scene (the scene rejected the options, or the engine failed).
+ * `cause` is the original error; a RangeError or TypeError there means bad options.
+ */
+export class SceneBuildError extends Error {
+  /** The engine that failed. */
+  readonly engine: string;
+  constructor(engine: string, options: SceneRunOptions, cause: unknown) {
+    super(`${engine} could not build scene "${options.scene}" with count ${options.count}, seed ${options.seed}: ${(cause as Error)?.message ?? String(cause)}`, { cause });
+    this.name = 'SceneBuildError';
+    this.engine = engine;
+  }
+}
+
+/** How to time a benchmark run. */
+export interface TimingOptions {
+  /** Timed steps per engine, integer >= 1. */
+  readonly steps: number;
+  /** Untimed steps per engine before timing (JIT warm-up, first contacts), integer >= 0. */
+  readonly warmup: number;
+  /**
+   * Steps an engine runs in a row before the next engine takes its turn, integer >= 1. Engines
+   * alternate in blocks of this many steps (the order rotating every round), so every engine is
+   * timed across the same stretch of machine load; within a block its caches stay warm.
+   */
+  readonly block: number;
+  /** Called after every block with steps done and total steps over all engines (warm-up included). */
+  readonly onProgress?: (done: number, total: number) => void;
+}
+
+/** One engine's measurements. */
+export interface EngineResult {
+  /** Engine name. */
+  readonly engine: string;
+  /** Milliseconds of every timed step, in order. */
+  readonly times: Float64Array;
+  /** Per-step time summary, ms. */
+  readonly msPerStep: TimeSummary;
+  /** Bodies times steps per second of wall time, at the median step time. */
+  readonly bodyStepsPerSecond: number;
+  /** Contact points in the last step (engine's own count), null for engines without collisions. */
+  readonly contacts: number | null;
+  /** Bodies in the scene. */
+  readonly bodies: number;
+  /** Time to build the scene in this engine, ms. */
+  readonly setupMs: number;
+  /** Growth of V8 heap plus external memory (typed arrays, WASM) while building the scene, MB. */
+  readonly engineMemoryMB: number;
+  /** Engine-specific counters (EngineStats.extra) and the scene's extra fields for this engine. */
+  readonly extra: Readonly<Record<string, ExtraValue>>;
+  /** How the engine was configured. */
+  readonly notes: readonly string[];
+}
+
+/** Everything one benchmark run measured. */
+export interface BenchResult {
+  /** The scene parameters shared by every engine. */
+  readonly scene: SceneRunOptions;
+  /** Timing parameters. */
+  readonly steps: number;
+  readonly warmup: number;
+  readonly block: number;
+  /** One result an engine, in the order the engines were given. */
+  readonly engines: readonly EngineResult[];
+  /** V8 heap used by the whole process after the timed steps, MB. */
+  readonly heapUsedMB: number;
+  /** Whether a full garbage collection could be forced before timing (makes memory deltas exact). */
+  readonly gcForced: boolean;
+}
+
+/**
+ * Runs one benchmark: prepares every engine, builds the scene in each (one after another, measuring
+ * setup time and memory), runs `warmup` then `steps` steps per engine alternating in blocks (see
+ * `TimingOptions.block`) with performance.now() around every single step, then reads each engine's
+ * statistics and final snapshot and lets the scene compute its extra fields. Engines are disposed
+ * at the end, also on error.
+ *
+ * @throws SceneBuildError if an engine cannot build the scene; whatever a step throws.
+ */
+export async function runBenchmark(
+  adapters: readonly EngineAdapter[], scene: BenchScene, options: SceneRunOptions, timing: TimingOptions,
+): Promise<BenchResult> {
+  for (const a of adapters) await a.prepare?.();
+  const instances: EngineInstance[] = [];
+  const setupMs: number[] = [];
+  const memoryMB: number[] = [];
+  let gcForced = false;
+  try {
+    for (const a of adapters) {
+      // Twice: the first collection can leave garbage that only a second one frees (weak references).
+      gcForced = collectGarbage() && collectGarbage();
+      const m0 = sampleMemory();
+      const t0 = performance.now();
+      try {
+        instances.push(await a.create(options));
+      } catch (error) {
+        throw new SceneBuildError(a.name, options, error);
+      }
+      setupMs.push(performance.now() - t0);
+      collectGarbage();
+      collectGarbage();
+      const m1 = sampleMemory();
+      memoryMB.push(m1.heapUsed + m1.external - m0.heapUsed - m0.external);
+    }
+    const total = (timing.steps + timing.warmup) * instances.length;
+    let done = 0;
+    const progress = (k: number): void => {
+      done += k;
+      timing.onProgress?.(done, total);
+    };
+    runInterleaved(instances, timing.warmup, timing.block, null, progress);
+    collectGarbage();
+    const times = instances.map(() => new Float64Array(timing.steps));
+    runInterleaved(instances, timing.steps, timing.block, times, progress);
+    const heapUsedMB = sampleMemory().heapUsed;
+
+    const engines = instances.map((inst, i): EngineResult => {
+      const stats = inst.stats();
+      const snapshot = scene.extras ? inst.snapshot() : undefined;
+      const sceneExtra = scene.extras && snapshot ? scene.extras(snapshot, options) : {};
+      const msPerStep = summarize(times[i]!);
+      return {
+        engine: inst.engine,
+        times: times[i]!,
+        msPerStep,
+        bodyStepsPerSecond: msPerStep.median > 0 ? (stats.bodies * 1000) / msPerStep.median : Infinity,
+        contacts: stats.contacts,
+        bodies: stats.bodies,
+        setupMs: setupMs[i]!,
+        engineMemoryMB: memoryMB[i]!,
+        extra: { ...(stats.extra ?? {}), ...sceneExtra },
+        notes: inst.notes,
+      };
+    });
+    return { scene: options, steps: timing.steps, warmup: timing.warmup, block: timing.block, engines, heapUsedMB, gcForced };
+  } finally {
+    for (const inst of instances) inst.dispose();
+  }
+}
+
+/**
+ * Steps every instance `steps` times, alternating in blocks of `block` steps with the engine order
+ * rotating every round; records each step's milliseconds into `times[engine][step]` when given.
+ */
+export function runInterleaved(
+  instances: readonly EngineInstance[], steps: number, block: number, times: Float64Array[] | null,
+  progress?: (steps: number) => void,
+): void {
+  const m = instances.length;
+  for (let start = 0, round = 0; start < steps; start += block, round++) {
+    const k = Math.min(block, steps - start);
+    for (let j = 0; j < m; j++) {
+      const idx = (j + round) % m;
+      const inst = instances[idx]!;
+      const out = times ? times[idx]! : null;
+      if (out) {
+        for (let s = 0; s < k; s++) {
+          const t0 = performance.now();
+          inst.step();
+          out[start + s] = performance.now() - t0;
+        }
+      } else {
+        for (let s = 0; s < k; s++) inst.step();
+      }
+      progress?.(k);
+    }
+  }
+}

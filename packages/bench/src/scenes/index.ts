@@ -1,0 +1,33 @@
+import { MAX_CAPACITY, SCENES, type SceneDefinition } from '@bitphysics/physics';
+import type { BenchScene } from './types';
+import { ballsInBoxBench } from './balls-in-box';
+import { particlesBench } from './particles';
+
+/** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
+const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
+  [ballsInBoxBench.name]: ballsInBoxBench,
+  [particlesBench.name]: particlesBench,
+});
+
+/** A scene as the bench sees it: the physics package's definition plus the bench adapter. */
+export interface ResolvedScene {
+  /** The physics package's definition (name, description, defaultCount, builder). */
+  readonly definition: SceneDefinition<{ count?: number; seed?: number }, unknown>;
+  /** The bench adapter; a generic one (limit = world capacity, no extras) for scenes without their own. */
+  readonly bench: BenchScene;
+}
+
+/** Names of every scene in the physics package's registry, in registry order. */
+export function sceneNames(): string[] {
+  return Object.keys(SCENES);
+}
+
+/** The scene called `name`, or undefined if the physics package has none by that name. */
+export function resolveScene(name: string): ResolvedScene | undefined {
+  if (!Object.prototype.hasOwnProperty.call(SCENES, name)) return undefined;
+  const definition = SCENES[name]!;
+  const bench = BENCH_SCENES[name] ?? { name, maxCount: MAX_CAPACITY };
+  return { definition, bench };
+}
+
+export type { BenchScene, ExtraColumn, ExtraValue } from './types';
