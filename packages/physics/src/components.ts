@@ -235,10 +235,41 @@ export interface Components {
   Plane: { nx: Float64Array; ny: Float64Array; nz: Float64Array; d: Float64Array };
 }
 
-/** Allocates every store of a world with room for `capacity` entities (ids 1..capacity). */
+/**
+ * Components whose arrays are allocated when the component is first added to any entity (until then
+ * their arrays are empty): force laws, fields, springs, emitters and other parts most worlds never
+ * use. A world of a million bare particles then reserves the arrays of the core components (about
+ * 0.3 kB an entity) instead of every component's (about 1.4 kB). Nothing reads a store for an entity
+ * without its component, so the empty arrays are never read. Code that keeps a store's array across
+ * steps must take it again after the component is first added.
+ */
+export const LAZY_COMPONENTS = [
+  'LinearDrag', 'QuadraticDrag', 'GravityScale', 'Attractor', 'Charge', 'ElectricField', 'MagneticField',
+  'CentralForce', 'Lift', 'Buoyancy', 'FluidRegion', 'Spring', 'DrivingForce', 'RandomForce', 'Thrust', 'Vortex',
+  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane',
+] as const satisfies ReadonlyArray<keyof Components>;
+
+type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
+
+/** Gives every array of `store` room for `capacity` entities if it has none yet (see LAZY_COMPONENTS). */
+export function materializeStore(store: object, capacity: number): void {
+  const rec = store as Record<string, TypedArray>;
+  for (const key of Object.keys(rec)) {
+    const arr = rec[key]!;
+    if (ArrayBuffer.isView(arr) && arr.length < capacity + 1) {
+      rec[key] = new (arr.constructor as new (n: number) => TypedArray)(capacity + 1);
+    }
+  }
+}
+
+/**
+ * Allocates the stores of a world with room for `capacity` entities (ids 1..capacity); the stores in
+ * LAZY_COMPONENTS start empty and are allocated by `materializeStore` on their first use.
+ */
 export function createComponents(capacity: number): Components {
   const n = capacity + 1;
   const f = (): Float64Array => new Float64Array(n);
+  const z = (): Float64Array => new Float64Array(0);
   return {
     Position: vec3(n),
     Velocity: vec3(n),
@@ -250,36 +281,36 @@ export function createComponents(capacity: number): Components {
     Material: { restitution: f(), friction: f(), staticFriction: f() },
     Static: {},
     Kinematic: {},
-    LinearDrag: { k: f() },
-    QuadraticDrag: { k: f() },
-    GravityScale: { value: f() },
+    LinearDrag: { k: z() },
+    QuadraticDrag: { k: z() },
+    GravityScale: { value: z() },
     MutualGravity: {},
-    Attractor: { mass: f(), softening: f() },
-    Charge: { value: f() },
-    ElectricField: { x: f(), y: f(), z: f(), ampX: f(), ampY: f(), ampZ: f(), omega: f(), phase: f() },
-    MagneticField: { x: f(), y: f(), z: f(), ampX: f(), ampY: f(), ampZ: f(), omega: f(), phase: f() },
-    CentralForce: { cx: f(), cy: f(), cz: f(), k: f(), n: f() },
-    Lift: { k: f(), axisX: f(), axisY: f(), axisZ: f() },
-    Buoyancy: { shape: f(), radius: f(), halfX: f(), halfY: f(), halfZ: f(), dragCoefficient: f() },
-    FluidRegion: { surface: f(), density: f(), minX: f(), maxX: f(), minZ: f(), maxZ: f() },
+    Attractor: { mass: z(), softening: z() },
+    Charge: { value: z() },
+    ElectricField: { x: z(), y: z(), z: z(), ampX: z(), ampY: z(), ampZ: z(), omega: z(), phase: z() },
+    MagneticField: { x: z(), y: z(), z: z(), ampX: z(), ampY: z(), ampZ: z(), omega: z(), phase: z() },
+    CentralForce: { cx: z(), cy: z(), cz: z(), k: z(), n: z() },
+    Lift: { k: z(), axisX: z(), axisY: z(), axisZ: z() },
+    Buoyancy: { shape: z(), radius: z(), halfX: z(), halfY: z(), halfZ: z(), dragCoefficient: z() },
+    FluidRegion: { surface: z(), density: z(), minX: z(), maxX: z(), minZ: z(), maxZ: z() },
     Spring: {
-      a: new Int32Array(n), b: new Int32Array(n), restLength: f(), stiffness: f(), damping: f(),
-      oneSided: new Uint8Array(n), anchorX: f(), anchorY: f(), anchorZ: f(),
+      a: new Int32Array(0), b: new Int32Array(0), restLength: z(), stiffness: z(), damping: z(),
+      oneSided: new Uint8Array(0), anchorX: z(), anchorY: z(), anchorZ: z(),
     },
-    DrivingForce: { x: f(), y: f(), z: f(), omega: f(), phase: f() },
-    RandomForce: { magnitude: f(), correlationTime: f(), seed: f() },
-    Thrust: { exhaustVelocity: f(), massFlowRate: f(), fuel: f(), dirX: f(), dirY: f(), dirZ: f() },
-    Vortex: { cx: f(), cy: f(), cz: f(), axisX: f(), axisY: f(), axisZ: f(), k: f(), n: f() },
+    DrivingForce: { x: z(), y: z(), z: z(), omega: z(), phase: z() },
+    RandomForce: { magnitude: z(), correlationTime: z(), seed: z() },
+    Thrust: { exhaustVelocity: z(), massFlowRate: z(), fuel: z(), dirX: z(), dirY: z(), dirZ: z() },
+    Vortex: { cx: z(), cy: z(), cz: z(), axisX: z(), axisY: z(), axisZ: z(), k: z(), n: z() },
     Emitter: {
-      rate: f(), carry: f(), pendingBurst: f(), enabled: new Uint8Array(n),
-      shape: new Uint8Array(n), size: f(), sizeY: f(), sizeZ: f(),
-      dirX: f(), dirY: f(), dirZ: f(), spread: f(),
-      speedMin: f(), speedMax: f(), lifeMin: f(), lifeMax: f(),
-      inherit: f(), mass: f(), linearDrag: f(), quadraticDrag: f(), gravityScale: f(), radius: f(),
-      colorStart: new Uint32Array(n), colorEnd: new Uint32Array(n), sizeStart: f(), sizeEnd: f(),
-      alphaStart: f(), alphaEnd: f(),
-      deathEmitter: new Int32Array(n), deathCount: f(), maxGeneration: f(), policy: new Uint8Array(n),
-      spawned: f(), dropped: f(),
+      rate: z(), carry: z(), pendingBurst: z(), enabled: new Uint8Array(0),
+      shape: new Uint8Array(0), size: z(), sizeY: z(), sizeZ: z(),
+      dirX: z(), dirY: z(), dirZ: z(), spread: z(),
+      speedMin: z(), speedMax: z(), lifeMin: z(), lifeMax: z(),
+      inherit: z(), mass: z(), linearDrag: z(), quadraticDrag: z(), gravityScale: z(), radius: z(),
+      colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(),
+      alphaStart: z(), alphaEnd: z(),
+      deathEmitter: new Int32Array(0), deathCount: z(), maxGeneration: z(), policy: new Uint8Array(0),
+      spawned: z(), dropped: z(),
     },
     Lifetime: { age: f(), duration: f() },
     Particle: {
@@ -292,9 +323,9 @@ export function createComponents(capacity: number): Components {
     AngularVelocity: vec3(n),
     Torque: vec3(n),
     Inertia: { value: f(), inv: f() },
-    InertiaTensor: { x: f(), y: f(), z: f(), invX: f(), invY: f(), invZ: f() },
-    AngularDamping: { k: f() },
-    Plane: { nx: f(), ny: f(), nz: f(), d: f() },
+    InertiaTensor: { x: z(), y: z(), z: z(), invX: z(), invY: z(), invZ: z() },
+    AngularDamping: { k: z() },
+    Plane: { nx: z(), ny: z(), nz: z(), d: z() },
   };
 }
 

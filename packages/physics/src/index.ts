@@ -4,7 +4,7 @@
  */
 export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY } from './world';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world';
-export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS } from './components';
+export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components';
 export type { Components, Vec3Store } from './components';
 export {
   createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,

@@ -1,5 +1,5 @@
 import { addComponent, createEntityIndex, createWorld, hasComponent, observe, onAdd, type World } from 'bitecs';
-import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, type Components } from './components';
+import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore, type Components } from './components';
 import { createCollisionState, type CollisionState } from './collision/state';
 import { createStages, type StageName, type System, STAGES } from './pipeline/stages';
 import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names';
@@ -39,11 +39,17 @@ export interface PhysicsWorldOptions {
    * below it, so resting bodies do not jitter). Default 0.5 m/s. Box2D uses the same idea with 1 m/s.
    */
   restitutionThreshold?: number;
+  /**
+   * Whether bare particles (no force accumulator, no collider) keep `PreviousPosition`, which
+   * renderers interpolate from. Bodies with forces or colliders always keep it (contacts need it).
+   * false saves one write per particle per step in headless runs. Default true.
+   */
+  interpolation?: boolean;
 }
 
 const KNOWN_OPTIONS = [
   'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
-  'solverSubsteps', 'solverIterations', 'restitutionThreshold',
+  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation',
 ] as const;
 
 /** The largest capacity a world accepts (2^24 entities). */
@@ -93,6 +99,8 @@ export interface PhysicsWorldContext {
   readonly spawnStamp: Uint32Array;
   /** Internal: bitecs' entity index, read for the live count and the highest id. */
   readonly entityIndex: ReturnType<typeof createEntityIndex>;
+  /** Whether bare particles keep PreviousPosition (see PhysicsWorldOptions.interpolation). */
+  interpolation: boolean;
   /** Internal: removal hooks (springs, joints and caches that reference a removed entity). */
   readonly removeHooks: Array<(world: PhysicsWorld, eid: number) => void>;
 }
@@ -141,6 +149,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertInteger(where, 'solverIterations', solverIterations, 1, 50);
   const restitutionThreshold = options.restitutionThreshold ?? 0.5;
   assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
+  const interpolation = options.interpolation ?? true;
+  if (typeof interpolation !== 'boolean') throw new TypeError(`${where}: interpolation must be a boolean, got ${describe(interpolation)}`);
 
   const entityIndex = createEntityIndex();
   const components = createComponents(capacity);
@@ -166,6 +176,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     spawnStamp: new Uint32Array(capacity + 1),
     entityIndex,
     removeHooks: [removeSpringsOf],
+    interpolation,
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);
@@ -178,6 +189,11 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
  */
 function installDefaults(world: PhysicsWorld): void {
   const c = world.components;
+  // First: lazily allocated stores get their arrays before any other observer writes defaults.
+  for (const name of LAZY_COMPONENTS) {
+    const store = c[name];
+    observe(world, onAdd(store), () => materializeStore(store, world.capacity));
+  }
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
     s.x[eid] = 0; s.y[eid] = 0; s.z[eid] = 0;
   };
@@ -261,9 +277,12 @@ function installDefaults(world: PhysicsWorld): void {
   ]) registerForceLaw(world, law);
   // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.
   observe(world, onAdd(c.Force), (eid: number) => addComponentIfMissing(world, eid, c.Mass));
+  // A collider is always a body with a force accumulator: contacts need its start-of-step position,
+  // which only bare particles may skip saving (see the `interpolation` option).
   observe(world, onAdd(c.Ball), (eid: number) => {
     addComponentIfMissing(world, eid, c.Mass);
     addComponentIfMissing(world, eid, c.Material);
+    addComponentIfMissing(world, eid, c.Force);
   });
 }
 

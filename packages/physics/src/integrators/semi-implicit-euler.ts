@@ -54,27 +54,48 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
+  // Bare particles: a = g. When the query holds every live id (a world of particles), its ids are
+  // exactly 1..maxId and the loop runs over that range directly; PreviousPosition is kept only if the
+  // world interpolates (nothing collides with a bare particle).
   ents = freeBodies(world);
   check = 0;
-  if (is2D) {
-    for (let i = 0; i < ents.length; i++) {
+  const save = world.interpolation;
+  const n = ents.length;
+  const dense = n > 0 && n === world.entityIndex.maxId;
+  if (is2D && dense) {
+    if (save) {
+      for (let e = 1; e <= n; e++) {
+        const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
+        const x = px[e]!, y = py[e]!;
+        ox[e] = x; oy[e] = y;
+        vx[e] = nvx; vy[e] = nvy;
+        px[e] = x + nvx * h; py[e] = y + nvy * h;
+        check += nvx + nvy;
+      }
+    } else {
+      for (let e = 1; e <= n; e++) {
+        const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
+        vx[e] = nvx; vy[e] = nvy;
+        px[e] = px[e]! + nvx * h; py[e] = py[e]! + nvy * h;
+        check += nvx + nvy;
+      }
+    }
+  } else if (is2D) {
+    for (let i = 0; i < n; i++) {
       const e = ents[i]!;
-      const nvx = vx[e]! + gxh;
-      const nvy = vy[e]! + gyh;
+      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
       const x = px[e]!, y = py[e]!;
-      ox[e] = x; oy[e] = y;
+      if (save) { ox[e] = x; oy[e] = y; }
       vx[e] = nvx; vy[e] = nvy;
       px[e] = x + nvx * h; py[e] = y + nvy * h;
       check += nvx + nvy;
     }
   } else {
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const nvx = vx[e]! + gxh;
-      const nvy = vy[e]! + gyh;
-      const nvz = vz[e]! + gzh;
+    for (let i = 0; i < n; i++) {
+      const e = dense ? i + 1 : ents[i]!;
+      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh, nvz = vz[e]! + gzh;
       const x = px[e]!, y = py[e]!, z = pz[e]!;
-      ox[e] = x; oy[e] = y; oz[e] = z;
+      if (save) { ox[e] = x; oy[e] = y; oz[e] = z; }
       vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
       px[e] = x + nvx * h; py[e] = y + nvy * h; pz[e] = z + nvz * h;
       check += nvx + nvy + nvz;

@@ -59,7 +59,8 @@ export const particles: SceneDefinition<ParticlesOptions, ParticlesHandles> = {
   defaultCount: 100_000,
   worldOptions(options = {}) {
     const count = options.count ?? 100_000;
-    return { dimensions: 2, capacity: count, gravity: [0, -10] };
+    // Headless: nothing renders it, so bare particles need not keep previous positions.
+    return { dimensions: 2, capacity: count, gravity: [0, -10], interpolation: false };
   },
   build(world: PhysicsWorld, options: ParticlesOptions = {}): ParticlesHandles {
     if (world.dimensions !== 2) throw new RangeError(`particles: needs a 2D world, got dimensions ${world.dimensions}`);
