@@ -1,0 +1,268 @@
+/**
+ * Black hole: fly the ship from the bottom to the green line at the top past black holes that pull
+ * it with Newtonian gravity. Crossing the line scores one point per hole on screen and adds a hole;
+ * falling into a hole costs one of three lives; leaving the screen puts the ship back for free.
+ * (Ramtal and Dobre, ch. 6; the rules are in ./rules.ts, DOM-free.)
+ *
+ * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
+ * game is over, P pause, N single step, R reset, F predicted path on / off.
+ * Touch: the four arrow buttons at the bottom right (hold to thrust); tap the message to restart.
+ * URL: ?holes=N (1..16), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
+ *
+ * Drawn: each hole as a black disc of its Schwarzschild radius with a glow; the exhaust (particles,
+ * additive); the ship; its predicted path for the next second, integrated in a small second world
+ * (rules.ts `predictPath`) and drawn as fading dots.
+ */
+import { Graphics } from 'pixi.js';
+import { Rng, type PhysicsWorld } from '@bitphysics/physics';
+import { startPixiGame } from '../shared/pixi';
+import { createPanel, flagParam, numberParam } from '../shared/index';
+import {
+  C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, layoutHoles, predictPath, setGScale, setLightSpeed,
+  setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleGame, type Predictor, type Thrust,
+} from './rules';
+
+const search = new URLSearchParams(location.search);
+const params = {
+  holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),
+  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  gScale: 1,
+  c: numberParam('c', { default: C_GAME, min: 2, max: 50 }),
+  thrust: numberParam('thrust', { default: 6, min: 0, max: 40 }),
+  path: search.has('path') ? flagParam('path') : true,
+  restart: () => game.shell.reset(),
+};
+
+let bh: BlackHoleGame;
+let predictor: Predictor;
+const PATH_STEPS = 60;
+const path = new Float64Array(2 * (PATH_STEPS + 1));
+let pathPoints = 0;
+
+function createWorld(): PhysicsWorld {
+  bh = createBlackHoleGame({ seed: params.seed, holes: params.holes, gScale: params.gScale, c: params.c, thrust: params.thrust });
+  predictor = createPredictor(bh);
+  return bh.world;
+}
+
+const game = await startPixiGame({
+  title: 'Black hole',
+  createWorld,
+  step: () => { stepBlackHole(bh); },
+  controls: [
+    { keys: '← ↑ → ↓', action: 'thrust (one at a time)' },
+    { keys: 'Enter', action: 'play again (game over)' },
+    { keys: 'F', action: 'predicted path on / off' },
+  ],
+  keys: [
+    { key: 'Enter', label: 'restart', action: () => { if (bh.over) game.shell.reset(); } },
+    { key: 'f', label: 'path', action: () => { params.path = !params.path; panel.refresh(); } },
+  ],
+  renderer: {
+    view: { minX: 0, minY: 0, maxX: FIELD.width, maxY: FIELD.height },
+    padding: 8,
+    particles: { blend: 'add', minPixelSize: 1.5 },
+  },
+  app: { background: 0x020308 },
+  onFrame: (alpha, world) => drawFrame(alpha, world),
+});
+const { shell, renderer, app } = game;
+shell.onWorldChange(() => { applyHeld(); updateStatus(true); });
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'holes', label: 'holes (new layout)', min: 1, max: MAX_HOLES, step: 1, onChange: (n) => { params.holes = Math.round(n); layoutHoles(bh, params.holes); } },
+  { type: 'slider', key: 'gScale', label: 'G scale (× 1 m³/kg/s²)', min: 0.1, max: 5, step: 0.01, onChange: (s) => setGScale(bh, s) },
+  { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => setLightSpeed(bh, c) },
+  { type: 'slider', key: 'thrust', label: 'thrust (m/s²)', min: 0, max: 20, step: 0.1, onChange: (a) => setThrustAcceleration(bh, a) },
+  { type: 'checkbox', key: 'path', label: 'predicted path (F)' },
+  { type: 'button', key: 'restart', label: 'restart (R)' },
+], { title: 'Black hole' });
+
+// ---- Input: arrow keys and touch buttons, one direction at a time -------------------------------
+
+const KEY_DIR: Record<string, Thrust> = { ArrowUp: 'up', ArrowDown: 'down', ArrowLeft: 'left', ArrowRight: 'right' };
+/** Directions held (keys and buttons), most recent last; the thrust is the last one. */
+const held: Thrust[] = [];
+
+function applyHeld(): void {
+  setThrust(bh, held.length > 0 ? held[held.length - 1]! : 'none');
+}
+function press(dir: Thrust): void {
+  const i = held.indexOf(dir);
+  if (i >= 0) held.splice(i, 1);
+  held.push(dir);
+  applyHeld();
+}
+function release(dir: Thrust): void {
+  const i = held.indexOf(dir);
+  if (i >= 0) held.splice(i, 1);
+  applyHeld();
+}
+window.addEventListener('keydown', (e) => {
+  const dir = KEY_DIR[e.key];
+  if (!dir || e.ctrlKey || e.metaKey || e.altKey) return;
+  e.preventDefault();
+  if (!e.repeat) press(dir);
+});
+window.addEventListener('keyup', (e) => {
+  const dir = KEY_DIR[e.key];
+  if (dir) release(dir);
+});
+window.addEventListener('blur', () => { held.length = 0; applyHeld(); });
+
+const style = document.createElement('style');
+style.textContent = `
+.bh-pad { position: fixed; right: 14px; bottom: 14px; z-index: 11; display: grid; grid-template-columns: repeat(3, 54px);
+  grid-template-rows: repeat(2, 54px); gap: 6px; touch-action: none; user-select: none; }
+.bh-pad button { font: 22px system-ui, sans-serif; color: #e8ecf1; background: rgba(40, 48, 66, 0.7); border: 1px solid #5c677d;
+  border-radius: 10px; touch-action: none; }
+.bh-pad button.on { background: rgba(255, 150, 60, 0.7); }
+.bh-status { position: fixed; top: 10px; left: 50%; transform: translateX(-50%); z-index: 10; text-align: center;
+  font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; background: rgba(16, 20, 28, 0.72); border-radius: 6px; padding: 5px 10px;
+  max-width: min(60vw, calc(100vw - 580px)); min-width: 200px; pointer-events: auto; }
+.bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
+.bh-status .bh-message { color: #ffd166; }
+.bh-status.over .bh-message { color: #ff6b6b; cursor: pointer; }
+`;
+document.head.append(style);
+const pad = document.createElement('div');
+pad.className = 'bh-pad';
+pad.setAttribute('aria-label', 'thrust buttons');
+const buttons: Partial<Record<Thrust, HTMLButtonElement>> = {};
+for (const [dir, label, col, row] of [['up', '↑', 2, 1], ['left', '←', 1, 2], ['down', '↓', 2, 2], ['right', '→', 3, 2]] as const) {
+  const b = document.createElement('button');
+  b.type = 'button';
+  b.textContent = label;
+  b.dataset.dir = dir;
+  b.setAttribute('aria-label', `thrust ${dir}`);
+  b.style.gridColumn = String(col);
+  b.style.gridRow = String(row);
+  b.addEventListener('pointerdown', (e) => { e.preventDefault(); b.setPointerCapture(e.pointerId); press(dir); });
+  const up = (): void => release(dir);
+  b.addEventListener('pointerup', up);
+  b.addEventListener('pointercancel', up);
+  b.addEventListener('lostpointercapture', up);
+  b.addEventListener('contextmenu', (e) => e.preventDefault());
+  buttons[dir] = b;
+  pad.append(b);
+}
+document.body.append(pad);
+
+// ---- Status: lives, score, holes, last message -----------------------------------------------
+
+const status = document.createElement('div');
+status.className = 'bh-status';
+status.setAttribute('role', 'status');
+const numbers = document.createElement('div');
+numbers.className = 'bh-numbers';
+numbers.dataset.hud = 'numbers';
+const message = document.createElement('div');
+message.className = 'bh-message';
+message.dataset.hud = 'message';
+status.append(numbers, message);
+document.body.append(status);
+message.addEventListener('click', () => { if (bh.over) shell.reset(); });
+let shownNumbers = '', shownMessage = '', shownThrust: Thrust | '' = '';
+
+function updateStatus(force = false): void {
+  const n = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}   Score ${bh.score}   Holes ${bh.holes.length}`;
+  if (force || n !== shownNumbers) { shownNumbers = n; numbers.textContent = n; }
+  if (force || bh.message !== shownMessage) { shownMessage = bh.message; message.textContent = bh.message; }
+  status.classList.toggle('over', bh.over);
+  if (force || bh.thrust !== shownThrust) {
+    shownThrust = bh.thrust;
+    for (const [dir, b] of Object.entries(buttons)) b!.classList.toggle('on', dir === bh.thrust);
+  }
+}
+
+// ---- Drawing --------------------------------------------------------------------------------------
+
+const backdrop = new Graphics({ label: 'backdrop' });
+app.stage.addChildAt(backdrop, 0);
+const holesLayer = new Graphics({ label: 'holes' });
+const overlay = new Graphics({ label: 'ship-and-path' });
+app.stage.addChild(holesLayer, overlay);
+let backdropVersion = -1, holesVersion = -1, holesCamera = -1;
+const stars = (() => {
+  const rng = new Rng(7);
+  const out: [number, number, number][] = [];
+  for (let i = 0; i < 220; i++) out.push([rng.range(0, FIELD.width), rng.range(0, FIELD.height), rng.range(0.2, 0.8)]);
+  return out;
+})();
+
+function drawBackdrop(): void {
+  const cam = renderer.camera;
+  if (cam.version === backdropVersion) return;
+  backdropVersion = cam.version;
+  backdrop.clear();
+  backdrop.rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height)).fill(0x070a16);
+  for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
+  backdrop.rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
+    .stroke({ width: 1, color: 0x3a4560 });
+  // The finish line, dashed.
+  const y = cam.toScreenY(LINE_Y), dash = 12;
+  for (let x = cam.toScreenX(0); x < cam.toScreenX(FIELD.width); x += 2 * dash) {
+    backdrop.moveTo(x, y).lineTo(Math.min(x + dash, cam.toScreenX(FIELD.width)), y);
+  }
+  backdrop.stroke({ width: 3, color: 0x4cff7a, alpha: 0.8 });
+  // Start pad.
+  backdrop.rect(cam.toScreenX(FIELD.width / 2 - 1.2), cam.toScreenY(0.9), cam.toScreenLength(2.4), 3).fill({ color: 0x8d99ae, alpha: 0.7 });
+}
+
+function drawHoles(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  if (bh.version === holesVersion && cam.version === holesCamera) return;
+  holesVersion = bh.version;
+  holesCamera = cam.version;
+  holesLayer.clear();
+  const P = world.components.Position;
+  for (let i = 0; i < bh.holes.length; i++) {
+    const h = bh.holes[i]!;
+    const x = cam.toScreenX(P.x[h]!), y = cam.toScreenY(P.y[h]!), r = cam.toScreenLength(bh.holeRadius[i]!);
+    // Glow outside the horizon (the photon sphere is at 1.5 r), then the horizon itself.
+    for (let k = 6; k >= 1; k--) holesLayer.circle(x, y, r * (1 + 0.12 * k)).fill({ color: 0xff8a3c, alpha: 0.05 });
+    holesLayer.circle(x, y, r * 1.5).stroke({ width: 1, color: 0xffc080, alpha: 0.25 });
+    holesLayer.circle(x, y, r).fill(0x000000).stroke({ width: 1.5, color: 0xffb060, alpha: 0.9 });
+  }
+}
+
+function drawFrame(alpha: number, world: PhysicsWorld): void {
+  drawBackdrop();
+  drawHoles(world);
+  const cam = renderer.camera;
+  overlay.clear();
+  const s = bh.ship, P = world.components.Position, O = world.components.PreviousPosition;
+  const x = O.x[s]! + (P.x[s]! - O.x[s]!) * alpha, y = O.y[s]! + (P.y[s]! - O.y[s]!) * alpha;
+  if (params.path && !bh.over) {
+    pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
+    for (let i = 1; i < pathPoints; i += 2) {
+      overlay.circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), 1.6).fill({ color: 0x9fd3ff, alpha: 0.45 * (1 - i / (PATH_STEPS + 1)) + 0.08 });
+    }
+  } else {
+    pathPoints = 0;
+  }
+  // The ship: a small arrowhead, nose up, 1 m tall.
+  const sx = cam.toScreenX(x), sy = cam.toScreenY(y), k = cam.toScreenLength(1);
+  overlay.poly([sx, sy - 0.55 * k, sx + 0.38 * k, sy + 0.45 * k, sx, sy + 0.25 * k, sx - 0.38 * k, sy + 0.45 * k]).fill(bh.over ? 0x5c677d : 0xe8ecf1);
+  updateStatus();
+}
+
+// ---- Test and console hooks on window.game ---------------------------------------------------
+
+shell.expose({
+  params,
+  panel,
+  /** The ship's position, m, and velocity, m/s: [x, y, vx, vy]. */
+  ship: (): number[] => {
+    const c = bh.world.components;
+    return [c.Position.x[bh.ship]!, c.Position.y[bh.ship]!, c.Velocity.x[bh.ship]!, c.Velocity.y[bh.ship]!];
+  },
+  /** Points of the predicted path drawn in the last frame. */
+  pathPoints: (): number => pathPoints,
+  /** Particles drawn in the last frame (exhaust). */
+  particleCount: (): number => renderer.particles!.stats.particles,
+});
+// The live game state (lives, score, holes, message, thrust): a getter, so it follows resets
+// (expose copies values, which would keep the first game).
+Object.defineProperty(shell, 'bh', { get: (): BlackHoleGame => bh, enumerable: true });
+updateStatus(true);

@@ -1,0 +1,493 @@
+/**
+ * Black hole: the game of Ramtal and Dobre (ch. 6, Newtonian gravity), DOM-free so its rules run in
+ * Node tests. The page (main.ts) adds keys, touch buttons, drawing and the panel.
+ *
+ * The rules:
+ * - The player's ship starts near the bottom of a `FIELD` (32 m x 24 m) and thrusts with the arrow
+ *   keys, one direction at a time, with acceleration `thrust` (m/s^2).
+ * - Black holes of random size pull it with Newtonian gravity F = G M m / d^2 (the physics package's
+ *   attractors). Each hole's mass is set so that its drawn radius r is its Schwarzschild radius,
+ *   r = 2 G M / c^2, that is M = c^2 r / (2 G) (Schwarzschild 1916; any general relativity text,
+ *   e.g. Schutz, A First Course in General Relativity, ch. 11).
+ * - Crossing the line near the top scores the number of holes on screen, adds a hole and lays them
+ *   all out again; the ship goes back to the start.
+ * - Falling into a hole (crossing its horizon during a step) costs one of three lives; the ship goes
+ *   back to the start.
+ * - Leaving the field puts the ship back at the start without penalty.
+ * - At zero lives the game is over (the page restarts it with a key).
+ *
+ * Game-scale constants (SI would make a 1 m hole weigh 6.7e26 kg): G = `G_GAME` = 1 m^3 kg^-1 s^-2
+ * and c = `C_GAME` = 10 m/s, so a hole of radius r has mass M = c^2 r / 2G = 50 r kg and pulls with
+ * g(d) = G M / d^2 = c^2 r / (2 d^2): 12.5 m/s^2 at two radii. At the horizon the escape speed
+ * sqrt(2 G M / r) equals c. The panel scales G and changes c; each hole keeps its mass and its
+ * horizon follows r = 2 G M / c^2, so the relation always holds. Note that with r fixed the pull
+ * c^2 r / (2 d^2) does not depend on G at all; a larger G grows the horizons instead.
+ *
+ * Beyond the book: exhaust particles from an emitter attached to the ship (enabled while thrusting,
+ * pointing against the thrust; they feel the holes too and vanish into horizons), and the ship's
+ * predicted path for the next second, integrated in a small second world that holds copies of the
+ * holes and of the ship (`createPredictor`), with the same force laws, step and integrator, so with
+ * the input held it is exactly the path the ship will take.
+ */
+import { query } from 'bitecs';
+import {
+  Rng, addBody, addEmitter, addSystem, createPhysicsWorld, removeBody, setAttractor, setEmitterEnabled, setGravitation,
+  setPosition, setVelocity, step, type PhysicsWorld,
+} from '@bitphysics/physics';
+
+/** The playing field, m: x in [0, width], y in [0, height]. Leaving it sends the ship back to the start. */
+export const FIELD = Object.freeze({ width: 32, height: 24 });
+
+/** The finish line: crossing y = LINE_Y (m) scores. */
+export const LINE_Y = FIELD.height - 2;
+
+/** Where the ship starts, m. */
+export const START: readonly [number, number] = Object.freeze([FIELD.width / 2, 1.5]);
+
+/** Game-scale gravitational constant, m^3 kg^-1 s^-2 (the panel scales it). */
+export const G_GAME = 1;
+
+/** Game-scale speed of light, m/s. */
+export const C_GAME = 10;
+
+/** Radius range of a new hole, m. */
+export const HOLE_RADIUS: readonly [number, number] = Object.freeze([0.5, 1.4]);
+
+/** Most holes on the field; scoring beyond it keeps the count. */
+export const MAX_HOLES = 16;
+
+/** The ship's mass, kg. */
+export const SHIP_MASS = 1;
+
+/** Thrust directions: none, or one of the four arrows. */
+export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right';
+
+const DIRS: Record<Thrust, readonly [number, number]> = {
+  none: [0, 0], up: [0, 1], down: [0, -1], left: [-1, 0], right: [1, 0],
+};
+
+/** What happened in a step. */
+export type BlackHoleEvent = 'none' | 'fell' | 'scored' | 'lost' | 'over';
+
+/** Options of the game. Every field optional. */
+export interface BlackHoleOptions {
+  /** Seed of the hole layouts. Any finite number. Default 1. */
+  seed?: number;
+  /** Holes at the start, integer in [1, MAX_HOLES]. Default 3. */
+  holes?: number;
+  /** G as a multiple of G_GAME, in [0.1, 10]. Default 1. */
+  gScale?: number;
+  /** Speed of light, m/s, in [2, 50]. Default C_GAME (10). */
+  c?: number;
+  /** Thrust acceleration, m/s^2, in [0, 40]. Default 6. */
+  thrust?: number;
+  /** Lives at the start, integer in [1, 9]. Default 3. */
+  lives?: number;
+}
+
+/** Resolved options. */
+export type BlackHoleParams = Required<BlackHoleOptions>;
+
+/** The state of a game: world, ship, holes, lives, score, last message. */
+export interface BlackHoleGame {
+  readonly world: PhysicsWorld;
+  readonly params: BlackHoleParams;
+  /** The ship's entity id. */
+  readonly ship: number;
+  /** Hole entity ids, their horizon radii (m) and masses (kg), same order. */
+  readonly holes: number[];
+  readonly holeRadius: number[];
+  readonly holeMass: number[];
+  /** Lives left, score, and whether the game is over (lives 0). */
+  lives: number;
+  score: number;
+  over: boolean;
+  /** The last message for the player. */
+  message: string;
+  /** The current thrust direction (set with `setThrust`). */
+  thrust: Thrust;
+  /** Counts of events since the start. */
+  falls: number;
+  crossings: number;
+  resets: number;
+  /** Bumped whenever the holes change (layout, G, c), so copies (the predictor) know to resync. */
+  version: number;
+  /** Generator of the layouts. */
+  readonly rng: Rng;
+}
+
+function check(cond: boolean, message: string): void {
+  if (!cond) throw new RangeError(`black-hole: ${message}`);
+}
+
+/**
+ * Fills in defaults and checks the options.
+ * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
+ */
+export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives'];
+  for (const k of Object.keys(options)) {
+    if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
+  }
+  const p: BlackHoleParams = {
+    seed: options.seed ?? 1, holes: options.holes ?? 3, gScale: options.gScale ?? 1, c: options.c ?? C_GAME,
+    thrust: options.thrust ?? 6, lives: options.lives ?? 3,
+  };
+  check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
+  check(Number.isInteger(p.holes) && p.holes >= 1 && p.holes <= MAX_HOLES, `holes must be an integer in [1, ${MAX_HOLES}], got ${p.holes}`);
+  checkGScale(p.gScale);
+  checkC(p.c);
+  checkThrust(p.thrust);
+  check(Number.isInteger(p.lives) && p.lives >= 1 && p.lives <= 9, `lives must be an integer in [1, 9], got ${p.lives}`);
+  return p;
+}
+
+function checkGScale(s: number): void { check(s >= 0.1 && s <= 10, `gScale must be in [0.1, 10], got ${s}`); }
+function checkC(c: number): void { check(c >= 2 && c <= 50, `c must be in [2, 50] m/s, got ${c}`); }
+function checkThrust(a: number): void { check(a >= 0 && a <= 40, `thrust must be in [0, 40] m/s^2, got ${a}`); }
+
+/**
+ * Mass, kg, of a black hole whose Schwarzschild radius is `radius` m: M = c^2 r / (2 G).
+ * @param c speed of light, m/s (> 0). @param G gravitational constant, m^3 kg^-1 s^-2 (> 0).
+ * @throws RangeError unless radius, c and G are finite and > 0.
+ */
+export function schwarzschildMass(radius: number, c: number, G: number): number {
+  check(radius > 0 && c > 0 && G > 0 && Number.isFinite(radius * c * G), `schwarzschildMass: radius, c and G must be finite and > 0, got ${radius}, ${c}, ${G}`);
+  return (c * c * radius) / (2 * G);
+}
+
+/**
+ * Schwarzschild radius, m, of mass `mass` kg: r = 2 G M / c^2.
+ * @throws RangeError unless mass, c and G are finite and > 0.
+ */
+export function schwarzschildRadius(mass: number, c: number, G: number): number {
+  check(mass > 0 && c > 0 && G > 0 && Number.isFinite(mass * c * G), `schwarzschildRadius: mass, c and G must be finite and > 0, got ${mass}, ${c}, ${G}`);
+  return (2 * G * mass) / (c * c);
+}
+
+/** The gravitational constant in use, m^3 kg^-1 s^-2. */
+export function gravitationalConstant(game: BlackHoleGame): number {
+  return G_GAME * game.params.gScale;
+}
+
+/**
+ * The thrust force law: F = m a_T d on the ship, d the unit vector of `game.thrust` (0 when none or
+ * when the game is over). Runs in the forces stage.
+ */
+function thrustLaw(game: BlackHoleGame, ship: number): (world: PhysicsWorld) => void {
+  return (world) => {
+    if (game.over || game.thrust === 'none') return;
+    const d = DIRS[game.thrust];
+    const f = SHIP_MASS * game.params.thrust;
+    const F = world.components.Force;
+    F.x[ship] = F.x[ship]! + f * d[0];
+    F.y[ship] = F.y[ship]! + f * d[1];
+  };
+}
+
+/**
+ * Creates a game: a 2D world without uniform gravity, G = gScale x G_GAME, the ship at `START`,
+ * its exhaust emitter (off), and `holes` holes laid out at random.
+ * @throws TypeError | RangeError on bad options.
+ */
+export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGame {
+  const p = resolveBlackHoleOptions(options);
+  const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0], capacity: 1500, seed: p.seed });
+  setGravitation(world, { constant: G_GAME * p.gScale });
+  const ship = addBody(world, { position: START, mass: SHIP_MASS });
+  addEmitter(world, {
+    attachTo: ship, rate: 160, enabled: false, direction: [0, -1], spread: 0.28, speed: [4, 7], lifetime: [0.35, 0.8],
+    inheritVelocity: 1, policy: 'recycle-oldest',
+    particle: { mass: 0.01, colorStart: 0xfff0a0, colorEnd: 0xff3a10, sizeStart: 0.45, sizeEnd: 0.12, alphaStart: 1, alphaEnd: 0 },
+  });
+  const game: BlackHoleGame = {
+    world, params: p, ship, holes: [], holeRadius: [], holeMass: [], lives: p.lives, score: 0, over: false,
+    message: 'Reach the green line at the top. Arrow keys thrust.', thrust: 'none', falls: 0, crossings: 0, resets: 0,
+    version: 0, rng: new Rng(p.seed),
+  };
+  addSystem(world, 'forces', thrustLaw(game, ship));
+  layoutHoles(game, p.holes);
+  return game;
+}
+
+/**
+ * Lays out `count` holes (default: as many as now) at random: radii in HOLE_RADIUS, centres in the
+ * band between y = 5 m and 3 m below the line, at least 3 m of clear space between horizons and 4 m
+ * from the start (relaxed after many failed tries, so a layout always completes). Each hole is a
+ * static body with an attractor of mass c^2 r / 2G.
+ * @throws RangeError unless count is an integer in [1, MAX_HOLES].
+ */
+export function layoutHoles(game: BlackHoleGame, count = game.holes.length): void {
+  check(Number.isInteger(count) && count >= 1 && count <= MAX_HOLES, `layoutHoles: count must be an integer in [1, ${MAX_HOLES}], got ${count}`);
+  const world = game.world;
+  for (const h of game.holes) removeBody(world, h);
+  game.holes.length = 0;
+  game.holeRadius.length = 0;
+  game.holeMass.length = 0;
+  const rng = game.rng;
+  const G = gravitationalConstant(game), c = game.params.c;
+  const xs: number[] = [], ys: number[] = [];
+  for (let k = 0; k < count; k++) {
+    let bestX = 0, bestY = 0, bestR = HOLE_RADIUS[0], bestGap = -Infinity;
+    for (let attempt = 0; attempt < 300; attempt++) {
+      const r = rng.range(HOLE_RADIUS[0], HOLE_RADIUS[1]);
+      const x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
+      const y = rng.range(5 + r, LINE_Y - 3 - r);
+      // Smallest clearance to the other horizons (minus 3 m) and to the start (minus 4 m).
+      let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
+      for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - game.holeRadius[j]! - 3);
+      if (gap > bestGap) { bestGap = gap; bestX = x; bestY = y; bestR = r; }
+      if (gap >= 0) break;
+    }
+    xs.push(bestX); ys.push(bestY);
+    const mass = schwarzschildMass(bestR, c, G);
+    const e = addBody(world, { position: [bestX, bestY], static: true });
+    setAttractor(world, e, { mass });
+    game.holes.push(e);
+    game.holeRadius.push(bestR);
+    game.holeMass.push(mass);
+  }
+  game.version++;
+}
+
+/**
+ * Sets G to gScale x G_GAME (gScale in [0.1, 10]): the holes keep their masses and their horizons
+ * become r = 2 G M / c^2. @throws RangeError out of range.
+ */
+export function setGScale(game: BlackHoleGame, gScale: number): void {
+  checkGScale(gScale);
+  game.params.gScale = gScale;
+  setGravitation(game.world, { constant: G_GAME * gScale });
+  updateHorizons(game);
+}
+
+/** Sets the speed of light, m/s in [2, 50]: the holes keep their masses, their horizons follow. @throws RangeError out of range. */
+export function setLightSpeed(game: BlackHoleGame, c: number): void {
+  checkC(c);
+  game.params.c = c;
+  updateHorizons(game);
+}
+
+/** Sets the thrust acceleration, m/s^2 in [0, 40]. @throws RangeError out of range. */
+export function setThrustAcceleration(game: BlackHoleGame, a: number): void {
+  checkThrust(a);
+  game.params.thrust = a;
+}
+
+function updateHorizons(game: BlackHoleGame): void {
+  const G = gravitationalConstant(game), c = game.params.c;
+  for (let i = 0; i < game.holes.length; i++) game.holeRadius[i] = schwarzschildRadius(game.holeMass[i]!, c, G);
+  game.version++;
+}
+
+/**
+ * Points the ship's thrust (one direction at a time; 'none' stops it) and turns the exhaust on
+ * while thrusting, pointing against the thrust. Ignored once the game is over.
+ * @throws RangeError on an unknown direction.
+ */
+export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
+  check(thrust in DIRS, `setThrust: thrust must be one of ${Object.keys(DIRS).join(', ')}, got ${String(thrust)}`);
+  const t = game.over ? 'none' : thrust;
+  game.thrust = t;
+  const world = game.world;
+  const on = t !== 'none';
+  setEmitterEnabled(world, game.ship, on);
+  if (on) {
+    // The physics API has no setter for an emitter's direction; its unit vector is component data.
+    const E = world.components.Emitter, d = DIRS[t];
+    E.dirX[game.ship] = -d[0];
+    E.dirY[game.ship] = -d[1];
+  }
+}
+
+/** Puts the ship back at the start, at rest (a teleport: no interpolation across it). */
+export function resetShip(game: BlackHoleGame): void {
+  setPosition(game.world, game.ship, START);
+  setVelocity(game.world, game.ship, [0, 0]);
+  game.resets++;
+}
+
+/**
+ * Index of the hole whose horizon the segment from (ax, ay) to (bx, by) (m) enters, or -1: the
+ * closest point of the segment to each centre is compared with the radius, so a fast ship cannot
+ * jump over a horizon within one step.
+ */
+export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number, by: number): number {
+  const P = game.world.components.Position;
+  const ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
+  for (let i = 0; i < game.holes.length; i++) {
+    const h = game.holes[i]!;
+    const cx = P.x[h]!, cy = P.y[h]!;
+    const t = len2 > 0 ? Math.max(0, Math.min(1, ((cx - ax) * ex + (cy - ay) * ey) / len2)) : 0;
+    const dx = ax + t * ex - cx, dy = ay + t * ey - cy;
+    const r = game.holeRadius[i]!;
+    if (dx * dx + dy * dy < r * r) return i;
+  }
+  return -1;
+}
+
+/**
+ * One step of the game: the physics step (thrust, the holes' pull, exhaust), then the rules in this
+ * order: fell into a hole (a life lost; at zero the game is over), crossed the line (score += holes,
+ * one more hole, new layout), left the field (back to the start, no penalty). Exhaust particles that
+ * cross a horizon are removed. Once the game is over the ship waits at the start.
+ * @returns what happened. @throws what `step` throws.
+ */
+export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
+  const world = game.world;
+  step(world);
+  swallowParticles(game);
+  const ship = game.ship;
+  const P = world.components.Position, O = world.components.PreviousPosition;
+  if (game.over) {
+    setPosition(world, ship, START);
+    setVelocity(world, ship, [0, 0]);
+    return 'none';
+  }
+  const x = P.x[ship]!, y = P.y[ship]!;
+  const hit = holeHit(game, O.x[ship]!, O.y[ship]!, x, y);
+  if (hit >= 0) {
+    game.lives--;
+    game.falls++;
+    resetShip(game);
+    if (game.lives <= 0) {
+      game.lives = 0;
+      game.over = true;
+      setThrust(game, 'none');
+      game.message = `Swallowed! Game over with ${game.score} points. Press Enter or R to play again.`;
+      return 'over';
+    }
+    game.message = `Swallowed by a black hole! ${game.lives} ${game.lives === 1 ? 'life' : 'lives'} left.`;
+    return 'fell';
+  }
+  if (y >= LINE_Y) {
+    const n = game.holes.length;
+    game.score += n;
+    game.crossings++;
+    layoutHoles(game, Math.min(MAX_HOLES, n + 1));
+    resetShip(game);
+    game.message = `Made it! +${n} (one hole per hole on screen). Now ${game.holes.length} holes.`;
+    return 'scored';
+  }
+  if (x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) {
+    resetShip(game);
+    game.message = 'Lost in space: back to the start (no penalty).';
+    return 'lost';
+  }
+  return 'none';
+}
+
+/** Removes every particle inside a horizon (matter falling in). */
+function swallowParticles(game: BlackHoleGame): void {
+  const world = game.world;
+  const c = world.components;
+  const ents = query(world, [c.Particle, c.Position]);
+  const px = c.Position.x, py = c.Position.y;
+  const holes = game.holes, radius = game.holeRadius;
+  let n = 0;
+  const doomed = swallowScratch;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    for (let k = 0; k < holes.length; k++) {
+      const h = holes[k]!;
+      const dx = px[e]! - px[h]!, dy = py[e]! - py[h]!, r = radius[k]!;
+      if (dx * dx + dy * dy < r * r) {
+        if (n < doomed.length) doomed[n++] = e;
+        break;
+      }
+    }
+  }
+  // Removed after the pass (removing while iterating a bitecs query skips entities).
+  for (let i = 0; i < n; i++) removeBody(world, doomed[i]!);
+}
+
+const swallowScratch = new Int32Array(1024);
+
+/** Restarts a finished (or running) game in place: lives, score, message, holes at the starting count, the ship at the start. */
+export function restart(game: BlackHoleGame): void {
+  game.lives = game.params.lives;
+  game.score = 0;
+  game.over = false;
+  game.message = 'Reach the green line at the top. Arrow keys thrust.';
+  setThrust(game, 'none');
+  layoutHoles(game, game.params.holes);
+  resetShip(game);
+}
+
+// ---- The predicted path -------------------------------------------------------------------------
+
+/** A small second world that integrates a copy of the ship ahead in the same force field. */
+export interface Predictor {
+  /** The copy's world: the holes (static attractors), the ship, the thrust law; no particles. */
+  readonly world: PhysicsWorld;
+  /** The copy of the ship. */
+  readonly ship: number;
+  /** The game version the copy's holes match. */
+  version: number;
+  /** The holes in the copy. */
+  readonly holes: number[];
+}
+
+/** Creates the predictor of `game` (its holes are copied on the first `predictPath`). */
+export function createPredictor(game: BlackHoleGame): Predictor {
+  const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0], capacity: MAX_HOLES + 4, dt: game.world.dt, integrator: game.world.integrator });
+  const ship = addBody(world, { position: START, mass: SHIP_MASS });
+  const pred: Predictor = { world, ship, version: -1, holes: [] };
+  addSystem(world, 'forces', thrustLaw(game, ship));
+  return pred;
+}
+
+function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
+  const w = pred.world;
+  setGravitation(w, { constant: gravitationalConstant(game) });
+  for (const h of pred.holes) removeBody(w, h);
+  pred.holes.length = 0;
+  const P = game.world.components.Position;
+  for (let i = 0; i < game.holes.length; i++) {
+    const h = game.holes[i]!;
+    const e = addBody(w, { position: [P.x[h]!, P.y[h]!], static: true });
+    setAttractor(w, e, { mass: game.holeMass[i]! });
+    pred.holes.push(e);
+  }
+  pred.version = game.version;
+}
+
+/**
+ * The ship's path for the next `steps` steps (default 60: one second at 60 Hz) with the current
+ * thrust held: the ship's position and velocity are copied into the predictor's world, which then
+ * steps with the same dt, integrator, G, holes and thrust law as the game. Positions (m) go into
+ * `out` as x0, y0, x1, y1, ... starting with the ship's current position; the path stops early where
+ * it enters a horizon or leaves the field.
+ * @returns the number of points written (1 + steps taken), at most out.length / 2.
+ * @throws RangeError unless steps is an integer in [1, 10_000].
+ */
+export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60): number {
+  check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
+  if (pred.version !== game.version) syncPredictor(game, pred);
+  const w = pred.world, s = pred.ship;
+  const src = game.world.components, dst = w.components;
+  const P = dst.Position, O = dst.PreviousPosition, V = dst.Velocity;
+  P.x[s] = src.Position.x[game.ship]!; P.y[s] = src.Position.y[game.ship]!;
+  O.x[s] = P.x[s]!; O.y[s] = P.y[s]!;
+  V.x[s] = src.Velocity.x[game.ship]!; V.y[s] = src.Velocity.y[game.ship]!;
+  const max = Math.min(steps + 1, out.length >> 1);
+  if (max < 1) return 0;
+  out[0] = P.x[s]!; out[1] = P.y[s]!;
+  let n = 1;
+  const radius = game.holeRadius;
+  const HP = P;
+  while (n < max) {
+    step(w);
+    const x = P.x[s]!, y = P.y[s]!;
+    out[2 * n] = x; out[2 * n + 1] = y;
+    n++;
+    let inside = false;
+    for (let i = 0; i < pred.holes.length; i++) {
+      const h = pred.holes[i]!;
+      const dx = x - HP.x[h]!, dy = y - HP.y[h]!, r = radius[i]!;
+      if (dx * dx + dy * dy < r * r) { inside = true; break; }
+    }
+    if (inside || x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) break;
+  }
+  return n;
+}

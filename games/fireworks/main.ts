@@ -1,0 +1,233 @@
+/**
+ * Fireworks: click (or tap) to launch a shell from the ground towards the pointer; it bursts at the
+ * apex into sparks that fall under gravity with quadratic drag, fade over their lifetime and, with
+ * more than one generation, burst again into crackles. Hold the button longer for a bigger burst
+ * (up to three times the sparks at 1.5 s). Random colours, additive blending, spark trails.
+ *
+ * Keys: P pause, N single step, R reset, A auto-show on / off, T trails on / off, Space random shell.
+ * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3, ?auto (auto-show), ?opening=N
+ * (shells at start, 0..16), ?trails=0|1, ?seed=S, ?capacity=N (entities, 1000..2000000; default
+ * 60000), ?stress (4000 sparks a burst with the auto-show: tens of thousands of live sparks).
+ *
+ * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
+ */
+import { Graphics } from 'pixi.js';
+import { Rng, type PhysicsWorld } from '@bitphysics/physics';
+import { startPixiGame } from '../shared/pixi';
+import { createPanel, flagParam, numberParam } from '../shared/index';
+import {
+  MAX_HOLD, SKY, burstScale, createFireworks, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
+  setShowSparks, stepFireworks, type FireworksShow,
+} from './show';
+
+const search = new URLSearchParams(location.search);
+const stress = flagParam('stress');
+const params = {
+  gravity: 9.81,
+  /** Quadratic drag coefficient of a 1 g spark, g/m (the show takes kg/m: / 1000). */
+  drag: 0.05,
+  sparks: numberParam('sparks', { default: stress ? 4000 : 300, min: 10, max: 10_000, integer: true }),
+  generations: numberParam('generations', { default: 2, min: 1, max: 3, integer: true }),
+  autoShow: search.has('auto') ? flagParam('auto') : stress,
+  trails: search.has('trails') ? flagParam('trails') : true,
+  additive: true,
+  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  opening: numberParam('opening', { default: 3, min: 0, max: 16, integer: true }),
+  capacity: numberParam('capacity', { default: 60_000, min: 1000, max: 2_000_000, integer: true }),
+  launch: () => randomLaunch(),
+  reset: () => game.shell.reset(),
+};
+
+const TRAILS = { duration: 0.07, width: 0.5, alpha: 0.55 };
+
+let show: FireworksShow;
+
+/** A fresh world and show from the current parameters (at start and on R). */
+function createWorld(): PhysicsWorld {
+  const made = createFireworks({
+    seed: params.seed, gravity: params.gravity, drag: params.drag / 1000, sparks: params.sparks, generations: params.generations,
+    autoShow: params.autoShow, opening: params.opening, capacity: params.capacity,
+  });
+  show = made.show;
+  return made.world;
+}
+
+const game = await startPixiGame({
+  title: 'Fireworks',
+  createWorld,
+  step: (world) => stepFireworks(world, show),
+  controls: [
+    { keys: 'Click', action: 'launch a shell (hold: bigger burst)' },
+    { keys: 'A', action: 'auto-show on / off' },
+    { keys: 'T', action: 'trails on / off' },
+    { keys: 'Space', action: 'random shell' },
+  ],
+  keys: [
+    { key: 'a', label: 'auto-show', action: () => setAuto(!params.autoShow) },
+    { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
+    { key: ' ', label: 'random shell', action: () => randomLaunch(), repeat: true },
+  ],
+  renderer: {
+    view: { minX: 0, minY: 0, maxX: SKY.width, maxY: SKY.height },
+    padding: 0,
+    particles: { blend: 'add', trails: params.trails ? TRAILS : false, minPixelSize: 1.5 },
+  },
+  app: { background: 0x03050c },
+  onFrame: (alpha, world) => drawFrame(alpha, world),
+});
+const { shell, renderer, app } = game;
+const layer = renderer.particles!;
+
+/** Auto-show on or off (the A key and the panel). */
+function setAuto(on: boolean): void {
+  params.autoShow = on;
+  setAutoShow(show, on);
+  panel.refresh();
+}
+
+/** Trails on or off (the T key and the panel). */
+function setTrails(on: boolean): void {
+  params.trails = on;
+  layer.setTrails(on ? TRAILS : false);
+  panel.refresh();
+}
+
+/** Launches a shell at a random point of the upper sky with a random hold. @returns its id or 0. */
+function randomLaunch(): number {
+  const r = show.rng;
+  return launchShell(shell.world, show, r.range(0.15, 0.85) * SKY.width, r.range(0.45, 0.85) * SKY.height, r.range(0, MAX_HOLD));
+}
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => setShowGravity(shell.world, show, g) },
+  { type: 'slider', key: 'drag', label: 'drag k (g/m, 1 g spark)', min: 0, max: 0.5, step: 0.001, onChange: (k) => setShowDrag(shell.world, show, k / 1000) },
+  { type: 'slider', key: 'sparks', label: 'sparks per burst', min: 10, max: 5000, step: 10, onChange: (n) => setShowSparks(show, Math.round(n)) },
+  { type: 'slider', key: 'generations', min: 1, max: 3, step: 1, onChange: (g) => setShowGenerations(shell.world, show, Math.round(g)) },
+  { type: 'checkbox', key: 'autoShow', label: 'auto-show (A)', onChange: (v) => setAuto(v === true) },
+  { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
+  { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => layer.setBlend(v === true ? 'add' : 'normal') },
+  { type: 'button', key: 'launch', label: 'launch a shell (Space)' },
+  { type: 'button', key: 'reset', label: 'reset (R)' },
+], { title: 'Fireworks' });
+
+// ---- HUD line: live sparks ---------------------------------------------------------------------
+
+const sparkLine = document.createElement('div');
+sparkLine.dataset.hud = 'sparks';
+shell.hud.readout.append(sparkLine);
+let sparkShown = -1;
+
+// ---- Drawing: sky, ground, shells, the charging ring -------------------------------------------
+
+const sky = new Graphics({ label: 'sky' });
+app.stage.addChildAt(sky, 0);
+const ground = new Graphics({ label: 'ground' });
+const overlay = new Graphics({ label: 'shells-and-pointer' });
+app.stage.addChild(ground, overlay);
+let skyVersion = -1;
+
+/** Faint stars: x, y (m) and alpha. */
+const STARS: [number, number, number][] = (() => {
+  const r = new Rng(3);
+  const out: [number, number, number][] = [];
+  for (let i = 0; i < 160; i++) out.push([r.range(0, SKY.width), r.range(0.25, 1) * SKY.height, r.range(0.15, 0.6)]);
+  return out;
+})();
+
+/** The horizon's skyline: heights (m) of the ground at x = 0, 8, 16, ... m. */
+const SKYLINE = [2.2, 2.6, 3.4, 2.8, 2.4, 4.6, 5.2, 3.1, 2.5, 2.2, 3.8, 4.4, 3.0, 2.4, 2.7, 3.6];
+
+function drawSkyAndGround(): void {
+  const cam = renderer.camera;
+  if (cam.version === skyVersion) return;
+  skyVersion = cam.version;
+  sky.clear();
+  // Bands of a night sky, darker upwards.
+  const bands = 12;
+  for (let i = 0; i < bands; i++) {
+    const y0 = (SKY.height * i) / bands, y1 = (SKY.height * (i + 1)) / bands;
+    const f = 1 - i / bands;
+    const color = (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
+    sky.rect(cam.toScreenX(0), cam.toScreenY(y1), cam.toScreenLength(SKY.width), cam.toScreenLength(y1 - y0) + 1).fill(color);
+  }
+  for (const [x, y, a] of STARS) sky.circle(cam.toScreenX(x), cam.toScreenY(y), 0.8).fill({ color: 0xdfe8ff, alpha: a });
+  ground.clear();
+  ground.moveTo(cam.toScreenX(0), cam.toScreenY(-20));
+  for (let i = 0; i < SKYLINE.length; i++) ground.lineTo(cam.toScreenX((i * SKY.width) / (SKYLINE.length - 1)), cam.toScreenY(SKYLINE[i]!));
+  ground.lineTo(cam.toScreenX(SKY.width), cam.toScreenY(-20)).closePath().fill(0x020306);
+}
+
+let pointerId = -1;
+let pressedAt = 0;
+let pointerX = 0, pointerY = 0;
+
+function drawFrame(alpha: number, world: PhysicsWorld): void {
+  drawSkyAndGround();
+  const cam = renderer.camera;
+  overlay.clear();
+  // Shell heads (the shells are bodies, not particles), interpolated like everything else.
+  const P = world.components.Position, O = world.components.PreviousPosition;
+  for (let i = 0; i < show.shellCount; i++) {
+    const e = show.shellIds[i]!;
+    const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha, y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
+    overlay.circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!)))).fill({ color: 0xfff3d0 });
+  }
+  // Charging ring: its radius grows with the burst the hold would make.
+  if (pointerId !== -1) {
+    const hold = (performance.now() - pressedAt) / 1000;
+    const s = burstScale(hold);
+    const r = cam.toScreenLength(2.5 * Math.sqrt(s));
+    overlay.circle(pointerX, pointerY, r).stroke({ width: 2, color: 0xffe8a0, alpha: 0.35 + 0.25 * (s - 1) });
+    overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.8 });
+  }
+  const n = layer.stats.particles;
+  if (n !== sparkShown) { sparkShown = n; sparkLine.textContent = `${n} sparks`; }
+}
+
+// ---- Pointer: press to charge, release to launch ------------------------------------------------
+
+const canvas = app.canvas;
+function local(event: PointerEvent): void {
+  const rect = canvas.getBoundingClientRect();
+  pointerX = event.clientX - rect.left;
+  pointerY = event.clientY - rect.top;
+}
+canvas.addEventListener('pointerdown', (event) => {
+  if (event.button !== 0 || pointerId !== -1) return;
+  pointerId = event.pointerId;
+  canvas.setPointerCapture(event.pointerId);
+  pressedAt = performance.now();
+  local(event);
+});
+canvas.addEventListener('pointermove', (event) => {
+  if (event.pointerId === pointerId) local(event);
+});
+canvas.addEventListener('pointerup', (event) => {
+  if (event.pointerId !== pointerId) return;
+  pointerId = -1;
+  local(event);
+  const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
+  const cam = renderer.camera;
+  launchShell(shell.world, show, cam.toWorldX(pointerX), cam.toWorldY(pointerY), hold);
+});
+canvas.addEventListener('pointercancel', (event) => {
+  if (event.pointerId === pointerId) pointerId = -1;
+});
+
+// ---- Test and console hooks on window.game ----------------------------------------------------
+
+shell.expose({
+  params,
+  panel,
+  /** Launches a shell towards (x, y), m, as if the button had been held `hold` s. @returns its id, or 0 if too many are in flight. */
+  launch: (x: number, y: number, hold = 0): number => launchShell(shell.world, show, x, y, hold),
+  /** Particles drawn by the particle layer's last frame (live sparks, crackles, tails). */
+  particleCount: (): number => layer.stats.particles,
+  /** The particle layer's statistics of the last frame. */
+  particleStats: () => ({ ...layer.stats }),
+  /** Turns the auto-show on or off. */
+  setAutoShow: (on: boolean): void => setAuto(on),
+});
+// The running show (shells in flight, emitters, counters): a getter, so it follows resets (expose
+// copies values, which would keep the first show).
+Object.defineProperty(shell, 'show', { get: (): FireworksShow => show, enumerable: true });

@@ -1,0 +1,386 @@
+/**
+ * The fireworks show, DOM-free (runs in Node for tests): scene building, launching shells, bursts
+ * whose size grows with how long the button was held, secondary bursts (generations) and the
+ * auto-show. The page (main.ts) adds input, the panel and the renderer.
+ *
+ * Physics (all SI, y up):
+ * - A shell is a body (1 kg, no drag), launched from the ground with the velocity that puts
+ *   the apex of its (drag-free) parabola at the target: v_y = sqrt(2 g h), flight time T = v_y / g,
+ *   v_x = dx / T (Ramtal and Dobre ch. 4, projectiles). With g = 0 it flies straight to the target
+ *   in T = 2 s. Its fuse is T: at the first step where its age reaches T it bursts and is removed.
+ *   An emitter attached to it sheds a glittering tail.
+ * - A burst spawns `sparks x burstScale(hold)` sparks of one random colour at the shell's position,
+ *   passing on its velocity, with launch speeds scaled by sqrt(burstScale) (the burst's area grows
+ *   with its spark count, so it looks as dense). Sparks fall under gravity with quadratic drag
+ *   F = -k |v| v (mass 1 g; terminal speed sqrt(m g / k), 14 m/s at the default k), and fade and
+ *   shrink over their lifetime (the look over life of the physics emitters).
+ * - Generations: with `generations` >= 2 every spark bursts into crackles when it dies, and with 3
+ *   the crackles burst once more (the emitters' onDeath with a generation limit, Ramtal and Dobre
+ *   ch. 12).
+ * - Capacity: the world holds `capacity` entities (default 60,000: 50,000 live sparks with room to
+ *   spare) and every emitter recycles the oldest particle when it is full, so nothing ever throws and
+ *   the count never exceeds the capacity. Room for `MAX_SHELLS` shells is reserved with empty
+ *   placeholder entities (a shell takes a placeholder's place when launched and gives it back when it
+ *   bursts), so a full world of sparks never stops a launch and a shell in flight is never recycled.
+ *
+ * Everything random comes from seeded generators: the same seed and the same launches give the same show.
+ */
+import {
+  Rng, addBody, addEmitter, createEntity, createPhysicsWorld, emitNow, removeBody, setGravity, step,
+  type PhysicsWorld, type PhysicsWorldOptions,
+} from '@bitphysics/physics';
+
+/** Width and height of the sky, m. The ground is y = 0. */
+export const SKY = Object.freeze({ width: 120, height: 70 });
+
+/** Mass of a spark, kg (1 g): the drag coefficient k is per spark of this mass. */
+export const SPARK_MASS = 1e-3;
+
+/** Launch speed of the sparks of a normal-size burst (burstScale 1), m/s: uniform in [SPEED_MIN, 1] x this. */
+export const BURST_SPEED = 16;
+
+/** Slowest spark of a burst as a fraction of the fastest (a filled disc with a bright rim, like a peony shell seen from the side). */
+export const SPEED_MIN = 0.3;
+
+/** Crackles per dying spark (generation 2), and per dying crackle (generation 3). */
+export const CRACKLES = Object.freeze({ first: 4, second: 3 });
+
+/** Most shells in flight at once; further launches are refused until one bursts. */
+export const MAX_SHELLS = 64;
+
+/** Longest hold that still makes the burst bigger, s. */
+export const MAX_HOLD = 1.5;
+
+/** The burst colours, 0xRRGGBB: the spark's colour at birth; it fades towards a darker shade of it. */
+export const PALETTE: readonly number[] = Object.freeze([
+  0xff4d40, 0xff9f1c, 0xffe14d, 0x4cff7a, 0x4de1ff, 0x6b8cff, 0xc77dff, 0xff5cc8, 0xffffff,
+]);
+
+/** Options of the show. Every field optional. */
+export interface FireworksOptions {
+  /** Seed of the show (colours, auto-show, spark directions). Any finite number. Default 1. */
+  seed?: number;
+  /** Magnitude of gravity, m/s^2, in [0, 30] (pointing down). Default 9.81. */
+  gravity?: number;
+  /** Quadratic drag coefficient of a spark, kg/m, in [0, 1e-3] (for its 1 g mass). Default 5e-5. */
+  drag?: number;
+  /** Sparks of a normal-size burst (a click), integer in [10, 10_000]; a long hold makes up to 3 times as many. Default 300. */
+  sparks?: number;
+  /** Generations of sparks: 1 (sparks only), 2 (sparks burst into crackles) or 3 (crackles burst again). Default 2. */
+  generations?: number;
+  /** Launch shells on its own. Default false. */
+  autoShow?: boolean;
+  /** Shells launched at once when the show starts (0 for a dark sky), integer in [0, 16]. Default 3. */
+  opening?: number;
+  /** Most entities alive at once, integer in [1000, 2_000_000]. Default 60_000 (50,000 live sparks). */
+  capacity?: number;
+}
+
+/** Resolved options. */
+export type FireworksParams = Required<FireworksOptions>;
+
+/** The emitters of the show (entity ids). */
+export interface FireworksEmitters {
+  /** One spark emitter per palette colour (generation 1). */
+  sparks: number[];
+  /** Crackles of the second generation, one per palette colour (a paler shade of it). */
+  crackles: number[];
+  /** Crackles of the third generation (white-gold, shared). */
+  crackle2: number;
+}
+
+/** The running show: its parameters, emitters, shells in flight and auto-show clock. */
+export interface FireworksShow {
+  /** The parameters in use (change them with the setters below so the world follows). */
+  readonly params: FireworksParams;
+  readonly emitters: FireworksEmitters;
+  /** Generator of launch points, colours and the auto-show (seeded from `params.seed`). */
+  readonly rng: Rng;
+  /** Shells in flight: entity id, world time of its burst (s), burst scale and colour index, entries 0..shellCount-1. */
+  readonly shellIds: Int32Array;
+  readonly shellBurstTime: Float64Array;
+  readonly shellScale: Float64Array;
+  readonly shellColor: Int32Array;
+  shellCount: number;
+  /** Seconds until the auto-show's next launch. */
+  autoTimer: number;
+  /** Shells launched and burst since the start. */
+  launched: number;
+  bursts: number;
+  /** Placeholder entities holding room for shells not in flight (MAX_SHELLS - shellCount of them). */
+  readonly placeholders: number[];
+}
+
+function check(cond: boolean, message: string): void {
+  if (!cond) throw new RangeError(`fireworks: ${message}`);
+}
+
+/**
+ * Fills in defaults and checks the options.
+ * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
+ */
+export function resolveFireworksOptions(options: FireworksOptions = {}): FireworksParams {
+  const known = ['seed', 'gravity', 'drag', 'sparks', 'generations', 'autoShow', 'opening', 'capacity'];
+  for (const k of Object.keys(options)) {
+    if (!known.includes(k)) throw new TypeError(`fireworks: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
+  }
+  const p: FireworksParams = {
+    seed: options.seed ?? 1,
+    gravity: options.gravity ?? 9.81,
+    drag: options.drag ?? 5e-5,
+    sparks: options.sparks ?? 300,
+    generations: options.generations ?? 2,
+    autoShow: options.autoShow ?? false,
+    opening: options.opening ?? 3,
+    capacity: options.capacity ?? 60_000,
+  };
+  check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
+  checkGravity(p.gravity);
+  checkDrag(p.drag);
+  checkSparks(p.sparks);
+  checkGenerations(p.generations);
+  check(typeof p.autoShow === 'boolean', `autoShow must be a boolean, got ${String(p.autoShow)}`);
+  check(Number.isInteger(p.opening) && p.opening >= 0 && p.opening <= 16, `opening must be an integer in [0, 16], got ${p.opening}`);
+  check(Number.isInteger(p.capacity) && p.capacity >= 1000 && p.capacity <= 2_000_000, `capacity must be an integer in [1000, 2000000], got ${p.capacity}`);
+  return p;
+}
+
+function checkGravity(g: number): void { check(g >= 0 && g <= 30, `gravity must be in [0, 30] m/s^2, got ${g}`); }
+function checkDrag(k: number): void { check(k >= 0 && k <= 1e-3, `drag must be in [0, 0.001] kg/m, got ${k}`); }
+function checkSparks(n: number): void { check(Number.isInteger(n) && n >= 10 && n <= 10_000, `sparks must be an integer in [10, 10000], got ${n}`); }
+function checkGenerations(g: number): void { check(g === 1 || g === 2 || g === 3, `generations must be 1, 2 or 3, got ${g}`); }
+
+/** World options for the show: 2D, the capacity, gravity, seed. @throws like `resolveFireworksOptions`. */
+export function fireworksWorldOptions(options: FireworksOptions = {}): PhysicsWorldOptions {
+  const p = resolveFireworksOptions(options);
+  return { dimensions: 2, capacity: p.capacity, gravity: [0, -p.gravity], seed: p.seed };
+}
+
+/**
+ * How much bigger a burst is for a button held `holdSeconds`: 1 for a click, rising linearly to 3 at
+ * `MAX_HOLD` (1.5 s) and staying there. The burst has burstScale x `sparks` sparks launched at
+ * sqrt(burstScale) x the normal speed.
+ * @throws RangeError if holdSeconds is negative or not finite.
+ */
+export function burstScale(holdSeconds: number): number {
+  check(Number.isFinite(holdSeconds) && holdSeconds >= 0, `burstScale: holdSeconds must be a finite number >= 0, got ${holdSeconds}`);
+  return 1 + 2 * Math.min(1, holdSeconds / MAX_HOLD);
+}
+
+/** Mixes two 0xRRGGBB colours per channel: a (f = 0) to b (f = 1). */
+function mix(a: number, b: number, f: number): number {
+  const ch = (s: number) => Math.round(((a >> s) & 255) + (((b >> s) & 255) - ((a >> s) & 255)) * f);
+  return (ch(16) << 16) | (ch(8) << 8) | ch(0);
+}
+
+/** Multiplies each channel of a 0xRRGGBB colour by f in [0, 1]. */
+function shade(color: number, f: number): number {
+  const r = Math.round(((color >> 16) & 255) * f), g = Math.round(((color >> 8) & 255) * f), b = Math.round((color & 255) * f);
+  return (r << 16) | (g << 8) | b;
+}
+
+/**
+ * Builds the show's emitters into `world` (a fresh 2D world, ideally from `fireworksWorldOptions`)
+ * and launches the opening salvo.
+ * @throws TypeError | RangeError on bad options or a 3D world.
+ */
+export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = {}): FireworksShow {
+  const p = resolveFireworksOptions(options);
+  check(world.dimensions === 2, `needs a 2D world, got dimensions ${world.dimensions}`);
+  const policy = 'recycle-oldest' as const;
+  const crackle2 = addEmitter(world, {
+    speed: [1.5, 4], lifetime: [0.3, 0.6], inheritVelocity: 1, policy,
+    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: 0xffffff, colorEnd: 0xffa040, sizeStart: 0.8, sizeEnd: 0.2, alphaStart: 1, alphaEnd: 0 },
+  });
+  const crackles = PALETTE.map((color) => addEmitter(world, {
+    speed: [2, 5], lifetime: [0.35, 0.7], inheritVelocity: 1, policy,
+    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: mix(color, 0xffffff, 0.55), colorEnd: shade(color, 0.6), sizeStart: 0.9, sizeEnd: 0.25, alphaStart: 1, alphaEnd: 0 },
+    onDeath: { emitter: crackle2, count: CRACKLES.second, maxGeneration: p.generations - 1 },
+  }));
+  const sparks = PALETTE.map((color, i) => addEmitter(world, {
+    speed: [SPEED_MIN * BURST_SPEED, BURST_SPEED], lifetime: [1.4, 2.4], inheritVelocity: 1, policy,
+    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: color, colorEnd: shade(color, 0.55), sizeStart: 1.3, sizeEnd: 0.35, alphaStart: 1, alphaEnd: 0 },
+    onDeath: { emitter: crackles[i]!, count: CRACKLES.first, maxGeneration: p.generations - 1 },
+  }));
+  const placeholders: number[] = [];
+  for (let i = 0; i < MAX_SHELLS; i++) placeholders.push(createEntity(world));
+  const show: FireworksShow = {
+    params: p,
+    emitters: { sparks, crackles, crackle2 },
+    rng: new Rng(p.seed),
+    shellIds: new Int32Array(MAX_SHELLS),
+    shellBurstTime: new Float64Array(MAX_SHELLS),
+    shellScale: new Float64Array(MAX_SHELLS),
+    shellColor: new Int32Array(MAX_SHELLS),
+    shellCount: 0,
+    autoTimer: 0.5,
+    launched: 0,
+    bursts: 0,
+    placeholders,
+  };
+  for (let i = 0; i < p.opening; i++) {
+    const x = SKY.width * (0.25 + 0.5 * (p.opening === 1 ? 0.5 : i / (p.opening - 1)));
+    launchShell(world, show, x, show.rng.range(0.55, 0.8) * SKY.height, show.rng.range(0, MAX_HOLD));
+  }
+  return show;
+}
+
+/**
+ * Creates a world and builds the show in it: `{ world, show }`.
+ * @throws like `buildFireworks`.
+ */
+export function createFireworks(options: FireworksOptions = {}): { world: PhysicsWorld; show: FireworksShow } {
+  const world = createPhysicsWorld(fireworksWorldOptions(options));
+  return { world, show: buildFireworks(world, options) };
+}
+
+/**
+ * Launches a shell from the ground towards (targetX, targetY), m, where it bursts at the apex (the
+ * target is clamped into the sky: x in [4, width - 4], y in [12, height - 3]). The launch point is on
+ * the ground between the middle of the sky and the target, jittered. The burst's size follows
+ * `burstScale(holdSeconds)`; its colour is drawn from the palette.
+ * @returns the shell's entity id, or 0 if `MAX_SHELLS` shells are already in flight.
+ * @throws RangeError on non-finite coordinates or a negative hold.
+ */
+export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: number, targetY: number, holdSeconds = 0): number {
+  check(Number.isFinite(targetX) && Number.isFinite(targetY), `launchShell: target must be finite, got (${targetX}, ${targetY})`);
+  const scale = burstScale(holdSeconds);
+  if (show.shellCount >= MAX_SHELLS) return 0;
+  const rng = show.rng;
+  const tx = Math.min(SKY.width - 4, Math.max(4, targetX));
+  const ty = Math.min(SKY.height - 3, Math.max(12, targetY));
+  const x0 = Math.min(SKY.width - 2, Math.max(2, 0.5 * SKY.width + 0.5 * (tx - 0.5 * SKY.width) + rng.range(-4, 4)));
+  const y0 = 0.5;
+  const g = -world.gravity[1]!;
+  const h = ty - y0;
+  let vx: number, vy: number, fuse: number;
+  if (g > 1e-6) {
+    vy = Math.sqrt(2 * g * h);
+    fuse = vy / g;
+    vx = (tx - x0) / fuse;
+  } else {
+    fuse = 2;
+    vx = (tx - x0) / fuse;
+    vy = h / fuse;
+  }
+  const color = rng.int(0, PALETTE.length - 1);
+  // Take a placeholder's room (so a world full of sparks still has room for the shell).
+  removeBody(world, show.placeholders.pop()!);
+  const id = addBody(world, { position: [x0, y0], velocity: [vx, vy], mass: 1 });
+  addEmitter(world, {
+    attachTo: id, rate: 90, speed: [0.3, 2], lifetime: [0.4, 0.9], inheritVelocity: 0.15, policy: 'recycle-oldest',
+    particle: { mass: SPARK_MASS, quadraticDrag: show.params.drag, colorStart: 0xffd890, colorEnd: 0xff5a10, sizeStart: 0.8, sizeEnd: 0.2, alphaStart: 1, alphaEnd: 0 },
+  });
+  const i = show.shellCount++;
+  show.shellIds[i] = id;
+  show.shellBurstTime[i] = world.time + fuse;
+  show.shellScale[i] = scale;
+  show.shellColor[i] = color;
+  show.launched++;
+  return id;
+}
+
+/** Removes shell entry i (swap with the last). */
+function dropShell(show: FireworksShow, i: number): void {
+  const last = --show.shellCount;
+  show.shellIds[i] = show.shellIds[last]!;
+  show.shellBurstTime[i] = show.shellBurstTime[last]!;
+  show.shellScale[i] = show.shellScale[last]!;
+  show.shellColor[i] = show.shellColor[last]!;
+}
+
+const burstPos = [0, 0], burstVel = [0, 0];
+
+/**
+ * Bursts every shell whose fuse has burnt: `sparks x scale` sparks of its colour at its position,
+ * passing on its velocity, launched at sqrt(scale) x the normal speeds; the shell is removed and its
+ * room given back to a placeholder. Called by `stepFireworks` after each step.
+ */
+export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
+  const c = world.components;
+  const E = c.Emitter;
+  const now = world.time + 1e-9;
+  for (let i = show.shellCount - 1; i >= 0; i--) {
+    const e = show.shellIds[i]!;
+    if (now < show.shellBurstTime[i]!) continue;
+    const scale = show.shellScale[i]!;
+    const em = show.emitters.sparks[show.shellColor[i]!]!;
+    const s = Math.sqrt(scale);
+    E.speedMin[em] = SPEED_MIN * BURST_SPEED * s;
+    E.speedMax[em] = BURST_SPEED * s;
+    burstPos[0] = c.Position.x[e]!; burstPos[1] = c.Position.y[e]!;
+    burstVel[0] = c.Velocity.x[e]!; burstVel[1] = c.Velocity.y[e]!;
+    removeBody(world, e);
+    dropShell(show, i);
+    show.placeholders.push(createEntity(world));
+    emitNow(world, em, Math.round(show.params.sparks * scale), burstPos, burstVel);
+    show.bursts++;
+  }
+}
+
+
+/**
+ * The auto-show: after a random pause (0.3 to 1.4 s) launches one shell at a random point of the
+ * upper sky with a random hold, or now and then (15%) a salvo of three to five. Called by
+ * `stepFireworks` before each step while `params.autoShow` is on.
+ */
+export function autoShow(world: PhysicsWorld, show: FireworksShow): void {
+  show.autoTimer -= world.dt;
+  if (show.autoTimer > 0) return;
+  const rng = show.rng;
+  const salvo = rng.next() < 0.15 ? rng.int(3, 5) : 1;
+  for (let k = 0; k < salvo; k++) {
+    launchShell(world, show, rng.range(0.12, 0.88) * SKY.width, rng.range(0.45, 0.9) * SKY.height, rng.range(0, MAX_HOLD));
+  }
+  show.autoTimer = rng.range(0.3, 1.4);
+}
+
+/** One step of the show: the auto-show (if on), the physics step, then the shells' bursts. @throws what `step` throws. */
+export function stepFireworks(world: PhysicsWorld, show: FireworksShow): void {
+  if (show.params.autoShow) autoShow(world, show);
+  step(world);
+  burstShells(world, show);
+}
+
+/** Sets gravity, m/s^2 in [0, 30] (down). @throws RangeError out of range. */
+export function setShowGravity(world: PhysicsWorld, show: FireworksShow, g: number): void {
+  checkGravity(g);
+  show.params.gravity = g;
+  setGravity(world, [0, -g]);
+}
+
+/**
+ * Sets the sparks' quadratic drag coefficient, kg/m in [0, 1e-3]: for sparks, crackles and tails
+ * born from now on. @throws RangeError out of range.
+ */
+export function setShowDrag(world: PhysicsWorld, show: FireworksShow, k: number): void {
+  checkDrag(k);
+  show.params.drag = k;
+  const E = world.components.Emitter;
+  for (const em of [...show.emitters.sparks, ...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[em] = k;
+  // The shells' tails (emitters attached to the shells).
+  for (let i = 0; i < show.shellCount; i++) E.quadraticDrag[show.shellIds[i]!] = k;
+}
+
+/** Sets the sparks of a normal-size burst, integer in [10, 10_000]. @throws RangeError out of range. */
+export function setShowSparks(show: FireworksShow, n: number): void {
+  checkSparks(n);
+  show.params.sparks = n;
+}
+
+/**
+ * Sets the generations (1, 2 or 3): the limit the spark and crackle emitters burst up to on death.
+ * @throws RangeError unless 1, 2 or 3.
+ */
+export function setShowGenerations(world: PhysicsWorld, show: FireworksShow, g: number): void {
+  checkGenerations(g);
+  show.params.generations = g;
+  const E = world.components.Emitter;
+  for (const em of [...show.emitters.sparks, ...show.emitters.crackles]) E.maxGeneration[em] = g - 1;
+}
+
+/** Turns the auto-show on or off (its clock restarts at 0.3 s). */
+export function setAutoShow(show: FireworksShow, on: boolean): void {
+  show.params.autoShow = on;
+  show.autoTimer = 0.3;
+}

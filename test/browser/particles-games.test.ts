@@ -1,0 +1,191 @@
+/**
+ * The particle games in headless Chromium: fireworks and black hole load without errors and draw;
+ * a click in fireworks launches a shell whose sparks appear and later all expire (particle count
+ * rises then falls), a longer hold makes a bigger burst, A toggles the auto-show; in black hole the
+ * arrow keys and the touch buttons move the ship (its velocity read through window.game), the
+ * exhaust runs while thrusting, and the status shows lives and score. The particle layer is checked
+ * through window.game.renderer.particles on the way.
+ *
+ * Software WebGL is slow (a few frames a second with the other test files running), so the pages
+ * run with small counts (?sparks, ?generations=1, ?opening=0) and waits are generous.
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, type GamePage } from './harness';
+
+interface LayerStats { particles: number; drawn: number; trails: number; pooled: number; frames: number }
+interface FireworksGame {
+  params: { autoShow: boolean; trails: boolean };
+  show: { launched: number; bursts: number; shellCount: number; shellScale: Float64Array };
+  launch(x: number, y: number, hold?: number): number;
+  particleCount(): number;
+  particleStats(): LayerStats;
+  renderer: { particles: { stats: LayerStats; trailsEnabled: boolean } };
+}
+interface BlackHoleGameHandle {
+  bh: { lives: number; score: number; over: boolean; thrust: string; message: string; holes: number[]; holeRadius: number[] };
+  ship(): number[];
+  pathPoints(): number;
+  particleCount(): number;
+  world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+  reset(): void;
+  paused: boolean;
+}
+
+// One server and browser for the file (the site lock is shared with every browser test file).
+let h: Harness;
+beforeAll(async () => {
+  h = await Harness.start();
+});
+afterAll(async () => {
+  await h?.close();
+});
+
+describe('fireworks', () => {
+  let page: GamePage;
+  beforeAll(async () => {
+    page = await h.openGame('fireworks', { query: { opening: 0, sparks: 120, generations: 1 } });
+  });
+  afterAll(async () => {
+    await page?.close();
+  });
+
+  it('loads with a drawn sky, window.game and no errors', async () => {
+    const stats = await page.stats();
+    expect(stats.entities).toBeGreaterThan(0);
+    expect(await page.canvasColors()).toBeGreaterThan(16);
+    const legend = await page.page.locator('.bp-legend').innerText();
+    for (const key of ['Click', 'A', 'T']) expect(legend).toContain(key);
+    expect(page.errors).toEqual([]);
+  });
+
+  it('a click launches a shell whose sparks appear, fall and all expire', async () => {
+    const g = page;
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
+    // Low in the sky, so the flight is short.
+    await g.clickCanvas(0.5, 0.62);
+    await g.waitFor(() => (window.game as unknown as FireworksGame).show.launched === 1, null);
+    // The rising tail, then the burst: 120 sparks (generation 1 only) plus what is left of the tail.
+    const peak = await g.waitFor(() => {
+      const game = window.game as unknown as FireworksGame;
+      return game.show.bursts === 1 && game.particleCount() >= 120 ? game.particleStats() : null;
+    }, null, 90_000);
+    expect(peak.drawn).toBeGreaterThan(60);
+    expect(peak.trails).toBeGreaterThan(0); // trails are on by default
+    // Sparks live at most 2.4 s of simulated time: the count falls back to 0.
+    await g.waitFor(() => (window.game as unknown as FireworksGame).particleCount() === 0, null, 90_000);
+    const after = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
+    expect(after.drawn).toBe(0);
+    expect(after.pooled).toBeGreaterThanOrEqual(peak.drawn); // display particles went back to the pool
+    expect(g.errors).toEqual([]);
+  });
+
+  it('holding the button longer makes a bigger burst', async () => {
+    const g = page;
+    const b = await g.canvasBox();
+    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = true; });
+    await g.page.mouse.move(b.x + b.width * 0.3, b.y + b.height * 0.5);
+    await g.page.mouse.down();
+    await g.page.waitForTimeout(1700);
+    await g.page.mouse.up();
+    await g.page.mouse.click(b.x + b.width * 0.7, b.y + b.height * 0.5);
+    const scales = await g.waitFor(() => {
+      const s = (window.game as unknown as FireworksGame).show;
+      return s.shellCount === 2 ? [s.shellScale[0], s.shellScale[1]] : null;
+    }, null);
+    expect(scales[0]).toBeCloseTo(3, 6); // held 1.7 s >= 1.5 s: the largest burst
+    expect(scales[1]).toBeLessThan(1.5); // a click
+    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = false; });
+    expect(g.errors).toEqual([]);
+  });
+
+  it('A toggles the auto-show, which launches shells on its own; T toggles trails', async () => {
+    const g = page;
+    const before = await g.page.evaluate(() => (window.game as unknown as FireworksGame).show.launched);
+    await g.press('a');
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).params.autoShow)).toBe(true);
+    await g.waitFor((n) => (window.game as unknown as FireworksGame).show.launched >= n + 2, before, 60_000);
+    await g.press('a');
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).params.autoShow)).toBe(false);
+    await g.press('t');
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).renderer.particles.trailsEnabled)).toBe(false);
+    await g.press('t');
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).renderer.particles.trailsEnabled)).toBe(true);
+    expect(g.errors).toEqual([]);
+  });
+});
+
+describe('black hole', () => {
+  let page: GamePage;
+  beforeAll(async () => {
+    page = await h.openGame('black-hole', { query: { holes: 2, path: 1 } });
+  });
+  afterAll(async () => {
+    await page?.close();
+  });
+
+  const ship = (g: GamePage) => g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).ship());
+
+  it('loads with the holes, the ship, lives and score on screen and no errors', async () => {
+    expect(await page.canvasColors()).toBeGreaterThan(16);
+    expect(await page.page.locator('[data-hud="numbers"]').innerText()).toMatch(/Lives ♥♥♥\s+Score 0\s+Holes 2/);
+    const s = await page.stats();
+    expect(s.entities).toBe(3); // the ship (with its exhaust emitter) and two holes
+    await page.waitFor(() => (window.game as unknown as BlackHoleGameHandle).pathPoints() > 1, null);
+    expect(page.errors).toEqual([]);
+  });
+
+  it('arrow keys thrust: up raises the vertical velocity, right the horizontal; the exhaust runs while thrusting', async () => {
+    const g = page;
+    await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).reset());
+    const v0 = await ship(g);
+    await g.page.keyboard.down('ArrowUp');
+    const up = await g.waitFor((vy0) => {
+      const game = window.game as unknown as BlackHoleGameHandle;
+      const s = game.ship();
+      return s[3]! > vy0 + 0.5 && game.particleCount() > 5 ? { s, thrust: game.bh.thrust } : null;
+    }, v0[3]!, 30_000);
+    expect(up.thrust).toBe('up');
+    expect(up.s[1]).toBeGreaterThan(v0[1]!);
+    // One direction at a time: pressing right while up is held switches to right.
+    await g.page.keyboard.down('ArrowRight');
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('right');
+    const right = await g.waitFor(() => { const s = (window.game as unknown as BlackHoleGameHandle).ship(); return s[2]! > 0.5 ? s : null; }, null, 30_000);
+    expect(right[2]).toBeGreaterThan(0.5);
+    await g.page.keyboard.up('ArrowRight');
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('up');
+    await g.page.keyboard.up('ArrowUp');
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('none');
+    expect(g.errors).toEqual([]);
+  });
+
+  it('the touch buttons thrust while held', async () => {
+    const g = page;
+    await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).reset());
+    const button = g.page.getByRole('button', { name: 'thrust left' });
+    const box = (await button.boundingBox())!;
+    await g.page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await g.page.mouse.down();
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('left');
+    await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).ship()[2]! < -0.5, null, 30_000);
+    await g.page.mouse.up();
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('none');
+    expect(g.errors).toEqual([]);
+  });
+
+  it('falling into a hole costs a life and says so on screen', async () => {
+    const g = page;
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as BlackHoleGameHandle & { world: { components: { PreviousPosition: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } }; bh: { ship: number } };
+      game.reset();
+      const c = game.world.components, hole = game.bh.holes[0]!, s = game.bh.ship;
+      // Into the first hole's horizon (the next step notices).
+      c.Position.x[s] = c.Position.x[hole]!; c.Position.y[s] = c.Position.y[hole]! + 0.5 * game.bh.holeRadius[0]!;
+      c.PreviousPosition.x[s] = c.Position.x[s]!; c.PreviousPosition.y[s] = c.Position.y[s]!;
+      c.Velocity.x[s] = 0; c.Velocity.y[s] = 0;
+    });
+    await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).bh.lives === 2, null, 30_000);
+    await g.waitFor(() => /Lives ♥♥♡/.test(document.querySelector('[data-hud="numbers"]')?.textContent ?? ''), null);
+    expect(await g.page.locator('[data-hud="message"]').innerText()).toMatch(/Swallowed by a black hole! 2 lives left/);
+    expect(g.errors).toEqual([]);
+  });
+});

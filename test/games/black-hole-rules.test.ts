@@ -1,0 +1,260 @@
+/**
+ * The rules of the black-hole game without a page (games/black-hole/rules.ts): falling into a hole
+ * costs a life, crossing the line scores the number of holes and adds one, leaving the field resets
+ * without penalty, zero lives ends the game; every hole's drawn radius is its Schwarzschild radius;
+ * thrust, exhaust and the predicted path.
+ */
+import { describe, expect, test } from 'vitest';
+import { query } from 'bitecs';
+import { setPosition, setVelocity } from '@bitphysics/physics';
+import {
+  C_GAME, FIELD, G_GAME, LINE_Y, MAX_HOLES, START, createBlackHoleGame, createPredictor, gravitationalConstant, holeHit,
+  layoutHoles, predictPath, resolveBlackHoleOptions, restart, schwarzschildMass, schwarzschildRadius, setGScale, setLightSpeed,
+  setThrust, stepBlackHole, type BlackHoleGame,
+} from '../../games/black-hole/rules';
+
+const shipAt = (g: BlackHoleGame) => [g.world.components.Position.x[g.ship]!, g.world.components.Position.y[g.ship]!];
+const place = (g: BlackHoleGame, x: number, y: number, vx = 0, vy = 0) => {
+  setPosition(g.world, g.ship, [x, y]);
+  setVelocity(g.world, g.ship, [vx, vy]);
+};
+/** Every hole satisfies r = 2 G M / c^2 with the world's G and the game's c, and the attractor mass is M. */
+const expectSchwarzschild = (g: BlackHoleGame) => {
+  const G = g.world.laws.gravitationalConstant, c = g.params.c;
+  expect(G).toBe(gravitationalConstant(g));
+  for (let i = 0; i < g.holes.length; i++) {
+    const M = g.world.components.Attractor.mass[g.holes[i]!]!;
+    expect(M).toBe(g.holeMass[i]);
+    expect(g.holeRadius[i]! / ((2 * G * M) / (c * c))).toBeCloseTo(1, 12);
+  }
+};
+
+describe('Schwarzschild holes', () => {
+  test('M = c^2 r / 2G and back; at the horizon the escape speed is c', () => {
+    expect(schwarzschildMass(1, 10, 1)).toBe(50);
+    expect(schwarzschildRadius(50, 10, 1)).toBe(1);
+    const r = 0.73, c = 7, G = 2.5;
+    const M = schwarzschildMass(r, c, G);
+    expect(schwarzschildRadius(M, c, G)).toBeCloseTo(r, 14);
+    expect(Math.sqrt((2 * G * M) / r)).toBeCloseTo(c, 12);
+    expect(() => schwarzschildMass(0, 10, 1)).toThrow(/radius, c and G must be finite and > 0, got 0, 10, 1/);
+    expect(() => schwarzschildRadius(1, 10, Number.NaN)).toThrow(RangeError);
+  });
+
+  test('every hole of every layout, and after changing G and c, has its drawn radius as its Schwarzschild radius', () => {
+    const g = createBlackHoleGame({ seed: 3, holes: 5 });
+    expect(g.world.laws.gravitationalConstant).toBe(G_GAME);
+    expect(g.params.c).toBe(C_GAME);
+    expectSchwarzschild(g);
+    for (let n = 1; n <= MAX_HOLES; n++) { layoutHoles(g, n); expect(g.holes.length).toBe(n); expectSchwarzschild(g); }
+    const masses = [...g.holeMass];
+    setGScale(g, 2.5);
+    expectSchwarzschild(g);
+    expect(g.holeMass).toEqual(masses); // masses kept, horizons grew
+    setLightSpeed(g, 14);
+    expectSchwarzschild(g);
+    // The pull of a hole of radius r at distance d is c^2 r / (2 d^2), whatever G is.
+    const h = g.holes[0]!, P = g.world.components.Position;
+    place(g, P.x[h]! + 3 * g.holeRadius[0]!, P.y[h]!);
+    const v0 = g.world.components.Velocity.x[g.ship]!;
+    stepBlackHole(g);
+    // Only this hole matters much at 3 radii: compare with the sum over all holes.
+    let ax = 0;
+    for (let i = 0; i < g.holes.length; i++) {
+      const dx = P.x[g.holes[i]!]! - (P.x[h]! + 3 * g.holeRadius[0]!), dy = P.y[g.holes[i]!]! - P.y[h]!;
+      const d = Math.hypot(dx, dy);
+      ax += (14 * 14 * g.holeRadius[i]!) / (2 * d * d) * (dx / d);
+    }
+    expect((g.world.components.Velocity.x[g.ship]! - v0) / g.world.dt).toBeCloseTo(ax, 9);
+  });
+
+  test('layouts keep the holes inside the band, apart, and away from the start', () => {
+    for (let seed = 1; seed <= 20; seed++) {
+      const g = createBlackHoleGame({ seed, holes: 8 });
+      const P = g.world.components.Position;
+      for (let i = 0; i < g.holes.length; i++) {
+        const x = P.x[g.holes[i]!]!, y = P.y[g.holes[i]!]!, r = g.holeRadius[i]!;
+        expect(x - r).toBeGreaterThan(0);
+        expect(x + r).toBeLessThan(FIELD.width);
+        expect(y + r).toBeLessThan(LINE_Y);
+        expect(Math.hypot(x - START[0], y - START[1]) - r).toBeGreaterThanOrEqual(4);
+        for (let j = 0; j < i; j++) {
+          expect(Math.hypot(x - P.x[g.holes[j]!]!, y - P.y[g.holes[j]!]!) - r - g.holeRadius[j]!).toBeGreaterThanOrEqual(3);
+        }
+      }
+    }
+  });
+});
+
+describe('rules', () => {
+  test('entering a hole costs a life and puts the ship back at the start', () => {
+    const g = createBlackHoleGame({ seed: 1 });
+    const P = g.world.components.Position, h = g.holes[0]!;
+    place(g, P.x[h]! + g.holeRadius[0]! + 0.05, P.y[h]!, -3, 0);
+    let event = 'none';
+    for (let i = 0; i < 10 && event === 'none'; i++) event = stepBlackHole(g);
+    expect(event).toBe('fell');
+    expect(g.lives).toBe(2);
+    expect(g.over).toBe(false);
+    expect(shipAt(g)).toEqual([...START]);
+    expect(g.message).toMatch(/Swallowed by a black hole! 2 lives left/);
+  });
+
+  test('a fast ship cannot jump over a horizon within one step (swept test)', () => {
+    const g = createBlackHoleGame({ seed: 1 });
+    const P = g.world.components.Position, h = g.holes[0]!, r = g.holeRadius[0]!;
+    // From 1.2 r left of the centre to 1.2 r right of it in one step: both ends outside the horizon.
+    expect(holeHit(g, P.x[h]! - 1.2 * r, P.y[h]!, P.x[h]! + 1.2 * r, P.y[h]!)).toBe(0);
+    expect(holeHit(g, P.x[h]! - 1.2 * r, P.y[h]! + 1.1 * r, P.x[h]! + 1.2 * r, P.y[h]! + 1.1 * r)).toBe(-1);
+    place(g, P.x[h]! - 1.2 * r, P.y[h]!, (2.4 * r) / g.world.dt, 0);
+    expect(stepBlackHole(g)).toBe('fell');
+  });
+
+  test('crossing the line scores the number of holes, adds a hole and lays them out again', () => {
+    const g = createBlackHoleGame({ seed: 2, holes: 3 });
+    const P = g.world.components.Position;
+    const before = g.holes.map((h) => [P.x[h], P.y[h]]);
+    // Straight up a column with no hole in it would take long; put the ship just below the line.
+    place(g, 1, LINE_Y - 0.05, 0, 5);
+    expect(stepBlackHole(g)).toBe('scored');
+    expect(g.score).toBe(3);
+    expect(g.holes.length).toBe(4);
+    expect(g.holes.map((h) => [P.x[h], P.y[h]])).not.toEqual(before.concat([[0, 0]]));
+    expect(shipAt(g)).toEqual([...START]);
+    expect(g.lives).toBe(3);
+    expectSchwarzschild(g);
+    place(g, 1, LINE_Y - 0.05, 0, 5);
+    expect(stepBlackHole(g)).toBe('scored');
+    expect(g.score).toBe(3 + 4);
+    expect(g.holes.length).toBe(5);
+  });
+
+  test('leaving the field puts the ship back without penalty, on every side', () => {
+    const g = createBlackHoleGame({ seed: 4 });
+    for (const [x, y, vx, vy] of [[0.02, 10, -5, 0], [FIELD.width - 0.02, 10, 5, 0], [10, 0.02, 0, -5]] as const) {
+      place(g, x, y, vx, vy);
+      const e = stepBlackHole(g);
+      expect(e).toBe('lost');
+      expect(shipAt(g)).toEqual([...START]);
+      expect(g.world.components.Velocity.x[g.ship]).toBe(0);
+    }
+    expect(g.lives).toBe(3);
+    expect(g.score).toBe(0);
+    expect(g.message).toMatch(/no penalty/);
+  });
+
+  test('zero lives ends the game: thrust ignored, the ship waits, restart brings everything back', () => {
+    const g = createBlackHoleGame({ seed: 5, lives: 3 });
+    const P = g.world.components.Position;
+    const events: string[] = [];
+    for (let k = 0; k < 3; k++) {
+      const h = g.holes[0]!;
+      place(g, P.x[h]!, P.y[h]! + 0.5 * g.holeRadius[0]!);
+      events.push(stepBlackHole(g));
+    }
+    expect(events).toEqual(['fell', 'fell', 'over']);
+    expect(g.lives).toBe(0);
+    expect(g.over).toBe(true);
+    expect(g.message).toMatch(/Game over/);
+    setThrust(g, 'up');
+    expect(g.thrust).toBe('none');
+    for (let i = 0; i < 120; i++) expect(stepBlackHole(g)).toBe('none');
+    expect(shipAt(g)).toEqual([...START]);
+    restart(g);
+    expect([g.lives, g.score, g.over, g.holes.length]).toEqual([3, 0, false, 3]);
+  });
+});
+
+describe('thrust, exhaust, prediction', () => {
+  test('thrust accelerates the ship at `thrust` m/s^2 in one direction at a time; the exhaust runs only while thrusting', () => {
+    const g = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
+    // The hole's pull is nearly the same along the three short paths: compare each with no thrust.
+    const run = (dir: 'none' | 'right' | 'up') => {
+      const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
+      setThrust(h, dir);
+      for (let i = 0; i < 30; i++) stepBlackHole(h);
+      return { v: [h.world.components.Velocity.x[h.ship]!, h.world.components.Velocity.y[h.ship]!], particles: query(h.world, [h.world.components.Particle]).length };
+    };
+    const none = run('none'), right = run('right'), up = run('up');
+    expect(right.v[0] - none.v[0]).toBeCloseTo(6 * 0.5, 2);
+    expect(right.v[1] - none.v[1]).toBeCloseTo(0, 2);
+    expect(up.v[1] - none.v[1]).toBeCloseTo(6 * 0.5, 2);
+    expect(up.v[0] - none.v[0]).toBeCloseTo(0, 2);
+    expect(none.particles).toBe(0);
+    expect(right.particles).toBeGreaterThan(40);
+    // Exhaust leaves against the thrust: thrusting right, the particles move left relative to the ship.
+    setThrust(g, 'right');
+    for (let i = 0; i < 20; i++) stepBlackHole(g);
+    const V = g.world.components.Velocity;
+    const ids = Array.from(query(g.world, [g.world.components.Particle]));
+    const rel = ids.reduce((s, e) => s + V.x[e]!, 0) / ids.length - V.x[g.ship]!;
+    expect(rel).toBeLessThan(-3);
+    setThrust(g, 'none');
+    for (let i = 0; i < 60; i++) stepBlackHole(g);
+    expect(query(g.world, [g.world.components.Particle]).length).toBe(0);
+    expect(() => setThrust(g, 'sideways' as never)).toThrow(/thrust must be one of none, up, down, left, right/);
+  });
+
+  test('exhaust that crosses a horizon is swallowed', () => {
+    const g = createBlackHoleGame({ seed: 7, holes: 1 });
+    const P = g.world.components.Position, h = g.holes[0]!;
+    // Park the ship right above the hole (kept there each step) and fire downwards into it.
+    setThrust(g, 'up');
+    let inside = 0;
+    for (let i = 0; i < 40; i++) {
+      place(g, P.x[h]!, P.y[h]! + g.holeRadius[0]! + 0.6);
+      g.world.components.Emitter.dirX[g.ship] = 0; g.world.components.Emitter.dirY[g.ship] = -1;
+      stepBlackHole(g);
+      for (const e of query(g.world, [g.world.components.Particle])) {
+        if (Math.hypot(P.x[e]! - P.x[h]!, P.y[e]! - P.y[h]!) < g.holeRadius[0]!) inside++;
+      }
+    }
+    expect(inside).toBe(0);
+    expect(g.world.components.Emitter.spawned[g.ship]!).toBeGreaterThan(100);
+  });
+
+  test('the predicted path is the path the ship then takes with the input held', () => {
+    const g = createBlackHoleGame({ seed: 8, holes: 4 });
+    const pred = createPredictor(g);
+    place(g, 8, 4, 2.5, 3);
+    setThrust(g, 'right');
+    const out = new Float64Array(2 * 61);
+    const n = predictPath(g, pred, out, 60);
+    expect(n).toBeGreaterThan(10);
+    const P = g.world.components.Position;
+    expect([out[0], out[1]]).toEqual([8, 4]);
+    for (let i = 1; i < n; i++) {
+      expect(stepBlackHole(g)).toBe('none');
+      expect(P.x[g.ship]).toBe(out[2 * i]);
+      expect(P.y[g.ship]).toBe(out[2 * i + 1]);
+    }
+    // After a new layout the predictor follows the new holes.
+    layoutHoles(g, 6);
+    place(g, 8, 4, 2.5, 3);
+    const m = predictPath(g, pred, out, 60);
+    expect(pred.holes.length).toBe(6);
+    for (let i = 1; i < m; i++) { stepBlackHole(g); expect(P.x[g.ship]).toBe(out[2 * i]); }
+    expect(() => predictPath(g, pred, out, 0)).toThrow(/steps must be an integer in \[1, 10000\], got 0/);
+  });
+
+  test('the prediction stops at a horizon', () => {
+    const g = createBlackHoleGame({ seed: 9, holes: 1 });
+    const pred = createPredictor(g);
+    const P = g.world.components.Position, h = g.holes[0]!;
+    place(g, P.x[h]! + g.holeRadius[0]! + 1, P.y[h]!, -4, 0);
+    const out = new Float64Array(2 * 61);
+    const n = predictPath(g, pred, out, 60);
+    expect(n).toBeLessThan(30);
+    const x = out[2 * (n - 1)]!, y = out[2 * (n - 1) + 1]!;
+    expect(Math.hypot(x - P.x[h]!, y - P.y[h]!)).toBeLessThan(g.holeRadius[0]!);
+  });
+
+  test('bad options are rejected by name', () => {
+    expect(() => resolveBlackHoleOptions({ holes: 0 })).toThrow(/holes must be an integer in \[1, 16\], got 0/);
+    expect(() => resolveBlackHoleOptions({ c: 1 })).toThrow(/c must be in \[2, 50\] m\/s, got 1/);
+    expect(() => resolveBlackHoleOptions({ gravity: 1 } as never)).toThrow(/unknown option "gravity"/);
+    const g = createBlackHoleGame();
+    expect(() => setGScale(g, 0)).toThrow(/gScale must be in \[0.1, 10\], got 0/);
+    expect(() => layoutHoles(g, 17)).toThrow(/count must be an integer in \[1, 16\], got 17/);
+  });
+});

@@ -1,0 +1,201 @@
+/**
+ * The fireworks show without a page (games/fireworks/show.ts): launches reach their target, burst
+ * into as many sparks as the hold asks for, the sparks fall, fade and expire; generations; a long
+ * auto-show stays within the world's capacity; the same seed replays the same show.
+ */
+import { describe, expect, test } from 'vitest';
+import { query } from 'bitecs';
+import { stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import {
+  CRACKLES, MAX_HOLD, MAX_SHELLS, PALETTE, SKY, burstScale, createFireworks, launchShell, resolveFireworksOptions, setAutoShow, setShowDrag,
+  setShowGenerations, setShowGravity, setShowSparks, stepFireworks, type FireworksShow,
+} from '../../games/fireworks/show';
+
+const particles = (world: PhysicsWorld) => query(world, [world.components.Particle]).length;
+const sparksOf = (world: PhysicsWorld, show: FireworksShow) => {
+  const P = world.components.Particle;
+  return Array.from(query(world, [P])).filter((e) => show.emitters.sparks.includes(P.emitter[e]!)).length;
+};
+/** Mean position of the sparks (right after a burst: where the shell burst, since they start there). */
+const sparkCentre = (world: PhysicsWorld, show: FireworksShow): [number, number] => {
+  const P = world.components.Particle, X = world.components.Position;
+  const ids = Array.from(query(world, [P])).filter((e) => show.emitters.sparks.includes(P.emitter[e]!));
+  return [ids.reduce((s, e) => s + X.x[e]!, 0) / ids.length, ids.reduce((s, e) => s + X.y[e]!, 0) / ids.length];
+};
+const run = (world: PhysicsWorld, show: FireworksShow, steps: number, each?: (i: number) => void) => {
+  for (let i = 0; i < steps; i++) { stepFireworks(world, show); each?.(i); }
+};
+
+describe('burst size from hold time', () => {
+  test('1 for a click, 3 from MAX_HOLD on, linear in between', () => {
+    expect(burstScale(0)).toBe(1);
+    expect(burstScale(MAX_HOLD / 2)).toBeCloseTo(2, 12);
+    expect(burstScale(MAX_HOLD)).toBe(3);
+    expect(burstScale(10)).toBe(3);
+    expect(() => burstScale(-0.1)).toThrow(/holdSeconds must be a finite number >= 0, got -0.1/);
+    expect(() => burstScale(Number.NaN)).toThrow(RangeError);
+  });
+});
+
+describe('a launch', () => {
+  test('flies to the target, bursts into sparks x scale sparks near it, which later all expire', () => {
+    const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 200, seed: 3 });
+    expect(particles(world)).toBe(0);
+    const shell = launchShell(world, show, 40, 50, 0);
+    expect(shell).toBeGreaterThan(0);
+    expect(particles(world)).toBe(0); // the shell is a body; its tail starts at the next step
+    let burstAt: [number, number] | null = null;
+    let peak = 0;
+    for (let i = 0; i < 60 * 8; i++) {
+      stepFireworks(world, show);
+      if (burstAt === null && show.bursts === 1) burstAt = sparkCentre(world, show);
+      peak = Math.max(peak, sparksOf(world, show));
+    }
+    expect(show.launched).toBe(1);
+    expect(show.bursts).toBe(1);
+    // The apex of the launch parabola is the target (semi-implicit Euler undershoots by about g dt T / 2).
+    expect(Math.abs(burstAt![0] - 40)).toBeLessThan(0.6);
+    expect(Math.abs(burstAt![1] - 50)).toBeLessThan(0.6);
+    expect(peak).toBe(200);
+    // Sparks live at most 2.4 s: 8 s after launch everything, tail included, is gone.
+    expect(particles(world)).toBe(0);
+  });
+
+  test('sparks fall under gravity with drag and fade over their lifetime', () => {
+    const { world: w2, show: s2 } = createFireworks({ opening: 0, generations: 1, sparks: 300, seed: 4 });
+    launchShell(w2, s2, 60, 40, 0);
+    while (s2.bursts === 0) stepFireworks(w2, s2);
+    const ids = Array.from(query(w2, [w2.components.Particle])).filter((e) => s2.emitters.sparks.includes(w2.components.Particle.emitter[e]!));
+    const V = w2.components.Velocity, L = w2.components.Lifetime, Part = w2.components.Particle;
+    const vy0 = ids.map((e) => V.y[e]!);
+    const speed0 = ids.map((e) => Math.hypot(V.x[e]!, V.y[e]!));
+    stepMany(w2, 30); // 0.5 s, no new bursts (generations 1)
+    const alive = ids.filter((e) => L.age[e]! > 0.49);
+    expect(alive.length).toBe(ids.length);
+    // Gravity pulls every spark down: mean vertical velocity drops by more than drag alone would explain.
+    const mean = (a: number[]) => a.reduce((s, v) => s + v, 0) / a.length;
+    expect(mean(ids.map((e) => V.y[e]!))).toBeLessThan(mean(vy0) - 2);
+    // Quadratic drag slows the fast ones: the fastest spark has lost a large part of its speed.
+    const fastest = speed0.indexOf(Math.max(...speed0));
+    expect(Math.hypot(V.x[ids[fastest]!]!, V.y[ids[fastest]!]!)).toBeLessThan(0.8 * speed0[fastest]!);
+    // Fading: alpha goes linearly from 1 at birth to 0 at death.
+    for (const e of ids) {
+      const t = L.age[e]! / L.duration[e]!;
+      expect(Part.alphaStart[e]! + (Part.alphaEnd[e]! - Part.alphaStart[e]!) * t).toBeCloseTo(1 - t, 12);
+    }
+  });
+
+  test('a longer hold makes a bigger, faster burst', () => {
+    const sizeAfter = (hold: number) => {
+      const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 100, seed: 5 });
+      launchShell(world, show, 60, 40, hold);
+      while (show.bursts === 0) stepFireworks(world, show);
+      const ids = Array.from(query(world, [world.components.Particle])).filter((e) => show.emitters.sparks.includes(world.components.Particle.emitter[e]!));
+      const V = world.components.Velocity;
+      return { count: ids.length, maxSpeed: Math.max(...ids.map((e) => Math.hypot(V.x[e]!, V.y[e]!))) };
+    };
+    const click = sizeAfter(0), held = sizeAfter(MAX_HOLD), half = sizeAfter(MAX_HOLD / 2);
+    expect(click.count).toBe(100);
+    expect(half.count).toBe(200);
+    expect(held.count).toBe(300);
+    expect(held.maxSpeed).toBeGreaterThan(1.5 * click.maxSpeed);
+  });
+
+  test('generations: sparks burst into crackles (2), crackles burst again (3)', () => {
+    const spawned = (g: number) => {
+      const { world, show } = createFireworks({ opening: 0, generations: g, sparks: 50, seed: 6 });
+      launchShell(world, show, 60, 40, 0);
+      run(world, show, 60 * 9);
+      const E = world.components.Emitter;
+      const crackle = show.emitters.crackles.reduce((n, em) => n + E.spawned[em]!, 0);
+      return { crackle, crackle2: E.spawned[show.emitters.crackle2]!, left: particles(world) };
+    };
+    expect(spawned(1)).toEqual({ crackle: 0, crackle2: 0, left: 0 });
+    expect(spawned(2)).toEqual({ crackle: 50 * CRACKLES.first, crackle2: 0, left: 0 });
+    expect(spawned(3)).toEqual({ crackle: 50 * CRACKLES.first, crackle2: 50 * CRACKLES.first * CRACKLES.second, left: 0 });
+  });
+
+  test('launches beyond MAX_SHELLS in flight are refused (0), even in a full world; the target is clamped into the sky', () => {
+    const { world, show } = createFireworks({ opening: 0, seed: 7, capacity: 1000, sparks: 2000 });
+    // Fill the world with sparks first: shells take the room reserved for them.
+    launchShell(world, show, 60, 30, 0);
+    while (show.bursts === 0) stepFireworks(world, show);
+    expect(world.entityIndex.aliveCount).toBe(1000);
+    let made = 0;
+    for (let i = 0; i < 200; i++) if (launchShell(world, show, -50, 1e4) > 0) made++;
+    expect(made).toBe(MAX_SHELLS);
+    expect(launchShell(world, show, 10, 10)).toBe(0);
+    // Clamped target: x = 4 m, y = height - 3 m: the first shell peaks there.
+    const { world: w, show: s } = createFireworks({ opening: 0, seed: 7, generations: 1 });
+    const e = launchShell(w, s, -50, 1e4);
+    let top = 0;
+    while (s.bursts === 0) { stepFireworks(w, s); if (s.shellCount) top = Math.max(top, w.components.Position.y[e]!); }
+    expect(top).toBeGreaterThan(SKY.height - 3 - 0.7);
+    expect(top).toBeLessThan(SKY.height - 3 + 0.1);
+  });
+});
+
+describe('the show', () => {
+  test('a long auto-show stays within capacity (recycle-oldest), never throws, and keeps bursting', () => {
+    const capacity = 3000;
+    const { world, show } = createFireworks({ capacity, sparks: 500, generations: 2, autoShow: true, seed: 8 });
+    let maxAlive = 0, full = 0;
+    run(world, show, 60 * 30, () => {
+      const n = world.entityIndex.aliveCount;
+      maxAlive = Math.max(maxAlive, n);
+      if (n === capacity) full++;
+    });
+    expect(maxAlive).toBeLessThanOrEqual(capacity);
+    expect(world.entityIndex.maxId).toBeLessThanOrEqual(capacity);
+    expect(full).toBeGreaterThan(0); // the world did fill up: the policy was exercised
+    expect(show.launched).toBeGreaterThan(20);
+    expect(show.bursts).toBe(show.launched - show.shellCount);
+    setAutoShow(show, false);
+    run(world, show, 60 * 8);
+    expect(particles(world)).toBe(0);
+    expect(world.entityIndex.aliveCount).toBe(MAX_SHELLS + 2 * PALETTE.length + 1); // placeholders and emitters
+  });
+
+  test('the same seed and launches replay the same show', () => {
+    const once = () => {
+      const { world, show } = createFireworks({ seed: 11, autoShow: true, sparks: 100 });
+      run(world, show, 300);
+      const P = world.components.Position;
+      return Array.from(query(world, [world.components.Particle])).map((e) => [P.x[e], P.y[e]]);
+    };
+    const a = once();
+    expect(a.length).toBeGreaterThan(100);
+    expect(once()).toEqual(a);
+  });
+
+  test('setters change the world: gravity, drag, sparks, generations; bad values throw', () => {
+    const { world, show } = createFireworks({ opening: 0 });
+    setShowGravity(world, show, 3);
+    expect(world.gravity[1]).toBe(-3);
+    setShowDrag(world, show, 2e-4);
+    expect(world.components.Emitter.quadraticDrag[show.emitters.sparks[0]!]).toBe(2e-4);
+    setShowGenerations(world, show, 3);
+    expect(world.components.Emitter.maxGeneration[show.emitters.crackles[4]!]).toBe(2);
+    setShowSparks(show, 77);
+    launchShell(world, show, 60, 30, 0);
+    while (show.bursts === 0) stepFireworks(world, show);
+    expect(sparksOf(world, show)).toBe(77);
+    expect(() => setShowGravity(world, show, -1)).toThrow(/gravity must be in \[0, 30\] m\/s\^2, got -1/);
+    expect(() => setShowDrag(world, show, 1)).toThrow(/drag must be in \[0, 0.001\] kg\/m, got 1/);
+    expect(() => setShowSparks(show, 2.5)).toThrow(/sparks must be an integer/);
+    expect(() => setShowGenerations(world, show, 4)).toThrow(/generations must be 1, 2 or 3, got 4/);
+    expect(() => resolveFireworksOptions({ colour: 1 } as never)).toThrow(/unknown option "colour"/);
+    expect(() => launchShell(world, show, Number.NaN, 3)).toThrow(/target must be finite/);
+  });
+
+  test('with zero gravity a shell flies straight to its target and bursts there after 2 s', () => {
+    const { world, show } = createFireworks({ opening: 0, gravity: 0, generations: 1, seed: 2 });
+    launchShell(world, show, 30, 40, 0);
+    let steps = 0;
+    while (show.bursts === 0) { stepFireworks(world, show); steps++; }
+    expect(steps).toBe(120);
+    const at = sparkCentre(world, show);
+    expect(at[0]).toBeCloseTo(30, 6);
+    expect(at[1]).toBeCloseTo(40, 6);
+  });
+});
