@@ -28,3 +28,4 @@ export type {
 } from './particles';
 export { resolveDebugOptions } from './debug';
 export type { DebugOptions } from './debug';
+export * from './points';
