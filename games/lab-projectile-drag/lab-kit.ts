@@ -90,6 +90,9 @@ export function createLabDock(width = 360): LabDock {
  * when the dock floats over it), centred, aspect kept, `padding` px free around it. The camera ends
  * up fitted to a larger rectangle with the screen's aspect, so later resizes keep the scale until
  * this is called again (`followView` does that).
+ * @param reservedPx CSS px kept free on the right (the dock, `LabDock.reserved()`), >= 0; ignored
+ *   when less than 80 px plus padding would be left for the scene.
+ * @param padding CSS px kept free around `rect`, >= 0 (shrunk on tiny screens). Default 24.
  * @throws RangeError (from the camera) on a bad rectangle.
  */
 export function fitViewBeside(camera: Camera, rect: WorldRect, reservedPx: number, padding = 24): void {
