@@ -39,7 +39,8 @@ describe('resting contact', () => {
    */
   for (const dimensions of [2, 3] as const) {
     test(`a ${dimensions}D ball on the boundary floor neither sinks nor jitters over 10 s`, () => {
-      const world = createPhysicsWorld({ dimensions, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0] });
+      // Sleep off: this checks the contact solver itself (asleep, the ball could not move at all).
+      const world = createPhysicsWorld({ dimensions, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0], sleep: false });
       setBoundary(world, dimensions === 2 ? { min: [-5, 0], max: [5, 10] } : { min: [-5, 0, -5], max: [5, 10, 5] });
       const ball = addBody(world, { position: dimensions === 2 ? [0, 0.5] : [0, 0.5, 0], radius: 0.5, restitution: 0.5, friction: 0.3 });
       const P = world.components.Position, V = world.components.Velocity;
@@ -57,7 +58,7 @@ describe('resting contact', () => {
   test('a ball resting on an inclined segment with static friction above tan(theta) stays put', () => {
     // Slope of 20 degrees; mu = 0.6 > tan(20 deg) = 0.364, so static friction holds the ball if it
     // cannot roll: rotation off, the ball then behaves as a block on an incline.
-    const world = createPhysicsWorld({ gravity: [0, -9.81] });
+    const world = createPhysicsWorld({ gravity: [0, -9.81], sleep: false });
     const theta = (20 * Math.PI) / 180;
     addSegment(world, { a: [-10 * Math.cos(theta), -10 * Math.sin(theta)], b: [10 * Math.cos(theta), 10 * Math.sin(theta)], friction: 0.6 });
     const nx = -Math.sin(theta), ny = Math.cos(theta);

@@ -1,6 +1,7 @@
 import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from './world';
 import { setInertia } from './rigid';
+import { wakeIsland } from './collision/sleep';
 import {
   assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
 } from './validate';
@@ -430,6 +431,7 @@ export function setRadius(world: PhysicsWorld, eid: number, radius: number): voi
  */
 export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLike<number>): void {
   assertAlive('setPosition', world, eid);
+  wakeIsland(world, eid);
   assertVector('setPosition', 'position', position, world.dimensions);
   const c = world.components;
   const z = world.dimensions === 3 ? position[2]! : 0;
@@ -440,6 +442,7 @@ export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLik
 /** Sets a body's velocity, m/s. @throws TypeError | RangeError on a bad vector or a missing entity. */
 export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLike<number>): void {
   assertAlive('setVelocity', world, eid);
+  wakeIsland(world, eid);
   assertVector('setVelocity', 'velocity', velocity, world.dimensions);
   const c = world.components;
   c.Velocity.x[eid] = velocity[0]!; c.Velocity.y[eid] = velocity[1]!; c.Velocity.z[eid] = world.dimensions === 3 ? velocity[2]! : 0;
@@ -451,6 +454,7 @@ export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLik
  */
 export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>): void {
   assertAlive('applyImpulse', world, eid);
+  wakeIsland(world, eid);
   assertVector('applyImpulse', 'impulse', impulse, world.dimensions);
   const c = world.components;
   const im = hasComponent(world, eid, c.Mass) ? c.Mass.inv[eid]! : 0;
@@ -491,6 +495,7 @@ export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number):
 export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelocity: number | ArrayLike<number>): void {
   const where = 'setAngularVelocity';
   assertAlive(where, world, eid);
+  wakeIsland(world, eid);
   const c = world.components;
   if (!hasComponent(world, eid, c.AngularVelocity)) addComponent(world, eid, c.AngularVelocity);
   if (world.dimensions === 2) {
@@ -510,6 +515,7 @@ export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelo
 export function setOrientation(world: PhysicsWorld, eid: number, orientation: number | ArrayLike<number>): void {
   const where = 'setOrientation';
   assertAlive(where, world, eid);
+  wakeIsland(world, eid);
   const c = world.components;
   if (world.dimensions === 2) {
     assertFinite(where, 'orientation', orientation);

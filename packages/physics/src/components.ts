@@ -78,6 +78,11 @@ export interface Components {
   /** Tag: the body moves with its velocity, ignores forces, and has infinite mass in contacts. */
   Kinematic: object;
   /**
+   * Tag: the body is asleep: at rest in a resting island, skipped by integration and the contact
+   * solver until something wakes it (see collision/sleep.ts). Added and removed by the engine.
+   */
+  Sleeping: object;
+  /**
    * Linear (viscous, Stokes) drag F = -k v, with `k` in N s/m = kg/s, >= 0.
    * Source: Ramtal and Dobre, ch. 7 (drag); Stokes' law for small Reynolds numbers.
    */
@@ -281,6 +286,7 @@ export function createComponents(capacity: number): Components {
     Material: { restitution: f(), friction: f(), staticFriction: f() },
     Static: {},
     Kinematic: {},
+    Sleeping: {},
     LinearDrag: { k: z() },
     QuadraticDrag: { k: z() },
     GravityScale: { value: z() },

@@ -35,6 +35,8 @@ export { linearDragSystem, quadraticDragSystem } from './forces/drag';
 export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase';
 export { narrowphaseSystem, currentSeparation } from './collision/narrowphase';
 export { contactSolverSystem } from './collision/solver';
+export { sleepSystem, wakeSystem, wakeBody, wakeAll, wakeIsland, isSleeping } from './collision/sleep';
+export type { SleepState } from './collision/state';
 export { ContactKind } from './collision/contacts';
 export type { ContactBuffer } from './collision/contacts';
 export type { CollisionState, CollisionSettings, Boundary } from './collision/state';

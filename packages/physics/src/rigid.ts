@@ -4,6 +4,7 @@ import { addComponentIfMissing } from './world';
 import { createEntity } from './bodies';
 import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
 import { rotateVector, rotateVectorInverse } from './math/quaternion';
+import { wakeIsland } from './collision/sleep';
 
 /**
  * Rigid-body rotation helpers: moments of inertia of standard solids, setting a body's inertia,
@@ -114,6 +115,7 @@ const tmp = new Float64Array(3);
 export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyForceAtPoint';
   assertBody(where, world, eid);
+  wakeIsland(world, eid);
   const d = world.dimensions;
   assertVector(where, 'force', force, d);
   assertVector(where, 'point', point, d);
@@ -137,6 +139,7 @@ export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: Array
 export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyImpulseAtPoint';
   assertBody(where, world, eid);
+  wakeIsland(world, eid);
   const d = world.dimensions;
   assertVector(where, 'impulse', impulse, d);
   assertVector(where, 'point', point, d);

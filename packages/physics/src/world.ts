@@ -6,6 +6,7 @@ import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names';
 import { Rng } from './rng';
 import { createForceLawSettings, type ForceLawSettings } from './forces/settings';
 import { removeSpringsOf } from './forces/spring';
+import { wakeTouching } from './collision/sleep';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
@@ -45,11 +46,16 @@ export interface PhysicsWorldOptions {
    * false saves one write per particle per step in headless runs. Default true.
    */
   interpolation?: boolean;
+  /**
+   * Whether resting islands of colliding bodies go to sleep (skipped until something wakes them; see
+   * collision/sleep.ts). Default true.
+   */
+  sleep?: boolean;
 }
 
 const KNOWN_OPTIONS = [
   'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
-  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation',
+  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation', 'sleep',
 ] as const;
 
 /** The largest capacity a world accepts (2^24 entities). */
@@ -151,6 +157,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
   const interpolation = options.interpolation ?? true;
   if (typeof interpolation !== 'boolean') throw new TypeError(`${where}: interpolation must be a boolean, got ${describe(interpolation)}`);
+  const sleep = options.sleep ?? true;
+  if (typeof sleep !== 'boolean') throw new TypeError(`${where}: sleep must be a boolean, got ${describe(sleep)}`);
 
   const entityIndex = createEntityIndex();
   const components = createComponents(capacity);
@@ -171,11 +179,11 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     rng: new Rng(seed),
     components,
     stages: createStages(),
-    collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold }),
+    collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold, sleep }),
     timings,
     spawnStamp: new Uint32Array(capacity + 1),
     entityIndex,
-    removeHooks: [removeSpringsOf],
+    removeHooks: [removeSpringsOf, wakeTouching],
     interpolation,
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;

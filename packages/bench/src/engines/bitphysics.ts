@@ -24,7 +24,7 @@ export const bitphysicsEngine: EngineAdapter = {
     const dims = w.dimensions;
     const notes = [
       `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
-        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, no sleeping`,
+        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : "no sleeping"}`,
     ];
     return {
       engine: 'bitphysics',

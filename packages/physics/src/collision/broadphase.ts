@@ -1,9 +1,13 @@
 import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { CollisionState } from './state';
+import { wakeTag } from './sleep';
 
-/** Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. */
-export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2 } as const);
+/**
+ * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
+ * body takes no part in contacts except to be woken by an awake or kinematic body that comes near.
+ */
+export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2, Sleeping: 3 } as const);
 
 /** Pair kinds written by the broadphase into `CollisionState.pairKind`. */
 export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
@@ -45,6 +49,61 @@ function pushPair(cs: CollisionState, kind: number, a: number, b: number): void 
   cs.pairB[i] = b;
   cs.pairKind[i] = kind;
   cs.pairCount = i + 1;
+}
+
+/** Whether a pair of body types should meet even though neither is dynamic: a kinematic body wakes a sleeping one. */
+function wakes(ta: number, tb: number): boolean {
+  return (ta === BodyType.Kinematic && tb === BodyType.Sleeping) || (ta === BodyType.Sleeping && tb === BodyType.Kinematic);
+}
+
+/**
+ * Records a ball-ball candidate pair. A sleeping body met by a moving or kinematic body is woken (it
+ * joins this step as a dynamic body, given the gravity step the integrator skipped while it slept);
+ * met by a resting body it stays asleep and acts as immovable geometry (infinite mass, at rest), so a
+ * body resting against a sleeping pile is held up by it and can fall asleep too (Box2D likewise wakes
+ * islands only when something moving touches them).
+ */
+function addBallPair(world: PhysicsWorld, cs: CollisionState, e: number, f: number): void {
+  const type = cs.bodyType;
+  const te = type[e]!, tf = type[f]!;
+  if (te === BodyType.Sleeping && tf === BodyType.Sleeping) return;
+  const rest = cs.sleep.restTime;
+  if (te === BodyType.Sleeping && (tf === BodyType.Kinematic || rest[f] === 0)) wakeForContact(world, cs, e);
+  if (tf === BodyType.Sleeping && (te === BodyType.Kinematic || rest[e] === 0)) wakeForContact(world, cs, f);
+  pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+}
+
+/**
+ * Wakes a sleeping body met by an awake one during the broadphase: it becomes dynamic for this step,
+ * with the velocity and position the skipped integration would have given it (v = g h, x += g h^2),
+ * and is queued so its Sleeping tag is removed after the pass.
+ */
+function wakeForContact(world: PhysicsWorld, cs: CollisionState, e: number): void {
+  const c = world.components;
+  cs.bodyType[e] = BodyType.Dynamic;
+  cs.invMass[e] = c.Mass.inv[e]!;
+  const g = world.gravity, h = world.h;
+  c.Velocity.x[e] = g[0]! * h; c.Velocity.y[e] = g[1]! * h; c.Velocity.z[e] = g[2]! * h;
+  c.PreviousPosition.x[e] = c.Position.x[e]!; c.PreviousPosition.y[e] = c.Position.y[e]!; c.PreviousPosition.z[e] = c.Position.z[e]!;
+  c.Position.x[e] = c.Position.x[e]! + g[0]! * h * h; c.Position.y[e] = c.Position.y[e]! + g[1]! * h * h; c.Position.z[e] = c.Position.z[e]! + g[2]! * h * h;
+  if (cs.wakeCount >= cs.wakeList.length) { const l = new Int32Array(cs.wakeList.length * 2 + 16); l.set(cs.wakeList); cs.wakeList = l; }
+  cs.wakeList[cs.wakeCount++] = e;
+}
+
+/**
+ * Wakes, for this step, every sleeping body in the islands of the bodies woken since index `from` of
+ * the wake list (they were asleep together, so they must be solved together).
+ */
+function wakeIslands(world: PhysicsWorld, cs: CollisionState, from: number): void {
+  const island = cs.sleep.island;
+  const ids = new Set<number>();
+  for (let i = from; i < cs.wakeCount; i++) ids.add(island[cs.wakeList[i]!]!);
+  const asleep = query(world, [world.components.Sleeping]);
+  const type = cs.bodyType;
+  for (let i = 0; i < asleep.length; i++) {
+    const e = asleep[i]!;
+    if (type[e] === BodyType.Sleeping && ids.has(island[e]!)) wakeForContact(world, cs, e);
+  }
 }
 
 function ensureGrid(cs: CollisionState, bodies: number, tableSize: number): void {
@@ -118,6 +177,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invInertia[e] = iInv[e]!; }
   ents = query(world, [c.Ball, c.Kinematic]);
   for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Kinematic; }
+  ents = query(world, [c.Ball, c.Sleeping]);
+  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invMass[e] = 0; type[e] = BodyType.Sleeping; }
+  cs.wakeCount = 0;
   ents = query(world, [c.Ball, c.Position, c.Static]);
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
@@ -177,90 +239,99 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   start[0] = 0;
   const small = n - overCount;
 
-  // Pairs among grid bodies: own cell (later entries only) and half the neighbours.
-  const offsets = is3D ? HALF_3D : HALF_2D;
-  const stride = is3D ? 3 : 2;
-  const nOffsets = offsets.length / stride;
-  for (let p = 0; p < small; p++) {
-    const e = sorted[p]!;
-    const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
-    const x = ox[e]!, y = oy[e]!, z = oz[e]!;
-    const reach = radius[e]! + margin[e]!;
-    const te = type[e]!;
-    // Own cell.
-    const own = hashCell(cx, cy, cz) & mask;
-    for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
-      if (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz) continue;
-      const f = sorted[q]!;
-      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
-      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
-      const rr = reach + radius[f]! + margin[f]!;
-      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
-    }
-    for (let k = 0; k < nOffsets; k++) {
-      const nx = cx + offsets[k * stride]!, ny = cy + offsets[k * stride + 1]!, nz = is3D ? cz + offsets[k * stride + 2]! : 0;
-      const bucket = hashCell(nx, ny, nz) & mask;
-      for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-        if (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz) continue;
+  // Pair generation. Waking a sleeping body wakes its whole island; the pass is then run again so the
+  // woken bodies meet their neighbours (which were still asleep, and skipped, in the first pass).
+  for (let pass = 0; pass < 4; pass++) {
+    cs.pairCount = 0;
+    const woken = cs.wakeCount;
+    // Pairs among grid bodies: own cell (later entries only) and half the neighbours.
+    const offsets = is3D ? HALF_3D : HALF_2D;
+    const stride = is3D ? 3 : 2;
+    const nOffsets = offsets.length / stride;
+    for (let p = 0; p < small; p++) {
+      const e = sorted[p]!;
+      const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
+      const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+      const reach = radius[e]! + margin[e]!;
+      const te = type[e]!;
+      // Own cell.
+      const own = hashCell(cx, cy, cz) & mask;
+      for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
+        if (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz) continue;
         const f = sorted[q]!;
-        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
+        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
         const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
         const rr = reach + radius[f]! + margin[f]!;
-        if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
+        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
+      }
+      for (let k = 0; k < nOffsets; k++) {
+        const nx = cx + offsets[k * stride]!, ny = cy + offsets[k * stride + 1]!, nz = is3D ? cz + offsets[k * stride + 2]! : 0;
+        const bucket = hashCell(nx, ny, nz) & mask;
+        for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
+          if (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz) continue;
+          const f = sorted[q]!;
+          if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+          const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+          const rr = reach + radius[f]! + margin[f]!;
+          if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
+        }
       }
     }
-  }
 
-  // Oversized bodies: against each other directly, against grid bodies by a range query.
-  for (let i = 0; i < overCount; i++) {
-    const e = over[i]!;
-    const x = ox[e]!, y = oy[e]!, z = oz[e]!;
-    const reach = radius[e]! + margin[e]!;
-    const te = type[e]!;
-    for (let j = i + 1; j < overCount; j++) {
-      const f = over[j]!;
-      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
-      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
-      const rr = reach + radius[f]! + margin[f]!;
-      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
-    }
-    const found = queryBox(world, cs, x - reach, y - reach, z - reach, x + reach, y + reach, z + reach, small);
-    const cand = g.candidates;
-    for (let k = 0; k < found; k++) {
-      const f = cand[k]!;
-      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic) continue;
-      const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
-      const rr = reach + radius[f]! + margin[f]!;
-      if (dx * dx + dy * dy + dz * dz < rr * rr) pushPair(cs, PairKind.BallBall, e < f ? e : f, e < f ? f : e);
-    }
-  }
-
-  // Static segments against moving balls near their bounding box.
-  const segs = query(world, [c.Segment]);
-  if (segs.length > 0) {
-    const S = c.Segment;
-    for (let i = 0; i < segs.length; i++) {
-      const s = segs[i]!;
-      const pad = S.radius[s]! + maxReachAll;
-      const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!, bx = S.bx[s]!, by = S.by[s]!, bz = S.bz[s]!;
-      const found = queryBox(
-        world, cs,
-        Math.min(ax, bx) - pad, Math.min(ay, by) - pad, Math.min(az, bz) - pad,
-        Math.max(ax, bx) + pad, Math.max(ay, by) + pad, Math.max(az, bz) + pad,
-        small,
-      );
+    // Oversized bodies: against each other directly, against grid bodies by a range query.
+    for (let i = 0; i < overCount; i++) {
+      const e = over[i]!;
+      const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+      const reach = radius[e]! + margin[e]!;
+      const te = type[e]!;
+      for (let j = i + 1; j < overCount; j++) {
+        const f = over[j]!;
+        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const rr = reach + radius[f]! + margin[f]!;
+        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
+      }
+      const found = queryBox(world, cs, x - reach, y - reach, z - reach, x + reach, y + reach, z + reach, small);
       const cand = g.candidates;
       for (let k = 0; k < found; k++) {
         const f = cand[k]!;
-        if (type[f] !== BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
-      }
-      for (let j = 0; j < overCount; j++) {
-        const f = over[j]!;
-        if (type[f] !== BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const rr = reach + radius[f]! + margin[f]!;
+        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
       }
     }
+
+    // Static segments against moving balls near their bounding box.
+    const segs = query(world, [c.Segment]);
+    if (segs.length > 0) {
+      const S = c.Segment;
+      for (let i = 0; i < segs.length; i++) {
+        const s = segs[i]!;
+        const pad = S.radius[s]! + maxReachAll;
+        const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!, bx = S.bx[s]!, by = S.by[s]!, bz = S.bz[s]!;
+        const found = queryBox(
+          world, cs,
+          Math.min(ax, bx) - pad, Math.min(ay, by) - pad, Math.min(az, bz) - pad,
+          Math.max(ax, bx) + pad, Math.max(ay, by) + pad, Math.max(az, bz) + pad,
+          small,
+        );
+        const cand = g.candidates;
+        for (let k = 0; k < found; k++) {
+          const f = cand[k]!;
+          if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+        }
+        for (let j = 0; j < overCount; j++) {
+          const f = over[j]!;
+          if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+        }
+      }
+    }
+    if (cs.wakeCount === woken) break;
+    wakeIslands(world, cs, woken);
   }
   cs.stats.pairs = cs.pairCount;
+  for (let i = 0; i < cs.wakeCount; i++) wakeTag(world, cs.wakeList[i]!);
 }
 
 /**

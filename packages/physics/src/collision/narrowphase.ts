@@ -167,7 +167,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     const is3D = world.dimensions === 3;
     for (let i = 0; i < balls.length; i++) {
       const b = balls[i]!;
-      if (type[b] === BodyType.Static) continue;
+      if (type[b] >= BodyType.Static) continue;
       const r = radius[b]!;
       const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
       const x = ox[b]!, y = oy[b]!;
@@ -198,7 +198,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const nx = Pl.nx[p]!, ny = Pl.ny[p]!, nz = Pl.nz[p]!, d = Pl.d[p]!;
       for (let i = 0; i < balls.length; i++) {
         const b = balls[i]!;
-        if (type[b] === BodyType.Static) continue;
+        if (type[b] >= BodyType.Static) continue;
         const r = radius[b]!;
         const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
         const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;

@@ -46,6 +46,28 @@ export interface Boundary {
   staticFriction: number;
 }
 
+/**
+ * Sleeping (Box2D v3's idea: resting islands stop costing anything): a dynamic collider whose speed
+ * stays below `linearSpeed` (m/s) and whose spin stays below `angularSpeed` (rad/s) accumulates rest
+ * time; when every body of a contact island has rested `timeToSleep` (s), the island sleeps.
+ */
+export interface SleepState {
+  /** Whether islands may sleep. World option `sleep`, default true. */
+  enabled: boolean;
+  linearSpeed: number;
+  angularSpeed: number;
+  timeToSleep: number;
+  /** Per entity: rest time, s; union-find parent; the island's least rest time; the island it sleeps in. */
+  readonly restTime: Float64Array;
+  readonly island: Int32Array;
+  readonly parent: Int32Array;
+  readonly islandRest: Float64Array;
+  /** Gravity seen at the last step (a change wakes everything). */
+  readonly lastGravity: Float64Array;
+  /** Whether any body may be asleep (skips the wake checks when false). */
+  anyAsleep: boolean;
+}
+
 /** Everything the collide stage keeps between and within steps. */
 export interface CollisionState {
   /** Tuning, see CollisionSettings. */
@@ -95,8 +117,13 @@ export interface CollisionState {
   bodyExtra: Float64Array;
   /** Broadphase grid scratch, see broadphase.ts. */
   readonly grid: GridScratch;
-  /** Statistics of the last step: candidate pairs, contacts, and the deepest overlap left at its end (m). */
-  readonly stats: { pairs: number; contacts: number; maxOverlap: number };
+  /** Bodies woken during this step's broadphase (their Sleeping tags are removed after the pass). */
+  wakeList: Int32Array;
+  wakeCount: number;
+  /** Sleep: whether resting islands go to sleep, and the per-entity scratch it keeps; see sleep.ts. */
+  readonly sleep: SleepState;
+  /** Statistics of the last step: candidate pairs, contacts, the deepest overlap left at its end (m), bodies asleep. */
+  readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
 }
 
 /** Spatial-hash grid scratch, sized by the body count and grown by doubling. */
@@ -123,7 +150,7 @@ export interface GridScratch {
 /** Creates the collision state of a world with room for `capacity` entities. */
 export function createCollisionState(
   capacity: number,
-  options: { solverSubsteps: number; solverIterations: number; restitutionThreshold: number },
+  options: { solverSubsteps: number; solverIterations: number; restitutionThreshold: number; sleep: boolean },
 ): CollisionState {
   const n = capacity + 1;
   return {
@@ -177,6 +204,13 @@ export function createCollisionState(
       oversizedCount: 0,
       candidates: new Int32Array(0),
     },
-    stats: { pairs: 0, contacts: 0, maxOverlap: 0 },
+    wakeList: new Int32Array(64),
+    wakeCount: 0,
+    sleep: {
+      enabled: options.sleep, linearSpeed: 0.05, angularSpeed: 0.05, timeToSleep: 0.5,
+      restTime: new Float64Array(n), island: new Int32Array(n), parent: new Int32Array(n), islandRest: new Float64Array(n),
+      lastGravity: new Float64Array(3), anyAsleep: false,
+    },
+    stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
   };
 }

@@ -8,13 +8,13 @@ import type { PhysicsWorld } from '../world';
  */
 export function forcedBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic)]);
+  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
 /** Dynamic bodies without a force accumulator (plain particles): they feel the world's gravity only, a = g. */
 export function freeBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
-  return query(world, [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic)]);
+  return query(world, [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
 /** Kinematic bodies: x += v h, nothing changes their velocity. */
@@ -26,21 +26,21 @@ export function kinematicBodies(world: PhysicsWorld): QueryResult {
 /** Bodies that turn under torque with a scalar moment of inertia: angular velocity, inertia, a torque accumulator. */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
-  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
+  return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
 /** 3D bodies with a principal inertia tensor: they turn by Euler's equations, torque or not. */
 export function tensorBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
-  return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic)]);
+  return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
 /** Bodies whose orientation follows their angular velocity: 2D `Angle` or 3D `Orientation`. */
 export function spinningBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.Static)]);
+    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
+    : query(world, [c.AngularVelocity, c.Orientation, Not(c.Static), Not(c.Sleeping)]);
 }
 
 /**
@@ -50,6 +50,6 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
 export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return world.dimensions === 2
-    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static)])
-    : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static)]);
+    ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
+    : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)]);
 }

@@ -15,19 +15,20 @@ import { integrateSystem } from '../integrators/integrate';
 import { broadphaseSystem } from '../collision/broadphase';
 import { narrowphaseSystem } from '../collision/narrowphase';
 import { contactSolverSystem } from '../collision/solver';
+import { sleepSystem, wakeSystem } from '../collision/sleep';
 
 /** A system: a plain function of the world, run once per (sub)step in its stage. */
 export type System = (world: PhysicsWorld) => void;
 
 /**
  * The stages of a step, in order (DESIGN.md, "The step"):
- * 1. `spawn`: emitters and lifetimes (once per step);
+ * 1. `spawn`: waking, then lifetimes and emitters (once per step);
  * 2. `clearForces`: zero the force and torque accumulators;
  * 3. `forces`: one system per force law, user forces too;
  * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states);
  * 5. `collide`: broadphase, narrowphase, contact solver (impulses, restitution, friction, position correction);
  * 6. `constraints`: position-based links;
- * 7. `finalize`: sleeping, diagnostics (once per step).
+ * 7. `finalize`: sleeping islands (once per step).
  * Stages 2 to 6 run once per substep.
  */
 export const STAGES = ['spawn', 'clearForces', 'forces', 'integrate', 'collide', 'constraints', 'finalize'] as const;
@@ -43,7 +44,7 @@ export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'i
  * copy of it in `world.stages`; hook in with `addSystem`.
  */
 export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
-  { stage: 'spawn', systems: [lifetimeSystem, emitterSystem] },
+  { stage: 'spawn', systems: [wakeSystem, lifetimeSystem, emitterSystem] },
   { stage: 'clearForces', systems: [clearForcesSystem] },
   {
     stage: 'forces',
@@ -56,7 +57,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
   { stage: 'integrate', systems: [integrateSystem, burnFuelSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [] },
-  { stage: 'finalize', systems: [] },
+  { stage: 'finalize', systems: [sleepSystem] },
 ]);
 
 /** A fresh copy of the default systems of every stage. */

@@ -1,0 +1,173 @@
+import { addComponent, entityExists, hasComponent, removeComponent } from 'bitecs';
+import type { PhysicsWorld } from '../world';
+import { query, Not } from '../query';
+import { describe } from '../validate';
+
+/**
+ * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
+ * costing anything. A dynamic collider whose speed stays below `linearSpeed` and spin below
+ * `angularSpeed` accumulates rest time; islands are the bodies joined by contacts that carried an
+ * impulse this step (union-find); when every body of an island has rested `timeToSleep`, the island
+ * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it.
+ *
+ * A sleeping body wakes when an awake or kinematic body comes into contact range (the broadphase
+ * wakes it for that step), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
+ * write to the store, noticed at the next step), when `wakeBody` is called, when gravity changes, or
+ * when a body it touched is removed. Bodies driven by time-varying forces (driving or random forces,
+ * thrust) or held by springs never sleep: their forces would be ignored while asleep.
+ */
+
+/** Removes the Sleeping tag and resets the rest time (the body takes part again from the next system on). */
+export function wakeTag(world: PhysicsWorld, eid: number): void {
+  const c = world.components;
+  if (hasComponent(world, eid, c.Sleeping)) removeComponent(world, eid, c.Sleeping);
+  world.collision.sleep.restTime[eid] = 0;
+}
+
+/** Wakes the whole island a sleeping body sleeps in (an awake body: just itself). */
+export function wakeIsland(world: PhysicsWorld, eid: number): void {
+  const c = world.components;
+  if (!hasComponent(world, eid, c.Sleeping)) { world.collision.sleep.restTime[eid] = 0; return; }
+  const id = world.collision.sleep.island[eid]!;
+  const asleep = Array.from(query(world, [c.Sleeping]));
+  const island = world.collision.sleep.island;
+  for (const e of asleep) if (island[e] === id) wakeTag(world, e);
+}
+
+/** Whether the entity is asleep. */
+export function isSleeping(world: PhysicsWorld, eid: number): boolean {
+  return entityExists(world, eid) && hasComponent(world, eid, world.components.Sleeping);
+}
+
+/**
+ * Wakes a body and the island it sleeps in (no-op if it is awake). Use it after changing a sleeping
+ * body's forces or position by writing components directly. @throws RangeError if the entity does not exist.
+ */
+export function wakeBody(world: PhysicsWorld, eid: number): void {
+  if (typeof eid !== 'number' || !entityExists(world, eid)) throw new RangeError(`wakeBody: entity ${describe(eid)} does not exist in this world`);
+  wakeIsland(world, eid);
+}
+
+/** Wakes every sleeping body. */
+export function wakeAll(world: PhysicsWorld): void {
+  const asleep = query(world, [world.components.Sleeping]);
+  const ids = Array.from(asleep);
+  for (const e of ids) wakeTag(world, e);
+}
+
+/**
+ * Stage 1 (first): wakes sleeping bodies whose velocity has been written since they fell asleep, and
+ * everything if gravity changed.
+ */
+export function wakeSystem(world: PhysicsWorld): void {
+  const sl = world.collision.sleep;
+  const g = world.gravity, last = sl.lastGravity;
+  const gravityChanged = g[0] !== last[0] || g[1] !== last[1] || g[2] !== last[2];
+  last[0] = g[0]!; last[1] = g[1]!; last[2] = g[2]!;
+  if (!sl.anyAsleep) return;
+  if (gravityChanged) { wakeAll(world); return; }
+  const c = world.components;
+  const asleep = query(world, [c.Sleeping, c.Velocity]);
+  if (asleep.length === 0) { sl.anyAsleep = false; return; }
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  let woken: number[] | null = null;
+  for (let i = 0; i < asleep.length; i++) {
+    const e = asleep[i]!;
+    if (vx[e] !== 0 || vy[e] !== 0 || vz[e] !== 0) (woken ??= []).push(e);
+  }
+  if (woken) for (const e of woken) wakeIsland(world, e);
+}
+
+/**
+ * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
+ * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
+ * not join islands (a floor does not tie every pile together).
+ */
+export function sleepSystem(world: PhysicsWorld): void {
+  const cs = world.collision;
+  const sl = cs.sleep;
+  const c = world.components;
+  if (!sl.enabled) { cs.stats.sleeping = 0; return; }
+  const bodies = query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const n = bodies.length;
+  const rest = sl.restTime, parent = sl.parent, islandRest = sl.islandRest;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const lin2 = sl.linearSpeed * sl.linearSpeed, ang2 = sl.angularSpeed * sl.angularSpeed;
+  const dt = world.dt;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
+    const w2 = hasComponent(world, e, c.AngularVelocity) ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
+    rest[e] = v2 < lin2 && w2 < ang2 ? rest[e]! + dt : 0;
+    parent[e] = e;
+  }
+  // Bodies that must stay awake: time-varying forces, springs.
+  for (const comp of [c.DrivingForce, c.RandomForce, c.Thrust]) {
+    const ents = query(world, [comp]);
+    for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
+  }
+  const springs = query(world, [c.Spring]);
+  for (let i = 0; i < springs.length; i++) {
+    const s = springs[i]!;
+    rest[c.Spring.a[s]!] = 0; rest[c.Spring.b[s]!] = 0;
+  }
+  // Islands over contacts between dynamic awake bodies that pushed.
+  const rows = cs.cache.rows;
+  const find = (x: number): number => {
+    while (parent[x] !== x) { parent[x] = parent[parent[x]!]!; x = parent[x]!; }
+    return x;
+  };
+  for (let i = 0; i < rows.count; i++) {
+    if (rows.kind[i] !== 0 || rows.normalImpulse[i]! <= 0) continue;
+    const a = rows.a[i]!, b = rows.b[i]!;
+    if (cs.bodyType[a] !== 0 || cs.bodyType[b] !== 0) continue;
+    const ra = find(a), rb = find(b);
+    if (ra !== rb) parent[ra] = rb;
+  }
+  for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    const r = find(e);
+    if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
+  }
+  const T = sl.timeToSleep;
+  let sleepers: number[] | null = null;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    if (islandRest[find(e)]! >= T) (sleepers ??= []).push(e);
+  }
+  if (sleepers) {
+    const O = c.PreviousPosition, P = c.Position;
+    const island = sl.island;
+    for (const e of sleepers) {
+      island[e] = find(e);
+      vx[e] = 0; vy[e] = 0; vz[e] = 0;
+      if (hasComponent(world, e, c.AngularVelocity)) { wx[e] = 0; wy[e] = 0; wz[e] = 0; }
+      O.x[e] = P.x[e]!; O.y[e] = P.y[e]!; O.z[e] = P.z[e]!;
+      addComponent(world, e, c.Sleeping);
+    }
+    sl.anyAsleep = true;
+  }
+  cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+}
+
+/**
+ * Removal hook: a body removed from a sleeping pile wakes its island; an awake one wakes the islands of
+ * the sleeping bodies it touched in the last step.
+ */
+export function wakeTouching(world: PhysicsWorld, eid: number): void {
+  const cs = world.collision;
+  if (!cs.sleep.anyAsleep) return;
+  const c = world.components;
+  if (hasComponent(world, eid, c.Sleeping)) { wakeIsland(world, eid); return; }
+  const rows = cs.cache.rows;
+  for (let i = 0; i < rows.count; i++) {
+    const a = rows.a[i]!, b = rows.b[i]!, f = rows.feature[i]!;
+    const touches = a === eid || b === eid || (rows.kind[i] !== 0 && rows.kind[i] !== 1 && f === eid);
+    if (!touches) continue;
+    for (const other of [a, b]) {
+      if (other !== 0 && other !== eid && hasComponent(world, other, c.Sleeping)) wakeIsland(world, other);
+    }
+  }
+}
