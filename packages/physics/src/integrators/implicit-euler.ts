@@ -37,18 +37,51 @@ function work(world: PhysicsWorld, n: number): Work {
  * evaluation (Jacobian-free Newton-Krylov; Knoll and Keyes, J. Comput. Phys. 193, 2004). Linear
  * force laws converge in one Newton step. Convergence test: |R|_inf <= 1e-10 (1 + |v|_inf + h |a|_inf).
  *
- * @throws RangeError if Newton does not converge in 30 iterations (a force law that is not
- *   differentiable enough at this step size); the message gives the residual. Use a smaller dt.
+ * If Newton does not converge (a collapsing orbit, a very stiff force at this h), the step is retried
+ * as two half steps, recursively down to h / 64, before giving up.
+ *
+ * @throws RangeError if Newton does not converge even at h / 64 (a force law that is not
+ *   differentiable enough); the message gives the residual. Use a smaller dt.
  */
 export function implicitEuler(world: PhysicsWorld, h: number): void {
+  const t = world.time;
+  if (!implicitStep(world, h, t, false, true)) subdivide(world, h, t, 1);
+  advanceKinematic(world, h);
+}
+
+/** Most halvings before implicit Euler gives up on a step (h / 2^6 = h / 64). */
+const MAX_DEPTH = 6;
+
+function subdivide(world: PhysicsWorld, h: number, t: number, depth: number): void {
+  const half = h / 2;
+  for (let k = 0; k < 2; k++) {
+    const start = t + k * half;
+    if (implicitStep(world, half, start, true, false)) continue;
+    if (depth >= MAX_DEPTH) {
+      throw new RangeError(
+        `implicit Euler: Newton did not converge in ${MAX_NEWTON} iterations at t = ${start} s even with the step cut to ${half.toExponential(3)} s (residual ${lastResidual.toExponential(3)} m/s); use a smaller dt`,
+      );
+    }
+    subdivide(world, half, start, depth + 1);
+  }
+}
+
+let lastResidual = 0;
+
+/**
+ * One implicit Euler step of h from the state in the arrays at time t. `evaluate`: evaluate the
+ * forces at the start first (the pipeline has done it for a whole step); `setPrevious`: record the
+ * start as PreviousPosition (only for the whole step). Returns false, with the start state restored,
+ * if Newton does not converge.
+ */
+function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boolean, setPrevious: boolean): boolean {
   const s = getScratch(world);
   gather(world, s);
-  saveState(world, s);
-  const t = world.time;
-  stageSlopes(world, s, t, false);
+  saveState(world, s, setPrevious);
+  stageSlopes(world, s, t, evaluate);
   const nm = s.nMovers, ns = s.nSpinners;
   const n = 3 * (nm + ns);
-  if (n === 0) { advanceKinematic(world, h); return; }
+  if (n === 0) return true;
   const W = work(world, n);
   const { u, u0, A, R, d } = W;
 
@@ -59,33 +92,24 @@ export function implicitEuler(world: PhysicsWorld, h: number): void {
   for (let i = 0; i < n; i++) { u[i] = u0[i]! + h * A[i]!; scale = Math.max(scale, Math.abs(u0[i]!), h * Math.abs(A[i]!)); }
   const tol = RESIDUAL_TOL * (1 + scale);
 
-  let residual = Infinity;
-  for (let it = 0; it < MAX_NEWTON; it++) {
+  for (let it = 0; it <= MAX_NEWTON; it++) {
     writeState(world, s, h, u);
     accelerationsAt(world, s, t + h);
     readAccelerations(s, A);
-    residual = 0;
+    let residual = 0;
     for (let i = 0; i < n; i++) { const r = u[i]! - u0[i]! - h * A[i]!; R[i] = -r; residual = Math.max(residual, Math.abs(r)); }
-    if (residual <= tol) break;
-    // Solve J d = -R.
+    if (residual <= tol) {
+      checkFinite(world, s);
+      return true;
+    }
+    lastResidual = residual;
+    if (it === MAX_NEWTON || !(residual < Infinity)) break;
     solveBiCGStab(world, s, h, t, W, n);
     for (let i = 0; i < n; i++) u[i] = u[i]! + d[i]!;
-    if (it === MAX_NEWTON - 1) {
-      writeState(world, s, h, u);
-      accelerationsAt(world, s, t + h);
-      readAccelerations(s, A);
-      residual = 0;
-      for (let i = 0; i < n; i++) residual = Math.max(residual, Math.abs(u[i]! - u0[i]! - h * A[i]!));
-      if (residual > tol) {
-        throw new RangeError(
-          `implicit Euler: Newton did not converge in ${MAX_NEWTON} iterations at t = ${t} s (residual ${residual.toExponential(3)} m/s, tolerance ${tol.toExponential(3)}); use a smaller dt`,
-        );
-      }
-    }
   }
-  writeState(world, s, h, u);
-  checkFinite(world, s);
-  advanceKinematic(world, h);
+  // Not converged: put the start state back (v = u0, x = x0, and the orientations) for the caller to retry.
+  writeState(world, s, 0, u0);
+  return false;
 }
 
 function readVelocities(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array): void {

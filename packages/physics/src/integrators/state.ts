@@ -96,8 +96,11 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
   s.nSpinners = k;
 }
 
-/** Copies the current state of every mover and spinner into x0 / q0 / w0 and sets PreviousPosition. */
-export function saveState(world: PhysicsWorld, s: IntegratorScratch): void {
+/**
+ * Copies the current state of every mover and spinner into x0 / q0 / w0, and (unless `setPrevious` is
+ * false, for sub-steps within a step) records it as PreviousPosition.
+ */
+export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious = true): void {
   const c = world.components;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
@@ -107,7 +110,7 @@ export function saveState(world: PhysicsWorld, s: IntegratorScratch): void {
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     x0[e] = px[e]!; y0[e] = py[e]!; z0[e] = pz[e]!;
-    ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
+    if (setPrevious) { ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!; }
     u0[e] = vx[e]!; v0[e] = vy[e]!; w0[e] = vz[e]!;
   }
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
