@@ -48,6 +48,13 @@ export const CRACKLES = Object.freeze({ first: 4, second: 3 });
 /** Most shells in flight at once; further launches are refused until one bursts. */
 export const MAX_SHELLS = 64;
 
+/**
+ * Most burst sparks spawned in one step. A bigger burst spawns the rest at the same point in the next
+ * steps (2,000 sparks a step: a 12,000-spark burst takes 0.1 s), so a huge burst costs several
+ * frames a little instead of one frame a lot (each spawn costs the physics tens of microseconds).
+ */
+export const BURST_SPARKS_PER_STEP = 2000;
+
 /** Longest hold that still makes the burst bigger, s. */
 export const MAX_HOLD = 1.5;
 
@@ -109,7 +116,16 @@ export interface FireworksShow {
   bursts: number;
   /** Placeholder entities holding room for shells not in flight (MAX_SHELLS - shellCount of them). */
   readonly placeholders: number[];
+  /**
+   * Bursts still spawning (see BURST_SPARKS_PER_STEP), entries 0..pendingCount-1: position (m),
+   * velocity passed on (m/s), emitter, sparks left, speed factor sqrt(scale).
+   */
+  readonly pending: Float64Array;
+  pendingCount: number;
 }
+
+/** Fields of a pending burst in `FireworksShow.pending`. */
+const PEND = 7;
 
 function check(cond: boolean, message: string): void {
   if (!cond) throw new RangeError(`fireworks: ${message}`);
@@ -217,6 +233,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     launched: 0,
     bursts: 0,
     placeholders,
+    pending: new Float64Array(PEND * MAX_SHELLS),
+    pendingCount: 0,
   };
   for (let i = 0; i < p.opening; i++) {
     const x = SKY.width * (0.25 + 0.5 * (p.opening === 1 ? 0.5 : i / (p.opening - 1)));
@@ -294,27 +312,53 @@ const burstPos = [0, 0], burstVel = [0, 0];
 /**
  * Bursts every shell whose fuse has burnt: `sparks x scale` sparks of its colour at its position,
  * passing on its velocity, launched at sqrt(scale) x the normal speeds; the shell is removed and its
- * room given back to a placeholder. Called by `stepFireworks` after each step.
+ * room given back to a placeholder. At most BURST_SPARKS_PER_STEP sparks are spawned a step; the
+ * rest of a big burst follows in the next steps. Called by `stepFireworks` after each step.
  */
 export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
   const c = world.components;
-  const E = c.Emitter;
   const now = world.time + 1e-9;
+  const Q = show.pending;
   for (let i = show.shellCount - 1; i >= 0; i--) {
     const e = show.shellIds[i]!;
     if (now < show.shellBurstTime[i]!) continue;
     const scale = show.shellScale[i]!;
-    const em = show.emitters.sparks[show.shellColor[i]!]!;
-    const s = Math.sqrt(scale);
-    E.speedMin[em] = SPEED_MIN * BURST_SPEED * s;
-    E.speedMax[em] = BURST_SPEED * s;
-    burstPos[0] = c.Position.x[e]!; burstPos[1] = c.Position.y[e]!;
-    burstVel[0] = c.Velocity.x[e]!; burstVel[1] = c.Velocity.y[e]!;
+    if (show.pendingCount < MAX_SHELLS) {
+      const o = PEND * show.pendingCount++;
+      Q[o] = c.Position.x[e]!; Q[o + 1] = c.Position.y[e]!;
+      Q[o + 2] = c.Velocity.x[e]!; Q[o + 3] = c.Velocity.y[e]!;
+      Q[o + 4] = show.emitters.sparks[show.shellColor[i]!]!;
+      Q[o + 5] = Math.round(show.params.sparks * scale);
+      Q[o + 6] = Math.sqrt(scale);
+    }
     removeBody(world, e);
     dropShell(show, i);
     show.placeholders.push(createEntity(world));
-    emitNow(world, em, Math.round(show.params.sparks * scale), burstPos, burstVel);
     show.bursts++;
+  }
+  emitPending(world, show);
+}
+
+/** Spawns up to BURST_SPARKS_PER_STEP sparks of the pending bursts, oldest first. */
+function emitPending(world: PhysicsWorld, show: FireworksShow): void {
+  const E = world.components.Emitter;
+  const Q = show.pending;
+  let budget = BURST_SPARKS_PER_STEP;
+  while (show.pendingCount > 0 && budget > 0) {
+    const em = Q[4]!, s = Q[6]!;
+    const n = Math.min(Q[5]!, budget);
+    E.speedMin[em] = SPEED_MIN * BURST_SPEED * s;
+    E.speedMax[em] = BURST_SPEED * s;
+    burstPos[0] = Q[0]!; burstPos[1] = Q[1]!;
+    burstVel[0] = Q[2]!; burstVel[1] = Q[3]!;
+    emitNow(world, em, n, burstPos, burstVel);
+    budget -= n;
+    Q[5] = Q[5]! - n;
+    if (Q[5] === 0) {
+      // Drop the head entry (at most MAX_SHELLS entries of 7 numbers: a short copy).
+      Q.copyWithin(0, PEND, PEND * show.pendingCount);
+      show.pendingCount--;
+    }
   }
 }
 

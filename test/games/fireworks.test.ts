@@ -7,7 +7,7 @@ import { describe, expect, test } from 'vitest';
 import { query } from 'bitecs';
 import { stepMany, type PhysicsWorld } from '@bitphysics/physics';
 import {
-  CRACKLES, MAX_HOLD, MAX_SHELLS, PALETTE, SKY, burstScale, createFireworks, launchShell, resolveFireworksOptions, setAutoShow, setShowDrag,
+  BURST_SPARKS_PER_STEP, CRACKLES, MAX_HOLD, MAX_SHELLS, PALETTE, SKY, burstScale, createFireworks, launchShell, resolveFireworksOptions, setAutoShow, setShowDrag,
   setShowGenerations, setShowGravity, setShowSparks, stepFireworks, type FireworksShow,
 } from '../../games/fireworks/show';
 
@@ -99,6 +99,24 @@ describe('a launch', () => {
     expect(half.count).toBe(200);
     expect(held.count).toBe(300);
     expect(held.maxSpeed).toBeGreaterThan(1.5 * click.maxSpeed);
+  });
+
+  test('a burst bigger than BURST_SPARKS_PER_STEP spawns over several steps from the same point', () => {
+    const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 2000, seed: 12 });
+    launchShell(world, show, 60, 40, MAX_HOLD); // 6000 sparks
+    while (show.bursts === 0) stepFireworks(world, show);
+    const counts = [sparksOf(world, show)];
+    const centre = sparkCentre(world, show); // all sparks of the first chunk start at the burst point
+    for (let i = 0; i < 2; i++) { stepFireworks(world, show); counts.push(sparksOf(world, show)); }
+    // The third chunk was emitted after this step: age 0, at the burst point.
+    const P = world.components.Position, Part = world.components.Particle, L = world.components.Lifetime;
+    const fresh = Array.from(query(world, [Part])).filter((e) => L.age[e] === 0 && show.emitters.sparks.includes(Part.emitter[e]!));
+    expect(fresh.length).toBe(2000);
+    for (const e of fresh) { expect(P.x[e]).toBeCloseTo(centre[0], 9); expect(P.y[e]).toBeCloseTo(centre[1], 9); }
+    stepFireworks(world, show);
+    counts.push(sparksOf(world, show));
+    expect(counts).toEqual([BURST_SPARKS_PER_STEP, 2 * BURST_SPARKS_PER_STEP, 6000, 6000]);
+    expect(show.pendingCount).toBe(0);
   });
 
   test('generations: sparks burst into crackles (2), crackles burst again (3)', () => {
