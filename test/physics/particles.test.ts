@@ -1,6 +1,7 @@
 import { describe, expect, test } from 'vitest';
 import {
   addBody, addEmitter, burst, createPhysicsWorld, emitNow, onParticleDeath, particleLook, setVortex, step, stepMany,
+  removeBody, setEmitter,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
 
@@ -140,6 +141,32 @@ describe('emitters', () => {
     step(world);
     expect(world.components.Force.x[b]).toBeCloseTo(0, 12);
     expect(world.components.Force.y[b]).toBeCloseTo(6, 12); // 3 * 2^(2-1) along z x x = +y
+  });
+
+  test('a particle whose emitter was removed does not burst with the emitter that reuses its id', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0], capacity: 500 });
+    const target = addEmitter(world, { lifetime: 10 });
+    const host = addBody(world, {});
+    const plain = addEmitter(world, { attachTo: host, lifetime: 0.5 });
+    emitNow(world, plain, 1);
+    removeBody(world, host);
+    const host2 = addBody(world, {});
+    expect(host2).toBe(host);
+    addEmitter(world, { attachTo: host2, lifetime: 0.5, onDeath: { emitter: target, count: 50, maxGeneration: 1 } });
+    stepMany(world, 40);
+    expect(world.components.Emitter.spawned[target]).toBe(0);
+  });
+
+  test('setEmitter changes rate, direction, speeds and future particles', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0], capacity: 2000 });
+    const em = addEmitter(world, { rate: 0, direction: [1, 0], spread: 0, speed: 1, lifetime: 5 });
+    setEmitter(world, em, { rate: 60, direction: [0, 1], speed: [3, 3], particle: { quadraticDrag: 0.1, mass: 1 } });
+    step(world);
+    const [p] = query(world, [world.components.Particle]);
+    expect(world.components.Velocity.x[p!]!).toBeCloseTo(0, 12);
+    expect(world.components.Velocity.y[p!]!).toBeGreaterThan(2.9);
+    expect(world.components.QuadraticDrag.k[p!]).toBe(0.1);
+    expect(() => setEmitter(world, em, { spread: 5 })).toThrow(/spread must be in \[0, 3.14/);
   });
 
   test('bad input', () => {

@@ -198,11 +198,12 @@ export interface Components {
   Lifetime: { age: Float64Array; duration: Float64Array };
   /**
    * What a particle looks like over its life, for renderers: colour (0xRRGGBB), size (m) and alpha
-   * (0..1) at birth and at death, interpolated linearly in age / duration; `emitter` that made it;
-   * `generation` (0 for emitted, +1 for each burst on death).
+   * (0..1) at birth and at death, interpolated linearly in age / duration; `emitter` that made it and
+   * that emitter's spawn stamp (so a recycled emitter id is not mistaken for it); `generation` (0 for
+   * emitted, +1 for each burst on death).
    */
   Particle: {
-    emitter: Int32Array; generation: Float64Array;
+    emitter: Int32Array; emitterStamp: Uint32Array; generation: Float64Array;
     colorStart: Uint32Array; colorEnd: Uint32Array; sizeStart: Float64Array; sizeEnd: Float64Array;
     alphaStart: Float64Array; alphaEnd: Float64Array;
   };
@@ -320,7 +321,7 @@ export function createComponents(capacity: number): Components {
     },
     Lifetime: { age: f(), duration: f() },
     Particle: {
-      emitter: new Int32Array(n), generation: f(),
+      emitter: new Int32Array(n), emitterStamp: new Uint32Array(n), generation: f(),
       colorStart: new Uint32Array(n), colorEnd: new Uint32Array(n), sizeStart: f(), sizeEnd: f(),
       alphaStart: f(), alphaEnd: f(),
     },

@@ -53,7 +53,7 @@ export {
 } from './forces/api';
 export { vortexSystem } from './forces/vortex';
 export {
-  addEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
+  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
   EmitterShape, CapacityPolicy,
 } from './particles/emitter';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter';
@@ -81,4 +81,7 @@ export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accu
 export type { GravityTree } from './forces/barnes-hut';
 export { NonFiniteStateError } from './errors';
 export { Rng } from './rng';
+export { query, Not } from './query';
+/** Whether an entity id is alive in the world (bitecs' entityExists). */
+export { entityExists, hasComponent } from 'bitecs';
 export * from './scenes/index';

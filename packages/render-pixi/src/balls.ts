@@ -1,5 +1,5 @@
 import { Container, Particle, ParticleContainer, Sprite, type Texture } from 'pixi.js';
-import { hasComponent, query } from 'bitecs';
+import { hasComponent, Not, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2 } from './camera';
 import { seededColor } from './colors';
@@ -106,7 +106,8 @@ export class BallLayer {
     this.clear();
     const n = world.capacity + 1;
     const c = world.components;
-    this.terms = [c.Position, c.Ball];
+    // Particles that collide have a Ball too, but the particle layer draws them.
+    this.terms = [c.Position, c.Ball, Not(c.Particle)];
     if (n !== this.capacity + 1) {
       this.capacity = world.capacity;
       this.eids = new Int32Array(world.capacity);

@@ -246,7 +246,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
   L.age[e] = 0;
   L.duration[e] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
   const P = c.Particle;
-  P.emitter[e] = em; P.generation[e] = generation;
+  P.emitter[e] = em; P.emitterStamp[e] = world.spawnStamp[em]!; P.generation[e] = generation;
   P.colorStart[e] = E.colorStart[em]!; P.colorEnd[e] = E.colorEnd[em]!;
   P.sizeStart[e] = E.sizeStart[em]!; P.sizeEnd[e] = E.sizeEnd[em]!;
   P.alphaStart[e] = E.alphaStart[em]!; P.alphaEnd[e] = E.alphaEnd[em]!;
@@ -302,7 +302,7 @@ export function lifetimeSystem(world: PhysicsWorld): void {
     for (const hook of b.hooks) hook(world, e);
     if (hasComponent(world, e, P)) {
       const em = P.emitter[e]!;
-      if (em > 0 && entityExists(world, em) && hasComponent(world, em, E)) {
+      if (em > 0 && world.spawnStamp[em] === P.emitterStamp[e] && entityExists(world, em) && hasComponent(world, em, E)) {
         const target = E.deathEmitter[em]!, gen = P.generation[e]!;
         if (target > 0 && gen < E.maxGeneration[em]! && entityExists(world, target) && hasComponent(world, target, E)) {
           if ((b.burstCount + 1) * 9 > b.bursts.length) { const nb = new Float64Array(b.bursts.length * 2); nb.set(b.bursts); b.bursts = nb; }
@@ -547,4 +547,70 @@ export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook
   out.size = P.sizeStart[eid]! + (P.sizeEnd[eid]! - P.sizeStart[eid]!) * t;
   out.alpha = P.alphaStart[eid]! + (P.alphaEnd[eid]! - P.alphaStart[eid]!) * t;
   return out;
+}
+
+/**
+ * Changes an emitter's settings: any of addEmitter's options except attachTo, position and velocity
+ * (move an emitter with setPosition / setVelocity). Omitted options keep their value. Particles
+ * already emitted keep what they were given.
+ * @throws TypeError | RangeError as addEmitter does, or if `em` is not an emitter.
+ */
+export function setEmitter(world: PhysicsWorld, em: number, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): void {
+  const where = 'setEmitter';
+  assertEmitter(where, world, em);
+  assertKnownKeys(where, options, ['rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled']);
+  // Validate by building a scratch emitter description through the same checks as addEmitter.
+  const E = world.components.Emitter;
+  const d = world.dimensions;
+  if (options.rate !== undefined) { assertNonNegative(where, 'rate', options.rate); E.rate[em] = options.rate; }
+  if (options.shape !== undefined) {
+    if (!(options.shape in SHAPES)) throw new RangeError(`${where}: shape must be one of ${Object.keys(SHAPES).join(', ')}, got ${describe(options.shape)}`);
+    E.shape[em] = SHAPES[options.shape]!;
+  }
+  if (options.size !== undefined) {
+    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); E.size[em] = options.size; E.sizeY[em] = options.size; E.sizeZ[em] = options.size; }
+    else {
+      assertVector(where, 'size', options.size, d);
+      for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]);
+      E.size[em] = options.size[0]!; E.sizeY[em] = options.size[1]!; E.sizeZ[em] = d === 3 ? options.size[2]! : 0;
+    }
+  }
+  if (options.direction !== undefined) {
+    assertVector(where, 'direction', options.direction, d);
+    const x = options.direction[0]!, y = options.direction[1]!, z = d === 3 ? options.direction[2]! : 0;
+    const n = Math.hypot(x, y, z);
+    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
+    E.dirX[em] = x / n; E.dirY[em] = y / n; E.dirZ[em] = z / n;
+  }
+  if (options.spread !== undefined) { assertInRange(where, 'spread', options.spread, 0, Math.PI); E.spread[em] = options.spread; }
+  if (options.speed !== undefined) { const r = range(where, 'speed', options.speed, [0, 0], false); E.speedMin[em] = r[0]; E.speedMax[em] = r[1]; }
+  if (options.lifetime !== undefined) { const r = range(where, 'lifetime', options.lifetime, [1, 1], true); E.lifeMin[em] = r[0]; E.lifeMax[em] = r[1]; }
+  if (options.inheritVelocity !== undefined) { assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1); E.inherit[em] = options.inheritVelocity; }
+  if (options.policy !== undefined) {
+    if (options.policy !== 'drop-new' && options.policy !== 'recycle-oldest') throw new RangeError(`${where}: policy must be 'drop-new' or 'recycle-oldest', got ${describe(options.policy)}`);
+    E.policy[em] = options.policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
+  }
+  if (options.enabled !== undefined) E.enabled[em] = options.enabled ? 1 : 0;
+  const p = options.particle;
+  if (p !== undefined) {
+    assertKnownKeys(`${where}: particle`, p, ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd']);
+    if (p.mass !== undefined) { assertPositive(where, 'particle.mass', p.mass); E.mass[em] = p.mass; }
+    if (p.linearDrag !== undefined) { assertNonNegative(where, 'particle.linearDrag', p.linearDrag); E.linearDrag[em] = p.linearDrag; }
+    if (p.quadraticDrag !== undefined) { assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag); E.quadraticDrag[em] = p.quadraticDrag; }
+    if (p.gravityScale !== undefined) { assertFinite(where, 'particle.gravityScale', p.gravityScale); E.gravityScale[em] = p.gravityScale; }
+    if (p.radius !== undefined) { assertPositive(where, 'particle.radius', p.radius); E.radius[em] = p.radius; }
+    for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) { assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff); E[k][em] = p[k]; }
+    for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) { assertNonNegative(where, `particle.${k}`, p[k]); E[k][em] = p[k]; }
+    for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) { assertInRange(where, `particle.${k}`, p[k], 0, 1); E[k][em] = p[k]; }
+  }
+  if (options.onDeath !== undefined) {
+    const od = options.onDeath;
+    assertKnownKeys(`${where}: onDeath`, od, ['emitter', 'count', 'maxGeneration']);
+    if (od.emitter !== 0 && (!entityExists(world, od.emitter) || !hasComponent(world, od.emitter, world.components.Emitter))) {
+      throw new RangeError(`${where}: onDeath.emitter ${describe(od.emitter)} is not an emitter in this world`);
+    }
+    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
+    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
+    E.deathEmitter[em] = od.emitter; E.deathCount[em] = od.count; E.maxGeneration[em] = od.maxGeneration;
+  }
 }
