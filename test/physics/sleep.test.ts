@@ -34,6 +34,17 @@ describe('sleeping islands', () => {
     expect(world.components.Position.y[drop]!).toBeGreaterThan(0.5 - 0.025);
   });
 
+  test('a slow body in free flight never sleeps: it drifts exactly x = x0 + v t', () => {
+    // Sleep needs support; a free body below the sleep speed (0.01 < 0.05 m/s) must keep moving.
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    setBoundary(world, { min: [-50, -50], max: [50, 50] });
+    const a = addBody(world, { position: [0, 0], velocity: [0.01, 0], radius: 0.5 });
+    stepMany(world, 600);
+    expect(isSleeping(world, a)).toBe(false);
+    // Exact to rounding: no force acts, so every scheme translates uniformly.
+    expect(world.components.Position.x[a]!).toBeCloseTo(0.01 * world.time, 12);
+  });
+
   test('writing a velocity wakes a sleeping body; setVelocity does too', () => {
     const world = createPhysicsWorld({ gravity: [0, -10] });
     setBoundary(world, { min: [-5, 0], max: [5, 10] });

@@ -9,6 +9,8 @@ import { describe } from '../validate';
  * `angularSpeed` accumulates rest time; islands are the bodies joined by contacts that carried an
  * impulse this step (union-find); when every body of an island has rested `timeToSleep`, the island
  * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it.
+ * Only a supported body rests: one that carried a contact impulse this step. A body in free flight
+ * (a balloon creeping to its equilibrium height, a projectile at its apex) never sleeps, however slow.
  *
  * A sleeping body wakes when an awake or kinematic body comes into contact range (the broadphase
  * wakes it for that step), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
@@ -95,11 +97,18 @@ export function sleepSystem(world: PhysicsWorld): void {
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   const lin2 = sl.linearSpeed * sl.linearSpeed, ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
+  const rows = cs.cache.rows;
+  // Support: a body rests only while some contact pushed it this step.
+  const stamp = ++sl.stamp, supported = sl.supported;
+  for (let i = 0; i < rows.count; i++) {
+    if (rows.normalImpulse[i]! <= 0) continue;
+    supported[rows.a[i]!] = stamp; supported[rows.b[i]!] = stamp;
+  }
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
     const w2 = hasComponent(world, e, c.AngularVelocity) ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
-    rest[e] = v2 < lin2 && w2 < ang2 ? rest[e]! + dt : 0;
+    rest[e] = v2 < lin2 && w2 < ang2 && supported[e] === stamp ? rest[e]! + dt : 0;
     parent[e] = e;
   }
   // Bodies that must stay awake: time-varying forces, springs.
@@ -113,7 +122,6 @@ export function sleepSystem(world: PhysicsWorld): void {
     rest[c.Spring.a[s]!] = 0; rest[c.Spring.b[s]!] = 0;
   }
   // Islands over contacts between dynamic awake bodies that pushed.
-  const rows = cs.cache.rows;
   const find = (x: number): number => {
     while (parent[x] !== x) { parent[x] = parent[parent[x]!]!; x = parent[x]!; }
     return x;

@@ -62,6 +62,10 @@ export interface SleepState {
   readonly island: Int32Array;
   readonly parent: Int32Array;
   readonly islandRest: Float64Array;
+  /** Per entity: the sleep stamp of the last step in which a contact pushed it (support). */
+  readonly supported: Uint32Array;
+  /** Counts sleep-system runs; compared with `supported`. */
+  stamp: number;
   /** Gravity seen at the last step (a change wakes everything). */
   readonly lastGravity: Float64Array;
   /** Whether any body may be asleep (skips the wake checks when false). */
@@ -208,7 +212,7 @@ export function createCollisionState(
     wakeCount: 0,
     sleep: {
       enabled: options.sleep, linearSpeed: 0.05, angularSpeed: 0.05, timeToSleep: 0.5,
-      restTime: new Float64Array(n), island: new Int32Array(n), parent: new Int32Array(n), islandRest: new Float64Array(n),
+      restTime: new Float64Array(n), island: new Int32Array(n), parent: new Int32Array(n), islandRest: new Float64Array(n), supported: new Uint32Array(n), stamp: 0,
       lastGravity: new Float64Array(3), anyAsleep: false,
     },
     stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
