@@ -1,3 +1,4 @@
+import { availableParallelism, loadavg } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types';
 import type { BenchScene, ExtraValue } from './scenes/types';
@@ -72,6 +73,26 @@ export interface BenchResult {
   readonly heapUsedMB: number;
   /** Whether a full garbage collection could be forced before timing (makes memory deltas exact). */
   readonly gcForced: boolean;
+  /** The machine's load: 1-minute load average (runnable processes) when timing began and when it ended. */
+  readonly load: LoadSample;
+}
+
+/** The machine's 1-minute load average at the start and end of the timed steps (os.loadavg; 0 on Windows). */
+export interface LoadSample {
+  readonly start: number;
+  readonly end: number;
+  /** Logical CPUs (os.availableParallelism): a load above it means processes waited for a core. */
+  readonly cpus: number;
+}
+
+/** Samples the 1-minute load average now. */
+export function loadNow(): number {
+  return loadavg()[0]!;
+}
+
+/** Logical CPUs of the machine. */
+export function cpuCount(): number {
+  return availableParallelism();
 }
 
 /**
@@ -117,14 +138,20 @@ export async function runBenchmark(
     runInterleaved(instances, timing.warmup, timing.block, null, progress);
     collectGarbage();
     const times = instances.map(() => new Float64Array(timing.steps));
+    for (const inst of instances) inst.beginTiming?.(timing.steps);
+    const loadStart = loadNow();
     runInterleaved(instances, timing.steps, timing.block, times, progress);
+    const loadEnd = loadNow();
     const heapUsedMB = sampleMemory().heapUsed;
+    for (const inst of instances) inst.endTiming?.();
 
     const engines = instances.map((inst, i): EngineResult => {
       const stats = inst.stats();
       const snapshot = scene.extras ? inst.snapshot() : undefined;
       const sceneExtra = scene.extras && snapshot ? scene.extras(snapshot, options) : {};
       const msPerStep = summarize(times[i]!);
+      const measured = { ...(stats.extra ?? {}), ...sceneExtra };
+      const derived = scene.derive ? scene.derive(inst.engine, msPerStep, measured) : {};
       return {
         engine: inst.engine,
         times: times[i]!,
@@ -134,11 +161,14 @@ export async function runBenchmark(
         bodies: stats.bodies,
         setupMs: setupMs[i]!,
         engineMemoryMB: memoryMB[i]!,
-        extra: { ...(stats.extra ?? {}), ...sceneExtra },
+        extra: { ...measured, ...derived },
         notes: inst.notes,
       };
     });
-    return { scene: options, steps: timing.steps, warmup: timing.warmup, block: timing.block, engines, heapUsedMB, gcForced };
+    return {
+      scene: options, steps: timing.steps, warmup: timing.warmup, block: timing.block, engines, heapUsedMB, gcForced,
+      load: { start: loadStart, end: loadEnd, cpus: cpuCount() },
+    };
   } finally {
     for (const inst of instances) inst.dispose();
   }
@@ -146,10 +176,11 @@ export async function runBenchmark(
 
 /**
  * Steps every instance `steps` times, alternating in blocks of `block` steps with the engine order
- * rotating every round; records each step's milliseconds into `times[engine][step]` when given.
+ * rotating every round; records each step's milliseconds into `times[engine][step]` when given, and
+ * then (outside the timed interval) calls the instance's `afterStep` hook.
  */
 export function runInterleaved(
-  instances: readonly EngineInstance[], steps: number, block: number, times: Float64Array[] | null,
+  instances: readonly Pick<EngineInstance, 'step' | 'afterStep'>[], steps: number, block: number, times: Float64Array[] | null,
   progress?: (steps: number) => void,
 ): void {
   const m = instances.length;
@@ -164,6 +195,7 @@ export function runInterleaved(
           const t0 = performance.now();
           inst.step();
           out[start + s] = performance.now() - t0;
+          inst.afterStep?.();
         }
       } else {
         for (let s = 0; s < k; s++) inst.step();

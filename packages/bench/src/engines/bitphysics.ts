@@ -6,6 +6,8 @@ import { resolveScene } from '../scenes/index';
 /**
  * Our engine: any scene of the physics package's `SCENES` registry, built by the scene's own
  * builder in a world made from the scene's `worldOptions` (plus the run's seed), stepped with `step`.
+ * The bench scene may add builder options from the run's params (`sceneOptions`) and a probe that
+ * measures the world between timed steps (`probe`; its fields join our result line).
  */
 export const bitphysicsEngine: EngineAdapter = {
   name: 'bitphysics',
@@ -17,9 +19,10 @@ export const bitphysicsEngine: EngineAdapter = {
     const resolved = resolveScene(options.scene);
     if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
     const { definition, bench } = resolved;
-    const sceneOptions = { count: options.count, seed: options.seed };
+    const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
     const w: PhysicsWorld = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed });
     const handles = definition.build(w, sceneOptions);
+    const probe = bench.probe?.(w, handles, options);
     const ids = bench.bodyIds ? Uint32Array.from(bench.bodyIds(handles)) : Uint32Array.from(query(w, [w.components.Position]));
     const dims = w.dimensions;
     const notes = [
@@ -33,7 +36,15 @@ export const bitphysicsEngine: EngineAdapter = {
         step(w);
       },
       stats() {
-        return { bodies: ids.length, contacts: contactCount(w) };
+        const extra = probe ? probe.extras() : undefined;
+        return extra ? { bodies: ids.length, contacts: contactCount(w), extra } : { bodies: ids.length, contacts: contactCount(w) };
+      },
+      beginTiming(steps: number): void {
+        probe?.beginTiming?.(steps);
+      },
+      afterStep: probe?.afterStep ? () => probe.afterStep!() : undefined,
+      endTiming(): void {
+        probe?.endTiming?.();
       },
       snapshot(): BodySnapshot {
         const c = w.components;

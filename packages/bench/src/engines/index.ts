@@ -1,6 +1,7 @@
 import type { EngineAdapter } from './types';
 import { bitphysicsEngine } from './bitphysics';
 import { rapier2dEngine } from './rapier2d';
+import { rapier3dEngine } from './rapier3d';
 import { matterEngine } from './matter';
 import { plainLoopEngine } from './plain-loop';
 
@@ -11,6 +12,7 @@ export const OURS = 'bitphysics';
 export const ENGINES: Readonly<Record<string, EngineAdapter>> = Object.freeze({
   [bitphysicsEngine.name]: bitphysicsEngine,
   [rapier2dEngine.name]: rapier2dEngine,
+  [rapier3dEngine.name]: rapier3dEngine,
   [matterEngine.name]: matterEngine,
   [plainLoopEngine.name]: plainLoopEngine,
 });

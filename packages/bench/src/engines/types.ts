@@ -15,6 +15,12 @@ export interface SceneRunOptions {
   readonly count: number;
   /** Seed of the scene's layout (and of our world's random number generator). Any finite number. */
   readonly seed: number;
+  /**
+   * Scene parameters beyond count and seed, by name (e.g. galaxy's `theta`, the Barnes-Hut opening
+   * angle from `--theta`), already checked and with the scene's defaults filled in; absent or empty
+   * for scenes without any. The bench scene maps them to the scene builder's options.
+   */
+  readonly params?: Readonly<Record<string, number>>;
 }
 
 /** Counters an engine reports after a step. */
@@ -63,6 +69,18 @@ export interface EngineInstance {
   snapshot(): BodySnapshot;
   /** Frees what the engine holds outside the JS heap (WASM memory) and drops references. Idempotent. */
   dispose(): void;
+  /**
+   * Optional: called once right before this engine's first timed step (after warm-up and a forced
+   * garbage collection), with the number of timed steps to come. For per-run measurements (heap).
+   */
+  beginTiming?(steps: number): void;
+  /**
+   * Optional: called right after every timed step, outside the timed interval, for per-step
+   * counters (live particles, spawned, expired). Must not allocate per body.
+   */
+  afterStep?(): void;
+  /** Optional: called once right after this engine's last timed step, before `stats`. */
+  endTiming?(): void;
 }
 
 /** An engine the bench can run: a factory of instances plus what it supports. */

@@ -2,11 +2,17 @@ import { MAX_CAPACITY, SCENES, type SceneDefinition } from '@bitphysics/physics'
 import type { BenchScene } from './types';
 import { ballsInBoxBench } from './balls-in-box';
 import { particlesBench } from './particles';
+import { spheresInBoxBench } from './spheres-in-box';
+import { galaxyBench } from './galaxy';
+import { fireworksBench } from './fireworks';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
   [ballsInBoxBench.name]: ballsInBoxBench,
   [particlesBench.name]: particlesBench,
+  [spheresInBoxBench.name]: spheresInBoxBench,
+  [galaxyBench.name]: galaxyBench,
+  [fireworksBench.name]: fireworksBench,
 });
 
 /** A scene as the bench sees it: the physics package's definition plus the bench adapter. */
@@ -30,4 +36,4 @@ export function resolveScene(name: string): ResolvedScene | undefined {
   return { definition, bench };
 }
 
-export type { BenchScene, ExtraColumn, ExtraValue } from './types';
+export type { BenchScene, ExtraColumn, ExtraValue, SceneParam, SceneProbe } from './types';
