@@ -1,7 +1,9 @@
 import { parseArgs } from 'node:util';
 import { UsageError } from './errors';
 import { ENGINES, OURS } from './engines/index';
-import { resolveScene, sceneNames } from './scenes/index';
+import { sceneNames } from './scenes/index';
+import { catalogEntry, catalogNames, paramDeclarations } from './catalog';
+import { describeParam, parseParamValue } from './params';
 
 /** The command line, parsed and checked. */
 export interface BenchArgs {
@@ -9,15 +11,17 @@ export interface BenchArgs {
   readonly list: boolean;
   /** `--help`. */
   readonly help: boolean;
-  /** `--json`: one JSON object a line per engine run on stdout, nothing else there. */
+  /** `--json`: one JSON object a line per engine run (or per study item) on stdout, nothing else there. */
   readonly json: boolean;
-  /** `--scene`, default 'balls-in-box'. */
+  /** `--scene`, default 'balls-in-box': a physics scene or a bench study (see `catalogNames`). */
   readonly scene: string;
+  /** Whether `scene` is a bench study (`integrators`, `forces`) rather than a physics scene run by engines. */
+  readonly study: boolean;
   /** `--count`, default the scene's defaultCount; integer in [1, the scene's limit]. */
   readonly count: number;
-  /** `--steps`, timed steps, default 300; integer >= 1. */
+  /** `--steps`, timed steps; default the scene's own default, else 300; integer >= 1. */
   readonly steps: number;
-  /** `--warmup`, untimed steps first, default 30; integer >= 0. */
+  /** `--warmup`, untimed steps first; default the scene's own default, else 30; integer >= 0. */
   readonly warmup: number;
   /** `--seed`, default 1; a finite number. */
   readonly seed: number;
@@ -27,55 +31,80 @@ export interface BenchArgs {
   readonly times: boolean;
   /** Engines to run: ours first, then the `--vs` peers in the order given (duplicates dropped). */
   readonly engines: readonly string[];
+  /**
+   * The scene's parameters (`--<name> <value>`), every one it declares, the given value or its
+   * default; empty for scenes that declare none.
+   */
+  readonly params: Readonly<Record<string, number>>;
 }
 
 /** Default scene, steps, warm-up, seed and block length. */
 export const DEFAULTS = Object.freeze({ scene: 'balls-in-box', steps: 300, warmup: 30, seed: 1, block: 10 });
 
-/** Usage text for `--help`. */
-export const USAGE = `usage: npm run bench -- [options]
+/** The CLI's own flags (with a value or without); scene parameter names must differ from these. */
+const BUILTIN_OPTIONS = {
+  scene: { type: 'string' },
+  count: { type: 'string' },
+  steps: { type: 'string' },
+  warmup: { type: 'string' },
+  seed: { type: 'string' },
+  vs: { type: 'string' },
+  block: { type: 'string' },
+  json: { type: 'boolean' },
+  times: { type: 'boolean' },
+  list: { type: 'boolean' },
+  help: { type: 'boolean', short: 'h' },
+} as const;
+
+/** The scene parameter section of `--help`: one line per parameter flag, naming the scenes that take it. */
+function paramUsage(): string {
+  const lines: string[] = [];
+  for (const name of catalogNames()) {
+    for (const [param, spec] of Object.entries(catalogEntry(name)!.params)) lines.push(`  ${describeParam(param, spec)} [--scene ${name}]`);
+  }
+  return lines.length > 0 ? lines.join('\n') : '  (none)';
+}
+
+/** Usage text for `--help` (the scene parameter section lists every parameter any scene declares). */
+export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
 
   --scene <name>     scene to run (default ${DEFAULTS.scene}); see --list
   --count <n>        bodies (default: the scene's default count)
-  --steps <n>        timed steps per engine (default ${DEFAULTS.steps})
-  --warmup <n>       untimed steps per engine before timing (default ${DEFAULTS.warmup})
+  --steps <n>        timed steps per engine (default: the scene's, else ${DEFAULTS.steps})
+  --warmup <n>       untimed steps per engine before timing (default: the scene's, else ${DEFAULTS.warmup})
   --seed <n>         seed of the scene layout (default ${DEFAULTS.seed})
   --vs <a,b,...>     peer engines to run side by side with bitphysics (e.g. rapier2d,matter; plain-loop)
-  --block <n>        engines alternate every n steps (default ${DEFAULTS.block})
-  --json             one JSON object per line per engine on stdout; notes and progress go to stderr
-  --times            with --json: add every timed step's milliseconds as "timesMs"
-  --list             list scenes and the engines that support each
+  --block <n>        engines alternate every n steps (default ${DEFAULTS.block}; not for studies)
+  --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
+  --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
+  --list             list scenes, their parameters and the engines that support each
   -h, --help         this text
 
-Prints ms per step (median, min, max), body-steps per second, contacts in the last step, memory,
+scene parameters (only the scene that declares one accepts it):
+${paramUsage()}
+
+Studies (integrators, forces) measure bitphysics alone: integrators prints each scheme's convergence
+order, Kepler energy error and ns per body-step; forces the ns per body-step of each force law.
+Scenes print ms per step (median, min, max), body-steps per second, contacts in the last step, memory,
 scene-specific quality fields, and for --vs the time ratio ours/peer (< 1: bitphysics is faster).
 Exit code 2 on a usage error.`;
 
 /**
  * Parses and checks the command line (without the node and script arguments).
- * @throws UsageError naming the offending flag or value.
+ * @throws UsageError naming the offending flag or value: an unknown flag, scene or engine, a number
+ *   out of range, a scene parameter given to a scene that does not declare it, or a peer or
+ *   `--block` / `--times` given to a study.
  */
 export function parseBenchArgs(argv: readonly string[]): BenchArgs {
+  const declarations = paramDeclarations();
+  const options: Record<string, { type: 'string' | 'boolean'; short?: string }> = { ...BUILTIN_OPTIONS };
+  for (const param of declarations.keys()) {
+    if (Object.prototype.hasOwnProperty.call(options, param)) throw new Error(`scene parameter --${param} clashes with a CLI flag`);
+    options[param] = { type: 'string' };
+  }
   let values: Record<string, string | boolean | undefined>;
   try {
-    ({ values } = parseArgs({
-      args: [...argv],
-      strict: true,
-      allowPositionals: false,
-      options: {
-        scene: { type: 'string' },
-        count: { type: 'string' },
-        steps: { type: 'string' },
-        warmup: { type: 'string' },
-        seed: { type: 'string' },
-        vs: { type: 'string' },
-        block: { type: 'string' },
-        json: { type: 'boolean' },
-        times: { type: 'boolean' },
-        list: { type: 'boolean' },
-        help: { type: 'boolean', short: 'h' },
-      },
-    }));
+    ({ values } = parseArgs({ args: [...argv], strict: true, allowPositionals: false, options }));
   } catch (error) {
     throw new UsageError((error as Error).message);
   }
@@ -83,15 +112,16 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
   const list = values.list === true, help = values.help === true, json = values.json === true;
 
   const scene = str('scene') ?? DEFAULTS.scene;
-  const resolved = resolveScene(scene);
-  if (!resolved) throw new UsageError(`unknown scene ${JSON.stringify(scene)}; scenes: ${sceneNames().join(', ')}`);
+  const entry = catalogEntry(scene);
+  if (!entry) throw new UsageError(`unknown scene ${JSON.stringify(scene)}; scenes: ${catalogNames().join(', ')}`);
+  const study = entry.kind === 'study';
 
-  const count = str('count') === undefined ? resolved.definition.defaultCount : parseInteger('--count', str('count')!, 1);
-  if (count > resolved.bench.maxCount) {
-    throw new UsageError(`--count ${count} is above the limit of scene "${scene}" (${resolved.bench.maxCount})`);
+  const count = str('count') === undefined ? entry.defaultCount : parseInteger('--count', str('count')!, 1);
+  if (count > entry.maxCount) {
+    throw new UsageError(`--count ${count} is above the limit of scene "${scene}" (${entry.maxCount})`);
   }
-  const steps = str('steps') === undefined ? DEFAULTS.steps : parseInteger('--steps', str('steps')!, 1);
-  const warmup = str('warmup') === undefined ? DEFAULTS.warmup : parseInteger('--warmup', str('warmup')!, 0);
+  const steps = str('steps') === undefined ? entry.defaults.steps ?? DEFAULTS.steps : parseInteger('--steps', str('steps')!, 1);
+  const warmup = str('warmup') === undefined ? entry.defaults.warmup ?? DEFAULTS.warmup : parseInteger('--warmup', str('warmup')!, 0);
   const block = str('block') === undefined ? DEFAULTS.block : parseInteger('--block', str('block')!, 1);
   let seed: number = DEFAULTS.seed;
   if (str('seed') !== undefined) {
@@ -100,6 +130,28 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
     if (text.trim() === '' || !Number.isFinite(seed)) throw new UsageError(`--seed must be a finite number, got ${JSON.stringify(text)}`);
   }
 
+  const params: Record<string, number> = {};
+  for (const [param, scenes] of declarations) {
+    const text = str(param);
+    const spec = entry.params[param];
+    if (!spec) {
+      if (text !== undefined) {
+        const own = Object.keys(entry.params);
+        throw new UsageError(
+          `--${param} is a parameter of scene ${scenes.map((s) => `"${s}"`).join(', ')}, not of "${scene}" ` +
+            `(which takes ${own.length > 0 ? own.map((p) => `--${p}`).join(', ') : 'no parameters'})`,
+        );
+      }
+      continue;
+    }
+    params[param] = text === undefined ? spec.default : parseParamValue(param, text, spec);
+  }
+
+  if (study) {
+    if (str('vs') !== undefined) throw new UsageError(`--vs does not apply to "${scene}": it measures bitphysics alone, no peer engines`);
+    if (str('block') !== undefined) throw new UsageError(`--block does not apply to "${scene}" (its timed worlds alternate every 5 steps)`);
+    if (values.times === true) throw new UsageError(`--times does not apply to "${scene}" (it reports medians per item)`);
+  }
   const engines = [OURS];
   if (str('vs') !== undefined) {
     for (const raw of str('vs')!.split(',')) {
@@ -116,7 +168,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, times: values.times === true, scene, count, steps, warmup, seed, block, engines };
+  return { list, help, json, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
 }
 
 /**

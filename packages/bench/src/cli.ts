@@ -5,6 +5,9 @@
  *
  *   npm run bench -- --scene balls-in-box --count 5000 --steps 300 --vs rapier2d,matter
  *   npm run bench -- --scene particles --count 1000000 --steps 100 --vs plain-loop
+ *   npm run bench -- --scene galaxy --count 100000 --theta 0.5
+ *   npm run bench -- --scene integrators --json
+ *   npm run bench -- --scene forces --count 10000
  *   npm run bench -- --list
  *
  * Exit codes: 0 done, 1 a run failed, 2 usage error (unknown scene, engine or flag; bad number).
@@ -12,12 +15,15 @@
 import { realpathSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import cliProgress from 'cli-progress';
-import { parseBenchArgs, USAGE, type BenchArgs } from './args';
+import { DEFAULTS, parseBenchArgs, USAGE, type BenchArgs } from './args';
 import { UsageError, USAGE_EXIT_CODE } from './errors';
-import { ENGINES, enginesFor } from './engines/index';
-import { resolveScene, sceneNames } from './scenes/index';
+import { ENGINES, enginesFor, OURS } from './engines/index';
+import { resolveScene } from './scenes/index';
+import { resolveStudy } from './studies/index';
+import { catalogEntry, catalogNames } from './catalog';
+import { describeParam } from './params';
 import { runBenchmark, SceneBuildError } from './runner';
-import { humanReport, jsonRecords, table } from './report';
+import { humanReport, jsonRecords, studyReport, table } from './report';
 
 /** Where the CLI writes: injectable so the CLI can run inside another program. */
 export interface CliIO {
@@ -59,29 +65,69 @@ export async function main(argv: readonly string[], io: CliIO = processIO): Prom
     listScenes(args.json, io);
     return 0;
   }
-  return run(args, io);
+  return args.study ? runStudy(args, io) : run(args, io);
 }
 
-/** Prints every scene with its description, default count, limit and the engines that support it. */
+/**
+ * Prints every scene and study with its description, default count, limit, parameters and the
+ * engines that support it (`--json`: one object a line, `params` by name with default, range and
+ * description).
+ */
 function listScenes(json: boolean, io: CliIO): void {
-  const rows: string[][] = [['scene', 'engines', 'default count', 'max count', 'description']];
-  for (const name of sceneNames()) {
-    const s = resolveScene(name)!;
-    const engines = enginesFor(name);
+  const rows: string[][] = [['scene', 'engines', 'default count', 'max count', 'params', 'description']];
+  const paramLines: string[] = [];
+  for (const name of catalogNames()) {
+    const s = catalogEntry(name)!;
+    const engines = s.kind === 'study' ? ['bitphysics (study)'] : enginesFor(name);
+    const params = Object.entries(s.params);
     if (json) {
       io.out(JSON.stringify({
-        scene: name, description: s.definition.description, engines,
-        defaultCount: s.definition.defaultCount, maxCount: s.bench.maxCount,
+        scene: name, kind: s.kind, description: s.description, engines: s.kind === 'study' ? [OURS] : engines,
+        defaultCount: s.defaultCount, maxCount: s.maxCount, defaultSteps: s.defaults.steps ?? DEFAULTS.steps,
+        defaultWarmup: s.defaults.warmup ?? DEFAULTS.warmup, params: Object.fromEntries(params),
       }));
     } else {
-      rows.push([name, engines.join(', '), String(s.definition.defaultCount), String(s.bench.maxCount), s.definition.description]);
+      rows.push([
+        name, engines.join(', '), String(s.defaultCount), String(s.maxCount),
+        params.map(([p, spec]) => `--${p} ${spec.default}`).join(' ') || '-', s.description,
+      ]);
+      for (const [p, spec] of params) paramLines.push(`  ${describeParam(p, spec)} [--scene ${name}]`);
     }
   }
   if (!json) {
-    io.out(table(rows, ['l', 'l', 'r', 'r', 'l']));
+    io.out(table(rows, ['l', 'l', 'r', 'r', 'l', 'l']));
+    if (paramLines.length > 0) io.out(['', 'scene parameters:', ...paramLines].join('\n'));
     io.out('');
     io.out('engines:');
     io.out(table(Object.values(ENGINES).map((e) => [`  ${e.name}`, e.description]), ['l', 'l']));
+  }
+}
+
+/**
+ * Runs a study (`integrators`, `forces`) and prints its table (or one JSON line per item, each
+ * starting with `scene` and, when the study has parameters, ending with `params`). Progress lines go
+ * to stderr on a terminal only.
+ */
+function runStudy(args: BenchArgs, io: CliIO): number {
+  const study = resolveStudy(args.scene)!;
+  const showProgress = io.isTTY && !args.json;
+  try {
+    const result = study.run({
+      count: args.count, steps: args.steps, warmup: args.warmup, seed: args.seed, params: args.params,
+      onProgress: showProgress ? (what) => io.err(`${args.scene}: ${what}`) : undefined,
+    });
+    const hasParams = Object.keys(args.params).length > 0;
+    if (args.json) {
+      for (const record of result.records) {
+        io.out(JSON.stringify({ scene: args.scene, ...record, seed: args.seed, ...(hasParams ? { params: args.params } : {}) }));
+      }
+    } else {
+      io.out(studyReport(args.scene, result, { count: args.count, steps: args.steps, warmup: args.warmup, seed: args.seed, params: args.params }));
+    }
+    return 0;
+  } catch (error) {
+    io.err(`bitphysics-bench: ${(error as Error)?.stack ?? String(error)}`);
+    return 1;
   }
 }
 
@@ -99,7 +145,7 @@ async function run(args: BenchArgs, io: CliIO): Promise<number> {
   let started = false;
   try {
     const result = await runBenchmark(
-      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed },
+      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params },
       {
         steps: args.steps, warmup: args.warmup, block: args.block,
         onProgress: bar

@@ -1,6 +1,7 @@
 import { OURS } from './engines/index';
 import type { BenchResult, EngineResult } from './runner';
 import type { BenchScene, ExtraValue } from './scenes/types';
+import type { StudyResult } from './studies/types';
 
 /** A peer's time ratio against our engine. */
 export interface Ratio {
@@ -27,7 +28,8 @@ function sig(value: number, digits = 6): number {
 /**
  * The JSON objects of a run, one per engine: `scene, engine, count, steps, msPerStep {median, min,
  * max, mean, p90}, contacts`, then `warmup, seed, bodyStepsPerSecond, heapUsedMB, engineMemoryMB,
- * setupMs`, the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
+ * setupMs`, `params` (the scene parameters, e.g. `{ "theta": 0.5 }`, only for scenes that declare
+ * any), the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
  * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `times`, every
  * step's milliseconds as `timesMs`.
  */
@@ -51,6 +53,8 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
       engineMemoryMB: sig(e.engineMemoryMB, 4),
       setupMs: sig(e.setupMs, 4),
     };
+    const params = result.scene.params;
+    if (params && Object.keys(params).length > 0) record.params = { ...params };
     for (const [k, v] of Object.entries(e.extra)) if (!(k in record)) record[k] = v;
     const ratio = r.get(e.engine);
     if (ratio !== undefined) {
@@ -98,6 +102,7 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
   const lines: string[] = [];
   lines.push(
     `${s.scene}: ${s.count} bodies, ${result.steps} timed steps after ${result.warmup} warm-up, seed ${s.seed}` +
+      formatParams(s.params) +
       (result.engines.length > 1 ? `, engines alternating every ${result.block} steps` : ''),
     '',
   );
@@ -142,4 +147,31 @@ function otherExtras(engines: readonly EngineResult[], shown: ReadonlySet<string
     if (fields.length > 0) out.push(`${e.engine}: ${fields.map(([k, v]) => `${k} ${typeof v === 'number' ? sig(v, 6) : v}`).join(', ')}`);
   }
   return out;
+}
+
+/** ", theta 0.5, orbits 100" for the header line; "" without parameters. */
+function formatParams(params: Readonly<Record<string, number>> | undefined): string {
+  if (!params) return '';
+  return Object.entries(params).map(([k, v]) => `, ${k} ${v}`).join('');
+}
+
+/**
+ * The human-readable report of a study (`integrators`, `forces`): a header with what ran, the
+ * study's table (first column left-aligned, numbers right-aligned, a last text column left-aligned
+ * when it has one) and its notes.
+ */
+export function studyReport(
+  scene: string, result: StudyResult,
+  run: { count: number; steps: number; warmup: number; seed: number; params: Readonly<Record<string, number>> },
+): string {
+  const width = result.header.length;
+  const align = result.header.map((h, i): 'l' | 'r' => (i === 0 || (i === width - 1 && /^(world|description)$/.test(h)) ? 'l' : 'r'));
+  return [
+    `${scene}: ${run.count} bodies in the timed worlds, ${run.steps} timed steps after ${run.warmup} warm-up, seed ${run.seed}${formatParams(run.params)}`,
+    '',
+    table([result.header, ...result.rows], align),
+    '',
+    'notes:',
+    ...result.notes.map((n) => `  ${n}`),
+  ].join('\n');
 }

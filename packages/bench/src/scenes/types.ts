@@ -43,6 +43,8 @@ export interface SceneParam {
   readonly min: number;
   /** Whether `min` itself is rejected (e.g. an opening angle > 0). */
   readonly exclusiveMin?: boolean;
+  /** Largest accepted value (inclusive); absent: no upper bound. */
+  readonly max?: number;
 }
 
 /**

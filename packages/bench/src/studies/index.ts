@@ -1,0 +1,16 @@
+import type { BenchStudy } from './types';
+import { integratorsStudy } from './integrators';
+import { forcesStudy } from './forces';
+
+/** Bench-only scenes (measurement studies, not worlds stepped side by side with peers) by name. */
+export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
+  [integratorsStudy.name]: integratorsStudy,
+  [forcesStudy.name]: forcesStudy,
+});
+
+/** The study called `name`, or undefined. */
+export function resolveStudy(name: string): BenchStudy | undefined {
+  return Object.prototype.hasOwnProperty.call(STUDIES, name) ? STUDIES[name] : undefined;
+}
+
+export type { BenchStudy, StudyResult, StudyRunOptions } from './types';
