@@ -29,13 +29,19 @@ const num = (digits: number) => (v: ExtraValue): string => (typeof v === 'number
  *   (its falls are collections) per step, less what the sampling itself allocates (calibrated before
  *   timing). A flat heap shows as a growth near 0 and an allocation near 0 KB a step.
  *
- * Steady state takes a few seconds to reach (shells rise ~1 s, sparks live 1-2 s, embers after
- * them), hence 300 warm-up steps and 1,200 timed steps by default.
+ * - `stepsWithoutSpawn`, `stepsWithoutExpiry`: timed steps in which nothing was spawned / nothing
+ *   expired (0 in steady churn), and `liveStartOfTiming`: live particles when timing began (after warm-up).
+ *
+ * Steady state takes about 5 s to reach (shells rise ~1 s, sparks live 1-2 s, embers 0.5-1 s after
+ * them): at the default 50,000, the live count is ~4,800 after 100 steps, ~42,000 after 200 and
+ * ~50,000 from step 300 on, where spawned and expired per step level off at ~990 each. Hence 360
+ * warm-up steps (6 s, past the ramp) and 600 timed steps (10 s of steady churn, several shell
+ * lifetimes) by default.
  */
 export const fireworksBench: BenchScene = {
   name: 'fireworks',
   maxCount: 10_000_000,
-  defaults: { steps: 1200, warmup: 300 },
+  defaults: { steps: 600, warmup: 360 },
   probe(world, handles) {
     const h = handles as { shells: number; sparks: number; embers: number };
     const emitters = [h.shells, h.sparks, h.embers];
@@ -92,8 +98,12 @@ export const fireworksBench: BenchScene = {
       extras() {
         const n = Math.max(1, k);
         const liveSummary = k > 0 ? summarize(live.subarray(0, k)) : { min: 0, median: 0, max: 0 };
-        let spawnedSum = 0, expiredSum = 0;
-        for (let i = 0; i < k; i++) { spawnedSum += spawned[i]!; expiredSum += expired[i]!; }
+        let spawnedSum = 0, expiredSum = 0, noSpawn = 0, noExpiry = 0;
+        for (let i = 0; i < k; i++) {
+          spawnedSum += spawned[i]!; expiredSum += expired[i]!;
+          if (spawned[i] === 0) noSpawn++;
+          if (expired[i] === 0) noExpiry++;
+        }
         const liveEnd = k > 0 ? live[k - 1]! : liveStart;
         const recycled = spawnedSum - expiredSum - (liveEnd - liveStart);
         const growthMB = (heapEndGc - heapStart) / MB;
@@ -105,6 +115,9 @@ export const fireworksBench: BenchScene = {
           expiredPerStep: round(expiredSum / n, 2),
           recycledPerStep: round(recycled / n, 2),
           droppedPerStep: round((droppedEnd - droppedStart) / n, 2),
+          stepsWithoutSpawn: noSpawn,
+          stepsWithoutExpiry: noExpiry,
+          liveStartOfTiming: liveStart,
           capacity: world.capacity,
           maxEntities,
           heapStartMB: round(heapStart / MB, 3),
