@@ -114,6 +114,98 @@ describe('bench CLI', () => {
   });
 });
 
+describe.concurrent('bench CLI scene parameters, studies and newer scenes', () => {
+  it('galaxy takes --theta, passes it to the world and echoes it in the JSON line', async () => {
+    const run = await runCli(['--scene', 'galaxy', '--count', '300', '--steps', '2', '--warmup', '0', '--theta', '0.5', '--json']);
+    expect(run.code).toBe(0);
+    const [line] = jsonLines(run.stdout);
+    expectEngineLine(line!, 'bitphysics', 'galaxy', 300, 2);
+    expect(line!.params).toEqual({ theta: 0.5 });
+    expect(line!.theta).toBe(0.5); // the opening angle the world actually used
+  });
+
+  it('--help and --list show the scene parameters', async () => {
+    const [help, list] = await Promise.all([runCli(['--help']), runCli(['--list', '--json'])]);
+    expect(help.code).toBe(0);
+    expect(help.stdout).toMatch(/--theta <x>: galaxy: Barnes-Hut opening angle.*default 0\.7/);
+    const galaxy = jsonLines(list.stdout).find((s) => s.scene === 'galaxy')!;
+    expect((galaxy.params as Record<string, { default: number }>).theta!.default).toBe(0.7);
+  });
+
+  /**
+   * Orders are deterministic (no timing: fixed step counts on one orbit), so the only slack needed is
+   * for the distance from the asymptotic regime: at dt = T/800 -> T/1600 the measured orders differ
+   * from theory by < 0.05 (Euler 0.97, RK4 4.03). +-0.3 keeps the test robust to small changes of
+   * the schemes or the step sizes while still telling order 1 from 2 and 4 from 3 or 5.
+   */
+  it('integrators --json: one line per scheme with order, energy error and cost; orders match theory', async () => {
+    const run = await runCli(['--scene', 'integrators', '--orbits', '1', '--count', '100', '--steps', '3', '--warmup', '1', '--json']);
+    expect(run.code).toBe(0);
+    const lines = jsonLines(run.stdout);
+    const expected: Record<string, number> = {
+      'explicit-euler': 1, 'semi-implicit-euler': 1, 'implicit-euler': 1, rk2: 2, rk4: 4, 'position-verlet': 2, 'velocity-verlet': 2,
+    };
+    expect(lines.map((l) => l.integrator)).toEqual(Object.keys(expected));
+    for (const line of lines) {
+      expect(line.scene).toBe('integrators');
+      expect(Math.abs((line.order as number) - expected[line.integrator as string]!)).toBeLessThan(0.3);
+      expect(line.expectedOrder).toBe(expected[line.integrator as string]);
+      expect(line.energyError === null || (typeof line.energyError === 'number' && line.energyError >= 0)).toBe(true);
+      expect(line.nsPerBodyStep as number).toBeGreaterThan(0);
+      expect(line.params).toEqual({ orbits: 1 });
+    }
+    // RK4 conserves the Kepler energy far better than explicit Euler.
+    const by = Object.fromEntries(lines.map((l) => [l.integrator, l]));
+    expect(by.rk4!.energyError as number).toBeLessThan(1e-6);
+    expect(by['explicit-euler']!.energyError as number).toBeGreaterThan(1e-2);
+  });
+
+  /**
+   * Each cost is a difference of two medians, so a law cheaper than the timing noise could come out
+   * near 0 on a loaded machine: every line must have a finite cost, a positive baseline and whole
+   * step, and the laws far above the noise (pairwise sums, Barnes-Hut, turbulent wind) a positive cost.
+   */
+  it('forces --json: one line per force law with finite costs; pairwise laws capped at 2,000 bodies', async () => {
+    const run = await runCli(['--scene', 'forces', '--count', '2100', '--steps', '4', '--warmup', '1', '--json']);
+    expect(run.code).toBe(0);
+    const lines = jsonLines(run.stdout);
+    expect(lines.length).toBeGreaterThanOrEqual(15);
+    expect(new Set(lines.map((l) => l.law)).size).toBe(lines.length);
+    for (const line of lines) {
+      expect(line.scene).toBe('forces');
+      expect(Number.isFinite(line.nsPerBodyStep)).toBe(true);
+      expect(line.baselineNsPerBodyStep as number).toBeGreaterThan(0);
+      expect(line.wholeNsPerBodyStep as number).toBeGreaterThan(0);
+      expect(line.count).toBe(line.pairwise ? 2000 : 2100);
+    }
+    const by = Object.fromEntries(lines.map((l) => [l.law, l]));
+    for (const law of ['coulomb-direct', 'mutual-gravity-direct', 'mutual-gravity-barnes-hut', 'drag-turbulence']) {
+      expect(by[law]!.nsPerBodyStep as number).toBeGreaterThan(0);
+    }
+  });
+
+  it('spheres-in-box --vs rapier3d gives a ratio line', async () => {
+    const run = await runCli(['--scene', 'spheres-in-box', '--count', '100', '--steps', '5', '--warmup', '1', '--vs', 'rapier3d', '--json']);
+    expect(run.code).toBe(0);
+    const [ours, peer] = jsonLines(run.stdout);
+    expectEngineLine(ours!, 'bitphysics', 'spheres-in-box', 100, 5);
+    expectEngineLine(peer!, 'rapier3d', 'spheres-in-box', 100, 5);
+    expect(peer!.ratioOf).toBe('bitphysics/rapier3d');
+    expect(peer!.ratio as number).toBeGreaterThan(0);
+  });
+
+  it('fireworks --json reports spawn and expiry every step', async () => {
+    // 1,000 live particles reach steady churn after ~5 s, as at the default count: 360 warm-up steps.
+    const run = await runCli(['--scene', 'fireworks', '--count', '1000', '--steps', '30', '--warmup', '360', '--json']);
+    expect(run.code).toBe(0);
+    const [line] = jsonLines(run.stdout);
+    expectEngineLine(line!, 'bitphysics', 'fireworks', 1000, 30);
+    expect(line!.spawnedPerStep as number).toBeGreaterThan(0);
+    expect(line!.expiredPerStep as number).toBeGreaterThan(0);
+    expect(line!.liveMedian as number).toBeGreaterThan(0);
+  });
+});
+
 describe.concurrent('bench CLI usage errors exit 2 naming the bad value', () => {
   const cases: Array<[string, string[], string]> = [
     ['unknown scene', ['--scene', 'no-such-scene'], 'no-such-scene'],
@@ -125,6 +217,11 @@ describe.concurrent('bench CLI usage errors exit 2 naming the bad value', () => 
     ['count above the limit', ['--scene', 'balls-in-box', '--count', '20000000'], '20000000'],
     ['zero steps', ['--steps', '0'], '--steps'],
     ['bad seed', ['--seed', 'abc'], 'abc'],
+    ['non-positive theta', ['--scene', 'galaxy', '--theta', '0'], '--theta'],
+    ['non-numeric theta', ['--scene', 'galaxy', '--theta', 'wide'], 'wide'],
+    ['theta on a scene without it', ['--scene', 'balls-in-box', '--theta', '0.5'], '--theta'],
+    ['non-integer orbits', ['--scene', 'integrators', '--orbits', '1.5'], '1.5'],
+    ['peer engine for a study', ['--scene', 'forces', '--vs', 'rapier2d'], '--vs'],
   ];
   for (const [what, args, named] of cases) {
     it(what, async () => {
