@@ -7,17 +7,26 @@ import { fileURLToPath } from 'node:url';
 import { siteDir, siteOptions, writeRegistry } from './build.mjs';
 
 /**
- * Starts esbuild's own dev server on the built site.
+ * Starts esbuild's own dev server on the built site. With `watch` (the default) it rebuilds on
+ * change; without, it builds once and serves that site unchanged.
  * @param {{ port?: number, host?: string, watch?: boolean }} options
  * @returns {Promise<{ url: string, stop: () => Promise<void> }>}
  */
 export async function startServer({ port = 8080, host = '127.0.0.1', watch = true } = {}) {
   rmSync(siteDir, { recursive: true, force: true });
   mkdirSync(siteDir, { recursive: true });
-  const ctx = await esbuild.context(siteOptions());
-  await ctx.rebuild();
+  const build = await esbuild.context(siteOptions());
+  await build.rebuild();
   writeRegistry();
-  if (watch) await ctx.watch();
+  let ctx = build;
+  if (watch) {
+    await build.watch();
+  } else {
+    // Without watch, esbuild's server rebuilds the whole site on every request for a page; a
+    // fixed site (the browser tests) is served by a context with nothing to build instead.
+    await build.dispose();
+    ctx = await esbuild.context({ entryPoints: [], logLevel: 'silent' });
+  }
   const { port: actual } = await ctx.serve({ host, port, servedir: siteDir });
   return {
     url: `http://${host}:${actual}/`,
