@@ -37,7 +37,9 @@ export const bitphysicsEngine: EngineAdapter = {
       },
       stats() {
         const extra = probe ? probe.extras() : undefined;
-        return extra ? { bodies: ids.length, contacts: contactCount(w), extra } : { bodies: ids.length, contacts: contactCount(w) };
+        // A churning scene (fireworks) reports its median live count: the bodies a step really moves.
+        const bodies = typeof extra?.liveMedian === 'number' ? extra.liveMedian : ids.length;
+        return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
       },
       beginTiming(steps: number): void {
         probe?.beginTiming?.(steps);
