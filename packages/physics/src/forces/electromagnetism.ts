@@ -1,6 +1,7 @@
 import { query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { ForceLaw } from './law';
+import { inverseSquarePairs } from './pairwise';
 
 /**
  * Coulomb's law between every pair of charged bodies: F on b = k q_a q_b (x_b - x_a) / (r^2 + eps^2)^(3/2)
@@ -12,27 +13,8 @@ export const coulombSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.Charge, c.Position, c.Force]);
   const n = ents.length;
   if (n < 2) return;
-  const K = world.laws.coulombConstant, eps2 = world.laws.electricSoftening ** 2;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, q = c.Charge.value;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  for (let i = 0; i < n; i++) {
-    const a = ents[i]!;
-    const qa = K * q[a]!;
-    if (qa === 0) continue;
-    const xa = px[a]!, ya = py[a]!, za = pz[a]!;
-    let sx = 0, sy = 0, sz = 0;
-    for (let j = i + 1; j < n; j++) {
-      const b = ents[j]!;
-      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
-      const r2 = dx * dx + dy * dy + dz * dz + eps2;
-      if (r2 === 0) continue;
-      const k = (qa * q[b]!) / (r2 * Math.sqrt(r2));
-      const kx = k * dx, ky = k * dy, kz = k * dz;
-      fx[b] = fx[b]! + kx; fy[b] = fy[b]! + ky; fz[b] = fz[b]! + kz;
-      sx -= kx; sy -= ky; sz -= kz;
-    }
-    fx[a] = fx[a]! + sx; fy[a] = fy[a]! + sy; fz[a] = fz[a]! + sz;
-  }
+  // Like charges repel: the inverse-square pair sum with a negative coupling.
+  inverseSquarePairs(world, ents, c.Charge.value, -world.laws.coulombConstant, world.laws.electricSoftening ** 2);
 };
 coulombSystem.velocityDependent = false;
 

@@ -1,6 +1,7 @@
 import { Not, query } from '../query';
 import type { PhysicsWorld } from '../world';
 import type { ForceLaw } from './law';
+import { inverseSquarePairs } from './pairwise';
 import { barnesHutGravity } from './barnes-hut';
 
 /**
@@ -36,25 +37,7 @@ export const mutualGravitySystem: ForceLaw = (world: PhysicsWorld): void => {
   if (n < 2) return;
   const L = world.laws;
   if (L.gravityMethod === 'barnes-hut') { barnesHutGravity(world, ents); return; }
-  const G = L.gravitationalConstant, eps2 = L.gravitySoftening * L.gravitySoftening;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  for (let i = 0; i < n; i++) {
-    const a = ents[i]!;
-    const xa = px[a]!, ya = py[a]!, za = pz[a]!, gma = G * m[a]!;
-    let sx = 0, sy = 0, sz = 0;
-    for (let j = i + 1; j < n; j++) {
-      const b = ents[j]!;
-      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
-      const r2 = dx * dx + dy * dy + dz * dz + eps2;
-      if (r2 === 0) continue;
-      const k = (gma * m[b]!) / (r2 * Math.sqrt(r2));
-      const kx = k * dx, ky = k * dy, kz = k * dz;
-      sx += kx; sy += ky; sz += kz;
-      fx[b] = fx[b]! - kx; fy[b] = fy[b]! - ky; fz[b] = fz[b]! - kz;
-    }
-    fx[a] = fx[a]! + sx; fy[a] = fy[a]! + sy; fz[a] = fz[a]! + sz;
-  }
+  inverseSquarePairs(world, ents, c.Mass.value, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening);
 };
 mutualGravitySystem.velocityDependent = false;
 
