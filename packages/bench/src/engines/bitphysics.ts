@@ -37,8 +37,7 @@ export const bitphysicsEngine: EngineAdapter = {
       },
       stats() {
         const extra = probe ? probe.extras() : undefined;
-        // A churning scene (fireworks) reports its median live count: the bodies a step really moves.
-        const bodies = typeof extra?.liveMedian === 'number' ? extra.liveMedian : ids.length;
+        const bodies = probe?.bodies ? probe.bodies() : ids.length;
         return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
       },
       beginTiming(steps: number): void {

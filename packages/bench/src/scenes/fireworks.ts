@@ -95,6 +95,9 @@ export const fireworksBench: BenchScene = {
         collectGarbage();
         heapEndGc = heapBytes();
       },
+      bodies(): number {
+        return k > 0 ? summarize(live.subarray(0, k)).median : liveStart;
+      },
       extras() {
         const n = Math.max(1, k);
         const liveSummary = k > 0 ? summarize(live.subarray(0, k)) : { min: 0, median: 0, max: 0 };

@@ -29,6 +29,12 @@ export interface SceneProbe {
   endTiming?(): void;
   /** The fields to add to our result line; called once, after `endTiming`. */
   extras(): Record<string, ExtraValue>;
+  /**
+   * Optional, for scenes whose body count changes as they run (churn): the bodies a timed step
+   * moved (e.g. the median live particle count), used for body-steps per second instead of the
+   * count at build time. Called after `endTiming`.
+   */
+  bodies?(): number;
 }
 
 /** A numeric scene parameter set from the command line (`--<name> <value>`). */
