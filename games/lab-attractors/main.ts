@@ -13,8 +13,8 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam } from '../shared/index';
-import { advanceSteps, createInfo, exposeLive, pointerOnCanvas, readUrl } from '../lab-galaxy/particle-kit';
+import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, createInfo, exposeLive, readUrl } from '../lab-galaxy/particle-kit';
 import {
   MAX_ATTRACTORS, START_AREA, addAttractor, attractorNear, createAttractorField, moveAttractor, removeAttractor, setAttractorField,
   setParticleDrag, setVortexOn, stepAttractors, type AttractorField,

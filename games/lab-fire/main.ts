@@ -11,8 +11,8 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, fmt, pointerOnCanvas, readUrl } from '../lab-galaxy/particle-kit';
+import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, countParticles, createInfo, exposeLive, fmt, readUrl } from '../lab-galaxy/particle-kit';
 import {
   FIRE_LIFETIMES, FIRE_RATES, MAX_INTENSITY, createFire, moveFire, setFireIntensity, setFireSmoke, setFireWind, stepFire, type Fire,
 } from './scene';

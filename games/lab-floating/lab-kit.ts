@@ -112,14 +112,6 @@ export function dashedLine(g: Graphics, x0: number, y0: number, x1: number, y1: 
   return g;
 }
 
-/** The pointer position in CSS px relative to `canvas`' top-left corner, written into `out`. */
-export function pointerOnCanvas(canvas: HTMLCanvasElement, event: PointerEvent | MouseEvent, out: { x: number; y: number }): { x: number; y: number } {
-  const rect = canvas.getBoundingClientRect();
-  out.x = event.clientX - rect.left;
-  out.y = event.clientY - rect.top;
-  return out;
-}
-
 /**
  * A one-line status readout at the top of the window, between the HUD (top left) and the panel (top
  * right); DOM text, so updating it costs no texture upload. @returns `set(text)` (cheap when unchanged).

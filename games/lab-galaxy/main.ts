@@ -22,8 +22,8 @@ import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, galaxy, setGravitation, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
-import { advanceSteps, createInfo, createStepTimer, fmt, pointerOnCanvas, readUrl } from './particle-kit';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, createInfo, createStepTimer, fmt, readUrl } from './particle-kit';
 
 /** Real time a step stands for, s: the loop runs one step per 1/60 s; the world's dt is timeScale times it. */
 const REAL_STEP = 1 / 60;

@@ -7,7 +7,7 @@
  */
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Point2, WorldRenderer } from '@bitphysics/render-pixi';
+import type { WorldRenderer } from '@bitphysics/render-pixi';
 
 const STYLE_ID = 'bp-particle-lab-style';
 const CSS = `
@@ -98,14 +98,6 @@ export function readUrl<T>(read: () => T, usage: string): T {
     showPageError(`${error instanceof Error ? error.message : String(error)}\n\n${usage}`);
     throw error;
   }
-}
-
-/** The pointer position in CSS px relative to `canvas`' top-left corner, into `out`. */
-export function pointerOnCanvas(canvas: HTMLCanvasElement, event: PointerEvent | MouseEvent, out: Point2): Point2 {
-  const rect = canvas.getBoundingClientRect();
-  out.x = event.clientX - rect.left;
-  out.y = event.clientY - rect.top;
-  return out;
 }
 
 /**

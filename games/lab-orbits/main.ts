@@ -17,10 +17,10 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
 import {
-  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, pointerOnCanvas, readUrlParams,
+  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
 } from '../lab-projectile-drag/lab-kit';
 import {
   ESCAPE_DISTANCE, ORBITS_DEFAULTS, SUN_RADIUS, buildOrbits, launchBody, orbitsWorldOptions, outerRadius, removeOrbiter, setCentralMass,

@@ -14,9 +14,9 @@ import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam } from '../shared/index';
+import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawnPosition, fmt, followView, pointerOnCanvas, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import { BOB_MASS, PENDULUM_DEFAULTS, PENDULUM_RANGES, buildPendulum, pendulumWorldOptions, type PendulumHandles } from './scene';
 import { largeAmplitudePeriod, smallAngle, smallAnglePeriod } from './exact';
 

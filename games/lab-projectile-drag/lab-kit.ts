@@ -5,8 +5,8 @@
  * - a dock on the right holding the lil-gui panel, a readout box and the uPlot charts;
  * - fitting the camera so a world rectangle lands beside the dock;
  * - URL parameters read behind a clear on-page error;
- * - pointer -> world conversion, interpolated positions, and pixi drawing helpers (springs,
- *   dashed lines, polylines from ring buffers) for what the WorldRenderer does not draw.
+ * - interpolated positions, and pixi drawing helpers (springs, dashed lines, polylines from ring
+ *   buffers) for what the WorldRenderer does not draw.
  *
  * It lives in this folder because the lab folders are what the labs own; it belongs in
  * games/shared (see the labs' report). No physics in here: only layout, input and drawing.
@@ -213,14 +213,6 @@ export function drawnPosition(world: PhysicsWorld, eid: number, alpha: number, o
   const P = world.components.Position, O = world.components.PreviousPosition;
   out.x = O.x[eid]! + (P.x[eid]! - O.x[eid]!) * alpha;
   out.y = O.y[eid]! + (P.y[eid]! - O.y[eid]!) * alpha;
-  return out;
-}
-
-/** The pointer position in CSS px relative to `canvas`' top-left corner, into `out`. */
-export function pointerOnCanvas(canvas: HTMLCanvasElement, event: PointerEvent | MouseEvent, out: Point2): Point2 {
-  const rect = canvas.getBoundingClientRect();
-  out.x = event.clientX - rect.left;
-  out.y = event.clientY - rect.top;
   return out;
 }
 

@@ -18,10 +18,10 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
 import {
-  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, pointerOnCanvas, readUrlParams,
+  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
 } from './lab-kit';
 import {
   BALL_RADIUS, DRAG_LAWS, PROJECTILE_DEFAULTS, PROJECTILE_RANGES, buildProjectile, projectileWorldOptions,

@@ -10,8 +10,8 @@ import { Graphics } from 'pixi.js';
 import { windAt, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, fmt, particleCentroid, pointerOnCanvas, readUrl } from '../lab-galaxy/particle-kit';
+import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, countParticles, createInfo, exposeLive, fmt, particleCentroid, readUrl } from '../lab-galaxy/particle-kit';
 import {
   MAX_RATE, PUFF_LIFETIME, createSmoke, moveSmokeSource, setSmokeBuoyancy, setSmokeRate, setSmokeWind, stepSmoke, type Smoke,
 } from './scene';

@@ -11,8 +11,8 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, hideBallLayer, pointerOnCanvas, readUrl } from '../lab-galaxy/particle-kit';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, countParticles, createInfo, exposeLive, hideBallLayer, readUrl } from '../lab-galaxy/particle-kit';
 import {
   MAX_RATE, SPARK_MASS, TOOL_PRESETS, WALL_X, configureSparks, createSparks, moveTool, setToolOn, stepSparks, type SparkTool, type Sparks,
 } from './scene';

@@ -12,8 +12,8 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam } from '../shared/index';
-import { advanceSteps, createInfo, exposeLive, fmt, hideBallLayer, pointerOnCanvas, readUrl } from '../lab-galaxy/particle-kit';
+import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { advanceSteps, createInfo, exposeLive, fmt, hideBallLayer, readUrl } from '../lab-galaxy/particle-kit';
 import {
   CLOUD_HEIGHT, GROUND_END, MAX_RAIN, MAX_RIPPLES, POOL, createSplash, dropAt, dropCount, setDropletsPerSpeed, setGroundRestitution, setRain,
   splashCount, stepSplash, type Splash,

@@ -18,9 +18,9 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawSpring, drawnPosition, fmt, followView, pointerOnCanvas, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { createLabDock, createReadout, drawSpring, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   BALL_RADIUS, CHAIN_DEFAULTS, LINK_LENGTH, buildChain, chainWorldOptions, hangingLength, setSpringConstants, substepsFor,
   type ChainHandles,

@@ -1,7 +1,7 @@
 /**
  * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
  * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
- * (fps, bodies, controls legend), lil-gui panels and URL parameters.
+ * (fps, bodies, controls legend), lil-gui panels, URL parameters and pointer positions.
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
 export { exposeGame, markReady } from './contract';
@@ -15,6 +15,7 @@ export type { ControlHint, Hud, HudOptions } from './hud';
 export { createPanel } from './panel';
 export type { Panel, PanelControl, PanelOptions, SliderControl, ChoiceControl, PlainControl } from './panel';
 export { numberParam, flagParam, choiceParam } from './params';
+export { pointerOnCanvas } from './pointer';
 export type { NumberParamOptions } from './params';
 export { createGameShell, SHELL_CONTROLS } from './shell';
 export type { GameShell, GameShellOptions } from './shell';
