@@ -14,7 +14,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, createInfo, exposeLive, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, exposeLive } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   MAX_ATTRACTORS, START_AREA, addAttractor, attractorNear, createAttractorField, moveAttractor, removeAttractor, setAttractorField,
   setParticleDrag, setVortexOn, stepAttractors, type AttractorField,
@@ -27,7 +28,7 @@ const REACH_PX = 18;
 
 const USAGE = 'Accepted: count 1-50000 (integer); mass 1-500 m³/s²; softening 0-3 m; drag 0-2 N s/m; vortex 0|1; strength -10..10 N; trails 0|1; seed (integer).';
 const search = new URLSearchParams(location.search);
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   count: numberParam('count', { default: 3000, min: 1, max: 50_000, integer: true }),
   mass: numberParam('mass', { default: 40, min: 1, max: 500 }),
   softening: numberParam('softening', { default: 0.4, min: 0, max: 3 }),
@@ -107,7 +108,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Attractors' });
 
-const info = createInfo(shell.hud.readout, ['attractors', 'vortex', 'came back']);
+const info = createReadout(shell.hud.readout, ['attractors', 'vortex', 'came back']);
 
 // ---- Drawing --------------------------------------------------------------------------------------
 

@@ -12,7 +12,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, fmt, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, countParticles, exposeLive, fmt } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   FIRE_LIFETIMES, FIRE_RATES, MAX_INTENSITY, createFire, moveFire, setFireIntensity, setFireSmoke, setFireWind, stepFire, type Fire,
 } from './scene';
@@ -24,7 +25,7 @@ const VIEW = { minX: -4, minY: -0.6, maxX: 4, maxY: 4.4 };
 
 const USAGE = `Accepted: intensity 0-${MAX_INTENSITY}; wind -6..6 m/s; smoke 0|1; seed (integer).`;
 const search = new URLSearchParams(location.search);
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   intensity: numberParam('intensity', { default: 1, min: 0, max: MAX_INTENSITY }),
   wind: numberParam('wind', { default: 0, min: -6, max: 6 }),
   smoke: search.has('smoke') ? flagParam('smoke') : true,
@@ -76,7 +77,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Fire' });
 
-const info = createInfo(shell.hud.readout, ['particles alive', 'flames + glow', 'sparks', 'smoke', 'flame rate', 'steady state']);
+const info = createReadout(shell.hud.readout, ['particles alive', 'flames + glow', 'sparks', 'smoke', 'flame rate', 'steady state']);
 
 // ---- Drawing ----------------------------------------------------------------------------------------
 

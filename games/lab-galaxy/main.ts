@@ -23,7 +23,8 @@ import { createPhysicsWorld, galaxy, setGravitation, step as physicsStep, type P
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, createInfo, createStepTimer, fmt, readUrl } from './particle-kit';
+import { advanceSteps, createStepTimer, fmt } from './particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 
 /** Real time a step stands for, s: the loop runs one step per 1/60 s; the world's dt is timeScale times it. */
 const REAL_STEP = 1 / 60;
@@ -40,7 +41,7 @@ const COLORINGS = {
 type Coloring = keyof typeof COLORINGS;
 
 const USAGE = 'Accepted: count 1-200000 (integer); theta 0.1-2; softening 0.01-5 m; timescale 0.05-4; color = speed | radius; method = barnes-hut | direct; seed (integer).';
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   count: numberParam('count', { default: 100_000, min: 1, max: 200_000, integer: true }),
   openingAngle: numberParam('theta', { default: 0.5, min: 0.1, max: 2 }),
   softening: numberParam('softening', { default: 0.3, min: 0.01, max: 5 }),
@@ -50,7 +51,7 @@ const url = readUrl(() => ({
   seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
 }), USAGE);
 if (url.method === 'direct' && url.count > DIRECT_LIMIT) {
-  readUrl(() => { throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`); }, USAGE);
+  readUrlParams(() => { throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`); }, USAGE);
 }
 
 const params = {
@@ -148,7 +149,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Galaxy' });
 
-const info = createInfo(shell.hud.readout, ['physics step', 'force stage (tree)', 'sim time', 'draw (CPU)', 'gravity']);
+const info = createReadout(shell.hud.readout, ['physics step', 'force stage (tree)', 'sim time', 'draw (CPU)', 'gravity']);
 
 // ---- Drawing ------------------------------------------------------------------------------------
 

@@ -1,103 +1,20 @@
 /**
  * Particle-lab kit: the page pieces the seven particle labs of Ramtal and Dobre ch. 12 share
  * (lab-galaxy, lab-wormhole, lab-splash, lab-smoke, lab-fire, lab-sparks, lab-attractors), on top of
- * games/shared. Layout, input, counting and timing only: no physics in here.
+ * games/shared and the lab kit (games/lab-projectile-drag/lab-kit.ts), whose readout (`createReadout`),
+ * number format (`fmt`) and URL-parameter error box (`readUrlParams`) they use as they are. Particle
+ * counts, step timing, hiding the ball layer and test hooks only: no physics in here.
  *
  * It lives in this folder because the lab folders are what the labs own.
  */
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { WorldRenderer } from '@bitphysics/render-pixi';
+import { fmt as labFmt } from '../lab-projectile-drag/lab-kit';
 
-const STYLE_ID = 'bp-particle-lab-style';
-const CSS = `
-.bp-lab-info { margin-top: 6px; padding-top: 6px; border-top: 1px solid rgba(255, 255, 255, 0.15); white-space: pre; }
-.bp-lab-info .bp-lab-key { color: #98a2b3; }
-.bp-lab-error { position: fixed; top: 40%; left: 50%; transform: translate(-50%, -50%); z-index: 30; max-width: 80vw;
-  background: rgba(160, 20, 40, 0.95); color: #fff; border-radius: 8px; padding: 12px 16px; font: 14px/1.5 system-ui, sans-serif; white-space: pre-wrap; }
-`;
-
-function injectStyle(): void {
-  if (document.getElementById(STYLE_ID)) return;
-  const style = document.createElement('style');
-  style.id = STYLE_ID;
-  style.textContent = CSS;
-  document.head.append(style);
-}
-
-/** A block of labelled lines that rewrites only the lines whose text changed. */
-export interface InfoBlock {
-  /** Sets line `i`'s value text. @throws RangeError if `i` is not a line index. */
-  set(i: number, text: string): void;
-  /** Current value text of line `i` ('' if never set or out of range). */
-  get(i: number): string;
-}
-
-/**
- * Appends a block of 'label value' lines to `parent` (usually the HUD readout, `shell.hud.readout`),
- * marked `data-lab="info"`; each value span has `data-info="<i>"`.
- * @throws TypeError if `labels` is empty.
- */
-export function createInfo(parent: HTMLElement, labels: readonly string[]): InfoBlock {
-  if (labels.length === 0) throw new TypeError('createInfo: labels must not be empty');
-  injectStyle();
-  const block = document.createElement('div');
-  block.className = 'bp-lab-info';
-  block.dataset.lab = 'info';
-  const values: HTMLElement[] = [];
-  const texts: string[] = [];
-  labels.forEach((label, i) => {
-    const line = document.createElement('div');
-    const key = document.createElement('span');
-    key.className = 'bp-lab-key';
-    key.textContent = `${label} `;
-    const value = document.createElement('span');
-    value.dataset.info = String(i);
-    line.append(key, value);
-    block.append(line);
-    values.push(value);
-    texts.push('');
-  });
-  parent.append(block);
-  return {
-    set(i, text) {
-      const el = values[i];
-      if (!el) throw new RangeError(`InfoBlock.set: no line ${i} (there are ${values.length})`);
-      if (texts[i] !== text) { texts[i] = text; el.textContent = text; }
-    },
-    get(i) { return texts[i] ?? ''; },
-  };
-}
-
-/** Formats `value` with `digits` significant digits ('–' for NaN, '∞' for infinities). */
+/** Formats `value` for the particle labs' readouts: the lab kit's `fmt`, at 3 significant digits by default. */
 export function fmt(value: number, digits = 3): string {
-  if (Number.isNaN(value)) return '–';
-  if (!Number.isFinite(value)) return value > 0 ? '∞' : '-∞';
-  return Number(value.toPrecision(digits)).toString();
-}
-
-/** Shows `message` in a red box in the middle of the page (errors that stop a lab before it starts). */
-export function showPageError(message: string): void {
-  injectStyle();
-  const box = document.createElement('div');
-  box.className = 'bp-lab-error';
-  box.setAttribute('role', 'alert');
-  box.dataset.lab = 'error';
-  box.textContent = message;
-  document.body.append(box);
-}
-
-/**
- * Runs `read` (which reads URL parameters with numberParam / choiceParam / flagParam) and returns its
- * value; if it throws, shows the message with `usage` on the page and rethrows, so the page stops.
- */
-export function readUrl<T>(read: () => T, usage: string): T {
-  try {
-    return read();
-  } catch (error) {
-    showPageError(`${error instanceof Error ? error.message : String(error)}\n\n${usage}`);
-    throw error;
-  }
+  return labFmt(value, digits);
 }
 
 /**

@@ -1,6 +1,7 @@
 /**
  * Lab kit: the page furniture the six labs of Part II share (lab-projectile-drag, lab-orbits,
- * lab-integrators, lab-spring-chain, lab-bungee, lab-pendulum), on top of games/shared.
+ * lab-integrators, lab-spring-chain, lab-bungee, lab-pendulum), on top of games/shared. The particle
+ * labs use its readout, `fmt` and URL-parameter error box too (games/lab-galaxy/particle-kit.ts).
  *
  * - a dock on the right holding the lil-gui panel, a readout box and the uPlot charts;
  * - fitting the camera so a world rectangle lands beside the dock;

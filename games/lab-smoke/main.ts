@@ -11,7 +11,8 @@ import { windAt, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, fmt, particleCentroid, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, particleCentroid } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   MAX_RATE, PUFF_LIFETIME, createSmoke, moveSmokeSource, setSmokeBuoyancy, setSmokeRate, setSmokeWind, stepSmoke, type Smoke,
 } from './scene';
@@ -21,7 +22,7 @@ const GROUND = -1.5, MIN_CHIMNEY = 0.4;
 const VIEW = { minX: -6, minY: GROUND - 0.3, maxX: 14, maxY: 11 };
 
 const USAGE = `Accepted: rate 0-${MAX_RATE} /s; wind -10..10 m/s; turbulence 0-5 m/s; buoyancy 0-2; seed (integer).`;
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   rate: numberParam('rate', { default: 120, min: 0, max: MAX_RATE }),
   wind: numberParam('wind', { default: 1.5, min: -10, max: 10 }),
   turbulence: numberParam('turbulence', { default: 0.8, min: 0, max: 5 }),
@@ -56,7 +57,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Smoke' });
 
-const info = createInfo(shell.hud.readout, ['puffs alive', 'steady state', 'wind at the chimney']);
+const info = createReadout(shell.hud.readout, ['puffs alive', 'steady state', 'wind at the chimney']);
 
 // ---- Drawing: sky, ground, chimney, a wind vane ------------------------------------------------------
 

@@ -12,7 +12,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, countParticles, createInfo, exposeLive, hideBallLayer, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   MAX_RATE, SPARK_MASS, TOOL_PRESETS, WALL_X, configureSparks, createSparks, moveTool, setToolOn, stepSparks, type SparkTool, type Sparks,
 } from './scene';
@@ -22,7 +23,7 @@ const VIEW = { minX: WALL_X - 0.3, minY: -0.4, maxX: 9, maxY: 6 };
 const WHEEL = 0.45;
 
 const USAGE = `Accepted: tool = grinder | welding; rate 0-${MAX_RATE} /s; angle -360..360 deg; spread 0-180 deg; speed 1-40 m/s; seed (integer).`;
-const url = readUrl(() => {
+const url = readUrlParams(() => {
   const tool = choiceParam('tool', ['grinder', 'welding'] as const, 'grinder') as SparkTool;
   const preset = TOOL_PRESETS[tool];
   return {
@@ -111,7 +112,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Sparks' });
 
-const info = createInfo(shell.hud.readout, ['sparks alive', 'bounces', 'terminal fall speed']);
+const info = createReadout(shell.hud.readout, ['sparks alive', 'bounces', 'terminal fall speed']);
 
 // ---- Drawing: the tool ------------------------------------------------------------------------------
 

@@ -13,7 +13,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, createInfo, exposeLive, fmt, hideBallLayer, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   CLOUD_HEIGHT, GROUND_END, MAX_RAIN, MAX_RIPPLES, POOL, createSplash, dropAt, dropCount, setDropletsPerSpeed, setGroundRestitution, setRain,
   splashCount, stepSplash, type Splash,
@@ -24,7 +25,7 @@ const VIEW = { minX: POOL.minX - 0.3, minY: POOL.bottom - 0.3, maxX: GROUND_END 
 const RIPPLE_LIFE = 1.2, RIPPLE_SPEED = 0.6;
 
 const USAGE = `Accepted: rain 0-${MAX_RAIN} drops/s; droplets 0-20 per m/s; restitution 0-1; seed (integer).`;
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   rain: numberParam('rain', { default: 6, min: 0, max: MAX_RAIN }),
   droplets: numberParam('droplets', { default: 2, min: 0, max: 20 }),
   restitution: numberParam('restitution', { default: 0.35, min: 0, max: 1 }),
@@ -62,7 +63,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Splash' });
 
-const info = createInfo(shell.hud.readout, ['raindrops falling', 'splash droplets', 'impacts', 'last impact']);
+const info = createReadout(shell.hud.readout, ['raindrops falling', 'splash droplets', 'impacts', 'last impact']);
 
 // ---- Drawing: pool, ground, ripples --------------------------------------------------------------------
 

@@ -14,7 +14,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, createInfo, exposeLive, fmt, readUrl } from '../lab-galaxy/particle-kit';
+import { advanceSteps, exposeLive, fmt } from '../lab-galaxy/particle-kit';
+import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   BLACK_HOLE_SOFTENING, addStar, createWormhole, moveHole, setBlackHoleMass, setHorizon, setStarDrag,
   setWhiteHoleStrength, stepWormhole, type Wormhole,
@@ -27,7 +28,7 @@ const CLICK_SLOP = 6;
 
 const USAGE = 'Accepted: count 1-20000 (integer); bh 1-300 and wh 0-300 (m³/s²); horizon 0.35-3 m; drag 0-3 /s; trails 0|1; seed (integer).';
 const search = new URLSearchParams(location.search);
-const url = readUrl(() => ({
+const url = readUrlParams(() => ({
   count: numberParam('count', { default: 2000, min: 1, max: 20_000, integer: true }),
   blackHole: numberParam('bh', { default: 60, min: 1, max: 300 }),
   whiteHole: numberParam('wh', { default: 30, min: 0, max: 300 }),
@@ -90,7 +91,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Wormhole' });
 
-const info = createInfo(shell.hud.readout, ['through the wormhole', 'last jump', 're-entered', 'net far-field G M', 'black hole', 'white hole']);
+const info = createReadout(shell.hud.readout, ['through the wormhole', 'last jump', 're-entered', 'net far-field G M', 'black hole', 'white hole']);
 
 // ---- Drawing --------------------------------------------------------------------------------------
 
