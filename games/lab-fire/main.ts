@@ -9,10 +9,10 @@
  */
 import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { ParticleLayer, type Point2 } from '@bitphysics/render-pixi';
+import { ParticleLayer } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt } from '../lab-galaxy/particle-kit';
+import { createPanel, flagParam, numberParam } from '../shared/index';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   FIRE_LIFETIMES, FIRE_RATES, MAX_INTENSITY, createFire, moveFire, setFireIntensity, setFireSmoke, setFireWind, stepFire, type Fire,
@@ -108,24 +108,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 
 // ---- Pointer: click or drag moves the fire -------------------------------------------------------------
 
-const canvas = app.canvas;
-const at: Point2 = { x: 0, y: 0 };
-let pointerId = -1;
-function moveTo(event: PointerEvent): void {
-  pointerOnCanvas(canvas, event, at);
-  const cam = renderer.camera;
-  moveFire(fire, cam.toWorldX(at.x), Math.max(GROUND + 0.25, cam.toWorldY(at.y)));
-}
-canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0 || pointerId !== -1) return;
-  pointerId = event.pointerId;
-  canvas.setPointerCapture(event.pointerId);
-  moveTo(event);
-});
-canvas.addEventListener('pointermove', (event) => { if (event.pointerId === pointerId) moveTo(event); });
-const release = (event: PointerEvent): void => { if (event.pointerId === pointerId) pointerId = -1; };
-canvas.addEventListener('pointerup', release);
-canvas.addEventListener('pointercancel', release);
+followPointerWhileDown(app.canvas, renderer, (x, y) => moveFire(fire, x, Math.max(GROUND + 0.25, y)));
 
 // ---- Test and console hooks on window.game -------------------------------------------------------------
 

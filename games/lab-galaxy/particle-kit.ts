@@ -3,13 +3,14 @@
  * (lab-galaxy, lab-wormhole, lab-splash, lab-smoke, lab-fire, lab-sparks, lab-attractors), on top of
  * games/shared and the lab kit (games/lab-projectile-drag/lab-kit.ts), whose readout (`createReadout`),
  * number format (`fmt`) and URL-parameter error box (`readUrlParams`) they use as they are. Particle
- * counts, step timing, hiding the ball layer and test hooks only: no physics in here.
+ * counts, step timing, hiding the ball layer, click-or-drag input and test hooks only: no physics in here.
  *
  * It lives in this folder because the lab folders are what the labs own.
  */
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { WorldRenderer } from '@bitphysics/render-pixi';
+import { pointerOnCanvas } from '../shared/pointer';
 import { fmt as labFmt } from '../lab-projectile-drag/lab-kit';
 
 /** Formats `value` for the particle labs' readouts: the lab kit's `fmt`, at 3 significant digits by default. */
@@ -28,6 +29,31 @@ export function hideBallLayer(renderer: WorldRenderer): void {
   const balls = renderer.root.getChildByLabel('balls');
   if (!balls) throw new Error('hideBallLayer: the renderer has no ball layer labelled "balls"');
   balls.visible = false;
+}
+
+/**
+ * "Click or drag moves it": calls `moveTo(x, y)` with the world point (m) under the pointer when the
+ * left button goes down on `canvas`, and again on every move while that pointer stays down (it is
+ * captured, so a drag may leave the canvas). One pointer at a time. The fire and smoke labs move
+ * their source this way.
+ */
+export function followPointerWhileDown(canvas: HTMLCanvasElement, renderer: WorldRenderer, moveTo: (x: number, y: number) => void): void {
+  const at = { x: 0, y: 0 };
+  let pointerId = -1;
+  const move = (event: PointerEvent): void => {
+    pointerOnCanvas(canvas, event, at);
+    moveTo(renderer.camera.toWorldX(at.x), renderer.camera.toWorldY(at.y));
+  };
+  canvas.addEventListener('pointerdown', (event) => {
+    if (event.button !== 0 || pointerId !== -1) return;
+    pointerId = event.pointerId;
+    canvas.setPointerCapture(event.pointerId);
+    move(event);
+  });
+  canvas.addEventListener('pointermove', (event) => { if (event.pointerId === pointerId) move(event); });
+  const release = (event: PointerEvent): void => { if (event.pointerId === pointerId) pointerId = -1; };
+  canvas.addEventListener('pointerup', release);
+  canvas.addEventListener('pointercancel', release);
 }
 
 /**

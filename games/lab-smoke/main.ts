@@ -8,10 +8,9 @@
  */
 import { Graphics } from 'pixi.js';
 import { windAt, type PhysicsWorld } from '@bitphysics/physics';
-import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt, particleCentroid } from '../lab-galaxy/particle-kit';
+import { createPanel, numberParam } from '../shared/index';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
   MAX_RATE, PUFF_LIFETIME, createSmoke, moveSmokeSource, setSmokeBuoyancy, setSmokeRate, setSmokeWind, stepSmoke, type Smoke,
@@ -104,24 +103,7 @@ function drawFrame(world: PhysicsWorld): void {
 
 // ---- Pointer: click or drag moves the chimney ----------------------------------------------------------
 
-const canvas = app.canvas;
-const at: Point2 = { x: 0, y: 0 };
-let pointerId = -1;
-function moveTo(event: PointerEvent): void {
-  pointerOnCanvas(canvas, event, at);
-  const cam = renderer.camera;
-  moveSmokeSource(smoke, cam.toWorldX(at.x), Math.max(GROUND + MIN_CHIMNEY, cam.toWorldY(at.y)));
-}
-canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0 || pointerId !== -1) return;
-  pointerId = event.pointerId;
-  canvas.setPointerCapture(event.pointerId);
-  moveTo(event);
-});
-canvas.addEventListener('pointermove', (event) => { if (event.pointerId === pointerId) moveTo(event); });
-const release = (event: PointerEvent): void => { if (event.pointerId === pointerId) pointerId = -1; };
-canvas.addEventListener('pointerup', release);
-canvas.addEventListener('pointercancel', release);
+followPointerWhileDown(app.canvas, renderer, (x, y) => moveSmokeSource(smoke, x, Math.max(GROUND + MIN_CHIMNEY, y)));
 
 // ---- Test and console hooks on window.game -------------------------------------------------------------
 
