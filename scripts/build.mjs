@@ -100,23 +100,37 @@ export async function buildBench() {
   });
 }
 
-/** Builds each library package's ESM bundle (packages/<name>/dist/index.js), dependencies external. */
+/** The library packages whose ESM bundles `buildPackages` writes, dependencies before dependants. */
+export const libraryPackages = ['physics', 'render-common', 'render-pixi', 'render-three'];
+
+/**
+ * Builds each library package's ESM bundles, one per entry of its package.json `exports` map: the
+ * entry's `bitphysics-source` file bundled to its `default` file (e.g. src/index.ts -> dist/index.js,
+ * src/validate.ts -> dist/validate.js), every package import external.
+ */
 export async function buildPackages() {
-  for (const name of ['physics', 'render-pixi', 'render-three']) {
-    const entry = join(root, 'packages', name, 'src', 'index.ts');
-    if (!existsSync(entry)) continue;
-    await esbuild.build({
-      entryPoints: [entry],
-      outfile: join(root, 'packages', name, 'dist', 'index.js'),
-      bundle: true,
-      format: 'esm',
-      platform: 'neutral',
-      target: 'es2022',
-      conditions,
-      packages: 'external',
-      sourcemap: true,
-      logLevel: 'warning',
-    });
+  for (const name of libraryPackages) {
+    const dir = join(root, 'packages', name);
+    const manifest = join(dir, 'package.json');
+    if (!existsSync(manifest)) continue;
+    const exportsMap = JSON.parse(readFileSync(manifest, 'utf8')).exports ?? {};
+    for (const entry of Object.values(exportsMap)) {
+      const source = entry?.['bitphysics-source'];
+      const output = entry?.default;
+      if (typeof source !== 'string' || typeof output !== 'string' || !existsSync(join(dir, source))) continue;
+      await esbuild.build({
+        entryPoints: [join(dir, source)],
+        outfile: join(dir, output),
+        bundle: true,
+        format: 'esm',
+        platform: 'neutral',
+        target: 'es2022',
+        conditions,
+        packages: 'external',
+        sourcemap: true,
+        logLevel: 'warning',
+      });
+    }
   }
 }
 

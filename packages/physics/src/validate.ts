@@ -17,6 +17,7 @@ export function describe(value: unknown): string {
   if (typeof value === 'function') return 'a function';
   try {
     const text = JSON.stringify(value);
+    if (text === undefined) return String(value); // a symbol, or an object whose toJSON gives undefined
     return text.length > 80 ? `${text.slice(0, 77)}...` : text;
   } catch {
     return Object.prototype.toString.call(value);
@@ -75,6 +76,11 @@ export function assertInteger(
   if (value < min || value > max) {
     throw new RangeError(`${where}: ${param} must be an integer in [${min}, ${max}], got ${describe(value)}`);
   }
+}
+
+/** Throws unless `value` is a boolean (`true` or `false`, not truthy or falsy). @throws TypeError */
+export function assertBoolean(where: string, param: string, value: unknown): asserts value is boolean {
+  if (typeof value !== 'boolean') throw new TypeError(`${where}: ${param} must be a boolean, got ${describe(value)}`);
 }
 
 /**

@@ -1,4 +1,4 @@
-import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, describe } from './validate';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /**
  * The camera: the one place where metres become pixels. Physics is SI with y up; the screen is

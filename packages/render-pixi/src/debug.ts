@@ -3,7 +3,7 @@ import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { BallLayer } from './balls';
 import type { Camera } from './camera';
-import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from './validate';
+import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {

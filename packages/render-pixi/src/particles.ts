@@ -2,7 +2,7 @@ import { CanvasSource, Container, DOMAdapter, Particle, ParticleContainer, Textu
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera';
-import { assertBoolean, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from './validate';
+import { assertBoolean, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /**
  * The particle layer: draws every entity that has Particle and Position (emitted sparks, smoke,

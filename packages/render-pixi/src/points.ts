@@ -4,7 +4,7 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera';
 import { parseColor, type ColorInput } from './colors';
 import { createStreakTexture } from './particles';
-import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from './validate';
+import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 
 /**
  * The point layer: draws bodies that have no collider (stars, dust, test particles in a force field)

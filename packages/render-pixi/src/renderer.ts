@@ -9,7 +9,7 @@ import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions }
 import { createBallTexture } from './textures';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails';
 import { WallLayer } from './walls';
-import { assertBoolean, assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from './validate';
+import { assertBoolean, assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /** Options of `new WorldRenderer`. Every field is optional; unknown fields are rejected. */
 export interface WorldRendererOptions {

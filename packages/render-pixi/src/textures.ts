@@ -1,5 +1,5 @@
 import { CanvasSource, DOMAdapter, Texture } from 'pixi.js';
-import { assertBoolean, assertInteger, assertKnownKeys } from './validate';
+import { assertBoolean, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /** Options of `createBallTexture`. Unknown fields are rejected. */
 export interface BallTextureOptions {

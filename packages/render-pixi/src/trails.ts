@@ -2,7 +2,7 @@ import { CanvasSource, Container, DOMAdapter, MeshRope, Texture, type PointData 
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { BallLayer, BallLayerListener } from './balls';
 import type { Camera } from './camera';
-import { assertInRange, assertInteger, assertKnownKeys } from './validate';
+import { assertInRange, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /** Options of the trail layer (`WorldRendererOptions.trails`, `WorldRenderer.setTrails`). Unknown fields are rejected. */
 export interface TrailOptions {

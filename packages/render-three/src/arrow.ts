@@ -1,6 +1,6 @@
 import { ConeGeometry, CylinderGeometry, Group, Mesh, MeshStandardMaterial, Quaternion, Vector3 } from 'three';
 import { parseColor, type ColorInput } from './colors';
-import { assertKnownKeys, assertNonNegative, assertPositive } from './validate';
+import { assertKnownKeys, assertNonNegative, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of `new VectorArrow`. Every field optional; unknown fields are rejected. */
 export interface VectorArrowOptions {

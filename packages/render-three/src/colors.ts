@@ -1,4 +1,4 @@
-import { describe } from './validate';
+import { describe } from '@bitphysics/physics/validate';
 
 /**
  * Colours: parsing user input and the seeded per-entity colours. No three.js, no DOM.

@@ -2,7 +2,7 @@ import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMate
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { InstanceBook } from './book';
 import { hexToLinear, rotateInto } from './math';
-import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from './validate';
+import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {

@@ -1,6 +1,7 @@
 import { AmbientLight, DirectionalLight, Group, HemisphereLight, Vector3 } from 'three';
 import { parseColor, type ColorInput } from './colors';
-import { assertBoolean, assertInteger, assertKnownKeys, assertNonNegative, assertVector, describe } from './validate';
+import { assertBoolean, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
+import { assertVector } from './validate';
 
 /** Options of `createLights` (and `WorldRenderer3DOptions.lights`). Every field optional; unknown fields are rejected. */
 export interface LightOptions {

@@ -13,8 +13,9 @@ import { LightRig, resolveLightOptions, type LightOptions } from './lights';
 import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails';
 import {
-  assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
-} from './validate';
+  assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe,
+} from '@bitphysics/physics/validate';
+import { assertVector } from './validate';
 
 /** Options of `new WorldRenderer3D`. Every field is optional; unknown fields are rejected. */
 export interface WorldRenderer3DOptions {
