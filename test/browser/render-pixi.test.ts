@@ -4,7 +4,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Camera } from '../../packages/render-pixi/src/camera';
-import { parseColor, seededColor } from '../../packages/render-pixi/src/colors';
+import { parseColor, seededColor } from '../../packages/render-common/src/colors';
 import { numberParam, flagParam, choiceParam } from '../../games/shared/params';
 import { Harness, type GamePage } from './harness';
 

@@ -2,7 +2,7 @@ import { Container, Particle, ParticleContainer, Sprite, type Texture } from 'pi
 import { hasComponent, Not, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2 } from './camera';
-import { seededColor } from './colors';
+import { seededColor } from '@bitphysics/render-common';
 import { ballTextureDiameter } from './textures';
 
 /**

@@ -16,8 +16,8 @@ export type { CameraOptions, WorldRect, Point2 } from './camera';
 export type { BallMode } from './balls';
 export { createBallTexture, ballTextureDiameter } from './textures';
 export type { BallTextureOptions } from './textures';
-export { parseColor, seededColor, hslToRgb } from './colors';
-export type { ColorInput } from './colors';
+export { parseColor, seededColor, hslToRgb } from '@bitphysics/render-common';
+export type { ColorInput } from '@bitphysics/render-common';
 export { resolveTrailOptions } from './trails';
 export type { TrailOptions } from './trails';
 export {

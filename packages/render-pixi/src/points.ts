@@ -2,7 +2,7 @@ import { CanvasSource, Container, DOMAdapter, Particle, ParticleContainer, Textu
 import { Not as notTerm, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera';
-import { parseColor, type ColorInput } from './colors';
+import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { createStreakTexture } from './particles';
 import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 

@@ -3,7 +3,7 @@ import { entityExists, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { BallLayer, type BallMode } from './balls';
 import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera';
-import { parseColor, type ColorInput } from './colors';
+import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug';
 import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles';
 import { createBallTexture } from './textures';

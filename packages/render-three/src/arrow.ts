@@ -1,5 +1,5 @@
 import { ConeGeometry, CylinderGeometry, Group, Mesh, MeshStandardMaterial, Quaternion, Vector3 } from 'three';
-import { parseColor, type ColorInput } from './colors';
+import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { assertKnownKeys, assertNonNegative, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of `new VectorArrow`. Every field optional; unknown fields are rejected. */

@@ -31,5 +31,5 @@ export { createOrbitControls, frameBox } from './camera';
 export type { OrbitOptions, FrameOptions } from './camera';
 export { slerpInto, rotateBack, composeInto, rotateInto, equivalentBoxEdges, hexToLinear } from './math';
 export type { NumberArray } from './math';
-export { parseColor, seededColor, hslToRgb, hash3 } from './colors';
-export type { ColorInput } from './colors';
+export { parseColor, seededColor, hslToRgb, hash3 } from '@bitphysics/render-common';
+export type { ColorInput } from '@bitphysics/render-common';

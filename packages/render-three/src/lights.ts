@@ -1,5 +1,5 @@
 import { AmbientLight, DirectionalLight, Group, HemisphereLight, Vector3 } from 'three';
-import { parseColor, type ColorInput } from './colors';
+import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { assertBoolean, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 import { assertVector } from './validate';
 

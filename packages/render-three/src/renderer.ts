@@ -5,7 +5,7 @@ import {
 import { entityExists, hasComponent, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book';
-import { parseColor, seededColor, type ColorInput } from './colors';
+import { parseColor, seededColor, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugFrame, type DebugOptions } from './debug';
 import { EnvironmentLayer, type BoundaryStyle } from './environment';
 import { InstanceGroup, type GroupKind } from './groups';

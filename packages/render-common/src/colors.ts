@@ -1,8 +1,10 @@
 import { describe } from '@bitphysics/physics/validate';
 
 /**
- * Colours: parsing user input and the seeded per-entity colours. No pixi, no DOM.
- * A colour is a 24-bit integer 0xRRGGBB throughout (what pixi's `tint` takes).
+ * Colours: parsing user input and the seeded per-entity colours. No pixi, no three.js, no DOM.
+ * A colour is a 24-bit integer 0xRRGGBB (sRGB) throughout: what pixi's `tint` takes, and what
+ * @bitphysics/render-three converts to three's linear working space when it writes instance colours.
+ * Both renderers use these functions, so the same seed gives the same colours in 2D and 3D.
  */
 
 /** A colour given by a user: an integer 0xRRGGBB in [0, 0xffffff], or a CSS hex string '#rgb' or '#rrggbb'. */

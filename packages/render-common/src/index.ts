@@ -1,0 +1,10 @@
+/**
+ * @bitphysics/render-common: the parts of bitphysics' renderers that need neither pixi.js, three.js
+ * nor the DOM, shared by @bitphysics/render-pixi and @bitphysics/render-three (which re-export what
+ * their users need, so most code never imports this package directly).
+ *
+ * Entry points: `parseColor` (user colour input to 0xRRGGBB), `seededColor` (the per-entity colour
+ * of a seeded scene), `hslToRgb`, `hash3`.
+ */
+export { parseColor, seededColor, hslToRgb, hash3 } from './colors';
+export type { ColorInput } from './colors';
