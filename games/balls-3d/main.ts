@@ -13,7 +13,7 @@
 import { BufferAttribute, BufferGeometry, Line, LineDashedMaterial, Mesh, MeshBasicMaterial, SphereGeometry, Vector3 } from 'three';
 import { createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
 import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
-import { createPanel, flagParam, numberParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
   BOX, applyGravity, applyMaterial, balls3DWorldOptions, buildBalls3D, rayEntersBox, removeBall, spawnBall,
   type Balls3DHandles,
@@ -30,7 +30,7 @@ const search = new URLSearchParams(location.search);
 const initialCount = numberParam('count', { default: 300, min: 1, max: 10_000, integer: true });
 const params = {
   count: initialCount,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
   gravity: 9.81,
   restitution: 0.6,
   friction: 0.3,

@@ -16,7 +16,7 @@
 import { Graphics } from 'pixi.js';
 import { Rng, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
   C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, layoutHoles, predictPath, setGScale, setLightSpeed,
   setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleGame, type Predictor, type Thrust,
@@ -25,7 +25,7 @@ import {
 const search = new URLSearchParams(location.search);
 const params = {
   holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
   gScale: 1,
   c: numberParam('c', { default: C_GAME, min: 2, max: 50 }),
   thrust: numberParam('thrust', { default: 6, min: 0, max: 40 }),

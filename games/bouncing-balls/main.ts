@@ -10,7 +10,7 @@
 import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
+import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
   DRAG_MODES, applyDrag, applyGravity, applyMaterial, bouncingBallsWorldOptions, buildBouncingBalls, isHeavy, removeBall, spawnBall,
   type BouncingBallsHandles, type DragMode,
@@ -28,7 +28,7 @@ const MAX_THROW_SPEED = 30;
 const initialCount = numberParam('count', { default: 40, min: 1, max: 10_000, integer: true });
 const params = {
   count: initialCount,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
   gravity: 9.81,
   restitution: 0.8,
   friction: 0.2,

@@ -15,7 +15,7 @@
 import { Graphics } from 'pixi.js';
 import { Rng, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
   MAX_HOLD, SKY, burstScale, createFireworks, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
   setShowSparks, stepFireworks, type FireworksShow,
@@ -33,7 +33,7 @@ const params = {
   // Trails double the drawing work; the stress show starts without them (T turns them on).
   trails: search.has('trails') ? flagParam('trails') : !stress,
   additive: true,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
   opening: numberParam('opening', { default: 3, min: 0, max: 16, integer: true }),
   capacity: numberParam('capacity', { default: 60_000, min: 1000, max: 2_000_000, integer: true }),
   launch: () => randomLaunch(),

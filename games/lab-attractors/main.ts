@@ -13,7 +13,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
+import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -36,7 +36,7 @@ const url = readUrlParams(() => ({
   vortex: search.has('vortex') ? flagParam('vortex') : false,
   vortexStrength: numberParam('strength', { default: 2, min: -10, max: 10 }),
   trails: search.has('trails') ? flagParam('trails') : true,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 const params = { ...url, reset: () => shell.reset(), clear: () => clearAttractors() };
 

@@ -11,7 +11,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -29,7 +29,7 @@ const url = readUrlParams(() => ({
   intensity: numberParam('intensity', { default: 1, min: 0, max: MAX_INTENSITY }),
   wind: numberParam('wind', { default: 0, min: -6, max: 6 }),
   smoke: search.has('smoke') ? flagParam('smoke') : true,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 const params = { ...url, trails: true, additive: true, reset: () => shell.reset() };
 

@@ -22,7 +22,7 @@ import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, galaxy, setGravitation, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, createStepTimer, fmt } from './particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 
@@ -48,7 +48,7 @@ const url = readUrlParams(() => ({
   timeScale: numberParam('timescale', { default: 1, min: 0.05, max: 4 }),
   color: choiceParam('color', ['speed', 'radius'] as const, 'speed') as Coloring,
   method: choiceParam('method', ['barnes-hut', 'direct'] as const, 'barnes-hut') as 'barnes-hut' | 'direct',
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 if (url.method === 'direct' && url.count > DIRECT_LIMIT) {
   readUrlParams(() => { throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`); }, USAGE);

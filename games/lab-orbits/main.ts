@@ -17,7 +17,7 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { createPlot } from '../shared/plot';
 import {
   PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
@@ -40,7 +40,7 @@ const url = readUrlParams(() => ({
   gm: numberParam('gm', { default: ORBITS_DEFAULTS.gm, min: 1, max: 500 }),
   softening: numberParam('softening', { default: ORBITS_DEFAULTS.softening, min: 0, max: 3 }),
   integrator: choiceParam('integrator', INTEGRATOR_NAMES, ORBITS_DEFAULTS.integrator),
-  seed: numberParam('seed', { default: ORBITS_DEFAULTS.seed, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(ORBITS_DEFAULTS.seed),
 }), USAGE);
 
 const params = {

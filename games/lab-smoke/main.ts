@@ -9,7 +9,7 @@
 import { Graphics } from 'pixi.js';
 import { windAt, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam } from '../shared/index';
+import { createPanel, numberParam, seedParam } from '../shared/index';
 import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -26,7 +26,7 @@ const url = readUrlParams(() => ({
   wind: numberParam('wind', { default: 1.5, min: -10, max: 10 }),
   turbulence: numberParam('turbulence', { default: 0.8, min: 0, max: 5 }),
   buoyancy: numberParam('buoyancy', { default: 0.25, min: 0, max: 2 }),
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 const params = { ...url, reset: () => shell.reset() };
 

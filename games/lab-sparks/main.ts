@@ -11,7 +11,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -32,7 +32,7 @@ const url = readUrlParams(() => {
     angle: numberParam('angle', { default: preset.angle, min: -360, max: 360 }),
     spread: numberParam('spread', { default: preset.spread, min: 0, max: 180 }),
     speed: numberParam('speed', { default: preset.speed, min: 1, max: 40 }),
-    seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+    seed: seedParam(),
   };
 }, USAGE);
 const TRAILS = { duration: 0.09, width: 0.55, alpha: 0.8 };

@@ -12,7 +12,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -29,7 +29,7 @@ const url = readUrlParams(() => ({
   rain: numberParam('rain', { default: 6, min: 0, max: MAX_RAIN }),
   droplets: numberParam('droplets', { default: 2, min: 0, max: 20 }),
   restitution: numberParam('restitution', { default: 0.35, min: 0, max: 1 }),
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 const params = { ...url, trails: true, reset: () => shell.reset() };
 

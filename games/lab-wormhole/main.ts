@@ -13,7 +13,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
+import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive, fmt } from '../lab-galaxy/particle-kit';
 import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
 import {
@@ -35,7 +35,7 @@ const url = readUrlParams(() => ({
   horizon: numberParam('horizon', { default: 0.8, min: 0.35, max: 3 }),
   drag: numberParam('drag', { default: 0.5, min: 0, max: 3 }),
   trails: search.has('trails') ? flagParam('trails') : true,
-  seed: numberParam('seed', { default: 1, min: -2147483648, max: 4294967295, integer: true }),
+  seed: seedParam(),
 }), USAGE);
 
 const params = { ...url, trailLength: 0.12, reset: () => shell.reset() };

@@ -14,7 +14,7 @@ export { createHud } from './hud';
 export type { ControlHint, Hud, HudOptions } from './hud';
 export { createPanel } from './panel';
 export type { Panel, PanelControl, PanelOptions, SliderControl, ChoiceControl, PlainControl } from './panel';
-export { numberParam, flagParam, choiceParam } from './params';
+export { numberParam, flagParam, choiceParam, seedParam } from './params';
 export { pointerOnCanvas } from './pointer';
 export type { NumberParamOptions } from './params';
 export { createGameShell, SHELL_CONTROLS } from './shell';

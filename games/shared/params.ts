@@ -35,6 +35,15 @@ export function numberParam(name: string, options: NumberParamOptions, search: s
 }
 
 /**
+ * The `seed` query parameter: an integer in [-2^31, 2^32 - 1] (any signed or unsigned 32-bit seed),
+ * or `fallback` when absent. The seed every seeded scene of the gallery takes from its URL.
+ * @throws RangeError as `numberParam` does, naming `seed` and its text.
+ */
+export function seedParam(fallback = 1, search: string = currentSearch()): number {
+  return numberParam('seed', { default: fallback, min: -2147483648, max: 4294967295, integer: true }, search);
+}
+
+/**
  * Whether flag `name` is set: present with no value, or '1', 'true', 'yes', 'on'; '0', 'false',
  * 'no', 'off' or absent mean false.
  * @throws RangeError naming the parameter if its value is anything else.
