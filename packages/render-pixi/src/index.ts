@@ -14,14 +14,14 @@ export type { WorldRendererOptions, RendererStats } from './renderer';
 export { Camera, assertWorldRect } from './camera';
 export type { CameraOptions, WorldRect, Point2 } from './camera';
 export type { BallMode } from './balls';
-export { createBallTexture, ballTextureDiameter } from './textures';
+export { createBallTexture, ballTextureDiameter, createStreakTexture } from './textures';
 export type { BallTextureOptions } from './textures';
 export { parseColor, seededColor, hslToRgb } from '@bitphysics/render-common';
 export type { ColorInput } from '@bitphysics/render-common';
 export { resolveTrailOptions } from './trails';
 export type { TrailOptions } from './trails';
 export {
-  ParticleLayer, createSoftParticleTexture, createStreakTexture, resolveParticleLayerOptions, resolveParticleTrailOptions,
+  ParticleLayer, createSoftParticleTexture, resolveParticleLayerOptions, resolveParticleTrailOptions,
 } from './particles';
 export type {
   ParticleLayerOptions, ParticleTrailOptions, ParticleLayerStats, ResolvedParticleLayerOptions, ResolvedParticleTrailOptions,

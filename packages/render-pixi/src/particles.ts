@@ -1,7 +1,9 @@
-import { CanvasSource, Container, DOMAdapter, Particle, ParticleContainer, Texture, type ICanvas } from 'pixi.js';
+import { Container, Particle, Texture } from 'pixi.js';
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera';
+import { QuadPools } from './quads';
+import { STREAK_H, STREAK_W, radialAlphaTexture, sharedStreakTexture } from './textures';
 import { assertBoolean, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /**
@@ -160,13 +162,6 @@ export function resolveParticleLayerOptions(where: string, options: ParticleLaye
   return { blend, textureSize, minPixelSize, sizeScale, alphaScale, cull, trails, include };
 }
 
-function canvas2d(where: string, width: number, height: number): { canvas: ICanvas; ctx: CanvasRenderingContext2D } {
-  const canvas = DOMAdapter.get().createCanvas(width, height);
-  const ctx = canvas.getContext('2d') as CanvasRenderingContext2D | null;
-  if (!ctx) throw new Error(`${where}: this environment has no 2D canvas context`);
-  return { canvas, ctx };
-}
-
 /**
  * Creates the shared soft round particle texture: a white disc whose opacity falls smoothly from 1 at
  * the centre to 0 at the edge (a glow; tint multiplies it). Mipmapped, so any drawn size stays smooth.
@@ -176,64 +171,21 @@ function canvas2d(where: string, width: number, height: number): { canvas: ICanv
 export function createSoftParticleTexture(size = 64): Texture {
   const where = 'createSoftParticleTexture';
   assertInteger(where, 'size', size, 8, 512);
-  const { canvas, ctx } = canvas2d(where, size, size);
-  const c = size / 2;
-  const g = ctx.createRadialGradient(c, c, 0, c, c, c);
   // A smooth bump close to (1 - r^2)^2: bright core, soft rim, exactly 0 at the edge.
-  g.addColorStop(0, 'rgba(255,255,255,1)');
-  g.addColorStop(0.2, 'rgba(255,255,255,0.92)');
-  g.addColorStop(0.4, 'rgba(255,255,255,0.7)');
-  g.addColorStop(0.6, 'rgba(255,255,255,0.41)');
-  g.addColorStop(0.8, 'rgba(255,255,255,0.13)');
-  g.addColorStop(1, 'rgba(255,255,255,0)');
-  ctx.clearRect(0, 0, size, size);
-  ctx.fillStyle = g;
-  ctx.fillRect(0, 0, size, size);
-  return new Texture({ source: new CanvasSource({ resource: canvas, autoGenerateMipmaps: true, scaleMode: 'linear' }) });
-}
-
-/** Edge lengths of the streak texture, px. */
-const STREAK_W = 64, STREAK_H = 16;
-
-/**
- * Creates the streak texture of particle trails: opacity rising from 0 at the left (tail) to 1 at the
- * right (head), with a soft profile across. 64 x 16 px.
- * @throws Error if there is no 2D canvas.
- */
-export function createStreakTexture(): Texture {
-  const { canvas, ctx } = canvas2d('createStreakTexture', STREAK_W, STREAK_H);
-  const image = ctx.createImageData(STREAK_W, STREAK_H);
-  const d = image.data;
-  for (let y = 0; y < STREAK_H; y++) {
-    const v = (y + 0.5) / STREAK_H * 2 - 1; // -1..1 across
-    const across = Math.max(0, 1 - v * v);
-    for (let x = 0; x < STREAK_W; x++) {
-      const u = (x + 0.5) / STREAK_W; // 0 tail .. 1 head
-      const a = u * u * across;
-      const o = (y * STREAK_W + x) * 4;
-      d[o] = 255; d[o + 1] = 255; d[o + 2] = 255; d[o + 3] = Math.round(a * 255);
-    }
-  }
-  ctx.putImageData(image, 0, 0);
-  return new Texture({ source: new CanvasSource({ resource: canvas, scaleMode: 'linear' }) });
+  return radialAlphaTexture(where, size, [[0, 1], [0.2, 0.92], [0.4, 0.7], [0.6, 0.41], [0.8, 0.13], [1, 0]]);
 }
 
 /**
- * The textures every layer shares (made on first use, never destroyed: a few kilobytes, and a texture
- * destroyed while pixi's particle shader still has it bound makes pixi warn).
+ * The soft textures every layer shares, one per size (made on first use, never destroyed: a few
+ * kilobytes, and a texture destroyed while pixi's particle shader still has it bound makes pixi warn).
+ * The streak texture is shared the same way (`sharedStreakTexture` in textures.ts).
  */
 const sharedSoft = new Map<number, Texture>();
-let sharedStreak: Texture | null = null;
 
 function softTexture(size: number): Texture {
   let t = sharedSoft.get(size);
   if (!t) { t = createSoftParticleTexture(size); sharedSoft.set(size, t); }
   return t;
-}
-
-function streakTexture(): Texture {
-  if (!sharedStreak) sharedStreak = createStreakTexture();
-  return sharedStreak;
 }
 
 /**
@@ -248,14 +200,8 @@ export class ParticleLayer {
   readonly stats: ParticleLayerStats = { particles: 0, drawn: 0, trails: 0, pooled: 0, cpuMs: 0, frames: 0 };
   private opts: ResolvedParticleLayerOptions;
   private readonly texture: Texture;
-  private streakTexture: Texture | null = null;
-  private readonly sparks: ParticleContainer<Particle>;
-  private streaks: ParticleContainer<Particle> | null = null;
-  private readonly sparkPool: Particle[] = [];
-  private readonly streakPool: Particle[] = [];
-  /** Most particles each container held since its static data (texture coordinates) was last uploaded. */
-  private sparkHigh = 0;
-  private streakHigh = 0;
+  /** The spark and streak containers and their pools. */
+  private readonly quads: QuadPools;
   private terms: object[] = [];
   private capacity = -1;
   /** Per entity (only with `include`): spawn stamp the decision was made for, and the decision (1 draw). */
@@ -270,14 +216,8 @@ export class ParticleLayer {
   constructor(options: ParticleLayerOptions = {}) {
     this.opts = resolveParticleLayerOptions('ParticleLayer', options);
     this.texture = softTexture(this.opts.textureSize);
-    this.sparks = new ParticleContainer<Particle>({
-      label: 'particle-sparks',
-      texture: this.texture,
-      dynamicProperties: { position: true, vertex: true, color: true, rotation: false, uvs: false },
-    });
-    this.container.addChild(this.sparks);
-    this.applyBlend();
-    if (this.opts.trails) this.makeStreaks();
+    this.quads = new QuadPools(this.container, { main: 'particle-sparks', streaks: 'particle-trails' }, this.texture, true, this.opts.blend);
+    if (this.opts.trails) this.quads.showStreaks(true);
   }
 
   /** The options in use (resolved). */
@@ -320,7 +260,7 @@ export class ParticleLayer {
   setBlend(blend: 'normal' | 'add'): void {
     if (blend !== 'normal' && blend !== 'add') throw new RangeError(`ParticleLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
     this.opts.blend = blend;
-    this.applyBlend();
+    this.quads.setBlend(blend);
   }
 
   /**
@@ -333,8 +273,7 @@ export class ParticleLayer {
       throw new TypeError(`ParticleLayer.setTrails: options must be a boolean or an options object, got ${describe(options)}`);
     }
     this.opts.trails = options === false ? null : resolveParticleTrailOptions('ParticleLayer.setTrails', options === true ? {} : options);
-    if (this.opts.trails && !this.streaks) this.makeStreaks();
-    if (this.streaks) this.streaks.visible = this.opts.trails !== null;
+    this.quads.showStreaks(this.opts.trails !== null);
   }
 
   /**
@@ -370,7 +309,8 @@ export class ParticleLayer {
     const trailA = trails ? trails.alpha : 0, trailMin = trails ? trails.minLength : 0;
     const include = o.include;
     const spawn = world.spawnStamp, incStamp = this.includeStamp, incValue = this.includeValue;
-    const sparkPool = this.sparkPool, streakPool = this.streakPool;
+    const sparkPool = this.quads.mainPool, streakPool = this.quads.streakPool;
+    const streakTexture = trails !== null ? sharedStreakTexture() : null;
     let n = 0, k = 0, shown = 0;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
@@ -430,7 +370,7 @@ export class ParticleLayer {
         const ta = (a8 * trailA + 0.5) | 0;
         if (ta > 0) {
           let q = streakPool[k];
-          if (q === undefined) { q = this.newParticle(this.streakTexture!, 1); streakPool.push(q); }
+          if (q === undefined) { q = this.newParticle(streakTexture!, 1); streakPool.push(q); }
           k++;
           q.x = x; q.y = y;
           q.scaleX = len / STREAK_W;
@@ -440,13 +380,12 @@ export class ParticleLayer {
         }
       }
     }
-    this.sparkHigh = commit(this.sparks, sparkPool, n, this.sparkHigh);
-    if (this.streaks) this.streakHigh = commit(this.streaks, streakPool, trails !== null ? k : 0, this.streakHigh);
+    this.quads.commit(n, trails !== null ? k : 0);
     const st = this.stats;
     st.particles = shown;
     st.drawn = n;
     st.trails = trails !== null ? k : 0;
-    st.pooled = sparkPool.length + streakPool.length;
+    st.pooled = this.quads.pooled;
     st.frames++;
     st.cpuMs = performance.now() - t0;
   }
@@ -458,55 +397,14 @@ export class ParticleLayer {
   destroy(): void {
     if (this.destroyed) return;
     this.destroyed = true;
-    this.container.parent?.removeChild(this.container);
-    this.sparks.particleChildren.length = 0;
-    if (this.streaks) this.streaks.particleChildren.length = 0;
-    this.container.destroy({ children: true });
-    this.sparkPool.length = 0;
-    this.streakPool.length = 0;
+    this.quads.destroy();
   }
 
   private newParticle(texture: Texture, anchorX: number): Particle {
     return new Particle({ texture, anchorX, anchorY: 0.5 });
   }
 
-  private makeStreaks(): void {
-    this.streakTexture = streakTexture();
-    this.streaks = new ParticleContainer<Particle>({
-      label: 'particle-trails',
-      texture: this.streakTexture,
-      dynamicProperties: { position: true, vertex: true, rotation: true, color: true, uvs: false },
-    });
-    this.streaks.blendMode = this.opts.blend;
-    this.container.addChildAt(this.streaks, 0);
-  }
-
-  private applyBlend(): void {
-    this.sparks.blendMode = this.opts.blend;
-    if (this.streaks) this.streaks.blendMode = this.opts.blend;
-  }
-
   private assertAlive(where: string): void {
     if (this.destroyed) throw new Error(`ParticleLayer.${where}: the layer was destroyed`);
   }
-}
-
-/**
- * Makes `container` show pool[0..n-1]: its list holds pool[j] at index j, so only the length changes
- * (grown by pushing from the pool, cut by setting the length). When it holds more particles than at
- * its last static upload, the static data (texture coordinates) is marked for upload. Returns the new
- * high-water mark.
- */
-function commit(container: ParticleContainer<Particle>, pool: Particle[], n: number, high: number): number {
-  const list = container.particleChildren;
-  if (list.length < n) {
-    for (let j = list.length; j < n; j++) list.push(pool[j]!);
-  } else if (list.length > n) {
-    list.length = n;
-  }
-  if (n > high) {
-    container.update();
-    return n;
-  }
-  return high;
 }

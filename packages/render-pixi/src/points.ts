@@ -1,9 +1,10 @@
-import { CanvasSource, Container, DOMAdapter, Particle, ParticleContainer, Texture } from 'pixi.js';
+import { Container, Particle, Texture } from 'pixi.js';
 import { Not as notTerm, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera';
 import { parseColor, type ColorInput } from '@bitphysics/render-common';
-import { createStreakTexture } from './particles';
+import { QuadPools } from './quads';
+import { radialAlphaTexture, sharedStreakTexture } from './textures';
 import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 
 /**
@@ -230,24 +231,14 @@ export function resolvePointLayerOptions(where: string, options: PointLayerOptio
 export function createPointTexture(size = 16): Texture {
   const where = 'createPointTexture';
   assertInteger(where, 'size', size, 8, 256);
-  const canvas = DOMAdapter.get().createCanvas(size, size);
-  const ctx = canvas.getContext('2d') as CanvasRenderingContext2D | null;
-  if (!ctx) throw new Error(`${where}: this environment has no 2D canvas context`);
-  const c = size / 2;
-  const g = ctx.createRadialGradient(c, c, 0, c, c, c);
-  g.addColorStop(0, 'rgba(255,255,255,1)');
-  g.addColorStop(0.45, 'rgba(255,255,255,1)');
-  g.addColorStop(0.7, 'rgba(255,255,255,0.45)');
-  g.addColorStop(1, 'rgba(255,255,255,0)');
-  ctx.clearRect(0, 0, size, size);
-  ctx.fillStyle = g;
-  ctx.fillRect(0, 0, size, size);
-  return new Texture({ source: new CanvasSource({ resource: canvas, autoGenerateMipmaps: true, scaleMode: 'linear' }) });
+  return radialAlphaTexture(where, size, [[0, 1], [0.45, 1], [0.7, 0.45], [1, 0]]);
 }
 
-/** Shared textures, made on first use and kept (a few kilobytes; see particles.ts for why they are never destroyed). */
+/**
+ * Shared dot textures, one per size, made on first use and kept (a few kilobytes; see particles.ts for
+ * why they are never destroyed). The streak texture is shared with the particle layer (`sharedStreakTexture`).
+ */
 const dotTextures = new Map<number, Texture>();
-let streakTex: Texture | null = null;
 
 function dotTexture(size: number): Texture {
   let t = dotTextures.get(size);
@@ -269,12 +260,8 @@ export class PointLayer {
   readonly stats: PointLayerStats = { points: 0, drawn: 0, trails: 0, pooled: 0, cpuMs: 0, frames: 0 };
   private opts: ResolvedPointLayerOptions;
   private readonly texture: Texture;
-  private readonly dots: ParticleContainer<Particle>;
-  private streaks: ParticleContainer<Particle> | null = null;
-  private readonly dotPool: Particle[] = [];
-  private readonly streakPool: Particle[] = [];
-  private dotHigh = 0;
-  private streakHigh = 0;
+  /** The dot and streak containers and their pools. */
+  private readonly quads: QuadPools;
   /** Gradient as pixi colours (0xBBGGRR), LUT_SIZE entries. */
   private readonly lut = new Uint32Array(LUT_SIZE);
   private terms: object[] = [];
@@ -288,15 +275,9 @@ export class PointLayer {
   constructor(options: PointLayerOptions = {}) {
     this.opts = resolvePointLayerOptions('PointLayer', options);
     this.texture = dotTexture(this.opts.textureSize);
-    this.dots = new ParticleContainer<Particle>({
-      label: 'point-dots',
-      texture: this.texture,
-      dynamicProperties: { position: true, color: true, vertex: false, rotation: false, uvs: false },
-    });
-    this.container.addChild(this.dots);
+    this.quads = new QuadPools(this.container, { main: 'point-dots', streaks: 'point-trails' }, this.texture, false, this.opts.blend);
     this.buildLut();
-    this.applyBlend();
-    if (this.opts.trails) this.makeStreaks();
+    if (this.opts.trails) this.quads.showStreaks(true);
   }
 
   /** The options in use (resolved; colours as numbers). */
@@ -327,8 +308,9 @@ export class PointLayer {
     if (size === 0) throw new RangeError('PointLayer.setSize: size must be in (0, 64] px, got 0');
     this.opts.size = size;
     const s = size / this.opts.textureSize;
-    for (let i = 0; i < this.dotPool.length; i++) { const p = this.dotPool[i]!; p.scaleX = s; p.scaleY = s; }
-    this.dots.update();
+    const dotPool = this.quads.mainPool;
+    for (let i = 0; i < dotPool.length; i++) { const p = dotPool[i]!; p.scaleX = s; p.scaleY = s; }
+    this.quads.main.update();
   }
 
   /** Sets the opacity of every dot, in [0, 1]. @throws RangeError otherwise. */
@@ -343,7 +325,7 @@ export class PointLayer {
     this.assertAlive('setBlend');
     if (blend !== 'normal' && blend !== 'add') throw new RangeError(`PointLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
     this.opts.blend = blend;
-    this.applyBlend();
+    this.quads.setBlend(blend);
   }
 
   /**
@@ -356,8 +338,7 @@ export class PointLayer {
       throw new TypeError(`PointLayer.setTrails: options must be a boolean or an options object, got ${describe(options)}`);
     }
     this.opts.trails = options === false ? null : resolvePointTrailOptions('PointLayer.setTrails', options === true ? {} : options, this.opts.size);
-    if (this.opts.trails && !this.streaks) this.makeStreaks();
-    if (this.streaks) this.streaks.visible = this.opts.trails !== null;
+    this.quads.showStreaks(this.opts.trails !== null);
   }
 
   /**
@@ -398,10 +379,10 @@ export class PointLayer {
     const trailT = trails ? trails.duration * ppm : 0;
     const trailMin = trails ? trails.minLength : 0;
     const trailA = trails ? Math.round(a8 * trails.alpha) : 0;
-    const streakTexture = this.streakTexture();
+    const streakTexture = sharedStreakTexture();
     const sw = trails ? 1 / streakTexture.width : 0, sh = trails ? trails.width / streakTexture.height : 0;
     const dotScale = o.size / o.textureSize;
-    const dotPool = this.dotPool, streakPool = this.streakPool;
+    const dotPool = this.quads.mainPool, streakPool = this.quads.streakPool;
     let n = 0, k = 0;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
@@ -451,13 +432,12 @@ export class PointLayer {
         q.color = (((trailA << 24) | (color & 0xffffff)) >>> 0);
       }
     }
-    this.dotHigh = commit(this.dots, dotPool, n, this.dotHigh);
-    if (this.streaks) this.streakHigh = commit(this.streaks, streakPool, trails !== null ? k : 0, this.streakHigh);
+    this.quads.commit(n, trails !== null ? k : 0);
     const st = this.stats;
     st.points = ents.length;
     st.drawn = n;
     st.trails = trails !== null ? k : 0;
-    st.pooled = dotPool.length + streakPool.length;
+    st.pooled = this.quads.pooled;
     st.frames++;
     st.cpuMs = performance.now() - t0;
   }
@@ -466,32 +446,7 @@ export class PointLayer {
   destroy(): void {
     if (this.destroyed) return;
     this.destroyed = true;
-    this.container.parent?.removeChild(this.container);
-    this.dots.particleChildren.length = 0;
-    if (this.streaks) this.streaks.particleChildren.length = 0;
-    this.container.destroy({ children: true });
-    this.dotPool.length = 0;
-    this.streakPool.length = 0;
-  }
-
-  private streakTexture(): Texture {
-    if (!streakTex) streakTex = createStreakTexture();
-    return streakTex;
-  }
-
-  private makeStreaks(): void {
-    this.streaks = new ParticleContainer<Particle>({
-      label: 'point-trails',
-      texture: this.streakTexture(),
-      dynamicProperties: { position: true, vertex: true, rotation: true, color: true, uvs: false },
-    });
-    this.streaks.blendMode = this.opts.blend;
-    this.container.addChildAt(this.streaks, 0);
-  }
-
-  private applyBlend(): void {
-    this.dots.blendMode = this.opts.blend;
-    if (this.streaks) this.streaks.blendMode = this.opts.blend;
+    this.quads.destroy();
   }
 
   /** Samples the palette (or the uniform colour) into the LUT as pixi's 0xBBGGRR. */
@@ -521,22 +476,4 @@ export class PointLayer {
 /** 0xRRGGBB to pixi's 0xBBGGRR. */
 function bgr(rgb: number): number {
   return ((rgb & 255) << 16) | (rgb & 0xff00) | ((rgb >> 16) & 255);
-}
-
-/**
- * Makes `container` show pool[0..n-1] (only the list length changes); marks the static data for
- * upload when it holds more particles than at its last upload. Returns the new high-water mark.
- */
-function commit(container: ParticleContainer<Particle>, pool: Particle[], n: number, high: number): number {
-  const list = container.particleChildren;
-  if (list.length < n) {
-    for (let j = list.length; j < n; j++) list.push(pool[j]!);
-  } else if (list.length > n) {
-    list.length = n;
-  }
-  if (n > high) {
-    container.update();
-    return n;
-  }
-  return high;
 }
