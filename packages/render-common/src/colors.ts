@@ -70,3 +70,16 @@ export function seededColor(seed: number, eid: number, stamp: number, palette: r
   if (palette && palette.length > 0) return palette[h % palette.length]!;
   return hslToRgb((h % 3600) / 10, 0.62 + ((h >>> 12) % 20) / 100, 0.55 + ((h >>> 20) % 12) / 100);
 }
+
+/**
+ * Parses a renderer's `palette` option: `undefined` (no palette: seeded hues) gives null, otherwise a
+ * non-empty array of colours (each a `ColorInput`) gives them as 0xRRGGBB numbers, in order.
+ * @throws TypeError if `value` is not an array (or a colour is of the wrong type);
+ * @throws RangeError if the array is empty or a colour is out of range (`parseColor`).
+ */
+export function parsePalette(where: string, name: string, value: unknown): number[] | null {
+  if (value === undefined) return null;
+  if (!Array.isArray(value)) throw new TypeError(`${where}: ${name} must be an array of colours, got ${describe(value)}`);
+  if (value.length === 0) throw new RangeError(`${where}: ${name} must not be empty`);
+  return value.map((c, i) => parseColor(where, `${name}[${i}]`, c));
+}

@@ -4,7 +4,9 @@
  * their users need, so most code never imports this package directly).
  *
  * Entry points: `parseColor` (user colour input to 0xRRGGBB), `seededColor` (the per-entity colour
- * of a seeded scene), `hslToRgb`, `hash3`.
+ * of a seeded scene), `hslToRgb`, `hash3`, `parsePalette` (a renderer's palette option);
+ * `assertLiveEntity` (the renderers' check of an entity id argument).
  */
-export { parseColor, seededColor, hslToRgb, hash3 } from './colors';
+export { parseColor, parsePalette, seededColor, hslToRgb, hash3 } from './colors';
 export type { ColorInput } from './colors';
+export { assertLiveEntity } from './entities';

@@ -1,9 +1,9 @@
 import { Container, type Application, type Texture } from 'pixi.js';
-import { entityExists, query } from 'bitecs';
+import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { BallLayer, type BallMode } from './balls';
 import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera';
-import { parseColor, type ColorInput } from '@bitphysics/render-common';
+import { assertLiveEntity, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug';
 import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles';
 import { createBallTexture } from './textures';
@@ -188,12 +188,7 @@ export class WorldRenderer {
     assertBoolean(where, 'rotation', rotation);
     const colorSeed = options.colorSeed ?? 1;
     assertFinite(where, 'colorSeed', colorSeed);
-    let palette: number[] | null = null;
-    if (options.palette !== undefined) {
-      if (!Array.isArray(options.palette)) throw new TypeError(`${where}: palette must be an array of colours, got ${describe(options.palette)}`);
-      if (options.palette.length === 0) throw new RangeError(`${where}: palette must not be empty`);
-      palette = options.palette.map((c, i) => parseColor(where, `palette[${i}]`, c));
-    }
+    const palette = parsePalette(where, 'palette', options.palette);
     const segmentColor = parseColor(where, 'segmentColor', options.segmentColor ?? 0x8d99ae);
     const boundaryColor = parseColor(where, 'boundaryColor', options.boundaryColor ?? 0x5c677d);
     const textureSize = options.textureSize ?? 128;
@@ -479,9 +474,6 @@ export class WorldRenderer {
 
   private assertEntity(where: string, eid: number): void {
     this.assertAlive(where);
-    const w = this.worldRef;
-    if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || eid > w.capacity || !entityExists(w, eid)) {
-      throw new RangeError(`${where}: eid must be a live entity id of the world, got ${describe(eid)}`);
-    }
+    assertLiveEntity(where, this.worldRef, eid);
   }
 }

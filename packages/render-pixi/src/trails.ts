@@ -1,7 +1,8 @@
-import { CanvasSource, Container, DOMAdapter, MeshRope, Texture, type PointData } from 'pixi.js';
+import { CanvasSource, Container, MeshRope, Texture, type PointData } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { BallLayer, BallLayerListener } from './balls';
 import type { Camera } from './camera';
+import { canvas2d } from './textures';
 import { assertInRange, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /** Options of the trail layer (`WorldRendererOptions.trails`, `WorldRenderer.setTrails`). Unknown fields are rejected. */
@@ -50,9 +51,7 @@ export function resolveTrailOptions(where: string, options: TrailOptions = {}): 
  */
 function createFadeTexture(width: number, alpha: number): Texture {
   const w = 64;
-  const canvas = DOMAdapter.get().createCanvas(w, width);
-  const ctx = canvas.getContext('2d') as CanvasRenderingContext2D | null;
-  if (!ctx) throw new Error('TrailLayer: this environment has no 2D canvas context');
+  const { canvas, ctx } = canvas2d('TrailLayer', w, width);
   const gradient = ctx.createLinearGradient(0, 0, w, 0);
   gradient.addColorStop(0, 'rgba(255,255,255,0)');
   gradient.addColorStop(1, `rgba(255,255,255,${alpha})`);

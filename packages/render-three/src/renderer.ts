@@ -2,10 +2,10 @@ import {
   BoxGeometry, Group, Matrix3, Matrix4, MeshStandardMaterial, Raycaster, SphereGeometry, Vector2, Vector3,
   type BufferGeometry, type Camera, type Intersection, type Material, type Object3D,
 } from 'three';
-import { entityExists, hasComponent, query } from 'bitecs';
+import { hasComponent, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book';
-import { parseColor, seededColor, type ColorInput } from '@bitphysics/render-common';
+import { assertLiveEntity, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugFrame, type DebugOptions } from './debug';
 import { EnvironmentLayer, type BoundaryStyle } from './environment';
 import { InstanceGroup, type GroupKind } from './groups';
@@ -279,12 +279,7 @@ export class WorldRenderer3D {
     assertPositive(where, 'boxSize', boxSize);
     const colorSeed = options.colorSeed ?? 1;
     assertFinite(where, 'colorSeed', colorSeed);
-    let palette: number[] | null = null;
-    if (options.palette !== undefined) {
-      if (!Array.isArray(options.palette)) throw new TypeError(`${where}: palette must be an array of colours, got ${describe(options.palette)}`);
-      if (options.palette.length === 0) throw new RangeError(`${where}: palette must not be empty`);
-      palette = options.palette.map((c, i) => parseColor(where, `palette[${i}]`, c));
-    }
+    const palette = parsePalette(where, 'palette', options.palette);
     const shadows = options.shadows ?? true;
     assertBoolean(where, 'shadows', shadows);
     const lightOptions = options.lights === undefined || options.lights === true ? resolveLightOptions(where, {})
@@ -922,9 +917,6 @@ export class WorldRenderer3D {
 
   private assertEntity(where: string, eid: number): void {
     this.assertAlive(where.slice(where.indexOf('.') + 1));
-    const w = this.worldRef;
-    if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || eid > w.capacity || !entityExists(w, eid)) {
-      throw new RangeError(`${where}: eid must be a live entity id of the world, got ${describe(eid)}`);
-    }
+    assertLiveEntity(where, this.worldRef, eid);
   }
 }
