@@ -1,12 +1,12 @@
 /**
  * The pixi-specific part of the game shell: the Application sized to the window, and
- * `startPixiGame`, which joins a `WorldRenderer` to the renderer-agnostic `createGameShell`.
- * 3D games use `createGameShell` directly with a three.js render function instead.
+ * `startPixiGame`, which joins a `WorldRenderer` to the renderer-agnostic shell through
+ * `createRenderedShell` (as './three' does for 3D games).
  */
 import { Application, type ColorSource } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
-import { createGameShell, type GameShell, type GameShellOptions } from './shell';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {
@@ -79,19 +79,9 @@ export interface PixiGame {
 export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame> {
   const { renderer: rendererOptions, app: appOptions, onFrame, ...shellOptions } = options;
   const app = await createPixiApp(appOptions);
-  let renderer: WorldRenderer | null = null;
-  const shell = createGameShell({
-    ...shellOptions,
-    render: (alpha, world) => {
-      if (!renderer) return;
-      renderer.render(alpha);
-      onFrame?.(alpha, world);
-      app.render();
-    },
-  });
-  const worldRenderer = new WorldRenderer(shell.world, { ...rendererOptions, app });
-  renderer = worldRenderer;
-  shell.onWorldChange((world) => worldRenderer.setWorld(world));
+  const { shell, renderer: worldRenderer } = createRenderedShell(
+    shellOptions, (world) => new WorldRenderer(world, { ...rendererOptions, app }), () => app.render(), onFrame,
+  );
   const exposed = shell.expose({ renderer: worldRenderer, app });
   shell.start();
   return { shell: exposed, app, renderer: worldRenderer };

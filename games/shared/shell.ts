@@ -187,3 +187,41 @@ export function createGameShell(options: GameShellOptions): GameShell {
   });
   return shell;
 }
+
+/** What `createRenderedShell` needs of a world renderer (render-pixi's WorldRenderer, render-three's WorldRenderer3D). */
+export interface WorldView {
+  /** Places the world's display objects for interpolation factor `alpha` in [0, 1]. */
+  render(alpha: number): void;
+  /** Shows `world` from now on (after a reset). */
+  setWorld(world: PhysicsWorld): void;
+}
+
+/**
+ * The part `startPixiGame` and `startThreeGame` share: a shell whose frames are drawn by the world
+ * renderer `createRenderer(shell.world)` makes. Each frame the renderer places its objects for alpha,
+ * `onFrame` draws extras, `present()` shows the frame (frames before the renderer exists draw nothing);
+ * after a reset the renderer follows the new world. Neither exposed nor started: the caller adds its
+ * fields with `shell.expose` and calls `shell.start()`.
+ * @throws whatever createGameShell or `createRenderer` throws.
+ */
+export function createRenderedShell<R extends WorldView>(
+  options: Omit<GameShellOptions, 'render'>,
+  createRenderer: (world: PhysicsWorld) => R,
+  present: () => void,
+  onFrame?: (alpha: number, world: PhysicsWorld) => void,
+): { shell: GameShell; renderer: R } {
+  let renderer: R | null = null;
+  const shell = createGameShell({
+    ...options,
+    render: (alpha, world) => {
+      if (!renderer) return;
+      renderer.render(alpha);
+      onFrame?.(alpha, world);
+      present();
+    },
+  });
+  const worldRenderer = createRenderer(shell.world);
+  renderer = worldRenderer;
+  shell.onWorldChange((world) => worldRenderer.setWorld(world));
+  return { shell, renderer: worldRenderer };
+}

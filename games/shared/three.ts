@@ -2,7 +2,8 @@
  * The three.js part of the game shell (the 3D counterpart of './pixi'): `createThreeApp` makes a
  * WebGL renderer whose canvas fills the window, a scene, a perspective camera with orbit controls
  * (three's own OrbitControls addon) and resize handling; `startThreeGame` joins a `WorldRenderer3D`
- * to the renderer-agnostic `createGameShell` (page contract, fixed-step loop, P / N / R keys, HUD).
+ * to the renderer-agnostic shell (page contract, fixed-step loop, P / N / R keys, HUD) through
+ * `createRenderedShell`, as './pixi' does.
  * 2D games never load this file, so they never load three.js.
  */
 import {
@@ -11,7 +12,7 @@ import {
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer3D, createOrbitControls, frameBox, type OrbitOptions, type WorldRenderer3DOptions } from '@bitphysics/render-three';
-import { createGameShell, type GameShell, type GameShellOptions } from './shell';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 import type { ControlHint } from './hud';
 
 /** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
@@ -234,19 +235,9 @@ export interface ThreeGame {
 export async function startThreeGame(options: ThreeGameOptions): Promise<ThreeGame> {
   const { renderer: rendererOptions, app: appOptions, onFrame, view, viewDirection, ...shellOptions } = options;
   const app = createThreeApp(appOptions);
-  let renderer: WorldRenderer3D | null = null;
-  const shell = createGameShell({
-    ...shellOptions,
-    render: (alpha, world) => {
-      if (!renderer) return;
-      renderer.render(alpha);
-      onFrame?.(alpha, world);
-      app.render();
-    },
-  });
-  const worldRenderer = new WorldRenderer3D(shell.world, { ...rendererOptions, scene: app.scene });
-  renderer = worldRenderer;
-  shell.onWorldChange((world) => worldRenderer.setWorld(world));
+  const { shell, renderer: worldRenderer } = createRenderedShell(
+    shellOptions, (world) => new WorldRenderer3D(world, { ...rendererOptions, scene: app.scene }), () => app.render(), onFrame,
+  );
   const v = view === undefined ? 'boundary' : view;
   if (v !== null) {
     const k = worldRenderer.unitsPerMeter;
