@@ -473,7 +473,7 @@ export class WorldRenderer {
   }
 
   private assertEntity(where: string, eid: number): void {
-    this.assertAlive(where);
+    this.assertAlive(where.replace(/^WorldRenderer\./, ''));
     assertLiveEntity(where, this.worldRef, eid);
   }
 }
