@@ -1,9 +1,9 @@
 import { parseArgs } from 'node:util';
-import { UsageError } from './errors';
-import { ENGINES, OURS } from './engines/index';
-import { sceneNames } from './scenes/index';
-import { catalogEntry, catalogNames, paramDeclarations } from './catalog';
-import { describeParam, parseParamValue } from './params';
+import { UsageError } from './errors.js';
+import { ENGINES, OURS } from './engines/index.js';
+import { sceneNames } from './scenes/index.js';
+import { catalogEntry, catalogNames, paramDeclarations } from './catalog.js';
+import { describeParam, parseParamValue } from './params.js';
 
 /** The command line, parsed and checked. */
 export interface BenchArgs {

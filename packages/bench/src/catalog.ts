@@ -1,6 +1,6 @@
-import type { SceneParam } from './scenes/types';
-import { resolveScene, sceneNames } from './scenes/index';
-import { resolveStudy, STUDIES } from './studies/index';
+import type { SceneParam } from './scenes/types.js';
+import { resolveScene, sceneNames } from './scenes/index.js';
+import { resolveStudy, STUDIES } from './studies/index.js';
 
 /**
  * Everything `--scene` accepts, seen the same way: the physics package's scenes (run by the engines,

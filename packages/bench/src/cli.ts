@@ -15,15 +15,15 @@
 import { realpathSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import cliProgress from 'cli-progress';
-import { DEFAULTS, parseBenchArgs, USAGE, type BenchArgs } from './args';
-import { UsageError, USAGE_EXIT_CODE } from './errors';
-import { ENGINES, enginesFor, OURS } from './engines/index';
-import { resolveScene } from './scenes/index';
-import { resolveStudy } from './studies/index';
-import { catalogEntry, catalogNames } from './catalog';
-import { describeParam } from './params';
-import { runBenchmark, SceneBuildError } from './runner';
-import { humanReport, jsonRecords, studyReport, table } from './report';
+import { DEFAULTS, parseBenchArgs, USAGE, type BenchArgs } from './args.js';
+import { UsageError, USAGE_EXIT_CODE } from './errors.js';
+import { ENGINES, enginesFor, OURS } from './engines/index.js';
+import { resolveScene } from './scenes/index.js';
+import { resolveStudy } from './studies/index.js';
+import { catalogEntry, catalogNames } from './catalog.js';
+import { describeParam } from './params.js';
+import { runBenchmark, SceneBuildError } from './runner.js';
+import { humanReport, jsonRecords, studyReport, table } from './report.js';
 
 /** Where the CLI writes: injectable so the CLI can run inside another program. */
 export interface CliIO {

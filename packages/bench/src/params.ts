@@ -1,5 +1,5 @@
-import type { SceneParam } from './scenes/types';
-import { UsageError } from './errors';
+import type { SceneParam } from './scenes/types.js';
+import { UsageError } from './errors.js';
 
 /**
  * Parses and checks the value of a scene parameter flag: a finite decimal number (underscores allowed

@@ -1,7 +1,7 @@
-import { OURS } from './engines/index';
-import type { BenchResult, EngineResult } from './runner';
-import type { BenchScene, ExtraValue } from './scenes/types';
-import type { StudyResult } from './studies/types';
+import { OURS } from './engines/index.js';
+import type { BenchResult, EngineResult } from './runner.js';
+import type { BenchScene, ExtraValue } from './scenes/types.js';
+import type { StudyResult } from './studies/types.js';
 
 /** A peer's time ratio against our engine. */
 export interface Ratio {

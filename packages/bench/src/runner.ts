@@ -1,9 +1,9 @@
 import { availableParallelism, loadavg } from 'node:os';
 import { performance } from 'node:perf_hooks';
-import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types';
-import type { BenchScene, ExtraValue } from './scenes/types';
-import { summarize, type TimeSummary } from './stats';
-import { collectGarbage, sampleMemory } from './memory';
+import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types.js';
+import type { BenchScene, ExtraValue } from './scenes/types.js';
+import { summarize, type TimeSummary } from './stats.js';
+import { collectGarbage, sampleMemory } from './memory.js';
 
 /**
  * An engine failed to build the scene (the scene rejected the options, or the engine failed).

@@ -1,10 +1,10 @@
 import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from './world';
-import { setInertia } from './rigid';
-import { wakeIsland } from './collision/sleep';
+import type { PhysicsWorld } from './world.js';
+import { setInertia } from './rigid.js';
+import { wakeIsland } from './collision/sleep.js';
 import {
   assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
-} from './validate';
+} from './validate.js';
 
 /**
  * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of

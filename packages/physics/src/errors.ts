@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from './world';
+import type { PhysicsWorld } from './world.js';
 
 /**
  * Thrown by `step` when a body's state becomes NaN or infinite. It is a RangeError so callers that

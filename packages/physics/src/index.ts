@@ -2,86 +2,86 @@
  * @bitphysics/physics: components, systems, the staged step, collisions, diagnostics and scenes.
  * Everything is SI (m, kg, s, rad, N), y up, angles counter-clockwise.
  */
-export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY } from './world';
-export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world';
-export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components';
-export type { Components, Vec3Store } from './components';
+export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY } from './world.js';
+export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
+export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
+export type { Components, Vec3Store } from './components.js';
 export {
   createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,
   setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse, setGravity, setTimeStep,
   setAngularVelocity, setOrientation,
-} from './bodies';
-export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies';
+} from './bodies.js';
+export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies.js';
 export {
   inertiaOfSolidSphere, inertiaOfSphericalShell, inertiaOfSolidBox, inertiaOfSolidCylinder, inertiaOfDisc, inertiaOfRectangle,
   setInertia, applyForceAtPoint, applyImpulseAtPoint, spinAngularMomentum, spinKineticEnergy, setAngularDamping, addPlane,
-} from './rigid';
-export type { PlaneOptions } from './rigid';
-export { rotateVector, rotateVectorInverse, rotateFrom, rotateInPlace } from './math/quaternion';
-export { eulerAcceleration } from './integrators/euler-equations';
-export { angularDampingSystem } from './forces/angular-damping';
-export { STAGES, SUBSTEP_STAGES, PIPELINE } from './pipeline/stages';
-export type { StageName, System } from './pipeline/stages';
-export { step, stepMany, evaluateForces, addSystem, removeSystem } from './pipeline/step';
-export type { AddSystemOptions } from './pipeline/step';
-export { createFixedStepLoop } from './pipeline/loop';
-export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop';
-export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names';
-export type { IntegratorName } from './integrators/names';
-export { INTEGRATORS, integrateSystem } from './integrators/integrate';
-export type { Integrator } from './integrators/integrate';
-export { clearForcesSystem } from './forces/clear';
-export { linearDragSystem, quadraticDragSystem } from './forces/drag';
-export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase';
-export { narrowphaseSystem, currentSeparation } from './collision/narrowphase';
-export { contactSolverSystem } from './collision/solver';
-export { sleepSystem, wakeSystem, wakeBody, wakeAll, wakeIsland, isSleeping } from './collision/sleep';
-export type { SleepState } from './collision/state';
-export { ContactKind } from './collision/contacts';
-export type { ContactBuffer } from './collision/contacts';
-export type { CollisionState, CollisionSettings, Boundary } from './collision/state';
+} from './rigid.js';
+export type { PlaneOptions } from './rigid.js';
+export { rotateVector, rotateVectorInverse, rotateFrom, rotateInPlace } from './math/quaternion.js';
+export { eulerAcceleration } from './integrators/euler-equations.js';
+export { angularDampingSystem } from './forces/angular-damping.js';
+export { STAGES, SUBSTEP_STAGES, PIPELINE } from './pipeline/stages.js';
+export type { StageName, System } from './pipeline/stages.js';
+export { step, stepMany, evaluateForces, addSystem, removeSystem } from './pipeline/step.js';
+export type { AddSystemOptions } from './pipeline/step.js';
+export { createFixedStepLoop } from './pipeline/loop.js';
+export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop.js';
+export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names.js';
+export type { IntegratorName } from './integrators/names.js';
+export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
+export type { Integrator } from './integrators/integrate.js';
+export { clearForcesSystem } from './forces/clear.js';
+export { linearDragSystem, quadraticDragSystem } from './forces/drag.js';
+export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js';
+export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
+export { contactSolverSystem } from './collision/solver.js';
+export { sleepSystem, wakeSystem, wakeBody, wakeAll, wakeIsland, isSleeping } from './collision/sleep.js';
+export type { SleepState } from './collision/state.js';
+export { ContactKind } from './collision/contacts.js';
+export type { ContactBuffer } from './collision/contacts.js';
+export type { CollisionState, CollisionSettings, Boundary } from './collision/state.js';
 export {
   kineticEnergy, gravitationalPotentialEnergy, newtonianPotentialEnergy, springPotentialEnergy, electricPotentialEnergy,
   centralPotentialEnergy, potentialEnergy, contactSpringEnergy, totalEnergy, linearMomentum, angularMomentum,
   contactCount, stageTimings,
-} from './diagnostics/energy';
-export { createRecorder } from './diagnostics/recorder';
-export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder';
+} from './diagnostics/energy.js';
+export { createRecorder } from './diagnostics/recorder.js';
+export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder.js';
 export {
   setGravityScale, enableMutualGravity, setAttractor, setCharge, addElectricField, addMagneticField, setCentralForce,
   setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust, setVortex,
-} from './forces/api';
-export { vortexSystem } from './forces/vortex';
+} from './forces/api.js';
+export { vortexSystem } from './forces/vortex.js';
 export {
   addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
   EmitterShape, CapacityPolicy,
-} from './particles/emitter';
-export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter';
-export type { FieldOptions, BuoyancyOptions, SpringOptions } from './forces/api';
+} from './particles/emitter.js';
+export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
+export type { FieldOptions, BuoyancyOptions, SpringOptions } from './forces/api.js';
 export {
   G_SI, COULOMB_SI, MAX_WIND_MODES, setGravitation, setElectrostatics, setWind, windAt,
-} from './forces/settings';
-export type { ForceLawSettings, WindField, WindOptions, GravitationOptions, GravityMethod } from './forces/settings';
-export type { ForceLaw } from './forces/law';
-export { gravityScaleSystem, mutualGravitySystem, attractorSystem } from './forces/gravity';
-export { coulombSystem, lorentzSystem, fieldsAt } from './forces/electromagnetism';
-export { centralForceSystem } from './forces/central';
-export { liftSystem } from './forces/drag';
-export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid';
-export { springSystem } from './forces/spring';
-export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving';
-export { thrustSystem, burnFuelSystem } from './forces/thrust';
+} from './forces/settings.js';
+export type { ForceLawSettings, WindField, WindOptions, GravitationOptions, GravityMethod } from './forces/settings.js';
+export type { ForceLaw } from './forces/law.js';
+export { gravityScaleSystem, mutualGravitySystem, attractorSystem } from './forces/gravity.js';
+export { coulombSystem, lorentzSystem, fieldsAt } from './forces/electromagnetism.js';
+export { centralForceSystem } from './forces/central.js';
+export { liftSystem } from './forces/drag.js';
+export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid.js';
+export { springSystem } from './forces/spring.js';
+export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving.js';
+export { thrustSystem, burnFuelSystem } from './forces/thrust.js';
 export {
   buildTree, treeField, treeFields, treeFieldsSorted, worldTree, worldTreeFields, barnesHutGravity,
-} from './forces/barnes-hut';
+} from './forces/barnes-hut.js';
 export {
   directField, sampleIndices, fieldErrorStats, gravityFieldError, forceErrorMedian, gravityMomentumRate,
-} from './forces/gravity-accuracy';
-export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy';
-export type { GravityTree } from './forces/barnes-hut';
-export { NonFiniteStateError } from './errors';
-export { Rng } from './rng';
-export { query, Not } from './query';
+} from './forces/gravity-accuracy.js';
+export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy.js';
+export type { GravityTree } from './forces/barnes-hut.js';
+export { NonFiniteStateError } from './errors.js';
+export { Rng } from './rng.js';
+export { query, Not } from './query.js';
 /** Whether an entity id is alive in the world (bitecs' entityExists). */
 export { entityExists, hasComponent } from 'bitecs';
-export * from './scenes/index';
+export * from './scenes/index.js';

@@ -1,10 +1,10 @@
 import { addComponent, entityExists, hasComponent } from 'bitecs';
-import type { PhysicsWorld } from './world';
-import { addComponentIfMissing } from './world';
-import { createEntity } from './bodies';
-import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
-import { rotateVector, rotateVectorInverse } from './math/quaternion';
-import { wakeIsland } from './collision/sleep';
+import type { PhysicsWorld } from './world.js';
+import { addComponentIfMissing } from './world.js';
+import { createEntity } from './bodies.js';
+import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
+import { rotateVector, rotateVectorInverse } from './math/quaternion.js';
+import { wakeIsland } from './collision/sleep.js';
 
 /**
  * Rigid-body rotation helpers: moments of inertia of standard solids, setting a body's inertia,

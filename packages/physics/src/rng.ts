@@ -1,4 +1,4 @@
-import { assertFinite, assertInteger } from './validate';
+import { assertFinite, assertInteger } from './validate.js';
 
 /**
  * Seeded pseudo-random numbers for deterministic scenes, emitters and turbulence.

@@ -1,13 +1,13 @@
 import { addComponent, createEntityIndex, createWorld, hasComponent, observe, onAdd, type World } from 'bitecs';
-import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore, type Components } from './components';
-import { createCollisionState, type CollisionState } from './collision/state';
-import { createStages, type StageName, type System, STAGES } from './pipeline/stages';
-import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names';
-import { Rng } from './rng';
-import { createForceLawSettings, type ForceLawSettings } from './forces/settings';
-import { removeSpringsOf } from './forces/spring';
-import { wakeTouching } from './collision/sleep';
-import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate';
+import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore, type Components } from './components.js';
+import { createCollisionState, type CollisionState } from './collision/state.js';
+import { createStages, type StageName, type System, STAGES } from './pipeline/stages.js';
+import { INTEGRATOR_NAMES, type IntegratorName } from './integrators/names.js';
+import { Rng } from './rng.js';
+import { createForceLawSettings, type ForceLawSettings } from './forces/settings.js';
+import { removeSpringsOf } from './forces/spring.js';
+import { wakeTouching } from './collision/sleep.js';
+import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
 export interface PhysicsWorldOptions {

@@ -7,6 +7,6 @@
  * of a seeded scene), `hslToRgb`, `hash3`, `parsePalette` (a renderer's palette option);
  * `assertLiveEntity` (the renderers' check of an entity id argument).
  */
-export { parseColor, parsePalette, seededColor, hslToRgb, hash3 } from './colors';
-export type { ColorInput } from './colors';
-export { assertLiveEntity } from './entities';
+export { parseColor, parsePalette, seededColor, hslToRgb, hash3 } from './colors.js';
+export type { ColorInput } from './colors.js';
+export { assertLiveEntity } from './entities.js';

@@ -1,9 +1,9 @@
 import { Container, Particle, ParticleContainer, Sprite, type Texture } from 'pixi.js';
 import { hasComponent, Not, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Camera, Point2 } from './camera';
+import type { Camera, Point2 } from './camera.js';
 import { seededColor } from '@bitphysics/render-common';
-import { ballTextureDiameter } from './textures';
+import { ballTextureDiameter } from './textures.js';
 
 /**
  * How balls are drawn:

@@ -1,8 +1,8 @@
 import { Graphics } from 'pixi.js';
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { BallLayer } from './balls';
-import type { Camera } from './camera';
+import type { BallLayer } from './balls.js';
+import type { Camera } from './camera.js';
 import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */

@@ -9,23 +9,23 @@
  * also the renderer's `particles` option), `Camera` (metres <-> pixels, no pixi inside),
  * `createBallTexture` (the shared circle texture), colour helpers.
  */
-export { WorldRenderer } from './renderer';
-export type { WorldRendererOptions, RendererStats } from './renderer';
-export { Camera, assertWorldRect } from './camera';
-export type { CameraOptions, WorldRect, Point2 } from './camera';
-export type { BallMode } from './balls';
-export { createBallTexture, ballTextureDiameter, createStreakTexture } from './textures';
-export type { BallTextureOptions } from './textures';
+export { WorldRenderer } from './renderer.js';
+export type { WorldRendererOptions, RendererStats } from './renderer.js';
+export { Camera, assertWorldRect } from './camera.js';
+export type { CameraOptions, WorldRect, Point2 } from './camera.js';
+export type { BallMode } from './balls.js';
+export { createBallTexture, ballTextureDiameter, createStreakTexture } from './textures.js';
+export type { BallTextureOptions } from './textures.js';
 export { parseColor, seededColor, hslToRgb } from '@bitphysics/render-common';
 export type { ColorInput } from '@bitphysics/render-common';
-export { resolveTrailOptions } from './trails';
-export type { TrailOptions } from './trails';
+export { resolveTrailOptions } from './trails.js';
+export type { TrailOptions } from './trails.js';
 export {
   ParticleLayer, createSoftParticleTexture, resolveParticleLayerOptions, resolveParticleTrailOptions,
-} from './particles';
+} from './particles.js';
 export type {
   ParticleLayerOptions, ParticleTrailOptions, ParticleLayerStats, ResolvedParticleLayerOptions, ResolvedParticleTrailOptions,
-} from './particles';
-export { resolveDebugOptions } from './debug';
-export type { DebugOptions } from './debug';
-export * from './points';
+} from './particles.js';
+export { resolveDebugOptions } from './debug.js';
+export type { DebugOptions } from './debug.js';
+export * from './points.js';

@@ -1,9 +1,9 @@
 import { Container, Particle, Texture } from 'pixi.js';
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Camera } from './camera';
-import { QuadPools } from './quads';
-import { STREAK_H, STREAK_W, radialAlphaTexture, sharedStreakTexture } from './textures';
+import type { Camera } from './camera.js';
+import { QuadPools } from './quads.js';
+import { STREAK_H, STREAK_W, radialAlphaTexture, sharedStreakTexture } from './textures.js';
 import { assertBoolean, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /**

@@ -1,10 +1,10 @@
 import { Container, Particle, Texture } from 'pixi.js';
 import { Not as notTerm, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Camera } from './camera';
+import type { Camera } from './camera.js';
 import { parseColor, type ColorInput } from '@bitphysics/render-common';
-import { QuadPools } from './quads';
-import { radialAlphaTexture, sharedStreakTexture } from './textures';
+import { QuadPools } from './quads.js';
+import { radialAlphaTexture, sharedStreakTexture } from './textures.js';
 import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 
 /**

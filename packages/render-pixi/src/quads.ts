@@ -1,5 +1,5 @@
 import { Container, Particle, ParticleContainer, Texture } from 'pixi.js';
-import { sharedStreakTexture } from './textures';
+import { sharedStreakTexture } from './textures.js';
 
 /**
  * The display side that the particle layer (particles.ts) and the point layer (points.ts) share: a

@@ -1,14 +1,14 @@
 import { Container, type Application, type Texture } from 'pixi.js';
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { BallLayer, type BallMode } from './balls';
-import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera';
+import { BallLayer, type BallMode } from './balls.js';
+import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera.js';
 import { assertLiveEntity, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug';
-import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles';
-import { createBallTexture } from './textures';
-import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails';
-import { WallLayer } from './walls';
+import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug.js';
+import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles.js';
+import { createBallTexture } from './textures.js';
+import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
+import { WallLayer } from './walls.js';
 import { assertBoolean, assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /** Options of `new WorldRenderer`. Every field is optional; unknown fields are rejected. */

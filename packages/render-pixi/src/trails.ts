@@ -1,8 +1,8 @@
 import { CanvasSource, Container, MeshRope, Texture, type PointData } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { BallLayer, BallLayerListener } from './balls';
-import type { Camera } from './camera';
-import { canvas2d } from './textures';
+import type { BallLayer, BallLayerListener } from './balls.js';
+import type { Camera } from './camera.js';
+import { canvas2d } from './textures.js';
 import { assertInRange, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /** Options of the trail layer (`WorldRendererOptions.trails`, `WorldRenderer.setTrails`). Unknown fields are rejected. */

@@ -1,7 +1,7 @@
 import { Graphics } from 'pixi.js';
 import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Camera } from './camera';
+import type { Camera } from './camera.js';
 
 /**
  * Walls: static segments (entities with Segment, drawn as round-capped lines as thick as their

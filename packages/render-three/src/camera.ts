@@ -1,7 +1,7 @@
 import { MOUSE, TOUCH, Vector3, type PerspectiveCamera } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { assertBoolean, assertKnownKeys, assertPositive, describe } from '@bitphysics/physics/validate';
-import { assertVector } from './validate';
+import { assertVector } from './validate.js';
 
 /** Options of `createOrbitControls`. Every field optional; unknown fields are rejected. */
 export interface OrbitOptions {

@@ -1,7 +1,7 @@
 import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMaterial, LineSegments, Points, PointsMaterial } from 'three';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { InstanceBook } from './book';
-import { hexToLinear, rotateInto } from './math';
+import type { InstanceBook } from './book.js';
+import { hexToLinear, rotateInto } from './math.js';
 import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */

@@ -11,25 +11,25 @@
  * physical vectors), `createLights`; and the three.js-free parts: `InstanceBook` (entity to
  * instance bookkeeping), the interpolation maths, colours.
  */
-export { WorldRenderer3D } from './renderer';
-export type { WorldRenderer3DOptions, BodyShape, Renderer3DStats, PickResult } from './renderer';
-export { InstanceBook, MAX_GROUPS } from './book';
-export type { InstanceBookListener } from './book';
-export { InstanceGroup } from './groups';
-export type { GroupKind } from './groups';
-export { TrailLayer, resolveTrailOptions, MAX_TRAIL_POINTS } from './trails';
-export type { TrailOptions, ResolvedTrailOptions } from './trails';
-export { DebugLayer, resolveDebugOptions } from './debug';
-export type { DebugOptions, ResolvedDebugOptions, DebugFrame } from './debug';
-export { EnvironmentLayer } from './environment';
-export type { BoundaryStyle, EnvironmentStyle } from './environment';
-export { LightRig, createLights, resolveLightOptions } from './lights';
-export type { LightOptions, ResolvedLightOptions } from './lights';
-export { VectorArrow } from './arrow';
-export type { VectorArrowOptions } from './arrow';
-export { createOrbitControls, frameBox } from './camera';
-export type { OrbitOptions, FrameOptions } from './camera';
-export { slerpInto, rotateBack, composeInto, rotateInto, equivalentBoxEdges, hexToLinear } from './math';
-export type { NumberArray } from './math';
+export { WorldRenderer3D } from './renderer.js';
+export type { WorldRenderer3DOptions, BodyShape, Renderer3DStats, PickResult } from './renderer.js';
+export { InstanceBook, MAX_GROUPS } from './book.js';
+export type { InstanceBookListener } from './book.js';
+export { InstanceGroup } from './groups.js';
+export type { GroupKind } from './groups.js';
+export { TrailLayer, resolveTrailOptions, MAX_TRAIL_POINTS } from './trails.js';
+export type { TrailOptions, ResolvedTrailOptions } from './trails.js';
+export { DebugLayer, resolveDebugOptions } from './debug.js';
+export type { DebugOptions, ResolvedDebugOptions, DebugFrame } from './debug.js';
+export { EnvironmentLayer } from './environment.js';
+export type { BoundaryStyle, EnvironmentStyle } from './environment.js';
+export { LightRig, createLights, resolveLightOptions } from './lights.js';
+export type { LightOptions, ResolvedLightOptions } from './lights.js';
+export { VectorArrow } from './arrow.js';
+export type { VectorArrowOptions } from './arrow.js';
+export { createOrbitControls, frameBox } from './camera.js';
+export type { OrbitOptions, FrameOptions } from './camera.js';
+export { slerpInto, rotateBack, composeInto, rotateInto, equivalentBoxEdges, hexToLinear } from './math.js';
+export type { NumberArray } from './math.js';
 export { parseColor, seededColor, hslToRgb, hash3 } from '@bitphysics/render-common';
 export type { ColorInput } from '@bitphysics/render-common';

@@ -1,7 +1,7 @@
 import { AmbientLight, DirectionalLight, Group, HemisphereLight, Vector3 } from 'three';
 import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { assertBoolean, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
-import { assertVector } from './validate';
+import { assertVector } from './validate.js';
 
 /** Options of `createLights` (and `WorldRenderer3DOptions.lights`). Every field optional; unknown fields are rejected. */
 export interface LightOptions {

@@ -4,18 +4,18 @@ import {
 } from 'three';
 import { hasComponent, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { InstanceBook, type InstanceBookListener } from './book';
+import { InstanceBook, type InstanceBookListener } from './book.js';
 import { assertLiveEntity, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugFrame, type DebugOptions } from './debug';
-import { EnvironmentLayer, type BoundaryStyle } from './environment';
-import { InstanceGroup, type GroupKind } from './groups';
-import { LightRig, resolveLightOptions, type LightOptions } from './lights';
-import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math';
-import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails';
+import { DebugLayer, resolveDebugOptions, type DebugFrame, type DebugOptions } from './debug.js';
+import { EnvironmentLayer, type BoundaryStyle } from './environment.js';
+import { InstanceGroup, type GroupKind } from './groups.js';
+import { LightRig, resolveLightOptions, type LightOptions } from './lights.js';
+import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math.js';
+import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
 import {
   assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe,
 } from '@bitphysics/physics/validate';
-import { assertVector } from './validate';
+import { assertVector } from './validate.js';
 
 /** Options of `new WorldRenderer3D`. Every field is optional; unknown fields are rejected. */
 export interface WorldRenderer3DOptions {

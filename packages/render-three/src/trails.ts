@@ -1,6 +1,6 @@
 import { BufferAttribute, BufferGeometry, DynamicDrawUsage, LineBasicMaterial, LineSegments } from 'three';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { hexToLinear } from './math';
+import { hexToLinear } from './math.js';
 import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative } from '@bitphysics/physics/validate';
 
 /** Options of the trail layer (`WorldRenderer3DOptions.trails`, `WorldRenderer3D.setTrails`). Unknown fields are rejected. */

@@ -1,7 +1,7 @@
 import { query } from 'bitecs';
 import { contactCount, createPhysicsWorld, SCENES, step, type PhysicsWorld } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
-import { resolveScene } from '../scenes/index';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
+import { resolveScene } from '../scenes/index.js';
 
 /**
  * Our engine: any scene of the physics package's `SCENES` registry, built by the scene's own

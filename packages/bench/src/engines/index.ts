@@ -1,9 +1,9 @@
-import type { EngineAdapter } from './types';
-import { bitphysicsEngine } from './bitphysics';
-import { rapier2dEngine } from './rapier2d';
-import { rapier3dEngine } from './rapier3d';
-import { matterEngine } from './matter';
-import { plainLoopEngine } from './plain-loop';
+import type { EngineAdapter } from './types.js';
+import { bitphysicsEngine } from './bitphysics.js';
+import { rapier2dEngine } from './rapier2d.js';
+import { rapier3dEngine } from './rapier3d.js';
+import { matterEngine } from './matter.js';
+import { plainLoopEngine } from './plain-loop.js';
 
 /** Our engine's name; it runs in every benchmark and is the numerator of every ratio. */
 export const OURS = 'bitphysics';
@@ -22,4 +22,4 @@ export function enginesFor(scene: string): string[] {
   return Object.values(ENGINES).filter((e) => e.supports(scene)).map((e) => e.name);
 }
 
-export type { EngineAdapter, EngineInstance, EngineStats, BodySnapshot, SceneRunOptions } from './types';
+export type { EngineAdapter, EngineInstance, EngineStats, BodySnapshot, SceneRunOptions } from './types.js';

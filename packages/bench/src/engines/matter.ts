@@ -1,6 +1,6 @@
 import { ballsInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
-import { boxWalls } from './box-walls';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
+import { boxWalls } from './box-walls.js';
 
 type MatterModule = typeof import('matter-js');
 

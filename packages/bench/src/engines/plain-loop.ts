@@ -1,5 +1,5 @@
 import { particlesLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 /** Fixed step of the baseline, s (the physics world's default). */
 const DT = 1 / 60;

@@ -1,7 +1,7 @@
 import { setFlagsFromString } from 'node:v8';
 import { ballsInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
-import { boxWalls } from './box-walls';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
+import { boxWalls } from './box-walls.js';
 
 type Rapier = typeof import('@dimforge/rapier2d-compat').default;
 

@@ -1,7 +1,7 @@
 import { spheresInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types';
-import { boxWalls3d } from './box-walls';
-import { optimizedWasm } from './rapier2d';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
+import { boxWalls3d } from './box-walls.js';
+import { optimizedWasm } from './rapier2d.js';
 
 type Rapier = typeof import('@dimforge/rapier3d-compat').default;
 

@@ -1,6 +1,6 @@
 import { ballsInBoxLayout, type BallsInBoxHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types';
-import { maxBallOverlap, maxWallPenetration } from '../quality';
+import type { BenchScene, ExtraValue } from './types.js';
+import { maxBallOverlap, maxWallPenetration } from '../quality.js';
 
 const percent = (v: ExtraValue): string => (typeof v === 'number' ? `${v.toFixed(2)}` : String(v));
 

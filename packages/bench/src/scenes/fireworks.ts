@@ -1,8 +1,8 @@
 import { onParticleDeath } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types';
-import { collectGarbage } from '../memory';
-import { summarize } from '../stats';
-import { round, sig } from './format';
+import type { BenchScene, ExtraValue } from './types.js';
+import { collectGarbage } from '../memory.js';
+import { summarize } from '../stats.js';
+import { round, sig } from './format.js';
 
 const MB = 2 ** 20;
 

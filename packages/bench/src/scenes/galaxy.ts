@@ -4,9 +4,9 @@ import {
   createPhysicsWorld, directField, galaxy, gravityFieldError, gravityMomentumRate, linearMomentum, sampleIndices, step,
   type PhysicsWorld,
 } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types';
-import { median } from '../stats';
-import { sig } from './format';
+import type { BenchScene, ExtraValue } from './types.js';
+import { median } from '../stats.js';
+import { sig } from './format.js';
 
 /** Opening angle the bench uses unless `--theta` says otherwise (the physics engineer's recommendation: median force error ~0.07%). */
 export const GALAXY_DEFAULT_THETA = 0.7;

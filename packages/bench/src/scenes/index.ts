@@ -1,10 +1,10 @@
 import { MAX_CAPACITY, SCENES, type SceneDefinition } from '@bitphysics/physics';
-import type { BenchScene } from './types';
-import { ballsInBoxBench } from './balls-in-box';
-import { particlesBench } from './particles';
-import { spheresInBoxBench } from './spheres-in-box';
-import { galaxyBench } from './galaxy';
-import { fireworksBench } from './fireworks';
+import type { BenchScene } from './types.js';
+import { ballsInBoxBench } from './balls-in-box.js';
+import { particlesBench } from './particles.js';
+import { spheresInBoxBench } from './spheres-in-box.js';
+import { galaxyBench } from './galaxy.js';
+import { fireworksBench } from './fireworks.js';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
@@ -36,4 +36,4 @@ export function resolveScene(name: string): ResolvedScene | undefined {
   return { definition, bench };
 }
 
-export type { BenchScene, ExtraColumn, ExtraValue, SceneParam, SceneProbe } from './types';
+export type { BenchScene, ExtraColumn, ExtraValue, SceneParam, SceneProbe } from './types.js';

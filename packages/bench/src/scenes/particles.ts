@@ -1,5 +1,5 @@
 import type { ParticlesHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types';
+import type { BenchScene, ExtraValue } from './types.js';
 
 /**
  * Bench side of `particles`: the count limit of `particlesLayout`, and a position checksum (sum of

@@ -1,7 +1,7 @@
 import { spheresInBoxLayout, type SpheresInBoxHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types';
-import { maxBallOverlap, maxWallPenetration } from '../quality';
-import { round } from './format';
+import type { BenchScene, ExtraValue } from './types.js';
+import { maxBallOverlap, maxWallPenetration } from '../quality.js';
+import { round } from './format.js';
 
 const percent = (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(2) : String(v));
 

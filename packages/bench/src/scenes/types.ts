@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { BodySnapshot, SceneRunOptions } from '../engines/types';
-import type { TimeSummary } from '../stats';
+import type { BodySnapshot, SceneRunOptions } from '../engines/types.js';
+import type { TimeSummary } from '../stats.js';
 
 /** A value a scene adds to an engine's result line (a JSON field and, optionally, a column). */
 export type ExtraValue = number | string | boolean | null;

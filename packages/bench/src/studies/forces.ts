@@ -4,9 +4,9 @@ import {
   setElectrostatics, setGravitation, setGravityScale, setLift, setRandomForce, setThrust, setVortex, setWind,
   type PhysicsWorld,
 } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types';
-import { medianStepMs, nsPerBodyStep } from './timing';
-import { sig } from '../scenes/format';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
+import { medianStepMs, nsPerBodyStep } from './timing.js';
+import { sig } from '../scenes/format.js';
 
 /**
  * Largest body count the pairwise (O(N^2)) laws are timed at: Coulomb and direct mutual gravity run

@@ -1,6 +1,6 @@
-import type { BenchStudy } from './types';
-import { integratorsStudy } from './integrators';
-import { forcesStudy } from './forces';
+import type { BenchStudy } from './types.js';
+import { integratorsStudy } from './integrators.js';
+import { forcesStudy } from './forces.js';
 
 /** Bench-only scenes (measurement studies, not worlds stepped side by side with peers) by name. */
 export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
@@ -13,4 +13,4 @@ export function resolveStudy(name: string): BenchStudy | undefined {
   return Object.prototype.hasOwnProperty.call(STUDIES, name) ? STUDIES[name] : undefined;
 }
 
-export type { BenchStudy, StudyResult, StudyRunOptions } from './types';
+export type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';

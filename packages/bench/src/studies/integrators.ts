@@ -2,9 +2,9 @@ import {
   addBody, createPhysicsWorld, INTEGRATOR_NAMES, INTEGRATOR_ORDER, kineticEnergy, potentialEnergy, Rng, setAttractor,
   setGravitation, step, type IntegratorName, type PhysicsWorld,
 } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types';
-import { medianStepMs, nsPerBodyStep } from './timing';
-import { sig } from '../scenes/format';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
+import { medianStepMs, nsPerBodyStep } from './timing.js';
+import { sig } from '../scenes/format.js';
 
 /**
  * The Kepler orbit every accuracy measurement uses, in units with G M = 1 (G = 1 set with

@@ -1,7 +1,7 @@
 import { step, type PhysicsWorld } from '@bitphysics/physics';
-import { runInterleaved } from '../runner';
-import { collectGarbage } from '../memory';
-import { median } from '../stats';
+import { runInterleaved } from '../runner.js';
+import { collectGarbage } from '../memory.js';
+import { median } from '../stats.js';
 
 /** Steps a study's timed worlds alternate in (as `--block` does for engines): short, so all see the same load. */
 export const STUDY_BLOCK = 5;

@@ -1,4 +1,4 @@
-import type { SceneParam } from '../scenes/types';
+import type { SceneParam } from '../scenes/types.js';
 
 /**
  * What a study is given: the command line's count, timing, seed and scene parameters, already

@@ -1,7 +1,7 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { CollisionState } from './state';
-import { wakeTag } from './sleep';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { CollisionState } from './state.js';
+import { wakeTag } from './sleep.js';
 
 /**
  * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping

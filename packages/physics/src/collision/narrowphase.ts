@@ -1,7 +1,7 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts';
-import { BodyType, PairKind } from './broadphase';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts.js';
+import { BodyType, PairKind } from './broadphase.js';
 
 function pushContact(
   buf: ContactBuffer, kind: number, a: number, b: number, feature: number,

@@ -1,7 +1,7 @@
 import { addComponent, entityExists, hasComponent, removeComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world';
-import { query, Not } from '../query';
-import { describe } from '../validate';
+import type { PhysicsWorld } from '../world.js';
+import { query, Not } from '../query.js';
+import { describe } from '../validate.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops

@@ -1,9 +1,9 @@
-import type { PhysicsWorld } from '../world';
-import { ContactKind, findWarmStart, storeWarmStart, type ContactBuffer } from './contacts';
-import { BodyType } from './broadphase';
-import { reportNonFinite } from '../errors';
-import { rotateInPlace } from '../math/quaternion';
-import type { CollisionState } from './state';
+import type { PhysicsWorld } from '../world.js';
+import { ContactKind, findWarmStart, storeWarmStart, type ContactBuffer } from './contacts.js';
+import { BodyType } from './broadphase.js';
+import { reportNonFinite } from '../errors.js';
+import { rotateInPlace } from '../math/quaternion.js';
+import type { CollisionState } from './state.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D

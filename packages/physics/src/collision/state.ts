@@ -1,4 +1,4 @@
-import { createContactBuffer, createWarmStartCache, type ContactBuffer, type WarmStartCache } from './contacts';
+import { createContactBuffer, createWarmStartCache, type ContactBuffer, type WarmStartCache } from './contacts.js';
 
 /**
  * Contact solver tuning (Box2D v3's soft step; the defaults are Box2D's). Set at world creation from

@@ -1,8 +1,8 @@
-import { Not, query } from '../query';
-import type { PhysicsWorld } from '../world';
-import { currentSeparation } from '../collision/narrowphase';
-import { fieldsAt } from '../forces/electromagnetism';
-import { spinAngularMomentum, spinKineticEnergy } from '../rigid';
+import { Not, query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import { currentSeparation } from '../collision/narrowphase.js';
+import { fieldsAt } from '../forces/electromagnetism.js';
+import { spinAngularMomentum, spinKineticEnergy } from '../rigid.js';
 
 const spin = new Float64Array(3);
 

@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world';
-import { assertInteger, assertKnownKeys, describe } from '../validate';
+import type { PhysicsWorld } from '../world.js';
+import { assertInteger, assertKnownKeys, describe } from '../validate.js';
 
 /** A quantity to record: a function of the world returning a number (J, m, kg m/s, ...). */
 export type Quantity = (world: PhysicsWorld) => number;

@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /** Angular damping: torque -k w on every body with AngularDamping. Velocity-dependent. */
 export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {

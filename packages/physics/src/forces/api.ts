@@ -1,11 +1,11 @@
 import { addComponent, entityExists, hasComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world';
-import { addComponentIfMissing } from '../world';
-import { createEntity } from '../bodies';
+import type { PhysicsWorld } from '../world.js';
+import { addComponentIfMissing } from '../world.js';
+import { createEntity } from '../bodies.js';
 import {
   assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
-} from '../validate';
-import { BuoyancyShape } from './fluid';
+} from '../validate.js';
+import { BuoyancyShape } from './fluid.js';
 
 /**
  * Validated helpers that give bodies force laws and add field and spring entities. Each writes the

@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every

@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * General central force F = k r^(n-1) r_hat about each body's centre (cx, cy, cz): written as

@@ -1,5 +1,5 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of

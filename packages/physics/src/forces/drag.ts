@@ -1,7 +1,7 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
-import { windAt } from './settings';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
+import { windAt } from './settings.js';
 
 const wind = new Float64Array(3);
 

@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /** Periodic driving force F = F0 cos(omega t + phase). Position-only (a function of time). Ramtal and Dobre ch. 8. */
 export const drivingForceSystem: ForceLaw = (world: PhysicsWorld): void => {

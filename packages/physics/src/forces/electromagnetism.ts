@@ -1,7 +1,7 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
-import { inverseSquarePairs } from './pairwise';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
+import { inverseSquarePairs } from './pairwise.js';
 
 /**
  * Coulomb's law between every pair of charged bodies: F on b = k q_a q_b (x_b - x_a) / (r^2 + eps^2)^(3/2)

@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /** Shape codes of `Buoyancy.shape`. */
 export const BuoyancyShape = Object.freeze({ Ball: 0, Box: 1 } as const);

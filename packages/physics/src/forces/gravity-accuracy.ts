@@ -1,7 +1,7 @@
 import { query } from 'bitecs';
-import type { PhysicsWorld } from '../world';
-import { assertInteger } from '../validate';
-import { worldTreeFields } from './barnes-hut';
+import type { PhysicsWorld } from '../world.js';
+import { assertInteger } from '../validate.js';
+import { worldTreeFields } from './barnes-hut.js';
 
 /**
  * Accuracy diagnostics of mutual gravity: the direct-sum field at a sample of bodies, the relative

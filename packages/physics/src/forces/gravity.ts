@@ -1,8 +1,8 @@
-import { Not, query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
-import { inverseSquarePairs } from './pairwise';
-import { barnesHutGravity } from './barnes-hut';
+import { Not, query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
+import { inverseSquarePairs } from './pairwise.js';
+import { barnesHutGravity } from './barnes-hut.js';
 
 /**
  * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator

@@ -1,6 +1,6 @@
-import type { PhysicsWorld } from '../world';
-import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate';
-import { Rng } from '../rng';
+import type { PhysicsWorld } from '../world.js';
+import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { Rng } from '../rng.js';
 
 /** Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018). */
 export const G_SI = 6.6743e-11;

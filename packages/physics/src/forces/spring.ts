@@ -1,7 +1,7 @@
 import { removeEntity } from 'bitecs';
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * Hooke springs with damping (Ramtal and Dobre ch. 8): for a spring from a (or its anchor) to b with

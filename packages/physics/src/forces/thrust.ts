@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * Rocket thrust: while fuel lasts, F = ve mdot (m_s / m(t)) d, with d the thrust direction, ve the

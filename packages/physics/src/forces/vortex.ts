@@ -1,6 +1,6 @@
-import { query } from '../query';
-import type { PhysicsWorld } from '../world';
-import type { ForceLaw } from './law';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * Vortex: a tangential force about an axis, F = k r^(n-1) (axis x r_hat), r the distance from the

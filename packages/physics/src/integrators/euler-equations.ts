@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world';
-import { rotateVector, rotateVectorInverse } from '../math/quaternion';
+import type { PhysicsWorld } from '../world.js';
+import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 
 const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3);
 

@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world';
-import { advanceKinematic } from './semi-implicit-euler';
-import { accelerationsAt, checkFinite, gather, getScratch, saveState, stageSlopes, type IntegratorScratch } from './state';
-import { rotateFrom } from '../math/quaternion';
+import type { PhysicsWorld } from '../world.js';
+import { advanceKinematic } from './semi-implicit-euler.js';
+import { accelerationsAt, checkFinite, gather, getScratch, saveState, stageSlopes, type IntegratorScratch } from './state.js';
+import { rotateFrom } from '../math/quaternion.js';
 
 /** Newton iterations before implicit Euler gives up on a step. */
 const MAX_NEWTON = 30;

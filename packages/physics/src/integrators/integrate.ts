@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world';
-import type { IntegratorName } from './names';
-import { semiImplicitEuler } from './semi-implicit-euler';
-import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes';
-import { implicitEuler } from './implicit-euler';
+import type { PhysicsWorld } from '../world.js';
+import type { IntegratorName } from './names.js';
+import { semiImplicitEuler } from './semi-implicit-euler.js';
+import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
+import { implicitEuler } from './implicit-euler.js';
 
 /** An integration scheme: advances every moving body of the world by h seconds. */
 export type Integrator = (world: PhysicsWorld, h: number) => void;

@@ -1,6 +1,6 @@
 import { type QueryResult } from 'bitecs';
-import { Not, query } from '../query';
-import type { PhysicsWorld } from '../world';
+import { Not, query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Dynamic bodies with a force accumulator (and so a mass): they feel force laws and gravity.

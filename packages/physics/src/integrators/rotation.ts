@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world';
-import { reportNonFinite } from '../errors';
-import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries';
-import { rotateInPlace } from '../math/quaternion';
-import { splitRigidRotation } from './euler-equations';
+import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../errors.js';
+import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js';
+import { rotateInPlace } from '../math/quaternion.js';
+import { splitRigidRotation } from './euler-equations.js';
 import { hasComponent } from 'bitecs';
 
 

@@ -1,11 +1,11 @@
-import type { PhysicsWorld } from '../world';
-import type { System } from '../pipeline/stages';
-import { advanceKinematic } from './semi-implicit-euler';
+import type { PhysicsWorld } from '../world.js';
+import type { System } from '../pipeline/stages.js';
+import { advanceKinematic } from './semi-implicit-euler.js';
 import {
   accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, stageSlopes, sumGroups, writeTrial,
   type IntegratorScratch,
-} from './state';
-import { rotateFrom } from '../math/quaternion';
+} from './state.js';
+import { rotateFrom } from '../math/quaternion.js';
 
 /**
  * The explicit and multi-stage integration schemes. Each advances every moving body by h from the

@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world';
-import { reportNonFinite } from '../errors';
-import { forcedBodies, freeBodies, kinematicBodies } from './queries';
-import { advanceOrientations, applyTorques } from './rotation';
+import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../errors.js';
+import { forcedBodies, freeBodies, kinematicBodies } from './queries.js';
+import { advanceOrientations, applyTorques } from './rotation.js';
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with

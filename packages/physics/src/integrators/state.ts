@@ -1,9 +1,9 @@
-import type { PhysicsWorld } from '../world';
-import { evaluateForces } from '../pipeline/step';
-import { forcedBodies, freeBodies, spinningBodies } from './queries';
+import type { PhysicsWorld } from '../world.js';
+import { evaluateForces } from '../pipeline/step.js';
+import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 import { hasComponent } from 'bitecs';
-import { reportNonFinite } from '../errors';
-import { eulerAcceleration } from './euler-equations';
+import { reportNonFinite } from '../errors.js';
+import { eulerAcceleration } from './euler-equations.js';
 
 /**
  * Shared machinery of the multi-stage integrators: the list of moving bodies, a copy of the state at

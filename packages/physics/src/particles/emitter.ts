@@ -1,10 +1,10 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from '../world';
-import { createEntity } from '../bodies';
-import { query } from '../query';
+import type { PhysicsWorld } from '../world.js';
+import { createEntity } from '../bodies.js';
+import { query } from '../query.js';
 import {
   assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
-} from '../validate';
+} from '../validate.js';
 
 /**
  * Particle systems (Ramtal and Dobre ch. 12): emitters spawn particles with a rate and in bursts,

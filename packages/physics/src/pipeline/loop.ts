@@ -1,4 +1,4 @@
-import { assertKnownKeys, assertPositive, assertInteger } from '../validate';
+import { assertKnownKeys, assertPositive, assertInteger } from '../validate.js';
 
 /** Options of `createFixedStepLoop`. */
 export interface FixedStepLoopOptions {

@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world';
-import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages';
-import { describe } from '../validate';
-import { query } from '../query';
+import type { PhysicsWorld } from '../world.js';
+import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages.js';
+import { describe } from '../validate.js';
+import { query } from '../query.js';
 
 const now: () => number =
   typeof globalThis.performance?.now === 'function' ? () => globalThis.performance.now() : () => Date.now();

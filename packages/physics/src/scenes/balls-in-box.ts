@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world';
-import { addBody, setBoundary } from '../bodies';
-import { Rng } from '../rng';
-import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertFinite } from '../validate';
-import type { SceneDefinition } from './types';
+import type { PhysicsWorld } from '../world.js';
+import { addBody, setBoundary } from '../bodies.js';
+import { Rng } from '../rng.js';
+import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertFinite } from '../validate.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `balls-in-box` scene. */
 export interface BallsInBoxOptions {

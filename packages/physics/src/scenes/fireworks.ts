@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world';
-import { addEmitter } from '../particles/emitter';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate';
-import type { SceneDefinition } from './types';
+import type { PhysicsWorld } from '../world.js';
+import { addEmitter } from '../particles/emitter.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `fireworks` scene. */
 export interface FireworksOptions {

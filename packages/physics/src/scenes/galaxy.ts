@@ -1,10 +1,10 @@
-import type { PhysicsWorld } from '../world';
-import { addBody } from '../bodies';
-import { enableMutualGravity } from '../forces/api';
-import { setGravitation } from '../forces/settings';
-import { Rng } from '../rng';
-import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../validate';
-import type { SceneDefinition } from './types';
+import type { PhysicsWorld } from '../world.js';
+import { addBody } from '../bodies.js';
+import { enableMutualGravity } from '../forces/api.js';
+import { setGravitation } from '../forces/settings.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../validate.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `galaxy` scene. */
 export interface GalaxyOptions {

@@ -1,9 +1,9 @@
-import { ballsInBox } from './balls-in-box';
-import { particles } from './particles';
-import { spheresInBox } from './spheres-in-box';
-import { galaxy } from './galaxy';
-import { fireworks } from './fireworks';
-import type { SceneDefinition } from './types';
+import { ballsInBox } from './balls-in-box.js';
+import { particles } from './particles.js';
+import { spheresInBox } from './spheres-in-box.js';
+import { galaxy } from './galaxy.js';
+import { fireworks } from './fireworks.js';
+import type { SceneDefinition } from './types.js';
 
 /** Every registered scene by name: the bench's `--list` and the gallery read this. */
 export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; seed?: number }, unknown>>> = Object.freeze({
@@ -14,14 +14,14 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [fireworks.name]: fireworks as SceneDefinition<{ count?: number; seed?: number }, unknown>,
 });
 
-export { ballsInBox, ballsInBoxLayout } from './balls-in-box';
-export type { BallsInBoxHandles, BallsInBoxLayout, BallsInBoxOptions } from './balls-in-box';
-export { particles, particlesLayout } from './particles';
-export type { ParticlesHandles, ParticlesLayout, ParticlesOptions } from './particles';
-export type { SceneDefinition } from './types';
-export { spheresInBox, spheresInBoxLayout } from './spheres-in-box';
-export type { SpheresInBoxHandles, SpheresInBoxLayout, SpheresInBoxOptions } from './spheres-in-box';
-export { galaxy } from './galaxy';
-export type { GalaxyOptions } from './galaxy';
-export { fireworks } from './fireworks';
-export type { FireworksOptions } from './fireworks';
+export { ballsInBox, ballsInBoxLayout } from './balls-in-box.js';
+export type { BallsInBoxHandles, BallsInBoxLayout, BallsInBoxOptions } from './balls-in-box.js';
+export { particles, particlesLayout } from './particles.js';
+export type { ParticlesHandles, ParticlesLayout, ParticlesOptions } from './particles.js';
+export type { SceneDefinition } from './types.js';
+export { spheresInBox, spheresInBoxLayout } from './spheres-in-box.js';
+export type { SpheresInBoxHandles, SpheresInBoxLayout, SpheresInBoxOptions } from './spheres-in-box.js';
+export { galaxy } from './galaxy.js';
+export type { GalaxyOptions } from './galaxy.js';
+export { fireworks } from './fireworks.js';
+export type { FireworksOptions } from './fireworks.js';

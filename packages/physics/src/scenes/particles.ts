@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world';
-import { addParticle } from '../bodies';
-import { Rng } from '../rng';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate';
-import type { SceneDefinition } from './types';
+import type { PhysicsWorld } from '../world.js';
+import { addParticle } from '../bodies.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `particles` scene. */
 export interface ParticlesOptions {

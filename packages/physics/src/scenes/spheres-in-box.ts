@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world';
-import { addBody, setBoundary } from '../bodies';
-import { Rng } from '../rng';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate';
-import type { SceneDefinition } from './types';
+import type { PhysicsWorld } from '../world.js';
+import { addBody, setBoundary } from '../bodies.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `spheres-in-box` scene. */
 export interface SpheresInBoxOptions {
