@@ -1,6 +1,7 @@
 // Builds the gallery of games (dist/site), the bench CLI (packages/bench/dist) and the packages'
 // ESM bundles (packages/*/dist). Run directly (`npm run build`) or import the functions.
 import * as esbuild from 'esbuild';
+import { execFileSync } from 'node:child_process';
 import { existsSync, readdirSync, readFileSync, statSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -70,6 +71,8 @@ export function siteOptions({ minify = false } = {}) {
     sourcemap: true,
     minify,
     loader: { '.html': 'copy', '.png': 'copy', '.jpg': 'copy', '.svg': 'copy' },
+    // Runs first on every page: the locale guard and the error box for anything thrown (also at import time).
+    inject: [join(games, 'shared', 'page-errors.ts')],
     logLevel: 'warning',
   };
 }
@@ -104,15 +107,22 @@ export async function buildBench() {
 export const libraryPackages = ['physics', 'render-common', 'render-pixi', 'render-three'];
 
 /**
- * Builds each library package's ESM bundles, one per entry of its package.json `exports` map: the
- * entry's `bitphysics-source` file bundled to its `default` file (e.g. src/index.ts -> dist/index.js,
- * src/validate.ts -> dist/validate.js), every package import external.
+ * Builds each library package into its dist/ (emptied first): the ESM bundles, one per entry of its
+ * package.json `exports` map (the entry's `bitphysics-source` file bundled to its `default` file, e.g.
+ * src/index.ts -> dist/index.js, src/validate.ts -> dist/validate.js, every package import external),
+ * and the declarations with their maps (each src/ file gets a dist/ .d.ts and .d.ts.map, by tsc with
+ * the package's tsconfig.build.json). Declarations are compiled without the `bitphysics-source`
+ * condition, so a package's imports of another resolve to that package's dist/ declarations, as
+ * they will for a user: hence dependencies first.
+ * @param {{ names?: string[] }} options which packages (default: every library package).
+ * @throws Error with tsc's output if a package's declarations do not compile.
  */
-export async function buildPackages() {
-  for (const name of libraryPackages) {
+export async function buildPackages({ names = libraryPackages } = {}) {
+  for (const name of names) {
     const dir = join(root, 'packages', name);
     const manifest = join(dir, 'package.json');
     if (!existsSync(manifest)) continue;
+    rmSync(join(dir, 'dist'), { recursive: true, force: true });
     const exportsMap = JSON.parse(readFileSync(manifest, 'utf8')).exports ?? {};
     for (const entry of Object.values(exportsMap)) {
       const source = entry?.['bitphysics-source'];
@@ -131,6 +141,21 @@ export async function buildPackages() {
         logLevel: 'warning',
       });
     }
+    buildDeclarations(dir);
+  }
+}
+
+/**
+ * Writes the .d.ts and .d.ts.map files of the package in `dir` with the workspace's tsc.
+ * @throws Error with tsc's diagnostics if the package does not type-check.
+ */
+function buildDeclarations(dir) {
+  const config = join(dir, 'tsconfig.build.json');
+  if (!existsSync(config)) return;
+  try {
+    execFileSync(process.execPath, [join(root, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', config], { cwd: root, encoding: 'utf8', stdio: 'pipe' });
+  } catch (error) {
+    throw new Error(`declarations of ${dir} failed:\n${error.stdout ?? ''}${error.stderr ?? ''}`);
   }
 }
 

@@ -82,6 +82,10 @@ export type { GravityTree } from './forces/barnes-hut.js';
 export { NonFiniteStateError } from './errors.js';
 export { Rng } from './rng.js';
 export { query, Not } from './query.js';
-/** Whether an entity id is alive in the world (bitecs' entityExists). */
-export { entityExists, hasComponent } from 'bitecs';
+/**
+ * bitecs' own functions for raw ECS use on a physics world (`addComponent(world, eid,
+ * world.components.LinearDrag)`), re-exported so a project needs no import of its own from bitecs.
+ * bitecs is a peer dependency: the project and every bitphysics package share one copy.
+ */
+export { entityExists, hasComponent, addComponent, removeComponent, getEntityComponents } from 'bitecs';
 export * from './scenes/index.js';

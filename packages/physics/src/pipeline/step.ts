@@ -3,8 +3,9 @@ import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages.js
 import { describe } from '../validate.js';
 import { query } from '../query.js';
 
-const now: () => number =
-  typeof globalThis.performance?.now === 'function' ? () => globalThis.performance.now() : () => Date.now();
+/** The host's clock (`performance` is not in the ES library this package is built against). */
+const clock = (globalThis as { performance?: { now(): number } }).performance;
+const now: () => number = typeof clock?.now === 'function' ? () => clock.now() : () => Date.now();
 
 function runStage(world: PhysicsWorld, stage: StageName): void {
   const systems = world.stages[stage];
