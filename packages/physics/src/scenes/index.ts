@@ -25,3 +25,9 @@ export { galaxy } from './galaxy.js';
 export type { GalaxyOptions } from './galaxy.js';
 export { fireworks } from './fireworks.js';
 export type { FireworksOptions } from './fireworks.js';
+// The book's closing projects: exported builders, not in SCENES (the bench measures solar-system as a study).
+export {
+  solarSystem, solarSystemErrors, solarSystemMass, ephemerisState, ephemerisHeliocentric,
+  SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_PLANETS, SOLAR_SYSTEM_FLOOR, SOLAR_SYSTEM_EPOCH, AU, DAY,
+} from './solar-system.js';
+export type { SolarSystemBody, SolarSystemPlanet, SolarSystemOptions, SolarSystemHandles } from './solar-system.js';
