@@ -14,8 +14,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, exposeLive } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, exposeLive } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   MAX_ATTRACTORS, START_AREA, addAttractor, attractorNear, createAttractorField, moveAttractor, removeAttractor, setAttractorField,
   setParticleDrag, setVortexOn, stepAttractors, type AttractorField,

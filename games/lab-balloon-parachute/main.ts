@@ -19,7 +19,7 @@ import { createPhysicsWorld, setMass, step, type PhysicsWorld } from '@bitphysic
 import type { Plot } from '../shared/plot';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, type Panel, type PanelControl } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, readUrlParams } from '../lab-floating/lab-kit';
+import { createPlotDock, createStatusLine, dashedLine, readUrlParams } from '../shared/lab-kit';
 import {
   JUMPER_RADIUS, SCENES, airDensity, applyWind, balloonMass, buildBalloon, buildParachute, equilibriumAltitude, fallSpeedFromRest, openChute,
   rangeOf, resolveOptions, setTether, terminalSpeed, updateChute, worldOptions, type BalloonHandles, type Handles, type ParachuteHandles,

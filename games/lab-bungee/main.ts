@@ -10,14 +10,13 @@
  * Keys: P pause, N step, R reset. URL: ?length (2-50 m), ?k (10-5000 N/m), ?damping (0-1000 N s/m),
  * ?mass (20-200 kg).
  */
-import '../lab-projectile-drag/locale-guard';
 import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import { BRIDGE_HEIGHT, BUNGEE_DEFAULTS, GRAVITY, JUMPER_RADIUS, buildBungee, bungeeWorldOptions, type BungeeHandles } from './scene';
 import { equilibriumStretch, freeFallHeight, freeFallTime, lowestStretch } from './exact';
 

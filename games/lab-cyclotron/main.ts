@@ -13,7 +13,7 @@ import { Graphics } from 'pixi.js';
 import { INTEGRATOR_NAMES, createPhysicsWorld, step, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../lab-floating/lab-kit';
+import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
 import {
   buildCyclotron, cyclotronWorldOptions, exactCentre, flipField, measure, rebaseline, resolveCyclotronOptions, type CyclotronHandles,
 } from './scene';

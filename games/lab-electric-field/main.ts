@@ -14,7 +14,7 @@ import { Graphics, Text } from 'pixi.js';
 import { INTEGRATOR_NAMES, createPhysicsWorld, setPosition, setVelocity, step, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../lab-floating/lab-kit';
+import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
 import {
   BOX, MAX_CHARGES, MICRO, PRESETS, TEST_RADIUS, addCharge, buildElectric, createFieldLines, electricWorldOptions, hasRoom,
   moveCharge, rebaseline, relaunch, removeCharge, setChargeValue, setSoftening, setTestCharge, testEnergy, traceFieldLines,

@@ -12,8 +12,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   FIRE_LIFETIMES, FIRE_RATES, MAX_INTENSITY, createFire, moveFire, setFireIntensity, setFireSmoke, setFireWind, stepFire, type Fire,
 } from './scene';

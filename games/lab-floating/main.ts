@@ -13,7 +13,7 @@ import { Graphics, Text } from 'pixi.js';
 import { createPhysicsWorld, setPosition, setVelocity, step, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from './lab-kit';
+import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '../shared/lab-kit';
 import {
   BALL_RADIUS, BODY_KINDS, BOX_HALF, SURFACE, TANK, buildFloating, dropBall, equilibriumOf, floatingWorldOptions,
   immersionDepth, resolveFloatingOptions, setBodyDensity, setFluidDensity, setFluidDrag, type BodyKind, type FloatingHandles,

@@ -23,8 +23,8 @@ import { createPhysicsWorld, galaxy, setGravitation, step as physicsStep, type P
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, createStepTimer, fmt } from './particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, createStepTimer, fmt } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 
 /** Real time a step stands for, s: the loop runs one step per 1/60 s; the world's dt is timeScale times it. */
 const REAL_STEP = 1 / 60;

@@ -12,14 +12,13 @@
  * world per frame step). Keys: P pause, N step, R reset, + / - speed-up.
  * URL: ?dt (0.0005-0.2 s), ?e (0-0.95), ?speedup (1-20).
  */
-import '../lab-projectile-drag/locale-guard';
 import { Graphics } from 'pixi.js';
 import { INTEGRATOR_NAMES, INTEGRATOR_ORDER, step as physicsStep, totalEnergy, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { PathBuffer, createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { PathBuffer, createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import { conicRadius, type OrbitShape } from '../lab-orbits/exact';
 import { GM, PERIOD, PLANET_RADIUS, SEMI_MAJOR_AXIS, createKeplerWorld, type KeplerWorld } from './scene';
 

@@ -10,7 +10,6 @@
  * nearest body, S selects the next one, X removes launched bodies. P pause, N step, R reset.
  * URL: ?planets (1-8), ?gm (1-500 m^3/s^2), ?softening (0-3 m), ?integrator, ?seed.
  */
-import '../lab-projectile-drag/locale-guard';
 import { Graphics } from 'pixi.js';
 import {
   INTEGRATOR_NAMES, createPhysicsWorld, step as physicsStep, totalEnergy, type IntegratorName, type PhysicsWorld,
@@ -21,7 +20,7 @@ import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } fro
 import { createPlot } from '../shared/plot';
 import {
   PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
-} from '../lab-projectile-drag/lab-kit';
+} from '../shared/lab-kit';
 import {
   ESCAPE_DISTANCE, ORBITS_DEFAULTS, SUN_RADIUS, buildOrbits, launchBody, orbitsWorldOptions, outerRadius, removeOrbiter, setCentralMass,
   type OrbitsHandles,

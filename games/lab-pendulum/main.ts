@@ -9,14 +9,13 @@
  * Input: click places the bob (sets length and amplitude) and releases it. Keys: P pause, N step, R reset.
  * URL: ?length (0.2-20 m), ?amplitude (-179-179 deg), ?g (0.5-30 m/s^2), ?damping (0-5 N s/m).
  */
-import '../lab-projectile-drag/locale-guard';
 import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import { BOB_MASS, PENDULUM_DEFAULTS, PENDULUM_RANGES, buildPendulum, pendulumWorldOptions, type PendulumHandles } from './scene';
 import { largeAmplitudePeriod, smallAngle, smallAnglePeriod } from './exact';
 

@@ -11,7 +11,6 @@
  * URL: ?law=none|linear|quadratic, ?k (coefficient of that law), ?speed, ?angle, ?mass, ?height,
  * ?g, ?integrator. Bad values stop the page with a message naming the parameter.
  */
-import './locale-guard';
 import { Graphics } from 'pixi.js';
 import {
   INTEGRATOR_NAMES, contactCount, createPhysicsWorld, step as physicsStep, type IntegratorName, type PhysicsWorld,
@@ -22,7 +21,7 @@ import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../share
 import { createPlot } from '../shared/plot';
 import {
   PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
-} from './lab-kit';
+} from '../shared/lab-kit';
 import {
   BALL_RADIUS, DRAG_LAWS, PROJECTILE_DEFAULTS, PROJECTILE_RANGES, buildProjectile, projectileWorldOptions,
   type DragLaw, type ProjectileHandles, type ProjectileOptions,

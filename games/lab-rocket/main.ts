@@ -14,7 +14,7 @@ import { Graphics } from 'pixi.js';
 import { createPhysicsWorld, step, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
-import { createPlotDock, createStatusLine, readUrlParams, trackHeldKeys } from '../lab-floating/lab-kit';
+import { createPlotDock, createStatusLine, readUrlParams, trackHeldKeys } from '../shared/lab-kit';
 import {
   PLANETS, PLANET_SPECS, altitude, applyControls, buildRocket, orbitAltitudes, resolveRocketOptions, rocketWorldOptions, speed,
   tsiolkovsky, uniformGravityModel, type PlanetName, type RocketHandles,

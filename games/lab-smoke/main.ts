@@ -10,8 +10,8 @@ import { Graphics } from 'pixi.js';
 import { windAt, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   MAX_RATE, PUFF_LIFETIME, createSmoke, moveSmokeSource, setSmokeBuoyancy, setSmokeRate, setSmokeWind, stepSmoke, type Smoke,
 } from './scene';

@@ -12,8 +12,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   MAX_RATE, SPARK_MASS, TOOL_PRESETS, WALL_X, configureSparks, createSparks, moveTool, setToolOn, stepSparks, type SparkTool, type Sparks,
 } from './scene';

@@ -13,8 +13,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   CLOUD_HEIGHT, GROUND_END, MAX_RAIN, MAX_RIPPLES, POOL, createSplash, dropAt, dropCount, setDropletsPerSpeed, setGroundRestitution, setRain,
   splashCount, stepSplash, type Splash,

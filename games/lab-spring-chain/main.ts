@@ -10,7 +10,6 @@
  * URL: ?links (1-40), ?k (1-5000 N/m), ?damping (0-50 N s/m), ?mass (0.01-10 kg), ?angle (deg),
  * ?integrator.
  */
-import '../lab-projectile-drag/locale-guard';
 import { Graphics } from 'pixi.js';
 import {
   INTEGRATOR_NAMES, addSpring, createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, removeBody, springPotentialEnergy,
@@ -20,7 +19,7 @@ import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawSpring, drawnPosition, fmt, followView, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { createLabDock, createReadout, drawSpring, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import {
   BALL_RADIUS, CHAIN_DEFAULTS, LINK_LENGTH, buildChain, chainWorldOptions, hangingLength, setSpringConstants, substepsFor,
   type ChainHandles,

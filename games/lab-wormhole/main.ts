@@ -14,8 +14,8 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, exposeLive, fmt } from '../lab-galaxy/particle-kit';
-import { createReadout, readUrlParams } from '../lab-projectile-drag/lab-kit';
+import { advanceSteps, exposeLive, fmt } from '../shared/particle-kit';
+import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
   BLACK_HOLE_SOFTENING, addStar, createWormhole, moveHole, setBlackHoleMass, setHorizon, setStarDrag,
   setWhiteHoleStrength, stepWormhole, type Wormhole,

@@ -4,6 +4,10 @@
  * for the page contract (`document.body.dataset.ready === 'true'`, `window.game`), read stats, check
  * the canvas is not blank, and send keys, clicks and drags.
  *
+ * Every wait has a bound (PAGE_TIMEOUT_MS unless given) and fails with the page's errors and last
+ * console lines, so a page that never becomes ready fails in seconds with its reason, not at
+ * vitest's hook timeout.
+ *
  * Browser test files take a cross-process lock for the server (dist/site is shared), so they run one
  * after another even when vitest runs files in parallel.
  *
@@ -41,6 +45,32 @@ export interface OpenOptions {
   waitReady?: boolean;
   /** How long to wait for the ready flag, ms. Default 30 000. */
   readyTimeoutMs?: number;
+  /**
+   * The browser's language (navigator.language, Intl's default locale), e.g. 'de-DE' (comma
+   * decimals) or 'en-US@posix' (what Chromium reports under LANG=C.UTF-8, a tag Intl rejects).
+   * Default 'en-US'.
+   */
+  locale?: string;
+}
+
+/** Longest wait for anything the harness asks of a page without a timeout of its own (frames, evaluations), ms. */
+export const PAGE_TIMEOUT_MS = 30_000;
+
+/**
+ * Resolves or rejects as `work` does, unless `ms` pass first: then rejects with an Error saying what
+ * was awaited (`what`) plus `detail()` (the page's errors), instead of hanging the test until vitest's
+ * hook timeout.
+ */
+export async function withTimeout<T>(work: Promise<T>, ms: number, what: string, detail: () => string): Promise<T> {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  const timeout = new Promise<never>((_, reject) => {
+    timer = setTimeout(() => reject(new Error(`${what}: no answer in ${ms} ms; ${detail()}`)), ms);
+  });
+  try {
+    return await Promise.race([work, timeout]);
+  } finally {
+    clearTimeout(timer);
+  }
 }
 
 function toQuery(query: OpenOptions['query']): string {
@@ -86,8 +116,12 @@ export class Harness {
    */
   async open(path: string, options: OpenOptions = {}): Promise<GamePage> {
     // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
-    const context = await this.browser.newContext({ viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: 'en-US' });
+    const context = await this.browser.newContext({
+      viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: options.locale ?? 'en-US',
+    });
     const page = await context.newPage();
+    // Every playwright wait (goto, locators, waitForFunction) gives up with a message after this long.
+    page.setDefaultTimeout(PAGE_TIMEOUT_MS);
     const gp = new GamePage(context, page);
     this.pages.add(gp);
     await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query));
@@ -121,13 +155,20 @@ export class GamePage {
    * responses with HTTP status >= 400 or failed requests. Tests usually expect it to stay empty.
    */
   readonly errors: string[] = [];
+  /** The page's last 40 console lines of any type ('[type] text'), for failure messages. */
+  readonly consoleTail: string[] = [];
   private readonly context: BrowserContext;
 
   /** Wraps `page` (in its own `context`) and starts collecting its errors. Made by `Harness.open`. */
   constructor(context: BrowserContext, page: Page) {
     this.context = context;
     this.page = page;
-    page.on('console', (m) => { if (m.type() === 'error') this.errors.push(`console.error: ${m.text()}`); });
+    page.on('console', (m) => {
+      if (m.type() === 'error') this.errors.push(`console.error: ${m.text()}`);
+      this.consoleTail.push(`[${m.type()}] ${m.text()}`);
+      if (this.consoleTail.length > 40) this.consoleTail.shift();
+    });
+    page.on('crash', () => this.errors.push('page crashed'));
     page.on('pageerror', (e) => this.errors.push(`page error: ${e.message}`));
     page.on('response', (r) => { if (r.status() >= 400) this.errors.push(`HTTP ${r.status()}: ${r.url()}`); });
     page.on('requestfailed', (r) => this.errors.push(`request failed: ${r.url()} (${r.failure()?.errorText ?? 'unknown'})`));
@@ -138,11 +179,30 @@ export class GamePage {
    * @throws Error naming the page and listing its errors when `timeoutMs` (default 30 000) passes first.
    */
   async waitReady(timeoutMs = 30_000): Promise<void> {
+    let outcome: string;
     try {
-      await this.page.waitForFunction(() => document.body?.dataset.ready === 'true', null, { timeout: timeoutMs, polling: 50 });
+      // Ready, or an error box (the page stopped: no point waiting out the timeout).
+      const handle = await this.page.waitForFunction(() => {
+        if (document.body?.dataset.ready === 'true') return 'ready';
+        const box = document.querySelector('[data-page-error], [data-lab="error"], .bp-error');
+        return box ? `error box: ${box.textContent ?? ''}` : false;
+      }, null, { timeout: timeoutMs, polling: 50 });
+      outcome = String(await handle.jsonValue());
     } catch (error) {
-      throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; page errors: ${JSON.stringify(this.errors)}; ${String(error)}`);
+      throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}; ${String(error)}`);
     }
+    if (outcome !== 'ready') throw new Error(`${this.page.url()} stopped before it was ready: ${outcome}; ${this.describe()}`);
+  }
+
+  /** The page's errors and its last console lines, for failure messages. */
+  describe(): string {
+    return `page errors: ${JSON.stringify(this.errors)}; last console lines: ${JSON.stringify(this.consoleTail.slice(-10))}`;
+  }
+
+  /** `page.evaluate(fn, arg)`, failing with the page's errors after `timeoutMs` (default PAGE_TIMEOUT_MS) instead of hanging. */
+  evaluate<A, R>(fn: (arg: A) => R | Promise<R>, arg: A, what: string, timeoutMs = PAGE_TIMEOUT_MS): Promise<R> {
+    const work = this.page.evaluate(fn as (arg: unknown) => R | Promise<R>, arg as unknown) as Promise<R>;
+    return withTimeout(work, timeoutMs, `${this.page.url()}: ${what}`, () => this.describe());
   }
 
   /** `window.game.stats()`. @throws Error if the page has no window.game. */
@@ -160,15 +220,19 @@ export class GamePage {
   async waitFor<A, R>(predicate: (arg: A) => R, arg: A, timeoutMs = 10_000): Promise<Truthy<R>> {
     // The predicate is serialised and run in the page; playwright's generic "unboxed" argument type
     // does not line up with a plain generic, hence the widening.
-    const handle = await this.page.waitForFunction(predicate as (arg: unknown) => R, arg as unknown, { timeout: timeoutMs });
-    return (await handle.jsonValue()) as Truthy<R>;
+    try {
+      const handle = await this.page.waitForFunction(predicate as (arg: unknown) => R, arg as unknown, { timeout: timeoutMs });
+      return (await handle.jsonValue()) as Truthy<R>;
+    } catch (error) {
+      throw new Error(`${this.page.url()}: waitFor(${predicate.toString().slice(0, 120)}) failed; ${this.describe()}; ${String(error)}`);
+    }
   }
 
   /** Waits for `n` (>= 1) animation frames in the page. */
   async frames(n = 1): Promise<void> {
-    await this.page.evaluate(async (count) => {
+    await this.evaluate(async (count) => {
       for (let i = 0; i < count; i++) await new Promise<number>((r) => requestAnimationFrame(r));
-    }, n);
+    }, n, `waiting for ${n} animation frames`);
   }
 
   /**
@@ -180,7 +244,7 @@ export class GamePage {
    * @throws Error if there is no such canvas.
    */
   async canvasColors(selector = 'canvas'): Promise<number> {
-    const inPage = await this.page.evaluate(async (sel) => {
+    const inPage = await this.evaluate(async (sel: string) => {
       const canvas = document.querySelector(sel);
       if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
       await new Promise<number>((r) => requestAnimationFrame(r));
@@ -192,7 +256,7 @@ export class GamePage {
       const seen = new Set<number>();
       for (let i = 0; i < data.length; i += 4) seen.add((data[i]! << 16) | (data[i + 1]! << 8) | data[i + 2]!);
       return seen.size;
-    }, selector);
+    }, selector, `reading the colours of ${selector}`);
     if (inPage > 1) return inPage;
     return this.screenshotColors(selector);
   }

@@ -1,12 +1,19 @@
 /**
  * Opens every page of the gallery registry (games/<folder>/game.json) in headless Chromium and
  * checks the page contract: no console errors, page errors or failed requests; the ready flag;
- * window.game.stats(); a canvas that is not blank. The gallery itself must list every entry.
+ * window.game.stats(); a canvas that is not blank; no error box. The gallery itself must list every entry.
+ *
+ * Every page runs twice: with the language 'en-US@posix' (what Chromium reports under LANG=C.UTF-8;
+ * Intl rejects the tag, and uPlot's module used to throw on it) and with 'de-DE' (comma decimals).
+ * One browser and one server for all of them.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness, readRegistry } from './harness';
 
 const registry = await readRegistry();
+
+/** The browser languages every page must start under. */
+const LOCALES = ['en-US@posix', 'de-DE'] as const;
 
 describe('every registered page', () => {
   let h: Harness;
@@ -38,9 +45,10 @@ describe('every registered page', () => {
     await g.close();
   });
 
-  for (const entry of registry) {
-    it(`${entry.folder}: ready, window.game, canvas drawn, no errors`, async () => {
-      const g = await h.openGame(entry.folder);
+  for (const entry of registry) for (const locale of LOCALES) {
+    it(`${entry.folder} (${locale}): ready, window.game, canvas drawn, no errors`, async () => {
+      const g = await h.openGame(entry.folder, { locale });
+      expect(await g.page.evaluate(() => navigator.language)).toBe(locale === 'de-DE' ? 'de-DE' : 'en-US');
       const stats = await g.stats();
       expect(Number.isInteger(stats.entities) && stats.entities > 0).toBe(true);
       expect(Number.isInteger(stats.steps) && stats.steps >= 0).toBe(true);
@@ -49,6 +57,7 @@ describe('every registered page', () => {
       // A blank canvas has one colour; a drawn scene has many.
       expect(await g.canvasColors()).toBeGreaterThan(16);
       await g.frames(5);
+      expect(await g.page.locator('[data-page-error], [role="alert"]').allInnerTexts()).toEqual([]);
       expect(g.errors).toEqual([]);
       await g.close();
     });

@@ -1,20 +1,24 @@
 /**
- * Lab kit: the page furniture the six labs of Part II share (lab-projectile-drag, lab-orbits,
- * lab-integrators, lab-spring-chain, lab-bungee, lab-pendulum), on top of games/shared. The particle
- * labs use its readout, `fmt` and URL-parameter error box too (games/lab-galaxy/particle-kit.ts).
+ * Lab kit: the page furniture every lab shares, on top of the shell (./shell, ./pixi) and the plots
+ * (./plot). Layout, input and drawing only, no physics:
  *
- * - a dock on the right holding the lil-gui panel, a readout box and the uPlot charts;
- * - fitting the camera so a world rectangle lands beside the dock;
- * - URL parameters read behind a clear on-page error;
+ * - a dock on the right holding the lil-gui panel, a readout box and the uPlot charts
+ *   (`createLabDock`), or a column of plots at the bottom right (`createPlotDock`) with a one-line
+ *   status at the top (`createStatusLine`);
+ * - fitting the camera so a world rectangle lands beside the dock (`fitViewBeside`, `followView`,
+ *   `plotReserve`);
+ * - URL parameters read behind a clear on-page error (`readUrlParams`, `showPageError`);
+ * - readout lines (`createReadout`), number formatting (`fmt`), held keys (`trackHeldKeys`);
  * - interpolated positions, and pixi drawing helpers (springs, dashed lines, polylines from ring
- *   buffers) for what the WorldRenderer does not draw.
+ *   buffers) for what the WorldRenderer does not draw;
+ * - plot-axis helpers (`scaleFloor`, `scaleSeries`).
  *
- * It lives in this folder because the lab folders are what the labs own; it belongs in
- * games/shared (see the labs' report). No physics in here: only layout, input and drawing.
+ * The particle labs add ./particle-kit on top of it.
  */
 import type { Application, Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2, WorldRect } from '@bitphysics/render-pixi';
+import { createPlot, type Plot, type PlotOptions } from './plot';
 
 const STYLE_ID = 'bp-lab-style';
 const CSS = `
@@ -121,12 +125,12 @@ export function followView(app: Application, camera: Camera, dock: LabDock, view
 
 /**
  * Shows `message` in a red box in the middle of the page (bad URL parameters and other errors that
- * stop a lab before it starts).
+ * stop a lab before it starts). The box has `role="alert"` and `data-lab="error"`.
  */
 export function showPageError(message: string): void {
   injectStyle();
   const box = document.createElement('div');
-  box.className = 'bp-lab-error';
+  box.className = 'bp-lab-error lab-param-error';
   box.setAttribute('role', 'alert');
   box.dataset.lab = 'error';
   box.textContent = message;
@@ -134,16 +138,18 @@ export function showPageError(message: string): void {
 }
 
 /**
- * Runs `read` (which reads URL parameters with numberParam / choiceParam) and returns its value. If
- * it throws, the message is shown on the page with the accepted values, and the error is rethrown
- * so the page stops (and tests see it).
+ * Runs `read` (which reads URL parameters with numberParam / choiceParam / flagParam) and returns its
+ * value. If it throws, 'Bad URL parameter: <message>' is shown on the page (`showPageError`),
+ * followed by `usage` (the accepted values) when given, and the error is rethrown so the page stops
+ * (and tests see it).
+ * @throws whatever `read` throws (RangeError naming the parameter for the shared param readers).
  */
-export function readUrlParams<T>(read: () => T, usage: string): T {
+export function readUrlParams<T>(read: () => T, usage?: string): T {
   try {
     return read();
   } catch (error) {
     const message = error instanceof Error ? error.message : String(error);
-    showPageError(`${message}\n\n${usage}`);
+    showPageError(`Bad URL parameter: ${message}${usage ? `\n\n${usage}` : ''}`);
     throw error;
   }
 }
@@ -239,17 +245,10 @@ export function drawSpring(g: Graphics, x1: number, y1: number, x2: number, y2: 
   g.lineTo(x2 - ux * lead, y2 - uy * lead).lineTo(x2, y2).stroke({ width, color, alpha });
 }
 
-/** Draws a dashed straight line from (x1, y1) to (x2, y2), px: dashes of `dash` px, gaps of `gap` px. */
+/** Draws a dashed straight line from (x1, y1) to (x2, y2), px, and strokes it: dashes of `dash` px, gaps of `gap` px (`dashedLine`). */
 export function drawDashedLine(g: Graphics, x1: number, y1: number, x2: number, y2: number, width: number, color: number, alpha = 1, dash = 8, gap = 6): void {
-  const dx = x2 - x1, dy = y2 - y1;
-  const len = Math.sqrt(dx * dx + dy * dy);
-  if (len < 1e-6) return;
-  const ux = dx / len, uy = dy / len;
-  for (let s = 0; s < len; s += dash + gap) {
-    const e = Math.min(len, s + dash);
-    g.moveTo(x1 + ux * s, y1 + uy * s).lineTo(x1 + ux * e, y1 + uy * e);
-  }
-  g.stroke({ width, color, alpha });
+  if (x1 === x2 && y1 === y2) return;
+  dashedLine(g, x1, y1, x2, y2, dash, gap).stroke({ width, color, alpha });
 }
 
 /**
@@ -318,4 +317,138 @@ export class PathBuffer {
 /** Converts 0xRRGGBB to a CSS colour string. */
 export function cssColor(color: number): string {
   return `#${color.toString(16).padStart(6, '0')}`;
+}
+
+/** A column of plots fixed at the bottom right of the window. */
+export interface PlotDock {
+  /** The dock element. */
+  readonly element: HTMLElement;
+  /**
+   * Adds a live plot (see games/shared/plot.ts) sized to the window: width min(420, 45% of the
+   * window), height split between `rows` plots in about 62% of the window's height; 600 samples
+   * kept, redrawn every 10 (long dashed polylines are costly to draw under software WebGL).
+   * @throws whatever createPlot throws (empty series, bad sizes).
+   */
+  add(options: Omit<PlotOptions, 'parent'>): Plot;
+}
+
+/**
+ * Creates the plot dock for `rows` (1 to 3) stacked plots.
+ * @throws RangeError unless rows is 1, 2 or 3.
+ */
+export function createPlotDock(rows = 1): PlotDock {
+  if (!(rows === 1 || rows === 2 || rows === 3)) throw new RangeError(`createPlotDock: rows must be 1, 2 or 3, got ${rows}`);
+  const element = document.createElement('div');
+  element.className = 'lab-plots';
+  element.style.cssText = 'position:fixed;right:10px;bottom:10px;z-index:10;display:flex;flex-direction:column;gap:6px;pointer-events:none';
+  document.body.append(element);
+  const width = Math.round(Math.max(240, Math.min(420, window.innerWidth * 0.45)));
+  // The plots take at most 62% of the window's height; each adds about 62 px of title and legend to
+  // uPlot's height (which holds the drawing area and the axes).
+  const height = Math.round(Math.max(110, Math.min(220, (window.innerHeight * 0.62) / rows - 62)));
+  return {
+    element,
+    add(options) {
+      return createPlot({ width, height, capacity: 600, redrawEvery: 10, ...options, parent: element });
+    },
+  };
+}
+
+/**
+ * Tracks which of `keys` are held down (keydown / keyup on window, case-insensitive, ignored while
+ * typing in a text field or with Ctrl, Meta or Alt). Released all at once when the window loses focus.
+ * @returns `held(key)` and `dispose()`. @throws TypeError if `keys` is empty.
+ */
+export function trackHeldKeys(keys: readonly string[]): { held(key: string): boolean; dispose(): void } {
+  if (!Array.isArray(keys) || keys.length === 0) throw new TypeError('trackHeldKeys: keys must be a non-empty array');
+  const watched = new Set(keys.map((k) => k.toLowerCase()));
+  const down = new Set<string>();
+  const typing = (t: EventTarget | null): boolean => {
+    const el = t as HTMLElement | null;
+    return !!el && (el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' || (el.tagName === 'INPUT' && (el as HTMLInputElement).type === 'text'));
+  };
+  const onDown = (e: KeyboardEvent): void => {
+    const k = e.key.toLowerCase();
+    if (!watched.has(k) || e.ctrlKey || e.metaKey || e.altKey || typing(e.target)) return;
+    e.preventDefault();
+    down.add(k);
+  };
+  const onUp = (e: KeyboardEvent): void => { down.delete(e.key.toLowerCase()); };
+  const onBlur = (): void => down.clear();
+  window.addEventListener('keydown', onDown);
+  window.addEventListener('keyup', onUp);
+  window.addEventListener('blur', onBlur);
+  return {
+    held: (key: string) => down.has(key.toLowerCase()),
+    dispose() {
+      window.removeEventListener('keydown', onDown);
+      window.removeEventListener('keyup', onUp);
+      window.removeEventListener('blur', onBlur);
+    },
+  };
+}
+
+/**
+ * Adds a dashed line from (x0, y0) to (x1, y1), CSS px, to `g`'s current path (call `stroke` after):
+ * dashes of `dash` px separated by `gap` px (both > 0; a non-positive value draws a solid line).
+ */
+export function dashedLine(g: Graphics, x0: number, y0: number, x1: number, y1: number, dash = 6, gap = 4): Graphics {
+  const len = Math.hypot(x1 - x0, y1 - y0);
+  if (!(dash > 0 && gap > 0) || len === 0) return g.moveTo(x0, y0).lineTo(x1, y1);
+  const ux = (x1 - x0) / len, uy = (y1 - y0) / len;
+  for (let s = 0; s < len; s += dash + gap) {
+    const e = Math.min(len, s + dash);
+    g.moveTo(x0 + ux * s, y0 + uy * s).lineTo(x0 + ux * e, y0 + uy * e);
+  }
+  return g;
+}
+
+/**
+ * A one-line status readout at the top of the window, between the HUD (top left) and the panel (top
+ * right); DOM text, so updating it costs no texture upload. @returns `set(text)` (cheap when unchanged).
+ */
+export function createStatusLine(): { element: HTMLElement; set(text: string): void } {
+  const element = document.createElement('div');
+  element.className = 'lab-status';
+  element.setAttribute('aria-live', 'polite');
+  element.style.cssText = 'position:fixed;top:10px;left:220px;right:265px;z-index:10;text-align:center;pointer-events:none;' +
+    'font:13px/1.4 system-ui,sans-serif;color:#e8ecf1;text-shadow:0 1px 2px #000';
+  document.body.append(element);
+  let shown = '';
+  return {
+    element,
+    set(text: string) {
+      if (text !== shown) { shown = text; element.textContent = text; }
+    },
+  };
+}
+
+/**
+ * A plot series that keeps the y axis from zooming into rounding noise: games/shared/plot.ts has no
+ * y-range option, and uPlot autoscales to the data, so a measured value that agrees with its exact
+ * value to 1e-6 would fill the chart with noise. Push `scaleFloor(exact, fraction, sample)` into an
+ * extra series drawn with `SCALE_SERIES` (invisible): it alternates between exact (1 + fraction) and
+ * exact (1 - fraction) (|exact| fraction either side), so the axis always spans at least that band.
+ * NaN while `exact` is not finite.
+ */
+export function scaleFloor(exact: number, fraction: number, sample: number): number {
+  if (!Number.isFinite(exact)) return Number.NaN;
+  const d = Math.abs(exact) * fraction || fraction;
+  return sample % 2 === 0 ? exact + d : exact - d;
+}
+
+/** The invisible series that carries `scaleFloor` values (its legend entry names the band). */
+export function scaleSeries(fraction: number): { label: string; color: string } {
+  return { label: `(axis spans ±${Math.round(fraction * 100)}%)`, color: 'rgba(0,0,0,0)' };
+}
+
+/**
+ * Width, CSS px, that a lab should keep free at the right of its scene for the plot dock: the dock's
+ * width plus a margin on windows at least 900 px wide, 0 on narrower ones (there the plot overlaps
+ * the scene rather than shrink it to nothing; thumbnails, taken at 640 px, show the whole scene).
+ * Read once at start (views are laid out then).
+ */
+export function plotReserve(): number {
+  if (typeof window === 'undefined' || window.innerWidth < 900) return 0;
+  return Math.round(Math.max(240, Math.min(420, window.innerWidth * 0.45))) + 30;
 }
