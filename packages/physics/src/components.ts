@@ -13,6 +13,8 @@
  *   below (bitecs recycles ids and leaves old data behind, so nothing is inherited).
  */
 
+import { createJointStore, type JointStore } from './joints/store.js';
+
 /** A 3-vector store: one Float64Array a component. */
 export interface Vec3Store {
   /** x component, per entity. */
@@ -239,6 +241,11 @@ export interface Components {
    * segment; its Material gives restitution and friction.
    */
   Plane: { nx: Float64Array; ny: Float64Array; nz: Float64Array; d: Float64Array };
+  /**
+   * A joint between two 2D bodies (its own entity: see joints/store.ts for every field and
+   * joints/api.ts for addDistanceJoint, addRevoluteJoint, ...). Removing either body removes it.
+   */
+  Joint: JointStore;
 }
 
 /**
@@ -252,7 +259,7 @@ export interface Components {
 export const LAZY_COMPONENTS = [
   'LinearDrag', 'QuadraticDrag', 'GravityScale', 'Attractor', 'Charge', 'ElectricField', 'MagneticField',
   'CentralForce', 'Lift', 'Buoyancy', 'FluidRegion', 'Spring', 'DrivingForce', 'RandomForce', 'Thrust', 'Vortex',
-  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane',
+  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Joint',
 ] as const satisfies ReadonlyArray<keyof Components>;
 
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
@@ -333,6 +340,7 @@ export function createComponents(capacity: number): Components {
     InertiaTensor: { x: z(), y: z(), z: z(), invX: z(), invY: z(), invZ: z() },
     AngularDamping: { k: z() },
     Plane: { nx: z(), ny: z(), nz: z(), d: z() },
+    Joint: createJointStore(),
   };
 }
 

@@ -88,4 +88,14 @@ export { query, Not } from './query.js';
  * bitecs is a peer dependency: the project and every bitphysics package share one copy.
  */
 export { entityExists, hasComponent, addComponent, removeComponent, getEntityComponents } from 'bitecs';
+export {
+  addDistanceJoint, addRevoluteJoint, addPrismaticJoint, addWeldJoint, addWheelJoint, addMouseJoint, removeJoint, isJoint,
+  setMouseTarget, setJointMotor, setJointLimits, setJointSpring, jointLength, jointAngle, jointAnchors,
+} from './joints/api.js';
+export type {
+  JointBaseOptions, DistanceJointOptions, RevoluteJointOptions, PrismaticJointOptions, WeldJointOptions, WheelJointOptions, MouseJointOptions,
+} from './joints/api.js';
+export { JointType, JointFlag, JOINT_TYPE_NAMES } from './joints/store.js';
+export type { JointStore, JointTypeCode } from './joints/store.js';
+export type { JointState, JointSettings, JointBreakEvents } from './joints/state.js';
 export * from './scenes/index.js';

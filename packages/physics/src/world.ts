@@ -7,6 +7,8 @@ import { Rng } from './rng.js';
 import { createForceLawSettings, type ForceLawSettings } from './forces/settings.js';
 import { removeSpringsOf } from './forces/spring.js';
 import { wakeTouching } from './collision/sleep.js';
+import { createJointState, type JointState } from './joints/state.js';
+import { removeJointsOf } from './joints/remove.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
@@ -96,6 +98,8 @@ export interface PhysicsWorldContext {
   readonly stages: Record<StageName, System[]>;
   /** Collision configuration, broadphase grid, contacts and solver scratch; see `CollisionState`. */
   readonly collision: CollisionState;
+  /** Joint solver state: packed rows, warm-start impulses, break events of the last step (`joints.breaks`); see joints/state.ts. */
+  readonly joints: JointState;
   /** Milliseconds spent in each stage in the last step. */
   readonly timings: StageTimings;
   /**
@@ -180,10 +184,11 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     components,
     stages: createStages(),
     collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold, sleep }),
+    joints: createJointState(),
     timings,
     spawnStamp: new Uint32Array(capacity + 1),
     entityIndex,
-    removeHooks: [removeSpringsOf, wakeTouching],
+    removeHooks: [removeSpringsOf, removeJointsOf, wakeTouching],
     interpolation,
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;

@@ -1,6 +1,7 @@
 import { addComponent, entityExists, hasComponent, removeComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query, Not } from '../query.js';
+import { joinJointIslands, markJointSupport } from '../joints/islands.js';
 import { describe } from '../validate.js';
 
 /**
@@ -104,6 +105,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     if (rows.normalImpulse[i]! <= 0) continue;
     supported[rows.a[i]!] = stamp; supported[rows.b[i]!] = stamp;
   }
+  markJointSupport(world, supported, stamp);
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
@@ -133,6 +135,8 @@ export function sleepSystem(world: PhysicsWorld): void {
     const ra = find(a), rb = find(b);
     if (ra !== rb) parent[ra] = rb;
   }
+  // ... and over joints.
+  joinJointIslands(world, bodies, rest, parent);
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;

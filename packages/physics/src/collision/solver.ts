@@ -4,6 +4,7 @@ import { BodyType } from './broadphase.js';
 import { reportNonFinite } from '../errors.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import type { CollisionState } from './state.js';
+import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -32,7 +33,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   cs.stats.maxOverlap = 0;
-  if (buf.count === 0) {
+  if (!jointsToSolve(world) && buf.count === 0) {
     cs.contacts = storeWarmStart(cs.cache, buf);
     return;
   }
@@ -47,16 +48,21 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const hertz = Math.min(st.contactHertz, 0.25 / hs);
   const dyn = makeSoft(hertz, st.contactDampingRatio, hs);
   const rigid = makeSoft(2 * hertz, st.contactDampingRatio, hs);
+  prepareJoints(world, hs);
   const is2D = world.dimensions === 2;
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   for (let s = 0; s < substeps; s++) {
     integrateVelocities(world, hs);
+    warmStartJoints(world);
     if (is2D) warmStart2D(cs, buf); else warmStart3D(cs, buf);
     for (let it = 0; it < st.solverIterations; it++) {
+      solveJoints(world, hs, true);
       if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
     }
     integratePositions(world, hs);
+    integrateJointRotations(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
+      solveJoints(world, hs, false);
       if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
     }
     // The accumulated impulse is what this substep delivered (warm start plus corrections).
@@ -64,6 +70,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   }
   applyRestitution(world, buf);
   finishBodies(world, buf);
+  finishJoints(world, hs);
   cs.contacts = storeWarmStart(cs.cache, buf);
 }
 
@@ -124,6 +131,8 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     IB[i] = index[b]!;
   }
   cs.solverBodies = list;
+  count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
+  list = cs.solverBodies;
   cs.solverBodyCount = count;
 
   const S = stride(world);

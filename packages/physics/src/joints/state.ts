@@ -1,0 +1,118 @@
+/**
+ * What the joint solver keeps between and within steps, apart from the `Joint` components: the
+ * packed solver rows of this step, the accumulated impulses that warm-start the next step, each
+ * solver body's rotation within the step, and the break events of the last step.
+ */
+
+/** Floats per solver row (see the offsets in joints/solver.ts). */
+export const ROW_FLOATS = 40;
+/** Integers per solver row: joint entity, solver index of A, of B, type. */
+export const ROW_INTS = 4;
+/** Accumulated impulses kept per joint entity for warm starting (linear x, y, angular, spring, motor, lower, upper). */
+export const IMPULSES = 7;
+
+/** Joints broken in the last step, in the order they broke (rows 0..count-1). Read after `step`. */
+export interface JointBreakEvents {
+  /** Events in use. */
+  count: number;
+  /** The joint entity that broke (it no longer exists). */
+  joint: Int32Array;
+  /** Its bodies A (0 = the world) and B. */
+  a: Int32Array;
+  b: Int32Array;
+  /** Its constraint force, N, and torque, N m, in the step it broke. */
+  force: Float64Array;
+  torque: Float64Array;
+  /** Its strain (length - rest) / rest when it broke (distance joints; 0 for others). */
+  stretch: Float64Array;
+}
+
+/** Joint solver tuning; may be changed between steps. */
+export interface JointSettings {
+  /**
+   * Damping ratio of the rigid joint constraints' softness (Box2D v3: joints are soft constraints of
+   * twice the contact stiffness, jointDampingRatio 2). Dimensionless, >= 0. Default 2.
+   */
+  dampingRatio: number;
+  /** Whether last step's impulses start this step's solve (warm starting). Default true. */
+  warmStarting: boolean;
+}
+
+/** The joint solver's state (world.joints). */
+export interface JointState {
+  readonly settings: JointSettings;
+  /** Rows built this (sub)step. */
+  rowCount: number;
+  /** Packed rows: ROW_FLOATS floats and ROW_INTS integers each, grown by doubling. */
+  rows: Float64Array;
+  rowInts: Int32Array;
+  /** Per joint entity, IMPULSES accumulated impulses of the last solve (N s, N m s); allocated with the first joint. */
+  impulses: Float64Array;
+  /** Per entity: how many joints hold it (so removing a body without joints costs nothing). */
+  attached: Int32Array;
+  /** Per solver body: cos, sin and angle (rad) of its rotation since the start of the step. */
+  rotation: Float64Array;
+  /** Per entity scratch: stamp of the classification below, and the body's class (0 dynamic, 1 kinematic, 2 static, 3 sleeping). */
+  bodyStamp: Uint32Array;
+  bodyClass: Uint8Array;
+  stamp: number;
+  /** Joints broken in the last step. */
+  readonly breaks: JointBreakEvents;
+  /** `world.steps` when `breaks` was last cleared. */
+  breaksStep: number;
+  /** Statistics of the last solve: rows solved, largest position error left (m: anchor separation or length error), its joint. */
+  readonly stats: { rows: number; maxError: number; maxErrorJoint: number };
+}
+
+/** Creates an empty joint state (arrays sized when the first joint appears). */
+export function createJointState(): JointState {
+  return {
+    settings: { dampingRatio: 2, warmStarting: true },
+    rowCount: 0,
+    rows: new Float64Array(0),
+    rowInts: new Int32Array(0),
+    impulses: new Float64Array(0),
+    attached: new Int32Array(0),
+    rotation: new Float64Array(0),
+    bodyStamp: new Uint32Array(0),
+    bodyClass: new Uint8Array(0),
+    stamp: 0,
+    breaks: {
+      count: 0, joint: new Int32Array(16), a: new Int32Array(16), b: new Int32Array(16),
+      force: new Float64Array(16), torque: new Float64Array(16), stretch: new Float64Array(16),
+    },
+    breaksStep: -1,
+    stats: { rows: 0, maxError: 0, maxErrorJoint: 0 },
+  };
+}
+
+/** Allocates the per-entity arrays of `state` for a world of `capacity` entities (on the first joint). */
+export function ensureJointArrays(state: JointState, capacity: number): void {
+  if (state.impulses.length >= IMPULSES * (capacity + 1)) return;
+  state.impulses = new Float64Array(IMPULSES * (capacity + 1));
+  state.attached = new Int32Array(capacity + 1);
+  state.bodyStamp = new Uint32Array(capacity + 1);
+  state.bodyClass = new Uint8Array(capacity + 1);
+}
+
+/** Grows the rows to hold `n`. */
+export function ensureRows(state: JointState, n: number): void {
+  if (state.rows.length >= n * ROW_FLOATS) return;
+  let cap = Math.max(16, state.rows.length / ROW_FLOATS);
+  while (cap < n) cap *= 2;
+  state.rows = new Float64Array(cap * ROW_FLOATS);
+  state.rowInts = new Int32Array(cap * ROW_INTS);
+}
+
+/** Appends a break event, growing the buffer by doubling. */
+export function pushBreak(ev: JointBreakEvents, joint: number, a: number, b: number, force: number, torque: number, stretch: number): void {
+  if (ev.count >= ev.joint.length) {
+    const n = ev.joint.length * 2;
+    const gi = (o: Int32Array) => { const x = new Int32Array(n); x.set(o); return x; };
+    const gf = (o: Float64Array) => { const x = new Float64Array(n); x.set(o); return x; };
+    ev.joint = gi(ev.joint); ev.a = gi(ev.a); ev.b = gi(ev.b);
+    ev.force = gf(ev.force); ev.torque = gf(ev.torque); ev.stretch = gf(ev.stretch);
+  }
+  const i = ev.count++;
+  ev.joint[i] = joint; ev.a[i] = a; ev.b[i] = b; ev.force[i] = force; ev.torque[i] = torque; ev.stretch[i] = stretch;
+}
