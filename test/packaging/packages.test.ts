@@ -1,0 +1,167 @@
+/**
+ * The packages as a user gets them: every library package is built and packed (`npm pack`, via
+ * scripts/pack.mjs), the tarballs are installed into a fresh project in the system's temp folder
+ * (outside the workspace, so nothing resolves through the workspace's links or the
+ * `bitphysics-source` condition; peer dependencies come from the npm cache or registry), and there
+ * the README's named code blocks (```` ```ts file=... ````) are
+ *  - type-checked under strict, noUncheckedIndexedAccess and skipLibCheck false, once with
+ *    moduleResolution bundler and once with node16;
+ *  - the headless one run by Node's own resolver (the packages' `exports` for Node);
+ *  - the pages bundled with esbuild and opened in headless Chromium, which must draw and log no error.
+ */
+import { execFile } from 'node:child_process';
+import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { promisify } from 'node:util';
+import * as esbuild from 'esbuild';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { readmeBlocks } from './readme-blocks';
+
+const run = promisify(execFile);
+const tsc = join(repoRoot, 'node_modules', 'typescript', 'bin', 'tsc');
+
+/** The examples the README must carry (file names of its named blocks). */
+const TS_EXAMPLES = ['headless.ts', 'main.ts', 'main3d.ts'];
+
+/**
+ * Diagnostics from pixi.js 8's own declarations under node16: its package.json has no
+ * `"type": "module"`, so TypeScript reads its .d.ts files as CommonJS (TS1479, TS1542). The README
+ * says so; every other diagnostic fails the test.
+ */
+const UPSTREAM_NODE16 = /^node_modules\/pixi\.js\/.*error TS(1479|1542):/;
+
+let project = '';
+
+beforeAll(async () => {
+  project = mkdtempSync(join(tmpdir(), 'bitphysics-consumer-'));
+  const { packPackages } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'pack.mjs')).href)) as {
+    packPackages(options: { destination: string }): Promise<{ name: string; file: string }[]>;
+  };
+  const tarballs = await packPackages({ destination: join(project, 'tarballs') });
+  expect(tarballs.map((t) => t.name)).toEqual(['@bitphysics/physics', '@bitphysics/render-common', '@bitphysics/render-pixi', '@bitphysics/render-three']);
+  writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }, null, 2));
+  await run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error', ...tarballs.map((t) => t.file)], { cwd: project });
+  const blocks = readmeBlocks();
+  for (const file of [...TS_EXAMPLES, 'index.html']) {
+    const block = blocks.get(file);
+    if (!block) throw new Error(`README.md has no code block named file=${file}`);
+    writeFileSync(join(project, file), block.code);
+  }
+}, 180_000);
+
+afterAll(() => {
+  if (project) rmSync(project, { recursive: true, force: true });
+});
+
+/** Runs the workspace's tsc on the examples with `moduleResolution`; returns its diagnostics, one a line. */
+async function typeCheck(moduleResolution: 'bundler' | 'node16'): Promise<string[]> {
+  const config = `tsconfig.${moduleResolution}.json`;
+  writeFileSync(join(project, config), JSON.stringify({
+    compilerOptions: {
+      target: 'ES2022',
+      module: moduleResolution === 'node16' ? 'node16' : 'esnext',
+      moduleResolution,
+      lib: ['ES2023', 'DOM', 'DOM.Iterable'],
+      types: [],
+      strict: true,
+      noUncheckedIndexedAccess: true,
+      skipLibCheck: false,
+      noEmit: true,
+    },
+    files: TS_EXAMPLES,
+  }, null, 2));
+  try {
+    await run(process.execPath, [tsc, '-p', config], { cwd: project });
+    return [];
+  } catch (error) {
+    const out = (error as { stdout?: string }).stdout ?? String(error);
+    return out.split('\n').filter((line) => /error TS\d+/.test(line));
+  }
+}
+
+describe('the packed packages in a fresh project', () => {
+  it('hold only dist/, src/, the readme, the changelog and the manifest', () => {
+    for (const name of ['physics', 'render-common', 'render-pixi', 'render-three']) {
+      const dir = join(project, 'node_modules', '@bitphysics', name);
+      expect(readdirSync(dir).sort()).toEqual(['CHANGELOG.md', 'README.md', 'dist', 'package.json', 'src']);
+      expect(readdirSync(join(dir, 'dist'))).toContain('index.d.ts.map');
+    }
+    // One copy of each peer: nothing nested under the bitphysics packages.
+    for (const name of ['physics', 'render-pixi', 'render-three']) {
+      expect(() => readdirSync(join(project, 'node_modules', '@bitphysics', name, 'node_modules'))).toThrow();
+    }
+  });
+
+  it('type-check the README examples with moduleResolution bundler', async () => {
+    expect(await typeCheck('bundler')).toEqual([]);
+  }, 60_000);
+
+  it('type-check the README examples with moduleResolution node16 (only pixi.js\'s own two CommonJS complaints)', async () => {
+    const errors = await typeCheck('node16');
+    expect(errors.filter((line) => !UPSTREAM_NODE16.test(line))).toEqual([]);
+  }, 60_000);
+
+  it('run the headless example in Node', async () => {
+    const { code } = await esbuild.transform(readmeBlocks().get('headless.ts')!.code, { loader: 'ts', format: 'esm', target: 'node20' });
+    writeFileSync(join(project, 'headless.mjs'), code);
+    const { stdout } = await run(process.execPath, ['headless.mjs'], { cwd: project });
+    // The example prints the ball's x and y, m, after 10 s: inside its 20 m x 12 m box.
+    const [x, y] = stdout.trim().split(/\s+/).map(Number);
+    expect(x).toBeGreaterThan(0);
+    expect(x).toBeLessThan(20);
+    expect(y).toBeGreaterThan(0);
+    expect(y).toBeLessThan(12);
+  }, 30_000);
+
+  it('bundle the pages with esbuild and run them in Chromium without an error', async () => {
+    const out = join(project, 'site');
+    await esbuild.build({
+      absWorkingDir: project,
+      entryPoints: ['main.ts', 'main3d.ts'],
+      outdir: out,
+      bundle: true,
+      format: 'esm',
+      target: 'es2022',
+      logLevel: 'silent',
+    });
+    const html = readmeBlocks().get('index.html')!.code;
+    writeFileSync(join(out, 'index.html'), html);
+    writeFileSync(join(out, 'index3d.html'), html.replace('./main.js', './main3d.js'));
+    const server = await esbuild.context({ entryPoints: [], logLevel: 'silent' });
+    const { port } = await server.serve({ host: '127.0.0.1', port: 0, servedir: out });
+    const browser = await launchChromium();
+    try {
+      for (const page of ['index.html', 'index3d.html']) {
+        const context = await browser.newContext({ viewport: { width: 640, height: 400 }, locale: 'en-US' });
+        const tab = await context.newPage();
+        const errors: string[] = [];
+        tab.on('console', (m) => { if (m.type() === 'error') errors.push(`console.error: ${m.text()}`); });
+        tab.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+        tab.on('response', (r) => { if (r.status() >= 400) errors.push(`HTTP ${r.status()}: ${r.url()}`); });
+        await tab.goto(`http://127.0.0.1:${port}/${page}`);
+        await tab.waitForFunction(() => document.querySelector('canvas') !== null, null, { timeout: 20_000 });
+        // A few frames, then the canvas must show more than its background.
+        const colors = await tab.evaluate(async () => {
+          for (let i = 0; i < 10; i++) await new Promise((r) => requestAnimationFrame(r));
+          const canvas = document.querySelector('canvas')!;
+          const copy = new OffscreenCanvas(canvas.width, canvas.height).getContext('2d')!;
+          await new Promise((r) => requestAnimationFrame(r));
+          copy.drawImage(canvas, 0, 0);
+          const data = copy.getImageData(0, 0, canvas.width, canvas.height).data;
+          const seen = new Set<number>();
+          for (let i = 0; i < data.length; i += 4) seen.add((data[i]! << 16) | (data[i + 1]! << 8) | data[i + 2]!);
+          return seen.size;
+        });
+        expect(errors, page).toEqual([]);
+        expect(colors, page).toBeGreaterThan(2);
+        await context.close();
+      }
+    } finally {
+      await browser.close();
+      await server.dispose();
+    }
+  }, 60_000);
+});
