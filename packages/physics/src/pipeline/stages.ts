@@ -21,7 +21,7 @@ import { sleepSystem, wakeSystem } from '../collision/sleep.js';
 export type System = (world: PhysicsWorld) => void;
 
 /**
- * The stages of a step, in order (DESIGN.md, "The step"):
+ * The stages of a step, in order (docs/architecture.md, "The step"):
  * 1. `spawn`: waking, then lifetimes and emitters (once per step);
  * 2. `clearForces`: zero the force and torque accumulators;
  * 3. `forces`: one system per force law, user forces too;
