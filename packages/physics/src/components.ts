@@ -242,6 +242,38 @@ export interface Components {
    */
   Plane: { nx: Float64Array; ny: Float64Array; nz: Float64Array; d: Float64Array };
   /**
+   * Ballast tanks of a submarine (forces/ballast.ts, `setBallast`): a fore and an aft tank of
+   * `capacity` kg of water each, `fore` and `aft` their fill fractions in [0, 1] moving towards
+   * `foreTarget` / `aftTarget` at `rate` (fraction/s); the body's mass is `dryMass` + capacity
+   * (fore + aft). In 2D the tanks sit `arm` m fore and aft of the centre of mass along the hull, and
+   * the hull has the metacentric height `metacentricHeight` m (its centre of buoyancy above its
+   * centre of mass), which give the trim torques.
+   */
+  Ballast: {
+    dryMass: Float64Array; capacity: Float64Array; fore: Float64Array; aft: Float64Array;
+    foreTarget: Float64Array; aftTarget: Float64Array; rate: Float64Array; arm: Float64Array; metacentricHeight: Float64Array;
+  };
+  /**
+   * A force fixed in the body frame, N (x, y, z; z unused in 2D), applied at the centre of mass and
+   * turned with the body (`Orientation` in 3D, `Angle` in 2D): a propeller, a jet, a ship's screw.
+   * Set with `setBodyThrust` (forces/body-thrust.ts).
+   */
+  BodyThrust: { x: Float64Array; y: Float64Array; z: Float64Array };
+  /**
+   * A lifting surface (wing half, tailplane, fin) of a rigid 3D body (forces/lifting-surface.ts,
+   * `addLiftingSurface`): its own entity holding the `body` (entity id), the point `offset` (m, body
+   * frame) where its force acts, its unit `normal` (body frame; the chord is the body's x axis),
+   * `area` m^2, lift slope `liftSlope` (1/rad), `stallAngle` rad, zero-lift drag `dragZero`, induced
+   * drag factor `inducedDrag`, and a control surface: `deflection` rad times `controlPower` (1/rad).
+   * Air density `airDensity` kg/m^3.
+   */
+  LiftingSurface: {
+    body: Int32Array; offsetX: Float64Array; offsetY: Float64Array; offsetZ: Float64Array;
+    normalX: Float64Array; normalY: Float64Array; normalZ: Float64Array; area: Float64Array;
+    liftSlope: Float64Array; stallAngle: Float64Array; dragZero: Float64Array; inducedDrag: Float64Array;
+    deflection: Float64Array; controlPower: Float64Array; airDensity: Float64Array;
+  };
+  /**
    * A joint between two 2D bodies (its own entity: see joints/store.ts for every field and
    * joints/api.ts for addDistanceJoint, addRevoluteJoint, ...). Removing either body removes it.
    */
@@ -259,7 +291,7 @@ export interface Components {
 export const LAZY_COMPONENTS = [
   'LinearDrag', 'QuadraticDrag', 'GravityScale', 'Attractor', 'Charge', 'ElectricField', 'MagneticField',
   'CentralForce', 'Lift', 'Buoyancy', 'FluidRegion', 'Spring', 'DrivingForce', 'RandomForce', 'Thrust', 'Vortex',
-  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Joint',
+  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Ballast', 'LiftingSurface', 'BodyThrust', 'Joint',
 ] as const satisfies ReadonlyArray<keyof Components>;
 
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
@@ -340,6 +372,14 @@ export function createComponents(capacity: number): Components {
     InertiaTensor: { x: z(), y: z(), z: z(), invX: z(), invY: z(), invZ: z() },
     AngularDamping: { k: z() },
     Plane: { nx: z(), ny: z(), nz: z(), d: z() },
+    Ballast: {
+      dryMass: z(), capacity: z(), fore: z(), aft: z(), foreTarget: z(), aftTarget: z(), rate: z(), arm: z(), metacentricHeight: z(),
+    },
+    BodyThrust: { x: z(), y: z(), z: z() },
+    LiftingSurface: {
+      body: new Int32Array(0), offsetX: z(), offsetY: z(), offsetZ: z(), normalX: z(), normalY: z(), normalZ: z(), area: z(),
+      liftSlope: z(), stallAngle: z(), dragZero: z(), inducedDrag: z(), deflection: z(), controlPower: z(), airDensity: z(),
+    },
     Joint: createJointStore(),
   };
 }

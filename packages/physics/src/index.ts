@@ -71,6 +71,13 @@ export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid.
 export { springSystem } from './forces/spring.js';
 export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving.js';
 export { thrustSystem, burnFuelSystem } from './forces/thrust.js';
+export { setBallast, setBallastTarget, ballastTrimSystem, ballastFillSystem } from './forces/ballast.js';
+export type { BallastOptions } from './forces/ballast.js';
+export { setBodyThrust, bodyThrustSystem } from './forces/body-thrust.js';
+export {
+  addLiftingSurface, setControlDeflection, liftingSurfaceSystem, liftCoefficient, dragCoefficient, removeSurfacesOf, DEFAULT_LIFT_SLOPE,
+} from './forces/lifting-surface.js';
+export type { LiftingSurfaceOptions } from './forces/lifting-surface.js';
 export {
   buildTree, treeField, treeFields, treeFieldsSorted, worldTree, worldTreeFields, barnesHutGravity,
 } from './forces/barnes-hut.js';

@@ -9,6 +9,9 @@ import { springSystem } from '../forces/spring.js';
 import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
 import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
 import { angularDampingSystem } from '../forces/angular-damping.js';
+import { ballastFillSystem, ballastTrimSystem } from '../forces/ballast.js';
+import { bodyThrustSystem } from '../forces/body-thrust.js';
+import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
 import { vortexSystem } from '../forces/vortex.js';
 import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
 import { integrateSystem } from '../integrators/integrate.js';
@@ -51,10 +54,11 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
     systems: [
       gravityScaleSystem, mutualGravitySystem, attractorSystem, coulombSystem, lorentzSystem, centralForceSystem,
       linearDragSystem, quadraticDragSystem, liftSystem, buoyancySystem, springSystem, drivingForceSystem,
-      randomForceSystem, thrustSystem, angularDampingSystem, vortexSystem,
+      randomForceSystem, thrustSystem, angularDampingSystem, vortexSystem, bodyThrustSystem, liftingSurfaceSystem,
+      ballastTrimSystem,
     ],
   },
-  { stage: 'integrate', systems: [integrateSystem, burnFuelSystem] },
+  { stage: 'integrate', systems: [integrateSystem, burnFuelSystem, ballastFillSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [] },
   { stage: 'finalize', systems: [sleepSystem] },

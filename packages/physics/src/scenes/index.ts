@@ -31,3 +31,7 @@ export {
   SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_PLANETS, SOLAR_SYSTEM_FLOOR, SOLAR_SYSTEM_EPOCH, AU, DAY,
 } from './solar-system.js';
 export type { SolarSystemBody, SolarSystemPlanet, SolarSystemOptions, SolarSystemHandles } from './solar-system.js';
+export { submarine, seabedHeight, SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY } from './submarine.js';
+export type { SubmarineOptions, SubmarineHandles } from './submarine.js';
+export { aircraft, aircraftLevelDrag, terrainHeight, AIRCRAFT, AIRCRAFT_TRIM_SPEED } from './aircraft.js';
+export type { AircraftOptions, AircraftHandles } from './aircraft.js';

@@ -1,0 +1,152 @@
+import type { PhysicsWorld } from '../world.js';
+import { addBody } from '../bodies.js';
+import { addFluidRegion, setBuoyancy } from '../forces/api.js';
+import { setBallast } from '../forces/ballast.js';
+import { setBodyThrust } from '../forces/body-thrust.js';
+import { inertiaOfRectangle, setAngularDamping, setInertia } from '../rigid.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { SceneDefinition } from './types.js';
+
+/**
+ * The book's submarine (Ramtal and Dobre ch. 16) grown up, in SI units, 2D (x along the sea, y up,
+ * the water's surface at y = 0): a 12 m x 3 m hull of 3 m beam, so the water is 2D with the density
+ * of sea water times the beam (1025 kg/m^3 x 3 m). Its buoyancy is Archimedes' (the `Buoyancy` law
+ * on a box), its drag quadratic and scaled by the submerged fraction, two ballast tanks flood and
+ * blow (the `Ballast` law: mass, trim), a screw pushes along the hull (`BodyThrust`), and the hull
+ * turns with angular damping. A seeded seabed and beacons to collect make it a game.
+ */
+export const SUBMARINE = Object.freeze({
+  /** Hull length and height, m. */
+  length: 12, height: 3,
+  /** Hull beam (width across), m: the 2D water density is the sea's times this. */
+  beam: 3,
+  /** Sea water, kg/m^3. */
+  seaWaterDensity: 1025,
+  /** Mass with empty tanks, kg. */
+  dryMass: 80_000,
+  /** Water each of the two tanks holds, kg. */
+  tankCapacity: 20_000,
+  /** Tank fill rate, fraction per second. */
+  fillRate: 0.08,
+  /** Distance of each tank from the centre along the hull, m. */
+  tankArm: 4,
+  /** Height of the centre of buoyancy above the centre of mass, m. */
+  metacentricHeight: 1.5,
+  /** Quadratic drag coefficient of the fully submerged hull, kg/m: F = k v^2. */
+  dragCoefficient: 1200,
+  /** Largest screw thrust, N. */
+  maxThrust: 120_000,
+  /** Rotational damping of the hull in water, N m s. */
+  angularDamping: 1.5e6,
+});
+
+/** Sea water per unit depth of the 2D world, kg/m^2. */
+export const SUBMARINE_WATER_DENSITY = SUBMARINE.seaWaterDensity * SUBMARINE.beam;
+
+/**
+ * The tank fill (both tanks alike) at which the fully submerged hull is neutrally buoyant, by
+ * Archimedes: dryMass + 2 capacity f = rho V, f = (rho L H - dryMass) / (2 capacity) (0.7675).
+ */
+export const SUBMARINE_NEUTRAL_FILL =
+  (SUBMARINE_WATER_DENSITY * SUBMARINE.length * SUBMARINE.height - SUBMARINE.dryMass) / (2 * SUBMARINE.tankCapacity);
+
+/** Options of the `submarine` scene. */
+export interface SubmarineOptions {
+  /** Beacons to collect, integer in [0, 64]. Default 6. */
+  count?: number;
+  /** Seed of the seabed and beacons; any finite number. Default 1. */
+  seed?: number;
+  /** Initial tank fill (both tanks), in [0, 1]. Default 0 (floating on the surface). */
+  fill?: number;
+  /** Initial centre of the hull, m (x, y). Default floating at x = 0. */
+  position?: readonly [number, number];
+}
+
+/** What `submarine.build` returns. */
+export interface SubmarineHandles {
+  /** The hull (entity). */
+  readonly hull: number;
+  /** The sea (FluidRegion entity; its `surface` is y of the water line, m). */
+  readonly sea: number;
+  /** The seabed: heights y (m, negative) every `dx` m from x = `x0`. */
+  readonly seabed: { readonly x0: number; readonly dx: number; readonly y: Float64Array };
+  /** Beacons to collect: (x, y) pairs, m. */
+  readonly beacons: Float64Array;
+}
+
+/** Seabed height at x, m, by linear interpolation of `seabed` (clamped at its ends). */
+export function seabedHeight(seabed: SubmarineHandles['seabed'], x: number): number {
+  const t = (x - seabed.x0) / seabed.dx;
+  const n = seabed.y.length;
+  if (t <= 0) return seabed.y[0]!;
+  if (t >= n - 1) return seabed.y[n - 1]!;
+  const i = Math.floor(t), f = t - i;
+  return seabed.y[i]! * (1 - f) + seabed.y[i + 1]! * f;
+}
+
+/**
+ * `submarine`: the hull floating at x = 0 (or where asked), the sea (y < 0), a seeded seabed from
+ * x = -100 to 1,100 m between 40 and 150 m deep, and `count` beacons between it and the surface.
+ */
+export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
+  name: 'submarine',
+  description: 'A submarine with buoyancy, ballast tanks, thrust and drag in a sea with a seabed and beacons (SI, 2D)',
+  defaultCount: 6,
+  worldOptions() {
+    return { dimensions: 2, capacity: 16, gravity: [0, -9.81], dt: 1 / 60, sleep: false };
+  },
+  build(world: PhysicsWorld, options: SubmarineOptions = {}) {
+    const where = 'submarine.build';
+    assertKnownKeys(where, options, ['count', 'seed', 'fill', 'position']);
+    if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
+    const count = options.count ?? 6;
+    assertInteger(where, 'count', count, 0, 64);
+    const seed = options.seed ?? 1;
+    assertFinite(where, 'seed', seed);
+    const fill = options.fill ?? 0;
+    assertFinite(where, 'fill', fill);
+    if (fill < 0 || fill > 1) throw new RangeError(`${where}: fill must be in [0, 1], got ${fill}`);
+    const S = SUBMARINE;
+    const mass = S.dryMass + 2 * S.tankCapacity * fill;
+    // Floating draft d from rho L d = m (a box), capped at the hull's height.
+    const draft = Math.min(S.height, mass / (SUBMARINE_WATER_DENSITY * S.length));
+    const position = options.position ?? [0, S.height / 2 - draft];
+    if (!Array.isArray(position) || position.length !== 2) throw new TypeError(`${where}: position must be [x, y], got ${String(position)}`);
+    assertFinite(where, 'position[0]', position[0]);
+    assertFinite(where, 'position[1]', position[1]);
+    if (world.capacity - world.entityIndex.aliveCount < 2) throw new RangeError(`${where}: the world needs room for 2 more entities`);
+
+    const sea = addFluidRegion(world, { surface: 0, density: SUBMARINE_WATER_DENSITY });
+    const hull = addBody(world, { position: [position[0], position[1]], mass });
+    setInertia(world, hull, inertiaOfRectangle(mass, S.length, S.height));
+    setBuoyancy(world, hull, { shape: 'box', halfExtents: [S.length / 2, S.height / 2], dragCoefficient: S.dragCoefficient });
+    setBallast(world, hull, {
+      dryMass: S.dryMass, capacity: S.tankCapacity, fill, rate: S.fillRate, arm: S.tankArm, metacentricHeight: S.metacentricHeight,
+    });
+    setBodyThrust(world, hull, [0, 0]);
+    setAngularDamping(world, hull, S.angularDamping);
+
+    const rng = new Rng(seed);
+    const x0 = -100, dx = 5, n = 241;
+    const y = new Float64Array(n);
+    // Seabed: a mean depth of 90 m with three seeded sine ridges and a little roughness, in [-150, -40].
+    const waves = [0, 1, 2].map((k) => ({ a: rng.range(8, 22) / (k + 1), l: rng.range(120, 320) / (k + 1), p: rng.range(0, 2 * Math.PI) }));
+    for (let i = 0; i < n; i++) {
+      const x = x0 + i * dx;
+      let h = -90;
+      for (const w of waves) h += w.a * Math.sin((2 * Math.PI * x) / w.l + w.p);
+      h += rng.range(-1.5, 1.5);
+      y[i] = Math.max(-150, Math.min(-40, h));
+    }
+    const seabed = { x0, dx, y };
+    const beacons = new Float64Array(2 * count);
+    for (let i = 0; i < count; i++) {
+      const bx = 80 + (i + rng.range(0.1, 0.9)) * (900 / Math.max(1, count));
+      const floor = seabedHeight(seabed, bx);
+      beacons[2 * i] = bx;
+      beacons[2 * i + 1] = rng.range(floor + 8, -10);
+    }
+    return { hull, sea, seabed, beacons };
+  },
+};

@@ -1,0 +1,102 @@
+// The submarine scene and the ballast law against Archimedes' balance, the terminal speed of
+// quadratic drag (F = k v^2) and the hydrostatic trim balance.
+import { describe, expect, test } from 'vitest';
+import {
+  createPhysicsWorld, setBallast, setBallastTarget, setBodyThrust, step, SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY,
+  submarine, addBody, type PhysicsWorld,
+} from '@bitphysics/physics';
+
+/** A submerged hull 40 m down with both tanks at `fill`. */
+function submerged(fill: number): { world: PhysicsWorld; hull: number } {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  const { hull } = submarine.build(world, { fill, position: [0, -40], count: 0 });
+  return { world, hull };
+}
+
+function run(world: PhysicsWorld, seconds: number): void {
+  for (let i = 0, n = Math.round(seconds / world.dt); i < n; i++) step(world);
+}
+
+describe('ballast and buoyancy (Archimedes)', () => {
+  test('the neutral fill is where the hull weighs what it displaces', () => {
+    // dryMass + 2 capacity f = rho L H: the analytic balance (0.7675 for this hull).
+    const S = SUBMARINE;
+    expect(S.dryMass + 2 * S.tankCapacity * SUBMARINE_NEUTRAL_FILL).toBeCloseTo(SUBMARINE_WATER_DENSITY * S.length * S.height, 6);
+    const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
+    const y0 = world.components.Position.y[hull]!;
+    run(world, 30);
+    // Neutral: no net force, so it stays where it was (to rounding of the balance, ~1e-9 m).
+    expect(Math.abs(world.components.Position.y[hull]! - y0)).toBeLessThan(1e-6);
+  });
+
+  test('heavier than neutral it sinks, lighter it rises: v(t) = v_t tanh(a0 t / v_t), v_t = sqrt(dm g / k)', () => {
+    // Extra water dm = +-0.05 * 2 * 20,000 kg = 2,000 kg: net weight dm g (mass m constant, tanks at
+    // their target) against the drag k v^2 of the submerged hull. m dv/dt = dm g - k v^2 has the exact
+    // solution v_t tanh(a0 t / v_t) with a0 = dm g / m. Semi-implicit Euler at 1/60 s: 1e-3 relative.
+    for (const sign of [1, -1]) {
+      const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL + sign * 0.05);
+      world.components.Position.y[hull] = -400; // deep water: no surface or seabed in 30 s
+      const m = world.components.Mass.value[hull]!, dW = 0.05 * 2 * SUBMARINE.tankCapacity * 9.81;
+      run(world, 30);
+      const vt = Math.sqrt(dW / SUBMARINE.dragCoefficient), a0 = dW / m;
+      const expected = vt * Math.tanh((a0 * world.time) / vt);
+      expect(Math.abs(-sign * world.components.Velocity.y[hull]! - expected) / expected).toBeLessThan(1e-3);
+    }
+  });
+
+  test('the tanks fill at their rate and the mass follows', () => {
+    const { world, hull } = submerged(0);
+    setBallastTarget(world, hull, 1);
+    run(world, 5); // 0.08 / s for 5 s: 0.4 full
+    expect(world.components.Ballast.fore[hull]).toBeCloseTo(0.4, 9);
+    expect(world.components.Mass.value[hull]).toBeCloseTo(SUBMARINE.dryMass + 2 * SUBMARINE.tankCapacity * 0.4, 6);
+    expect(world.components.Mass.inv[hull]).toBeCloseTo(1 / world.components.Mass.value[hull]!, 15);
+  });
+
+  test('thrust along the hull: v(t) = v_t tanh(a0 t / v_t) towards v_t = sqrt(F / k)', () => {
+    const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
+    setBodyThrust(world, hull, [SUBMARINE.maxThrust, 0]);
+    run(world, 40);
+    // F = 120 kN, k = 1200 kg/m: v_t = 10 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
+    const m = world.components.Mass.value[hull]!;
+    const vt = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient), a0 = SUBMARINE.maxThrust / m;
+    const expected = vt * Math.tanh((a0 * world.time) / vt);
+    expect(Math.abs(world.components.Velocity.x[hull]! - expected) / expected).toBeLessThan(1e-3);
+    expect(expected).toBeGreaterThan(0.95 * vt); // close to terminal by then
+    expect(Math.abs(world.components.Velocity.y[hull]!)).toBeLessThan(1e-6);
+  });
+
+  test('unequal tanks trim the hull to tan(theta) = arm dm / (M GM)', () => {
+    // Same total water as neutral, moved forward: fore 0.9, aft 2 * 0.7675 - 0.9 = 0.635. The fore
+    // tank's extra weight (arm 4 m) balances the righting moment M g GM sin(theta) at cos(theta):
+    // tan(theta) = 4 * 20,000 * (0.9 - 0.635) / (110,700 * 1.5) -> theta = -7.3 degrees (nose down).
+    const aft = 2 * SUBMARINE_NEUTRAL_FILL - 0.9;
+    const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
+    setBallast(world, hull, {
+      dryMass: SUBMARINE.dryMass, capacity: SUBMARINE.tankCapacity, fill: [0.9, aft], arm: SUBMARINE.tankArm,
+      metacentricHeight: SUBMARINE.metacentricHeight,
+    });
+    run(world, 60);
+    const M = world.components.Mass.value[hull]!;
+    const expected = -Math.atan((SUBMARINE.tankArm * SUBMARINE.tankCapacity * (0.9 - aft)) / (M * SUBMARINE.metacentricHeight));
+    expect(world.components.Angle.value[hull]).toBeCloseTo(expected, 4);
+  });
+
+  test('floats at the surface with the draft rho L d = m', () => {
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const { hull } = submarine.build(world);
+    run(world, 30);
+    const draft = SUBMARINE.dryMass / (SUBMARINE_WATER_DENSITY * SUBMARINE.length);
+    expect(world.components.Position.y[hull]).toBeCloseTo(SUBMARINE.height / 2 - draft, 3);
+  });
+
+  test('bad input is refused and leaves the body as it was', () => {
+    const world = createPhysicsWorld({ gravity: [0, -9.81] });
+    const b = addBody(world, { mass: 3 });
+    expect(() => setBallast(world, b, { dryMass: 0, capacity: 1 })).toThrow(/setBallast: dryMass must be/);
+    expect(() => setBallast(world, b, { dryMass: 1, capacity: 1, fill: 2 })).toThrow(/setBallast: fill must be/);
+    expect(() => setBallastTarget(world, b, 0.5)).toThrow(/setBallastTarget: entity \d+ has no ballast/);
+    expect(() => setBodyThrust(world, b, [1, Number.NaN])).toThrow(/setBodyThrust: force/);
+    expect(world.components.Mass.value[b]).toBe(3);
+  });
+});
