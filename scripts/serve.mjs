@@ -1,36 +1,237 @@
 // `npm start`: builds every game with esbuild, serves the gallery on http://127.0.0.1:8080/ (PORT
 // overrides the port), prints the address and rebuilds on change. Tests import startServer().
+//
+// The site is built into memory and served from there by a plain node:http server: a request never
+// waits for a build. While watching, esbuild rebuilds incrementally when a source changes and the
+// new output replaces the old one only when the build has finished (a failed build keeps serving
+// the last good one and prints its errors); a new game folder restarts the build with it included.
 import * as esbuild from 'esbuild';
-import { mkdirSync, rmSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { existsSync, mkdirSync, readFileSync, rmSync, statSync, watch as watchDir, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { extname, join, normalize, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { siteDir, siteOptions, writeRegistry } from './build.mjs';
+import { gameFolders, readRegistry, root, siteDir, siteOptions } from './build.mjs';
+
+/** Content types by file extension. */
+const TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.map': 'application/json; charset=utf-8',
+  '.png': 'image/png',
+  '.jpg': 'image/jpeg',
+  '.svg': 'image/svg+xml',
+  '.ico': 'image/x-icon',
+  '.txt': 'text/plain; charset=utf-8',
+  '.woff2': 'font/woff2',
+};
 
 /**
- * Starts esbuild's own dev server on the built site. With `watch` (the default) it rebuilds on
- * change; without, it builds once and serves that site unchanged.
- * @param {{ port?: number, host?: string, watch?: boolean }} options
- * @returns {Promise<{ url: string, stop: () => Promise<void> }>}
+ * Directories served as they are on disk, besides the built site: URL prefix (starting and ending
+ * with '/') -> directory. A request under a prefix is answered from its directory ('/x/' -> x/index.html).
+ * @type {Record<string, string>}
  */
-export async function startServer({ port = 8080, host = '127.0.0.1', watch = true } = {}) {
-  rmSync(siteDir, { recursive: true, force: true });
-  mkdirSync(siteDir, { recursive: true });
-  const build = await esbuild.context(siteOptions());
-  await build.rebuild();
-  writeRegistry();
-  let ctx = build;
-  if (watch) {
-    await build.watch();
-  } else {
-    // Without watch, esbuild's server rebuilds the whole site on every request for a page; a
-    // fixed site (the browser tests) is served by a context with nothing to build instead.
-    await build.dispose();
-    ctx = await esbuild.context({ entryPoints: [], logLevel: 'silent' });
+export const staticRoutes = {};
+
+/** Where `startServer({ watch: false, cache: true })` keeps its last build between runs (the browser tests). */
+export const cacheDir = join(root, 'dist', 'site-cache');
+
+/**
+ * The files of the build cached in `dir`, if every input it was built from is unchanged since (no
+ * input modified after the build started, none missing) and the game folders are the same; else null.
+ * @returns {Map<string, Uint8Array> | null}
+ */
+function readCache(dir) {
+  const stampFile = join(dir, 'stamp.json');
+  if (!existsSync(stampFile)) return null;
+  try {
+    const stamp = JSON.parse(readFileSync(stampFile, 'utf8'));
+    if (stamp.folders !== gameFolders().join(',')) return null;
+    for (const input of stamp.inputs) if (statSync(resolve(root, input)).mtimeMs > stamp.startedAt) return null;
+    const files = new Map();
+    for (const path of stamp.outputs) files.set(path, readFileSync(join(dir, 'site', path)));
+    return files;
+  } catch {
+    return null;
   }
-  const { port: actual } = await ctx.serve({ host, port, servedir: siteDir });
+}
+
+/** Writes `files` and their inputs (esbuild metafile) to the cache `dir`. */
+function writeCache(dir, files, metafile, startedAt) {
+  rmSync(dir, { recursive: true, force: true });
+  for (const [path, contents] of files) {
+    const file = join(dir, 'site', path);
+    mkdirSync(resolve(file, '..'), { recursive: true });
+    writeFileSync(file, contents);
+  }
+  const inputs = Object.keys(metafile?.inputs ?? {}).map((p) => relative(root, resolve(p)));
+  writeFileSync(join(dir, 'stamp.json'), JSON.stringify({ startedAt, folders: gameFolders().join(','), inputs, outputs: [...files.keys()] }));
+}
+
+/**
+ * Serves the site from memory: builds it once, then (with `watch`, the default) rebuilds on change.
+ * @param {{ port?: number, host?: string, watch?: boolean, cache?: boolean, log?: (line: string) => void }} options
+ *   port 0 picks a free one; `log` receives build errors and rebuild notes (default console.error).
+ *   `cache` (only without watch; default false): reuse the build in `cacheDir` when none of its
+ *   inputs changed since, else build and store it there. Callers that share the cache must not
+ *   run at the same time (the browser tests hold a lock, test/browser/chromium.mjs).
+ * @returns {Promise<{ url: string, stop: () => Promise<void>, builds: () => number }>} url ends with
+ *   '/'; `builds()` counts finished builds (first included), for tests that wait for a rebuild.
+ * @throws Error if the first build fails without `watch` (its esbuild errors), or the port cannot be bound.
+ */
+export async function startServer({ port = 8080, host = '127.0.0.1', watch = true, cache = false, log = (line) => console.error(line) } = {}) {
+  /** Built files: path relative to the site root ('lab-orbits/main.js') -> contents. */
+  let files = new Map();
+  let builds = 0;
+  /** esbuild's metafile of the last good build (for the cache). */
+  let metafile = null;
+  let ctx = null;
+  let folders = '';
+  /** Errors of the last build, when it failed ('' after a good one). */
+  let failure = '';
+
+  /** Keeps a finished build's output (only a build without errors replaces the served files). */
+  const collect = {
+    name: 'bitphysics-serve-memory',
+    setup(build) {
+      build.onEnd((result) => {
+        if (result.errors.length > 0) {
+          failure = result.errors.slice(0, 10).map((e) => (e.location ? `${e.location.file}:${e.location.line}: ${e.text}` : e.text)).join('\n');
+          log(`build failed${builds > 0 ? ' (still serving the last good build)' : ''}:\n${failure}`);
+          return;
+        }
+        failure = '';
+        const next = new Map();
+        for (const file of result.outputFiles ?? []) next.set(relative(siteDir, file.path).split(sep).join('/'), file.contents);
+        files = next;
+        metafile = result.metafile ?? null;
+        if (builds > 0) log(`rebuilt ${next.size} files`);
+        builds++;
+      });
+    },
+  };
+
+  /**
+   * (Re)creates the esbuild context for the current game folders and builds once. A failed build
+   * throws without `watch`; with it, the server starts anyway (pages answer 503 with the errors
+   * until a change fixes the build).
+   */
+  const createContext = async () => {
+    folders = gameFolders().join(',');
+    const next = await esbuild.context({ ...siteOptions(), write: false, metafile: cache, plugins: [collect], logLevel: 'silent' });
+    const result = await next.rebuild().catch((error) => error);
+    if (result instanceof Error && !watch) {
+      await next.dispose();
+      throw new Error(`startServer: the site does not build: ${result.message}`);
+    }
+    if (watch) await next.watch();
+    const old = ctx;
+    ctx = next;
+    await old?.dispose();
+  };
+  const cached = cache && !watch ? readCache(cacheDir) : null;
+  if (cached) {
+    files = cached;
+    builds = 1;
+  } else {
+    const startedAt = Date.now();
+    await createContext();
+    if (cache && !watch && builds > 0) writeCache(cacheDir, files, metafile, startedAt);
+    if (!watch) {
+      await ctx.dispose();
+      ctx = null;
+    }
+  }
+
+  // A new or removed game folder changes the entry points: rebuild the context (esbuild's watch only
+  // follows files it already builds). game.json is read per request of registry.json.
+  let dirWatcher = null;
+  let restarting = Promise.resolve();
+  if (watch) {
+    dirWatcher = watchDir(join(root, 'games'), () => {
+      restarting = restarting.then(async () => {
+        if (gameFolders().join(',') === folders) return;
+        try {
+          const cached = cache && !watch ? readCache(cacheDir) : null;
+  if (cached) {
+    files = cached;
+    builds = 1;
+  } else {
+    const startedAt = Date.now();
+    await createContext();
+    if (cache && !watch && builds > 0) writeCache(cacheDir, files, metafile, startedAt);
+    if (!watch) {
+      await ctx.dispose();
+      ctx = null;
+    }
+  }
+          log(`game folders changed: now ${gameFolders().length}`);
+        } catch (error) {
+          log(String(error));
+        }
+      });
+    });
+  }
+
+  const send = (res, status, type, body) => {
+    res.writeHead(status, { 'content-type': type, 'cache-control': 'no-cache' });
+    res.end(body);
+  };
+
+  /** The contents for site path `path` ('' is the root), or undefined. */
+  const lookup = (path) => {
+    if (path === 'registry.json') return Buffer.from(JSON.stringify(readRegistry(), null, 2));
+    return files.get(path);
+  };
+
+  const server = createServer((req, res) => {
+    try {
+      const url = new URL(req.url ?? '/', 'http://localhost');
+      const pathname = decodeURIComponent(url.pathname);
+      for (const [prefix, dir] of Object.entries(staticRoutes)) {
+        if (pathname === prefix.slice(0, -1)) { res.writeHead(301, { location: prefix + url.search }); res.end(); return; }
+        if (!pathname.startsWith(prefix)) continue;
+        const file = normalize(join(dir, pathname.slice(prefix.length)));
+        if (!file.startsWith(resolve(dir))) { send(res, 403, TYPES['.txt'], 'forbidden'); return; }
+        const target = existsSync(file) && statSync(file).isDirectory() ? join(file, 'index.html') : file;
+        if (!existsSync(target)) { send(res, 404, TYPES['.txt'], `not found: ${pathname}`); return; }
+        send(res, 200, TYPES[extname(target)] ?? 'application/octet-stream', readFileSync(target));
+        return;
+      }
+      let path = pathname.replace(/^\/+/, '');
+      if (path === '' || path.endsWith('/')) path += 'index.html';
+      let body = lookup(path);
+      if (body === undefined && lookup(`${path}/index.html`) !== undefined) {
+        res.writeHead(301, { location: `${pathname}/${url.search}` });
+        res.end();
+        return;
+      }
+      if (body === undefined && builds === 0 && failure) { send(res, 503, TYPES['.txt'], `The site does not build yet:\n${failure}`); return; }
+      if (body === undefined) { send(res, 404, TYPES['.txt'], `not found: ${pathname}`); return; }
+      send(res, 200, TYPES[extname(path)] ?? 'application/octet-stream', body);
+    } catch (error) {
+      send(res, 500, TYPES['.txt'], String(error));
+    }
+  });
+  await new Promise((resolveListen, reject) => {
+    server.once('error', reject);
+    server.listen(port, host, () => resolveListen(undefined));
+  });
+  const address = server.address();
+  const actual = typeof address === 'object' && address ? address.port : port;
   return {
     url: `http://${host}:${actual}/`,
-    stop: () => ctx.dispose(),
+    builds: () => builds,
+    stop: async () => {
+      dirWatcher?.close();
+      await restarting;
+      const closed = new Promise((r) => server.close(() => r(undefined)));
+      server.closeAllConnections();
+      await closed;
+      await ctx?.dispose();
+    },
   };
 }
 

@@ -69,8 +69,9 @@ function pidAlive(pid) {
 }
 
 /**
- * Takes the site lock: scripts/serve.mjs rebuilds into the one shared dist/site directory (and
- * serves registry.json from it), so two servers of the same checkout must not overlap. Waits until
+ * Takes the site lock: browser test files (and the thumbnail script) run one after another, each
+ * with its Chromium, rather than share the machine's cores at once, and the site build they share
+ * (scripts/serve.mjs `cacheDir`) is written by one at a time. Waits until
  * the holder (another test file or the thumbnail script) releases it; a lock whose process is gone
  * is taken over.
  * @param {{ timeoutMs?: number }} [options] how long to wait, ms (default 110 s).
@@ -113,8 +114,9 @@ export async function acquireSiteLock({ timeoutMs = 110_000 } = {}) {
 }
 
 /**
- * Builds the site and serves it (scripts/serve.mjs `startServer`, no watching) on a free port,
- * holding the site lock until `stop`.
+ * Serves the site (scripts/serve.mjs `startServer`, no watching) on a free port, holding the site
+ * lock until `stop`. The build is reused from the previous run when none of its inputs changed
+ * since (`cache`), so the browser test files after the first one start without building.
  * @returns {Promise<{ url: string, stop: () => Promise<void> }>} url ends with '/'.
  */
 export async function startSite() {
@@ -122,7 +124,7 @@ export async function startSite() {
   try {
     const { startServer } = await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href);
     const port = await freePort();
-    const server = await startServer({ port, watch: false });
+    const server = await startServer({ port, watch: false, cache: true });
     return {
       url: server.url,
       stop: async () => {

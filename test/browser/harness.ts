@@ -8,8 +8,8 @@
  * console lines, so a page that never becomes ready fails in seconds with its reason, not at
  * vitest's hook timeout.
  *
- * Browser test files take a cross-process lock for the server (dist/site is shared), so they run one
- * after another even when vitest runs files in parallel.
+ * Browser test files take a cross-process lock for the server, so they run one after another even
+ * when vitest runs files in parallel, and reuse the last site build when no source changed since.
  *
  * @example
  * let h: Harness;
