@@ -1,17 +1,94 @@
-import { query } from '../query.js';
+import { hasComponent } from 'bitecs';
+import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
+import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
+import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 
-/** Angular damping: torque -k w on every body with AngularDamping. Velocity-dependent. */
+/**
+ * The largest inverse moment of inertia of body e, 1/(kg m^2): the scalar `Inertia.inv`, or for a 3D
+ * body with a principal inertia tensor the largest of its inverse principal moments.
+ */
+function largestInverseInertia(world: PhysicsWorld, e: number, tensors: boolean): number {
+  const c = world.components;
+  if (tensors && hasComponent(world, e, c.InertiaTensor)) {
+    const T = c.InertiaTensor;
+    return Math.max(T.invX[e]!, T.invY[e]!, T.invZ[e]!);
+  }
+  return c.Inertia.inv[e]!;
+}
+
+/**
+ * Angular damping: torque tau = -k w on every body with `AngularDamping` (k in N m s, >= 0); without
+ * other torques w(t) = w0 e^(-k t / I). Velocity-dependent. Source: Ramtal and Dobre ch. 13 (rotational
+ * analogue of linear drag).
+ *
+ * A torque while k h / I < STIFF_RATE (I the smallest principal moment); at or above it this law adds
+ * nothing and `stiffAngularDampingSystem` applies the exact decay w <- w exp(-k h / I) after the
+ * integrator, so the damping never reverses or amplifies the spin at any step size (see
+ * forces/dissipation.ts).
+ */
 export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.AngularDamping, c.AngularVelocity, c.Torque]);
   if (ents.length === 0) return;
   const k = c.AngularDamping.k, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z;
+  const h = world.h;
+  const tensors = world.dimensions === 3;
+  let stiff = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const d = k[e]!;
+    if (d * largestInverseInertia(world, e, tensors) * h >= STIFF_RATE) { stiff++; continue; }
     tx[e] = tx[e]! - d * wx[e]!; ty[e] = ty[e]! - d * wy[e]!; tz[e] = tz[e]! - d * wz[e]!;
+  }
+  if (stiff > 0) { const s = dissipationState(world); s.angularSeen = s.epoch; }
+};
+
+const wb = new Float64Array(3), back = new Float64Array(3);
+
+/**
+ * Integrate stage, after the integrator: the stiff regime of angular damping (see
+ * forces/dissipation.ts). For each turning body whose damping added no torque this (sub)step:
+ * w <- w exp(-k h / I) with a scalar moment of inertia; with a principal inertia tensor, each
+ * body-frame component w_i <- w_i exp(-k h / I_i) (the exact solution of I_i w_i' = -k w_i; a locked
+ * axis, 1/I_i = 0, keeps its spin). The orientation is then turned by h times the change of w, so the
+ * body turns over the step with its damped angular velocity.
+ */
+export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
+  const st = dissipationState(world);
+  if (st.angularSeen !== st.epoch) return;
+  const c = world.components;
+  const is2D = world.dimensions === 2;
+  const ents = query(world, [
+    c.AngularDamping, c.AngularVelocity, c.Torque, is2D ? c.Angle : c.Orientation,
+    Not(c.Static), Not(c.Kinematic), Not(c.Sleeping),
+  ]);
+  const h = world.h, k = c.AngularDamping.k;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const angle = c.Angle.value, q = c.Orientation, T = c.InertiaTensor;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const d = k[e]!;
+    if (d * largestInverseInertia(world, e, !is2D) * h < STIFF_RATE) continue;
+    const ox = wx[e]!, oy = wy[e]!, oz = wz[e]!;
+    if (is2D) {
+      const nz = oz * linearDecay(d * c.Inertia.inv[e]! * h);
+      wz[e] = nz;
+      angle[e] = angle[e]! + h * (nz - oz);
+      continue;
+    }
+    const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+    if (hasComponent(world, e, T)) {
+      rotateVectorInverse(qx, qy, qz, qw, ox, oy, oz, wb);
+      rotateVector(qx, qy, qz, qw,
+        wb[0]! * linearDecay(d * T.invX[e]! * h), wb[1]! * linearDecay(d * T.invY[e]! * h), wb[2]! * linearDecay(d * T.invZ[e]! * h), back);
+      wx[e] = back[0]!; wy[e] = back[1]!; wz[e] = back[2]!;
+    } else {
+      const f = linearDecay(d * c.Inertia.inv[e]! * h);
+      wx[e] = ox * f; wy[e] = oy * f; wz[e] = oz * f;
+    }
+    rotateInPlace(q.x, q.y, q.z, q.w, e, h * (wx[e]! - ox), h * (wy[e]! - oy), h * (wz[e]! - oz));
   }
 };

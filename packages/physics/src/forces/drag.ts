@@ -1,7 +1,8 @@
-import { query } from '../query.js';
+import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 import { windAt } from './settings.js';
+import { dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 
 const wind = new Float64Array(3);
 
@@ -13,51 +14,126 @@ export function calmAir(world: PhysicsWorld): boolean {
 }
 
 /**
- * Linear drag F = -k (v - u) on every body with `LinearDrag`, u the wind at the body (setWind).
- * Source: Ramtal and Dobre ch. 7, "Drag"; Stokes' law.
+ * Linear drag F = -k (v - u) on every body with `LinearDrag` (k in N s/m, >= 0), u the wind at the
+ * body (setWind). Terminal velocity under gravity in still air: m g / k; v(t) = u + (v0 - u) e^(-k t / m)
+ * without other forces. Source: Ramtal and Dobre ch. 7, "Drag"; Stokes' law.
+ *
+ * A force while k h / m < STIFF_RATE; at or above it this law adds nothing and `stiffDragSystem`
+ * applies the exact decay v - u <- (v - u) exp(-k h / m) after the integrator, so the drag never
+ * reverses or amplifies the velocity at any step size (see forces/dissipation.ts).
  */
 export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
-  const { LinearDrag, Velocity, Force, Position } = world.components;
+  const { LinearDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [LinearDrag, Velocity, Force]);
   if (ents.length === 0) return;
-  const k = LinearDrag.k, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
+  const k = LinearDrag.k, inv = Mass.inv, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
   const fx = Force.x, fy = Force.y, fz = Force.z;
+  // Stiff when k h / m >= STIFF_RATE, i.e. k / m >= limit.
+  const limit = STIFF_RATE / world.h;
+  let stiff = 0;
   if (calmAir(world)) {
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const c = k[e]!;
+      if (c * inv[e]! >= limit) { stiff++; continue; }
       fx[e] = fx[e]! - c * vx[e]!; fy[e] = fy[e]! - c * vy[e]!; fz[e] = fz[e]! - c * vz[e]!;
     }
-    return;
+  } else {
+    const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const c = k[e]!;
+      if (c * inv[e]! >= limit) { stiff++; continue; }
+      windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+      fx[e] = fx[e]! - c * (vx[e]! - wind[0]!); fy[e] = fy[e]! - c * (vy[e]! - wind[1]!); fz[e] = fz[e]! - c * (vz[e]! - wind[2]!);
+    }
   }
-  const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-    const c = k[e]!;
-    fx[e] = fx[e]! - c * (vx[e]! - wind[0]!); fy[e] = fy[e]! - c * (vy[e]! - wind[1]!); fz[e] = fz[e]! - c * (vz[e]! - wind[2]!);
-  }
+  if (stiff > 0) { const s = dissipationState(world); s.linearSeen = s.epoch; }
 };
 
 /**
- * Quadratic drag F = -k |v - u| (v - u) on every body with `QuadraticDrag`, u the wind at the body.
- * Terminal velocity in still air under gravity: sqrt(m g / k).
- * Source: Ramtal and Dobre ch. 7, "Drag"; the drag equation F = rho C_d A v^2 / 2.
+ * Quadratic drag F = -k |v - u| (v - u) on every body with `QuadraticDrag` (k in kg/m, >= 0), u the
+ * wind at the body. Terminal velocity under gravity in still air: sqrt(m g / k); without other forces
+ * |v - u| falls as v0 / (1 + k v0 t / m). Source: Ramtal and Dobre ch. 7, "Drag"; the drag equation
+ * F = rho C_d A v^2 / 2.
+ *
+ * A force while k |v - u| h / m < STIFF_RATE at the start of the (sub)step; otherwise this law adds
+ * nothing for that (sub)step and `stiffDragSystem` applies the exact update
+ * v - u <- (v - u) / (1 + k |v - u| h / m) after the integrator (see forces/dissipation.ts).
  */
 export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
-  const { QuadraticDrag, Velocity, Force, Position } = world.components;
+  const { QuadraticDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [QuadraticDrag, Velocity, Force]);
   if (ents.length === 0) return;
-  const k = QuadraticDrag.k, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
+  const k = QuadraticDrag.k, inv = Mass.inv, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
   const fx = Force.x, fy = Force.y, fz = Force.z;
   const calm = calmAir(world);
   const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
+  const st = dissipationState(world);
+  const epoch = st.epoch, stamp = st.quadraticStamp, stiffK = st.quadraticK;
+  const limit = STIFF_RATE / world.h;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     let x = vx[e]!, y = vy[e]!, z = vz[e]!;
     if (!calm) { windAt(world, px[e]!, py[e]!, pz[e]!, t, wind); x -= wind[0]!; y -= wind[1]!; z -= wind[2]!; }
     const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
+    if (stamp[e] !== epoch) {
+      // First evaluation of this (sub)step, at its start state: decide the regime for the whole of it.
+      stamp[e] = epoch;
+      if (c * inv[e]! >= limit) { stiffK[e] = k[e]!; st.quadraticSeen = epoch; continue; }
+      stiffK[e] = 0;
+    } else if (stiffK[e] !== 0) continue;
     fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+  }
+};
+
+/**
+ * Integrate stage, after the integrator: the stiff regime of linear and quadratic drag (see
+ * forces/dissipation.ts). For each dynamic body whose drag added no force this (sub)step, the
+ * relative velocity v - u (u the wind at the body's new position, at the end of the (sub)step) is
+ * multiplied by exp(-k h / m) (linear) and divided by 1 + k |v - u| h / m (quadratic), and the body is
+ * moved from where the (sub)step began with the damped velocity: x = x_start + h v. Both factors lie
+ * in [0, 1], so the velocity relative to the air is never reversed or amplified.
+ */
+export const stiffDragSystem = (world: PhysicsWorld): void => {
+  const st = dissipationState(world);
+  const linear = st.linearSeen === st.epoch, quadratic = st.quadraticSeen === st.epoch;
+  if (!linear && !quadratic) return;
+  const c = world.components;
+  const h = world.h, t = world.time + h;
+  const calm = calmAir(world);
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, inv = c.Mass.inv;
+  const is2D = world.dimensions === 2;
+  wind[0] = 0; wind[1] = 0; wind[2] = 0;
+  const damp = (e: number, factor: number): void => {
+    if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+    const ux = wind[0]!, uy = wind[1]!, uz = wind[2]!;
+    const nx = ux + (vx[e]! - ux) * factor, ny = uy + (vy[e]! - uy) * factor;
+    vx[e] = nx; vy[e] = ny;
+    px[e] = ox[e]! + h * nx; py[e] = oy[e]! + h * ny;
+    if (!is2D) { const nz = uz + (vz[e]! - uz) * factor; vz[e] = nz; pz[e] = oz[e]! + h * nz; }
+  };
+  if (linear) {
+    const ents = query(world, [c.LinearDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+    const k = c.LinearDrag.k;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const lambda = k[e]! * inv[e]! * h;
+      if (lambda >= STIFF_RATE) damp(e, linearDecay(lambda));
+    }
+  }
+  if (quadratic) {
+    const ents = query(world, [c.QuadraticDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+    const epoch = st.epoch, stamp = st.quadraticStamp, stiffK = st.quadraticK;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      if (stamp[e] !== epoch || stiffK[e] === 0) continue;
+      if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+      const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = is2D ? 0 : vz[e]! - wind[2]!;
+      damp(e, quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h));
+    }
   }
 };
 

@@ -1,4 +1,5 @@
-import { query } from '../query.js';
+import { Not, query } from '../query.js';
+import { dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 
@@ -41,6 +42,11 @@ const measure = new Float64Array(2);
  * Buoyancy (Archimedes: F = -rho V_submerged g, opposite to gravity) from every FluidRegion a body
  * with `Buoyancy` dips into, and fluid drag F = -f k |v| v scaled by the submerged fraction f (summed
  * over regions, at most 1). Velocity-dependent (the drag).
+ *
+ * The drag is a force while f k |v| h / m < STIFF_RATE at the start of the (sub)step; otherwise it
+ * adds nothing for that (sub)step and `stiffFluidDragSystem` applies the exact quadratic-drag update
+ * v <- v / (1 + f k |v| h / m) after the integrator (see forces/dissipation.ts). Buoyancy itself is
+ * always a force.
  */
 export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -54,6 +60,10 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
   const g = world.gravity;
   const d = world.dimensions;
+  const inv = c.Mass.inv;
+  const st = dissipationState(world);
+  const epoch = st.epoch, stamp = st.fluidStamp, stiffK = st.fluidK;
+  const limit = STIFF_RATE / world.h;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const shape = Bu.shape[e]!;
@@ -73,10 +83,41 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
       fraction += measure[0]! / measure[1]!;
     }
     const k = Bu.dragCoefficient[e]! * (fraction < 1 ? fraction : 1);
-    if (k > 0) {
-      const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
-      const s = k * Math.sqrt(ux * ux + uy * uy + uz * uz);
-      fx[e] = fx[e]! - s * ux; fy[e] = fy[e]! - s * uy; fz[e] = fz[e]! - s * uz;
-    }
+    const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
+    const s = k * Math.sqrt(ux * ux + uy * uy + uz * uz);
+    if (stamp[e] !== epoch) {
+      // First evaluation of this (sub)step, at its start state: decide the drag's regime for all of it.
+      stamp[e] = epoch;
+      if (k > 0 && s * inv[e]! >= limit) { stiffK[e] = k; st.fluidSeen = epoch; continue; }
+      stiffK[e] = 0;
+    } else if (stiffK[e] !== 0) continue;
+    if (k > 0) { fx[e] = fx[e]! - s * ux; fy[e] = fy[e]! - s * uy; fz[e] = fz[e]! - s * uz; }
+  }
+};
+
+/**
+ * Integrate stage, after the integrator: the stiff regime of buoyancy's fluid drag (see
+ * forces/dissipation.ts). A body whose fluid drag added no force this (sub)step has its velocity
+ * divided by 1 + k |v| h / m, k the drag coefficient times the submerged fraction decided at the
+ * start of the (sub)step, and moves from where the (sub)step began with that velocity: x = x_start + h v.
+ */
+export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
+  const st = dissipationState(world);
+  if (st.fluidSeen !== st.epoch) return;
+  const c = world.components;
+  const ents = query(world, [c.Buoyancy, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const h = world.h, epoch = st.epoch, stamp = st.fluidStamp, stiffK = st.fluidK, inv = c.Mass.inv;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const is2D = world.dimensions === 2;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    if (stamp[e] !== epoch || stiffK[e] === 0) continue;
+    const x = vx[e]!, y = vy[e]!, z = is2D ? 0 : vz[e]!;
+    const f = quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h);
+    vx[e] = x * f; vy[e] = y * f;
+    px[e] = ox[e]! + h * vx[e]!; py[e] = oy[e]! + h * vy[e]!;
+    if (!is2D) { vz[e] = z * f; pz[e] = oz[e]! + h * vz[e]!; }
   }
 };

@@ -1,14 +1,14 @@
 import type { PhysicsWorld } from '../world.js';
 import { clearForcesSystem } from '../forces/clear.js';
-import { linearDragSystem, liftSystem, quadraticDragSystem } from '../forces/drag.js';
+import { linearDragSystem, liftSystem, quadraticDragSystem, stiffDragSystem } from '../forces/drag.js';
 import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
 import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
 import { centralForceSystem } from '../forces/central.js';
-import { buoyancySystem } from '../forces/fluid.js';
+import { buoyancySystem, stiffFluidDragSystem } from '../forces/fluid.js';
 import { springSystem } from '../forces/spring.js';
 import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
 import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
-import { angularDampingSystem } from '../forces/angular-damping.js';
+import { angularDampingSystem, stiffAngularDampingSystem } from '../forces/angular-damping.js';
 import { ballastFillSystem, ballastTrimSystem } from '../forces/ballast.js';
 import { bodyThrustSystem } from '../forces/body-thrust.js';
 import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
@@ -28,7 +28,8 @@ export type System = (world: PhysicsWorld) => void;
  * 1. `spawn`: waking, then lifetimes and emitters (once per step);
  * 2. `clearForces`: zero the force and torque accumulators;
  * 3. `forces`: one system per force law, user forces too;
- * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states);
+ * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states),
+ *    then the exact decay of drag and damping too stiff to be forces this step (forces/dissipation.ts);
  * 5. `collide`: broadphase, narrowphase, contact solver (impulses, restitution, friction, position correction);
  * 6. `constraints`: position-based links;
  * 7. `finalize`: sleeping islands (once per step).
@@ -58,7 +59,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
       ballastTrimSystem,
     ],
   },
-  { stage: 'integrate', systems: [integrateSystem, burnFuelSystem, ballastFillSystem] },
+  { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, burnFuelSystem, ballastFillSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [] },
   { stage: 'finalize', systems: [sleepSystem] },

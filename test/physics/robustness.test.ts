@@ -1,0 +1,139 @@
+import { describe, expect, test } from 'vitest';
+import {
+  addBody, addFluidRegion, createPhysicsWorld, INTEGRATOR_NAMES, setAngularDamping, setBuoyancy, setWind, step,
+  type IntegratorName, type PhysicsWorld,
+} from '@bitphysics/physics';
+
+/** k h / m from 1e-6 to 1e6, one value a decade. */
+const RATES = Array.from({ length: 13 }, (_, i) => 10 ** (i - 6));
+const H = 1 / 60;
+const STEPS = 50;
+
+type Law = 'linear' | 'quadratic' | 'quadratic-wind' | 'fluid' | 'angular';
+
+interface Probe {
+  world: PhysicsWorld;
+  /** The damped quantity: velocity relative to the air (x, y), or angular velocity (z only). */
+  read(): [number, number];
+  /** Position (x, y) or angle (x only): must never move against the initial velocity. */
+  where(): [number, number];
+}
+
+/**
+ * A body whose only force is one dissipative law at rate lambda = k h / m (k |v| h / m for quadratic
+ * laws, k h / I for damping) at the start, with speed 5 (velocity (3, 4) relative to the air) or
+ * spin 5 rad/s.
+ */
+function probe(law: Law, integrator: IntegratorName, lambda: number): Probe {
+  const world = createPhysicsWorld({ gravity: [0, 0], dt: H, integrator });
+  const c = world.components;
+  const m = 2, v0 = 5;
+  let b: number;
+  if (law === 'linear') b = addBody(world, { velocity: [3, 4], mass: m, linearDrag: (lambda * m) / H });
+  else if (law === 'quadratic') b = addBody(world, { velocity: [3, 4], mass: m, quadraticDrag: (lambda * m) / (H * v0) });
+  else if (law === 'quadratic-wind') {
+    setWind(world, { velocity: [1, -2] });
+    b = addBody(world, { velocity: [4, 2], mass: m, quadraticDrag: (lambda * m) / (H * v0) });
+  } else if (law === 'fluid') {
+    addFluidRegion(world, { surface: 100, density: 1000 });
+    b = addBody(world, { velocity: [3, 4], mass: m });
+    setBuoyancy(world, b, { shape: 'ball', radius: 0.5, dragCoefficient: (lambda * m) / (H * v0) });
+  } else {
+    b = addBody(world, { mass: m, radius: 0.5, rotates: true, angularVelocity: 5 });
+    const inertia = 1 / c.Inertia.inv[b]!;
+    setAngularDamping(world, b, (lambda * inertia) / H);
+  }
+  const windX = law === 'quadratic-wind' ? 1 : 0, windY = law === 'quadratic-wind' ? -2 : 0;
+  return {
+    world,
+    read: () => law === 'angular' ? [c.AngularVelocity.z[b]!, 0] : [c.Velocity.x[b]! - windX, c.Velocity.y[b]! - windY],
+    where: () => law === 'angular' ? [c.Angle.value[b]!, 0] : [c.Position.x[b]! - windX * world.time, c.Position.y[b]! - windY * world.time],
+  };
+}
+
+/** The exact relative speed after t = n h at start rate lambda: linear laws decay as e^(-lambda n), quadratic as 1 / (1 + lambda n). */
+function exactFactor(law: Law, lambda: number, n: number): number {
+  return law === 'linear' || law === 'angular' ? Math.exp(-lambda * n) : 1 / (1 + lambda * n);
+}
+
+describe('dissipative forces cannot reverse or amplify a velocity at any step size (k h / m from 1e-6 to 1e6)', () => {
+  const laws: Law[] = ['linear', 'quadratic', 'quadratic-wind', 'fluid', 'angular'];
+  for (const law of laws) {
+    for (const integrator of INTEGRATOR_NAMES) {
+      test(`${law} drag under ${integrator}: speed never increases or reverses, and follows the exact decay`, () => {
+        for (const lambda of RATES) {
+          const p = probe(law, integrator, lambda);
+          let [ux, uy] = p.read();
+          const [dx0, dy0] = [ux, uy];
+          const s0 = Math.hypot(ux, uy);
+          let [wx, wy] = p.where();
+          for (let n = 1; n <= STEPS; n++) {
+            step(p.world);
+            const [x, y] = p.read();
+            const s = Math.hypot(x, y);
+            // Never amplified (a factor <= 1; 1e-12 allows the rounding of a converged Newton solve).
+            expect(s, `${law} ${integrator} lambda ${lambda} step ${n}`).toBeLessThanOrEqual(Math.hypot(ux, uy) * (1 + 1e-12));
+            // Never reversed: still along the initial direction (or at rest).
+            expect(x * dx0 + y * dy0, `${law} ${integrator} lambda ${lambda} step ${n}`).toBeGreaterThanOrEqual(0);
+            // The body never moves back against its motion.
+            const [px, py] = p.where();
+            expect((px - wx) * dx0 + (py - wy) * dy0).toBeGreaterThanOrEqual(-1e-12);
+            [ux, uy] = [x, y];
+            [wx, wy] = [px, py];
+          }
+          const exact = exactFactor(law, lambda, STEPS);
+          const got = Math.hypot(ux, uy) / s0;
+          // Steps at a rate >= 1/4 apply the law's exact solution (equal to rounding). Steps below it
+          // integrate the law as a force, at worst first order: local relative error <= lambda_n^2 / (1 + lambda_n)
+          // (explicit Euler on quadratic drag; lambda_n^2 / 2 on linear), so the bound sums 2 lambda_n^2 over
+          // those steps, lambda_n the exact rate at step n (constant for linear laws, lambda / (1 + lambda n)
+          // for quadratic ones, whose rate falls with the speed), plus 1e-12 for rounding.
+          let bound = 1e-12;
+          for (let n = 0; n < STEPS; n++) {
+            const rate = law === 'linear' || law === 'angular' ? lambda : lambda / (1 + lambda * n);
+            if (rate < 0.25) bound += 2 * rate * rate;
+          }
+          // e^(-5000) underflows to 0: then the body must be exactly at rest.
+          if (exact === 0) expect(got).toBe(0);
+          else expect(Math.abs(got / exact - 1), `${law} ${integrator} lambda ${lambda}`).toBeLessThanOrEqual(bound);
+        }
+      });
+    }
+  }
+
+  test('under gravity with linear drag, no scheme exceeds the terminal speed m g / k at any step size', () => {
+    for (const integrator of INTEGRATOR_NAMES) {
+      for (const lambda of RATES) {
+        const m = 2, g = 9.81, k = (lambda * m) / H;
+        const world = createPhysicsWorld({ gravity: [0, -g], dt: H, integrator });
+        const b = addBody(world, { mass: m, linearDrag: k });
+        const vt = (m * g) / k;
+        for (let n = 0; n < STEPS; n++) {
+          step(world);
+          const v = -world.components.Velocity.y[b]!;
+          // Approaches v_t from below (every factor in [0, 1]); 1e-9 relative for rounding.
+          expect(v, `${integrator} lambda ${lambda}`).toBeGreaterThanOrEqual(0);
+          expect(v, `${integrator} lambda ${lambda}`).toBeLessThanOrEqual(vt * (1 + 1e-9));
+        }
+      }
+    }
+  });
+
+  test('issue 15: linear drag at k h / m = 3 no longer reaches 2e182 m/s (it stops)', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    const b = addBody(world, { velocity: [1, 0], mass: 1, linearDrag: 180 });
+    for (let i = 0; i < 600; i++) step(world);
+    // Exact: 1 m/s e^(-180 * 10) = 0 in double precision.
+    expect(world.components.Velocity.x[b]).toBe(0);
+  });
+
+  test('issue 15: quadratic drag (1 kg, k = 1) at 121 m/s no longer blows up to Infinity', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    const b = addBody(world, { velocity: [121, 0], mass: 1, quadraticDrag: 1 });
+    for (let i = 1; i <= 20; i++) {
+      step(world);
+      // Exact: v0 / (1 + k v0 t / m), t = i / 60.
+      expect(world.components.Velocity.x[b]! / (121 / (1 + (121 * i) / 60)) - 1).toBeLessThan(1e-12);
+    }
+  });
+});
