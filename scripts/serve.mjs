@@ -11,6 +11,7 @@ import { createServer } from 'node:http';
 import { extname, join, normalize, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gameFolders, readRegistry, root, siteDir, siteOptions } from './build.mjs';
+import { buildDocs, docsDir } from './docs.mjs';
 
 /** Content types by file extension. */
 const TYPES = {
@@ -33,7 +34,7 @@ const TYPES = {
  * with '/') -> directory. A request under a prefix is answered from its directory ('/x/' -> x/index.html).
  * @type {Record<string, string>}
  */
-export const staticRoutes = {};
+export const staticRoutes = { '/docs/': docsDir };
 
 /** Where `startServer({ watch: false, cache: true })` keeps its last build between runs (the browser tests). */
 export const cacheDir = join(root, 'dist', 'site-cache');
@@ -243,4 +244,14 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
   }
   const { url } = await startServer({ port });
   console.log(`bitphysics gallery: ${url}  (rebuilds on change; Ctrl+C to stop)`);
+  // The API reference (npm run docs) at /docs/: built once in the background if it is not there yet.
+  if (existsSync(join(docsDir, 'index.html'))) {
+    console.log(`API reference: ${url}docs/  (npm run docs rebuilds it)`);
+  } else {
+    console.log(`API reference: building for ${url}docs/ ...`);
+    buildDocs({ quiet: true }).then(
+      () => console.log(`API reference: ${url}docs/`),
+      (error) => console.error(`API reference failed: ${error instanceof Error ? error.message : error}`),
+    );
+  }
 }
