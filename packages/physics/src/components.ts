@@ -14,6 +14,7 @@
  */
 
 import { createJointStore, type JointStore } from './joints/store.js';
+import { createClothLinkStore, type ClothLinkStore } from './cloth/store.js';
 
 /** A 3-vector store: one Float64Array a component. */
 export interface Vec3Store {
@@ -278,6 +279,8 @@ export interface Components {
    * joints/api.ts for addDistanceJoint, addRevoluteJoint, ...). Removing either body removes it.
    */
   Joint: JointStore;
+  /** A link of a cloth between two point bodies (its own entity: see cloth/store.ts; `createCloth` makes them). */
+  ClothLink: ClothLinkStore;
 }
 
 /**
@@ -291,7 +294,7 @@ export interface Components {
 export const LAZY_COMPONENTS = [
   'LinearDrag', 'QuadraticDrag', 'GravityScale', 'Attractor', 'Charge', 'ElectricField', 'MagneticField',
   'CentralForce', 'Lift', 'Buoyancy', 'FluidRegion', 'Spring', 'DrivingForce', 'RandomForce', 'Thrust', 'Vortex',
-  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Ballast', 'LiftingSurface', 'BodyThrust', 'Joint',
+  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Ballast', 'LiftingSurface', 'BodyThrust', 'Joint', 'ClothLink',
 ] as const satisfies ReadonlyArray<keyof Components>;
 
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
@@ -381,6 +384,7 @@ export function createComponents(capacity: number): Components {
       liftSlope: z(), stallAngle: z(), dragZero: z(), inducedDrag: z(), deflection: z(), controlPower: z(), airDensity: z(),
     },
     Joint: createJointStore(),
+    ClothLink: createClothLinkStore(),
   };
 }
 

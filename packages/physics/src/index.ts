@@ -105,4 +105,12 @@ export type {
 export { JointType, JointFlag, JOINT_TYPE_NAMES } from './joints/store.js';
 export type { JointStore, JointTypeCode } from './joints/store.js';
 export type { JointState, JointSettings, JointBreakEvents } from './joints/state.js';
+export { createRope } from './joints/rope.js';
+export type { RopeOptions, Rope } from './joints/rope.js';
+export { createCloth, clothPointIndex } from './cloth/create.js';
+export type { ClothOptions, Cloth } from './cloth/create.js';
+export { ClothLinkKind } from './cloth/store.js';
+export type { ClothLinkStore } from './cloth/store.js';
+export type { ClothState } from './cloth/state.js';
+export { clothSystem } from './cloth/solver.js';
 export * from './scenes/index.js';

@@ -9,6 +9,7 @@ import { removeSpringsOf } from './forces/spring.js';
 import { wakeTouching } from './collision/sleep.js';
 import { createJointState, type JointState } from './joints/state.js';
 import { removeJointsOf } from './joints/remove.js';
+import { createClothState, type ClothState } from './cloth/state.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
@@ -100,6 +101,8 @@ export interface PhysicsWorldContext {
   readonly collision: CollisionState;
   /** Joint solver state: packed rows, warm-start impulses, break events of the last step (`joints.breaks`); see joints/state.ts. */
   readonly joints: JointState;
+  /** Cloth solver state (packed links, iterations, largest stretch); see cloth/state.ts. */
+  readonly cloth: ClothState;
   /** Milliseconds spent in each stage in the last step. */
   readonly timings: StageTimings;
   /**
@@ -185,6 +188,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     stages: createStages(),
     collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold, sleep }),
     joints: createJointState(),
+    cloth: createClothState(),
     timings,
     spawnStamp: new Uint32Array(capacity + 1),
     entityIndex,

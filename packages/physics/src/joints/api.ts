@@ -1,4 +1,5 @@
-import { addComponent, entityExists, hasComponent } from 'bitecs';
+import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
+import { detachClothLink } from '../cloth/solver.js';
 import type { PhysicsWorld } from '../world.js';
 import { createEntity } from '../bodies.js';
 import { wakeIsland } from '../collision/sleep.js';
@@ -431,8 +432,17 @@ export function isJoint(world: PhysicsWorld, id: number): boolean {
   return world.dimensions === 2 && typeof id === 'number' && Number.isInteger(id) && id >= 1 && entityExists(world, id) && hasComponent(world, id, world.components.Joint);
 }
 
-/** Removes a joint (its bodies wake). @throws RangeError if `joint` is not a live joint. */
+/**
+ * Removes a joint or a cloth link (the bodies of a joint wake).
+ * @throws RangeError if `joint` is not a live joint or cloth link.
+ */
 export function removeJoint(world: PhysicsWorld, joint: number): void {
+  if (world.dimensions === 2 && typeof joint === 'number' && Number.isInteger(joint) && joint >= 1 && entityExists(world, joint)
+    && hasComponent(world, joint, world.components.ClothLink)) {
+    detachClothLink(world, joint);
+    removeEntity(world, joint);
+    return;
+  }
   removeJointUnchecked(world, requireJoint('removeJoint', world, joint));
 }
 

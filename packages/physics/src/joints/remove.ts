@@ -2,6 +2,7 @@ import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { wakeIsland } from '../collision/sleep.js';
+import { detachClothLink } from '../cloth/solver.js';
 
 /**
  * Removes joint entity `j` (which must be a live joint): its bodies are woken (what held them is
@@ -30,8 +31,9 @@ function detachJoint(world: PhysicsWorld, j: number): void {
 export function removeJointsOf(world: PhysicsWorld, eid: number): void {
   const att = world.joints.attached;
   if (att.length === 0) return;
-  const J = world.components.Joint;
+  const J = world.components.Joint, L = world.components.ClothLink;
   if (hasComponent(world, eid, J)) { detachJoint(world, eid); return; }
+  if (hasComponent(world, eid, L)) { detachClothLink(world, eid); return; }
   if (att[eid] === 0) return;
   const joints = query(world, [J]);
   const doomed: number[] = [];
@@ -40,4 +42,12 @@ export function removeJointsOf(world: PhysicsWorld, eid: number): void {
     if (J.a[j] === eid || J.b[j] === eid) doomed.push(j);
   }
   for (const j of doomed) removeJointUnchecked(world, j);
+  if (att[eid] === 0) return;
+  const links = query(world, [L]);
+  const cut: number[] = [];
+  for (let i = 0; i < links.length; i++) {
+    const l = links[i]!;
+    if (L.a[l] === eid || L.b[l] === eid) cut.push(l);
+  }
+  for (const l of cut) { detachClothLink(world, l); removeEntity(world, l); }
 }

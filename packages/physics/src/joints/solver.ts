@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { BodyType } from '../collision/broadphase.js';
 import { JointFlag, JointType } from './store.js';
-import { ensureRows, IMPULSES, pushBreak, ROW_FLOATS, ROW_INTS } from './state.js';
+import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state.js';
 import { removeJointUnchecked } from './remove.js';
 
 /**
@@ -25,7 +25,7 @@ import { removeJointUnchecked } from './remove.js';
  * Positions inside the step are tracked as in the contact solver: a body's centre is its centre at
  * the start of the step plus its solver displacement; its rotation since the start is integrated
  * here per substep (cos, sin and angle per solver body). Rigid parts of joints are soft constraints
- * of twice the contact stiffness (Box2D's joint softness) while `useBias`, and rigid (no bias) in
+ * of `world.joints.settings.hertz` (Box2D's joint softness) while `useBias`, and rigid (no bias) in
  * the relax pass; springs keep their own softness in both.
  */
 
@@ -38,6 +38,8 @@ const ILX = 27, ILY = 28, IANG = 29, ISPR = 30, IMOT = 31, ILOW = 32, IUP = 33, 
 const EID = 0, IA = 1, IB = 2, TF = 3;
 /** Extra flag (above JointFlag) in a row: the weld's angular part is soft. */
 const WELD_ANGULAR_SOFT = 8;
+/** Row type of a distance joint moved to the point links (the general loops skip it). */
+const POINT_LINK = 255;
 
 const enum Class { Dynamic = 0, Kinematic = 1, Static = 2, Sleeping = 3 }
 const ROTATES = 4;
@@ -155,13 +157,15 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   const rot = js.rotation;
   for (let k = 0; k < count; k++) { rot[k * 3] = 1; rot[k * 3 + 1] = 0; rot[k * 3 + 2] = 0; }
   const rows = js.rows, ri = js.rowInts, imp = js.impulses;
+  const lf = js.links, lint = js.linkInts;
+  let links = 0;
   const px = c.Position.x, py = c.Position.y, ang = c.Angle.value;
-  const contactHertz = Math.min(cs.settings.contactHertz, 0.25 / hs);
-  const jointHertz = 2 * contactHertz, jointZeta = js.settings.dampingRatio;
+  const jointHertz = Math.min(js.settings.hertz, 0.25 / hs), jointZeta = js.settings.dampingRatio;
   const warm = js.settings.warmStarting;
   const omega = 2 * Math.PI * jointHertz;
   const ja1 = 2 * jointZeta + hs * omega, ja2 = hs * omega * ja1, ja3 = 1 / (1 + ja2);
   const jBias = omega / ja1, jMass = ja2 * ja3, jImp = ja3;
+  js.softness[0] = jBias; js.softness[1] = jMass; js.softness[2] = jImp;
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const j = ri[q + EID]!, ia = ri[q + IA]!, ib = ri[q + IB]!;
@@ -215,7 +219,20 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
         const crA = rAx * uy - rAy * ux, crB = rBx * uy - rBy * ux;
         const k = mA + mB + iA * crA * crA + iB * crB * crB;
         rows[o + KAX] = k > 0 ? 1 / k : 0;
-        rows[o + LEN] = J.length[j]!; rows[o + MINL] = J.minLength[j]!; rows[o + MAXL] = J.maxLength[j]!;
+        const minL = J.minLength[j]!, maxL = J.maxLength[j]!, rest = J.length[j]!;
+        rows[o + LEN] = rest; rows[o + MINL] = minL; rows[o + MAXL] = maxL;
+        // Neither body turns and no spring: a point link (anchors are fixed offsets within the step).
+        if (iA === 0 && iB === 0 && !(flags & JointFlag.Spring) && (minL === maxL || (minL === 0 && maxL < Infinity))) {
+          const l = links * LINK_FLOATS, li = links * LINK_INTS;
+          lf[l] = dx; lf[l + 1] = dy; lf[l + 2] = rows[o + KAX]!;
+          const rope = minL < maxL;
+          lf[l + 3] = rope ? maxL : rest;
+          lf[l + 4] = warm ? (rope ? -imp[j * IMPULSES + 6]! : imp[j * IMPULSES + 3]!) : 0;
+          lf[l + 5] = rope ? 1 : 0;
+          lint[li] = oA; lint[li + 1] = oB; lint[li + 2] = r;
+          links++;
+          ri[q + TF] = POINT_LINK;
+        }
         break;
       }
       case JointType.Revolute:
@@ -249,6 +266,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     const base = j * IMPULSES;
     for (let s = 0; s < IMPULSES; s++) rows[o + ILX + s] = warm ? imp[base + s]! : 0;
   }
+  js.linkCount = links;
 }
 
 /** Wraps an angle into [-pi, pi]. */
@@ -286,9 +304,23 @@ export function warmStartJoints(world: PhysicsWorld): void {
   const n = js.rowCount;
   if (n === 0) return;
   const sb = world.collision.bodyState, rot = js.rotation, rows = js.rows, ri = js.rowInts;
+  const lf = js.links, lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS, i = l * LINK_INTS;
+    const acc = lf[f + 4]!;
+    if (acc === 0) continue;
+    const oA = lint[i]!, oB = lint[i + 1]!;
+    const dx = sb[oB + 3]! - sb[oA + 3]! + lf[f]!, dy = sb[oB + 4]! - sb[oA + 4]! + lf[f + 1]!;
+    const L = Math.sqrt(dx * dx + dy * dy);
+    if (L < 1e-12) continue;
+    const s = acc / L, Px = s * dx, Py = s * dy, mA = sb[oA + 5]!, mB = sb[oB + 5]!;
+    sb[oA] = sb[oA]! - mA * Px; sb[oA + 1] = sb[oA + 1]! - mA * Py;
+    sb[oB] = sb[oB]! + mB * Px; sb[oB + 1] = sb[oB + 1]! + mB * Py;
+  }
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const ia = ri[q + IA]!, ib = ri[q + IB]!, type = ri[q + TF]! & 255;
+    if (type === POINT_LINK) continue;
     const oA = ia * 8, oB = ib * 8;
     const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
     const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
@@ -346,10 +378,12 @@ export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): 
   if (n === 0) return;
   const sb = world.collision.bodyState, rot = js.rotation, rows = js.rows, ri = js.rowInts;
   const invH = 1 / hs;
+  solvePointLinks(world, invH, useBias);
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const ia = ri[q + IA]!, ib = ri[q + IB]!, tf = ri[q + TF]!;
     const type = tf & 255, flags = tf >> 8;
+    if (type === POINT_LINK) continue;
     const oA = ia * 8, oB = ib * 8;
     const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
     let vAx = sb[oA]!, vAy = sb[oA + 1]!, wA = sb[oA + 2]!, vBx = sb[oB]!, vBy = sb[oB + 1]!, wB = sb[oB + 2]!;
@@ -596,6 +630,49 @@ export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): 
 }
 
 /**
+ * The point links' pass: the distance joint's rod (soft while `useBias`, Box2D's joint softness) or
+ * rope (pulls only, speculative while slack), with the anchors' offset fixed within the step.
+ */
+function solvePointLinks(world: PhysicsWorld, invH: number, useBias: boolean): void {
+  const js = world.joints;
+  const m = js.linkCount;
+  if (m === 0) return;
+  const sb = world.collision.bodyState, lf = js.links, lint = js.linkInts;
+  // The rigid joint softness of this step (the same for every row; see prepareJoints).
+  const jb = useBias ? js.softness[0]! : 0, jm = useBias ? js.softness[1]! : 1, ji = useBias ? js.softness[2]! : 0;
+  for (let l = 0; l < m; l++) {
+    const f = l * LINK_FLOATS, i = l * LINK_INTS;
+    const oA = lint[i]!, oB = lint[i + 1]!;
+    const dx = sb[oB + 3]! - sb[oA + 3]! + lf[f]!, dy = sb[oB + 4]! - sb[oA + 4]! + lf[f + 1]!;
+    const L = Math.sqrt(dx * dx + dy * dy);
+    if (L < 1e-12) continue;
+    const ux = dx / L, uy = dy / L;
+    const vAx = sb[oA]!, vAy = sb[oA + 1]!, vBx = sb[oB]!, vBy = sb[oB + 1]!;
+    const vr = (vBx - vAx) * ux + (vBy - vAy) * uy;
+    const C = L - lf[f + 3]!;
+    const acc = lf[f + 4]!;
+    let impulse: number;
+    if (lf[f + 5] === 0) {
+      impulse = -jm * lf[f + 2]! * (vr + jb * C) - ji * acc;
+      lf[f + 4] = acc + impulse;
+    } else {
+      // Rope: C = maxLength - L >= 0; the accumulated impulse (stored negated: pulling) <= 0.
+      let bias = 0, ms = 1, is = 0;
+      if (C < 0) bias = -C * invH;
+      else if (useBias) { bias = -jb * C; ms = jm; is = ji; }
+      const old = -acc;
+      let next = old - ms * lf[f + 2]! * (-vr + bias) - is * old;
+      if (next < 0) next = 0;
+      lf[f + 4] = -next;
+      impulse = old - next;
+    }
+    const Px = impulse * ux, Py = impulse * uy, mA = sb[oA + 5]!, mB = sb[oB + 5]!;
+    sb[oA] = vAx - mA * Px; sb[oA + 1] = vAy - mA * Py;
+    sb[oB] = vBx + mB * Px; sb[oB + 1] = vBy + mB * Py;
+  }
+}
+
+/**
  * After the bodies are written back: each joint's constraint force and torque (accumulated impulse
  * of the last substep / h_s), the largest position error left, the impulses kept for the next step's
  * warm start, and breaking: a joint whose force exceeds `breakForce`, torque `breakTorque` or strain
@@ -611,10 +688,15 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
   const invH = 1 / hs;
   let maxError = 0, maxJoint = 0;
   let doomed: number[] | null = null;
+  const lf = js.links, lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS, o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
+    if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!; else rows[o + IUP] = -lf[f + 4]!;
+  }
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const j = ri[q + EID]!, ia = ri[q + IA]!, ib = ri[q + IB]!, tf = ri[q + TF]!;
-    const type = tf & 255, flags = tf >> 8;
+    const type = tf === POINT_LINK ? JointType.Distance : tf & 255, flags = tf >> 8;
     const oA = ia * 8, oB = ib * 8;
     const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
     const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!, rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
@@ -633,14 +715,14 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
         break;
       }
       case JointType.Revolute:
-        force = Math.hypot(rows[o + ILX]!, rows[o + ILY]!) * invH;
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
         torque = Math.abs(rows[o + ISPR]! + rows[o + IMOT]! + rows[o + ILOW]! - rows[o + IUP]!) * invH;
-        error = Math.hypot(dx, dy);
+        error = Math.sqrt(dx * dx + dy * dy);
         break;
       case JointType.Weld:
-        force = Math.hypot(rows[o + ILX]!, rows[o + ILY]!) * invH;
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
         torque = Math.abs(rows[o + IANG]!) * invH;
-        if (!(flags & JointFlag.Spring)) error = Math.hypot(dx, dy);
+        if (!(flags & JointFlag.Spring)) error = Math.sqrt(dx * dx + dy * dy);
         break;
       case JointType.Prismatic: case JointType.Wheel: {
         const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!, axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
@@ -651,7 +733,7 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
         break;
       }
       case JointType.Mouse:
-        force = Math.hypot(rows[o + ILX]!, rows[o + ILY]!) * invH;
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
         torque = Math.abs(rows[o + IANG]!) * invH;
         break;
     }

@@ -6,6 +6,9 @@
 
 /** Floats per solver row (see the offsets in joints/solver.ts). */
 export const ROW_FLOATS = 40;
+/** Floats and integers per point link (see JointState.links). */
+export const LINK_FLOATS = 6;
+export const LINK_INTS = 3;
 /** Integers per solver row: joint entity, solver index of A, of B, type. */
 export const ROW_INTS = 4;
 /** Accumulated impulses kept per joint entity for warm starting (linear x, y, angular, spring, motor, lower, upper). */
@@ -30,9 +33,12 @@ export interface JointBreakEvents {
 /** Joint solver tuning; may be changed between steps. */
 export interface JointSettings {
   /**
-   * Damping ratio of the rigid joint constraints' softness (Box2D v3: joints are soft constraints of
-   * twice the contact stiffness, jointDampingRatio 2). Dimensionless, >= 0. Default 2.
+   * Stiffness of the rigid joint constraints' softness, Hz, > 0, capped at a quarter of the solver
+   * substep rate (Box2D v3: joints are soft constraints of twice its 30 Hz contact stiffness, 60 Hz).
+   * Stiffer than the cap lets Gauss-Seidel over a long chain overshoot. Default 60 Hz.
    */
+  hertz: number;
+  /** Damping ratio of that softness, dimensionless, >= 0 (Box2D v3's jointDampingRatio). Default 2. */
   dampingRatio: number;
   /** Whether last step's impulses start this step's solve (warm starting). Default true. */
   warmStarting: boolean;
@@ -46,6 +52,17 @@ export interface JointState {
   /** Packed rows: ROW_FLOATS floats and ROW_INTS integers each, grown by doubling. */
   rows: Float64Array;
   rowInts: Int32Array;
+  /**
+   * Point links of this step: distance joints between two bodies that do not rotate (cloth, rope of
+   * particles), solved by a lean loop. Floats per link (LINK_FLOATS): centre-and-anchor offset (x, y)
+   * at the start of the step, effective mass, rest or longest length, accumulated impulse, mode
+   * (0 rod, 1 rope: pulls only). Integers per link: body row offsets of A and B, the general row.
+   */
+  linkCount: number;
+  /** The rigid joint softness of this step: bias rate (1/s), mass scale, impulse scale (see JointSettings). */
+  readonly softness: Float64Array;
+  links: Float64Array;
+  linkInts: Int32Array;
   /** Per joint entity, IMPULSES accumulated impulses of the last solve (N s, N m s); allocated with the first joint. */
   impulses: Float64Array;
   /** Per entity: how many joints hold it (so removing a body without joints costs nothing). */
@@ -67,10 +84,14 @@ export interface JointState {
 /** Creates an empty joint state (arrays sized when the first joint appears). */
 export function createJointState(): JointState {
   return {
-    settings: { dampingRatio: 2, warmStarting: true },
+    settings: { hertz: 60, dampingRatio: 2, warmStarting: true },
     rowCount: 0,
     rows: new Float64Array(0),
     rowInts: new Int32Array(0),
+    linkCount: 0,
+    softness: new Float64Array(3),
+    links: new Float64Array(0),
+    linkInts: new Int32Array(0),
     impulses: new Float64Array(0),
     attached: new Int32Array(0),
     rotation: new Float64Array(0),
@@ -102,6 +123,8 @@ export function ensureRows(state: JointState, n: number): void {
   while (cap < n) cap *= 2;
   state.rows = new Float64Array(cap * ROW_FLOATS);
   state.rowInts = new Int32Array(cap * ROW_INTS);
+  state.links = new Float64Array(cap * LINK_FLOATS);
+  state.linkInts = new Int32Array(cap * LINK_INTS);
 }
 
 /** Appends a break event, growing the buffer by doubling. */

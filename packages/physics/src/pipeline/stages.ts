@@ -19,6 +19,7 @@ import { broadphaseSystem } from '../collision/broadphase.js';
 import { narrowphaseSystem } from '../collision/narrowphase.js';
 import { contactSolverSystem } from '../collision/solver.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
+import { clothSystem } from '../cloth/solver.js';
 
 /** A system: a plain function of the world, run once per (sub)step in its stage. */
 export type System = (world: PhysicsWorld) => void;
@@ -31,7 +32,7 @@ export type System = (world: PhysicsWorld) => void;
  * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states),
  *    then the exact decay of drag and damping too stiff to be forces this step (forces/dissipation.ts);
  * 5. `collide`: broadphase, narrowphase, contact solver (impulses, restitution, friction, position correction);
- * 6. `constraints`: position-based links;
+ * 6. `constraints`: position-based links (cloth);
  * 7. `finalize`: sleeping islands (once per step).
  * Stages 2 to 6 run once per substep.
  */
@@ -61,7 +62,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
   },
   { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, burnFuelSystem, ballastFillSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
-  { stage: 'constraints', systems: [] },
+  { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
 ]);
 

@@ -1,0 +1,150 @@
+import { addComponent } from 'bitecs';
+import type { PhysicsWorld } from '../world.js';
+import { addBody, createEntity } from '../bodies.js';
+import { ensureJointArrays } from '../joints/state.js';
+import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { ClothLinkKind } from './store.js';
+
+/** Options of `createCloth`. Unknown fields are rejected. */
+export interface ClothOptions {
+  /** Top-left point of the cloth, m (x, y). Default (0, 0). */
+  origin?: ArrayLike<number>;
+  /** Width and height of the cloth at rest, m, > 0. Default 1 x 1. */
+  width?: number;
+  height?: number;
+  /** Points across and down, integers in [2, 512]. Default 32 x 32. */
+  columns?: number;
+  rows?: number;
+  /** Total mass of the cloth, kg, > 0 (shared equally by the points). Default 0.5 kg. */
+  mass?: number;
+  /** Which points are pinned (static): 'top' (the whole top edge), 'corners' (the two top corners), 'none', or an array of point indices (row * columns + column). Default 'top'. */
+  pinned?: 'top' | 'corners' | 'none' | readonly number[];
+  /** Compliance of the structural (horizontal and vertical) links, m/N, >= 0 (0 = inextensible). Default 0. */
+  compliance?: number;
+  /** Compliance of the shear (diagonal) links, m/N, >= 0; null leaves them out. Default 0.001 m/N. */
+  shearCompliance?: number | null;
+  /** Compliance of the bending links (two points apart), m/N, >= 0; null leaves them out. Default 0.01 m/N. */
+  bendCompliance?: number | null;
+  /** Strain (length - rest) / rest past which structural and shear links tear, > 0. Default Infinity (never). */
+  tearStretch?: number;
+  /** Linear drag of each point against the wind, N s/m, >= 0: the world's wind and turbulence act through it (setWind). Default 0.002 N s/m. */
+  drag?: number;
+}
+
+/** What `createCloth` made. */
+export interface Cloth {
+  /** Point bodies, row-major from the top-left: point (row, column) is points[row * columns + column]. */
+  readonly points: Int32Array;
+  /** Link entities: structural first, then shear, then bending. */
+  readonly links: Int32Array;
+  readonly columns: number;
+  readonly rows: number;
+}
+
+const KEYS = ['origin', 'width', 'height', 'columns', 'rows', 'mass', 'pinned', 'compliance', 'shearCompliance', 'bendCompliance', 'tearStretch', 'drag'] as const;
+
+/**
+ * Builds a cloth (Ramtal and Dobre ch. 13; the mass-spring cloth of Provot, "Deformation constraints in
+ * a mass-spring model", 1995): a grid of point masses joined by structural links (to the right and
+ * below), shear links (both diagonals of each cell) and bending links (two points apart), each a
+ * `ClothLink` entity solved by the cloth solver (cloth/solver.ts). Pinned points are static bodies.
+ * The points feel gravity and linear drag against the world's wind; links past `tearStretch` tear.
+ * A 2D world only.
+ * @returns the points and links.
+ * @throws TypeError | RangeError on a 3D world, unknown options, bad sizes, counts, compliances or pins,
+ *   or a world too small for the points and links.
+ */
+export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cloth {
+  const where = 'createCloth';
+  if (world.dimensions !== 2) throw new RangeError(`${where}: cloth needs a 2D world, this world has ${world.dimensions} dimensions`);
+  assertKnownKeys(where, options, KEYS);
+  const origin = options.origin ?? [0, 0];
+  assertVector(where, 'origin', origin, 2);
+  const width = options.width ?? 1, height = options.height ?? 1;
+  assertPositive(where, 'width', width); assertPositive(where, 'height', height);
+  const cols = options.columns ?? 32, rows = options.rows ?? 32;
+  assertInteger(where, 'columns', cols, 2, 512); assertInteger(where, 'rows', rows, 2, 512);
+  const mass = options.mass ?? 0.5;
+  assertPositive(where, 'mass', mass);
+  const compliance = options.compliance ?? 0;
+  assertNonNegative(where, 'compliance', compliance);
+  const shear = options.shearCompliance === undefined ? 0.001 : options.shearCompliance;
+  if (shear !== null) assertNonNegative(where, 'shearCompliance', shear);
+  const bend = options.bendCompliance === undefined ? 0.01 : options.bendCompliance;
+  if (bend !== null) assertNonNegative(where, 'bendCompliance', bend);
+  const tear = options.tearStretch ?? Infinity;
+  if (tear !== Infinity) assertPositive(where, 'tearStretch', tear);
+  const drag = options.drag ?? 0.002;
+  assertNonNegative(where, 'drag', drag);
+  const n = cols * rows;
+  const pinned = new Uint8Array(n);
+  const pin = options.pinned ?? 'top';
+  if (pin === 'top') for (let c = 0; c < cols; c++) pinned[c] = 1;
+  else if (pin === 'corners') { pinned[0] = 1; pinned[cols - 1] = 1; }
+  else if (pin !== 'none') {
+    if (!Array.isArray(pin)) throw new TypeError(`${where}: pinned must be 'top', 'corners', 'none' or an array of point indices, got ${describe(pin)}`);
+    for (const i of pin) { assertInteger(where, 'pinned[i]', i, 0, n - 1); pinned[i] = 1; }
+  }
+  const linkCount = 2 * cols * rows - cols - rows
+    + (shear === null ? 0 : 2 * (cols - 1) * (rows - 1))
+    + (bend === null ? 0 : (cols - 2) * rows + (rows - 2) * cols);
+  if (world.entityIndex.aliveCount + n + linkCount > world.capacity) {
+    throw new RangeError(`${where}: the cloth needs ${n + linkCount} entities (${n} points, ${linkCount} links), the world has room for ${world.capacity - world.entityIndex.aliveCount}`);
+  }
+
+  const dx = width / (cols - 1), dy = height / (rows - 1);
+  const m = mass / n;
+  const points = new Int32Array(n);
+  for (let r = 0; r < rows; r++) {
+    for (let c = 0; c < cols; c++) {
+      const i = r * cols + c;
+      const position = [origin[0]! + c * dx, origin[1]! - r * dy];
+      points[i] = pinned[i] ? addBody(world, { position, static: true }) : addBody(world, { position, mass: m, linearDrag: drag });
+    }
+  }
+  const links = new Int32Array(linkCount);
+  let k = 0;
+  const C = world.components;
+  ensureJointArrays(world.joints, world.capacity);
+  const att = world.joints.attached;
+  const link = (i: number, j: number, comp: number, kind: number, tears: boolean): void => {
+    const a = points[i]!, b = points[j]!;
+    const e = createEntity(world);
+    addComponent(world, e, C.ClothLink);
+    const L = C.ClothLink;
+    L.a[e] = a; L.b[e] = b;
+    L.restLength[e] = Math.hypot(C.Position.x[b]! - C.Position.x[a]!, C.Position.y[b]! - C.Position.y[a]!);
+    L.compliance[e] = comp; L.tearStretch[e] = tears ? tear : Infinity; L.kind[e] = kind;
+    att[a] = att[a]! + 1; att[b] = att[b]! + 1;
+    links[k++] = e;
+  };
+  for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) {
+    const i = r * cols + c;
+    if (c + 1 < cols) link(i, i + 1, compliance, ClothLinkKind.Structural, true);
+    if (r + 1 < rows) link(i, i + cols, compliance, ClothLinkKind.Structural, true);
+  }
+  if (shear !== null) for (let r = 0; r + 1 < rows; r++) for (let c = 0; c + 1 < cols; c++) {
+    const i = r * cols + c;
+    link(i, i + cols + 1, shear, ClothLinkKind.Shear, true);
+    link(i + 1, i + cols, shear, ClothLinkKind.Shear, true);
+  }
+  if (bend !== null) for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) {
+    const i = r * cols + c;
+    // Bending links break with their cloth: they tear at twice the stretch, so a cut opens cleanly.
+    if (c + 2 < cols) link(i, i + 2, bend, ClothLinkKind.Bending, false);
+    if (r + 2 < rows) link(i, i + 2 * cols, bend, ClothLinkKind.Bending, false);
+  }
+  if (tear !== Infinity && bend !== null) {
+    for (let i = linkCount - ((cols - 2) * rows + (rows - 2) * cols); i < linkCount; i++) C.ClothLink.tearStretch[links[i]!] = 2 * tear;
+  }
+  world.cloth.version++;
+  return { points, links, columns: cols, rows };
+}
+
+/** Index of point (row, column) in `Cloth.points`. @throws RangeError outside the grid. */
+export function clothPointIndex(cloth: Cloth, row: number, column: number): number {
+  assertInteger('clothPointIndex', 'row', row, 0, cloth.rows - 1);
+  assertInteger('clothPointIndex', 'column', column, 0, cloth.columns - 1);
+  assertFinite('clothPointIndex', 'row', row);
+  return row * cloth.columns + column;
+}

@@ -1,0 +1,44 @@
+/**
+ * The cloth solver's packed arrays, rebuilt from the `ClothLink` entities whenever links are added or
+ * removed (`version` changes), not every step.
+ */
+export interface ClothState {
+  /** Position iterations a (sub)step, integer >= 1. Default 12. */
+  iterations: number;
+  /** Bumped by every change to the set of links; the packed arrays are rebuilt when it differs from `built`. */
+  version: number;
+  built: number;
+  /** Links in the packed arrays; the first `rigidCount` have zero compliance. */
+  count: number;
+  rigidCount: number;
+  /** Per link: its entity; and (2 per link) the buffer offsets of its points a and b. */
+  link: Int32Array; pair: Int32Array;
+  /** Per link: rest length (m), compliance (m/N), tear strain. */
+  rest: Float64Array; compliance: Float64Array; tear: Float64Array;
+  /** Distinct points of the links (entity slots; the moving ones get their velocities from their moves). */
+  pointCount: number;
+  points: Int32Array;
+  /** Per point (compact index): x, y (m) and inverse mass (1/kg) while solving. */
+  buffer: Float64Array;
+  /** Per link (2 each): alpha~ = compliance / h^2 and 1 / (w_a + w_b + alpha~) of this step. */
+  solve: Float64Array;
+  /** Per entity scratch: compact index of a point while packing. */
+  compact: Int32Array;
+  /** Per link: XPBD Lagrange multiplier of the current solve (N s^2). */
+  lambda: Float64Array;
+  /** Per entity scratch for packing (capacity + 1) and its stamp. */
+  seen: Uint32Array;
+  seenStamp: number;
+  /** Largest strain (length - rest) / rest of any link after the last solve. */
+  maxStretch: number;
+}
+
+/** An empty cloth state. */
+export function createClothState(): ClothState {
+  return {
+    iterations: 12, version: 0, built: 0, count: 0, rigidCount: 0,
+    link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
+    rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
+    pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,
+  };
+}
