@@ -3,7 +3,7 @@ import fc from 'fast-check';
 import {
   addBody, addParticle, addSegment, applyImpulse, ballsInBox, createEntity, createFixedStepLoop, createPhysicsWorld,
   NonFiniteStateError, removeBody, Rng, setBoundary, setMass, setMaterial, setRadius, step, stepMany, addSystem,
-  setTimeStep, setAngularVelocity, setOrientation,
+  setTimeStep, setAngularVelocity, setOrientation, slotOf,
 } from '@bitphysics/physics';
 import { addEntity } from 'bitecs';
 
@@ -36,8 +36,8 @@ describe('bad input is refused at the boundary, naming the parameter and the val
     ['setMaterial restitution 2', () => setMaterial(world, addParticle(world), { restitution: 2 }), RangeError, /restitution must be in \[0, 1\], got 2/],
     ['boundary with max below min', () => setBoundary(world, { min: [0, 0], max: [-1, 5] }), RangeError, /max\[0\] must be > min\[0\]/],
     ['segment with a NaN end', () => addSegment(world, { a: [0, 0], b: [NaN, 1] }), RangeError, /b\[0\] must be finite, got NaN/],
-    ['removing a missing entity', () => removeBody(world, 999), RangeError, /entity 999 does not exist/],
-    ['impulse on a missing entity', () => applyImpulse(world, 998, [1, 0]), RangeError, /entity 998 does not exist/],
+    ['removing a missing entity', () => removeBody(world, 999), RangeError, /removeBody: entity must be an entity of this world .*got 999/],
+    ['impulse on a missing entity', () => applyImpulse(world, 998, [1, 0]), RangeError, /applyImpulse: entity must be an entity of this world .*got 998/],
     ['loop with dt 0', () => createFixedStepLoop({ dt: 0, step: () => {} }), RangeError, /dt must be > 0, got 0/],
   ];
   for (const [name, run, type, message] of cases) {
@@ -101,10 +101,12 @@ describe('entities', () => {
     stepMany(world, 5);
     removeBody(world, a);
     const b = addBody(world, { position: [1, 1] });
-    expect(b).toBe(a);
-    const c = world.components;
-    expect([c.Velocity.x[b], c.Velocity.y[b], c.AngularVelocity.z[b], c.Force.x[b], c.Force.y[b]]).toEqual([0, 0, 0, 0, 0]);
-    expect(c.PreviousPosition.x[b]).toBe(1);
+    // Same slot (bitecs recycles at once), new handle (the slot's second life).
+    expect(slotOf(b)).toBe(slotOf(a));
+    expect(b).not.toBe(a);
+    const s = slotOf(b), c = world.components;
+    expect([c.Velocity.x[s], c.Velocity.y[s], c.AngularVelocity.z[s], c.Force.x[s], c.Force.y[s]]).toEqual([0, 0, 0, 0, 0]);
+    expect(c.PreviousPosition.x[s]).toBe(1);
   });
 
   test('the same seed and inputs give bit-identical results (determinism)', () => {

@@ -1,26 +1,47 @@
-import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs';
+import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from './world.js';
-import { setInertia } from './rigid.js';
+import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { wakeIsland } from './collision/sleep.js';
+import { currentHandle, resolveEntity, resolveKind } from './handles.js';
 import {
-  assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
+  assertFinite, assertInRange, assertNonNegative, assertOptionalBoolean, assertOptions, assertPositive, assertVector, describe,
 } from './validate.js';
 
 /**
+ * Throws unless the world has room for one more entity. Creating functions call it before they change
+ * anything, so a full world leaves no trace of the refused call.
+ * @param where the function the user called.
+ * @throws RangeError `<where>: the world is full (capacity N entities); ...`.
+ */
+export function assertRoom(world: PhysicsWorld, where: string): void {
+  if (world.entityIndex.aliveCount >= world.capacity) {
+    throw new RangeError(
+      `${where}: the world is full (capacity ${world.capacity} entities); remove entities or create the world with a larger capacity`,
+    );
+  }
+}
+
+/**
+ * Internal: adds an empty entity and returns its slot (store index), counting its life in
+ * `world.spawnStamp`. The public functions return `currentHandle(world, slot)`.
+ * @throws RangeError (naming `where`) if the world is full.
+ */
+export function createSlot(world: PhysicsWorld, where: string): number {
+  assertRoom(world, where);
+  const slot = addEntity(world);
+  world.spawnStamp[slot] = world.spawnStamp[slot]! + 1;
+  return slot;
+}
+
+/**
  * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of
- * bitecs' `addEntity` so that the capacity is enforced where the entity is made.
- * @returns the new entity id (>= 1; ids of removed entities are reused).
+ * bitecs' `addEntity` so that the capacity is enforced where the entity is made and the entity gets
+ * a generational handle.
+ * @returns the new entity's handle (>= 1; see handles.ts: index stores with `slotOf(handle)`).
  * @throws RangeError if the world already holds `capacity` entities.
  */
 export function createEntity(world: PhysicsWorld): number {
-  if (world.entityIndex.aliveCount >= world.capacity) {
-    throw new RangeError(
-      `createEntity: the world is full (capacity ${world.capacity} entities); remove entities or create the world with a larger capacity`,
-    );
-  }
-  const eid = addEntity(world);
-  world.spawnStamp[eid] = world.spawnStamp[eid]! + 1;
-  return eid;
+  return currentHandle(world, createSlot(world, 'createEntity'));
 }
 
 /** Options of `addBody`. Vectors have `world.dimensions` components. Unknown fields are rejected. */
@@ -74,17 +95,22 @@ const BODY_OPTIONS = [
  * material if `radius` is given, drag if asked for, and rotation (moment of inertia of a solid disc
  * m r^2 / 2 in 2D or solid sphere 2 m r^2 / 5 in 3D) for dynamic balls.
  *
- * @returns the entity id.
- * @throws TypeError on an unknown option or a value of the wrong type (e.g. a 2-vector in a 3D world).
+ * Atomic: every option is checked before anything is created, so a refused call leaves the world as it was.
+ * @returns the entity's handle (index stores with `slotOf(handle)`).
+ * @throws TypeError on options that are not an object, an unknown option, a null option, a value of the
+ *   wrong type (e.g. a 2-vector in a 3D world, `static: "yes"`).
  * @throws RangeError on mass <= 0 or NaN, radius <= 0, restitution outside [0, 1], negative friction or
- *   drag, both `static` and `kinematic`, both `mass` and `density`, or a full world.
+ *   drag, a bad inertia, both `static` and `kinematic`, both `mass` and `density`, or a full world.
  * @example
  * const ball = addBody(world, { position: [0, 5], radius: 0.5, mass: 2, restitution: 0.8 });
  */
 export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number {
   const where = 'addBody';
-  assertKnownKeys(where, options, BODY_OPTIONS);
+  assertOptions(where, options, BODY_OPTIONS);
   const d = world.dimensions;
+  assertOptionalBoolean(where, 'static', options.static);
+  assertOptionalBoolean(where, 'kinematic', options.kinematic);
+  assertOptionalBoolean(where, 'rotates', options.rotates);
   if (options.position !== undefined) assertVector(where, 'position', options.position, d);
   if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
   if (options.radius !== undefined) assertPositive(where, 'radius', options.radius);
@@ -118,8 +144,12 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
     else assertVector(where, 'angularVelocity', options.angularVelocity, 3);
     if (!rotates) throw new RangeError(`${where}: angularVelocity needs rotates: true`);
   }
+  if (options.inertia !== undefined) {
+    checkInertia(where, d, options.inertia);
+    if (!rotates) throw new RangeError(`${where}: inertia needs rotates: true`);
+  }
 
-  const eid = createEntity(world);
+  const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Position);
   addComponent(world, eid, c.Velocity);
@@ -182,14 +212,14 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
       c.Inertia.value[eid] = I;
       c.Inertia.inv[eid] = 1 / I;
     }
-    if (options.inertia !== undefined) setInertia(world, eid, options.inertia);
+    if (options.inertia !== undefined) setInertiaUnchecked(world, eid, options.inertia);
     const w = options.angularVelocity;
     if (w !== undefined) {
       if (typeof w === 'number') c.AngularVelocity.z[eid] = w;
       else { c.AngularVelocity.x[eid] = w[0]!; c.AngularVelocity.y[eid] = w[1]!; c.AngularVelocity.z[eid] = w[2]!; }
     }
   }
-  return eid;
+  return currentHandle(world, eid);
 }
 
 /** Area of a disc (2D) or volume of a ball (3D) of radius r, m^2 or m^3. */
@@ -209,15 +239,16 @@ export interface ParticleOptions {
  * Adds a bare particle: position and velocity only. It feels the world's uniform gravity and
  * nothing else until given more components (any force-law component brings a force accumulator and
  * a 1 kg mass). The cheapest thing a world can move: use it for large particle counts.
- * @throws TypeError | RangeError on bad vectors or a full world.
+ * @returns the particle's handle. Atomic: a refused call leaves the world as it was.
+ * @throws TypeError | RangeError on options that are not an object, unknown or null options, bad vectors or a full world.
  */
 export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}): number {
   const where = 'addParticle';
-  assertKnownKeys(where, options, ['position', 'velocity']);
+  assertOptions(where, options, ['position', 'velocity']);
   const d = world.dimensions;
   if (options.position !== undefined) assertVector(where, 'position', options.position, d);
   if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
-  const eid = createEntity(world);
+  const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Position);
   addComponent(world, eid, c.Velocity);
@@ -227,7 +258,7 @@ export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}):
     c.PreviousPosition.x[eid] = p[0]!; c.PreviousPosition.y[eid] = p[1]!; c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
   }
   if (v) { c.Velocity.x[eid] = v[0]!; c.Velocity.y[eid] = v[1]!; c.Velocity.z[eid] = d === 3 ? v[2]! : 0; }
-  return eid;
+  return currentHandle(world, eid);
 }
 
 /** Options of `addSegment`. */
@@ -248,13 +279,13 @@ export interface SegmentOptions {
 
 /**
  * Adds a static line segment (an inclined wall, ramp or floor) that balls collide with, end points
- * included. @returns its entity id. @throws TypeError | RangeError on bad end points, negative radius,
- * restitution outside [0, 1], negative friction, or a full world.
+ * included. @returns its handle. Atomic: a refused call leaves the world as it was.
+ * @throws TypeError | RangeError on missing options, unknown or null options, bad end points, negative
+ * radius, restitution outside [0, 1], negative friction, or a full world.
  */
 export function addSegment(world: PhysicsWorld, options: SegmentOptions): number {
   const where = 'addSegment';
-  if (options === undefined) throw new TypeError(`${where}: options with end points a and b are required`);
-  assertKnownKeys(where, options, ['a', 'b', 'radius', 'restitution', 'friction', 'staticFriction']);
+  assertOptions(where, options, ['a', 'b', 'radius', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
   assertVector(where, 'a', options.a, d);
   assertVector(where, 'b', options.b, d);
@@ -262,7 +293,7 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
   if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
   if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
-  const eid = createEntity(world);
+  const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Segment);
   addComponent(world, eid, c.Static);
@@ -272,7 +303,7 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   S.bx[eid] = options.b[0]!; S.by[eid] = options.b[1]!; S.bz[eid] = d === 3 ? options.b[2]! : 0;
   S.radius[eid] = options.radius ?? 0;
   setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
-  return eid;
+  return currentHandle(world, eid);
 }
 
 /** Options of `setBoundary`. */
@@ -292,12 +323,12 @@ export interface BoundaryOptions {
 /**
  * Encloses the world in an axis-aligned box: balls collide with its inside faces (walls, floor and
  * ceiling; in 3D also front and back). Replaces any previous boundary.
- * @throws TypeError | RangeError on bad corners (max must exceed min on every axis) or material values.
+ * @throws TypeError | RangeError on missing, unknown or null options, bad corners (max must exceed min on
+ *   every axis) or material values.
  */
 export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void {
   const where = 'setBoundary';
-  if (options === undefined) throw new TypeError(`${where}: options with corners min and max are required`);
-  assertKnownKeys(where, options, ['min', 'max', 'restitution', 'friction', 'staticFriction']);
+  assertOptions(where, options, ['min', 'max', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
   assertVector(where, 'min', options.min, d);
   assertVector(where, 'max', options.max, d);
@@ -325,21 +356,17 @@ export function clearBoundary(world: PhysicsWorld): void {
   world.collision.boundary.enabled = false;
 }
 
-function assertAlive(where: string, world: PhysicsWorld, eid: number): void {
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid)) {
-    throw new RangeError(`${where}: entity ${describe(eid)} does not exist in this world`);
-  }
-}
-
 /**
- * Removes an entity and everything that references it (springs and joints attached to it, cached
- * contacts), so no force ever acts on a recycled id.
- * @throws RangeError if the entity does not exist.
+ * Removes an entity of any kind (body, wall, field, spring, emitter) and everything that references it
+ * (springs and joints attached to it, cached contacts), so no force ever acts on a recycled slot. Its
+ * handle is refused by every API function from then on, even after its slot is reused.
+ * @param eid the entity's handle.
+ * @throws RangeError if `eid` is not an entity of this world or was already removed.
  */
 export function removeBody(world: PhysicsWorld, eid: number): void {
-  assertAlive('removeBody', world, eid);
-  for (const hook of world.removeHooks) hook(world, eid);
-  removeEntity(world, eid);
+  const slot = resolveEntity(world, eid, 'removeBody');
+  for (const hook of world.removeHooks) hook(world, slot);
+  removeEntity(world, slot);
 }
 
 function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void {
@@ -350,23 +377,25 @@ function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void 
 /**
  * Sets a dynamic body's mass and inverse mass together (and rescales its moment of inertia if it
  * has one, keeping the shape's distribution).
+ * @param eid a body's handle (addBody, addParticle).
  * @param mass kg, finite and > 0.
- * @throws RangeError on mass <= 0, NaN or infinite, on a static or kinematic body (infinite mass), or a missing entity.
+ * @throws RangeError on mass <= 0, NaN or infinite, on a static or kinematic body (infinite mass), on a
+ *   removed entity or one that is not a body.
  */
 export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
-  assertAlive('setMass', world, eid);
+  const slot = resolveKind(world, eid, 'body', 'setMass');
   assertPositive('setMass', 'mass', mass);
   const c = world.components;
-  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic)) {
+  if (hasComponent(world, slot, c.Static) || hasComponent(world, slot, c.Kinematic)) {
     throw new RangeError(`setMass: entity ${eid} is static or kinematic and has infinite mass`);
   }
-  if (!hasComponent(world, eid, c.Mass)) addComponent(world, eid, c.Mass);
-  const old = c.Mass.value[eid]!;
-  setMassUnchecked(world, eid, mass);
-  if (hasComponent(world, eid, c.Inertia) && c.Inertia.value[eid]! > 0 && old > 0) {
-    const I = c.Inertia.value[eid]! * (mass / old);
-    c.Inertia.value[eid] = I;
-    c.Inertia.inv[eid] = 1 / I;
+  if (!hasComponent(world, slot, c.Mass)) addComponent(world, slot, c.Mass);
+  const old = c.Mass.value[slot]!;
+  setMassUnchecked(world, slot, mass);
+  if (hasComponent(world, slot, c.Inertia) && c.Inertia.value[slot]! > 0 && old > 0) {
+    const I = c.Inertia.value[slot]! * (mass / old);
+    c.Inertia.value[slot] = I;
+    c.Inertia.inv[slot] = 1 / I;
   }
 }
 
@@ -391,76 +420,97 @@ export interface MaterialOptions {
 }
 
 /**
- * Sets a body's surface material.
- * @throws TypeError on unknown fields; RangeError on restitution outside [0, 1], negative friction, or a missing entity.
+ * Sets the surface material of a body, segment or plane.
+ * @param eid the handle of a body, segment or plane.
+ * @throws TypeError on a missing or non-object `material`, unknown or null fields; RangeError on restitution
+ *   outside [0, 1], negative friction, a removed entity or one that is not a body, segment or plane.
  */
 export function setMaterial(world: PhysicsWorld, eid: number, material: MaterialOptions): void {
   const where = 'setMaterial';
-  assertAlive(where, world, eid);
-  assertKnownKeys(where, material, ['restitution', 'friction', 'staticFriction']);
+  const slot = resolveKind(world, eid, 'collider', where);
+  assertOptions(where, material, ['restitution', 'friction', 'staticFriction']);
   if (material.restitution !== undefined) assertInRange(where, 'restitution', material.restitution, 0, 1);
   if (material.friction !== undefined) assertNonNegative(where, 'friction', material.friction);
   if (material.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', material.staticFriction);
   const c = world.components;
-  if (!hasComponent(world, eid, c.Material)) addComponent(world, eid, c.Material);
-  setMaterialUnchecked(world, eid, material.restitution, material.friction, material.staticFriction);
+  if (!hasComponent(world, slot, c.Material)) addComponent(world, slot, c.Material);
+  setMaterialUnchecked(world, slot, material.restitution, material.friction, material.staticFriction);
 }
 
 /**
- * Sets a ball's radius, m (> 0), and rescales its moment of inertia if it has one.
- * @throws RangeError on radius <= 0 or NaN, or a missing entity.
+ * Sets a body's collision radius, m (> 0), making it a ball if it was not, and rescales its moment of
+ * inertia if it has one.
+ * @param eid a body's handle.
+ * @throws RangeError on radius <= 0 or NaN, a removed entity or one that is not a body.
  */
 export function setRadius(world: PhysicsWorld, eid: number, radius: number): void {
-  assertAlive('setRadius', world, eid);
+  const slot = resolveKind(world, eid, 'body', 'setRadius');
   assertPositive('setRadius', 'radius', radius);
   const c = world.components;
-  if (!hasComponent(world, eid, c.Ball)) addComponent(world, eid, c.Ball);
-  const old = c.Ball.radius[eid]!;
-  c.Ball.radius[eid] = radius;
-  if (hasComponent(world, eid, c.Inertia) && c.Inertia.value[eid]! > 0 && old > 0) {
-    const I = c.Inertia.value[eid]! * (radius * radius) / (old * old);
-    c.Inertia.value[eid] = I;
-    c.Inertia.inv[eid] = 1 / I;
+  if (!hasComponent(world, slot, c.Ball)) addComponent(world, slot, c.Ball);
+  const old = c.Ball.radius[slot]!;
+  c.Ball.radius[slot] = radius;
+  if (hasComponent(world, slot, c.Inertia) && c.Inertia.value[slot]! > 0 && old > 0) {
+    const I = c.Inertia.value[slot]! * (radius * radius) / (old * old);
+    c.Inertia.value[slot] = I;
+    c.Inertia.inv[slot] = 1 / I;
   }
 }
 
 /**
- * Moves a body to `position` (m) without sweeping through what lies between: its previous position is
- * set too, so nothing collides along the jump and a renderer does not interpolate across it.
- * @throws TypeError | RangeError on a bad vector or a missing entity.
+ * Moves a body or an emitter to `position` (m) without sweeping through what lies between: its
+ * previous position is set too, so nothing collides along the jump and a renderer does not
+ * interpolate across it.
+ * @param eid the handle of a body or an emitter.
+ * @throws TypeError | RangeError on a bad vector, a removed entity, or one that has no position.
  */
 export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLike<number>): void {
-  assertAlive('setPosition', world, eid);
-  wakeIsland(world, eid);
-  assertVector('setPosition', 'position', position, world.dimensions);
+  const where = 'setPosition';
+  const slot = resolveEntity(world, eid, where);
   const c = world.components;
+  if (!hasComponent(world, slot, c.Position)) resolveKind(world, eid, 'body', where);
+  assertVector(where, 'position', position, world.dimensions);
+  wakeIsland(world, slot);
   const z = world.dimensions === 3 ? position[2]! : 0;
-  c.Position.x[eid] = position[0]!; c.Position.y[eid] = position[1]!; c.Position.z[eid] = z;
-  c.PreviousPosition.x[eid] = position[0]!; c.PreviousPosition.y[eid] = position[1]!; c.PreviousPosition.z[eid] = z;
+  c.Position.x[slot] = position[0]!; c.Position.y[slot] = position[1]!; c.Position.z[slot] = z;
+  c.PreviousPosition.x[slot] = position[0]!; c.PreviousPosition.y[slot] = position[1]!; c.PreviousPosition.z[slot] = z;
 }
 
-/** Sets a body's velocity, m/s. @throws TypeError | RangeError on a bad vector or a missing entity. */
+/**
+ * Sets the velocity of a body or an emitter, m/s. A standalone emitter that had none starts moving
+ * as a kinematic body (as if made with addEmitter's `velocity`).
+ * @param eid the handle of a body or an emitter.
+ * @throws TypeError | RangeError on a bad vector, a removed entity, or one that is neither a body nor an emitter.
+ */
 export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLike<number>): void {
-  assertAlive('setVelocity', world, eid);
-  wakeIsland(world, eid);
-  assertVector('setVelocity', 'velocity', velocity, world.dimensions);
+  const where = 'setVelocity';
+  const slot = resolveEntity(world, eid, where);
   const c = world.components;
-  c.Velocity.x[eid] = velocity[0]!; c.Velocity.y[eid] = velocity[1]!; c.Velocity.z[eid] = world.dimensions === 3 ? velocity[2]! : 0;
+  const emitter = hasComponent(world, slot, c.Emitter) && hasComponent(world, slot, c.Position);
+  if (!emitter) resolveKind(world, eid, 'body', where);
+  assertVector(where, 'velocity', velocity, world.dimensions);
+  if (emitter && !hasComponent(world, slot, c.Velocity)) {
+    addComponent(world, slot, c.Velocity);
+    addComponent(world, slot, c.Kinematic);
+  }
+  wakeIsland(world, slot);
+  c.Velocity.x[slot] = velocity[0]!; c.Velocity.y[slot] = velocity[1]!; c.Velocity.z[slot] = world.dimensions === 3 ? velocity[2]! : 0;
 }
 
 /**
  * Applies an impulse J (N s) at the centre of mass: v += J / m. For throws, kicks and explosions.
- * @throws TypeError | RangeError on a bad vector or a missing entity.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on a bad vector, a removed entity or one that is not a body.
  */
 export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>): void {
-  assertAlive('applyImpulse', world, eid);
-  wakeIsland(world, eid);
+  const slot = resolveKind(world, eid, 'body', 'applyImpulse');
   assertVector('applyImpulse', 'impulse', impulse, world.dimensions);
+  wakeIsland(world, slot);
   const c = world.components;
-  const im = hasComponent(world, eid, c.Mass) ? c.Mass.inv[eid]! : 0;
-  c.Velocity.x[eid] = c.Velocity.x[eid]! + impulse[0]! * im;
-  c.Velocity.y[eid] = c.Velocity.y[eid]! + impulse[1]! * im;
-  if (world.dimensions === 3) c.Velocity.z[eid] = c.Velocity.z[eid]! + impulse[2]! * im;
+  const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
+  c.Velocity.x[slot] = c.Velocity.x[slot]! + impulse[0]! * im;
+  c.Velocity.y[slot] = c.Velocity.y[slot]! + impulse[1]! * im;
+  if (world.dimensions === 3) c.Velocity.z[slot] = c.Velocity.z[slot]! + impulse[2]! * im;
 }
 
 /**
@@ -490,43 +540,46 @@ export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number):
 
 /**
  * Sets a body's angular velocity, rad/s: a number (about z) in 2D, a 3-vector (world frame) in 3D.
- * @throws TypeError | RangeError on a bad value or a missing entity.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on a bad value, a removed entity or one that is not a body.
  */
 export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelocity: number | ArrayLike<number>): void {
   const where = 'setAngularVelocity';
-  assertAlive(where, world, eid);
-  wakeIsland(world, eid);
+  const slot = resolveKind(world, eid, 'body', where);
+  if (world.dimensions === 2) assertFinite(where, 'angularVelocity', angularVelocity);
+  else assertVector(where, 'angularVelocity', angularVelocity, 3);
+  wakeIsland(world, slot);
   const c = world.components;
-  if (!hasComponent(world, eid, c.AngularVelocity)) addComponent(world, eid, c.AngularVelocity);
+  if (!hasComponent(world, slot, c.AngularVelocity)) addComponent(world, slot, c.AngularVelocity);
   if (world.dimensions === 2) {
-    assertFinite(where, 'angularVelocity', angularVelocity);
-    c.AngularVelocity.z[eid] = angularVelocity as number;
+    c.AngularVelocity.z[slot] = angularVelocity as number;
     return;
   }
-  assertVector(where, 'angularVelocity', angularVelocity, 3);
   const w = angularVelocity as ArrayLike<number>;
-  c.AngularVelocity.x[eid] = w[0]!; c.AngularVelocity.y[eid] = w[1]!; c.AngularVelocity.z[eid] = w[2]!;
+  c.AngularVelocity.x[slot] = w[0]!; c.AngularVelocity.y[slot] = w[1]!; c.AngularVelocity.z[slot] = w[2]!;
 }
 
 /**
  * Sets a body's orientation: the angle (rad) in 2D, or a quaternion (x, y, z, w), normalised here, in 3D.
- * @throws TypeError | RangeError on a bad value, a zero quaternion, or a missing entity.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on a bad value, a zero quaternion, a removed entity or one that is not a body.
  */
 export function setOrientation(world: PhysicsWorld, eid: number, orientation: number | ArrayLike<number>): void {
   const where = 'setOrientation';
-  assertAlive(where, world, eid);
-  wakeIsland(world, eid);
+  const slot = resolveKind(world, eid, 'body', where);
   const c = world.components;
   if (world.dimensions === 2) {
     assertFinite(where, 'orientation', orientation);
-    if (!hasComponent(world, eid, c.Angle)) addComponent(world, eid, c.Angle);
-    c.Angle.value[eid] = orientation as number;
+    wakeIsland(world, slot);
+    if (!hasComponent(world, slot, c.Angle)) addComponent(world, slot, c.Angle);
+    c.Angle.value[slot] = orientation as number;
     return;
   }
   assertVector(where, 'orientation', orientation, 4);
   const q = orientation as ArrayLike<number>;
   const n = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
   if (!(n > 0)) throw new RangeError(`${where}: orientation must not be the zero quaternion`);
-  if (!hasComponent(world, eid, c.Orientation)) addComponent(world, eid, c.Orientation);
-  c.Orientation.x[eid] = q[0]! / n; c.Orientation.y[eid] = q[1]! / n; c.Orientation.z[eid] = q[2]! / n; c.Orientation.w[eid] = q[3]! / n;
+  wakeIsland(world, slot);
+  if (!hasComponent(world, slot, c.Orientation)) addComponent(world, slot, c.Orientation);
+  c.Orientation.x[slot] = q[0]! / n; c.Orientation.y[slot] = q[1]! / n; c.Orientation.z[slot] = q[2]! / n; c.Orientation.w[slot] = q[3]! / n;
 }

@@ -12,6 +12,12 @@ export {
   setAngularVelocity, setOrientation,
 } from './bodies.js';
 export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies.js';
+/**
+ * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
+ * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
+ */
+export { slotOf, handleOf, isAlive, resolveEntity, SLOT_RANGE } from './handles.js';
+export type { EntityKind } from './handles.js';
 export {
   inertiaOfSolidSphere, inertiaOfSphericalShell, inertiaOfSolidBox, inertiaOfSolidCylinder, inertiaOfDisc, inertiaOfRectangle,
   setInertia, applyForceAtPoint, applyImpulseAtPoint, spinAngularMomentum, spinKineticEnergy, setAngularDamping, addPlane,
@@ -35,7 +41,7 @@ export { linearDragSystem, quadraticDragSystem } from './forces/drag.js';
 export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js';
 export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
 export { contactSolverSystem } from './collision/solver.js';
-export { sleepSystem, wakeSystem, wakeBody, wakeAll, wakeIsland, isSleeping } from './collision/sleep.js';
+export { sleepSystem, wakeSystem, wakeBody, wakeAll, isSleeping } from './collision/sleep.js';
 export type { SleepState } from './collision/state.js';
 export { ContactKind } from './collision/contacts.js';
 export type { ContactBuffer } from './collision/contacts.js';
@@ -50,6 +56,7 @@ export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder
 export {
   setGravityScale, enableMutualGravity, setAttractor, setCharge, addElectricField, addMagneticField, setCentralForce,
   setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust, setVortex,
+  setElectricField, setMagneticField, setFluidRegion, setSpring,
 } from './forces/api.js';
 export { vortexSystem } from './forces/vortex.js';
 export {
@@ -57,7 +64,7 @@ export {
   EmitterShape, CapacityPolicy,
 } from './particles/emitter.js';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
-export type { FieldOptions, BuoyancyOptions, SpringOptions } from './forces/api.js';
+export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';
 export {
   G_SI, COULOMB_SI, MAX_WIND_MODES, setGravitation, setElectrostatics, setWind, windAt,
 } from './forces/settings.js';
@@ -90,8 +97,10 @@ export { NonFiniteStateError } from './errors.js';
 export { Rng } from './rng.js';
 export { query, Not } from './query.js';
 /**
- * bitecs' own functions for raw ECS use on a physics world (`addComponent(world, eid,
+ * bitecs' own functions for raw ECS use on a physics world (`addComponent(world, slotOf(e),
  * world.components.LinearDrag)`), re-exported so a project needs no import of its own from bitecs.
+ * They take slots, not handles: pass `slotOf(handle)` (and use `isAlive(world, handle)`, not
+ * entityExists, to ask whether an entity handed out by the API still exists).
  * bitecs is a peer dependency: the project and every bitphysics package share one copy.
  */
 export { entityExists, hasComponent, addComponent, removeComponent, getEntityComponents } from 'bitecs';

@@ -1,8 +1,9 @@
-import { addComponent, entityExists, hasComponent } from 'bitecs';
+import { addComponent, hasComponent } from 'bitecs';
 import type { PhysicsWorld } from './world.js';
 import { addComponentIfMissing } from './world.js';
-import { createEntity } from './bodies.js';
-import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
+import { createSlot } from './bodies.js';
+import { currentHandle, resolveKind } from './handles.js';
+import { assertFinite, assertInRange, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
 import { rotateVector, rotateVectorInverse } from './math/quaternion.js';
 import { wakeIsland } from './collision/sleep.js';
 
@@ -66,42 +67,52 @@ export function inertiaOfRectangle(mass: number, width: number, height: number):
   return (mass * (width * width + height * height)) / 12;
 }
 
-function assertBody(where: string, world: PhysicsWorld, eid: number): void {
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid) || !hasComponent(world, eid, world.components.Position)) {
-    throw new RangeError(`${where}: entity ${describe(eid)} is not a body in this world`);
+/**
+ * Checks a moment of inertia without touching the world: in 2D a number > 0 (kg m^2); in 3D a number
+ * > 0 or three principal moments, each >= 0 and at least one > 0.
+ * @param where the function the user called (addBody, setInertia).
+ * @throws TypeError | RangeError naming `where` and the value.
+ */
+export function checkInertia(where: string, dimensions: 2 | 3, inertia: unknown): void {
+  if (typeof inertia === 'number') { assertPositive(where, 'inertia', inertia); return; }
+  if (dimensions === 2) throw new TypeError(`${where}: inertia must be a number in 2D (one moment about z, kg m^2), got ${describe(inertia)}`);
+  assertVector(where, 'inertia', inertia, 3);
+  for (let i = 0; i < 3; i++) assertNonNegative(where, `inertia[${i}]`, inertia[i]);
+  if (!(inertia[0]! > 0 || inertia[1]! > 0 || inertia[2]! > 0)) throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${describe(inertia)}`);
+}
+
+/** Internal: sets an inertia already checked with `checkInertia` on the body in `slot`. */
+export function setInertiaUnchecked(world: PhysicsWorld, slot: number, inertia: number | ArrayLike<number>): void {
+  const c = world.components;
+  addComponentIfMissing(world, slot, c.AngularVelocity);
+  addComponentIfMissing(world, slot, c.Torque);
+  addComponentIfMissing(world, slot, world.dimensions === 2 ? c.Angle : c.Orientation);
+  if (typeof inertia === 'number') {
+    addComponentIfMissing(world, slot, c.Inertia);
+    c.Inertia.value[slot] = inertia;
+    c.Inertia.inv[slot] = 1 / inertia;
+    return;
   }
+  addComponentIfMissing(world, slot, c.InertiaTensor);
+  const T = c.InertiaTensor;
+  T.x[slot] = inertia[0]!; T.y[slot] = inertia[1]!; T.z[slot] = inertia[2]!;
+  T.invX[slot] = inertia[0]! > 0 ? 1 / inertia[0]! : 0;
+  T.invY[slot] = inertia[1]! > 0 ? 1 / inertia[1]! : 0;
+  T.invZ[slot] = inertia[2]! > 0 ? 1 / inertia[2]! : 0;
 }
 
 /**
  * Sets a body's rotational inertia and makes it turn: in 2D a moment about z (kg m^2, > 0); in 3D a
  * number (isotropic, like a ball) or the three principal moments (kg m^2, each >= 0 and at least one
  * > 0; 0 locks that axis) along the body's axes. Adds angular velocity, torque and orientation.
- * @throws TypeError | RangeError on bad values, principal moments in 2D, or a missing body.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on bad values, principal moments in 2D, a removed entity or one that is not a body.
  */
 export function setInertia(world: PhysicsWorld, eid: number, inertia: number | ArrayLike<number>): void {
   const where = 'setInertia';
-  assertBody(where, world, eid);
-  const c = world.components;
-  addComponentIfMissing(world, eid, c.AngularVelocity);
-  addComponentIfMissing(world, eid, c.Torque);
-  addComponentIfMissing(world, eid, world.dimensions === 2 ? c.Angle : c.Orientation);
-  if (typeof inertia === 'number') {
-    assertPositive(where, 'inertia', inertia);
-    addComponentIfMissing(world, eid, c.Inertia);
-    c.Inertia.value[eid] = inertia;
-    c.Inertia.inv[eid] = 1 / inertia;
-    return;
-  }
-  if (world.dimensions === 2) throw new TypeError(`${where}: a 2D body has one moment of inertia (a number), got ${describe(inertia)}`);
-  assertVector(where, 'inertia', inertia, 3);
-  for (let i = 0; i < 3; i++) assertNonNegative(where, `inertia[${i}]`, inertia[i]);
-  if (!(inertia[0]! > 0 || inertia[1]! > 0 || inertia[2]! > 0)) throw new RangeError(`${where}: at least one principal moment must be > 0`);
-  addComponentIfMissing(world, eid, c.InertiaTensor);
-  const T = c.InertiaTensor;
-  T.x[eid] = inertia[0]!; T.y[eid] = inertia[1]!; T.z[eid] = inertia[2]!;
-  T.invX[eid] = inertia[0]! > 0 ? 1 / inertia[0]! : 0;
-  T.invY[eid] = inertia[1]! > 0 ? 1 / inertia[1]! : 0;
-  T.invZ[eid] = inertia[2]! > 0 ? 1 / inertia[2]! : 0;
+  const slot = resolveKind(world, eid, 'body', where);
+  checkInertia(where, world.dimensions, inertia);
+  setInertiaUnchecked(world, slot, inertia);
 }
 
 const tmp = new Float64Array(3);
@@ -110,61 +121,63 @@ const tmp = new Float64Array(3);
  * Applies force F (N, world frame) at the world point p (m): adds F to the force accumulator and
  * (p - x) x F to the torque accumulator. Call it from a system in the 'forces' stage (accumulators
  * are cleared at the start of each evaluation).
- * @throws TypeError | RangeError on bad vectors or a missing body.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on bad vectors, a removed entity or one that is not a body.
  */
 export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyForceAtPoint';
-  assertBody(where, world, eid);
-  wakeIsland(world, eid);
+  const slot = resolveKind(world, eid, 'body', where);
   const d = world.dimensions;
   assertVector(where, 'force', force, d);
   assertVector(where, 'point', point, d);
+  wakeIsland(world, slot);
   const c = world.components;
-  addComponentIfMissing(world, eid, c.Force);
-  addComponentIfMissing(world, eid, c.Torque);
+  addComponentIfMissing(world, slot, c.Force);
+  addComponentIfMissing(world, slot, c.Torque);
   const fx = force[0]!, fy = force[1]!, fz = d === 3 ? force[2]! : 0;
-  const rx = point[0]! - c.Position.x[eid]!, ry = point[1]! - c.Position.y[eid]!, rz = d === 3 ? point[2]! - c.Position.z[eid]! : 0;
-  c.Force.x[eid] = c.Force.x[eid]! + fx; c.Force.y[eid] = c.Force.y[eid]! + fy; c.Force.z[eid] = c.Force.z[eid]! + fz;
-  c.Torque.x[eid] = c.Torque.x[eid]! + (ry * fz - rz * fy);
-  c.Torque.y[eid] = c.Torque.y[eid]! + (rz * fx - rx * fz);
-  c.Torque.z[eid] = c.Torque.z[eid]! + (rx * fy - ry * fx);
+  const rx = point[0]! - c.Position.x[slot]!, ry = point[1]! - c.Position.y[slot]!, rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
+  c.Force.x[slot] = c.Force.x[slot]! + fx; c.Force.y[slot] = c.Force.y[slot]! + fy; c.Force.z[slot] = c.Force.z[slot]! + fz;
+  c.Torque.x[slot] = c.Torque.x[slot]! + (ry * fz - rz * fy);
+  c.Torque.y[slot] = c.Torque.y[slot]! + (rz * fx - rx * fz);
+  c.Torque.z[slot] = c.Torque.z[slot]! + (rx * fy - ry * fx);
 }
 
 /**
  * Applies impulse J (N s, world frame) at the world point p (m): v += J / m and
  * w += I_w^-1 ((p - x) x J), with I_w the world-frame inertia (scalar, or R diag(I) R^T for a tensor).
  * For clicks, kicks and hits between steps.
- * @throws TypeError | RangeError on bad vectors or a missing body.
+ * @param eid a body's handle.
+ * @throws TypeError | RangeError on bad vectors, a removed entity or one that is not a body.
  */
 export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyImpulseAtPoint';
-  assertBody(where, world, eid);
-  wakeIsland(world, eid);
+  const slot = resolveKind(world, eid, 'body', where);
   const d = world.dimensions;
   assertVector(where, 'impulse', impulse, d);
   assertVector(where, 'point', point, d);
+  wakeIsland(world, slot);
   const c = world.components;
-  const im = hasComponent(world, eid, c.Mass) ? c.Mass.inv[eid]! : 0;
+  const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
   const jx = impulse[0]!, jy = impulse[1]!, jz = d === 3 ? impulse[2]! : 0;
-  c.Velocity.x[eid] = c.Velocity.x[eid]! + jx * im;
-  c.Velocity.y[eid] = c.Velocity.y[eid]! + jy * im;
-  c.Velocity.z[eid] = c.Velocity.z[eid]! + jz * im;
-  if (!hasComponent(world, eid, c.AngularVelocity)) return;
-  const rx = point[0]! - c.Position.x[eid]!, ry = point[1]! - c.Position.y[eid]!, rz = d === 3 ? point[2]! - c.Position.z[eid]! : 0;
+  c.Velocity.x[slot] = c.Velocity.x[slot]! + jx * im;
+  c.Velocity.y[slot] = c.Velocity.y[slot]! + jy * im;
+  c.Velocity.z[slot] = c.Velocity.z[slot]! + jz * im;
+  if (!hasComponent(world, slot, c.AngularVelocity)) return;
+  const rx = point[0]! - c.Position.x[slot]!, ry = point[1]! - c.Position.y[slot]!, rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
   const Lx = ry * jz - rz * jy, Ly = rz * jx - rx * jz, Lz = rx * jy - ry * jx;
-  if (d === 3 && hasComponent(world, eid, c.InertiaTensor)) {
+  if (d === 3 && hasComponent(world, slot, c.InertiaTensor)) {
     const q = c.Orientation, T = c.InertiaTensor;
-    const qx = q.x[eid]!, qy = q.y[eid]!, qz = q.z[eid]!, qw = q.w[eid]!;
+    const qx = q.x[slot]!, qy = q.y[slot]!, qz = q.z[slot]!, qw = q.w[slot]!;
     rotateVectorInverse(qx, qy, qz, qw, Lx, Ly, Lz, tmp);
-    rotateVector(qx, qy, qz, qw, tmp[0]! * T.invX[eid]!, tmp[1]! * T.invY[eid]!, tmp[2]! * T.invZ[eid]!, tmp);
-    c.AngularVelocity.x[eid] = c.AngularVelocity.x[eid]! + tmp[0]!;
-    c.AngularVelocity.y[eid] = c.AngularVelocity.y[eid]! + tmp[1]!;
-    c.AngularVelocity.z[eid] = c.AngularVelocity.z[eid]! + tmp[2]!;
+    rotateVector(qx, qy, qz, qw, tmp[0]! * T.invX[slot]!, tmp[1]! * T.invY[slot]!, tmp[2]! * T.invZ[slot]!, tmp);
+    c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + tmp[0]!;
+    c.AngularVelocity.y[slot] = c.AngularVelocity.y[slot]! + tmp[1]!;
+    c.AngularVelocity.z[slot] = c.AngularVelocity.z[slot]! + tmp[2]!;
     return;
   }
-  const ii = hasComponent(world, eid, c.Inertia) ? c.Inertia.inv[eid]! : 0;
-  if (d === 3) { c.AngularVelocity.x[eid] = c.AngularVelocity.x[eid]! + Lx * ii; c.AngularVelocity.y[eid] = c.AngularVelocity.y[eid]! + Ly * ii; }
-  c.AngularVelocity.z[eid] = c.AngularVelocity.z[eid]! + Lz * ii;
+  const ii = hasComponent(world, slot, c.Inertia) ? c.Inertia.inv[slot]! : 0;
+  if (d === 3) { c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + Lx * ii; c.AngularVelocity.y[slot] = c.AngularVelocity.y[slot]! + Ly * ii; }
+  c.AngularVelocity.z[slot] = c.AngularVelocity.z[slot]! + Lz * ii;
 }
 
 /**
@@ -172,7 +185,11 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
  * Written into out (length 3) and returned. @throws RangeError if the entity is not a body.
  */
 export function spinAngularMomentum(world: PhysicsWorld, eid: number, out: Float64Array = new Float64Array(3)): Float64Array {
-  assertBody('spinAngularMomentum', world, eid);
+  return spinMomentumOf(world, resolveKind(world, eid, 'body', 'spinAngularMomentum'), out);
+}
+
+/** Internal: spinAngularMomentum of the body in slot `eid`. */
+function spinMomentumOf(world: PhysicsWorld, eid: number, out: Float64Array): Float64Array {
   const c = world.components;
   const wx = c.AngularVelocity.x[eid]!, wy = c.AngularVelocity.y[eid]!, wz = c.AngularVelocity.z[eid]!;
   if (world.dimensions === 3 && hasComponent(world, eid, c.InertiaTensor)) {
@@ -193,18 +210,19 @@ const spinL = new Float64Array(3);
  * Rotational kinetic energy of one body, J: w . (I_w w) / 2. @throws RangeError if the entity is not a body.
  */
 export function spinKineticEnergy(world: PhysicsWorld, eid: number): number {
-  const L = spinAngularMomentum(world, eid, spinL);
+  const slot = resolveKind(world, eid, 'body', 'spinKineticEnergy');
+  const L = spinMomentumOf(world, slot, spinL);
   const c = world.components;
-  return 0.5 * (L[0]! * c.AngularVelocity.x[eid]! + L[1]! * c.AngularVelocity.y[eid]! + L[2]! * c.AngularVelocity.z[eid]!);
+  return 0.5 * (L[0]! * c.AngularVelocity.x[slot]! + L[1]! * c.AngularVelocity.y[slot]! + L[2]! * c.AngularVelocity.z[slot]!);
 }
 
 /** Sets angular damping, torque -k w with k in N m s (>= 0). @throws RangeError on bad k or a missing body. */
 export function setAngularDamping(world: PhysicsWorld, eid: number, k: number): void {
-  assertBody('setAngularDamping', world, eid);
+  const slot = resolveKind(world, eid, 'body', 'setAngularDamping');
   assertNonNegative('setAngularDamping', 'k', k);
   const c = world.components;
-  addComponentIfMissing(world, eid, c.AngularDamping);
-  c.AngularDamping.k[eid] = k;
+  addComponentIfMissing(world, slot, c.AngularDamping);
+  c.AngularDamping.k[slot] = k;
 }
 
 /** Options of `addPlane`. */
@@ -223,12 +241,13 @@ export interface PlaneOptions {
 
 /**
  * Adds a static infinite plane (a line in 2D) that balls rest on, roll on and bounce off.
- * @returns its entity. @throws TypeError | RangeError on a zero or malformed normal, bad material values.
+ * @returns its handle. Atomic: a refused call leaves the world as it was.
+ * @throws TypeError | RangeError on missing, unknown or null options, a zero or malformed normal, bad
+ *   material values, or a full world.
  */
 export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const where = 'addPlane';
-  if (options === undefined) throw new TypeError(`${where}: options with a normal are required`);
-  assertKnownKeys(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
+  assertOptions(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
   assertVector(where, 'normal', options.normal, d);
   if (options.point !== undefined) assertVector(where, 'point', options.point, d);
@@ -242,7 +261,7 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const p = options.point;
   const dist = p ? nx * p[0]! + ny * p[1]! + (d === 3 ? nz * p[2]! : 0) : 0;
   assertFinite(where, 'offset', dist);
-  const eid = createEntity(world);
+  const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Plane);
   addComponent(world, eid, c.Static);
@@ -251,5 +270,5 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   if (options.restitution !== undefined) c.Material.restitution[eid] = options.restitution;
   if (options.friction !== undefined) { c.Material.friction[eid] = options.friction; c.Material.staticFriction[eid] = options.friction; }
   if (options.staticFriction !== undefined) c.Material.staticFriction[eid] = options.staticFriction;
-  return eid;
+  return currentHandle(world, eid);
 }

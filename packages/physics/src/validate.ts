@@ -125,3 +125,42 @@ export function assertKnownKeys(where: string, options: unknown, known: readonly
     }
   }
 }
+
+/**
+ * Throws unless `options` is a plain object whose keys are all in `known` and whose values are not
+ * `null` (an option is omitted, never null, to get its default). Functions whose options object is
+ * optional give it a default (`options = {}`) before calling this, so a missing object means "all
+ * defaults" there and is refused everywhere else with the same message as a wrong one.
+ * @param param how the object is named in messages: 'options', or a nested option such as 'particle'.
+ * @throws TypeError `<where>: <param> must be an object, got <value>`; `<where>: unknown option "<key>"...`;
+ *   `<where>: <key> must be a value (omit it for the default), got null`.
+ */
+export function assertOptions(where: string, options: unknown, known: readonly string[], param = 'options'): void {
+  if (options === null || typeof options !== 'object' || Array.isArray(options) || ArrayBuffer.isView(options)) {
+    throw new TypeError(`${where}: ${param} must be an object, got ${describe(options)}`);
+  }
+  const prefix = param === 'options' ? '' : `${param}.`;
+  for (const key of Object.keys(options)) {
+    if (!known.includes(key)) {
+      throw new TypeError(`${where}: unknown option ${JSON.stringify(prefix + key)}; known options${prefix ? ` of ${param}` : ''} are ${known.join(', ')}`);
+    }
+    if ((options as Record<string, unknown>)[key] === null) {
+      throw new TypeError(`${where}: ${prefix}${key} must be a value (omit it for the default), got null`);
+    }
+  }
+}
+
+/** Throws unless `value` is undefined (omitted) or a boolean. @throws TypeError `<where>: <param> must be a boolean, got <value>` */
+export function assertOptionalBoolean(where: string, param: string, value: unknown): asserts value is boolean | undefined {
+  if (value !== undefined) assertBoolean(where, param, value);
+}
+
+/**
+ * Throws unless `value` is one of the strings `choices` (own names only: 'toString' is not a choice).
+ * @throws RangeError `<where>: <param> must be one of 'a', 'b', got <value>`.
+ */
+export function assertOneOf<T extends string>(where: string, param: string, value: unknown, choices: readonly T[]): asserts value is T {
+  if (typeof value !== 'string' || !(choices as readonly string[]).includes(value)) {
+    throw new RangeError(`${where}: ${param} must be one of ${choices.map((c) => `'${c}'`).join(', ')}, got ${describe(value)}`);
+  }
+}

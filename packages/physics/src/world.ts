@@ -10,9 +10,9 @@ import { wakeTouching } from './collision/sleep.js';
 import { createJointState, type JointState } from './joints/state.js';
 import { removeJointsOf } from './joints/remove.js';
 import { createClothState, type ClothState } from './cloth/state.js';
-import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from './validate.js';
+import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
 
-/** Options of `createPhysicsWorld`. Every field is optional; unknown fields are rejected. */
+/** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
 export interface PhysicsWorldOptions {
   /** 2 for a planar world (x, y), 3 for a spatial one (x, y, z). Default 2. */
   dimensions?: 2 | 3;
@@ -106,8 +106,9 @@ export interface PhysicsWorldContext {
   /** Milliseconds spent in each stage in the last step. */
   readonly timings: StageTimings;
   /**
-   * Count of times each entity id has been spawned (Uint32, capacity + 1). Caches keyed by entity id
-   * compare it so data of a removed body never carries over to the body that recycles its id.
+   * Count of times each slot has held an entity (Uint32, capacity + 1; 0 = never used). Caches keyed by
+   * slot compare it so data of a removed body never carries over to the body that recycles its slot,
+   * and an entity's handle is slot + (spawnStamp[slot] - 1) * 2^25 (see handles.ts).
    */
   readonly spawnStamp: Uint32Array;
   /** Internal: bitecs' entity index, read for the live count and the highest id. */
@@ -125,14 +126,15 @@ export type PhysicsWorld = World<PhysicsWorldContext>;
  * Creates a physics world: component stores of fixed capacity, the staged pipeline, collision
  * state and a seeded random number generator.
  *
- * @throws TypeError on an unknown option name or a value of the wrong type.
+ * @throws TypeError on options that are not an object, an unknown option name, a null option or a value of
+ *   the wrong type (booleans must be booleans).
  * @throws RangeError on a value out of range (dt <= 0, capacity < 1, substeps not an integer, ...).
  * @example
  * const world = createPhysicsWorld({ dimensions: 2, capacity: 1000, gravity: [0, -9.81] });
  */
 export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWorld {
   const where = 'createPhysicsWorld';
-  assertKnownKeys(where, options, KNOWN_OPTIONS);
+  assertOptions(where, options, KNOWN_OPTIONS);
   const dimensions = options.dimensions ?? 2;
   if (dimensions !== 2 && dimensions !== 3) {
     throw new RangeError(`${where}: dimensions must be 2 or 3, got ${describe(dimensions)}`);
@@ -163,9 +165,9 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   const restitutionThreshold = options.restitutionThreshold ?? 0.5;
   assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
   const interpolation = options.interpolation ?? true;
-  if (typeof interpolation !== 'boolean') throw new TypeError(`${where}: interpolation must be a boolean, got ${describe(interpolation)}`);
+  assertBoolean(where, 'interpolation', interpolation);
   const sleep = options.sleep ?? true;
-  if (typeof sleep !== 'boolean') throw new TypeError(`${where}: sleep must be a boolean, got ${describe(sleep)}`);
+  assertBoolean(where, 'sleep', sleep);
 
   const entityIndex = createEntityIndex();
   const components = createComponents(capacity);

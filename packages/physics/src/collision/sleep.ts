@@ -1,8 +1,8 @@
-import { addComponent, entityExists, hasComponent, removeComponent } from 'bitecs';
+import { addComponent, hasComponent, removeComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query, Not } from '../query.js';
 import { joinJointIslands, markJointSupport } from '../joints/islands.js';
-import { describe } from '../validate.js';
+import { resolveKind } from '../handles.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -37,18 +37,21 @@ export function wakeIsland(world: PhysicsWorld, eid: number): void {
   for (const e of asleep) if (island[e] === id) wakeTag(world, e);
 }
 
-/** Whether the entity is asleep. */
-export function isSleeping(world: PhysicsWorld, eid: number): boolean {
-  return entityExists(world, eid) && hasComponent(world, eid, world.components.Sleeping);
+/**
+ * Whether a body is asleep. @param body a body's handle.
+ * @throws RangeError on a removed entity or one that is not a body.
+ */
+export function isSleeping(world: PhysicsWorld, body: number): boolean {
+  return hasComponent(world, resolveKind(world, body, 'body', 'isSleeping'), world.components.Sleeping);
 }
 
 /**
  * Wakes a body and the island it sleeps in (no-op if it is awake). Use it after changing a sleeping
- * body's forces or position by writing components directly. @throws RangeError if the entity does not exist.
+ * body's forces or position by writing components directly. @param body a body's handle.
+ * @throws RangeError on a removed entity or one that is not a body.
  */
-export function wakeBody(world: PhysicsWorld, eid: number): void {
-  if (typeof eid !== 'number' || !entityExists(world, eid)) throw new RangeError(`wakeBody: entity ${describe(eid)} does not exist in this world`);
-  wakeIsland(world, eid);
+export function wakeBody(world: PhysicsWorld, body: number): void {
+  wakeIsland(world, resolveKind(world, body, 'body', 'wakeBody'));
 }
 
 /** Wakes every sleeping body. */

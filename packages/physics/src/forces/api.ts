@@ -1,26 +1,21 @@
-import { addComponent, entityExists, hasComponent } from 'bitecs';
+import { addComponent, hasComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { createEntity } from '../bodies.js';
+import { createSlot } from '../bodies.js';
+import { currentHandle, resolveKind } from '../handles.js';
 import {
-  assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
+  assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions, assertPositive,
+  assertVector, describe,
 } from '../validate.js';
 import { BuoyancyShape } from './fluid.js';
 
 /**
  * Validated helpers that give bodies force laws and add field and spring entities. Each writes the
  * components documented in components.ts; the force-law systems of the `forces` stage do the rest.
- * Vectors have `world.dimensions` components unless said otherwise.
+ * Vectors have `world.dimensions` components unless said otherwise. Functions take entity handles
+ * (see handles.ts) and refuse a removed entity or one of the wrong kind; options objects are required
+ * unless said otherwise, and unknown or null options are refused.
  */
-
-function assertBody(where: string, world: PhysicsWorld, eid: number, param = 'entity'): void {
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid)) {
-    throw new RangeError(`${where}: ${param} ${describe(eid)} does not exist in this world`);
-  }
-  if (!hasComponent(world, eid, world.components.Position)) {
-    throw new RangeError(`${where}: ${param} ${eid} is not a body (it has no Position)`);
-  }
-}
 
 function vec3(world: PhysicsWorld, v: ArrayLike<number>): [number, number, number] {
   return [v[0]!, v[1]!, world.dimensions === 3 ? v[2]! : 0];
@@ -28,10 +23,10 @@ function vec3(world: PhysicsWorld, v: ArrayLike<number>): [number, number, numbe
 
 /**
  * Scales the uniform gravity this body feels (1 normal, 0 none, negative upward).
- * @throws RangeError on a missing body or a non-finite scale.
+ * @throws RangeError on a non-finite scale, a removed entity or one that is not a body.
  */
-export function setGravityScale(world: PhysicsWorld, eid: number, scale: number): void {
-  assertBody('setGravityScale', world, eid);
+export function setGravityScale(world: PhysicsWorld, body: number, scale: number): void {
+  const eid = resolveKind(world, body, 'body', 'setGravityScale');
   assertFinite('setGravityScale', 'scale', scale);
   addComponentIfMissing(world, eid, world.components.GravityScale);
   world.components.GravityScale.value[eid] = scale;
@@ -39,21 +34,21 @@ export function setGravityScale(world: PhysicsWorld, eid: number, scale: number)
 
 /**
  * Makes the body take part in mutual Newtonian gravity (with every other body so marked), using its
- * mass. Constant and softening: `setGravitation`. @throws RangeError on a missing body.
+ * mass. Constant and softening: `setGravitation`. @throws RangeError on a removed entity or one that is not a body.
  */
-export function enableMutualGravity(world: PhysicsWorld, eid: number): void {
-  assertBody('enableMutualGravity', world, eid);
+export function enableMutualGravity(world: PhysicsWorld, body: number): void {
+  const eid = resolveKind(world, body, 'body', 'enableMutualGravity');
   addComponentIfMissing(world, eid, world.components.MutualGravity);
 }
 
 /**
  * Makes the body an attractor of `mass` kg (> 0) that pulls every dynamic body, with softening length
- * `softening` m (>= 0, default 0). @throws TypeError | RangeError on bad values or a missing body.
+ * `softening` m (>= 0, default 0). @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
  */
-export function setAttractor(world: PhysicsWorld, eid: number, options: { mass: number; softening?: number }): void {
+export function setAttractor(world: PhysicsWorld, body: number, options: { mass: number; softening?: number }): void {
   const where = 'setAttractor';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['mass', 'softening']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['mass', 'softening']);
   assertPositive(where, 'mass', options.mass);
   if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
   const c = world.components;
@@ -63,52 +58,70 @@ export function setAttractor(world: PhysicsWorld, eid: number, options: { mass: 
 }
 
 /** Sets the body's electric charge, C (finite; 0 removes nothing but exerts nothing). @throws RangeError. */
-export function setCharge(world: PhysicsWorld, eid: number, charge: number): void {
-  assertBody('setCharge', world, eid);
+export function setCharge(world: PhysicsWorld, body: number, charge: number): void {
+  const eid = resolveKind(world, body, 'body', 'setCharge');
   assertFinite('setCharge', 'charge', charge);
   addComponentIfMissing(world, eid, world.components.Charge);
   world.components.Charge.value[eid] = charge;
 }
 
-/** Options of a uniform field entity: E0 (or B0), and an oscillating part A cos(omega t + phase). */
+/**
+ * Options of a uniform field entity: E(t) = E0 + A cos(omega t + phase) (or B(t) likewise), the same
+ * at every point. `addElectricField` / `addMagneticField` start omitted fields at 0; `setElectricField`
+ * / `setMagneticField` keep their current value.
+ */
 export interface FieldOptions {
-  /** Constant part, V/m (electric) or T (magnetic). In 2D a magnetic field is a number (B_z) or a 3-vector. */
+  /** Constant part E0 or B0: V/m (electric) or T (magnetic), finite. In 2D a magnetic field is a number (B_z, out of the screen) or a 3-vector. */
   field?: ArrayLike<number> | number;
-  /** Amplitude of the oscillating part, same unit and shape. */
+  /** Amplitude A of the oscillating part, same unit and shape as `field`. */
   amplitude?: ArrayLike<number> | number;
-  /** Angular frequency, rad/s, >= 0. */
+  /** Angular frequency omega, rad/s, finite and >= 0. */
   omega?: number;
-  /** Phase, rad. */
+  /** Phase, rad, finite. */
   phase?: number;
 }
 
-function fieldEntity(world: PhysicsWorld, where: string, F: PhysicsWorld['components']['ElectricField'], options: FieldOptions, magnetic: boolean): number {
-  assertKnownKeys(where, options, ['field', 'amplitude', 'omega', 'phase']);
-  const read = (name: string, v: ArrayLike<number> | number | undefined): [number, number, number] => {
-    if (v === undefined) return [0, 0, 0];
+const FIELD_OPTIONS = ['field', 'amplitude', 'omega', 'phase'] as const;
+
+/** Checks field options without touching the world; returns the vectors as (x, y, z) or null where omitted. */
+function checkField(world: PhysicsWorld, where: string, options: FieldOptions, magnetic: boolean): { f: number[] | null; a: number[] | null } {
+  assertOptions(where, options, FIELD_OPTIONS);
+  const read = (name: string, v: ArrayLike<number> | number | undefined): number[] | null => {
+    if (v === undefined) return null;
     if (typeof v === 'number') {
       if (!(magnetic && world.dimensions === 2)) throw new TypeError(`${where}: ${name} must be an array of ${world.dimensions} numbers, got ${describe(v)}`);
       assertFinite(where, name, v);
       return [0, 0, v];
     }
-    const n = magnetic ? (v.length === 3 ? 3 : world.dimensions) : world.dimensions;
+    const n = magnetic && world.dimensions === 2 && (v as ArrayLike<number>).length === 3 ? 3 : world.dimensions;
     assertVector(where, name, v, n);
     return [v[0]!, v[1]!, n === 3 ? v[2]! : 0];
   };
   const f = read('field', options.field), a = read('amplitude', options.amplitude);
   if (options.omega !== undefined) assertNonNegative(where, 'omega', options.omega);
   if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
-  const eid = createEntity(world);
-  addComponent(world, eid, F);
-  F.x[eid] = f[0]; F.y[eid] = f[1]; F.z[eid] = f[2];
-  F.ampX[eid] = a[0]; F.ampY[eid] = a[1]; F.ampZ[eid] = a[2];
-  F.omega[eid] = options.omega ?? 0; F.phase[eid] = options.phase ?? 0;
-  return eid;
+  return { f, a };
+}
+
+function writeField(F: PhysicsWorld['components']['ElectricField'], eid: number, options: FieldOptions, f: number[] | null, a: number[] | null): void {
+  if (f) { F.x[eid] = f[0]!; F.y[eid] = f[1]!; F.z[eid] = f[2]!; }
+  if (a) { F.ampX[eid] = a[0]!; F.ampY[eid] = a[1]!; F.ampZ[eid] = a[2]!; }
+  if (options.omega !== undefined) F.omega[eid] = options.omega;
+  if (options.phase !== undefined) F.phase[eid] = options.phase;
+}
+
+function fieldEntity(world: PhysicsWorld, where: string, F: PhysicsWorld['components']['ElectricField'], options: FieldOptions, magnetic: boolean): number {
+  const { f, a } = checkField(world, where, options, magnetic);
+  const eid = createSlot(world, where);
+  addComponent(world, eid, F); // the observer zeroes every field
+  writeField(F, eid, options, f, a);
+  return currentHandle(world, eid);
 }
 
 /**
  * Adds a uniform (optionally oscillating) electric field, V/m, felt by every charged body as q E.
- * @returns the field entity. @throws TypeError | RangeError on bad vectors or values.
+ * Change it later with `setElectricField`. @returns the field's handle. Atomic.
+ * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a full world.
  */
 export function addElectricField(world: PhysicsWorld, options: FieldOptions): number {
   return fieldEntity(world, 'addElectricField', world.components.ElectricField, options, false);
@@ -116,21 +129,51 @@ export function addElectricField(world: PhysicsWorld, options: FieldOptions): nu
 
 /**
  * Adds a uniform (optionally oscillating) magnetic field, T, felt by every charged body as q v x B.
- * In a 2D world give B_z as a number (out of the screen). @returns the field entity.
- * @throws TypeError | RangeError on bad vectors or values.
+ * In a 2D world give B_z as a number (out of the screen). Change it later with `setMagneticField`.
+ * @returns the field's handle. Atomic.
+ * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a full world.
  */
 export function addMagneticField(world: PhysicsWorld, options: FieldOptions): number {
   return fieldEntity(world, 'addMagneticField', world.components.MagneticField, options, true);
 }
 
 /**
- * Gives the body a central force F = k r^(n-1) r_hat about `centre`. k < 0 attracts.
- * @throws TypeError | RangeError on bad values or a missing body.
+ * Changes an electric field made by `addElectricField` at run time: any of `field` (E0, V/m), `amplitude`
+ * (V/m), `omega` (rad/s, >= 0) and `phase` (rad); omitted options keep their value.
+ * @example setElectricField(world, e, { field: [0, -200] }) // point it down, 200 V/m
+ * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a removed
+ *   entity or one that is not an electric field. A refused call changes nothing.
  */
-export function setCentralForce(world: PhysicsWorld, eid: number, options: { centre: ArrayLike<number>; k: number; n: number }): void {
+export function setElectricField(world: PhysicsWorld, field: number, options: FieldOptions): void {
+  const where = 'setElectricField';
+  const eid = resolveKind(world, field, 'electric-field', where);
+  const { f, a } = checkField(world, where, options, false);
+  writeField(world.components.ElectricField, eid, options, f, a);
+}
+
+/**
+ * Changes a magnetic field made by `addMagneticField` at run time: any of `field` (B0, T; in 2D a number
+ * B_z or a 3-vector), `amplitude` (T), `omega` (rad/s, >= 0) and `phase` (rad); omitted options keep
+ * their value.
+ * @example setMagneticField(world, b, { field: -2 }) // in 2D: B_z = -2 T, the field flipped
+ * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a removed
+ *   entity or one that is not a magnetic field. A refused call changes nothing.
+ */
+export function setMagneticField(world: PhysicsWorld, field: number, options: FieldOptions): void {
+  const where = 'setMagneticField';
+  const eid = resolveKind(world, field, 'magnetic-field', where);
+  const { f, a } = checkField(world, where, options, true);
+  writeField(world.components.MagneticField, eid, options, f, a);
+}
+
+/**
+ * Gives the body a central force F = k r^(n-1) r_hat about `centre`. k < 0 attracts.
+ * @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
+ */
+export function setCentralForce(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n: number }): void {
   const where = 'setCentralForce';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['centre', 'k', 'n']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['centre', 'k', 'n']);
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   assertFinite(where, 'n', options.n);
@@ -143,20 +186,20 @@ export function setCentralForce(world: PhysicsWorld, eid: number, options: { cen
 
 /**
  * Sets linear (N s/m) and/or quadratic (kg/m) drag coefficients, both >= 0, against the wind.
- * @throws RangeError on negative or non-finite coefficients, or a missing body.
+ * @throws RangeError on negative or non-finite coefficients, a removed entity or one that is not a body.
  */
-export function setDrag(world: PhysicsWorld, eid: number, options: { linear?: number; quadratic?: number }): void {
+export function setDrag(world: PhysicsWorld, body: number, options: { linear?: number; quadratic?: number }): void {
   const where = 'setDrag';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['linear', 'quadratic']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['linear', 'quadratic']);
+  if (options.linear !== undefined) assertNonNegative(where, 'linear', options.linear);
+  if (options.quadratic !== undefined) assertNonNegative(where, 'quadratic', options.quadratic);
   const c = world.components;
   if (options.linear !== undefined) {
-    assertNonNegative(where, 'linear', options.linear);
     addComponentIfMissing(world, eid, c.LinearDrag);
     c.LinearDrag.k[eid] = options.linear;
   }
   if (options.quadratic !== undefined) {
-    assertNonNegative(where, 'quadratic', options.quadratic);
     addComponentIfMissing(world, eid, c.QuadraticDrag);
     c.QuadraticDrag.k[eid] = options.quadratic;
   }
@@ -164,12 +207,12 @@ export function setDrag(world: PhysicsWorld, eid: number, options: { linear?: nu
 
 /**
  * Gives the body lift k |v_rel| (axis x v_rel): `k` kg/m >= 0; `axis` a unit 3-vector (default z).
- * @throws TypeError | RangeError on bad values or a missing body.
+ * @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
  */
-export function setLift(world: PhysicsWorld, eid: number, options: { k: number; axis?: ArrayLike<number> }): void {
+export function setLift(world: PhysicsWorld, body: number, options: { k: number; axis?: ArrayLike<number> }): void {
   const where = 'setLift';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['k', 'axis']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['k', 'axis']);
   assertNonNegative(where, 'k', options.k);
   let ax = 0, ay = 0, az = 1;
   if (options.axis !== undefined) {
@@ -196,21 +239,20 @@ export interface BuoyancyOptions {
 
 /**
  * Makes the body float: buoyancy and fluid drag in every FluidRegion it dips into.
- * @throws TypeError | RangeError on an unknown shape, missing or non-positive sizes, or a missing body.
+ * @throws TypeError | RangeError on an unknown shape, missing or non-positive sizes, a removed entity or one that is not a body.
  */
-export function setBuoyancy(world: PhysicsWorld, eid: number, options: BuoyancyOptions): void {
+export function setBuoyancy(world: PhysicsWorld, body: number, options: BuoyancyOptions): void {
   const where = 'setBuoyancy';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['shape', 'radius', 'halfExtents', 'dragCoefficient']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['shape', 'radius', 'halfExtents', 'dragCoefficient']);
   const c = world.components;
   const B = c.Buoyancy;
+  assertOneOf(where, 'shape', options.shape, ['ball', 'box']);
   if (options.shape === 'ball') {
     assertPositive(where, 'radius', options.radius);
-  } else if (options.shape === 'box') {
+  } else {
     assertVector(where, 'halfExtents', options.halfExtents, world.dimensions);
     for (let i = 0; i < world.dimensions; i++) assertPositive(where, `halfExtents[${i}]`, options.halfExtents![i]);
-  } else {
-    throw new RangeError(`${where}: shape must be 'ball' or 'box', got ${describe(options.shape)}`);
   }
   if (options.dragCoefficient !== undefined) assertNonNegative(where, 'dragCoefficient', options.dragCoefficient);
   addComponentIfMissing(world, eid, B);
@@ -224,95 +266,180 @@ export function setBuoyancy(world: PhysicsWorld, eid: number, options: BuoyancyO
 }
 
 /**
- * Adds a fluid below y = `surface` with `density` (kg/m^3, or kg/m^2 in 2D; > 0), optionally limited
- * to x in `xRange` and z in `zRange`. @returns the region entity. @throws TypeError | RangeError.
+ * Options of `addFluidRegion` and `setFluidRegion`: a fluid filling everything below the horizontal
+ * surface y = `surface`, optionally only for x in `xRange` (and z in `zRange` in 3D).
  */
-export function addFluidRegion(world: PhysicsWorld, options: { surface: number; density: number; xRange?: [number, number]; zRange?: [number, number] }): number {
-  const where = 'addFluidRegion';
-  assertKnownKeys(where, options, ['surface', 'density', 'xRange', 'zRange']);
-  assertFinite(where, 'surface', options.surface);
-  assertPositive(where, 'density', options.density);
+export interface FluidRegionOptions {
+  /** Height of the free surface, m, finite. */
+  surface?: number;
+  /** Fluid density, kg/m^3 (kg/m^2 in 2D), finite and > 0 (water 1000, air 1.2). */
+  density?: number;
+  /** [min, max] of x the fluid spans, m, max > min. Default unbounded. */
+  xRange?: [number, number];
+  /** [min, max] of z the fluid spans (3D), m, max > min. Default unbounded. */
+  zRange?: [number, number];
+}
+
+const FLUID_OPTIONS = ['surface', 'density', 'xRange', 'zRange'] as const;
+
+function checkFluid(where: string, options: FluidRegionOptions): void {
+  assertOptions(where, options, FLUID_OPTIONS);
+  if (options.surface !== undefined) assertFinite(where, 'surface', options.surface);
+  if (options.density !== undefined) assertPositive(where, 'density', options.density);
   for (const key of ['xRange', 'zRange'] as const) {
     const r = options[key];
     if (r === undefined) continue;
     assertVector(where, key, r, 2);
     if (!(r[1] > r[0])) throw new RangeError(`${where}: ${key}[1] must be > ${key}[0], got ${describe(r)}`);
   }
-  const eid = createEntity(world);
+}
+
+function writeFluid(world: PhysicsWorld, eid: number, options: FluidRegionOptions): void {
   const F = world.components.FluidRegion;
-  addComponent(world, eid, F);
-  F.surface[eid] = options.surface; F.density[eid] = options.density;
+  if (options.surface !== undefined) F.surface[eid] = options.surface;
+  if (options.density !== undefined) F.density[eid] = options.density;
   if (options.xRange) { F.minX[eid] = options.xRange[0]; F.maxX[eid] = options.xRange[1]; }
   if (options.zRange) { F.minZ[eid] = options.zRange[0]; F.maxZ[eid] = options.zRange[1]; }
-  return eid;
+}
+
+/**
+ * Adds a fluid below y = `surface` (required) with `density` (required; kg/m^3, or kg/m^2 in 2D; > 0),
+ * optionally limited to x in `xRange` and z in `zRange`. Bodies given `setBuoyancy` float in it.
+ * Change it later with `setFluidRegion`. @returns the region's handle. Atomic.
+ * @throws TypeError | RangeError on missing, unknown or null options, bad values, or a full world.
+ */
+export function addFluidRegion(world: PhysicsWorld, options: FluidRegionOptions & { surface: number; density: number }): number {
+  const where = 'addFluidRegion';
+  checkFluid(where, options);
+  assertFinite(where, 'surface', options.surface);
+  assertPositive(where, 'density', options.density);
+  const eid = createSlot(world, where);
+  addComponent(world, eid, world.components.FluidRegion);
+  writeFluid(world, eid, options);
+  return currentHandle(world, eid);
+}
+
+/**
+ * Changes a fluid region made by `addFluidRegion` at run time (a rising tide, a denser liquid): any of
+ * `surface` (m), `density` (kg/m^3, > 0), `xRange`, `zRange` (m); omitted options keep their value.
+ * @throws TypeError | RangeError on missing, unknown or null options, bad values, a removed entity or one
+ *   that is not a fluid region. A refused call changes nothing.
+ */
+export function setFluidRegion(world: PhysicsWorld, region: number, options: FluidRegionOptions): void {
+  const where = 'setFluidRegion';
+  const eid = resolveKind(world, region, 'fluid-region', where);
+  checkFluid(where, options);
+  writeFluid(world, eid, options);
 }
 
 /** Options of `addSpring`. Exactly one of `a` and `anchor` is given. */
 export interface SpringOptions {
-  /** First body (entity id). */
+  /** First body (its handle). */
   a?: number;
   /** Fixed anchor point instead of a first body, m. */
   anchor?: ArrayLike<number>;
-  /** Second body (entity id). */
+  /** Second body (its handle). */
   b: number;
-  /** Stiffness, N/m, >= 0. */
+  /** Stiffness, N/m, finite and >= 0. */
   stiffness: number;
   /** Rest length, m, >= 0. Default: the current distance. */
   restLength?: number;
   /** Damping along the spring, N s/m, >= 0. Default 0. */
   damping?: number;
-  /** Bungee: pulls only while stretched. Default false. */
+  /** Bungee: pulls only while stretched (a boolean). Default false. */
   oneSided?: boolean;
 }
 
 /**
  * Adds a spring entity joining two bodies, or a body and a fixed anchor. The bodies get force
- * accumulators. Removing either body removes the spring.
- * @returns the spring entity.
- * @throws TypeError on unknown options; RangeError on a missing body (e.g. a spring to a removed
- *   entity), both or neither of a and anchor, a = b, or negative stiffness, damping or rest length.
+ * accumulators. Removing either body removes the spring. Change it later with `setSpring`.
+ * Atomic: every option is checked, and room for the spring made sure of, before anything changes.
+ * @returns the spring's handle.
+ * @throws TypeError on missing, unknown or null options, or a non-boolean oneSided; RangeError on a
+ *   removed body, an entity that is not a body, both or neither of a and anchor, a = b, negative
+ *   stiffness, damping or rest length, or a full world.
  */
 export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
   const where = 'addSpring';
-  assertKnownKeys(where, options, ['a', 'anchor', 'b', 'stiffness', 'restLength', 'damping', 'oneSided']);
+  assertOptions(where, options, ['a', 'anchor', 'b', 'stiffness', 'restLength', 'damping', 'oneSided']);
   if ((options.a === undefined) === (options.anchor === undefined)) {
     throw new RangeError(`${where}: give exactly one of a (a body) and anchor (a point)`);
   }
-  assertBody(where, world, options.b, 'b');
+  const b = resolveKind(world, options.b, 'body', where, 'b');
+  let a = 0;
   if (options.a !== undefined) {
-    assertBody(where, world, options.a, 'a');
-    if (options.a === options.b) throw new RangeError(`${where}: a and b are the same entity ${options.a}`);
+    a = resolveKind(world, options.a, 'body', where, 'a');
+    if (a === b) throw new RangeError(`${where}: a and b are the same entity ${options.a}`);
   } else {
     assertVector(where, 'anchor', options.anchor, world.dimensions);
   }
   assertNonNegative(where, 'stiffness', options.stiffness);
   if (options.damping !== undefined) assertNonNegative(where, 'damping', options.damping);
   if (options.restLength !== undefined) assertNonNegative(where, 'restLength', options.restLength);
+  assertOptionalBoolean(where, 'oneSided', options.oneSided);
   const c = world.components;
   const P = c.Position;
-  const b = options.b;
-  const [ax, ay, az] = options.a !== undefined ? [P.x[options.a]!, P.y[options.a]!, P.z[options.a]!] : vec3(world, options.anchor!);
+  const [ax, ay, az] = a !== 0 ? [P.x[a]!, P.y[a]!, P.z[a]!] : vec3(world, options.anchor!);
   const length = Math.hypot(P.x[b]! - ax, P.y[b]! - ay, P.z[b]! - az);
-  for (const e of [options.a, b]) if (e !== undefined && !hasComponent(world, e, c.Static) && !hasComponent(world, e, c.Kinematic)) addComponentIfMissing(world, e, c.Force);
-  const s = createEntity(world);
+  const s = createSlot(world, where);
+  for (const e of [a, b]) if (e !== 0 && !hasComponent(world, e, c.Static) && !hasComponent(world, e, c.Kinematic)) addComponentIfMissing(world, e, c.Force);
   addComponent(world, s, c.Spring);
   const S = c.Spring;
-  S.a[s] = options.a ?? 0; S.b[s] = b;
+  S.a[s] = a; S.b[s] = b;
   S.anchorX[s] = ax; S.anchorY[s] = ay; S.anchorZ[s] = az;
   S.stiffness[s] = options.stiffness;
   S.restLength[s] = options.restLength ?? length;
   S.damping[s] = options.damping ?? 0;
-  S.oneSided[s] = options.oneSided ? 1 : 0;
-  return s;
+  S.oneSided[s] = options.oneSided === true ? 1 : 0;
+  return currentHandle(world, s);
+}
+
+/** Options of `setSpring`; omitted options keep their value. */
+export interface SpringSettings {
+  /** Stiffness, N/m, finite and >= 0. */
+  stiffness?: number;
+  /** Rest length, m, finite and >= 0. */
+  restLength?: number;
+  /** Damping along the spring, N s/m, finite and >= 0. */
+  damping?: number;
+  /** Bungee: pulls only while stretched (a boolean). */
+  oneSided?: boolean;
+  /** Where the fixed end is, m (only for a spring made with `anchor`). */
+  anchor?: ArrayLike<number>;
+}
+
+/**
+ * Changes a spring made by `addSpring` at run time (stiffen it, shorten it, move its anchor).
+ * @throws TypeError | RangeError on missing, unknown or null options, bad values, an anchor for a spring
+ *   between two bodies, a removed entity or one that is not a spring. A refused call changes nothing.
+ */
+export function setSpring(world: PhysicsWorld, spring: number, options: SpringSettings): void {
+  const where = 'setSpring';
+  const s = resolveKind(world, spring, 'spring', where);
+  assertOptions(where, options, ['stiffness', 'restLength', 'damping', 'oneSided', 'anchor']);
+  if (options.stiffness !== undefined) assertNonNegative(where, 'stiffness', options.stiffness);
+  if (options.restLength !== undefined) assertNonNegative(where, 'restLength', options.restLength);
+  if (options.damping !== undefined) assertNonNegative(where, 'damping', options.damping);
+  assertOptionalBoolean(where, 'oneSided', options.oneSided);
+  const S = world.components.Spring;
+  if (options.anchor !== undefined) {
+    assertVector(where, 'anchor', options.anchor, world.dimensions);
+    if (S.a[s] !== 0) throw new RangeError(`${where}: anchor is only for a spring with a fixed end; spring ${spring} joins two bodies`);
+  }
+  if (options.stiffness !== undefined) S.stiffness[s] = options.stiffness;
+  if (options.restLength !== undefined) S.restLength[s] = options.restLength;
+  if (options.damping !== undefined) S.damping[s] = options.damping;
+  if (options.oneSided !== undefined) S.oneSided[s] = options.oneSided ? 1 : 0;
+  if (options.anchor !== undefined) { const [x, y, z] = vec3(world, options.anchor); S.anchorX[s] = x; S.anchorY[s] = y; S.anchorZ[s] = z; }
 }
 
 /**
  * Periodic driving force F = F0 cos(omega t + phase). @throws TypeError | RangeError on bad values.
  */
-export function setDrivingForce(world: PhysicsWorld, eid: number, options: { amplitude: ArrayLike<number>; omega: number; phase?: number }): void {
+export function setDrivingForce(world: PhysicsWorld, body: number, options: { amplitude: ArrayLike<number>; omega: number; phase?: number }): void {
   const where = 'setDrivingForce';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['amplitude', 'omega', 'phase']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['amplitude', 'omega', 'phase']);
   assertVector(where, 'amplitude', options.amplitude, world.dimensions);
   assertNonNegative(where, 'omega', options.omega);
   if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
@@ -328,10 +455,10 @@ export function setDrivingForce(world: PhysicsWorld, eid: number, options: { amp
  * `correlationTime` s (> 0). `seed` an integer (default: the world's generator draws one).
  * @throws TypeError | RangeError on bad values.
  */
-export function setRandomForce(world: PhysicsWorld, eid: number, options: { magnitude: number; correlationTime: number; seed?: number }): void {
+export function setRandomForce(world: PhysicsWorld, body: number, options: { magnitude: number; correlationTime: number; seed?: number }): void {
   const where = 'setRandomForce';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['magnitude', 'correlationTime', 'seed']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['magnitude', 'correlationTime', 'seed']);
   assertNonNegative(where, 'magnitude', options.magnitude);
   assertPositive(where, 'correlationTime', options.correlationTime);
   if (options.seed !== undefined) assertInteger(where, 'seed', options.seed, -2147483648, 4294967295);
@@ -348,10 +475,10 @@ export function setRandomForce(world: PhysicsWorld, eid: number, options: { magn
  * the fuel and drops as it burns. @throws TypeError | RangeError on bad values, fuel not less than the
  * mass, or a missing or massless body.
  */
-export function setThrust(world: PhysicsWorld, eid: number, options: { exhaustVelocity: number; massFlowRate: number; fuel: number; direction: ArrayLike<number> }): void {
+export function setThrust(world: PhysicsWorld, body: number, options: { exhaustVelocity: number; massFlowRate: number; fuel: number; direction: ArrayLike<number> }): void {
   const where = 'setThrust';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
   assertPositive(where, 'exhaustVelocity', options.exhaustVelocity);
   assertNonNegative(where, 'massFlowRate', options.massFlowRate);
   assertNonNegative(where, 'fuel', options.fuel);
@@ -372,12 +499,12 @@ export function setThrust(world: PhysicsWorld, eid: number, options: { exhaustVe
 
 /**
  * Gives the body a vortex force F = k r^(n-1) (axis x r_hat) about the axis through `centre`
- * (axis unit 3-vector, default z). @throws TypeError | RangeError on bad values or a missing body.
+ * (axis unit 3-vector, default z). @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
  */
-export function setVortex(world: PhysicsWorld, eid: number, options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> }): void {
+export function setVortex(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> }): void {
   const where = 'setVortex';
-  assertBody(where, world, eid);
-  assertKnownKeys(where, options, ['centre', 'k', 'n', 'axis']);
+  const eid = resolveKind(world, body, 'body', where);
+  assertOptions(where, options, ['centre', 'k', 'n', 'axis']);
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   if (options.n !== undefined) assertFinite(where, 'n', options.n);

@@ -2,7 +2,7 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { createEntity } from '../bodies.js';
+import { createSlot } from '../bodies.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
@@ -100,7 +100,7 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   addComponentIfMissing(world, b, c.Force);
   addComponentIfMissing(world, b, c.Torque);
   if (!world.removeHooks.includes(removeSurfacesOf)) world.removeHooks.push(removeSurfacesOf);
-  const s = createEntity(world);
+  const s = createSlot(world, where);
   addComponent(world, s, c.LiftingSurface);
   const L = c.LiftingSurface;
   L.body[s] = b;

@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
-import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptions, assertPositive, assertVector } from '../validate.js';
 import { Rng } from '../rng.js';
 
 /** Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018). */
@@ -87,32 +87,36 @@ export interface GravitationOptions {
 
 /**
  * Sets the constant, softening and summation method of Newtonian gravity (mutual and attractors).
- * @throws TypeError on unknown options; RangeError on G < 0, softening < 0, theta <= 0, an unknown method.
+ * Omitted options keep their value; a refused call changes nothing.
+ * @throws TypeError on a missing options object, unknown or null options; RangeError on G < 0, softening < 0,
+ *   theta <= 0, an unknown method.
  */
 export function setGravitation(world: PhysicsWorld, options: GravitationOptions): void {
   const where = 'setGravitation';
-  assertKnownKeys(where, options, ['constant', 'softening', 'method', 'openingAngle']);
+  assertOptions(where, options, ['constant', 'softening', 'method', 'openingAngle']);
+  if (options.constant !== undefined) assertNonNegative(where, 'constant', options.constant);
+  if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
+  if (options.method !== undefined) assertOneOf(where, 'method', options.method, ['direct', 'barnes-hut']);
+  if (options.openingAngle !== undefined) assertPositive(where, 'openingAngle', options.openingAngle);
   const L = world.laws;
-  if (options.constant !== undefined) { assertNonNegative(where, 'constant', options.constant); L.gravitationalConstant = options.constant; }
-  if (options.softening !== undefined) { assertNonNegative(where, 'softening', options.softening); L.gravitySoftening = options.softening; }
-  if (options.method !== undefined) {
-    if (options.method !== 'direct' && options.method !== 'barnes-hut') {
-      throw new RangeError(`${where}: method must be 'direct' or 'barnes-hut', got ${describe(options.method)}`);
-    }
-    L.gravityMethod = options.method;
-  }
-  if (options.openingAngle !== undefined) { assertPositive(where, 'openingAngle', options.openingAngle); L.openingAngle = options.openingAngle; }
+  if (options.constant !== undefined) L.gravitationalConstant = options.constant;
+  if (options.softening !== undefined) L.gravitySoftening = options.softening;
+  if (options.method !== undefined) L.gravityMethod = options.method;
+  if (options.openingAngle !== undefined) L.openingAngle = options.openingAngle;
 }
 
 /**
  * Sets the Coulomb constant (N m^2 C^-2, >= 0) and softening (m, >= 0) of the electric pair force.
- * @throws TypeError on unknown options; RangeError on negative values.
+ * Omitted options keep their value; a refused call changes nothing.
+ * @throws TypeError on a missing options object, unknown or null options; RangeError on negative values.
  */
 export function setElectrostatics(world: PhysicsWorld, options: { constant?: number; softening?: number }): void {
   const where = 'setElectrostatics';
-  assertKnownKeys(where, options, ['constant', 'softening']);
-  if (options.constant !== undefined) { assertNonNegative(where, 'constant', options.constant); world.laws.coulombConstant = options.constant; }
-  if (options.softening !== undefined) { assertNonNegative(where, 'softening', options.softening); world.laws.electricSoftening = options.softening; }
+  assertOptions(where, options, ['constant', 'softening']);
+  if (options.constant !== undefined) assertNonNegative(where, 'constant', options.constant);
+  if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
+  if (options.constant !== undefined) world.laws.coulombConstant = options.constant;
+  if (options.softening !== undefined) world.laws.electricSoftening = options.softening;
 }
 
 /** Options of `setWind`. Vectors have `world.dimensions` components. */
@@ -130,28 +134,35 @@ export interface WindOptions {
 }
 
 /**
- * Sets the wind that drag and lift act against. Replaces the whole wind field.
- * @throws TypeError on unknown options or bad vectors; RangeError on negative intensity, non-positive
+ * Sets the wind that drag and lift act against. Replaces the whole wind field; a refused call changes nothing.
+ * @throws TypeError on a missing options object, unknown or null options, or bad vectors; RangeError on negative intensity, non-positive
  *   length or time scale, or a mode count outside [1, 32].
  */
 export function setWind(world: PhysicsWorld, options: WindOptions): void {
   const where = 'setWind';
-  assertKnownKeys(where, options, ['velocity', 'gust', 'gustOmega', 'gustPhase', 'turbulence']);
+  assertOptions(where, options, ['velocity', 'gust', 'gustOmega', 'gustPhase', 'turbulence']);
   const d = world.dimensions;
-  const w = world.laws.wind;
-  w.velocity.fill(0); w.gust.fill(0); w.gustOmega = 0; w.gustPhase = 0; w.modes = 0; w.intensity = 0;
-  if (options.velocity !== undefined) { assertVector(where, 'velocity', options.velocity, d); for (let i = 0; i < d; i++) w.velocity[i] = options.velocity[i]!; }
-  if (options.gust !== undefined) { assertVector(where, 'gust', options.gust, d); for (let i = 0; i < d; i++) w.gust[i] = options.gust[i]!; }
-  if (options.gustOmega !== undefined) { assertNonNegative(where, 'gustOmega', options.gustOmega); w.gustOmega = options.gustOmega; }
-  if (options.gustPhase !== undefined) { assertFinite(where, 'gustPhase', options.gustPhase); w.gustPhase = options.gustPhase; }
+  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
+  if (options.gust !== undefined) assertVector(where, 'gust', options.gust, d);
+  if (options.gustOmega !== undefined) assertNonNegative(where, 'gustOmega', options.gustOmega);
+  if (options.gustPhase !== undefined) assertFinite(where, 'gustPhase', options.gustPhase);
   const t = options.turbulence;
   if (t !== undefined) {
-    assertKnownKeys(`${where}: turbulence`, t, ['intensity', 'lengthScale', 'timeScale', 'seed', 'modes']);
+    assertOptions(where, t, ['intensity', 'lengthScale', 'timeScale', 'seed', 'modes'], 'turbulence');
     assertNonNegative(where, 'turbulence.intensity', t.intensity);
     assertPositive(where, 'turbulence.lengthScale', t.lengthScale);
     assertPositive(where, 'turbulence.timeScale', t.timeScale);
+    if (t.seed !== undefined) assertFinite(where, 'turbulence.seed', t.seed);
+    assertInteger(where, 'turbulence.modes', t.modes ?? 16, 1, MAX_WIND_MODES);
+  }
+  const w = world.laws.wind;
+  w.velocity.fill(0); w.gust.fill(0); w.gustOmega = 0; w.gustPhase = 0; w.modes = 0; w.intensity = 0;
+  if (options.velocity !== undefined) for (let i = 0; i < d; i++) w.velocity[i] = options.velocity[i]!;
+  if (options.gust !== undefined) for (let i = 0; i < d; i++) w.gust[i] = options.gust[i]!;
+  if (options.gustOmega !== undefined) w.gustOmega = options.gustOmega;
+  if (options.gustPhase !== undefined) w.gustPhase = options.gustPhase;
+  if (t !== undefined) {
     const modes = t.modes ?? 16;
-    assertInteger(where, 'turbulence.modes', modes, 1, MAX_WIND_MODES);
     const rng = new Rng(t.seed ?? 1);
     w.intensity = t.intensity;
     w.modes = t.intensity > 0 ? modes : 0;

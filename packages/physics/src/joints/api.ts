@@ -1,7 +1,7 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import type { PhysicsWorld } from '../world.js';
-import { createEntity } from '../bodies.js';
+import { createSlot } from '../bodies.js';
 import { wakeIsland } from '../collision/sleep.js';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
@@ -94,7 +94,7 @@ function checkLimits(where: string, lower: unknown, upper: unknown, lowerName: s
 function makeJoint(world: PhysicsWorld, type: JointTypeCode, ends: Ends, anchorA: [number, number], anchorB: [number, number], options: JointBaseOptions): number {
   const c = world.components;
   ensureJointArrays(world.joints, world.capacity);
-  const j = createEntity(world);
+  const j = createSlot(world, 'addJoint');
   addComponent(world, j, c.Joint);
   const J = c.Joint;
   const { a, b } = ends;

@@ -1,9 +1,11 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { createEntity } from '../bodies.js';
+import { createSlot } from '../bodies.js';
+import { currentHandle, resolveKind } from '../handles.js';
 import { query } from '../query.js';
 import {
-  assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe,
+  assertBoolean, assertFinite, assertInRange, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions,
+  assertPositive, assertVector, describe,
 } from '../validate.js';
 
 /**
@@ -233,7 +235,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
     }
   }
   draw(world, em);
-  const e = createEntity(world);
+  const e = createSlot(world, 'emitter');
   addComponent(world, e, c.Position);
   addComponent(world, e, c.Velocity);
   addComponent(world, e, c.Lifetime);
@@ -350,88 +352,139 @@ export function emitterSystem(world: PhysicsWorld): void {
   }
 }
 
-function range(where: string, name: string, v: number | [number, number] | undefined, fallback: [number, number], positive: boolean): [number, number] {
-  if (v === undefined) return fallback;
+function range(where: string, name: string, v: number | [number, number], positive: boolean): [number, number] {
   const pair: [number, number] = typeof v === 'number' ? [v, v] : v;
   if (!Array.isArray(pair) || pair.length !== 2) throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${describe(v)}`);
   for (let i = 0; i < 2; i++) { if (positive) assertPositive(where, `${name}[${i}]`, pair[i]); else assertNonNegative(where, `${name}[${i}]`, pair[i]); }
   if (!(pair[1] >= pair[0])) throw new RangeError(`${where}: ${name} must be [min, max] with max >= min, got ${describe(v)}`);
-  return pair;
+  return [pair[0], pair[1]];
 }
 
-const SHAPES: Record<string, number> = { point: 0, disc: 1, ring: 2, box: 3, line: 4 };
+const SHAPE_NAMES = ['point', 'disc', 'ring', 'box', 'line'] as const;
+const SHAPES: Record<(typeof SHAPE_NAMES)[number], number> = { point: 0, disc: 1, ring: 2, box: 3, line: 4 };
+const SETTINGS = ['rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled'] as const;
+const PARTICLE_OPTIONS = ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const;
+
+/** Emitter settings after checking: only the ones given, in store units. */
+interface CheckedSettings {
+  rate?: number; shape?: number; size?: [number, number, number]; dir?: [number, number, number]; spread?: number;
+  speed?: [number, number]; life?: [number, number]; inherit?: number; policy?: number; enabled?: boolean;
+  particle?: EmittedParticleOptions; onDeath?: { slot: number; count: number; maxGeneration: number };
+}
 
 /**
- * Adds an emitter entity. @returns its entity id.
- * @throws TypeError on unknown options or malformed vectors; RangeError on negative rates, speeds or
- *   sizes, lifetimes <= 0, spread outside [0, pi], inherit outside [0, 1], a death emitter that does
- *   not exist or is not an emitter, or a full world.
+ * Checks the settings shared by addEmitter and setEmitter without touching the world (keys were
+ * checked by the caller). @throws TypeError | RangeError naming `where`.
+ */
+function checkSettings(world: PhysicsWorld, where: string, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): CheckedSettings {
+  const d = world.dimensions;
+  const out: CheckedSettings = {};
+  if (options.rate !== undefined) { assertNonNegative(where, 'rate', options.rate); out.rate = options.rate; }
+  if (options.shape !== undefined) { assertOneOf(where, 'shape', options.shape, SHAPE_NAMES); out.shape = SHAPES[options.shape]; }
+  if (options.size !== undefined) {
+    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); out.size = [options.size, options.size, options.size]; }
+    else {
+      assertVector(where, 'size', options.size, d);
+      for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]);
+      out.size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0];
+    }
+  }
+  if (options.direction !== undefined) {
+    assertVector(where, 'direction', options.direction, d);
+    const x = options.direction[0]!, y = options.direction[1]!, z = d === 3 ? options.direction[2]! : 0;
+    const n = Math.hypot(x, y, z);
+    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero, got ${describe(options.direction)}`);
+    out.dir = [x / n, y / n, z / n];
+  }
+  if (options.spread !== undefined) { assertInRange(where, 'spread', options.spread, 0, Math.PI); out.spread = options.spread; }
+  if (options.speed !== undefined) out.speed = range(where, 'speed', options.speed, false);
+  if (options.lifetime !== undefined) out.life = range(where, 'lifetime', options.lifetime, true);
+  if (options.inheritVelocity !== undefined) { assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1); out.inherit = options.inheritVelocity; }
+  if (options.policy !== undefined) {
+    assertOneOf(where, 'policy', options.policy, ['drop-new', 'recycle-oldest']);
+    out.policy = options.policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
+  }
+  assertOptionalBoolean(where, 'enabled', options.enabled);
+  if (options.enabled !== undefined) out.enabled = options.enabled;
+  const p = options.particle;
+  if (p !== undefined) {
+    assertOptions(where, p, PARTICLE_OPTIONS, 'particle');
+    if (p.mass !== undefined) assertPositive(where, 'particle.mass', p.mass);
+    if (p.linearDrag !== undefined) assertNonNegative(where, 'particle.linearDrag', p.linearDrag);
+    if (p.quadraticDrag !== undefined) assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag);
+    if (p.gravityScale !== undefined) assertFinite(where, 'particle.gravityScale', p.gravityScale);
+    if (p.radius !== undefined) assertPositive(where, 'particle.radius', p.radius);
+    for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff);
+    for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) assertNonNegative(where, `particle.${k}`, p[k]);
+    for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) assertInRange(where, `particle.${k}`, p[k], 0, 1);
+    out.particle = p;
+  }
+  if (options.onDeath !== undefined) {
+    const od = options.onDeath;
+    assertOptions(where, od, ['emitter', 'count', 'maxGeneration'], 'onDeath');
+    // 0 (setEmitter only) clears the death emitter.
+    const slot = od.emitter === 0 && where === 'setEmitter' ? 0 : resolveKind(world, od.emitter, 'emitter', where, 'onDeath.emitter');
+    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
+    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
+    out.onDeath = { slot, count: od.count, maxGeneration: od.maxGeneration };
+  }
+  return out;
+}
+
+/** Writes checked settings into the emitter in slot `em`; settings not given keep their value. */
+function writeSettings(world: PhysicsWorld, em: number, s: CheckedSettings): void {
+  const E = world.components.Emitter;
+  if (s.rate !== undefined) E.rate[em] = s.rate;
+  if (s.shape !== undefined) E.shape[em] = s.shape;
+  if (s.size) { E.size[em] = s.size[0]; E.sizeY[em] = s.size[1]; E.sizeZ[em] = s.size[2]; }
+  if (s.dir) { E.dirX[em] = s.dir[0]; E.dirY[em] = s.dir[1]; E.dirZ[em] = s.dir[2]; }
+  if (s.spread !== undefined) E.spread[em] = s.spread;
+  if (s.speed) { E.speedMin[em] = s.speed[0]; E.speedMax[em] = s.speed[1]; }
+  if (s.life) { E.lifeMin[em] = s.life[0]; E.lifeMax[em] = s.life[1]; }
+  if (s.inherit !== undefined) E.inherit[em] = s.inherit;
+  if (s.policy !== undefined) E.policy[em] = s.policy;
+  if (s.enabled !== undefined) E.enabled[em] = s.enabled ? 1 : 0;
+  const p = s.particle;
+  if (p) {
+    if (p.mass !== undefined) E.mass[em] = p.mass;
+    if (p.linearDrag !== undefined) E.linearDrag[em] = p.linearDrag;
+    if (p.quadraticDrag !== undefined) E.quadraticDrag[em] = p.quadraticDrag;
+    if (p.gravityScale !== undefined) E.gravityScale[em] = p.gravityScale;
+    if (p.radius !== undefined) E.radius[em] = p.radius;
+    for (const k of ['colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) E[k][em] = p[k];
+  }
+  if (s.onDeath) { E.deathEmitter[em] = s.onDeath.slot; E.deathCount[em] = s.onDeath.count; E.maxGeneration[em] = s.onDeath.maxGeneration; }
+}
+
+/**
+ * Adds an emitter entity (or puts one on an existing body with `attachTo`). Atomic: every option is
+ * checked, and room for the emitter made sure of, before anything changes.
+ * @returns the emitter's handle (the body's handle when attached).
+ * @throws TypeError on options that are not an object, unknown or null options, a non-boolean `enabled`
+ *   or malformed vectors; RangeError on negative rates, speeds or sizes, lifetimes <= 0, spread outside
+ *   [0, pi], inherit outside [0, 1], an unknown shape or policy, an `attachTo` or `onDeath.emitter`
+ *   that was removed or is of the wrong kind, or a full world.
  */
 export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): number {
   const where = 'addEmitter';
-  assertKnownKeys(where, options, ['attachTo', 'position', 'velocity', 'rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled']);
+  assertOptions(where, options, ['attachTo', 'position', 'velocity', ...SETTINGS]);
   const d = world.dimensions;
+  const c = world.components;
+  let host = 0;
   if (options.attachTo !== undefined) {
     if (options.position !== undefined || options.velocity !== undefined) throw new TypeError(`${where}: attachTo excludes position and velocity (the body has its own)`);
-    const host = options.attachTo;
-    if (typeof host !== 'number' || !entityExists(world, host) || !hasComponent(world, host, world.components.Position)) {
-      throw new RangeError(`${where}: attachTo ${describe(host)} is not a body in this world`);
-    }
-    if (hasComponent(world, host, world.components.Emitter)) throw new RangeError(`${where}: entity ${host} already has an emitter`);
+    host = resolveKind(world, options.attachTo, 'body', where, 'attachTo');
+    if (hasComponent(world, host, c.Emitter)) throw new RangeError(`${where}: attachTo ${options.attachTo} already has an emitter`);
   }
   if (options.position !== undefined) assertVector(where, 'position', options.position, d);
   if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
-  const rate = options.rate ?? 0;
-  assertNonNegative(where, 'rate', rate);
-  const shape = options.shape ?? 'point';
-  if (!(shape in SHAPES)) throw new RangeError(`${where}: shape must be one of ${Object.keys(SHAPES).join(', ')}, got ${describe(shape)}`);
-  let size: [number, number, number] = [0, 0, 0];
-  if (options.size !== undefined) {
-    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); size = [options.size, options.size, options.size]; }
-    else { assertVector(where, 'size', options.size, d); for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]); size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0]; }
-  }
-  let dir = [0, 1, 0];
-  if (options.direction !== undefined) {
-    assertVector(where, 'direction', options.direction, d);
-    const v = [options.direction[0]!, options.direction[1]!, d === 3 ? options.direction[2]! : 0];
-    const n = Math.hypot(v[0]!, v[1]!, v[2]!);
-    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
-    dir = [v[0]! / n, v[1]! / n, v[2]! / n];
-  }
-  const spread = options.spread ?? Math.PI;
-  assertInRange(where, 'spread', spread, 0, Math.PI);
-  const speed = range(where, 'speed', options.speed, [1, 2], false);
-  const life = range(where, 'lifetime', options.lifetime, [1, 2], true);
-  const inherit = options.inheritVelocity ?? 0;
-  assertInRange(where, 'inheritVelocity', inherit, 0, 1);
-  const p = options.particle ?? {};
-  assertKnownKeys(`${where}: particle`, p, ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd']);
-  if (p.mass !== undefined) assertPositive(where, 'particle.mass', p.mass);
-  if (p.linearDrag !== undefined) assertNonNegative(where, 'particle.linearDrag', p.linearDrag);
-  if (p.quadraticDrag !== undefined) assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag);
-  if (p.gravityScale !== undefined) assertFinite(where, 'particle.gravityScale', p.gravityScale);
-  if (p.radius !== undefined) assertPositive(where, 'particle.radius', p.radius);
-  for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff);
-  for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) assertNonNegative(where, `particle.${k}`, p[k]);
-  for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) assertInRange(where, `particle.${k}`, p[k], 0, 1);
-  const c = world.components;
-  if (options.onDeath !== undefined) {
-    const od = options.onDeath;
-    assertKnownKeys(`${where}: onDeath`, od, ['emitter', 'count', 'maxGeneration']);
-    if (!entityExists(world, od.emitter) || !hasComponent(world, od.emitter, c.Emitter)) {
-      throw new RangeError(`${where}: onDeath.emitter ${describe(od.emitter)} is not an emitter in this world`);
-    }
-    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
-    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
-  }
-  const policy = options.policy ?? 'drop-new';
-  if (policy !== 'drop-new' && policy !== 'recycle-oldest') throw new RangeError(`${where}: policy must be 'drop-new' or 'recycle-oldest', got ${describe(policy)}`);
+  const settings = checkSettings(world, where, options);
 
   let em: number;
-  if (options.attachTo !== undefined) {
-    em = options.attachTo;
+  if (host !== 0) {
+    em = host;
   } else {
-    em = createEntity(world);
+    em = createSlot(world, where);
     addComponent(world, em, c.Position);
     if (options.position) {
       c.Position.x[em] = options.position[0]!; c.Position.y[em] = options.position[1]!; c.Position.z[em] = d === 3 ? options.position[2]! : 0;
@@ -445,74 +498,83 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
   }
   addComponent(world, em, c.Emitter);
   const E = c.Emitter;
-  E.rate[em] = rate; E.carry[em] = 0; E.pendingBurst[em] = 0; E.enabled[em] = options.enabled === false ? 0 : 1;
-  E.shape[em] = SHAPES[shape]!; E.size[em] = size[0]; E.sizeY[em] = size[1]; E.sizeZ[em] = size[2];
-  E.dirX[em] = dir[0]!; E.dirY[em] = dir[1]!; E.dirZ[em] = dir[2]!; E.spread[em] = spread;
-  E.speedMin[em] = speed[0]; E.speedMax[em] = speed[1]; E.lifeMin[em] = life[0]; E.lifeMax[em] = life[1];
-  E.inherit[em] = inherit;
-  E.mass[em] = p.mass ?? 0; E.linearDrag[em] = p.linearDrag ?? 0; E.quadraticDrag[em] = p.quadraticDrag ?? 0;
-  E.gravityScale[em] = p.gravityScale ?? 1; E.radius[em] = p.radius ?? 0;
-  E.colorStart[em] = p.colorStart ?? 0xffffff; E.colorEnd[em] = p.colorEnd ?? p.colorStart ?? 0xffffff;
-  E.sizeStart[em] = p.sizeStart ?? 0.1; E.sizeEnd[em] = p.sizeEnd ?? p.sizeStart ?? 0.1;
-  E.alphaStart[em] = p.alphaStart ?? 1; E.alphaEnd[em] = p.alphaEnd ?? 0;
-  E.deathEmitter[em] = options.onDeath?.emitter ?? 0; E.deathCount[em] = options.onDeath?.count ?? 0;
-  E.maxGeneration[em] = options.onDeath?.maxGeneration ?? 0;
-  E.policy[em] = policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
+  // Defaults (documented on EmitterOptions and EmittedParticleOptions), then the options given.
+  E.rate[em] = 0; E.carry[em] = 0; E.pendingBurst[em] = 0; E.enabled[em] = 1;
+  E.shape[em] = EmitterShape.Point; E.size[em] = 0; E.sizeY[em] = 0; E.sizeZ[em] = 0;
+  E.dirX[em] = 0; E.dirY[em] = 1; E.dirZ[em] = 0; E.spread[em] = Math.PI;
+  E.speedMin[em] = 1; E.speedMax[em] = 2; E.lifeMin[em] = 1; E.lifeMax[em] = 2;
+  E.inherit[em] = 0;
+  E.mass[em] = 0; E.linearDrag[em] = 0; E.quadraticDrag[em] = 0; E.gravityScale[em] = 1; E.radius[em] = 0;
+  const p = options.particle ?? {};
+  E.colorStart[em] = 0xffffff; E.colorEnd[em] = p.colorStart ?? 0xffffff;
+  E.sizeStart[em] = 0.1; E.sizeEnd[em] = p.sizeStart ?? 0.1;
+  E.alphaStart[em] = 1; E.alphaEnd[em] = 0;
+  E.deathEmitter[em] = 0; E.deathCount[em] = 0; E.maxGeneration[em] = 0;
+  E.policy[em] = CapacityPolicy.DropNew;
   E.spawned[em] = 0; E.dropped[em] = 0;
-  return em;
+  writeSettings(world, em, settings);
+  return currentHandle(world, em);
 }
 
-function assertEmitter(where: string, world: PhysicsWorld, em: number): void {
-  if (typeof em !== 'number' || !Number.isInteger(em) || em < 1 || !entityExists(world, em) || !hasComponent(world, em, world.components.Emitter)) {
-    throw new RangeError(`${where}: ${describe(em)} is not an emitter in this world`);
-  }
+/** The slot of emitter handle `em`. @throws RangeError naming `where` on a removed entity or one that is not an emitter. */
+function emitterSlot(where: string, world: PhysicsWorld, em: unknown): number {
+  return resolveKind(world, em, 'emitter', where, 'emitter');
 }
 
 /**
  * Asks emitter `em` for `count` particles at the next spawn stage (e.g. a firework shell bursting,
- * a splash). @throws RangeError on a missing emitter or a count that is not a non-negative integer.
+ * a splash). @param em an emitter's handle.
+ * @throws RangeError on a removed entity, one that is not an emitter, or a count that is not an integer in [0, 10^7].
  */
 export function burst(world: PhysicsWorld, em: number, count: number): void {
-  assertEmitter('burst', world, em);
+  const slot = emitterSlot('burst', world, em);
   assertInteger('burst', 'count', count, 0, 10_000_000);
   const E = world.components.Emitter;
-  E.pendingBurst[em] = E.pendingBurst[em]! + count;
+  E.pendingBurst[slot] = E.pendingBurst[slot]! + count;
 }
 
 /**
  * Spawns `count` particles of emitter `em` now, at `position` (default: the emitter's) with
  * `velocity` passed on at the emitter's inherit fraction. Returns how many were spawned (fewer if the
- * world was full and the policy drops). @throws RangeError on a missing emitter or bad values.
+ * world was full and the policy drops). @param em an emitter's handle.
+ * @throws TypeError | RangeError on a removed entity, one that is not an emitter, or bad values.
  */
 export function emitNow(world: PhysicsWorld, em: number, count: number, position?: ArrayLike<number>, velocity?: ArrayLike<number>): number {
   const where = 'emitNow';
-  assertEmitter(where, world, em);
+  const slot = emitterSlot(where, world, em);
   assertInteger(where, 'count', count, 0, 10_000_000);
   const d = world.dimensions;
   if (position !== undefined) assertVector(where, 'position', position, d);
   if (velocity !== undefined) assertVector(where, 'velocity', velocity, d);
   const P = world.components.Position;
-  const x = position ? position[0]! : P.x[em]!, y = position ? position[1]! : P.y[em]!, z = position && d === 3 ? position[2]! : position ? 0 : P.z[em]!;
-  const k = world.components.Emitter.inherit[em]!;
-  const before = world.components.Emitter.spawned[em]!;
+  const x = position ? position[0]! : P.x[slot]!, y = position ? position[1]! : P.y[slot]!, z = position && d === 3 ? position[2]! : position ? 0 : P.z[slot]!;
+  const k = world.components.Emitter.inherit[slot]!;
+  const before = world.components.Emitter.spawned[slot]!;
   const b = book(world);
   for (let i = 0; i < count; i++) {
-    spawnOne(world, b, em, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0);
+    spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0);
   }
-  return world.components.Emitter.spawned[em]! - before;
+  return world.components.Emitter.spawned[slot]! - before;
 }
 
-/** Turns an emitter's continuous emission on or off. @throws RangeError on a missing emitter. */
+/**
+ * Turns an emitter's continuous emission on or off. @param em an emitter's handle.
+ * @throws TypeError if `enabled` is not a boolean; RangeError on a removed entity or one that is not an emitter.
+ */
 export function setEmitterEnabled(world: PhysicsWorld, em: number, enabled: boolean): void {
-  assertEmitter('setEmitterEnabled', world, em);
-  world.components.Emitter.enabled[em] = enabled ? 1 : 0;
+  const slot = emitterSlot('setEmitterEnabled', world, em);
+  assertBoolean('setEmitterEnabled', 'enabled', enabled);
+  world.components.Emitter.enabled[slot] = enabled ? 1 : 0;
 }
 
-/** Sets an emitter's rate, particles/s (>= 0). @throws RangeError. */
+/**
+ * Sets an emitter's rate, particles/s (finite, >= 0). @param em an emitter's handle.
+ * @throws RangeError on a bad rate, a removed entity or one that is not an emitter.
+ */
 export function setEmitterRate(world: PhysicsWorld, em: number, rate: number): void {
-  assertEmitter('setEmitterRate', world, em);
+  const slot = emitterSlot('setEmitterRate', world, em);
   assertNonNegative('setEmitterRate', 'rate', rate);
-  world.components.Emitter.rate[em] = rate;
+  world.components.Emitter.rate[slot] = rate;
 }
 
 /**
@@ -531,7 +593,8 @@ export interface ParticleLook { color: number; size: number; alpha: number }
 
 /**
  * The look of particle `eid` at its current age (for renderers), written into `out`.
- * Colours interpolate per channel.
+ * Colours interpolate per channel. `eid` is a slot, as `query()` gives it (renderers' loops call this
+ * per particle; no checks).
  */
 export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook): ParticleLook {
   const c = world.components;
@@ -551,66 +614,15 @@ export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook
 
 /**
  * Changes an emitter's settings: any of addEmitter's options except attachTo, position and velocity
- * (move an emitter with setPosition / setVelocity). Omitted options keep their value. Particles
- * already emitted keep what they were given.
- * @throws TypeError | RangeError as addEmitter does, or if `em` is not an emitter.
+ * (move an emitter with setPosition / setVelocity); `onDeath.emitter` 0 removes the death emitter.
+ * Omitted options keep their value. Particles already emitted keep what they were given. Every option
+ * is checked before any is written, so a refused call changes nothing.
+ * @param em an emitter's handle.
+ * @throws TypeError | RangeError as addEmitter does, on a missing options object, or if `em` was removed or is not an emitter.
  */
 export function setEmitter(world: PhysicsWorld, em: number, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): void {
   const where = 'setEmitter';
-  assertEmitter(where, world, em);
-  assertKnownKeys(where, options, ['rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled']);
-  // Validate by building a scratch emitter description through the same checks as addEmitter.
-  const E = world.components.Emitter;
-  const d = world.dimensions;
-  if (options.rate !== undefined) { assertNonNegative(where, 'rate', options.rate); E.rate[em] = options.rate; }
-  if (options.shape !== undefined) {
-    if (!(options.shape in SHAPES)) throw new RangeError(`${where}: shape must be one of ${Object.keys(SHAPES).join(', ')}, got ${describe(options.shape)}`);
-    E.shape[em] = SHAPES[options.shape]!;
-  }
-  if (options.size !== undefined) {
-    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); E.size[em] = options.size; E.sizeY[em] = options.size; E.sizeZ[em] = options.size; }
-    else {
-      assertVector(where, 'size', options.size, d);
-      for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]);
-      E.size[em] = options.size[0]!; E.sizeY[em] = options.size[1]!; E.sizeZ[em] = d === 3 ? options.size[2]! : 0;
-    }
-  }
-  if (options.direction !== undefined) {
-    assertVector(where, 'direction', options.direction, d);
-    const x = options.direction[0]!, y = options.direction[1]!, z = d === 3 ? options.direction[2]! : 0;
-    const n = Math.hypot(x, y, z);
-    if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
-    E.dirX[em] = x / n; E.dirY[em] = y / n; E.dirZ[em] = z / n;
-  }
-  if (options.spread !== undefined) { assertInRange(where, 'spread', options.spread, 0, Math.PI); E.spread[em] = options.spread; }
-  if (options.speed !== undefined) { const r = range(where, 'speed', options.speed, [0, 0], false); E.speedMin[em] = r[0]; E.speedMax[em] = r[1]; }
-  if (options.lifetime !== undefined) { const r = range(where, 'lifetime', options.lifetime, [1, 1], true); E.lifeMin[em] = r[0]; E.lifeMax[em] = r[1]; }
-  if (options.inheritVelocity !== undefined) { assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1); E.inherit[em] = options.inheritVelocity; }
-  if (options.policy !== undefined) {
-    if (options.policy !== 'drop-new' && options.policy !== 'recycle-oldest') throw new RangeError(`${where}: policy must be 'drop-new' or 'recycle-oldest', got ${describe(options.policy)}`);
-    E.policy[em] = options.policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
-  }
-  if (options.enabled !== undefined) E.enabled[em] = options.enabled ? 1 : 0;
-  const p = options.particle;
-  if (p !== undefined) {
-    assertKnownKeys(`${where}: particle`, p, ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd']);
-    if (p.mass !== undefined) { assertPositive(where, 'particle.mass', p.mass); E.mass[em] = p.mass; }
-    if (p.linearDrag !== undefined) { assertNonNegative(where, 'particle.linearDrag', p.linearDrag); E.linearDrag[em] = p.linearDrag; }
-    if (p.quadraticDrag !== undefined) { assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag); E.quadraticDrag[em] = p.quadraticDrag; }
-    if (p.gravityScale !== undefined) { assertFinite(where, 'particle.gravityScale', p.gravityScale); E.gravityScale[em] = p.gravityScale; }
-    if (p.radius !== undefined) { assertPositive(where, 'particle.radius', p.radius); E.radius[em] = p.radius; }
-    for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) { assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff); E[k][em] = p[k]; }
-    for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) { assertNonNegative(where, `particle.${k}`, p[k]); E[k][em] = p[k]; }
-    for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) { assertInRange(where, `particle.${k}`, p[k], 0, 1); E[k][em] = p[k]; }
-  }
-  if (options.onDeath !== undefined) {
-    const od = options.onDeath;
-    assertKnownKeys(`${where}: onDeath`, od, ['emitter', 'count', 'maxGeneration']);
-    if (od.emitter !== 0 && (!entityExists(world, od.emitter) || !hasComponent(world, od.emitter, world.components.Emitter))) {
-      throw new RangeError(`${where}: onDeath.emitter ${describe(od.emitter)} is not an emitter in this world`);
-    }
-    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
-    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
-    E.deathEmitter[em] = od.emitter; E.deathCount[em] = od.count; E.maxGeneration[em] = od.maxGeneration;
-  }
+  const slot = emitterSlot(where, world, em);
+  assertOptions(where, options, SETTINGS);
+  writeSettings(world, slot, checkSettings(world, where, options));
 }
