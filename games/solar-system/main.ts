@@ -1,0 +1,217 @@
+/**
+ * Solar system: the book's closing project (Ramtal and Dobre ch. 16) against a real ephemeris. The
+ * Sun and the eight planets (Earth as the Earth-Moon barycentre) attract each other; they start from
+ * astronomy-engine's positions and velocities at the chosen date and are integrated with the world's
+ * scheme at the chosen step (default RK4, 1 hour). A table compares each planet with the ephemeris
+ * as the simulation runs: |r - r_ephemeris| / |r_ephemeris|, heliocentric.
+ *
+ * Units: AU, days, solar masses (the scene's; see packages/physics/src/scenes/solar-system.ts). One
+ * scene unit is 0.1 AU. Time: the rate is simulated days per real second; each loop tick runs as many
+ * steps of the chosen size as the rate needs.
+ * Keys: P pause, N single step, R reset, [ ] slower / faster, T trails, E exaggerated sizes.
+ * URL: ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name, ?date=ISO date.
+ */
+import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
+import {
+  createPhysicsWorld, INTEGRATOR_NAMES, SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_EPOCH, SOLAR_SYSTEM_FLOOR, SOLAR_SYSTEM_PLANETS, solarSystem,
+  solarSystemErrors, step, type IntegratorName, type PhysicsWorld, type SolarSystemHandles,
+} from '@bitphysics/physics';
+import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
+import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
+
+/** Scene units per AU. */
+const UNITS_PER_AU = 10;
+const STEPS = ['0.25', '1', '6', '24'] as const;
+/** Mean radii, AU (IAU), for true-size drawing. */
+const RADIUS_AU: Record<string, number> = {
+  Sun: 4.652e-3, Mercury: 1.631e-5, Venus: 4.045e-5, Earth: 4.259e-5, Mars: 2.266e-5,
+  Jupiter: 4.673e-4, Saturn: 3.893e-4, Uranus: 1.695e-4, Neptune: 1.646e-4,
+};
+const COLOR: Record<string, number> = {
+  Sun: 0xffd27a, Mercury: 0xb5a89a, Venus: 0xe8cf94, Earth: 0x4f8fe8, Mars: 0xd0643c,
+  Jupiter: 0xd9b38c, Saturn: 0xe6d19a, Uranus: 0x9fd8e0, Neptune: 0x5a78e0,
+};
+
+const params = {
+  rate: numberParam('rate', { default: 30, min: 0, max: 400 }),
+  step: choiceParam('step', STEPS, '1'),
+  integrator: choiceParam('integrator', INTEGRATOR_NAMES, 'rk4') as IntegratorName,
+  date: new URLSearchParams(location.search).get('date') ?? SOLAR_SYSTEM_EPOCH.slice(0, 10),
+  exaggerate: new URLSearchParams(location.search).has('exaggerate') ? flagParam('exaggerate') : true,
+  trails: new URLSearchParams(location.search).has('trails') ? flagParam('trails') : true,
+  reset: () => game.shell.reset(),
+};
+
+let handles: SolarSystemHandles;
+let carry = 0;
+
+/** A fresh world from the ephemeris at params.date with the chosen scheme and step. */
+function createWorld(): PhysicsWorld {
+  const options = { stepHours: Number(params.step), integrator: params.integrator, date: `${params.date}T00:00:00Z` };
+  const world = createPhysicsWorld(solarSystem.worldOptions(options));
+  handles = solarSystem.build(world, options);
+  carry = 0;
+  return world;
+}
+
+/** Real seconds a loop tick stands for (the loop is set to 60 Hz, whatever the world's step in days). */
+const TICK = 1 / 60;
+
+/** One loop tick: `rate` days a second need rate TICK / dt steps of dt days a tick; the fraction carries over. */
+function stepWorld(world: PhysicsWorld): void {
+  carry += (params.rate * TICK) / world.dt;
+  const n = Math.min(2000, Math.floor(carry));
+  carry -= n;
+  for (let i = 0; i < n; i++) step(world);
+}
+
+const TRAILS = { length: 600, maxEntities: 9, spacing: 0.02, alpha: 0.7 };
+
+const game = await startThreeGame({
+  title: 'Solar system',
+  createWorld,
+  step: stepWorld,
+  bodies: () => SOLAR_SYSTEM_BODIES.length,
+  controls: [
+    ...ORBIT_CONTROLS,
+    { keys: '[ ]', action: 'slower / faster' },
+    { keys: 'T', action: 'trails on / off' },
+    { keys: 'E', action: 'exaggerated sizes on / off' },
+  ],
+  keys: [
+    { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
+    { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
+    { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
+    { key: 'e', label: 'sizes', action: () => { params.exaggerate = !params.exaggerate; dress(); panel.refresh(); } },
+  ],
+  app: { background: 0x020308, shadows: false, controls: { minDistance: 0.5, maxDistance: 1500 }, cameraPosition: [0, 60, 90] },
+  renderer: {
+    unitsPerMeter: UNITS_PER_AU,
+    boundary: 'none',
+    shadows: false,
+    lights: { direction: [0, 1, 0], intensity: 0.2, hemisphereIntensity: 0.25, ambientIntensity: 0.25, shadows: false },
+    trails: params.trails ? TRAILS : false,
+  },
+  view: { min: [-6, -1, -6], max: [6, 1, 6] },
+  viewDirection: [0.2, 0.8, 1],
+  onFrame: () => frame(),
+});
+const { shell, renderer, app } = game;
+// The loop ticks at 60 Hz of real time; the world's dt is the physical step in days.
+shell.loop.setTimeStep(TICK);
+shell.onWorldChange(() => shell.loop.setTimeStep(TICK));
+app.scene.add(new PointLight(0xfff2d0, 3, 0, 0));
+app.camera.far = 5000;
+app.camera.updateProjectionMatrix();
+
+const sphere = new SphereGeometry(1, 32, 20);
+const materials = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((b) => [b, b === 'Sun'
+  ? new MeshBasicMaterial({ color: COLOR[b] })
+  : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.25 })]));
+
+/** Body sizes: true radii, or exaggerated (planets x 1500, the Sun x 15) so they show at this scale. */
+function dress(): void {
+  for (const name of SOLAR_SYSTEM_BODIES) {
+    const r = RADIUS_AU[name]! * (params.exaggerate ? (name === 'Sun' ? 15 : 1500) : 1);
+    renderer.setShape(handles.bodies[name], { geometry: sphere, material: materials[name]!, scale: r });
+    renderer.setColor(handles.bodies[name], COLOR[name]!);
+  }
+}
+dress();
+shell.onWorldChange(() => dress());
+
+// Saturn's rings: a flat disc that follows Saturn.
+const rings = new Mesh(new SphereGeometry(1, 32, 4), new MeshBasicMaterial({ color: 0xcdb98a, transparent: true, opacity: 0.5 }));
+app.scene.add(rings);
+
+// ---- Labels, date and the error table ---------------------------------------------------------
+
+const labelLayer = document.createElement('div');
+labelLayer.style.cssText = 'position: fixed; inset: 0; pointer-events: none; z-index: 5; font: 12px system-ui, sans-serif; color: #dfe7ff';
+document.body.append(labelLayer);
+const labels = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((name) => {
+  const el = document.createElement('div');
+  el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
+  el.style.cssText = 'position: absolute; transform: translate(6px, -50%); text-shadow: 0 0 3px #000; white-space: nowrap';
+  labelLayer.append(el);
+  return [name, el];
+}));
+
+const table = document.createElement('div');
+table.className = 'bp-hud';
+table.dataset.hud = 'ephemeris';
+table.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 260px';
+document.body.append(table);
+const dateLine = table.appendChild(document.createElement('div'));
+const head = table.appendChild(document.createElement('div'));
+head.textContent = 'error vs ephemeris (floor)';
+const rows = Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p) => [p, table.appendChild(document.createElement('div'))]));
+const errors = new Float64Array(SOLAR_SYSTEM_PLANETS.length);
+
+const p3 = [0, 0, 0];
+const v = new Vector3();
+let tableFrame = 0;
+
+function frame(): void {
+  const k = UNITS_PER_AU;
+  const w = app.canvas.clientWidth, h = app.canvas.clientHeight;
+  for (const name of SOLAR_SYSTEM_BODIES) {
+    const el = labels[name]!;
+    if (!renderer.drawnPosition(handles.bodies[name], p3)) { el.style.display = 'none'; continue; }
+    v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
+    if (name === 'Saturn') {
+      rings.position.copy(v);
+      rings.scale.set(1, 0.01, 1).multiplyScalar(RADIUS_AU.Saturn! * k * (params.exaggerate ? 1500 : 1) * 2.2);
+    }
+    v.project(app.camera);
+    const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
+    el.style.display = visible ? 'block' : 'none';
+    if (visible) { el.style.left = `${((v.x + 1) / 2) * w}px`; el.style.top = `${((1 - v.y) / 2) * h}px`; }
+  }
+  if (tableFrame++ % 15 === 0) updateTable();
+}
+
+function updateTable(): void {
+  const world = shell.world;
+  const date = new Date(handles.epoch + world.time * 86_400_000);
+  dateLine.textContent = `${date.toISOString().slice(0, 16).replace('T', ' ')} UTC · day ${world.time.toFixed(1)} · ${params.integrator} ${params.step} h · ${params.rate.toFixed(1)} d/s`;
+  solarSystemErrors(world, handles, errors);
+  SOLAR_SYSTEM_PLANETS.forEach((p, i) => {
+    rows[p]!.textContent = `${p.padEnd(8)} ${errors[i]!.toExponential(2)}  (${SOLAR_SYSTEM_FLOOR[p].toExponential(1)} at 1 yr)`;
+  });
+}
+
+function setRate(days: number): void {
+  params.rate = Math.min(400, Math.max(0, days < 0.05 ? 0 : Math.round(days * 100) / 100));
+  panel.refresh();
+}
+
+function setTrails(on: boolean): void {
+  params.trails = on;
+  renderer.setTrails(on ? TRAILS : false);
+  panel.refresh();
+}
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'rate', label: 'rate (days/s)', min: 0, max: 400, step: 0.5 },
+  { type: 'choice', key: 'step', label: 'step (hours)', options: STEPS, onChange: () => shell.reset() },
+  { type: 'choice', key: 'integrator', label: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
+  { type: 'text', key: 'date', label: 'start date (UTC)', onChange: () => { try { shell.reset(); } catch (error) { shell.hud.showError(String((error as Error).message)); } } },
+  { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes', onChange: () => dress() },
+  { type: 'checkbox', key: 'trails', label: 'trails', onChange: (x) => setTrails(x === true) },
+  { type: 'button', key: 'reset', label: 'reset (R)' },
+], { title: 'Solar system' });
+
+shell.expose({
+  params,
+  panel,
+  /** Entities by name. */
+  bodies: () => handles.bodies,
+  /** Each planet's relative error against the ephemeris now, by name. */
+  errors: (): Record<string, number> => {
+    solarSystemErrors(shell.world, handles, errors);
+    return Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p, i) => [p, errors[i]!]));
+  },
+  /** Sets the rate, simulated days per real second, clamped to [0, 400]. */
+  setRate,
+});

@@ -1,0 +1,187 @@
+/**
+ * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Flood the ballast tanks to
+ * dive, blow them to rise, move water fore or aft to trim the nose down or up, and drive the screw
+ * ahead or astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in
+ * proportion to how much of it is under water and bobs in the waves. Collect every beacon without
+ * scraping the seabed three times.
+ * Keys: W / S flood / blow (both tanks), Q / E trim nose down / up, A / D or arrows astern / ahead,
+ * P pause, N step, R reset.
+ */
+import { Graphics, Text } from 'pixi.js';
+import {
+  seabedHeight, setBallastTarget, setBodyThrust, step, submarine, SUBMARINE, SUBMARINE_NEUTRAL_FILL,
+  createPhysicsWorld, type PhysicsWorld, type SubmarineHandles,
+} from '@bitphysics/physics';
+import { startPixiGame } from '../shared/pixi';
+import { createPanel, numberParam, seedParam } from '../shared/index';
+
+const params = {
+  seed: seedParam(),
+  beacons: numberParam('beacons', { default: 6, min: 1, max: 20, integer: true }),
+  waveHeight: numberParam('waves', { default: 1, min: 0, max: 3 }),
+  pixelsPerMeter: numberParam('zoom', { default: 6, min: 2, max: 20 }),
+  reset: () => shell.reset(),
+};
+
+/** Game state beside the physics: controls, collected beacons, hull damage. */
+const state = { throttle: 0, fill: 0, trim: 0, collected: 0, hits: 0, touching: false, over: '' as '' | 'won' | 'sunk', time: 0 };
+let handles: SubmarineHandles;
+let taken: boolean[] = [];
+
+function createWorld(): PhysicsWorld {
+  const world = createPhysicsWorld(submarine.worldOptions());
+  handles = submarine.build(world, { seed: params.seed, count: params.beacons });
+  Object.assign(state, { throttle: 0, fill: 0, trim: 0, collected: 0, hits: 0, touching: false, over: '', time: 0 });
+  taken = new Array(params.beacons).fill(false);
+  return world;
+}
+
+const held = new Set<string>();
+addEventListener('keydown', (e) => { held.add(e.key.toLowerCase()); });
+addEventListener('keyup', (e) => { held.delete(e.key.toLowerCase()); });
+addEventListener('blur', () => held.clear());
+
+/** Hull end points and keel in world coordinates (bow, stern, keel centre). */
+function hullPoints(world: PhysicsWorld): number[][] {
+  const c = world.components, e = handles.hull;
+  const x = c.Position.x[e]!, y = c.Position.y[e]!, a = c.Angle.value[e]!;
+  const co = Math.cos(a), s = Math.sin(a), L = SUBMARINE.length / 2, H = SUBMARINE.height / 2;
+  return [[x + L * co, y + L * s], [x - L * co, y - L * s], [x + H * s, y - H * co]];
+}
+
+function stepWorld(world: PhysicsWorld): void {
+  const dt = world.dt;
+  // Input: held keys move the controls smoothly.
+  if (held.has('w')) state.fill = Math.min(1, state.fill + 0.25 * dt);
+  if (held.has('s')) state.fill = Math.max(0, state.fill - 0.25 * dt);
+  if (held.has('q')) state.trim = Math.min(0.3, state.trim + 0.2 * dt);
+  if (held.has('e')) state.trim = Math.max(-0.3, state.trim - 0.2 * dt);
+  const ahead = held.has('d') || held.has('arrowright'), astern = held.has('a') || held.has('arrowleft');
+  if (ahead) state.throttle = Math.min(1, state.throttle + 0.6 * dt);
+  if (astern) state.throttle = Math.max(-0.5, state.throttle - 0.6 * dt);
+  applyControls(world);
+  // Waves: the sea's surface bobs (the hull rides it).
+  const sea = world.components.FluidRegion;
+  sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
+  step(world);
+  if (state.over) return;
+  state.time = world.time;
+  // The seabed: scraping it costs hull integrity and bounces the boat up.
+  const c = world.components, e = handles.hull;
+  let hit = false;
+  for (const [px, py] of hullPoints(world)) if (py! < seabedHeight(handles.seabed, px!)) hit = true;
+  if (hit) {
+    c.Velocity.y[e] = Math.max(c.Velocity.y[e]!, 1.5);
+    c.Velocity.x[e] = c.Velocity.x[e]! * 0.5;
+    if (!state.touching) { state.hits++; if (state.hits >= 3) state.over = 'sunk'; }
+  }
+  state.touching = hit;
+  for (let i = 0; i < taken.length; i++) {
+    if (taken[i]) continue;
+    const dx = handles.beacons[2 * i]! - c.Position.x[e]!, dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
+    if (dx * dx + dy * dy < 7 * 7) { taken[i] = true; state.collected++; if (state.collected === taken.length) state.over = 'won'; }
+  }
+}
+
+/** Writes the controls into the world: ballast targets (fill +- trim) and screw thrust. */
+function applyControls(world: PhysicsWorld): void {
+  const fore = Math.min(1, Math.max(0, state.fill + state.trim)), aft = Math.min(1, Math.max(0, state.fill - state.trim));
+  setBallastTarget(world, handles.hull, fore, aft);
+  setBodyThrust(world, handles.hull, [state.throttle * SUBMARINE.maxThrust, 0]);
+}
+
+const game = await startPixiGame({
+  title: 'Submarine',
+  createWorld,
+  step: stepWorld,
+  bodies: () => 1,
+  controls: [
+    { keys: 'W / S', action: 'flood / blow ballast' },
+    { keys: 'Q / E', action: 'trim nose down / up' },
+    { keys: 'A / D', action: 'screw astern / ahead' },
+  ],
+  app: { background: 0x0b2340, antialias: true },
+  renderer: { pixelsPerMeter: params.pixelsPerMeter },
+  onFrame: () => draw(),
+});
+const { shell, app } = game;
+
+// ---- Drawing: sky, sea, seabed, beacons, hull and gauges (the world renderer draws nothing here) --
+
+const g = new Graphics();
+app.stage.addChild(g);
+const gauge = new Text({ text: '', style: { fill: 0xe8f4ff, fontFamily: 'monospace', fontSize: 13, lineHeight: 17 } });
+app.stage.addChild(gauge);
+
+function draw(): void {
+  const world = shell.world, c = world.components, e = handles.hull;
+  const k = params.pixelsPerMeter, W = app.screen.width, H = app.screen.height;
+  const cx = c.Position.x[e]!, cy = Math.min(-H / k / 2 + 25, c.Position.y[e]!);
+  const sx = (x: number) => W / 2 + (x - cx) * k, sy = (y: number) => H / 2 - (y - cy) * k;
+  g.clear();
+  g.rect(0, 0, W, Math.max(0, sy(0))).fill(0x8fc3ea);
+  // Sea surface with waves.
+  const t = world.time, surface = c.FluidRegion.surface[handles.sea]!;
+  g.moveTo(0, H);
+  for (let px = 0; px <= W; px += 8) {
+    const x = cx + (px - W / 2) / k;
+    g.lineTo(px, sy(surface + params.waveHeight * 0.3 * Math.sin(0.15 * x - 1.3 * t)));
+  }
+  g.lineTo(W, H).closePath().fill({ color: 0x0e4a7a, alpha: 0.95 });
+  // Seabed.
+  g.moveTo(0, H);
+  for (let px = 0; px <= W; px += 6) g.lineTo(px, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)));
+  g.lineTo(W, H).closePath().fill(0x5b4a32);
+  // Beacons.
+  for (let i = 0; i < taken.length; i++) {
+    if (taken[i]) continue;
+    const bx = sx(handles.beacons[2 * i]!), by = sy(handles.beacons[2 * i + 1]!);
+    g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
+    g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+  }
+  // Hull: a rounded rectangle with a sail, rotated by the hull's angle.
+  const a = c.Angle.value[e]!, co = Math.cos(a), s = Math.sin(a);
+  const L = SUBMARINE.length / 2, Hh = SUBMARINE.height / 2;
+  const pt = (u: number, v: number): [number, number] => [sx(cx + u * co - v * s), sy(c.Position.y[e]! + u * s + v * co)];
+  const hull = [[-L, -Hh * 0.6], [-L * 0.9, -Hh], [L * 0.8, -Hh], [L, 0], [L * 0.8, Hh], [-L * 0.9, Hh], [-L, Hh * 0.6]].map(([u, v]) => pt(u!, v!));
+  g.poly(hull.flat()).fill(state.touching ? 0xd05050 : 0x2f3b45).stroke({ color: 0x9fb3c2, width: 1.5 });
+  g.poly([pt(-1, Hh), pt(-0.5, Hh + 2), pt(1.5, Hh + 2), pt(2, Hh)].flat()).fill(0x2f3b45);
+  // Water in the tanks.
+  const B = c.Ballast;
+  for (const [u, f] of [[SUBMARINE.tankArm, B.fore[e]!], [-SUBMARINE.tankArm, B.aft[e]!]] as const) {
+    g.poly([pt(u - 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8 + 1.6 * Hh * f), pt(u - 1.5, -Hh * 0.8 + 1.6 * Hh * f)].flat()).fill({ color: 0x4fa3ff, alpha: 0.8 });
+  }
+  // Gauges.
+  const depth = -c.Position.y[e]!, speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
+  const floor = seabedHeight(handles.seabed, cx);
+  gauge.text = [
+    `depth    ${depth.toFixed(1)} m   (seabed ${(-floor).toFixed(0)} m)`,
+    `speed    ${speed.toFixed(2)} m/s  climb ${c.Velocity.y[e]!.toFixed(2)} m/s`,
+    `ballast  fore ${(B.fore[e]! * 100).toFixed(0)}%  aft ${(B.aft[e]! * 100).toFixed(0)}%  (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
+    `trim     ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
+    `beacons  ${state.collected}/${taken.length}   hull ${3 - state.hits}/3   ${state.over === 'won' ? 'ALL COLLECTED!' : state.over === 'sunk' ? 'HULL BREACHED (R to retry)' : ''}`,
+  ].join('\n');
+  gauge.position.set(W - 430, 10);
+}
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'beacons', min: 1, max: 20, step: 1, onChange: () => shell.reset() },
+  { type: 'slider', key: 'waveHeight', label: 'wave height (m)', min: 0, max: 3, step: 0.1 },
+  { type: 'slider', key: 'pixelsPerMeter', label: 'zoom (px/m)', min: 2, max: 20, step: 0.5 },
+  { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+  { type: 'button', key: 'reset', label: 'reset (R)' },
+], { title: 'Submarine' });
+
+shell.expose({
+  params,
+  panel,
+  state,
+  /** The hull entity. */
+  hull: () => handles.hull,
+  /** Sets the controls directly: fill and trim in [0, 1] and [-0.3, 0.3], throttle in [-0.5, 1]. */
+  setControls: (controls: { fill?: number; trim?: number; throttle?: number }): void => {
+    if (controls.fill !== undefined) state.fill = Math.min(1, Math.max(0, controls.fill));
+    if (controls.trim !== undefined) state.trim = Math.min(0.3, Math.max(-0.3, controls.trim));
+    if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-0.5, controls.throttle));
+  },
+});

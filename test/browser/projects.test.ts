@@ -1,0 +1,47 @@
+/**
+ * The book's simulation projects in headless Chromium: input changes each game (the solar system's
+ * rate key speeds up its clock and its error table reads the ephemeris; the submarine's keys drive
+ * the screw and flood the tanks).
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness } from './harness';
+
+interface Game { paused: boolean; world: { time: number; components: any }; step(): void }
+
+describe('projects', () => {
+  let h: Harness;
+  beforeAll(async () => { h = await Harness.start(); });
+  afterAll(async () => { await h?.close(); });
+
+  it('solar-system: ] raises the rate; the error table starts at the ephemeris', async () => {
+    const g = await h.openGame('solar-system');
+    const before = await g.page.evaluate(() => (window.game as unknown as { params: { rate: number } }).params.rate);
+    await g.press(']');
+    const after = await g.page.evaluate(() => (window.game as unknown as { params: { rate: number } }).params.rate);
+    expect(after).toBeGreaterThan(before);
+    const errors = await g.page.evaluate(() => (window.game as unknown as { errors(): Record<string, number> }).errors());
+    // A few simulated days in: every planet still within 1e-3 of the ephemeris (the one-year floor is 2.9e-3 for Mercury).
+    for (const e of Object.values(errors)) expect(e).toBeLessThan(1e-3);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('submarine: D drives the screw ahead, W floods the tanks', async () => {
+    const g = await h.openGame('submarine');
+    const x0 = await g.page.evaluate(() => { const w = window.game as unknown as Game & { hull(): number }; return w.world.components.Position.x[w.hull()] as number; });
+    await g.page.keyboard.down('d');
+    await g.page.keyboard.down('w');
+    await g.page.waitForTimeout(1500);
+    await g.page.keyboard.up('d');
+    await g.page.keyboard.up('w');
+    const s = await g.page.evaluate(() => {
+      const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
+      return { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
+    });
+    expect(s.throttle).toBeGreaterThan(0.3);
+    expect(s.fill).toBeGreaterThan(0.1);
+    expect(s.x).toBeGreaterThan(x0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
