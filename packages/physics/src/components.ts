@@ -16,6 +16,8 @@
 import { createJointStore, type JointStore } from './joints/store.js';
 import { createClothLinkStore, type ClothLinkStore } from './cloth/store.js';
 
+import { createEmptyShapeStore, type ShapeStore } from './shapes/store.js';
+
 /** A 3-vector store: one Float64Array a component. */
 export interface Vec3Store {
   /** x component, per entity. */
@@ -243,6 +245,15 @@ export interface Components {
    */
   Plane: { nx: Float64Array; ny: Float64Array; nz: Float64Array; d: Float64Array };
   /**
+   * A convex collision shape of a 2D body: circle, capsule, box or polygon of up to 8 vertices, rounded
+   * by a radius (shapes/geometry.ts; added with `addShape` or `addBox`). The first shape of a body lives
+   * on the body's own entity (`body` is then the entity itself); each further shape of a compound body
+   * is its own entity holding its `body`, like a spring holds its two ends, and is removed with the
+   * body. The Material of the entity a shape lives on is the shape's material. Fields, units and
+   * defaults: see ShapeStore. Arrays are allocated when the world's first shape is added.
+   */
+  Shape: ShapeStore;
+  /**
    * Ballast tanks of a submarine (forces/ballast.ts, `setBallast`): a fore and an aft tank of
    * `capacity` kg of water each, `fore` and `aft` their fill fractions in [0, 1] moving towards
    * `foreTarget` / `aftTarget` at `rate` (fraction/s); the body's mass is `dryMass` + capacity
@@ -375,6 +386,7 @@ export function createComponents(capacity: number): Components {
     InertiaTensor: { x: z(), y: z(), z: z(), invX: z(), invY: z(), invZ: z() },
     AngularDamping: { k: z() },
     Plane: { nx: z(), ny: z(), nz: z(), d: z() },
+    Shape: createEmptyShapeStore(),
     Ballast: {
       dryMass: z(), capacity: z(), fore: z(), aft: z(), foreTarget: z(), aftTarget: z(), rate: z(), arm: z(), metacentricHeight: z(),
     },

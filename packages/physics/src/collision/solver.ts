@@ -4,6 +4,10 @@ import { BodyType } from './broadphase.js';
 import { reportNonFinite } from '../errors.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import type { CollisionState } from './state.js';
+import {
+  accumulateManifoldImpulses, applyManifoldRestitution, finishManifolds, gatherManifoldBodies, prepareManifolds, solveManifolds,
+  warmStartManifolds,
+} from './manifold-solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 
 /**
@@ -33,12 +37,14 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   cs.stats.maxOverlap = 0;
-  if (!jointsToSolve(world) && buf.count === 0) {
+  if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0) {
     cs.contacts = storeWarmStart(cs.cache, buf);
+    finishManifolds(world);
     return;
   }
   gatherBodies(world, buf);
   prepareContacts(world, buf);
+  prepareManifolds(world);
 
   const st = cs.settings;
   const substeps = st.solverSubsteps;
@@ -55,21 +61,27 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     integrateVelocities(world, hs);
     warmStartJoints(world);
     if (is2D) warmStart2D(cs, buf); else warmStart3D(cs, buf);
+    if (is2D) warmStartManifolds(cs);
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
       if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
+      if (is2D) solveManifolds(cs, hs, true);
     }
     integratePositions(world, hs);
     integrateJointRotations(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
       if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
+      if (is2D) solveManifolds(cs, hs, false);
     }
+    if (is2D) accumulateManifoldImpulses(cs);
     // The accumulated impulse is what this substep delivered (warm start plus corrections).
     for (let i = 0, n = buf.count; i < n; i++) TOT[i] = TOT[i]! + LN[i]!;
   }
   applyRestitution(world, buf);
+  if (is2D) applyManifoldRestitution(world);
   finishBodies(world, buf);
+  finishManifolds(world);
   finishJoints(world, hs);
   cs.contacts = storeWarmStart(cs.cache, buf);
 }
@@ -131,6 +143,8 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     IB[i] = index[b]!;
   }
   cs.solverBodies = list;
+  count = gatherManifoldBodies(world, count); // the shapes' manifolds join (manifold-solver.ts)
+  list = cs.solverBodies;
   count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
   list = cs.solverBodies;
   cs.solverBodyCount = count;

@@ -1,4 +1,5 @@
 import { createContactBuffer, createWarmStartCache, type ContactBuffer, type WarmStartCache } from './contacts.js';
+import { createShapeCollisionState, type ShapeCollisionState } from './manifolds.js';
 
 /**
  * Contact solver tuning (Box2D v3's soft step; the defaults are Box2D's). Set at world creation from
@@ -126,6 +127,8 @@ export interface CollisionState {
   wakeCount: number;
   /** Sleep: whether resting islands go to sleep, and the per-entity scratch it keeps; see sleep.ts. */
   readonly sleep: SleepState;
+  /** Contacts of 2D shapes (boxes, polygons, capsules, circles): manifolds, warm start, events; see manifolds.ts. */
+  readonly shapes: ShapeCollisionState;
   /** Statistics of the last step: candidate pairs, contacts, the deepest overlap left at its end (m), bodies asleep. */
   readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
 }
@@ -215,6 +218,7 @@ export function createCollisionState(
       restTime: new Float64Array(n), island: new Int32Array(n), parent: new Int32Array(n), islandRest: new Float64Array(n), supported: new Uint32Array(n), stamp: 0,
       lastGravity: new Float64Array(3), anyAsleep: false,
     },
+    shapes: createShapeCollisionState(),
     stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
   };
 }

@@ -1,0 +1,337 @@
+/**
+ * Storage of shape contacts (2D): one row per manifold (a touching pair of shapes, up to two points),
+ * structure of arrays grown by doubling, kept in `world.collision.shapes`. Like the ball contacts of
+ * contacts.ts these are solver rows, not entities.
+ *
+ * Sign convention: the normal (nx, ny) points from shape A to shape B; the normal relative velocity
+ * at a point is vn = (v_B + w_B x r_B - v_A - w_A x r_A) . n, negative when approaching. Body A or B
+ * may be static or kinematic; a contact with a plane, a segment or the boundary box has body A = 0
+ * (the static world) and `shapeA` the plane or segment entity, or -1 - face for a boundary face
+ * (faces 0 -x, 1 +x, 2 -y, 3 +y).
+ */
+export interface ManifoldBuffer {
+  /** Rows in use. */
+  count: number;
+  /** Rows allocated. */
+  capacity: number;
+  /** Shape entities of A and B (see the module comment for A's special values). */
+  shapeA: Int32Array;
+  shapeB: Int32Array;
+  /** Body entities of A (0: the static world) and B. */
+  bodyA: Int32Array;
+  bodyB: Int32Array;
+  /** Solver-body indices of A and B this step (0: the static world); set by the solver. */
+  ia: Int32Array;
+  ib: Int32Array;
+  /** Points in use, 1 or 2. */
+  pointCount: Uint8Array;
+  /** Unit normal from A to B. */
+  nx: Float64Array;
+  ny: Float64Array;
+  /** Combined kinetic friction sqrt(mu_A mu_B), the bound used this step (static while sticking), restitution max(e_A, e_B). */
+  friction: Float64Array;
+  frictionBound: Float64Array;
+  restitution: Float64Array;
+  /** Rolling resistance torque per unit normal impulse, m (coefficient times the rolling radius); 0 for none. */
+  rolling: Float64Array;
+  /** Effective rotational mass of the rolling constraint, kg m^2, and its accumulated angular impulse, N m s. */
+  rollingMass: Float64Array;
+  rollingImpulse: Float64Array;
+  /** 1 if the pair touched at the end of the step (a point carried a normal impulse, or overlapped). */
+  touching: Uint8Array;
+  /** Spawn stamps of the two shape entities, to validate the warm start. */
+  stampA: Uint32Array;
+  stampB: Uint32Array;
+  /** Per point (row i, point k at index 2 i + k): feature id. */
+  id: Int32Array;
+  /** Per point: contact point at the start of the step, world frame, m. */
+  px: Float64Array;
+  py: Float64Array;
+  /** Per point: anchors from the centres of mass of A and B to the point at the start of the step, m. */
+  rAx: Float64Array;
+  rAy: Float64Array;
+  rBx: Float64Array;
+  rBy: Float64Array;
+  /** Per point: separation at the start of the step, m (< 0: overlap). */
+  separation: Float64Array;
+  /** Per point: effective masses along the normal and the tangent, kg. */
+  normalMass: Float64Array;
+  tangentMass: Float64Array;
+  /** Per point: accumulated normal and tangent impulses, N s (warm-started from the previous step). */
+  normalImpulse: Float64Array;
+  tangentImpulse: Float64Array;
+  /** Per point: largest normal impulse of any substep this step (restitution applies only if > 0), and the sum over substeps, N s. */
+  maxNormalImpulse: Float64Array;
+  totalNormalImpulse: Float64Array;
+  /** Per point: normal relative velocity at the start of the step, m/s (negative: approaching). */
+  relativeVelocity: Float64Array;
+}
+
+const ROW_FLOAT = ['nx', 'ny', 'friction', 'frictionBound', 'restitution', 'rolling', 'rollingMass', 'rollingImpulse'] as const;
+const ROW_INT = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'ia', 'ib'] as const;
+const POINT_FLOAT = [
+  'px', 'py', 'rAx', 'rAy', 'rBx', 'rBy', 'separation', 'normalMass', 'tangentMass', 'normalImpulse', 'tangentImpulse',
+  'maxNormalImpulse', 'totalNormalImpulse', 'relativeVelocity',
+] as const;
+
+/** A manifold buffer with room for `capacity` rows (written as one literal: see contacts.ts). */
+export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
+  const f = (): Float64Array => new Float64Array(capacity);
+  const p = (): Float64Array => new Float64Array(2 * capacity);
+  const i = (): Int32Array => new Int32Array(capacity);
+  return {
+    count: 0, capacity,
+    shapeA: i(), shapeB: i(), bodyA: i(), bodyB: i(), ia: i(), ib: i(), pointCount: new Uint8Array(capacity),
+    nx: f(), ny: f(), friction: f(), frictionBound: f(), restitution: f(), rolling: f(), rollingMass: f(), rollingImpulse: f(),
+    touching: new Uint8Array(capacity), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
+    id: new Int32Array(2 * capacity), px: p(), py: p(), rAx: p(), rAy: p(), rBx: p(), rBy: p(), separation: p(),
+    normalMass: p(), tangentMass: p(), normalImpulse: p(), tangentImpulse: p(), maxNormalImpulse: p(), totalNormalImpulse: p(),
+    relativeVelocity: p(),
+  };
+}
+
+/** Grows `buf` (doubling) to hold at least `needed` rows, keeping rows 0..count-1. */
+export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
+  if (needed <= buf.capacity) return;
+  let cap = buf.capacity;
+  while (cap < needed) cap *= 2;
+  const rec = buf as unknown as Record<string, Float64Array | Int32Array | Uint32Array | Uint8Array>;
+  const n = buf.count;
+  const grow = (key: string, per: number): void => {
+    const old = rec[key]!;
+    const next = new (old.constructor as new (k: number) => typeof old)(cap * per);
+    next.set(old.subarray(0, n * per));
+    rec[key] = next;
+  };
+  for (const k of ROW_FLOAT) grow(k, 1);
+  for (const k of ROW_INT) grow(k, 1);
+  for (const k of POINT_FLOAT) grow(k, 2);
+  grow('pointCount', 1); grow('touching', 1); grow('stampA', 1); grow('stampB', 1); grow('id', 2);
+  buf.capacity = cap;
+}
+
+/**
+ * Contact and sensor events of the last step, read after `step` (no callbacks run inside the solver).
+ * Each list holds `count` entries in parallel arrays; entity values are slots (index stores with them).
+ * - begin: a pair of shapes started touching (a manifold point carried a normal impulse or overlapped),
+ *   with the first point (m), the normal from A to B, and the approach speed along it at the start of
+ *   the step (m/s, >= 0);
+ * - end: a pair that touched at the end of the previous step no longer does (or one was removed);
+ * - sensorBegin / sensorEnd: a shape started or stopped overlapping a sensor shape (`shapeA` the sensor).
+ */
+export interface ContactEvents {
+  begin: EventList;
+  end: EventList;
+  sensorBegin: EventList;
+  sensorEnd: EventList;
+}
+
+/** One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1. */
+export interface EventList {
+  count: number;
+  shapeA: Int32Array;
+  shapeB: Int32Array;
+  bodyA: Int32Array;
+  bodyB: Int32Array;
+  /** Point, normal (A to B) and approach speed (m/s); filled for `begin` only. */
+  px: Float64Array;
+  py: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+  approachSpeed: Float64Array;
+}
+
+function createEventList(n = 16): EventList {
+  return {
+    count: 0, shapeA: new Int32Array(n), shapeB: new Int32Array(n), bodyA: new Int32Array(n), bodyB: new Int32Array(n),
+    px: new Float64Array(n), py: new Float64Array(n), nx: new Float64Array(n), ny: new Float64Array(n), approachSpeed: new Float64Array(n),
+  };
+}
+
+/** Appends an event; returns its row. */
+export function pushEvent(list: EventList, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+  const i = list.count;
+  if (i >= list.shapeA.length) {
+    const rec = list as unknown as Record<string, Float64Array | Int32Array>;
+    for (const k of ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'px', 'py', 'nx', 'ny', 'approachSpeed']) {
+      const old = rec[k]!;
+      const next = new (old.constructor as new (m: number) => typeof old)(old.length * 2);
+      next.set(old);
+      rec[k] = next;
+    }
+  }
+  list.shapeA[i] = shapeA; list.shapeB[i] = shapeB; list.bodyA[i] = bodyA; list.bodyB[i] = bodyB;
+  list.px[i] = 0; list.py[i] = 0; list.nx[i] = 0; list.ny[i] = 0; list.approachSpeed[i] = 0;
+  list.count = i + 1;
+  return i;
+}
+
+/** Per-step scratch of the shape broadphase (colliders: shape entities and ball bodies). */
+export interface ShapeScratch {
+  /** Colliders this step: shape entity (a ball body counts as its own circle shape) and its body. */
+  count: number;
+  shape: Int32Array;
+  body: Int32Array;
+  /** Start-of-step transform of the collider's body: centre of mass (m) and cos, sin of its angle. */
+  x: Float64Array;
+  y: Float64Array;
+  c: Float64Array;
+  s: Float64Array;
+  /** Fattened bounding box (m) and the speculative distance of the collider (m). */
+  minX: Float64Array;
+  minY: Float64Array;
+  maxX: Float64Array;
+  maxY: Float64Array;
+  spec: Float64Array;
+  /** Grid: cell of each collider's box corner, bucket starts, colliders sorted by bucket. */
+  cellX: Int32Array;
+  cellY: Int32Array;
+  bucket: Int32Array;
+  sorted: Int32Array;
+  bucketStart: Int32Array;
+  oversized: Int32Array;
+  /** Candidate pairs (collider indices). */
+  pairCount: number;
+  pairI: Int32Array;
+  pairJ: Int32Array;
+}
+
+function createShapeScratch(): ShapeScratch {
+  const z = (): Float64Array => new Float64Array(0);
+  const zi = (): Int32Array => new Int32Array(0);
+  return {
+    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(),
+    cellX: zi(), cellY: zi(), bucket: zi(), sorted: zi(), bucketStart: new Int32Array(1), oversized: zi(),
+    pairCount: 0, pairI: new Int32Array(256), pairJ: new Int32Array(256),
+  };
+}
+
+/** Everything the shape collision keeps between and within steps; `world.collision.shapes`. */
+export interface ShapeCollisionState {
+  /** Whether any shape was ever added (until then the shape systems return at once). */
+  active: boolean;
+  /** This step's manifolds (the solver's rows). */
+  manifolds: ManifoldBuffer;
+  /** Last step's manifolds: warm start and end events. */
+  previous: ManifoldBuffer;
+  /** Hash of `previous` by (shapeA, shapeB): power-of-two slots, row + 1 (0 empty). */
+  slots: Int32Array;
+  /** Sensor overlaps of the last step, as keys shapeA * 2^25 + shapeB. */
+  sensorPairs: Set<number>;
+  /** Last step's events. */
+  readonly events: ContactEvents;
+  /** Broadphase scratch. */
+  readonly scratch: ShapeScratch;
+  /** Soft-constraint coefficients of this step's shape contacts (bias rate 1/s, mass scale, impulse scale), against a dynamic and an infinite-mass partner; see manifold-solver.ts. */
+  readonly softness: Float64Array;
+  readonly rigidSoftness: Float64Array;
+  /** Per solver body: the rotation still owed at the start of the solve (its rotation within the step is measured from it). */
+  angleBase: Float64Array;
+  /** Per entity (capacity + 1), allocated with the first shape: the body's first extra shape entity (0 none). */
+  firstShape: Int32Array;
+  /** Per entity: where the body's reference point (its position when created) lies from its centre of mass, body frame, m. */
+  originX: Float64Array;
+  originY: Float64Array;
+  /** Sleeping balls touched by moving shapes this step (woken after the step's collisions). */
+  wake: number[];
+  /** Rows the emptied buffer held before `rotateManifolds` (the step before's, for end events). */
+  lastCount: number;
+  /** Sensor overlaps found this step (swapped with `sensorPairs`). */
+  sensorNow: Set<number>;
+  /** The step whose events the lists hold (events of a step's substeps accumulate). */
+  eventStep: number;
+  /** Per entity: stamp of the step in which the body was classified; the counter. */
+  bodyMarks: Uint32Array;
+  bodyMark: number;
+  /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s, and its angle at the start of the step, rad. */
+  bodyW: Float64Array;
+  bodyAngle0: Float64Array;
+}
+
+/** The state of a world without shapes (arrays are allocated with the first shape). */
+export function createShapeCollisionState(): ShapeCollisionState {
+  return {
+    active: false,
+    manifolds: createManifoldBuffer(),
+    previous: createManifoldBuffer(),
+    slots: new Int32Array(0),
+    sensorPairs: new Set(),
+    events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
+    scratch: createShapeScratch(),
+    softness: new Float64Array(3),
+    rigidSoftness: new Float64Array(3),
+    angleBase: new Float64Array(256),
+    firstShape: new Int32Array(0),
+    originX: new Float64Array(0),
+    originY: new Float64Array(0),
+    wake: [],
+    lastCount: 0,
+    sensorNow: new Set(),
+    eventStep: -1,
+    bodyMarks: new Uint32Array(0),
+    bodyMark: 0,
+    bodyW: new Float64Array(0),
+    bodyAngle0: new Float64Array(0),
+  };
+}
+
+/** Allocates the per-entity arrays of the shape state (with the world's first shape). */
+export function ensureShapeState(st: ShapeCollisionState, capacity: number): void {
+  if (st.firstShape.length > 0) return;
+  const n = capacity + 1;
+  st.firstShape = new Int32Array(n);
+  st.originX = new Float64Array(n);
+  st.originY = new Float64Array(n);
+  st.bodyMarks = new Uint32Array(n);
+  st.bodyW = new Float64Array(n);
+  st.bodyAngle0 = new Float64Array(n);
+}
+
+/** Hash of a shape pair key (the boundary's negative shape ids included). */
+export function pairHash(a: number, b: number): number {
+  let h = Math.imul(a, 0x9e3779b1) ^ Math.imul(b, 0x85ebca77);
+  h ^= h >>> 15;
+  return Math.imul(h, 0x27d4eb2f) >>> 0;
+}
+
+/** Finds the row of `previous` for the pair (a, b), or -1. */
+export function findPrevious(st: ShapeCollisionState, a: number, b: number): number {
+  const slots = st.slots;
+  const size = slots.length;
+  if (size === 0) return -1;
+  const mask = size - 1;
+  const prev = st.previous;
+  let s = pairHash(a, b) & mask;
+  for (;;) {
+    const r = slots[s]!;
+    if (r === 0) return -1;
+    const i = r - 1;
+    if (prev.shapeA[i] === a && prev.shapeB[i] === b) return i;
+    s = (s + 1) & mask;
+  }
+}
+
+/**
+ * Makes `manifolds` the previous step's (swapping buffers) and hashes it; the new current buffer is
+ * empty (count 0) but keeps the rows of the step before until refilled (`lastCount` of them).
+ */
+export function rotateManifolds(st: ShapeCollisionState): void {
+  const cur = st.manifolds;
+  st.manifolds = st.previous;
+  st.lastCount = st.manifolds.count;
+  st.manifolds.count = 0;
+  st.previous = cur;
+  const n = cur.count;
+  let size = st.slots.length;
+  if (size < 2 * n || size === 0) {
+    size = 16;
+    while (size < 2 * n) size *= 2;
+    st.slots = new Int32Array(size);
+  } else st.slots.fill(0);
+  const mask = size - 1, slots = st.slots;
+  for (let i = 0; i < n; i++) {
+    let s = pairHash(cur.shapeA[i]!, cur.shapeB[i]!) & mask;
+    while (slots[s] !== 0) s = (s + 1) & mask;
+    slots[s] = i + 1;
+  }
+}
