@@ -45,14 +45,18 @@ export const plainLoopEngine: EngineAdapter = {
   },
 };
 
-/** One semi-implicit Euler step of n particles: v += g h, x += v h (gxh = g_x h, gyh = g_y h). */
+/**
+ * One semi-implicit Euler step of n particles with exact free fall, as bitphysics does it:
+ * v += g h, x += (v - g h / 2) h (gxh = g_x h, gyh = g_y h).
+ */
 function integrate(
   px: Float64Array, py: Float64Array, vx: Float64Array, vy: Float64Array, n: number, gxh: number, gyh: number, h: number,
 ): void {
+  const hx = 0.5 * gxh, hy = 0.5 * gyh;
   for (let i = 0; i < n; i++) {
     const nvx = vx[i]! + gxh;
     const nvy = vy[i]! + gyh;
     vx[i] = nvx; vy[i] = nvy;
-    px[i] = px[i]! + nvx * h; py[i] = py[i]! + nvy * h;
+    px[i] = px[i]! + (nvx - hx) * h; py[i] = py[i]! + (nvy - hy) * h;
   }
 }

@@ -27,6 +27,21 @@ const HALF_3D: readonly number[] = (() => {
   return out;
 })();
 
+/**
+ * Largest cell coordinate, in cells either side of the origin (2^28). Cell coordinates are clamped to
+ * [-CELL_LIMIT, CELL_LIMIT]: bodies farther out than CELL_LIMIT cells (about 2.7e7 m with 0.1 m
+ * cells) share the outermost cells of the grid. Clamping keeps neighbouring cells neighbours (it is
+ * monotonic), so they are still collided correctly, only tested against more bodies; and it keeps
+ * every cell loop finite (a float cell index beyond 2^53 could not be incremented).
+ */
+export const CELL_LIMIT = 268_435_456;
+
+/** The cell coordinate of x (m) for cells of 1 / invCell metres, clamped to +-CELL_LIMIT (NaN gives 0). */
+function cellOf(x: number, invCell: number): number {
+  const c = Math.floor(x * invCell);
+  return c > CELL_LIMIT ? CELL_LIMIT : c < -CELL_LIMIT ? -CELL_LIMIT : c === c ? c : 0;
+}
+
 function hashCell(cx: number, cy: number, cz: number): number {
   return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663) ^ Math.imul(cz, 83492791)) >>> 0;
 }
@@ -75,7 +90,7 @@ function addBallPair(world: PhysicsWorld, cs: CollisionState, e: number, f: numb
 
 /**
  * Wakes a sleeping body met by an awake one during the broadphase: it becomes dynamic for this step,
- * with the velocity and position the skipped integration would have given it (v = g h, x += g h^2),
+ * with the velocity and position the skipped integration would have given it (v = g h, x += g h^2 / 2),
  * and is queued so its Sleeping tag is removed after the pass.
  */
 function wakeForContact(world: PhysicsWorld, cs: CollisionState, e: number): void {
@@ -85,7 +100,8 @@ function wakeForContact(world: PhysicsWorld, cs: CollisionState, e: number): voi
   const g = world.gravity, h = world.h;
   c.Velocity.x[e] = g[0]! * h; c.Velocity.y[e] = g[1]! * h; c.Velocity.z[e] = g[2]! * h;
   c.PreviousPosition.x[e] = c.Position.x[e]!; c.PreviousPosition.y[e] = c.Position.y[e]!; c.PreviousPosition.z[e] = c.Position.z[e]!;
-  c.Position.x[e] = c.Position.x[e]! + g[0]! * h * h; c.Position.y[e] = c.Position.y[e]! + g[1]! * h * h; c.Position.z[e] = c.Position.z[e]! + g[2]! * h * h;
+  const f = 0.5 * h * h;
+  c.Position.x[e] = c.Position.x[e]! + g[0]! * f; c.Position.y[e] = c.Position.y[e]! + g[1]! * f; c.Position.z[e] = c.Position.z[e]! + g[2]! * f;
   if (cs.wakeCount >= cs.wakeList.length) { const l = new Int32Array(cs.wakeList.length * 2 + 16); l.set(cs.wakeList); cs.wakeList = l; }
   cs.wakeList[cs.wakeCount++] = e;
 }
@@ -216,7 +232,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
     if (radius[e]! + margin[e]! > limit) { bucketOf[i] = -1; over[overCount++] = e; continue; }
-    const cx = Math.floor(ox[e]! * invCell), cy = Math.floor(oy[e]! * invCell), cz = is3D ? Math.floor(oz[e]! * invCell) : 0;
+    const cx = cellOf(ox[e]!, invCell), cy = cellOf(oy[e]!, invCell), cz = is3D ? cellOf(oz[e]!, invCell) : 0;
     const b = hashCell(cx, cy, cz) & mask;
     bucketOf[i] = b;
     start[b + 1]!++;
@@ -231,9 +247,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const e = balls[i]!;
     const p = start[b]!++;
     sorted[p] = e;
-    cellX[p] = Math.floor(ox[e]! * invCell);
-    cellY[p] = Math.floor(oy[e]! * invCell);
-    cellZ[p] = is3D ? Math.floor(oz[e]! * invCell) : 0;
+    cellX[p] = cellOf(ox[e]!, invCell);
+    cellY[p] = cellOf(oy[e]!, invCell);
+    cellZ[p] = is3D ? cellOf(oz[e]!, invCell) : 0;
   }
   for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
@@ -337,7 +353,8 @@ export function broadphaseSystem(world: PhysicsWorld): void {
 /**
  * Writes into `cs.grid.candidates` every grid body whose cell overlaps the box [lo, hi] widened by
  * half a cell (so bodies whose reach crosses into the box are included) and returns their count;
- * scans every grid body instead when the box covers more cells than there are bodies.
+ * scans every grid body instead when the box covers more cells than there are bodies. Cell ranges are
+ * clamped like the grid's cells (see CELL_LIMIT), so the loops are finite at any coordinate.
  */
 function queryBox(
   world: PhysicsWorld, cs: CollisionState,
@@ -348,9 +365,9 @@ function queryBox(
   const inv = 1 / g.cellSize;
   const half = 0.5 * g.cellSize;
   const is3D = world.dimensions === 3;
-  const cx0 = Math.floor((x0 - half) * inv), cx1 = Math.floor((x1 + half) * inv);
-  const cy0 = Math.floor((y0 - half) * inv), cy1 = Math.floor((y1 + half) * inv);
-  const cz0 = is3D ? Math.floor((z0 - half) * inv) : 0, cz1 = is3D ? Math.floor((z1 + half) * inv) : 0;
+  const cx0 = cellOf(x0 - half, inv), cx1 = cellOf(x1 + half, inv);
+  const cy0 = cellOf(y0 - half, inv), cy1 = cellOf(y1 + half, inv);
+  const cz0 = is3D ? cellOf(z0 - half, inv) : 0, cz1 = is3D ? cellOf(z1 + half, inv) : 0;
   const cells = (cx1 - cx0 + 1) * (cy1 - cy0 + 1) * (cz1 - cz0 + 1);
   const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, start = g.bucketStart;
   const out = g.candidates;

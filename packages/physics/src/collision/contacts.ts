@@ -61,8 +61,13 @@ export interface ContactBuffer {
   normalImpulse: Float64Array;
   /** Largest normal impulse applied in any substep this step, N s (restitution applies only if > 0). */
   maxNormalImpulse: Float64Array;
-  /** Normal impulse delivered over the whole step (sum over substeps), N s: the compression impulse. */
+  /** Normal impulse delivered over the soft substeps (sum over substeps), N s: the compression impulse. */
   totalNormalImpulse: Float64Array;
+  /**
+   * Normal impulse the contact delivered over the whole step, N s (>= 0): impact, soft substeps and
+   * restitution together. Body B received +impulse n, body A -impulse n.
+   */
+  impulse: Float64Array;
   /**
    * Normal relative speed at impact, m/s (negative: approaching): the start-of-step speed plus what
    * gravity adds across the speculative gap, so a bounce neither loses nor gains that energy.
@@ -83,7 +88,7 @@ export interface ContactBuffer {
 
 const FLOAT_FIELDS = [
   'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'restitution', 'friction', 'frictionBound', 'normalMass',
-  'tangentMass', 'normalImpulse', 'maxNormalImpulse', 'totalNormalImpulse', 'impactVelocity', 'tangentImpulse1', 'tangentImpulse2',
+  'tangentMass', 'normalImpulse', 'maxNormalImpulse', 'totalNormalImpulse', 'impulse', 'impactVelocity', 'tangentImpulse1', 'tangentImpulse2',
   't1x', 't1y', 't1z', 'relativeVelocity',
 ] as const;
 const INT_FIELDS = ['a', 'b', 'ia', 'ib', 'feature'] as const;
@@ -100,7 +105,7 @@ export function createContactBuffer(capacity = 1024): ContactBuffer {
     a: new Int32Array(capacity), b: new Int32Array(capacity), ia: new Int32Array(capacity), ib: new Int32Array(capacity),
     feature: new Int32Array(capacity),
     nx: f(), ny: f(), nz: f(), separation: f(), ra: f(), rb: f(), restitution: f(), friction: f(),
-    frictionBound: f(), normalMass: f(), tangentMass: f(), rigidPartner: new Uint8Array(capacity), normalImpulse: f(), maxNormalImpulse: f(), totalNormalImpulse: f(), impactVelocity: f(),
+    frictionBound: f(), normalMass: f(), tangentMass: f(), rigidPartner: new Uint8Array(capacity), normalImpulse: f(), maxNormalImpulse: f(), totalNormalImpulse: f(), impulse: f(), impactVelocity: f(),
     tangentImpulse1: f(), tangentImpulse2: f(), t1x: f(), t1y: f(), t1z: f(),
     relativeVelocity: f(), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
   };

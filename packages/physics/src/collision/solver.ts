@@ -9,23 +9,37 @@ import {
   warmStartManifolds,
 } from './manifold-solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
+import { applyImpacts } from './impacts.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
- * v3.0 solver.c and contact_solver.c), fitted to a pipeline where the integrate stage has already run:
+ * v3.0 solver.c and contact_solver.c) with an impact stage before it, fitted to a pipeline where the
+ * integrate stage has already run. Its named stages, in order (other solver rows, such as joints, add
+ * their calls next to the contacts' in the stages marked *):
  *
- * 1. gather the moving bodies that have contacts into a packed solver state (one row per body, kept
- *    apart from the components: Box2D's b2BodyState) and rewind this step's gravity from their
- *    velocity (the integrate stage added g dt; the substeps add it back in pieces);
- * 2. prepare each contact: combined material, effective masses, tangent basis, the normal relative
- *    velocity at the start of the step (for restitution), and last step's impulses (warm start);
- * 3. `solverSubsteps` times, with h_s = h / substeps:
- *    integrate gravity (v += g h_s); warm start; solve with soft bias (non-penetration, then Coulomb
- *    friction |lambda_t| <= mu lambda_n, mu_s while sticking); move the bodies (dx += v h_s); relax
- *    (solve again without bias, so push-out velocity does not survive as kinetic energy);
- * 4. restitution (see applyRestitution);
- * 5. write velocities and positions back to the components and store the impulses for the next
- *    step's warm start.
+ * 1. `gatherBodies`: the moving bodies that have contacts go into a packed solver state (one row per
+ *    body, kept apart from the components: Box2D's b2BodyState); this step's gravity is rewound from
+ *    their velocity (the integrate stage added g h; the substeps add it back in pieces);
+ * 2. `prepareContacts`*: combined material, effective masses, tangent basis, last step's impulses
+ *    (warm start);
+ * 3. `applyImpacts` (impacts.ts): every contact with restitution e > 0 that closes within the step
+ *    faster than its threshold gets an exact pairwise Newton impulse at its time of impact, in order
+ *    of impact, with the end position corrected for the time the body kept its old velocity;
+ * 4. `measureApproach`: the normal relative velocity left at the start of the step (for restitution);
+ * 5. `solverSubsteps` times, with h_s = h / substeps:
+ *    `integrateVelocities` (v += g h_s); `warmStart`*; `solve`* with soft bias (non-penetration, then
+ *    Coulomb friction |lambda_t| <= mu lambda_n, mu_s while sticking); `integratePositions`
+ *    (dx += v h_s); relax (`solve`* without bias, so push-out velocity does not survive as kinetic
+ *    energy). A row that applies an impulse to a body marks it (the `pushed` slot of its packed row);
+ * 6. `applyRestitution`: contacts the impact stage did not resolve (still approaching after its
+ *    passes, e.g. deep in a dense pile) bounce as a small LCP;
+ * 7. `finishBodies`: velocities and positions (with the impact corrections) back to the components;
+ *    a body no row pushed during the substeps was in free flight: its position gets -g h h_s / 2, which
+ *    makes the substeps' sum of v_k h_s the exact parabola v0 h + g h^2 / 2 (as the integrate stage's);
+ *    the impulses stored for the next step's warm start;
+ * 8. `containInBoundary`: a body the step's impulses sent through a wall of the boundary box that it
+ *    had no contact with (a fast ball knocked sideways by another) is put back on the wall with its
+ *    outward normal velocity reflected and scaled by the restitution, so nothing leaves the box.
  *
  * Separation is tracked linearly: s = s0 + (dx_B - dx_A) . n, with s0 measured where the bodies
  * were at the start of the step. s > 0 is a speculative gap the bodies may close this substep
@@ -45,6 +59,8 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   gatherBodies(world, buf);
   prepareContacts(world, buf);
   prepareManifolds(world);
+  applyImpacts(world, buf);
+  measureApproach(world, buf);
 
   const st = cs.settings;
   const substeps = st.solverSubsteps;
@@ -78,9 +94,12 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     // The accumulated impulse is what this substep delivered (warm start plus corrections).
     for (let i = 0, n = buf.count; i < n; i++) TOT[i] = TOT[i]! + LN[i]!;
   }
+  const IMP = buf.impulse;
+  for (let i = 0, n = buf.count; i < n; i++) IMP[i] = IMP[i]! + TOT[i]!;
   applyRestitution(world, buf);
   if (is2D) applyManifoldRestitution(world);
   finishBodies(world, buf);
+  containInBoundary(world);
   finishManifolds(world);
   finishJoints(world, hs);
   cs.contacts = storeWarmStart(cs.cache, buf);
@@ -169,17 +188,19 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const o = k * S, q = k * 6;
     const ii = invInertia[e]!;
     const dynamic = type[e] === BodyType.Dynamic;
-    // The integrator moved x by v h (plus anything of its own); keep that extra as the base.
-    ex[q] = px[e]! - vx[e]! * h; ex[q + 1] = py[e]! - vy[e]! * h; ex[q + 2] = pz[e]! - vz[e]! * h;
+    // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
+    // extra as the base. v = v0 + g h here, so the base is x - v h + g h^2 / 2 for dynamic bodies.
+    const gb = dynamic ? 0.5 * h : 0;
+    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
     ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     if (is2D) {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 ? wz[e]! : 0;
-      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii;
+      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = 0;
     } else {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
       sb[o + 3] = ii > 0 ? wx[e]! : 0; sb[o + 4] = ii > 0 ? wy[e]! : 0; sb[o + 5] = ii > 0 ? wz[e]! : 0;
-      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii;
+      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = 0;
     }
   }
 }
@@ -230,6 +251,7 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
   const c = world.components;
   const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType, sb = cs.bodyState, ex = cs.bodyExtra;
+  const imp = cs.bodyImpact;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
@@ -237,20 +259,24 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const q = c.Orientation;
   const is2D = world.dimensions === 2;
   const S = stride(world);
+  const g = world.gravity, fh = -0.5 * world.h * world.h / cs.settings.solverSubsteps;
+  const fx = g[0]! * fh, fy = g[1]! * fh, fz = g[2]! * fh;
   let check = 0;
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
     const o = k * S, r = k * 6;
+    const free = sb[o + S - 1] === 0 ? 1 : 0;
     if (is2D) {
       vx[e] = sb[o]!; vy[e] = sb[o + 1]!;
-      const x = ex[r]! + sb[o + 3]!, y = ex[r + 1]! + sb[o + 4]!;
+      const x = ex[r]! + sb[o + 3]! + imp[k * 4]! + free * fx, y = ex[r + 1]! + sb[o + 4]! + imp[k * 4 + 1]! + free * fy;
       px[e] = x; py[e] = y;
       check += x + y + sb[o]! + sb[o + 1]!;
       if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
     } else {
       vx[e] = sb[o]!; vy[e] = sb[o + 1]!; vz[e] = sb[o + 2]!;
-      const x = ex[r]! + sb[o + 6]!, y = ex[r + 1]! + sb[o + 7]!, z = ex[r + 2]! + sb[o + 8]!;
+      const x = ex[r]! + sb[o + 6]! + imp[k * 4]! + free * fx, y = ex[r + 1]! + sb[o + 7]! + imp[k * 4 + 1]! + free * fy;
+      const z = ex[r + 2]! + sb[o + 8]! + imp[k * 4 + 2]! + free * fz;
       px[e] = x; py[e] = y; pz[e] = z;
       check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
       if (sb[o + 10]! > 0) {
@@ -264,12 +290,41 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const IA = buf.ia, IB = buf.ib, S0 = buf.separation, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const dOff = is2D ? 3 : 6;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff;
-    let s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
-    if (!is2D) s += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
+    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff, qa = IA[i]! * 4, qb = IB[i]! * 4;
+    let s = S0[i]! + (sb[b]! - sb[a]! + imp[qb]! - imp[qa]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]! + imp[qb + 1]! - imp[qa + 1]!) * NY[i]!;
+    if (!is2D) s += (sb[b + 2]! - sb[a + 2]! + imp[qb + 2]! - imp[qa + 2]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   cs.stats.maxOverlap = -deepest;
+}
+
+/** Stage 8 of the solver (see contactSolverSystem): keeps the solver's dynamic bodies inside the boundary box. */
+function containInBoundary(world: PhysicsWorld): void {
+  const cs = world.collision;
+  const box = cs.boundary;
+  if (!box.enabled) return;
+  const c = world.components;
+  const P = c.Position, V = c.Velocity, radius = c.Ball.radius, eM = c.Material.restitution;
+  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
+  const dims = world.dimensions;
+  const pos = [P.x, P.y, P.z], vel = [V.x, V.y, V.z];
+  for (let k = 1; k < count; k++) {
+    const e = list[k]!;
+    if (type[e] !== BodyType.Dynamic) continue;
+    const r = radius[e]!;
+    for (let d = 0; d < dims; d++) {
+      const p = pos[d]!, v = vel[d]!;
+      const lo = box.min[d]! + r, hi = box.max[d]! - r;
+      const x = p[e]!;
+      if (x < lo && lo <= hi) {
+        p[e] = lo;
+        if (v[e]! < 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
+      } else if (x > hi && lo <= hi) {
+        p[e] = hi;
+        if (v[e]! > 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
+      }
+    }
+  }
 }
 
 function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
@@ -292,13 +347,10 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const RA = buf.ra, RB = buf.rb;
   const NM = buf.normalMass, TM = buf.tangentMass, RP = buf.rigidPartner;
   const E = buf.restitution, MU = buf.friction, FB = buf.frictionBound, RV = buf.relativeVelocity;
-  const IV = buf.impactVelocity, TOT = buf.totalNormalImpulse, S0 = buf.separation;
+  const TOT = buf.totalNormalImpulse, IMP = buf.impulse;
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, MAXN = buf.maxNormalImpulse;
   const SA = buf.stampA, SB = buf.stampB;
   const pN = prev.normalImpulse, p1 = prev.tangentImpulse1, p2 = prev.tangentImpulse2;
-  const type = cs.bodyType;
-  const g = world.gravity;
-  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
   const im = is2D ? 5 : 9, iI = is2D ? 6 : 10;
 
   for (let i = 0; i < n; i++) {
@@ -339,13 +391,13 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
     E[i] = e;
     MU[i] = mu;
 
-    // Relative velocity at the start of the step (gravity rewound): for restitution and stick/slip.
-    let dvx: number, dvy: number, dvz: number, vt: number;
+    // Tangential speed at the start of the step (gravity rewound): stick or slip.
+    let vt: number;
     if (is2D) {
-      dvx = sb[ob]! - sb[oa]!; dvy = sb[ob + 1]! - sb[oa + 1]!; dvz = 0;
+      const dvx = sb[ob]! - sb[oa]!, dvy = sb[ob + 1]! - sb[oa + 1]!;
       vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + 2]! * rb - sb[oa + 2]! * ra);
     } else {
-      dvx = sb[ob]! - sb[oa]!; dvy = sb[ob + 1]! - sb[oa + 1]!; dvz = sb[ob + 2]! - sb[oa + 2]!;
+      const dvx = sb[ob]! - sb[oa]!, dvy = sb[ob + 1]! - sb[oa + 1]!, dvz = sb[ob + 2]! - sb[oa + 2]!;
       // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
       const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!, sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!, sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
       const cx = dvx + sy * nz - sz * ny, cy = dvy + sz * nx - sx * nz, cz = dvz + sx * ny - sy * nx;
@@ -353,14 +405,10 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
       const u1 = cx * t1x + cy * t1y + cz * t1z, u2 = cx * t2x + cy * t2y + cz * t2z;
       vt = Math.sqrt(u1 * u1 + u2 * u2);
     }
-    const rv = dvx * nx + dvy * ny + dvz * nz;
-    RV[i] = rv;
-    // Speed at impact: v^2 = v0^2 - 2 a_n s across a gap s > 0 with relative normal acceleration a_n from gravity.
-    const gap = S0[i]!;
-    const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
-    const v2 = gap > 0 ? rv * rv - 2 * an * gap : rv * rv;
-    IV[i] = rv < 0 && v2 > 0 ? -Math.sqrt(v2) : rv;
+    // Predicted approach for the impact stage's ordering (measureApproach recomputes it after).
+    RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (is2D ? 0 : (sb[ob + 2]! - sb[oa + 2]!) * nz);
     TOT[i] = 0;
+    IMP[i] = 0;
     FB[i] = vt < stick ? Math.max(mus, mu) : mu;
 
     // Warm start from last step's impulses of the same pair.
@@ -378,6 +426,34 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   }
 }
 
+/**
+ * Normal relative velocity of each contact at the start of the step after the impact stage (gravity
+ * rewound), m/s, into `relativeVelocity`; and the speed at impact into `impactVelocity`:
+ * v^2 = v0^2 - 2 a_n s across a gap s > 0 with the relative normal acceleration a_n of gravity.
+ */
+function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
+  const cs = world.collision;
+  const sb = cs.bodyState, type = cs.bodyType;
+  const is2D = world.dimensions === 2;
+  const S = stride(world);
+  const g = world.gravity;
+  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
+  const RV = buf.relativeVelocity, IV = buf.impactVelocity, S0 = buf.separation;
+  for (let i = 0, n = buf.count; i < n; i++) {
+    const oa = IA[i]! * S, ob = IB[i]! * S;
+    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
+    let rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+    if (!is2D) rv += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    RV[i] = rv;
+    const a = A[i]!, b = B[i]!;
+    const gap = S0[i]!;
+    const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
+    const v2 = gap > 0 ? rv * rv - 2 * an * gap : rv * rv;
+    IV[i] = rv < 0 && v2 > 0 ? -Math.sqrt(v2) : rv;
+  }
+}
+
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
   const n = buf.count, sb = cs.bodyState;
@@ -387,6 +463,7 @@ function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
     const ln = LN[i]!, lt = LT[i]!;
     if (ln === 0 && lt === 0) continue;
     const a = IA[i]! * 8, b = IB[i]! * 8;
+    sb[a + 7] = 1; sb[b + 7] = 1;
     const nx = NX[i]!, ny = NY[i]!;
     const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
     const imA = sb[a + 5]!, imB = sb[b + 5]!;
@@ -407,6 +484,7 @@ function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
     const ln = LN[i]!, l1 = L1[i]!, l2 = L2[i]!;
     if (ln === 0 && l1 === 0 && l2 === 0) continue;
     const a = IA[i]! * 12, b = IB[i]! * 12;
+    sb[a + 11] = 1; sb[b + 11] = 1;
     const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!, t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     const Px = ln * nx + l1 * t1x + l2 * t2x, Py = ln * ny + l1 * t1y + l2 * t2y, Pz = ln * nz + l1 * t1z + l2 * t2z;
@@ -474,6 +552,7 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
 
     sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
     sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
+    if (newN !== 0 || newT !== 0) { sb[a + 7] = 1; sb[b + 7] = 1; }
   }
 }
 
@@ -539,6 +618,7 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
     }
     sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = vaz; sb[a + 3] = wax; sb[a + 4] = way; sb[a + 5] = waz;
     sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = vbz; sb[b + 3] = wbx; sb[b + 4] = wby; sb[b + 5] = wbz;
+    if (newN !== 0 || n1 !== 0 || n2 !== 0) { sb[a + 11] = 1; sb[b + 11] = 1; }
   }
 }
 
@@ -556,7 +636,7 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
  */
 function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
-  const threshold = cs.settings.restitutionThreshold;
+  const threshold = cs.settings.restitutionThreshold, elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const iterations = cs.settings.restitutionIterations;
   const n = buf.count, sb = cs.bodyState;
   const S = stride(world), is2D = S === 8, im = is2D ? 5 : 9;
@@ -572,7 +652,7 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
     const e = E[i]!;
     if (MAXN[i] === 0) { RV[i] = -1; continue; }
     MAXN[i] = 0;
-    if (e > 0 && RV[i]! < -threshold) {
+    if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
       const a = IA[i]! * S, b = IB[i]! * S;
       let vn = (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
@@ -598,6 +678,7 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       const dl = acc - old;
       if (dl === 0) continue;
       MAXN[i] = acc;
+      buf.impulse[i] = buf.impulse[i]! + dl;
       const ka = sb[a + im]! * dl, kb = sb[b + im]! * dl;
       sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
       sb[b] = sb[b]! + kb * nx; sb[b + 1] = sb[b + 1]! + kb * ny;

@@ -12,11 +12,31 @@ export interface CollisionSettings {
   solverIterations: number;
   /** Passes without bias per solver substep (remove the push-out velocity), integer >= 0. Default 1. */
   relaxIterations: number;
-  /** Approach speed below which contacts do not bounce, m/s. */
+  /**
+   * Approach speed below which contacts with restitution e < 1 do not bounce (e is treated as 0), m/s,
+   * >= 0. World option `restitutionThreshold`, default 0.5 m/s (Box2D uses the same idea with 1 m/s).
+   * The trade-off: a threshold lets a pile or a ball on the floor come to rest instead of bouncing
+   * ever smaller (each slow bounce would last less than a step); below it a bouncy contact is dead.
+   */
   restitutionThreshold: number;
+  /**
+   * The same threshold for perfectly elastic contacts (e >= 1), m/s, >= 0. Default 0: an e = 1 contact
+   * bounces at any speed, as whoever sets e = 1 expects (a gas, a Newton's cradle, a ball hitting a
+   * wall at 0.3 m/s). Set to `restitutionThreshold` when the world option is given.
+   */
+  elasticRestitutionThreshold: number;
+  /**
+   * Passes of the impact stage over the bouncing contacts (see impacts.ts), integer >= 1. Default 8.
+   * A chain of impacts in the order of their times needs one pass; more resolve impacts that come
+   * back around within one step (balls packed close together).
+   */
+  impactIterations: number;
   /** Sequential-impulse passes of the restitution solve at the end of a step, integer >= 1. Default 4. */
   restitutionIterations: number;
-  /** Stiffness of contact softness, Hz (capped at a quarter of the substep rate). Default 30 Hz. */
+  /**
+   * Stiffness of contact softness, Hz, > 0 (capped at a quarter of the substep rate, which is 60 Hz at
+   * the default dt 1/60 s and 4 solver substeps). Default 60 Hz (Box2D v3 uses 30 Hz).
+   */
   contactHertz: number;
   /** Damping ratio of contact softness, dimensionless. Default 10 (heavily overdamped: no bounce from push-out). */
   contactDampingRatio: number;
@@ -114,12 +134,22 @@ export interface CollisionState {
   solverStamp: number;
   /**
    * Packed solver state, one row per solver body (Box2D v3's b2BodyState, kept apart from the
-   * components users touch): 2D rows of 8 (vx, vy, w, dx, dy, 1/m, 1/I, pad), 3D rows of 12 (vx, vy,
-   * vz, wx, wy, wz, dx, dy, dz, 1/m, 1/I, pad); d is the displacement within the step, m.
+   * components users touch): 2D rows of 8 (vx, vy, w, dx, dy, 1/m, 1/I, pushed), 3D rows of 12 (vx, vy,
+   * vz, wx, wy, wz, dx, dy, dz, 1/m, 1/I, pushed); d is the displacement within the step, m; pushed is
+   * 1 once a solver row has applied an impulse to the body this step (0: free flight, see solver.ts).
    */
   bodyState: Float64Array;
   /** Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply (x, y, z), rad. */
   bodyExtra: Float64Array;
+  /**
+   * Per solver body, rows of 4 (impact stage, see impacts.ts): the end-position correction of this
+   * step's impacts (x, y, z), m (-dv t* summed over impacts), and the time of its latest impact in
+   * the step, s.
+   */
+  bodyImpact: Float64Array;
+  /** Impact stage scratch: the bouncing contacts in order of impact, and their sort keys (s). */
+  impactOrder: Int32Array;
+  impactKey: Float64Array;
   /** Broadphase grid scratch, see broadphase.ts. */
   readonly grid: GridScratch;
   /** Bodies woken during this step's broadphase (their Sleeping tags are removed after the pass). */
@@ -157,7 +187,7 @@ export interface GridScratch {
 /** Creates the collision state of a world with room for `capacity` entities. */
 export function createCollisionState(
   capacity: number,
-  options: { solverSubsteps: number; solverIterations: number; restitutionThreshold: number; sleep: boolean },
+  options: { solverSubsteps: number; solverIterations: number; restitutionThreshold?: number; sleep: boolean },
 ): CollisionState {
   const n = capacity + 1;
   return {
@@ -165,7 +195,9 @@ export function createCollisionState(
       solverSubsteps: options.solverSubsteps,
       solverIterations: options.solverIterations,
       relaxIterations: 1,
-      restitutionThreshold: options.restitutionThreshold,
+      restitutionThreshold: options.restitutionThreshold ?? 0.5,
+      elasticRestitutionThreshold: options.restitutionThreshold ?? 0,
+      impactIterations: 8,
       restitutionIterations: 4,
       contactHertz: 60,
       contactDampingRatio: 10,
@@ -198,6 +230,9 @@ export function createCollisionState(
     solverStamp: 0,
     bodyState: new Float64Array(12 * 256),
     bodyExtra: new Float64Array(6 * 256),
+    bodyImpact: new Float64Array(4 * 256),
+    impactOrder: new Int32Array(256),
+    impactKey: new Float64Array(256),
     grid: {
       cellSize: 1,
       tableSize: 0,

@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
-import { accelerationsAt, checkFinite, gather, getScratch, saveState, stageSlopes, type IntegratorScratch } from './state.js';
+import { accelerationsAt, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, type IntegratorScratch } from './state.js';
 import { rotateFrom } from '../math/quaternion.js';
 
 /** Newton iterations before implicit Euler gives up on a step. */
@@ -28,7 +28,8 @@ function work(world: PhysicsWorld, n: number): Work {
  * Implicit (backward) Euler: v(t+h) = v + a(x(t+h), v(t+h), t+h) h, x(t+h) = x + v(t+h) h, and the
  * same for angular velocity and orientation. First order, unconditionally stable on linear damped
  * systems: it stays bounded where explicit Euler blows up (stiff springs), at the price of
- * numerical damping. Source: Ramtal and Dobre ch. 14; Hairer and Wanner, Solving ODEs II, ch. IV.
+ * numerical damping. The world's constant gravity moves bodies along the exact parabola (the drift
+ * is corrected by -g h^2 / 2). Source: Ramtal and Dobre ch. 14; Hairer and Wanner, Solving ODEs II, ch. IV.
  *
  * The step is solved for the end velocities u of every moving body (and angular velocities) by
  * Newton's method on R(u) = u - v - h a(x + h u, u) = 0, started from the explicit Euler guess.
@@ -99,6 +100,8 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
     let residual = 0;
     for (let i = 0; i < n; i++) { const r = u[i]! - u0[i]! - h * A[i]!; R[i] = -r; residual = Math.max(residual, Math.abs(r)); }
     if (residual <= tol) {
+      // The drift used the end velocity; gravity's share of it is made exact (see shiftByGravity).
+      shiftByGravity(world, s, -0.5 * h * h);
       checkFinite(world, s);
       return true;
     }

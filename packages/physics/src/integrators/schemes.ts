@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import type { System } from '../pipeline/stages.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
 import {
-  accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, stageSlopes, sumGroups, writeTrial,
+  accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, sumGroups, writeTrial,
   type IntegratorScratch,
 } from './state.js';
 import { rotateFrom } from '../math/quaternion.js';
@@ -31,13 +31,15 @@ function end(world: PhysicsWorld, s: IntegratorScratch, h: number): void {
 
 /**
  * Explicit (forward) Euler: x(t+h) = x + v h, v(t+h) = v + a(x, v, t) h. First order; not
- * symplectic: orbits spiral outward and undamped oscillators gain energy every step.
- * Source: Ramtal and Dobre ch. 14.
+ * symplectic: orbits spiral outward and undamped oscillators gain energy every step. The world's
+ * constant gravity is integrated exactly (x gains g h^2 / 2 more, see `shiftByGravity`), so free
+ * flight follows the exact parabola. Source: Ramtal and Dobre ch. 14.
  */
 export function explicitEuler(world: PhysicsWorld, h: number): void {
   const s = begin(world);
   stageSlopes(world, s, world.time, false);
   writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
+  shiftByGravity(world, s, 0.5 * h * h);
   end(world, s, h);
 }
 

@@ -321,6 +321,22 @@ export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[]
   return [[S[0]!, S[1]!, S[2]!], [S[3]!, S[4]!, S[5]!], [S[6]!, S[7]!, S[8]!, S[9]!], [S[10]!, S[11]!, S[12]!]];
 }
 
+/**
+ * Adds k g to the position of every mover (k in s^2): the first-order schemes pass k = +h^2 / 2
+ * (explicit Euler, which drifts with the start velocity) or -h^2 / 2 (implicit Euler, which drifts
+ * with the end velocity), so the world's constant gravity moves every body along the exact parabola
+ * x += v h + g h^2 / 2 whatever the scheme does with the other forces.
+ */
+export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: number): void {
+  const g = world.gravity;
+  const dx = k * g[0]!, dy = k * g[1]!, dz = k * g[2]!;
+  if (dx === 0 && dy === 0 && dz === 0) return;
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const m = s.movers;
+  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; px[e] = px[e]! + dx; py[e] = py[e]! + dy; pz[e] = pz[e]! + dz; }
+}
+
 /** Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first. */
 export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
