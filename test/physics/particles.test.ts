@@ -171,7 +171,7 @@ describe('emitters', () => {
 
   test('bad input', () => {
     const world = createPhysicsWorld();
-    expect(() => addEmitter(world, { rate: -1 })).toThrow(/rate must be >= 0, got -1/);
+    expect(() => addEmitter(world, { rate: -1 })).toThrow(/addEmitter: rate must be in \[0, 1000000000\], got -1/);
     expect(() => addEmitter(world, { lifetime: [2, 1] })).toThrow(/lifetime must be \[min, max\] with max >= min/);
     expect(() => addEmitter(world, { lifetime: 0 })).toThrow(/lifetime\[0\] must be > 0, got 0/);
     expect(() => addEmitter(world, { spread: 4 })).toThrow(/spread must be in \[0, 3.14/);

@@ -1,7 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import {
-  addBody, addFluidRegion, createPhysicsWorld, INTEGRATOR_NAMES, setAngularDamping, setBuoyancy, setWind, step,
-  type IntegratorName, type PhysicsWorld,
+  addBody, addEmitter, addFluidRegion, addSystem, createPhysicsWorld, INTEGRATOR_NAMES, MAX_EMITTER_RATE, MAX_TIME_STEP,
+  NonFiniteStateError, setAngularDamping, setBuoyancy, setEmitterRate, setTimeStep, setWind, step, STAGES,
+  type IntegratorName, type PhysicsWorld, type StageName,
 } from '@bitphysics/physics';
 
 /** k h / m from 1e-6 to 1e6, one value a decade. */
@@ -135,5 +136,129 @@ describe('dissipative forces cannot reverse or amplify a velocity at any step si
       // Exact: v0 / (1 + k v0 t / m), t = i / 60.
       expect(world.components.Velocity.x[b]! / (121 / (1 + (121 * i) / 60)) - 1).toBeLessThan(1e-12);
     }
+  });
+});
+
+describe('a non-finite state stops the step at the end of the stage that wrote it, naming the entity and field', () => {
+  const values = [NaN, Infinity, -Infinity];
+  const motion: Record<2 | 3, string[]> = {
+    2: ['Position.x', 'Position.y', 'Velocity.x', 'Velocity.y', 'Angle.value', 'AngularVelocity.z'],
+    3: ['Position.x', 'Position.y', 'Position.z', 'Velocity.x', 'Velocity.y', 'Velocity.z', 'AngularVelocity.x',
+      'AngularVelocity.y', 'AngularVelocity.z', 'Orientation.x', 'Orientation.y', 'Orientation.z', 'Orientation.w'],
+  };
+  const forces: Record<2 | 3, string[]> = { 2: ['Force.x', 'Force.y', 'Torque.z'], 3: ['Force.x', 'Force.y', 'Force.z', 'Torque.x', 'Torque.y', 'Torque.z'] };
+  // Every stage that runs systems; clearForces only zeroes the accumulators.
+  const stages = STAGES.filter((s) => s !== 'clearForces');
+
+  function expectCaught(dimensions: 2 | 3, field: string, value: number, stage: StageName): void {
+    const world = createPhysicsWorld({ dimensions, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0] });
+    const b = addBody(world, { mass: 1, radius: 0.5, rotates: true, velocity: dimensions === 2 ? [1, 2] : [1, 2, 3] });
+    addBody(world, { mass: 1, radius: 0.5, position: dimensions === 2 ? [5, 0] : [5, 0, 0] });
+    const [component, key] = field.split('.') as [string, string];
+    const store = (world.components as unknown as Record<string, Record<string, Float64Array>>)[component]![key]!;
+    for (let i = 0; i < 3; i++) step(world);
+    addSystem(world, stage, () => { store[b] = value; });
+    let caught: unknown;
+    try { step(world); } catch (e) { caught = e; }
+    const where = `${dimensions}D ${field} = ${value} in stage ${stage}`;
+    expect(caught, where).toBeInstanceOf(NonFiniteStateError);
+    const err = caught as NonFiniteStateError;
+    expect(err.entity, where).toBe(b);
+    expect(err.field, where).toBe(field);
+    expect(err.stage, where).toBe(stage);
+    expect(err.message, where).toContain(field);
+  }
+
+  for (const dimensions of [2, 3] as const) {
+    for (const field of motion[dimensions]) {
+      test(`${dimensions}D ${field}: NaN, +Infinity and -Infinity written in any stage are caught at its end`, () => {
+        for (const value of values) for (const stage of stages) expectCaught(dimensions, field, value, stage);
+      });
+    }
+    for (const field of forces[dimensions]) {
+      test(`${dimensions}D ${field}: NaN, +Infinity and -Infinity from a force law are caught after the forces stage`, () => {
+        for (const value of values) expectCaught(dimensions, field, value, 'forces');
+      });
+    }
+  }
+
+  test('issue 15: a body flying off to an infinite position is caught (Position.x), not returned as Infinity', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    const b = addBody(world, { position: [1.7e308, 0], velocity: [1.7e308, 0], mass: 1 });
+    let caught: unknown;
+    for (let i = 0; i < 10 && caught === undefined; i++) { try { step(world); } catch (e) { caught = e; } }
+    expect(caught).toBeInstanceOf(NonFiniteStateError);
+    expect((caught as NonFiniteStateError).field).toBe('Position.x');
+    expect((caught as NonFiniteStateError).entity).toBe(b);
+    expect((caught as NonFiniteStateError).stage).toBe('integrate');
+  });
+
+  test('a finite state whose sum would overflow is not a false alarm', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    for (let i = 0; i < 4; i++) addBody(world, { position: [1e308, -1e308], velocity: [0, 0], mass: 1 });
+    for (let i = 0; i < 3; i++) step(world);
+    expect(world.components.Position.x[1]).toBe(1e308);
+  });
+});
+
+describe('emitters: spawns per step are capped, the excess counted as dropped; the largest rate and dt are enforced', () => {
+  test('issue 15: rate 1e308 and dt 1e308 are refused at the API with the function and parameter named', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    expect(() => addEmitter(world, { rate: 1e308 })).toThrow(/^addEmitter: rate must be in \[0, 1000000000\], got 1e\+308$/);
+    const em = addEmitter(world, { rate: MAX_EMITTER_RATE });
+    expect(() => setEmitterRate(world, em, 1e308)).toThrow(/^setEmitterRate: rate must be/);
+    expect(() => createPhysicsWorld({ dt: 1e308 })).toThrow(/^createPhysicsWorld: dt must be <= 1000000 s/);
+    expect(() => setTimeStep(world, 1e308)).toThrow(/^setTimeStep: dt must be <= 1000000 s/);
+    expect(() => setTimeStep(world, MAX_TIME_STEP)).not.toThrow();
+  });
+
+  test('issue 15: rate 6e8/s (1e7 a step) spawns at most the capacity a step and counts every other particle as dropped', () => {
+    for (const policy of ['drop-new', 'recycle-oldest'] as const) {
+      const capacity = 500;
+      const world = createPhysicsWorld({ gravity: [0, 0], capacity });
+      const em = addEmitter(world, { rate: 6e8, lifetime: [10, 10], policy });
+      const E = world.components.Emitter;
+      let before = 0;
+      for (let n = 1; n <= 5; n++) {
+        step(world);
+        const spawned = E.spawned[em]!;
+        // At most the capacity a step; every requested particle is either spawned or dropped (1e7 a step, exact).
+        expect(spawned - before).toBeLessThanOrEqual(capacity);
+        expect(spawned + E.dropped[em]!).toBe(1e7 * n);
+        expect(world.entityIndex.aliveCount).toBeLessThanOrEqual(capacity);
+        before = spawned;
+      }
+      // drop-new fills the world once (499 particles beside the emitter) and drops the rest;
+      // recycle-oldest replaces up to the capacity every step.
+      if (policy === 'drop-new') expect(E.spawned[em]).toBe(capacity - 1);
+      else expect(E.spawned[em]).toBeGreaterThan(capacity);
+    }
+  });
+
+  test('the cap is shared by every emitter of a world', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0], capacity: 300 });
+    const a = addEmitter(world, { rate: 1e8, lifetime: [0.01, 0.01], policy: 'recycle-oldest' });
+    const b = addEmitter(world, { rate: 1e8, lifetime: [0.01, 0.01], policy: 'recycle-oldest' });
+    const E = world.components.Emitter;
+    for (let n = 1; n <= 4; n++) {
+      const before = E.spawned[a]! + E.spawned[b]!;
+      step(world);
+      expect(E.spawned[a]! + E.spawned[b]! - before).toBeLessThanOrEqual(300);
+    }
+  });
+
+  test('rate or dt past the API limits written into the stores directly: the step still returns', () => {
+    const world = createPhysicsWorld({ gravity: [0, 0], capacity: 200 });
+    const em = addEmitter(world, { rate: 10, lifetime: [1, 1] });
+    world.components.Emitter.rate[em] = 1e308;
+    for (let i = 0; i < 3; i++) step(world);
+    expect(world.components.Emitter.spawned[em]).toBe(199);
+    expect(world.components.Emitter.dropped[em]).toBeGreaterThan(1e15);
+    world.components.Emitter.rate[em] = 10;
+    world.dt = 1e308;
+    // Particles already alive fly to an infinite position: the step stops with the error, or returns.
+    let caught: unknown;
+    try { step(world); } catch (e) { caught = e; }
+    expect(caught === undefined || caught instanceof NonFiniteStateError).toBe(true);
   });
 });

@@ -1,5 +1,5 @@
 import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from './world.js';
+import { assertTimeStep, type PhysicsWorld } from './world.js';
 import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { wakeIsland } from './collision/sleep.js';
 import { currentHandle, resolveEntity, resolveKind } from './handles.js';
@@ -523,11 +523,12 @@ export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): voi
 }
 
 /**
- * Changes the world's fixed step (s, finite and > 0) and optionally its substeps (integer in [1, 64]).
+ * Changes the world's fixed step (s, > 0 and at most MAX_TIME_STEP = 1e6) and optionally its
+ * substeps (integer in [1, 64]).
  * @throws TypeError | RangeError on bad values.
  */
 export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number): void {
-  assertPositive('setTimeStep', 'dt', dt);
+  assertTimeStep('setTimeStep', dt);
   if (substeps !== undefined) {
     if (!Number.isInteger(substeps) || substeps < 1 || substeps > 64) {
       throw new RangeError(`setTimeStep: substeps must be an integer in [1, 64], got ${describe(substeps)}`);

@@ -2,7 +2,7 @@
  * @bitphysics/physics: components, systems, the staged step, collisions, diagnostics and scenes.
  * Everything is SI (m, kg, s, rad, N), y up, angles counter-clockwise.
  */
-export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY } from './world.js';
+export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
 export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
 export type { Components, Vec3Store } from './components.js';
@@ -41,17 +41,6 @@ export { linearDragSystem, quadraticDragSystem } from './forces/drag.js';
 export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js';
 export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
 export { contactSolverSystem } from './collision/solver.js';
-export { shapeCollisionSystem } from './collision/shape-collision.js';
-export type { ManifoldBuffer, ContactEvents, EventList, ShapeCollisionState } from './collision/manifolds.js';
-export { collideShapes, collideHalfPlane, collideCircles, createManifold, segmentFractions } from './collision/manifold.js';
-export type { Manifold } from './collision/manifold.js';
-export { addShape, addBox, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api.js';
-export type { ShapeOptions, BoxOptions } from './shapes/api.js';
-export { ShapeKind, MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon } from './shapes/geometry.js';
-export type { ConvexGeometry } from './shapes/geometry.js';
-export { shapeMassProperties } from './shapes/mass.js';
-export type { MassProperties } from './shapes/mass.js';
-export type { ShapeStore } from './shapes/store.js';
 export { sleepSystem, wakeSystem, wakeBody, wakeAll, isSleeping } from './collision/sleep.js';
 export type { SleepState } from './collision/state.js';
 export { ContactKind } from './collision/contacts.js';
@@ -72,7 +61,7 @@ export {
 export { vortexSystem } from './forces/vortex.js';
 export {
   addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
-  EmitterShape, CapacityPolicy,
+  EmitterShape, CapacityPolicy, MAX_EMITTER_RATE, maxSpawnsPerStep,
 } from './particles/emitter.js';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
 export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';

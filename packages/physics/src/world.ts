@@ -13,6 +13,19 @@ import { createClothState, type ClothState } from './cloth/state.js';
 import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
+/**
+ * Largest fixed time step a world accepts, s: 1e6 (about 11.6 days, enough for orbits in SI units).
+ * Bounding it keeps every per-step quantity finite: emitter spawns rate x dt < 2^53 with
+ * MAX_EMITTER_RATE, lifetimes, drag rates.
+ */
+export const MAX_TIME_STEP = 1e6;
+
+/** Throws unless dt is a number in (0, MAX_TIME_STEP]; the message names `where`. @throws TypeError | RangeError */
+export function assertTimeStep(where: string, dt: unknown): asserts dt is number {
+  assertPositive(where, 'dt', dt);
+  if (dt > MAX_TIME_STEP) throw new RangeError(`${where}: dt must be <= ${MAX_TIME_STEP} s (MAX_TIME_STEP), got ${dt}`);
+}
+
 export interface PhysicsWorldOptions {
   /** 2 for a planar world (x, y), 3 for a spatial one (x, y, z). Default 2. */
   dimensions?: 2 | 3;
@@ -23,7 +36,7 @@ export interface PhysicsWorldOptions {
   capacity?: number;
   /** Uniform gravitational acceleration, m/s^2, an array of `dimensions` numbers. Default (0, -9.81[, 0]). */
   gravity?: ArrayLike<number>;
-  /** Fixed time step, s, finite and > 0. Default 1/60. */
+  /** Fixed time step, s, > 0 and at most MAX_TIME_STEP (1e6 s). Default 1/60. */
   dt?: number;
   /** Substeps a step: the force, integrate, collide and constraint stages run this many times with dt / substeps. Integer in [1, 64]. Default 1. */
   substeps?: number;
@@ -40,9 +53,7 @@ export interface PhysicsWorldOptions {
   solverIterations?: number;
   /**
    * Approach speed below which a contact does not bounce, m/s, >= 0 (restitution is treated as 0
-   * below it, so resting bodies do not jitter). Default 0.5 m/s for contacts with restitution < 1, and
-   * 0 for perfectly elastic ones (e = 1 bounces at any speed); given, it applies to both. Box2D uses
-   * the same idea with 1 m/s. See `CollisionSettings.restitutionThreshold` for the trade-off.
+   * below it, so resting bodies do not jitter). Default 0.5 m/s. Box2D uses the same idea with 1 m/s.
    */
   restitutionThreshold?: number;
   /**
@@ -151,7 +162,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     gravity[1] = -9.81;
   }
   const dt = options.dt ?? 1 / 60;
-  assertPositive(where, 'dt', dt);
+  assertTimeStep(where, dt);
   const substeps = options.substeps ?? 1;
   assertInteger(where, 'substeps', substeps, 1, 64);
   const integrator = options.integrator ?? 'semi-implicit-euler';
@@ -190,10 +201,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     rng: new Rng(seed),
     components,
     stages: createStages(),
-    // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
-    collision: createCollisionState(capacity, {
-      solverSubsteps, solverIterations, sleep, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
-    }),
+    collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold, sleep }),
     joints: createJointState(),
     cloth: createClothState(),
     timings,

@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { createSlot } from '../bodies.js';
 import { currentHandle, resolveKind } from '../handles.js';
 import { query } from '../query.js';
+import { NonFiniteStateError } from '../errors.js';
 import {
   assertBoolean, assertFinite, assertInRange, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions,
   assertPositive, assertVector, describe,
@@ -20,6 +21,13 @@ import {
  * spawn (counted in `Emitter.dropped`), 'recycle-oldest' removes the oldest particle first (a FIFO of
  * spawn order, stale entries skipped). No exception is thrown in the middle of a game, and a long run
  * with constant churn keeps the entity count and the heap flat.
+ *
+ * Spawns per step: at most `maxSpawnsPerStep(world)` (the world's capacity) over all emitters and
+ * death bursts together, since no more could be alive at the end of the step; the rest are counted
+ * in their emitter's `Emitter.dropped`. Once the world is full and a spawn is refused, the emitter's
+ * remaining spawns of that step are counted as dropped at once. So a step's spawning costs at most
+ * O(capacity) whatever rate x dt asks for (rates and steps are bounded at the API:
+ * `MAX_EMITTER_RATE`, and the world's largest dt).
  *
  * Everything random comes from the world's seeded generator, so a scene replays identically.
  */
@@ -52,7 +60,7 @@ export interface EmitterOptions {
   position?: ArrayLike<number>;
   /** A standalone emitter's velocity, m/s: it then moves as a kinematic body (no gravity). */
   velocity?: ArrayLike<number>;
-  /** Particles per second, >= 0. Default 0 (bursts only). */
+  /** Particles per second, in [0, MAX_EMITTER_RATE = 1e9]. Default 0 (bursts only). At most `maxSpawnsPerStep` a step are spawned; the rest count in `Emitter.dropped`. */
   rate?: number;
   /** Spawn shape. Default 'point'. */
   shape?: 'point' | 'disc' | 'ring' | 'box' | 'line';
@@ -104,12 +112,28 @@ export interface EmittedParticleOptions {
 /** A hook run for every particle that expires, before it is removed. */
 export type ParticleDeathHook = (world: PhysicsWorld, eid: number) => void;
 
+/**
+ * Largest emitter rate the API accepts, particles/s: 1e9. With the largest time step (1e6 s) rate x dt
+ * stays below 2^53, so the whole particles and the carried fraction of each step are exact.
+ */
+export const MAX_EMITTER_RATE = 1e9;
+
+/**
+ * Most particles one step spawns over all emitters and death bursts: the world's capacity (more could
+ * not all be alive at the end of the step). The excess is counted in `Emitter.dropped`.
+ */
+export function maxSpawnsPerStep(world: PhysicsWorld): number {
+  return world.capacity;
+}
+
 interface ParticleBook {
   /** FIFO of spawned particles (eid and spawn stamp), oldest at head; stale entries skipped. */
   ids: Int32Array; stamps: Uint32Array; head: number; count: number;
   hooks: ParticleDeathHook[];
   /** Scratch: expired particles this step, and bursts to spawn (x, y, z, vx, vy, vz, emitter, count, generation). */
   expired: Int32Array; bursts: Float64Array; burstCount: number;
+  /** Spawns left this step (`maxSpawnsPerStep`), and the step (`world.steps`) it belongs to. */
+  budget: number; budgetStep: number;
 }
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
@@ -121,6 +145,7 @@ function book(world: PhysicsWorld): ParticleBook {
     b = {
       ids: new Int32Array(n), stamps: new Uint32Array(n), head: 0, count: 0, hooks: [],
       expired: new Int32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
+      budget: maxSpawnsPerStep(world), budgetStep: world.steps,
     };
     books.set(world, b);
   }
@@ -235,15 +260,18 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
     }
   }
   draw(world, em);
+  const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
+  const vx = sample[3]! + bx, vy = sample[4]! + by, vz = sample[5]! + bz;
+  // x * 0 is NaN exactly when x is NaN or infinite: refuse the spawn before creating anything.
+  if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz);
   const e = createSlot(world, 'emitter');
   addComponent(world, e, c.Position);
   addComponent(world, e, c.Velocity);
   addComponent(world, e, c.Lifetime);
   addComponent(world, e, c.Particle);
-  const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
   c.Position.x[e] = px; c.Position.y[e] = py; c.Position.z[e] = pz;
   c.PreviousPosition.x[e] = px; c.PreviousPosition.y[e] = py; c.PreviousPosition.z[e] = pz;
-  c.Velocity.x[e] = sample[3]! + bx; c.Velocity.y[e] = sample[4]! + by; c.Velocity.z[e] = sample[5]! + bz;
+  c.Velocity.x[e] = vx; c.Velocity.y[e] = vy; c.Velocity.z[e] = vz;
   const L = c.Lifetime;
   L.age[e] = 0;
   L.duration[e] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
@@ -268,9 +296,42 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
   return e;
 }
 
+/**
+ * Throws the NonFiniteStateError of a particle emitter `em` would spawn at a non-finite position or
+ * velocity (an emitter placed or moving near the largest double), naming the emitter.
+ */
+function nonFiniteSpawn(world: PhysicsWorld, em: number, px: number, py: number, pz: number, vx: number, vy: number, vz: number): never {
+  const values: Array<[string, number]> = [['Position.x', px], ['Position.y', py], ['Position.z', pz], ['Velocity.x', vx], ['Velocity.y', vy], ['Velocity.z', vz]];
+  const [field, value] = values.find(([, v]) => !Number.isFinite(v))!;
+  const P = world.components.Position;
+  throw new NonFiniteStateError(currentHandle(world, em), field, value, 'spawn',
+    `It is emitter ${currentHandle(world, em)} at (${P.x[em]}, ${P.y[em]}, ${P.z[em]}) m, and a particle it would spawn there has that ${field}; nothing was spawned.`);
+}
+
+/** Takes up to `count` spawns from this step's budget (`maxSpawnsPerStep`); returns how many were granted. */
+function takeBudget(world: PhysicsWorld, b: ParticleBook, count: number): number {
+  if (b.budgetStep !== world.steps) { b.budgetStep = world.steps; b.budget = maxSpawnsPerStep(world); }
+  const n = count < b.budget ? count : b.budget;
+  b.budget -= n;
+  return n;
+}
+
+/**
+ * Spawns `count` particles of emitter `em` within this step's budget; the rest, and every spawn left
+ * once one is refused because the world is full, are counted in `Emitter.dropped` without a loop.
+ */
 function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: number, x: number, y: number, z: number, vx: number, vy: number, vz: number, generation: number): void {
-  const k = world.components.Emitter.inherit[em]!;
-  for (let i = 0; i < count; i++) spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation);
+  const E = world.components.Emitter;
+  const n = takeBudget(world, b, count);
+  if (n < count) E.dropped[em] = E.dropped[em]! + (count - n);
+  const k = E.inherit[em]!;
+  for (let i = 0; i < n; i++) {
+    if (spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation) === 0) {
+      // The world is full and the policy could not make room: the rest of this batch cannot fit either.
+      E.dropped[em] = E.dropped[em]! + (n - i - 1);
+      return;
+    }
+  }
 }
 
 /**
@@ -326,7 +387,12 @@ export function lifetimeSystem(world: PhysicsWorld): void {
 
 /**
  * Stage 1, second: every enabled emitter spawns rate x dt particles (the fraction carried to the
- * next step) plus any burst requested with `burst`.
+ * next step) plus any burst requested with `burst`, within the step's budget (`maxSpawnsPerStep`;
+ * the excess is counted in `Emitter.dropped`). A rate x dt of 2^53 or more (possible only by writing
+ * `Emitter.rate` directly past `MAX_EMITTER_RATE`) or not finite asks for 2^53 particles and carries
+ * nothing. Runs in O(spawned) time, at most O(capacity) a step.
+ * @throws NonFiniteStateError (stage 'spawn') if a particle would start at a non-finite position or
+ *   velocity; it names the emitter, and nothing is spawned for it.
  */
 export function emitterSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -342,9 +408,14 @@ export function emitterSystem(world: PhysicsWorld): void {
     E.pendingBurst[em] = 0;
     if (E.enabled[em] === 1 && E.rate[em]! > 0) {
       const carry = E.carry[em]! + E.rate[em]! * dt;
-      const whole = Math.floor(carry);
-      E.carry[em] = carry - whole;
-      n += whole;
+      if (carry < 9007199254740992) {
+        const whole = Math.floor(carry);
+        E.carry[em] = carry - whole;
+        n += whole;
+      } else {
+        E.carry[em] = 0;
+        n += 9007199254740992;
+      }
     }
     if (n === 0) continue;
     const moving = hasComponent(world, em, c.Velocity);
@@ -379,7 +450,7 @@ interface CheckedSettings {
 function checkSettings(world: PhysicsWorld, where: string, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): CheckedSettings {
   const d = world.dimensions;
   const out: CheckedSettings = {};
-  if (options.rate !== undefined) { assertNonNegative(where, 'rate', options.rate); out.rate = options.rate; }
+  if (options.rate !== undefined) { assertInRange(where, 'rate', options.rate, 0, MAX_EMITTER_RATE); out.rate = options.rate; }
   if (options.shape !== undefined) { assertOneOf(where, 'shape', options.shape, SHAPE_NAMES); out.shape = SHAPES[options.shape]; }
   if (options.size !== undefined) {
     if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); out.size = [options.size, options.size, options.size]; }
@@ -568,12 +639,12 @@ export function setEmitterEnabled(world: PhysicsWorld, em: number, enabled: bool
 }
 
 /**
- * Sets an emitter's rate, particles/s (finite, >= 0). @param em an emitter's handle.
+ * Sets an emitter's rate, particles/s, in [0, MAX_EMITTER_RATE = 1e9]. @param em an emitter's handle.
  * @throws RangeError on a bad rate, a removed entity or one that is not an emitter.
  */
 export function setEmitterRate(world: PhysicsWorld, em: number, rate: number): void {
   const slot = emitterSlot('setEmitterRate', world, em);
-  assertNonNegative('setEmitterRate', 'rate', rate);
+  assertInRange('setEmitterRate', 'rate', rate, 0, MAX_EMITTER_RATE);
   world.components.Emitter.rate[slot] = rate;
 }
 

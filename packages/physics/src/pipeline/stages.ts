@@ -17,9 +17,9 @@ import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
 import { integrateSystem } from '../integrators/integrate.js';
 import { broadphaseSystem } from '../collision/broadphase.js';
 import { narrowphaseSystem } from '../collision/narrowphase.js';
-import { shapeCollisionSystem } from '../collision/shape-collision.js';
 import { contactSolverSystem } from '../collision/solver.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
+import { trustFiniteOutput } from './finite.js';
 import { clothSystem } from '../cloth/solver.js';
 
 /** A system: a plain function of the world, run once per (sub)step in its stage. */
@@ -32,7 +32,7 @@ export type System = (world: PhysicsWorld) => void;
  * 3. `forces`: one system per force law, user forces too;
  * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states),
  *    then the exact decay of drag and damping too stiff to be forces this step (forces/dissipation.ts);
- * 5. `collide`: broadphase, narrowphase (balls; then shapes: shape-collision.ts), contact solver (impulses, restitution, friction, position correction);
+ * 5. `collide`: broadphase, narrowphase, contact solver (impulses, restitution, friction, position correction);
  * 6. `constraints`: position-based links (cloth);
  * 7. `finalize`: sleeping islands (once per step).
  * Stages 2 to 6 run once per substep.
@@ -62,10 +62,19 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
     ],
   },
   { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, burnFuelSystem, ballastFillSystem] },
-  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, contactSolverSystem] },
+  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
 ]);
+
+// Built-in systems that write no body state (force laws write forces, which `step` checks after the
+// forces stage; broadphase and narrowphase write contacts), or check what they write (spawned
+// particles, zeroed velocities of sleeping bodies): `step` does not check the motion state after a
+// stage made only of these (pipeline/finite.ts).
+trustFiniteOutput(
+  wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, sleepSystem,
+  ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
+);
 
 /** A fresh copy of the default systems of every stage. */
 export function createStages(): Record<StageName, System[]> {

@@ -2,16 +2,24 @@ import type { PhysicsWorld } from '../world.js';
 import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages.js';
 import { describe } from '../validate.js';
 import { query } from '../query.js';
+import { checkStageState, stageNeedsCheck } from './finite.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
 const clock = (globalThis as { performance?: { now(): number } }).performance;
 const now: () => number = typeof clock?.now === 'function' ? () => clock.now() : () => Date.now();
 
+/**
+ * Runs the systems of one stage, then checks the state it may have written (pipeline/finite.ts):
+ * a NaN or infinity stops the step here with a NonFiniteStateError naming the stage, the entity
+ * and the field.
+ */
 function runStage(world: PhysicsWorld, stage: StageName): void {
   const systems = world.stages[stage];
   if (systems.length === 0) return;
   const t0 = now();
   for (let i = 0; i < systems.length; i++) systems[i]!(world);
+  const state = stageNeedsCheck(stage, systems);
+  if (state || stage === 'forces') checkStageState(world, stage, state);
   world.timings[stage] += now() - t0;
 }
 
@@ -23,8 +31,11 @@ function runStage(world: PhysicsWorld, stage: StageName): void {
  *
  * @throws RangeError if more entities exist than the world's capacity (entities added with bitecs'
  *   own `addEntity` bypass the check of `createEntity`; this catches them before their data is lost).
- * @throws NonFiniteStateError (a RangeError) if a body's state became NaN or infinite; the message
- *   names the entity and field (see `integrateSystem`).
+ * @throws NonFiniteStateError (a RangeError) if a body's state became NaN or infinite: its position,
+ *   velocity, angle or orientation, angular velocity, or (after `forces`) force or torque. It is
+ *   thrown at the end of the stage that wrote the value, before any later stage runs; `entity` is the
+ *   body's handle, `field` e.g. 'Position.x', `stage` the stage (pipeline/finite.ts). The world is
+ *   left as that stage left it.
  */
 export function step(world: PhysicsWorld): void {
   if (world.entityIndex.maxId > world.capacity) {
