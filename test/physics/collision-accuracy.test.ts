@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, kineticEnergy, linearMomentum, setBoundary, step, stepMany } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, forEachContact, kineticEnergy, linearMomentum, setBoundary, step, stepMany } from '@bitphysics/physics';
 
 /**
  * Collisions against their analytic results: bounce heights, Newton's cradle, oblique elastic hits,
@@ -173,5 +173,29 @@ describe('collision accuracy', () => {
     const p1 = linearMomentum(world);
     expect(Math.hypot(p1[0]! - p0[0]!, p1[1]! - p0[1]!)).toBeLessThan(1e-12 * scale);
     expect(Math.abs(kineticEnergy(world) / k0 - 1)).toBeLessThan(0.01);
+  });
+});
+
+describe('contacts after a step', () => {
+  /**
+   * `forEachContact` lists the last step's contacts with entity ids, normal, point and impulse. A ball
+   * resting on a static ball under gravity: one contact, normal straight up from the static ball, the
+   * point at the bottom of the ball, and the impulse of one step of support, m g h, within 1 % (the
+   * soft contact's support equals the weight at rest).
+   */
+  test('forEachContact reports the resting contact with its ids, normal, point and impulse m g h', () => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 4, sleep: false });
+    const base = addBody(world, { position: [0, 0], radius: 0.5, static: true });
+    const ball = addBody(world, { position: [0, 1], radius: 0.5, mass: 2, restitution: 0, friction: 0 });
+    stepMany(world, 120);
+    const seen: { a: number; b: number; nx: number; ny: number; y: number; impulse: number }[] = [];
+    forEachContact(world, (c) => seen.push({ a: c.a, b: c.b, nx: c.nx, ny: c.ny, y: c.y, impulse: c.impulse }));
+    expect(seen.length).toBe(1);
+    const c = seen[0]!;
+    expect([c.a, c.b]).toEqual([base, ball]);
+    expect(Math.abs(c.nx)).toBeLessThan(1e-6);
+    expect(Math.abs(c.ny - 1)).toBeLessThan(1e-6);
+    expect(Math.abs(c.y - 0.5)).toBeLessThan(0.01);
+    expect(Math.abs(c.impulse / (2 * 9.81 * world.dt) - 1)).toBeLessThan(0.01);
   });
 });

@@ -43,7 +43,8 @@ export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js
 export { contactSolverSystem } from './collision/solver.js';
 export { sleepSystem, wakeSystem, wakeBody, wakeAll, isSleeping } from './collision/sleep.js';
 export type { SleepState } from './collision/state.js';
-export { ContactKind } from './collision/contacts.js';
+export { ContactKind, forEachContact } from './collision/contacts.js';
+export type { ContactView } from './collision/contacts.js';
 export type { ContactBuffer } from './collision/contacts.js';
 export type { CollisionState, CollisionSettings, Boundary } from './collision/state.js';
 export {

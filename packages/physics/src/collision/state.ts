@@ -107,7 +107,10 @@ export interface CollisionState {
   pairB: Int32Array;
   /** PairKind of each pair. */
   pairKind: Uint8Array;
-  /** Contacts of the current step. */
+  /**
+   * The contact buffer the collide stage fills during a step; empty between steps (its rows move to
+   * `cache.rows` at the end of the solve). Read a finished step's contacts with `forEachContact`.
+   */
   contacts: ContactBuffer;
   /** Impulses of the previous step's contacts, for warm starting. */
   readonly cache: WarmStartCache;
