@@ -4,6 +4,8 @@ import { rapier2dEngine } from './rapier2d.js';
 import { rapier3dEngine } from './rapier3d.js';
 import { matterEngine } from './matter.js';
 import { plainLoopEngine } from './plain-loop.js';
+import { planckEngine } from './planck.js';
+import { box2dWasmEngine } from './box2d-wasm.js';
 
 /** Our engine's name; it runs in every benchmark and is the numerator of every ratio. */
 export const OURS = 'bitphysics';
@@ -15,6 +17,8 @@ export const ENGINES: Readonly<Record<string, EngineAdapter>> = Object.freeze({
   [rapier3dEngine.name]: rapier3dEngine,
   [matterEngine.name]: matterEngine,
   [plainLoopEngine.name]: plainLoopEngine,
+  [planckEngine.name]: planckEngine,
+  [box2dWasmEngine.name]: box2dWasmEngine,
 });
 
 /** Names of the engines that can build `scene`, ours first. */

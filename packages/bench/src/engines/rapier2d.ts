@@ -2,6 +2,7 @@ import { setFlagsFromString } from 'node:v8';
 import { ballsInBoxLayout } from '@bitphysics/physics';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { boxWalls } from './box-walls.js';
+import { createRapierPyramid } from './rapier2d-pyramid.js';
 
 type Rapier = typeof import('@dimforge/rapier2d-compat').default;
 
@@ -57,9 +58,10 @@ export const rapier2dEngine: EngineAdapter = {
     await loadRapier2d();
   },
   supports(scene: string): boolean {
-    return scene === 'balls-in-box';
+    return scene === 'balls-in-box' || scene === 'pyramid';
   },
   async create(options: SceneRunOptions): Promise<EngineInstance> {
+    if (options.scene === 'pyramid') return createRapierPyramid(await loadRapier2d(), options);
     if (options.scene !== 'balls-in-box') throw new RangeError(`rapier2d: does not support scene "${options.scene}"`);
     const R = await loadRapier2d();
     const layout = ballsInBoxLayout({ count: options.count, seed: options.seed });

@@ -5,6 +5,7 @@ import { particlesBench } from './particles.js';
 import { spheresInBoxBench } from './spheres-in-box.js';
 import { galaxyBench } from './galaxy.js';
 import { fireworksBench } from './fireworks.js';
+import { pyramidBench } from './pyramid.js';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
@@ -13,6 +14,7 @@ const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
   [spheresInBoxBench.name]: spheresInBoxBench,
   [galaxyBench.name]: galaxyBench,
   [fireworksBench.name]: fireworksBench,
+  [pyramidBench.name]: pyramidBench,
 });
 
 /** A scene as the bench sees it: the physics package's definition plus the bench adapter. */

@@ -3,6 +3,7 @@ import { particles } from './particles.js';
 import { spheresInBox } from './spheres-in-box.js';
 import { galaxy } from './galaxy.js';
 import { fireworks } from './fireworks.js';
+import { pyramid } from './pyramid.js';
 import type { SceneDefinition } from './types.js';
 
 /** Every registered scene by name: the bench's `--list` and the gallery read this. */
@@ -12,6 +13,7 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [spheresInBox.name]: spheresInBox as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [galaxy.name]: galaxy as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [fireworks.name]: fireworks as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [pyramid.name]: pyramid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
 });
 
 export { ballsInBox, ballsInBoxLayout } from './balls-in-box.js';
@@ -25,6 +27,8 @@ export { galaxy } from './galaxy.js';
 export type { GalaxyOptions } from './galaxy.js';
 export { fireworks } from './fireworks.js';
 export type { FireworksOptions } from './fireworks.js';
+export { pyramid, pyramidLayout } from './pyramid.js';
+export type { PyramidHandles, PyramidLayout, PyramidOptions } from './pyramid.js';
 // The book's closing projects: exported builders, not in SCENES (the bench measures solar-system as a study).
 export {
   solarSystem, solarSystemErrors, solarSystemMass, ephemerisState, ephemerisHeliocentric,
