@@ -3,6 +3,7 @@ import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { BallLayer } from './balls.js';
 import type { Camera } from './camera.js';
+import { drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings } from './debug-scenery.js';
 import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */
@@ -25,12 +26,25 @@ export interface DebugOptions {
   maxContacts?: number;
   /** Outline walls: segment capsules and their end points, and the boundary box's faces. Default true. */
   walls?: boolean;
+  /** Draw springs as zigzags between their bodies (or anchor). Default true. */
+  springs?: boolean;
+  /** Draw joints: the line between their anchors and each body's lever to its anchor. Default true. */
+  joints?: boolean;
+  /** Draw planes (lines n . x = d across the view, hatched on the solid side). Default true. */
+  planes?: boolean;
+  /** Draw field regions: fluid regions, and glyph grids of the uniform electric and magnetic fields. Default true. */
+  fields?: boolean;
+  /** Draw emitters: a ring, their direction and the edges of their spread. Default true. */
+  emitters?: boolean;
 }
 
 /** Fully resolved debug options. */
 export type ResolvedDebugOptions = Required<DebugOptions>;
 
-const DEBUG_OPTIONS = ['velocities', 'velocityScale', 'maxArrows', 'contacts', 'normalLength', 'maxContacts', 'walls'] as const;
+const DEBUG_OPTIONS = [
+  'velocities', 'velocityScale', 'maxArrows', 'contacts', 'normalLength', 'maxContacts', 'walls', 'springs', 'joints', 'planes',
+  'fields', 'emitters',
+] as const;
 
 /** Checks debug options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
 export function resolveDebugOptions(where: string, options: DebugOptions = {}): ResolvedDebugOptions {
@@ -49,7 +63,17 @@ export function resolveDebugOptions(where: string, options: DebugOptions = {}): 
   assertInteger(where, 'debug.maxContacts', maxContacts, 0, 1_000_000);
   const walls = options.walls ?? true;
   assertBoolean(where, 'debug.walls', walls);
-  return { velocities, velocityScale, maxArrows, contacts, normalLength, maxContacts, walls };
+  const springs = options.springs ?? true;
+  assertBoolean(where, 'debug.springs', springs);
+  const joints = options.joints ?? true;
+  assertBoolean(where, 'debug.joints', joints);
+  const planes = options.planes ?? true;
+  assertBoolean(where, 'debug.planes', planes);
+  const fields = options.fields ?? true;
+  assertBoolean(where, 'debug.fields', fields);
+  const emitters = options.emitters ?? true;
+  assertBoolean(where, 'debug.emitters', emitters);
+  return { velocities, velocityScale, maxArrows, contacts, normalLength, maxContacts, walls, springs, joints, planes, fields, emitters };
 }
 
 const ARROW = 0x7cf2a0;
@@ -57,10 +81,26 @@ const CONTACT_ACTIVE = 0xff4d5e;
 const CONTACT_SPECULATIVE = 0x9aa0a6;
 const WALL_DEBUG = 0xffd166;
 
+/** How many of each kind of entity the debug layer drew in the last frame. */
+export interface DebugCounts {
+  /** Spring entities drawn. */
+  springs: number;
+  /** Joint entities drawn. */
+  joints: number;
+  /** Plane entities drawn. */
+  planes: number;
+  /** Fluid regions plus electric and magnetic field entities. */
+  fields: number;
+  /** Emitter entities drawn. */
+  emitters: number;
+}
+
 /**
- * The debug overlay: velocity arrows, contact points and normals of the last step, wall outlines.
- * One pixi Graphics redrawn each frame (pixi allocates its own path objects while drawing; bounded
- * by maxArrows and maxContacts). Reads component stores and the contact cache; computes nothing physical.
+ * The debug overlay: velocity arrows, contact points and normals of the last step, wall outlines,
+ * and the scenery that is not a ball (springs, joints, planes, field regions, emitters: see
+ * debug-scenery.ts, the place to add a new kind). One pixi Graphics redrawn each frame (pixi
+ * allocates its own path objects while drawing; bounded by maxArrows and maxContacts). Reads
+ * component stores and the contact cache; computes nothing physical.
  */
 export class DebugLayer {
   /** The Graphics the overlay is drawn into; sits above the balls. */
@@ -71,6 +111,8 @@ export class DebugLayer {
   contactsDrawn = 0;
   /** Arrows drawn in the last frame. */
   arrowsDrawn = 0;
+  /** Springs, joints, planes, field regions and emitters drawn in the last frame. */
+  readonly drawn: DebugCounts = { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 };
 
   /** @param options resolved options (see `resolveDebugOptions`). */
   constructor(options: ResolvedDebugOptions) {
@@ -89,6 +131,12 @@ export class DebugLayer {
     this.contactsDrawn = 0;
 
     if (o.walls) this.drawWalls(world, camera);
+    const d = this.drawn;
+    d.fields = o.fields ? drawFields(g, world, camera) : 0;
+    d.planes = o.planes ? drawPlanes(g, world, camera) : 0;
+    d.springs = o.springs ? drawSprings(g, world, camera, alpha) : 0;
+    d.joints = o.joints ? drawJoints(g, world, camera, alpha) : 0;
+    d.emitters = o.emitters ? drawEmitters(g, world, camera, alpha) : 0;
 
     if (o.velocities && o.maxArrows > 0) {
       const vx = c.Velocity.x, vy = c.Velocity.y;

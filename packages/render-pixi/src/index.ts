@@ -27,5 +27,6 @@ export type {
   ParticleLayerOptions, ParticleTrailOptions, ParticleLayerStats, ResolvedParticleLayerOptions, ResolvedParticleTrailOptions,
 } from './particles.js';
 export { resolveDebugOptions } from './debug.js';
-export type { DebugOptions } from './debug.js';
+export type { DebugOptions, DebugCounts } from './debug.js';
+export { SCENERY_COLORS, drawSprings, drawJoints, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
 export * from './points.js';

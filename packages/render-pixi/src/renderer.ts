@@ -4,7 +4,7 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { BallLayer, type BallMode } from './balls.js';
 import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera.js';
 import { assertLiveEntity, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugOptions } from './debug.js';
+import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugOptions } from './debug.js';
 import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles.js';
 import { createBallTexture } from './textures.js';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
@@ -86,6 +86,8 @@ export interface RendererStats {
   contacts: number;
   /** Velocity arrows drawn by the debug layer (0 when it is off). */
   arrows: number;
+  /** Springs, joints, planes, field regions and emitters drawn by the debug layer (all 0 when it is off). */
+  scenery: DebugCounts;
   /** Frames rendered since creation. */
   frames: number;
 }
@@ -115,7 +117,8 @@ function checkWorld(where: string, world: unknown): asserts world is PhysicsWorl
  * - Static segments and the boundary box are drawn as walls.
  * - Metres become CSS pixels through `camera` (scale `pixelsPerMeter`, y flipped); nothing else in
  *   the framework converts units.
- * - Optional trails and a debug overlay (velocities, contacts, wall outlines).
+ * - Optional trails and a debug overlay (velocities, contacts, wall outlines, springs, joints, planes,
+ *   field regions, emitters).
  *
  * Layers, bottom to top: walls, trails, particles (optional), balls, debug. The hot path (`render`) allocates nothing per
  * entity; trails and debug rebuild pixi Graphics, whose cost is bounded by their options.
@@ -130,7 +133,9 @@ export class WorldRenderer {
   /** The camera: metres to pixels, y flipped, fitted view. */
   readonly camera: Camera;
   /** Statistics of the last frame (updated in place). */
-  readonly stats: RendererStats = { balls: 0, mode: 'sprites', segments: 0, contacts: 0, arrows: 0, frames: 0 };
+  readonly stats: RendererStats = {
+    balls: 0, mode: 'sprites', segments: 0, contacts: 0, arrows: 0, scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
+  };
   private worldRef: PhysicsWorld;
   private readonly texture: Texture;
   private readonly balls: BallLayer;
@@ -284,6 +289,9 @@ export class WorldRenderer {
     s.segments = this.walls.segments;
     s.contacts = debug ? debug.contactsDrawn : 0;
     s.arrows = debug ? debug.arrowsDrawn : 0;
+    const sc = s.scenery, dd = debug?.drawn;
+    sc.springs = dd ? dd.springs : 0; sc.joints = dd ? dd.joints : 0; sc.planes = dd ? dd.planes : 0;
+    sc.fields = dd ? dd.fields : 0; sc.emitters = dd ? dd.emitters : 0;
     s.frames++;
   }
 

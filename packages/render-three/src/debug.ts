@@ -2,6 +2,7 @@ import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMate
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { InstanceBook } from './book.js';
 import { hexToLinear, rotateInto } from './math.js';
+import { SCENERY_PALETTE, drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings, type SegmentSink } from './debug-scenery.js';
 import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */
@@ -30,6 +31,18 @@ export interface DebugOptions {
   maxContacts?: number;
   /** Size of a contact dot, CSS px, > 0. Default 5. */
   pointSize?: number;
+  /** Draw springs as zigzags between their bodies (or anchor). Default true. */
+  springs?: boolean;
+  /** Draw joints: the line between their anchors and each body's lever to its anchor. Default true. */
+  joints?: boolean;
+  /** Draw each plane's normal (the environment draws its surface). Default true. */
+  planes?: boolean;
+  /** Draw field regions: fluid surfaces, and lattices of arrows along the uniform electric and magnetic fields. Default true. */
+  fields?: boolean;
+  /** Draw emitters: a cross and their direction. Default true. */
+  emitters?: boolean;
+  /** Most line segments the springs, joints, planes, fields and emitters may use together, integer in [0, 1_000_000]. Default 20 000. */
+  maxScenery?: number;
 }
 
 /** Fully resolved debug options. */
@@ -37,7 +50,7 @@ export type ResolvedDebugOptions = Required<DebugOptions>;
 
 const DEBUG_OPTIONS = [
   'axes', 'velocities', 'velocityScale', 'angularVelocities', 'angularVelocityScale', 'maxBodies', 'contacts',
-  'normalLength', 'maxContacts', 'pointSize',
+  'normalLength', 'maxContacts', 'pointSize', 'springs', 'joints', 'planes', 'fields', 'emitters', 'maxScenery',
 ] as const;
 
 /** Checks debug options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
@@ -63,7 +76,22 @@ export function resolveDebugOptions(where: string, options: DebugOptions = {}): 
   assertInteger(where, 'debug.maxContacts', maxContacts, 0, 1_000_000);
   const pointSize = options.pointSize ?? 5;
   assertPositive(where, 'debug.pointSize', pointSize);
-  return { axes, velocities, velocityScale, angularVelocities, angularVelocityScale, maxBodies, contacts, normalLength, maxContacts, pointSize };
+  const springs = options.springs ?? true;
+  assertBoolean(where, 'debug.springs', springs);
+  const joints = options.joints ?? true;
+  assertBoolean(where, 'debug.joints', joints);
+  const planes = options.planes ?? true;
+  assertBoolean(where, 'debug.planes', planes);
+  const fields = options.fields ?? true;
+  assertBoolean(where, 'debug.fields', fields);
+  const emitters = options.emitters ?? true;
+  assertBoolean(where, 'debug.emitters', emitters);
+  const maxScenery = options.maxScenery ?? 20_000;
+  assertInteger(where, 'debug.maxScenery', maxScenery, 0, 1_000_000);
+  return {
+    axes, velocities, velocityScale, angularVelocities, angularVelocityScale, maxBodies, contacts, normalLength, maxContacts, pointSize,
+    springs, joints, planes, fields, emitters, maxScenery,
+  };
 }
 
 const AXIS_X = 0xff5a5f, AXIS_Y = 0x5fd068, AXIS_Z = 0x4d8dff;
@@ -86,9 +114,27 @@ export interface DebugFrame {
   scale: number;
 }
 
+/** How many of each kind of entity the debug layer drew in the last frame. */
+export interface DebugCounts {
+  /** Spring entities drawn. */
+  springs: number;
+  /** Joint entities drawn. */
+  joints: number;
+  /** Plane entities drawn. */
+  planes: number;
+  /** Fluid regions plus electric and magnetic field entities. */
+  fields: number;
+  /** Emitter entities drawn. */
+  emitters: number;
+}
+
+/** Box the field lattices fill when the world has no boundary, m: [minX, minY, minZ, maxX, maxY, maxZ]. */
+const DEFAULT_FIELD_EXTENT = Object.freeze([-5, 0, -5, 5, 5, 5]);
+
 /**
  * The debug layer: body axes, velocity and angular-velocity arrows, contact points and normals of
- * the last step. One `LineSegments` (per-vertex colours) and one `Points` object, with buffers sized
+ * the last step, and the scenery that is not a body (springs, joints, plane normals, field regions,
+ * emitters: see debug-scenery.ts, the place to add a new kind). One `LineSegments` (per-vertex colours) and one `Points` object, with buffers sized
  * once from the options' maxima: a frame rewrites a prefix of them and allocates nothing. Reads
  * component stores and the contact cache; computes nothing physical.
  */
@@ -103,6 +149,22 @@ export class DebugLayer {
   arrowsDrawn = 0;
   /** Bodies whose axes were drawn in the last frame. */
   axesDrawn = 0;
+  /** Springs, joints, planes, field regions and emitters drawn in the last frame. */
+  readonly drawn: DebugCounts = { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 };
+  /** Where the renderer drew the bodies this frame, for the scenery. */
+  private readonly at = {
+    drawn: new Float64Array(0) as Float64Array<ArrayBufferLike>,
+    book: null as InstanceBook | null,
+    shown(eid: number): boolean { return this.book !== null && this.book.has(eid); },
+  };
+  /** Scene units per metre of the frame being drawn (for `sink`). */
+  private scale = 1;
+  /** The segment and arrow appenders handed to the scenery drawers, in metres. */
+  private readonly sink: SegmentSink = {
+    segment: (ax, ay, az, bx, by, bz, color) => this.segment(ax, ay, az, bx, by, bz, color, this.scale),
+    arrow: (x, y, z, dx, dy, dz, color) => this.arrow(x, y, z, dx, dy, dz, color, this.scale),
+  };
+  private readonly extent = new Float64Array(6);
   private readonly lineGeometry = new BufferGeometry();
   private readonly pointGeometry = new BufferGeometry();
   private readonly lineMaterial = new LineBasicMaterial({ vertexColors: true, depthTest: false, transparent: true });
@@ -115,7 +177,7 @@ export class DebugLayer {
   private readonly lineColAttr: BufferAttribute;
   private readonly pointPosAttr: BufferAttribute;
   private readonly pointColAttr: BufferAttribute;
-  private readonly rgb = new Float64Array(3 * 7);
+  private readonly rgb = new Float64Array(3 * (7 + SCENERY_PALETTE.length));
   private readonly v = new Float64Array(3);
   private segments = 0;
 
@@ -123,7 +185,8 @@ export class DebugLayer {
   constructor(options: ResolvedDebugOptions) {
     this.options = options;
     const arrowsPerBody = (options.velocities ? 1 : 0) + (options.angularVelocities ? 1 : 0);
-    const maxSegments = options.maxBodies * ((options.axes ? 3 : 0) + arrowsPerBody * ARROW_SEGMENTS) + (options.contacts ? options.maxContacts : 0);
+    const scenery = options.springs || options.joints || options.planes || options.fields || options.emitters ? options.maxScenery : 0;
+    const maxSegments = options.maxBodies * ((options.axes ? 3 : 0) + arrowsPerBody * ARROW_SEGMENTS) + (options.contacts ? options.maxContacts : 0) + scenery;
     this.linePos = new Float32Array(Math.max(1, maxSegments) * 6);
     this.lineCol = new Float32Array(Math.max(1, maxSegments) * 6);
     const maxPoints = options.contacts ? Math.max(1, options.maxContacts) : 1;
@@ -148,7 +211,7 @@ export class DebugLayer {
     points.renderOrder = 11;
     this.object.name = 'debug';
     this.object.add(lines, points);
-    const colors = [AXIS_X, AXIS_Y, AXIS_Z, ARROW, SPIN, CONTACT_ACTIVE, CONTACT_SPECULATIVE];
+    const colors = [AXIS_X, AXIS_Y, AXIS_Z, ARROW, SPIN, CONTACT_ACTIVE, CONTACT_SPECULATIVE, ...SCENERY_PALETTE];
     for (let i = 0; i < colors.length; i++) hexToLinear(colors[i]!, this.rgb, 3 * i);
   }
 
@@ -217,6 +280,8 @@ export class DebugLayer {
       this.contactsDrawn = n;
     }
 
+    this.drawScenery(world, frame);
+
     const verts = this.segments * 2;
     this.lineGeometry.setDrawRange(0, verts);
     if (verts > 0) {
@@ -228,6 +293,30 @@ export class DebugLayer {
       this.pointPosAttr.clearUpdateRanges(); this.pointPosAttr.addUpdateRange(0, points * 3); this.pointPosAttr.needsUpdate = true;
       this.pointColAttr.clearUpdateRanges(); this.pointColAttr.addUpdateRange(0, points * 3); this.pointColAttr.needsUpdate = true;
     }
+  }
+
+  /** Appends the springs, joints, plane normals, field regions and emitters (debug-scenery.ts). */
+  private drawScenery(world: PhysicsWorld, frame: DebugFrame): void {
+    const o = this.options, d = this.drawn, at = this.at;
+    at.drawn = frame.drawnPosition;
+    at.book = frame.book;
+    this.scale = frame.scale;
+    d.springs = o.springs ? drawSprings(world, at, this.sink) : 0;
+    d.joints = o.joints ? drawJoints(world, at, this.sink) : 0;
+    d.planes = o.planes ? drawPlanes(world, this.sink) : 0;
+    if (o.fields) {
+      const box = world.collision.boundary, ext = this.extent;
+      for (let i = 0; i < 3; i++) {
+        ext[i] = box.enabled ? box.min[i] ?? 0 : DEFAULT_FIELD_EXTENT[i]!;
+        ext[i + 3] = box.enabled ? box.max[i] ?? 0 : DEFAULT_FIELD_EXTENT[i + 3]!;
+      }
+      if (!(ext[2]! < ext[5]!)) { ext[2] = -0.5; ext[5] = 0.5; } // a 2D world's box has no depth
+      const smallest = Math.min(ext[3]! - ext[0]!, ext[4]! - ext[1]!, ext[5]! - ext[2]!);
+      d.fields = drawFields(world, ext, 0.2 * smallest, this.sink);
+    } else {
+      d.fields = 0;
+    }
+    d.emitters = o.emitters ? drawEmitters(world, at, this.sink) : 0;
   }
 
   /** Frees the geometries and materials. */

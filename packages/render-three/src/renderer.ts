@@ -6,7 +6,7 @@ import { hasComponent, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book.js';
 import { assertLiveEntity, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugFrame, type DebugOptions } from './debug.js';
+import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugFrame, type DebugOptions } from './debug.js';
 import { EnvironmentLayer, type BoundaryStyle } from './environment.js';
 import { InstanceGroup, type GroupKind } from './groups.js';
 import { LightRig, resolveLightOptions, type LightOptions } from './lights.js';
@@ -124,6 +124,8 @@ export interface Renderer3DStats {
   contacts: number;
   /** Arrows drawn by the debug layer (0 when it is off). */
   arrows: number;
+  /** Springs, joints, planes, field regions and emitters drawn by the debug layer (all 0 when it is off). */
+  scenery: DebugCounts;
   /** Frames rendered since creation. */
   frames: number;
 }
@@ -175,7 +177,8 @@ function isGeometry(value: unknown): value is BufferGeometry {
  *   since the last frame, the start-of-step orientation is recovered by turning back by the angular
  *   velocity over one step (`rotateBack`).
  * - Scenery: the boundary box (glass), infinite planes, static segments; a light rig with shadows;
- *   optional trails and a debug layer (axes, velocity arrows, contacts of the last step).
+ *   optional trails and a debug layer (axes, velocity arrows, contacts of the last step, springs,
+ *   joints, plane normals, field regions, emitters).
  * - Metres become scene units through `unitsPerMeter`; y is up in both.
  *
  * The hot path (`render`) allocates nothing per entity: matrices and colours are written straight
@@ -191,7 +194,10 @@ export class WorldRenderer3D {
   /** Parent of everything the renderer draws. */
   readonly root = new Group();
   /** Statistics of the last frame (updated in place). */
-  readonly stats: Renderer3DStats = { instances: 0, balls: 0, boxes: 0, custom: 0, meshes: 0, trails: 0, contacts: 0, arrows: 0, frames: 0 };
+  readonly stats: Renderer3DStats = {
+    instances: 0, balls: 0, boxes: 0, custom: 0, meshes: 0, trails: 0, contacts: 0, arrows: 0,
+    scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
+  };
   /** The light rig, or null when `lights` is false. */
   readonly lights: LightRig | null;
   /** Scene units per metre. */
@@ -474,6 +480,9 @@ export class WorldRenderer3D {
     s.trails = trails ? trails.count : 0;
     s.contacts = debug ? debug.contactsDrawn : 0;
     s.arrows = debug ? debug.arrowsDrawn : 0;
+    const sc = s.scenery, dd = debug?.drawn;
+    sc.springs = dd ? dd.springs : 0; sc.joints = dd ? dd.joints : 0; sc.planes = dd ? dd.planes : 0;
+    sc.fields = dd ? dd.fields : 0; sc.emitters = dd ? dd.emitters : 0;
     s.frames++;
   }
 
