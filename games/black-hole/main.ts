@@ -14,7 +14,7 @@
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 import { Graphics } from 'pixi.js';
-import { Rng, type PhysicsWorld } from '@bitphysics/physics';
+import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
@@ -232,7 +232,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
   const s = bh.ship, P = world.components.Position, O = world.components.PreviousPosition;
-  const x = O.x[s]! + (P.x[s]! - O.x[s]!) * alpha, y = O.y[s]! + (P.y[s]! - O.y[s]!) * alpha;
+  const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha, y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   if (params.path && !bh.over) {
     pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
     for (let i = 1; i < pathPoints; i += 2) {
@@ -255,7 +255,7 @@ shell.expose({
   /** The ship's position, m, and velocity, m/s: [x, y, vx, vy]. */
   ship: (): number[] => {
     const c = bh.world.components;
-    return [c.Position.x[bh.ship]!, c.Position.y[bh.ship]!, c.Velocity.x[bh.ship]!, c.Velocity.y[bh.ship]!];
+    return [c.Position.x[slotOf(bh.ship)]!, c.Position.y[slotOf(bh.ship)]!, c.Velocity.x[slotOf(bh.ship)]!, c.Velocity.y[slotOf(bh.ship)]!];
   },
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,

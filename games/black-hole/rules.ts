@@ -31,8 +31,8 @@
  */
 import { query } from 'bitecs';
 import {
-  Rng, addBody, addEmitter, addSystem, createPhysicsWorld, removeBody, setAttractor, setEmitterEnabled, setGravitation,
-  setPosition, setVelocity, step, type PhysicsWorld,
+  Rng, addBody, addEmitter, addSystem, createPhysicsWorld, removeBody, setAttractor, setEmitterEnabled,
+  setGravitation, setPosition, setVelocity, step, slotOf, handleOf, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /** The playing field, m: x in [0, width], y in [0, height]. Leaving it sends the ship back to the start. */
@@ -180,8 +180,8 @@ function thrustLaw(game: BlackHoleGame, ship: number): (world: PhysicsWorld) => 
     const d = DIRS[game.thrust];
     const f = SHIP_MASS * game.params.thrust;
     const F = world.components.Force;
-    F.x[ship] = F.x[ship]! + f * d[0];
-    F.y[ship] = F.y[ship]! + f * d[1];
+    F.x[slotOf(ship)] = F.x[slotOf(ship)]! + f * d[0];
+    F.y[slotOf(ship)] = F.y[slotOf(ship)]! + f * d[1];
   };
 }
 
@@ -295,8 +295,8 @@ export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
   if (on) {
     // The physics API has no setter for an emitter's direction; its unit vector is component data.
     const E = world.components.Emitter, d = DIRS[t];
-    E.dirX[game.ship] = -d[0];
-    E.dirY[game.ship] = -d[1];
+    E.dirX[slotOf(game.ship)] = -d[0];
+    E.dirY[slotOf(game.ship)] = -d[1];
   }
 }
 
@@ -317,7 +317,7 @@ export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number,
   const ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
   for (let i = 0; i < game.holes.length; i++) {
     const h = game.holes[i]!;
-    const cx = P.x[h]!, cy = P.y[h]!;
+    const cx = P.x[slotOf(h)]!, cy = P.y[slotOf(h)]!;
     const t = len2 > 0 ? Math.max(0, Math.min(1, ((cx - ax) * ex + (cy - ay) * ey) / len2)) : 0;
     const dx = ax + t * ex - cx, dy = ay + t * ey - cy;
     const r = game.holeRadius[i]!;
@@ -344,8 +344,8 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     setVelocity(world, ship, [0, 0]);
     return 'none';
   }
-  const x = P.x[ship]!, y = P.y[ship]!;
-  const hit = holeHit(game, O.x[ship]!, O.y[ship]!, x, y);
+  const x = P.x[slotOf(ship)]!, y = P.y[slotOf(ship)]!;
+  const hit = holeHit(game, O.x[slotOf(ship)]!, O.y[slotOf(ship)]!, x, y);
   if (hit >= 0) {
     game.lives--;
     game.falls++;
@@ -390,7 +390,7 @@ function swallowParticles(game: BlackHoleGame): void {
     const e = ents[i]!;
     for (let k = 0; k < holes.length; k++) {
       const h = holes[k]!;
-      const dx = px[e]! - px[h]!, dy = py[e]! - py[h]!, r = radius[k]!;
+      const dx = px[e]! - px[slotOf(h)]!, dy = py[e]! - py[slotOf(h)]!, r = radius[k]!;
       if (dx * dx + dy * dy < r * r) {
         if (n < doomed.length) doomed[n++] = e;
         break;
@@ -398,7 +398,7 @@ function swallowParticles(game: BlackHoleGame): void {
     }
   }
   // Removed after the pass (removing while iterating a bitecs query skips entities).
-  for (let i = 0; i < n; i++) removeBody(world, doomed[i]!);
+  for (let i = 0; i < n; i++) removeBody(world, handleOf(world, doomed[i]!)); // query() gives slots; the API takes handles
 }
 
 const swallowScratch = new Int32Array(1024);
@@ -445,7 +445,7 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
   const P = game.world.components.Position;
   for (let i = 0; i < game.holes.length; i++) {
     const h = game.holes[i]!;
-    const e = addBody(w, { position: [P.x[h]!, P.y[h]!], static: true });
+    const e = addBody(w, { position: [P.x[slotOf(h)]!, P.y[slotOf(h)]!], static: true });
     setAttractor(w, e, { mass: game.holeMass[i]! });
     pred.holes.push(e);
   }
@@ -467,9 +467,9 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
   const w = pred.world, s = pred.ship;
   const src = game.world.components, dst = w.components;
   const P = dst.Position, O = dst.PreviousPosition, V = dst.Velocity;
-  P.x[s] = src.Position.x[game.ship]!; P.y[s] = src.Position.y[game.ship]!;
+  P.x[s] = src.Position.x[slotOf(game.ship)]!; P.y[s] = src.Position.y[slotOf(game.ship)]!;
   O.x[s] = P.x[s]!; O.y[s] = P.y[s]!;
-  V.x[s] = src.Velocity.x[game.ship]!; V.y[s] = src.Velocity.y[game.ship]!;
+  V.x[s] = src.Velocity.x[slotOf(game.ship)]!; V.y[s] = src.Velocity.y[slotOf(game.ship)]!;
   const max = Math.min(steps + 1, out.length >> 1);
   if (max < 1) return 0;
   out[0] = P.x[s]!; out[1] = P.y[s]!;
@@ -484,7 +484,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
     let inside = false;
     for (let i = 0; i < pred.holes.length; i++) {
       const h = pred.holes[i]!;
-      const dx = x - HP.x[h]!, dy = y - HP.y[h]!, r = radius[i]!;
+      const dx = x - HP.x[slotOf(h)]!, dy = y - HP.y[slotOf(h)]!, r = radius[i]!;
       if (dx * dx + dy * dy < r * r) { inside = true; break; }
     }
     if (inside || x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) break;

@@ -8,7 +8,7 @@
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
+import { createPhysicsWorld, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
@@ -217,7 +217,7 @@ shell.expose({
   positions: (): number[] => {
     const P = shell.world.components.Position;
     const out: number[] = [];
-    for (const e of handles.balls) out.push(P.x[e]!, P.y[e]!);
+    for (const e of handles.balls) out.push(P.x[slotOf(e)]!, P.y[slotOf(e)]!);
     return out;
   },
   /** Adds a ball at (x, y) m with velocity (vx, vy) m/s; returns its id. */

@@ -7,8 +7,7 @@
  * jittered grid in the upper part of the box, kept clear of the segments.
  */
 import {
-  Rng, addBody, addSegment, addComponentIfMissing, removeBody, setBoundary, setMaterial,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  Rng, addBody, addSegment, addComponentIfMissing, removeBody, setBoundary, setMaterial, slotOf, type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
 /** Drag law applied to every ball. */
@@ -184,8 +183,9 @@ function addBallUnchecked(world: PhysicsWorld, p: BouncingBallsParams, position:
 
 /** Whether a ball is heavy (density `DENSITIES.heavy`), from its mass and radius. */
 export function isHeavy(world: PhysicsWorld, eid: number): boolean {
-  const r = world.components.Ball.radius[eid]!;
-  return world.components.Mass.value[eid]! > 2 * Math.PI * r * r * DENSITIES.normal;
+  const s = slotOf(eid);
+  const r = world.components.Ball.radius[s]!;
+  return world.components.Mass.value[s]! > 2 * Math.PI * r * r * DENSITIES.normal;
 }
 
 /**
@@ -241,7 +241,8 @@ export function applyDrag(world: PhysicsWorld, h: BouncingBallsHandles, mode: Dr
   h.params.drag = mode;
   h.params.dragK = k;
   const c = world.components;
-  for (const e of h.balls) {
+  for (const ball of h.balls) {
+    const e = slotOf(ball);
     if (mode === 'linear') {
       addComponentIfMissing(world, e, c.LinearDrag);
       c.LinearDrag.k[e] = k;

@@ -13,7 +13,7 @@
  * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
  */
 import { Graphics } from 'pixi.js';
-import { Rng, type PhysicsWorld } from '@bitphysics/physics';
+import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
@@ -170,7 +170,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // Shell heads (the shells are bodies, not particles), interpolated like everything else.
   const P = world.components.Position, O = world.components.PreviousPosition;
   for (let i = 0; i < show.shellCount; i++) {
-    const e = show.shellIds[i]!;
+    const e = slotOf(show.shellIds[i]!);
     const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha, y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
     overlay.circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!)))).fill({ color: 0xfff3d0 });
   }

@@ -26,7 +26,7 @@
  * Everything random comes from seeded generators: the same seed and the same launches give the same show.
  */
 import {
-  Rng, addBody, addEmitter, createEntity, createPhysicsWorld, emitNow, removeBody, setGravity, step,
+  Rng, addBody, addEmitter, createEntity, createPhysicsWorld, emitNow, removeBody, setGravity, step, slotOf,
   type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
@@ -103,8 +103,8 @@ export interface FireworksShow {
   readonly emitters: FireworksEmitters;
   /** Generator of launch points, colours and the auto-show (seeded from `params.seed`). */
   readonly rng: Rng;
-  /** Shells in flight: entity id, world time of its burst (s), burst scale and colour index, entries 0..shellCount-1. */
-  readonly shellIds: Int32Array;
+  /** Shells in flight: entity handle (a Float64Array: handles exceed 2^31 once slots are reused often), world time of its burst (s), burst scale and colour index, entries 0..shellCount-1. */
+  readonly shellIds: Float64Array;
   readonly shellBurstTime: Float64Array;
   readonly shellScale: Float64Array;
   readonly shellColor: Int32Array;
@@ -224,7 +224,7 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     params: p,
     emitters: { sparks, crackles, crackle2 },
     rng: new Rng(p.seed),
-    shellIds: new Int32Array(MAX_SHELLS),
+    shellIds: new Float64Array(MAX_SHELLS),
     shellBurstTime: new Float64Array(MAX_SHELLS),
     shellScale: new Float64Array(MAX_SHELLS),
     shellColor: new Int32Array(MAX_SHELLS),
@@ -325,8 +325,8 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
     const scale = show.shellScale[i]!;
     if (show.pendingCount < MAX_SHELLS) {
       const o = PEND * show.pendingCount++;
-      Q[o] = c.Position.x[e]!; Q[o + 1] = c.Position.y[e]!;
-      Q[o + 2] = c.Velocity.x[e]!; Q[o + 3] = c.Velocity.y[e]!;
+      Q[o] = c.Position.x[slotOf(e)]!; Q[o + 1] = c.Position.y[slotOf(e)]!;
+      Q[o + 2] = c.Velocity.x[slotOf(e)]!; Q[o + 3] = c.Velocity.y[slotOf(e)]!;
       Q[o + 4] = show.emitters.sparks[show.shellColor[i]!]!;
       Q[o + 5] = Math.round(show.params.sparks * scale);
       Q[o + 6] = Math.sqrt(scale);
@@ -347,8 +347,8 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
   while (show.pendingCount > 0 && budget > 0) {
     const em = Q[4]!, s = Q[6]!;
     const n = Math.min(Q[5]!, budget);
-    E.speedMin[em] = SPEED_MIN * BURST_SPEED * s;
-    E.speedMax[em] = BURST_SPEED * s;
+    E.speedMin[slotOf(em)] = SPEED_MIN * BURST_SPEED * s;
+    E.speedMax[slotOf(em)] = BURST_SPEED * s;
     burstPos[0] = Q[0]!; burstPos[1] = Q[1]!;
     burstVel[0] = Q[2]!; burstVel[1] = Q[3]!;
     emitNow(world, em, n, burstPos, burstVel);
@@ -401,7 +401,7 @@ export function setShowDrag(world: PhysicsWorld, show: FireworksShow, k: number)
   checkDrag(k);
   show.params.drag = k;
   const E = world.components.Emitter;
-  for (const em of [...show.emitters.sparks, ...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[em] = k;
+  for (const em of [...show.emitters.sparks, ...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[slotOf(em)] = k;
   // The shells' tails (emitters attached to the shells).
   for (let i = 0; i < show.shellCount; i++) E.quadraticDrag[show.shellIds[i]!] = k;
 }
@@ -420,7 +420,7 @@ export function setShowGenerations(world: PhysicsWorld, show: FireworksShow, g: 
   checkGenerations(g);
   show.params.generations = g;
   const E = world.components.Emitter;
-  for (const em of [...show.emitters.sparks, ...show.emitters.crackles]) E.maxGeneration[em] = g - 1;
+  for (const em of [...show.emitters.sparks, ...show.emitters.crackles]) E.maxGeneration[slotOf(em)] = g - 1;
 }
 
 /** Turns the auto-show on or off (its clock restarts at 0.3 s). */

@@ -10,7 +10,7 @@
  * ?strength (vortex, N), ?seed.
  */
 import { Graphics } from 'pixi.js';
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
@@ -121,7 +121,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const r = Math.max(5, cam.toScreenLength(0.15 + 0.03 * Math.sqrt(field.settings.mass)));
   for (let i = 0; i < field.attractorCount; i++) {
     const e = field.attractors[i]!;
-    const x = cam.toScreenX(P.x[e]!), y = cam.toScreenY(P.y[e]!);
+    const x = cam.toScreenX(P.x[slotOf(e)]!), y = cam.toScreenY(P.y[slotOf(e)]!);
     const soft = cam.toScreenLength(field.settings.softening);
     if (soft > 2) marks.circle(x, y, soft).stroke({ width: 1, color: 0xffd08a, alpha: 0.35 });
     marks.circle(x, y, r * 2).fill({ color: 0xffb347, alpha: 0.12 });

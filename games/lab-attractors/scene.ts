@@ -15,8 +15,8 @@
  *   area (a game rule: the population stays constant).
  */
 import {
-  Rng, addBody, createPhysicsWorld, removeBody, setAttractor, setDrag, setGravitation, setPosition, setVelocity, setVortex, step,
-  type PhysicsWorld,
+  Rng, addBody, createPhysicsWorld, removeBody, setAttractor, setDrag, setGravitation, setPosition,
+  setVelocity, setVortex, step, slotOf, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /** Most attractors at once. */
@@ -128,7 +128,7 @@ export function attractorNear(f: AttractorField, x: number, y: number, reach: nu
   let best = 0, bestD = reach;
   for (let i = 0; i < f.attractorCount; i++) {
     const e = f.attractors[i]!;
-    const d = Math.hypot(P.x[e]! - x, P.y[e]! - y);
+    const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
     if (d <= bestD) { bestD = d; best = e; }
   }
   return best;
@@ -170,7 +170,7 @@ export function stepAttractors(f: AttractorField): void {
   const r2 = ESCAPE_RADIUS * ESCAPE_RADIUS;
   for (let i = 0; i < f.particles.length; i++) {
     const e = f.particles[i]!;
-    const x = P.x[e]!, y = P.y[e]!;
+    const x = P.x[slotOf(e)]!, y = P.y[slotOf(e)]!;
     if (x * x + y * y > r2) {
       p2[0] = f.rng.range(-START_AREA.w, START_AREA.w); p2[1] = f.rng.range(-START_AREA.h, START_AREA.h);
       v2[0] = 0; v2[1] = 0;

@@ -15,7 +15,7 @@
  * ?autoOpen= (m, 0..5000; 0 off), ?tethered.
  */
 import { Graphics, Text } from 'pixi.js';
-import { createPhysicsWorld, setMass, step, type PhysicsWorld } from '@bitphysics/physics';
+import { createPhysicsWorld, setMass, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import type { Plot } from '../shared/plot';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, type Panel, type PanelControl } from '../shared/index';
@@ -79,13 +79,13 @@ function stepLab(world: PhysicsWorld): void {
 function sample(world: PhysicsWorld): void {
   const V = world.components.Velocity, P = world.components.Position;
   if (handles.scene === 'parachute') {
-    const h = handles, p = h.params, m = world.components.Mass.value[h.jumper]!;
+    const h = handles, p = h.params, m = world.components.Mass.value[slotOf(h.jumper)]!;
     const vt1 = terminalSpeed(m, p.kClosed), vt2 = terminalSpeed(m, p.kOpen);
     const still = p.wind === 0 && p.turbulence === 0 && Number.isNaN(h.openedAt);
-    plot.push(world.time, -V.y[h.jumper]!, vt1, vt2, still ? fallSpeedFromRest(world.time, vt1) : Number.NaN);
+    plot.push(world.time, -V.y[slotOf(h.jumper)]!, vt1, vt2, still ? fallSpeedFromRest(world.time, vt1) : Number.NaN);
   } else {
     const h = handles;
-    plot.push(world.time, P.y[h.balloon]!, equilibriumAltitude(h.params));
+    plot.push(world.time, P.y[slotOf(h.balloon)]!, equilibriumAltitude(h.params));
   }
 }
 
@@ -177,7 +177,7 @@ function controlsFor(scene: SceneName): PanelControl<Params>[] {
     { type: 'checkbox', key: 'tethered', label: 'tethered (T)', onChange: (v) => setTethered(v === true) },
     slider('tetherLength', 'tether length (m)', (L) => {
       syncParams();
-      if (handles.scene === 'balloon' && handles.tether !== 0) shell.world.components.Spring.restLength[handles.tether] = L;
+      if (handles.scene === 'balloon' && handles.tether !== 0) shell.world.components.Spring.restLength[slotOf(handles.tether)] = L;
     }),
     ...tail,
   ];
@@ -266,8 +266,8 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   const P = world.components.Position, O = world.components.PreviousPosition;
   const subject = handles.scene === 'parachute' ? handles.jumper : handles.balloon;
-  const sx = O.x[subject]! + (P.x[subject]! - O.x[subject]!) * alpha;
-  const sy = O.y[subject]! + (P.y[subject]! - O.y[subject]!) * alpha;
+  const sx = O.x[slotOf(subject)]! + (P.x[slotOf(subject)]! - O.x[slotOf(subject)]!) * alpha;
+  const sy = O.y[slotOf(subject)]! + (P.y[slotOf(subject)]! - O.y[slotOf(subject)]!) * alpha;
   // Follow the subject (keeping the ground in view when it is near it), then place the balls again for this camera.
   const ppm = params.zoom;
   const halfH = cam.height / 2 / ppm;
@@ -341,13 +341,13 @@ function statusLine(world: PhysicsWorld): string {
   const P = world.components.Position, V = world.components.Velocity;
   if (handles.scene === 'parachute') {
     const e = handles.jumper;
-    const landed = P.y[e]! - JUMPER_RADIUS < 0.05;
+    const landed = P.y[slotOf(e)]! - JUMPER_RADIUS < 0.05;
     const state = landed ? 'landed' : Number.isNaN(handles.openedAt) ? 'free fall (O or click: open)' : 'canopy open';
-    return `${state} · altitude ${Math.max(0, P.y[e]! - JUMPER_RADIUS).toFixed(0)} m · descent ${(-V.y[e]!).toFixed(1)} m/s · wind ${handles.params.wind.toFixed(1)} m/s`;
+    return `${state} · altitude ${Math.max(0, P.y[slotOf(e)]! - JUMPER_RADIUS).toFixed(0)} m · descent ${(-V.y[slotOf(e)]!).toFixed(1)} m/s · wind ${handles.params.wind.toFixed(1)} m/s`;
   }
   const e = handles.balloon;
   const yStar = equilibriumAltitude(handles.params);
-  return `height ${P.y[e]!.toFixed(1)} m · equilibrium ${Number.isFinite(yStar) ? yStar.toFixed(1) + ' m' : 'none (too heavy)'} · ${handles.tether !== 0 ? 'tethered' : 'free'}`;
+  return `height ${P.y[slotOf(e)]!.toFixed(1)} m · equilibrium ${Number.isFinite(yStar) ? yStar.toFixed(1) + ' m' : 'none (too heavy)'} · ${handles.tether !== 0 ? 'tethered' : 'free'}`;
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------------
@@ -369,7 +369,7 @@ shell.expose({
   /** Terminal speeds [closed, open], m/s, for the jumper's current mass. */
   terminalSpeeds: (): [number, number] => {
     const h = handles as ParachuteHandles;
-    const m = shell.world.components.Mass.value[h.jumper]!;
+    const m = shell.world.components.Mass.value[slotOf(h.jumper)]!;
     return [terminalSpeed(m, h.params.kClosed), terminalSpeed(m, h.params.kOpen)];
   },
   /** Exact equilibrium height of the balloon, m. */

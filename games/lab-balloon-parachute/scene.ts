@@ -26,7 +26,8 @@
  * densities (kg/m^2) read as kg/m^3.
  */
 import {
-  addBody, addFluidRegion, addSpring, removeBody, setBoundary, setBuoyancy, setWind, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody, addFluidRegion, addSpring, removeBody, setBoundary, setBuoyancy, setWind, slotOf,
+  type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
 /** The two scenes. */
@@ -242,7 +243,7 @@ export function setTether(world: PhysicsWorld, h: BalloonHandles, on: boolean): 
     return;
   }
   if (h.tether !== 0) return;
-  const m = world.components.Mass.value[h.balloon]!;
+  const m = world.components.Mass.value[slotOf(h.balloon)]!;
   // Rope: natural frequency about 3 Hz for the balloon's mass, critically damped along the rope.
   const w = 2 * Math.PI * 3;
   h.tether = addSpring(world, {
@@ -267,14 +268,14 @@ export function openChute(world: PhysicsWorld, h: ParachuteHandles): boolean {
  */
 export function updateChute(world: PhysicsWorld, h: ParachuteHandles, openingTime: number, autoOpenAltitude: number): void {
   const e = h.jumper;
-  if (Number.isNaN(h.openedAt) && autoOpenAltitude > 0 && world.components.Position.y[e]! < autoOpenAltitude) openChute(world, h);
+  if (Number.isNaN(h.openedAt) && autoOpenAltitude > 0 && world.components.Position.y[slotOf(e)]! < autoOpenAltitude) openChute(world, h);
   const p = h.params;
   let k = p.kClosed;
   if (!Number.isNaN(h.openedAt)) {
     const f = openingTime > 0 ? Math.min(1, (world.time - h.openedAt) / openingTime) : 1;
     k = p.kClosed + (p.kOpen - p.kClosed) * f;
   }
-  world.components.QuadraticDrag.k[e] = k;
+  world.components.QuadraticDrag.k[slotOf(e)] = k;
 }
 
 /**

@@ -11,7 +11,7 @@
  * ?integrator=<name>, ?substeps= (1..64), ?lines=0|1.
  */
 import { Graphics, Text } from 'pixi.js';
-import { INTEGRATOR_NAMES, createPhysicsWorld, setPosition, setVelocity, step, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
+import { INTEGRATOR_NAMES, createPhysicsWorld, setPosition, setVelocity, step, slotOf, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
@@ -142,7 +142,7 @@ const panel = createPanel(params, [
 
 function select(eid: number): void {
   selected = eid;
-  params.selected = Math.round((shell.world.components.Charge.value[eid]! / MICRO) * 10) / 10;
+  params.selected = Math.round((shell.world.components.Charge.value[slotOf(eid)]! / MICRO) * 10) / 10;
   panel.refresh();
 }
 
@@ -188,7 +188,7 @@ function drawFieldLines(): void {
     let fromNegative = false;
     for (const c of handles.charges) {
       const P = world.components.Position;
-      if (Math.hypot(first - P.x[c]!, firstY - P.y[c]!) < 0.2) { fromNegative = world.components.Charge.value[c]! < 0; break; }
+      if (Math.hypot(first - P.x[slotOf(c)]!, firstY - P.y[slotOf(c)]!) < 0.2) { fromNegative = world.components.Charge.value[slotOf(c)]! < 0; break; }
     }
     let dx = x1 - x0, dy = y1 - y0;
     const n = Math.hypot(dx, dy) || 1;
@@ -225,7 +225,7 @@ function draw(): void {
   const charges = handles.charges;
   for (let i = 0; i < charges.length; i++) {
     const c = charges[i]!;
-    const x = cam.toScreenX(P.x[c]!), y = cam.toScreenY(P.y[c]!), q = Q[c]! / MICRO;
+    const x = cam.toScreenX(P.x[slotOf(c)]!), y = cam.toScreenY(P.y[slotOf(c)]!), q = Q[slotOf(c)]! / MICRO;
     const rr = r * (0.8 + 0.2 * Math.min(3, Math.sqrt(Math.abs(q))));
     chargeLayer.circle(x, y, rr).fill({ color: q > 0 ? 0xe63946 : 0x3a86ff });
     if (c === selected) chargeLayer.circle(x, y, rr + 4).stroke({ width: 2, color: 0xffd166 });
@@ -253,7 +253,7 @@ function pick(sx: number, sy: number): number {
   const reach = Math.max(0.35, cam.toWorldX(sx + 12) - x);
   let best = 0, bestD = reach;
   for (const e of [...handles.charges, handles.test]) {
-    const d = Math.hypot(P.x[e]! - x, P.y[e]! - y);
+    const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
     if (d < bestD) { best = e; bestD = d; }
   }
   return best;
@@ -324,7 +324,7 @@ shell.expose({
   /** Fixed charges as [x m, y m, q uC] triples. */
   charges: (): [number, number, number][] => {
     const P = shell.world.components.Position, Q = shell.world.components.Charge.value;
-    return handles.charges.map((e) => [P.x[e]!, P.y[e]!, Q[e]! / MICRO]);
+    return handles.charges.map((e) => [P.x[slotOf(e)]!, P.y[slotOf(e)]!, Q[slotOf(e)]! / MICRO]);
   },
   /** Places a fixed charge of q uC at (x, y) m; returns its id. */
   place: (x: number, y: number, q: number): number => { const e = addCharge(shell.world, handles, x, y, q); changed(); return e; },

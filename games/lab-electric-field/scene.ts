@@ -18,8 +18,8 @@
  * and softening eps, read from the world), with classical RK4 steps of fixed arc length.
  */
 import {
-  addBody, electricPotentialEnergy, kineticEnergy, removeBody, setBoundary, setCharge, setElectrostatics, setPosition, setVelocity,
-  type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody, electricPotentialEnergy, kineticEnergy, removeBody, setBoundary, setCharge, setElectrostatics,
+  setPosition, setVelocity, slotOf, type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
 /** Inner corners of the box, m. */
@@ -202,10 +202,10 @@ export function testEnergy(world: PhysicsWorld, h: ElectricHandles): number {
  */
 export function rebaseline(world: PhysicsWorld, h: ElectricHandles): void {
   const q = world.components.Charge.value;
-  const saved = q[h.test]!;
-  q[h.test] = 0;
+  const saved = q[slotOf(h.test)]!;
+  q[slotOf(h.test)] = 0;
   h.sourceEnergy = electricPotentialEnergy(world);
-  q[h.test] = saved;
+  q[slotOf(h.test)] = saved;
   h.initialEnergy = testEnergy(world, h);
 }
 
@@ -262,10 +262,10 @@ function fieldAt(world: PhysicsWorld, charges: readonly number[], x: number, y: 
   let sx = 0, sy = 0;
   for (let i = 0; i < charges.length; i++) {
     const c = charges[i]!;
-    const dx = x - P.x[c]!, dy = y - P.y[c]!;
+    const dx = x - P.x[slotOf(c)]!, dy = y - P.y[slotOf(c)]!;
     const r2 = dx * dx + dy * dy + eps2;
     if (r2 === 0) continue;
-    const k = (K * q[c]!) / (r2 * Math.sqrt(r2));
+    const k = (K * q[slotOf(c)]!) / (r2 * Math.sqrt(r2));
     sx += k * dx; sy += k * dy;
   }
   ex[0] = sx; ey[0] = sy;
@@ -297,13 +297,13 @@ export function traceFieldLines(world: PhysicsWorld, h: ElectricHandles, out: Fi
   };
   for (const pass of [1, -1]) {
     for (const c of charges) {
-      const q = Q[c]! / MICRO;
+      const q = Q[slotOf(c)]! / MICRO;
       if (Math.sign(q) !== pass) continue;
       const n = Math.max(4, Math.min(32, Math.round(perUC * Math.abs(q))));
       for (let k = 0; k < n; k++) {
         if (line >= start.length - 1) break;
         const a = (2 * Math.PI * (k + 0.5)) / n;
-        let x = P.x[c]! + radius * Math.cos(a), y = P.y[c]! + radius * Math.sin(a);
+        let x = P.x[slotOf(c)]! + radius * Math.cos(a), y = P.y[slotOf(c)]! + radius * Math.sin(a);
         const first = point;
         start[line] = first;
         xy[2 * point] = x; xy[2 * point + 1] = y; point++;
@@ -323,7 +323,7 @@ export function traceFieldLines(world: PhysicsWorld, h: ElectricHandles, out: Fi
           let hit = 0;
           for (const o of charges) {
             if (o === c) continue;
-            const dx = x - P.x[o]!, dy = y - P.y[o]!;
+            const dx = x - P.x[slotOf(o)]!, dy = y - P.y[slotOf(o)]!;
             if (dx * dx + dy * dy < radius * radius) { hit = o; break; }
           }
           if (hit !== 0) { endedOnPositive = Q[hit]! > 0; break; }

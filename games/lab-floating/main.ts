@@ -10,7 +10,7 @@
  * ?track=light|medium|heavy|box.
  */
 import { Graphics, Text } from 'pixi.js';
-import { createPhysicsWorld, setPosition, setVelocity, step, type PhysicsWorld } from '@bitphysics/physics';
+import { createPhysicsWorld, setPosition, setVelocity, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '../shared/lab-kit';
@@ -99,8 +99,8 @@ function recolor(): void {
   const w = shell.world;
   for (const kind of ['light', 'medium', 'heavy'] as const) renderer.setColor(handles[kind], densityColor(params[kind]));
   for (const e of handles.dropped) {
-    const r = w.components.Ball.radius[e]!;
-    renderer.setColor(e, densityColor(w.components.Mass.value[e]! / (Math.PI * r * r)));
+    const r = w.components.Ball.radius[slotOf(e)]!;
+    renderer.setColor(e, densityColor(w.components.Mass.value[slotOf(e)]! / (Math.PI * r * r)));
   }
 }
 recolor();
@@ -113,9 +113,9 @@ function placeAtEquilibrium(): void {
   const e = handles[params.tracked];
   const extent = params.tracked === 'box' ? BOX_HALF[1] : BALL_RADIUS;
   const w = shell.world;
-  setPosition(w, e, [w.components.Position.x[e]!, SURFACE - d + extent]);
+  setPosition(w, e, [w.components.Position.x[slotOf(e)]!, SURFACE - d + extent]);
   setVelocity(w, e, [0, 0]);
-  w.components.AngularVelocity.z[e] = 0;
+  w.components.AngularVelocity.z[slotOf(e)] = 0;
 }
 
 const panel = createPanel(params, [
@@ -148,8 +148,8 @@ let frame = 0;
 function draw(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   const P = world.components.Position, O = world.components.PreviousPosition;
-  const lerpX = (e: number) => O.x[e]! + (P.x[e]! - O.x[e]!) * alpha;
-  const lerpY = (e: number) => O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
+  const lerpX = (e: number) => O.x[slotOf(e)]! + (P.x[slotOf(e)]! - O.x[slotOf(e)]!) * alpha;
+  const lerpY = (e: number) => O.y[slotOf(e)]! + (P.y[slotOf(e)]! - O.y[slotOf(e)]!) * alpha;
   // Box (no collider, so the world renderer does not draw it).
   const b = handles.box;
   const bx = cam.toScreenX(lerpX(b) - BOX_HALF[0]), by = cam.toScreenY(lerpY(b) + BOX_HALF[1]);

@@ -12,7 +12,8 @@
  */
 import { Graphics } from 'pixi.js';
 import {
-  INTEGRATOR_NAMES, createPhysicsWorld, step as physicsStep, totalEnergy, type IntegratorName, type PhysicsWorld,
+  INTEGRATOR_NAMES, createPhysicsWorld, step as physicsStep, totalEnergy, slotOf, type IntegratorName,
+  type PhysicsWorld,
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
@@ -94,7 +95,7 @@ const orbitPath = new PathBuffer(1500);
 /** Specific energy of body `eid` of `world`, J/kg (see exact.ts). */
 function energyOf(world: PhysicsWorld, eid: number): number {
   const P = world.components.Position, V = world.components.Velocity;
-  return specificEnergy(P.x[eid]!, P.y[eid]!, V.x[eid]!, V.y[eid]!, handles.params.gm, handles.params.softening);
+  return specificEnergy(P.x[slotOf(eid)]!, P.y[slotOf(eid)]!, V.x[slotOf(eid)]!, V.y[slotOf(eid)]!, handles.params.gm, handles.params.softening);
 }
 
 /** Selects body `eid` (0 for none): restarts the energy chart, the period measurement and the paths. */
@@ -107,12 +108,12 @@ function select(world: PhysicsWorld, eid: number): void {
   orbit.total0 = totalEnergy(world);
   if (eid === 0) { orbit.e0 = orbit.energy = orbit.a = orbit.keplerPeriod = Number.NaN; return; }
   const P = world.components.Position, V = world.components.Velocity;
-  const x = P.x[eid]!, y = P.y[eid]!;
+  const x = P.x[slotOf(eid)]!, y = P.y[slotOf(eid)]!;
   lastAngle = Math.atan2(y, x);
   orbit.e0 = orbit.energy = energyOf(world, eid);
   orbit.a = semiMajorAxis(orbit.e0, handles.params.gm);
   orbit.keplerPeriod = keplerPeriod(orbit.a, handles.params.gm);
-  orbitShape(x, y, V.x[eid]!, V.y[eid]!, handles.params.gm, shape);
+  orbitShape(x, y, V.x[slotOf(eid)]!, V.y[slotOf(eid)]!, handles.params.gm, shape);
   if (shape.e < 1) {
     for (let i = 0; i <= 360; i++) {
       const th = (i / 360) * 2 * Math.PI;
@@ -133,7 +134,7 @@ function cull(world: PhysicsWorld, list: number[]): void {
   const P = world.components.Position;
   for (let i = list.length - 1; i >= 0; i--) {
     const e = list[i]!;
-    const r = Math.hypot(P.x[e]!, P.y[e]!);
+    const r = Math.hypot(P.x[slotOf(e)]!, P.y[slotOf(e)]!);
     if (r < SUN_RADIUS || r > ESCAPE_DISTANCE) {
       removeOrbiter(world, handles, e);
       if (e === orbit.eid) select(world, handles.planets[0] ?? handles.launched[0] ?? 0);
@@ -149,7 +150,7 @@ function labStep(world: PhysicsWorld): void {
   const P = world.components.Position;
   const e = orbit.eid;
   if (e === 0) return;
-  const x = P.x[e]!, y = P.y[e]!;
+  const x = P.x[slotOf(e)]!, y = P.y[slotOf(e)]!;
   orbit.energy = energyOf(world, e);
   if (orbit.e0 !== 0) orbit.maxDrift = Math.max(orbit.maxDrift, Math.abs((orbit.energy - orbit.e0) / orbit.e0));
   // Angle swept since selection; each full turn ends a measured period (crossing time interpolated).
@@ -292,7 +293,7 @@ function selectNearest(x: number, y: number): number {
   const P = shell.world.components.Position;
   let best = 0, bestD = Infinity;
   for (const e of orbiters()) {
-    const d = Math.hypot(P.x[e]! - x, P.y[e]! - y);
+    const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
     if (d < bestD) { bestD = d; best = e; }
   }
   if (best !== 0) select(shell.world, best);

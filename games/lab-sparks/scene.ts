@@ -17,8 +17,8 @@
  * impact speed exceeds 1 m/s and that pushed.
  */
 import {
-  ContactKind, addEmitter, addSegment, createPhysicsWorld, removeBody, setEmitterEnabled, setEmitterRate, setMaterial, setPosition, step,
-  type PhysicsWorld,
+  ContactKind, addEmitter, addSegment, createPhysicsWorld, removeBody, setEmitterEnabled, setEmitterRate,
+  setMaterial, setPosition, step, slotOf, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /** Mass of a spark, kg (0.1 g). */
@@ -165,6 +165,6 @@ export function stepSparks(s: Sparks): void {
   const buf = s.world.collision.cache.rows;
   const kind = buf.kind, feature = buf.feature, impact = buf.impactVelocity, pushed = buf.maxNormalImpulse;
   for (let i = 0; i < buf.count; i++) {
-    if (kind[i] === ContactKind.Segment && (feature[i] === s.floor || feature[i] === s.wall) && impact[i]! < -1 && pushed[i]! > 0) s.bounces++;
+    if (kind[i] === ContactKind.Segment && (feature[i] === slotOf(s.floor) || feature[i] === slotOf(s.wall)) && impact[i]! < -1 && pushed[i]! > 0) s.bounces++;
   }
 }

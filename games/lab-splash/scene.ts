@@ -21,7 +21,8 @@
  */
 import { query } from 'bitecs';
 import {
-  ContactKind, addEmitter, addSegment, createPhysicsWorld, emitNow, removeBody, setEmitterRate, setMaterial, step, type PhysicsWorld,
+  ContactKind, addEmitter, addSegment, createPhysicsWorld, emitNow, removeBody, setEmitterRate, setMaterial,
+  step, handleOf, slotOf, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /** Where the pool ends and the ground begins, m; the pool's left edge and bottom; the ground's right end. */
@@ -146,7 +147,8 @@ function countOf(world: PhysicsWorld, a: number, b: number): number {
   const ents = query(world, [world.components.Particle]);
   const em = world.components.Particle.emitter;
   let n = 0;
-  for (let i = 0; i < ents.length; i++) { const e = em[ents[i]!]; if (e === a || e === b) n++; }
+  const sa = slotOf(a), sb = slotOf(b); // Particle.emitter holds slots
+  for (let i = 0; i < ents.length; i++) { const e = em[ents[i]!]; if (e === sa || e === sb) n++; }
   return n;
 }
 
@@ -183,13 +185,16 @@ export function stepSplash(s: Splash): void {
   const c = world.components;
   const em = c.Particle.emitter;
   const P = c.Position, V = c.Velocity;
+  // Particle.emitter and contact rows hold slots; the scene keeps handles.
+  const rain = slotOf(s.rain), hand = slotOf(s.hand), ground = slotOf(s.ground);
+  const groundSplash = slotOf(s.groundSplash), waterSplash = slotOf(s.waterSplash);
   let n = 0;
   // Ground: contacts of a drop with the ground segment.
   const rows = world.collision.cache.rows;
   for (let i = 0; i < rows.count; i++) {
-    if (rows.kind[i] !== ContactKind.Segment || rows.feature[i] !== s.ground || rows.maxNormalImpulse[i]! <= 0) continue;
+    if (rows.kind[i] !== ContactKind.Segment || rows.feature[i] !== ground || rows.maxNormalImpulse[i]! <= 0) continue;
     const b = rows.b[i]!;
-    if (em[b] !== s.rain && em[b] !== s.hand) continue;
+    if (em[b] !== rain && em[b] !== hand) continue;
     let seen = false;
     for (let k = 0; k < n; k++) if (burstE[k] === b) { seen = true; break; }
     if (seen) continue;
@@ -203,7 +208,7 @@ export function stepSplash(s: Splash): void {
     const e = ents[i]!;
     const x = P.x[e]!, y = P.y[e]!;
     const source = em[e];
-    if (source === s.rain || source === s.hand) {
+    if (source === rain || source === hand) {
       if (y < 0 && x < POOL.maxX) {
         if (n === burstE.length) grow();
         burstE[n] = e; burstKind[n] = 2; burstSpeed[n] = Math.max(0, -V.y[e]!); n++;
@@ -211,7 +216,7 @@ export function stepSplash(s: Splash): void {
         if (m === absorbE.length) { const a = new Int32Array(m * 2); a.set(absorbE); absorbE = a; }
         absorbE[m++] = e;
       }
-    } else if ((source === s.groundSplash || source === s.waterSplash) && y < 0 && x < POOL.maxX && V.y[e]! < 0) {
+    } else if ((source === groundSplash || source === waterSplash) && y < 0 && x < POOL.maxX && V.y[e]! < 0) {
       if (m === absorbE.length) { const a = new Int32Array(m * 2); a.set(absorbE); absorbE = a; }
       absorbE[m++] = e;
     }
@@ -223,7 +228,7 @@ export function stepSplash(s: Splash): void {
     // Splash velocity handed to the droplets (scaled by each emitter's inherit fraction): the drop's, bounced up.
     vel[0] = V.x[e]!; vel[1] = speed;
     at[0] = x; at[1] = water ? 0 : SPLASH_DISC + 0.02;
-    removeBody(world, e);
+    removeBody(world, handleOf(world, e));
     const count = Math.round(s.settings.dropletsPerSpeed * speed * (water ? 1.4 : 1));
     const made = count > 0 ? emitNow(world, water ? s.waterSplash : s.groundSplash, count, at, vel) : 0;
     const last = s.last;
@@ -238,7 +243,7 @@ export function stepSplash(s: Splash): void {
   }
   for (let k = 0; k < m; k++) {
     const e = absorbE[k]!;
-    if (em[e] === s.groundSplash || em[e] === s.waterSplash) s.absorbed++;
-    removeBody(world, e);
+    if (em[e] === groundSplash || em[e] === waterSplash) s.absorbed++;
+    removeBody(world, handleOf(world, e));
   }
 }

@@ -12,8 +12,8 @@
  */
 import { Graphics } from 'pixi.js';
 import {
-  INTEGRATOR_NAMES, addSpring, createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, removeBody, springPotentialEnergy,
-  step as physicsStep, totalEnergy, type IntegratorName, type PhysicsWorld,
+  INTEGRATOR_NAMES, addSpring, createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, removeBody,
+  springPotentialEnergy, step as physicsStep, totalEnergy, slotOf, type IntegratorName, type PhysicsWorld,
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
@@ -171,8 +171,8 @@ function grabBall(i: number, x: number, y: number): void {
 function dragTo(x: number, y: number): void {
   if (grab.spring === 0) return;
   const S = shell.world.components.Spring;
-  S.anchorX[grab.spring] = x;
-  S.anchorY[grab.spring] = y;
+  S.anchorX[slotOf(grab.spring)] = x;
+  S.anchorY[slotOf(grab.spring)] = y;
 }
 
 /** Lets go of the grabbed ball (removes the mouse spring) and takes a new energy reference. */
@@ -246,7 +246,7 @@ function drawOverlay(alpha: number, world: PhysicsWorld): void {
     const S = world.components.Spring;
     drawnPosition(world, grab.ball, alpha, pb);
     const bx = cam.toScreenX(pb.x), by = cam.toScreenY(pb.y);
-    overlay.moveTo(cam.toScreenX(S.anchorX[grab.spring]!), cam.toScreenY(S.anchorY[grab.spring]!)).lineTo(bx, by).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    overlay.moveTo(cam.toScreenX(S.anchorX[slotOf(grab.spring)]!), cam.toScreenY(S.anchorY[slotOf(grab.spring)]!)).lineTo(bx, by).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
     overlay.circle(bx, by, Math.max(6, cam.toScreenLength(BALL_RADIUS)) + 3).stroke({ width: 2, color: 0xffffff });
   }
   updateReadout(world);

@@ -6,7 +6,8 @@
  * deterministic builder; no DOM.
  */
 import {
-  INTEGRATOR_NAMES, addBody, addSpring, type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  INTEGRATOR_NAMES, addBody, addSpring, slotOf, type IntegratorName, type PhysicsWorld,
+  type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
 /** Rest length of every spring, m. */
@@ -127,7 +128,7 @@ export function buildChain(world: PhysicsWorld, options: ChainOptions = {}): Cha
 export function setSpringConstants(world: PhysicsWorld, h: ChainHandles, stiffness: number, damping: number): void {
   const p = resolveChainOptions({ ...h.params, stiffness, damping });
   const S = world.components.Spring;
-  for (const s of h.springs) { S.stiffness[s] = p.stiffness; S.damping[s] = p.damping; }
+  for (const s of h.springs) { S.stiffness[slotOf(s)] = p.stiffness; S.damping[slotOf(s)] = p.damping; }
   world.substeps = substepsFor(p.stiffness, p.mass, world.dt);
   h.params = p;
 }

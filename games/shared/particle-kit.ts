@@ -6,7 +6,7 @@
  * counts, step timing, hiding the ball layer, click-or-drag input and test hooks only: no physics in here.
  */
 import { query } from 'bitecs';
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import type { WorldRenderer } from '@bitphysics/render-pixi';
 import { pointerOnCanvas } from './pointer';
 import { fmt as labFmt } from './lab-kit';
@@ -62,9 +62,9 @@ export function countParticles(world: PhysicsWorld, emitter = 0): number {
   const c = world.components;
   const ents = query(world, [c.Particle]);
   if (emitter === 0) return ents.length;
-  const em = c.Particle.emitter;
+  const em = c.Particle.emitter, slot = slotOf(emitter); // Particle.emitter holds the emitter's slot
   let n = 0;
-  for (let i = 0; i < ents.length; i++) if (em[ents[i]!] === emitter) n++;
+  for (let i = 0; i < ents.length; i++) if (em[ents[i]!] === slot) n++;
   return n;
 }
 
@@ -75,11 +75,11 @@ export function countParticles(world: PhysicsWorld, emitter = 0): number {
 export function particleCentroid(world: PhysicsWorld, emitter: number, out: Float64Array | number[]): number {
   const c = world.components;
   const ents = query(world, [c.Particle]);
-  const em = c.Particle.emitter, px = c.Position.x, py = c.Position.y;
+  const em = c.Particle.emitter, px = c.Position.x, py = c.Position.y, slot = slotOf(emitter);
   let n = 0, sx = 0, sy = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    if (emitter !== 0 && em[e] !== emitter) continue;
+    if (emitter !== 0 && em[e] !== slot) continue;
     sx += px[e]!; sy += py[e]!; n++;
   }
   out[0] = n > 0 ? sx / n : Number.NaN;

@@ -152,7 +152,7 @@ describe('WorldRenderer in the browser', () => {
     expect(results[6]).toMatch(/^RangeError: .*segmentColor must be a hex colour/);
     expect(results[7]).toMatch(/^TypeError: .*world must be a physics world/);
     expect(results[8]).toMatch(/^RangeError: .*alpha must be in \[0, 1\], got 2/);
-    expect(results[9]).toMatch(/^RangeError: .*eid must be a live entity id of the world, got 999999/);
+    expect(results[9]).toMatch(/^RangeError: .*eid must be an entity of this world .*got 999999/);
     expect(results[10]).toMatch(/^RangeError: .*color must be a hex colour/);
     expect(results[11]).toMatch(/^RangeError: .*trails\.width must be an integer in \[1, 64\], got 0/);
   });

@@ -6,14 +6,14 @@
  */
 import { describe, expect, test } from 'vitest';
 import { query } from 'bitecs';
-import { setPosition, setVelocity } from '@bitphysics/physics';
+import { setPosition, setVelocity, slotOf } from '@bitphysics/physics';
 import {
   C_GAME, FIELD, G_GAME, LINE_Y, MAX_HOLES, START, createBlackHoleGame, createPredictor, gravitationalConstant, holeHit,
   layoutHoles, predictPath, resolveBlackHoleOptions, restart, schwarzschildMass, schwarzschildRadius, setGScale, setLightSpeed,
   setThrust, stepBlackHole, type BlackHoleGame,
 } from '../../games/black-hole/rules';
 
-const shipAt = (g: BlackHoleGame) => [g.world.components.Position.x[g.ship]!, g.world.components.Position.y[g.ship]!];
+const shipAt = (g: BlackHoleGame) => [g.world.components.Position.x[slotOf(g.ship)]!, g.world.components.Position.y[slotOf(g.ship)]!];
 const place = (g: BlackHoleGame, x: number, y: number, vx = 0, vy = 0) => {
   setPosition(g.world, g.ship, [x, y]);
   setVelocity(g.world, g.ship, [vx, vy]);
@@ -23,7 +23,7 @@ const expectSchwarzschild = (g: BlackHoleGame) => {
   const G = g.world.laws.gravitationalConstant, c = g.params.c;
   expect(G).toBe(gravitationalConstant(g));
   for (let i = 0; i < g.holes.length; i++) {
-    const M = g.world.components.Attractor.mass[g.holes[i]!]!;
+    const M = g.world.components.Attractor.mass[slotOf(g.holes[i]!)]!;
     expect(M).toBe(g.holeMass[i]);
     expect(g.holeRadius[i]! / ((2 * G * M) / (c * c))).toBeCloseTo(1, 12);
   }
@@ -55,17 +55,17 @@ describe('Schwarzschild holes', () => {
     expectSchwarzschild(g);
     // The pull of a hole of radius r at distance d is c^2 r / (2 d^2), whatever G is.
     const h = g.holes[0]!, P = g.world.components.Position;
-    place(g, P.x[h]! + 3 * g.holeRadius[0]!, P.y[h]!);
-    const v0 = g.world.components.Velocity.x[g.ship]!;
+    place(g, P.x[slotOf(h)]! + 3 * g.holeRadius[0]!, P.y[slotOf(h)]!);
+    const v0 = g.world.components.Velocity.x[slotOf(g.ship)]!;
     stepBlackHole(g);
     // Only this hole matters much at 3 radii: compare with the sum over all holes.
     let ax = 0;
     for (let i = 0; i < g.holes.length; i++) {
-      const dx = P.x[g.holes[i]!]! - (P.x[h]! + 3 * g.holeRadius[0]!), dy = P.y[g.holes[i]!]! - P.y[h]!;
+      const dx = P.x[slotOf(g.holes[i]!)]! - (P.x[slotOf(h)]! + 3 * g.holeRadius[0]!), dy = P.y[slotOf(g.holes[i]!)]! - P.y[slotOf(h)]!;
       const d = Math.hypot(dx, dy);
       ax += (14 * 14 * g.holeRadius[i]!) / (2 * d * d) * (dx / d);
     }
-    expect((g.world.components.Velocity.x[g.ship]! - v0) / g.world.dt).toBeCloseTo(ax, 9);
+    expect((g.world.components.Velocity.x[slotOf(g.ship)]! - v0) / g.world.dt).toBeCloseTo(ax, 9);
   });
 
   test('layouts keep the holes inside the band, apart, and away from the start', () => {
@@ -73,13 +73,13 @@ describe('Schwarzschild holes', () => {
       const g = createBlackHoleGame({ seed, holes: 8 });
       const P = g.world.components.Position;
       for (let i = 0; i < g.holes.length; i++) {
-        const x = P.x[g.holes[i]!]!, y = P.y[g.holes[i]!]!, r = g.holeRadius[i]!;
+        const x = P.x[slotOf(g.holes[i]!)]!, y = P.y[slotOf(g.holes[i]!)]!, r = g.holeRadius[i]!;
         expect(x - r).toBeGreaterThan(0);
         expect(x + r).toBeLessThan(FIELD.width);
         expect(y + r).toBeLessThan(LINE_Y);
         expect(Math.hypot(x - START[0], y - START[1]) - r).toBeGreaterThanOrEqual(4);
         for (let j = 0; j < i; j++) {
-          expect(Math.hypot(x - P.x[g.holes[j]!]!, y - P.y[g.holes[j]!]!) - r - g.holeRadius[j]!).toBeGreaterThanOrEqual(3);
+          expect(Math.hypot(x - P.x[slotOf(g.holes[j]!)]!, y - P.y[slotOf(g.holes[j]!)]!) - r - g.holeRadius[j]!).toBeGreaterThanOrEqual(3);
         }
       }
     }
@@ -90,7 +90,7 @@ describe('rules', () => {
   test('entering a hole costs a life and puts the ship back at the start', () => {
     const g = createBlackHoleGame({ seed: 1 });
     const P = g.world.components.Position, h = g.holes[0]!;
-    place(g, P.x[h]! + g.holeRadius[0]! + 0.05, P.y[h]!, -3, 0);
+    place(g, P.x[slotOf(h)]! + g.holeRadius[0]! + 0.05, P.y[slotOf(h)]!, -3, 0);
     let event = 'none';
     for (let i = 0; i < 10 && event === 'none'; i++) event = stepBlackHole(g);
     expect(event).toBe('fell');
@@ -104,22 +104,22 @@ describe('rules', () => {
     const g = createBlackHoleGame({ seed: 1 });
     const P = g.world.components.Position, h = g.holes[0]!, r = g.holeRadius[0]!;
     // From 1.2 r left of the centre to 1.2 r right of it in one step: both ends outside the horizon.
-    expect(holeHit(g, P.x[h]! - 1.2 * r, P.y[h]!, P.x[h]! + 1.2 * r, P.y[h]!)).toBe(0);
-    expect(holeHit(g, P.x[h]! - 1.2 * r, P.y[h]! + 1.1 * r, P.x[h]! + 1.2 * r, P.y[h]! + 1.1 * r)).toBe(-1);
-    place(g, P.x[h]! - 1.2 * r, P.y[h]!, (2.4 * r) / g.world.dt, 0);
+    expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]!, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]!)).toBe(0);
+    expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]! + 1.1 * r, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]! + 1.1 * r)).toBe(-1);
+    place(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]!, (2.4 * r) / g.world.dt, 0);
     expect(stepBlackHole(g)).toBe('fell');
   });
 
   test('crossing the line scores the number of holes, adds a hole and lays them out again', () => {
     const g = createBlackHoleGame({ seed: 2, holes: 3 });
     const P = g.world.components.Position;
-    const before = g.holes.map((h) => [P.x[h], P.y[h]]);
+    const before = g.holes.map((h) => [P.x[slotOf(h)], P.y[slotOf(h)]]);
     // Straight up a column with no hole in it would take long; put the ship just below the line.
     place(g, 1, LINE_Y - 0.05, 0, 5);
     expect(stepBlackHole(g)).toBe('scored');
     expect(g.score).toBe(3);
     expect(g.holes.length).toBe(4);
-    expect(g.holes.map((h) => [P.x[h], P.y[h]])).not.toEqual(before.concat([[0, 0]]));
+    expect(g.holes.map((h) => [P.x[slotOf(h)], P.y[slotOf(h)]])).not.toEqual(before.concat([[0, 0]]));
     expect(shipAt(g)).toEqual([...START]);
     expect(g.lives).toBe(3);
     expectSchwarzschild(g);
@@ -136,7 +136,7 @@ describe('rules', () => {
       const e = stepBlackHole(g);
       expect(e).toBe('lost');
       expect(shipAt(g)).toEqual([...START]);
-      expect(g.world.components.Velocity.x[g.ship]).toBe(0);
+      expect(g.world.components.Velocity.x[slotOf(g.ship)]).toBe(0);
     }
     expect(g.lives).toBe(3);
     expect(g.score).toBe(0);
@@ -149,7 +149,7 @@ describe('rules', () => {
     const events: string[] = [];
     for (let k = 0; k < 3; k++) {
       const h = g.holes[0]!;
-      place(g, P.x[h]!, P.y[h]! + 0.5 * g.holeRadius[0]!);
+      place(g, P.x[slotOf(h)]!, P.y[slotOf(h)]! + 0.5 * g.holeRadius[0]!);
       events.push(stepBlackHole(g));
     }
     expect(events).toEqual(['fell', 'fell', 'over']);
@@ -187,7 +187,7 @@ describe('thrust, exhaust, prediction', () => {
     for (let i = 0; i < 20; i++) stepBlackHole(g);
     const V = g.world.components.Velocity;
     const ids = Array.from(query(g.world, [g.world.components.Particle]));
-    const rel = ids.reduce((s, e) => s + V.x[e]!, 0) / ids.length - V.x[g.ship]!;
+    const rel = ids.reduce((s, e) => s + V.x[e]!, 0) / ids.length - V.x[slotOf(g.ship)]!;
     expect(rel).toBeLessThan(-3);
     setThrust(g, 'none');
     for (let i = 0; i < 60; i++) stepBlackHole(g);
@@ -202,15 +202,15 @@ describe('thrust, exhaust, prediction', () => {
     setThrust(g, 'up');
     let inside = 0;
     for (let i = 0; i < 40; i++) {
-      place(g, P.x[h]!, P.y[h]! + g.holeRadius[0]! + 0.6);
-      g.world.components.Emitter.dirX[g.ship] = 0; g.world.components.Emitter.dirY[g.ship] = -1;
+      place(g, P.x[slotOf(h)]!, P.y[slotOf(h)]! + g.holeRadius[0]! + 0.6);
+      g.world.components.Emitter.dirX[slotOf(g.ship)] = 0; g.world.components.Emitter.dirY[slotOf(g.ship)] = -1;
       stepBlackHole(g);
       for (const e of query(g.world, [g.world.components.Particle])) {
-        if (Math.hypot(P.x[e]! - P.x[h]!, P.y[e]! - P.y[h]!) < g.holeRadius[0]!) inside++;
+        if (Math.hypot(P.x[e]! - P.x[slotOf(h)]!, P.y[e]! - P.y[slotOf(h)]!) < g.holeRadius[0]!) inside++;
       }
     }
     expect(inside).toBe(0);
-    expect(g.world.components.Emitter.spawned[g.ship]!).toBeGreaterThan(100);
+    expect(g.world.components.Emitter.spawned[slotOf(g.ship)]!).toBeGreaterThan(100);
   });
 
   test('the predicted path is the path the ship then takes with the input held', () => {
@@ -225,15 +225,15 @@ describe('thrust, exhaust, prediction', () => {
     expect([out[0], out[1]]).toEqual([8, 4]);
     for (let i = 1; i < n; i++) {
       expect(stepBlackHole(g)).toBe('none');
-      expect(P.x[g.ship]).toBe(out[2 * i]);
-      expect(P.y[g.ship]).toBe(out[2 * i + 1]);
+      expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]);
+      expect(P.y[slotOf(g.ship)]).toBe(out[2 * i + 1]);
     }
     // After a new layout the predictor follows the new holes.
     layoutHoles(g, 6);
     place(g, 8, 4, 2.5, 3);
     const m = predictPath(g, pred, out, 60);
     expect(pred.holes.length).toBe(6);
-    for (let i = 1; i < m; i++) { stepBlackHole(g); expect(P.x[g.ship]).toBe(out[2 * i]); }
+    for (let i = 1; i < m; i++) { stepBlackHole(g); expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]); }
     expect(() => predictPath(g, pred, out, 0)).toThrow(/steps must be an integer in \[1, 10000\], got 0/);
   });
 
@@ -241,12 +241,12 @@ describe('thrust, exhaust, prediction', () => {
     const g = createBlackHoleGame({ seed: 9, holes: 1 });
     const pred = createPredictor(g);
     const P = g.world.components.Position, h = g.holes[0]!;
-    place(g, P.x[h]! + g.holeRadius[0]! + 1, P.y[h]!, -4, 0);
+    place(g, P.x[slotOf(h)]! + g.holeRadius[0]! + 1, P.y[slotOf(h)]!, -4, 0);
     const out = new Float64Array(2 * 61);
     const n = predictPath(g, pred, out, 60);
     expect(n).toBeLessThan(30);
     const x = out[2 * (n - 1)]!, y = out[2 * (n - 1) + 1]!;
-    expect(Math.hypot(x - P.x[h]!, y - P.y[h]!)).toBeLessThan(g.holeRadius[0]!);
+    expect(Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!)).toBeLessThan(g.holeRadius[0]!);
   });
 
   test('bad options are rejected by name', () => {

@@ -5,7 +5,7 @@
  */
 import { describe, expect, test } from 'vitest';
 import { query } from 'bitecs';
-import { stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { stepMany, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import {
   BURST_SPARKS_PER_STEP, CRACKLES, MAX_HOLD, MAX_SHELLS, PALETTE, SKY, burstScale, createFireworks, launchShell, resolveFireworksOptions, setAutoShow, setShowDrag,
   setShowGenerations, setShowGravity, setShowSparks, stepFireworks, type FireworksShow,
@@ -145,7 +145,7 @@ describe('a launch', () => {
     expect(launchShell(world, show, 10, 10)).toBe(0);
     // Clamped target: x = 4 m, y = height - 3 m: the first shell peaks there.
     const { world: w, show: s } = createFireworks({ opening: 0, seed: 7, generations: 1 });
-    const e = launchShell(w, s, -50, 1e4);
+    const e = slotOf(launchShell(w, s, -50, 1e4));
     let top = 0;
     while (s.bursts === 0) { stepFireworks(w, s); if (s.shellCount) top = Math.max(top, w.components.Position.y[e]!); }
     expect(top).toBeGreaterThan(SKY.height - 3 - 0.7);

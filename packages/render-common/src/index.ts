@@ -9,4 +9,4 @@
  */
 export { parseColor, parsePalette, seededColor, hslToRgb, hash3 } from './colors.js';
 export type { ColorInput } from './colors.js';
-export { assertLiveEntity } from './entities.js';
+export { assertLiveEntity, entitySlot } from './entities.js';

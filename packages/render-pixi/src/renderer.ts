@@ -1,9 +1,9 @@
 import { Container, type Application, type Texture } from 'pixi.js';
 import { query } from 'bitecs';
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { BallLayer, type BallMode } from './balls.js';
 import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera.js';
-import { assertLiveEntity, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
+import { entitySlot, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugOptions } from './debug.js';
 import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles.js';
 import { createBallTexture } from './textures.js';
@@ -304,14 +304,17 @@ export class WorldRenderer {
   }
 
   /**
-   * Where ball `eid` was drawn in the last `render`, CSS px from the canvas' top-left corner (for
-   * labels that follow a ball, hit tests, tests), written into `out` (allocated if omitted).
-   * @returns `out`, or null if the entity has no display object (not a ball, or not rendered yet).
+   * Where ball `eid` (its handle, as the physics API returns it) was drawn in the last `render`, CSS px
+   * from the canvas' top-left corner (for labels that follow a ball, hit tests, tests), written into
+   * `out` (allocated if omitted).
+   * @returns `out`, or null if the entity has no display object (not a ball, not rendered yet, or
+   *   removed: a removed ball's handle never reports the entity that reuses its slot).
    * @throws RangeError if `eid` is not an integer.
    */
   drawnPosition(eid: number, out: Point2 = { x: 0, y: 0 }): Point2 | null {
     if (!Number.isInteger(eid)) throw new RangeError(`WorldRenderer.drawnPosition: eid must be an integer, got ${describe(eid)}`);
-    return this.balls.drawnAt(eid, out) ? out : null;
+    if (!isAlive(this.worldRef, eid)) return null;
+    return this.balls.drawnAt(slotOf(eid), out) ? out : null;
   }
 
   /**
@@ -322,15 +325,14 @@ export class WorldRenderer {
    *   TypeError if the colour is neither a number nor a string.
    */
   setColor(eid: number, color: ColorInput): void {
-    this.assertEntity('WorldRenderer.setColor', eid);
+    const slot = this.entitySlot('WorldRenderer.setColor', eid);
     const value = parseColor('WorldRenderer.setColor', 'color', color);
-    this.balls.setUserColor(this.worldRef, eid, value);
+    this.balls.setUserColor(this.worldRef, slot, value);
   }
 
   /** Returns entity `eid` to its seeded colour. @throws RangeError if `eid` is not a live entity. */
   clearColor(eid: number): void {
-    this.assertEntity('WorldRenderer.clearColor', eid);
-    this.balls.clearUserColor(this.worldRef, eid);
+    this.balls.clearUserColor(this.worldRef, this.entitySlot('WorldRenderer.clearColor', eid));
   }
 
   /**
@@ -339,8 +341,7 @@ export class WorldRenderer {
    * @throws RangeError if `eid` is not a live entity.
    */
   colorOf(eid: number): number {
-    this.assertEntity('WorldRenderer.colorOf', eid);
-    return this.balls.colorOf(this.worldRef, eid);
+    return this.balls.colorOf(this.worldRef, this.entitySlot('WorldRenderer.colorOf', eid));
   }
 
   /**
@@ -480,8 +481,9 @@ export class WorldRenderer {
     if (this.destroyed) throw new Error(`WorldRenderer.${where}: the renderer was destroyed`);
   }
 
-  private assertEntity(where: string, eid: number): void {
+  /** The slot of entity handle `eid` (per-entity methods take handles; the layers index by slot). */
+  private entitySlot(where: string, eid: number): number {
     this.assertAlive(where.replace(/^WorldRenderer\./, ''));
-    assertLiveEntity(where, this.worldRef, eid);
+    return entitySlot(where, this.worldRef, eid);
   }
 }

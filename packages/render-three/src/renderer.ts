@@ -3,9 +3,9 @@ import {
   type BufferGeometry, type Camera, type Intersection, type Material, type Object3D,
 } from 'three';
 import { hasComponent, query } from 'bitecs';
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { entityExists, handleOf, isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book.js';
-import { assertLiveEntity, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
+import { entitySlot, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugFrame, type DebugOptions } from './debug.js';
 import { EnvironmentLayer, type BoundaryStyle } from './environment.js';
 import { InstanceGroup, type GroupKind } from './groups.js';
@@ -132,7 +132,7 @@ export interface Renderer3DStats {
 
 /** Where `pick` hit an entity. */
 export interface PickResult {
-  /** The entity hit. */
+  /** The entity hit: its handle, for the physics API (index stores with slotOf). */
   eid: number;
   /** Hit point in world coordinates, m (on the body as drawn). */
   point: [number, number, number];
@@ -494,9 +494,9 @@ export class WorldRenderer3D {
    * @throws RangeError if `eid` is not a live entity; TypeError if geometry or material are not three.js
    *   ones; TypeError | RangeError on a bad scale or colour.
    */
-  setShape(eid: number, shape: BodyShape | null): void {
+  setShape(entity: number, shape: BodyShape | null): void {
     const where = 'WorldRenderer3D.setShape';
-    this.assertEntity(where, eid);
+    const eid = this.entitySlot(where, entity);
     const stamp = this.worldRef.spawnStamp[eid]!;
     if (shape === null) {
       this.shapeStamp[eid] = 0;
@@ -534,8 +534,8 @@ export class WorldRenderer3D {
    * mass or inertia changed a box's size) at the next render.
    * @throws RangeError if `eid` is not a live entity.
    */
-  refresh(eid: number): void {
-    this.assertEntity('WorldRenderer3D.refresh', eid);
+  refresh(entity: number): void {
+    const eid = this.entitySlot('WorldRenderer3D.refresh', entity);
     this.regroup(eid);
   }
 
@@ -546,9 +546,9 @@ export class WorldRenderer3D {
    * @throws RangeError if `eid` is not a live entity or the colour is out of range; TypeError if the
    *   colour is neither a number nor a string.
    */
-  setColor(eid: number, color: ColorInput): void {
+  setColor(entity: number, color: ColorInput): void {
     const where = 'WorldRenderer3D.setColor';
-    this.assertEntity(where, eid);
+    const eid = this.entitySlot(where, entity);
     const value = parseColor(where, 'color', color);
     this.userColor[eid] = value;
     this.userStamp[eid] = this.worldRef.spawnStamp[eid]!;
@@ -556,8 +556,8 @@ export class WorldRenderer3D {
   }
 
   /** Returns entity `eid` to its seeded colour. @throws RangeError if `eid` is not a live entity. */
-  clearColor(eid: number): void {
-    this.assertEntity('WorldRenderer3D.clearColor', eid);
+  clearColor(entity: number): void {
+    const eid = this.entitySlot('WorldRenderer3D.clearColor', entity);
     this.userStamp[eid] = 0;
     this.recolor(eid);
   }
@@ -567,8 +567,8 @@ export class WorldRenderer3D {
    * function of colorSeed, the id and its spawn stamp; the same as render-pixi's).
    * @throws RangeError if `eid` is not a live entity.
    */
-  colorOf(eid: number): number {
-    this.assertEntity('WorldRenderer3D.colorOf', eid);
+  colorOf(entity: number): number {
+    const eid = this.entitySlot('WorldRenderer3D.colorOf', entity);
     return this.computeColor(eid);
   }
 
@@ -577,9 +577,10 @@ export class WorldRenderer3D {
    * m, written into `out` (allocated if omitted). @returns `out`, or null if the entity is not shown.
    * @throws RangeError if `eid` is not an integer.
    */
-  drawnPosition(eid: number, out: number[] | Float64Array = [0, 0, 0]): number[] | Float64Array | null {
-    if (!Number.isInteger(eid)) throw new RangeError(`WorldRenderer3D.drawnPosition: eid must be an integer, got ${describe(eid)}`);
-    if (!this.book.has(eid)) return null;
+  drawnPosition(entity: number, out: number[] | Float64Array = [0, 0, 0]): number[] | Float64Array | null {
+    if (!Number.isInteger(entity)) throw new RangeError(`WorldRenderer3D.drawnPosition: eid must be an integer, got ${describe(entity)}`);
+    const eid = this.shownSlot(entity);
+    if (eid === 0) return null;
     out[0] = this.drawnPos[3 * eid]!; out[1] = this.drawnPos[3 * eid + 1]!; out[2] = this.drawnPos[3 * eid + 2]!;
     return out;
   }
@@ -588,16 +589,17 @@ export class WorldRenderer3D {
    * The orientation entity `eid` was drawn with by the last `render` (x, y, z, w), written into `out`.
    * @returns `out`, or null if the entity is not shown. @throws RangeError if `eid` is not an integer.
    */
-  drawnOrientation(eid: number, out: number[] | Float64Array = [0, 0, 0, 1]): number[] | Float64Array | null {
-    if (!Number.isInteger(eid)) throw new RangeError(`WorldRenderer3D.drawnOrientation: eid must be an integer, got ${describe(eid)}`);
-    if (!this.book.has(eid)) return null;
+  drawnOrientation(entity: number, out: number[] | Float64Array = [0, 0, 0, 1]): number[] | Float64Array | null {
+    if (!Number.isInteger(entity)) throw new RangeError(`WorldRenderer3D.drawnOrientation: eid must be an integer, got ${describe(entity)}`);
+    const eid = this.shownSlot(entity);
+    if (eid === 0) return null;
     for (let i = 0; i < 4; i++) out[i] = this.drawnQuat[4 * eid + i]!;
     return out;
   }
 
-  /** Whether entity `eid` is drawn now (has an instance). */
+  /** Whether entity `eid` (a handle) is drawn now (has an instance); false for a removed entity. */
   isShown(eid: number): boolean {
-    return this.book.has(eid);
+    return this.shownSlot(eid) !== 0;
   }
 
   /**
@@ -641,7 +643,8 @@ export class WorldRenderer3D {
     // Hits are in scene coordinates; the renderer's root may sit anywhere in the scene.
     const local = this.v3.copy(best.point);
     this.root.worldToLocal(local);
-    return { eid, point: [local.x / k, local.y / k, local.z / k], normal, distance: best.distance };
+    if (!entityExists(this.worldRef, eid)) return null; // removed since the last render
+    return { eid: handleOf(this.worldRef, eid), point: [local.x / k, local.y / k, local.z / k], normal, distance: best.distance };
   }
 
   /**
@@ -665,7 +668,7 @@ export class WorldRenderer3D {
 
   /** Whether entity `eid` has a trail now. */
   hasTrail(eid: number): boolean {
-    return this.trails !== null && this.trails.has(eid);
+    return this.trails !== null && isAlive(this.worldRef, eid) && this.trails.has(slotOf(eid));
   }
 
   /**
@@ -924,8 +927,16 @@ export class WorldRenderer3D {
     if (this.destroyed) throw new Error(`WorldRenderer3D.${where}: the renderer was destroyed`);
   }
 
-  private assertEntity(where: string, eid: number): void {
+  /** The slot of entity handle `entity` (per-entity methods take handles; the instance books index by slot). */
+  private entitySlot(where: string, entity: number): number {
     this.assertAlive(where.slice(where.indexOf('.') + 1));
-    assertLiveEntity(where, this.worldRef, eid);
+    return entitySlot(where, this.worldRef, entity);
+  }
+
+  /** The slot of entity handle `entity` if it is alive and drawn now, else 0 (a stale handle never finds the slot's new entity). */
+  private shownSlot(entity: number): number {
+    if (!isAlive(this.worldRef, entity)) return 0;
+    const slot = slotOf(entity);
+    return this.book.has(slot) ? slot : 0;
   }
 }
