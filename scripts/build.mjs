@@ -12,9 +12,8 @@ export const siteDir = join(root, 'dist', 'site');
 /** Workspace packages resolve to their TypeScript sources under this condition. */
 const conditions = ['bitphysics-source'];
 
-/** Every game folder: games/<name>/ holding main.ts and index.html. */
-export function gameFolders() {
-  const games = join(root, 'games');
+/** Every game folder: games/<name>/ holding main.ts and index.html. @param {string} games the games folder (default games/). */
+export function gameFolders(games = join(root, 'games')) {
   return readdirSync(games)
     .filter((name) => statSync(join(games, name)).isDirectory())
     .filter((name) => existsSync(join(games, name, 'main.ts')) && existsSync(join(games, name, 'index.html')))
@@ -26,10 +25,10 @@ export function gameFolders() {
  * folder name, sorted by category order then `order`. Written to dist/site/registry.json.
  * @throws Error naming the folder if a game.json is missing or lacks a title or summary.
  */
-export function readRegistry() {
+export function readRegistry(games = join(root, 'games')) {
   const categories = ['Games', 'Labs', 'Benchmarks'];
-  const entries = gameFolders().map((folder) => {
-    const file = join(root, 'games', folder, 'game.json');
+  const entries = gameFolders(games).map((folder) => {
+    const file = join(games, folder, 'game.json');
     if (!existsSync(file)) throw new Error(`games/${folder}/game.json is missing`);
     const meta = JSON.parse(readFileSync(file, 'utf8'));
     if (typeof meta.title !== 'string' || typeof meta.summary !== 'string') {
