@@ -118,6 +118,7 @@ export type { JointState, JointSettings, JointBreakEvents } from './joints/state
 export { createRope } from './joints/rope.js';
 export type { RopeOptions, Rope } from './joints/rope.js';
 export { createCloth, clothPointIndex } from './cloth/create.js';
+export { pinClothPoint } from './cloth/pin.js';
 export type { ClothOptions, Cloth } from './cloth/create.js';
 export { ClothLinkKind } from './cloth/store.js';
 export type { ClothLinkStore } from './cloth/store.js';

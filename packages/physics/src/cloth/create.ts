@@ -1,6 +1,7 @@
 import { addComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { addBody, createEntity } from '../bodies.js';
+import { addBody, createSlot } from '../bodies.js';
+import { currentHandle, slotOf } from '../handles.js';
 import { ensureJointArrays } from '../joints/state.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { ClothLinkKind } from './store.js';
@@ -33,9 +34,9 @@ export interface ClothOptions {
 
 /** What `createCloth` made. */
 export interface Cloth {
-  /** Point bodies, row-major from the top-left: point (row, column) is points[row * columns + column]. */
+  /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. */
   readonly points: Int32Array;
-  /** Link entities: structural first, then shear, then bending. */
+  /** Link entities' handles: structural first, then shear, then bending. */
   readonly links: Int32Array;
   readonly columns: number;
   readonly rows: number;
@@ -108,15 +109,15 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   ensureJointArrays(world.joints, world.capacity);
   const att = world.joints.attached;
   const link = (i: number, j: number, comp: number, kind: number, tears: boolean): void => {
-    const a = points[i]!, b = points[j]!;
-    const e = createEntity(world);
+    const a = slotOf(points[i]!), b = slotOf(points[j]!);
+    const e = createSlot(world, 'createCloth');
     addComponent(world, e, C.ClothLink);
     const L = C.ClothLink;
     L.a[e] = a; L.b[e] = b;
     L.restLength[e] = Math.hypot(C.Position.x[b]! - C.Position.x[a]!, C.Position.y[b]! - C.Position.y[a]!);
     L.compliance[e] = comp; L.tearStretch[e] = tears ? tear : Infinity; L.kind[e] = kind;
     att[a] = att[a]! + 1; att[b] = att[b]! + 1;
-    links[k++] = e;
+    links[k++] = currentHandle(world, e);
   };
   for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) {
     const i = r * cols + c;
@@ -135,7 +136,7 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
     if (r + 2 < rows) link(i, i + 2 * cols, bend, ClothLinkKind.Bending, false);
   }
   if (tear !== Infinity && bend !== null) {
-    for (let i = linkCount - ((cols - 2) * rows + (rows - 2) * cols); i < linkCount; i++) C.ClothLink.tearStretch[links[i]!] = 2 * tear;
+    for (let i = linkCount - ((cols - 2) * rows + (rows - 2) * cols); i < linkCount; i++) C.ClothLink.tearStretch[slotOf(links[i]!)] = 2 * tear;
   }
   world.cloth.version++;
   return { points, links, columns: cols, rows };

@@ -2,6 +2,7 @@ import { removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { pushBreak } from '../joints/state.js';
+import { currentHandle } from '../handles.js';
 
 /**
  * The cloth solver (stage 6, `constraints`): every `ClothLink` is a distance constraint solved on
@@ -88,7 +89,7 @@ export function clothSystem(world: PhysicsWorld): void {
     if (strain > T[l]!) {
       const e = E[l]!;
       (doomed ??= []).push(e);
-      pushBreak(world.joints.breaks, e, c.ClothLink.a[e]!, c.ClothLink.b[e]!, Math.abs(lam[l]!) * ih2, 0, strain);
+      pushBreak(world.joints.breaks, currentHandle(world, e), currentHandle(world, c.ClothLink.a[e]!), currentHandle(world, c.ClothLink.b[e]!), Math.abs(lam[l]!) * ih2, 0, strain);
     }
   }
   cl.maxStretch = maxStretch;

@@ -3,6 +3,7 @@ import { detachClothLink } from '../cloth/solver.js';
 import type { PhysicsWorld } from '../world.js';
 import { createSlot } from '../bodies.js';
 import { wakeIsland } from '../collision/sleep.js';
+import { currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
 import { ensureJointArrays, IMPULSES } from './state.js';
@@ -35,14 +36,12 @@ const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque'] as const;
 interface Ends { a: number; b: number }
 
 function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown): number {
-  if (typeof id !== 'number' || !Number.isInteger(id) || id < 1 || !entityExists(world, id)) {
-    throw new RangeError(`${where}: ${param} must be a body of this world, got ${describe(id)} (no such entity; removed?)`);
-  }
+  const slot = resolveEntity(world, id, where, param);
   const c = world.components;
-  if (!hasComponent(world, id, c.Position) || !hasComponent(world, id, c.Mass) || !hasComponent(world, id, c.Angle)) {
-    throw new RangeError(`${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${id}`);
+  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Angle)) {
+    throw new RangeError(`${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`);
   }
-  return id;
+  return slot;
 }
 
 function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions): Ends {
@@ -123,6 +122,11 @@ function makeJoint(world: PhysicsWorld, type: JointTypeCode, ends: Ends, anchorA
   return j;
 }
 
+/** The handle of the joint in `slot` (what the add functions return). */
+function handle(world: PhysicsWorld, slot: number): number {
+  return currentHandle(world, slot);
+}
+
 /** Options of `addDistanceJoint`. */
 export interface DistanceJointOptions extends JointBaseOptions {
   /** Anchor on A, world point, m. Default A's centre; required when A is the world. */
@@ -180,7 +184,7 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
   J.flags[j] = (hertz > 0 ? JointFlag.Spring : 0) | (minL < maxL ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
-  return j;
+  return handle(world, j);
 }
 
 /** Options of `addRevoluteJoint`. */
@@ -228,7 +232,7 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
   if (limit) { J.lower[j] = options.lowerAngle!; J.upper[j] = options.upperAngle!; }
   J.motorSpeed[j] = speed; J.maxMotorForce[j] = torque; J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
   J.flags[j] = (limit ? JointFlag.Limit : 0) | (torque > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
-  return j;
+  return handle(world, j);
 }
 
 /** Options of `addPrismaticJoint`. */
@@ -276,7 +280,7 @@ export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOp
   if (limit) { J.lower[j] = options.lower!; J.upper[j] = options.upper!; }
   J.motorSpeed[j] = speed; J.maxMotorForce[j] = force; J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
   J.flags[j] = (limit ? JointFlag.Limit : 0) | (force > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
-  return j;
+  return handle(world, j);
 }
 
 function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number, number]): void {
@@ -315,7 +319,7 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
   const j = makeJoint(world, JointType.Weld, ends, p, p, options);
   const J = world.components.Joint;
   J.hertz[j] = vals[0]!; J.dampingRatio[j] = vals[1]!; J.angularHertz[j] = vals[2]!; J.angularDampingRatio[j] = vals[3]!;
-  return j;
+  return handle(world, j);
 }
 
 /** Options of `addWheelJoint`. */
@@ -364,7 +368,7 @@ export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): 
   if (limit) { J.lower[j] = options.lower!; J.upper[j] = options.upper!; }
   J.hertz[j] = hertz; J.dampingRatio[j] = zeta; J.motorSpeed[j] = speed; J.maxMotorForce[j] = torque;
   J.flags[j] = (limit ? JointFlag.Limit : 0) | (torque > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
-  return j;
+  return handle(world, j);
 }
 
 /** Options of `addMouseJoint`. */
@@ -407,18 +411,19 @@ export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): 
   const J = world.components.Joint;
   J.hertz[j] = hertz; J.dampingRatio[j] = zeta; J.maxForce[j] = maxForce;
   J.flags[j] = JointFlag.Spring;
-  return j;
+  return handle(world, j);
 }
 
 function requireJoint(where: string, world: PhysicsWorld, joint: unknown, types?: readonly JointTypeCode[]): number {
   const J = world.components.Joint;
-  if (typeof joint !== 'number' || !Number.isInteger(joint) || joint < 1 || !entityExists(world, joint) || !hasComponent(world, joint, J)) {
-    throw new RangeError(`${where}: joint must be a joint of this world, got ${describe(joint)} (no such joint; removed or broken?)`);
+  const slot = resolveEntity(world, joint, where, 'joint');
+  if (world.dimensions !== 2 || !hasComponent(world, slot, J)) {
+    throw new RangeError(`${where}: joint must be a joint of this world, got ${describe(joint)} (not a joint)`);
   }
-  if (types && !types.includes(J.type[joint] as JointTypeCode)) {
-    throw new RangeError(`${where}: joint must be a ${types.map((t) => JOINT_TYPE_NAMES[t]).join(' or ')} joint, got a ${JOINT_TYPE_NAMES[J.type[joint]!]} joint`);
+  if (types && !types.includes(J.type[slot] as JointTypeCode)) {
+    throw new RangeError(`${where}: joint must be a ${types.map((t) => JOINT_TYPE_NAMES[t]).join(' or ')} joint, got a ${JOINT_TYPE_NAMES[J.type[slot]!]} joint`);
   }
-  return joint;
+  return slot;
 }
 
 function wakeJoint(world: PhysicsWorld, j: number): void {
@@ -427,20 +432,23 @@ function wakeJoint(world: PhysicsWorld, j: number): void {
   wakeIsland(world, J.b[j]!);
 }
 
-/** Whether `id` is a live joint of this world. */
+/** Whether `id` is the handle of a live joint (or cloth link) of this world. */
 export function isJoint(world: PhysicsWorld, id: number): boolean {
-  return world.dimensions === 2 && typeof id === 'number' && Number.isInteger(id) && id >= 1 && entityExists(world, id) && hasComponent(world, id, world.components.Joint);
+  if (world.dimensions !== 2 || typeof id !== 'number' || !Number.isInteger(id) || id < 1) return false;
+  const slot = id % SLOT_RANGE;
+  if (slot < 1 || slot > world.capacity || !entityExists(world, slot) || currentHandle(world, slot) !== id) return false;
+  return hasComponent(world, slot, world.components.Joint) || hasComponent(world, slot, world.components.ClothLink);
 }
 
 /**
  * Removes a joint or a cloth link (the bodies of a joint wake).
- * @throws RangeError if `joint` is not a live joint or cloth link.
+ * @throws RangeError if `joint` is not the handle of a live joint or cloth link.
  */
 export function removeJoint(world: PhysicsWorld, joint: number): void {
-  if (world.dimensions === 2 && typeof joint === 'number' && Number.isInteger(joint) && joint >= 1 && entityExists(world, joint)
-    && hasComponent(world, joint, world.components.ClothLink)) {
-    detachClothLink(world, joint);
-    removeEntity(world, joint);
+  const slot = resolveEntity(world, joint, 'removeJoint', 'joint');
+  if (world.dimensions === 2 && hasComponent(world, slot, world.components.ClothLink)) {
+    detachClothLink(world, slot);
+    removeEntity(world, slot);
     return;
   }
   removeJointUnchecked(world, requireJoint('removeJoint', world, joint));

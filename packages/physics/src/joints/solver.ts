@@ -4,6 +4,7 @@ import { BodyType } from '../collision/broadphase.js';
 import { JointFlag, JointType } from './store.js';
 import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state.js';
 import { removeJointUnchecked } from './remove.js';
+import { currentHandle } from '../handles.js';
 
 /**
  * The joint solver: Box2D v3's soft-step joints (Catto, "Solver2D", 2024, and "Soft Constraints",
@@ -743,7 +744,8 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + ILX + s]!;
     if (force > J.breakForce[j]! || torque > J.breakTorque[j]! || stretch > J.breakStretch[j]!) {
       (doomed ??= []).push(j);
-      pushBreak(js.breaks, j, J.a[j]!, J.b[j]!, force, torque, stretch);
+      const a = J.a[j]!;
+      pushBreak(js.breaks, currentHandle(world, j), a === 0 ? 0 : currentHandle(world, a), currentHandle(world, J.b[j]!), force, torque, stretch);
     }
   }
   js.stats.maxError = maxError; js.stats.maxErrorJoint = maxJoint;

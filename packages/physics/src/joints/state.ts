@@ -18,11 +18,11 @@ export const IMPULSES = 7;
 export interface JointBreakEvents {
   /** Events in use. */
   count: number;
-  /** The joint entity that broke (it no longer exists). */
-  joint: Int32Array;
-  /** Its bodies A (0 = the world) and B. */
-  a: Int32Array;
-  b: Int32Array;
+  /** Handle of the joint or cloth link that broke (it no longer exists). */
+  joint: Float64Array;
+  /** Handles of its bodies A (0 = the world) and B. */
+  a: Float64Array;
+  b: Float64Array;
   /** Its constraint force, N, and torque, N m, in the step it broke. */
   force: Float64Array;
   torque: Float64Array;
@@ -99,7 +99,7 @@ export function createJointState(): JointState {
     bodyClass: new Uint8Array(0),
     stamp: 0,
     breaks: {
-      count: 0, joint: new Int32Array(16), a: new Int32Array(16), b: new Int32Array(16),
+      count: 0, joint: new Float64Array(16), a: new Float64Array(16), b: new Float64Array(16),
       force: new Float64Array(16), torque: new Float64Array(16), stretch: new Float64Array(16),
     },
     breaksStep: -1,
@@ -131,9 +131,8 @@ export function ensureRows(state: JointState, n: number): void {
 export function pushBreak(ev: JointBreakEvents, joint: number, a: number, b: number, force: number, torque: number, stretch: number): void {
   if (ev.count >= ev.joint.length) {
     const n = ev.joint.length * 2;
-    const gi = (o: Int32Array) => { const x = new Int32Array(n); x.set(o); return x; };
     const gf = (o: Float64Array) => { const x = new Float64Array(n); x.set(o); return x; };
-    ev.joint = gi(ev.joint); ev.a = gi(ev.a); ev.b = gi(ev.b);
+    ev.joint = gf(ev.joint); ev.a = gf(ev.a); ev.b = gf(ev.b);
     ev.force = gf(ev.force); ev.torque = gf(ev.torque); ev.stretch = gf(ev.stretch);
   }
   const i = ev.count++;
