@@ -196,6 +196,37 @@ describe('WorldRenderer in the browser', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('never draws a new entity with a removed one\'s state: the old handle is refused, the slot\'s new ball has its own', async () => {
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as Host;
+      game.paused = true;
+      const old = game.spawn(3, 9);
+      game.renderer.setColor(old, 0xff0000);
+      game.renderer.render(1);
+      game.remove(old);
+      const fresh = game.spawn(15, 4); // bitecs reuses the slot at once
+      game.renderer.render(1);
+      const slot = fresh % 2 ** 25; // slotOf, in the page
+      const P = game.world.components.Position!, cam = game.renderer.camera;
+      let refused = '';
+      try { game.renderer.setColor(old, 0x00ff00); } catch (e) { refused = String(e); }
+      const p = game.renderer.drawnPosition(fresh)!;
+      return {
+        sameSlot: old % 2 ** 25 === slot, differ: fresh !== old, refused,
+        oldDrawn: game.renderer.drawnPosition(old), freshColor: game.renderer.colorOf(fresh),
+        drawn: [p.x, p.y], expected: [cam.toScreenX(P.x![slot]!), cam.toScreenY(P.y![slot]!)],
+      };
+    });
+    expect(r.sameSlot).toBe(true);
+    expect(r.differ).toBe(true);
+    expect(r.refused).toMatch(/RangeError: WorldRenderer.setColor: eid refers to a removed entity/);
+    expect(r.oldDrawn).toBeNull();
+    expect(r.freshColor).not.toBe(0xff0000); // the user colour of the removed ball does not carry over
+    expect(r.drawn[0]).toBeCloseTo(r.expected[0]!, 6);
+    expect(r.drawn[1]).toBeCloseTo(r.expected[1]!, 6);
+    expect(g.errors).toEqual([]);
+  });
+
   it('keeps seeded colours deterministic and lets users set and clear their own', async () => {
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as Host;
