@@ -26,6 +26,7 @@ export function assertTimeStep(where: string, dt: unknown): asserts dt is number
   if (dt > MAX_TIME_STEP) throw new RangeError(`${where}: dt must be <= ${MAX_TIME_STEP} s (MAX_TIME_STEP), got ${dt}`);
 }
 
+/** Options of `createPhysicsWorld`; every field is optional (its default is given), units SI. */
 export interface PhysicsWorldOptions {
   /** 2 for a planar world (x, y), 3 for a spatial one (x, y, z). Default 2. */
   dimensions?: 2 | 3;
