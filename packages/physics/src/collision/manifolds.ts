@@ -37,6 +37,15 @@ export interface ManifoldBuffer {
   /** Effective rotational mass of the rolling constraint, kg m^2, and its accumulated angular impulse, N m s. */
   rollingMass: Float64Array;
   rollingImpulse: Float64Array;
+  /**
+   * Inverse of the 2 x 2 normal effective-mass matrix of a two-point manifold (rows 11, 12, 22, 1/kg),
+   * for the block solve; `blockValid` 0 when the points are too close to independent (the matrix is
+   * ill-conditioned) and are solved one after the other instead.
+   */
+  block11: Float64Array;
+  block12: Float64Array;
+  block22: Float64Array;
+  blockValid: Uint8Array;
   /** 1 if the pair touched at the end of the step (a point carried a normal impulse, or overlapped). */
   touching: Uint8Array;
   /** Spawn stamps of the two shape entities, to validate the warm start. */
@@ -67,7 +76,7 @@ export interface ManifoldBuffer {
   relativeVelocity: Float64Array;
 }
 
-const ROW_FLOAT = ['nx', 'ny', 'friction', 'frictionBound', 'restitution', 'rolling', 'rollingMass', 'rollingImpulse'] as const;
+const ROW_FLOAT = ['nx', 'ny', 'friction', 'frictionBound', 'restitution', 'rolling', 'rollingMass', 'rollingImpulse', 'block11', 'block12', 'block22'] as const;
 const ROW_INT = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'ia', 'ib'] as const;
 const POINT_FLOAT = [
   'px', 'py', 'rAx', 'rAy', 'rBx', 'rBy', 'separation', 'normalMass', 'tangentMass', 'normalImpulse', 'tangentImpulse',
@@ -83,6 +92,7 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
     count: 0, capacity,
     shapeA: i(), shapeB: i(), bodyA: i(), bodyB: i(), ia: i(), ib: i(), pointCount: new Uint8Array(capacity),
     nx: f(), ny: f(), friction: f(), frictionBound: f(), restitution: f(), rolling: f(), rollingMass: f(), rollingImpulse: f(),
+    block11: f(), block12: f(), block22: f(), blockValid: new Uint8Array(capacity),
     touching: new Uint8Array(capacity), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
     id: new Int32Array(2 * capacity), px: p(), py: p(), rAx: p(), rAy: p(), rBx: p(), rBy: p(), separation: p(),
     normalMass: p(), tangentMass: p(), normalImpulse: p(), tangentImpulse: p(), maxNormalImpulse: p(), totalNormalImpulse: p(),
@@ -106,7 +116,7 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   for (const k of ROW_FLOAT) grow(k, 1);
   for (const k of ROW_INT) grow(k, 1);
   for (const k of POINT_FLOAT) grow(k, 2);
-  grow('pointCount', 1); grow('touching', 1); grow('stampA', 1); grow('stampB', 1); grow('id', 2);
+  grow('pointCount', 1); grow('touching', 1); grow('blockValid', 1); grow('stampA', 1); grow('stampB', 1); grow('id', 2);
   buf.capacity = cap;
 }
 
@@ -243,6 +253,8 @@ export interface ShapeCollisionState {
   /** Per entity: stamp of the step in which the body was classified; the counter. */
   bodyMarks: Uint32Array;
   bodyMark: number;
+  /** Scratch list of the bodies that may sleep (shape-islands.ts). */
+  sleepList: Uint32Array;
   /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s, and its angle at the start of the step, rad. */
   bodyW: Float64Array;
   bodyAngle0: Float64Array;
@@ -272,6 +284,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     bodyMark: 0,
     bodyW: new Float64Array(0),
     bodyAngle0: new Float64Array(0),
+    sleepList: new Uint32Array(0),
   };
 }
 

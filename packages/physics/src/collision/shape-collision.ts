@@ -136,7 +136,7 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
     }
     reach = Math.sqrt(reach) + r;
     const size = 0.5 * Math.min(x1 - x0, y1 - y0) + r;
-    const spec = spec0 < 0.25 * size ? spec0 : 0.25 * size;
+    const spec = spec0 < SPECULATIVE_FRACTION * size ? spec0 : SPECULATIVE_FRACTION * size;
     sc.spec[i] = spec;
     let pad = r + (spec < halfSpec ? spec : halfSpec);
     if (moving) {
@@ -146,6 +146,13 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
     sc.minX[i] = x0 - pad; sc.minY[i] = y0 - pad; sc.maxX[i] = x1 + pad; sc.maxY[i] = y1 + pad;
   }
 }
+
+/**
+ * Speculative distance of a shape as a fraction of its size (half its smaller extent), at most the
+ * world's `speculativeDistance`: 0.02 m for a 1 m box, Box2D's 4 linear slops, so neighbours standing
+ * 5 cm apart in a row do not become contacts; smaller shapes get proportionally less.
+ */
+const SPECULATIVE_FRACTION = 0.04;
 
 /** Colliders wider than this many times the mean box width skip the grid. */
 const OVERSIZED_FACTOR = 4;
@@ -296,7 +303,12 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     let ba = sc.body[i]!, bb = sc.body[j]!;
     if (ba === bb) continue;
     const ta = type[ba]!, tb = type[bb]!;
-    if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) continue;
+    if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) {
+      // A kinematic body reaching a sleeping one wakes it (for the next step).
+      if (ta === BodyType.Kinematic && tb === BodyType.Sleeping) st.wake.push(bb);
+      else if (tb === BodyType.Kinematic && ta === BodyType.Sleeping) st.wake.push(ba);
+      continue;
+    }
     const aBall = ea === ba && !(S.body.length > ea && hasComponent(world, ea, c.Shape));
     const bBall = eb === bb && !(S.body.length > eb && hasComponent(world, eb, c.Shape));
     if (aBall && bBall) continue; // ball-ball: narrowphase.ts

@@ -2,6 +2,7 @@ import { addComponent, hasComponent, removeComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query, Not } from '../query.js';
 import { joinJointIslands, markJointSupport } from '../joints/islands.js';
+import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
 import { resolveKind } from '../handles.js';
 
 /**
@@ -94,7 +95,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   const sl = cs.sleep;
   const c = world.components;
   if (!sl.enabled) { cs.stats.sleeping = 0; return; }
-  const bodies = query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const bodies = withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]));
   const n = bodies.length;
   const rest = sl.restTime, parent = sl.parent, islandRest = sl.islandRest;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
@@ -109,6 +110,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     supported[rows.a[i]!] = stamp; supported[rows.b[i]!] = stamp;
   }
   markJointSupport(world, supported, stamp);
+  markShapeSupport(world, supported, stamp);
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
@@ -138,6 +140,8 @@ export function sleepSystem(world: PhysicsWorld): void {
     const ra = find(a), rb = find(b);
     if (ra !== rb) parent[ra] = rb;
   }
+  // ... over shape contacts ...
+  joinShapeIslands(world, parent, find);
   // ... and over joints.
   joinJointIslands(world, bodies, rest, parent);
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
