@@ -6,16 +6,19 @@ import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 
 /**
- * The largest inverse moment of inertia of body e, 1/(kg m^2): the scalar `Inertia.inv`, or for a 3D
- * body with a principal inertia tensor the largest of its inverse principal moments.
+ * The largest inverse moment of inertia of body e, 1/(kg m^2), that sets its damping rate k h / I:
+ * in 2D the scalar `Inertia.inv`; in 3D the largest of `Inertia.inv` and the inverse principal moments
+ * of `InertiaTensor` (a body has one or the other; the other reads 0, or what an earlier entity of the
+ * slot left, which can only make the rate look larger: the stiff update is exact for the damping
+ * alone, so that costs at most accuracy in the coupling, never stability). The torque law and the
+ * stiff update use this same rate, so they always agree on the regime.
  */
-function largestInverseInertia(world: PhysicsWorld, e: number, tensors: boolean): number {
+function largestInverseInertia(world: PhysicsWorld, e: number, is2D: boolean): number {
   const c = world.components;
-  if (tensors && hasComponent(world, e, c.InertiaTensor)) {
-    const T = c.InertiaTensor;
-    return Math.max(T.invX[e]!, T.invY[e]!, T.invZ[e]!);
-  }
-  return c.Inertia.inv[e]!;
+  const ii = c.Inertia.inv[e]!;
+  if (is2D) return ii;
+  const T = c.InertiaTensor;
+  return Math.max(ii, T.invX[e]!, T.invY[e]!, T.invZ[e]!);
 }
 
 /**
@@ -35,12 +38,13 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const k = c.AngularDamping.k, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
   const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z;
   const h = world.h;
-  const tensors = world.dimensions === 3;
+  const is2D = world.dimensions === 2;
+  const ii = c.Inertia.inv;
   let stiff = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const d = k[e]!;
-    if (d * largestInverseInertia(world, e, tensors) * h >= STIFF_RATE) { stiff++; continue; }
+    if (d * (is2D ? ii[e]! : largestInverseInertia(world, e, false)) * h >= STIFF_RATE) { stiff++; continue; }
     tx[e] = tx[e]! - d * wx[e]!; ty[e] = ty[e]! - d * wy[e]!; tz[e] = tz[e]! - d * wz[e]!;
   }
   if (stiff > 0) { const s = dissipationState(world); s.angularSeen = s.epoch; }
@@ -71,7 +75,7 @@ export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const d = k[e]!;
-    if (d * largestInverseInertia(world, e, !is2D) * h < STIFF_RATE) continue;
+    if (d * largestInverseInertia(world, e, is2D) * h < STIFF_RATE) continue;
     const ox = wx[e]!, oy = wy[e]!, oz = wz[e]!;
     if (is2D) {
       const nz = oz * linearDecay(d * c.Inertia.inv[e]! * h);

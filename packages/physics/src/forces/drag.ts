@@ -2,6 +2,7 @@ import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 import { windAt } from './settings.js';
+import { reportNonFinite } from '../errors.js';
 import { dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 
 const wind = new Float64Array(3);
@@ -94,6 +95,7 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
  * multiplied by exp(-k h / m) (linear) and divided by 1 + k |v - u| h / m (quadratic), and the body is
  * moved from where the (sub)step began with the damped velocity: x = x_start + h v. Both factors lie
  * in [0, 1], so the velocity relative to the air is never reversed or amplified.
+ * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
  */
 export const stiffDragSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);
@@ -107,13 +109,16 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, inv = c.Mass.inv;
   const is2D = world.dimensions === 2;
   wind[0] = 0; wind[1] = 0; wind[2] = 0;
+  // x * 0 is NaN exactly when x is not finite: the running check of what this system writes.
+  let check = 0;
   const damp = (e: number, factor: number): void => {
     if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
     const ux = wind[0]!, uy = wind[1]!, uz = wind[2]!;
     const nx = ux + (vx[e]! - ux) * factor, ny = uy + (vy[e]! - uy) * factor;
     vx[e] = nx; vy[e] = ny;
     px[e] = ox[e]! + h * nx; py[e] = oy[e]! + h * ny;
-    if (!is2D) { const nz = uz + (vz[e]! - uz) * factor; vz[e] = nz; pz[e] = oz[e]! + h * nz; }
+    check += nx * 0 + ny * 0 + px[e]! * 0 + py[e]! * 0;
+    if (!is2D) { const nz = uz + (vz[e]! - uz) * factor; vz[e] = nz; pz[e] = oz[e]! + h * nz; check += pz[e]! * 0; }
   };
   if (linear) {
     const ents = query(world, [c.LinearDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
@@ -123,6 +128,7 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
       const lambda = k[e]! * inv[e]! * h;
       if (lambda >= STIFF_RATE) damp(e, linearDecay(lambda));
     }
+    if (check !== 0) reportNonFinite(world, ents, 'integrate');
   }
   if (quadratic) {
     const ents = query(world, [c.QuadraticDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
@@ -134,6 +140,7 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
       const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = is2D ? 0 : vz[e]! - wind[2]!;
       damp(e, quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h));
     }
+    if (check !== 0) reportNonFinite(world, ents, 'integrate');
   }
 };
 

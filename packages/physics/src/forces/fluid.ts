@@ -1,5 +1,6 @@
 import { Not, query } from '../query.js';
 import { dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { reportNonFinite } from '../errors.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 
@@ -100,6 +101,7 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
  * forces/dissipation.ts). A body whose fluid drag added no force this (sub)step has its velocity
  * divided by 1 + k |v| h / m, k the drag coefficient times the submerged fraction decided at the
  * start of the (sub)step, and moves from where the (sub)step began with that velocity: x = x_start + h v.
+ * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
  */
 export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);
@@ -111,6 +113,7 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   const is2D = world.dimensions === 2;
+  let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     if (stamp[e] !== epoch || stiffK[e] === 0) continue;
@@ -118,6 +121,8 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
     const f = quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h);
     vx[e] = x * f; vy[e] = y * f;
     px[e] = ox[e]! + h * vx[e]!; py[e] = oy[e]! + h * vy[e]!;
-    if (!is2D) { vz[e] = z * f; pz[e] = oz[e]! + h * vz[e]!; }
+    check += vx[e]! * 0 + vy[e]! * 0 + px[e]! * 0 + py[e]! * 0;
+    if (!is2D) { vz[e] = z * f; pz[e] = oz[e]! + h * vz[e]!; check += pz[e]! * 0; }
   }
+  if (check !== 0) reportNonFinite(world, ents, 'integrate');
 };

@@ -15,7 +15,8 @@ import { advanceOrientations, applyTorques } from './rotation.js';
  * Integration (2006), ch. I.1 and II.5 (splitting).
  *
  * Saves each body's position into `PreviousPosition` first. Throws NonFiniteStateError if a body's
- * new state is NaN or infinite.
+ * new velocity or position is NaN or infinite (x * 0 is NaN exactly then, so the positions join the
+ * running check without overflowing it).
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
@@ -42,7 +43,7 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       ox[e] = x; oy[e] = y;
       vx[e] = nvx; vy[e] = nvy;
       px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
-      check += nvx + nvy;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
     for (let i = 0; i < ents.length; i++) {
@@ -55,7 +56,7 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       ox[e] = x; oy[e] = y; oz[e] = z;
       vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
       px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
-      check += nvx + nvy + nvz;
+      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
@@ -76,14 +77,14 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
         ox[e] = x; oy[e] = y;
         vx[e] = nvx; vy[e] = nvy;
         px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
-        check += nvx + nvy;
+        check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
       }
     } else {
       for (let e = 1; e <= n; e++) {
         const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
         vx[e] = nvx; vy[e] = nvy;
         px[e] = px[e]! + (nvx - hx) * h; py[e] = py[e]! + (nvy - hy) * h;
-        check += nvx + nvy;
+        check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
       }
     }
   } else if (is2D) {
@@ -94,7 +95,7 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       if (save) { ox[e] = x; oy[e] = y; }
       vx[e] = nvx; vy[e] = nvy;
       px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
-      check += nvx + nvy;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
     for (let i = 0; i < n; i++) {
@@ -104,7 +105,7 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       if (save) { ox[e] = x; oy[e] = y; oz[e] = z; }
       vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
       px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
-      check += nvx + nvy + nvz;
+      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');

@@ -10,113 +10,184 @@ import type { StageName, System } from './stages.js';
  * spread it to another body (the collision solver couples bodies; a force law reads other bodies).
  *
  * After `forces`: the force and torque accumulators. After every stage (`forces` included) that ran
- * a system not marked `trustFiniteOutput`: Velocity, Position, and the angular state (2D:
- * AngularVelocity.z and Angle.value; 3D: the three components of each and the four of Orientation).
+ * a system not marked `trustFiniteOutput`: Velocity and Position of every entity that has both, and
+ * the angular state of every entity that turns (2D: AngularVelocity.z and Angle.value; 3D: the three
+ * components of AngularVelocity and the four of Orientation).
  * Built-in systems that write no body state (force laws write only forces; broadphase and narrowphase
- * only contacts) or check what they write themselves (emitters, sleeping) are marked, so a stage made
- * only of them is not checked again; a user system added with `addSystem` is always checked after.
+ * only contacts) or check what they write themselves (the integrators' running sums over their
+ * bodies' positions and velocities, the contact solver's over its bodies, emitters, sleeping) are
+ * marked, so a stage made only of them is not checked again (after `integrate` only the turning
+ * bodies are); a user system added with `addSystem` is always checked after.
  * In 2D the z components of the linear state are not part of the motion and are not checked;
  * `clearForces` writes zeros and is never checked.
  *
- * Cost: one pass over the bodies that have each checked component, a multiply and an add per field
- * (x * 0 is NaN exactly when x is NaN or infinite), and a second pass to name the culprit only when
- * the first finds one.
+ * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
+ * per field, and a second pass to name the culprit only when the first finds one.
  */
 
-const trusted = new WeakSet<System>();
+/** What a built-in system checks itself: 'all' it writes, or only its linear state (position, velocity). */
+export type FiniteScope = 'all' | 'linear';
+
+const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
 
 /**
  * Marks built-in systems that write no body state, or check what they write and throw
- * NonFiniteStateError themselves: a stage made only of such systems is not checked again.
+ * NonFiniteStateError themselves. `scope` 'linear': the system checks the positions and velocities it
+ * writes but not the angular state (the integrators), so the stage still checks the turning bodies.
+ * `idle`: the system is trusted only while idle(world) is true (it then writes nothing, e.g. a
+ * collision system for a kind of shape the world has none of).
  */
-export function trustFiniteOutput(...systems: System[]): void {
-  for (const s of systems) trusted.add(s);
+export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
+  for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
 }
 
-/** Whether a stage that ran `systems` may have written body state `step` has not checked yet. */
-export function stageNeedsCheck(stage: StageName, systems: readonly System[]): boolean {
-  if (stage === 'clearForces' || systems.length === 0) return false;
-  for (let i = 0; i < systems.length; i++) if (!trusted.has(systems[i]!)) return true;
-  return false;
+/**
+ * What `step` must check after a stage ran `systems`: 2 the whole motion state (some system is not
+ * trusted), 1 only the angular state (some system checks only its linear state), 0 nothing.
+ */
+export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: readonly System[]): 0 | 1 | 2 {
+  if (stage === 'clearForces' || systems.length === 0) return 0;
+  let need: 0 | 1 | 2 = 0;
+  for (let i = 0; i < systems.length; i++) {
+    const t = trusted.get(systems[i]!);
+    if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
+    if (t.scope === 'linear') need = 1;
+  }
+  return need;
+}
+
+/*
+ * The fast passes: one fused loop per group of fields, each written out for its number of arrays so
+ * the loop stays monomorphic. x * 0 is 0 for every finite x and NaN for NaN and both infinities, so
+ * the sum is 0 exactly when every value is finite (a plain sum of huge finite values could overflow).
+ * When the query holds every live id (a world of particles), its ids are 1..maxId and the loop runs
+ * over that range directly, in memory order.
+ */
+
+function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array): number {
+  let s0 = 0, s1 = 0;
+  const n = ents.length;
+  if (dense) {
+    let e = 1;
+    for (; e < n; e += 2) { s0 += a[e]! * 0 + b[e]! * 0; s1 += a[e + 1]! * 0 + b[e + 1]! * 0; }
+    if (e === n) s0 += a[e]! * 0 + b[e]! * 0;
+  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += a[e]! * 0 + b[e]! * 0; }
+  return s0 + s1;
+}
+
+function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array): number {
+  let s0 = 0, s1 = 0;
+  const n = ents.length;
+  if (dense) {
+    let e = 1;
+    for (; e < n; e += 2) { s0 += (a[e]! * 0 + b[e]! * 0) + c[e]! * 0; s1 += (a[e + 1]! * 0 + b[e + 1]! * 0) + c[e + 1]! * 0; }
+    if (e === n) s0 += (a[e]! * 0 + b[e]! * 0) + c[e]! * 0;
+  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += (a[e]! * 0 + b[e]! * 0) + c[e]! * 0; }
+  return s0 + s1;
+}
+
+function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array): number {
+  let s0 = 0, s1 = 0;
+  const n = ents.length;
+  if (dense) {
+    let e = 1;
+    for (; e < n; e += 2) {
+      s0 += (a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0);
+      s1 += (a[e + 1]! * 0 + b[e + 1]! * 0) + (c[e + 1]! * 0 + d[e + 1]! * 0);
+    }
+    if (e === n) s0 += (a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0);
+  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += (a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0); }
+  return s0 + s1;
+}
+
+function sum6(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array, f: Float64Array, g: Float64Array): number {
+  let s0 = 0;
+  const n = ents.length;
+  if (dense) for (let e = 1; e <= n; e++) s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + (f[e]! * 0 + g[e]! * 0);
+  else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + (f[e]! * 0 + g[e]! * 0); }
+  return s0;
+}
+
+function sum7(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array, f: Float64Array, g: Float64Array, h: Float64Array): number {
+  let s0 = 0;
+  const n = ents.length;
+  if (dense) for (let e = 1; e <= n; e++) s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + ((f[e]! * 0 + g[e]! * 0) + h[e]! * 0);
+  else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + ((f[e]! * 0 + g[e]! * 0) + h[e]! * 0); }
+  return s0;
 }
 
 type Field = readonly [name: string, values: Float64Array];
 
-function fieldsOf(world: PhysicsWorld, stage: 'forces' | 'state'): Array<readonly [components: object[], fields: Field[]]> {
-  const c = world.components;
-  const is2D = world.dimensions === 2;
-  if (stage === 'forces') {
-    return is2D
-      ? [[[c.Force], [['Force.x', c.Force.x], ['Force.y', c.Force.y]]], [[c.Torque], [['Torque.z', c.Torque.z]]]]
-      : [[[c.Force], [['Force.x', c.Force.x], ['Force.y', c.Force.y], ['Force.z', c.Force.z]]],
-          [[c.Torque], [['Torque.x', c.Torque.x], ['Torque.y', c.Torque.y], ['Torque.z', c.Torque.z]]]];
-  }
-  // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
-  return is2D
-    ? [
-        [[c.Velocity], [['Velocity.x', c.Velocity.x], ['Velocity.y', c.Velocity.y]]],
-        [[c.Position], [['Position.x', c.Position.x], ['Position.y', c.Position.y]]],
-        [[c.AngularVelocity], [['AngularVelocity.z', c.AngularVelocity.z]]],
-        [[c.Angle], [['Angle.value', c.Angle.value]]],
-      ]
-    : [
-        [[c.Velocity], [['Velocity.x', c.Velocity.x], ['Velocity.y', c.Velocity.y], ['Velocity.z', c.Velocity.z]]],
-        [[c.Position], [['Position.x', c.Position.x], ['Position.y', c.Position.y], ['Position.z', c.Position.z]]],
-        [[c.AngularVelocity], [['AngularVelocity.x', c.AngularVelocity.x], ['AngularVelocity.y', c.AngularVelocity.y], ['AngularVelocity.z', c.AngularVelocity.z]]],
-        [[c.Orientation], [['Orientation.x', c.Orientation.x], ['Orientation.y', c.Orientation.y], ['Orientation.z', c.Orientation.z], ['Orientation.w', c.Orientation.w]]],
-      ];
-}
-
-const plans = new WeakMap<PhysicsWorld, Map<'forces' | 'state', ReturnType<typeof fieldsOf>>>();
-
-function planOf(world: PhysicsWorld, stage: 'forces' | 'state'): ReturnType<typeof fieldsOf> {
-  let m = plans.get(world);
-  if (!m) { m = new Map(); plans.set(world, m); }
-  let p = m.get(stage);
-  if (!p) { p = fieldsOf(world, stage); m.set(stage, p); }
-  return p;
-}
-
-/** Sum of x * 0 over the entities: 0 if every value is finite, NaN otherwise. */
-function probe(ents: ArrayLike<number>, a: Float64Array, b: Float64Array | undefined, c: Float64Array | undefined, d: Float64Array | undefined): number {
-  let acc = 0;
-  const n = ents.length;
-  if (d) for (let i = 0; i < n; i++) { const e = ents[i]!; acc += a[e]! * 0 + b![e]! * 0 + c![e]! * 0 + d[e]! * 0; }
-  else if (c) for (let i = 0; i < n; i++) { const e = ents[i]!; acc += a[e]! * 0 + b![e]! * 0 + c[e]! * 0; }
-  else if (b) for (let i = 0; i < n; i++) { const e = ents[i]!; acc += a[e]! * 0 + b[e]! * 0; }
-  else for (let i = 0; i < n; i++) acc += a[ents[i]!]! * 0;
-  return acc;
-}
+const EMPTY: ArrayLike<number> = new Int32Array(0);
 
 /**
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
- * after `forces`, and the motion state if `state`. Throws a NonFiniteStateError naming the first
+ * after `forces`, the angular state if `level` >= 1 and the linear state if `level` is 2. Throws a NonFiniteStateError naming the first
  * entity (its handle) and field that is NaN or infinite, and the stage.
  */
-export function checkStageState(world: PhysicsWorld, stage: StageName, state: boolean): void {
-  if (stage === 'forces') checkFields(world, stage, planOf(world, 'forces'));
-  if (state) checkFields(world, stage, planOf(world, 'state'));
-}
-
-function checkFields(world: PhysicsWorld, stage: StageName, plan: ReturnType<typeof fieldsOf>): void {
-  for (let g = 0; g < plan.length; g++) {
-    const [components, fields] = plan[g]!;
-    const ents = query(world, components);
-    if (ents.length === 0) continue;
-    const acc = probe(ents, fields[0]![1], fields[1]?.[1], fields[2]?.[1], fields[3]?.[1]);
-    if (acc === 0) continue;
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      for (const [name, values] of fields) {
-        const v = values[e]!;
-        if (Number.isFinite(v)) continue;
-        const c = world.components;
-        const at = (a: Float64Array) => a[e];
-        throw new NonFiniteStateError(currentHandle(world, e), name, v, stage,
-          `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
-            `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
-            `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`);
+export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
+  const c = world.components;
+  const is2D = world.dimensions === 2;
+  const maxId = world.entityIndex.maxId;
+  if (stage === 'forces') {
+    const F = c.Force, T = c.Torque;
+    let ents = query(world, [F]);
+    if (ents.length > 0) {
+      const dense = ents.length === maxId;
+      if ((is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z)) !== 0) {
+        name(world, stage, ents, is2D ? [['Force.x', F.x], ['Force.y', F.y]] : [['Force.x', F.x], ['Force.y', F.y], ['Force.z', F.z]]);
+      }
+    }
+    ents = query(world, [T]);
+    if (ents.length > 0) {
+      const dense = ents.length === maxId;
+      if ((is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z)) !== 0) {
+        name(world, stage, ents, is2D ? [['Torque.z', T.z]] : [['Torque.x', T.x], ['Torque.y', T.y], ['Torque.z', T.z]]);
       }
     }
   }
+  if (level === 0) return;
+  const P = c.Position, V = c.Velocity, W = c.AngularVelocity;
+  // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
+  let ents = level === 2 ? query(world, [P, V]) : EMPTY;
+  if (ents.length > 0) {
+    const dense = ents.length === maxId;
+    if ((is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z)) !== 0) {
+      name(world, stage, ents, is2D
+        ? [['Velocity.x', V.x], ['Velocity.y', V.y], ['Position.x', P.x], ['Position.y', P.y]]
+        : [['Velocity.x', V.x], ['Velocity.y', V.y], ['Velocity.z', V.z], ['Position.x', P.x], ['Position.y', P.y], ['Position.z', P.z]]);
+    }
+  }
+  if (is2D) {
+    const A = c.Angle.value;
+    ents = query(world, [W, c.Angle]);
+    if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
+      name(world, stage, ents, [['AngularVelocity.z', W.z], ['Angle.value', A]]);
+    }
+  } else {
+    const Q = c.Orientation;
+    ents = query(world, [W, Q]);
+    if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
+      name(world, stage, ents, [['AngularVelocity.x', W.x], ['AngularVelocity.y', W.y], ['AngularVelocity.z', W.z],
+        ['Orientation.x', Q.x], ['Orientation.y', Q.y], ['Orientation.z', Q.z], ['Orientation.w', Q.w]]);
+    }
+  }
+}
+
+/** The slow pass, run once a fast pass found a non-finite value: throws naming the first culprit. */
+function name(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fields: Field[]): never {
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    for (const [field, values] of fields) {
+      const v = values[e]!;
+      if (Number.isFinite(v)) continue;
+      const c = world.components;
+      const at = (a: Float64Array) => a[e];
+      throw new NonFiniteStateError(currentHandle(world, e), field, v, stage,
+        `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
+          `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
+          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`);
+    }
+  }
+  throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);
 }

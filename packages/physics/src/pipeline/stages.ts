@@ -21,6 +21,7 @@ import { shapeCollisionSystem } from '../collision/shape-collision.js';
 import { contactSolverSystem } from '../collision/solver.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
 import { trustFiniteOutput } from './finite.js';
+import { query } from '../query.js';
 import { clothSystem } from '../cloth/solver.js';
 
 /** A system: a plain function of the world, run once per (sub)step in its stage. */
@@ -69,13 +70,18 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
 ]);
 
 // Built-in systems that write no body state (force laws write forces, which `step` checks after the
-// forces stage; broadphase and narrowphase write contacts), or check what they write (spawned
-// particles, zeroed velocities of sleeping bodies): `step` does not check the motion state after a
-// stage made only of these (pipeline/finite.ts).
-trustFiniteOutput(
-  wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, sleepSystem,
-  ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
-);
+// forces stage; broadphase and narrowphase write contacts; fuel and ballast write masses), or check
+// what they write (spawned particles, zeroed velocities of sleeping bodies, the contact solver's
+// bodies; the integrators and the stiff drag updates their positions and velocities, so after
+// `integrate` only the turning bodies are checked). Shape collisions and cloth are trusted only in a
+// world without shapes or cloth links, where they write nothing (pipeline/finite.ts).
+trustFiniteOutput([
+  wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, contactSolverSystem, sleepSystem,
+  burnFuelSystem, ballastFillSystem, ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
+]);
+trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem], 'linear');
+trustFiniteOutput([shapeCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
+trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
 
 /** A fresh copy of the default systems of every stage. */
 export function createStages(): Record<StageName, System[]> {

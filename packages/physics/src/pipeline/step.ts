@@ -18,8 +18,8 @@ function runStage(world: PhysicsWorld, stage: StageName): void {
   if (systems.length === 0) return;
   const t0 = now();
   for (let i = 0; i < systems.length; i++) systems[i]!(world);
-  const state = stageNeedsCheck(stage, systems);
-  if (state || stage === 'forces') checkStageState(world, stage, state);
+  const level = stageNeedsCheck(world, stage, systems);
+  if (level !== 0 || stage === 'forces') checkStageState(world, stage, level);
   world.timings[stage] += now() - t0;
 }
 
