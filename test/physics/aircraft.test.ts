@@ -82,7 +82,7 @@ describe('aircraft: lifting surfaces', () => {
     setInertia(world, b, [1, 1, 1]);
     expect(() => addLiftingSurface(world, { body: b, area: -1 })).toThrow(/addLiftingSurface: area must be/);
     expect(() => addLiftingSurface(world, { body: b, area: 1, normal: [1, 0, 0] })).toThrow(/must not lie along the chord/);
-    expect(() => setControlDeflection(world, b, 0.1)).toThrow(/setControlDeflection: surface \d+ is not a lifting surface/);
+    expect(() => setControlDeflection(world, b, 0.1)).toThrow(/setControlDeflection: surface must be a lifting surface .*got entity \d+/);
     expect(() => addLiftingSurface(createPhysicsWorld(), { body: 1, area: 1 })).toThrow(/need a 3D world/);
   });
 });

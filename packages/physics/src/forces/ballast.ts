@@ -1,4 +1,5 @@
-import { entityExists, hasComponent } from 'bitecs';
+import { hasComponent } from 'bitecs';
+import { resolveKind } from '../handles.js';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
@@ -15,13 +16,13 @@ import type { ForceLaw } from './law.js';
  * tanks at the same fill f the balance is at f = (rho V - dryMass) / (2 capacity).
  */
 
-function assertBody(where: string, world: PhysicsWorld, eid: number): void {
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid) || !hasComponent(world, eid, world.components.Position)) {
-    throw new RangeError(`${where}: entity ${describe(eid)} is not a body in this world`);
-  }
+/** The slot of body handle `body`, which must be dynamic. @throws RangeError naming `where`. */
+function dynamicBody(where: string, world: PhysicsWorld, body: number): number {
+  const eid = resolveKind(world, body, 'body', where);
   if (hasComponent(world, eid, world.components.Static) || hasComponent(world, eid, world.components.Kinematic)) {
-    throw new RangeError(`${where}: entity ${eid} is static or kinematic; ballast needs a dynamic body`);
+    throw new RangeError(`${where}: entity ${body} is static or kinematic; ballast needs a dynamic body`);
   }
+  return eid;
 }
 
 /** Options of `setBallast`. Unknown fields are rejected. */
@@ -57,9 +58,9 @@ function pair(where: string, param: string, v: number | readonly [number, number
  * @throws TypeError on unknown options; RangeError on a missing, static or kinematic body, a
  *   non-positive dry mass, capacity or rate, fills outside [0, 1], or a negative arm or height.
  */
-export function setBallast(world: PhysicsWorld, eid: number, options: BallastOptions): void {
+export function setBallast(world: PhysicsWorld, body: number, options: BallastOptions): void {
   const where = 'setBallast';
-  assertBody(where, world, eid);
+  const eid = dynamicBody(where, world, body);
   assertKnownKeys(where, options, ['dryMass', 'capacity', 'fill', 'target', 'rate', 'arm', 'metacentricHeight']);
   assertPositive(where, 'dryMass', options.dryMass);
   assertPositive(where, 'capacity', options.capacity);
@@ -87,9 +88,9 @@ export function setBallast(world: PhysicsWorld, eid: number, options: BallastOpt
  * defaults to fore). The tanks get there at the component's `rate`.
  * @throws RangeError on a body without ballast or a fraction outside [0, 1].
  */
-export function setBallastTarget(world: PhysicsWorld, eid: number, fore: number, aft: number = fore): void {
+export function setBallastTarget(world: PhysicsWorld, body: number, fore: number, aft: number = fore): void {
   const where = 'setBallastTarget';
-  assertBody(where, world, eid);
+  const eid = dynamicBody(where, world, body);
   if (!hasComponent(world, eid, world.components.Ballast)) throw new RangeError(`${where}: entity ${eid} has no ballast (call setBallast first)`);
   assertInRange(where, 'fore', fore, 0, 1);
   assertInRange(where, 'aft', aft, 0, 1);

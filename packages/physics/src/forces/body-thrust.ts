@@ -1,8 +1,9 @@
-import { entityExists, hasComponent } from 'bitecs';
+import { hasComponent } from 'bitecs';
+import { resolveKind } from '../handles.js';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { assertVector, describe } from '../validate.js';
+import { assertVector } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -11,13 +12,11 @@ import type { ForceLaw } from './law.js';
  * @throws TypeError | RangeError on a non-finite vector of the wrong length, or a missing, static or
  *   kinematic body.
  */
-export function setBodyThrust(world: PhysicsWorld, eid: number, force: ArrayLike<number>): void {
+export function setBodyThrust(world: PhysicsWorld, body: number, force: ArrayLike<number>): void {
   const where = 'setBodyThrust';
   const c = world.components;
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1 || !entityExists(world, eid) || !hasComponent(world, eid, c.Position)) {
-    throw new RangeError(`${where}: entity ${describe(eid)} is not a body in this world`);
-  }
-  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic)) throw new RangeError(`${where}: entity ${eid} is static or kinematic`);
+  const eid = resolveKind(world, body, 'body', where);
+  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic)) throw new RangeError(`${where}: entity ${body} is static or kinematic`);
   assertVector(where, 'force', force, world.dimensions);
   addComponentIfMissing(world, eid, c.BodyThrust);
   addComponentIfMissing(world, eid, c.Force);

@@ -3,6 +3,7 @@ import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
 import { createSlot } from '../bodies.js';
+import { currentHandle, resolveEntity, resolveKind } from '../handles.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
@@ -60,7 +61,7 @@ export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
 
 /**
  * Adds a lifting surface to a dynamic 3D body that turns (it needs an inertia: `setInertia`).
- * @returns the surface entity (removing the body removes its surfaces).
+ * @returns the surface's handle (removing the body removes its surfaces).
  * @throws TypeError on unknown options or malformed vectors; RangeError on a 2D world, a missing,
  *   static or non-rotating body, a zero normal or one along the chord, or values out of range.
  */
@@ -70,12 +71,9 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, KNOWN);
   const c = world.components;
-  const b = options.body;
-  if (typeof b !== 'number' || !Number.isInteger(b) || b < 1 || !entityExists(world, b) || !hasComponent(world, b, c.Position)) {
-    throw new RangeError(`${where}: body ${describe(b)} is not a body in this world`);
-  }
+  const b = resolveKind(world, options.body, 'body', where, 'body');
   if (hasComponent(world, b, c.Static) || hasComponent(world, b, c.Kinematic) || !hasComponent(world, b, c.AngularVelocity)) {
-    throw new RangeError(`${where}: body ${b} must be dynamic and turn (give it an inertia with setInertia)`);
+    throw new RangeError(`${where}: body ${options.body} must be dynamic and turn (give it an inertia with setInertia)`);
   }
   const offset = options.offset ?? [0, 0, 0];
   assertVector(where, 'offset', offset, 3);
@@ -108,7 +106,7 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   L.normalX[s] = normal[0]! / nLen; L.normalY[s] = normal[1]! / nLen; L.normalZ[s] = normal[2]! / nLen;
   L.area[s] = options.area; L.liftSlope[s] = slope; L.stallAngle[s] = stall; L.dragZero[s] = cd0; L.inducedDrag[s] = k;
   L.controlPower[s] = power; L.deflection[s] = 0; L.airDensity[s] = rho;
-  return s;
+  return currentHandle(world, s);
 }
 
 /** Removal hook: removes the lifting surfaces of a removed body, so none acts on a recycled id. */
@@ -128,12 +126,11 @@ export function removeSurfacesOf(world: PhysicsWorld, eid: number): void {
 export function setControlDeflection(world: PhysicsWorld, surface: number, deflection: number): void {
   const where = 'setControlDeflection';
   const L = world.components.LiftingSurface;
-  if (typeof surface !== 'number' || !Number.isInteger(surface) || surface < 1 || !entityExists(world, surface) || !hasComponent(world, surface, L)) {
-    throw new RangeError(`${where}: surface ${describe(surface)} is not a lifting surface in this world`);
-  }
+  const slot = resolveEntity(world, surface, where, 'surface');
+  if (!hasComponent(world, slot, L)) throw new RangeError(`${where}: surface must be a lifting surface (addLiftingSurface makes one), got entity ${surface}`);
   assertFinite(where, 'deflection', deflection);
   assertInRange(where, 'deflection', deflection, -Math.PI / 4, Math.PI / 4);
-  L.deflection[surface] = deflection;
+  L.deflection[slot] = deflection;
 }
 
 /**
