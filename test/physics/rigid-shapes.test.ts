@@ -248,3 +248,31 @@ describe('shapes: mass, compounds, rolling, bad input', () => {
     expect(world.components.Mass.value[body]).toBe(1);
   });
 });
+
+describe('queries', () => {
+  it('ray casts find the nearest hit and all hits, with the point and normal; overlap at a point and in a box', async () => {
+    const { rayCast, rayCastAll, overlapPoint, overlapAABB } = await import('../../packages/physics/src/index.js');
+    const world = createPhysicsWorld({ gravity: [0, 0] });
+    const box = addBox(world, { position: [5, 0], halfExtents: [1, 1], static: true });
+    const ball = addBody(world, { position: [10, 0], radius: 0.5, static: true });
+    const cap = addBody(world, { position: [15, 0], static: true });
+    const capShape = addShape(world, cap, { type: 'capsule', center1: [0, -1], center2: [0, 1], radius: 0.25 });
+    // Hand-computed: the box's left face at x = 4, the ball's left point at x = 9.5, the capsule's side at x = 14.75.
+    const first = rayCast(world, [0, 0], [20, 0])!;
+    expect(first.shape).toBe(box);
+    expect(first.x).toBeCloseTo(4, 12); expect(first.fraction).toBeCloseTo(0.2, 12);
+    expect(first.nx).toBeCloseTo(-1, 12); expect(first.ny).toBeCloseTo(0, 12);
+    const all = rayCastAll(world, [0, 0], [20, 0]);
+    expect(all.map((h) => h.shape)).toEqual([box, ball, capShape]);
+    expect(all[1]!.x).toBeCloseTo(9.5, 12); expect(all[2]!.x).toBeCloseTo(14.75, 12);
+    // A ray over the top of the box (y = 1.5) misses it and grazes nothing else but the capsule's cap (r 0.25 at y = 1: misses at 1.5).
+    expect(rayCast(world, [0, 1.5], [20, 0])).toBeNull();
+    // The capsule's upper cap: a ray down from above hits it at y = 1.25.
+    expect(rayCast(world, [15, 5], [0, -10])!.y).toBeCloseTo(1.25, 12);
+    expect(overlapPoint(world, [5.5, 0.5])).toEqual([box]);
+    expect(overlapPoint(world, [15.2, 1.1])).toEqual([capShape]);
+    expect(overlapPoint(world, [7, 0])).toEqual([]);
+    expect(overlapAABB(world, [9, -3], [14.8, 3]).sort()).toEqual([ball, capShape].sort());
+    expect(() => rayCast(world, [0, 0], [0, 0])).toThrow('rayCast: translation must not be zero, got [0,0]');
+  });
+});

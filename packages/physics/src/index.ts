@@ -42,6 +42,8 @@ export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js'
 export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
 export { contactSolverSystem } from './collision/solver.js';
 export { shapeCollisionSystem } from './collision/shape-collision.js';
+export { rayCast, rayCastAll, overlapPoint, overlapAABB } from './collision/shape-queries.js';
+export type { RayHit } from './collision/shape-queries.js';
 export type { ManifoldBuffer, ContactEvents, EventList, ShapeCollisionState } from './collision/manifolds.js';
 export { collideShapes, collideHalfPlane, collideCircles, createManifold, segmentFractions } from './collision/manifold.js';
 export type { Manifold } from './collision/manifold.js';
