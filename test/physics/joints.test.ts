@@ -180,15 +180,17 @@ describe('motors and limits', () => {
     const g = 9.81, m = 2, L = 1.5;
     for (const factor of [2, 0.5]) {
       const world = createPhysicsWorld({ gravity: [0, -g] });
-      const arm = addBody(world, { position: [L, 0], mass: m, inertia: 0.01 });
+      // A uniform rod of length 2 L pinned at one end: centre L out, I = m (2 L)^2 / 12.
+      const arm = addBody(world, { position: [L, 0], mass: m, inertia: (m * 4 * L * L) / 12 });
       const j = addRevoluteJoint(world, { b: arm, anchor: [0, 0], motorSpeed: 0, maxMotorTorque: factor * m * g * L });
-      stepMany(world, 240);
+      stepMany(world, factor > 1 ? 240 : 30);
       if (factor > 1) {
         expect(Math.abs(jointAngle(world, j))).toBeLessThan(0.02);
         // The reaction torque equals the load's gravity torque m g L (2%: the arm still sways a little).
         expect(Math.abs(world.components.Joint.torque[slotOf(j)]! / (m * g * L) - 1)).toBeLessThan(0.02);
       } else {
-        expect(jointAngle(world, j)).toBeLessThan(-0.5);
+        // Falling, the motor brakes with all it has: its torque is at the limit.
+        expect(jointAngle(world, j)).toBeLessThan(-0.1);
         expect(world.components.Joint.torque[slotOf(j)]).toBeCloseTo(factor * m * g * L, 6);
       }
     }

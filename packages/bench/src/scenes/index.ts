@@ -6,6 +6,8 @@ import { spheresInBoxBench } from './spheres-in-box.js';
 import { galaxyBench } from './galaxy.js';
 import { fireworksBench } from './fireworks.js';
 import { pyramidBench } from './pyramid.js';
+import { jointGridBench } from './joint-grid.js';
+import { clothBench } from './cloth.js';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
@@ -15,6 +17,8 @@ const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
   [galaxyBench.name]: galaxyBench,
   [fireworksBench.name]: fireworksBench,
   [pyramidBench.name]: pyramidBench,
+  [jointGridBench.name]: jointGridBench,
+  [clothBench.name]: clothBench,
 });
 
 /** A scene as the bench sees it: the physics package's definition plus the bench adapter. */

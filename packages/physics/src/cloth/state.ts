@@ -3,8 +3,8 @@
  * removed (`version` changes), not every step.
  */
 export interface ClothState {
-  /** Position iterations a (sub)step, integer >= 1. Default 12. */
-  iterations: number;
+  /** Small steps a (world sub)step, each one predict / project / update pass, integer >= 1. Default 12. */
+  substeps: number;
   /** Bumped by every change to the set of links; the packed arrays are rebuilt when it differs from `built`. */
   version: number;
   built: number;
@@ -18,13 +18,13 @@ export interface ClothState {
   /** Distinct points of the links (entity slots; the moving ones get their velocities from their moves). */
   pointCount: number;
   points: Int32Array;
-  /** Per point (compact index): x, y (m) and inverse mass (1/kg) while solving. */
+  /** Per point (compact index, 7 each): x, y (m), inverse mass (1/kg), vx, vy (m/s), x, y before the substep (m). */
   buffer: Float64Array;
   /** Per link (2 each): alpha~ = compliance / h^2 and 1 / (w_a + w_b + alpha~) of this step. */
   solve: Float64Array;
   /** Per entity scratch: compact index of a point while packing. */
   compact: Int32Array;
-  /** Per link: XPBD Lagrange multiplier of the current solve (N s^2). */
+  /** Per link: XPBD multiplier of the last substep (N s^2). */
   lambda: Float64Array;
   /** Per entity scratch for packing (capacity + 1) and its stamp. */
   seen: Uint32Array;
@@ -36,7 +36,7 @@ export interface ClothState {
 /** An empty cloth state. */
 export function createClothState(): ClothState {
   return {
-    iterations: 12, version: 0, built: 0, count: 0, rigidCount: 0,
+    substeps: 12, version: 0, built: 0, count: 0, rigidCount: 0,
     link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
     rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
     pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,

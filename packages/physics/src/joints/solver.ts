@@ -27,7 +27,8 @@ import { currentHandle } from '../handles.js';
  * the start of the step plus its solver displacement; its rotation since the start is integrated
  * here per substep (cos, sin and angle per solver body). Rigid parts of joints are soft constraints
  * of `world.joints.settings.hertz` (Box2D's joint softness) while `useBias`, and rigid (no bias) in
- * the relax pass; springs keep their own softness in both.
+ * the relax pass; springs keep their own softness in both. A joint that carries an impulse marks its
+ * bodies in the solver row's `pushed` slot (index 7), as contacts do: they were not in free flight.
  */
 
 // Row float offsets.
@@ -447,6 +448,8 @@ export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): 
       const Px = total * ux, Py = total * uy;
       sb[oA] = vAx - mA * Px; sb[oA + 1] = vAy - mA * Py; sb[oA + 2] = wA - iA * (rAx * Py - rAy * Px);
       sb[oB] = vBx + mB * Px; sb[oB + 1] = vBy + mB * Py; sb[oB + 2] = wB + iB * (rBx * Py - rBy * Px);
+      // A taut (or sprung) link pushes its bodies; a slack rope leaves them in free flight.
+      if (rows[o + ISPR] !== 0 || rows[o + ILOW] !== 0 || rows[o + IUP] !== 0) { sb[oA + 7] = 1; sb[oB + 7] = 1; }
       continue;
     }
 
@@ -625,6 +628,8 @@ export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): 
     }
     sb[oA] = vAx; sb[oA + 1] = vAy; sb[oA + 2] = wA;
     sb[oB] = vBx; sb[oB + 1] = vBy; sb[oB + 2] = wB;
+    // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
+    sb[oA + 7] = 1; sb[oB + 7] = 1;
   }
   // The static world's row must stay at rest whatever a fixed body's joint wrote into it.
   sb[0] = 0; sb[1] = 0; sb[2] = 0;
@@ -670,6 +675,7 @@ function solvePointLinks(world: PhysicsWorld, invH: number, useBias: boolean): v
     const Px = impulse * ux, Py = impulse * uy, mA = sb[oA + 5]!, mB = sb[oB + 5]!;
     sb[oA] = vAx - mA * Px; sb[oA + 1] = vAy - mA * Py;
     sb[oB] = vBx + mB * Px; sb[oB + 1] = vBy + mB * Py;
+    if (lf[f + 4] !== 0) { sb[oA + 7] = 1; sb[oB + 7] = 1; }
   }
 }
 

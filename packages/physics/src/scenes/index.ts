@@ -4,6 +4,8 @@ import { spheresInBox } from './spheres-in-box.js';
 import { galaxy } from './galaxy.js';
 import { fireworks } from './fireworks.js';
 import { pyramid } from './pyramid.js';
+import { jointGrid } from './joint-grid.js';
+import { clothScene } from './cloth.js';
 import type { SceneDefinition } from './types.js';
 
 /** Every registered scene by name: the bench's `--list` and the gallery read this. */
@@ -14,6 +16,8 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [galaxy.name]: galaxy as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [fireworks.name]: fireworks as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [pyramid.name]: pyramid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [jointGrid.name]: jointGrid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [clothScene.name]: clothScene as SceneDefinition<{ count?: number; seed?: number }, unknown>,
 });
 
 export { ballsInBox, ballsInBoxLayout } from './balls-in-box.js';
@@ -29,6 +33,10 @@ export { fireworks } from './fireworks.js';
 export type { FireworksOptions } from './fireworks.js';
 export { pyramid, pyramidLayout } from './pyramid.js';
 export type { PyramidHandles, PyramidLayout, PyramidOptions } from './pyramid.js';
+export { jointGrid } from './joint-grid.js';
+export type { JointGridOptions, JointGridHandles } from './joint-grid.js';
+export { clothScene } from './cloth.js';
+export type { ClothSceneOptions } from './cloth.js';
 // The book's closing projects: exported builders, not in SCENES (the bench measures solar-system as a study).
 export {
   solarSystem, solarSystemErrors, solarSystemMass, ephemerisState, ephemerisHeliocentric,
