@@ -6,7 +6,7 @@
 // new output replaces the old one only when the build has finished (a failed build keeps serving
 // the last good one and prints its errors); a new game folder restarts the build with it included.
 import * as esbuild from 'esbuild';
-import { existsSync, mkdirSync, readFileSync, rmSync, statSync, watch as watchDir, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, watch as watchDir, writeFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { extname, join, normalize, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -59,16 +59,31 @@ function readCache(dir) {
   }
 }
 
-/** Writes `files` and their inputs (esbuild metafile) to the cache `dir`. */
+/**
+ * Writes `files` and their inputs (esbuild metafile) to the cache `dir`: into a fresh folder first,
+ * then swapped in, so a reader never sees half a cache. A cache that cannot be written is skipped
+ * (the next run builds again).
+ */
 function writeCache(dir, files, metafile, startedAt) {
-  rmSync(dir, { recursive: true, force: true });
-  for (const [path, contents] of files) {
-    const file = join(dir, 'site', path);
-    mkdirSync(resolve(file, '..'), { recursive: true });
-    writeFileSync(file, contents);
+  const fresh = `${dir}.new-${process.pid}`;
+  const old = `${dir}.old-${process.pid}`;
+  try {
+    rmSync(fresh, { recursive: true, force: true });
+    for (const [path, contents] of files) {
+      const file = join(fresh, 'site', path);
+      mkdirSync(resolve(file, '..'), { recursive: true });
+      writeFileSync(file, contents);
+    }
+    const inputs = Object.keys(metafile?.inputs ?? {}).map((p) => relative(root, resolve(p)));
+    writeFileSync(join(fresh, 'stamp.json'), JSON.stringify({ startedAt, folders: gameFolders().join(','), inputs, outputs: [...files.keys()] }));
+    if (existsSync(dir)) renameSync(dir, old);
+    renameSync(fresh, dir);
+  } catch {
+    // Another writer got there first, or the disk is full: no cache this time.
+  } finally {
+    rmSync(fresh, { recursive: true, force: true });
+    rmSync(old, { recursive: true, force: true });
   }
-  const inputs = Object.keys(metafile?.inputs ?? {}).map((p) => relative(root, resolve(p)));
-  writeFileSync(join(dir, 'stamp.json'), JSON.stringify({ startedAt, folders: gameFolders().join(','), inputs, outputs: [...files.keys()] }));
 }
 
 /**

@@ -6,7 +6,7 @@
  *
  * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
  * game is over, P pause, N single step, R reset, F predicted path on / off.
- * Touch: the four arrow buttons at the bottom right (hold to thrust); tap the message to restart.
+ * Touch: the four arrow buttons under the scene (hold to thrust); tap the message to restart.
  * URL: ?holes=N (1..16), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
  *
  * Drawn: each hole as a black disc of its Schwarzschild radius with a glow; the exhaust (particles,
@@ -16,7 +16,7 @@
 import { Graphics } from 'pixi.js';
 import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
 import {
   C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, layoutHoles, predictPath, setGScale, setLightSpeed,
   setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleGame, type Predictor, type Thrust,
@@ -50,8 +50,8 @@ const game = await startPixiGame({
   createWorld,
   step: () => { stepBlackHole(bh); },
   controls: [
-    { keys: '← ↑ → ↓', action: 'thrust (one at a time)' },
-    { keys: 'Enter', action: 'play again (game over)' },
+    { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
+    { keys: 'Enter', action: 'play again (game over)', touch: 'tap the message' },
     { keys: 'F', action: 'predicted path on / off' },
   ],
   keys: [
@@ -112,14 +112,12 @@ window.addEventListener('blur', () => { held.length = 0; applyHeld(); });
 
 const style = document.createElement('style');
 style.textContent = `
-.bh-pad { position: fixed; right: 14px; bottom: 14px; z-index: 11; display: grid; grid-template-columns: repeat(3, 54px);
-  grid-template-rows: repeat(2, 54px); gap: 6px; touch-action: none; user-select: none; }
+.bh-pad { display: grid; grid-template-columns: repeat(3, 48px); grid-template-rows: repeat(2, 44px); gap: 6px;
+  touch-action: none; user-select: none; }
 .bh-pad button { font: 22px system-ui, sans-serif; color: #e8ecf1; background: rgba(40, 48, 66, 0.7); border: 1px solid #5c677d;
   border-radius: 10px; touch-action: none; }
 .bh-pad button.on { background: rgba(255, 150, 60, 0.7); }
-.bh-status { position: fixed; top: 10px; left: 50%; transform: translateX(-50%); z-index: 10; text-align: center;
-  font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; background: rgba(16, 20, 28, 0.72); border-radius: 6px; padding: 5px 10px;
-  max-width: min(60vw, calc(100vw - 580px)); min-width: 200px; pointer-events: auto; }
+.bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
 .bh-status.over .bh-message { color: #ff6b6b; cursor: pointer; }
@@ -146,7 +144,7 @@ for (const [dir, label, col, row] of [['up', '↑', 2, 1], ['left', '←', 1, 2]
   buttons[dir] = b;
   pad.append(b);
 }
-document.body.append(pad);
+pageLayout().controls.append(pad);
 
 // ---- Status: lives, score, holes, last message -----------------------------------------------
 
@@ -160,7 +158,7 @@ const message = document.createElement('div');
 message.className = 'bh-message';
 message.dataset.hud = 'message';
 status.append(numbers, message);
-document.body.append(status);
+pageLayout().status.append(status);
 message.addEventListener('click', () => { if (bh.over) shell.reset(); });
 let shownNumbers = '', shownMessage = '', shownThrust: Thrust | '' = '';
 

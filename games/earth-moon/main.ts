@@ -203,10 +203,9 @@ const panel = createPanel(params, [
 // The readout: elapsed days, Earth-Moon distance, the Moon's speed, the energy drift.
 const readout = document.createElement('div');
 readout.className = 'bp-hud';
-readout.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 220px';
 readout.dataset.hud = 'orbit';
 const lines = Array.from({ length: 5 }, () => readout.appendChild(document.createElement('div')));
-document.body.append(readout);
+shell.hud.readout.after(readout);
 let energy0 = totalEnergy(shell.world);
 shell.onWorldChange((w) => { energy0 = totalEnergy(w); });
 let readoutFrame = 0;

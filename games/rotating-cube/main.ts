@@ -19,7 +19,7 @@ import {
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
 import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
+import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
 import type { Plot } from '../shared/plot';
 import { MODES, buildRotatingCube, rotatingCubeWorldOptions, torqueCouple, type Mode, type RotatingCubeHandles } from './scene';
 
@@ -197,14 +197,14 @@ const panel = createPanel(params, [
 // ---- Readout and plot (bottom right) -------------------------------------------------------------
 
 const box = document.createElement('div');
-box.style.cssText = 'position: fixed; right: 10px; bottom: 10px; z-index: 10; display: flex; flex-direction: column; gap: 6px; align-items: flex-end';
+box.style.cssText = 'display: flex; flex-direction: column; gap: 6px';
 const readout = document.createElement('div');
 readout.className = 'bp-hud';
 readout.style.cssText = 'position: static; min-width: 240px';
 readout.dataset.hud = 'rotation';
 const lines = Array.from({ length: 6 }, () => readout.appendChild(document.createElement('div')));
 box.append(readout);
-document.body.append(box);
+pageLayout().side.append(box);
 // The plot is optional: uPlot throws while loading when the browser reports a locale Intl rejects
 // (headless Chromium under LANG=C.UTF-8 says 'en-US@posix'), so it is loaded lazily and skipped then.
 let plot: Plot | null = null;

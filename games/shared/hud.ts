@@ -1,26 +1,47 @@
+import { pageLayout } from './layout';
+
 /** One line of the on-screen controls legend. */
 export interface ControlHint {
   /** The input, shown as a key cap: 'P', 'Click', 'Drag'. */
   keys: string;
   /** What it does: 'pause / resume'. */
   action: string;
+  /**
+   * The gesture on a touch device, shown instead of `keys` there: 'Tap', 'Drag', 'pad ↑'. '' hides
+   * the line on touch devices. Default: 'Tap' for a 'Click', the same text for 'Drag' (and other
+   * pointer words), and the line hidden for keyboard keys.
+   */
+  touch?: string;
+}
+
+/** The gesture shown for `hint` on a touch device, or '' to leave the line out (see ControlHint.touch). */
+export function touchGesture(hint: ControlHint): string {
+  if (hint.touch !== undefined) return hint.touch;
+  const keys = hint.keys.trim();
+  if (/^(click|tap)$/i.test(keys)) return 'Tap';
+  if (/^(drag|click or drag|touch|pinch|swipe)$/i.test(keys)) return keys.replace(/click/i, 'Tap');
+  if (/click/i.test(keys) && !/right|shift|ctrl|alt/i.test(keys)) return keys.replace(/[A-Z] \/ /, '').replace(/click/i, 'Tap');
+  return '';
 }
 
 /** Options of `createHud`. */
 export interface HudOptions {
   /** Game title shown at the top of the readout. Non-empty. */
   title: string;
-  /** Legend lines, shown bottom-left in this order. */
+  /** Legend lines, in this order (their touch gestures on touch devices, see `ControlHint.touch`). */
   controls: readonly ControlHint[];
-  /** Element the HUD is appended to. Default document.body. */
+  /**
+   * Element the readout and legend are appended to. Default: the page layout's info column
+   * (./layout), with the title in its toolbar.
+   */
   parent?: HTMLElement;
 }
 
 /** The heads-up display: readout (fps, bodies, steps, paused), controls legend and an error banner. DOM only, no pixi. */
 export interface Hud {
-  /** The readout element (top-left). */
+  /** The readout element (top of the info column). */
   readonly readout: HTMLElement;
-  /** The legend element (bottom-left). */
+  /** The legend element (bottom of the info column). */
   readonly legend: HTMLElement;
   /**
    * Shows the numbers. @param fps frames per second (>= 0); @param bodies body count; @param steps
@@ -37,16 +58,15 @@ export interface Hud {
 
 const STYLE_ID = 'bp-hud-style';
 const CSS = `
-.bp-hud, .bp-legend, .bp-error { position: fixed; z-index: 10; font: 13px/1.45 ui-monospace, SFMono-Regular, Menlo, Consolas, monospace;
-  color: #e8ecf1; background: rgba(16, 20, 28, 0.72); border-radius: 6px; padding: 8px 10px; pointer-events: none; user-select: none; }
-.bp-hud { top: 10px; left: 10px; min-width: 180px; }
+.bp-hud, .bp-legend, .bp-error { font: 12px/1.45 ui-monospace, SFMono-Regular, Menlo, Consolas, monospace;
+  color: #e8ecf1; border-radius: 6px; user-select: none; }
 .bp-hud h1 { font: 600 14px/1.3 system-ui, sans-serif; margin: 0 0 4px; }
-.bp-hud .bp-status { color: #ffd166; }
-.bp-legend { bottom: 10px; left: 10px; }
-.bp-legend div { white-space: nowrap; }
-.bp-legend kbd { display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; margin-right: 6px; border: 1px solid #8a94a6;
-  border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; }
-.bp-error { top: 10px; left: 50%; transform: translateX(-50%); background: rgba(160, 20, 40, 0.92); max-width: 70vw; white-space: pre-wrap; }
+.bp-hud .bp-run-state { color: #ffd166; }
+.bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
+.bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
+  border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
+.bp-error { position: fixed; z-index: 40; top: 10px; left: 50%; transform: translateX(-50%); padding: 8px 10px;
+  background: rgba(160, 20, 40, 0.92); max-width: 80vw; white-space: pre-wrap; font-family: system-ui, sans-serif; }
 `;
 
 function injectStyle(): void {
@@ -57,20 +77,31 @@ function injectStyle(): void {
   document.head.append(style);
 }
 
+/** `n` and the noun in singular or plural: `plural(1, 'body', 'bodies')` is '1 body'. */
+export function plural(n: number, one: string, many: string): string {
+  return `${n} ${n === 1 ? one : many}`;
+}
+
 /**
- * Creates the HUD: a readout with the title, fps, body count, step count and pause state, and a
- * legend of the controls. Both ignore the pointer, so clicks reach the canvas below.
+ * Creates the HUD: the title (in the layout's toolbar), a readout with fps, body count, step count
+ * and pause state, and a legend of the controls (touch gestures on touch devices), in the layout's
+ * info column unless `parent` is given.
  * @throws TypeError if `title` is empty or `controls` is not an array.
  */
 export function createHud(options: HudOptions): Hud {
   if (typeof options.title !== 'string' || options.title.length === 0) throw new TypeError('createHud: title must be a non-empty string');
   if (!Array.isArray(options.controls)) throw new TypeError('createHud: controls must be an array of { keys, action }');
   injectStyle();
-  const parent = options.parent ?? document.body;
+  const layout = options.parent ? null : pageLayout();
+  const parent = options.parent ?? layout!.info;
   const readout = document.createElement('div');
   readout.className = 'bp-hud';
   const title = document.createElement('h1');
   title.textContent = options.title;
+  if (layout) {
+    layout.setTitle(options.title);
+    title.hidden = true;
+  }
   const fpsLine = document.createElement('div');
   fpsLine.dataset.hud = 'fps';
   const bodiesLine = document.createElement('div');
@@ -78,14 +109,20 @@ export function createHud(options: HudOptions): Hud {
   const stepsLine = document.createElement('div');
   stepsLine.dataset.hud = 'steps';
   const status = document.createElement('div');
-  status.className = 'bp-status';
+  status.className = 'bp-run-state';
   status.dataset.hud = 'status';
   readout.append(title, fpsLine, bodiesLine, stepsLine, status);
   const legend = document.createElement('div');
   legend.className = 'bp-legend';
   legend.setAttribute('aria-label', 'controls');
   let error: HTMLElement | null = null;
-  parent.append(readout, legend);
+  if (layout) {
+    layout.info.prepend(readout);
+    layout.help.append(legend);
+  } else {
+    parent.append(readout, legend);
+  }
+  const touch = layout ? layout.touch() : false;
 
   let shownFps = -1, shownBodies = -1, shownSteps = -1, shownPaused: boolean | null = null;
   const hud: Hud = {
@@ -94,25 +131,31 @@ export function createHud(options: HudOptions): Hud {
     update(fps, bodies, steps, paused) {
       const f = Math.round(fps);
       if (f !== shownFps) { shownFps = f; fpsLine.textContent = `${f} fps`; }
-      if (bodies !== shownBodies) { shownBodies = bodies; bodiesLine.textContent = `${bodies} bodies`; }
+      if (bodies !== shownBodies) { shownBodies = bodies; bodiesLine.textContent = plural(bodies, 'body', 'bodies'); }
       if (steps !== shownSteps) { shownSteps = steps; stepsLine.textContent = `step ${steps}`; }
       if (paused !== shownPaused) { shownPaused = paused; status.textContent = paused ? 'paused' : ''; }
     },
     setControls(controls) {
-      legend.replaceChildren(...controls.map((c) => {
+      const lines: HTMLElement[] = [];
+      for (const c of controls) {
+        const keys = touch ? touchGesture(c) : c.keys;
+        if (keys === '') continue;
         const line = document.createElement('div');
         const kbd = document.createElement('kbd');
-        kbd.textContent = c.keys;
-        line.append(kbd, document.createTextNode(c.action));
-        return line;
-      }));
+        kbd.textContent = keys;
+        const action = document.createElement('span');
+        action.textContent = c.action;
+        line.append(kbd, action);
+        lines.push(line);
+      }
+      legend.replaceChildren(...lines);
     },
     showError(message) {
       if (!error) {
         error = document.createElement('div');
         error.className = 'bp-error';
         error.setAttribute('role', 'alert');
-        parent.append(error);
+        document.body.append(error);
       }
       error.textContent = message;
     },

@@ -19,14 +19,15 @@ import type { Application, Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2, WorldRect } from '@bitphysics/render-pixi';
 import { createPlot, type Plot, type PlotOptions } from './plot';
+import { pageLayout } from './layout';
 
 const STYLE_ID = 'bp-lab-style';
 const CSS = `
-.bp-lab-dock { position: fixed; top: 0; right: 0; z-index: 20; box-sizing: border-box; max-height: 100vh; overflow-y: auto;
-  display: flex; flex-direction: column; gap: 6px; padding: 6px; }
+.bp-lab-dock { box-sizing: border-box; display: flex; flex-direction: column; gap: 6px; }
 .bp-lab-dock > * { flex-shrink: 0; }
 .bp-lab-dock .lil-gui.lil-root { --width: auto; width: auto; }
-.bp-lab-info { margin-top: 6px; padding-top: 6px; border-top: 1px solid rgba(255, 255, 255, 0.15); white-space: pre; }
+.bp-lab-info { margin-top: 6px; padding-top: 6px; border-top: 1px solid rgba(255, 255, 255, 0.15); overflow-wrap: anywhere; }
+.bp-lab-info > div { margin-bottom: 2px; }
 .bp-lab-info .bp-lab-key { color: #98a2b3; }
 .bp-lab-info .bp-lab-swatch { display: inline-block; width: 10px; height: 10px; border-radius: 2px; margin-right: 6px; vertical-align: -1px; }
 .bp-lab-error { position: fixed; top: 40%; left: 50%; transform: translate(-50%, -50%); z-index: 30; max-width: 80vw;
@@ -41,37 +42,35 @@ function injectStyle(): void {
   document.head.append(style);
 }
 
-/** Narrowest window, CSS px, at which the dock sits beside the scene instead of over it. */
-export const DOCK_BESIDE_MIN_WIDTH = 720;
-
-/** The right-hand column of a lab page. */
+/** The right-hand column of a lab page (in the page layout's side column, ./layout). */
 export interface LabDock {
-  /** The dock element (a direct child of body, after the canvas). */
+  /** The dock element (in the layout's side column). */
   readonly root: HTMLElement;
   /** Where the lil-gui panel goes (`createPanel(..., { container: dock.panelSlot })`). */
   readonly panelSlot: HTMLElement;
   /** Where the charts go (`createPlot({ parent: dock.charts })`). */
   readonly charts: HTMLElement;
-  /** Width of the dock, CSS px. */
+  /** Width of the dock, CSS px (the preferred width, capped by the layout, `PageLayout.sideWidth`). */
   readonly width: number;
   /** Width of a chart that fills the dock, CSS px. */
   readonly chartWidth: number;
-  /** CSS px of the window the scene must leave free on the right: the dock's width when it sits beside the scene, else 0. */
+  /** CSS px of the canvas the scene must leave free on the right: 0, as the dock sits beside the canvas, never over it. */
   reserved(): number;
   /** Removes the dock. */
   destroy(): void;
 }
 
 /**
- * Creates the dock: panel slot and chart area, fixed to the right edge of the window.
- * Call it after the pixi canvas is in the page, so the canvas stays the page's first canvas
- * (uPlot draws into canvases of its own).
- * @param width CSS px, integer in [240, 800]. Default 360.
+ * Creates the dock: panel slot and chart area, in the page layout's side column (beside the scene
+ * on wide windows, a drawer on small ones).
+ * @param preferred CSS px, integer in [240, 800]. Default 360. The dock takes this or less (`PageLayout.sideWidth`).
  * @throws RangeError on a width out of range.
  */
-export function createLabDock(width = 360): LabDock {
-  if (!Number.isInteger(width) || width < 240 || width > 800) throw new RangeError(`createLabDock: width must be an integer in [240, 800] px, got ${width}`);
+export function createLabDock(preferred = 360): LabDock {
+  if (!Number.isInteger(preferred) || preferred < 240 || preferred > 800) throw new RangeError(`createLabDock: width must be an integer in [240, 800] px, got ${preferred}`);
   injectStyle();
+  const layout = pageLayout();
+  const width = layout.sideWidth(preferred);
   const root = document.createElement('div');
   root.className = 'bp-lab-dock';
   root.style.width = `${width}px`;
@@ -81,11 +80,11 @@ export function createLabDock(width = 360): LabDock {
   charts.style.flexDirection = 'column';
   charts.style.gap = '6px';
   root.append(panelSlot, charts);
-  document.body.append(root);
+  layout.side.append(root);
   return {
     root, panelSlot, charts, width,
-    chartWidth: width - 12 - 16,
-    reserved: () => (window.innerWidth >= DOCK_BESIDE_MIN_WIDTH ? width : 0),
+    chartWidth: width - 16,
+    reserved: () => 0,
     destroy: () => root.remove(),
   };
 }
@@ -319,14 +318,14 @@ export function cssColor(color: number): string {
   return `#${color.toString(16).padStart(6, '0')}`;
 }
 
-/** A column of plots fixed at the bottom right of the window. */
+/** A column of plots in the page layout's side column (./layout). */
 export interface PlotDock {
   /** The dock element. */
   readonly element: HTMLElement;
   /**
-   * Adds a live plot (see games/shared/plot.ts) sized to the window: width min(420, 45% of the
-   * window), height split between `rows` plots in about 62% of the window's height; 600 samples
-   * kept, redrawn every 10 (long dashed polylines are costly to draw under software WebGL).
+   * Adds a live plot (see games/shared/plot.ts) sized to the side column: width up to 420 px
+   * (`PageLayout.sideWidth`), height split between `rows` plots in about 70% of the window's height;
+   * 600 samples kept, redrawn every 10 (long dashed polylines are costly to draw under software WebGL).
    * @throws whatever createPlot throws (empty series, bad sizes).
    */
   add(options: Omit<PlotOptions, 'parent'>): Plot;
@@ -338,14 +337,16 @@ export interface PlotDock {
  */
 export function createPlotDock(rows = 1): PlotDock {
   if (!(rows === 1 || rows === 2 || rows === 3)) throw new RangeError(`createPlotDock: rows must be 1, 2 or 3, got ${rows}`);
+  const layout = pageLayout();
   const element = document.createElement('div');
   element.className = 'lab-plots';
-  element.style.cssText = 'position:fixed;right:10px;bottom:10px;z-index:10;display:flex;flex-direction:column;gap:6px;pointer-events:none';
-  document.body.append(element);
-  const width = Math.round(Math.max(240, Math.min(420, window.innerWidth * 0.45)));
-  // The plots take at most 62% of the window's height; each adds about 62 px of title and legend to
+  element.style.cssText = 'display:flex;flex-direction:column;gap:6px';
+  layout.side.append(element);
+  // The plot's box adds 16 px of padding to uPlot's width.
+  const width = layout.sideWidth(420) - 16;
+  // The plots take at most 70% of the window's height; each adds about 62 px of title and legend to
   // uPlot's height (which holds the drawing area and the axes).
-  const height = Math.round(Math.max(110, Math.min(220, (window.innerHeight * 0.62) / rows - 62)));
+  const height = Math.round(Math.max(110, Math.min(220, (window.innerHeight * 0.7) / rows - 62)));
   return {
     element,
     add(options) {
@@ -404,16 +405,15 @@ export function dashedLine(g: Graphics, x0: number, y0: number, x1: number, y1: 
 }
 
 /**
- * A one-line status readout at the top of the window, between the HUD (top left) and the panel (top
- * right); DOM text, so updating it costs no texture upload. @returns `set(text)` (cheap when unchanged).
+ * A one-line status readout in the page layout's status row, above the scene; DOM text, so updating
+ * it costs no texture upload. @returns `set(text)` (cheap when unchanged).
  */
 export function createStatusLine(): { element: HTMLElement; set(text: string): void } {
   const element = document.createElement('div');
   element.className = 'lab-status';
   element.setAttribute('aria-live', 'polite');
-  element.style.cssText = 'position:fixed;top:10px;left:220px;right:265px;z-index:10;text-align:center;pointer-events:none;' +
-    'font:13px/1.4 system-ui,sans-serif;color:#e8ecf1;text-shadow:0 1px 2px #000';
-  document.body.append(element);
+  element.style.cssText = 'padding:6px 10px 2px;text-align:center;font:13px/1.4 system-ui,sans-serif;color:#e8ecf1';
+  pageLayout().status.append(element);
   let shown = '';
   return {
     element,
@@ -443,12 +443,9 @@ export function scaleSeries(fraction: number): { label: string; color: string } 
 }
 
 /**
- * Width, CSS px, that a lab should keep free at the right of its scene for the plot dock: the dock's
- * width plus a margin on windows at least 900 px wide, 0 on narrower ones (there the plot overlaps
- * the scene rather than shrink it to nothing; thumbnails, taken at 640 px, show the whole scene).
- * Read once at start (views are laid out then).
+ * Width, CSS px, that a lab should keep free at the right of its canvas for the plot dock: 0, as the
+ * page layout puts the plots beside the canvas (or in a drawer), never over it.
  */
 export function plotReserve(): number {
-  if (typeof window === 'undefined' || window.innerWidth < 900) return 0;
-  return Math.round(Math.max(240, Math.min(420, window.innerWidth * 0.45))) + 30;
+  return 0;
 }

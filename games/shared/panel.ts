@@ -1,4 +1,5 @@
 import GUI, { type Controller } from 'lil-gui';
+import { pageLayout } from './layout';
 
 /** Keys of `P` whose values are numbers. */
 type NumberKey<P> = { [K in keyof P]: P[K] extends number ? K : never }[keyof P] & string;
@@ -58,9 +59,9 @@ export interface PanelOptions {
   title?: string;
   /** Width, px, > 0. Default lil-gui's 245. */
   width?: number;
-  /** Element to put the panel in; default lil-gui's fixed top-right placement. */
+  /** Element to put the panel in. Default: the top of the page layout's side column (./layout). */
   container?: HTMLElement;
-  /** Start collapsed. Default: collapsed when the window is narrower than 700 px. */
+  /** Start collapsed. Default false (on small screens the side column is a drawer, closed at start). */
   closed?: boolean;
 }
 
@@ -91,11 +92,14 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
   const where = 'createPanel';
   if (params === null || typeof params !== 'object') throw new TypeError(`${where}: params must be an object`);
   const record = params as Record<string, unknown>;
+  const side = options.container ? null : pageLayout().side;
   const gui = new GUI({
     title: options.title ?? 'Parameters',
     ...(options.width !== undefined ? { width: options.width } : {}),
     ...(options.container ? { container: options.container } : {}),
+    ...(side ? { autoPlace: false } : {}),
   });
+  if (side) side.prepend(gui.domElement);
   const byKey = new Map<string, Controller>();
   try {
     for (const control of controls) {
@@ -137,8 +141,7 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
     gui.destroy();
     throw error;
   }
-  const closed = options.closed ?? (typeof window !== 'undefined' && window.innerWidth < 700);
-  if (closed) gui.close();
+  if (options.closed) gui.close();
   return {
     gui,
     params,

@@ -7,12 +7,13 @@ import { Application, type ColorSource } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
+import { pageLayout } from './layout';
 
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {
   /** Canvas background colour. Default 0x10141c. */
   background?: ColorSource;
-  /** Element the canvas is appended to (the canvas fills the window). Default document.body. */
+  /** Element the canvas fills (it follows the element's size). Default: the page layout's stage (./layout). */
   parent?: HTMLElement;
   /** Device pixel ratio to render at, in (0, 4]. Default min(devicePixelRatio, 2). */
   resolution?: number;
@@ -24,16 +25,18 @@ export interface PixiAppOptions {
 }
 
 /**
- * Creates a pixi Application (WebGL) whose canvas fills the window and follows its resizes. Its
- * ticker is not started: the game loop renders explicitly with `app.render()` after updating.
+ * Creates a pixi Application (WebGL) whose canvas fills `parent` (the layout's stage: the window
+ * less the page's columns) and follows its size. Its ticker is not started: the game loop renders
+ * explicitly with `app.render()` after updating.
  * @throws RangeError if resolution is not in (0, 4]; whatever pixi throws when WebGL is unavailable.
  */
 export async function createPixiApp(options: PixiAppOptions = {}): Promise<Application> {
   const resolution = options.resolution ?? Math.min(window.devicePixelRatio || 1, 2);
   if (!(resolution > 0 && resolution <= 4)) throw new RangeError(`createPixiApp: resolution must be in (0, 4], got ${resolution}`);
+  const parent = options.parent ?? pageLayout().stage;
   const app = new Application();
   await app.init({
-    resizeTo: window,
+    resizeTo: parent,
     background: options.background ?? 0x10141c,
     antialias: options.antialias ?? false,
     resolution,
@@ -46,7 +49,10 @@ export async function createPixiApp(options: PixiAppOptions = {}): Promise<Appli
   const canvas = app.canvas;
   canvas.style.display = 'block';
   canvas.style.touchAction = 'none';
-  (options.parent ?? document.body).append(canvas);
+  parent.append(canvas);
+  // pixi follows window resizes; the stage also changes size when the columns around it do.
+  new ResizeObserver(() => app.resize()).observe(parent);
+  app.resize();
   return app;
 }
 

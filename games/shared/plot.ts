@@ -16,7 +16,9 @@ function injectCss(): void {
   style.textContent = uplotCss + `
 .bp-plot { background: rgba(14, 17, 22, 0.85); border-radius: 8px; padding: 6px 8px; color: #e6e9ef; font: 12px system-ui, sans-serif; }
 .bp-plot .u-legend { color: #e6e9ef; }
-.bp-plot .u-title { font-size: 13px; font-weight: 600; }`;
+.bp-plot .u-title { font-size: 13px; font-weight: 600; white-space: normal; height: auto; line-height: 1.3; padding: 2px 4px; }
+.bp-plot .u-title .bp-plot-unit { display: block; font-weight: 400; color: #98a2b3; font-size: 12px; }
+.bp-plot .u-legend { white-space: normal; }`;
   document.head.append(style);
   cssInjected = true;
 }
@@ -91,6 +93,11 @@ export function createPlot(options: PlotOptions): Plot {
   const ring = Array.from({ length: n + 1 }, () => new Float64Array(capacity));
   const view = Array.from({ length: n + 1 }, () => new Array<number | null>(0));
   let head = 0, count = 0, pending = 0;
+  // A y label longer than the axis (uPlot draws it rotated along the plot's height) would be cut
+  // off: it goes under the title instead.
+  const height = options.height ?? 220;
+  const yLabel = options.yLabel ?? '';
+  const yLabelFits = yLabel.length * 7 <= height - 40;
   const chart = new uPlot(
     {
       title: options.title,
@@ -99,7 +106,7 @@ export function createPlot(options: PlotOptions): Plot {
       scales: { x: { time: false }, y: options.logY ? { distr: 3 } : {} },
       axes: [
         { label: options.xLabel ?? 'time (s)', stroke: '#98a2b3', grid: { stroke: '#252b36' } },
-        { label: options.yLabel ?? '', stroke: '#98a2b3', grid: { stroke: '#252b36' } },
+        { label: yLabelFits ? yLabel : '', stroke: '#98a2b3', grid: { stroke: '#252b36' } },
       ],
       series: [{}, ...options.series.map((s) => ({ label: s.label, stroke: s.color, width: 1.5, dash: s.dashed ? [6, 4] : undefined, spanGaps: false }))],
       legend: { live: false },
@@ -108,6 +115,12 @@ export function createPlot(options: PlotOptions): Plot {
     [[], ...options.series.map(() => [])] as unknown as uPlot.AlignedData,
     wrap,
   );
+  if (!yLabelFits) {
+    const unit = document.createElement('span');
+    unit.className = 'bp-plot-unit';
+    unit.textContent = `y: ${yLabel}`;
+    wrap.querySelector('.u-title')?.append(unit);
+  }
   const redraw = (): void => {
     const start = (head - count + capacity) % capacity;
     for (let k = 0; k <= n; k++) {

@@ -3,6 +3,7 @@ import { exposeGame, markReady, type GameHandle, type GameStats } from './contra
 import { createHud, type ControlHint, type Hud } from './hud';
 import { bindKeys, type KeyBinding } from './keys';
 import { createGameLoop, type GameLoop } from './loop';
+import { ICONS, pageLayout } from './layout';
 
 /** Options of `createGameShell`. */
 export interface GameShellOptions {
@@ -26,7 +27,7 @@ export interface GameShellOptions {
   maxFrameTime?: number;
   /** Most physics steps per frame. Default 4. */
   maxStepsPerFrame?: number;
-  /** Element the HUD goes into. Default document.body. */
+  /** Element the HUD goes into. Default: the page layout (./layout), with pause, step and reset buttons in its toolbar. */
   hudParent?: HTMLElement;
 }
 
@@ -66,9 +67,9 @@ export interface GameShell extends GameHandle {
 
 /** The built-in legend lines. */
 export const SHELL_CONTROLS: readonly ControlHint[] = Object.freeze([
-  { keys: 'P', action: 'pause / resume' },
-  { keys: 'N', action: 'single step (pauses)' },
-  { keys: 'R', action: 'reset' },
+  { keys: 'P', action: 'pause / resume', touch: '▮▮ button' },
+  { keys: 'N', action: 'single step (pauses)', touch: '▶▮ button' },
+  { keys: 'R', action: 'reset', touch: '↺ button' },
 ]);
 
 /**
@@ -95,8 +96,14 @@ export function createGameShell(options: GameShellOptions): GameShell {
   const listeners = new Set<(w: PhysicsWorld) => void>();
   let lastHud = -Infinity;
 
+  let pauseButton: HTMLButtonElement | null = null;
   const updateHud = (): void => {
     hud.update(loop.fps, bodies(world), world.steps, loop.paused);
+    if (pauseButton && pauseButton.dataset.paused !== String(loop.paused)) {
+      pauseButton.dataset.paused = String(loop.paused);
+      pauseButton.innerHTML = loop.paused ? ICONS.play : ICONS.pause;
+      pauseButton.setAttribute('aria-pressed', String(loop.paused));
+    }
   };
 
   const loop = createGameLoop({
@@ -179,6 +186,14 @@ export function createGameShell(options: GameShellOptions): GameShell {
     { key: 'r', label: 'reset', action: () => shell.reset() },
     ...extraKeys,
   ]);
+
+  if (!options.hudParent) {
+    // The same three actions as P, N and R, for touch screens and mice.
+    const layout = pageLayout();
+    pauseButton = layout.addButton('pause', 'pause / resume (P)', () => shell.togglePause());
+    layout.addButton('step', 'single step (N)', () => shell.step());
+    layout.addButton('reset', 'reset (R)', () => shell.reset());
+  }
 
   exposeGame(shell);
   loop.afterFirstFrame(() => {

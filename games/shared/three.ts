@@ -1,6 +1,6 @@
 /**
  * The three.js part of the game shell (the 3D counterpart of './pixi'): `createThreeApp` makes a
- * WebGL renderer whose canvas fills the window, a scene, a perspective camera with orbit controls
+ * WebGL renderer whose canvas fills the layout's stage (./layout), a scene, a perspective camera with orbit controls
  * (three's own OrbitControls addon) and resize handling; `startThreeGame` joins a `WorldRenderer3D`
  * to the renderer-agnostic shell (page contract, fixed-step loop, P / N / R keys, HUD) through
  * `createRenderedShell`, as './pixi' does.
@@ -14,12 +14,13 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer3D, createOrbitControls, frameBox, type OrbitOptions, type WorldRenderer3DOptions } from '@bitphysics/render-three';
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 import type { ControlHint } from './hud';
+import { pageLayout } from './layout';
 
 /** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
 export interface ThreeAppOptions {
   /** Background colour, 0xRRGGBB. Default 0x10141c. */
   background?: number;
-  /** Element the canvas is appended to (the canvas fills the window). Default document.body. */
+  /** Element the canvas fills (it follows its size). Default: the page layout's stage (./layout). */
   parent?: HTMLElement;
   /** Device pixel ratio to render at, in (0, 4]. Default min(devicePixelRatio, 2). */
   pixelRatio?: number;
@@ -108,7 +109,7 @@ export interface ThreeApp {
 
 /**
  * Creates the WebGL renderer (sRGB output, ACES tone mapping, PCF-filtered shadows), a scene with a
- * background colour, a perspective camera and orbit controls; the canvas fills the window and
+ * background colour, a perspective camera and orbit controls; the canvas fills `parent` and
  * follows its resizes. Nothing is drawn until `render`.
  * @throws TypeError on an unknown option; RangeError on pixelRatio outside (0, 4] or fov outside (0, 180);
  *   whatever three.js throws when WebGL is unavailable.
@@ -126,7 +127,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   if (cameraPosition.length !== 3 || !Array.from(cameraPosition).every(Number.isFinite)) {
     throw new RangeError(`${where}: cameraPosition must be 3 finite numbers, got ${JSON.stringify(Array.from(cameraPosition))}`);
   }
-  const parent = options.parent ?? document.body;
+  const parent = options.parent ?? pageLayout().stage;
   const renderer = new WebGLRenderer({ antialias: options.antialias ?? !isSoftwareWebGL(), powerPreference: 'high-performance' });
   renderer.setPixelRatio(pixelRatio);
   renderer.outputColorSpace = SRGBColorSpace;
@@ -153,6 +154,9 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   };
   resize();
   window.addEventListener('resize', resize);
+  // The layout's stage also changes size when the columns around it do.
+  const observer = new ResizeObserver(resize);
+  observer.observe(parent);
 
   return {
     renderer, scene, camera, controls, canvas,
@@ -178,6 +182,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     },
     destroy() {
       window.removeEventListener('resize', resize);
+      observer.disconnect();
       controls?.dispose();
       renderer.dispose();
       canvas.remove();

@@ -6,7 +6,7 @@
  * same seeded scene.
  */
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 /** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
 interface BallsGame {
@@ -35,7 +35,7 @@ describe('bouncing balls', () => {
   beforeAll(async () => {
     h = await Harness.start();
     page = await h.openGame('bouncing-balls', { query: { count: COUNT } });
-  });
+  }, START_TIMEOUT_MS);
   beforeEach(async () => {
     await page.page.evaluate(() => {
       const game = window.game as unknown as { reset(): void; paused: boolean };

@@ -13,7 +13,7 @@ export declare function freePort(): Promise<number>;
 /** Takes the cross-process site lock (dist/site is shared). @returns its release function. @throws Error after timeoutMs. */
 export declare function acquireSiteLock(options?: { timeoutMs?: number }): Promise<() => void>;
 /** Builds and serves the site on a free port under the site lock. `url` ends with '/'. */
-export declare function startSite(): Promise<{ url: string; stop: () => Promise<void> }>;
+export declare function startSite(options?: { lockTimeoutMs?: number }): Promise<{ url: string; stop: () => Promise<void> }>;
 /** One gallery entry, from games/<folder>/game.json. */
 export interface RegistryEntry {
   folder: string;

@@ -96,7 +96,11 @@ export async function acquireSiteLock({ timeoutMs = 110_000 } = {}) {
         rmSync(dir, { recursive: true, force: true });
         continue;
       }
-      if (Date.now() > deadline) throw new Error(`acquireSiteLock: ${dir} still held by pid ${pid} after ${timeoutMs} ms`);
+      if (Date.now() > deadline) {
+        let holder = '';
+        try { holder = readFileSync(`/proc/${pid}/cmdline`, 'utf8').split('\0').join(' ').slice(0, 200); } catch { /* not Linux, or gone */ }
+        throw new Error(`acquireSiteLock: ${dir} still held by pid ${pid}${holder ? ` (${holder})` : ''} after ${timeoutMs} ms: another browser test file or the thumbnail script is running`);
+      }
       await new Promise((r) => setTimeout(r, 100));
     }
   }
@@ -117,10 +121,11 @@ export async function acquireSiteLock({ timeoutMs = 110_000 } = {}) {
  * Serves the site (scripts/serve.mjs `startServer`, no watching) on a free port, holding the site
  * lock until `stop`. The build is reused from the previous run when none of its inputs changed
  * since (`cache`), so the browser test files after the first one start without building.
+ * @param {{ lockTimeoutMs?: number }} [options] how long to wait for the lock, ms (default 110 s).
  * @returns {Promise<{ url: string, stop: () => Promise<void> }>} url ends with '/'.
  */
-export async function startSite() {
-  const release = await acquireSiteLock();
+export async function startSite({ lockTimeoutMs = 110_000 } = {}) {
+  const release = await acquireSiteLock({ timeoutMs: lockTimeoutMs });
   try {
     const { startServer } = await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href);
     const port = await freePort();

@@ -13,7 +13,7 @@
  *
  * @example
  * let h: Harness;
- * beforeAll(async () => { h = await Harness.start(); });
+ * beforeAll(async () => { h = await Harness.start(); }, START_TIMEOUT_MS);
  * afterAll(async () => { await h?.close(); });
  * it('plays', async () => {
  *   const g = await h.openGame('bouncing-balls', { query: { count: 8 } });
@@ -51,7 +51,17 @@ export interface OpenOptions {
    * Default 'en-US'.
    */
   locale?: string;
+  /** A touch device (a phone): touch events, `pointer: coarse`, mobile viewport. Default false. */
+  touch?: boolean;
 }
+
+/**
+ * Timeout for the `beforeAll` hook that calls `Harness.start`, ms: browser test files run one at a
+ * time (the site lock), so a file may wait for another to finish (a few minutes in a full run)
+ * before it builds or reuses the site. Pass it as beforeAll's second argument; the lock itself gives
+ * up 10 s earlier with a message naming the holder.
+ */
+export const START_TIMEOUT_MS = 600_000;
 
 /** Longest wait for anything the harness asks of a page without a timeout of its own (frames, evaluations), ms. */
 export const PAGE_TIMEOUT_MS = 30_000;
@@ -99,7 +109,7 @@ export class Harness {
 
   /** Builds and serves the site on a free port and launches Chromium. Call in beforeAll. */
   static async start(): Promise<Harness> {
-    const site = await startSite();
+    const site = await startSite({ lockTimeoutMs: START_TIMEOUT_MS - 10_000 });
     try {
       const browser = await launchChromium();
       return new Harness(site.url, browser, site.stop);
@@ -118,6 +128,7 @@ export class Harness {
     // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
     const context = await this.browser.newContext({
       viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: options.locale ?? 'en-US',
+      ...(options.touch ? { hasTouch: true, isMobile: true } : {}),
     });
     const page = await context.newPage();
     // Every playwright wait (goto, locators, waitForFunction) gives up with a message after this long.

@@ -9,7 +9,7 @@
  * One page per lab, small and paused while measuring, so the file stays well under a minute.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 /** Fields every lab puts on window.game (see games/lab-*\/main.ts). */
 interface LabGame {
@@ -66,7 +66,7 @@ async function setNumber(g: GamePage, name: string, value: number): Promise<void
 let h: Harness;
 beforeAll(async () => {
   h = await Harness.start();
-});
+}, START_TIMEOUT_MS);
 afterAll(async () => {
   await h?.close();
 });

@@ -8,7 +8,7 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { createPhysicsWorld, step } from '@bitphysics/physics';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 import { circularSegmentArea, equilibriumDepth } from '../../games/lab-floating/scene';
 import { equilibriumAltitude, fallSpeedFromRest, resolveOptions } from '../../games/lab-balloon-parachute/scene';
 import { createOrbitMeter, meterSample } from '../../games/lab-cyclotron/scene';
@@ -97,7 +97,7 @@ describe('labs of Part II', () => {
   let h: Harness;
   beforeAll(async () => {
     h = await Harness.start();
-  });
+  }, START_TIMEOUT_MS);
   afterAll(async () => {
     await h?.close();
   });

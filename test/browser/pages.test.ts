@@ -3,23 +3,37 @@
  * checks the page contract: no console errors, page errors or failed requests; the ready flag;
  * window.game.stats(); a canvas that is not blank; no error box. The gallery itself must list every entry.
  *
- * Every page runs twice: with the language 'en-US@posix' (what Chromium reports under LANG=C.UTF-8;
- * Intl rejects the tag, and uPlot's module used to throw on it) and with 'de-DE' (comma decimals).
+ * Every page runs twice: as a phone (390 x 844, touch) with the language 'en-US@posix' (what Chromium
+ * reports under LANG=C.UTF-8; Intl rejects the tag, and uPlot's module used to throw on it), and on
+ * a desktop (1280 x 800) with 'de-DE' (comma decimals). Both times the layout is checked
+ * (./layout-check): the scene's box (the renderer's view rectangle) is inside the canvas and the
+ * window (the world is framed, not cropped), no text or panel covers it, nothing is cut off; a
+ * screenshot of each goes to dist/screenshots/<folder>-<phone|desktop>.png.
  * One browser and one server for all of them.
  */
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, readRegistry } from './harness';
+import { Harness, readRegistry, START_TIMEOUT_MS } from './harness';
+import { repoRoot } from './chromium.mjs';
+import { checkLayout } from './layout-check';
 
 const registry = await readRegistry();
 
-/** The browser languages every page must start under. */
-const LOCALES = ['en-US@posix', 'de-DE'] as const;
+/** The two runs of every page: a phone under 'en-US@posix', a desktop under 'de-DE'. */
+const RUNS = [
+  { name: 'phone', locale: 'en-US@posix', language: 'en-US', viewport: { width: 390, height: 844 }, touch: true },
+  { name: 'desktop', locale: 'de-DE', language: 'de-DE', viewport: { width: 1280, height: 800 }, touch: false },
+] as const;
+
+const shots = join(repoRoot, 'dist', 'screenshots');
+mkdirSync(shots, { recursive: true });
 
 describe('every registered page', () => {
   let h: Harness;
   beforeAll(async () => {
     h = await Harness.start();
-  });
+  }, START_TIMEOUT_MS);
   afterAll(async () => {
     await h?.close();
   });
@@ -45,10 +59,10 @@ describe('every registered page', () => {
     await g.close();
   });
 
-  for (const entry of registry) for (const locale of LOCALES) {
-    it(`${entry.folder} (${locale}): ready, window.game, canvas drawn, no errors`, async () => {
-      const g = await h.openGame(entry.folder, { locale });
-      expect(await g.page.evaluate(() => navigator.language)).toBe(locale === 'de-DE' ? 'de-DE' : 'en-US');
+  for (const entry of registry) for (const run of RUNS) {
+    it(`${entry.folder} (${run.name}, ${run.locale}): ready, window.game, canvas drawn, scene clear and whole, no errors`, async () => {
+      const g = await h.openGame(entry.folder, { locale: run.locale, viewport: run.viewport, touch: run.touch });
+      expect(await g.page.evaluate(() => navigator.language)).toBe(run.language);
       const stats = await g.stats();
       expect(Number.isInteger(stats.entities) && stats.entities > 0).toBe(true);
       expect(Number.isInteger(stats.steps) && stats.steps >= 0).toBe(true);
@@ -59,6 +73,12 @@ describe('every registered page', () => {
       await g.frames(5);
       expect(await g.page.locator('[data-page-error], [role="alert"]').allInnerTexts()).toEqual([]);
       expect(g.errors).toEqual([]);
+      const layout = await checkLayout(g.page);
+      writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
+      expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
+      expect(layout.clipped).toEqual([]);
+      // The scene uses the screen: at least a fifth of the window (a wide world on a tall phone is letterboxed).
+      expect(layout.sceneShare).toBeGreaterThan(0.2);
       await g.close();
     });
   }

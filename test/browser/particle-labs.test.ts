@@ -8,7 +8,7 @@
  * step with `advance(n)` while the page is paused, so they do not depend on the frame rate.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 /** What every particle lab puts on window.game, loosely typed (each test casts what it reads). */
 type Lab = Record<string, unknown> & {
@@ -27,7 +27,7 @@ type Lab = Record<string, unknown> & {
 let h: Harness;
 beforeAll(async () => {
   h = await Harness.start();
-});
+}, START_TIMEOUT_MS);
 afterAll(async () => {
   await h?.close();
 });

@@ -10,7 +10,7 @@
  * run with small counts (?sparks, ?generations=1, ?opening=0) and waits are generous.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 interface LayerStats { particles: number; drawn: number; trails: number; pooled: number; frames: number }
 interface FireworksGame {
@@ -35,7 +35,7 @@ interface BlackHoleGameHandle {
 let h: Harness;
 beforeAll(async () => {
   h = await Harness.start();
-});
+}, START_TIMEOUT_MS);
 afterAll(async () => {
   await h?.close();
 });

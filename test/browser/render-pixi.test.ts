@@ -6,7 +6,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Camera } from '../../packages/render-pixi/src/camera';
 import { parseColor, seededColor } from '../../packages/render-common/src/colors';
 import { numberParam, flagParam, choiceParam } from '../../games/shared/params';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 describe('Camera (metres to pixels)', () => {
   it('fits a view centred with padding and flips y', () => {
@@ -114,7 +114,7 @@ describe('WorldRenderer in the browser', () => {
   beforeAll(async () => {
     h = await Harness.start();
     g = await h.openGame('bouncing-balls', { query: { count: 8, trails: 0 } });
-  });
+  }, START_TIMEOUT_MS);
   afterAll(async () => {
     await h?.close();
   });

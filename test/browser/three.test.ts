@@ -20,7 +20,7 @@ import {
   InstanceBook, WorldRenderer3D, composeInto, equivalentBoxEdges, frameBox, hexToLinear, resolveTrailOptions, rotateBack, slerpInto,
   type InstanceBookListener,
 } from '../../packages/render-three/src/index';
-import { Harness, type GamePage } from './harness';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 
 // ---------------------------------------------------------------------------------------------
 // Node: bookkeeping and maths
@@ -438,7 +438,7 @@ describe('3D games in headless Chromium', () => {
   let h: Harness;
   beforeAll(async () => {
     h = await Harness.start();
-  });
+  }, START_TIMEOUT_MS);
   afterAll(async () => {
     await h?.close();
   });
