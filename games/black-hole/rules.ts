@@ -202,7 +202,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
   });
   const game: BlackHoleGame = {
     world, params: p, ship, holes: [], holeRadius: [], holeMass: [], lives: p.lives, score: 0, over: false,
-    message: 'Reach the green line at the top. Arrow keys thrust.', thrust: 'none', falls: 0, crossings: 0, resets: 0,
+    message: 'Reach the green line at the top. The arrow keys or buttons thrust.', thrust: 'none', falls: 0, crossings: 0, resets: 0,
     version: 0, rng: new Rng(p.seed),
   };
   addSystem(world, 'forces', thrustLaw(game, ship));
@@ -354,7 +354,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
       game.lives = 0;
       game.over = true;
       setThrust(game, 'none');
-      game.message = `Swallowed! Game over with ${game.score} points. Press Enter or R to play again.`;
+      game.message = `Swallowed! Game over with ${game.score} ${game.score === 1 ? 'point' : 'points'}. Press Enter or R to play again.`;
       return 'over';
     }
     game.message = `Swallowed by a black hole! ${game.lives} ${game.lives === 1 ? 'life' : 'lives'} left.`;
@@ -366,7 +366,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     game.crossings++;
     layoutHoles(game, Math.min(MAX_HOLES, n + 1));
     resetShip(game);
-    game.message = `Made it! +${n} (one hole per hole on screen). Now ${game.holes.length} holes.`;
+    game.message = `Made it! +${n} (one hole per hole on screen). Now ${game.holes.length} ${game.holes.length === 1 ? 'hole' : 'holes'}.`;
     return 'scored';
   }
   if (x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) {
@@ -408,7 +408,7 @@ export function restart(game: BlackHoleGame): void {
   game.lives = game.params.lives;
   game.score = 0;
   game.over = false;
-  game.message = 'Reach the green line at the top. Arrow keys thrust.';
+  game.message = 'Reach the green line at the top. The arrow keys or buttons thrust.';
   setThrust(game, 'none');
   layoutHoles(game, game.params.holes);
   resetShip(game);

@@ -15,7 +15,7 @@
 import { Graphics } from 'pixi.js';
 import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
 import {
   MAX_HOLD, SKY, burstScale, createFireworks, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
   setShowSparks, stepFireworks, type FireworksShow,
@@ -183,7 +183,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.8 });
   }
   const n = layer.stats.particles;
-  if (n !== sparkShown) { sparkShown = n; sparkLine.textContent = `${n} sparks`; }
+  if (n !== sparkShown) { sparkShown = n; sparkLine.textContent = plural(n, 'spark', 'sparks'); }
 }
 
 // ---- Pointer: press to charge, release to launch ------------------------------------------------

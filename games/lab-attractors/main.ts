@@ -13,7 +13,7 @@ import { Graphics } from 'pixi.js';
 import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
@@ -50,7 +50,7 @@ function createWorld(): PhysicsWorld {
 }
 
 const game = await startPixiGame({
-  title: 'Lab: attractors',
+  title: 'Attractors',
   createWorld,
   step: () => stepAttractors(field),
   bodies: () => field.particles.length,
@@ -108,7 +108,7 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Attractors' });
 
-const info = createReadout(shell.hud.readout, ['attractors', 'vortex', 'came back']);
+const info = createReadout(shell.hud.readout, ['attractors', 'vortex', 'escaped and put back']);
 
 // ---- Drawing --------------------------------------------------------------------------------------
 
@@ -138,7 +138,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   if (frame++ % 6 === 0) {
     info.set(0, `${field.attractorCount} of ${MAX_ATTRACTORS}`);
     info.set(1, params.vortex ? `${params.vortexStrength} N (steady swirl ${params.drag > 0 ? (params.vortexStrength / params.drag).toFixed(1) : '∞'} m/s)` : 'off');
-    info.set(2, `${field.returns} particles`);
+    info.set(2, plural(field.returns, 'particle', 'particles'));
   }
 }
 

@@ -93,7 +93,7 @@ function labStep(world: PhysicsWorld): void {
 let plot: ReturnType<typeof createPlot> | null = null;
 
 const game = await startPixiGame({
-  title: 'Lab: bungee jump',
+  title: 'Bungee jump',
   createWorld,
   step: labStep,
   bodies: () => 1,

@@ -13,7 +13,7 @@
 import { Graphics, Text } from 'pixi.js';
 import { INTEGRATOR_NAMES, createPhysicsWorld, setPosition, setVelocity, step, slotOf, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, flagParam, numberParam, pointerOnCanvas } from '../shared/index';
+import { choiceParam, createPanel, flagParam, numberParam, plural, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
 import {
   BOX, MAX_CHARGES, MICRO, PRESETS, TEST_RADIUS, addCharge, buildElectric, createFieldLines, electricWorldOptions, hasRoom,
@@ -211,7 +211,7 @@ function draw(): void {
   if (++frame % 10 === 1) {
     const e = testEnergy(world, handles), e0 = handles.initialEnergy;
     status.set(`test charge energy ${(e * 1e3).toFixed(4)} mJ · exact ${(e0 * 1e3).toFixed(4)} mJ · ` +
-      `relative drift ${(Math.abs(e - e0) / Math.abs(e0 || 1)).toExponential(1)} · ${params.integrator}, ${params.substeps} substeps`);
+      `relative drift ${(Math.abs(e - e0) / Math.abs(e0 || 1)).toExponential(1)} · ${params.integrator}, ${plural(params.substeps, 'substep', 'substeps')}`);
   }
   if (fieldDirty || cam.version !== cameraVersion || linesShown !== params.lines) {
     drawFieldLines();

@@ -43,7 +43,7 @@ function createWorld(): PhysicsWorld {
 const emitterOf = (world: PhysicsWorld, e: number): number => world.components.Particle.emitter[e]!;
 
 const game = await startPixiGame({
-  title: 'Lab: fire',
+  title: 'Fire',
   createWorld,
   step: () => stepFire(fire),
   bodies: (world) => countParticles(world),

@@ -15,7 +15,7 @@ import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '../shared/lab-kit';
 import {
-  BALL_RADIUS, BODY_KINDS, BOX_HALF, SURFACE, TANK, buildFloating, dropBall, equilibriumOf, floatingWorldOptions,
+  BALL_RADIUS, BODY_KINDS, BOX_HALF, DIVIDER, SURFACE, TANK, buildFloating, dropBall, equilibriumOf, floatingWorldOptions,
   immersionDepth, resolveFloatingOptions, setBodyDensity, setFluidDensity, setFluidDrag, type BodyKind, type FloatingHandles,
 } from './scene';
 
@@ -141,6 +141,11 @@ app.stage.addChild(boxLayer, water, marks);
 const labelStyle = { fill: 0xe8ecf1, fontSize: 12, fontFamily: 'system-ui, sans-serif' };
 const labels = new Map<BodyKind, Text>(BODY_KINDS.map((k) => [k, new Text({ text: '', style: labelStyle })]));
 for (const t of labels.values()) { t.anchor.set(0.5, 1); app.stage.addChild(t); }
+// The pole between the box and the balls: the box has no collider (it cannot touch the balls), so a
+// divider keeps it in a compartment of its own.
+const dividerLabel = new Text({ text: 'divider: keeps the box\n(no collider) on its side', style: { ...labelStyle, fontSize: 11, fill: 0x98a2b3, align: 'center' } });
+dividerLabel.anchor.set(0.5, 1);
+app.stage.addChild(dividerLabel);
 const shownDensity = new Map<BodyKind, number>();
 const status = createStatusLine();
 let frame = 0;
@@ -182,11 +187,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
   for (const kind of BODY_KINDS) {
     const t = labels.get(kind)!;
     const rho = params[kind];
-    if (shownDensity.get(kind) !== rho) { shownDensity.set(kind, rho); t.text = `${kind} ${rho}`; }
+    if (shownDensity.get(kind) !== rho) { shownDensity.set(kind, rho); t.text = `${kind} ${rho} kg/m²`; }
     const id = handles[kind];
     const top = kind === 'box' ? BOX_HALF[1] : BALL_RADIUS;
     t.position.set(cam.toScreenX(lerpX(id)), cam.toScreenY(lerpY(id) + top) - 4);
   }
+  dividerLabel.position.set(cam.toScreenX(DIVIDER.x), cam.toScreenY(DIVIDER.top) - 4);
 }
 
 // ---- Pointer: a click drops a ball -------------------------------------------------------------

@@ -78,7 +78,7 @@ function createWorld(): PhysicsWorld {
 }
 
 const game = await startPixiGame({
-  title: 'Lab: galaxy',
+  title: 'Galaxy',
   createWorld,
   step: (world) => timer.run(physicsStep, world),
   bodies: () => stars.length,

@@ -143,7 +143,7 @@ let refit: (() => void) | null = null;
 let plot: ReturnType<typeof createPlot> | null = null;
 
 const game = await startPixiGame({
-  title: 'Lab: integrators',
+  title: 'Integrators',
   createWorld,
   step: () => labStep(),
   bodies: () => runs.length,

@@ -179,7 +179,7 @@ let plot: ReturnType<typeof createPlot> | null = null;
 const trailOptions = { length: 120, maxEntities: 40, width: 2, alpha: 0.5 };
 
 const game = await startPixiGame({
-  title: 'Lab: orbits',
+  title: 'Orbits',
   createWorld,
   step: labStep,
   bodies: () => handles.planets.length + handles.launched.length,
@@ -224,7 +224,7 @@ function applyCentralMass(): void {
 
 const readout = createReadout(shell.hud.readout, [
   'selected body', 'energy E (J/kg)', 'E₀ at selection', 'max |E − E₀|/|E₀|', 'a = −GM/2E₀',
-  'Kepler 2π√(a³/GM)', 'measured period', 'turns', 'world energy drift',
+  'Kepler 2π√(a³/GM)', 'measured period', 'turns', 'drift of the total energy',
 ]);
 plot = createPlot({
   parent: dock.charts, title: 'Energy of the selected orbit', yLabel: 'E (J/kg)', width: dock.chartWidth, height: 190, capacity: 2400,
@@ -339,7 +339,7 @@ function updateReadout(world: PhysicsWorld): void {
   readout.set(6, Number.isNaN(orbit.measuredPeriod) ? 'after the first turn' : `${fmt(orbit.measuredPeriod)} s`);
   readout.set(7, String(orbit.turns));
   const total = totalEnergy(world);
-  readout.set(8, `${fmt(total - orbit.total0, 3)} J (package totalEnergy)`);
+  readout.set(8, `${fmt(total - orbit.total0, 3)} J`);
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------------

@@ -111,7 +111,7 @@ let refit: (() => void) | null = null;
 let plot: ReturnType<typeof createPlot> | null = null;
 
 const game = await startPixiGame({
-  title: 'Lab: pendulum',
+  title: 'Pendulum',
   createWorld,
   step: labStep,
   bodies: () => 1,

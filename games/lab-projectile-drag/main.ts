@@ -191,7 +191,7 @@ let refit: (() => void) | null = null;
 let plots: { height: ReturnType<typeof createPlot>; velocity: ReturnType<typeof createPlot> } | null = null;
 
 const game = await startPixiGame({
-  title: 'Lab: projectile with drag',
+  title: 'Projectile with drag',
   createWorld,
   step: labStep,
   bodies: () => 1,

@@ -37,7 +37,7 @@ function createWorld(): PhysicsWorld {
 }
 
 const game = await startPixiGame({
-  title: 'Lab: smoke',
+  title: 'Smoke',
   createWorld,
   step: () => stepSmoke(smoke),
   bodies: (world) => countParticles(world),

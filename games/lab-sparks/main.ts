@@ -57,7 +57,7 @@ function createWorld(): PhysicsWorld {
 }
 
 const game = await startPixiGame({
-  title: 'Lab: sparks',
+  title: 'Sparks',
   createWorld,
   step: () => stepSparks(sparks),
   bodies: (world) => countParticles(world),

@@ -12,7 +12,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import { createPanel, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
@@ -41,7 +41,7 @@ function createWorld(): PhysicsWorld {
 
 const TRAILS = { duration: 0.04, width: 0.5, alpha: 0.5 };
 const game = await startPixiGame({
-  title: 'Lab: splash',
+  title: 'Splash',
   createWorld,
   step: () => stepSplash(splash),
   bodies: () => dropCount(splash) + splashCount(splash),
@@ -104,9 +104,9 @@ function drawFrame(world: PhysicsWorld): void {
   if (frame++ % 6 === 0) {
     info.set(0, String(dropCount(splash)));
     info.set(1, String(splashCount(splash)));
-    info.set(2, `${splash.groundImpacts} ground, ${splash.waterImpacts} water (${splash.absorbed} droplets back in)`);
+    info.set(2, `${splash.groundImpacts} ground, ${splash.waterImpacts} water (${plural(splash.absorbed, 'droplet', 'droplets')} back in)`);
     const l = splash.last;
-    info.set(3, l.surface === '' ? '–' : `${l.surface} at x = ${fmt(l.x)} m, ${fmt(l.speed)} m/s, ${l.droplets} droplets`);
+    info.set(3, l.surface === '' ? '–' : `${l.surface} at x = ${fmt(l.x)} m, ${fmt(l.speed)} m/s, ${plural(l.droplets, 'droplet', 'droplets')}`);
   }
 }
 

@@ -95,7 +95,7 @@ let refit: (() => void) | null = null;
 let plot: ReturnType<typeof createPlot> | null = null;
 
 const game = await startPixiGame({
-  title: 'Lab: spring chain',
+  title: 'Spring chain',
   createWorld,
   step: labStep,
   bodies: () => handles.balls.length,

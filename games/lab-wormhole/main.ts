@@ -13,7 +13,7 @@ import { Graphics } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
 import { advanceSteps, exposeLive, fmt } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
 import {
@@ -50,7 +50,7 @@ function createWorld(): PhysicsWorld {
 }
 
 const game = await startPixiGame({
-  title: 'Lab: wormhole',
+  title: 'Wormhole',
   createWorld,
   step: () => stepWormhole(hole),
   bodies: () => hole.count,
@@ -111,9 +111,9 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   holes.circle(wx, wy, rh).fill({ color: 0xffffff, alpha: 0.9 });
   points.render(world, cam, alpha);
   if (frame++ % 6 === 0) {
-    info.set(0, `${hole.teleports} stars`);
+    info.set(0, plural(hole.teleports, 'star', 'stars'));
     info.set(1, Number.isNaN(hole.last.speedIn) ? '–' : `${fmt(hole.last.speedIn)} m/s in, ${fmt(hole.last.speedOut)} m/s out`);
-    info.set(2, `${hole.respawns} stars back into the disc`);
+    info.set(2, `${plural(hole.respawns, 'star', 'stars')} back into the disc`);
     info.set(3, `${fmt(hole.settings.blackHole - hole.settings.whiteHole)} m³/s² (black − white)`);
     info.set(4, 'Attractor, |F| = G M m r / (r² + ε²)^(3/2) inward');
     info.set(5, 'central force k r^(n−1), n = −1, k = +G Mw m: outward');
