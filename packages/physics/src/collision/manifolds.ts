@@ -193,6 +193,8 @@ export interface ShapeScratch {
   maxX: Float64Array;
   maxY: Float64Array;
   spec: Float64Array;
+  /** Per collider: bit 1 its body moves this step (dynamic or kinematic), bit 2 it is a ball body without a shape. */
+  flags: Uint8Array;
   /** Grid: cell of each collider's box corner, bucket starts, colliders sorted by bucket. */
   cellX: Int32Array;
   cellY: Int32Array;
@@ -210,7 +212,7 @@ function createShapeScratch(): ShapeScratch {
   const z = (): Float64Array => new Float64Array(0);
   const zi = (): Int32Array => new Int32Array(0);
   return {
-    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(),
+    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(), flags: new Uint8Array(0),
     cellX: zi(), cellY: zi(), bucket: zi(), sorted: zi(), bucketStart: new Int32Array(1), oversized: zi(),
     pairCount: 0, pairI: new Int32Array(256), pairJ: new Int32Array(256),
   };
@@ -253,6 +255,8 @@ export interface ShapeCollisionState {
   /** Per entity: stamp of the step in which the body was classified; the counter. */
   bodyMarks: Uint32Array;
   bodyMark: number;
+  /** Whether any collider moves this step (else the broadphase has nothing to pair). */
+  anyMoving: boolean;
   /** Scratch list of the bodies that may sleep (shape-islands.ts). */
   sleepList: Uint32Array;
   /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s, and its angle at the start of the step, rad. */
@@ -285,6 +289,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     bodyW: new Float64Array(0),
     bodyAngle0: new Float64Array(0),
     sleepList: new Uint32Array(0),
+    anyMoving: false,
   };
 }
 

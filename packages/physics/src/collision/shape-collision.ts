@@ -43,7 +43,7 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   }
   st.manifolds.count = 0;
   gatherColliders(world, st);
-  findPairs(st.scratch);
+  findPairs(st.scratch, st.anyMoving);
   collidePairs(world, st);
   collideStatic(world, st);
   if (st.wake.length > 0) {
@@ -61,7 +61,7 @@ function ensureScratch(sc: ShapeScratch, n: number): void {
   const f = (): Float64Array => new Float64Array(m);
   const i = (): Int32Array => new Int32Array(m);
   sc.shape = i(); sc.body = i(); sc.x = f(); sc.y = f(); sc.c = f(); sc.s = f();
-  sc.minX = f(); sc.minY = f(); sc.maxX = f(); sc.maxY = f(); sc.spec = f();
+  sc.minX = f(); sc.minY = f(); sc.maxX = f(); sc.maxY = f(); sc.spec = f(); sc.flags = new Uint8Array(m);
   sc.cellX = i(); sc.cellY = i(); sc.bucket = i(); sc.sorted = i(); sc.oversized = i();
 }
 
@@ -85,6 +85,7 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
   const halfSpec = 0.5 * spec0;
   const SX = S.vx, SY = S.vy, R = S.radius, CNT = S.count, BODY = S.body;
   const mark = ++st.bodyMark;
+  st.anyMoving = false;
   const bodyMarks = st.bodyMarks;
   for (let i = 0; i < n; i++) {
     const isBall = i >= shapes.length;
@@ -116,6 +117,8 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
     }
     t = type[b]!;
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
+    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !hasComponent(world, b, c.Shape) ? BALL : 0);
+    if (moving) st.anyMoving = true;
     const x = ox[b]!, y = oy[b]!, a0 = st.bodyAngle0[b]!;
     const co = Math.cos(a0), si = Math.sin(a0);
     sc.x[i] = x; sc.y[i] = y; sc.c[i] = co; sc.s[i] = si;
@@ -154,6 +157,9 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
  */
 const SPECULATIVE_FRACTION = 0.04;
 
+/** Collider flags (ShapeScratch.flags). */
+const MOVING = 1, BALL = 2;
+
 /** Colliders wider than this many times the mean box width skip the grid. */
 const OVERSIZED_FACTOR = 4;
 
@@ -165,10 +171,11 @@ function hashCell(cx: number, cy: number): number {
 const HALF = [1, 0, 1, 1, 0, 1, -1, 1];
 
 /** Fills the candidate pairs of colliders whose fattened boxes overlap (before filtering). */
-function findPairs(sc: ShapeScratch): void {
+function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
   const n = sc.count;
   sc.pairCount = 0;
-  if (n < 2) return;
+  if (n < 2 || !anyMoving) return;
+  const fl = sc.flags;
   const minX = sc.minX, minY = sc.minY, maxX = sc.maxX, maxY = sc.maxY;
   let mean = 0;
   for (let i = 0; i < n; i++) mean += Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
@@ -204,12 +211,13 @@ function findPairs(sc: ShapeScratch): void {
 
   for (let p = 0; p < small; p++) {
     const i = sorted[p]!;
+    const mi = fl[i]! & MOVING;
     const cx = cellX[i]!, cy = cellY[i]!;
     const ax0 = minX[i]!, ay0 = minY[i]!, ax1 = maxX[i]!, ay1 = maxY[i]!;
     const own = bucket[i]!;
     for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
       const j = sorted[q]!;
-      if (cellX[j] !== cx || cellY[j] !== cy) continue;
+      if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
       if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
     }
     for (let k = 0; k < 8; k += 2) {
@@ -217,16 +225,18 @@ function findPairs(sc: ShapeScratch): void {
       const bk = hashCell(nx, ny) & mask;
       for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
         const j = sorted[q]!;
-        if (cellX[j] !== nx || cellY[j] !== ny) continue;
+        if (cellX[j] !== nx || cellY[j] !== ny || (mi | (fl[j]! & MOVING)) === 0) continue;
         if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
       }
     }
   }
   for (let a = 0; a < overCount; a++) {
     const i = over[a]!;
+    const mi = fl[i]! & MOVING;
     const ax0 = minX[i]!, ay0 = minY[i]!, ax1 = maxX[i]!, ay1 = maxY[i]!;
     for (let b2 = a + 1; b2 < overCount; b2++) {
       const j = over[b2]!;
+      if ((mi | (fl[j]! & MOVING)) === 0) continue;
       if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
     }
     // Ordinary boxes overlapping this one have their lower corner in [min - cell, max].
@@ -235,6 +245,7 @@ function findPairs(sc: ShapeScratch): void {
     if ((cx1 - cx0 + 1) * (cy1 - cy0 + 1) > small) {
       for (let p = 0; p < small; p++) {
         const j = sorted[p]!;
+        if ((mi | (fl[j]! & MOVING)) === 0) continue;
         if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
       }
       continue;
@@ -244,7 +255,7 @@ function findPairs(sc: ShapeScratch): void {
         const bk = hashCell(cx, cy) & mask;
         for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
           const j = sorted[q]!;
-          if (cellX[j] !== cx || cellY[j] !== cy) continue;
+          if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
           if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
         }
       }
@@ -309,12 +320,11 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       else if (tb === BodyType.Kinematic && ta === BodyType.Sleeping) st.wake.push(ba);
       continue;
     }
-    const aBall = ea === ba && !(S.body.length > ea && hasComponent(world, ea, c.Shape));
-    const bBall = eb === bb && !(S.body.length > eb && hasComponent(world, eb, c.Shape));
-    if (aBall && bBall) continue; // ball-ball: narrowphase.ts
-    if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
     // Keep the lower shape id as A so a pair's key does not depend on the grid's order.
     if (ea > eb) { let t = i; i = j; j = t; t = ea; ea = eb; eb = t; t = ba; ba = bb; bb = t; }
+    const aBall = (sc.flags[i]! & BALL) !== 0, bBall = (sc.flags[j]! & BALL) !== 0;
+    if (aBall && bBall) continue; // ball-ball: narrowphase.ts
+    if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
     colliderGeometry(world, ea, gA);
     colliderGeometry(world, eb, gB);
     const sensor = (!aBall && S.sensor[ea] === 1) || (!bBall && S.sensor[eb] === 1);
