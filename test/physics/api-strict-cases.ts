@@ -141,6 +141,9 @@ const optionsFns: OptionsFn[] = [
   { name: 'setGravitation', valid: () => ({ constant: 1 }) },
   { name: 'setElectrostatics', valid: () => ({ constant: 1 }) },
   { name: 'setWind', valid: () => ({ velocity: [1, 0] }) },
+  { name: 'createFixedStepLoop', valid: () => ({ dt: 0.01, step: () => {} }), call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o) },
+  { name: 'createRecorder', valid: () => ({ quantities: { energy: api.kineticEnergy }, every: 1 }) },
+  { name: 'addSystem', valid: () => ({}), optional: true, call: (f, w, o) => (f as never as (...a: unknown[]) => unknown)(w, 'forces', () => {}, o) },
 ];
 
 /** What a case expects: a clear error from `expectFrom` (the function the user called). */

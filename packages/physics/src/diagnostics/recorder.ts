@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
-import { assertInteger, assertKnownKeys, describe } from '../validate.js';
+import { assertInteger, assertOptions, describe } from '../validate.js';
 
 /** A quantity to record: a function of the world returning a number (J, m, kg m/s, ...). */
 export type Quantity = (world: PhysicsWorld) => number;
@@ -34,11 +34,11 @@ export interface Recorder {
 
 /**
  * Creates a recorder of `quantities` over time, with bounded memory.
- * @throws TypeError on unknown options or a quantity that is not a function; RangeError on bad counts.
+ * @throws TypeError on a missing options object, unknown or null options, or a quantity that is not a function; RangeError on bad counts.
  */
 export function createRecorder(world: PhysicsWorld, options: RecorderOptions): Recorder {
   const where = 'createRecorder';
-  assertKnownKeys(where, options, ['quantities', 'every', 'capacity']);
+  assertOptions(where, options, ['quantities', 'every', 'capacity']);
   const names = Object.keys(options.quantities ?? {});
   if (names.length === 0) throw new TypeError(`${where}: quantities must name at least one function`);
   const fns = names.map((n) => {

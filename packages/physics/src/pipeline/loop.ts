@@ -1,4 +1,4 @@
-import { assertKnownKeys, assertPositive, assertInteger } from '../validate.js';
+import { assertOptions, assertPositive, assertInteger } from '../validate.js';
 
 /** Options of `createFixedStepLoop`. */
 export interface FixedStepLoopOptions {
@@ -43,11 +43,11 @@ export interface FixedStepLoop {
  * accumulator, whole steps of `dt` are taken out, the backlog is clamped, and the remainder gives
  * the renderer an interpolation factor alpha = accumulator / dt. No timers inside: call `advance`
  * from requestAnimationFrame in a page, or from any loop in Node.
- * @throws TypeError on unknown options; RangeError on dt <= 0, maxFrameTime <= 0, maxStepsPerFrame < 1.
+ * @throws TypeError on a missing options object, unknown or null options; RangeError on dt <= 0, maxFrameTime <= 0, maxStepsPerFrame < 1.
  */
 export function createFixedStepLoop(options: FixedStepLoopOptions): FixedStepLoop {
   const where = 'createFixedStepLoop';
-  assertKnownKeys(where, options, ['dt', 'step', 'maxFrameTime', 'maxStepsPerFrame']);
+  assertOptions(where, options, ['dt', 'step', 'maxFrameTime', 'maxStepsPerFrame']);
   assertPositive(where, 'dt', options.dt);
   if (typeof options.step !== 'function') throw new TypeError(`${where}: step must be a function`);
   const maxFrameTime = options.maxFrameTime ?? 0.25;

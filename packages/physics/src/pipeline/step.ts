@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages.js';
-import { describe } from '../validate.js';
+import { assertOptions, describe } from '../validate.js';
 import { query } from '../query.js';
 import { checkStageState, stageNeedsCheck } from './finite.js';
 
@@ -129,13 +129,14 @@ export interface AddSystemOptions {
  * Hooks `system` into `stage` of this world, at the end of the stage unless `before` or `after`
  * names a system already there. User force laws go in `'forces'`.
  * @throws RangeError on an unknown stage or a `before`/`after` system that is not in the stage.
- * @throws TypeError if `system` is not a function.
+ * @throws TypeError if `system` is not a function, or `options` is not an object of known, non-null options.
  */
 export function addSystem(world: PhysicsWorld, stage: StageName, system: System, options: AddSystemOptions = {}): void {
   if (!(STAGES as readonly string[]).includes(stage)) {
     throw new RangeError(`addSystem: stage must be one of ${STAGES.join(', ')}, got ${describe(stage)}`);
   }
   if (typeof system !== 'function') throw new TypeError(`addSystem: system must be a function, got ${describe(system)}`);
+  assertOptions('addSystem', options, ['before', 'after']);
   const list = world.stages[stage];
   const anchor = options.before ?? options.after;
   if (anchor === undefined) {
