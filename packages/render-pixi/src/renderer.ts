@@ -9,6 +9,7 @@ import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions }
 import { createBallTexture } from './textures.js';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
 import { WallLayer } from './walls.js';
+import { ShapeLayer } from './shapes.js';
 import { assertBoolean, assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
 
 /** Options of `new WorldRenderer`. Every field is optional; unknown fields are rejected. */
@@ -140,6 +141,7 @@ export class WorldRenderer {
   private readonly texture: Texture;
   private readonly balls: BallLayer;
   private readonly walls: WallLayer;
+  private readonly shapes: ShapeLayer;
   private readonly trailHolder = new Container({ label: 'trail-holder' });
   private readonly debugHolder = new Container({ label: 'debug-holder' });
   private trails: TrailLayer | null = null;
@@ -219,7 +221,8 @@ export class WorldRenderer {
     this.texture = createBallTexture({ size: textureSize, mark: rotation });
     this.balls = new BallLayer(this.texture, mode === 'particles' ? 'particles' : 'sprites', rotation, colorSeed, palette);
     this.walls = new WallLayer(segmentColor, boundaryColor);
-    this.root.addChild(this.walls.graphics, this.trailHolder, this.particleHolder, this.balls.container, this.debugHolder);
+    this.shapes = new ShapeLayer(colorSeed, palette);
+    this.root.addChild(this.walls.graphics, this.shapes.graphics, this.trailHolder, this.particleHolder, this.balls.container, this.debugHolder);
     if (particleOptions) this.installParticles(particleOptions);
     this.bindWorld(world);
     if (trailOptions) this.installTrails(trailOptions);
@@ -274,6 +277,7 @@ export class WorldRenderer {
     const stepped = world.steps !== this.lastSteps;
     this.lastSteps = world.steps;
     this.walls.update(world, this.camera);
+    this.shapes.update(world, this.camera, alpha);
     const trails = this.trails;
     if (trails) {
       if (stepped) trails.record(world, balls);
@@ -424,6 +428,7 @@ export class WorldRenderer {
     this.particleLayer?.destroy();
     this.balls.destroy();
     this.walls.destroy();
+    this.shapes.destroy();
     this.root.destroy({ children: true });
     this.texture.destroy(true);
   }
