@@ -1,7 +1,7 @@
 /**
  * The book's simulation projects in headless Chromium: input changes each game (the solar system's
  * rate key speeds up its clock and its error table reads the ephemeris; the submarine's keys drive
- * the screw and flood the tanks).
+ * the screw and flood the tanks; the flight simulator's keys open the throttle and pull the nose up).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness } from './harness';
@@ -41,6 +41,23 @@ describe('projects', () => {
     expect(s.throttle).toBeGreaterThan(0.3);
     expect(s.fill).toBeGreaterThan(0.1);
     expect(s.x).toBeGreaterThan(x0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('flight-simulator: Shift opens the throttle, the down arrow pitches the nose up', async () => {
+    const g = await h.openGame('flight-simulator');
+    type Flight = Game & { state: { throttle: number; elevator: number }; instruments(): { pitch: number; speed: number } };
+    const before = await g.page.evaluate(() => { const w = window.game as unknown as Flight; return { throttle: w.state.throttle, pitch: w.instruments().pitch }; });
+    await g.page.keyboard.down('Shift');
+    await g.page.keyboard.down('ArrowDown');
+    await g.page.waitForTimeout(1200);
+    const during = await g.page.evaluate(() => { const w = window.game as unknown as Flight; return { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch }; });
+    await g.page.keyboard.up('ArrowDown');
+    await g.page.keyboard.up('Shift');
+    expect(during.throttle).toBeGreaterThan(before.throttle);
+    expect(during.elevator).toBeGreaterThan(0.5);
+    expect(during.pitch).toBeGreaterThan(before.pitch + 1); // degrees: the nose came up
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -1,0 +1,287 @@
+/**
+ * Flight simulator: the book's aircraft (Ramtal and Dobre ch. 16; the `aircraft` scene) flown with
+ * the keyboard over seeded hills. Lift and drag come from each surface's angle of attack (wing
+ * halves with ailerons, tailplane with the elevator, fin with the rudder), with a stall past 20
+ * degrees; the controls act where the surfaces are, so they turn the aircraft through Euler's
+ * equations; the damping of every rotation comes from the surfaces meeting their own motion. Fly
+ * through the rings for points; do not fly into the hills.
+ * Keys: arrows or W/S/A/D: pitch and roll; Q / E: rudder; Shift / Ctrl (or + / -): throttle;
+ * C: camera (chase / cockpit); P pause, N step, R reset.
+ * URL: ?seed=n, ?rings=n (1..30).
+ */
+import {
+  BoxGeometry, BufferAttribute, Color, ConeGeometry, CylinderGeometry, DoubleSide, Float32BufferAttribute, Fog, HemisphereLight,
+  Mesh, MeshBasicMaterial, MeshStandardMaterial, PlaneGeometry, Quaternion, TorusGeometry, Vector3, type BufferGeometry,
+} from 'three';
+import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
+import {
+  aircraft, AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraftLevelDrag, createPhysicsWorld, setBodyThrust, setControlDeflection, step,
+  terrainHeight, Rng, type AircraftHandles, type PhysicsWorld,
+} from '@bitphysics/physics';
+import { startThreeGame } from '../shared/three';
+import { createPanel, numberParam, seedParam } from '../shared/index';
+
+const params = {
+  seed: seedParam(),
+  rings: numberParam('rings', { default: 10, min: 1, max: 30, integer: true }),
+  /** Full deflection of each control, degrees. */
+  authority: 15,
+  reset: () => shell.reset(),
+};
+
+/** Controls and game state beside the physics. */
+const state = {
+  throttle: 0, elevator: 0, aileron: 0, rudder: 0, score: 0, crashed: false, camera: 'chase' as 'chase' | 'cockpit', stalled: false,
+};
+let handles: AircraftHandles;
+/** Rings: centre (x, y, z) and whether passed. */
+let rings: { x: number; y: number; z: number; passed: boolean }[] = [];
+
+function createWorld(): PhysicsWorld {
+  const world = createPhysicsWorld(aircraft.worldOptions());
+  handles = aircraft.build(world, { seed: params.seed, altitude: 900 });
+  state.throttle = aircraftLevelDrag(AIRCRAFT_TRIM_SPEED) / AIRCRAFT.maxThrust;
+  Object.assign(state, { elevator: 0, aileron: 0, rudder: 0, score: 0, crashed: false, stalled: false });
+  const rng = new Rng(params.seed + 7);
+  rings = [];
+  let x = 0, z = 0;
+  for (let i = 0; i < params.rings; i++) {
+    x += rng.range(1500, 2500); z += rng.range(-600, 600);
+    // Near the cruise altitude, but always 200 m clear of the hills below.
+    rings.push({ x, y: Math.max(terrainHeight(handles.terrain, x, z) + 200, 900 + rng.range(-250, 250)), z, passed: false });
+  }
+  return world;
+}
+
+const held = new Set<string>();
+addEventListener('keydown', (e) => { held.add(e.key.toLowerCase()); if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault(); });
+addEventListener('keyup', (e) => { held.delete(e.key.toLowerCase()); });
+addEventListener('blur', () => held.clear());
+
+/** Moves a control towards `target` at `rate` per second. */
+function approach(value: number, target: number, rate: number, dt: number): number {
+  return value + Math.max(-rate * dt, Math.min(rate * dt, target - value));
+}
+
+const q = new Quaternion(), f = new Vector3(), u = new Vector3(), r = new Vector3(), v = new Vector3();
+
+/** The body's axes in world coordinates: forward f, up u, right r. */
+function axes(world: PhysicsWorld): void {
+  const O = world.components.Orientation, e = handles.body;
+  q.set(O.x[e]!, O.y[e]!, O.z[e]!, O.w[e]!);
+  f.set(1, 0, 0).applyQuaternion(q); u.set(0, 1, 0).applyQuaternion(q); r.set(0, 0, 1).applyQuaternion(q);
+}
+
+function stepWorld(world: PhysicsWorld): void {
+  if (state.crashed) return;
+  const dt = world.dt;
+  const pitch = (held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0);
+  const roll = (held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0);
+  const yaw = (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0);
+  // Stick inputs spring back to neutral; the throttle stays where it is put.
+  state.elevator = approach(state.elevator, pitch, 3, dt);
+  state.aileron = approach(state.aileron, roll, 3, dt);
+  state.rudder = approach(state.rudder, yaw, 3, dt);
+  if (held.has('shift') || held.has('+') || held.has('=')) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
+  if (held.has('control') || held.has('-')) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
+  const full = (params.authority * Math.PI) / 180;
+  const s = handles.surfaces;
+  // Pull (down arrow) = elevator trailing edge up = less tail lift = nose up.
+  setControlDeflection(world, s.tail, -state.elevator * full);
+  // Roll right: the left aileron down (more lift), the right one up.
+  setControlDeflection(world, s.leftWing, state.aileron * full);
+  setControlDeflection(world, s.rightWing, -state.aileron * full);
+  // Right rudder: the fin's force to the left at the tail swings the nose right.
+  setControlDeflection(world, s.fin, -state.rudder * full);
+  setBodyThrust(world, handles.body, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
+  const P = world.components.Position, e = handles.body;
+  const x0 = P.x[e]!;
+  step(world);
+  // Rings: passed when the aircraft crosses a ring's plane (x = const) within 45 m of its centre.
+  for (const ring of rings) {
+    if (ring.passed || !(x0 < ring.x && P.x[e]! >= ring.x)) continue;
+    if (Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z) < 45) { ring.passed = true; state.score++; ringMeshes[rings.indexOf(ring)]!.material = passedMaterial; }
+  }
+  if (P.y[e]! < terrainHeight(handles.terrain, P.x[e]!, P.z[e]!) + 2) { state.crashed = true; }
+}
+
+const game = await startThreeGame({
+  title: 'Flight simulator',
+  createWorld,
+  step: stepWorld,
+  bodies: () => 1,
+  controls: [
+    { keys: '↑ ↓ / W S', action: 'pitch (↓ pulls up)' },
+    { keys: '← → / A D', action: 'roll' },
+    { keys: 'Q / E', action: 'rudder' },
+    { keys: 'Shift / Ctrl', action: 'throttle up / down' },
+    { keys: 'C', action: 'camera: chase / cockpit' },
+  ],
+  keys: [{ key: 'c', label: 'camera', action: () => { state.camera = state.camera === 'chase' ? 'cockpit' : 'chase'; } }],
+  app: { background: 0x9cc8f0, shadows: false, controls: false, fov: 60 },
+  renderer: {
+    unitsPerMeter: 1, boundary: 'none', shadows: false,
+    lights: { direction: [0.4, 1, 0.3], intensity: 2.2, hemisphereIntensity: 0.6, ambientIntensity: 0.2, shadows: false },
+  },
+  view: null,
+  onFrame: () => frame(),
+});
+const { shell, renderer, app } = game;
+app.camera.near = 1;
+app.camera.far = 30_000;
+app.camera.updateProjectionMatrix();
+app.scene.fog = new Fog(0x9cc8f0, 4000, 16_000);
+app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
+
+// ---- The aircraft's looks: fuselage, wings, tailplane and fin in the body frame (x forward, y up) -----
+
+function aircraftGeometry(): BufferGeometry {
+  const parts: BufferGeometry[] = [];
+  const fuselage = new CylinderGeometry(1.3, 1.1, 24, 16); fuselage.rotateZ(-Math.PI / 2); fuselage.translate(-1, 0, 0); parts.push(fuselage);
+  const nose = new ConeGeometry(1.3, 4, 16); nose.rotateZ(-Math.PI / 2); nose.translate(13, 0, 0); parts.push(nose);
+  const wing = new BoxGeometry(4, 0.35, 30); wing.translate(0.5, -0.4, 0); parts.push(wing);
+  const tail = new BoxGeometry(2.6, 0.25, 10); tail.translate(-12, 0.3, 0); parts.push(tail);
+  const fin = new BoxGeometry(3, 5, 0.3); fin.translate(-12, 2.8, 0); parts.push(fin);
+  return mergeGeometries(parts.map((p) => p.toNonIndexed()))!;
+}
+const planeMaterial = new MeshStandardMaterial({ color: 0xe8ecf2, roughness: 0.5, metalness: 0.2 });
+const planeGeometry = aircraftGeometry();
+function dress(): void { renderer.setShape(handles.body, { geometry: planeGeometry, material: planeMaterial, scale: 1 }); }
+dress();
+shell.onWorldChange(() => { dress(); terrainCentre = null; });
+
+// ---- Terrain: a 24 km grid that follows the aircraft, heights from the scene's terrain function --------
+
+const SIZE = 24_000, SEGMENTS = 160;
+const terrainGeometry = new PlaneGeometry(SIZE, SIZE, SEGMENTS, SEGMENTS);
+terrainGeometry.rotateX(-Math.PI / 2);
+terrainGeometry.setAttribute('color', new Float32BufferAttribute(new Float32Array(terrainGeometry.attributes.position!.count * 3), 3));
+const base = Float32Array.from(terrainGeometry.attributes.position!.array as Float32Array);
+const terrain = new Mesh(terrainGeometry, new MeshStandardMaterial({ vertexColors: true, roughness: 1, flatShading: true }));
+app.scene.add(terrain);
+const sea = new Mesh(new PlaneGeometry(SIZE * 2, SIZE * 2), new MeshStandardMaterial({ color: 0x2d6e9e, roughness: 0.4 }));
+sea.rotateX(-Math.PI / 2);
+sea.position.y = 60;
+app.scene.add(sea);
+let terrainCentre: [number, number] | null = null;
+const low = new Color(0x4f8a3c), mid = new Color(0x8a7a52), high = new Color(0xf2f4f6), tmpColor = new Color();
+
+/** Rebuilds the grid's heights and colours around (cx, cz), snapped to whole cells. */
+function rebuildTerrain(cx: number, cz: number): void {
+  const cell = SIZE / SEGMENTS;
+  const sx = Math.round(cx / cell) * cell, sz = Math.round(cz / cell) * cell;
+  terrainCentre = [sx, sz];
+  const pos = terrainGeometry.attributes.position as BufferAttribute, col = terrainGeometry.attributes.color as BufferAttribute;
+  for (let i = 0; i < pos.count; i++) {
+    const x = base[3 * i]! + sx, z = base[3 * i + 2]! + sz;
+    const h = terrainHeight(handles.terrain, x, z);
+    pos.setXYZ(i, x, h, z);
+    if (h < 300) tmpColor.copy(low).lerp(mid, h / 300); else tmpColor.copy(mid).lerp(high, Math.min(1, (h - 300) / 300));
+    col.setXYZ(i, tmpColor.r, tmpColor.g, tmpColor.b);
+  }
+  pos.needsUpdate = true; col.needsUpdate = true;
+  terrainGeometry.computeVertexNormals();
+  terrainGeometry.computeBoundingSphere();
+}
+
+// ---- Rings ----------------------------------------------------------------------------------------
+
+const ringGeometry = new TorusGeometry(45, 3, 10, 40);
+ringGeometry.rotateY(Math.PI / 2);
+const ringMaterial = new MeshBasicMaterial({ color: 0xffb020, side: DoubleSide });
+const passedMaterial = new MeshBasicMaterial({ color: 0x50e070, transparent: true, opacity: 0.35 });
+let ringMeshes: Mesh[] = [];
+function placeRings(): void {
+  for (const m of ringMeshes) app.scene.remove(m);
+  ringMeshes = rings.map((ring) => { const m = new Mesh(ringGeometry, ringMaterial); m.position.set(ring.x, ring.y, ring.z); app.scene.add(m); return m; });
+}
+placeRings();
+shell.onWorldChange(() => placeRings());
+
+// ---- Camera and instruments, every frame ----------------------------------------------------------
+
+const p3 = [0, 0, 0], q4 = [0, 0, 0, 1];
+const drawnQ = new Quaternion(), at = new Vector3(), eye = new Vector3(), look = new Vector3(), smoothEye = new Vector3();
+let smoothReady = false;
+
+const panelEl = document.createElement('div');
+panelEl.className = 'bp-hud';
+panelEl.dataset.hud = 'instruments';
+panelEl.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 250px; white-space: pre';
+document.body.append(panelEl);
+let readoutFrame = 0;
+
+function frame(): void {
+  const world = shell.world;
+  if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
+  at.set(p3[0]!, p3[1]!, p3[2]!);
+  drawnQ.set(q4[0]!, q4[1]!, q4[2]!, q4[3]!);
+  if (!terrainCentre || Math.hypot(at.x - terrainCentre[0], at.z - terrainCentre[1]) > 2000) rebuildTerrain(at.x, at.z);
+  sea.position.x = at.x; sea.position.z = at.z;
+  if (state.camera === 'chase') {
+    eye.set(-45, 12, 0).applyQuaternion(drawnQ).add(at);
+    // Keep the chase camera level-ish: follow the heading, not all of the roll.
+    if (!smoothReady) { smoothEye.copy(eye); smoothReady = true; }
+    smoothEye.lerp(eye, 0.12);
+    app.camera.position.copy(smoothEye);
+    app.camera.up.set(0, 1, 0);
+    look.set(30, 0, 0).applyQuaternion(drawnQ).add(at);
+    app.camera.lookAt(look);
+  } else {
+    app.camera.position.set(14, 1.8, 0).applyQuaternion(drawnQ).add(at);
+    app.camera.up.set(0, 1, 0).applyQuaternion(drawnQ);
+    look.set(100, 0, 0).applyQuaternion(drawnQ).add(at);
+    app.camera.lookAt(look);
+  }
+  if (readoutFrame++ % 6 === 0) updateInstruments(world);
+}
+
+/** Instrument readings of the aircraft now: speed, altitude, attitude, heading, angle of attack. */
+function instruments(world: PhysicsWorld): { speed: number; altitude: number; agl: number; climb: number; pitch: number; roll: number; heading: number; aoa: number } {
+  axes(world);
+  const c = world.components, e = handles.body;
+  v.set(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
+  const deg = 180 / Math.PI;
+  return {
+    speed: v.length(),
+    altitude: c.Position.y[e]!,
+    agl: c.Position.y[e]! - terrainHeight(handles.terrain, c.Position.x[e]!, c.Position.z[e]!),
+    climb: v.y,
+    pitch: Math.asin(Math.max(-1, Math.min(1, f.y))) * deg,
+    roll: Math.atan2(-r.y, u.y) * deg,
+    heading: ((Math.atan2(f.z, f.x) * deg) + 360) % 360,
+    aoa: Math.atan2(-v.dot(u), v.dot(f)) * deg,
+  };
+}
+
+function updateInstruments(world: PhysicsWorld): void {
+  const i = instruments(world);
+  state.stalled = Math.abs(i.aoa) > (AIRCRAFT.stallAngle * 180) / Math.PI;
+  panelEl.textContent = [
+    `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
+    `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
+    `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
+    `pitch ${i.pitch.toFixed(1).padStart(6)}°  roll ${i.roll.toFixed(1).padStart(6)}°`,
+    `heading   ${i.heading.toFixed(0).padStart(4)}°`,
+    `AoA   ${i.aoa.toFixed(1).padStart(6)}°  ${state.stalled ? 'STALL!' : ''}`,
+    `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
+    `rings     ${state.score}/${rings.length}${state.crashed ? '   CRASHED (R to retry)' : state.score === rings.length ? '   ALL RINGS!' : ''}`,
+  ].join('\n');
+}
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
+  { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
+  { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+  { type: 'button', key: 'reset', label: 'reset (R)' },
+], { title: 'Flight simulator' });
+
+shell.expose({
+  params,
+  panel,
+  state,
+  /** The aircraft entity. */
+  aircraftBody: () => handles.body,
+  /** Speed, altitude, attitude, heading and angle of attack now (m/s, m, degrees). */
+  instruments: () => instruments(shell.world),
+});
