@@ -124,6 +124,28 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     expect(line!.theta).toBe(0.5); // the opening angle the world actually used
   });
 
+  /**
+   * balls-in-box --restitution: every engine builds the layout with it and reports energyDrift, the
+   * relative change of kinetic plus gravitational energy from the layout at rest. Ours must not gain
+   * energy (restitution <= 1 and friction only take it out; 1e-3 allows the final snapshot's soft
+   * contact compression, which holds some of the energy as overlap rather than motion).
+   */
+  it('balls-in-box takes --restitution, echoes it and reports energyDrift for every engine', async () => {
+    const run = await runCli(['--scene', 'balls-in-box', '--count', '200', '--steps', '20', '--warmup', '0', '--restitution', '1', '--vs', 'rapier2d', '--json']);
+    expect(run.code).toBe(0);
+    const lines = jsonLines(run.stdout);
+    const ours = lines.find((l) => l.engine === 'bitphysics')!, rapier = lines.find((l) => l.engine === 'rapier2d')!;
+    expect(ours.params).toEqual({ restitution: 1 });
+    expect(ours.restitution).toBe(1);
+    expect(rapier.restitution).toBe(1);
+    expect(typeof ours.energyDrift).toBe('number');
+    expect(typeof rapier.energyDrift).toBe('number');
+    expect(ours.energyDrift as number).toBeLessThan(1e-3);
+    const bad = await runCli(['--scene', 'balls-in-box', '--count', '10', '--restitution', '1.5']);
+    expect(bad.code).toBe(2);
+    expect(bad.stderr).toMatch(/--restitution must be >= 0 and <= 1/);
+  });
+
   it('--help and --list show the scene parameters', async () => {
     const [help, list] = await Promise.all([runCli(['--help']), runCli(['--list', '--json'])]);
     expect(help.code).toBe(0);

@@ -50,6 +50,7 @@ export const bitphysicsEngine: EngineAdapter = {
       snapshot(): BodySnapshot {
         const c = w.components;
         const positions = new Float64Array(ids.length * dims);
+        const velocities = new Float64Array(ids.length * dims);
         const radius = new Float64Array(ids.length);
         let round = false;
         for (let i = 0; i < ids.length; i++) {
@@ -57,10 +58,13 @@ export const bitphysicsEngine: EngineAdapter = {
           positions[i * dims] = c.Position.x[e]!;
           positions[i * dims + 1] = c.Position.y[e]!;
           if (dims === 3) positions[i * dims + 2] = c.Position.z[e]!;
+          velocities[i * dims] = c.Velocity.x[e]!;
+          velocities[i * dims + 1] = c.Velocity.y[e]!;
+          if (dims === 3) velocities[i * dims + 2] = c.Velocity.z[e]!;
           radius[i] = c.Ball.radius[e]!;
           if (radius[i]! > 0) round = true;
         }
-        return round ? { dimensions: dims, count: ids.length, positions, radius } : { dimensions: dims, count: ids.length, positions };
+        return round ? { dimensions: dims, count: ids.length, positions, radius, velocities } : { dimensions: dims, count: ids.length, positions, velocities };
       },
       dispose(): void {
         // Nothing outside the JS heap: the world's typed arrays go with the instance.

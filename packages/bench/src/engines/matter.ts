@@ -43,7 +43,7 @@ export const matterEngine: EngineAdapter = {
   async create(options: SceneRunOptions): Promise<EngineInstance> {
     if (options.scene !== 'balls-in-box') throw new RangeError(`matter: does not support scene "${options.scene}"`);
     const M = await loadMatter();
-    const layout = ballsInBoxLayout({ count: options.count, seed: options.seed });
+    const layout = ballsInBoxLayout({ count: options.count, seed: options.seed, restitution: options.params?.restitution ?? 0.5 });
     const S = MATTER_PIXELS_PER_METRE;
     // g = 10 m/s^2 = 10 S px/s^2 = 10 S / 1e6 px/ms^2 = gravity.y * gravity.scale.
     const g = -layout.gravity[1];
@@ -86,12 +86,14 @@ export const matterEngine: EngineAdapter = {
         return { bodies: n, contacts };
       },
       snapshot(): BodySnapshot {
-        const positions = new Float64Array(2 * n);
+        const positions = new Float64Array(2 * n), velocities = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
-          const q = balls[i]!.position;
+          const q = balls[i]!.position, v = balls[i]!.velocity;
           positions[2 * i] = q.x / S; positions[2 * i + 1] = -q.y / S;
+          // matter's velocity is px per its base step (1000/60 ms), y down.
+          velocities[2 * i] = (v.x / S) * 60; velocities[2 * i + 1] = (-v.y / S) * 60;
         }
-        return { dimensions: 2, count: n, positions, radius: layout.radius };
+        return { dimensions: 2, count: n, positions, radius: layout.radius, velocities };
       },
       dispose(): void {
         if (engine) M.Engine.clear(engine);

@@ -64,7 +64,7 @@ export const rapier2dEngine: EngineAdapter = {
     if (options.scene === 'pyramid') return createRapierPyramid(await loadRapier2d(), options);
     if (options.scene !== 'balls-in-box') throw new RangeError(`rapier2d: does not support scene "${options.scene}"`);
     const R = await loadRapier2d();
-    const layout = ballsInBoxLayout({ count: options.count, seed: options.seed });
+    const layout = ballsInBoxLayout({ count: options.count, seed: options.seed, restitution: options.params?.restitution ?? 0.5 });
     let world: InstanceType<Rapier['World']> | undefined = new R.World({ x: layout.gravity[0], y: layout.gravity[1] });
     const w = world;
     w.timestep = 1 / 60;
@@ -117,12 +117,13 @@ export const rapier2dEngine: EngineAdapter = {
         return { bodies: n, contacts, extra: { sleeping } };
       },
       snapshot(): BodySnapshot {
-        const positions = new Float64Array(2 * n);
+        const positions = new Float64Array(2 * n), velocities = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
-          const t = bodies[i]!.translation();
+          const t = bodies[i]!.translation(), v = bodies[i]!.linvel();
           positions[2 * i] = t.x; positions[2 * i + 1] = t.y;
+          velocities[2 * i] = v.x; velocities[2 * i + 1] = v.y;
         }
-        return { dimensions: 2, count: n, positions, radius: layout.radius };
+        return { dimensions: 2, count: n, positions, radius: layout.radius, velocities };
       },
       dispose(): void {
         world?.free();

@@ -53,6 +53,8 @@ export interface BodySnapshot {
   readonly positions: Float64Array;
   /** Collision radius of every body, m; a single number when all share it; absent for points. */
   readonly radius?: number | Float64Array;
+  /** Velocities, m/s, laid out like `positions`; absent when the engine does not report them. */
+  readonly velocities?: Float64Array;
 }
 
 /** One engine with one scene built in it, ready to step. */

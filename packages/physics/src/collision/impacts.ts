@@ -22,51 +22,188 @@ import { BodyType } from './broadphase.js';
  * The velocity change dv of an impact at t* is applied to the whole step's velocity, and the body's
  * end position is corrected by -dv t* (it moved with the old velocity until t*): the body ends where
  * the exact piecewise motion puts it, never bouncing across a gap. The corrections are kept per solver
- * body (see `CollisionState.bodyImpact`) and added when the solver writes positions back.
+ * body (see `CollisionState.bodyImpact`) and added when the solver writes positions back, for the
+ * bodies the soft substeps leave alone (see `separateImpactedBodies`).
  *
  * Contacts are visited in order of their predicted time of impact, in passes, until a pass applies
  * no impulse or `impactIterations` passes have run (a chain like Newton's cradle needs one pass in
  * that order; the cap bounds the work in dense piles). What is left approaching falls to the soft
  * substeps and the restitution stage.
+
  *
- * Afterwards, a ball-ball contact whose balls are apart and will not touch within the step at their
- * new velocities gets a start separation the soft substeps' linear gap model cannot close within the
- * step (nor in the one substep the last relax pass looks ahead): the linear model s0 + v_n t
- * underestimates the gap of two balls passing obliquely, and would otherwise push them apart along
- * the wrong normal before they touch (Box2D's speculative contacts do that).
+ * Then `separateImpactedBodies` sorts the bodies into those the soft substeps leave alone (they keep
+ * their exact end positions) and the rest.
  */
 export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
   const st = cs.settings;
   const n = buf.count;
   const E = buf.restitution;
-  // Candidates: every contact with e > 0, sorted by the time of impact its start state predicts.
+  // Candidates: every contact with e > 0; those whose bodies approach fast enough to impact this step
+  // (the seeds) first, sorted by the time of impact their start state predicts.
   if (cs.impactOrder.length < n) { cs.impactOrder = new Int32Array(Math.max(n, 2 * cs.impactOrder.length)); cs.impactKey = new Float64Array(cs.impactOrder.length); }
   const order = cs.impactOrder, key = cs.impactKey;
   const h = world.h;
+  const g = world.gravity;
+  const gh = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h;
+  // Slower approaches are resting contacts (what gravity adds in two steps), left to the substeps.
+  const resting = 2 * gh;
   const S0 = buf.separation, RV = buf.relativeVelocity;
-  let m = 0;
-  for (let i = 0; i < n; i++) {
-    if (!(E[i]! > 0)) continue;
-    const s0 = S0[i]!, rv = RV[i]!;
-    key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
-    order[m++] = i;
-  }
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
   if (cs.bodyImpact.length < count * 4) cs.bodyImpact = new Float64Array(Math.max(count * 4, cs.bodyImpact.length * 2));
   cs.bodyImpact.fill(0, 0, count * 4);
-  if (m === 0) return;
+  let m = 0;
+  for (let i = 0; i < n; i++) {
+    key[i] = 0;
+    if (!(E[i]! > 0)) continue;
+    if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
+    const s0 = S0[i]!, rv = RV[i]!;
+    key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
+    order[m++] = i;
+  }
+  const seeds = m;
+  if (seeds === 0) return;
+  for (let i = 0; i < n; i++) if (E[i]! > 0 && !fastEnough(cs.bodyState, buf, i, S, resting, gh)) order[m++] = i;
   const cand = order.subarray(0, m);
-  if (m > 1) cand.sort((x, y) => key[x]! - key[y]!);
+  if (seeds > 1) order.subarray(0, seeds).sort((x, y) => key[x]! - key[y]!);
+  for (let k = seeds; k < m; k++) key[cand[k]!] = 0;
 
   const iterations = st.impactIterations;
   for (let pass = 0; pass < iterations; pass++) {
     let applied = 0;
-    for (let k = 0; k < m; k++) if (impact(world, buf, cand[k]!, S)) applied++;
+    for (let k = 0; k < m; k++) {
+      const i = cand[k]!;
+      if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
+      if (impact(world, buf, i, S, resting)) { applied++; key[i] = -1; }
+    }
     if (applied === 0) break;
   }
-  guardGhostContacts(world, buf, cand, S);
+  separateImpactedBodies(world, buf, S);
+}
+
+/**
+ * Decides, after the passes, which bodies are "clean": every contact of theirs was either resolved
+ * by an impact this step or stays apart through the step (ball pairs by an exact sweep at their
+ * current velocities, other rows by the linear gap with gravity). The soft substeps never touch a
+ * clean body (its impacted rows are taken out of them), so:
+ * - a clean body keeps its end-position correction, and ends exactly at x0 + v0 t* + v1 (h - t*);
+ * - a clean ball pair that will not touch gets a start separation the soft substeps' linear gap model
+ *   cannot close within the step (nor in the one substep the last relax pass looks ahead): the linear
+ *   model s0 + v_n t underestimates the gap of two balls passing obliquely, and would otherwise push
+ *   them apart along the wrong normal before they touch (Box2D's speculative contacts do that).
+ * A body with a row the soft substeps will work on (resting in a pile, say) loses its corrections:
+ * the substeps' positions must stay consistent with their own rows, so its impulses act as if at the
+ * start of the step (Box2D-like), which only ever widens a gap and never adds energy.
+ */
+function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number): void {
+  const cs = world.collision;
+  const sb = cs.bodyState, imp = cs.bodyImpact, key = cs.impactKey, type = cs.bodyType;
+  const count = cs.solverBodyCount;
+  const n = buf.count;
+  const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, A = buf.a, B = buf.b, K = buf.kind;
+  const NX = buf.nx, NY = buf.ny, NZ = buf.nz;
+  const is2D = S === 8;
+  const h = world.h;
+  const reach = h * (1 + 1 / cs.settings.solverSubsteps);
+  const g = world.gravity;
+  // Slot 3 of a body's row (time of its latest impact) becomes the flag: 1 clean, 0 not.
+  for (let k = 0; k < count; k++) imp[k * 4 + 3] = 1;
+  for (let i = 0; i < n; i++) {
+    const kind = K[i]!;
+    let active: boolean;
+    if (E[i]! > 0 && key[i] === -1) {
+      // Resolved by an impact: active again only if a later impact of either body turned it back
+      // into approach within the step (below the threshold, so the passes left it to the substeps).
+      const oa = IA[i]! * S, ob = IB[i]! * S;
+      const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
+      let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+      if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+      const a = A[i]!, b = B[i]!;
+      const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+      active = vn + (an < 0 ? an * reach : 0) < 0;
+      if (active) key[i] = 0;
+    } else if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
+      active = ballsMeet(world, buf, i, S, h);
+    } else {
+      const oa = IA[i]! * S, ob = IB[i]! * S;
+      const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
+      let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+      if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+      const a = A[i]!, b = B[i]!;
+      const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+      active = S0[i]! + (vn < 0 ? vn * reach : 0) + (an < 0 ? 0.5 * an * reach * reach : 0) <= 0;
+    }
+    if (active) { imp[IA[i]! * 4 + 3] = 0; imp[IB[i]! * 4 + 3] = 0; }
+  }
+  imp[3] = 1;
+  for (let k = 1; k < count; k++) {
+    const q = k * 4;
+    if (imp[q + 3] === 0) { imp[q] = 0; imp[q + 1] = 0; imp[q + 2] = 0; }
+  }
+  const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, NM = buf.normalMass, TM = buf.tangentMass;
+  for (let i = 0; i < n; i++) {
+    if (imp[IA[i]! * 4 + 3] === 0 || imp[IB[i]! * 4 + 3] === 0) continue;
+    if (E[i]! > 0 && key[i] === -1) {
+      // Impacted rows between clean bodies leave the soft substeps.
+      NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;
+      continue;
+    }
+    const kind = K[i]!;
+    if (kind !== ContactKind.Ball && kind !== ContactKind.StaticBall) continue;
+    const s0 = S0[i]!;
+    if (!(s0 > 0)) continue;
+    const oa = IA[i]! * S, ob = IB[i]! * S;
+    let vn = (sb[ob]! - sb[oa]!) * NX[i]! + (sb[ob + 1]! - sb[oa + 1]!) * NY[i]!;
+    if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * NZ[i]!;
+    if (!(vn < 0) || s0 + vn * reach > 0) continue;
+    S0[i] = -vn * reach * (1 + 1e-9);
+  }
+}
+
+/**
+ * Whether the balls of contact i touch now or within `span` at the current solver velocities (an
+ * exact sweep from the start of the step, with the relative acceleration of gravity refined once).
+ */
+function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number): boolean {
+  const cs = world.collision;
+  const c = world.components;
+  const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
+  const ia = buf.ia[i]!, ib = buf.ib[i]!;
+  const oa = ia * S, ob = ib * S, qa = ia * 4, qb = ib * 4;
+  const a = buf.a[i]!, b = buf.b[i]!, kind = buf.kind[i]!;
+  const is2D = S === 8;
+  const P = c.PreviousPosition, radius = c.Ball.radius;
+  const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
+  const pa = kind === ContactKind.Ball ? P : c.Position;
+  const R = radius[f]! + radius[b]!;
+  const still = imp[qa] === 0 && imp[qa + 1] === 0 && imp[qa + 2] === 0 && imp[qb] === 0 && imp[qb + 1] === 0 && imp[qb + 2] === 0;
+  if (still && buf.separation[i]! <= 0) return true;
+  const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]!;
+  const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]!;
+  const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]!;
+  if (rx * rx + ry * ry + rz * rz <= R * R * (1 + 1e-9)) return true;
+  const g = world.gravity;
+  const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
+  const hx = 0.25 * gr * g[0]! * span, hy = 0.25 * gr * g[1]! * span, hz = is2D ? 0 : 0.25 * gr * g[2]! * span;
+  const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  // The gap cannot close faster than |w| + |a| t.
+  const gap = Math.sqrt(rx * rx + ry * ry + rz * rz) - R;
+  if (Math.sqrt(wx * wx + wy * wy + wz * wz) * span + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * span < gap) return false;
+  // Mean velocity over the first half of the span and over all of it: either meeting counts.
+  return sweep(rx, ry, rz, wx + hx, wy + hy, wz + hz, R, span) >= 0 || sweep(rx, ry, rz, wx + 2 * hx, wy + 2 * hy, wz + 2 * hz, R, span) >= 0;
+}
+
+/**
+ * Cheap test before the sweep: whether the bodies of contact i move apart fast enough, relative to
+ * each other, that they could hit at more than `floor` m/s within the step (|w| + g h > floor).
+ */
+function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: number, floor: number, gh: number): boolean {
+  if (floor === 0) return true;
+  const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
+  const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const lim = floor - gh;
+  return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
 }
 
 /** Scratch of `contactState`: time of impact, normal, relative normal velocity at t*. */
@@ -163,13 +300,13 @@ function sweep(rx: number, ry: number, rz: number, ux: number, uy: number, uz: n
 }
 
 /** Applies contact i's impact if it happens this step above its threshold; returns whether it did. */
-function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, resting: number): boolean {
   if (!contactState(world, buf, i, S)) return false;
   const cs = world.collision;
   const st = cs.settings;
   const e = buf.restitution[i]!;
   const vn = hit[4]!;
-  const threshold = e >= 1 ? st.elasticRestitutionThreshold : st.restitutionThreshold;
+  const threshold = Math.max(e >= 1 ? st.elasticRestitutionThreshold : st.restitutionThreshold, resting);
   if (!(vn < -threshold)) return false;
   const nm = buf.normalMass[i]!;
   if (!(nm > 0)) return false;
@@ -239,26 +376,4 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): 
   buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
   buf.impulse[i] = buf.impulse[i]! + J;
   return true;
-}
-
-/** See the last paragraph of `applyImpacts`. */
-function guardGhostContacts(world: PhysicsWorld, buf: ContactBuffer, cand: Int32Array, S: number): void {
-  const sb = world.collision.bodyState;
-  // The relax pass of the last substep looks one substep ahead (bias s / h_s): h + h_s in all.
-  const reach = world.h * (1 + 1 / world.collision.settings.solverSubsteps);
-  const K = buf.kind, S0 = buf.separation, IA = buf.ia, IB = buf.ib;
-  const is2D = S === 8;
-  for (let k = 0; k < cand.length; k++) {
-    const i = cand[k]!;
-    const kind = K[i]!;
-    if (kind !== ContactKind.Ball && kind !== ContactKind.StaticBall) continue;
-    const s0 = S0[i]!;
-    if (!(s0 > 0)) continue;
-    const oa = IA[i]! * S, ob = IB[i]! * S;
-    let vn = (sb[ob]! - sb[oa]!) * buf.nx[i]! + (sb[ob + 1]! - sb[oa + 1]!) * buf.ny[i]!;
-    if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * buf.nz[i]!;
-    if (!(vn < 0) || s0 + vn * reach > 0) continue;
-    if (contactState(world, buf, i, S)) continue;
-    S0[i] = -vn * reach * (1 + 1e-9);
-  }
 }
