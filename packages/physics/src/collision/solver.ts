@@ -183,6 +183,8 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const gx = g[0]! * h, gy = g[1]! * h, gz = g[2]! * h;
   const type = cs.bodyType, invMass = cs.invMass, invInertia = cs.invInertia;
   const is2D = S === 8;
+  // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
+  const pushed = jointsToSolve(world) ? 1 : 0;
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     const o = k * S, q = k * 6;
@@ -196,11 +198,11 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     if (is2D) {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 ? wz[e]! : 0;
-      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = 0;
+      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = pushed;
     } else {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
       sb[o + 3] = ii > 0 ? wx[e]! : 0; sb[o + 4] = ii > 0 ? wy[e]! : 0; sb[o + 5] = ii > 0 ? wz[e]! : 0;
-      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = 0;
+      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = pushed;
     }
   }
 }
