@@ -198,7 +198,9 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
 
   /** The contents for site path `path` ('' is the root), or undefined. */
   const lookup = (path) => {
-    if (path === 'registry.json') return Buffer.from(JSON.stringify(readRegistry(), null, 2));
+    // The gallery's list, read from the games' game.json now, of the games this build holds (a
+    // folder that appeared since waits for its build).
+    if (path === 'registry.json') return Buffer.from(JSON.stringify(readRegistry().filter((e) => files.has(`${e.folder}/index.html`)), null, 2));
     return files.get(path);
   };
 

@@ -7,7 +7,11 @@
  * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
  * game is over, P pause, N single step, R reset, F predicted path on / off.
  * Touch: the four arrow buttons under the scene (hold to thrust); tap the message to restart.
- * URL: ?holes=N (1..16), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
+ * Levels (./levels.ts): level 1 has one small hole off the straight path, later levels more and
+ * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and waits for
+ * Enter (or a tap on the message); the best score is kept in the browser's local storage.
+ * URL: ?level=N (start level, default 1), ?holes=N (1..16: the classic endless game with N holes
+ * instead of levels), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
  *
  * Drawn: each hole as a black disc of its Schwarzschild radius with a glow; the exhaust (particles,
  * additive); the ship; its predicted path for the next second, integrated in a small second world
@@ -21,8 +25,31 @@ import {
   C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, layoutHoles, predictPath, setGScale, setLightSpeed,
   setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleGame, type Predictor, type Thrust,
 } from './rules';
+import { beginLevel, canThrust, startLevel, stepLevel, type LevelRun } from './levels';
 
 const search = new URLSearchParams(location.search);
+/** Levels unless ?holes asks for the classic endless game. */
+const levels = !search.has('holes');
+const firstLevel = numberParam('level', { default: 1, min: 1, max: 99, integer: true });
+const BEST_KEY = 'bitphysics.black-hole.best';
+
+/** The best score kept in local storage (0 when none, or storage is unavailable). */
+function readBest(): number {
+  try {
+    const v = Number(localStorage.getItem(BEST_KEY));
+    return Number.isFinite(v) && v > 0 ? v : 0;
+  } catch {
+    return 0;
+  }
+}
+let best = readBest();
+
+/** Keeps `score` as the best if it beats it. */
+function recordScore(score: number): void {
+  if (score <= best) return;
+  best = score;
+  try { localStorage.setItem(BEST_KEY, String(score)); } catch { /* private mode: kept for this page only */ }
+}
 const params = {
   holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),
   seed: seedParam(),
@@ -34,6 +61,7 @@ const params = {
 };
 
 let bh: BlackHoleGame;
+let run: LevelRun | null = null;
 let predictor: Predictor;
 const PATH_STEPS = 60;
 const path = new Float64Array(2 * (PATH_STEPS + 1));
@@ -41,6 +69,7 @@ let pathPoints = 0;
 
 function createWorld(): PhysicsWorld {
   bh = createBlackHoleGame({ seed: params.seed, holes: params.holes, gScale: params.gScale, c: params.c, thrust: params.thrust });
+  run = levels ? startLevel(bh, firstLevel) : null;
   predictor = createPredictor(bh);
   return bh.world;
 }
@@ -48,14 +77,18 @@ function createWorld(): PhysicsWorld {
 const game = await startPixiGame({
   title: 'Black hole',
   createWorld,
-  step: () => { stepBlackHole(bh); },
+  step: () => {
+    const event = run ? stepLevel(bh, run) : stepBlackHole(bh);
+    if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+    if (run && !canThrust(bh, run) && held.length > 0) held.length = 0;
+  },
   controls: [
     { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
-    { keys: 'Enter', action: 'play again (game over)', touch: 'tap the message' },
+    { keys: 'Enter', action: 'next level / play again', touch: 'tap the message' },
     { keys: 'F', action: 'predicted path on / off' },
   ],
   keys: [
-    { key: 'Enter', label: 'restart', action: () => { if (bh.over) game.shell.reset(); } },
+    { key: 'Enter', label: 'next level / restart', action: () => advance() },
     { key: 'f', label: 'path', action: () => { params.path = !params.path; panel.refresh(); } },
   ],
   renderer: {
@@ -85,7 +118,14 @@ const KEY_DIR: Record<string, Thrust> = { ArrowUp: 'up', ArrowDown: 'down', Arro
 const held: Thrust[] = [];
 
 function applyHeld(): void {
-  setThrust(bh, held.length > 0 ? held[held.length - 1]! : 'none');
+  const allowed = !run || canThrust(bh, run);
+  setThrust(bh, allowed && held.length > 0 ? held[held.length - 1]! : 'none');
+}
+
+/** Enter or a tap on the message: the next level after a clear, a new game after the last life. */
+function advance(): void {
+  if (bh.over) game.shell.reset();
+  else if (run?.waiting) { beginLevel(bh, run); updateStatus(true); }
 }
 function press(dir: Thrust): void {
   const i = held.indexOf(dir);
@@ -159,14 +199,18 @@ message.className = 'bh-message';
 message.dataset.hud = 'message';
 status.append(numbers, message);
 pageLayout().status.append(status);
-message.addEventListener('click', () => { if (bh.over) shell.reset(); });
+message.addEventListener('click', () => advance());
 let shownNumbers = '', shownMessage = '', shownThrust: Thrust | '' = '';
 
 function updateStatus(force = false): void {
-  const n = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}   Score ${bh.score}   Holes ${bh.holes.length}`;
+  const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
+  const n = run
+    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
+      (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
+    : `${lives}   Score ${bh.score}   Holes ${bh.holes.length}`;
   if (force || n !== shownNumbers) { shownNumbers = n; numbers.textContent = n; }
   if (force || bh.message !== shownMessage) { shownMessage = bh.message; message.textContent = bh.message; }
-  status.classList.toggle('over', bh.over);
+  status.classList.toggle('over', bh.over || (run?.waiting ?? false));
   if (force || bh.thrust !== shownThrust) {
     shownThrust = bh.thrust;
     for (const [dir, b] of Object.entries(buttons)) b!.classList.toggle('on', dir === bh.thrust);
@@ -260,7 +304,11 @@ shell.expose({
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });
-// The live game state (lives, score, holes, message, thrust): a getter, so it follows resets
-// (expose copies values, which would keep the first game).
+// The live game state (lives, score, holes, message, thrust) and the level run (null in the classic
+// game): getters, so they follow resets (expose copies values, which would keep the first game).
 Object.defineProperty(shell, 'bh', { get: (): BlackHoleGame => bh, enumerable: true });
+Object.defineProperty(shell, 'level', { get: (): LevelRun | null => run, enumerable: true });
+Object.defineProperty(shell, 'best', { get: (): number => best, enumerable: true });
+/** Enter: the next level after a clear, a new game after the last life. */
+Object.defineProperty(shell, 'advance', { value: advance, enumerable: true });
 updateStatus(true);

@@ -1,0 +1,232 @@
+/**
+ * Levels for black hole, DOM-free (Node tests run them): a first level a newcomer wins, then more and
+ * bigger holes, holes that drift, and a fuel limit. The page (main.ts) shows the level, the fuel, an
+ * end-of-level summary and the best score.
+ *
+ * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
+ * `createBlackHoleGame` (./rules), and `stepLevel` runs one step of it: the holes drift, the fuel
+ * burns while thrusting, then the game's own step (./rules `stepBlackHole`: pull, horizons, lives).
+ * Crossing the line clears the level: the step returns 'cleared', `run.summary` says how it went, the
+ * next level's holes are laid out and the run waits (no steps) until `beginLevel`.
+ *
+ * Holes keep M = c^2 r / (2 G) (their drawn radius is their Schwarzschild radius, as in ./rules).
+ * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
+ * between steps (kinematic), so their pull follows them.
+ */
+import { addBody, removeBody, setAttractor, setPosition, slotOf } from '@bitphysics/physics';
+import {
+  FIELD, LINE_Y, MAX_HOLES, START, gravitationalConstant, resetShip, schwarzschildMass, setThrust, stepBlackHole,
+  type BlackHoleEvent, type BlackHoleGame,
+} from './rules';
+
+/** What a level asks of the player. */
+export interface LevelSpec {
+  /** Level number, integer >= 1. */
+  readonly level: number;
+  /** Holes, integer in [1, MAX_HOLES]. */
+  readonly holes: number;
+  /** Range of the holes' horizon radii, m. */
+  readonly radius: readonly [number, number];
+  /** Half-width, m, of a corridor around the start's x (x = 16 m) that no hole's centre enters (0: none). */
+  readonly corridor: number;
+  /** Sideways speed of the holes, m/s (0: they stay put). */
+  readonly drift: number;
+  /** Seconds of thrust the tank holds (Infinity: no limit). */
+  readonly fuel: number;
+}
+
+/**
+ * The spec of level `level`: level 1 one small hole well away from the straight path up, level 2 two
+ * holes with a narrower corridor, level 3 three holes anywhere, from level 4 they drift, from level 5
+ * the fuel is limited, and every later level adds a hole (up to MAX_HOLES), makes them bigger (radius
+ * up to 2 m), faster (up to 3 m/s) and the tank smaller (down to 4 s).
+ * @throws RangeError unless level is an integer >= 1.
+ */
+export function levelSpec(level: number): LevelSpec {
+  if (!Number.isInteger(level) || level < 1) throw new RangeError(`levelSpec: level must be an integer >= 1, got ${level}`);
+  const spec = (holes: number, radius: [number, number], corridor: number, drift: number, fuel: number): LevelSpec =>
+    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, drift, fuel });
+  switch (level) {
+    case 1: return spec(1, [0.45, 0.6], 9, 0, Infinity);
+    case 2: return spec(2, [0.5, 0.9], 5, 0, Infinity);
+    case 3: return spec(3, [0.5, 1.2], 0, 0, Infinity);
+    case 4: return spec(3, [0.6, 1.3], 0, 1, Infinity);
+    default: {
+      const k = level - 5;
+      return spec(
+        Math.min(MAX_HOLES, 4 + k), [0.6, Math.min(2, 1.4 + 0.1 * k)], 0, Math.min(3, 1.5 + 0.25 * k), Math.max(4, 10 - k),
+      );
+    }
+  }
+}
+
+/** How a cleared level went (shown at the end of the level). */
+export interface LevelSummary {
+  /** The level cleared. */
+  readonly level: number;
+  /** Time from its start to the line, s. */
+  readonly time: number;
+  /** Lives left. */
+  readonly lives: number;
+  /** Points it scored (one per hole). */
+  readonly points: number;
+  /** Fuel left, s of thrust (Infinity when unlimited). */
+  readonly fuelLeft: number;
+  /** Times the ship fell in during the level. */
+  readonly falls: number;
+}
+
+/** A game played in levels. */
+export interface LevelRun {
+  /** The level being played (or, while `waiting`, the next one, laid out). */
+  spec: LevelSpec;
+  /** Seconds since the level began. */
+  time: number;
+  /** Fuel left, s of thrust (Infinity when unlimited). */
+  fuelLeft: number;
+  /** Sideways velocity of each hole, m/s (same order as game.holes). */
+  readonly holeVx: number[];
+  /** Between levels (after a clear, before `beginLevel`): steps do nothing. */
+  waiting: boolean;
+  /** The last cleared level's summary, or null. */
+  summary: LevelSummary | null;
+  /** Falls counted at the level's start (to report the level's own). */
+  fallsAtStart: number;
+}
+
+/**
+ * Lays out level `level` in `game` (holes per `levelSpec`, the ship at the start, the fuel full) and
+ * returns its run, not waiting. The layout comes from the game's seeded generator.
+ * @throws RangeError on a bad level.
+ */
+export function startLevel(game: BlackHoleGame, level: number): LevelRun {
+  const run: LevelRun = { spec: levelSpec(level), time: 0, fuelLeft: 0, holeVx: [], waiting: false, summary: null, fallsAtStart: 0 };
+  layLevel(game, run, level);
+  return run;
+}
+
+/** Starts the level a cleared run is waiting on (the ship at the start, the clock at 0). No effect unless waiting. */
+export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
+  if (!run.waiting) return;
+  run.waiting = false;
+  run.time = 0;
+  run.fuelLeft = run.spec.fuel;
+  run.fallsAtStart = game.falls;
+  game.message = levelMessage(run.spec);
+  resetShip(game);
+}
+
+/** The opening line of a level. */
+export function levelMessage(spec: LevelSpec): string {
+  const parts = [`Level ${spec.level}: reach the green line.`];
+  if (spec.drift > 0) parts.push('The holes drift.');
+  if (Number.isFinite(spec.fuel)) parts.push(`${spec.fuel} s of fuel.`);
+  return parts.join(' ');
+}
+
+function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
+  const spec = levelSpec(level);
+  run.spec = spec;
+  run.time = 0;
+  run.fuelLeft = spec.fuel;
+  run.fallsAtStart = game.falls;
+  const world = game.world;
+  for (const h of game.holes) removeBody(world, h);
+  game.holes.length = 0;
+  game.holeRadius.length = 0;
+  game.holeMass.length = 0;
+  run.holeVx.length = 0;
+  const rng = game.rng;
+  const G = gravitationalConstant(game), c = game.params.c;
+  const [r0, r1] = spec.radius;
+  for (let k = 0; k < spec.holes; k++) {
+    let bestX = 0, bestY = 0, bestR = r0, bestGap = -Infinity;
+    for (let attempt = 0; attempt < 300; attempt++) {
+      const r = rng.range(r0, r1);
+      let x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
+      if (spec.corridor > 0) {
+        // Outside the corridor: on the side the draw fell on.
+        const side = x < START[0] ? -1 : 1;
+        const lo = START[0] + spec.corridor, hi = FIELD.width - 1.5 - r;
+        x = side > 0 ? Math.max(x, lo) : Math.min(x, FIELD.width - lo);
+        if (lo > hi) x = side > 0 ? hi : FIELD.width - hi;
+      }
+      const y = rng.range(5 + r, LINE_Y - 3 - r);
+      let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
+      for (let j = 0; j < game.holes.length; j++) {
+        const h = game.holes[j]!;
+        const P = world.components.Position;
+        gap = Math.min(gap, Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!) - r - game.holeRadius[j]! - 3);
+      }
+      if (gap > bestGap) { bestGap = gap; bestX = x; bestY = y; bestR = r; }
+      if (gap >= 0) break;
+    }
+    const mass = schwarzschildMass(bestR, c, G);
+    const e = addBody(world, { position: [bestX, bestY], static: true });
+    setAttractor(world, e, { mass });
+    game.holes.push(e);
+    game.holeRadius.push(bestR);
+    game.holeMass.push(mass);
+    run.holeVx.push(spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1));
+  }
+  game.version++;
+  game.message = levelMessage(spec);
+  resetShip(game);
+}
+
+/** Moves drifting holes by one step (dt s), turning them back at the field's edges. */
+function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
+  if (run.spec.drift === 0) return;
+  const P = game.world.components.Position;
+  const at: [number, number] = [0, 0];
+  for (let i = 0; i < game.holes.length; i++) {
+    const h = game.holes[i]!, r = game.holeRadius[i]!;
+    // Holes laid out by other means (the page's holes slider) have no speed: they stay put.
+    const vx = run.holeVx[i] ?? 0;
+    if (vx === 0) continue;
+    let x = P.x[slotOf(h)]! + vx * dt;
+    const lo = 1.5 + r, hi = FIELD.width - 1.5 - r;
+    if (x < lo) { x = 2 * lo - x; run.holeVx[i] = Math.abs(run.holeVx[i]!); }
+    if (x > hi) { x = 2 * hi - x; run.holeVx[i] = -Math.abs(run.holeVx[i]!); }
+    at[0] = x; at[1] = P.y[slotOf(h)]!;
+    setPosition(game.world, h, at);
+  }
+  game.version++;
+}
+
+/**
+ * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
+ * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`). A crossing of
+ * the line becomes 'cleared': the summary is kept, the next level is laid out and the run waits.
+ * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
+ */
+export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 'cleared' | 'waiting' {
+  if (run.waiting) return 'waiting';
+  const dt = game.world.dt;
+  driftHoles(game, run, dt);
+  if (game.thrust !== 'none' && !game.over) {
+    run.fuelLeft = Math.max(0, run.fuelLeft - dt);
+    if (run.fuelLeft === 0) setThrust(game, 'none');
+  }
+  const time = run.time + dt;
+  run.time = time;
+  const event = stepBlackHole(game);
+  if (event !== 'scored') return event;
+  run.summary = Object.freeze({
+    level: run.spec.level, time, lives: game.lives, points: run.spec.holes, fuelLeft: run.fuelLeft,
+    falls: game.falls - run.fallsAtStart,
+  });
+  // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their own.
+  layLevel(game, run, run.spec.level + 1);
+  setThrust(game, 'none');
+  run.waiting = true;
+  const s = run.summary;
+  game.message = `Level ${s.level} cleared in ${s.time.toFixed(1)} s with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
+    `Tap here or press Enter for level ${run.spec.level}.`;
+  return 'cleared';
+}
+
+/** Whether thrust is possible now (fuel left, not waiting, not over). */
+export function canThrust(game: BlackHoleGame, run: LevelRun): boolean {
+  return !run.waiting && !game.over && run.fuelLeft > 0;
+}
