@@ -30,3 +30,7 @@ export { resolveDebugOptions } from './debug.js';
 export type { DebugOptions, DebugCounts } from './debug.js';
 export { SCENERY_COLORS, drawSprings, drawJoints, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
 export * from './points.js';
+export { RopeLayer } from './rope.js';
+export type { RopeLayerOptions } from './rope.js';
+export { ClothLayer } from './cloth.js';
+export type { ClothLayerOptions, ClothGrid } from './cloth.js';
