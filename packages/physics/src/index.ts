@@ -138,3 +138,7 @@ export type { ClothLinkStore } from './cloth/store.js';
 export type { ClothState } from './cloth/state.js';
 export { clothSystem } from './cloth/solver.js';
 export * from './scenes/index.js';
+/** Snapshots (save, load, rewind, rollback) and a state fingerprint for determinism checks. */
+export { snapshot, restore } from './snapshot/snapshot.js';
+export type { WorldSnapshot, SnapshotHeader, Encoded } from './snapshot/snapshot.js';
+export { stateHash } from './snapshot/hash.js';

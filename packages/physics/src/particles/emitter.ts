@@ -8,6 +8,7 @@ import {
   assertBoolean, assertFinite, assertInRange, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions,
   assertPositive, assertVector, describe,
 } from '../validate.js';
+import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Particle systems (Ramtal and Dobre ch. 12): emitters spawn particles with a rate and in bursts,
@@ -140,6 +141,9 @@ interface ParticleBook {
 }
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
+registerExternalWorldState({
+  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks'],
+});
 
 function book(world: PhysicsWorld): ParticleBook {
   let b = books.get(world);

@@ -1,0 +1,446 @@
+import { $internal, Not, Or, query as bitecsQuery, registerComponent } from 'bitecs';
+import type { PhysicsWorld } from '../world.js';
+import { externalWorldStates } from './world-state.js';
+import { describe } from '../validate.js';
+
+/**
+ * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
+ *
+ * What is captured, generically (so state added later is captured without listing it here):
+ * - every field of the world object (stage settings, time, steps, the random generator, every component
+ *   store allocated, the collision, joint and cloth state with their warm-start caches and sleeping
+ *   islands, spawn stamps), walked recursively: typed arrays are copied into ArrayBuffers, numbers,
+ *   booleans and strings go into the JSON header, Sets and Maps as lists;
+ * - per-world state that modules keep outside the world (the emitters' particle books, the dissipation
+ *   stamps), registered in world-state.ts;
+ * - bitecs' entity index (the order in which removed ids are reused), each entity's component set, and
+ *   the order of every query's entities and pending removals (iteration order decides the order of
+ *   floating-point sums, so restoring it is what makes stepping after `restore` bit-identical).
+ *
+ * Not captured: the systems of each stage, removal hooks and particle death hooks (code, not data: the
+ * world restored into must have the same ones), and stage timings.
+ */
+
+/** Fields of the world object that are code or measurements, not state; everything else is captured. */
+const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex']);
+
+/** A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk). */
+export interface WorldSnapshot {
+  /** Format, world shape and the encoded state tree (see `snapshot`); JSON-able. */
+  readonly header: SnapshotHeader;
+  /** The data of every typed array of the state, indexed by the header's `b` fields. */
+  readonly buffers: ArrayBuffer[];
+}
+
+/** An encoded value: a JSON primitive, an array, an object of encoded values, or a tagged special value. */
+export type Encoded = number | boolean | string | null | Encoded[] | { [key: string]: Encoded };
+
+/** Header of a WorldSnapshot. */
+export interface SnapshotHeader {
+  /** 'bitphysics-snapshot'. */
+  format: string;
+  /** Format version, 1. */
+  version: number;
+  /** The world's dimensions and capacity (a snapshot restores only into a world with the same). */
+  dimensions: number;
+  capacity: number;
+  /** The world object's state tree. */
+  state: Encoded;
+  /** Registered external state by name (null: the world had none). */
+  external: Record<string, Encoded>;
+  /** bitecs: entity index (aliveCount, maxId, buffer of the dense id list), component bit layout, masks, queries. */
+  ecs: Encoded;
+}
+
+type TypedArray = Float64Array | Float32Array | Int32Array | Uint32Array | Int16Array | Uint16Array | Int8Array | Uint8Array | Uint8ClampedArray;
+const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) => TypedArray> = {
+  Float64Array, Float32Array, Int32Array, Uint32Array, Int16Array, Uint16Array, Int8Array, Uint8Array, Uint8ClampedArray,
+};
+
+class Writer {
+  readonly buffers: ArrayBuffer[] = [];
+  private readonly seen = new Set<object>();
+  array(a: TypedArray): Encoded {
+    const copy = a.slice();
+    this.buffers.push(copy.buffer as ArrayBuffer);
+    return { $t: a.constructor.name, b: this.buffers.length - 1 };
+  }
+  value(v: unknown, path: string): Encoded {
+    if (typeof v === 'number') {
+      if (Number.isFinite(v) && !Object.is(v, -0)) return v;
+      return { $t: 'n', v: Object.is(v, -0) ? '-0' : String(v) };
+    }
+    if (typeof v === 'boolean' || typeof v === 'string' || v === null) return v;
+    if (v === undefined) return { $t: 'u' };
+    if (typeof v !== 'object') throw new TypeError(`snapshot: cannot capture ${path} (a ${typeof v}); state must be data`);
+    if (ArrayBuffer.isView(v)) {
+      if (!(v.constructor.name in TYPED)) throw new TypeError(`snapshot: cannot capture ${path} (a ${v.constructor.name})`);
+      return this.array(v as TypedArray);
+    }
+    if (this.seen.has(v)) throw new TypeError(`snapshot: ${path} is reached twice (shared or cyclic state cannot be captured)`);
+    this.seen.add(v);
+    if (Array.isArray(v)) return { $t: 'a', v: v.map((x, i) => this.value(x, `${path}[${i}]`)) };
+    if (v instanceof Set) return { $t: 's', v: [...v].map((x, i) => this.value(x, `${path} (set item ${i})`)) };
+    if (v instanceof Map) {
+      return { $t: 'm', v: [...v].map(([k, x], i) => [this.value(k, `${path} (map key ${i})`), this.value(x, `${path}.get(${String(k)})`)]) };
+    }
+    return this.object(v as Record<string, unknown>, path, undefined);
+  }
+  object(o: Record<string, unknown>, path: string, skip: ReadonlySet<string> | undefined): Encoded {
+    const out: Record<string, Encoded> = {};
+    for (const key of Object.keys(o)) {
+      if (skip?.has(key)) continue;
+      out[key] = this.value(o[key], `${path}.${key}`);
+    }
+    return { $t: 'o', v: out };
+  }
+}
+
+function isTagged(e: Encoded): e is { [key: string]: Encoded } {
+  return typeof e === 'object' && e !== null && !Array.isArray(e);
+}
+
+class Reader {
+  constructor(private readonly buffers: readonly ArrayBuffer[]) {}
+  array(e: { [key: string]: Encoded }, path: string): TypedArray {
+    const Ctor = TYPED[e.$t as string];
+    const buf = this.buffers[e.b as number];
+    if (Ctor === undefined || buf === undefined) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    return new Ctor(buf);
+  }
+  /** A fresh value from the encoding (typed arrays copied out of the snapshot). */
+  fresh(e: Encoded, path: string): unknown {
+    if (!isTagged(e)) return e;
+    const t = e.$t as string;
+    if (t === 'n') return e.v === '-0' ? -0 : Number(e.v);
+    if (t === 'u') return undefined;
+    if (t in TYPED) return this.array(e, path).slice();
+    const v = e.v as Encoded;
+    if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
+    if (t === 's') return new Set((v as Encoded[]).map((x) => this.fresh(x, path)));
+    if (t === 'm') return new Map((v as Encoded[][]).map(([k, x]) => [this.fresh(k!, path), this.fresh(x!, path)]));
+    if (t === 'o') {
+      const o: Record<string, unknown> = {};
+      for (const [k, x] of Object.entries(v as Record<string, Encoded>)) o[k] = this.fresh(x, `${path}.${k}`);
+      return o;
+    }
+    throw new RangeError(`restore: snapshot's ${path} is damaged (unknown tag ${describe(t)})`);
+  }
+  /**
+   * Writes the encoding into `target[key]`, keeping the identity of the objects and arrays already there
+   * (systems and renderers hold them): typed arrays of the same type and length are overwritten, others replaced.
+   */
+  into(target: Record<string, unknown>, key: string, e: Encoded, path: string, keep?: ReadonlySet<string>): void {
+    const cur = target[key];
+    if (isTagged(e)) {
+      const t = e.$t as string;
+      if (t in TYPED) {
+        const src = this.array(e, path);
+        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === src.length) {
+          (cur as TypedArray).set(src);
+        } else {
+          target[key] = src.slice();
+        }
+        return;
+      }
+      if (t === 'o' && cur !== null && typeof cur === 'object' && !Array.isArray(cur) && !(cur instanceof Set) && !(cur instanceof Map) && !ArrayBuffer.isView(cur)) {
+        this.objectInto(cur as Record<string, unknown>, e.v as Record<string, Encoded>, path, keep);
+        return;
+      }
+      if (t === 'a' && Array.isArray(cur)) {
+        const items = (e.v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
+        cur.length = 0;
+        for (const x of items) cur.push(x);
+        return;
+      }
+      if (t === 's' && cur instanceof Set) {
+        cur.clear();
+        for (const x of this.fresh(e, path) as Set<unknown>) cur.add(x);
+        return;
+      }
+      if (t === 'm' && cur instanceof Map) {
+        cur.clear();
+        for (const [k, x] of this.fresh(e, path) as Map<unknown, unknown>) cur.set(k, x);
+        return;
+      }
+    }
+    target[key] = this.fresh(e, path);
+  }
+  objectInto(target: Record<string, unknown>, enc: Record<string, Encoded>, path: string, keep?: ReadonlySet<string>): void {
+    for (const key of Object.keys(target)) {
+      if (keep?.has(key)) continue;
+      if (!(key in enc) && typeof target[key] !== 'function') {
+        throw new RangeError(`restore: snapshot has no ${path}.${key} (it was made by another version of bitphysics)`);
+      }
+    }
+    for (const [key, x] of Object.entries(enc)) {
+      if (keep?.has(key)) continue;
+      this.into(target, key, x, `${path}.${key}`);
+    }
+  }
+}
+
+// --- bitecs internals (0.4): the entity index, component masks, entity component sets, queries. ---
+
+interface SparseSetLike { dense: ArrayLike<number>; add(v: number): void; reset(): void; has(v: number): boolean }
+interface QueryData extends SparseSetLike {
+  allComponents: object[]; notComponents: object[]; orComponents: object[];
+  toRemove: SparseSetLike;
+}
+interface ComponentData { generationId: number; bitflag: number; ref: object }
+interface EcsInternals {
+  entityIndex: { aliveCount: number; dense: number[]; sparse: number[]; maxId: number; versioning: boolean };
+  entityMasks: number[][];
+  entityComponents: Map<number, Set<object>>;
+  componentMap: Map<object, ComponentData>;
+  queries: Set<QueryData>;
+  dirtyQueries: Set<QueryData>;
+}
+function internals(world: PhysicsWorld): EcsInternals {
+  return (world as unknown as Record<symbol, EcsInternals>)[$internal]!;
+}
+
+function namesOf(world: PhysicsWorld): Map<object, string> {
+  const names = new Map<object, string>();
+  for (const [name, store] of Object.entries(world.components)) names.set(store as object, name);
+  return names;
+}
+
+/** Query descriptor: its component names (and, not, or), or null if it involves a component outside world.components. */
+function describeQuery(q: QueryData, names: Map<object, string>): { and: string[]; not: string[]; or: string[] } | null {
+  const name = (c: object) => names.get(c);
+  const not = q.notComponents.map(name), or = q.orComponents.map(name);
+  const and = q.allComponents.filter((c) => !q.notComponents.includes(c) && !q.orComponents.includes(c)).map(name);
+  if ([...and, ...not, ...or].some((n) => n === undefined)) return null;
+  return { and: (and as string[]).sort(), not: (not as string[]).sort(), or: (or as string[]).sort() };
+}
+const keyOf = (d: { and: string[]; not: string[]; or: string[] }) => `${d.and.join(',')}|${d.not.join(',')}|${d.or.join(',')}`;
+
+function bitIndex(bitflag: number): number {
+  return 31 - Math.clz32(bitflag);
+}
+
+function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
+  const ctx = internals(world);
+  const ix = ctx.entityIndex;
+  if (ix.versioning) throw new Error('snapshot: worlds with a versioned entity index are not supported');
+  const names = namesOf(world);
+  const maxId = ix.maxId;
+  // Component bit layout; a component outside world.components may not be on any live entity.
+  const layout: Encoded[] = [];
+  const known = new Int32Array(ctx.entityMasks.length);
+  for (const data of ctx.componentMap.values()) {
+    const name = names.get(data.ref);
+    if (name !== undefined) {
+      layout.push([name, data.generationId, bitIndex(data.bitflag)]);
+      known[data.generationId]! |= data.bitflag;
+    }
+  }
+  const masks: Encoded[] = [];
+  for (let g = 0; g < ctx.entityMasks.length; g++) {
+    const src = ctx.entityMasks[g]!;
+    const m = new Int32Array(maxId + 1);
+    const unknown = ~known[g]!;
+    for (let e = 0; e <= maxId; e++) {
+      const v = src[e] ?? 0;
+      if ((v & unknown) !== 0) {
+        throw new Error(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
+      }
+      m[e] = v;
+    }
+    masks.push(w.array(m));
+  }
+  const queries: Encoded[] = [];
+  for (const q of ctx.queries) {
+    const d = describeQuery(q, names);
+    if (d === null) continue;
+    queries.push({
+      $t: 'o',
+      v: { and: d.and, not: d.not, or: d.or, dense: w.array(Int32Array.from(q.dense)), toRemove: w.array(Int32Array.from(q.toRemove.dense)) },
+    });
+  }
+  return {
+    aliveCount: ix.aliveCount, maxId, dense: w.array(Int32Array.from(ix.dense)),
+    layout, masks, queries: queries as Encoded[],
+  };
+}
+
+function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader): void {
+  const ctx = internals(world);
+  const ix = ctx.entityIndex;
+  const C = world.components as unknown as Record<string, object>;
+  // Layout: the target's bit of each snapshot component (registering components the target has not seen).
+  const layout = ecs.layout as [string, number, number][];
+  const srcMasks = (ecs.masks as Encoded[]).map((m, g) => r.array(m as Record<string, Encoded>, `masks[${g}]`) as Int32Array);
+  let same = true;
+  const map: Array<{ sg: number; sbit: number; tg: number; tflag: number }> = [];
+  for (const [name, sg, sbit] of layout) {
+    const comp = C[name];
+    if (comp === undefined) throw new RangeError(`restore: snapshot has component '${name}', which this world does not`);
+    const data = ctx.componentMap.get(comp) ?? (registerComponent(world as never, comp) as unknown as ComponentData);
+    if (data.generationId !== sg || bitIndex(data.bitflag) !== sbit) same = false;
+    map.push({ sg, sbit, tg: data.generationId, tflag: data.bitflag });
+  }
+  const maxId = ecs.maxId as number;
+  const gens = ctx.entityMasks.length;
+  const newMasks: Int32Array[] = [];
+  for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(maxId + 1));
+  if (same) {
+    for (let g = 0; g < srcMasks.length; g++) newMasks[g]!.set(srcMasks[g]!);
+  } else {
+    for (const { sg, sbit, tg, tflag } of map) {
+      const s = srcMasks[sg]!, t = newMasks[tg]!;
+      const f = 1 << sbit;
+      for (let e = 0; e <= maxId; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
+    }
+  }
+  // Entity index.
+  const dense = r.array(ecs.dense as Record<string, Encoded>, 'ecs.dense');
+  const aliveCount = ecs.aliveCount as number;
+  const oldAlive = new Uint8Array(Math.max(ix.maxId, maxId) + 1);
+  for (let i = 0; i < ix.aliveCount; i++) oldAlive[ix.dense[i]!] = 1;
+  // Component sets: kept where an entity was alive with the same components, rebuilt elsewhere.
+  const bits: object[][] = [];
+  for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
+  const sets = ctx.entityComponents;
+  const next = new Map<number, Set<object>>();
+  for (let i = 0; i < aliveCount; i++) {
+    const e = dense[i]!;
+    let keep = oldAlive[e] === 1 && sets.has(e);
+    for (let g = 0; keep && g < gens; g++) if ((ctx.entityMasks[g]![e] ?? 0) !== newMasks[g]![e]) keep = false;
+    if (keep) { next.set(e, sets.get(e)!); continue; }
+    const set = new Set<object>();
+    for (let g = 0; g < gens; g++) {
+      let m = newMasks[g]![e]!;
+      while (m !== 0) { const b = 31 - Math.clz32(m); set.add(bits[g]![b]!); m &= ~(1 << b); }
+    }
+    next.set(e, set);
+  }
+  ctx.entityComponents = next;
+  for (let g = 0; g < gens; g++) {
+    const t = ctx.entityMasks[g]!;
+    t.length = 0;
+    const m = newMasks[g]!;
+    for (let e = 0; e <= maxId; e++) t[e] = m[e]!;
+  }
+  ix.dense.length = 0;
+  ix.sparse.length = 0;
+  for (let i = 0; i < dense.length; i++) { ix.dense.push(dense[i]!); ix.sparse[dense[i]!] = i; }
+  ix.aliveCount = aliveCount;
+  ix.maxId = maxId;
+  // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
+  const names = namesOf(world);
+  const byKey = new Map<string, QueryData>();
+  for (const q of ctx.queries) { const d = describeQuery(q, names); if (d !== null) byKey.set(keyOf(d), q); }
+  const done = new Set<QueryData>();
+  ctx.dirtyQueries.clear();
+  for (const enc of ecs.queries as Encoded[]) {
+    const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
+    const d = { and: qd.and as string[], not: qd.not as string[], or: qd.or as string[] };
+    let q = byKey.get(keyOf(d));
+    if (q === undefined) {
+      const terms: object[] = d.and.map((n) => C[n]!);
+      for (const n of d.not) terms.push(Not(C[n]! as never) as object);
+      if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
+      bitecsQuery(world as never, terms as never);
+      q = [...ctx.queries].find((x) => { const dx = describeQuery(x, names); return dx !== null && keyOf(dx) === keyOf(d); });
+      if (q === undefined) throw new Error(`restore: could not make the query ${keyOf(d)}`);
+    }
+    done.add(q);
+    q.reset();
+    const qDense = r.array(qd.dense as Record<string, Encoded>, 'query');
+    for (let i = 0; i < qDense.length; i++) q.add(qDense[i]!);
+    q.toRemove.reset();
+    const rem = r.array(qd.toRemove as Record<string, Encoded>, 'query');
+    for (let i = 0; i < rem.length; i++) q.toRemove.add(rem[i]!);
+    if (rem.length > 0) ctx.dirtyQueries.add(q);
+  }
+  for (const q of ctx.queries) {
+    if (done.has(q)) continue;
+    q.reset();
+    q.toRemove.reset();
+    for (let i = 0; i < aliveCount; i++) {
+      const e = ix.dense[i]!;
+      if (matches(ctx, q, e)) q.add(e);
+    }
+  }
+}
+
+function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
+  const has = (c: object) => {
+    const d = ctx.componentMap.get(c);
+    return d !== undefined && ((ctx.entityMasks[d.generationId]![e] ?? 0) & d.bitflag) !== 0;
+  };
+  const and = q.allComponents.filter((c) => !q.notComponents.includes(c) && !q.orComponents.includes(c));
+  if (!and.every(has)) return false;
+  if (q.notComponents.some(has)) return false;
+  return q.orComponents.length === 0 || q.orComponents.some(has);
+}
+
+/**
+ * The complete state of `world` as transferable data: a JSON-able header and ArrayBuffers (post them to
+ * a Worker with the buffers in the transfer list, or write them to disk). The world is not changed.
+ * Restore it with `restore` into this world or another made with the same options and systems.
+ *
+ * @throws TypeError if the world holds state that cannot be copied (a function or a shared object where
+ *   data belongs), or Error if an entity carries a component outside `world.components`.
+ * @example
+ * const saved = snapshot(world); stepMany(world, 100); restore(world, saved); // back 100 steps
+ */
+export function snapshot(world: PhysicsWorld): WorldSnapshot {
+  const w = new Writer();
+  const state = w.object(world as unknown as Record<string, unknown>, 'world', NOT_STATE);
+  const external: Record<string, Encoded> = {};
+  for (const ext of externalWorldStates()) {
+    const s = ext.get(world, false);
+    external[ext.name] = s === undefined ? null : w.object(s as Record<string, unknown>, ext.name, new Set(ext.keep ?? []));
+  }
+  const ecs = captureEcs(world, w);
+  return {
+    header: { format: 'bitphysics-snapshot', version: 1, dimensions: world.dimensions, capacity: world.capacity, state, external, ecs },
+    buffers: w.buffers,
+  };
+}
+
+/**
+ * Puts the state of `snap` into `world`: afterwards stepping `world` gives bit-identical results to
+ * stepping the world the snapshot was taken from. The world must have been made with the same
+ * dimensions and capacity and have the same systems (custom systems, force laws and death hooks are
+ * code and are not in a snapshot); stage settings (gravity, dt, integrator, solver settings) come from
+ * the snapshot. The snapshot is not changed and can be restored again.
+ *
+ * @throws RangeError `restore: snapshot must ...` if `snap` is not a snapshot, or was taken from a world
+ *   of other dimensions or capacity, or by another version; the world is then left as it was.
+ */
+export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
+  const where = 'restore';
+  if (snap === null || typeof snap !== 'object' || snap.header === null || typeof snap.header !== 'object' || !Array.isArray(snap.buffers)) {
+    throw new RangeError(`${where}: snapshot must be a value returned by snapshot(world), got ${describe(snap)}`);
+  }
+  const h = snap.header;
+  if (h.format !== 'bitphysics-snapshot' || h.version !== 1) {
+    throw new RangeError(`${where}: snapshot must be a bitphysics snapshot of version 1, got format ${describe(h.format)} version ${describe(h.version)}`);
+  }
+  if (h.dimensions !== world.dimensions || h.capacity !== world.capacity) {
+    throw new RangeError(
+      `${where}: snapshot must come from a world with the same options: it has dimensions ${h.dimensions} and capacity ${h.capacity}, this world ${world.dimensions} and ${world.capacity}`,
+    );
+  }
+  const r = new Reader(snap.buffers);
+  // Check the structure first so a mismatch leaves the world as it was.
+  const state = (h.state as Record<string, Encoded>).v as Record<string, Encoded>;
+  for (const key of Object.keys(world)) {
+    if (!NOT_STATE.has(key) && !(key in state)) throw new RangeError(`${where}: snapshot has no world.${key} (it was made by another version of bitphysics)`);
+  }
+  for (const ext of externalWorldStates()) {
+    if (!(ext.name in h.external)) throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
+  }
+  r.objectInto(world as unknown as Record<string, unknown>, state, 'world', NOT_STATE);
+  for (const ext of externalWorldStates()) {
+    const enc = h.external[ext.name]!;
+    if (enc === null) { ext.clear(world); continue; }
+    const target = ext.get(world, true)!;
+    r.objectInto(target as Record<string, unknown>, (enc as Record<string, Encoded>).v as Record<string, Encoded>, ext.name, new Set(ext.keep ?? []));
+  }
+  restoreEcs(world, h.ecs as Record<string, Encoded>, r);
+}

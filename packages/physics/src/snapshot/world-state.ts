@@ -1,0 +1,30 @@
+import type { PhysicsWorld } from '../world.js';
+
+/**
+ * Per-world state kept outside the world object (in a module's WeakMap keyed by the world), which
+ * `snapshot` and `restore` must carry too. Every module that keeps such state registers it here once;
+ * the snapshot test fails for a WeakMap keyed by a world that is neither registered nor declared scratch.
+ */
+export interface ExternalWorldState {
+  /** Name in the snapshot header (unique). */
+  readonly name: string;
+  /** The state of `world`; with `create` true it is made if missing, else undefined when the world has none. */
+  get(world: PhysicsWorld, create: boolean): object | undefined;
+  /** Forgets the state of `world` (a restored world whose snapshot had none). */
+  clear(world: PhysicsWorld): void;
+  /** Keys of the state that are configuration made by code (functions), kept as they are in the target world. */
+  readonly keep?: readonly string[];
+}
+
+const registry = new Map<string, ExternalWorldState>();
+
+/** Registers per-world state held outside the world (see ExternalWorldState). @throws Error on a duplicate name. */
+export function registerExternalWorldState(state: ExternalWorldState): void {
+  if (registry.has(state.name)) throw new Error(`registerExternalWorldState: name '${state.name}' is already registered`);
+  registry.set(state.name, state);
+}
+
+/** Every registered external state, in registration order. */
+export function externalWorldStates(): readonly ExternalWorldState[] {
+  return [...registry.values()];
+}
