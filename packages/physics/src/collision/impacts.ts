@@ -157,7 +157,8 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     let vn = (sb[ob]! - sb[oa]!) * NX[i]! + (sb[ob + 1]! - sb[oa + 1]!) * NY[i]!;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * NZ[i]!;
     if (!(vn < 0) || s0 + vn * reach > 0) continue;
-    S0[i] = -vn * reach * (1 + 1e-9);
+    // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
+    S0[i] = -vn * reach * 1.1;
   }
 }
 
@@ -178,7 +179,17 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const pa = kind === ContactKind.Ball ? P : c.Position;
   const R = radius[f]! + radius[b]!;
   const still = imp[qa] === 0 && imp[qa + 1] === 0 && imp[qa + 2] === 0 && imp[qb] === 0 && imp[qb + 1] === 0 && imp[qb + 2] === 0;
-  if (still && buf.separation[i]! <= 0) return true;
+  const s0 = buf.separation[i]!;
+  if (still && s0 <= 0) {
+    // Touching: active if it carries load (warm start), overlaps, approaches, or gravity presses it.
+    if (buf.normalImpulse[i]! > 0 || s0 < -1e-6 * R) return true;
+    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+    let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+    if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    const g0 = world.gravity;
+    const gr0 = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
+    return vn < 0 || gr0 * (g0[0]! * nx + g0[1]! * ny + g0[2]! * nz) < 0;
+  }
   const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]!;
   const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]!;
   const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]!;
