@@ -54,7 +54,9 @@ export interface PhysicsWorldOptions {
   solverIterations?: number;
   /**
    * Approach speed below which a contact does not bounce, m/s, >= 0 (restitution is treated as 0
-   * below it, so resting bodies do not jitter). Default 0.5 m/s. Box2D uses the same idea with 1 m/s.
+   * below it, so resting bodies do not jitter). Default 0.5 m/s for contacts with restitution < 1, and
+   * 0 for perfectly elastic ones (e = 1 bounces at any speed); given, it applies to both. Box2D uses
+   * the same idea with 1 m/s. See `CollisionSettings.restitutionThreshold` for the trade-off.
    */
   restitutionThreshold?: number;
   /**
@@ -202,7 +204,10 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     rng: new Rng(seed),
     components,
     stages: createStages(),
-    collision: createCollisionState(capacity, { solverSubsteps, solverIterations, restitutionThreshold, sleep }),
+    // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
+    collision: createCollisionState(capacity, {
+      solverSubsteps, solverIterations, sleep, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
+    }),
     joints: createJointState(),
     cloth: createClothState(),
     timings,
