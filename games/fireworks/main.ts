@@ -1,11 +1,15 @@
 /**
- * Fireworks: click (or tap) to launch a shell from the ground towards the pointer; it bursts at the
- * apex into sparks that fall under gravity with quadratic drag, fade over their lifetime and, with
- * more than one generation, burst again into crackles. Hold the button longer for a bigger burst
- * (up to three times the sparks at 1.5 s). Random colours, additive blending, spark trails.
+ * Fireworks: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
+ * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
+ * and in salvos), and click (or tap) to launch a shell from the ground towards the pointer; it bursts
+ * at the apex into stars as its recipe says (./recipes.ts), which fall under gravity with quadratic
+ * drag and fade over their lifetime. Hold the button longer for a bigger burst (up to three times the
+ * stars at 1.5 s). Random colours, additive blending, star trails.
  *
  * Keys: P pause, N single step, R reset, A auto-show on / off, T trails on / off, Space random shell.
- * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3, ?auto (auto-show), ?opening=N
+ * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3 (the crackle recipe), ?auto=0|1
+ * (auto-show, default on), ?shell=random|peony|chrysanthemum|willow|palm|crossette|ring|strobe|crackle
+ * (what a click launches), ?opening=N
  * (shells at start, 0..16), ?trails=0|1, ?seed=S, ?capacity=N (entities, 1000..2000000; default
  * 60000), ?stress (3000 sparks a burst, auto-show, no trails: 50,000 to 60,000 live sparks at
  * the peaks).
@@ -15,7 +19,8 @@
 import { Graphics } from 'pixi.js';
 import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
-import { createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
+import { choiceParam, createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
+import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   MAX_HOLD, SKY, burstScale, createFireworks, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
   setShowSparks, stepFireworks, type FireworksShow,
@@ -29,7 +34,10 @@ const params = {
   drag: 0.05,
   sparks: numberParam('sparks', { default: stress ? 3000 : 300, min: 10, max: 10_000, integer: true }),
   generations: numberParam('generations', { default: 2, min: 1, max: 3, integer: true }),
-  autoShow: search.has('auto') ? flagParam('auto') : stress,
+  // The show runs on its own unless ?auto=0 (clicks and Space still launch).
+  autoShow: search.has('auto') ? flagParam('auto') : true,
+  /** What a click or Space launches: a recipe of ./recipes.ts, or 'random'. */
+  shellType: choiceParam('shell', ['random', ...RECIPE_NAMES] as const, 'random') as 'random' | RecipeName,
   // Trails double the drawing work; the stress show starts without them (T turns them on).
   trails: search.has('trails') ? flagParam('trails') : !stress,
   additive: true,
@@ -40,7 +48,14 @@ const params = {
   reset: () => game.shell.reset(),
 };
 
-const TRAILS = { duration: 0.07, width: 0.5, alpha: 0.55 };
+/** Streaks behind the stars: long and bright enough to read as trails on a phone too. */
+const TRAILS = { duration: 0.14, width: 0.6, alpha: 0.75 };
+
+/** The recipe of the next click or Space launch. */
+function nextRecipe(): RecipeName {
+  if (params.shellType !== 'random') return params.shellType;
+  return RECIPE_NAMES[Math.floor(Math.random() * RECIPE_NAMES.length)]!;
+}
 
 let show: FireworksShow;
 
@@ -97,7 +112,7 @@ function setTrails(on: boolean): void {
 /** Launches a shell at a random point of the upper sky with a random hold. @returns its id or 0. */
 function randomLaunch(): number {
   const r = show.rng;
-  return launchShell(shell.world, show, r.range(0.15, 0.85) * SKY.width, r.range(0.45, 0.85) * SKY.height, r.range(0, MAX_HOLD));
+  return launchShell(shell.world, show, r.range(0.15, 0.85) * SKY.width, r.range(0.45, 0.85) * SKY.height, r.range(0, MAX_HOLD), nextRecipe());
 }
 
 const panel = createPanel(params, [
@@ -106,6 +121,7 @@ const panel = createPanel(params, [
   { type: 'slider', key: 'sparks', label: 'sparks per burst', min: 10, max: 5000, step: 10, onChange: (n) => setShowSparks(show, Math.round(n)) },
   { type: 'slider', key: 'generations', min: 1, max: 3, step: 1, onChange: (g) => setShowGenerations(shell.world, show, Math.round(g)) },
   { type: 'checkbox', key: 'autoShow', label: 'auto-show (A)', onChange: (v) => setAuto(v === true) },
+  { type: 'choice', key: 'shellType', label: 'shell (click, Space)', options: ['random', ...RECIPE_NAMES] },
   { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
   { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => layer.setBlend(v === true ? 'add' : 'normal') },
   { type: 'button', key: 'launch', label: 'launch a shell (Space)' },
@@ -210,7 +226,7 @@ canvas.addEventListener('pointerup', (event) => {
   local(event);
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
-  launchShell(shell.world, show, cam.toWorldX(pointerX), cam.toWorldY(pointerY), hold);
+  launchShell(shell.world, show, cam.toWorldX(pointerX), cam.toWorldY(pointerY), hold, nextRecipe());
 });
 canvas.addEventListener('pointercancel', (event) => {
   if (event.pointerId === pointerId) pointerId = -1;
@@ -222,7 +238,7 @@ shell.expose({
   params,
   panel,
   /** Launches a shell towards (x, y), m, as if the button had been held `hold` s. @returns its id, or 0 if too many are in flight. */
-  launch: (x: number, y: number, hold = 0): number => launchShell(shell.world, show, x, y, hold),
+  launch: (x: number, y: number, hold = 0, recipe: RecipeName = 'crackle'): number => launchShell(shell.world, show, x, y, hold, recipe),
   /** Particles drawn by the particle layer's last frame (live sparks, crackles, tails). */
   particleCount: (): number => layer.stats.particles,
   /** The particle layer's statistics of the last frame. */

@@ -29,6 +29,7 @@ import {
   Rng, addBody, addEmitter, createEntity, createPhysicsWorld, emitNow, removeBody, setGravity, step, slotOf,
   type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
+import { GOLD, RECIPES, RECIPE_NAMES, type RecipeName, type ShellRecipe } from './recipes';
 
 /** Width and height of the sky, m. The ground is y = 0. */
 export const SKY = Object.freeze({ width: 120, height: 70 });
@@ -75,7 +76,7 @@ export interface FireworksOptions {
   sparks?: number;
   /** Generations of sparks: 1 (sparks only), 2 (sparks burst into crackles) or 3 (crackles burst again). Default 2. */
   generations?: number;
-  /** Launch shells on its own. Default false. */
+  /** Launch shells on its own, following `PROGRAMME`. Default false. */
   autoShow?: boolean;
   /** Shells launched at once when the show starts (0 for a dark sky), integer in [0, 16]. Default 3. */
   opening?: number;
@@ -108,7 +109,15 @@ export interface FireworksShow {
   readonly shellBurstTime: Float64Array;
   readonly shellScale: Float64Array;
   readonly shellColor: Int32Array;
+  /** Recipe of each shell in flight, an index into RECIPE_NAMES. */
+  readonly shellRecipe: Int32Array;
   shellCount: number;
+  /** Emitters of the recipes other than 'crackle', by `${recipe name}:${colour}` (0xRRGGBB as a number). */
+  readonly recipeEmitters: Map<string, number>;
+  /** Emitters of recipe stars' own bursts (onDeath), by the same keys, with the drag factor of each. */
+  readonly recipeDrag: Map<number, number>;
+  /** Index of the auto-show's next act in PROGRAMME. */
+  act: number;
   /** Seconds until the auto-show's next launch. */
   autoTimer: number;
   /** Shells launched and burst since the start. */
@@ -124,8 +133,41 @@ export interface FireworksShow {
   pendingCount: number;
 }
 
-/** Fields of a pending burst in `FireworksShow.pending`. */
-const PEND = 7;
+/** Fields of a pending burst in `FireworksShow.pending`: x, y, vx, vy, emitter, stars left, slowest and fastest speed (m/s). */
+const PEND = 8;
+
+/**
+ * One act of the auto-show: `count` shells of `recipe` (a salvo when more than one) then a pause of
+ * `pause` s before the next act.
+ */
+export interface ShowAct {
+  readonly recipe: RecipeName;
+  readonly count: number;
+  readonly pause: number;
+}
+
+/**
+ * The auto-show's programme, played in order and then again: single shells of each kind, pairs and
+ * salvos, a finale of everything. About 25 s a round. Launch points and holds are drawn from the
+ * show's seeded generator.
+ */
+export const PROGRAMME: readonly ShowAct[] = Object.freeze([
+  { recipe: 'peony', count: 1, pause: 1.1 },
+  { recipe: 'chrysanthemum', count: 1, pause: 1.3 },
+  { recipe: 'willow', count: 2, pause: 2.2 },
+  { recipe: 'ring', count: 1, pause: 1 },
+  { recipe: 'crossette', count: 2, pause: 1.6 },
+  { recipe: 'palm', count: 1, pause: 1.6 },
+  { recipe: 'strobe', count: 1, pause: 1.4 },
+  { recipe: 'crackle', count: 1, pause: 1.4 },
+  { recipe: 'peony', count: 3, pause: 1.8 },
+  { recipe: 'chrysanthemum', count: 2, pause: 1.6 },
+  { recipe: 'ring', count: 2, pause: 1.4 },
+  { recipe: 'willow', count: 3, pause: 2.6 },
+  { recipe: 'crossette', count: 3, pause: 1.4 },
+  { recipe: 'strobe', count: 2, pause: 1.2 },
+  { recipe: 'palm', count: 3, pause: 3.5 },
+].map((a) => Object.freeze(a as ShowAct)));
 
 function check(cond: boolean, message: string): void {
   if (!cond) throw new RangeError(`fireworks: ${message}`);
@@ -228,7 +270,11 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     shellBurstTime: new Float64Array(MAX_SHELLS),
     shellScale: new Float64Array(MAX_SHELLS),
     shellColor: new Int32Array(MAX_SHELLS),
+    shellRecipe: new Int32Array(MAX_SHELLS),
     shellCount: 0,
+    recipeEmitters: new Map(),
+    recipeDrag: new Map(),
+    act: 0,
     autoTimer: 0.5,
     launched: 0,
     bursts: 0,
@@ -236,6 +282,10 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     pending: new Float64Array(PEND * MAX_SHELLS),
     pendingCount: 0,
   };
+  for (const name of RECIPE_NAMES) {
+    if (name === 'crackle') continue;
+    for (let c = 0; c < PALETTE.length; c++) recipeEmitter(world, show, RECIPES[name], c);
+  }
   for (let i = 0; i < p.opening; i++) {
     const x = SKY.width * (0.25 + 0.5 * (p.opening === 1 ? 0.5 : i / (p.opening - 1)));
     launchShell(world, show, x, show.rng.range(0.55, 0.8) * SKY.height, show.rng.range(0, MAX_HOLD));
@@ -256,12 +306,15 @@ export function createFireworks(options: FireworksOptions = {}): { world: Physic
  * Launches a shell from the ground towards (targetX, targetY), m, where it bursts at the apex (the
  * target is clamped into the sky: x in [4, width - 4], y in [12, height - 3]). The launch point is on
  * the ground between the middle of the sky and the target, jittered. The burst's size follows
- * `burstScale(holdSeconds)`; its colour is drawn from the palette.
+ * `burstScale(holdSeconds)`; its colour is drawn from the palette; what it does is `recipe`
+ * (./recipes.ts; default 'crackle', the book's stars that burst into stars).
  * @returns the shell's entity id, or 0 if `MAX_SHELLS` shells are already in flight.
- * @throws RangeError on non-finite coordinates or a negative hold.
+ * @throws RangeError on non-finite coordinates, a negative hold or an unknown recipe.
  */
-export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: number, targetY: number, holdSeconds = 0): number {
+export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: number, targetY: number, holdSeconds = 0, recipe: RecipeName = 'crackle'): number {
   check(Number.isFinite(targetX) && Number.isFinite(targetY), `launchShell: target must be finite, got (${targetX}, ${targetY})`);
+  const recipeIndex = RECIPE_NAMES.indexOf(recipe);
+  check(recipeIndex >= 0, `launchShell: recipe must be one of ${RECIPE_NAMES.join(', ')}, got ${String(recipe)}`);
   const scale = burstScale(holdSeconds);
   if (show.shellCount >= MAX_SHELLS) return 0;
   const rng = show.rng;
@@ -294,6 +347,7 @@ export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: n
   show.shellBurstTime[i] = world.time + fuse;
   show.shellScale[i] = scale;
   show.shellColor[i] = color;
+  show.shellRecipe[i] = recipeIndex;
   show.launched++;
   return id;
 }
@@ -305,6 +359,56 @@ function dropShell(show: FireworksShow, i: number): void {
   show.shellBurstTime[i] = show.shellBurstTime[last]!;
   show.shellScale[i] = show.shellScale[last]!;
   show.shellColor[i] = show.shellColor[last]!;
+  show.shellRecipe[i] = show.shellRecipe[last]!;
+}
+
+/** The colour a star burst of `burst` takes for a shell of palette colour `color`. */
+function burstColor(burst: 'same' | 'white' | 'gold', color: number): number {
+  return burst === 'same' ? mix(color, 0xffffff, 0.3) : burst === 'white' ? 0xffffff : GOLD;
+}
+
+/**
+ * The emitter of `recipe`'s stars in palette colour `colorIndex` (or the recipe's own colour), with
+ * its chain of onDeath emitters (innermost first: a star's burst is an emitter of the physics package
+ * too). `buildFireworks` makes them all up front, so a full world never refuses one; later calls
+ * return the same emitter.
+ * @throws RangeError (from addEmitter) if called for a new one in a full world.
+ */
+export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: ShellRecipe, colorIndex: number): number {
+  const base = recipe.color ?? PALETTE[colorIndex]!;
+  const key = `${recipe.name}:${base}`;
+  const known = show.recipeEmitters.get(key);
+  if (known !== undefined) return known;
+  const policy = 'recycle-oldest' as const;
+  const drag = show.params.drag;
+  let onDeath: { emitter: number; count: number; maxGeneration: number } | undefined;
+  const b = recipe.onDeath;
+  if (b) {
+    const levels = b.generations === 'show' ? 1 : b.generations;
+    const c = burstColor(b.color, base);
+    let inner: number | null = null;
+    for (let level = levels; level >= 1; level--) {
+      const em: number = addEmitter(world, {
+        speed: [b.speed[0], b.speed[1]], lifetime: [b.lifetime[0], b.lifetime[1]], inheritVelocity: 1, policy,
+        particle: { mass: SPARK_MASS, quadraticDrag: drag * recipe.drag, colorStart: c, colorEnd: shade(c, 0.6), sizeStart: b.size, sizeEnd: b.size * 0.3, alphaStart: 1, alphaEnd: 0 },
+        ...(inner !== null ? { onDeath: { emitter: inner, count: b.count, maxGeneration: 16 } } : {}),
+      });
+      show.recipeDrag.set(em, recipe.drag);
+      inner = em;
+    }
+    onDeath = { emitter: inner!, count: b.count, maxGeneration: 16 };
+  }
+  const em = addEmitter(world, {
+    speed: [recipe.speed[0] * BURST_SPEED, recipe.speed[1] * BURST_SPEED], lifetime: [recipe.lifetime[0], recipe.lifetime[1]], inheritVelocity: 1, policy,
+    particle: {
+      mass: SPARK_MASS, quadraticDrag: drag * recipe.drag, colorStart: base, colorEnd: recipe.fade === 'gold' ? shade(GOLD, 0.7) : shade(base, 0.55),
+      sizeStart: recipe.size[0], sizeEnd: recipe.size[1], alphaStart: 1, alphaEnd: 0,
+    },
+    ...(onDeath ? { onDeath } : {}),
+  });
+  show.recipeDrag.set(em, recipe.drag);
+  show.recipeEmitters.set(key, em);
+  return em;
 }
 
 const burstPos = [0, 0], burstVel = [0, 0];
@@ -325,11 +429,16 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
     const scale = show.shellScale[i]!;
     if (show.pendingCount < MAX_SHELLS) {
       const o = PEND * show.pendingCount++;
+      const recipe: ShellRecipe = RECIPES[RECIPE_NAMES[show.shellRecipe[i]!]!];
+      const colorIndex = show.shellColor[i]!;
+      const crackle = recipe.name === 'crackle';
+      const s = Math.sqrt(scale);
       Q[o] = c.Position.x[slotOf(e)]!; Q[o + 1] = c.Position.y[slotOf(e)]!;
       Q[o + 2] = c.Velocity.x[slotOf(e)]!; Q[o + 3] = c.Velocity.y[slotOf(e)]!;
-      Q[o + 4] = show.emitters.sparks[show.shellColor[i]!]!;
-      Q[o + 5] = Math.round(show.params.sparks * scale);
-      Q[o + 6] = Math.sqrt(scale);
+      Q[o + 4] = crackle ? show.emitters.sparks[colorIndex]! : recipeEmitter(world, show, recipe, colorIndex);
+      Q[o + 5] = Math.max(1, Math.round(show.params.sparks * scale * recipe.stars));
+      Q[o + 6] = (crackle ? SPEED_MIN : recipe.speed[0]) * BURST_SPEED * s;
+      Q[o + 7] = (crackle ? 1 : recipe.speed[1]) * BURST_SPEED * s;
     }
     removeBody(world, e);
     dropShell(show, i);
@@ -345,10 +454,10 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
   const Q = show.pending;
   let budget = BURST_SPARKS_PER_STEP;
   while (show.pendingCount > 0 && budget > 0) {
-    const em = Q[4]!, s = Q[6]!;
+    const em = Q[4]!;
     const n = Math.min(Q[5]!, budget);
-    E.speedMin[slotOf(em)] = SPEED_MIN * BURST_SPEED * s;
-    E.speedMax[slotOf(em)] = BURST_SPEED * s;
+    E.speedMin[slotOf(em)] = Q[6]!;
+    E.speedMax[slotOf(em)] = Q[7]!;
     burstPos[0] = Q[0]!; burstPos[1] = Q[1]!;
     burstVel[0] = Q[2]!; burstVel[1] = Q[3]!;
     emitNow(world, em, n, burstPos, burstVel);
@@ -364,19 +473,21 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
 
 
 /**
- * The auto-show: after a random pause (0.3 to 1.4 s) launches one shell at a random point of the
- * upper sky with a random hold, or now and then (15%) a salvo of three to five. Called by
- * `stepFireworks` before each step while `params.autoShow` is on.
+ * The auto-show: plays `PROGRAMME` act by act (a salvo spreads its shells across the sky), then
+ * again; launch points and holds come from the show's generator. Called by `stepFireworks` before
+ * each step while `params.autoShow` is on.
  */
 export function autoShow(world: PhysicsWorld, show: FireworksShow): void {
   show.autoTimer -= world.dt;
   if (show.autoTimer > 0) return;
   const rng = show.rng;
-  const salvo = rng.next() < 0.15 ? rng.int(3, 5) : 1;
-  for (let k = 0; k < salvo; k++) {
-    launchShell(world, show, rng.range(0.12, 0.88) * SKY.width, rng.range(0.45, 0.9) * SKY.height, rng.range(0, MAX_HOLD));
+  const act = PROGRAMME[show.act % PROGRAMME.length]!;
+  show.act++;
+  for (let k = 0; k < act.count; k++) {
+    const lane = act.count === 1 ? rng.range(0.2, 0.8) : (k + 0.5) / act.count * 0.76 + 0.12 + rng.range(-0.04, 0.04);
+    launchShell(world, show, lane * SKY.width, rng.range(0.5, 0.88) * SKY.height, rng.range(0, MAX_HOLD), act.recipe);
   }
-  show.autoTimer = rng.range(0.3, 1.4);
+  show.autoTimer = act.pause;
 }
 
 /** One step of the show: the auto-show (if on), the physics step, then the shells' bursts. @throws what `step` throws. */
@@ -402,8 +513,9 @@ export function setShowDrag(world: PhysicsWorld, show: FireworksShow, k: number)
   show.params.drag = k;
   const E = world.components.Emitter;
   for (const em of [...show.emitters.sparks, ...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[slotOf(em)] = k;
+  for (const [em, factor] of show.recipeDrag) E.quadraticDrag[slotOf(em)] = k * factor;
   // The shells' tails (emitters attached to the shells).
-  for (let i = 0; i < show.shellCount; i++) E.quadraticDrag[show.shellIds[i]!] = k;
+  for (let i = 0; i < show.shellCount; i++) E.quadraticDrag[slotOf(show.shellIds[i]!)] = k;
 }
 
 /** Sets the sparks of a normal-size burst, integer in [10, 10_000]. @throws RangeError out of range. */

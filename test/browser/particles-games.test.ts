@@ -43,7 +43,8 @@ afterAll(async () => {
 describe('fireworks', () => {
   let page: GamePage;
   beforeAll(async () => {
-    page = await h.openGame('fireworks', { query: { opening: 0, sparks: 120, generations: 1 } });
+    // auto=0: the show starts quiet (the auto-show is on by default), so the launches counted are the test's.
+    page = await h.openGame('fireworks', { query: { opening: 0, sparks: 120, generations: 1, auto: 0 } });
   });
   afterAll(async () => {
     await page?.close();

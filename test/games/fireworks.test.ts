@@ -171,7 +171,8 @@ describe('the show', () => {
     setAutoShow(show, false);
     run(world, show, 60 * 8);
     expect(particles(world)).toBe(0);
-    expect(world.entityIndex.aliveCount).toBe(MAX_SHELLS + 2 * PALETTE.length + 1); // placeholders and emitters
+    // Placeholders, the crackle emitters and the recipes' emitters (./recipes.ts, made up front).
+    expect(world.entityIndex.aliveCount).toBe(MAX_SHELLS + 2 * PALETTE.length + 1 + show.recipeDrag.size);
   });
 
   test('the same seed and launches replay the same show', () => {

@@ -1,0 +1,106 @@
+/**
+ * The shell recipes of the fireworks show (games/fireworks/recipes.ts) burst as their names say,
+ * checked on the physics state right after the burst and over the stars' lives: a ring's stars all
+ * leave at one speed, a peony's spread over [0.3, 1] of it; crossette stars split into four; willow
+ * stars, under eight times the drag, fall at a terminal speed sqrt(8) times lower; strobes flash
+ * again where they die; the auto-show plays PROGRAMME in order.
+ */
+import { describe, expect, test } from 'vitest';
+import { query } from 'bitecs';
+import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { RECIPES, RECIPE_NAMES, type RecipeName } from '../../games/fireworks/recipes';
+import {
+  BURST_SPEED, PALETTE, PROGRAMME, SPARK_MASS, createFireworks, launchShell, recipeEmitter, stepFireworks, type FireworksShow,
+} from '../../games/fireworks/show';
+
+/** Stars alive made by emitter `em` (Particle.emitter holds the emitter's slot). */
+function starsOf(world: PhysicsWorld, em: number): number[] {
+  const P = world.components.Particle;
+  return Array.from(query(world, [P])).filter((e) => P.emitter[e] === slotOf(em));
+}
+
+/** A quiet show (no opening, no auto-show, no drag unless asked) with one shell of `recipe` launched; steps until it bursts. */
+function burstOne(recipe: RecipeName, drag = 0) {
+  const { world, show } = createFireworks({ seed: 5, opening: 0, sparks: 400, drag });
+  launchShell(world, show, 60, 40, 0, recipe);
+  let v: [number, number] = [0, 0];
+  const shell = show.shellIds[0]!;
+  for (let i = 0; i < 600 && show.bursts === 0; i++) {
+    v = [world.components.Velocity.x[slotOf(shell)]!, world.components.Velocity.y[slotOf(shell)]!];
+    stepFireworks(world, show);
+  }
+  expect(show.bursts).toBe(1);
+  // v was read before the burst step; the shell has no drag, so the step added exactly g dt downwards.
+  v[1] -= 9.81 * world.dt;
+  return { world, show, shellVelocity: v, em: recipeEmitterOf(world, show, recipe) };
+}
+
+function recipeEmitterOf(world: PhysicsWorld, show: FireworksShow, recipe: RecipeName): number {
+  // The shell's colour is drawn at launch; find the emitter that has stars.
+  for (let c = 0; c < PALETTE.length; c++) {
+    const em = recipeEmitter(world, show, RECIPES[recipe], c);
+    if (starsOf(world, em).length > 0) return em;
+  }
+  throw new Error(`no stars of ${recipe}`);
+}
+
+describe('shell recipes', () => {
+  test('ring: every star leaves at the same speed relative to the shell (to 1e-9); peony: speeds spread over [0.3, 1] x 16 m/s', () => {
+    const ring = burstOne('ring');
+    const V = ring.world.components.Velocity;
+    const speeds = starsOf(ring.world, ring.em).map((e) => Math.hypot(V.x[e]! - ring.shellVelocity[0], V.y[e]! - ring.shellVelocity[1]));
+    expect(speeds.length).toBe(Math.round(400 * RECIPES.ring.stars));
+    for (const v of speeds) expect(Math.abs(v - RECIPES.ring.speed[0] * BURST_SPEED)).toBeLessThan(1e-9);
+    const peony = burstOne('peony');
+    const P = peony.world.components.Velocity;
+    const ps = starsOf(peony.world, peony.em).map((e) => Math.hypot(P.x[e]! - peony.shellVelocity[0], P.y[e]! - peony.shellVelocity[1]));
+    expect(Math.max(...ps) - Math.min(...ps)).toBeGreaterThan(0.5 * BURST_SPEED);
+  });
+
+  test('crossette: every star that dies splits into four', () => {
+    const { world, show, em } = burstOne('crossette');
+    const n = starsOf(world, em).length;
+    expect(n).toBeGreaterThan(0);
+    for (let i = 0; i < 60; i++) stepFireworks(world, show); // lifetime 0.6 to 0.8 s: all have split
+    expect(starsOf(world, em).length).toBe(0);
+    const P = world.components.Particle;
+    const children = Array.from(query(world, [P])).filter((e) => P.generation[e] === 1);
+    expect(children.length).toBe(4 * n);
+  });
+
+  test('willow: under 8 x the drag its stars fall at terminal speed sqrt(m g / 8k), sqrt(8) below a peony star', () => {
+    const k = 5e-5;
+    const vt = Math.sqrt((SPARK_MASS * 9.81) / (RECIPES.willow.drag * k));
+    const { world, show, em } = burstOne('willow', k);
+    for (let i = 0; i < 150; i++) stepFireworks(world, show); // 2.5 s, many time constants of vt / g = 0.35 s
+    const V = world.components.Velocity;
+    const vs = starsOf(world, em).map((e) => -V.y[e]!);
+    expect(vs.length).toBeGreaterThan(10);
+    for (const v of vs) expect(v / vt).toBeCloseTo(1, 2);
+  });
+
+  test('strobe: a star flashes again where it dies, for five generations', () => {
+    const { world, show } = burstOne('strobe');
+    const P = world.components.Particle;
+    let deepest = 0;
+    for (let i = 0; i < 150; i++) {
+      stepFireworks(world, show);
+      for (const e of query(world, [P])) deepest = Math.max(deepest, P.generation[e]!);
+    }
+    expect(deepest).toBe(5);
+  });
+
+  test('the auto-show plays PROGRAMME in order, every recipe appears, and an unknown recipe is refused', () => {
+    const { world, show } = createFireworks({ seed: 9, opening: 0, autoShow: true, sparks: 50 });
+    const seen: string[] = [];
+    let launched = 0;
+    for (let i = 0; i < 60 * 30; i++) {
+      stepFireworks(world, show);
+      for (; launched < show.launched; launched++) seen.push(RECIPE_NAMES[show.shellRecipe[show.shellCount - (show.launched - launched)]!]!);
+    }
+    const expected = PROGRAMME.flatMap((a) => Array.from({ length: a.count }, () => a.recipe));
+    expect(seen.slice(0, expected.length)).toEqual(expected);
+    expect(new Set(seen)).toEqual(new Set(RECIPE_NAMES));
+    expect(() => launchShell(world, show, 10, 10, 0, 'rocket' as RecipeName)).toThrow(/recipe must be one of peony, .*got rocket/);
+  });
+});
