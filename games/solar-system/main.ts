@@ -17,7 +17,7 @@ import {
   solarSystemErrors, step, type IntegratorName, type PhysicsWorld, type SolarSystemHandles,
 } from '@bitphysics/physics';
 import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
-import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
+import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '../shared/index';
 
 /** Scene units per AU. */
 const UNITS_PER_AU = 10;
@@ -92,7 +92,8 @@ const game = await startThreeGame({
     lights: { direction: [0, 1, 0], intensity: 0.2, hemisphereIntensity: 0.25, ambientIntensity: 0.25, shadows: false },
     trails: params.trails ? TRAILS : false,
   },
-  view: { min: [-6, -1, -6], max: [6, 1, 6] },
+  // The inner planets at start (Mars' orbit fits); zoom out for the giants.
+  view: { min: [-1.8, -0.2, -1.8], max: [1.8, 0.2, 1.8] },
   viewDirection: [0.2, 0.8, 1],
   onFrame: () => frame(),
 });
@@ -109,10 +110,20 @@ const materials = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((b) => [b, b === 'S
   ? new MeshBasicMaterial({ color: COLOR[b] })
   : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.25 })]));
 
-/** Body sizes: true radii, or exaggerated (planets x 1500, the Sun x 15) so they show at this scale. */
+/**
+ * Drawn radius of a body, AU: the true radius, or exaggerated so every body shows at the scale of
+ * the orbits (planets 0.03 AU + 150 times their radius, keeping the giants larger; the Sun 20 times).
+ */
+function drawnRadius(name: string): number {
+  const r = RADIUS_AU[name]!;
+  if (!params.exaggerate) return r;
+  return name === 'Sun' ? 20 * r : 0.03 + 150 * r;
+}
+
+/** Body sizes (see drawnRadius) and colours. */
 function dress(): void {
   for (const name of SOLAR_SYSTEM_BODIES) {
-    const r = RADIUS_AU[name]! * (params.exaggerate ? (name === 'Sun' ? 15 : 1500) : 1);
+    const r = drawnRadius(name);
     renderer.setShape(handles.bodies[name], { geometry: sphere, material: materials[name]!, scale: r });
     renderer.setColor(handles.bodies[name], COLOR[name]!);
   }
@@ -127,8 +138,10 @@ app.scene.add(rings);
 // ---- Labels, date and the error table ---------------------------------------------------------
 
 const labelLayer = document.createElement('div');
-labelLayer.style.cssText = 'position: fixed; inset: 0; pointer-events: none; z-index: 5; font: 12px system-ui, sans-serif; color: #dfe7ff';
-document.body.append(labelLayer);
+labelLayer.style.cssText = 'position: absolute; inset: 0; pointer-events: none; z-index: 5; font: 12px system-ui, sans-serif; color: #dfe7ff';
+// Over the canvas (in the layout's stage): the labels are part of the scene.
+labelLayer.dataset.sceneOverlay = '';
+pageLayout().stage.append(labelLayer);
 const labels = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((name) => {
   const el = document.createElement('div');
   el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
@@ -140,8 +153,7 @@ const labels = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((name) => {
 const table = document.createElement('div');
 table.className = 'bp-hud';
 table.dataset.hud = 'ephemeris';
-table.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 260px';
-document.body.append(table);
+pageLayout().side.append(table);
 const dateLine = table.appendChild(document.createElement('div'));
 const head = table.appendChild(document.createElement('div'));
 head.textContent = 'error vs ephemeris (floor)';
@@ -161,7 +173,7 @@ function frame(): void {
     v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
     if (name === 'Saturn') {
       rings.position.copy(v);
-      rings.scale.set(1, 0.01, 1).multiplyScalar(RADIUS_AU.Saturn! * k * (params.exaggerate ? 1500 : 1) * 2.2);
+      rings.scale.set(1, 0.01, 1).multiplyScalar(drawnRadius('Saturn') * k * 2.2);
     }
     v.project(app.camera);
     const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
