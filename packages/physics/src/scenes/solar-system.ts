@@ -11,8 +11,8 @@ import type { SceneDefinition } from './types.js';
 
 /**
  * The solar system of the book's closing project (Ramtal and Dobre ch. 16), started from and checked
- * against a real ephemeris: the npm package astronomy-engine (Don Cross; VSOP87 for the planets, the
- * TOP2013-based model for the giant planets' barycentric motion).
+ * against a real ephemeris: the npm package astronomy-engine (Don Cross; truncated VSOP87 series for
+ * the planets, the Sun's offset from the barycentre from the four giant planets).
  *
  * Units, after the book's chapter on scaling: the world's unit of length is the astronomical unit
  * (1 AU = `AU` m), its unit of time the day (86,400 s) and its unit of mass the Sun's mass, so
