@@ -17,7 +17,8 @@
  * controls are left out (the toolbar has pause, step and reset buttons; games add on-screen pads to
  * the controls row).
  *
- * DOM only. The first call of `pageLayout` builds it; later calls return the same one.
+ * A readout a page appends straight to body with the HUD's class ('bp-hud') is moved into the side
+ * column. DOM only. The first call of `pageLayout` builds it; later calls return the same one.
  */
 
 /** Below this window width, CSS px, the layout is compact (toolbar and drawers). */
@@ -196,6 +197,14 @@ export function pageLayout(): PageLayout {
   syncSideButton();
   // Drawers sit under the toolbar, whatever its height.
   new ResizeObserver(() => root.style.setProperty('--bp-toolbar-height', `${toolbar.offsetHeight}px`)).observe(toolbar);
+  // A readout box a page appends to body (class 'bp-hud', as pages did before this layout) goes to
+  // the side column instead of floating over the scene.
+  const adopt = (node: Node): void => {
+    if (!(node instanceof HTMLElement) || node.parentElement !== document.body || !node.classList.contains('bp-hud')) return;
+    for (const k of ['top', 'bottom', 'left', 'right', 'position'] as const) node.style[k] = '';
+    side.append(node);
+  };
+  new MutationObserver((records) => { for (const r of records) r.addedNodes.forEach(adopt); }).observe(document.body, { childList: true });
   // Growing into the wide arrangement closes the drawers.
   query.addEventListener('change', () => { if (!query.matches) open(null); });
 

@@ -135,7 +135,9 @@ export class Harness {
     page.setDefaultTimeout(PAGE_TIMEOUT_MS);
     const gp = new GamePage(context, page);
     this.pages.add(gp);
-    await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query));
+    // Only until the response arrives: the ready flag (below) is the page's own "loaded", and a page
+    // parsing a large bundle on a busy machine should fail with its errors there, not in goto.
+    await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query), { waitUntil: 'commit' });
     if (options.waitReady !== false) await gp.waitReady(options.readyTimeoutMs);
     return gp;
   }
