@@ -274,7 +274,8 @@ export interface Components {
   /**
    * A lifting surface (wing half, tailplane, fin) of a rigid 3D body (forces/lifting-surface.ts,
    * `addLiftingSurface`): its own entity holding the `body` (entity id), the point `offset` (m, body
-   * frame) where its force acts, its unit `normal` (body frame; the chord is the body's x axis),
+   * frame) where its force acts, its unit `normal` (body frame; the chord is the body's x axis made
+   * perpendicular to it),
    * `area` m^2, lift slope `liftSlope` (1/rad), `stallAngle` rad, zero-lift drag `dragZero`, induced
    * drag factor `inducedDrag`, and a control surface: `deflection` rad times `controlPower` (1/rad).
    * Air density `airDensity` kg/m^3.
