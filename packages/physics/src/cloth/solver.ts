@@ -53,13 +53,16 @@ export function clothSystem(world: PhysicsWorld): void {
   const rigid = cl.rigidCount;
   const dvx = gx * hs, dvy = gy * hs;
   for (let sub = 0; sub < S; sub++) {
-    // Predict: v += g h_s, x += v h_s.
+    // Velocities from the last substep's moves (from the second substep on), then predict: v += g h_s, x += v h_s.
     for (let i = 0; i < np; i++) {
       const o = 7 * i;
       if (xb[o + 2] === 0) continue;
-      const v1 = xb[o + 3]! + dvx, v2 = xb[o + 4]! + dvy;
-      xb[o + 5] = xb[o]!; xb[o + 6] = xb[o + 1]!;
-      xb[o] = xb[o]! + v1 * hs; xb[o + 1] = xb[o + 1]! + v2 * hs;
+      const x = xb[o]!, y = xb[o + 1]!;
+      let v1: number, v2: number;
+      if (sub > 0) { v1 = (x - xb[o + 5]!) * ihs + dvx; v2 = (y - xb[o + 6]!) * ihs + dvy; }
+      else { v1 = xb[o + 3]! + dvx; v2 = xb[o + 4]! + dvy; }
+      xb[o + 5] = x; xb[o + 6] = y;
+      xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
     }
     // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
     for (let l = 0; l < rigid; l++) {
@@ -82,18 +85,13 @@ export function clothSystem(world: PhysicsWorld): void {
       xb[oa] = xb[oa]! - wa * dx; xb[oa + 1] = xb[oa + 1]! - wa * dy;
       xb[ob] = xb[ob]! + wb * dx; xb[ob + 1] = xb[ob + 1]! + wb * dy;
     }
-    // Velocities from the moves.
-    for (let i = 0; i < np; i++) {
-      const o = 7 * i;
-      if (xb[o + 2] === 0) continue;
-      xb[o + 3] = (xb[o]! - xb[o + 5]!) * ihs; xb[o + 4] = (xb[o + 1]! - xb[o + 6]!) * ihs;
-    }
   }
   for (let i = 0; i < np; i++) {
     const o = 7 * i;
     if (xb[o + 2] === 0) continue;
     const e = P[i]!;
-    px[e] = xb[o]!; py[e] = xb[o + 1]!; vx[e] = xb[o + 3]!; vy[e] = xb[o + 4]!;
+    px[e] = xb[o]!; py[e] = xb[o + 1]!;
+    vx[e] = (xb[o]! - xb[o + 5]!) * ihs; vy[e] = (xb[o + 1]! - xb[o + 6]!) * ihs;
   }
   let maxStretch = 0;
   let doomed: number[] | null = null;
