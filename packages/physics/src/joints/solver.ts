@@ -158,6 +158,14 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   if (js.rotation.length < count * 3) js.rotation = new Float64Array(Math.max(count * 3, js.rotation.length * 2));
   const rot = js.rotation;
   for (let k = 0; k < count; k++) { rot[k * 3] = 1; rot[k * 3 + 1] = 0; rot[k * 3 + 2] = 0; }
+  // Each solver body's angle at the start of the step (its angle less the rotation still owed), with
+  // its cos and sin, once per body rather than once per joint.
+  if (js.startPose.length < count * 3) js.startPose = new Float64Array(Math.max(count * 3, js.startPose.length * 2));
+  const pose = js.startPose, list = cs.solverBodies, angle = c.Angle.value;
+  for (let k = 1; k < count; k++) {
+    const t = angle[list[k]!]! + ex[k * 6 + 5]!;
+    pose[k * 3] = Math.cos(t); pose[k * 3 + 1] = Math.sin(t); pose[k * 3 + 2] = t;
+  }
   const rows = js.rows, ri = js.rowInts, imp = js.impulses;
   const lf = js.links, lint = js.linkInts;
   let links = 0;
@@ -180,21 +188,23 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     let cAx = 0, cAy = 0, tA = 0, cBx = 0, cBy = 0, tB = 0;
     let rAx: number, rAy: number;
     const lax = J.localAx[j]!, lay = J.localAy[j]!, lbx = J.localBx[j]!, lby = J.localBy[j]!;
+    let cA = 1, sA = 0;
     if (ia !== 0) {
-      cAx = ex[ia * 6]!; cAy = ex[ia * 6 + 1]!; tA = ang[a]! + ex[ia * 6 + 5]!;
-      const ca = Math.cos(tA), sa = Math.sin(tA);
-      rAx = ca * lax - sa * lay; rAy = sa * lax + ca * lay;
+      cAx = ex[ia * 6]!; cAy = ex[ia * 6 + 1]!; tA = pose[ia * 3 + 2]!;
+      cA = pose[ia * 3]!; sA = pose[ia * 3 + 1]!;
+      rAx = cA * lax - sA * lay; rAy = sA * lax + cA * lay;
     } else if (a !== 0) {
       tA = ang[a]!;
-      const ca = Math.cos(tA), sa = Math.sin(tA);
-      rAx = px[a]! + ca * lax - sa * lay; rAy = py[a]! + sa * lax + ca * lay;
+      cA = Math.cos(tA); sA = Math.sin(tA);
+      rAx = px[a]! + cA * lax - sA * lay; rAy = py[a]! + sA * lax + cA * lay;
     } else {
       rAx = lax; rAy = lay;
     }
     let rBx: number, rBy: number;
     {
-      if (ib !== 0) { cBx = ex[ib * 6]!; cBy = ex[ib * 6 + 1]!; tB = ang[b]! + ex[ib * 6 + 5]!; } else { tB = ang[b]!; }
-      const cb = Math.cos(tB), sbn = Math.sin(tB);
+      let cb: number, sbn: number;
+      if (ib !== 0) { cBx = ex[ib * 6]!; cBy = ex[ib * 6 + 1]!; tB = pose[ib * 3 + 2]!; cb = pose[ib * 3]!; sbn = pose[ib * 3 + 1]!; }
+      else { tB = ang[b]!; cb = Math.cos(tB); sbn = Math.sin(tB); }
       rBx = cb * lbx - sbn * lby; rBy = sbn * lbx + cb * lby;
       if (ib === 0) { rBx += px[b]!; rBy += py[b]!; }
     }
@@ -204,7 +214,6 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     let dAng = tB - tA - J.referenceAngle[j]!;
     dAng = unwind(dAng);
     rows[o + DANG] = dAng;
-    const cA = Math.cos(tA), sA = Math.sin(tA);
     const axx = cA * J.axisX[j]! - sA * J.axisY[j]!, axy = sA * J.axisX[j]! + cA * J.axisY[j]!;
     rows[o + AXX] = axx; rows[o + AXY] = axy;
     rows[o + JB] = jBias; rows[o + JM] = jMass; rows[o + JI] = jImp;

@@ -67,6 +67,8 @@ export interface JointState {
   impulses: Float64Array;
   /** Per entity: how many joints hold it (so removing a body without joints costs nothing). */
   attached: Int32Array;
+  /** Per solver body: cos, sin and angle (rad) of its orientation at the start of the step. */
+  startPose: Float64Array;
   /** Per solver body: cos, sin and angle (rad) of its rotation since the start of the step. */
   rotation: Float64Array;
   /** Per entity scratch: stamp of the classification below, and the body's class (0 dynamic, 1 kinematic, 2 static, 3 sleeping). */
@@ -95,6 +97,7 @@ export function createJointState(): JointState {
     impulses: new Float64Array(0),
     attached: new Int32Array(0),
     rotation: new Float64Array(0),
+    startPose: new Float64Array(0),
     bodyStamp: new Uint32Array(0),
     bodyClass: new Uint8Array(0),
     stamp: 0,
