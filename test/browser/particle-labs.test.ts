@@ -141,11 +141,11 @@ describe('lab-wormhole', () => {
       const w = window.game as unknown as Lab & { hole: Hole };
       for (let i = 0; i < 900 && w.hole.teleports === 0; i++) w.advance(1);
       const hole = w.hole, P = w.world.components.Position!, V = w.world.components.Velocity!;
-      const wx = P.x![hole.whiteHole]!, wy = P.y![hole.whiteHole]!;
+      const wx = P.x![hole.whiteHole % 2 ** 25]!, wy = P.y![hole.whiteHole % 2 ** 25]!;
       // The star that just came out: the one sitting at the exit point.
       let star = 0;
-      for (const e of hole.ids) if (e !== 0 && P.x![e] === hole.last.x && P.y![e] === hole.last.y) star = e;
-      const vr = star ? (V.x![star]! * (hole.last.x - wx) + V.y![star]! * (hole.last.y - wy)) : Number.NaN;
+      for (const e of hole.ids) if (e !== 0 && P.x![e % 2 ** 25] === hole.last.x && P.y![e % 2 ** 25] === hole.last.y) star = e;
+      const vr = star ? (V.x![star % 2 ** 25]! * (hole.last.x - wx) + V.y![star % 2 ** 25]! * (hole.last.y - wy)) : Number.NaN;
       return { teleports: hole.teleports, ...hole.last, horizon: hole.settings.horizon, exitR: Math.hypot(hole.last.x - wx, hole.last.y - wy), star, vr, steps: w.world.steps };
     });
     expect(jump.teleports).toBeGreaterThan(0);
@@ -173,7 +173,7 @@ describe('lab-wormhole', () => {
       const w = window.game as unknown as Lab & { hole: { whiteHole: number; ids: Uint32Array } };
       const P = w.world.components.Position!, C = w.world.components.CentralForce!;
       const star = w.hole.ids[0]!;
-      return { x: P.x![w.hole.whiteHole]!, y: P.y![w.hole.whiteHole]!, cx: C.cx![star]!, cy: C.cy![star]! };
+      return { x: P.x![w.hole.whiteHole % 2 ** 25]!, y: P.y![w.hole.whiteHole % 2 ** 25]!, cx: C.cx![star % 2 ** 25]!, cy: C.cy![star % 2 ** 25]! };
     });
     expect(moved.x).toBeCloseTo(8, 1);
     expect(moved.y).toBeCloseTo(-4, 1);
@@ -239,7 +239,7 @@ describe('lab-splash', () => {
     await setNumber(g, 'rain (drops/s)', 12);
     const rate = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { splash: { rain: number } };
-      return w.world.components.Emitter!.rate![w.splash.rain];
+      return w.world.components.Emitter!.rate![w.splash.rain % 2 ** 25];
     });
     expect(rate).toBe(12);
     expect(g.errors).toEqual([]);
@@ -274,7 +274,7 @@ describe('lab-smoke', () => {
     await setNumber(g, 'rate (puffs/s)', 300);
     const rate = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { smoke: { emitter: number } };
-      return w.world.components.Emitter!.rate![w.smoke.emitter];
+      return w.world.components.Emitter!.rate![w.smoke.emitter % 2 ** 25];
     });
     expect(rate).toBe(300);
     await advance(600);
@@ -330,7 +330,7 @@ describe('lab-fire', () => {
     await setNumber(g, 'intensity', 2);
     const rates = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { fire: { sparks: number; settings: { intensity: number } } };
-      return { intensity: w.fire.settings.intensity, sparks: w.world.components.Emitter!.rate![w.fire.sparks] };
+      return { intensity: w.fire.settings.intensity, sparks: w.world.components.Emitter!.rate![w.fire.sparks % 2 ** 25] };
     });
     expect(rates.intensity).toBe(2);
     expect(rates.sparks).toBe(28);
@@ -365,7 +365,7 @@ describe('lab-sparks', () => {
     const off = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { particleCount(): number; sparks: { on: boolean; emitter: number } };
       w.advance(90);
-      return { on: w.sparks.on, enabled: w.world.components.Emitter!.enabled![w.sparks.emitter], count: w.particleCount() };
+      return { on: w.sparks.on, enabled: w.world.components.Emitter!.enabled![w.sparks.emitter % 2 ** 25], count: w.particleCount() };
     });
     expect(off.on).toBe(false);
     expect(off.enabled).toBe(0);
@@ -380,7 +380,7 @@ describe('lab-sparks', () => {
     const moved = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { sparks: { at: [number, number]; emitter: number } };
       const P = w.world.components.Position!;
-      return { at: w.sparks.at.slice(), ex: P.x![w.sparks.emitter]!, ey: P.y![w.sparks.emitter]! };
+      return { at: w.sparks.at.slice(), ex: P.x![w.sparks.emitter % 2 ** 25]!, ey: P.y![w.sparks.emitter % 2 ** 25]! };
     });
     expect(moved.at[0]).toBeCloseTo(2, 1);
     expect(moved.at[1]).toBeCloseTo(1.5, 1);
@@ -390,7 +390,7 @@ describe('lab-sparks', () => {
     const dir = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { sparks: { emitter: number } };
       const E = w.world.components.Emitter!;
-      return { x: E.dirX![w.sparks.emitter]!, y: E.dirY![w.sparks.emitter]! };
+      return { x: E.dirX![w.sparks.emitter % 2 ** 25]!, y: E.dirY![w.sparks.emitter % 2 ** 25]! };
     });
     expect(dir.x).toBeCloseTo(0, 9);
     expect(dir.y).toBeCloseTo(1, 9);
@@ -415,7 +415,7 @@ describe('lab-attractors', () => {
     expect(added.length).toBe(4);
     const pos = await g.page.evaluate((e) => {
       const P = (window.game as unknown as Lab).world.components.Position!;
-      return { x: P.x![e]!, y: P.y![e]! };
+      return { x: P.x![e % 2 ** 25]!, y: P.y![e % 2 ** 25]! };
     }, added[3]!);
     expect(pos.x).toBeCloseTo(-1.5, 1);
     expect(pos.y).toBeCloseTo(-1, 1);
@@ -436,7 +436,7 @@ describe('lab-attractors', () => {
     const dragged = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { attractorIds(): number[] };
       const P = w.world.components.Position!;
-      return w.attractorIds().map((e) => [P.x![e]!, P.y![e]!]);
+      return w.attractorIds().map((e) => [P.x![e % 2 ** 25]!, P.y![e % 2 ** 25]!]);
     });
     expect(dragged.length).toBe(2);
     expect(dragged.some(([x, y]) => Math.abs(x! + 6) < 0.1 && Math.abs(y! - 3) < 0.1)).toBe(true);
@@ -454,14 +454,14 @@ describe('lab-attractors', () => {
       // Mean angular momentum about the vortex centre per kg, m^2/s: the swirl's torque k_v r drives it up.
       const spin = (): number => {
         let L = 0;
-        for (const e of w.field.particles) L += P.x![e]! * V.y![e]! - P.y![e]! * V.x![e]!;
+        for (const e of w.field.particles) L += P.x![e % 2 ** 25]! * V.y![e % 2 ** 25]! - P.y![e % 2 ** 25]! * V.x![e % 2 ** 25]!;
         return L / w.field.particles.length;
       };
       const L0 = spin();
       w.advance(120);
       return {
-        masses: w.attractorIds().map((e) => A.mass![e]), soft: w.attractorIds().map((e) => A.softening![e]),
-        vortex: w.params.vortex, k: Vx.k![p], strength: w.params.vortexStrength, L0, L1: spin(),
+        masses: w.attractorIds().map((e) => A.mass![e % 2 ** 25]), soft: w.attractorIds().map((e) => A.softening![e % 2 ** 25]),
+        vortex: w.params.vortex, k: Vx.k![p % 2 ** 25], strength: w.params.vortexStrength, L0, L1: spin(),
       };
     });
     expect(state.masses.every((m) => m === 100)).toBe(true);
