@@ -260,7 +260,7 @@ function drawHoles(world: PhysicsWorld): void {
   const P = world.components.Position;
   for (let i = 0; i < bh.holes.length; i++) {
     const h = bh.holes[i]!;
-    const x = cam.toScreenX(P.x[h]!), y = cam.toScreenY(P.y[h]!), r = cam.toScreenLength(bh.holeRadius[i]!);
+    const x = cam.toScreenX(P.x[slotOf(h)]!), y = cam.toScreenY(P.y[slotOf(h)]!), r = cam.toScreenLength(bh.holeRadius[i]!);
     // Glow outside the horizon (the photon sphere is at 1.5 r), then the horizon itself.
     for (let k = 6; k >= 1; k--) holesLayer.circle(x, y, r * (1 + 0.12 * k)).fill({ color: 0xff8a3c, alpha: 0.05 });
     holesLayer.circle(x, y, r * 1.5).stroke({ width: 1, color: 0xffc080, alpha: 0.25 });

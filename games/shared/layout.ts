@@ -4,7 +4,7 @@
  *
  * Wide windows (at least `COMPACT_MAX_WIDTH` x `COMPACT_MAX_HEIGHT` CSS px):
  *
- *     | toolbar | status   | side  |     toolbar: title and buttons (pause, step, reset)
+ *     | toolbar | status   | side  |     toolbar: title and buttons (pause, step, reset), atop the info column
  *     | info    | stage    |       |     info: readout (fps, bodies, a lab's numbers); help: the controls
  *     | help    | controls |       |     side: the parameter panel and the charts; status: a game's banner
  *
@@ -86,9 +86,9 @@ const CSS = `
 html, body { margin: 0; height: 100%; overflow: hidden; }
 .bp-app { position: fixed; inset: 0; display: grid; box-sizing: border-box;
   grid-template-columns: ${INFO_WIDTH}px minmax(0, 1fr) auto; grid-template-rows: auto minmax(0, 1fr) auto;
-  grid-template-areas: "toolbar status side" "info stage side" "info controls side";
+  grid-template-areas: "info status side" "info stage side" "info controls side";
   color: #e8ecf1; font: 13px/1.45 system-ui, sans-serif; }
-.bp-toolbar { grid-area: toolbar; display: flex; flex-wrap: wrap; align-items: center; gap: 6px; padding: 8px 10px 4px; min-width: 0; }
+.bp-toolbar { grid-area: info; align-self: start; z-index: 1; display: flex; flex-wrap: wrap; align-items: center; gap: 6px; padding: 8px 10px 4px; min-width: 0; }
 .bp-toolbar h1 { font: 600 15px/1.3 system-ui, sans-serif; margin: 0; flex: 1 0 100%; min-width: 0; }
 .bp-toolbar .bp-buttons { display: flex; gap: 4px; flex-wrap: wrap; }
 .bp-toolbar button { display: inline-flex; align-items: center; justify-content: center; font: 15px/1 system-ui, sans-serif; min-width: 34px; height: 30px; padding: 0 8px; color: #e8ecf1; cursor: pointer;
@@ -96,7 +96,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 .bp-toolbar button:hover { background: rgba(255, 255, 255, 0.14); }
 .bp-toolbar button[aria-pressed="true"] { background: rgba(255, 209, 102, 0.25); border-color: #ffd166; }
 .bp-toolbar .bp-drawer-button { display: none; }
-.bp-info { grid-area: info; display: flex; flex-direction: column; gap: 8px; padding: 4px 10px 10px; overflow-y: auto; min-height: 0; box-sizing: border-box; }
+.bp-info { grid-area: info; display: flex; flex-direction: column; gap: 8px; padding: calc(var(--bp-toolbar-height, 68px) + 4px) 10px 10px; overflow-y: auto; min-height: 0; box-sizing: border-box; }
 .bp-info .bp-help { margin-top: auto; }
 .bp-status { grid-area: status; min-width: 0; }
 .bp-status:empty, .bp-controls:empty, .bp-side:empty { display: none; }
@@ -110,13 +110,13 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 @media (max-width: ${COMPACT_MAX_WIDTH - 0.02}px), (max-height: ${COMPACT_MAX_HEIGHT - 0.02}px) {
   .bp-app { grid-template-columns: minmax(0, 1fr); grid-template-rows: auto auto minmax(0, 1fr) auto;
     grid-template-areas: "toolbar" "status" "stage" "controls"; }
-  .bp-toolbar { flex-wrap: nowrap; padding: 6px 8px; gap: 6px; }
+  .bp-toolbar { grid-area: toolbar; align-self: auto; flex-wrap: nowrap; padding: 6px 8px; gap: 6px; }
   .bp-toolbar h1 { flex: 1 1 auto; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; font-size: 14px; }
   .bp-toolbar .bp-buttons { flex-wrap: nowrap; }
   .bp-toolbar .bp-drawer-button { display: inline-flex; }
   .bp-info, .bp-side { position: fixed; z-index: 30; top: var(--bp-toolbar-height, 44px); max-height: calc(100% - var(--bp-toolbar-height, 44px));
     display: none; background: rgba(16, 20, 28, 0.96); border-radius: 0 0 8px 8px; box-shadow: 0 6px 18px rgba(0, 0, 0, 0.5); }
-  .bp-info { left: 0; width: min(100%, 320px); }
+  .bp-info { left: 0; width: min(100%, 320px); padding-top: 6px; }
   .bp-side { right: 0; width: min(100%, 380px); }
   .bp-app[data-open="info"] .bp-info { display: flex; }
   .bp-app[data-open="side"] .bp-side:not(:empty) { display: flex; }

@@ -173,6 +173,20 @@ describe('black hole', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('without ?holes it plays levels: level 1 with one hole, its number, lives and best score on screen', async () => {
+    const g = await h.openGame('black-hole');
+    const level = await g.page.evaluate(() => {
+      const game = window.game as unknown as { level: { spec: { level: number; holes: number } } | null; bh: { holes: number[] } };
+      return { spec: game.level?.spec, holes: game.bh.holes.length };
+    });
+    expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 1 }), holes: 1 });
+    expect(await g.page.locator('[data-hud="numbers"]').innerText()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
+    // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
+    expect(await g.canvasColors()).toBeGreaterThan(16);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('falling into a hole costs a life and says so on screen', async () => {
     const g = page;
     await g.page.evaluate(() => {
