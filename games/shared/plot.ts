@@ -97,7 +97,7 @@ export function createPlot(options: PlotOptions): Plot {
   // off: it goes under the title instead.
   const height = options.height ?? 220;
   const yLabel = options.yLabel ?? '';
-  const yLabelFits = yLabel.length * 7 <= height - 40;
+  const yLabelFits = yLabel.length * 7.5 <= height - 70;
   const chart = new uPlot(
     {
       title: options.title,
