@@ -13,6 +13,8 @@ export interface BenchArgs {
   readonly help: boolean;
   /** `--json`: one JSON object a line per engine run (or per study item) on stdout, nothing else there. */
   readonly json: boolean;
+  /** Print a fingerprint of bitphysics' final state (stateHash) with its result, to compare runs across processes and machines. */
+  readonly hash: boolean;
   /** `--scene`, default 'balls-in-box': a physics scene or a bench study (see `catalogNames`). */
   readonly scene: string;
   /** Whether `scene` is a bench study (`integrators`, `forces`) rather than a physics scene run by engines. */
@@ -51,6 +53,7 @@ const BUILTIN_OPTIONS = {
   vs: { type: 'string' },
   block: { type: 'string' },
   json: { type: 'boolean' },
+  hash: { type: 'boolean' },
   times: { type: 'boolean' },
   list: { type: 'boolean' },
   help: { type: 'boolean', short: 'h' },
@@ -75,6 +78,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
   --seed <n>         seed of the scene layout (default ${DEFAULTS.seed})
   --vs <a,b,...>     peer engines to run side by side with bitphysics (e.g. rapier2d,matter; plain-loop)
   --block <n>        engines alternate every n steps (default ${DEFAULTS.block}; not for studies)
+  --hash             print bitphysics' state fingerprint after the run (stateHash: every bit of every body; same
+                     scene, count, seed and steps give the same hash on every machine)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
   --list             list scenes, their parameters and the engines that support each
@@ -168,7 +173,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
+  return { list, help, json, hash: values.hash === true, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
 }
 
 /**

@@ -145,7 +145,7 @@ async function run(args: BenchArgs, io: CliIO): Promise<number> {
   let started = false;
   try {
     const result = await runBenchmark(
-      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params },
+      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash },
       {
         steps: args.steps, warmup: args.warmup, block: args.block,
         onProgress: bar

@@ -1,5 +1,5 @@
 import { query } from 'bitecs';
-import { contactCount, createPhysicsWorld, SCENES, step, type PhysicsWorld } from '@bitphysics/physics';
+import { contactCount, createPhysicsWorld, SCENES, stateHash, step, type PhysicsWorld } from '@bitphysics/physics';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { resolveScene } from '../scenes/index.js';
 
@@ -36,7 +36,7 @@ export const bitphysicsEngine: EngineAdapter = {
         step(w);
       },
       stats() {
-        const extra = probe ? probe.extras() : undefined;
+        const extra = options.hash ? { ...(probe ? probe.extras() : {}), stateHash: stateHash(w) } : probe ? probe.extras() : undefined;
         const bodies = probe?.bodies ? probe.bodies() : ids.length;
         return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
       },

@@ -21,6 +21,8 @@ export interface SceneRunOptions {
    * for scenes without any. The bench scene maps them to the scene builder's options.
    */
   readonly params?: Readonly<Record<string, number>>;
+  /** Whether ours adds `stateHash` (the world's state fingerprint) to its statistics (`--hash`). Default false. */
+  readonly hash?: boolean;
 }
 
 /** Counters an engine reports after a step. */

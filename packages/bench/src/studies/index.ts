@@ -2,12 +2,14 @@ import type { BenchStudy } from './types.js';
 import { integratorsStudy } from './integrators.js';
 import { forcesStudy } from './forces.js';
 import { solarSystemStudy } from './solar-system.js';
+import { snapshotStudy } from './snapshot.js';
 
 /** Bench-only scenes (measurement studies, not worlds stepped side by side with peers) by name. */
 export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
   [integratorsStudy.name]: integratorsStudy,
   [forcesStudy.name]: forcesStudy,
   [solarSystemStudy.name]: solarSystemStudy,
+  [snapshotStudy.name]: snapshotStudy,
 });
 
 /** The study called `name`, or undefined. */

@@ -60,8 +60,11 @@ const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) =>
 class Writer {
   readonly buffers: ArrayBuffer[] = [];
   private readonly seen = new Set<object>();
-  array(a: TypedArray): Encoded {
-    const copy = a.slice();
+  /** Stores no entity has: their arrays' contents are never read, so only their type and length are kept. */
+  unused: ReadonlySet<object> = new Set();
+  /** Encodes a typed array (a copy of it; `own` true: `a` itself, which the caller made for the snapshot). */
+  array(a: TypedArray, own = false): Encoded {
+    const copy = own ? a : a.slice();
     this.buffers.push(copy.buffer as ArrayBuffer);
     return { $t: a.constructor.name, b: this.buffers.length - 1 };
   }
@@ -76,6 +79,13 @@ class Writer {
     if (ArrayBuffer.isView(v)) {
       if (!(v.constructor.name in TYPED)) throw new TypeError(`snapshot: cannot capture ${path} (a ${v.constructor.name})`);
       return this.array(v as TypedArray);
+    }
+    if (this.unused.has(v)) {
+      const out: Record<string, Encoded> = {};
+      for (const [key, x] of Object.entries(v)) {
+        out[key] = ArrayBuffer.isView(x) ? { $t: 'unused', type: x.constructor.name, n: (x as TypedArray).length } : this.value(x, `${path}.${key}`);
+      }
+      return { $t: 'o', v: out };
     }
     if (this.seen.has(v)) throw new TypeError(`snapshot: ${path} is reached twice (shared or cyclic state cannot be captured)`);
     this.seen.add(v);
@@ -115,6 +125,7 @@ class Reader {
     if (t === 'n') return e.v === '-0' ? -0 : Number(e.v);
     if (t === 'u') return undefined;
     if (t in TYPED) return this.array(e, path).slice();
+    if (t === 'unused') return new TYPED[e.type as string]!(e.n as number);
     const v = e.v as Encoded;
     if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
     if (t === 's') return new Set((v as Encoded[]).map((x) => this.fresh(x, path)));
@@ -134,6 +145,13 @@ class Reader {
     const cur = target[key];
     if (isTagged(e)) {
       const t = e.$t as string;
+      if (t === 'unused') {
+        // No entity has the store's component: its contents are never read; only the allocation matters.
+        const Ctor = TYPED[e.type as string]!;
+        const n = e.n as number;
+        if (!(cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === Ctor && (cur as TypedArray).length === n)) target[key] = new Ctor(n);
+        return;
+      }
       if (t in TYPED) {
         const src = this.array(e, path);
         if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === src.length) {
@@ -216,6 +234,12 @@ function describeQuery(q: QueryData, names: Map<object, string>): { and: string[
 }
 const keyOf = (d: { and: string[]; not: string[]; or: string[] }) => `${d.and.join(',')}|${d.not.join(',')}|${d.or.join(',')}`;
 
+function toInt32(a: ArrayLike<number>): Int32Array {
+  const out = new Int32Array(a.length);
+  for (let i = 0; i < a.length; i++) out[i] = a[i]!;
+  return out;
+}
+
 function bitIndex(bitflag: number): number {
   return 31 - Math.clz32(bitflag);
 }
@@ -248,7 +272,7 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
       }
       m[e] = v;
     }
-    masks.push(w.array(m));
+    masks.push(w.array(m, true));
   }
   const queries: Encoded[] = [];
   for (const q of ctx.queries) {
@@ -256,11 +280,11 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
     if (d === null) continue;
     queries.push({
       $t: 'o',
-      v: { and: d.and, not: d.not, or: d.or, dense: w.array(Int32Array.from(q.dense)), toRemove: w.array(Int32Array.from(q.toRemove.dense)) },
+      v: { and: d.and, not: d.not, or: d.or, dense: w.array(toInt32(q.dense), true), toRemove: w.array(toInt32(q.toRemove.dense), true) },
     });
   }
   return {
-    aliveCount: ix.aliveCount, maxId, dense: w.array(Int32Array.from(ix.dense)),
+    aliveCount: ix.aliveCount, maxId, dense: w.array(toInt32(ix.dense), true),
     layout, masks, queries: queries as Encoded[],
   };
 }
@@ -299,33 +323,36 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   const aliveCount = ecs.aliveCount as number;
   const oldAlive = new Uint8Array(Math.max(ix.maxId, maxId) + 1);
   for (let i = 0; i < ix.aliveCount; i++) oldAlive[ix.dense[i]!] = 1;
-  // Component sets: kept where an entity was alive with the same components, rebuilt elsewhere.
+  // Component sets: kept where an entity stays alive with the same components, rebuilt elsewhere.
   const bits: object[][] = [];
   for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
   const sets = ctx.entityComponents;
-  const next = new Map<number, Set<object>>();
-  for (let i = 0; i < aliveCount; i++) {
+  const newAlive = new Uint8Array(oldAlive.length);
+  for (let i = 0; i < aliveCount; i++) newAlive[dense[i]!] = 1;
+  // Fast path (a rewind with the same entities and components): nothing to rebuild.
+  let unchanged = ix.aliveCount === aliveCount;
+  for (let e = 0; unchanged && e < oldAlive.length; e++) if (oldAlive[e] !== newAlive[e]) unchanged = false;
+  for (let g = 0; unchanged && g < gens; g++) {
+    const cur = ctx.entityMasks[g]!, m = newMasks[g]!;
+    for (let i = 0; i < aliveCount; i++) { const e = dense[i]!; if ((cur[e] ?? 0) !== m[e]) { unchanged = false; break; } }
+  }
+  for (let i = 0; i < ix.aliveCount; i++) { const e = ix.dense[i]!; if (newAlive[e] === 0) sets.delete(e); }
+  for (let i = 0; !unchanged && i < aliveCount; i++) {
     const e = dense[i]!;
     let keep = oldAlive[e] === 1 && sets.has(e);
     for (let g = 0; keep && g < gens; g++) if ((ctx.entityMasks[g]![e] ?? 0) !== newMasks[g]![e]) keep = false;
-    if (keep) { next.set(e, sets.get(e)!); continue; }
+    if (keep) continue;
     const set = new Set<object>();
     for (let g = 0; g < gens; g++) {
       let m = newMasks[g]![e]!;
       while (m !== 0) { const b = 31 - Math.clz32(m); set.add(bits[g]![b]!); m &= ~(1 << b); }
     }
-    next.set(e, set);
+    sets.set(e, set);
   }
-  ctx.entityComponents = next;
-  for (let g = 0; g < gens; g++) {
-    const t = ctx.entityMasks[g]!;
-    t.length = 0;
-    const m = newMasks[g]!;
-    for (let e = 0; e <= maxId; e++) t[e] = m[e]!;
-  }
-  ix.dense.length = 0;
-  ix.sparse.length = 0;
-  for (let i = 0; i < dense.length; i++) { ix.dense.push(dense[i]!); ix.sparse[dense[i]!] = i; }
+  for (let g = 0; g < gens; g++) writeInPlace(ctx.entityMasks[g]!, newMasks[g]!, newMasks[g]!.length);
+  // Entity index (written in place: its arrays stay packed).
+  writeInPlace(ix.dense, dense, dense.length);
+  for (let i = 0; i < dense.length; i++) ix.sparse[dense[i]!] = i;
   ix.aliveCount = aliveCount;
   ix.maxId = maxId;
   // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
@@ -347,12 +374,9 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       if (q === undefined) throw new Error(`restore: could not make the query ${keyOf(d)}`);
     }
     done.add(q);
-    q.reset();
-    const qDense = r.array(qd.dense as Record<string, Encoded>, 'query');
-    for (let i = 0; i < qDense.length; i++) q.add(qDense[i]!);
-    q.toRemove.reset();
-    const rem = r.array(qd.toRemove as Record<string, Encoded>, 'query');
-    for (let i = 0; i < rem.length; i++) q.toRemove.add(rem[i]!);
+    setContent(q, r.array(qd.dense as Record<string, Encoded>, 'query') as Int32Array);
+    const rem = r.array(qd.toRemove as Record<string, Encoded>, 'query') as Int32Array;
+    setContent(q.toRemove, rem);
     if (rem.length > 0) ctx.dirtyQueries.add(q);
   }
   for (const q of ctx.queries) {
@@ -366,6 +390,30 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   }
 }
 
+/** Makes `arr` hold `src[0..n)` (JS array written in place, so it stays packed). */
+function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
+  const m = Math.min(arr.length, n);
+  for (let i = 0; i < m; i++) arr[i] = src[i]!;
+  if (arr.length > n) arr.length = n;
+  for (let i = m; i < n; i++) arr.push(src[i]!);
+}
+
+/** Makes a bitecs sparse set hold exactly `ids`, in that order (untouched if it already does). */
+function setContent(set: SparseSetLike, ids: Int32Array): void {
+  const dense = set.dense;
+  if (Array.isArray(dense)) {
+    let same = dense.length === ids.length;
+    for (let i = 0; same && i < ids.length; i++) if (dense[i] !== ids[i]) same = false;
+    if (same) return;
+    writeInPlace(dense, ids, ids.length);
+    const sparse = (set as unknown as { sparse: number[] }).sparse;
+    for (let i = 0; i < ids.length; i++) sparse[ids[i]!] = i;
+    return;
+  }
+  set.reset();
+  for (let i = 0; i < ids.length; i++) set.add(ids[i]!);
+}
+
 function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
   const has = (c: object) => {
     const d = ctx.componentMap.get(c);
@@ -375,6 +423,25 @@ function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
   if (!and.every(has)) return false;
   if (q.notComponents.some(has)) return false;
   return q.orComponents.length === 0 || q.orComponents.some(has);
+}
+
+/** The component stores no live entity has (one pass OR-ing the entities' component masks). */
+function unusedStores(world: PhysicsWorld): Set<object> {
+  const ctx = internals(world);
+  const ix = ctx.entityIndex;
+  const union = new Int32Array(ctx.entityMasks.length);
+  for (let g = 0; g < union.length; g++) {
+    const m = ctx.entityMasks[g]!;
+    let u = 0;
+    for (let i = 0; i < ix.aliveCount; i++) u |= m[ix.dense[i]!] ?? 0;
+    union[g] = u;
+  }
+  const unused = new Set<object>();
+  for (const store of Object.values(world.components)) {
+    const data = ctx.componentMap.get(store as object);
+    if (data !== undefined && (union[data.generationId]! & data.bitflag) === 0) unused.add(store as object);
+  }
+  return unused;
 }
 
 /**
@@ -389,6 +456,7 @@ function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
  */
 export function snapshot(world: PhysicsWorld): WorldSnapshot {
   const w = new Writer();
+  w.unused = unusedStores(world);
   const state = w.object(world as unknown as Record<string, unknown>, 'world', NOT_STATE);
   const external: Record<string, Encoded> = {};
   for (const ext of externalWorldStates()) {

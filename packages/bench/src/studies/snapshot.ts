@@ -1,0 +1,76 @@
+import { createPhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
+import { median } from '../stats.js';
+import { sig } from '../scenes/format.js';
+
+/**
+ * The snapshot study (`--scene snapshot`): what `snapshot(world)` and `restore(world, snapshot)` cost
+ * for a balls-in-box world of `count` bodies after `warmup` steps (contacts, warm-start caches and
+ * sleeping islands in place), as medians over `steps` rounds: snapshot, restore into the same world
+ * (a rewind), restore into a fresh world made with the same options. It checks that both restored
+ * worlds step to the same state as the world the snapshot came from (stateHash after 10 steps).
+ */
+export const snapshotStudy: BenchStudy = {
+  name: 'snapshot',
+  description: 'snapshot(world) and restore(world, snapshot) cost for a balls-in-box world (median ms), and the restored worlds step bit-identically',
+  defaultCount: 100_000,
+  maxCount: 1_000_000,
+  defaults: { steps: 20, warmup: 30 },
+  run(options: StudyRunOptions): StudyResult {
+    const def = SCENES['balls-in-box']!;
+    const sceneOptions = { count: options.count, seed: options.seed };
+    const worldOptions = { ...def.worldOptions(sceneOptions), seed: options.seed };
+    const make = (): PhysicsWorld => createPhysicsWorld(worldOptions);
+    const world = make();
+    def.build(world, sceneOptions);
+    options.onProgress?.(`warm-up: ${options.warmup} steps of ${options.count} bodies`);
+    stepMany(world, options.warmup);
+    const fresh = make();
+    const snapMs: number[] = [], rewindMs: number[] = [], freshMs: number[] = [];
+    let saved = snapshot(world);
+    for (let r = 0; r < options.steps; r++) {
+      let t = performance.now();
+      saved = snapshot(world);
+      snapMs.push(performance.now() - t);
+      t = performance.now();
+      restore(world, saved);
+      rewindMs.push(performance.now() - t);
+      t = performance.now();
+      restore(fresh, saved);
+      freshMs.push(performance.now() - t);
+    }
+    const bytes = saved.buffers.reduce((s, b) => s + b.byteLength, 0);
+    // Baseline in the same run: copying the snapshot's bytes once (one memcpy per buffer, into new buffers).
+    const copyMs: number[] = [];
+    for (let r = 0; r < options.steps; r++) {
+      const t = performance.now();
+      for (const b of saved.buffers) b.slice(0);
+      copyMs.push(performance.now() - t);
+    }
+    const headerBytes = JSON.stringify(saved.header).length;
+    // Bit-identical check: the original, the rewound and the fresh world step 10 steps from the snapshot.
+    const reference = make();
+    restore(reference, saved);
+    stepMany(world, 10);
+    stepMany(fresh, 10);
+    stepMany(reference, 10);
+    const hash = stateHash(world);
+    const identical = stateHash(fresh) === hash && stateHash(reference) === hash;
+    const record = {
+      bodies: options.count, snapshotMs: median(snapMs), restoreMs: median(rewindMs), restoreFreshMs: median(freshMs),
+      copyMs: median(copyMs), bytes, headerBytes, buffers: saved.buffers.length, identical, stateHash: hash,
+    };
+    return {
+      records: [record],
+      header: ['bodies', 'snapshot ms', 'restore ms (same world)', 'restore ms (fresh world)', 'copy of the bytes ms', 'data MB', 'header kB', 'bit-identical after'],
+      rows: [[
+        String(options.count), String(sig(record.snapshotMs)), String(sig(record.restoreMs)), String(sig(record.restoreFreshMs)), String(sig(record.copyMs)),
+        String(sig(bytes / 1e6)), String(sig(headerBytes / 1e3)), identical ? 'yes' : 'NO',
+      ]],
+      notes: [
+        `medians of ${options.steps} rounds after ${options.warmup} warm-up steps; ${saved.buffers.length} buffers; goal: under 5 ms each for 100,000 bodies`,
+        `state after 10 more steps: ${hash} (original, rewound and fresh world ${identical ? 'agree' : 'DIFFER'})`,
+      ],
+    };
+  },
+};
