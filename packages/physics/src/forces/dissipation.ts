@@ -1,14 +1,14 @@
 import type { PhysicsWorld } from '../world.js';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Stiff dissipation: how drag and damping stay stable at every step size.
  *
  * A dissipative law (linear drag, quadratic drag, drag against the wind, buoyancy's fluid drag,
- * angular damping) removes velocity at a rate lambda per step: lambda = k h / m for linear drag
- * F = -k v_rel, lambda = k |v_rel| h / m for quadratic drag F = -k |v_rel| v_rel, lambda = k h / I
- * for angular damping tau = -k w (v_rel = v - u, u the wind; h the (sub)step; m the mass, I the
- * moment of inertia). Applied as a force, an explicit scheme multiplies v_rel by about (1 - lambda)
+ * angular damping, a spring's damping) removes velocity at a rate lambda per step: lambda = k h / m
+ * for linear drag F = -k v_rel, lambda = k |v_rel| h / m for quadratic drag F = -k |v_rel| v_rel,
+ * lambda = k h / I for angular damping tau = -k w, lambda = c h (1/m_a + 1/m_b) for a spring's
+ * damping -c (v_b - v_a) . u along its direction u (v_rel = v - u, u the wind; h the (sub)step; m the
+ * mass, I the moment of inertia). Applied as a force, an explicit scheme multiplies v_rel by about (1 - lambda)
  * each step: past lambda = 1 it reverses the velocity and past lambda = 2 it amplifies it without
  * bound. So each law works in one of two regimes, chosen per body for each (sub)step:
  *
@@ -19,12 +19,15 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  *   RK4 its degree-4 Taylor polynomial of e^-lambda, implicit Euler 1 / (1 + lambda)) lies in (0, 1):
  *   the law slows the body, never reverses or amplifies it.
  * - lambda >= STIFF_RATE: the law adds no force. After the scheme has moved the body, the integrate
- *   stage's `dissipationSystem` applies the law's own exact solution over h to the scheme's end
+ *   stage's stiff update of the law (stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem,
+ *   stiffSpringDampingSystem) applies the law's own exact solution over h to the scheme's end
  *   velocity (Lie splitting; Hairer, Lubich and Wanner, Geometric Numerical Integration, ch. II.5):
  *     linear drag:     v_rel <- v_rel exp(-k h / m)              (m v' = -k v solved exactly),
  *     quadratic drag:  v_rel <- v_rel / (1 + k |v_rel| h / m)     (m v' = -k |v| v solved exactly:
  *                                                                  v(t) = v0 / (1 + k v0 t / m)),
  *     angular damping: w <- w exp(-k h / I), per principal axis in the body frame for an inertia tensor,
+ *     spring damping:  (v_b - v_a) . u <- ((v_b - v_a) . u) exp(-lambda), by equal and opposite impulses
+ *                      along u (the pair's exact solution; momentum kept; springs one after another),
  *   and the body then moves over the step with its damped velocity, x = x(start) + h v, as in Box2D's
  *   velocity integration (damping applied as v / (1 + h c) after the forces, positions from the
  *   damped velocity; Catto, box2d.org, b2IntegrateVelocities/b2IntegratePositions). Both updates
@@ -33,10 +36,14 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  *   accuracy a step this coarse for the drag has anyway; a falling body settles at its terminal
  *   velocity instead of blowing up.
  *
- * Linear drag and angular damping decide from constants (k, m, h), so every evaluation of a step
- * agrees. Quadratic and fluid drag depend on the state: they decide at the first evaluation of each
- * (sub)step, which is at its start state, and keep that decision for the scheme's trial states and
- * for `dissipationSystem` (the `stamp` arrays below).
+ * Linear drag, angular damping and spring damping decide from constants (k, m, h), so every
+ * evaluation of a step agrees. Quadratic and fluid drag depend on the state, and each evaluation
+ * decides from the state it sees (the laws stay pure functions of the state arrays): a body found
+ * stiff at any evaluation of a (sub)step is stamped with the (sub)step's epoch and gets the exact
+ * update after the integrator. If a multi-stage scheme finds it stiff at one stage and not at
+ * another, the stages that applied the force did so at a rate below 1/4 with weights summing to 1,
+ * which multiplies v_rel by a factor in [3/4, 1]; with the exact factor after it the product still
+ * lies in [0, 1].
  */
 export const STIFF_RATE = 0.25;
 
@@ -47,23 +54,21 @@ export interface DissipationState {
   /** The (world.steps, world.substepStart) the epoch belongs to. */
   keyStep: number;
   keyTime: number;
-  /** Epoch at which quadratic drag / fluid drag decided for each entity. */
+  /** Epoch at which quadratic drag / fluid drag last found each entity stiff. */
   readonly quadraticStamp: Float64Array;
   readonly fluidStamp: Float64Array;
-  /** Coefficient (kg/m) of the quadratic / fluid drag applied by `dissipationSystem`, 0 if the law is a force this (sub)step. */
+  /** Coefficient (kg/m) of the quadratic / fluid drag the stiff update applies to a stamped entity. */
   readonly quadraticK: Float64Array;
   readonly fluidK: Float64Array;
-  /** Epoch at which each law last found a stiff body (dissipationSystem skips laws without one). */
+  /** Epoch at which each law last found a stiff body (the stiff updates skip laws without one). */
   linearSeen: number;
   quadraticSeen: number;
   fluidSeen: number;
   angularSeen: number;
+  springSeen: number;
 }
 
 const states = new WeakMap<PhysicsWorld, DissipationState>();
-registerExternalWorldState({
-  name: 'dissipation', get: (world, create) => states.get(world) ?? (create ? dissipationState(world) : undefined), clear: (world) => { states.delete(world); },
-});
 
 /**
  * The world's dissipation state with its epoch advanced if a new (sub)step has begun (keyed on
@@ -77,7 +82,7 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
       epoch: 1, keyStep: world.steps, keyTime: world.substepStart,
       quadraticStamp: new Float64Array(n), fluidStamp: new Float64Array(n),
       quadraticK: new Float64Array(n), fluidK: new Float64Array(n),
-      linearSeen: 0, quadraticSeen: 0, fluidSeen: 0, angularSeen: 0,
+      linearSeen: 0, quadraticSeen: 0, fluidSeen: 0, angularSeen: 0, springSeen: 0,
     };
     states.set(world, s);
     return s;

@@ -58,9 +58,9 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
  * |v - u| falls as v0 / (1 + k v0 t / m). Source: Ramtal and Dobre ch. 7, "Drag"; the drag equation
  * F = rho C_d A v^2 / 2.
  *
- * A force while k |v - u| h / m < STIFF_RATE at the start of the (sub)step; otherwise this law adds
- * nothing for that (sub)step and `stiffDragSystem` applies the exact update
- * v - u <- (v - u) / (1 + k |v - u| h / m) after the integrator (see forces/dissipation.ts).
+ * A force while k |v - u| h / m < STIFF_RATE at the state it is evaluated at; otherwise it adds
+ * nothing there and `stiffDragSystem` applies the exact update v - u <- (v - u) / (1 + k |v - u| h / m)
+ * after the integrator (see forces/dissipation.ts).
  */
 export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   const { QuadraticDrag, Velocity, Force, Position, Mass } = world.components;
@@ -78,12 +78,8 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
     let x = vx[e]!, y = vy[e]!, z = vz[e]!;
     if (!calm) { windAt(world, px[e]!, py[e]!, pz[e]!, t, wind); x -= wind[0]!; y -= wind[1]!; z -= wind[2]!; }
     const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-    if (stamp[e] !== epoch) {
-      // First evaluation of this (sub)step, at its start state: decide the regime for the whole of it.
-      stamp[e] = epoch;
-      if (c * inv[e]! >= limit) { stiffK[e] = k[e]!; st.quadraticSeen = epoch; continue; }
-      stiffK[e] = 0;
-    } else if (stiffK[e] !== 0) continue;
+    // Stiff at this state: no force; stamped for the exact update after the integrator.
+    if (c * inv[e]! >= limit) { stamp[e] = epoch; stiffK[e] = k[e]!; st.quadraticSeen = epoch; continue; }
     fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
   }
 };
@@ -135,7 +131,7 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
     const epoch = st.epoch, stamp = st.quadraticStamp, stiffK = st.quadraticK;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
-      if (stamp[e] !== epoch || stiffK[e] === 0) continue;
+      if (stamp[e] !== epoch) continue;
       if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
       const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = is2D ? 0 : vz[e]! - wind[2]!;
       damp(e, quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h));

@@ -44,8 +44,8 @@ const measure = new Float64Array(2);
  * with `Buoyancy` dips into, and fluid drag F = -f k |v| v scaled by the submerged fraction f (summed
  * over regions, at most 1). Velocity-dependent (the drag).
  *
- * The drag is a force while f k |v| h / m < STIFF_RATE at the start of the (sub)step; otherwise it
- * adds nothing for that (sub)step and `stiffFluidDragSystem` applies the exact quadratic-drag update
+ * The drag is a force while f k |v| h / m < STIFF_RATE at the state it is evaluated at; otherwise it
+ * adds nothing there and `stiffFluidDragSystem` applies the exact quadratic-drag update
  * v <- v / (1 + f k |v| h / m) after the integrator (see forces/dissipation.ts). Buoyancy itself is
  * always a force.
  */
@@ -86,21 +86,19 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
     const k = Bu.dragCoefficient[e]! * (fraction < 1 ? fraction : 1);
     const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
     const s = k * Math.sqrt(ux * ux + uy * uy + uz * uz);
-    if (stamp[e] !== epoch) {
-      // First evaluation of this (sub)step, at its start state: decide the drag's regime for all of it.
-      stamp[e] = epoch;
-      if (k > 0 && s * inv[e]! >= limit) { stiffK[e] = k; st.fluidSeen = epoch; continue; }
-      stiffK[e] = 0;
-    } else if (stiffK[e] !== 0) continue;
-    if (k > 0) { fx[e] = fx[e]! - s * ux; fy[e] = fy[e]! - s * uy; fz[e] = fz[e]! - s * uz; }
+    if (k > 0) {
+      // Stiff at this state: no force; stamped for the exact update after the integrator.
+      if (s * inv[e]! >= limit) { stamp[e] = epoch; stiffK[e] = k; st.fluidSeen = epoch; continue; }
+      fx[e] = fx[e]! - s * ux; fy[e] = fy[e]! - s * uy; fz[e] = fz[e]! - s * uz;
+    }
   }
 };
 
 /**
  * Integrate stage, after the integrator: the stiff regime of buoyancy's fluid drag (see
  * forces/dissipation.ts). A body whose fluid drag added no force this (sub)step has its velocity
- * divided by 1 + k |v| h / m, k the drag coefficient times the submerged fraction decided at the
- * start of the (sub)step, and moves from where the (sub)step began with that velocity: x = x_start + h v.
+ * divided by 1 + k |v| h / m, k the drag coefficient times the submerged fraction where it was
+ * found stiff, and moves from where the (sub)step began with that velocity: x = x_start + h v.
  * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
  */
 export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
@@ -116,7 +114,7 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    if (stamp[e] !== epoch || stiffK[e] === 0) continue;
+    if (stamp[e] !== epoch) continue;
     const x = vx[e]!, y = vy[e]!, z = is2D ? 0 : vz[e]!;
     const f = quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h);
     vx[e] = x * f; vy[e] = y * f;

@@ -5,7 +5,7 @@ import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../for
 import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
 import { centralForceSystem } from '../forces/central.js';
 import { buoyancySystem, stiffFluidDragSystem } from '../forces/fluid.js';
-import { springSystem } from '../forces/spring.js';
+import { springSystem, stiffSpringDampingSystem } from '../forces/spring.js';
 import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
 import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
 import { angularDampingSystem, stiffAngularDampingSystem } from '../forces/angular-damping.js';
@@ -63,7 +63,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
       ballastTrimSystem,
     ],
   },
-  { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, burnFuelSystem, ballastFillSystem] },
+  { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem, burnFuelSystem, ballastFillSystem] },
   { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
@@ -79,7 +79,7 @@ trustFiniteOutput([
   wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, contactSolverSystem, sleepSystem,
   burnFuelSystem, ballastFillSystem, ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
 ]);
-trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem], 'linear');
+trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem], 'linear');
 trustFiniteOutput([shapeCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
 trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
 
