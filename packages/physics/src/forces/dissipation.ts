@@ -1,4 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
+import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Stiff dissipation: how drag and damping stay stable at every step size.
@@ -69,6 +70,9 @@ export interface DissipationState {
 }
 
 const states = new WeakMap<PhysicsWorld, DissipationState>();
+registerExternalWorldState({
+  name: 'dissipation', get: (world, create) => states.get(world) ?? (create ? dissipationState(world) : undefined), clear: (world) => { states.delete(world); },
+});
 
 /**
  * The world's dissipation state with its epoch advanced if a new (sub)step has begun (keyed on
