@@ -8,6 +8,7 @@ import { setGravitation } from '../forces/settings.js';
 import { INTEGRATOR_NAMES, type IntegratorName } from '../integrators/names.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertPositive, describe } from '../validate.js';
 import type { SceneDefinition } from './types.js';
+import { slotOf } from '../handles.js';
 
 /**
  * The solar system of the book's closing project (Ramtal and Dobre ch. 16), started from and checked
@@ -69,7 +70,7 @@ export interface SolarSystemOptions {
 
 /** What `solarSystem.build` returns. */
 export interface SolarSystemHandles {
-  /** Entity of each body by name. */
+  /** Entity handle of each body by name (index stores with `slotOf`). */
   readonly bodies: Readonly<Record<SolarSystemBody, number>>;
   /** Entities in `SOLAR_SYSTEM_BODIES` order. */
   readonly ids: Uint32Array;
@@ -159,10 +160,10 @@ const helio = new Float64Array(3);
  */
 export function solarSystemErrors(world: PhysicsWorld, handles: SolarSystemHandles, out: Float64Array = new Float64Array(SOLAR_SYSTEM_PLANETS.length)): Float64Array {
   const P = world.components.Position;
-  const sun = handles.bodies.Sun;
+  const sun = slotOf(handles.bodies.Sun);
   for (let i = 0; i < SOLAR_SYSTEM_PLANETS.length; i++) {
     const name = SOLAR_SYSTEM_PLANETS[i]!;
-    const e = handles.bodies[name];
+    const e = slotOf(handles.bodies[name]);
     ephemerisHeliocentric(name, handles.epoch, world.time, helio);
     const dx = P.x[e]! - P.x[sun]! - helio[0]!, dy = P.y[e]! - P.y[sun]! - helio[1]!, dz = P.z[e]! - P.z[sun]! - helio[2]!;
     out[i] = Math.hypot(dx, dy, dz) / Math.hypot(helio[0]!, helio[1]!, helio[2]!);
