@@ -393,7 +393,7 @@ export function finishManifolds(world: PhysicsWorld): void {
     if (touching === 0) continue;
     const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
     if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
-    const k = pushEvent(ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
+    const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
     ev.begin.px[k] = buf.px[2 * i]!; ev.begin.py[k] = buf.py[2 * i]!;
     ev.begin.nx[k] = buf.nx[i]!; ev.begin.ny[k] = buf.ny[i]!;
     let approach = 0;
@@ -407,6 +407,6 @@ export function finishManifolds(world: PhysicsWorld): void {
     if (old.touching[i] !== 1) continue;
     const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);
     if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
-    pushEvent(ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
+    pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
   }
 }

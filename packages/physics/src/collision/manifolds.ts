@@ -1,3 +1,6 @@
+import type { PhysicsWorld } from '../world.js';
+import { currentHandle } from '../handles.js';
+
 /**
  * Storage of shape contacts (2D): one row per manifold (a touching pair of shapes, up to two points),
  * structure of arrays grown by doubling, kept in `world.collision.shapes`. Like the ball contacts of
@@ -122,7 +125,8 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
 
 /**
  * Contact and sensor events of the last step, read after `step` (no callbacks run inside the solver).
- * Each list holds `count` entries in parallel arrays; entity values are slots (index stores with them).
+ * Each list holds `count` entries in parallel arrays; entity values are handles (as the API hands out;
+ * index stores with `slotOf`), 0 for the static world and -1 - face for a boundary face.
  * - begin: a pair of shapes started touching (a manifold point carried a normal impulse or overlapped),
  *   with the first point (m), the normal from A to B, and the approach speed along it at the start of
  *   the step (m/s, >= 0);
@@ -139,10 +143,10 @@ export interface ContactEvents {
 /** One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1. */
 export interface EventList {
   count: number;
-  shapeA: Int32Array;
-  shapeB: Int32Array;
-  bodyA: Int32Array;
-  bodyB: Int32Array;
+  shapeA: Float64Array;
+  shapeB: Float64Array;
+  bodyA: Float64Array;
+  bodyB: Float64Array;
   /** Point, normal (A to B) and approach speed (m/s); filled for `begin` only. */
   px: Float64Array;
   py: Float64Array;
@@ -151,18 +155,25 @@ export interface EventList {
   approachSpeed: Float64Array;
 }
 
+function handle(world: PhysicsWorld, e: number): number {
+  return e > 0 ? currentHandle(world, e) : e;
+}
+
 function createEventList(n = 16): EventList {
   return {
-    count: 0, shapeA: new Int32Array(n), shapeB: new Int32Array(n), bodyA: new Int32Array(n), bodyB: new Int32Array(n),
+    count: 0, shapeA: new Float64Array(n), shapeB: new Float64Array(n), bodyA: new Float64Array(n), bodyB: new Float64Array(n),
     px: new Float64Array(n), py: new Float64Array(n), nx: new Float64Array(n), ny: new Float64Array(n), approachSpeed: new Float64Array(n),
   };
 }
 
-/** Appends an event; returns its row. */
-export function pushEvent(list: EventList, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+/**
+ * Appends an event (entities as slots; stored as the handles of the lives they are in now, see
+ * `currentHandle`; 0 and a boundary face's negative id stay as they are); returns its row.
+ */
+export function pushEvent(world: PhysicsWorld, list: EventList, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
   const i = list.count;
   if (i >= list.shapeA.length) {
-    const rec = list as unknown as Record<string, Float64Array | Int32Array>;
+    const rec = list as unknown as Record<string, Float64Array>;
     for (const k of ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'px', 'py', 'nx', 'ny', 'approachSpeed']) {
       const old = rec[k]!;
       const next = new (old.constructor as new (m: number) => typeof old)(old.length * 2);
@@ -170,7 +181,7 @@ export function pushEvent(list: EventList, shapeA: number, shapeB: number, bodyA
       rec[k] = next;
     }
   }
-  list.shapeA[i] = shapeA; list.shapeB[i] = shapeB; list.bodyA[i] = bodyA; list.bodyB[i] = bodyB;
+  list.shapeA[i] = handle(world, shapeA); list.shapeB[i] = handle(world, shapeB); list.bodyA[i] = handle(world, bodyA); list.bodyB[i] = handle(world, bodyB);
   list.px[i] = 0; list.py[i] = 0; list.nx[i] = 0; list.ny[i] = 0; list.approachSpeed[i] = 0;
   list.count = i + 1;
   return i;

@@ -358,12 +358,12 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   for (const key of sensorNow) {
     if (prev.has(key)) continue;
     const a = Math.floor(key / 33554432), b = key - a * 33554432;
-    pushEvent(ev.sensorBegin, a, b, S.body[a]!, sensorBody(world, b));
+    pushEvent(world, ev.sensorBegin, a, b, S.body[a]!, sensorBody(world, b));
   }
   for (const key of prev) {
     if (sensorNow.has(key)) continue;
     const a = Math.floor(key / 33554432), b = key - a * 33554432;
-    pushEvent(ev.sensorEnd, a, b, S.body[a]!, sensorBody(world, b));
+    pushEvent(world, ev.sensorEnd, a, b, S.body[a]!, sensorBody(world, b));
   }
   st.sensorPairs = sensorNow;
   st.sensorNow = prev;
