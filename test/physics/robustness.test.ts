@@ -265,6 +265,22 @@ describe('a non-finite state stops the step at the end of the stage that wrote i
     expect((caught as NonFiniteStateError).stage).toBe('integrate');
   });
 
+  test('the error names the body by its handle, also when its slot was used before', () => {
+    for (const integrator of INTEGRATOR_NAMES) {
+      const world = createPhysicsWorld({ gravity: [0, 0], integrator });
+      removeBody(world, addBody(world, { mass: 1 }));
+      const b = addBody(world, { mass: 1 });
+      expect(b).not.toBe(slotOf(b));
+      // Written straight into the store between steps: the integrator's own check finds it.
+      world.components.Velocity.x[slotOf(b)] = NaN;
+      let caught: unknown;
+      try { step(world); } catch (e) { caught = e; }
+      expect(caught, integrator).toBeInstanceOf(NonFiniteStateError);
+      expect((caught as NonFiniteStateError).entity, integrator).toBe(b);
+      expect((caught as NonFiniteStateError).field, integrator).toBe('Velocity.x');
+    }
+  });
+
   test('a finite state whose sum would overflow is not a false alarm', () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
     for (let i = 0; i < 4; i++) addBody(world, { position: [1e308, -1e308], velocity: [0, 0], mass: 1 });

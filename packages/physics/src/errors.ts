@@ -1,4 +1,5 @@
 import type { PhysicsWorld } from './world.js';
+import { currentHandle } from './handles.js';
 
 /**
  * Thrown by `step` when a body's state becomes NaN or infinite. It is a RangeError so callers that
@@ -6,7 +7,7 @@ import type { PhysicsWorld } from './world.js';
  * the collision solver or any other body. `entity`, `field` and `stage` say where.
  */
 export class NonFiniteStateError extends RangeError {
-  /** The entity whose state is not finite. */
+  /** The entity whose state is not finite: its handle (see handles.ts; equal to its slot on the slot's first life). */
   readonly entity: number;
   /** The field, e.g. 'Velocity.y'. */
   readonly field: string;
@@ -25,8 +26,8 @@ export class NonFiniteStateError extends RangeError {
 }
 
 /**
- * Finds the first entity of `ents` with a non-finite position, velocity, force or inverse mass and
- * throws a NonFiniteStateError naming it. Called by systems whose cheap running check (a sum that
+ * Finds the first entity of `ents` (slots) with a non-finite position, velocity or angular velocity
+ * and throws a NonFiniteStateError naming it by its handle. Called by systems whose cheap running check (a sum that
  * turned NaN) failed; returns quietly if nothing is non-finite (the sum overflowed on huge but
  * finite values).
  */
@@ -47,7 +48,7 @@ export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, st
         const detail =
           `Its inputs: previous position (${f(c.PreviousPosition.x)}, ${f(c.PreviousPosition.y)}, ${f(c.PreviousPosition.z)}), ` +
           `force (${f(c.Force.x)}, ${f(c.Force.y)}, ${f(c.Force.z)}) N, inverse mass ${f(c.Mass.inv)} 1/kg.`;
-        throw new NonFiniteStateError(e, name, v, stage, detail);
+        throw new NonFiniteStateError(currentHandle(world, e), name, v, stage, detail);
       }
     }
   }

@@ -106,6 +106,8 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
       return true;
     }
     lastResidual = residual;
+    // A NaN or infinite residual from a non-finite state (not a hard Newton step): name it, as every scheme does.
+    if (!(residual < Infinity)) checkFinite(world, s);
     if (it === MAX_NEWTON || !(residual < Infinity)) break;
     solveBiCGStab(world, s, h, t, W, n);
     for (let i = 0; i < n; i++) u[i] = u[i]! + d[i]!;
