@@ -28,11 +28,13 @@ import { createGeometry, type ConvexGeometry } from '../shapes/geometry.js';
 export interface Manifold {
   /** Points in use, 0 to 2. */
   count: number;
-  /** Unit normal from A to B, world frame. */
+  /** Unit normal from A to B, world frame: x. */
   nx: number;
+  /** Unit normal from A to B: y. */
   ny: number;
-  /** Contact points (world frame, m), midway between the surfaces. */
+  /** Contact points' x (world frame, m), midway between the surfaces. */
   readonly px: Float64Array;
+  /** Contact points' y, m. */
   readonly py: Float64Array;
   /** Separation of each point along the normal, m (< 0: overlap). */
   readonly separation: Float64Array;

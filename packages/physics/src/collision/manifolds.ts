@@ -17,63 +17,81 @@ export interface ManifoldBuffer {
   count: number;
   /** Rows allocated. */
   capacity: number;
-  /** Shape entities of A and B (see the module comment for A's special values). */
+  /** Shape entity of A (see the module comment for its special values). */
   shapeA: Int32Array;
+  /** Shape entity of B. */
   shapeB: Int32Array;
-  /** Body entities of A (0: the static world) and B. */
+  /** Body entity of A (0: the static world). */
   bodyA: Int32Array;
+  /** Body entity of B (always an entity). */
   bodyB: Int32Array;
-  /** Solver-body indices of A and B this step (0: the static world); set by the solver. */
+  /** Solver-body index of A this step (0: the static world); set by the solver. */
   ia: Int32Array;
+  /** Solver-body index of B this step; set by the solver. */
   ib: Int32Array;
   /** Points in use, 1 or 2. */
   pointCount: Uint8Array;
-  /** Unit normal from A to B. */
+  /** Unit normal from A to B, x. */
   nx: Float64Array;
+  /** Unit normal from A to B, y (`nx` its x). */
   ny: Float64Array;
-  /** Combined kinetic friction sqrt(mu_A mu_B), the bound used this step (static while sticking), restitution max(e_A, e_B). */
+  /** Combined kinetic friction coefficient sqrt(mu_A mu_B). */
   friction: Float64Array;
+  /** Friction bound used this step: the static coefficient while the contact sticks, else `friction`. */
   frictionBound: Float64Array;
+  /** Combined restitution max(e_A, e_B). */
   restitution: Float64Array;
   /** Rolling resistance torque per unit normal impulse, m (coefficient times the rolling radius); 0 for none. */
   rolling: Float64Array;
-  /** Effective rotational mass of the rolling constraint, kg m^2, and its accumulated angular impulse, N m s. */
+  /** Effective rotational mass of the rolling constraint, kg m^2. */
   rollingMass: Float64Array;
+  /** Accumulated angular impulse of the rolling constraint, N m s. */
   rollingImpulse: Float64Array;
   /**
    * Inverse of the 2 x 2 normal effective-mass matrix of a two-point manifold (rows 11, 12, 22, 1/kg),
    * for the block solve; `blockValid` 0 when the points are too close to independent (the matrix is
-   * ill-conditioned) and are solved one after the other instead.
+   * ill-conditioned) and are solved one after the other instead. This field: the first diagonal entry.
    */
   block11: Float64Array;
+  /** Off-diagonal entry of the inverse block matrix, 1/kg. */
   block12: Float64Array;
+  /** Second diagonal entry of the inverse block matrix, 1/kg. */
   block22: Float64Array;
+  /** 1 if the block solve may be used for the row. */
   blockValid: Uint8Array;
   /** 1 if the pair touched at the end of the step (a point carried a normal impulse, or overlapped). */
   touching: Uint8Array;
-  /** Spawn stamps of the two shape entities, to validate the warm start. */
+  /** Spawn stamp of shape A when the row was made (0 for the static world), to validate the warm start. */
   stampA: Uint32Array;
+  /** Spawn stamp of shape B when the row was made. */
   stampB: Uint32Array;
   /** Per point (row i, point k at index 2 i + k): feature id. */
   id: Int32Array;
-  /** Per point: contact point at the start of the step, world frame, m. */
+  /** Per point: contact point at the start of the step, world frame, x, m. */
   px: Float64Array;
+  /** Per point: contact point y, m (`px` its x). */
   py: Float64Array;
-  /** Per point: anchors from the centres of mass of A and B to the point at the start of the step, m. */
+  /** Per point: anchor from A's centre of mass to the point at the start of the step, x, m. */
   rAx: Float64Array;
+  /** Per point: anchor from A's centre of mass to the point, y, m. */
   rAy: Float64Array;
+  /** Per point: anchor from B's centre of mass to the point, x, m. */
   rBx: Float64Array;
+  /** Per point: anchor from B's centre of mass to the point, y, m. */
   rBy: Float64Array;
   /** Per point: separation at the start of the step, m (< 0: overlap). */
   separation: Float64Array;
-  /** Per point: effective masses along the normal and the tangent, kg. */
+  /** Per point: effective mass along the normal, kg. */
   normalMass: Float64Array;
+  /** Per point: effective mass along the tangent, kg. */
   tangentMass: Float64Array;
-  /** Per point: accumulated normal and tangent impulses, N s (warm-started from the previous step). */
+  /** Per point: accumulated normal impulse of a substep, N s (warm-started from the previous step). */
   normalImpulse: Float64Array;
+  /** Per point: accumulated tangent (friction) impulse, N s. */
   tangentImpulse: Float64Array;
-  /** Per point: largest normal impulse of any substep this step (restitution applies only if > 0), and the sum over substeps, N s. */
+  /** Per point: largest normal impulse increment of any substep this step, N s (restitution applies only if > 0). */
   maxNormalImpulse: Float64Array;
+  /** Per point: normal impulse summed over the step's substeps, N s. */
   totalNormalImpulse: Float64Array;
   /** Per point: normal relative velocity at the start of the step, m/s (negative: approaching). */
   relativeVelocity: Float64Array;
@@ -134,24 +152,37 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
  * - sensorBegin / sensorEnd: a shape started or stopped overlapping a sensor shape (`shapeA` the sensor).
  */
 export interface ContactEvents {
+  /** Pairs that started touching. */
   begin: EventList;
+  /** Pairs that stopped touching. */
   end: EventList;
+  /** Shapes that started overlapping a sensor. */
   sensorBegin: EventList;
+  /** Shapes that stopped overlapping a sensor. */
   sensorEnd: EventList;
 }
 
 /** One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1. */
 export interface EventList {
+  /** Events in the list (rows 0..count-1). */
   count: number;
+  /** Shape A (the sensor, for sensor events). */
   shapeA: Float64Array;
+  /** Shape B. */
   shapeB: Float64Array;
+  /** Body of shape A (0: the static world). */
   bodyA: Float64Array;
+  /** Body of shape B. */
   bodyB: Float64Array;
-  /** Point, normal (A to B) and approach speed (m/s); filled for `begin` only. */
+  /** Contact point x, m (`begin` only). */
   px: Float64Array;
+  /** Contact point y, m (`begin` only). */
   py: Float64Array;
+  /** Normal from A to B, x (`begin` only). */
   nx: Float64Array;
+  /** Normal from A to B, y (`begin` only). */
   ny: Float64Array;
+  /** Approach speed along the normal at the start of the step, m/s, >= 0 (`begin` only). */
   approachSpeed: Float64Array;
 }
 
@@ -245,15 +276,17 @@ export interface ShapeCollisionState {
   readonly events: ContactEvents;
   /** Broadphase scratch. */
   readonly scratch: ShapeScratch;
-  /** Soft-constraint coefficients of this step's shape contacts (bias rate 1/s, mass scale, impulse scale), against a dynamic and an infinite-mass partner; see manifold-solver.ts. */
+  /** Soft-constraint coefficients of this step's shape contacts between dynamic bodies (bias rate 1/s, mass scale, impulse scale); see manifold-solver.ts. */
   readonly softness: Float64Array;
+  /** The same coefficients against an infinite-mass partner (twice the stiffness). */
   readonly rigidSoftness: Float64Array;
   /** Per solver body: the rotation still owed at the start of the solve (its rotation within the step is measured from it). */
   angleBase: Float64Array;
   /** Per entity (capacity + 1), allocated with the first shape: the body's first extra shape entity (0 none). */
   firstShape: Int32Array;
-  /** Per entity: where the body's reference point (its position when created) lies from its centre of mass, body frame, m. */
+  /** Per entity: where the body's reference point (its position when created) lies from its centre of mass, body frame, x, m. */
   originX: Float64Array;
+  /** Per entity: the reference point's offset from the centre of mass, y, m (`originX` its x). */
   originY: Float64Array;
   /** Sleeping balls touched by moving shapes this step (woken after the step's collisions). */
   wake: number[];
@@ -263,15 +296,17 @@ export interface ShapeCollisionState {
   sensorNow: Set<number>;
   /** The step whose events the lists hold (events of a step's substeps accumulate). */
   eventStep: number;
-  /** Per entity: stamp of the step in which the body was classified; the counter. */
+  /** Per entity: stamp of the step in which the body was classified. */
   bodyMarks: Uint32Array;
+  /** The step counter of `bodyMarks`. */
   bodyMark: number;
   /** Whether any collider moves this step (else the broadphase has nothing to pair). */
   anyMoving: boolean;
   /** Scratch list of the bodies that may sleep (shape-islands.ts). */
   sleepList: Uint32Array;
-  /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s, and its angle at the start of the step, rad. */
+  /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s. */
   bodyW: Float64Array;
+  /** Per entity: the body's angle at the start of the step, rad. */
   bodyAngle0: Float64Array;
 }
 

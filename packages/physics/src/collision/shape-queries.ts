@@ -27,10 +27,13 @@ export interface RayHit {
   body: number;
   /** Where along the ray, in [0, 1] of the translation. */
   fraction: number;
-  /** The point hit, m, and the surface's outward unit normal there. */
+  /** The point hit, x, m. */
   x: number;
+  /** The point hit, y, m. */
   y: number;
+  /** The surface's outward unit normal there, x. */
   nx: number;
+  /** The surface's outward unit normal there, y. */
   ny: number;
 }
 

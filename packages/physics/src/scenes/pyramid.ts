@@ -22,8 +22,9 @@ export interface PyramidLayout {
   half: number;
   /** Horizontal distance between box centres in a row, m. */
   pitch: number;
-  /** Friction coefficient and restitution of boxes and ground. */
+  /** Friction coefficient of boxes and ground. */
   friction: number;
+  /** Restitution of boxes and ground. */
   restitution: number;
   /** Areal density of the boxes, kg/m^2 (1 kg boxes). */
   density: number;
@@ -67,6 +68,7 @@ export interface PyramidHandles {
   boxes: Uint32Array;
   /** The ground's entity slot. */
   ground: number;
+  /** The layout built. */
   layout: PyramidLayout;
 }
 

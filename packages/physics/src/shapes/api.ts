@@ -28,8 +28,9 @@ export interface ShapeOptions {
   halfExtents?: ArrayLike<number>;
   /** Polygon vertices, 3 to 8 points [x, y] (m), convex, either winding. */
   vertices?: ArrayLike<ArrayLike<number>>;
-  /** Capsule end-cap centres, m. */
+  /** Capsule: first end-cap centre, m. */
   center1?: ArrayLike<number>;
+  /** Capsule: second end-cap centre, m (must differ from center1). */
   center2?: ArrayLike<number>;
   /** Placement in the body frame: the shape's origin from the body's reference point (its position when created), m. Default (0, 0). */
   offset?: ArrayLike<number>;
@@ -298,12 +299,19 @@ export interface BoxOptions extends Omit<BodyOptions, 'radius' | 'mass' | 'densi
   radius?: number;
   /** Areal density, kg/m^2, >= 0. Default 1. */
   density?: number;
+  /** Kinetic friction coefficient, >= 0. Default 0.6. */
   friction?: number;
+  /** Static friction coefficient, >= 0. Default equal to `friction`. */
   staticFriction?: number;
+  /** Restitution in [0, 1]. Default 0. */
   restitution?: number;
+  /** Category bits (see ShapeOptions.category). Default 1. */
   category?: number;
+  /** Mask bits (see ShapeOptions.mask). Default all. */
   mask?: number;
+  /** Group (see ShapeOptions.group). Default 0. */
   group?: number;
+  /** A sensor box: reports overlaps, pushes nothing. Default false. */
   sensor?: boolean;
 }
 

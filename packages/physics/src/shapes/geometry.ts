@@ -24,12 +24,19 @@ export const MAX_POLYGON_VERTICES = 8;
  * (none meaningful for a circle), and the rounding radius.
  */
 export interface ConvexGeometry {
+  /** ShapeKind: 0 circle, 1 capsule, 2 polygon. */
   kind: number;
+  /** Vertices in use, 1 to 8. */
   count: number;
+  /** Rounding radius, m (>= 0; > 0 for circles and capsules). */
   radius: number;
+  /** Vertex x coordinates, m (8 slots). */
   vx: Float64Array;
+  /** Vertex y coordinates, m (8 slots). */
   vy: Float64Array;
+  /** Outward unit normal x of edge i (vertex i to i + 1). */
   nx: Float64Array;
+  /** Outward unit normal y of edge i. */
   ny: Float64Array;
 }
 

@@ -26,8 +26,9 @@ import type { ConvexGeometry } from './geometry.js';
 export interface MassProperties {
   /** Mass, kg. */
   mass: number;
-  /** Centroid in the shape's frame, m. */
+  /** Centroid x in the shape's frame, m. */
   cx: number;
+  /** Centroid y in the shape's frame, m. */
   cy: number;
   /** Moment of inertia about the centroid, kg m^2. */
   inertia: number;

@@ -17,12 +17,15 @@ export interface ShapeStore {
    * the shape's offset and angle are already applied. Counter-clockwise.
    */
   vx: Float64Array;
+  /** Vertex y coordinates, m, at 8 e + i (see `vx`). */
   vy: Float64Array;
-  /** Outward unit normal of edge i (vertex i to i + 1), body frame, at 8 e + i. */
+  /** Outward unit normal x of edge i (vertex i to i + 1), body frame, at 8 e + i. */
   nx: Float64Array;
+  /** Outward unit normal y of edge i, at 8 e + i. */
   ny: Float64Array;
-  /** Collision filter: the category bits the shape is in, and the mask of categories it collides with (32 bits each). */
+  /** Collision filter: the category bits the shape is in (32 bits). Default 1. */
   category: Uint32Array;
+  /** Collision filter: the mask of categories it collides with (32 bits). Default all. */
   mask: Uint32Array;
   /** Group: two shapes of the same non-zero group always collide if it is > 0 and never if it is < 0 (overrides the bits). */
   group: Int32Array;
