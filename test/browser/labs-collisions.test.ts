@@ -1,0 +1,119 @@
+/**
+ * The collision labs (lab-newtons-cradle, lab-molecules) in headless Chromium: each loads without
+ * errors, draws, lists its controls; its physics keeps what it should (the cradle sends one ball out
+ * and keeps its energy; the gas keeps its kinetic energy); and an input changes it as read through
+ * window.game (a drag lifts a ball; a click heats the gas).
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+
+interface Cam { toScreenX(x: number): number; toScreenY(y: number): number }
+interface LabWindow {
+  paused: boolean;
+  reset(): void;
+  advance(n: number): void;
+  renderer: { camera: Cam };
+  world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+}
+
+let h: Harness;
+beforeAll(async () => { h = await Harness.start(); }, START_TIMEOUT_MS);
+afterAll(async () => { await h?.close(); });
+
+/** Opens a lab, checks the common furniture, pauses it on a fresh world. */
+async function open(folder: string, keys: string[]): Promise<GamePage> {
+  const g = await h.openGame(folder, {});
+  expect(await g.canvasColors()).toBeGreaterThan(8);
+  const legend = await g.page.locator('.bp-legend').innerText();
+  for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
+  expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
+  await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.paused = true; w.reset(); });
+  expect(g.errors).toEqual([]);
+  return g;
+}
+
+/** Screen point of world point (x, y) on the lab's canvas. */
+function screen(g: GamePage, x: number, y: number): Promise<{ x: number; y: number }> {
+  return g.page.evaluate(([x, y]) => {
+    const cam = (window.game as unknown as LabWindow).renderer.camera;
+    const box = document.querySelector('canvas')!.getBoundingClientRect();
+    return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+  }, [x, y] as const);
+}
+
+describe('lab-newtons-cradle', () => {
+  let g: GamePage;
+  beforeAll(async () => { g = await open('lab-newtons-cradle', ['Drag']); });
+  afterAll(async () => { await g?.close(); });
+
+  /**
+   * One ball lifted by 30 degrees on 1 m strings: after the impacts the last ball swings out to
+   * about 30 degrees (it gets the first ball's whole speed, v = sqrt(2 g L (1 - cos 30)) = 1.62 m/s)
+   * and the others stay within 2 degrees; energy within 1 % (e = 1, stiff strings).
+   */
+  it('sends the last ball out as high as the first was lifted and keeps the energy', async () => {
+    const m = await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow & { balls(): number[]; measure: { energy: number; energy0: number } };
+      const P = w.world.components.Position;
+      const balls = w.balls().map((b) => b % 2 ** 25);
+      const x0 = balls.map((s) => P.x[s]!);
+      const most = balls.map(() => 0);
+      for (let i = 0; i < 90; i++) {
+        w.advance(1);
+        balls.forEach((s, k) => { most[k] = Math.max(most[k]!, P.x[s]! - x0[k]!); });
+      }
+      return { most, ratio: w.measure.energy / w.measure.energy0 };
+    });
+    const last = m.most[m.most.length - 1]!;
+    expect(Math.asin(last) * 180 / Math.PI).toBeGreaterThan(28);
+    for (let k = 1; k < m.most.length - 1; k++) expect(m.most[k]!).toBeLessThan(Math.sin(2 * Math.PI / 180));
+    expect(Math.abs(m.ratio - 1)).toBeLessThan(0.01);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('dragging a ball with the mouse lifts it', async () => {
+    await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.reset(); });
+    const start = await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow & { balls(): number[] };
+      const s = w.balls()[1]! % 2 ** 25;
+      return { s, x: w.world.components.Position.x[s]!, y: w.world.components.Position.y[s]! };
+    });
+    const from = await screen(g, start.x, start.y);
+    const to = await screen(g, start.x - 0.5, start.y + 0.3);
+    await g.page.mouse.move(from.x, from.y);
+    await g.page.mouse.down();
+    await g.page.mouse.move(to.x, to.y, { steps: 6 });
+    const lifted = await g.page.evaluate((s) => (window.game as unknown as LabWindow).world.components.Position.x[s]!, start.s);
+    await g.page.mouse.up();
+    expect(lifted).toBeLessThan(start.x - 0.2);
+    expect(g.errors).toEqual([]);
+  });
+});
+
+describe('lab-molecules', () => {
+  let g: GamePage;
+  beforeAll(async () => { g = await open('lab-molecules', ['Click']); });
+  afterAll(async () => { await g?.close(); });
+
+  /** Perfectly elastic discs: kinetic energy constant within 1 % over 600 steps (10 s). */
+  it('keeps the kinetic energy of the gas', async () => {
+    const ratio = await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow & { gas: { energyRatio: number } };
+      w.advance(600);
+      return w.gas.energyRatio;
+    });
+    expect(Math.abs(ratio - 1)).toBeLessThan(0.01);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('a click in the box heats the gas', async () => {
+    await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.reset(); });
+    const before = await g.page.evaluate(() => (window.game as unknown as { gas: { kT: number } }).gas.kT);
+    const box = await g.page.evaluate(() => (window.game as unknown as { box(): { width: number; height: number } }).box());
+    const at = await screen(g, box.width / 2, box.height / 2);
+    await g.page.mouse.click(at.x, at.y);
+    const after = await g.page.evaluate(() => (window.game as unknown as { gas: { kT: number } }).gas.kT);
+    expect(after).toBeGreaterThan(before * 1.02);
+    expect(g.errors).toEqual([]);
+  });
+});
