@@ -66,12 +66,14 @@ describe('lab-rigid-bodies', () => {
       const slot = (hh: number) => hh % 33554432;
       const c = game.world.components;
       let tipAt = -1, slideAt = -1;
-      const s0 = c.Position.x[slot(ids.wide!)]!;
+      // Distance of the wide box along the board from its pivot (2, 1.5), the scene's BOARD constant.
+      const along = (a: number) => (c.Position.x[slot(ids.wide!)]! - 2) * Math.cos(a) + (c.Position.y[slot(ids.wide!)]! - 1.5) * Math.sin(a);
+      const s0 = along(0);
       for (let i = 0; i < 600; i++) {
         game.advance(1);
         const a = c.Angle.value[slot(ids.board!)]!;
         if (tipAt < 0 && Math.abs(c.Angle.value[slot(ids.tall!)]! - a) > 0.5) tipAt = a;
-        if (slideAt < 0 && c.Position.x[slot(ids.wide!)]! < s0 - 0.5) slideAt = a;
+        if (slideAt < 0 && along(a) < s0 - 0.5) slideAt = a;
       }
       return { tipAt, slideAt };
     });
