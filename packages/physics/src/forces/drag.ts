@@ -68,21 +68,36 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (ents.length === 0) return;
   const k = QuadraticDrag.k, inv = Mass.inv, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
   const fx = Force.x, fy = Force.y, fz = Force.z;
-  const calm = calmAir(world);
-  const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
-  const st = dissipationState(world);
-  const epoch = st.epoch, stamp = st.quadraticStamp, stiffK = st.quadraticK;
   const limit = STIFF_RATE / world.h;
+  if (calmAir(world)) {
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+      const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
+      // Stiff at this state: no force; stamped for the exact update after the integrator.
+      if (c * inv[e]! >= limit) { markStiffQuadratic(world, e, k[e]!); continue; }
+      fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+    }
+    return;
+  }
+  const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    let x = vx[e]!, y = vy[e]!, z = vz[e]!;
-    if (!calm) { windAt(world, px[e]!, py[e]!, pz[e]!, t, wind); x -= wind[0]!; y -= wind[1]!; z -= wind[2]!; }
+    windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+    const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = vz[e]! - wind[2]!;
     const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-    // Stiff at this state: no force; stamped for the exact update after the integrator.
-    if (c * inv[e]! >= limit) { stamp[e] = epoch; stiffK[e] = k[e]!; st.quadraticSeen = epoch; continue; }
+    if (c * inv[e]! >= limit) { markStiffQuadratic(world, e, k[e]!); continue; }
     fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
   }
 };
+
+/** Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law). */
+function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): void {
+  const st = dissipationState(world);
+  st.quadraticStamp[e] = st.epoch;
+  st.quadraticK[e] = k;
+  st.quadraticSeen = st.epoch;
+}
 
 /**
  * Integrate stage, after the integrator: the stiff regime of linear and quadratic drag (see
