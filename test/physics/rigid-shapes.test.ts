@@ -276,3 +276,32 @@ describe('queries', () => {
     expect(() => rayCast(world, [0, 0], [0, 0])).toThrow('rayCast: translation must not be zero, got [0,0]');
   });
 });
+
+describe('shapes against static geometry', () => {
+  it('a box rests on a plane, a capsule on a segment, a ball on a box, a triangle on the boundary box floor', async () => {
+    const { addPlane, addSegment, setBoundary } = await import('../../packages/physics/src/index.js');
+    // Resting heights from the geometry; 5 mm covers the soft contacts' sink under their own weight.
+    const settle = (world: PhysicsWorld): Float64Array => { for (let i = 0; i < 120; i++) step(world); return world.components.Position.y; };
+    let world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
+    addPlane(world, { normal: [0, 1], point: [0, 0] });
+    const box = slotOf(addBox(world, { position: [0, 0.6], halfExtents: [0.5, 0.5] }));
+    expect(Math.abs(settle(world)[box]! - 0.5)).toBeLessThan(5e-3);
+
+    world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
+    addSegment(world, { a: [10, 2], b: [14, 2], radius: 0.05 });
+    const cap = slotOf(addBody(world, { position: [12, 2.4] }));
+    addShape(world, cap, { type: 'capsule', center1: [-0.5, 0], center2: [0.5, 0], radius: 0.25 });
+    addBox(world, { position: [5, 1], halfExtents: [1, 0.25], static: true });
+    const ball = slotOf(addBody(world, { position: [5, 2], radius: 0.3 }));
+    const y = settle(world);
+    expect(Math.abs(y[cap]! - (2 + 0.05 + 0.25))).toBeLessThan(5e-3);
+    expect(Math.abs(y[ball]! - (1 + 0.25 + 0.3))).toBeLessThan(5e-3);
+
+    world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
+    setBoundary(world, { min: [20, -1], max: [30, 10] });
+    const tri = slotOf(addBody(world, { position: [25, 0] }));
+    addShape(world, tri, { type: 'polygon', vertices: [[-0.5, -0.3], [0.5, -0.3], [0, 0.6]] });
+    // Its centroid is 0.3 m above its base.
+    expect(Math.abs(settle(world)[tri]! - (-1 + 0.3))).toBeLessThan(5e-3);
+  });
+});
