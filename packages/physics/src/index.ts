@@ -2,7 +2,8 @@
  * @bitphysics/physics: components, systems, the staged step, collisions, diagnostics and scenes.
  * Everything is SI (m, kg, s, rad, N), y up, angles counter-clockwise.
  */
-export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
+export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, disposeWorld, threadsReady, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
+export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
 export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
 export type { Components, Vec3Store } from './components.js';

@@ -10,6 +10,8 @@ import { wakeTouching } from './collision/sleep.js';
 import { createJointState, type JointState } from './joints/state.js';
 import { removeJointsOf } from './joints/remove.js';
 import { createClothState, type ClothState } from './cloth/state.js';
+import { createThreadPool, type ThreadPool } from './threads/pool.js';
+import { shareStore, shareStores } from './threads/shared-stores.js';
 import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
@@ -70,11 +72,22 @@ export interface PhysicsWorldOptions {
    * collision/sleep.ts). Default true.
    */
   sleep?: boolean;
+  /**
+   * Threads that share the heavy loops (integration, per-body force laws), integer in [1, 64]: the
+   * calling thread and threads - 1 workers (Node worker_threads or browser Workers) on component
+   * stores allocated on SharedArrayBuffer. Results are identical to the bit to one thread's. Default
+   * 1 (no workers, no SharedArrayBuffer). A world with threads > 1 should be ended with
+   * `disposeWorld` (its workers never keep Node alive, but they hold memory until disposed). Loops
+   * shorter than MIN_PARALLEL_PER_THREAD entities a thread run on the calling thread alone. In a
+   * browser the page must be cross-origin isolated, and the loops run on one thread until the
+   * workers have started (`threadsReady`).
+   */
+  threads?: number;
 }
 
 const KNOWN_OPTIONS = [
   'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
-  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation', 'sleep',
+  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation', 'sleep', 'threads',
 ] as const;
 
 /** The largest capacity a world accepts (2^24 entities). */
@@ -131,6 +144,10 @@ export interface PhysicsWorldContext {
   readonly entityIndex: ReturnType<typeof createEntityIndex>;
   /** Whether bare particles keep PreviousPosition (see PhysicsWorldOptions.interpolation). */
   interpolation: boolean;
+  /** Threads of the world (see PhysicsWorldOptions.threads). */
+  readonly threads: number;
+  /** Internal: the worker pool of a world with threads > 1 (null otherwise, or once disposed). */
+  threadPool: ThreadPool | null;
   /** Internal: removal hooks (springs, joints and caches that reference a removed entity). */
   readonly removeHooks: Array<(world: PhysicsWorld, eid: number) => void>;
 }
@@ -184,9 +201,14 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertBoolean(where, 'interpolation', interpolation);
   const sleep = options.sleep ?? true;
   assertBoolean(where, 'sleep', sleep);
+  const threads = options.threads ?? 1;
+  assertInteger(where, 'threads', threads, 1, 64);
+  // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
+  const threadPool = threads > 1 ? createThreadPool(where, threads) : null;
 
   const entityIndex = createEntityIndex();
   const components = createComponents(capacity);
+  if (threadPool !== null) shareStores(components, capacity);
   const timings = {} as StageTimings;
   for (const s of STAGES) timings[s] = 0;
   const context: PhysicsWorldContext = {
@@ -215,6 +237,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     entityIndex,
     removeHooks: [removeSpringsOf, removeJointsOf, wakeTouching],
     interpolation,
+    threads,
+    threadPool,
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);
@@ -230,7 +254,10 @@ function installDefaults(world: PhysicsWorld): void {
   // First: lazily allocated stores get their arrays before any other observer writes defaults.
   for (const name of LAZY_COMPONENTS) {
     const store = c[name];
-    observe(world, onAdd(store), () => materializeStore(store, world.capacity));
+    observe(world, onAdd(store), () => {
+      materializeStore(store, world.capacity);
+      if (world.threads > 1) shareStore(store, world.capacity);
+    });
   }
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
     s.x[eid] = 0; s.y[eid] = 0; s.z[eid] = 0;
@@ -342,3 +369,23 @@ export function addComponentIfMissing(world: PhysicsWorld, eid: number, componen
 
 /** Names the stage order for documentation and tooling. */
 export { STAGES };
+
+/**
+ * Ends a world's worker threads (a world made with threads > 1); the world still steps, on the
+ * calling thread alone. Safe on any world and to call twice.
+ */
+export function disposeWorld(world: PhysicsWorld): void {
+  const pool = world.threadPool;
+  if (pool === null) return;
+  world.threadPool = null;
+  pool.dispose();
+}
+
+/**
+ * Resolves once the workers of a world with threads > 1 have started (at once for one thread). A
+ * browser page's main thread cannot wait for them, so its loops run on one thread until then; Node
+ * waits by itself at the first parallel loop.
+ */
+export function threadsReady(world: PhysicsWorld): Promise<void> {
+  return world.threadPool === null ? Promise.resolve() : world.threadPool.ready;
+}

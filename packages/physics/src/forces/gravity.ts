@@ -3,10 +3,13 @@ import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 import { barnesHutGravity } from './barnes-hut.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
 
 /**
  * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator
- * applies as an acceleration) the body feels s m g. Position-only.
+ * applies as an acceleration) the body feels s m g. Position-only. Split over the world's threads
+ * when it has several (threads/kernels.ts; the same arithmetic per body).
  */
 export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -15,6 +18,8 @@ export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
   const g = world.gravity;
   const gx = g[0]!, gy = g[1]!, gz = g[2]!;
   const s = c.GravityScale.value, m = c.Mass.value, fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  if (world.threadPool !== null &&
+    runParallel(world, 'gravityScaleSystem', KERNEL.gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents) !== null) return;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const k = (s[e]! - 1) * m[e]!;

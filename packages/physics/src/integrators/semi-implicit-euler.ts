@@ -2,6 +2,8 @@ import type { PhysicsWorld } from '../world.js';
 import { reportNonFinite } from '../errors.js';
 import { forcedBodies, freeBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -17,6 +19,9 @@ import { advanceOrientations, applyTorques } from './rotation.js';
  * Saves each body's position into `PreviousPosition` first. Throws NonFiniteStateError if a body's
  * new velocity or position is NaN or infinite (x * 0 is NaN exactly then, so the positions join the
  * running check without overflowing it).
+ *
+ * In a world with threads > 1 the two body loops are split over the threads (threads/kernels.ts
+ * holds the same loops); each body's arithmetic is unchanged, so the state is identical to the bit.
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
@@ -33,7 +38,12 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
 
   let ents = forcedBodies(world);
   let check = 0;
-  if (is2D) {
+  const par = world.threadPool === null ? null : is2D
+    ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced2, [px, py, vx, vy, ox, oy, fx, fy, im], [h, gxh, gyh, hx, hy], ents.length, ents)
+    : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced3, [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im], [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
+  if (par !== null) {
+    check = par;
+  } else if (is2D) {
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const w = im[e]! * h;
@@ -69,7 +79,12 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const save = world.interpolation;
   const n = ents.length;
   const dense = n > 0 && n === world.entityIndex.maxId;
-  if (is2D && dense) {
+  const parFree = world.threadPool === null ? null : is2D
+    ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieFree2, [px, py, vx, vy, ox, oy], [h, gxh, gyh, hx, hy, save ? 1 : 0], n, dense ? null : ents)
+    : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieFree3, [px, py, pz, vx, vy, vz, ox, oy, oz], [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0], n, dense ? null : ents);
+  if (parFree !== null) {
+    check = parFree;
+  } else if (is2D && dense) {
     if (save) {
       for (let e = 1; e <= n; e++) {
         const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;

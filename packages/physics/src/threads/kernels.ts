@@ -1,0 +1,194 @@
+/**
+ * Loop kernels that worker threads run over a range of a system's loop. Each kernel is the body of a
+ * system's hot loop, cut at [lo, hi): the main thread and every worker run the same function (the
+ * workers get its source text, see worker-source.ts), on views of the same shared memory, so each
+ * entity's arithmetic is exactly the single-threaded one and the results are identical to the bit.
+ *
+ * Rules for a kernel (its source is sent to the workers as text):
+ * - it refers to nothing outside itself but its arguments and JavaScript's globals (Math);
+ * - no inner functions (bundlers may wrap them in helpers the worker does not have);
+ * - `A` holds the typed arrays in the order its caller documents, `P` the scalar parameters,
+ *   `ids` the entity ids of the loop (null: the loop is over the dense ids lo + 1 .. hi);
+ * - it returns a number the caller sums over the ranges (a finiteness check or a count).
+ */
+
+/** A typed array a kernel reads or writes. */
+export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
+
+/** The signature every kernel has; see the file's header. */
+export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number) => number;
+
+/**
+ * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
+ * A: px, py, vx, vy, ox, oy, fx, fy, im. P: h, gxh, gyh, hx, hy. Returns the finiteness check sum.
+ */
+function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array, oy = A[5] as Float64Array, fx = A[6] as Float64Array, fy = A[7] as Float64Array;
+  const im = A[8] as Float64Array;
+  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, hx = P[3]!, hy = P[4]!;
+  const list = ids as Int32Array;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const w = im[e]! * h;
+    const nvx = vx[e]! + fx[e]! * w + gxh;
+    const nvy = vy[e]! + fy[e]! * w + gyh;
+    const x = px[e]!, y = py[e]!;
+    ox[e] = x; oy[e] = y;
+    vx[e] = nvx; vy[e] = nvy;
+    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+    check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bodies with a force accumulator, 3D.
+ * A: px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im. P: h, gxh, gyh, gzh, hx, hy, hz.
+ */
+function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array, oy = A[7] as Float64Array, oz = A[8] as Float64Array;
+  const fx = A[9] as Float64Array, fy = A[10] as Float64Array, fz = A[11] as Float64Array;
+  const im = A[12] as Float64Array;
+  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, gzh = P[3]!, hx = P[4]!, hy = P[5]!, hz = P[6]!;
+  const list = ids as Int32Array;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const w = im[e]! * h;
+    const nvx = vx[e]! + fx[e]! * w + gxh;
+    const nvy = vy[e]! + fy[e]! * w + gyh;
+    const nvz = vz[e]! + fz[e]! * w + gzh;
+    const x = px[e]!, y = py[e]!, z = pz[e]!;
+    ox[e] = x; oy[e] = y; oz[e] = z;
+    vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bare particles (a = g), 2D. A: px, py, vx, vy, ox, oy.
+ * P: h, gxh, gyh, hx, hy, save (1: keep PreviousPosition). ids null: entities lo + 1 .. hi.
+ */
+function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array, oy = A[5] as Float64Array;
+  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, hx = P[3]!, hy = P[4]!, save = P[5] === 1;
+  let check = 0;
+  if (ids === null && save) {
+    for (let e = lo + 1; e <= hi; e++) {
+      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
+      const x = px[e]!, y = py[e]!;
+      ox[e] = x; oy[e] = y;
+      vx[e] = nvx; vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  } else if (ids === null) {
+    for (let e = lo + 1; e <= hi; e++) {
+      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
+      vx[e] = nvx; vy[e] = nvy;
+      px[e] = px[e]! + (nvx - hx) * h; py[e] = py[e]! + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  } else {
+    for (let i = lo; i < hi; i++) {
+      const e = ids[i]!;
+      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
+      const x = px[e]!, y = py[e]!;
+      if (save) { ox[e] = x; oy[e] = y; }
+      vx[e] = nvx; vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bare particles, 3D. A: px, py, pz, vx, vy, vz, ox, oy, oz.
+ * P: h, gxh, gyh, gzh, hx, hy, hz, save. ids null: entities lo + 1 .. hi.
+ */
+function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array, oy = A[7] as Float64Array, oz = A[8] as Float64Array;
+  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, gzh = P[3]!, hx = P[4]!, hy = P[5]!, hz = P[6]!, save = P[7] === 1;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = ids === null ? i + 1 : ids[i]!;
+    const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh, nvz = vz[e]! + gzh;
+    const x = px[e]!, y = py[e]!, z = pz[e]!;
+    if (save) { ox[e] = x; oy[e] = y; oz[e] = z; }
+    vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+  }
+  return check;
+}
+
+/**
+ * Per-body gravity scale (forces/gravity.ts): F += (s - 1) m g. A: s, m, fx, fy, fz. P: gx, gy, gz. Returns 0.
+ */
+function gravityScale(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const s = A[0] as Float64Array, m = A[1] as Float64Array;
+  const fx = A[2] as Float64Array, fy = A[3] as Float64Array, fz = A[4] as Float64Array;
+  const gx = P[0]!, gy = P[1]!, gz = P[2]!;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const k = (s[e]! - 1) * m[e]!;
+    fx[e] = fx[e]! + k * gx; fy[e] = fy[e]! + k * gy; fz[e] = fz[e]! + k * gz;
+  }
+  return 0;
+}
+
+/**
+ * Linear drag in still air (forces/drag.ts): F -= k v unless k / m >= limit (then the body is stiff and
+ * left to the exact decay). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit. Returns the count of stiff bodies.
+ */
+function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array, vy = A[3] as Float64Array, vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const limit = P[0]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const c = k[e]!;
+    if (c * inv[e]! >= limit) { stiff++; continue; }
+    fx[e] = fx[e]! - c * vx[e]!; fy[e] = fy[e]! - c * vy[e]!; fz[e] = fz[e]! - c * vz[e]!;
+  }
+  return stiff;
+}
+
+/** Kernel numbers: the index of each kernel in `KERNELS`. */
+export const KERNEL = Object.freeze({
+  sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6,
+});
+
+/**
+ * A kernel for tests of the pool itself: A: out (Float64Array). Writes out[i] = i * P[0] over the
+ * range and throws an Error when the range holds the index P[1] (P[1] < 0: never), so a test can
+ * see a worker's error reach the main thread.
+ */
+function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const out = A[0] as Float64Array;
+  const bad = P[1]!;
+  let sum = 0;
+  for (let i = lo; i < hi; i++) {
+    if (i === bad) throw new Error('test kernel: index ' + i + ' is the bad index');
+    out[i] = i * P[0]!;
+    sum += i;
+  }
+  return ids === null ? sum : sum;
+}
+
+/** Every kernel, indexed by `KERNEL`. */
+export const KERNELS: readonly Kernel[] = Object.freeze([sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel]);

@@ -1,0 +1,278 @@
+/**
+ * A pool of worker threads that run ranges of a system's loop on shared memory (issue: every core).
+ * Thread 0 is the calling (main) thread; threads 1 .. n-1 are workers (Node `worker_threads` or the
+ * browser's `Worker`), each built from the same source (worker-source.ts) and holding views of the
+ * same SharedArrayBuffers. A `run` writes the kernel, the range size and the array ids into a small
+ * control array, wakes the workers with Atomics.notify, runs range 0 itself and waits (Atomics.wait,
+ * or a spin on a browser's main thread, where waiting is not allowed) until every worker is done.
+ *
+ * Each array travels to the workers once, in a message, the first time a kernel uses it; nothing is
+ * sent per step or per entity. Workers are unref'd in Node, so a pool never keeps the process alive;
+ * `dispose` stops and terminates them.
+ */
+
+import { KERNELS, type KernelArray } from './kernels.js';
+import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
+import { workerSource } from './worker-source.js';
+
+/** The least a worker must offer: Node's Worker and the browser's Worker both do. */
+interface AnyWorker {
+  postMessage(message: unknown): void;
+  terminate(): unknown;
+  unref?(): void;
+}
+
+/** Most scalar parameters a kernel takes. */
+const MAX_PARAMS = 16;
+
+/** Characters of a worker's error message kept (longer messages are cut). */
+const ERROR_TEXT = 1024;
+
+/** Whether SharedArrayBuffer can be used here (a browser page must be cross-origin isolated). */
+export function sharedMemoryAvailable(): boolean {
+  return typeof SharedArrayBuffer === 'function' && typeof Atomics === 'object';
+}
+
+/** A Float64Array of `n` elements on a new SharedArrayBuffer. */
+export function sharedFloat64(n: number): Float64Array {
+  return new Float64Array(new SharedArrayBuffer(n * 8));
+}
+
+/** A typed array of the same type as `like` and `n` elements, on a new SharedArrayBuffer. */
+export function sharedLike<T extends KernelArray>(like: T, n: number): T {
+  const C = like.constructor as { new (b: SharedArrayBuffer): T; BYTES_PER_ELEMENT: number };
+  return new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
+}
+
+/** Whether a typed array lives on a SharedArrayBuffer. */
+export function isShared(a: ArrayBufferView): boolean {
+  return typeof SharedArrayBuffer === 'function' && a.buffer instanceof SharedArrayBuffer;
+}
+
+/** Makes a worker running `source`; Node and browser versions below. */
+type WorkerFactory = (source: string) => AnyWorker;
+
+function defaultWorkerFactory(): WorkerFactory | null {
+  const g = globalThis as unknown as {
+    process?: { getBuiltinModule?: (name: string) => unknown; versions?: { node?: string } };
+    Worker?: new (url: string, options?: object) => AnyWorker;
+    Blob?: new (parts: string[], options?: object) => unknown;
+    URL?: { createObjectURL(blob: unknown): string };
+  };
+  if (g.process?.versions?.node !== undefined) {
+    const wt = g.process.getBuiltinModule?.('node:worker_threads') as
+      | { Worker: new (src: string, options: object) => AnyWorker }
+      | undefined;
+    if (wt === undefined) return null;
+    return (source) => new wt.Worker(source, { eval: true });
+  }
+  if (typeof g.Worker === 'function' && typeof g.Blob === 'function' && g.URL !== undefined) {
+    const W = g.Worker, B = g.Blob, U = g.URL;
+    let url: string | null = null;
+    return (source) => {
+      url ??= U.createObjectURL(new B([source], { type: 'text/javascript' }));
+      return new W(url);
+    };
+  }
+  return null;
+}
+
+/** Whether this thread may block in Atomics.wait (not a browser's main thread). */
+function canBlock(): boolean {
+  try {
+    Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * A pool of `threads - 1` workers plus the calling thread. Make it with `createThreadPool`.
+ */
+export class ThreadPool {
+  /** Threads that share a loop: the calling thread and its workers. */
+  readonly threads: number;
+  /** Resolves once every worker has started and can take work (a browser page may await it; Node waits by itself). */
+  readonly ready: Promise<void>;
+  private readonly workers: AnyWorker[];
+  private readonly ctl: Int32Array;
+  private readonly params: Float64Array;
+  private readonly results: Float64Array;
+  private readonly errorText: Uint16Array;
+  private readonly ids = new Map<ArrayBufferView, number>();
+  private readonly blocking: boolean;
+  private idBuffer: Int32Array;
+  private disposed = false;
+  /** Loops this pool has run on its threads (a count for tests and the bench). */
+  runs = 0;
+
+  constructor(threads: number, factory: WorkerFactory) {
+    this.threads = threads;
+    this.ctl = new Int32Array(new SharedArrayBuffer(CONTROL.LENGTH * 4));
+    this.params = sharedFloat64(MAX_PARAMS);
+    this.results = sharedFloat64(threads);
+    this.errorText = new Uint16Array(new SharedArrayBuffer(ERROR_TEXT * 2));
+    this.idBuffer = new Int32Array(new SharedArrayBuffer(4));
+    this.blocking = canBlock();
+    const source = workerSource();
+    this.workers = [];
+    const started: Array<Promise<void>> = [];
+    for (let i = 1; i < threads; i++) {
+      const w = factory(source);
+      w.unref?.();
+      const msg: PoolMessage = { type: 'init', index: i, ctl: this.ctl, params: this.params, results: this.results, errorText: this.errorText };
+      w.postMessage(msg);
+      this.workers.push(w);
+    }
+    const ctl = this.ctl, want = threads - 1;
+    started.push(new Promise<void>((resolve) => {
+      const poll = (): void => {
+        if (Atomics.load(ctl, CONTROL.READY) >= want || this.disposed) resolve();
+        else setTimeout(poll, 5);
+      };
+      poll();
+    }));
+    this.ready = Promise.all(started).then(() => undefined);
+  }
+
+  /** Whether every worker has started (a browser pool runs on one thread until then). */
+  isReady(): boolean {
+    return !this.disposed && Atomics.load(this.ctl, CONTROL.READY) >= this.workers.length;
+  }
+
+  /**
+   * Whether `run` will use the workers now: not disposed, and the workers have started (in Node this
+   * waits up to 10 s for them; a browser page's main thread cannot wait, and runs alone until `ready`).
+   */
+  usable(): boolean {
+    if (this.disposed) return false;
+    if (this.isReady()) return true;
+    if (!this.blocking) return false;
+    const deadline = Date.now() + 10_000;
+    let r: number;
+    while ((r = Atomics.load(this.ctl, CONTROL.READY)) < this.workers.length && Date.now() < deadline) {
+      Atomics.wait(this.ctl, CONTROL.READY, r, 50);
+    }
+    return this.isReady();
+  }
+
+  /**
+   * Runs kernel `kernel` (kernels.ts) over [0, n) split into `threads` contiguous ranges, with
+   * `arrays` (each on a SharedArrayBuffer) and the scalar `params`; `ids` (null: dense ids lo+1..hi)
+   * is copied to a shared buffer. Returns the sum of the ranges' return values, in thread order.
+   * @throws Error naming `system` if a worker's range threw (the message is the worker's).
+   */
+  run(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
+    const ctl = this.ctl;
+    let idsId = -1;
+    if (ids !== null) {
+      if (this.idBuffer.length < n) this.idBuffer = new Int32Array(new SharedArrayBuffer(Math.max(n, this.idBuffer.length * 2) * 4));
+      const buf = this.idBuffer;
+      for (let i = 0; i < n; i++) buf[i] = ids[i]!;
+      idsId = this.idOf(buf);
+    }
+    if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
+    for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
+    this.sync();
+    const P = this.params;
+    for (let i = 0; i < params.length; i++) P[i] = params[i]!;
+    ctl[CONTROL.KERNEL] = kernel;
+    ctl[CONTROL.NARRAYS] = arrays.length;
+    ctl[CONTROL.IDS] = idsId;
+    ctl[CONTROL.COUNT] = n;
+    ctl[CONTROL.THREADS] = this.threads;
+    ctl[CONTROL.ERROR] = 0;
+    this.dispatch(COMMAND.RUN);
+    this.runs++;
+    const t = this.threads;
+    let own: number;
+    try {
+      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t));
+    } finally {
+      this.await();
+    }
+    if (ctl[CONTROL.ERROR] !== 0) {
+      const text = this.errorText;
+      let msg = '';
+      for (let i = 0; i < text.length && text[i] !== 0; i++) msg += String.fromCharCode(text[i]!);
+      throw new Error(`${system}: a worker thread failed: ${msg}`);
+    }
+    let sum = own;
+    for (let i = 1; i < t; i++) sum += this.results[i]!;
+    return sum;
+  }
+
+  /** Stops and terminates the workers; the pool cannot run afterwards. Safe to call twice. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    const ctl = this.ctl;
+    ctl[CONTROL.CMD] = COMMAND.QUIT;
+    Atomics.add(ctl, CONTROL.GEN, 1);
+    Atomics.notify(ctl, CONTROL.GEN);
+    for (const w of this.workers) void w.terminate();
+    this.workers.length = 0;
+  }
+
+  /** Whether `dispose` was called. */
+  get isDisposed(): boolean {
+    return this.disposed;
+  }
+
+  private idOf(a: ArrayBufferView): number {
+    let id = this.ids.get(a);
+    if (id === undefined) {
+      if (!isShared(a)) throw new TypeError('thread pool: an array of a parallel loop is not on a SharedArrayBuffer');
+      id = this.ids.size;
+      this.ids.set(a, id);
+      const msg: PoolMessage = { type: 'array', id, array: a };
+      for (const w of this.workers) w.postMessage(msg);
+      this.pendingSync = true;
+    }
+    return id;
+  }
+
+  private pendingSync = false;
+
+  /** Makes every worker receive the arrays posted since the last sync (they leave their wait loop to read messages). */
+  private sync(): void {
+    if (!this.pendingSync) return;
+    this.pendingSync = false;
+    this.ctl[CONTROL.EXPECT] = this.ids.size;
+    this.dispatch(COMMAND.SYNC);
+    this.await();
+  }
+
+  private dispatch(cmd: number): void {
+    const ctl = this.ctl;
+    ctl[CONTROL.CMD] = cmd;
+    Atomics.store(ctl, CONTROL.PENDING, this.workers.length);
+    Atomics.add(ctl, CONTROL.GEN, 1);
+    Atomics.notify(ctl, CONTROL.GEN);
+  }
+
+  private await(): void {
+    const ctl = this.ctl;
+    let p: number;
+    if (this.blocking) {
+      while ((p = Atomics.load(ctl, CONTROL.PENDING)) !== 0) Atomics.wait(ctl, CONTROL.PENDING, p);
+    } else {
+      while (Atomics.load(ctl, CONTROL.PENDING) !== 0) { /* a browser's main thread may not wait: spin */ }
+    }
+  }
+}
+
+/**
+ * Makes a pool of `threads` threads (the caller and threads - 1 workers).
+ * @throws Error if SharedArrayBuffer is missing (a page that is not cross-origin isolated) or no
+ *   worker can be made here; the message starts with `where`.
+ */
+export function createThreadPool(where: string, threads: number): ThreadPool {
+  if (!sharedMemoryAvailable()) {
+    throw new Error(`${where}: threads > 1 needs SharedArrayBuffer (in a browser, serve the page cross-origin isolated: Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp)`);
+  }
+  const factory = defaultWorkerFactory();
+  if (factory === null) throw new Error(`${where}: threads > 1 needs worker threads (Node >= 20.16 worker_threads, or a browser Worker), and none is available here`);
+  return new ThreadPool(threads, factory);
+}

@@ -1,0 +1,32 @@
+/**
+ * Moves component stores onto SharedArrayBuffer, so worker threads can hold views of the same
+ * memory. Used by `createPhysicsWorld` when `threads > 1`, for the stores made at creation and for
+ * each lazily allocated store when it gets its arrays.
+ */
+
+import { isShared, sharedLike } from './pool.js';
+import type { KernelArray } from './kernels.js';
+
+/**
+ * Replaces every per-entity typed array of `store` (a field of length `capacity + 1`) by a copy on a
+ * SharedArrayBuffer; fields of other lengths (empty lazy arrays, packed stores) stay as they are.
+ */
+export function shareStore(store: object, capacity: number): void {
+  const rec = store as Record<string, unknown>;
+  for (const key of Object.keys(rec)) {
+    const a = rec[key];
+    if (!ArrayBuffer.isView(a) || a instanceof DataView) continue;
+    const arr = a as KernelArray;
+    if (arr.length !== capacity + 1 || isShared(arr)) continue;
+    const copy = sharedLike(arr, arr.length);
+    copy.set(arr as never);
+    rec[key] = copy;
+  }
+}
+
+/** `shareStore` on every store of `components`. */
+export function shareStores(components: object, capacity: number): void {
+  for (const store of Object.values(components as Record<string, unknown>)) {
+    if (store !== null && typeof store === 'object' && !ArrayBuffer.isView(store)) shareStore(store, capacity);
+  }
+}

@@ -1,0 +1,25 @@
+/**
+ * The source text of a pool's worker: the kernels (kernels.ts) and the worker's loop
+ * (worker-main.ts), written out from the very functions the main thread runs, so both sides execute
+ * the same code. One module for Node (`new Worker(source, { eval: true })`) and the browser (a Blob
+ * URL, which a cross-origin isolated page may start).
+ */
+
+import { KERNELS } from './kernels.js';
+import { workerMain } from './worker-main.js';
+
+let cached: string | null = null;
+
+/** The worker's source text (built once). */
+export function workerSource(): string {
+  if (cached !== null) return cached;
+  cached = [
+    "'use strict';",
+    // Bundlers that keep function names wrap inner functions in a __name helper; the worker has none.
+    'var __name = function (f) { return f; };',
+    `var KERNELS = [${KERNELS.map((k) => k.toString()).join(',\n')}];`,
+    `var workerMain = ${workerMain.toString()};`,
+    "workerMain(KERNELS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",
+  ].join('\n');
+  return cached;
+}

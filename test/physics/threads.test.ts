@@ -1,0 +1,141 @@
+import { afterEach, expect, test } from 'vitest';
+import { execFile } from 'node:child_process';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { promisify } from 'node:util';
+import { build } from 'esbuild';
+import { addComponent, removeEntity } from 'bitecs';
+import {
+  addBody, addParticle, createPhysicsWorld, disposeWorld, MIN_PARALLEL_PER_THREAD, stateHash, stepMany,
+  type PhysicsWorld, type PhysicsWorldOptions,
+} from '@bitphysics/physics';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
+
+// Worker threads split the integration and per-body force loops over shared component arrays; each
+// body's arithmetic is the single-threaded one, so the promise is equality to the last bit: the
+// reference is the one-thread run of the same scene, the tolerance zero (stateHash hashes every bit).
+
+const worlds: PhysicsWorld[] = [];
+afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+
+function make(options: PhysicsWorldOptions): PhysicsWorld {
+  const w = createPhysicsWorld(options);
+  worlds.push(w);
+  return w;
+}
+
+/** Enough entities that 4 threads take the parallel path. */
+const N = 4 * MIN_PARALLEL_PER_THREAD + 1001;
+
+function particleWorld(threads: number, interpolation: boolean, holes: boolean): PhysicsWorld {
+  const world = make({ dimensions: 2, capacity: N, gravity: [0.3, -9.81], interpolation, threads });
+  const rng = new Rng(7);
+  const ids: number[] = [];
+  for (let i = 0; i < N; i++) {
+    ids.push(addParticle(world, { position: [rng.range(-50, 50), rng.range(0, 100)], velocity: [rng.range(-5, 5), rng.range(-5, 5)] }));
+  }
+  // Removing some makes the query sparse (its ids no longer 1..n): the id-list kernel runs.
+  if (holes) for (let i = 0; i < N; i += 97) removeEntity(world, ids[i]!);
+  return world;
+}
+
+test('particles (dense and sparse, with and without interpolation): 1, 2 and 4 threads give identical states', () => {
+  for (const [interpolation, holes] of [[false, false], [true, true]] as const) {
+    {
+      const hashes = [1, 2, 4].map((threads) => {
+        const world = particleWorld(threads, interpolation, holes);
+        stepMany(world, 12);
+        if (threads > 1) expect(world.threadPool!.runs, `threads ${threads} used its workers`).toBeGreaterThan(0);
+        return stateHash(world);
+      });
+      expect(hashes[1], `2 threads, interpolation ${interpolation}, holes ${holes}`).toBe(hashes[0]);
+      expect(hashes[2], `4 threads, interpolation ${interpolation}, holes ${holes}`).toBe(hashes[0]);
+    }
+  }
+}, 60_000);
+
+test('3D bodies with forces and gravity scale: 1 and 2 threads give identical states; the parabola is the exact one', () => {
+  const n = 2 * MIN_PARALLEL_PER_THREAD + 17;
+  const run = (threads: number): [string, PhysicsWorld] => {
+    const world = make({ dimensions: 3, capacity: n, gravity: [0, -9.81, 0], threads });
+    const rng = new Rng(3);
+    for (let i = 0; i < n; i++) {
+      const e = addBody(world, { position: [rng.range(-5, 5), rng.range(0, 10), rng.range(-5, 5)], velocity: [rng.range(-1, 1), 0, 0], mass: rng.range(0.5, 2) });
+      addComponent(world, e, world.components.GravityScale);
+      world.components.GravityScale.value[e] = rng.range(0, 2);
+    }
+    stepMany(world, 10);
+    return [stateHash(world), world];
+  };
+  const [one] = run(1);
+  const [two, world] = run(2);
+  expect(world.threadPool!.runs).toBeGreaterThan(0);
+  expect(two).toBe(one);
+  // Independent check of the parallel result, body 1's height in closed form: the scheme integrates the
+  // world's g exactly (-g t^2 / 2) and the extra force (s - 1) m g by semi-implicit Euler, whose k steps
+  // move by a h^2 k (k + 1) / 2 with a = -(s - 1) g. 1e-9 m covers rounding.
+  const rng = new Rng(3);
+  const y0 = (rng.range(-5, 5), rng.range(0, 10));
+  const h = 1 / 60, k = 10, t = k * h;
+  const s = world.components.GravityScale.value[1]!;
+  const expected = y0 - (9.81 * t * t) / 2 - ((s - 1) * 9.81 * h * h * k * (k + 1)) / 2;
+  expect(world.components.Position.y[1]!).toBeCloseTo(expected, 9);
+}, 60_000);
+
+test('a worker that throws surfaces its error in the main thread with the system\'s name', () => {
+  const world = make({ capacity: 10, threads: 2 });
+  const pool = world.threadPool!;
+  expect(pool.usable()).toBe(true);
+  const out = sharedFloat64(1000);
+  // Worker (thread 1) owns indices 500..999; index 700 throws there.
+  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, 700], 1000, null)).toThrow(/^testSystem: a worker thread failed: test kernel: index 700/);
+  // The pool still works after a failure, and both halves are written.
+  expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
+  expect(out[999]).toBe(1998);
+  expect(out[1]).toBe(2);
+});
+
+test('threads: bad values are refused; disposeWorld stops the workers and the world steps on alone', () => {
+  expect(() => createPhysicsWorld({ threads: 0 })).toThrow(/^createPhysicsWorld: threads must be/);
+  expect(() => createPhysicsWorld({ threads: 1.5 })).toThrow(/^createPhysicsWorld: threads must be/);
+  expect(() => createPhysicsWorld({ threads: '2' as never })).toThrow(/^createPhysicsWorld: threads must be/);
+  expect(createPhysicsWorld().threadPool).toBeNull();
+  const a = particleWorld(2, false, false);
+  const b = particleWorld(1, false, false);
+  stepMany(a, 3);
+  const pool = a.threadPool!;
+  disposeWorld(a);
+  disposeWorld(a);
+  expect(a.threadPool).toBeNull();
+  expect(pool.isDisposed).toBe(true);
+  stepMany(a, 3);
+  stepMany(b, 6);
+  expect(stateHash(a)).toBe(stateHash(b));
+}, 60_000);
+
+test('a Node process with a threaded world exits by itself when its script ends, disposed or not', async () => {
+  const dir = mkdtempSync(join(tmpdir(), 'bitphysics-threads-'));
+  const entry = join(dir, 'run.ts');
+  writeFileSync(entry, [
+    `import { addParticle, createPhysicsWorld, disposeWorld, stepMany } from '@bitphysics/physics';`,
+    `for (const dispose of [false, true]) {`,
+    `  const world = createPhysicsWorld({ capacity: 70000, threads: 2, interpolation: false });`,
+    `  for (let i = 0; i < 70000; i++) addParticle(world, { position: [i, 0] });`,
+    `  stepMany(world, 3);`,
+    `  if (world.threadPool.runs === 0) throw new Error('no parallel loop ran');`,
+    `  if (dispose) disposeWorld(world);`,
+    `}`,
+    `console.log('done');`,
+  ].join('\n'));
+  const out = join(dir, 'run.mjs');
+  await build({
+    entryPoints: [entry], outfile: out, bundle: true, platform: 'node', format: 'esm', logLevel: 'silent',
+    conditions: ['bitphysics-source'], nodePaths: [join(__dirname, '../../node_modules')],
+  });
+  // A process held open by its workers would hit the timeout (execFile then rejects).
+  const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 30_000 });
+  expect(stdout.trim()).toBe('done');
+}, 60_000);
