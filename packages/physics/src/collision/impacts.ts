@@ -6,7 +6,9 @@ import { BodyType } from './broadphase.js';
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of
  * pairwise impacts at their times of impact before the soft substeps run.
  *
- * A contact takes part if its combined restitution e > 0. For each, the time of impact t* in
+ * A contact takes part if its combined restitution e > 0 and neither body carried a load last step
+ * (a warm-started contact: a body resting in a pile or on the floor is left to the soft substeps and
+ * the restitution stage, which keep piles still). For each, the time of impact t* in
  * [t_start, h] is found from the bodies' motion within the step: t_start is the latest earlier impact of
  * either body this step; ball-ball and ball-static-ball pairs by an exact sphere sweep (Ericson,
  * Real-Time Collision Detection, 5.5.7) along their current relative velocity (with the relative
@@ -53,18 +55,31 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const S = world.dimensions === 2 ? 8 : 12;
   if (cs.bodyImpact.length < count * 4) cs.bodyImpact = new Float64Array(Math.max(count * 4, cs.bodyImpact.length * 2));
   cs.bodyImpact.fill(0, 0, count * 4);
+  // Bodies that carried a load last step (a warm-started contact: resting in a pile, on the floor)
+  // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
+  // marks them -1 until the passes are done.
+  const imp = cs.bodyImpact, LN = buf.normalImpulse, IA = buf.ia, IB = buf.ib;
+  for (let i = 0; i < n; i++) {
+    if (!(LN[i]! > 0)) continue;
+    if (IA[i] !== 0) imp[IA[i]! * 4 + 3] = -1;
+    imp[IB[i]! * 4 + 3] = -1;
+  }
   let m = 0;
   for (let i = 0; i < n; i++) {
     key[i] = 0;
     if (!(E[i]! > 0)) continue;
+    if (imp[IB[i]! * 4 + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * 4 + 3] === -1)) continue;
     if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
     const s0 = S0[i]!, rv = RV[i]!;
     key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
     order[m++] = i;
   }
   const seeds = m;
-  if (seeds === 0) return;
-  for (let i = 0; i < n; i++) if (E[i]! > 0 && !fastEnough(cs.bodyState, buf, i, S, resting, gh)) order[m++] = i;
+  if (seeds === 0) { imp.fill(0, 0, count * 4); return; }
+  for (let i = 0; i < n; i++) {
+    if (!(E[i]! > 0) || imp[IB[i]! * 4 + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * 4 + 3] === -1)) continue;
+    if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) order[m++] = i;
+  }
   const cand = order.subarray(0, m);
   if (seeds > 1) order.subarray(0, seeds).sort((x, y) => key[x]! - key[y]!);
   for (let k = seeds; k < m; k++) key[cand[k]!] = 0;
