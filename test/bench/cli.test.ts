@@ -103,6 +103,19 @@ describe('bench CLI', () => {
     expect(ours!.positionChecksum).toBe(plain!.positionChecksum);
   });
 
+  it('--threads 2 runs bitphysics-threads beside bitphysics: threads, speedup and the same state hash', async () => {
+    // 40,000 particles: above 2 x MIN_PARALLEL_PER_THREAD, so the workers take their half.
+    const run = await runCli(['--scene', 'particles', '--count', '40000', '--steps', '5', '--warmup', '1', '--threads', '2', '--hash', '--json']);
+    expect(run.code).toBe(0);
+    const lines = jsonLines(run.stdout);
+    expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'bitphysics-threads']);
+    expect(lines[0]!.threads).toBe(1);
+    expect(lines[1]!.threads).toBe(2);
+    const ms = (l: Record<string, unknown>) => (l.msPerStep as Record<string, number>).median!;
+    expect(lines[1]!.speedup).toBeCloseTo(ms(lines[0]!) / ms(lines[1]!), 2);
+    expect(lines[1]!.stateHash).toBe(lines[0]!.stateHash);
+  });
+
   it('--list lists the scenes and the engines that support each', async () => {
     const [human, json] = await Promise.all([runCli(['--list']), runCli(['--list', '--json'])]);
     expect(human.code).toBe(0);
@@ -244,6 +257,8 @@ describe.concurrent('bench CLI usage errors exit 2 naming the bad value', () => 
     ['theta on a scene without it', ['--scene', 'balls-in-box', '--theta', '0.5'], '--theta'],
     ['non-integer orbits', ['--scene', 'integrators', '--orbits', '1.5'], '1.5'],
     ['peer engine for a study', ['--scene', 'forces', '--vs', 'rapier2d'], '--vs'],
+    ['zero threads', ['--threads', '0'], '--threads'],
+    ['too many threads', ['--threads', '65'], '--threads'],
   ];
   for (const [what, args, named] of cases) {
     it(what, async () => {

@@ -15,6 +15,11 @@ export interface BenchArgs {
   readonly json: boolean;
   /** Print a fingerprint of bitphysics' final state (stateHash) with its result, to compare runs across processes and machines. */
   readonly hash: boolean;
+  /**
+   * `--threads`, default 1: with n > 1 the run adds `bitphysics-threads`, the same scene in a world made
+   * with `threads: n`, stepped beside the single-threaded one in the same process; integer in [1, 64].
+   */
+  readonly threads: number;
   /** `--scene`, default 'balls-in-box': a physics scene or a bench study (see `catalogNames`). */
   readonly scene: string;
   /** Whether `scene` is a bench study (`integrators`, `forces`) rather than a physics scene run by engines. */
@@ -54,6 +59,7 @@ const BUILTIN_OPTIONS = {
   block: { type: 'string' },
   json: { type: 'boolean' },
   hash: { type: 'boolean' },
+  threads: { type: 'string' },
   times: { type: 'boolean' },
   list: { type: 'boolean' },
   help: { type: 'boolean', short: 'h' },
@@ -80,6 +86,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
   --block <n>        engines alternate every n steps (default ${DEFAULTS.block}; not for studies)
   --hash             print bitphysics' state fingerprint after the run (stateHash: every bit of every body; same
                      scene, count, seed and steps give the same hash on every machine)
+  --threads <n>      also run bitphysics with threads: n (worker threads on shared arrays) beside the single-
+                     threaded world; its line adds threads and speedup (single median / threaded median)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
   --list             list scenes, their parameters and the engines that support each
@@ -127,6 +135,8 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
   }
   const steps = str('steps') === undefined ? entry.defaults.steps ?? DEFAULTS.steps : parseInteger('--steps', str('steps')!, 1);
   const warmup = str('warmup') === undefined ? entry.defaults.warmup ?? DEFAULTS.warmup : parseInteger('--warmup', str('warmup')!, 0);
+  const threads = str('threads') === undefined ? 1 : parseInteger('--threads', str('threads')!, 1);
+  if (threads > 64) throw new UsageError(`--threads must be at most 64, got ${threads}`);
   const block = str('block') === undefined ? DEFAULTS.block : parseInteger('--block', str('block')!, 1);
   let seed: number = DEFAULTS.seed;
   if (str('seed') !== undefined) {
@@ -156,6 +166,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
     if (str('vs') !== undefined) throw new UsageError(`--vs does not apply to "${scene}": it measures bitphysics alone, no peer engines`);
     if (str('block') !== undefined) throw new UsageError(`--block does not apply to "${scene}" (its timed worlds alternate every 5 steps)`);
     if (values.times === true) throw new UsageError(`--times does not apply to "${scene}" (it reports medians per item)`);
+    if (threads > 1) throw new UsageError(`--threads does not apply to "${scene}" (it measures single-threaded laws)`);
   }
   const engines = [OURS];
   if (str('vs') !== undefined) {
@@ -173,7 +184,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, hash: values.hash === true, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
+  return { list, help, json, hash: values.hash === true, threads, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
 }
 
 /**

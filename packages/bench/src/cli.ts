@@ -18,6 +18,7 @@ import cliProgress from 'cli-progress';
 import { DEFAULTS, parseBenchArgs, USAGE, type BenchArgs } from './args.js';
 import { UsageError, USAGE_EXIT_CODE } from './errors.js';
 import { ENGINES, enginesFor, OURS } from './engines/index.js';
+import { bitphysicsThreadedEngine } from './engines/bitphysics.js';
 import { resolveScene } from './scenes/index.js';
 import { resolveStudy } from './studies/index.js';
 import { catalogEntry, catalogNames } from './catalog.js';
@@ -135,6 +136,8 @@ function runStudy(args: BenchArgs, io: CliIO): number {
 async function run(args: BenchArgs, io: CliIO): Promise<number> {
   const scene = resolveScene(args.scene)!;
   const adapters = args.engines.map((name) => ENGINES[name]!);
+  // --threads n: the threaded world runs right after the single-threaded one, in the same process.
+  if (args.threads > 1) adapters.splice(1, 0, bitphysicsThreadedEngine(args.threads));
   const showBar = io.isTTY && !args.json;
   const bar = showBar
     ? new cliProgress.SingleBar(
@@ -145,7 +148,7 @@ async function run(args: BenchArgs, io: CliIO): Promise<number> {
   let started = false;
   try {
     const result = await runBenchmark(
-      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash },
+      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash, threads: args.threads },
       {
         steps: args.steps, warmup: args.warmup, block: args.block,
         onProgress: bar

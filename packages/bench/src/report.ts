@@ -1,4 +1,5 @@
 import { OURS } from './engines/index.js';
+import { THREADED } from './engines/bitphysics.js';
 import type { BenchResult, EngineResult } from './runner.js';
 import type { BenchScene, ExtraValue } from './scenes/types.js';
 import type { StudyResult } from './studies/types.js';
@@ -9,6 +10,18 @@ export interface Ratio {
   readonly peer: string;
   /** Our median step time divided by the peer's: < 1 means bitphysics is faster. */
   readonly ratio: number;
+}
+
+/**
+ * `threads` on our lines (1 for `bitphysics`, n for `bitphysics-threads`) and, on the threaded line,
+ * `speedup`: the single-threaded median step time over the threaded one (> 1: the threads help).
+ */
+function threadFields(result: BenchResult, e: EngineResult): Record<string, number> {
+  const threads = result.scene.threads ?? 1;
+  if (e.engine === OURS) return threads > 1 ? { threads: 1 } : {};
+  if (e.engine !== THREADED) return {};
+  const ours = result.engines.find((x) => x.engine === OURS);
+  return ours ? { threads, speedup: sig(ours.msPerStep.median / e.msPerStep.median, 4) } : { threads };
 }
 
 /** Ours/peer ratios of median step times, one per peer, in run order. Empty without ours or peers. */
@@ -30,7 +43,9 @@ function sig(value: number, digits = 6): number {
  * max, mean, p90}, contacts`, then `warmup, seed, bodyStepsPerSecond, heapUsedMB, engineMemoryMB,
  * setupMs`, `params` (the scene parameters, e.g. `{ "theta": 0.5 }`, only for scenes that declare
  * any), the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
- * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `times`, every
+ * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
+ * `threads` on our lines and `speedup` (single-threaded median / threaded median) on the
+ * `bitphysics-threads` line; with `times`, every
  * step's milliseconds as `timesMs`.
  */
 export function jsonRecords(result: BenchResult, options: { times?: boolean } = {}): Array<Record<string, unknown>> {
@@ -52,12 +67,13 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
       heapUsedMB: sig(result.heapUsedMB, 4),
       engineMemoryMB: sig(e.engineMemoryMB, 4),
       setupMs: sig(e.setupMs, 4),
+      ...threadFields(result, e),
     };
     const params = result.scene.params;
     if (params && Object.keys(params).length > 0) record.params = { ...params };
     for (const [k, v] of Object.entries(e.extra)) if (!(k in record)) record[k] = v;
     const ratio = r.get(e.engine);
-    if (ratio !== undefined) {
+    if (ratio !== undefined && e.engine !== THREADED) {
       record.ratio = sig(ratio, 4);
       record.ratioOf = `${OURS}/${e.engine}`;
     }
@@ -123,10 +139,16 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
     ]);
   }
   lines.push(table(rows));
-  const r = ratios(result);
+  const threaded = result.engines.find((e) => e.engine === THREADED);
+  const single = result.engines.find((e) => e.engine === OURS);
+  const r = ratios(result).filter((x) => x.peer !== THREADED);
   if (r.length > 0) {
     lines.push('', 'time ratio ours/peer (median step; < 1: bitphysics is faster):');
     lines.push(table(r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3)])));
+  }
+  if (threaded && single) {
+    lines.push('', `speedup with threads: ${result.scene.threads ?? 1}: ${(single.msPerStep.median / threaded.msPerStep.median).toFixed(3)} ` +
+      `(single-threaded median / threaded median; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus)`);
   }
   lines.push('', `heap used: ${result.heapUsedMB.toFixed(1)} MB (V8 heap of the whole process after timing)`);
   const extras = otherExtras(result.engines, new Set(columns.map((c) => c.key)));

@@ -1,5 +1,5 @@
 import { query } from 'bitecs';
-import { contactCount, createPhysicsWorld, SCENES, stateHash, step, type PhysicsWorld } from '@bitphysics/physics';
+import { contactCount, createPhysicsWorld, disposeWorld, SCENES, stateHash, step, type PhysicsWorld } from '@bitphysics/physics';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { resolveScene } from '../scenes/index.js';
 
@@ -9,9 +9,25 @@ import { resolveScene } from '../scenes/index.js';
  * The bench scene may add builder options from the run's params (`sceneOptions`) and a probe that
  * measures the world between timed steps (`probe`; its fields join our result line).
  */
-export const bitphysicsEngine: EngineAdapter = {
-  name: 'bitphysics',
-  description: 'this framework (@bitphysics/physics): the scene builder from SCENES, stepped with step(world)',
+export const bitphysicsEngine: EngineAdapter = bitphysicsAdapter('bitphysics', 1);
+
+/** Name of our engine in a world with several threads (`--threads`). */
+export const THREADED = 'bitphysics-threads';
+
+/**
+ * Our engine in a world made with `threads: n` (`--threads n`): the same scene, run beside the
+ * single-threaded `bitphysics` in the same process; its result line adds `threads` and `speedup`.
+ */
+export function bitphysicsThreadedEngine(threads: number): EngineAdapter {
+  return bitphysicsAdapter(THREADED, threads);
+}
+
+function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
+  return {
+  name,
+  description: threads === 1
+    ? 'this framework (@bitphysics/physics): the scene builder from SCENES, stepped with step(world)'
+    : `this framework in a world with threads: ${threads} (worker threads on shared component arrays)`,
   supports(scene: string): boolean {
     return Object.prototype.hasOwnProperty.call(SCENES, scene);
   },
@@ -20,17 +36,18 @@ export const bitphysicsEngine: EngineAdapter = {
     if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
     const { definition, bench } = resolved;
     const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
-    const w: PhysicsWorld = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed });
+    const w: PhysicsWorld = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed, ...(threads > 1 ? { threads } : {}) });
     const handles = definition.build(w, sceneOptions);
     const probe = bench.probe?.(w, handles, options);
     const ids = bench.bodyIds ? Uint32Array.from(bench.bodyIds(handles)) : Uint32Array.from(query(w, [w.components.Position]));
     const dims = w.dimensions;
     const notes = [
       `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
-        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : "no sleeping"}`,
+        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : "no sleeping"}` +
+        (threads > 1 ? `, threads ${threads}` : ''),
     ];
     return {
-      engine: 'bitphysics',
+      engine: name,
       notes,
       step(): void {
         step(w);
@@ -67,11 +84,13 @@ export const bitphysicsEngine: EngineAdapter = {
         return round ? { dimensions: dims, count: ids.length, positions, radius, velocities } : { dimensions: dims, count: ids.length, positions, velocities };
       },
       dispose(): void {
-        // Nothing outside the JS heap: the world's typed arrays go with the instance.
+        // The world's typed arrays go with the instance; a threaded world's workers are stopped here.
+        disposeWorld(w);
       },
     };
   },
-};
+  };
+}
 
 /** Formats a time step as 1/N when it is one. */
 export function fmtDt(dt: number): string {

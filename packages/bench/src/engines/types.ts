@@ -23,6 +23,8 @@ export interface SceneRunOptions {
   readonly params?: Readonly<Record<string, number>>;
   /** Whether ours adds `stateHash` (the world's state fingerprint) to its statistics (`--hash`). Default false. */
   readonly hash?: boolean;
+  /** Threads of our world (`createPhysicsWorld({ threads })`), integer >= 1. Default 1. Peers ignore it. */
+  readonly threads?: number;
 }
 
 /** Counters an engine reports after a step. */
