@@ -8,6 +8,9 @@ import {
   accumulateManifoldImpulses, applyManifoldRestitution, finishManifolds, gatherManifoldBodies, prepareManifolds, solveManifolds,
   warmStartManifolds,
 } from './manifold-solver.js';
+import {
+  applyManifold3DRestitution, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D, solveManifolds3D, warmStartManifolds3D,
+} from './manifold3d-solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts } from './impacts.js';
 
@@ -51,7 +54,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   cs.stats.maxOverlap = 0;
-  if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0) {
+  if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0 && !manifolds3DToSolve(world)) {
     cs.contacts = storeWarmStart(cs.cache, buf);
     finishManifolds(world);
     return;
@@ -59,6 +62,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   gatherBodies(world, buf);
   prepareContacts(world, buf);
   prepareManifolds(world);
+  if (world.dimensions === 3) prepareManifolds3D(world);
   applyImpacts(world, buf);
   measureApproach(world, buf);
 
@@ -77,18 +81,18 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     integrateVelocities(world, hs);
     warmStartJoints(world);
     if (is2D) warmStart2D(cs, buf); else warmStart3D(cs, buf);
-    if (is2D) warmStartManifolds(cs);
+    if (is2D) warmStartManifolds(cs); else warmStartManifolds3D(world);
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
       if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
-      if (is2D) solveManifolds(cs, hs, true);
+      if (is2D) solveManifolds(cs, hs, true); else solveManifolds3D(world, hs, true);
     }
     integratePositions(world, hs);
     integrateJointRotations(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
       if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
-      if (is2D) solveManifolds(cs, hs, false);
+      if (is2D) solveManifolds(cs, hs, false); else solveManifolds3D(world, hs, false);
     }
     if (is2D) accumulateManifoldImpulses(cs);
     // The accumulated impulse is what this substep delivered (warm start plus corrections).
@@ -97,7 +101,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const IMP = buf.impulse;
   for (let i = 0, n = buf.count; i < n; i++) IMP[i] = IMP[i]! + TOT[i]!;
   applyRestitution(world, buf);
-  if (is2D) applyManifoldRestitution(world);
+  if (is2D) applyManifoldRestitution(world); else applyManifold3DRestitution(world);
   finishBodies(world, buf);
   containInBoundary(world);
   finishManifolds(world);
@@ -163,6 +167,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   }
   cs.solverBodies = list;
   count = gatherManifoldBodies(world, count); // the shapes' manifolds join (manifold-solver.ts)
+  if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (manifold3d-solver.ts)
   list = cs.solverBodies;
   count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
   list = cs.solverBodies;

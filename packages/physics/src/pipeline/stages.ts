@@ -18,6 +18,7 @@ import { integrateSystem } from '../integrators/integrate.js';
 import { broadphaseSystem } from '../collision/broadphase.js';
 import { narrowphaseSystem } from '../collision/narrowphase.js';
 import { shapeCollisionSystem } from '../collision/shape-collision.js';
+import { shape3DCollisionSystem } from '../collision/shape3d-collision.js';
 import { contactSolverSystem } from '../collision/solver.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
 import { trustFiniteOutput } from './finite.js';
@@ -34,7 +35,7 @@ export type System = (world: PhysicsWorld) => void;
  * 3. `forces`: one system per force law, user forces too;
  * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states),
  *    then the exact decay of drag and damping too stiff to be forces this step (forces/dissipation.ts);
- * 5. `collide`: broadphase, narrowphase (balls; then shapes: shape-collision.ts), contact solver (impulses, restitution, friction, position correction);
+ * 5. `collide`: broadphase, narrowphase (balls; then shapes: shape-collision.ts, 3D shapes: shape3d-collision.ts), contact solver (impulses, restitution, friction, position correction);
  * 6. `constraints`: position-based links (cloth);
  * 7. `finalize`: sleeping islands (once per step).
  * Stages 2 to 6 run once per substep.
@@ -64,7 +65,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
     ],
   },
   { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem, burnFuelSystem, ballastFillSystem] },
-  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, contactSolverSystem] },
+  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, shape3DCollisionSystem, contactSolverSystem] },
   { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
 ]);

@@ -66,16 +66,31 @@ function geometryOf(where: string, o: Shape3DOptions): Geometry {
       assertVector(where, 'halfExtents', o.halfExtents, 3);
       const h = o.halfExtents!;
       for (let i = 0; i < 3; i++) assertPositive(where, `halfExtents[${i}]`, h[i]);
-      return { kind: Shape3DKind.Box, r: 0, hx: h[0]!, hy: h[1]!, hz: h[2]!, hull: null };
+      const corners: number[][] = [];
+      for (const x of [-h[0]!, h[0]!]) for (const y of [-h[1]!, h[1]!]) for (const z of [-h[2]!, h[2]!]) corners.push([x, y, z]);
+      return { kind: Shape3DKind.Box, r: 0, hx: h[0]!, hy: h[1]!, hz: h[2]!, hull: quickhull(where, corners) };
     }
     case 'capsule': case 'cylinder':
       assertPositive(where, 'radius', o.radius);
       assertPositive(where, 'halfHeight', o.halfHeight);
-      return { kind: t === 'capsule' ? Shape3DKind.Capsule : Shape3DKind.Cylinder, r: o.radius, hx: 0, hy: o.halfHeight, hz: 0, hull: null };
+      return { kind: t === 'capsule' ? Shape3DKind.Capsule : Shape3DKind.Cylinder, r: o.radius, hx: 0, hy: o.halfHeight, hz: 0, hull: t === 'cylinder' ? cylinderHull(where, o.radius, o.halfHeight) : null };
     case 'hull':
       if (o.vertices === undefined) throw new TypeError(`${where}: vertices must be given for a hull, got undefined`);
       return { kind: Shape3DKind.Hull, r: 0, hx: 0, hy: 0, hz: 0, hull: quickhull(where, o.vertices) };
   }
+}
+
+/** Sides of the prism a cylinder collides as (its mass properties are the exact cylinder's). */
+export const CYLINDER_SIDES = 16;
+
+/** The prism of CYLINDER_SIDES sides inscribed in a cylinder of radius r and half height hh along y. */
+function cylinderHull(where: string, r: number, hh: number): Hull {
+  const pts: number[][] = [];
+  for (let i = 0; i < CYLINDER_SIDES; i++) {
+    const a = (2 * Math.PI * i) / CYLINDER_SIDES;
+    pts.push([r * Math.cos(a), -hh, r * Math.sin(a)], [r * Math.cos(a), hh, r * Math.sin(a)]);
+  }
+  return quickhull(where, pts);
 }
 
 /** Mass properties of shape `e` of the store, in its own frame. */
@@ -151,6 +166,12 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   s.qx[e] = q[0]; s.qy[e] = q[1]; s.qz[e] = q[2]; s.qw[e] = q[3];
   s.hx[e] = g.hx; s.hy[e] = g.hy; s.hz[e] = g.hz; s.radius[e] = g.r;
   if (g.hull !== null) { s.hull[e] = s.hulls.length; s.hulls.push(g.hull); } else s.hull[e] = -1;
+  let reach = g.r + g.hy;
+  if (g.hull !== null) {
+    const V = g.hull.vertices;
+    for (let i = 0; i < V.length; i += 3) reach = Math.max(reach, Math.hypot(V[i]!, V[i + 1]!, V[i + 2]!));
+  }
+  s.reach[e] = reach;
   s.density[e] = density; s.friction[e] = friction; s.restitution[e] = restitution;
   s.category[e] = category; s.mask[e] = mask; s.group[e] = group; s.sensor[e] = options.sensor === true ? 1 : 0;
   if (s.first[b] === 0) s.first[b] = e;

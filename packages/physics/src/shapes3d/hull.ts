@@ -31,6 +31,8 @@ export interface Hull {
   /** Outward unit normal (x, y, z) and plane offset d (n . p = d on the face) of each polygonal face. */
   faceNormals: Float64Array;
   faceOffsets: Float64Array;
+  /** Edges between polygonal faces: (u, v, left, right) per edge, u < v, `left` the face holding u -> v counter-clockwise, `right` the other. */
+  edges: Int32Array;
 }
 
 interface Face { a: number; b: number; c: number; nx: number; ny: number; nz: number; d: number; alive: boolean }
@@ -189,8 +191,20 @@ function buildHull(where: string, P: Float64Array, faces: Face[], eps: number): 
     faceNormals.push(q[0], q[1], q[2]);
     faceOffsets.push(q[3]);
   }
+  const owner = new Map<number, number>();
+  for (let f = 0; f + 1 < faceStart.length; f++) {
+    for (let k = faceStart[f]!; k < faceStart[f + 1]!; k++) {
+      const u = faceVertices[k]!, v = faceVertices[k + 1 < faceStart[f + 1]! ? k + 1 : faceStart[f]!]!;
+      owner.set(u * 1024 + v, f);
+    }
+  }
+  const edges: number[] = [];
+  for (const [key, f] of owner) {
+    const u = Math.floor(key / 1024), v = key % 1024;
+    if (u < v) edges.push(u, v, f, owner.get(v * 1024 + u) ?? f);
+  }
   return {
-    vertices, triangles: new Int32Array(tris), faceStart: new Int32Array(faceStart), faceVertices: new Int32Array(faceVertices),
+    edges: new Int32Array(edges), vertices, triangles: new Int32Array(tris), faceStart: new Int32Array(faceStart), faceVertices: new Int32Array(faceVertices),
     faceNormals: new Float64Array(faceNormals), faceOffsets: new Float64Array(faceOffsets),
   };
 }

@@ -30,7 +30,9 @@ export interface Shape3DStore {
   hx: Float64Array; hy: Float64Array; hz: Float64Array;
   /** Sphere, capsule and cylinder radius, m (> 0); 0 for boxes and hulls. */
   radius: Float64Array;
-  /** Index into `hulls` of a hull shape (-1 otherwise). Hull vertices are in the shape frame. */
+  /** Bounding radius about the shape's centre, m. */
+  reach: Float64Array;
+  /** Index into `hulls` of the polyhedron a hull, box or cylinder collides as (-1 for spheres and capsules). Hull vertices are in the shape frame. */
   hull: Int32Array;
   hulls: Hull[];
   /** Density, kg/m^3 (>= 0). */
@@ -61,7 +63,7 @@ function createStore(capacity: number): Shape3DStore {
   const hull = new Int32Array(n).fill(-1);
   return {
     active: false, body: new Int32Array(n), kind: new Uint8Array(n), next: new Int32Array(n), first: new Int32Array(n),
-    px: f(), py: f(), pz: f(), qx: f(), qy: f(), qz: f(), qw: f(), hx: f(), hy: f(), hz: f(), radius: f(),
+    px: f(), py: f(), pz: f(), qx: f(), qy: f(), qz: f(), qw: f(), hx: f(), hy: f(), hz: f(), radius: f(), reach: f(),
     hull, hulls: [], density: f(), friction: f(), restitution: f(),
     category: new Uint32Array(n), mask: new Uint32Array(n), group: new Int32Array(n), sensor: new Uint8Array(n),
     originX: f(), originY: f(), originZ: f(), refX: f(), refY: f(), refZ: f(), refW: f(),

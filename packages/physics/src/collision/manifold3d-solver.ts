@@ -1,0 +1,262 @@
+import type { PhysicsWorld } from '../world.js';
+import { BodyType } from './broadphase.js';
+import { contact3DStateOf } from './manifolds3d-state.js';
+
+/**
+ * The 3D shape contacts' rows of the contact solver (solver.ts calls these next to the ball contacts',
+ * in the same substeps, on the same packed body state, stride 12: v, w, displacement, 1/m, an inverse
+ * inertia flag, pushed): Box2D v3's manifold constraint (contact_solver.c) carried to 3D:
+ *
+ * - anchors r_A, r_B from the centres of mass at the start of the step; separation tracked as
+ *   s = s0 + (d_B + theta_B x r_B - d_A - theta_A x r_A) . n, with d and theta each body's displacement
+ *   and rotation so far in the step (rotation linearised);
+ * - angular terms through the world inverse inertia tensor I^-1 = R diag(1/I_1, 1/I_2, 1/I_3) R^T
+ *   (R from the orientation at the start of the solve); effective mass of a row along u:
+ *   1 / (1/m_A + 1/m_B + (r_A x u) . I_A^-1 (r_A x u) + (r_B x u) . I_B^-1 (r_B x u));
+ * - normal rows: speculative (s > 0: bias s / h_s) or soft (Box2D's soft constraint; twice as stiff
+ *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
+ * - friction in two tangent directions t1, t2 = n x t1, each |lambda_t| <= mu lambda_n;
+ * - warm start from the previous step's point with the same feature id (shape3d-collision.ts);
+ * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
+ *   the world's restitution threshold and carried an impulse leaves with v_n >= -e v_n0.
+ */
+
+/** Stiffness as a fraction of the substep rate (as the 2D shape contacts: manifold-solver.ts). */
+const HERTZ_FRACTION = 0.125;
+
+/** Whether the world has 3D shape rows to solve this step. */
+export function manifolds3DToSolve(world: PhysicsWorld): boolean {
+  const st = contact3DStateOf(world);
+  return st !== undefined && st.current.count > 0;
+}
+
+/** Gives every moving body of a 3D manifold a solver index (continuing the list), writes the rows' indices; returns the new count. */
+export function gatherManifold3DBodies(world: PhysicsWorld, count: number): number {
+  const st = contact3DStateOf(world);
+  if (st === undefined || st.current.count === 0) return count;
+  const cs = world.collision, buf = st.current;
+  const mark = cs.solverMark, index = cs.solverIndex, stamp = cs.solverStamp, type = cs.bodyType;
+  let list = cs.solverBodies;
+  for (let i = 0; i < buf.count; i++) {
+    for (let side = 0; side < 2; side++) {
+      const e = side === 0 ? buf.bodyA[i]! : buf.bodyB[i]!;
+      let k = 0;
+      const t = type[e]!;
+      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
+        if (mark[e] !== stamp) {
+          mark[e] = stamp;
+          if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
+          index[e] = count; list[count++] = e;
+        }
+        k = index[e]!;
+      }
+      if (side === 0) buf.ia[i] = k; else buf.ib[i] = k;
+    }
+  }
+  cs.solverBodies = list;
+  return count;
+}
+
+const soft = new Float64Array(3), rigid = new Float64Array(3);
+
+function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
+  const omega = 2 * Math.PI * hertz, a1 = 2 * zeta + h * omega, a2 = h * omega * a1, a3 = 1 / (1 + a2);
+  out[0] = omega / a1; out[1] = a2 * a3; out[2] = a3;
+}
+
+/** u . I^-1 u for the tensor at t[o..o+5] (xx, yy, zz, xy, xz, yz). */
+function quad(t: Float64Array, o: number, x: number, y: number, z: number): number {
+  return t[o]! * x * x + t[o + 1]! * y * y + t[o + 2]! * z * z + 2 * (t[o + 3]! * x * y + t[o + 4]! * x * z + t[o + 5]! * y * z);
+}
+
+/** World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds. */
+export function prepareManifolds3D(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const cs = world.collision, buf = st.current, n = buf.count;
+  const count = cs.solverBodyCount;
+  if (st.invInertia.length < 6 * count) { st.invInertia = new Float64Array(12 * count); st.rotationBase = new Float64Array(6 * count); }
+  const c = world.components, list = cs.solverBodies, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia, base = st.rotationBase;
+  const set = cs.settings, hs = world.h / set.solverSubsteps;
+  const hertz = Math.min(set.contactHertz, HERTZ_FRACTION / hs);
+  makeSoftInto(soft, hertz, set.contactDampingRatio, hs);
+  makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
+  const Q = c.Orientation, IT = c.InertiaTensor;
+  const hasT = IT.invX.length > 0;
+  T.fill(0, 0, 6);
+  for (let k = 1; k < count; k++) {
+    const e = list[k]!, o = 6 * k;
+    base[3 * k] = ex[6 * k + 3]!; base[3 * k + 1] = ex[6 * k + 4]!; base[3 * k + 2] = ex[6 * k + 5]!;
+    const ii = sb[12 * k + 10]!;
+    if (!(ii > 0)) { T.fill(0, o, o + 6); continue; }
+    const ix = hasT ? IT.invX[e]! : 0, iy = hasT ? IT.invY[e]! : 0, iz = hasT ? IT.invZ[e]! : 0;
+    if (ix === 0 && iy === 0 && iz === 0 || !(Q.w.length > e)) { T[o] = ii; T[o + 1] = ii; T[o + 2] = ii; T[o + 3] = 0; T[o + 4] = 0; T[o + 5] = 0; continue; }
+    const x = Q.x[e]!, y = Q.y[e]!, z = Q.z[e]!, w = Q.w[e]!;
+    const r00 = 1 - 2 * (y * y + z * z), r01 = 2 * (x * y - z * w), r02 = 2 * (x * z + y * w);
+    const r10 = 2 * (x * y + z * w), r11 = 1 - 2 * (x * x + z * z), r12 = 2 * (y * z - x * w);
+    const r20 = 2 * (x * z - y * w), r21 = 2 * (y * z + x * w), r22 = 1 - 2 * (x * x + y * y);
+    T[o] = r00 * r00 * ix + r01 * r01 * iy + r02 * r02 * iz;
+    T[o + 1] = r10 * r10 * ix + r11 * r11 * iy + r12 * r12 * iz;
+    T[o + 2] = r20 * r20 * ix + r21 * r21 * iy + r22 * r22 * iz;
+    T[o + 3] = r00 * r10 * ix + r01 * r11 * iy + r02 * r12 * iz;
+    T[o + 4] = r00 * r20 * ix + r01 * r21 * iy + r02 * r22 * iz;
+    T[o + 5] = r10 * r20 * ix + r11 * r21 * iy + r12 * r22 * iz;
+  }
+  if (n === 0) return;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  for (let i = 0; i < n; i++) {
+    const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
+    const mA = sb[a + 9]!, mB = sb[b + 9]!;
+    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+    const t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    // Solver base minus where the narrowphase measured (PreviousPosition) along n.
+    let shift = 0;
+    if (ka > 0) { const e = buf.bodyA[i]!; shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz; }
+    if (kb > 0) { const e = buf.bodyB[i]!; shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz; }
+    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+      const q = 4 * i + k;
+      buf.sep[q] = buf.sep[q]! + shift;
+      const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
+      const eff = (ux: number, uy: number, uz: number): number => {
+        const k0 = mA + mB + quad(T, ta, ray * uz - raz * uy, raz * ux - rax * uz, rax * uy - ray * ux) + quad(T, tb, rby * uz - rbz * uy, rbz * ux - rbx * uz, rbx * uy - rby * ux);
+        return k0 > 0 ? 1 / k0 : 0;
+      };
+      buf.mn[q] = eff(nx, ny, nz); buf.mt1[q] = eff(t1x, t1y, t1z); buf.mt2[q] = eff(t2x, t2y, t2z);
+      // Normal relative velocity at the start (for restitution).
+      const dvx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
+      const dvy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
+      const dvz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
+      buf.vn0[q] = dvx * nx + dvy * ny + dvz * nz;
+    }
+  }
+}
+
+/** Applies impulse P (world vector) at anchors rA, rB: -P to A, +P to B. */
+function apply(sb: Float64Array, T: Float64Array, ka: number, kb: number, rax: number, ray: number, raz: number, rbx: number, rby: number, rbz: number, px: number, py: number, pz: number): void {
+  const a = 12 * ka, b = 12 * kb;
+  if (ka > 0) {
+    const m = sb[a + 9]!, t = 6 * ka;
+    sb[a] = sb[a]! - m * px; sb[a + 1] = sb[a + 1]! - m * py; sb[a + 2] = sb[a + 2]! - m * pz;
+    const lx = ray * pz - raz * py, ly = raz * px - rax * pz, lz = rax * py - ray * px;
+    sb[a + 3] = sb[a + 3]! - (T[t]! * lx + T[t + 3]! * ly + T[t + 4]! * lz);
+    sb[a + 4] = sb[a + 4]! - (T[t + 3]! * lx + T[t + 1]! * ly + T[t + 5]! * lz);
+    sb[a + 5] = sb[a + 5]! - (T[t + 4]! * lx + T[t + 5]! * ly + T[t + 2]! * lz);
+    sb[a + 11] = 1;
+  }
+  if (kb > 0) {
+    const m = sb[b + 9]!, t = 6 * kb;
+    sb[b] = sb[b]! + m * px; sb[b + 1] = sb[b + 1]! + m * py; sb[b + 2] = sb[b + 2]! + m * pz;
+    const lx = rby * pz - rbz * py, ly = rbz * px - rbx * pz, lz = rbx * py - rby * px;
+    sb[b + 3] = sb[b + 3]! + (T[t]! * lx + T[t + 3]! * ly + T[t + 4]! * lz);
+    sb[b + 4] = sb[b + 4]! + (T[t + 3]! * lx + T[t + 1]! * ly + T[t + 5]! * lz);
+    sb[b + 5] = sb[b + 5]! + (T[t + 4]! * lx + T[t + 5]! * ly + T[t + 2]! * lz);
+    sb[b + 11] = 1;
+  }
+}
+
+/** Warm start: last step's impulses applied again. */
+export function warmStartManifolds3D(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const buf = st.current, sb = world.collision.bodyState, T = st.invInertia;
+  for (let i = 0; i < buf.count; i++) {
+    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+      const q = 4 * i + k, ln = buf.ln[q]!, l1 = buf.lt1[q]!, l2 = buf.lt2[q]!;
+      if (ln === 0 && l1 === 0 && l2 === 0) continue;
+      apply(sb, T, buf.ia[i]!, buf.ib[i]!, buf.rax[q]!, buf.ray[q]!, buf.raz[q]!, buf.rbx[q]!, buf.rby[q]!, buf.rbz[q]!,
+        ln * nx + l1 * t1x + l2 * t2x, ln * ny + l1 * t1y + l2 * t2y, ln * nz + l1 * t1z + l2 * t2z);
+    }
+  }
+}
+
+/** One pass over the rows: normal (soft with `useBias`, else relaxing), then friction in t1 and t2. */
+export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia, base = st.rotationBase;
+  const push = cs.settings.contactPushSpeed;
+  for (let i = 0; i < buf.count; i++) {
+    const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
+    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    const sft = ka === 0 || kb === 0 ? rigid : soft;
+    // Displacement and rotation of each body so far this step.
+    const dax = sb[a + 6]!, day = sb[a + 7]!, daz = sb[a + 8]!, dbx = sb[b + 6]!, dby = sb[b + 7]!, dbz = sb[b + 8]!;
+    const hax = ka > 0 ? ex[6 * ka + 3]! - base[3 * ka]! : 0, hay = ka > 0 ? ex[6 * ka + 4]! - base[3 * ka + 1]! : 0, haz = ka > 0 ? ex[6 * ka + 5]! - base[3 * ka + 2]! : 0;
+    const hbx = kb > 0 ? ex[6 * kb + 3]! - base[3 * kb]! : 0, hby = kb > 0 ? ex[6 * kb + 4]! - base[3 * kb + 1]! : 0, hbz = kb > 0 ? ex[6 * kb + 5]! - base[3 * kb + 2]! : 0;
+    const m = buf.points[i]!, mu = buf.friction[i]!;
+    for (let k = 0; k < m; k++) {
+      const q = 4 * i + k;
+      const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
+      const s = buf.sep[q]!
+        + (dbx + hby * rbz - hbz * rby - dax - (hay * raz - haz * ray)) * nx
+        + (dby + hbz * rbx - hbx * rbz - day - (haz * rax - hax * raz)) * ny
+        + (dbz + hbx * rby - hby * rbx - daz - (hax * ray - hay * rax)) * nz;
+      let bias = 0, ms = 1, is = 0;
+      if (s > 0) bias = s / hs;
+      else if (useBias) { bias = Math.max(sft[0]! * s, -push); ms = sft[1]!; is = sft[2]!; }
+      const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
+      const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
+      const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
+      const vn = vx * nx + vy * ny + vz * nz;
+      const old = buf.ln[q]!;
+      const lam = Math.max(old - buf.mn[q]! * ms * (vn + bias) - is * old, 0);
+      const dl = lam - old;
+      buf.ln[q] = lam;
+      if (lam > buf.maxLn[q]!) buf.maxLn[q] = lam;
+      if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * nx, dl * ny, dl * nz);
+    }
+    for (let k = 0; k < m; k++) {
+      const q = 4 * i + k;
+      const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
+      const limit = mu * buf.ln[q]!;
+      for (let dir = 0; dir < 2; dir++) {
+        const ux = dir === 0 ? t1x : t2x, uy = dir === 0 ? t1y : t2y, uz = dir === 0 ? t1z : t2z;
+        const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
+        const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
+        const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
+        const vt = vx * ux + vy * uy + vz * uz;
+        const old = dir === 0 ? buf.lt1[q]! : buf.lt2[q]!;
+        let lam = old - (dir === 0 ? buf.mt1[q]! : buf.mt2[q]!) * vt;
+        lam = lam > limit ? limit : lam < -limit ? -limit : lam;
+        if (dir === 0) buf.lt1[q] = lam; else buf.lt2[q] = lam;
+        const dl = lam - old;
+        if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * ux, dl * uy, dl * uz);
+      }
+    }
+  }
+}
+
+/** Restitution after the substeps: points that approached faster than the threshold and carried impulse leave at >= e times that speed. */
+export function applyManifold3DRestitution(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, T = st.invInertia;
+  const threshold = cs.settings.restitutionThreshold;
+  for (let pass = 0; pass < 4; pass++) {
+    for (let i = 0; i < buf.count; i++) {
+      const e = buf.restitution[i]!;
+      if (e === 0) continue;
+      const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
+      const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+      for (let k = 0, m = buf.points[i]!; k < m; k++) {
+        const q = 4 * i + k;
+        if (buf.vn0[q]! > -threshold || buf.maxLn[q] === 0) continue;
+        const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
+        const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
+        const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
+        const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
+        const vn = vx * nx + vy * ny + vz * nz;
+        const old = buf.ln[q]!;
+        const lam = Math.max(old - buf.mn[q]! * (vn + e * buf.vn0[q]!), 0);
+        const dl = lam - old;
+        buf.ln[q] = lam;
+        if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * nx, dl * ny, dl * nz);
+      }
+    }
+  }
+}

@@ -1,0 +1,269 @@
+import { hasComponent } from 'bitecs';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import { BodyType } from './broadphase.js';
+import { Shape3DKind, shapes3DOf, type Shape3DStore } from '../shapes3d/store.js';
+import { ColliderKind3D, collide3D, collidePlane3D, createManifold3D, type Collider3D, type Manifold3D } from './manifolds3d.js';
+import { contact3DStateOf, growManifold3DBuffer, type Contact3DState } from './manifolds3d-state.js';
+
+/**
+ * Collide stage, 3D shapes (shapes3d/): broadphase, filtering and narrowphase of every 3D shape, and
+ * of ball bodies (as spheres) and planes against them, writing manifolds for the contact solver
+ * (manifold3d-solver.ts solves them in the same substeps as the ball contacts). Ball-ball and
+ * ball-plane contacts stay with broadphase.ts and narrowphase.ts.
+ *
+ * - Poses are those at the start of the step (PreviousPosition, and the orientation turned back by
+ *   the step's rotation w h), as the solver measures displacement from there.
+ * - Broadphase: bounding boxes (a sphere of the shape's reach about its centre) fattened by the
+ *   speculative margin, sorted along x and swept.
+ * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
+ *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
+ *   neither body is dynamic are skipped; sensors push nothing.
+ * - Speculative contacts (Catto, GDC 2013): a point is kept if its separation is below the speculative
+ *   distance plus what the bodies' speeds close in one step, so a fast body is stopped at the surface
+ *   it would cross within the step: the continuous collision of bullets.
+ */
+export function shape3DCollisionSystem(world: PhysicsWorld): void {
+  if (world.dimensions !== 3) return;
+  const s = shapes3DOf(world);
+  if (s === undefined || !s.active) return;
+  const st = contact3DStateOf(world, true);
+  // Last step's rows become the warm-start source.
+  const prev = st.previous;
+  st.previous = st.current; st.current = prev; st.current.count = 0;
+  const index = st.previousIndex;
+  index.clear();
+  const key = world.capacity + 1;
+  for (let i = 0, p = st.previous; i < p.count; i++) index.set(p.shapeA[i]! * key + p.shapeB[i]!, i);
+  gather(world, s);
+  pairs(world, s, st);
+}
+
+/** Per-step collider scratch (module-level, reused; the step rebuilds it). */
+interface Scratch {
+  n: number;
+  shape: Int32Array; body: Int32Array; minX: Float64Array; maxX: Float64Array; minY: Float64Array; maxY: Float64Array; minZ: Float64Array; maxZ: Float64Array;
+  px: Float64Array; py: Float64Array; pz: Float64Array; R: Float64Array; speed: Float64Array; order: Int32Array; ball: Uint8Array;
+}
+const scratch: Scratch = {
+  n: 0, shape: new Int32Array(0), body: new Int32Array(0), minX: new Float64Array(0), maxX: new Float64Array(0), minY: new Float64Array(0), maxY: new Float64Array(0),
+  minZ: new Float64Array(0), maxZ: new Float64Array(0), px: new Float64Array(0), py: new Float64Array(0), pz: new Float64Array(0), R: new Float64Array(0),
+  speed: new Float64Array(0), order: new Int32Array(0), ball: new Uint8Array(0),
+};
+
+function ensure(n: number): void {
+  if (scratch.shape.length >= n) return;
+  let m = Math.max(64, scratch.shape.length);
+  while (m < n) m *= 2;
+  const f = (k = m): Float64Array => new Float64Array(k);
+  Object.assign(scratch, {
+    shape: new Int32Array(m), body: new Int32Array(m), minX: f(), maxX: f(), minY: f(), maxY: f(), minZ: f(), maxZ: f(),
+    px: f(), py: f(), pz: f(), R: f(9 * m), speed: f(), order: new Int32Array(m), ball: new Uint8Array(m),
+  });
+}
+
+const bodyQ = new Float64Array(4);
+
+/** Start-of-step orientation of body b into bodyQ (the current one turned back by w h). */
+function startOrientation(world: PhysicsWorld, b: number, turning: boolean): void {
+  const c = world.components, Q = c.Orientation;
+  let x = Q.x[b]!, y = Q.y[b]!, z = Q.z[b]!, w = Q.w[b]!;
+  if (!hasComponent(world, b, c.Orientation)) { x = 0; y = 0; z = 0; w = 1; }
+  if (turning) {
+    const h = world.h, W = c.AngularVelocity;
+    const rx = -W.x[b]! * h, ry = -W.y[b]! * h, rz = -W.z[b]! * h;
+    const a = Math.hypot(rx, ry, rz);
+    if (a > 0) {
+      const k = Math.sin(a / 2) / a, dx = rx * k, dy = ry * k, dz = rz * k, dw = Math.cos(a / 2);
+      const nx = dw * x + dx * w + dy * z - dz * y, ny = dw * y - dx * z + dy * w + dz * x, nz = dw * z + dx * y - dy * x + dz * w, nw = dw * w - dx * x - dy * y - dz * z;
+      const l = Math.hypot(nx, ny, nz, nw);
+      x = nx / l; y = ny / l; z = nz / l; w = nw / l;
+    }
+  }
+  bodyQ[0] = x; bodyQ[1] = y; bodyQ[2] = z; bodyQ[3] = w;
+}
+
+/** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
+function gather(world: PhysicsWorld, s: Shape3DStore): void {
+  const c = world.components, cs = world.collision;
+  const type = cs.bodyType, invMass = cs.invMass, invInertia = cs.invInertia;
+  const balls = query(world, [c.Position, c.Ball]);
+  const cap = world.capacity;
+  let n = 0;
+  ensure(64);
+  const h = world.h, spec = cs.settings.speculativeDistance;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const add = (e: number, b: number, isBall: boolean): void => {
+    ensure(n + 1);
+    const sc = scratch;
+    let t: number;
+    if (hasComponent(world, b, c.Static)) { t = BodyType.Static; invMass[b] = 0; invInertia[b] = 0; }
+    else if (hasComponent(world, b, c.Kinematic)) { t = BodyType.Kinematic; invMass[b] = 0; invInertia[b] = 0; }
+    else if (hasComponent(world, b, c.Sleeping)) { t = BodyType.Sleeping; invMass[b] = 0; invInertia[b] = 0; }
+    else {
+      t = BodyType.Dynamic; invMass[b] = c.Mass.inv[b]!;
+      const T = c.InertiaTensor;
+      invInertia[b] = !hasComponent(world, b, c.AngularVelocity) ? 0
+        : hasComponent(world, b, T) ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
+          : hasComponent(world, b, c.Inertia) ? c.Inertia.inv[b]! : 0;
+    }
+    type[b] = t;
+    const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
+    const turning = moving && invInertia[b]! > 0 || t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity);
+    const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!, y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!, z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
+    startOrientation(world, b, turning);
+    const qx = bodyQ[0]!, qy = bodyQ[1]!, qz = bodyQ[2]!, qw = bodyQ[3]!;
+    let cx = x0, cy = y0, cz = z0, reach: number;
+    const R = sc.R, o = 9 * n;
+    if (isBall) {
+      reach = c.Ball.radius[b]!;
+      R[o] = 1; R[o + 1] = 0; R[o + 2] = 0; R[o + 3] = 0; R[o + 4] = 1; R[o + 5] = 0; R[o + 6] = 0; R[o + 7] = 0; R[o + 8] = 1;
+    } else {
+      // Shape pose: body pose composed with the placement.
+      const px = s.px[e]!, py = s.py[e]!, pz = s.pz[e]!;
+      const tx = 2 * (qy * pz - qz * py), ty = 2 * (qz * px - qx * pz), tz = 2 * (qx * py - qy * px);
+      cx += px + qw * tx + (qy * tz - qz * ty); cy += py + qw * ty + (qz * tx - qx * tz); cz += pz + qw * tz + (qx * ty - qy * tx);
+      const ax = s.qx[e]!, ay = s.qy[e]!, az = s.qz[e]!, aw = s.qw[e]!;
+      const x = qw * ax + qx * aw + qy * az - qz * ay, y = qw * ay - qx * az + qy * aw + qz * ax, z = qw * az + qx * ay - qy * ax + qz * aw, w = qw * aw - qx * ax - qy * ay - qz * az;
+      R[o] = 1 - 2 * (y * y + z * z); R[o + 1] = 2 * (x * y - z * w); R[o + 2] = 2 * (x * z + y * w);
+      R[o + 3] = 2 * (x * y + z * w); R[o + 4] = 1 - 2 * (x * x + z * z); R[o + 5] = 2 * (y * z - x * w);
+      R[o + 6] = 2 * (x * z - y * w); R[o + 7] = 2 * (y * z + x * w); R[o + 8] = 1 - 2 * (x * x + y * y);
+      reach = s.reach[e]!;
+    }
+    let speed = 0;
+    if (moving) {
+      const V = c.Velocity, W = c.AngularVelocity;
+      speed = Math.hypot(V.x[b]!, V.y[b]!, V.z[b]!);
+      if (turning) speed += Math.hypot(W.x[b]!, W.y[b]!, W.z[b]!) * (reach + Math.hypot(cx - x0, cy - y0, cz - z0));
+    }
+    const pad = reach + speed * h + spec;
+    sc.shape[n] = e; sc.body[n] = b; sc.ball[n] = isBall ? 1 : 0; sc.speed[n] = speed;
+    sc.px[n] = cx; sc.py[n] = cy; sc.pz[n] = cz;
+    sc.minX[n] = cx - pad; sc.maxX[n] = cx + pad; sc.minY[n] = cy - pad; sc.maxY[n] = cy + pad; sc.minZ[n] = cz - pad; sc.maxZ[n] = cz + pad;
+    n++;
+  };
+  for (let e = 1; e <= cap; e++) if (s.body[e] !== 0) add(e, s.body[e]!, false);
+  for (let i = 0; i < balls.length; i++) { const b = balls[i]!; if (s.first[b] === 0) add(b, b, true); }
+  scratch.n = n;
+}
+
+const colA: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null };
+const colB: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null };
+const manifold: Manifold3D = createManifold3D();
+
+function collider(world: PhysicsWorld, s: Shape3DStore, i: number, out: Collider3D): void {
+  const sc = scratch, e = sc.shape[i]!;
+  out.px = sc.px[i]!; out.py = sc.py[i]!; out.pz = sc.pz[i]!;
+  for (let k = 0; k < 9; k++) out.R[k] = sc.R[9 * i + k]!;
+  if (sc.ball[i]) { out.kind = ColliderKind3D.Sphere; out.radius = world.components.Ball.radius[e]!; out.hy = 0; out.hull = null; return; }
+  const kind = s.kind[e]!;
+  out.radius = s.radius[e]!; out.hy = s.hy[e]!;
+  if (kind === Shape3DKind.Sphere) { out.kind = ColliderKind3D.Sphere; out.hull = null; }
+  else if (kind === Shape3DKind.Capsule) { out.kind = ColliderKind3D.Capsule; out.hull = null; }
+  else { out.kind = ColliderKind3D.Polyhedron; out.hull = s.hulls[s.hull[e]!]!; out.radius = 0; }
+}
+
+function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: boolean): boolean {
+  const ca = ballA ? 1 : s.category[a]!, ma = ballA ? 0xffffffff : s.mask[a]!, ga = ballA ? 0 : s.group[a]!;
+  const cb = ballB ? 1 : s.category[b]!, mb = ballB ? 0xffffffff : s.mask[b]!, gb = ballB ? 0 : s.group[b]!;
+  if (ga !== 0 && ga === gb) return ga < 0;
+  return (ca & mb) === 0 || (cb & ma) === 0;
+}
+
+/** Sweep and prune along x, then the narrowphase of each overlapping pair, and every collider against the planes. */
+function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
+  const sc = scratch, n = sc.n, type = world.collision.bodyType;
+  const order = sc.order;
+  for (let i = 0; i < n; i++) order[i] = i;
+  const minX = sc.minX;
+  const sorted = Array.from(order.subarray(0, n)).sort((a, b) => minX[a]! - minX[b]!);
+  const h = world.h, spec = world.collision.settings.speculativeDistance;
+  for (let ii = 0; ii < n; ii++) {
+    const i = sorted[ii]!;
+    const bi = sc.body[i]!, ti = type[bi]!;
+    for (let jj = ii + 1; jj < n; jj++) {
+      const j = sorted[jj]!;
+      if (minX[j]! > sc.maxX[i]!) break;
+      const bj = sc.body[j]!;
+      if (bi === bj) continue;
+      const tj = type[bj]!;
+      if (ti !== BodyType.Dynamic && tj !== BodyType.Dynamic) continue;
+      if (sc.minY[j]! > sc.maxY[i]! || sc.maxY[j]! < sc.minY[i]! || sc.minZ[j]! > sc.maxZ[i]! || sc.maxZ[j]! < sc.minZ[i]!) continue;
+      if (ti === BodyType.Dynamic && tj === BodyType.Sleeping || ti === BodyType.Sleeping && tj === BodyType.Dynamic) {
+        // A moving body reaches a sleeping one: the sleeper joins this step as static, and is woken by the sleep system's touch rule.
+      }
+      // Balls against balls are the ball narrowphase's.
+      if (sc.ball[i] && sc.ball[j]) continue;
+      const a = sc.shape[i]! < sc.shape[j]! ? i : j, b = a === i ? j : i;
+      const ea = sc.shape[a]!, eb = sc.shape[b]!;
+      if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) continue;
+      if ((!sc.ball[a] && s.sensor[ea]) || (!sc.ball[b] && s.sensor[eb])) continue;
+      collider(world, s, a, colA); collider(world, s, b, colB);
+      const margin = spec + (sc.speed[a]! + sc.speed[b]!) * h;
+      collide3D(colA, colB, margin, manifold);
+      if (manifold.count > 0) emit(world, s, st, sc.body[a]!, sc.body[b]!, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1);
+    }
+  }
+  // Planes: static, A side.
+  const c = world.components;
+  const planes = query(world, [c.Plane]);
+  if (planes.length === 0) return;
+  const P = c.Plane;
+  for (let i = 0; i < n; i++) {
+    if (sc.ball[i]) continue; // balls against planes are the ball narrowphase's
+    if (type[sc.body[i]!] !== BodyType.Dynamic) continue;
+    const e = sc.shape[i]!;
+    if (s.sensor[e]) continue;
+    collider(world, s, i, colB);
+    const margin = spec + sc.speed[i]! * h;
+    for (let k = 0; k < planes.length; k++) {
+      const p = planes[k]!;
+      const nx = P.nx[p]!, ny = P.ny[p]!, nz = P.nz[p]!, d = P.d[p]!;
+      // Cheap reject: the bounding sphere above the plane by more than the margin.
+      if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) continue;
+      collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
+      if (manifold.count > 0) emit(world, s, st, 0, sc.body[i]!, p, e, false, false, p);
+    }
+  }
+}
+
+/** Writes the manifold into the buffer as solver rows with their anchors, material and warm start. */
+function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: number, bodyB: number, ea: number, eb: number, ballA: boolean, ballB: boolean, plane = 0): void {
+  let buf = st.current;
+  if (buf.count >= buf.bodyA.length) { buf = growManifold3DBuffer(buf); st.current = buf; }
+  const i = buf.count++;
+  const m = manifold, c = world.components;
+  buf.bodyA[i] = bodyA; buf.bodyB[i] = bodyB; buf.shapeA[i] = ea; buf.shapeB[i] = eb; buf.points[i] = m.count;
+  const nx = m.nx, ny = m.ny, nz = m.nz;
+  buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
+  // Tangent t1: perpendicular to n, from the axis n is least along (Box2D v3 / Erin Catto's b2Perp-like choice in 3D).
+  let tx: number, ty: number, tz: number;
+  if (Math.abs(nx) < 0.57735) { tx = 0; ty = nz; tz = -ny; } else { tx = -nz; ty = 0; tz = nx; }
+  const tl = Math.hypot(tx, ty, tz);
+  buf.t1x[i] = tx / tl; buf.t1y[i] = ty / tl; buf.t1z[i] = tz / tl;
+  // Materials: the bouncier surface wins, friction is the geometric mean (Box2D's mixing).
+  const mat = (e: number, ball: boolean, isPlane: boolean): [number, number] =>
+    isPlane || ball ? [c.Material.friction[e]!, c.Material.restitution[e]!] : [s.friction[e]!, s.restitution[e]!];
+  const [fa, ra] = mat(ea, ballA, plane !== 0), [fb, rb] = mat(eb, ballB, false);
+  buf.friction[i] = Math.sqrt(fa * fb); buf.restitution[i] = Math.max(ra, rb);
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const Px = c.Position.x, Py = c.Position.y, Pz = c.Position.z;
+  const type = world.collision.bodyType;
+  const base = (b: number, k: number): number => b === 0 ? 0 : type[b] === BodyType.Static ? (k === 0 ? Px[b]! : k === 1 ? Py[b]! : Pz[b]!) : (k === 0 ? ox[b]! : k === 1 ? oy[b]! : oz[b]!);
+  const ax = base(bodyA, 0), ay = base(bodyA, 1), az = base(bodyA, 2), bx = base(bodyB, 0), by = base(bodyB, 1), bz = base(bodyB, 2);
+  const prev = st.previousIndex.get(ea * (world.capacity + 1) + eb);
+  const P = st.previous;
+  for (let k = 0; k < m.count; k++) {
+    const q = 4 * i + k;
+    buf.rax[q] = m.x[k]! - ax; buf.ray[q] = m.y[k]! - ay; buf.raz[q] = m.z[k]! - az;
+    buf.rbx[q] = m.x[k]! - bx; buf.rby[q] = m.y[k]! - by; buf.rbz[q] = m.z[k]! - bz;
+    buf.sep[q] = m.sep[k]!; buf.id[q] = m.id[k]!;
+    buf.ln[q] = 0; buf.lt1[q] = 0; buf.lt2[q] = 0; buf.maxLn[q] = 0;
+    if (prev !== undefined) {
+      for (let j = 0; j < P.points[prev]!; j++) {
+        const pq = 4 * prev + j;
+        if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!; break; }
+      }
+    }
+  }
+}
