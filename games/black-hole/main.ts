@@ -5,7 +5,8 @@
  * (Ramtal and Dobre, ch. 6; the rules are in ./rules.ts, DOM-free.)
  *
  * Keys: arrow keys thrust (one direction at a time: the last one pressed), Enter restarts after the
- * game is over, P pause, N single step, R reset, F predicted path on / off.
+ * game is over, P pause, N single step, R reset, F predicted path on / off, V replays the run from its
+ * start (./replay.ts: every input is recorded at its step; the replay ends where the run was, bit for bit).
  * Touch: the four arrow buttons under the scene (hold to thrust); tap the message to restart.
  * Levels (./levels.ts): level 1 has one small hole off the straight path, later levels more and
  * bigger holes, drifting holes and a fuel limit; clearing a level shows a summary and waits for
@@ -18,14 +19,14 @@
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 import { Graphics } from 'pixi.js';
-import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { Rng, slotOf, stateHash, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
 import {
-  C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, layoutHoles, predictPath, setGScale, setLightSpeed,
-  setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleGame, type Predictor, type Thrust,
+  C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, predictPath, type BlackHoleGame, type Predictor, type Thrust,
 } from './rules';
-import { beginLevel, canThrust, startLevel, stepLevel, type LevelRun } from './levels';
+import { canThrust, startLevel, type LevelRun } from './levels';
+import { createBlackHoleReplay, type BlackHoleReplay, type GameStepEvent } from './replay';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -43,6 +44,11 @@ function readBest(): number {
   }
 }
 let best = readBest();
+
+/** After each game step (live or replayed): keeps the best score. */
+function onGameStep(event: GameStepEvent): void {
+  if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+}
 
 /** Keeps `score` as the best if it beats it. */
 function recordScore(score: number): void {
@@ -63,6 +69,8 @@ const params = {
 let bh: BlackHoleGame;
 let run: LevelRun | null = null;
 let predictor: Predictor;
+/** Records every input of the run (V plays it back from the start). */
+let replay: BlackHoleReplay;
 const PATH_STEPS = 60;
 const path = new Float64Array(2 * (PATH_STEPS + 1));
 let pathPoints = 0;
@@ -71,6 +79,7 @@ function createWorld(): PhysicsWorld {
   bh = createBlackHoleGame({ seed: params.seed, holes: params.holes, gScale: params.gScale, c: params.c, thrust: params.thrust });
   run = levels ? startLevel(bh, firstLevel) : null;
   predictor = createPredictor(bh);
+  replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
 }
 
@@ -78,18 +87,19 @@ const game = await startPixiGame({
   title: 'Black hole',
   createWorld,
   step: () => {
-    const event = run ? stepLevel(bh, run) : stepBlackHole(bh);
-    if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+    replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) held.length = 0;
   },
   controls: [
     { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
     { keys: 'Enter', action: 'next level / play again', touch: 'tap the message' },
     { keys: 'F', action: 'predicted path on / off' },
+    { keys: 'V', action: 'replay the run from the start' },
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
     { key: 'f', label: 'path', action: () => { params.path = !params.path; panel.refresh(); } },
+    { key: 'v', label: 'replay', action: () => { replay.play(); predictor = createPredictor(bh); updateStatus(true); } },
   ],
   renderer: {
     view: { minX: 0, minY: 0, maxX: FIELD.width, maxY: FIELD.height },
@@ -103,10 +113,10 @@ const { shell, renderer, app } = game;
 shell.onWorldChange(() => { applyHeld(); updateStatus(true); });
 
 const panel = createPanel(params, [
-  { type: 'slider', key: 'holes', label: 'holes (new layout)', min: 1, max: MAX_HOLES, step: 1, onChange: (n) => { params.holes = Math.round(n); layoutHoles(bh, params.holes); } },
-  { type: 'slider', key: 'gScale', label: 'G scale (× 1 m³/kg/s²)', min: 0.1, max: 5, step: 0.01, onChange: (s) => setGScale(bh, s) },
-  { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => setLightSpeed(bh, c) },
-  { type: 'slider', key: 'thrust', label: 'thrust (m/s²)', min: 0, max: 20, step: 0.1, onChange: (a) => setThrustAcceleration(bh, a) },
+  { type: 'slider', key: 'holes', label: 'holes (new layout)', min: 1, max: MAX_HOLES, step: 1, onChange: (n) => { params.holes = Math.round(n); replay.input('holes', params.holes); } },
+  { type: 'slider', key: 'gScale', label: 'G scale (× 1 m³/kg/s²)', min: 0.1, max: 5, step: 0.01, onChange: (s) => replay.input('gScale', s) },
+  { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
+  { type: 'slider', key: 'thrust', label: 'thrust (m/s²)', min: 0, max: 20, step: 0.1, onChange: (a) => replay.input('thrustAcceleration', a) },
   { type: 'checkbox', key: 'path', label: 'predicted path (F)' },
   { type: 'button', key: 'restart', label: 'restart (R)' },
 ], { title: 'Black hole' });
@@ -119,13 +129,14 @@ const held: Thrust[] = [];
 
 function applyHeld(): void {
   const allowed = !run || canThrust(bh, run);
-  setThrust(bh, allowed && held.length > 0 ? held[held.length - 1]! : 'none');
+  const want = allowed && held.length > 0 ? held[held.length - 1]! : 'none';
+  if (want !== bh.thrust) replay.input('thrust', want);
 }
 
 /** Enter or a tap on the message: the next level after a clear, a new game after the last life. */
 function advance(): void {
   if (bh.over) game.shell.reset();
-  else if (run?.waiting) { beginLevel(bh, run); updateStatus(true); }
+  else if (run?.waiting) { replay.input('beginLevel'); updateStatus(true); }
 }
 function press(dir: Thrust): void {
   const i = held.indexOf(dir);
@@ -208,7 +219,8 @@ function updateStatus(force = false): void {
     ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score}   Holes ${bh.holes.length}`;
-  if (force || n !== shownNumbers) { shownNumbers = n; numbers.textContent = n; }
+  const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
+  if (force || n + playing !== shownNumbers) { shownNumbers = n + playing; numbers.textContent = n + playing; }
   if (force || bh.message !== shownMessage) { shownMessage = bh.message; message.textContent = bh.message; }
   status.classList.toggle('over', bh.over || (run?.waiting ?? false));
   if (force || bh.thrust !== shownThrust) {
@@ -309,6 +321,9 @@ shell.expose({
 Object.defineProperty(shell, 'bh', { get: (): BlackHoleGame => bh, enumerable: true });
 Object.defineProperty(shell, 'level', { get: (): LevelRun | null => run, enumerable: true });
 Object.defineProperty(shell, 'best', { get: (): number => best, enumerable: true });
+/** The run's recorder and player (V plays the recording back), and the world's state fingerprint. */
+Object.defineProperty(shell, 'replay', { get: (): BlackHoleReplay => replay, enumerable: true });
+Object.defineProperty(shell, 'stateHash', { value: (): string => stateHash(bh.world), enumerable: true });
 /** Enter: the next level after a clear, a new game after the last life. */
 Object.defineProperty(shell, 'advance', { value: advance, enumerable: true });
 updateStatus(true);
