@@ -15,6 +15,8 @@ export interface BenchArgs {
   readonly json: boolean;
   /** Print a fingerprint of bitphysics' final state (stateHash) with its result, to compare runs across processes and machines. */
   readonly hash: boolean;
+  /** Soak test: step our world for `steps` steps (default 100,000), reporting the heap and the step time every 10,000. */
+  readonly soak: boolean;
   /**
    * `--threads`, default 1: with n > 1 the run adds `bitphysics-threads`, the same scene in a world made
    * with `threads: n`, stepped beside the single-threaded one in the same process; integer in [1, 64].
@@ -59,6 +61,7 @@ const BUILTIN_OPTIONS = {
   block: { type: 'string' },
   json: { type: 'boolean' },
   hash: { type: 'boolean' },
+  soak: { type: 'boolean' },
   threads: { type: 'string' },
   times: { type: 'boolean' },
   list: { type: 'boolean' },
@@ -88,6 +91,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
                      scene, count, seed and steps give the same hash on every machine)
   --threads <n>      also run bitphysics with threads: n (worker threads on shared arrays) beside the single-
                      threaded world; its line adds threads and speedup (single median / threaded median)
+  --soak             soak test of bitphysics alone: --steps steps (default 100,000), the heap after a full GC and the
+                     median step time printed every 10,000 steps (e.g. --scene fireworks --soak)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
   --list             list scenes, their parameters and the engines that support each
@@ -184,7 +189,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, hash: values.hash === true, threads, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
+  return { list, help, json, hash: values.hash === true, soak: values.soak === true, threads, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
 }
 
 /**

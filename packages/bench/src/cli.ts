@@ -23,6 +23,7 @@ import { resolveScene } from './scenes/index.js';
 import { resolveStudy } from './studies/index.js';
 import { catalogEntry, catalogNames } from './catalog.js';
 import { describeParam } from './params.js';
+import { runSoak } from './soak.js';
 import { runBenchmark, SceneBuildError } from './runner.js';
 import { humanReport, jsonRecords, studyReport, table } from './report.js';
 
@@ -64,6 +65,11 @@ export async function main(argv: readonly string[], io: CliIO = processIO): Prom
   }
   if (args.list) {
     listScenes(args.json, io);
+    return 0;
+  }
+  if (args.soak && !args.study) {
+    const steps = argv.some((a) => a === '--steps' || a.startsWith('--steps=')) ? args.steps : 100_000;
+    runSoak({ scene: args.scene, count: args.count, seed: args.seed, steps, every: Math.min(10_000, steps), print: (line) => io.out(line) });
     return 0;
   }
   return args.study ? runStudy(args, io) : run(args, io);

@@ -1,0 +1,61 @@
+import { createPhysicsWorld, step } from '@bitphysics/physics';
+import { resolveScene } from './scenes/index.js';
+import { collectGarbage, sampleMemory } from './memory.js';
+import { median } from './stats.js';
+
+/** Options of a soak run. */
+export interface SoakOptions {
+  readonly scene: string;
+  readonly count: number;
+  readonly seed: number;
+  /** Steps in all (`--steps`; the soak's default is 100,000). */
+  readonly steps: number;
+  /** Steps between reports. */
+  readonly every: number;
+  /** Receives each report line (and the closing one). */
+  readonly print: (line: string) => void;
+}
+
+/** One report: steps done, the median step (ms) of the last block, the heap after a full collection (MB). */
+export interface SoakSample { readonly steps: number; readonly medianMs: number; readonly heapMB: number }
+
+/**
+ * The soak test (`--soak`): steps our world of `scene` for `steps` steps and reports, every `every`
+ * steps, the median step time of the block and the V8 heap after a full garbage collection, so a
+ * slow leak (heap growth) or a slowdown over a long run shows. Goal: the heap flat (growth under 1 MB)
+ * and the step time flat.
+ * @returns the samples, the first taken after the first block.
+ */
+export function runSoak(options: SoakOptions): SoakSample[] {
+  const resolved = resolveScene(options.scene);
+  if (!resolved) throw new RangeError(`soak: unknown scene ${JSON.stringify(options.scene)}`);
+  const { definition, bench } = resolved;
+  const sceneOptions = { ...(bench.sceneOptions?.({ scene: options.scene, count: options.count, seed: options.seed }) ?? {}), count: options.count, seed: options.seed };
+  const world = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed });
+  definition.build(world, sceneOptions);
+  const times = new Float64Array(options.every);
+  const samples: SoakSample[] = [];
+  options.print(`soak: ${options.scene}, ${options.count} bodies, ${options.steps} steps, a report every ${options.every}`);
+  options.print('steps      median ms  heap MB (after GC)');
+  for (let done = 0; done < options.steps;) {
+    const n = Math.min(options.every, options.steps - done);
+    for (let i = 0; i < n; i++) {
+      const t = performance.now();
+      step(world);
+      times[i] = performance.now() - t;
+    }
+    done += n;
+    collectGarbage();
+    const sample = { steps: done, medianMs: median(times.subarray(0, n)), heapMB: sampleMemory().heapUsed };
+    samples.push(sample);
+    options.print(`${String(done).padEnd(10)} ${sample.medianMs.toFixed(3).padStart(9)}  ${sample.heapMB.toFixed(2).padStart(8)}`);
+  }
+  if (samples.length > 1) {
+    const first = samples[0]!, last = samples[samples.length - 1]!;
+    options.print(
+      `heap growth from the first report to the last: ${(last.heapMB - first.heapMB).toFixed(2)} MB (goal < 1 MB); ` +
+        `median step ${first.medianMs.toFixed(3)} -> ${last.medianMs.toFixed(3)} ms`,
+    );
+  }
+  return samples;
+}
