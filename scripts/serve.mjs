@@ -191,8 +191,13 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
     });
   }
 
+  // Cross-origin isolation (COOP same-origin + COEP require-corp) makes SharedArrayBuffer available
+  // to the pages, which worlds made with `threads > 1` need; every resource of the site is same-origin.
   const send = (res, status, type, body) => {
-    res.writeHead(status, { 'content-type': type, 'cache-control': 'no-cache' });
+    res.writeHead(status, {
+      'content-type': type, 'cache-control': 'no-cache',
+      'cross-origin-opener-policy': 'same-origin', 'cross-origin-embedder-policy': 'require-corp',
+    });
     res.end(body);
   };
 

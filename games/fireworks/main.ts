@@ -12,17 +12,18 @@
  * (what a click launches), ?opening=N
  * (shells at start, 0..16), ?trails=0|1, ?seed=S, ?capacity=N (entities, 1000..2000000; default
  * 60000), ?stress (3000 sparks a burst, auto-show, no trails: 50,000 to 60,000 live sparks at
- * the peaks).
+ * the peaks), ?threads=N (1..16: worker threads share the sparks' integration when the page is
+ * cross-origin isolated, as `npm start` serves it; the state is the same as with one thread).
  *
  * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
  */
 import { Graphics } from 'pixi.js';
-import { Rng, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { createPhysicsWorld, disposeWorld, Rng, slotOf, stateHash, threadsReady, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
-  MAX_HOLD, SKY, burstScale, createFireworks, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
+  MAX_HOLD, SKY, burstScale, buildFireworks, fireworksWorldOptions, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
   setShowSparks, stepFireworks, type FireworksShow,
 } from './show';
 
@@ -44,6 +45,7 @@ const params = {
   seed: seedParam(),
   opening: numberParam('opening', { default: 3, min: 0, max: 16, integer: true }),
   capacity: numberParam('capacity', { default: 60_000, min: 1000, max: 2_000_000, integer: true }),
+  threads: numberParam('threads', { default: 1, min: 1, max: 16, integer: true }),
   launch: () => randomLaunch(),
   reset: () => game.shell.reset(),
 };
@@ -58,15 +60,21 @@ function nextRecipe(): RecipeName {
 }
 
 let show: FireworksShow;
+/** Whether this page may share memory with workers (SharedArrayBuffer needs cross-origin isolation). */
+const ISOLATED = (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
+let previous: PhysicsWorld | null = null;
 
-/** A fresh world and show from the current parameters (at start and on R). */
+/** A fresh world and show from the current parameters (at start and on R); the old world's workers stop. */
 function createWorld(): PhysicsWorld {
-  const made = createFireworks({
+  if (previous !== null) disposeWorld(previous);
+  const options = {
     seed: params.seed, gravity: params.gravity, drag: params.drag / 1000, sparks: params.sparks, generations: params.generations,
     autoShow: params.autoShow, opening: params.opening, capacity: params.capacity,
-  });
-  show = made.show;
-  return made.world;
+  };
+  const world = createPhysicsWorld({ ...fireworksWorldOptions(options), threads: ISOLATED ? params.threads : 1 });
+  show = buildFireworks(world, options);
+  previous = world;
+  return world;
 }
 
 const game = await startPixiGame({
@@ -124,6 +132,7 @@ const panel = createPanel(params, [
   { type: 'choice', key: 'shellType', label: 'shell (click, Space)', options: ['random', ...RECIPE_NAMES] },
   { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
   { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => layer.setBlend(v === true ? 'add' : 'normal') },
+  { type: 'slider', key: 'threads', label: ISOLATED ? 'threads (rebuilds)' : 'threads (page not isolated: 1)', min: 1, max: 16, step: 1, onRelease: true, onChange: () => shell.reset() },
   { type: 'button', key: 'launch', label: 'launch a shell (Space)' },
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Fireworks' });
@@ -243,6 +252,12 @@ shell.expose({
   particleCount: (): number => layer.stats.particles,
   /** The particle layer's statistics of the last frame. */
   particleStats: () => ({ ...layer.stats }),
+  /** Whether the page is cross-origin isolated (threads > 1 possible). */
+  isolated: ISOLATED,
+  /** Resolves once the world's worker threads have started. */
+  threadsReady: (): Promise<void> => threadsReady(shell.world),
+  /** Fingerprint of the world's state (stateHash). */
+  stateHash: (): string => stateHash(shell.world),
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });

@@ -16,10 +16,12 @@
  *
  * Input: wheel zooms about the pointer, drag pans, C switches the colouring, P pause, N step, R reset.
  * URL: ?count (1-200000 stars), ?theta (0.1-2), ?softening (0.01-5), ?timescale (0.05-4),
- * ?color=speed|radius, ?method=barnes-hut|direct (direct only up to 5000 stars), ?seed.
+ * ?color=speed|radius, ?method=barnes-hut|direct (direct only up to 5000 stars), ?seed, ?threads (1-16:
+ * worker threads sharing the integration loop; the page must be cross-origin isolated, as `npm start`
+ * serves it; otherwise one thread is used and the readout says why).
  */
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, galaxy, setGravitation, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+import { createPhysicsWorld, disposeWorld, galaxy, setGravitation, stateHash, step as physicsStep, threadsReady, type PhysicsWorld } from '@bitphysics/physics';
 import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
@@ -40,7 +42,9 @@ const COLORINGS = {
 };
 type Coloring = keyof typeof COLORINGS;
 
-const USAGE = 'Accepted: count 1-200000 (integer); theta 0.1-2; softening 0.01-5 m; timescale 0.05-4; color = speed | radius; method = barnes-hut | direct; seed (integer).';
+const USAGE = 'Accepted: count 1-200000 (integer); theta 0.1-2; softening 0.01-5 m; timescale 0.05-4; color = speed | radius; method = barnes-hut | direct; seed (integer); threads 1-16 (integer).';
+/** Whether this page may share memory with workers (SharedArrayBuffer needs cross-origin isolation). */
+const ISOLATED = (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
 const url = readUrlParams(() => ({
   count: numberParam('count', { default: 100_000, min: 1, max: 200_000, integer: true }),
   openingAngle: numberParam('theta', { default: 0.5, min: 0.1, max: 2 }),
@@ -49,6 +53,7 @@ const url = readUrlParams(() => ({
   color: choiceParam('color', ['speed', 'radius'] as const, 'speed') as Coloring,
   method: choiceParam('method', ['barnes-hut', 'direct'] as const, 'barnes-hut') as 'barnes-hut' | 'direct',
   seed: seedParam(),
+  threads: numberParam('threads', { default: 1, min: 1, max: 16, integer: true }),
 }), USAGE);
 if (url.method === 'direct' && url.count > DIRECT_LIMIT) {
   readUrlParams(() => { throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`); }, USAGE);
@@ -67,8 +72,13 @@ const timer = createStepTimer();
 let notice = '';
 
 /** A fresh world with the galaxy scene from the params (at start, on R and on a new star count). */
+let previous: PhysicsWorld | null = null;
 function createWorld(): PhysicsWorld {
-  const world = createPhysicsWorld({ ...galaxy.worldOptions({ count: params.count }), dt: params.timeScale * REAL_STEP });
+  // The old world's workers stop with it.
+  if (previous !== null) disposeWorld(previous);
+  const threads = ISOLATED ? params.threads : 1;
+  const world = createPhysicsWorld({ ...galaxy.worldOptions({ count: params.count }), dt: params.timeScale * REAL_STEP, threads });
+  previous = world;
   const handles = galaxy.build(world, { count: params.count, seed: params.seed, openingAngle: params.openingAngle, method: params.method });
   setGravitation(world, { softening: params.softening });
   stars = handles.stars;
@@ -143,13 +153,14 @@ const panel = createPanel(params, [
     shell.reset();
     panel.refresh();
   } },
+  { type: 'slider', key: 'threads', label: 'threads (rebuilds)', min: 1, max: 16, step: 1, onRelease: true, onChange: () => shell.reset() },
   { type: 'choice', key: 'method', label: 'gravity sum', options: ['barnes-hut', 'direct'], onChange: (m) => setMethod(m as 'barnes-hut' | 'direct') },
   { type: 'choice', key: 'color', label: 'colour by', options: ['speed', 'radius'], onChange: (m) => setColoring(m as Coloring) },
   { type: 'slider', key: 'pointSize', label: 'star size (px)', min: 1, max: 4, step: 0.5, onChange: (s) => points.setSize(s) },
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Galaxy' });
 
-const info = createReadout(shell.hud.readout, ['physics step', 'force stage (tree)', 'sim time', 'draw (CPU)', 'gravity']);
+const info = createReadout(shell.hud.readout, ['physics step', 'force stage (tree)', 'sim time', 'draw (CPU)', 'gravity', 'threads']);
 
 // ---- Drawing ------------------------------------------------------------------------------------
 
@@ -171,6 +182,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     info.set(2, `${fmt(world.time)} s (dt ${fmt(world.dt * 1000)} ms)`);
     info.set(3, `${fmt(points.stats.cpuMs)} ms, ${points.stats.drawn} drawn`);
     info.set(4, notice || `${params.method}, θ ${fmt(world.laws.openingAngle)}, ε ${fmt(world.laws.gravitySoftening)} m`);
+    info.set(5, ISOLATED ? `${world.threads} (integration split; tree on one)` : '1 (page not cross-origin isolated)');
   }
 }
 
@@ -223,6 +235,14 @@ shell.expose({
   nucleus: (): number => nucleus,
   /** Runs `n` (integer >= 0) timed physics steps now. @throws RangeError otherwise. */
   advance: (n: number): void => advanceSteps(n, () => timer.run(physicsStep, shell.world)),
+  /** Whether the page is cross-origin isolated (threads > 1 possible). */
+  isolated: ISOLATED,
+  /** Resolves once the world's worker threads have started (loops run on one thread until then). */
+  threadsReady: (): Promise<void> => threadsReady(shell.world),
+  /** Loops the world's workers have shared so far (0 with one thread). */
+  parallelRuns: (): number => shell.world.threadPool?.runs ?? 0,
+  /** Fingerprint of the world's state (stateHash): equal for any thread count after the same steps. */
+  stateHash: (): string => stateHash(shell.world),
   /** Why the last change of summation method was refused ('' if it was not). */
   notice: (): string => notice,
   /** Sets the time scale (simulated seconds per real second), in (0, 4]. */
