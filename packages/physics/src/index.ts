@@ -63,6 +63,12 @@ export { sphereMass, boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, p
 export type { MassProperties3D } from './shapes3d/mass.js';
 export { Shape3DKind, shapes3DOf } from './shapes3d/store.js';
 export type { Shape3DStore } from './shapes3d/store.js';
+export { rayCast3D, rayCastAll3D } from './collision/shape3d-queries.js';
+export type { RayHit3D } from './collision/shape3d-queries.js';
+export { addTriangleMesh3D, addHeightField3D } from './collision/mesh3d.js';
+export type { TriangleMeshOptions, HeightFieldOptions, Mesh3D } from './collision/mesh3d.js';
+export { contactEvents3D } from './collision/manifold3d-solver.js';
+export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
 export { sleepSystem, wakeSystem, wakeBody, wakeAll, isSleeping } from './collision/sleep.js';
 export type { SleepState } from './collision/state.js';
 export { ContactKind, forEachContact } from './collision/contacts.js';

@@ -1,6 +1,7 @@
 import type { PhysicsWorld } from '../world.js';
 import { BodyType } from './broadphase.js';
-import { contact3DStateOf } from './manifolds3d-state.js';
+import { contact3DStateOf, pushEvent3D } from './manifolds3d-state.js';
+import { currentHandle } from '../handles.js';
 
 /**
  * The 3D shape contacts' rows of the contact solver (solver.ts calls these next to the ball contacts',
@@ -259,4 +260,46 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       }
     }
   }
+}
+
+/**
+ * After the solve: which pairs touch (a point carried a normal impulse, or overlapped at the start of
+ * the step) against those of the last step gives the begin and end touch events. Called at the end of
+ * the contact solver, also on steps without rows (so the last contacts end).
+ */
+export function finishManifolds3D(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  if (st.eventStep !== world.steps) {
+    st.eventStep = world.steps;
+    const ev = st.events;
+    ev.begin.count = 0; ev.end.count = 0; ev.sensorBegin.count = 0; ev.sensorEnd.count = 0;
+  }
+  const buf = st.current, key = world.capacity + 1, prev = st.touching, now = new Map<number, number[]>();
+  const h = (e: number): number => e === 0 ? 0 : currentHandle(world, e);
+  for (let i = 0; i < buf.count; i++) {
+    let touch = -1;
+    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+      const q = 4 * i + k;
+      if (buf.maxLn[q]! > 0 || buf.sep[q]! < 0) { touch = q; break; }
+    }
+    if (touch < 0) continue;
+    const k = buf.shapeA[i]! * key + buf.shapeB[i]!;
+    if (now.has(k)) continue;
+    now.set(k, [buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!]);
+    if (prev.has(k)) continue;
+    const ev = st.events.begin;
+    const r = pushEvent3D(ev, h(buf.shapeA[i]!), h(buf.shapeB[i]!), h(buf.bodyA[i]!), h(buf.bodyB[i]!));
+    const c = world.components, b = buf.bodyB[i]!;
+    ev.px[r] = c.PreviousPosition.x[b]! + buf.rbx[touch]!; ev.py[r] = c.PreviousPosition.y[b]! + buf.rby[touch]!; ev.pz[r] = c.PreviousPosition.z[b]! + buf.rbz[touch]!;
+    ev.nx[r] = buf.nx[i]!; ev.ny[r] = buf.ny[i]!; ev.nz[r] = buf.nz[i]!;
+    ev.approachSpeed[r] = Math.max(0, -buf.vn0[touch]!);
+  }
+  for (const [k, v] of prev) if (!now.has(k)) pushEvent3D(st.events.end, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
+  st.touching = now;
+}
+
+/** The 3D contact and sensor events of the last step (empty lists in a world without 3D shapes). Read rows 0..count-1 of each list; entities are handles. */
+export function contactEvents3D(world: PhysicsWorld): import('./manifolds3d-state.js').ContactEvents3D {
+  return contact3DStateOf(world, true).events;
 }

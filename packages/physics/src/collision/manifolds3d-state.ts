@@ -11,6 +11,8 @@ export interface Manifold3DBuffer {
   count: number;
   /** Body slots (0: the static world, e.g. a plane) and shape slots (a plane's own slot for a plane). */
   bodyA: Int32Array; bodyB: Int32Array; shapeA: Int32Array; shapeB: Int32Array;
+  /** 0, or for a row against a triangle mesh the triangle's index + 1 (a mesh pair has a row per triangle). */
+  sub: Int32Array;
   /** Solver indices of the bodies (0: static). */
   ia: Int32Array; ib: Int32Array;
   /** Points in use (1 to 4), unit normal A to B, tangents (t1, t2 = n x t1), friction and restitution. */
@@ -31,7 +33,7 @@ function createBuffer(n: number): Manifold3DBuffer {
   const i = (k: number): Int32Array => new Int32Array(k), f = (k: number): Float64Array => new Float64Array(k);
   const p = 4 * n;
   return {
-    count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n),
+    count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), sub: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n),
     nx: f(n), ny: f(n), nz: f(n), t1x: f(n), t1y: f(n), t1z: f(n), friction: f(n), restitution: f(n),
     rax: f(p), ray: f(p), raz: f(p), rbx: f(p), rby: f(p), rbz: f(p), sep: f(p), id: f(p),
     ln: f(p), lt1: f(p), lt2: f(p), mn: f(p), mt1: f(p), mt2: f(p), vn0: f(p), maxLn: f(p),
@@ -47,16 +49,70 @@ export function growManifold3DBuffer(b: Manifold3DBuffer): Manifold3DBuffer {
   return g as unknown as Manifold3DBuffer;
 }
 
+/** One list of 3D contact events; read rows 0..count-1. Entities are handles (0: the static world). */
+export interface EventList3D {
+  count: number;
+  /** Shape A (the sensor, for sensor events; a plane or mesh entity for those), shape B, and their bodies. */
+  shapeA: Float64Array; shapeB: Float64Array; bodyA: Float64Array; bodyB: Float64Array;
+  /** A contact point, m, and the normal from A to B (`begin` only). */
+  px: Float64Array; py: Float64Array; pz: Float64Array; nx: Float64Array; ny: Float64Array; nz: Float64Array;
+  /** Approach speed along the normal at the start of the step, m/s, >= 0 (`begin` only). */
+  approachSpeed: Float64Array;
+}
+
+/**
+ * The 3D contact events of the last step, as in 2D: `begin` (a pair started touching: a point carried
+ * a normal impulse or overlapped), `end` (a pair that touched no longer does, or a shape was removed),
+ * `sensorBegin` / `sensorEnd` (a shape started or stopped overlapping a sensor; `shapeA` the sensor).
+ */
+export interface ContactEvents3D { begin: EventList3D; end: EventList3D; sensorBegin: EventList3D; sensorEnd: EventList3D }
+
+const EVENT_FIELDS = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'px', 'py', 'pz', 'nx', 'ny', 'nz', 'approachSpeed'] as const;
+
+function createEventList(n = 16): EventList3D {
+  const l = { count: 0 } as Record<string, unknown>;
+  for (const k of EVENT_FIELDS) l[k] = new Float64Array(n);
+  return l as unknown as EventList3D;
+}
+
+/** Appends a row to an event list (growing it) and returns the row. */
+export function pushEvent3D(list: EventList3D, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+  const i = list.count;
+  if (i >= list.shapeA.length) {
+    const rec = list as unknown as Record<string, Float64Array>;
+    for (const k of EVENT_FIELDS) { const next = new Float64Array(rec[k]!.length * 2); next.set(rec[k]!); rec[k] = next; }
+  }
+  list.shapeA[i] = shapeA; list.shapeB[i] = shapeB; list.bodyA[i] = bodyA; list.bodyB[i] = bodyB;
+  list.px[i] = 0; list.py[i] = 0; list.pz[i] = 0; list.nx[i] = 0; list.ny[i] = 0; list.nz[i] = 0; list.approachSpeed[i] = 0;
+  list.count++;
+  return i;
+}
+
 /** The world's 3D contact state. */
 export interface Contact3DState {
   current: Manifold3DBuffer;
   previous: Manifold3DBuffer;
-  /** Shape pair key (shapeA * (capacity + 1) + shapeB) -> row in `previous`. */
+  /** Row key (`rowKey`) -> row in `previous`. */
   previousIndex: Map<number, number>;
   /** World inverse inertia tensor per solver body index (6 a body: xx, yy, zz, xy, xz, yz), 1 / (kg m^2). */
   invInertia: Float64Array;
+  /** The step whose events the lists hold (they are cleared once a step, not once a substep). */
+  eventStep: number;
+  /** Events of the last step. */
+  events: ContactEvents3D;
+  /** Pairs (shapeA (capacity + 1) + shapeB) touching at the end of the last step, with their bodies [shapeA, shapeB, bodyA, bodyB]. */
+  touching: Map<number, number[]>;
+  /** Sensor overlaps of the last step, as `touching`. */
+  sensing: Map<number, number[]>;
+  /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
+  sensingNow: Map<number, number[]>;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
   rotationBase: Float64Array;
+}
+
+/** Key of a row for warm starting: shapeA (capacity + 1) + shapeB, or for a mesh triangle -(shapeB 2^22 + triangle + 1). */
+export function rowKey(capacity: number, shapeA: number, shapeB: number, sub: number): number {
+  return sub === 0 ? shapeA * (capacity + 1) + shapeB : -(shapeB * 4194304 + sub);
 }
 
 const states = new WeakMap<PhysicsWorld, Contact3DState>();
@@ -67,7 +123,10 @@ export function contact3DStateOf(world: PhysicsWorld, create?: boolean): Contact
 export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3DState | undefined {
   let s = states.get(world);
   if (s === undefined && create) {
-    s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: new Map(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64) };
+    s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: new Map(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
+      events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
+      touching: new Map(), sensing: new Map(), sensingNow: new Map(), eventStep: -1,
+    };
     states.set(world, s);
   }
   return s;

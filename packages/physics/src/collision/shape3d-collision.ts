@@ -4,7 +4,9 @@ import type { PhysicsWorld } from '../world.js';
 import { BodyType } from './broadphase.js';
 import { Shape3DKind, shapes3DOf, type Shape3DStore } from '../shapes3d/store.js';
 import { ColliderKind3D, collide3D, collidePlane3D, createManifold3D, type Collider3D, type Manifold3D } from './manifolds3d.js';
-import { contact3DStateOf, growManifold3DBuffer, type Contact3DState } from './manifolds3d-state.js';
+import { contact3DStateOf, growManifold3DBuffer, pushEvent3D, rowKey, type Contact3DState } from './manifolds3d-state.js';
+import { currentHandle } from '../handles.js';
+import { meshesOf, type Mesh3D } from './mesh3d.js';
 
 /**
  * Collide stage, 3D shapes (shapes3d/): broadphase, filtering and narrowphase of every 3D shape, and
@@ -28,15 +30,29 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   const s = shapes3DOf(world);
   if (s === undefined || !s.active) return;
   const st = contact3DStateOf(world, true);
+  if (st.eventStep !== world.steps) {
+    st.eventStep = world.steps;
+    const ev = st.events;
+    ev.begin.count = 0; ev.end.count = 0; ev.sensorBegin.count = 0; ev.sensorEnd.count = 0;
+  }
   // Last step's rows become the warm-start source.
   const prev = st.previous;
   st.previous = st.current; st.current = prev; st.current.count = 0;
   const index = st.previousIndex;
   index.clear();
-  const key = world.capacity + 1;
-  for (let i = 0, p = st.previous; i < p.count; i++) index.set(p.shapeA[i]! * key + p.shapeB[i]!, i);
+  for (let i = 0, p = st.previous; i < p.count; i++) index.set(rowKey(world.capacity, p.shapeA[i]!, p.shapeB[i]!, p.sub[i]!), i);
   gather(world, s);
+  st.sensingNow.clear();
   pairs(world, s, st);
+  sensorEvents(world, st);
+}
+
+/** Sensor events: overlaps found this step against those of the last. */
+function sensorEvents(world: PhysicsWorld, st: Contact3DState): void {
+  const ev = st.events, h = (e: number): number => e === 0 ? 0 : currentHandle(world, e);
+  for (const [k, v] of st.sensingNow) if (!st.sensing.has(k)) pushEvent3D(ev.sensorBegin, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
+  for (const [k, v] of st.sensing) if (!st.sensingNow.has(k)) pushEvent3D(ev.sensorEnd, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
+  const t = st.sensing; st.sensing = st.sensingNow; st.sensingNow = t;
 }
 
 /** Per-step collider scratch (module-level, reused; the step rebuilds it). */
@@ -197,13 +213,24 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
       const a = sc.shape[i]! < sc.shape[j]! ? i : j, b = a === i ? j : i;
       const ea = sc.shape[a]!, eb = sc.shape[b]!;
       if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) continue;
-      if ((!sc.ball[a] && s.sensor[ea]) || (!sc.ball[b] && s.sensor[eb])) continue;
+      const sa = !sc.ball[a] && s.sensor[ea] === 1, sb = !sc.ball[b] && s.sensor[eb] === 1;
       collider(world, s, a, colA); collider(world, s, b, colB);
+      if (sa || sb) {
+        // Sensors report overlap (a point of negative separation) and push nothing.
+        if (sa && sb) continue;
+        collide3D(colA, colB, 0, manifold);
+        let overlap = false;
+        for (let k = 0; k < manifold.count; k++) if (manifold.sep[k]! < 0) overlap = true;
+        if (overlap) st.sensingNow.set(ea * (world.capacity + 1) + eb, sa ? [ea, eb, sc.body[a]!, sc.body[b]!] : [eb, ea, sc.body[b]!, sc.body[a]!]);
+        continue;
+      }
       const margin = spec + (sc.speed[a]! + sc.speed[b]!) * h;
       collide3D(colA, colB, margin, manifold);
       if (manifold.count > 0) emit(world, s, st, sc.body[a]!, sc.body[b]!, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1);
     }
   }
+  const meshList = meshesOf(world);
+  if (meshList.length > 0) for (let i = 0; i < n; i++) for (const m of meshList) collideMesh(world, s, st, m, i);
   // Planes: static, A side.
   const c = world.components;
   const planes = query(world, [c.Plane]);
@@ -228,12 +255,12 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
 }
 
 /** Writes the manifold into the buffer as solver rows with their anchors, material and warm start. */
-function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: number, bodyB: number, ea: number, eb: number, ballA: boolean, ballB: boolean, plane = 0): void {
+function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: number, bodyB: number, ea: number, eb: number, ballA: boolean, ballB: boolean, plane = 0, sub = 0): void {
   let buf = st.current;
   if (buf.count >= buf.bodyA.length) { buf = growManifold3DBuffer(buf); st.current = buf; }
   const i = buf.count++;
   const m = manifold, c = world.components;
-  buf.bodyA[i] = bodyA; buf.bodyB[i] = bodyB; buf.shapeA[i] = ea; buf.shapeB[i] = eb; buf.points[i] = m.count;
+  buf.bodyA[i] = bodyA; buf.bodyB[i] = bodyB; buf.shapeA[i] = ea; buf.shapeB[i] = eb; buf.sub[i] = sub; buf.points[i] = m.count;
   const nx = m.nx, ny = m.ny, nz = m.nz;
   buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
   // Tangent t1: perpendicular to n, from the axis n is least along (Box2D v3 / Erin Catto's b2Perp-like choice in 3D).
@@ -251,7 +278,7 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
   const type = world.collision.bodyType;
   const base = (b: number, k: number): number => b === 0 ? 0 : type[b] === BodyType.Static ? (k === 0 ? Px[b]! : k === 1 ? Py[b]! : Pz[b]!) : (k === 0 ? ox[b]! : k === 1 ? oy[b]! : oz[b]!);
   const ax = base(bodyA, 0), ay = base(bodyA, 1), az = base(bodyA, 2), bx = base(bodyB, 0), by = base(bodyB, 1), bz = base(bodyB, 2);
-  const prev = st.previousIndex.get(ea * (world.capacity + 1) + eb);
+  const prev = st.previousIndex.get(rowKey(world.capacity, ea, eb, sub));
   const P = st.previous;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
@@ -265,5 +292,102 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
         if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!; break; }
       }
     }
+  }
+}
+
+const triQ = new Float64Array(3);
+
+/** Closest point of triangle a b c to p into triQ (Ericson, Real-Time Collision Detection, 5.1.5). */
+function closestOnTriangle(V: Float64Array, a: number, b: number, c: number, px: number, py: number, pz: number): void {
+  const ax = V[a]!, ay = V[a + 1]!, az = V[a + 2]!;
+  const abx = V[b]! - ax, aby = V[b + 1]! - ay, abz = V[b + 2]! - az, acx = V[c]! - ax, acy = V[c + 1]! - ay, acz = V[c + 2]! - az;
+  const apx = px - ax, apy = py - ay, apz = pz - az;
+  const d1 = abx * apx + aby * apy + abz * apz, d2 = acx * apx + acy * apy + acz * apz;
+  const set = (u: number, v: number): void => { triQ[0] = ax + abx * u + acx * v; triQ[1] = ay + aby * u + acy * v; triQ[2] = az + abz * u + acz * v; };
+  if (d1 <= 0 && d2 <= 0) { set(0, 0); return; }
+  const bpx = px - V[b]!, bpy = py - V[b + 1]!, bpz = pz - V[b + 2]!;
+  const d3 = abx * bpx + aby * bpy + abz * bpz, d4 = acx * bpx + acy * bpy + acz * bpz;
+  if (d3 >= 0 && d4 <= d3) { set(1, 0); return; }
+  const vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) { set(d1 / (d1 - d3), 0); return; }
+  const cpx = px - V[c]!, cpy = py - V[c + 1]!, cpz = pz - V[c + 2]!;
+  const d5 = abx * cpx + aby * cpy + abz * cpz, d6 = acx * cpx + acy * cpy + acz * cpz;
+  if (d6 >= 0 && d5 <= d6) { set(0, 1); return; }
+  const vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) { set(0, d2 / (d2 - d6)); return; }
+  const va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) { const w = (d4 - d3) / (d4 - d3 + d5 - d6); set(1 - w, w); return; }
+  const den = 1 / (va + vb + vc);
+  set(vb * den, vc * den);
+}
+
+/** Collider i against the triangles of mesh m whose boxes meet its box: a manifold per triangle touched. */
+function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m: Mesh3D, i: number): void {
+  const sc = scratch, b = sc.body[i]!;
+  if (world.collision.bodyType[b] !== BodyType.Dynamic) return;
+  const e = sc.shape[i]!;
+  if (!sc.ball[i] && s.sensor[e]) return;
+  const Bd = m.bounds, N = m.normals, V = m.vertices, T = m.triangles;
+  const margin = world.collision.settings.speculativeDistance + sc.speed[i]! * world.h;
+  collider(world, s, i, colB);
+  const reach = sc.ball[i] ? colB.radius : s.reach[e]!;
+  const out = manifold;
+  for (let t = 0, nt = T.length / 3; t < nt; t++) {
+    const o = 6 * t;
+    if (Bd[o]! > sc.maxX[i]! || Bd[o + 3]! < sc.minX[i]! || Bd[o + 1]! > sc.maxY[i]! || Bd[o + 4]! < sc.minY[i]! || Bd[o + 2]! > sc.maxZ[i]! || Bd[o + 5]! < sc.minZ[i]!) continue;
+    const nx = N[3 * t]!, ny = N[3 * t + 1]!, nz = N[3 * t + 2]!;
+    const a = 3 * T[3 * t]!, bb = 3 * T[3 * t + 1]!, c = 3 * T[3 * t + 2]!;
+    const d = nx * V[a]! + ny * V[a + 1]! + nz * V[a + 2]!;
+    // Behind the triangle by more than the shape's size: pushed through, let go.
+    const centre = nx * colB.px + ny * colB.py + nz * colB.pz - d;
+    if (centre < -reach || centre - reach > margin) continue;
+    out.count = 0; out.nx = nx; out.ny = ny; out.nz = nz;
+    if (colB.kind !== ColliderKind3D.Polyhedron) {
+      // Sphere or capsule: each end sphere against the triangle's closest point.
+      const hy = colB.kind === ColliderKind3D.Capsule ? colB.hy : 0, r = colB.radius;
+      for (let end = 0; end < (hy > 0 ? 2 : 1); end++) {
+        const sgn = end === 0 ? -1 : 1;
+        const px = colB.px + sgn * colB.R[1]! * hy, py = colB.py + sgn * colB.R[4]! * hy, pz = colB.pz + sgn * colB.R[7]! * hy;
+        closestOnTriangle(V, a, bb, c, px, py, pz);
+        let ux = px - triQ[0]!, uy = py - triQ[1]!, uz = pz - triQ[2]!;
+        const dist = Math.hypot(ux, uy, uz);
+        if (dist - r > margin || nx * ux + ny * uy + nz * uz < 0) continue;
+        if (dist > 1e-12) { ux /= dist; uy /= dist; uz /= dist; } else { ux = nx; uy = ny; uz = nz; }
+        if (out.count === 0) { out.nx = ux; out.ny = uy; out.nz = uz; }
+        const sep = dist - r;
+        const k = out.count++;
+        out.x[k] = triQ[0]! + ux * sep / 2; out.y[k] = triQ[1]! + uy * sep / 2; out.z[k] = triQ[2]! + uz * sep / 2; out.sep[k] = sep; out.id[k] = end;
+      }
+    } else {
+      // Polyhedron: its vertices over the triangle, below the margin.
+      const h = colB.hull!, HV = h.vertices, R = colB.R;
+      let best = -1, cnt = 0;
+      for (let v = 0, nv = HV.length / 3; v < nv; v++) {
+        const lx = HV[3 * v]!, ly = HV[3 * v + 1]!, lz = HV[3 * v + 2]!;
+        const wx = colB.px + R[0]! * lx + R[1]! * ly + R[2]! * lz, wy = colB.py + R[3]! * lx + R[4]! * ly + R[5]! * lz, wz = colB.pz + R[6]! * lx + R[7]! * ly + R[8]! * lz;
+        const sep = nx * wx + ny * wy + nz * wz - d;
+        if (sep > margin) continue;
+        // Inside the triangle's prism (barycentric signs of the projection).
+        let inside = true;
+        for (const [p, q] of [[a, bb], [bb, c], [c, a]] as const) {
+          const ex = V[q]! - V[p]!, ey = V[q + 1]! - V[p + 1]!, ez = V[q + 2]! - V[p + 2]!;
+          const qx = wx - V[p]!, qy = wy - V[p + 1]!, qz = wz - V[p + 2]!;
+          if (nx * (ey * qz - ez * qy) + ny * (ez * qx - ex * qz) + nz * (ex * qy - ey * qx) < 0) { inside = false; break; }
+        }
+        if (!inside) continue;
+        cnt++;
+        if (out.count < 4) {
+          const k = out.count++;
+          out.x[k] = wx - nx * sep / 2; out.y[k] = wy - ny * sep / 2; out.z[k] = wz - nz * sep / 2; out.sep[k] = sep; out.id[k] = v;
+        } else {
+          // Keep the four deepest.
+          best = 0;
+          for (let k = 1; k < 4; k++) if (out.sep[k]! > out.sep[best]!) best = k;
+          if (sep < out.sep[best]!) { out.x[best] = wx - nx * sep / 2; out.y[best] = wy - ny * sep / 2; out.z[best] = wz - nz * sep / 2; out.sep[best] = sep; out.id[best] = v; }
+        }
+      }
+      void cnt;
+    }
+    if (out.count > 0) emit(world, s, st, 0, b, m.entity, e, false, sc.ball[i] === 1, m.entity, t + 1);
   }
 }

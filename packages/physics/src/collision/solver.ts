@@ -9,7 +9,7 @@ import {
   warmStartManifolds,
 } from './manifold-solver.js';
 import {
-  applyManifold3DRestitution, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D, solveManifolds3D, warmStartManifolds3D,
+  applyManifold3DRestitution, finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D, solveManifolds3D, warmStartManifolds3D,
 } from './manifold3d-solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts } from './impacts.js';
@@ -57,6 +57,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0 && !manifolds3DToSolve(world)) {
     cs.contacts = storeWarmStart(cs.cache, buf);
     finishManifolds(world);
+    if (world.dimensions === 3) finishManifolds3D(world);
     return;
   }
   gatherBodies(world, buf);
@@ -105,6 +106,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   finishBodies(world, buf);
   containInBoundary(world);
   finishManifolds(world);
+  if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
   cs.contacts = storeWarmStart(cs.cache, buf);
 }
