@@ -23,6 +23,11 @@ export interface LayoutReport {
   sceneFrom: string;
   /** Fraction of the window's area the scene's box takes, in [0, 1]. */
   sceneShare: number;
+  /**
+   * How fully the scene's box spans the canvas along its tighter direction: max(scene width / canvas
+   * width, scene height / canvas height). Near 1 when the world is framed to fit (letterboxed).
+   */
+  sceneFill: number;
   /** Elements covering the scene: 'tag.class "text" at x,y wxh'. */
   overlays: string[];
   /** Things cut off: descriptions. */
@@ -104,6 +109,7 @@ export function checkLayout(page: Page): Promise<LayoutReport> {
       if (t.scrollWidth > t.clientWidth + 2) clipped.push(`${describeEl(t)}: chart title cut off`);
     }
     const share = Math.max(0, scene.width * scene.height) / (W * H);
-    return { scene, sceneFrom, sceneShare: share, overlays, clipped };
+    const fill = Math.max(scene.width / Math.max(1, cb.width), scene.height / Math.max(1, cb.height));
+    return { scene, sceneFrom, sceneShare: share, sceneFill: fill, overlays, clipped };
   });
 }

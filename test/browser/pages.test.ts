@@ -53,12 +53,41 @@ describe('every registered page', () => {
     const titles = await g.page.$$eval('#gallery a h3', (hs) => hs.map((x) => x.textContent));
     expect(titles.sort()).toEqual(served.map((e) => e.title).sort());
     // Every thumbnail must load (a missing thumbnail.png would show up as an HTTP 404 error).
-    await g.page.evaluate(async () => {
+    const undecodable = await g.page.evaluate(async () => {
+      const bad: string[] = [];
       for (const img of Array.from(document.images)) {
         img.loading = 'eager';
-        await img.decode();
+        await img.decode().catch(() => bad.push(img.src));
       }
+      return bad;
     });
+    expect(undecodable, 'thumbnails that are not pictures').toEqual([]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('on a phone the toolbar opens the info and settings drawers, the help shows touch gestures, and its buttons pause and step', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true });
+    const info = g.page.locator('.bp-info');
+    const side = g.page.locator('.bp-side');
+    expect(await info.isVisible()).toBe(false);
+    expect(await side.isVisible()).toBe(false);
+    await g.page.getByRole('button', { name: 'information and controls' }).tap();
+    expect(await info.isVisible()).toBe(true);
+    const help = await g.page.locator('.bp-legend').innerText();
+    expect(help).toContain('Tap');
+    expect(help).not.toContain('trails on / off'); // a keyboard-only control (T) is left out on touch
+    await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+    expect(await side.isVisible()).toBe(true);
+    expect(await info.isVisible()).toBe(false);
+    expect(await g.page.locator('.bp-side .lil-gui.lil-root').first().isVisible()).toBe(true);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+    expect(await side.isVisible()).toBe(false);
+    await g.page.getByRole('button', { name: 'pause / resume (P)' }).tap();
+    expect(await g.page.evaluate(() => window.game!.paused)).toBe(true);
+    const steps = (await g.stats()).steps;
+    await g.page.getByRole('button', { name: 'single step (N)' }).tap();
+    expect((await g.stats()).steps).toBe(steps + 1);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -81,8 +110,11 @@ describe('every registered page', () => {
       writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
       expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
       expect(layout.clipped).toEqual([]);
-      // The scene uses the screen: at least a fifth of the window (a wide world on a tall phone is letterboxed).
-      expect(layout.sceneShare).toBeGreaterThan(0.2);
+      // The world is framed to fit: it spans the canvas one way, less the camera's padding (a wide
+      // world on a tall phone is letterboxed above and below), and the canvas is most of the window.
+      expect(layout.sceneFill).toBeGreaterThan(0.8);
+      const canvas = await g.canvasBox();
+      expect(canvas.width * canvas.height).toBeGreaterThan(0.4 * run.viewport.width * run.viewport.height);
       await g.close();
     });
   }
