@@ -307,7 +307,7 @@ describe('setGravitation bad input', () => {
     ['negative opening angle', { openingAngle: -0.5 }, RangeError, /openingAngle must be > 0/],
     ['infinite opening angle', { openingAngle: Infinity }, RangeError, /openingAngle must be finite/],
     ['string opening angle', { openingAngle: '0.5' }, TypeError, /openingAngle must be a number/],
-    ['unknown method', { method: 'fmm' }, RangeError, /method must be 'direct' or 'barnes-hut', got "fmm"/],
+    ['unknown method', { method: 'fmm' }, RangeError, /method must be one of 'direct', 'barnes-hut', got "fmm"/],
     ['unknown option', { theta: 0.5 }, TypeError, /unknown option "theta"/],
   ])('%s', (_name, options, type, message) => {
     const run = () => setGravitation(world, options as never);
