@@ -8,7 +8,7 @@
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { addBox, createPhysicsWorld, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import {
@@ -41,6 +41,8 @@ const params = {
 const mode = choiceParam('mode', ['auto', 'sprites', 'particles'] as const, 'auto');
 
 let handles: BouncingBallsHandles;
+/** Crates dropped with X (boxes: shapes that tumble among the balls), oldest first. */
+let crates: number[] = [];
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -50,7 +52,19 @@ function createWorld(): PhysicsWorld {
   };
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
+  crates = [];
   return world;
+}
+
+/** Drops a crate (a box of about two mean ball diameters, turned a little) near the top of the box. */
+function dropCrate(): number {
+  const r = handles.meanRadius, n = crates.length;
+  const crate = addBox(shell.world, {
+    position: [4 + ((n * 2.7) % 8), 9], angle: 0.4 * ((n % 5) - 2), halfExtents: [2 * r, 1.4 * r],
+    density: 1 / (Math.PI * r * r), restitution: params.restitution, friction: params.friction,
+  });
+  crates.push(crate);
+  return crate;
 }
 
 /** Trail settings: one trail per ball up to 400 balls (36 frames long). */
@@ -67,10 +81,12 @@ const game = await startPixiGame({
     { keys: 'Drag', action: 'throw a ball' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
+    { keys: 'X', action: 'drop a crate' },
   ],
   keys: [
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
     { key: 'd', label: 'debug', action: () => setDebug(!params.debug) },
+    { key: 'x', label: 'crate', action: () => dropCrate() },
   ],
   renderer: {
     view: 'boundary',
@@ -213,6 +229,8 @@ shell.expose({
   panel,
   /** Entity ids of the balls, oldest first (a copy). */
   ballIds: (): number[] => handles.balls.slice(),
+  /** Entity ids of the crates dropped with X, oldest first (a copy). */
+  crateIds: (): number[] => crates.slice(),
   /** Ball positions, m, flat [x0, y0, x1, y1, ...] in `ballIds` order. */
   positions: (): number[] => {
     const P = shell.world.components.Position;

@@ -12,6 +12,7 @@ import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
 interface BallsGame {
   paused: boolean;
   ballIds(): number[];
+  crateIds(): number[];
   positions(): number[];
   spawn(x: number, y: number, vx?: number, vy?: number): number;
   renderer: { stats: { balls: number; frames: number } };
@@ -200,5 +201,23 @@ describe('bouncing balls', () => {
     await field('restitution').fill('0.8');
     await field('restitution').press('Enter');
     await g.waitFor(() => window.game!.stats().entities === 8 + 3, null);
+  });
+
+  it('X drops a crate, a box that falls among the balls', async () => {
+    const g = await open();
+    const before = await g.page.evaluate(() => (window.game as unknown as BallsGame).crateIds().length);
+    await g.press('x');
+    await g.waitFor((n) => (window.game as unknown as BallsGame).crateIds().length === n + 1, before);
+    const y0 = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { world: { components: { Position: { y: Float64Array } } } };
+      return game.world.components.Position.y[game.crateIds().at(-1)! % 2 ** 25]!;
+    });
+    await g.frames(20);
+    const y1 = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { world: { components: { Position: { y: Float64Array } } } };
+      return game.world.components.Position.y[game.crateIds().at(-1)! % 2 ** 25]!;
+    });
+    expect(y1).toBeLessThan(y0);
+    expect(g.errors).toEqual([]);
   });
 });
