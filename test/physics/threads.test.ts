@@ -139,3 +139,14 @@ test('a Node process with a threaded world exits by itself when its script ends,
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 30_000 });
   expect(stdout.trim()).toBe('done');
 }, 60_000);
+
+test('a NaN in a threaded world is still found and named: the parallel integrate and finiteness checks see every range', () => {
+  for (const threads of [1, 2]) {
+    const world = particleWorld(threads, false, false);
+    stepMany(world, 1);
+    // In the worker's half of the loop (thread 1 owns the upper half of the ids).
+    const e = N - 10;
+    world.components.Velocity.x[e] = NaN;
+    expect(() => stepMany(world, 1), `threads ${threads}`).toThrow(/Velocity\.x/);
+  }
+}, 60_000);

@@ -3,6 +3,8 @@ import { NonFiniteStateError } from '../errors.js';
 import { query } from '../query.js';
 import { currentHandle } from '../handles.js';
 import type { StageName, System } from './stages.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
 
 /**
  * The finiteness check `step` runs at the end of each stage: a NaN or infinity in a body's state is
@@ -119,6 +121,7 @@ function sum7(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
 type Field = readonly [name: string, values: Float64Array];
 
 const EMPTY: ArrayLike<number> = new Int32Array(0);
+const EMPTY_PARAMS: ArrayLike<number> = [];
 
 /**
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
@@ -152,7 +155,10 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
   let ents = level === 2 ? query(world, [P, V]) : EMPTY;
   if (ents.length > 0) {
     const dense = ents.length === maxId;
-    if ((is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z)) !== 0) {
+    // A world with threads splits the probe over them (threads/kernels.ts finiteProbe: the same test).
+    const par = world.threadPool === null ? null
+      : runParallel(world, `${stage} stage finiteness check`, KERNEL.finiteProbe, is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+    if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
       name(world, stage, ents, is2D
         ? [['Velocity.x', V.x], ['Velocity.y', V.y], ['Position.x', P.x], ['Position.y', P.y]]
         : [['Velocity.x', V.x], ['Velocity.y', V.y], ['Velocity.z', V.z], ['Position.x', P.x], ['Position.y', P.y], ['Position.z', P.z]]);

@@ -168,9 +168,24 @@ function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nul
   return stiff;
 }
 
+/**
+ * Finiteness probe of the step's stage checks (pipeline/finite.ts): the sum of a[e] * 0 over every
+ * array of A and every entity of the range; 0 when all are finite, NaN as soon as one is not (the
+ * order of the sum cannot change that). P unused.
+ */
+function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  let s = P.length * 0;
+  for (let j = 0; j < A.length; j++) {
+    const a = A[j] as Float64Array;
+    if (ids === null) for (let e = lo + 1; e <= hi; e++) s += a[e]! * 0;
+    else for (let i = lo; i < hi; i++) s += a[ids[i]!]! * 0;
+  }
+  return s;
+}
+
 /** Kernel numbers: the index of each kernel in `KERNELS`. */
 export const KERNEL = Object.freeze({
-  sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6,
+  sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
 });
 
 /**
@@ -191,4 +206,4 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 }
 
 /** Every kernel, indexed by `KERNEL`. */
-export const KERNELS: readonly Kernel[] = Object.freeze([sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel]);
+export const KERNELS: readonly Kernel[] = Object.freeze([sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe]);
