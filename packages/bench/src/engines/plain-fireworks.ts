@@ -83,7 +83,7 @@ export function createPlainFireworks(options: SceneRunOptions): EngineInstance {
         const K = KINDS[kind[s]!]!;
         let ax = 0, ay = g;
         if (K.drag > 0) {
-          const sp = Math.hypot(vx[s]!, vy[s]!), c = -K.drag * sp / K.mass;
+          const sp = Math.sqrt(vx[s]! * vx[s]! + vy[s]! * vy[s]!), c = -K.drag * sp / K.mass;
           ax += c * vx[s]!; ay += c * vy[s]!;
         }
         vx[s] = vx[s]! + ax * DT; vy[s] = vy[s]! + ay * DT;
