@@ -315,6 +315,27 @@ export class GamePage {
     await this.page.mouse.click(b.x + b.width * fx, b.y + b.height * fy);
   }
 
+  /**
+   * Page position (CSS px) of world point (x, y), m, through the 2D renderer's camera
+   * (`window.game.renderer.camera`, whose screen is the canvas) and the canvas' place on the page.
+   * @throws Error if the page has no such camera or no visible canvas.
+   */
+  async worldToPage(x: number, y: number): Promise<{ x: number; y: number }> {
+    const box = await this.canvasBox();
+    const s = await this.page.evaluate(([wx, wy]) => {
+      const cam = (window.game as unknown as { renderer?: { camera?: { toScreenX(v: number): number; toScreenY(v: number): number } } }).renderer?.camera;
+      if (!cam) throw new Error('window.game.renderer.camera is missing');
+      return { x: cam.toScreenX(wx!), y: cam.toScreenY(wy!) };
+    }, [x, y]);
+    return { x: box.x + s.x, y: box.y + s.y };
+  }
+
+  /** Clicks world point (x, y), m (see `worldToPage`). */
+  async clickWorld(x: number, y: number): Promise<void> {
+    const p = await this.worldToPage(x, y);
+    await this.page.mouse.click(p.x, p.y);
+  }
+
   /** Drags on the canvas from fractions `from` to `to` in `steps` mouse moves (>= 1). */
   async dragCanvas(from: [number, number], to: [number, number], steps = 8): Promise<void> {
     const b = await this.canvasBox();

@@ -133,7 +133,8 @@ describe('lab-projectile-drag', () => {
       const y0 = (window.game as unknown as LabGame).params.height as number;
       return { x: cam.toScreenX(6), y: cam.toScreenY(y0) };
     });
-    await g.page.mouse.click(target.x, target.y);
+    const box = await g.canvasBox(); // camera coordinates are the canvas'; the mouse takes the page's
+    await g.page.mouse.click(box.x + target.x, box.y + target.y);
     const after = await g.waitFor(() => {
       const w = window.game as unknown as LabGame & { ball(): number };
       if (Math.abs(w.params.angle as number) > 2) return null;
@@ -186,9 +187,10 @@ describe('lab-orbits', () => {
       return { x0: cam.toScreenX(-4), y0: cam.toScreenY(-4), x1: cam.toScreenX(-4), y1: cam.toScreenY(-1) };
     });
     const m = g.page.mouse;
-    await m.move(pts.x0, pts.y0);
+    const box = await g.canvasBox(); // camera coordinates are the canvas'; the mouse takes the page's
+    await m.move(box.x + pts.x0, box.y + pts.y0);
     await m.down();
-    await m.move(pts.x1, pts.y1, { steps: 6 });
+    await m.move(box.x + pts.x1, box.y + pts.y1, { steps: 6 });
     await m.up();
     const launched = await g.waitFor((n) => {
       const w = window.game as unknown as LabGame & { orbit: { eid: number } };
@@ -207,7 +209,7 @@ describe('lab-orbits', () => {
       const e = w.orbiters()[0]!, cam = w.renderer.camera, P = w.world.components.Position!;
       return { e, x: cam.toScreenX(P.x![e % 2 ** 25]!) + 3, y: cam.toScreenY(P.y![e % 2 ** 25]!) + 3 };
     });
-    await g.page.mouse.click(p0.x, p0.y);
+    await g.page.mouse.click(box.x + p0.x, box.y + p0.y);
     await g.waitFor((e) => (window.game as unknown as { orbit: { eid: number } }).orbit.eid === e, p0.e);
     await setNumber(g, 'G M (m³/s²)', 80);
     const mass = await g.page.evaluate(() => {
@@ -302,9 +304,10 @@ describe('lab-spring-chain', () => {
     await g.frames(2);
     const ball = await g.page.evaluate(() => (window.game as unknown as { ballOnScreen(i: number): { x: number; y: number } }).ballOnScreen(2));
     const m = g.page.mouse;
-    await m.move(ball.x, ball.y);
+    const box = await g.canvasBox(); // ballOnScreen is in canvas coordinates; the mouse takes the page's
+    await m.move(box.x + ball.x, box.y + ball.y);
     await m.down();
-    await m.move(ball.x + 60, ball.y + 20, { steps: 4 });
+    await m.move(box.x + ball.x + 60, box.y + ball.y + 20, { steps: 4 });
     const held = await g.page.evaluate(([px, py]) => {
       const w = window.game as unknown as LabGame & { grab: { ball: number; spring: number }; balls(): number[] };
       const S = w.world.components.Spring!, cam = w.renderer.camera;
@@ -406,7 +409,8 @@ describe('lab-pendulum', () => {
       const cam = (window.game as unknown as LabGame).renderer.camera;
       return { x: cam.toScreenX(1), y: cam.toScreenY(-1) };
     });
-    await g.page.mouse.click(target.x, target.y);
+    const box = await g.canvasBox(); // camera coordinates are the canvas'; the mouse takes the page's
+    await g.page.mouse.click(box.x + target.x, box.y + target.y);
     const placed = await g.waitFor(() => {
       const w = window.game as unknown as LabGame & { ids(): { bob: number } };
       if (Math.abs((w.params.amplitude as number) - 45) > 1) return null;

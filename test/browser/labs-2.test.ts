@@ -106,7 +106,8 @@ describe('labs of Part II', () => {
     const g = await h.openGame('lab-floating');
     await basics(g);
     const before = (await lab<{ handles(): { balls: number[] } }>(g, (game) => game.handles().balls.length)) as number;
-    await g.clickCanvas(0.45, 0.25);
+    // Above the water near the right wall, away from the tracked (medium) ball.
+    await g.clickWorld(12.5, 8);
     await g.waitFor((n) => ((window.game as unknown as { handles(): { balls: number[] } }).handles().balls.length === n + 1 ? true : null), before);
     // E: the tracked (medium) body at rest at the circular-segment equilibrium; upthrust balances weight, so it stays.
     await g.page.evaluate(() => { (window.game as unknown as LabGame).paused = true; });
@@ -173,10 +174,10 @@ describe('labs of Part II', () => {
     type Charges = { charges(): [number, number, number][]; fieldLineCount(): number };
     const count = async () => (await lab<Charges>(g, (game) => game.charges())) as [number, number, number][];
     expect((await count()).length).toBe(2);
-    await g.clickCanvas(0.3, 0.2);
+    await g.clickWorld(-5, 3);
     await g.waitFor(() => ((window.game as unknown as Charges).charges().length === 3 ? true : null), null);
     await g.page.keyboard.down('Shift');
-    await g.clickCanvas(0.3, 0.75);
+    await g.clickWorld(-5, -3);
     await g.page.keyboard.up('Shift');
     await g.waitFor(() => ((window.game as unknown as Charges).charges().length === 4 ? true : null), null);
     const signs = (await count()).map((c) => Math.sign(c[2]));
