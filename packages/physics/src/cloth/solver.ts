@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { pushBreak } from '../joints/state.js';
 import { currentHandle } from '../handles.js';
+import type { ClothState } from './state.js';
 
 /**
  * The cloth solver (stage 6, `constraints`): every `ClothLink` is a distance constraint solved on
@@ -34,64 +35,68 @@ export function clothSystem(world: PhysicsWorld): void {
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, vx = c.Velocity.x, vy = c.Velocity.y;
   const h = world.h, S = cl.substeps, hs = h / S, ihs = 1 / hs, ihs2 = ihs * ihs;
   const gx = world.gravity[0]!, gy = world.gravity[1]!;
-  // Gather (x, y, w, vx, vy, x_prev, y_prev) per point. Moving points restart from the start of the step
-  // with the integrator's velocity less this step's gravity (added back a substep at a time); fixed
-  // points (w = 0: pinned, static, kinematic) stay where they are.
+  // Gather the points into the buffer's sections (see ClothState.buffer). Moving points restart from the
+  // start of the step with the integrator's velocity less this step's gravity (added back a substep at a
+  // time); fixed points (w = 0: pinned, static, kinematic) stay where they are.
   const P = cl.points, np = cl.pointCount, xb = cl.buffer;
+  const W = 2 * np, Q = 3 * np, U = 5 * np;
   for (let i = 0; i < np; i++) {
-    const e = P[i]!, o = 7 * i, w = inv[e]!;
-    xb[o + 2] = w;
-    if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[o + 3] = vx[e]! - gx * h; xb[o + 4] = vy[e]! - gy * h; }
-    else { xb[o] = px[e]!; xb[o + 1] = py[e]!; xb[o + 3] = 0; xb[o + 4] = 0; }
+    const e = P[i]!, o = 2 * i, w = inv[e]!;
+    xb[W + i] = w;
+    if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[U + o] = vx[e]! - gx * h; xb[U + o + 1] = vy[e]! - gy * h; }
+    else { xb[o] = px[e]!; xb[o + 1] = py[e]!; xb[U + o] = 0; xb[U + o + 1] = 0; }
   }
+  // Per link, once a step: k_a = w_a / (w_a + w_b + alpha~), k_b likewise, and 1 / (w_a + w_b + alpha~),
+  // so that a projection takes one square root and one division.
   const I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, lam = cl.lambda;
   for (let l = 0; l < n; l++) {
-    const at = K[l]! * ihs2;
-    const w = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + at;
-    F[2 * l] = at; F[2 * l + 1] = w > 0 ? 1 / w : 0;
+    const wa = xb[W + (I[2 * l]! >> 1)]!, wb = xb[W + (I[2 * l + 1]! >> 1)]!;
+    const d = wa + wb + K[l]! * ihs2, id = d > 0 ? 1 / d : 0;
+    F[3 * l] = wa * id; F[3 * l + 1] = wb * id; F[3 * l + 2] = id;
   }
   const rigid = cl.rigidCount;
   const dvx = gx * hs, dvy = gy * hs;
   for (let sub = 0; sub < S; sub++) {
     // Velocities from the last substep's moves (from the second substep on), then predict: v += g h_s, x += v h_s.
     for (let i = 0; i < np; i++) {
-      const o = 7 * i;
-      if (xb[o + 2] === 0) continue;
-      const x = xb[o]!, y = xb[o + 1]!;
+      if (xb[W + i] === 0) continue;
+      const o = 2 * i, x = xb[o]!, y = xb[o + 1]!;
       let v1: number, v2: number;
-      if (sub > 0) { v1 = (x - xb[o + 5]!) * ihs + dvx; v2 = (y - xb[o + 6]!) * ihs + dvy; }
-      else { v1 = xb[o + 3]! + dvx; v2 = xb[o + 4]! + dvy; }
-      xb[o + 5] = x; xb[o + 6] = y;
+      if (sub > 0) { v1 = (x - xb[Q + o]!) * ihs + dvx; v2 = (y - xb[Q + o + 1]!) * ihs + dvy; }
+      else { v1 = xb[U + o]! + dvx; v2 = xb[U + o + 1]! + dvy; }
+      xb[Q + o] = x; xb[Q + o + 1] = y;
       xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
     }
     // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
     for (let l = 0; l < rigid; l++) {
       const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-      const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
+      const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
+      const dx = bx - ax, dy = by - ay;
       const L = Math.sqrt(dx * dx + dy * dy);
       if (L < 1e-12) continue;
-      const s = (R[l]! - L) * F[2 * l + 1]! / L, wa = xb[oa + 2]! * s, wb = xb[ob + 2]! * s;
-      xb[oa] = xb[oa]! - wa * dx; xb[oa + 1] = xb[oa + 1]! - wa * dy;
-      xb[ob] = xb[ob]! + wb * dx; xb[ob + 1] = xb[ob + 1]! + wb * dy;
+      const s = (R[l]! - L) / L, sa = F[3 * l]! * s, sb = F[3 * l + 1]! * s;
+      xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
+      xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
     }
+    const last = sub === S - 1;
     for (let l = rigid; l < n; l++) {
       const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-      const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
+      const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
+      const dx = bx - ax, dy = by - ay;
       const L = Math.sqrt(dx * dx + dy * dy);
       if (L < 1e-12) continue;
-      const dl = (R[l]! - L) * F[2 * l + 1]!;
-      lam[l] = dl;
-      const s = dl / L, wa = xb[oa + 2]! * s, wb = xb[ob + 2]! * s;
-      xb[oa] = xb[oa]! - wa * dx; xb[oa + 1] = xb[oa + 1]! - wa * dy;
-      xb[ob] = xb[ob]! + wb * dx; xb[ob + 1] = xb[ob + 1]! + wb * dy;
+      const c = R[l]! - L;
+      if (last) lam[l] = c * F[3 * l + 2]!;
+      const s = c / L, sa = F[3 * l]! * s, sb = F[3 * l + 1]! * s;
+      xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
+      xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
     }
   }
   for (let i = 0; i < np; i++) {
-    const o = 7 * i;
-    if (xb[o + 2] === 0) continue;
-    const e = P[i]!;
+    if (xb[W + i] === 0) continue;
+    const e = P[i]!, o = 2 * i;
     px[e] = xb[o]!; py[e] = xb[o + 1]!;
-    vx[e] = (xb[o]! - xb[o + 5]!) * ihs; vy[e] = (xb[o + 1]! - xb[o + 6]!) * ihs;
+    vx[e] = (xb[o]! - xb[Q + o]!) * ihs; vy[e] = (xb[o + 1]! - xb[Q + o + 1]!) * ihs;
   }
   let maxStretch = 0;
   let doomed: number[] | null = null;
@@ -124,14 +129,14 @@ function pack(world: PhysicsWorld): void {
     const cap = Math.max(16, n * 2);
     cl.link = new Int32Array(cap); cl.pair = new Int32Array(2 * cap);
     cl.rest = new Float64Array(cap); cl.compliance = new Float64Array(cap); cl.tear = new Float64Array(cap);
-    cl.lambda = new Float64Array(cap); cl.solve = new Float64Array(2 * cap);
+    cl.lambda = new Float64Array(cap); cl.solve = new Float64Array(3 * cap);
   }
   if (cl.seen.length < world.capacity + 1) { cl.seen = new Uint32Array(world.capacity + 1); cl.compact = new Int32Array(world.capacity + 1); }
   const seen = cl.seen, compact = cl.compact, stamp = ++cl.seenStamp;
   const points: number[] = [];
   const index = (e: number): number => {
     if (seen[e] !== stamp) { seen[e] = stamp; compact[e] = points.length; points.push(e); }
-    return compact[e]! * 7;
+    return compact[e]! * 2;
   };
   // Inextensible links go first, the compliant ones after (see clothSystem).
   let front = 0, back = n - 1;
@@ -141,12 +146,51 @@ function pack(world: PhysicsWorld): void {
     cl.link[k] = e; cl.pair[2 * k] = index(L.a[e]!); cl.pair[2 * k + 1] = index(L.b[e]!);
     cl.rest[k] = L.restLength[e]!; cl.compliance[k] = L.compliance[e]!; cl.tear[k] = L.tearStretch[e]!;
   }
+  colourOrder(cl, 0, front, points.length);
+  colourOrder(cl, front, n, points.length);
   cl.rigidCount = front;
   cl.count = n;
   cl.points = Int32Array.from(points);
   cl.pointCount = points.length;
   if (cl.buffer.length < 7 * points.length) cl.buffer = new Float64Array(7 * points.length);
   cl.built = cl.version;
+}
+
+/**
+ * Reorders the packed links [from, to) by colour: a greedy colouring gives each link the smallest colour
+ * that neither of its points has yet, and the links are then laid out colour by colour (in their old
+ * order within a colour). Consecutive links of one colour share no point, so a projection need not wait
+ * for the one before it to store its point: the solver's pass runs several at once, about twice as fast
+ * on a 64 x 64 cloth. Each point still sees its links in one fixed order (Gauss-Seidel, as before).
+ */
+function colourOrder(cl: ClothState, from: number, to: number, pointCount: number): void {
+  const m = to - from;
+  if (m < 2) return;
+  const used = new Uint32Array(pointCount * 2); // per point: a bit for each of colours 0..63 taken
+  const colour = new Int32Array(m);
+  let colours = 0;
+  for (let k = 0; k < m; k++) {
+    const a = cl.pair[2 * (from + k)]! >> 1, b = cl.pair[2 * (from + k) + 1]! >> 1;
+    let c = 0;
+    for (; c < 64; c++) {
+      const word = c >> 5, bit = 1 << (c & 31);
+      if (((used[2 * a + word]! | used[2 * b + word]!) & bit) === 0) break;
+    }
+    if (c < 64) { const word = c >> 5, bit = 1 << (c & 31); used[2 * a + word]! |= bit; used[2 * b + word]! |= bit; }
+    else c = 63; // more than 63 links at a point: the rest share the last colour (still correct, only slower)
+    colour[k] = c;
+    if (c + 1 > colours) colours = c + 1;
+  }
+  const start = new Int32Array(colours + 1);
+  for (let k = 0; k < m; k++) start[colour[k]! + 1]!++;
+  for (let c = 0; c < colours; c++) start[c + 1]! += start[c]!;
+  const link = cl.link.slice(from, to), pair = cl.pair.slice(2 * from, 2 * to);
+  const rest = cl.rest.slice(from, to), comp = cl.compliance.slice(from, to), tear = cl.tear.slice(from, to);
+  for (let k = 0; k < m; k++) {
+    const j = from + start[colour[k]!]!++;
+    cl.link[j] = link[k]!; cl.pair[2 * j] = pair[2 * k]!; cl.pair[2 * j + 1] = pair[2 * k + 1]!;
+    cl.rest[j] = rest[k]!; cl.compliance[j] = comp[k]!; cl.tear[j] = tear[k]!;
+  }
 }
 
 /** Bookkeeping of a cloth link's removal (the caller removes the entity): uncount it from its points, repack. */
