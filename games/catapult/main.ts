@@ -1,0 +1,172 @@
+/**
+ * Catapult: drag back from the catapult's cup and release to throw a stone at a castle of posts,
+ * planks and stones glued by breakable welds. A dashed arc shows the drag-free path. Score: 100 a
+ * fallen piece, 25 a broken weld; a few shots a level, four seeded levels.
+ *
+ * Input: drag from the cup and release. Keys: L next level, R reset the level, P pause, N step.
+ * URL: ?level=1..4, ?seed=S.
+ */
+import { Graphics, Text } from 'pixi.js';
+import { createPhysicsWorld, setGravity, slotOf, isAlive, type PhysicsWorld } from '@bitphysics/physics';
+import { startPixiGame } from '../shared/pixi';
+import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import { createReadout } from '../shared/lab-kit';
+import {
+  LAUNCH, LEVEL_COUNT, PULL, buildLevel, launch, launchVelocity, predictArc, tally, worldOptions, type Level, type Tally,
+} from './scene';
+
+const params = {
+  level: numberParam('level', { default: 1, min: 1, max: LEVEL_COUNT, integer: true }),
+  seed: seedParam(),
+  projectileMass: 3,
+  gravity: 9.81,
+  jointStrength: 400,
+  reset: () => game.shell.reset(),
+  next: () => nextLevel(),
+};
+
+let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0 };
+let shotsLeft = 0;
+let shots: number[] = [];
+let best: Tally = { fallen: 0, broken: 0, score: 0 };
+let lastShotTime = 0;
+
+/** A fresh world with the current level (the shell calls it at start and on R). */
+function createWorld(): PhysicsWorld {
+  const world = createPhysicsWorld(worldOptions(params));
+  lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
+  shotsLeft = lv.shots; shots = []; best = { fallen: 0, broken: 0, score: 0 }; lastShotTime = 0;
+  return world;
+}
+
+function nextLevel(): void {
+  params.level = (params.level % LEVEL_COUNT) + 1;
+  game.shell.reset();
+}
+
+const game = await startPixiGame({
+  title: 'Catapult',
+  createWorld,
+  bodies: () => lv.pieces.length + shots.length,
+  controls: [
+    { keys: 'Drag', action: 'pull back from the catapult, release to throw' },
+    { keys: 'L', action: 'next level' },
+  ],
+  keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
+  renderer: { view: { minX: -4, minY: -1, maxX: 30, maxY: 14 } },
+  onFrame: (_alpha, world) => draw(world),
+});
+const { shell, renderer, app } = game;
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: LEVEL_COUNT, step: 1, onRelease: true, onChange: () => shell.reset() },
+  { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
+  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 1, max: 30, step: 0.01, onChange: (g) => setGravity(shell.world, [0, -g]) },
+  { type: 'slider', key: 'jointStrength', label: 'joint strength (N, rebuilds)', min: 50, max: 3000, step: 10, onRelease: true, onChange: () => shell.reset() },
+  { type: 'button', key: 'reset', label: 'reset level (R)' },
+  { type: 'button', key: 'next', label: 'next level (L)' },
+], { title: 'Catapult' });
+
+const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
+
+// Aiming: press near the cup, drag back, release.
+const aim = { active: false, dx: 0, dy: 0 };
+const pointer = { x: 0, y: 0 };
+const toWorld = (e: PointerEvent): [number, number] => {
+  pointerOnCanvas(app.canvas, e, pointer);
+  return [renderer.camera.toWorldX(pointer.x), renderer.camera.toWorldY(pointer.y)];
+};
+app.canvas.addEventListener('pointerdown', (e) => {
+  const [x, y] = toWorld(e);
+  if (shotsLeft <= 0 || Math.hypot(x - LAUNCH.x, y - LAUNCH.y) > 2.5) return;
+  aim.active = true; aim.dx = x - LAUNCH.x; aim.dy = y - LAUNCH.y;
+  app.canvas.setPointerCapture(e.pointerId);
+});
+app.canvas.addEventListener('pointermove', (e) => {
+  if (!aim.active) return;
+  const [x, y] = toWorld(e);
+  aim.dx = x - LAUNCH.x; aim.dy = y - LAUNCH.y;
+});
+const release = (): void => {
+  if (!aim.active) return;
+  aim.active = false;
+  fire(aim.dx, aim.dy);
+};
+app.canvas.addEventListener('pointerup', release);
+app.canvas.addEventListener('pointercancel', () => { aim.active = false; });
+
+/** Throws with the pull (dx, dy), m, if shots are left and the pull is long enough (0.3 m). */
+function fire(dx: number, dy: number): number {
+  if (shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
+  const [vx, vy] = launchVelocity(dx, dy);
+  const ball = launch(shell.world, vx, vy, params.projectileMass);
+  shots.push(ball); shotsLeft--; lastShotTime = shell.world.time;
+  return ball;
+}
+
+const overlay = new Graphics({ label: 'catapult' });
+const banner = new Text({ text: '', style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', align: 'center', stroke: { color: 0x000000, width: 4 } } });
+banner.anchor.set(0.5, 0);
+renderer.root.addChild(overlay, banner);
+
+/** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
+function levelOver(world: PhysicsWorld, t: Tally): boolean {
+  return t.fallen === lv.pieces.length || (shotsLeft === 0 && world.time - lastShotTime > 4);
+}
+
+function draw(world: PhysicsWorld): void {
+  const cam = renderer.camera, sx = (x: number) => cam.toScreenX(x), sy = (y: number) => cam.toScreenY(y);
+  overlay.clear();
+  // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
+  overlay.moveTo(sx(LAUNCH.x - 0.6), sy(0.9)).lineTo(sx(LAUNCH.x), sy(LAUNCH.y)).lineTo(sx(LAUNCH.x + 0.3), sy(0.9))
+    .stroke({ width: 6, color: 0x8d5a2b });
+  overlay.circle(sx(LAUNCH.x), sy(LAUNCH.y), Math.abs(sx(0.35) - sx(0))).stroke({ width: 2, color: 0xffd166 });
+  if (aim.active) {
+    const d = Math.hypot(aim.dx, aim.dy), k = d > PULL.max ? PULL.max / d : 1;
+    const hx = LAUNCH.x + aim.dx * k, hy = LAUNCH.y + aim.dy * k;
+    overlay.moveTo(sx(LAUNCH.x), sy(LAUNCH.y)).lineTo(sx(hx), sy(hy)).stroke({ width: 3, color: 0xe76f51 });
+    overlay.circle(sx(hx), sy(hy), 6).fill({ color: 0xe76f51 });
+    const [vx, vy] = launchVelocity(aim.dx, aim.dy);
+    const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
+    for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 2.5).fill({ color: 0xffffff, alpha: 0.8 });
+  }
+  const t = tally(world, lv);
+  if (t.score > best.score) best = t;
+  // Fallen pieces get a red ring: what scored.
+  const P = world.components.Position;
+  for (const p of lv.pieces) {
+    if (!isAlive(world, p.body)) continue;
+    const s = slotOf(p.body);
+    if (P.y[s]! < p.startY - 0.6) overlay.circle(sx(P.x[s]!), sy(P.y[s]!), 5).fill({ color: 0xe63946 });
+  }
+  readout.set(0, `${params.level} / ${LEVEL_COUNT}`);
+  readout.set(1, String(shotsLeft));
+  readout.set(2, String(t.score));
+  readout.set(3, `${t.fallen} / ${lv.pieces.length}`);
+  readout.set(4, `${t.broken} / ${lv.joints.length}`);
+  banner.x = app.screen.width / 2; banner.y = 16;
+  if (levelOver(world, t)) {
+    const share = t.fallen / Math.max(1, lv.pieces.length);
+    const stars = share >= 0.9 ? '★★★' : share >= 0.6 ? '★★☆' : share >= 0.3 ? '★☆☆' : '☆☆☆';
+    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nscore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\nL: next level   R: try again`;
+  } else banner.text = `Score ${t.score}   shots ${shotsLeft}`;
+}
+
+// window.game: the shell (stats, pause, step, reset) plus what tests and the console need.
+shell.expose({
+  params,
+  panel,
+  /** The level's tally now. */
+  tally: (): Tally => tally(shell.world, lv),
+  /** Shots left, and the thrown projectiles' handles. */
+  shotsLeft: (): number => shotsLeft,
+  shots: (): number[] => [...shots],
+  /** The level (pieces, joints, castle extent). */
+  level: (): Level => lv,
+  /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
+  fire,
+  /** Position of a body by handle, m (tests). */
+  positionOf: (h: number): [number, number] => [shell.world.components.Position.x[slotOf(h)]!, shell.world.components.Position.y[slotOf(h)]!],
+  /** Steps the world n times (tests). */
+  advance: (n: number) => { for (let i = 0; i < n; i++) shell.step(); },
+});

@@ -1,0 +1,200 @@
+/**
+ * Catapult, the rules (no DOM, no pixi; they run in Node and in tests): seeded castle levels of
+ * posts, planks and round stones glued by breakable weld joints, the launch from a pull, the
+ * drag-free predicted arc, and the score.
+ *
+ * Units: metres, seconds, kilograms. The ground's top is y = 0 from x = GROUND.minX to GROUND.maxX;
+ * the catapult throws from LAUNCH. Score: FALL_POINTS for every castle piece that fell (its centre
+ * more than FALL_DROP below where it started, or off the ground's end) and BREAK_POINTS for every
+ * weld joint that broke.
+ */
+import {
+  Rng, addBody, addBox, addWeldJoint, slotOf, isAlive, type PhysicsWorld, type PhysicsWorldOptions,
+} from '@bitphysics/physics';
+
+/** Where the projectile leaves the catapult (its cup), m. */
+export const LAUNCH = { x: 0, y: 1.5 } as const;
+/** The ground: a static slab whose top is y = 0, from minX to maxX, m. */
+export const GROUND = { minX: -6, maxX: 34 } as const;
+/** Longest pull, m, and launch speed per metre of pull, 1/s: the top speed is 3 x 9 = 27 m/s. */
+export const PULL = { max: 3, gain: 9 } as const;
+/** Projectile radius, m. */
+export const PROJECTILE_RADIUS = 0.3;
+/** Drop (m) below its start past which a castle piece counts as fallen. */
+export const FALL_DROP = 0.6;
+/** Points for a fallen piece and for a broken joint. */
+export const FALL_POINTS = 100;
+export const BREAK_POINTS = 25;
+/** Number of levels. */
+export const LEVEL_COUNT = 4;
+
+/** Options of a level. */
+export interface LevelOptions {
+  /** Level index, integer in [0, LEVEL_COUNT). */
+  level: number;
+  /** Seed of the castle's variations. */
+  seed: number;
+  /** Gravity, m/s^2 downwards, > 0. */
+  gravity: number;
+  /** Force past which a weld joint breaks, N, > 0 (torque limit: this x 0.25 m). */
+  jointStrength: number;
+}
+
+/** One castle piece: its body and where it started. */
+export interface Piece { body: number; startX: number; startY: number; kind: 'post' | 'plank' | 'block' | 'stone' }
+
+/** What a level holds. */
+export interface Level {
+  /** Castle pieces. */
+  pieces: Piece[];
+  /** Weld joints built (handles). */
+  joints: number[];
+  /** Shots the player has at the start. */
+  shots: number;
+  /** Left and right end of the castle, m (for aiming and framing). */
+  castleMinX: number;
+  castleMaxX: number;
+}
+
+/** The world options: 2D, 4 contact substeps, room for the castle and shots. */
+export function worldOptions(o: { gravity: number }): PhysicsWorldOptions {
+  return { dimensions: 2, capacity: 1000, gravity: [0, -o.gravity], sleep: false };
+}
+
+/**
+ * Builds level `o.level` into an empty `world`: the ground and a castle of seeded towers.
+ * Level 0: one tower of two storeys; 1: two towers with a bridge plank; 2: three towers of three
+ * storeys with stones; 3: a fortress of four towers, four storeys, heavier stones.
+ * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
+ */
+export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
+  if (!Number.isInteger(o.level) || o.level < 0 || o.level >= LEVEL_COUNT) {
+    throw new RangeError(`buildLevel: level must be an integer in [0, ${LEVEL_COUNT}), got ${o.level}`);
+  }
+  addBox(world, { position: [(GROUND.minX + GROUND.maxX) / 2, -0.5], halfExtents: [(GROUND.maxX - GROUND.minX) / 2, 0.5], static: true, friction: 0.9 });
+  // The catapult's mound (static, under the cup).
+  addBox(world, { position: [LAUNCH.x - 0.4, 0.45], halfExtents: [0.5, 0.45], static: true, friction: 0.9 });
+  const rng = new Rng(o.seed * 7919 + o.level);
+  const lv: Level = { pieces: [], joints: [], shots: [3, 3, 4, 5][o.level]!, castleMinX: Infinity, castleMaxX: -Infinity };
+  const towers = [1, 2, 3, 4][o.level]!, storeys = [2, 2, 3, 4][o.level]!;
+  const x0 = [18, 17, 16, 15][o.level]! + rng.range(-1, 1);
+  const span = 2.4; // width of a storey: two posts under a plank
+  const weld = (a: number, b: number, anchor: [number, number]): void => {
+    lv.joints.push(addWeldJoint(world, { a, b, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
+  };
+  const piece = (body: number, kind: Piece['kind']): number => {
+    const P = world.components.Position, s = slotOf(body);
+    lv.pieces.push({ body, startX: P.x[s]!, startY: P.y[s]!, kind });
+    return body;
+  };
+  const POST = { hx: 0.15, hy: 0.6 }, PLANK = { hx: span / 2 + 0.2, hy: 0.12 };
+  for (let t = 0; t < towers; t++) {
+    const cx = x0 + t * (span + 1.2);
+    let y = 0, below: number[] = [];
+    for (let s = 0; s < storeys; s++) {
+      const base = y;
+      const posts: number[] = [];
+      for (const side of [-1, 1]) {
+        const px = cx + side * (span / 2 - POST.hx);
+        const post = piece(addBox(world, { position: [px, y + POST.hy], halfExtents: [POST.hx, POST.hy], density: 2, friction: 0.7 }), 'post');
+        posts.push(post);
+        // Glue the post to the plank under it.
+        if (below.length) weld(below[0]!, post, [px, y]);
+      }
+      y += 2 * POST.hy;
+      const plank = piece(addBox(world, { position: [cx, y + PLANK.hy], halfExtents: [PLANK.hx, PLANK.hy], density: 2, friction: 0.7 }), 'plank');
+      for (const post of posts) weld(post, plank, [world.components.Position.x[slotOf(post)]!, y]);
+      y += 2 * PLANK.hy;
+      below = [plank];
+      // A block in the middle of some storeys, from the seed.
+      if (s > 0 && rng.next() < 0.5) piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block');
+    }
+    // Crown: a stone (or two) on the top plank.
+    const stones = o.level >= 2 ? 2 : 1;
+    for (let k = 0; k < stones; k++) {
+      const r = 0.3 + 0.05 * o.level;
+      piece(addBody(world, { position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01], radius: r, mass: 2 + o.level, friction: 0.8, restitution: 0.1 }), 'stone');
+    }
+    lv.castleMinX = Math.min(lv.castleMinX, cx - span / 2 - 0.2);
+    lv.castleMaxX = Math.max(lv.castleMaxX, cx + span / 2 + 0.2);
+    // A bridge plank between neighbouring towers' roofs, welded to both.
+    if (t > 0) {
+      const prevRoof = lv.pieces.filter((p) => p.kind === 'plank' && Math.abs(p.startY - (y - PLANK.hy)) < 1e-6);
+      const a = prevRoof[prevRoof.length - 2], b = prevRoof[prevRoof.length - 1];
+      if (a && b) {
+        const mid = (a.startX + b.startX) / 2;
+        const bridge = piece(addBox(world, { position: [mid, y + 0.12], halfExtents: [0.75, 0.12], density: 2, friction: 0.7 }), 'plank');
+        weld(a.body, bridge, [mid - 0.6, y]); weld(b.body, bridge, [mid + 0.6, y]);
+      }
+    }
+  }
+  return lv;
+}
+
+/**
+ * Launch velocity for a pull: the pointer dragged back from the cup by (dx, dy), m, throws the
+ * other way at speed PULL.gain x |pull| (the pull capped at PULL.max). @returns [vx, vy], m/s.
+ */
+export function launchVelocity(dx: number, dy: number): [number, number] {
+  const d = Math.hypot(dx, dy);
+  if (!(d > 0)) return [0, 0];
+  const k = (PULL.gain * Math.min(d, PULL.max)) / d;
+  return [-dx * k, -dy * k];
+}
+
+/** The pull (dx, dy), m, that throws at `speed` (m/s, at most PULL.gain x PULL.max) and `angle` (rad above the +x axis). */
+export function pullFor(speed: number, angle: number): [number, number] {
+  const d = speed / PULL.gain;
+  return [-d * Math.cos(angle), -d * Math.sin(angle)];
+}
+
+/**
+ * Launch angle (rad, the low one, <= pi/4) that carries a drag-free projectile a horizontal `range`
+ * (m) back to its launch height at `speed` (m/s) under gravity g: sin(2 theta) = g R / v^2.
+ * @returns NaN if the range is out of reach (g R > v^2).
+ */
+export function angleForRange(range: number, speed: number, g: number): number {
+  const s = (g * range) / (speed * speed);
+  return s > 1 ? Number.NaN : 0.5 * Math.asin(s);
+}
+
+/**
+ * The drag-free predicted path from (x0, y0) at (vx, vy) under g: `count` points [x, y] every `dt`
+ * seconds (x = x0 + vx t, y = y0 + vy t - g t^2 / 2), stopping below the ground (y < 0).
+ */
+export function predictArc(x0: number, y0: number, vx: number, vy: number, g: number, count = 40, dt = 0.06): Array<[number, number]> {
+  const out: Array<[number, number]> = [];
+  for (let i = 0; i < count; i++) {
+    const t = i * dt, y = y0 + vy * t - 0.5 * g * t * t;
+    out.push([x0 + vx * t, y]);
+    if (y < 0) break;
+  }
+  return out;
+}
+
+/** Adds a projectile at the cup with velocity (vx, vy), m/s, and mass (kg, > 0). @returns its handle. */
+export function launch(world: PhysicsWorld, vx: number, vy: number, mass: number): number {
+  return addBody(world, { position: [LAUNCH.x, LAUNCH.y], velocity: [vx, vy], radius: PROJECTILE_RADIUS, mass, friction: 0.6, restitution: 0.2 });
+}
+
+/** A tally of the level: pieces fallen, joints broken (counted by `countBreaks`), score. */
+export interface Tally { fallen: number; broken: number; score: number }
+
+/** Whether a piece has fallen: dropped FALL_DROP below its start, off the ground's end, or removed. */
+export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
+  if (!isAlive(world, p.body)) return true;
+  const s = slotOf(p.body), P = world.components.Position;
+  const x = P.x[s]!, y = P.y[s]!;
+  return y < p.startY - FALL_DROP || x < GROUND.minX || x > GROUND.maxX || y < -1;
+}
+
+/**
+ * The tally now. `broken` is the count of weld joints of the level no longer alive (broken ones are
+ * removed by the solver). Score = FALL_POINTS x fallen + BREAK_POINTS x broken.
+ */
+export function tally(world: PhysicsWorld, lv: Level): Tally {
+  let fallen = 0, broken = 0;
+  for (const p of lv.pieces) if (hasFallen(world, p)) fallen++;
+  for (const j of lv.joints) if (!isAlive(world, j)) broken++;
+  return { fallen, broken, score: fallen * FALL_POINTS + broken * BREAK_POINTS };
+}

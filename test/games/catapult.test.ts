@@ -1,0 +1,71 @@
+/**
+ * Catapult rules (games/catapult/scene.ts), headless: castles stand under their own weight, a throw at
+ * the angle from sin(2 theta) = g R / v^2 lands at the drag-free range, and a strong hit on the castle
+ * breaks welds and scores.
+ */
+import { describe, expect, it } from 'vitest';
+import { createPhysicsWorld, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { LAUNCH, LEVEL_COUNT, angleForRange, buildLevel, launch, launchVelocity, pullFor, tally, worldOptions } from '../../games/catapult/scene';
+
+const G = 9.81;
+function level(n: number, jointStrength = 400): { w: PhysicsWorld; lv: ReturnType<typeof buildLevel> } {
+  const w = createPhysicsWorld(worldOptions({ gravity: G }));
+  return { w, lv: buildLevel(w, { level: n, seed: 1, gravity: G, jointStrength }) };
+}
+
+describe('catapult rules', () => {
+  it('every castle stands for 3 s under its own weight: nothing falls, no weld breaks', () => {
+    for (let n = 0; n < LEVEL_COUNT; n++) {
+      const { w, lv } = level(n);
+      for (let i = 0; i < 180; i++) step(w);
+      expect(tally(w, lv)).toEqual({ fallen: 0, broken: 0, score: 0 });
+    }
+  });
+
+  it('a throw at the computed angle lands at v^2 sin(2 theta) / g and reaches the castle', () => {
+    // Empty sky (level 0's castle is at x > 16 m; the range aimed at is 12 m): the landing x where the
+    // projectile comes back down through its launch height, interpolated between steps.
+    const { w } = level(0);
+    const v = 15, R = 12, theta = angleForRange(R, v, G);
+    const [px, py] = pullFor(v, theta);
+    const [vx, vy] = launchVelocity(px, py);
+    expect(Math.hypot(vx, vy)).toBeCloseTo(v, 12);
+    const ball = launch(w, vx, vy, 3);
+    const P = w.components.Position, s = slotOf(ball);
+    let prevX: number = LAUNCH.x, prevY: number = LAUNCH.y, land = Number.NaN;
+    for (let i = 0; i < 600 && Number.isNaN(land); i++) {
+      step(w);
+      const x = P.x[s]!, y = P.y[s]!;
+      if (i > 2 && prevY >= LAUNCH.y && y < LAUNCH.y) land = prevX + ((x - prevX) * (prevY - LAUNCH.y)) / (prevY - y);
+      prevX = x; prevY = y;
+    }
+    // Drag-free: the time stepping alone differs from the parabola, by O(dt) in the flight time;
+    // tolerance: the distance travelled in one step, vx dt (0.24 m here), 2% of the range.
+    expect(Math.abs(land - LAUNCH.x - R)).toBeLessThan(vx * w.dt);
+
+    // Aimed at the castle's front (a longer range at 24 m/s), the throw hits it: pieces fall.
+    const h = level(0);
+    for (let i = 0; i < 60; i++) step(h.w);
+    const R2 = h.lv.castleMinX + 0.5 - LAUNCH.x, th2 = angleForRange(R2, 24, G);
+    launch(h.w, 24 * Math.cos(th2), 24 * Math.sin(th2), 3);
+    for (let i = 0; i < 300; i++) step(h.w);
+    expect(tally(h.w, h.lv).fallen).toBeGreaterThan(0);
+  });
+
+  it('a strong hit breaks welds and scores 100 a fallen piece and 25 a broken weld', () => {
+    const { w, lv } = level(2);
+    for (let i = 0; i < 60; i++) step(w);
+    const R = lv.castleMinX + 0.5 - LAUNCH.x, th = angleForRange(R, 26, G);
+    launch(w, 26 * Math.cos(th), 26 * Math.sin(th), 8);
+    for (let i = 0; i < 300; i++) step(w);
+    const t = tally(w, lv);
+    expect(t.broken).toBeGreaterThan(0);
+    expect(t.fallen).toBeGreaterThan(0);
+    expect(t.score).toBe(100 * t.fallen + 25 * t.broken);
+  });
+
+  it('rejects a level out of range', () => {
+    const w = createPhysicsWorld(worldOptions({ gravity: G }));
+    expect(() => buildLevel(w, { level: LEVEL_COUNT, seed: 1, gravity: G, jointStrength: 400 })).toThrow(/buildLevel: level must be an integer/);
+  });
+});
