@@ -73,37 +73,16 @@ function quad(t: Float64Array, o: number, x: number, y: number, z: number): numb
 
 /** World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds. */
 export function prepareManifolds3D(world: PhysicsWorld): void {
-  const st = contact3DStateOf(world);
-  if (st === undefined) return;
+  const st = contact3DStateOf(world, true);
+  prepareSolverBodies3D(world);
   const cs = world.collision, buf = st.current, n = buf.count;
   const count = cs.solverBodyCount;
-  if (st.invInertia.length < 6 * count) { st.invInertia = new Float64Array(12 * count); st.rotationBase = new Float64Array(6 * count); }
-  const c = world.components, list = cs.solverBodies, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia, base = st.rotationBase;
+  const c = world.components, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia;
   const set = cs.settings, hs = world.h / set.solverSubsteps;
   const hertz = Math.min(set.contactHertz, HERTZ_FRACTION / hs);
   makeSoftInto(soft, hertz, set.contactDampingRatio, hs);
   makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
-  const Q = c.Orientation, IT = c.InertiaTensor;
-  const hasT = IT.invX.length > 0;
-  T.fill(0, 0, 6);
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!, o = 6 * k;
-    base[3 * k] = ex[6 * k + 3]!; base[3 * k + 1] = ex[6 * k + 4]!; base[3 * k + 2] = ex[6 * k + 5]!;
-    const ii = sb[12 * k + 10]!;
-    if (!(ii > 0)) { T.fill(0, o, o + 6); continue; }
-    const ix = hasT ? IT.invX[e]! : 0, iy = hasT ? IT.invY[e]! : 0, iz = hasT ? IT.invZ[e]! : 0;
-    if (ix === 0 && iy === 0 && iz === 0 || !(Q.w.length > e)) { T[o] = ii; T[o + 1] = ii; T[o + 2] = ii; T[o + 3] = 0; T[o + 4] = 0; T[o + 5] = 0; continue; }
-    const x = Q.x[e]!, y = Q.y[e]!, z = Q.z[e]!, w = Q.w[e]!;
-    const r00 = 1 - 2 * (y * y + z * z), r01 = 2 * (x * y - z * w), r02 = 2 * (x * z + y * w);
-    const r10 = 2 * (x * y + z * w), r11 = 1 - 2 * (x * x + z * z), r12 = 2 * (y * z - x * w);
-    const r20 = 2 * (x * z - y * w), r21 = 2 * (y * z + x * w), r22 = 1 - 2 * (x * x + y * y);
-    T[o] = r00 * r00 * ix + r01 * r01 * iy + r02 * r02 * iz;
-    T[o + 1] = r10 * r10 * ix + r11 * r11 * iy + r12 * r12 * iz;
-    T[o + 2] = r20 * r20 * ix + r21 * r21 * iy + r22 * r22 * iz;
-    T[o + 3] = r00 * r10 * ix + r01 * r11 * iy + r02 * r12 * iz;
-    T[o + 4] = r00 * r20 * ix + r01 * r21 * iy + r02 * r22 * iz;
-    T[o + 5] = r10 * r20 * ix + r11 * r21 * iy + r12 * r22 * iz;
-  }
+  void count;
   if (n === 0) return;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   for (let i = 0; i < n; i++) {
@@ -131,6 +110,40 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const dvz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
       buf.vn0[q] = dvx * nx + dvy * ny + dvz * nz;
     }
+  }
+}
+
+/**
+ * The world inverse inertia tensor of every solver body (I^-1 = R diag(1 / I_k) R^T with R from its
+ * orientation; isotropic for a ball) and its rotation owed at the start of the solve (rotations in the
+ * substeps are measured from it). Shared by the 3D contact and joint rows.
+ */
+export function prepareSolverBodies3D(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world, true);
+  const cs = world.collision;
+  const count = cs.solverBodyCount;
+  if (st.invInertia.length < 6 * count) { st.invInertia = new Float64Array(12 * count); st.rotationBase = new Float64Array(6 * count); }
+  const c = world.components, list = cs.solverBodies, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia, base = st.rotationBase;
+  const Q = c.Orientation, IT = c.InertiaTensor;
+  const hasT = IT.invX.length > 0;
+  T.fill(0, 0, 6);
+  for (let k = 1; k < count; k++) {
+    const e = list[k]!, o = 6 * k;
+    base[3 * k] = ex[6 * k + 3]!; base[3 * k + 1] = ex[6 * k + 4]!; base[3 * k + 2] = ex[6 * k + 5]!;
+    const ii = sb[12 * k + 10]!;
+    if (!(ii > 0)) { T.fill(0, o, o + 6); continue; }
+    const ix = hasT ? IT.invX[e]! : 0, iy = hasT ? IT.invY[e]! : 0, iz = hasT ? IT.invZ[e]! : 0;
+    if (ix === 0 && iy === 0 && iz === 0 || !(Q.w.length > e)) { T[o] = ii; T[o + 1] = ii; T[o + 2] = ii; T[o + 3] = 0; T[o + 4] = 0; T[o + 5] = 0; continue; }
+    const x = Q.x[e]!, y = Q.y[e]!, z = Q.z[e]!, w = Q.w[e]!;
+    const r00 = 1 - 2 * (y * y + z * z), r01 = 2 * (x * y - z * w), r02 = 2 * (x * z + y * w);
+    const r10 = 2 * (x * y + z * w), r11 = 1 - 2 * (x * x + z * z), r12 = 2 * (y * z - x * w);
+    const r20 = 2 * (x * z - y * w), r21 = 2 * (y * z + x * w), r22 = 1 - 2 * (x * x + y * y);
+    T[o] = r00 * r00 * ix + r01 * r01 * iy + r02 * r02 * iz;
+    T[o + 1] = r10 * r10 * ix + r11 * r11 * iy + r12 * r12 * iz;
+    T[o + 2] = r20 * r20 * ix + r21 * r21 * iy + r22 * r22 * iz;
+    T[o + 3] = r00 * r10 * ix + r01 * r11 * iy + r02 * r12 * iz;
+    T[o + 4] = r00 * r20 * ix + r01 * r21 * iy + r02 * r22 * iz;
+    T[o + 5] = r10 * r20 * ix + r11 * r21 * iy + r12 * r22 * iz;
   }
 }
 

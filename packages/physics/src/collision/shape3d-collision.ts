@@ -99,10 +99,31 @@ function startOrientation(world: PhysicsWorld, b: number, turning: boolean): voi
   bodyQ[0] = x; bodyQ[1] = y; bodyQ[2] = z; bodyQ[3] = w;
 }
 
+/**
+ * Writes a 3D body's solver class into the collision state (body type, inverse mass, and an inverse
+ * inertia that is > 0 exactly when it turns: the largest principal one, or a ball's) and returns the type.
+ */
+export function classifyBody3D(world: PhysicsWorld, b: number): number {
+  const c = world.components, cs = world.collision;
+  let t: number;
+  if (hasComponent(world, b, c.Static)) { t = BodyType.Static; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
+  else if (hasComponent(world, b, c.Kinematic)) { t = BodyType.Kinematic; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
+  else if (hasComponent(world, b, c.Sleeping)) { t = BodyType.Sleeping; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
+  else {
+    t = BodyType.Dynamic; cs.invMass[b] = c.Mass.inv[b]!;
+    const T = c.InertiaTensor;
+    cs.invInertia[b] = !hasComponent(world, b, c.AngularVelocity) ? 0
+      : hasComponent(world, b, T) ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
+        : hasComponent(world, b, c.Inertia) ? c.Inertia.inv[b]! : 0;
+  }
+  cs.bodyType[b] = t;
+  return t;
+}
+
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
 function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const c = world.components, cs = world.collision;
-  const type = cs.bodyType, invMass = cs.invMass, invInertia = cs.invInertia;
+  const invInertia = cs.invInertia;
   const balls = query(world, [c.Position, c.Ball]);
   const cap = world.capacity;
   let n = 0;
@@ -112,18 +133,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const add = (e: number, b: number, isBall: boolean): void => {
     ensure(n + 1);
     const sc = scratch;
-    let t: number;
-    if (hasComponent(world, b, c.Static)) { t = BodyType.Static; invMass[b] = 0; invInertia[b] = 0; }
-    else if (hasComponent(world, b, c.Kinematic)) { t = BodyType.Kinematic; invMass[b] = 0; invInertia[b] = 0; }
-    else if (hasComponent(world, b, c.Sleeping)) { t = BodyType.Sleeping; invMass[b] = 0; invInertia[b] = 0; }
-    else {
-      t = BodyType.Dynamic; invMass[b] = c.Mass.inv[b]!;
-      const T = c.InertiaTensor;
-      invInertia[b] = !hasComponent(world, b, c.AngularVelocity) ? 0
-        : hasComponent(world, b, T) ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
-          : hasComponent(world, b, c.Inertia) ? c.Inertia.inv[b]! : 0;
-    }
-    type[b] = t;
+    const t = classifyBody3D(world, b);
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
     const turning = moving && invInertia[b]! > 0 || t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity);
     const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!, y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!, z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;

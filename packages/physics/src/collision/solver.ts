@@ -11,6 +11,7 @@ import {
 import {
   applyManifold3DRestitution, finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D, solveManifolds3D, warmStartManifolds3D,
 } from './manifold3d-solver.js';
+import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts } from './impacts.js';
 
@@ -54,7 +55,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   cs.stats.maxOverlap = 0;
-  if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0 && !manifolds3DToSolve(world)) {
+  if (!jointsToSolve(world) && buf.count === 0 && cs.shapes.manifolds.count === 0 && !manifolds3DToSolve(world) && !joints3DToSolve(world)) {
     cs.contacts = storeWarmStart(cs.cache, buf);
     finishManifolds(world);
     if (world.dimensions === 3) finishManifolds3D(world);
@@ -76,15 +77,18 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const dyn = makeSoft(hertz, st.contactDampingRatio, hs);
   const rigid = makeSoft(2 * hertz, st.contactDampingRatio, hs);
   prepareJoints(world, hs);
+  prepareJoints3D(world, hs);
   const is2D = world.dimensions === 2;
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   for (let s = 0; s < substeps; s++) {
     integrateVelocities(world, hs);
     warmStartJoints(world);
+    warmStartJoints3D(world);
     if (is2D) warmStart2D(cs, buf); else warmStart3D(cs, buf);
     if (is2D) warmStartManifolds(cs); else warmStartManifolds3D(world);
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
+      solveJoints3D(world, hs, true);
       if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
       if (is2D) solveManifolds(cs, hs, true); else solveManifolds3D(world, hs, true);
     }
@@ -92,6 +96,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     integrateJointRotations(world, hs);
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
+      solveJoints3D(world, hs, false);
       if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
       if (is2D) solveManifolds(cs, hs, false); else solveManifolds3D(world, hs, false);
     }
@@ -108,6 +113,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   finishManifolds(world);
   if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
+  finishJoints3D(world, hs);
   cs.contacts = storeWarmStart(cs.cache, buf);
 }
 
@@ -170,6 +176,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   cs.solverBodies = list;
   count = gatherManifoldBodies(world, count); // the shapes' manifolds join (manifold-solver.ts)
   if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (manifold3d-solver.ts)
+  if (world.dimensions === 3) count = gatherJoint3DBodies(world, count); // and the 3D joints' (joints3d/solver.ts)
   list = cs.solverBodies;
   count = gatherJointBodies(world, count); // the joints' bodies join the contacts'
   list = cs.solverBodies;
@@ -189,6 +196,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const g = world.gravity;
   const gx = g[0]! * h, gy = g[1]! * h, gz = g[2]! * h;
   const type = cs.bodyType, invMass = cs.invMass, invInertia = cs.invInertia;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
   const is2D = S === 8;
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
@@ -199,17 +207,21 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const dynamic = type[e] === BodyType.Dynamic;
     // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
     // extra as the base. v = v0 + g h here, so the base is x - v h + g h^2 / 2 for dynamic bodies.
-    const gb = dynamic ? 0.5 * h : 0;
+    // A body a force acted on was not given the exact free fall (semiImplicitEuler): no gravity base,
+    // and it counts as pushed so finishBodies does not give it the free-flight correction either.
+    const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
+    const gb = dynamic && !forced ? 0.5 * h : 0;
+    const held = forced ? 1 : pushed;
     ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
     ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     if (is2D) {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 ? wz[e]! : 0;
-      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = pushed;
+      sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
     } else {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
       sb[o + 3] = ii > 0 ? wx[e]! : 0; sb[o + 4] = ii > 0 ? wy[e]! : 0; sb[o + 5] = ii > 0 ? wz[e]! : 0;
-      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = pushed;
+      sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = held;
     }
   }
 }

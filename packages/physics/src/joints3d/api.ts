@@ -1,0 +1,267 @@
+import { entityExists, hasComponent, removeEntity } from 'bitecs';
+import type { PhysicsWorld } from '../world.js';
+import { createSlot } from '../bodies.js';
+import { currentHandle, resolveEntity } from '../handles.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store.js';
+
+/**
+ * Joints between 3D bodies, solved in the contact solver's soft substeps (joints3d/solver.ts): ball
+ * and socket (with an optional cone limit), hinge (angle limits, motor), fixed, and distance (rigid,
+ * spring, or rope through its length limits). Each joint is its own entity holding its two bodies:
+ * A (a body, or the fixed world when omitted or null) and B. Anchors and axes are given in world
+ * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies'
+ * frames. Removing either body removes the joint. Past `breakForce` (N) or `breakTorque` (N m) a
+ * joint breaks: it is removed and listed in `joint3DBreaks(world)` after the step.
+ */
+
+/** Options every 3D joint shares. */
+export interface Joint3DBaseOptions {
+  /** Body A, or omitted / null for the fixed world. */
+  a?: number | null;
+  /** Body B. */
+  b: number;
+  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
+  breakForce?: number;
+  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
+  breakTorque?: number;
+}
+
+const BASE = ['a', 'b', 'breakForce', 'breakTorque'] as const;
+
+function body(where: string, param: string, world: PhysicsWorld, id: unknown): number {
+  const slot = resolveEntity(world, id, where, param);
+  const c = world.components;
+  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Orientation)) {
+    throw new RangeError(`${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`);
+  }
+  return slot;
+}
+
+function ends(where: string, world: PhysicsWorld, o: Joint3DBaseOptions, keys: readonly string[]): { a: number; b: number } {
+  if (world.dimensions !== 3) throw new RangeError(`${where}: 3D joints need a 3D world, this world has ${world.dimensions} dimensions`);
+  if (o === null || typeof o !== 'object') throw new TypeError(`${where}: options with body b are required, got ${describe(o)}`);
+  assertKnownKeys(where, o, [...BASE, ...keys]);
+  const a = o.a === undefined || o.a === null ? 0 : body(where, 'a', world, o.a);
+  const b = body(where, 'b', world, o.b);
+  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(o.a)} twice`);
+  if (o.breakForce !== undefined) assertPositive(where, 'breakForce', o.breakForce);
+  if (o.breakTorque !== undefined) assertPositive(where, 'breakTorque', o.breakTorque);
+  return { a, b };
+}
+
+function point(where: string, param: string, v: unknown): [number, number, number] {
+  assertVector(where, param, v, 3);
+  const p = v as ArrayLike<number>;
+  return [p[0]!, p[1]!, p[2]!];
+}
+
+function unit(where: string, param: string, v: unknown): [number, number, number] {
+  const p = point(where, param, v);
+  const l = Math.hypot(p[0], p[1], p[2]);
+  if (!(l > 0)) throw new RangeError(`${where}: ${param} must be a non-zero vector, got ${describe(v)}`);
+  return [p[0] / l, p[1] / l, p[2] / l];
+}
+
+function quat(world: PhysicsWorld, e: number): [number, number, number, number] {
+  if (e === 0) return [0, 0, 0, 1];
+  const Q = world.components.Orientation;
+  return [Q.x[e]!, Q.y[e]!, Q.z[e]!, Q.w[e]!];
+}
+
+/** v rotated by the inverse of unit quaternion q (world to body frame). */
+function toBody(q: [number, number, number, number], v: [number, number, number]): [number, number, number] {
+  const x = -q[0], y = -q[1], z = -q[2], w = q[3];
+  const tx = 2 * (y * v[2] - z * v[1]), ty = 2 * (z * v[0] - x * v[2]), tz = 2 * (x * v[1] - y * v[0]);
+  return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx)];
+}
+
+function centre(world: PhysicsWorld, e: number): [number, number, number] {
+  const P = world.components.Position;
+  return e === 0 ? [0, 0, 0] : [P.x[e]!, P.y[e]!, P.z[e]!];
+}
+
+/** Makes the joint entity and its common fields; anchors pa, pb (world), axis (world). */
+function make(world: PhysicsWorld, where: string, type: number, e: { a: number; b: number }, o: Joint3DBaseOptions, pa: [number, number, number], pb: [number, number, number], axis: [number, number, number]): number {
+  const j = createSlot(world, where);
+  const s = joints3DOf(world, true);
+  if (s.list.length === 0 && !world.removeHooks.includes(removeJoints3DOf)) world.removeHooks.push(removeJoints3DOf);
+  const qa = quat(world, e.a), qb = quat(world, e.b), ca = centre(world, e.a), cb = centre(world, e.b);
+  const la = toBody(qa, [pa[0] - ca[0], pa[1] - ca[1], pa[2] - ca[2]]), lb = toBody(qb, [pb[0] - cb[0], pb[1] - cb[1], pb[2] - cb[2]]);
+  const ua = toBody(qa, axis), ub = toBody(qb, axis);
+  s.type[j] = type; s.flags[j] = 0; s.a[j] = e.a; s.b[j] = e.b;
+  s.ax[j] = la[0]; s.ay[j] = la[1]; s.az[j] = la[2]; s.bx[j] = lb[0]; s.by[j] = lb[1]; s.bz[j] = lb[2];
+  s.uax[j] = ua[0]; s.uay[j] = ua[1]; s.uaz[j] = ua[2]; s.ubx[j] = ub[0]; s.uby[j] = ub[1]; s.ubz[j] = ub[2];
+  // conj(qa) qb
+  const [x1, y1, z1, w1] = [-qa[0], -qa[1], -qa[2], qa[3]], [x2, y2, z2, w2] = qb;
+  s.rx[j] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2; s.ry[j] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
+  s.rz[j] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2; s.rw[j] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  s.lower[j] = 0; s.upper[j] = 0; s.motorSpeed[j] = 0; s.maxMotorTorque[j] = 0; s.length[j] = 0; s.hertz[j] = 0; s.dampingRatio[j] = 0;
+  s.breakForce[j] = o.breakForce ?? Infinity; s.breakTorque[j] = o.breakTorque ?? Infinity;
+  s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; s.wx[j] = 0; s.wy[j] = 0; s.wz[j] = 0; s.limit[j] = 0; s.motor[j] = 0;
+  s.list.push(j);
+  return j;
+}
+
+/** Options of `addBallJoint3D`. */
+export interface BallJoint3DOptions extends Joint3DBaseOptions {
+  /** The joint's point (world, m). Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** Cone limit: the axis (world, when made) that B's copy of it may swing away from A's by at most `coneAngle`. Default (0, 1, 0). */
+  axis?: ArrayLike<number>;
+  /** Cone half angle, rad, in (0, pi). Default none (free swing). */
+  coneAngle?: number;
+}
+
+/**
+ * Ball and socket: the anchor points of A and B coincide (three soft rows); with `coneAngle`, B's axis
+ * stays within that angle of A's (a swing cone). @returns the joint's handle.
+ * @throws TypeError | RangeError `addBallJoint3D: <param> must be ...` in a 2D world, on missing or bad
+ *   bodies (removed, not 3D bodies, the same twice), bad vectors, a cone angle outside (0, pi), a bad
+ *   break threshold, or a full world.
+ */
+export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions): number {
+  const where = 'addBallJoint3D';
+  const e = ends(where, world, options, ['anchor', 'axis', 'coneAngle']);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const axis = options.axis === undefined ? [0, 1, 0] as [number, number, number] : unit(where, 'axis', options.axis);
+  if (options.coneAngle !== undefined) {
+    assertFinite(where, 'coneAngle', options.coneAngle);
+    if (!(options.coneAngle > 0 && options.coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
+  }
+  const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
+  const s = joints3DOf(world, true);
+  if (options.coneAngle !== undefined) { s.flags[j] = Joint3DFlag.Cone; s.upper[j] = options.coneAngle; }
+  return currentHandle(world, j);
+}
+
+/** Options of `addHingeJoint3D`. */
+export interface HingeJoint3DOptions extends Joint3DBaseOptions {
+  /** A point on the hinge's axis (world, m). Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** The hinge axis (world, when made); need not be unit length. */
+  axis: ArrayLike<number>;
+  /** Angle limits, rad, about the axis from the pose when made (right-handed): lower <= 0 <= upper. Default none. */
+  lower?: number;
+  upper?: number;
+  /** Motor: target relative angular speed about the axis, rad/s, and its largest torque, N m (>= 0). Default off. */
+  motorSpeed?: number;
+  maxMotorTorque?: number;
+}
+
+/**
+ * Hinge: ball and socket plus two angular rows that keep B's axis along A's, so B turns relative to A
+ * about the axis only; optional angle limits and a motor. @returns the joint's handle.
+ * @throws TypeError | RangeError `addHingeJoint3D: <param> must be ...` as addBallJoint3D, on a zero
+ *   axis, lower > 0 or upper < 0, only one limit, a motor speed without a torque or a negative torque.
+ */
+export function addHingeJoint3D(world: PhysicsWorld, options: HingeJoint3DOptions): number {
+  const where = 'addHingeJoint3D';
+  const e = ends(where, world, options, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque']);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const axis = unit(where, 'axis', options.axis);
+  const hasLimit = options.lower !== undefined || options.upper !== undefined;
+  if (hasLimit) {
+    if (options.lower === undefined || options.upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(options.lower)}, upper ${describe(options.upper)}`);
+    assertFinite(where, 'lower', options.lower); assertFinite(where, 'upper', options.upper);
+    if (!(options.lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${options.lower}`);
+    if (!(options.upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${options.upper}`);
+  }
+  const motor = options.motorSpeed !== undefined || options.maxMotorTorque !== undefined;
+  if (motor) {
+    assertFinite(where, 'motorSpeed', options.motorSpeed ?? 0);
+    if (options.maxMotorTorque === undefined) throw new RangeError(`${where}: maxMotorTorque must be given with motorSpeed, got undefined`);
+    assertNonNegative(where, 'maxMotorTorque', options.maxMotorTorque);
+  }
+  const j = make(world, where, Joint3DType.Hinge, e, options, p, p, axis);
+  const s = joints3DOf(world, true);
+  if (hasLimit) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = options.lower!; s.upper[j] = options.upper!; }
+  if (motor) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = options.motorSpeed ?? 0; s.maxMotorTorque[j] = options.maxMotorTorque!; }
+  return currentHandle(world, j);
+}
+
+/** Options of `addFixedJoint3D`. */
+export interface FixedJoint3DOptions extends Joint3DBaseOptions {
+  /** The point the bodies are welded at (world, m). Default B's centre. */
+  anchor?: ArrayLike<number>;
+}
+
+/** Fixed (weld): B keeps its position and orientation relative to A. @returns the joint's handle. @throws as addBallJoint3D. */
+export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOptions): number {
+  const where = 'addFixedJoint3D';
+  const e = ends(where, world, options, ['anchor']);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  return currentHandle(world, make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]));
+}
+
+/** Options of `addDistanceJoint3D`. */
+export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
+  /** Anchor on A (world, m); required when A is the world, else default A's centre. */
+  anchorA?: ArrayLike<number>;
+  /** Anchor on B (world, m). Default B's centre. */
+  anchorB?: ArrayLike<number>;
+  /** Rest length, m, > 0. Default the anchors' distance when made. */
+  length?: number;
+  /** Limits, m: 0 <= minLength <= length <= maxLength. Defaults: both `length` (a rigid rod), or 0 and Infinity with a spring. A rope: minLength 0. */
+  minLength?: number;
+  maxLength?: number;
+  /** Spring frequency, Hz (>= 0; 0 rigid), and damping ratio (>= 0). Default 0, 0. */
+  hertz?: number;
+  dampingRatio?: number;
+}
+
+/**
+ * Distance: the anchors stay `length` apart (a rod), spring toward it (`hertz` > 0), or stay within
+ * [minLength, maxLength] (a rope: minLength 0). @returns the joint's handle.
+ * @throws TypeError | RangeError `addDistanceJoint3D: <param> must be ...` as addBallJoint3D, on a missing
+ *   anchorA with the world as A, a length <= 0, limits out of order, a negative spring value.
+ */
+export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3DOptions): number {
+  const where = 'addDistanceJoint3D';
+  const e = ends(where, world, options, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
+  if (e.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
+  const pa = options.anchorA === undefined ? centre(world, e.a) : point(where, 'anchorA', options.anchorA);
+  const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
+  const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
+  assertPositive(where, 'length', length);
+  const hertz = options.hertz ?? 0, zeta = options.dampingRatio ?? 0;
+  assertNonNegative(where, 'hertz', hertz); assertNonNegative(where, 'dampingRatio', zeta);
+  const minL = options.minLength ?? (hertz > 0 ? 0 : length), maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
+  assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length)) throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
+  const s = joints3DOf(world, true);
+  s.length[j] = length; s.lower[j] = minL; s.upper[j] = maxL; s.hertz[j] = hertz; s.dampingRatio[j] = zeta;
+  s.flags[j] = (hertz > 0 ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  return currentHandle(world, j);
+}
+
+/** Removes a 3D joint. @throws RangeError on a removed entity or one that is not a 3D joint. */
+export function removeJoint3D(world: PhysicsWorld, joint: number): void {
+  const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
+  const s = joints3DOf(world);
+  if (s === undefined || !s.list.includes(j)) throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
+  removeJoint3DUnchecked(world, s, j);
+}
+
+/** Internal: unlists and removes joint slot j. */
+export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
+  const i = s.list.indexOf(j);
+  if (i >= 0) s.list.splice(i, 1);
+  s.a[j] = 0; s.b[j] = 0;
+  if (entityExists(world, j)) removeEntity(world, j);
+}
+
+/** Removal hook: removing a body removes its 3D joints (and removing a joint entity unlists it). */
+function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || s.list.length === 0) return;
+  if (s.list.includes(eid)) { const i = s.list.indexOf(eid); s.list.splice(i, 1); s.a[eid] = 0; s.b[eid] = 0; return; }
+  for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
+}
+
+/** The 3D joints broken in the last step, as [joint, a, b, step] (handles; a 0: the world; the step count when it broke). */
+export function joint3DBreaks(world: PhysicsWorld): number[][] {
+  return joints3DOf(world)?.breaks ?? [];
+}

@@ -1,0 +1,353 @@
+import type { PhysicsWorld } from '../world.js';
+import { BodyType } from '../collision/broadphase.js';
+import { classifyBody3D } from '../collision/shape3d-collision.js';
+import { contact3DStateOf } from '../collision/manifolds3d-state.js';
+import { currentHandle } from '../handles.js';
+import { Joint3DFlag, Joint3DType, joints3DOf } from './store.js';
+import { removeJoint3DUnchecked } from './api.js';
+
+/**
+ * The 3D joints' rows of the contact solver (solver.ts calls these next to the contacts', in the same
+ * soft substeps, on the same packed body state): Box2D v3's joints (joint.c, revolute_joint.c,
+ * weld_joint.c, distance_joint.c) carried to 3D, with the world inverse inertia tensors of
+ * manifold3d-solver.ts.
+ *
+ * - Each body's pose during the substeps: position = base + displacement, orientation = exp(theta) q
+ *   with theta the rotation owed so far (exact rotation of the component orientation).
+ * - Point rows (ball, hinge, fixed): C = p_B + r_B - p_A - r_A = 0 as one 3 x 3 block, K P = sum over
+ *   bodies of (P / m + (I^-1 (r x P)) x r); soft (Box2D's joint softness: 60 Hz capped at a quarter of
+ *   the substep rate, damping ratio 2, i.e. 2 zeta) with bias, rigid in the relax passes.
+ * - Angular lock: the error rotation E = conj(q_A) q_B conj(q_rest) as the small-angle vector 2 vec(E)
+ *   (A's frame, turned to the world); fixed: three rows with K = I_A^-1 + I_B^-1; hinge: the two rows
+ *   perpendicular to the axis. The hinge angle is 2 atan2(vec(E) . axis, w(E)); its limits are one-sided
+ *   rows (speculative when apart), its motor a row bounded by the largest torque times h_s.
+ * - Cone: the angle between A's axis and B's (phi) stays <= the half angle: a one-sided row about
+ *   n = a_A x a_B / |a_A x a_B|, with d phi / dt = (w_B - w_A) . n.
+ * - Distance: a row along the anchors' line, equality (rod), spring (Box2D's soft spring of `hertz`
+ *   and `dampingRatio`) and one-sided limits.
+ * - Point and angular-lock impulses are warm-started (world vectors); limit, motor and distance rows
+ *   start from zero each step. After the substeps a joint whose force (impulse / h_s) or torque passes
+ *   its threshold breaks: it is removed and listed in `joint3DBreaks`.
+ */
+
+/** Joint stiffness (Box2D v3 defaults: joint hertz 60, damping ratio 2), capped at a quarter of the substep rate. */
+const JOINT_HERTZ = 60, JOINT_DAMPING = 2;
+
+let ka = new Int32Array(16), kb = new Int32Array(16);
+const jsoft = new Float64Array(3), spring = new Float64Array(3);
+
+function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
+  const omega = 2 * Math.PI * hertz, a1 = 2 * zeta + h * omega, a2 = h * omega * a1, a3 = 1 / (1 + a2);
+  out[0] = omega / a1; out[1] = a2 * a3; out[2] = a3;
+}
+
+/** Whether the world has 3D joints. */
+export function joints3DToSolve(world: PhysicsWorld): boolean {
+  const s = joints3DOf(world);
+  return world.dimensions === 3 && s !== undefined && s.list.length > 0;
+}
+
+/** Gives the joints' moving bodies solver indices (continuing the list); returns the new count. */
+export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return count;
+  if (s.breaks.length > 0 && s.breaks[0]![3] !== world.steps) s.breaks.length = 0;
+  const n = s.list.length;
+  if (ka.length < n) { ka = new Int32Array(2 * n); kb = new Int32Array(2 * n); }
+  const cs = world.collision, mark = cs.solverMark, index = cs.solverIndex, stamp = cs.solverStamp;
+  let list = cs.solverBodies;
+  for (let i = 0; i < n; i++) {
+    const j: number = s.list[i]!;
+    for (let side = 0; side < 2; side++) {
+      const e = side === 0 ? s.a[j]! : s.b[j]!;
+      let k = 0;
+      if (e !== 0) {
+        const t = classifyBody3D(world, e);
+        if (t === BodyType.Dynamic || t === BodyType.Kinematic) {
+          if (mark[e] !== stamp) {
+            mark[e] = stamp;
+            if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
+            index[e] = count; list[count++] = e;
+          }
+          k = index[e]!;
+        }
+      }
+      if (side === 0) ka[i] = k; else kb[i] = k;
+    }
+  }
+  cs.solverBodies = list;
+  return count;
+}
+
+/** Softness for this step, marks the joint bodies as pushed, and clears the rows that are not warm-started. */
+export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
+  contact3DStateOf(world, true);
+  makeSoft(jsoft, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
+  const sb = world.collision.bodyState;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!;
+    if (ka[i]! > 0) sb[12 * ka[i]! + 11] = 1;
+    if (kb[i]! > 0) sb[12 * kb[i]! + 11] = 1;
+    s.limit[j] = 0; s.motor[j] = 0;
+    if (s.type[j] === Joint3DType.Distance) { s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; }
+  }
+}
+
+// Per-call scratch: pose of the two ends.
+const qa = new Float64Array(4), qb = new Float64Array(4), pa = new Float64Array(3), pb = new Float64Array(3), ra = new Float64Array(3), rb = new Float64Array(3);
+
+/** Current orientation and position of joint end e (solver index k) into q and p. */
+function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array, p: Float64Array): void {
+  if (e === 0) { q[0] = 0; q[1] = 0; q[2] = 0; q[3] = 1; p[0] = 0; p[1] = 0; p[2] = 0; return; }
+  const c = world.components, Q = c.Orientation;
+  let x = Q.x[e]!, y = Q.y[e]!, z = Q.z[e]!, w = Q.w[e]!;
+  if (k === 0) { q[0] = x; q[1] = y; q[2] = z; q[3] = w; p[0] = c.Position.x[e]!; p[1] = c.Position.y[e]!; p[2] = c.Position.z[e]!; return; }
+  const ex = world.collision.bodyExtra, sb = world.collision.bodyState;
+  const rx = ex[6 * k + 3]!, ry = ex[6 * k + 4]!, rz = ex[6 * k + 5]!, a = Math.hypot(rx, ry, rz);
+  if (a > 0) {
+    const f = Math.sin(a / 2) / a, dx = rx * f, dy = ry * f, dz = rz * f, dw = Math.cos(a / 2);
+    const nx = dw * x + dx * w + dy * z - dz * y, ny = dw * y - dx * z + dy * w + dz * x, nz = dw * z + dx * y - dy * x + dz * w, nw = dw * w - dx * x - dy * y - dz * z;
+    x = nx; y = ny; z = nz; w = nw;
+  }
+  q[0] = x; q[1] = y; q[2] = z; q[3] = w;
+  p[0] = ex[6 * k]! + sb[12 * k + 6]!; p[1] = ex[6 * k + 1]! + sb[12 * k + 7]!; p[2] = ex[6 * k + 2]! + sb[12 * k + 8]!;
+}
+
+function rot(q: Float64Array, vx: number, vy: number, vz: number, out: Float64Array): void {
+  const x = q[0]!, y = q[1]!, z = q[2]!, w = q[3]!;
+  const tx = 2 * (y * vz - z * vy), ty = 2 * (z * vx - x * vz), tz = 2 * (x * vy - y * vx);
+  out[0] = vx + w * tx + (y * tz - z * ty); out[1] = vy + w * ty + (z * tx - x * tz); out[2] = vz + w * tz + (x * ty - y * tx);
+}
+
+/** I^-1 v for solver body k (0: zero) into out. */
+function invI(T: Float64Array, k: number, vx: number, vy: number, vz: number, out: Float64Array, o: number): void {
+  const t = 6 * k;
+  out[o] = T[t]! * vx + T[t + 3]! * vy + T[t + 4]! * vz;
+  out[o + 1] = T[t + 3]! * vx + T[t + 1]! * vy + T[t + 5]! * vz;
+  out[o + 2] = T[t + 4]! * vx + T[t + 5]! * vy + T[t + 2]! * vz;
+}
+
+const tmp = new Float64Array(6);
+
+/** Linear impulse P at the anchors: -P to A, +P to B. */
+function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: number, px: number, py: number, pz: number): void {
+  if (a > 0) {
+    const o = 12 * a, m = sb[o + 9]!;
+    sb[o] = sb[o]! - m * px; sb[o + 1] = sb[o + 1]! - m * py; sb[o + 2] = sb[o + 2]! - m * pz;
+    invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
+    sb[o + 3] = sb[o + 3]! - tmp[0]!; sb[o + 4] = sb[o + 4]! - tmp[1]!; sb[o + 5] = sb[o + 5]! - tmp[2]!;
+  }
+  if (b > 0) {
+    const o = 12 * b, m = sb[o + 9]!;
+    sb[o] = sb[o]! + m * px; sb[o + 1] = sb[o + 1]! + m * py; sb[o + 2] = sb[o + 2]! + m * pz;
+    invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
+    sb[o + 3] = sb[o + 3]! + tmp[0]!; sb[o + 4] = sb[o + 4]! + tmp[1]!; sb[o + 5] = sb[o + 5]! + tmp[2]!;
+  }
+}
+
+/** Angular impulse L: -L to A, +L to B. */
+function applyAngular(sb: Float64Array, T: Float64Array, a: number, b: number, lx: number, ly: number, lz: number): void {
+  if (a > 0) { invI(T, a, lx, ly, lz, tmp, 0); const o = 12 * a; sb[o + 3] = sb[o + 3]! - tmp[0]!; sb[o + 4] = sb[o + 4]! - tmp[1]!; sb[o + 5] = sb[o + 5]! - tmp[2]!; }
+  if (b > 0) { invI(T, b, lx, ly, lz, tmp, 0); const o = 12 * b; sb[o + 3] = sb[o + 3]! + tmp[0]!; sb[o + 4] = sb[o + 4]! + tmp[1]!; sb[o + 5] = sb[o + 5]! + tmp[2]!; }
+}
+
+/** Relative velocity of the anchors, vB + wB x rB - vA - wA x rA, into out[0..2]. */
+function anchorVelocity(sb: Float64Array, a: number, b: number, out: Float64Array): void {
+  const oa = 12 * a, ob = 12 * b;
+  out[0] = sb[ob]! + sb[ob + 4]! * rb[2]! - sb[ob + 5]! * rb[1]! - sb[oa]! - (sb[oa + 4]! * ra[2]! - sb[oa + 5]! * ra[1]!);
+  out[1] = sb[ob + 1]! + sb[ob + 5]! * rb[0]! - sb[ob + 3]! * rb[2]! - sb[oa + 1]! - (sb[oa + 5]! * ra[0]! - sb[oa + 3]! * ra[2]!);
+  out[2] = sb[ob + 2]! + sb[ob + 3]! * rb[1]! - sb[ob + 4]! * rb[0]! - sb[oa + 2]! - (sb[oa + 3]! * ra[1]! - sb[oa + 4]! * ra[0]!);
+}
+
+/** Solves the 3 x 3 system M x = r (M row-major) in place into x by Cramer's rule; a singular M gives 0. */
+function solve3(M: Float64Array, r0: number, r1: number, r2: number, x: Float64Array): void {
+  const a = M[0]!, b = M[1]!, c = M[2]!, d = M[3]!, e = M[4]!, f = M[5]!, g = M[6]!, h = M[7]!, i = M[8]!;
+  const A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+  const det = a * A + b * B + c * C;
+  if (!(Math.abs(det) > 0)) { x[0] = 0; x[1] = 0; x[2] = 0; return; }
+  const inv = 1 / det;
+  x[0] = inv * (A * r0 + (c * h - b * i) * r1 + (b * f - c * e) * r2);
+  x[1] = inv * (B * r0 + (a * i - c * g) * r1 + (c * d - a * f) * r2);
+  x[2] = inv * (C * r0 + (b * g - a * h) * r1 + (a * e - b * d) * r2);
+}
+
+const K = new Float64Array(9), x3 = new Float64Array(3), v3 = new Float64Array(3), ax = new Float64Array(3), bx = new Float64Array(3);
+
+/** Warm start: last substep's point and angular-lock impulses applied again. */
+export function warmStartJoints3D(world: PhysicsWorld): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const sb = world.collision.bodyState, T = contact3DStateOf(world, true).invInertia;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!;
+    if (s.type[j] === Joint3DType.Distance) continue;
+    pose(world, s.a[j]!, ka[i]!, qa, pa); pose(world, s.b[j]!, kb[i]!, qb, pb);
+    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra); rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    applyLinear(sb, T, ka[i]!, kb[i]!, s.lx[j]!, s.ly[j]!, s.lz[j]!);
+    applyAngular(sb, T, ka[i]!, kb[i]!, s.wx[j]!, s.wy[j]!, s.wz[j]!);
+  }
+}
+
+/** A one-sided or bounded angular row along unit u (impulse +lambda u to B): returns the new accumulated impulse. */
+function angularRow(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number, cdot: number, bias: number, ms: number, is: number, acc: number, lo: number, hi: number): number {
+  invI(T, a, ux, uy, uz, tmp, 0); invI(T, b, ux, uy, uz, tmp, 3);
+  const k = ux * (tmp[0]! + tmp[3]!) + uy * (tmp[1]! + tmp[4]!) + uz * (tmp[2]! + tmp[5]!);
+  if (!(k > 0)) return acc;
+  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
+  lam = lam < lo ? lo : lam > hi ? hi : lam;
+  const d = lam - acc;
+  if (d !== 0) applyAngular(sb, T, a, b, d * ux, d * uy, d * uz);
+  return lam;
+}
+
+/** One pass over the joints: soft with `useBias`, else relaxing (no bias). */
+export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const sb = world.collision.bodyState, T = contact3DStateOf(world, true).invInertia;
+  const bRate = useBias ? jsoft[0]! : 0, ms = useBias ? jsoft[1]! : 1, is = useBias ? jsoft[2]! : 0;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!, a = ka[i]!, b = kb[i]!, type = s.type[j]!, flags = s.flags[j]!;
+    const oa = 12 * a, ob = 12 * b;
+    pose(world, s.a[j]!, a, qa, pa); pose(world, s.b[j]!, b, qb, pb);
+    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra); rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    const wx = sb[ob + 3]! - sb[oa + 3]!, wy = sb[ob + 4]! - sb[oa + 4]!, wz = sb[ob + 5]! - sb[oa + 5]!;
+    if (type === Joint3DType.Distance) {
+      let dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!, dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!, dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+      const len = Math.hypot(dx, dy, dz);
+      if (!(len > 1e-12)) continue;
+      dx /= len; dy /= len; dz /= len;
+      // Effective mass along u.
+      const ca = [ra[1]! * dz - ra[2]! * dy, ra[2]! * dx - ra[0]! * dz, ra[0]! * dy - ra[1]! * dx], cb = [rb[1]! * dz - rb[2]! * dy, rb[2]! * dx - rb[0]! * dz, rb[0]! * dy - rb[1]! * dx];
+      invI(T, a, ca[0]!, ca[1]!, ca[2]!, tmp, 0); invI(T, b, cb[0]!, cb[1]!, cb[2]!, tmp, 3);
+      const k = sb[oa + 9]! + sb[ob + 9]! + ca[0]! * tmp[0]! + ca[1]! * tmp[1]! + ca[2]! * tmp[2]! + cb[0]! * tmp[3]! + cb[1]! * tmp[4]! + cb[2]! * tmp[5]!;
+      if (!(k > 0)) continue;
+      const row = (C: number, sign: number, acc: number, soft_: Float64Array | null, oneSided: boolean): number => {
+        anchorVelocity(sb, a, b, v3);
+        const cdot = sign * (v3[0]! * dx + v3[1]! * dy + v3[2]! * dz);
+        let bias = 0, m = 1, im = 0;
+        if (soft_ !== null) { bias = soft_[0]! * C; m = soft_[1]!; im = soft_[2]!; }
+        else if (oneSided && C > 0) bias = C / hs;
+        else if (useBias) { bias = bRate * C; m = ms; im = is; }
+        let lam = acc - (m * (cdot + bias)) / k - im * acc;
+        if (oneSided && lam < 0) lam = 0;
+        const d = (lam - acc) * sign;
+        if (d !== 0) applyLinear(sb, T, a, b, d * dx, d * dy, d * dz);
+        return lam;
+      };
+      const L = s.length[j]!;
+      if (flags & Joint3DFlag.Spring) { if (useBias) { makeSoft(spring, s.hertz[j]!, s.dampingRatio[j]!, hs); s.lx[j] = row(len - L, 1, s.lx[j]!, spring, false); } }
+      else if (!(flags & Joint3DFlag.Limit)) s.lx[j] = row(len - L, 1, s.lx[j]!, null, false);
+      if (flags & Joint3DFlag.Limit) {
+        if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) s.limit[j] = row(len - s.lower[j]!, 1, s.limit[j]!, null, true);
+        if (Number.isFinite(s.upper[j]!)) s.ly[j] = row(s.upper[j]! - len, -1, s.ly[j]!, null, true);
+      }
+      continue;
+    }
+    // Error rotation E = conj(qA) qB conj(q_rest) (A's frame).
+    const x1 = -qa[0]!, y1 = -qa[1]!, z1 = -qa[2]!, w1 = qa[3]!, x2 = qb[0]!, y2 = qb[1]!, z2 = qb[2]!, w2 = qb[3]!;
+    const rx = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, ry = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, rz = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, rw = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+    const cx = -s.rx[j]!, cy = -s.ry[j]!, cz = -s.rz[j]!, cw = s.rw[j]!;
+    let ex = rw * cx + rx * cw + ry * cz - rz * cy, ey = rw * cy - rx * cz + ry * cw + rz * cx, ez = rw * cz + rx * cy - ry * cx + rz * cw;
+    let ew = rw * cw - rx * cx - ry * cy - rz * cz;
+    if (ew < 0) { ex = -ex; ey = -ey; ez = -ez; ew = -ew; }
+    if (type === Joint3DType.Fixed || type === Joint3DType.Hinge) {
+      rot(qa, 2 * ex, 2 * ey, 2 * ez, ax); // the error as a world rotation vector
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx); // hinge axis, world
+      // Angular lock (fixed: 3 rows; hinge: the 2 perpendicular to the axis), K = I_A^-1 + I_B^-1.
+      for (let c = 0; c < 3; c++) {
+        const ux = c === 0 ? 1 : 0, uy = c === 1 ? 1 : 0, uz = c === 2 ? 1 : 0;
+        invI(T, a, ux, uy, uz, tmp, 0); invI(T, b, ux, uy, uz, tmp, 3);
+        K[c] = tmp[0]! + tmp[3]!; K[3 + c] = tmp[1]! + tmp[4]!; K[6 + c] = tmp[2]! + tmp[5]!;
+      }
+      let r0 = wx + bRate * ax[0]!, r1 = wy + bRate * ax[1]!, r2 = wz + bRate * ax[2]!;
+      if (type === Joint3DType.Hinge) {
+        // Remove the axial part: project the residual and the system onto the plane perpendicular to the axis.
+        const hx = bx[0]!, hy = bx[1]!, hz = bx[2]!;
+        const d = r0 * hx + r1 * hy + r2 * hz;
+        r0 -= d * hx; r1 -= d * hy; r2 -= d * hz;
+        // K' = P K P + h h^T (invertible, same on the plane).
+        const P = [1 - hx * hx, -hx * hy, -hx * hz, -hy * hx, 1 - hy * hy, -hy * hz, -hz * hx, -hz * hy, 1 - hz * hz];
+        const KP = new Float64Array(9);
+        for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) { let v = 0; for (let m = 0; m < 3; m++) for (let n = 0; n < 3; n++) v += P[3 * r + m]! * K[3 * m + n]! * P[3 * n + c]!; KP[3 * r + c] = v; }
+        const hv = [hx, hy, hz];
+        for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) K[3 * r + c] = KP[3 * r + c]! + hv[r]! * hv[c]!;
+      }
+      solve3(K, r0, r1, r2, x3);
+      let lx = -ms * x3[0]! - is * s.wx[j]!, ly = -ms * x3[1]! - is * s.wy[j]!, lz = -ms * x3[2]! - is * s.wz[j]!;
+      if (type === Joint3DType.Hinge) { const d = lx * bx[0]! + ly * bx[1]! + lz * bx[2]!; lx -= d * bx[0]!; ly -= d * bx[1]!; lz -= d * bx[2]!; }
+      s.wx[j] = s.wx[j]! + lx; s.wy[j] = s.wy[j]! + ly; s.wz[j] = s.wz[j]! + lz;
+      applyAngular(sb, T, a, b, lx, ly, lz);
+      if (type === Joint3DType.Hinge && flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
+        const hx = bx[0]!, hy = bx[1]!, hz = bx[2]!;
+        const angle = 2 * Math.atan2(ex * s.uax[j]! + ey * s.uay[j]! + ez * s.uaz[j]!, ew);
+        const rel = (): number => (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+        if (flags & Joint3DFlag.Motor) {
+          const maxL = s.maxMotorTorque[j]! * hs;
+          s.motor[j] = angularRow(sb, T, a, b, hx, hy, hz, rel(), -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxL, maxL);
+        }
+        if (flags & Joint3DFlag.Limit) {
+          const lo = s.lower[j]!, hi = s.upper[j]!;
+          const nearLower = angle - lo < hi - angle;
+          const C = nearLower ? angle - lo : hi - angle, sg = nearLower ? 1 : -1;
+          let bias = 0, m = 1, im = 0;
+          if (C > 0) bias = C / hs; else if (useBias) { bias = bRate * C; m = ms; im = is; }
+          const acc = sg * s.limit[j]! > 0 ? sg * s.limit[j]! : 0;
+          const lam = angularRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, sg * rel(), bias, m, im, acc, 0, Infinity);
+          s.limit[j] = sg * lam;
+        }
+      }
+    }
+    // Point rows (ball, hinge, fixed).
+    const Cx = pb[0]! + rb[0]! - pa[0]! - ra[0]!, Cy = pb[1]! + rb[1]! - pa[1]! - ra[1]!, Cz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+    anchorVelocity(sb, a, b, v3);
+    const ma = sb[oa + 9]! , mb = sb[ob + 9]!;
+    for (let c = 0; c < 3; c++) {
+      const px = c === 0 ? 1 : 0, py = c === 1 ? 1 : 0, pz = c === 2 ? 1 : 0;
+      let kx = (ma + mb) * px, ky = (ma + mb) * py, kz = (ma + mb) * pz;
+      invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
+      kx += tmp[1]! * ra[2]! - tmp[2]! * ra[1]!; ky += tmp[2]! * ra[0]! - tmp[0]! * ra[2]!; kz += tmp[0]! * ra[1]! - tmp[1]! * ra[0]!;
+      invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
+      kx += tmp[1]! * rb[2]! - tmp[2]! * rb[1]!; ky += tmp[2]! * rb[0]! - tmp[0]! * rb[2]!; kz += tmp[0]! * rb[1]! - tmp[1]! * rb[0]!;
+      K[c] = kx; K[3 + c] = ky; K[6 + c] = kz;
+    }
+    solve3(K, v3[0]! + bRate * Cx, v3[1]! + bRate * Cy, v3[2]! + bRate * Cz, x3);
+    const px = -ms * x3[0]! - is * s.lx[j]!, py = -ms * x3[1]! - is * s.ly[j]!, pz = -ms * x3[2]! - is * s.lz[j]!;
+    s.lx[j] = s.lx[j]! + px; s.ly[j] = s.ly[j]! + py; s.lz[j] = s.lz[j]! + pz;
+    applyLinear(sb, T, a, b, px, py, pz);
+    if (type === Joint3DType.Ball && flags & Joint3DFlag.Cone) {
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax); rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+      let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!, ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!, nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+      const sn = Math.hypot(nx, ny, nz);
+      if (sn > 1e-9) {
+        nx /= sn; ny /= sn; nz /= sn;
+        const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
+        const C = s.upper[j]! - phi;
+        let bias = 0, m = 1, im = 0;
+        if (C > 0) bias = C / hs; else if (useBias) { bias = bRate * C; m = ms; im = is; }
+        const cdot = -((sb[ob + 3]! - sb[oa + 3]!) * nx + (sb[ob + 4]! - sb[oa + 4]!) * ny + (sb[ob + 5]! - sb[oa + 5]!) * nz);
+        s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
+      }
+    }
+  }
+}
+
+/** After the substeps: joints past their breaking force or torque are removed and listed. */
+export function finishJoints3D(world: PhysicsWorld, hs: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const broken: number[] = [];
+  for (const j of s.list) {
+    const force = Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) / hs;
+    const torque = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!)) / hs;
+    if (force > s.breakForce[j]! || torque > s.breakTorque[j]!) broken.push(j);
+  }
+  for (const j of broken) {
+    const h = (e: number): number => e === 0 ? 0 : currentHandle(world, e);
+    s.breaks.push([h(j), h(s.a[j]!), h(s.b[j]!), world.steps]);
+    removeJoint3DUnchecked(world, s, j);
+  }
+}
