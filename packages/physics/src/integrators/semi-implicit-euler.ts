@@ -8,10 +8,18 @@ import { KERNEL } from '../threads/kernels.js';
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
  * a = F / m + g for bodies with a force accumulator and a = g for free particles. The world's
- * constant gravity is integrated exactly: x(t+h) = x(t) + (v(t+h) - g h / 2) h, i.e. the step is the
- * kick of F / m followed by the exact free fall x += v h + g h^2 / 2, v += g h (a splitting of two
- * exact or symplectic flows, so still symplectic and first order in F). Without that, every step
- * would lag the exact parabola by g h^2 / 2 and a bouncing ball would lose height every flight.
+ * constant gravity is integrated exactly for a body in free flight: a body no force acted on this step
+ * (no force accumulator, or one that is exactly zero) moves x(t+h) = x(t) + (v(t+h) - g h / 2) h,
+ * i.e. the exact parabola x += v h + g h^2 / 2, v += g h. Without that, every step would lag the
+ * parabola by g h^2 / 2 and a bouncing ball would lose height every flight. A body with any force
+ * (buoyancy, a spring, drag, thrust) keeps the plain x(t+h) = x(t) + v(t+h) h. The trade-off: a
+ * force-balanced body (buoyancy = weight, a spring at its hanging equilibrium) must read v = 0 and not
+ * move, which the -g h / 2 correction would break (it would drift g h^2 / 2 a step, 2.45 m in 30 s at
+ * dt 1/60); applying the correction with the whole acceleration a = F / m + g instead would keep the
+ * balance but is not symplectic (an undamped spring would gain energy by 1 + (omega h)^2 / 2 a step).
+ * So a body under other forces loses the exact parabola (its flight lags g h^2 / 2 a step, the plain
+ * scheme's first-order error); a body in pure free flight gets it. The contact solver (solver.ts)
+ * applies the same rule to the bodies it moves.
  * First order; symplectic, so the energy error of a conservative system stays bounded instead of drifting.
  * Source: Ramtal and Dobre ch. 14 ("Euler-Cromer"); Hairer, Lubich and Wanner, Geometric Numerical
  * Integration (2006), ch. I.1 and II.5 (splitting).
@@ -52,7 +60,9 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       const x = px[e]!, y = py[e]!;
       ox[e] = x; oy[e] = y;
       vx[e] = nvx; vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      // Exact free fall only for a body no force acted on (see the docstring).
+      const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
+      px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
@@ -65,7 +75,8 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       const x = px[e]!, y = py[e]!, z = pz[e]!;
       ox[e] = x; oy[e] = y; oz[e] = z;
       vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+      const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
+      px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h; pz[e] = z + (nvz - k * hz) * h;
       check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
   }

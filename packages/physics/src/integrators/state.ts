@@ -325,7 +325,9 @@ export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[]
  * Adds k g to the position of every mover (k in s^2): the first-order schemes pass k = +h^2 / 2
  * (explicit Euler, which drifts with the start velocity) or -h^2 / 2 (implicit Euler, which drifts
  * with the end velocity), so the world's constant gravity moves every body along the exact parabola
- * x += v h + g h^2 / 2 whatever the scheme does with the other forces.
+ * x += v h + g h^2 / 2. Only bodies no force acted on this step are shifted: a body under another
+ * force keeps the scheme's plain drift, so a force-balanced body stays at rest (the trade-off is
+ * documented on semiImplicitEuler).
  */
 export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: number): void {
   const g = world.gravity;
@@ -334,7 +336,14 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
   const c = world.components;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
   const m = s.movers;
-  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; px[e] = px[e]! + dx; py[e] = py[e]! + dy; pz[e] = pz[e]! + dz; }
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    // A forced body (index < nForced) under any force keeps the scheme's own drift, so a body in
+    // force balance (buoyancy = weight, a spring at equilibrium) stays exactly at rest.
+    if (i < s.nForced && (fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0)) continue;
+    px[e] = px[e]! + dx; py[e] = py[e]! + dy; pz[e] = pz[e]! + dz;
+  }
 }
 
 /** Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first. */

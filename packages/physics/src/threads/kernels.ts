@@ -37,7 +37,8 @@ function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
     const x = px[e]!, y = py[e]!;
     ox[e] = x; oy[e] = y;
     vx[e] = nvx; vy[e] = nvy;
-    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+    const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
+    px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h;
     check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
   }
   return check;
@@ -65,7 +66,8 @@ function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
     const x = px[e]!, y = py[e]!, z = pz[e]!;
     ox[e] = x; oy[e] = y; oz[e] = z;
     vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
-    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+    const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
+    px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h; pz[e] = z + (nvz - k * hz) * h;
     check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
   }
   return check;
