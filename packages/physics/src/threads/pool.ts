@@ -20,6 +20,10 @@ interface AnyWorker {
   postMessage(message: unknown): void;
   terminate(): unknown;
   unref?(): void;
+  /** Node: error events. */
+  on?(event: 'error', f: (e: unknown) => void): void;
+  /** Browser: error handler. */
+  onerror?: ((e: unknown) => void) | null;
 }
 
 /** Most scalar parameters a kernel takes. */
@@ -104,6 +108,8 @@ export class ThreadPool {
   private readonly blocking: boolean;
   private idBuffer: Int32Array;
   private disposed = false;
+  /** The first error a worker died of (it could not start), or null: the pool then runs on one thread. */
+  failure: string | null = null;
   /** Loops this pool has run on its threads (a count for tests and the bench). */
   runs = 0;
 
@@ -121,6 +127,12 @@ export class ThreadPool {
     for (let i = 1; i < threads; i++) {
       const w = factory(source);
       w.unref?.();
+      // A worker that dies (cannot start) must not crash the process: the pool falls back to one thread.
+      const died = (e: unknown): void => {
+        this.failure ??= String((e as { message?: unknown })?.message ?? e);
+      };
+      if (typeof w.on === 'function') w.on('error', died);
+      else w.onerror = died;
       const msg: PoolMessage = { type: 'init', index: i, ctl: this.ctl, params: this.params, results: this.results, errorText: this.errorText };
       w.postMessage(msg);
       this.workers.push(w);
@@ -138,7 +150,7 @@ export class ThreadPool {
 
   /** Whether every worker has started (a browser pool runs on one thread until then). */
   isReady(): boolean {
-    return !this.disposed && Atomics.load(this.ctl, CONTROL.READY) >= this.workers.length;
+    return !this.disposed && this.failure === null && Atomics.load(this.ctl, CONTROL.READY) >= this.workers.length;
   }
 
   /**
@@ -146,7 +158,7 @@ export class ThreadPool {
    * waits up to 10 s for them; a browser page's main thread cannot wait, and runs alone until `ready`).
    */
   usable(): boolean {
-    if (this.disposed) return false;
+    if (this.disposed || this.failure !== null) return false;
     if (this.isReady()) return true;
     if (!this.blocking) return false;
     const deadline = Date.now() + 10_000;

@@ -1,9 +1,8 @@
 /**
- * The body of every worker thread of a pool (pool.ts). It is sent to the worker as source text,
- * together with the kernels (worker-source.ts), so it refers to nothing but its arguments and
- * JavaScript's globals.
+ * The body of every worker thread of a pool (pool.ts): its loop as source text, sent to the worker
+ * together with the kernels (worker-source.ts).
  *
- * Protocol, over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
+ * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
  * - the worker waits (Atomics.wait) for `GEN` to change; then reads `CMD`;
  * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of
  *   [0, `COUNT`) (thread `index` of `THREADS`; the main thread is thread 0), stores its kernel's
@@ -38,87 +37,77 @@ export type PoolMessage =
   | { type: 'array'; id: number; array: ArrayBufferView };
 
 /**
- * Runs in the worker: installs the message handler on `port` (Node's parentPort, or null for the
- * browser's `self`) and serves the pool's commands. `kernels` are the functions of kernels.ts.
+ * The worker's loop, as JavaScript source text: `workerMain(kernels, nodePort)` installs the message
+ * handler on `nodePort` (Node's parentPort, or null for the browser's `self`) and serves the pool's
+ * commands as the file's header describes. It is text, not a function of this module, because
+ * bundlers rewrite inner functions (a minifier keeping names wraps them in a helper of its own
+ * naming), which would leave the worker calling a helper it does not have. The control slots below
+ * are those of `CONTROL`; commands those of `COMMAND`.
  */
-export function workerMain(
-  kernels: ReadonlyArray<(A: unknown[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number) => number>,
-  nodePort: { on(event: 'message', f: (m: PoolMessage) => void): void } | null,
-): void {
-  const C = { GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, COUNT: 7, THREADS: 8, IDS: 9, NARRAYS: 10, ARRAYS: 11 };
-  const RUN = 0, SYNC = 1, QUIT = 2;
-  const arrays: unknown[] = [];
-  let have = 0;
-  let ctl: Int32Array | null = null;
-  let params: Float64Array | null = null;
-  let results: Float64Array | null = null;
-  let errorText: Uint16Array | null = null;
-  let index = 0;
-  let seen = 0;
-  let waiting = false;
-  const args: unknown[] = [];
-
-  const finish = (): void => {
-    const c = ctl!;
-    if (Atomics.sub(c, C.PENDING, 1) === 1) Atomics.notify(c, C.PENDING);
-  };
-  const fail = (e: unknown): void => {
-    const text = String(e instanceof Error ? e.message : e);
-    const out = errorText!;
-    const n = Math.min(text.length, out.length - 1);
-    for (let i = 0; i < n; i++) out[i] = text.charCodeAt(i);
-    out[n] = 0;
-    Atomics.store(ctl!, C.ERROR, 1);
-  };
-  const loop = (): void => {
-    const c = ctl!;
+export const WORKER_MAIN_SOURCE = `
+function workerMain(kernels, nodePort) {
+  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11;
+  var RUN = 0, SYNC = 1, QUIT = 2;
+  var arrays = [], have = 0, ctl = null, params = null, results = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
+  function finish() {
+    if (Atomics.sub(ctl, PENDING, 1) === 1) Atomics.notify(ctl, PENDING);
+  }
+  function fail(e) {
+    var text = String(e instanceof Error ? e.message : e);
+    var n = Math.min(text.length, errorText.length - 1);
+    for (var i = 0; i < n; i++) errorText[i] = text.charCodeAt(i);
+    errorText[n] = 0;
+    Atomics.store(ctl, ERROR, 1);
+  }
+  function loop() {
     for (;;) {
-      Atomics.wait(c, C.GEN, seen);
-      const g = Atomics.load(c, C.GEN);
+      Atomics.wait(ctl, GEN, seen);
+      var g = Atomics.load(ctl, GEN);
       if (g === seen) continue;
       seen = g;
-      const cmd = c[C.CMD];
+      var cmd = ctl[CMD];
       if (cmd === QUIT) return;
       if (cmd === SYNC) {
-        if (have >= c[C.EXPECT]!) { finish(); continue; }
+        if (have >= ctl[EXPECT]) { finish(); continue; }
         waiting = true;
         return;
       }
       if (cmd !== RUN) continue;
       try {
-        const na = c[C.NARRAYS]!;
+        var na = ctl[NARRAYS];
         args.length = na;
-        for (let i = 0; i < na; i++) args[i] = arrays[c[C.ARRAYS + i]!];
-        const idsId = c[C.IDS]!;
-        const ids = idsId < 0 ? null : (arrays[idsId] as Int32Array);
-        const n = c[C.COUNT]!, t = c[C.THREADS]!;
-        const lo = Math.floor((n * index) / t), hi = Math.floor((n * (index + 1)) / t);
-        results![index] = kernels[c[C.KERNEL]!]!(args, params!, ids, lo, hi);
+        for (var i = 0; i < na; i++) args[i] = arrays[ctl[ARRAYS + i]];
+        var idsId = ctl[IDS];
+        var ids = idsId < 0 ? null : arrays[idsId];
+        var n = ctl[COUNT], t = ctl[THREADS];
+        var lo = Math.floor((n * index) / t), hi = Math.floor((n * (index + 1)) / t);
+        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi);
       } catch (e) {
         fail(e);
       }
       finish();
     }
-  };
-  const onMessage = (m: PoolMessage): void => {
+  }
+  function onMessage(m) {
     if (m.type === 'init') {
       ctl = m.ctl; params = m.params; results = m.results; errorText = m.errorText; index = m.index;
-      seen = Atomics.load(ctl, C.GEN);
-      Atomics.add(ctl, C.READY, 1);
-      Atomics.notify(ctl, C.READY);
+      seen = Atomics.load(ctl, GEN);
+      Atomics.add(ctl, READY, 1);
+      Atomics.notify(ctl, READY);
       loop();
       return;
     }
     if (m.type === 'array') {
       arrays[m.id] = m.array;
       have++;
-      if (waiting && ctl !== null && have >= ctl[C.EXPECT]!) {
+      if (waiting && ctl !== null && have >= ctl[EXPECT]) {
         waiting = false;
         finish();
         loop();
       }
     }
-  };
+  }
   if (nodePort !== null) nodePort.on('message', onMessage);
-  else (globalThis as unknown as { onmessage: (e: { data: PoolMessage }) => void }).onmessage = (e) => onMessage(e.data);
+  else globalThis.onmessage = function (e) { onMessage(e.data); };
 }
+`;

@@ -1,12 +1,12 @@
 /**
- * The source text of a pool's worker: the kernels (kernels.ts) and the worker's loop
- * (worker-main.ts), written out from the very functions the main thread runs, so both sides execute
- * the same code. One module for Node (`new Worker(source, { eval: true })`) and the browser (a Blob
+ * The source text of a pool's worker: the kernels (kernels.ts), written out from the very functions
+ * the main thread runs, so both sides execute the same arithmetic, and the worker's loop
+ * (worker-main.ts). One module for Node (`new Worker(source, { eval: true })`) and the browser (a Blob
  * URL, which a cross-origin isolated page may start).
  */
 
 import { KERNELS } from './kernels.js';
-import { workerMain } from './worker-main.js';
+import { WORKER_MAIN_SOURCE } from './worker-main.js';
 
 let cached: string | null = null;
 
@@ -15,10 +15,10 @@ export function workerSource(): string {
   if (cached !== null) return cached;
   cached = [
     "'use strict';",
-    // Bundlers that keep function names wrap inner functions in a __name helper; the worker has none.
+    // A bundler keeping names may wrap the kernels' names in a __name helper; the worker has none.
     'var __name = function (f) { return f; };',
     `var KERNELS = [${KERNELS.map((k) => k.toString()).join(',\n')}];`,
-    `var workerMain = ${workerMain.toString()};`,
+    WORKER_MAIN_SOURCE,
     "workerMain(KERNELS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",
   ].join('\n');
   return cached;
