@@ -2,7 +2,8 @@
  * Bouncing balls: the book's bouncing balls grown up. Balls of different sizes and masses fall,
  * bounce off the box, the inclined walls (and their end points) and each other.
  *
- * Input: click drops a ball at the pointer, drag throws one (release velocity from the drag).
+ * Input: press on a ball or crate and drag to pull it (a mouse joint); on empty space a click drops a
+ * ball at the pointer and a drag throws one (release velocity from the drag).
  * Keys: P pause, N single step, R reset, T trails, D debug overlay.
  * URL: ?count=N (balls, 1..10000), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
@@ -11,6 +12,7 @@ import { Graphics } from 'pixi.js';
 import { addBox, createPhysicsWorld, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
+import { enableMouseDrag } from '../shared/drag';
 import {
   DRAG_MODES, applyDrag, applyGravity, applyMaterial, bouncingBallsWorldOptions, buildBouncingBalls, isHeavy, removeBall, spawnBall,
   type BouncingBallsHandles, type DragMode,
@@ -77,8 +79,9 @@ const game = await startPixiGame({
   createWorld,
   bodies: () => handles.balls.length,
   controls: [
-    { keys: 'Click', action: 'drop a ball' },
-    { keys: 'Drag', action: 'throw a ball' },
+    { keys: 'Drag a body', action: 'pull a ball or crate' },
+    { keys: 'Click', action: 'drop a ball (empty space)' },
+    { keys: 'Drag', action: 'throw a ball (empty space)' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'D', action: 'debug: velocities, contacts' },
     { keys: 'X', action: 'drop a crate' },
@@ -136,11 +139,16 @@ const panel = createPanel(params, [
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Bouncing balls' });
 
-// ---- Pointer: click drops, drag throws -------------------------------------------------------
+// ---- Pointer: a press on a body drags it; elsewhere a click drops, a drag throws -----------------
+
+const canvas = app.canvas;
+// Registered before the drop/throw listeners, so a press that grabs a body is seen as taken there.
+// Reach 1.4 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of its
+// centre (its half height), so presses in the open still drop and throw balls.
+const drag = enableMouseDrag(canvas, () => shell.world, () => renderer.camera, { reach: 1.4 * handles.meanRadius });
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
-const canvas = app.canvas;
 const SAMPLES = 32;
 const sampleX = new Float64Array(SAMPLES), sampleY = new Float64Array(SAMPLES), sampleT = new Float64Array(SAMPLES);
 let sampleHead = 0, sampleCount = 0;
@@ -162,7 +170,7 @@ function sample(x: number, y: number, t: number): void {
 }
 
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0 || pointerId !== -1) return;
+  if (event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = local(event);
@@ -227,6 +235,8 @@ function drawPointer(): void {
 shell.expose({
   params,
   panel,
+  /** The pointer's mouse-joint drag: `joint` (0 when nothing is held) and `body`. */
+  drag,
   /** Entity ids of the balls, oldest first (a copy). */
   ballIds: (): number[] => handles.balls.slice(),
   /** Entity ids of the crates dropped with X, oldest first (a copy). */

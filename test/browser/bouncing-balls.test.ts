@@ -1,5 +1,5 @@
 /**
- * Bouncing balls in headless Chromium: click and drag spawn balls, P pauses (nothing moves while
+ * Bouncing balls in headless Chromium: click and drag on empty space spawn balls, a press on a ball drags it, P pauses (nothing moves while
  * paused, motion resumes after), N advances exactly one step, R rebuilds the same seeded scene.
  * The tests share one page with a small ball count (?count=8); before each, the game is reset
  * (window.game.reset(), unpaused) and the page's error list emptied, so each starts from the
@@ -201,6 +201,42 @@ describe('bouncing balls', () => {
     await field('restitution').fill('0.8');
     await field('restitution').press('Enter');
     await g.waitFor(() => window.game!.stats().entities === 8 + 3, null);
+  });
+
+  it('a press on a ball drags it through a mouse joint (no ball added), and release lets go', async () => {
+    const g = await open();
+    const start = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
+      const e = game.ballIds()[0]! % 2 ** 25;
+      return { x: game.world.components.Position.x[e]!, y: game.world.components.Position.y[e]! };
+    });
+    const screen = (x: number, y: number) => g.page.evaluate(([x, y]) => {
+      const cam = (window.game as unknown as { renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } } }).renderer.camera;
+      const box = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+    }, [x, y] as const);
+    const from = await screen(start.x, start.y);
+    await g.page.mouse.move(from.x, from.y);
+    await g.page.mouse.down();
+    const held = await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint);
+    expect(held).toBeGreaterThan(0);
+    // Pull to a point 2 m to the side at height 8 m (inside the 16 x 10 m box): in the 40 frames (0.67 s)
+    // free motion would keep x and fall about 2 m, so ending within 0.6 m of the target shows the pull.
+    const target = { x: start.x < 8 ? start.x + 2 : start.x - 2, y: 8 };
+    const to = await screen(target.x, target.y);
+    await g.page.mouse.move(to.x, to.y, { steps: 6 });
+    await g.frames(40);
+    const moved = await g.page.evaluate(() => {
+      const game = window.game as unknown as BallsGame & { world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
+      const e = game.ballIds()[0]! % 2 ** 25;
+      return { x: game.world.components.Position.x[e]!, y: game.world.components.Position.y[e]!, count: game.ballIds().length };
+    });
+    await g.page.mouse.up();
+    const after = await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint);
+    expect(Math.hypot(moved.x - target.x, moved.y - target.y)).toBeLessThan(0.6);
+    expect(moved.count).toBe(COUNT); // the press took the ball: no ball dropped or thrown
+    expect(after).toBe(0);
+    expect(g.errors).toEqual([]);
   });
 
   it('X drops a crate, a box that falls among the balls', async () => {
