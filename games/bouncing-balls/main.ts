@@ -14,7 +14,7 @@ import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import { enableMouseDrag } from '../shared/drag';
 import {
-  DRAG_MODES, applyDrag, applyGravity, applyMaterial, bouncingBallsWorldOptions, buildBouncingBalls, isHeavy, removeBall, spawnBall,
+  DRAG_MODES, applyDrag, applyGravity, applyMaterial, bouncingBallsWorldOptions, buildBouncingBalls, isHeavy, meanRadiusFor, removeBall, spawnBall,
   type BouncingBallsHandles, type DragMode,
 } from './scene';
 
@@ -145,7 +145,7 @@ const canvas = app.canvas;
 // Registered before the drop/throw listeners, so a press that grabs a body is seen as taken there.
 // Reach 1.4 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of its
 // centre (its half height), so presses in the open still drop and throw balls.
-const drag = enableMouseDrag(canvas, () => shell.world, () => renderer.camera, { reach: 1.4 * handles.meanRadius });
+const drag = enableMouseDrag(canvas, () => shell.world, () => renderer.camera, { reach: 1.4 * meanRadiusFor(params.count) });
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
