@@ -86,7 +86,8 @@ export class ShapeLayer {
           pts.push(camera.toScreenX(vx), camera.toScreenY(vy));
         }
       }
-      g.poly(pts, true);
+      // A copy: pixi keeps the array it is given until the frame is built, and `pts` is reused for the next shape.
+      g.poly(pts.slice(), true);
       if (S.sensor[e] === 1) g.stroke({ width: 1.5, color, alpha: 0.8 });
       else g.fill({ color, alpha: 0.85 }).stroke({ width: 1.5, color: 0x1d2330, alpha: 0.9 });
       this.drawn++;
