@@ -12,7 +12,7 @@ import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { createReadout } from '../shared/lab-kit';
 import {
-  LAUNCH, LEVEL_COUNT, PULL, buildLevel, launch, launchVelocity, predictArc, tally, worldOptions, type Level, type Tally,
+  LAUNCH, LEVEL_COUNT, PULL, buildLevel, hasFallen, launch, launchVelocity, predictArc, tally, worldOptions, type Level, type Tally,
 } from './scene';
 
 const params = {
@@ -137,7 +137,7 @@ function draw(world: PhysicsWorld): void {
   for (const p of lv.pieces) {
     if (!isAlive(world, p.body)) continue;
     const s = slotOf(p.body);
-    if (P.y[s]! < p.startY - 0.6) overlay.circle(sx(P.x[s]!), sy(P.y[s]!), 5).fill({ color: 0xe63946 });
+    if (hasFallen(world, p)) overlay.circle(sx(P.x[s]!), sy(P.y[s]!), 5).fill({ color: 0xe63946 });
   }
   readout.set(0, `${params.level} / ${LEVEL_COUNT}`);
   readout.set(1, String(shotsLeft));
