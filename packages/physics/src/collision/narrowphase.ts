@@ -2,6 +2,7 @@ import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts.js';
 import { BodyType, PairKind } from './broadphase.js';
+import { jointKeepsApart } from '../joints/connected.js';
 
 function pushContact(
   buf: ContactBuffer, kind: number, a: number, b: number, feature: number,
@@ -103,6 +104,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     const b = pairB[i]!;
     if (kind === PairKind.BallBall) {
       const a = pairA[i]!;
+      if (jointKeepsApart(world.joints, a, b)) continue; // jointed without collideConnected
       const rx = ox[b]! - ox[a]!, ry = oy[b]! - oy[a]!, rz = oz[b]! - oz[a]!;
       const ra = radius[a]!, rb = radius[b]!;
       const R = ra + rb;

@@ -7,6 +7,7 @@ import { collideHalfPlane, collideShapes, createManifold, type Manifold } from '
 import { growManifoldBuffer, pushEvent, type ShapeCollisionState, type ShapeScratch } from './manifolds.js';
 import { createGeometry, ShapeKind, type ConvexGeometry } from '../shapes/geometry.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../shapes/store.js';
+import { jointKeepsApart } from '../joints/connected.js';
 
 /**
  * Collide stage, shapes (2D): the broadphase and narrowphase of every shape (`Components.Shape`) and
@@ -24,7 +25,8 @@ import { SHAPE_STRIDE, type ShapeStore } from '../shapes/store.js';
  *
  * Filtering: shapes of one body never collide; a pair collides when each one's category meets the
  * other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which neither
- * body is dynamic are skipped.
+ * body is dynamic are skipped, and so are bodies joined by a joint without `collideConnected`
+ * (joints/connected.ts).
  *
  * Narrowphase (manifold.ts): each candidate pair's manifold at the start-of-step transforms, keeping a
  * point if its separation is below the speculative distance plus what the point's approach speed
@@ -325,6 +327,7 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     const aBall = (sc.flags[i]! & BALL) !== 0, bBall = (sc.flags[j]! & BALL) !== 0;
     if (aBall && bBall) continue; // ball-ball: narrowphase.ts
     if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
+    if (jointKeepsApart(world.joints, ba, bb)) continue;
     colliderGeometry(world, ea, gA);
     colliderGeometry(world, eb, gB);
     const sensor = (!aBall && S.sensor[ea] === 1) || (!bBall && S.sensor[eb] === 1);

@@ -4,8 +4,9 @@ import type { PhysicsWorld } from '../world.js';
 import { createSlot } from '../bodies.js';
 import { wakeIsland } from '../collision/sleep.js';
 import { currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertPositive, assertVector, describe } from '../validate.js';
 import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
+import { addNoCollide } from './connected.js';
 import { ensureJointArrays, IMPULSES } from './state.js';
 import { removeJointUnchecked } from './remove.js';
 
@@ -28,9 +29,15 @@ export interface JointBaseOptions {
   breakForce?: number;
   /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
   breakTorque?: number;
+  /**
+   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
+   * contacts between two jointed bodies are skipped (both ball and shape colliders), so a hinge's parts
+   * may overlap at the hinge; true keeps them colliding. Has no effect when A is the world.
+   */
+  collideConnected?: boolean;
 }
 
-const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque'] as const;
+const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
 
 /** Where a joint's bodies are: slots and poses read for anchors. */
 interface Ends { a: number; b: number }
@@ -54,6 +61,7 @@ function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions
   if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
   if (options.breakForce !== undefined) assertPositive(where, 'breakForce', options.breakForce);
   if (options.breakTorque !== undefined) assertPositive(where, 'breakTorque', options.breakTorque);
+  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
   return { a, b };
 }
 
@@ -119,6 +127,8 @@ function makeJoint(world: PhysicsWorld, type: JointTypeCode, ends: Ends, anchorA
   const att = world.joints.attached;
   if (a !== 0) { att[a] = att[a]! + 1; wakeIsland(world, a); }
   if (b !== 0) { att[b] = att[b]! + 1; wakeIsland(world, b); }
+  world.joints.noCollideJoint[j] = 0;
+  if (options.collideConnected !== true) addNoCollide(world.joints, j, a, b);
   return j;
 }
 

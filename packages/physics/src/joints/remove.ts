@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { wakeIsland } from '../collision/sleep.js';
 import { detachClothLink } from '../cloth/solver.js';
+import { removeNoCollide } from './connected.js';
 
 /**
  * Removes joint entity `j` (which must be a live joint): its bodies are woken (what held them is
@@ -18,6 +19,7 @@ function detachJoint(world: PhysicsWorld, j: number): void {
   const J = world.components.Joint;
   const att = world.joints.attached;
   const a = J.a[j]!, b = J.b[j]!;
+  removeNoCollide(world.joints, j, a, b);
   if (a !== 0) { att[a] = att[a]! - 1; if (entityExists(world, a)) wakeIsland(world, a); }
   att[b] = att[b]! - 1;
   if (entityExists(world, b)) wakeIsland(world, b);

@@ -67,6 +67,12 @@ export interface JointState {
   impulses: Float64Array;
   /** Per entity: how many joints hold it (so removing a body without joints costs nothing). */
   attached: Int32Array;
+  /** Per body: how many of its joints keep their two bodies from colliding (`collideConnected` false). */
+  noCollide: Int32Array;
+  /** Per joint entity: 1 if it is counted in `noCollide` and `noCollidePairs`. */
+  noCollideJoint: Uint8Array;
+  /** Body pair key (min * (capacity + 1) + max) -> how many joints without `collideConnected` join the pair. */
+  readonly noCollidePairs: Map<number, number>;
   /** Per solver body: cos, sin and angle (rad) of its orientation at the start of the step. */
   startPose: Float64Array;
   /** Per solver body: cos, sin and angle (rad) of its rotation since the start of the step. */
@@ -96,6 +102,9 @@ export function createJointState(): JointState {
     linkInts: new Int32Array(0),
     impulses: new Float64Array(0),
     attached: new Int32Array(0),
+    noCollide: new Int32Array(0),
+    noCollideJoint: new Uint8Array(0),
+    noCollidePairs: new Map(),
     rotation: new Float64Array(0),
     startPose: new Float64Array(0),
     bodyStamp: new Uint32Array(0),
@@ -115,6 +124,9 @@ export function ensureJointArrays(state: JointState, capacity: number): void {
   if (state.impulses.length >= IMPULSES * (capacity + 1)) return;
   state.impulses = new Float64Array(IMPULSES * (capacity + 1));
   state.attached = new Int32Array(capacity + 1);
+  state.noCollide = new Int32Array(capacity + 1);
+  state.noCollideJoint = new Uint8Array(capacity + 1);
+  state.noCollidePairs.clear();
   state.bodyStamp = new Uint32Array(capacity + 1);
   state.bodyClass = new Uint8Array(capacity + 1);
 }
