@@ -43,7 +43,8 @@ import { applyImpacts } from './impacts.js';
  *    the impulses stored for the next step's warm start;
  * 8. `containInBoundary`: a body the step's impulses sent through a wall of the boundary box that it
  *    had no contact with (a fast ball knocked sideways by another) is put back on the wall with its
- *    outward normal velocity reflected and scaled by the restitution, so nothing leaves the box.
+ *    outward normal velocity reflected and scaled by the restitution, so nothing leaves the box; the
+ *    potential energy it gains by being put back is taken from its kinetic energy, so energy never rises.
  *
  * Separation is tracked linearly: s = s0 + (dx_B - dx_A) . n, with s0 measured where the bodies
  * were at the start of the step. s > 0 is a speculative gap the bodies may close this substep
@@ -329,21 +330,32 @@ function containInBoundary(world: PhysicsWorld): void {
   const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
   const dims = world.dimensions;
   const pos = [P.x, P.y, P.z], vel = [V.x, V.y, V.z];
+  const g = world.gravity;
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
     const r = radius[e]!;
+    // Potential energy a unit mass gains by being put back (-g . dx), J/kg.
+    let gain = 0;
     for (let d = 0; d < dims; d++) {
       const p = pos[d]!, v = vel[d]!;
       const lo = box.min[d]! + r, hi = box.max[d]! - r;
       const x = p[e]!;
       if (x < lo && lo <= hi) {
-        p[e] = lo;
+        p[e] = lo; gain -= g[d]! * (lo - x);
         if (v[e]! < 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
       } else if (x > hi && lo <= hi) {
-        p[e] = hi;
+        p[e] = hi; gain -= g[d]! * (hi - x);
         if (v[e]! > 0) v[e] = -Math.max(box.restitution, eM[e]!) * v[e]!;
       }
+    }
+    // Putting a body back up against gravity must not create energy: its kinetic energy pays for the
+    // potential energy gained (|v| scaled so |v'|^2 / 2 = |v|^2 / 2 - gain, or stopped if that is < 0).
+    if (gain > 0) {
+      let v2 = 0;
+      for (let d = 0; d < dims; d++) v2 += vel[d]![e]! * vel[d]![e]!;
+      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
+      for (let d = 0; d < dims; d++) vel[d]![e] = vel[d]![e]! * f;
     }
   }
 }
