@@ -3,7 +3,7 @@
  * removed (`version` changes), not every step.
  */
 export interface ClothState {
-  /** Small steps a (world sub)step, each one predict / project / update pass, integer >= 1. Default 12. */
+  /** Small steps a (world sub)step, each one predict / project / update pass, integer >= 1. Default 11 (the bench's 64 x 64 cloth in 4 m/s wind with 1 m/s turbulence stretches 5.55% at most, as 12 did before links were solved colour by colour). */
   substeps: number;
   /** Bumped by every change to the set of links; the packed arrays are rebuilt when it differs from `built`. */
   version: number;
@@ -36,7 +36,7 @@ export interface ClothState {
 /** An empty cloth state. */
 export function createClothState(): ClothState {
   return {
-    substeps: 12, version: 0, built: 0, count: 0, rigidCount: 0,
+    substeps: 11, version: 0, built: 0, count: 0, rigidCount: 0,
     link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
     rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
     pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,
