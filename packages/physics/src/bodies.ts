@@ -1,37 +1,12 @@
-import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs';
+import { addComponent, hasComponent, removeEntity } from 'bitecs';
 import { assertTimeStep, type PhysicsWorld } from './world.js';
 import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { wakeIsland } from './collision/sleep.js';
-import { currentHandle, resolveEntity, resolveKind } from './handles.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from './handles.js';
+export { assertRoom, createSlot } from './handles.js';
 import {
   assertFinite, assertInRange, assertNonNegative, assertOptionalBoolean, assertOptions, assertPositive, assertVector, describe,
 } from './validate.js';
-
-/**
- * Throws unless the world has room for one more entity. Creating functions call it before they change
- * anything, so a full world leaves no trace of the refused call.
- * @param where the function the user called.
- * @throws RangeError `<where>: the world is full (capacity N entities); ...`.
- */
-export function assertRoom(world: PhysicsWorld, where: string): void {
-  if (world.entityIndex.aliveCount >= world.capacity) {
-    throw new RangeError(
-      `${where}: the world is full (capacity ${world.capacity} entities); remove entities or create the world with a larger capacity`,
-    );
-  }
-}
-
-/**
- * Internal: adds an empty entity and returns its slot (store index), counting its life in
- * `world.spawnStamp`. The public functions return `currentHandle(world, slot)`.
- * @throws RangeError (naming `where`) if the world is full.
- */
-export function createSlot(world: PhysicsWorld, where: string): number {
-  assertRoom(world, where);
-  const slot = addEntity(world);
-  world.spawnStamp[slot] = world.spawnStamp[slot]! + 1;
-  return slot;
-}
 
 /**
  * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of

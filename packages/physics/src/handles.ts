@@ -1,4 +1,4 @@
-import { entityExists, hasComponent } from 'bitecs';
+import { addEntity, entityExists, hasComponent } from 'bitecs';
 import type { PhysicsWorld } from './world.js';
 import { describe } from './validate.js';
 
@@ -155,3 +155,30 @@ export function resolveKind(world: PhysicsWorld, handle: unknown, kind: EntityKi
   }
   return slot;
 }
+
+/**
+ * Throws unless the world has room for one more entity. Creating functions call it before they change
+ * anything, so a full world leaves no trace of the refused call.
+ * @param where the function the user called.
+ * @throws RangeError `<where>: the world is full (capacity N entities); ...`.
+ */
+export function assertRoom(world: PhysicsWorld, where: string): void {
+  if (world.entityIndex.aliveCount >= world.capacity) {
+    throw new RangeError(
+      `${where}: the world is full (capacity ${world.capacity} entities); remove entities or create the world with a larger capacity`,
+    );
+  }
+}
+
+/**
+ * Internal: adds an empty entity and returns its slot (store index), counting its life in
+ * `world.spawnStamp`. The public functions return `currentHandle(world, slot)`.
+ * @throws RangeError (naming `where`) if the world is full.
+ */
+export function createSlot(world: PhysicsWorld, where: string): number {
+  assertRoom(world, where);
+  const slot = addEntity(world);
+  world.spawnStamp[slot] = world.spawnStamp[slot]! + 1;
+  return slot;
+}
+

@@ -2,7 +2,8 @@
  * @bitphysics/physics: components, systems, the staged step, collisions, diagnostics and scenes.
  * Everything is SI (m, kg, s, rad, N), y up, angles counter-clockwise.
  */
-export { createPhysicsWorld, registerForceLaw, addComponentIfMissing, disposeWorld, threadsReady, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
+export { createPhysicsWorld } from './create-world.js';
+export { registerForceLaw, addComponentIfMissing, disposeWorld, threadsReady, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
 export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
@@ -98,10 +99,10 @@ export {
 } from './particles/emitter.js';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
 export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';
-export {
-  G_SI, COULOMB_SI, MAX_WIND_MODES, setGravitation, setElectrostatics, setWind, windAt,
-} from './forces/settings.js';
-export type { ForceLawSettings, WindField, WindOptions, GravitationOptions, GravityMethod } from './forces/settings.js';
+export { G_SI, COULOMB_SI, MAX_WIND_MODES } from './forces/settings.js';
+export { setGravitation, setElectrostatics, setWind, windAt } from './forces/configure.js';
+export type { ForceLawSettings, WindField, GravityMethod } from './forces/settings.js';
+export type { WindOptions, GravitationOptions } from './forces/configure.js';
 export type { ForceLaw } from './forces/law.js';
 export { gravityScaleSystem, mutualGravitySystem, attractorSystem } from './forces/gravity.js';
 export { coulombSystem, lorentzSystem, fieldsAt } from './forces/electromagnetism.js';

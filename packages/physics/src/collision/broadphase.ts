@@ -1,16 +1,10 @@
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import type { CollisionState } from './state.js';
+import { BodyType, PairKind, type CollisionState } from './state.js';
+export { BodyType, PairKind } from './state.js';
 import { wakeTag } from './sleep.js';
 
-/**
- * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
- * body takes no part in contacts except to be woken by an awake or kinematic body that comes near.
- */
-export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2, Sleeping: 3 } as const);
 
-/** Pair kinds written by the broadphase into `CollisionState.pairKind`. */
-export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
 
 /** Bodies whose reach (radius + speculative margin) exceeds this many times the mean reach skip the grid. */
 const OVERSIZED_FACTOR = 2.5;

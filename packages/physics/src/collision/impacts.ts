@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { ContactKind, type ContactBuffer } from './contacts.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 
 /**
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of

@@ -1,6 +1,7 @@
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './broadphase.js';
-import { findPrevious, pushEvent, rotateManifolds } from './manifolds.js';
+import { BodyType } from './state.js';
+import { findPrevious, rotateManifolds } from './manifolds.js';
+import { pushEvent } from './events.js';
 import type { CollisionState } from './state.js';
 
 /**

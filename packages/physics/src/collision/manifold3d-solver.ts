@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 import { contact3DStateOf, pushEvent3D } from './manifolds3d-state.js';
 import { currentHandle } from '../handles.js';
 

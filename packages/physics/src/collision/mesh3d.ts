@@ -1,7 +1,6 @@
 import { addComponent, entityExists } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle } from '../handles.js';
+import { createSlot, currentHandle } from '../handles.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
 import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 

@@ -1,10 +1,11 @@
 import { hasComponent } from 'bitecs';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 import { wakeIsland } from './sleep.js';
 import { collideHalfPlane, collideShapes, createManifold, type Manifold } from './manifold.js';
-import { growManifoldBuffer, pushEvent, type ShapeCollisionState, type ShapeScratch } from './manifolds.js';
+import { growManifoldBuffer, type ShapeCollisionState, type ShapeScratch } from './manifolds.js';
+import { pushEvent } from './events.js';
 import { createGeometry, ShapeKind, type ConvexGeometry } from '../shapes/geometry.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../shapes/store.js';
 import { jointKeepsApart } from '../joints/connected.js';

@@ -1,6 +1,6 @@
 import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 
 /**
  * Sleeping for shape bodies (used by sleep.ts): shape bodies join the bodies that may sleep, a shape

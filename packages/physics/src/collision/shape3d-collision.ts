@@ -1,7 +1,7 @@
 import { hasComponent } from 'bitecs';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 import { Shape3DKind, shapes3DOf, type Shape3DStore } from '../shapes3d/store.js';
 import { ColliderKind3D, collide3D, collidePlane3D, createManifold3D, type Collider3D, type Manifold3D } from './manifolds3d.js';
 import { contact3DStateOf, growManifold3DBuffer, pushEvent3D, rowKey, type Contact3DState } from './manifolds3d-state.js';

@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { ContactKind, findWarmStart, storeWarmStart, type ContactBuffer } from './contacts.js';
-import { BodyType } from './broadphase.js';
+import { BodyType } from './state.js';
 import { reportNonFinite } from '../errors.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import type { CollisionState } from './state.js';

@@ -2,6 +2,15 @@ import { createContactBuffer, createWarmStartCache, type ContactBuffer, type War
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds.js';
 
 /**
+ * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
+ * body takes no part in contacts except to be woken by an awake or kinematic body that comes near.
+ */
+export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2, Sleeping: 3 } as const);
+
+/** Pair kinds written by the broadphase into `CollisionState.pairKind`. */
+export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
+
+/**
  * Contact solver tuning (Box2D v3's soft step; the defaults are Box2D's). Set at world creation from
  * the world options; the fields may be changed between steps.
  */

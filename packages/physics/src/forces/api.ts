@@ -1,8 +1,7 @@
 import { addComponent, hasComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle, resolveKind } from '../handles.js';
+import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import {
   assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions, assertPositive,
   assertVector, describe,

@@ -1,7 +1,7 @@
 import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
-import { windAt } from './settings.js';
+import { windAt } from './configure.js';
 import { reportNonFinite } from '../errors.js';
 import { dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 

@@ -2,8 +2,7 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle, resolveEntity, resolveKind } from '../handles.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../handles.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import type { ForceLaw } from './law.js';
 

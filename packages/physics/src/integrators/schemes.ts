@@ -1,5 +1,4 @@
-import type { PhysicsWorld } from '../world.js';
-import type { System } from '../pipeline/stages.js';
+import type { PhysicsWorld, System } from '../world.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
 import {
   accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, sumGroups, writeTrial,

@@ -1,9 +1,8 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import type { PhysicsWorld } from '../world.js';
-import { createSlot } from '../bodies.js';
+import { createSlot, currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
 import { wakeIsland } from '../collision/sleep.js';
-import { currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertPositive, assertVector, describe } from '../validate.js';
 import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
 import { addNoCollide } from './connected.js';

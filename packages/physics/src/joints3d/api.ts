@@ -1,7 +1,6 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle, resolveEntity } from '../handles.js';
+import { createSlot, currentHandle, resolveEntity } from '../handles.js';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store.js';
 

@@ -1,7 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle, resolveKind } from '../handles.js';
+import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
 import {

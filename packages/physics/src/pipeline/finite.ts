@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld, System } from '../world.js';
 import { NonFiniteStateError } from '../errors.js';
 import { query } from '../query.js';
 import { currentHandle } from '../handles.js';
-import type { StageName, System } from './stages.js';
+import { type StageName } from './stage-names.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
 

@@ -1,4 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
+import type {  System } from '../world.js';
+import type { StageName } from './stage-names.js';
 import { clearForcesSystem } from '../forces/clear.js';
 import { linearDragSystem, liftSystem, quadraticDragSystem, stiffDragSystem } from '../forces/drag.js';
 import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
@@ -25,28 +26,8 @@ import { trustFiniteOutput } from './finite.js';
 import { query } from '../query.js';
 import { clothSystem } from '../cloth/solver.js';
 
-/** A system: a plain function of the world, run once per (sub)step in its stage. */
-export type System = (world: PhysicsWorld) => void;
-
-/**
- * The stages of a step, in order (docs/architecture.md, "The step"):
- * 1. `spawn`: waking, then lifetimes and emitters (once per step);
- * 2. `clearForces`: zero the force and torque accumulators;
- * 3. `forces`: one system per force law, user forces too;
- * 4. `integrate`: the world's integration scheme (multi-stage schemes re-run 2 and 3 at trial states),
- *    then the exact decay of drag and damping too stiff to be forces this step (forces/dissipation.ts);
- * 5. `collide`: broadphase, narrowphase (balls; then shapes: shape-collision.ts, 3D shapes: shape3d-collision.ts), contact solver (impulses, restitution, friction, position correction);
- * 6. `constraints`: position-based links (cloth);
- * 7. `finalize`: sleeping islands (once per step).
- * Stages 2 to 6 run once per substep.
- */
-export const STAGES = ['spawn', 'clearForces', 'forces', 'integrate', 'collide', 'constraints', 'finalize'] as const;
-
-/** One of `STAGES`. */
-export type StageName = (typeof STAGES)[number];
-
-/** The stages that run once per substep, in order. */
-export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'integrate', 'collide', 'constraints'];
+export { STAGES, SUBSTEP_STAGES, type StageName } from './stage-names.js';
+export type { System } from '../world.js';
 
 /**
  * The default pipeline: every stage with its built-in systems, in run order. A world starts with a

@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
-import { STAGES, SUBSTEP_STAGES, type StageName, type System } from './stages.js';
+import type { PhysicsWorld, System } from '../world.js';
+import { STAGES, SUBSTEP_STAGES, type StageName } from './stage-names.js';
 import { assertOptions, describe } from '../validate.js';
 import { query } from '../query.js';
 import { checkStageState, stageNeedsCheck } from './finite.js';

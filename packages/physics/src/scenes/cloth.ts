@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { createCloth, type Cloth } from '../cloth/create.js';
-import { setWind } from '../forces/settings.js';
+import { setWind } from '../forces/configure.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { SceneDefinition } from './types.js';
 

@@ -1,7 +1,7 @@
 import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { enableMutualGravity } from '../forces/api.js';
-import { setGravitation } from '../forces/settings.js';
+import { setGravitation } from '../forces/configure.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../validate.js';
 import type { SceneDefinition } from './types.js';

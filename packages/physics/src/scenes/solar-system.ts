@@ -4,7 +4,7 @@ import {
 import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { enableMutualGravity } from '../forces/api.js';
-import { setGravitation } from '../forces/settings.js';
+import { setGravitation } from '../forces/configure.js';
 import { INTEGRATOR_NAMES, type IntegratorName } from '../integrators/names.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertPositive, describe } from '../validate.js';
 import type { SceneDefinition } from './types.js';

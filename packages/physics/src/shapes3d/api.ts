@@ -1,7 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
-import { createSlot } from '../bodies.js';
-import { currentHandle, resolveEntity, resolveKind } from '../handles.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../handles.js';
 import { setInertiaUnchecked } from '../rigid.js';
 import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { quickhull, type Hull } from './hull.js';

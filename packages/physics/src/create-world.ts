@@ -1,0 +1,224 @@
+/**
+ * Assembly, the top of the physics package: `createPhysicsWorld` builds a world's data (world.ts,
+ * components.ts, the collision, joint and cloth states) and installs the default pipeline
+ * (pipeline/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
+ * systems above it, and this file on top: nothing below imports it.
+ */
+import {  createEntityIndex, createWorld, observe, onAdd } from 'bitecs';
+import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
+import { createCollisionState } from './collision/state.js';
+import { createStages, STAGES } from './pipeline/stages.js';
+import { INTEGRATOR_NAMES } from './integrators/names.js';
+import { Rng } from './rng.js';
+import { createForceLawSettings } from './forces/settings.js';
+import { removeSpringsOf } from './forces/spring.js';
+import { wakeTouching } from './collision/sleep.js';
+import { createJointState } from './joints/state.js';
+import { removeJointsOf } from './joints/remove.js';
+import { createClothState } from './cloth/state.js';
+import { createThreadPool } from './threads/pool.js';
+import { shareStore, shareStores } from './threads/shared-stores.js';
+import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './validate.js';
+import { addComponentIfMissing, registerForceLaw, assertTimeStep, type PhysicsWorld, type PhysicsWorldContext, type PhysicsWorldOptions, type StageTimings, MAX_CAPACITY } from './world.js';
+
+const KNOWN_OPTIONS = [
+  'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
+  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation', 'sleep', 'threads',
+] as const;
+
+/**
+ * Creates a physics world: component stores of fixed capacity, the staged pipeline, collision
+ * state and a seeded random number generator.
+ *
+ * @throws TypeError on options that are not an object, an unknown option name, a null option or a value of
+ *   the wrong type (booleans must be booleans).
+ * @throws RangeError on a value out of range (dt <= 0, capacity < 1, substeps not an integer, ...).
+ * @example
+ * const world = createPhysicsWorld({ dimensions: 2, capacity: 1000, gravity: [0, -9.81] });
+ */
+export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWorld {
+  const where = 'createPhysicsWorld';
+  assertOptions(where, options, KNOWN_OPTIONS);
+  const dimensions = options.dimensions ?? 2;
+  if (dimensions !== 2 && dimensions !== 3) {
+    throw new RangeError(`${where}: dimensions must be 2 or 3, got ${describe(dimensions)}`);
+  }
+  const capacity = options.capacity ?? 10_000;
+  assertInteger(where, 'capacity', capacity, 1, MAX_CAPACITY);
+  const gravity = new Float64Array(3);
+  if (options.gravity !== undefined) {
+    assertVector(where, 'gravity', options.gravity, dimensions);
+    for (let i = 0; i < dimensions; i++) gravity[i] = options.gravity[i]!;
+  } else {
+    gravity[1] = -9.81;
+  }
+  const dt = options.dt ?? 1 / 60;
+  assertTimeStep(where, dt);
+  const substeps = options.substeps ?? 1;
+  assertInteger(where, 'substeps', substeps, 1, 64);
+  const integrator = options.integrator ?? 'semi-implicit-euler';
+  if (typeof integrator !== 'string' || !(INTEGRATOR_NAMES as readonly string[]).includes(integrator)) {
+    throw new RangeError(`${where}: integrator must be one of ${INTEGRATOR_NAMES.map((n) => `'${n}'`).join(', ')}, got ${describe(integrator)}`);
+  }
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const solverSubsteps = options.solverSubsteps ?? 4;
+  assertInteger(where, 'solverSubsteps', solverSubsteps, 1, 16);
+  const solverIterations = options.solverIterations ?? 1;
+  assertInteger(where, 'solverIterations', solverIterations, 1, 50);
+  const restitutionThreshold = options.restitutionThreshold ?? 0.5;
+  assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
+  const interpolation = options.interpolation ?? true;
+  assertBoolean(where, 'interpolation', interpolation);
+  const sleep = options.sleep ?? true;
+  assertBoolean(where, 'sleep', sleep);
+  const threads = options.threads ?? 1;
+  assertInteger(where, 'threads', threads, 1, 64);
+  // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
+  const threadPool = threads > 1 ? createThreadPool(where, threads) : null;
+
+  const entityIndex = createEntityIndex();
+  const components = createComponents(capacity);
+  if (threadPool !== null) shareStores(components, capacity);
+  const timings = {} as StageTimings;
+  for (const s of STAGES) timings[s] = 0;
+  const context: PhysicsWorldContext = {
+    dimensions,
+    capacity,
+    gravity,
+    dt,
+    substeps,
+    h: dt / substeps,
+    integrator,
+    time: 0,
+    substepStart: 0,
+    laws: createForceLawSettings(),
+    steps: 0,
+    rng: new Rng(seed),
+    components,
+    stages: createStages(),
+    // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
+    collision: createCollisionState(capacity, {
+      solverSubsteps, solverIterations, sleep, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
+    }),
+    joints: createJointState(),
+    cloth: createClothState(),
+    timings,
+    spawnStamp: new Uint32Array(capacity + 1),
+    entityIndex,
+    removeHooks: [removeSpringsOf, removeJointsOf, wakeTouching],
+    interpolation,
+    threads,
+    threadPool,
+  };
+  const world = createWorld(context, entityIndex) as PhysicsWorld;
+  installDefaults(world);
+  return world;
+}
+
+/**
+ * Resets a component's fields for an entity when the component is added (ids are recycled and
+ * bitecs leaves old data behind), and makes every force-law component bring the Force accumulator.
+ */
+function installDefaults(world: PhysicsWorld): void {
+  const c = world.components;
+  // First: lazily allocated stores get their arrays before any other observer writes defaults.
+  for (const name of LAZY_COMPONENTS) {
+    const store = c[name];
+    observe(world, onAdd(store), () => {
+      materializeStore(store, world.capacity);
+      if (world.threads > 1) shareStore(store, world.capacity);
+    });
+  }
+  const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
+    s.x[eid] = 0; s.y[eid] = 0; s.z[eid] = 0;
+  };
+  // Position is where every body starts: reset all its per-entity motion state, so a recycled id
+  // never inherits velocity, spin or force from the entity that had it before.
+  observe(world, onAdd(c.Position), (eid: number) => {
+    c.Position.x[eid] = 0; c.Position.y[eid] = 0; c.Position.z[eid] = 0;
+    c.PreviousPosition.x[eid] = 0; c.PreviousPosition.y[eid] = 0; c.PreviousPosition.z[eid] = 0;
+    c.Velocity.x[eid] = 0; c.Velocity.y[eid] = 0; c.Velocity.z[eid] = 0;
+    c.AngularVelocity.x[eid] = 0; c.AngularVelocity.y[eid] = 0; c.AngularVelocity.z[eid] = 0;
+    c.Force.x[eid] = 0; c.Force.y[eid] = 0; c.Force.z[eid] = 0;
+    c.Torque.x[eid] = 0; c.Torque.y[eid] = 0; c.Torque.z[eid] = 0;
+  });
+  observe(world, onAdd(c.Velocity), zero3(c.Velocity));
+  observe(world, onAdd(c.Force), zero3(c.Force));
+  observe(world, onAdd(c.AngularVelocity), zero3(c.AngularVelocity));
+  observe(world, onAdd(c.Torque), zero3(c.Torque));
+  observe(world, onAdd(c.Mass), (eid: number) => { c.Mass.value[eid] = 1; c.Mass.inv[eid] = 1; });
+  observe(world, onAdd(c.Ball), (eid: number) => { c.Ball.radius[eid] = DEFAULT_RADIUS; });
+  observe(world, onAdd(c.Material), (eid: number) => {
+    c.Material.restitution[eid] = DEFAULT_MATERIAL.restitution;
+    c.Material.friction[eid] = DEFAULT_MATERIAL.friction;
+    c.Material.staticFriction[eid] = DEFAULT_MATERIAL.friction;
+  });
+  observe(world, onAdd(c.Segment), (eid: number) => {
+    const s = c.Segment;
+    s.ax[eid] = 0; s.ay[eid] = 0; s.az[eid] = 0; s.bx[eid] = 0; s.by[eid] = 0; s.bz[eid] = 0; s.radius[eid] = 0;
+  });
+  observe(world, onAdd(c.Angle), (eid: number) => { c.Angle.value[eid] = 0; });
+  observe(world, onAdd(c.Orientation), (eid: number) => {
+    c.Orientation.x[eid] = 0; c.Orientation.y[eid] = 0; c.Orientation.z[eid] = 0; c.Orientation.w[eid] = 1;
+  });
+  observe(world, onAdd(c.Inertia), (eid: number) => { c.Inertia.value[eid] = 0; c.Inertia.inv[eid] = 0; });
+  observe(world, onAdd(c.InertiaTensor), (eid: number) => {
+    const T = c.InertiaTensor; T.x[eid] = 0; T.y[eid] = 0; T.z[eid] = 0; T.invX[eid] = 0; T.invY[eid] = 0; T.invZ[eid] = 0;
+  });
+  observe(world, onAdd(c.AngularDamping), (eid: number) => {
+    c.AngularDamping.k[eid] = 0;
+    addComponentIfMissing(world, eid, c.Torque);
+  });
+  observe(world, onAdd(c.Plane), (eid: number) => { c.Plane.nx[eid] = 0; c.Plane.ny[eid] = 1; c.Plane.nz[eid] = 0; c.Plane.d[eid] = 0; });
+  observe(world, onAdd(c.LinearDrag), (eid: number) => { c.LinearDrag.k[eid] = 0; });
+  observe(world, onAdd(c.QuadraticDrag), (eid: number) => { c.QuadraticDrag.k[eid] = 0; });
+  observe(world, onAdd(c.GravityScale), (eid: number) => { c.GravityScale.value[eid] = 1; });
+  observe(world, onAdd(c.Attractor), (eid: number) => { c.Attractor.mass[eid] = 0; c.Attractor.softening[eid] = 0; });
+  observe(world, onAdd(c.Charge), (eid: number) => { c.Charge.value[eid] = 0; });
+  const zeroField = (F: typeof c.ElectricField) => (eid: number) => {
+    F.x[eid] = 0; F.y[eid] = 0; F.z[eid] = 0; F.ampX[eid] = 0; F.ampY[eid] = 0; F.ampZ[eid] = 0; F.omega[eid] = 0; F.phase[eid] = 0;
+  };
+  observe(world, onAdd(c.ElectricField), zeroField(c.ElectricField));
+  observe(world, onAdd(c.MagneticField), zeroField(c.MagneticField));
+  observe(world, onAdd(c.CentralForce), (eid: number) => {
+    const C = c.CentralForce; C.cx[eid] = 0; C.cy[eid] = 0; C.cz[eid] = 0; C.k[eid] = 0; C.n[eid] = 2;
+  });
+  observe(world, onAdd(c.Lift), (eid: number) => { c.Lift.k[eid] = 0; c.Lift.axisX[eid] = 0; c.Lift.axisY[eid] = 0; c.Lift.axisZ[eid] = 1; });
+  observe(world, onAdd(c.Buoyancy), (eid: number) => {
+    const B = c.Buoyancy; B.shape[eid] = 0; B.radius[eid] = 0.5; B.halfX[eid] = 0.5; B.halfY[eid] = 0.5; B.halfZ[eid] = 0.5; B.dragCoefficient[eid] = 0;
+  });
+  observe(world, onAdd(c.FluidRegion), (eid: number) => {
+    const F = c.FluidRegion; F.surface[eid] = 0; F.density[eid] = 1000;
+    F.minX[eid] = -Infinity; F.maxX[eid] = Infinity; F.minZ[eid] = -Infinity; F.maxZ[eid] = Infinity;
+  });
+  observe(world, onAdd(c.Spring), (eid: number) => {
+    const S = c.Spring; S.a[eid] = 0; S.b[eid] = 0; S.restLength[eid] = 1; S.stiffness[eid] = 0; S.damping[eid] = 0;
+    S.oneSided[eid] = 0; S.anchorX[eid] = 0; S.anchorY[eid] = 0; S.anchorZ[eid] = 0;
+  });
+  observe(world, onAdd(c.DrivingForce), (eid: number) => {
+    const D = c.DrivingForce; D.x[eid] = 0; D.y[eid] = 0; D.z[eid] = 0; D.omega[eid] = 0; D.phase[eid] = 0;
+  });
+  observe(world, onAdd(c.RandomForce), (eid: number) => { c.RandomForce.magnitude[eid] = 0; c.RandomForce.correlationTime[eid] = 1; c.RandomForce.seed[eid] = eid; });
+  observe(world, onAdd(c.Thrust), (eid: number) => {
+    const T = c.Thrust; T.exhaustVelocity[eid] = 0; T.massFlowRate[eid] = 0; T.fuel[eid] = 0; T.dirX[eid] = 0; T.dirY[eid] = 1; T.dirZ[eid] = 0;
+  });
+  observe(world, onAdd(c.Vortex), (eid: number) => {
+    const V = c.Vortex; V.cx[eid] = 0; V.cy[eid] = 0; V.cz[eid] = 0; V.axisX[eid] = 0; V.axisY[eid] = 0; V.axisZ[eid] = 1; V.k[eid] = 0; V.n[eid] = 1;
+  });
+  observe(world, onAdd(c.Lifetime), (eid: number) => { c.Lifetime.age[eid] = 0; c.Lifetime.duration[eid] = 1; });
+  for (const law of [
+    c.LinearDrag, c.Vortex, c.QuadraticDrag, c.GravityScale, c.MutualGravity, c.Charge, c.CentralForce, c.Lift, c.Buoyancy,
+    c.DrivingForce, c.RandomForce, c.Thrust,
+  ]) registerForceLaw(world, law);
+  // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.
+  observe(world, onAdd(c.Force), (eid: number) => addComponentIfMissing(world, eid, c.Mass));
+  // A collider is always a body with a force accumulator: contacts need its start-of-step position,
+  // which only bare particles may skip saving (see the `interpolation` option).
+  observe(world, onAdd(c.Ball), (eid: number) => {
+    addComponentIfMissing(world, eid, c.Mass);
+    addComponentIfMissing(world, eid, c.Material);
+    addComponentIfMissing(world, eid, c.Force);
+  });
+}
+
