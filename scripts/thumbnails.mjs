@@ -40,7 +40,9 @@ try {
       await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 60_000 });
       // Play `seconds` of simulated time (independent of how fast software WebGL draws).
       await page.waitForFunction((s) => (window.game?.world?.time ?? 0) >= s, seconds, { timeout: 120_000 });
-      await page.addStyleTag({ content: 'body > *:not(canvas) { visibility: hidden !important; }' });
+      // Hide every overlay but keep the canvas: it sits inside the page layout's stage, so its
+      // ancestors stay in the flow (hidden, not removed) and only the canvas is shown.
+      await page.addStyleTag({ content: 'body * { visibility: hidden !important; } canvas { visibility: visible !important; }' });
       await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
       const png = await page.locator('canvas').first().screenshot();
       const file = join(repoRoot, 'games', entry.folder, 'thumbnail.png');
