@@ -4,6 +4,12 @@ import { restore, snapshot, type WorldSnapshot } from './snapshot.js';
 import { assertOptions, describe } from '../validate.js';
 
 /**
+ * The host's structured clone (Node >= 17, every browser and worker). Typed here because the physics
+ * package compiles without the DOM and Node type libraries.
+ */
+const cloneData = <T>(value: T): T => (globalThis as unknown as { structuredClone<V>(v: V): V }).structuredClone(value);
+
+/**
  * Input replay: a run is its starting state plus the inputs given to it (physics calls made between
  * steps, by name, with their arguments, at step numbers). Played back from the same start, the inputs
  * reproduce the run to the last bit, because stepping is deterministic (see stateHash and snapshot).
@@ -86,7 +92,7 @@ export function createInputRecorder(world: PhysicsWorld, options: ReplayOptions)
   const where = 'createInputRecorder';
   checkOptions(where, options);
   const startSteps = world.steps;
-  const replay: Replay = { start: snapshot(world), outside: options.save ? structuredClone(options.save()) : undefined, events: [], steps: 0 };
+  const replay: Replay = { start: snapshot(world), outside: options.save ? cloneData(options.save()) : undefined, events: [], steps: 0 };
   return {
     get replay() {
       replay.steps = world.steps - startSteps;
@@ -95,7 +101,7 @@ export function createInputRecorder(world: PhysicsWorld, options: ReplayOptions)
     input(name: string, ...args: unknown[]): void {
       const fn = options.handlers[name];
       if (typeof fn !== 'function') throw new RangeError(`InputRecorder.input: name must be one of the handlers (${Object.keys(options.handlers).join(', ')}), got ${describe(name)}`);
-      const copy = structuredClone(args);
+      const copy = cloneData(args);
       (fn as (...a: unknown[]) => void)(...args);
       replay.events.push({ step: world.steps - startSteps, name, args: copy });
     },
@@ -130,13 +136,13 @@ export function createReplayPlayer(world: PhysicsWorld, replay: Replay, options:
     if (typeof options.handlers[e.name] !== 'function') throw new RangeError(`${where}: the replay calls '${e.name}', which is not among the handlers`);
   }
   restore(world, replay.start);
-  if (options.load) options.load(structuredClone(replay.outside));
+  if (options.load) options.load(cloneData(replay.outside));
   const advance = options.step ?? (() => step(world));
   let played = 0, next = 0;
   const give = () => {
     while (next < events.length && events[next]!.step <= played) {
       const e = events[next++]!;
-      (options.handlers[e.name] as (...a: unknown[]) => void)(...(structuredClone(e.args) as unknown[]));
+      (options.handlers[e.name] as (...a: unknown[]) => void)(...(cloneData(e.args) as unknown[]));
     }
   };
   return {

@@ -20,10 +20,14 @@ interface AnyWorker {
   postMessage(message: unknown): void;
   terminate(): unknown;
   unref?(): void;
-  /** Node: error events. */
-  on?(event: 'error', f: (e: unknown) => void): void;
+  /** Node: error and message events. */
+  on?(event: 'error' | 'message', f: (e: unknown) => void): void;
+  /** Node: removes a listener (a message listener would keep an unref'd worker's process alive). */
+  off?(event: 'message', f: (e: unknown) => void): void;
   /** Browser: error handler. */
   onerror?: ((e: unknown) => void) | null;
+  /** Browser: message handler. */
+  onmessage?: ((e: { data: unknown }) => void) | null;
 }
 
 /** Most scalar parameters a kernel takes. */
@@ -108,6 +112,8 @@ export class ThreadPool {
   private readonly blocking: boolean;
   private idBuffer: Int32Array;
   private disposed = false;
+  /** Resolves `ready` (set by the constructor). */
+  private resolveReady: (() => void) | null = null;
   /** The first error a worker died of (it could not start), or null: the pool then runs on one thread. */
   failure: string | null = null;
   /** Loops this pool has run on its threads (a count for tests and the bench). */
@@ -137,14 +143,23 @@ export class ThreadPool {
       w.postMessage(msg);
       this.workers.push(w);
     }
+    // Each worker posts one 'ready' message once it has joined the control buffer (no timer: the
+    // physics package uses none); dispose resolves the promise too.
     const ctl = this.ctl, want = threads - 1;
     started.push(new Promise<void>((resolve) => {
-      const poll = (): void => {
-        if (Atomics.load(ctl, CONTROL.READY) >= want || this.disposed) resolve();
-        else setTimeout(poll, 5);
-      };
-      poll();
+      this.resolveReady = resolve;
+      if (Atomics.load(ctl, CONTROL.READY) >= want) resolve();
     }));
+    for (const w of this.workers) {
+      const onReady = (m: unknown): void => {
+        if ((m as { type?: unknown } | null)?.type !== 'ready') return;
+        if (typeof w.off === 'function') w.off('message', onReady);
+        else w.onmessage = null;
+        if (Atomics.load(ctl, CONTROL.READY) >= want) this.resolveReady?.();
+      };
+      if (typeof w.on === 'function') w.on('message', onReady);
+      else w.onmessage = (e) => onReady(e.data);
+    }
     this.ready = Promise.all(started).then(() => undefined);
   }
 
@@ -225,6 +240,7 @@ export class ThreadPool {
     Atomics.notify(ctl, CONTROL.GEN);
     for (const w of this.workers) void w.terminate();
     this.workers.length = 0;
+    this.resolveReady?.();
   }
 
   /** Whether `dispose` was called. */

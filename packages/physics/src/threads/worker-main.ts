@@ -94,6 +94,9 @@ function workerMain(kernels, nodePort) {
       seen = Atomics.load(ctl, GEN);
       Atomics.add(ctl, READY, 1);
       Atomics.notify(ctl, READY);
+      // One message at start-up, so the pool's ready promise resolves without a timer.
+      if (nodePort !== null) nodePort.postMessage({ type: 'ready' });
+      else globalThis.postMessage({ type: 'ready' });
       loop();
       return;
     }
