@@ -65,24 +65,33 @@ describe('fireworks', () => {
     // Low in the sky, so the flight is short.
     await g.clickCanvas(0.5, 0.62);
     await g.waitFor(() => (window.game as unknown as FireworksGame).show.launched === 1, null);
-    // From here each poll also takes 4 extra steps (the loop keeps running and drawing), so a slow,
-    // loaded machine drawing few frames a second still gets through the show in a few hundred polls.
-    // The rising tail, then the burst: 120 sparks (generation 1 only) plus what is left of the tail.
-    const peak = await g.waitFor(() => {
-      const game = window.game as unknown as FireworksGame & { loop: { stepOnce(): void } };
-      if (game.show.bursts === 1 && game.particleCount() >= 120) return game.particleStats();
-      for (let i = 0; i < 4; i++) game.loop.stepOnce();
-      return null;
-    }, null, 50_000);
-    expect(peak.drawn).toBeGreaterThan(60);
+    // From here the test steps the show itself, synchronously in the page, and then lets two frames
+    // draw it: a loaded machine drawing a frame a second takes the same steps as a fast one.
+    type Stepped = FireworksGame & { loop: { stepOnce(): void } };
+    // The rising tail, then the burst (generation 1 only).
+    const burstAfter = await g.page.evaluate(() => {
+      const game = window.game as unknown as Stepped;
+      let steps = 0;
+      while (game.show.bursts < 1 && steps < 1200) { game.loop.stepOnce(); steps++; }
+      for (let i = 0; i < 2; i++) game.loop.stepOnce(); // the burst's first steps
+      (game as unknown as { paused: boolean }).paused = true; // drawn as it is: no step between frames
+      return steps;
+    });
+    expect(burstAfter).toBeLessThan(1200);
+    await g.frames(2);
+    const peak = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
+    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = false; });
+    // Two steps into the burst (its 120 sparks come out over several steps): dozens drawn, not zero.
+    expect(peak.particles).toBeGreaterThan(40);
+    expect(peak.drawn).toBeGreaterThan(40);
     expect(peak.trails).toBeGreaterThan(0); // trails are on by default
-    // Sparks live at most 2.4 s of simulated time: the count falls back to 0.
-    await g.waitFor(() => {
-      const game = window.game as unknown as FireworksGame & { loop: { stepOnce(): void } };
-      if (game.particleCount() === 0) return true;
-      for (let i = 0; i < 4; i++) game.loop.stepOnce();
-      return null;
-    }, null, 50_000);
+    // Sparks live at most 2.4 s of simulated time: 180 steps (3 s) later the count is back to 0.
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as Stepped;
+      for (let i = 0; i < 180; i++) game.loop.stepOnce();
+    });
+    await g.frames(2);
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
     const after = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
     expect(after.drawn).toBe(0);
     expect(after.pooled).toBeGreaterThanOrEqual(peak.drawn); // display particles went back to the pool
@@ -203,9 +212,12 @@ describe('black hole', () => {
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).ship()[3]! > 1, null, 30_000);
     await g.page.keyboard.up('ArrowUp');
+    // Paused while V starts the replay, so a slow machine cannot finish it before the HUD is read.
+    await g.page.evaluate(() => { (window.game as unknown as BlackHoleGameHandle).paused = true; });
     await g.press('v');
     expect(await g.page.evaluate(() => (window.game as unknown as Replaying).replay.player !== null)).toBe(true);
     await g.waitFor(() => /▶ Replay/.test(document.querySelector('[data-hud="numbers"]')?.textContent ?? ''), null);
+    await g.page.evaluate(() => { (window.game as unknown as BlackHoleGameHandle).paused = false; });
     await g.waitFor(() => (window.game as unknown as Replaying).replay.player === null, null, 60_000);
     // The same check without frames in between: play the recording to its end in one go.
     const [end, replayed] = await g.page.evaluate(() => {
