@@ -6,7 +6,7 @@ export { createPhysicsWorld } from './create-world.js';
 export { registerForceLaw, addComponentIfMissing, disposeWorld, threadsReady, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
-export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
+export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, LAZY_GROUPS, materializeStore, materializeGroup, storesAllocatedWith } from './components.js';
 export type { Components, Vec3Store } from './components.js';
 export {
   createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,
@@ -70,6 +70,8 @@ export { addTriangleMesh3D, addHeightField3D } from './collision/mesh3d.js';
 export type { TriangleMeshOptions, HeightFieldOptions, Mesh3D } from './collision/mesh3d.js';
 export { contactEvents3D } from './collision/manifold3d-solver.js';
 export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
+export { forEachContact3D } from './collision/contacts3d-view.js';
+export type { Contact3DView } from './collision/contacts3d-view.js';
 export { addBallJoint3D, addHingeJoint3D, addFixedJoint3D, addDistanceJoint3D, removeJoint3D, joint3DBreaks } from './joints3d/api.js';
 export type { Joint3DBaseOptions, BallJoint3DOptions, HingeJoint3DOptions, FixedJoint3DOptions, DistanceJoint3DOptions } from './joints3d/api.js';
 export { Joint3DType, Joint3DFlag, joints3DOf } from './joints3d/store.js';

@@ -1,4 +1,4 @@
-import { fieldsAt, query, type PhysicsWorld } from '@bitphysics/physics';
+import { Joint3DType, fieldsAt, joints3DOf, query, type PhysicsWorld } from '@bitphysics/physics';
 
 /**
  * The 3D debug layer's drawings of what is not a body: springs, joints, planes, field regions (fluid
@@ -30,6 +30,8 @@ export interface SegmentSink {
 export interface DrawnPositions {
   /** Interpolated positions of shown bodies, m (xyz at 3 eid). */
   drawn: Float64Array;
+  /** Interpolated orientations of shown bodies, unit quaternions (xyzw at 4 eid). */
+  orientation: Float64Array;
   /** Whether entity `eid` is shown (so `drawn` holds its position). */
   shown(eid: number): boolean;
 }
@@ -109,6 +111,61 @@ export function drawJoints(world: PhysicsWorld, at: DrawnPositions, out: Segment
     out.segment(ax, ay, az, bx, by, bz, SceneryColor.Joint);
   }
   return joints.length;
+}
+
+/** Length of the drawn stub of a hinge axis or cone axis, m. */
+const AXIS_STUB = 0.3;
+const q = new Float64Array(4);
+
+/** Writes the drawn (or current) orientation of `e` into q (identity for the world, e = 0). */
+function orient(world: PhysicsWorld, at: DrawnPositions, e: number): void {
+  if (e !== 0 && at.shown(e)) {
+    q[0] = at.orientation[4 * e]!; q[1] = at.orientation[4 * e + 1]!; q[2] = at.orientation[4 * e + 2]!; q[3] = at.orientation[4 * e + 3]!;
+  } else if (e !== 0) {
+    const O = world.components.Orientation;
+    q[0] = O.x[e]!; q[1] = O.y[e]!; q[2] = O.z[e]!; q[3] = O.w[e]!;
+  } else {
+    q[0] = 0; q[1] = 0; q[2] = 0; q[3] = 1;
+  }
+}
+
+/** Rotates (vx, vy, vz) by q into r[o..o+2] (v + 2 w (u x v) + 2 u x (u x v)). */
+function turn(vx: number, vy: number, vz: number, r: Float64Array, o: number): void {
+  const x = q[0]!, y = q[1]!, z = q[2]!, w = q[3]!;
+  const tx = 2 * (y * vz - z * vy), ty = 2 * (z * vx - x * vz), tz = 2 * (x * vy - y * vx);
+  r[o] = vx + w * tx + (y * tz - z * ty); r[o + 1] = vy + w * ty + (z * tx - x * tz); r[o + 2] = vz + w * tz + (x * ty - y * tx);
+}
+
+const arm = new Float64Array(6);
+
+/**
+ * 3D joints (physics' joints3d: anchors and axes kept in the bodies' frames about their centres of
+ * mass, body A 0 the fixed world): each body's lever from its centre to its anchor, the line between
+ * the two anchors (a rope or spring's length), and for hinges and coned ball joints a short stub of
+ * B's axis at its anchor. @returns 3D joints drawn.
+ */
+export function drawJoints3D(world: PhysicsWorld, at: DrawnPositions, out: SegmentSink): number {
+  const s = joints3DOf(world);
+  if (s === undefined) return 0;
+  const list = s.list;
+  for (let i = 0; i < list.length; i++) {
+    const j = list[i]!, a = s.a[j]!, b = s.b[j]!;
+    if (a !== 0) { place(world, at, a, 0); orient(world, at, a); turn(s.ax[j]!, s.ay[j]!, s.az[j]!, arm, 0); }
+    else { p[0] = 0; p[1] = 0; p[2] = 0; arm[0] = s.ax[j]!; arm[1] = s.ay[j]!; arm[2] = s.az[j]!; }
+    const ax = p[0]! + arm[0]!, ay = p[1]! + arm[1]!, az = p[2]! + arm[2]!;
+    if (a !== 0) out.segment(p[0]!, p[1]!, p[2]!, ax, ay, az, SceneryColor.Joint);
+    place(world, at, b, 3); orient(world, at, b); turn(s.bx[j]!, s.by[j]!, s.bz[j]!, arm, 3);
+    const bx = p[3]! + arm[3]!, by = p[4]! + arm[4]!, bz = p[5]! + arm[5]!;
+    out.segment(p[3]!, p[4]!, p[5]!, bx, by, bz, SceneryColor.Joint);
+    out.segment(ax, ay, az, bx, by, bz, SceneryColor.Joint);
+    const type = s.type[j]!;
+    if (type === Joint3DType.Hinge || (type === Joint3DType.Ball && s.upper[j]! > 0)) {
+      turn(s.ubx[j]!, s.uby[j]!, s.ubz[j]!, arm, 0);
+      const h = 0.5 * AXIS_STUB;
+      out.segment(bx - h * arm[0]!, by - h * arm[1]!, bz - h * arm[2]!, bx + h * arm[0]!, by + h * arm[1]!, bz + h * arm[2]!, SceneryColor.Joint);
+    }
+  }
+  return list.length;
 }
 
 /**

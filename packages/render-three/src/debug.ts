@@ -1,8 +1,8 @@
 import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMaterial, LineSegments, Points, PointsMaterial } from 'three';
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { forEachContact3D, type Contact3DView, type PhysicsWorld } from '@bitphysics/physics';
 import type { InstanceBook } from './book.js';
 import { hexToLinear, rotateInto } from './math.js';
-import { SCENERY_PALETTE, drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings, type SegmentSink } from './debug-scenery.js';
+import { SCENERY_PALETTE, drawEmitters, drawFields, drawJoints, drawJoints3D, drawPlanes, drawSprings, type SegmentSink } from './debug-scenery.js';
 import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */
@@ -20,9 +20,9 @@ export interface DebugOptions {
   /** Most bodies given axes and arrows (the first shown), integer in [0, 100_000]. Default 2000. */
   maxBodies?: number;
   /**
-   * Draw the last step's contacts (from `world.collision.cache.rows`): a dot at each contact point
-   * and its normal (from body A to body B). Contacts that carried impulse are red, speculative ones
-   * (no impulse) grey. Default true.
+   * Draw the last step's contacts (balls: `world.collision.cache.rows`; 3D shapes: `forEachContact3D`,
+   * up to four points a manifold): a dot at each contact point and its normal (from body A to body B).
+   * Contacts that carried impulse are red, speculative ones (no impulse) grey. Default true.
    */
   contacts?: boolean;
   /** Length of a drawn contact normal, m, > 0. Default 0.25 m. */
@@ -33,7 +33,7 @@ export interface DebugOptions {
   pointSize?: number;
   /** Draw springs as zigzags between their bodies (or anchor). Default true. */
   springs?: boolean;
-  /** Draw joints: the line between their anchors and each body's lever to its anchor. Default true. */
+  /** Draw joints (2D and 3D): the line between their anchors, each body's lever to its anchor, a hinge's axis. Default true. */
   joints?: boolean;
   /** Draw each plane's normal (the environment draws its surface). Default true. */
   planes?: boolean;
@@ -154,6 +154,7 @@ export class DebugLayer {
   /** Where the renderer drew the bodies this frame, for the scenery. */
   private readonly at = {
     drawn: new Float64Array(0) as Float64Array<ArrayBufferLike>,
+    orientation: new Float64Array(0) as Float64Array<ArrayBufferLike>,
     book: null as InstanceBook | null,
     shown(eid: number): boolean { return this.book !== null && this.book.has(eid); },
   };
@@ -180,6 +181,25 @@ export class DebugLayer {
   private readonly rgb = new Float64Array(3 * (7 + SCENERY_PALETTE.length));
   private readonly v = new Float64Array(3);
   private segments = 0;
+  /** State of the 3D contact pass (a callback made once, so a frame allocates nothing). */
+  private contactPoints = 0;
+  private contactFrame: DebugFrame | null = null;
+  private contactWorld: PhysicsWorld | null = null;
+  private readonly onContact3D = (v: Readonly<Contact3DView>): void => {
+    const o = this.options, f = this.contactFrame!, world = this.contactWorld!;
+    if (this.contactsDrawn >= o.maxContacts) return;
+    // The point was measured where B was at the start of the step; move it with B to where B was drawn.
+    const b = v.bodyB, P = world.components.PreviousPosition;
+    const shown = f.book.has(b), pos = f.drawnPosition;
+    const cx = shown ? v.x - P.x[b]! + pos[3 * b]! : v.x, cy = shown ? v.y - P.y[b]! + pos[3 * b + 1]! : v.y, cz = shown ? v.z - P.z[b]! + pos[3 * b + 2]! : v.z;
+    const color = v.normalImpulse > 0 ? 5 : 6, L = o.normalLength, k = f.scale;
+    this.segment(cx, cy, cz, cx + v.nx * L, cy + v.ny * L, cz + v.nz * L, color, k);
+    const p = this.contactPoints * 3, pp = this.pointPos, pc = this.pointCol, rgb = this.rgb;
+    pp[p] = cx * k; pp[p + 1] = cy * k; pp[p + 2] = cz * k;
+    pc[p] = rgb[3 * color]!; pc[p + 1] = rgb[3 * color + 1]!; pc[p + 2] = rgb[3 * color + 2]!;
+    this.contactPoints++;
+    this.contactsDrawn++;
+  };
 
   /** @param options resolved options (see `resolveDebugOptions`). */
   constructor(options: ResolvedDebugOptions) {
@@ -278,6 +298,11 @@ export class DebugLayer {
         points++;
       }
       this.contactsDrawn = n;
+      this.contactPoints = points;
+      this.contactFrame = frame;
+      this.contactWorld = world;
+      forEachContact3D(world, this.onContact3D);
+      points = this.contactPoints;
     }
 
     this.drawScenery(world, frame);
@@ -299,10 +324,11 @@ export class DebugLayer {
   private drawScenery(world: PhysicsWorld, frame: DebugFrame): void {
     const o = this.options, d = this.drawn, at = this.at;
     at.drawn = frame.drawnPosition;
+    at.orientation = frame.drawnOrientation;
     at.book = frame.book;
     this.scale = frame.scale;
     d.springs = o.springs ? drawSprings(world, at, this.sink) : 0;
-    d.joints = o.joints ? drawJoints(world, at, this.sink) : 0;
+    d.joints = o.joints ? drawJoints(world, at, this.sink) + drawJoints3D(world, at, this.sink) : 0;
     d.planes = o.planes ? drawPlanes(world, this.sink) : 0;
     if (o.fields) {
       const box = world.collision.boundary, ext = this.extent;

@@ -3,9 +3,10 @@ import { DynamicDrawUsage, InstancedBufferAttribute, InstancedMesh, type BufferG
 /**
  * What an instance group draws: `'ball'` (the shared unit sphere, scaled by each ball's radius),
  * `'box'` (the shared unit cube, scaled to each body's equivalent-inertia box) or `'custom'` (a
- * user geometry and material given with `WorldRenderer3D.setShape`).
+ * user geometry and material given with `WorldRenderer3D.setShape`) or `'shapes'` (bodies drawn by their
+ * 3D shapes, see shapes.ts: the group only carries their interpolated poses and is never shown).
  */
-export type GroupKind = 'ball' | 'box' | 'custom';
+export type GroupKind = 'ball' | 'box' | 'custom' | 'shapes';
 
 /**
  * One three.js `InstancedMesh` for one (geometry, material) pair: a single draw call (two with
@@ -28,6 +29,8 @@ export class InstanceGroup {
   capacity: number;
   /** Instances in use (the mesh draws this many). */
   count = 0;
+  /** A hidden group keeps its instances' bookkeeping but never draws nor uploads (the 'shapes' group). */
+  readonly hidden: boolean;
   private readonly parent: Object3D;
   private readonly name: string;
 
@@ -42,9 +45,10 @@ export class InstanceGroup {
     this.material = material;
     this.kind = kind;
     this.name = name;
+    this.hidden = kind === 'shapes';
     this.capacity = Math.max(1, initial);
     this.mesh = this.makeMesh(this.capacity, shadows);
-    parent.add(this.mesh);
+    if (!this.hidden) parent.add(this.mesh); // a hidden group's mesh stays out of the scene
   }
 
   /** The instance matrices (16 floats per instance, column-major). */
@@ -71,7 +75,7 @@ export class InstanceGroup {
     mesh.visible = old.visible;
     this.parent.remove(old);
     old.dispose();
-    this.parent.add(mesh);
+    if (!this.hidden) this.parent.add(mesh);
     this.mesh = mesh;
     this.capacity = cap;
   }
@@ -84,8 +88,8 @@ export class InstanceGroup {
     this.count = count;
     const mesh = this.mesh;
     mesh.count = count;
-    mesh.visible = count > 0;
-    if (count === 0) return;
+    mesh.visible = count > 0 && !this.hidden;
+    if (count === 0 || this.hidden) return;
     const m = mesh.instanceMatrix;
     m.clearUpdateRanges();
     m.addUpdateRange(0, count * 16);

@@ -6,8 +6,8 @@
  * cache; it computes no physics, and the physics package never imports three.js. It owns the
  * conversion from SI metres to scene units (`unitsPerMeter`); y is up in both.
  *
- * Entry points: `WorldRenderer3D` (everything: instanced bodies, scenery, lights, trails, debug,
- * picking), `createOrbitControls` and `frameBox` (camera), `VectorArrow` (solid arrows for a few
+ * Entry points: `WorldRenderer3D` (everything: instanced bodies and 3D shapes, scenery, lights, trails,
+ * debug, picking through the physics' ray cast), `BodyDrag3D` (drag bodies with the pointer), `createOrbitControls` and `frameBox` (camera), `VectorArrow` (solid arrows for a few
  * physical vectors), `createLights`; and the three.js-free parts: `InstanceBook` (entity to
  * instance bookkeeping), the interpolation maths, colours.
  */
@@ -21,7 +21,11 @@ export { TrailLayer, resolveTrailOptions, MAX_TRAIL_POINTS } from './trails.js';
 export type { TrailOptions, ResolvedTrailOptions } from './trails.js';
 export { DebugLayer, resolveDebugOptions } from './debug.js';
 export type { DebugOptions, ResolvedDebugOptions, DebugFrame, DebugCounts } from './debug.js';
-export { SceneryColor, SCENERY_PALETTE, drawSprings, drawJoints, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
+export { ShapeLayer3D, hullGeometry, CYLINDER_SEGMENTS, CAPSULE_RATIO_STEP } from './shapes.js';
+export type { ShapeCounts, ShapeFrame } from './shapes.js';
+export { BodyDrag3D } from './drag.js';
+export type { BodyDrag3DOptions } from './drag.js';
+export { SceneryColor, SCENERY_PALETTE, drawSprings, drawJoints, drawJoints3D, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
 export type { SegmentSink, DrawnPositions } from './debug-scenery.js';
 export { EnvironmentLayer } from './environment.js';
 export type { BoundaryStyle, EnvironmentStyle } from './environment.js';

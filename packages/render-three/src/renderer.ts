@@ -1,9 +1,9 @@
 import {
-  BoxGeometry, Group, Matrix3, Matrix4, MeshStandardMaterial, Raycaster, SphereGeometry, Vector2, Vector3,
-  type BufferGeometry, type Camera, type Intersection, type Material, type Object3D,
+  BoxGeometry, BufferGeometry, Group, Matrix3, Matrix4, MeshStandardMaterial, Raycaster, SphereGeometry, Vector2, Vector3,
+  type Camera, type Intersection, type Material, type Object3D,
 } from 'three';
 import { hasComponent, query } from 'bitecs';
-import { entityExists, handleOf, isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { entityExists, handleOf, isAlive, rayCast3D, shapes3DOf, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book.js';
 import { entitySlot, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
 import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugFrame, type DebugOptions } from './debug.js';
@@ -12,6 +12,7 @@ import { InstanceGroup, type GroupKind } from './groups.js';
 import { LightRig, resolveLightOptions, type LightOptions } from './lights.js';
 import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math.js';
 import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
+import { ShapeLayer3D, type ShapeCounts, type ShapeFrame } from './shapes.js';
 import {
   assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe,
 } from '@bitphysics/physics/validate';
@@ -116,6 +117,9 @@ export interface Renderer3DStats {
   boxes: number;
   /** Entities in user-shape groups. */
   custom: number;
+  /** Bodies drawn by their 3D shapes (`addShape3D`), and the shapes drawn, by kind (see shapes.ts). */
+  shaped: number;
+  shapes: ShapeCounts;
   /** Instanced meshes with at least one instance (each is one draw call, plus one per shadow map). */
   meshes: number;
   /** Trails in use (0 when trails are off). */
@@ -168,6 +172,9 @@ function isGeometry(value: unknown): value is BufferGeometry {
  *   its radius; every body with an Orientation and no ball is an instance of one shared box mesh,
  *   scaled to its equivalent-inertia box; `setShape` gives an entity its own geometry and material
  *   (entities sharing both share a mesh). So 10 000 bodies are a handful of draw calls.
+ * - A body with 3D shapes (`addShape3D`: sphere, box, capsule, cylinder, hull, compounds) is drawn by
+ *   its shapes instead (`ShapeLayer3D`, shapes.ts: instanced per kind and size class, hulls as their
+ *   own geometry), each at the body's interpolated pose composed with its placement.
  * - Instances come and go with their entities (swap-remove, see `InstanceBook`); recycled ids are
  *   detected by the world's spawn stamps.
  * - Each frame every instance matrix is written from the state at interpolation factor alpha:
@@ -195,7 +202,7 @@ export class WorldRenderer3D {
   readonly root = new Group();
   /** Statistics of the last frame (updated in place). */
   readonly stats: Renderer3DStats = {
-    instances: 0, balls: 0, boxes: 0, custom: 0, meshes: 0, trails: 0, contacts: 0, arrows: 0,
+    instances: 0, balls: 0, boxes: 0, custom: 0, shaped: 0, shapes: { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0 }, meshes: 0, trails: 0, contacts: 0, arrows: 0,
     scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
   };
   /** The light rig, or null when `lights` is false. */
@@ -208,6 +215,10 @@ export class WorldRenderer3D {
   private readonly groupIndex = new Map<BufferGeometry, Map<Material, number>>();
   private readonly ballGroup: number;
   private readonly boxGroup: number;
+  /** The hidden group of bodies drawn by their 3D shapes (it carries their interpolated poses). */
+  private readonly shapedGroup: number;
+  private readonly shapes: ShapeLayer3D;
+  private readonly shapeFrame: ShapeFrame;
   private readonly instanceRoot = new Group();
   private readonly env: EnvironmentLayer;
   private trails: TrailLayer | null = null;
@@ -358,6 +369,13 @@ export class WorldRenderer3D {
     this.book.listener = this.listener;
     this.ballGroup = this.groupFor(sphere, this.ballMaterial, 'ball', initial);
     this.boxGroup = this.groupFor(box, this.boxMaterial, 'box', initial);
+    this.shapedGroup = this.groupFor(this.own(new BufferGeometry()), this.boxMaterial, 'shapes', initial);
+    this.shapes = new ShapeLayer3D(world.capacity, this.boxMaterial, sphere, shadows);
+    this.root.add(this.shapes.object);
+    this.shapeFrame = {
+      bodies: this.book.eids(this.shapedGroup), count: 0, drawnPosition: this.drawnPos, drawnOrientation: this.drawnQuat,
+      scale: unitsPerMeter, colorOf: (b) => this.entityColor[b]!,
+    };
     this.allocate(world.capacity);
     this.bindWorld(world);
     if (trailOptions) this.installTrails(trailOptions);
@@ -389,6 +407,7 @@ export class WorldRenderer3D {
       this.shapeStamp.fill(0);
     }
     for (const group of this.groups) group.commit(0);
+    this.shapes.reset(world.capacity);
     this.worldRef = world;
     this.bindWorld(world);
   }
@@ -424,7 +443,7 @@ export class WorldRenderer3D {
     for (let g = 0; g < this.groups.length; g++) {
       const group = this.groups[g]!;
       const n = book.count(g);
-      if (n > 0) meshes++;
+      if (n > 0 && !group.hidden) meshes++;
       const eids = book.eids(g);
       const m = group.matrices;
       for (let i = 0; i < n; i++) {
@@ -460,6 +479,11 @@ export class WorldRenderer3D {
       }
       group.commit(n);
     }
+    const sf = this.shapeFrame;
+    sf.bodies = book.eids(this.shapedGroup); sf.count = book.count(this.shapedGroup);
+    sf.drawnPosition = dp; sf.drawnOrientation = dq; sf.scale = k;
+    this.shapes.draw(world, sf);
+    meshes += this.shapes.counts.meshes;
     const trails = this.trails;
     if (trails) {
       if (delta > 0) trails.record(world);
@@ -475,7 +499,10 @@ export class WorldRenderer3D {
     s.instances = book.total;
     s.balls = book.count(this.ballGroup);
     s.boxes = book.count(this.boxGroup);
-    s.custom = s.instances - s.balls - s.boxes;
+    s.shaped = book.count(this.shapedGroup);
+    s.custom = s.instances - s.balls - s.boxes - s.shaped;
+    const sc3 = this.shapes.counts, ss = s.shapes;
+    ss.spheres = sc3.spheres; ss.boxes = sc3.boxes; ss.capsules = sc3.capsules; ss.cylinders = sc3.cylinders; ss.hulls = sc3.hulls; ss.meshes = sc3.meshes;
     s.meshes = meshes;
     s.trails = trails ? trails.count : 0;
     s.contacts = debug ? debug.contactsDrawn : 0;
@@ -604,7 +631,12 @@ export class WorldRenderer3D {
 
   /**
    * The entity under a screen point: casts a ray from `camera` through (ndcX, ndcY) (normalised
-   * device coordinates, -1..1, y up) against every instanced mesh as drawn by the last `render`.
+   * device coordinates, -1..1, y up). Bodies with colliders (3D shapes, balls) and the static world
+   * (planes, meshes, static shapes) are hit by a ray cast through the physics (`rayCast3D`, where the
+   * bodies are now: at most one step from where they were drawn); bodies drawn without a collider (a
+   * plain rigid body's inertia box, user shapes on such bodies) by three.js' ray cast against the
+   * instanced meshes as drawn by the last `render`. The nearer hit wins; a hit on the static world
+   * with no body (a plane, a mesh) hides what is behind it and returns null.
    * @returns the nearest hit, or null. Allocates a little (call it on clicks, not per frame).
    * @throws RangeError if ndcX or ndcY is not finite.
    */
@@ -616,22 +648,43 @@ export class WorldRenderer3D {
     this.ndc.set(ndcX, ndcY);
     this.raycaster.setFromCamera(this.ndc, camera);
     this.root.updateMatrixWorld();
+    const k = this.unitsPerMeter;
+    const world = this.worldRef;
+    // The physics ray, in metres in the renderer's root frame.
+    const ray = this.raycaster.ray;
+    const o = this.v3.copy(ray.origin);
+    this.root.worldToLocal(o);
+    const ox = o.x / k, oy = o.y / k, oz = o.z / k;
+    const far = this.v3.copy(ray.origin).addScaledVector(ray.direction, (camera as { far?: number }).far ?? 1000);
+    this.root.worldToLocal(far);
+    const tx = far.x / k - ox, ty = far.y / k - oy, tz = far.z / k - oz;
+    const rayLength = Math.hypot(tx, ty, tz);
+    let physics: PickResult | null = null;
+    let physicsDistance = Infinity;
+    let blocked = false;
+    if (rayLength > 0) {
+      const hit = rayCast3D(world, [ox, oy, oz], [tx, ty, tz]);
+      if (hit) {
+        physicsDistance = hit.fraction * rayLength * k;
+        if (hit.body === 0) blocked = true;
+        else physics = { eid: hit.body, point: [hit.x, hit.y, hit.z], normal: [hit.nx, hit.ny, hit.nz], distance: physicsDistance };
+      }
+    }
     const hits = this.hits;
     hits.length = 0;
     for (let g = 0; g < this.groups.length; g++) {
       const group = this.groups[g]!;
-      if (this.book.count(g) === 0) continue;
+      if (this.book.count(g) === 0 || group.hidden || g === this.ballGroup) continue;
       group.mesh.computeBoundingSphere();
       group.mesh.raycast(this.raycaster, hits);
     }
     let best: Intersection | null = null;
     for (const hit of hits) if (hit.instanceId !== undefined && (!best || hit.distance < best.distance)) best = hit;
     hits.length = 0;
-    if (!best) return null;
+    if (!best || best.distance >= physicsDistance) return blocked ? null : physics;
     const gi = this.groups.findIndex((gr) => gr.mesh === best!.object);
     if (gi < 0) return null;
     const eid = this.book.eids(gi)[best.instanceId!]!;
-    const k = this.unitsPerMeter;
     const normal: [number, number, number] = [0, 1, 0];
     if (best.normal) {
       this.groups[gi]!.mesh.getMatrixAt(best.instanceId!, this.m4);
@@ -643,8 +696,8 @@ export class WorldRenderer3D {
     // Hits are in scene coordinates; the renderer's root may sit anywhere in the scene.
     const local = this.v3.copy(best.point);
     this.root.worldToLocal(local);
-    if (!entityExists(this.worldRef, eid)) return null; // removed since the last render
-    return { eid: handleOf(this.worldRef, eid), point: [local.x / k, local.y / k, local.z / k], normal, distance: best.distance };
+    if (!entityExists(world, eid)) return null; // removed since the last render
+    return { eid: handleOf(world, eid), point: [local.x / k, local.y / k, local.z / k], normal, distance: best.distance };
   }
 
   /**
@@ -694,6 +747,7 @@ export class WorldRenderer3D {
   setShadows(on: boolean): void {
     assertBoolean('WorldRenderer3D.setShadows', 'on', on);
     for (const g of this.groups) g.setShadows(on);
+    this.shapes.setShadows(on);
   }
 
   /**
@@ -709,6 +763,7 @@ export class WorldRenderer3D {
     this.env.destroy();
     this.lights?.dispose();
     for (const g of this.groups) g.dispose();
+    this.shapes.destroy();
     for (const d of this.owned) d.dispose();
   }
 
@@ -788,13 +843,16 @@ export class WorldRenderer3D {
   private sync(world: PhysicsWorld): void {
     const book = this.book;
     const spawn = world.spawnStamp;
+    const s3 = world.dimensions === 3 ? shapes3DOf(world) : undefined;
+    const first = s3 !== undefined ? s3.first : null, shaped = this.shapedGroup, userStamp = this.shapeStamp;
     book.beginPass();
     for (let pass = 0; pass < 2; pass++) {
       const ents = query(world, pass === 0 ? this.terms.balls : this.terms.bodies);
       for (let i = 0; i < ents.length; i++) {
         const e = ents[i]!;
         if (book.has(e)) {
-          if (book.stampOf[e] === spawn[e]) { book.mark(e); continue; }
+          // A body given its first 3D shape after it was first drawn moves to the shapes (unless the user chose its look).
+          if (book.stampOf[e] === spawn[e] && (first === null || first[e] === 0 || book.groupOf(e) === shaped || userStamp[e] === spawn[e])) { book.mark(e); continue; }
           book.remove(e);
         }
         const g = this.classify(world, e);
@@ -810,14 +868,24 @@ export class WorldRenderer3D {
     const ball = hasComponent(world, e, c.Ball);
     const userShape = this.shapeStamp[e] === world.spawnStamp[e] && this.shapeGroup[e]! > 0;
     let g: number;
+    const s3 = world.dimensions === 3 ? shapes3DOf(world) : undefined;
+    const shaped = !userShape && s3 !== undefined && s3.first[e]! !== 0;
     if (userShape) g = this.shapeGroup[e]! - 1;
+    else if (shaped) g = this.shapedGroup;
     else if (ball) g = this.ballGroup;
     else if (this.drawBodies) g = this.boxGroup;
     else return -1;
     // Scale: radius for balls, the equivalent box otherwise, unless the user shape says otherwise.
     const want = userShape ? this.shapeScaleMode[e]! : -1;
     const o = 3 * e;
-    if (want === 0) {
+    if (shaped) {
+      // Bodies drawn by their shapes: the group only carries the pose; size is the shapes' reach from the centre.
+      this.scaleMode[e] = SCALE_FIXED;
+      this.fixedScale[o] = this.fixedScale[o + 1] = this.fixedScale[o + 2] = 1;
+      let reach = 0;
+      for (let sh = s3.first[e]!; sh !== 0; sh = s3.next[sh]!) reach = Math.max(reach, Math.hypot(s3.px[sh]!, s3.py[sh]!, s3.pz[sh]!) + s3.reach[sh]!);
+      this.size[e] = reach;
+    } else if (want === 0) {
       this.scaleMode[e] = SCALE_FIXED;
       this.fixedScale[o] = this.shapeScale[o]!; this.fixedScale[o + 1] = this.shapeScale[o + 1]!; this.fixedScale[o + 2] = this.shapeScale[o + 2]!;
       this.size[e] = 0.5 * Math.max(this.shapeScale[o]!, this.shapeScale[o + 1]!, this.shapeScale[o + 2]!);
@@ -886,6 +954,7 @@ export class WorldRenderer3D {
   }
 
   private recolor(e: number): void {
+    this.shapes.recolor();
     if (!this.book.has(e)) return;
     this.entityColor[e] = this.computeColor(e);
     this.writeTint(this.book.groupOf(e), this.book.indexOf[e]!, e);
