@@ -1,4 +1,8 @@
 import type { PhysicsWorld } from '../world.js';
+import { KERNEL, KERNELS } from '../threads/kernels.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
+import { INFO_STRIDE } from './barnes-hut-walk.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -55,23 +59,31 @@ import type { PhysicsWorld } from '../world.js';
  *
  * Walk (Dehnen 2002). Starting from the root's self-interaction: a cell's self-interaction becomes
  * those of its children and the interactions of each pair of children; a pair of cells is summed
- * directly (every body pair, once for both) when it holds at most DIRECT_PAIRS body pairs, interacts
+ * directly (every body pair, once for both) when it holds at most 16 body pairs, interacts
  * by the expansion when |R| > (r_A + r_B) / min(theta, 1) (theta: the opening angle under which the
  * two cells see each other), is summed directly when both are leaves, and otherwise the larger cell
  * (by r) is split. The cells of a pair are disjoint subtrees, so a body is never approximated by a
  * cell containing it and every pair of bodies is counted exactly once, directly or inside one
  * expansion. As theta -> 0 every pair is summed directly and the result is the direct sum, to rounding.
+ * (A cell of at most 8 bodies sums its self-interaction directly.)
+ *
+ * Threads. The build runs on one thread; the walk and the downward pass (barnes-hut-walk.ts) run on
+ * the world's threads, the bodies cut into one contiguous part of slots a thread, each part
+ * replaying the walk for its own bodies in the one-thread order, so every field is identical to
+ * the bit whatever the number of threads. The cuts follow the work each part did at the previous
+ * evaluation (counted, not timed), so the parts take about equally long.
  *
  * All arrays live on the tree (one per world), grown by doubling and reused: no allocation per body
  * or per step once they have grown.
  */
 
+/** Most parts (threads) an evaluation is cut into. */
+const MAX_PARTS = 32;
+/** Fewest bodies a thread for the evaluation to go parallel: below it one thread is faster. */
+export const BARNES_HUT_MIN_PER_THREAD = 2048;
+
 /** Most bodies a leaf holds before it splits. */
 const LEAF_SIZE = 8;
-/** Pairs of cells holding at most this many body pairs (n_A n_B) are summed directly: cheaper and exact. */
-const DIRECT_PAIRS = 16;
-/** Cells with at most this many bodies sum their self-interaction directly. */
-const DIRECT_SELF = 8;
 /** Cells smaller than this fraction of the root never split (so at most ~31 levels). */
 const MIN_CELL_FRACTION = 1e-9;
 /** Depth bound: MIN_CELL_FRACTION > 2^-31, with margin. */
@@ -105,10 +117,24 @@ export interface GravityTree {
   box: Float64Array;
   /** Per node: first slot, end slot (exclusive), and the node after its subtree (k + 1 for a leaf). */
   start: Int32Array; end: Int32Array; skip: Int32Array;
-  /** Per node, stride 14 (2D) or 19 (3D): field polynomial about the centre of mass (without G; layouts at NL2, NL3). */
-  local: Float64Array;
-  /** Pair stack of the walk. */
-  stack: Int32Array;
+  /**
+   * The evaluation's scratch, one array a part (barnes-hut-walk.ts): per node, stride 14 (2D) or 19
+   * (3D), the field polynomial about the centre of mass (without G; layouts at NL2, NL3), then the
+   * direct sums x, y, z of every slot (without G) from the offsets `accOffset`.
+   */
+  scratch: Float64Array[];
+  /** Offset of the direct sums in each scratch array: node capacity times the polynomial stride. */
+  accOffset: number;
+  /** Slot boundaries of the parts of the last evaluation (part p: cut[p] .. cut[p + 1] - 1), at leaf starts. */
+  cut: Int32Array;
+  /** Per part, stride 4: counts and work of the last evaluation (see barnes-hut-walk.ts). */
+  info: Float64Array;
+  /** Parts of the last evaluation (1 on one thread). */
+  parts: number;
+  /** Whether the arrays the evaluation reads live on SharedArrayBuffers (a world with threads > 1). */
+  shared: boolean;
+  /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
+  cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array;
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
   /** Morton keys and input indices in sorted order, and the radix sort's second buffers and histogram. */
@@ -127,18 +153,20 @@ export interface GravityTree {
   stats: { cellPairs: number; bodyPairs: number; visits: number };
 }
 
-function createTree(dims: 2 | 3): GravityTree {
+function createTree(dims: 2 | 3, shared: boolean): GravityTree {
   const nodes = 1024;
+  const F64 = (n: number): Float64Array => (shared ? sharedFloat64(n) : new Float64Array(n));
+  const I32 = (n: number): Int32Array => (shared ? new Int32Array(new SharedArrayBuffer(4 * n)) : new Int32Array(n));
   return {
     dims, n: 0, nodeCount: 0,
     x: new Float64Array(0), y: new Float64Array(0), z: new Float64Array(0), m: new Float64Array(0),
     perm: new Int32Array(0), slot: new Int32Array(0),
     x2: new Float64Array(0), y2: new Float64Array(0), z2: new Float64Array(0), m2: new Float64Array(0),
     perm2: new Int32Array(0), code: new Uint8Array(0),
-    node: new Float64Array(nodes * (dims === 3 ? NF3 : NF2)), box: new Float64Array(nodes * 6),
-    start: new Int32Array(nodes), end: new Int32Array(nodes), skip: new Int32Array(nodes),
-    local: new Float64Array(nodes * (dims === 3 ? NL3 : NL2)),
-    stack: new Int32Array(4096),
+    node: F64(nodes * (dims === 3 ? NF3 : NF2)), box: new Float64Array(nodes * 6),
+    start: I32(nodes), end: I32(nodes), skip: I32(nodes),
+    scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
+    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8),
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
     hist: new Int32Array(RADIX),
@@ -150,20 +178,36 @@ function createTree(dims: 2 | 3): GravityTree {
   };
 }
 
-/** The tree of a world (created on first use, kept on the world). */
+/**
+ * The tree of a world (created on first use, kept on the world); in a world with threads > 1 the
+ * arrays the evaluation reads are on SharedArrayBuffers, so worker threads can walk it.
+ */
 export function worldTree(world: PhysicsWorld): GravityTree {
   const holder = world as { gravityTree?: GravityTree };
-  if (!holder.gravityTree || holder.gravityTree.dims !== world.dimensions) holder.gravityTree = createTree(world.dimensions);
+  if (!holder.gravityTree || holder.gravityTree.dims !== world.dimensions) {
+    holder.gravityTree = createTree(world.dimensions, world.threads > 1 && sharedMemoryAvailable());
+  }
   return holder.gravityTree;
+}
+
+/** A Float64Array of n elements, on a SharedArrayBuffer when the tree is shared. */
+function f64(t: GravityTree, n: number): Float64Array {
+  return t.shared ? sharedFloat64(n) : new Float64Array(n);
+}
+
+/** An Int32Array of n elements, on a SharedArrayBuffer when the tree is shared. */
+function i32(t: GravityTree, n: number): Int32Array {
+  return t.shared ? new Int32Array(new SharedArrayBuffer(4 * n)) : new Int32Array(n);
 }
 
 function growBodies(t: GravityTree, n: number): void {
   if (t.x.length >= n) return;
   const size = Math.max(n, 2 * t.x.length, 64);
-  t.x = new Float64Array(size); t.y = new Float64Array(size); t.z = new Float64Array(size); t.m = new Float64Array(size);
+  t.x = f64(t, size); t.y = f64(t, size); t.z = f64(t, size); t.m = f64(t, size);
   t.x2 = new Float64Array(size); t.y2 = new Float64Array(size); t.z2 = new Float64Array(size); t.m2 = new Float64Array(size);
   t.perm = new Int32Array(size); t.perm2 = new Int32Array(size); t.slot = new Int32Array(size); t.code = new Uint8Array(size);
-  t.ax = new Float64Array(size); t.ay = new Float64Array(size); t.az = new Float64Array(size);
+  t.ax = f64(t, size); t.ay = f64(t, size); t.az = f64(t, size);
+  t.scratch.length = 0;
   t.key = new Uint32Array(size); t.idx = new Int32Array(size); t.key2 = new Uint32Array(size); t.idx2 = new Int32Array(size);
 }
 
@@ -173,13 +217,13 @@ function growNodes(t: GravityTree, needed: number): void {
   let n = cap;
   while (n < needed) n *= 2;
   const nf = t.dims === 3 ? NF3 : NF2;
-  const node = new Float64Array(n * nf); node.set(t.node); t.node = node;
+  const node = f64(t, n * nf); node.set(t.node); t.node = node;
   const box = new Float64Array(n * 6); box.set(t.box); t.box = box;
-  const s = new Int32Array(n); s.set(t.start); t.start = s;
-  const e = new Int32Array(n); e.set(t.end); t.end = e;
-  const k = new Int32Array(n); k.set(t.skip); t.skip = k;
+  const s = i32(t, n); s.set(t.start); t.start = s;
+  const e = i32(t, n); e.set(t.end); t.end = e;
+  const k = i32(t, n); k.set(t.skip); t.skip = k;
   const p = new Int32Array(n); p.set(t.parent); t.parent = p;
-  t.local = new Float64Array(n * (t.dims === 3 ? NL3 : NL2));
+  t.scratch.length = 0;
 }
 
 /** Bits per axis of the Morton keys: 2 x 16 = 32 in 2D, 3 x 10 = 30 in 3D. */
@@ -509,23 +553,87 @@ function openFactor(theta: number): number {
  * Field (m/s^2) at every body of the built tree, with constant G (m^3 kg^-1 s^-2), Plummer softening
  * eps2 = eps^2 (m^2, >= 0) and opening angle theta (> 0). Written into t.ax, t.ay, t.az in tree order
  * (slot s holds input body t.perm[s]); see treeFields for input order. Interaction counts go to t.stats.
+ * With a thread pool (`pool`, of a world with threads > 1, whose tree is shared) and at least
+ * BARNES_HUT_MIN_PER_THREAD bodies a thread, the evaluation runs on the pool's threads; the fields
+ * are identical to the bit to the one-thread evaluation (see the file's header).
+ * @throws Error naming `system` if a worker thread failed.
  */
-export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number): void {
+export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number, pool: ThreadPool | null = null, system = 'treeFieldsSorted'): void {
   const n = t.n;
-  t.ax.fill(0, 0, n); t.ay.fill(0, 0, n); t.az.fill(0, 0, n);
   t.stats.cellPairs = 0; t.stats.bodyPairs = 0; t.stats.visits = 0;
   if (t.nonFinite) { t.ax.fill(NaN, 0, n); t.ay.fill(NaN, 0, n); t.az.fill(NaN, 0, n); return; }
   if (n === 0) return;
-  const f = openFactor(theta);
-  if (t.dims === 3) {
-    t.local.fill(0, 0, t.nodeCount * NL3);
-    walk3(t, eps2, f);
-    down3(t, G);
-  } else {
-    t.local.fill(0, 0, t.nodeCount * NL2);
-    walk2(t, eps2, f);
-    down2(t, G);
+  const threads = pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= MAX_PARTS && pool.usable() ? pool.threads : 1;
+  const nl = t.dims === 3 ? NL3 : NL2;
+  const accOffset = t.start.length * nl, size = accOffset + 3 * t.x.length;
+  if (t.scratch.length < threads || t.scratch[0]!.length !== size) {
+    for (let p = 0; p < threads; p++) if (p >= t.scratch.length || t.scratch[p]!.length !== size) t.scratch[p] = threads > 1 || t.shared ? f64(t, size) : new Float64Array(size);
+    t.accOffset = accOffset;
   }
+  cutParts(t, threads);
+  const arrays = walkArrays(t, threads);
+  const P = t.walkParams;
+  P[0] = G; P[1] = eps2; P[2] = openFactor(theta); P[3] = t.nodeCount; P[4] = n;
+  P[5] = accOffset; P[6] = accOffset + t.x.length; P[7] = accOffset + 2 * t.x.length;
+  const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
+  if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
+  else KERNELS[kernel]!(arrays, P, null, 0, 1);
+  const info = t.info;
+  for (let p = 0; p < threads; p++) {
+    t.stats.cellPairs += info[p * INFO_STRIDE]!; t.stats.bodyPairs += info[p * INFO_STRIDE + 1]!; t.stats.visits += info[p * INFO_STRIDE + 2]!;
+  }
+}
+
+/**
+ * Cuts the slots into `parts` parts at leaf starts (t.cut). With the same number of parts and bodies
+ * as the last evaluation, the cuts split the work that evaluation counted (t.info) evenly, assuming
+ * it spread uniformly over each part's slots; otherwise they split the slots evenly.
+ */
+function cutParts(t: GravityTree, parts: number): void {
+  const cut = t.cut, info = t.info, n = t.n;
+  const prev = t.parts === parts && cut[parts] === n ? parts : 0;
+  let total = 0;
+  for (let p = 0; p < prev; p++) total += info[p * INFO_STRIDE + 3]!;
+  const want = t.cutWant;
+  want[0] = 0;
+  for (let q = 1; q < parts; q++) {
+    let s = Math.round((n * q) / parts);
+    if (prev > 0 && total > 0) {
+      // The slot where the cumulative work of the last evaluation reaches q / parts of its total.
+      const goal = (total * q) / parts;
+      let acc = 0, p = 0;
+      while (p < prev - 1 && acc + info[p * INFO_STRIDE + 3]! < goal) { acc += info[p * INFO_STRIDE + 3]!; p++; }
+      const w = info[p * INFO_STRIDE + 3]!, a = cut[p]!, b = cut[p + 1]!;
+      s = w > 0 ? Math.round(a + ((goal - acc) / w) * (b - a)) : a;
+    }
+    want[q] = Math.min(n, Math.max(want[q - 1]!, leafStart(t, s)));
+  }
+  for (let q = 1; q < parts; q++) cut[q] = want[q]!;
+  cut[0] = 0; cut[parts] = n;
+  t.parts = parts;
+}
+
+/** The first slot of the leaf that holds slot s (n for s >= n). */
+function leafStart(t: GravityTree, s: number): number {
+  if (s >= t.n) return t.n;
+  if (s <= 0) return 0;
+  const skip = t.skip, start = t.start, end = t.end;
+  let k = 0;
+  while (skip[k] !== k + 1) {
+    let c = k + 1;
+    while (end[c]! <= s) c = skip[c]!;
+    k = c;
+  }
+  return start[k]!;
+}
+
+/** The kernel's arrays for `parts` parts (order in barnes-hut-walk.ts), in a list kept on the tree. */
+function walkArrays(t: GravityTree, parts: number): KernelArray[] {
+  const a = t.walkList;
+  a.length = 0;
+  a.push(t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info);
+  for (let p = 0; p < parts; p++) a.push(t.scratch[p]!);
+  return a;
 }
 
 /**
@@ -536,369 +644,6 @@ export function treeFields(t: GravityTree, G: number, eps2: number, theta: numbe
   treeFieldsSorted(t, G, eps2, theta);
   const perm = t.perm, tx = t.ax, ty = t.ay, tz = t.az;
   for (let s = 0; s < t.n; s++) { const i = perm[s]!; ax[i] = tx[s]!; ay[i] = ty[s]!; az[i] = tz[s]!; }
-}
-
-function growStack(t: GravityTree, needed: number): Int32Array {
-  const a = new Int32Array(Math.max(needed, 2 * t.stack.length)); a.set(t.stack); t.stack = a;
-  return a;
-}
-
-/** Direct sum over the pairs of slots [lo, hi) (each pair once, both bodies), without G. */
-function directSelf2(t: GravityTree, lo: number, hi: number, eps2: number): void {
-  const X = t.x, Y = t.y, Mb = t.m, AX = t.ax, AY = t.ay;
-  for (let i = lo; i < hi - 1; i++) {
-    const xi = X[i]!, yi = Y[i]!, mi = Mb[i]!;
-    let sx = 0, sy = 0;
-    for (let j = i + 1; j < hi; j++) {
-      const dx = X[j]! - xi, dy = Y[j]! - yi;
-      const r2 = dx * dx + dy * dy + eps2;
-      if (r2 > 0) {
-        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, mj = Mb[j]!;
-        sx += mj * wx; sy += mj * wy;
-        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy;
-      }
-    }
-    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy;
-  }
-}
-
-/** Direct sum between slots [lo, hi) and [lo2, hi2) (disjoint), both ways, without G. */
-function directPair2(t: GravityTree, lo: number, hi: number, lo2: number, hi2: number, eps2: number): void {
-  const X = t.x, Y = t.y, Mb = t.m, AX = t.ax, AY = t.ay;
-  for (let i = lo; i < hi; i++) {
-    const xi = X[i]!, yi = Y[i]!, mi = Mb[i]!;
-    let sx = 0, sy = 0;
-    for (let j = lo2; j < hi2; j++) {
-      const dx = X[j]! - xi, dy = Y[j]! - yi;
-      const r2 = dx * dx + dy * dy + eps2;
-      if (r2 > 0) {
-        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, mj = Mb[j]!;
-        sx += mj * wx; sy += mj * wy;
-        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy;
-      }
-    }
-    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy;
-  }
-}
-
-/** The dual-tree walk (2D): direct sums into t.ax/t.ay, expansions into t.local (both without G). */
-function walk2(t: GravityTree, eps2: number, f: number): void {
-  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
-  let st = t.stack;
-  let sp = 0;
-  let cellPairs = 0, bodyPairs = 0, visits = 0;
-  st[sp++] = 0; st[sp++] = 0;
-  while (sp > 0) {
-    const b = st[--sp]!, a = st[--sp]!;
-    visits++;
-    if (sp + 80 > st.length) st = growStack(t, sp + 80);
-    const lo = start[a]!, hi = end[a]!;
-    if (a === b) {
-      const sa = skip[a]!;
-      if (sa === a + 1 || hi - lo <= DIRECT_SELF) {
-        directSelf2(t, lo, hi, eps2);
-        bodyPairs += ((hi - lo) * (hi - lo - 1)) >> 1;
-        continue;
-      }
-      for (let c = a + 1; c < sa; c = skip[c]!) {
-        st[sp++] = c; st[sp++] = c;
-        for (let d = skip[c]!; d < sa; d = skip[d]!) { st[sp++] = c; st[sp++] = d; }
-      }
-      continue;
-    }
-    const lo2 = start[b]!, hi2 = end[b]!;
-    const na = hi - lo, nb = hi2 - lo2;
-    if (na * nb <= DIRECT_PAIRS) {
-      directPair2(t, lo, hi, lo2, hi2, eps2);
-      bodyPairs += na * nb;
-      continue;
-    }
-    const oa = a * NF2, ob = b * NF2;
-    const X = F[ob]! - F[oa]!, Y = F[ob + 1]! - F[oa + 1]!;
-    const u = X * X + Y * Y;
-    const ra = F[oa + 6]!, rb = F[ob + 6]!, rs = ra + rb;
-    if (u > rs * rs * f) {
-      // Mutual cell-cell expansion to order 4 (see the header).
-      const g2 = 1 / (u + eps2), g = Math.sqrt(g2);
-      const D1 = -g * g2, D2 = -3 * D1 * g2, D3 = -5 * D2 * g2, D4 = -7 * D3 * g2;
-      const x2 = X * X, y2 = Y * Y, xy = X * Y;
-      const t1x = X * D1, t1y = Y * D1;
-      const t2xx = x2 * D2 + D1, t2xy = xy * D2, t2yy = y2 * D2 + D1;
-      const t3xxx = X * (x2 * D3 + 3 * D2), t3xxy = Y * (x2 * D3 + D2), t3xyy = X * (y2 * D3 + D2), t3yyy = Y * (y2 * D3 + 3 * D2);
-      const t4xxxx = x2 * (x2 * D4 + 6 * D3) + 3 * D2, t4xxxy = xy * (x2 * D4 + 3 * D3);
-      const t4xxyy = x2 * y2 * D4 + (x2 + y2) * D3 + D2, t4xyyy = xy * (y2 * D4 + 3 * D3), t4yyyy = y2 * (y2 * D4 + 6 * D3) + 3 * D2;
-      // Per cell: q = T3:S / 2, P = T4:S / 2 (symmetric), O = T4:T / 6 (see the header for the closed forms).
-      let sxx = F[oa + 3]!, sxy = F[oa + 4]!, syy = F[oa + 5]!;
-      let srx = sxx * X + sxy * Y, sry = sxy * X + syy * Y, rsr = X * srx + Y * sry, tr = sxx + syy;
-      let c0 = D3 * rsr + D2 * tr, c1 = D4 * rsr + D3 * tr;
-      const qax = 0.5 * X * c0 + D2 * srx, qay = 0.5 * Y * c0 + D2 * sry;
-      const pAxx = 0.5 * (x2 * c1 + c0) + 2 * D3 * X * srx + D2 * sxx;
-      const pAxy = 0.5 * xy * c1 + D3 * (srx * Y + X * sry) + D2 * sxy;
-      const pAyy = 0.5 * (y2 * c1 + c0) + 2 * D3 * Y * sry + D2 * syy;
-      let txxx = F[oa + 7]!, txxy = F[oa + 8]!, txyy = F[oa + 9]!, tyyy = F[oa + 10]!;
-      let s3x = txxx * x2 + 2 * txxy * xy + txyy * y2, s3y = txxy * x2 + 2 * txyy * xy + tyyy * y2;
-      let vx = txxx + txyy, vy = txxy + tyyy;
-      let c3 = D4 * (X * s3x + Y * s3y) + 3 * D3 * (vx * X + vy * Y);
-      const oAx = (X * c3 + 3 * D3 * s3x + 3 * D2 * vx) / 6, oAy = (Y * c3 + 3 * D3 * s3y + 3 * D2 * vy) / 6;
-      sxx = F[ob + 3]!; sxy = F[ob + 4]!; syy = F[ob + 5]!;
-      srx = sxx * X + sxy * Y; sry = sxy * X + syy * Y; rsr = X * srx + Y * sry; tr = sxx + syy;
-      c0 = D3 * rsr + D2 * tr; c1 = D4 * rsr + D3 * tr;
-      const qbx = 0.5 * X * c0 + D2 * srx, qby = 0.5 * Y * c0 + D2 * sry;
-      const pBxx = 0.5 * (x2 * c1 + c0) + 2 * D3 * X * srx + D2 * sxx;
-      const pBxy = 0.5 * xy * c1 + D3 * (srx * Y + X * sry) + D2 * sxy;
-      const pByy = 0.5 * (y2 * c1 + c0) + 2 * D3 * Y * sry + D2 * syy;
-      txxx = F[ob + 7]!; txxy = F[ob + 8]!; txyy = F[ob + 9]!; tyyy = F[ob + 10]!;
-      s3x = txxx * x2 + 2 * txxy * xy + txyy * y2; s3y = txxy * x2 + 2 * txyy * xy + tyyy * y2;
-      vx = txxx + txyy; vy = txxy + tyyy;
-      c3 = D4 * (X * s3x + Y * s3y) + 3 * D3 * (vx * X + vy * Y);
-      const oBx = (X * c3 + 3 * D3 * s3x + 3 * D2 * vx) / 6, oBy = (Y * c3 + 3 * D3 * s3y + 3 * D2 * vy) / 6;
-      const Ma = F[oa + 2]!, Mb = F[ob + 2]!;
-      let l = a * NL2;
-      L[l] = L[l]! - (Mb * t1x + qbx + oBx); L[l + 1] = L[l + 1]! - (Mb * t1y + qby + oBy);
-      L[l + 2] = L[l + 2]! + Mb * t2xx + pBxx; L[l + 3] = L[l + 3]! + Mb * t2xy + pBxy; L[l + 4] = L[l + 4]! + Mb * t2yy + pByy;
-      L[l + 5] = L[l + 5]! - Mb * t3xxx; L[l + 6] = L[l + 6]! - Mb * t3xxy; L[l + 7] = L[l + 7]! - Mb * t3xyy; L[l + 8] = L[l + 8]! - Mb * t3yyy;
-      L[l + 9] = L[l + 9]! + Mb * t4xxxx; L[l + 10] = L[l + 10]! + Mb * t4xxxy; L[l + 11] = L[l + 11]! + Mb * t4xxyy;
-      L[l + 12] = L[l + 12]! + Mb * t4xyyy; L[l + 13] = L[l + 13]! + Mb * t4yyyy;
-      l = b * NL2;
-      L[l] = L[l]! + (Ma * t1x + qax - oAx); L[l + 1] = L[l + 1]! + (Ma * t1y + qay - oAy);
-      L[l + 2] = L[l + 2]! + Ma * t2xx + pAxx; L[l + 3] = L[l + 3]! + Ma * t2xy + pAxy; L[l + 4] = L[l + 4]! + Ma * t2yy + pAyy;
-      L[l + 5] = L[l + 5]! + Ma * t3xxx; L[l + 6] = L[l + 6]! + Ma * t3xxy; L[l + 7] = L[l + 7]! + Ma * t3xyy; L[l + 8] = L[l + 8]! + Ma * t3yyy;
-      L[l + 9] = L[l + 9]! + Ma * t4xxxx; L[l + 10] = L[l + 10]! + Ma * t4xxxy; L[l + 11] = L[l + 11]! + Ma * t4xxyy;
-      L[l + 12] = L[l + 12]! + Ma * t4xyyy; L[l + 13] = L[l + 13]! + Ma * t4yyyy;
-      cellPairs++;
-      continue;
-    }
-    const leafA = skip[a] === a + 1, leafB = skip[b] === b + 1;
-    if (leafA && leafB) {
-      directPair2(t, lo, hi, lo2, hi2, eps2);
-      bodyPairs += na * nb;
-      continue;
-    }
-    if (!leafA && (leafB || ra >= rb)) {
-      const sa = skip[a]!;
-      for (let c = a + 1; c < sa; c = skip[c]!) { st[sp++] = c; st[sp++] = b; }
-    } else {
-      const sb = skip[b]!;
-      for (let c = b + 1; c < sb; c = skip[c]!) { st[sp++] = a; st[sp++] = c; }
-    }
-  }
-  t.stats.cellPairs = cellPairs; t.stats.bodyPairs = bodyPairs; t.stats.visits = visits;
-}
-
-/**
- * Downward pass (2D): shift each cell's field polynomial a(d) = a0 + J d + K d d / 2 + H d d d / 6 to its
- * children (exactly, by Horner's rule) and evaluate it at the leaves' bodies, times G.
- */
-function down2(t: GravityTree, G: number): void {
-  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
-  const X = t.x, Y = t.y, AX = t.ax, AY = t.ay;
-  const nodeCount = t.nodeCount;
-  const third = 1 / 3;
-  for (let k = 0; k < nodeCount; k++) {
-    const o = k * NF2, l = k * NL2, sk = skip[k]!;
-    const cx = F[o]!, cy = F[o + 1]!;
-    const a0x = L[l]!, a0y = L[l + 1]!, jxx = L[l + 2]!, jxy = L[l + 3]!, jyy = L[l + 4]!;
-    const kxxx = L[l + 5]!, kxxy = L[l + 6]!, kxyy = L[l + 7]!, kyyy = L[l + 8]!;
-    const h0 = L[l + 9]!, h1 = L[l + 10]!, h2 = L[l + 11]!, h3 = L[l + 12]!, h4 = L[l + 13]!;
-    if (sk === k + 1) {
-      for (let s = start[k]!, e = end[k]!; s < e; s++) {
-        const dx = X[s]! - cx, dy = Y[s]! - cy;
-        // K1 = K + H d / 3, J1 = J + K1 d / 2, a = a0 + J1 d.
-        const k0 = kxxx + third * (h0 * dx + h1 * dy), k1 = kxxy + third * (h1 * dx + h2 * dy);
-        const k2 = kxyy + third * (h2 * dx + h3 * dy), k3 = kyyy + third * (h3 * dx + h4 * dy);
-        const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-        AX[s] = G * (AX[s]! + a0x + j0 * dx + j1 * dy);
-        AY[s] = G * (AY[s]! + a0y + j1 * dx + j2 * dy);
-      }
-      continue;
-    }
-    for (let c = k + 1; c < sk; c = skip[c]!) {
-      const oc = c * NF2, lc = c * NL2;
-      const dx = F[oc]! - cx, dy = F[oc + 1]! - cy;
-      // Hd, then K' = K + Hd, J' = J + (K + Hd / 2) d, a0' = a0 + (J + (K + Hd / 3) d / 2) d.
-      const hd0 = h0 * dx + h1 * dy, hd1 = h1 * dx + h2 * dy, hd2 = h2 * dx + h3 * dy, hd3 = h3 * dx + h4 * dy;
-      let k0 = kxxx + third * hd0, k1 = kxxy + third * hd1, k2 = kxyy + third * hd2, k3 = kyyy + third * hd3;
-      const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-      L[lc] = L[lc]! + a0x + j0 * dx + j1 * dy;
-      L[lc + 1] = L[lc + 1]! + a0y + j1 * dx + j2 * dy;
-      k0 = kxxx + 0.5 * hd0; k1 = kxxy + 0.5 * hd1; k2 = kxyy + 0.5 * hd2; k3 = kyyy + 0.5 * hd3;
-      L[lc + 2] = L[lc + 2]! + jxx + k0 * dx + k1 * dy;
-      L[lc + 3] = L[lc + 3]! + jxy + k1 * dx + k2 * dy;
-      L[lc + 4] = L[lc + 4]! + jyy + k2 * dx + k3 * dy;
-      L[lc + 5] = L[lc + 5]! + kxxx + hd0; L[lc + 6] = L[lc + 6]! + kxxy + hd1;
-      L[lc + 7] = L[lc + 7]! + kxyy + hd2; L[lc + 8] = L[lc + 8]! + kyyy + hd3;
-      L[lc + 9] = L[lc + 9]! + h0; L[lc + 10] = L[lc + 10]! + h1; L[lc + 11] = L[lc + 11]! + h2;
-      L[lc + 12] = L[lc + 12]! + h3; L[lc + 13] = L[lc + 13]! + h4;
-    }
-  }
-}
-
-function directSelf3(t: GravityTree, lo: number, hi: number, eps2: number): void {
-  const X = t.x, Y = t.y, Z = t.z, Mb = t.m, AX = t.ax, AY = t.ay, AZ = t.az;
-  for (let i = lo; i < hi - 1; i++) {
-    const xi = X[i]!, yi = Y[i]!, zi = Z[i]!, mi = Mb[i]!;
-    let sx = 0, sy = 0, sz = 0;
-    for (let j = i + 1; j < hi; j++) {
-      const dx = X[j]! - xi, dy = Y[j]! - yi, dz = Z[j]! - zi;
-      const r2 = dx * dx + dy * dy + dz * dz + eps2;
-      if (r2 > 0) {
-        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, wz = w * dz, mj = Mb[j]!;
-        sx += mj * wx; sy += mj * wy; sz += mj * wz;
-        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy; AZ[j] = AZ[j]! - mi * wz;
-      }
-    }
-    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy; AZ[i] = AZ[i]! + sz;
-  }
-}
-
-function directPair3(t: GravityTree, lo: number, hi: number, lo2: number, hi2: number, eps2: number): void {
-  const X = t.x, Y = t.y, Z = t.z, Mb = t.m, AX = t.ax, AY = t.ay, AZ = t.az;
-  for (let i = lo; i < hi; i++) {
-    const xi = X[i]!, yi = Y[i]!, zi = Z[i]!, mi = Mb[i]!;
-    let sx = 0, sy = 0, sz = 0;
-    for (let j = lo2; j < hi2; j++) {
-      const dx = X[j]! - xi, dy = Y[j]! - yi, dz = Z[j]! - zi;
-      const r2 = dx * dx + dy * dy + dz * dz + eps2;
-      if (r2 > 0) {
-        const w = 1 / (r2 * Math.sqrt(r2)), wx = w * dx, wy = w * dy, wz = w * dz, mj = Mb[j]!;
-        sx += mj * wx; sy += mj * wy; sz += mj * wz;
-        AX[j] = AX[j]! - mi * wx; AY[j] = AY[j]! - mi * wy; AZ[j] = AZ[j]! - mi * wz;
-      }
-    }
-    AX[i] = AX[i]! + sx; AY[i] = AY[i]! + sy; AZ[i] = AZ[i]! + sz;
-  }
-}
-
-/** The dual-tree walk (3D); see walk2. */
-function walk3(t: GravityTree, eps2: number, f: number): void {
-  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
-  let st = t.stack;
-  let sp = 0;
-  let cellPairs = 0, bodyPairs = 0, visits = 0;
-  st[sp++] = 0; st[sp++] = 0;
-  while (sp > 0) {
-    const b = st[--sp]!, a = st[--sp]!;
-    visits++;
-    if (sp + 160 > st.length) st = growStack(t, sp + 160);
-    const lo = start[a]!, hi = end[a]!;
-    if (a === b) {
-      const sa = skip[a]!;
-      if (sa === a + 1 || hi - lo <= DIRECT_SELF) {
-        directSelf3(t, lo, hi, eps2);
-        bodyPairs += ((hi - lo) * (hi - lo - 1)) >> 1;
-        continue;
-      }
-      for (let c = a + 1; c < sa; c = skip[c]!) {
-        st[sp++] = c; st[sp++] = c;
-        for (let d = skip[c]!; d < sa; d = skip[d]!) { st[sp++] = c; st[sp++] = d; }
-      }
-      continue;
-    }
-    const lo2 = start[b]!, hi2 = end[b]!;
-    const na = hi - lo, nb = hi2 - lo2;
-    if (na * nb <= DIRECT_PAIRS) {
-      directPair3(t, lo, hi, lo2, hi2, eps2);
-      bodyPairs += na * nb;
-      continue;
-    }
-    const oa = a * NF3, ob = b * NF3;
-    const X = F[ob]! - F[oa]!, Y = F[ob + 1]! - F[oa + 1]!, Z = F[ob + 2]! - F[oa + 2]!;
-    const u = X * X + Y * Y + Z * Z;
-    const ra = F[oa + 10]!, rb = F[ob + 10]!, rs = ra + rb;
-    if (u > rs * rs * f) {
-      const g2 = 1 / (u + eps2), g = Math.sqrt(g2);
-      const D1 = -g * g2, D2 = -3 * D1 * g2, D3 = -5 * D2 * g2;
-      const t1x = X * D1, t1y = Y * D1, t1z = Z * D1;
-      const t2xx = X * X * D2 + D1, t2yy = Y * Y * D2 + D1, t2zz = Z * Z * D2 + D1;
-      const t2xy = X * Y * D2, t2xz = X * Z * D2, t2yz = Y * Z * D2;
-      const x2 = X * X, y2 = Y * Y, z2 = Z * Z;
-      const t3xxx = X * (x2 * D3 + 3 * D2), t3xxy = Y * (x2 * D3 + D2), t3xxz = Z * (x2 * D3 + D2);
-      const t3xyy = X * (y2 * D3 + D2), t3xyz = X * Y * Z * D3, t3xzz = X * (z2 * D3 + D2);
-      const t3yyy = Y * (y2 * D3 + 3 * D2), t3yyz = Z * (y2 * D3 + D2), t3yzz = Y * (z2 * D3 + D2);
-      const t3zzz = Z * (z2 * D3 + 3 * D2);
-      const Ma = F[oa + 3]!, Mb = F[ob + 3]!;
-      let sxx = F[oa + 4]!, syy = F[oa + 5]!, szz = F[oa + 6]!, sxy = F[oa + 7]!, sxz = F[oa + 8]!, syz = F[oa + 9]!;
-      let srx = sxx * X + sxy * Y + sxz * Z, sry = sxy * X + syy * Y + syz * Z, srz = sxz * X + syz * Y + szz * Z;
-      let k = D3 * (X * srx + Y * sry + Z * srz) + D2 * (sxx + syy + szz);
-      const qax = 0.5 * (X * k + 2 * D2 * srx), qay = 0.5 * (Y * k + 2 * D2 * sry), qaz = 0.5 * (Z * k + 2 * D2 * srz);
-      sxx = F[ob + 4]!; syy = F[ob + 5]!; szz = F[ob + 6]!; sxy = F[ob + 7]!; sxz = F[ob + 8]!; syz = F[ob + 9]!;
-      srx = sxx * X + sxy * Y + sxz * Z; sry = sxy * X + syy * Y + syz * Z; srz = sxz * X + syz * Y + szz * Z;
-      k = D3 * (X * srx + Y * sry + Z * srz) + D2 * (sxx + syy + szz);
-      const qbx = 0.5 * (X * k + 2 * D2 * srx), qby = 0.5 * (Y * k + 2 * D2 * sry), qbz = 0.5 * (Z * k + 2 * D2 * srz);
-      let l = a * NL3;
-      L[l] = L[l]! - (Mb * t1x + qbx); L[l + 1] = L[l + 1]! - (Mb * t1y + qby); L[l + 2] = L[l + 2]! - (Mb * t1z + qbz);
-      L[l + 3] = L[l + 3]! + Mb * t2xx; L[l + 4] = L[l + 4]! + Mb * t2yy; L[l + 5] = L[l + 5]! + Mb * t2zz;
-      L[l + 6] = L[l + 6]! + Mb * t2xy; L[l + 7] = L[l + 7]! + Mb * t2xz; L[l + 8] = L[l + 8]! + Mb * t2yz;
-      L[l + 9] = L[l + 9]! - Mb * t3xxx; L[l + 10] = L[l + 10]! - Mb * t3xxy; L[l + 11] = L[l + 11]! - Mb * t3xxz;
-      L[l + 12] = L[l + 12]! - Mb * t3xyy; L[l + 13] = L[l + 13]! - Mb * t3xyz; L[l + 14] = L[l + 14]! - Mb * t3xzz;
-      L[l + 15] = L[l + 15]! - Mb * t3yyy; L[l + 16] = L[l + 16]! - Mb * t3yyz; L[l + 17] = L[l + 17]! - Mb * t3yzz;
-      L[l + 18] = L[l + 18]! - Mb * t3zzz;
-      l = b * NL3;
-      L[l] = L[l]! + (Ma * t1x + qax); L[l + 1] = L[l + 1]! + (Ma * t1y + qay); L[l + 2] = L[l + 2]! + (Ma * t1z + qaz);
-      L[l + 3] = L[l + 3]! + Ma * t2xx; L[l + 4] = L[l + 4]! + Ma * t2yy; L[l + 5] = L[l + 5]! + Ma * t2zz;
-      L[l + 6] = L[l + 6]! + Ma * t2xy; L[l + 7] = L[l + 7]! + Ma * t2xz; L[l + 8] = L[l + 8]! + Ma * t2yz;
-      L[l + 9] = L[l + 9]! + Ma * t3xxx; L[l + 10] = L[l + 10]! + Ma * t3xxy; L[l + 11] = L[l + 11]! + Ma * t3xxz;
-      L[l + 12] = L[l + 12]! + Ma * t3xyy; L[l + 13] = L[l + 13]! + Ma * t3xyz; L[l + 14] = L[l + 14]! + Ma * t3xzz;
-      L[l + 15] = L[l + 15]! + Ma * t3yyy; L[l + 16] = L[l + 16]! + Ma * t3yyz; L[l + 17] = L[l + 17]! + Ma * t3yzz;
-      L[l + 18] = L[l + 18]! + Ma * t3zzz;
-      cellPairs++;
-      continue;
-    }
-    const leafA = skip[a] === a + 1, leafB = skip[b] === b + 1;
-    if (leafA && leafB) {
-      directPair3(t, lo, hi, lo2, hi2, eps2);
-      bodyPairs += na * nb;
-      continue;
-    }
-    if (!leafA && (leafB || ra >= rb)) {
-      const sa = skip[a]!;
-      for (let c = a + 1; c < sa; c = skip[c]!) { st[sp++] = c; st[sp++] = b; }
-    } else {
-      const sb = skip[b]!;
-      for (let c = b + 1; c < sb; c = skip[c]!) { st[sp++] = a; st[sp++] = c; }
-    }
-  }
-  t.stats.cellPairs = cellPairs; t.stats.bodyPairs = bodyPairs; t.stats.visits = visits;
-}
-
-/** Downward pass (3D); see down2. */
-function down3(t: GravityTree, G: number): void {
-  const F = t.node, L = t.local, skip = t.skip, start = t.start, end = t.end;
-  const X = t.x, Y = t.y, Z = t.z, AX = t.ax, AY = t.ay, AZ = t.az;
-  const nodeCount = t.nodeCount;
-  for (let k = 0; k < nodeCount; k++) {
-    const o = k * NF3, l = k * NL3, sk = skip[k]!;
-    const cx = F[o]!, cy = F[o + 1]!, cz = F[o + 2]!;
-    const a0x = L[l]!, a0y = L[l + 1]!, a0z = L[l + 2]!;
-    const jxx = L[l + 3]!, jyy = L[l + 4]!, jzz = L[l + 5]!, jxy = L[l + 6]!, jxz = L[l + 7]!, jyz = L[l + 8]!;
-    const kxxx = L[l + 9]!, kxxy = L[l + 10]!, kxxz = L[l + 11]!, kxyy = L[l + 12]!, kxyz = L[l + 13]!;
-    const kxzz = L[l + 14]!, kyyy = L[l + 15]!, kyyz = L[l + 16]!, kyzz = L[l + 17]!, kzzz = L[l + 18]!;
-    if (sk === k + 1) {
-      for (let s = start[k]!, e = end[k]!; s < e; s++) {
-        const dx = X[s]! - cx, dy = Y[s]! - cy, dz = Z[s]! - cz;
-        const kdxx = kxxx * dx + kxxy * dy + kxxz * dz, kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
-        const kdzz = kxzz * dx + kyzz * dy + kzzz * dz, kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
-        const kdxz = kxxz * dx + kxyz * dy + kxzz * dz, kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-        AX[s] = G * (AX[s]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz));
-        AY[s] = G * (AY[s]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz));
-        AZ[s] = G * (AZ[s]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz));
-      }
-      continue;
-    }
-    for (let c = k + 1; c < sk; c = skip[c]!) {
-      const oc = c * NF3, lc = c * NL3;
-      const dx = F[oc]! - cx, dy = F[oc + 1]! - cy, dz = F[oc + 2]! - cz;
-      const kdxx = kxxx * dx + kxxy * dy + kxxz * dz, kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
-      const kdzz = kxzz * dx + kyzz * dy + kzzz * dz, kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
-      const kdxz = kxxz * dx + kxyz * dy + kxzz * dz, kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-      L[lc] = L[lc]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
-      L[lc + 1] = L[lc + 1]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
-      L[lc + 2] = L[lc + 2]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
-      L[lc + 3] = L[lc + 3]! + jxx + kdxx; L[lc + 4] = L[lc + 4]! + jyy + kdyy; L[lc + 5] = L[lc + 5]! + jzz + kdzz;
-      L[lc + 6] = L[lc + 6]! + jxy + kdxy; L[lc + 7] = L[lc + 7]! + jxz + kdxz; L[lc + 8] = L[lc + 8]! + jyz + kdyz;
-      for (let q = 9; q < NL3; q++) L[lc + q] = L[lc + q]! + L[l + q]!;
-    }
-  }
 }
 
 /**
@@ -982,7 +727,7 @@ export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): G
   for (let i = 0; i < n; i++) { const e = ents[i]!; gx[i] = px[e]!; gy[i] = py[e]!; gz[i] = pz[e]!; gm[i] = m[e]!; }
   buildTree(t, n, gx, gy, gz, gm);
   const L = world.laws;
-  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle);
+  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, 'mutualGravitySystem (Barnes-Hut)');
   return t;
 }
 

@@ -12,11 +12,10 @@
  * - it returns a number the caller sums over the ranges (a finiteness check or a count).
  */
 
-/** A typed array a kernel reads or writes. */
-export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
+import type { Kernel, KernelArray } from './kernel-types.js';
+import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
 
-/** The signature every kernel has; see the file's header. */
-export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number) => number;
+export type { Kernel, KernelArray } from './kernel-types.js';
 
 /**
  * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
@@ -188,6 +187,7 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 /** Kernel numbers: the index of each kernel in `KERNELS`. */
 export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
+  barnesHutWalk2: 8, barnesHutWalk3: 9,
 });
 
 /**
@@ -208,4 +208,6 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 }
 
 /** Every kernel, indexed by `KERNEL`. */
-export const KERNELS: readonly Kernel[] = Object.freeze([sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe]);
+export const KERNELS: readonly Kernel[] = Object.freeze([
+  sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
+]);

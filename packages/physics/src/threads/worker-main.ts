@@ -18,9 +18,9 @@
 export const CONTROL = Object.freeze({
   GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, COUNT: 7, THREADS: 8, IDS: 9, NARRAYS: 10, ARRAYS: 11,
   /** Most arrays a kernel takes. */
-  MAX_ARRAYS: 24,
+  MAX_ARRAYS: 48,
   /** Length of the control array. */
-  LENGTH: 36,
+  LENGTH: 59,
 });
 
 /** Commands in `CONTROL.CMD`. */

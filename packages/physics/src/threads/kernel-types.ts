@@ -1,0 +1,15 @@
+/**
+ * The types of a thread kernel (kernels.ts), in a module of their own so that kernels kept beside
+ * their system (forces/barnes-hut-walk.ts) can name them without importing the kernel table.
+ */
+
+/** A typed array a kernel reads or writes. */
+export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
+
+/**
+ * The signature every kernel has: `A` the typed arrays in the order its caller documents, `P` the
+ * scalar parameters, `ids` the entity ids of the loop (null: dense ids lo + 1 .. hi, or a loop
+ * that is not over entities), [lo, hi) the range this thread runs. Returns a number the caller
+ * sums over the ranges.
+ */
+export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number) => number;
