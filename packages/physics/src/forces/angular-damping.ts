@@ -4,6 +4,8 @@ import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
 
 /**
  * The largest inverse moment of inertia of body e, 1/(kg m^2), that sets its damping rate k h / I:
@@ -40,8 +42,12 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const h = world.h;
   const is2D = world.dimensions === 2;
   const ii = c.Inertia.inv;
-  let stiff = 0;
-  for (let i = 0; i < ents.length; i++) {
+  // 2D (a scalar moment of inertia) on the world's threads when that pays; null: this thread.
+  const par = is2D
+    ? runParallel(world, 'angularDampingSystem', KERNEL.angularDampingScalar, [k, ii, wx, wy, wz, tx, ty, tz], [h, STIFF_RATE], ents.length, ents)
+    : null;
+  let stiff = par ?? 0;
+  if (par === null) for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const d = k[e]!;
     if (d * (is2D ? ii[e]! : largestInverseInertia(world, e, false)) * h >= STIFF_RATE) { stiff++; continue; }

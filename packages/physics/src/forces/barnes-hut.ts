@@ -3,6 +3,8 @@ import { KERNEL, KERNELS } from '../threads/kernels.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
+import { BOX_STRIDE, mortonKeys, treeForces, treeGather } from './barnes-hut-gather.js';
+import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -134,7 +136,7 @@ export interface GravityTree {
   /** Whether the arrays the evaluation reads live on SharedArrayBuffers (a world with threads > 1). */
   shared: boolean;
   /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
-  cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array;
+  cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array;
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
   /** Morton keys and input indices in sorted order, and the radix sort's second buffers and histogram. */
@@ -166,7 +168,7 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     node: F64(nodes * (dims === 3 ? NF3 : NF2)), box: new Float64Array(nodes * 6),
     start: I32(nodes), end: I32(nodes), skip: I32(nodes),
     scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
-    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8),
+    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8), keyParams: new Float64Array(6),
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
     hist: new Int32Array(RADIX),
@@ -205,10 +207,11 @@ function growBodies(t: GravityTree, n: number): void {
   const size = Math.max(n, 2 * t.x.length, 64);
   t.x = f64(t, size); t.y = f64(t, size); t.z = f64(t, size); t.m = f64(t, size);
   t.x2 = new Float64Array(size); t.y2 = new Float64Array(size); t.z2 = new Float64Array(size); t.m2 = new Float64Array(size);
-  t.perm = new Int32Array(size); t.perm2 = new Int32Array(size); t.slot = new Int32Array(size); t.code = new Uint8Array(size);
+  t.perm = new Int32Array(size); t.perm2 = new Int32Array(size); t.slot = i32(t, size); t.code = new Uint8Array(size);
   t.ax = f64(t, size); t.ay = f64(t, size); t.az = f64(t, size);
   t.scratch.length = 0;
-  t.key = new Uint32Array(size); t.idx = new Int32Array(size); t.key2 = new Uint32Array(size); t.idx2 = new Int32Array(size);
+  const u32 = (k: number): Uint32Array => (t.shared ? new Uint32Array(new SharedArrayBuffer(4 * k)) : new Uint32Array(k));
+  t.key = u32(size); t.idx = i32(t, size); t.key2 = u32(size); t.idx2 = i32(t, size);
 }
 
 function growNodes(t: GravityTree, needed: number): void {
@@ -231,26 +234,6 @@ const KEY_BITS2 = 16, KEY_BITS3 = 10;
 /** Radix of the key sort, bits per pass. */
 const RADIX_BITS = 11, RADIX = 1 << RADIX_BITS;
 
-/** Spreads the low 16 bits of v to the even bits of a 32-bit word. */
-function spread2(v: number): number {
-  v &= 0xffff;
-  v = (v | (v << 8)) & 0x00ff00ff;
-  v = (v | (v << 4)) & 0x0f0f0f0f;
-  v = (v | (v << 2)) & 0x33333333;
-  v = (v | (v << 1)) & 0x55555555;
-  return v;
-}
-
-/** Spreads the low 10 bits of v to every third bit of a 30-bit word. */
-function spread3(v: number): number {
-  v &= 0x3ff;
-  v = (v | (v << 16)) & 0x030000ff;
-  v = (v | (v << 8)) & 0x0300f00f;
-  v = (v | (v << 4)) & 0x030c30c3;
-  v = (v | (v << 2)) & 0x09249249;
-  return v;
-}
-
 /**
  * Builds the tree over n bodies with positions (x, y, z), m, and masses m, kg (>= 0), arrays indexed
  * 0..n-1 (z is ignored in 2D). Bodies of zero mass are kept (they still get a field) but weigh
@@ -266,16 +249,34 @@ export function buildTree(
   t: GravityTree, n: number,
   x: ArrayLike<number>, y: ArrayLike<number>, z: ArrayLike<number>, m: ArrayLike<number>,
 ): void {
+  buildTreeWith(t, n, x, y, z, m, null, null);
+}
+
+/**
+ * buildTree, with the bounding box already known (`bounds`: min x, y, z, max x, y, z, non-finite
+ * flag; null: computed here) and the Morton keys computed on `pool`'s threads when the arrays are
+ * shared and the bodies many enough (MIN_PARALLEL_PER_THREAD a thread).
+ */
+function buildTreeWith(
+  t: GravityTree, n: number,
+  x: ArrayLike<number>, y: ArrayLike<number>, z: ArrayLike<number>, m: ArrayLike<number>,
+  bounds: Float64Array | null, pool: ThreadPool | null,
+): void {
   const is3D = t.dims === 3;
   growBodies(t, n);
   let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
   let bad = false;
-  for (let i = 0; i < n; i++) {
-    const px = x[i]!, py = y[i]!;
-    if (px < minX) minX = px; if (px > maxX) maxX = px;
-    if (py < minY) minY = py; if (py > maxY) maxY = py;
-    if (px - px !== 0 || py - py !== 0) bad = true; // NaN or infinite
-    if (is3D) { const pz = z[i]!; if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz; if (pz - pz !== 0) bad = true; }
+  if (bounds !== null) {
+    minX = bounds[0]!; minY = bounds[1]!; minZ = bounds[2]!; maxX = bounds[3]!; maxY = bounds[4]!; maxZ = bounds[5]!;
+    bad = bounds[6] !== 0;
+  } else {
+    for (let i = 0; i < n; i++) {
+      const px = x[i]!, py = y[i]!;
+      if (px < minX) minX = px; if (px > maxX) maxX = px;
+      if (py < minY) minY = py; if (py > maxY) maxY = py;
+      if (px - px !== 0 || py - py !== 0) bad = true; // NaN or infinite
+      if (is3D) { const pz = z[i]!; if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz; if (pz - pz !== 0) bad = true; }
+    }
   }
   if (!is3D) { minZ = 0; maxZ = 0; }
   t.n = n;
@@ -294,19 +295,13 @@ export function buildTree(
   const bits = is3D ? KEY_BITS3 : KEY_BITS2, top = (1 << bits) - 1;
   const scale = half > 0 && half < Infinity ? (1 << bits) / (2 * half) : 0;
   const x0 = cx - half, y0 = cy - half, z0 = cz - half;
-  let key = t.key, idx = t.idx, key2 = t.key2, idx2 = t.idx2;
-  for (let i = 0; i < n; i++) {
-    let kx = Math.floor((x[i]! - x0) * scale), ky = Math.floor((y[i]! - y0) * scale);
-    kx = kx > 0 ? (kx < top ? kx : top) : 0; ky = ky > 0 ? (ky < top ? ky : top) : 0;
-    if (is3D) {
-      let kz = Math.floor((z[i]! - z0) * scale);
-      kz = kz > 0 ? (kz < top ? kz : top) : 0;
-      key[i] = spread3(kx) | (spread3(ky) << 1) | (spread3(kz) << 2);
-    } else {
-      key[i] = (spread2(kx) | (spread2(ky) << 1)) >>> 0;
-    }
-    idx[i] = i;
+  const KP = t.keyParams;
+  KP[0] = x0; KP[1] = y0; KP[2] = z0; KP[3] = scale; KP[4] = top; KP[5] = t.dims;
+  const keyArrays = [x, y, z, t.key, t.idx] as KernelArray[];
+  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut keys)', KERNEL.mortonKeys, keyArrays, KP, n, null, MIN_PARALLEL_PER_THREAD) === null) {
+    mortonKeys(keyArrays, KP, null, 0, n);
   }
+  let key = t.key, idx = t.idx, key2 = t.key2, idx2 = t.idx2;
   // LSD radix sort of (key, index), stable.
   const hist = t.hist;
   const keyBits = is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2;
@@ -577,7 +572,7 @@ export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta:
   P[5] = accOffset; P[6] = accOffset + t.x.length; P[7] = accOffset + 2 * t.x.length;
   const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
-  else KERNELS[kernel]!(arrays, P, null, 0, 1);
+  else KERNELS[kernel]!(arrays, P, null, 0, 1, 0);
   const info = t.info;
   for (let p = 0; p < threads; p++) {
     t.stats.cellPairs += info[p * INFO_STRIDE]!; t.stats.bodyPairs += info[p * INFO_STRIDE + 1]!; t.stats.visits += info[p * INFO_STRIDE + 2]!;
@@ -703,11 +698,13 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
 
 interface GatherHolder { gravityGather?: Float64Array[] }
 
-function gatherScratch(world: PhysicsWorld, n: number): Float64Array[] {
+function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Float64Array[] {
   const holder = world as GatherHolder;
   if (!holder.gravityGather || holder.gravityGather[0]!.length < n) {
     const size = Math.max(n, 2 * (holder.gravityGather?.[0]!.length ?? 0), 1024);
-    holder.gravityGather = [new Float64Array(size), new Float64Array(size), new Float64Array(size), new Float64Array(size)];
+    const f = (k: number): Float64Array => (shared ? sharedFloat64(k) : new Float64Array(k));
+    // x, y, z, m, and the bounding box of each thread's range (BOX_STRIDE slots a thread).
+    holder.gravityGather = [f(size), f(size), f(size), f(size), f(BOX_STRIDE * 64)];
   }
   return holder.gravityGather;
 }
@@ -715,19 +712,34 @@ function gatherScratch(world: PhysicsWorld, n: number): Float64Array[] {
 /**
  * Builds the world's tree over the bodies `ents` (entity ids) from their Position and Mass, and
  * evaluates the field at all of them with the world's G, softening and opening angle. Returns the
- * tree: the field of entity ents[t.perm[s]] is (t.ax[s], t.ay[s], t.az[s]), m/s^2.
+ * tree: the field of entity ents[t.perm[s]] is (t.ax[s], t.ay[s], t.az[s]), m/s^2. In a world with
+ * threads > 1, the gathering, the Morton keys and the evaluation run on its threads (the sort and
+ * the split on one); the tree and the fields are the same as on one thread, to the bit.
  */
 export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): GravityTree {
   const c = world.components;
   const n = ents.length;
   const t = worldTree(world);
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
-  const xs = gatherScratch(world, n);
-  const gx = xs[0]!, gy = xs[1]!, gz = xs[2]!, gm = xs[3]!;
-  for (let i = 0; i < n; i++) { const e = ents[i]!; gx[i] = px[e]!; gy[i] = py[e]!; gz[i] = pz[e]!; gm[i] = m[e]!; }
-  buildTree(t, n, gx, gy, gz, gm);
+  const xs = gatherScratch(world, n, t.shared);
+  const gx = xs[0]!, gy = xs[1]!, gz = xs[2]!, gm = xs[3]!, box = xs[4]!;
+  const arrays = [c.Position.x, c.Position.y, c.Position.z, c.Mass.value, gx, gy, gz, gm, box] as KernelArray[];
+  const P = t.keyParams;
+  P[0] = world.dimensions;
+  const system = 'mutualGravitySystem (Barnes-Hut)';
+  let parts = world.threadPool?.threads ?? 1;
+  if (runOnPool(world.threadPool, system, KERNEL.treeGather, arrays, P, n, ents, MIN_PARALLEL_PER_THREAD) === null) {
+    parts = 1;
+    treeGather(arrays, P, ents as unknown as Int32Array, 0, n, 0);
+  }
+  // The bounding box over the ranges (min and max: exact in any order).
+  for (let p = 1; p < parts; p++) {
+    const o = p * BOX_STRIDE;
+    for (let q = 0; q < 3; q++) { if (box[o + q]! < box[q]!) box[q] = box[o + q]!; if (box[o + 3 + q]! > box[3 + q]!) box[3 + q] = box[o + 3 + q]!; }
+    if (box[o + 6] !== 0) box[6] = 1;
+  }
+  buildTreeWith(t, n, gx, gy, gz, gm, box, world.threadPool);
   const L = world.laws;
-  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, 'mutualGravitySystem (Barnes-Hut)');
+  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, system);
   return t;
 }
 
@@ -739,11 +751,9 @@ export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): G
 export function barnesHutGravity(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const t = worldTreeFields(world, ents);
   const c = world.components;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  const slot = t.slot, ax = t.ax, ay = t.ay, az = t.az, m = t.m;
   // In input order: the force arrays are then written in ents' (usually increasing) order.
-  for (let i = 0; i < t.n; i++) {
-    const e = ents[i]!, s = slot[i]!, w = m[s]!;
-    fx[e] = fx[e]! + w * ax[s]!; fy[e] = fy[e]! + w * ay[s]!; fz[e] = fz[e]! + w * az[s]!;
+  const arrays = [c.Force.x, c.Force.y, c.Force.z, t.slot, t.m, t.ax, t.ay, t.az] as KernelArray[];
+  if (runOnPool(world.threadPool, 'mutualGravitySystem (Barnes-Hut)', KERNEL.treeForces, arrays, t.keyParams, t.n, ents, MIN_PARALLEL_PER_THREAD) === null) {
+    treeForces(arrays, t.keyParams, ents as unknown as Int32Array, 0, t.n);
   }
 }

@@ -4,6 +4,8 @@ import type { ForceLaw } from './law.js';
 import { windAt } from './configure.js';
 import { reportNonFinite } from '../errors.js';
 import { dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
 
 const wind = new Float64Array(3);
 
@@ -32,7 +34,12 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   // Stiff when k h / m >= STIFF_RATE, i.e. k / m >= limit.
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
-  if (calmAir(world)) {
+  const par = calmAir(world)
+    ? runParallel(world, 'linearDragSystem', KERNEL.linearDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents)
+    : null;
+  if (par !== null) {
+    stiff = par;
+  } else if (calmAir(world)) {
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const c = k[e]!;
@@ -70,6 +77,18 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   const fx = Force.x, fy = Force.y, fz = Force.z;
   const limit = STIFF_RATE / world.h;
   if (calmAir(world)) {
+    const stiff = runParallel(world, 'quadraticDragSystem', KERNEL.quadraticDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents);
+    if (stiff !== null) {
+      // The threads added the force of every body that is not stiff; stamp the stiff ones here.
+      if (stiff > 0) {
+        for (let i = 0; i < ents.length; i++) {
+          const e = ents[i]!;
+          const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+          if (k[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! >= limit) markStiffQuadratic(world, e, k[e]!);
+        }
+      }
+      return;
+    }
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const x = vx[e]!, y = vy[e]!, z = vz[e]!;

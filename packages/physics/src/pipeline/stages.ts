@@ -20,6 +20,7 @@ import { broadphaseSystem } from '../collision/broadphase.js';
 import { narrowphaseSystem } from '../collision/narrowphase.js';
 import { shapeCollisionSystem } from '../collision/shape-collision.js';
 import { shape3DCollisionSystem } from '../collision/shape3d-collision.js';
+import { shapes3DOf } from '../shapes3d/store.js';
 import { contactSolverSystem } from '../collision/solver.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
 import { trustFiniteOutput } from './finite.js';
@@ -55,14 +56,16 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
 // forces stage; broadphase and narrowphase write contacts; fuel and ballast write masses), or check
 // what they write (spawned particles, zeroed velocities of sleeping bodies, the contact solver's
 // bodies; the integrators and the stiff drag updates their positions and velocities, so after
-// `integrate` only the turning bodies are checked). Shape collisions and cloth are trusted only in a
-// world without shapes or cloth links, where they write nothing (pipeline/finite.ts).
+// `integrate` only the turning bodies are checked). Shape collisions (2D and 3D) and cloth are trusted
+// only in a world without such shapes or cloth links, where they write nothing (pipeline/finite.ts), so a
+// world with nothing to collide pays nothing for its collide stage.
 trustFiniteOutput([
   wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, contactSolverSystem, sleepSystem,
   burnFuelSystem, ballastFillSystem, ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
 ]);
 trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem], 'linear');
 trustFiniteOutput([shapeCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
+trustFiniteOutput([shape3DCollisionSystem], 'all', (world) => world.dimensions !== 3 || shapes3DOf(world)?.active !== true);
 trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
 
 /** A fresh copy of the default systems of every stage. */

@@ -9,7 +9,8 @@ export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
 /**
  * The signature every kernel has: `A` the typed arrays in the order its caller documents, `P` the
  * scalar parameters, `ids` the entity ids of the loop (null: dense ids lo + 1 .. hi, or a loop
- * that is not over entities), [lo, hi) the range this thread runs. Returns a number the caller
- * sums over the ranges.
+ * that is not over entities), [lo, hi) the range this thread runs, `part` the index of that range
+ * (the thread's index in the pool, 0 for the calling thread), for kernels that write one result a
+ * range. Returns a number the caller sums over the ranges.
  */
-export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number) => number;
+export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number) => number;

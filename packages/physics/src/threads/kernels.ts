@@ -14,6 +14,7 @@
 
 import type { Kernel, KernelArray } from './kernel-types.js';
 import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
+import { mortonKeys, treeForces, treeGather } from '../forces/barnes-hut-gather.js';
 
 export type { Kernel, KernelArray } from './kernel-types.js';
 
@@ -170,6 +171,49 @@ function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nul
 }
 
 /**
+ * Quadratic drag in still air (forces/drag.ts): F -= k |v| v unless k |v| / m >= limit (then the body
+ * is stiff: no force here; the caller stamps it for the exact update). A: k, inv, vx, vy, vz, fx, fy,
+ * fz. P: limit. Returns the count of stiff bodies.
+ */
+function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array, vy = A[3] as Float64Array, vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const limit = P[0]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+    const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
+    if (c * inv[e]! >= limit) { stiff++; continue; }
+    fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+  }
+  return stiff;
+}
+
+/**
+ * Angular damping with a scalar moment of inertia (forces/angular-damping.ts, 2D): tau -= k w unless
+ * k h / I >= the stiff rate. A: k, inv (Inertia.inv), wx, wy, wz, tx, ty, tz. P: h, stiff rate.
+ * Returns the count of stiff bodies.
+ */
+function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
+  const wx = A[2] as Float64Array, wy = A[3] as Float64Array, wz = A[4] as Float64Array;
+  const tx = A[5] as Float64Array, ty = A[6] as Float64Array, tz = A[7] as Float64Array;
+  const h = P[0]!, rate = P[1]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const d = k[e]!;
+    if (d * inv[e]! * h >= rate) { stiff++; continue; }
+    tx[e] = tx[e]! - d * wx[e]!; ty[e] = ty[e]! - d * wy[e]!; tz[e] = tz[e]! - d * wz[e]!;
+  }
+  return stiff;
+}
+
+/**
  * Finiteness probe of the step's stage checks (pipeline/finite.ts): the sum of a[e] * 0 over every
  * array of A and every entity of the range; 0 when all are finite, NaN as soon as one is not (the
  * order of the sum cannot change that). P unused.
@@ -187,7 +231,8 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 /** Kernel numbers: the index of each kernel in `KERNELS`. */
 export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
-  barnesHutWalk2: 8, barnesHutWalk3: 9,
+  barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeys: 11, treeForces: 12,
+  quadraticDragCalm: 13, angularDampingScalar: 14,
 });
 
 /**
@@ -210,4 +255,5 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
+  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar,
 ]);

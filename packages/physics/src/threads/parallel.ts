@@ -6,7 +6,7 @@
  */
 
 import type { PhysicsWorld } from '../world.js';
-import { isShared } from './pool.js';
+import { isShared, type ThreadPool } from './pool.js';
 import type { KernelArray } from './kernels.js';
 
 /**
@@ -26,9 +26,24 @@ export function runParallel(
   world: PhysicsWorld, system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>,
   n: number, ids: ArrayLike<number> | null,
 ): number | null {
-  const pool = world.threadPool;
-  if (pool === null || n < MIN_PARALLEL_PER_THREAD * pool.threads) return null;
+  return runOnPool(world.threadPool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
+}
+
+/**
+ * runParallel on a given pool (null: none) with its own threshold: the loop goes parallel when n is
+ * at least `minPerThread` times the pool's threads, every array is shared and the workers have
+ * started; returns null otherwise (the caller runs its own single-threaded loop).
+ * @throws Error naming `system` if a worker's range threw.
+ */
+export function runOnPool(
+  pool: ThreadPool | null, system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>,
+  n: number, ids: ArrayLike<number> | null, minPerThread: number,
+): number | null {
+  if (pool === null || pool.threads > MAX_POOL_PARTS || n < minPerThread * pool.threads) return null;
   for (let i = 0; i < arrays.length; i++) if (!isShared(arrays[i]!)) return null;
   if (!pool.usable()) return null;
   return pool.run(system, kernel, arrays, params, n, ids);
 }
+
+/** Most threads a per-range result array (such as a bounding box a range) is sized for. */
+export const MAX_POOL_PARTS = 64;

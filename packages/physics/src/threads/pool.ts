@@ -215,7 +215,7 @@ export class ThreadPool {
     const t = this.threads;
     let own: number;
     try {
-      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t));
+      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t), 0);
     } finally {
       this.await();
     }

@@ -5,7 +5,7 @@
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
  * - the worker waits (Atomics.wait) for `GEN` to change; then reads `CMD`;
  * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of
- *   [0, `COUNT`) (thread `index` of `THREADS`; the main thread is thread 0), stores its kernel's
+ *   [0, `COUNT`) (thread `index` of `THREADS`, passed to the kernel as `part`; the main thread is thread 0), stores its kernel's
  *   return value in `results[index]` and decrements `PENDING` (notifying at 0);
  * - SYNC: new shared arrays were posted as messages; the worker returns to its event loop to receive
  *   them, and reports done once it holds `EXPECT` arrays;
@@ -81,7 +81,7 @@ function workerMain(kernels, nodePort) {
         var ids = idsId < 0 ? null : arrays[idsId];
         var n = ctl[COUNT], t = ctl[THREADS];
         var lo = Math.floor((n * index) / t), hi = Math.floor((n * (index + 1)) / t);
-        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi);
+        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index);
       } catch (e) {
         fail(e);
       }
