@@ -90,7 +90,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
   --hash             print bitphysics' state fingerprint after the run (stateHash: every bit of every body; same
                      scene, count, seed and steps give the same hash on every machine)
   --threads <n>      also run bitphysics with threads: n (worker threads on shared arrays) beside the single-
-                     threaded world; its line adds threads and speedup (single median / threaded median)
+                     threaded world; its line adds threads and speedup (single median / threaded median), the
+                     serial fraction (Karp-Flatt) and Amdahl's projection to 8 and 16 cores
   --soak             soak test of bitphysics alone: --steps steps (default 100,000), the heap after a full GC and the
                      median step time printed every 10,000 steps (e.g. --scene fireworks --soak)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr

@@ -3,6 +3,7 @@ import { THREADED } from './engines/bitphysics.js';
 import type { BenchResult, EngineResult } from './runner.js';
 import type { BenchScene, ExtraValue } from './scenes/types.js';
 import type { StudyResult } from './studies/types.js';
+import { amdahlSpeedup, PROJECTED_CORES, serialFraction } from './amdahl.js';
 
 /** A peer's time ratio against our engine. */
 export interface Ratio {
@@ -14,14 +15,24 @@ export interface Ratio {
 
 /**
  * `threads` on our lines (1 for `bitphysics`, n for `bitphysics-threads`) and, on the threaded line,
- * `speedup`: the single-threaded median step time over the threaded one (> 1: the threads help).
+ * `speedup`: the single-threaded median step time over the threaded one (> 1: the threads help),
+ * `serialFraction`: the Karp-Flatt serial fraction of that speedup, and `amdahl8`, `amdahl16`: the
+ * speedups Amdahl's law projects from it to 8 and 16 cores (amdahl.ts).
  */
 function threadFields(result: BenchResult, e: EngineResult): Record<string, number> {
   const threads = result.scene.threads ?? 1;
   if (e.engine === OURS) return threads > 1 ? { threads: 1 } : {};
   if (e.engine !== THREADED) return {};
   const ours = result.engines.find((x) => x.engine === OURS);
-  return ours ? { threads, speedup: sig(ours.msPerStep.median / e.msPerStep.median, 4) } : { threads };
+  if (!ours) return { threads };
+  const speedup = ours.msPerStep.median / e.msPerStep.median;
+  const f = serialFraction(speedup, threads);
+  const fields: Record<string, number> = { threads, speedup: sig(speedup, 4) };
+  if (Number.isFinite(f)) {
+    fields.serialFraction = sig(f, 3);
+    for (const cores of PROJECTED_CORES) fields[`amdahl${cores}`] = sig(amdahlSpeedup(f, cores), 3);
+  }
+  return fields;
 }
 
 /** Ours/peer ratios of median step times, one per peer, in run order. Empty without ours or peers. */
@@ -44,7 +55,8 @@ function sig(value: number, digits = 6): number {
  * setupMs`, `params` (the scene parameters, e.g. `{ "theta": 0.5 }`, only for scenes that declare
  * any), the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
  * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
- * `threads` on our lines and `speedup` (single-threaded median / threaded median) on the
+ * `threads` on our lines and `speedup` (single-threaded median / threaded median), `serialFraction`
+ * (Karp-Flatt) and `amdahl8`, `amdahl16` (projected speedups, amdahl.ts) on the
  * `bitphysics-threads` line; with `times`, every
  * step's milliseconds as `timesMs`.
  */
@@ -147,8 +159,15 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
     lines.push(table(r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3)])));
   }
   if (threaded && single) {
-    lines.push('', `speedup with threads: ${result.scene.threads ?? 1}: ${(single.msPerStep.median / threaded.msPerStep.median).toFixed(3)} ` +
+    const threads = result.scene.threads ?? 1;
+    const speedup = single.msPerStep.median / threaded.msPerStep.median;
+    lines.push('', `speedup with threads: ${threads}: ${speedup.toFixed(3)} ` +
       `(single-threaded median / threaded median; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus)`);
+    const f = serialFraction(speedup, threads);
+    if (Number.isFinite(f)) {
+      lines.push(`serial fraction ${f.toFixed(3)} (Karp-Flatt: (1/speedup - 1/${threads}) / (1 - 1/${threads}), overheads included); ` +
+        `Amdahl projection 1 / (f + (1 - f) / N): ${PROJECTED_CORES.map((n) => `${amdahlSpeedup(f, n).toFixed(2)}x on ${n} cores`).join(', ')}`);
+    }
   }
   lines.push('', `heap used: ${result.heapUsedMB.toFixed(1)} MB (V8 heap of the whole process after timing)`);
   const extras = otherExtras(result.engines, new Set(columns.map((c) => c.key)));
