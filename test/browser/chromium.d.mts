@@ -1,4 +1,4 @@
-import type { Browser } from 'playwright-core';
+import type { Browser, BrowserServer } from 'playwright-core';
 
 /** Repository root (absolute path). */
 export declare const repoRoot: string;
@@ -8,6 +8,10 @@ export declare const CHROMIUM_ARGS: readonly string[];
 export declare function chromiumPath(): Promise<string>;
 /** Launches headless Chromium with CHROMIUM_ARGS. */
 export declare function launchChromium(): Promise<Browser>;
+/** Launches headless Chromium with CHROMIUM_ARGS as a server that test files connect to. */
+export declare function launchChromiumServer(): Promise<BrowserServer>;
+/** Connects to a browser server started by launchChromiumServer. */
+export declare function connectChromium(wsEndpoint: string): Promise<Browser>;
 /** A TCP port on 127.0.0.1 that was free a moment ago. */
 export declare function freePort(): Promise<number>;
 /** Takes the cross-process site lock (dist/site is shared). @returns its release function. @throws Error after timeoutMs. */

@@ -45,6 +45,22 @@ export async function launchChromium() {
   return chromium.launch({ executablePath: await chromiumPath(), headless: true, args: [...CHROMIUM_ARGS] });
 }
 
+/**
+ * Launches headless Chromium with `CHROMIUM_ARGS` as a server that test files connect to
+ * (`connectChromium`): the browser test run shares one browser (test/browser/global-setup.ts).
+ * @returns a playwright-core BrowserServer (`wsEndpoint()`, `close()`).
+ */
+export async function launchChromiumServer() {
+  const { chromium } = await import('playwright-core');
+  return chromium.launchServer({ executablePath: await chromiumPath(), headless: true, args: [...CHROMIUM_ARGS] });
+}
+
+/** Connects to a browser started by `launchChromiumServer` at `wsEndpoint`. @returns a playwright-core Browser. */
+export async function connectChromium(wsEndpoint) {
+  const { chromium } = await import('playwright-core');
+  return chromium.connect(wsEndpoint);
+}
+
 /** A TCP port that was free a moment ago on 127.0.0.1 (the OS picks it). */
 export function freePort() {
   return new Promise((resolvePort, reject) => {

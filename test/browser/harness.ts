@@ -1,6 +1,7 @@
 /**
- * Browser test harness: one built site served by scripts/serve.mjs on a free port and one headless
- * Chromium (SwiftShader WebGL) per test file, and helpers to open pages, collect their errors, wait
+ * Browser test harness: the run's one built site (scripts/serve.mjs on a free port) and one headless
+ * Chromium (SwiftShader WebGL), both started by ./global-setup and shared by every test file (each
+ * page in its own browser context), and helpers to open pages, collect their errors, wait
  * for the page contract (`document.body.dataset.ready === 'true'`, `window.game`), read stats, check
  * the canvas is not blank, and send keys, clicks and drags.
  *
@@ -8,8 +9,8 @@
  * console lines, so a page that never becomes ready fails in seconds with its reason, not at
  * vitest's hook timeout.
  *
- * Browser test files take a cross-process lock for the server, so they run one after another even
- * when vitest runs files in parallel, and reuse the last site build when no source changed since.
+ * Browser test files run side by side (vitest's workers); the site is built once a run, or reused
+ * from the last run when no source changed since.
  *
  * @example
  * let h: Harness;
@@ -24,7 +25,8 @@
  */
 import type { Browser, BrowserContext, Page } from 'playwright-core';
 import type { GameStats } from '../../games/shared/contract';
-import { launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
+import { inject } from 'vitest';
+import { connectChromium, launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
 import { decodePng, distinctColors } from './png';
 
 export { readRegistry, type RegistryEntry };
@@ -56,10 +58,10 @@ export interface OpenOptions {
 }
 
 /**
- * Timeout for the `beforeAll` hook that calls `Harness.start`, ms: browser test files run one at a
- * time (the site lock), so a file may wait for another to finish (a few minutes in a full run)
- * before it builds or reuses the site. Pass it as beforeAll's second argument; the lock itself gives
- * up 10 s earlier with a message naming the holder.
+ * Timeout for the `beforeAll` hook that calls `Harness.start`, ms. Without the shared setup (a run
+ * whose config lacks ./global-setup) the file takes the site lock itself and may wait for another
+ * holder (the thumbnail script) before it builds or reuses the site. Pass it as beforeAll's second
+ * argument; the lock itself gives up 10 s earlier with a message naming the holder.
  */
 export const START_TIMEOUT_MS = 600_000;
 
@@ -107,8 +109,15 @@ export class Harness {
     this.stopServer = stopServer;
   }
 
-  /** Builds and serves the site on a free port and launches Chromium. Call in beforeAll. */
+  /**
+   * Connects to the run's site and browser (started once by ./global-setup for every browser test
+   * file), or, when the run has no such setup, builds and serves the site and launches Chromium for
+   * this file alone. Call in beforeAll.
+   */
   static async start(): Promise<Harness> {
+    const url = inject('bitphysicsSiteUrl');
+    const ws = inject('bitphysicsBrowserWs');
+    if (url && ws) return new Harness(url, await connectChromium(ws), async () => undefined);
     const site = await startSite({ lockTimeoutMs: START_TIMEOUT_MS - 10_000 });
     try {
       const browser = await launchChromium();
@@ -147,7 +156,7 @@ export class Harness {
     return this.open(`${folder}/`, options);
   }
 
-  /** Closes every page, the browser and the server (and releases the site lock). */
+  /** Closes every page and the browser (a shared browser is only disconnected), and a server of this file's own. */
   async close(): Promise<void> {
     for (const p of this.pages) await p.close();
     this.pages.clear();

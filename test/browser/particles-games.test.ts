@@ -31,7 +31,7 @@ interface BlackHoleGameHandle {
   paused: boolean;
 }
 
-// One server and browser for the file (the site lock is shared with every browser test file).
+// The run's shared server and browser (./global-setup).
 let h: Harness;
 beforeAll(async () => {
   h = await Harness.start();

@@ -15,14 +15,14 @@ import { maxPairOverlap, modelEnergy } from './helpers';
  */
 describe('balls-in-box', () => {
   for (const restitution of [0.5, 1]) {
-    test(`total energy never rises, restitution ${restitution} (2,000 balls, 1,500 steps)`, () => {
+    test(`total energy never rises, restitution ${restitution} (2,000 balls, 1,000 steps)`, () => {
       const count = 2000;
       const world = createPhysicsWorld(ballsInBox.worldOptions({ count }));
       ballsInBox.build(world, { count, restitution });
       let e0 = modelEnergy(world);
       const start = e0;
       let worst = -Infinity;
-      for (let i = 0; i < 1500; i++) {
+      for (let i = 0; i < 1000; i++) {
         step(world);
         const e = modelEnergy(world);
         worst = Math.max(worst, (e - e0) / Math.abs(start));
@@ -34,7 +34,7 @@ describe('balls-in-box', () => {
     });
   }
 
-  test('no ball leaves the box in 10,000 steps of 2,000 balls, and the settled pile overlaps < 5% of a radius', () => {
+  test('no ball leaves the box in 3,000 steps of 2,000 balls kicked five times, and the settled pile overlaps < 5% of a radius', () => {
     const count = 2000;
     const world = createPhysicsWorld(ballsInBox.worldOptions({ count }));
     const { balls, layout } = ballsInBox.build(world, { count });
@@ -44,10 +44,11 @@ describe('balls-in-box', () => {
     const tol = 0.05 * r;
     let worst = -Infinity;
     const shake = new Rng(5);
-    for (let i = 0; i < 10_000; i++) {
-      // Every 1,000 steps, kick every ball upward so the box keeps being hit hard (a settled pile
-      // would test nothing after the first few hundred steps).
-      if (i % 1000 === 500) {
+    for (let i = 0; i < 3000; i++) {
+      // Every 500 steps, kick every ball upward so the box keeps being hit hard (a settled pile
+      // would test nothing after the first few hundred steps); the last kick is 750 steps before
+      // the end, so the pile has settled again for the overlap check.
+      if (i % 500 === 250 && i < 2500) {
         const V = world.components.Velocity;
         for (const e of balls) { V.x[e] = shake.range(-15, 15); V.y[e] = shake.range(0, 25); }
       }

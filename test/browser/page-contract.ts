@@ -1,0 +1,135 @@
+/**
+ * Opens every page of the gallery registry (games/<folder>/game.json) in headless Chromium and
+ * checks the page contract: no console errors, page errors or failed requests; the ready flag;
+ * window.game.stats(); a canvas that is not blank; no error box. The gallery itself must list every entry.
+ *
+ * Every page runs twice: as a phone (390 x 844, touch) with the language 'en-US@posix' (what Chromium
+ * reports under LANG=C.UTF-8; Intl rejects the tag, and uPlot's module used to throw on it), and on
+ * a desktop (1280 x 800) with 'de-DE' (comma decimals). Both times the layout is checked
+ * (./layout-check): the scene's box (the renderer's view rectangle) is inside the canvas and the
+ * window (the world is framed, not cropped), no text or panel covers it, nothing is cut off; a
+ * screenshot of each goes to dist/screenshots/<folder>-<phone|desktop>.png.
+ * The pages are split over three test files (pages.test.ts, pages-2.test.ts, pages-3.test.ts, each
+ * calling `describePages` with its shard) so vitest's workers check them side by side; the gallery
+ * and the phone toolbar are checked by the first.
+ */
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, readRegistry, START_TIMEOUT_MS } from './harness';
+import { repoRoot } from './chromium.mjs';
+import { checkLayout } from './layout-check';
+
+const registry = await readRegistry();
+
+/** The two runs of every page: a phone under 'en-US@posix', a desktop under 'de-DE'. */
+const RUNS = [
+  { name: 'phone', locale: 'en-US@posix', language: 'en-US', viewport: { width: 390, height: 844 }, touch: true },
+  { name: 'desktop', locale: 'de-DE', language: 'de-DE', viewport: { width: 1280, height: 800 }, touch: false },
+] as const;
+
+const shots = join(repoRoot, 'dist', 'screenshots');
+mkdirSync(shots, { recursive: true });
+
+/**
+ * Defines the page checks of shard `shard` (0-based) of `shards`: page runs number k with
+ * k % shards === shard, and, in shard 0, the gallery and the phone toolbar.
+ */
+export function describePages(shard: number, shards: number): void {
+  describe(`every registered page (shard ${shard + 1} of ${shards})`, () => {
+    let h: Harness;
+    beforeAll(async () => {
+      h = await Harness.start();
+    }, START_TIMEOUT_MS);
+    afterAll(async () => {
+      await h?.close();
+    });
+
+    if (shard === 0) {
+      it('the registry has at least one game', () => {
+        expect(registry.length).toBeGreaterThan(0);
+      });
+
+      it('the gallery loads without errors and links every registry entry', async () => {
+        const g = await h.open('');
+        // The server's registry (the games its build holds; folders other work adds while the tests run
+        // may be newer than this file's list) must hold every game listed when this file started.
+        const served = (await (await fetch(`${h.url}registry.json`)).json()) as typeof registry;
+        expect(served.map((e) => e.folder)).toEqual(expect.arrayContaining(registry.map((e) => e.folder)));
+        const links = await g.page.$$eval('#gallery a', (as) => as.map((a) => a.getAttribute('href')));
+        expect(links.sort()).toEqual(served.map((e) => `./${e.folder}/`).sort());
+        const titles = await g.page.$$eval('#gallery a h3', (hs) => hs.map((x) => x.textContent));
+        expect(titles.sort()).toEqual(served.map((e) => e.title).sort());
+        // Every thumbnail must load (a missing thumbnail.png would show up as an HTTP 404 error).
+        const undecodable = await g.page.evaluate(async () => {
+          const bad: string[] = [];
+          for (const img of Array.from(document.images)) {
+            img.loading = 'eager';
+            await img.decode().catch(() => bad.push(img.src));
+          }
+          return bad;
+        });
+        expect(undecodable, 'thumbnails that are not pictures').toEqual([]);
+        expect(g.errors).toEqual([]);
+        await g.close();
+      });
+
+      it('on a phone the toolbar opens the info and settings drawers, the help shows touch gestures, and its buttons pause and step', async () => {
+        const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true });
+        const info = g.page.locator('.bp-info');
+        const side = g.page.locator('.bp-side');
+        expect(await info.isVisible()).toBe(false);
+        expect(await side.isVisible()).toBe(false);
+        await g.page.getByRole('button', { name: 'information and controls' }).tap();
+        expect(await info.isVisible()).toBe(true);
+        const help = await g.page.locator('.bp-legend').innerText();
+        expect(help).toContain('Tap');
+        expect(help).not.toContain('trails on / off'); // a keyboard-only control (T) is left out on touch
+        await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+        expect(await side.isVisible()).toBe(true);
+        expect(await info.isVisible()).toBe(false);
+        expect(await g.page.locator('.bp-side .lil-gui.lil-root').first().isVisible()).toBe(true);
+        await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
+        expect(await side.isVisible()).toBe(false);
+        await g.page.getByRole('button', { name: 'pause / resume (P)' }).tap();
+        expect(await g.page.evaluate(() => window.game!.paused)).toBe(true);
+        const steps = (await g.stats()).steps;
+        await g.page.getByRole('button', { name: 'single step (N)' }).tap();
+        expect((await g.stats()).steps).toBe(steps + 1);
+        expect(g.errors).toEqual([]);
+        await g.close();
+      });
+    }
+
+    let k = -1;
+    for (const entry of registry) for (const run of RUNS) {
+      if (++k % shards !== shard) continue;
+      it(`${entry.folder} (${run.name}, ${run.locale}): ready, window.game, canvas drawn, scene clear and whole, no errors`, async () => {
+        const g = await h.openGame(entry.folder, { locale: run.locale, viewport: run.viewport, touch: run.touch });
+        expect(await g.page.evaluate(() => navigator.language)).toBe(run.language);
+        const stats = await g.stats();
+        expect(Number.isInteger(stats.entities) && stats.entities > 0).toBe(true);
+        expect(Number.isInteger(stats.steps) && stats.steps >= 0).toBe(true);
+        expect(typeof stats.fps).toBe('number');
+        expect(await g.page.evaluate(() => typeof window.game?.paused === 'boolean' && typeof window.game?.world === 'object')).toBe(true);
+        // A blank canvas has one colour (two or three with a frame); a drawn scene has more. Sparse
+        // scenes of flat shapes (lab-rigid-bodies' tilting board: two boxes, a board, the frame) draw
+        // about a dozen, so the bar is 8.
+        expect(await g.canvasColors()).toBeGreaterThan(8);
+        await g.frames(5);
+        expect(await g.page.locator('[data-page-error], [role="alert"]').allInnerTexts()).toEqual([]);
+        expect(g.errors).toEqual([]);
+        const layout = await checkLayout(g.page);
+        writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
+        expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
+        expect(layout.clipped).toEqual([]);
+        // The world is framed to fit: it spans the canvas one way, less the camera's padding (a wide
+        // world on a tall phone is letterboxed above and below), and the canvas is most of the window.
+        expect(layout.sceneFill).toBeGreaterThan(0.8);
+        const canvas = await g.canvasBox();
+        expect(canvas.width * canvas.height).toBeGreaterThan(0.4 * run.viewport.width * run.viewport.height);
+        await g.close();
+      });
+    }
+  });
+}

@@ -1,0 +1,4 @@
+/** Shard 2 of 3 of the gallery page checks (./page-contract). */
+import { describePages } from './page-contract';
+
+describePages(1, 3);
