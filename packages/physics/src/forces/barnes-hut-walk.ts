@@ -17,7 +17,7 @@
  *
  * Arrays `A` (all indexed as in barnes-hut.ts's GravityTree):
  *   0 x, 1 y, 2 z, 3 m (bodies in tree order; z unused in 2D), 4 node (moments, stride 12),
- *   5 start, 6 end, 7 skip (Int32), 8 ax, 9 ay, 10 az (output field, m/s^2, tree order),
+ *   5 start, 6 end, 7 skip (Int32), 8 ax, 9 ay, 10 az (output field, m/s^2, tree order; az = 0 in 2D),
  *   11 cut (Int32: part p holds slots cut[p] .. cut[p + 1] - 1), 12 info (Float64, stride 4 a part:
  *   cell pairs, body pairs and visits counted by the part that holds the first cell's first slot, so
  *   they sum to the one-part walk's counts; then the part's own work, duplicates included, in the
@@ -40,7 +40,7 @@ export const INFO_STRIDE = 4;
 export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const X = A[0] as Float64Array, Y = A[1] as Float64Array, Mb = A[3] as Float64Array, F = A[4] as Float64Array;
   const start = A[5] as Int32Array, end = A[6] as Int32Array, skip = A[7] as Int32Array;
-  const OX = A[8] as Float64Array, OY = A[9] as Float64Array;
+  const OX = A[8] as Float64Array, OY = A[9] as Float64Array, OZ = A[10] as Float64Array;
   const cut = A[11] as Int32Array, info = A[12] as Float64Array;
   const G = P[0]!, eps2 = P[1]!, f = P[2]!, nodeCount = P[3]!, offX = P[5]!, offY = P[6]!;
   const NF = 12, NL = 14, third = 1 / 3;
@@ -199,6 +199,7 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
           OX[s] = G * (L[offX + s]! + a0x + j0 * dx + j1 * dy);
           OY[s] = G * (L[offY + s]! + a0y + j1 * dx + j2 * dy);
+          OZ[s] = 0;
         }
         work += (end[k]! - start[k]!) >> 1;
         k = sk;

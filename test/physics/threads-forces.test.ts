@@ -1,0 +1,167 @@
+import { afterEach, expect, test } from 'vitest';
+import {
+  addBody, addShape, buildTree, createPhysicsWorld, disposeWorld, enableMutualGravity, galaxy, gravityFieldError,
+  MIN_PARALLEL_PER_THREAD, setAngularDamping, setDrag, setGravitation, stateHash, stepMany, treeFieldsSorted, worldTree,
+  type PhysicsWorld, type PhysicsWorldOptions,
+} from '@bitphysics/physics';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut.js';
+import { KERNEL, KERNELS } from '../../packages/physics/src/threads/kernels.js';
+import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
+
+// Force laws on the world's threads: Barnes-Hut's walk (each thread replays the walk for its own
+// bodies, in the one-thread order), drag and angular damping (one body's arithmetic a thread). The
+// promise is equality to the last bit with the one-thread run (stateHash hashes every bit), so the
+// tolerance is zero; each test also checks the physics against something independent.
+
+const worlds: PhysicsWorld[] = [];
+afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+
+function make(options: PhysicsWorldOptions): PhysicsWorld {
+  const w = createPhysicsWorld(options);
+  worlds.push(w);
+  return w;
+}
+
+test('Barnes-Hut evaluated in parts: every field identical to the one-part walk wherever the parts are cut (2D and 3D)', () => {
+  for (const dims of [2, 3] as const) {
+    const n = 900;
+    const t = worldTree(make({ dimensions: dims }));
+    const rng = new Rng(11 + dims);
+    const x = new Float64Array(n), y = new Float64Array(n), z = new Float64Array(n), m = new Float64Array(n);
+    // A third of the bodies in a tight clump: deep cells and straddling pairs at every cut.
+    for (let i = 0; i < n; i++) {
+      const r = i % 3 === 0 ? 0.05 : 50;
+      x[i] = rng.range(-r, r); y[i] = rng.range(-r, r); z[i] = dims === 3 ? rng.range(-r, r) : 0; m[i] = rng.range(0.5, 1.5);
+    }
+    buildTree(t, n, x, y, z, m);
+    treeFieldsSorted(t, 1.3, 0.01, 0.6);
+    const ref = [t.ax.slice(0, n), t.ay.slice(0, n), t.az.slice(0, n)];
+    const counts = { ...t.stats };
+    const leafStarts: number[] = [];
+    for (let k = 0; k < t.nodeCount; k++) if (t.skip[k] === k + 1) leafStarts.push(t.start[k]!);
+    for (const parts of [2, 3, 7]) {
+      // Uneven cuts at leaf starts, the parts run one after the other on this thread.
+      t.cut[0] = 0;
+      for (let p = 1; p < parts; p++) t.cut[p] = leafStarts[Math.floor((leafStarts.length * p * p) / (parts * parts))]!;
+      t.cut[parts] = n;
+      const size = t.scratch[0]!.length;
+      const arrays = [t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info];
+      for (let p = 0; p < parts; p++) arrays.push(new Float64Array(size).fill(1e300));
+      t.ax.fill(NaN); t.ay.fill(NaN); t.az.fill(NaN);
+      KERNELS[dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2]!(arrays, t.walkParams, null, 0, parts, 0);
+      for (let i = 0; i < n; i++) {
+        if (!Object.is(t.ax[i], ref[0]![i]) || !Object.is(t.ay[i], ref[1]![i]) || !Object.is(t.az[i], ref[2]![i])) {
+          throw new Error(`${dims}D, ${parts} parts: slot ${i} differs`);
+        }
+      }
+      // Each interaction is counted by exactly one part: the counts add up to the one-part walk's.
+      let cellPairs = 0, bodyPairs = 0;
+      for (let p = 0; p < parts; p++) { cellPairs += t.info[4 * p]!; bodyPairs += t.info[4 * p + 1]!; }
+      expect([cellPairs, bodyPairs]).toEqual([counts.cellPairs, counts.bodyPairs]);
+    }
+  }
+});
+
+test('galaxy on 1, 2 and 4 threads: identical states; the threaded field matches the direct sum', () => {
+  const count = 4 * BARNES_HUT_MIN_PER_THREAD + 100;
+  const hashes = [1, 2, 4].map((threads) => {
+    const options = { count, seed: 5, openingAngle: 0.7 };
+    const world = make({ ...galaxy.worldOptions(options), threads });
+    galaxy.build(world, options);
+    stepMany(world, 2);
+    if (threads > 1) {
+      expect(world.threadPool!.runs, `threads ${threads} used its workers`).toBeGreaterThan(0);
+      expect(worldTree(world).parts, `threads ${threads}: the walk ran in parts`).toBe(threads);
+      // Independent check: the threaded tree field against the direct sum on 200 stars (median
+      // relative error; the one-thread tree gives ~0.1% at theta 0.7, the bound leaves margin).
+      expect(gravityFieldError(world, 200).median).toBeLessThan(0.01);
+    }
+    return stateHash(world);
+  });
+  expect(hashes[1]).toBe(hashes[0]);
+  expect(hashes[2]).toBe(hashes[0]);
+}, 60_000);
+
+test('3D mutual gravity by Barnes-Hut on 2 threads: identical state; total momentum kept to rounding', () => {
+  const n = 2 * BARNES_HUT_MIN_PER_THREAD + 50;
+  const run = (threads: number): [string, PhysicsWorld] => {
+    const world = make({ dimensions: 3, capacity: n, gravity: [0, 0, 0], threads });
+    setGravitation(world, { constant: 1, softening: 0.1, method: 'barnes-hut', openingAngle: 1 });
+    const rng = new Rng(9);
+    for (let i = 0; i < n; i++) {
+      const e = addBody(world, { position: [rng.range(-20, 20), rng.range(-20, 20), rng.range(-20, 20)], mass: rng.range(0.5, 1.5) });
+      enableMutualGravity(world, e);
+    }
+    stepMany(world, 1);
+    return [stateHash(world), world];
+  };
+  const [one] = run(1);
+  const [two, world] = run(2);
+  expect(worldTree(world).parts).toBe(2);
+  expect(two).toBe(one);
+  // The mutual expansions and direct pairs are exactly opposite both ways: from rest, the total
+  // momentum stays zero up to rounding (|P| / sum m|v| < 1e-12).
+  const c = world.components;
+  let px = 0, py = 0, pz = 0, scale = 0;
+  for (let e = 1; e <= n; e++) {
+    const m = c.Mass.value[e]!;
+    px += m * c.Velocity.x[e]!; py += m * c.Velocity.y[e]!; pz += m * c.Velocity.z[e]!;
+    scale += m * Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
+  }
+  expect(Math.hypot(px, py, pz) / scale).toBeLessThan(1e-12);
+}, 60_000);
+
+test('linear and quadratic drag and angular damping on 2 threads: identical states; linear drag decays as (1 - k h / m)^n', () => {
+  const n = 2 * MIN_PARALLEL_PER_THREAD + 33;
+  const h = 1 / 60, steps = 2;
+  const run = (threads: number): [string, PhysicsWorld] => {
+    const world = make({ dimensions: 2, capacity: n, gravity: [0, 0], threads });
+    const rng = new Rng(21);
+    for (let i = 0; i < n; i++) {
+      const e = addBody(world, { position: [rng.range(-50, 50), rng.range(-50, 50)], velocity: [rng.range(-9, 9), rng.range(-9, 9)], mass: rng.range(0.5, 2) });
+      // Every 1000th body's drag is stiff (k h / m far above the explicit limit): the exact decay path.
+      if (i % 3 === 0) setDrag(world, e, { linear: i % 1000 === 0 ? 1e4 : rng.range(0, 2) });
+      else if (i % 3 === 1) setDrag(world, e, { quadratic: i % 1000 === 1 ? 1e4 : rng.range(0, 0.5) });
+      else {
+        setDrag(world, e, { linear: rng.range(0, 1), quadratic: rng.range(0, 0.2) });
+        world.components.AngularVelocity.z[e] = rng.range(-5, 5);
+        setAngularDamping(world, e, rng.range(0, 0.3));
+      }
+    }
+    stepMany(world, steps);
+    return [stateHash(world), world];
+  };
+  const [one] = run(1);
+  const [two, world] = run(2);
+  expect(world.threadPool!.runs).toBeGreaterThan(0);
+  expect(two).toBe(one);
+  // Body 4 (i = 3) has linear drag only, no gravity: semi-implicit Euler multiplies its velocity by
+  // (1 - k h / m) each step; rounding over 2 steps stays below 1e-12 relative.
+  const rng = new Rng(21);
+  let v0 = 0;
+  for (let i = 0; i <= 3; i++) {
+    rng.range(-50, 50); rng.range(-50, 50);
+    const vx = rng.range(-9, 9); rng.range(-9, 9); rng.range(0.5, 2);
+    if (i === 3) v0 = vx;
+    if (i % 3 === 0) { if (i % 1000 !== 0) rng.range(0, 2); } else if (i % 3 === 1) { if (i % 1000 !== 1) rng.range(0, 0.5); } else { rng.range(0, 1); rng.range(0, 0.2); rng.range(-5, 5); rng.range(0, 0.3); }
+  }
+  const e = 4, c = world.components;
+  const factor = 1 - (c.LinearDrag.k[e]! * h) / c.Mass.value[e]!;
+  expect(c.Velocity.x[e]! / (v0 * factor ** steps) - 1).toBeCloseTo(0, 12);
+}, 60_000);
+
+test('a world with nothing to collide does not check its bodies again after the collide stage', () => {
+  for (const dimensions of [2, 3] as const) {
+    const world = make({ dimensions });
+    addBody(world, { position: dimensions === 2 ? [0, 1] : [0, 1, 0] });
+    stepMany(world, 1);
+    expect(stageNeedsCheck(world, 'collide', world.stages.collide), `${dimensions}D, no shapes`).toBe(0);
+  }
+  // A shape makes the 2D shape collision write body state: the stage is checked again.
+  const world = make({ dimensions: 2 });
+  const e = addBody(world, { position: [0, 1] });
+  addShape(world, e, { type: 'circle', radius: 0.5 });
+  stepMany(world, 1);
+  expect(stageNeedsCheck(world, 'collide', world.stages.collide)).toBe(2);
+});
