@@ -81,7 +81,20 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
           radius[i] = c.Ball.radius[e]!;
           if (radius[i]! > 0) round = true;
         }
-        return round ? { dimensions: dims, count: ids.length, positions, radius, velocities } : { dimensions: dims, count: ids.length, positions, velocities };
+        // 3D: orientations too (identity for a body without one), for scenes of boxes.
+        let orientations: Float64Array | undefined;
+        if (dims === 3) {
+          orientations = new Float64Array(4 * ids.length);
+          const Q = c.Orientation;
+          for (let i = 0; i < ids.length; i++) {
+            const e = ids[i]!;
+            const has = Q.w[e] !== undefined && Q.x[e]! ** 2 + Q.y[e]! ** 2 + Q.z[e]! ** 2 + Q.w[e]! ** 2 > 0;
+            orientations[4 * i] = has ? Q.x[e]! : 0; orientations[4 * i + 1] = has ? Q.y[e]! : 0;
+            orientations[4 * i + 2] = has ? Q.z[e]! : 0; orientations[4 * i + 3] = has ? Q.w[e]! : 1;
+          }
+        }
+        const base = round ? { dimensions: dims, count: ids.length, positions, radius, velocities } : { dimensions: dims, count: ids.length, positions, velocities };
+        return orientations ? { ...base, orientations } : base;
       },
       dispose(): void {
         // The world's typed arrays go with the instance; a threaded world's workers are stopped here.

@@ -59,6 +59,8 @@ export interface BodySnapshot {
   readonly radius?: number | Float64Array;
   /** Velocities, m/s, laid out like `positions`; absent when the engine does not report them. */
   readonly velocities?: Float64Array;
+  /** 3D only: orientations as unit quaternions (x, y, z, w), four numbers a body; absent when the engine does not report them. */
+  readonly orientations?: Float64Array;
 }
 
 /** One engine with one scene built in it, ready to step. */

@@ -8,6 +8,8 @@ import { fireworksBench } from './fireworks.js';
 import { pyramidBench } from './pyramid.js';
 import { jointGridBench } from './joint-grid.js';
 import { clothBench } from './cloth.js';
+import { boxPile3DBench } from './box-pile-3d.js';
+import { pyramid3DBench } from './pyramid-3d.js';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
@@ -19,6 +21,8 @@ const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
   [pyramidBench.name]: pyramidBench,
   [jointGridBench.name]: jointGridBench,
   [clothBench.name]: clothBench,
+  [boxPile3DBench.name]: boxPile3DBench,
+  [pyramid3DBench.name]: pyramid3DBench,
 });
 
 /** A scene as the bench sees it: the physics package's definition plus the bench adapter. */

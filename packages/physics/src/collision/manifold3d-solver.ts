@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { BodyType } from './state.js';
-import { contact3DStateOf, pushEvent3D } from './manifolds3d-state.js';
+import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushEvent3D, pushTouch } from './manifolds3d-state.js';
 import { currentHandle } from '../handles.js';
 
 /**
@@ -21,6 +21,9 @@ import { currentHandle } from '../handles.js';
  * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
  *   the world's restitution threshold and carried an impulse leaves with v_n >= -e v_n0.
  */
+
+/** Numbers a point keeps in `jacobians`: for n, t1, t2 in turn: r_A x u, r_B x u, I_A^-1 (r_A x u), I_B^-1 (r_B x u). */
+const JAC = 36;
 
 /** Stiffness as a fraction of the substep rate (as the 2D shape contacts: manifold-solver.ts). */
 const HERTZ_FRACTION = 0.125;
@@ -66,11 +69,6 @@ function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number)
   out[0] = omega / a1; out[1] = a2 * a3; out[2] = a3;
 }
 
-/** u . I^-1 u for the tensor at t[o..o+5] (xx, yy, zz, xy, xz, yz). */
-function quad(t: Float64Array, o: number, x: number, y: number, z: number): number {
-  return t[o]! * x * x + t[o + 1]! * y * y + t[o + 2]! * z * z + 2 * (t[o + 3]! * x * y + t[o + 4]! * x * z + t[o + 5]! * y * z);
-}
-
 /** World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds. */
 export function prepareManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world, true);
@@ -84,6 +82,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
   void count;
   if (n === 0) return;
+  if (st.jacobians.length < JAC * 4 * n) st.jacobians = new Float64Array(JAC * 4 * Math.max(n, 2 * st.jacobians.length / (4 * JAC)));
+  const J = st.jacobians;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
@@ -96,19 +96,27 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     if (ka > 0) { const e = buf.bodyA[i]!; shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz; }
     if (kb > 0) { const e = buf.bodyB[i]!; shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz; }
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
-      const q = 4 * i + k;
+      const q = 4 * i + k, o = JAC * q;
       buf.sep[q] = buf.sep[q]! + shift;
       const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
-      const eff = (ux: number, uy: number, uz: number): number => {
-        const k0 = mA + mB + quad(T, ta, ray * uz - raz * uy, raz * ux - rax * uz, rax * uy - ray * ux) + quad(T, tb, rby * uz - rbz * uy, rbz * ux - rbx * uz, rbx * uy - rby * ux);
-        return k0 > 0 ? 1 / k0 : 0;
-      };
-      buf.mn[q] = eff(nx, ny, nz); buf.mt1[q] = eff(t1x, t1y, t1z); buf.mt2[q] = eff(t2x, t2y, t2z);
-      // Normal relative velocity at the start (for restitution).
-      const dvx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
-      const dvy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
-      const dvz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
-      buf.vn0[q] = dvx * nx + dvy * ny + dvz * nz;
+      // Per direction u (n, t1, t2): r_A x u, r_B x u, and I_A^-1 (r_A x u), I_B^-1 (r_B x u), then the effective mass.
+      for (let d = 0; d < 3; d++) {
+        const ux = d === 0 ? nx : d === 1 ? t1x : t2x, uy = d === 0 ? ny : d === 1 ? t1y : t2y, uz = d === 0 ? nz : d === 1 ? t1z : t2z;
+        const cax = ray * uz - raz * uy, cay = raz * ux - rax * uz, caz = rax * uy - ray * ux;
+        const cbx = rby * uz - rbz * uy, cby = rbz * ux - rbx * uz, cbz = rbx * uy - rby * ux;
+        const iax = T[ta]! * cax + T[ta + 3]! * cay + T[ta + 4]! * caz, iay = T[ta + 3]! * cax + T[ta + 1]! * cay + T[ta + 5]! * caz, iaz = T[ta + 4]! * cax + T[ta + 5]! * cay + T[ta + 2]! * caz;
+        const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
+        const b = o + 12 * d;
+        J[b] = cax; J[b + 1] = cay; J[b + 2] = caz; J[b + 3] = cbx; J[b + 4] = cby; J[b + 5] = cbz;
+        J[b + 6] = iax; J[b + 7] = iay; J[b + 8] = iaz; J[b + 9] = ibx; J[b + 10] = iby; J[b + 11] = ibz;
+        const k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
+        const eff = k0 > 0 ? 1 / k0 : 0;
+        if (d === 0) buf.mn[q] = eff; else if (d === 1) buf.mt1[q] = eff; else buf.mt2[q] = eff;
+      }
+      // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
+      buf.vn0[q] = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
+        + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
+        - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
     }
   }
 }
@@ -147,42 +155,49 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
   }
 }
 
-/** Applies impulse P (world vector) at anchors rA, rB: -P to A, +P to B. */
-function apply(sb: Float64Array, T: Float64Array, ka: number, kb: number, rax: number, ray: number, raz: number, rbx: number, rby: number, rbz: number, px: number, py: number, pz: number): void {
-  const a = 12 * ka, b = 12 * kb;
+/**
+ * Applies impulse lambda along direction u (d: 0 n, 1 t1, 2 t2) at point q: -lambda u to A, +lambda u
+ * to B, the angular parts from the point's precomputed I^-1 (r x u). Body row 0 (the static world) is
+ * never written.
+ */
+function apply(sb: Float64Array, J: Float64Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number): void {
+  const o = JAC * q + 12 * d;
   if (ka > 0) {
-    const m = sb[a + 9]!, t = 6 * ka;
-    sb[a] = sb[a]! - m * px; sb[a + 1] = sb[a + 1]! - m * py; sb[a + 2] = sb[a + 2]! - m * pz;
-    const lx = ray * pz - raz * py, ly = raz * px - rax * pz, lz = rax * py - ray * px;
-    sb[a + 3] = sb[a + 3]! - (T[t]! * lx + T[t + 3]! * ly + T[t + 4]! * lz);
-    sb[a + 4] = sb[a + 4]! - (T[t + 3]! * lx + T[t + 1]! * ly + T[t + 5]! * lz);
-    sb[a + 5] = sb[a + 5]! - (T[t + 4]! * lx + T[t + 5]! * ly + T[t + 2]! * lz);
+    const a = 12 * ka, m = sb[a + 9]! * lam;
+    sb[a] = sb[a]! - m * ux; sb[a + 1] = sb[a + 1]! - m * uy; sb[a + 2] = sb[a + 2]! - m * uz;
+    sb[a + 3] = sb[a + 3]! - lam * J[o + 6]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 7]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 8]!;
     sb[a + 11] = 1;
   }
   if (kb > 0) {
-    const m = sb[b + 9]!, t = 6 * kb;
-    sb[b] = sb[b]! + m * px; sb[b + 1] = sb[b + 1]! + m * py; sb[b + 2] = sb[b + 2]! + m * pz;
-    const lx = rby * pz - rbz * py, ly = rbz * px - rbx * pz, lz = rbx * py - rby * px;
-    sb[b + 3] = sb[b + 3]! + (T[t]! * lx + T[t + 3]! * ly + T[t + 4]! * lz);
-    sb[b + 4] = sb[b + 4]! + (T[t + 3]! * lx + T[t + 1]! * ly + T[t + 5]! * lz);
-    sb[b + 5] = sb[b + 5]! + (T[t + 4]! * lx + T[t + 5]! * ly + T[t + 2]! * lz);
+    const b = 12 * kb, m = sb[b + 9]! * lam;
+    sb[b] = sb[b]! + m * ux; sb[b + 1] = sb[b + 1]! + m * uy; sb[b + 2] = sb[b + 2]! + m * uz;
+    sb[b + 3] = sb[b + 3]! + lam * J[o + 9]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 10]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 11]!;
     sb[b + 11] = 1;
   }
+}
+
+/** Relative velocity of B against A at point q along direction u (d as in `apply`). */
+function relativeSpeed(sb: Float64Array, J: Float64Array, a: number, b: number, q: number, d: number, ux: number, uy: number, uz: number): number {
+  const o = JAC * q + 12 * d;
+  return (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
+    + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
+    - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
 }
 
 /** Warm start: last step's impulses applied again. */
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const buf = st.current, sb = world.collision.bodyState, T = st.invInertia;
+  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians;
   for (let i = 0; i < buf.count; i++) {
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    const ka = buf.ia[i]!, kb = buf.ib[i]!;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k, ln = buf.ln[q]!, l1 = buf.lt1[q]!, l2 = buf.lt2[q]!;
-      if (ln === 0 && l1 === 0 && l2 === 0) continue;
-      apply(sb, T, buf.ia[i]!, buf.ib[i]!, buf.rax[q]!, buf.ray[q]!, buf.raz[q]!, buf.rbx[q]!, buf.rby[q]!, buf.rbz[q]!,
-        ln * nx + l1 * t1x + l2 * t2x, ln * ny + l1 * t1y + l2 * t2y, ln * nz + l1 * t1z + l2 * t2z);
+      if (ln !== 0) apply(sb, J, ka, kb, q, 0, ln, nx, ny, nz);
+      if (l1 !== 0) apply(sb, J, ka, kb, q, 1, l1, t1x, t1y, t1z);
+      if (l2 !== 0) apply(sb, J, ka, kb, q, 2, l2, t2x, t2y, t2z);
     }
   }
 }
@@ -191,56 +206,56 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
 export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const cs = world.collision, buf = st.current, sb = cs.bodyState, ex = cs.bodyExtra, T = st.invInertia, base = st.rotationBase;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, ex = cs.bodyExtra, base = st.rotationBase, J = st.jacobians;
   const push = cs.settings.contactPushSpeed;
+  // Points in alternating order from substep to substep (symmetric Gauss-Seidel; the relax pass keeps
+  // its substep's order), so the order a manifold's points are solved in leaves no systematic torque.
+  if (useBias) st.solveParity ^= 1;
+  const backward = st.solveParity === 1;
+  const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
+  const sep = buf.sep, LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2, MN = buf.mn, MT1 = buf.mt1, MT2 = buf.mt2, MAX = buf.maxLn;
   for (let i = 0; i < buf.count; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-    const sft = ka === 0 || kb === 0 ? rigid : soft;
-    // Displacement and rotation of each body so far this step.
-    const dax = sb[a + 6]!, day = sb[a + 7]!, daz = sb[a + 8]!, dbx = sb[b + 6]!, dby = sb[b + 7]!, dbz = sb[b + 8]!;
+    const isRigid = ka === 0 || kb === 0;
+    const biasRate = isRigid ? rBias : sBias, massScale = isRigid ? rMass : sMass, impScale = isRigid ? rImp : sImp;
+    // Displacement along n and rotation of each body so far this step.
+    const dn = (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
     const hax = ka > 0 ? ex[6 * ka + 3]! - base[3 * ka]! : 0, hay = ka > 0 ? ex[6 * ka + 4]! - base[3 * ka + 1]! : 0, haz = ka > 0 ? ex[6 * ka + 5]! - base[3 * ka + 2]! : 0;
     const hbx = kb > 0 ? ex[6 * kb + 3]! - base[3 * kb]! : 0, hby = kb > 0 ? ex[6 * kb + 4]! - base[3 * kb + 1]! : 0, hbz = kb > 0 ? ex[6 * kb + 5]! - base[3 * kb + 2]! : 0;
     const m = buf.points[i]!, mu = buf.friction[i]!;
-    for (let k = 0; k < m; k++) {
-      const q = 4 * i + k;
-      const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
-      const s = buf.sep[q]!
-        + (dbx + hby * rbz - hbz * rby - dax - (hay * raz - haz * ray)) * nx
-        + (dby + hbz * rbx - hbx * rbz - day - (haz * rax - hax * raz)) * ny
-        + (dbz + hbx * rby - hby * rbx - daz - (hax * ray - hay * rax)) * nz;
+    for (let kk = 0; kk < m; kk++) {
+      const k = backward ? m - 1 - kk : kk;
+      const q = 4 * i + k, o = JAC * q;
+      // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
+      const s = sep[q]! + dn + hbx * J[o + 3]! + hby * J[o + 4]! + hbz * J[o + 5]! - hax * J[o]! - hay * J[o + 1]! - haz * J[o + 2]!;
       let bias = 0, ms = 1, is = 0;
       if (s > 0) bias = s / hs;
-      else if (useBias) { bias = Math.max(sft[0]! * s, -push); ms = sft[1]!; is = sft[2]!; }
-      const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
-      const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
-      const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
-      const vn = vx * nx + vy * ny + vz * nz;
-      const old = buf.ln[q]!;
-      const lam = Math.max(old - buf.mn[q]! * ms * (vn + bias) - is * old, 0);
+      else if (useBias) { bias = Math.max(biasRate * s, -push); ms = massScale; is = impScale; }
+      const vn = relativeSpeed(sb, J, a, b, q, 0, nx, ny, nz);
+      const old = LN[q]!;
+      const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
       const dl = lam - old;
-      buf.ln[q] = lam;
-      if (lam > buf.maxLn[q]!) buf.maxLn[q] = lam;
-      if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * nx, dl * ny, dl * nz);
+      LN[q] = lam;
+      if (lam > MAX[q]!) MAX[q] = lam;
+      if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz);
     }
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k;
-      const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
-      const limit = mu * buf.ln[q]!;
-      for (let dir = 0; dir < 2; dir++) {
-        const ux = dir === 0 ? t1x : t2x, uy = dir === 0 ? t1y : t2y, uz = dir === 0 ? t1z : t2z;
-        const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
-        const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
-        const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
-        const vt = vx * ux + vy * uy + vz * uz;
-        const old = dir === 0 ? buf.lt1[q]! : buf.lt2[q]!;
-        let lam = old - (dir === 0 ? buf.mt1[q]! : buf.mt2[q]!) * vt;
-        lam = lam > limit ? limit : lam < -limit ? -limit : lam;
-        if (dir === 0) buf.lt1[q] = lam; else buf.lt2[q] = lam;
-        const dl = lam - old;
-        if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * ux, dl * uy, dl * uz);
-      }
+      const limit = mu * LN[q]!;
+      const v1 = relativeSpeed(sb, J, a, b, q, 1, t1x, t1y, t1z);
+      const o1 = LT1[q]!;
+      let l1 = o1 - MT1[q]! * v1;
+      l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
+      LT1[q] = l1;
+      if (l1 !== o1) apply(sb, J, ka, kb, q, 1, l1 - o1, t1x, t1y, t1z);
+      const v2 = relativeSpeed(sb, J, a, b, q, 2, t2x, t2y, t2z);
+      const o2 = LT2[q]!;
+      let l2 = o2 - MT2[q]! * v2;
+      l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
+      LT2[q] = l2;
+      if (l2 !== o2) apply(sb, J, ka, kb, q, 2, l2 - o2, t2x, t2y, t2z);
     }
   }
 }
@@ -249,7 +264,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const cs = world.collision, buf = st.current, sb = cs.bodyState, T = st.invInertia;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians;
   const threshold = cs.settings.restitutionThreshold;
   for (let pass = 0; pass < 4; pass++) {
     for (let i = 0; i < buf.count; i++) {
@@ -260,16 +275,12 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
         if (buf.vn0[q]! > -threshold || buf.maxLn[q] === 0) continue;
-        const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
-        const vx = sb[b]! + sb[b + 4]! * rbz - sb[b + 5]! * rby - sb[a]! - (sb[a + 4]! * raz - sb[a + 5]! * ray);
-        const vy = sb[b + 1]! + sb[b + 5]! * rbx - sb[b + 3]! * rbz - sb[a + 1]! - (sb[a + 5]! * rax - sb[a + 3]! * raz);
-        const vz = sb[b + 2]! + sb[b + 3]! * rby - sb[b + 4]! * rbx - sb[a + 2]! - (sb[a + 3]! * ray - sb[a + 4]! * rax);
-        const vn = vx * nx + vy * ny + vz * nz;
+        const vn = relativeSpeed(sb, J, a, b, q, 0, nx, ny, nz);
         const old = buf.ln[q]!;
         const lam = Math.max(old - buf.mn[q]! * (vn + e * buf.vn0[q]!), 0);
         const dl = lam - old;
         buf.ln[q] = lam;
-        if (dl !== 0) apply(sb, T, ka, kb, rax, ray, raz, rbx, rby, rbz, dl * nx, dl * ny, dl * nz);
+        if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz);
       }
     }
   }
@@ -288,8 +299,10 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     const ev = st.events;
     ev.begin.count = 0; ev.end.count = 0; ev.sensorBegin.count = 0; ev.sensorEnd.count = 0;
   }
-  const buf = st.current, key = world.capacity + 1, prev = st.touching, now = new Map<number, number[]>();
+  const buf = st.current, key = world.capacity + 1, prev = st.touching, now = st.touchingNext;
   const h = (e: number): number => e === 0 ? 0 : currentHandle(world, e);
+  now.count = 0;
+  clearRowIndex(now.index, buf.count);
   for (let i = 0; i < buf.count; i++) {
     let touch = -1;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
@@ -298,9 +311,9 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     }
     if (touch < 0) continue;
     const k = buf.shapeA[i]! * key + buf.shapeB[i]!;
-    if (now.has(k)) continue;
-    now.set(k, [buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!]);
-    if (prev.has(k)) continue;
+    if (lookupRow(now.index, k) >= 0) continue;
+    insertRow(now.index, k, pushTouch(now, k, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!));
+    if (lookupRow(prev.index, k) >= 0) continue;
     const ev = st.events.begin;
     const r = pushEvent3D(ev, h(buf.shapeA[i]!), h(buf.shapeB[i]!), h(buf.bodyA[i]!), h(buf.bodyB[i]!));
     const c = world.components, b = buf.bodyB[i]!;
@@ -308,8 +321,11 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     ev.nx[r] = buf.nx[i]!; ev.ny[r] = buf.ny[i]!; ev.nz[r] = buf.nz[i]!;
     ev.approachSpeed[r] = Math.max(0, -buf.vn0[touch]!);
   }
-  for (const [k, v] of prev) if (!now.has(k)) pushEvent3D(st.events.end, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
-  st.touching = now;
+  for (let i = 0; i < prev.count; i++) {
+    if (lookupRow(now.index, prev.keys[i]!) >= 0) continue;
+    pushEvent3D(st.events.end, h(prev.shapeA[i]!), h(prev.shapeB[i]!), h(prev.bodyA[i]!), h(prev.bodyB[i]!));
+  }
+  st.touching = now; st.touchingNext = prev;
 }
 
 /** The 3D contact and sensor events of the last step (empty lists in a world without 3D shapes). Read rows 0..count-1 of each list; entities are handles. */

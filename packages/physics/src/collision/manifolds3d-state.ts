@@ -93,19 +93,25 @@ export interface Contact3DState {
   current: Manifold3DBuffer;
   previous: Manifold3DBuffer;
   /** Row key (`rowKey`) -> row in `previous`. */
-  previousIndex: Map<number, number>;
+  previousIndex: RowIndex;
   /** World inverse inertia tensor per solver body index (6 a body: xx, yy, zz, xy, xz, yz), 1 / (kg m^2). */
   invInertia: Float64Array;
   /** The step whose events the lists hold (they are cleared once a step, not once a substep). */
   eventStep: number;
   /** Events of the last step. */
   events: ContactEvents3D;
-  /** Pairs (shapeA (capacity + 1) + shapeB) touching at the end of the last step, with their bodies [shapeA, shapeB, bodyA, bodyB]. */
-  touching: Map<number, number[]>;
+  /** Pairs touching at the end of the last step (for begin and end events). */
+  touching: TouchList;
+  /** The list the next step's touching pairs are written into (swapped with `touching`). */
+  touchingNext: TouchList;
   /** Sensor overlaps of the last step, as `touching`. */
   sensing: Map<number, number[]>;
   /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
   sensingNow: Map<number, number[]>;
+  /** Per point of `current` (36 numbers each, manifold3d-solver.ts): r x u and I^-1 (r x u) of both bodies for u = n, t1, t2. Rebuilt every step. */
+  jacobians: Float64Array;
+  /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (manifold3d-solver.ts). */
+  solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
   rotationBase: Float64Array;
 }
@@ -113,6 +119,80 @@ export interface Contact3DState {
 /** Key of a row for warm starting: shapeA (capacity + 1) + shapeB, or for a mesh triangle -(shapeB 2^22 + triangle + 1). */
 export function rowKey(capacity: number, shapeA: number, shapeB: number, sub: number): number {
   return sub === 0 ? shapeA * (capacity + 1) + shapeB : -(shapeB * 4194304 + sub);
+}
+
+/**
+ * A hash table from row keys to rows (open addressing with linear probing, in typed arrays, so building
+ * it each step allocates nothing once it has grown to the pile's size).
+ */
+export interface RowIndex {
+  /** Keys (row keys; unused slots hold NaN) and rows, mask + 1 slots. */
+  keys: Float64Array;
+  rows: Int32Array;
+  mask: number;
+}
+
+function createRowIndex(): RowIndex {
+  return { keys: new Float64Array(64).fill(NaN), rows: new Int32Array(64), mask: 63 };
+}
+
+/** Empties the index and makes room for `count` keys (at most half full). */
+export function clearRowIndex(index: RowIndex, count: number): void {
+  let size = index.mask + 1;
+  if (size < 2 * count) {
+    while (size < 2 * count) size *= 2;
+    index.keys = new Float64Array(size); index.rows = new Int32Array(size); index.mask = size - 1;
+  }
+  index.keys.fill(NaN);
+}
+
+function slotOfKey(key: number, mask: number): number {
+  // Mix the key's low and high 32 bits (keys are non-negative integers below 2^53, or their negatives).
+  const lo = key % 4294967296 | 0, hi = (key / 4294967296) | 0;
+  return (Math.imul(lo ^ (lo >>> 16), 0x45d9f3b) ^ Math.imul(hi, 0x27d4eb2d)) & mask;
+}
+
+/** Adds key -> row (the index must have room: clearRowIndex). */
+export function insertRow(index: RowIndex, key: number, row: number): void {
+  const K = index.keys, mask = index.mask;
+  let h = slotOfKey(key, mask);
+  while (K[h] === K[h] && K[h] !== key) h = (h + 1) & mask;
+  K[h] = key; index.rows[h] = row;
+}
+
+/** The row of `key`, or -1. */
+export function lookupRow(index: RowIndex, key: number): number {
+  const K = index.keys, mask = index.mask;
+  let h = slotOfKey(key, mask);
+  for (;;) {
+    const k = K[h]!;
+    if (k === key) return index.rows[h]!;
+    if (k !== k) return -1;
+    h = (h + 1) & mask;
+  }
+}
+
+/** Touching shape pairs: key (shapeA (capacity + 1) + shapeB), the shapes and their bodies (slots), indexed by key. */
+export interface TouchList {
+  count: number;
+  keys: Float64Array; shapeA: Int32Array; shapeB: Int32Array; bodyA: Int32Array; bodyB: Int32Array;
+  index: RowIndex;
+}
+
+function createTouchList(n = 64): TouchList {
+  return { count: 0, keys: new Float64Array(n), shapeA: new Int32Array(n), shapeB: new Int32Array(n), bodyA: new Int32Array(n), bodyB: new Int32Array(n), index: createRowIndex() };
+}
+
+/** Appends a pair (growing the list; the caller indexes it). Returns its row. */
+export function pushTouch(l: TouchList, key: number, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+  if (l.count >= l.keys.length) {
+    const n = 2 * l.keys.length;
+    const f = new Float64Array(n); f.set(l.keys); l.keys = f;
+    for (const k of ['shapeA', 'shapeB', 'bodyA', 'bodyB'] as const) { const a = new Int32Array(n); a.set(l[k]); l[k] = a; }
+  }
+  const i = l.count++;
+  l.keys[i] = key; l.shapeA[i] = shapeA; l.shapeB[i] = shapeB; l.bodyA[i] = bodyA; l.bodyB[i] = bodyB;
+  return i;
 }
 
 const states = new WeakMap<PhysicsWorld, Contact3DState>();
@@ -123,9 +203,9 @@ export function contact3DStateOf(world: PhysicsWorld, create?: boolean): Contact
 export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3DState | undefined {
   let s = states.get(world);
   if (s === undefined && create) {
-    s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: new Map(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
+    s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: createRowIndex(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
       events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
-      touching: new Map(), sensing: new Map(), sensingNow: new Map(), eventStep: -1,
+      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float64Array(0),
     };
     states.set(world, s);
   }

@@ -1,4 +1,5 @@
 import type { Hull } from '../shapes3d/hull.js';
+import { boxBox3D, planeBox3D } from './box-box3d.js';
 
 /**
  * Narrowphase of 3D shapes: contact manifolds of up to four points with feature ids, in world
@@ -31,8 +32,12 @@ export interface Collider3D {
   /** Rotation of the shape frame into the world, row-major 3 x 3. */
   R: Float64Array;
   radius: number;
+  /** Capsule: half length of the segment; box: half extent along y (m). */
   hy: number;
   hull: Hull | null;
+  /** 1: a box (a polyhedron with half extents hx, hy, hz, m, collided by box-box3d.ts); 0 otherwise. */
+  box: number;
+  hx: number; hz: number;
 }
 
 /** A manifold: up to four points sharing a normal (unit, A to B). */
@@ -103,6 +108,8 @@ export function collide3D(A: Collider3D, B: Collider3D, margin: number, out: Man
   } else if (A.kind === ColliderKind3D.Capsule) {
     if (B.kind === ColliderKind3D.Polyhedron) capsulePolyhedron(A, pose(B, posedB), margin, out);
     else segmentSegment(A, B, margin, out);
+  } else if (A.box === 1 && B.box === 1) {
+    boxBox3D(A.px, A.py, A.pz, A.R, 0, A.hx, A.hy, A.hz, B.px, B.py, B.pz, B.R, 0, B.hx, B.hy, B.hz, margin, out);
   } else {
     polyhedra(pose(A, posedA), pose(B, posedB), margin, out);
   }
@@ -116,6 +123,10 @@ export function collidePlane3D(nx: number, ny: number, nz: number, d: number, B:
     if (s > margin) return;
     addPoint(out, x - nx * (r + s / 2), y - ny * (r + s / 2), z - nz * (r + s / 2), s, id);
   };
+  if (B.kind === ColliderKind3D.Polyhedron && B.box === 1) {
+    planeBox3D(nx, ny, nz, d, B.px, B.py, B.pz, B.R, 0, B.hx, B.hy, B.hz, margin, out);
+    return;
+  }
   if (B.kind === ColliderKind3D.Polyhedron) {
     const P = pose(B, posedB);
     for (let i = 0; i < P.n; i++) pushCandidate(nx * P.v[3 * i]! + ny * P.v[3 * i + 1]! + nz * P.v[3 * i + 2]! - d, P.v[3 * i]!, P.v[3 * i + 1]!, P.v[3 * i + 2]!, i, margin, nx, ny, nz);

@@ -4,9 +4,25 @@ import type { PhysicsWorld } from '../world.js';
 import { BodyType } from './state.js';
 import { Shape3DKind, shapes3DOf, type Shape3DStore } from '../shapes3d/store.js';
 import { ColliderKind3D, collide3D, collidePlane3D, createManifold3D, type Collider3D, type Manifold3D } from './manifolds3d.js';
-import { contact3DStateOf, growManifold3DBuffer, pushEvent3D, rowKey, type Contact3DState } from './manifolds3d-state.js';
+import { clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, lookupRow, pushEvent3D, rowKey, type Contact3DState } from './manifolds3d-state.js';
 import { currentHandle } from '../handles.js';
 import { meshesOf, type Mesh3D } from './mesh3d.js';
+import { wakeIsland3D, wakesSleeper3D } from './shape3d-islands.js';
+import { boxBox3D } from './box-box3d.js';
+
+/** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */
+const wakes = { list: new Int32Array(16), count: 0 };
+
+function queueWake(e: number): void {
+  if (wakes.count >= wakes.list.length) { const l = new Int32Array(2 * wakes.list.length); l.set(wakes.list); wakes.list = l; }
+  wakes.list[wakes.count++] = e;
+}
+
+/** Whether a pair of body types is collided: one is dynamic, or a kinematic body meets a sleeping one (to wake it). */
+function meets(ta: number, tb: number): boolean {
+  return ta === BodyType.Dynamic || tb === BodyType.Dynamic
+    || ta === BodyType.Kinematic && tb === BodyType.Sleeping || ta === BodyType.Sleeping && tb === BodyType.Kinematic;
+}
 
 /**
  * Collide stage, 3D shapes (shapes3d/): broadphase, filtering and narrowphase of every 3D shape, and
@@ -38,12 +54,21 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   // Last step's rows become the warm-start source.
   const prev = st.previous;
   st.previous = st.current; st.current = prev; st.current.count = 0;
-  const index = st.previousIndex;
-  index.clear();
-  for (let i = 0, p = st.previous; i < p.count; i++) index.set(rowKey(world.capacity, p.shapeA[i]!, p.shapeB[i]!, p.sub[i]!), i);
-  gather(world, s);
-  st.sensingNow.clear();
-  pairs(world, s, st);
+  const index = st.previousIndex, p = st.previous;
+  clearRowIndex(index, p.count);
+  for (let i = 0; i < p.count; i++) insertRow(index, rowKey(world.capacity, p.shapeA[i]!, p.shapeB[i]!, p.sub[i]!), i);
+  // A sleeping island met by a moving body wakes; then the step's pairs are found again with it awake.
+  for (let pass = 0; ; pass++) {
+    gather(world, s);
+    st.sensingNow.clear();
+    st.current.count = 0;
+    wakes.count = 0;
+    pairs(world, s, st);
+    if (wakes.count === 0 || pass >= 8) break;
+    let woken = 0;
+    for (let i = 0; i < wakes.count; i++) woken += wakeIsland3D(world, wakes.list[i]!);
+    if (woken === 0) break;
+  }
   sensorEvents(world, st);
 }
 
@@ -173,17 +198,19 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   scratch.n = n;
 }
 
-const colA: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null };
-const colB: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null };
+const colA: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null, box: 0, hx: 0, hz: 0 };
+const colB: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null, box: 0, hx: 0, hz: 0 };
 const manifold: Manifold3D = createManifold3D();
 
 function collider(world: PhysicsWorld, s: Shape3DStore, i: number, out: Collider3D): void {
   const sc = scratch, e = sc.shape[i]!;
   out.px = sc.px[i]!; out.py = sc.py[i]!; out.pz = sc.pz[i]!;
   for (let k = 0; k < 9; k++) out.R[k] = sc.R[9 * i + k]!;
+  out.box = 0;
   if (sc.ball[i]) { out.kind = ColliderKind3D.Sphere; out.radius = world.components.Ball.radius[e]!; out.hy = 0; out.hull = null; return; }
   const kind = s.kind[e]!;
   out.radius = s.radius[e]!; out.hy = s.hy[e]!;
+  if (kind === Shape3DKind.Box) { out.box = 1; out.hx = s.hx[e]!; out.hz = s.hz[e]!; }
   if (kind === Shape3DKind.Sphere) { out.kind = ColliderKind3D.Sphere; out.hull = null; }
   else if (kind === Shape3DKind.Capsule) { out.kind = ColliderKind3D.Capsule; out.hull = null; }
   else { out.kind = ColliderKind3D.Polyhedron; out.hull = s.hulls[s.hull[e]!]!; out.radius = 0; }
@@ -196,49 +223,140 @@ function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: 
   return (ca & mb) === 0 || (cb & ma) === 0;
 }
 
-/** Sweep and prune along x, then the narrowphase of each overlapping pair, and every collider against the planes. */
+/** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
+const grid = { start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(27) };
+
+/** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
+function cellHash(x: number, y: number, z: number, mask: number): number {
+  return (Math.imul(x, 73856093) ^ Math.imul(y, 19349663) ^ Math.imul(z, 83492791)) & mask;
+}
+
+/**
+ * Broadphase: every collider's box goes into the cell of a uniform grid holding its low corner, with a
+ * cell as wide as the widest ordinary box, so a box can only meet boxes whose low corner lies in its own
+ * cell or one of the 26 around it; boxes more than four times the mean width ("large": a ground slab)
+ * are tested against every collider instead. Each candidate pair is seen once (from its lower collider
+ * index) and goes to `pair`. Then every collider against the meshes and the planes.
+ */
 function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   const sc = scratch, n = sc.n, type = world.collision.bodyType;
-  const order = sc.order;
-  for (let i = 0; i < n; i++) order[i] = i;
-  const minX = sc.minX;
-  const sorted = Array.from(order.subarray(0, n)).sort((a, b) => minX[a]! - minX[b]!);
-  const h = world.h, spec = world.collision.settings.speculativeDistance;
-  for (let ii = 0; ii < n; ii++) {
-    const i = sorted[ii]!;
-    const bi = sc.body[i]!, ti = type[bi]!;
-    for (let jj = ii + 1; jj < n; jj++) {
-      const j = sorted[jj]!;
-      if (minX[j]! > sc.maxX[i]!) break;
-      const bj = sc.body[j]!;
-      if (bi === bj) continue;
-      const tj = type[bj]!;
-      if (ti !== BodyType.Dynamic && tj !== BodyType.Dynamic) continue;
-      if (sc.minY[j]! > sc.maxY[i]! || sc.maxY[j]! < sc.minY[i]! || sc.minZ[j]! > sc.maxZ[i]! || sc.maxZ[j]! < sc.minZ[i]!) continue;
-      if (ti === BodyType.Dynamic && tj === BodyType.Sleeping || ti === BodyType.Sleeping && tj === BodyType.Dynamic) {
-        // A moving body reaches a sleeping one: the sleeper joins this step as static, and is woken by the sleep system's touch rule.
+  const minX = sc.minX, maxX = sc.maxX, minY = sc.minY, maxY = sc.maxY, minZ = sc.minZ, maxZ = sc.maxZ;
+  let mean = 0;
+  for (let i = 0; i < n; i++) mean += Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!, maxZ[i]! - minZ[i]!);
+  mean = n > 0 ? mean / n : 1;
+  let cell = 0, nl = 0;
+  if (grid.large.length < n) grid.large = new Int32Array(Math.max(64, 2 * n));
+  const large = grid.large;
+  for (let i = 0; i < n; i++) {
+    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!, maxZ[i]! - minZ[i]!);
+    if (w > 4 * mean) { large[nl++] = i; sc.order[i] = -1; } else { if (w > cell) cell = w; sc.order[i] = 0; }
+  }
+  if (!(cell > 0)) cell = 1;
+  const inv = 1 / cell;
+  let size = 64;
+  while (size < 2 * n) size *= 2;
+  const mask = size - 1;
+  if (grid.start.length < size + 1) grid.start = new Int32Array(2 * size + 1);
+  if (grid.items.length < n) { grid.items = new Int32Array(Math.max(64, 2 * n)); grid.bucket = new Int32Array(Math.max(64, 2 * n)); }
+  const start = grid.start, items = grid.items, bucket = grid.bucket, seen = grid.seen, order = sc.order;
+  start.fill(0, 0, size + 1);
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1) continue;
+    const b = cellHash(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
+    bucket[i] = b; start[b + 1]!++;
+  }
+  for (let b = 0; b < size; b++) start[b + 1] = start[b + 1]! + start[b]!;
+  // Fill (start[b] is advanced while filling, then restored from the next bucket's start).
+  for (let i = 0; i < n; i++) { if (order[i] === -1) continue; const b = bucket[i]!; items[start[b]!++] = i; }
+  for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
+  start[0] = 0;
+  // Sources: the colliders of moving (dynamic or kinematic) bodies; a resting pile's sleeping and static
+  // colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1) continue;
+    const ti = type[sc.body[i]!]!;
+    if (ti !== BodyType.Dynamic && ti !== BodyType.Kinematic) continue;
+    const cx = Math.floor(minX[i]! * inv), cy = Math.floor(minY[i]! * inv), cz = Math.floor(minZ[i]! * inv);
+    let ns = 0;
+    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++) {
+      const b = cellHash(cx + dx, cy + dy, cz + dz, mask);
+      let dup = false;
+      for (let k = 0; k < ns; k++) if (seen[k] === b) { dup = true; break; }
+      if (dup) continue;
+      seen[ns++] = b;
+      for (let k = start[b]!, e = start[b + 1]!; k < e; k++) {
+        const j = items[k]!;
+        if (j === i) continue;
+        const tj = type[sc.body[j]!]!;
+        // A pair of two sources is taken from its lower index.
+        if (j < i && (tj === BodyType.Dynamic || tj === BodyType.Kinematic)) continue;
+        if (minX[j]! > maxX[i]! || maxX[j]! < minX[i]! || minY[j]! > maxY[i]! || maxY[j]! < minY[i]! || minZ[j]! > maxZ[i]! || maxZ[j]! < minZ[i]!) continue;
+        if (!meets(ti, tj)) continue;
+        pair(world, s, st, i, j);
       }
-      // Balls against balls are the ball narrowphase's.
-      if (sc.ball[i] && sc.ball[j]) continue;
-      const a = sc.shape[i]! < sc.shape[j]! ? i : j, b = a === i ? j : i;
-      const ea = sc.shape[a]!, eb = sc.shape[b]!;
-      if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) continue;
-      const sa = !sc.ball[a] && s.sensor[ea] === 1, sb = !sc.ball[b] && s.sensor[eb] === 1;
-      collider(world, s, a, colA); collider(world, s, b, colB);
-      if (sa || sb) {
-        // Sensors report overlap (a point of negative separation) and push nothing.
-        if (sa && sb) continue;
-        collide3D(colA, colB, 0, manifold);
-        let overlap = false;
-        for (let k = 0; k < manifold.count; k++) if (manifold.sep[k]! < 0) overlap = true;
-        if (overlap) st.sensingNow.set(ea * (world.capacity + 1) + eb, sa ? [ea, eb, sc.body[a]!, sc.body[b]!] : [eb, ea, sc.body[b]!, sc.body[a]!]);
-        continue;
-      }
-      const margin = spec + (sc.speed[a]! + sc.speed[b]!) * h;
-      collide3D(colA, colB, margin, manifold);
-      if (manifold.count > 0) emit(world, s, st, sc.body[a]!, sc.body[b]!, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1);
     }
   }
+  for (let l = 0; l < nl; l++) {
+    const i = large[l]!;
+    const ti = type[sc.body[i]!]!;
+    for (let j = 0; j < n; j++) {
+      if (j === i || order[j] === -1 && j < i) continue;
+      if (minX[j]! > maxX[i]! || maxX[j]! < minX[i]! || minY[j]! > maxY[i]! || maxY[j]! < minY[i]! || minZ[j]! > maxZ[i]! || maxZ[j]! < minZ[i]!) continue;
+      if (!meets(ti, type[sc.body[j]!]!)) continue;
+      pair(world, s, st, i, j);
+    }
+  }
+  planesAndMeshes(world, s, st);
+}
+
+/** The narrowphase of colliders i and j whose boxes overlap: filtering, sensors, then the manifold. */
+function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: number, j: number): void {
+  const sc = scratch;
+  const bi = sc.body[i]!, bj = sc.body[j]!;
+  if (bi === bj) return;
+  // A moving body reaching a sleeping one: the sleeper takes part as static this step, and the sleep system wakes it.
+  // Balls against balls are the ball narrowphase's.
+  if (sc.ball[i] && sc.ball[j]) return;
+  const a = sc.shape[i]! < sc.shape[j]! ? i : j, b = a === i ? j : i;
+  const ea = sc.shape[a]!, eb = sc.shape[b]!;
+  if (filtered(s, ea, eb, sc.ball[a] === 1, sc.ball[b] === 1)) return;
+  const sa = !sc.ball[a] && s.sensor[ea] === 1, sb = !sc.ball[b] && s.sensor[eb] === 1;
+  if (sa && sb) return;
+  if (!sa && !sb && !sc.ball[a] && !sc.ball[b] && s.kind[ea] === Shape3DKind.Box && s.kind[eb] === Shape3DKind.Box) {
+    // Two boxes (the common case): straight from the scratch poses.
+    const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
+    boxBox3D(sc.px[a]!, sc.py[a]!, sc.pz[a]!, sc.R, 9 * a, s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, sc.px[b]!, sc.py[b]!, sc.pz[b]!, sc.R, 9 * b, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!, margin, manifold);
+    if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
+    return;
+  }
+  collider(world, s, a, colA); collider(world, s, b, colB);
+  if (sa || sb) {
+    // Sensors report overlap (a point of negative separation) and push nothing.
+    if (world.collision.bodyType[bi] !== BodyType.Dynamic && world.collision.bodyType[bj] !== BodyType.Dynamic) return;
+    collide3D(colA, colB, 0, manifold);
+    let overlap = false;
+    for (let k = 0; k < manifold.count; k++) if (manifold.sep[k]! < 0) overlap = true;
+    if (overlap) st.sensingNow.set(ea * (world.capacity + 1) + eb, sa ? [ea, eb, sc.body[a]!, sc.body[b]!] : [eb, ea, sc.body[b]!, sc.body[a]!]);
+    return;
+  }
+  const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
+  collide3D(colA, colB, margin, manifold);
+  if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
+}
+
+/** A pair's manifold found: wakes a sleeper met by a moving body, and emits the rows unless neither body is dynamic. */
+function emitPair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, a: number, b: number, bi: number, bj: number): void {
+  const sc = scratch, type = world.collision.bodyType, ta = type[bi]!, tb = type[bj]!;
+  if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb)) queueWake(bi);
+  else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta)) queueWake(bj);
+  if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) return;
+  emit(world, s, st, sc.body[a]!, sc.body[b]!, sc.shape[a]!, sc.shape[b]!, sc.ball[a] === 1, sc.ball[b] === 1);
+}
+
+/** Every collider against the triangle meshes and the planes. */
+function planesAndMeshes(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
+  const sc = scratch, n = sc.n, type = world.collision.bodyType;
+  const h = world.h, spec = world.collision.settings.speculativeDistance;
   const meshList = meshesOf(world);
   if (meshList.length > 0) for (let i = 0; i < n; i++) for (const m of meshList) collideMesh(world, s, st, m, i);
   // Planes: static, A side.
@@ -279,16 +397,21 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
   const tl = Math.hypot(tx, ty, tz);
   buf.t1x[i] = tx / tl; buf.t1y[i] = ty / tl; buf.t1z[i] = tz / tl;
   // Materials: the bouncier surface wins, friction is the geometric mean (Box2D's mixing).
-  const mat = (e: number, ball: boolean, isPlane: boolean): [number, number] =>
-    isPlane || ball ? [c.Material.friction[e]!, c.Material.restitution[e]!] : [s.friction[e]!, s.restitution[e]!];
-  const [fa, ra] = mat(ea, ballA, plane !== 0), [fb, rb] = mat(eb, ballB, false);
+  const fa = plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!, ra = plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
+  const fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!, rb = ballB ? c.Material.restitution[eb]! : s.restitution[eb]!;
   buf.friction[i] = Math.sqrt(fa * fb); buf.restitution[i] = Math.max(ra, rb);
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const Px = c.Position.x, Py = c.Position.y, Pz = c.Position.z;
+  // Anchors from where the narrowphase measured: PreviousPosition, or Position for a static body.
   const type = world.collision.bodyType;
-  const base = (b: number, k: number): number => b === 0 ? 0 : type[b] === BodyType.Static ? (k === 0 ? Px[b]! : k === 1 ? Py[b]! : Pz[b]!) : (k === 0 ? ox[b]! : k === 1 ? oy[b]! : oz[b]!);
-  const ax = base(bodyA, 0), ay = base(bodyA, 1), az = base(bodyA, 2), bx = base(bodyB, 0), by = base(bodyB, 1), bz = base(bodyB, 2);
-  const prev = st.previousIndex.get(rowKey(world.capacity, ea, eb, sub));
+  let ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
+  if (bodyA !== 0) {
+    const P = type[bodyA] === BodyType.Static ? c.Position : c.PreviousPosition;
+    ax = P.x[bodyA]!; ay = P.y[bodyA]!; az = P.z[bodyA]!;
+  }
+  if (bodyB !== 0) {
+    const P = type[bodyB] === BodyType.Static ? c.Position : c.PreviousPosition;
+    bx = P.x[bodyB]!; by = P.y[bodyB]!; bz = P.z[bodyB]!;
+  }
+  const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
   const P = st.previous;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
@@ -296,7 +419,7 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
     buf.rbx[q] = m.x[k]! - bx; buf.rby[q] = m.y[k]! - by; buf.rbz[q] = m.z[k]! - bz;
     buf.sep[q] = m.sep[k]!; buf.id[q] = m.id[k]!;
     buf.ln[q] = 0; buf.lt1[q] = 0; buf.lt2[q] = 0; buf.maxLn[q] = 0;
-    if (prev !== undefined) {
+    if (prev >= 0) {
       for (let j = 0; j < P.points[prev]!; j++) {
         const pq = 4 * prev + j;
         if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!; break; }

@@ -4,6 +4,7 @@ import { query, Not } from '../query.js';
 import { joinJointIslands, markJointSupport } from '../joints/islands.js';
 import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
 import { resolveKind } from '../handles.js';
+import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shape3d-islands.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -95,7 +96,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   const sl = cs.sleep;
   const c = world.components;
   if (!sl.enabled) { cs.stats.sleeping = 0; return; }
-  const bodies = withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]));
+  const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])));
   const n = bodies.length;
   const rest = sl.restTime, parent = sl.parent, islandRest = sl.islandRest;
   const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
@@ -111,6 +112,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   }
   markJointSupport(world, supported, stamp);
   markShapeSupport(world, supported, stamp);
+  markShape3DSupport(world, supported, stamp);
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
@@ -142,6 +144,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   }
   // ... over shape contacts ...
   joinShapeIslands(world, parent, find);
+  joinShape3DIslands(world, parent, find);
   // ... and over joints.
   joinJointIslands(world, bodies, rest, parent);
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
@@ -180,6 +183,7 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
   if (!cs.sleep.anyAsleep) return;
   const c = world.components;
   if (hasComponent(world, eid, c.Sleeping)) { wakeIsland(world, eid); return; }
+  wakeTouching3D(world, eid);
   const rows = cs.cache.rows;
   for (let i = 0; i < rows.count; i++) {
     const a = rows.a[i]!, b = rows.b[i]!, f = rows.feature[i]!;

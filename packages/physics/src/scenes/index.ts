@@ -6,6 +6,8 @@ import { fireworks } from './fireworks.js';
 import { pyramid } from './pyramid.js';
 import { jointGrid } from './joint-grid.js';
 import { clothScene } from './cloth.js';
+import { boxPile3D } from './box-pile-3d.js';
+import { pyramid3D } from './pyramid-3d.js';
 import type { SceneDefinition } from './types.js';
 
 /** Every registered scene by name: the bench's `--list` and the gallery read this. */
@@ -18,6 +20,8 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [pyramid.name]: pyramid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [jointGrid.name]: jointGrid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [clothScene.name]: clothScene as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [boxPile3D.name]: boxPile3D as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [pyramid3D.name]: pyramid3D as SceneDefinition<{ count?: number; seed?: number }, unknown>,
 });
 
 export { ballsInBox, ballsInBoxLayout } from './balls-in-box.js';
@@ -37,6 +41,10 @@ export { jointGrid } from './joint-grid.js';
 export type { JointGridOptions, JointGridHandles } from './joint-grid.js';
 export { clothScene } from './cloth.js';
 export type { ClothSceneOptions } from './cloth.js';
+export { boxPile3D, boxPile3DLayout } from './box-pile-3d.js';
+export type { BoxPile3DHandles, BoxPile3DLayout, BoxPile3DOptions } from './box-pile-3d.js';
+export { pyramid3D, pyramid3DLayout } from './pyramid-3d.js';
+export type { Pyramid3DHandles, Pyramid3DLayout, Pyramid3DOptions } from './pyramid-3d.js';
 // The book's closing projects: exported builders, not in SCENES (the bench measures solar-system as a study).
 export {
   solarSystem, solarSystemErrors, solarSystemMass, ephemerisState, ephemerisHeliocentric,

@@ -1,0 +1,107 @@
+import type { PhysicsWorld } from '../world.js';
+import type { SceneDefinition } from './types.js';
+import { addBody } from '../bodies.js';
+import { addPlane } from '../rigid.js';
+import { addShape3D } from '../shapes3d/api.js';
+import { slotOf } from '../handles.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+
+/** Options of the `box-pile-3d` scene. */
+export interface BoxPile3DOptions {
+  /** Number of boxes, integer in [1, 200_000]. Default 5000. */
+  count?: number;
+  /** Seed of the jitter. Default 1. */
+  seed?: number;
+}
+
+/** The resolved layout of `box-pile-3d`, for peer engines (SI units). */
+export interface BoxPile3DLayout {
+  count: number;
+  /** Box centres, m: x0, y0, z0, x1, ... (boxes start axis-aligned, at rest). */
+  positions: Float64Array;
+  /** Half extent of every box, m (1 x 1 x 1 m boxes). */
+  half: number;
+  /** Mass of a box, kg (density 1 kg/m^3). */
+  mass: number;
+  restitution: number;
+  friction: number;
+  /** Inner corners of the closed box, m. */
+  min: [number, number, number];
+  max: [number, number, number];
+  gravity: [number, number, number];
+}
+
+/**
+ * The `box-pile-3d` layout, `spheres-in-box` with boxes: cubes of 1 m (1 kg, friction 0.6, restitution
+ * 0.1) on a 1.5 m grid jittered by up to +-0.2 m along each axis (so neighbours start at least 0.1 m
+ * apart), about eight layers deep (a square footprint of ceil(sqrt(N / 8)) cells a side), in a closed
+ * box one cell taller than the layers; gravity (0, -10, 0).
+ * @throws TypeError | RangeError on bad options.
+ */
+export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout {
+  const where = 'box-pile-3d';
+  assertKnownKeys(where, options, ['count', 'seed']);
+  const count = options.count ?? 5000;
+  assertInteger(where, 'count', count, 1, 200_000);
+  const seed = options.seed ?? 1;
+  assertFinite(where, 'seed', seed);
+  const spacing = 1.5, half = 0.5;
+  const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));
+  const layers = Math.ceil(count / (side * side));
+  const rng = new Rng(seed);
+  const jitter = 0.4 * (spacing - 2 * half);
+  const positions = new Float64Array(3 * count);
+  for (let i = 0; i < count; i++) {
+    const x = i % side, z = Math.floor(i / side) % side, y = Math.floor(i / (side * side));
+    positions[3 * i] = (x + 0.5) * spacing + rng.range(-jitter, jitter);
+    positions[3 * i + 1] = (y + 0.5) * spacing + rng.range(-jitter, jitter);
+    positions[3 * i + 2] = (z + 0.5) * spacing + rng.range(-jitter, jitter);
+  }
+  return {
+    count, positions, half, mass: 1, restitution: 0.1, friction: 0.6,
+    min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],
+  };
+}
+
+/** Handles of `box-pile-3d`. */
+export interface BoxPile3DHandles {
+  /** The boxes' body slots, in layout order. */
+  boxes: Uint32Array;
+  layout: BoxPile3DLayout;
+}
+
+/**
+ * `box-pile-3d`: N unit cubes dropped into a closed box (its six faces are static planes), the 3D box
+ * benchmark compared against rapier3d. World defaults otherwise (4 substeps, sleeping on).
+ */
+export const boxPile3D: SceneDefinition<BoxPile3DOptions, BoxPile3DHandles> = {
+  name: 'box-pile-3d',
+  description: 'N boxes of 1 m (mu 0.6, e 0.1) fall from a jittered grid about eight layers deep into a closed box; 3D',
+  defaultCount: 5000,
+  worldOptions(options = {}) {
+    const count = options.count ?? 5000;
+    // A box is two entities (body and shape); six planes.
+    return { dimensions: 3, capacity: 2 * count + 16, gravity: [0, -10, 0] };
+  },
+  build(world: PhysicsWorld, options: BoxPile3DOptions = {}): BoxPile3DHandles {
+    if (world.dimensions !== 3) throw new RangeError(`box-pile-3d: needs a 3D world, got dimensions ${world.dimensions}`);
+    const layout = boxPile3DLayout(options);
+    const [x0, y0, z0] = layout.min, [x1, y1, z1] = layout.max;
+    const material = { friction: layout.friction, restitution: layout.restitution };
+    const walls: Array<[number[], number[]]> = [
+      [[0, 1, 0], [0, y0, 0]], [[0, -1, 0], [0, y1, 0]], [[1, 0, 0], [x0, 0, 0]],
+      [[-1, 0, 0], [x1, 0, 0]], [[0, 0, 1], [0, 0, z0]], [[0, 0, -1], [0, 0, z1]],
+    ];
+    for (const [normal, point] of walls) addPlane(world, { normal, point, ...material });
+    const boxes = new Uint32Array(layout.count);
+    const p = layout.positions, h = layout.half, extents = [h, h, h];
+    const density = layout.mass / (8 * h * h * h);
+    for (let i = 0; i < layout.count; i++) {
+      const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });
+      addShape3D(world, b, { type: 'box', halfExtents: extents, density, ...material });
+      boxes[i] = slotOf(b);
+    }
+    return { boxes, layout };
+  },
+};
