@@ -1,0 +1,281 @@
+/**
+ * Wrecking ball: a tower crane swings a 5-tonne steel ball on a chain of capsule links (ball-and-socket
+ * joints) into towers, brick walls and plank stacks of 3D boxes. Steer the crane: slew the jib, run the
+ * trolley in and out, raise and lower the hook; the ball lags behind and swings, so pump it like a
+ * pendulum. Or grab the ball with the mouse, pull it back and let go. Every piece that falls scores
+ * (more for pieces that stood high); knock down 70 % of a level to clear it; levels are seeded.
+ *
+ * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
+ * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click the ground to send the hook
+ * there; drag the ball to pull it; right-drag orbits, wheel zooms.
+ * URL: ?level=N, ?seed=S, ?debug.
+ */
+import { BoxGeometry, BufferAttribute, BufferGeometry, Line, LineBasicMaterial, Mesh, MeshStandardMaterial, Plane, Raycaster, Vector2, Vector3 } from 'three';
+import { createPhysicsWorld, isAlive, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+import { BodyDrag3D } from '@bitphysics/render-three';
+import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
+import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
+import {
+  CLEAR_FRACTION, JIB_HEIGHT, RADIUS_RANGE, buildWreckingBall, fallenCount, hookPosition, scorePieces, wreckingBallWorldOptions,
+  type WreckingBallHandles,
+} from './scene';
+
+const params = {
+  level: numberParam('level', { default: 1, min: 1, max: 20, integer: true }),
+  seed: seedParam(),
+  ballWeight: 1,
+  debug: flagParam('debug'),
+  shadows: true,
+  nextLevel: () => nextLevel(),
+  reset: () => game.shell.reset(),
+};
+
+let handles: WreckingBallHandles;
+/** Score of the levels cleared before this one, and of this level so far. */
+let banked = 0;
+let levelScore = 0;
+let cleared = false;
+/** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
+let stepMs = 0;
+let worstMs = 0;
+let worstAge = 0;
+
+const COLORS = { tower: 0xd1495b, wall: 0xc8763c, planks: 0xe0b872, fallen: 0x59606c, ball: 0xb8c2d0, link: 0x9aa3ad, mast: 0xf2b705, hook: 0xf2b705 };
+
+function createWorld(): PhysicsWorld {
+  const world = createPhysicsWorld(wreckingBallWorldOptions());
+  handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
+  levelScore = 0;
+  cleared = false;
+  return world;
+}
+
+/** One step: the physics, then the score. */
+function gameStep(world: PhysicsWorld): void {
+  const t0 = performance.now();
+  physicsStep(world);
+  const ms = performance.now() - t0;
+  stepMs = stepMs === 0 ? ms : stepMs + (ms - stepMs) / 30;
+  if (ms > worstMs || ++worstAge > 60) { worstMs = ms; worstAge = 0; }
+  const gained = scorePieces(world, handles.pieces);
+  if (gained > 0) {
+    levelScore += gained;
+    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body)) renderer.setColor(p.body, COLORS.fallen);
+  }
+  if (!cleared && fallenCount(handles.pieces) >= CLEAR_FRACTION * handles.pieces.length) {
+    cleared = true;
+    levelScore += 500;
+  }
+}
+
+const game = await startThreeGame({
+  title: 'Wrecking ball',
+  createWorld,
+  step: gameStep,
+  bodies: () => handles.pieces.length,
+  controls: [
+    { keys: 'A D / ← →', action: 'slew the jib' },
+    { keys: 'W S / ↑ ↓', action: 'trolley out / in' },
+    { keys: 'Q E', action: 'hook up / down' },
+    { keys: 'Click ground', action: 'send the hook there' },
+    { keys: 'Drag ball', action: 'pull the ball, release to swing' },
+    { keys: 'L', action: 'next level (once cleared)' },
+    { keys: 'G', action: 'debug: joints and contacts' },
+    ...ORBIT_CONTROLS_RIGHT,
+  ],
+  keys: [
+    { key: 'l', label: 'next level', action: () => { if (cleared) nextLevel(); } },
+    { key: 'g', label: 'debug', action: () => setDebug(!params.debug) },
+  ],
+  app: { controls: { leftButton: 'none', minDistance: 4, maxDistance: 60, target: [0, 2, 0] }, cameraPosition: [16, 12, 18] },
+  renderer: {
+    boundary: 'none', planeSize: 50, debug: params.debug ? debugOptions() : false, initialInstances: 128,
+    shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
+  },
+  view: { min: [-9, 0, -9], max: [9, 5, 9] },
+  viewDirection: [0.8, 0.75, 1],
+  onFrame: () => frame(),
+});
+const { shell, renderer, app } = game;
+
+function debugOptions() {
+  return { axes: false, velocities: false, contacts: true, joints: true, normalLength: 0.3 };
+}
+
+function setDebug(on: boolean): void {
+  params.debug = on;
+  renderer.setDebug(on ? debugOptions() : false);
+  panel.refresh();
+}
+
+/** Colours every body of the level (after each reset). */
+function dress(): void {
+  const h = handles;
+  for (const p of h.pieces) renderer.setColor(p.body, COLORS[p.kind]);
+  renderer.setColor(h.ball, COLORS.ball);
+  for (const l of h.links) renderer.setColor(l, COLORS.link);
+  renderer.setColor(h.mast, COLORS.mast);
+  renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
+}
+const hookGeometry = new BoxGeometry(1, 1, 1);
+dress();
+shell.onWorldChange(() => { drag.release(); dress(); });
+
+/** Next level: bank the score and build the next one. */
+function nextLevel(): void {
+  banked += levelScore;
+  params.level += 1;
+  panel.refresh();
+  shell.reset();
+}
+
+// ---- The crane's jib and cable (drawn only: the physics is the trolley, chain and ball) -------------
+
+const jibMaterial = new MeshStandardMaterial({ color: COLORS.mast, roughness: 0.6, metalness: 0.2 });
+const jib = new Mesh(new BoxGeometry(RADIUS_RANGE[1] + 4, 0.45, 0.45), jibMaterial);
+jib.castShadow = true;
+app.scene.add(jib);
+const cableGeometry = new BufferGeometry();
+const cablePositions = new Float32Array(6);
+cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
+const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b }));
+cable.frustumCulled = false;
+app.scene.add(cable);
+
+// ---- Keys held -------------------------------------------------------------------------------
+
+const held = new Set<string>();
+const DRIVE_KEYS = ['a', 'd', 'w', 's', 'q', 'e', 'arrowleft', 'arrowright', 'arrowup', 'arrowdown'];
+function typing(target: EventTarget | null): boolean {
+  const el = target as HTMLElement | null;
+  return !!el && (el.tagName === 'INPUT' || el.tagName === 'SELECT' || el.tagName === 'TEXTAREA');
+}
+window.addEventListener('keydown', (event) => {
+  const k = event.key.toLowerCase();
+  if (!DRIVE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
+  held.add(k);
+  handles.controls.goal = null;
+  event.preventDefault();
+});
+window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
+window.addEventListener('blur', () => held.clear());
+
+function updateControls(): void {
+  const c = handles.controls;
+  const on = (a: string, b: string): number => (held.has(a) || held.has(b) ? 1 : 0);
+  c.slew = on('a', 'arrowleft') - on('d', 'arrowright');
+  c.trolley = on('w', 'arrowup') - on('s', 'arrowdown');
+  c.hoist = (held.has('q') ? 1 : 0) - (held.has('e') ? 1 : 0);
+}
+
+// ---- Mouse: click the ground to send the hook; drag the ball ------------------------------------
+
+const canvas = app.canvas;
+const drag = new BodyDrag3D(renderer, { hertz: 2, dampingRatio: 0.3 });
+const ndc: [number, number] = [0, 0];
+const ground = new Plane(new Vector3(0, 1, 0), 0);
+const raycaster = new Raycaster();
+const groundHit = new Vector3();
+let pressId = -1;
+
+/**
+ * A press at (ndcX, ndcY): on the ball, grabs it; elsewhere, sends the hook to the ground point under
+ * the pointer. @returns 'ball', 'hook' or 'none'.
+ */
+function pressAt(ndcX: number, ndcY: number): 'ball' | 'hook' | 'none' {
+  const hit = renderer.pick(ndcX, ndcY, app.camera);
+  if (hit && hit.eid === handles.ball) {
+    drag.grab(ndcX, ndcY, app.camera);
+    return drag.body === handles.ball ? 'ball' : 'none';
+  }
+  raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
+  if (raycaster.ray.intersectPlane(ground, groundHit) === null) return 'none';
+  handles.controls.goal = [groundHit.x, groundHit.z];
+  return 'hook';
+}
+
+canvas.addEventListener('pointerdown', (event) => {
+  if (event.button !== 0) return;
+  app.toNdc(event.clientX, event.clientY, ndc);
+  if (pressAt(ndc[0], ndc[1]) === 'ball') {
+    pressId = event.pointerId;
+    canvas.setPointerCapture(event.pointerId);
+  }
+});
+canvas.addEventListener('pointermove', (event) => {
+  if (event.pointerId !== pressId) return;
+  app.toNdc(event.clientX, event.clientY, ndc);
+  drag.move(ndc[0], ndc[1], app.camera);
+});
+const up = (event: PointerEvent): void => {
+  if (event.pointerId !== pressId) return;
+  pressId = -1;
+  drag.release();
+};
+canvas.addEventListener('pointerup', up);
+canvas.addEventListener('pointercancel', up);
+
+// ---- Panel and status line ---------------------------------------------------------------------
+
+const panel = createPanel(params, [
+  { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: 20, step: 1, onRelease: true, onChange: () => shell.reset() },
+  { type: 'slider', key: 'seed', label: 'seed (rebuilds)', min: 1, max: 999, step: 1, onRelease: true, onChange: () => shell.reset() },
+  { type: 'slider', key: 'ballWeight', label: 'ball weight (× 5.4 t, rebuilds)', min: 0.1, max: 3, step: 0.1, onRelease: true, onChange: () => shell.reset() },
+  { type: 'checkbox', key: 'debug', label: 'debug layer (G)', onChange: (v) => setDebug(v === true) },
+  { type: 'checkbox', key: 'shadows', onChange: (v) => { renderer.setShadows(v === true); if (renderer.lights) renderer.lights.sun.castShadow = v === true; } },
+  { type: 'button', key: 'nextLevel', label: 'next level (L)' },
+  { type: 'button', key: 'reset', label: 'reset level (R)' },
+], { title: 'Wrecking ball' });
+
+const status = document.createElement('div');
+status.className = 'bp-hud';
+status.dataset.hud = 'wrecking-ball';
+status.style.cssText = 'position: static; padding: 4px 8px';
+pageLayout().status.append(status);
+const readout = document.createElement('div');
+readout.className = 'bp-hud';
+readout.style.cssText = 'position: static; margin-top: 8px';
+pageLayout().info.prepend(readout);
+
+let frames = 0;
+const hookAt = new Float64Array(3);
+function frame(): void {
+  updateControls();
+  const c = handles.crane;
+  // Jib: along the slew direction through the mast top, reaching RADIUS_RANGE[1] + 2 out and 2 back.
+  const ca = Math.cos(c.angle), sa = Math.sin(c.angle);
+  const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
+  jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
+  jib.rotation.set(0, c.angle, 0);
+  const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
+  cablePositions[0] = hp[0]!; cablePositions[1] = JIB_HEIGHT; cablePositions[2] = hp[2]!;
+  cablePositions[3] = hp[0]!; cablePositions[4] = hp[1]! + 0.2; cablePositions[5] = hp[2]!;
+  cableGeometry.attributes.position!.needsUpdate = true;
+  if (frames++ % 6 === 0) {
+    const n = handles.pieces.length, f = fallenCount(handles.pieces);
+    status.textContent = cleared
+      ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · press L for level ${handles.level + 1}`
+      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})`;
+    readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
+  }
+}
+
+// ---- window.game ---------------------------------------------------------------------------
+
+shell.expose({
+  params,
+  panel,
+  drag,
+  /** The scene's handles (trolley, links, ball, pieces, crane state, controls). */
+  handles: (): WreckingBallHandles => handles,
+  /** Total score (levels cleared plus this one). */
+  score: (): number => banked + levelScore,
+  /** Whether this level is cleared. */
+  cleared: (): boolean => cleared,
+  /** Smoothed step time, ms. */
+  stepTime: (): number => stepMs,
+  /** A press at (ndcX, ndcY) as the mouse would: 'ball' (grabbed), 'hook' (sent there) or 'none'. */
+  pressAt,
+  /** Goes to the next level (banks the score). */
+  nextLevel,
+});

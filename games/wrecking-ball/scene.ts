@@ -1,0 +1,315 @@
+/**
+ * The wrecking-ball scene: a tower crane whose hook (a kinematic trolley) the player steers, a chain of
+ * capsule links on ball-and-socket joints with a heavy steel ball at its end, and seeded levels of
+ * towers, walls and plank stacks of boxes standing around the crane. A pure builder (no DOM, no
+ * three.js), shared by the page and its tests.
+ *
+ * The crane: the jib turns about the vertical axis at the origin (slew angle, rad), the trolley runs
+ * along it (radius, m) and the hoist sets its height (m). The controls set targets; `craneSystem`
+ * moves the trolley toward them at limited speeds by setting its velocity each substep, so the ball
+ * swings behind it like a real pendulum (period 2 pi sqrt(L / g) for a chain of length L).
+ *
+ * Scoring (`scorePieces`): a piece has fallen once its centre is FALL_DROP below where it stood or
+ * its up axis has tipped past TIP_ANGLE; each fallen piece scores 10 points plus 10 per metre it
+ * stood above the ground. A level is cleared when CLEAR_FRACTION of its pieces have fallen.
+ */
+import {
+  addBallJoint3D, addBody, addDistanceJoint3D, addPlane, addShape3D, addSystem, type PhysicsWorld, type PhysicsWorldOptions,
+} from '@bitphysics/physics';
+
+/** Height of the jib, m. */
+export const JIB_HEIGHT = 11.5;
+/** Smallest and largest trolley radius on the jib, m. */
+export const RADIUS_RANGE: readonly [number, number] = [3, 11];
+/** Lowest and highest hook height, m. */
+export const HOOK_RANGE: readonly [number, number] = [6, 10.5];
+/** Largest slew rate, rad/s; trolley speed along the jib and hoist speed, m/s. */
+export const SLEW_RATE = 0.7;
+export const TROLLEY_SPEED = 3.5;
+export const HOIST_SPEED = 2;
+/** Chain: links, each a capsule of this radius and straight half length, m. */
+export const CHAIN_LINKS = 8;
+export const LINK_RADIUS = 0.07;
+export const LINK_HALF = 0.22;
+/** The ball: radius, m, and density, kg/m^3 (steel). */
+export const BALL_RADIUS = 0.55;
+export const BALL_DENSITY = 7800;
+/** Density of the pieces, kg/m^3 (light wood). */
+export const PIECE_DENSITY = 450;
+/** A piece has fallen when its centre is this far below its start, m, or it has tipped past TIP_ANGLE (rad). */
+export const FALL_DROP = 0.4;
+export const TIP_ANGLE = Math.PI / 3;
+/** Fraction of a level's pieces that must fall to clear it. */
+export const CLEAR_FRACTION = 0.7;
+/** Number of distinct seeded level layouts before they repeat with more pieces. */
+export const LEVELS = 5;
+
+/** What the crane's controls ask for (the page writes these; `craneSystem` reads them each substep). */
+export interface CraneControls {
+  /** Slew: -1, 0 or 1 (turn clockwise seen from above, hold, counter-clockwise), or null to chase `slewTarget`. */
+  slew: number;
+  /** Trolley: -1 in, 0, 1 out. */
+  trolley: number;
+  /** Hoist: -1 down, 0, 1 up. */
+  hoist: number;
+  /** A point to drive the hook to (m, x and z), or null: set by a click on the ground. */
+  goal: [number, number] | null;
+}
+
+/** The crane's state: where the jib points and where the trolley is on it. */
+export interface CraneState {
+  /** Slew angle, rad (0 along +x, counter-clockwise seen from above, i.e. about +y). */
+  angle: number;
+  /** Trolley radius, m. */
+  radius: number;
+  /** Hook height, m. */
+  height: number;
+}
+
+/** One piece of a level: its body and where it started. */
+export interface Piece {
+  body: number;
+  /** Start height of its centre, m. */
+  y0: number;
+  /** Half extents, m. */
+  half: [number, number, number];
+  /** What it belongs to. */
+  kind: 'tower' | 'wall' | 'planks';
+  /** Score it gives when it falls. */
+  points: number;
+  /** Whether it has fallen (set by `scorePieces`). */
+  fallen: boolean;
+  /** The body axis (0 x, 1 y, 2 z of its principal frame) that pointed up at the start. */
+  upAxis: number;
+}
+
+/** What `buildWreckingBall` returns. */
+export interface WreckingBallHandles {
+  /** The kinematic trolley (hook) the chain hangs from. */
+  trolley: number;
+  /** Chain links, top first. */
+  links: number[];
+  /** The ball. */
+  ball: number;
+  /** The pieces of the level. */
+  pieces: Piece[];
+  /** The crane's state (mutated by `craneSystem`). */
+  crane: CraneState;
+  /** The controls (mutated by the page). */
+  controls: CraneControls;
+  /** The level built (1-based) and its seed. */
+  level: number;
+  seed: number;
+  /** The static crane mast's body. */
+  mast: number;
+}
+
+/** Options of `buildWreckingBall`. */
+export interface WreckingBallOptions {
+  /** Level, integer >= 1. Default 1. */
+  level?: number;
+  /** Seed of the layouts, integer. Default 1. */
+  seed?: number;
+  /** Ball mass scale: the ball's density is BALL_DENSITY times this, > 0. Default 1. */
+  ballWeight?: number;
+  /** Where the crane starts (slew angle, trolley radius, hook height; clamped to their ranges). Default angle 0, radius 4 m, height 7.5 m. */
+  crane?: Partial<CraneState>;
+}
+
+/** World options: 3D, Earth gravity, room for the chain and up to a few hundred pieces; 4 substeps for the chain. */
+export function wreckingBallWorldOptions(substeps = 4): PhysicsWorldOptions {
+  return { dimensions: 3, capacity: 1200, gravity: [0, -9.81, 0], substeps };
+}
+
+/** A small seeded generator (mulberry32): numbers in [0, 1). */
+export function seededRandom(seed: number): () => number {
+  let a = (seed >>> 0) || 0x9e3779b9;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/** The hook's position for a crane state, m. */
+export function hookPosition(c: CraneState): [number, number, number] {
+  return [c.radius * Math.cos(c.angle), c.height, -c.radius * Math.sin(c.angle)];
+}
+
+function addPiece(world: PhysicsWorld, pieces: Piece[], kind: Piece['kind'], x: number, y: number, z: number, half: [number, number, number], yaw: number): void {
+  const body = addBody(world, { position: [x, y, z], orientation: [0, Math.sin(yaw / 2), 0, Math.cos(yaw / 2)] });
+  addShape3D(world, body, { type: 'box', halfExtents: half, density: PIECE_DENSITY, friction: 0.6, restitution: 0.05 });
+  let upAxis = 0;
+  for (let i = 1; i < 3; i++) if (Math.abs(upComponent(world, body, i)) > Math.abs(upComponent(world, body, upAxis))) upAxis = i;
+  pieces.push({ body, kind, y0: y, half, points: 10 + Math.round(10 * y), fallen: false, upAxis });
+}
+
+/** A tower of `n` cubes of edge `edge` (m) at (x, z), turned by yaw. */
+function tower(world: PhysicsWorld, pieces: Piece[], x: number, z: number, n: number, edge: number, yaw: number): void {
+  const h = edge / 2;
+  for (let i = 0; i < n; i++) addPiece(world, pieces, 'tower', x, h + i * edge, z, [h, h, h], yaw);
+}
+
+/** A wall of bricks (1.2 x 0.6 x 0.5 m), `rows` high and `cols` long, running along the direction yaw, in stretcher bond (odd rows shifted half a brick, with half bricks at their ends). */
+function wall(world: PhysicsWorld, pieces: Piece[], x: number, z: number, rows: number, cols: number, yaw: number): void {
+  const ux = Math.cos(yaw), uz = -Math.sin(yaw);
+  const L = 1.2, H = 0.6, T = 0.25; // brick length, height, half thickness
+  const put = (s: number, y: number, half: number): void => addPiece(world, pieces, 'wall', x + ux * s * L, y, z + uz * s * L, [half, H / 2, T], yaw);
+  for (let r = 0; r < rows; r++) {
+    const y = H / 2 + r * H;
+    if (r % 2 === 0) {
+      for (let c = 0; c < cols; c++) put(c - (cols - 1) / 2, y, 0.49 * L);
+    } else {
+      for (let c = 0; c < cols - 1; c++) put(c + 0.5 - (cols - 1) / 2, y, 0.49 * L);
+      put(-(cols / 2 - 0.25), y, 0.24 * L);
+      put(cols / 2 - 0.25, y, 0.24 * L);
+    }
+  }
+}
+
+/** A log-cabin stack of planks (2.4 x 0.24 x 0.36 m), `layers` high, crossing at right angles. */
+function planks(world: PhysicsWorld, pieces: Piece[], x: number, z: number, layers: number, yaw: number): void {
+  for (let l = 0; l < layers; l++) {
+    const a = yaw + (l % 2 === 0 ? 0 : Math.PI / 2);
+    const ux = -Math.sin(a), uz = -Math.cos(a); // across the planks
+    for (const s of [-0.9, 0.9]) addPiece(world, pieces, 'planks', x + ux * s, 0.12 + l * 0.24, z + uz * s, [1.2, 0.12, 0.18], a);
+  }
+}
+
+/**
+ * Builds the ground, the crane (mast, trolley, chain, ball) and level `level`'s targets, seeded by
+ * (seed, level); hooks `craneSystem` into the forces stage. Levels grow: more structures and taller
+ * ones, up to about 110 pieces at level 5 and after.
+ * @throws RangeError on a level that is not an integer >= 1, a non-integer seed or a ballWeight <= 0.
+ */
+export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOptions = {}): WreckingBallHandles {
+  const level = options.level ?? 1, seed = options.seed ?? 1, weight = options.ballWeight ?? 1;
+  if (!Number.isInteger(level) || level < 1) throw new RangeError(`buildWreckingBall: level must be an integer >= 1, got ${level}`);
+  if (!Number.isInteger(seed)) throw new RangeError(`buildWreckingBall: seed must be an integer, got ${seed}`);
+  if (!(weight > 0 && Number.isFinite(weight))) throw new RangeError(`buildWreckingBall: ballWeight must be > 0, got ${weight}`);
+  addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: 0.7 });
+  // The mast: a static column the ball can hit.
+  const mast = addBody(world, { position: [0, JIB_HEIGHT / 2, 0], static: true });
+  addShape3D(world, mast, { type: 'box', halfExtents: [0.4, JIB_HEIGHT / 2, 0.4] });
+
+  const at = options.crane ?? {};
+  const crane: CraneState = {
+    angle: wrap(at.angle ?? 0),
+    radius: Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], at.radius ?? 4)),
+    height: Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], at.height ?? 7.5)),
+  };
+  for (const v of [crane.angle, crane.radius, crane.height]) if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null };
+  const [hx, hy, hz] = hookPosition(crane);
+  const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
+  // The chain hangs straight down from the hook; links are joined end to end.
+  const links: number[] = [];
+  const pitch = 2 * (LINK_HALF + LINK_RADIUS);
+  let prev = trolley, top = hy;
+  for (let i = 0; i < CHAIN_LINKS; i++) {
+    const cy = top - pitch / 2;
+    const link = addBody(world, { position: [hx, cy, hz] });
+    addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: 7800, group: -1 });
+    addBallJoint3D(world, { a: prev, b: link, anchor: [hx, top, hz] });
+    links.push(link);
+    prev = link; top -= pitch;
+  }
+  const ball = addBody(world, { position: [hx, top - BALL_RADIUS, hz] });
+  addShape3D(world, ball, { type: 'sphere', radius: BALL_RADIUS, density: BALL_DENSITY * weight, friction: 0.4, restitution: 0.1, group: -1 });
+  addBallJoint3D(world, { a: prev, b: ball, anchor: [hx, top, hz] });
+  // The chain's links are light next to the ball: a rope from the hook to the ball (its length the
+  // chain's) carries the load, so the chain cannot stretch (Box2D's advice for heavy ends on chains).
+  addDistanceJoint3D(world, { a: trolley, b: ball, anchorA: [hx, hy, hz], anchorB: [hx, top - BALL_RADIUS, hz], minLength: 0 });
+
+  const pieces: Piece[] = [];
+  const rng = seededRandom(seed * 7919 + level * 104729);
+  const layout = ((level - 1) % LEVELS) + 1;
+  const extra = Math.floor((level - 1) / LEVELS);
+  const kinds: Array<'tower' | 'wall' | 'planks'> = (
+    [['tower', 'wall', 'planks'], ['tower', 'planks', 'wall', 'tower'], ['wall', 'tower', 'tower', 'planks'], ['tower', 'wall', 'planks', 'wall', 'tower'], ['tower', 'tower', 'wall', 'planks', 'wall']] as const
+  )[layout - 1]!.slice();
+  for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
+  const spread = (2 * Math.PI) / Math.max(3, kinds.length);
+  const start = rng() * 2 * Math.PI;
+  kinds.forEach((kind, i) => {
+    const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
+    const r = 5.5 + rng() * 3.5;
+    const x = r * Math.cos(a), z = -r * Math.sin(a);
+    const facing = a + Math.PI / 2; // walls across the ball's swing about the mast
+    if (kind === 'tower') tower(world, pieces, x, z, 4 + Math.floor(rng() * (2 + layout)), 0.7, rng() * Math.PI);
+    else if (kind === 'wall') wall(world, pieces, x, z, 3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2), facing);
+    else planks(world, pieces, x, z, 4 + Math.floor(rng() * 3), rng() * Math.PI);
+  });
+  const handles: WreckingBallHandles = { trolley, links, ball, pieces, crane, controls, level, seed, mast };
+  addSystem(world, 'forces', craneSystem(handles));
+  return handles;
+}
+
+/** Wraps an angle into (-pi, pi]. */
+function wrap(a: number): number {
+  return a - 2 * Math.PI * Math.floor((a + Math.PI) / (2 * Math.PI));
+}
+
+/**
+ * A forces-stage system that drives the trolley: slews, runs and hoists at the rates the controls ask
+ * for (or toward `goal`), clamped to the jib's ranges, by setting the kinematic trolley's velocity so
+ * it reaches the new state over the substep (h = dt / substeps).
+ */
+export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => void {
+  return (world) => {
+    const c = h.crane, k = h.controls, dt = world.dt / world.substeps;
+    let slew = k.slew, run = k.trolley;
+    if (k.goal !== null) {
+      const [gx, gz] = k.goal;
+      const want = Math.atan2(-gz, gx), d = wrap(want - c.angle);
+      const wantR = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(gx, gz)));
+      slew = Math.max(-1, Math.min(1, d / (SLEW_RATE * 0.3)));
+      run = Math.max(-1, Math.min(1, (wantR - c.radius) / (TROLLEY_SPEED * 0.3)));
+      if (Math.abs(d) < 1e-3 && Math.abs(wantR - c.radius) < 1e-3) k.goal = null;
+    }
+    const before = hookPosition(c);
+    c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
+    c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
+    c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
+    const after = hookPosition(c);
+    const V = world.components.Velocity, P = world.components.Position, e = h.trolley;
+    // Put the trolley exactly where the crane was, and give it the velocity that takes it to the new state.
+    P.x[e] = before[0]; P.y[e] = before[1]; P.z[e] = before[2];
+    V.x[e] = (after[0] - before[0]) / dt; V.y[e] = (after[1] - before[1]) / dt; V.z[e] = (after[2] - before[2]) / dt;
+  };
+}
+
+/**
+ * Marks pieces that have fallen (see the module comment) and returns the points they score now.
+ * Pieces whose bodies were removed count as fallen.
+ */
+export function scorePieces(world: PhysicsWorld, pieces: Piece[]): number {
+  const P = world.components.Position;
+  const cosTip = Math.cos(TIP_ANGLE);
+  let points = 0;
+  for (const p of pieces) {
+    if (p.fallen) continue;
+    const e = p.body;
+    if (P.y[e]! < p.y0 - FALL_DROP || Math.abs(upComponent(world, e, p.upAxis)) < cosTip) {
+      p.fallen = true;
+      points += p.points;
+    }
+  }
+  return points;
+}
+
+/** The y component of body axis `axis` (0 x, 1 y, 2 z) in the world: row y of the rotation matrix of its orientation. */
+export function upComponent(world: PhysicsWorld, e: number, axis: number): number {
+  const O = world.components.Orientation;
+  const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+  return axis === 0 ? 2 * (x * y + w * z) : axis === 1 ? 1 - 2 * (x * x + z * z) : 2 * (y * z - w * x);
+}
+
+/** How many pieces have fallen. */
+export function fallenCount(pieces: readonly Piece[]): number {
+  let n = 0;
+  for (const p of pieces) if (p.fallen) n++;
+  return n;
+}

@@ -1,0 +1,76 @@
+/**
+ * The three.js games on 3D rigid bodies (wrecking-ball, lab-rigid-3d, rotating-cube's room), in headless
+ * Chromium: each loads without errors and draws its shapes, and input changes the game.
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+
+interface Game3D {
+  paused: boolean;
+  step(): void;
+  reset(): void;
+  world: { steps: number; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
+  renderer: { stats: { shaped: number; shapes: { boxes: number; spheres: number; capsules: number; cylinders: number; hulls: number } }; drawnPosition(e: number): number[] | null };
+  app: { camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } } };
+}
+
+describe('3D rigid-body games in headless Chromium', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  async function open(folder: string, query: Record<string, string | number | boolean> = {}): Promise<GamePage> {
+    const g = await h.openGame(folder, { query, readyTimeoutMs: 60_000 });
+    expect(await g.canvasColors()).toBeGreaterThan(16);
+    expect(g.errors).toEqual([]);
+    return g;
+  }
+
+  it('wrecking-ball: keys slew the crane, a click sends the hook, a drag on the ball pulls it', async () => {
+    const g = await open('wrecking-ball', { shadows: 0 });
+    type WB = Game3D & {
+      handles(): { ball: number; pieces: unknown[]; crane: { angle: number; radius: number }; controls: { goal: number[] | null } };
+      pressAt(x: number, y: number): string;
+      drag: { body: number; moveTo(p: number[]): void; release(): void };
+      score(): number;
+    };
+    const drawn = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      return { pieces: game.handles().pieces.length, ...game.renderer.stats.shapes, shaped: game.renderer.stats.shaped };
+    });
+    expect(drawn.boxes).toBe(drawn.pieces + 1); // the pieces and the mast
+    expect(drawn.capsules).toBe(8); // the chain
+    expect(drawn.spheres).toBe(1); // the ball
+    const a0 = await g.page.evaluate(() => (window.game as unknown as WB).handles().crane.angle);
+    await g.page.keyboard.down('a');
+    await g.waitFor((a) => (window.game as unknown as WB).handles().crane.angle > a + 0.05, a0, 20_000);
+    await g.page.keyboard.up('a');
+    // A click on the ground in front of the crane sends the hook there (the goal is set at once).
+    await g.press('p');
+    await g.clickCanvas(0.5, 0.85);
+    const goal = await g.page.evaluate(() => (window.game as unknown as WB).handles().controls.goal);
+    expect(goal).not.toBeNull();
+    // A press on the ball grabs it; moving the hand pulls it.
+    const r = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const ball = game.handles().ball, P = game.world.components.Position;
+      const at = game.renderer.drawnPosition(ball)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const pressed = game.pressAt(s.x, s.y);
+      const x0 = P.x[ball]!;
+      game.drag.moveTo([x0 + 3, P.y[ball]! + 1, P.z[ball]!]);
+      for (let i = 0; i < 40; i++) game.step();
+      const moved = P.x[ball]! - x0;
+      game.drag.release();
+      return { pressed, moved };
+    });
+    expect(r.pressed).toBe('ball');
+    expect(r.moved).toBeGreaterThan(0.5);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
