@@ -96,7 +96,7 @@ export {
 } from './forces/api.js';
 export { vortexSystem } from './forces/vortex.js';
 export {
-  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particleLook, lifetimeSystem, emitterSystem,
+  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particlesExpired, particleLook, lifetimeSystem, emitterSystem,
   EmitterShape, CapacityPolicy, MAX_EMITTER_RATE, maxSpawnsPerStep,
 } from './particles/emitter.js';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';

@@ -1,4 +1,4 @@
-import { onParticleDeath } from '@bitphysics/physics';
+import { particlesExpired } from '@bitphysics/physics';
 import type { BenchScene, ExtraValue } from './types.js';
 import { collectGarbage } from '../memory.js';
 import { summarize } from '../stats.js';
@@ -20,7 +20,7 @@ const num = (digits: number) => (v: ExtraValue): string => (typeof v === 'number
  *
  * - live particles (min / median / max over the timed steps): the world's live entities less the
  *   scene's three emitters;
- * - spawned per step (every emitter's `spawned` counter), expired per step (an `onParticleDeath` hook:
+ * - spawned per step (every emitter's `spawned` counter), expired per step (`particlesExpired`:
  *   lifetimes that ran out) and recycled per step (spawned - expired - change of live: particles the
  *   'recycle-oldest' policy removed because the world was full), means over the timed steps;
  * - the V8 heap at the start of the timed run (after a full garbage collection), at its end (as it
@@ -48,8 +48,6 @@ export const fireworksBench: BenchScene = {
     const spawnedOf = world.components.Emitter.spawned;
     const droppedOf = world.components.Emitter.dropped;
     const others = world.entityIndex.aliveCount; // the emitters: everything alive before the first particle
-    let expiredTotal = 0;
-    onParticleDeath(world, () => { expiredTotal++; });
     const spawnedNow = (): number => spawnedOf[emitters[0]!]! + spawnedOf[emitters[1]!]! + spawnedOf[emitters[2]!]!;
     const droppedNow = (): number => droppedOf[emitters[0]!]! + droppedOf[emitters[1]!]! + droppedOf[emitters[2]!]!;
 
@@ -61,7 +59,7 @@ export const fireworksBench: BenchScene = {
       beginTiming(steps: number): void {
         live = new Float64Array(steps); spawned = new Float64Array(steps); expired = new Float64Array(steps);
         k = 0;
-        lastSpawned = spawnedNow(); lastExpired = expiredTotal; droppedStart = droppedNow();
+        lastSpawned = spawnedNow(); lastExpired = particlesExpired(world); droppedStart = droppedNow();
         liveStart = world.entityIndex.aliveCount - others;
         collectGarbage();
         collectGarbage();
@@ -85,7 +83,8 @@ export const fireworksBench: BenchScene = {
         live[k] = alive - others;
         const s = spawnedNow();
         spawned[k] = s - lastSpawned; lastSpawned = s;
-        expired[k] = expiredTotal - lastExpired; lastExpired = expiredTotal;
+        const ex = particlesExpired(world);
+        expired[k] = ex - lastExpired; lastExpired = ex;
         k++;
       },
       endTiming(): void {

@@ -114,7 +114,10 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
 /** Removal hook: removes every spring attached to `eid` (so no spring ever pulls a recycled id). */
 export function removeSpringsOf(world: PhysicsWorld, eid: number): void {
   const c = world.components;
+  // Most removals (particle churn) meet no spring: return before allocating (the store is allocated with the first spring).
+  if (c.Spring.a.length === 0) return;
   const springs = query(world, [c.Spring]);
+  if (springs.length === 0) return;
   const doomed: number[] = [];
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;

@@ -1,6 +1,10 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle, resolveKind } from '../handles.js';
+import { DEFAULT_MATERIAL } from '../components.js';
+import {
+  archetypeFromEntity, bornSlot, createArchetypeTable, defragment, ecsOf, killSlot, prepareArchetype, settle, type Archetype, type ArchetypeTable,
+} from './archetype.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
 import {
@@ -133,53 +137,82 @@ interface ParticleBook {
   /** FIFO of spawned particles (eid and spawn stamp), oldest at head; stale entries skipped. */
   ids: Int32Array; stamps: Uint32Array; head: number; count: number;
   hooks: ParticleDeathHook[];
-  /** Scratch: expired particles this step, and bursts to spawn (x, y, z, vx, vy, vz, emitter, count, generation). */
-  expired: Int32Array; bursts: Float64Array; burstCount: number;
+  /**
+   * Scratch: expired particles this step and their spawn stamps, and bursts to spawn (x, y, z, vx, vy,
+   * vz, emitter, count, generation).
+   */
+  expired: Int32Array; expiredStamps: Uint32Array; bursts: Float64Array; burstCount: number;
   /** Spawns left this step (`maxSpawnsPerStep`), and the step (`world.steps`) it belongs to. */
   budget: number; budgetStep: number;
+  /** Particles whose lifetime ran out, removed by `lifetimeSystem`, since the world was made. */
+  expiredTotal: number;
+  /** How far the query lists have drifted from slot order (see archetype.ts, `defragment`). */
+  order: { disorder: number };
+  /**
+   * The churn path's cache of bitecs' structure (particle archetypes, component sets kept for reuse);
+   * not state: a restored world rebuilds it (kept out of snapshots, like the hooks).
+   */
+  arch: ArchetypeTable;
 }
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
 registerExternalWorldState({
-  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks'],
+  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks', 'arch'],
 });
 
-function book(world: PhysicsWorld): ParticleBook {
+/** The particle book of `world`, made on first use. */
+export function book(world: PhysicsWorld): ParticleBook {
   let b = books.get(world);
   if (!b) {
     const n = world.capacity + 1;
     b = {
-      ids: new Int32Array(n), stamps: new Uint32Array(n), head: 0, count: 0, hooks: [],
-      expired: new Int32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
-      budget: maxSpawnsPerStep(world), budgetStep: world.steps,
+      // Twice the capacity: the FIFO holds the gone particles too until they reach its head or it is compacted.
+      ids: new Int32Array(2 * n), stamps: new Uint32Array(2 * n), head: 0, count: 0, hooks: [],
+      expired: new Int32Array(n), expiredStamps: new Uint32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
+      budget: maxSpawnsPerStep(world), budgetStep: world.steps, expiredTotal: 0, order: { disorder: 0 }, arch: createArchetypeTable(0, { disorder: 0 }),
     };
+    b.arch = createArchetypeTable(world.capacity, b.order);
     books.set(world, b);
   }
   return b;
 }
 
-function pushParticle(world: PhysicsWorld, b: ParticleBook, eid: number): void {
+function pushParticle(world: PhysicsWorld, b: ParticleBook, e: number): void {
   const size = b.ids.length;
-  if (b.count === size) compact(world, b);
+  if (b.count === size) {
+    // Oldest first: drop the gone ones at the head, and compact only if the oldest is still alive.
+    const spawn = world.spawnStamp;
+    while (b.count > 0 && !(spawn[b.ids[b.head]!] === b.stamps[b.head] && slotAlive(world, b.ids[b.head]!))) { b.head = (b.head + 1) % size; b.count--; }
+    if (b.count === size) compact(world, b);
+  }
   const i = (b.head + b.count) % size;
-  b.ids[i] = eid;
-  b.stamps[i] = world.spawnStamp[eid]!;
+  b.ids[i] = e;
+  b.stamps[i] = world.spawnStamp[e]!;
   b.count++;
 }
 
-/** Drops stale entries (particles already gone, or ids reused) from the FIFO, keeping order. */
+/** Whether the slot's entity is alive (bitecs' entity index, read directly: this runs for every FIFO entry). */
+function slotAlive(world: PhysicsWorld, e: number): boolean {
+  const ix = world.entityIndex;
+  const i = ix.sparse[e];
+  return i !== undefined && i < ix.aliveCount && ix.dense[i] === e;
+}
+
+/**
+ * Drops stale entries (particles already gone: slot empty or its spawn stamp moved on) from the FIFO,
+ * keeping order. Runs when the FIFO is full, a few times a lifetime of the particles: O(capacity) then.
+ */
 function compact(world: PhysicsWorld, b: ParticleBook): void {
   const size = b.ids.length;
-  const P = world.components.Particle;
+  const ids = b.ids, stamps = b.stamps, spawn = world.spawnStamp;
   let w = 0;
   for (let k = 0; k < b.count; k++) {
     const i = (b.head + k) % size;
-    const e = b.ids[i]!;
-    if (live(world, e, b.stamps[i]!)) { b.ids[w] = e; b.stamps[w] = b.stamps[i]!; w++; }
+    const e = ids[i]!, st = stamps[i]!;
+    if (spawn[e] === st && slotAlive(world, e)) { ids[w] = e; stamps[w] = st; w++; }
   }
   b.head = 0;
   b.count = w;
-  void P;
 }
 
 function live(world: PhysicsWorld, e: number, stamp: number): boolean {
@@ -193,14 +226,22 @@ function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
     const e = b.ids[b.head]!, stamp = b.stamps[b.head]!;
     b.head = (b.head + 1) % size;
     b.count--;
-    if (live(world, e, stamp)) { removeParticle(world, e); return true; }
+    if (live(world, e, stamp)) { removeParticle(world, b, e); return true; }
   }
   return false;
 }
 
-function removeParticle(world: PhysicsWorld, e: number): void {
+/**
+ * Removes particle `e` now: the world's removal hooks (springs, joints, sleeping neighbours), then the
+ * churn path's removal (`killSlot`, pending until `settle`) or bitecs' own for a particle whose
+ * components were changed to a set no emitter gives.
+ */
+function removeParticle(world: PhysicsWorld, b: ParticleBook, e: number): void {
+  // Hooks may query: they must not meet a pending death in a query's list.
+  settle(b.arch);
   for (const hook of world.removeHooks) hook(world, e);
-  removeEntity(world, e);
+  if (!entityExists(world, e)) return;
+  if (!killSlot(world, ecsOf(world), b.arch, e)) removeEntity(world, e);
 }
 
 const sample = new Float64Array(6);
@@ -253,10 +294,34 @@ function draw(world: PhysicsWorld, em: number): void {
 }
 
 /**
- * Spawns one particle of emitter `em` at (x, y, z) + shape offset with inherited velocity
- * (bx, by, bz) (already scaled), applying the capacity policy. Returns the entity or 0 if dropped.
+ * The particle kind of emitter `em`: which components its particles carry beyond Position, Velocity,
+ * Lifetime and Particle, as bits (1: mass and a force accumulator, 2: LinearDrag, 4: QuadraticDrag,
+ * 8: GravityScale, 16: Ball). Particles of one kind share an archetype.
  */
-function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y: number, z: number, bx: number, by: number, bz: number, generation: number): number {
+function particleKind(world: PhysicsWorld, em: number): number {
+  const E = world.components.Emitter;
+  const mass = E.mass[em]!, ld = E.linearDrag[em]!, qd = E.quadraticDrag[em]!, gs = E.gravityScale[em]!, r = E.radius[em]!;
+  if (!(mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0)) return 0;
+  return 1 | (ld > 0 ? 2 : 0) | (qd > 0 ? 4 : 0) | (gs !== 1 ? 8 : 0) | (r > 0 ? 16 : 0);
+}
+
+/**
+ * The archetype of emitter `em`'s particles, ready for a batch of births (`prepareArchetype`), or
+ * undefined if no particle of its kind was made yet in this world, or a store of the kind has no
+ * arrays (the next particle then goes through bitecs).
+ */
+function archetypeFor(world: PhysicsWorld, b: ParticleBook, em: number): Archetype | undefined {
+  const a = b.arch.byKey.get(particleKind(world, em));
+  return a !== undefined && prepareArchetype(world, a) ? a : undefined;
+}
+
+/**
+ * Spawns one particle of emitter `em` at (x, y, z) + shape offset with inherited velocity
+ * (bx, by, bz) (already scaled), applying the capacity policy. `a` is the archetype of the emitter's
+ * particles (from `archetypeFor`), or undefined to make the first one of its kind through bitecs.
+ * Returns the entity or 0 if dropped.
+ */
+function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y: number, z: number, bx: number, by: number, bz: number, generation: number, a: Archetype | undefined): number {
   const c = world.components;
   const E = c.Emitter;
   if (world.entityIndex.aliveCount >= world.capacity) {
@@ -264,17 +329,37 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
       E.dropped[em] = E.dropped[em]! + 1;
       return 0;
     }
+    // The removal hooks may have removed entities through bitecs.
+    if (a !== undefined && !prepareArchetype(world, a)) a = undefined;
   }
   draw(world, em);
   const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
   const vx = sample[3]! + bx, vy = sample[4]! + by, vz = sample[5]! + bz;
   // x * 0 is NaN exactly when x is NaN or infinite: refuse the spawn before creating anything.
   if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz);
-  const e = createSlot(world, 'emitter');
-  addComponent(world, e, c.Position);
-  addComponent(world, e, c.Velocity);
-  addComponent(world, e, c.Lifetime);
-  addComponent(world, e, c.Particle);
+  let e: number;
+  if (a === undefined) {
+    e = spawnThroughBitecs(world, b, em);
+  } else {
+    e = bornSlot(world, ecsOf(world), b.arch, a);
+    // What bitecs' observers write when these components are added (create-world.ts), then the particle.
+    c.AngularVelocity.x[e] = 0; c.AngularVelocity.y[e] = 0; c.AngularVelocity.z[e] = 0;
+    c.Force.x[e] = 0; c.Force.y[e] = 0; c.Force.z[e] = 0;
+    c.Torque.x[e] = 0; c.Torque.y[e] = 0; c.Torque.z[e] = 0;
+    const kind = particleKind(world, em);
+    if (kind !== 0) {
+      const mass = E.mass[em]!, m = mass > 0 ? mass : 1;
+      c.Mass.value[e] = m; c.Mass.inv[e] = 1 / m;
+      if ((kind & 2) !== 0) c.LinearDrag.k[e] = E.linearDrag[em]!;
+      if ((kind & 4) !== 0) c.QuadraticDrag.k[e] = E.quadraticDrag[em]!;
+      if ((kind & 8) !== 0) c.GravityScale.value[e] = E.gravityScale[em]!;
+      if ((kind & 16) !== 0) {
+        c.Ball.radius[e] = E.radius[em]!;
+        const M = c.Material;
+        M.restitution[e] = DEFAULT_MATERIAL.restitution; M.friction[e] = DEFAULT_MATERIAL.friction; M.staticFriction[e] = DEFAULT_MATERIAL.friction;
+      }
+    }
+  }
   c.Position.x[e] = px; c.Position.y[e] = py; c.Position.z[e] = pz;
   c.PreviousPosition.x[e] = px; c.PreviousPosition.y[e] = py; c.PreviousPosition.z[e] = pz;
   c.Velocity.x[e] = vx; c.Velocity.y[e] = vy; c.Velocity.z[e] = vz;
@@ -286,6 +371,26 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
   P.colorStart[e] = E.colorStart[em]!; P.colorEnd[e] = E.colorEnd[em]!;
   P.sizeStart[e] = E.sizeStart[em]!; P.sizeEnd[e] = E.sizeEnd[em]!;
   P.alphaStart[e] = E.alphaStart[em]!; P.alphaEnd[e] = E.alphaEnd[em]!;
+  pushParticle(world, b, e);
+  E.spawned[em] = E.spawned[em]! + 1;
+  return e;
+}
+
+/**
+ * The first particle of a kind: made through bitecs (observers write the defaults, allocate lazy
+ * stores and add dependent components), and its component set registered as the kind's archetype.
+ * Returns its slot; the caller writes position, velocity, lifetime and look.
+ */
+function spawnThroughBitecs(world: PhysicsWorld, b: ParticleBook, em: number): number {
+  // bitecs may hand out a slot still pending in its queries: archetypeFromEntity takes it out of
+  // the ones its new components do not match, as a fast birth would.
+  const c = world.components;
+  const E = c.Emitter;
+  const e = createSlot(world, 'emitter');
+  addComponent(world, e, c.Position);
+  addComponent(world, e, c.Velocity);
+  addComponent(world, e, c.Lifetime);
+  addComponent(world, e, c.Particle);
   const mass = E.mass[em]!, ld = E.linearDrag[em]!, qd = E.quadraticDrag[em]!, gs = E.gravityScale[em]!, r = E.radius[em]!;
   if (mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0) {
     addComponent(world, e, c.Mass);
@@ -297,8 +402,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
     if (gs !== 1) { addComponent(world, e, c.GravityScale); c.GravityScale.value[e] = gs; }
     if (r > 0) { addComponent(world, e, c.Ball); c.Ball.radius[e] = r; }
   }
-  pushParticle(world, b, e);
-  E.spawned[em] = E.spawned[em]! + 1;
+  archetypeFromEntity(world, b.arch, particleKind(world, em), e);
   return e;
 }
 
@@ -331,19 +435,24 @@ function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: numb
   const n = takeBudget(world, b, count);
   if (n < count) E.dropped[em] = E.dropped[em]! + (count - n);
   const k = E.inherit[em]!;
+  let a = archetypeFor(world, b, em);
   for (let i = 0; i < n; i++) {
-    if (spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation) === 0) {
+    if (spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation, a) === 0) {
       // The world is full and the policy could not make room: the rest of this batch cannot fit either.
       E.dropped[em] = E.dropped[em]! + (n - i - 1);
       return;
     }
+    if (a === undefined) a = archetypeFor(world, b, em);
   }
 }
 
 /**
  * Stage 1, first: ages every particle by dt, and removes the ones whose lifetime ran out, after
  * running the death hooks and recording bursts into their emitter's death emitter (if the particle's
- * generation is below the limit). Removals happen after the pass over the live list (bitecs trap).
+ * generation is below the limit); then spawns the bursts. Every expiring particle's hooks (the
+ * `onParticleDeath` hooks, then the world's removal hooks) run before any of them is removed, and the
+ * removals come after the pass over the live list (bitecs trap). Births of the bursts reuse the slots
+ * just freed in place (see archetype.ts), so steady churn leaves the query lists in slot order.
  */
 export function lifetimeSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -356,24 +465,42 @@ export function lifetimeSystem(world: PhysicsWorld): void {
   // rounding of summed steps (thirty steps of 1/60 s add up to just under 0.5 s).
   const slack = 1e-9 * dt;
   const age = L.age, duration = L.duration;
+  const stamps = world.spawnStamp, expired = b.expired, expiredStamps = b.expiredStamps;
   let n = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const a = age[e]! + dt;
     age[e] = a;
-    if (a >= duration[e]! - slack) b.expired[n++] = e;
+    if (a >= duration[e]! - slack) { expired[n] = e; expiredStamps[n] = stamps[e]!; n++; }
   }
   if (n === 0) return;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   b.burstCount = 0;
+  const hooks = b.hooks, removeHooks = world.removeHooks;
+  // The death emitter of the last emitter looked at (0: none, -1: not looked at): particles of one
+  // emitter die together. Valid while no user hook runs (a hook may remove an emitter).
+  let lastEm = 0, lastStamp = 0, lastTarget = -1;
+  // Hooks first, for every expiring particle still alive (a hook may remove another one).
   for (let k = 0; k < n; k++) {
-    const e = b.expired[k]!;
-    for (const hook of b.hooks) hook(world, e);
+    const e = expired[k]!;
+    if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
+    if (hooks.length > 0) {
+      for (let h = 0; h < hooks.length; h++) hooks[h]!(world, e);
+      lastTarget = -1;
+      if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
+    }
     if (hasComponent(world, e, P)) {
       const em = P.emitter[e]!;
-      if (em > 0 && world.spawnStamp[em] === P.emitterStamp[e] && entityExists(world, em) && hasComponent(world, em, E)) {
-        const target = E.deathEmitter[em]!, gen = P.generation[e]!;
-        if (target > 0 && gen < E.maxGeneration[em]! && entityExists(world, target) && hasComponent(world, target, E)) {
+      if (lastTarget < 0 || em !== lastEm || P.emitterStamp[e] !== lastStamp) {
+        lastEm = em; lastStamp = P.emitterStamp[e]!; lastTarget = 0;
+        if (em > 0 && stamps[em] === lastStamp && entityExists(world, em) && hasComponent(world, em, E)) {
+          const target = E.deathEmitter[em]!;
+          if (target > 0 && entityExists(world, target) && hasComponent(world, target, E)) lastTarget = target;
+        }
+      }
+      if (lastTarget > 0) {
+        const target = lastTarget, gen = P.generation[e]!;
+        if (gen < E.maxGeneration[em]!) {
           if ((b.burstCount + 1) * 9 > b.bursts.length) { const nb = new Float64Array(b.bursts.length * 2); nb.set(b.bursts); b.bursts = nb; }
           const o = b.burstCount++ * 9;
           const B = b.bursts;
@@ -382,13 +509,26 @@ export function lifetimeSystem(world: PhysicsWorld): void {
         }
       }
     }
-    removeParticle(world, e);
+    for (let h = 0; h < removeHooks.length; h++) removeHooks[h]!(world, e);
   }
-  const B = b.bursts;
-  for (let k = 0; k < b.burstCount; k++) {
-    const o = k * 9;
-    spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
+  // Then the removals, and the bursts' births into the freed slots.
+  const ecs = ecsOf(world);
+  try {
+    for (let k = 0; k < n; k++) {
+      const e = expired[k]!;
+      if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
+      if (!killSlot(world, ecs, b.arch, e)) removeEntity(world, e);
+      b.expiredTotal++;
+    }
+    const B = b.bursts;
+    for (let k = 0; k < b.burstCount; k++) {
+      const o = k * 9;
+      spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
+    }
+  } finally {
+    settle(b.arch);
   }
+  defragment(world, b.arch);
 }
 
 /**
@@ -425,8 +565,13 @@ export function emitterSystem(world: PhysicsWorld): void {
     }
     if (n === 0) continue;
     const moving = hasComponent(world, em, c.Velocity);
-    spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
+    try {
+      spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
+    } finally {
+      settle(b.arch);
+    }
   }
+  defragment(world, b.arch);
 }
 
 function range(where: string, name: string, v: number | [number, number], positive: boolean): [number, number] {
@@ -628,8 +773,14 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
   const k = world.components.Emitter.inherit[slot]!;
   const before = world.components.Emitter.spawned[slot]!;
   const b = book(world);
-  for (let i = 0; i < count; i++) {
-    spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0);
+  try {
+    let a = archetypeFor(world, b, slot);
+    for (let i = 0; i < count; i++) {
+      spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0, a);
+      if (a === undefined) a = archetypeFor(world, b, slot);
+    }
+  } finally {
+    settle(b.arch);
   }
   return world.components.Emitter.spawned[slot]! - before;
 }
@@ -663,6 +814,16 @@ export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): (
   const b = book(world);
   b.hooks.push(hook);
   return () => { const i = b.hooks.indexOf(hook); if (i >= 0) b.hooks.splice(i, 1); };
+}
+
+/**
+ * How many particles' lifetimes ran out in `world` since it was made: every particle the spawn stage
+ * removed on expiry (not those removed by the API or recycled by a full world's 'recycle-oldest'
+ * policy). An exact count, kept in snapshots; with each emitter's `Emitter.spawned` it gives births
+ * and deaths per step without a death hook.
+ */
+export function particlesExpired(world: PhysicsWorld): number {
+  return books.get(world)?.expiredTotal ?? 0;
 }
 
 /** A particle's look now: colour 0xRRGGBB, size (m) and alpha, linear in age / duration. */
