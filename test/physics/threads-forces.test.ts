@@ -8,6 +8,7 @@ import { Rng } from '../../packages/physics/src/rng.js';
 import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut.js';
 import { KERNEL, KERNELS } from '../../packages/physics/src/threads/kernels.js';
 import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
+import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 
 // Force laws on the world's threads: Barnes-Hut's walk (each thread replays the walk for its own
 // bodies, in the one-thread order), drag and angular damping (one body's arithmetic a thread). The
@@ -17,8 +18,10 @@ import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
 const worlds: PhysicsWorld[] = [];
 afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
 
+/** A world whose parallel loops always take the threads (not the adaptive choice), so the tests see them. */
 function make(options: PhysicsWorldOptions): PhysicsWorld {
   const w = createPhysicsWorld(options);
+  if (w.threadPool !== null) w.threadPool.adaptive = false;
   worlds.push(w);
   return w;
 }
@@ -165,3 +168,43 @@ test('a world with nothing to collide does not check its bodies again after the 
   stepMany(world, 1);
   expect(stageNeedsCheck(world, 'collide', world.stages.collide)).toBe(2);
 });
+
+test('the adaptive choice: threads first, then one thread, then the faster by its average, probing the other every 24th call', () => {
+  const c = new LoopChooser();
+  const site = 'loop';
+  const ran: boolean[] = [];
+  // The threads take 2 ms, one thread 1 ms, for 1000 elements.
+  for (let i = 0; i < 60; i++) {
+    const parallel = c.choose(site);
+    ran.push(parallel);
+    c.record(site, parallel, parallel ? 2 : 1, 1000);
+  }
+  expect(ran.slice(0, 4)).toEqual([true, true, false, false]);
+  expect(c.preference(site)).toBe(false);
+  // After the first four calls only the probes (calls 24 and 48) take the threads.
+  expect(ran.map((p, i) => (p && i >= 4 ? i : -1)).filter((i) => i >= 0)).toEqual([24, 48]);
+  // When the threads become faster (0.4 ms), the average follows and they are preferred.
+  for (let i = 0; i < 60; i++) {
+    const parallel = c.choose(site);
+    c.record(site, parallel, parallel ? 0.4 : 1, 1000);
+  }
+  expect(c.preference(site)).toBe(true);
+});
+
+test('an adaptive world gives the same state as a forced-parallel one and as one thread (the choice changes only the time)', () => {
+  const n = 2 * MIN_PARALLEL_PER_THREAD + 5;
+  const run = (threads: number, adaptive: boolean): string => {
+    const world = make({ dimensions: 2, capacity: n, gravity: [0, -9.81], threads });
+    if (world.threadPool !== null) world.threadPool.adaptive = adaptive;
+    const rng = new Rng(4);
+    for (let i = 0; i < n; i++) {
+      const e = addBody(world, { position: [rng.range(-50, 50), rng.range(0, 50)], velocity: [rng.range(-3, 3), 0] });
+      setDrag(world, e, { linear: rng.range(0, 1) });
+    }
+    stepMany(world, 8);
+    return stateHash(world);
+  };
+  const one = run(1, true);
+  expect(run(2, true)).toBe(one);
+  expect(run(2, false)).toBe(one);
+}, 60_000);

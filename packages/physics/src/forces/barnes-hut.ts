@@ -5,6 +5,7 @@ import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../thread
 import { INFO_STRIDE } from './barnes-hut-walk.js';
 import { BOX_STRIDE, mortonKeys, treeForces, treeGather } from './barnes-hut-gather.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
+import { nowMs } from '../threads/adaptive.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -549,8 +550,9 @@ function openFactor(theta: number): number {
  * eps2 = eps^2 (m^2, >= 0) and opening angle theta (> 0). Written into t.ax, t.ay, t.az in tree order
  * (slot s holds input body t.perm[s]); see treeFields for input order. Interaction counts go to t.stats.
  * With a thread pool (`pool`, of a world with threads > 1, whose tree is shared) and at least
- * BARNES_HUT_MIN_PER_THREAD bodies a thread, the evaluation runs on the pool's threads; the fields
- * are identical to the bit to the one-thread evaluation (see the file's header).
+ * BARNES_HUT_MIN_PER_THREAD bodies a thread, the evaluation runs on the pool's threads (an adaptive
+ * pool keeps it on one thread while that has been faster); the fields are identical to the bit to
+ * the one-thread evaluation (see the file's header).
  * @throws Error naming `system` if a worker thread failed.
  */
 export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number, pool: ThreadPool | null = null, system = 'treeFieldsSorted'): void {
@@ -558,7 +560,11 @@ export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta:
   t.stats.cellPairs = 0; t.stats.bodyPairs = 0; t.stats.visits = 0;
   if (t.nonFinite) { t.ax.fill(NaN, 0, n); t.ay.fill(NaN, 0, n); t.az.fill(NaN, 0, n); return; }
   if (n === 0) return;
-  const threads = pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= MAX_PARTS && pool.usable() ? pool.threads : 1;
+  let threads = pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= MAX_PARTS && pool.usable() ? pool.threads : 1;
+  // An adaptive pool keeps the walk on one thread while that has been faster (threads/adaptive.ts).
+  const site = t.dims === 3 ? 'barnes-hut walk 3D' : 'barnes-hut walk 2D';
+  const adaptive = threads > 1 && pool!.adaptive;
+  if (adaptive && !pool!.chooser.choose(site)) threads = 1;
   const nl = t.dims === 3 ? NL3 : NL2;
   const accOffset = t.start.length * nl, size = accOffset + 3 * t.x.length;
   if (t.scratch.length < threads || t.scratch[0]!.length !== size) {
@@ -571,8 +577,10 @@ export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta:
   P[0] = G; P[1] = eps2; P[2] = openFactor(theta); P[3] = t.nodeCount; P[4] = n;
   P[5] = accOffset; P[6] = accOffset + t.x.length; P[7] = accOffset + 2 * t.x.length;
   const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
+  const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
   else KERNELS[kernel]!(arrays, P, null, 0, 1, 0);
+  if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {
     t.stats.cellPairs += info[p * INFO_STRIDE]!; t.stats.bodyPairs += info[p * INFO_STRIDE + 1]!; t.stats.visits += info[p * INFO_STRIDE + 2]!;

@@ -2,11 +2,16 @@
  * When and how a system splits its loop over the world's threads. A loop goes parallel only if the
  * world has a pool, its workers have started, the loop is long enough to pay for waking them
  * (`MIN_PARALLEL_PER_THREAD` entities a thread: below it one thread is faster, so small worlds fall
- * back to one thread by themselves) and every array it touches is shared.
+ * back to one thread by themselves) and every array it touches is shared. Past that, an adaptive
+ * pool (the default) times the loop both ways and keeps to one thread while the threads have not been
+ * faster (adaptive.ts), so a loop the threads do not help, or a machine whose other cores are busy,
+ * costs at most the occasional probe.
  */
 
 import type { PhysicsWorld } from '../world.js';
 import { isShared, type ThreadPool } from './pool.js';
+import { KERNELS } from './kernels.js';
+import { nowMs } from './adaptive.js';
 import type { KernelArray } from './kernels.js';
 
 /**
@@ -42,7 +47,17 @@ export function runOnPool(
   if (pool === null || pool.threads > MAX_POOL_PARTS || n < minPerThread * pool.threads) return null;
   for (let i = 0; i < arrays.length; i++) if (!isShared(arrays[i]!)) return null;
   if (!pool.usable()) return null;
-  return pool.run(system, kernel, arrays, params, n, ids);
+  if (!pool.adaptive) return pool.run(system, kernel, arrays, params, n, ids);
+  // Threads or this thread alone, whichever has been faster for this loop (threads/adaptive.ts); the
+  // same kernel either way, so the result does not depend on the choice.
+  const site = system + '#' + kernel;
+  const parallel = pool.chooser.choose(site);
+  const t0 = nowMs();
+  const result = parallel
+    ? pool.run(system, kernel, arrays, params, n, ids)
+    : KERNELS[kernel]!(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0);
+  pool.chooser.record(site, parallel, nowMs() - t0, n);
+  return result;
 }
 
 /** Most threads a per-range result array (such as a bounding box a range) is sized for. */

@@ -14,6 +14,7 @@
 import { KERNELS, type KernelArray } from './kernels.js';
 import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
 import { workerSource } from './worker-source.js';
+import { LoopChooser } from './adaptive.js';
 
 /** The least a worker must offer: Node's Worker and the browser's Worker both do. */
 interface AnyWorker {
@@ -162,6 +163,15 @@ export class ThreadPool {
     }
     this.ready = Promise.all(started).then(() => undefined);
   }
+
+  /**
+   * Whether parallel loops choose between the threads and one thread by the time each takes
+   * (adaptive.ts; default true). False: every loop long enough runs on the threads (for tests).
+   */
+  adaptive = true;
+
+  /** The per-loop choices of an adaptive pool. */
+  readonly chooser = new LoopChooser();
 
   /** Whether every worker has started (a browser pool runs on one thread until then). */
   isReady(): boolean {

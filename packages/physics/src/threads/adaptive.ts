@@ -1,0 +1,72 @@
+/**
+ * Chooses, loop by loop, between running a parallel loop on the pool's threads and running the same
+ * kernel on the calling thread alone, by the time each took (per element, smoothed). A loop that the
+ * threads do not speed up (too short to pay for waking the workers, or a machine whose other cores
+ * are busy) so falls back to one thread by itself, and probes the threads again now and then. Both
+ * ways run the same kernel on the same data, so the choice never changes a result, only the time.
+ *
+ * Policy per loop (a `site`): the first two calls run parallel (the first is not timed: it may pay
+ * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
+ * moving average, except every PROBE_EVERY-th call, which runs the other way and replaces that way's
+ * average by its time (so a change of load is noticed at the next probe).
+ */
+
+/** Calls between two runs of the way not currently preferred. */
+export const PROBE_EVERY = 24;
+
+/** Weight of the newest time in a moving average. */
+const ALPHA = 0.3;
+
+/** What is known of one loop. */
+interface Site {
+  /** Calls so far. */
+  calls: number;
+  /** Moving averages of the time per element, ms, on the threads and on one thread (NaN: not measured yet). */
+  parallel: number;
+  serial: number;
+}
+
+/** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
+export function nowMs(): number {
+  const p = (globalThis as { performance?: { now(): number } }).performance;
+  return p !== undefined ? p.now() : Date.now();
+}
+
+/** The choices of one pool (see the file's header). */
+export class LoopChooser {
+  private readonly sites = new Map<string, Site>();
+
+  /** Whether the next call of loop `site` should run on the threads (true) or on one thread. */
+  choose(site: string): boolean {
+    let s = this.sites.get(site);
+    if (s === undefined) { s = { calls: 0, parallel: NaN, serial: NaN }; this.sites.set(site, s); }
+    const c = s.calls;
+    if (c < 2) return true;
+    if (c < 4 || Number.isNaN(s.serial)) return false;
+    if (Number.isNaN(s.parallel)) return true;
+    const preferParallel = s.parallel <= s.serial;
+    return c % PROBE_EVERY === 0 ? !preferParallel : preferParallel;
+  }
+
+  /** Records that a call of `site` ran `parallel` or not and took `ms` for `n` (> 0) elements. */
+  record(site: string, parallel: boolean, ms: number, n: number): void {
+    const s = this.sites.get(site);
+    if (s === undefined) return;
+    const first = s.calls === 0;
+    s.calls++;
+    if (first || !(n > 0) || !(ms >= 0)) return;
+    const v = ms / n;
+    // The way in use is averaged; a probe of the other way replaces its (old) average, so a machine
+    // that got quieter is noticed at the next probe.
+    const probe = !Number.isNaN(s.parallel) && !Number.isNaN(s.serial) && parallel !== (s.parallel <= s.serial);
+    if (parallel) s.parallel = Number.isNaN(s.parallel) || probe ? v : s.parallel + ALPHA * (v - s.parallel);
+    else s.serial = Number.isNaN(s.serial) || probe ? v : s.serial + ALPHA * (v - s.serial);
+  }
+
+  /** The current preference of `site`: true threads, false one thread, null not decided yet. */
+  preference(site: string): boolean | null {
+    const s = this.sites.get(site);
+    if (s === undefined || Number.isNaN(s.parallel) || Number.isNaN(s.serial)) return null;
+    return s.parallel <= s.serial;
+  }
+}
