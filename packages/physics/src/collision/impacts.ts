@@ -3,6 +3,13 @@ import { ContactKind, type ContactBuffer } from './contacts.js';
 import { BodyType } from './state.js';
 
 /**
+ * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the
+ * body's latest impact this step, s (-1: the body carried a load and is left to the substeps); and
+ * whether the soft substeps leave the body alone (1) or not (0), set by `separateImpactedBodies`.
+ */
+export const IMPACT_STRIDE = 5;
+
+/**
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of
  * pairwise impacts at their times of impact before the soft substeps run.
  *
@@ -53,31 +60,31 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const S0 = buf.separation, RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
-  if (cs.bodyImpact.length < count * 4) cs.bodyImpact = new Float64Array(Math.max(count * 4, cs.bodyImpact.length * 2));
-  cs.bodyImpact.fill(0, 0, count * 4);
+  if (cs.bodyImpact.length < count * IMPACT_STRIDE) cs.bodyImpact = new Float64Array(Math.max(count * IMPACT_STRIDE, cs.bodyImpact.length * 2));
+  cs.bodyImpact.fill(0, 0, count * IMPACT_STRIDE);
   // Bodies that carried a load last step (a warm-started contact: resting in a pile, on the floor)
   // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
   // marks them -1 until the passes are done.
   const imp = cs.bodyImpact, LN = buf.normalImpulse, IA = buf.ia, IB = buf.ib;
   for (let i = 0; i < n; i++) {
     if (!(LN[i]! > 0)) continue;
-    if (IA[i] !== 0) imp[IA[i]! * 4 + 3] = -1;
-    imp[IB[i]! * 4 + 3] = -1;
+    if (IA[i] !== 0) imp[IA[i]! * IMPACT_STRIDE + 3] = -1;
+    imp[IB[i]! * IMPACT_STRIDE + 3] = -1;
   }
   let m = 0;
   for (let i = 0; i < n; i++) {
     key[i] = 0;
     if (!(E[i]! > 0)) continue;
-    if (imp[IB[i]! * 4 + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * 4 + 3] === -1)) continue;
+    if (imp[IB[i]! * IMPACT_STRIDE + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * IMPACT_STRIDE + 3] === -1)) continue;
     if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
     const s0 = S0[i]!, rv = RV[i]!;
     key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
     order[m++] = i;
   }
   const seeds = m;
-  if (seeds === 0) { imp.fill(0, 0, count * 4); return; }
+  if (seeds === 0) { imp.fill(0, 0, count * IMPACT_STRIDE); return; }
   for (let i = 0; i < n; i++) {
-    if (!(E[i]! > 0) || imp[IB[i]! * 4 + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * 4 + 3] === -1)) continue;
+    if (!(E[i]! > 0) || imp[IB[i]! * IMPACT_STRIDE + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * IMPACT_STRIDE + 3] === -1)) continue;
     if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) order[m++] = i;
   }
   const cand = order.subarray(0, m);
@@ -99,94 +106,132 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
 
 /**
  * Decides, after the passes, which bodies are "clean": every contact of theirs was either resolved
- * by an impact this step or stays apart through the step (ball pairs by an exact sweep at their
- * current velocities, other rows by the linear gap with gravity). The soft substeps never touch a
- * clean body (its impacted rows are taken out of them), so:
+ * by an impact this step or stays apart from the body's latest impact to the end of the step (ball
+ * pairs by an exact sweep, boundary faces, planes and segments along their normal with gravity, from
+ * the later of the two bodies' latest impacts: their paths before it are not the ones the corrections
+ * describe). The soft substeps never touch a clean body (its impacted rows are taken out of them), so:
  * - a clean body keeps its end-position correction, and ends exactly at x0 + v0 t* + v1 (h - t*);
- * - a clean ball pair that will not touch gets a start separation the soft substeps' linear gap model
- *   cannot close within the step (nor in the one substep the last relax pass looks ahead): the linear
- *   model s0 + v_n t underestimates the gap of two balls passing obliquely, and would otherwise push
- *   them apart along the wrong normal before they touch (Box2D's speculative contacts do that).
+ * - a row between clean bodies that stays apart gets a start separation the soft substeps' linear gap
+ *   model cannot close within the step (nor in the one substep the last relax pass looks ahead): that
+ *   model underestimates the gap of two balls passing obliquely and looks a substep past the step, and
+ *   would otherwise stop the bodies early along the wrong normal (Box2D's speculative contacts do
+ *   that), leaving the bounce to the restitution stage, which loses energy when a body has several
+ *   such rows (the elastic gas of 500 balls lost 6 % of its energy in 20,000 steps that way).
  * A body with a row the soft substeps will work on (resting in a pile, say) loses its corrections:
  * the substeps' positions must stay consistent with their own rows, so its impulses act as if at the
- * start of the step (Box2D-like), which only ever widens a gap and never adds energy.
+ * start of the step (Box2D-like), which only ever widens a gap and never adds energy. Such a body
+ * makes a clean neighbour unclean too when the linear gap model of the row between them could close
+ * within the step (the substeps would push the neighbour), until no more change.
  */
 function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number): void {
   const cs = world.collision;
-  const sb = cs.bodyState, imp = cs.bodyImpact, key = cs.impactKey, type = cs.bodyType;
+  const imp = cs.bodyImpact, key = cs.impactKey;
   const count = cs.solverBodyCount;
   const n = buf.count;
-  const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, A = buf.a, B = buf.b, K = buf.kind;
-  const NX = buf.nx, NY = buf.ny, NZ = buf.nz;
-  const is2D = S === 8;
+  const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, K = buf.kind;
   const h = world.h;
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
-  const g = world.gravity;
-  // Slot 3 of a body's row (time of its latest impact) becomes the flag: 1 clean, 0 not.
-  for (let k = 0; k < count; k++) imp[k * 4 + 3] = 1;
+  // First, while slot 3 still holds each body's latest impact time: which rows stay active, into
+  // the spent order array (1 active, 0 not).
+  const act = cs.impactOrder;
   for (let i = 0; i < n; i++) {
     const kind = K[i]!;
     let active: boolean;
     if (E[i]! > 0 && key[i] === -1) {
-      // Resolved by an impact: active again only if a later impact of either body turned it back
-      // into approach within the step (below the threshold, so the passes left it to the substeps).
-      const oa = IA[i]! * S, ob = IB[i]! * S;
-      const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-      let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-      if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-      const a = A[i]!, b = B[i]!;
-      const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-      active = vn + (an < 0 ? an * reach : 0) < 0;
+      // Resolved by an impact: active again only if the bodies touch again while approaching before
+      // the step ends (a later impact of either body turned them back; the passes left it to the
+      // substeps, below the threshold or past the pass cap).
+      active = contactState(world, buf, i, S);
       if (active) key[i] = 0;
     } else if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
       active = ballsMeet(world, buf, i, S, h);
     } else {
-      const oa = IA[i]! * S, ob = IB[i]! * S;
-      const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
-      let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-      if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-      const a = A[i]!, b = B[i]!;
-      const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-      active = S0[i]! + (vn < 0 ? vn * reach : 0) + (an < 0 ? 0.5 * an * reach * reach : 0) <= 0;
+      active = faceMeets(world, buf, i, S);
     }
-    if (active) { imp[IA[i]! * 4 + 3] = 0; imp[IB[i]! * 4 + 3] = 0; }
+    act[i] = active ? 1 : 0;
   }
-  imp[3] = 1;
-  for (let k = 1; k < count; k++) {
-    const q = k * 4;
-    if (imp[q + 3] === 0) { imp[q] = 0; imp[q + 1] = 0; imp[q + 2] = 0; }
+  // Slot 4 of a body's row: 1 clean, 0 not (the static world is clean). An unclean body loses its
+  // corrections (the substeps move it from where it was at the start of the step).
+  const Q = IMPACT_STRIDE;
+  for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
+  for (let i = 0; i < n; i++) if (act[i] === 1) { unclean(imp, IA[i]!); unclean(imp, IB[i]!); }
+  // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
+  // of that row could close within the step: the substeps would push it. Repeated until nothing changes.
+  for (let changed = true; changed;) {
+    changed = false;
+    for (let i = 0; i < n; i++) {
+      if (act[i] === 1) continue;
+      const ia = IA[i]!, ib = IB[i]!;
+      const ca = ia === 0 || imp[ia * Q + 4] === 1, cb = imp[ib * Q + 4] === 1;
+      if (ca === cb) continue;
+      if (!linearCloses(world, buf, i, S, reach)) continue;
+      act[i] = 1;
+      unclean(imp, ca ? ia : ib);
+      changed = true;
+    }
   }
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, NM = buf.normalMass, TM = buf.tangentMass;
   for (let i = 0; i < n; i++) {
-    if (imp[IA[i]! * 4 + 3] === 0 || imp[IB[i]! * 4 + 3] === 0) continue;
+    if ((IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0) || imp[IB[i]! * Q + 4] === 0) continue;
     if (E[i]! > 0 && key[i] === -1) {
       // Impacted rows between clean bodies leave the soft substeps.
       NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;
       continue;
     }
-    const kind = K[i]!;
-    if (kind !== ContactKind.Ball && kind !== ContactKind.StaticBall) continue;
+    // A row between clean bodies that stays apart through the step gets a start separation the soft
+    // substeps' linear gap model cannot close within the step (nor in the one substep the last relax
+    // pass looks ahead): the model would otherwise stop the bodies early, along the wrong normal for
+    // balls passing obliquely (Box2D's speculative contacts do that), and leave the bounce to the
+    // restitution stage, which loses energy when a body has several such rows.
     const s0 = S0[i]!;
     if (!(s0 > 0)) continue;
-    const oa = IA[i]! * S, ob = IB[i]! * S;
-    let vn = (sb[ob]! - sb[oa]!) * NX[i]! + (sb[ob + 1]! - sb[oa + 1]!) * NY[i]!;
-    if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * NZ[i]!;
-    if (!(vn < 0) || s0 + vn * reach > 0) continue;
+    const closes = linearClosure(world, buf, i, S, reach);
     // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
-    S0[i] = -vn * reach * 1.1;
+    if (s0 <= closes) S0[i] = closes * 1.1;
   }
 }
 
+/** Marks solver body k unclean (slot 4 = 0) and drops its end-position corrections; the static world stays clean. */
+function unclean(imp: Float64Array, k: number): void {
+  if (k === 0) return;
+  const q = k * IMPACT_STRIDE;
+  imp[q] = 0; imp[q + 1] = 0; imp[q + 2] = 0; imp[q + 4] = 0;
+}
+
 /**
- * Whether the balls of contact i touch now or within `span` at the current solver velocities (an
- * exact sweep from the start of the step, with the relative acceleration of gravity refined once).
+ * How far the soft substeps' linear gap model of contact i can close within `reach` (the step plus
+ * the substep the last relax pass looks ahead) at the current solver velocities, m (>= 0): the normal
+ * approach and gravity's relative normal acceleration, each counted only when it closes the gap.
+ */
+function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, reach: number): number {
+  const cs = world.collision;
+  const sb = cs.bodyState, type = cs.bodyType, g = world.gravity;
+  const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
+  const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+  let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+  if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+  const a = buf.a[i]!, b = buf.b[i]!;
+  const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
+}
+
+/** Whether the soft substeps' linear gap model of contact i closes within `reach` (see linearClosure). */
+function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, reach: number): boolean {
+  return buf.separation[i]! <= linearClosure(world, buf, i, S, reach);
+}
+
+/**
+ * Whether the balls of contact i touch at their latest impact this step (t0, or the start of the step)
+ * or within `span` of the step's start, at the current solver velocities: an exact sweep from t0 with
+ * the relative acceleration of gravity refined once. The path before t0 is not the bodies' (the
+ * position corrections make x0 + dx + v t exact only after the latest impact), so it is not swept.
  */
 function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number): boolean {
   const cs = world.collision;
   const c = world.components;
   const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
   const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S, qa = ia * 4, qb = ib * 4;
+  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
   const a = buf.a[i]!, b = buf.b[i]!, kind = buf.kind[i]!;
   const is2D = S === 8;
   const P = c.PreviousPosition, radius = c.Ball.radius;
@@ -195,29 +240,67 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const R = radius[f]! + radius[b]!;
   const still = imp[qa] === 0 && imp[qa + 1] === 0 && imp[qa + 2] === 0 && imp[qb] === 0 && imp[qb + 1] === 0 && imp[qb + 2] === 0;
   const s0 = buf.separation[i]!;
+  const g = world.gravity;
+  const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
   if (still && s0 <= 0) {
     // Touching: active if it carries load (warm start), overlaps, approaches, or gravity presses it.
     if (buf.normalImpulse[i]! > 0 || s0 < -1e-6 * R) return true;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-    const g0 = world.gravity;
-    const gr0 = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
-    return vn < 0 || gr0 * (g0[0]! * nx + g0[1]! * ny + g0[2]! * nz) < 0;
+    return vn < 0 || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
   }
-  const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]!;
-  const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]!;
-  const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]!;
-  if (rx * rx + ry * ry + rz * rz <= R * R * (1 + 1e-9)) return true;
-  const g = world.gravity;
-  const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
-  const hx = 0.25 * gr * g[0]! * span, hy = 0.25 * gr * g[1]! * span, hz = is2D ? 0 : 0.25 * gr * g[2]! * span;
-  const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
+  const ta = imp[qa + 3]!, tb = imp[qb + 3]!;
+  const t0 = ta > tb ? (ta > 0 ? ta : 0) : (tb > 0 ? tb : 0);
+  const ax = gr * g[0]!, ay = gr * g[1]!, az = is2D ? 0 : gr * g[2]!;
+  const wx = sb[ob]! - sb[oa]! + ax * t0, wy = sb[ob + 1]! - sb[oa + 1]! + ay * t0, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]! + az * t0;
+  const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + (sb[ob]! - sb[oa]!) * t0 + 0.5 * ax * t0 * t0;
+  const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + (sb[ob + 1]! - sb[oa + 1]!) * t0 + 0.5 * ay * t0 * t0;
+  const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + (sb[ob + 2]! - sb[oa + 2]!) * t0 + 0.5 * az * t0 * t0;
+  const rest = span - t0;
+  const r2 = rx * rx + ry * ry + rz * rz;
+  if (r2 <= R * R * (1 + 1e-9)) {
+    // Overlapping (the substeps push them apart), or touching and approaching at t0 or by the end.
+    if (r2 < R * R * (1 - 1e-6)) return true;
+    return rx * wx + ry * wy + rz * wz < 0 || rx * (wx + ax * rest) + ry * (wy + ay * rest) + rz * (wz + az * rest) < 0;
+  }
+  if (!(rest > 0)) return false;
+  const hx = 0.25 * ax * rest, hy = 0.25 * ay * rest, hz = 0.25 * az * rest;
   // The gap cannot close faster than |w| + |a| t.
   const gap = Math.sqrt(rx * rx + ry * ry + rz * rz) - R;
-  if (Math.sqrt(wx * wx + wy * wy + wz * wz) * span + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * span < gap) return false;
+  if (Math.sqrt(wx * wx + wy * wy + wz * wz) * rest + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * rest < gap) return false;
   // Mean velocity over the first half of the span and over all of it: either meeting counts.
-  return sweep(rx, ry, rz, wx + hx, wy + hy, wz + hz, R, span) >= 0 || sweep(rx, ry, rz, wx + 2 * hx, wy + 2 * hy, wz + 2 * hz, R, span) >= 0;
+  return sweep(rx, ry, rz, wx + hx, wy + hy, wz + hz, R, rest) >= 0 || sweep(rx, ry, rz, wx + 2 * hx, wy + 2 * hy, wz + 2 * hz, R, rest) >= 0;
+}
+
+/**
+ * Whether ball B of a fixed-normal contact i (boundary face, plane, segment) overlaps or touches the
+ * face at t0 (the later of the bodies' latest impacts this step, or the start) or reaches it before the
+ * step ends: s(t) = s(t0) + v_n (t - t0) + a_n (t - t0)^2 / 2 along the contact's normal, exact for a
+ * face that does not turn (a segment's end point is treated as its tangent line, which can only
+ * see a touch that is not there).
+ */
+function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+  const cs = world.collision;
+  const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
+  const ia = buf.ia[i]!, ib = buf.ib[i]!;
+  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
+  const a = buf.a[i]!, b = buf.b[i]!;
+  const g = world.gravity, h = world.h;
+  const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+  let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+  if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+  const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  const ta = imp[qa + 3]!, tb = imp[qb + 3]!;
+  const t0 = ta > tb ? (ta > 0 ? ta : 0) : (tb > 0 ? tb : 0);
+  const s = buf.separation[i]! + (imp[qb]! - imp[qa]!) * nx + (imp[qb + 1]! - imp[qa + 1]!) * ny + (imp[qb + 2]! - imp[qa + 2]!) * nz
+    + vn * t0 + 0.5 * an * t0 * t0;
+  if (s <= 0) return true;
+  const v = vn + an * t0, rest = h - t0;
+  // Smallest s over [t0, h]: at the end, or where v + a_n t = 0 if that falls inside.
+  const tm = an > 0 && v < 0 ? Math.min(-v / an, rest) : rest;
+  return s + v * tm + 0.5 * an * tm * tm <= 0 || s + v * rest + 0.5 * an * rest * rest <= 0;
 }
 
 /**
@@ -245,7 +328,7 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
   const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
   const h = world.h;
   const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S, qa = ia * 4, qb = ib * 4;
+  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
   const a = buf.a[i]!, b = buf.b[i]!, kind = buf.kind[i]!;
   const is2D = S === 8;
   const g = world.gravity;
@@ -375,7 +458,7 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, r
       dwb0 = -iiB * rb * cx; dwb1 = -iiB * rb * cy; dwb2 = -iiB * rb * cz;
     }
   }
-  const qa = ia * 4, qb = ib * 4;
+  const qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
   const xa = ia * 6, xb = ib * 6;
   // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
   sb[oa] = sb[oa]! - imA * Px; sb[oa + 1] = sb[oa + 1]! - imA * Py;

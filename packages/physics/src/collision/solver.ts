@@ -13,7 +13,7 @@ import {
 } from './manifold3d-solver.js';
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
-import { applyImpacts } from './impacts.js';
+import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -291,14 +291,14 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const free = sb[o + S - 1] === 0 ? 1 : 0;
     if (is2D) {
       vx[e] = sb[o]!; vy[e] = sb[o + 1]!;
-      const x = ex[r]! + sb[o + 3]! + imp[k * 4]! + free * fx, y = ex[r + 1]! + sb[o + 4]! + imp[k * 4 + 1]! + free * fy;
+      const x = ex[r]! + sb[o + 3]! + imp[k * IMPACT_STRIDE]! + free * fx, y = ex[r + 1]! + sb[o + 4]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
       px[e] = x; py[e] = y;
       check += x + y + sb[o]! + sb[o + 1]!;
       if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
     } else {
       vx[e] = sb[o]!; vy[e] = sb[o + 1]!; vz[e] = sb[o + 2]!;
-      const x = ex[r]! + sb[o + 6]! + imp[k * 4]! + free * fx, y = ex[r + 1]! + sb[o + 7]! + imp[k * 4 + 1]! + free * fy;
-      const z = ex[r + 2]! + sb[o + 8]! + imp[k * 4 + 2]! + free * fz;
+      const x = ex[r]! + sb[o + 6]! + imp[k * IMPACT_STRIDE]! + free * fx, y = ex[r + 1]! + sb[o + 7]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
+      const z = ex[r + 2]! + sb[o + 8]! + imp[k * IMPACT_STRIDE + 2]! + free * fz;
       px[e] = x; py[e] = y; pz[e] = z;
       check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
       if (sb[o + 10]! > 0) {
@@ -312,7 +312,7 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const IA = buf.ia, IB = buf.ib, S0 = buf.separation, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const dOff = is2D ? 3 : 6;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff, qa = IA[i]! * 4, qb = IB[i]! * 4;
+    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff, qa = IA[i]! * IMPACT_STRIDE, qb = IB[i]! * IMPACT_STRIDE;
     let s = S0[i]! + (sb[b]! - sb[a]! + imp[qb]! - imp[qa]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]! + imp[qb + 1]! - imp[qa + 1]!) * NY[i]!;
     if (!is2D) s += (sb[b + 2]! - sb[a + 2]! + imp[qb + 2]! - imp[qa + 2]!) * NZ[i]!;
     if (s < deepest) deepest = s;

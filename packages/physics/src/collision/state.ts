@@ -154,9 +154,9 @@ export interface CollisionState {
   /** Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply (x, y, z), rad. */
   bodyExtra: Float64Array;
   /**
-   * Per solver body, rows of 4 (impact stage, see impacts.ts): the end-position correction of this
-   * step's impacts (x, y, z), m (-dv t* summed over impacts), and the time of its latest impact in
-   * the step, s.
+   * Per solver body, rows of 5 (impact stage, see `IMPACT_STRIDE` in impacts.ts): the end-position
+   * correction of this step's impacts (x, y, z), m (-dv t* summed over impacts), the time of its
+   * latest impact in the step, s, and whether the soft substeps leave the body alone (1) or not (0).
    */
   bodyImpact: Float64Array;
   /** Impact stage scratch: the bouncing contacts in order of impact, and their sort keys (s). */
@@ -242,7 +242,7 @@ export function createCollisionState(
     solverStamp: 0,
     bodyState: new Float64Array(12 * 256),
     bodyExtra: new Float64Array(6 * 256),
-    bodyImpact: new Float64Array(4 * 256),
+    bodyImpact: new Float64Array(5 * 256),
     impactOrder: new Int32Array(256),
     impactKey: new Float64Array(256),
     grid: {
