@@ -11,16 +11,16 @@ export interface ClothState {
   /** Links in the packed arrays; the first `rigidCount` have zero compliance. */
   count: number;
   rigidCount: number;
-  /** Per link: its entity; and (2 per link) the position offsets (2 x compact index) of its points a and b in `buffer`. */
+  /** Per link: its entity; and (2 per link) the position offsets (3 x compact index) of its points a and b in `buffer`. */
   link: Int32Array; pair: Int32Array;
   /** Per link: rest length (m), compliance (m/N), tear strain. */
   rest: Float64Array; compliance: Float64Array; tear: Float64Array;
   /** Distinct points of the links (entity slots; the moving ones get their velocities from their moves). */
   pointCount: number;
   points: Int32Array;
-  /** Per point, in sections of the point count n: x, y (m) at [0, 2n); inverse mass (1/kg) at [2n, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n). */
+  /** Per point, in sections of the point count n: x, y (m) and inverse mass (1/kg), 3 a point, at [0, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n). */
   buffer: Float64Array;
-  /** Per link (3 each) of this step: w_a / D, w_b / D and 1 / D, with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
+  /** Per link (2 each) of this step: r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
   solve: Float64Array;
   /** Per entity scratch: compact index of a point while packing. */
   compact: Int32Array;
