@@ -6,8 +6,8 @@ import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store
 
 /**
  * Joints between 3D bodies, solved in the contact solver's soft substeps (joints3d/solver.ts): ball
- * and socket (with an optional cone limit), hinge (angle limits, motor), fixed, and distance (rigid,
- * spring, or rope through its length limits). Each joint is its own entity holding its two bodies:
+ * and socket (with an optional cone limit), hinge (angle limits, motor), slider (translation limits,
+ * motor), fixed, and distance (rigid, spring, or rope through its length limits). Each joint is its own entity holding its two bodies:
  * A (a body, or the fixed world when omitted or null) and B. Anchors and axes are given in world
  * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies'
  * frames. Removing either body removes the joint. Past `breakForce` (N) or `breakTorque` (N m) a
@@ -233,6 +233,53 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
   const s = joints3DOf(world, true);
   s.length[j] = length; s.lower[j] = minL; s.upper[j] = maxL; s.hertz[j] = hertz; s.dampingRatio[j] = zeta;
   s.flags[j] = (hertz > 0 ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  return currentHandle(world, j);
+}
+
+/** Options of `addSliderJoint3D`. */
+export interface SliderJoint3DOptions extends Joint3DBaseOptions {
+  /** A point on the slide line (world, m), fixed in both bodies when made. Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** The slide axis (world, when made; it turns with A); need not be unit length. */
+  axis: ArrayLike<number>;
+  /** Translation limits along the axis, m, from the pose when made: lower <= 0 <= upper. Default none. */
+  lower?: number;
+  upper?: number;
+  /** Motor: target relative speed along the axis, m/s, and its largest force, N (>= 0). Default off. */
+  motorSpeed?: number;
+  maxMotorForce?: number;
+}
+
+/**
+ * Slider (prismatic): B keeps A's orientation (three angular rows, as the fixed joint) and its anchor
+ * stays on the line through A's anchor along the axis (two point rows perpendicular to it), so B only
+ * slides along the axis; optional translation limits and a motor (Box2D v3's prismatic joint in 3D).
+ * @returns the joint's handle.
+ * @throws TypeError | RangeError `addSliderJoint3D: <param> must be ...` as addBallJoint3D, on a zero
+ *   axis, lower > 0 or upper < 0, only one limit, a motor speed without a force or a negative force.
+ */
+export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOptions): number {
+  const where = 'addSliderJoint3D';
+  const e = ends(where, world, options, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce']);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const axis = unit(where, 'axis', options.axis);
+  const hasLimit = options.lower !== undefined || options.upper !== undefined;
+  if (hasLimit) {
+    if (options.lower === undefined || options.upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(options.lower)}, upper ${describe(options.upper)}`);
+    assertFinite(where, 'lower', options.lower); assertFinite(where, 'upper', options.upper);
+    if (!(options.lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${options.lower}`);
+    if (!(options.upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${options.upper}`);
+  }
+  const motor = options.motorSpeed !== undefined || options.maxMotorForce !== undefined;
+  if (motor) {
+    assertFinite(where, 'motorSpeed', options.motorSpeed ?? 0);
+    if (options.maxMotorForce === undefined) throw new RangeError(`${where}: maxMotorForce must be given with motorSpeed, got undefined`);
+    assertNonNegative(where, 'maxMotorForce', options.maxMotorForce);
+  }
+  const j = make(world, where, Joint3DType.Slider, e, options, p, p, axis);
+  const s = joints3DOf(world, true);
+  if (hasLimit) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = options.lower!; s.upper[j] = options.upper!; }
+  if (motor) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = options.motorSpeed ?? 0; s.maxMotorTorque[j] = options.maxMotorForce!; }
   return currentHandle(world, j);
 }
 

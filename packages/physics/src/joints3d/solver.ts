@@ -23,10 +23,15 @@ import { removeJoint3DUnchecked } from './api.js';
  *   rows (speculative when apart), its motor a row bounded by the largest torque times h_s.
  * - Cone: the angle between A's axis and B's (phi) stays <= the half angle: a one-sided row about
  *   n = a_A x a_B / |a_A x a_B|, with d phi / dt = (w_B - w_A) . n.
+ * - Slider: the fixed joint's three angular rows, the point block restricted to the plane
+ *   perpendicular to A's axis u (K' = P K P + u u^T, P = 1 - u u^T), and along u, at the point of A
+ *   under B's anchor, a translation limit (one-sided rows, speculative when apart) and a motor bounded
+ *   by the largest force times h_s (Box2D v3 prismatic_joint.c).
  * - Distance: a row along the anchors' line, equality (rod), spring (Box2D's soft spring of `hertz`
  *   and `dampingRatio`) and one-sided limits.
- * - Point and angular-lock impulses are warm-started (world vectors); limit, motor and distance rows
- *   start from zero each step. After the substeps a joint whose force (impulse / h_s) or torque passes
+ * - Point and angular-lock impulses (world vectors) and the hinge's and slider's limit and motor
+ *   impulses (signed along the axis; a limit's impulse from the other side is taken back when the
+ *   near side changes) are warm-started; cone and distance rows start from zero each step. After the substeps a joint whose force (impulse / h_s) or torque passes
  *   its threshold breaks: it is removed and listed in `joint3DBreaks`.
  */
 
@@ -80,7 +85,7 @@ export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number 
   return count;
 }
 
-/** Softness for this step, marks the joint bodies as pushed, and clears the rows that are not warm-started. */
+/** Softness for this step, marks the joint bodies as pushed, and clears the rows that are not warm-started (cone and distance). */
 export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
@@ -91,8 +96,10 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
     const j = s.list[i]!;
     if (ka[i]! > 0) sb[12 * ka[i]! + 11] = 1;
     if (kb[i]! > 0) sb[12 * kb[i]! + 11] = 1;
-    s.limit[j] = 0; s.motor[j] = 0;
-    if (s.type[j] === Joint3DType.Distance) { s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; }
+    // Hinge and slider limit and motor rows are warm-started (their impulses stay); cone and distance rows start from zero.
+    const t = s.type[j]!;
+    if (t !== Joint3DType.Hinge && t !== Joint3DType.Slider) { s.limit[j] = 0; s.motor[j] = 0; }
+    if (t === Joint3DType.Distance) { s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; }
   }
 }
 
@@ -188,8 +195,61 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
     rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra); rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
     applyLinear(sb, T, ka[i]!, kb[i]!, s.lx[j]!, s.ly[j]!, s.lz[j]!);
     applyAngular(sb, T, ka[i]!, kb[i]!, s.wx[j]!, s.wy[j]!, s.wz[j]!);
+    const axial = s.limit[j]! + s.motor[j]!;
+    if (axial !== 0 && (s.type[j] === Joint3DType.Hinge || s.type[j] === Joint3DType.Slider)) {
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+      if (s.type[j] === Joint3DType.Hinge) applyAngular(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+      else { sliderAnchor(); applyLinear(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!); }
+    }
   }
 }
+
+/** Slider: moves A's anchor (ra) to the point of A under B's anchor (ra + C), where the axial rows act. */
+function sliderAnchor(): void {
+  ra[0] = pb[0]! + rb[0]! - pa[0]!; ra[1] = pb[1]! + rb[1]! - pa[1]!; ra[2] = pb[2]! + rb[2]! - pa[2]!;
+}
+
+/** Effective mass denominator of a linear row along unit u at the anchors ra, rb: 1/m_A + 1/m_B + (r x u) . I^-1 (r x u) for both. */
+function linearK(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
+  const cax = ra[1]! * uz - ra[2]! * uy, cay = ra[2]! * ux - ra[0]! * uz, caz = ra[0]! * uy - ra[1]! * ux;
+  const cbx = rb[1]! * uz - rb[2]! * uy, cby = rb[2]! * ux - rb[0]! * uz, cbz = rb[0]! * uy - rb[1]! * ux;
+  invI(T, a, cax, cay, caz, tmp, 0); invI(T, b, cbx, cby, cbz, tmp, 3);
+  return sb[12 * a + 9]! + sb[12 * b + 9]! + cax * tmp[0]! + cay * tmp[1]! + caz * tmp[2]! + cbx * tmp[3]! + cby * tmp[4]! + cbz * tmp[5]!;
+}
+
+/**
+ * A linear row along unit u at the anchors (impulse +lambda u to B), with effective mass 1 / k:
+ * lambda = clamp(acc - ms (cdot + bias) / k - is acc, lo, hi); applies the change, returns the new lambda.
+ */
+function linearRow(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number, k: number, cdot: number, bias: number, ms: number, is: number, acc: number, lo: number, hi: number): number {
+  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
+  lam = lam < lo ? lo : lam > hi ? hi : lam;
+  const d = lam - acc;
+  if (d !== 0) applyLinear(sb, T, a, b, d * ux, d * uy, d * uz);
+  return lam;
+}
+
+/** Relative velocity of the anchors along unit u. */
+function anchorSpeed(sb: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
+  anchorVelocity(sb, a, b, v3);
+  return v3[0]! * ux + v3[1]! * uy + v3[2]! * uz;
+}
+
+/** K := P K P + u u^T with P = 1 - u u^T: the 3 x 3 block restricted to the plane perpendicular to unit u (invertible, the same on the plane). */
+function restrictToPlane(ux: number, uy: number, uz: number): void {
+  P9[0] = 1 - ux * ux; P9[1] = -ux * uy; P9[2] = -ux * uz; P9[3] = -uy * ux; P9[4] = 1 - uy * uy; P9[5] = -uy * uz; P9[6] = -uz * ux; P9[7] = -uz * uy; P9[8] = 1 - uz * uz;
+  for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) {
+    let v = 0;
+    for (let m = 0; m < 3; m++) for (let n = 0; n < 3; n++) v += P9[3 * r + m]! * K[3 * m + n]! * P9[3 * n + c]!;
+    KP[3 * r + c] = v;
+  }
+  const u0 = ux, u1 = uy, u2 = uz;
+  K[0] = KP[0]! + u0 * u0; K[1] = KP[1]! + u0 * u1; K[2] = KP[2]! + u0 * u2;
+  K[3] = KP[3]! + u1 * u0; K[4] = KP[4]! + u1 * u1; K[5] = KP[5]! + u1 * u2;
+  K[6] = KP[6]! + u2 * u0; K[7] = KP[7]! + u2 * u1; K[8] = KP[8]! + u2 * u2;
+}
+
+const P9 = new Float64Array(9), KP = new Float64Array(9);
 
 /** A one-sided or bounded angular row along unit u (impulse +lambda u to B): returns the new accumulated impulse. */
 function angularRow(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number, cdot: number, bias: number, ms: number, is: number, acc: number, lo: number, hi: number): number {
@@ -220,30 +280,29 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
       const len = Math.hypot(dx, dy, dz);
       if (!(len > 1e-12)) continue;
       dx /= len; dy /= len; dz /= len;
-      // Effective mass along u.
-      const ca = [ra[1]! * dz - ra[2]! * dy, ra[2]! * dx - ra[0]! * dz, ra[0]! * dy - ra[1]! * dx], cb = [rb[1]! * dz - rb[2]! * dy, rb[2]! * dx - rb[0]! * dz, rb[0]! * dy - rb[1]! * dx];
-      invI(T, a, ca[0]!, ca[1]!, ca[2]!, tmp, 0); invI(T, b, cb[0]!, cb[1]!, cb[2]!, tmp, 3);
-      const k = sb[oa + 9]! + sb[ob + 9]! + ca[0]! * tmp[0]! + ca[1]! * tmp[1]! + ca[2]! * tmp[2]! + cb[0]! * tmp[3]! + cb[1]! * tmp[4]! + cb[2]! * tmp[5]!;
+      const k = linearK(sb, T, a, b, dx, dy, dz);
       if (!(k > 0)) continue;
-      const row = (C: number, sign: number, acc: number, soft_: Float64Array | null, oneSided: boolean): number => {
-        anchorVelocity(sb, a, b, v3);
-        const cdot = sign * (v3[0]! * dx + v3[1]! * dy + v3[2]! * dz);
-        let bias = 0, m = 1, im = 0;
-        if (soft_ !== null) { bias = soft_[0]! * C; m = soft_[1]!; im = soft_[2]!; }
-        else if (oneSided && C > 0) bias = C / hs;
-        else if (useBias) { bias = bRate * C; m = ms; im = is; }
-        let lam = acc - (m * (cdot + bias)) / k - im * acc;
-        if (oneSided && lam < 0) lam = 0;
-        const d = (lam - acc) * sign;
-        if (d !== 0) applyLinear(sb, T, a, b, d * dx, d * dy, d * dz);
-        return lam;
-      };
       const L = s.length[j]!;
-      if (flags & Joint3DFlag.Spring) { if (useBias) { makeSoft(spring, s.hertz[j]!, s.dampingRatio[j]!, hs); s.lx[j] = row(len - L, 1, s.lx[j]!, spring, false); } }
-      else if (!(flags & Joint3DFlag.Limit)) s.lx[j] = row(len - L, 1, s.lx[j]!, null, false);
+      if (flags & Joint3DFlag.Spring) {
+        if (useBias) {
+          makeSoft(spring, s.hertz[j]!, s.dampingRatio[j]!, hs);
+          s.lx[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), spring[0]! * (len - L), spring[1]!, spring[2]!, s.lx[j]!, -Infinity, Infinity);
+        }
+      } else if (!(flags & Joint3DFlag.Limit)) {
+        s.lx[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bRate * (len - L), ms, is, s.lx[j]!, -Infinity, Infinity);
+      }
       if (flags & Joint3DFlag.Limit) {
-        if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) s.limit[j] = row(len - s.lower[j]!, 1, s.limit[j]!, null, true);
-        if (Number.isFinite(s.upper[j]!)) s.ly[j] = row(s.upper[j]! - len, -1, s.ly[j]!, null, true);
+        // One-sided rows: len >= lower (impulse along +u) and len <= upper (along -u); speculative when apart.
+        if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) {
+          const C = len - s.lower[j]!;
+          const bias = C > 0 ? C / hs : useBias ? bRate * C : 0, m = C > 0 || !useBias ? 1 : ms, im = C > 0 || !useBias ? 0 : is;
+          s.limit[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.limit[j]!, 0, Infinity);
+        }
+        if (Number.isFinite(s.upper[j]!)) {
+          const C = s.upper[j]! - len;
+          const bias = C > 0 ? C / hs : useBias ? bRate * C : 0, m = C > 0 || !useBias ? 1 : ms, im = C > 0 || !useBias ? 0 : is;
+          s.ly[j] = linearRow(sb, T, a, b, -dx, -dy, -dz, k, -anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.ly[j]!, 0, Infinity);
+        }
       }
       continue;
     }
@@ -254,7 +313,7 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
     let ex = rw * cx + rx * cw + ry * cz - rz * cy, ey = rw * cy - rx * cz + ry * cw + rz * cx, ez = rw * cz + rx * cy - ry * cx + rz * cw;
     let ew = rw * cw - rx * cx - ry * cy - rz * cz;
     if (ew < 0) { ex = -ex; ey = -ey; ez = -ez; ew = -ew; }
-    if (type === Joint3DType.Fixed || type === Joint3DType.Hinge) {
+    if (type === Joint3DType.Fixed || type === Joint3DType.Hinge || type === Joint3DType.Slider) {
       rot(qa, 2 * ex, 2 * ey, 2 * ez, ax); // the error as a world rotation vector
       rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx); // hinge axis, world
       // Angular lock (fixed: 3 rows; hinge: the 2 perpendicular to the axis), K = I_A^-1 + I_B^-1.
@@ -269,12 +328,7 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
         const hx = bx[0]!, hy = bx[1]!, hz = bx[2]!;
         const d = r0 * hx + r1 * hy + r2 * hz;
         r0 -= d * hx; r1 -= d * hy; r2 -= d * hz;
-        // K' = P K P + h h^T (invertible, same on the plane).
-        const P = [1 - hx * hx, -hx * hy, -hx * hz, -hy * hx, 1 - hy * hy, -hy * hz, -hz * hx, -hz * hy, 1 - hz * hz];
-        const KP = new Float64Array(9);
-        for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) { let v = 0; for (let m = 0; m < 3; m++) for (let n = 0; n < 3; n++) v += P[3 * r + m]! * K[3 * m + n]! * P[3 * n + c]!; KP[3 * r + c] = v; }
-        const hv = [hx, hy, hz];
-        for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) K[3 * r + c] = KP[3 * r + c]! + hv[r]! * hv[c]!;
+        restrictToPlane(hx, hy, hz);
       }
       solve3(K, r0, r1, r2, x3);
       let lx = -ms * x3[0]! - is * s.wx[j]!, ly = -ms * x3[1]! - is * s.wy[j]!, lz = -ms * x3[2]! - is * s.wz[j]!;
@@ -284,10 +338,10 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
       if (type === Joint3DType.Hinge && flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
         const hx = bx[0]!, hy = bx[1]!, hz = bx[2]!;
         const angle = 2 * Math.atan2(ex * s.uax[j]! + ey * s.uay[j]! + ez * s.uaz[j]!, ew);
-        const rel = (): number => (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
         if (flags & Joint3DFlag.Motor) {
           const maxL = s.maxMotorTorque[j]! * hs;
-          s.motor[j] = angularRow(sb, T, a, b, hx, hy, hz, rel(), -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxL, maxL);
+          const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+          s.motor[j] = angularRow(sb, T, a, b, hx, hy, hz, rel, -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxL, maxL);
         }
         if (flags & Joint3DFlag.Limit) {
           const lo = s.lower[j]!, hi = s.upper[j]!;
@@ -295,8 +349,10 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
           const C = nearLower ? angle - lo : hi - angle, sg = nearLower ? 1 : -1;
           let bias = 0, m = 1, im = 0;
           if (C > 0) bias = C / hs; else if (useBias) { bias = bRate * C; m = ms; im = is; }
-          const acc = sg * s.limit[j]! > 0 ? sg * s.limit[j]! : 0;
-          const lam = angularRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, sg * rel(), bias, m, im, acc, 0, Infinity);
+          // A warm-started impulse from the other limit is taken back first.
+          if (sg * s.limit[j]! < 0) { const l = -s.limit[j]!; applyAngular(sb, T, a, b, l * hx, l * hy, l * hz); s.limit[j] = 0; }
+          const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+          const lam = angularRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, sg * rel, bias, m, im, sg * s.limit[j]!, 0, Infinity);
           s.limit[j] = sg * lam;
         }
       }
@@ -313,6 +369,39 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
       invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
       kx += tmp[1]! * rb[2]! - tmp[2]! * rb[1]!; ky += tmp[2]! * rb[0]! - tmp[0]! * rb[2]!; kz += tmp[0]! * rb[1]! - tmp[1]! * rb[0]!;
       K[c] = kx; K[3 + c] = ky; K[6 + c] = kz;
+    }
+    if (type === Joint3DType.Slider) {
+      // Only the part perpendicular to the axis (A's, in the world) is held.
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
+      const hx = bx[0]!, hy = bx[1]!, hz = bx[2]!;
+      const t = Cx * hx + Cy * hy + Cz * hz, dv = v3[0]! * hx + v3[1]! * hy + v3[2]! * hz;
+      restrictToPlane(hx, hy, hz);
+      solve3(K, v3[0]! - dv * hx + bRate * (Cx - t * hx), v3[1]! - dv * hy + bRate * (Cy - t * hy), v3[2]! - dv * hz + bRate * (Cz - t * hz), x3);
+      let px = -ms * x3[0]! - is * s.lx[j]!, py = -ms * x3[1]! - is * s.ly[j]!, pz = -ms * x3[2]! - is * s.lz[j]!;
+      const d = px * hx + py * hy + pz * hz;
+      px -= d * hx; py -= d * hy; pz -= d * hz;
+      s.lx[j] = s.lx[j]! + px; s.ly[j] = s.ly[j]! + py; s.lz[j] = s.lz[j]! + pz;
+      applyLinear(sb, T, a, b, px, py, pz);
+      if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
+        // Axial rows act at the point of A under B's anchor.
+        sliderAnchor();
+        const k = linearK(sb, T, a, b, hx, hy, hz);
+        if (k > 0 && flags & Joint3DFlag.Motor) {
+          const maxP = s.maxMotorTorque[j]! * hs;
+          s.motor[j] = linearRow(sb, T, a, b, hx, hy, hz, k, anchorSpeed(sb, a, b, hx, hy, hz), -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxP, maxP);
+        }
+        if (k > 0 && flags & Joint3DFlag.Limit) {
+          const lo = s.lower[j]!, hi = s.upper[j]!;
+          const nearLower = t - lo < hi - t;
+          const C = nearLower ? t - lo : hi - t, sg = nearLower ? 1 : -1;
+          let bias = 0, m = 1, im = 0;
+          if (C > 0) bias = C / hs; else if (useBias) { bias = bRate * C; m = ms; im = is; }
+          if (sg * s.limit[j]! < 0) { const l = -s.limit[j]!; applyLinear(sb, T, a, b, l * hx, l * hy, l * hz); s.limit[j] = 0; }
+          const lam = linearRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, k, sg * anchorSpeed(sb, a, b, hx, hy, hz), bias, m, im, sg * s.limit[j]!, 0, Infinity);
+          s.limit[j] = sg * lam;
+        }
+      }
+      continue;
     }
     solve3(K, v3[0]! + bRate * Cx, v3[1]! + bRate * Cy, v3[2]! + bRate * Cz, x3);
     const px = -ms * x3[0]! - is * s.lx[j]!, py = -ms * x3[1]! - is * s.ly[j]!, pz = -ms * x3[2]! - is * s.lz[j]!;
@@ -341,8 +430,10 @@ export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   if (s === undefined || world.dimensions !== 3) return;
   const broken: number[] = [];
   for (const j of s.list) {
-    const force = Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) / hs;
-    const torque = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!)) / hs;
+    // The limit and motor rows are torques about the axis (hinge, cone) or forces along it (slider).
+    const axial = Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!), slider = s.type[j] === Joint3DType.Slider;
+    const force = (Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (slider ? axial : 0)) / hs;
+    const torque = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (slider ? 0 : axial)) / hs;
     if (force > s.breakForce[j]! || torque > s.breakTorque[j]!) broken.push(j);
   }
   for (const j of broken) {

@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /** Kinds of 3D joints. */
-export const Joint3DType = Object.freeze({ Ball: 0, Hinge: 1, Fixed: 2, Distance: 3 } as const);
+export const Joint3DType = Object.freeze({ Ball: 0, Hinge: 1, Fixed: 2, Distance: 3, Slider: 4 } as const);
 
 /** Flags of a 3D joint. */
 export const Joint3DFlag = Object.freeze({ Limit: 1, Motor: 2, Spring: 4, Cone: 8 } as const);
@@ -19,19 +19,19 @@ export interface Joint3DStore {
   a: Int32Array; b: Int32Array;
   /** Anchors in A's and B's frames, m. */
   ax: Float64Array; ay: Float64Array; az: Float64Array; bx: Float64Array; by: Float64Array; bz: Float64Array;
-  /** Hinge or cone axis in A's and B's frames (unit). */
+  /** Hinge, slider or cone axis in A's and B's frames (unit). */
   uax: Float64Array; uay: Float64Array; uaz: Float64Array; ubx: Float64Array; uby: Float64Array; ubz: Float64Array;
   /** B's orientation relative to A's when made, conj(q_A) q_B (x, y, z, w). */
   rx: Float64Array; ry: Float64Array; rz: Float64Array; rw: Float64Array;
-  /** Hinge angle limits, rad; cone half angle, rad; distance limits, m. */
+  /** Hinge angle limits, rad; cone half angle, rad; distance and slider translation limits, m. */
   lower: Float64Array; upper: Float64Array;
-  /** Motor speed, rad/s, and its largest torque, N m. */
+  /** Motor speed (hinge: rad/s; slider: m/s) and its largest torque (hinge: N m) or force (slider: N). */
   motorSpeed: Float64Array; maxMotorTorque: Float64Array;
   /** Distance: rest length, m; spring frequency, Hz (0 rigid), and damping ratio. */
   length: Float64Array; hertz: Float64Array; dampingRatio: Float64Array;
   /** Breaking force, N, and torque, N m (Infinity: never). */
   breakForce: Float64Array; breakTorque: Float64Array;
-  /** Accumulated impulses (warm start): linear (3), angular (3), limit, motor. N s and N m s. */
+  /** Accumulated impulses (warm start): linear (3), angular (3), limit, motor (hinge and slider: signed along the axis). N s and N m s. */
   lx: Float64Array; ly: Float64Array; lz: Float64Array; wx: Float64Array; wy: Float64Array; wz: Float64Array; limit: Float64Array; motor: Float64Array;
   /** Joints broken in the last step: [joint, a, b, step] (handles, then the step count). */
   breaks: number[][];
