@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { BodyType, PairKind, type CollisionState } from './state.js';
 export { BodyType, PairKind } from './state.js';
 import { wakeTag } from './sleep.js';
+import { parallelBallPairs } from './broadphase-pairs.js';
 
 
 
@@ -258,7 +259,8 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const offsets = is3D ? HALF_3D : HALF_2D;
     const stride = is3D ? 3 : 2;
     const nOffsets = offsets.length / stride;
-    for (let p = 0; p < small; p++) {
+    // On the world's threads when it has them and no ball sleeps (broadphase-pairs.ts: the same pairs in the same order).
+    if (!(pass === 0 && parallelBallPairs(world, cs, small, mask))) for (let p = 0; p < small; p++) {
       const e = sorted[p]!;
       const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
       const x = ox[e]!, y = oy[e]!, z = oz[e]!;

@@ -1,0 +1,97 @@
+/**
+ * The broadphase's cell pass (broadphase.ts: every grid body against its own cell and half of its
+ * neighbours) on the world's threads. Each thread takes a contiguous range of the grid's bodies, in
+ * the grid's order, and writes the pairs it finds into its own buffer; the buffers are then appended
+ * to the step's pair list in range order, which is exactly the order one thread finds them in, so
+ * the pair list, and everything after it, is identical to the bit to the one-thread broadphase.
+ *
+ * Only while no ball sleeps: a sleeping ball met by a moving one is woken during the pass, which
+ * changes the body types (and positions) the rest of the pass reads, so a world with sleeping balls
+ * runs the pass on one thread.
+ */
+
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import { PairKind, type CollisionState } from './state.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runOnPool } from '../threads/parallel.js';
+import { isShared, sharedLike } from '../threads/pool.js';
+
+export { ballPairs } from './broadphase-pairs-kernel.js';
+
+/** Fewest grid bodies a thread for the cell pass to go parallel. */
+export const PAIRS_MIN_PER_THREAD = 2048;
+
+interface PairBuffers { a: Int32Array[]; b: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array }
+
+const buffersOf = new WeakMap<CollisionState, PairBuffers>();
+
+/** A shared copy of `a` (itself if already shared). */
+function shared<T extends KernelArray>(a: T): T {
+  if (isShared(a)) return a;
+  const c = sharedLike(a, a.length);
+  c.set(a as never);
+  return c;
+}
+
+/**
+ * Runs the cell pass for the `small` grid bodies on the world's threads and appends the pairs to
+ * `cs`'s pair list, when the world has threads, no ball sleeps and the grid is large enough; returns
+ * false (nothing done) otherwise, and the caller runs its own loop. `mask` is the grid's hash mask.
+ * @throws Error naming broadphaseSystem if a worker thread failed.
+ */
+export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small: number, mask: number): boolean {
+  const pool = world.threadPool;
+  if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > 16) return false;
+  const c = world.components;
+  if (query(world, [c.Ball, c.Sleeping]).length > 0) return false;
+  const g = cs.grid;
+  // The scratch arrays the pass reads move to shared memory once (and again after they grow).
+  g.sorted = shared(g.sorted); g.cellX = shared(g.cellX); g.cellY = shared(g.cellY); g.cellZ = shared(g.cellZ);
+  g.bucketStart = shared(g.bucketStart);
+  cs.margin = shared(cs.margin); cs.bodyType = shared(cs.bodyType);
+  let buf = buffersOf.get(cs);
+  const cap = 4 * small + 1024;
+  if (buf === undefined || buf.a.length < pool.threads || buf.a[0]!.length < cap) {
+    const size = Math.max(cap, 2 * (buf?.a[0]!.length ?? 0));
+    const a: Int32Array[] = [], b: Int32Array[] = [];
+    for (let p = 0; p < pool.threads; p++) { a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size))); }
+    buf = { a, b, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(3) };
+    buffersOf.set(cs, buf);
+  }
+  const A = buf.arrays;
+  A.length = 0;
+  A.push(g.sorted, g.cellX, g.cellY, g.cellZ, g.bucketStart, c.PreviousPosition.x, c.PreviousPosition.y, c.PreviousPosition.z,
+    c.Ball.radius, cs.margin, cs.bodyType, buf.counts);
+  for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!);
+  const P = buf.params;
+  P[0] = mask; P[1] = world.dimensions; P[2] = buf.a[0]!.length;
+  buf.counts.fill(0);
+  if (runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) === null) return false;
+  let total = 0;
+  for (let p = 0; p < pool.threads; p++) {
+    const k = buf.counts[p]!;
+    if (k < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
+    total += k;
+  }
+  // Append in range order: the one-thread order.
+  let n = cs.pairCount;
+  if (cs.pairA.length < n + total) {
+    let size = Math.max(16, cs.pairA.length);
+    while (size < n + total) size *= 2;
+    const a = new Int32Array(size), b = new Int32Array(size), k = new Uint8Array(size);
+    a.set(cs.pairA.subarray(0, n)); b.set(cs.pairB.subarray(0, n)); k.set(cs.pairKind.subarray(0, n));
+    cs.pairA = a; cs.pairB = b; cs.pairKind = k;
+  }
+  for (let p = 0; p < pool.threads; p++) {
+    const k = buf.counts[p]!;
+    if (k === 0) continue;
+    cs.pairA.set(buf.a[p]!.subarray(0, k), n);
+    cs.pairB.set(buf.b[p]!.subarray(0, k), n);
+    cs.pairKind.fill(PairKind.BallBall, n, n + k);
+    n += k;
+  }
+  cs.pairCount = n;
+  return true;
+}
