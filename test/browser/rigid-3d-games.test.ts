@@ -73,4 +73,47 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(g.errors).toEqual([]);
     await g.close();
   });
+
+  it('lab-rigid-3d: keys switch scenes, a mouse drag lifts a box, dominoes fall in turn', async () => {
+    const g = await open('lab-rigid-3d', { scene: 'dominoes', dominoes: 30 });
+    type Lab = Game3D & { handles(): { scene: string; parts: number[]; main: number }; toppled(): number };
+    const boxes = await g.page.evaluate(() => (window.game as unknown as Lab).renderer.stats.shapes.boxes);
+    expect(boxes).toBe(30);
+    // The first domino was pushed: stepping on, they topple (the page counts each as it passes 20 degrees).
+    const toppled = await g.page.evaluate(() => {
+      const game = window.game as unknown as Lab;
+      game.paused = true;
+      for (let i = 0; i < 90; i++) game.step();
+      return game.toppled();
+    });
+    expect(toppled).toBeGreaterThan(3);
+    // Key 2: the stack. A drag from the top box upward lifts it off the stack.
+    await g.press('2');
+    await g.waitFor(() => (window.game as unknown as Lab).handles().scene === 'stack', null);
+    const at = await g.page.evaluate(() => {
+      const game = window.game as unknown as Lab;
+      game.paused = true;
+      const top = game.handles().main;
+      const p = game.renderer.drawnPosition(top)!;
+      const s = game.app.camera.position.clone().set(p[0]!, p[1]!, p[2]!).project(game.app.camera);
+      return { x: (s.x + 1) / 2, y: (1 - s.y) / 2, y0: game.world.components.Position.y[top]! };
+    });
+    const b = await g.canvasBox();
+    const m = g.page.mouse;
+    await m.move(b.x + b.width * at.x, b.y + b.height * at.y);
+    await m.down();
+    await m.move(b.x + b.width * at.x, b.y + b.height * (at.y - 0.15), { steps: 4 });
+    const lifted = await g.page.evaluate(() => {
+      const game = window.game as unknown as Lab & { drag: { body: number } };
+      const top = game.handles().main;
+      const held = game.drag.body === top;
+      for (let i = 0; i < 60; i++) game.step();
+      return { held, y: game.world.components.Position.y[top]! };
+    });
+    await m.up();
+    expect(lifted.held).toBe(true);
+    expect(lifted.y).toBeGreaterThan(at.y0 + 0.1);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
 });
