@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts.js';
 import { BodyType, PairKind } from './broadphase.js';
 import { jointKeepsApart } from '../joints/connected.js';
+import { parallelBallContacts } from './narrowphase-balls.js';
 
 function pushContact(
   buf: ContactBuffer, kind: number, a: number, b: number, feature: number,
@@ -99,7 +100,8 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
 
   const pairA = cs.pairA, pairB = cs.pairB, pairKind = cs.pairKind;
   const S = c.Segment;
-  for (let i = 0, n = cs.pairCount; i < n; i++) {
+  // The leading ball-ball pairs on the world's threads when it has them (narrowphase-balls.ts: the same contacts in the same order).
+  for (let i = parallelBallContacts(world, cs, buf), n = cs.pairCount; i < n; i++) {
     const kind = pairKind[i]!;
     const b = pairB[i]!;
     if (kind === PairKind.BallBall) {
