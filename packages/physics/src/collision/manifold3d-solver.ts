@@ -225,6 +225,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     const hax = ka > 0 ? ex[6 * ka + 3]! - base[3 * ka]! : 0, hay = ka > 0 ? ex[6 * ka + 4]! - base[3 * ka + 1]! : 0, haz = ka > 0 ? ex[6 * ka + 5]! - base[3 * ka + 2]! : 0;
     const hbx = kb > 0 ? ex[6 * kb + 3]! - base[3 * kb]! : 0, hby = kb > 0 ? ex[6 * kb + 4]! - base[3 * kb + 1]! : 0, hbz = kb > 0 ? ex[6 * kb + 5]! - base[3 * kb + 2]! : 0;
     const m = buf.points[i]!, mu = buf.friction[i]!;
+    const mA = sb[a + 9]!, mB = sb[b + 9]!;
     for (let kk = 0; kk < m; kk++) {
       const k = backward ? m - 1 - kk : kk;
       const q = 4 * i + k, o = JAC * q;
@@ -233,29 +234,57 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       let bias = 0, ms = 1, is = 0;
       if (s > 0) bias = s / hs;
       else if (useBias) { bias = Math.max(biasRate * s, -push); ms = massScale; is = impScale; }
-      const vn = relativeSpeed(sb, J, a, b, q, 0, nx, ny, nz);
+      const vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
+        + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]! - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
       const old = LN[q]!;
       const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
       const dl = lam - old;
       LN[q] = lam;
       if (lam > MAX[q]!) MAX[q] = lam;
-      if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz);
+      if (dl !== 0) {
+        // Inlined `apply` (hot): row 0 (the static world) has zero inverse mass and inertia, so it is never written.
+        if (ka > 0) {
+          const f = mA * dl;
+          sb[a] = sb[a]! - f * nx; sb[a + 1] = sb[a + 1]! - f * ny; sb[a + 2] = sb[a + 2]! - f * nz;
+          sb[a + 3] = sb[a + 3]! - dl * J[o + 6]!; sb[a + 4] = sb[a + 4]! - dl * J[o + 7]!; sb[a + 5] = sb[a + 5]! - dl * J[o + 8]!;
+          sb[a + 11] = 1;
+        }
+        if (kb > 0) {
+          const f = mB * dl;
+          sb[b] = sb[b]! + f * nx; sb[b + 1] = sb[b + 1]! + f * ny; sb[b + 2] = sb[b + 2]! + f * nz;
+          sb[b + 3] = sb[b + 3]! + dl * J[o + 9]!; sb[b + 4] = sb[b + 4]! + dl * J[o + 10]!; sb[b + 5] = sb[b + 5]! + dl * J[o + 11]!;
+          sb[b + 11] = 1;
+        }
+      }
     }
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k;
       const limit = mu * LN[q]!;
-      const v1 = relativeSpeed(sb, J, a, b, q, 1, t1x, t1y, t1z);
-      const o1 = LT1[q]!;
-      let l1 = o1 - MT1[q]! * v1;
-      l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
-      LT1[q] = l1;
-      if (l1 !== o1) apply(sb, J, ka, kb, q, 1, l1 - o1, t1x, t1y, t1z);
-      const v2 = relativeSpeed(sb, J, a, b, q, 2, t2x, t2y, t2z);
-      const o2 = LT2[q]!;
-      let l2 = o2 - MT2[q]! * v2;
-      l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
-      LT2[q] = l2;
-      if (l2 !== o2) apply(sb, J, ka, kb, q, 2, l2 - o2, t2x, t2y, t2z);
+      for (let d = 1; d < 3; d++) {
+        const o = JAC * q + 12 * d;
+        const ux = d === 1 ? t1x : t2x, uy = d === 1 ? t1y : t2y, uz = d === 1 ? t1z : t2z;
+        const L = d === 1 ? LT1 : LT2;
+        const vt = (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
+          + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]! - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
+        const old = L[q]!;
+        let lam = old - (d === 1 ? MT1[q]! : MT2[q]!) * vt;
+        lam = lam > limit ? limit : lam < -limit ? -limit : lam;
+        L[q] = lam;
+        const dl = lam - old;
+        if (dl === 0) continue;
+        if (ka > 0) {
+          const f = mA * dl;
+          sb[a] = sb[a]! - f * ux; sb[a + 1] = sb[a + 1]! - f * uy; sb[a + 2] = sb[a + 2]! - f * uz;
+          sb[a + 3] = sb[a + 3]! - dl * J[o + 6]!; sb[a + 4] = sb[a + 4]! - dl * J[o + 7]!; sb[a + 5] = sb[a + 5]! - dl * J[o + 8]!;
+          sb[a + 11] = 1;
+        }
+        if (kb > 0) {
+          const f = mB * dl;
+          sb[b] = sb[b]! + f * ux; sb[b + 1] = sb[b + 1]! + f * uy; sb[b + 2] = sb[b + 2]! + f * uz;
+          sb[b + 3] = sb[b + 3]! + dl * J[o + 9]!; sb[b + 4] = sb[b + 4]! + dl * J[o + 10]!; sb[b + 5] = sb[b + 5]! + dl * J[o + 11]!;
+          sb[b + 11] = 1;
+        }
+      }
     }
   }
 }

@@ -8,7 +8,7 @@ import { clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, looku
 import { currentHandle } from '../handles.js';
 import { meshesOf, type Mesh3D } from './mesh3d.js';
 import { wakeIsland3D, wakesSleeper3D } from './shape3d-islands.js';
-import { boxBox3D } from './box-box3d.js';
+import { boxBox3D, planeBox3D } from './box-box3d.js';
 
 /** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */
 const wakes = { list: new Int32Array(16), count: 0 };
@@ -32,8 +32,9 @@ function meets(ta: number, tb: number): boolean {
  *
  * - Poses are those at the start of the step (PreviousPosition, and the orientation turned back by
  *   the step's rotation w h), as the solver measures displacement from there.
- * - Broadphase: bounding boxes (a sphere of the shape's reach about its centre) fattened by the
- *   speculative margin, sorted along x and swept.
+ * - Broadphase: bounding boxes (a box's own, tight; other shapes a sphere of their reach about their
+ *   centre) fattened by the speculative margin and what the body's speed covers in the step, in a
+ *   hashed uniform grid (`pairs`).
  * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
  *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
  *   neither body is dynamic are skipped; sensors push nothing.
@@ -187,10 +188,18 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       speed = Math.hypot(V.x[b]!, V.y[b]!, V.z[b]!);
       if (turning) speed += Math.hypot(W.x[b]!, W.y[b]!, W.z[b]!) * (reach + Math.hypot(cx - x0, cy - y0, cz - z0));
     }
-    const pad = reach + speed * h + spec;
+    const pad = speed * h + spec;
+    // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
+    let wx = reach, wy = reach, wz = reach;
+    if (!isBall && s.kind[e] === Shape3DKind.Box) {
+      const ex = s.hx[e]!, ey = s.hy[e]!, ez = s.hz[e]!;
+      wx = ex * Math.abs(R[o]!) + ey * Math.abs(R[o + 1]!) + ez * Math.abs(R[o + 2]!);
+      wy = ex * Math.abs(R[o + 3]!) + ey * Math.abs(R[o + 4]!) + ez * Math.abs(R[o + 5]!);
+      wz = ex * Math.abs(R[o + 6]!) + ey * Math.abs(R[o + 7]!) + ez * Math.abs(R[o + 8]!);
+    }
     sc.shape[n] = e; sc.body[n] = b; sc.ball[n] = isBall ? 1 : 0; sc.speed[n] = speed;
     sc.px[n] = cx; sc.py[n] = cy; sc.pz[n] = cz;
-    sc.minX[n] = cx - pad; sc.maxX[n] = cx + pad; sc.minY[n] = cy - pad; sc.maxY[n] = cy + pad; sc.minZ[n] = cz - pad; sc.maxZ[n] = cz + pad;
+    sc.minX[n] = cx - wx - pad; sc.maxX[n] = cx + wx + pad; sc.minY[n] = cy - wy - pad; sc.maxY[n] = cy + wy + pad; sc.minZ[n] = cz - wz - pad; sc.maxZ[n] = cz + wz + pad;
     n++;
   };
   for (let e = 1; e <= cap; e++) if (s.body[e] !== 0) add(e, s.body[e]!, false);
@@ -224,7 +233,7 @@ function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: 
 }
 
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
-const grid = { start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(27) };
+const grid = { start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(0) };
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
 function cellHash(x: number, y: number, z: number, mask: number): number {
@@ -256,7 +265,8 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   let size = 64;
   while (size < 2 * n) size *= 2;
   const mask = size - 1;
-  if (grid.start.length < size + 1) grid.start = new Int32Array(2 * size + 1);
+  if (grid.start.length < size + 1) { grid.start = new Int32Array(2 * size + 1); grid.seen = new Int32Array(2 * size + 1); }
+  grid.seen.fill(0, 0, size);
   if (grid.items.length < n) { grid.items = new Int32Array(Math.max(64, 2 * n)); grid.bucket = new Int32Array(Math.max(64, 2 * n)); }
   const start = grid.start, items = grid.items, bucket = grid.bucket, seen = grid.seen, order = sc.order;
   start.fill(0, 0, size + 1);
@@ -277,13 +287,12 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
     const ti = type[sc.body[i]!]!;
     if (ti !== BodyType.Dynamic && ti !== BodyType.Kinematic) continue;
     const cx = Math.floor(minX[i]! * inv), cy = Math.floor(minY[i]! * inv), cz = Math.floor(minZ[i]! * inv);
-    let ns = 0;
+    const mark = i + 1;
     for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++) {
       const b = cellHash(cx + dx, cy + dy, cz + dz, mask);
-      let dup = false;
-      for (let k = 0; k < ns; k++) if (seen[k] === b) { dup = true; break; }
-      if (dup) continue;
-      seen[ns++] = b;
+      // Two neighbour cells may share a bucket: each bucket is searched once per collider.
+      if (seen[b] === mark) continue;
+      seen[b] = mark;
       for (let k = start[b]!, e = start[b + 1]!; k < e; k++) {
         const j = items[k]!;
         if (j === i) continue;
@@ -369,14 +378,19 @@ function planesAndMeshes(world: PhysicsWorld, s: Shape3DStore, st: Contact3DStat
     if (type[sc.body[i]!] !== BodyType.Dynamic) continue;
     const e = sc.shape[i]!;
     if (s.sensor[e]) continue;
-    collider(world, s, i, colB);
+    const box = s.kind[e] === Shape3DKind.Box;
+    let posed = false;
     const margin = spec + sc.speed[i]! * h;
     for (let k = 0; k < planes.length; k++) {
       const p = planes[k]!;
       const nx = P.nx[p]!, ny = P.ny[p]!, nz = P.nz[p]!, d = P.d[p]!;
       // Cheap reject: the bounding sphere above the plane by more than the margin.
       if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) continue;
-      collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
+      if (box) planeBox3D(nx, ny, nz, d, sc.px[i]!, sc.py[i]!, sc.pz[i]!, sc.R, 9 * i, s.hx[e]!, s.hy[e]!, s.hz[e]!, margin, manifold);
+      else {
+        if (!posed) { collider(world, s, i, colB); posed = true; }
+        collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
+      }
       if (manifold.count > 0) emit(world, s, st, 0, sc.body[i]!, p, e, false, false, p);
     }
   }
