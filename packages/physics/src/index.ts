@@ -100,6 +100,8 @@ export {
   EmitterShape, CapacityPolicy, MAX_EMITTER_RATE, maxSpawnsPerStep,
 } from './particles/emitter.js';
 export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
+export { addParticles } from './particles/bulk.js';
+export type { BulkParticleOptions } from './particles/bulk.js';
 export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';
 export { G_SI, COULOMB_SI, MAX_WIND_MODES } from './forces/settings.js';
 export { setGravitation, setElectrostatics, setWind, windAt } from './forces/configure.js';

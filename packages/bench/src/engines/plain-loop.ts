@@ -1,6 +1,7 @@
 import { particlesLayout } from '@bitphysics/physics';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { createPlainFireworks } from './plain-fireworks.js';
+import { createPlainFountain } from './plain-fountain.js';
 
 /** Fixed step of the baseline, s (the physics world's default). */
 const DT = 1 / 60;
@@ -13,12 +14,13 @@ const DT = 1 / 60;
  */
 export const plainLoopEngine: EngineAdapter = {
   name: 'plain-loop',
-  description: 'bare loop over Float64Arrays, semi-implicit Euler under gravity: the framework-overhead baseline (particles; fireworks: the same births, deaths, gravity and drag with a free list)',
+  description: 'bare loop over Float64Arrays, semi-implicit Euler under gravity: the framework-overhead baseline (particles; fireworks and fountain: the same births, deaths, gravity (and drag) with a free list)',
   supports(scene: string): boolean {
-    return scene === 'particles' || scene === 'fireworks';
+    return scene === 'particles' || scene === 'fireworks' || scene === 'fountain';
   },
   async create(options: SceneRunOptions): Promise<EngineInstance> {
     if (options.scene === 'fireworks') return createPlainFireworks(options);
+    if (options.scene === 'fountain') return createPlainFountain(options);
     if (options.scene !== 'particles') throw new RangeError(`plain-loop: does not support scene "${options.scene}"`);
     const layout = particlesLayout({ count: options.count, seed: options.seed });
     const n = layout.count;

@@ -5,6 +5,7 @@ import { particlesBench } from './particles.js';
 import { spheresInBoxBench } from './spheres-in-box.js';
 import { galaxyBench } from './galaxy.js';
 import { fireworksBench } from './fireworks.js';
+import { fountainBench } from './fountain.js';
 import { pyramidBench } from './pyramid.js';
 import { jointGridBench } from './joint-grid.js';
 import { clothBench } from './cloth.js';
@@ -18,6 +19,7 @@ const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
   [spheresInBoxBench.name]: spheresInBoxBench,
   [galaxyBench.name]: galaxyBench,
   [fireworksBench.name]: fireworksBench,
+  [fountainBench.name]: fountainBench,
   [pyramidBench.name]: pyramidBench,
   [jointGridBench.name]: jointGridBench,
   [clothBench.name]: clothBench,

@@ -1,5 +1,6 @@
 import { $internal, commitRemovals } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
+import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Particle archetypes: creating and removing many entities of one fixed component set without
@@ -76,14 +77,25 @@ export interface Archetype {
   queries: QueryData[];
   /** The world's query count when `queries` was computed. */
   queryCount: number;
+  /** The table the archetype belongs to. */
+  readonly table: ArchetypeTable;
 }
 
 /** Per-world archetype bookkeeping (a cache of bitecs' structure plus the batch's pending deaths). */
 export interface ArchetypeTable {
   /** Every archetype met, by id. */
   readonly list: Archetype[];
-  /** Archetype by a caller's key (the emitter's particle kind). */
+  /** Archetype by a caller's key (an emitter's particle kind, bulk particles). */
   readonly byKey: Map<number, Archetype>;
+  /**
+   * `disorder`: query entries added at a list's end or moved by a removal since the lists were last put
+   * in slot order (births that found no pending death of their archetype in their slot, and deaths no
+   * birth reused); see `defragment`. It decides when the lists are reordered, so it is world state,
+   * kept in snapshots (the only part of the table that is).
+   */
+  readonly order: { disorder: number };
+  /** The world's capacity: the per-slot arrays below get capacity + 1 entries at the first churn (empty until then). */
+  readonly capacity: number;
   /** Per slot: id + 1 of the archetype the slot's entity was born with (0: unknown). */
   slotArchetype: Int32Array;
   /** Per slot: the component set left behind by the slot's last fast death, and id + 1 of its archetype. */
@@ -94,24 +106,39 @@ export interface ArchetypeTable {
   /** Slots of pending deaths, in death order (entries whose mark was cleared by a birth are skipped). */
   pending: Int32Array;
   pendingCount: number;
-  /**
-   * `disorder`: query entries added at a list's end or moved by a removal since the lists were last put
-   * in slot order (births that found no pending death of their archetype in their slot, and deaths no
-   * birth reused); see `defragment`. It decides when the lists are reordered, so it is world state:
-   * the object belongs to the particle book, which snapshots keep.
-   */
-  readonly order: { disorder: number };
   /** Scratch of `defragment`: a mark a slot. */
   marks: Uint8Array;
 }
 
-/** A new, empty table for a world of `capacity` entities, counting disorder in `order`. */
-export function createArchetypeTable(capacity: number, order: { disorder: number }): ArchetypeTable {
-  const n = capacity + 1;
-  return {
-    list: [], byKey: new Map(), slotArchetype: new Int32Array(n), staleSet: [], staleArchetype: new Int32Array(n),
-    pendingMark: new Int32Array(n), pending: new Int32Array(n), pendingCount: 0, order, marks: new Uint8Array(n),
-  };
+const tables = new WeakMap<PhysicsWorld, ArchetypeTable>();
+// Only `order` is state; the rest is a cache of bitecs' structure that a restored world rebuilds.
+registerExternalWorldState({
+  name: 'particle-archetypes',
+  get: (world, create) => (create ? archetypes(world) : tables.get(world)),
+  clear: (world) => { tables.delete(world); },
+  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'pendingMark', 'pending', 'pendingCount', 'marks'],
+});
+
+/** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
+export function archetypes(world: PhysicsWorld): ArchetypeTable {
+  let t = tables.get(world);
+  if (t === undefined) {
+    const none = new Int32Array(0);
+    t = {
+      list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
+      staleArchetype: none, pendingMark: none, pending: none, pendingCount: 0, marks: new Uint8Array(0),
+    };
+    tables.set(world, t);
+  }
+  return t;
+}
+
+/** Allocates the per-slot arrays of `table` (once). */
+function slotArrays(table: ArchetypeTable): void {
+  if (table.pendingMark.length !== 0) return;
+  const n = table.capacity + 1;
+  table.slotArchetype = new Int32Array(n); table.staleArchetype = new Int32Array(n);
+  table.pendingMark = new Int32Array(n); table.pending = new Int32Array(n); table.marks = new Uint8Array(n);
 }
 
 function matchesMasks(q: QueryData, masks: Int32Array): boolean {
@@ -148,7 +175,7 @@ function archetypeOfMasks(world: PhysicsWorld, ecs: EcsInternals, table: Archety
     const key = Object.keys(store).find((k) => ArrayBuffer.isView(store[k]));
     if (key !== undefined) probes.push([store, key]);
   }
-  const a: Archetype = { id: table.list.length, components, masks: masks.slice(), probes, queries: [], queryCount: -1 };
+  const a: Archetype = { id: table.list.length, components, masks: masks.slice(), probes, queries: [], queryCount: -1, table };
   refreshQueries(ecs, a);
   table.list.push(a);
   void world;
@@ -171,6 +198,7 @@ function masksOf(ecs: EcsInternals, slot: number): Int32Array {
  */
 export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number): Archetype {
   const ecs = ecsOf(world);
+  slotArrays(table);
   const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   table.byKey.set(key, a);
@@ -217,7 +245,9 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
  * room) and counts its life in `world.spawnStamp`. Writes no component data: the caller writes every
  * field of every component of the set. @returns its slot.
  */
-export function bornSlot(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, a: Archetype): number {
+export function bornSlot(world: PhysicsWorld, a: Archetype): number {
+  const table = a.table, ecs = ecsOf(world);
+  if (table.pendingMark.length === 0) slotArrays(table);
   const ix = ecs.entityIndex;
   let e: number;
   if (ix.aliveCount < ix.dense.length) {
@@ -272,6 +302,7 @@ export function bornSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
  */
 export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, e: number): boolean {
   if (ecs.entitiesWithRelations.size !== 0 && ecs.entitiesWithRelations.has(e)) return false;
+  if (table.pendingMark.length === 0) slotArrays(table);
   const em = ecs.entityMasks;
   let mark = table.slotArchetype[e]!;
   let a = mark > 0 ? table.list[mark - 1] : undefined;
@@ -331,6 +362,7 @@ export function defragment(world: PhysicsWorld, table: ArchetypeTable): void {
   const order = table.order;
   if (order.disorder < 1024 || order.disorder * 8 < alive) return;
   order.disorder = 0;
+  slotArrays(table);
   const ecs = ecsOf(world);
   const maxId = ecs.entityIndex.maxId;
   const seen = new Set<QueryData>();
@@ -357,5 +389,51 @@ function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
   let j = 0;
   for (let e = 1; e <= maxId; e++) {
     if (marks[e] === 1) { marks[e] = 0; dense[j] = e; sparse[e] = j; j++; }
+  }
+}
+
+/**
+ * Creates `count` entities of archetype `a` (call `prepareArchetype` first; the world must have room,
+ * and no death may be pending: call outside churn batches), writing their slots into `out` in the
+ * order bitecs would hand them out. `bornSlot` without the churn bookkeeping, for bulk creation, one
+ * array at a time (entity index, each mask generation, each query). Writes no component data.
+ */
+export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out: Int32Array): void {
+  const ecs = ecsOf(world);
+  const ix = ecs.entityIndex, spawn = world.spawnStamp;
+  for (let k = 0; k < count; k++) {
+    let e: number;
+    if (ix.aliveCount < ix.dense.length) {
+      e = ix.dense[ix.aliveCount]!;
+      ix.sparse[e] = ix.aliveCount;
+    } else {
+      e = ++ix.maxId;
+      ix.dense.push(e);
+      ix.sparse[e] = ix.aliveCount;
+    }
+    ix.aliveCount++;
+    spawn[e] = spawn[e]! + 1;
+    out[k] = e;
+  }
+  // A free slot's masks are 0 (removal clears them), so generations the archetype has no bit in need no writes.
+  const masks = a.masks;
+  for (let g = 0; g < masks.length; g++) {
+    const em = ecs.entityMasks[g]!, m = masks[g]!;
+    if (m !== 0) for (let k = 0; k < count; k++) em[out[k]!] = m;
+  }
+  const qs = a.queries;
+  for (let i = 0; i < qs.length; i++) {
+    const q = qs[i]!;
+    // The set's own add for the first (it may allocate its sparse array), then its arrays directly.
+    q.add(out[0]!);
+    const dense = q.dense, sparse = q.sparse;
+    for (let k = 1; k < count; k++) {
+      const e = out[k]!;
+      if (dense[sparse[e]!] !== e) sparse[e] = dense.push(e) - 1;
+    }
+  }
+  if (ecs.entityComponents instanceof Map) {
+    const sets = ecs.entityComponents;
+    for (let k = 0; k < count; k++) sets.set(out[k]!, new Set(a.components));
   }
 }

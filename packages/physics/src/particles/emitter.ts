@@ -3,7 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import { DEFAULT_MATERIAL } from '../components.js';
 import {
-  archetypeFromEntity, bornSlot, createArchetypeTable, defragment, ecsOf, killSlot, prepareArchetype, settle, type Archetype, type ArchetypeTable,
+  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, prepareArchetype, settle, type Archetype,
 } from './archetype.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
@@ -146,18 +146,11 @@ interface ParticleBook {
   budget: number; budgetStep: number;
   /** Particles whose lifetime ran out, removed by `lifetimeSystem`, since the world was made. */
   expiredTotal: number;
-  /** How far the query lists have drifted from slot order (see archetype.ts, `defragment`). */
-  order: { disorder: number };
-  /**
-   * The churn path's cache of bitecs' structure (particle archetypes, component sets kept for reuse);
-   * not state: a restored world rebuilds it (kept out of snapshots, like the hooks).
-   */
-  arch: ArchetypeTable;
 }
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
 registerExternalWorldState({
-  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks', 'arch'],
+  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks'],
 });
 
 /** The particle book of `world`, made on first use. */
@@ -169,9 +162,8 @@ export function book(world: PhysicsWorld): ParticleBook {
       // Twice the capacity: the FIFO holds the gone particles too until they reach its head or it is compacted.
       ids: new Int32Array(2 * n), stamps: new Uint32Array(2 * n), head: 0, count: 0, hooks: [],
       expired: new Int32Array(n), expiredStamps: new Uint32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
-      budget: maxSpawnsPerStep(world), budgetStep: world.steps, expiredTotal: 0, order: { disorder: 0 }, arch: createArchetypeTable(0, { disorder: 0 }),
+      budget: maxSpawnsPerStep(world), budgetStep: world.steps, expiredTotal: 0,
     };
-    b.arch = createArchetypeTable(world.capacity, b.order);
     books.set(world, b);
   }
   return b;
@@ -226,7 +218,7 @@ function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
     const e = b.ids[b.head]!, stamp = b.stamps[b.head]!;
     b.head = (b.head + 1) % size;
     b.count--;
-    if (live(world, e, stamp)) { removeParticle(world, b, e); return true; }
+    if (live(world, e, stamp)) { removeParticle(world, e); return true; }
   }
   return false;
 }
@@ -236,12 +228,12 @@ function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
  * churn path's removal (`killSlot`, pending until `settle`) or bitecs' own for a particle whose
  * components were changed to a set no emitter gives.
  */
-function removeParticle(world: PhysicsWorld, b: ParticleBook, e: number): void {
+function removeParticle(world: PhysicsWorld, e: number): void {
   // Hooks may query: they must not meet a pending death in a query's list.
-  settle(b.arch);
+  settle(archetypes(world));
   for (const hook of world.removeHooks) hook(world, e);
   if (!entityExists(world, e)) return;
-  if (!killSlot(world, ecsOf(world), b.arch, e)) removeEntity(world, e);
+  if (!killSlot(world, ecsOf(world), archetypes(world), e)) removeEntity(world, e);
 }
 
 const sample = new Float64Array(6);
@@ -310,8 +302,8 @@ function particleKind(world: PhysicsWorld, em: number): number {
  * undefined if no particle of its kind was made yet in this world, or a store of the kind has no
  * arrays (the next particle then goes through bitecs).
  */
-function archetypeFor(world: PhysicsWorld, b: ParticleBook, em: number): Archetype | undefined {
-  const a = b.arch.byKey.get(particleKind(world, em));
+function archetypeFor(world: PhysicsWorld, em: number): Archetype | undefined {
+  const a = archetypes(world).byKey.get(particleKind(world, em));
   return a !== undefined && prepareArchetype(world, a) ? a : undefined;
 }
 
@@ -339,9 +331,9 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
   if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz);
   let e: number;
   if (a === undefined) {
-    e = spawnThroughBitecs(world, b, em);
+    e = spawnThroughBitecs(world, em);
   } else {
-    e = bornSlot(world, ecsOf(world), b.arch, a);
+    e = bornSlot(world, a);
     // What bitecs' observers write when these components are added (create-world.ts), then the particle.
     c.AngularVelocity.x[e] = 0; c.AngularVelocity.y[e] = 0; c.AngularVelocity.z[e] = 0;
     c.Force.x[e] = 0; c.Force.y[e] = 0; c.Force.z[e] = 0;
@@ -381,7 +373,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
  * stores and add dependent components), and its component set registered as the kind's archetype.
  * Returns its slot; the caller writes position, velocity, lifetime and look.
  */
-function spawnThroughBitecs(world: PhysicsWorld, b: ParticleBook, em: number): number {
+function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
   // bitecs may hand out a slot still pending in its queries: archetypeFromEntity takes it out of
   // the ones its new components do not match, as a fast birth would.
   const c = world.components;
@@ -402,7 +394,7 @@ function spawnThroughBitecs(world: PhysicsWorld, b: ParticleBook, em: number): n
     if (gs !== 1) { addComponent(world, e, c.GravityScale); c.GravityScale.value[e] = gs; }
     if (r > 0) { addComponent(world, e, c.Ball); c.Ball.radius[e] = r; }
   }
-  archetypeFromEntity(world, b.arch, particleKind(world, em), e);
+  archetypeFromEntity(world, archetypes(world), particleKind(world, em), e);
   return e;
 }
 
@@ -435,14 +427,14 @@ function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: numb
   const n = takeBudget(world, b, count);
   if (n < count) E.dropped[em] = E.dropped[em]! + (count - n);
   const k = E.inherit[em]!;
-  let a = archetypeFor(world, b, em);
+  let a = archetypeFor(world, em);
   for (let i = 0; i < n; i++) {
     if (spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation, a) === 0) {
       // The world is full and the policy could not make room: the rest of this batch cannot fit either.
       E.dropped[em] = E.dropped[em]! + (n - i - 1);
       return;
     }
-    if (a === undefined) a = archetypeFor(world, b, em);
+    if (a === undefined) a = archetypeFor(world, em);
   }
 }
 
@@ -512,12 +504,12 @@ export function lifetimeSystem(world: PhysicsWorld): void {
     for (let h = 0; h < removeHooks.length; h++) removeHooks[h]!(world, e);
   }
   // Then the removals, and the bursts' births into the freed slots.
-  const ecs = ecsOf(world);
+  const ecs = ecsOf(world), table = archetypes(world);
   try {
     for (let k = 0; k < n; k++) {
       const e = expired[k]!;
       if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
-      if (!killSlot(world, ecs, b.arch, e)) removeEntity(world, e);
+      if (!killSlot(world, ecs, table, e)) removeEntity(world, e);
       b.expiredTotal++;
     }
     const B = b.bursts;
@@ -526,9 +518,9 @@ export function lifetimeSystem(world: PhysicsWorld): void {
       spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
     }
   } finally {
-    settle(b.arch);
+    settle(table);
   }
-  defragment(world, b.arch);
+  defragment(world, table);
 }
 
 /**
@@ -568,10 +560,10 @@ export function emitterSystem(world: PhysicsWorld): void {
     try {
       spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
     } finally {
-      settle(b.arch);
+      settle(archetypes(world));
     }
   }
-  defragment(world, b.arch);
+  defragment(world, archetypes(world));
 }
 
 function range(where: string, name: string, v: number | [number, number], positive: boolean): [number, number] {
@@ -774,13 +766,13 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
   const before = world.components.Emitter.spawned[slot]!;
   const b = book(world);
   try {
-    let a = archetypeFor(world, b, slot);
+    let a = archetypeFor(world, slot);
     for (let i = 0; i < count; i++) {
       spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0, a);
-      if (a === undefined) a = archetypeFor(world, b, slot);
+      if (a === undefined) a = archetypeFor(world, slot);
     }
   } finally {
-    settle(b.arch);
+    settle(archetypes(world));
   }
   return world.components.Emitter.spawned[slot]! - before;
 }

@@ -3,6 +3,7 @@ import { particles } from './particles.js';
 import { spheresInBox } from './spheres-in-box.js';
 import { galaxy } from './galaxy.js';
 import { fireworks } from './fireworks.js';
+import { fountain } from './fountain.js';
 import { pyramid } from './pyramid.js';
 import { jointGrid } from './joint-grid.js';
 import { clothScene } from './cloth.js';
@@ -17,6 +18,7 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [spheresInBox.name]: spheresInBox as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [galaxy.name]: galaxy as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [fireworks.name]: fireworks as SceneDefinition<{ count?: number; seed?: number }, unknown>,
+  [fountain.name]: fountain as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [pyramid.name]: pyramid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [jointGrid.name]: jointGrid as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [clothScene.name]: clothScene as SceneDefinition<{ count?: number; seed?: number }, unknown>,
@@ -35,6 +37,8 @@ export { galaxy } from './galaxy.js';
 export type { GalaxyOptions } from './galaxy.js';
 export { fireworks } from './fireworks.js';
 export type { FireworksOptions } from './fireworks.js';
+export { fountain, FOUNTAIN_MEAN_LIFETIME } from './fountain.js';
+export type { FountainOptions } from './fountain.js';
 export { pyramid, pyramidLayout } from './pyramid.js';
 export type { PyramidHandles, PyramidLayout, PyramidOptions } from './pyramid.js';
 export { jointGrid } from './joint-grid.js';

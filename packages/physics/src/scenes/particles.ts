@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
-import { addParticle } from '../bodies.js';
+import { addParticles } from '../particles/bulk.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { SceneDefinition } from './types.js';
@@ -65,13 +65,8 @@ export const particles: SceneDefinition<ParticlesOptions, ParticlesHandles> = {
   build(world: PhysicsWorld, options: ParticlesOptions = {}): ParticlesHandles {
     if (world.dimensions !== 2) throw new RangeError(`particles: needs a 2D world, got dimensions ${world.dimensions}`);
     const layout = particlesLayout(options);
-    const ids = new Uint32Array(layout.count);
-    const p = [0, 0], v = [0, 0];
-    for (let i = 0; i < layout.count; i++) {
-      p[0] = layout.positions[2 * i]!; p[1] = layout.positions[2 * i + 1]!;
-      v[0] = layout.velocities[2 * i]!; v[1] = layout.velocities[2 * i + 1]!;
-      ids[i] = addParticle(world, { position: p, velocity: v });
-    }
+    // One bulk call: the same entities, slots and stores as addParticle in a loop, in a fraction of the time.
+    const ids = Uint32Array.from(addParticles(world, layout.count, { positions: layout.positions, velocities: layout.velocities }));
     return { particles: ids };
   },
 };
