@@ -8,20 +8,25 @@
  *
  * Mode 'flip' spins a box with three distinct moments about its intermediate axis: it flips over
  * again and again (the Dzhanibekov effect); the plot shows w in the body frame.
+ * Mode 'room' lets the cube go: gravity on, a box collider, a floor and four walls; it lands, tumbles,
+ * slides and bounces off the walls (3D box contacts), pushed by the keys and clicks, and Space jumps.
  * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
- * M switches mode; P pause, N single step, R reset. Click a face: an impulse there. Drag: orbit.
- * URL: ?mode=cube|flip, ?spin=rad/s.
+ * Space jump (room); M switches mode; P pause, N single step, R reset. Click a face: an impulse there. Drag: orbit.
+ * URL: ?mode=cube|flip|room, ?spin=rad/s.
  */
 import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
 import {
-  addPlane, addSystem, applyImpulseAtPoint, createPhysicsWorld, rotateVectorInverse, spinAngularMomentum, spinKineticEnergy,
+  addPlane, addSystem, applyImpulse, applyImpulseAtPoint, createPhysicsWorld, rotateVectorInverse, spinAngularMomentum, spinKineticEnergy,
   type PhysicsWorld,
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
 import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
 import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
 import type { Plot } from '../shared/plot';
-import { MODES, buildRotatingCube, rotatingCubeWorldOptions, torqueCouple, type Mode, type RotatingCubeHandles } from './scene';
+import {
+  JUMP_IMPULSE, MODES, ROOM_HALF, ROOM_PUSH, WALL_HEIGHT, buildRotatingCube, rotatingCubeWorldOptions, torqueCouple, type Mode,
+  type RotatingCubeHandles,
+} from './scene';
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click. */
 const CLICK_SLOP = 5;
@@ -48,13 +53,13 @@ const keyTorque = new Float64Array(3);
 
 /** A fresh world with the body of the current mode (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
-  const world = createPhysicsWorld(rotatingCubeWorldOptions());
+  const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
   handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin });
   const w = world.components.AngularVelocity, e = handles.body;
   omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
   addSystem(world, 'forces', torqueCouple(handles.body, () => keyTorque));
-  // A floor far below, only to catch the shadow (the box has no collider).
-  addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
+  // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
+  if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
   return world;
 }
 
@@ -68,20 +73,45 @@ const game = await startThreeGame({
     { keys: 'A D', action: 'torque: yaw' },
     { keys: 'Q E', action: 'torque: roll' },
     { keys: 'X', action: 'stop spinning' },
-    { keys: 'M', action: 'mode: cube / Dzhanibekov flip' },
+    { keys: 'Space', action: 'jump (room mode)' },
+    { keys: 'M', action: 'mode: cube / Dzhanibekov flip / room' },
     ...ORBIT_CONTROLS,
   ],
   keys: [
     { key: 'x', label: 'stop', action: () => stopSpin() },
-    { key: 'm', label: 'mode', action: () => setMode(params.mode === 'cube' ? 'flip' : 'cube') },
+    { key: 'm', label: 'mode', action: () => setMode(MODES[(MODES.indexOf(params.mode) + 1) % MODES.length]!) },
+    { key: ' ', label: 'jump', action: () => jump() },
   ],
   app: { controls: { minDistance: 1.5, maxDistance: 30 } },
-  renderer: { debug: params.axes ? { axes: true, velocities: false, contacts: false } : false, planeSize: 14 },
-  view: { min: [-1.3, -1.3, -1.3], max: [1.3, 1.3, 1.3] },
+  renderer: { debug: params.axes ? debugOptions() : false, planeSize: 14, boundary: 'none' },
+  view: viewOf(params.mode),
   viewDirection: [1, 0.7, 1.4],
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+
+/** What the camera frames in each mode, m. */
+function viewOf(mode: Mode): { min: [number, number, number]; max: [number, number, number] } {
+  return mode === 'room'
+    ? { min: [-ROOM_HALF, 0, -ROOM_HALF], max: [ROOM_HALF, WALL_HEIGHT, ROOM_HALF] }
+    : { min: [-1.3, -1.3, -1.3], max: [1.3, 1.3, 1.3] };
+}
+
+/** Debug layer: body axes; in the room also the contact points. */
+function debugOptions() {
+  return { axes: true, velocities: false, contacts: params.mode === 'room', joints: false };
+}
+
+/** Room mode: the key torque and click impulse scale. */
+function push(): number {
+  return params.mode === 'room' ? ROOM_PUSH : 1;
+}
+
+/** Space: in room mode, a jump (an impulse up at the centre of mass). */
+function jump(): void {
+  if (params.mode !== 'room') return;
+  applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
+}
 
 // The body: a unit box with one colour per face (x red, y green, z blue; darker on the negative
 // side), scaled by the renderer to the body's equivalent-inertia box.
@@ -98,7 +128,10 @@ const boxGeometry = new BoxGeometry(1, 1, 1);
   boxGeometry.setAttribute('color', new Float32BufferAttribute(colors, 3));
 }
 const boxMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.55, metalness: 0.05 });
-const dress = (): void => renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
+const dress = (): void => {
+  renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
+  for (const wall of handles.walls) renderer.setColor(wall, 0x5a6478);
+};
 dress();
 shell.onWorldChange(() => { dress(); plot?.clear(); });
 
@@ -130,7 +163,7 @@ function updateKeyTorque(): void {
   const yaw = (held.has('d') ? 1 : 0) - (held.has('a') ? 1 : 0);
   const roll = (held.has('q') ? 1 : 0) - (held.has('e') ? 1 : 0);
   app.camera.matrixWorld.extractBasis(right, up, back);
-  const T = params.torque;
+  const T = params.torque * push();
   keyTorque[0] = T * (pitch * right.x + yaw * up.x + roll * back.x);
   keyTorque[1] = T * (pitch * right.y + yaw * up.y + roll * back.y);
   keyTorque[2] = T * (pitch * right.z + yaw * up.z + roll * back.z);
@@ -162,7 +195,7 @@ function clickAt(ndcX: number, ndcY: number): boolean {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (!hit || hit.eid !== handles.body) return false;
   rayDir.set(ndcX, ndcY, 0.5).unproject(app.camera).sub(app.camera.position).normalize();
-  const J = params.impulse;
+  const J = params.impulse * push();
   applyImpulseAtPoint(shell.world, handles.body, [rayDir.x * J, rayDir.y * J, rayDir.z * J], hit.point);
   flash = 12;
   return true;
@@ -175,21 +208,24 @@ function stopSpin(): void {
   w.x[handles.body] = 0; w.y[handles.body] = 0; w.z[handles.body] = 0;
 }
 
-/** Switches mode and rebuilds the world. */
+/** Switches mode, rebuilds the world and frames it. */
 function setMode(mode: Mode): void {
   params.mode = mode;
   panel.refresh();
   shell.reset();
+  const v = viewOf(mode);
+  app.frame(v.min, v.max, [1, 0.7, 1.4]);
+  if (params.axes) renderer.setDebug(debugOptions());
 }
 
 const panel = createPanel(params, [
-  { type: 'choice', key: 'mode', options: { 'cube (keys, clicks)': 'cube', 'Dzhanibekov flip': 'flip' }, onChange: (m) => setMode(m as Mode) },
+  { type: 'choice', key: 'mode', options: { 'cube (keys, clicks)': 'cube', 'Dzhanibekov flip': 'flip', 'room (gravity, walls)': 'room' }, onChange: (m) => setMode(m as Mode) },
   { type: 'slider', key: 'torque', label: 'key torque (N m)', min: 0.05, max: 3, step: 0.05 },
   { type: 'slider', key: 'impulse', label: 'click impulse (N s)', min: 0.02, max: 2, step: 0.02 },
   { type: 'slider', key: 'spin', label: 'flip spin (rad/s, rebuilds)', min: 0.5, max: 30, step: 0.5, onRelease: true, onChange: () => { if (params.mode === 'flip') shell.reset(); } },
   { type: 'checkbox', key: 'showL', label: 'angular momentum L' },
   { type: 'checkbox', key: 'showOmega', label: 'angular velocity ω' },
-  { type: 'checkbox', key: 'axes', label: 'body axes', onChange: (v) => renderer.setDebug(v === true ? { axes: true, velocities: false, contacts: false } : false) },
+  { type: 'checkbox', key: 'axes', label: 'body axes (room: contacts)', onChange: (v) => renderer.setDebug(v === true ? debugOptions() : false) },
   { type: 'button', key: 'stop', label: 'stop spinning (X)' },
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Rotating cube' });
@@ -231,7 +267,8 @@ function frame(): void {
   // L is drawn on the same scale as w: L / I_mid (rad/s) times omegaScale.
   const I = handles.inertia;
   const iMid = Math.max(Math.min(I[0], I[1]), Math.min(Math.max(I[0], I[1]), I[2]));
-  const o = handles.pivot;
+  const P = c.Position;
+  const o = params.mode === 'room' ? [P.x[e]!, P.y[e]!, P.z[e]!] : handles.pivot;
   if (params.showL) lArrow.set(o[0], o[1], o[2], L[0]!, L[1]!, L[2]!, omegaScale / iMid); else lArrow.hide();
   if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale); else wArrow.hide();
   if (world.steps !== lastPlotted) {
@@ -244,7 +281,9 @@ function frame(): void {
     lines[0]!.textContent = `|ω| ${Math.hypot(wx, wy, wz).toFixed(3)} rad/s`;
     lines[1]!.textContent = `|L| ${Math.hypot(L[0]!, L[1]!, L[2]!).toFixed(4)} kg m²/s`;
     lines[2]!.textContent = `E_rot ${spinKineticEnergy(world, e).toFixed(4)} J`;
-    lines[3]!.textContent = flash > 0 ? 'impulse!' : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
+    lines[3]!.textContent = flash > 0 ? 'impulse!' : params.mode === 'room'
+      ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
+      : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
     lines[4]!.textContent = `arrows: 1 rad/s = ${omegaScale.toFixed(2)} m`;
     // For a cube (equal moments) L stays parallel to w; for other boxes it does not.
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);

@@ -11,13 +11,17 @@
  *   is unstable, so the box flips over and back again and again while its angular momentum stays
  *   fixed (the Dzhanibekov or tennis-racket effect; Ashbaugh, Chicone and Cushman, "The twisting
  *   tennis racket", J. Dyn. Diff. Eq. 3, 1991).
+ * - `'room'`: the 1 m cube free under gravity in a room (a floor and four walls of static boxes): a
+ *   box collider (`addShape3D`), so it lands, tumbles, slides and bounces off the walls; keys and
+ *   clicks push it harder (ROOM_PUSH times), and it can jump.
  */
 import {
-  addBody, addSystem, applyForceAtPoint, inertiaOfSolidBox, type PhysicsWorld, type PhysicsWorldOptions, type System,
+  addBody, addPlane, addShape3D, addSystem, applyForceAtPoint, inertiaOfSolidBox, setAngularVelocity, type PhysicsWorld,
+  type PhysicsWorldOptions, type System,
 } from '@bitphysics/physics';
 
 /** The two modes. */
-export const MODES = ['cube', 'flip'] as const;
+export const MODES = ['cube', 'flip', 'room'] as const;
 /** One of `MODES`. */
 export type Mode = (typeof MODES)[number];
 
@@ -25,10 +29,20 @@ export type Mode = (typeof MODES)[number];
 export const EDGES: Readonly<Record<Mode, readonly [number, number, number]>> = Object.freeze({
   cube: [1, 1, 1] as const,
   flip: [0.3, 0.8, 1.4] as const,
+  room: [1, 1, 1] as const,
 });
 
 /** Mass of the body in each mode, kg. */
-export const MASS: Readonly<Record<Mode, number>> = Object.freeze({ cube: 1, flip: 2 });
+export const MASS: Readonly<Record<Mode, number>> = Object.freeze({ cube: 1, flip: 2, room: 1 });
+
+/** Room mode: the room's inside half width (x and z), m, its walls' height and half thickness, m. */
+export const ROOM_HALF = 3;
+export const WALL_HEIGHT = 1.5;
+export const WALL_HALF_THICKNESS = 0.2;
+/** Room mode: key torques and click impulses are this many times the panel's values (the cube must beat friction on the floor). */
+export const ROOM_PUSH = 10;
+/** Room mode: the jump's impulse, N s (a 1 kg cube leaves the floor at 4 m/s, rising 0.8 m). */
+export const JUMP_IMPULSE = 4;
 
 /** Options of `buildRotatingCube`. */
 export interface RotatingCubeOptions {
@@ -50,13 +64,17 @@ export interface RotatingCubeHandles {
   mode: Mode;
   /** Principal moments (x, y, z), kg m^2. */
   inertia: [number, number, number];
-  /** The pivot: the body's centre of mass is held here (m). */
+  /** The pivot: the body's centre of mass is held here (m); in room mode where it started (it is free). */
   pivot: [number, number, number];
+  /** Room mode: the static wall bodies (empty in the other modes). */
+  walls: number[];
 }
 
-/** World options: 3D, no gravity, room for the body. */
-export function rotatingCubeWorldOptions(): PhysicsWorldOptions {
-  return { dimensions: 3, capacity: 8, gravity: [0, 0, 0] };
+/** World options: 3D, no gravity, room for the body; in room mode Earth gravity and 2 substeps. */
+export function rotatingCubeWorldOptions(mode: Mode = 'cube'): PhysicsWorldOptions {
+  return mode === 'room'
+    ? { dimensions: 3, capacity: 16, gravity: [0, -9.81, 0], substeps: 2 }
+    : { dimensions: 3, capacity: 8, gravity: [0, 0, 0] };
 }
 
 /**
@@ -77,6 +95,7 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
   if (!Number.isFinite(perturbation)) throw new RangeError(`rotating-cube: perturbation must be finite, got ${perturbation}`);
   const mass = MASS[mode];
   const inertia = inertiaOfSolidBox(mass, EDGES[mode]);
+  if (mode === 'room') return buildRoom(world, tumble);
   const body = addBody(world, {
     position: [0, 0, 0],
     mass,
@@ -85,7 +104,26 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
   });
   const pivot: [number, number, number] = [0, 0, 0];
   addSystem(world, 'constraints', holdAtPivot(body, pivot));
-  return { body, mode, inertia, pivot };
+  return { body, mode, inertia, pivot, walls: [] };
+}
+
+/**
+ * Room mode: a floor (plane y = 0, friction 0.5) and four static box walls around a 2 ROOM_HALF square,
+ * and the cube (1 kg, a 1 m box collider of density 1 kg/m^3, restitution 0.3) dropped tumbling from 1.5 m.
+ */
+function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCubeHandles {
+  addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: 0.5, restitution: 0.3 });
+  const walls: number[] = [];
+  const h = WALL_HEIGHT / 2, t = WALL_HALF_THICKNESS, a = ROOM_HALF + t, l = ROOM_HALF + 2 * t;
+  for (const [x, z, hx, hz] of [[a, 0, t, l], [-a, 0, t, l], [0, a, l, t], [0, -a, l, t]] as const) {
+    const wall = addBody(world, { position: [x, h, z], static: true });
+    addShape3D(world, wall, { type: 'box', halfExtents: [hx, h, hz], friction: 0.5, restitution: 0.3 });
+    walls.push(wall);
+  }
+  const body = addBody(world, { position: [0, 1.5, 0], orientation: [0.2, 0.1, 0.15, 0.96] });
+  addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: MASS.room, friction: 0.5, restitution: 0.3 });
+  setAngularVelocity(world, body, tumble);
+  return { body, mode: 'room', inertia: inertiaOfSolidBox(MASS.room, EDGES.room), pivot: [0, 1.5, 0], walls };
 }
 
 /** A constraints-stage system that puts `body` back on `pivot` with zero linear velocity. */

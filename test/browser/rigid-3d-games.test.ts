@@ -116,4 +116,26 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(g.errors).toEqual([]);
     await g.close();
   });
+
+  it('rotating-cube room mode: the cube lands in its room and Space makes it jump', async () => {
+    const g = await open('rotating-cube', { mode: 'room' });
+    type Cube = Game3D & { body(): number; angularVelocity(): number[] };
+    const landed = await g.page.evaluate(() => {
+      const game = window.game as unknown as Cube;
+      game.paused = true;
+      for (let i = 0; i < 150; i++) game.step();
+      return { y: game.world.components.Position.y[game.body()]!, walls: game.renderer.stats.shapes.boxes };
+    });
+    expect(landed.y).toBeLessThan(0.6); // on the floor (a 1 m cube rests at 0.5 m)
+    expect(landed.walls).toBe(4); // the cube itself is drawn with its face colours
+    await g.press('Space');
+    const up = await g.page.evaluate(() => {
+      const game = window.game as unknown as Cube;
+      for (let i = 0; i < 10; i++) game.step();
+      return game.world.components.Position.y[game.body()]!;
+    });
+    expect(up).toBeGreaterThan(landed.y + 0.2);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
 });

@@ -1,0 +1,30 @@
+/**
+ * rotating-cube's room mode, headless: the free cube lands on the floor and comes to rest on a face
+ * (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through.
+ */
+import { describe, expect, it } from 'vitest';
+import { createPhysicsWorld, setVelocity, setAngularVelocity, step } from '@bitphysics/physics';
+import { ROOM_HALF, buildRotatingCube, rotatingCubeWorldOptions } from '../../games/rotating-cube/scene';
+
+describe('rotating-cube room mode', () => {
+  it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
+    const world = createPhysicsWorld(rotatingCubeWorldOptions('room'));
+    const h = buildRotatingCube(world, { mode: 'room' });
+    const P = world.components.Position, V = world.components.Velocity;
+    expect(h.walls).toHaveLength(4);
+    for (let i = 0; i < 180; i++) step(world);
+    // Resting on a face: the centre of a 1 m cube is 0.5 m up (contact slop and soft contacts: 1 cm).
+    expect(P.y[h.body]).toBeCloseTo(0.5, 1);
+    expect(Math.abs(P.y[h.body]! - 0.5)).toBeLessThan(0.01);
+    expect(Math.hypot(V.x[h.body]!, V.y[h.body]!, V.z[h.body]!)).toBeLessThan(0.05);
+    // 8 m/s at the +x wall: the face reaches the wall in 0.3 s; with restitution 0.3 it comes back.
+    setVelocity(world, h.body, [8, 0.5, 0]);
+    setAngularVelocity(world, h.body, [0, 0, 0]);
+    let maxX = -Infinity;
+    for (let i = 0; i < 60; i++) { step(world); maxX = Math.max(maxX, P.x[h.body]!); }
+    // The centre never gets nearer the wall than the cube's half diagonal allows it to be inside.
+    expect(maxX).toBeLessThan(ROOM_HALF);
+    expect(maxX).toBeGreaterThan(ROOM_HALF - 0.9);
+    expect(V.x[h.body]).toBeLessThan(0.5);
+  });
+});
