@@ -208,3 +208,18 @@ test('an adaptive world gives the same state as a forced-parallel one and as one
   expect(run(2, true)).toBe(one);
   expect(run(2, false)).toBe(one);
 }, 60_000);
+
+test('galaxy of 33,000 stars on an adaptive pool: the state of one thread while its loops switch between threads and one thread', () => {
+  // The choice runs each loop on the threads at its first two calls and on one thread at the next
+  // two (threads/adaptive.ts), so four steps take every Barnes-Hut loop (gather with bounding box,
+  // keys, order, leaf moments, walk, forces) both ways.
+  const options = { count: 2 * MIN_PARALLEL_PER_THREAD + 200, seed: 8, openingAngle: 0.9 };
+  const run = (threads: number): string => {
+    const world = createPhysicsWorld({ ...galaxy.worldOptions(options), threads });
+    worlds.push(world);
+    galaxy.build(world, options);
+    stepMany(world, 4);
+    return stateHash(world);
+  };
+  expect(run(2)).toBe(run(1));
+}, 60_000);

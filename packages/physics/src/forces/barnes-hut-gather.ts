@@ -85,3 +85,93 @@ export function treeForces(A: KernelArray[], P: Float64Array, ids: Int32Array | 
   }
   return P.length * 0;
 }
+
+/**
+ * Puts the bodies into tree order after the key sort: slot s gets input body idx[s]'s position and
+ * mass, and perm[s] = idx[s]. A: x, y, z, m (input order), idx (Int32, sorted order), tx, ty, tz, tm
+ * (out, tree order), perm (Int32, out). P: 0 dimensions (z is 0 in 2D). Range over slots. Returns 0.
+ */
+export function treeOrder(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const x = A[0] as Float64Array, y = A[1] as Float64Array, z = A[2] as Float64Array, m = A[3] as Float64Array;
+  const idx = A[4] as Int32Array;
+  const bx = A[5] as Float64Array, by = A[6] as Float64Array, bz = A[7] as Float64Array, bm = A[8] as Float64Array;
+  const perm = A[9] as Int32Array;
+  const is3D = P[0] === 3;
+  for (let s = lo; s < hi; s++) {
+    const i = idx[s]!;
+    bx[s] = x[i]!; by[s] = y[i]!; bz[s] = is3D ? z[i]! : 0; bm[s] = m[i]!; perm[s] = i;
+  }
+  return ids === null ? 0 : 0;
+}
+
+/**
+ * Moments of the leaves among nodes lo .. hi - 1 (barnes-hut.ts: centre of mass, mass, second
+ * moment, in 2D third moment, b_max, tight box), and slot[perm[s]] = s for their bodies. A node is a
+ * leaf when the next node is not its first child. A: x, y, z, m (tree order), node (moments, stride
+ * 12), box (stride 6), start, end, parent (Int32), perm, slot (Int32). P: 0 dimensions, 1 node count.
+ * Range over nodes. Returns 0.
+ */
+export function leafMoments(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const x = A[0] as Float64Array, y = A[1] as Float64Array, z = A[2] as Float64Array, m = A[3] as Float64Array;
+  const F = A[4] as Float64Array, B = A[5] as Float64Array;
+  const start = A[6] as Int32Array, end = A[7] as Int32Array, parent = A[8] as Int32Array;
+  const perm = A[9] as Int32Array, slot = A[10] as Int32Array;
+  const is3D = P[0] === 3, nodeCount = P[1]!;
+  for (let k = lo; k < hi; k++) {
+    if (k + 1 < nodeCount && parent[k + 1] === k) continue; // has children: not a leaf
+    const s0 = start[k]!, s1 = end[k]!;
+    for (let s = s0; s < s1; s++) slot[perm[s]!] = s;
+    if (!is3D) {
+      let M = 0, X = 0, Y = 0, minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+      for (let s = s0; s < s1; s++) {
+        const w = m[s]!, px = x[s]!, py = y[s]!;
+        M += w; X += w * px; Y += w * py;
+        if (px < minX) minX = px; if (px > maxX) maxX = px;
+        if (py < minY) minY = py; if (py > maxY) maxY = py;
+      }
+      let cx: number, cy: number;
+      if (M > 0) { cx = X / M; cy = Y / M; } else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); }
+      let sxx = 0, sxy = 0, syy = 0, txxx = 0, txxy = 0, txyy = 0, tyyy = 0;
+      for (let s = s0; s < s1; s++) {
+        const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy;
+        const wxx = w * dx * dx, wyy = w * dy * dy, wxy = w * dx * dy;
+        sxx += wxx; sxy += wxy; syy += wyy;
+        txxx += wxx * dx; txxy += wxx * dy; txyy += wyy * dx; tyyy += wyy * dy;
+      }
+      const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy);
+      const o = k * 12;
+      F[o] = cx; F[o + 1] = cy; F[o + 2] = M; F[o + 3] = sxx; F[o + 4] = sxy; F[o + 5] = syy;
+      F[o + 6] = Math.sqrt(ex * ex + ey * ey);
+      F[o + 7] = txxx; F[o + 8] = txxy; F[o + 9] = txyy; F[o + 10] = tyyy; F[o + 11] = 0;
+      const b = k * 6;
+      B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
+    } else {
+      let M = 0, X = 0, Y = 0, Z = 0;
+      let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
+      for (let s = s0; s < s1; s++) {
+        const w = m[s]!, px = x[s]!, py = y[s]!, pz = z[s]!;
+        M += w; X += w * px; Y += w * py; Z += w * pz;
+        if (px < minX) minX = px; if (px > maxX) maxX = px;
+        if (py < minY) minY = py; if (py > maxY) maxY = py;
+        if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz;
+      }
+      let cx: number, cy: number, cz: number;
+      if (M > 0) { cx = X / M; cy = Y / M; cz = Z / M; }
+      else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); cz = 0.5 * (minZ + maxZ); }
+      let sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
+      for (let s = s0; s < s1; s++) {
+        const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy, dz = z[s]! - cz;
+        sxx += w * dx * dx; syy += w * dy * dy; szz += w * dz * dz;
+        sxy += w * dx * dy; sxz += w * dx * dz; syz += w * dy * dz;
+      }
+      const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy), ez = Math.max(cz - minZ, maxZ - cz);
+      const o = k * 12;
+      F[o] = cx; F[o + 1] = cy; F[o + 2] = cz; F[o + 3] = M;
+      F[o + 4] = sxx; F[o + 5] = syy; F[o + 6] = szz; F[o + 7] = sxy; F[o + 8] = sxz; F[o + 9] = syz;
+      F[o + 10] = Math.sqrt(ex * ex + ey * ey + ez * ez); F[o + 11] = 0;
+      const b = k * 6;
+      B[b] = minX; B[b + 1] = minY; B[b + 2] = minZ; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = maxZ;
+    }
+  }
+  return ids === null ? 0 : 0;
+}

@@ -3,7 +3,7 @@ import { KERNEL, KERNELS } from '../threads/kernels.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
-import { BOX_STRIDE, mortonKeys, treeForces, treeGather } from './barnes-hut-gather.js';
+import { BOX_STRIDE, leafMoments, mortonKeys, treeForces, treeGather, treeOrder } from './barnes-hut-gather.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 import { nowMs } from '../threads/adaptive.js';
 
@@ -137,7 +137,7 @@ export interface GravityTree {
   /** Whether the arrays the evaluation reads live on SharedArrayBuffers (a world with threads > 1). */
   shared: boolean;
   /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
-  cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array;
+  cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array; momentParams: Float64Array;
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
   /** Morton keys and input indices in sorted order, and the radix sort's second buffers and histogram. */
@@ -166,15 +166,15 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     perm: new Int32Array(0), slot: new Int32Array(0),
     x2: new Float64Array(0), y2: new Float64Array(0), z2: new Float64Array(0), m2: new Float64Array(0),
     perm2: new Int32Array(0), code: new Uint8Array(0),
-    node: F64(nodes * (dims === 3 ? NF3 : NF2)), box: new Float64Array(nodes * 6),
+    node: F64(nodes * (dims === 3 ? NF3 : NF2)), box: F64(nodes * 6),
     start: I32(nodes), end: I32(nodes), skip: I32(nodes),
     scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
-    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8), keyParams: new Float64Array(6),
+    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8), keyParams: new Float64Array(6), momentParams: new Float64Array(2),
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
     hist: new Int32Array(RADIX),
     taskI: new Int32Array(MAX_DEPTH * 8 * 5), taskF: new Float64Array(MAX_DEPTH * 8 * 4),
-    parent: new Int32Array(nodes),
+    parent: I32(nodes),
     ax: new Float64Array(0), ay: new Float64Array(0), az: new Float64Array(0),
     minHalf: 0, nonFinite: false,
     stats: { cellPairs: 0, bodyPairs: 0, visits: 0 },
@@ -208,7 +208,7 @@ function growBodies(t: GravityTree, n: number): void {
   const size = Math.max(n, 2 * t.x.length, 64);
   t.x = f64(t, size); t.y = f64(t, size); t.z = f64(t, size); t.m = f64(t, size);
   t.x2 = new Float64Array(size); t.y2 = new Float64Array(size); t.z2 = new Float64Array(size); t.m2 = new Float64Array(size);
-  t.perm = new Int32Array(size); t.perm2 = new Int32Array(size); t.slot = i32(t, size); t.code = new Uint8Array(size);
+  t.perm = i32(t, size); t.perm2 = new Int32Array(size); t.slot = i32(t, size); t.code = new Uint8Array(size);
   t.ax = f64(t, size); t.ay = f64(t, size); t.az = f64(t, size);
   t.scratch.length = 0;
   const u32 = (k: number): Uint32Array => (t.shared ? new Uint32Array(new SharedArrayBuffer(4 * k)) : new Uint32Array(k));
@@ -222,11 +222,11 @@ function growNodes(t: GravityTree, needed: number): void {
   while (n < needed) n *= 2;
   const nf = t.dims === 3 ? NF3 : NF2;
   const node = f64(t, n * nf); node.set(t.node); t.node = node;
-  const box = new Float64Array(n * 6); box.set(t.box); t.box = box;
+  const box = f64(t, n * 6); box.set(t.box); t.box = box;
   const s = i32(t, n); s.set(t.start); t.start = s;
   const e = i32(t, n); e.set(t.end); t.end = e;
   const k = i32(t, n); k.set(t.skip); t.skip = k;
-  const p = new Int32Array(n); p.set(t.parent); t.parent = p;
+  const p = i32(t, n); p.set(t.parent); t.parent = p;
   t.scratch.length = 0;
 }
 
@@ -320,17 +320,26 @@ function buildTreeWith(
     const ti = idx; idx = idx2; idx2 = ti;
   }
   t.key = key; t.idx = idx; t.key2 = key2; t.idx2 = idx2;
-  const bx = t.x, by = t.y, bz = t.z, bm = t.m, perm = t.perm;
-  for (let s = 0; s < n; s++) {
-    const i = idx[s]!;
-    bx[s] = x[i]!; by[s] = y[i]!; bz[s] = is3D ? z[i]! : 0; bm[s] = m[i]!; perm[s] = i;
+  // Into tree order (on the threads when the arrays are shared and the bodies many).
+  const orderArrays = [x, y, z, m, idx, t.x, t.y, t.z, t.m, t.perm] as KernelArray[];
+  const KM = t.momentParams;
+  KM[0] = t.dims;
+  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut order)', KERNEL.treeOrder, orderArrays, KM, n, null, MIN_PARALLEL_PER_THREAD) === null) {
+    treeOrder(orderArrays, KM, null, 0, n);
   }
   growNodes(t, Math.max(64, Math.ceil((3 * n) / LEAF_SIZE) + 64));
   splitCells(t, n, cx, cy, cz, half, bits);
+  // Leaves' moments and slots (on the threads when worth it), then the cells bottom-up on this thread.
+  KM[1] = t.nodeCount;
+  const leafArrays = [t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, t.parent, t.perm, t.slot] as KernelArray[];
+  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut moments)', KERNEL.leafMoments, leafArrays, KM, t.nodeCount, null, MIN_NODES_PER_THREAD) === null) {
+    leafMoments(leafArrays, KM, null, 0, t.nodeCount);
+  }
   computeMoments(t);
-  const slot = t.slot;
-  for (let s = 0; s < n; s++) slot[perm[s]!] = s;
 }
+
+/** Fewest tree nodes a thread for the leaves' moments to be computed in parallel. */
+const MIN_NODES_PER_THREAD = 4096;
 
 /**
  * Top-down split of the root cell [0, n) into nodes in depth-first preorder, with an explicit task
@@ -407,45 +416,20 @@ function growTasks(t: GravityTree, needed: number): void {
   const f = new Float64Array(size * 4); f.set(t.taskF); t.taskF = f;
 }
 
-/** Bottom-up: subtree ends (skip) and moments, children before parents (they have larger indices). */
+/**
+ * Bottom-up over the cells (the leaves' moments are already in place, see leafMoments): subtree ends
+ * (skip) and moments, children before parents (they have larger indices).
+ */
 function computeMoments(t: GravityTree): void {
-  const skip = t.skip, parent = t.parent, start = t.start, end = t.end;
+  const skip = t.skip, parent = t.parent;
   const is3D = t.dims === 3;
   for (let k = t.nodeCount - 1; k >= 0; k--) {
-    if (skip[k] === k + 1) {
-      if (is3D) leafMoments3(t, k, start[k]!, end[k]!); else leafMoments2(t, k, start[k]!, end[k]!);
-    } else if (is3D) cellMoments3(t, k); else cellMoments2(t, k);
+    if (skip[k] !== k + 1) { if (is3D) cellMoments3(t, k); else cellMoments2(t, k); }
     const p = parent[k]!;
     if (p >= 0 && skip[k]! > skip[p]!) skip[p] = skip[k]!;
   }
 }
 
-function leafMoments2(t: GravityTree, k: number, lo: number, hi: number): void {
-  const x = t.x, y = t.y, m = t.m;
-  let M = 0, X = 0, Y = 0, minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (let s = lo; s < hi; s++) {
-    const w = m[s]!, px = x[s]!, py = y[s]!;
-    M += w; X += w * px; Y += w * py;
-    if (px < minX) minX = px; if (px > maxX) maxX = px;
-    if (py < minY) minY = py; if (py > maxY) maxY = py;
-  }
-  let cx: number, cy: number;
-  if (M > 0) { cx = X / M; cy = Y / M; } else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); }
-  let sxx = 0, sxy = 0, syy = 0, txxx = 0, txxy = 0, txyy = 0, tyyy = 0;
-  for (let s = lo; s < hi; s++) {
-    const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy;
-    const wxx = w * dx * dx, wyy = w * dy * dy, wxy = w * dx * dy;
-    sxx += wxx; sxy += wxy; syy += wyy;
-    txxx += wxx * dx; txxy += wxx * dy; txyy += wyy * dx; tyyy += wyy * dy;
-  }
-  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy);
-  const o = k * NF2, F = t.node;
-  F[o] = cx; F[o + 1] = cy; F[o + 2] = M; F[o + 3] = sxx; F[o + 4] = sxy; F[o + 5] = syy;
-  F[o + 6] = Math.sqrt(ex * ex + ey * ey);
-  F[o + 7] = txxx; F[o + 8] = txxy; F[o + 9] = txyy; F[o + 10] = tyyy; F[o + 11] = 0;
-  const b = k * 6, B = t.box;
-  B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
-}
 
 function cellMoments2(t: GravityTree, k: number): void {
   const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
@@ -481,34 +465,6 @@ function cellMoments2(t: GravityTree, k: number): void {
   B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
 }
 
-function leafMoments3(t: GravityTree, k: number, lo: number, hi: number): void {
-  const x = t.x, y = t.y, z = t.z, m = t.m;
-  let M = 0, X = 0, Y = 0, Z = 0;
-  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
-  for (let s = lo; s < hi; s++) {
-    const w = m[s]!, px = x[s]!, py = y[s]!, pz = z[s]!;
-    M += w; X += w * px; Y += w * py; Z += w * pz;
-    if (px < minX) minX = px; if (px > maxX) maxX = px;
-    if (py < minY) minY = py; if (py > maxY) maxY = py;
-    if (pz < minZ) minZ = pz; if (pz > maxZ) maxZ = pz;
-  }
-  let cx: number, cy: number, cz: number;
-  if (M > 0) { cx = X / M; cy = Y / M; cz = Z / M; }
-  else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); cz = 0.5 * (minZ + maxZ); }
-  let sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0;
-  for (let s = lo; s < hi; s++) {
-    const w = m[s]!, dx = x[s]! - cx, dy = y[s]! - cy, dz = z[s]! - cz;
-    sxx += w * dx * dx; syy += w * dy * dy; szz += w * dz * dz;
-    sxy += w * dx * dy; sxz += w * dx * dz; syz += w * dy * dz;
-  }
-  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy), ez = Math.max(cz - minZ, maxZ - cz);
-  const o = k * NF3, F = t.node;
-  F[o] = cx; F[o + 1] = cy; F[o + 2] = cz; F[o + 3] = M;
-  F[o + 4] = sxx; F[o + 5] = syy; F[o + 6] = szz; F[o + 7] = sxy; F[o + 8] = sxz; F[o + 9] = syz;
-  F[o + 10] = Math.sqrt(ex * ex + ey * ey + ez * ez); F[o + 11] = 0;
-  const b = k * 6, B = t.box;
-  B[b] = minX; B[b + 1] = minY; B[b + 2] = minZ; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = maxZ;
-}
 
 function cellMoments3(t: GravityTree, k: number): void {
   const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
@@ -735,6 +691,11 @@ export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): G
   P[0] = world.dimensions;
   const system = 'mutualGravitySystem (Barnes-Hut)';
   let parts = world.threadPool?.threads ?? 1;
+  // Neutral boxes for the other ranges: an adaptive pool may run the kernel as one range (part 0).
+  for (let p = 1; p < parts; p++) {
+    const o = p * BOX_STRIDE;
+    box[o] = Infinity; box[o + 1] = Infinity; box[o + 2] = Infinity; box[o + 3] = -Infinity; box[o + 4] = -Infinity; box[o + 5] = -Infinity; box[o + 6] = 0;
+  }
   if (runOnPool(world.threadPool, system, KERNEL.treeGather, arrays, P, n, ents, MIN_PARALLEL_PER_THREAD) === null) {
     parts = 1;
     treeGather(arrays, P, ents as unknown as Int32Array, 0, n, 0);
