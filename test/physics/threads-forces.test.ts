@@ -169,7 +169,7 @@ test('a world with nothing to collide does not check its bodies again after the 
   expect(stageNeedsCheck(world, 'collide', world.stages.collide)).toBe(2);
 });
 
-test('the adaptive choice: threads first, then one thread, then the faster by its average, probing the other every 24th call', () => {
+test('the adaptive choice: threads first, then one thread, then the faster by its average, probing the other every 16th call', () => {
   const c = new LoopChooser();
   const site = 'loop';
   const ran: boolean[] = [];
@@ -181,8 +181,8 @@ test('the adaptive choice: threads first, then one thread, then the faster by it
   }
   expect(ran.slice(0, 4)).toEqual([true, true, false, false]);
   expect(c.preference(site)).toBe(false);
-  // After the first four calls only the probes (calls 24 and 48) take the threads.
-  expect(ran.map((p, i) => (p && i >= 4 ? i : -1)).filter((i) => i >= 0)).toEqual([24, 48]);
+  // After the first four calls only the probes (calls 16, 32, 48) take the threads.
+  expect(ran.map((p, i) => (p && i >= 4 ? i : -1)).filter((i) => i >= 0)).toEqual([16, 32, 48]);
   // When the threads become faster (0.4 ms), the average follows and they are preferred.
   for (let i = 0; i < 60; i++) {
     const parallel = c.choose(site);

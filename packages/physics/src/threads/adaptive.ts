@@ -7,12 +7,13 @@
  *
  * Policy per loop (a `site`): the first two calls run parallel (the first is not timed: it may pay
  * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
- * moving average, except every PROBE_EVERY-th call, which runs the other way and replaces that way's
- * average by its time (so a change of load is noticed at the next probe).
+ * average (which follows a faster time at once and a slower one by ALPHA, so other processes'
+ * delays weigh little), except every PROBE_EVERY-th call, which runs the other way and replaces that
+ * way's average by its time (so a change of load is noticed at the next probe).
  */
 
 /** Calls between two runs of the way not currently preferred. */
-export const PROBE_EVERY = 24;
+export const PROBE_EVERY = 16;
 
 /** Weight of the newest time in a moving average. */
 const ALPHA = 0.3;
@@ -58,9 +59,12 @@ export class LoopChooser {
     const v = ms / n;
     // The way in use is averaged; a probe of the other way replaces its (old) average, so a machine
     // that got quieter is noticed at the next probe.
+    // A time below the average is taken at once, one above moves it by ALPHA: on a shared machine the
+    // delays are other processes', so the lower times are the ones that say what a way costs.
     const probe = !Number.isNaN(s.parallel) && !Number.isNaN(s.serial) && parallel !== (s.parallel <= s.serial);
-    if (parallel) s.parallel = Number.isNaN(s.parallel) || probe ? v : s.parallel + ALPHA * (v - s.parallel);
-    else s.serial = Number.isNaN(s.serial) || probe ? v : s.serial + ALPHA * (v - s.serial);
+    const old = parallel ? s.parallel : s.serial;
+    const est = Number.isNaN(old) || probe || v < old ? v : old + ALPHA * (v - old);
+    if (parallel) s.parallel = est; else s.serial = est;
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
