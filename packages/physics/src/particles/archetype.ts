@@ -123,6 +123,7 @@ registerExternalWorldState({
 export function archetypes(world: PhysicsWorld): ArchetypeTable {
   let t = tables.get(world);
   if (t === undefined) {
+    typedMasks(world);
     const none = new Int32Array(0);
     t = {
       list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
@@ -131,6 +132,26 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
     tables.set(world, t);
   }
   return t;
+}
+
+/**
+ * Where the world keeps its first generation of component masks in an Int32Array (lean storage,
+ * lean-ecs.ts), the other generations get one too: bitecs grows them as JS arrays written at scattered
+ * slots, which V8 may keep as a dictionary, and a particle's own components can sit in any
+ * generation (bits follow registration order). Same values; every reader (bitecs, snapshots) indexes them.
+ */
+function typedMasks(world: PhysicsWorld): void {
+  const ecs = ecsOf(world);
+  const em = ecs.entityMasks as Array<number[] | Int32Array>;
+  if (!(em[0] instanceof Int32Array)) return;
+  const n = world.capacity + 1;
+  for (let g = 1; g < em.length; g++) {
+    const m = em[g]!;
+    if (m instanceof Int32Array || m.length > n) continue;
+    const t = new Int32Array(n);
+    for (let e = 0; e < m.length; e++) t[e] = m[e] ?? 0;
+    em[g] = t;
+  }
 }
 
 /** Allocates the per-slot arrays of `table` (once). */

@@ -334,10 +334,12 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
     e = spawnThroughBitecs(world, em);
   } else {
     e = bornSlot(world, a);
-    // What bitecs' observers write when these components are added (create-world.ts), then the particle.
-    c.AngularVelocity.x[e] = 0; c.AngularVelocity.y[e] = 0; c.AngularVelocity.z[e] = 0;
-    c.Force.x[e] = 0; c.Force.y[e] = 0; c.Force.z[e] = 0;
-    c.Torque.x[e] = 0; c.Torque.y[e] = 0; c.Torque.z[e] = 0;
+    // What bitecs' observers write when these components are added (create-world.ts), then the
+    // particle (stores a world allocates lazily may have no arrays yet: nothing to reset there).
+    const W = c.AngularVelocity, F = c.Force, T = c.Torque;
+    if (W.x.length > e) { W.x[e] = 0; W.y[e] = 0; W.z[e] = 0; }
+    if (F.x.length > e) { F.x[e] = 0; F.y[e] = 0; F.z[e] = 0; }
+    if (T.x.length > e) { T.x[e] = 0; T.y[e] = 0; T.z[e] = 0; }
     const kind = particleKind(world, em);
     if (kind !== 0) {
       const mass = E.mass[em]!, m = mass > 0 ? mass : 1;
@@ -469,13 +471,16 @@ export function lifetimeSystem(world: PhysicsWorld): void {
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   b.burstCount = 0;
   const hooks = b.hooks, removeHooks = world.removeHooks;
+  // Without death hooks, an expiring particle can only be gone if a removal hook removed entities
+  // (they remove springs and joints, never create): check liveness only once the live count moved.
+  const ix = world.entityIndex, alive0 = ix.aliveCount;
   // The death emitter of the last emitter looked at (0: none, -1: not looked at): particles of one
   // emitter die together. Valid while no user hook runs (a hook may remove an emitter).
   let lastEm = 0, lastStamp = 0, lastTarget = -1;
   // Hooks first, for every expiring particle still alive (a hook may remove another one).
   for (let k = 0; k < n; k++) {
     const e = expired[k]!;
-    if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
+    if ((hooks.length > 0 || ix.aliveCount !== alive0) && (stamps[e] !== expiredStamps[k] || !entityExists(world, e))) continue;
     if (hooks.length > 0) {
       for (let h = 0; h < hooks.length; h++) hooks[h]!(world, e);
       lastTarget = -1;
@@ -505,10 +510,11 @@ export function lifetimeSystem(world: PhysicsWorld): void {
   }
   // Then the removals, and the bursts' births into the freed slots.
   const ecs = ecsOf(world), table = archetypes(world);
+  const sure = hooks.length === 0 && ix.aliveCount === alive0;
   try {
     for (let k = 0; k < n; k++) {
       const e = expired[k]!;
-      if (stamps[e] !== expiredStamps[k] || !entityExists(world, e)) continue;
+      if (!sure && (stamps[e] !== expiredStamps[k] || !entityExists(world, e))) continue;
       if (!killSlot(world, ecs, table, e)) removeEntity(world, e);
       b.expiredTotal++;
     }
