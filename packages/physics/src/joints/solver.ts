@@ -379,14 +379,21 @@ export function warmStartJoints(world: PhysicsWorld): void {
 }
 
 /**
- * One pass over every joint row (sequential impulses). With `useBias` the rigid parts push out their
- * position error as soft constraints; without it (relax) they only remove relative velocity. `hs` is
- * the substep, s. Velocities of the static world (solver index 0) stay zero: its inverse mass is 0.
+ * Passes over every joint row (sequential impulses): `world.joints.settings.iterations` with `useBias`,
+ * in which the rigid parts push out their position error as soft constraints; one without it (relax),
+ * in which they only remove relative velocity. `hs` is the substep, s. Velocities of the static world
+ * (solver index 0) stay zero: its inverse mass is 0.
  */
 export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  if (world.joints.rowCount === 0) return;
+  const passes = useBias ? Math.max(1, Math.floor(world.joints.settings.iterations)) : 1;
+  for (let i = 0; i < passes; i++) solveJointRows(world, hs, useBias);
+}
+
+/** One pass over every joint row (see solveJoints). */
+function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const js = world.joints;
   const n = js.rowCount;
-  if (n === 0) return;
   const sb = world.collision.bodyState, rot = js.rotation, rows = js.rows, ri = js.rowInts;
   const invH = 1 / hs;
   solvePointLinks(world, invH, useBias);

@@ -35,9 +35,19 @@ export interface JointSettings {
   /**
    * Stiffness of the rigid joint constraints' softness, Hz, > 0, capped at a quarter of the solver
    * substep rate (Box2D v3: joints are soft constraints of twice its 30 Hz contact stiffness, 60 Hz).
-   * Stiffer than the cap lets Gauss-Seidel over a long chain overshoot. Default 60 Hz.
+   * Stiffer than the cap lets Gauss-Seidel over a long chain overshoot (with the cap at half the rate,
+   * 120 Hz at 4 substeps of 1/60 s threw a 10-link chain with a 10 kg load apart, even with two iterations). A soft joint under a load T stretches by about
+   * T / (m omega^2) (m the effective mass of its two bodies, omega = 2 pi hertz): more substeps (a
+   * higher cap) and a higher `hertz` hold a heavily loaded net tighter. Default 60 Hz.
    */
   hertz: number;
+  /**
+   * Passes over the joints in each substep's solve (the contacts make `solverIterations`), integer
+   * >= 1; the relax pass is one. Two keep a heavily loaded net from overshooting where one does not:
+   * the 100 x 100 joint grid's largest error over 2 s is 0.55 m with two, 2.5 m with one (a local
+   * overshoot under the pins), for about a third more joint solver time. Default 2.
+   */
+  iterations: number;
   /** Damping ratio of that softness, dimensionless, >= 0 (Box2D v3's jointDampingRatio). Default 2. */
   dampingRatio: number;
   /** Whether last step's impulses start this step's solve (warm starting). Default true. */
@@ -92,7 +102,7 @@ export interface JointState {
 /** Creates an empty joint state (arrays sized when the first joint appears). */
 export function createJointState(): JointState {
   return {
-    settings: { hertz: 60, dampingRatio: 2, warmStarting: true },
+    settings: { hertz: 60, iterations: 2, dampingRatio: 2, warmStarting: true },
     rowCount: 0,
     rows: new Float64Array(0),
     rowInts: new Int32Array(0),
