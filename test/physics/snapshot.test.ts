@@ -112,25 +112,37 @@ describe('snapshot captures every piece of state', () => {
     const world = mixedScene();
     stepMany(world, 5);
     const saved = snapshot(world);
-    type Enc = { $t: string; b?: number; n?: number };
+    type Enc = { $t: string; o?: number; n?: number; len?: number; rep?: number };
     const stores = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Enc> }> }> }).v.components.v);
+    expect(saved.buffers.length).toBe(1);
     let copied = 0;
     for (const [name, store] of Object.entries(world.components)) {
       const members = query(world, [store as object]).length;
       for (const [field, arr] of Object.entries(store as object)) {
         if (!ArrayBuffer.isView(arr)) continue;
+        const a = arr as Float64Array;
         const enc = stores[name]?.v[field];
         expect(enc, `${name}.${field}`).toBeDefined();
         if (enc!.$t === 'unused') {
           // Only a store no entity has may be left out: nothing reads its contents, its allocation is kept.
-          expect([members, enc!.n], `${name}.${field}`).toEqual([0, (arr as Float64Array).length]);
+          expect([members, enc!.n], `${name}.${field}`).toEqual([0, a.length]);
         } else {
-          expect(saved.buffers[enc!.b!]!.byteLength, `${name}.${field}`).toBe((arr as Float64Array).byteLength);
+          // Stored up to its last non-zero element (or as its first two elements, the second repeated up to
+          // `rep`): those bytes exactly, and nothing but zero bits after them.
+          expect([enc!.$t, enc!.len], `${name}.${field}`).toEqual([a.constructor.name, a.length]);
+          const n = enc!.n!, bytes = a.BYTES_PER_ELEMENT, end = enc!.rep ?? n;
+          const whole = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
+          const stored = new Uint8Array(saved.buffers[0]!, enc!.o!, n * bytes);
+          expect(Buffer.from(stored).equals(Buffer.from(whole.subarray(0, n * bytes))), `${name}.${field}`).toBe(true);
+          for (let i = n; i < end; i++) {
+            expect(Buffer.from(whole.subarray(i * bytes, (i + 1) * bytes)).equals(Buffer.from(stored.subarray(bytes, 2 * bytes))), `${name}.${field}[${i}]`).toBe(true);
+          }
+          expect(whole.subarray(end * bytes).every((x) => x === 0), `${name}.${field} beyond the stored part`).toBe(true);
           copied++;
         }
       }
     }
-    expect(copied).toBeGreaterThan(100);
+    expect(copied).toBeGreaterThan(60);
   });
 
   test('a store or world field added later is captured and restored without changes to snapshot code', () => {

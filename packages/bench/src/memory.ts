@@ -38,3 +38,14 @@ export function sampleMemory(): MemorySample {
   const m = process.memoryUsage();
   return { heapUsed: m.heapUsed / 2 ** 20, external: m.external / 2 ** 20 };
 }
+
+/**
+ * Memory an engine instance holds, MB: the growth of V8 heap plus external memory (typed-array
+ * buffers, SharedArrayBuffers, WASM memories) from `before` (sampled after a full collection, right
+ * before the engine built its scene) to `after` (after the build and a full collection), less
+ * `benchBytes`, what the bench adapter itself keeps beside the engine (its copy of the body id list),
+ * so that the figure is the engine's and the scene's alone and compares with a bare loop's arrays.
+ */
+export function engineMemoryMB(before: MemorySample, after: MemorySample, benchBytes = 0): number {
+  return after.heapUsed + after.external - before.heapUsed - before.external - benchBytes / 2 ** 20;
+}

@@ -3,7 +3,7 @@ import { performance } from 'node:perf_hooks';
 import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types.js';
 import type { BenchScene, ExtraValue } from './scenes/types.js';
 import { summarize, type TimeSummary } from './stats.js';
-import { collectGarbage, sampleMemory } from './memory.js';
+import { collectGarbage, engineMemoryMB, sampleMemory } from './memory.js';
 
 /**
  * An engine failed to build the scene (the scene rejected the options, or the engine failed).
@@ -51,7 +51,7 @@ export interface EngineResult {
   readonly bodies: number;
   /** Time to build the scene in this engine, ms. */
   readonly setupMs: number;
-  /** Growth of V8 heap plus external memory (typed arrays, WASM) while building the scene, MB. */
+  /** Growth of V8 heap plus external memory (typed arrays, WASM) while building the scene, less the adapter's own bookkeeping, MB (`engineMemoryMB`). */
   readonly engineMemoryMB: number;
   /** Engine-specific counters (EngineStats.extra) and the scene's extra fields for this engine. */
   readonly extra: Readonly<Record<string, ExtraValue>>;
@@ -126,8 +126,7 @@ export async function runBenchmark(
       setupMs.push(performance.now() - t0);
       collectGarbage();
       collectGarbage();
-      const m1 = sampleMemory();
-      memoryMB.push(m1.heapUsed + m1.external - m0.heapUsed - m0.external);
+      memoryMB.push(engineMemoryMB(m0, sampleMemory(), instances[instances.length - 1]!.benchBytes));
     }
     const total = (timing.steps + timing.warmup) * instances.length;
     let done = 0;

@@ -11,6 +11,27 @@
  *   quantities (rotation about the axis out of the screen).
  * - When a component is added to an entity its fields are reset to the defaults documented
  *   below (bitecs recycles ids and leaves old data behind, so nothing is inherited).
+ *
+ * Memory: stores a world never uses are never allocated. Only Position, Velocity and
+ * PreviousPosition get their arrays when the world is made (every entity that moves has them); every
+ * other store starts with empty (length 0) arrays and gets them, zero-filled, the first time its
+ * component is added to any entity (createPhysicsWorld installs the onAdd hook, before the hooks that
+ * write defaults). Stores are allocated by group (`LAZY_GROUPS`): the first body component (Mass,
+ * Force, Ball, Angle, ...) allocates the whole body group and the collision state's per-entity scratch,
+ * because code that reads one of them for an entity reads the others too; the first particle component
+ * or emitter allocates Lifetime and Particle. A world of a million bare 2D particles thus holds 72
+ * bytes of stores an entity (plus 4 of spawn stamp, and bitecs' bookkeeping made lean in lean-ecs.ts)
+ * instead of about 450.
+ *
+ * Rules this gives to code that reads stores:
+ * - Pull a store's arrays from `world.components` when you use them (once a step or a call, into
+ *   locals), never earlier: an array taken before the store's first use stays empty. Renderers, the
+ *   thread pool's shared arrays, snapshot/restore and the emitters all take them per call.
+ * - Read a store only for entities that have its component (its query), or check the array's length:
+ *   reading an unallocated store gives undefined. Writing to one is silently dropped, so code that
+ *   makes entities without `addComponent` (bulk paths) calls `materializeGroup` first.
+ * - The store object keeps its identity; only its arrays are replaced, once. In a world with threads > 1
+ *   they are made on SharedArrayBuffer.
  */
 
 import { createJointStore, type JointStore } from './joints/store.js';
@@ -296,49 +317,97 @@ export interface Components {
 }
 
 /**
- * Components whose arrays are allocated when the component is first added to any entity (until then
- * their arrays are empty): force laws, fields, springs, emitters and other parts most worlds never
- * use. A world of a million bare particles then reserves the arrays of the core components (about
- * 0.3 kB an entity) instead of every component's (about 1.4 kB). Nothing reads a store for an entity
- * without its component, so the empty arrays are never read. Code that keeps a store's array across
- * steps must take it again after the component is first added.
+ * The body group: the stores of anything more than a bare particle (forces, mass, rotation, a round
+ * shape, a material). Its first use also allocates the collision state's per-entity scratch.
  */
-export const LAZY_COMPONENTS = [
-  'LinearDrag', 'QuadraticDrag', 'GravityScale', 'Attractor', 'Charge', 'ElectricField', 'MagneticField',
-  'CentralForce', 'Lift', 'Buoyancy', 'FluidRegion', 'Spring', 'DrivingForce', 'RandomForce', 'Thrust', 'Vortex',
-  'Emitter', 'InertiaTensor', 'AngularDamping', 'Plane', 'Ballast', 'LiftingSurface', 'BodyThrust', 'Joint', 'ClothLink',
-] as const satisfies ReadonlyArray<keyof Components>;
+export const BODY_STORES: ReadonlyArray<keyof Components> = [
+  'Force', 'Torque', 'Mass', 'Inertia', 'AngularVelocity', 'Angle', 'Orientation', 'Ball', 'Material',
+];
+
+/**
+ * Stores allocated together, on the first use of any of them (see the module docstring). Each group
+ * holds the stores that code reads side by side for the same entities: a body's mass, inertia, spin,
+ * orientation, shape radius and material; a particle's lifetime and look. Every other lazy store is a
+ * group of its own.
+ */
+export const LAZY_GROUPS: ReadonlyArray<ReadonlyArray<keyof Components>> = [
+  BODY_STORES,
+  ['Lifetime', 'Particle'],
+  ['Segment'],
+  ['LinearDrag'], ['QuadraticDrag'], ['GravityScale'], ['Attractor'], ['Charge'], ['ElectricField'], ['MagneticField'],
+  ['CentralForce'], ['Lift'], ['Buoyancy'], ['FluidRegion'], ['Spring'], ['DrivingForce'], ['RandomForce'], ['Thrust'],
+  ['Vortex'], ['Emitter'], ['InertiaTensor'], ['AngularDamping'], ['Plane'], ['Ballast'], ['LiftingSurface'],
+  ['BodyThrust'], ['Joint'], ['ClothLink'],
+];
+
+/** Every lazily allocated component (the union of LAZY_GROUPS), in group order. */
+export const LAZY_COMPONENTS: ReadonlyArray<keyof Components> = LAZY_GROUPS.flat();
+
+/**
+ * The stores a component's first use allocates: its own group, and for `Emitter` the particle group too
+ * (an emitter's particles are written by bulk spawn paths that may bypass per-component hooks).
+ * Empty for a component that is always allocated (Position, Velocity, PreviousPosition, tags, Shape).
+ */
+export function storesAllocatedWith(name: keyof Components): ReadonlyArray<keyof Components> {
+  const own = LAZY_GROUPS.find((g) => g.includes(name)) ?? [];
+  return name === 'Emitter' ? [...own, 'Lifetime', 'Particle'] : own;
+}
 
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
 
-/** Gives every array of `store` room for `capacity` entities if it has none yet (see LAZY_COMPONENTS). */
-export function materializeStore(store: object, capacity: number): void {
-  const rec = store as Record<string, TypedArray>;
-  for (const key of Object.keys(rec)) {
-    const arr = rec[key]!;
-    if (ArrayBuffer.isView(arr) && arr.length < capacity + 1) {
-      rec[key] = new (arr.constructor as new (n: number) => TypedArray)(capacity + 1);
-    }
-  }
+/** Whether every array of `store` has room for `capacity` entities (a store that has no arrays counts as allocated). */
+export function isStoreAllocated(store: object, capacity: number): boolean {
+  for (const arr of Object.values(store)) if (ArrayBuffer.isView(arr) && (arr as TypedArray).length < capacity + 1) return false;
+  return true;
 }
 
 /**
- * Allocates the stores of a world with room for `capacity` entities (ids 1..capacity); the stores in
- * LAZY_COMPONENTS start empty and are allocated by `materializeStore` on their first use.
+ * Gives every array of `store` room for `capacity` entities if it has none yet (see LAZY_GROUPS): the
+ * store object keeps its identity, only its empty arrays are replaced by zero-filled ones, on a
+ * SharedArrayBuffer if `shared` (a world with threads > 1). @returns whether it allocated anything.
+ */
+export function materializeStore(store: object, capacity: number, shared = false): boolean {
+  const rec = store as Record<string, TypedArray>;
+  let made = false;
+  for (const key of Object.keys(rec)) {
+    const arr = rec[key]!;
+    if (ArrayBuffer.isView(arr) && arr.length < capacity + 1) {
+      const Ctor = arr.constructor as { new (n: number): TypedArray; new (b: ArrayBufferLike): TypedArray; BYTES_PER_ELEMENT: number };
+      rec[key] = shared ? new Ctor(new SharedArrayBuffer((capacity + 1) * Ctor.BYTES_PER_ELEMENT)) : new Ctor(capacity + 1);
+      made = true;
+    }
+  }
+  return made;
+}
+
+/**
+ * Allocates the stores that the first use of component `name` needs (`storesAllocatedWith(name)`) in
+ * `components` if they are still empty. @returns whether anything was allocated.
+ */
+export function materializeGroup(components: Components, name: keyof Components, capacity: number, shared = false): boolean {
+  let made = false;
+  for (const member of storesAllocatedWith(name)) if (materializeStore(components[member], capacity, shared)) made = true;
+  return made;
+}
+
+/**
+ * Makes the stores of a world with room for `capacity` entities (ids 1..capacity): Position, Velocity
+ * and PreviousPosition allocated, every store of LAZY_GROUPS empty until `materializeStore` gives it
+ * its arrays (createPhysicsWorld does on the first use of the store's group), Shape empty until the
+ * first shape. @param capacity integer >= 1 (checked by createPhysicsWorld).
  */
 export function createComponents(capacity: number): Components {
   const n = capacity + 1;
-  const f = (): Float64Array => new Float64Array(n);
   const z = (): Float64Array => new Float64Array(0);
   return {
     Position: vec3(n),
     Velocity: vec3(n),
     PreviousPosition: vec3(n),
-    Force: vec3(n),
-    Mass: { value: f(), inv: f() },
-    Ball: { radius: f() },
-    Segment: { ax: f(), ay: f(), az: f(), bx: f(), by: f(), bz: f(), radius: f() },
-    Material: { restitution: f(), friction: f(), staticFriction: f() },
+    Force: vec3(0),
+    Mass: { value: z(), inv: z() },
+    Ball: { radius: z() },
+    Segment: { ax: z(), ay: z(), az: z(), bx: z(), by: z(), bz: z(), radius: z() },
+    Material: { restitution: z(), friction: z(), staticFriction: z() },
     Static: {},
     Kinematic: {},
     Sleeping: {},
@@ -373,17 +442,17 @@ export function createComponents(capacity: number): Components {
       deathEmitter: new Int32Array(0), deathCount: z(), maxGeneration: z(), policy: new Uint8Array(0),
       spawned: z(), dropped: z(),
     },
-    Lifetime: { age: f(), duration: f() },
+    Lifetime: { age: z(), duration: z() },
     Particle: {
-      emitter: new Int32Array(n), emitterStamp: new Uint32Array(n), generation: f(),
-      colorStart: new Uint32Array(n), colorEnd: new Uint32Array(n), sizeStart: f(), sizeEnd: f(),
-      alphaStart: f(), alphaEnd: f(),
+      emitter: new Int32Array(0), emitterStamp: new Uint32Array(0), generation: z(),
+      colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(),
+      alphaStart: z(), alphaEnd: z(),
     },
-    Angle: { value: f() },
-    Orientation: { x: f(), y: f(), z: f(), w: f() },
-    AngularVelocity: vec3(n),
-    Torque: vec3(n),
-    Inertia: { value: f(), inv: f() },
+    Angle: { value: z() },
+    Orientation: { x: z(), y: z(), z: z(), w: z() },
+    AngularVelocity: vec3(0),
+    Torque: vec3(0),
+    Inertia: { value: z(), inv: z() },
     InertiaTensor: { x: z(), y: z(), z: z(), invX: z(), invY: z(), invZ: z() },
     AngularDamping: { k: z() },
     Plane: { nx: z(), ny: z(), nz: z(), d: z() },

@@ -5,8 +5,9 @@
  * systems above it, and this file on top: nothing below imports it.
  */
 import {  createEntityIndex, createWorld, observe, onAdd } from 'bitecs';
-import { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeStore } from './components.js';
-import { createCollisionState } from './collision/state.js';
+import { useLeanEcsStorage } from './lean-ecs.js';
+import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './components.js';
+import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { createStages, STAGES } from './pipeline/stages.js';
 import { INTEGRATOR_NAMES } from './integrators/names.js';
 import { Rng } from './rng.js';
@@ -17,7 +18,7 @@ import { createJointState } from './joints/state.js';
 import { removeJointsOf } from './joints/remove.js';
 import { createClothState } from './cloth/state.js';
 import { createThreadPool } from './threads/pool.js';
-import { shareStore, shareStores } from './threads/shared-stores.js';
+import { shareStores } from './threads/shared-stores.js';
 import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './validate.js';
 import { addComponentIfMissing, registerForceLaw, assertTimeStep, type PhysicsWorld, type PhysicsWorldContext, type PhysicsWorldOptions, type StageTimings, MAX_CAPACITY } from './world.js';
 
@@ -113,6 +114,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);
+  // bitecs' per-entity bookkeeping in fixed typed arrays, component Sets answered from the masks.
+  useLeanEcsStorage(world, capacity);
   return world;
 }
 
@@ -123,11 +126,16 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
 function installDefaults(world: PhysicsWorld): void {
   const c = world.components;
   // First: lazily allocated stores get their arrays before any other observer writes defaults.
+  // The check reads one array of the component's own store: empty until its group is allocated (and
+  // again after a restore that replaced it), so a later add allocates again when needed.
   for (const name of LAZY_COMPONENTS) {
-    const store = c[name];
+    const store = c[name] as unknown as Record<string, ArrayLike<number>>;
+    const probe = Object.keys(store).find((k) => ArrayBuffer.isView(store[k]));
+    if (probe === undefined) continue;
+    const body = BODY_STORES.includes(name);
     observe(world, onAdd(store), () => {
-      materializeStore(store, world.capacity);
-      if (world.threads > 1) shareStore(store, world.capacity);
+      if (store[probe]!.length <= world.capacity) materializeGroup(c, name, world.capacity, world.threads > 1);
+      if (body) allocateCollisionScratch(world.collision, world.capacity);
     });
   }
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
@@ -143,7 +151,10 @@ function installDefaults(world: PhysicsWorld): void {
     c.Force.x[eid] = 0; c.Force.y[eid] = 0; c.Force.z[eid] = 0;
     c.Torque.x[eid] = 0; c.Torque.y[eid] = 0; c.Torque.z[eid] = 0;
   });
-  observe(world, onAdd(c.Velocity), zero3(c.Velocity));
+  // Velocity is reset when an entity comes to have both Position and Velocity: the same query as the
+  // integrators' (no membership of its own, 16 bytes an entity), and a velocity means nothing without
+  // a position (Position's own reset above clears it too).
+  observe(world, onAdd(c.Position, c.Velocity), zero3(c.Velocity));
   observe(world, onAdd(c.Force), zero3(c.Force));
   observe(world, onAdd(c.AngularVelocity), zero3(c.AngularVelocity));
   observe(world, onAdd(c.Torque), zero3(c.Torque));

@@ -42,9 +42,10 @@ export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, st
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     for (const [name, arr] of fields) {
+      if (e >= arr.length) continue; // a store not allocated yet (components.ts): no entity has it
       const v = arr[e]!;
       if (!Number.isFinite(v)) {
-        const f = (a: Float64Array) => a[e];
+        const f = (a: Float64Array) => (e < a.length ? a[e] : 'none');
         const detail =
           `Its inputs: previous position (${f(c.PreviousPosition.x)}, ${f(c.PreviousPosition.y)}, ${f(c.PreviousPosition.z)}), ` +
           `force (${f(c.Force.x)}, ${f(c.Force.y)}, ${f(c.Force.z)}) N, inverse mass ${f(c.Mass.inv)} 1/kg.`;

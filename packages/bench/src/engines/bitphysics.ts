@@ -49,6 +49,7 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
     return {
       engine: name,
       notes,
+      benchBytes: ids.byteLength,
       step(): void {
         step(w);
       },

@@ -78,6 +78,11 @@ export interface EngineInstance {
   /** Frees what the engine holds outside the JS heap (WASM memory) and drops references. Idempotent. */
   dispose(): void;
   /**
+   * Optional: bytes the adapter keeps for the bench beside the engine (its own copy of the body id list),
+   * subtracted from the engine's memory figure. Default 0.
+   */
+  readonly benchBytes?: number;
+  /**
    * Optional: called once right before this engine's first timed step (after warm-up and a forced
    * garbage collection), with the number of timed steps to come. For per-run measurements (heap).
    */

@@ -6,8 +6,10 @@ import { sig } from '../scenes/format.js';
 /**
  * The snapshot study (`--scene snapshot`): what `snapshot(world)` and `restore(world, snapshot)` cost
  * for a balls-in-box world of `count` bodies after `warmup` steps (contacts, warm-start caches and
- * sleeping islands in place), as medians over `steps` rounds: snapshot, restore into the same world
- * (a rewind), restore into a fresh world made with the same options. It checks that both restored
+ * sleeping islands in place), as medians over `steps` rounds: snapshot, snapshot over an earlier
+ * snapshot's buffer (`snapshot(world, reuse)`, a rollback ring), restore into the same world (a
+ * rewind), restore into a fresh world made with the same options; beside them, a plain copy of the
+ * snapshot's bytes into a new buffer, the floor any snapshot that allocates its data pays. It checks that both restored
  * worlds step to the same state as the world the snapshot came from (stateHash after 10 steps).
  */
 export const snapshotStudy: BenchStudy = {
@@ -26,12 +28,17 @@ export const snapshotStudy: BenchStudy = {
     options.onProgress?.(`warm-up: ${options.warmup} steps of ${options.count} bodies`);
     stepMany(world, options.warmup);
     const fresh = make();
-    const snapMs: number[] = [], rewindMs: number[] = [], freshMs: number[] = [];
+    const snapMs: number[] = [], reuseMs: number[] = [], rewindMs: number[] = [], freshMs: number[] = [];
     let saved = snapshot(world);
+    let spare = snapshot(world);
     for (let r = 0; r < options.steps; r++) {
       let t = performance.now();
       saved = snapshot(world);
       snapMs.push(performance.now() - t);
+      // A rollback ring writes each new snapshot over its oldest one's buffer.
+      t = performance.now();
+      spare = snapshot(world, spare);
+      reuseMs.push(performance.now() - t);
       t = performance.now();
       restore(world, saved);
       rewindMs.push(performance.now() - t);
@@ -40,7 +47,7 @@ export const snapshotStudy: BenchStudy = {
       freshMs.push(performance.now() - t);
     }
     const bytes = saved.buffers.reduce((s, b) => s + b.byteLength, 0);
-    // Baseline in the same run: copying the snapshot's bytes once (one memcpy per buffer, into new buffers).
+    // Baseline in the same run: copying the snapshot's bytes once (one memcpy into a new buffer).
     const copyMs: number[] = [];
     for (let r = 0; r < options.steps; r++) {
       const t = performance.now();
@@ -57,14 +64,18 @@ export const snapshotStudy: BenchStudy = {
     const hash = stateHash(world);
     const identical = stateHash(fresh) === hash && stateHash(reference) === hash;
     const record = {
-      bodies: options.count, snapshotMs: median(snapMs), restoreMs: median(rewindMs), restoreFreshMs: median(freshMs),
+      bodies: options.count, snapshotMs: median(snapMs), snapshotReuseMs: median(reuseMs), restoreMs: median(rewindMs), restoreFreshMs: median(freshMs),
       copyMs: median(copyMs), bytes, headerBytes, buffers: saved.buffers.length, identical, stateHash: hash,
     };
     return {
       records: [record],
-      header: ['bodies', 'snapshot ms', 'restore ms (same world)', 'restore ms (fresh world)', 'copy of the bytes ms', 'data MB', 'header kB', 'bit-identical after'],
+      header: [
+        'bodies', 'snapshot ms', 'snapshot ms (reused buffer)', 'restore ms (same world)', 'restore ms (fresh world)', 'copy of the bytes ms',
+        'data MB', 'header kB', 'bit-identical after',
+      ],
       rows: [[
-        String(options.count), String(sig(record.snapshotMs)), String(sig(record.restoreMs)), String(sig(record.restoreFreshMs)), String(sig(record.copyMs)),
+        String(options.count), String(sig(record.snapshotMs)), String(sig(record.snapshotReuseMs)), String(sig(record.restoreMs)),
+        String(sig(record.restoreFreshMs)), String(sig(record.copyMs)),
         String(sig(bytes / 1e6)), String(sig(headerBytes / 1e3)), identical ? 'yes' : 'NO',
       ]],
       notes: [

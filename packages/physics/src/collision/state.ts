@@ -88,12 +88,12 @@ export interface SleepState {
   angularSpeed: number;
   timeToSleep: number;
   /** Per entity: rest time, s; union-find parent; the island's least rest time; the island it sleeps in. */
-  readonly restTime: Float64Array;
-  readonly island: Int32Array;
-  readonly parent: Int32Array;
-  readonly islandRest: Float64Array;
+  restTime: Float64Array;
+  island: Int32Array;
+  parent: Int32Array;
+  islandRest: Float64Array;
   /** Per entity: the sleep stamp of the last step in which a contact pushed it (support). */
-  readonly supported: Uint32Array;
+  supported: Uint32Array;
   /** Counts sleep-system runs; compared with `supported`. */
   stamp: number;
   /** Gravity seen at the last step (a change wakes everything). */
@@ -123,14 +123,18 @@ export interface CollisionState {
   contacts: ContactBuffer;
   /** Impulses of the previous step's contacts, for warm starting. */
   readonly cache: WarmStartCache;
-  /** Per-entity scratch (capacity + 1): effective inverse mass this step (0 for static and kinematic). */
-  readonly invMass: Float64Array;
+  /**
+   * Per-entity scratch (capacity + 1): effective inverse mass this step (0 for static and kinematic).
+   * This and the other per-entity arrays here and in `sleep` are empty until the world's first body
+   * component (`allocateCollisionScratch`): a world of bare particles never collides.
+   */
+  invMass: Float64Array;
   /** Per-entity scratch: effective inverse moment of inertia this step. */
-  readonly invInertia: Float64Array;
+  invInertia: Float64Array;
   /** Per-entity scratch: speculative margin |v| h + speculativeDistance / 2, m. */
-  readonly margin: Float64Array;
+  margin: Float64Array;
   /** Per-entity scratch: BodyType (0 dynamic, 1 kinematic, 2 static) of this step's colliders. */
-  readonly bodyType: Uint8Array;
+  bodyType: Uint8Array;
   /**
    * Solver bodies of this step: the moving bodies that have at least one contact, as entity ids;
    * index 0 is the static world. Their working state lives in `bodyState`, packed.
@@ -139,9 +143,9 @@ export interface CollisionState {
   /** Solver bodies in use, the static world included. */
   solverBodyCount: number;
   /** Per-entity scratch: the value of `solverStamp` when the body was given a solver index. */
-  readonly solverMark: Float64Array;
+  solverMark: Float64Array;
   /** Per-entity scratch: the body's index in `solverBodies` this step. */
-  readonly solverIndex: Int32Array;
+  solverIndex: Int32Array;
   /** Counter that makes `solverMark` entries of earlier steps stale. */
   solverStamp: number;
   /**
@@ -196,12 +200,15 @@ export interface GridScratch {
   candidates: Int32Array;
 }
 
-/** Creates the collision state of a world with room for `capacity` entities. */
+/**
+ * Creates the collision state of a world with room for `capacity` entities; its per-entity arrays stay
+ * empty until `allocateCollisionScratch`.
+ */
 export function createCollisionState(
-  capacity: number,
+  _capacity: number,
   options: { solverSubsteps: number; solverIterations: number; restitutionThreshold?: number; sleep: boolean },
 ): CollisionState {
-  const n = capacity + 1;
+  const n = 0;
   return {
     settings: {
       solverSubsteps: options.solverSubsteps,
@@ -268,4 +275,20 @@ export function createCollisionState(
     shapes: createShapeCollisionState(),
     stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
   };
+}
+
+/**
+ * Gives the per-entity arrays of `cs` (inverse masses, margins, body types, solver marks, sleep state)
+ * room for `capacity` entities if they are still empty, zero-filled. createPhysicsWorld calls it on the
+ * first use of a body component (see components.ts).
+ */
+export function allocateCollisionScratch(cs: CollisionState, capacity: number): void {
+  const n = capacity + 1;
+  if (cs.invMass.length >= n) return;
+  const make = <T extends Float64Array | Int32Array | Uint32Array | Uint8Array>(like: T): T => new (like.constructor as new (x: number) => T)(n);
+  cs.invMass = make(cs.invMass); cs.invInertia = make(cs.invInertia); cs.margin = make(cs.margin);
+  cs.bodyType = make(cs.bodyType); cs.solverMark = make(cs.solverMark); cs.solverIndex = make(cs.solverIndex);
+  const sl = cs.sleep;
+  sl.restTime = make(sl.restTime); sl.island = make(sl.island); sl.parent = make(sl.parent);
+  sl.islandRest = make(sl.islandRest); sl.supported = make(sl.supported);
 }

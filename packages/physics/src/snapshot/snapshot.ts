@@ -2,9 +2,19 @@ import { $internal, Not, Or, query as bitecsQuery, registerComponent } from 'bit
 import type { PhysicsWorld } from '../world.js';
 import { externalWorldStates } from './world-state.js';
 import { describe } from '../validate.js';
+import { hasMaskComponentSets } from '../lean-ecs.js';
 
 /**
  * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
+ *
+ * Layout (format version 2): a JSON-able header (the encoded state tree) and ONE ArrayBuffer holding the
+ * contents of every typed array of the state, each at an 8-byte aligned offset. An array is stored up
+ * to its last non-zero element only (for a per-entity store that is at most the highest live id; the
+ * tail is all zeros and restore writes zeros there), a component store no live entity has is stored as
+ * its type and length only, and bitecs' query lists that equal an earlier list (most queries hold the
+ * same entities in the same order) as a reference to it. `restore` writes into the world's own arrays
+ * where their type and length match (systems and renderers keep them), so it allocates no big array
+ * in a world that already has them.
  *
  * What is captured, generically (so state added later is captured without listing it here):
  * - every field of the world object (stage settings, time, steps, the random generator, every component
@@ -28,7 +38,7 @@ const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex']);
 export interface WorldSnapshot {
   /** Format, world shape and the encoded state tree (see `snapshot`); JSON-able. */
   readonly header: SnapshotHeader;
-  /** The data of every typed array of the state, indexed by the header's `b` fields. */
+  /** The data of every typed array of the state: one ArrayBuffer, the header's `o` fields are byte offsets into it. */
   readonly buffers: ArrayBuffer[];
 }
 
@@ -39,7 +49,7 @@ export type Encoded = number | boolean | string | null | Encoded[] | { [key: str
 export interface SnapshotHeader {
   /** 'bitphysics-snapshot'. */
   format: string;
-  /** Format version, 1. */
+  /** Format version, 2. */
   version: number;
   /** The world's dimensions and capacity (a snapshot restores only into a world with the same). */
   dimensions: number;
@@ -57,16 +67,78 @@ const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) =>
   Float64Array, Float32Array, Int32Array, Uint32Array, Int16Array, Uint16Array, Int8Array, Uint8Array, Uint8ClampedArray,
 };
 
+/**
+ * Length of `a` up to its last element whose bits are not all zero (so -0 and NaN count as values).
+ * Scans 32-bit words where the array's bytes allow it (one integer compare per word, no division).
+ */
+function usedLength(a: TypedArray): number {
+  const bytes = a.BYTES_PER_ELEMENT;
+  if (bytes >= 4 && (a.byteOffset & 3) === 0) {
+    const words = new Int32Array(a.buffer, a.byteOffset, (a.length * bytes) >> 2);
+    let w = words.length;
+    while (w > 0 && words[w - 1] === 0) w--;
+    return Math.ceil((w * 4) / bytes);
+  }
+  let n = a.length;
+  while (n > 0 && a[n - 1] === 0) n--;
+  return n;
+}
+
+/**
+ * Whether elements 1 .. n-1 of `a` have the same bits (and are not NaN, whose payload a fill could
+ * change). Compares 32-bit words; arrays of 1- and 2-byte elements are not checked (false).
+ */
+function uniformFrom1(a: TypedArray, n: number): boolean {
+  const bytes = a.BYTES_PER_ELEMENT;
+  if (bytes < 4 || (a.byteOffset & 3) !== 0) return false;
+  const v = a[1]!;
+  if (v !== v) return false;
+  const words = new Int32Array(a.buffer, a.byteOffset, (n * bytes) >> 2);
+  if (bytes === 4) {
+    const w = words[1]!;
+    for (let i = 2; i < n; i++) if (words[i] !== w) return false;
+    return true;
+  }
+  const lo = words[2]!, hi = words[3]!;
+  for (let i = 4; i < 2 * n; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
+  return true;
+}
+
+interface PendingCopy { readonly src: TypedArray; readonly n: number; readonly offset: number }
+
 class Writer {
-  readonly buffers: ArrayBuffer[] = [];
+  private readonly pending: PendingCopy[] = [];
+  private bytes = 0;
   private readonly seen = new Set<object>();
   /** Stores no entity has: their arrays' contents are never read, so only their type and length are kept. */
   unused: ReadonlySet<object> = new Set();
-  /** Encodes a typed array (a copy of it; `own` true: `a` itself, which the caller made for the snapshot). */
-  array(a: TypedArray, own = false): Encoded {
-    const copy = own ? a : a.slice();
-    this.buffers.push(copy.buffer as ArrayBuffer);
-    return { $t: a.constructor.name, b: this.buffers.length - 1 };
+  /**
+   * Encodes a typed array: its type, full length `len`, and its first `n` elements (up to the last
+   * non-zero one), copied into the snapshot's buffer at byte offset `o` by `finish`.
+   */
+  array(a: TypedArray): Encoded {
+    const used = usedLength(a);
+    // A store whose entities all hold one value (materials, masses of equal bodies) keeps two elements:
+    // index 0 (no entity) and the value, repeated up to `rep` by restore.
+    const rep = used > 3 && uniformFrom1(a, used) ? used : 0;
+    const n = rep > 0 ? 2 : used;
+    const offset = (this.bytes + 7) & ~7;
+    this.bytes = offset + n * a.BYTES_PER_ELEMENT;
+    this.pending.push({ src: a, n, offset });
+    return rep > 0 ? { $t: a.constructor.name, o: offset, n, len: a.length, rep } : { $t: a.constructor.name, o: offset, n, len: a.length };
+  }
+  /**
+   * The snapshot's one buffer with every encoded array copied in (call once, right after encoding):
+   * `reuse` if it is large enough (its old contents are overwritten where the arrays go), else a new one.
+   */
+  finish(reuse?: ArrayBuffer): ArrayBuffer {
+    const buf = reuse !== undefined && reuse.byteLength >= this.bytes ? reuse : new ArrayBuffer(this.bytes);
+    for (const { src, n, offset } of this.pending) {
+      if (n === 0) continue;
+      const Ctor = src.constructor as new (b: ArrayBuffer, o: number, n: number) => TypedArray;
+      new Ctor(buf, offset, n).set((n === src.length ? src : src.subarray(0, n)) as never);
+    }
+    return buf;
   }
   value(v: unknown, path: string): Encoded {
     if (typeof v === 'number') {
@@ -111,12 +183,56 @@ function isTagged(e: Encoded): e is { [key: string]: Encoded } {
 }
 
 class Reader {
-  constructor(private readonly buffers: readonly ArrayBuffer[]) {}
+  /**
+   * @param buffer the snapshot's buffer.
+   * @param capacity the world's capacity: arrays of k (capacity + 1) elements are per-entity stores.
+   * @param oldMaxId the world's highest entity id before the restore: per-entity arrays hold zeros above
+   *   it, so only their entries up to it need zeroing past the snapshot's data.
+   */
+  constructor(private readonly buffer: ArrayBuffer, private readonly capacity: number, private readonly oldMaxId: number) {}
+  /** A view of an encoded array's stored elements (its first `n`; the rest, up to `len`, are zeros). */
   array(e: { [key: string]: Encoded }, path: string): TypedArray {
-    const Ctor = TYPED[e.$t as string];
-    const buf = this.buffers[e.b as number];
-    if (Ctor === undefined || buf === undefined) throw new RangeError(`restore: snapshot's ${path} is damaged`);
-    return new Ctor(buf);
+    const Ctor = TYPED[e.$t as string] as unknown as (new (b: ArrayBuffer, o: number, n: number) => TypedArray) | undefined;
+    const o = e.o as number, n = e.n as number, len = e.len as number;
+    const rep = e.rep as number | undefined;
+    if (Ctor === undefined || !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
+      (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len))) {
+      throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    }
+    return new Ctor(this.buffer, o, n);
+  }
+  /** Writes the encoded elements into the start of `out` (stored ones, then a repeated value); @returns how many. */
+  write(out: TypedArray, src: TypedArray, e: { [key: string]: Encoded }): number {
+    out.set(src as never);
+    const rep = e.rep as number | undefined;
+    if (rep === undefined) return src.length;
+    out.fill(src[1]! as never, 2, rep);
+    return rep;
+  }
+  /** The encoded elements up to the last non-zero one: a view into the snapshot, or a copy if a value repeats. */
+  used(e: { [key: string]: Encoded }, path: string): TypedArray {
+    const src = this.array(e, path);
+    const rep = e.rep as number | undefined;
+    if (rep === undefined) return src;
+    const out = new TYPED[e.$t as string]!(rep);
+    this.write(out, src, e);
+    return out;
+  }
+  /** A new array of the encoded type and full length with the stored elements in it. */
+  full(e: { [key: string]: Encoded }, path: string): TypedArray {
+    const src = this.array(e, path);
+    const out = new TYPED[e.$t as string]!(e.len as number);
+    this.write(out, src, e);
+    return out;
+  }
+  /**
+   * End of the part of `a`, an array of the world being restored at `path`, that may hold non-zero
+   * values: a component store's array (k (capacity + 1) long, k entries an entity) holds zeros above
+   * the highest id the world has had; any other array may hold values anywhere (lists, rings, scratch).
+   */
+  private extent(a: TypedArray, path: string): number {
+    const k = a.length / (this.capacity + 1);
+    return path.startsWith('world.components.') && Number.isInteger(k) && k >= 1 ? Math.min(a.length, (this.oldMaxId + 1) * k) : a.length;
   }
   /** A fresh value from the encoding (typed arrays copied out of the snapshot). */
   fresh(e: Encoded, path: string): unknown {
@@ -124,7 +240,7 @@ class Reader {
     const t = e.$t as string;
     if (t === 'n') return e.v === '-0' ? -0 : Number(e.v);
     if (t === 'u') return undefined;
-    if (t in TYPED) return this.array(e, path).slice();
+    if (t in TYPED) return this.full(e, path);
     if (t === 'unused') return new TYPED[e.type as string]!(e.n as number);
     const v = e.v as Encoded;
     if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
@@ -146,18 +262,26 @@ class Reader {
     if (isTagged(e)) {
       const t = e.$t as string;
       if (t === 'unused') {
-        // No entity has the store's component: its contents are never read; only the allocation matters.
+        // No entity has the store's component: its contents are never read. A store the world has
+        // allocated stays allocated (zeroed, as if new); one it lacks gets the snapshot's allocation.
         const Ctor = TYPED[e.type as string]!;
         const n = e.n as number;
-        if (!(cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === Ctor && (cur as TypedArray).length === n)) target[key] = new Ctor(n);
+        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === Ctor && (cur as TypedArray).length >= n) {
+          (cur as TypedArray).fill(0, 0, this.extent(cur as TypedArray, path));
+        } else {
+          target[key] = new Ctor(n);
+        }
         return;
       }
       if (t in TYPED) {
         const src = this.array(e, path);
-        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === src.length) {
-          (cur as TypedArray).set(src);
+        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === e.len) {
+          const a = cur as TypedArray;
+          const written = this.write(a, src, e);
+          const end = this.extent(a, path);
+          if (end > written) a.fill(0, written, end);
         } else {
-          target[key] = src.slice();
+          target[key] = this.full(e, path);
         }
         return;
       }
@@ -207,8 +331,8 @@ interface QueryData extends SparseSetLike {
 }
 interface ComponentData { generationId: number; bitflag: number; ref: object }
 interface EcsInternals {
-  entityIndex: { aliveCount: number; dense: number[]; sparse: number[]; maxId: number; versioning: boolean };
-  entityMasks: number[][];
+  entityIndex: { aliveCount: number; dense: number[]; sparse: number[] | Int32Array; maxId: number; versioning: boolean };
+  entityMasks: (number[] | Int32Array)[];
   entityComponents: Map<number, Set<object>>;
   componentMap: Map<object, ComponentData>;
   queries: Set<QueryData>;
@@ -235,6 +359,7 @@ function describeQuery(q: QueryData, names: Map<object, string>): { and: string[
 const keyOf = (d: { and: string[]; not: string[]; or: string[] }) => `${d.and.join(',')}|${d.not.join(',')}|${d.or.join(',')}`;
 
 function toInt32(a: ArrayLike<number>): Int32Array {
+  if (a instanceof Int32Array) return a;
   const out = new Int32Array(a.length);
   for (let i = 0; i < a.length; i++) out[i] = a[i]!;
   return out;
@@ -242,6 +367,31 @@ function toInt32(a: ArrayLike<number>): Int32Array {
 
 function bitIndex(bitflag: number): number {
   return 31 - Math.clz32(bitflag);
+}
+
+/** Whether two id lists hold the same ids in the same order. */
+function sameIds(a: ArrayLike<number>, b: ArrayLike<number>): boolean {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
+/**
+ * Encodes bitecs id lists, each once: a list equal to one encoded before (most queries hold the same
+ * entities in the same order) becomes a reference `{ $t: 'same', i }` to that one's position in `lists`.
+ */
+class IdLists {
+  private readonly done: Array<{ ids: ArrayLike<number>; index: number }> = [];
+  readonly lists: Encoded[] = [];
+  constructor(private readonly w: Writer) {}
+  encode(ids: ArrayLike<number>): Encoded {
+    if (ids.length === 0) return { $t: 'ids', v: [] };
+    for (const d of this.done) if (sameIds(d.ids, ids)) return { $t: 'same', i: d.index };
+    const index = this.lists.length;
+    this.lists.push(this.w.array(toInt32(ids)));
+    this.done.push({ ids, index });
+    return { $t: 'same', i: index };
+  }
 }
 
 function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
@@ -263,39 +413,49 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   const masks: Encoded[] = [];
   for (let g = 0; g < ctx.entityMasks.length; g++) {
     const src = ctx.entityMasks[g]!;
-    const m = new Int32Array(maxId + 1);
     const unknown = ~known[g]!;
-    for (let e = 0; e <= maxId; e++) {
-      const v = src[e] ?? 0;
-      if ((v & unknown) !== 0) {
-        throw new Error(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
-      }
-      m[e] = v;
+    const n = Math.min(src.length, maxId + 1);
+    let bad = 0;
+    for (let e = 0; e < n; e++) bad |= (src[e] ?? 0) & unknown;
+    if (bad !== 0) {
+      let e = 0;
+      while (((src[e] ?? 0) & unknown) === 0) e++;
+      throw new Error(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
     }
-    masks.push(w.array(m, true));
+    // Typed masks (lean-ecs.ts) are stored as they are, up to their last set entry; JS ones as Int32Array.
+    let m: Int32Array;
+    if (src instanceof Int32Array) m = src;
+    else { m = new Int32Array(n); for (let e = 0; e < n; e++) m[e] = src[e] ?? 0; }
+    masks.push(w.array(m));
   }
+  const lists = new IdLists(w);
   const queries: Encoded[] = [];
+  const dense = lists.encode(ix.dense);
   for (const q of ctx.queries) {
     const d = describeQuery(q, names);
     if (d === null) continue;
-    queries.push({
-      $t: 'o',
-      v: { and: d.and, not: d.not, or: d.or, dense: w.array(toInt32(q.dense), true), toRemove: w.array(toInt32(q.toRemove.dense), true) },
-    });
+    queries.push({ $t: 'o', v: { and: d.and, not: d.not, or: d.or, dense: lists.encode(q.dense), toRemove: lists.encode(q.toRemove.dense) } });
   }
-  return {
-    aliveCount: ix.aliveCount, maxId, dense: w.array(toInt32(ix.dense), true),
-    layout, masks, queries: queries as Encoded[],
-  };
+  return { aliveCount: ix.aliveCount, maxId, dense, layout, masks, queries, lists: lists.lists };
 }
 
-function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader): void {
+/** Reads an id list encoded by IdLists. */
+function idList(e: Encoded, lists: readonly Int32Array[], path: string): Int32Array {
+  const t = isTagged(e) ? e.$t : undefined;
+  if (t === 'ids') return new Int32Array(0);
+  const list = t === 'same' ? lists[(e as Record<string, Encoded>).i as number] : undefined;
+  if (list === undefined) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+  return list;
+}
+
+function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader, oldMaxId: number): void {
   const ctx = internals(world);
   const ix = ctx.entityIndex;
   const C = world.components as unknown as Record<string, object>;
+  const lists = (ecs.lists as Encoded[]).map((l, i) => r.used(l as Record<string, Encoded>, `ecs.lists[${i}]`) as Int32Array);
   // Layout: the target's bit of each snapshot component (registering components the target has not seen).
   const layout = ecs.layout as [string, number, number][];
-  const srcMasks = (ecs.masks as Encoded[]).map((m, g) => r.array(m as Record<string, Encoded>, `masks[${g}]`) as Int32Array);
+  const srcMasks = (ecs.masks as Encoded[]).map((m, g) => r.used(m as Record<string, Encoded>, `masks[${g}]`) as Int32Array);
   let same = true;
   const map: Array<{ sg: number; sbit: number; tg: number; tflag: number }> = [];
   for (const [name, sg, sbit] of layout) {
@@ -307,54 +467,42 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   }
   const maxId = ecs.maxId as number;
   const gens = ctx.entityMasks.length;
-  const newMasks: Int32Array[] = [];
-  for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(maxId + 1));
+  // Masks, written in place: entries up to the larger of the two highest ids (ids above both are 0).
+  const top = Math.max(maxId, oldMaxId) + 1;
   if (same) {
-    for (let g = 0; g < srcMasks.length; g++) newMasks[g]!.set(srcMasks[g]!);
+    for (let g = 0; g < gens; g++) writeMask(ctx.entityMasks[g]!, srcMasks[g], top);
   } else {
+    const newMasks: Int32Array[] = [];
+    for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(top));
     for (const { sg, sbit, tg, tflag } of map) {
       const s = srcMasks[sg]!, t = newMasks[tg]!;
       const f = 1 << sbit;
-      for (let e = 0; e <= maxId; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
+      for (let e = 0; e < s.length; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
     }
+    for (let g = 0; g < gens; g++) writeMask(ctx.entityMasks[g]!, newMasks[g], top);
   }
-  // Entity index.
-  const dense = r.array(ecs.dense as Record<string, Encoded>, 'ecs.dense');
-  const aliveCount = ecs.aliveCount as number;
-  const oldAlive = new Uint8Array(Math.max(ix.maxId, maxId) + 1);
-  for (let i = 0; i < ix.aliveCount; i++) oldAlive[ix.dense[i]!] = 1;
-  // Component sets: kept where an entity stays alive with the same components, rebuilt elsewhere.
-  const bits: object[][] = [];
-  for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
-  const sets = ctx.entityComponents;
-  const newAlive = new Uint8Array(oldAlive.length);
-  for (let i = 0; i < aliveCount; i++) newAlive[dense[i]!] = 1;
-  // Fast path (a rewind with the same entities and components): nothing to rebuild.
-  let unchanged = ix.aliveCount === aliveCount;
-  for (let e = 0; unchanged && e < oldAlive.length; e++) if (oldAlive[e] !== newAlive[e]) unchanged = false;
-  for (let g = 0; unchanged && g < gens; g++) {
-    const cur = ctx.entityMasks[g]!, m = newMasks[g]!;
-    for (let i = 0; i < aliveCount; i++) { const e = dense[i]!; if ((cur[e] ?? 0) !== m[e]) { unchanged = false; break; } }
-  }
-  for (let i = 0; i < ix.aliveCount; i++) { const e = ix.dense[i]!; if (newAlive[e] === 0) sets.delete(e); }
-  for (let i = 0; !unchanged && i < aliveCount; i++) {
-    const e = dense[i]!;
-    let keep = oldAlive[e] === 1 && sets.has(e);
-    for (let g = 0; keep && g < gens; g++) if ((ctx.entityMasks[g]![e] ?? 0) !== newMasks[g]![e]) keep = false;
-    if (keep) continue;
-    const set = new Set<object>();
-    for (let g = 0; g < gens; g++) {
-      let m = newMasks[g]![e]!;
-      while (m !== 0) { const b = 31 - Math.clz32(m); set.add(bits[g]![b]!); m &= ~(1 << b); }
-    }
-    sets.set(e, set);
-  }
-  for (let g = 0; g < gens; g++) writeInPlace(ctx.entityMasks[g]!, newMasks[g]!, newMasks[g]!.length);
   // Entity index (written in place: its arrays stay packed).
+  const dense = idList(ecs.dense!, lists, 'ecs.dense');
+  const aliveCount = ecs.aliveCount as number;
   writeInPlace(ix.dense, dense, dense.length);
   for (let i = 0; i < dense.length; i++) ix.sparse[dense[i]!] = i;
   ix.aliveCount = aliveCount;
   ix.maxId = maxId;
+  // Component sets: derived from the masks in a world made by createPhysicsWorld; rebuilt otherwise.
+  if (!hasMaskComponentSets(world)) {
+    const bits: object[][] = [];
+    for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
+    ctx.entityComponents.clear();
+    for (let i = 0; i < aliveCount; i++) {
+      const e = dense[i]!;
+      const set = new Set<object>();
+      for (let g = 0; g < gens; g++) {
+        let m = ctx.entityMasks[g]![e] ?? 0;
+        while (m !== 0) { const b = 31 - Math.clz32(m); set.add(bits[g]![b]!); m &= ~(1 << b); }
+      }
+      ctx.entityComponents.set(e, set);
+    }
+  }
   // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
   const names = namesOf(world);
   const byKey = new Map<string, QueryData>();
@@ -374,8 +522,8 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       if (q === undefined) throw new Error(`restore: could not make the query ${keyOf(d)}`);
     }
     done.add(q);
-    setContent(q, r.array(qd.dense as Record<string, Encoded>, 'query') as Int32Array);
-    const rem = r.array(qd.toRemove as Record<string, Encoded>, 'query') as Int32Array;
+    setContent(q, idList(qd.dense!, lists, 'query'));
+    const rem = idList(qd.toRemove!, lists, 'query');
     setContent(q.toRemove, rem);
     if (rem.length > 0) ctx.dirtyQueries.add(q);
   }
@@ -390,6 +538,18 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   }
 }
 
+/** Makes mask array `arr` hold `src` (missing entries 0) for ids below `top`; typed masks are written with set and fill. */
+function writeMask(arr: number[] | Int32Array, src: ArrayLike<number> | undefined, top: number): void {
+  const n = Math.min(src?.length ?? 0, top);
+  if (arr instanceof Int32Array) {
+    if (n > 0) arr.set(n === src!.length ? src! : (src as Int32Array).subarray(0, n));
+    if (top > n) arr.fill(0, n, Math.min(top, arr.length));
+    return;
+  }
+  for (let i = 0; i < n; i++) arr[i] = src![i]!;
+  for (let i = n; i < Math.min(top, arr.length); i++) arr[i] = 0;
+}
+
 /** Makes `arr` hold `src[0..n)` (JS array written in place, so it stays packed). */
 function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
   const m = Math.min(arr.length, n);
@@ -401,12 +561,11 @@ function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
 /** Makes a bitecs sparse set hold exactly `ids`, in that order (untouched if it already does). */
 function setContent(set: SparseSetLike, ids: Int32Array): void {
   const dense = set.dense;
-  if (Array.isArray(dense)) {
-    let same = dense.length === ids.length;
-    for (let i = 0; same && i < ids.length; i++) if (dense[i] !== ids[i]) same = false;
-    if (same) return;
+  const sparse = (set as unknown as { sparse: ArrayLike<number> & { [i: number]: number } }).sparse;
+  // A typed sparse array not allocated yet (lean-ecs.ts): let `add` allocate it.
+  if (Array.isArray(dense) && !(ArrayBuffer.isView(sparse) && sparse.length === 0 && ids.length > 0)) {
+    if (sameIds(dense, ids)) return;
     writeInPlace(dense, ids, ids.length);
-    const sparse = (set as unknown as { sparse: number[] }).sparse;
     for (let i = 0; i < ids.length; i++) sparse[ids[i]!] = i;
     return;
   }
@@ -445,16 +604,24 @@ function unusedStores(world: PhysicsWorld): Set<object> {
 }
 
 /**
- * The complete state of `world` as transferable data: a JSON-able header and ArrayBuffers (post them to
- * a Worker with the buffers in the transfer list, or write them to disk). The world is not changed.
+ * The complete state of `world` as transferable data: a JSON-able header and one ArrayBuffer (post it to
+ * a Worker in the transfer list, or write it to disk; layout in the module docstring). The world is not changed.
  * Restore it with `restore` into this world or another made with the same options and systems.
  *
+ * @param reuse optional: an earlier snapshot that is no longer needed (a rollback ring's oldest entry).
+ *   Its buffer is written over and shared by the new snapshot when it is large enough, which saves
+ *   allocating (and the system zeroing) a new one; `reuse` itself must not be restored afterwards.
  * @throws TypeError if the world holds state that cannot be copied (a function or a shared object where
- *   data belongs), or Error if an entity carries a component outside `world.components`.
+ *   data belongs), if `reuse` is not a snapshot, or Error if an entity carries a component outside
+ *   `world.components`.
  * @example
  * const saved = snapshot(world); stepMany(world, 100); restore(world, saved); // back 100 steps
  */
-export function snapshot(world: PhysicsWorld): WorldSnapshot {
+export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnapshot {
+  const old = reuse?.buffers?.[0];
+  if (reuse !== undefined && !(old instanceof ArrayBuffer && reuse.buffers.length === 1)) {
+    throw new TypeError(`snapshot: reuse must be a snapshot returned by snapshot(world), got ${describe(reuse)}`);
+  }
   const w = new Writer();
   w.unused = unusedStores(world);
   const state = w.object(world as unknown as Record<string, unknown>, 'world', NOT_STATE);
@@ -465,8 +632,8 @@ export function snapshot(world: PhysicsWorld): WorldSnapshot {
   }
   const ecs = captureEcs(world, w);
   return {
-    header: { format: 'bitphysics-snapshot', version: 1, dimensions: world.dimensions, capacity: world.capacity, state, external, ecs },
-    buffers: w.buffers,
+    header: { format: 'bitphysics-snapshot', version: 2, dimensions: world.dimensions, capacity: world.capacity, state, external, ecs },
+    buffers: [w.finish(old)],
   };
 }
 
@@ -486,15 +653,20 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     throw new RangeError(`${where}: snapshot must be a value returned by snapshot(world), got ${describe(snap)}`);
   }
   const h = snap.header;
-  if (h.format !== 'bitphysics-snapshot' || h.version !== 1) {
-    throw new RangeError(`${where}: snapshot must be a bitphysics snapshot of version 1, got format ${describe(h.format)} version ${describe(h.version)}`);
+  if (h.format !== 'bitphysics-snapshot' || h.version !== 2) {
+    throw new RangeError(`${where}: snapshot must be a bitphysics snapshot of version 2, got format ${describe(h.format)} version ${describe(h.version)}`);
   }
   if (h.dimensions !== world.dimensions || h.capacity !== world.capacity) {
     throw new RangeError(
       `${where}: snapshot must come from a world with the same options: it has dimensions ${h.dimensions} and capacity ${h.capacity}, this world ${world.dimensions} and ${world.capacity}`,
     );
   }
-  const r = new Reader(snap.buffers);
+  const buffer = snap.buffers[0];
+  if (snap.buffers.length !== 1 || !(buffer instanceof ArrayBuffer)) {
+    throw new RangeError(`${where}: snapshot must hold one ArrayBuffer, got ${snap.buffers.length} buffers`);
+  }
+  const oldMaxId = internals(world).entityIndex.maxId;
+  const r = new Reader(buffer, world.capacity, oldMaxId);
   // Check the structure first so a mismatch leaves the world as it was.
   const state = (h.state as Record<string, Encoded>).v as Record<string, Encoded>;
   for (const key of Object.keys(world)) {
@@ -510,5 +682,5 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     const target = ext.get(world, true)!;
     r.objectInto(target as Record<string, unknown>, (enc as Record<string, Encoded>).v as Record<string, Encoded>, ext.name, new Set(ext.keep ?? []));
   }
-  restoreEcs(world, h.ecs as Record<string, Encoded>, r);
+  restoreEcs(world, h.ecs as Record<string, Encoded>, r, oldMaxId);
 }

@@ -1,0 +1,168 @@
+import { $internal } from 'bitecs';
+
+/**
+ * bitecs' bookkeeping per entity made lean, for worlds of a million particles.
+ *
+ * 1. Component sets derived from the component masks instead of stored.
+ * bitecs 0.4 keeps, beside each entity's component bit mask, a `Set` of its components in a `Map`
+ * keyed by entity id (`entityComponents`): about 180 bytes an entity, more than the Position and
+ * Velocity of a bare particle together. The masks already say which components an entity has, so
+ * `useMaskComponentSets` replaces that map with a view that answers from the masks: bitecs' own
+ * writes to it (`set` on addEntity, `add` / `delete` on addComponent / removeComponent, `delete` on
+ * removeEntity) come after its mask updates and are no-ops here, and its reads (`getEntityComponents`,
+ * relation cleanup on removeEntity, `getAllEntities`) list the components whose bit is set, in the
+ * order the components were registered with the world, and the live ids of the entity index.
+ * Nothing is allocated per entity or per call except by iteration (`getEntityComponents` returns a
+ * new array, as before).
+ *
+ * 2. Fixed typed arrays where bitecs grows JS arrays indexed by entity id: the entity index's `sparse`
+ * (id -> position in `dense`), the first generation of component masks (31 components, the core
+ * stores among them), and each query's `sparse` (and its pending removals'), all Int32Array of capacity + 1. A JS
+ * array of a million small integers costs about 10.5 bytes an element once grown by pushes; the typed
+ * one 4. The dense lists stay JS arrays (queries hand them to systems; bitecs pushes onto them).
+ * Ids above the capacity are never made (createSlot refuses them).
+ */
+
+interface ComponentData { generationId: number; bitflag: number; ref: object }
+interface EcsContext {
+  entityIndex: { aliveCount: number; dense: number[]; sparse: ArrayLike<number | undefined> & { [i: number]: number | undefined } };
+  entityMasks: (ArrayLike<number> & { [i: number]: number })[];
+  componentMap: Map<object, ComponentData>;
+  entityComponents: unknown;
+  queries: Set<SparseSetLike & { toRemove: SparseSetLike }>;
+}
+
+/** bitecs' sparse set (createSparseSet): the members are read through these properties. */
+interface SparseSetLike {
+  dense: number[];
+  sparse: ArrayLike<number | undefined>;
+  add(v: number): void;
+  remove(v: number): void;
+  has(v: number): boolean;
+  reset(): void;
+  sort(compare?: (a: number, b: number) => number): void;
+}
+
+/**
+ * Gives bitecs sparse set `set` an Int32Array `sparse` (same members, same order), allocated with
+ * `capacity + 1` entries on the set's first member (most queries of a world never hold an entity).
+ * `has(v)` reads `dense[sparse[v]] === v`, so stale entries of removed ids need no clearing.
+ */
+function typedSparseSet(set: SparseSetLike, capacity: number): void {
+  const dense = set.dense;
+  let sparse = new Int32Array(dense.length === 0 ? 0 : capacity + 1);
+  for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
+  const has = (v: number): boolean => dense[sparse[v]!] === v;
+  set.sparse = sparse;
+  set.has = has;
+  set.add = (v: number): void => {
+    if (has(v)) return;
+    if (sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    sparse[v] = dense.push(v) - 1;
+  };
+  set.remove = (v: number): void => {
+    if (!has(v)) return;
+    const index = sparse[v]!;
+    const swapped = dense.pop()!;
+    if (swapped !== v) { dense[index] = swapped; sparse[swapped] = index; }
+  };
+  set.reset = (): void => { dense.length = 0; };
+  set.sort = (compare?: (a: number, b: number) => number): void => {
+    dense.sort(compare);
+    if (dense.length > 0 && sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
+  };
+}
+
+/** The world's query set: each query registered gets typed sparse arrays before bitecs fills it. */
+class LeanQuerySet<Q extends SparseSetLike & { toRemove: SparseSetLike }> extends Set<Q> {
+  constructor(private readonly capacity: number, queries: Iterable<Q>) {
+    super();
+    for (const q of queries) this.add(q);
+  }
+  override add(q: Q): this {
+    if (!(q.sparse instanceof Int32Array)) { typedSparseSet(q, this.capacity); typedSparseSet(q.toRemove, this.capacity); }
+    return super.add(q);
+  }
+}
+
+/** The component set of one entity: read-only view over its mask (bitecs' writes are ignored). */
+class MaskComponentSet {
+  /** The entity the view answers for: set by `MaskComponentSets.get` just before bitecs reads it. */
+  eid = 0;
+  constructor(private readonly ctx: EcsContext) {}
+  /** No-op: bitecs has already set the component's bit in the entity's mask. */
+  add(): this { return this; }
+  /** No-op: bitecs has already cleared the component's bit. */
+  delete(): boolean { return true; }
+  has(component: object): boolean {
+    const d = this.ctx.componentMap.get(component);
+    return d !== undefined && ((this.ctx.entityMasks[d.generationId]![this.eid] ?? 0) & d.bitflag) === d.bitflag;
+  }
+  get size(): number {
+    let n = 0;
+    for (const _ of this) n++;
+    return n;
+  }
+  *[Symbol.iterator](): IterableIterator<object> {
+    const eid = this.eid, ctx = this.ctx;
+    for (const d of ctx.componentMap.values()) {
+      if (((ctx.entityMasks[d.generationId]![eid] ?? 0) & d.bitflag) === d.bitflag) yield d.ref;
+    }
+  }
+  values(): IterableIterator<object> { return this[Symbol.iterator](); }
+  keys(): IterableIterator<object> { return this[Symbol.iterator](); }
+  forEach(fn: (c: object, c2: object, set: this) => void): void { for (const c of this) fn(c, c, this); }
+}
+
+/** The map bitecs reads as `entityComponents`: live entity id -> its component set (a mask view). */
+class MaskComponentSets {
+  private readonly view: MaskComponentSet;
+  constructor(private readonly ctx: EcsContext) { this.view = new MaskComponentSet(ctx); }
+  private alive(eid: number): boolean {
+    const ix = this.ctx.entityIndex;
+    const i = ix.sparse[eid];
+    return i !== undefined && i < ix.aliveCount && ix.dense[i] === eid;
+  }
+  /** No-op (bitecs' addEntity hands a fresh empty Set; the mask is the record). */
+  set(): this { return this; }
+  /** The entity's components as a view, or undefined for an id that is not alive. The view is shared: read it before the next `get`. */
+  get(eid: number): MaskComponentSet | undefined {
+    if (!this.alive(eid)) return undefined;
+    this.view.eid = eid;
+    return this.view;
+  }
+  has(eid: number): boolean { return this.alive(eid); }
+  /** No-op (bitecs clears the removed entity's masks itself). */
+  delete(): boolean { return true; }
+  /** No-op: the entity index is the record of live ids. */
+  clear(): void {}
+  get size(): number { return this.ctx.entityIndex.aliveCount; }
+  *keys(): IterableIterator<number> {
+    const ix = this.ctx.entityIndex;
+    for (let i = 0; i < ix.aliveCount; i++) yield ix.dense[i]!;
+  }
+}
+
+/**
+ * Makes bitecs' per-entity bookkeeping lean (see the module docstring): component sets from the masks,
+ * and Int32Array sparse arrays of `capacity + 1` for the entity index, the first component mask
+ * generation and every query. Call on a new world, before any entity exists, after its
+ * components are registered (createPhysicsWorld does, after installing the component defaults).
+ * @param capacity the world's capacity: the highest entity id.
+ * @throws Error if the world already has entities.
+ */
+export function useLeanEcsStorage(world: object, capacity: number): void {
+  const ctx = (world as Record<symbol, EcsContext>)[$internal]!;
+  if (ctx.entityIndex.aliveCount !== 0 || ctx.entityIndex.dense.length !== 0) throw new Error('useLeanEcsStorage: the world must have no entities yet');
+  ctx.entityComponents = new MaskComponentSets(ctx);
+  ctx.entityIndex.sparse = new Int32Array(capacity + 1) as never;
+  // The first generation (the first 31 components registered: the core stores) is on every entity.
+  ctx.entityMasks[0] = new Int32Array(capacity + 1);
+  ctx.queries = new LeanQuerySet(capacity, ctx.queries);
+}
+
+/** Whether `world`'s component sets are derived from its masks (`useLeanEcsStorage`): nothing to rebuild after its masks change. */
+export function hasMaskComponentSets(world: object): boolean {
+  return (world as Record<symbol, EcsContext>)[$internal]!.entityComponents instanceof MaskComponentSets;
+}
