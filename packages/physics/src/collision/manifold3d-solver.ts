@@ -260,6 +260,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k;
       const limit = mu * LN[q]!;
+      // A point that pushes nothing (a speculative one) has no friction to solve.
+      if (limit === 0 && LT1[q] === 0 && LT2[q] === 0) continue;
       for (let d = 1; d < 3; d++) {
         const o = JAC * q + 12 * d;
         const ux = d === 1 ? t1x : t2x, uy = d === 1 ? t1y : t2y, uz = d === 1 ? t1z : t2z;

@@ -130,10 +130,12 @@ export interface RowIndex {
   keys: Float64Array;
   rows: Int32Array;
   mask: number;
+  /** Keys inserted since the last clear (a clear of an empty index costs nothing). */
+  count: number;
 }
 
 function createRowIndex(): RowIndex {
-  return { keys: new Float64Array(64).fill(NaN), rows: new Int32Array(64), mask: 63 };
+  return { keys: new Float64Array(64).fill(NaN), rows: new Int32Array(64), mask: 63, count: 0 };
 }
 
 /** Empties the index and makes room for `count` keys (at most half full). */
@@ -141,9 +143,9 @@ export function clearRowIndex(index: RowIndex, count: number): void {
   let size = index.mask + 1;
   if (size < 2 * count) {
     while (size < 2 * count) size *= 2;
-    index.keys = new Float64Array(size); index.rows = new Int32Array(size); index.mask = size - 1;
-  }
-  index.keys.fill(NaN);
+    index.keys = new Float64Array(size).fill(NaN); index.rows = new Int32Array(size); index.mask = size - 1;
+  } else if (index.count > 0) index.keys.fill(NaN);
+  index.count = 0;
 }
 
 function slotOfKey(key: number, mask: number): number {
@@ -158,6 +160,7 @@ export function insertRow(index: RowIndex, key: number, row: number): void {
   let h = slotOfKey(key, mask);
   while (K[h] === K[h] && K[h] !== key) h = (h + 1) & mask;
   K[h] = key; index.rows[h] = row;
+  index.count++;
 }
 
 /** The row of `key`, or -1. */

@@ -70,6 +70,10 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     for (let i = 0; i < wakes.count; i++) woken += wakeIsland3D(world, wakes.list[i]!);
     if (woken === 0) break;
   }
+  // The contact count of the step's statistics includes the 3D shape contact points (solver rows).
+  let points = 0;
+  for (let i = 0, b = st.current; i < b.count; i++) points += b.points[i]!;
+  world.collision.stats.contacts += points;
   sensorEvents(world, st);
 }
 
@@ -107,10 +111,11 @@ function ensure(n: number): void {
 const bodyQ = new Float64Array(4);
 
 /** Start-of-step orientation of body b into bodyQ (the current one turned back by w h). */
-function startOrientation(world: PhysicsWorld, b: number, turning: boolean): void {
+function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBall: boolean): void {
   const c = world.components, Q = c.Orientation;
   let x = Q.x[b]!, y = Q.y[b]!, z = Q.z[b]!, w = Q.w[b]!;
-  if (!hasComponent(world, b, c.Orientation)) { x = 0; y = 0; z = 0; w = 1; }
+  // A body with a 3D shape always has an orientation (addShape3D adds it); a ball may not.
+  if (isBall && !hasComponent(world, b, c.Orientation)) { x = 0; y = 0; z = 0; w = 1; }
   if (turning) {
     const h = world.h, W = c.AngularVelocity;
     const rx = -W.x[b]! * h, ry = -W.y[b]! * h, rz = -W.z[b]! * h;
@@ -146,8 +151,24 @@ export function classifyBody3D(world: PhysicsWorld, b: number): number {
   return t;
 }
 
+/** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */
+let classStamp = new Int32Array(0), classKind = new Uint8Array(0), classStep = 0;
+
+/** Marks the static, kinematic and sleeping bodies from three queries (in the order classifyBody3D ranks them); returns the stamp. */
+function markClasses(world: PhysicsWorld): number {
+  const c = world.components, n = world.capacity + 1;
+  if (classStamp.length < n) { classStamp = new Int32Array(n); classKind = new Uint8Array(n); classStep = 0; }
+  const stamp = ++classStep;
+  const sleeping = query(world, [c.Sleeping]), kinematic = query(world, [c.Kinematic]), fixed = query(world, [c.Static]);
+  for (let i = 0; i < sleeping.length; i++) { classStamp[sleeping[i]!] = stamp; classKind[sleeping[i]!] = BodyType.Sleeping; }
+  for (let i = 0; i < kinematic.length; i++) { classStamp[kinematic[i]!] = stamp; classKind[kinematic[i]!] = BodyType.Kinematic; }
+  for (let i = 0; i < fixed.length; i++) { classStamp[fixed[i]!] = stamp; classKind[fixed[i]!] = BodyType.Static; }
+  return stamp;
+}
+
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
 function gather(world: PhysicsWorld, s: Shape3DStore): void {
+  const stamp = markClasses(world);
   const c = world.components, cs = world.collision;
   const invInertia = cs.invInertia;
   const balls = query(world, [c.Position, c.Ball]);
@@ -159,11 +180,16 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const add = (e: number, b: number, isBall: boolean): void => {
     ensure(n + 1);
     const sc = scratch;
-    const t = classifyBody3D(world, b);
+    // Static, kinematic and sleeping bodies from this step's queries (no component lookups); dynamic ones classified.
+    let t: number;
+    if (classStamp[b] === stamp) {
+      t = classKind[b]!;
+      world.collision.bodyType[b] = t; world.collision.invMass[b] = 0; world.collision.invInertia[b] = 0;
+    } else t = classifyBody3D(world, b);
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
     const turning = moving && invInertia[b]! > 0 || t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity);
     const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!, y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!, z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
-    startOrientation(world, b, turning);
+    startOrientation(world, b, turning, isBall);
     const qx = bodyQ[0]!, qy = bodyQ[1]!, qz = bodyQ[2]!, qw = bodyQ[3]!;
     let cx = x0, cy = y0, cz = z0, reach: number;
     const R = sc.R, o = 9 * n;
@@ -261,6 +287,10 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
     if (w > 4 * mean) { large[nl++] = i; sc.order[i] = -1; } else { if (w > cell) cell = w; sc.order[i] = 0; }
   }
   if (!(cell > 0)) cell = 1;
+  // No moving collider (a pile asleep): no pair can be new, and the grid is not built.
+  let sources = 0;
+  for (let i = 0; i < n; i++) { const t = type[sc.body[i]!]!; if (t === BodyType.Dynamic || t === BodyType.Kinematic) { sources++; break; } }
+  if (sources === 0) { planesAndMeshes(world, s, st); return; }
   const inv = 1 / cell;
   let size = 64;
   while (size < 2 * n) size *= 2;
