@@ -229,6 +229,33 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     expect(peer!.ratio as number).toBeGreaterThan(0);
   });
 
+  /**
+   * The 3D box scenes against rapier3d: both engines report the scene's quality fields from their own
+   * final poses. A pyramid of base 3 (14 boxes) standing on its exact start barely moves in 30 steps
+   * (top drop well under the 0.05 m goal in both); a few boxes dropped into the closed box never
+   * overlap by half their half extent.
+   */
+  it('box-pile-3d and pyramid-3d --vs rapier3d report overlap, topDrop, maxDrift and fallen for both engines', async () => {
+    const [pile, pyramid] = await Promise.all([
+      runCli(['--scene', 'box-pile-3d', '--count', '27', '--steps', '20', '--warmup', '0', '--vs', 'rapier3d', '--json']),
+      runCli(['--scene', 'pyramid-3d', '--count', '3', '--steps', '30', '--vs', 'rapier3d', '--json']),
+    ]);
+    expect(pile.code).toBe(0);
+    expect(pyramid.code).toBe(0);
+    for (const line of jsonLines(pile.stdout)) {
+      expect(line.scene).toBe('box-pile-3d');
+      expect(line.maxOverlapPercent as number).toBeLessThan(50);
+      expect(typeof line.overlappingPairs).toBe('number');
+    }
+    const lines = jsonLines(pyramid.stdout);
+    expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d']);
+    for (const line of lines) {
+      expect(line.topDrop as number).toBeLessThan(0.05);
+      expect(line.fallen).toBe(0);
+      expect(typeof line.maxDrift).toBe('number');
+    }
+  });
+
   it('fireworks --json reports spawn and expiry every step', async () => {
     // 1,000 live particles reach steady churn after ~5 s, as at the default count: 360 warm-up steps.
     const run = await runCli(['--scene', 'fireworks', '--count', '1000', '--steps', '30', '--warmup', '360', '--json']);
