@@ -46,6 +46,20 @@ describe('boxes on an incline (Coulomb friction)', () => {
     // below the 1.2 m of a slide.
     expect(Math.abs(along(world, box, theta).s)).toBeLessThan(0.01);
   });
+  it('a box at rest on a slope below its friction angle stays put: within 1 mm over 600 steps, awake', () => {
+    // tan 20 deg = 0.36 < mu = 0.6: static friction holds it exactly (Coulomb). Sleeping is off, so the
+    // solver must hold it every step; before the manifold rows marked their bodies as pushed, each
+    // step's free-flight correction dropped it 0.34 mm and it crept 35 mm in 600 steps.
+    const theta = (20 * Math.PI) / 180, mu = 0.6;
+    const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
+    const at = incline(world, theta, mu);
+    const box = slotOf(addBox(world, { position: at(0, 0.25), angle: theta, halfExtents: [0.25, 0.25], friction: mu }));
+    for (let i = 0; i < 10; i++) step(world); // the soft contact settles (tens of micrometres)
+    const s0 = along(world, box, theta).s;
+    for (let i = 0; i < 600; i++) step(world);
+    expect(Math.abs(along(world, box, theta).s - s0)).toBeLessThan(1e-3);
+    expect(Math.abs(world.components.Angle.value[box]! - theta)).toBeLessThan(1e-3);
+  });
   it('a box of width w and height h tips when tan theta > w / h, and stands below', () => {
     // w / h = 0.5: tips beyond 26.57 degrees; friction 1.5 keeps it from sliding first.
     const run = (deg: number): number => {
