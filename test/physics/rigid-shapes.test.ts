@@ -159,6 +159,25 @@ describe('impacts', () => {
   });
 });
 
+describe('kinematic spin', () => {
+  it('a box on top of a spinning kinematic disc is carried along at the disc\'s surface speed (v + w x r)', () => {
+    // Disc of radius 1 m spinning at w = 2 rad/s (counter-clockwise): its top moves at w R = 2 m/s to
+    // the left. Friction (mu = 1) drags the box from rest up to that speed in about w R / (mu g) = 0.2 s.
+    // Without the spin in the contact rows the disc's surface looks still and the box just sits there.
+    const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
+    const disc = addBody(world, { position: [0, 0], kinematic: true, rotates: true, angularVelocity: 2 });
+    addShape(world, disc, { type: 'circle', radius: 1, friction: 1 });
+    const box = slotOf(addBox(world, { position: [0, 1.1], halfExtents: [0.1, 0.1], friction: 1 }));
+    for (let i = 0; i < 18; i++) step(world); // 0.3 s
+    const c = world.components;
+    // Carried left near the surface speed: between 60% and 110% of w R (it has started down the side).
+    expect(c.Velocity.x[box]!).toBeLessThan(-0.6 * 2);
+    expect(c.Velocity.x[box]!).toBeGreaterThan(-1.1 * 2);
+    expect(c.Position.x[box]!).toBeLessThan(-0.2);
+    expect(world.components.Angle.value[slotOf(disc)]!).toBeCloseTo(0.6, 9); // the disc turned w t
+  });
+});
+
 describe('filtering, sensors and events', () => {
   it('category and mask bits, and groups, decide which shapes collide', () => {
     const drop = (a: object, b: object): number => {

@@ -206,6 +206,9 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const o = k * S, q = k * 6;
     const ii = invInertia[e]!;
     const dynamic = type[e] === BodyType.Dynamic;
+    // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is not
+    // integrated here (its rotation owed stays 0: the integrator already turned it, and it has no inverse inertia).
+    const spins = type[e] === BodyType.Kinematic;
     // The integrator moved x by v0 h + g h^2 / 2 (plus anything of its own, e.g. forces); keep that
     // extra as the base. v = v0 + g h here, so the base is x - v h + g h^2 / 2 for dynamic bodies.
     // A body a force acted on was not given the exact free fall (semiImplicitEuler): no gravity base,
@@ -217,11 +220,11 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
     ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     if (is2D) {
-      sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 ? wz[e]! : 0;
+      sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
       sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
     } else {
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
-      sb[o + 3] = ii > 0 ? wx[e]! : 0; sb[o + 4] = ii > 0 ? wy[e]! : 0; sb[o + 5] = ii > 0 ? wz[e]! : 0;
+      sb[o + 3] = ii > 0 || spins ? wx[e]! : 0; sb[o + 4] = ii > 0 || spins ? wy[e]! : 0; sb[o + 5] = ii > 0 || spins ? wz[e]! : 0;
       sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = held;
     }
   }
