@@ -16,13 +16,15 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  * masks belongs to) is worked out once, and a birth writes the entity index, the masks and those
  * queries directly: about 0.1 us.
  *
- * Deaths are *pending* until `settle`: the slot is freed at once (the entity no longer exists for
- * `entityExists`, handles and the API), but it stays in its queries' arrays until the end of the
- * batch. A birth that takes a pending slot of the same archetype (bitecs reuses the slot freed last
- * first) keeps its place in every query: a step with as many births as deaths moves nothing in the
- * query arrays, so they stay in slot order and the systems' loops walk memory in order (a query in
- * random slot order made every loop over 50,000 particles about five times slower). bitecs' own
- * deferred removal does the same until the next `query()` call commits it.
+ * A death is bitecs' own deferred removal: the slot is freed at once (the entity no longer exists
+ * for `entityExists`, handles and the API) and listed in its queries' pending removals, which bitecs
+ * commits at the next `query()` call (so no system ever iterates it). A birth that takes a slot still
+ * pending in a query keeps its place there, as bitecs' queryAddEntity does; bitecs hands out the slot
+ * freed last first, so a step whose births follow its deaths before any query (the spawn stage:
+ * expiries, their bursts, then the emitters' births) moves nothing in the query arrays. They stay in
+ * slot order and the systems' loops walk memory in order (a query in random slot order made every
+ * loop over 50,000 particles about five times slower); `defragment` restores the order when the
+ * births and deaths that could not be matched have stirred it.
  *
  * What a fast birth does not do: run bitecs onAdd observers. The component defaults the world's
  * observers write (create-world.ts) are written by the caller instead, and the first entity of every
@@ -81,7 +83,7 @@ export interface Archetype {
   readonly table: ArchetypeTable;
 }
 
-/** Per-world archetype bookkeeping (a cache of bitecs' structure plus the batch's pending deaths). */
+/** Per-world archetype bookkeeping: a cache of bitecs' structure, and how stirred the query lists are. */
 export interface ArchetypeTable {
   /** Every archetype met, by id. */
   readonly list: Archetype[];
@@ -101,11 +103,6 @@ export interface ArchetypeTable {
   /** Per slot: the component set left behind by the slot's last fast death, and id + 1 of its archetype. */
   staleSet: Array<Set<object> | undefined>;
   staleArchetype: Int32Array;
-  /** Per slot: id + 1 of the archetype of a pending death (0: none). */
-  pendingMark: Int32Array;
-  /** Slots of pending deaths, in death order (entries whose mark was cleared by a birth are skipped). */
-  pending: Int32Array;
-  pendingCount: number;
   /** Scratch of `defragment`: a mark a slot. */
   marks: Uint8Array;
 }
@@ -116,7 +113,7 @@ registerExternalWorldState({
   name: 'particle-archetypes',
   get: (world, create) => (create ? archetypes(world) : tables.get(world)),
   clear: (world) => { tables.delete(world); },
-  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'pendingMark', 'pending', 'pendingCount', 'marks'],
+  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks'],
 });
 
 /** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
@@ -127,7 +124,7 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
     const none = new Int32Array(0);
     t = {
       list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
-      staleArchetype: none, pendingMark: none, pending: none, pendingCount: 0, marks: new Uint8Array(0),
+      staleArchetype: none, marks: new Uint8Array(0),
     };
     tables.set(world, t);
   }
@@ -156,10 +153,9 @@ function typedMasks(world: PhysicsWorld): void {
 
 /** Allocates the per-slot arrays of `table` (once). */
 function slotArrays(table: ArchetypeTable): void {
-  if (table.pendingMark.length !== 0) return;
+  if (table.slotArchetype.length !== 0) return;
   const n = table.capacity + 1;
-  table.slotArchetype = new Int32Array(n); table.staleArchetype = new Int32Array(n);
-  table.pendingMark = new Int32Array(n); table.pending = new Int32Array(n); table.marks = new Uint8Array(n);
+  table.slotArchetype = new Int32Array(n); table.staleArchetype = new Int32Array(n); table.marks = new Uint8Array(n);
 }
 
 function matchesMasks(q: QueryData, masks: Int32Array): boolean {
@@ -211,13 +207,23 @@ function masksOf(ecs: EcsInternals, slot: number): Int32Array {
 }
 
 /**
- * Registers the component set of the live entity in `slot`, just made through bitecs' ordinary path
- * (which may have handed out a slot still pending in its queries), as the archetype under `key`:
- * the slot leaves the queries of its pending death that its new set does not match and keeps its
- * place in the others, exactly as `bornSlot` would have left it, so the query order does not depend
- * on which path made the entity.
+ * Which queries list `slot` as a pending removal: call before bitecs creates an entity there, and pass
+ * the result to `archetypeFromEntity` (a birth that finds its slot pending in every query of its
+ * archetype counts as in place, as in `bornSlot`).
  */
-export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number): Archetype {
+export function pendingQueries(world: PhysicsWorld, slot: number): Set<object> {
+  const out = new Set<object>();
+  for (const q of ecsOf(world).queries) if (q.toRemove.has(slot)) out.add(q);
+  return out;
+}
+
+/**
+ * Registers the component set of the live entity in `slot`, just made through bitecs' ordinary path
+ * (which keeps a slot's place in the queries where it was pending, as `bornSlot` does), as the
+ * archetype under `key`, and counts the birth's disorder as `bornSlot` would (`pending`: from
+ * `pendingQueries` before the entity was made), so the state does not depend on which path made it.
+ */
+export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: ReadonlySet<object>): Archetype {
   const ecs = ecsOf(world);
   slotArrays(table);
   const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
@@ -225,17 +231,17 @@ export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, 
   table.byKey.set(key, a);
   const mark = a.id + 1;
   table.slotArchetype[slot] = mark;
-  const pend = table.pendingMark[slot]!;
-  if (pend !== mark) {
-    if (pend !== 0) {
-      const old = table.list[pend - 1]!.queries;
-      for (let i = 0; i < old.length; i++) if (!matchesMasks(old[i]!, a.masks)) old[i]!.remove(slot);
-    }
-    table.order.disorder++;
-  }
-  table.pendingMark[slot] = 0;
+  let inPlace = a.queries.length > 0;
+  for (const q of a.queries) if (!pending.has(q)) inPlace = false;
+  countBirth(table, inPlace);
   if (ecs.entityComponents instanceof Map) { table.staleSet[slot] = ecs.entityComponents.get(slot); table.staleArchetype[slot] = mark; }
   return a;
+}
+
+function countBirth(table: ArchetypeTable, inPlace: boolean): void {
+  const o = table.order;
+  if (!inPlace) o.disorder++;
+  else if (o.disorder > 0) o.disorder--;
 }
 
 function sameMasks(a: Int32Array, b: Int32Array): boolean {
@@ -245,8 +251,7 @@ function sameMasks(a: Int32Array, b: Int32Array): boolean {
 }
 
 /**
- * Before a batch of births into archetype `a`: its query list follows new queries, and no bitecs
- * removal is pending (a slot bitecs freed but still lists in a query must not be reused under it).
+ * Before a batch of births into archetype `a`: its query list follows new queries.
  * @returns false if a store of the archetype has no arrays (never allocated, or put back so by a
  *   restore): the next particle must then be made through bitecs, whose observers allocate it.
  */
@@ -257,7 +262,6 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
     if (probe[0][probe[1]]!.length <= world.capacity) return false;
   }
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
-  if (ecs.dirtyQueries.size !== 0) commitRemovals(world as never);
   return true;
 }
 
@@ -268,7 +272,7 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
  */
 export function bornSlot(world: PhysicsWorld, a: Archetype): number {
   const table = a.table, ecs = ecsOf(world);
-  if (table.pendingMark.length === 0) slotArrays(table);
+  if (table.slotArchetype.length === 0) slotArrays(table);
   const ix = ecs.entityIndex;
   let e: number;
   if (ix.aliveCount < ix.dense.length) {
@@ -299,31 +303,35 @@ export function bornSlot(world: PhysicsWorld, a: Archetype): number {
     }
   }
   table.slotArchetype[e] = mark;
-  // Queries: a pending death of the same archetype in this slot keeps its place in every query.
-  const pend = table.pendingMark[e]!;
-  if (pend !== mark) {
-    // Another archetype's pending death: leave the queries this one does not match, keep the others' places.
-    if (pend !== 0) {
-      const old = table.list[pend - 1]!.queries;
-      for (let i = 0; i < old.length; i++) if (!matchesMasks(old[i]!, masks)) old[i]!.remove(e);
+  // Queries: where the slot is still pending removal it keeps its place (bitecs' queryAddEntity).
+  // The pending list is read directly (one look-up instead of has() and remove()'s own has()).
+  const qs = a.queries;
+  let inPlace = qs.length > 0;
+  for (let i = 0; i < qs.length; i++) {
+    const q = qs[i]!, r = q.toRemove, rd = r.dense;
+    const at = rd.length === 0 ? -1 : r.sparse[e]!;
+    if (at !== undefined && at >= 0 && at < rd.length && rd[at] === e) {
+      const moved = rd.pop()!;
+      if (moved !== e) { rd[at] = moved; r.sparse[moved] = at; }
+    } else {
+      q.add(e);
+      inPlace = false;
     }
-    const qs = a.queries;
-    for (let i = 0; i < qs.length; i++) qs[i]!.add(e);
-    table.order.disorder++;
   }
-  table.pendingMark[e] = 0;
+  countBirth(table, inPlace);
   return e;
 }
 
 /**
- * Removes the live entity in `slot` (any component set; its archetype is registered on first use):
- * frees the slot at once and leaves it pending in its queries until `settle`. The caller has run the
- * removal hooks. @returns false (nothing done) for an entity with bitecs relations: remove it with
- * bitecs' removeEntity.
+ * Removes the live entity in `slot` (any component set; its archetype is registered on first use)
+ * as bitecs' removeEntity would, without its per-call work: frees the slot, clears its masks, and lists
+ * it as a pending removal in the queries it belongs to (committed by the next `query()`). The caller
+ * has run the removal hooks. @returns false (nothing done) for an entity with bitecs relations: remove
+ * it with bitecs' removeEntity.
  */
 export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, e: number): boolean {
   if (ecs.entitiesWithRelations.size !== 0 && ecs.entitiesWithRelations.has(e)) return false;
-  if (table.pendingMark.length === 0) slotArrays(table);
+  if (table.slotArchetype.length === 0) slotArrays(table);
   const em = ecs.entityMasks;
   let mark = table.slotArchetype[e]!;
   let a = mark > 0 ? table.list[mark - 1] : undefined;
@@ -332,11 +340,17 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
     a = archetypeOfMasks(world, ecs, table, masksOf(ecs, e));
     mark = a.id + 1;
   }
-  if (table.pendingCount === table.pending.length) settle(table);
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   if (ecs.entityComponents instanceof Map) {
     table.staleSet[e] = ecs.entityComponents.get(e);
     table.staleArchetype[e] = mark;
+  }
+  // A live entity with exactly the archetype's components is in each of its queries and pending in none
+  // (bitecs' queryAddEntity clears a pending removal), so it is appended to each pending list directly.
+  const qs = a.queries, dirty = ecs.dirtyQueries;
+  for (let i = 0; i < qs.length; i++) {
+    const q = qs[i]!, r = q.toRemove;
+    if (r.dense.length === 0) { r.add(e); dirty.add(q); } else r.sparse[e] = r.dense.push(e) - 1;
   }
   const ix = ecs.entityIndex;
   const at = ix.sparse[e]!, last = ix.aliveCount - 1, lastId = ix.dense[last]!;
@@ -344,29 +358,13 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
   ix.sparse[e] = last; ix.dense[last] = e;
   ix.aliveCount = last;
   for (let g = 0; g < em.length; g++) em[g]![e] = 0;
-  table.pendingMark[e] = mark;
-  table.pending[table.pendingCount++] = e;
+  table.order.disorder++;
   return true;
 }
 
 function hasMasks(em: number[][], e: number, masks: Int32Array): boolean {
   for (let g = 0; g < em.length; g++) if ((em[g]![e] ?? 0) !== (g < masks.length ? masks[g]! : 0)) return false;
   return true;
-}
-
-/** Ends a batch: takes every pending death that no birth reused out of its queries. */
-export function settle(table: ArchetypeTable): void {
-  const list = table.list, mark = table.pendingMark, pending = table.pending;
-  for (let k = 0; k < table.pendingCount; k++) {
-    const e = pending[k]!;
-    const m = mark[e]!;
-    if (m === 0) continue;
-    mark[e] = 0;
-    const qs = list[m - 1]!.queries;
-    for (let i = 0; i < qs.length; i++) qs[i]!.remove(e);
-    table.order.disorder++;
-  }
-  table.pendingCount = 0;
 }
 
 /**
@@ -376,7 +374,7 @@ export function settle(table: ArchetypeTable): void {
  * faster than in the random order churn leaves. A list is rewritten in place in O(capacity) (a mark
  * a member, then one pass over the slots), or by sorting a copy when it is small. The order of a
  * query is part of the world's state (snapshots keep it), and this runs at a fixed point of the step,
- * so it is as deterministic as the rest. Call after `settle`.
+ * so it is as deterministic as the rest.
  */
 export function defragment(world: PhysicsWorld, table: ArchetypeTable): void {
   const alive = world.entityIndex.aliveCount;
@@ -384,6 +382,8 @@ export function defragment(world: PhysicsWorld, table: ArchetypeTable): void {
   if (order.disorder < 1024 || order.disorder * 8 < alive) return;
   order.disorder = 0;
   slotArrays(table);
+  // Pending removals first (what the next query() would do), so the lists sorted are the final ones.
+  commitRemovals(world as never);
   const ecs = ecsOf(world);
   const maxId = ecs.entityIndex.maxId;
   const seen = new Set<QueryData>();
@@ -414,8 +414,8 @@ function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
 }
 
 /**
- * Creates `count` entities of archetype `a` (call `prepareArchetype` first; the world must have room,
- * and no death may be pending: call outside churn batches), writing their slots into `out` in the
+ * Creates `count` entities of archetype `a` (call `prepareArchetype` first; the world must have room),
+ * writing their slots into `out` in the
  * order bitecs would hand them out. `bornSlot` without the churn bookkeeping, for bulk creation, one
  * array at a time (entity index, each mask generation, each query). Writes no component data.
  */
@@ -445,11 +445,21 @@ export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out:
   const qs = a.queries;
   for (let i = 0; i < qs.length; i++) {
     const q = qs[i]!;
-    // The set's own add for the first (it may allocate its sparse array), then its arrays directly.
-    q.add(out[0]!);
-    const dense = q.dense, sparse = q.sparse;
-    for (let k = 1; k < count; k++) {
+    // A slot still pending removal keeps its place (bitecs' queryAddEntity); the set's own add for the
+    // first new member (it may allocate its sparse array), then its arrays directly.
+    const r = q.toRemove;
+    let k = 0;
+    for (; k < count; k++) {
       const e = out[k]!;
+      if (r.has(e)) { r.remove(e); continue; }
+      q.add(e);
+      break;
+    }
+    const dense = q.dense, sparse = q.sparse;
+    const pending = r.dense.length > 0;
+    for (k++; k < count; k++) {
+      const e = out[k]!;
+      if (pending && r.has(e)) { r.remove(e); continue; }
       if (dense[sparse[e]!] !== e) sparse[e] = dense.push(e) - 1;
     }
   }

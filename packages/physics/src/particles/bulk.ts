@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import { addParticle } from '../bodies.js';
 import { currentHandle, slotOf } from '../handles.js';
 import { assertInteger, assertOptions, describe } from '../validate.js';
-import { archetypeFromEntity, archetypes, bornSlots, prepareArchetype, settle } from './archetype.js';
+import { archetypeFromEntity, archetypes, bornSlots, pendingQueries, prepareArchetype } from './archetype.js';
 
 /** Key of the bare particle (Position and Velocity) in the world's archetype table; emitter kinds use 0..31. */
 const BARE_PARTICLE = 64;
@@ -44,8 +44,6 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
   const handles = new Float64Array(count);
   if (count === 0) return handles;
   const table = archetypes(world);
-  // Deaths pend only inside a spawn batch; settle in case this is called from a death hook.
-  settle(table);
   const c = world.components;
   const at = (a: ArrayLike<number> | undefined, i: number, j: number): number => (a && j < d ? a[i * d + j]! : 0);
   const slots = new Int32Array(count);
@@ -54,11 +52,12 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
     let a = table.byKey.get(BARE_PARTICLE);
     if (a === undefined || !prepareArchetype(world, a)) {
       // The first of its kind (or a store without arrays): through bitecs, whose observers set it up.
+      const pending = pendingQueries(world, nextSlot(world));
       const h = addParticle(world, {
         position: d === 3 ? [at(p, done, 0), at(p, done, 1), at(p, done, 2)] : [at(p, done, 0), at(p, done, 1)],
         velocity: d === 3 ? [at(v, done, 0), at(v, done, 1), at(v, done, 2)] : [at(v, done, 0), at(v, done, 1)],
       });
-      a = archetypeFromEntity(world, table, BARE_PARTICLE, slotOf(h));
+      a = archetypeFromEntity(world, table, BARE_PARTICLE, slotOf(h), pending);
       handles[done] = h;
       done++;
       continue;
@@ -105,4 +104,10 @@ function checkArray(where: string, name: string, a: ArrayLike<number> | undefine
     const x = a[i];
     if (typeof x !== 'number' || !Number.isFinite(x)) throw new RangeError(`${where}: ${name}[${i}] must be a finite number, got ${describe(x)}`);
   }
+}
+
+/** The slot bitecs hands out next (the slot freed last, else a new one). */
+export function nextSlot(world: PhysicsWorld): number {
+  const ix = world.entityIndex;
+  return ix.aliveCount < ix.dense.length ? ix.dense[ix.aliveCount]! : ix.maxId + 1;
 }

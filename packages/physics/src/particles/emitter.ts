@@ -1,9 +1,10 @@
-import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
+import { addComponent, entityExists, hasComponent, noCommit, query as bitecsQuery, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import { DEFAULT_MATERIAL } from '../components.js';
+import { nextSlot } from './bulk.js';
 import {
-  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, prepareArchetype, settle, type Archetype,
+  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, pendingQueries, prepareArchetype, type Archetype,
 } from './archetype.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
@@ -225,12 +226,9 @@ function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
 
 /**
  * Removes particle `e` now: the world's removal hooks (springs, joints, sleeping neighbours), then the
- * churn path's removal (`killSlot`, pending until `settle`) or bitecs' own for a particle whose
- * components were changed to a set no emitter gives.
+ * churn path's removal (`killSlot`), or bitecs' own for a particle with relations.
  */
 function removeParticle(world: PhysicsWorld, e: number): void {
-  // Hooks may query: they must not meet a pending death in a query's list.
-  settle(archetypes(world));
   for (const hook of world.removeHooks) hook(world, e);
   if (!entityExists(world, e)) return;
   if (!killSlot(world, ecsOf(world), archetypes(world), e)) removeEntity(world, e);
@@ -376,8 +374,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
  * Returns its slot; the caller writes position, velocity, lifetime and look.
  */
 function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
-  // bitecs may hand out a slot still pending in its queries: archetypeFromEntity takes it out of
-  // the ones its new components do not match, as a fast birth would.
+  const pending = pendingQueries(world, nextSlot(world));
   const c = world.components;
   const E = c.Emitter;
   const e = createSlot(world, 'emitter');
@@ -396,7 +393,7 @@ function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
     if (gs !== 1) { addComponent(world, e, c.GravityScale); c.GravityScale.value[e] = gs; }
     if (r > 0) { addComponent(world, e, c.Ball); c.Ball.radius[e] = r; }
   }
-  archetypeFromEntity(world, archetypes(world), particleKind(world, em), e);
+  archetypeFromEntity(world, archetypes(world), particleKind(world, em), e, pending);
   return e;
 }
 
@@ -511,22 +508,17 @@ export function lifetimeSystem(world: PhysicsWorld): void {
   // Then the removals, and the bursts' births into the freed slots.
   const ecs = ecsOf(world), table = archetypes(world);
   const sure = hooks.length === 0 && ix.aliveCount === alive0;
-  try {
-    for (let k = 0; k < n; k++) {
-      const e = expired[k]!;
-      if (!sure && (stamps[e] !== expiredStamps[k] || !entityExists(world, e))) continue;
-      if (!killSlot(world, ecs, table, e)) removeEntity(world, e);
-      b.expiredTotal++;
-    }
-    const B = b.bursts;
-    for (let k = 0; k < b.burstCount; k++) {
-      const o = k * 9;
-      spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
-    }
-  } finally {
-    settle(table);
+  for (let k = 0; k < n; k++) {
+    const e = expired[k]!;
+    if (!sure && (stamps[e] !== expiredStamps[k] || !entityExists(world, e))) continue;
+    if (!killSlot(world, ecs, table, e)) removeEntity(world, e);
+    b.expiredTotal++;
   }
-  defragment(world, table);
+  const B = b.bursts;
+  for (let k = 0; k < b.burstCount; k++) {
+    const o = k * 9;
+    spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
+  }
 }
 
 /**
@@ -540,7 +532,10 @@ export function lifetimeSystem(world: PhysicsWorld): void {
  */
 export function emitterSystem(world: PhysicsWorld): void {
   const c = world.components;
-  const ems = query(world, [c.Emitter, c.Position]);
+  // Without committing pending removals (bitecs' noCommit): the particles that expired this step keep
+  // their places in the query lists for the births below. An emitter removed but not yet committed
+  // is skipped.
+  const ems = bitecsQuery(world as never, [c.Emitter, c.Position], noCommit);
   if (ems.length === 0) return;
   const b = book(world);
   const E = c.Emitter;
@@ -548,6 +543,7 @@ export function emitterSystem(world: PhysicsWorld): void {
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
   for (let i = 0; i < ems.length; i++) {
     const em = ems[i]!;
+    if (!entityExists(world, em) || !hasComponent(world, em, E)) continue;
     let n = E.pendingBurst[em]!;
     E.pendingBurst[em] = 0;
     if (E.enabled[em] === 1 && E.rate[em]! > 0) {
@@ -563,12 +559,9 @@ export function emitterSystem(world: PhysicsWorld): void {
     }
     if (n === 0) continue;
     const moving = hasComponent(world, em, c.Velocity);
-    try {
-      spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
-    } finally {
-      settle(archetypes(world));
-    }
+    spawnFrom(world, b, em, n, px[em]!, py[em]!, pz[em]!, moving ? vx[em]! : 0, moving ? vy[em]! : 0, moving ? vz[em]! : 0, 0);
   }
+  // Once a step, after the births that could take the expired particles' places.
   defragment(world, archetypes(world));
 }
 
@@ -771,14 +764,10 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
   const k = world.components.Emitter.inherit[slot]!;
   const before = world.components.Emitter.spawned[slot]!;
   const b = book(world);
-  try {
-    let a = archetypeFor(world, slot);
-    for (let i = 0; i < count; i++) {
-      spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0, a);
-      if (a === undefined) a = archetypeFor(world, slot);
-    }
-  } finally {
-    settle(archetypes(world));
+  let a = archetypeFor(world, slot);
+  for (let i = 0; i < count; i++) {
+    spawnOne(world, b, slot, x, y, z, velocity ? k * velocity[0]! : 0, velocity ? k * velocity[1]! : 0, velocity && d === 3 ? k * velocity[2]! : 0, 0, a);
+    if (a === undefined) a = archetypeFor(world, slot);
   }
   return world.components.Emitter.spawned[slot]! - before;
 }
