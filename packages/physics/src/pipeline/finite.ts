@@ -137,14 +137,18 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
     let ents = query(world, [F]);
     if (ents.length > 0) {
       const dense = ents.length === maxId;
-      if ((is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z)) !== 0) {
+      const par = world.threadPool === null ? null
+        : runParallel(world, 'forces stage finiteness check', KERNEL.finiteProbe, is2D ? [F.x, F.y] : [F.x, F.y, F.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+      if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
         name(world, stage, ents, is2D ? [['Force.x', F.x], ['Force.y', F.y]] : [['Force.x', F.x], ['Force.y', F.y], ['Force.z', F.z]]);
       }
     }
     ents = query(world, [T]);
     if (ents.length > 0) {
       const dense = ents.length === maxId;
-      if ((is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z)) !== 0) {
+      const par = world.threadPool === null ? null
+        : runParallel(world, 'forces stage finiteness check', KERNEL.finiteProbe, is2D ? [T.z] : [T.x, T.y, T.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+      if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
         name(world, stage, ents, is2D ? [['Torque.z', T.z]] : [['Torque.x', T.x], ['Torque.y', T.y], ['Torque.z', T.z]]);
       }
     }
