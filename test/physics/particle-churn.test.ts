@@ -1,7 +1,7 @@
 import { describe, expect, test } from 'vitest';
 import {
   addElectricField, addEmitter, addParticle, addParticles, createPhysicsWorld, emitNow, handleOf, hasComponent, isAlive,
-  onParticleDeath, particlesExpired, restore, SCENES, setCharge, setVelocity, snapshot, stateHash, step, stepMany,
+  onParticleBirth, onParticleDeath, particlesExpired, restore, SCENES, setCharge, setVelocity, snapshot, stateHash, step, stepMany,
   type PhysicsWorld,
 } from '@bitphysics/physics';
 import { $internal, query } from 'bitecs';
@@ -129,6 +129,14 @@ describe('particle churn', () => {
     emitNow(world, em, 10); // new particles in the same slots
     step(world);
     for (const e of particles(world)) expect(world.components.Velocity.x[e]).toBe(0);
+    expectQueriesConsistent(world);
+    // A birth hook gives every new particle the charge: the law sees each of them from its first step.
+    stepMany(world, 2);
+    onParticleBirth(world, (w, e) => setCharge(w, handleOf(w, e), 2));
+    emitNow(world, em, 10);
+    step(world);
+    expect(particles(world).length).toBe(10);
+    for (const e of particles(world)) expect(world.components.Velocity.x[e]).toBeCloseTo(0.1, 14);
     expectQueriesConsistent(world);
   });
 

@@ -96,10 +96,10 @@ export {
 } from './forces/api.js';
 export { vortexSystem } from './forces/vortex.js';
 export {
-  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, particlesExpired, particleLook, lifetimeSystem, emitterSystem,
+  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, onParticleBirth, particlesExpired, particleLook, lifetimeSystem, emitterSystem,
   EmitterShape, CapacityPolicy, MAX_EMITTER_RATE, maxSpawnsPerStep,
 } from './particles/emitter.js';
-export type { EmitterOptions, EmittedParticleOptions, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
+export type { EmitterOptions, EmittedParticleOptions, ParticleBirthHook, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
 export { addParticles } from './particles/bulk.js';
 export type { BulkParticleOptions } from './particles/bulk.js';
 export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';

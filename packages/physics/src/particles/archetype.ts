@@ -31,7 +31,7 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  * archetype is made through bitecs' ordinary path (observers, lazily allocated stores, dependent
  * components), from which the archetype is read; so is any later one while a store of the archetype
  * has no arrays (a restore can put back a store's unallocated state). Code that needs to act on
- * every particle's birth uses the emitter API rather than a bitecs observer.
+ * every particle's birth uses `onParticleBirth` (emitter.ts) rather than a bitecs observer.
  *
  * Component sets: where bitecs keeps a Set of components an entity (`entityComponents` a Map), a
  * particle's set is kept when it dies and given back to the next particle of the same archetype in
@@ -273,6 +273,8 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
 export function bornSlot(world: PhysicsWorld, a: Archetype): number {
   const table = a.table, ecs = ecsOf(world);
   if (table.slotArchetype.length === 0) slotArrays(table);
+  // A hook between births may have made a query.
+  if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   const ix = ecs.entityIndex;
   let e: number;
   if (ix.aliveCount < ix.dense.length) {

@@ -121,6 +121,15 @@ export interface EmittedParticleOptions {
 export type ParticleDeathHook = (world: PhysicsWorld, eid: number) => void;
 
 /**
+ * A hook run for every particle an emitter spawns, once it is complete (position, velocity, lifetime,
+ * look and the emitter's force components written). `eid` is the particle's slot (as `query()` gives
+ * it; `handleOf(world, eid)` for API calls). The place to give every particle a component of your
+ * own (`addComponent(world, eid, world.components.Charge)` and its value): emitters make particles
+ * without bitecs' onAdd observers.
+ */
+export type ParticleBirthHook = (world: PhysicsWorld, eid: number) => void;
+
+/**
  * Largest emitter rate the API accepts, particles/s: 1e9. With the largest time step (1e6 s) rate x dt
  * stays below 2^53, so the whole particles and the carried fraction of each step are exact.
  */
@@ -138,6 +147,8 @@ interface ParticleBook {
   /** FIFO of spawned particles (eid and spawn stamp), oldest at head; stale entries skipped. */
   ids: Int32Array; stamps: Uint32Array; head: number; count: number;
   hooks: ParticleDeathHook[];
+  /** Hooks run for every particle born (`onParticleBirth`). */
+  birthHooks: ParticleBirthHook[];
   /**
    * Scratch: expired particles this step and their spawn stamps, and bursts to spawn (x, y, z, vx, vy,
    * vz, emitter, count, generation).
@@ -151,7 +162,7 @@ interface ParticleBook {
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
 registerExternalWorldState({
-  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks'],
+  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks', 'birthHooks'],
 });
 
 /** The particle book of `world`, made on first use. */
@@ -161,7 +172,7 @@ export function book(world: PhysicsWorld): ParticleBook {
     const n = world.capacity + 1;
     b = {
       // Twice the capacity: the FIFO holds the gone particles too until they reach its head or it is compacted.
-      ids: new Int32Array(2 * n), stamps: new Uint32Array(2 * n), head: 0, count: 0, hooks: [],
+      ids: new Int32Array(2 * n), stamps: new Uint32Array(2 * n), head: 0, count: 0, hooks: [], birthHooks: [],
       expired: new Int32Array(n), expiredStamps: new Uint32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
       budget: maxSpawnsPerStep(world), budgetStep: world.steps, expiredTotal: 0,
     };
@@ -365,6 +376,8 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
   P.alphaStart[e] = E.alphaStart[em]!; P.alphaEnd[e] = E.alphaEnd[em]!;
   pushParticle(world, b, e);
   E.spawned[em] = E.spawned[em]! + 1;
+  const hooks = b.birthHooks;
+  for (let h = 0; h < hooks.length; h++) hooks[h]!(world, e);
   return e;
 }
 
@@ -801,6 +814,17 @@ export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): (
   const b = book(world);
   b.hooks.push(hook);
   return () => { const i = b.hooks.indexOf(hook); if (i >= 0) b.hooks.splice(i, 1); };
+}
+
+/**
+ * Registers a hook run for every particle an emitter spawns (bursts, rates, `emitNow`), right after it
+ * is made. Returns a function that unregisters it. @throws TypeError if not a function.
+ */
+export function onParticleBirth(world: PhysicsWorld, hook: ParticleBirthHook): () => void {
+  if (typeof hook !== 'function') throw new TypeError(`onParticleBirth: hook must be a function, got ${describe(hook)}`);
+  const b = book(world);
+  b.birthHooks.push(hook);
+  return () => { const i = b.birthHooks.indexOf(hook); if (i >= 0) b.birthHooks.splice(i, 1); };
 }
 
 /**
