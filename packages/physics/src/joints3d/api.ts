@@ -242,11 +242,13 @@ export interface SliderJoint3DOptions extends Joint3DBaseOptions {
   anchor?: ArrayLike<number>;
   /** The slide axis (world, when made; it turns with A); need not be unit length. */
   axis: ArrayLike<number>;
-  /** Translation limits along the axis, m, from the pose when made: lower <= 0 <= upper. Default none. */
+  /** Lower translation limit along the axis, m, from the pose when made, <= 0 (given with `upper`). Default none. */
   lower?: number;
+  /** Upper translation limit along the axis, m, from the pose when made, >= 0 (given with `lower`). Default none. */
   upper?: number;
-  /** Motor: target relative speed along the axis, m/s, and its largest force, N (>= 0). Default off. */
+  /** Motor: target speed of B relative to A along the axis, m/s (given with `maxMotorForce`). Default off. */
   motorSpeed?: number;
+  /** Motor: its largest force, N, >= 0. Default off. */
   maxMotorForce?: number;
 }
 

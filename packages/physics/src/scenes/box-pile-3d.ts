@@ -17,6 +17,7 @@ export interface BoxPile3DOptions {
 
 /** The resolved layout of `box-pile-3d`, for peer engines (SI units). */
 export interface BoxPile3DLayout {
+  /** Number of boxes. */
   count: number;
   /** Box centres, m: x0, y0, z0, x1, ... (boxes start axis-aligned, at rest). */
   positions: Float64Array;
@@ -24,11 +25,15 @@ export interface BoxPile3DLayout {
   half: number;
   /** Mass of a box, kg (density 1 kg/m^3). */
   mass: number;
+  /** Restitution of boxes and walls, in [0, 1]. */
   restitution: number;
+  /** Friction coefficient of boxes and walls (>= 0). */
   friction: number;
-  /** Inner corners of the closed box, m. */
+  /** Inner corner of the closed box with the smallest coordinates, m (the origin). */
   min: [number, number, number];
+  /** Inner corner of the closed box with the largest coordinates, m. */
   max: [number, number, number];
+  /** Gravity, m/s^2. */
   gravity: [number, number, number];
 }
 
@@ -68,6 +73,7 @@ export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout
 export interface BoxPile3DHandles {
   /** The boxes' body slots, in layout order. */
   boxes: Uint32Array;
+  /** The layout built. */
   layout: BoxPile3DLayout;
 }
 

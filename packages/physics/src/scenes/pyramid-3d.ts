@@ -24,10 +24,13 @@ export interface Pyramid3DLayout {
   half: number;
   /** Distance between neighbouring box centres in a layer, m. */
   pitch: number;
+  /** Friction coefficient of boxes and ground (>= 0). */
   friction: number;
+  /** Restitution of boxes and ground, in [0, 1]. */
   restitution: number;
   /** Mass of a box, kg (density 1 kg/m^3). */
   mass: number;
+  /** Gravity, m/s^2. */
   gravity: [number, number, number];
   /** Box centres (x0, y0, z0, ...), bottom layer first, row by row; layers rest exactly on each other. */
   positions: Float64Array;
@@ -66,6 +69,7 @@ export interface Pyramid3DHandles {
   boxes: Uint32Array;
   /** The ground plane's slot. */
   ground: number;
+  /** The layout built. */
   layout: Pyramid3DLayout;
 }
 
