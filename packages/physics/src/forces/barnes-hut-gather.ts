@@ -175,3 +175,35 @@ export function leafMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
   }
   return ids === null ? 0 : 0;
 }
+
+/** Bits a pass of the key sort takes (barnes-hut.ts RADIX_BITS), and its digit count. */
+export const SORT_RADIX_BITS = 11, SORT_RADIX = 1 << SORT_RADIX_BITS;
+
+/**
+ * One pass of the parallel key sort, first half: the range's histogram of the digit at `shift`.
+ * A: key (Uint32), hist (Int32, SORT_RADIX counts a range, the range's at `part`). P: 0 shift.
+ * Range over the keys. Returns 0.
+ */
+export function radixHistogram(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
+  const key = A[0] as Uint32Array, hist = A[1] as Int32Array;
+  const shift = P[0]!, base = part * 2048;
+  hist.fill(0, base, base + 2048);
+  for (let i = lo; i < hi; i++) hist[base + ((key[i]! >>> shift) & 2047)]!++;
+  return ids === null ? 0 : 0;
+}
+
+/**
+ * Second half: the range's keys and indices to their places, in order (so the sort stays stable).
+ * A: key, idx (in), key2, idx2 (out), offset (Int32, SORT_RADIX first places a range, the range's at
+ * `part`, advanced as it goes). P: 0 shift. The ranges must be those of radixHistogram. Returns 0.
+ */
+export function radixScatter(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
+  const key = A[0] as Uint32Array, idx = A[1] as Int32Array, key2 = A[2] as Uint32Array, idx2 = A[3] as Int32Array;
+  const offset = A[4] as Int32Array;
+  const shift = P[0]!, base = part * 2048;
+  for (let i = lo; i < hi; i++) {
+    const k = key[i]!, d = offset[base + ((k >>> shift) & 2047)]!++;
+    key2[d] = k; idx2[d] = idx[i]!;
+  }
+  return ids === null ? 0 : 0;
+}

@@ -3,7 +3,7 @@ import { KERNEL, KERNELS } from '../threads/kernels.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
-import { BOX_STRIDE, leafMoments, mortonKeys, treeForces, treeGather, treeOrder } from './barnes-hut-gather.js';
+import { BOX_STRIDE, leafMoments, mortonKeys, SORT_RADIX, SORT_RADIX_BITS, treeForces, treeGather, treeOrder } from './barnes-hut-gather.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 import { nowMs } from '../threads/adaptive.js';
 
@@ -138,6 +138,8 @@ export interface GravityTree {
   shared: boolean;
   /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
   cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array; momentParams: Float64Array;
+  /** The parallel key sort's histograms and first places (SORT_RADIX a range), its parameter, and the start of a one-thread sort an adaptive pool times (-1: none). */
+  sortHist: Int32Array; sortOffset: Int32Array; sortParams: Float64Array; sortTiming: number;
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
   /** Morton keys and input indices in sorted order, and the radix sort's second buffers and histogram. */
@@ -170,6 +172,7 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     start: I32(nodes), end: I32(nodes), skip: I32(nodes),
     scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
     cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8), keyParams: new Float64Array(6), momentParams: new Float64Array(2),
+    sortHist: new Int32Array(0), sortOffset: new Int32Array(0), sortParams: new Float64Array(1), sortTiming: -1,
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
     hist: new Int32Array(RADIX),
@@ -303,10 +306,13 @@ function buildTreeWith(
     mortonKeys(keyArrays, KP, null, 0, n);
   }
   let key = t.key, idx = t.idx, key2 = t.key2, idx2 = t.idx2;
-  // LSD radix sort of (key, index), stable.
+  // LSD radix sort of (key, index), stable: on the threads (each range's histogram, then each range's
+  // keys to their places in order, so the order is the one-thread order), or here.
   const hist = t.hist;
   const keyBits = is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2;
-  for (let shift = 0; shift < keyBits; shift += RADIX_BITS) {
+  const sorted = sortKeysParallel(t, n, keyBits, pool);
+  if (sorted) { key = t.key; idx = t.idx; key2 = t.key2; idx2 = t.idx2; }
+  for (let shift = 0; !sorted && shift < keyBits; shift += RADIX_BITS) {
     hist.fill(0);
     for (let i = 0; i < n; i++) hist[(key[i]! >>> shift) & (RADIX - 1)]!++;
     if (hist[(key[0]! >>> shift) & (RADIX - 1)] === n) continue;
@@ -320,6 +326,11 @@ function buildTreeWith(
     const ti = idx; idx = idx2; idx2 = ti;
   }
   t.key = key; t.idx = idx; t.key2 = key2; t.idx2 = idx2;
+  if (t.sortTiming >= 0) {
+    // The adaptive pool chose this thread for the sort: record its time (see sortKeysParallel).
+    pool!.chooser.record('barnes-hut key sort', false, nowMs() - t.sortTiming, n);
+    t.sortTiming = -1;
+  }
   // Into tree order (on the threads when the arrays are shared and the bodies many).
   const orderArrays = [x, y, z, m, idx, t.x, t.y, t.z, t.m, t.perm] as KernelArray[];
   const KM = t.momentParams;
@@ -336,6 +347,41 @@ function buildTreeWith(
     leafMoments(leafArrays, KM, null, 0, t.nodeCount);
   }
   computeMoments(t);
+}
+
+/**
+ * The key sort of buildTreeWith on `pool`'s threads (t.key, t.idx sorted in place of the one-thread
+ * sort, to the same order), when the arrays are shared and the bodies many enough; returns false
+ * (nothing done) otherwise. An adaptive pool times it both ways like any loop (threads/adaptive.ts).
+ */
+function sortKeysParallel(t: GravityTree, n: number, keyBits: number, pool: ThreadPool | null): boolean {
+  if (pool === null || !t.shared || pool.threads > MAX_PARTS || n < MIN_PARALLEL_PER_THREAD * pool.threads || !pool.usable()) return false;
+  const site = 'barnes-hut key sort';
+  if (pool.adaptive && !pool.chooser.choose(site)) {
+    // Timed on this thread by the caller's loop: record it as one way of this site.
+    t.sortTiming = nowMs();
+    return false;
+  }
+  const t0 = nowMs();
+  const T = pool.threads, system = 'mutualGravitySystem (Barnes-Hut key sort)';
+  if (t.sortHist.length < T * SORT_RADIX) { t.sortHist = i32(t, T * SORT_RADIX); t.sortOffset = i32(t, T * SORT_RADIX); }
+  const hist = t.sortHist, offset = t.sortOffset, P = t.sortParams;
+  for (let shift = 0; shift < keyBits; shift += SORT_RADIX_BITS) {
+    P[0] = shift;
+    pool.run(system, KERNEL.radixHistogram, [t.key, hist], P, n, null);
+    // Skip a pass whose digit is the same for every key (it would leave the order as it is).
+    const d0 = (t.key[0]! >>> shift) & (SORT_RADIX - 1);
+    let same = 0;
+    for (let p = 0; p < T; p++) same += hist[p * SORT_RADIX + d0]!;
+    if (same === n) continue;
+    let acc = 0;
+    for (let r = 0; r < SORT_RADIX; r++) for (let p = 0; p < T; p++) { const c = hist[p * SORT_RADIX + r]!; offset[p * SORT_RADIX + r] = acc; acc += c; }
+    pool.run(system, KERNEL.radixScatter, [t.key, t.idx, t.key2, t.idx2, offset], P, n, null);
+    const tk = t.key; t.key = t.key2; t.key2 = tk;
+    const ti = t.idx; t.idx = t.idx2; t.idx2 = ti;
+  }
+  if (pool.adaptive) pool.chooser.record(site, true, nowMs() - t0, n);
+  return true;
 }
 
 /** Fewest tree nodes a thread for the leaves' moments to be computed in parallel. */

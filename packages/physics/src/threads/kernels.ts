@@ -14,7 +14,7 @@
 
 import type { Kernel, KernelArray } from './kernel-types.js';
 import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
-import { leafMoments, mortonKeys, treeForces, treeGather, treeOrder } from '../forces/barnes-hut-gather.js';
+import { leafMoments, mortonKeys, radixHistogram, radixScatter, treeForces, treeGather, treeOrder } from '../forces/barnes-hut-gather.js';
 import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 
@@ -234,7 +234,7 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
   barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeys: 11, treeForces: 12,
-  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, treeOrder: 17, leafMoments: 18,
+  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, treeOrder: 17, leafMoments: 18, radixHistogram: 19, radixScatter: 20,
 });
 
 /**
@@ -257,5 +257,5 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
-  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, treeOrder, leafMoments,
+  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, treeOrder, leafMoments, radixHistogram, radixScatter,
 ]);
