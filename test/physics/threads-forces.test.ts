@@ -115,7 +115,7 @@ test('3D mutual gravity by Barnes-Hut on 2 threads: identical state; total momen
 }, 60_000);
 
 test('linear and quadratic drag and angular damping on an adaptive 2-thread pool: the one-thread state; linear drag decays as (1 - k h / m)^n', () => {
-  // The adaptive choice runs each loop on the threads at its first two calls and on one thread at
+  // The adaptive choice runs each loop on the threads at its first three calls and on one thread at
   // the next two (threads/adaptive.ts): five steps take every loop both ways.
   const n = 2 * MIN_PARALLEL_PER_THREAD + 33;
   const h = 1 / 60, steps = 5;
@@ -181,10 +181,10 @@ test('the adaptive choice: threads first, then one thread, then the faster by it
     ran.push(parallel);
     c.record(site, parallel, parallel ? 2 : 1, 1000);
   }
-  expect(ran.slice(0, 4)).toEqual([true, true, false, false]);
+  expect(ran.slice(0, 5)).toEqual([true, true, true, false, false]);
   expect(c.preference(site)).toBe(false);
-  // After the first four calls only the probes (calls 16, 32, 48) take the threads.
-  expect(ran.map((p, i) => (p && i >= 4 ? i : -1)).filter((i) => i >= 0)).toEqual([16, 32, 48]);
+  // After the first five calls only the probes (calls 16, 32, 48) take the threads.
+  expect(ran.map((p, i) => (p && i >= 5 ? i : -1)).filter((i) => i >= 0)).toEqual([16, 32, 48]);
   // When the threads become faster (0.4 ms), the average follows and they are preferred.
   for (let i = 0; i < 60; i++) {
     const parallel = c.choose(site);
@@ -194,15 +194,15 @@ test('the adaptive choice: threads first, then one thread, then the faster by it
 });
 
 test('galaxy of 33,000 stars on an adaptive pool: the state of one thread while its loops switch between threads and one thread', () => {
-  // The choice runs each loop on the threads at its first two calls and on one thread at the next
-  // two (threads/adaptive.ts), so three steps take every Barnes-Hut loop (gather with bounding box,
-  // keys, order, leaf moments, walk, forces) both ways.
+  // The choice runs each loop on the threads at its first three calls and on one thread at the next
+  // two (threads/adaptive.ts), so four steps take every Barnes-Hut loop (gather with bounding box,
+  // keys, key sort, order, leaf moments, walk, forces) both ways.
   const options = { count: 2 * MIN_PARALLEL_PER_THREAD + 200, seed: 8, openingAngle: 1.5 };
   const run = (threads: number): string => {
     const world = createPhysicsWorld({ ...galaxy.worldOptions(options), threads });
     worlds.push(world);
     galaxy.build(world, options);
-    stepMany(world, 3);
+    stepMany(world, 4);
     return stateHash(world);
   };
   expect(run(2)).toBe(run(1));

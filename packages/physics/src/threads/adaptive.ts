@@ -5,11 +5,11 @@
  * are busy) so falls back to one thread by itself, and probes the threads again now and then. Both
  * ways run the same kernel on the same data, so the choice never changes a result, only the time.
  *
- * Policy per loop (a `site`): the first two calls run parallel (the first is not timed: it may pay
+ * Policy per loop (a `site`): the first three calls run parallel (the first is not timed: it may pay
  * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
  * average (which follows a faster time at once and a slower one by ALPHA, so other processes'
- * delays weigh little), except every PROBE_EVERY-th call, which runs the other way and replaces that
- * way's average by its time (so a change of load is noticed at the next probe).
+ * delays weigh little), except every PROBE_EVERY-th call, which runs the other way to keep its
+ * average current (a machine that got quieter or busier is noticed within a few probes).
  */
 
 /** Calls between two runs of the way not currently preferred. */
@@ -42,8 +42,8 @@ export class LoopChooser {
     let s = this.sites.get(site);
     if (s === undefined) { s = { calls: 0, parallel: NaN, serial: NaN }; this.sites.set(site, s); }
     const c = s.calls;
-    if (c < 2) return true;
-    if (c < 4 || Number.isNaN(s.serial)) return false;
+    if (c < 3) return true;
+    if (c < 5 || Number.isNaN(s.serial)) return false;
     if (Number.isNaN(s.parallel)) return true;
     const preferParallel = s.parallel <= s.serial;
     return c % PROBE_EVERY === 0 ? !preferParallel : preferParallel;
@@ -60,10 +60,10 @@ export class LoopChooser {
     // The way in use is averaged; a probe of the other way replaces its (old) average, so a machine
     // that got quieter is noticed at the next probe.
     // A time below the average is taken at once, one above moves it by ALPHA: on a shared machine the
-    // delays are other processes', so the lower times are the ones that say what a way costs.
-    const probe = !Number.isNaN(s.parallel) && !Number.isNaN(s.serial) && parallel !== (s.parallel <= s.serial);
+    // delays are other processes', so the lower times are the ones that say what a way costs. Both
+    // ways follow the same rule, probes included, so neither is favoured by having more samples.
     const old = parallel ? s.parallel : s.serial;
-    const est = Number.isNaN(old) || probe || v < old ? v : old + ALPHA * (v - old);
+    const est = Number.isNaN(old) || v < old ? v : old + ALPHA * (v - old);
     if (parallel) s.parallel = est; else s.serial = est;
   }
 
