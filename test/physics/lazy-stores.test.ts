@@ -39,6 +39,21 @@ describe('lazily allocated stores', () => {
     expect(allocated(c.Lifetime!, cap).every(Boolean) && allocated(c.Particle!, cap).every(Boolean)).toBe(true);
   });
 
+  test('without interpolation, PreviousPosition waits for the first body and starts at the current positions', () => {
+    const world = createPhysicsWorld({ capacity: 20, interpolation: false });
+    for (let i = 0; i < 4; i++) addParticle(world, { position: [i, 10], velocity: [1, 0] });
+    stepMany(world, 6);
+    expect(world.components.PreviousPosition.x.length).toBe(0);
+    const b = addBody(world, { position: [0, 0], radius: 0.5 });
+    const P = world.components.Position, O = world.components.PreviousPosition;
+    expect(O.x.length).toBe(21);
+    for (let e = 1; e <= 4; e++) expect([O.x[e], O.y[e]]).toEqual([P.x[e], P.y[e]]);
+    expect([O.x[slotOf(b)], O.y[slotOf(b)]]).toEqual([0, 0]);
+    stepMany(world, 2); // the body keeps its previous position every step (contacts read it)
+    expect(O.y[slotOf(b)]).toBeLessThan(0);
+    expect(O.y[slotOf(b)]).toBeGreaterThan(P.y[slotOf(b)]!);
+  });
+
   test('a snapshot taken before any body restores into a world that has bodies, and both worlds step alike after the same new body', () => {
     const make = (): PhysicsWorld => createPhysicsWorld({ capacity: 40, seed: 3 });
     const a = make();

@@ -13,7 +13,10 @@
  *   below (bitecs recycles ids and leaves old data behind, so nothing is inherited).
  *
  * Memory: stores a world never uses are never allocated. Only Position, Velocity and
- * PreviousPosition get their arrays when the world is made (every entity that moves has them); every
+ * PreviousPosition get their arrays when the world is made (every entity that moves has them; in a
+ * world made with `interpolation: false` and one thread, where bare particles never write their
+ * previous position, PreviousPosition waits for the body group too and starts as a copy of Position,
+ * so a world of bare particles holds 48 bytes of stores an entity); every
  * other store starts with empty (length 0) arrays and gets them, zero-filled, the first time its
  * component is added to any entity (createPhysicsWorld installs the onAdd hook, before the hooks that
  * write defaults). Stores are allocated by group (`LAZY_GROUPS`): the first body component (Mass,
@@ -392,17 +395,20 @@ export function materializeGroup(components: Components, name: keyof Components,
 
 /**
  * Makes the stores of a world with room for `capacity` entities (ids 1..capacity): Position, Velocity
- * and PreviousPosition allocated, every store of LAZY_GROUPS empty until `materializeStore` gives it
+ * and PreviousPosition allocated, every store of LAZY_GROUPS empty until `materializeGroup` gives it
  * its arrays (createPhysicsWorld does on the first use of the store's group), Shape empty until the
  * first shape. @param capacity integer >= 1 (checked by createPhysicsWorld).
+ * @param previousPosition false: PreviousPosition starts empty too (createPhysicsWorld passes it for a
+ *   world made with `interpolation: false` and one thread, which allocates it with the body group; see
+ *   the module docstring). Default true.
  */
-export function createComponents(capacity: number): Components {
+export function createComponents(capacity: number, previousPosition = true): Components {
   const n = capacity + 1;
   const z = (): Float64Array => new Float64Array(0);
   return {
     Position: vec3(n),
     Velocity: vec3(n),
-    PreviousPosition: vec3(n),
+    PreviousPosition: vec3(previousPosition ? n : 0),
     Force: vec3(0),
     Mass: { value: z(), inv: z() },
     Ball: { radius: z() },

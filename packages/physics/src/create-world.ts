@@ -79,7 +79,9 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   const threadPool = threads > 1 ? createThreadPool(where, threads) : null;
 
   const entityIndex = createEntityIndex();
-  const components = createComponents(capacity);
+  // Without interpolation bare particles never write PreviousPosition: it waits for the first body
+  // (threads keep it: the parallel loops take only shared arrays).
+  const components = createComponents(capacity, interpolation || threadPool !== null);
   if (threadPool !== null) shareStores(components, capacity);
   const timings = {} as StageTimings;
   for (const s of STAGES) timings[s] = 0;
@@ -120,6 +122,17 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
 }
 
 /**
+ * Gives PreviousPosition its arrays if it has none (a world made with interpolation: false), holding
+ * the current positions: bodies with forces or colliders write it every step; bare particles, which
+ * do not, keep where they were when the first body came.
+ */
+function allocatePreviousPosition(world: PhysicsWorld): void {
+  const O = world.components.PreviousPosition, P = world.components.Position;
+  if (O.x.length > world.capacity) return;
+  O.x = P.x.slice(); O.y = P.y.slice(); O.z = P.z.slice();
+}
+
+/**
  * Resets a component's fields for an entity when the component is added (ids are recycled and
  * bitecs leaves old data behind), and makes every force-law component bring the Force accumulator.
  */
@@ -135,7 +148,10 @@ function installDefaults(world: PhysicsWorld): void {
     const body = BODY_STORES.includes(name);
     observe(world, onAdd(store), () => {
       if (store[probe]!.length <= world.capacity) materializeGroup(c, name, world.capacity, world.threads > 1);
-      if (body) allocateCollisionScratch(world.collision, world.capacity);
+      if (body) {
+        allocateCollisionScratch(world.collision, world.capacity);
+        allocatePreviousPosition(world);
+      }
     });
   }
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
