@@ -10,7 +10,10 @@
  * there; drag the ball to pull it; right-drag orbits, wheel zooms.
  * URL: ?level=N, ?seed=S, ?debug.
  */
-import { BoxGeometry, BufferAttribute, BufferGeometry, Line, LineBasicMaterial, Mesh, MeshStandardMaterial, Plane, Raycaster, Vector2, Vector3 } from 'three';
+import {
+  BoxGeometry, BufferAttribute, BufferGeometry, Line, LineBasicMaterial, Mesh, MeshBasicMaterial, MeshStandardMaterial, Plane, Raycaster, RingGeometry,
+  Vector2, Vector3,
+} from 'three';
 import { createPhysicsWorld, isAlive, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
@@ -141,6 +144,11 @@ cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
 const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b }));
 cable.frustumCulled = false;
 app.scene.add(cable);
+// Where a click sent the hook: a ring on the ground until the hook is there.
+const goalMarker = new Mesh(new RingGeometry(0.35, 0.5, 32), new MeshBasicMaterial({ color: 0xffd166, transparent: true, opacity: 0.8 }));
+goalMarker.rotation.x = -Math.PI / 2;
+goalMarker.visible = false;
+app.scene.add(goalMarker);
 
 // ---- Keys held -------------------------------------------------------------------------------
 
@@ -251,6 +259,9 @@ function frame(): void {
   cablePositions[0] = hp[0]!; cablePositions[1] = JIB_HEIGHT; cablePositions[2] = hp[2]!;
   cablePositions[3] = hp[0]!; cablePositions[4] = hp[1]! + 0.2; cablePositions[5] = hp[2]!;
   cableGeometry.attributes.position!.needsUpdate = true;
+  const goal = handles.controls.goal;
+  goalMarker.visible = goal !== null;
+  if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length, f = fallenCount(handles.pieces);
     status.textContent = cleared
