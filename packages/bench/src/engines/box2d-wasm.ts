@@ -30,8 +30,8 @@ function loadBox2d(): Promise<Box2D> {
 
 /**
  * box2d-wasm 7 (Box2D v2.4.1 in WebAssembly): `pyramid` with the layout of `pyramidLayout`, boxes as
- * dynamic bodies with 0.5 x 0.5 polygon fixtures (density 1, friction 0.6, restitution 0), a static
- * ground box, steps of 1/60 s with 8 velocity and 3 position iterations (Box2D's recommended values)
+ * dynamic bodies with polygon fixtures of 1 x 1 m where they touch (a core of 0.49 m half extents inside
+ * Box2D's 0.01 m polygon skin; 1 kg each; friction 0.6, restitution 0), a static ground box, steps of 1/60 s with 8 velocity and 3 position iterations (Box2D's recommended values)
  * and sleeping allowed.
  */
 export const box2dWasmEngine: EngineAdapter = {
@@ -60,8 +60,13 @@ export const box2dWasmEngine: EngineAdapter = {
     w.CreateBody(groundDef).CreateFixture(groundFixture);
     const shape = new B.b2PolygonShape();
     shape.SetAsBox(layout.half, layout.half);
+    // Box2D v2 polygons carry a skin (m_radius, b2_polygonRadius = 0.01 m) around their vertices: a core
+    // of half - skin makes the box the layout's 1 x 1 m where it touches, and the density is raised so
+    // its mass (computed from the core) is the layout's.
+    const skin: number = shape.get_m_radius(), core = layout.half - skin;
+    shape.SetAsBox(core, core);
     const fixture = new B.b2FixtureDef();
-    fixture.set_shape(shape); fixture.set_density(layout.density); fixture.set_friction(layout.friction); fixture.set_restitution(layout.restitution);
+    fixture.set_shape(shape); fixture.set_density(layout.density * (layout.half / core) ** 2); fixture.set_friction(layout.friction); fixture.set_restitution(layout.restitution);
     const def = new B.b2BodyDef();
     def.set_type(B.b2_dynamicBody);
     const n = layout.count;

@@ -13,8 +13,9 @@ function loadPlanck(): Promise<Planck> {
 
 /**
  * planck.js (a JavaScript port of Box2D v2.4): `pyramid` with the layout of `pyramidLayout`, boxes as
- * dynamic bodies with 0.5 x 0.5 box fixtures (density 1, friction 0.6, restitution 0), a static ground
- * box, steps of 1/60 s with planck's default iterations (8 velocity, 3 position) and sleeping
+ * dynamic bodies with box fixtures of 1 x 1 m where they touch (a core of 0.49 m half extents inside
+ * Box2D's 0.01 m polygon skin; 1 kg each; friction 0.6, restitution 0; with a 0.5 m core the rows
+ * start 0.02 m into each other's skins and the pile rises 0.3 m), a static ground box, steps of 1/60 s with planck's default iterations (8 velocity, 3 position) and sleeping
  * allowed. SI units (planck's are metres and seconds).
  */
 export const planckEngine: EngineAdapter = {
@@ -37,9 +38,14 @@ export const planckEngine: EngineAdapter = {
     const n = layout.count;
     const bodies = new Array<ReturnType<typeof world.createBody>>(n);
     const p = layout.positions;
+    // Box2D v2 polygons carry a skin of Settings.polygonRadius (0.01 m) around their vertices: a core of
+    // half - skin makes the box the layout's 1 x 1 m where it touches, and the density is raised so its
+    // mass (computed from the core) is the layout's.
+    const skin = P.Settings.polygonRadius, core = layout.half - skin;
+    const density = layout.density * (layout.half / core) ** 2;
     for (let i = 0; i < n; i++) {
       const body = world.createBody({ type: 'dynamic', position: { x: p[2 * i]!, y: p[2 * i + 1]! } });
-      body.createFixture({ shape: new P.Box(layout.half, layout.half), density: layout.density, friction: layout.friction, restitution: layout.restitution });
+      body.createFixture({ shape: new P.Box(core, core), density, friction: layout.friction, restitution: layout.restitution });
       bodies[i] = body;
     }
     return {
