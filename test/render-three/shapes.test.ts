@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { Matrix4, PerspectiveCamera, Quaternion, Vector3 } from 'three';
 import {
-  addBallJoint3D, addBody, addHingeJoint3D, addPlane, addShape3D, createPhysicsWorld, isAlive, step, type PhysicsWorld,
+  addBallJoint3D, addBody, addHeightField3D, addHingeJoint3D, addPlane, addShape3D, createPhysicsWorld, isAlive, step, type PhysicsWorld,
 } from '@bitphysics/physics';
 import { BodyDrag3D, WorldRenderer3D, type ShapeLayer3D } from '../../packages/render-three/src/index';
 
@@ -166,5 +166,24 @@ describe('render-three: 3D shapes', () => {
     r.render(1);
     expect(r.stats.scenery.joints).toBe(2);
     expect(r.stats.contacts).toBe(4);
+  });
+
+  it('draws a height field as one mesh through its grid points (the physics vertices)', () => {
+    const w = world3();
+    addHeightField3D(w, { heights: [[0, 1, 0], [1, 2, 1], [0, 1, 0]], spacing: [2, 3], origin: [-2, 0, -3] });
+    const r = new WorldRenderer3D(w, { lights: false });
+    r.render(1);
+    expect(r.stats.shapes.triangleMeshes).toBe(1);
+    const layer = (r as unknown as { shapes: ShapeLayer3D }).shapes;
+    const mesh = layer.object.children.find((o) => o.name.startsWith('triangle-mesh')) as import('three').Mesh;
+    const pos = mesh.geometry.getAttribute('position');
+    expect(pos.count).toBe(9);
+    let top = -Infinity;
+    for (let i = 0; i < pos.count; i++) top = Math.max(top, pos.getY(i));
+    expect(top).toBe(2); // the middle grid point
+    expect(mesh.geometry.index!.count).toBe(8 * 3); // 2 x 2 cells, two triangles each
+    r.setWorld(world3());
+    r.render(1);
+    expect(r.stats.shapes.triangleMeshes).toBe(0);
   });
 });

@@ -71,6 +71,7 @@ export type { TriangleMeshOptions, HeightFieldOptions, Mesh3D } from './collisio
 export { contactEvents3D } from './collision/manifold3d-solver.js';
 export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
 export { forEachContact3D } from './collision/contacts3d-view.js';
+export { meshesOf } from './collision/mesh3d.js';
 export type { Contact3DView } from './collision/contacts3d-view.js';
 export { addBallJoint3D, addHingeJoint3D, addFixedJoint3D, addDistanceJoint3D, addSliderJoint3D, removeJoint3D, joint3DBreaks } from './joints3d/api.js';
 export type { Joint3DBaseOptions, BallJoint3DOptions, HingeJoint3DOptions, FixedJoint3DOptions, DistanceJoint3DOptions, SliderJoint3DOptions } from './joints3d/api.js';

@@ -141,8 +141,8 @@ const arm = new Float64Array(6);
 /**
  * 3D joints (physics' joints3d: anchors and axes kept in the bodies' frames about their centres of
  * mass, body A 0 the fixed world): each body's lever from its centre to its anchor, the line between
- * the two anchors (a rope or spring's length), and for hinges and coned ball joints a short stub of
- * B's axis at its anchor. @returns 3D joints drawn.
+ * the two anchors (a rope or spring's length), and for hinges, sliders and coned ball joints a short
+ * stub of B's axis at its anchor. @returns 3D joints drawn.
  */
 export function drawJoints3D(world: PhysicsWorld, at: DrawnPositions, out: SegmentSink): number {
   const s = joints3DOf(world);
@@ -159,7 +159,7 @@ export function drawJoints3D(world: PhysicsWorld, at: DrawnPositions, out: Segme
     out.segment(p[3]!, p[4]!, p[5]!, bx, by, bz, SceneryColor.Joint);
     out.segment(ax, ay, az, bx, by, bz, SceneryColor.Joint);
     const type = s.type[j]!;
-    if (type === Joint3DType.Hinge || (type === Joint3DType.Ball && s.upper[j]! > 0)) {
+    if (type === Joint3DType.Hinge || type === Joint3DType.Slider || (type === Joint3DType.Ball && s.upper[j]! > 0)) {
       turn(s.ubx[j]!, s.uby[j]!, s.ubz[j]!, arm, 0);
       const h = 0.5 * AXIS_STUB;
       out.segment(bx - h * arm[0]!, by - h * arm[1]!, bz - h * arm[2]!, bx + h * arm[0]!, by + h * arm[1]!, bz + h * arm[2]!, SceneryColor.Joint);

@@ -63,7 +63,7 @@ export interface WorldRenderer3DOptions {
   glassColor?: ColorInput;
   /** Opacity of the glass walls, [0, 1]. Default 0.12. */
   glassOpacity?: number;
-  /** Colour of the boundary's floor and of planes. Default 0x39404f. */
+  /** Colour of the boundary's floor, of planes and of static triangle meshes and height fields. Default 0x39404f. */
   floorColor?: ColorInput;
   /** Colour of static segments. Default 0x8d99ae. */
   segmentColor?: ColorInput;
@@ -202,7 +202,7 @@ export class WorldRenderer3D {
   readonly root = new Group();
   /** Statistics of the last frame (updated in place). */
   readonly stats: Renderer3DStats = {
-    instances: 0, balls: 0, boxes: 0, custom: 0, shaped: 0, shapes: { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0 }, meshes: 0, trails: 0, contacts: 0, arrows: 0,
+    instances: 0, balls: 0, boxes: 0, custom: 0, shaped: 0, shapes: { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0, triangleMeshes: 0 }, meshes: 0, trails: 0, contacts: 0, arrows: 0,
     scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
   };
   /** The light rig, or null when `lights` is false. */
@@ -370,7 +370,7 @@ export class WorldRenderer3D {
     this.ballGroup = this.groupFor(sphere, this.ballMaterial, 'ball', initial);
     this.boxGroup = this.groupFor(box, this.boxMaterial, 'box', initial);
     this.shapedGroup = this.groupFor(this.own(new BufferGeometry()), this.boxMaterial, 'shapes', initial);
-    this.shapes = new ShapeLayer3D(world.capacity, this.boxMaterial, sphere, shadows);
+    this.shapes = new ShapeLayer3D(world.capacity, this.boxMaterial, sphere, shadows, envStyle.floorColor);
     this.root.add(this.shapes.object);
     this.shapeFrame = {
       bodies: this.book.eids(this.shapedGroup), count: 0, drawnPosition: this.drawnPos, drawnOrientation: this.drawnQuat,
@@ -502,7 +502,7 @@ export class WorldRenderer3D {
     s.shaped = book.count(this.shapedGroup);
     s.custom = s.instances - s.balls - s.boxes - s.shaped;
     const sc3 = this.shapes.counts, ss = s.shapes;
-    ss.spheres = sc3.spheres; ss.boxes = sc3.boxes; ss.capsules = sc3.capsules; ss.cylinders = sc3.cylinders; ss.hulls = sc3.hulls; ss.meshes = sc3.meshes;
+    ss.spheres = sc3.spheres; ss.boxes = sc3.boxes; ss.capsules = sc3.capsules; ss.cylinders = sc3.cylinders; ss.hulls = sc3.hulls; ss.meshes = sc3.meshes; ss.triangleMeshes = sc3.triangleMeshes;
     s.meshes = meshes;
     s.trails = trails ? trails.count : 0;
     s.contacts = debug ? debug.contactsDrawn : 0;

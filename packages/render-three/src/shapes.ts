@@ -1,7 +1,7 @@
 import {
-  BoxGeometry, BufferGeometry, CapsuleGeometry, CylinderGeometry, Float32BufferAttribute, Group, type Material,
+  BoxGeometry, BufferGeometry, CapsuleGeometry, CylinderGeometry, Float32BufferAttribute, Group, Mesh, MeshStandardMaterial, type Material,
 } from 'three';
-import { Shape3DKind, shapes3DOf, type Hull, type PhysicsWorld, type Shape3DStore } from '@bitphysics/physics';
+import { Shape3DKind, meshesOf, shapes3DOf, type Hull, type Mesh3D, type PhysicsWorld, type Shape3DStore } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book.js';
 import { InstanceGroup } from './groups.js';
 import { composeInto, hexToLinear } from './math.js';
@@ -24,8 +24,11 @@ import { composeInto, hexToLinear } from './math.js';
  * - hull: its own flat-shaded geometry from the hull's polygonal faces, shared by hulls with the same
  *   vertices (to 1e-6 m).
  *
+ * Static triangle meshes and height fields (`addTriangleMesh3D`, `addHeightField3D`) are drawn as one
+ * three.js mesh each, built once (smooth normals from the triangles), in `meshColor`.
+ *
  * Per-entity state is in typed arrays of capacity + 1 indexed by shape slot; a frame allocates nothing
- * unless a new size class appears.
+ * unless a new size class or a new triangle mesh appears.
  */
 
 /** Sides of the drawn cylinder: 16, the sides of the prism a cylinder collides as (physics' CYLINDER_SIDES). */
@@ -42,6 +45,8 @@ export interface ShapeCounts {
   hulls: number;
   /** Instanced meshes in use (draw calls before shadows). */
   meshes: number;
+  /** Static triangle meshes and height fields drawn. */
+  triangleMeshes: number;
 }
 
 /** Per body, what the shape layer reads: where and how the renderer drew it this frame. */
@@ -91,7 +96,10 @@ export class ShapeLayer3D {
   /** Parent of the layer's meshes. */
   readonly object = new Group();
   /** Counts of the last frame. */
-  readonly counts: ShapeCounts = { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0 };
+  readonly counts: ShapeCounts = { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0, triangleMeshes: 0 };
+  /** The drawn static triangle meshes, by their physics record. */
+  private readonly triangleMeshes = new Map<Mesh3D, Mesh>();
+  private readonly meshMaterial: MeshStandardMaterial;
   private readonly material: Material;
   private readonly shadows: boolean;
   private readonly sphere: BufferGeometry;
@@ -111,8 +119,9 @@ export class ShapeLayer3D {
    * @param capacity the world's capacity. @param material the material of every shape (instance colours tint it).
    * @param sphere the unit sphere geometry to share (not owned). @param shadows cast and receive shadows.
    */
-  constructor(capacity: number, material: Material, sphere: BufferGeometry, shadows: boolean) {
+  constructor(capacity: number, material: Material, sphere: BufferGeometry, shadows: boolean, meshColor = 0x4a5568) {
     this.material = material;
+    this.meshMaterial = new MeshStandardMaterial({ color: meshColor, roughness: 0.9, metalness: 0, flatShading: false });
     this.sphere = sphere;
     this.shadows = shadows;
     this.object.name = 'shapes3d';
@@ -136,6 +145,7 @@ export class ShapeLayer3D {
       this.allocate(capacity);
     }
     for (const g of this.groups) g.commit(0);
+    this.dropTriangleMeshes(null);
   }
 
   /** Colours are rewritten at the next draw (after a body's colour changed). */
@@ -146,14 +156,17 @@ export class ShapeLayer3D {
   /** Sets shadow casting and receiving of every mesh. */
   setShadows(on: boolean): void {
     for (const g of this.groups) g.setShadows(on);
+    for (const m of this.triangleMeshes.values()) { m.castShadow = on; m.receiveShadow = on; }
   }
 
   /** Places every shape of the bodies in `frame` for this frame. */
   draw(world: PhysicsWorld, frame: ShapeFrame): void {
+    this.drawTriangleMeshes(world, frame.scale);
     const s = shapes3DOf(world);
     const book = this.book;
     const counts = this.counts;
     counts.spheres = counts.boxes = counts.capsules = counts.cylinders = counts.hulls = counts.meshes = 0;
+    counts.triangleMeshes = this.triangleMeshes.size;
     book.beginPass();
     if (s !== undefined) {
       const spawn = world.spawnStamp;
@@ -214,11 +227,45 @@ export class ShapeLayer3D {
 
   /** Frees the meshes and the geometries the layer made. */
   destroy(): void {
+    this.dropTriangleMeshes(null);
+    this.meshMaterial.dispose();
     this.object.removeFromParent();
     for (const g of this.groups) g.dispose();
     this.box.dispose();
     this.cylinder.dispose();
     for (const g of this.owned) g.dispose();
+  }
+
+  /** Builds a three.js mesh for each static triangle mesh not drawn yet; drops those removed. */
+  private drawTriangleMeshes(world: PhysicsWorld, k: number): void {
+    const list = world.dimensions === 3 ? meshesOf(world) : [];
+    if (list.length === 0 && this.triangleMeshes.size === 0) return;
+    this.dropTriangleMeshes(list);
+    for (const m of list) {
+      let mesh = this.triangleMeshes.get(m);
+      if (mesh === undefined) {
+        const g = new BufferGeometry();
+        g.setAttribute('position', new Float32BufferAttribute(Array.from(m.vertices), 3));
+        g.setIndex(Array.from(m.triangles));
+        g.computeVertexNormals();
+        mesh = new Mesh(g, this.meshMaterial);
+        mesh.name = `triangle-mesh-${m.entity}`;
+        mesh.castShadow = this.shadows; mesh.receiveShadow = this.shadows;
+        this.triangleMeshes.set(m, mesh);
+        this.object.add(mesh);
+      }
+      mesh.scale.setScalar(k);
+    }
+  }
+
+  /** Removes the drawn triangle meshes not in `keep` (all of them for null). */
+  private dropTriangleMeshes(keep: readonly Mesh3D[] | null): void {
+    for (const [m, mesh] of this.triangleMeshes) {
+      if (keep !== null && keep.includes(m)) continue;
+      mesh.removeFromParent();
+      mesh.geometry.dispose();
+      this.triangleMeshes.delete(m);
+    }
   }
 
   private allocate(capacity: number): void {
