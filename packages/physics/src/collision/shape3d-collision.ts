@@ -386,14 +386,8 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
 /** A pair's manifold found: wakes a sleeper met by a moving body, and emits the rows unless neither body is dynamic. */
 function emitPair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, a: number, b: number, bi: number, bj: number): void {
   const sc = scratch, type = world.collision.bodyType, ta = type[bi]!, tb = type[bj]!;
-  // A sleeper wakes when a moving body starts touching it (a pair without a row last step), as Box2D
-  // wakes islands on a contact's begin: a body jittering against a sleeping pile it already touched
-  // does not wake it every step.
-  if (ta === BodyType.Sleeping || tb === BodyType.Sleeping) {
-    const fresh = lookupRow(st.previousIndex, rowKey(world.capacity, sc.shape[a]!, sc.shape[b]!, 0)) < 0;
-    if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb, fresh)) queueWake(bi);
-    else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta, fresh)) queueWake(bj);
-  }
+  if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb)) queueWake(bi);
+  else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta)) queueWake(bj);
   if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) return;
   emit(world, s, st, sc.body[a]!, sc.body[b]!, sc.shape[a]!, sc.shape[b]!, sc.ball[a] === 1, sc.ball[b] === 1);
 }

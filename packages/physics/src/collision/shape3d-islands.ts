@@ -11,8 +11,8 @@ import { contact3DStateOf } from './manifolds3d-state.js';
  *
  * - a 3D manifold whose points carried a normal impulse this step supports both its bodies;
  * - manifolds between two dynamic bodies that pushed tie them into one island;
- * - a sleeping body that a moving body (rest time 0) starts touching (their shapes had no contact the
- *   step before), or that a kinematic body touches, wakes with its whole island, and joins the step as a dynamic body with the velocity and position the
+ * - a sleeping body met in the 3D broadphase by a moving body (rest time 0) or a kinematic one wakes
+ *   with its whole island, and joins the step as a dynamic body with the velocity and position the
  *   integration it skipped would have given it (v = g h, x += g h^2 / 2); met by a resting body it
  *   stays asleep and holds it up as immovable geometry, so a box settling onto a sleeping pile can
  *   fall asleep too;
@@ -74,12 +74,11 @@ export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find
 }
 
 /**
- * Whether body `other` (of type `t`) wakes a sleeping body it meets: it is kinematic, or dynamic, not
- * resting (its rest time is 0) and starting to touch it (`fresh`: their shapes had no contact row in
- * the last step).
+ * Whether body `other` (of type `t`) wakes a sleeping body it meets: it is kinematic, or dynamic and
+ * not resting (its rest time is 0).
  */
-export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, fresh: boolean): boolean {
-  return t === BodyType.Kinematic || t === BodyType.Dynamic && fresh && world.collision.sleep.restTime[other] === 0;
+export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number): boolean {
+  return t === BodyType.Kinematic || t === BodyType.Dynamic && world.collision.sleep.restTime[other] === 0;
 }
 
 /**
