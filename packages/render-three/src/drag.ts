@@ -1,6 +1,7 @@
 import { Plane, Raycaster, SphereGeometry, Vector2, Vector3, type Camera } from 'three';
 import { addBody, addDistanceJoint3D, isAlive, removeBody, setPosition, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive } from '@bitphysics/physics/validate';
+import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import type { WorldRenderer3D } from './renderer.js';
 
 /** Options of `new BodyDrag3D`. Every field optional; unknown fields are rejected. */
@@ -11,8 +12,8 @@ export interface BodyDrag3DOptions {
   dampingRatio?: number;
   /** Radius of the marker drawn at the pointer's target, m, > 0. Default 0.06 m. */
   markerRadius?: number;
-  /** Colour of the marker, 0xRRGGBB. Default 0xffd166. */
-  markerColor?: number;
+  /** Colour of the marker, 0xRRGGBB or '#rrggbb'. Default 0xffd166. */
+  markerColor?: ColorInput;
 }
 
 /**
@@ -57,8 +58,7 @@ export class BodyDrag3D {
     assertNonNegative(where, 'dampingRatio', this.dampingRatio);
     this.markerRadius = options.markerRadius ?? 0.06;
     assertPositive(where, 'markerRadius', this.markerRadius);
-    this.markerColor = options.markerColor ?? 0xffd166;
-    assertFinite(where, 'markerColor', this.markerColor);
+    this.markerColor = parseColor(where, 'markerColor', options.markerColor ?? 0xffd166);
     this.renderer = renderer;
     this.marker = new SphereGeometry(1, 12, 8);
   }

@@ -515,7 +515,8 @@ export class WorldRenderer3D {
 
   /**
    * Gives entity `eid` its own look: a geometry, an optional material, scale and tint (see
-   * `BodyShape`); `null` returns it to the default sphere or box. The shape holds until the entity
+   * `BodyShape`); `null` returns it to the default look (its 3D shapes, else a sphere or a box). A body with
+   * 3D shapes given a user shape is drawn by that shape instead of its shapes. The shape holds until the entity
    * is removed (a recycled id starts with the default again). Entities sharing geometry and material
    * share one instanced mesh. May be called before the entity is first drawn.
    * @throws RangeError if `eid` is not a live entity; TypeError if geometry or material are not three.js
