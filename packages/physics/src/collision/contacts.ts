@@ -227,7 +227,10 @@ export interface ContactView {
   x: number; y: number; z: number;
   /** Normal impulse the contact delivered over the step, N s (>= 0): B got +impulse n, A -impulse n. */
   impulse: number;
-  /** Separation along the normal at the start of the step, m (negative: overlap). */
+  /**
+   * Separation along the normal at the start of the step, m (negative: overlap); for a body the impact
+   * stage moved, from where its end-position correction puts its start (see impacts.ts).
+   */
   separation: number;
 }
 

@@ -119,9 +119,13 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  *   such rows (the elastic gas of 500 balls lost 6 % of its energy in 20,000 steps that way).
  * A body with a row the soft substeps will work on (resting in a pile, say) loses its corrections:
  * the substeps' positions must stay consistent with their own rows, so its impulses act as if at the
- * start of the step (Box2D-like), which only ever widens a gap and never adds energy. Such a body
- * makes a clean neighbour unclean too when the linear gap model of the row between them could close
- * within the step (the substeps would push the neighbour), until no more change.
+ * start of the step (Box2D-like), which only ever widens the impacted pair's gap and never adds
+ * energy. Such a body makes a clean neighbour unclean too when the linear gap model of the row between
+ * them could close within the step (the substeps would push the neighbour), until no more change.
+ * Last, every row's start separation takes in the corrections that remain, (c_B - c_A) . n: the
+ * substeps move a clean body as if from its start and its correction is added at the end, so their gap
+ * at the end of the step is then the true one (a clean body beside an unclean one no longer ends
+ * inside it: the elastic pile's worst one-step energy rise went from 3.9e-4 to 7e-8 of the total).
  */
 function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number): void {
   const cs = world.collision;
@@ -133,6 +137,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
   // First, while slot 3 still holds each body's latest impact time: which rows stay active, into
   // the spent order array (1 active, 0 not).
+  const Q = IMPACT_STRIDE;
   const act = cs.impactOrder;
   for (let i = 0; i < n; i++) {
     const kind = K[i]!;
@@ -152,7 +157,6 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   }
   // Slot 4 of a body's row: 1 clean, 0 not (the static world is clean). An unclean body loses its
   // corrections (the substeps move it from where it was at the start of the step).
-  const Q = IMPACT_STRIDE;
   for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
   for (let i = 0; i < n; i++) if (act[i] === 1) { unclean(imp, IA[i]!); unclean(imp, IB[i]!); }
   // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
@@ -172,6 +176,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   }
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, NM = buf.normalMass, TM = buf.tangentMass;
   for (let i = 0; i < n; i++) {
+    // The substeps move a body from where it was at the start of the step and add its correction at
+    // the end, so every row's start separation takes the corrections in: the substeps' gap at the end
+    // of the step is then the true one, also between a clean body and an unclean one.
+    S0[i] = S0[i]! + correctionGap(imp, buf, i);
     if ((IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0) || imp[IB[i]! * Q + 4] === 0) continue;
     if (E[i]! > 0 && key[i] === -1) {
       // Impacted rows between clean bodies leave the soft substeps.
@@ -215,9 +223,18 @@ function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
 }
 
-/** Whether the soft substeps' linear gap model of contact i closes within `reach` (see linearClosure). */
+/**
+ * Whether the soft substeps' linear gap model of contact i closes within `reach` (see linearClosure),
+ * from the start separation opened by the bodies' corrections (those of unclean bodies are zero).
+ */
 function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, reach: number): boolean {
-  return buf.separation[i]! <= linearClosure(world, buf, i, S, reach);
+  return buf.separation[i]! + correctionGap(world.collision.bodyImpact, buf, i) <= linearClosure(world, buf, i, S, reach);
+}
+
+/** (c_B - c_A) . n of contact i: how much the bodies' end-position corrections open its gap, m. */
+function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number {
+  const qa = buf.ia[i]! * IMPACT_STRIDE, qb = buf.ib[i]! * IMPACT_STRIDE;
+  return (imp[qb]! - imp[qa]!) * buf.nx[i]! + (imp[qb + 1]! - imp[qa + 1]!) * buf.ny[i]! + (imp[qb + 2]! - imp[qa + 2]!) * buf.nz[i]!;
 }
 
 /**

@@ -14,6 +14,7 @@ import {
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
+import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -49,7 +50,8 @@ import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
  * Separation is tracked linearly: s = s0 + (dx_B - dx_A) . n, with s0 measured where the bodies
  * were at the start of the step. s > 0 is a speculative gap the bodies may close this substep
  * (bias s / h_s); s < 0 is overlap pushed out by a soft constraint (a damped spring of
- * `contactHertz` and `contactDampingRatio`, at most `contactPushSpeed`). Soft constraints with
+ * `contactHertz` and `contactDampingRatio`, at most `contactPushSpeed`, both scaled to the balls'
+ * size as contact-scale.ts describes). Soft constraints with
  * relaxation are what keeps a deep pile still with few iterations and without adding energy.
  */
 export function contactSolverSystem(world: PhysicsWorld): void {
@@ -63,7 +65,9 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     return;
   }
   gatherBodies(world, buf);
-  prepareContacts(world, buf);
+  // The ball contacts' tolerances follow the size of the balls (contact-scale.ts).
+  const length = contactLength(buf);
+  prepareContacts(world, buf, ballStickSpeed(cs.settings, length));
   prepareManifolds(world);
   if (world.dimensions === 3) prepareManifolds3D(world);
   applyImpacts(world, buf);
@@ -72,9 +76,10 @@ export function contactSolverSystem(world: PhysicsWorld): void {
   const st = cs.settings;
   const substeps = st.solverSubsteps;
   const hs = world.h / substeps;
-  // Softness (Box2D b2MakeSoft): stiffness capped at a quarter of the substep rate; contacts against
-  // infinite mass twice as stiff.
-  const hertz = Math.min(st.contactHertz, 0.25 / hs);
+  // Softness (Box2D b2MakeSoft): stiffness from the balls' size, capped at the substep rate
+  // (contact-scale.ts); contacts against infinite mass twice as stiff.
+  const hertz = ballContactHertz(st, length, hs);
+  const push = ballContactPushSpeed(st, length);
   const dyn = makeSoft(hertz, st.contactDampingRatio, hs);
   const rigid = makeSoft(2 * hertz, st.contactDampingRatio, hs);
   prepareJoints(world, hs);
@@ -90,7 +95,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
       solveJoints3D(world, hs, true);
-      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid); else solve3D(cs, buf, hs, true, dyn, rigid);
+      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid, push); else solve3D(cs, buf, hs, true, dyn, rigid, push);
       if (is2D) solveManifolds(cs, hs, true); else solveManifolds3D(world, hs, true);
     }
     integratePositions(world, hs);
@@ -98,7 +103,7 @@ export function contactSolverSystem(world: PhysicsWorld): void {
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
       solveJoints3D(world, hs, false);
-      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid); else solve3D(cs, buf, hs, false, dyn, rigid);
+      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid, push); else solve3D(cs, buf, hs, false, dyn, rigid, push);
       if (is2D) solveManifolds(cs, hs, false); else solveManifolds3D(world, hs, false);
     }
     if (is2D) accumulateManifoldImpulses(cs);
@@ -314,10 +319,11 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   let deepest = 0;
   const IA = buf.ia, IB = buf.ib, S0 = buf.separation, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const dOff = is2D ? 3 : 6;
+  // The start separations already hold the impact corrections (impacts.ts).
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff, qa = IA[i]! * IMPACT_STRIDE, qb = IB[i]! * IMPACT_STRIDE;
-    let s = S0[i]! + (sb[b]! - sb[a]! + imp[qb]! - imp[qa]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]! + imp[qb + 1]! - imp[qa + 1]!) * NY[i]!;
-    if (!is2D) s += (sb[b + 2]! - sb[a + 2]! + imp[qb + 2]! - imp[qa + 2]!) * NZ[i]!;
+    const a = IA[i]! * S + dOff, b = IB[i]! * S + dOff;
+    let s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+    if (!is2D) s += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   cs.stats.maxOverlap = -deepest;
@@ -363,10 +369,9 @@ function containInBoundary(world: PhysicsWorld): void {
   }
 }
 
-function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
+function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number): void {
   const c = world.components;
   const cs = world.collision;
-  const st = cs.settings;
   const n = buf.count;
   const is2D = world.dimensions === 2;
   const S = stride(world);
@@ -376,7 +381,6 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const cache = cs.cache;
   const prev = cache.rows;
   const stamp = world.spawnStamp;
-  const stick = st.stickSpeed;
   const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib, K = buf.kind, F = buf.feature;
   const NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z;
@@ -534,10 +538,9 @@ function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
   }
 }
 
-function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
+function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number): void {
   const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
-  const push = cs.settings.contactPushSpeed;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
   const NM = buf.normalMass, TM = buf.tangentMass, FB = buf.frictionBound, RP = buf.rigidPartner;
   const LN = buf.normalImpulse, LT = buf.tangentImpulse1, MAXN = buf.maxNormalImpulse;
@@ -592,10 +595,9 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
   }
 }
 
-function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness): void {
+function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number): void {
   const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
-  const push = cs.settings.contactPushSpeed;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
   const T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z;
   const NM = buf.normalMass, TM = buf.tangentMass, FB = buf.frictionBound, RP = buf.rigidPartner;

@@ -43,17 +43,25 @@ export interface CollisionSettings {
   /** Sequential-impulse passes of the restitution solve at the end of a step, integer >= 1. Default 4. */
   restitutionIterations: number;
   /**
-   * Stiffness of contact softness, Hz, > 0 (capped at a quarter of the substep rate, which is 60 Hz at
-   * the default dt 1/60 s and 4 solver substeps). Default 60 Hz (Box2D v3 uses 30 Hz).
+   * Stiffness of contact softness, Hz, > 0, for balls of radius 1 m (`CONTACT_LENGTH_UNIT`); a step's
+   * ball contacts use contactHertz sqrt(1 m / r) for the smallest radius r among them, capped at the
+   * substep rate (240 Hz at the default dt 1/60 s and 4 solver substeps), so small balls squash no
+   * more than big ones (see contact-scale.ts). Default 60 Hz (Box2D v3 uses 30 Hz for every size).
    */
   contactHertz: number;
   /** Damping ratio of contact softness, dimensionless. Default 10 (heavily overdamped: no bounce from push-out). */
   contactDampingRatio: number;
-  /** Fastest speed at which overlapping bodies are pushed apart, m/s. Default 3 m/s. */
+  /**
+   * Fastest speed at which overlapping bodies are pushed apart, m/s, for balls of radius 1 m; ball
+   * contacts scale it by sqrt(r / 1 m) (see contact-scale.ts). Default 3 m/s.
+   */
   contactPushSpeed: number;
   /** Gap within which contacts are kept even without approach speed, m. Default 0.1 m (Box2D v3 pads its bounding boxes by the same margin), so a body knocked sideways during a step still meets the contacts it runs into. */
   speculativeDistance: number;
-  /** Tangential speed below which a contact sticks and static friction applies, m/s. Default 0.01 m/s. */
+  /**
+   * Tangential speed below which a contact sticks and static friction applies, m/s, for balls of
+   * radius 1 m; ball contacts scale it by sqrt(r / 1 m) (see contact-scale.ts). Default 0.01 m/s.
+   */
   stickSpeed: number;
 }
 

@@ -1,6 +1,7 @@
 import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { currentSeparation } from '../collision/narrowphase.js';
+import { ballContactHertz, contactLength } from '../collision/contact-scale.js';
 import { fieldsAt } from '../forces/electromagnetism.js';
 import { spinAngularMomentum, spinKineticEnergy } from '../rigid.js';
 
@@ -177,7 +178,7 @@ export function potentialEnergy(world: PhysicsWorld): number {
  * Elastic energy stored in overlapping contacts, J. The contact solver's soft constraints are
  * implicitly integrated damped springs (Catto, "Soft Constraints", GDC 2011) of stiffness
  * k = m_eff (2 pi f)^2, with m_eff the pair's effective mass and f the contact frequency (2 f against
- * infinite mass); a contact overlapping by d holds k d^2 / 2. This is the energy a pile compressed
+ * infinite mass; f follows the balls' size, see `ballContactHertz`); a contact overlapping by d holds k d^2 / 2. This is the energy a pile compressed
  * by an impact gives back as it pushes itself apart. Measured at the current positions for the
  * contacts of the last step.
  */
@@ -186,7 +187,7 @@ export function contactSpringEnergy(world: PhysicsWorld): number {
   const rows = cs.cache.rows;
   const st = cs.settings;
   const hs = world.h / st.solverSubsteps;
-  const f = Math.min(st.contactHertz, 0.25 / hs);
+  const f = ballContactHertz(st, contactLength(rows), hs);
   const w = 2 * Math.PI * f;
   let sum = 0;
   for (let i = 0; i < rows.count; i++) {
