@@ -17,6 +17,9 @@ import { currentHandle } from '../handles.js';
  * - normal rows: speculative (s > 0: bias s / h_s) or soft (Box2D's soft constraint; twice as stiff
  *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
  * - friction in two tangent directions t1, t2 = n x t1, each |lambda_t| <= mu lambda_n;
+ * - per point and direction u (n, t1, t2), r x u and I^-1 (r x u) of both bodies are computed once a
+ *   step (`jacobians`), so a pass reads them instead of multiplying tensors; the points of a manifold
+ *   are solved in alternating order from substep to substep;
  * - warm start from the previous step's point with the same feature id (shape3d-collision.ts);
  * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
  *   the world's restitution threshold and carried an impulse leaves with v_n >= -e v_n0.

@@ -38,6 +38,8 @@ function meets(ta: number, tb: number): boolean {
  * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
  *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
  *   neither body is dynamic are skipped; sensors push nothing.
+ * - Sleeping (shape3d-islands.ts): a sleeping body takes part as static; one that a moving or
+ *   kinematic body's manifold reaches wakes with its island, and the step's pairs are found again.
  * - Speculative contacts (Catto, GDC 2013): a point is kept if its separation is below the speculative
  *   distance plus what the bodies' speeds close in one step, so a fast body is stopped at the surface
  *   it would cross within the step: the continuous collision of bullets.
