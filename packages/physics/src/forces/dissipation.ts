@@ -55,12 +55,15 @@ export interface DissipationState {
   /** The (world.steps, world.substepStart) the epoch belongs to. */
   keyStep: number;
   keyTime: number;
-  /** Epoch at which quadratic drag / fluid drag last found each entity stiff. */
-  readonly quadraticStamp: Float64Array;
-  readonly fluidStamp: Float64Array;
+  /**
+   * Epoch at which quadratic drag / fluid drag last found each entity stiff (capacity + 1 entries;
+   * empty until a body is first found stiff or a fluid law runs: `allocateStiffStamps`).
+   */
+  quadraticStamp: Float64Array;
+  fluidStamp: Float64Array;
   /** Coefficient (kg/m) of the quadratic / fluid drag the stiff update applies to a stamped entity. */
-  readonly quadraticK: Float64Array;
-  readonly fluidK: Float64Array;
+  quadraticK: Float64Array;
+  fluidK: Float64Array;
   /** Epoch at which each law last found a stiff body (the stiff updates skip laws without one). */
   linearSeen: number;
   quadraticSeen: number;
@@ -81,11 +84,10 @@ registerExternalWorldState({
 export function dissipationState(world: PhysicsWorld): DissipationState {
   let s = states.get(world);
   if (!s) {
-    const n = world.capacity + 1;
     s = {
       epoch: 1, keyStep: world.steps, keyTime: world.substepStart,
-      quadraticStamp: new Float64Array(n), fluidStamp: new Float64Array(n),
-      quadraticK: new Float64Array(n), fluidK: new Float64Array(n),
+      quadraticStamp: new Float64Array(0), fluidStamp: new Float64Array(0),
+      quadraticK: new Float64Array(0), fluidK: new Float64Array(0),
       linearSeen: 0, quadraticSeen: 0, fluidSeen: 0, angularSeen: 0, springSeen: 0,
     };
     states.set(world, s);
@@ -97,6 +99,18 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
     s.keyTime = world.substepStart;
   }
   return s;
+}
+
+/**
+ * Gives the per-entity stamp arrays of `st` room for the world's capacity if they are still empty
+ * (every world asks for its dissipation state each step; only one with stiff drag or fluids needs
+ * them: 32 bytes an entity). Call before stamping or before pulling them into locals.
+ */
+export function allocateStiffStamps(world: PhysicsWorld, st: DissipationState): void {
+  const n = world.capacity + 1;
+  if (st.quadraticStamp.length >= n) return;
+  st.quadraticStamp = new Float64Array(n); st.fluidStamp = new Float64Array(n);
+  st.quadraticK = new Float64Array(n); st.fluidK = new Float64Array(n);
 }
 
 /**

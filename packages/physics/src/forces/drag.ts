@@ -3,7 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 import { windAt } from './configure.js';
 import { reportNonFinite } from '../errors.js';
-import { dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
 
@@ -113,6 +113,7 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
 /** Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law). */
 function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): void {
   const st = dissipationState(world);
+  allocateStiffStamps(world, st);
   st.quadraticStamp[e] = st.epoch;
   st.quadraticK[e] = k;
   st.quadraticSeen = st.epoch;

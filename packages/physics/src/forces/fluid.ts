@@ -1,5 +1,5 @@
 import { Not, query } from '../query.js';
-import { dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import { reportNonFinite } from '../errors.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
@@ -63,6 +63,7 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   const d = world.dimensions;
   const inv = c.Mass.inv;
   const st = dissipationState(world);
+  allocateStiffStamps(world, st);
   const epoch = st.epoch, stamp = st.fluidStamp, stiffK = st.fluidK;
   const limit = STIFF_RATE / world.h;
   for (let i = 0; i < ents.length; i++) {
