@@ -103,7 +103,7 @@ describe('bench CLI', () => {
     expect(ours!.positionChecksum).toBe(plain!.positionChecksum);
   });
 
-  it('--threads 2 runs bitphysics-threads beside bitphysics: threads, speedup and the same state hash', async () => {
+  it('--threads 2 runs bitphysics-threads beside bitphysics: threads, speedup, serial fraction, Amdahl projection and the same state hash', async () => {
     // 40,000 particles: above 2 x MIN_PARALLEL_PER_THREAD, so the workers take their half.
     const run = await runCli(['--scene', 'particles', '--count', '40000', '--steps', '5', '--warmup', '1', '--threads', '2', '--hash', '--json']);
     expect(run.code).toBe(0);
@@ -113,6 +113,12 @@ describe('bench CLI', () => {
     expect(lines[1]!.threads).toBe(2);
     const ms = (l: Record<string, unknown>) => (l.msPerStep as Record<string, number>).median!;
     expect(lines[1]!.speedup).toBeCloseTo(ms(lines[0]!) / ms(lines[1]!), 2);
+    // Karp-Flatt serial fraction of that speedup on 2 threads, (1/S - 1/2) / (1/2) in [0, 1], and
+    // Amdahl's projection from it (rounded to 3 digits in the line).
+    const S = lines[1]!.speedup as number, f = lines[1]!.serialFraction as number;
+    expect(f).toBeCloseTo(Math.min(1, Math.max(0, 2 / S - 1)), 2);
+    expect(lines[1]!.amdahl8).toBeCloseTo(1 / (f + (1 - f) / 8), 1);
+    expect(lines[1]!.amdahl16).toBeCloseTo(1 / (f + (1 - f) / 16), 1);
     expect(lines[1]!.stateHash).toBe(lines[0]!.stateHash);
   });
 
