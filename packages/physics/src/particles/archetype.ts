@@ -16,15 +16,19 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  * masks belongs to) is worked out once, and a birth writes the entity index, the masks and those
  * queries directly: about 0.1 us.
  *
- * A death is bitecs' own deferred removal: the slot is freed at once (the entity no longer exists
- * for `entityExists`, handles and the API) and listed in its queries' pending removals, which bitecs
- * commits at the next `query()` call (so no system ever iterates it). A birth that takes a slot still
- * pending in a query keeps its place there, as bitecs' queryAddEntity does; bitecs hands out the slot
- * freed last first, so a step whose births follow its deaths before any query (the spawn stage:
- * expiries, their bursts, then the emitters' births) moves nothing in the query arrays. They stay in
- * slot order and the systems' loops walk memory in order (a query in random slot order made every
- * loop over 50,000 particles about five times slower); `defragment` restores the order when the
- * births and deaths that could not be matched have stirred it.
+ * A death follows bitecs' deferred removal: the slot is freed at once (the entity no longer exists for
+ * `entityExists`, handles and the API) and stays *pending* in its queries' arrays until the next
+ * `query()` call commits bitecs' pending removals (the table joins bitecs' dirty queries with a
+ * sentinel whose commit takes the pending deaths out), so no system ever iterates a dead particle.
+ * The pending deaths are kept here, one mark a slot, rather than in bitecs' per-query removal lists:
+ * bitecs empties those with `length = 0`, which frees their storage, so every step would allocate
+ * them again. A birth that takes a pending slot of the same archetype keeps its place in every query
+ * (bitecs' queryAddEntity rule); bitecs hands out the slot freed last first, so a step whose births
+ * follow its deaths before any query (the spawn stage: expiries, their bursts, then the emitters'
+ * births) moves nothing in the query arrays. They stay in slot order and the systems' loops walk
+ * memory in order (a query in random slot order made every loop over 50,000 particles about five
+ * times slower); `defragment` restores the order when births and deaths that could not be matched
+ * have stirred it.
  *
  * What a fast birth does not do: run bitecs onAdd observers. The component defaults the world's
  * observers write (create-world.ts) are written by the caller instead, and the first entity of every
@@ -105,15 +109,27 @@ export interface ArchetypeTable {
   staleArchetype: Int32Array;
   /** Scratch of `defragment`: a mark a slot. */
   marks: Uint8Array;
+  /** Per slot: id + 1 of the archetype of a pending death (0: none). */
+  pendingMark: Int32Array;
+  /** Slots of pending deaths, in death order (entries whose mark a birth cleared are skipped). */
+  pending: Int32Array;
+  pendingCount: number;
+  /** What bitecs' commitRemovals sees in its dirty queries while deaths pend: its commit calls `settle`. */
+  readonly sentinel: { toRemove: { dense: number[]; reset(): void }; remove(e: number): void };
 }
 
 const tables = new WeakMap<PhysicsWorld, ArchetypeTable>();
 // Only `order` is state; the rest is a cache of bitecs' structure that a restored world rebuilds.
 registerExternalWorldState({
   name: 'particle-archetypes',
-  get: (world, create) => (create ? archetypes(world) : tables.get(world)),
+  // A snapshot or restore first commits the pending deaths, as the next query() would.
+  get: (world, create) => {
+    const t = create ? archetypes(world) : tables.get(world);
+    if (t !== undefined) settle(world, t);
+    return t;
+  },
   clear: (world) => { tables.delete(world); },
-  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks'],
+  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks', 'pendingMark', 'pending', 'pendingCount', 'sentinel'],
 });
 
 /** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
@@ -122,10 +138,12 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
   if (t === undefined) {
     typedMasks(world);
     const none = new Int32Array(0);
-    t = {
+    const table: ArchetypeTable = {
       list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
-      staleArchetype: none, marks: new Uint8Array(0),
+      staleArchetype: none, marks: new Uint8Array(0), pendingMark: none, pending: none, pendingCount: 0,
+      sentinel: { toRemove: { dense: [], reset: () => settle(world, table) }, remove: () => {} },
     };
+    t = table;
     tables.set(world, t);
   }
   return t;
@@ -156,6 +174,7 @@ function slotArrays(table: ArchetypeTable): void {
   if (table.slotArchetype.length !== 0) return;
   const n = table.capacity + 1;
   table.slotArchetype = new Int32Array(n); table.staleArchetype = new Int32Array(n); table.marks = new Uint8Array(n);
+  table.pendingMark = new Int32Array(n); table.pending = new Int32Array(n);
 }
 
 function matchesMasks(q: QueryData, masks: Int32Array): boolean {
@@ -206,24 +225,19 @@ function masksOf(ecs: EcsInternals, slot: number): Int32Array {
   return masks;
 }
 
-/**
- * Which queries list `slot` as a pending removal: call before bitecs creates an entity there, and pass
- * the result to `archetypeFromEntity` (a birth that finds its slot pending in every query of its
- * archetype counts as in place, as in `bornSlot`).
- */
-export function pendingQueries(world: PhysicsWorld, slot: number): Set<object> {
-  const out = new Set<object>();
-  for (const q of ecsOf(world).queries) if (q.toRemove.has(slot)) out.add(q);
-  return out;
+/** id + 1 of the archetype of a death pending in `slot` (0: none): pass to `archetypeFromEntity` before bitecs creates an entity there. */
+export function pendingArchetype(table: ArchetypeTable, slot: number): number {
+  return slot < table.pendingMark.length ? table.pendingMark[slot]! : 0;
 }
 
 /**
- * Registers the component set of the live entity in `slot`, just made through bitecs' ordinary path
- * (which keeps a slot's place in the queries where it was pending, as `bornSlot` does), as the
- * archetype under `key`, and counts the birth's disorder as `bornSlot` would (`pending`: from
- * `pendingQueries` before the entity was made), so the state does not depend on which path made it.
+ * Registers the component set of the live entity in `slot`, just made through bitecs' ordinary path,
+ * as the archetype under `key`. bitecs may have handed out a slot whose death is pending (`pending`:
+ * from `pendingArchetype` before the entity was made): bitecs keeps the slot's place in the queries
+ * its new components match; here it leaves the others, and the birth's disorder is counted, exactly
+ * as `bornSlot` would, so the state does not depend on which path made the entity.
  */
-export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: ReadonlySet<object>): Archetype {
+export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: number): Archetype {
   const ecs = ecsOf(world);
   slotArrays(table);
   const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
@@ -231,11 +245,17 @@ export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, 
   table.byKey.set(key, a);
   const mark = a.id + 1;
   table.slotArchetype[slot] = mark;
-  let inPlace = a.queries.length > 0;
-  for (const q of a.queries) if (!pending.has(q)) inPlace = false;
-  countBirth(table, inPlace);
+  if (pending !== 0 && pending !== mark) leaveOthers(table.list[pending - 1]!, a, slot);
+  if (table.pendingMark[slot] !== 0) table.pendingMark[slot] = 0;
+  countBirth(table, pending === mark);
   if (ecs.entityComponents instanceof Map) { table.staleSet[slot] = ecs.entityComponents.get(slot); table.staleArchetype[slot] = mark; }
   return a;
+}
+
+/** A slot pending as `old` reborn as `a`: out of the queries of `old` that `a` does not match. */
+function leaveOthers(old: Archetype, a: Archetype, e: number): void {
+  const qs = old.queries;
+  for (let i = 0; i < qs.length; i++) if (!matchesMasks(qs[i]!, a.masks)) qs[i]!.remove(e);
 }
 
 function countBirth(table: ArchetypeTable, inPlace: boolean): void {
@@ -306,18 +326,21 @@ export function bornSlot(world: PhysicsWorld, a: Archetype): number {
   }
   table.slotArchetype[e] = mark;
   // Queries: where the slot is still pending removal it keeps its place (bitecs' queryAddEntity).
-  // The pending list is read directly (one look-up instead of has() and remove()'s own has()).
-  const qs = a.queries;
-  let inPlace = qs.length > 0;
-  for (let i = 0; i < qs.length; i++) {
-    const q = qs[i]!, r = q.toRemove, rd = r.dense;
-    const at = rd.length === 0 ? -1 : r.sparse[e]!;
-    if (at !== undefined && at >= 0 && at < rd.length && rd[at] === e) {
-      const moved = rd.pop()!;
-      if (moved !== e) { rd[at] = moved; r.sparse[moved] = at; }
-    } else {
-      q.add(e);
-      inPlace = false;
+  // A pending death of the same archetype in this slot keeps its place in every query; another
+  // archetype's keeps it in the queries both match.
+  const pend = table.pendingMark[e]!;
+  let inPlace = pend === mark;
+  if (pend !== 0) {
+    table.pendingMark[e] = 0;
+    if (!inPlace) leaveOthers(table.list[pend - 1]!, a, e);
+  }
+  if (!inPlace) {
+    const qs = a.queries;
+    for (let i = 0; i < qs.length; i++) {
+      const q = qs[i]!, r = q.toRemove;
+      // A slot bitecs itself freed and still lists as pending keeps its place too (queryAddEntity).
+      if (r.dense.length !== 0 && r.has(e)) r.remove(e);
+      else q.add(e);
     }
   }
   countBirth(table, inPlace);
@@ -326,9 +349,9 @@ export function bornSlot(world: PhysicsWorld, a: Archetype): number {
 
 /**
  * Removes the live entity in `slot` (any component set; its archetype is registered on first use)
- * as bitecs' removeEntity would, without its per-call work: frees the slot, clears its masks, and lists
- * it as a pending removal in the queries it belongs to (committed by the next `query()`). The caller
- * has run the removal hooks. @returns false (nothing done) for an entity with bitecs relations: remove
+ * as bitecs' removeEntity would, without its per-call work: frees the slot, clears its masks, and
+ * leaves it pending in its queries until the next `query()` (see `settle`). The caller has run the
+ * removal hooks. @returns false (nothing done) for an entity with bitecs relations: remove
  * it with bitecs' removeEntity.
  */
 export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, e: number): boolean {
@@ -347,13 +370,10 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
     table.staleSet[e] = ecs.entityComponents.get(e);
     table.staleArchetype[e] = mark;
   }
-  // A live entity with exactly the archetype's components is in each of its queries and pending in none
-  // (bitecs' queryAddEntity clears a pending removal), so it is appended to each pending list directly.
-  const qs = a.queries, dirty = ecs.dirtyQueries;
-  for (let i = 0; i < qs.length; i++) {
-    const q = qs[i]!, r = q.toRemove;
-    if (r.dense.length === 0) { r.add(e); dirty.add(q); } else r.sparse[e] = r.dense.push(e) - 1;
-  }
+  if (table.pendingCount === table.pending.length) settle(world, table);
+  if (table.pendingCount === 0) ecs.dirtyQueries.add(table.sentinel as never);
+  table.pendingMark[e] = mark;
+  table.pending[table.pendingCount++] = e;
   const ix = ecs.entityIndex;
   const at = ix.sparse[e]!, last = ix.aliveCount - 1, lastId = ix.dense[last]!;
   ix.sparse[lastId] = at; ix.dense[at] = lastId;
@@ -367,6 +387,26 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
 function hasMasks(em: number[][], e: number, masks: Int32Array): boolean {
   for (let g = 0; g < em.length; g++) if ((em[g]![e] ?? 0) !== (g < masks.length ? masks[g]! : 0)) return false;
   return true;
+}
+
+/**
+ * Commits the pending deaths: each slot no birth reused leaves the queries of its archetype (bitecs'
+ * commitRemovals calls this through the sentinel, at the next `query()`; a snapshot or restore calls
+ * it first).
+ */
+export function settle(world: PhysicsWorld, table: ArchetypeTable): void {
+  if (table.pendingCount === 0) return;
+  const list = table.list, mark = table.pendingMark, pending = table.pending;
+  for (let k = 0; k < table.pendingCount; k++) {
+    const e = pending[k]!;
+    const m = mark[e]!;
+    if (m === 0) continue;
+    mark[e] = 0;
+    const qs = list[m - 1]!.queries;
+    for (let i = 0; i < qs.length; i++) qs[i]!.remove(e);
+  }
+  table.pendingCount = 0;
+  ecsOf(world).dirtyQueries.delete(table.sentinel as never);
 }
 
 /**

@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import { addParticle } from '../bodies.js';
 import { currentHandle, slotOf } from '../handles.js';
 import { assertInteger, assertOptions, describe } from '../validate.js';
-import { archetypeFromEntity, archetypes, bornSlots, pendingQueries, prepareArchetype } from './archetype.js';
+import { archetypeFromEntity, archetypes, bornSlots, pendingArchetype, prepareArchetype, settle } from './archetype.js';
 
 /** Key of the bare particle (Position and Velocity) in the world's archetype table; emitter kinds use 0..31. */
 const BARE_PARTICLE = 64;
@@ -44,6 +44,8 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
   const handles = new Float64Array(count);
   if (count === 0) return handles;
   const table = archetypes(world);
+  // Pending deaths (a call from a death hook) leave their queries first: bulk births append.
+  settle(world, table);
   const c = world.components;
   const at = (a: ArrayLike<number> | undefined, i: number, j: number): number => (a && j < d ? a[i * d + j]! : 0);
   const slots = new Int32Array(count);
@@ -52,7 +54,7 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
     let a = table.byKey.get(BARE_PARTICLE);
     if (a === undefined || !prepareArchetype(world, a)) {
       // The first of its kind (or a store without arrays): through bitecs, whose observers set it up.
-      const pending = pendingQueries(world, nextSlot(world));
+      const pending = pendingArchetype(table, nextSlot(world));
       const h = addParticle(world, {
         position: d === 3 ? [at(p, done, 0), at(p, done, 1), at(p, done, 2)] : [at(p, done, 0), at(p, done, 1)],
         velocity: d === 3 ? [at(v, done, 0), at(v, done, 1), at(v, done, 2)] : [at(v, done, 0), at(v, done, 1)],

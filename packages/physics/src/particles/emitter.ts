@@ -4,7 +4,7 @@ import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import { DEFAULT_MATERIAL } from '../components.js';
 import { nextSlot } from './bulk.js';
 import {
-  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, pendingQueries, prepareArchetype, type Archetype,
+  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, pendingArchetype, prepareArchetype, type Archetype,
 } from './archetype.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
@@ -387,7 +387,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
  * Returns its slot; the caller writes position, velocity, lifetime and look.
  */
 function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
-  const pending = pendingQueries(world, nextSlot(world));
+  const pending = pendingArchetype(archetypes(world), nextSlot(world));
   const c = world.components;
   const E = c.Emitter;
   const e = createSlot(world, 'emitter');
