@@ -9,15 +9,7 @@
  */
 import type { TestProject } from 'vitest/node';
 import { launchChromiumServer, startSite } from './chromium.mjs';
-
-declare module 'vitest' {
-  export interface ProvidedContext {
-    /** URL of the site served for this run, ending with '/'. */
-    bitphysicsSiteUrl: string;
-    /** WebSocket endpoint of the run's shared Chromium (playwright's BrowserServer). */
-    bitphysicsBrowserWs: string;
-  }
-}
+// The provided values' types (vitest's ProvidedContext) are declared in ./harness, which reads them.
 
 export default async function setup(project: TestProject): Promise<() => Promise<void>> {
   const site = await startSite({ lockTimeoutMs: 590_000 });

@@ -31,6 +31,15 @@ import { decodePng, distinctColors } from './png';
 
 export { readRegistry, type RegistryEntry };
 
+declare module 'vitest' {
+  export interface ProvidedContext {
+    /** URL of the site served for this run by ./global-setup, ending with '/'. */
+    bitphysicsSiteUrl: string;
+    /** WebSocket endpoint of the run's shared Chromium (playwright's BrowserServer), from ./global-setup. */
+    bitphysicsBrowserWs: string;
+  }
+}
+
 /** Viewport of pages opened by the harness unless given: small, so software WebGL stays quick. */
 export const DEFAULT_VIEWPORT = Object.freeze({ width: 800, height: 500 });
 
