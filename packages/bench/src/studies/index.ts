@@ -3,6 +3,7 @@ import { integratorsStudy } from './integrators.js';
 import { forcesStudy } from './forces.js';
 import { solarSystemStudy } from './solar-system.js';
 import { snapshotStudy } from './snapshot.js';
+import { elasticGasStudy } from './elastic-gas.js';
 
 /** Bench-only scenes (measurement studies, not worlds stepped side by side with peers) by name. */
 export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
@@ -10,6 +11,7 @@ export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
   [forcesStudy.name]: forcesStudy,
   [solarSystemStudy.name]: solarSystemStudy,
   [snapshotStudy.name]: snapshotStudy,
+  [elasticGasStudy.name]: elasticGasStudy,
 });
 
 /** The study called `name`, or undefined. */
