@@ -212,6 +212,8 @@ export interface ShapeScratch {
   maxX: Float64Array;
   maxY: Float64Array;
   spec: Float64Array;
+  /** Per collider: half the smaller extent of its start-of-step box plus its radius, m (how far it may move in a step and be met by speculative contacts; beyond that collision/continuous.ts sweeps it). */
+  size: Float64Array;
   /** Per collider: bit 1 its body moves this step (dynamic or kinematic), bit 2 it is a ball body without a shape. */
   flags: Uint8Array;
   /** Grid: cell of each collider's box corner, bucket starts, colliders sorted by bucket. */
@@ -231,7 +233,7 @@ function createShapeScratch(): ShapeScratch {
   const z = (): Float64Array => new Float64Array(0);
   const zi = (): Int32Array => new Int32Array(0);
   return {
-    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(), flags: new Uint8Array(0),
+    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(), size: z(), flags: new Uint8Array(0),
     cellX: zi(), cellY: zi(), bucket: zi(), sorted: zi(), bucketStart: new Int32Array(1), oversized: zi(),
     pairCount: 0, pairI: new Int32Array(256), pairJ: new Int32Array(256),
   };

@@ -31,9 +31,10 @@ import { jointKeepsApart } from '../joints/connected.js';
  *
  * Narrowphase (manifold.ts): each candidate pair's manifold at the start-of-step transforms, keeping a
  * point if its separation is below the speculative distance plus what the point's approach speed
- * closes in one step (speculative contacts, Catto GDC 2013; a fast body is stopped at the surface it
- * would cross, which is the continuous collision of bullets). Sensor pairs report overlap events
- * instead of manifolds.
+ * closes in one step, at most the two shapes' thickness between dynamic and static shapes (speculative
+ * contacts, Catto GDC 2013); a body that moves farther than its own size is swept after the solver
+ * (continuous.ts: the continuous collision of bullets). Sensor pairs report overlap events instead of
+ * manifolds.
  */
 export function shapeCollisionSystem(world: PhysicsWorld): void {
   const cs = world.collision;
@@ -64,7 +65,7 @@ function ensureScratch(sc: ShapeScratch, n: number): void {
   const f = (): Float64Array => new Float64Array(m);
   const i = (): Int32Array => new Int32Array(m);
   sc.shape = i(); sc.body = i(); sc.x = f(); sc.y = f(); sc.c = f(); sc.s = f();
-  sc.minX = f(); sc.minY = f(); sc.maxX = f(); sc.maxY = f(); sc.spec = f(); sc.flags = new Uint8Array(m);
+  sc.minX = f(); sc.minY = f(); sc.maxX = f(); sc.maxY = f(); sc.spec = f(); sc.size = f(); sc.flags = new Uint8Array(m);
   sc.cellX = i(); sc.cellY = i(); sc.bucket = i(); sc.sorted = i(); sc.oversized = i();
 }
 
@@ -143,7 +144,7 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
     reach = Math.sqrt(reach) + r;
     const size = 0.5 * Math.min(x1 - x0, y1 - y0) + r;
     const spec = spec0 < SPECULATIVE_FRACTION * size ? spec0 : SPECULATIVE_FRACTION * size;
-    sc.spec[i] = spec;
+    sc.spec[i] = spec; sc.size[i] = size;
     let pad = r + (spec < halfSpec ? spec : halfSpec);
     if (moving) {
       const sx = vx[b]!, sy = vy[b]!;
@@ -161,7 +162,7 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
 const SPECULATIVE_FRACTION = 0.04;
 
 /** Collider flags (ShapeScratch.flags). */
-const MOVING = 1, BALL = 2;
+export const MOVING = 1, BALL = 2;
 
 /** Colliders wider than this many times the mean box width skip the grid. */
 const OVERSIZED_FACTOR = 4;
@@ -278,7 +279,7 @@ function pushPair(sc: ShapeScratch, i: number, j: number): void {
 }
 
 /** Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide. */
-function shouldCollide(S: ShapeStore, a: number, aBall: boolean, b: number, bBall: boolean): boolean {
+export function shouldCollide(S: ShapeStore, a: number, aBall: boolean, b: number, bBall: boolean): boolean {
   const ga = aBall ? 0 : S.group[a]!, gb = bBall ? 0 : S.group[b]!;
   if (ga === gb && ga !== 0) return ga > 0;
   const ca = aBall ? 1 : S.category[a]!, ma = aBall ? 0xffffffff : S.mask[a]!;
@@ -290,7 +291,7 @@ const gA = createGeometry(), gB = createGeometry();
 const mf = createManifold();
 
 /** Reads collider `e`'s geometry: a shape from the store, or a ball body as a circle. */
-function colliderGeometry(world: PhysicsWorld, e: number, g: ConvexGeometry): boolean {
+export function colliderGeometry(world: PhysicsWorld, e: number, g: ConvexGeometry): boolean {
   const c = world.components, S = c.Shape;
   if (S.body.length > e && hasComponent(world, e, c.Shape)) {
     const n = S.count[e]!, o = SHAPE_STRIDE * e;
@@ -339,7 +340,15 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     const spec = sc.spec[i]! < sc.spec[j]! ? sc.spec[i]! : sc.spec[j]!;
     const dvx = vbx - vax, dvy = vby - vay;
     const reachA = 0.5 * (sc.maxX[i]! - sc.minX[i]! + sc.maxY[i]! - sc.minY[i]!), reachB = 0.5 * (sc.maxX[j]! - sc.minX[j]! + sc.maxY[j]! - sc.minY[j]!);
-    const closing = (Math.sqrt(dvx * dvx + dvy * dvy) + Math.abs(wa) * reachA + Math.abs(wb) * reachB) * h;
+    let closing = (Math.sqrt(dvx * dvx + dvy * dvy) + Math.abs(wa) * reachA + Math.abs(wb) * reachB) * h;
+    // Speculation reaches as far as the two shapes are thick; a faster approach between dynamic (or
+    // static) shapes is the continuous sweep's (continuous.ts): a normal chosen this far apart is often
+    // the wrong face's (a ghost contact that deflects a bullet over a wall's end). Balls and kinematic
+    // bodies are not swept, so they keep the whole margin.
+    if (!aBall && !bBall && tA !== BodyType.Kinematic && tB !== BodyType.Kinematic) {
+      const thick = sc.size[i]! + sc.size[j]!;
+      if (closing > thick) closing = thick;
+    }
     collideShapes(mf, gA, sc.x[i]!, sc.y[i]!, sc.c[i]!, sc.s[i]!, gB, sc.x[j]!, sc.y[j]!, sc.c[j]!, sc.s[j]!, spec + closing);
     if (mf.count === 0) continue;
     if (sensor) {

@@ -22,6 +22,7 @@ import { shapeCollisionSystem } from '../collision/shape-collision.js';
 import { shape3DCollisionSystem } from '../collision/shape3d-collision.js';
 import { shapes3DOf } from '../shapes3d/store.js';
 import { contactSolverSystem } from '../collision/solver.js';
+import { continuousCollisionSystem } from '../collision/continuous.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
 import { trustFiniteOutput } from './finite.js';
 import { query } from '../query.js';
@@ -47,7 +48,7 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
     ],
   },
   { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem, burnFuelSystem, ballastFillSystem] },
-  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, shape3DCollisionSystem, contactSolverSystem] },
+  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, shape3DCollisionSystem, contactSolverSystem, continuousCollisionSystem] },
   { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
 ]);
@@ -64,7 +65,7 @@ trustFiniteOutput([
   burnFuelSystem, ballastFillSystem, ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
 ]);
 trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem], 'linear');
-trustFiniteOutput([shapeCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
+trustFiniteOutput([shapeCollisionSystem, continuousCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
 trustFiniteOutput([shape3DCollisionSystem], 'all', (world) => world.dimensions !== 3 || shapes3DOf(world)?.active !== true);
 trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
 
