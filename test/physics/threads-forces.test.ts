@@ -1,7 +1,8 @@
 import { afterEach, expect, test } from 'vitest';
 import {
   addBody, addShape, buildTree, createPhysicsWorld, disposeWorld, enableMutualGravity, galaxy, gravityFieldError,
-  MIN_PARALLEL_PER_THREAD, setAngularDamping, setDrag, setGravitation, stateHash, stepMany, treeFieldsSorted, worldTree,
+  evaluateForces, MIN_PARALLEL_PER_THREAD, setAngularDamping, setAttractor, setCentralForce, setDrag, setGravitation, stateHash, stepMany,
+  treeFieldsSorted, worldTree,
   type PhysicsWorld, type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 import { Rng } from '../../packages/physics/src/rng.js';
@@ -114,14 +115,14 @@ test('3D mutual gravity by Barnes-Hut on 2 threads: identical state; total momen
   expect(Math.hypot(px, py, pz) / scale).toBeLessThan(1e-12);
 }, 60_000);
 
-test('linear and quadratic drag and angular damping on an adaptive 2-thread pool: the one-thread state; linear drag decays as (1 - k h / m)^n', () => {
+test('drag, angular damping, central forces and an attractor on an adaptive 2-thread pool: the one-thread state and forces; a body\'s force is the sum of its laws', () => {
   // The adaptive choice runs each loop on the threads at its first three calls and on one thread at
   // the next two (threads/adaptive.ts): five steps take every loop both ways.
   const n = 2 * MIN_PARALLEL_PER_THREAD + 33;
-  const h = 1 / 60, steps = 5;
   const run = (threads: number): [string, PhysicsWorld] => {
     const world = createPhysicsWorld({ dimensions: 2, capacity: n, gravity: [0, 0], threads });
     worlds.push(world);
+    setGravitation(world, { constant: 1 });
     const rng = new Rng(21);
     for (let i = 0; i < n; i++) {
       const e = addBody(world, { position: [rng.range(-50, 50), rng.range(-50, 50)], velocity: [rng.range(-9, 9), rng.range(-9, 9)], mass: rng.range(0.5, 2) });
@@ -133,28 +134,40 @@ test('linear and quadratic drag and angular damping on an adaptive 2-thread pool
         world.components.AngularVelocity.z[e] = rng.range(-5, 5);
         setAngularDamping(world, e, rng.range(0, 0.3));
       }
+      setCentralForce(world, e, { centre: [1, 2], k: -0.3, n: i % 2 === 0 ? 3 : 1 });
+      if (i === 7) setAttractor(world, e, { mass: 50, softening: 2 });
     }
-    stepMany(world, steps);
-    return [stateHash(world), world];
+    stepMany(world, 5);
+    evaluateForces(world);
+    return [stateHash(world) + hashForces(world), world];
   };
   const [one] = run(1);
   const [two, world] = run(2);
   expect(world.threadPool!.runs).toBeGreaterThan(0);
   expect(two).toBe(one);
-  // Body 4 (i = 3) has linear drag only, no gravity: semi-implicit Euler multiplies its velocity by
-  // (1 - k h / m) each step; rounding over 5 steps stays below 1e-12 relative.
-  const rng = new Rng(21);
-  let v0 = 0;
-  for (let i = 0; i <= 3; i++) {
-    rng.range(-50, 50); rng.range(-50, 50);
-    const vx = rng.range(-9, 9); rng.range(-9, 9); rng.range(0.5, 2);
-    if (i === 3) v0 = vx;
-    if (i % 3 === 0) { if (i % 1000 !== 0) rng.range(0, 2); } else if (i % 3 === 1) { if (i % 1000 !== 1) rng.range(0, 0.5); } else { rng.range(0, 1); rng.range(0, 0.2); rng.range(-5, 5); rng.range(0, 0.3); }
-  }
-  const e = 4, c = world.components;
-  const factor = 1 - (c.LinearDrag.k[e]! * h) / c.Mass.value[e]!;
-  expect(c.Velocity.x[e]! / (v0 * factor ** steps) - 1).toBeCloseTo(0, 12);
+  // Independent check at the final state: body 16 (i = 15: linear drag, central force with n = 1)
+  // feels -k v + k_c r^(n-2) (x - c) - G M m (x - x_a) / (|x - x_a|^2 + eps^2)^(3/2), to rounding (1e-12).
+  const c = world.components, e = 16, a = 8;
+  const x = c.Position.x[e]!, y = c.Position.y[e]!, m = c.Mass.value[e]!, k = c.LinearDrag.k[e]!;
+  const cx = x - 1, cy = y - 2, r = Math.hypot(cx, cy);
+  const ax = x - c.Position.x[a]!, ay = y - c.Position.y[a]!, d2 = ax * ax + ay * ay + 4;
+  const g = (-50 * m) / (d2 * Math.sqrt(d2));
+  const fx = -k * c.Velocity.x[e]! - 0.3 * cx / r + g * ax, fy = -k * c.Velocity.y[e]! - 0.3 * cy / r + g * ay;
+  expect(c.Force.x[e]! / fx - 1).toBeCloseTo(0, 12);
+  expect(c.Force.y[e]! / fy - 1).toBeCloseTo(0, 12);
 }, 60_000);
+
+/** Every bit of the force accumulators, as text (the state hash does not cover forces). */
+function hashForces(world: PhysicsWorld): string {
+  const f = world.components.Force;
+  let h = 0;
+  const bits = new Uint32Array(new Float64Array([0]).buffer);
+  const one = new Float64Array(bits.buffer);
+  for (let e = 0; e < f.x.length; e++) {
+    for (const v of [f.x[e]!, f.y[e]!]) { one[0] = v; h = (Math.imul(h ^ bits[0]!, 0x01000193) ^ bits[1]!) >>> 0; }
+  }
+  return ` forces ${h.toString(16)}`;
+}
 
 test('a world with nothing to collide does not check its bodies again after the collide stage', () => {
   for (const dimensions of [2, 3] as const) {

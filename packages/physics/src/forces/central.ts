@@ -1,6 +1,10 @@
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
+import { runParallel } from '../threads/parallel.js';
+import { KERNEL } from '../threads/kernels.js';
+
+const NO_PARAMS: number[] = [];
 
 /**
  * General central force F = k r^(n-1) r_hat about each body's centre (cx, cy, cz): written as
@@ -14,6 +18,8 @@ export const centralForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const C = c.CentralForce;
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
   const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  // On the world's threads when that pays (threads/kernels.ts centralForce: the same arithmetic).
+  if (runParallel(world, 'centralForceSystem', KERNEL.centralForce, [C.cx, C.cy, C.cz, C.k, C.n, px, py, pz, fx, fy, fz], NO_PARAMS, ents.length, ents) !== null) return;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const dx = px[e]! - C.cx[e]!, dy = py[e]! - C.cy[e]!, dz = pz[e]! - C.cz[e]!;

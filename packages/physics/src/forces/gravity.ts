@@ -5,6 +5,17 @@ import { inverseSquarePairs } from './pairwise.js';
 import { barnesHutGravity } from './barnes-hut.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
+import { MIN_PARALLEL_PER_THREAD } from '../threads/parallel.js';
+import { sharedFloat64 } from '../threads/pool.js';
+
+const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();
+
+/** The world's packed attractor list for the threads (6 slots a source), on shared memory, grown by doubling. */
+function attractorSources(world: PhysicsWorld, n: number): Float64Array {
+  let S = sourcesOf.get(world);
+  if (S === undefined || S.length < 6 * n) { S = sharedFloat64(6 * Math.max(n, 2 * (S ? S.length / 6 : 4))); sourcesOf.set(world, S); }
+  return S;
+}
 
 /**
  * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator
@@ -61,6 +72,16 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
   const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
   const M = c.Attractor.mass, soft = c.Attractor.softening;
+  // On the world's threads when that pays: each body sums its sources in the same order
+  // (threads/kernels.ts attractors), so the forces are the one-thread ones to the bit.
+  if (world.threadPool !== null && bodies.length >= 2 * MIN_PARALLEL_PER_THREAD) {
+    const S = attractorSources(world, sources.length);
+    for (let s = 0; s < sources.length; s++) {
+      const a = sources[s]!, o = 6 * s;
+      S[o] = a; S[o + 1] = px[a]!; S[o + 2] = py[a]!; S[o + 3] = pz[a]!; S[o + 4] = G * M[a]!; S[o + 5] = soft[a]! * soft[a]!;
+    }
+    if (runParallel(world, 'attractorSystem', KERNEL.attractors, [S, px, py, pz, m, fx, fy, fz], [sources.length], bodies.length, bodies) !== null) return;
+  }
   for (let s = 0; s < sources.length; s++) {
     const a = sources[s]!;
     const xa = px[a]!, ya = py[a]!, za = pz[a]!, gm = G * M[a]!, eps2 = soft[a]! * soft[a]!;

@@ -216,6 +216,54 @@ function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array
 }
 
 /**
+ * Central force (forces/central.ts): F += k r^(n-2) (x - c), skipped at r = 0. A: cx, cy, cz, k, n
+ * (CentralForce), px, py, pz, fx, fy, fz. P unused. Returns 0.
+ */
+function centralForce(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const cx = A[0] as Float64Array, cy = A[1] as Float64Array, cz = A[2] as Float64Array, K = A[3] as Float64Array, N = A[4] as Float64Array;
+  const px = A[5] as Float64Array, py = A[6] as Float64Array, pz = A[7] as Float64Array;
+  const fx = A[8] as Float64Array, fy = A[9] as Float64Array, fz = A[10] as Float64Array;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const dx = px[e]! - cx[e]!, dy = py[e]! - cy[e]!, dz = pz[e]! - cz[e]!;
+    const r2 = dx * dx + dy * dy + dz * dz;
+    if (r2 === 0) continue;
+    const n = N[e]!;
+    const k = K[e]! * (n === 2 ? 1 : Math.pow(r2, 0.5 * (n - 2)));
+    fx[e] = fx[e]! + k * dx; fy[e] = fy[e]! + k * dy; fz[e] = fz[e]! + k * dz;
+  }
+  return P.length * 0;
+}
+
+/**
+ * Attractors (forces/gravity.ts): each body gets -G M m (x - x_a) / (r^2 + eps^2)^(3/2) from every
+ * source a in the sources' order (itself excepted). A: sources (Float64, 6 slots a source: entity
+ * id, x, y, z (m), G M (m^3 s^-2), eps^2 (m^2)), px, py, pz, m, fx, fy, fz. P: 0 source count.
+ * Returns 0.
+ */
+function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const S = A[0] as Float64Array;
+  const px = A[1] as Float64Array, py = A[2] as Float64Array, pz = A[3] as Float64Array, m = A[4] as Float64Array;
+  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const ns = P[0]!;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const b = list[i]!;
+    for (let s = 0; s < ns; s++) {
+      const o = s * 6;
+      if (b === S[o]) continue;
+      const dx = px[b]! - S[o + 1]!, dy = py[b]! - S[o + 2]!, dz = pz[b]! - S[o + 3]!;
+      const r2 = dx * dx + dy * dy + dz * dz + S[o + 5]!;
+      if (r2 === 0) continue;
+      const k = (-S[o + 4]! * m[b]!) / (r2 * Math.sqrt(r2));
+      fx[b] = fx[b]! + k * dx; fy[b] = fy[b]! + k * dy; fz[b] = fz[b]! + k * dz;
+    }
+  }
+  return 0;
+}
+
+/**
  * Finiteness probe of the step's stage checks (pipeline/finite.ts): the sum of a[e] * 0 over every
  * array of A and every entity of the range; 0 when all are finite, NaN as soon as one is not (the
  * order of the sum cannot change that). P unused.
@@ -234,7 +282,7 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
   barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeys: 11, treeForces: 12,
-  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, treeOrder: 17, leafMoments: 18, radixHistogram: 19, radixScatter: 20,
+  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, treeOrder: 17, leafMoments: 18, radixHistogram: 19, radixScatter: 20, centralForce: 21, attractors: 22,
 });
 
 /**
@@ -257,5 +305,5 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
-  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, treeOrder, leafMoments, radixHistogram, radixScatter,
+  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, treeOrder, leafMoments, radixHistogram, radixScatter, centralForce, attractors,
 ]);
