@@ -102,6 +102,7 @@ const COLORS: Record<SceneName, number[]> = {
 function dress(): void {
   const colors = COLORS[handles.scene];
   handles.parts.forEach((b, i) => renderer.setColor(b, colors[i % colors.length]!));
+  for (const b of handles.statics) renderer.setColor(b, handles.scene === 'tumble' ? 0x8d6748 : 0x6b7385);
 }
 dress();
 shell.onWorldChange(() => { drag.release(); dress(); });
@@ -254,7 +255,7 @@ function frame(): void {
       break;
     }
     case 'ragdoll': {
-      set(0, '11 capsules, 4 swing cones, 4 shoulder/hip cones, 4 hinges');
+      set(0, '11 capsules: 6 ball joints with swing cones (spine, neck, shoulders, hips), 4 limited hinges (elbows, knees)');
       set(1, `pelvis height ${c.Position.y[b]!.toFixed(2)} m`);
       set(2, 'Space kicks it and throws a ball');
       break;

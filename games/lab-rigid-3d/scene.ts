@@ -39,6 +39,8 @@ export interface LabHandles {
   scene: SceneName;
   /** Every dynamic body of the scene. */
   bodies: number[];
+  /** The static bodies (the table, the steps). */
+  statics: number[];
   /** tumble: the thrown box; stack: the top box; dominoes: the first; top: the top; ragdoll: the pelvis. */
   main: number;
   /** stack: the boxes bottom up; dominoes: the dominoes in order; ragdoll: its parts. */
@@ -76,7 +78,7 @@ export function buildLab(world: PhysicsWorld, scene: SceneName, options: LabOpti
   if (!(tilt > 0 && tilt <= 1.4)) throw new RangeError(`buildLab: tilt must be in (0, 1.4], got ${tilt}`);
   if (!(mu >= 0 && Number.isFinite(mu))) throw new RangeError(`buildLab: friction must be >= 0, got ${mu}`);
   addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: mu });
-  const h: LabHandles = { scene, bodies: [], main: 0, parts: [], headings: [], upAxes: [], top: null };
+  const h: LabHandles = { scene, bodies: [], statics: [], main: 0, parts: [], headings: [], upAxes: [], top: null };
   switch (scene) {
     case 'tumble': tumble(world, h, mu); break;
     case 'stack': stack(world, h, mu); break;
@@ -100,6 +102,7 @@ function yaw(a: number): [number, number, number, number] {
 /** A static table (1.6 x 1 m top at 0.8 m, four legs) and a 0.3 m box thrown onto it spinning. */
 function tumble(world: PhysicsWorld, h: LabHandles, mu: number): void {
   const table = addBody(world, { position: [0, 0.8, 0], static: true });
+  h.statics.push(table);
   addShape3D(world, table, { type: 'box', halfExtents: [0.8, 0.04, 0.5], friction: mu });
   for (const [x, z] of [[-0.7, -0.4], [0.7, -0.4], [-0.7, 0.4], [0.7, 0.4]] as const) {
     addShape3D(world, table, { type: 'box', halfExtents: [0.04, 0.38, 0.04], offset: [x, -0.42, z], friction: mu });
@@ -180,6 +183,7 @@ function ragdoll(world: PhysicsWorld, h: LabHandles, mu: number): void {
   for (let i = 0; i < 5; i++) {
     const x1 = 0.5 * i - 0.25, x2 = 3, top = 0.3 * (i + 1);
     const s = addBody(world, { position: [(x1 + x2) / 2, top / 2, 0], static: true });
+    h.statics.push(s);
     addShape3D(world, s, { type: 'box', halfExtents: [(x2 - x1) / 2, top / 2, 1], friction: mu });
   }
   const x0 = 2.5, y0 = 2.6;
@@ -211,7 +215,9 @@ function ragdoll(world: PhysicsWorld, h: LabHandles, mu: number): void {
   cone(pelvis, thighR, [x0, y0 - 0.2, 0.12], 1.2);
   addHingeJoint3D(world, { a: thighL, b: shinL, anchor: [x0, y0 - 0.63, -0.12], axis: [0, 0, 1], lower: 0, upper: 2.4 });
   addHingeJoint3D(world, { a: thighR, b: shinR, anchor: [x0, y0 - 0.63, 0.12], axis: [0, 0, 1], lower: 0, upper: 2.4 });
-  setVelocity(world, pelvis, [-1, 0, 0.3]);
+  // A shove toward the edge of the landing: it tumbles down the steps.
+  setVelocity(world, pelvis, [-3, 1, 0.3]);
+  setVelocity(world, chest, [-3.5, 1, 0.3]);
   h.main = pelvis;
 }
 
