@@ -239,14 +239,16 @@ export function pendingArchetype(table: ArchetypeTable, slot: number): number {
  */
 export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: number): Archetype {
   const ecs = ecsOf(world);
-  slotArrays(table);
   const a = archetypeOfMasks(world, ecs, table, masksOf(ecs, slot));
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
   table.byKey.set(key, a);
   const mark = a.id + 1;
-  table.slotArchetype[slot] = mark;
-  if (pending !== 0 && pending !== mark) leaveOthers(table.list[pending - 1]!, a, slot);
-  if (table.pendingMark[slot] !== 0) table.pendingMark[slot] = 0;
+  // The per-slot arrays exist once anything churned (bulk creation alone never needs them).
+  if (table.slotArchetype.length !== 0) {
+    table.slotArchetype[slot] = mark;
+    if (pending !== 0 && pending !== mark) leaveOthers(table.list[pending - 1]!, a, slot);
+    table.pendingMark[slot] = 0;
+  }
   countBirth(table, pending === mark);
   if (ecs.entityComponents instanceof Map) { table.staleSet[slot] = ecs.entityComponents.get(slot); table.staleArchetype[slot] = mark; }
   return a;

@@ -65,10 +65,15 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
       continue;
     }
     const n = count - done;
+    const fresh = world.entityIndex.maxId; // slots above it were never used: their z and previous state are 0
     bornSlots(world, a, n, slots);
     const X = c.Position.x, Y = c.Position.y, Z = c.Position.z, OX = c.PreviousPosition.x, OY = c.PreviousPosition.y, OZ = c.PreviousPosition.z;
     const VX = c.Velocity.x, VY = c.Velocity.y, VZ = c.Velocity.z;
-    for (let k = 0; k < n; k++) { const e = slots[k]!; Z[e] = 0; OZ[e] = 0; VZ[e] = 0; handles[done + k] = currentHandle(world, e); }
+    for (let k = 0; k < n; k++) {
+      const e = slots[k]!;
+      if (e <= fresh) { Z[e] = 0; OZ[e] = 0; VZ[e] = 0; }
+      handles[done + k] = currentHandle(world, e);
+    }
     // One array at a time: coordinate j of particle i is at i * d + j.
     const fill = (T: Float64Array, U: Float64Array | null, src: ArrayLike<number> | undefined, j: number) => {
       for (let k = 0; k < n; k++) {
