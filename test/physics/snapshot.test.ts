@@ -2,7 +2,7 @@ import { describe, expect, test } from 'vitest';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import {
-  addBody, createPhysicsWorld, restore, setGravity, snapshot, stateHash, step, stepMany, type PhysicsWorld, type WorldSnapshot,
+  addBody, addComponent, createPhysicsWorld, restore, setGravity, snapshot, stateHash, step, stepMany, type PhysicsWorld, type WorldSnapshot,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
@@ -143,6 +143,15 @@ describe('snapshot captures every piece of state', () => {
       }
     }
     expect(copied).toBeGreaterThan(60);
+  });
+
+  test('an entity with a component outside world.components is refused, not silently dropped', () => {
+    const world = createPhysicsWorld({ capacity: 10 });
+    addBody(world, { position: [0, 1] });
+    const e = addBody(world, { position: [1, 1] });
+    expect(() => snapshot(world)).not.toThrow();
+    addComponent(world, e, { foreign: new Float64Array(11) });
+    expect(() => snapshot(world)).toThrow(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
   });
 
   test('a store or world field added later is captured and restored without changes to snapshot code', () => {

@@ -413,11 +413,14 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   // Component bit layout; a component outside world.components may not be on any live entity.
   const layout: Encoded[] = [];
   const known = new Int32Array(ctx.entityMasks.length);
+  let foreign = false;
   for (const data of ctx.componentMap.values()) {
     const name = names.get(data.ref);
     if (name !== undefined) {
       layout.push([name, data.generationId, bitIndex(data.bitflag)]);
       known[data.generationId]! |= data.bitflag;
+    } else {
+      foreign = true;
     }
   }
   const masks: Encoded[] = [];
@@ -426,7 +429,8 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
     const unknown = ~known[g]!;
     const n = Math.min(src.length, maxId + 1);
     let bad = 0;
-    for (let e = 0; e < n; e++) bad |= (src[e] ?? 0) & unknown;
+    // Only a world with a registered component outside world.components can have a foreign bit set.
+    if (foreign) for (let e = 0; e < n; e++) bad |= (src[e] ?? 0) & unknown;
     if (bad !== 0) {
       let e = 0;
       while (((src[e] ?? 0) & unknown) === 0) e++;
