@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
 import { BodyType } from '../collision/broadphase.js';
 import { JointFlag, JointType } from './store.js';
-import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state.js';
+import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state.js';
 import { removeJointUnchecked } from './remove.js';
 import { currentHandle } from '../handles.js';
 
@@ -42,6 +42,8 @@ const EID = 0, IA = 1, IB = 2, TF = 3;
 const WELD_ANGULAR_SOFT = 8;
 /** Row type of a distance joint moved to the point links (the general loops skip it). */
 const POINT_LINK = 255;
+/** Row type of a revolute joint moved to the pins (no spring, motor or limit; the general loops skip it). */
+const PIN = 254;
 
 const enum Class { Dynamic = 0, Kinematic = 1, Static = 2, Sleeping = 3 }
 const ROTATES = 4;
@@ -167,8 +169,8 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     pose[k * 3] = Math.cos(t); pose[k * 3 + 1] = Math.sin(t); pose[k * 3 + 2] = t;
   }
   const rows = js.rows, ri = js.rowInts, imp = js.impulses;
-  const lf = js.links, lint = js.linkInts;
-  let links = 0;
+  const lf = js.links, lint = js.linkInts, pf = js.pins, pint = js.pinInts;
+  let links = 0, pins = 0;
   const px = c.Position.x, py = c.Position.y, ang = c.Angle.value;
   const jointHertz = Math.min(js.settings.hertz, 0.25 / hs), jointZeta = js.settings.dampingRatio;
   const warm = js.settings.warmStarting;
@@ -248,6 +250,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
       }
       case JointType.Revolute:
         rows[o + KAX] = angularMass;
+        if ((flags & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) === 0) ri[q + TF] = PIN;
         break;
       case JointType.Prismatic:
       case JointType.Wheel: {
@@ -276,8 +279,17 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     }
     const base = j * IMPULSES;
     for (let s = 0; s < IMPULSES; s++) rows[o + ILX + s] = warm ? imp[base + s]! : 0;
+    if (ri[q + TF] === PIN) {
+      const f = pins * PIN_FLOATS, i = pins * PIN_INTS;
+      pf[f] = rAx; pf[f + 1] = rAy; pf[f + 2] = rBx; pf[f + 3] = rBy; pf[f + 4] = dcx; pf[f + 5] = dcy;
+      pf[f + 6] = rows[o + ILX]!; pf[f + 7] = rows[o + ILY]!;
+      pint[i] = ia; pint[i + 1] = ib; pint[i + 2] = r;
+      pins++;
+    }
   }
   js.linkCount = links;
+  js.pinCount = pins;
+  js.generalCount = n - links - pins;
 }
 
 /** Wraps an angle into [-pi, pi]. */
@@ -328,10 +340,23 @@ export function warmStartJoints(world: PhysicsWorld): void {
     sb[oA] = sb[oA]! - mA * Px; sb[oA + 1] = sb[oA + 1]! - mA * Py;
     sb[oB] = sb[oB]! + mB * Px; sb[oB + 1] = sb[oB + 1]! + mB * Py;
   }
-  for (let r = 0; r < n; r++) {
+  const pf = js.pins, pint = js.pinInts;
+  for (let l = 0, m = js.pinCount; l < m; l++) {
+    const f = l * PIN_FLOATS, i = l * PIN_INTS;
+    const Px = pf[f + 6]!, Py = pf[f + 7]!;
+    if (Px === 0 && Py === 0) continue;
+    const ia = pint[i]!, ib = pint[i + 1]!, oA = ia * 8, oB = ib * 8;
+    const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
+    const rAx = cA * pf[f]! - sA * pf[f + 1]!, rAy = sA * pf[f]! + cA * pf[f + 1]!;
+    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!, rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
+    const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
+    sb[oA] = sb[oA]! - mA * Px; sb[oA + 1] = sb[oA + 1]! - mA * Py; sb[oA + 2] = sb[oA + 2]! - iA * (rAx * Py - rAy * Px);
+    sb[oB] = sb[oB]! + mB * Px; sb[oB + 1] = sb[oB + 1]! + mB * Py; sb[oB + 2] = sb[oB + 2]! + iB * (rBx * Py - rBy * Px);
+  }
+  for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const ia = ri[q + IA]!, ib = ri[q + IB]!, type = ri[q + TF]! & 255;
-    if (type === POINT_LINK) continue;
+    if (type === POINT_LINK || type === PIN) continue;
     const oA = ia * 8, oB = ib * 8;
     const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
     const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
@@ -397,11 +422,12 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
   const sb = world.collision.bodyState, rot = js.rotation, rows = js.rows, ri = js.rowInts;
   const invH = 1 / hs;
   solvePointLinks(world, invH, useBias);
-  for (let r = 0; r < n; r++) {
+  solvePins(world, useBias);
+  for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const ia = ri[q + IA]!, ib = ri[q + IB]!, tf = ri[q + TF]!;
     const type = tf & 255, flags = tf >> 8;
-    if (type === POINT_LINK) continue;
+    if (type === POINT_LINK || type === PIN) continue;
     const oA = ia * 8, oB = ib * 8;
     const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
     let vAx = sb[oA]!, vAy = sb[oA + 1]!, wA = sb[oA + 2]!, vBx = sb[oB]!, vBy = sb[oB + 1]!, wB = sb[oB + 2]!;
@@ -652,6 +678,46 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
 }
 
 /**
+ * The pins' pass: the revolute joint's point-to-point block (2 x 2 effective mass from the current
+ * anchors), soft while `useBias` (Box2D's joint softness), exactly as the general loop solves it.
+ */
+function solvePins(world: PhysicsWorld, useBias: boolean): void {
+  const js = world.joints;
+  const m = js.pinCount;
+  if (m === 0) return;
+  const sb = world.collision.bodyState, rot = js.rotation, pf = js.pins, pint = js.pinInts;
+  const jb = useBias ? js.softness[0]! : 0, jm = useBias ? js.softness[1]! : 1, ji = useBias ? js.softness[2]! : 0;
+  for (let l = 0; l < m; l++) {
+    const f = l * PIN_FLOATS, i = l * PIN_INTS;
+    const ia = pint[i]!, ib = pint[i + 1]!, oA = ia * 8, oB = ib * 8;
+    const mA = sb[oA + 5]!, iA = sb[oA + 6]!, mB = sb[oB + 5]!, iB = sb[oB + 6]!;
+    const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
+    const rAx = cA * pf[f]! - sA * pf[f + 1]!, rAy = sA * pf[f]! + cA * pf[f + 1]!;
+    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!, rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
+    let vAx = sb[oA]!, vAy = sb[oA + 1]!, wA = sb[oA + 2]!, vBx = sb[oB]!, vBy = sb[oB + 1]!, wB = sb[oB + 2]!;
+    const cdx = vBx - wB * rBy - vAx + wA * rAy, cdy = vBy + wB * rBx - vAy - wA * rAx;
+    let bx = 0, by = 0;
+    if (useBias) {
+      bx = jb * (sb[oB + 3]! - sb[oA + 3]! + pf[f + 4]! + rBx - rAx);
+      by = jb * (sb[oB + 4]! - sb[oA + 4]! + pf[f + 5]! + rBy - rAy);
+    }
+    const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+    const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+    const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+    let det = k11 * k22 - k12 * k12;
+    if (det !== 0) det = 1 / det;
+    const ex = cdx + bx, ey = cdy + by;
+    const sx = det * (k22 * ex - k12 * ey), sy = det * (k11 * ey - k12 * ex);
+    const ix = -jm * sx - ji * pf[f + 6]!, iy = -jm * sy - ji * pf[f + 7]!;
+    pf[f + 6] = pf[f + 6]! + ix; pf[f + 7] = pf[f + 7]! + iy;
+    vAx -= mA * ix; vAy -= mA * iy; wA -= iA * (rAx * iy - rAy * ix);
+    vBx += mB * ix; vBy += mB * iy; wB += iB * (rBx * iy - rBy * ix);
+    sb[oA] = vAx; sb[oA + 1] = vAy; sb[oA + 2] = wA; sb[oA + 7] = 1;
+    sb[oB] = vBx; sb[oB + 1] = vBy; sb[oB + 2] = wB; sb[oB + 7] = 1;
+  }
+}
+
+/**
  * The point links' pass: the distance joint's rod (soft while `useBias`, Box2D's joint softness) or
  * rope (pulls only, speculative while slack), with the anchors' offset fixed within the step.
  */
@@ -716,10 +782,15 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
     const f = l * LINK_FLOATS, o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
     if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!; else rows[o + IUP] = -lf[f + 4]!;
   }
+  const pf = js.pins, pint = js.pinInts;
+  for (let l = 0, m = js.pinCount; l < m; l++) {
+    const f = l * PIN_FLOATS, o = pint[l * PIN_INTS + 2]! * ROW_FLOATS;
+    rows[o + ILX] = pf[f + 6]!; rows[o + ILY] = pf[f + 7]!;
+  }
   for (let r = 0; r < n; r++) {
     const o = r * ROW_FLOATS, q = r * ROW_INTS;
     const j = ri[q + EID]!, ia = ri[q + IA]!, ib = ri[q + IB]!, tf = ri[q + TF]!;
-    const type = tf === POINT_LINK ? JointType.Distance : tf & 255, flags = tf >> 8;
+    const type = tf === POINT_LINK ? JointType.Distance : tf === PIN ? JointType.Revolute : tf & 255, flags = tf >> 8;
     const oA = ia * 8, oB = ib * 8;
     const cA = rot[ia * 3]!, sA = rot[ia * 3 + 1]!, cB = rot[ib * 3]!, sB = rot[ib * 3 + 1]!;
     const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!, rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
