@@ -262,6 +262,24 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     }
   });
 
+  /**
+   * The 2D pyramid against its three peers: every engine runs the same layout and reports the quality
+   * fields from its own final poses. A base-3 pyramid (6 boxes) on its exact start barely moves in 30
+   * steps in any engine; before the Box2D v2 peers' boxes were shrunk by their 0.01 m polygon skin, the
+   * rows started inside each other's skins and planck and box2d-wasm pushed the top up by 0.04 m.
+   */
+  it('pyramid --vs rapier2d,planck,box2d-wasm runs all three peers on the same 1 m boxes', async () => {
+    const run = await runCli(['--scene', 'pyramid', '--count', '3', '--steps', '30', '--vs', 'rapier2d,planck,box2d-wasm', '--json']);
+    expect(run.code).toBe(0);
+    const lines = jsonLines(run.stdout);
+    expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'rapier2d', 'planck', 'box2d-wasm']);
+    for (const line of lines) {
+      expect(Math.abs(line.topDrop as number)).toBeLessThan(0.02);
+      expect(line.fallen).toBe(0);
+      expect(line.maxDrift as number).toBeLessThan(0.01);
+    }
+  });
+
   it('fireworks --json reports spawn and expiry every step', async () => {
     // 1,000 live particles reach steady churn after ~5 s, as at the default count: 360 warm-up steps.
     const run = await runCli(['--scene', 'fireworks', '--count', '1000', '--steps', '30', '--warmup', '360', '--json']);
