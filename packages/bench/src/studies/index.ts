@@ -4,6 +4,7 @@ import { forcesStudy } from './forces.js';
 import { solarSystemStudy } from './solar-system.js';
 import { snapshotStudy } from './snapshot.js';
 import { elasticGasStudy } from './elastic-gas.js';
+import { galtonStudy } from './galton.js';
 
 /** Bench-only scenes (measurement studies, not worlds stepped side by side with peers) by name. */
 export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
@@ -12,6 +13,7 @@ export const STUDIES: Readonly<Record<string, BenchStudy>> = Object.freeze({
   [solarSystemStudy.name]: solarSystemStudy,
   [snapshotStudy.name]: snapshotStudy,
   [elasticGasStudy.name]: elasticGasStudy,
+  [galtonStudy.name]: galtonStudy,
 });
 
 /** The study called `name`, or undefined. */
