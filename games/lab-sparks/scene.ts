@@ -163,7 +163,7 @@ export function stepSparks(s: Sparks): void {
   // The last step's contacts: after a step the solver has moved them into the warm-start cache
   // (`world.collision.contacts` is then the empty spare buffer), as the renderers' debug layers read them.
   const buf = s.world.collision.cache.rows;
-  const kind = buf.kind, feature = buf.feature, impact = buf.impactVelocity, pushed = buf.maxNormalImpulse;
+  const kind = buf.kind, feature = buf.feature, impact = buf.impactVelocity, pushed = buf.impulse;
   for (let i = 0; i < buf.count; i++) {
     if (kind[i] === ContactKind.Segment && (feature[i] === slotOf(s.floor) || feature[i] === slotOf(s.wall)) && impact[i]! < -1 && pushed[i]! > 0) s.bounces++;
   }

@@ -192,7 +192,7 @@ export function stepSplash(s: Splash): void {
   // Ground: contacts of a drop with the ground segment.
   const rows = world.collision.cache.rows;
   for (let i = 0; i < rows.count; i++) {
-    if (rows.kind[i] !== ContactKind.Segment || rows.feature[i] !== ground || rows.maxNormalImpulse[i]! <= 0) continue;
+    if (rows.kind[i] !== ContactKind.Segment || rows.feature[i] !== ground || rows.impulse[i]! <= 0) continue;
     const b = rows.b[i]!;
     if (em[b] !== rain && em[b] !== hand) continue;
     let seen = false;

@@ -72,7 +72,8 @@ export interface ContactBuffer {
   impulse: Float64Array;
   /**
    * Normal relative speed at impact, m/s (negative: approaching): the start-of-step speed plus what
-   * gravity adds across the speculative gap, so a bounce neither loses nor gains that energy.
+   * gravity adds across the speculative gap, so a bounce neither loses nor gains that energy; for a
+   * contact the impact stage bounced this step, the approach speed at its time of impact.
    */
   impactVelocity: Float64Array;
   /** Accumulated friction impulse along tangent 1, N s. */

@@ -445,6 +445,9 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, r
   const imA = sb[oa + im]!, imB = sb[ob + im]!, iiA = sb[oa + iI]!, iiB = sb[ob + iI]!;
   const ra = buf.ra[i]!, rb = buf.rb[i]!;
   const J = -(1 + e) * vn * nm;
+  // The row's first impact this step records its approach speed (measureApproach keeps it for a row
+  // that separates afterwards, so `impactVelocity` reports the hit, not the rebound).
+  if (buf.impulse[i] === 0) buf.impactVelocity[i] = vn;
   let Px = J * nx, Py = J * ny, Pz = J * nz;
   // Coulomb friction at the contact point, bounded by mu J (contact-point velocity v + w x r, r_A = ra n, r_B = -rb n).
   const mu = buf.frictionBound[i]!;

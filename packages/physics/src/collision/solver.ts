@@ -469,7 +469,9 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
 /**
  * Normal relative velocity of each contact at the start of the step after the impact stage (gravity
  * rewound), m/s, into `relativeVelocity`; and the speed at impact into `impactVelocity`:
- * v^2 = v0^2 - 2 a_n s across a gap s > 0 with the relative normal acceleration a_n of gravity.
+ * v^2 = v0^2 - 2 a_n s across a gap s > 0 with the relative normal acceleration a_n of gravity. A
+ * row the impact stage bounced (impulse > 0) that now separates keeps the approach speed that stage
+ * recorded at its time of impact (restitution leaves separating rows alone).
  */
 function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
@@ -479,13 +481,15 @@ function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
   const g = world.gravity;
   const gx = g[0]!, gy = g[1]!, gz = g[2]!;
   const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
-  const RV = buf.relativeVelocity, IV = buf.impactVelocity, S0 = buf.separation;
+  const RV = buf.relativeVelocity, IV = buf.impactVelocity, S0 = buf.separation, IMP = buf.impulse;
   for (let i = 0, n = buf.count; i < n; i++) {
     const oa = IA[i]! * S, ob = IB[i]! * S;
     const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
     let rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) rv += (sb[ob + 2]! - sb[oa + 2]!) * nz;
     RV[i] = rv;
+    // A row the impact stage bounced and that now separates keeps the approach speed of its impact.
+    if (IMP[i]! > 0 && rv >= 0) continue;
     const a = A[i]!, b = B[i]!;
     const gap = S0[i]!;
     const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
