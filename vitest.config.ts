@@ -1,14 +1,28 @@
 import { availableParallelism } from 'node:os';
 import { defineConfig } from 'vitest/config';
+import { BaseSequencer, type TestSpecification } from 'vitest/node';
 import { defaultClientConditions, defaultServerConditions } from 'vite';
+
+/**
+ * Runs the headless files first (longest first, side by side on every worker), then the browser
+ * files. Browser files run one at a time anyway (test/browser/harness.ts takes a lock: pages side by
+ * side in one software-rendered Chromium ran about four times slower each), so a worker that picked
+ * one early would wait for the lock instead of running headless files.
+ */
+class HeadlessFirst extends BaseSequencer {
+  override async sort(files: TestSpecification[]): Promise<TestSpecification[]> {
+    const sorted = await super.sort(files);
+    return [...sorted.filter((f) => f.project.name !== 'browser'), ...sorted.filter((f) => f.project.name === 'browser')];
+  }
+}
 
 // Workspace packages export their TypeScript sources under the 'bitphysics-source' condition, so
 // tests run against the sources without a build step.
 //
 // Two projects: `node` (everything headless) and `browser` (test/browser: pages in Chromium). The
 // browser project's global setup builds and serves the site once and starts one Chromium that its
-// files share. At least two workers even on a 2-core machine (vitest's default there is one): a
-// browser file spends much of its time waiting for frames, which a headless file fills.
+// files share, one file at a time. At least two workers even on a 2-core machine (vitest's default
+// there is one), so the headless files share the cores before the browser files start.
 export default defineConfig({
   resolve: { conditions: ['bitphysics-source', ...defaultClientConditions] },
   ssr: { resolve: { conditions: ['bitphysics-source', ...defaultServerConditions] } },
@@ -17,11 +31,18 @@ export default defineConfig({
     maxWorkers: Math.max(2, availableParallelism()),
     testTimeout: 60_000,
     hookTimeout: 120_000,
+    sequence: { sequencer: HeadlessFirst },
     projects: [
       { extends: true, test: { name: 'node', include: ['test/**/*.test.ts'], exclude: ['test/browser/**'] } },
       {
         extends: true,
-        test: { name: 'browser', include: ['test/browser/**/*.test.ts'], globalSetup: ['test/browser/global-setup.ts'] },
+        test: {
+          name: 'browser',
+          include: ['test/browser/**/*.test.ts'],
+          globalSetup: ['test/browser/global-setup.ts'],
+          // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
+          hookTimeout: 600_000,
+        },
       },
     ],
   },

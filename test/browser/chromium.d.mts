@@ -15,7 +15,7 @@ export declare function connectChromium(wsEndpoint: string): Promise<Browser>;
 /** A TCP port on 127.0.0.1 that was free a moment ago. */
 export declare function freePort(): Promise<number>;
 /** Takes the cross-process site lock (dist/site is shared). @returns its release function. @throws Error after timeoutMs. */
-export declare function acquireSiteLock(options?: { timeoutMs?: number }): Promise<() => void>;
+export declare function acquireSiteLock(options?: { timeoutMs?: number; name?: string }): Promise<() => void>;
 /** Builds and serves the site on a free port under the site lock. `url` ends with '/'. */
 export declare function startSite(options?: { lockTimeoutMs?: number }): Promise<{ url: string; stop: () => Promise<void> }>;
 /** One gallery entry, from games/<folder>/game.json. */

@@ -90,13 +90,14 @@ function pidAlive(pid) {
  * (scripts/serve.mjs `cacheDir`) is written by one at a time. Waits until
  * the holder (another test file or the thumbnail script) releases it; a lock whose process is gone
  * is taken over.
- * @param {{ timeoutMs?: number }} [options] how long to wait, ms (default 110 s).
+ * @param {{ timeoutMs?: number, name?: string }} [options] how long to wait, ms (default 110 s); which
+ *   lock ('site' by default; the browser test files take 'browser-lane' to run one at a time).
  * @returns {Promise<() => void>} a function that releases the lock (idempotent; also runs on exit).
  * @throws Error when the lock is still held after `timeoutMs`, naming the holder's pid.
  */
-export async function acquireSiteLock({ timeoutMs = 110_000 } = {}) {
+export async function acquireSiteLock({ timeoutMs = 110_000, name = 'site' } = {}) {
   const key = createHash('sha1').update(repoRoot).digest('hex').slice(0, 12);
-  const dir = join(tmpdir(), `bitphysics-site-${key}.lock`);
+  const dir = join(tmpdir(), `bitphysics-${name}-${key}.lock`);
   const owner = join(dir, 'owner');
   const deadline = Date.now() + timeoutMs;
   for (;;) {

@@ -11,14 +11,17 @@ import { join } from 'node:path';
 import * as esbuild from 'esbuild';
 import type { Browser } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchChromium, repoRoot } from './chromium.mjs';
+import { acquireSiteLock, launchChromium, repoRoot } from './chromium.mjs';
 
 let dir = '';
 let url = '';
 let server: esbuild.BuildContext | null = null;
 let browser: Browser | null = null;
+let releaseLane: (() => void) | undefined;
 
 beforeAll(async () => {
+  // One browser test file at a time (./harness).
+  releaseLane = await acquireSiteLock({ name: 'browser-lane', timeoutMs: 590_000 });
   dir = mkdtempSync(join(tmpdir(), 'bitphysics-scenery-'));
   await esbuild.build({
     entryPoints: [join(repoRoot, 'test', 'browser', 'fixtures', 'scenery.ts')],
@@ -30,12 +33,16 @@ beforeAll(async () => {
   const { port } = await server.serve({ host: '127.0.0.1', port: 0, servedir: dir });
   url = `http://127.0.0.1:${port}/`;
   browser = await launchChromium();
-}, 120_000);
+}, 600_000);
 
 afterAll(async () => {
-  await browser?.close();
-  await server?.dispose();
-  if (dir) rmSync(dir, { recursive: true, force: true });
+  try {
+    await browser?.close();
+    await server?.dispose();
+    if (dir) rmSync(dir, { recursive: true, force: true });
+  } finally {
+    releaseLane?.();
+  }
 });
 
 async function open(d: 2 | 3) {

@@ -9,8 +9,9 @@
  * console lines, so a page that never becomes ready fails in seconds with its reason, not at
  * vitest's hook timeout.
  *
- * Browser test files run side by side (vitest's workers); the site is built once a run, or reused
- * from the last run when no source changed since.
+ * Browser test files run one at a time (a cross-process lock taken in `Harness.start`; vitest.config.ts
+ * orders them after the headless files); the site is built once a run, or reused from the last run
+ * when no source changed since.
  *
  * @example
  * let h: Harness;
@@ -26,7 +27,7 @@
 import type { Browser, BrowserContext, Page } from 'playwright-core';
 import type { GameStats } from '../../games/shared/contract';
 import { inject } from 'vitest';
-import { connectChromium, launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
+import { acquireSiteLock, connectChromium, launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
 import { decodePng, distinctColors } from './png';
 
 export { readRegistry, type RegistryEntry };
@@ -67,10 +68,9 @@ export interface OpenOptions {
 }
 
 /**
- * Timeout for the `beforeAll` hook that calls `Harness.start`, ms. Without the shared setup (a run
- * whose config lacks ./global-setup) the file takes the site lock itself and may wait for another
- * holder (the thumbnail script) before it builds or reuses the site. Pass it as beforeAll's second
- * argument; the lock itself gives up 10 s earlier with a message naming the holder.
+ * Timeout for the `beforeAll` hook that calls `Harness.start`, ms: a file waits for the browser
+ * test file before it to finish (or, without the shared setup, for the site lock's holder). Pass it
+ * as beforeAll's second argument; the lock itself gives up 10 s earlier with a message naming the holder.
  */
 export const START_TIMEOUT_MS = 600_000;
 
@@ -126,7 +126,17 @@ export class Harness {
   static async start(): Promise<Harness> {
     const url = inject('bitphysicsSiteUrl');
     const ws = inject('bitphysicsBrowserWs');
-    if (url && ws) return new Harness(url, await connectChromium(ws), async () => undefined);
+    if (url && ws) {
+      // One browser test file at a time: pages side by side in one software-rendered Chromium ran
+      // about four times slower each (the run's headless files use the other workers meanwhile).
+      const release = await acquireSiteLock({ name: 'browser-lane', timeoutMs: START_TIMEOUT_MS - 10_000 });
+      try {
+        return new Harness(url, await connectChromium(ws), async () => release());
+      } catch (error) {
+        release();
+        throw error;
+      }
+    }
     const site = await startSite({ lockTimeoutMs: START_TIMEOUT_MS - 10_000 });
     try {
       const browser = await launchChromium();

@@ -12,7 +12,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { pathToFileURL } from 'node:url';
 import { join } from 'node:path';
-import { readRegistry, repoRoot } from './chromium.mjs';
+import { acquireSiteLock, readRegistry, repoRoot } from './chromium.mjs';
 
 interface DevServer { url: string; stop(): Promise<void>; builds(): number }
 
@@ -31,14 +31,17 @@ async function timedFetch(url: string): Promise<number> {
 
 describe('npm start (scripts/serve.mjs, watching)', () => {
   let server: DevServer;
+  let releaseLane: (() => void) | undefined;
   beforeAll(async () => {
+    // One browser test file at a time (./harness): the watching build is as heavy as a page.
+    releaseLane = await acquireSiteLock({ name: 'browser-lane', timeoutMs: 590_000 });
     const { startServer } = await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href) as {
       startServer(o: { port: number; watch: boolean; log: (line: string) => void }): Promise<DevServer>;
     };
     server = await startServer({ port: 0, watch: true, log: () => undefined });
   });
   afterAll(async () => {
-    await server?.stop();
+    try { await server?.stop(); } finally { releaseLane?.(); }
   });
 
   it('answers every page from memory after sitting idle: median page under 300 ms', async () => {
