@@ -1,4 +1,3 @@
-import { availableParallelism } from 'node:os';
 import { defineConfig } from 'vitest/config';
 import { BaseSequencer, type TestSpecification } from 'vitest/node';
 import { defaultClientConditions, defaultServerConditions } from 'vite';
@@ -21,14 +20,13 @@ class HeadlessFirst extends BaseSequencer {
 //
 // Two projects: `node` (everything headless) and `browser` (test/browser: pages in Chromium). The
 // browser project's global setup builds and serves the site once and starts one Chromium that its
-// files share, one file at a time. At least two workers even on a 2-core machine (vitest's default
-// there is one), so the headless files share the cores before the browser files start.
+// files share, one file at a time. `npm test` (scripts/test.mjs) runs the two projects in two vitest
+// processes at once; a plain `npx vitest run` runs both in one, headless files first.
 export default defineConfig({
   resolve: { conditions: ['bitphysics-source', ...defaultClientConditions] },
   ssr: { resolve: { conditions: ['bitphysics-source', ...defaultServerConditions] } },
   test: {
     pool: 'forks',
-    maxWorkers: Math.max(2, availableParallelism()),
     testTimeout: 60_000,
     hookTimeout: 120_000,
     sequence: { sequencer: HeadlessFirst },

@@ -3,15 +3,15 @@
  * checks the page contract: no console errors, page errors or failed requests; the ready flag;
  * window.game.stats(); a canvas that is not blank; no error box. The gallery itself must list every entry.
  *
- * Every page runs twice: as a phone (390 x 844, touch) with the language 'en-US@posix' (what Chromium
- * reports under LANG=C.UTF-8; Intl rejects the tag, and uPlot's module used to throw on it), and on
- * a desktop (1280 x 800) with 'de-DE' (comma decimals). Both times the layout is checked
- * (./layout-check): the scene's box (the renderer's view rectangle) is inside the canvas and the
- * window (the world is framed, not cropped), no text or panel covers it, nothing is cut off; a
- * screenshot of each goes to dist/screenshots/<folder>-<phone|desktop>.png.
+ * A page runs as a phone (390 x 844, touch) with the language 'en-US@posix' (what Chromium reports
+ * under LANG=C.UTF-8; Intl rejects the tag, and uPlot's module used to throw on it), or on a desktop
+ * (1280 x 800) with 'de-DE' (comma decimals): alternating down the registry by default, both with
+ * BITPHYSICS_PAGES=all. Each time the layout is checked (./layout-check): the scene's box (the
+ * renderer's view rectangle) is inside the canvas and the window (the world is framed, not cropped),
+ * no text or panel covers it, nothing is cut off; a screenshot goes to
+ * dist/screenshots/<folder>-<phone|desktop>.png.
  * The pages are split over three test files (pages.test.ts, pages-2.test.ts, pages-3.test.ts, each
- * calling `describePages` with its shard) so vitest's workers check them side by side; the gallery
- * and the phone toolbar are checked by the first.
+ * calling `describePages` with its shard); the gallery and the phone toolbar are checked by the first.
  */
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -27,6 +27,13 @@ const RUNS = [
   { name: 'phone', locale: 'en-US@posix', language: 'en-US', viewport: { width: 390, height: 844 }, touch: true },
   { name: 'desktop', locale: 'de-DE', language: 'de-DE', viewport: { width: 1280, height: 800 }, touch: false },
 ] as const;
+
+/**
+ * Whether every page runs both ways (environment BITPHYSICS_PAGES=all). By default each page runs one
+ * way, phone and desktop alternating down the registry, so both are checked on half the pages each
+ * and the suite stays within its time (a page load in software-rendered Chromium takes 2 to 3 s).
+ */
+const BOTH_RUNS = process.env.BITPHYSICS_PAGES === 'all';
 
 const shots = join(repoRoot, 'dist', 'screenshots');
 mkdirSync(shots, { recursive: true });
@@ -102,7 +109,9 @@ export function describePages(shard: number, shards: number): void {
     }
 
     let k = -1;
-    for (const entry of registry) for (const run of RUNS) {
+    for (const [index, entry] of registry.entries()) for (const [r, run] of RUNS.entries()) {
+      // Both runs of every page with BITPHYSICS_PAGES=all; otherwise one, alternating down the registry.
+      if (!BOTH_RUNS && r !== index % RUNS.length) continue;
       if (++k % shards !== shard) continue;
       it(`${entry.folder} (${run.name}, ${run.locale}): ready, window.game, canvas drawn, scene clear and whole, no errors`, async () => {
         const g = await h.openGame(entry.folder, { locale: run.locale, viewport: run.viewport, touch: run.touch });

@@ -491,7 +491,7 @@ describe('3D games in headless Chromium', () => {
     expect(info.calls).toBeLessThanOrEqual(7);
     expect(g.errors).toEqual([]);
     await g.close();
-  });
+  }, 150_000); // 3,000 balls in software WebGL beside the headless tests: a few steps can take a minute
 
   it('rotating-cube: held keys and a click on a face change the angular velocity', async () => {
     const g = await open('rotating-cube', {});
