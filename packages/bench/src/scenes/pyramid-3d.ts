@@ -1,8 +1,6 @@
 import { pyramid3DLayout, type Pyramid3DHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
-import { round } from './format.js';
-
-const metres = (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(4) : String(v));
+import type { BenchScene } from './types.js';
+import { PYRAMID_COLUMNS, pyramidStanding } from './pyramid.js';
 
 /**
  * Bench side of `pyramid-3d`: the base limit, our box ids, and how well every engine's pyramid stood
@@ -20,25 +18,9 @@ export const pyramid3DBench: BenchScene = {
   },
   extras(snapshot, options) {
     const layout = pyramid3DLayout({ count: options.count });
-    const p = snapshot.positions, p0 = layout.positions;
-    let maxDrift = 0, fallen = 0;
-    for (let i = 0; i < layout.count; i++) {
-      const d = Math.hypot(p[3 * i]! - p0[3 * i]!, p[3 * i + 2]! - p0[3 * i + 2]!);
-      if (d > maxDrift) maxDrift = d;
-      if (p[3 * i + 1]! < p0[3 * i + 1]! - 0.5) fallen++;
-    }
-    const top = layout.count - 1;
-    return {
-      topDrop: round(p0[3 * top + 1]! - p[3 * top + 1]!, 6),
-      maxDrift: round(maxDrift, 6),
-      fallen,
-    };
+    return pyramidStanding(snapshot.positions, layout.positions, layout.count, 3);
   },
-  columns: [
-    { key: 'topDrop', label: 'top drop m', format: metres },
-    { key: 'maxDrift', label: 'max drift m', format: metres },
-    { key: 'fallen', label: 'fallen', format: (v) => String(v) },
-  ],
+  columns: PYRAMID_COLUMNS,
   notes: [
     'pyramid-3d: --count is the side of the bottom layer (20: 2,870 cubes of 1 m, 1 kg, friction 0.6, restitution 0, 1.05 m pitch, gravity -10 m/s^2), each layer centred on the one below; goal: topDrop <= 0.05 m.',
     'top drop: how far the top box sank (m, positive down); max drift: largest horizontal move of any box (m); fallen: boxes > 0.5 m below their start.',

@@ -134,6 +134,38 @@ export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions)
   return currentHandle(world, j);
 }
 
+/** A hinge's or slider's checked limits and motor (`limitAndMotor`). */
+interface LimitAndMotor { lower?: number; upper?: number; motorSpeed?: number; maxMotor?: number }
+
+/**
+ * Checks the limit pair (lower <= 0 <= upper, both or neither) and the motor (a finite speed with a
+ * largest torque or force `maxName` >= 0) of addHingeJoint3D and addSliderJoint3D before anything is made.
+ * @throws RangeError `<where>: ...` naming the parameter and value.
+ */
+function limitAndMotor(where: string, lower: number | undefined, upper: number | undefined, motorSpeed: number | undefined, maxMotor: number | undefined, maxName: string): LimitAndMotor {
+  const out: LimitAndMotor = {};
+  if (lower !== undefined || upper !== undefined) {
+    if (lower === undefined || upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(lower)}, upper ${describe(upper)}`);
+    assertFinite(where, 'lower', lower); assertFinite(where, 'upper', upper);
+    if (!(lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${lower}`);
+    if (!(upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${upper}`);
+    out.lower = lower; out.upper = upper;
+  }
+  if (motorSpeed !== undefined || maxMotor !== undefined) {
+    assertFinite(where, 'motorSpeed', motorSpeed ?? 0);
+    if (maxMotor === undefined) throw new RangeError(`${where}: ${maxName} must be given with motorSpeed, got undefined`);
+    assertNonNegative(where, maxName, maxMotor);
+    out.motorSpeed = motorSpeed ?? 0; out.maxMotor = maxMotor;
+  }
+  return out;
+}
+
+/** Writes checked limits and motor into joint j's store row (the motor's cap goes in maxMotorTorque, N m or N). */
+function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor): void {
+  if (lm.lower !== undefined) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = lm.lower; s.upper[j] = lm.upper!; }
+  if (lm.maxMotor !== undefined) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = lm.motorSpeed!; s.maxMotorTorque[j] = lm.maxMotor; }
+}
+
 /** Options of `addHingeJoint3D`. */
 export interface HingeJoint3DOptions extends Joint3DBaseOptions {
   /** A point on the hinge's axis (world, m). Default B's centre. */
@@ -159,23 +191,9 @@ export function addHingeJoint3D(world: PhysicsWorld, options: HingeJoint3DOption
   const e = ends(where, world, options, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
   const axis = unit(where, 'axis', options.axis);
-  const hasLimit = options.lower !== undefined || options.upper !== undefined;
-  if (hasLimit) {
-    if (options.lower === undefined || options.upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(options.lower)}, upper ${describe(options.upper)}`);
-    assertFinite(where, 'lower', options.lower); assertFinite(where, 'upper', options.upper);
-    if (!(options.lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${options.lower}`);
-    if (!(options.upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${options.upper}`);
-  }
-  const motor = options.motorSpeed !== undefined || options.maxMotorTorque !== undefined;
-  if (motor) {
-    assertFinite(where, 'motorSpeed', options.motorSpeed ?? 0);
-    if (options.maxMotorTorque === undefined) throw new RangeError(`${where}: maxMotorTorque must be given with motorSpeed, got undefined`);
-    assertNonNegative(where, 'maxMotorTorque', options.maxMotorTorque);
-  }
+  const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque');
   const j = make(world, where, Joint3DType.Hinge, e, options, p, p, axis);
-  const s = joints3DOf(world, true);
-  if (hasLimit) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = options.lower!; s.upper[j] = options.upper!; }
-  if (motor) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = options.motorSpeed ?? 0; s.maxMotorTorque[j] = options.maxMotorTorque!; }
+  storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
 }
 
@@ -265,23 +283,9 @@ export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOpti
   const e = ends(where, world, options, ['anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
   const axis = unit(where, 'axis', options.axis);
-  const hasLimit = options.lower !== undefined || options.upper !== undefined;
-  if (hasLimit) {
-    if (options.lower === undefined || options.upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(options.lower)}, upper ${describe(options.upper)}`);
-    assertFinite(where, 'lower', options.lower); assertFinite(where, 'upper', options.upper);
-    if (!(options.lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${options.lower}`);
-    if (!(options.upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${options.upper}`);
-  }
-  const motor = options.motorSpeed !== undefined || options.maxMotorForce !== undefined;
-  if (motor) {
-    assertFinite(where, 'motorSpeed', options.motorSpeed ?? 0);
-    if (options.maxMotorForce === undefined) throw new RangeError(`${where}: maxMotorForce must be given with motorSpeed, got undefined`);
-    assertNonNegative(where, 'maxMotorForce', options.maxMotorForce);
-  }
+  const lm = limitAndMotor(where, options.lower, options.upper, options.motorSpeed, options.maxMotorForce, 'maxMotorForce');
   const j = make(world, where, Joint3DType.Slider, e, options, p, p, axis);
-  const s = joints3DOf(world, true);
-  if (hasLimit) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = options.lower!; s.upper[j] = options.upper!; }
-  if (motor) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = options.motorSpeed ?? 0; s.maxMotorTorque[j] = options.maxMotorForce!; }
+  storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
 }
 

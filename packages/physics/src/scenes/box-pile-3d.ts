@@ -4,7 +4,7 @@ import { addBody } from '../bodies.js';
 import { addPlane } from '../rigid.js';
 import { addShape3D } from '../shapes3d/api.js';
 import { slotOf } from '../handles.js';
-import { Rng } from '../rng.js';
+import { jitteredGrid3D } from './jittered-grid.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 
 /** Options of the `box-pile-3d` scene. */
@@ -52,17 +52,7 @@ export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout
   const seed = options.seed ?? 1;
   assertFinite(where, 'seed', seed);
   const spacing = 1.5, half = 0.5;
-  const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));
-  const layers = Math.ceil(count / (side * side));
-  const rng = new Rng(seed);
-  const jitter = 0.4 * (spacing - 2 * half);
-  const positions = new Float64Array(3 * count);
-  for (let i = 0; i < count; i++) {
-    const x = i % side, z = Math.floor(i / side) % side, y = Math.floor(i / (side * side));
-    positions[3 * i] = (x + 0.5) * spacing + rng.range(-jitter, jitter);
-    positions[3 * i + 1] = (y + 0.5) * spacing + rng.range(-jitter, jitter);
-    positions[3 * i + 2] = (z + 0.5) * spacing + rng.range(-jitter, jitter);
-  }
+  const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * half);
   return {
     count, positions, half, mass: 1, restitution: 0.1, friction: 0.6,
     min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],

@@ -1,6 +1,6 @@
 import type { PhysicsWorld } from '../world.js';
 import { addBody, setBoundary } from '../bodies.js';
-import { Rng } from '../rng.js';
+import { jitteredGrid3D } from './jittered-grid.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { SceneDefinition } from './types.js';
 
@@ -41,17 +41,7 @@ export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresIn
   const seed = options.seed ?? 1;
   assertFinite(where, 'seed', seed);
   const spacing = 1.5, radius = 0.5;
-  const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));
-  const layers = Math.ceil(count / (side * side));
-  const rng = new Rng(seed);
-  const jitter = 0.4 * (spacing - 2 * radius);
-  const positions = new Float64Array(3 * count);
-  for (let i = 0; i < count; i++) {
-    const x = i % side, z = Math.floor(i / side) % side, y = Math.floor(i / (side * side));
-    positions[3 * i] = (x + 0.5) * spacing + rng.range(-jitter, jitter);
-    positions[3 * i + 1] = (y + 0.5) * spacing + rng.range(-jitter, jitter);
-    positions[3 * i + 2] = (z + 0.5) * spacing + rng.range(-jitter, jitter);
-  }
+  const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * radius);
   return {
     count, positions, radius, mass: 1, restitution: 0.5, friction: 0.1,
     min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],
