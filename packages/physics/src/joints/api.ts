@@ -196,6 +196,31 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   return handle(world, j);
 }
 
+/** A revolute, prismatic or wheel joint's checked motor and spring (`checkDrive`). */
+interface Drive { speed: number; maxMotor: number; hertz: number; zeta: number }
+
+/**
+ * Checks a joint's motor (finite `motorSpeed`, `maxName` >= 0, the motor on when > 0) and spring
+ * (`hertz` and `dampingRatio` >= 0) before anything is made, filling in the given defaults.
+ * @throws RangeError `<where>: <param> must be ...` naming the parameter and value.
+ */
+function checkDrive(where: string, motorSpeed: number | undefined, maxMotor: number | undefined, maxName: string, hertz: number | undefined, zeta: number | undefined, defaultHertz = 0, defaultZeta = 0): Drive {
+  const d: Drive = { speed: motorSpeed ?? 0, maxMotor: maxMotor ?? 0, hertz: hertz ?? defaultHertz, zeta: zeta ?? defaultZeta };
+  assertFinite(where, 'motorSpeed', d.speed);
+  assertNonNegative(where, maxName, d.maxMotor);
+  assertNonNegative(where, 'hertz', d.hertz);
+  assertNonNegative(where, 'dampingRatio', d.zeta);
+  return d;
+}
+
+/** Writes joint j's limits (when `limit`), motor and spring, and sets its Limit, Motor and Spring flags from them. */
+function storeDrive(world: PhysicsWorld, j: number, limit: boolean, lower: number | undefined, upper: number | undefined, d: Drive): void {
+  const J = world.components.Joint;
+  if (limit) { J.lower[j] = lower!; J.upper[j] = upper!; }
+  J.motorSpeed[j] = d.speed; J.maxMotorForce[j] = d.maxMotor; J.hertz[j] = d.hertz; J.dampingRatio[j] = d.zeta;
+  J.flags[j] = (limit ? JointFlag.Limit : 0) | (d.maxMotor > 0 ? JointFlag.Motor : 0) | (d.hertz > 0 ? JointFlag.Spring : 0);
+}
+
 /** Options of `addRevoluteJoint`. */
 export interface RevoluteJointOptions extends JointBaseOptions {
   /** The pin, world point, m. Default B's centre. */
@@ -228,19 +253,9 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
   assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const limit = checkLimits(where, options.lowerAngle, options.upperAngle, 'lowerAngle', 'upperAngle', Math.PI);
-  const speed = options.motorSpeed ?? 0;
-  assertFinite(where, 'motorSpeed', speed);
-  const torque = options.maxMotorTorque ?? 0;
-  assertNonNegative(where, 'maxMotorTorque', torque);
-  const hertz = options.hertz ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'dampingRatio', zeta);
+  const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);
   const j = makeJoint(world, JointType.Revolute, ends, p, p, options);
-  const J = world.components.Joint;
-  if (limit) { J.lower[j] = options.lowerAngle!; J.upper[j] = options.upperAngle!; }
-  J.motorSpeed[j] = speed; J.maxMotorForce[j] = torque; J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
-  J.flags[j] = (limit ? JointFlag.Limit : 0) | (torque > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
+  storeDrive(world, j, limit, options.lowerAngle, options.upperAngle, drive);
   return handle(world, j);
 }
 
@@ -275,20 +290,10 @@ export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOp
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [1, 0]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
-  const speed = options.motorSpeed ?? 0;
-  assertFinite(where, 'motorSpeed', speed);
-  const force = options.maxMotorForce ?? 0;
-  assertNonNegative(where, 'maxMotorForce', force);
-  const hertz = options.hertz ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'dampingRatio', zeta);
+  const drive = checkDrive(where, options.motorSpeed, options.maxMotorForce, 'maxMotorForce', options.hertz, options.dampingRatio);
   const j = makeJoint(world, JointType.Prismatic, ends, p, p, options);
   setAxis(world, j, ends.a, axis);
-  const J = world.components.Joint;
-  if (limit) { J.lower[j] = options.lower!; J.upper[j] = options.upper!; }
-  J.motorSpeed[j] = speed; J.maxMotorForce[j] = force; J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
-  J.flags[j] = (limit ? JointFlag.Limit : 0) | (force > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
+  storeDrive(world, j, limit, options.lower, options.upper, drive);
   return handle(world, j);
 }
 
@@ -363,20 +368,10 @@ export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): 
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [0, 1]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
-  const hertz = options.hertz ?? 4;
-  assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0.7;
-  assertNonNegative(where, 'dampingRatio', zeta);
-  const speed = options.motorSpeed ?? 0;
-  assertFinite(where, 'motorSpeed', speed);
-  const torque = options.maxMotorTorque ?? 0;
-  assertNonNegative(where, 'maxMotorTorque', torque);
+  const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio, 4, 0.7);
   const j = makeJoint(world, JointType.Wheel, ends, p, p, options);
   setAxis(world, j, ends.a, axis);
-  const J = world.components.Joint;
-  if (limit) { J.lower[j] = options.lower!; J.upper[j] = options.upper!; }
-  J.hertz[j] = hertz; J.dampingRatio[j] = zeta; J.motorSpeed[j] = speed; J.maxMotorForce[j] = torque;
-  J.flags[j] = (limit ? JointFlag.Limit : 0) | (torque > 0 ? JointFlag.Motor : 0) | (hertz > 0 ? JointFlag.Spring : 0);
+  storeDrive(world, j, limit, options.lower, options.upper, drive);
   return handle(world, j);
 }
 
