@@ -4,7 +4,7 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import type { BallLayer } from './balls.js';
 import type { Camera } from './camera.js';
 import { drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings } from './debug-scenery.js';
-import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
+import { resolveOptions, type OptionRules } from '@bitphysics/render-common';
 
 /** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {
@@ -41,41 +41,26 @@ export interface DebugOptions {
 /** Fully resolved debug options. */
 export type ResolvedDebugOptions = Required<DebugOptions>;
 
-const DEBUG_OPTIONS = [
-  'velocities', 'velocityScale', 'maxArrows', 'contacts', 'normalLength', 'maxContacts', 'walls', 'springs', 'joints', 'planes',
-  'fields', 'emitters',
-] as const;
+/** Each debug option's check and default (the defaults documented on `DebugOptions`). */
+const DEBUG_RULES: OptionRules<DebugOptions> = {
+  velocities: { kind: 'boolean', default: true },
+  velocityScale: { kind: 'positive', default: 0.1 },
+  maxArrows: { kind: 'integer', default: 2000, min: 0, max: 1_000_000 },
+  contacts: { kind: 'boolean', default: true },
+  normalLength: { kind: 'positive', default: 14 },
+  maxContacts: { kind: 'integer', default: 4000, min: 0, max: 1_000_000 },
+  walls: { kind: 'boolean', default: true },
+  springs: { kind: 'boolean', default: true },
+  joints: { kind: 'boolean', default: true },
+  planes: { kind: 'boolean', default: true },
+  fields: { kind: 'boolean', default: true },
+  emitters: { kind: 'boolean', default: true },
+};
 
 /** Checks debug options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
 export function resolveDebugOptions(where: string, options: DebugOptions = {}): ResolvedDebugOptions {
-  assertKnownKeys(where, options, DEBUG_OPTIONS);
-  const velocities = options.velocities ?? true;
-  assertBoolean(where, 'debug.velocities', velocities);
-  const velocityScale = options.velocityScale ?? 0.1;
-  assertPositive(where, 'debug.velocityScale', velocityScale);
-  const maxArrows = options.maxArrows ?? 2000;
-  assertInteger(where, 'debug.maxArrows', maxArrows, 0, 1_000_000);
-  const contacts = options.contacts ?? true;
-  assertBoolean(where, 'debug.contacts', contacts);
-  const normalLength = options.normalLength ?? 14;
-  assertPositive(where, 'debug.normalLength', normalLength);
-  const maxContacts = options.maxContacts ?? 4000;
-  assertInteger(where, 'debug.maxContacts', maxContacts, 0, 1_000_000);
-  const walls = options.walls ?? true;
-  assertBoolean(where, 'debug.walls', walls);
-  const springs = options.springs ?? true;
-  assertBoolean(where, 'debug.springs', springs);
-  const joints = options.joints ?? true;
-  assertBoolean(where, 'debug.joints', joints);
-  const planes = options.planes ?? true;
-  assertBoolean(where, 'debug.planes', planes);
-  const fields = options.fields ?? true;
-  assertBoolean(where, 'debug.fields', fields);
-  const emitters = options.emitters ?? true;
-  assertBoolean(where, 'debug.emitters', emitters);
-  return { velocities, velocityScale, maxArrows, contacts, normalLength, maxContacts, walls, springs, joints, planes, fields, emitters };
+  return resolveOptions(where, 'debug.', options, DEBUG_RULES);
 }
-
 const ARROW = 0x7cf2a0;
 const CONTACT_ACTIVE = 0xff4d5e;
 const CONTACT_SPECULATIVE = 0x9aa0a6;

@@ -3,7 +3,7 @@ import { forEachContact3D, type Contact3DView, type PhysicsWorld } from '@bitphy
 import type { InstanceBook } from './book.js';
 import { hexToLinear, rotateInto } from './math.js';
 import { SCENERY_PALETTE, drawEmitters, drawFields, drawJoints, drawJoints3D, drawPlanes, drawSprings, type SegmentSink } from './debug-scenery.js';
-import { assertBoolean, assertInteger, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
+import { resolveOptions, type OptionRules } from '@bitphysics/render-common';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {
@@ -48,52 +48,30 @@ export interface DebugOptions {
 /** Fully resolved debug options. */
 export type ResolvedDebugOptions = Required<DebugOptions>;
 
-const DEBUG_OPTIONS = [
-  'axes', 'velocities', 'velocityScale', 'angularVelocities', 'angularVelocityScale', 'maxBodies', 'contacts',
-  'normalLength', 'maxContacts', 'pointSize', 'springs', 'joints', 'planes', 'fields', 'emitters', 'maxScenery',
-] as const;
+/** Each debug option's check and default (the defaults documented on `DebugOptions`). */
+const DEBUG_RULES: OptionRules<DebugOptions> = {
+  axes: { kind: 'boolean', default: true },
+  velocities: { kind: 'boolean', default: true },
+  velocityScale: { kind: 'positive', default: 0.1 },
+  angularVelocities: { kind: 'boolean', default: false },
+  angularVelocityScale: { kind: 'positive', default: 0.1 },
+  maxBodies: { kind: 'integer', default: 2000, min: 0, max: 100_000 },
+  contacts: { kind: 'boolean', default: true },
+  normalLength: { kind: 'positive', default: 0.25 },
+  maxContacts: { kind: 'integer', default: 4000, min: 0, max: 1_000_000 },
+  pointSize: { kind: 'positive', default: 5 },
+  springs: { kind: 'boolean', default: true },
+  joints: { kind: 'boolean', default: true },
+  planes: { kind: 'boolean', default: true },
+  fields: { kind: 'boolean', default: true },
+  emitters: { kind: 'boolean', default: true },
+  maxScenery: { kind: 'integer', default: 20_000, min: 0, max: 1_000_000 },
+};
 
 /** Checks debug options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
 export function resolveDebugOptions(where: string, options: DebugOptions = {}): ResolvedDebugOptions {
-  assertKnownKeys(where, options, DEBUG_OPTIONS);
-  const axes = options.axes ?? true;
-  assertBoolean(where, 'debug.axes', axes);
-  const velocities = options.velocities ?? true;
-  assertBoolean(where, 'debug.velocities', velocities);
-  const velocityScale = options.velocityScale ?? 0.1;
-  assertPositive(where, 'debug.velocityScale', velocityScale);
-  const angularVelocities = options.angularVelocities ?? false;
-  assertBoolean(where, 'debug.angularVelocities', angularVelocities);
-  const angularVelocityScale = options.angularVelocityScale ?? 0.1;
-  assertPositive(where, 'debug.angularVelocityScale', angularVelocityScale);
-  const maxBodies = options.maxBodies ?? 2000;
-  assertInteger(where, 'debug.maxBodies', maxBodies, 0, 100_000);
-  const contacts = options.contacts ?? true;
-  assertBoolean(where, 'debug.contacts', contacts);
-  const normalLength = options.normalLength ?? 0.25;
-  assertPositive(where, 'debug.normalLength', normalLength);
-  const maxContacts = options.maxContacts ?? 4000;
-  assertInteger(where, 'debug.maxContacts', maxContacts, 0, 1_000_000);
-  const pointSize = options.pointSize ?? 5;
-  assertPositive(where, 'debug.pointSize', pointSize);
-  const springs = options.springs ?? true;
-  assertBoolean(where, 'debug.springs', springs);
-  const joints = options.joints ?? true;
-  assertBoolean(where, 'debug.joints', joints);
-  const planes = options.planes ?? true;
-  assertBoolean(where, 'debug.planes', planes);
-  const fields = options.fields ?? true;
-  assertBoolean(where, 'debug.fields', fields);
-  const emitters = options.emitters ?? true;
-  assertBoolean(where, 'debug.emitters', emitters);
-  const maxScenery = options.maxScenery ?? 20_000;
-  assertInteger(where, 'debug.maxScenery', maxScenery, 0, 1_000_000);
-  return {
-    axes, velocities, velocityScale, angularVelocities, angularVelocityScale, maxBodies, contacts, normalLength, maxContacts, pointSize,
-    springs, joints, planes, fields, emitters, maxScenery,
-  };
+  return resolveOptions(where, 'debug.', options, DEBUG_RULES);
 }
-
 const AXIS_X = 0xff5a5f, AXIS_Y = 0x5fd068, AXIS_Z = 0x4d8dff;
 const ARROW = 0x7cf2a0, SPIN = 0xff5ce1;
 const CONTACT_ACTIVE = 0xff4d5e, CONTACT_SPECULATIVE = 0x9aa0a6;
