@@ -4,15 +4,17 @@
  * caller's name, the option and the value (the contract of every public API here).
  */
 import { describe, expect, it } from 'vitest';
-import { resolveOptions } from '../../packages/render-common/src/index';
+import { resolveOptions, type OptionRules } from '../../packages/render-common/src/index';
 import { resolveDebugOptions } from '../../packages/render-three/src/index';
 
 describe('resolveOptions', () => {
-  const rules = {
+  interface Opts { on?: boolean; scale?: number; most?: number }
+  const rules: OptionRules<Opts> = {
     on: { kind: 'boolean', default: true },
     scale: { kind: 'positive', default: 0.5 },
     most: { kind: 'integer', default: 10, min: 0, max: 100 },
-  } as const;
+  };
+  const bad = (o: unknown): Opts => o as Opts;
   it('fills defaults and keeps given values', () => {
     expect(resolveOptions('f', 'o.', {}, rules)).toEqual({ on: true, scale: 0.5, most: 10 });
     expect(resolveOptions('f', 'o.', { on: false, most: 0 }, rules)).toEqual({ on: false, scale: 0.5, most: 0 });
@@ -20,8 +22,8 @@ describe('resolveOptions', () => {
   it('names the caller, the option and the value', () => {
     expect(() => resolveOptions('f', 'o.', { most: 101 }, rules)).toThrow(/^f: o\.most .*101/);
     expect(() => resolveOptions('f', 'o.', { scale: 0 }, rules)).toThrow(/^f: o\.scale must be > 0, got 0/);
-    expect(() => resolveOptions('f', 'o.', { on: 1 } as never, rules)).toThrow(TypeError);
-    expect(() => resolveOptions('f', 'o.', { nope: 1 } as never, rules)).toThrow(/nope/);
+    expect(() => resolveOptions('f', 'o.', bad({ on: 1 }), rules)).toThrow(TypeError);
+    expect(() => resolveOptions('f', 'o.', bad({ nope: 1 }), rules)).toThrow(/nope/);
   });
 });
 
