@@ -419,10 +419,21 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
     }
     let movedTo = inA;
     if (depth < bits) {
-      // Runs of equal key digit at this level, in order.
-      const shift = dims * (bits - 1 - depth);
-      cnt.fill(0, 0, 8);
-      for (let s = lo; s < hi; s++) cnt[(key[s]! >>> shift) & (kids - 1)]!++;
+      // Runs of equal key digit at this level, in order. The cell's keys are sorted and share every
+      // digit above this one, so this digit never decreases over [lo, hi): each run ends where a
+      // binary search finds the first larger digit (a few probes a child instead of a pass over the
+      // cell's keys at every level; the same counts).
+      const shift = dims * (bits - 1 - depth), mask = kids - 1;
+      let from = lo;
+      for (let q = 0; q < kids; q++) {
+        let a = from, b = hi;
+        while (a < b) {
+          const mid = (a + b) >>> 1;
+          if (((key[mid]! >>> shift) & mask) <= q) a = mid + 1; else b = mid;
+        }
+        cnt[q] = a - from;
+        from = a;
+      }
     } else {
       // Below the key resolution: stable counting sort by quadrant into the other buffer.
       const sx = inA ? t.x : t.x2, sy = inA ? t.y : t.y2, sz = inA ? t.z : t.z2, sm = inA ? t.m : t.m2, sp = inA ? t.perm : t.perm2;
