@@ -1,5 +1,6 @@
 import type { ContactBuffer } from './contacts.js';
 import type { CollisionSettings } from './state.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Lengths that scale: the ball contacts' tolerances follow the size of the balls, so a 2 cm marble
@@ -17,6 +18,18 @@ import type { CollisionSettings } from './state.js';
  * With those, a scene scaled by L in length and by sqrt(L) in time step behaves exactly alike scaled
  * (test/physics/collision-accuracy.test.ts). The length of a step's ball contacts is the smallest ball
  * radius among them (a scene of mixed sizes gets the stiffness its smallest balls need).
+ *
+ * The frequency a substep can hold is bounded (BALL_HERTZ_FRACTION of the substep rate), and at a fixed
+ * step a small ball's own time scale sqrt(r / g) holds fewer substeps than a big one's: a 2 cm ball at
+ * dt 1/60 with 4 substeps is a 0.5 m ball at dt 1/12. So when the step's ball contacts need a frequency
+ * above the substep rate, the step takes more solver substeps (`solverSubstepsFor`; at most
+ * MAX_AUTO_SUBSTEPS): every ball contact then gets its full stiffness. At dt 1/60 and contactHertz 60
+ * this starts below a radius of 6.25 cm (2 cm: 8 substeps; 1 cm: 10; 5 mm: 15). Measured on the
+ * bench's Galton board of 2,000 balls of 2 cm (`--scene galton`, seeds 1, 2, 3): deepest overlap
+ * 8.4 / 10.6 / 15.2 % of a radius with 4 substeps, 4.1 / 1.9 / 1.8 % with 8; the solver's time grows
+ * about in proportion to the substeps (the board's median step 1.6 times the 4-substep one). Big
+ * balls (balls-in-box's 0.5 m) keep the world's count. `CollisionSettings.autoSubsteps` false keeps
+ * exactly `solverSubsteps` (the stiffness is then capped at the substep rate, as before).
  */
 
 /** The length at which the world's contact tolerances apply as given, m. */
@@ -43,6 +56,38 @@ export function contactLength(buf: ContactBuffer): number {
     if (ra > 0 && ra < r) r = ra;
   }
   return r;
+}
+
+/** Most solver substeps the automatic choice takes in a step (the world option's own upper bound). */
+export const MAX_AUTO_SUBSTEPS = 16;
+
+/**
+ * Solver substeps for a step of `h` (s) whose ball contacts have `length` (m, see `contactLength`):
+ * `settings.solverSubsteps`, or more if `settings.autoSubsteps` and the contacts' frequency
+ * contactHertz sqrt(CONTACT_LENGTH_UNIT / length) exceeds BALL_HERTZ_FRACTION of that substep rate:
+ * then ceil(h f / BALL_HERTZ_FRACTION), at most MAX_AUTO_SUBSTEPS (never fewer than the setting).
+ * A scene scaled by L in length and sqrt(L) in time step gets the same count.
+ */
+export function solverSubstepsFor(settings: CollisionSettings, length: number, h: number): number {
+  const base = settings.solverSubsteps;
+  if (!settings.autoSubsteps || !(length > 0 && length < Infinity) || !(h > 0)) return base;
+  // 1e-9 absorbs rounding (2 cm at dt 1/60 needs 7.07 substeps; 6.25 cm exactly 4).
+  const need = Math.ceil((h * settings.contactHertz) / speedScale(length) / BALL_HERTZ_FRACTION - 1e-9);
+  return need > base ? Math.min(need, Math.max(base, MAX_AUTO_SUBSTEPS)) : base;
+}
+
+/**
+ * Runs `solve` (the contact solver stage) with `settings.solverSubsteps` set, for its duration, to
+ * the count `solverSubstepsFor` chooses for the step's ball contacts (`world.collision.contacts`),
+ * so every stage of the solver (contacts, shape manifolds, joints, impacts, the free-flight
+ * correction) sees the same count; the setting is restored afterwards, also if `solve` throws.
+ */
+export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWorld) => void): void {
+  const settings = world.collision.settings, base = settings.solverSubsteps;
+  const count = settings.autoSubsteps ? solverSubstepsFor(settings, contactLength(world.collision.contacts), world.h) : base;
+  if (count === base) { solve(world); return; }
+  settings.solverSubsteps = count;
+  try { solve(world); } finally { settings.solverSubsteps = base; }
 }
 
 /** sqrt(length / CONTACT_LENGTH_UNIT), the factor speeds scale by; 1 for no contacts (length Infinity) or length <= 0. */

@@ -14,7 +14,7 @@ import {
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
-import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
+import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, withScaledSubsteps } from './contact-scale.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -55,6 +55,12 @@ import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength }
  * relaxation are what keeps a deep pile still with few iterations and without adding energy.
  */
 export function contactSolverSystem(world: PhysicsWorld): void {
+  // Small balls take more substeps (contact-scale.ts): the stages below read the count from the settings.
+  withScaledSubsteps(world, solveContacts);
+}
+
+/** The contact solver stage at the step's `settings.solverSubsteps` (see contactSolverSystem). */
+function solveContacts(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   cs.stats.maxOverlap = 0;

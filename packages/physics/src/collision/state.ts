@@ -15,8 +15,14 @@ export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
  * the world options; the fields may be changed between steps.
  */
 export interface CollisionSettings {
-  /** Solver substeps a (world) step, integer >= 1. Default 4. */
+  /** Solver substeps a (world) step, integer >= 1; the least a step takes when `autoSubsteps`. Default 4. */
   solverSubsteps: number;
+  /**
+   * Whether a step whose ball contacts are small takes more solver substeps than `solverSubsteps`, so
+   * their stiffness contactHertz sqrt(1 m / r) fits the substep rate (2 cm balls at dt 1/60: 8; see
+   * contact-scale.ts `solverSubstepsFor`, at most 16). false: exactly `solverSubsteps`. Default true.
+   */
+  autoSubsteps: boolean;
   /** Sequential-impulse passes with soft bias per solver substep, integer >= 1. Default 1. */
   solverIterations: number;
   /** Passes without bias per solver substep (remove the push-out velocity), integer >= 0. Default 1. */
@@ -45,8 +51,8 @@ export interface CollisionSettings {
   /**
    * Stiffness of contact softness, Hz, > 0, for balls of radius 1 m (`CONTACT_LENGTH_UNIT`); a step's
    * ball contacts use contactHertz sqrt(1 m / r) for the smallest radius r among them, capped at the
-   * substep rate (240 Hz at the default dt 1/60 s and 4 solver substeps), so small balls squash no
-   * more than big ones (see contact-scale.ts). Default 60 Hz (Box2D v3 uses 30 Hz for every size).
+   * substep rate (which `autoSubsteps` raises to fit it), so small balls squash no more than big ones
+   * (see contact-scale.ts). Default 60 Hz (Box2D v3 uses 30 Hz for every size).
    */
   contactHertz: number;
   /** Damping ratio of contact softness, dimensionless. Default 10 (heavily overdamped: no bounce from push-out). */
@@ -220,6 +226,7 @@ export function createCollisionState(
   return {
     settings: {
       solverSubsteps: options.solverSubsteps,
+      autoSubsteps: true,
       solverIterations: options.solverIterations,
       relaxIterations: 1,
       restitutionThreshold: options.restitutionThreshold ?? 0.5,

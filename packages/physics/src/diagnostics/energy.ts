@@ -1,7 +1,7 @@
 import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import { currentSeparation } from '../collision/narrowphase.js';
-import { ballContactHertz, contactLength } from '../collision/contact-scale.js';
+import { ballContactHertz, contactLength, solverSubstepsFor } from '../collision/contact-scale.js';
 import { fieldsAt } from '../forces/electromagnetism.js';
 import { spinAngularMomentum, spinKineticEnergy } from '../rigid.js';
 
@@ -186,8 +186,9 @@ export function contactSpringEnergy(world: PhysicsWorld): number {
   const cs = world.collision;
   const rows = cs.cache.rows;
   const st = cs.settings;
-  const hs = world.h / st.solverSubsteps;
-  const f = ballContactHertz(st, contactLength(rows), hs);
+  const length = contactLength(rows);
+  const hs = world.h / solverSubstepsFor(st, length, world.h);
+  const f = ballContactHertz(st, length, hs);
   const w = 2 * Math.PI * f;
   let sum = 0;
   for (let i = 0; i < rows.count; i++) {
