@@ -6,7 +6,7 @@
  * exchange it with the frame, the impacts never change it).
  *
  * Input: press on a ball and drag sideways to lift it and every ball between it and its end of the
- * row; release to let go. Keys: P pause, N step, R reset (lifts `lift` balls by `angle` again).
+ * row; the hand holds them (the whole row waits at rest, the clock stopped) until you release them. Keys: P pause, N step, R reset (lifts `lift` balls by `angle` again).
  * URL: ?count (2-8), ?lift (1-7), ?angle (5-80 deg).
  */
 import { Graphics } from 'pixi.js';
@@ -30,12 +30,16 @@ const params = { ...url, release: () => shell.reset() };
 let handles: CradleHandles;
 const view: WorldRect = { minX: -1.4, minY: -1.25, maxX: 1.4, maxY: 0.15 };
 
+/** Index of the ball the pointer holds, -1 if none; `heldAngle` its string's angle, rad (negative: left). */
+let held = -1, heldAngle = 0;
+
 /** Energy and momentum now and at the release (live object, also on window.game). */
 const measure = { energy: 0, energy0: 0, momentum: 0, kinetic: 0, moving: 0 };
 
 /** Builds the row and lifts `lift` balls on the left by `angle`; the shell calls it at start and on R. */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(cradleWorldOptions({ count: params.count }));
+  held = -1;
   handles = buildCradle(world, { count: params.count });
   const k = Math.min(params.lift, params.count - 1);
   liftBalls(world, handles, 0, k - 1, -params.angle / DEG);
@@ -57,8 +61,13 @@ function update(world: PhysicsWorld): void {
   measure.energy = totalEnergy(world); measure.kinetic = kineticEnergy(world); measure.momentum = p; measure.moving = moving;
 }
 
-/** One step: physics, then the energy and momentum charts. */
+/**
+ * One step: physics, then the energy and momentum charts. While a ball is held the hand keeps the row
+ * in its lifted pose at rest instead (no step): the lifted balls must not swing down and strike the
+ * row before they are let go, nor leave at whatever speed they had gathered since the last move.
+ */
 function labStep(world: PhysicsWorld): void {
+  if (held >= 0) { hold(world); return; }
   physicsStep(world);
   update(world);
   plot?.push(world.time, measure.energy, measure.kinetic);
@@ -106,7 +115,6 @@ shell.reset();
 
 const canvas = app.canvas;
 const pointer: Point2 = { x: 0, y: 0 };
-let held = -1;
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
   pointerOnCanvas(canvas, event, pointer);
@@ -119,6 +127,8 @@ canvas.addEventListener('pointerdown', (event) => {
   });
   if (best < 0 || bestD > 3 * handles.params.radius) return;
   held = best;
+  // Grabbing stops the row: the held ball (and those beyond it) at its present angle, the rest hanging.
+  liftTo(held, P.x[slotOf(handles.balls[best]!)]!, P.y[slotOf(handles.balls[best]!)]!);
   canvas.setPointerCapture?.(event.pointerId);
 });
 canvas.addEventListener('pointermove', (event) => {
@@ -134,6 +144,14 @@ const letGo = (): void => {
 };
 canvas.addEventListener('pointerup', letGo);
 canvas.addEventListener('pointercancel', letGo);
+canvas.addEventListener('lostpointercapture', letGo);
+
+/** Puts the row back in the held pose (ball `held` and those beyond it at `heldAngle`), all at rest. */
+function hold(world: PhysicsWorld): void {
+  const n = handles.balls.length;
+  if (held < n / 2) liftBalls(world, handles, 0, held, heldAngle); else liftBalls(world, handles, held, n - 1, heldAngle);
+  update(world);
+}
 
 /**
  * Lifts ball `index` toward world point (x, y), m: the angle of its string (limited to 80° outwards),
@@ -147,6 +165,7 @@ function liftTo(index: number, x: number, y: number): number {
   let a = Math.atan2(x - ax, -(y - ay));
   a = left ? Math.min(0, Math.max(-80 / DEG, a)) : Math.max(0, Math.min(80 / DEG, a));
   if (left) liftBalls(shell.world, handles, 0, index, a); else liftBalls(shell.world, handles, index, n - 1, a);
+  if (index === held) heldAngle = a;
   update(shell.world);
   return a * DEG;
 }
@@ -191,6 +210,8 @@ shell.expose({
   /** Ball handles, left to right. */
   balls: (): number[] => handles.balls.slice(),
   liftTo,
+  /** Index of the ball the pointer holds (it and the balls beyond it wait lifted), -1 if none. */
+  held: (): number => held,
   /** Runs `n` (integer >= 0) lab steps now. @throws RangeError otherwise. */
   advance: (n: number): void => {
     if (!Number.isInteger(n) || n < 0) throw new RangeError(`advance: n must be an integer >= 0, got ${n}`);
