@@ -1,18 +1,20 @@
 /**
- * Rotating cube: rigid-body rotation in 3D. A cube with no gravity, held at its centre of mass by a
- * frictionless pivot, tumbles slowly and turns under torques from the keys (a couple of forces from
+ * Rotating cube: rigid-body rotation in 3D. By default (mode 'room') a 1 m cube falls tumbling into a
+ * room and collides with the floor and the walls (a box collider and 3D box contacts): it lands,
+ * tumbles, slides and bounces off them; torques from the keys (a couple of forces from
  * `applyForceAtPoint` in a forces-stage system) and impulses from clicks (`applyImpulseAtPoint` at
- * the point of the face clicked, along the view direction). Arrows show its angular momentum L
- * (`spinAngularMomentum`, yellow) and angular velocity w (magenta): with no torque L stays fixed while
- * w moves whenever the body is not spinning about a principal axis.
+ * the point of the face clicked, along the view direction) push it about, and Space makes it jump.
+ * Arrows show its angular momentum L (`spinAngularMomentum`, yellow) and angular velocity w (magenta).
  *
- * Mode 'flip' spins a box with three distinct moments about its intermediate axis: it flips over
- * again and again (the Dzhanibekov effect); the plot shows w in the body frame.
- * Mode 'room' lets the cube go: gravity on, a box collider, a floor and four walls; it lands, tumbles,
- * slides and bounces off the walls (3D box contacts), pushed by the keys and clicks, and Space jumps.
+ * Mode 'cube' takes gravity away and holds the cube at its centre of mass on a frictionless pivot:
+ * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
+ * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
+ * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
+ * shows w in the body frame.
  * Keys: W/S, A/D, Q/E torque about the camera's right, up and viewing axes; X stops the spin;
- * Space jump (room); M switches mode; P pause, N single step, R reset. Click a face: an impulse there. Drag: orbit.
- * URL: ?mode=cube|flip|room, ?spin=rad/s.
+ * Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
+ * Click a face: an impulse there. Drag: orbit.
+ * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
 import {
@@ -34,7 +36,7 @@ const CLICK_SLOP = 5;
 const ARROW_LENGTH = 1.6;
 
 const params = {
-  mode: choiceParam('mode', MODES, 'cube') as Mode,
+  mode: choiceParam('mode', MODES, 'room') as Mode,
   torque: 0.5,
   impulse: 0.3,
   spin: numberParam('spin', { default: 6, min: 0.5, max: 30 }),
@@ -74,7 +76,7 @@ const game = await startThreeGame({
     { keys: 'Q E', action: 'torque: roll' },
     { keys: 'X', action: 'stop spinning' },
     { keys: 'Space', action: 'jump (room mode)' },
-    { keys: 'M', action: 'mode: cube / Dzhanibekov flip / room' },
+    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip' },
     ...ORBIT_CONTROLS,
   ],
   keys: [
@@ -219,7 +221,7 @@ function setMode(mode: Mode): void {
 }
 
 const panel = createPanel(params, [
-  { type: 'choice', key: 'mode', options: { 'cube (keys, clicks)': 'cube', 'Dzhanibekov flip': 'flip', 'room (gravity, walls)': 'room' }, onChange: (m) => setMode(m as Mode) },
+  { type: 'choice', key: 'mode', options: { 'room (gravity, floor, walls)': 'room', 'cube on a pivot (no gravity)': 'cube', 'Dzhanibekov flip (pivot)': 'flip' }, onChange: (m) => setMode(m as Mode) },
   { type: 'slider', key: 'torque', label: 'key torque (N m)', min: 0.05, max: 3, step: 0.05 },
   { type: 'slider', key: 'impulse', label: 'click impulse (N s)', min: 0.02, max: 2, step: 0.02 },
   { type: 'slider', key: 'spin', label: 'flip spin (rad/s, rebuilds)', min: 0.5, max: 30, step: 0.5, onRelease: true, onChange: () => { if (params.mode === 'flip') shell.reset(); } },
@@ -316,7 +318,7 @@ shell.expose({
   },
   /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the body was hit. */
   clickAt,
-  /** Switches mode ('cube' or 'flip') and rebuilds. @throws RangeError on an unknown mode. */
+  /** Switches mode ('room', 'cube' or 'flip') and rebuilds. @throws RangeError on an unknown mode. */
   setMode: (mode: Mode): void => {
     if (!MODES.includes(mode)) throw new RangeError(`setMode: mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);
     setMode(mode);

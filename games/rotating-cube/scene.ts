@@ -1,27 +1,28 @@
 /**
- * The rotating-cube scene: one rigid box, no gravity, turning by Euler's equations
- * I dw/dt = tau - w x I w (the physics package's 3D rigid rotation). A pure builder (no DOM, no
- * three.js), shared by the game and its tests.
+ * The rotating-cube scene: one rigid box turning by Euler's equations I dw/dt = tau - w x I w (the
+ * physics package's 3D rigid rotation). A pure builder (no DOM, no three.js), shared by the game and
+ * its tests.
  *
- * Two modes:
- * - `'cube'`: a 1 m cube of 1 kg (all three principal moments equal, m s^2 / 6, so L stays parallel
- *   to w) tumbling slowly; torques from the keys and impulses from clicks change its turning.
+ * Three modes:
+ * - `'room'` (the default): a 1 m cube of 1 kg free under gravity in a room (a floor and four walls
+ *   of static boxes): a box collider (`addShape3D`), so it lands, tumbles, slides and bounces off the
+ *   floor and the walls; keys and clicks push it harder (ROOM_PUSH times), and it can jump.
+ * - `'cube'`: the same cube without gravity, held at its centre of mass by a frictionless pivot (all
+ *   three principal moments equal, m s^2 / 6, so L stays parallel to w), tumbling slowly; torques
+ *   from the keys and impulses from clicks change its turning.
  * - `'flip'`: a 0.3 x 0.8 x 1.4 m box of 2 kg (three distinct moments, the 0.8 m edge's axis y the
- *   intermediate one) spun about y with a tiny perturbation: rotation about the intermediate axis
- *   is unstable, so the box flips over and back again and again while its angular momentum stays
- *   fixed (the Dzhanibekov or tennis-racket effect; Ashbaugh, Chicone and Cushman, "The twisting
- *   tennis racket", J. Dyn. Diff. Eq. 3, 1991).
- * - `'room'`: the 1 m cube free under gravity in a room (a floor and four walls of static boxes): a
- *   box collider (`addShape3D`), so it lands, tumbles, slides and bounces off the walls; keys and
- *   clicks push it harder (ROOM_PUSH times), and it can jump.
+ *   intermediate one) on the pivot, spun about y with a tiny perturbation: rotation about the
+ *   intermediate axis is unstable, so the box flips over and back again and again while its angular
+ *   momentum stays fixed (the Dzhanibekov or tennis-racket effect; Ashbaugh, Chicone and Cushman,
+ *   "The twisting tennis racket", J. Dyn. Diff. Eq. 3, 1991).
  */
 import {
   addBody, addPlane, addShape3D, addSystem, applyForceAtPoint, inertiaOfSolidBox, setAngularVelocity, type PhysicsWorld,
   type PhysicsWorldOptions, type System,
 } from '@bitphysics/physics';
 
-/** The two modes. */
-export const MODES = ['cube', 'flip', 'room'] as const;
+/** The modes, the default first (the M key cycles through them in this order). */
+export const MODES = ['room', 'cube', 'flip'] as const;
 /** One of `MODES`. */
 export type Mode = (typeof MODES)[number];
 
@@ -46,7 +47,7 @@ export const JUMP_IMPULSE = 4;
 
 /** Options of `buildRotatingCube`. */
 export interface RotatingCubeOptions {
-  /** The mode. Default 'cube'. */
+  /** The mode. Default 'room'. */
   mode?: Mode;
   /** Flip mode: spin about the intermediate (y) axis, rad/s, finite. Default 6. */
   spin?: number;
@@ -70,22 +71,22 @@ export interface RotatingCubeHandles {
   walls: number[];
 }
 
-/** World options: 3D, no gravity, room for the body; in room mode Earth gravity and 2 substeps. */
-export function rotatingCubeWorldOptions(mode: Mode = 'cube'): PhysicsWorldOptions {
+/** World options of `mode` (default 'room'): 3D; in room mode Earth gravity and 2 substeps, on the pivot no gravity. */
+export function rotatingCubeWorldOptions(mode: Mode = 'room'): PhysicsWorldOptions {
   return mode === 'room'
     ? { dimensions: 3, capacity: 16, gravity: [0, -9.81, 0], substeps: 2 }
     : { dimensions: 3, capacity: 8, gravity: [0, 0, 0] };
 }
 
 /**
- * Builds the body of `mode` at the origin (inertia from `inertiaOfSolidBox`) and hooks in a
- * constraints-stage system that holds its centre of mass at the pivot: a frictionless ball joint at
- * the centre of mass takes the linear part of every force and impulse and leaves the turning
- * (torque about the centre of mass) untouched.
+ * Builds the scene of `mode` (default 'room': see `buildRoom`). On the pivot ('cube', 'flip'): the
+ * body at the origin (inertia from `inertiaOfSolidBox`) and a constraints-stage system that holds its
+ * centre of mass at the pivot: a frictionless ball joint at the centre of mass takes the linear part
+ * of every force and impulse and leaves the turning (torque about the centre of mass) untouched.
  * @throws RangeError on an unknown mode, a non-finite spin, perturbation or tumble, or a 2D world.
  */
 export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOptions = {}): RotatingCubeHandles {
-  const mode = options.mode ?? 'cube';
+  const mode = options.mode ?? 'room';
   if (!MODES.includes(mode)) throw new RangeError(`rotating-cube: mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);
   if (world.dimensions !== 3) throw new RangeError(`rotating-cube: needs a 3D world, got dimensions ${world.dimensions}`);
   const spin = options.spin ?? 6, perturbation = options.perturbation ?? 0.01;

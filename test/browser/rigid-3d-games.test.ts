@@ -117,8 +117,11 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   });
 
-  it('rotating-cube room mode: the cube lands in its room and Space makes it jump', async () => {
-    const g = await open('rotating-cube', { mode: 'room' });
+  it('rotating-cube (room mode, the default): the cube lands in its room and Space makes it jump', async () => {
+    const g = await open('rotating-cube', {});
+    // The legend names the room's keys and the modes behind M.
+    const legend = await g.page.locator('.bp-legend').innerText();
+    for (const text of ['Space', 'jump', 'room / cube on a pivot / Dzhanibekov flip']) expect(legend).toContain(text);
     type Cube = Game3D & { body(): number; angularVelocity(): number[] };
     const landed = await g.page.evaluate(() => {
       const game = window.game as unknown as Cube;

@@ -494,7 +494,7 @@ describe('3D games in headless Chromium', () => {
   }, 150_000); // 3,000 balls in software WebGL beside the headless tests: a few steps can take a minute
 
   it('rotating-cube: held keys and a click on a face change the angular velocity', async () => {
-    const g = await open('rotating-cube', {});
+    const g = await open('rotating-cube', { mode: 'cube' }); // on its pivot (the default is the room)
     // It starts tumbling slowly; X stops it.
     const w0 = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
     expect(Math.hypot(...w0)).toBeGreaterThan(0.1);

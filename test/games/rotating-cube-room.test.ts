@@ -1,6 +1,6 @@
 /**
- * rotating-cube's room mode, headless: the free cube lands on the floor and comes to rest on a face
- * (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through.
+ * rotating-cube's room mode (the default), headless: the free cube lands on the floor and comes to
+ * rest on a face (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through.
  */
 import { describe, expect, it } from 'vitest';
 import { createPhysicsWorld, setVelocity, setAngularVelocity, step } from '@bitphysics/physics';
@@ -8,8 +8,11 @@ import { ROOM_HALF, buildRotatingCube, rotatingCubeWorldOptions } from '../../ga
 
 describe('rotating-cube room mode', () => {
   it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
-    const world = createPhysicsWorld(rotatingCubeWorldOptions('room'));
-    const h = buildRotatingCube(world, { mode: 'room' });
+    // No mode given: the room is the default, with Earth gravity.
+    const world = createPhysicsWorld(rotatingCubeWorldOptions());
+    const h = buildRotatingCube(world);
+    expect(h.mode).toBe('room');
+    expect(world.gravity[1]).toBeCloseTo(-9.81, 12);
     const P = world.components.Position, V = world.components.Velocity;
     expect(h.walls).toHaveLength(4);
     for (let i = 0; i < 180; i++) step(world);
