@@ -1,20 +1,25 @@
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
+import { fusedForcesOn } from '../integrators/fused-state.js';
 
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of
- * every body with `Torque`.
+ * every body with `Torque`. In a substep that runs the fused force-and-integrate pass
+ * (integrators/fused-gate.ts) the integrator writes every body's force itself, starting from this 0,
+ * and only the torques are cleared here.
  */
 export function clearForcesSystem(world: PhysicsWorld): void {
   const { Force, Torque } = world.components;
   const fx = Force.x, fy = Force.y, fz = Force.z;
-  let ents = query(world, [Force]);
-  if (world.dimensions === 2) {
-    for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; }
-  } else {
-    for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; fz[e] = 0; }
+  if (!fusedForcesOn(world)) {
+    const ents = query(world, [Force]);
+    if (world.dimensions === 2) {
+      for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; }
+    } else {
+      for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; fz[e] = 0; }
+    }
   }
-  ents = query(world, [Torque]);
+  const ents = query(world, [Torque]);
   const tx = Torque.x, ty = Torque.y, tz = Torque.z;
   for (let i = 0; i < ents.length; i++) { const e = ents[i]!; tx[e] = 0; ty[e] = 0; tz[e] = 0; }
 }

@@ -6,6 +6,7 @@ import { reportNonFinite } from '../errors.js';
 import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
+import { fusedForcesOn } from '../integrators/fused-state.js';
 
 const wind = new Float64Array(3);
 
@@ -24,8 +25,12 @@ export function calmAir(world: PhysicsWorld): boolean {
  * A force while k h / m < STIFF_RATE; at or above it this law adds nothing and `stiffDragSystem`
  * applies the exact decay v - u <- (v - u) exp(-k h / m) after the integrator, so the drag never
  * reverses or amplifies the velocity at any step size (see forces/dissipation.ts).
+ *
+ * In a substep that runs the fused force-and-integrate pass (integrators/fused-gate.ts) the integrator
+ * applies this law to every body that has it, with the same arithmetic, and this system does nothing.
  */
 export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
+  if (fusedForcesOn(world)) return;
   const { LinearDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [LinearDrag, Velocity, Force]);
   if (ents.length === 0) return;
@@ -67,9 +72,11 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
  *
  * A force while k |v - u| h / m < STIFF_RATE at the state it is evaluated at; otherwise it adds
  * nothing there and `stiffDragSystem` applies the exact update v - u <- (v - u) / (1 + k |v - u| h / m)
- * after the integrator (see forces/dissipation.ts).
+ * after the integrator (see forces/dissipation.ts). In a substep that runs the fused pass
+ * (integrators/fused-gate.ts) the integrator applies it instead, with the same arithmetic.
  */
 export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
+  if (fusedForcesOn(world)) return;
   const { QuadraticDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [QuadraticDrag, Velocity, Force]);
   if (ents.length === 0) return;
@@ -110,8 +117,8 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   }
 };
 
-/** Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law). */
-function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): void {
+/** Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law; the fused pass calls it too). */
+export function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): void {
   const st = dissipationState(world);
   allocateStiffStamps(world, st);
   st.quadraticStamp[e] = st.epoch;

@@ -3,6 +3,7 @@ import type { IntegratorName } from './names.js';
 import { semiImplicitEuler } from './semi-implicit-euler.js';
 import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
 import { implicitEuler } from './implicit-euler.js';
+import { registerFusedIntegrator } from './fused-gate.js';
 
 /** An integration scheme: advances every moving body of the world by h seconds. */
 export type Integrator = (world: PhysicsWorld, h: number) => void;
@@ -22,3 +23,4 @@ export const INTEGRATORS: Readonly<Record<IntegratorName, Integrator>> = Object.
 export function integrateSystem(world: PhysicsWorld): void {
   INTEGRATORS[world.integrator](world, world.h);
 }
+registerFusedIntegrator(integrateSystem);

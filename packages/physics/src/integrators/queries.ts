@@ -53,3 +53,27 @@ export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
     ? query(world, [c.AngularVelocity, c.Angle, Not(c.Static), Not(c.Sleeping)])
     : query(world, [c.AngularVelocity, c.Orientation, Not(c.InertiaTensor), Not(c.Static), Not(c.Sleeping)]);
 }
+
+/*
+ * The fused force-and-integrate pass (integrators/fused-gate.ts) splits the forced bodies by the drag
+ * they carry; the three lists below are disjoint, and together they are every forced body exactly when
+ * none carries a GravityScale or both drags (the gate checks this by their lengths).
+ */
+
+/** Forced bodies with no drag and no gravity scale: no built-in law writes their force (fused pass). */
+export function fusedBareBodies(world: PhysicsWorld): QueryResult {
+  const c = world.components;
+  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), Not(c.LinearDrag), Not(c.QuadraticDrag), Not(c.GravityScale)]);
+}
+
+/** Forced bodies with quadratic drag only (no linear drag, no gravity scale): the fused pass. */
+export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
+  const c = world.components;
+  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), c.QuadraticDrag, Not(c.LinearDrag), Not(c.GravityScale)]);
+}
+
+/** Forced bodies with linear drag only (no quadratic drag, no gravity scale): the fused pass. */
+export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
+  const c = world.components;
+  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), c.LinearDrag, Not(c.QuadraticDrag), Not(c.GravityScale)]);
+}

@@ -4,6 +4,11 @@ import { forcedBodies, freeBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
+import { fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
+import { fusedForcesOn, setFusedForces } from './fused-state.js';
+import { markStiffQuadratic } from '../forces/drag.js';
+import { dissipationState, STIFF_RATE } from '../forces/dissipation.js';
+import { reportNonFiniteForces } from '../pipeline/finite.js';
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -30,6 +35,9 @@ import { KERNEL } from '../threads/kernels.js';
  *
  * In a world with threads > 1 the two body loops are split over the threads (threads/kernels.ts
  * holds the same loops); each body's arithmetic is unchanged, so the state is identical to the bit.
+ *
+ * In a substep that runs the fused force-and-integrate pass (integrators/fused-gate.ts says when), the
+ * forced bodies' forces are written here, in the same pass that moves them (`fusedForced2`).
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
@@ -46,10 +54,14 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
 
   let ents = forcedBodies(world);
   let check = 0;
-  const par = world.threadPool === null ? null : is2D
+  const fused = is2D && fusedForcesOn(world);
+  if (fused) setFusedForces(world, false);
+  const par = fused || world.threadPool === null ? null : is2D
     ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced2, [px, py, vx, vy, ox, oy, fx, fy, im], [h, gxh, gyh, hx, hy], ents.length, ents)
     : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced3, [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im], [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
-  if (par !== null) {
+  if (fused) {
+    fusedForced2(world, h);
+  } else if (par !== null) {
     check = par;
   } else if (is2D) {
     for (let i = 0; i < ents.length; i++) {
@@ -139,6 +151,111 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   advanceKinematic(world, h);
   applyTorques(world, h);
   advanceOrientations(world, h);
+}
+
+/**
+ * The fused pass of a 2D semi-implicit Euler substep (integrators/fused-gate.ts): for each forced body,
+ * its force as the cleared accumulator and the built-in laws would leave it (0 for a body without drag;
+ * 0 - k v for linear drag and 0 - k |v| v for quadratic drag, or 0 and the stiff stamp where the law is
+ * stiff, exactly as `linearDragSystem` and `quadraticDragSystem` decide; the z component as they write
+ * it), stored in `Force`, then the forced-body update of `semiImplicitEuler` with it. The same
+ * operations in the same order per body as the separate stages, so the same bits.
+ * @throws NonFiniteStateError naming a force (stage 'forces') if one is NaN or infinite, else a
+ *   velocity or position (stage 'integrate'); the bodies have then all been moved.
+ */
+function fusedForced2(world: PhysicsWorld, h: number): void {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const im = c.Mass.inv;
+  const g = world.gravity;
+  const gxh = g[0]! * h, gyh = g[1]! * h;
+  const hx = 0.5 * gxh, hy = 0.5 * gyh;
+  // The drags' stiffness threshold (forces/drag.ts): k h / m >= STIFF_RATE, i.e. k / m >= limit.
+  const limit = STIFF_RATE / world.h;
+
+  // No drag: the cleared force, 0; exact free fall.
+  let ents = fusedBareBodies(world);
+  let check = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    fx[e] = 0; fy[e] = 0;
+    const w = im[e]! * h;
+    const nvx = vx[e]! + 0 * w + gxh, nvy = vy[e]! + 0 * w + gyh;
+    const x = px[e]!, y = py[e]!;
+    ox[e] = x; oy[e] = y;
+    vx[e] = nvx; vy[e] = nvy;
+    const nx = x + (nvx - hx) * h, ny = y + (nvy - hy) * h;
+    px[e] = nx; py[e] = ny;
+    check += nvx + nvy + nx * 0 + ny * 0;
+  }
+  if (check - check !== 0) { reportNonFiniteForces(world, ents); reportNonFinite(world, ents, 'integrate'); }
+
+  // Quadratic drag F = -k |v| v (forces/drag.ts, calm air).
+  ents = fusedQuadraticBodies(world);
+  check = 0;
+  let forces = 0;
+  const kq = c.QuadraticDrag.k;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const u = vx[e]!, v = vy[e]!, z = vz[e]!;
+    const inv = im[e]!;
+    const cq = kq[e]! * Math.sqrt(u * u + v * v + z * z);
+    let fxe = 0, fye = 0;
+    if (cq * inv >= limit) markStiffQuadratic(world, e, kq[e]!);
+    else {
+      fxe = 0 - cq * u; fye = 0 - cq * v;
+      // The z component as the law writes it (0 in a 2D world unless set by hand: then unchanged but for a -0).
+      if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cq * z;
+    }
+    fx[e] = fxe; fy[e] = fye;
+    const w = inv * h;
+    const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh;
+    const x = px[e]!, y = py[e]!;
+    ox[e] = x; oy[e] = y;
+    vx[e] = nvx; vy[e] = nvy;
+    const k = fxe === 0 && fye === 0 ? 1 : 0;
+    const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h;
+    px[e] = nx; py[e] = ny;
+    check += nvx + nvy + nx * 0 + ny * 0;
+    forces += fxe * 0 + fye * 0;
+  }
+  if (check - check !== 0 || forces !== 0) { reportNonFiniteForces(world, ents); reportNonFinite(world, ents, 'integrate'); }
+
+  // Linear drag F = -k v (forces/drag.ts, calm air).
+  ents = fusedLinearBodies(world);
+  check = 0;
+  forces = 0;
+  let stiff = 0;
+  const kl = c.LinearDrag.k;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const u = vx[e]!, v = vy[e]!;
+    const inv = im[e]!;
+    const cl = kl[e]!;
+    let fxe = 0, fye = 0;
+    if (cl * inv >= limit) stiff++;
+    else {
+      fxe = 0 - cl * u; fye = 0 - cl * v;
+      const z = vz[e]!;
+      if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cl * z;
+    }
+    fx[e] = fxe; fy[e] = fye;
+    const w = inv * h;
+    const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh;
+    const x = px[e]!, y = py[e]!;
+    ox[e] = x; oy[e] = y;
+    vx[e] = nvx; vy[e] = nvy;
+    const k = fxe === 0 && fye === 0 ? 1 : 0;
+    const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h;
+    px[e] = nx; py[e] = ny;
+    check += nvx + nvy + nx * 0 + ny * 0;
+    forces += fxe * 0 + fye * 0;
+  }
+  if (stiff > 0) { const st = dissipationState(world); st.linearSeen = st.epoch; }
+  if (check - check !== 0 || forces !== 0) { reportNonFiniteForces(world, ents); reportNonFinite(world, ents, 'integrate'); }
 }
 
 /** Moves kinematic bodies with their own velocity (shared by every scheme: their velocity is given). */

@@ -5,6 +5,7 @@ import { currentHandle } from '../handles.js';
 import { type StageName } from './stage-names.js';
 import { runParallel } from '../threads/parallel.js';
 import { KERNEL } from '../threads/kernels.js';
+import { fusedForcesOn } from '../integrators/fused-state.js';
 
 /**
  * The finiteness check `step` runs at the end of each stage: a NaN or infinity in a body's state is
@@ -21,7 +22,9 @@ import { KERNEL } from '../threads/kernels.js';
  * marked, so a stage made only of them is not checked again (after `integrate` only the turning
  * bodies are); a user system added with `addSystem` is always checked after.
  * In 2D the z components of the linear state are not part of the motion and are not checked;
- * `clearForces` writes zeros and is never checked.
+ * `clearForces` writes zeros and is never checked. In a substep that runs the fused force-and-integrate
+ * pass (integrators/fused-gate.ts) the forces are written by the integrator, which checks them itself
+ * and reports a non-finite one as this check would (field 'Force.x' or 'Force.y', stage 'forces').
  *
  * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
  * per field, and a second pass to name the culprit only when the first finds one.
@@ -135,7 +138,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
   if (stage === 'forces') {
     const F = c.Force, T = c.Torque;
     let ents = query(world, [F]);
-    if (ents.length > 0) {
+    if (ents.length > 0 && !fusedForcesOn(world)) {
       const dense = ents.length === maxId;
       const par = world.threadPool === null ? null
         : runParallel(world, 'forces stage finiteness check', KERNEL.finiteProbe, is2D ? [F.x, F.y] : [F.x, F.y, F.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
@@ -182,6 +185,17 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
         ['Orientation.x', Q.x], ['Orientation.y', Q.y], ['Orientation.z', Q.z], ['Orientation.w', Q.w]]);
     }
   }
+}
+
+/**
+ * For the fused force-and-integrate pass (2D; integrators/semi-implicit-euler.ts), after its running
+ * check failed: throws the NonFiniteStateError this module's check of the forces stage would have thrown
+ * (the first of `ents` whose Force.x or Force.y is NaN or infinite, stage 'forces'); returns if every
+ * force is finite (the caller then names the position or velocity).
+ */
+export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
+  const F = world.components.Force;
+  if (sum2(ents, false, F.x, F.y) !== 0) name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y]]);
 }
 
 /** The slow pass, run once a fast pass found a non-finite value: throws naming the first culprit. */

@@ -3,6 +3,8 @@ import { STAGES, SUBSTEP_STAGES, type StageName } from './stage-names.js';
 import { assertOptions, describe } from '../validate.js';
 import { query } from '../query.js';
 import { checkStageState, stageNeedsCheck } from './finite.js';
+import { armFusedForces } from '../integrators/fused-gate.js';
+import { setFusedForces } from '../integrators/fused-state.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
 const clock = (globalThis as { performance?: { now(): number } }).performance;
@@ -55,6 +57,8 @@ export function step(world: PhysicsWorld): void {
   for (let s = 0; s < n; s++) {
     world.time = t0 + s * h;
     world.substepStart = world.time;
+    // One pass for the forces and the integrator where nothing else touches forces (integrators/fused-gate.ts).
+    armFusedForces(world);
     for (const stage of SUBSTEP_STAGES) {
       runStage(world, stage);
       if (stage === 'integrate') world.time = t0 + (s + 1) * h;
@@ -111,6 +115,7 @@ export function stepMany(world: PhysicsWorld, count: number): void {
  * law must be a pure function of the state arrays it reads.
  */
 export function evaluateForces(world: PhysicsWorld): void {
+  setFusedForces(world, false);
   const clear = world.stages.clearForces;
   for (let i = 0; i < clear.length; i++) clear[i]!(world);
   const forces = world.stages.forces;

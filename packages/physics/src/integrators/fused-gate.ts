@@ -1,0 +1,109 @@
+import type { PhysicsWorld, System } from '../world.js';
+import { query } from '../query.js';
+import { clearForcesSystem } from '../forces/clear.js';
+import { calmAir, linearDragSystem, liftSystem, quadraticDragSystem } from '../forces/drag.js';
+import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
+import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
+import { centralForceSystem } from '../forces/central.js';
+import { buoyancySystem } from '../forces/fluid.js';
+import { springSystem } from '../forces/spring.js';
+import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
+import { thrustSystem } from '../forces/thrust.js';
+import { angularDampingSystem } from '../forces/angular-damping.js';
+import { ballastTrimSystem } from '../forces/ballast.js';
+import { bodyThrustSystem } from '../forces/body-thrust.js';
+import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
+import { vortexSystem } from '../forces/vortex.js';
+import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
+import { setFusedForces } from './fused-state.js';
+
+/**
+ * When a substep may fuse stages 2 to 4 for the world's forced bodies: one pass that writes each
+ * body's force (linear or quadratic drag, or none) and integrates it (semi-implicit Euler), instead of a
+ * pass that clears the accumulators, one per drag law, the forces stage's finiteness check and the
+ * integrator's pass. In a world of particles under gravity and drag (fireworks) those were five passes
+ * over the same arrays where a hand-written loop makes one.
+ *
+ * The fused pass is the separate stages' arithmetic, operation for operation (the force starts at the
+ * cleared 0 and each law subtracts its term, the stiff regime is decided and stamped the same way), so
+ * the state after a step is identical to the bit. It is used only where nothing else can touch a force
+ * accumulator between the clear and the integrator, checked at the start of every substep:
+ *
+ * - the world integrates with semi-implicit Euler, is 2D and has no worker threads, and its air is calm
+ *   (no wind: drag then reads the body's own velocity);
+ * - the clearForces stage is exactly `clearForcesSystem`, and the integrate stage starts with the
+ *   world's integrator (`registerFusedIntegrator`), so no user system reads or writes forces there;
+ * - every system of the forces stage is a built-in law: linear drag, quadratic drag and the gravity scale
+ *   once each (the pass applies the drags; the gravity scale has no body in the pass), and every other
+ *   one with nothing to act on (no springs, attractors, charges, thrusters, ...), or one that writes
+ *   torques only. A user's force law, a law added twice, or a law this module does not know turns the
+ *   pass off for the substep, and every stage runs as usual;
+ * - every body with a force accumulator is a dynamic, awake mover carrying linear drag, quadratic drag
+ *   or neither, and no gravity scale (the three fused lists cover the forced bodies, which cover the
+ *   bodies with `Force`).
+ *
+ * Particles stay ordinary entities: a component a user gives a particle that a built-in law acts on
+ * (a charge, a thruster) makes that law busy and so turns the pass off; after the step every body's
+ * `Force` holds what the laws would have written.
+ */
+
+/** Laws that write only torques, or forces never: they may run beside the fused pass. */
+const TORQUE_ONLY: ReadonlySet<System> = new Set<System>([angularDampingSystem, ballastTrimSystem]);
+
+/** The laws the fused pass applies itself (each must be in the stage exactly once). */
+const ABSORBED: readonly System[] = [linearDragSystem, quadraticDragSystem, gravityScaleSystem];
+
+/** Built-in laws that may stay in the stage while they have nothing to act on: their own query is empty. */
+const IDLE_WHEN: ReadonlyMap<System, (world: PhysicsWorld) => boolean> = new Map<System, (world: PhysicsWorld) => boolean>([
+  [mutualGravitySystem, (w) => { const c = w.components; return query(w, [c.MutualGravity, c.Position, c.Mass, c.Force]).length < 2; }],
+  [attractorSystem, (w) => { const c = w.components; return query(w, [c.Attractor, c.Position]).length === 0; }],
+  [coulombSystem, (w) => { const c = w.components; return query(w, [c.Charge, c.Position, c.Force]).length < 2; }],
+  [lorentzSystem, (w) => { const c = w.components; return query(w, [c.Charge, c.Force, c.Velocity]).length === 0; }],
+  [centralForceSystem, (w) => { const c = w.components; return query(w, [c.CentralForce, c.Position, c.Force]).length === 0; }],
+  [liftSystem, (w) => { const c = w.components; return query(w, [c.Lift, c.Velocity, c.Force]).length === 0; }],
+  [buoyancySystem, (w) => { const c = w.components; return query(w, [c.Buoyancy, c.Position, c.Velocity, c.Force]).length === 0; }],
+  [springSystem, (w) => query(w, [w.components.Spring]).length === 0],
+  [drivingForceSystem, (w) => { const c = w.components; return query(w, [c.DrivingForce, c.Force]).length === 0; }],
+  [randomForceSystem, (w) => { const c = w.components; return query(w, [c.RandomForce, c.Force]).length === 0; }],
+  [thrustSystem, (w) => { const c = w.components; return query(w, [c.Thrust, c.Force, c.Mass]).length === 0; }],
+  [vortexSystem, (w) => { const c = w.components; return query(w, [c.Vortex, c.Position, c.Force]).length === 0; }],
+  [bodyThrustSystem, (w) => { const c = w.components; return query(w, [c.BodyThrust, c.Force]).length === 0; }],
+  [liftingSurfaceSystem, (w) => query(w, [w.components.LiftingSurface]).length === 0],
+]);
+
+let integrator: System | null = null;
+
+/** Registers the integrate stage's integrator system (integrate.ts does, at load). */
+export function registerFusedIntegrator(system: System): void {
+  integrator = system;
+}
+
+/** Whether the current substep of `world` may run the fused pass (the conditions of the module comment). */
+export function fusedForcesAllowed(world: PhysicsWorld): boolean {
+  if (world.dimensions !== 2 || world.integrator !== 'semi-implicit-euler' || world.threadPool !== null) return false;
+  const stages = world.stages;
+  const clear = stages.clearForces, integrate = stages.integrate, forces = stages.forces;
+  if (clear.length !== 1 || clear[0] !== clearForcesSystem) return false;
+  if (integrate.length === 0 || integrate[0] !== integrator) return false;
+  let absorbed = 0;
+  for (let i = 0; i < forces.length; i++) {
+    const s = forces[i]!;
+    if (ABSORBED.includes(s)) { absorbed++; continue; }
+    if (TORQUE_ONLY.has(s)) continue;
+    const idle = IDLE_WHEN.get(s);
+    if (idle === undefined || !idle(world)) return false;
+  }
+  // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
+  if (absorbed !== ABSORBED.length) return false;
+  for (let i = 0; i < ABSORBED.length; i++) if (forces.indexOf(ABSORBED[i]!) !== forces.lastIndexOf(ABSORBED[i]!)) return false;
+  if (!calmAir(world)) return false;
+  const forced = forcedBodies(world).length;
+  if (forced === 0) return false;
+  if (query(world, [world.components.Force]).length !== forced) return false;
+  return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
+}
+
+/** Called by `step` at the start of every substep: turns the fused pass on or off for it. */
+export function armFusedForces(world: PhysicsWorld): void {
+  setFusedForces(world, fusedForcesAllowed(world));
+}

@@ -1,0 +1,30 @@
+import type { PhysicsWorld } from '../world.js';
+
+/**
+ * Which world's current substep runs the fused force-and-integrate pass (see integrators/fused-gate.ts
+ * for when, and integrators/semi-implicit-euler.ts for the pass). While it is on, the force accumulators
+ * of the world's bodies are written by the integrator instead of by `clearForcesSystem`,
+ * `linearDragSystem` and `quadraticDragSystem` (which then skip them), and the finiteness check of the
+ * forces stage leaves `Force` to the integrator's own check.
+ *
+ * One world at a time: `step` turns it on at the start of a substep, only built-in systems run until the
+ * integrator (the gate refuses any other system in the stages between), and the integrator turns it off
+ * once it has run; `evaluateForces` turns it off too (a call outside a step always evaluates every law
+ * the ordinary way). So it is never on across steps or for two worlds, and carries no state between
+ * steps (nothing for snapshots).
+ *
+ * A leaf module (no imports but types): the systems that consult the flag import it, and the gate that
+ * sets it imports those systems.
+ */
+let current: PhysicsWorld | null = null;
+
+/** Whether the fused pass is on for the current substep of `world`. */
+export function fusedForcesOn(world: PhysicsWorld): boolean {
+  return current === world;
+}
+
+/** Turns the fused pass of `world` on or off (the gate, the integrator and `evaluateForces` call this). */
+export function setFusedForces(world: PhysicsWorld, value: boolean): void {
+  if (value) current = world;
+  else if (current === world) current = null;
+}

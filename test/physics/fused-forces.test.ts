@@ -1,0 +1,142 @@
+import { describe, expect, test } from 'vitest';
+import {
+  addBody, addEmitter, addSpring, addSystem, createPhysicsWorld, NonFiniteStateError, SCENES, setAttractor, setWind, stateHash, step,
+  type PhysicsWorld,
+} from '@bitphysics/physics';
+import { hasComponent, query } from 'bitecs';
+import { fusedForcesAllowed } from '../../packages/physics/src/integrators/fused-gate.js';
+
+// The fused force-and-integrate pass (integrators/fused-gate.ts, semi-implicit-euler.ts fusedForced2)
+// must leave exactly the state the separate stages leave (clear, drag laws, forces check, integrator).
+// The independent reference is the separate path itself: a no-op user system in the forces stage turns
+// the pass off (the gate refuses any system it does not know), so the same scene stepped both ways must
+// hash the same, every bit of every body (stateHash) including the Force accumulators. Exact equality:
+// the pass performs the same floating-point operations in the same order per body.
+
+const noop = (): void => {};
+
+/** A 2D world of particles of every kind the pass handles, stiff and not, and plain bodies with drag. */
+function mixedWorld(substeps: number): PhysicsWorld {
+  const world = createPhysicsWorld({ dimensions: 2, capacity: 6000, gravity: [0, -9.81], seed: 3, substeps });
+  // Quadratic drag: k |v| h / m from ~0.004 (5 m/s) to ~0.3 at 40 m/s, so some steps are stiff.
+  const quad = addEmitter(world, { position: [0, 0], rate: 3000, speed: [5, 40], lifetime: [0.3, 0.9], particle: { mass: 0.002, quadraticDrag: 1e-3 } });
+  void quad;
+  // Linear drag: k h / m = 0.5 (stiff) for one emitter, 0.05 for the other.
+  addEmitter(world, { position: [3, 0], rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.3 } });
+  addEmitter(world, { position: [-3, 0], rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.03 } });
+  // Mass only (a force accumulator, no law): exact free fall; bursts into quadratic-drag sparks.
+  const sparks = addEmitter(world, { speed: [1, 3], lifetime: [0.2, 0.4], particle: { mass: 0.001, quadraticDrag: 2e-5 } });
+  addEmitter(world, { position: [0, 1], rate: 120, speed: [8, 12], lifetime: [0.2, 0.5], particle: { mass: 0.1 }, onDeath: { emitter: sparks, count: 10, maxGeneration: 1 } });
+  // Ordinary bodies with drag beside the particles.
+  addBody(world, { position: [10, 5], velocity: [3, 1], mass: 2, quadraticDrag: 0.05 });
+  addBody(world, { position: [-10, 5], velocity: [-3, 1], mass: 2, linearDrag: 0.5 });
+  return world;
+}
+
+describe('the fused force-and-integrate pass', () => {
+  test('gives the separate stages\' state to the bit (particles with quadratic, linear and no drag, stiff and not; 1 and 2 substeps)', () => {
+    for (const substeps of [1, 2]) {
+      const fused = mixedWorld(substeps), separate = mixedWorld(substeps);
+      addSystem(separate, 'forces', noop);
+      let fusedSteps = 0;
+      for (let i = 0; i < 120; i++) {
+        if (fusedForcesAllowed(fused)) fusedSteps++;
+        expect(fusedForcesAllowed(separate)).toBe(false);
+        step(fused); step(separate);
+      }
+      // The pass really ran (all but the first step, before any particle had a force accumulator).
+      expect(fusedSteps, `substeps ${substeps}`).toBeGreaterThanOrEqual(119);
+      expect(stateHash(fused), `substeps ${substeps}`).toBe(stateHash(separate));
+    }
+  });
+
+  test('gives the separate stages\' state to the bit on the fireworks scene (300 steps)', () => {
+    const make = () => {
+      const def = SCENES.fireworks!;
+      const world = createPhysicsWorld(def.worldOptions({ count: 3000 }));
+      def.build(world, { count: 3000 });
+      return world;
+    };
+    const fused = make(), separate = make();
+    addSystem(separate, 'forces', noop);
+    for (let i = 0; i < 300; i++) { step(fused); step(separate); }
+    expect(fusedForcesAllowed(fused)).toBe(true);
+    expect(stateHash(fused)).toBe(stateHash(separate));
+  });
+
+  test('a user force law on particles still applies (the pass turns off): v1 = v0 + (F / m + g) h, drag included', () => {
+    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 200 });
+    addEmitter(world, { position: [0, 0], rate: 600, speed: [2, 4], lifetime: 5, particle: { mass: 0.5 } });
+    addEmitter(world, { position: [0, 0], rate: 600, speed: [2, 4], lifetime: 5, particle: { mass: 0.5, quadraticDrag: 0.01 } });
+    for (let i = 0; i < 3; i++) step(world);
+    expect(fusedForcesAllowed(world)).toBe(true);
+    const c = world.components;
+    const F = 2; // N along +x on every particle
+    addSystem(world, 'forces', (w) => {
+      for (const e of query(w as never, [c.Particle, c.Force])) c.Force.x[e] = c.Force.x[e]! + F;
+    });
+    expect(fusedForcesAllowed(world)).toBe(false);
+    const ents = Array.from(query(world as never, [c.Particle, c.Force]));
+    expect(ents.length).toBeGreaterThan(20);
+    const v0 = ents.map((e) => [c.Velocity.x[e]!, c.Velocity.y[e]!]);
+    step(world);
+    const h = world.dt, m = 0.5;
+    ents.forEach((e, i) => {
+      const [u, v] = v0[i]!;
+      // Quadratic drag -k |v| v where the particle has it (k |v| h / m <= 0.01 * 5 / 60 / 0.5: never stiff).
+      const k = hasComponent(world as never, e, c.QuadraticDrag) ? 0.01 : 0;
+      const s = Math.hypot(u, v);
+      const ax = (F - k * s * u) / m, ay = (-k * s * v) / m - 9.81;
+      // Relative 1e-12: the same formula in a different order of operations.
+      expect(c.Velocity.x[e]).toBeCloseTo(u + ax * h, 12);
+      expect(c.Velocity.y[e]).toBeCloseTo(v + ay * h, 12);
+    });
+  });
+
+  test('turns off for anything that could touch a force accumulator, and on again without it', () => {
+    const make = (): PhysicsWorld => {
+      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 100 });
+      addBody(world, { position: [0, 5], mass: 1, quadraticDrag: 0.1 });
+      return world;
+    };
+    expect(fusedForcesAllowed(make())).toBe(true);
+    // Another integrator; 3D; threads are covered by the same first line of the gate.
+    expect(fusedForcesAllowed(createPhysicsWorld({ dimensions: 2, integrator: 'rk4' }))).toBe(false);
+    let w = make();
+    setWind(w, { velocity: [1, 0] });
+    expect(fusedForcesAllowed(w)).toBe(false);
+    w = make();
+    setAttractor(w, addBody(w, { position: [0, 0], static: true }), { mass: 1e10 });
+    expect(fusedForcesAllowed(w)).toBe(false);
+    w = make();
+    addSpring(w, { anchor: [0, 10], b: addBody(w, { position: [0, 8], mass: 1 }), stiffness: 10 });
+    expect(fusedForcesAllowed(w)).toBe(false);
+    // A body with both drags (not a fused kind): off.
+    w = make();
+    addBody(w, { mass: 1, linearDrag: 0.1, quadraticDrag: 0.1 });
+    expect(fusedForcesAllowed(w)).toBe(false);
+    // A static body with a force accumulator: off (the pass writes movers only).
+    w = make();
+    addBody(w, { mass: 1, quadraticDrag: 0.1, static: true });
+    expect(fusedForcesAllowed(w)).toBe(false);
+  });
+
+  test('a drag force that overflows is reported as the forces stage reports it (Force.x, stage forces, the body)', () => {
+    // k = 1e200 kg/m at 1e60 m/s on 1e300 kg: k |v| h / m = 1e-40 (not stiff), F = k v^2 = 1e320 = Infinity.
+    const errorOf = (separate: boolean): NonFiniteStateError => {
+      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0] });
+      const b = addBody(world, { mass: 1e300, quadraticDrag: 1e200, velocity: [1e60, 0] });
+      if (separate) addSystem(world, 'forces', noop);
+      expect(fusedForcesAllowed(world)).toBe(!separate);
+      let caught: unknown;
+      try { step(world); } catch (e) { caught = e; }
+      expect(caught).toBeInstanceOf(NonFiniteStateError);
+      expect((caught as NonFiniteStateError).entity).toBe(b);
+      return caught as NonFiniteStateError;
+    };
+    const a = errorOf(false), b = errorOf(true);
+    expect([a.field, a.stage]).toEqual(['Force.x', 'forces']);
+    expect([a.field, a.stage]).toEqual([b.field, b.stage]);
+    expect(a.message).toContain('(-Infinity)');
+  });
+});
