@@ -99,9 +99,13 @@ function viewOf(mode: Mode): { min: [number, number, number]; max: [number, numb
     : { min: [-1.3, -1.3, -1.3], max: [1.3, 1.3, 1.3] };
 }
 
-/** Debug layer: body axes; in the room also the contact points. */
+/**
+ * Debug layer: on the pivot the body's axes; in the room the contact points instead (the layer draws
+ * axes for every body, 1.5 times its size: the walls' would cross the whole room).
+ */
 function debugOptions() {
-  return { axes: true, velocities: false, contacts: params.mode === 'room', joints: false };
+  const room = params.mode === 'room';
+  return { axes: !room, velocities: false, contacts: room, joints: false };
 }
 
 /** Room mode: the key torque and click impulse scale. */
@@ -227,7 +231,7 @@ const panel = createPanel(params, [
   { type: 'slider', key: 'spin', label: 'flip spin (rad/s, rebuilds)', min: 0.5, max: 30, step: 0.5, onRelease: true, onChange: () => { if (params.mode === 'flip') shell.reset(); } },
   { type: 'checkbox', key: 'showL', label: 'angular momentum L' },
   { type: 'checkbox', key: 'showOmega', label: 'angular velocity ω' },
-  { type: 'checkbox', key: 'axes', label: 'body axes (room: contacts)', onChange: (v) => renderer.setDebug(v === true ? debugOptions() : false) },
+  { type: 'checkbox', key: 'axes', label: 'contacts (room) / body axes (pivot)', onChange: (v) => renderer.setDebug(v === true ? debugOptions() : false) },
   { type: 'button', key: 'stop', label: 'stop spinning (X)' },
   { type: 'button', key: 'reset', label: 'reset (R)' },
 ], { title: 'Rotating cube' });
