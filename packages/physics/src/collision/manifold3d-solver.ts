@@ -85,7 +85,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
   void count;
   if (n === 0) return;
-  if (st.jacobians.length < JAC * 4 * n) st.jacobians = new Float64Array(JAC * 4 * Math.max(n, 2 * st.jacobians.length / (4 * JAC)));
+  if (st.jacobians.length < JAC * 4 * n) st.jacobians = new Float32Array(JAC * 4 * Math.max(n, 2 * st.jacobians.length / (4 * JAC)));
   const J = st.jacobians;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   for (let i = 0; i < n; i++) {
@@ -163,7 +163,7 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
  * to B, the angular parts from the point's precomputed I^-1 (r x u). Body row 0 (the static world) is
  * never written.
  */
-function apply(sb: Float64Array, J: Float64Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number): void {
+function apply(sb: Float64Array, J: Float32Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number): void {
   const o = JAC * q + 12 * d;
   if (ka > 0) {
     const a = 12 * ka, m = sb[a + 9]! * lam;
@@ -180,27 +180,44 @@ function apply(sb: Float64Array, J: Float64Array, ka: number, kb: number, q: num
 }
 
 /** Relative velocity of B against A at point q along direction u (d as in `apply`). */
-function relativeSpeed(sb: Float64Array, J: Float64Array, a: number, b: number, q: number, d: number, ux: number, uy: number, uz: number): number {
+function relativeSpeed(sb: Float64Array, J: Float32Array, a: number, b: number, q: number, d: number, ux: number, uy: number, uz: number): number {
   const o = JAC * q + 12 * d;
   return (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
     + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
     - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
 }
 
-/** Warm start: last step's impulses applied again. */
+/** Warm start: last step's impulses applied again (all three directions of a point at once). */
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
   const buf = st.current, sb = world.collision.bodyState, J = st.jacobians;
+  const LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2;
   for (let i = 0; i < buf.count; i++) {
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-    const ka = buf.ia[i]!, kb = buf.ib[i]!;
+    const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
+    const mA = sb[a + 9]!, mB = sb[b + 9]!;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
-      const q = 4 * i + k, ln = buf.ln[q]!, l1 = buf.lt1[q]!, l2 = buf.lt2[q]!;
-      if (ln !== 0) apply(sb, J, ka, kb, q, 0, ln, nx, ny, nz);
-      if (l1 !== 0) apply(sb, J, ka, kb, q, 1, l1, t1x, t1y, t1z);
-      if (l2 !== 0) apply(sb, J, ka, kb, q, 2, l2, t2x, t2y, t2z);
+      const q = 4 * i + k, ln = LN[q]!, l1 = LT1[q]!, l2 = LT2[q]!;
+      if (ln === 0 && l1 === 0 && l2 === 0) continue;
+      const o = JAC * q;
+      // Linear impulse P = ln n + l1 t1 + l2 t2; angular: the sum of lambda I^-1 (r x u) over the three directions.
+      const px = ln * nx + l1 * t1x + l2 * t2x, py = ln * ny + l1 * t1y + l2 * t2y, pz = ln * nz + l1 * t1z + l2 * t2z;
+      if (ka > 0) {
+        sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
+        sb[a + 3] = sb[a + 3]! - ln * J[o + 6]! - l1 * J[o + 18]! - l2 * J[o + 30]!;
+        sb[a + 4] = sb[a + 4]! - ln * J[o + 7]! - l1 * J[o + 19]! - l2 * J[o + 31]!;
+        sb[a + 5] = sb[a + 5]! - ln * J[o + 8]! - l1 * J[o + 20]! - l2 * J[o + 32]!;
+        sb[a + 11] = 1;
+      }
+      if (kb > 0) {
+        sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
+        sb[b + 3] = sb[b + 3]! + ln * J[o + 9]! + l1 * J[o + 21]! + l2 * J[o + 33]!;
+        sb[b + 4] = sb[b + 4]! + ln * J[o + 10]! + l1 * J[o + 22]! + l2 * J[o + 34]!;
+        sb[b + 5] = sb[b + 5]! + ln * J[o + 11]! + l1 * J[o + 23]! + l2 * J[o + 35]!;
+        sb[b + 11] = 1;
+      }
     }
   }
 }
@@ -217,79 +234,95 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const backward = st.solveParity === 1;
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
   const sep = buf.sep, LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2, MN = buf.mn, MT1 = buf.mt1, MT2 = buf.mt2, MAX = buf.maxLn;
-  for (let i = 0; i < buf.count; i++) {
-    const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
-    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
-    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+  const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
+  const invHs = 1 / hs;
+  for (let i = 0, count = buf.count; i < count; i++) {
+    const ka = IA[i]!, kb = IB[i]!, a = 12 * ka, b = 12 * kb;
+    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
     const isRigid = ka === 0 || kb === 0;
     const biasRate = isRigid ? rBias : sBias, massScale = isRigid ? rMass : sMass, impScale = isRigid ? rImp : sImp;
+    // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
+    let vax = sb[a]!, vay = sb[a + 1]!, vaz = sb[a + 2]!, wax = sb[a + 3]!, way = sb[a + 4]!, waz = sb[a + 5]!;
+    let vbx = sb[b]!, vby = sb[b + 1]!, vbz = sb[b + 2]!, wbx = sb[b + 3]!, wby = sb[b + 4]!, wbz = sb[b + 5]!;
+    const mA = sb[a + 9]!, mB = sb[b + 9]!;
     // Displacement along n and rotation of each body so far this step.
     const dn = (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
-    const hax = ka > 0 ? ex[6 * ka + 3]! - base[3 * ka]! : 0, hay = ka > 0 ? ex[6 * ka + 4]! - base[3 * ka + 1]! : 0, haz = ka > 0 ? ex[6 * ka + 5]! - base[3 * ka + 2]! : 0;
-    const hbx = kb > 0 ? ex[6 * kb + 3]! - base[3 * kb]! : 0, hby = kb > 0 ? ex[6 * kb + 4]! - base[3 * kb + 1]! : 0, hbz = kb > 0 ? ex[6 * kb + 5]! - base[3 * kb + 2]! : 0;
-    const m = buf.points[i]!, mu = buf.friction[i]!;
-    const mA = sb[a + 9]!, mB = sb[b + 9]!;
+    let hax = 0, hay = 0, haz = 0, hbx = 0, hby = 0, hbz = 0;
+    if (ka > 0) { const e = 6 * ka, r = 3 * ka; hax = ex[e + 3]! - base[r]!; hay = ex[e + 4]! - base[r + 1]!; haz = ex[e + 5]! - base[r + 2]!; }
+    if (kb > 0) { const e = 6 * kb, r = 3 * kb; hbx = ex[e + 3]! - base[r]!; hby = ex[e + 4]! - base[r + 1]!; hbz = ex[e + 5]! - base[r + 2]!; }
+    const m = PTS[i]!;
+    let pushed = false;
     for (let kk = 0; kk < m; kk++) {
       const k = backward ? m - 1 - kk : kk;
       const q = 4 * i + k, o = JAC * q;
+      const ra0 = J[o]!, ra1 = J[o + 1]!, ra2 = J[o + 2]!, rb0 = J[o + 3]!, rb1 = J[o + 4]!, rb2 = J[o + 5]!;
       // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
-      const s = sep[q]! + dn + hbx * J[o + 3]! + hby * J[o + 4]! + hbz * J[o + 5]! - hax * J[o]! - hay * J[o + 1]! - haz * J[o + 2]!;
+      const s = sep[q]! + dn + hbx * rb0 + hby * rb1 + hbz * rb2 - hax * ra0 - hay * ra1 - haz * ra2;
       let bias = 0, ms = 1, is = 0;
-      if (s > 0) bias = s / hs;
+      if (s > 0) bias = s * invHs;
       else if (useBias) { bias = Math.max(biasRate * s, -push); ms = massScale; is = impScale; }
-      const vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
-        + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]! - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
+      const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz
+        + wbx * rb0 + wby * rb1 + wbz * rb2 - wax * ra0 - way * ra1 - waz * ra2;
       const old = LN[q]!;
       const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
       const dl = lam - old;
       LN[q] = lam;
       if (lam > MAX[q]!) MAX[q] = lam;
       if (dl !== 0) {
-        // Inlined `apply` (hot): row 0 (the static world) has zero inverse mass and inertia, so it is never written.
-        if (ka > 0) {
-          const f = mA * dl;
-          sb[a] = sb[a]! - f * nx; sb[a + 1] = sb[a + 1]! - f * ny; sb[a + 2] = sb[a + 2]! - f * nz;
-          sb[a + 3] = sb[a + 3]! - dl * J[o + 6]!; sb[a + 4] = sb[a + 4]! - dl * J[o + 7]!; sb[a + 5] = sb[a + 5]! - dl * J[o + 8]!;
-          sb[a + 11] = 1;
-        }
-        if (kb > 0) {
-          const f = mB * dl;
-          sb[b] = sb[b]! + f * nx; sb[b + 1] = sb[b + 1]! + f * ny; sb[b + 2] = sb[b + 2]! + f * nz;
-          sb[b + 3] = sb[b + 3]! + dl * J[o + 9]!; sb[b + 4] = sb[b + 4]! + dl * J[o + 10]!; sb[b + 5] = sb[b + 5]! + dl * J[o + 11]!;
-          sb[b + 11] = 1;
-        }
+        // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
+        const fa = mA * dl, fb = mB * dl;
+        vax -= fa * nx; vay -= fa * ny; vaz -= fa * nz;
+        wax -= dl * J[o + 6]!; way -= dl * J[o + 7]!; waz -= dl * J[o + 8]!;
+        vbx += fb * nx; vby += fb * ny; vbz += fb * nz;
+        wbx += dl * J[o + 9]!; wby += dl * J[o + 10]!; wbz += dl * J[o + 11]!;
+        pushed = true;
       }
     }
+    const mu = MU[i]!;
+    const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k;
       const limit = mu * LN[q]!;
+      const o1 = LT1[q]!, o2 = LT2[q]!;
       // A point that pushes nothing (a speculative one) has no friction to solve.
-      if (limit === 0 && LT1[q] === 0 && LT2[q] === 0) continue;
-      for (let d = 1; d < 3; d++) {
-        const o = JAC * q + 12 * d;
-        const ux = d === 1 ? t1x : t2x, uy = d === 1 ? t1y : t2y, uz = d === 1 ? t1z : t2z;
-        const L = d === 1 ? LT1 : LT2;
-        const vt = (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
-          + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]! - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
-        const old = L[q]!;
-        let lam = old - (d === 1 ? MT1[q]! : MT2[q]!) * vt;
-        lam = lam > limit ? limit : lam < -limit ? -limit : lam;
-        L[q] = lam;
-        const dl = lam - old;
-        if (dl === 0) continue;
-        if (ka > 0) {
-          const f = mA * dl;
-          sb[a] = sb[a]! - f * ux; sb[a + 1] = sb[a + 1]! - f * uy; sb[a + 2] = sb[a + 2]! - f * uz;
-          sb[a + 3] = sb[a + 3]! - dl * J[o + 6]!; sb[a + 4] = sb[a + 4]! - dl * J[o + 7]!; sb[a + 5] = sb[a + 5]! - dl * J[o + 8]!;
-          sb[a + 11] = 1;
-        }
-        if (kb > 0) {
-          const f = mB * dl;
-          sb[b] = sb[b]! + f * ux; sb[b + 1] = sb[b + 1]! + f * uy; sb[b + 2] = sb[b + 2]! + f * uz;
-          sb[b + 3] = sb[b + 3]! + dl * J[o + 9]!; sb[b + 4] = sb[b + 4]! + dl * J[o + 10]!; sb[b + 5] = sb[b + 5]! + dl * J[o + 11]!;
-          sb[b + 11] = 1;
-        }
+      if (limit === 0 && o1 === 0 && o2 === 0) continue;
+      const o = JAC * q + 12;
+      // t1
+      const vt1 = (vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z
+        + wbx * J[o + 3]! + wby * J[o + 4]! + wbz * J[o + 5]! - wax * J[o]! - way * J[o + 1]! - waz * J[o + 2]!;
+      let l1 = o1 - MT1[q]! * vt1;
+      l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
+      LT1[q] = l1;
+      const d1 = l1 - o1;
+      if (d1 !== 0) {
+        const fa = mA * d1, fb = mB * d1;
+        vax -= fa * t1x; vay -= fa * t1y; vaz -= fa * t1z;
+        wax -= d1 * J[o + 6]!; way -= d1 * J[o + 7]!; waz -= d1 * J[o + 8]!;
+        vbx += fb * t1x; vby += fb * t1y; vbz += fb * t1z;
+        wbx += d1 * J[o + 9]!; wby += d1 * J[o + 10]!; wbz += d1 * J[o + 11]!;
+        pushed = true;
       }
+      // t2
+      const p = o + 12;
+      const vt2 = (vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z
+        + wbx * J[p + 3]! + wby * J[p + 4]! + wbz * J[p + 5]! - wax * J[p]! - way * J[p + 1]! - waz * J[p + 2]!;
+      let l2 = o2 - MT2[q]! * vt2;
+      l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
+      LT2[q] = l2;
+      const d2 = l2 - o2;
+      if (d2 !== 0) {
+        const fa = mA * d2, fb = mB * d2;
+        vax -= fa * t2x; vay -= fa * t2y; vaz -= fa * t2z;
+        wax -= d2 * J[p + 6]!; way -= d2 * J[p + 7]!; waz -= d2 * J[p + 8]!;
+        vbx += fb * t2x; vby += fb * t2y; vbz += fb * t2z;
+        wbx += d2 * J[p + 9]!; wby += d2 * J[p + 10]!; wbz += d2 * J[p + 11]!;
+        pushed = true;
+      }
+    }
+    if (pushed) {
+      if (ka > 0) { sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = vaz; sb[a + 3] = wax; sb[a + 4] = way; sb[a + 5] = waz; sb[a + 11] = 1; }
+      if (kb > 0) { sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = vbz; sb[b + 3] = wbx; sb[b + 4] = wby; sb[b + 5] = wbz; sb[b + 11] = 1; }
     }
   }
 }

@@ -108,8 +108,11 @@ export interface Contact3DState {
   sensing: Map<number, number[]>;
   /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
   sensingNow: Map<number, number[]>;
-  /** Per point of `current` (36 numbers each, manifold3d-solver.ts): r x u and I^-1 (r x u) of both bodies for u = n, t1, t2. Rebuilt every step. */
-  jacobians: Float64Array;
+  /**
+   * Per point of `current` (36 numbers each, manifold3d-solver.ts): r x u and I^-1 (r x u) of both bodies
+   * for u = n, t1, t2. Rebuilt every step; single precision (half the memory the solver streams each pass).
+   */
+  jacobians: Float32Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (manifold3d-solver.ts). */
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
@@ -208,7 +211,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
   if (s === undefined && create) {
     s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: createRowIndex(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
       events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
-      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float64Array(0),
+      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float32Array(0),
     };
     states.set(world, s);
   }

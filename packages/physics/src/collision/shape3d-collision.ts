@@ -103,11 +103,16 @@ function ensure(n: number): void {
   if (scratch.shape.length >= n) return;
   let m = Math.max(64, scratch.shape.length);
   while (m < n) m *= 2;
-  const f = (k = m): Float64Array => new Float64Array(k);
-  Object.assign(scratch, {
-    shape: new Int32Array(m), body: new Int32Array(m), minX: f(), maxX: f(), minY: f(), maxY: f(), minZ: f(), maxZ: f(),
-    px: f(), py: f(), pz: f(), R: f(9 * m), speed: f(), order: new Int32Array(m), ball: new Uint8Array(m),
-  });
+  // Grown arrays keep what the pass wrote so far (gather grows them while it fills them).
+  const grow = <T extends Float64Array | Int32Array | Uint8Array>(a: T, k: number): T => {
+    const b = new (a.constructor as new (k: number) => T)(k);
+    b.set(a as never);
+    return b;
+  };
+  const sc = scratch;
+  sc.shape = grow(sc.shape, m); sc.body = grow(sc.body, m); sc.order = grow(sc.order, m); sc.ball = grow(sc.ball, m);
+  sc.minX = grow(sc.minX, m); sc.maxX = grow(sc.maxX, m); sc.minY = grow(sc.minY, m); sc.maxY = grow(sc.maxY, m); sc.minZ = grow(sc.minZ, m); sc.maxZ = grow(sc.maxZ, m);
+  sc.px = grow(sc.px, m); sc.py = grow(sc.py, m); sc.pz = grow(sc.pz, m); sc.R = grow(sc.R, 9 * m); sc.speed = grow(sc.speed, m);
 }
 
 const bodyQ = new Float64Array(4);
@@ -121,11 +126,11 @@ function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBa
   if (turning) {
     const h = world.h, W = c.AngularVelocity;
     const rx = -W.x[b]! * h, ry = -W.y[b]! * h, rz = -W.z[b]! * h;
-    const a = Math.hypot(rx, ry, rz);
+    const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
     if (a > 0) {
       const k = Math.sin(a / 2) / a, dx = rx * k, dy = ry * k, dz = rz * k, dw = Math.cos(a / 2);
       const nx = dw * x + dx * w + dy * z - dz * y, ny = dw * y - dx * z + dy * w + dz * x, nz = dw * z + dx * y - dy * x + dz * w, nw = dw * w - dx * x - dy * y - dz * z;
-      const l = Math.hypot(nx, ny, nz, nw);
+      const l = Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
       x = nx / l; y = ny / l; z = nz / l; w = nw / l;
     }
   }
@@ -142,15 +147,20 @@ export function classifyBody3D(world: PhysicsWorld, b: number): number {
   if (hasComponent(world, b, c.Static)) { t = BodyType.Static; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
   else if (hasComponent(world, b, c.Kinematic)) { t = BodyType.Kinematic; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
   else if (hasComponent(world, b, c.Sleeping)) { t = BodyType.Sleeping; cs.invMass[b] = 0; cs.invInertia[b] = 0; }
-  else {
-    t = BodyType.Dynamic; cs.invMass[b] = c.Mass.inv[b]!;
-    const T = c.InertiaTensor;
-    cs.invInertia[b] = !hasComponent(world, b, c.AngularVelocity) ? 0
-      : hasComponent(world, b, T) ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
-        : hasComponent(world, b, c.Inertia) ? c.Inertia.inv[b]! : 0;
-  }
+  else return classifyDynamic3D(world, b);
   cs.bodyType[b] = t;
   return t;
+}
+
+/** classifyBody3D's last case, for a body known to be dynamic: its inverse mass and inertia flag; returns BodyType.Dynamic. */
+function classifyDynamic3D(world: PhysicsWorld, b: number): number {
+  const c = world.components, cs = world.collision, T = c.InertiaTensor;
+  cs.invMass[b] = c.Mass.inv[b]!;
+  cs.invInertia[b] = !hasComponent(world, b, c.AngularVelocity) ? 0
+    : hasComponent(world, b, T) ? Math.max(T.invX[b]!, T.invY[b]!, T.invZ[b]!)
+      : hasComponent(world, b, c.Inertia) ? c.Inertia.inv[b]! : 0;
+  cs.bodyType[b] = BodyType.Dynamic;
+  return BodyType.Dynamic;
 }
 
 /** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */
@@ -187,7 +197,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     if (classStamp[b] === stamp) {
       t = classKind[b]!;
       world.collision.bodyType[b] = t; world.collision.invMass[b] = 0; world.collision.invInertia[b] = 0;
-    } else t = classifyBody3D(world, b);
+    } else t = classifyDynamic3D(world, b); // not static, kinematic or sleeping by this step's queries
     const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
     const turning = moving && invInertia[b]! > 0 || t === BodyType.Kinematic && hasComponent(world, b, c.AngularVelocity);
     const x0 = t === BodyType.Static ? c.Position.x[b]! : ox[b]!, y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!, z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
@@ -213,8 +223,13 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     let speed = 0;
     if (moving) {
       const V = c.Velocity, W = c.AngularVelocity;
-      speed = Math.hypot(V.x[b]!, V.y[b]!, V.z[b]!);
-      if (turning) speed += Math.hypot(W.x[b]!, W.y[b]!, W.z[b]!) * (reach + Math.hypot(cx - x0, cy - y0, cz - z0));
+      // (Math.sqrt of the sum of squares: Math.hypot is several times slower in V8, and these never overflow.)
+      const vx = V.x[b]!, vy = V.y[b]!, vz = V.z[b]!;
+      speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
+      if (turning) {
+        const wx = W.x[b]!, wy = W.y[b]!, wz = W.z[b]!, dx = cx - x0, dy = cy - y0, dz = cz - z0;
+        speed += Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
+      }
     }
     const pad = speed * h + spec;
     // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
@@ -261,7 +276,10 @@ function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: 
 }
 
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
-const grid = { start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(0) };
+const grid = {
+  start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(0),
+  packed: new Float64Array(0), source: new Uint8Array(0),
+};
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
 function cellHash(x: number, y: number, z: number, mask: number): number {
@@ -312,27 +330,40 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   for (let i = 0; i < n; i++) { if (order[i] === -1) continue; const b = bucket[i]!; items[start[b]!++] = i; }
   for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
+  // The boxes in bucket order, packed (min x, max x, min y, max y, min z, max z) with a source flag, so
+  // the neighbour search below reads memory in sequence instead of jumping through the collider arrays.
+  const placed = start[size]!;
+  if (grid.packed.length < 6 * placed) { grid.packed = new Float64Array(12 * placed); grid.source = new Uint8Array(2 * placed); }
+  const pk = grid.packed, src = grid.source;
+  for (let k = 0; k < placed; k++) {
+    const j = items[k]!, o = 6 * k, tj = type[sc.body[j]!]!;
+    pk[o] = minX[j]!; pk[o + 1] = maxX[j]!; pk[o + 2] = minY[j]!; pk[o + 3] = maxY[j]!; pk[o + 4] = minZ[j]!; pk[o + 5] = maxZ[j]!;
+    src[k] = tj === BodyType.Dynamic || tj === BodyType.Kinematic ? 1 : 0;
+  }
   // Sources: the colliders of moving (dynamic or kinematic) bodies; a resting pile's sleeping and static
   // colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
   for (let i = 0; i < n; i++) {
     if (order[i] === -1) continue;
     const ti = type[sc.body[i]!]!;
     if (ti !== BodyType.Dynamic && ti !== BodyType.Kinematic) continue;
-    const cx = Math.floor(minX[i]! * inv), cy = Math.floor(minY[i]! * inv), cz = Math.floor(minZ[i]! * inv);
+    const x0 = minX[i]!, x1 = maxX[i]!, y0 = minY[i]!, y1 = maxY[i]!, z0 = minZ[i]!, z1 = maxZ[i]!;
+    const cx = Math.floor(x0 * inv), cy = Math.floor(y0 * inv), cz = Math.floor(z0 * inv);
+    // A box that overlaps this one has its low corner in [min - cell, max] on each axis (no box is wider
+    // than a cell): cells from c - 1 up to the cell of this box's high corner.
+    const hx = Math.floor(x1 * inv) - cx, hy = Math.floor(y1 * inv) - cy, hz = Math.floor(z1 * inv) - cz;
     const mark = i + 1;
-    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++) {
+    for (let dx = -1; dx <= hx; dx++) for (let dy = -1; dy <= hy; dy++) for (let dz = -1; dz <= hz; dz++) {
       const b = cellHash(cx + dx, cy + dy, cz + dz, mask);
       // Two neighbour cells may share a bucket: each bucket is searched once per collider.
       if (seen[b] === mark) continue;
       seen[b] = mark;
       for (let k = start[b]!, e = start[b + 1]!; k < e; k++) {
+        const o = 6 * k;
+        if (pk[o]! > x1 || pk[o + 1]! < x0 || pk[o + 2]! > y1 || pk[o + 3]! < y0 || pk[o + 4]! > z1 || pk[o + 5]! < z0) continue;
         const j = items[k]!;
-        if (j === i) continue;
-        const tj = type[sc.body[j]!]!;
         // A pair of two sources is taken from its lower index.
-        if (j < i && (tj === BodyType.Dynamic || tj === BodyType.Kinematic)) continue;
-        if (minX[j]! > maxX[i]! || maxX[j]! < minX[i]! || minY[j]! > maxY[i]! || maxY[j]! < minY[i]! || minZ[j]! > maxZ[i]! || maxZ[j]! < minZ[i]!) continue;
-        if (!meets(ti, tj)) continue;
+        if (j === i || j < i && src[k] === 1) continue;
+        if (!meets(ti, type[sc.body[j]!]!)) continue;
         pair(world, s, st, i, j);
       }
     }
@@ -440,7 +471,7 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
   // Tangent t1: perpendicular to n, from the axis n is least along (Box2D v3 / Erin Catto's b2Perp-like choice in 3D).
   let tx: number, ty: number, tz: number;
   if (Math.abs(nx) < 0.57735) { tx = 0; ty = nz; tz = -ny; } else { tx = -nz; ty = 0; tz = nx; }
-  const tl = Math.hypot(tx, ty, tz);
+  const tl = Math.sqrt(tx * tx + ty * ty + tz * tz);
   buf.t1x[i] = tx / tl; buf.t1y[i] = ty / tl; buf.t1z[i] = tz / tl;
   // Materials: the bouncier surface wins, friction is the geometric mean (Box2D's mixing).
   const fa = plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!, ra = plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
