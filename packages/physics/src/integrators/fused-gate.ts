@@ -53,23 +53,39 @@ const TORQUE_ONLY: ReadonlySet<System> = new Set<System>([angularDampingSystem, 
 /** The laws the fused pass applies itself (each must be in the stage exactly once). */
 const ABSORBED: readonly System[] = [linearDragSystem, quadraticDragSystem, gravityScaleSystem];
 
-/** Built-in laws that may stay in the stage while they have nothing to act on: their own query is empty. */
-const IDLE_WHEN: ReadonlyMap<System, (world: PhysicsWorld) => boolean> = new Map<System, (world: PhysicsWorld) => boolean>([
-  [mutualGravitySystem, (w) => { const c = w.components; return query(w, [c.MutualGravity, c.Position, c.Mass, c.Force]).length < 2; }],
-  [attractorSystem, (w) => { const c = w.components; return query(w, [c.Attractor, c.Position]).length === 0; }],
-  [coulombSystem, (w) => { const c = w.components; return query(w, [c.Charge, c.Position, c.Force]).length < 2; }],
-  [lorentzSystem, (w) => { const c = w.components; return query(w, [c.Charge, c.Force, c.Velocity]).length === 0; }],
-  [centralForceSystem, (w) => { const c = w.components; return query(w, [c.CentralForce, c.Position, c.Force]).length === 0; }],
-  [liftSystem, (w) => { const c = w.components; return query(w, [c.Lift, c.Velocity, c.Force]).length === 0; }],
-  [buoyancySystem, (w) => { const c = w.components; return query(w, [c.Buoyancy, c.Position, c.Velocity, c.Force]).length === 0; }],
-  [springSystem, (w) => query(w, [w.components.Spring]).length === 0],
-  [drivingForceSystem, (w) => { const c = w.components; return query(w, [c.DrivingForce, c.Force]).length === 0; }],
-  [randomForceSystem, (w) => { const c = w.components; return query(w, [c.RandomForce, c.Force]).length === 0; }],
-  [thrustSystem, (w) => { const c = w.components; return query(w, [c.Thrust, c.Force, c.Mass]).length === 0; }],
-  [vortexSystem, (w) => { const c = w.components; return query(w, [c.Vortex, c.Position, c.Force]).length === 0; }],
-  [bodyThrustSystem, (w) => { const c = w.components; return query(w, [c.BodyThrust, c.Force]).length === 0; }],
-  [liftingSurfaceSystem, (w) => query(w, [w.components.LiftingSurface]).length === 0],
+type Components = PhysicsWorld['components'];
+
+/**
+ * Built-in laws that may stay in the stage while they have nothing to act on: the terms of the law's
+ * own query, and the fewest entities it acts on (2 for the pairwise laws).
+ */
+const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], number]> = new Map<System, readonly [(c: Components) => object[], number]>([
+  [mutualGravitySystem, [(c) => [c.MutualGravity, c.Position, c.Mass, c.Force], 2]],
+  [attractorSystem, [(c) => [c.Attractor, c.Position], 1]],
+  [coulombSystem, [(c) => [c.Charge, c.Position, c.Force], 2]],
+  [lorentzSystem, [(c) => [c.Charge, c.Force, c.Velocity], 1]],
+  [centralForceSystem, [(c) => [c.CentralForce, c.Position, c.Force], 1]],
+  [liftSystem, [(c) => [c.Lift, c.Velocity, c.Force], 1]],
+  [buoyancySystem, [(c) => [c.Buoyancy, c.Position, c.Velocity, c.Force], 1]],
+  [springSystem, [(c) => [c.Spring], 1]],
+  [drivingForceSystem, [(c) => [c.DrivingForce, c.Force], 1]],
+  [randomForceSystem, [(c) => [c.RandomForce, c.Force], 1]],
+  [thrustSystem, [(c) => [c.Thrust, c.Force, c.Mass], 1]],
+  [vortexSystem, [(c) => [c.Vortex, c.Position, c.Force], 1]],
+  [bodyThrustSystem, [(c) => [c.BodyThrust, c.Force], 1]],
+  [liftingSurfaceSystem, [(c) => [c.LiftingSurface], 1]],
 ]);
+
+/** The query terms of each idle check, built once per world (keyed by its component stores): no allocation a substep. */
+const termCache = new WeakMap<Components, Map<System, object[]>>();
+
+function idleTerms(c: Components, law: System, build: (c: Components) => object[]): object[] {
+  let m = termCache.get(c);
+  if (m === undefined) { m = new Map(); termCache.set(c, m); }
+  let t = m.get(law);
+  if (t === undefined) { t = build(c); m.set(law, t); }
+  return t;
+}
 
 let integrator: System | null = null;
 
@@ -85,21 +101,21 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   const clear = stages.clearForces, integrate = stages.integrate, forces = stages.forces;
   if (clear.length !== 1 || clear[0] !== clearForcesSystem) return false;
   if (integrate.length === 0 || integrate[0] !== integrator) return false;
+  const forced = forcedBodies(world).length;
+  if (forced === 0) return false;
   let absorbed = 0;
   for (let i = 0; i < forces.length; i++) {
     const s = forces[i]!;
     if (ABSORBED.includes(s)) { absorbed++; continue; }
     if (TORQUE_ONLY.has(s)) continue;
     const idle = IDLE_WHEN.get(s);
-    if (idle === undefined || !idle(world)) return false;
+    if (idle === undefined || query(world, idleTerms(world.components, s, idle[0])).length >= idle[1]) return false;
   }
   // Each absorbed law exactly once (counted above; a duplicate would show as one missing).
   if (absorbed !== ABSORBED.length) return false;
   for (let i = 0; i < ABSORBED.length; i++) if (forces.indexOf(ABSORBED[i]!) !== forces.lastIndexOf(ABSORBED[i]!)) return false;
   if (!calmAir(world)) return false;
-  const forced = forcedBodies(world).length;
-  if (forced === 0) return false;
-  if (query(world, [world.components.Force]).length !== forced) return false;
+  if (query(world, idleTerms(world.components, clearForcesSystem, (c) => [c.Force])).length !== forced) return false;
   return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
 }
 

@@ -60,20 +60,36 @@ export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
  * none carries a GravityScale or both drags (the gate checks this by their lengths).
  */
 
+type Components = PhysicsWorld['components'];
+
+/** The terms of the three lists, built once per world (keyed by its component stores): these run every substep. */
+const fusedTerms = new WeakMap<Components, readonly [object[], object[], object[]]>();
+
+function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
+  let t = fusedTerms.get(c);
+  if (t === undefined) {
+    const mover = [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)];
+    t = [
+      [...mover, Not(c.LinearDrag), Not(c.QuadraticDrag), Not(c.GravityScale)],
+      [...mover, c.QuadraticDrag, Not(c.LinearDrag), Not(c.GravityScale)],
+      [...mover, c.LinearDrag, Not(c.QuadraticDrag), Not(c.GravityScale)],
+    ];
+    fusedTerms.set(c, t);
+  }
+  return t;
+}
+
 /** Forced bodies with no drag and no gravity scale: no built-in law writes their force (fused pass). */
 export function fusedBareBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), Not(c.LinearDrag), Not(c.QuadraticDrag), Not(c.GravityScale)]);
+  return query(world, fusedTermsOf(world.components)[0]);
 }
 
 /** Forced bodies with quadratic drag only (no linear drag, no gravity scale): the fused pass. */
 export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), c.QuadraticDrag, Not(c.LinearDrag), Not(c.GravityScale)]);
+  return query(world, fusedTermsOf(world.components)[1]);
 }
 
 /** Forced bodies with linear drag only (no quadratic drag, no gravity scale): the fused pass. */
 export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
-  const c = world.components;
-  return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping), c.LinearDrag, Not(c.QuadraticDrag), Not(c.GravityScale)]);
+  return query(world, fusedTermsOf(world.components)[2]);
 }
