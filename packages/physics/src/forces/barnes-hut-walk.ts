@@ -22,9 +22,14 @@
  *   cell pairs, body pairs and visits counted by the part that holds the first cell's first slot, so
  *   they sum to the one-part walk's counts; then the part's own work, duplicates included, in the
  *   units of `WORK_*`), 13 + p: scratch of part p (Float64: the field polynomials of every node,
- *   stride NL, from 0, then the direct-sum accumulators x, y, z of every slot from P[5], P[6], P[7]).
+ *   stride NL, from 0, then the direct-sum accumulators x, y, z of every slot from P[5], P[6], P[7]);
+ *   with P[8] = 1, from index P[9] on (after the scratch arrays): fx, fy, fz (the Force store, N),
+ *   perm (Int32: input index of each slot), ents (Int32: entity of each input index).
  * Parameters `P`: 0 G (m^3 kg^-1 s^-2), 1 eps^2 (m^2), 2 1 / min(theta, 1)^2, 3 node count, 4 body
- * count, 5, 6, 7 offsets of the accumulators in the scratch arrays.
+ * count, 5, 6, 7 offsets of the accumulators in the scratch arrays, 8 forces (1: the downward pass
+ * also adds m g to the force of each of the part's bodies, entity ents[perm[s]], as it writes the
+ * field; in 2D to x and y only. Each body is written once, so the order does not matter), 9 index
+ * of the force arrays in A.
  * The range [lo, hi) of a call is a range of parts. Returns 0.
  */
 
@@ -42,7 +47,8 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
   const start = A[5] as Int32Array, end = A[6] as Int32Array, skip = A[7] as Int32Array;
   const OX = A[8] as Float64Array, OY = A[9] as Float64Array, OZ = A[10] as Float64Array;
   const cut = A[11] as Int32Array, info = A[12] as Float64Array;
-  const G = P[0]!, eps2 = P[1]!, f = P[2]!, nodeCount = P[3]!, offX = P[5]!, offY = P[6]!;
+  const G = P[0]!, eps2 = P[1]!, f = P[2]!, nodeCount = P[3]!, offX = P[5]!, offY = P[6]!, addForces = P[8] === 1;
+  const fa = P[9]!, FX = A[fa] as Float64Array, FY = A[fa + 1] as Float64Array, perm = A[fa + 3] as Int32Array, ents = A[fa + 4] as Int32Array;
   const NF = 12, NL = 14, third = 1 / 3;
   let st = new Int32Array(4096);
   for (let part = lo; part < hi; part++) {
@@ -197,9 +203,13 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const k0 = kxxx + third * (h0 * dx + h1 * dy), k1 = kxxy + third * (h1 * dx + h2 * dy);
           const k2 = kxyy + third * (h2 * dx + h3 * dy), k3 = kyyy + third * (h3 * dx + h4 * dy);
           const j0 = jxx + 0.5 * (k0 * dx + k1 * dy), j1 = jxy + 0.5 * (k1 * dx + k2 * dy), j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-          OX[s] = G * (L[offX + s]! + a0x + j0 * dx + j1 * dy);
-          OY[s] = G * (L[offY + s]! + a0y + j1 * dx + j2 * dy);
-          OZ[s] = 0;
+          const gx = G * (L[offX + s]! + a0x + j0 * dx + j1 * dy), gy = G * (L[offY + s]! + a0y + j1 * dx + j2 * dy);
+          OX[s] = gx; OY[s] = gy; OZ[s] = 0;
+          if (addForces) {
+            // F += m g on the body's entity (no z: a 2D field has none).
+            const e = ents[perm[s]!]!, w = Mb[s]!;
+            FX[e] = FX[e]! + w * gx; FY[e] = FY[e]! + w * gy;
+          }
         }
         work += (end[k]! - start[k]!) >> 1;
         k = sk;
@@ -237,7 +247,9 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
   const F = A[4] as Float64Array, start = A[5] as Int32Array, end = A[6] as Int32Array, skip = A[7] as Int32Array;
   const OX = A[8] as Float64Array, OY = A[9] as Float64Array, OZ = A[10] as Float64Array;
   const cut = A[11] as Int32Array, info = A[12] as Float64Array;
-  const G = P[0]!, eps2 = P[1]!, f = P[2]!, nodeCount = P[3]!, offX = P[5]!, offY = P[6]!, offZ = P[7]!;
+  const G = P[0]!, eps2 = P[1]!, f = P[2]!, nodeCount = P[3]!, offX = P[5]!, offY = P[6]!, offZ = P[7]!, addForces = P[8] === 1;
+  const fa = P[9]!, FX = A[fa] as Float64Array, FY = A[fa + 1] as Float64Array, FZ = A[fa + 2] as Float64Array;
+  const perm = A[fa + 3] as Int32Array, ents = A[fa + 4] as Int32Array;
   const NF = 12, NL = 19;
   let st = new Int32Array(8192);
   for (let part = lo; part < hi; part++) {
@@ -376,9 +388,14 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const kdxx = kxxx * dx + kxxy * dy + kxxz * dz, kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
           const kdzz = kxzz * dx + kyzz * dy + kzzz * dz, kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
           const kdxz = kxxz * dx + kxyz * dy + kxzz * dz, kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-          OX[s] = G * (L[offX + s]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz));
-          OY[s] = G * (L[offY + s]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz));
-          OZ[s] = G * (L[offZ + s]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz));
+          const gx = G * (L[offX + s]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz));
+          const gy = G * (L[offY + s]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz));
+          const gz = G * (L[offZ + s]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz));
+          OX[s] = gx; OY[s] = gy; OZ[s] = gz;
+          if (addForces) {
+            const e = ents[perm[s]!]!, w = Mb[s]!;
+            FX[e] = FX[e]! + w * gx; FY[e] = FY[e]! + w * gy; FZ[e] = FZ[e]! + w * gz;
+          }
         }
         work += (end[k]! - start[k]!) >> 1;
         k = sk;

@@ -3,9 +3,12 @@ import { KERNEL, KERNELS } from '../threads/kernels.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
-import { BOX_STRIDE, leafMoments, mortonKeys, SORT_RADIX, SORT_RADIX_BITS, treeForces, treeGather, treeOrder } from './barnes-hut-gather.js';
+import {
+  BOX_STRIDE, BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, SORT_PARAMS, SORT_RADIX, SORT_RADIX_BITS, treeForces, treeGather, treeMoments,
+} from './barnes-hut-gather.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 import { nowMs } from '../threads/adaptive.js';
+import { CONTROL } from '../threads/worker-main.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -138,12 +141,22 @@ export interface GravityTree {
   shared: boolean;
   /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
   cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array; momentParams: Float64Array;
-  /** The parallel key sort's histograms and first places (SORT_RADIX a range), its parameter, and the start of a one-thread sort an adaptive pool times (-1: none). */
-  sortHist: Int32Array; sortOffset: Int32Array; sortParams: Float64Array; sortTiming: number;
+  /**
+   * The Morton sort's scratch (mortonSort): per part, the first digit's histogram and first places
+   * (SORT_RADIX each) and a bucket sort's counts (BUCKET_RADIX); each bucket's first slot
+   * (SORT_RADIX + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
+   */
+  sortHist: Int32Array; sortOffset: Int32Array; sortLocal: Int32Array; sortBucket: Int32Array; sortGroup: Int32Array; sortLists: KernelArray[][];
+  /**
+   * The moments' scratch (treeMomentsAll): the subtree roots (parts' runs cut at momentCut), the
+   * nodes above them (momentTop, preorder; momentDown, reversed, with its one-part cut momentCut1),
+   * and the kernel's array lists.
+   */
+  momentList: Int32Array; momentCut: Int32Array; momentTop: Int32Array; momentDown: Int32Array; momentCut1: Int32Array; momentLists: KernelArray[][];
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
-  /** Morton keys and input indices in sorted order, and the radix sort's second buffers and histogram. */
-  key: Uint32Array; idx: Int32Array; key2: Uint32Array; idx2: Int32Array; hist: Int32Array;
+  /** Morton keys and input indices in sorted order, and the sort's second buffers. */
+  key: Uint32Array; idx: Int32Array; key2: Uint32Array; idx2: Int32Array;
   /** Task stack of the build: per task [lo, hi, inA, depth, parent] and [cx, cy, cz, half]. */
   taskI: Int32Array; taskF: Float64Array;
   /** Parent of each node (-1 for the root). */
@@ -171,11 +184,12 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     node: F64(nodes * (dims === 3 ? NF3 : NF2)), box: F64(nodes * 6),
     start: I32(nodes), end: I32(nodes), skip: I32(nodes),
     scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
-    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(8), keyParams: new Float64Array(6), momentParams: new Float64Array(2),
-    sortHist: new Int32Array(0), sortOffset: new Int32Array(0), sortParams: new Float64Array(1), sortTiming: -1,
+    cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(10), keyParams: new Float64Array(SORT_PARAMS), momentParams: new Float64Array(2),
+    sortHist: new Int32Array(0), sortOffset: new Int32Array(0), sortLocal: new Int32Array(0),
+    sortBucket: I32(SORT_RADIX + 1), sortGroup: I32(MAX_PARTS + 1), sortLists: [[], [], []],
+    momentList: I32(0), momentCut: I32(MAX_PARTS + 1), momentTop: new Int32Array(256), momentDown: new Int32Array(256), momentCut1: new Int32Array(2), momentLists: [[], []],
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
-    hist: new Int32Array(RADIX),
     taskI: new Int32Array(MAX_DEPTH * 8 * 5), taskF: new Float64Array(MAX_DEPTH * 8 * 4),
     parent: I32(nodes),
     ax: new Float64Array(0), ay: new Float64Array(0), az: new Float64Array(0),
@@ -235,8 +249,6 @@ function growNodes(t: GravityTree, needed: number): void {
 
 /** Bits per axis of the Morton keys: 2 x 16 = 32 in 2D, 3 x 10 = 30 in 3D. */
 const KEY_BITS2 = 16, KEY_BITS3 = 10;
-/** Radix of the key sort, bits per pass. */
-const RADIX_BITS = 11, RADIX = 1 << RADIX_BITS;
 
 /**
  * Builds the tree over n bodies with positions (x, y, z), m, and masses m, kg (>= 0), arrays indexed
@@ -301,87 +313,70 @@ function buildTreeWith(
   const x0 = cx - half, y0 = cy - half, z0 = cz - half;
   const KP = t.keyParams;
   KP[0] = x0; KP[1] = y0; KP[2] = z0; KP[3] = scale; KP[4] = top; KP[5] = t.dims;
-  const keyArrays = [x, y, z, t.key, t.idx] as KernelArray[];
-  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut keys)', KERNEL.mortonKeys, keyArrays, KP, n, null, MIN_PARALLEL_PER_THREAD) === null) {
-    mortonKeys(keyArrays, KP, null, 0, n);
-  }
-  let key = t.key, idx = t.idx, key2 = t.key2, idx2 = t.idx2;
-  // LSD radix sort of (key, index), stable: on the threads (each range's histogram, then each range's
-  // keys to their places in order, so the order is the one-thread order), or here.
-  const hist = t.hist;
-  const keyBits = is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2;
-  const sorted = sortKeysParallel(t, n, keyBits, pool);
-  if (sorted) { key = t.key; idx = t.idx; key2 = t.key2; idx2 = t.idx2; }
-  for (let shift = 0; !sorted && shift < keyBits; shift += RADIX_BITS) {
-    hist.fill(0);
-    for (let i = 0; i < n; i++) hist[(key[i]! >>> shift) & (RADIX - 1)]!++;
-    if (hist[(key[0]! >>> shift) & (RADIX - 1)] === n) continue;
-    let acc = 0;
-    for (let r = 0; r < RADIX; r++) { const c = hist[r]!; hist[r] = acc; acc += c; }
-    for (let i = 0; i < n; i++) {
-      const k = key[i]!, d = hist[(k >>> shift) & (RADIX - 1)]!++;
-      key2[d] = k; idx2[d] = idx[i]!;
-    }
-    const tk = key; key = key2; key2 = tk;
-    const ti = idx; idx = idx2; idx2 = ti;
-  }
-  t.key = key; t.idx = idx; t.key2 = key2; t.idx2 = idx2;
-  if (t.sortTiming >= 0) {
-    // The adaptive pool chose this thread for the sort: record its time (see sortKeysParallel).
-    pool!.chooser.record('barnes-hut key sort', false, nowMs() - t.sortTiming, n);
-    t.sortTiming = -1;
-  }
-  // Into tree order (on the threads when the arrays are shared and the bodies many).
-  const orderArrays = [x, y, z, m, idx, t.x, t.y, t.z, t.m, t.perm] as KernelArray[];
+  KP[6] = n; KP[8] = (is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2) - SORT_RADIX_BITS;
+  mortonSort(t, n, x, y, z, m, pool);
   const KM = t.momentParams;
   KM[0] = t.dims;
-  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut order)', KERNEL.treeOrder, orderArrays, KM, n, null, MIN_PARALLEL_PER_THREAD) === null) {
-    treeOrder(orderArrays, KM, null, 0, n);
-  }
   growNodes(t, Math.max(64, Math.ceil((3 * n) / LEAF_SIZE) + 64));
   splitCells(t, n, cx, cy, cz, half, bits);
-  // Leaves' moments and slots (on the threads when worth it), then the cells bottom-up on this thread.
-  KM[1] = t.nodeCount;
-  const leafArrays = [t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, t.parent, t.perm, t.slot] as KernelArray[];
-  if (runOnPool(pool, 'mutualGravitySystem (Barnes-Hut moments)', KERNEL.leafMoments, leafArrays, KM, t.nodeCount, null, MIN_NODES_PER_THREAD) === null) {
-    leafMoments(leafArrays, KM, null, 0, t.nodeCount);
-  }
-  computeMoments(t);
+  treeMomentsAll(t, pool);
 }
 
 /**
- * The key sort of buildTreeWith on `pool`'s threads (t.key, t.idx sorted in place of the one-thread
- * sort, to the same order), when the arrays are shared and the bodies many enough; returns false
- * (nothing done) otherwise. An adaptive pool times it both ways like any loop (threads/adaptive.ts).
+ * The Morton sort of buildTreeWith and the bodies into tree order: keys (t.key, t.idx) in (key, input
+ * index) order, the order of a stable sort, and t.x, t.y, t.z, t.m, t.perm in that order. Three
+ * kernels (barnes-hut-gather.ts): the keys with each part's histogram of the first digit (the top
+ * SORT_RADIX_BITS bits), the parts' bodies to their buckets in order, then the buckets sorted by
+ * the bits below and the bodies put into tree order, each part a run of buckets holding about n /
+ * parts bodies. On `pool`'s threads (one part a thread) when the tree's arrays are shared and the
+ * bodies many enough (MIN_PARALLEL_PER_THREAD a thread), and an adaptive pool has found that faster;
+ * else here as one part. The order does not depend on the parts, so neither does the tree.
+ * The parameters (t.keyParams, SORT_PARAMS) are set by the caller but for the part count.
  */
-function sortKeysParallel(t: GravityTree, n: number, keyBits: number, pool: ThreadPool | null): boolean {
-  if (pool === null || !t.shared || pool.threads > MAX_PARTS || n < MIN_PARALLEL_PER_THREAD * pool.threads || !pool.usable()) return false;
-  const site = 'barnes-hut key sort';
-  if (pool.adaptive && !pool.chooser.choose(site)) {
-    // Timed on this thread by the caller's loop: record it as one way of this site.
-    t.sortTiming = nowMs();
-    return false;
+function mortonSort(
+  t: GravityTree, n: number, x: ArrayLike<number>, y: ArrayLike<number>, z: ArrayLike<number>, m: ArrayLike<number>,
+  pool: ThreadPool | null,
+): void {
+  let parts = pool !== null && t.shared && pool.threads <= MAX_PARTS && n >= MIN_PARALLEL_PER_THREAD * pool.threads && pool.usable() ? pool.threads : 1;
+  const site = 'barnes-hut sort';
+  const adaptive = parts > 1 && pool!.adaptive;
+  if (adaptive && !pool!.chooser.choose(site)) parts = 1;
+  const t0 = adaptive ? nowMs() : 0;
+  if (t.sortHist.length < parts * SORT_RADIX) {
+    const size = Math.max(parts, pool?.threads ?? 1) * SORT_RADIX;
+    t.sortHist = i32(t, size); t.sortOffset = i32(t, size); t.sortLocal = i32(t, (size / SORT_RADIX) * BUCKET_RADIX);
   }
-  const t0 = nowMs();
-  const T = pool.threads, system = 'mutualGravitySystem (Barnes-Hut key sort)';
-  if (t.sortHist.length < T * SORT_RADIX) { t.sortHist = i32(t, T * SORT_RADIX); t.sortOffset = i32(t, T * SORT_RADIX); }
-  const hist = t.sortHist, offset = t.sortOffset, P = t.sortParams;
-  for (let shift = 0; shift < keyBits; shift += SORT_RADIX_BITS) {
-    P[0] = shift;
-    pool.run(system, KERNEL.radixHistogram, [t.key, hist], P, n, null);
-    // Skip a pass whose digit is the same for every key (it would leave the order as it is).
-    const d0 = (t.key[0]! >>> shift) & (SORT_RADIX - 1);
-    let same = 0;
-    for (let p = 0; p < T; p++) same += hist[p * SORT_RADIX + d0]!;
-    if (same === n) continue;
-    let acc = 0;
-    for (let r = 0; r < SORT_RADIX; r++) for (let p = 0; p < T; p++) { const c = hist[p * SORT_RADIX + r]!; offset[p * SORT_RADIX + r] = acc; acc += c; }
-    pool.run(system, KERNEL.radixScatter, [t.key, t.idx, t.key2, t.idx2, offset], P, n, null);
-    const tk = t.key; t.key = t.key2; t.key2 = tk;
-    const ti = t.idx; t.idx = t.idx2; t.idx2 = ti;
+  const hist = t.sortHist, offset = t.sortOffset, bucket = t.sortBucket, group = t.sortGroup, P = t.keyParams;
+  P[7] = parts;
+  const system = 'mutualGravitySystem (Barnes-Hut sort)';
+  const A1 = t.sortLists[0]!, A2 = t.sortLists[1]!, A3 = t.sortLists[2]!;
+  A1.length = 0; A1.push(x as Float64Array, y as Float64Array, z as Float64Array, t.key, hist);
+  if (parts > 1) pool!.run(system, KERNEL.mortonKeysHist, A1, P, parts, null);
+  else mortonKeysHist(A1, P, null, 0, 1);
+  // First places of each (digit, part), digit-major (so the pass is stable), and each bucket's first slot.
+  let acc = 0;
+  for (let r = 0; r < SORT_RADIX; r++) {
+    bucket[r] = acc;
+    for (let p = 0; p < parts; p++) { const c = hist[p * SORT_RADIX + r]!; offset[p * SORT_RADIX + r] = acc; acc += c; }
   }
-  if (pool.adaptive) pool.chooser.record(site, true, nowMs() - t0, n);
-  return true;
+  bucket[SORT_RADIX] = acc;
+  A2.length = 0; A2.push(t.key, t.key2, t.idx2, offset);
+  if (parts > 1) pool!.run(system, KERNEL.mortonScatter, A2, P, parts, null);
+  else mortonScatter(A2, P, null, 0, 1);
+  // Runs of buckets of about n / parts bodies each, for the last pass.
+  group[0] = 0;
+  let r = 0;
+  for (let q = 1; q < parts; q++) {
+    const goal = (n * q) / parts;
+    while (r < SORT_RADIX && bucket[r + 1]! <= goal) r++;
+    group[q] = r;
+  }
+  group[parts] = SORT_RADIX;
+  A3.length = 0;
+  A3.push(t.key2, t.idx2, t.key, t.idx, bucket, group, t.sortLocal, x as Float64Array, y as Float64Array, z as Float64Array, m as Float64Array, t.x, t.y, t.z, t.m, t.perm);
+  if (parts > 1) pool!.run(system, KERNEL.mortonBucketSort, A3, P, parts, null);
+  else mortonBucketSort(A3, P, null, 0, 1);
+  if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, n);
 }
 
 /** Fewest tree nodes a thread for the leaves' moments to be computed in parallel. */
@@ -474,83 +469,67 @@ function growTasks(t: GravityTree, needed: number): void {
 }
 
 /**
- * Bottom-up over the cells (the leaves' moments are already in place, see leafMoments): subtree ends
- * (skip) and moments, children before parents (they have larger indices).
+ * Subtree ends (skip) and the moments of every node (kernel treeMoments), children before parents.
+ * With `pool` (shared tree arrays, at least MIN_NODES_PER_THREAD nodes a thread, and an adaptive
+ * pool finding it faster), the tree is cut into its largest subtrees of at most 1 / (8 parts) of
+ * the nodes, handed out to the threads in runs of about equal node counts, and the few nodes above
+ * them (their ancestors) are done afterwards on this thread, deepest first. Each node's moments
+ * come from its own bodies or its children's moments alone, so they do not depend on the cut.
  */
-function computeMoments(t: GravityTree): void {
-  const skip = t.skip, parent = t.parent;
-  const is3D = t.dims === 3;
-  for (let k = t.nodeCount - 1; k >= 0; k--) {
-    if (skip[k] !== k + 1) { if (is3D) cellMoments3(t, k); else cellMoments2(t, k); }
-    const p = parent[k]!;
-    if (p >= 0 && skip[k]! > skip[p]!) skip[p] = skip[k]!;
+function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
+  const nc = t.nodeCount, skip = t.skip, parent = t.parent;
+  for (let k = nc - 1; k > 0; k--) { const p = parent[k]!; if (skip[k]! > skip[p]!) skip[p] = skip[k]!; }
+  let parts = pool !== null && t.shared && pool.threads <= MAX_PARTS && nc >= MIN_NODES_PER_THREAD * pool.threads && pool.usable() ? pool.threads : 1;
+  const site = 'barnes-hut moments';
+  const adaptive = parts > 1 && pool!.adaptive;
+  if (adaptive && !pool!.chooser.choose(site)) parts = 1;
+  const t0 = adaptive ? nowMs() : 0;
+  if (t.momentList.length < nc) t.momentList = i32(t, Math.max(nc, 2 * t.momentList.length));
+  const list = t.momentList, cut = t.momentCut, top = t.momentTop;
+  let nl = 0, ntop = 0;
+  if (parts === 1) {
+    list[nl++] = 0;
+  } else {
+    // The largest subtrees of at most `bound` nodes, in preorder; the nodes above them into `top`.
+    const bound = Math.max(1, Math.floor(nc / (8 * parts)));
+    for (let k = 0; k < nc;) {
+      if (skip[k]! - k <= bound) { list[nl++] = k; k = skip[k]!; }
+      else {
+        if (ntop >= top.length) { const grown = new Int32Array(2 * top.length); grown.set(top); t.momentTop = grown; }
+        t.momentTop[ntop++] = k; k++;
+      }
+    }
   }
-}
-
-
-function cellMoments2(t: GravityTree, k: number): void {
-  const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
-  let M = 0, X = 0, Y = 0, minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (let c = k + 1; c < end; c = skip[c]!) {
-    const o = c * NF2, w = F[o + 2]!, b = c * 6;
-    M += w; X += w * F[o]!; Y += w * F[o + 1]!;
-    if (B[b]! < minX) minX = B[b]!; if (B[b + 1]! < minY) minY = B[b + 1]!;
-    if (B[b + 3]! > maxX) maxX = B[b + 3]!; if (B[b + 4]! > maxY) maxY = B[b + 4]!;
+  // Runs of subtrees of about equal node counts.
+  const total = nc - ntop;
+  let acc = 0, q = 1;
+  cut[0] = 0;
+  for (let i = 0; i < nl; i++) {
+    while (q < parts && acc >= (total * q) / parts) cut[q++] = i;
+    acc += skip[list[i]!]! - list[i]!;
   }
-  let cx: number, cy: number;
-  if (M > 0) { cx = X / M; cy = Y / M; } else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); }
-  // Parallel-axis theorem, d = c_child - c: S += S_c + M_c d d; T += T_c + 3 sym(d S_c) + M_c d d d.
-  let sxx = 0, sxy = 0, syy = 0, txxx = 0, txxy = 0, txyy = 0, tyyy = 0, reach = 0;
-  for (let c = k + 1; c < end; c = skip[c]!) {
-    const o = c * NF2, w = F[o + 2]!, dx = F[o]! - cx, dy = F[o + 1]! - cy;
-    const cxx = F[o + 3]!, cxy = F[o + 4]!, cyy = F[o + 5]!;
-    const wxx = w * dx * dx, wxy = w * dx * dy, wyy = w * dy * dy;
-    sxx += cxx + wxx; sxy += cxy + wxy; syy += cyy + wyy;
-    txxx += F[o + 7]! + 3 * dx * cxx + wxx * dx;
-    txxy += F[o + 8]! + 2 * dx * cxy + dy * cxx + wxx * dy;
-    txyy += F[o + 9]! + 2 * dy * cxy + dx * cyy + wyy * dx;
-    tyyy += F[o + 10]! + 3 * dy * cyy + wyy * dy;
-    const r = Math.sqrt(dx * dx + dy * dy) + F[o + 6]!;
-    if (r > reach) reach = r;
+  while (q < parts) cut[q++] = nl;
+  cut[parts] = nl;
+  const P = t.momentParams;
+  P[0] = t.dims; P[1] = 0;
+  const A = t.momentLists[0]!;
+  A.length = 0;
+  A.push(t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, skip, t.perm, t.slot, list, cut);
+  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', KERNEL.treeMoments, A, P, parts, null);
+  else treeMoments(A, P, null, 0, 1);
+  if (ntop > 0) {
+    // The nodes above the subtrees, deepest first (descending index: children before parents).
+    const down = t.momentDown.length >= ntop ? t.momentDown : (t.momentDown = new Int32Array(2 * ntop));
+    for (let i = 0; i < ntop; i++) down[i] = t.momentTop[ntop - 1 - i]!;
+    const cut1 = t.momentCut1;
+    cut1[0] = 0; cut1[1] = ntop;
+    P[1] = 1;
+    const B = t.momentLists[1]!;
+    B.length = 0;
+    B.push(t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, skip, t.perm, t.slot, down, cut1);
+    treeMoments(B, P, null, 0, 1);
   }
-  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy);
-  const o = k * NF2;
-  F[o] = cx; F[o + 1] = cy; F[o + 2] = M; F[o + 3] = sxx; F[o + 4] = sxy; F[o + 5] = syy;
-  F[o + 6] = Math.min(Math.sqrt(ex * ex + ey * ey), reach);
-  F[o + 7] = txxx; F[o + 8] = txxy; F[o + 9] = txyy; F[o + 10] = tyyy; F[o + 11] = 0;
-  const b = k * 6;
-  B[b] = minX; B[b + 1] = minY; B[b + 2] = 0; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = 0;
-}
-
-
-function cellMoments3(t: GravityTree, k: number): void {
-  const F = t.node, B = t.box, skip = t.skip, end = skip[k]!;
-  let M = 0, X = 0, Y = 0, Z = 0;
-  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
-  for (let c = k + 1; c < end; c = skip[c]!) {
-    const o = c * NF3, w = F[o + 3]!, b = c * 6;
-    M += w; X += w * F[o]!; Y += w * F[o + 1]!; Z += w * F[o + 2]!;
-    if (B[b]! < minX) minX = B[b]!; if (B[b + 1]! < minY) minY = B[b + 1]!; if (B[b + 2]! < minZ) minZ = B[b + 2]!;
-    if (B[b + 3]! > maxX) maxX = B[b + 3]!; if (B[b + 4]! > maxY) maxY = B[b + 4]!; if (B[b + 5]! > maxZ) maxZ = B[b + 5]!;
-  }
-  let cx: number, cy: number, cz: number;
-  if (M > 0) { cx = X / M; cy = Y / M; cz = Z / M; }
-  else { cx = 0.5 * (minX + maxX); cy = 0.5 * (minY + maxY); cz = 0.5 * (minZ + maxZ); }
-  let sxx = 0, syy = 0, szz = 0, sxy = 0, sxz = 0, syz = 0, reach = 0;
-  for (let c = k + 1; c < end; c = skip[c]!) {
-    const o = c * NF3, w = F[o + 3]!, dx = F[o]! - cx, dy = F[o + 1]! - cy, dz = F[o + 2]! - cz;
-    sxx += F[o + 4]! + w * dx * dx; syy += F[o + 5]! + w * dy * dy; szz += F[o + 6]! + w * dz * dz;
-    sxy += F[o + 7]! + w * dx * dy; sxz += F[o + 8]! + w * dx * dz; syz += F[o + 9]! + w * dy * dz;
-    const r = Math.sqrt(dx * dx + dy * dy + dz * dz) + F[o + 10]!;
-    if (r > reach) reach = r;
-  }
-  const ex = Math.max(cx - minX, maxX - cx), ey = Math.max(cy - minY, maxY - cy), ez = Math.max(cz - minZ, maxZ - cz);
-  const o = k * NF3;
-  F[o] = cx; F[o + 1] = cy; F[o + 2] = cz; F[o + 3] = M;
-  F[o + 4] = sxx; F[o + 5] = syy; F[o + 6] = szz; F[o + 7] = sxy; F[o + 8] = sxz; F[o + 9] = syz;
-  F[o + 10] = Math.min(Math.sqrt(ex * ex + ey * ey + ez * ez), reach); F[o + 11] = 0;
-  const b = k * 6;
-  B[b] = minX; B[b + 1] = minY; B[b + 2] = minZ; B[b + 3] = maxX; B[b + 4] = maxY; B[b + 5] = maxZ;
+  if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, nc);
 }
 
 /** 1 / min(theta, 1)^2: cells interact by expansion when |R|^2 > (r_A + r_B)^2 times this. */
@@ -569,11 +548,34 @@ function openFactor(theta: number): number {
  * @throws Error naming `system` if a worker thread failed.
  */
 export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta: number, pool: ThreadPool | null = null, system = 'treeFieldsSorted'): void {
+  treeFieldsWith(t, G, eps2, theta, pool, system, null);
+}
+
+/**
+ * The world's forces a walk adds to (treeFieldsWith): the Force store's x, y, z (N) and the entity
+ * of each input body (Int32, on a SharedArrayBuffer when the tree is shared).
+ */
+interface WalkForces { fx: Float64Array; fy: Float64Array; fz: Float64Array; ents: Int32Array }
+
+/**
+ * treeFieldsSorted, and with `forces` (null: none) the downward pass also adds m g to the force of
+ * each body (entity forces.ents[t.perm[s]]; x and y only in 2D), on whichever thread evaluates it,
+ * so there is no separate pass over the bodies; each body's force gets the same single addition
+ * as a pass after the walk would make.
+ */
+function treeFieldsWith(t: GravityTree, G: number, eps2: number, theta: number, pool: ThreadPool | null, system: string, forces: WalkForces | null): void {
   const n = t.n;
   t.stats.cellPairs = 0; t.stats.bodyPairs = 0; t.stats.visits = 0;
-  if (t.nonFinite) { t.ax.fill(NaN, 0, n); t.ay.fill(NaN, 0, n); t.az.fill(NaN, 0, n); return; }
+  if (t.nonFinite) {
+    t.ax.fill(NaN, 0, n); t.ay.fill(NaN, 0, n); t.az.fill(NaN, 0, n);
+    // Every force NaN too (m NaN), so the integrator names the bodies.
+    if (forces !== null) treeForces([forces.fx, forces.fy, forces.fz, t.slot, t.m, t.ax, t.ay, t.az], t.walkParams, forces.ents, 0, n);
+    return;
+  }
   if (n === 0) return;
-  let threads = pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= MAX_PARTS && pool.usable() ? pool.threads : 1;
+  // At most MAX_PARTS parts, and a kernel call's arrays (13, a scratch a part, 5 for the forces) within the pool's limit.
+  const maxParts = Math.min(MAX_PARTS, CONTROL.MAX_ARRAYS - 18);
+  let threads = pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= maxParts && pool.usable() ? pool.threads : 1;
   // An adaptive pool keeps the walk on one thread while that has been faster (threads/adaptive.ts).
   const site = t.dims === 3 ? 'barnes-hut walk 3D' : 'barnes-hut walk 2D';
   const adaptive = threads > 1 && pool!.adaptive;
@@ -585,10 +587,10 @@ export function treeFieldsSorted(t: GravityTree, G: number, eps2: number, theta:
     t.accOffset = accOffset;
   }
   cutParts(t, threads);
-  const arrays = walkArrays(t, threads);
+  const arrays = walkArrays(t, threads, forces);
   const P = t.walkParams;
   P[0] = G; P[1] = eps2; P[2] = openFactor(theta); P[3] = t.nodeCount; P[4] = n;
-  P[5] = accOffset; P[6] = accOffset + t.x.length; P[7] = accOffset + 2 * t.x.length;
+  P[5] = accOffset; P[6] = accOffset + t.x.length; P[7] = accOffset + 2 * t.x.length; P[8] = forces !== null ? 1 : 0; P[9] = 13 + threads;
   const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
   const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
@@ -643,12 +645,16 @@ function leafStart(t: GravityTree, s: number): number {
   return start[k]!;
 }
 
-/** The kernel's arrays for `parts` parts (order in barnes-hut-walk.ts), in a list kept on the tree. */
-function walkArrays(t: GravityTree, parts: number): KernelArray[] {
+/**
+ * The kernel's arrays for `parts` parts (order in barnes-hut-walk.ts), in a list kept on the tree,
+ * with the force arrays after the parts' scratch (at 13 + parts) when there are `forces`.
+ */
+function walkArrays(t: GravityTree, parts: number, forces: WalkForces | null): KernelArray[] {
   const a = t.walkList;
   a.length = 0;
   a.push(t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info);
   for (let p = 0; p < parts; p++) a.push(t.scratch[p]!);
+  if (forces !== null) a.push(forces.fx, forces.fy, forces.fz, t.perm, forces.ents);
   return a;
 }
 
@@ -717,15 +723,20 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
   out[0] = G * ax; out[1] = G * ay; out[2] = G * az;
 }
 
-interface GatherHolder { gravityGather?: Float64Array[] }
+/** The gathered bodies of a world's tree: x, y, z, m (input order), each range's bounding box, and each body's entity. */
+interface Gathered { f: Float64Array[]; ents: Int32Array }
+interface GatherHolder { gravityGather?: Gathered }
 
-function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Float64Array[] {
+function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Gathered {
   const holder = world as GatherHolder;
-  if (!holder.gravityGather || holder.gravityGather[0]!.length < n) {
-    const size = Math.max(n, 2 * (holder.gravityGather?.[0]!.length ?? 0), 1024);
+  if (!holder.gravityGather || holder.gravityGather.ents.length < n) {
+    const size = Math.max(n, 2 * (holder.gravityGather?.ents.length ?? 0), 1024);
     const f = (k: number): Float64Array => (shared ? sharedFloat64(k) : new Float64Array(k));
     // x, y, z, m, and the bounding box of each thread's range (BOX_STRIDE slots a thread).
-    holder.gravityGather = [f(size), f(size), f(size), f(size), f(BOX_STRIDE * 64)];
+    holder.gravityGather = {
+      f: [f(size), f(size), f(size), f(size), f(BOX_STRIDE * 64)],
+      ents: shared ? new Int32Array(new SharedArrayBuffer(4 * size)) : new Int32Array(size),
+    };
   }
   return holder.gravityGather;
 }
@@ -738,12 +749,17 @@ function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Float64
  * the split on one); the tree and the fields are the same as on one thread, to the bit.
  */
 export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): GravityTree {
+  return worldTreeFieldsWith(world, ents, false);
+}
+
+/** worldTreeFields; with `addForces`, the walk also adds m g to each body's Force (treeFieldsWith). */
+function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addForces: boolean): GravityTree {
   const c = world.components;
   const n = ents.length;
   const t = worldTree(world);
-  const xs = gatherScratch(world, n, t.shared);
+  const gathered = gatherScratch(world, n, t.shared), xs = gathered.f;
   const gx = xs[0]!, gy = xs[1]!, gz = xs[2]!, gm = xs[3]!, box = xs[4]!;
-  const arrays = [c.Position.x, c.Position.y, c.Position.z, c.Mass.value, gx, gy, gz, gm, box] as KernelArray[];
+  const arrays = [c.Position.x, c.Position.y, c.Position.z, c.Mass.value, gx, gy, gz, gm, box, gathered.ents] as KernelArray[];
   const P = t.keyParams;
   P[0] = world.dimensions;
   const system = 'mutualGravitySystem (Barnes-Hut)';
@@ -765,7 +781,8 @@ export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): G
   }
   buildTreeWith(t, n, gx, gy, gz, gm, box, world.threadPool);
   const L = world.laws;
-  treeFieldsSorted(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, system);
+  const forces = addForces ? { fx: c.Force.x, fy: c.Force.y, fz: c.Force.z, ents: gathered.ents } : null;
+  treeFieldsWith(t, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening, L.openingAngle, world.threadPool, system, forces);
   return t;
 }
 
@@ -775,11 +792,6 @@ export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): G
  * is 'barnes-hut'.
  */
 export function barnesHutGravity(world: PhysicsWorld, ents: ArrayLike<number>): void {
-  const t = worldTreeFields(world, ents);
-  const c = world.components;
-  // In input order: the force arrays are then written in ents' (usually increasing) order.
-  const arrays = [c.Force.x, c.Force.y, c.Force.z, t.slot, t.m, t.ax, t.ay, t.az] as KernelArray[];
-  if (runOnPool(world.threadPool, 'mutualGravitySystem (Barnes-Hut)', KERNEL.treeForces, arrays, t.keyParams, t.n, ents, MIN_PARALLEL_PER_THREAD) === null) {
-    treeForces(arrays, t.keyParams, ents as unknown as Int32Array, 0, t.n);
-  }
+  // The walk's downward pass adds the forces as it writes the fields (no pass of its own).
+  worldTreeFieldsWith(world, ents, true);
 }

@@ -14,7 +14,7 @@
 
 import type { Kernel, KernelArray } from './kernel-types.js';
 import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
-import { leafMoments, mortonKeys, radixHistogram, radixScatter, treeForces, treeGather, treeOrder } from '../forces/barnes-hut-gather.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
 import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 
@@ -281,8 +281,8 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 /** Kernel numbers: the index of each kernel in `KERNELS`. */
 export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
-  barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeys: 11, treeForces: 12,
-  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, treeOrder: 17, leafMoments: 18, radixHistogram: 19, radixScatter: 20, centralForce: 21, attractors: 22,
+  barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeysHist: 11, treeForces: 12,
+  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, mortonBucketSort: 17, treeMoments: 18, mortonScatter: 19, centralForce: 20, attractors: 21,
 });
 
 /**
@@ -305,5 +305,5 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
-  treeGather, mortonKeys, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, treeOrder, leafMoments, radixHistogram, radixScatter, centralForce, attractors,
+  treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors,
 ]);
