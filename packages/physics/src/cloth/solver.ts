@@ -1,5 +1,6 @@
 import { removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
+import type { Components } from '../components.js';
 import { query } from '../query.js';
 import { pushBreak } from '../joints/state.js';
 import { currentHandle } from '../handles.js';
@@ -39,32 +40,72 @@ export function clothSystem(world: PhysicsWorld): void {
   const n = cl.count;
   if (n === 0) return;
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, inv = c.Mass.inv;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, vx = c.Velocity.x, vy = c.Velocity.y;
   const h = world.h, S = cl.substeps, hs = h / S, ihs = 1 / hs, ihs2 = ihs * ihs;
   const gx = world.gravity[0]!, gy = world.gravity[1]!;
-  // Gather the points into the buffer's sections (see ClothState.buffer). Moving points restart from the
-  // start of the step with the integrator's velocity less this step's gravity (added back a substep at a
-  // time); fixed points (w = 0: pinned, static, kinematic) stay where they are.
-  const P = cl.points, np = cl.pointCount, xb = cl.buffer;
-  const Q = 3 * np, U = 5 * np;
+  const massesChanged = gatherPoints(cl, c, gx * h, gy * h);
+  // The per-link factors depend on the links, the points' inverse masses and h_s only: most steps reuse them.
+  if (massesChanged || cl.preparedVersion !== cl.built || cl.preparedStep !== hs) {
+    prepareLinks(cl, ihs2);
+    cl.preparedVersion = cl.built; cl.preparedStep = hs;
+  }
+  solveSubsteps(cl, S, hs, ihs, gx * hs, gy * hs);
+  scatterPoints(cl, c, ihs);
+  // Strains from squared lengths: q = (L / r)^2, so strain = sqrt(q) - 1 and a link tears when q > (1 + tear)^2.
+  const torn = scanStrains(cl);
+  cl.maxStretch = Math.sqrt(cl.scratch[0]!) - 1;
+  if (torn > 0) tearLinks(world, ihs2);
+}
+
+// The solver's passes are separate functions that read the packed arrays from the ClothState (one
+// hidden class, typed-array fields): clothSystem was one loop nest, optimised on stack replacement part
+// way through its first call, so the code after the loop being run (the strain scan, the tear reports)
+// was compiled before the interpreter had recorded any type feedback for it, and was thrown away
+// ("insufficient type feedback") and recompiled a varying number of times, in an order set by the
+// concurrent compiler. Now each pass gets its feedback before it is optimised, and the rarely run tear
+// path has its own function. The arithmetic is the same, operation for operation: same results to the bit.
+
+/**
+ * Gathers the points into the buffer's sections (see ClothState.buffer). Moving points restart from the
+ * start of the step with the integrator's velocity less this step's gravity (gxh, gyh = g h, added back a
+ * substep at a time); fixed points (w = 0: pinned, static, kinematic) stay where they are.
+ * @returns whether any point's inverse mass differs from the one the buffer held.
+ */
+function gatherPoints(cl: ClothState, c: Components, gxh: number, gyh: number): boolean {
+  let changed = false;
+  const P = cl.points, np = cl.pointCount, xb = cl.buffer, U = 5 * np;
+  const px = c.Position.x, py = c.Position.y, inv = c.Mass.inv;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, vx = c.Velocity.x, vy = c.Velocity.y;
   for (let i = 0; i < np; i++) {
     const e = P[i]!, o = 3 * i, v = 2 * i, w = inv[e]!;
-    xb[o + 2] = w;
-    if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[U + v] = vx[e]! - gx * h; xb[U + v + 1] = vy[e]! - gy * h; }
+    if (xb[o + 2] !== w) { xb[o + 2] = w; changed = true; }
+    if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[U + v] = vx[e]! - gxh; xb[U + v + 1] = vy[e]! - gyh; }
     else { xb[o] = px[e]!; xb[o + 1] = py[e]!; xb[U + v] = 0; xb[U + v + 1] = 0; }
   }
-  // Per link, once a step: p = r^2 / 3 and k = (2/3) / (w_a + w_b + alpha~), so that a projection takes one
-  // division: s = (3 p - L^2) / (p + L^2) and x_a -= w_a k s d, x_b += w_b k s d (the header's step).
-  const I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, lam = cl.lambda;
+  return changed;
+}
+
+/**
+ * Per link, once a step: p = r^2 / 3 and k = (2/3) / (w_a + w_b + alpha~), so that a projection takes one
+ * division: s = (3 p - L^2) / (p + L^2) and x_a -= w_a k s d, x_b += w_b k s d (the header's step).
+ */
+function prepareLinks(cl: ClothState, ihs2: number): void {
+  const xb = cl.buffer, I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, n = cl.count;
   for (let l = 0; l < n; l++) {
     const d = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + K[l]! * ihs2, r = R[l]!;
     F[2 * l] = (r * r) / 3; F[2 * l + 1] = d > 0 ? 2 / (3 * d) : 0;
   }
-  const rigid = cl.rigidCount;
-  const dvx = gx * hs, dvy = gy * hs;
+}
+
+/**
+ * The substeps: each predicts the moving points (velocities from the last substep's moves from the
+ * second substep on, then v += g h_s, x += v h_s, with dvx, dvy = g h_s) and makes one Gauss-Seidel pass
+ * over the links: inextensible links, then the compliant ones, whose multipliers restart each substep;
+ * the last substep keeps each compliant link's multiplier in `lam` (for break forces).
+ */
+function solveSubsteps(cl: ClothState, S: number, hs: number, ihs: number, dvx: number, dvy: number): void {
+  const xb = cl.buffer, I = cl.pair, F = cl.solve, lam = cl.lambda;
+  const np = cl.pointCount, rigid = cl.rigidCount, n = cl.count, Q = 3 * np, U = 5 * np;
   for (let sub = 0; sub < S; sub++) {
-    // Velocities from the last substep's moves (from the second substep on), then predict: v += g h_s, x += v h_s.
     for (let i = 0; i < np; i++) {
       const o = 3 * i;
       if (xb[o + 2] === 0) continue;
@@ -75,7 +116,6 @@ export function clothSystem(world: PhysicsWorld): void {
       xb[Q + v] = x; xb[Q + v + 1] = y;
       xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
     }
-    // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
     for (let l = 0; l < rigid; l++) {
       const oa = I[2 * l]!, ob = I[2 * l + 1]!;
       const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
@@ -98,6 +138,12 @@ export function clothSystem(world: PhysicsWorld): void {
       xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
     }
   }
+}
+
+/** Writes the moving points' positions and velocities (from their last substep's move) back to the stores. */
+function scatterPoints(cl: ClothState, c: Components, ihs: number): void {
+  const P = cl.points, np = cl.pointCount, xb = cl.buffer, Q = 3 * np;
+  const px = c.Position.x, py = c.Position.y, vx = c.Velocity.x, vy = c.Velocity.y;
   for (let i = 0; i < np; i++) {
     const o = 3 * i;
     if (xb[o + 2] === 0) continue;
@@ -105,26 +151,42 @@ export function clothSystem(world: PhysicsWorld): void {
     px[e] = xb[o]!; py[e] = xb[o + 1]!;
     vx[e] = (xb[o]! - xb[Q + v]!) * ihs; vy[e] = (xb[o + 1]! - xb[Q + v + 1]!) * ihs;
   }
-  // Strains from squared lengths: q = (L / r)^2, so strain = sqrt(q) - 1 and a link tears when q > (1 + tear)^2.
-  let maxQ = 1;
-  let doomed: number[] | null = null;
-  const T = cl.tear, E = cl.link;
+}
+
+/** Largest q = (L / r)^2 of the links (at least 1) into cl.scratch[0]; returns how many links are past their tear strain. */
+function scanStrains(cl: ClothState): number {
+  const xb = cl.buffer, I = cl.pair, F = cl.solve, T = cl.tear, n = cl.count;
+  let maxQ = 1, torn = 0;
   for (let l = 0; l < n; l++) {
     const oa = I[2 * l]!, ob = I[2 * l + 1]!;
     const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
     const q = (dx * dx + dy * dy) / (3 * F[2 * l]!), t1 = 1 + T[l]!;
     if (q > maxQ) maxQ = q;
+    if (q > t1 * t1) torn++;
+  }
+  cl.scratch[0] = maxQ;
+  return torn;
+}
+
+/** Tears the links past their tear strain: reports each in `world.joints.breaks` (in link order), then removes them. */
+function tearLinks(world: PhysicsWorld, ihs2: number): void {
+  const cl = world.cloth, c = world.components, n = cl.count, rigid = cl.rigidCount;
+  const I = cl.pair, F = cl.solve, T = cl.tear, E = cl.link, lam = cl.lambda, xb = cl.buffer;
+  const doomed: number[] = [];
+  for (let l = 0; l < n; l++) {
+    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
+    const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
+    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!), t1 = 1 + T[l]!;
     if (q > t1 * t1) {
       const strain = Math.sqrt(q) - 1;
       const e = E[l]!;
-      (doomed ??= []).push(e);
+      doomed.push(e);
       // Force: the link's tension k strain for a compliant link, else the last substep's correction impulse.
       const force = l >= rigid ? Math.abs(lam[l]!) * ihs2 : 0;
       pushBreak(world.joints.breaks, currentHandle(world, e), currentHandle(world, c.ClothLink.a[e]!), currentHandle(world, c.ClothLink.b[e]!), force, 0, strain);
     }
   }
-  cl.maxStretch = Math.sqrt(maxQ) - 1;
-  if (doomed) for (const e of doomed) { detachClothLink(world, e); removeEntity(world, e); }
+  for (const e of doomed) { detachClothLink(world, e); removeEntity(world, e); }
 }
 
 /** Packs the cloth links (as pairs of compact point offsets) and their distinct points. */

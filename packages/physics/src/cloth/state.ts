@@ -20,8 +20,10 @@ export interface ClothState {
   points: Int32Array;
   /** Per point, in sections of the point count n: x, y (m) and inverse mass (1/kg), 3 a point, at [0, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n). */
   buffer: Float64Array;
-  /** Per link (2 each) of this step: r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
+  /** Per link (2 each): r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
   solve: Float64Array;
+  /** The packing (`built`) and the substep h_s (s) `solve` was computed for; it is recomputed when either, or a point's inverse mass, changes. */
+  preparedVersion: number; preparedStep: number;
   /** Per entity scratch: compact index of a point while packing. */
   compact: Int32Array;
   /** Per link: XPBD multiplier of the last substep (N s^2). */
@@ -31,14 +33,26 @@ export interface ClothState {
   seenStamp: number;
   /** Largest strain (length - rest) / rest of any link after the last solve. */
   maxStretch: number;
+  /** The solver's scratch: [0] the largest squared stretch ratio (L / r)^2 of the last solve. */
+  scratch: Float64Array;
 }
 
 /** An empty cloth state. */
 export function createClothState(): ClothState {
-  return {
+  const state: ClothState = {
     substeps: 11, version: 0, built: 0, count: 0, rigidCount: 0,
     link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
     rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
     pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,
+    scratch: new Float64Array(1), preparedVersion: -1, preparedStep: 0,
   };
+  // maxStretch and preparedStep hold fractions: V8 gives a field first written with 0 small-integer storage
+  // and changes the object's hidden class when the first fraction arrives, which threw the solver's
+  // optimised code away after its first step ("wrong map"). Writing a fraction first makes them double
+  // fields from birth.
+  state.maxStretch = 0.5;
+  state.maxStretch = 0;
+  state.preparedStep = 0.5;
+  state.preparedStep = 0;
+  return state;
 }
