@@ -1,23 +1,26 @@
 /**
  * Lab: 3D rigid bodies (boxes, capsules, cylinders and their joints). Five scenes, picked with the keys
  * 1 to 5 or the panel: a box tumbling onto a table, a stack of ten boxes, a ring of dominoes, a spinning
- * top on its tip (its precession rate against Omega = m g r / (I3 omega3)) and a ragdoll of capsules
+ * top standing free on its tip (its precession rate against Omega = m g r / (I3 omega3); its tip's
+ * friction on a slider) and a ragdoll of capsules
  * tumbling down steps. Drag any body with the mouse (a spring to the pointer through a ray cast in the
  * physics); Space acts on the scene (throw, knock, push, spin, kick).
  * Keys: 1-5 scene, Space act, G debug layer (contacts, joints, axes), P pause, N step, R reset.
- * URL: ?scene=tumble|stack|dominoes|top|ragdoll, ?dominoes=N, ?spin=rad/s.
+ * URL: ?scene=tumble|stack|dominoes|top|ragdoll, ?dominoes=N, ?spin=rad/s, ?tip=the top's tip friction (0-1.2).
  */
 import { addBody, applyImpulse, createPhysicsWorld, spinKineticEnergy, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
 import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
-import { DOMINO_SPACING, SCENES, buildLab, hasToppled, labWorldOptions, topHeading, type LabHandles, type SceneName } from './scene';
+import { DOMINO_SPACING, SCENES, buildLab, hasToppled, labWorldOptions, topAxis, topHeading, type LabHandles, type SceneName } from './scene';
 
 const params = {
   // The default is the light stack: 100 dominoes cost about 10 ms a step on a loaded 2-core machine (key 3).
   scene: choiceParam('scene', SCENES, 'stack') as SceneName,
   dominoes: numberParam('dominoes', { default: 100, min: 2, max: 400, integer: true }),
   spin: numberParam('spin', { default: 60, min: 20, max: 200 }),
+  /** The top's tip friction: 0 a smooth table (the rate then follows the formula), more and the tip rolls and wanders. */
+  tip: numberParam('tip', { default: 0, min: 0, max: 1.2 }),
   friction: 0.6,
   debug: false,
   act: () => act(),
@@ -44,7 +47,7 @@ const VIEWS: Record<SceneName, { min: [number, number, number]; max: [number, nu
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(labWorldOptions(params.scene));
-  handles = buildLab(world, params.scene, { dominoes: params.dominoes, spin: params.spin, friction: params.friction });
+  handles = buildLab(world, params.scene, { dominoes: params.dominoes, spin: params.spin, friction: params.friction, tipFriction: params.tip });
   toppledAt = handles.scene === 'dominoes' ? handles.parts.map(() => Number.NaN) : [];
   headings.length = 0;
   if (handles.top) { heading = lastHeading = topHeading(world, handles); }
@@ -182,6 +185,7 @@ const panel = createPanel(params, [
   { type: 'choice', key: 'scene', options: { 'box on a table (1)': 'tumble', 'stack of ten (2)': 'stack', 'dominoes (3)': 'dominoes', 'spinning top (4)': 'top', 'ragdoll (5)': 'ragdoll' }, onChange: (s) => setScene(s as SceneName) },
   { type: 'slider', key: 'dominoes', label: 'dominoes (rebuilds)', min: 10, max: 400, step: 10, onRelease: true, onChange: () => { if (params.scene === 'dominoes') shell.reset(); } },
   { type: 'slider', key: 'spin', label: 'top spin ω₃ (rad/s, rebuilds)', min: 20, max: 200, step: 5, onRelease: true, onChange: () => { if (params.scene === 'top') shell.reset(); } },
+  { type: 'slider', key: 'tip', label: 'top tip friction (rebuilds)', min: 0, max: 1.2, step: 0.05, onRelease: true, onChange: () => { if (params.scene === 'top') shell.reset(); } },
   { type: 'slider', key: 'friction', label: 'friction (rebuilds)', min: 0, max: 1.2, step: 0.05, onRelease: true, onChange: () => shell.reset() },
   { type: 'checkbox', key: 'debug', label: 'debug layer (G)', onChange: (v) => setDebug(v === true) },
   { type: 'button', key: 'act', label: 'act (Space)' },
@@ -202,13 +206,14 @@ function measuredPrecession(): number {
   return (b[1] - a[1]) / (b[0] - a[0]);
 }
 
+const axisNow = [0, 0, 0];
 /** Top: current tilt (rad), spin component omega3 (rad/s), the gyroscope formula and the steady root now. */
 function topNow(): { tilt: number; omega3: number; gyro: number; steady: number } {
   const world = shell.world, t = handles.top!, b = handles.main, c = world.components;
-  const dx = c.Position.x[b]! - t.tip[0], dy = c.Position.y[b]! - t.tip[1], dz = c.Position.z[b]! - t.tip[2];
-  const r = Math.hypot(dx, dy, dz), tilt = Math.acos(Math.max(-1, Math.min(1, dy / r)));
+  const a = topAxis(world, handles, axisNow);
+  const tilt = Math.acos(Math.max(-1, Math.min(1, a[1]!)));
   const W = c.AngularVelocity;
-  const omega3 = (W.x[b]! * dx + W.y[b]! * dy + W.z[b]! * dz) / r;
+  const omega3 = W.x[b]! * a[0]! + W.y[b]! * a[1]! + W.z[b]! * a[2]!;
   const L = t.I3 * omega3, torque = t.mass * Math.abs(world.gravity[1]!) * t.r, cos = Math.cos(tilt);
   const steady = (L - Math.sqrt(Math.max(0, L * L - 4 * t.I1 * cos * torque))) / (2 * t.I1 * cos);
   return { tilt, omega3, gyro: torque / L, steady };
@@ -247,7 +252,7 @@ function frame(): void {
     }
     case 'top': {
       const t = h.top!, now = topNow(), m = measuredPrecession();
-      set(0, `top ${t.mass.toFixed(1)} kg, r ${t.r.toFixed(3)} m, I₃ ${t.I3.toFixed(3)} kg m², tip in a cup`);
+      set(0, `top ${t.mass.toFixed(1)} kg, r ${t.r.toFixed(3)} m, I₃ ${t.I3.toFixed(3)} kg m², free on a ${(t.rho * 200).toFixed(0)} cm ball tip, friction ${t.tipFriction}`);
       set(1, `ω₃ ${now.omega3.toFixed(1)} rad/s · tilt ${(now.tilt * 180 / Math.PI).toFixed(1)}°`);
       set(2, `Ω measured ${Number.isNaN(m) ? '…' : m.toFixed(4)} rad/s`);
       set(3, `Ω = m g r / (I₃ ω₃) = ${now.gyro.toFixed(4)} rad/s`);
