@@ -18,15 +18,22 @@ import { currentHandle } from '../handles.js';
  *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
  * - friction in two tangent directions t1, t2 = n x t1, each |lambda_t| <= mu lambda_n;
  * - per point and direction u (n, t1, t2), r x u and I^-1 (r x u) of both bodies are computed once a
- *   step (`jacobians`), so a pass reads them instead of multiplying tensors; the points of a manifold
- *   are solved in alternating order from substep to substep;
+ *   step (`jacobians`), so a pass reads them instead of multiplying tensors; a manifold whose two bodies
+ *   are isotropic (I^-1 = i 1: spheres, cubes, or a static side) reads only r x u and scales it by i,
+ *   half the memory a pass streams; the points of a manifold are solved in alternating order from
+ *   substep to substep;
  * - warm start from the previous step's point with the same feature id (shape3d-collision.ts);
  * - restitution after the substeps (Box2D v3 b2ApplyRestitution): a point that approached faster than
  *   the world's restitution threshold and carried an impulse leaves with v_n >= -e v_n0.
  */
 
-/** Numbers a point keeps in `jacobians`: for n, t1, t2 in turn: r_A x u, r_B x u, I_A^-1 (r_A x u), I_B^-1 (r_B x u). */
+/**
+ * Numbers a point keeps in `jacobians`: first r_A x u, r_B x u for u = n, t1, t2 in turn (at 6 d, d = 0, 1, 2),
+ * then I_A^-1 (r_A x u), I_B^-1 (r_B x u) in the same order (at INV + 6 d), so an isotropic manifold's
+ * passes touch only the first 18.
+ */
 const JAC = 36;
+const INV = 18;
 
 /** Stiffness as a fraction of the substep rate (as the 2D shape contacts: manifold-solver.ts). */
 const HERTZ_FRACTION = 0.125;
@@ -91,6 +98,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
     const mA = sb[a + 9]!, mB = sb[b + 9]!;
+    buf.iso[i] = isotropic(T, ta) && isotropic(T, tb) ? 1 : 0;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     const t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
@@ -109,9 +117,9 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         const cbx = rby * uz - rbz * uy, cby = rbz * ux - rbx * uz, cbz = rbx * uy - rby * ux;
         const iax = T[ta]! * cax + T[ta + 3]! * cay + T[ta + 4]! * caz, iay = T[ta + 3]! * cax + T[ta + 1]! * cay + T[ta + 5]! * caz, iaz = T[ta + 4]! * cax + T[ta + 5]! * cay + T[ta + 2]! * caz;
         const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
-        const b = o + 12 * d;
+        const b = o + 6 * d, bi = b + INV;
         J[b] = cax; J[b + 1] = cay; J[b + 2] = caz; J[b + 3] = cbx; J[b + 4] = cby; J[b + 5] = cbz;
-        J[b + 6] = iax; J[b + 7] = iay; J[b + 8] = iaz; J[b + 9] = ibx; J[b + 10] = iby; J[b + 11] = ibz;
+        J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz;
         const k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
         const eff = k0 > 0 ? 1 / k0 : 0;
         if (d === 0) buf.mn[q] = eff; else if (d === 1) buf.mt1[q] = eff; else buf.mt2[q] = eff;
@@ -122,6 +130,11 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
     }
   }
+}
+
+/** Whether the world inverse inertia tensor at T[o..o+5] is i 1 (prepareSolverBodies3D writes it exactly so for isotropic bodies). */
+function isotropic(T: Float64Array, o: number): boolean {
+  return T[o + 3] === 0 && T[o + 4] === 0 && T[o + 5] === 0 && T[o] === T[o + 1] && T[o] === T[o + 2];
 }
 
 /**
@@ -144,7 +157,9 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
     const ii = sb[12 * k + 10]!;
     if (!(ii > 0)) { T.fill(0, o, o + 6); continue; }
     const ix = hasT ? IT.invX[e]! : 0, iy = hasT ? IT.invY[e]! : 0, iz = hasT ? IT.invZ[e]! : 0;
+    // No tensor (a ball), or equal principal moments (a cube, a sphere): R diag(i, i, i) R^T = i 1 exactly.
     if (ix === 0 && iy === 0 && iz === 0 || !(Q.w.length > e)) { T[o] = ii; T[o + 1] = ii; T[o + 2] = ii; T[o + 3] = 0; T[o + 4] = 0; T[o + 5] = 0; continue; }
+    if (ix === iy && iy === iz) { T[o] = ix; T[o + 1] = ix; T[o + 2] = ix; T[o + 3] = 0; T[o + 4] = 0; T[o + 5] = 0; continue; }
     const x = Q.x[e]!, y = Q.y[e]!, z = Q.z[e]!, w = Q.w[e]!;
     const r00 = 1 - 2 * (y * y + z * z), r01 = 2 * (x * y - z * w), r02 = 2 * (x * z + y * w);
     const r10 = 2 * (x * y + z * w), r11 = 1 - 2 * (x * x + z * z), r12 = 2 * (y * z - x * w);
@@ -164,24 +179,24 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
  * never written.
  */
 function apply(sb: Float64Array, J: Float32Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number): void {
-  const o = JAC * q + 12 * d;
+  const o = JAC * q + INV + 6 * d;
   if (ka > 0) {
     const a = 12 * ka, m = sb[a + 9]! * lam;
     sb[a] = sb[a]! - m * ux; sb[a + 1] = sb[a + 1]! - m * uy; sb[a + 2] = sb[a + 2]! - m * uz;
-    sb[a + 3] = sb[a + 3]! - lam * J[o + 6]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 7]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 8]!;
+    sb[a + 3] = sb[a + 3]! - lam * J[o]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 1]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 2]!;
     sb[a + 11] = 1;
   }
   if (kb > 0) {
     const b = 12 * kb, m = sb[b + 9]! * lam;
     sb[b] = sb[b]! + m * ux; sb[b + 1] = sb[b + 1]! + m * uy; sb[b + 2] = sb[b + 2]! + m * uz;
-    sb[b + 3] = sb[b + 3]! + lam * J[o + 9]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 10]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 11]!;
+    sb[b + 3] = sb[b + 3]! + lam * J[o + 3]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 4]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 5]!;
     sb[b + 11] = 1;
   }
 }
 
 /** Relative velocity of B against A at point q along direction u (d as in `apply`). */
 function relativeSpeed(sb: Float64Array, J: Float32Array, a: number, b: number, q: number, d: number, ux: number, uy: number, uz: number): number {
-  const o = JAC * q + 12 * d;
+  const o = JAC * q + 6 * d;
   return (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
     + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
     - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
@@ -206,16 +221,16 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       const px = ln * nx + l1 * t1x + l2 * t2x, py = ln * ny + l1 * t1y + l2 * t2y, pz = ln * nz + l1 * t1z + l2 * t2z;
       if (ka > 0) {
         sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
-        sb[a + 3] = sb[a + 3]! - ln * J[o + 6]! - l1 * J[o + 18]! - l2 * J[o + 30]!;
-        sb[a + 4] = sb[a + 4]! - ln * J[o + 7]! - l1 * J[o + 19]! - l2 * J[o + 31]!;
-        sb[a + 5] = sb[a + 5]! - ln * J[o + 8]! - l1 * J[o + 20]! - l2 * J[o + 32]!;
+        sb[a + 3] = sb[a + 3]! - ln * J[o + 18]! - l1 * J[o + 24]! - l2 * J[o + 30]!;
+        sb[a + 4] = sb[a + 4]! - ln * J[o + 19]! - l1 * J[o + 25]! - l2 * J[o + 31]!;
+        sb[a + 5] = sb[a + 5]! - ln * J[o + 20]! - l1 * J[o + 26]! - l2 * J[o + 32]!;
         sb[a + 11] = 1;
       }
       if (kb > 0) {
         sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
-        sb[b + 3] = sb[b + 3]! + ln * J[o + 9]! + l1 * J[o + 21]! + l2 * J[o + 33]!;
-        sb[b + 4] = sb[b + 4]! + ln * J[o + 10]! + l1 * J[o + 22]! + l2 * J[o + 34]!;
-        sb[b + 5] = sb[b + 5]! + ln * J[o + 11]! + l1 * J[o + 23]! + l2 * J[o + 35]!;
+        sb[b + 3] = sb[b + 3]! + ln * J[o + 21]! + l1 * J[o + 27]! + l2 * J[o + 33]!;
+        sb[b + 4] = sb[b + 4]! + ln * J[o + 22]! + l1 * J[o + 28]! + l2 * J[o + 34]!;
+        sb[b + 5] = sb[b + 5]! + ln * J[o + 23]! + l1 * J[o + 29]! + l2 * J[o + 35]!;
         sb[b + 11] = 1;
       }
     }
@@ -235,6 +250,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
   const sep = buf.sep, LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2, MN = buf.mn, MT1 = buf.mt1, MT2 = buf.mt2, MAX = buf.maxLn;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
+  const ISO = buf.iso, T = st.invInertia;
   const invHs = 1 / hs;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!, kb = IB[i]!, a = 12 * ka, b = 12 * kb;
@@ -251,6 +267,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     if (ka > 0) { const e = 6 * ka, r = 3 * ka; hax = ex[e + 3]! - base[r]!; hay = ex[e + 4]! - base[r + 1]!; haz = ex[e + 5]! - base[r + 2]!; }
     if (kb > 0) { const e = 6 * kb, r = 3 * kb; hbx = ex[e + 3]! - base[r]!; hby = ex[e + 4]! - base[r + 1]!; hbz = ex[e + 5]! - base[r + 2]!; }
     const m = PTS[i]!;
+    // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
+    const iso = ISO[i] === 1, iA = iso ? T[6 * ka]! : 0, iB = iso ? T[6 * kb]! : 0;
     let pushed = false;
     for (let kk = 0; kk < m; kk++) {
       const k = backward ? m - 1 - kk : kk;
@@ -272,9 +290,16 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
         const fa = mA * dl, fb = mB * dl;
         vax -= fa * nx; vay -= fa * ny; vaz -= fa * nz;
-        wax -= dl * J[o + 6]!; way -= dl * J[o + 7]!; waz -= dl * J[o + 8]!;
         vbx += fb * nx; vby += fb * ny; vbz += fb * nz;
-        wbx += dl * J[o + 9]!; wby += dl * J[o + 10]!; wbz += dl * J[o + 11]!;
+        if (iso) {
+          const ga = iA * dl, gb = iB * dl;
+          wax -= ga * ra0; way -= ga * ra1; waz -= ga * ra2;
+          wbx += gb * rb0; wby += gb * rb1; wbz += gb * rb2;
+        } else {
+          const p = o + INV;
+          wax -= dl * J[p]!; way -= dl * J[p + 1]!; waz -= dl * J[p + 2]!;
+          wbx += dl * J[p + 3]!; wby += dl * J[p + 4]!; wbz += dl * J[p + 5]!;
+        }
         pushed = true;
       }
     }
@@ -287,10 +312,11 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       const o1 = LT1[q]!, o2 = LT2[q]!;
       // A point that pushes nothing (a speculative one) has no friction to solve.
       if (limit === 0 && o1 === 0 && o2 === 0) continue;
-      const o = JAC * q + 12;
-      // t1
+      // t1 (crosses at o, inverse products at o + INV), then t2 (6 further on).
+      let o = JAC * q + 6;
+      let ca0 = J[o]!, ca1 = J[o + 1]!, ca2 = J[o + 2]!, cb0 = J[o + 3]!, cb1 = J[o + 4]!, cb2 = J[o + 5]!;
       const vt1 = (vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z
-        + wbx * J[o + 3]! + wby * J[o + 4]! + wbz * J[o + 5]! - wax * J[o]! - way * J[o + 1]! - waz * J[o + 2]!;
+        + wbx * cb0 + wby * cb1 + wbz * cb2 - wax * ca0 - way * ca1 - waz * ca2;
       let l1 = o1 - MT1[q]! * vt1;
       l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
       LT1[q] = l1;
@@ -298,15 +324,22 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       if (d1 !== 0) {
         const fa = mA * d1, fb = mB * d1;
         vax -= fa * t1x; vay -= fa * t1y; vaz -= fa * t1z;
-        wax -= d1 * J[o + 6]!; way -= d1 * J[o + 7]!; waz -= d1 * J[o + 8]!;
         vbx += fb * t1x; vby += fb * t1y; vbz += fb * t1z;
-        wbx += d1 * J[o + 9]!; wby += d1 * J[o + 10]!; wbz += d1 * J[o + 11]!;
+        if (iso) {
+          const ga = iA * d1, gb = iB * d1;
+          wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
+          wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
+        } else {
+          const p = o + INV;
+          wax -= d1 * J[p]!; way -= d1 * J[p + 1]!; waz -= d1 * J[p + 2]!;
+          wbx += d1 * J[p + 3]!; wby += d1 * J[p + 4]!; wbz += d1 * J[p + 5]!;
+        }
         pushed = true;
       }
-      // t2
-      const p = o + 12;
+      o += 6;
+      ca0 = J[o]!; ca1 = J[o + 1]!; ca2 = J[o + 2]!; cb0 = J[o + 3]!; cb1 = J[o + 4]!; cb2 = J[o + 5]!;
       const vt2 = (vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z
-        + wbx * J[p + 3]! + wby * J[p + 4]! + wbz * J[p + 5]! - wax * J[p]! - way * J[p + 1]! - waz * J[p + 2]!;
+        + wbx * cb0 + wby * cb1 + wbz * cb2 - wax * ca0 - way * ca1 - waz * ca2;
       let l2 = o2 - MT2[q]! * vt2;
       l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
       LT2[q] = l2;
@@ -314,9 +347,16 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       if (d2 !== 0) {
         const fa = mA * d2, fb = mB * d2;
         vax -= fa * t2x; vay -= fa * t2y; vaz -= fa * t2z;
-        wax -= d2 * J[p + 6]!; way -= d2 * J[p + 7]!; waz -= d2 * J[p + 8]!;
         vbx += fb * t2x; vby += fb * t2y; vbz += fb * t2z;
-        wbx += d2 * J[p + 9]!; wby += d2 * J[p + 10]!; wbz += d2 * J[p + 11]!;
+        if (iso) {
+          const ga = iA * d2, gb = iB * d2;
+          wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
+          wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
+        } else {
+          const p = o + INV;
+          wax -= d2 * J[p]!; way -= d2 * J[p + 1]!; waz -= d2 * J[p + 2]!;
+          wbx += d2 * J[p + 3]!; wby += d2 * J[p + 4]!; wbz += d2 * J[p + 5]!;
+        }
         pushed = true;
       }
     }
