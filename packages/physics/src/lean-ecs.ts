@@ -16,10 +16,14 @@ import { $internal } from 'bitecs';
  * new array, as before).
  *
  * 2. Fixed typed arrays where bitecs grows JS arrays indexed by entity id: the entity index's `sparse`
- * (id -> position in `dense`), the first generation of component masks (31 components, the core
- * stores among them), and each query's `sparse` (and its pending removals'), all Int32Array of capacity + 1. A JS
+ * (id -> position in `dense`), every generation of component masks (31 components each; the core
+ * stores fill the first two, later ones are typed as bitecs adds them), and each query's `sparse` (and
+ * its pending removals'), all Int32Array of capacity + 1. A JS
  * array of a million small integers costs about 10.5 bytes an element once grown by pushes; the typed
- * one 4. The dense lists stay JS arrays (queries hand them to systems; bitecs pushes onto them).
+ * one 4; bitecs' removeEntity writes every generation's entry of a removed id, so a JS generation
+ * grows to the highest id anyway, and one written at scattered ids may be kept as a dictionary (and
+ * snapshots had to convert it each time). The dense lists stay JS arrays (queries hand them to
+ * systems; bitecs pushes onto them).
  * Ids above the capacity are never made (createSlot refuses them).
  */
 
@@ -41,12 +45,17 @@ interface SparseSetLike {
   has(v: number): boolean;
   reset(): void;
   sort(compare?: (a: number, b: number) => number): void;
+  /** Lean sets only: counts the changes of membership or order (see `typedSparseSet`). */
+  version?: number;
 }
 
 /**
  * Gives bitecs sparse set `set` an Int32Array `sparse` (same members, same order), allocated with
  * `capacity + 1` entries on the set's first member (most queries of a world never hold an entity).
  * `has(v)` reads `dense[sparse[v]] === v`, so stale entries of removed ids need no clearing.
+ * `version` goes up with every change of the members or their order (add, remove, reset, sort, and
+ * `assignSparseSet`; code that writes `dense` directly calls `touchSparseSet`), so a snapshot can tell
+ * a list unchanged since the last one without comparing it.
  */
 function typedSparseSet(set: SparseSetLike, capacity: number): void {
   const dense = set.dense;
@@ -55,23 +64,63 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
   const has = (v: number): boolean => dense[sparse[v]!] === v;
   set.sparse = sparse;
   set.has = has;
+  set.version = 0;
   set.add = (v: number): void => {
     if (has(v)) return;
     if (sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
     sparse[v] = dense.push(v) - 1;
+    set.version!++;
   };
   set.remove = (v: number): void => {
     if (!has(v)) return;
+    set.version!++;
     const index = sparse[v]!;
     const swapped = dense.pop()!;
     if (swapped !== v) { dense[index] = swapped; sparse[swapped] = index; }
   };
-  set.reset = (): void => { dense.length = 0; };
+  set.reset = (): void => { dense.length = 0; set.version!++; };
+  assigners.set(set, (ids: ArrayLike<number>): void => {
+    const n = ids.length;
+    if (n > 0 && sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    const m = Math.min(dense.length, n);
+    for (let i = 0; i < m; i++) dense[i] = ids[i]!;
+    if (dense.length > n) dense.length = n;
+    for (let i = m; i < n; i++) dense.push(ids[i]!);
+    for (let i = 0; i < n; i++) sparse[ids[i]!] = i;
+    set.version!++;
+  });
   set.sort = (compare?: (a: number, b: number) => number): void => {
     dense.sort(compare);
+    set.version!++;
     if (dense.length > 0 && sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
     for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
   };
+}
+
+/** The bulk writer of each typed sparse set (see `assignSparseSet`). */
+const assigners = new WeakMap<object, (ids: ArrayLike<number>) => void>();
+
+/**
+ * Makes `set`, a query's sparse set (or its pending removals') in a world with lean storage, hold
+ * exactly `ids` in that order: its dense list written in place (it stays a packed JS array, the same
+ * object) and its typed sparse array allocated if it was not yet. For restoring a snapshot.
+ * @returns false (nothing done) for a set lean storage did not make.
+ */
+export function assignSparseSet(set: object, ids: ArrayLike<number>): boolean {
+  const assign = assigners.get(set);
+  if (assign === undefined) return false;
+  assign(ids);
+  return true;
+}
+
+/**
+ * Records a change to `set`'s members or order made by writing its `dense` array directly (bulk
+ * births, defragmentation: particles/archetype.ts), so snapshots do not take it for unchanged. No-op
+ * for a set lean storage did not make.
+ */
+export function touchSparseSet(set: object): void {
+  const s = set as { version?: number };
+  if (s.version !== undefined) s.version++;
 }
 
 /** The world's query set: each query registered gets typed sparse arrays before bitecs fills it. */
@@ -157,8 +206,14 @@ export function useLeanEcsStorage(world: object, capacity: number): void {
   if (ctx.entityIndex.aliveCount !== 0 || ctx.entityIndex.dense.length !== 0) throw new Error('useLeanEcsStorage: the world must have no entities yet');
   ctx.entityComponents = new MaskComponentSets(ctx);
   ctx.entityIndex.sparse = new Int32Array(capacity + 1) as never;
-  // The first generation (the first 31 components registered: the core stores) is on every entity.
-  ctx.entityMasks[0] = new Int32Array(capacity + 1);
+  // Every generation typed, those bitecs adds later too (it pushes an empty JS array when a
+  // registration fills a generation's 31 bits).
+  const masks = ctx.entityMasks;
+  for (let g = 0; g < masks.length; g++) masks[g] = new Int32Array(capacity + 1);
+  Object.defineProperty(masks, 'push', {
+    value: (...items: unknown[]): number => Array.prototype.push.apply(masks, items.map(() => new Int32Array(capacity + 1))),
+    enumerable: false,
+  });
   ctx.queries = new LeanQuerySet(capacity, ctx.queries);
 }
 

@@ -1,6 +1,7 @@
 import { $internal, commitRemovals } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { touchSparseSet } from '../lean-ecs.js';
 
 /**
  * Particle archetypes: creating and removing many entities of one fixed component set without
@@ -445,6 +446,7 @@ function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
   let sorted = true;
   for (let i = 1; i < n; i++) if (dense[i]! < dense[i - 1]!) { sorted = false; break; }
   if (sorted) return;
+  touchSparseSet(q); // written directly below: snapshots must not take it for unchanged
   if (n * 8 < maxId) {
     const copy = Int32Array.from(dense).sort();
     for (let i = 0; i < n; i++) { const e = copy[i]!; dense[i] = e; sparse[e] = i; }
@@ -506,6 +508,7 @@ export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out:
       if (pending && r.has(e)) { r.remove(e); continue; }
       if (dense[sparse[e]!] !== e) sparse[e] = dense.push(e) - 1;
     }
+    touchSparseSet(q); // written directly above: snapshots must not take it for unchanged
   }
   if (ecs.entityComponents instanceof Map) {
     const sets = ecs.entityComponents;

@@ -2,7 +2,7 @@ import { $internal, Not, Or, query as bitecsQuery, registerComponent } from 'bit
 import type { PhysicsWorld } from '../world.js';
 import { externalWorldStates } from './world-state.js';
 import { describe } from '../validate.js';
-import { hasMaskComponentSets } from '../lean-ecs.js';
+import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
 
 /**
  * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
@@ -12,7 +12,12 @@ import { hasMaskComponentSets } from '../lean-ecs.js';
  * to its last non-zero element only (for a per-entity store that is at most the highest live id; the
  * tail is all zeros and restore writes zeros there), a component store no live entity has is stored as
  * its type and length only, and bitecs' query lists that equal an earlier list (most queries hold the
- * same entities in the same order) as a reference to it. `restore` writes into the world's own arrays
+ * same entities in the same order) as a reference to it (a query list neither of whose sets changed
+ * since the world's last snapshot found them equal is not compared again: lean-ecs.ts counts each
+ * set's changes). Component stores are scanned for their last non-zero element from the highest entity
+ * id down (their entries above it are zero). Scratch arrays (the broadphase grid, see SCRATCH) are
+ * stored as their type only. The format is unchanged by these: a version 2 snapshot written before
+ * them restores as it did. `restore` writes into the world's own arrays
  * where their type and length match (systems and renderers keep them), so it allocates no big array
  * in a world that already has them.
  *
@@ -33,6 +38,15 @@ import { hasMaskComponentSets } from '../lean-ecs.js';
 
 /** Fields of the world object that are code or measurements, not state; everything else is captured. */
 const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex']);
+
+/**
+ * Typed arrays of the world that are scratch: written in full before they are read, within the step
+ * that reads them, so they carry nothing from one step to the next (the broadphase's spatial-hash
+ * grid, rebuilt by every broadphaseSystem before its pair search: collision/broadphase.ts). A snapshot
+ * keeps their type only and restore leaves the target world's own arrays as they are (the
+ * broadphase grows them when too small). About 4 MB of a 100,000-ball world's 10.4 MB.
+ */
+const SCRATCH = new Set(['bucketStart', 'sorted', 'cellX', 'cellY', 'cellZ', 'bucketOf', 'oversized', 'candidates'].map((k) => `world.collision.grid.${k}`));
 
 /** A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk). */
 export interface WorldSnapshot {
@@ -68,25 +82,30 @@ const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) =>
 };
 
 /**
- * Length of `a` up to its last element whose bits are not all zero (so -0 and NaN count as values).
- * Scans 32-bit words where the array's bytes allow it (one integer compare per word, no division).
+ * Length of `a`'s first `end` elements up to the last one whose bits are not all zero (so -0 and NaN
+ * count as values). Scans 32-bit words where the array's bytes allow it, sixteen at a time (one OR of
+ * sixteen words and one compare: about twice as fast as a compare a word on the all-zero stores of a
+ * 2D world's z components, forces and torques).
  */
-function usedLength(a: TypedArray): number {
+function usedLength(a: TypedArray, end: number): number {
   const bytes = a.BYTES_PER_ELEMENT;
   if (bytes >= 4 && (a.byteOffset & 3) === 0) {
-    const words = new Int32Array(a.buffer, a.byteOffset, (a.length * bytes) >> 2);
-    let w = words.length;
-    while (w > 0 && words[w - 1] === 0) w--;
+    const v = new Int32Array(a.buffer, a.byteOffset, (end * bytes) >> 2);
+    let w = v.length;
+    while (w >= 16 && (v[w - 1]! | v[w - 2]! | v[w - 3]! | v[w - 4]! | v[w - 5]! | v[w - 6]! | v[w - 7]! | v[w - 8]! |
+      v[w - 9]! | v[w - 10]! | v[w - 11]! | v[w - 12]! | v[w - 13]! | v[w - 14]! | v[w - 15]! | v[w - 16]!) === 0) w -= 16;
+    while (w > 0 && v[w - 1] === 0) w--;
     return Math.ceil((w * 4) / bytes);
   }
-  let n = a.length;
+  let n = end;
   while (n > 0 && a[n - 1] === 0) n--;
   return n;
 }
 
 /**
  * Whether elements 1 .. n-1 of `a` have the same bits (and are not NaN, whose payload a fill could
- * change). Compares 32-bit words; arrays of 1- and 2-byte elements are not checked (false).
+ * change). Compares 32-bit words, XOR-ed against the pattern and OR-ed four elements at a time;
+ * arrays of 1- and 2-byte elements are not checked (false).
  */
 function uniformFrom1(a: TypedArray, n: number): boolean {
   const bytes = a.BYTES_PER_ELEMENT;
@@ -96,15 +115,22 @@ function uniformFrom1(a: TypedArray, n: number): boolean {
   const words = new Int32Array(a.buffer, a.byteOffset, (n * bytes) >> 2);
   if (bytes === 4) {
     const w = words[1]!;
-    for (let i = 2; i < n; i++) if (words[i] !== w) return false;
+    let i = 2;
+    for (; i + 4 <= n; i += 4) if (((words[i]! ^ w) | (words[i + 1]! ^ w) | (words[i + 2]! ^ w) | (words[i + 3]! ^ w)) !== 0) return false;
+    for (; i < n; i++) if (words[i] !== w) return false;
     return true;
   }
-  const lo = words[2]!, hi = words[3]!;
-  for (let i = 4; i < 2 * n; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
+  const lo = words[2]!, hi = words[3]!, m = 2 * n;
+  let i = 4;
+  for (; i + 8 <= m; i += 8) {
+    if (((words[i]! ^ lo) | (words[i + 1]! ^ hi) | (words[i + 2]! ^ lo) | (words[i + 3]! ^ hi) |
+      (words[i + 4]! ^ lo) | (words[i + 5]! ^ hi) | (words[i + 6]! ^ lo) | (words[i + 7]! ^ hi)) !== 0) return false;
+  }
+  for (; i < m; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
   return true;
 }
 
-interface PendingCopy { readonly src: TypedArray; readonly n: number; readonly offset: number }
+interface PendingCopy { readonly src: TypedArray | readonly number[]; readonly n: number; readonly offset: number; readonly type: string }
 
 class Writer {
   private readonly pending: PendingCopy[] = [];
@@ -113,19 +139,47 @@ class Writer {
   /** Stores no entity has: their arrays' contents are never read, so only their type and length are kept. */
   unused: ReadonlySet<object> = new Set();
   /**
+   * @param storeLength capacity + 1: a component store's arrays are k times as long (k entries an entity).
+   * @param maxId the highest entity id the world has made: a component's entries above it are zero (no
+   *   entity ever had them; restore zeroes what it lowers), so the scan for trailing zeros starts there.
+   * @param components names of the stores of world.components that are registered bitecs components
+   *   (a store that is not may hold values anywhere, and is scanned in full).
+   */
+  constructor(private readonly storeLength: number, private readonly maxId: number, private readonly components: ReadonlySet<string>) {}
+  /**
    * Encodes a typed array: its type, full length `len`, and its first `n` elements (up to the last
    * non-zero one), copied into the snapshot's buffer at byte offset `o` by `finish`.
+   * @param path where the array is: arrays of registered component stores (`world.components.*`) are scanned from the highest id down.
    */
-  array(a: TypedArray): Encoded {
-    const used = usedLength(a);
+  array(a: TypedArray, path: string): Encoded {
+    const k = a.length / this.storeLength;
+    const end = Number.isInteger(k) && k >= 1 && path.startsWith('world.components.') && this.components.has(path.split('.')[2]!)
+      ? Math.min(a.length, (this.maxId + 1) * k) : a.length;
+    return this.arrayTo(a, end);
+  }
+  /** `array` for an array whose entries from `end` on are known to be zero. */
+  arrayTo(a: TypedArray, end: number): Encoded {
+    const used = usedLength(a, end);
     // A store whose entities all hold one value (materials, masses of equal bodies) keeps two elements:
     // index 0 (no entity) and the value, repeated up to `rep` by restore.
     const rep = used > 3 && uniformFrom1(a, used) ? used : 0;
     const n = rep > 0 ? 2 : used;
+    const type = a.constructor.name;
+    const offset = this.place(n * a.BYTES_PER_ELEMENT);
+    this.pending.push({ src: a, n, offset, type });
+    return rep > 0 ? { $t: type, o: offset, n, len: a.length, rep } : { $t: type, o: offset, n, len: a.length };
+  }
+  /** Encodes a JS list of entity ids (no zeros: ids start at 1) as an Int32Array of its length, copied by `finish`. */
+  ids(list: readonly number[]): Encoded {
+    const n = list.length;
+    const offset = this.place(4 * n);
+    this.pending.push({ src: list, n, offset, type: 'Int32Array' });
+    return { $t: 'Int32Array', o: offset, n, len: n };
+  }
+  private place(byteLength: number): number {
     const offset = (this.bytes + 7) & ~7;
-    this.bytes = offset + n * a.BYTES_PER_ELEMENT;
-    this.pending.push({ src: a, n, offset });
-    return rep > 0 ? { $t: a.constructor.name, o: offset, n, len: a.length, rep } : { $t: a.constructor.name, o: offset, n, len: a.length };
+    this.bytes = offset + byteLength;
+    return offset;
   }
   /**
    * The snapshot's one buffer with every encoded array copied in (call once, right after encoding):
@@ -133,10 +187,12 @@ class Writer {
    */
   finish(reuse?: ArrayBuffer): ArrayBuffer {
     const buf = reuse !== undefined && reuse.byteLength >= this.bytes ? reuse : new ArrayBuffer(this.bytes);
-    for (const { src, n, offset } of this.pending) {
+    for (const { src, n, offset, type } of this.pending) {
       if (n === 0) continue;
-      const Ctor = src.constructor as new (b: ArrayBuffer, o: number, n: number) => TypedArray;
-      new Ctor(buf, offset, n).set((n === src.length ? src : src.subarray(0, n)) as never);
+      const Ctor = TYPED[type] as unknown as new (b: ArrayBuffer, o: number, n: number) => TypedArray;
+      const out = new Ctor(buf, offset, n);
+      if (Array.isArray(src)) out.set(src);
+      else { const t = src as TypedArray; out.set((n === t.length ? t : t.subarray(0, n)) as never); }
     }
     return buf;
   }
@@ -150,7 +206,8 @@ class Writer {
     if (typeof v !== 'object') throw new TypeError(`snapshot: cannot capture ${path} (a ${typeof v}); state must be data`);
     if (ArrayBuffer.isView(v)) {
       if (!(v.constructor.name in TYPED)) throw new TypeError(`snapshot: cannot capture ${path} (a ${v.constructor.name})`);
-      return this.array(v as TypedArray);
+      if (SCRATCH.has(path)) return { $t: 'scratch', type: v.constructor.name };
+      return this.array(v as TypedArray, path);
     }
     if (this.unused.has(v)) {
       const out: Record<string, Encoded> = {};
@@ -242,6 +299,7 @@ class Reader {
     if (t === 'u') return undefined;
     if (t in TYPED) return this.full(e, path);
     if (t === 'unused') return new TYPED[e.type as string]!(e.n as number);
+    if (t === 'scratch') return new TYPED[e.type as string]!(0);
     const v = e.v as Encoded;
     if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
     if (t === 's') return new Set((v as Encoded[]).map((x) => this.fresh(x, path)));
@@ -261,6 +319,8 @@ class Reader {
     const cur = target[key];
     if (isTagged(e)) {
       const t = e.$t as string;
+      // Scratch (see SCRATCH): the target's own array stays.
+      if (t === 'scratch' && cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur)) return;
       if (t === 'unused') {
         // No entity has the store's component: its contents are never read. A store the world has
         // allocated stays allocated (zeroed, as if new); one it lacks gets the snapshot's allocation.
@@ -372,34 +432,86 @@ function bitIndex(bitflag: number): number {
 /**
  * Whether two id lists hold the same ids in the same order. Two copies, each with one pair of array
  * kinds, so the element reads stay monomorphic (a shared one mixing JS and typed arrays ran several
- * times slower on the 100,000-entity lists).
+ * times slower on the 100,000-entity lists); four ids a step, XOR-ed and OR-ed (ids are small integers).
  */
 function sameLists(a: readonly number[], b: readonly number[]): boolean {
-  if (a.length !== b.length) return false;
-  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  const n = a.length;
+  if (n !== b.length) return false;
+  let i = 0;
+  for (; i + 4 <= n; i += 4) if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
+  for (; i < n; i++) if (a[i] !== b[i]) return false;
   return true;
 }
 function sameAsStored(a: readonly number[], b: Int32Array): boolean {
-  if (a.length !== b.length) return false;
-  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  const n = a.length;
+  if (n !== b.length) return false;
+  let i = 0;
+  for (; i + 4 <= n; i += 4) if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
+  for (; i < n; i++) if (a[i] !== b[i]) return false;
   return true;
 }
 
 /**
+ * What the last snapshot of a world found about one of its query sets (lean storage: sets with a
+ * `version`, see lean-ecs.ts): its version and length then, and the earlier set of that snapshot it
+ * was equal to (null: none) with that set's version and length then.
+ */
+interface ListMemo { version: number; length: number; same: object | null; sameVersion: number; sameLength: number }
+const listMemos = new WeakMap<PhysicsWorld, Map<object, ListMemo>>();
+
+/**
  * Encodes bitecs id lists, each once: a list equal to one encoded before (most queries hold the same
  * entities in the same order) becomes a reference `{ $t: 'same', i }` to that one's position in `lists`.
+ * Finding that costs a comparison of the two lists, except where neither set has changed (same
+ * version and length, lean-ecs.ts) since the world's last snapshot found them equal.
  */
 class IdLists {
-  private readonly done: Array<{ ids: readonly number[]; index: number }> = [];
+  private readonly done: Array<{ ids: readonly number[]; index: number; set: object | null }> = [];
+  /** Index in `lists` of each set encoded by this snapshot. */
+  private readonly indexOf = new Map<object, number>();
+  private readonly memos: Map<object, ListMemo>;
   readonly lists: Encoded[] = [];
-  constructor(private readonly w: Writer) {}
-  encode(ids: ArrayLike<number>): Encoded {
+  constructor(private readonly w: Writer, world: PhysicsWorld) {
+    let m = listMemos.get(world);
+    if (m === undefined) { m = new Map(); listMemos.set(world, m); }
+    this.memos = m;
+  }
+  /** Encodes the members of `set` (a query's sparse set, or null for a list of no set). */
+  encode(ids: ArrayLike<number>, set: object | null): Encoded {
     if (ids.length === 0) return { $t: 'ids', v: [] };
     const js = Array.isArray(ids) ? ids as readonly number[] : null; // bitecs' buffered queries hold typed lists
-    if (js !== null) for (const d of this.done) if (sameLists(d.ids, js)) return { $t: 'same', i: d.index };
+    const version = (set as { version?: number } | null)?.version;
+    if (js !== null && set !== null && version !== undefined) {
+      const m = this.memos.get(set);
+      if (m !== undefined && m.same !== null && m.version === version && m.length === js.length) {
+        const same = m.same as { version?: number; dense: ArrayLike<number> };
+        const i = this.indexOf.get(same);
+        if (i !== undefined && same.version === m.sameVersion && same.dense.length === m.sameLength) {
+          this.indexOf.set(set, i);
+          return { $t: 'same', i };
+        }
+      }
+    }
+    if (js !== null) {
+      for (const d of this.done) {
+        if (!sameLists(d.ids, js)) continue;
+        if (set !== null && version !== undefined) {
+          const other = d.set as { version?: number } | null;
+          this.memos.set(set, other !== null && other.version !== undefined
+            ? { version, length: js.length, same: other, sameVersion: other.version, sameLength: d.ids.length }
+            : { version, length: js.length, same: null, sameVersion: 0, sameLength: 0 });
+          this.indexOf.set(set, d.index);
+        }
+        return { $t: 'same', i: d.index };
+      }
+    }
     const index = this.lists.length;
-    this.lists.push(this.w.array(toInt32(ids)));
-    if (js !== null) this.done.push({ ids: js, index });
+    this.lists.push(js !== null ? this.w.ids(js) : this.w.arrayTo(toInt32(ids), ids.length));
+    if (js !== null) this.done.push({ ids: js, index, set });
+    if (set !== null && version !== undefined) {
+      this.indexOf.set(set, index);
+      this.memos.set(set, { version, length: ids.length, same: null, sameVersion: 0, sameLength: 0 });
+    }
     return { $t: 'same', i: index };
   }
 }
@@ -436,20 +548,22 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
       while (((src[e] ?? 0) & unknown) === 0) e++;
       throw new Error(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
     }
-    // Typed masks (lean-ecs.ts) are stored as they are, up to their last set entry; JS ones as Int32Array.
-    let m: Int32Array;
-    if (src instanceof Int32Array) m = src;
-    else { m = new Int32Array(n); for (let e = 0; e < n; e++) m[e] = src[e] ?? 0; }
-    masks.push(w.array(m));
+    // Typed masks (lean-ecs.ts) are stored as they are, up to their last set entry (ids above maxId
+    // have none); JS ones as Int32Array.
+    if (src instanceof Int32Array) { masks.push(w.arrayTo(src, n)); continue; }
+    const m = new Int32Array(n);
+    for (let e = 0; e < n; e++) m[e] = src[e] ?? 0;
+    masks.push(w.arrayTo(m, n));
   }
-  const lists = new IdLists(w);
+  const lists = new IdLists(w, world);
   const queries: Encoded[] = [];
-  const dense = lists.encode(ix.dense);
   for (const q of ctx.queries) {
     const d = describeQuery(q, names);
     if (d === null) continue;
-    queries.push({ $t: 'o', v: { and: d.and, not: d.not, or: d.or, dense: lists.encode(q.dense), toRemove: lists.encode(q.toRemove.dense) } });
+    queries.push({ $t: 'o', v: { and: d.and, not: d.not, or: d.or, dense: lists.encode(q.dense, q), toRemove: lists.encode(q.toRemove.dense, q.toRemove) } });
   }
+  // The entity index has no version: compared with the query lists (it usually equals a query's).
+  const dense = lists.encode(ix.dense, null);
   return { aliveCount: ix.aliveCount, maxId, dense, layout, masks, queries, lists: lists.lists };
 }
 
@@ -575,10 +689,11 @@ function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
 /** Makes a bitecs sparse set hold exactly `ids`, in that order (untouched if it already does). */
 function setContent(set: SparseSetLike, ids: Int32Array): void {
   const dense = set.dense;
+  if (Array.isArray(dense) && sameAsStored(dense as number[], ids)) return;
+  // Lean storage (lean-ecs.ts): written in bulk, its typed sparse array allocated if it was not yet.
+  if (assignSparseSet(set, ids)) return;
   const sparse = (set as unknown as { sparse: ArrayLike<number> & { [i: number]: number } }).sparse;
-  // A typed sparse array not allocated yet (lean-ecs.ts): let `add` allocate it.
-  if (Array.isArray(dense) && !(ArrayBuffer.isView(sparse) && sparse.length === 0 && ids.length > 0)) {
-    if (sameAsStored(dense as number[], ids)) return;
+  if (Array.isArray(dense)) {
     writeInPlace(dense, ids, ids.length);
     for (let i = 0; i < ids.length; i++) sparse[ids[i]!] = i;
     return;
@@ -598,7 +713,11 @@ function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
   return q.orComponents.length === 0 || q.orComponents.some(has);
 }
 
-/** The component stores no live entity has (one pass OR-ing the entities' component masks). */
+/**
+ * The component stores no live entity has (one pass OR-ing the entities' component masks). A typed
+ * mask generation is OR-ed in id order up to the highest id, four entries a step: removal clears a
+ * slot's masks, so a free slot adds nothing (and a stale bit could only keep a store, never drop one).
+ */
 function unusedStores(world: PhysicsWorld): Set<object> {
   const ctx = internals(world);
   const ix = ctx.entityIndex;
@@ -606,7 +725,14 @@ function unusedStores(world: PhysicsWorld): Set<object> {
   for (let g = 0; g < union.length; g++) {
     const m = ctx.entityMasks[g]!;
     let u = 0;
-    for (let i = 0; i < ix.aliveCount; i++) u |= m[ix.dense[i]!] ?? 0;
+    if (m instanceof Int32Array) {
+      const n = Math.min(m.length, ix.maxId + 1);
+      let e = 0;
+      for (; e + 4 <= n; e += 4) u |= m[e]! | m[e + 1]! | m[e + 2]! | m[e + 3]!;
+      for (; e < n; e++) u |= m[e]!;
+    } else {
+      for (let i = 0; i < ix.aliveCount; i++) u |= m[ix.dense[i]!] ?? 0;
+    }
     union[g] = u;
   }
   const unused = new Set<object>();
@@ -636,7 +762,10 @@ export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnaps
   if (reuse !== undefined && !(old instanceof ArrayBuffer && reuse.buffers.length === 1)) {
     throw new TypeError(`snapshot: reuse must be a snapshot returned by snapshot(world), got ${describe(reuse)}`);
   }
-  const w = new Writer();
+  const ctx = internals(world);
+  const registered = new Set<string>();
+  for (const [name, store] of Object.entries(world.components)) if (ctx.componentMap.has(store as object)) registered.add(name);
+  const w = new Writer(world.capacity + 1, ctx.entityIndex.maxId, registered);
   w.unused = unusedStores(world);
   const state = w.object(world as unknown as Record<string, unknown>, 'world', NOT_STATE);
   const external: Record<string, Encoded> = {};
