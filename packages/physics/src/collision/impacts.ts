@@ -136,10 +136,24 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const h = world.h;
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
   // First, while slot 3 still holds each body's latest impact time: which rows stay active, into
-  // the spent order array (1 active, 0 not).
+  // the spent order array (1 active, 0 not). Slot 4 of a body's row: 1 clean, 0 not (the static world
+  // is clean), marked here as rows are found active; the corrections of unclean bodies are dropped
+  // only after this pass (the sweeps read them). A row whose bodies are both unclean already changes
+  // nothing below, so it is not swept (marked 1); a row that carried load last step and starts
+  // touching is active without a sweep (its bodies were loaded, never impacted: ballsMeet and
+  // faceMeets return true at once). In a resting pile that skips nearly every sweep.
   const Q = IMPACT_STRIDE;
   const act = cs.impactOrder;
+  for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
+  const load = buf.normalImpulse;
   for (let i = 0; i < n; i++) {
+    if (load[i]! > 0 && S0[i]! <= 0) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
+  }
+  imp[4] = 1;
+  for (let i = 0; i < n; i++) {
+    if (act[i] === 1) continue;
+    const ia = IA[i]!, ib = IB[i]!;
+    if (imp[ib * Q + 4] === 0 && (ia === 0 || imp[ia * Q + 4] === 0)) { act[i] = 1; continue; }
     const kind = K[i]!;
     let active: boolean;
     if (E[i]! > 0 && key[i] === -1) {
@@ -153,12 +167,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     } else {
       active = faceMeets(world, buf, i, S);
     }
-    act[i] = active ? 1 : 0;
+    if (active) { act[i] = 1; if (ia !== 0) imp[ia * Q + 4] = 0; imp[ib * Q + 4] = 0; }
   }
-  // Slot 4 of a body's row: 1 clean, 0 not (the static world is clean). An unclean body loses its
-  // corrections (the substeps move it from where it was at the start of the step).
-  for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
-  for (let i = 0; i < n; i++) if (act[i] === 1) { unclean(imp, IA[i]!); unclean(imp, IB[i]!); }
+  // An unclean body loses its corrections (the substeps move it from where it was at the start of the step).
+  for (let k = 1; k < count; k++) if (imp[k * Q + 4] === 0) unclean(imp, k);
   // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
   // of that row could close within the step: the substeps would push it. Repeated until nothing changes.
   for (let changed = true; changed;) {
@@ -179,8 +191,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     // The substeps move a body from where it was at the start of the step and add its correction at
     // the end, so every row's start separation takes the corrections in: the substeps' gap at the end
     // of the step is then the true one, also between a clean body and an unclean one.
+    const ua = IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0, ub = imp[IB[i]! * Q + 4] === 0;
+    if (ub && (ua || IA[i] === 0)) continue; // unclean bodies and the static world have no corrections
     S0[i] = S0[i]! + correctionGap(imp, buf, i);
-    if ((IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0) || imp[IB[i]! * Q + 4] === 0) continue;
+    if (ua || ub) continue;
     if (E[i]! > 0 && key[i] === -1) {
       // Impacted rows between clean bodies leave the soft substeps.
       NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;

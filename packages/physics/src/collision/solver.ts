@@ -397,6 +397,9 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, MAXN = buf.maxNormalImpulse;
   const SA = buf.stampA, SB = buf.stampB;
   const pN = prev.normalImpulse, p1 = prev.tangentImpulse1, p2 = prev.tangentImpulse2;
+  const pK = prev.kind, pA = prev.a, pB = prev.b, pF = prev.feature, pSA = prev.stampA, pSB = prev.stampB;
+  const prevCount = cache.size === 0 ? 0 : prev.count;
+  let next = 0;
   const im = is2D ? 5 : 9, iI = is2D ? 6 : 10;
 
   for (let i = 0; i < n; i++) {
@@ -463,8 +466,13 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
     SA[i] = sA;
     SB[i] = sB;
     MAXN[i] = 0;
-    const j = findWarmStart(cache, kind, a, b, f, sA, sB);
+    // The contacts come in much the same order every step: the row after last step's previous match
+    // is tried first (one comparison, read in order) before the hash table (the same row: keys are unique).
+    let j = next;
+    if (j < prevCount && pK[j] === kind && pA[j] === a && pB[j] === b && pF[j] === f) j = pSA[j] === sA && pSB[j] === sB ? j : -1;
+    else j = findWarmStart(cache, kind, a, b, f, sA, sB);
     if (j >= 0) {
+      next = j + 1;
       LN[i] = pN[j]!; L1[i] = p1[j]!; L2[i] = p2[j]!;
     } else {
       LN[i] = 0; L1[i] = 0; L2[i] = 0;
@@ -496,11 +504,12 @@ function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
     RV[i] = rv;
     // A row the impact stage bounced and that now separates keeps the approach speed of its impact.
     if (IMP[i]! > 0 && rv >= 0) continue;
-    const a = A[i]!, b = B[i]!;
     const gap = S0[i]!;
+    if (!(rv < 0 && gap > 0)) { IV[i] = rv; continue; } // no gap to fall across: -sqrt(rv^2) = rv
+    const a = A[i]!, b = B[i]!;
     const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
-    const v2 = gap > 0 ? rv * rv - 2 * an * gap : rv * rv;
-    IV[i] = rv < 0 && v2 > 0 ? -Math.sqrt(v2) : rv;
+    const v2 = rv * rv - 2 * an * gap;
+    IV[i] = v2 > 0 ? -Math.sqrt(v2) : rv;
   }
 }
 
