@@ -98,7 +98,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
     const mA = sb[a + 9]!, mB = sb[b + 9]!;
-    buf.iso[i] = isotropic(T, ta) && isotropic(T, tb) ? 1 : 0;
+    const iso = isotropic(T, ta) && isotropic(T, tb);
+    buf.iso[i] = iso ? 1 : 0;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     const t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
@@ -119,7 +120,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
         const b = o + 6 * d, bi = b + INV;
         J[b] = cax; J[b + 1] = cay; J[b + 2] = caz; J[b + 3] = cbx; J[b + 4] = cby; J[b + 5] = cbz;
-        J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz;
+        if (!iso) { J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz; }
         const k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
         const eff = k0 > 0 ? 1 / k0 : 0;
         if (d === 0) buf.mn[q] = eff; else if (d === 1) buf.mt1[q] = eff; else buf.mt2[q] = eff;
@@ -175,21 +176,23 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
 
 /**
  * Applies impulse lambda along direction u (d: 0 n, 1 t1, 2 t2) at point q: -lambda u to A, +lambda u
- * to B, the angular parts from the point's precomputed I^-1 (r x u). Body row 0 (the static world) is
- * never written.
+ * to B, the angular parts from the point's precomputed I^-1 (r x u), or for an isotropic manifold
+ * (`iA`, `iB` >= 0) i (r x u) from its crosses. Body row 0 (the static world) is never written.
  */
-function apply(sb: Float64Array, J: Float32Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number): void {
-  const o = JAC * q + INV + 6 * d;
+function apply(sb: Float64Array, J: Float32Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number, iA: number, iB: number): void {
+  const c = JAC * q + 6 * d, o = c + INV, iso = iA >= 0;
   if (ka > 0) {
     const a = 12 * ka, m = sb[a + 9]! * lam;
     sb[a] = sb[a]! - m * ux; sb[a + 1] = sb[a + 1]! - m * uy; sb[a + 2] = sb[a + 2]! - m * uz;
-    sb[a + 3] = sb[a + 3]! - lam * J[o]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 1]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 2]!;
+    if (iso) { const g = iA * lam; sb[a + 3] = sb[a + 3]! - g * J[c]!; sb[a + 4] = sb[a + 4]! - g * J[c + 1]!; sb[a + 5] = sb[a + 5]! - g * J[c + 2]!; }
+    else { sb[a + 3] = sb[a + 3]! - lam * J[o]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 1]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 2]!; }
     sb[a + 11] = 1;
   }
   if (kb > 0) {
     const b = 12 * kb, m = sb[b + 9]! * lam;
     sb[b] = sb[b]! + m * ux; sb[b + 1] = sb[b + 1]! + m * uy; sb[b + 2] = sb[b + 2]! + m * uz;
-    sb[b + 3] = sb[b + 3]! + lam * J[o + 3]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 4]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 5]!;
+    if (iso) { const g = iB * lam; sb[b + 3] = sb[b + 3]! + g * J[c + 3]!; sb[b + 4] = sb[b + 4]! + g * J[c + 4]!; sb[b + 5] = sb[b + 5]! + g * J[c + 5]!; }
+    else { sb[b + 3] = sb[b + 3]! + lam * J[o + 3]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 4]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 5]!; }
     sb[b + 11] = 1;
   }
 }
@@ -206,19 +209,38 @@ function relativeSpeed(sb: Float64Array, J: Float32Array, a: number, b: number, 
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians;
+  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians, T = st.invInertia;
   const LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2;
   for (let i = 0; i < buf.count; i++) {
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
     const mA = sb[a + 9]!, mB = sb[b + 9]!;
+    const iso = buf.iso[i] === 1, iA = iso ? T[6 * ka]! : 0, iB = iso ? T[6 * kb]! : 0;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k, ln = LN[q]!, l1 = LT1[q]!, l2 = LT2[q]!;
       if (ln === 0 && l1 === 0 && l2 === 0) continue;
       const o = JAC * q;
       // Linear impulse P = ln n + l1 t1 + l2 t2; angular: the sum of lambda I^-1 (r x u) over the three directions.
       const px = ln * nx + l1 * t1x + l2 * t2x, py = ln * ny + l1 * t1y + l2 * t2y, pz = ln * nz + l1 * t1z + l2 * t2z;
+      if (iso) {
+        // I^-1 = i 1: the angular impulses are i sum(lambda r x u), from the crosses.
+        if (ka > 0) {
+          sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
+          sb[a + 3] = sb[a + 3]! - iA * (ln * J[o]! + l1 * J[o + 6]! + l2 * J[o + 12]!);
+          sb[a + 4] = sb[a + 4]! - iA * (ln * J[o + 1]! + l1 * J[o + 7]! + l2 * J[o + 13]!);
+          sb[a + 5] = sb[a + 5]! - iA * (ln * J[o + 2]! + l1 * J[o + 8]! + l2 * J[o + 14]!);
+          sb[a + 11] = 1;
+        }
+        if (kb > 0) {
+          sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
+          sb[b + 3] = sb[b + 3]! + iB * (ln * J[o + 3]! + l1 * J[o + 9]! + l2 * J[o + 15]!);
+          sb[b + 4] = sb[b + 4]! + iB * (ln * J[o + 4]! + l1 * J[o + 10]! + l2 * J[o + 16]!);
+          sb[b + 5] = sb[b + 5]! + iB * (ln * J[o + 5]! + l1 * J[o + 11]! + l2 * J[o + 17]!);
+          sb[b + 11] = 1;
+        }
+        continue;
+      }
       if (ka > 0) {
         sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
         sb[a + 3] = sb[a + 3]! - ln * J[o + 18]! - l1 * J[o + 24]! - l2 * J[o + 30]!;
@@ -371,13 +393,15 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians, T = st.invInertia;
   const threshold = cs.settings.restitutionThreshold;
   for (let pass = 0; pass < 4; pass++) {
     for (let i = 0; i < buf.count; i++) {
       const e = buf.restitution[i]!;
       if (e === 0) continue;
       const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
+      // apply's isotropic factors (-1: read the stored products).
+      const iA = buf.iso[i] === 1 ? T[6 * ka]! : -1, iB = buf.iso[i] === 1 ? T[6 * kb]! : -1;
       const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
@@ -387,7 +411,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         const lam = Math.max(old - buf.mn[q]! * (vn + e * buf.vn0[q]!), 0);
         const dl = lam - old;
         buf.ln[q] = lam;
-        if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz);
+        if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz, iA, iB);
       }
     }
   }
