@@ -43,7 +43,7 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 }
 
 /** Digits of the key sort's first (most significant) pass: its buckets, and the bits it takes. */
-export const SORT_RADIX_BITS = 11, SORT_RADIX = 1 << SORT_RADIX_BITS;
+export const SORT_RADIX_BITS = 16, SORT_RADIX = 1 << SORT_RADIX_BITS;
 /** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
 export const BUCKET_RADIX = 256;
 /** Buckets of at most this many keys are sorted by insertion, larger ones by radix passes. */
@@ -71,8 +71,8 @@ export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Arra
   const x0 = P[0]!, y0 = P[1]!, z0 = P[2]!, scale = P[3]!, top = P[4]!, is3D = P[5] === 3;
   const n = P[6]!, parts = P[7]!, topShift = P[8]!;
   for (let part = lo; part < hi; part++) {
-    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 2048;
-    hist.fill(0, base, base + 2048);
+    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 65536;
+    hist.fill(0, base, base + 65536);
     for (let i = b0; i < b1; i++) {
       let kx = Math.floor((x[i]! - x0) * scale), ky = Math.floor((y[i]! - y0) * scale);
       kx = kx > 0 ? (kx < top ? kx : top) : 0; ky = ky > 0 ? (ky < top ? ky : top) : 0;
@@ -270,7 +270,7 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
   const key = A[0] as Uint32Array, key2 = A[1] as Uint32Array, idx2 = A[2] as Int32Array, offset = A[3] as Int32Array;
   const n = P[6]!, parts = P[7]!, topShift = P[8]!;
   for (let part = lo; part < hi; part++) {
-    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 2048;
+    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 65536;
     for (let i = b0; i < b1; i++) {
       const k = key[i]!, d = offset[base + (k >>> topShift)]!++;
       key2[d] = k; idx2[d] = i;

@@ -24,7 +24,8 @@ import { CONTROL } from '../threads/worker-main.js';
  * (Morton-ordered trees); Aarseth, Gravitational N-Body Simulations (2003) ch. 2 (Plummer softening).
  *
  * Build. The bodies are sorted by Morton (Z-order) key in the root cube (16 bits per axis in 2D, 10
- * in 3D) with a stable radix sort and copied into that order, so every cell holds a contiguous range
+ * in 3D) into (key, input index) order, the order of a stable sort (mortonSort: buckets of the first
+ * SORT_RADIX_BITS bits, then each bucket on its own), and copied into that order, so every cell holds a contiguous range
  * of bodies and nearby bodies sit near each other in memory. Cells are split into their 4 (8)
  * quadrants down to a leaf of at most LEAF_SIZE bodies: by the key digits down to the key resolution,
  * below it by a stable counting sort on the positions. A cell smaller than MIN_CELL_FRACTION of the
@@ -73,11 +74,16 @@ import { CONTROL } from '../threads/worker-main.js';
  * expansion. As theta -> 0 every pair is summed directly and the result is the direct sum, to rounding.
  * (A cell of at most 8 bodies sums its self-interaction directly.)
  *
- * Threads. The build runs on one thread; the walk and the downward pass (barnes-hut-walk.ts) run on
- * the world's threads, the bodies cut into one contiguous part of slots a thread, each part
- * replaying the walk for its own bodies in the one-thread order, so every field is identical to
- * the bit whatever the number of threads. The cuts follow the work each part did at the previous
- * evaluation (counted, not timed), so the parts take about equally long.
+ * Threads. In a world with threads > 1 (each loop only when long enough, and while an adaptive pool
+ * finds the threads faster): the gather with the bounding box, the sort (keys and buckets by ranges
+ * of bodies, then runs of buckets a thread, which also put their bodies into tree order) and the
+ * moments (whole subtrees a thread; the few nodes above them after, on one thread) run on the
+ * threads; the split into cells, cheap once the keys are sorted, stays on one. The walk and the
+ * downward pass (barnes-hut-walk.ts, which also adds m g to the bodies' forces) run with the bodies
+ * cut into one contiguous part of slots a thread, each part replaying the walk for its own bodies
+ * in the one-thread order. Every result is therefore identical to the bit whatever the number of
+ * threads. The walk's cuts follow the work each part did at the previous evaluation (counted, not
+ * timed), so the parts take about equally long.
  *
  * All arrays live on the tree (one per world), grown by doubling and reused: no allocation per body
  * or per step once they have grown.
@@ -420,7 +426,13 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
       // cell's keys at every level; the same counts).
       const shift = dims * (bits - 1 - depth), mask = kids - 1;
       let from = lo;
-      for (let q = 0; q < kids; q++) {
+      cnt.fill(0, 0, 8);
+      if (hi - lo <= 32) {
+        // A small cell: one pass over its keys costs less than the searches.
+        for (let s = lo; s < hi; s++) cnt[(key[s]! >>> shift) & mask]!++;
+        from = hi;
+      }
+      for (let q = 0; q < kids && from < hi; q++) {
         let a = from, b = hi;
         while (a < b) {
           const mid = (a + b) >>> 1;
@@ -745,8 +757,9 @@ function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Gathere
  * Builds the world's tree over the bodies `ents` (entity ids) from their Position and Mass, and
  * evaluates the field at all of them with the world's G, softening and opening angle. Returns the
  * tree: the field of entity ents[t.perm[s]] is (t.ax[s], t.ay[s], t.az[s]), m/s^2. In a world with
- * threads > 1, the gathering, the Morton keys and the evaluation run on its threads (the sort and
- * the split on one); the tree and the fields are the same as on one thread, to the bit.
+ * threads > 1, the gathering, the sort, the moments and the evaluation run on its threads (the
+ * split into cells on one; see the file's header); the tree and the fields are the same as on one
+ * thread, to the bit.
  */
 export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): GravityTree {
   return worldTreeFieldsWith(world, ents, false);

@@ -8,12 +8,36 @@
  * Policy per loop (a `site`): the first three calls run parallel (the first is not timed: it may pay
  * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
  * average (which follows a faster time at once and a slower one by ALPHA, so other processes'
- * delays weigh little), except every PROBE_EVERY-th call, which runs the other way to keep its
- * average current (a machine that got quieter or busier is noticed within a few probes).
+ * delays weigh little), except every probePeriod-th call, which runs the other way to keep its
+ * average current (a machine that got quieter or busier is noticed within a few probes): often
+ * while the loop is young and the two ways are close, rarely once one way is clearly faster.
  */
 
 /** Calls between two runs of the way not currently preferred. */
 export const PROBE_EVERY = 16;
+
+/** Calls, from the first, during which an undecided loop is probed more often (EARLY_PROBE_EVERY). */
+export const EARLY_CALLS = 64;
+/** Calls between two probes while a loop is young and the two ways are within CLEAR_RATIO of each other. */
+export const EARLY_PROBE_EVERY = 4;
+/** Calls between two probes once a loop's ways differ by more than CLEAR_RATIO, after EARLY_CALLS. */
+export const CLEAR_PROBE_EVERY = 64;
+/** Ratio of the two ways' averages above which the choice is clear (probed less often). */
+export const CLEAR_RATIO = 1.5;
+
+/**
+ * Calls between probes of the way not preferred, at call `c` with averages `a` and `b` (ms per
+ * element, positive): a close call is probed every EARLY_PROBE_EVERY calls while the loop is young
+ * (one noisy first sample, such as a worker still compiling the kernel or a burst of other
+ * processes, is then undone within a few calls instead of sixteen) and every PROBE_EVERY after; a
+ * clear one (a ratio above CLEAR_RATIO) every PROBE_EVERY while young and every CLEAR_PROBE_EVERY
+ * after (a probe of a way that is twice as slow costs a whole extra run of the loop).
+ */
+export function probePeriod(c: number, a: number, b: number): number {
+  const clear = a > CLEAR_RATIO * b || b > CLEAR_RATIO * a;
+  if (c < EARLY_CALLS) return clear ? PROBE_EVERY : EARLY_PROBE_EVERY;
+  return clear ? CLEAR_PROBE_EVERY : PROBE_EVERY;
+}
 
 /** Weight of the newest time in a moving average. */
 const ALPHA = 0.3;
@@ -46,7 +70,7 @@ export class LoopChooser {
     if (c < 5 || Number.isNaN(s.serial)) return false;
     if (Number.isNaN(s.parallel)) return true;
     const preferParallel = s.parallel <= s.serial;
-    return c % PROBE_EVERY === 0 ? !preferParallel : preferParallel;
+    return c % probePeriod(c, s.parallel, s.serial) === 0 ? !preferParallel : preferParallel;
   }
 
   /** Records that a call of `site` ran `parallel` or not and took `ms` for `n` (> 0) elements. */
