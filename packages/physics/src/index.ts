@@ -43,6 +43,7 @@ export { linearDragSystem, quadraticDragSystem } from './forces/drag.js';
 export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js';
 export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
 export { contactSolverSystem } from './collision/solver.js';
+export { CONTACT_LENGTH_UNIT, MAX_AUTO_SUBSTEPS, contactLength, solverSubstepsFor } from './collision/contact-scale.js';
 export { shapeCollisionSystem } from './collision/shape-collision.js';
 export { rayCast, rayCastAll, overlapPoint, overlapAABB } from './collision/shape-queries.js';
 export type { RayHit } from './collision/shape-queries.js';

@@ -1,6 +1,7 @@
 import type { ContactBuffer } from './contacts.js';
 import type { CollisionSettings } from './state.js';
 import type { PhysicsWorld } from '../world.js';
+import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Lengths that scale: the ball contacts' tolerances follow the size of the balls, so a 2 cm marble
@@ -44,10 +45,10 @@ export const CONTACT_LENGTH_UNIT = 1;
 export const BALL_HERTZ_FRACTION = 1;
 
 /**
- * The length scale of a step's ball contacts, m: the smallest ball radius over the rows (ball B of
- * every row, and ball A of ball pairs); Infinity if there are no rows.
+ * The smallest ball radius over the rows of `buf` (ball B of every row, and ball A of ball pairs), m;
+ * Infinity if there are no rows.
  */
-export function contactLength(buf: ContactBuffer): number {
+export function smallestBallRadius(buf: ContactBuffer): number {
   let r = Infinity;
   const RA = buf.ra, RB = buf.rb;
   for (let i = 0, n = buf.count; i < n; i++) {
@@ -58,36 +59,105 @@ export function contactLength(buf: ContactBuffer): number {
   return r;
 }
 
+/** The length each contact buffer's step used (set by `withScaledSubsteps`). */
+const stepLength = new WeakMap<ContactBuffer, number>();
+
+/**
+ * The length scale of the ball contacts in `buf`, m: the length the step that solved (or is solving)
+ * them used, which `withScaledSubsteps` moves toward their smallest ball radius at most LENGTH_RAMP
+ * times a step; for a buffer no step has used, their smallest ball radius (Infinity if no rows).
+ */
+export function contactLength(buf: ContactBuffer): number {
+  return stepLength.get(buf) ?? smallestBallRadius(buf);
+}
+
+/**
+ * Most the contact length of a world changes from one step to the next, as a factor (the stiffness,
+ * proportional to 1 / sqrt(length), by at most its square root, 1.22). A pile of 0.5 m balls rests
+ * at its 85 Hz overlap; when a 2 cm ball lands on it the step's contacts jump to 424 Hz, and the
+ * sudden push-out threw the big balls up at 2.3 m/s (0.06 m/s at the old 240 Hz cap); ramped over
+ * about 8 steps they move at most 0.1 m/s (a 2 cm ball resting there from the start: 0.02 m/s).
+ */
+export const LENGTH_RAMP = 1.5;
+
 /** Most solver substeps the automatic choice takes in a step (the world option's own upper bound). */
 export const MAX_AUTO_SUBSTEPS = 16;
 
 /**
+ * Highest ball contact frequency the automatic substep choice aims at, as a fraction of the substep
+ * rate. Below BALL_HERTZ_FRACTION, because piles at the cap do not settle: 300 balls of 2 cm in a bin
+ * 9 radii wide kept moving at 0.5 sqrt(g r) and more with f h_s between 0.64 and 0.88 (8, 9 and 11
+ * substeps at 424 Hz), and came to rest with f h_s <= 0.6 (also 0.1 m and 0.065 m balls, which boil
+ * with the world's 4 substeps: f h_s 0.79 and 0.98).
+ */
+export const AUTO_HERTZ_FRACTION = 0.6;
+
+/**
  * Solver substeps for a step of `h` (s) whose ball contacts have `length` (m, see `contactLength`):
  * `settings.solverSubsteps`, or more if `settings.autoSubsteps` and the contacts' frequency
- * contactHertz sqrt(CONTACT_LENGTH_UNIT / length) exceeds BALL_HERTZ_FRACTION of that substep rate:
- * then ceil(h f / BALL_HERTZ_FRACTION), at most MAX_AUTO_SUBSTEPS (never fewer than the setting).
- * A scene scaled by L in length and sqrt(L) in time step gets the same count.
+ * f = contactHertz sqrt(CONTACT_LENGTH_UNIT / length) exceeds AUTO_HERTZ_FRACTION of that substep
+ * rate: then ceil(h f / AUTO_HERTZ_FRACTION), at most MAX_AUTO_SUBSTEPS (never fewer than the
+ * setting). A scene scaled by L in length and sqrt(L) in time step gets the same count.
  */
 export function solverSubstepsFor(settings: CollisionSettings, length: number, h: number): number {
   const base = settings.solverSubsteps;
   if (!settings.autoSubsteps || !(length > 0 && length < Infinity) || !(h > 0)) return base;
-  // 1e-9 absorbs rounding (2 cm at dt 1/60 needs 7.07 substeps; 6.25 cm exactly 4).
-  const need = Math.ceil((h * settings.contactHertz) / speedScale(length) / BALL_HERTZ_FRACTION - 1e-9);
+  // 1e-9 absorbs rounding (2 cm at dt 1/60 needs 11.8 substeps; 17.4 cm exactly 4).
+  const need = Math.ceil((h * settings.contactHertz) / speedScale(length) / AUTO_HERTZ_FRACTION - 1e-9);
   return need > base ? Math.min(need, Math.max(base, MAX_AUTO_SUBSTEPS)) : base;
 }
 
+/** Per world: the solver substeps its last step took (0 before the first) and its contact length, m (Infinity before the first). */
+const scaleState = new WeakMap<PhysicsWorld, { substeps: number; length: number }>();
+
+registerExternalWorldState({
+  name: 'contact-scale',
+  get: (world, create) => {
+    let state = scaleState.get(world);
+    if (state === undefined && create) { state = { substeps: 0, length: Infinity }; scaleState.set(world, state); }
+    return state;
+  },
+  clear: (world) => { scaleState.delete(world); },
+});
+
 /**
- * Runs `solve` (the contact solver stage) with `settings.solverSubsteps` set, for its duration, to
- * the count `solverSubstepsFor` chooses for the step's ball contacts (`world.collision.contacts`),
- * so every stage of the solver (contacts, shape manifolds, joints, impacts, the free-flight
- * correction) sees the same count; the setting is restored afterwards, also if `solve` throws.
+ * Runs `solve` (the contact solver stage) for the step's ball contacts (`world.collision.contacts`):
+ * 1. their length (`contactLength`, which the solver reads for stiffness, push-out and stick speeds):
+ *    their smallest ball radius, reached from the last step's length by at most a factor LENGTH_RAMP
+ *    (the first step with ball contacts takes it at once; a step without any keeps the last);
+ * 2. `settings.solverSubsteps` set, for the duration of `solve`, to the count `solverSubstepsFor`
+ *    chooses for that length, so every stage of the solver (contacts, shape manifolds, joints,
+ *    impacts, the free-flight correction) sees the same count; restored afterwards, also if `solve`
+ *    throws. A step without ball contacts takes the setting as it is.
+ * The ball contacts' warm-start impulses are impulses per substep: when the count differs from the
+ * last step's they are scaled by last / new. Shape manifolds and joints keep theirs, which their
+ * first substep corrects.
  */
 export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWorld) => void): void {
-  const settings = world.collision.settings, base = settings.solverSubsteps;
-  const count = settings.autoSubsteps ? solverSubstepsFor(settings, contactLength(world.collision.contacts), world.h) : base;
+  const cs = world.collision, settings = cs.settings, base = settings.solverSubsteps, buf = cs.contacts;
+  let state = scaleState.get(world);
+  if (state === undefined) { state = { substeps: 0, length: Infinity }; scaleState.set(world, state); }
+  const target = smallestBallRadius(buf);
+  if (target < Infinity) {
+    const last = state.length;
+    state.length = last === Infinity ? target : Math.min(Math.max(target, last / LENGTH_RAMP), last * LENGTH_RAMP);
+  }
+  const length = target < Infinity ? state.length : Infinity;
+  stepLength.set(buf, length);
+  const count = settings.autoSubsteps ? solverSubstepsFor(settings, length, world.h) : base;
+  if (state.substeps !== count) {
+    if (state.substeps > 0) scaleWarmStart(cs.cache.rows, state.substeps / count);
+    state.substeps = count;
+  }
   if (count === base) { solve(world); return; }
   settings.solverSubsteps = count;
   try { solve(world); } finally { settings.solverSubsteps = base; }
+}
+
+/** Multiplies the warm-start impulses (normal and both tangents) of the cached rows by `k`. */
+function scaleWarmStart(rows: ContactBuffer, k: number): void {
+  const LN = rows.normalImpulse, L1 = rows.tangentImpulse1, L2 = rows.tangentImpulse2;
+  for (let i = 0, n = rows.count; i < n; i++) { LN[i] = LN[i]! * k; L1[i] = L1[i]! * k; L2[i] = L2[i]! * k; }
 }
 
 /** sqrt(length / CONTACT_LENGTH_UNIT), the factor speeds scale by; 1 for no contacts (length Infinity) or length <= 0. */
