@@ -42,8 +42,16 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
   return 0;
 }
 
-/** Digits of the key sort's first (most significant) pass: its buckets, and the bits it takes. */
+/**
+ * Most bits of the key sort's first (most significant) digit, and its most buckets. The sort takes
+ * about log2(n / 2) bits (sortDigitBits), so that a bucket holds a few bodies on average.
+ */
 export const SORT_RADIX_BITS = 16, SORT_RADIX = 1 << SORT_RADIX_BITS;
+
+/** Bits of the key sort's first digit for n bodies: about log2(n / 2), within 1 .. SORT_RADIX_BITS. */
+export function sortDigitBits(n: number): number {
+  return Math.min(SORT_RADIX_BITS, Math.max(1, Math.ceil(Math.log2(Math.max(2, n / 2)))));
+}
 /** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
 export const BUCKET_RADIX = 256;
 /** Buckets of at most this many keys are sorted by insertion, larger ones by radix passes. */
@@ -52,27 +60,28 @@ export const BUCKET_INSERTION_MAX = 48;
 /**
  * The Morton sort's parameters `P` (the three kernels below share them): 0 x0, 1 y0, 2 z0 (the root
  * cube's low corner, m), 3 scale (key units per m), 4 top (largest key coordinate), 5 dimensions,
- * 6 n (bodies), 7 parts, 8 first digit's shift (key bits - SORT_RADIX_BITS). A call's range
+ * 6 n (bodies), 7 parts, 8 first digit's shift (key bits - P[9]), 9 first digit's bits (at most
+ * SORT_RADIX_BITS; the part's counts and places are 2^P[9] slots at part * 2^P[9]). A call's range
  * [lo, hi) is a range of parts; part p of the first two kernels holds bodies
  * floor(n p / parts) .. floor(n (p + 1) / parts) - 1 (the same in both, so the scatter sees the
  * histogram's bodies); the last kernel's parts are ranges of buckets.
  */
-export const SORT_PARAMS = 9;
+export const SORT_PARAMS = 10;
 
 /**
  * Morton sort, pass 1: the Morton (Z-order) keys of a part's bodies in the root cube (16 bits per
  * axis interleaved in 2D, 10 in 3D; barnes-hut.ts) and the part's histogram of their first digit
  * (key >>> P[8]). A: x, y, z (positions, input order), key (Uint32, out, input order), hist (Int32,
- * SORT_RADIX counts a part, the part's at p * SORT_RADIX). P: SORT_PARAMS. Returns 0.
+ * 2^P[9] counts a part, the part's at p * 2^P[9]). P: SORT_PARAMS. Returns 0.
  */
 export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const x = A[0] as Float64Array, y = A[1] as Float64Array, z = A[2] as Float64Array;
   const key = A[3] as Uint32Array, hist = A[4] as Int32Array;
   const x0 = P[0]!, y0 = P[1]!, z0 = P[2]!, scale = P[3]!, top = P[4]!, is3D = P[5] === 3;
-  const n = P[6]!, parts = P[7]!, topShift = P[8]!;
+  const n = P[6]!, parts = P[7]!, topShift = P[8]!, R = 1 << P[9]!;
   for (let part = lo; part < hi; part++) {
-    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 65536;
-    hist.fill(0, base, base + 65536);
+    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * R;
+    hist.fill(0, base, base + R);
     for (let i = b0; i < b1; i++) {
       let kx = Math.floor((x[i]! - x0) * scale), ky = Math.floor((y[i]! - y0) * scale);
       kx = kx > 0 ? (kx < top ? kx : top) : 0; ky = ky > 0 ? (ky < top ? ky : top) : 0;
@@ -262,15 +271,15 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
 /**
  * Morton sort, pass 2: a part's bodies to their first digit's bucket, in order (so the pass is
  * stable: within a bucket the bodies keep their input order). A: key (Uint32, input order), key2
- * (Uint32, out), idx2 (Int32, out: the input index of each placed key), offset (Int32, SORT_RADIX
- * first places a part, the part's at p * SORT_RADIX, advanced as it goes). P: SORT_PARAMS. The
+ * (Uint32, out), idx2 (Int32, out: the input index of each placed key), offset (Int32, 2^P[9]
+ * first places a part, the part's at p * 2^P[9], advanced as it goes). P: SORT_PARAMS. The
  * parts must be those of mortonKeysHist. Returns 0.
  */
 export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const key = A[0] as Uint32Array, key2 = A[1] as Uint32Array, idx2 = A[2] as Int32Array, offset = A[3] as Int32Array;
-  const n = P[6]!, parts = P[7]!, topShift = P[8]!;
+  const n = P[6]!, parts = P[7]!, topShift = P[8]!, R = 1 << P[9]!;
   for (let part = lo; part < hi; part++) {
-    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * 65536;
+    const b0 = Math.floor((n * part) / parts), b1 = Math.floor((n * (part + 1)) / parts), base = part * R;
     for (let i = b0; i < b1; i++) {
       const k = key[i]!, d = offset[base + (k >>> topShift)]!++;
       key2[d] = k; idx2[d] = i;
@@ -286,7 +295,7 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
  * equal), so the keys end in (key, input index) order, the order of a stable sort of the whole
  * array; then slot s of the bucket gets input body idx[s]'s position and mass, and perm[s] = idx[s].
  * A: key2, idx2 (pass 2's output; also scratch), key (Uint32, out: sorted keys), idx (Int32, out:
- * input index in sorted order), bucket (Int32: first slot of each bucket, SORT_RADIX + 1 entries),
+ * input index in sorted order), bucket (Int32: first slot of each bucket, 2^P[9] + 1 entries),
  * group (Int32: part p sorts buckets group[p] .. group[p + 1] - 1), local (Int32, BUCKET_RADIX
  * counts a part), x, y, z, m (input order), tx, ty, tz, tm (out, tree order; tz only in 3D: in 2D it stays 0), perm
  * (Int32, out). P: SORT_PARAMS. Returns 0.

@@ -4,7 +4,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
 import {
-  BOX_STRIDE, BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, SORT_PARAMS, SORT_RADIX, SORT_RADIX_BITS, treeForces, treeGather, treeMoments,
+  BOX_STRIDE, BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, SORT_PARAMS, sortDigitBits, treeForces, treeGather, treeMoments,
 } from './barnes-hut-gather.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 import { nowMs } from '../threads/adaptive.js';
@@ -25,7 +25,7 @@ import { CONTROL } from '../threads/worker-main.js';
  *
  * Build. The bodies are sorted by Morton (Z-order) key in the root cube (16 bits per axis in 2D, 10
  * in 3D) into (key, input index) order, the order of a stable sort (mortonSort: buckets of the first
- * SORT_RADIX_BITS bits, then each bucket on its own), and copied into that order, so every cell holds a contiguous range
+ * sortDigitBits(n) bits, then each bucket on its own), and copied into that order, so every cell holds a contiguous range
  * of bodies and nearby bodies sit near each other in memory. Cells are split into their 4 (8)
  * quadrants down to a leaf of at most LEAF_SIZE bodies: by the key digits down to the key resolution,
  * below it by a stable counting sort on the positions. A cell smaller than MIN_CELL_FRACTION of the
@@ -149,8 +149,8 @@ export interface GravityTree {
   cutWant: Int32Array; walkList: KernelArray[]; walkParams: Float64Array; keyParams: Float64Array; momentParams: Float64Array;
   /**
    * The Morton sort's scratch (mortonSort): per part, the first digit's histogram and first places
-   * (SORT_RADIX each) and a bucket sort's counts (BUCKET_RADIX); each bucket's first slot
-   * (SORT_RADIX + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
+   * (2^keyParams[9] each, at most SORT_RADIX) and a bucket sort's counts (BUCKET_RADIX); each bucket's
+   * first slot (2^keyParams[9] + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
    */
   sortHist: Int32Array; sortOffset: Int32Array; sortLocal: Int32Array; sortBucket: Int32Array; sortGroup: Int32Array; sortLists: KernelArray[][];
   /**
@@ -192,7 +192,7 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     scratch: [], accOffset: 0, cut: I32(MAX_PARTS + 1), info: F64(MAX_PARTS * INFO_STRIDE), parts: 1, shared,
     cutWant: new Int32Array(MAX_PARTS + 1), walkList: [], walkParams: new Float64Array(10), keyParams: new Float64Array(SORT_PARAMS), momentParams: new Float64Array(2),
     sortHist: new Int32Array(0), sortOffset: new Int32Array(0), sortLocal: new Int32Array(0),
-    sortBucket: I32(SORT_RADIX + 1), sortGroup: I32(MAX_PARTS + 1), sortLists: [[], [], []],
+    sortBucket: I32(0), sortGroup: I32(MAX_PARTS + 1), sortLists: [[], [], []],
     momentList: I32(0), momentCut: I32(MAX_PARTS + 1), momentTop: new Int32Array(256), momentDown: new Int32Array(256), momentCut1: new Int32Array(2), momentLists: [[], []],
     counts: new Int32Array(16),
     key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
@@ -319,7 +319,8 @@ function buildTreeWith(
   const x0 = cx - half, y0 = cy - half, z0 = cz - half;
   const KP = t.keyParams;
   KP[0] = x0; KP[1] = y0; KP[2] = z0; KP[3] = scale; KP[4] = top; KP[5] = t.dims;
-  KP[6] = n; KP[8] = (is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2) - SORT_RADIX_BITS;
+  const digitBits = sortDigitBits(n);
+  KP[6] = n; KP[8] = (is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2) - digitBits; KP[9] = digitBits;
   mortonSort(t, n, x, y, z, m, pool);
   const KM = t.momentParams;
   KM[0] = t.dims;
@@ -332,7 +333,7 @@ function buildTreeWith(
  * The Morton sort of buildTreeWith and the bodies into tree order: keys (t.key, t.idx) in (key, input
  * index) order, the order of a stable sort, and t.x, t.y, t.z, t.m, t.perm in that order. Three
  * kernels (barnes-hut-gather.ts): the keys with each part's histogram of the first digit (the top
- * SORT_RADIX_BITS bits), the parts' bodies to their buckets in order, then the buckets sorted by
+ * sortDigitBits(n) bits), the parts' bodies to their buckets in order, then the buckets sorted by
  * the bits below and the bodies put into tree order, each part a run of buckets holding about n /
  * parts bodies. On `pool`'s threads (one part a thread) when the tree's arrays are shared and the
  * bodies many enough (MIN_PARALLEL_PER_THREAD a thread), and an adaptive pool has found that faster;
@@ -348,10 +349,13 @@ function mortonSort(
   const adaptive = parts > 1 && pool!.adaptive;
   if (adaptive && !pool!.chooser.choose(site)) parts = 1;
   const t0 = adaptive ? nowMs() : 0;
-  if (t.sortHist.length < parts * SORT_RADIX) {
-    const size = Math.max(parts, pool?.threads ?? 1) * SORT_RADIX;
-    t.sortHist = i32(t, size); t.sortOffset = i32(t, size); t.sortLocal = i32(t, (size / SORT_RADIX) * BUCKET_RADIX);
+  const R = 1 << t.keyParams[9]!;
+  if (t.sortHist.length < parts * R) {
+    const size = Math.max(parts, pool?.threads ?? 1) * R;
+    t.sortHist = i32(t, size); t.sortOffset = i32(t, size);
   }
+  if (t.sortBucket.length < R + 1) t.sortBucket = i32(t, R + 1);
+  if (t.sortLocal.length < parts * BUCKET_RADIX) t.sortLocal = i32(t, Math.max(parts, pool?.threads ?? 1) * BUCKET_RADIX);
   const hist = t.sortHist, offset = t.sortOffset, bucket = t.sortBucket, group = t.sortGroup, P = t.keyParams;
   P[7] = parts;
   const system = 'mutualGravitySystem (Barnes-Hut sort)';
@@ -361,11 +365,11 @@ function mortonSort(
   else mortonKeysHist(A1, P, null, 0, 1);
   // First places of each (digit, part), digit-major (so the pass is stable), and each bucket's first slot.
   let acc = 0;
-  for (let r = 0; r < SORT_RADIX; r++) {
+  for (let r = 0; r < R; r++) {
     bucket[r] = acc;
-    for (let p = 0; p < parts; p++) { const c = hist[p * SORT_RADIX + r]!; offset[p * SORT_RADIX + r] = acc; acc += c; }
+    for (let p = 0; p < parts; p++) { const c = hist[p * R + r]!; offset[p * R + r] = acc; acc += c; }
   }
-  bucket[SORT_RADIX] = acc;
+  bucket[R] = acc;
   A2.length = 0; A2.push(t.key, t.key2, t.idx2, offset);
   if (parts > 1) pool!.run(system, KERNEL.mortonScatter, A2, P, parts, null);
   else mortonScatter(A2, P, null, 0, 1);
@@ -374,10 +378,10 @@ function mortonSort(
   let r = 0;
   for (let q = 1; q < parts; q++) {
     const goal = (n * q) / parts;
-    while (r < SORT_RADIX && bucket[r + 1]! <= goal) r++;
+    while (r < R && bucket[r + 1]! <= goal) r++;
     group[q] = r;
   }
-  group[parts] = SORT_RADIX;
+  group[parts] = R;
   A3.length = 0;
   A3.push(t.key2, t.idx2, t.key, t.idx, bucket, group, t.sortLocal, x as Float64Array, y as Float64Array, z as Float64Array, m as Float64Array, t.x, t.y, t.z, t.m, t.perm);
   if (parts > 1) pool!.run(system, KERNEL.mortonBucketSort, A3, P, parts, null);
