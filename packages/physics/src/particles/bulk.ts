@@ -2,7 +2,8 @@ import type { PhysicsWorld } from '../world.js';
 import { addParticle } from '../bodies.js';
 import { currentHandle, slotOf } from '../handles.js';
 import { assertInteger, assertOptions, describe } from '../validate.js';
-import { archetypeFromEntity, archetypes, bornSlots, pendingArchetype, prepareArchetype, settle } from './archetype.js';
+import { archetypeFromEntity, archetypes, bornSlots, ecsOf, pendingArchetype, prepareArchetype, settle, type Archetype } from './archetype.js';
+import { touchSparseSet } from '../lean-ecs.js';
 
 /** Key of the bare particle (Position and Velocity) in the world's archetype table; emitter kinds use 0..31. */
 const BARE_PARTICLE = 64;
@@ -19,8 +20,8 @@ export interface BulkParticleOptions {
  * Adds `count` bare particles at once: each exactly what `addParticle` makes (Position and Velocity;
  * it feels the world's gravity and, given more components, anything else), `PreviousPosition` equal to
  * its position, in one pass that writes bitecs' entity index, component masks and query lists directly
- * (particles/archetype.ts) instead of calling addEntity and addComponent per particle: a million
- * particles take about as long as filling the arrays in a bare loop. Slots are taken in the order
+ * (particles/archetype.ts for freed slots, `bornFresh` here for the run of new ones) instead of
+ * calling addEntity and addComponent per particle. Slots are taken in the order
  * `addParticle` would take them, so the world is the same as after `count` calls of `addParticle`.
  *
  * Atomic: every option is checked, and room made sure of, before anything changes.
@@ -48,7 +49,6 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
   settle(world, table);
   const c = world.components;
   const at = (a: ArrayLike<number> | undefined, i: number, j: number): number => (a && j < d ? a[i * d + j]! : 0);
-  const slots = new Int32Array(count);
   let done = 0;
   while (done < count) {
     let a = table.byKey.get(BARE_PARTICLE);
@@ -66,32 +66,131 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
     }
     const n = count - done;
     const fresh = world.entityIndex.maxId; // slots above it were never used: their z and previous state are 0
-    bornSlots(world, a, n, slots);
+    // Slots freed earlier first (bitecs hands them out before new ones), one at a time.
+    const recycled = Math.min(n, world.entityIndex.dense.length - world.entityIndex.aliveCount);
+    const slots = new Int32Array(recycled);
+    if (recycled > 0) bornSlots(world, a, recycled, slots);
     const X = c.Position.x, Y = c.Position.y, Z = c.Position.z, OX = c.PreviousPosition.x, OY = c.PreviousPosition.y, OZ = c.PreviousPosition.z;
     const VX = c.Velocity.x, VY = c.Velocity.y, VZ = c.Velocity.z;
-    for (let k = 0; k < n; k++) {
+    const prev = OX.length > world.capacity;
+    for (let k = 0; k < recycled; k++) {
       const e = slots[k]!;
       if (e <= fresh) { Z[e] = 0; OZ[e] = 0; VZ[e] = 0; }
       handles[done + k] = currentHandle(world, e);
     }
     // One array at a time: coordinate j of particle i is at i * d + j.
     const fill = (T: Float64Array, U: Float64Array | null, src: ArrayLike<number> | undefined, j: number) => {
-      for (let k = 0; k < n; k++) {
+      for (let k = 0; k < recycled; k++) {
         const e = slots[k]!, x = src ? src[(done + k) * d + j]! : 0;
         T[e] = x;
         if (U) U[e] = x;
       }
     };
-    fill(X, OX, p, 0); fill(Y, OY, p, 1); fill(VX, null, v, 0); fill(VY, null, v, 1);
-    if (d === 3) { fill(Z, OZ, p, 2); fill(VZ, null, v, 2); }
+    fill(X, prev ? OX : null, p, 0); fill(Y, prev ? OY : null, p, 1); fill(VX, null, v, 0); fill(VY, null, v, 1);
+    if (d === 3) { fill(Z, prev ? OZ : null, p, 2); fill(VZ, null, v, 2); }
     // What the Position observer resets besides (create-world.ts), for stores that exist.
     for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
       if (s.x.length <= world.capacity) continue;
-      for (let k = 0; k < n; k++) { const e = slots[k]!; s.x[e] = 0; s.y[e] = 0; s.z[e] = 0; }
+      for (let k = 0; k < recycled; k++) { const e = slots[k]!; s.x[e] = 0; s.y[e] = 0; s.z[e] = 0; }
+    }
+    done += recycled;
+    // The rest in new slots, consecutive ids: bulk writes of the entity index, masks and query lists.
+    const m = count - done;
+    if (m > 0) {
+      const first = bornFresh(world, a, m);
+      const end = first + m;
+      // Handles: slot + generation x SLOT_RANGE; slots of one spawn stamp share the offset (new slots
+      // usually all have stamp 1), others ask currentHandle.
+      const spawn = world.spawnStamp, s0 = spawn[first]!, offset = currentHandle(world, first) - first;
+      for (let e = first, i = done; e < end; e++, i++) handles[i] = spawn[e] === s0 ? e + offset : currentHandle(world, e);
+      // Consecutive slots: coordinate j of particle i (= done + e - first) is at i * d + j.
+      if (d === 2 && p !== undefined && v !== undefined) {
+        // Both given in 2D (the common case): one pass, as a bare loop would copy them.
+        for (let e = first, o = 2 * done; e < end; e++, o += 2) { X[e] = p[o]!; Y[e] = p[o + 1]!; VX[e] = v[o]!; VY[e] = v[o + 1]!; }
+      } else {
+        const run = (T: Float64Array, src: ArrayLike<number> | undefined, j: number) => {
+          if (src === undefined) { T.fill(0, first, end); return; }
+          for (let e = first, o = done * d + j; e < end; e++, o += d) T[e] = src[o]!;
+        };
+        run(X, p, 0); run(Y, p, 1); run(VX, v, 0); run(VY, v, 1);
+        if (d === 3) { run(Z, p, 2); run(VZ, v, 2); }
+      }
+      if (prev) {
+        OX.set(X.subarray(first, end), first); OY.set(Y.subarray(first, end), first);
+        if (d === 3) OZ.set(Z.subarray(first, end), first);
+      }
+      for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
+        if (s.x.length <= world.capacity) continue;
+        s.x.fill(0, first, end); s.y.fill(0, first, end); s.z.fill(0, first, end);
+      }
     }
     done = count;
   }
   return handles;
+}
+
+/** Appends of at least this many ids lengthen the list once instead of pushing. */
+const BULK_APPEND = 1 << 12;
+
+/**
+ * Appends ids from, from + 1, ..., from + m - 1 to `list` (the same array: bitecs and the query cache
+ * hold it). A long run sets the length once and writes the ids in place: pushing a million ids
+ * regrows the array's storage about 35 times (each a copy and garbage), which took about three
+ * quarters of the bulk creation's bookkeeping. The array's elements kind becomes holey (V8), which a
+ * loop over it reads as fast (measured on a million-entity integration loop: no difference beyond noise).
+ */
+function appendRange(list: number[], from: number, m: number): void {
+  const n = list.length;
+  if (m >= BULK_APPEND) {
+    list.length = n + m;
+    for (let k = 0; k < m; k++) list[n + k] = from + k;
+    return;
+  }
+  for (let k = 0; k < m; k++) list.push(from + k);
+}
+
+/**
+ * Creates `m` entities of archetype `a` in the slots above the highest id used so far (the world has
+ * no freed slot left to hand out, and room for them), ids first .. first + m - 1 in order: what
+ * `bornSlots` does, for consecutive new ids, one array at a time without a call per entity: the
+ * entity index's dense list and sparse array, the spawn stamps, each mask generation (one `fill`), and
+ * each query the archetype matches (its own `add` for the first id, which allocates a lean set's
+ * sparse array, then pushes and one pass over its sparse array). A new id is in no query and no
+ * pending removal (no entity ever had it), so no membership is checked. Writes no component data.
+ * @returns the first id.
+ */
+function bornFresh(world: PhysicsWorld, a: Archetype, m: number): number {
+  const ecs = ecsOf(world);
+  const ix = ecs.entityIndex, spawn = world.spawnStamp;
+  const first = ix.maxId + 1, end = first + m, alive = ix.aliveCount;
+  const sparse = ix.sparse;
+  appendRange(ix.dense, first, m);
+  for (let e = first, i = alive; e < end; e++, i++) sparse[e] = i;
+  for (let e = first; e < end; e++) spawn[e] = spawn[e]! + 1;
+  ix.maxId = end - 1;
+  ix.aliveCount = alive + m;
+  const masks = a.masks;
+  for (let g = 0; g < masks.length; g++) {
+    const em = ecs.entityMasks[g]! as number[] | Int32Array, mask = masks[g]!;
+    if (mask === 0) continue;
+    if (em instanceof Int32Array) em.fill(mask, first, end);
+    else for (let e = first; e < end; e++) em[e] = mask;
+  }
+  const qs = a.queries;
+  for (let i = 0; i < qs.length; i++) {
+    const q = qs[i]!;
+    q.add(first);
+    const base = q.dense.length - 1;
+    appendRange(q.dense, first + 1, m - 1);
+    const qs2 = q.sparse;
+    for (let e = first + 1, j = base + 1; e < end; e++, j++) qs2[e] = j;
+    touchSparseSet(q);
+  }
+  if (ecs.entityComponents instanceof Map) {
+    const sets = ecs.entityComponents;
+    for (let e = first; e < end; e++) sets.set(e, new Set(a.components));
+  }
+  return first;
 }
 
 /** Checks an optional flat array of `n` finite numbers. @throws TypeError | RangeError naming `where` and `name`. */
