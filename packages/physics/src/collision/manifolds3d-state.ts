@@ -29,6 +29,13 @@ export interface Manifold3DBuffer {
   ln: Float64Array; lt1: Float64Array; lt2: Float64Array;
   mn: Float64Array; mt1: Float64Array; mt2: Float64Array;
   vn0: Float64Array; maxLn: Float64Array;
+  /**
+   * Box-box rows (shape3d-collision.ts reuses them while the pair's relative pose barely changes): 1 when
+   * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
+   * R_A^T R_B row-major, when the manifold was last computed; `localNormal` (3 a row): the normal in A's
+   * frame; `localA`, `localB` (3 a point, 12 a row): each point's ends on A's and B's surfaces in their frames, m.
+   */
+  local: Uint8Array; relPose: Float64Array; localNormal: Float64Array; localA: Float64Array; localB: Float64Array;
 }
 
 function createBuffer(n: number): Manifold3DBuffer {
@@ -39,6 +46,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     nx: f(n), ny: f(n), nz: f(n), t1x: f(n), t1y: f(n), t1z: f(n), friction: f(n), restitution: f(n),
     rax: f(p), ray: f(p), raz: f(p), rbx: f(p), rby: f(p), rbz: f(p), sep: f(p), id: f(p),
     ln: f(p), lt1: f(p), lt2: f(p), mn: f(p), mt1: f(p), mt2: f(p), vn0: f(p), maxLn: f(p),
+    local: new Uint8Array(n), relPose: f(12 * n), localNormal: f(3 * n), localA: f(3 * p), localB: f(3 * p),
   };
 }
 

@@ -395,10 +395,19 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
   const sa = !sc.ball[a] && s.sensor[ea] === 1, sb = !sc.ball[b] && s.sensor[eb] === 1;
   if (sa && sb) return;
   if (!sa && !sb && !sc.ball[a] && !sc.ball[b] && s.kind[ea] === Shape3DKind.Box && s.kind[eb] === Shape3DKind.Box) {
-    // Two boxes (the common case): straight from the scratch poses.
-    const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
-    boxBox3D(sc.px[a]!, sc.py[a]!, sc.pz[a]!, sc.R, 9 * a, s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, sc.px[b]!, sc.py[b]!, sc.pz[b]!, sc.R, 9 * b, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!, margin, manifold);
+    // Two boxes (the common case): straight from the scratch poses, or last step's manifold carried over.
+    relativePose(a, b);
+    const size = Math.min(s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!);
+    const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, 0));
+    if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
+    else {
+      const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
+      boxBox3D(sc.px[a]!, sc.py[a]!, sc.pz[a]!, sc.R, 9 * a, s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, sc.px[b]!, sc.py[b]!, sc.pz[b]!, sc.R, 9 * b, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!, margin, manifold);
+      boxRow.from = -1;
+    }
+    boxRow.a = a; boxRow.b = b; boxRow.prev = prev;
     if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
+    boxRow.a = -1;
     return;
   }
   collider(world, s, a, colA); collider(world, s, b, colB);
@@ -414,6 +423,99 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
   const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
   collide3D(colA, colB, margin, manifold);
   if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
+}
+
+/**
+ * Manifold reuse for box pairs (after the persistent manifolds of Bullet and Box2D v2's idea that a
+ * contact's features rarely change between steps): a box-box row keeps its pair's relative pose (B's
+ * centre in A's frame and R_A^T R_B) from when the manifold was computed, the normal in A's frame and
+ * each point's ends on both surfaces in their own frames. While the relative pose stays within
+ * REUSE_SHIFT of the smaller box's smallest half extent (each coordinate) and REUSE_TURN (each entry of
+ * R_A^T R_B, about radians), the next step rebuilds the manifold from those local points at the
+ * current poses: same feature ids, normal R_A n_A, separation (p_B - p_A) . n measured anew (exact for
+ * a corner on a face), instead of running the separating-axis test and the clipping. A pair resting
+ * together (a stack, a rocking column) so skips the narrowphase; the bounds keep the error of a
+ * carried point (a clipped point that would have slid along its edge) below 0.5 % of the box.
+ */
+const REUSE_SHIFT = 0.005;
+const REUSE_TURN = 0.005;
+
+/** The box pair being emitted: scratch indices (-1: not a box pair), the previous row reused (-1: computed), and its previous row (-1: none). */
+const boxRow = { a: -1, b: -1, from: -1, prev: -1 };
+/** Relative pose of the pair in `relativePose`'s order. */
+const rel = new Float64Array(12);
+
+/** rel = (R_A^T (c_B - c_A), R_A^T R_B) of scratch colliders a and b. */
+function relativePose(a: number, b: number): void {
+  const sc = scratch, R = sc.R, oa = 9 * a, ob = 9 * b;
+  const dx = sc.px[b]! - sc.px[a]!, dy = sc.py[b]! - sc.py[a]!, dz = sc.pz[b]! - sc.pz[a]!;
+  for (let i = 0; i < 3; i++) {
+    const a0 = R[oa + i]!, a1 = R[oa + 3 + i]!, a2 = R[oa + 6 + i]!;
+    rel[i] = a0 * dx + a1 * dy + a2 * dz;
+    for (let j = 0; j < 3; j++) rel[3 + 3 * i + j] = a0 * R[ob + j]! + a1 * R[ob + 3 + j]! + a2 * R[ob + 6 + j]!;
+  }
+}
+
+/** Whether previous row `r` is a box-box row whose relative pose is within the reuse bounds of `rel`. */
+function reusable(P: Contact3DState['previous'], r: number, size: number): boolean {
+  if (P.local[r] !== 1) return false;
+  const o = 12 * r, RP = P.relPose, shift = REUSE_SHIFT * size;
+  for (let k = 0; k < 3; k++) if (Math.abs(RP[o + k]! - rel[k]!) > shift) return false;
+  for (let k = 3; k < 12; k++) if (Math.abs(RP[o + k]! - rel[k]!) > REUSE_TURN) return false;
+  return true;
+}
+
+/** Rebuilds `manifold` from previous row r's local normal and points at the current poses of colliders a and b. */
+function reuseManifold(P: Contact3DState['previous'], r: number, a: number, b: number): void {
+  const sc = scratch, R = sc.R, oa = 9 * a, ob = 9 * b, m = manifold;
+  const ax = sc.px[a]!, ay = sc.py[a]!, az = sc.pz[a]!, bx = sc.px[b]!, by = sc.py[b]!, bz = sc.pz[b]!;
+  const N = P.localNormal, u = N[3 * r]!, v = N[3 * r + 1]!, w = N[3 * r + 2]!;
+  const nx = R[oa]! * u + R[oa + 1]! * v + R[oa + 2]! * w, ny = R[oa + 3]! * u + R[oa + 4]! * v + R[oa + 5]! * w, nz = R[oa + 6]! * u + R[oa + 7]! * v + R[oa + 8]! * w;
+  m.nx = nx; m.ny = ny; m.nz = nz;
+  const LA = P.localA, LB = P.localB, count = P.points[r]!;
+  for (let k = 0; k < count; k++) {
+    const q = 3 * (4 * r + k);
+    const pax = ax + R[oa]! * LA[q]! + R[oa + 1]! * LA[q + 1]! + R[oa + 2]! * LA[q + 2]!;
+    const pay = ay + R[oa + 3]! * LA[q]! + R[oa + 4]! * LA[q + 1]! + R[oa + 5]! * LA[q + 2]!;
+    const paz = az + R[oa + 6]! * LA[q]! + R[oa + 7]! * LA[q + 1]! + R[oa + 8]! * LA[q + 2]!;
+    const pbx = bx + R[ob]! * LB[q]! + R[ob + 1]! * LB[q + 1]! + R[ob + 2]! * LB[q + 2]!;
+    const pby = by + R[ob + 3]! * LB[q]! + R[ob + 4]! * LB[q + 1]! + R[ob + 5]! * LB[q + 2]!;
+    const pbz = bz + R[ob + 6]! * LB[q]! + R[ob + 7]! * LB[q + 1]! + R[ob + 8]! * LB[q + 2]!;
+    m.x[k] = (pax + pbx) / 2; m.y[k] = (pay + pby) / 2; m.z[k] = (paz + pbz) / 2;
+    m.sep[k] = (pbx - pax) * nx + (pby - pay) * ny + (pbz - paz) * nz;
+    m.id[k] = P.id[4 * r + k]!;
+  }
+  m.count = count;
+}
+
+/** Writes row i's reuse fields: copied from the reused previous row, or from the manifold just computed. */
+function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: number): void {
+  buf.local[i] = 1;
+  const P = st.previous, from = boxRow.from;
+  if (from >= 0) {
+    for (let k = 0; k < 12; k++) buf.relPose[12 * i + k] = P.relPose[12 * from + k]!;
+    for (let k = 0; k < 3; k++) buf.localNormal[3 * i + k] = P.localNormal[3 * from + k]!;
+    for (let k = 0; k < 12; k++) { buf.localA[12 * i + k] = P.localA[12 * from + k]!; buf.localB[12 * i + k] = P.localB[12 * from + k]!; }
+    return;
+  }
+  const sc = scratch, R = sc.R, a = boxRow.a, b = boxRow.b, oa = 9 * a, ob = 9 * b, m = manifold;
+  for (let k = 0; k < 12; k++) buf.relPose[12 * i + k] = rel[k]!;
+  const nx = m.nx, ny = m.ny, nz = m.nz;
+  buf.localNormal[3 * i] = R[oa]! * nx + R[oa + 3]! * ny + R[oa + 6]! * nz;
+  buf.localNormal[3 * i + 1] = R[oa + 1]! * nx + R[oa + 4]! * ny + R[oa + 7]! * nz;
+  buf.localNormal[3 * i + 2] = R[oa + 2]! * nx + R[oa + 5]! * ny + R[oa + 8]! * nz;
+  for (let k = 0; k < m.count; k++) {
+    const h = m.sep[k]! / 2, q = 3 * (4 * i + k);
+    // The point's ends on A's surface (back along n by s / 2) and on B's, each in its box's frame.
+    const dax = m.x[k]! - nx * h - sc.px[a]!, day = m.y[k]! - ny * h - sc.py[a]!, daz = m.z[k]! - nz * h - sc.pz[a]!;
+    const dbx = m.x[k]! + nx * h - sc.px[b]!, dby = m.y[k]! + ny * h - sc.py[b]!, dbz = m.z[k]! + nz * h - sc.pz[b]!;
+    buf.localA[q] = R[oa]! * dax + R[oa + 3]! * day + R[oa + 6]! * daz;
+    buf.localA[q + 1] = R[oa + 1]! * dax + R[oa + 4]! * day + R[oa + 7]! * daz;
+    buf.localA[q + 2] = R[oa + 2]! * dax + R[oa + 5]! * day + R[oa + 8]! * daz;
+    buf.localB[q] = R[ob]! * dbx + R[ob + 3]! * dby + R[ob + 6]! * dbz;
+    buf.localB[q + 1] = R[ob + 1]! * dbx + R[ob + 4]! * dby + R[ob + 7]! * dbz;
+    buf.localB[q + 2] = R[ob + 2]! * dbx + R[ob + 5]! * dby + R[ob + 8]! * dbz;
+  }
 }
 
 /** A pair's manifold found: wakes a sleeper met by a moving body, and emits the rows unless neither body is dynamic. */
@@ -488,7 +590,9 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
     const P = type[bodyB] === BodyType.Static ? c.Position : c.PreviousPosition;
     bx = P.x[bodyB]!; by = P.y[bodyB]!; bz = P.z[bodyB]!;
   }
-  const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
+  // A box pair's reuse fields (see REUSE_SHIFT); other rows are never reused.
+  if (boxRow.a >= 0) storeLocal(st, buf, i); else buf.local[i] = 0;
+  const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
   const P = st.previous;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
