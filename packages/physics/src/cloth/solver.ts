@@ -42,40 +42,56 @@ export function clothSystem(world: PhysicsWorld): void {
   const c = world.components;
   const h = world.h, S = cl.substeps, hs = h / S, ihs = 1 / hs, ihs2 = ihs * ihs;
   const gx = world.gravity[0]!, gy = world.gravity[1]!;
-  const massesChanged = gatherPoints(cl, c, gx * h, gy * h);
+  const k = cl.scalars;
+  k[0] = hs; k[1] = ihs; k[2] = gx * hs; k[3] = gy * hs; k[4] = gx * h; k[5] = gy * h; k[6] = ihs2;
+  const np = cl.pointCount, rigid = cl.rigidCount;
+  let massesChanged = false;
+  for (let i = 0; i < np; i += CHUNK) if (gatherPoints(cl, c, i, Math.min(np, i + CHUNK))) massesChanged = true;
   // The per-link factors depend on the links, the points' inverse masses and h_s only: most steps reuse them.
   if (massesChanged || cl.preparedVersion !== cl.built || cl.preparedStep !== hs) {
-    prepareLinks(cl, ihs2);
+    for (let l = 0; l < n; l += CHUNK) prepareLinks(cl, l, Math.min(n, l + CHUNK));
     cl.preparedVersion = cl.built; cl.preparedStep = hs;
   }
-  solveSubsteps(cl, S, hs, ihs, gx * hs, gy * hs);
-  scatterPoints(cl, c, ihs);
+  for (let sub = 0; sub < S; sub++) {
+    for (let i = 0; i < np; i += CHUNK) predictPoints(cl, sub > 0, i, Math.min(np, i + CHUNK));
+    // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
+    for (let l = 0; l < rigid; l += CHUNK) projectLinks(cl, l, Math.min(rigid, l + CHUNK));
+    if (sub < S - 1) for (let l = rigid; l < n; l += CHUNK) projectLinks(cl, l, Math.min(n, l + CHUNK));
+    else for (let l = rigid; l < n; l += CHUNK) projectLinksRecording(cl, l, Math.min(n, l + CHUNK));
+  }
+  for (let i = 0; i < np; i += CHUNK) scatterPoints(cl, c, i, Math.min(np, i + CHUNK));
   // Strains from squared lengths: q = (L / r)^2, so strain = sqrt(q) - 1 and a link tears when q > (1 + tear)^2.
-  const torn = scanStrains(cl);
-  cl.maxStretch = Math.sqrt(cl.scratch[0]!) - 1;
-  if (torn > 0) tearLinks(world, ihs2);
+  let maxQ = 1;
+  for (let l = 0; l < n; l += CHUNK) maxQ = largestStretch(cl, l, Math.min(n, l + CHUNK), maxQ);
+  cl.maxStretch = Math.sqrt(maxQ) - 1;
+  if (maxQ > cl.tearQ) tearLinks(world, ihs2);
 }
 
-// The solver's passes are separate functions that read the packed arrays from the ClothState (one
-// hidden class, typed-array fields): clothSystem was one loop nest, optimised on stack replacement part
-// way through its first call, so the code after the loop being run (the strain scan, the tear reports)
-// was compiled before the interpreter had recorded any type feedback for it, and was thrown away
-// ("insufficient type feedback") and recompiled a varying number of times, in an order set by the
-// concurrent compiler. Now each pass gets its feedback before it is optimised, and the rarely run tear
-// path has its own function. The arithmetic is the same, operation for operation: same results to the bit.
+/**
+ * Links, or points, a call of one of the passes below handles. Each pass is its own function, called for
+ * one chunk at a time, and ends with its loop. The solver used to be one function, called once a step,
+ * whose loops V8 compiled while they ran (on-stack replacement) before the interpreter had recorded type
+ * feedback for the code after them; that code then gave its compiled version up ("insufficient type
+ * feedback") on every call, and which loops ended up running in the interpreter or in baseline code
+ * changed from run to run. Called dozens of times a step, each pass is compiled whole, with the feedback
+ * of all its lines, within the first steps. The passes read their scalars from `ClothState.scalars`: passed
+ * as arguments, doubles were unboxed inside the loops and the projection ran about 4% slower. The
+ * arithmetic is the same, operation for operation, in the same order: same results to the bit.
+ */
+const CHUNK = 2048;
 
 /**
- * Gathers the points into the buffer's sections (see ClothState.buffer). Moving points restart from the
- * start of the step with the integrator's velocity less this step's gravity (gxh, gyh = g h, added back a
- * substep at a time); fixed points (w = 0: pinned, static, kinematic) stay where they are.
- * @returns whether any point's inverse mass differs from the one the buffer held.
+ * Gathers points [from, to) into the buffer's sections (see ClothState.buffer). Moving points restart from
+ * the start of the step with the integrator's velocity less this step's gravity (g h, added back a substep
+ * at a time); fixed points (w = 0: pinned, static, kinematic) stay where they are.
+ * @returns whether any of these points' inverse mass differs from the one the buffer held.
  */
-function gatherPoints(cl: ClothState, c: Components, gxh: number, gyh: number): boolean {
-  let changed = false;
-  const P = cl.points, np = cl.pointCount, xb = cl.buffer, U = 5 * np;
+function gatherPoints(cl: ClothState, c: Components, from: number, to: number): boolean {
+  const P = cl.points, xb = cl.buffer, U = 5 * cl.pointCount, gxh = cl.scalars[4]!, gyh = cl.scalars[5]!;
   const px = c.Position.x, py = c.Position.y, inv = c.Mass.inv;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, vx = c.Velocity.x, vy = c.Velocity.y;
-  for (let i = 0; i < np; i++) {
+  let changed = false;
+  for (let i = from; i < to; i++) {
     const e = P[i]!, o = 3 * i, v = 2 * i, w = inv[e]!;
     if (xb[o + 2] !== w) { xb[o + 2] = w; changed = true; }
     if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[U + v] = vx[e]! - gxh; xb[U + v + 1] = vy[e]! - gyh; }
@@ -85,66 +101,69 @@ function gatherPoints(cl: ClothState, c: Components, gxh: number, gyh: number): 
 }
 
 /**
- * Per link, once a step: p = r^2 / 3 and k = (2/3) / (w_a + w_b + alpha~), so that a projection takes one
- * division: s = (3 p - L^2) / (p + L^2) and x_a -= w_a k s d, x_b += w_b k s d (the header's step).
+ * Per link of [from, to), once a step: p = r^2 / 3 and k = (2/3) / (w_a + w_b + alpha~), so that a
+ * projection takes one division: s = (3 p - L^2) / (p + L^2) and x_a -= w_a k s d, x_b += w_b k s d (the
+ * header's step).
  */
-function prepareLinks(cl: ClothState, ihs2: number): void {
-  const xb = cl.buffer, I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, n = cl.count;
-  for (let l = 0; l < n; l++) {
+function prepareLinks(cl: ClothState, from: number, to: number): void {
+  const xb = cl.buffer, I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, ihs2 = cl.scalars[6]!;
+  for (let l = from; l < to; l++) {
     const d = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + K[l]! * ihs2, r = R[l]!;
     F[2 * l] = (r * r) / 3; F[2 * l + 1] = d > 0 ? 2 / (3 * d) : 0;
   }
 }
 
-/**
- * The substeps: each predicts the moving points (velocities from the last substep's moves from the
- * second substep on, then v += g h_s, x += v h_s, with dvx, dvy = g h_s) and makes one Gauss-Seidel pass
- * over the links: inextensible links, then the compliant ones, whose multipliers restart each substep;
- * the last substep keeps each compliant link's multiplier in `lam` (for break forces).
- */
-function solveSubsteps(cl: ClothState, S: number, hs: number, ihs: number, dvx: number, dvy: number): void {
-  const xb = cl.buffer, I = cl.pair, F = cl.solve, lam = cl.lambda;
-  const np = cl.pointCount, rigid = cl.rigidCount, n = cl.count, Q = 3 * np, U = 5 * np;
-  for (let sub = 0; sub < S; sub++) {
-    for (let i = 0; i < np; i++) {
-      const o = 3 * i;
-      if (xb[o + 2] === 0) continue;
-      const v = 2 * i, x = xb[o]!, y = xb[o + 1]!;
-      let v1: number, v2: number;
-      if (sub > 0) { v1 = (x - xb[Q + v]!) * ihs + dvx; v2 = (y - xb[Q + v + 1]!) * ihs + dvy; }
-      else { v1 = xb[U + v]! + dvx; v2 = xb[U + v + 1]! + dvy; }
-      xb[Q + v] = x; xb[Q + v + 1] = y;
-      xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
-    }
-    for (let l = 0; l < rigid; l++) {
-      const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-      const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
-      const dx = bx - ax, dy = by - ay;
-      const p = F[2 * l]!, d2 = dx * dx + dy * dy;
-      const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
-      xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
-      xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
-    }
-    const last = sub === S - 1;
-    for (let l = rigid; l < n; l++) {
-      const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-      const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
-      const dx = bx - ax, dy = by - ay;
-      const p = F[2 * l]!, d2 = dx * dx + dy * dy;
-      const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
-      // The multiplier of this projection: dlambda = -C / D = (r - L) / D = (s / D) L, with s / D = ks.
-      if (last) lam[l] = ks * Math.sqrt(d2);
-      xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
-      xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
-    }
+/** Points [from, to): velocities from the last substep's moves (when `after`: from the second substep on), then predict: v += g h_s, x += v h_s. */
+function predictPoints(cl: ClothState, after: boolean, from: number, to: number): void {
+  const xb = cl.buffer, np = cl.pointCount, Q = 3 * np, U = 5 * np, k = cl.scalars;
+  const hs = k[0]!, ihs = k[1]!, dvx = k[2]!, dvy = k[3]!;
+  for (let i = from; i < to; i++) {
+    const o = 3 * i;
+    if (xb[o + 2] === 0) continue;
+    const v = 2 * i, x = xb[o]!, y = xb[o + 1]!;
+    let v1: number, v2: number;
+    if (after) { v1 = (x - xb[Q + v]!) * ihs + dvx; v2 = (y - xb[Q + v + 1]!) * ihs + dvy; }
+    else { v1 = xb[U + v]! + dvx; v2 = xb[U + v + 1]! + dvy; }
+    xb[Q + v] = x; xb[Q + v + 1] = y;
+    xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
   }
 }
 
-/** Writes the moving points' positions and velocities (from their last substep's move) back to the stores. */
-function scatterPoints(cl: ClothState, c: Components, ihs: number): void {
-  const P = cl.points, np = cl.pointCount, xb = cl.buffer, Q = 3 * np;
+/** One Gauss-Seidel pass over the packed links [from, to). */
+function projectLinks(cl: ClothState, from: number, to: number): void {
+  const xb = cl.buffer, I = cl.pair, F = cl.solve;
+  for (let l = from; l < to; l++) {
+    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
+    const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
+    const dx = bx - ax, dy = by - ay;
+    const p = F[2 * l]!, d2 = dx * dx + dy * dy;
+    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
+    xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
+    xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
+  }
+}
+
+/** `projectLinks`, also keeping each link's multiplier in `lambda` (the last substep's, for break forces). */
+function projectLinksRecording(cl: ClothState, from: number, to: number): void {
+  const xb = cl.buffer, I = cl.pair, F = cl.solve, lam = cl.lambda;
+  for (let l = from; l < to; l++) {
+    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
+    const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
+    const dx = bx - ax, dy = by - ay;
+    const p = F[2 * l]!, d2 = dx * dx + dy * dy;
+    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
+    // The multiplier of this projection: dlambda = -C / D = (r - L) / D = (s / D) L, with s / D = ks.
+    lam[l] = ks * Math.sqrt(d2);
+    xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
+    xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
+  }
+}
+
+/** Writes points [from, to) that move back to the stores: positions, and velocities from their last substep's move. */
+function scatterPoints(cl: ClothState, c: Components, from: number, to: number): void {
+  const P = cl.points, xb = cl.buffer, Q = 3 * cl.pointCount, ihs = cl.scalars[1]!;
   const px = c.Position.x, py = c.Position.y, vx = c.Velocity.x, vy = c.Velocity.y;
-  for (let i = 0; i < np; i++) {
+  for (let i = from; i < to; i++) {
     const o = 3 * i;
     if (xb[o + 2] === 0) continue;
     const e = P[i]!, v = 2 * i;
@@ -153,19 +172,16 @@ function scatterPoints(cl: ClothState, c: Components, ihs: number): void {
   }
 }
 
-/** Largest q = (L / r)^2 of the links (at least 1) into cl.scratch[0]; returns how many links are past their tear strain. */
-function scanStrains(cl: ClothState): number {
-  const xb = cl.buffer, I = cl.pair, F = cl.solve, T = cl.tear, n = cl.count;
-  let maxQ = 1, torn = 0;
-  for (let l = 0; l < n; l++) {
+/** The larger of `maxQ` and the largest q = (L / r)^2 of links [from, to). */
+function largestStretch(cl: ClothState, from: number, to: number, maxQ: number): number {
+  const xb = cl.buffer, I = cl.pair, F = cl.solve;
+  for (let l = from; l < to; l++) {
     const oa = I[2 * l]!, ob = I[2 * l + 1]!;
     const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
-    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!), t1 = 1 + T[l]!;
+    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!);
     if (q > maxQ) maxQ = q;
-    if (q > t1 * t1) torn++;
   }
-  cl.scratch[0] = maxQ;
-  return torn;
+  return maxQ;
 }
 
 /** Tears the links past their tear strain: reports each in `world.joints.breaks` (in link order), then removes them. */
@@ -210,16 +226,19 @@ function pack(world: PhysicsWorld): void {
     return compact[e]! * 3;
   };
   // Inextensible links go first, the compliant ones after (see clothSystem).
-  let front = 0, back = n - 1;
+  let front = 0, back = n - 1, tearQ = Infinity;
   for (let i = 0; i < n; i++) {
     const e = links[i]!;
     const k = L.compliance[e]! === 0 ? front++ : back--;
     cl.link[k] = e; cl.pair[2 * k] = index(L.a[e]!); cl.pair[2 * k + 1] = index(L.b[e]!);
     cl.rest[k] = L.restLength[e]!; cl.compliance[k] = L.compliance[e]!; cl.tear[k] = L.tearStretch[e]!;
+    const t1 = 1 + L.tearStretch[e]!;
+    if (t1 * t1 < tearQ) tearQ = t1 * t1;
   }
   colourOrder(cl, 0, front, points.length);
   colourOrder(cl, front, n, points.length);
   cl.rigidCount = front;
+  cl.tearQ = tearQ;
   cl.count = n;
   cl.points = Int32Array.from(points);
   cl.pointCount = points.length;

@@ -33,8 +33,10 @@ export interface ClothState {
   seenStamp: number;
   /** Largest strain (length - rest) / rest of any link after the last solve. */
   maxStretch: number;
-  /** The solver's scratch: [0] the largest squared stretch ratio (L / r)^2 of the last solve. */
-  scratch: Float64Array;
+  /** Smallest (1 + tearStretch)^2 of the packed links (Infinity when none tears): no link tears while every (L / r)^2 is at most this. */
+  tearQ: number;
+  /** This step's scalars for the solver's passes: h_s (s), 1 / h_s (1/s), g_x h_s, g_y h_s (m/s), g_x h, g_y h (m/s), 1 / h_s^2 (1/s^2). */
+  scalars: Float64Array;
 }
 
 /** An empty cloth state. */
@@ -44,7 +46,7 @@ export function createClothState(): ClothState {
     link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
     rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
     pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,
-    scratch: new Float64Array(1), preparedVersion: -1, preparedStep: 0,
+    tearQ: Infinity, scalars: new Float64Array(7), preparedVersion: -1, preparedStep: 0,
   };
   // maxStretch and preparedStep hold fractions: V8 gives a field first written with 0 small-integer storage
   // and changes the object's hidden class when the first fraction arrives, which threw the solver's
