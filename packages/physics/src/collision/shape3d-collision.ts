@@ -33,8 +33,8 @@ function meets(ta: number, tb: number): boolean {
  * - Poses are those at the start of the step (PreviousPosition, and the orientation turned back by
  *   the step's rotation w h), as the solver measures displacement from there.
  * - Broadphase: bounding boxes (a box's own, tight; other shapes a sphere of their reach about their
- *   centre) fattened by the speculative margin and what the body's speed covers in the step, in a
- *   hashed uniform grid (`pairs`).
+ *   centre) fattened by half the speculative distance and what the body's speed covers in the step
+ *   (two such boxes overlap when the shapes are within the pair's margin), in a hashed uniform grid (`pairs`).
  * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
  *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
  *   neither body is dynamic are skipped; sensors push nothing.
@@ -231,7 +231,9 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
         speed += Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
       }
     }
-    const pad = speed * h + spec;
+    // Half the speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
+    // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
+    const pad = speed * h + 0.5 * spec;
     // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
     let wx = reach, wy = reach, wz = reach;
     if (!isBall && s.kind[e] === Shape3DKind.Box) {
@@ -643,12 +645,14 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
   if (!sc.ball[i] && s.sensor[e]) return;
   const Bd = m.bounds, N = m.normals, V = m.vertices, T = m.triangles;
   const margin = world.collision.settings.speculativeDistance + sc.speed[i]! * world.h;
+  // The triangles' boxes are not fattened: the collider's box takes the other half of the speculative distance here.
+  const g = 0.5 * world.collision.settings.speculativeDistance;
   collider(world, s, i, colB);
   const reach = sc.ball[i] ? colB.radius : s.reach[e]!;
   const out = manifold;
   for (let t = 0, nt = T.length / 3; t < nt; t++) {
     const o = 6 * t;
-    if (Bd[o]! > sc.maxX[i]! || Bd[o + 3]! < sc.minX[i]! || Bd[o + 1]! > sc.maxY[i]! || Bd[o + 4]! < sc.minY[i]! || Bd[o + 2]! > sc.maxZ[i]! || Bd[o + 5]! < sc.minZ[i]!) continue;
+    if (Bd[o]! > sc.maxX[i]! + g || Bd[o + 3]! < sc.minX[i]! - g || Bd[o + 1]! > sc.maxY[i]! + g || Bd[o + 4]! < sc.minY[i]! - g || Bd[o + 2]! > sc.maxZ[i]! + g || Bd[o + 5]! < sc.minZ[i]! - g) continue;
     const nx = N[3 * t]!, ny = N[3 * t + 1]!, nz = N[3 * t + 2]!;
     const a = 3 * T[3 * t]!, bb = 3 * T[3 * t + 1]!, c = 3 * T[3 * t + 2]!;
     const d = nx * V[a]! + ny * V[a + 1]! + nz * V[a + 2]!;
