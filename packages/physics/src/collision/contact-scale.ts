@@ -23,14 +23,17 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
  * The frequency a substep can hold is bounded (BALL_HERTZ_FRACTION of the substep rate), and at a fixed
  * step a small ball's own time scale sqrt(r / g) holds fewer substeps than a big one's: a 2 cm ball at
  * dt 1/60 with 4 substeps is a 0.5 m ball at dt 1/12. So when the step's ball contacts need a frequency
- * above the substep rate, the step takes more solver substeps (`solverSubstepsFor`; at most
- * MAX_AUTO_SUBSTEPS): every ball contact then gets its full stiffness. At dt 1/60 and contactHertz 60
- * this starts below a radius of 6.25 cm (2 cm: 8 substeps; 1 cm: 10; 5 mm: 15). Measured on the
- * bench's Galton board of 2,000 balls of 2 cm (`--scene galton`, seeds 1, 2, 3): deepest overlap
- * 8.4 / 10.6 / 15.2 % of a radius with 4 substeps, 4.1 / 1.9 / 1.8 % with 8; the solver's time grows
- * about in proportion to the substeps (the board's median step 1.6 times the 4-substep one). Big
- * balls (balls-in-box's 0.5 m) keep the world's count. `CollisionSettings.autoSubsteps` false keeps
- * exactly `solverSubsteps` (the stiffness is then capped at the substep rate, as before).
+ * f above AUTO_HERTZ_FRACTION of the substep rate, the step takes more solver substeps
+ * (`solverSubstepsFor`, at most MAX_AUTO_SUBSTEPS): every ball contact then gets its full stiffness,
+ * at f h_s <= 0.6, where piles settle. At dt 1/60 and contactHertz 60 this starts below a radius of
+ * 17.4 cm (10 cm: 6 substeps; 4 cm: 9; 2 cm: 12; 1.1 cm and less: 16). Measured on the bench's Galton
+ * board of 2,000 balls of 2 cm (`--scene galton`, seeds 1, 2, 3): deepest overlap 8.4 / 10.6 / 15.2 %
+ * of a radius with 4 substeps, 1.6 / 1.6 / 1.5 % with the automatic 12; the board's step costs
+ * more in proportion to the contact solver's share (see the report of issue 13 for the ratio).
+ * Big balls (balls-in-box's 0.5 m: 3 would do) keep the world's count. `CollisionSettings.autoSubsteps`
+ * false keeps exactly `solverSubsteps` (the stiffness then capped at the substep rate, as before).
+ * The length moves toward a new smallest radius gradually (LENGTH_RAMP), so a scene whose smallest
+ * ball comes and goes does not jolt the contacts of the others.
  */
 
 /** The length at which the world's contact tolerances apply as given, m. */
@@ -38,9 +41,10 @@ export const CONTACT_LENGTH_UNIT = 1;
 
 /**
  * Highest ball contact frequency, as a fraction of the solver substep rate (Box2D v3 caps at a quarter;
- * with the heavy damping of `contactDampingRatio` 10 the implicit spring stays stable up to the substep
- * rate itself, and the 2 cm balls need it: a 300-ball bin of them overlaps 41 % of a radius at a quarter,
- * 12 % at a half and 3 % at one).
+ * with the heavy damping of `contactDampingRatio` 10 the implicit spring holds up to the substep rate
+ * itself: a 300-ball bin of 2 cm balls overlaps 41 % of a radius at a quarter, 12 % at a half and 3 %
+ * at one). Dense piles near the cap do not settle, though (see AUTO_HERTZ_FRACTION), which is why the
+ * automatic substeps aim lower; the cap binds only with `autoSubsteps` false or past MAX_AUTO_SUBSTEPS.
  */
 export const BALL_HERTZ_FRACTION = 1;
 
@@ -75,8 +79,9 @@ export function contactLength(buf: ContactBuffer): number {
  * Most the contact length of a world changes from one step to the next, as a factor (the stiffness,
  * proportional to 1 / sqrt(length), by at most its square root, 1.22). A pile of 0.5 m balls rests
  * at its 85 Hz overlap; when a 2 cm ball lands on it the step's contacts jump to 424 Hz, and the
- * sudden push-out threw the big balls up at 2.3 m/s (0.06 m/s at the old 240 Hz cap); ramped over
- * about 8 steps they move at most 0.1 m/s (a 2 cm ball resting there from the start: 0.02 m/s).
+ * sudden push-out threw the big balls up at 0.8 m/s (2.3 m/s at a fixed 12 substeps; 0.06 m/s at the
+ * old 240 Hz cap); ramped over
+ * about 8 steps they move at most 0.09 m/s (a 2 cm ball resting there from the start: 0.02 m/s).
  */
 export const LENGTH_RAMP = 1.5;
 
