@@ -14,6 +14,8 @@ import {
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
+import { solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
+import { isShared, sharedFloat64 } from '../threads/pool.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, withScaledSubsteps } from './contact-scale.js';
 
 /**
@@ -92,7 +94,10 @@ function solveContacts(world: PhysicsWorld): void {
   prepareJoints3D(world, hs);
   const is2D = world.dimensions === 2;
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
-  for (let s = 0; s < substeps; s++) {
+  // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
+  const colored = is2D && useColoredSolve(world, buf, jointsToSolve(world) || cs.shapes.manifolds.count > 0);
+  if (colored) solveColoredSubsteps(world, buf, hs, [dyn.biasRate, dyn.massScale, dyn.impulseScale, rigid.biasRate, rigid.massScale, rigid.impulseScale], push);
+  for (let s = 0; s < (colored ? 0 : substeps); s++) {
     integrateVelocities(world, hs);
     warmStartJoints(world);
     warmStartJoints3D(world);
@@ -195,9 +200,12 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   cs.solverBodyCount = count;
 
   const S = stride(world);
-  if (cs.bodyState.length < count * 12) {
-    cs.bodyState = new Float64Array(Math.max(count * 12, cs.bodyState.length * 2));
-    cs.bodyExtra = new Float64Array(Math.max(count * 6, cs.bodyExtra.length * 2));
+  // A threaded world keeps the solver state on shared memory (the coloured solve, contact-colors.ts).
+  const shared = world.threadPool !== null && world.dimensions === 2;
+  if (cs.bodyState.length < count * 12 || (shared && !isShared(cs.bodyState))) {
+    const sizeS = Math.max(count * 12, cs.bodyState.length * 2), sizeE = Math.max(count * 6, cs.bodyExtra.length * 2);
+    cs.bodyState = shared ? sharedFloat64(sizeS) : new Float64Array(sizeS);
+    cs.bodyExtra = shared ? sharedFloat64(sizeE) : new Float64Array(sizeE);
   }
   const sb = cs.bodyState, ex = cs.bodyExtra;
   sb.fill(0, 0, S);

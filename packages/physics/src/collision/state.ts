@@ -62,6 +62,14 @@ export interface CollisionSettings {
    * contacts scale it by sqrt(r / 1 m) (see contact-scale.ts). Default 3 m/s.
    */
   contactPushSpeed: number;
+  /**
+   * Fewest ball contact rows for a 2D world with threads (`threads: n > 1`) to solve its contacts by
+   * graph colouring on the threads (collision/contact-colors.ts), integer >= 0. Default 16384. The
+   * coloured solve applies impulses colour by colour instead of in the one-thread order, so such a
+   * world's trajectory differs from the one-thread world's; it is the same for every n > 1.
+   * Infinity keeps the one-thread order (and its results to the bit) at any size.
+   */
+  coloredSolveMinRows: number;
   /** Gap within which contacts are kept even without approach speed, m. Default 0.1 m (Box2D v3 pads its bounding boxes by the same margin), so a body knocked sideways during a step still meets the contacts it runs into. */
   speculativeDistance: number;
   /**
@@ -237,6 +245,7 @@ export function createCollisionState(
       contactDampingRatio: 10,
       contactPushSpeed: 3,
       speculativeDistance: 0.1,
+      coloredSolveMinRows: 16384,
       stickSpeed: 0.01,
     },
     boundary: {
