@@ -80,8 +80,8 @@ export function contactLength(buf: ContactBuffer): number {
  * proportional to 1 / sqrt(length), by at most its square root, 1.22). A pile of 0.5 m balls rests
  * at its 85 Hz overlap; when a 2 cm ball lands on it the step's contacts jump to 424 Hz, and the
  * sudden push-out threw the big balls up at 0.8 m/s (2.3 m/s at a fixed 12 substeps; 0.06 m/s at the
- * old 240 Hz cap); ramped over
- * about 8 steps they move at most 0.09 m/s (a 2 cm ball resting there from the start: 0.02 m/s).
+ * old 240 Hz cap); ramped over about 8 steps they move at most 0.09 m/s (a 2 cm ball resting there
+ * from the start: 0.02 m/s).
  */
 export const LENGTH_RAMP = 1.5;
 
