@@ -41,6 +41,8 @@ const PLAN_HEAD = 8;
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
+  /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each). */
+  counts: Int32Array; start: Int32Array; next: Int32Array;
 }
 
 const scratchOf = new WeakMap<CollisionState, ColorScratch>();
@@ -52,6 +54,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
       params: new Float64Array(16), color: new Uint8Array(1024), mask: new Uint32Array(1024), arrays: [],
+      counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
     };
     scratchOf.set(cs, s);
   }
@@ -85,7 +88,8 @@ function colorAndPack(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): 
   const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
   const sb = cs.bodyState, mask = s.mask, color = s.color, plan = s.plan;
   mask.fill(0, 0, bodies);
-  const counts = new Int32Array(MAX_COLORS + 1);
+  const counts = s.counts;
+  counts.fill(0);
   for (let i = 0; i < n; i++) {
     if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) { color[i] = 255; continue; } // a row that can do nothing
     const a = IA[i]!, b = IB[i]!;
@@ -107,13 +111,15 @@ function colorAndPack(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): 
   // Colour starts (the overflow colour last), then rows in buffer order within each colour.
   let used = 0;
   for (let c = 0; c < MAX_COLORS; c++) if (counts[c]! > 0) used = c + 1;
-  const start = new Int32Array(MAX_COLORS + 2);
+  const start = s.start;
+  start.fill(0);
   let at = 0;
   for (let c = 0; c < used; c++) { start[c] = at; at += counts[c]!; }
   start[used] = at; at += counts[MAX_COLORS]!; start[used + 1] = at;
   plan[4] = used;
   for (let c = 0; c <= used + 1; c++) plan[PLAN_HEAD + c] = start[c]!;
-  const next = start.slice(0, used + 1);
+  const next = s.next;
+  next.set(start);
   const overflow = used;
   const pk = s.pack;
   const NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation, FB = buf.frictionBound, RP = buf.rigidPartner;

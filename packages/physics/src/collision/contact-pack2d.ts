@@ -1,10 +1,10 @@
 /**
- * The 2D ball contacts' soft-step rows (solver.ts) packed for the substeps: one row of `PACK_STRIDE`
- * numbers a contact in a single Float64Array, so the warm start and the 8 or more solve passes a step
- * read one stream instead of fourteen (Box2D v3 keeps its contact constraints packed the same way).
- * Used by the coloured solve on the world's threads (contact-colors.ts), which packs the rows colour
- * by colour; rows that can do nothing (no mass to move, no impulse to warm start: the impact stage
- * took them out) are left out.
+ * The 2D ball contacts' soft-step rows (solver.ts) packed for the coloured solve on the world's
+ * threads (contact-colors.ts): one row of `PACK_STRIDE` numbers a contact in a single shared
+ * Float64Array, colour by colour (Box2D v3 keeps its contact constraints packed the same way). Rows
+ * that can do nothing (no mass to move, no impulse to warm start: the impact stage took them out) are
+ * left out. The one-thread solve keeps the contact buffer's own arrays: packing them for it measured
+ * no faster (20,000 balls, 8 passes over 52,000 rows: 115 ms packed vs 113 ms not, load 16).
  */
 
 import type { ContactBuffer } from './contacts.js';
