@@ -28,13 +28,12 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
   let bad = 0;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
-    const x = px[e]!, y = py[e]!, z = pz[e]!;
+    const x = px[e]!, y = py[e]!;
     gx[i] = x; gy[i] = y; gm[i] = m[e]!; ge[i] = e;
-    if (is3D) gz[i] = z;
     if (x < minX) minX = x; if (x > maxX) maxX = x;
     if (y < minY) minY = y; if (y > maxY) maxY = y;
     if (x - x !== 0 || y - y !== 0) bad = 1; // NaN or infinite
-    if (is3D) { if (z < minZ) minZ = z; if (z > maxZ) maxZ = z; if (z - z !== 0) bad = 1; }
+    if (is3D) { const z = pz[e]!; gz[i] = z; if (z < minZ) minZ = z; if (z > maxZ) maxZ = z; if (z - z !== 0) bad = 1; }
   }
   if (!is3D) { minZ = 0; maxZ = 0; }
   const o = part * 8;
@@ -293,19 +292,18 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
  * first digit) sorted by the bits below it, stably (insertion for BUCKET_INSERTION_MAX keys or
  * fewer, else least-significant-digit radix passes of 8 bits, each skipped when all its digits are
  * equal), so the keys end in (key, input index) order, the order of a stable sort of the whole
- * array; then slot s of the bucket gets input body idx[s]'s position and mass, and perm[s] = idx[s].
- * A: key2, idx2 (pass 2's output; also scratch), key (Uint32, out: sorted keys), idx (Int32, out:
- * input index in sorted order), bucket (Int32: first slot of each bucket, 2^P[9] + 1 entries),
+ * array; then slot s of the bucket gets input body perm[s]'s position and mass.
+ * A: key2, idx2 (pass 2's output; also scratch), key (Uint32, out: sorted keys), perm (Int32, out:
+ * input index in sorted order, the tree's perm), bucket (Int32: first slot of each bucket, 2^P[9] + 1 entries),
  * group (Int32: part p sorts buckets group[p] .. group[p + 1] - 1), local (Int32, BUCKET_RADIX
- * counts a part), x, y, z, m (input order), tx, ty, tz, tm (out, tree order; tz only in 3D: in 2D it stays 0), perm
- * (Int32, out). P: SORT_PARAMS. Returns 0.
+ * counts a part), x, y, z, m (input order), tx, ty, tz, tm (out, tree order; tz only in 3D: in 2D
+ * it stays 0). P: SORT_PARAMS. Returns 0.
  */
 export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const key2 = A[0] as Uint32Array, idx2 = A[1] as Int32Array, key = A[2] as Uint32Array, idx = A[3] as Int32Array;
+  const key2 = A[0] as Uint32Array, idx2 = A[1] as Int32Array, key = A[2] as Uint32Array, perm = A[3] as Int32Array;
   const bucket = A[4] as Int32Array, group = A[5] as Int32Array, local = A[6] as Int32Array;
   const x = A[7] as Float64Array, y = A[8] as Float64Array, z = A[9] as Float64Array, m = A[10] as Float64Array;
   const tx = A[11] as Float64Array, ty = A[12] as Float64Array, tz = A[13] as Float64Array, tm = A[14] as Float64Array;
-  const perm = A[15] as Int32Array;
   const is3D = P[5] === 3, topShift = P[8]!;
   for (let part = lo; part < hi; part++) {
     const base = part * 256;
@@ -313,18 +311,18 @@ export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Ar
       const a = bucket[r]!, b = bucket[r + 1]!;
       if (a === b) continue;
       if (b - a <= 48) {
-        // Insertion into key, idx (strictly larger keys move up: stable).
+        // Insertion into key, perm (strictly larger keys move up: stable).
         for (let s = a; s < b; s++) {
           const k = key2[s]!, v = idx2[s]!;
           let j = s;
-          while (j > a && key[j - 1]! > k) { key[j] = key[j - 1]!; idx[j] = idx[j - 1]!; j--; }
-          key[j] = k; idx[j] = v;
+          while (j > a && key[j - 1]! > k) { key[j] = key[j - 1]!; perm[j] = perm[j - 1]!; j--; }
+          key[j] = k; perm[j] = v;
         }
       } else {
-        // LSD radix passes over the bits below the first digit, between (key2, idx2) and (key, idx).
+        // LSD radix passes over the bits below the first digit, between (key2, idx2) and (key, perm).
         let inKey2 = true;
         for (let shift = 0; shift < topShift; shift += 8) {
-          const sk = inKey2 ? key2 : key, si = inKey2 ? idx2 : idx, dk = inKey2 ? key : key2, di = inKey2 ? idx : idx2;
+          const sk = inKey2 ? key2 : key, si = inKey2 ? idx2 : perm, dk = inKey2 ? key : key2, di = inKey2 ? perm : idx2;
           local.fill(0, base, base + 256);
           for (let s = a; s < b; s++) local[base + ((sk[s]! >>> shift) & 255)]!++;
           if (local[base + ((sk[a]! >>> shift) & 255)] === b - a) continue;
@@ -336,11 +334,11 @@ export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Ar
           }
           inKey2 = !inKey2;
         }
-        if (inKey2) for (let s = a; s < b; s++) { key[s] = key2[s]!; idx[s] = idx2[s]!; }
+        if (inKey2) for (let s = a; s < b; s++) { key[s] = key2[s]!; perm[s] = idx2[s]!; }
       }
       for (let s = a; s < b; s++) {
-        const i = idx[s]!;
-        tx[s] = x[i]!; ty[s] = y[i]!; tm[s] = m[i]!; perm[s] = i;
+        const i = perm[s]!;
+        tx[s] = x[i]!; ty[s] = y[i]!; tm[s] = m[i]!;
         if (is3D) tz[s] = z[i]!;
       }
     }

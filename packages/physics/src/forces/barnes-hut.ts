@@ -161,8 +161,8 @@ export interface GravityTree {
   momentList: Int32Array; momentCut: Int32Array; momentTop: Int32Array; momentDown: Int32Array; momentCut1: Int32Array; momentLists: KernelArray[][];
   /** Quadrant counts and offsets of a split. */
   counts: Int32Array;
-  /** Morton keys and input indices in sorted order, and the sort's second buffers. */
-  key: Uint32Array; idx: Int32Array; key2: Uint32Array; idx2: Int32Array;
+  /** Morton keys in sorted order (their input indices are `perm`), and the sort's second buffers (keys, input indices). */
+  key: Uint32Array; key2: Uint32Array; idx2: Int32Array;
   /** Task stack of the build: per task [lo, hi, inA, depth, parent] and [cx, cy, cz, half]. */
   taskI: Int32Array; taskF: Float64Array;
   /** Parent of each node (-1 for the root). */
@@ -195,7 +195,7 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     sortBucket: I32(0), sortGroup: I32(MAX_PARTS + 1), sortLists: [[], [], []],
     momentList: I32(0), momentCut: I32(MAX_PARTS + 1), momentTop: new Int32Array(256), momentDown: new Int32Array(256), momentCut1: new Int32Array(2), momentLists: [[], []],
     counts: new Int32Array(16),
-    key: new Uint32Array(0), idx: new Int32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
+    key: new Uint32Array(0), key2: new Uint32Array(0), idx2: new Int32Array(0),
     taskI: new Int32Array(MAX_DEPTH * 8 * 5), taskF: new Float64Array(MAX_DEPTH * 8 * 4),
     parent: I32(nodes),
     ax: new Float64Array(0), ay: new Float64Array(0), az: new Float64Array(0),
@@ -235,7 +235,7 @@ function growBodies(t: GravityTree, n: number): void {
   t.ax = f64(t, size); t.ay = f64(t, size); t.az = f64(t, size);
   t.scratch.length = 0;
   const u32 = (k: number): Uint32Array => (t.shared ? new Uint32Array(new SharedArrayBuffer(4 * k)) : new Uint32Array(k));
-  t.key = u32(size); t.idx = i32(t, size); t.key2 = u32(size); t.idx2 = i32(t, size);
+  t.key = u32(size); t.key2 = u32(size); t.idx2 = i32(t, size);
 }
 
 function growNodes(t: GravityTree, needed: number): void {
@@ -330,7 +330,7 @@ function buildTreeWith(
 }
 
 /**
- * The Morton sort of buildTreeWith and the bodies into tree order: keys (t.key, t.idx) in (key, input
+ * The Morton sort of buildTreeWith and the bodies into tree order: keys (t.key, t.perm) in (key, input
  * index) order, the order of a stable sort, and t.x, t.y, t.z, t.m, t.perm in that order. Three
  * kernels (barnes-hut-gather.ts): the keys with each part's histogram of the first digit (the top
  * sortDigitBits(n) bits), the parts' bodies to their buckets in order, then the buckets sorted by
@@ -383,7 +383,7 @@ function mortonSort(
   }
   group[parts] = R;
   A3.length = 0;
-  A3.push(t.key2, t.idx2, t.key, t.idx, bucket, group, t.sortLocal, x as Float64Array, y as Float64Array, z as Float64Array, m as Float64Array, t.x, t.y, t.z, t.m, t.perm);
+  A3.push(t.key2, t.idx2, t.key, t.perm, bucket, group, t.sortLocal, x as Float64Array, y as Float64Array, z as Float64Array, m as Float64Array, t.x, t.y, t.z, t.m);
   if (parts > 1) pool!.run(system, KERNEL.mortonBucketSort, A3, P, parts, null);
   else mortonBucketSort(A3, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, n);
