@@ -564,7 +564,30 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   }
   // The entity index has no version: compared with the query lists (it usually equals a query's).
   const dense = lists.encode(ix.dense, null);
-  return { aliveCount: ix.aliveCount, maxId, dense, layout, masks, queries, lists: lists.lists };
+  const ecs = { aliveCount: ix.aliveCount, maxId, dense, layout, masks, queries, lists: lists.lists };
+  const versions = new WeakMap<object, number>();
+  for (const q of ctx.queries) {
+    for (const set of [q, q.toRemove]) { const v = versionOf(set); if (v !== undefined) versions.set(set, v); }
+  }
+  matching.set(ecs, versions);
+  return ecs;
+}
+
+/**
+ * For the ECS part of a snapshot (by object identity, so a cloned or parsed snapshot has none): the
+ * version (lean-ecs.ts) each query set of a world had when its members were known to equal the
+ * snapshot's list for it, recorded when the snapshot was taken and when a restore wrote the list.
+ * A set whose version is still that one has not changed since: restoring the snapshot again (a
+ * rewind, a rollback) need not compare or write it.
+ */
+const matching = new WeakMap<object, WeakMap<object, number>>();
+function newMatching(ecs: object): WeakMap<object, number> {
+  const m = new WeakMap<object, number>();
+  matching.set(ecs, m);
+  return m;
+}
+function versionOf(set: object): number | undefined {
+  return (set as { version?: number }).version;
 }
 
 /** Reads an id list encoded by IdLists. */
@@ -636,6 +659,7 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   const byKey = new Map<string, QueryData>();
   for (const q of ctx.queries) { const d = describeQuery(q, names); if (d !== null) byKey.set(keyOf(d), q); }
   const done = new Set<QueryData>();
+  let known = matching.get(ecs);
   ctx.dirtyQueries.clear();
   for (const enc of ecs.queries as Encoded[]) {
     const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
@@ -650,9 +674,16 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       if (q === undefined) throw new Error(`restore: could not make the query ${keyOf(d)}`);
     }
     done.add(q);
-    setContent(q, idList(qd.dense!, lists, 'query'));
     const rem = idList(qd.toRemove!, lists, 'query');
-    setContent(q.toRemove, rem);
+    for (const [set, ids] of [[q, idList(qd.dense!, lists, 'query')], [q.toRemove, rem]] as const) {
+      // A set that has not changed since it last held this snapshot's list (taken from this world, or
+      // written by an earlier restore of it) is left as it is; any other is compared and written.
+      const v = versionOf(set);
+      if (v !== undefined && known?.get(set) === v) continue;
+      setContent(set, ids);
+      const after = versionOf(set);
+      if (after !== undefined) (known ??= newMatching(ecs)).set(set, after);
+    }
     if (rem.length > 0) ctx.dirtyQueries.add(q);
   }
   for (const q of ctx.queries) {
