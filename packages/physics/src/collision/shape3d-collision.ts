@@ -163,6 +163,11 @@ function classifyDynamic3D(world: PhysicsWorld, b: number): number {
   return BodyType.Dynamic;
 }
 
+/** Per shape slot (a ball's body slot): its collider index in the scratch this pass, valid where colliderStamp holds the pass's stamp. */
+let colliderOf = new Int32Array(0), colliderStamp = new Int32Array(0), colliderPass = 0;
+/** Whether a sensor shape took part in this pass (resting colliders then search every step: sensor events need it). */
+let anySensor = false;
+
 /** Per body slot: the step stamp and body type of the static, kinematic and sleeping bodies (scratch). */
 let classStamp = new Int32Array(0), classKind = new Uint8Array(0), classStep = 0;
 
@@ -181,6 +186,9 @@ function markClasses(world: PhysicsWorld): number {
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
 function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const stamp = markClasses(world);
+  if (colliderOf.length < world.capacity + 1) { colliderOf = new Int32Array(world.capacity + 1); colliderStamp = new Int32Array(world.capacity + 1); colliderPass = 0; }
+  const pass = ++colliderPass;
+  anySensor = false;
   const c = world.components, cs = world.collision;
   const invInertia = cs.invInertia;
   const balls = query(world, [c.Position, c.Ball]);
@@ -243,6 +251,8 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       wz = ex * Math.abs(R[o + 6]!) + ey * Math.abs(R[o + 7]!) + ez * Math.abs(R[o + 8]!);
     }
     sc.shape[n] = e; sc.body[n] = b; sc.ball[n] = isBall ? 1 : 0; sc.speed[n] = speed;
+    colliderOf[e] = n; colliderStamp[e] = pass;
+    if (!isBall && s.sensor[e] === 1) anySensor = true;
     sc.px[n] = cx; sc.py[n] = cy; sc.pz[n] = cz;
     sc.minX[n] = cx - wx - pad; sc.maxX[n] = cx + wx + pad; sc.minY[n] = cy - wy - pad; sc.maxY[n] = cy + wy + pad; sc.minZ[n] = cz - wz - pad; sc.maxZ[n] = cz + wz + pad;
     n++;
@@ -277,10 +287,23 @@ function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: 
   return (ca & mb) === 0 || (cb & ma) === 0;
 }
 
+/**
+ * A resting collider (its body dynamic and below the sleep thresholds at the end of the last step:
+ * rest time > 0) searches its neighbourhood only every RESTING_SEARCH_PERIOD steps (staggered by
+ * collider); in between, its pairs are those a searching neighbour finds and those that had a manifold
+ * last step. A pair it misses was farther apart than the margin (speculative distance, 0.1 m by
+ * default) at the last search and, both bodies under the sleep speeds, closes at most
+ * 2 (v_sleep + w_sleep reach) per second: only colliders whose reach keeps that under a quarter of the
+ * speculative distance over the period skip (at the defaults, dt 1/60 s: reach up to 2.75 m), so a
+ * missed pair is found before it can touch. With a sensor in the world, or sleeping off, every collider
+ * searches every step (sensor overlaps have no manifold to carry them).
+ */
+const RESTING_SEARCH_PERIOD = 8;
+
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
 const grid = {
   start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(0),
-  packed: new Float64Array(0), source: new Uint8Array(0),
+  packed: new Float64Array(0), source: new Uint8Array(0), searching: new Uint8Array(0),
 };
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
@@ -337,17 +360,27 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   const placed = start[size]!;
   if (grid.packed.length < 6 * placed) { grid.packed = new Float64Array(12 * placed); grid.source = new Uint8Array(2 * placed); }
   const pk = grid.packed, src = grid.source;
+  // Which colliders search their neighbourhood this step (see the note at RESTING_SEARCH_PERIOD).
+  if (grid.searching.length < n) grid.searching = new Uint8Array(Math.max(64, 2 * n));
+  const sl = world.collision.sleep, searching = grid.searching, rest = sl.restTime, phase = world.steps;
+  // How far a resting pair may close between searches (both at the sleep speeds) must stay under half the speculative distance.
+  const reachCap = sl.enabled && !anySensor ? (0.25 * world.collision.settings.speculativeDistance / (RESTING_SEARCH_PERIOD * world.h) - sl.linearSpeed) / Math.max(sl.angularSpeed, 1e-12) : -1;
+  for (let i = 0; i < n; i++) {
+    const b = sc.body[i]!, t = type[b]!;
+    const reach = sc.ball[i] === 1 ? world.components.Ball.radius[b]! : s.reach[sc.shape[i]!]!;
+    const skips = t === BodyType.Dynamic && rest[b]! > 0 && reach <= reachCap && (phase + i) % RESTING_SEARCH_PERIOD !== 0;
+    searching[i] = (t === BodyType.Kinematic || t === BodyType.Dynamic) && !skips ? 1 : 0;
+  }
   for (let k = 0; k < placed; k++) {
-    const j = items[k]!, o = 6 * k, tj = type[sc.body[j]!]!;
+    const j = items[k]!, o = 6 * k;
     pk[o] = minX[j]!; pk[o + 1] = maxX[j]!; pk[o + 2] = minY[j]!; pk[o + 3] = maxY[j]!; pk[o + 4] = minZ[j]!; pk[o + 5] = maxZ[j]!;
-    src[k] = tj === BodyType.Dynamic || tj === BodyType.Kinematic ? 1 : 0;
+    src[k] = searching[j]!;
   }
   // Sources: the colliders of moving (dynamic or kinematic) bodies; a resting pile's sleeping and static
   // colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
   for (let i = 0; i < n; i++) {
-    if (order[i] === -1) continue;
+    if (order[i] === -1 || searching[i] === 0) continue;
     const ti = type[sc.body[i]!]!;
-    if (ti !== BodyType.Dynamic && ti !== BodyType.Kinematic) continue;
     const x0 = minX[i]!, x1 = maxX[i]!, y0 = minY[i]!, y1 = maxY[i]!, z0 = minZ[i]!, z1 = maxZ[i]!;
     const cx = Math.floor(x0 * inv), cy = Math.floor(y0 * inv), cz = Math.floor(z0 * inv);
     // A box that overlaps this one has its low corner in [min - cell, max] on each axis (no box is wider
@@ -363,12 +396,24 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
         const o = 6 * k;
         if (pk[o]! > x1 || pk[o + 1]! < x0 || pk[o + 2]! > y1 || pk[o + 3]! < y0 || pk[o + 4]! > z1 || pk[o + 5]! < z0) continue;
         const j = items[k]!;
-        // A pair of two sources is taken from its lower index.
+        // A pair of two searching colliders is taken from its lower index.
         if (j === i || j < i && src[k] === 1) continue;
         if (!meets(ti, type[sc.body[j]!]!)) continue;
         pair(world, s, st, i, j);
       }
     }
+  }
+  // Pairs of which neither collider searched: those that had a manifold last step (resting neighbours).
+  const P = st.previous, cap = world.capacity;
+  for (let r = 0, np = P.count; r < np; r++) {
+    if (P.sub[r] !== 0 || P.bodyA[r] === 0) continue; // planes and mesh triangles: planesAndMeshes
+    const ea = P.shapeA[r]!, eb = P.shapeB[r]!;
+    if (ea > cap || eb > cap || colliderStamp[ea] !== colliderPass || colliderStamp[eb] !== colliderPass) continue;
+    const i = colliderOf[ea]!, j = colliderOf[eb]!;
+    if (searching[i] === 1 || searching[j] === 1 || order[i] === -1 || order[j] === -1) continue;
+    if (minX[j]! > maxX[i]! || maxX[j]! < minX[i]! || minY[j]! > maxY[i]! || maxY[j]! < minY[i]! || minZ[j]! > maxZ[i]! || maxZ[j]! < minZ[i]!) continue;
+    if (!meets(type[sc.body[i]!]!, type[sc.body[j]!]!)) continue;
+    pair(world, s, st, i, j);
   }
   for (let l = 0; l < nl; l++) {
     const i = large[l]!;
@@ -595,14 +640,18 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
   // A box pair's reuse fields (see REUSE_SHIFT); other rows are never reused.
   if (boxRow.a >= 0) storeLocal(st, buf, i); else buf.local[i] = 0;
   const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
-  const P = st.previous;
+  const P = st.previous, reused = boxRow.a >= 0 && boxRow.from >= 0;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
     buf.rax[q] = m.x[k]! - ax; buf.ray[q] = m.y[k]! - ay; buf.raz[q] = m.z[k]! - az;
     buf.rbx[q] = m.x[k]! - bx; buf.rby[q] = m.y[k]! - by; buf.rbz[q] = m.z[k]! - bz;
     buf.sep[q] = m.sep[k]!; buf.id[q] = m.id[k]!;
     buf.ln[q] = 0; buf.lt1[q] = 0; buf.lt2[q] = 0; buf.maxLn[q] = 0;
-    if (prev >= 0) {
+    if (reused) {
+      // A reused manifold has the previous row's points in the same order (reuseManifold).
+      const pq = 4 * prev + k;
+      buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!;
+    } else if (prev >= 0) {
       for (let j = 0; j < P.points[prev]!; j++) {
         const pq = 4 * prev + j;
         if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!; break; }
