@@ -43,13 +43,13 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 
 /**
  * Most bits of the key sort's first (most significant) digit, and its most buckets. The sort takes
- * about log2(n / 2) bits (sortDigitBits), so that a bucket holds a few bodies on average.
+ * about log2(n / 8) bits (sortDigitBits), so that a bucket holds a few bodies on average.
  */
 export const SORT_RADIX_BITS = 16, SORT_RADIX = 1 << SORT_RADIX_BITS;
 
-/** Bits of the key sort's first digit for n bodies: about log2(n / 2), within 1 .. SORT_RADIX_BITS. */
+/** Bits of the key sort's first digit for n bodies: about log2(n / 8), within 1 .. SORT_RADIX_BITS. */
 export function sortDigitBits(n: number): number {
-  return Math.min(SORT_RADIX_BITS, Math.max(1, Math.ceil(Math.log2(Math.max(2, n / 2)))));
+  return Math.min(SORT_RADIX_BITS, Math.max(1, Math.ceil(Math.log2(Math.max(2, n / 8)))));
 }
 /** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
 export const BUCKET_RADIX = 256;
