@@ -71,12 +71,15 @@ export function clothSystem(world: PhysicsWorld): void {
  * Links, or points, a call of one of the passes below handles. Each pass is its own function, called for
  * one chunk at a time, and ends with its loop. The solver used to be one function, called once a step,
  * whose loops V8 compiled while they ran (on-stack replacement) before the interpreter had recorded type
- * feedback for the code after them; that code then gave its compiled version up ("insufficient type
- * feedback") on every call, and which loops ended up running in the interpreter or in baseline code
- * changed from run to run. Called dozens of times a step, each pass is compiled whole, with the feedback
- * of all its lines, within the first steps. The passes read their scalars from `ClothState.scalars`: passed
- * as arguments, doubles were unboxed inside the loops and the projection ran about 4% slower. The
- * arithmetic is the same, operation for operation, in the same order: same results to the bit.
+ * feedback for the code after them; that code gave its compiled version up ("insufficient type
+ * feedback") 3 to 10 times in the first steps, a different number each run, and a stack-replaced loop
+ * whose tail lacked feedback could keep doing so on every call (seen with a strain scan so compiled: in
+ * one run of six it deoptimised in every one of 200 steps). Called dozens of times a step, each pass is
+ * compiled whole, with the feedback
+ * of all its lines, within the first step. The passes read their scalars from `ClothState.scalars`: with
+ * the doubles passed as arguments the same loops measured about 4% slower (likely converted from their
+ * boxed form inside the loops). The arithmetic is the same, operation for operation, in the same order:
+ * same results to the bit.
  */
 const CHUNK = 2048;
 
