@@ -1,5 +1,7 @@
 import { afterEach, expect, test } from 'vitest';
-import { createPhysicsWorld, disposeWorld, SCENES, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, disposeWorld, SCENES, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/solver.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
 
 // The 2D ball contacts solved by graph colouring on the world's threads (collision/contact-colors.ts).
@@ -72,4 +74,28 @@ test('coloured contact solve: a pile of 800 balls settles as on one thread (over
   expect(one.speed).toBeLessThan(0.1);
   // Settled: every ball slower than 0.1 m/s (what gravity adds in 0.6 of a step; a ball still falling or bouncing is faster).
   expect(two.speed).toBeLessThan(0.1);
+});
+
+test('contact rows prepared on 2 threads (coloured solve off): the one-thread state to the bit', () => {
+  // A 70 x 64 lattice of balls 0.02 diameters apart, no gravity, small random velocities: about 8,800
+  // rows from the first step, past PREPARE_MIN_PER_THREAD a thread. Each row is prepared on its own
+  // with the one-thread arithmetic, so the state must match threads: 1 exactly (tolerance zero).
+  const run = (threads: number): [string, PhysicsWorld] => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 70 * 64, gravity: [0, 0], ...(threads > 1 ? { threads } : {}) });
+    worlds.push(world);
+    if (world.threadPool !== null) world.threadPool.adaptive = false;
+    world.collision.settings.coloredSolveMinRows = Infinity;
+    const rng = new Rng(5);
+    for (let j = 0; j < 64; j++) {
+      for (let i = 0; i < 70; i++) addBody(world, { position: [1.02 * i, 1.02 * j], velocity: [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)], radius: 0.5 });
+    }
+    stepMany(world, 3);
+    return [stateHash(world), world];
+  };
+  const [one] = run(1);
+  const [two, world] = run(2);
+  expect(world.collision.stats.contacts).toBeGreaterThan(2 * PREPARE_MIN_PER_THREAD);
+  // The kernel ran: it moves the contact buffers onto shared memory first.
+  expect(world.collision.cache.rows.normalMass.buffer instanceof SharedArrayBuffer).toBe(true);
+  expect(two).toBe(one);
 });

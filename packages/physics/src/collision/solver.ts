@@ -15,7 +15,9 @@ import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, 
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
 import { solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
-import { isShared, sharedFloat64 } from '../threads/pool.js';
+import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
+import { runOnPool } from '../threads/parallel.js';
+import { KERNEL, type KernelArray } from '../threads/kernels.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, withScaledSubsteps } from './contact-scale.js';
 
 /**
@@ -383,7 +385,64 @@ function containInBoundary(world: PhysicsWorld): void {
   }
 }
 
+/** Fewest contact rows a thread for a threaded 2D world to prepare its rows on its threads. */
+export const PREPARE_MIN_PER_THREAD = 4096;
+
+/** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepareOnThreads). */
+const prepareScratch = new WeakMap<PhysicsWorld, { stamp: Uint32Array; arrays: KernelArray[]; params: Float64Array }>();
+
+/** Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same contents). */
+function shareContactBuffer(buf: ContactBuffer): void {
+  const rec = buf as unknown as Record<string, unknown>;
+  for (const key of Object.keys(rec)) {
+    const a = rec[key];
+    if (!ArrayBuffer.isView(a) || a instanceof DataView || isShared(a)) continue;
+    const copy = sharedLike(a as KernelArray, (a as KernelArray).length);
+    copy.set(a as never);
+    rec[key] = copy;
+  }
+}
+
+/**
+ * prepareContacts of a 2D world on its threads (kernel prepareContacts2D: each row on its own, the
+ * same arithmetic, so the rows are identical to the bit); false when the world has no threads, too few
+ * rows, or the pool declines (the caller's loop then runs).
+ * @throws Error naming contactSolverSystem if a worker thread failed.
+ */
+function prepareOnThreads(world: PhysicsWorld, buf: ContactBuffer, stick: number): boolean {
+  const pool = world.threadPool;
+  const n = buf.count;
+  if (pool === null || world.dimensions !== 2 || n < PREPARE_MIN_PER_THREAD * pool.threads) return false;
+  const cs = world.collision, c = world.components, cache = cs.cache;
+  const M = c.Material;
+  if (!isShared(M.restitution) || !isShared(M.friction) || !isShared(M.staticFriction) || !isShared(cs.bodyState)) return false;
+  shareContactBuffer(buf);
+  shareContactBuffer(cache.rows);
+  if (!isShared(cache.slots)) { const s = sharedLike(cache.slots, cache.slots.length); s.set(cache.slots); cache.slots = s; }
+  let S = prepareScratch.get(world);
+  if (S === undefined || S.stamp.length < world.spawnStamp.length) {
+    S = { stamp: sharedLike(world.spawnStamp, world.spawnStamp.length), arrays: [], params: new Float64Array(8) };
+    prepareScratch.set(world, S);
+  }
+  S.stamp.set(world.spawnStamp);
+  const prev = cache.rows, box = cs.boundary;
+  const A = S.arrays;
+  A.length = 0;
+  A.push(buf.a, buf.b, buf.ia, buf.ib, buf.kind, buf.feature, buf.nx, buf.ny, buf.ra, buf.rb, cs.bodyState,
+    M.restitution, M.friction, M.staticFriction, S.stamp,
+    buf.normalMass, buf.tangentMass, buf.rigidPartner, buf.t1x, buf.t1y, buf.t1z, buf.restitution, buf.friction,
+    buf.frictionBound, buf.relativeVelocity, buf.totalNormalImpulse, buf.impulse, buf.normalImpulse,
+    buf.tangentImpulse1, buf.tangentImpulse2, buf.maxNormalImpulse, buf.stampA, buf.stampB,
+    prev.kind, prev.a, prev.b, prev.feature, prev.stampA, prev.stampB, prev.normalImpulse, prev.tangentImpulse1,
+    prev.tangentImpulse2, cache.slots);
+  const P = S.params;
+  P[0] = stick; P[1] = box.restitution; P[2] = box.friction; P[3] = box.staticFriction;
+  P[4] = cache.size === 0 ? 0 : prev.count; P[5] = cache.size; P[6] = ContactKind.Ball; P[7] = ContactKind.Boundary;
+  return runOnPool(pool, 'contactSolverSystem', KERNEL.prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null;
+}
+
 function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number): void {
+  if (prepareOnThreads(world, buf, stick)) return;
   const c = world.components;
   const cs = world.collision;
   const n = buf.count;
