@@ -118,6 +118,28 @@ describe('snapshot and restore', () => {
     }
   });
 
+  test('trailing-zero trimming keeps every bit: -0 and NaN at the end, odd lengths, small element types, repeated values', () => {
+    // The snapshot stores an array up to its last element whose bits are not all zero, read as 64-bit
+    // words where aligned; each case below puts the last such element where a word-sized read could misjudge it.
+    const world = createPhysicsWorld({ capacity: 10 });
+    const cases: Record<string, ArrayLike<number> & { [i: number]: number }> = {
+      negZero64: new Float64Array(11), nan64: new Float64Array(11), negZero32: new Float32Array(11), odd32: new Int32Array(11),
+      even32: new Uint32Array(12), bytes: new Uint8Array(13), shorts: new Int16Array(9), repeated32: new Uint32Array(11), repeated64: new Float64Array(11),
+    };
+    cases.negZero64![9] = -0; cases.nan64![10] = NaN; cases.negZero32![10] = -0; cases.odd32![10] = -1; cases.even32![10] = 7;
+    cases.bytes![12] = 1; cases.shorts![7] = -2;
+    for (let i = 1; i < 11; i++) { cases.repeated32![i] = 3; cases.repeated64![i] = 0.1; }
+    (world as unknown as Record<string, unknown>).futureArrays = cases;
+    const saved = snapshot(world);
+    const expected = Object.fromEntries(Object.entries(cases).map(([k, a]) => [k, Array.from(a)]));
+    for (const a of Object.values(cases)) for (let i = 0; i < a.length; i++) a[i] = 5;
+    restore(world, saved);
+    for (const [k, a] of Object.entries(cases)) {
+      const want = expected[k]!;
+      for (let i = 0; i < a.length; i++) expect(Object.is(a[i], want[i]), `${k}[${i}]: ${a[i]} vs ${want[i]}`).toBe(true);
+    }
+  });
+
   test('stage settings come from the snapshot (gravity, dt, integrator, solver settings)', () => {
     const world = createPhysicsWorld({ capacity: 50, dt: 1 / 120, integrator: 'velocity-verlet', solverSubsteps: 6, gravity: [0, -3] });
     addBody(world, { position: [0, 10] });
