@@ -652,8 +652,12 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   // Entity index (written in place: its arrays stay packed).
   const dense = idList(ecs.dense!, lists, 'ecs.dense');
   const aliveCount = ecs.aliveCount as number;
-  writeInPlace(ix.dense, dense, dense.length);
-  for (let i = 0; i < dense.length; i++) ix.sparse[dense[i]!] = i;
+  // Unchanged (a rewind without births or deaths): its sparse array, kept in step with it, is too.
+  if (!sameAsStored(ix.dense, dense)) {
+    writeInPlace(ix.dense, dense, dense.length);
+    const sparse = ix.sparse;
+    for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
+  }
   ix.aliveCount = aliveCount;
   ix.maxId = maxId;
   // Component sets: derived from the masks in a world made by createPhysicsWorld; rebuilt otherwise.
