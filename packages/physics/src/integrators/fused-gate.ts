@@ -15,7 +15,7 @@ import { bodyThrustSystem } from '../forces/body-thrust.js';
 import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
 import { vortexSystem } from '../forces/vortex.js';
 import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
-import { setFusedForces } from './fused-state.js';
+import { beginFusedSubstep } from './fused-state.js';
 
 /**
  * When a substep may fuse stages 2 to 4 for the world's forced bodies: one pass that writes each
@@ -121,5 +121,5 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
 
 /** Called by `step` at the start of every substep: turns the fused pass on or off for it. */
 export function armFusedForces(world: PhysicsWorld): void {
-  setFusedForces(world, fusedForcesAllowed(world));
+  beginFusedSubstep(world, fusedForcesAllowed(world));
 }

@@ -23,8 +23,16 @@ export function fusedForcesOn(world: PhysicsWorld): boolean {
   return current === world;
 }
 
-/** Turns the fused pass of `world` on or off (the gate, the integrator and `evaluateForces` call this). */
+/** Turns the fused pass of `world` on or off (the integrator and `evaluateForces` call this). */
 export function setFusedForces(world: PhysicsWorld, value: boolean): void {
   if (value) current = world;
   else if (current === world) current = null;
+}
+
+/**
+ * The start of a substep of `world` (`step`, through the gate): the pass on for it or off, and off for
+ * any other world (one whose step threw before its integrator ran is not held on to).
+ */
+export function beginFusedSubstep(world: PhysicsWorld, value: boolean): void {
+  current = value ? world : null;
 }
