@@ -7,8 +7,10 @@ import { sig } from '../scenes/format.js';
  * The snapshot study (`--scene snapshot`): what `snapshot(world)` and `restore(world, snapshot)` cost
  * for a balls-in-box world of `count` bodies after `warmup` steps (contacts, warm-start caches and
  * sleeping islands in place), as medians over `steps` rounds: snapshot, snapshot over an earlier
- * snapshot's buffer (`snapshot(world, reuse)`, a rollback ring), restore into the same world (a
- * rewind), restore into a fresh world made with the same options; beside them, a plain copy of the
+ * snapshot's buffer (`snapshot(world, reuse)`, a rollback ring), restore into the same world one
+ * step after the snapshot (a rewind), restore into a fresh world made with the same options; each
+ * round first steps the world once (untimed), so every snapshot and rewind sees a state that moved
+ * (and query lists that sleeping and waking changed); beside them, a plain copy of the
  * snapshot's bytes into a new buffer, the floor any snapshot that allocates its data pays. It checks that both restored
  * worlds step to the same state as the world the snapshot came from (stateHash after 10 steps).
  */
@@ -32,6 +34,9 @@ export const snapshotStudy: BenchStudy = {
     let saved = snapshot(world);
     let spare = snapshot(world);
     for (let r = 0; r < options.steps; r++) {
+      // One step (untimed) before the snapshots and again before the rewind, as in a rollback loop:
+      // bodies move, some fall asleep or wake, so the state and query lists differ from the last round's.
+      stepMany(world, 1);
       let t = performance.now();
       saved = snapshot(world);
       snapMs.push(performance.now() - t);
@@ -39,6 +44,7 @@ export const snapshotStudy: BenchStudy = {
       t = performance.now();
       spare = snapshot(world, spare);
       reuseMs.push(performance.now() - t);
+      stepMany(world, 1);
       t = performance.now();
       restore(world, saved);
       rewindMs.push(performance.now() - t);

@@ -17,7 +17,9 @@ import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
  * id down (their entries above it are zero). Scratch arrays (the broadphase grid, see SCRATCH) are
  * stored as their type only. The format is unchanged by these: a version 2 snapshot written before
- * them restores as it did. `restore` writes into the world's own arrays
+ * them restores as it did. Restoring a snapshot object into the world it was taken from (or into
+ * one it was restored into before) leaves alone the query lists that have not changed since (their
+ * versions say so), and the entity index when it is equal. `restore` writes into the world's own arrays
  * where their type and length match (systems and renderers keep them), so it allocates no big array
  * in a world that already has them.
  *
