@@ -237,7 +237,9 @@ describe('snapshot captures every piece of state', () => {
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
     // integrators/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
     // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
-    const scratch = new Set(['pipeline/step.ts', 'forces/gravity.ts', 'integrators/fused-state.ts', 'snapshot/snapshot.ts']);
+    // collision/solver.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
+    // before each use) and its kernel's argument list.
+    const scratch = new Set(['pipeline/step.ts', 'forces/gravity.ts', 'integrators/fused-state.ts', 'snapshot/snapshot.ts', 'collision/solver.ts']);
     const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];
     const walk = (dir: string) => {
