@@ -107,10 +107,13 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     let shift = 0;
     if (ka > 0) { const e = buf.bodyA[i]!; shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz; }
     if (kb > 0) { const e = buf.bodyB[i]!; shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz; }
+    let minSep = Infinity, reachA = 0, reachB = 0;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k, o = JAC * q;
       buf.sep[q] = buf.sep[q]! + shift;
       const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
+      if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
+      reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz); reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
       // Per direction u (n, t1, t2): r_A x u, r_B x u, and I_A^-1 (r_A x u), I_B^-1 (r_B x u), then the effective mass.
       for (let d = 0; d < 3; d++) {
         const ux = d === 0 ? nx : d === 1 ? t1x : t2x, uy = d === 0 ? ny : d === 1 ? t1y : t2y, uz = d === 0 ? nz : d === 1 ? t1z : t2z;
@@ -130,6 +133,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
         - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
     }
+    // For the solver's skip of a speculative manifold (solveManifolds3D); padded for the single-precision crosses.
+    buf.minSep[i] = minSep; buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9; buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
   }
 }
 
@@ -272,7 +277,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
   const sep = buf.sep, LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2, MN = buf.mn, MT1 = buf.mt1, MT2 = buf.mt2, MAX = buf.maxLn;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
-  const ISO = buf.iso, T = st.invInertia;
+  const ISO = buf.iso, T = st.invInertia, MINSEP = buf.minSep, RA = buf.reachA, RB = buf.reachB;
   const invHs = 1 / hs;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!, kb = IB[i]!, a = 12 * ka, b = 12 * kb;
@@ -289,6 +294,23 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     if (ka > 0) { const e = 6 * ka, r = 3 * ka; hax = ex[e + 3]! - base[r]!; hay = ex[e + 4]! - base[r + 1]!; haz = ex[e + 5]! - base[r + 2]!; }
     if (kb > 0) { const e = 6 * kb, r = 3 * kb; hbx = ex[e + 3]! - base[r]!; hby = ex[e + 4]! - base[r + 1]!; hbz = ex[e + 5]! - base[r + 2]!; }
     const m = PTS[i]!;
+    // A speculative manifold that cannot close this substep is skipped, exactly: no impulse yet, and every
+    // point's s >= minSep + dn - |theta_A| reach_A - |theta_B| reach_B > 0 with
+    // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
+    // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
+    if (MINSEP[i]! > 0) {
+      let idle = true;
+      for (let k = 0; k < m; k++) { const q = 4 * i + k; if (LN[q] !== 0 || LT1[q] !== 0 || LT2[q] !== 0) { idle = false; break; } }
+      if (idle) {
+        const rA = RA[i]!, rB = RB[i]!;
+        const sLow = MINSEP[i]! + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
+        if (sLow > 0) {
+          const vLow = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz
+            - Math.sqrt(wax * wax + way * way + waz * waz) * rA - Math.sqrt(wbx * wbx + wby * wby + wbz * wbz) * rB;
+          if (vLow + sLow * invHs >= 0) continue;
+        }
+      }
+    }
     // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
     const iso = ISO[i] === 1, iA = iso ? T[6 * ka]! : 0, iB = iso ? T[6 * kb]! : 0;
     let pushed = false;

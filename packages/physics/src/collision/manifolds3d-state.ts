@@ -19,6 +19,8 @@ export interface Manifold3DBuffer {
   points: Uint8Array;
   /** 1 when both bodies' world inverse inertia is isotropic (i 1) this step (manifold3d-solver.ts reads fewer numbers), else 0. */
   iso: Uint8Array;
+  /** Per row, set by the solver's prepare: the least start separation of its points (m) and the longest anchor on A and on B (m, slightly padded). */
+  minSep: Float64Array; reachA: Float64Array; reachB: Float64Array;
   nx: Float64Array; ny: Float64Array; nz: Float64Array;
   t1x: Float64Array; t1y: Float64Array; t1z: Float64Array;
   friction: Float64Array; restitution: Float64Array;
@@ -42,7 +44,7 @@ function createBuffer(n: number): Manifold3DBuffer {
   const i = (k: number): Int32Array => new Int32Array(k), f = (k: number): Float64Array => new Float64Array(k);
   const p = 4 * n;
   return {
-    count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), sub: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n), iso: new Uint8Array(n),
+    count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), sub: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n), iso: new Uint8Array(n), minSep: f(n), reachA: f(n), reachB: f(n),
     nx: f(n), ny: f(n), nz: f(n), t1x: f(n), t1y: f(n), t1z: f(n), friction: f(n), restitution: f(n),
     rax: f(p), ray: f(p), raz: f(p), rbx: f(p), rby: f(p), rbz: f(p), sep: f(p), id: f(p),
     ln: f(p), lt1: f(p), lt2: f(p), mn: f(p), mt1: f(p), mt2: f(p), vn0: f(p), maxLn: f(p),
