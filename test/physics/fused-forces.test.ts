@@ -15,28 +15,29 @@ import { fusedForcesAllowed } from '../../packages/physics/src/integrators/fused
 
 const noop = (): void => {};
 
-/** A 2D world of particles of every kind the pass handles, stiff and not, and plain bodies with drag. */
-function mixedWorld(substeps: number): PhysicsWorld {
-  const world = createPhysicsWorld({ dimensions: 2, capacity: 6000, gravity: [0, -9.81], seed: 3, substeps });
+/** A world of particles of every kind the pass handles, stiff and not, and plain bodies with drag. */
+function mixedWorld(substeps: number, dimensions: 2 | 3 = 2): PhysicsWorld {
+  const world = createPhysicsWorld({ dimensions, capacity: 6000, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0], seed: 3, substeps });
+  const v = (x: number, y: number): number[] => (dimensions === 2 ? [x, y] : [x, y, 0.5 * x]);
   // Quadratic drag: k |v| h / m from ~0.004 (5 m/s) to ~0.3 at 40 m/s, so some steps are stiff.
-  const quad = addEmitter(world, { position: [0, 0], rate: 3000, speed: [5, 40], lifetime: [0.3, 0.9], particle: { mass: 0.002, quadraticDrag: 1e-3 } });
+  const quad = addEmitter(world, { position: v(0, 0), rate: 3000, speed: [5, 40], lifetime: [0.3, 0.9], particle: { mass: 0.002, quadraticDrag: 1e-3 } });
   void quad;
   // Linear drag: k h / m = 0.5 (stiff) for one emitter, 0.05 for the other.
-  addEmitter(world, { position: [3, 0], rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.3 } });
-  addEmitter(world, { position: [-3, 0], rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.03 } });
+  addEmitter(world, { position: v(3, 0), rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.3 } });
+  addEmitter(world, { position: v(-3, 0), rate: 1500, speed: [2, 6], lifetime: [0.2, 0.6], particle: { mass: 0.01, linearDrag: 0.03 } });
   // Mass only (a force accumulator, no law): exact free fall; bursts into quadratic-drag sparks.
   const sparks = addEmitter(world, { speed: [1, 3], lifetime: [0.2, 0.4], particle: { mass: 0.001, quadraticDrag: 2e-5 } });
-  addEmitter(world, { position: [0, 1], rate: 120, speed: [8, 12], lifetime: [0.2, 0.5], particle: { mass: 0.1 }, onDeath: { emitter: sparks, count: 10, maxGeneration: 1 } });
+  addEmitter(world, { position: v(0, 1), rate: 120, speed: [8, 12], lifetime: [0.2, 0.5], particle: { mass: 0.1 }, onDeath: { emitter: sparks, count: 10, maxGeneration: 1 } });
   // Ordinary bodies with drag beside the particles.
-  addBody(world, { position: [10, 5], velocity: [3, 1], mass: 2, quadraticDrag: 0.05 });
-  addBody(world, { position: [-10, 5], velocity: [-3, 1], mass: 2, linearDrag: 0.5 });
+  addBody(world, { position: v(10, 5), velocity: v(3, 1), mass: 2, quadraticDrag: 0.05 });
+  addBody(world, { position: v(-10, 5), velocity: v(-3, 1), mass: 2, linearDrag: 0.5 });
   return world;
 }
 
 describe('the fused force-and-integrate pass', () => {
-  test('gives the separate stages\' state to the bit (particles with quadratic, linear and no drag, stiff and not; 1 and 2 substeps)', () => {
-    for (const substeps of [1, 2]) {
-      const fused = mixedWorld(substeps), separate = mixedWorld(substeps);
+  test('gives the separate stages\' state to the bit (particles with quadratic, linear and no drag, stiff and not; 1 and 2 substeps; 2D and 3D)', () => {
+    for (const [substeps, dimensions] of [[1, 2], [2, 2], [1, 3]] as const) {
+      const fused = mixedWorld(substeps, dimensions), separate = mixedWorld(substeps, dimensions);
       addSystem(separate, 'forces', noop);
       let fusedSteps = 0;
       for (let i = 0; i < 120; i++) {
@@ -45,8 +46,8 @@ describe('the fused force-and-integrate pass', () => {
         step(fused); step(separate);
       }
       // The pass really ran (all but the first step, before any particle had a force accumulator).
-      expect(fusedSteps, `substeps ${substeps}`).toBeGreaterThanOrEqual(119);
-      expect(stateHash(fused), `substeps ${substeps}`).toBe(stateHash(separate));
+      expect(fusedSteps, `${dimensions}D substeps ${substeps}`).toBeGreaterThanOrEqual(119);
+      expect(stateHash(fused), `${dimensions}D substeps ${substeps}`).toBe(stateHash(separate));
     }
   });
 
@@ -100,7 +101,7 @@ describe('the fused force-and-integrate pass', () => {
       return world;
     };
     expect(fusedForcesAllowed(make())).toBe(true);
-    // Another integrator; 3D; threads are covered by the same first line of the gate.
+    // Another integrator (worker threads are refused by the same first line of the gate).
     expect(fusedForcesAllowed(createPhysicsWorld({ dimensions: 2, integrator: 'rk4' }))).toBe(false);
     let w = make();
     setWind(w, { velocity: [1, 0] });

@@ -29,7 +29,7 @@ import { beginFusedSubstep } from './fused-state.js';
  * the state after a step is identical to the bit. It is used only where nothing else can touch a force
  * accumulator between the clear and the integrator, checked at the start of every substep:
  *
- * - the world integrates with semi-implicit Euler, is 2D and has no worker threads, and its air is calm
+ * - the world (2D or 3D) integrates with semi-implicit Euler, has no worker threads, and its air is calm
  *   (no wind: drag then reads the body's own velocity);
  * - the clearForces stage is exactly `clearForcesSystem`, and the integrate stage starts with the
  *   world's integrator (`registerFusedIntegrator`), so no user system reads or writes forces there;
@@ -96,7 +96,7 @@ export function registerFusedIntegrator(system: System): void {
 
 /** Whether the current substep of `world` may run the fused pass (the conditions of the module comment). */
 export function fusedForcesAllowed(world: PhysicsWorld): boolean {
-  if (world.dimensions !== 2 || world.integrator !== 'semi-implicit-euler' || world.threadPool !== null) return false;
+  if (world.integrator !== 'semi-implicit-euler' || world.threadPool !== null) return false;
   const stages = world.stages;
   const clear = stages.clearForces, integrate = stages.integrate, forces = stages.forces;
   if (clear.length !== 1 || clear[0] !== clearForcesSystem) return false;

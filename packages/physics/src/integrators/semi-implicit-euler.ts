@@ -54,13 +54,13 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
 
   let ents = forcedBodies(world);
   let check = 0;
-  const fused = is2D && fusedForcesOn(world);
+  const fused = fusedForcesOn(world);
   if (fused) setFusedForces(world, false);
   const par = fused || world.threadPool === null ? null : is2D
     ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced2, [px, py, vx, vy, ox, oy, fx, fy, im], [h, gxh, gyh, hx, hy], ents.length, ents)
     : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced3, [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im], [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
   if (fused) {
-    fusedForced2(world, h);
+    if (is2D) fusedForced2(world, h); else fusedForced3(world, h);
   } else if (par !== null) {
     check = par;
   } else if (is2D) {
@@ -256,6 +256,59 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
   }
   if (stiff > 0) { const st = dissipationState(world); st.linearSeen = st.epoch; }
   if (check - check !== 0 || forces !== 0) { reportNonFiniteForces(world, ents); reportNonFinite(world, ents, 'integrate'); }
+}
+
+/**
+ * `fusedForced2` for a 3D world: the same forces (every component written, as the cleared accumulator
+ * and the drag laws leave it) and the 3D forced-body update of `semiImplicitEuler`.
+ * @throws NonFiniteStateError as `fusedForced2`.
+ */
+function fusedForced3(world: PhysicsWorld, h: number): void {
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const im = c.Mass.inv;
+  const g = world.gravity;
+  const gxh = g[0]! * h, gyh = g[1]! * h, gzh = g[2]! * h;
+  const hx = 0.5 * gxh, hy = 0.5 * gyh, hz = 0.5 * gzh;
+  const limit = STIFF_RATE / world.h;
+  const kq = c.QuadraticDrag.k, kl = c.LinearDrag.k;
+  let stiff = 0;
+  // 0: no drag, 1: quadratic, 2: linear.
+  for (let kind = 0; kind < 3; kind++) {
+    const ents = kind === 0 ? fusedBareBodies(world) : kind === 1 ? fusedQuadraticBodies(world) : fusedLinearBodies(world);
+    let check = 0, forces = 0;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const u = vx[e]!, v = vy[e]!, s = vz[e]!;
+      const inv = im[e]!;
+      let fxe = 0, fye = 0, fze = 0;
+      if (kind === 1) {
+        const cq = kq[e]! * Math.sqrt(u * u + v * v + s * s);
+        if (cq * inv >= limit) markStiffQuadratic(world, e, kq[e]!);
+        else { fxe = 0 - cq * u; fye = 0 - cq * v; fze = 0 - cq * s; }
+      } else if (kind === 2) {
+        const cl = kl[e]!;
+        if (cl * inv >= limit) stiff++;
+        else { fxe = 0 - cl * u; fye = 0 - cl * v; fze = 0 - cl * s; }
+      }
+      fx[e] = fxe; fy[e] = fye; fz[e] = fze;
+      const w = inv * h;
+      const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh, nvz = s + fze * w + gzh;
+      const x = px[e]!, y = py[e]!, z = pz[e]!;
+      ox[e] = x; oy[e] = y; oz[e] = z;
+      vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+      const k = fxe === 0 && fye === 0 && fze === 0 ? 1 : 0;
+      const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h, nz = z + (nvz - k * hz) * h;
+      px[e] = nx; py[e] = ny; pz[e] = nz;
+      check += nvx + nvy + nvz + nx * 0 + ny * 0 + nz * 0;
+      forces += fxe * 0 + fye * 0 + fze * 0;
+    }
+    if (check - check !== 0 || forces !== 0) { reportNonFiniteForces(world, ents); reportNonFinite(world, ents, 'integrate'); }
+  }
+  if (stiff > 0) { const st = dissipationState(world); st.linearSeen = st.epoch; }
 }
 
 /** Moves kinematic bodies with their own velocity (shared by every scheme: their velocity is given). */

@@ -24,7 +24,7 @@ import { fusedForcesOn } from '../integrators/fused-state.js';
  * In 2D the z components of the linear state are not part of the motion and are not checked;
  * `clearForces` writes zeros and is never checked. In a substep that runs the fused force-and-integrate
  * pass (integrators/fused-gate.ts) the forces are written by the integrator, which checks them itself
- * and reports a non-finite one as this check would (field 'Force.x' or 'Force.y', stage 'forces').
+ * and reports a non-finite one as this check would (field 'Force.x', 'Force.y' or 'Force.z', stage 'forces').
  *
  * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
  * per field, and a second pass to name the culprit only when the first finds one.
@@ -188,14 +188,18 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
 }
 
 /**
- * For the fused force-and-integrate pass (2D; integrators/semi-implicit-euler.ts), after its running
- * check failed: throws the NonFiniteStateError this module's check of the forces stage would have thrown
- * (the first of `ents` whose Force.x or Force.y is NaN or infinite, stage 'forces'); returns if every
- * force is finite (the caller then names the position or velocity).
+ * For the fused force-and-integrate pass (integrators/semi-implicit-euler.ts), after its running check
+ * failed: throws the NonFiniteStateError this module's check of the forces stage would have thrown (the
+ * first of `ents` whose force is NaN or infinite: Force.x, Force.y, and in 3D Force.z; stage 'forces');
+ * returns if every force is finite (the caller then names the position or velocity).
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const F = world.components.Force;
-  if (sum2(ents, false, F.x, F.y) !== 0) name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y]]);
+  if (world.dimensions === 2) {
+    if (sum2(ents, false, F.x, F.y) !== 0) name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y]]);
+  } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
+    name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y], ['Force.z', F.z]]);
+  }
 }
 
 /** The slow pass, run once a fast pass found a non-finite value: throws naming the first culprit. */
