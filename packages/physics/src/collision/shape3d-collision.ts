@@ -34,7 +34,10 @@ function meets(ta: number, tb: number): boolean {
  *   the step's rotation w h), as the solver measures displacement from there.
  * - Broadphase: bounding boxes (a box's own, tight; other shapes a sphere of their reach about their
  *   centre) fattened by half the speculative distance and what the body's speed covers in the step
- *   (two such boxes overlap when the shapes are within the pair's margin), in a hashed uniform grid (`pairs`).
+ *   (two such boxes overlap when the shapes are within the pair's margin), in a hashed uniform grid (`pairs`);
+ *   a resting collider searches it only every few steps (RESTING_SEARCH_PERIOD), its other pairs coming
+ *   from searching neighbours and last step's manifolds.
+ * - Box pairs carry last step's manifold over while their relative pose barely changes (REUSE_SHIFT).
  * - Filtering as in 2D: shapes of one body never collide; a pair collides when each one's category
  *   meets the other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which
  *   neither body is dynamic are skipped; sensors push nothing.
