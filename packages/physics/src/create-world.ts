@@ -102,7 +102,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     stages: createStages(),
     // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
     collision: createCollisionState(capacity, {
-      solverSubsteps, solverIterations, sleep, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
+      solverSubsteps, solverIterations, sleep, dimensions, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
     }),
     joints: createJointState(),
     cloth: createClothState(),
