@@ -29,10 +29,14 @@ import { removeJoint3DUnchecked } from './api.js';
  *   by the largest force times h_s (Box2D v3 prismatic_joint.c).
  * - Distance: a row along the anchors' line, equality (rod), spring (Box2D's soft spring of `hertz`
  *   and `dampingRatio`) and one-sided limits.
- * - Point and angular-lock impulses (world vectors) and the hinge's and slider's limit and motor
- *   impulses (signed along the axis; a limit's impulse from the other side is taken back when the
- *   near side changes) are warm-started; cone and distance rows start from zero each step. After the substeps a joint whose force (impulse / h_s) or torque passes
- *   its threshold breaks: it is removed and listed in `joint3DBreaks`.
+ * - Warm start (every row, Box2D v3's joints): the point and angular-lock impulses (world vectors), the
+ *   hinge's and slider's limit and motor impulses (signed along the axis; a limit's impulse from the
+ *   other side is taken back when the near side changes), the cone's (>= 0 about the current n; reset
+ *   when n is undefined, the axes parallel) and the distance joint's rod or spring impulse (`lx`) and
+ *   lower and upper limit impulses (`limit`, `ly`, each >= 0, along the current anchor line; reset when
+ *   the anchors meet) are applied again, unscaled, at the start of each substep. After the substeps a
+ *   joint whose force (impulse / h_s) or torque passes its threshold breaks: it is removed and listed
+ *   in `joint3DBreaks`.
  */
 
 /** Joint stiffness (Box2D v3 defaults: joint hertz 60, damping ratio 2), capped at a quarter of the substep rate. */
@@ -85,7 +89,7 @@ export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number 
   return count;
 }
 
-/** Softness for this step, marks the joint bodies as pushed, and clears the rows that are not warm-started (cone and distance). */
+/** Softness for this step, and marks the joint bodies as pushed. Every row's impulse is kept (warm start). */
 export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
@@ -93,13 +97,8 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   makeSoft(jsoft, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
   const sb = world.collision.bodyState;
   for (let i = 0; i < s.list.length; i++) {
-    const j = s.list[i]!;
     if (ka[i]! > 0) sb[12 * ka[i]! + 11] = 1;
     if (kb[i]! > 0) sb[12 * kb[i]! + 11] = 1;
-    // Hinge and slider limit and motor rows are warm-started (their impulses stay); cone and distance rows start from zero.
-    const t = s.type[j]!;
-    if (t !== Joint3DType.Hinge && t !== Joint3DType.Slider) { s.limit[j] = 0; s.motor[j] = 0; }
-    if (t === Joint3DType.Distance) { s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; }
   }
 }
 
@@ -183,16 +182,22 @@ function solve3(M: Float64Array, r0: number, r1: number, r2: number, x: Float64A
 
 const K = new Float64Array(9), x3 = new Float64Array(3), v3 = new Float64Array(3), ax = new Float64Array(3), bx = new Float64Array(3);
 
-/** Warm start: last substep's point and angular-lock impulses applied again. */
+/** Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance). */
 export function warmStartJoints3D(world: PhysicsWorld): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return;
   const sb = world.collision.bodyState, T = contact3DStateOf(world, true).invInertia;
   for (let i = 0; i < s.list.length; i++) {
     const j = s.list[i]!;
-    if (s.type[j] === Joint3DType.Distance) continue;
     pose(world, s.a[j]!, ka[i]!, qa, pa); pose(world, s.b[j]!, kb[i]!, qb, pb);
     rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra); rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    if (s.type[j] === Joint3DType.Distance) {
+      // Rod or spring (lx) and lower limit (limit) push B along u = (anchor B - anchor A) / len, the upper limit (ly) against it.
+      const dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!, dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!, dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+      const len = Math.hypot(dx, dy, dz), P = s.lx[j]! + s.limit[j]! - s.ly[j]!;
+      if (len > 1e-12 && P !== 0) applyLinear(sb, T, ka[i]!, kb[i]!, (P * dx) / len, (P * dy) / len, (P * dz) / len);
+      continue;
+    }
     applyLinear(sb, T, ka[i]!, kb[i]!, s.lx[j]!, s.ly[j]!, s.lz[j]!);
     applyAngular(sb, T, ka[i]!, kb[i]!, s.wx[j]!, s.wy[j]!, s.wz[j]!);
     const axial = s.limit[j]! + s.motor[j]!;
@@ -200,6 +205,13 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
       rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
       if (s.type[j] === Joint3DType.Hinge) applyAngular(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
       else { sliderAnchor(); applyLinear(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!); }
+    }
+    if (s.type[j] === Joint3DType.Ball && s.limit[j]! !== 0) {
+      // Cone: the impulse acts about -n, n = a_A x a_B / |a_A x a_B| (as in the solve).
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax); rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+      const nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!, ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!, nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+      const sn = Math.hypot(nx, ny, nz), l = -s.limit[j]! / sn;
+      if (sn > 1e-9) applyAngular(sb, T, ka[i]!, kb[i]!, l * nx, l * ny, l * nz);
     }
   }
 }
@@ -278,7 +290,8 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
     if (type === Joint3DType.Distance) {
       let dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!, dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!, dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
       const len = Math.hypot(dx, dy, dz);
-      if (!(len > 1e-12)) continue;
+      // No direction: nothing was warm-started; the rows start again from zero.
+      if (!(len > 1e-12)) { s.lx[j] = 0; s.limit[j] = 0; s.ly[j] = 0; continue; }
       dx /= len; dy /= len; dz /= len;
       const k = linearK(sb, T, a, b, dx, dy, dz);
       if (!(k > 0)) continue;
@@ -419,7 +432,7 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
         if (C > 0) bias = C / hs; else if (useBias) { bias = bRate * C; m = ms; im = is; }
         const cdot = -((sb[ob + 3]! - sb[oa + 3]!) * nx + (sb[ob + 4]! - sb[oa + 4]!) * ny + (sb[ob + 5]! - sb[oa + 5]!) * nz);
         s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
-      }
+      } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
     }
   }
 }
