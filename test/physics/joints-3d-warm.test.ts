@@ -96,6 +96,22 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     expect(Math.abs(len() - 1)).toBeLessThan(1e-3);
   });
 
+  test('a distance joint at its lower limit (a strut) breaks by its force, not its torque', () => {
+    // A 0.1 m sphere (4.19 kg, weight 41.1 N) held 1 m above the anchor by a strut with limits [1, 2] m.
+    const world = world3([0, -9.81, 0]);
+    const m = (4 / 3) * Math.PI * 0.1 ** 3 * 1000, W = m * 9.81;
+    const held = addBody(world, { position: [0, 1, 0] }), weak = addBody(world, { position: [3, 1, 0] });
+    for (const b of [held, weak]) addShape3D(world, b, { type: 'sphere', radius: 0.1, density: 1000 });
+    // Carries no torque: a tiny torque threshold must not break it (the lower-limit impulse is a force).
+    addDistanceJoint3D(world, { b: held, anchorA: [0, 0, 0], minLength: 1, maxLength: 2, breakTorque: 1e-3, breakForce: 2 * W });
+    addDistanceJoint3D(world, { b: weak, anchorA: [3, 0, 0], minLength: 1, maxLength: 2, breakForce: 0.5 * W });
+    for (let i = 0; i < 30; i++) step(world);
+    const c = world.components;
+    expect(Math.abs(c.Position.y[slotOf(held)]! - 1)).toBeLessThan(1e-3); // held at 1 m by a force ~W < 2 W
+    expect(joints3DOf(world)!.list.length).toBe(1); // the weak strut (0.5 W) broke
+    expect(c.Position.y[slotOf(weak)]!).toBeLessThan(0.5);
+  });
+
   /** A chain of 10 links (0.5 m distance rods, the last 100 times heavier) swinging; the worst summed length error over steps 60-120. `cold`: every joint impulse is cleared before each step (no warm start across steps). */
   function chainError(cold: boolean): number {
     const world = world3([0, -9.81, 0]);

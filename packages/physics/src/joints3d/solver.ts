@@ -444,9 +444,10 @@ export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   const broken: number[] = [];
   for (const j of s.list) {
     // The limit and motor rows are torques about the axis (hinge, cone) or forces along it (slider).
-    const axial = Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!), slider = s.type[j] === Joint3DType.Slider;
-    const force = (Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (slider ? axial : 0)) / hs;
-    const torque = (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (slider ? 0 : axial)) / hs;
+    // A distance joint's rows are all forces along the anchor line: rod or spring (lx), lower limit (limit), upper limit (-ly).
+    const axial = Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!), slider = s.type[j] === Joint3DType.Slider, distance = s.type[j] === Joint3DType.Distance;
+    const force = (distance ? Math.abs(s.lx[j]! + s.limit[j]! - s.ly[j]!) : Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (slider ? axial : 0)) / hs;
+    const torque = distance ? 0 : (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (slider ? 0 : axial)) / hs;
     if (force > s.breakForce[j]! || torque > s.breakTorque[j]!) broken.push(j);
   }
   for (const j of broken) {

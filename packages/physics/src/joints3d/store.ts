@@ -31,7 +31,12 @@ export interface Joint3DStore {
   length: Float64Array; hertz: Float64Array; dampingRatio: Float64Array;
   /** Breaking force, N, and torque, N m (Infinity: never). */
   breakForce: Float64Array; breakTorque: Float64Array;
-  /** Accumulated impulses (warm start): linear (3), angular (3), limit, motor (hinge and slider: signed along the axis). N s and N m s. */
+  /**
+   * Accumulated impulses (warm start, all kept between steps): linear (3), angular (3), limit, motor
+   * (hinge and slider: signed along the axis; ball: the cone's, >= 0). Distance: lx the rod or spring,
+   * limit the lower limit (>= 0, pushing apart), ly the upper limit (>= 0, pulling together), along the
+   * anchor line. N s and N m s.
+   */
   lx: Float64Array; ly: Float64Array; lz: Float64Array; wx: Float64Array; wy: Float64Array; wz: Float64Array; limit: Float64Array; motor: Float64Array;
   /** Joints broken in the last step: [joint, a, b, step] (handles, then the step count). */
   breaks: number[][];
