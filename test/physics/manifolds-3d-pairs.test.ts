@@ -1,5 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
+import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
 
 /**
  * Resting contact and head-on hits of the 3D pairs that go through their own manifold code
@@ -36,15 +37,24 @@ function speed(world: PhysicsWorld, b: number): number {
   return Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) + Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!);
 }
 
-/** Drops `top` a little above its rest height on the static `base`, runs 180 steps (6 s) and returns its height, contact count and speed. */
-function settle(world: PhysicsWorld, base: number, top: number): { y: number; points: number; speed: number } {
-  for (let s = 0; s < 180; s++) step(world);
-  return { y: world.components.Position.y[slotOf(top)]!, points: pairContacts(world, base, top).points, speed: speed(world, top) };
+/** Drops `top` a little above its rest height on the static `base`, runs 180 steps (3 s) and returns its height, contact count, speed and how often the manifold's feature ids changed over the last 30 steps. */
+function settle(world: PhysicsWorld, base: number, top: number): { y: number; points: number; speed: number; idChanges: number } {
+  let ids = '', idChanges = 0;
+  for (let s = 0; s < 180; s++) {
+    step(world);
+    if (s < 150) continue;
+    // The one manifold's feature ids: the same from step to step at rest, so warm starting finds its points.
+    const st = contact3DStateOf(world)!.current;
+    const now = st.count === 1 ? Array.from(st.id.subarray(0, st.points[0]!)).sort().join(',') : 'rows ' + st.count;
+    if (s > 150 && now !== ids) idChanges++;
+    ids = now;
+  }
+  return { y: world.components.Position.y[slotOf(top)]!, points: pairContacts(world, base, top).points, speed: speed(world, top), idChanges };
 }
 
 // Rest tolerance: the soft contact lets a body sink a fraction of a millimetre under its own weight
 // (the cube-on-plane test in rigid-3d.test.ts sees the same), so 1 mm around the touching height.
-// "Stops moving": linear + angular speed below 1e-3 (m/s + rad/s) after 6 s.
+// "Stops moving": linear + angular speed below 1e-3 (m/s + rad/s) after 3 s.
 describe('3D manifolds: resting pairs sit at their geometric height with the right number of points', () => {
   test('a capsule lying across another at 90 degrees rests at r1 + r2 above its centre line, one point', () => {
     const world = world3(-G);
@@ -57,6 +67,7 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
     expect(Math.abs(r.y - (r1 + r2))).toBeLessThan(1e-3);
     expect(r.points).toBe(1); // crossed segments touch at one point
     expect(r.speed).toBeLessThan(1e-3);
+    expect(r.idChanges).toBe(0);
   });
 
   test('two parallel capsules touch along a line: two points, rest at r1 + r2', () => {
@@ -70,6 +81,7 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
     expect(Math.abs(r.y - (r1 + r2))).toBeLessThan(1e-3);
     expect(r.points).toBe(2); // the overlap of the two segments' spans, one point at each end
     expect(r.speed).toBeLessThan(1e-3);
+    expect(r.idChanges).toBe(0);
   });
 
   test('a capsule lying on a box rests at the box top + r with two points', () => {
@@ -83,6 +95,7 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
     expect(Math.abs(s.y - (boxHalf + r))).toBeLessThan(1e-3);
     expect(s.points).toBe(2); // the two ends of the capsule's segment
     expect(s.speed).toBeLessThan(1e-3);
+    expect(s.idChanges).toBe(0);
   });
 
   test('a hull cube (hull of 8 corners) resting on a hull cube has four points and sits at h1 + h2', () => {
@@ -96,6 +109,43 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
     expect(Math.abs(r.y - (h1 + h2))).toBeLessThan(1e-3);
     expect(r.points).toBe(4); // the incident face's four corners, clipped inside the larger reference face
     expect(r.speed).toBeLessThan(1e-3);
+    expect(r.idChanges).toBe(0);
+  });
+});
+
+describe('3D manifolds: reduction to four points and feature ids', () => {
+  test('a hull cube turned 45 degrees on an equal hull cube: the octagon of overlap is cut to four of its vertices around the centre of mass, carrying the weight', () => {
+    const SUB = 4; // solver substeps, set here so the impulse check below knows them
+    const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -G, 0], sleep: false, solverSubsteps: SUB });
+    const h = 0.5;
+    const base = addBody(world, { position: [0, 0, 0], static: true });
+    addShape3D(world, base, { type: 'hull', vertices: corners(h) });
+    const q = Math.PI / 8; // half of 45 degrees about y
+    const top = addBody(world, { position: [0, 2 * h + 0.02, 0], orientation: [0, Math.sin(q), 0, Math.cos(q)] });
+    addShape3D(world, top, { type: 'hull', vertices: corners(h), density: 1000 });
+    const c = world.components, e = slotOf(top);
+    for (let s = 0; s < 200; s++) step(world);
+    expect(contact3DStateOf(world)!.current.count).toBe(1);
+    // The two squares overlap in a regular octagon: 8 clipped points, of which four are kept.
+    const pts: number[][] = [];
+    let impulse = 0;
+    forEachContact3D(world, (v) => { pts.push([v.x, v.z]); impulse += v.normalImpulse; });
+    expect(pts.length).toBe(4);
+    // Each kept point is an octagon vertex: at the circumradius h / cos(22.5 deg) from the axis (1 mm).
+    for (const [x, z] of pts) expect(Math.abs(Math.hypot(x!, z!) - h / Math.cos(q))).toBeLessThan(1e-3);
+    // They surround the centre of mass (the origin in x-z): no angular gap between them reaches pi,
+    // else the cube would tip about the edge they leave out.
+    const ang = pts.map(([x, z]) => Math.atan2(z!, x!)).sort((a, b) => a - b);
+    const gaps = ang.map((a, i) => (i + 1 < ang.length ? ang[i + 1]! : ang[0]! + 2 * Math.PI) - a);
+    expect(Math.max(...gaps)).toBeLessThan(Math.PI - 0.1);
+    // At rest the last substep's normal impulses carry the weight: sum = m g h_sub, h_sub = dt / solver substeps
+    // (2e-3 relative: measured 2.4e-6 once settled, but the kept four alternate between two sets of
+    // feature ids every ~32 steps (all eight octagon points are equally deep), and the step of a switch
+    // starts the new points without warm start: +1e-3 then. Reported with a reproduction, issue 9.)
+    const hSub = world.h / SUB;
+    expect(Math.abs(impulse / (c.Mass.value[e]! * G * hSub) - 1)).toBeLessThan(2e-3);
+    expect(Math.abs(c.Position.y[e]! - 2 * h)).toBeLessThan(1e-3);
+    expect(speed(world, top)).toBeLessThan(1e-3);
   });
 });
 
