@@ -12,8 +12,9 @@ import { boxBox3D, planeBox3D } from './box-box3d.js';
  *   against the reference face's side planes, or the closest points of the two edges; faces are
  *   preferred over edges unless an edge axis separates more by 5 % of the tolerance (Box2D's and
  *   Bullet's bias), which keeps a resting box on its four corners;
- * - reduced to four points: the deepest, the farthest from it, then the two that span the largest
- *   areas on either side (Gregorius, "Robust Contact Creation for Physics Simulations", GDC 2015);
+ * - reduced to four points: the deepest (the first of those within 0.5 % of the margin of it), the
+ *   farthest from it, then the two that span the largest areas on either side (Gregorius, "Robust
+ *   Contact Creation for Physics Simulations", GDC 2015);
  * - sphere and capsule: closest points to the polyhedron's faces and edges, or between segments;
  *   a capsule against a face keeps both ends (the segment clipped to the face) so it lies still.
  *
@@ -130,7 +131,7 @@ export function collidePlane3D(nx: number, ny: number, nz: number, d: number, B:
   if (B.kind === ColliderKind3D.Polyhedron) {
     const P = pose(B, posedB);
     for (let i = 0; i < P.n; i++) pushCandidate(nx * P.v[3 * i]! + ny * P.v[3 * i + 1]! + nz * P.v[3 * i + 2]! - d, P.v[3 * i]!, P.v[3 * i + 1]!, P.v[3 * i + 2]!, i, margin, nx, ny, nz);
-    finishCandidates(out, nx, ny, nz);
+    finishCandidates(out, nx, ny, nz, margin);
     return;
   }
   if (B.kind === ColliderKind3D.Sphere) { push(B.px, B.py, B.pz, B.radius, 0); return; }
@@ -158,13 +159,29 @@ function pushCandidate(s: number, x: number, y: number, z: number, id: number, m
   cx[cn] = x - nx * s / 2; cy[cn] = y - ny * s / 2; cz[cn] = z - nz * s / 2; cs[cn] = s; cid[cn] = id; cn++;
 }
 
-/** Reduces the candidates to at most four (see the module's note) into `out`, and clears them. */
-function finishCandidates(out: Manifold3D, nx: number, ny: number, nz: number): void {
+/**
+ * Candidates whose separation is within DEPTH_TIE margin + 1e-6 m of the deepest count as equally deep
+ * when the reduction picks its first point (the tolerance the reference-face choice uses too: 1e-4 m at
+ * the default 0.02 m margin, 2 % of a linear slop; m / m). It must cover the ~5e-5 m the corners of a
+ * settling box differ by (below it, the deepest corner goes round the octagon step by step and the
+ * kept four switch each step, which keeps the rock going), and stays far below what the solver resolves.
+ */
+const DEPTH_TIE = 0.005;
+
+/** Reduces the candidates to at most four (see the module's note) into `out`, and clears them; `margin`: the speculative distance, m. */
+function finishCandidates(out: Manifold3D, nx: number, ny: number, nz: number, margin: number): void {
   const n = cn;
   cn = 0;
   if (n <= 4) { for (let i = 0; i < n; i++) addPoint(out, cx[i]!, cy[i]!, cz[i]!, cs[i]!, cid[i]!); return; }
+  // The first point: the first candidate (in clipping order, which is fixed while the same features
+  // touch) within the tie tolerance of the deepest. Equally deep corners (a box turned 45 degrees on
+  // another: an octagon whose corners agree to ~1e-8 m) would otherwise be picked by rounding noise,
+  // and the four kept would alternate between the two interleaved sets, each switch starting the new
+  // points without warm start (issue 9: the cube dropped ~5 um and was kicked at ~5.6e-5 m/s).
   let a = 0;
   for (let i = 1; i < n; i++) if (cs[i]! < cs[a]!) a = i;
+  const tie = cs[a]! + DEPTH_TIE * margin + 1e-6;
+  for (let i = 0; i < a; i++) if (cs[i]! <= tie) { a = i; break; }
   let b = -1, best = -1;
   for (let i = 0; i < n; i++) {
     const d = (cx[i]! - cx[a]!) ** 2 + (cy[i]! - cy[a]!) ** 2 + (cz[i]! - cz[a]!) ** 2;
@@ -507,5 +524,5 @@ function clipFaces(R: Posed, rf: number, I: Posed, margin: number, out: Manifold
     const x = src[3 * i]!, y = src[3 * i + 1]!, z = src[3 * i + 2]!;
     pushCandidate(nx * x + ny * y + nz * z - d, x, y, z, base + sid[i]!, margin, nx, ny, nz);
   }
-  finishCandidates(out, nx, ny, nz);
+  finishCandidates(out, nx, ny, nz, margin);
 }
