@@ -7,7 +7,7 @@ import { sig } from '../scenes/format.js';
  * The snapshot study (`--scene snapshot`): what `snapshot(world)` and `restore(world, snapshot)` cost
  * for a balls-in-box world of `count` bodies after `warmup` steps (contacts, warm-start caches and
  * sleeping islands in place), as medians over `steps` rounds: snapshot, snapshot over an earlier
- * snapshot's buffer (`snapshot(world, reuse)`, a rollback ring), restore into the same world one
+ * snapshot's buffer (`snapshot(world, reuse)`, a rollback ring; `reusedRounds` counts the rounds that wrote into that buffer rather than allocating), restore into the same world one
  * step after the snapshot (a rewind), restore into a fresh world made with the same options; each
  * round first steps the world once (untimed), so every snapshot and rewind sees a state that moved
  * (and query lists that sleeping and waking changed); beside them, a plain copy of the
@@ -33,6 +33,7 @@ export const snapshotStudy: BenchStudy = {
     const snapMs: number[] = [], reuseMs: number[] = [], rewindMs: number[] = [], freshMs: number[] = [];
     let saved = snapshot(world);
     let spare = snapshot(world);
+    let reused = 0; // rounds whose reuse snapshot wrote into the spare's buffer (a miss allocates a new one)
     for (let r = 0; r < options.steps; r++) {
       // One step (untimed) before the snapshots and again before the rewind, as in a rollback loop:
       // bodies move, some fall asleep or wake, so the state and query lists differ from the last round's.
@@ -42,8 +43,10 @@ export const snapshotStudy: BenchStudy = {
       snapMs.push(performance.now() - t);
       // A rollback ring writes each new snapshot over its oldest one's buffer.
       t = performance.now();
+      const spareBuffer = spare.buffers[0];
       spare = snapshot(world, spare);
       reuseMs.push(performance.now() - t);
+      if (spare.buffers[0] === spareBuffer) reused++;
       stepMany(world, 1);
       t = performance.now();
       restore(world, saved);
@@ -71,7 +74,7 @@ export const snapshotStudy: BenchStudy = {
     const identical = stateHash(fresh) === hash && stateHash(reference) === hash;
     const record = {
       bodies: options.count, snapshotMs: median(snapMs), snapshotReuseMs: median(reuseMs), restoreMs: median(rewindMs), restoreFreshMs: median(freshMs),
-      copyMs: median(copyMs), bytes, headerBytes, buffers: saved.buffers.length, identical, stateHash: hash,
+      reusedRounds: reused, copyMs: median(copyMs), bytes, headerBytes, buffers: saved.buffers.length, identical, stateHash: hash,
     };
     return {
       records: [record],
@@ -85,7 +88,7 @@ export const snapshotStudy: BenchStudy = {
         String(sig(bytes / 1e6)), String(sig(headerBytes / 1e3)), identical ? 'yes' : 'NO',
       ]],
       notes: [
-        `medians of ${options.steps} rounds after ${options.warmup} warm-up steps; ${saved.buffers.length} buffers; goal: under 5 ms each for 100,000 bodies`,
+        `medians of ${options.steps} rounds after ${options.warmup} warm-up steps; ${saved.buffers.length} buffers; the reused buffer was written into in ${reused} of ${options.steps} rounds; goal: under 5 ms each for 100,000 bodies`,
         `state after 10 more steps: ${hash} (original, rewound and fresh world ${identical ? 'agree' : 'DIFFER'})`,
       ],
     };
