@@ -122,22 +122,42 @@ describe('the fused force-and-integrate pass', () => {
     expect(fusedForcesAllowed(w)).toBe(false);
   });
 
-  test('a drag force that overflows is reported as the forces stage reports it (Force.x, stage forces, the body)', () => {
+  test('a drag force that overflows is reported as the forces stage reports it (Force.x, stage forces, the body), before the body moves', () => {
     // k = 1e200 kg/m at 1e60 m/s on 1e300 kg: k |v| h / m = 1e-40 (not stiff), F = k v^2 = 1e320 = Infinity.
-    const errorOf = (separate: boolean): NonFiniteStateError => {
-      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0] });
-      const b = addBody(world, { mass: 1e300, quadraticDrag: 1e200, velocity: [1e60, 0] });
+    // The offending body must keep its position and velocity to the bit (the throw comes before it is
+    // written, as the separate forces stage throws before the integrator runs); a body listed after it
+    // (added later: the pass runs each list in entity order) must not move either.
+    const errorOf = (separate: boolean, dimensions: 2 | 3, drag: 'quadratic' | 'linear'): NonFiniteStateError => {
+      const world = createPhysicsWorld({ dimensions, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0] });
+      const vec = (x: number, y: number): number[] => (dimensions === 2 ? [x, y] : [x, y, 0.25 * y]);
+      // Linear drag: k = 1e300 kg/s at 1e30 m/s on 1e300 kg is not stiff (k h / m = 1/60) and F = 1e330.
+      const b = drag === 'quadratic'
+        ? addBody(world, { mass: 1e300, quadraticDrag: 1e200, position: vec(1.5, 2), velocity: vec(1e60, 3) })
+        : addBody(world, { mass: 1e300, linearDrag: 1e300, position: vec(1.5, 2), velocity: vec(1e30, 3) });
+      // In the same drag list as b (the lists run bare, quadratic, linear).
+      const after = addBody(world, { mass: 2, [drag === 'quadratic' ? 'quadraticDrag' : 'linearDrag']: 0.01, position: vec(-1, 4), velocity: vec(2, 1) });
       if (separate) addSystem(world, 'forces', noop);
       expect(fusedForcesAllowed(world)).toBe(!separate);
+      const c = world.components;
+      const motion = (e: number): number[] => [c.Position.x[e]!, c.Position.y[e]!, c.Position.z[e]!, c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!];
+      const before = [motion(b), motion(after)];
       let caught: unknown;
       try { step(world); } catch (e) { caught = e; }
       expect(caught).toBeInstanceOf(NonFiniteStateError);
       expect((caught as NonFiniteStateError).entity).toBe(b);
+      // Exact equality: no arithmetic may have touched them (Object.is also tells -0 from 0).
+      for (const m of [motion(b), motion(after)]) for (const v of m) expect(Number.isFinite(v)).toBe(true);
+      expect(motion(b)).toEqual(before[0]);
+      expect(motion(after)).toEqual(before[1]);
       return caught as NonFiniteStateError;
     };
-    const a = errorOf(false), b = errorOf(true);
-    expect([a.field, a.stage]).toEqual(['Force.x', 'forces']);
-    expect([a.field, a.stage]).toEqual([b.field, b.stage]);
-    expect(a.message).toContain('(-Infinity)');
+    for (const dimensions of [2, 3] as const) {
+      for (const drag of ['quadratic', 'linear'] as const) {
+        const a = errorOf(false, dimensions, drag), b = errorOf(true, dimensions, drag);
+        expect([a.field, a.stage]).toEqual(['Force.x', 'forces']);
+        expect([a.field, a.stage]).toEqual([b.field, b.stage]);
+        expect(a.message).toContain('(-Infinity)');
+      }
+    }
   });
 });

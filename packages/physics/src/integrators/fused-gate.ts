@@ -45,6 +45,10 @@ import { beginFusedSubstep } from './fused-state.js';
  * Particles stay ordinary entities: a component a user gives a particle that a built-in law acts on
  * (a charge, a thruster) makes that law busy and so turns the pass off; after the step every body's
  * `Force` holds what the laws would have written.
+ *
+ * A NaN or infinite force is reported as the forces stage's check reports it (Force.x/y/z, stage
+ * 'forces', the first such body of the pass), before that body is moved; only the bodies the pass had
+ * already moved differ from the separate stages, which move none (integrators/semi-implicit-euler.ts).
  */
 
 /** Laws that write only torques, or forces never: they may run beside the fused pass. */

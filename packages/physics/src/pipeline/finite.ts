@@ -25,6 +25,11 @@ import { fusedForcesOn } from '../integrators/fused-state.js';
  * `clearForces` writes zeros and is never checked. In a substep that runs the fused force-and-integrate
  * pass (integrators/fused-gate.ts) the forces are written by the integrator, which checks them itself
  * and reports a non-finite one as this check would (field 'Force.x', 'Force.y' or 'Force.z', stage 'forces').
+ * It tests each body's force before it writes that body's velocity and position, so the body named and
+ * every body after it in the pass keep their motion state from before the substep, and no position or
+ * velocity is made non-finite by the force. One difference from the separate stages remains: the bodies
+ * the pass moved before it (with finite forces) stay moved, where the forces stage would have thrown
+ * before any body moved; integrators/semi-implicit-euler.ts (`fusedForced2`) lists which.
  *
  * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
  * per field, and a second pass to name the culprit only when the first finds one.
