@@ -160,4 +160,24 @@ describe('the fused force-and-integrate pass', () => {
       }
     }
   });
+  test('a NaN velocity written by hand on a body with drag is reported as its force (Force.x, stage forces) before any position turns NaN', () => {
+    // F = -k |v| v with v = (NaN, 1) is NaN; the separate stages throw at the forces check before the
+    // integrator. With the pass, no position may become NaN either: the body's own, and the next body's in its list.
+    for (const separate of [false, true]) {
+      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81] });
+      const b = addBody(world, { mass: 1, quadraticDrag: 0.1, position: [0.5, 1] });
+      const next = addBody(world, { mass: 1, quadraticDrag: 0.1, position: [2, 3], velocity: [1, 1] });
+      if (separate) addSystem(world, 'forces', noop);
+      expect(fusedForcesAllowed(world)).toBe(!separate);
+      const c = world.components;
+      c.Velocity.x[b] = NaN;
+      let caught: unknown;
+      try { step(world); } catch (e) { caught = e; }
+      expect(caught).toBeInstanceOf(NonFiniteStateError);
+      const err = caught as NonFiniteStateError;
+      expect([err.entity, err.field, err.stage]).toEqual([b, 'Force.x', 'forces']);
+      expect([c.Position.x[b], c.Position.y[b], c.Velocity.y[b]]).toEqual([0.5, 1, 0]);
+      expect([c.Position.x[next], c.Position.y[next], c.Velocity.x[next], c.Velocity.y[next]]).toEqual([2, 3, 1, 1]);
+    }
+  });
 });
