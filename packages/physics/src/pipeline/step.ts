@@ -37,7 +37,9 @@ function runStage(world: PhysicsWorld, stage: StageName): void {
  *   velocity, angle or orientation, angular velocity, or (after `forces`) force or torque. It is
  *   thrown at the end of the stage that wrote the value, before any later stage runs; `entity` is the
  *   body's handle, `field` e.g. 'Position.x', `stage` the stage (pipeline/finite.ts). The world is
- *   left as that stage left it.
+ *   left as that stage left it. In a substep run by the fused force-and-integrate pass
+ *   (integrators/fused-gate.ts) a non-finite force is found before its body moves, but bodies the pass
+ *   had already moved with finite forces in that substep stay moved (the separate stages would move none).
  */
 export function step(world: PhysicsWorld): void {
   if (world.entityIndex.maxId > world.capacity) {
