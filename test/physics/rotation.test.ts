@@ -101,6 +101,45 @@ describe('3D rigid rotation (Euler\'s equations)', () => {
     const p = linearMomentum(world);
     for (let i = 0; i < 3; i++) expect(Math.abs(p[i]! - p0[i]!)).toBeLessThan(1e-12);
   });
+  /**
+   * Period of the intermediate-axis flip of a torque-free body (moments 1, 2, 3 kg m^2, w = (0.01, 2,
+   * 0.01) rad/s, dt 1/60) under every explicit scheme, against the exact period of the body-frame
+   * angular velocity, 4 K(k) / lambda (Landau and Lifshitz, Mechanics, sec. 37: w_y is a Jacobi sn):
+   * with L^2 > 2 E I2, lambda = sqrt((I3 - I2)(L^2 - 2 E I1) / (I1 I2 I3)), k^2 = (I2 - I1)(2 E I3 - L^2)
+   * / ((I3 - I2)(L^2 - 2 E I1)); here 21.9551 s. Near the separatrix the period grows with log(1 / (1 - k)),
+   * so it magnifies any drift of E or |L|: the test of how well a scheme keeps Euler's equations.
+   * Tolerance 1 %: measured 0.00 to 0.13 %. Staged in the world frame (the stages' w and q drifting
+   * apart), RK2 was 10.9 % short and velocity Verlet 5.9 % long, explicit Euler 78 % short.
+   * (Implicit Euler is left out: it damps the motion by design, see implicitGyroscopicStep.)
+   */
+  test('intermediate-axis flip period matches 4 K(k) / lambda within 1 % under every explicit scheme at dt 1/60', () => {
+    const I1 = 1, I2 = 2, I3 = 3, w0 = [0.01, 2, 0.01] as const;
+    const L2 = (I1 * w0[0]) ** 2 + (I2 * w0[1]) ** 2 + (I3 * w0[2]) ** 2, E2 = I1 * w0[0] ** 2 + I2 * w0[1] ** 2 + I3 * w0[2] ** 2;
+    expect(L2).toBeGreaterThan(E2 * I2);
+    const lambda = Math.sqrt(((I3 - I2) * (L2 - E2 * I1)) / (I1 * I2 * I3));
+    const k2 = ((I2 - I1) * (E2 * I3 - L2)) / ((I3 - I2) * (L2 - E2 * I1));
+    let a = 1, b = Math.sqrt(1 - k2);
+    for (let i = 0; i < 30; i++) [a, b] = [(a + b) / 2, Math.sqrt(a * b)]; // K(k) = pi / (2 AGM(1, k'))
+    const exact = (4 * (Math.PI / (2 * a))) / lambda;
+    const wb = new Float64Array(3);
+    for (const integrator of ['explicit-euler', 'semi-implicit-euler', 'rk2', 'rk4', 'position-verlet', 'velocity-verlet'] as const) {
+      const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], integrator });
+      const e = addBody(world, { mass: 1, inertia: [I1, I2, I3], angularVelocity: [...w0] });
+      const q = world.components.Orientation, W = world.components.AngularVelocity;
+      const bodyWy = (): number => { rotateVectorInverse(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, W.x[e]!, W.y[e]!, W.z[e]!, wb); return wb[1]!; };
+      const crossings: number[] = [];
+      let prev = bodyWy();
+      for (let i = 1; i <= 3600; i++) {
+        step(world);
+        const now = bodyWy();
+        if (prev > 0 && now <= 0) crossings.push((i - now / (now - prev)) * world.dt);
+        prev = now;
+      }
+      expect(crossings.length, integrator).toBeGreaterThanOrEqual(2);
+      const period = (crossings[crossings.length - 1]! - crossings[0]!) / (crossings.length - 1);
+      expect(Math.abs(period / exact - 1), integrator).toBeLessThan(0.01);
+    }
+  });
 });
 
 describe('rolling', () => {

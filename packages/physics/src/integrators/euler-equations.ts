@@ -1,7 +1,7 @@
 import type { PhysicsWorld } from '../world.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
 
-const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3);
+const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3), ab = new Float64Array(3);
 
 /**
  * Angular acceleration of a 3D body with principal moments (Ix, Iy, Iz) from Euler's equations,
@@ -10,6 +10,19 @@ const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3
  * Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5; Ramtal and Dobre ch. 15.
  */
 export function eulerAcceleration(world: PhysicsWorld, e: number, torqueX: number, torqueY: number, torqueZ: number, res: Float64Array): void {
+  eulerBodyAcceleration(world, e, torqueX, torqueY, torqueZ, ab);
+  const q = world.components.Orientation;
+  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ab[0]!, ab[1]!, ab[2]!, out);
+  res[0] = out[0]!; res[1] = out[1]!; res[2] = out[2]!;
+}
+
+/**
+ * Euler's equations in the body frame: alpha_b = I^-1 (R^T tau - w_b x I w_b), w_b = R^T w, for a 3D
+ * body with principal moments (Ix, Iy, Iz) (rad/s^2, body axes; an axis with a zero moment gets 0).
+ * The explicit schemes stage these bodies' angular velocity in the body frame (see
+ * integrators/state.ts). Writes into res[0..2]. Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5.
+ */
+export function eulerBodyAcceleration(world: PhysicsWorld, e: number, torqueX: number, torqueY: number, torqueZ: number, res: Float64Array): void {
   const c = world.components;
   const q = c.Orientation, T = c.InertiaTensor;
   const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
@@ -17,11 +30,9 @@ export function eulerAcceleration(world: PhysicsWorld, e: number, torqueX: numbe
   rotateVectorInverse(qx, qy, qz, qw, torqueX, torqueY, torqueZ, t);
   const wx = b[0]!, wy = b[1]!, wz = b[2]!;
   const Lx = T.x[e]! * wx, Ly = T.y[e]! * wy, Lz = T.z[e]! * wz;
-  const ax = (t[0]! - (wy * Lz - wz * Ly)) * T.invX[e]!;
-  const ay = (t[1]! - (wz * Lx - wx * Lz)) * T.invY[e]!;
-  const az = (t[2]! - (wx * Ly - wy * Lx)) * T.invZ[e]!;
-  rotateVector(qx, qy, qz, qw, ax, ay, az, out);
-  res[0] = out[0]!; res[1] = out[1]!; res[2] = out[2]!;
+  res[0] = (t[0]! - (wy * Lz - wz * Ly)) * T.invX[e]!;
+  res[1] = (t[1]! - (wz * Lx - wx * Lz)) * T.invY[e]!;
+  res[2] = (t[2]! - (wx * Ly - wy * Lx)) * T.invZ[e]!;
 }
 
 const wb = new Float64Array(3), tb = new Float64Array(3), back = new Float64Array(3);

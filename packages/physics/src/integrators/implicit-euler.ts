@@ -77,6 +77,7 @@ let lastResidual = 0;
  */
 function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boolean, setPrevious: boolean): boolean {
   const s = getScratch(world);
+  s.bodyFrameSpin = false; // this scheme's Newton solve works on world-frame w and alpha
   gather(world, s);
   saveState(world, s, setPrevious);
   stageSlopes(world, s, t, evaluate);

@@ -4,7 +4,7 @@ import {
   accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, sumGroups, writeTrial,
   type IntegratorScratch,
 } from './state.js';
-import { rotateFrom } from '../math/quaternion.js';
+import { rotateFrom, rotateVector } from '../math/quaternion.js';
 
 /**
  * The explicit and multi-stage integration schemes. Each advances every moving body by h from the
@@ -18,6 +18,7 @@ import { rotateFrom } from '../math/quaternion.js';
 
 function begin(world: PhysicsWorld): IntegratorScratch {
   const s = getScratch(world);
+  s.bodyFrameSpin = true;
   gather(world, s);
   saveState(world, s);
   return s;
@@ -200,9 +201,11 @@ function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, 
   const s0x = S[10]!, s0y = S[11]!, s0z = S[12]!;
   const is2D = world.dimensions === 2;
   const ang = c.Angle.value, q = c.Orientation;
-  const sp = s.spinners;
+  const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
+  const sp = s.spinners, torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
+    if (!is2D && torqued[e] === 2) { spinBodyFrame(q, wx, wy, wz, s, e, h, phase, ba[e]!, bb[e]!, bc[e]!); continue; }
     let rx: number, ry: number, rz: number;
     if (phase === 'dkd') {
       const nx = wa[e]! + h * bx[e]!, ny = wb[e]! + h * by[e]!, nz = wc[e]! + h * bz[e]!;
@@ -220,4 +223,41 @@ function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, 
     if (is2D) { ang[e] = qa[e]! + rz; continue; }
     rotateFrom(q.x, q.y, q.z, q.w, e, qa[e]!, qb[e]!, qc[e]!, qd[e]!, rx, ry, rz);
   }
+}
+
+const rb = new Float64Array(3), wOut = new Float64Array(3);
+
+/**
+ * `spinHalfKickHalf` for a body with a principal inertia tensor, staged in the body frame (see
+ * integrators/state.ts): w_b0 = (b0x, b0y, b0z), alpha_b in s.alpha and alpha_b0 in the sums are
+ * body-frame; a body-frame rotation vector r_b turns q0 into q0 exp(r_b) = exp(R(q0) r_b) q0, and the
+ * world w written back is R(q) w_b with the new orientation q.
+ */
+function spinBodyFrame(
+  q: { x: Float64Array; y: Float64Array; z: Float64Array; w: Float64Array },
+  wx: Float64Array, wy: Float64Array, wz: Float64Array, s: IntegratorScratch, e: number, h: number,
+  phase: 'dkd' | 'kdk-drift' | 'kdk-kick', b0x: number, b0y: number, b0z: number,
+): void {
+  const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
+  const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
+  const S = s.sum;
+  const a0x = S[10]![e]!, a0y = S[11]![e]!, a0z = S[12]![e]!;
+  let nx: number, ny: number, nz: number;
+  if (phase === 'kdk-kick') {
+    nx = b0x + 0.5 * h * (a0x + bx[e]!); ny = b0y + 0.5 * h * (a0y + by[e]!); nz = b0z + 0.5 * h * (a0z + bz[e]!);
+  } else {
+    let rx: number, ry: number, rz: number;
+    if (phase === 'dkd') {
+      nx = b0x + h * bx[e]!; ny = b0y + h * by[e]!; nz = b0z + h * bz[e]!;
+      rx = 0.5 * h * (b0x + nx); ry = 0.5 * h * (b0y + ny); rz = 0.5 * h * (b0z + nz);
+    } else {
+      rx = h * (b0x + 0.5 * h * a0x); ry = h * (b0y + 0.5 * h * a0y); rz = h * (b0z + 0.5 * h * a0z);
+      nx = b0x + h * a0x; ny = b0y + h * a0y; nz = b0z + h * a0z;
+    }
+    const x0 = qa[e]!, y0 = qb[e]!, z0 = qc[e]!, w0 = qd[e]!;
+    rotateVector(x0, y0, z0, w0, rx, ry, rz, rb);
+    rotateFrom(q.x, q.y, q.z, q.w, e, x0, y0, z0, w0, rb[0]!, rb[1]!, rb[2]!);
+  }
+  rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, nx, ny, nz, wOut);
+  wx[e] = wOut[0]!; wy[e] = wOut[1]!; wz[e] = wOut[2]!;
 }
