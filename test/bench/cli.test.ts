@@ -225,14 +225,20 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     }
   });
 
-  it('spheres-in-box --vs rapier3d gives a ratio line', async () => {
-    const run = await runCli(['--scene', 'spheres-in-box', '--count', '100', '--steps', '5', '--warmup', '1', '--vs', 'rapier3d', '--json']);
+  it('spheres-in-box --vs rapier3d gives a ratio line, on the median and on the mean (whole timed run)', async () => {
+    const run = await runCli(['--scene', 'spheres-in-box', '--count', '100', '--steps', '5', '--warmup', '1', '--vs', 'rapier3d', '--json', '--times']);
     expect(run.code).toBe(0);
     const [ours, peer] = jsonLines(run.stdout);
     expectEngineLine(ours!, 'bitphysics', 'spheres-in-box', 100, 5);
     expectEngineLine(peer!, 'rapier3d', 'spheres-in-box', 100, 5);
     expect(peer!.ratioOf).toBe('bitphysics/rapier3d');
     expect(peer!.ratio as number).toBeGreaterThan(0);
+    // The mean is the total of the timed steps over their count (timesMs rounded to 4 digits: 1e-3 relative).
+    const ms = (l: Record<string, unknown>) => l.msPerStep as Record<string, number>;
+    const total = (l: Record<string, unknown>) => (l.timesMs as number[]).reduce((x, y) => x + y, 0);
+    for (const line of [ours!, peer!]) expect(Math.abs(ms(line).mean! * 5 / total(line) - 1)).toBeLessThan(1e-3);
+    expect(ours!.ratioMean).toBeUndefined();
+    expect(Math.abs((peer!.ratioMean as number) / (ms(ours!).mean! / ms(peer!).mean!) - 1)).toBeLessThan(1e-3);
   });
 
   /**
@@ -252,6 +258,9 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
       expect(line.scene).toBe('box-pile-3d');
       expect(line.maxOverlapPercent as number).toBeLessThan(50);
       expect(typeof line.overlappingPairs).toBe('number');
+      // 27 boxes falling for 20 steps (1/3 s): none can have rested the 0.5 s sleep needs.
+      expect(line.halfAsleepStep).toBeNull();
+      expect(line.allAsleepStep).toBeNull();
     }
     const lines = jsonLines(pyramid.stdout);
     expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d']);

@@ -11,6 +11,12 @@ export interface Ratio {
   readonly peer: string;
   /** Our median step time divided by the peer's: < 1 means bitphysics is faster. */
   readonly ratio: number;
+  /**
+   * Our mean step time divided by the peer's over the same timed steps, i.e. our total time of the
+   * timed window over the peer's: < 1 means bitphysics is faster over the whole run. Unlike the
+   * median it counts the few expensive steps (landing, settling) in scenes that end asleep.
+   */
+  readonly meanRatio: number;
 }
 
 /**
@@ -35,13 +41,13 @@ function threadFields(result: BenchResult, e: EngineResult): Record<string, numb
   return fields;
 }
 
-/** Ours/peer ratios of median step times, one per peer, in run order. Empty without ours or peers. */
+/** Ours/peer ratios of median and of mean step times, one per peer, in run order. Empty without ours or peers. */
 export function ratios(result: BenchResult): Ratio[] {
   const ours = result.engines.find((e) => e.engine === OURS);
   if (!ours) return [];
   return result.engines
     .filter((e) => e.engine !== OURS)
-    .map((e) => ({ peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median }));
+    .map((e) => ({ peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median, meanRatio: ours.msPerStep.mean / e.msPerStep.mean }));
 }
 
 /** Rounds to `digits` significant digits (keeps JSON lines short without losing what matters). */
@@ -54,14 +60,15 @@ function sig(value: number, digits = 6): number {
  * max, mean, p90}, contacts`, then `warmup, seed, bodyStepsPerSecond, heapUsedMB, engineMemoryMB,
  * setupMs`, `params` (the scene parameters, e.g. `{ "theta": 0.5 }`, only for scenes that declare
  * any), the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
- * line `ratio` (our median / its median) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
+ * line `ratio` (our median / its median), `ratioMean` (our mean / its mean over the same timed
+ * steps: the whole-run time ratio) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
  * `threads` on our lines and `speedup` (single-threaded median / threaded median), `serialFraction`
  * (Karp-Flatt) and `amdahl8`, `amdahl16` (projected speedups, amdahl.ts) on the
  * `bitphysics-threads` line; with `times`, every
  * step's milliseconds as `timesMs`.
  */
 export function jsonRecords(result: BenchResult, options: { times?: boolean } = {}): Array<Record<string, unknown>> {
-  const r = new Map(ratios(result).map((x) => [x.peer, x.ratio]));
+  const r = new Map(ratios(result).map((x) => [x.peer, x]));
   return result.engines.map((e) => {
     const record: Record<string, unknown> = {
       scene: result.scene.scene,
@@ -86,7 +93,8 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
     for (const [k, v] of Object.entries(e.extra)) if (!(k in record)) record[k] = v;
     const ratio = r.get(e.engine);
     if (ratio !== undefined && e.engine !== THREADED) {
-      record.ratio = sig(ratio, 4);
+      record.ratio = sig(ratio.ratio, 4);
+      record.ratioMean = sig(ratio.meanRatio, 4);
       record.ratioOf = `${OURS}/${e.engine}`;
     }
     if (options.times) record.timesMs = Array.from(e.times, (t) => sig(t, 4));
@@ -121,8 +129,9 @@ export function table(rows: readonly (readonly string[])[], align?: readonly ('l
 }
 
 /**
- * The human-readable report of a run: a header, one table row per engine (standard columns then
- * the scene's extra columns), the ours/peer ratios, the process heap, and notes about each engine's
+ * The human-readable report of a run: a header, one table row per engine (standard columns, the
+ * mean step time beside the median, then the scene's extra columns), the ours/peer ratios of the
+ * median and of the mean step (with the load average), the process heap, and notes about each engine's
  * configuration and the scene.
  */
 export function humanReport(result: BenchResult, scene: BenchScene): string {
@@ -135,12 +144,13 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
     '',
   );
   const columns = scene.columns ?? [];
-  const header = ['engine', 'median ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
+  const header = ['engine', 'median ms', 'mean ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
   const rows: string[][] = [header];
   for (const e of result.engines) {
     rows.push([
       e.engine,
       formatMs(e.msPerStep.median),
+      formatMs(e.msPerStep.mean),
       formatMs(e.msPerStep.min),
       formatMs(e.msPerStep.max),
       formatRate(e.bodyStepsPerSecond),
@@ -155,8 +165,9 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
   const single = result.engines.find((e) => e.engine === OURS);
   const r = ratios(result).filter((x) => x.peer !== THREADED);
   if (r.length > 0) {
-    lines.push('', 'time ratio ours/peer (median step; < 1: bitphysics is faster):');
-    lines.push(table(r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3)])));
+    lines.push('', `time ratio ours/peer (< 1: bitphysics is faster; median step, and mean step = whole timed run of ${result.steps} steps; ` +
+      `load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus):`);
+    lines.push(table([['', 'median', 'mean'], ...r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3), x.meanRatio.toFixed(3)])]));
   }
   if (threaded && single) {
     const threads = result.scene.threads ?? 1;

@@ -2,6 +2,7 @@ import { boxPile3DLayout, pyramid3DLayout, spheresInBoxLayout } from '@bitphysic
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { boxWalls3d } from './box-walls.js';
 import { optimizedWasm } from './rapier2d.js';
+import { asleepSteps } from '../scenes/box-pile-3d.js';
 
 type Rapier = typeof import('@dimforge/rapier3d-compat').default;
 
@@ -124,7 +125,9 @@ export const rapier3dEngine: EngineAdapter = {
  * (cuboid collider of half extent 0.5 m, density 1 kg/m^3 so 1 kg, friction and restitution from the
  * layout); `box-pile-3d`'s closed box as six static cuboid slabs, `pyramid-3d`'s ground as one static
  * cuboid whose top is y = 0 reaching 10 m past the pyramid; gravity (0, -10, 0), timestep 1/60 s,
- * Rapier's default integration parameters and sleeping. Snapshots carry orientations.
+ * Rapier's default integration parameters and sleeping. Snapshots carry orientations. After every
+ * timed step (outside its time) the bodies asleep are counted, for `halfAsleepStep` and
+ * `allAsleepStep` (`asleepSteps`), counted like ours.
  */
 async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
   const R = await loadRapier3d();
@@ -153,11 +156,19 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
       `${ip.numInternalPgsIterations} internal PGS iteration, sleeping allowed with Rapier's default thresholds (defaults); ` +
       (pile ? 'six static cuboid walls' : 'a static cuboid ground') + '; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
   ];
+  const sleep = asleepSteps(n);
+  let steps = 0;
   return {
     engine: 'rapier3d',
     notes,
     step(): void {
       w.step();
+      steps++;
+    },
+    afterStep(): void {
+      let asleep = 0;
+      for (let i = 0; i < n; i++) if (bodies[i]!.isSleeping()) asleep++;
+      sleep.record(asleep, steps);
     },
     stats() {
       let contacts = 0, sleeping = 0;
@@ -168,7 +179,7 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
           w.contactPair(c, other, (manifold) => { contacts += manifold.numContacts(); });
         });
       });
-      return { bodies: n, contacts, extra: { sleeping } };
+      return { bodies: n, contacts, extra: { sleeping, ...sleep.fields() } };
     },
     snapshot(): BodySnapshot {
       const positions = new Float64Array(3 * n), orientations = new Float64Array(4 * n);
