@@ -75,6 +75,7 @@ export { forEachContact3D } from './collision/contacts3d-view.js';
 export { meshesOf } from './collision/mesh3d.js';
 export type { Contact3DView } from './collision/contacts3d-view.js';
 export { addBallJoint3D, addHingeJoint3D, addFixedJoint3D, addDistanceJoint3D, addSliderJoint3D, removeJoint3D, joint3DBreaks } from './joints3d/api.js';
+export { setBallJoint3DCone, setDistanceJoint3DLength, setDistanceJoint3DSpring, setJoint3DBreak, setJoint3DLimits, setJoint3DMotor } from './joints3d/api.js';
 export type { Joint3DBaseOptions, BallJoint3DOptions, HingeJoint3DOptions, FixedJoint3DOptions, DistanceJoint3DOptions, SliderJoint3DOptions } from './joints3d/api.js';
 export { Joint3DType, Joint3DFlag, joints3DOf } from './joints3d/store.js';
 export type { Joint3DStore } from './joints3d/store.js';

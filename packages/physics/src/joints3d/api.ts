@@ -3,6 +3,7 @@ import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle, resolveEntity } from '../handles.js';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store.js';
+import { wakeIsland } from '../collision/sleep.js';
 
 /**
  * Joints between 3D bodies, solved in the contact solver's soft substeps (joints3d/solver.ts): ball
@@ -287,6 +288,202 @@ export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOpti
   const j = make(world, where, Joint3DType.Slider, e, options, p, p, axis);
   storeLimitAndMotor(joints3DOf(world, true), j, lm);
   return currentHandle(world, j);
+}
+
+/** Names of the 3D joint types, for errors. */
+const TYPE_NAMES = ['ball', 'hinge', 'fixed', 'distance', 'slider'];
+
+/**
+ * The slot of the live 3D joint `joint` (a handle), of one of `types` when given.
+ * @throws RangeError `<where>: joint must be ...` naming the value (a removed entity, not a 3D joint, another type).
+ */
+function requireJoint3D(where: string, world: PhysicsWorld, joint: unknown, types?: readonly number[]): { s: Joint3DStore; j: number } {
+  const j = resolveEntity(world, joint, where, 'joint');
+  const s = joints3DOf(world);
+  if (s === undefined || !s.list.includes(j)) throw new RangeError(`${where}: joint must be a 3D joint, got entity ${describe(joint)}`);
+  if (types !== undefined && !types.includes(s.type[j]!)) {
+    const want = types.map((t) => TYPE_NAMES[t]).join(' or ');
+    throw new RangeError(`${where}: joint must be a 3D ${want} joint, got a ${TYPE_NAMES[s.type[j]!]} joint (${describe(joint)})`);
+  }
+  return { s, j };
+}
+
+/** Wakes the islands of a joint's two bodies (a setter changed what holds them). */
+function wakeJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
+  if (s.a[j] !== 0) wakeIsland(world, s.a[j]!);
+  if (s.b[j] !== 0) wakeIsland(world, s.b[j]!);
+}
+
+/**
+ * Sets (or with `coneAngle` null removes) a ball-and-socket joint's cone limit: B's copy of the cone
+ * axis (the `axis` given to addBallJoint3D, default (0, 1, 0), as the bodies were when the joint was
+ * made) may swing at most `coneAngle` away from A's. A joint made without a cone gets one about that
+ * axis. The cone's warm-start impulse starts again from zero; the bodies wake. Bodies already outside
+ * a narrower cone are brought back at the joints' soft rate (60 Hz, capped at a quarter of the
+ * substep rate), not in one step.
+ * @param coneAngle half angle, rad, in (0, pi); null removes the limit.
+ * @throws RangeError `setBallJoint3DCone: joint must be ...` on a removed entity or a joint that is not
+ *   a 3D ball joint; TypeError | RangeError `setBallJoint3DCone: coneAngle must be ...` naming the value.
+ *   A throwing call changes nothing.
+ */
+export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle: number | null): void {
+  const where = 'setBallJoint3DCone';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Ball]);
+  if (coneAngle !== null) {
+    assertFinite(where, 'coneAngle', coneAngle);
+    if (!(coneAngle > 0 && coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(coneAngle)}`);
+    s.flags[j] = s.flags[j]! | Joint3DFlag.Cone; s.upper[j] = coneAngle;
+  } else s.flags[j] = s.flags[j]! & ~Joint3DFlag.Cone;
+  s.limit[j] = 0;
+  wakeJoint3D(world, s, j);
+}
+
+/**
+ * A distance joint's rows after a change (joints3d/solver.ts): the rod row runs without spring and
+ * limits, the spring row with a spring, the lower limit's with limits when lower > 0 or without a
+ * spring, the upper's with limits when upper is finite. A row that no longer runs would still be warm
+ * started from its last impulse, so that impulse is dropped; rows that still run keep theirs.
+ */
+function dropIdleDistanceImpulses(s: Joint3DStore, j: number): void {
+  const f = s.flags[j]!, spring = (f & Joint3DFlag.Spring) !== 0, limit = (f & Joint3DFlag.Limit) !== 0;
+  if (!spring && limit) s.lx[j] = 0;
+  if (!limit || !(s.lower[j]! > 0 || !spring)) s.limit[j] = 0;
+  if (!limit || !Number.isFinite(s.upper[j]!)) s.ly[j] = 0;
+}
+
+/**
+ * Sets a distance joint's rest length and limits, as addDistanceJoint3D's `length`, `minLength` and
+ * `maxLength`: 0 <= minLength <= length <= maxLength, m. Omitted limits default as there, from the
+ * joint's current spring: both `length` without a spring (a rigid rod), 0 and Infinity with one. A
+ * rope of length L: `(L, 0)`. The spring, damping and break thresholds are kept. Limit impulses start
+ * again from zero when the limits change; the rod's or spring's is kept while that row still runs; the
+ * bodies wake. A body away from the new length is brought there at the rod's soft rate (60 Hz, capped
+ * at a quarter of the substep rate), at the spring's own rate, or not at all inside a rope's slack.
+ * @param length rest length, m, finite and > 0.
+ * @param minLength shortest the anchors may get, m, in [0, length].
+ * @param maxLength longest, m, >= length (Infinity allowed).
+ * @throws RangeError `setDistanceJoint3DLength: joint must be ...` on a removed entity or a joint that
+ *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DLength: <param> must be ...`
+ *   naming the parameter and value. A throwing call changes nothing.
+ */
+export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, length: number, minLength?: number, maxLength?: number): void {
+  const where = 'setDistanceJoint3DLength';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
+  assertPositive(where, 'length', length);
+  const spring = (s.flags[j]! & Joint3DFlag.Spring) !== 0;
+  const minL = minLength ?? (spring ? 0 : length), maxL = maxLength ?? (spring ? Infinity : length);
+  assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length)) throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const limitsChanged = s.lower[j] !== minL || s.upper[j] !== maxL;
+  s.length[j] = length; s.lower[j] = minL; s.upper[j] = maxL;
+  s.flags[j] = (spring ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  if (limitsChanged) { s.limit[j] = 0; s.ly[j] = 0; }
+  dropIdleDistanceImpulses(s, j);
+  wakeJoint3D(world, s, j);
+}
+
+/**
+ * Sets a distance joint's spring: the anchors are pulled toward the rest length by Box2D's soft spring
+ * of natural frequency `hertz` and damping ratio `dampingRatio` (joints3d/solver.ts). For a body of mass
+ * m on the fixed world, anchored at its centre of mass, that is a spring of stiffness
+ * k = m (2 pi hertz)^2 with a damper of c = 2 m dampingRatio (2 pi hertz): it swings with the period
+ * 2 pi sqrt(m / k) = 1 / hertz (undamped). `hertz` 0 removes the spring: the joint is then rigid between
+ * its limits (a rod when minLength = maxLength; a joint made with a spring and default limits, 0 and
+ * Infinity, then holds nothing: give limits with setDistanceJoint3DLength). Limits are kept; the rod's
+ * or spring's warm-start impulse carries over to the row that replaces it; the bodies wake.
+ * @param hertz natural frequency, Hz, finite and >= 0 (0: no spring).
+ * @param dampingRatio >= 0 (1: critically damped), finite.
+ * @throws RangeError `setDistanceJoint3DSpring: joint must be ...` on a removed entity or a joint that
+ *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DSpring: <param> must be ...`
+ *   naming the parameter and value. A throwing call changes nothing.
+ */
+export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, hertz: number, dampingRatio: number): void {
+  const where = 'setDistanceJoint3DSpring';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
+  assertNonNegative(where, 'hertz', hertz);
+  assertNonNegative(where, 'dampingRatio', dampingRatio);
+  s.hertz[j] = hertz; s.dampingRatio[j] = dampingRatio;
+  s.flags[j] = hertz > 0 ? s.flags[j]! | Joint3DFlag.Spring : s.flags[j]! & ~Joint3DFlag.Spring;
+  dropIdleDistanceImpulses(s, j);
+  wakeJoint3D(world, s, j);
+}
+
+/**
+ * Sets the force (N) and torque (N m) past which a 3D joint of any kind breaks (it is removed after the
+ * step and listed in `joint3DBreaks`). The force is the point rows' (or a distance joint's rows along
+ * its line, a slider's limit and motor included), the torque the angular rows' (a hinge's limit and
+ * motor and the cone included); a distance joint has no torque. Checked after each step's substeps, as
+ * impulse / substep time.
+ * @param breakForce > 0, Infinity for never.
+ * @param breakTorque > 0, Infinity for never; omitted keeps the joint's.
+ * @throws RangeError `setJoint3DBreak: joint must be ...` on a removed entity or one that is not a 3D
+ *   joint; TypeError | RangeError `setJoint3DBreak: <param> must be ...` naming the parameter and value
+ *   (NaN, <= 0, not a number). A throwing call changes nothing.
+ */
+export function setJoint3DBreak(world: PhysicsWorld, joint: number, breakForce: number, breakTorque?: number): void {
+  const where = 'setJoint3DBreak';
+  const { s, j } = requireJoint3D(where, world, joint);
+  const check = (param: string, v: unknown): void => {
+    if (typeof v !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(v)}`);
+    if (!(v > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never), got ${describe(v)}`);
+  };
+  check('breakForce', breakForce);
+  if (breakTorque !== undefined) check('breakTorque', breakTorque);
+  s.breakForce[j] = breakForce;
+  if (breakTorque !== undefined) s.breakTorque[j] = breakTorque;
+}
+
+/**
+ * Sets (or with `lower` null removes) a hinge's angle limits (rad, about its axis from the pose when
+ * made, right-handed; within [-pi, pi]) or a slider's translation limits (m, along its axis from the
+ * pose when made): lower <= upper. Unlike at creation the pose need not lie between them: a joint
+ * outside is brought back at the joints' soft rate. The limit's warm-start impulse starts again from
+ * zero; the motor is kept; the bodies wake.
+ * @throws RangeError `setJoint3DLimits: joint must be ...` on a removed entity or a joint that is not a
+ *   3D hinge or slider; TypeError | RangeError `setJoint3DLimits: <param> must be ...` naming the
+ *   parameter and value (upper missing, not finite, lower > upper, a hinge limit outside [-pi, pi]).
+ *   A throwing call changes nothing.
+ */
+export function setJoint3DLimits(world: PhysicsWorld, joint: number, lower: number | null, upper?: number): void {
+  const where = 'setJoint3DLimits';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Hinge, Joint3DType.Slider]);
+  if (lower === null) {
+    s.flags[j] = s.flags[j]! & ~Joint3DFlag.Limit; s.limit[j] = 0;
+    wakeJoint3D(world, s, j);
+    return;
+  }
+  assertFinite(where, 'lower', lower);
+  if (upper === undefined) throw new RangeError(`${where}: upper must be given with lower, got undefined`);
+  assertFinite(where, 'upper', upper);
+  if (!(lower <= upper)) throw new RangeError(`${where}: lower must be <= upper (${upper}), got ${lower}`);
+  if (s.type[j] === Joint3DType.Hinge) {
+    if (!(lower >= -Math.PI)) throw new RangeError(`${where}: lower must be >= -pi for a hinge, got ${lower}`);
+    if (!(upper <= Math.PI)) throw new RangeError(`${where}: upper must be <= pi for a hinge, got ${upper}`);
+  }
+  s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = lower; s.upper[j] = upper; s.limit[j] = 0;
+  wakeJoint3D(world, s, j);
+}
+
+/**
+ * Sets a hinge's or slider's motor: the target speed of B relative to A about (hinge, rad/s) or along
+ * (slider, m/s) the axis, reached with at most `maxForce` (hinge: torque, N m; slider: force, N);
+ * `maxForce` 0 turns the motor off (its impulse is dropped). Limits are kept; the bodies wake.
+ * @param speed rad/s or m/s, finite.
+ * @param maxForce N m or N, finite and >= 0.
+ * @throws RangeError `setJoint3DMotor: joint must be ...` on a removed entity or a joint that is not a
+ *   3D hinge or slider; TypeError | RangeError `setJoint3DMotor: <param> must be ...` naming the
+ *   parameter and value. A throwing call changes nothing.
+ */
+export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: number, maxForce: number): void {
+  const where = 'setJoint3DMotor';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Hinge, Joint3DType.Slider]);
+  assertFinite(where, 'speed', speed);
+  assertNonNegative(where, 'maxForce', maxForce);
+  s.motorSpeed[j] = speed; s.maxMotorTorque[j] = maxForce;
+  if (maxForce > 0) s.flags[j] = s.flags[j]! | Joint3DFlag.Motor;
+  else { s.flags[j] = s.flags[j]! & ~Joint3DFlag.Motor; s.motor[j] = 0; }
+  wakeJoint3D(world, s, j);
 }
 
 /** Removes a 3D joint. @throws RangeError on a removed entity or one that is not a 3D joint. */
