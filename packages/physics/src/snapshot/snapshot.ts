@@ -15,8 +15,9 @@ import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
  * same entities in the same order) as a reference to it (a query list neither of whose sets changed
  * since the world's last snapshot found them equal is not compared again: lean-ecs.ts counts each
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
- * id down (their entries above it are zero). Scratch arrays (the broadphase grid, see SCRATCH) are
- * stored as their type only. The format is unchanged by these: a version 2 snapshot written before
+ * id down (their entries above it are zero). Scratch arrays (the broadphase grid and the collision
+ * stage's per-step arrays, see SCRATCH; the solver's marks, see STAMPED) are stored as their type and
+ * length only. The format is unchanged by these: a version 2 snapshot written before
  * them restores as it did. Restoring a snapshot object into the world it was taken from (or into
  * one it was restored into before) leaves alone the query lists that have not changed since (their
  * versions say so), and the entity index when it is equal. `restore` writes into the world's own arrays
@@ -48,7 +49,43 @@ const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex']);
  * keeps their type only and restore leaves the target world's own arrays as they are (the
  * broadphase grows them when too small). About 4 MB of a 100,000-ball world's 10.4 MB.
  */
-const SCRATCH = new Set(['bucketStart', 'sorted', 'cellX', 'cellY', 'cellZ', 'bucketOf', 'oversized', 'candidates'].map((k) => `world.collision.grid.${k}`));
+const SCRATCH = new Set([
+  ...['bucketStart', 'sorted', 'cellX', 'cellY', 'cellZ', 'bucketOf', 'oversized', 'candidates'].map((k) => `world.collision.grid.${k}`),
+  ...PER_STEP_SCRATCH(),
+]);
+
+/**
+ * Collision scratch that every step writes before it reads it (checked against the step order), kept
+ * as type and length only: the restored world keeps its own array when it has one of that type and
+ * at least that length, and gets a zeroed one otherwise.
+ * - `margin`: every ball's speculative margin, written for all balls (static ones after) at the top of
+ *   broadphaseSystem, read only by the broadphase (collision/broadphase.ts, broadphase-pairs*.ts).
+ * - `pairA`, `pairB`, `pairKind`: the broadphase's pair list; broadphaseSystem sets `pairCount` to 0
+ *   first, the narrowphase reads the first `pairCount` pairs of this step.
+ * - `solverIndex`: read only for bodies whose `solverMark` equals this step's `solverStamp`, which
+ *   gatherBodies (collision/solver.ts) raises by one before giving indices (see STAMPED for `solverMark`).
+ * - `bodyState`, `bodyExtra`: packed rows of this step's solver bodies, filled by gatherBodies for rows
+ *   1 .. solverBodyCount - 1 (row 0, the static world, is zeroed there or never written) before any
+ *   solver stage reads them; `bodyImpact`: zeroed up to solverBodyCount by applyImpacts (impacts.ts),
+ *   which runs before anything reads it.
+ * About 3 MB of a settled 100,000-ball world's 9 to 13 MB.
+ */
+function PER_STEP_SCRATCH(): string[] {
+  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact'].map((k) => `world.collision.${k}`);
+}
+
+/**
+ * Stamp-marked scratch: an array of marks and the counter they are compared with. A mark counts only
+ * while it equals the counter, which its user raises by one before it marks (gatherBodies,
+ * collision/solver.ts: `solverMark[e] === ++solverStamp`), so every mark is at most the counter and
+ * the marks' values carry nothing else. A snapshot keeps the mark array's type and length only;
+ * restore keeps the world's own marks (or gives it zeroed ones) and sets the counter to the larger
+ * of the snapshot's and the world's own, so no kept mark can equal a future counter value. Only the
+ * counter's value differs from the original world's; no stage reads it except to compare marks.
+ */
+const STAMPED: ReadonlyMap<string, { parent: (world: PhysicsWorld) => Record<string, unknown>; counter: string }> = new Map([
+  ['world.collision.solverMark', { parent: (world: PhysicsWorld) => world.collision as unknown as Record<string, unknown>, counter: 'solverStamp' }],
+]);
 
 /** A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk). */
 export interface WorldSnapshot {
@@ -230,7 +267,7 @@ class Writer {
     if (typeof v !== 'object') throw new TypeError(`snapshot: cannot capture ${path} (a ${typeof v}); state must be data`);
     if (ArrayBuffer.isView(v)) {
       if (!(v.constructor.name in TYPED)) throw new TypeError(`snapshot: cannot capture ${path} (a ${v.constructor.name})`);
-      if (SCRATCH.has(path)) return { $t: 'scratch', type: v.constructor.name };
+      if (SCRATCH.has(path) || STAMPED.has(path)) return { $t: 'scratch', type: v.constructor.name, len: (v as TypedArray).length };
       return this.array(v as TypedArray, path);
     }
     if (this.unused.has(v)) {
@@ -323,7 +360,7 @@ class Reader {
     if (t === 'u') return undefined;
     if (t in TYPED) return this.full(e, path);
     if (t === 'unused') return new TYPED[e.type as string]!(e.n as number);
-    if (t === 'scratch') return new TYPED[e.type as string]!(0);
+    if (t === 'scratch') return new TYPED[e.type as string]!(typeof e.len === 'number' ? e.len : 0);
     const v = e.v as Encoded;
     if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
     if (t === 's') return new Set((v as Encoded[]).map((x) => this.fresh(x, path)));
@@ -343,8 +380,10 @@ class Reader {
     const cur = target[key];
     if (isTagged(e)) {
       const t = e.$t as string;
-      // Scratch (see SCRATCH): the target's own array stays.
-      if (t === 'scratch' && cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur)) return;
+      // Scratch (see SCRATCH, STAMPED): the target's own array stays if it is long enough (snapshots
+      // that recorded no length: any array of the target stays, as the broadphase grows the grid's).
+      if (t === 'scratch' && cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) &&
+        (typeof e.len !== 'number' || (cur.constructor.name === e.type && (cur as TypedArray).length >= e.len))) return;
       if (t === 'unused') {
         // No entity has the store's component: its contents are never read. A store the world has
         // allocated stays allocated (zeroed, as if new); one it lacks gets the snapshot's allocation.
@@ -640,6 +679,25 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     if (data.generationId !== sg || bitIndex(data.bitflag) !== sbit) same = false;
     map.push({ sg, sbit, tg: data.generationId, tflag: data.bitflag });
   }
+  // Queries of the snapshot this world lacks are made now, before its masks and entity index change:
+  // bitecs fills a new query by testing every live entity (about 0.5 s for 100,000 entities and the
+  // 40-odd queries of a world that has not stepped yet), and these lists are overwritten below anyway.
+  const names = namesOf(world);
+  const byKey = new Map<string, QueryData>();
+  for (const q of ctx.queries) { const d = describeQuery(q, names); if (d !== null) byKey.set(keyOf(d), q); }
+  for (const enc of ecs.queries as Encoded[]) {
+    const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
+    const d = { and: qd.and as string[], not: qd.not as string[], or: qd.or as string[] };
+    const key = keyOf(d);
+    if (byKey.has(key)) continue;
+    const terms: object[] = d.and.map((n) => C[n]!);
+    for (const n of d.not) terms.push(Not(C[n]! as never) as object);
+    if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
+    bitecsQuery(world as never, terms as never);
+    const q = [...ctx.queries].find((x) => { const dx = describeQuery(x, names); return dx !== null && keyOf(dx) === key; });
+    if (q === undefined) throw new Error(`restore: could not make the query ${key}`);
+    byKey.set(key, q);
+  }
   const maxId = ecs.maxId as number;
   const gens = ctx.entityMasks.length;
   // Masks, written in place: entries up to the larger of the two highest ids (ids above both are 0).
@@ -683,24 +741,13 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     }
   }
   // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
-  const names = namesOf(world);
-  const byKey = new Map<string, QueryData>();
-  for (const q of ctx.queries) { const d = describeQuery(q, names); if (d !== null) byKey.set(keyOf(d), q); }
   const done = new Set<QueryData>();
   let known = matching.get(ecs);
   ctx.dirtyQueries.clear();
   for (const enc of ecs.queries as Encoded[]) {
     const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
     const d = { and: qd.and as string[], not: qd.not as string[], or: qd.or as string[] };
-    let q = byKey.get(keyOf(d));
-    if (q === undefined) {
-      const terms: object[] = d.and.map((n) => C[n]!);
-      for (const n of d.not) terms.push(Not(C[n]! as never) as object);
-      if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
-      bitecsQuery(world as never, terms as never);
-      q = [...ctx.queries].find((x) => { const dx = describeQuery(x, names); return dx !== null && keyOf(dx) === keyOf(d); });
-      if (q === undefined) throw new Error(`restore: could not make the query ${keyOf(d)}`);
-    }
+    const q = byKey.get(keyOf(d))!; // made above
     done.add(q);
     const rem = idList(qd.toRemove!, lists, 'query');
     for (const [set, ids] of [[q, idList(qd.dense!, lists, 'query')], [q.toRemove, rem]] as const) {
@@ -879,7 +926,14 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   for (const ext of externalWorldStates()) {
     if (!(ext.name in h.external)) throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
   }
+  // Stamp counters (see STAMPED): the world's own, before the snapshot's are written.
+  const counters = [...STAMPED.values()].map(({ parent, counter }) => parent(world)[counter]);
   r.objectInto(world as unknown as Record<string, unknown>, state, 'world', NOT_STATE);
+  let s = 0;
+  for (const { parent, counter } of STAMPED.values()) {
+    const own = counters[s++], target = parent(world);
+    if (typeof own === 'number' && typeof target[counter] === 'number' && own > (target[counter] as number)) target[counter] = own;
+  }
   for (const ext of externalWorldStates()) {
     const enc = h.external[ext.name]!;
     if (enc === null) { ext.clear(world); continue; }
