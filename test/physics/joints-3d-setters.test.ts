@@ -1,7 +1,7 @@
 import { describe, expect, test } from 'vitest';
 import {
-  addBallJoint3D, addBody, addDistanceJoint3D, addHingeJoint3D, addShape3D, addSliderJoint3D, createPhysicsWorld, joint3DBreaks,
-  joints3DOf, removeJoint3D, setBallJoint3DCone, setDistanceJoint3DLength, setDistanceJoint3DSpring, setJoint3DBreak,
+  addBallJoint3D, addBody, addDistanceJoint3D, addHingeJoint3D, addPlane, addShape3D, addSliderJoint3D, createPhysicsWorld, isSleeping,
+  joint3DBreaks, joints3DOf, removeJoint3D, setBallJoint3DCone, setDistanceJoint3DLength, setDistanceJoint3DSpring, setJoint3DBreak,
   setJoint3DLimits, setJoint3DMotor, slotOf, step,
 } from '@bitphysics/physics';
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -98,6 +98,21 @@ describe('3D joint setters change the motion as the laws say', () => {
     for (let i = 0; i < 480; i++) { step(world); most = Math.max(most, dist()); }
     expect(most).toBeLessThan(0.8 + 3e-3);
     expect(Math.abs(dist() - 0.8)).toBeLessThan(3e-3);
+  });
+
+  test('a setter wakes the joint\'s bodies: a box asleep on the floor under a slack rope is lifted when the rope is shortened to a rod', () => {
+    const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -G, 0], dt: 1 / 60 });
+    addPlane(world, { normal: [0, 1, 0] });
+    const b = addBody(world, { position: [0, 0.1, 0] });
+    addShape3D(world, b, { type: 'box', halfExtents: [0.1, 0.1, 0.1], density: 1000 });
+    const j = addDistanceJoint3D(world, { b, anchorA: [0, 1.1, 0], length: 1.5, minLength: 0 });
+    for (let i = 0; i < 300; i++) step(world);
+    expect(isSleeping(world, b)).toBe(true);
+    setDistanceJoint3DLength(world, j, 0.5);
+    expect(isSleeping(world, b)).toBe(false);
+    for (let i = 0; i < 120; i++) step(world);
+    // Hanging 0.5 m below the anchor: its centre at 0.6 m (1 mm).
+    expect(Math.abs(world.components.Position.y[slotOf(b)]! - 0.6)).toBeLessThan(1e-3);
   });
 
   test('setBallJoint3DCone: a swing that would reach 1 rad stays within the cone set after creation; null removes it', () => {
