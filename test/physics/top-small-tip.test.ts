@@ -1,0 +1,71 @@
+import { describe, expect, test } from 'vitest';
+import { addBody, addPlane, addShape3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+
+const G = 9.81;
+
+/**
+ * A spinning top standing free on a small sphere tip (issue 9). Last session a 5 mm tip was reported
+ * to precess 12 to 17 % slow (1 cm and up within 1.2 %), which is why lab-rigid-3d's top stands on a
+ * 1.5 cm tip. Measured again at this commit and at 8b96651 (where it was reported), it does not
+ * reproduce: the lab's top on a 5 mm tip precesses within 0.04 % of the steady root at its 16 substeps
+ * (1 cm: 0.04 %, 1.5 cm: 0.06 %), and this test's top moves the same at every tip size to 1e-10. The
+ * normal impulse is right too: the solver substeps of a step sum to m g h (a reading of only the last
+ * substep's impulse, `forEachContact3D`, shows 0.67 m g h_s there, the first substep carrying 2.0). So
+ * this test guards the small tip; there was nothing to fix.
+ */
+describe('a top on a small sphere tip', () => {
+  // The ball-joint precession test's top (rigid-3d-motion.test.ts), freed: a disc (radius 0.5 m, 0.1 m
+  // thick, 1000 kg/m^3) whose centre is r = 0.3 m up its axis from the centre of a sphere tip of radius
+  // rho (a separate shape of the same body, of negligible mass), standing on a smooth floor, tilted
+  // 0.3 rad, spinning at 100 rad/s.
+  test.each([0.005, 0.015, 0.05])('tip radius %s m: precesses at m g r / (I omega) (2 %), its centre of mass stays on its vertical and its tilt holds', (rho) => {
+    const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -G, 0], sleep: false, dt: 1 / 240 });
+    addPlane(world, { normal: [0, 1, 0], friction: 0 });
+    const th = 0.3, r = 0.3, omega = 100;
+    const a = [Math.sin(th), Math.cos(th), 0];
+    // The body's origin at the tip sphere's centre, which touches the floor; the axis tilted toward +x.
+    const top = addBody(world, { position: [0, rho, 0], orientation: [0, 0, Math.sin(-th / 2), Math.cos(-th / 2)] });
+    addShape3D(world, top, { type: 'cylinder', radius: 0.5, halfHeight: 0.05, offset: [0, r, 0], density: 1000 });
+    addShape3D(world, top, { type: 'sphere', radius: rho, density: 1e-6, friction: 0 });
+    const c = world.components, e = slotOf(top);
+    const m = c.Mass.value[e]!;
+    // The centre of mass is where the body now is: r from the tip sphere's centre (1e-6: the tip's mass).
+    const cx = c.Position.x[e]!, cy = c.Position.y[e]!, cz = c.Position.z[e]!;
+    expect(Math.abs(Math.hypot(cx, cy - rho, cz) - r)).toBeLessThan(1e-6);
+    // The disc's largest principal moment is the one about its axis; the smallest, across it about the
+    // centre of mass (the free top turns about its centre of mass: its tip slides on the smooth floor).
+    const I3 = 1 / Math.min(c.InertiaTensor.invX[e]!, c.InertiaTensor.invY[e]!, c.InertiaTensor.invZ[e]!);
+    const I1 = 1 / Math.max(c.InertiaTensor.invX[e]!, c.InertiaTensor.invY[e]!, c.InertiaTensor.invZ[e]!);
+    const Omega = (m * G * r) / (I3 * omega);
+    // The steady root of m g r = Omega (I3 omega - I1 Omega cos th) (Goldstein sec. 5.7), 0.15 % above
+    // the gyroscope formula here; started on it (spin less Omega cos th along the axis, plus Omega about
+    // the vertical), so nutation stays small.
+    const L = I3 * omega, cos = Math.cos(th);
+    const steady = (L - Math.sqrt(L * L - 4 * I1 * cos * m * G * r)) / (2 * I1 * cos);
+    const s = omega - steady * cos;
+    c.AngularVelocity.x[e] = s * a[0]!; c.AngularVelocity.y[e] = s * a[1]! + steady; c.AngularVelocity.z[e] = 0;
+    const O = c.Orientation;
+    const axis = (): number[] => {
+      const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+      return [2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w)];
+    };
+    const heading = (): number => { const u = axis(); return Math.atan2(-u[2]!, u[0]!); };
+    const start = heading();
+    const steps = 240; // 1 s: about 0.24 rad of precession
+    for (let i = 0; i < steps; i++) step(world);
+    const rate = (heading() - start) / world.time;
+    // The gyroscope formula within 2 % (the issue's goal; measured -0.005 % at every tip size, the same
+    // to 1e-10), and the steady root within 0.5 % (measured -0.12 %).
+    expect(Math.abs(rate / Omega - 1)).toBeLessThan(0.02);
+    expect(Math.abs(rate / steady - 1)).toBeLessThan(0.005);
+    // A smooth floor pushes only upward: the centre of mass keeps its x and z (1 mm; measured 0).
+    expect(Math.hypot(c.Position.x[e]! - cx, c.Position.z[e]! - cz)).toBeLessThan(1e-3);
+    // The tip stays on the floor: the tip sphere's lowest point, centre of mass - r axis - rho, within
+    // 0.1 mm of the floor (measured 0.03 mm into it: the soft contact's give), neither sunk nor lifted.
+    const u = axis();
+    expect(Math.abs(c.Position.y[e]! - r * u[1]! - rho)).toBeLessThan(1e-4);
+    // The tilt holds within 0.03 rad (measured +0.0195 at every tip size: the one-substep solver gains
+    // tilt at a rate first order in the step, as the ball-joint top does).
+    expect(Math.abs(Math.acos(u[1]!) - th)).toBeLessThan(0.03);
+  });
+});
