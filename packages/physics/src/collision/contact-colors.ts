@@ -43,6 +43,8 @@ interface ColorScratch {
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
   /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each). */
   counts: Int32Array; start: Int32Array; next: Int32Array;
+  /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
+  pending: boolean;
 }
 
 const scratchOf = new WeakMap<CollisionState, ColorScratch>();
@@ -55,6 +57,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
       params: new Float64Array(16), color: new Uint8Array(1024), mask: new Uint32Array(1024), arrays: [],
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
+      pending: false,
     };
     scratchOf.set(cs, s);
   }
@@ -70,6 +73,9 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
  * no joints or manifolds (`others` true when there are), shared solver state, enough rows.
  */
 export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others: boolean): boolean {
+  // A plan left by a step that stopped before its restitution stage is not this step's.
+  const old = scratchOf.get(world.collision);
+  if (old !== undefined) old.pending = false;
   const pool = world.threadPool;
   if (pool === null || others || world.dimensions !== 2 || pool.threads > 16) return false;
   const cs = world.collision;
@@ -217,4 +223,31 @@ export function solveColoredSubsteps(
   }
   if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, np);
   unpackContacts2D(buf, s.pack, np);
+  s.pending = true;
+}
+
+/** The colours of this step's coloured substeps, for the restitution stage (solver-stages-threads.ts). */
+export interface ColoredPlan {
+  /** The packed rows, colour by colour (contact-pack2d.ts), shared. */
+  pack: Float64Array;
+  /** The plan (solveColored2D's layout: 3 threads, 4 colours, 8.. the colours' first rows), shared. */
+  plan: Int32Array;
+  /** The barrier's four Int32 slots, shared (slot 3 free for the restitution stage's count). */
+  bar: Int32Array;
+}
+
+/**
+ * The plan of this step's coloured substeps, once (the next call returns null), or null when this
+ * step's substeps did not run by colours.
+ */
+export function coloredPlan(cs: CollisionState): ColoredPlan | null {
+  const s = scratchOf.get(cs);
+  if (s === undefined || !s.pending) return null;
+  s.pending = false;
+  return s;
+}
+
+/** Whether the calling thread may block in Atomics.wait (not a browser's main thread). */
+export function callerMayWait(): boolean {
+  return mayWait();
 }

@@ -15,6 +15,7 @@ import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, 
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
 import { solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
+import { approachOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
@@ -222,6 +223,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const is2D = S === 8;
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
+  if (is2D && gatherFillOnThreads(world, count, pushed)) return; // the same fill on the threads (solver-stages-threads.ts)
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     const o = k * S, q = k * 6;
@@ -294,6 +296,7 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
  * the solve.
  */
 function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
+  if (finishOnThreads(world, buf)) return; // the same bodies and rows on the threads (solver-stages-threads.ts)
   const cs = world.collision;
   const c = world.components;
   const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType, sb = cs.bodyState, ex = cs.bodyExtra;
@@ -555,6 +558,7 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
  * recorded at its time of impact (restitution leaves separating rows alone).
  */
 function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
+  if (approachOnThreads(world, buf)) return; // the same rows on the threads (solver-stages-threads.ts)
   const cs = world.collision;
   const sb = cs.bodyState, type = cs.bodyType;
   const is2D = world.dimensions === 2;
@@ -759,6 +763,7 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
  * pile from creating energy.
  */
 function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
+  if (restitutionOnThreads(world, buf)) return; // after a coloured solve: by colours (solver-stages-threads.ts)
   const cs = world.collision;
   const threshold = cs.settings.restitutionThreshold, elasticThreshold = cs.settings.elasticRestitutionThreshold;
   const iterations = cs.settings.restitutionIterations;

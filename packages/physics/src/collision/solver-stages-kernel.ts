@@ -1,0 +1,225 @@
+/**
+ * The 2D contact solver's per-body and per-row stages (solver.ts gatherBodies' fill, measureApproach,
+ * finishBodies) and its restitution stage by colours, as thread kernels (threads/kernels.ts rules:
+ * self-contained functions the worker threads also run as source text). solver-stages-threads.ts
+ * runs them and says when.
+ *
+ * The per-body and per-row kernels do each body's or row's arithmetic of solver.ts's one-thread loop,
+ * unchanged, so their results are the same to the bit whichever thread runs a body or row. The
+ * restitution kernel visits the rows colour by colour (the coloured solve's colours,
+ * contact-colors.ts), not in buffer order: deterministic, the same on any number of threads, but not
+ * the one-thread world's order (see solver-stages-threads.ts).
+ */
+
+import type { KernelArray } from '../threads/kernel-types.js';
+
+/**
+ * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver.ts), one
+ * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
+ * i + 1). A: 0-2 Position x, y, z, 3-5 Velocity x, y, z, 6-8 AngularVelocity x, y, z, 9-11 Force x, y,
+ * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of 8), 16 solver extra (rows
+ * of 6). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step, every body counts as pushed),
+ * 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
+ */
+export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
+  const wx = A[6] as Float64Array, wy = A[7] as Float64Array, wz = A[8] as Float64Array;
+  const fx = A[9] as Float64Array, fy = A[10] as Float64Array, fz = A[11] as Float64Array;
+  const type = A[12] as Uint8Array, invMass = A[13] as Float64Array, invInertia = A[14] as Float64Array;
+  const sb = A[15] as Float64Array, ex = A[16] as Float64Array;
+  const h = P[0]!, gx = P[1]!, gy = P[2]!, gz = P[3]!, pushed = P[4]!, DYNAMIC = P[5]!, KINEMATIC = P[6]!;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const k = i + 1, e = list[i]!;
+    const o = k * 8, q = k * 6;
+    const ii = invInertia[e]!;
+    const dynamic = type[e] === DYNAMIC;
+    const spins = type[e] === KINEMATIC;
+    const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
+    const gb = dynamic && !forced ? 0.5 * h : 0;
+    const held = forced ? 1 : pushed;
+    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
+    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
+    sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
+    sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
+  }
+  return 0;
+}
+
+/**
+ * measureApproach (solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
+ * impact stage and the speed at impact across a closing gap. A: 0 ia, 1 ib, 2 a, 3 b (Int32), 4 nx,
+ * 5 ny, 6 nz, 7 relativeVelocity (out), 8 impactVelocity (out), 9 separation, 10 impulse, 11 bodyType
+ * (Uint8), 12 solver state (rows of 8). P: 0-2 gravity (m/s^2), 3 BodyType.Dynamic. Returns 0.
+ */
+export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
+  const IA = A[0] as Int32Array, IB = A[1] as Int32Array, CA = A[2] as Int32Array, CB = A[3] as Int32Array;
+  const NX = A[4] as Float64Array, NY = A[5] as Float64Array, NZ = A[6] as Float64Array;
+  const RV = A[7] as Float64Array, IV = A[8] as Float64Array, S0 = A[9] as Float64Array, IMP = A[10] as Float64Array;
+  const type = A[11] as Uint8Array, sb = A[12] as Float64Array;
+  const gx = P[0]!, gy = P[1]!, gz = P[2]!, DYNAMIC = P[3]!;
+  for (let i = lo; i < hi; i++) {
+    const oa = IA[i]! * 8, ob = IB[i]! * 8;
+    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
+    const rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+    RV[i] = rv;
+    if (IMP[i]! > 0 && rv >= 0) continue;
+    const gap = S0[i]!;
+    if (!(rv < 0 && gap > 0)) { IV[i] = rv; continue; }
+    const a = CA[i]!, b = CB[i]!;
+    const an = ((type[b] === DYNAMIC ? 1 : 0) - (a !== 0 && type[a] === DYNAMIC ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
+    const v2 = rv * rv - 2 * an * gap;
+    IV[i] = v2 > 0 ? -Math.sqrt(v2) : rv;
+  }
+  return 0;
+}
+
+/**
+ * finishBodies (solver.ts) of 2D solver bodies lo + 1 .. hi: velocities, positions (base +
+ * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components.
+ * `ids`: the solver bodies' entity ids from solver index 1. A: 0 Position x, 1 y, 2 Velocity x, 3 y,
+ * 4 AngularVelocity z, 5 Angle, 6 bodyType (Uint8), 7 solver state (rows of 8), 8 solver extra (rows of
+ * 6), 9 bodyImpact (rows of P[3]). P: 0-1 the free-flight correction -g h h_s / 2 (m), 2
+ * BodyType.Dynamic, 3 the impact row stride. Returns the sum of the written positions and velocities
+ * (finite exactly when they all are: the caller's check).
+ */
+export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
+  const wz = A[4] as Float64Array, angle = A[5] as Float64Array, type = A[6] as Uint8Array;
+  const sb = A[7] as Float64Array, ex = A[8] as Float64Array, imp = A[9] as Float64Array;
+  const fx = P[0]!, fy = P[1]!, DYNAMIC = P[2]!, Q = P[3]!;
+  const list = ids as Int32Array;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const k = i + 1, e = list[i]!;
+    if (type[e] !== DYNAMIC) continue;
+    const o = k * 8, r = k * 6;
+    const free = sb[o + 7] === 0 ? 1 : 0;
+    vx[e] = sb[o]!; vy[e] = sb[o + 1]!;
+    const x = ex[r]! + sb[o + 3]! + imp[k * Q]! + free * fx, y = ex[r + 1]! + sb[o + 4]! + imp[k * Q + 1]! + free * fy;
+    px[e] = x; py[e] = y;
+    check += x + y + sb[o]! + sb[o + 1]!;
+    if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
+  }
+  return check;
+}
+
+/**
+ * The deepest overlap left after the 2D solve over contact rows lo .. hi - 1 (finishBodies' last
+ * loop): writes min(0, min_i s_i) of the range into out[part] (m). A: 0 ia, 1 ib (Int32), 2 separation,
+ * 3 nx, 4 ny, 5 solver state (rows of 8), 6 out (one slot a thread). P unused. Returns 0.
+ */
+export function deepest2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number, part: number): number {
+  const IA = A[0] as Int32Array, IB = A[1] as Int32Array, S0 = A[2] as Float64Array, NX = A[3] as Float64Array, NY = A[4] as Float64Array;
+  const sb = A[5] as Float64Array, out = A[6] as Float64Array;
+  let deepest = 0;
+  for (let i = lo; i < hi; i++) {
+    const a = IA[i]! * 8 + 3, b = IB[i]! * 8 + 3;
+    const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+    if (s < deepest) deepest = s;
+  }
+  out[part] = deepest;
+  return P.length * 0;
+}
+
+/**
+ * The restitution stage of a 2D world whose substeps ran by colours (applyRestitution in solver.ts, with
+ * its sequential passes visiting the rows colour by colour), thread `part` of plan[3].
+ * First, per row (rows split in ranges over the threads, each row on its own as in solver.ts): a row
+ * that carried no impulse takes no part (target -1); one that approached faster than its threshold gets
+ * the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0. Then, if any row
+ * bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the rows of a colour
+ * share no movable body, so each colour is split over the threads, which meet at a barrier after it
+ * (the overflow colour on thread 0 alone).
+ * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 3
+ * threads, 4 colours C, 8 .. 9 + C the colours' first rows), 2 barrier (Int32: 0 arrived, 1 generation,
+ * 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32), 6 nx, 7 ny, 8 normalMass,
+ * 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12 maxNormalImpulse, 13 totalNormalImpulse,
+ * 14 impulse. P: 0 contact rows, 1 restitutionThreshold (m/s), 2 elasticRestitutionThreshold (m/s),
+ * 3 restitutionIterations, 4 the calling thread may block in Atomics.wait (1). Returns 0 (-1 if another
+ * thread failed and this one stopped).
+ */
+export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
+  const pk = A[0] as Float64Array, plan = A[1] as Int32Array, bar = A[2] as Int32Array, sb = A[3] as Float64Array;
+  const IA = A[4] as Int32Array, IB = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
+  const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
+  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
+  const n = P[0]!, threshold = P[1]!, elasticThreshold = P[2]!, iterations = P[3]!;
+  const T = plan[3]!, C = plan[4]!;
+  const wait = part !== 0 || P[4] === 1;
+  let failed = false;
+  // Stage 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
+  const units = 1 + iterations * (C + 1);
+  outer:
+  for (let u = 0; u < units; u++) {
+    try {
+      if (u === 0) {
+        const lo = Math.floor((n * part) / T), hi = Math.floor((n * (part + 1)) / T);
+        let bouncing = 0;
+        for (let i = lo; i < hi; i++) {
+          const e = E[i]!;
+          if (MAXN[i] === 0) { RV[i] = -1; continue; }
+          MAXN[i] = 0;
+          if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
+            RV[i] = -e * IV[i]!;
+            const a = IA[i]! * 8, b = IB[i]! * 8;
+            const vn = (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+            const stop = vn < 0 ? -NM[i]! * vn : 0;
+            TOT[i] = stop + e * (TOT[i]! + stop);
+            bouncing++;
+          } else RV[i] = 0;
+        }
+        if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+      } else {
+        const c = (u - 1) % (C + 1);
+        const first = plan[8 + c]!, last = plan[9 + c]!, len = last - first;
+        const r0 = c === C ? (part === 0 ? first : last) : first + Math.floor((len * part) / T);
+        const r1 = c === C ? last : first + Math.floor((len * (part + 1)) / T);
+        for (let k = r0; k < r1; k++) {
+          const o = k * 16;
+          const i = pk[o + 15]!;
+          const target = RV[i]!;
+          if (target < 0) continue;
+          const a = pk[o]!, b = pk[o + 1]!;
+          const nx = pk[o + 2]!, ny = pk[o + 3]!;
+          const vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny;
+          const old = MAXN[i]!;
+          let acc = old - pk[o + 7]! * (vn - target);
+          if (acc < 0) acc = 0;
+          if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
+          const dl = acc - old;
+          if (dl === 0) continue;
+          MAXN[i] = acc;
+          IMP[i] = IMP[i]! + dl;
+          const ka = sb[a + 5]! * dl, kb = sb[b + 5]! * dl;
+          sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
+          sb[b] = sb[b]! + kb * nx; sb[b + 1] = sb[b + 1]! + kb * ny;
+        }
+      }
+    } catch (e) {
+      Atomics.store(bar, 2, 1);
+      Atomics.add(bar, 1, 1);
+      Atomics.notify(bar, 1);
+      throw e;
+    }
+    if (T > 1) {
+      if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
+      const gen = Atomics.load(bar, 1);
+      if (Atomics.add(bar, 0, 1) === T - 1) {
+        Atomics.store(bar, 0, 0);
+        Atomics.add(bar, 1, 1);
+        Atomics.notify(bar, 1);
+      } else {
+        let spins = 0;
+        while (Atomics.load(bar, 1) === gen && Atomics.load(bar, 2) === 0) {
+          if (++spins > 200 && wait) Atomics.wait(bar, 1, gen, 50);
+        }
+      }
+      if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
+    }
+    // No row bounces: no passes (every thread reads the count after the barrier).
+    if (u === 0 && Atomics.load(bar, 3) === 0) break;
+  }
+  return failed ? -1 : 0;
+}
