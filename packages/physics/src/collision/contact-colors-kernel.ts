@@ -8,13 +8,22 @@ import type { KernelArray } from '../threads/kernel-types.js';
 
 /**
  * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps; thread `part` of
- * plan[3]. A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
+ * plan[3]. First each thread packs its range of the contact buffer's rows (contact-pack2d.ts layout)
+ * into the pack, colour by colour, from its own first slot of each colour (`offsets`), then the
+ * threads meet; after the substeps each writes the impulses of its range of packed rows back to the
+ * buffer (normal, tangent, largest pass impulse, delivered total), as unpackContacts2D.
+ * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
  * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads, 4 colours C, 5 solver bodies,
  * 6 the calling thread may block in Atomics.wait, 8 .. 8 + C + 1 the colours' first rows, the
  * overflow colour's rows from plan[8 + C] to plan[9 + C]), 5 barrier (Int32: arrived, generation,
- * abort). P: 0 1 / h_s, 1-3 dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity
- * times h_s. The arithmetic of each row and body is that of solver.ts's one-thread loops. Returns 0
+ * abort), 6 each row's colour (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow colour, 255 not packed),
+ * 7 offsets (Int32, P[12] a thread: the thread's next pack slot of each colour; advanced as it packs),
+ * the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15 normalMass,
+ * 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner (Uint8),
+ * 21 maxNormalImpulse, 22 totalNormalImpulse. P: 0 1 / h_s, 1-3 dynamic softness, 4-6 rigid softness,
+ * 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the buffer's rows, 12 colour slots a thread in
+ * offsets. The arithmetic of each row and body is that of solver.ts's one-thread loops. Returns 0
  * (-1 if another thread failed and this one stopped).
  */
 export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
@@ -23,12 +32,53 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, T = plan[3]!, C = plan[4]!, nb = plan[5]!;
   const wait = part !== 0 || plan[6] === 1;
   const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
-  const hs = P[8]!, gx = P[9]!, gy = P[10]!;
+  const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!;
+  const color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
   // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
   // positions (bodies), then the relax passes.
   const stages = 3 + iters + relax;
   const b0 = 1 + Math.floor(((nb - 1) * part) / T), b1 = 1 + Math.floor(((nb - 1) * (part + 1)) / T);
   let failed = false;
+  // Stage -1: pack this thread's range of the buffer's rows.
+  {
+    const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
+    const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
+    const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
+    const RP = A[20] as Uint8Array;
+    const lo = Math.floor((rows * part) / T), hi = Math.floor((rows * (part + 1)) / T), base = part * W;
+    try {
+      for (let i = lo; i < hi; i++) {
+        const c = color[i]!;
+        if (c === 255) continue;
+        const k = offsets[base + c]!;
+        offsets[base + c] = k + 1;
+        const o = k * 16;
+        pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
+        pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
+        pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
+        pk[o + 14] = 0; pk[o + 15] = i;
+      }
+    } catch (e) {
+      Atomics.store(bar, 2, 1);
+      Atomics.add(bar, 1, 1);
+      Atomics.notify(bar, 1);
+      throw e;
+    }
+    if (T > 1) {
+      const gen = Atomics.load(bar, 1);
+      if (Atomics.add(bar, 0, 1) === T - 1) {
+        Atomics.store(bar, 0, 0);
+        Atomics.add(bar, 1, 1);
+        Atomics.notify(bar, 1);
+      } else {
+        let spins = 0;
+        while (Atomics.load(bar, 1) === gen && Atomics.load(bar, 2) === 0) {
+          if (++spins > 200 && wait) Atomics.wait(bar, 1, gen, 50);
+        }
+      }
+      if (Atomics.load(bar, 2) !== 0) return -1;
+    }
+  }
   outer:
   for (let s = 0; s < substeps; s++) {
     for (let stage = 0; stage < stages; stage++) {
@@ -144,5 +194,14 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       }
     }
   }
-  return failed ? -1 : 0;
+  if (failed) return -1;
+  // Unpack: this thread's range of the packed rows' impulses back to the buffer (rows are disjoint).
+  const LN = A[18] as Float64Array, LT = A[19] as Float64Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
+  const np = plan[9 + C]!;
+  const k0 = Math.floor((np * part) / T), k1 = Math.floor((np * (part + 1)) / T);
+  for (let k = k0; k < k1; k++) {
+    const o = k * 16, i = pk[o + 15]!;
+    LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
+  }
+  return 0;
 }

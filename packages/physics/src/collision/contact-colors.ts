@@ -30,7 +30,19 @@ import { solveColored2D } from './contact-colors-kernel.js';
 import { KERNEL } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
-import { PACK_STRIDE, unpackContacts2D } from './contact-pack2d.js';
+import { PACK_STRIDE } from './contact-pack2d.js';
+
+/** Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same contents). */
+function shareBuffer(buf: ContactBuffer): void {
+  const rec = buf as unknown as Record<string, unknown>;
+  for (const key of Object.keys(rec)) {
+    const a = rec[key];
+    if (!ArrayBuffer.isView(a) || a instanceof DataView || isShared(a)) continue;
+    const copy = sharedLike(a as KernelArray, (a as KernelArray).length);
+    copy.set(a as never);
+    rec[key] = copy;
+  }
+}
 
 /** Colours before the overflow colour (bits of a 32-bit mask a body). */
 export const MAX_COLORS = 32;
@@ -41,6 +53,8 @@ const PLAN_HEAD = 8;
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
+  /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
+  offsets: Int32Array;
   /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each). */
   counts: Int32Array; start: Int32Array; next: Int32Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
@@ -55,14 +69,15 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
     s = {
       pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
-      params: new Float64Array(16), color: new Uint8Array(1024), mask: new Uint32Array(1024), arrays: [],
+      params: new Float64Array(16), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
+      offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
       pending: false,
     };
     scratchOf.set(cs, s);
   }
   if (s.pack.length < rows * PACK_STRIDE) s.pack = sharedLike(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
-  if (s.color.length < rows) s.color = new Uint8Array(Math.max(rows, 2 * s.color.length));
+  if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
   if (s.dyn.length < bodies) s.dyn = sharedLike(s.dyn, Math.max(bodies, 2 * s.dyn.length));
   if (s.mask.length < bodies) s.mask = new Uint32Array(Math.max(bodies, 2 * s.mask.length));
   return s;
@@ -86,33 +101,42 @@ export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others:
 }
 
 /**
- * Colours the rows of `buf` (solver indices, masses and impulses prepared) and packs them colour by
- * colour into the scratch's pack; fills the plan's colour starts. Returns the packed rows.
+ * Colours the rows of `buf` (solver indices, masses and impulses prepared) greedily in buffer order;
+ * fills the plan's colour starts and, for the kernel's packing stage, each of `parts` row ranges'
+ * first pack slot of every colour (`offsets`, MAX_COLORS + 1 a range: the range's rows of a colour
+ * follow the previous ranges' rows of that colour, so the pack is in buffer order within each colour
+ * however many threads pack it). Returns the rows to pack.
  */
-function colorAndPack(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): number {
+function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
   const n = buf.count, bodies = cs.solverBodyCount;
   const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
   const sb = cs.bodyState, mask = s.mask, color = s.color, plan = s.plan;
+  const W = MAX_COLORS + 1, partCounts = s.offsets;
   mask.fill(0, 0, bodies);
+  partCounts.fill(0, 0, parts * W);
   const counts = s.counts;
   counts.fill(0);
-  for (let i = 0; i < n; i++) {
-    if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) { color[i] = 255; continue; } // a row that can do nothing
-    const a = IA[i]!, b = IB[i]!;
-    // Only bodies an impulse can move take a colour's slot (the static world and kinematic bodies are read only).
-    const ma = a !== 0 && (sb[a * 8 + 5]! > 0 || sb[a * 8 + 6]! > 0);
-    const mb = sb[b * 8 + 5]! > 0 || sb[b * 8 + 6]! > 0;
-    const used = (ma ? mask[a]! : 0) | (mb ? mask[b]! : 0);
-    const free = ~used;
-    let c = MAX_COLORS;
-    if (free !== 0) {
-      c = 31 - Math.clz32(free & -free);
-      const bit = 1 << c;
-      if (ma) mask[a] = mask[a]! | bit;
-      if (mb) mask[b] = mask[b]! | bit;
+  for (let p = 0; p < parts; p++) {
+    const lo = Math.floor((n * p) / parts), hi = Math.floor((n * (p + 1)) / parts), base = p * W;
+    for (let i = lo; i < hi; i++) {
+      if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) { color[i] = 255; continue; } // a row that can do nothing
+      const a = IA[i]!, b = IB[i]!;
+      // Only bodies an impulse can move take a colour's slot (the static world and kinematic bodies are read only).
+      const ma = a !== 0 && (sb[a * 8 + 5]! > 0 || sb[a * 8 + 6]! > 0);
+      const mb = sb[b * 8 + 5]! > 0 || sb[b * 8 + 6]! > 0;
+      const used = (ma ? mask[a]! : 0) | (mb ? mask[b]! : 0);
+      const free = ~used;
+      let c = MAX_COLORS;
+      if (free !== 0) {
+        c = 31 - Math.clz32(free & -free);
+        const bit = 1 << c;
+        if (ma) mask[a] = mask[a]! | bit;
+        if (mb) mask[b] = mask[b]! | bit;
+      }
+      color[i] = c;
+      counts[c] = counts[c]! + 1;
+      partCounts[base + c] = partCounts[base + c]! + 1;
     }
-    color[i] = c;
-    counts[c] = counts[c]! + 1;
   }
   // Colour starts (the overflow colour last), then rows in buffer order within each colour.
   let used = 0;
@@ -124,22 +148,17 @@ function colorAndPack(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): 
   start[used] = at; at += counts[MAX_COLORS]!; start[used + 1] = at;
   plan[4] = used;
   for (let c = 0; c <= used + 1; c++) plan[PLAN_HEAD + c] = start[c]!;
+  // Each range's first slot of each colour (slot MAX_COLORS: the overflow colour, packed after colour used - 1).
   const next = s.next;
   next.set(start);
-  const overflow = used;
-  const pk = s.pack;
-  const NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation, FB = buf.frictionBound, RP = buf.rigidPartner;
-  for (let i = 0; i < n; i++) {
-    const c0 = color[i]!;
-    if (c0 === 255) continue;
-    const c = c0 === MAX_COLORS ? overflow : c0;
-    const k = next[c]!;
-    next[c] = k + 1;
-    const o = k * PACK_STRIDE;
-    pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
-    pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
-    pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
-    pk[o + 14] = 0; pk[o + 15] = i;
+  next[MAX_COLORS] = start[used]!;
+  for (let p = 0; p < parts; p++) {
+    const base = p * W;
+    for (let c = 0; c < W; c++) {
+      const k = partCounts[base + c]!;
+      partCounts[base + c] = next[c]!;
+      next[c] = next[c]! + k;
+    }
   }
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver.ts).
   const list = cs.solverBodies, type = cs.bodyType, dyn = s.dyn;
@@ -200,16 +219,19 @@ export function solveColoredSubsteps(
   const cs = world.collision, pool = world.threadPool!;
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
-  const np = colorAndPack(cs, buf, s);
+  shareBuffer(buf);
+  const np = colorRows(cs, buf, s, pool.threads);
   const plan = s.plan, P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;
   plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
-  P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs;
+  P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1;
   const A = s.arrays;
   A.length = 0;
-  A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar);
+  A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
+    buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
+    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse);
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
@@ -222,7 +244,6 @@ export function solveColoredSubsteps(
     solveColored2D(A, P, null, 0, 1, 0);
   }
   if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, np);
-  unpackContacts2D(buf, s.pack, np);
   s.pending = true;
 }
 
