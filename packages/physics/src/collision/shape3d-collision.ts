@@ -571,8 +571,16 @@ function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: numbe
 /** A pair's manifold found: wakes a sleeper met by a moving body, and emits the rows unless neither body is dynamic. */
 function emitPair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, a: number, b: number, bi: number, bj: number): void {
   const sc = scratch, type = world.collision.bodyType, ta = type[bi]!, tb = type[bj]!;
-  if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb)) queueWake(bi);
-  else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta)) queueWake(bj);
+  if (ta === BodyType.Sleeping || tb === BodyType.Sleeping) {
+    // The mover wakes the sleeper only if it can reach it this step (its speed, and gravity, over h).
+    let gap = Infinity;
+    for (let k = 0; k < manifold.count; k++) gap = Math.min(gap, manifold.sep[k]!);
+    const g = world.gravity, h = world.h, fall = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h * h;
+    const mover = ta === BodyType.Sleeping ? (sc.body[a] === bj ? a : b) : (sc.body[a] === bi ? a : b);
+    const closing = sc.speed[mover]! * h + fall;
+    if (ta === BodyType.Sleeping && wakesSleeper3D(world, bj, tb, gap, closing)) queueWake(bi);
+    else if (tb === BodyType.Sleeping && wakesSleeper3D(world, bi, ta, gap, closing)) queueWake(bj);
+  }
   if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) return;
   emit(world, s, st, sc.body[a]!, sc.body[b]!, sc.shape[a]!, sc.shape[b]!, sc.ball[a] === 1, sc.ball[b] === 1);
 }

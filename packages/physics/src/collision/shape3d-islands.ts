@@ -11,8 +11,8 @@ import { contact3DStateOf } from './manifolds3d-state.js';
  *
  * - a 3D manifold whose points carried a normal impulse this step supports both its bodies;
  * - manifolds between two dynamic bodies that pushed tie them into one island;
- * - a sleeping body met in the 3D broadphase by a moving body (rest time 0) or a kinematic one wakes
- *   with its whole island, and joins the step as a dynamic body with the velocity and position the
+ * - a sleeping body met in the 3D broadphase by a moving body (rest time 0) or a kinematic one that
+ *   can reach it within the step (`wakesSleeper3D`) wakes with its whole island, and joins the step as a dynamic body with the velocity and position the
  *   integration it skipped would have given it (v = g h, x += g h^2 / 2); met by a resting body it
  *   stays asleep and holds it up as immovable geometry, so a box settling onto a sleeping pile can
  *   fall asleep too;
@@ -74,10 +74,16 @@ export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find
 }
 
 /**
- * Whether body `other` (of type `t`) wakes a sleeping body it meets: it is kinematic, or dynamic and
- * not resting (its rest time is 0).
+ * Whether body `other` (of type `t`) wakes a sleeping body whose manifold with it has least separation
+ * `gap` (m, < 0: overlap): it is kinematic, or dynamic and not resting (its rest time is 0), and it can
+ * close the gap this step (`gap <= closing`, `closing` m: what its speed and gravity cover in the
+ * step). A mover that is only within the speculative distance leaves the sleeper asleep: it meets it
+ * as static geometry (a speculative row that cannot close), and the next step looks again. Waking on
+ * mere proximity had a settling pile's sleeping islands woken by a rocking neighbour 0.1 m away about
+ * every other step (each wake also re-runs the step's broadphase), and restarted their rest time.
  */
-export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number): boolean {
+export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, gap = -Infinity, closing = 0): boolean {
+  if (!(gap <= closing)) return false;
   return t === BodyType.Kinematic || t === BodyType.Dynamic && world.collision.sleep.restTime[other] === 0;
 }
 
