@@ -5,6 +5,7 @@ import { joinJointIslands, markJointSupport } from '../joints/islands.js';
 import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
 import { resolveKind } from '../handles.js';
 import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shape3d-islands.js';
+import { ecsOf } from '../particles/archetype.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -113,10 +114,15 @@ export function sleepSystem(world: PhysicsWorld): void {
   markJointSupport(world, supported, stamp);
   markShapeSupport(world, supported, stamp);
   markShape3DSupport(world, supported, stamp);
+  // Whether a body has AngularVelocity, from bitecs' component masks (what hasComponent reads, without
+  // its lookups per body): no entry, no body has it.
+  const ecs = ecsOf(world);
+  const spin = ecs.componentMap.get(c.AngularVelocity);
+  const spinMasks = spin === undefined ? null : ecs.entityMasks[spin.generationId]!, spinBit = spin === undefined ? 0 : spin.bitflag;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
-    const w2 = hasComponent(world, e, c.AngularVelocity) ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
+    const w2 = spinMasks !== null && ((spinMasks[e] ?? 0) & spinBit) === spinBit ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
     rest[e] = v2 < lin2 && w2 < ang2 && supported[e] === stamp ? rest[e]! + dt : 0;
     parent[e] = e;
   }
@@ -129,6 +135,17 @@ export function sleepSystem(world: PhysicsWorld): void {
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
     rest[c.Spring.a[s]!] = 0; rest[c.Spring.b[s]!] = 0;
+  }
+  // An island sleeps only when every body in it has rested timeToSleep (its least rest time, below):
+  // with no such body there are no sleepers, and the islands need not be found (a pile still settling
+  // pays for no union-find). The joints still zero the rest time of the bodies they hold awake.
+  const T = sl.timeToSleep;
+  let candidates = 0;
+  for (let i = 0; i < n; i++) if (rest[bodies[i]!]! >= T) { candidates++; break; }
+  if (candidates === 0) {
+    joinJointIslands(world, bodies, rest, parent);
+    cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+    return;
   }
   // Islands over contacts between dynamic awake bodies that pushed.
   const find = (x: number): number => {
@@ -153,7 +170,6 @@ export function sleepSystem(world: PhysicsWorld): void {
     const r = find(e);
     if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
   }
-  const T = sl.timeToSleep;
   let sleepers: number[] | null = null;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
