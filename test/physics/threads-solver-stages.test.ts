@@ -52,6 +52,9 @@ test('solver rows, approach speeds and write-back on 2 threads (coloured solve o
   // Fill, approach and write-back (two kernels) each step with contacts: most of the 80.
   expect(stageThreading.runs - runs).toBeGreaterThan(3 * 40);
   expect(stateHash(two)).toBe(stateHash(one));
+  // The deepest overlap left (not in the hash) is the one-thread value too.
+  expect(two.collision.stats.maxOverlap).toBe(one.collision.stats.maxOverlap);
+  expect(one.collision.stats.maxOverlap).toBeGreaterThan(0);
 });
 
 test('restitution by colours: one state on 2 threads run twice, on 3 threads and on an adaptive pool; the pile never gains energy', () => {

@@ -77,14 +77,21 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
 
 /**
  * finishBodies (solver.ts) of 2D solver bodies lo + 1 .. hi: velocities, positions (base +
- * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components.
- * `ids`: the solver bodies' entity ids from solver index 1. A: 0 Position x, 1 y, 2 Velocity x, 3 y,
- * 4 AngularVelocity z, 5 Angle, 6 bodyType (Uint8), 7 solver state (rows of 8), 8 solver extra (rows of
- * 6), 9 bodyImpact (rows of P[3]). P: 0-1 the free-flight correction -g h h_s / 2 (m), 2
- * BodyType.Dynamic, 3 the impact row stride. Returns the sum of the written positions and velocities
- * (finite exactly when they all are: the caller's check).
+ * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components;
+ * then, if P[4] = 1, containInBoundary (solver.ts) of the same bodies (put back on a wall of the box
+ * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
+ * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
+ * contact rows (rows floor(m lo / nb) .. floor(m hi / nb) - 1, m = P[12] rows, nb = P[13] bodies), as
+ * min(0, min s) into out[part] (m). `ids`: the solver bodies' entity ids from solver index 1. A: 0
+ * Position x, 1 y, 2 Velocity x, 3 y, 4 AngularVelocity z, 5 Angle, 6 bodyType (Uint8), 7 solver state
+ * (rows of 8), 8 solver extra (rows of 6), 9 bodyImpact (rows of P[3]), 10 Ball radius, 11 Material
+ * restitution, 12 out (one slot a thread), 13 ia, 14 ib (Int32), 15 separation, 16 nx, 17 ny. P: 0-1
+ * the free-flight correction -g h h_s / 2 (m), 2 BodyType.Dynamic, 3 the impact row stride, 4 contain
+ * (1: the boundary box is on), 5-6 the box's min x, y, 7-8 max x, y (m), 9 its restitution, 10-11
+ * gravity (m/s^2), 12 contact rows, 13 solver bodies - 1. Returns the sum of the positions and
+ * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  */
-export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
   const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
   const wz = A[4] as Float64Array, angle = A[5] as Float64Array, type = A[6] as Uint8Array;
   const sb = A[7] as Float64Array, ex = A[8] as Float64Array, imp = A[9] as Float64Array;
@@ -102,25 +109,47 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
     check += x + y + sb[o]! + sb[o + 1]!;
     if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
   }
-  return check;
-}
-
-/**
- * The deepest overlap left after the 2D solve over contact rows lo .. hi - 1 (finishBodies' last
- * loop): writes min(0, min_i s_i) of the range into out[part] (m). A: 0 ia, 1 ib (Int32), 2 separation,
- * 3 nx, 4 ny, 5 solver state (rows of 8), 6 out (one slot a thread). P unused. Returns 0.
- */
-export function deepest2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const IA = A[0] as Int32Array, IB = A[1] as Int32Array, S0 = A[2] as Float64Array, NX = A[3] as Float64Array, NY = A[4] as Float64Array;
-  const sb = A[5] as Float64Array, out = A[6] as Float64Array;
+  if (P[4] === 1) {
+    const radius = A[10] as Float64Array, eM = A[11] as Float64Array;
+    const boxE = P[9]!, g0 = P[10]!, g1 = P[11]!;
+    for (let i = lo; i < hi; i++) {
+      const e = list[i]!;
+      if (type[e] !== DYNAMIC) continue;
+      const rad = radius[e]!;
+      let gain = 0;
+      for (let d = 0; d < 2; d++) {
+        const p = d === 0 ? px : py, v = d === 0 ? vx : vy, g = d === 0 ? g0 : g1;
+        const wlo = P[5 + d]! + rad, whi = P[7 + d]! - rad;
+        const x = p[e]!;
+        if (x < wlo && wlo <= whi) {
+          p[e] = wlo; gain -= g * (wlo - x);
+          if (v[e]! < 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
+        } else if (x > whi && wlo <= whi) {
+          p[e] = whi; gain -= g * (whi - x);
+          if (v[e]! > 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
+        }
+      }
+      if (gain > 0) {
+        let v2 = 0;
+        v2 += vx[e]! * vx[e]!;
+        v2 += vy[e]! * vy[e]!;
+        const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
+        vx[e] = vx[e]! * f; vy[e] = vy[e]! * f;
+      }
+    }
+  }
+  const out = A[12] as Float64Array;
+  const IA = A[13] as Int32Array, IB = A[14] as Int32Array, S0 = A[15] as Float64Array, NX = A[16] as Float64Array, NY = A[17] as Float64Array;
+  const m = P[12]!, nb = P[13]!;
+  const r0 = Math.floor((m * lo) / nb), r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
-  for (let i = lo; i < hi; i++) {
+  for (let i = r0; i < r1; i++) {
     const a = IA[i]! * 8 + 3, b = IB[i]! * 8 + 3;
     const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
     if (s < deepest) deepest = s;
   }
   out[part] = deepest;
-  return P.length * 0;
+  return check;
 }
 
 /**

@@ -6,7 +6,7 @@
  *   of bodies a thread;
  * - `approachOnThreads`: measureApproach, a range of rows a thread;
  * - `finishOnThreads`: finishBodies (velocities, positions and angles back to the components; the
- *   deepest overlap left), a range of bodies and of rows a thread;
+ *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
  * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour.
  *
  * The first three do each body's or row's arithmetic of the one-thread loop unchanged (kernels in
@@ -36,7 +36,7 @@ import { nowMs } from '../threads/adaptive.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { reportNonFinite } from '../errors.js';
 import { callerMayWait, coloredPlan } from './contact-colors.js';
-import { deepest2D, restitutionColored2D } from './solver-stages-kernel.js';
+import { restitutionColored2D } from './solver-stages-kernel.js';
 
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
@@ -49,13 +49,17 @@ import { deepest2D, restitutionColored2D } from './solver-stages-kernel.js';
 export const stageThreading = { minPerThread: 4096, runs: 0, bouncing: 0 };
 
 /** Per world: the kernels' argument lists and parameters, the deepest-overlap slots. */
-interface StageScratch { arrays: KernelArray[]; params: Float64Array; deepest: Float64Array }
+interface StageScratch {
+  arrays: KernelArray[]; params: Float64Array; deepest: Float64Array;
+  /** Whether the last finishOnThreads kept the bodies in the boundary box (containedOnThreads). */
+  contained: boolean;
+}
 const scratchOf = new WeakMap<PhysicsWorld, StageScratch>();
 
 function scratch(world: PhysicsWorld): StageScratch {
   let s = scratchOf.get(world);
   if (s === undefined) {
-    s = { arrays: [], params: new Float64Array(16), deepest: sharedFloat64(MAX_POOL_PARTS) };
+    s = { arrays: [], params: new Float64Array(16), deepest: sharedFloat64(MAX_POOL_PARTS), contained: false };
     scratchOf.set(world, s);
   }
   return s;
@@ -150,11 +154,13 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
 }
 
 /**
- * finishBodies of a 2D world on its threads: the solver bodies' velocities, positions and angles back
- * to the components, a range of bodies a thread, then the deepest overlap left into
- * `cs.stats.maxOverlap`, a range of rows a thread (the same bits as the one-thread loops). False when
- * the stage stays on one thread.
- * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite, as the one-thread loop.
+ * finishBodies of a 2D world on its threads, with containInBoundary when the boundary box is on: the
+ * solver bodies' velocities, positions and angles back to the components and the bodies put back in
+ * the box, a range of bodies a thread, and the deepest overlap left into `cs.stats.maxOverlap`, a range
+ * of rows a thread (the same bits as the one-thread loops). False when the stage stays on one thread.
+ * When it returns true, the next `containedOnThreads` call returns whether the box was done here.
+ * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite, as the
+ *   one-thread loop (the bodies are then already put back in the box, unlike with one thread).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  */
 export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
@@ -163,30 +169,38 @@ export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolea
   if (pool === null) return false;
   const c = world.components;
   shareState(cs);
-  const s = scratch(world), A = s.arrays, P = s.params;
+  shareBuffer(buf);
+  const s = scratch(world), A = s.arrays, P = s.params, out = s.deepest;
+  out.fill(0);
   A.length = 0;
   A.push(c.Position.x, c.Position.y, c.Velocity.x, c.Velocity.y, c.AngularVelocity.z, c.Angle.value, cs.bodyType,
-    cs.bodyState, cs.bodyExtra, cs.bodyImpact);
+    cs.bodyState, cs.bodyExtra, cs.bodyImpact, c.Ball.radius, c.Material.restitution, out,
+    buf.ia, buf.ib, buf.separation, buf.nx, buf.ny);
   if (!allShared(A)) return false;
-  const list = cs.solverBodies;
+  const list = cs.solverBodies, box = cs.boundary;
   const fh = -0.5 * world.h * world.h / cs.settings.solverSubsteps, g = world.gravity;
   P[0] = g[0]! * fh; P[1] = g[1]! * fh; P[2] = BodyType.Dynamic; P[3] = IMPACT_STRIDE;
+  P[4] = box.enabled ? 1 : 0; P[5] = box.min[0]!; P[6] = box.min[1]!; P[7] = box.max[0]!; P[8] = box.max[1]!;
+  P[9] = box.restitution; P[10] = g[0]!; P[11] = g[1]!; P[12] = buf.count; P[13] = count - 1;
   const check = runOnPool(pool, 'contactSolverSystem', KERNEL.finishBodies2D, A, P, count - 1, list.subarray(1, count), stageThreading.minPerThread);
   if (!ran(check)) return false;
+  s.contained = box.enabled;
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
-  const n = buf.count;
   let deepest = 0;
-  if (n > 0) {
-    shareBuffer(buf);
-    const out = s.deepest;
-    out.fill(0);
-    A.length = 0;
-    A.push(buf.ia, buf.ib, buf.separation, buf.nx, buf.ny, cs.bodyState, out);
-    if (runOnPool(pool, 'contactSolverSystem', KERNEL.deepest2D, A, P, n, null, 1) === null) deepest2D(A, P, null, 0, n, 0);
-    for (let k = 0; k < out.length; k++) if (out[k]! < deepest) deepest = out[k]!;
-  }
+  for (let k = 0; k < out.length; k++) if (out[k]! < deepest) deepest = out[k]!;
   cs.stats.maxOverlap = -deepest;
+  return true;
+}
+
+/**
+ * Whether this step's finishOnThreads also kept the bodies in the boundary box (containInBoundary then
+ * has nothing left to do); clears the answer, so it is true once a step at most.
+ */
+export function containedOnThreads(world: PhysicsWorld): boolean {
+  const s = scratchOf.get(world);
+  if (s === undefined || !s.contained) return false;
+  s.contained = false;
   return true;
 }
 

@@ -15,7 +15,7 @@ import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, 
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
 import { solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
-import { approachOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
+import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
@@ -352,7 +352,7 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
 function containInBoundary(world: PhysicsWorld): void {
   const cs = world.collision;
   const box = cs.boundary;
-  if (!box.enabled) return;
+  if (!box.enabled || containedOnThreads(world)) return; // done with finishBodies on the threads (solver-stages-threads.ts)
   const c = world.components;
   const P = c.Position, V = c.Velocity, radius = c.Ball.radius, eM = c.Material.restitution;
   const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
