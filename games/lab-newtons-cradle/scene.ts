@@ -28,21 +28,6 @@ export const CRADLE_DEFAULTS: Readonly<CradleParams> = Object.freeze({ count: 5,
 /** Mass of each ball, kg. */
 export const BALL_MASS = 1;
 
-/**
- * Gap between neighbouring balls at rest, m (0.05 mm, under a hundredth of a pixel at the lab's zoom).
- * A real cradle is hung with such a hair's gap too. Why not 0: with exactly touching balls the
- * solver's impact stage (packages/physics/src/collision/impacts.ts) resolves only the first pair of
- * a chain when that first touch falls inside a step rather than at its start; the rest of the chain
- * is left to the soft substeps, which share the momentum out (two of five balls lifted by 10 degrees:
- * the middle ball leaves too and the last two get 0.71 of the entering speed). The same happens
- * for free balls in zero gravity (two touching balls at 2 m/s into three at rest, first touch a
- * quarter into a step: velocities -0.24, -0.24, 1.40, 1.54, 1.54 m/s, kinetic energy 3.40 J of 4).
- * With the gap each touch is its own impact, found in time order, and every lift angle from 5 to 80
- * degrees (0.37 degree steps) sends the lifted number of balls out at the entering speed within 3 %
- * for 2 to 8 balls. Larger gaps (0.1 mm and up) fail again at a few angles, so keep it this small.
- */
-export const HANG_GAP = 5e-5;
-
 /** What the builder returns. */
 export interface CradleHandles {
   /** The balls, left to right. */
@@ -59,14 +44,18 @@ export function cradleWorldOptions(options: CradleOptions = {}): PhysicsWorldOpt
   return { dimensions: 2, capacity: 64, gravity: [0, -p.gravity], substeps: 2, sleep: false };
 }
 
-/** Builds the row hanging at rest, anchors at y = 0 centred on x = 0, 2 radius + HANG_GAP apart. */
+/**
+ * Builds the row hanging at rest, anchors at y = 0 centred on x = 0, 2 radius apart: neighbouring
+ * balls exactly touch (test/physics/cradle-hanging.test.ts: 1, 2 or 3 lifted at 5 to 80 degrees send
+ * as many out of the far end at the entering speed within 3 %, the others under 2 % of it).
+ */
 export function buildCradle(world: PhysicsWorld, options: CradleOptions = {}): CradleHandles {
   const params: CradleParams = { ...CRADLE_DEFAULTS, ...options };
   const { count, radius, length } = params;
   const balls: number[] = [];
   const anchors: [number, number][] = [];
   for (let i = 0; i < count; i++) {
-    const x = (i - (count - 1) / 2) * (2 * radius + HANG_GAP);
+    const x = (i - (count - 1) / 2) * 2 * radius;
     const ball = addBody(world, { position: [x, -length], radius, mass: BALL_MASS, restitution: 1, friction: 0 });
     addDistanceJoint(world, { b: ball, anchorA: [x, 0], length });
     balls.push(ball);

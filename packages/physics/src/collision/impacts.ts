@@ -1,6 +1,8 @@
 import type { PhysicsWorld } from '../world.js';
 import { ContactKind, type ContactBuffer } from './contacts.js';
 import { BodyType } from './state.js';
+import { jointsToSolve } from '../joints/solver.js';
+import { joints3DToSolve } from '../joints3d/solver.js';
 
 /**
  * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the
@@ -15,8 +17,9 @@ export const IMPACT_STRIDE = 5;
  *
  * A contact takes part if its combined restitution e > 0 and neither body carried a load last step
  * (a warm-started contact: a body resting in a pile or on the floor is left to the soft substeps and
- * the restitution stage, which keep piles still; without gravity a rounding-level load is not counted,
- * see `loadFloor`). For each, the time of impact t* in
+ * the restitution stage, which keep piles still; a rounding-level load is not counted without
+ * gravity, nor under it between exactly touching bodies at rest relative to each other, such as the
+ * balls of a hanging Newton's cradle: see `carriesLoad`). For each, the time of impact t* in
  * [t_start, h] is found from the bodies' motion within the step: t_start is the latest earlier impact of
  * either body this step; ball-ball and ball-static-ball pairs by an exact sphere sweep (Ericson,
  * Real-Time Collision Detection, 5.5.7) along their current relative velocity (with the relative
@@ -58,7 +61,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const gh = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h;
   // Slower approaches are resting contacts (what gravity adds in two steps), left to the substeps.
   const resting = 2 * gh;
-  const floor = loadFloor(gh);
+  const gravity = gh > 0;
   const S0 = buf.separation, RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
@@ -69,7 +72,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   // marks them -1 until the passes are done.
   const imp = cs.bodyImpact, IA = buf.ia, IB = buf.ib;
   for (let i = 0; i < n; i++) {
-    if (!carriesLoad(buf, i, h, floor)) continue;
+    if (!carriesLoad(buf, i, h, gravity)) continue;
     if (IA[i] !== 0) imp[IA[i]! * IMPACT_STRIDE + 3] = -1;
     imp[IB[i]! * IMPACT_STRIDE + 3] = -1;
   }
@@ -103,7 +106,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     }
     if (applied === 0) break;
   }
-  separateImpactedBodies(world, buf, S, floor);
+  separateImpactedBodies(world, buf, S, gravity);
 }
 
 /**
@@ -129,7 +132,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  * at the end of the step is then the true one (a clean body beside an unclean one no longer ends
  * inside it: the elastic pile's worst one-step energy rise went from 3.9e-4 to 7e-8 of the total).
  */
-function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number, floor: number): void {
+function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number, gravity: boolean): void {
   const cs = world.collision;
   const imp = cs.bodyImpact, key = cs.impactKey;
   const count = cs.solverBodyCount;
@@ -137,6 +140,14 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, K = buf.kind;
   const h = world.h;
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
+  // A row is given the spare gap below if its gap is within the linear model's closure or, in a world
+  // with joints, within 1.1 times it: a joint row turns gravity toward the row's normal within the step
+  // (a pendulum's string speeds the ball up as it swings down), which the model does not see. A hanging
+  // Newton's cradle's lifted ball whose gap was 0.14 % wider than the closure was stopped by the soft
+  // substeps' look-ahead a substep before its hit, across the gap, and the chain behind it was lost.
+  // Without joints the band is not widened: in a pile many rows fall in it (mostly balls falling onto
+  // the floor), and taking them from the substeps changed how an 800-ball pile settles.
+  const within = jointsToSolve(world) || joints3DToSolve(world) ? 1.1 : 1;
   // First, while slot 3 still holds each body's latest impact time: which rows stay active, into
   // the spent order array (1 active, 0 not). Slot 4 of a body's row: 1 clean, 0 not (the static world
   // is clean), marked here as rows are found active; the corrections of unclean bodies are dropped
@@ -148,7 +159,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const act = cs.impactOrder;
   for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
   for (let i = 0; i < n; i++) {
-    if (S0[i]! <= 0 && carriesLoad(buf, i, h, floor)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
+    if (S0[i]! <= 0 && carriesLoad(buf, i, h, gravity)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
   }
   imp[4] = 1;
   for (let i = 0; i < n; i++) {
@@ -164,7 +175,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
       active = contactState(world, buf, i, S);
       if (active) key[i] = 0;
     } else if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-      active = ballsMeet(world, buf, i, S, h, floor);
+      active = ballsMeet(world, buf, i, S, h, gravity);
     } else {
       active = faceMeets(world, buf, i, S);
     }
@@ -210,38 +221,57 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     if (!(s0 > 0)) continue;
     const closes = linearClosure(world, buf, i, S, reach);
     // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
-    if (s0 <= closes) S0[i] = closes * 1.1;
+    if (s0 <= closes * within) S0[i] = closes * 1.1;
   }
 }
 
 /**
- * Whether contact i carried a load last step (a warm-started row: a body resting in a pile or on the
- * floor), which keeps its bodies out of the impact stage. `floor` (dimensionless, >= 0, from
- * `loadFloor`) is the smallest load counted: LN h / m_eff > floor (ra + rb), the relative normal
- * velocity change of one substep's impulse LN (N s) over the step h (s), as a fraction of the pair's
- * lever arms (the radii for balls); floor 0 counts any LN > 0. A row with m_eff = 0 counts whenever LN > 0.
+ * The smallest load `carriesLoad` counts, dimensionless: LN h / m_eff > LOAD_FLOOR (ra + rb), the
+ * relative normal velocity change of the row's warm-start impulse LN (N s) over the step h (s), as a
+ * fraction of the pair's lever arms (the radii for balls). Touching balls placed at exactly their
+ * radii overlap by ~1e-16 m after a few steps' additions and their soft row pushes that out with
+ * ~1e-17 N s; a load that matters is many orders above (the weight a resting ball carries is
+ * m g h / substeps, 0.04 N s for 1 kg at 60 Hz; a squeezed gravity-free cluster's push-out is larger).
  */
-function carriesLoad(buf: ContactBuffer, i: number, h: number, floor: number): boolean {
-  const ln = buf.normalImpulse[i]!;
-  if (floor === 0) return ln > 0;
-  return ln > 0 && ln * h > floor * (buf.ra[i]! + buf.rb[i]!) * buf.normalMass[i]!;
-}
+const LOAD_FLOOR = 1e-9;
 
 /**
- * The smallest load `carriesLoad` counts, given gravity's speed per step gh = |g| h (m/s, >= 0).
- *
- * Without gravity nothing rests: a warm-start load there is a push the soft contact gave last step,
- * and one below 1e-9 (see carriesLoad) is the push-out of a rounding-level overlap (touching balls
- * placed at exactly their radii overlap by ~1e-16 m after a few steps' additions; a gravity-free load
- * that matters, a squeezed cluster, is many orders above). Counting such a push kept both balls of two
- * touching movers out of the impact stage, and a Newton's cradle hit by them lost 15 to 30 % of its
- * energy at some phases of the step (issue 13). Under gravity every load counts, however small: the
- * piles' contacts carry rounding-level loads too (1e-18 to 1e-15 N s as balls land), and letting the
- * impacts through them kept an 800-ball pile of balls-in-box bouncing (0.57 m/s after 300 steps
- * instead of 0.002; test/physics/threads-contact-colors.test.ts).
+ * A gap or a relative normal approach over one step smaller than ROUNDING times the pair's lever arms
+ * (ra + rb, the radii for balls) is floating-point noise, dimensionless (positions of order 1 m carry
+ * ~1e-16 m of rounding; two touching balls swinging together on parallel strings approach or part at
+ * ~1e-17 m/s). See carriesLoad and ballsMeet.
  */
-function loadFloor(gh: number): number {
-  return gh > 0 ? 0 : 1e-9;
+const ROUNDING = 1e-12;
+
+/**
+ * Whether contact i carried a load last step (a warm-started row: a body resting in a pile or on the
+ * floor, or pressed by a joint), which keeps its bodies out of the impact stage. A load counts when
+ * it is above LOAD_FLOOR. A smaller one is the push-out of a rounding-level overlap, and it does not
+ * count:
+ * - without gravity (`gravity` false), always: nothing rests there; counting such a push kept both
+ *   balls of two touching movers out of the impact stage, and a Newton's cradle hit by them lost 15
+ *   to 30 % of its energy at some phases of the step (issue 13);
+ * - under gravity, only if the row also touches to rounding (|s0| <= ROUNDING (ra + rb)) and its bodies
+ *   do not move relative to each other along the normal (|v_n| h <= ROUNDING (ra + rb), v_n at the start
+ *   of the step): exactly touching balls at rest relative to each other, as a hanging Newton's cradle's
+ *   or the lifted balls swinging together. Counting their rounding-level loads left the whole chain to
+ *   the soft substeps at some lift angles (two or three of 4 to 8 balls lifted: the balls behind the
+ *   first hit left too, the far ones at 0.3 to 0.8 of the entering speed). Other rounding-level loads
+ *   still count under gravity: a pile's rows carry such loads as balls land (1e-18 to 1e-15 N s, on rows
+ *   a little apart or moving), and not counting those changed how an 800-ball pile of balls-in-box
+ *   settles (fastest ball 0.57 m/s after 300 steps instead of 0.002, at rest from step 363 instead of
+ *   291; over seeds 1 to 8 at rest at least 10 steps later on average, one not by step 400;
+ *   test/physics/threads-contact-colors.test.ts asks for under 0.1 m/s at step 300).
+ * A row with m_eff = 0 counts whenever LN > 0.
+ */
+function carriesLoad(buf: ContactBuffer, i: number, h: number, gravity: boolean): boolean {
+  const ln = buf.normalImpulse[i]!;
+  if (!(ln > 0)) return false;
+  const len = buf.ra[i]! + buf.rb[i]!;
+  if (ln * h > LOAD_FLOOR * len * buf.normalMass[i]!) return true;
+  if (!gravity) return false;
+  const tiny = ROUNDING * len;
+  return !(Math.abs(buf.separation[i]!) <= tiny && Math.abs(buf.relativeVelocity[i]!) * h <= tiny);
 }
 
 /** Marks solver body k unclean (slot 4 = 0) and drops its end-position corrections; the static world stays clean. */
@@ -288,7 +318,7 @@ function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number
  * the relative acceleration of gravity refined once. The path before t0 is not the bodies' (the
  * position corrections make x0 + dx + v t exact only after the latest impact), so it is not swept.
  */
-function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number, floor: number): boolean {
+function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number, gravity: boolean): boolean {
   const cs = world.collision;
   const c = world.components;
   const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
@@ -305,12 +335,13 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const g = world.gravity;
   const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
   if (still && s0 <= 0) {
-    // Touching: active if it carries load (warm start), overlaps, approaches, or gravity presses it.
-    if (carriesLoad(buf, i, world.h, floor) || s0 < -1e-6 * R) return true;
+    // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
+    // rounding-level length within the step), or gravity presses it.
+    if (carriesLoad(buf, i, world.h, gravity) || s0 < -1e-6 * R) return true;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-    return vn < 0 || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
+    return vn * world.h < -ROUNDING * R || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
   const ta = imp[qa + 3]!, tb = imp[qb + 3]!;
@@ -323,9 +354,14 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const rest = span - t0;
   const r2 = rx * rx + ry * ry + rz * rz;
   if (r2 <= R * R * (1 + 1e-9)) {
-    // Overlapping (the substeps push them apart), or touching and approaching at t0 or by the end.
+    // Overlapping (the substeps push them apart), or touching and approaching at t0 or by the end, by
+    // more than ROUNDING R over a step (two touching balls swinging together on parallel strings
+    // approach or part at rounding-level speeds; counted, that left both to the soft substeps, whose
+    // look-ahead stopped the pair's hit on the next ball a substep early, across a gap, and then the
+    // chain as if resting).
     if (r2 < R * R * (1 - 1e-6)) return true;
-    return rx * wx + ry * wy + rz * wz < 0 || rx * (wx + ax * rest) + ry * (wy + ay * rest) + rz * (wz + az * rest) < 0;
+    const lim = -ROUNDING * R * R / world.h;
+    return rx * wx + ry * wy + rz * wz < lim || rx * (wx + ax * rest) + ry * (wy + ay * rest) + rz * (wz + az * rest) < lim;
   }
   if (!(rest > 0)) return false;
   const hx = 0.25 * ax * rest, hy = 0.25 * ay * rest, hz = 0.25 * az * rest;
