@@ -319,12 +319,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       const q = 4 * i + k, o = JAC * q;
       const ra0 = J[o]!, ra1 = J[o + 1]!, ra2 = J[o + 2]!, rb0 = J[o + 3]!, rb1 = J[o + 4]!, rb2 = J[o + 5]!;
       // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
-      const s = sep[q]! + dn + hbx * rb0 + hby * rb1 + hbz * rb2 - hax * ra0 - hay * ra1 - haz * ra2;
+      const s = (sep[q]! + dn) + ((hbx * rb0 + hby * rb1 + hbz * rb2) - (hax * ra0 + hay * ra1 + haz * ra2));
       let bias = 0, ms = 1, is = 0;
       if (s > 0) bias = s * invHs;
       else if (useBias) { bias = Math.max(biasRate * s, -push); ms = massScale; is = impScale; }
-      const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz
-        + wbx * rb0 + wby * rb1 + wbz * rb2 - wax * ra0 - way * ra1 - waz * ra2;
+      const vn = ((vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz)
+        + ((wbx * rb0 + wby * rb1 + wbz * rb2) - (wax * ra0 + way * ra1 + waz * ra2));
       const old = LN[q]!;
       const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
       const dl = lam - old;
@@ -359,8 +359,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       // t1 (crosses at o, inverse products at o + INV), then t2 (6 further on).
       let o = JAC * q + 6;
       let ca0 = J[o]!, ca1 = J[o + 1]!, ca2 = J[o + 2]!, cb0 = J[o + 3]!, cb1 = J[o + 4]!, cb2 = J[o + 5]!;
-      const vt1 = (vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z
-        + wbx * cb0 + wby * cb1 + wbz * cb2 - wax * ca0 - way * ca1 - waz * ca2;
+      const vt1 = ((vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z)
+        + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
       let l1 = o1 - MT1[q]! * vt1;
       l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
       LT1[q] = l1;
@@ -382,8 +382,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       }
       o += 6;
       ca0 = J[o]!; ca1 = J[o + 1]!; ca2 = J[o + 2]!; cb0 = J[o + 3]!; cb1 = J[o + 4]!; cb2 = J[o + 5]!;
-      const vt2 = (vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z
-        + wbx * cb0 + wby * cb1 + wbz * cb2 - wax * ca0 - way * ca1 - waz * ca2;
+      const vt2 = ((vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z)
+        + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
       let l2 = o2 - MT2[q]! * vt2;
       l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
       LT2[q] = l2;
