@@ -239,6 +239,9 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     for (const line of [ours!, peer!]) expect(Math.abs(ms(line).mean! * 5 / total(line) - 1)).toBeLessThan(1e-3);
     expect(ours!.ratioMean).toBeUndefined();
     expect(Math.abs((peer!.ratioMean as number) / (ms(ours!).mean! / ms(peer!).mean!) - 1)).toBeLessThan(1e-3);
+    // CPU time: positive, and the ratio is of the two lines' figures (each rounded to 6 digits).
+    for (const line of [ours!, peer!]) expect(line.cpuMsPerStep as number).toBeGreaterThan(0);
+    expect(Math.abs((peer!.ratioCpu as number) / ((ours!.cpuMsPerStep as number) / (peer!.cpuMsPerStep as number)) - 1)).toBeLessThan(1e-3);
   });
 
   /**

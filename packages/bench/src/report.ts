@@ -17,6 +17,8 @@ export interface Ratio {
    * median it counts the few expensive steps (landing, settling) in scenes that end asleep.
    */
   readonly meanRatio: number;
+  /** Our process CPU time a step over the peer's (`EngineResult.cpuMsPerStep`): the whole-run ratio with less of the machine's load in it. */
+  readonly cpuRatio: number;
 }
 
 /**
@@ -47,7 +49,10 @@ export function ratios(result: BenchResult): Ratio[] {
   if (!ours) return [];
   return result.engines
     .filter((e) => e.engine !== OURS)
-    .map((e) => ({ peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median, meanRatio: ours.msPerStep.mean / e.msPerStep.mean }));
+    .map((e) => ({
+      peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median, meanRatio: ours.msPerStep.mean / e.msPerStep.mean,
+      cpuRatio: ours.cpuMsPerStep / e.cpuMsPerStep,
+    }));
 }
 
 /** Rounds to `digits` significant digits (keeps JSON lines short without losing what matters). */
@@ -61,7 +66,8 @@ function sig(value: number, digits = 6): number {
  * setupMs`, `params` (the scene parameters, e.g. `{ "theta": 0.5 }`, only for scenes that declare
  * any), the engine's and scene's extra fields (e.g. `maxOverlapPercent`), and on each peer's
  * line `ratio` (our median / its median), `ratioMean` (our mean / its mean over the same timed
- * steps: the whole-run time ratio) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
+ * steps: the whole-run time ratio), `ratioCpu` (the same in process CPU time, `cpuMsPerStep` on
+ * every line) with `ratioOf` ("bitphysics/<peer>"); with `--threads n`,
  * `threads` on our lines and `speedup` (single-threaded median / threaded median), `serialFraction`
  * (Karp-Flatt) and `amdahl8`, `amdahl16` (projected speedups, amdahl.ts) on the
  * `bitphysics-threads` line; with `times`, every
@@ -79,6 +85,7 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
         median: sig(e.msPerStep.median), min: sig(e.msPerStep.min), max: sig(e.msPerStep.max),
         mean: sig(e.msPerStep.mean), p90: sig(e.msPerStep.p90),
       },
+      cpuMsPerStep: sig(e.cpuMsPerStep),
       contacts: e.contacts,
       warmup: result.warmup,
       seed: result.scene.seed,
@@ -95,6 +102,7 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
     if (ratio !== undefined && e.engine !== THREADED) {
       record.ratio = sig(ratio.ratio, 4);
       record.ratioMean = sig(ratio.meanRatio, 4);
+      record.ratioCpu = sig(ratio.cpuRatio, 4);
       record.ratioOf = `${OURS}/${e.engine}`;
     }
     if (options.times) record.timesMs = Array.from(e.times, (t) => sig(t, 4));
@@ -144,13 +152,14 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
     '',
   );
   const columns = scene.columns ?? [];
-  const header = ['engine', 'median ms', 'mean ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
+  const header = ['engine', 'median ms', 'mean ms', 'cpu ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
   const rows: string[][] = [header];
   for (const e of result.engines) {
     rows.push([
       e.engine,
       formatMs(e.msPerStep.median),
       formatMs(e.msPerStep.mean),
+      formatMs(e.cpuMsPerStep),
       formatMs(e.msPerStep.min),
       formatMs(e.msPerStep.max),
       formatRate(e.bodyStepsPerSecond),
@@ -165,9 +174,9 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
   const single = result.engines.find((e) => e.engine === OURS);
   const r = ratios(result).filter((x) => x.peer !== THREADED);
   if (r.length > 0) {
-    lines.push('', `time ratio ours/peer (< 1: bitphysics is faster; median step, and mean step = whole timed run of ${result.steps} steps; ` +
-      `load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus):`);
-    lines.push(table([['', 'median', 'mean'], ...r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3), x.meanRatio.toFixed(3)])]));
+    lines.push('', `time ratio ours/peer (< 1: bitphysics is faster; median step, mean step = whole timed run of ${result.steps} steps, ` +
+      `and process CPU time of that run; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus):`);
+    lines.push(table([['', 'median', 'mean', 'cpu'], ...r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3), x.meanRatio.toFixed(3), x.cpuRatio.toFixed(3)])]));
   }
   if (threaded && single) {
     const threads = result.scene.threads ?? 1;

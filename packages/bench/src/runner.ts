@@ -43,6 +43,13 @@ export interface EngineResult {
   readonly times: Float64Array;
   /** Per-step time summary, ms. */
   readonly msPerStep: TimeSummary;
+  /**
+   * CPU time of the process (process.cpuUsage, user + system, every thread: the engine's own and V8's
+   * helpers) while this engine ran its timed steps, over the steps, ms a step; the `afterStep` hooks
+   * are left out. On a loaded machine it is steadier than wall time (a process waiting for a core
+   * uses none), though not immune (shared caches). Measured a block of steps at a time.
+   */
+  readonly cpuMsPerStep: number;
   /** Bodies times steps per second of wall time, at the median step time. */
   readonly bodyStepsPerSecond: number;
   /** Contact points in the last step (engine's own count), null for engines without collisions. */
@@ -83,6 +90,12 @@ export interface LoadSample {
   readonly end: number;
   /** Logical CPUs (os.availableParallelism): a load above it means processes waited for a core. */
   readonly cpus: number;
+}
+
+/** CPU time the process has used so far (user + system, all threads), ms. */
+function cpuMs(): number {
+  const u = process.cpuUsage();
+  return (u.user + u.system) / 1000;
 }
 
 /** Samples the 1-minute load average now. */
@@ -137,9 +150,10 @@ export async function runBenchmark(
     runInterleaved(instances, timing.warmup, timing.block, null, progress);
     collectGarbage();
     const times = instances.map(() => new Float64Array(timing.steps));
+    const cpu = new Float64Array(instances.length);
     for (const inst of instances) inst.beginTiming?.(timing.steps);
     const loadStart = loadNow();
-    runInterleaved(instances, timing.steps, timing.block, times, progress);
+    runInterleaved(instances, timing.steps, timing.block, times, progress, cpu);
     const loadEnd = loadNow();
     const heapUsedMB = sampleMemory().heapUsed;
     for (const inst of instances) inst.endTiming?.();
@@ -155,6 +169,7 @@ export async function runBenchmark(
         engine: inst.engine,
         times: times[i]!,
         msPerStep,
+        cpuMsPerStep: cpu[i]! / timing.steps,
         bodyStepsPerSecond: msPerStep.median > 0 ? (stats.bodies * 1000) / msPerStep.median : Infinity,
         contacts: stats.contacts,
         bodies: stats.bodies,
@@ -176,11 +191,12 @@ export async function runBenchmark(
 /**
  * Steps every instance `steps` times, alternating in blocks of `block` steps with the engine order
  * rotating every round; records each step's milliseconds into `times[engine][step]` when given, and
- * then (outside the timed interval) calls the instance's `afterStep` hook.
+ * then (outside the timed interval) calls the instance's `afterStep` hook. With `cpu` (timed runs),
+ * adds each engine's process CPU time of its blocks, ms, less its hooks', into `cpu[engine]`.
  */
 export function runInterleaved(
   instances: readonly Pick<EngineInstance, 'step' | 'afterStep'>[], steps: number, block: number, times: Float64Array[] | null,
-  progress?: (steps: number) => void,
+  progress?: (steps: number) => void, cpu?: Float64Array,
 ): void {
   const m = instances.length;
   for (let start = 0, round = 0; start < steps; start += block, round++) {
@@ -190,12 +206,19 @@ export function runInterleaved(
       const inst = instances[idx]!;
       const out = times ? times[idx]! : null;
       if (out) {
+        const c0 = cpu ? cpuMs() : 0;
+        let hooks = 0;
         for (let s = 0; s < k; s++) {
           const t0 = performance.now();
           inst.step();
           out[start + s] = performance.now() - t0;
-          inst.afterStep?.();
+          if (inst.afterStep) {
+            const a0 = cpu ? cpuMs() : 0;
+            inst.afterStep();
+            if (cpu) hooks += cpuMs() - a0;
+          }
         }
+        if (cpu) cpu[idx] = cpu[idx]! + cpuMs() - c0 - hooks;
       } else {
         for (let s = 0; s < k; s++) inst.step();
       }
