@@ -47,7 +47,10 @@ export function cradleWorldOptions(options: CradleOptions = {}): PhysicsWorldOpt
 /**
  * Builds the row hanging at rest, anchors at y = 0 centred on x = 0, 2 radius apart: neighbouring
  * balls exactly touch (test/physics/cradle-hanging.test.ts: 1, 2 or 3 lifted at 5 to 80 degrees send
- * as many out of the far end at the entering speed within 3 %, the others under 2 % of it).
+ * as many out of the far end at the entering speed within 3 %, the others under 2 % of it). The lift
+ * must bring the balls to the bottom faster than the impact stage's resting speed, 2 g h with h the
+ * world's substep (0.16 m/s at the defaults: lifts above 3 degrees); slower hits are left to the soft
+ * contacts, which share the momentum out over the row.
  */
 export function buildCradle(world: PhysicsWorld, options: CradleOptions = {}): CradleHandles {
   const params: CradleParams = { ...CRADLE_DEFAULTS, ...options };
