@@ -239,7 +239,11 @@ describe('snapshot captures every piece of state', () => {
     // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
     // collision/solver.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
     // before each use) and its kernel's argument list.
-    const scratch = new Set(['pipeline/step.ts', 'forces/gravity.ts', 'integrators/fused-state.ts', 'snapshot/snapshot.ts', 'collision/solver.ts']);
+    // collision/solver-stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
+    // and one deepest-overlap slot a thread, all written before each parallel run.
+    const scratch = new Set([
+      'pipeline/step.ts', 'forces/gravity.ts', 'integrators/fused-state.ts', 'snapshot/snapshot.ts', 'collision/solver.ts', 'collision/solver-stages-threads.ts',
+    ]);
     const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];
     const walk = (dir: string) => {

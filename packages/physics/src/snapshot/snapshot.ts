@@ -17,7 +17,7 @@ import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
  * id down (their entries above it are zero). Scratch arrays (the broadphase grid and the collision
  * stage's per-step arrays, see SCRATCH; the solver's marks, see STAMPED) are stored as their type and
- * length only. The format is unchanged by these: a version 2 snapshot written before
+ * length only, and the 2D contact buffers' columns up to their row count (CONTACT_BUFFERS). The format is unchanged by these: a version 2 snapshot written before
  * them restores as it did. Restoring a snapshot object into the world it was taken from (or into
  * one it was restored into before) leaves alone the query lists that have not changed since (their
  * versions say so), and the entity index when it is equal. `restore` writes into the world's own arrays
@@ -71,8 +71,20 @@ const SCRATCH = new Set([
  * About 3 MB of a settled 100,000-ball world's 9 to 13 MB.
  */
 function PER_STEP_SCRATCH(): string[] {
-  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact'].map((k) => `world.collision.${k}`);
+  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact', 'impactOrder', 'impactKey']
+    .map((k) => `world.collision.${k}`);
 }
+
+/**
+ * The 2D ball contact buffers (collision/contacts.ts, ContactBuffer): a column's rows from `count` on
+ * are not state (contacts.ts: rows 0..count-1 are the contacts; `storeWarmStart` swaps the two
+ * buffers and leaves the new `contacts` with count 0 and stale rows, which the next step refills from
+ * row 0; `growContactBuffer` keeps rows below count only). A snapshot stores each column up to its
+ * count (up to its last non-zero row below it), and restore writes those rows and zeroes the rest
+ * below count, leaving the world's rows from count on as they are. `contacts` holds no rows between
+ * steps: about 40 % of a settled 100,000-ball snapshot before this.
+ */
+const CONTACT_BUFFERS = new Set(['world.collision.contacts', 'world.collision.cache.rows']);
 
 /**
  * Stamp-marked scratch: an array of marks and the counter they are compared with. A mark counts only
@@ -122,67 +134,71 @@ const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) =>
 
 /**
  * Length of `a`'s first `end` elements up to the last one whose bits are not all zero (so -0 and NaN
- * count as values). Reads 64-bit words (BigInt64Array: one compare per 8 bytes, and V8 compiles
- * `w[i] === 0n` without allocating; about 30% faster than OR-ing 32-bit words on the all-zero stores
- * of a 2D world's z components, forces and torques), or 32-bit words, or elements, as the array's
- * alignment allows.
+ * count as values). Reads the bytes as 32-bit words, eight OR-ed a step from the end (`zeroTail`), the
+ * bytes past the last whole word and within the last non-zero word by their bits. Only small integers
+ * are read, so the scan never allocates, even before it is optimised or after a deoptimisation (the
+ * 64-bit BigInt64Array reads used before allocate a BigInt per read there: in a 100,000-ball world a
+ * deoptimisation loop made them most of a snapshot's time, and the garbage a third more).
  */
 function usedLength(a: TypedArray, end: number): number {
   const bytes = a.BYTES_PER_ELEMENT;
   const total = end * bytes;
-  if ((a.byteOffset & 7) === 0 && total >= 8) {
-    // The bytes past the last whole 8-byte word first (an odd count of 4-byte elements), by their bits (-0).
-    if ((total & 7) !== 0) {
-      const tail = new Uint8Array(a.buffer, a.byteOffset + (total & ~7), total & 7);
-      for (let k = tail.length - 1; k >= 0; k--) if (tail[k] !== 0) return Math.ceil(((total & ~7) + k + 1) / bytes);
-    }
-    const w = new BigInt64Array(a.buffer, a.byteOffset, total >> 3);
-    let n = w.length;
-    while (n > 0 && w[n - 1] === 0n) n--;
-    let used = n * 8; // bytes
-    if (bytes < 8 && n > 0) {
-      // Smaller elements: up to the last non-zero byte of the last non-zero word (else a store of one
-      // repeated value would gain a 0 and lose its repeat encoding).
-      const last = new Uint8Array(a.buffer, a.byteOffset + used - 8, 8);
-      let k = 8;
-      while (last[k - 1] === 0) k--;
-      used += k - 8;
-    }
-    return Math.ceil(used / bytes);
+  if ((a.byteOffset & 3) !== 0) {
+    let n = end;
+    while (n > 0 && a[n - 1] === 0 && !Object.is(a[n - 1], -0)) n--;
+    return n;
   }
-  if (bytes >= 4 && (a.byteOffset & 3) === 0) {
-    const v = new Int32Array(a.buffer, a.byteOffset, total >> 2);
-    let w = v.length;
-    while (w > 0 && v[w - 1] === 0) w--;
-    return Math.ceil((w * 4) / bytes);
+  const whole = total & ~3;
+  // The bytes past the last whole 4-byte word (1- and 2-byte elements), by their bits.
+  if (whole !== total) {
+    const tail = new Uint8Array(a.buffer, a.byteOffset + whole, total - whole);
+    for (let k = tail.length - 1; k >= 0; k--) if (tail[k] !== 0) return Math.ceil((whole + k + 1) / bytes);
   }
-  let n = end;
-  while (n > 0 && a[n - 1] === 0) n--;
+  const words = zeroTail(new Int32Array(a.buffer, a.byteOffset, whole >> 2), whole >> 2);
+  let used = words * 4; // bytes
+  if (bytes < 4 && words > 0) {
+    // Smaller elements: up to the last non-zero byte of the last non-zero word (else a store of one
+    // repeated value would gain a 0 and lose its repeat encoding).
+    const last = new Uint8Array(a.buffer, a.byteOffset + used - 4, 4);
+    let k = 4;
+    while (last[k - 1] === 0) k--;
+    used += k - 4;
+  }
+  return Math.ceil(used / bytes);
+}
+
+/** How many of the first `n` words of `w` remain when its trailing zero words are dropped (eight OR-ed a step, then one). */
+function zeroTail(w: Int32Array, n: number): number {
+  while (n >= 8 && (w[n - 1]! | w[n - 2]! | w[n - 3]! | w[n - 4]! | w[n - 5]! | w[n - 6]! | w[n - 7]! | w[n - 8]!) === 0) n -= 8;
+  while (n > 0 && w[n - 1] === 0) n--;
   return n;
 }
 
 /**
  * Whether elements 1 .. n-1 of `a` have the same bits (and are not NaN, whose payload a fill could
- * change). Compares 32-bit words (XOR-ed against the pattern and OR-ed four at a time) or 64-bit
- * words; arrays of 1- and 2-byte elements are not checked (false).
+ * change). Compares 32-bit words XOR-ed against the pattern (a 4-byte element's word, or an 8-byte
+ * element's two) and OR-ed four at a time; never allocates (see usedLength). Arrays of 1- and 2-byte
+ * elements are not checked (false).
  */
 function uniformFrom1(a: TypedArray, n: number): boolean {
   const bytes = a.BYTES_PER_ELEMENT;
   if (bytes < 4 || (a.byteOffset & 3) !== 0) return false;
   const v = a[1]!;
   if (v !== v) return false;
+  const words = new Int32Array(a.buffer, a.byteOffset, (n * bytes) >> 2);
   if (bytes === 4) {
-    const words = new Int32Array(a.buffer, a.byteOffset, n);
     const w = words[1]!;
     let i = 2;
     for (; i + 4 <= n; i += 4) if (((words[i]! ^ w) | (words[i + 1]! ^ w) | (words[i + 2]! ^ w) | (words[i + 3]! ^ w)) !== 0) return false;
     for (; i < n; i++) if (words[i] !== w) return false;
     return true;
   }
-  // 8-byte elements: as 64-bit words (BigInt64Array compares compile without allocating).
-  const w = new BigInt64Array(a.buffer, a.byteOffset, n);
-  const first = w[1]!;
-  for (let i = 2; i < n; i++) if (w[i] !== first) return false;
+  // 8-byte elements: element k is words 2k and 2k + 1.
+  const lo = words[2]!, hi = words[3]!;
+  const m = 2 * n;
+  let i = 4;
+  for (; i + 4 <= m; i += 4) if (((words[i]! ^ lo) | (words[i + 1]! ^ hi) | (words[i + 2]! ^ lo) | (words[i + 3]! ^ hi)) !== 0) return false;
+  for (; i < m; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
   return true;
 }
 
@@ -213,8 +229,12 @@ class Writer {
       ? Math.min(a.length, (this.maxId + 1) * k) : a.length;
     return this.arrayTo(a, end);
   }
-  /** `array` for an array whose entries from `end` on are known to be zero. */
-  arrayTo(a: TypedArray, end: number): Encoded {
+  /**
+   * `array` for an array whose entries from `end` on are known to be zero, or with `rowsOnly` are not
+   * state (a contact buffer's rows from its count on): then the encoding says so (`upto`: restore
+   * zeroes the stored part's tail up to `end` and leaves the entries from `end` on as they are).
+   */
+  arrayTo(a: TypedArray, end: number, rowsOnly = false): Encoded {
     const used = usedLength(a, end);
     // A store whose entities all hold one value (materials, masses of equal bodies) keeps two elements:
     // index 0 (no entity) and the value, repeated up to `rep` by restore.
@@ -223,7 +243,9 @@ class Writer {
     const type = a.constructor.name;
     const offset = this.place(n * a.BYTES_PER_ELEMENT);
     this.pending.push({ src: a, n, offset, type });
-    return rep > 0 ? { $t: type, o: offset, n, len: a.length, rep } : { $t: type, o: offset, n, len: a.length };
+    const e: Record<string, Encoded> = rep > 0 ? { $t: type, o: offset, n, len: a.length, rep } : { $t: type, o: offset, n, len: a.length };
+    if (rowsOnly) e.upto = end;
+    return e;
   }
   /** Encodes a JS list of entity ids (no zeros: ids start at 1) as an Int32Array of its length, copied by `finish`. */
   ids(list: readonly number[]): Encoded {
@@ -288,9 +310,16 @@ class Writer {
   }
   object(o: Record<string, unknown>, path: string, skip: ReadonlySet<string> | undefined): Encoded {
     const out: Record<string, Encoded> = {};
+    // A contact buffer (see CONTACT_BUFFERS): its columns (capacity rows) up to its count only.
+    const rows = CONTACT_BUFFERS.has(path) && typeof o.count === 'number' && typeof o.capacity === 'number' ? o.count : -1;
     for (const key of Object.keys(o)) {
       if (skip?.has(key)) continue;
-      out[key] = this.value(o[key], `${path}.${key}`);
+      const v = o[key];
+      if (rows >= 0 && ArrayBuffer.isView(v) && (v as TypedArray).length === o.capacity && v.constructor.name in TYPED) {
+        out[key] = this.arrayTo(v as TypedArray, Math.min(rows, (v as TypedArray).length), true);
+        continue;
+      }
+      out[key] = this.value(v, `${path}.${key}`);
     }
     return { $t: 'o', v: out };
   }
@@ -313,8 +342,9 @@ class Reader {
     const Ctor = TYPED[e.$t as string] as unknown as (new (b: ArrayBuffer, o: number, n: number) => TypedArray) | undefined;
     const o = e.o as number, n = e.n as number, len = e.len as number;
     const rep = e.rep as number | undefined;
+    const upto = e.upto as number | undefined;
     if (Ctor === undefined || !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
-      (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len))) {
+      (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len)) || (upto !== undefined && !(upto >= (rep ?? n) && upto <= len))) {
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
     }
     return new Ctor(this.buffer, o, n);
@@ -401,7 +431,8 @@ class Reader {
         if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === e.len) {
           const a = cur as TypedArray;
           const written = this.write(a, src, e);
-          const end = this.extent(a, path);
+          // A contact buffer's column (CONTACT_BUFFERS): zeros up to the count, rows past it left as they are.
+          const end = typeof e.upto === 'number' ? e.upto : this.extent(a, path);
           if (end > written) a.fill(0, written, end);
         } else {
           target[key] = this.full(e, path);
