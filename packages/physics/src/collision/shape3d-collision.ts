@@ -97,14 +97,11 @@ interface Scratch {
   n: number;
   shape: Int32Array; body: Int32Array; minX: Float64Array; maxX: Float64Array; minY: Float64Array; maxY: Float64Array; minZ: Float64Array; maxZ: Float64Array;
   px: Float64Array; py: Float64Array; pz: Float64Array; R: Float64Array; speed: Float64Array; order: Int32Array; ball: Uint8Array;
-  /** The body's velocity (0 unless dynamic or kinematic) and the rotational part of `speed`, m/s: a pair's margin takes their relative speed. */
-  vx: Float64Array; vy: Float64Array; vz: Float64Array; spin: Float64Array;
 }
 const scratch: Scratch = {
   n: 0, shape: new Int32Array(0), body: new Int32Array(0), minX: new Float64Array(0), maxX: new Float64Array(0), minY: new Float64Array(0), maxY: new Float64Array(0),
   minZ: new Float64Array(0), maxZ: new Float64Array(0), px: new Float64Array(0), py: new Float64Array(0), pz: new Float64Array(0), R: new Float64Array(0),
   speed: new Float64Array(0), order: new Int32Array(0), ball: new Uint8Array(0),
-  vx: new Float64Array(0), vy: new Float64Array(0), vz: new Float64Array(0), spin: new Float64Array(0),
 };
 
 function ensure(n: number): void {
@@ -121,7 +118,6 @@ function ensure(n: number): void {
   sc.shape = grow(sc.shape, m); sc.body = grow(sc.body, m); sc.order = grow(sc.order, m); sc.ball = grow(sc.ball, m);
   sc.minX = grow(sc.minX, m); sc.maxX = grow(sc.maxX, m); sc.minY = grow(sc.minY, m); sc.maxY = grow(sc.maxY, m); sc.minZ = grow(sc.minZ, m); sc.maxZ = grow(sc.maxZ, m);
   sc.px = grow(sc.px, m); sc.py = grow(sc.py, m); sc.pz = grow(sc.pz, m); sc.R = grow(sc.R, 9 * m); sc.speed = grow(sc.speed, m);
-  sc.vx = grow(sc.vx, m); sc.vy = grow(sc.vy, m); sc.vz = grow(sc.vz, m); sc.spin = grow(sc.spin, m);
 }
 
 const bodyQ = new Float64Array(4);
@@ -237,19 +233,17 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       R[o + 6] = 2 * (x * z - y * w); R[o + 7] = 2 * (y * z + x * w); R[o + 8] = 1 - 2 * (x * x + y * y);
       reach = s.reach[e]!;
     }
-    let speed = 0, spin = 0, vx = 0, vy = 0, vz = 0;
+    let speed = 0;
     if (moving) {
       const V = c.Velocity, W = c.AngularVelocity;
       // (Math.sqrt of the sum of squares: Math.hypot is several times slower in V8, and these never overflow.)
-      vx = V.x[b]!; vy = V.y[b]!; vz = V.z[b]!;
+      const vx = V.x[b]!, vy = V.y[b]!, vz = V.z[b]!;
       speed = Math.sqrt(vx * vx + vy * vy + vz * vz);
       if (turning) {
         const wx = W.x[b]!, wy = W.y[b]!, wz = W.z[b]!, dx = cx - x0, dy = cy - y0, dz = cz - z0;
-        spin = Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
-        speed += spin;
+        speed += Math.sqrt(wx * wx + wy * wy + wz * wz) * (reach + Math.sqrt(dx * dx + dy * dy + dz * dz));
       }
     }
-    sc.vx[n] = vx; sc.vy[n] = vy; sc.vz[n] = vz; sc.spin[n] = spin;
     // Half the speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
     // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
     const pad = speed * h + 0.5 * spec;
@@ -459,7 +453,7 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, 0));
     if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
     else {
-      const margin = pairMargin(world, a, b);
+      const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
       boxBox3D(sc.px[a]!, sc.py[a]!, sc.pz[a]!, sc.R, 9 * a, s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, sc.px[b]!, sc.py[b]!, sc.pz[b]!, sc.R, 9 * b, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!, margin, manifold);
       boxRow.from = -1;
     }
@@ -478,20 +472,9 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     if (overlap) st.sensingNow.set(ea * (world.capacity + 1) + eb, sa ? [ea, eb, sc.body[a]!, sc.body[b]!] : [eb, ea, sc.body[b]!, sc.body[a]!]);
     return;
   }
-  const margin = pairMargin(world, a, b);
+  const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
   collide3D(colA, colB, margin, manifold);
   if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
-}
-
-/**
- * Narrowphase margin of colliders a and b, m: the speculative distance plus how far they can close in
- * the step, (|v_B - v_A| + spin_A + spin_B) h with spin = |w| (reach + offset of the shape from the
- * body's centre): bodies falling together (a dropped grid) close nothing. Their fattened boxes (which
- * found the pair) take each body's whole speed, so they cover this.
- */
-function pairMargin(world: PhysicsWorld, a: number, b: number): number {
-  const sc = scratch, dx = sc.vx[b]! - sc.vx[a]!, dy = sc.vy[b]! - sc.vy[a]!, dz = sc.vz[b]! - sc.vz[a]!;
-  return world.collision.settings.speculativeDistance + (Math.sqrt(dx * dx + dy * dy + dz * dz) + sc.spin[a]! + sc.spin[b]!) * world.h;
 }
 
 /**
