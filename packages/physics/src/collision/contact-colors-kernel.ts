@@ -85,6 +85,8 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       const bodyStage = stage === 0 || stage === 2 + iters;
       const units = bodyStage ? 1 : C + 1;
       for (let u = 0; u < units; u++) {
+        // A colour without rows (the overflow colour, usually) needs no pass and no barrier.
+        if (!bodyStage && plan[9 + u] === plan[8 + u]) continue;
         try {
           if (stage === 0) {
             for (let k = b0; k < b1; k++) {

@@ -182,6 +182,8 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
   const units = 1 + iterations * (C + 1);
   outer:
   for (let u = 0; u < units; u++) {
+    // A colour without rows (the overflow colour, usually) needs no pass and no barrier.
+    if (u > 0 && plan[9 + (u - 1) % (C + 1)] === plan[8 + (u - 1) % (C + 1)]) continue;
     try {
       if (u === 0) {
         const lo = Math.floor((n * part) / T), hi = Math.floor((n * (part + 1)) / T);
