@@ -774,6 +774,8 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
   const done = new Set<QueryData>();
   let known = matching.get(ecs);
+  // The first set this restore gave each stored list, its version before, and whether it was written.
+  const holders = new Map<Int32Array, { set: object; before: number; changed: boolean }>();
   ctx.dirtyQueries.clear();
   for (const enc of ecs.queries as Encoded[]) {
     const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
@@ -785,10 +787,28 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       // A set that has not changed since it last held this snapshot's list (taken from this world, or
       // written by an earlier restore of it) is left as it is; any other is compared and written.
       const v = versionOf(set);
-      if (v !== undefined && known?.get(set) === v) continue;
-      setContent(set, ids);
+      const holder = v !== undefined && ids.length > 0 ? holders.get(ids) : undefined;
+      if (v !== undefined && known?.get(set) === v) {
+        if (ids.length > 0 && holder === undefined) holders.set(ids, { set, before: v, changed: false });
+        continue;
+      }
+      // A set that held what the list's first set (its twin) held, as of both sets' versions then
+      // (recorded by an earlier restore into this world), equals the list exactly when its twin did:
+      // left as it is, or written without comparing.
+      const twin = holder !== undefined ? twins.get(set) : undefined;
+      let changed: boolean;
+      if (holder !== undefined && twin !== undefined && twin.peer === holder.set && twin.version === v && twin.peerVersion === holder.before) {
+        changed = holder.changed;
+        if (changed) setContent(set, ids, false);
+      } else {
+        changed = setContent(set, ids, true);
+      }
       const after = versionOf(set);
       if (after !== undefined) (known ??= newMatching(ecs)).set(set, after);
+      if (after !== undefined && ids.length > 0) {
+        if (holder === undefined) holders.set(ids, { set, before: v!, changed });
+        else twins.set(set, { peer: holder.set, version: after, peerVersion: versionOf(holder.set)! });
+      }
     }
     if (rem.length > 0) ctx.dirtyQueries.add(q);
   }
@@ -823,21 +843,33 @@ function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
   for (let i = m; i < n; i++) arr.push(src[i]!);
 }
 
-/** Makes a bitecs sparse set hold exactly `ids`, in that order (untouched if it already does). */
-function setContent(set: SparseSetLike, ids: Int32Array): void {
+/**
+ * Makes a bitecs sparse set hold exactly `ids`, in that order: untouched if it already does (with
+ * `compare`), else written. @returns whether it was written.
+ */
+function setContent(set: SparseSetLike, ids: Int32Array, compare: boolean): boolean {
   const dense = set.dense;
-  if (Array.isArray(dense) && sameAsStored(dense as number[], ids)) return;
+  if (compare && Array.isArray(dense) && sameAsStored(dense as number[], ids)) return false;
   // Lean storage (lean-ecs.ts): written in bulk, its typed sparse array allocated if it was not yet.
-  if (assignSparseSet(set, ids)) return;
+  if (assignSparseSet(set, ids)) return true;
   const sparse = (set as unknown as { sparse: ArrayLike<number> & { [i: number]: number } }).sparse;
   if (Array.isArray(dense)) {
     writeInPlace(dense, ids, ids.length);
     for (let i = 0; i < ids.length; i++) sparse[ids[i]!] = i;
-    return;
+    return true;
   }
   set.reset();
   for (let i = 0; i < ids.length; i++) set.add(ids[i]!);
+  return true;
 }
+
+/**
+ * Query sets of a world (lean storage, with versions) known to hold the same ids in the same order as
+ * another set of it, `peer`, while their versions are still `version` and `peerVersion`: written by
+ * restore when both were given one stored list. A world restored again and again from snapshots of
+ * another (a replica) then compares each list with one set only, not with every query holding it.
+ */
+const twins = new WeakMap<object, { peer: object; version: number; peerVersion: number }>();
 
 function matches(ctx: EcsInternals, q: QueryData, e: number): boolean {
   const has = (c: object) => {
