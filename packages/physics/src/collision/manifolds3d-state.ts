@@ -27,9 +27,13 @@ export interface Manifold3DBuffer {
   /** Per point (4 i + k): anchors from the centres of mass (m, world), separation at the step's start (m), feature id. */
   rax: Float64Array; ray: Float64Array; raz: Float64Array; rbx: Float64Array; rby: Float64Array; rbz: Float64Array;
   sep: Float64Array; id: Float64Array;
-  /** Per point: accumulated impulses (N s) along n, t1, t2; effective masses; approach speed at the start (m/s); largest normal impulse. */
+  /**
+   * Per point: accumulated impulses (N s) along n, t1, t2; effective masses (kg; rebuilt every step by
+   * the solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach
+   * speed at the start (m/s); largest normal impulse.
+   */
   ln: Float64Array; lt1: Float64Array; lt2: Float64Array;
-  mn: Float64Array; mt1: Float64Array; mt2: Float64Array;
+  mn: Float32Array; mt1: Float32Array; mt2: Float32Array;
   vn0: Float64Array; maxLn: Float64Array;
   /**
    * Box-box rows (shape3d-collision.ts reuses them while the pair's relative pose barely changes): 1 when
@@ -47,7 +51,7 @@ function createBuffer(n: number): Manifold3DBuffer {
     count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), sub: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n), iso: new Uint8Array(n), minSep: f(n), reachA: f(n), reachB: f(n),
     nx: f(n), ny: f(n), nz: f(n), t1x: f(n), t1y: f(n), t1z: f(n), friction: f(n), restitution: f(n),
     rax: f(p), ray: f(p), raz: f(p), rbx: f(p), rby: f(p), rbz: f(p), sep: f(p), id: f(p),
-    ln: f(p), lt1: f(p), lt2: f(p), mn: f(p), mt1: f(p), mt2: f(p), vn0: f(p), maxLn: f(p),
+    ln: f(p), lt1: f(p), lt2: f(p), mn: new Float32Array(p), mt1: new Float32Array(p), mt2: new Float32Array(p), vn0: f(p), maxLn: f(p),
     local: new Uint8Array(n), relPose: f(12 * n), localNormal: f(3 * n), localA: f(3 * p), localB: f(3 * p),
   };
 }
