@@ -7,18 +7,26 @@
 import type { KernelArray } from '../threads/kernel-types.js';
 
 /**
- * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps; thread `part` of
- * plan[3]. First each thread packs its range of the contact buffer's rows (contact-pack2d.ts layout)
- * into the pack, colour by colour, from its own first slot of each colour (`offsets`), then the
- * threads meet; after the substeps each writes the impulses of its range of packed rows back to the
- * buffer (normal, tangent, largest pass impulse, delivered total), as unpackContacts2D.
+ * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
+ * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
+ * the contact buffer's rows (contact-pack2d.ts layout) colour by colour into the pack (one block a
+ * range of plan[7] ranges, each from its own first slot of every colour, `offsets`), then each
+ * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
+ * pass colour by colour, 256 rows a block, the overflow colour in one block), then writing the
+ * impulses back to the buffer (normal, tangent, largest pass impulse, delivered total, as
+ * unpackContacts2D). Threads claim blocks in that order from one counter (Atomics.add) and start a
+ * unit's block only once every block of the earlier units is done, so a thread the system has not
+ * scheduled holds nothing up unless it holds a block (work sharing, as Box2D v3's solver stages), and
+ * which thread runs a block never changes a result: blocks of a unit touch disjoint movable bodies
+ * (the overflow colour is one block), rows of a colour stay in pack order.
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
  * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
- * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads, 4 colours C, 5 solver bodies,
- * 6 the calling thread may block in Atomics.wait, 8 .. 8 + C + 1 the colours' first rows, the
- * overflow colour's rows from plan[8 + C] to plan[9 + C]), 5 barrier (Int32: arrived, generation,
- * abort), 6 each row's colour (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow colour, 255 not packed),
- * 7 offsets (Int32, P[12] a thread: the thread's next pack slot of each colour; advanced as it packs),
+ * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running (not read here), 4 colours
+ * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 .. 8 + C + 1
+ * the colours' first rows, the overflow colour's rows from plan[8 + C] to plan[9 + C]), 5 counters
+ * (Int32, 0 on entry: blocks claimed, blocks done, abort), 6 each row's colour (Uint8: 0 .. P[12] - 2,
+ * P[12] - 1 the overflow colour, 255 not packed), 7 offsets (Int32, P[12] a packing range: its next
+ * pack slot of each colour; advanced as it packs),
  * the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15 normalMass,
  * 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner (Uint8),
  * 21 maxNormalImpulse, 22 totalNormalImpulse. P: 0 1 / h_s, 1-3 dynamic softness, 4-6 rigid softness,
@@ -29,181 +37,174 @@ import type { KernelArray } from '../threads/kernel-types.js';
 export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
   const pk = A[0] as Float64Array, sb = A[1] as Float64Array, ex = A[2] as Float64Array, dyn = A[3] as Uint8Array;
   const plan = A[4] as Int32Array, bar = A[5] as Int32Array;
-  const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, T = plan[3]!, C = plan[4]!, nb = plan[5]!;
+  const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, C = plan[4]!, nb = plan[5]!, parts = plan[7]!;
   const wait = part !== 0 || plan[6] === 1;
   const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
   const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!;
   const color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
+  const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
+  const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
+  const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
+  const RP = A[20] as Uint8Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
+  // Rows and bodies a block.
+  const RB_ = 256, BB = 1024;
   // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
   // positions (bodies), then the relax passes.
   const stages = 3 + iters + relax;
-  const b0 = 1 + Math.floor(((nb - 1) * part) / T), b1 = 1 + Math.floor(((nb - 1) * (part + 1)) / T);
-  let failed = false;
-  // Stage -1: pack this thread's range of the buffer's rows.
-  {
-    const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
-    const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
-    const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
-    const RP = A[20] as Uint8Array;
-    const lo = Math.floor((rows * part) / T), hi = Math.floor((rows * (part + 1)) / T), base = part * W;
-    try {
-      for (let i = lo; i < hi; i++) {
-        const c = color[i]!;
-        if (c === 255) continue;
-        const k = offsets[base + c]!;
-        offsets[base + c] = k + 1;
-        const o = k * 16;
-        pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
-        pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
-        pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
-        pk[o + 14] = 0; pk[o + 15] = i;
-      }
-    } catch (e) {
-      Atomics.store(bar, 2, 1);
-      Atomics.add(bar, 1, 1);
-      Atomics.notify(bar, 1);
-      throw e;
-    }
-    if (T > 1) {
-      const gen = Atomics.load(bar, 1);
-      if (Atomics.add(bar, 0, 1) === T - 1) {
-        Atomics.store(bar, 0, 0);
-        Atomics.add(bar, 1, 1);
-        Atomics.notify(bar, 1);
-      } else {
-        let spins = 0;
-        while (Atomics.load(bar, 1) === gen && Atomics.load(bar, 2) === 0) {
-          if (++spins > 200 && wait) Atomics.wait(bar, 1, gen, 50);
-        }
-      }
-      if (Atomics.load(bar, 2) !== 0) return -1;
-    }
-  }
-  outer:
-  for (let s = 0; s < substeps; s++) {
-    for (let stage = 0; stage < stages; stage++) {
-      const bodyStage = stage === 0 || stage === 2 + iters;
-      const units = bodyStage ? 1 : C + 1;
-      for (let u = 0; u < units; u++) {
-        // A colour without rows (the overflow colour, usually) needs no pass and no barrier.
-        if (!bodyStage && plan[9 + u] === plan[8 + u]) continue;
-        try {
-          if (stage === 0) {
-            for (let k = b0; k < b1; k++) {
-              if (dyn[k] !== 1) continue;
-              const o = k * 8;
-              sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
-            }
-          } else if (bodyStage) {
-            for (let k = b0; k < b1; k++) {
-              const o = k * 8;
-              sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
-              if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
-            }
-          } else {
-            // Colour u's rows, this thread's share (the overflow colour, u = C, on thread 0 alone).
-            const first = plan[8 + u]!, last = plan[9 + u]!, len = last - first;
-            const r0 = u === C ? (part === 0 ? first : last) : first + Math.floor((len * part) / T);
-            const r1 = u === C ? last : first + Math.floor((len * (part + 1)) / T);
-            if (stage === 1) {
-              for (let k = r0; k < r1; k++) {
-                const o = k * 16;
-                const ln = pk[o + 10]!, lt = pk[o + 11]!;
-                if (ln === 0 && lt === 0) continue;
-                const a = pk[o]!, b = pk[o + 1]!;
-                sb[a + 7] = 1; sb[b + 7] = 1;
-                const nx = pk[o + 2]!, ny = pk[o + 3]!;
-                const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
-                const imA = sb[a + 5]!, imB = sb[b + 5]!;
-                sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
-                sb[b] = sb[b]! + imB * Px; sb[b + 1] = sb[b + 1]! + imB * Py;
-                sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 4]! * lt;
-                sb[b + 2] = sb[b + 2]! - sb[b + 6]! * pk[o + 5]! * lt;
-              }
-            } else {
-              const useBias = stage < 2 + iters;
-              // The substep's last pass adds each row's impulse to what the substep delivered.
-              const total = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-              for (let k = r0; k < r1; k++) {
-                const o = k * 16;
-                const a = pk[o]!, b = pk[o + 1]!;
-                const nx = pk[o + 2]!, ny = pk[o + 3]!;
-                const imA = sb[a + 5]!, imB = sb[b + 5]!;
-                let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[b]!, vby = sb[b + 1]!;
-                const sep = pk[o + 6]! + (sb[b + 3]! - sb[a + 3]!) * nx + (sb[b + 4]! - sb[a + 4]!) * ny;
-                let bias = 0, massScale = 1, impulseScale = 0;
-                if (sep > 0) {
-                  bias = sep * invH;
-                } else if (useBias) {
-                  if (pk[o + 12] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
-                  else { bias = dBias * sep; massScale = dMass; impulseScale = dImp; }
-                  if (bias < -push) bias = -push;
-                }
-                const vn = (vbx - vax) * nx + (vby - vay) * ny;
-                const oldN = pk[o + 10]!;
-                let lambda = -pk[o + 7]! * massScale * (vn + bias) - impulseScale * oldN;
-                let newN = oldN + lambda;
-                if (newN < 0) newN = 0;
-                lambda = newN - oldN;
-                pk[o + 10] = newN;
-                if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
-                if (total) pk[o + 14] = pk[o + 14]! + newN;
-                let Px = lambda * nx, Py = lambda * ny;
-                vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
-                const ra = pk[o + 4]!, rb = pk[o + 5]!;
-                let wa = sb[a + 2]!, wb = sb[b + 2]!;
-                const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
-                lambda = -pk[o + 8]! * vt;
-                const maxF = pk[o + 9]! * newN;
-                const oldT = pk[o + 11]!;
-                let newT = oldT + lambda;
-                newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
-                lambda = newT - oldT;
-                pk[o + 11] = newT;
-                Px = -lambda * ny; Py = lambda * nx;
-                vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
-                wa -= sb[a + 6]! * ra * lambda; wb -= sb[b + 6]! * rb * lambda;
-                sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
-                sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
-                if (newN !== 0 || newT !== 0) { sb[a + 7] = 1; sb[b + 7] = 1; }
-              }
-            }
-          }
-        } catch (e) {
-          // Let the other threads out of their barrier, then report this one's error.
-          Atomics.store(bar, 2, 1);
-          Atomics.add(bar, 1, 1);
-          Atomics.notify(bar, 1);
-          throw e;
-        }
-        // Barrier: every thread finishes this colour or stage before any starts the next.
-        if (T > 1) {
-          if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
-          const gen = Atomics.load(bar, 1);
-          if (Atomics.add(bar, 0, 1) === T - 1) {
-            Atomics.store(bar, 0, 0);
-            Atomics.add(bar, 1, 1);
-            Atomics.notify(bar, 1);
-          } else {
-            // A short spin (the other threads are usually a few rows behind), then sleep until notified.
-            let spins = 0;
-            while (Atomics.load(bar, 1) === gen && Atomics.load(bar, 2) === 0) {
-              if (++spins > 200 && wait) Atomics.wait(bar, 1, gen, 50);
-            }
-          }
-          if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
-        }
-      }
-    }
-  }
-  if (failed) return -1;
-  // Unpack: this thread's range of the packed rows' impulses back to the buffer (rows are disjoint).
-  const LN = A[18] as Float64Array, LT = A[19] as Float64Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
   const np = plan[9 + C]!;
-  const k0 = Math.floor((np * part) / T), k1 = Math.floor((np * (part + 1)) / T);
-  for (let k = k0; k < k1; k++) {
-    const o = k * 16, i = pk[o + 15]!;
-    LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
+  // The units in order: the packing (one block a range of `parts`), then every substep's stages (a
+  // body stage one unit, a pass C + 1 units, one a colour, the overflow colour one block), then the
+  // unpacking. Blocks are numbered across the units in that order and claimed from bar[0]; bar[1]
+  // counts finished blocks, so a unit starts once bar[1] reaches its first block.
+  const units = 1 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
+  let base = 0, failed = false;
+  let b = Atomics.add(bar, 0, 1);
+  let stage = 0, u = 0;
+  for (let g = 0; g < units; g++) {
+    // Which unit g is: kind 0 pack, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
+    let kind: number, first = 0, last = 0, count: number;
+    if (g === 0) { kind = 0; count = parts; }
+    else if (g === units - 1) { kind = 4; first = 0; last = np; count = Math.ceil(np / RB_); }
+    else {
+      if (stage === 0 || stage === 2 + iters) { kind = stage === 0 ? 1 : 2; count = Math.ceil((nb - 1) / BB); }
+      else {
+        kind = 3;
+        first = plan[8 + u]!; last = plan[9 + u]!;
+        count = u === C ? (last > first ? 1 : 0) : Math.ceil((last - first) / RB_);
+      }
+    }
+    const end = base + count;
+    while (b < end) {
+      // Wait until every block of the earlier units is done.
+      let spins = 0;
+      for (;;) {
+        const done = Atomics.load(bar, 1);
+        if (done >= base) break;
+        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
+        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
+      }
+      if (failed) break;
+      const blk = b - base;
+      try {
+        if (kind === 0) {
+          const lo = Math.floor((rows * blk) / parts), hi = Math.floor((rows * (blk + 1)) / parts), o0 = blk * W;
+          for (let i = lo; i < hi; i++) {
+            const c = color[i]!;
+            if (c === 255) continue;
+            const k = offsets[o0 + c]!;
+            offsets[o0 + c] = k + 1;
+            const o = k * 16;
+            pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
+            pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
+            pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
+            pk[o + 14] = 0; pk[o + 15] = i;
+          }
+        } else if (kind === 1) {
+          const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
+          for (let k = k0; k < k1; k++) {
+            if (dyn[k] !== 1) continue;
+            const o = k * 8;
+            sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
+          }
+        } else if (kind === 2) {
+          const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
+          for (let k = k0; k < k1; k++) {
+            const o = k * 8;
+            sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
+            if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+          }
+        } else if (kind === 4) {
+          const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
+          for (let k = k0; k < k1; k++) {
+            const o = k * 16, i = pk[o + 15]!;
+            LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
+          }
+        } else {
+          // A block of colour u's rows (the overflow colour in one block: its rows may share bodies).
+          const r0 = u === C ? first : first + blk * RB_;
+          const r1 = u === C ? last : Math.min(last, r0 + RB_);
+          if (stage === 1) {
+            for (let k = r0; k < r1; k++) {
+              const o = k * 16;
+              const ln = pk[o + 10]!, lt = pk[o + 11]!;
+              if (ln === 0 && lt === 0) continue;
+              const a = pk[o]!, bb = pk[o + 1]!;
+              sb[a + 7] = 1; sb[bb + 7] = 1;
+              const nx = pk[o + 2]!, ny = pk[o + 3]!;
+              const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
+              const imA = sb[a + 5]!, imB = sb[bb + 5]!;
+              sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
+              sb[bb] = sb[bb]! + imB * Px; sb[bb + 1] = sb[bb + 1]! + imB * Py;
+              sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 4]! * lt;
+              sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 5]! * lt;
+            }
+          } else {
+            const useBias = stage < 2 + iters;
+            // The substep's last pass adds each row's impulse to what the substep delivered.
+            const total = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+            for (let k = r0; k < r1; k++) {
+              const o = k * 16;
+              const a = pk[o]!, bb = pk[o + 1]!;
+              const nx = pk[o + 2]!, ny = pk[o + 3]!;
+              const imA = sb[a + 5]!, imB = sb[bb + 5]!;
+              let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[bb]!, vby = sb[bb + 1]!;
+              const sep = pk[o + 6]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
+              let bias = 0, massScale = 1, impulseScale = 0;
+              if (sep > 0) {
+                bias = sep * invH;
+              } else if (useBias) {
+                if (pk[o + 12] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
+                else { bias = dBias * sep; massScale = dMass; impulseScale = dImp; }
+                if (bias < -push) bias = -push;
+              }
+              const vn = (vbx - vax) * nx + (vby - vay) * ny;
+              const oldN = pk[o + 10]!;
+              let lambda = -pk[o + 7]! * massScale * (vn + bias) - impulseScale * oldN;
+              let newN = oldN + lambda;
+              if (newN < 0) newN = 0;
+              lambda = newN - oldN;
+              pk[o + 10] = newN;
+              if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
+              if (total) pk[o + 14] = pk[o + 14]! + newN;
+              let Px = lambda * nx, Py = lambda * ny;
+              vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
+              const ra = pk[o + 4]!, rb = pk[o + 5]!;
+              let wa = sb[a + 2]!, wb = sb[bb + 2]!;
+              const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
+              lambda = -pk[o + 8]! * vt;
+              const maxF = pk[o + 9]! * newN;
+              const oldT = pk[o + 11]!;
+              let newT = oldT + lambda;
+              newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
+              lambda = newT - oldT;
+              pk[o + 11] = newT;
+              Px = -lambda * ny; Py = lambda * nx;
+              vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
+              wa -= sb[a + 6]! * ra * lambda; wb -= sb[bb + 6]! * rb * lambda;
+              sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
+              sb[bb] = vbx; sb[bb + 1] = vby; sb[bb + 2] = wb;
+              if (newN !== 0 || newT !== 0) { sb[a + 7] = 1; sb[bb + 7] = 1; }
+            }
+          }
+        }
+      } catch (e) {
+        // Let the other threads out of their waits, then report this one's error.
+        Atomics.store(bar, 2, 1);
+        Atomics.notify(bar, 1);
+        throw e;
+      }
+      // Done: the last block of a unit wakes the threads waiting to start the next.
+      if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+      b = Atomics.add(bar, 0, 1);
+    }
+    if (failed) break;
+    base = end;
+    // Next unit: advance (stage, colour, substep) past the packing.
+    if (g > 0 && g < units - 1) {
+      if (stage === 0 || stage === 2 + iters) { stage++; u = 0; }
+      else if (++u > C) { u = 0; stage++; }
+      if (stage === stages) stage = 0;
+    }
   }
-  return 0;
+  return failed ? -1 : 0;
 }

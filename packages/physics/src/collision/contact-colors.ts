@@ -223,7 +223,7 @@ export function solveColoredSubsteps(
   const np = colorRows(cs, buf, s, pool.threads);
   const plan = s.plan, P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;
-  plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0;
+  plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0; plan[7] = pool.threads;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1;
@@ -235,7 +235,7 @@ export function solveColoredSubsteps(
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
-  s.bar[0] = 0; s.bar[2] = 0;
+  s.bar[0] = 0; s.bar[1] = 0; s.bar[2] = 0;
   if (parallel) {
     plan[3] = pool.threads;
     pool.run('contactSolverSystem', KERNEL.solveColored2D, A, P, pool.threads, null);
