@@ -37,9 +37,14 @@ export interface ThreeAppOptions {
   cameraPosition?: ArrayLike<number>;
   /** Orbit controls options, or false for none. Default {} (three's defaults: left drag orbits). */
   controls?: OrbitOptions | false;
+  /**
+   * Most frames whose GPU work may still be unfinished when `render` draws another, integer in
+   * [1, 8]. Default 2. A `render` while that many are outstanding draws nothing (see `ThreeApp.render`).
+   */
+  maxFramesInFlight?: number;
 }
 
-const APP_OPTIONS = ['background', 'parent', 'pixelRatio', 'antialias', 'shadows', 'fov', 'cameraPosition', 'controls'];
+const APP_OPTIONS = ['background', 'parent', 'pixelRatio', 'antialias', 'shadows', 'fov', 'cameraPosition', 'controls', 'maxFramesInFlight'];
 
 let softwareGL: boolean | null = null;
 
@@ -78,6 +83,10 @@ export interface FrameInfo {
   /** Geometries and textures held on the GPU. */
   geometries: number;
   textures: number;
+  /** Frames drawn by `ThreeApp.render` since the app was created. */
+  framesDrawn: number;
+  /** Calls of `ThreeApp.render` that drew nothing because the GPU had not finished the frames before (see `render`). */
+  framesSkipped: number;
 }
 
 /** A three.js page: renderer, scene, camera, controls, sized to the window. */
@@ -92,8 +101,17 @@ export interface ThreeApp {
   readonly controls: OrbitControls | null;
   /** The canvas. */
   readonly canvas: HTMLCanvasElement;
-  /** Updates the controls (damping) and draws the scene. */
-  render(): void;
+  /**
+   * Updates the controls (damping) and draws the scene, unless the GPU has not yet finished
+   * `maxFramesInFlight` earlier frames (WebGL2 fence syncs, polled without waiting): then it draws
+   * nothing and the canvas keeps its last frame. This paces the page to the GPU. Without it a
+   * GPU slower than the frame rate (software WebGL: SwiftShader, llvmpipe) queues frames without
+   * bound, and any call that waits for the GPU (readPixels, drawing the canvas elsewhere, a shader's
+   * link status) blocks the page for the whole queue: 16 s after 25 s of balls-3d with 3,000 balls
+   * in headless Chromium on a busy machine, growing for as long as the page runs.
+   * @returns whether a frame was drawn.
+   */
+  render(): boolean;
   /** Draw calls, triangles and GPU resources of the last `render`. */
   info(): FrameInfo;
   /**
@@ -127,6 +145,10 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   if (cameraPosition.length !== 3 || !Array.from(cameraPosition).every(Number.isFinite)) {
     throw new RangeError(`${where}: cameraPosition must be 3 finite numbers, got ${JSON.stringify(Array.from(cameraPosition))}`);
   }
+  const maxInFlight = options.maxFramesInFlight ?? 2;
+  if (!(Number.isInteger(maxInFlight) && maxInFlight >= 1 && maxInFlight <= 8)) {
+    throw new RangeError(`${where}: maxFramesInFlight must be an integer in [1, 8], got ${maxInFlight}`);
+  }
   const parent = options.parent ?? pageLayout().stage;
   const renderer = new WebGLRenderer({ antialias: options.antialias ?? !isSoftwareWebGL(), powerPreference: 'high-performance' });
   renderer.setPixelRatio(pixelRatio);
@@ -144,6 +166,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   const camera = new PerspectiveCamera(fov, 1, 0.01, 1000);
   camera.position.set(cameraPosition[0]!, cameraPosition[1]!, cameraPosition[2]!);
   const controls = options.controls === false ? null : createOrbitControls(camera, canvas, options.controls ?? {});
+  const pacer = createFramePacer(renderer.getContext(), maxInFlight);
 
   const resize = (): void => {
     const w = Math.max(1, parent === document.body ? window.innerWidth : parent.clientWidth);
@@ -162,13 +185,17 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     renderer, scene, camera, controls, canvas,
     render() {
       controls?.update();
+      if (!pacer.mayDraw()) return false;
       renderer.render(scene, camera);
+      pacer.drew();
+      return true;
     },
     info() {
       const i = renderer.info;
       return {
         calls: i.render.calls, triangles: i.render.triangles, lines: i.render.lines, points: i.render.points,
         geometries: i.memory.geometries, textures: i.memory.textures,
+        framesDrawn: pacer.drawn, framesSkipped: pacer.skipped,
       };
     },
     toNdc(clientX, clientY, out = [0, 0]) {
@@ -181,12 +208,69 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
       frameBox(camera, controls, min, max, direction ? { direction } : {});
     },
     destroy() {
+      pacer.clear();
       window.removeEventListener('resize', resize);
       observer.disconnect();
       controls?.dispose();
       renderer.dispose();
       canvas.remove();
     },
+  };
+}
+
+/** Keeps a WebGL context from running more than a given number of frames ahead of its GPU. */
+interface FramePacer {
+  /** Whether a frame may be drawn now: fewer than the limit of earlier frames unfinished on the GPU (counts a refusal in `skipped`). */
+  mayDraw(): boolean;
+  /** Marks the end of a drawn frame's commands (a fence the next `mayDraw` calls poll). */
+  drew(): void;
+  /** Deletes the outstanding fences. */
+  clear(): void;
+  /** Frames drawn (`drew` calls). */
+  readonly drawn: number;
+  /** `mayDraw` calls that said no. */
+  readonly skipped: number;
+}
+
+/**
+ * A frame pacer for `gl`: one WebGL2 fence sync (SYNC_GPU_COMMANDS_COMPLETE) after each drawn frame,
+ * polled with getSyncParameter (which never waits; the browser updates a fence's status between
+ * tasks), and at most `maxInFlight` unsignalled. Under WebGL1 or a lost context it always allows drawing.
+ */
+function createFramePacer(gl: WebGLRenderingContext | WebGL2RenderingContext, maxInFlight: number): FramePacer {
+  const gl2 = typeof WebGL2RenderingContext !== 'undefined' && gl instanceof WebGL2RenderingContext ? gl : null;
+  const fences: WebGLSync[] = [];
+  let drawn = 0;
+  let skipped = 0;
+  const clear = (): void => {
+    if (gl2 && !gl2.isContextLost()) for (const f of fences) gl2.deleteSync(f);
+    fences.length = 0;
+  };
+  return {
+    mayDraw() {
+      if (!gl2) return true;
+      if (gl2.isContextLost()) {
+        fences.length = 0; // gone with the context
+        return true;
+      }
+      while (fences.length > 0 && gl2.getSyncParameter(fences[0]!, gl2.SYNC_STATUS) === gl2.SIGNALED) gl2.deleteSync(fences.shift()!);
+      if (fences.length < maxInFlight) return true;
+      skipped++;
+      return false;
+    },
+    drew() {
+      drawn++;
+      if (!gl2 || gl2.isContextLost()) return;
+      const fence = gl2.fenceSync(gl2.SYNC_GPU_COMMANDS_COMPLETE, 0);
+      if (fence) {
+        fences.push(fence);
+        // Submit now, so the fence can signal without waiting for the next frame's commands.
+        gl2.flush();
+      }
+    },
+    clear,
+    get drawn() { return drawn; },
+    get skipped() { return skipped; },
   };
 }
 

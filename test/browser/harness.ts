@@ -246,12 +246,15 @@ export class GamePage {
     return withTimeout(work, timeoutMs, `${this.page.url()}: ${what}`, () => this.describe());
   }
 
-  /** `window.game.stats()`. @throws Error if the page has no window.game. */
+  /**
+   * `window.game.stats()`.
+   * @throws Error if the page has no window.game, or (with the page's errors) if it does not answer within PAGE_TIMEOUT_MS.
+   */
   stats(): Promise<GameStats> {
-    return this.page.evaluate(() => {
+    return this.evaluate(() => {
       if (!window.game) throw new Error('window.game is missing');
       return window.game.stats();
-    });
+    }, null, 'window.game.stats()');
   }
 
   /**
