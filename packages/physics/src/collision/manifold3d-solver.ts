@@ -119,12 +119,18 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
         const ux = d === 0 ? nx : d === 1 ? t1x : t2x, uy = d === 0 ? ny : d === 1 ? t1y : t2y, uz = d === 0 ? nz : d === 1 ? t1z : t2z;
         const cax = ray * uz - raz * uy, cay = raz * ux - rax * uz, caz = rax * uy - ray * ux;
         const cbx = rby * uz - rbz * uy, cby = rbz * ux - rbx * uz, cbz = rbx * uy - rby * ux;
-        const iax = T[ta]! * cax + T[ta + 3]! * cay + T[ta + 4]! * caz, iay = T[ta + 3]! * cax + T[ta + 1]! * cay + T[ta + 5]! * caz, iaz = T[ta + 4]! * cax + T[ta + 5]! * cay + T[ta + 2]! * caz;
-        const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
         const b = o + 6 * d, bi = b + INV;
         J[b] = cax; J[b + 1] = cay; J[b + 2] = caz; J[b + 3] = cbx; J[b + 4] = cby; J[b + 5] = cbz;
-        if (!iso) { J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz; }
-        const k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
+        let k0: number;
+        if (iso) {
+          // I^-1 = i 1 on both sides: (r x u) . I^-1 (r x u) = i |r x u|^2, the products not stored.
+          k0 = mA + mB + T[ta]! * (cax * cax + cay * cay + caz * caz) + T[tb]! * (cbx * cbx + cby * cby + cbz * cbz);
+        } else {
+          const iax = T[ta]! * cax + T[ta + 3]! * cay + T[ta + 4]! * caz, iay = T[ta + 3]! * cax + T[ta + 1]! * cay + T[ta + 5]! * caz, iaz = T[ta + 4]! * cax + T[ta + 5]! * cay + T[ta + 2]! * caz;
+          const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
+          J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz;
+          k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
+        }
         const eff = k0 > 0 ? 1 / k0 : 0;
         if (d === 0) buf.mn[q] = eff; else if (d === 1) buf.mt1[q] = eff; else buf.mt2[q] = eff;
       }
