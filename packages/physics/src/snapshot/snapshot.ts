@@ -134,11 +134,12 @@ const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) =>
 
 /**
  * Length of `a`'s first `end` elements up to the last one whose bits are not all zero (so -0 and NaN
- * count as values). Reads the bytes as 32-bit words, eight OR-ed a step from the end (`zeroTail`), the
- * bytes past the last whole word and within the last non-zero word by their bits. Only small integers
- * are read, so the scan never allocates, even before it is optimised or after a deoptimisation (the
- * 64-bit BigInt64Array reads used before allocate a BigInt per read there: in a 100,000-ball world a
- * deoptimisation loop made them most of a snapshot's time, and the garbage a third more).
+ * count as values). The trailing zeros are found by `zeroTail64` (64-bit words; BigInt64Array
+ * compares compile without allocating, about twice as fast as OR-ing 32-bit words here) or
+ * `zeroTail32` as the array's alignment allows; the bytes past the last whole word and within the last
+ * non-zero word are judged by their bits. Each scan loop is a small function of its own that every call
+ * runs, so it never lacks type feedback when optimised (one scan with all the branches inline fell into
+ * a deoptimisation loop in a 100,000-ball world, and unoptimised BigInt reads allocate).
  */
 function usedLength(a: TypedArray, end: number): number {
   const bytes = a.BYTES_PER_ELEMENT;
@@ -154,21 +155,34 @@ function usedLength(a: TypedArray, end: number): number {
     const tail = new Uint8Array(a.buffer, a.byteOffset + whole, total - whole);
     for (let k = tail.length - 1; k >= 0; k--) if (tail[k] !== 0) return Math.ceil((whole + k + 1) / bytes);
   }
-  const words = zeroTail(new Int32Array(a.buffer, a.byteOffset, whole >> 2), whole >> 2);
-  let used = words * 4; // bytes
-  if (bytes < 4 && words > 0) {
+  let used: number; // bytes
+  if ((a.byteOffset & 7) === 0) {
+    const w8 = whole & ~7;
+    used = w8 !== whole && new Int32Array(a.buffer, a.byteOffset + w8, 1)[0] !== 0 ? whole
+      : 8 * zeroTail64(new BigInt64Array(a.buffer, a.byteOffset, w8 >> 3), w8 >> 3);
+  } else {
+    used = 4 * zeroTail32(new Int32Array(a.buffer, a.byteOffset, whole >> 2), whole >> 2);
+  }
+  if (bytes < 8 && used > 0) {
     // Smaller elements: up to the last non-zero byte of the last non-zero word (else a store of one
     // repeated value would gain a 0 and lose its repeat encoding).
-    const last = new Uint8Array(a.buffer, a.byteOffset + used - 4, 4);
-    let k = 4;
-    while (last[k - 1] === 0) k--;
-    used += k - 4;
+    const k0 = Math.min(8, used);
+    const last = new Uint8Array(a.buffer, a.byteOffset + used - k0, k0);
+    let k = k0;
+    while (k > 1 && last[k - 1] === 0) k--;
+    used -= k0 - k;
   }
   return Math.ceil(used / bytes);
 }
 
-/** How many of the first `n` words of `w` remain when its trailing zero words are dropped (eight OR-ed a step, then one). */
-function zeroTail(w: Int32Array, n: number): number {
+/** How many of the first `n` 64-bit words of `w` remain when its trailing zero words are dropped. */
+function zeroTail64(w: BigInt64Array, n: number): number {
+  while (n > 0 && w[n - 1] === 0n) n--;
+  return n;
+}
+
+/** How many of the first `n` 32-bit words of `w` remain when its trailing zero words are dropped (eight OR-ed a step, then one). */
+function zeroTail32(w: Int32Array, n: number): number {
   while (n >= 8 && (w[n - 1]! | w[n - 2]! | w[n - 3]! | w[n - 4]! | w[n - 5]! | w[n - 6]! | w[n - 7]! | w[n - 8]!) === 0) n -= 8;
   while (n > 0 && w[n - 1] === 0) n--;
   return n;
@@ -176,9 +190,8 @@ function zeroTail(w: Int32Array, n: number): number {
 
 /**
  * Whether elements 1 .. n-1 of `a` have the same bits (and are not NaN, whose payload a fill could
- * change). Compares 32-bit words XOR-ed against the pattern (a 4-byte element's word, or an 8-byte
- * element's two) and OR-ed four at a time; never allocates (see usedLength). Arrays of 1- and 2-byte
- * elements are not checked (false).
+ * change). Compares 32-bit words XOR-ed against the pattern and OR-ed four at a time, or 64-bit words
+ * (see usedLength). Arrays of 1- and 2-byte elements are not checked (false).
  */
 function uniformFrom1(a: TypedArray, n: number): boolean {
   const bytes = a.BYTES_PER_ELEMENT;
@@ -193,12 +206,20 @@ function uniformFrom1(a: TypedArray, n: number): boolean {
     for (; i < n; i++) if (words[i] !== w) return false;
     return true;
   }
-  // 8-byte elements: element k is words 2k and 2k + 1.
+  // 8-byte elements: as 64-bit words where aligned (see usedLength), else element k is words 2k and 2k + 1.
+  if ((a.byteOffset & 7) === 0) return sameFrom64(new BigInt64Array(a.buffer, a.byteOffset, n), n);
   const lo = words[2]!, hi = words[3]!;
   const m = 2 * n;
   let i = 4;
   for (; i + 4 <= m; i += 4) if (((words[i]! ^ lo) | (words[i + 1]! ^ hi) | (words[i + 2]! ^ lo) | (words[i + 3]! ^ hi)) !== 0) return false;
   for (; i < m; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
+  return true;
+}
+
+/** Whether 64-bit words 2 .. n-1 of `w` equal word 1. */
+function sameFrom64(w: BigInt64Array, n: number): boolean {
+  const first = w[1]!;
+  for (let i = 2; i < n; i++) if (w[i] !== first) return false;
   return true;
 }
 
