@@ -357,8 +357,9 @@ function containInBoundary(world: PhysicsWorld): void {
   const P = c.Position, V = c.Velocity, radius = c.Ball.radius, eM = c.Material.restitution;
   const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
   const dims = world.dimensions;
-  const pos = [P.x, P.y, P.z], vel = [V.x, V.y, V.z];
   const g = world.gravity;
+  if (dims === 2) { containInBox2D(world); return; }
+  const pos = [P.x, P.y, P.z], vel = [V.x, V.y, V.z];
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
@@ -384,6 +385,50 @@ function containInBoundary(world: PhysicsWorld): void {
       for (let d = 0; d < dims; d++) v2 += vel[d]![e]! * vel[d]![e]!;
       const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
       for (let d = 0; d < dims; d++) vel[d]![e] = vel[d]![e]! * f;
+    }
+  }
+}
+
+/**
+ * containInBoundary of a 2D world: the same arithmetic in the same order (x then y, then the kinetic
+ * energy that pays for the potential energy gained), without the per-dimension arrays.
+ */
+function containInBox2D(world: PhysicsWorld): void {
+  const cs = world.collision;
+  const box = cs.boundary;
+  const c = world.components;
+  const px = c.Position.x, py = c.Position.y, vx = c.Velocity.x, vy = c.Velocity.y;
+  const radius = c.Ball.radius, eM = c.Material.restitution;
+  const list = cs.solverBodies, count = cs.solverBodyCount, type = cs.bodyType;
+  const gx = world.gravity[0]!, gy = world.gravity[1]!;
+  const x0 = box.min[0]!, x1 = box.max[0]!, y0 = box.min[1]!, y1 = box.max[1]!, eBox = box.restitution;
+  for (let k = 1; k < count; k++) {
+    const e = list[k]!;
+    if (type[e] !== BodyType.Dynamic) continue;
+    const r = radius[e]!;
+    const xlo = x0 + r, xhi = x1 - r, ylo = y0 + r, yhi = y1 - r;
+    const x = px[e]!, y = py[e]!;
+    // Most bodies are inside: nothing to do.
+    if (x >= xlo && x <= xhi && y >= ylo && y <= yhi) continue;
+    let gain = 0;
+    if (x < xlo && xlo <= xhi) {
+      px[e] = xlo; gain -= gx * (xlo - x);
+      if (vx[e]! < 0) vx[e] = -Math.max(eBox, eM[e]!) * vx[e]!;
+    } else if (x > xhi && xlo <= xhi) {
+      px[e] = xhi; gain -= gx * (xhi - x);
+      if (vx[e]! > 0) vx[e] = -Math.max(eBox, eM[e]!) * vx[e]!;
+    }
+    if (y < ylo && ylo <= yhi) {
+      py[e] = ylo; gain -= gy * (ylo - y);
+      if (vy[e]! < 0) vy[e] = -Math.max(eBox, eM[e]!) * vy[e]!;
+    } else if (y > yhi && ylo <= yhi) {
+      py[e] = yhi; gain -= gy * (yhi - y);
+      if (vy[e]! > 0) vy[e] = -Math.max(eBox, eM[e]!) * vy[e]!;
+    }
+    if (gain > 0) {
+      const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]!;
+      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
+      vx[e] = vx[e]! * f; vy[e] = vy[e]! * f;
     }
   }
 }
@@ -771,7 +816,7 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   const S = stride(world), is2D = S === 8, im = is2D ? 5 : 9;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz;
   const NM = buf.normalMass, E = buf.restitution, RV = buf.relativeVelocity, IV = buf.impactVelocity;
-  const MAXN = buf.maxNormalImpulse, TOT = buf.totalNormalImpulse;
+  const MAXN = buf.maxNormalImpulse, TOT = buf.totalNormalImpulse, IMP = buf.impulse;
   // Reuse relativeVelocity as the target speed, maxNormalImpulse as the rebound's accumulated impulse
   // and totalNormalImpulse as its cap (all spent by now); a negative target marks a contact that
   // takes no part. A contact that closed its gap only in the last substep may still be approaching:
@@ -807,7 +852,7 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       const dl = acc - old;
       if (dl === 0) continue;
       MAXN[i] = acc;
-      buf.impulse[i] = buf.impulse[i]! + dl;
+      IMP[i] = IMP[i]! + dl;
       const ka = sb[a + im]! * dl, kb = sb[b + im]! * dl;
       sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
       sb[b] = sb[b]! + kb * nx; sb[b + 1] = sb[b + 1]! + kb * ny;
