@@ -154,20 +154,21 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
 
 /**
  * The restitution stage of a 2D world whose substeps ran by colours (applyRestitution in solver.ts, with
- * its sequential passes visiting the rows colour by colour), thread `part` of plan[3].
- * First, per row (rows split in ranges over the threads, each row on its own as in solver.ts): a row
- * that carried no impulse takes no part (target -1); one that approached faster than its threshold gets
- * the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0. Then, if any row
- * bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the rows of a colour
- * share no movable body, so each colour is split over the threads, which meet at a barrier after it
- * (the overflow colour on thread 0 alone).
- * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 3
- * threads, 4 colours C, 8 .. 9 + C the colours' first rows), 2 barrier (Int32: 0 arrived, 1 generation,
- * 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32), 6 nx, 7 ny, 8 normalMass,
- * 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12 maxNormalImpulse, 13 totalNormalImpulse,
- * 14 impulse. P: 0 contact rows, 1 restitutionThreshold (m/s), 2 elasticRestitutionThreshold (m/s),
- * 3 restitutionIterations, 4 the calling thread may block in Atomics.wait (1). Returns 0 (-1 if another
- * thread failed and this one stopped).
+ * its sequential passes visiting the rows colour by colour), run by every thread of the pool at once
+ * (or by one thread alone). First, per row (blocks of 1,024 rows, each row on its own as in solver.ts):
+ * a row that carried no impulse takes no part (target -1); one that approached faster than its
+ * threshold gets the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0.
+ * Then, if any row bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the rows
+ * of a colour share no movable body, so its blocks (256 rows; the overflow colour one block) may go to
+ * any thread. Threads claim blocks in order from one counter and start a unit (the first stage, or a
+ * colour of a pass) once every block of the earlier units is done, as solveColored2D.
+ * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 4
+ * colours C, 8 .. 9 + C the colours' first rows), 2 counters (Int32, 0 on entry: 0 blocks claimed,
+ * 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32), 6 nx, 7 ny,
+ * 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12 maxNormalImpulse,
+ * 13 totalNormalImpulse, 14 impulse. P: 0 contact rows, 1 restitutionThreshold (m/s), 2
+ * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
+ * Atomics.wait (1). Returns 0 (-1 if another thread failed and this one stopped).
  */
 export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
   const pk = A[0] as Float64Array, plan = A[1] as Int32Array, bar = A[2] as Int32Array, sb = A[3] as Float64Array;
@@ -175,82 +176,91 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
   const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
   const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
   const n = P[0]!, threshold = P[1]!, elasticThreshold = P[2]!, iterations = P[3]!;
-  const T = plan[3]!, C = plan[4]!;
+  const C = plan[4]!;
   const wait = part !== 0 || P[4] === 1;
-  let failed = false;
-  // Stage 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
+  const FIRST = 1024, ROWS = 256;
+  // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
-  outer:
+  let base = 0, failed = false;
+  let b = Atomics.add(bar, 0, 1);
   for (let u = 0; u < units; u++) {
-    // A colour without rows (the overflow colour, usually) needs no pass and no barrier.
-    if (u > 0 && plan[9 + (u - 1) % (C + 1)] === plan[8 + (u - 1) % (C + 1)]) continue;
-    try {
-      if (u === 0) {
-        const lo = Math.floor((n * part) / T), hi = Math.floor((n * (part + 1)) / T);
-        let bouncing = 0;
-        for (let i = lo; i < hi; i++) {
-          const e = E[i]!;
-          if (MAXN[i] === 0) { RV[i] = -1; continue; }
-          MAXN[i] = 0;
-          if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
-            RV[i] = -e * IV[i]!;
-            const a = IA[i]! * 8, b = IB[i]! * 8;
-            const vn = (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
-            const stop = vn < 0 ? -NM[i]! * vn : 0;
-            TOT[i] = stop + e * (TOT[i]! + stop);
-            bouncing++;
-          } else RV[i] = 0;
-        }
-        if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-      } else {
-        const c = (u - 1) % (C + 1);
-        const first = plan[8 + c]!, last = plan[9 + c]!, len = last - first;
-        const r0 = c === C ? (part === 0 ? first : last) : first + Math.floor((len * part) / T);
-        const r1 = c === C ? last : first + Math.floor((len * (part + 1)) / T);
-        for (let k = r0; k < r1; k++) {
-          const o = k * 16;
-          const i = pk[o + 15]!;
-          const target = RV[i]!;
-          if (target < 0) continue;
-          const a = pk[o]!, b = pk[o + 1]!;
-          const nx = pk[o + 2]!, ny = pk[o + 3]!;
-          const vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny;
-          const old = MAXN[i]!;
-          let acc = old - pk[o + 7]! * (vn - target);
-          if (acc < 0) acc = 0;
-          if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
-          const dl = acc - old;
-          if (dl === 0) continue;
-          MAXN[i] = acc;
-          IMP[i] = IMP[i]! + dl;
-          const ka = sb[a + 5]! * dl, kb = sb[b + 5]! * dl;
-          sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
-          sb[b] = sb[b]! + kb * nx; sb[b + 1] = sb[b + 1]! + kb * ny;
-        }
+    const c = u === 0 ? -1 : (u - 1) % (C + 1);
+    const first = c < 0 ? 0 : plan[8 + c]!, last = c < 0 ? n : plan[9 + c]!;
+    const count = c < 0 ? Math.ceil(n / FIRST) : c === C ? (last > first ? 1 : 0) : Math.ceil((last - first) / ROWS);
+    const end = base + count;
+    // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
+    if (u === 1) {
+      let spins = 0;
+      for (;;) {
+        const done = Atomics.load(bar, 1);
+        if (done >= base) break;
+        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
+        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
       }
-    } catch (e) {
-      Atomics.store(bar, 2, 1);
-      Atomics.add(bar, 1, 1);
-      Atomics.notify(bar, 1);
-      throw e;
+      if (failed || Atomics.load(bar, 3) === 0) break;
     }
-    if (T > 1) {
-      if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
-      const gen = Atomics.load(bar, 1);
-      if (Atomics.add(bar, 0, 1) === T - 1) {
-        Atomics.store(bar, 0, 0);
-        Atomics.add(bar, 1, 1);
+    while (b < end) {
+      let spins = 0;
+      for (;;) {
+        const done = Atomics.load(bar, 1);
+        if (done >= base) break;
+        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
+        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
+      }
+      if (failed) break;
+      const blk = b - base;
+      try {
+        if (c < 0) {
+          const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
+          let bouncing = 0;
+          for (let i = lo; i < hi; i++) {
+            const e = E[i]!;
+            if (MAXN[i] === 0) { RV[i] = -1; continue; }
+            MAXN[i] = 0;
+            if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
+              RV[i] = -e * IV[i]!;
+              const a = IA[i]! * 8, bb = IB[i]! * 8;
+              const vn = (sb[bb]! - sb[a]!) * NX[i]! + (sb[bb + 1]! - sb[a + 1]!) * NY[i]!;
+              const stop = vn < 0 ? -NM[i]! * vn : 0;
+              TOT[i] = stop + e * (TOT[i]! + stop);
+              bouncing++;
+            } else RV[i] = 0;
+          }
+          if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+        } else {
+          const r0 = c === C ? first : first + blk * ROWS;
+          const r1 = c === C ? last : Math.min(last, r0 + ROWS);
+          for (let k = r0; k < r1; k++) {
+            const o = k * 16;
+            const i = pk[o + 15]!;
+            const target = RV[i]!;
+            if (target < 0) continue;
+            const a = pk[o]!, bb = pk[o + 1]!;
+            const nx = pk[o + 2]!, ny = pk[o + 3]!;
+            const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
+            const old = MAXN[i]!;
+            let acc = old - pk[o + 7]! * (vn - target);
+            if (acc < 0) acc = 0;
+            if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
+            const dl = acc - old;
+            if (dl === 0) continue;
+            MAXN[i] = acc;
+            IMP[i] = IMP[i]! + dl;
+            const ka = sb[a + 5]! * dl, kb = sb[bb + 5]! * dl;
+            sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
+            sb[bb] = sb[bb]! + kb * nx; sb[bb + 1] = sb[bb + 1]! + kb * ny;
+          }
+        }
+      } catch (e) {
+        Atomics.store(bar, 2, 1);
         Atomics.notify(bar, 1);
-      } else {
-        let spins = 0;
-        while (Atomics.load(bar, 1) === gen && Atomics.load(bar, 2) === 0) {
-          if (++spins > 200 && wait) Atomics.wait(bar, 1, gen, 50);
-        }
+        throw e;
       }
-      if (Atomics.load(bar, 2) !== 0) { failed = true; break outer; }
+      if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+      b = Atomics.add(bar, 0, 1);
     }
-    // No row bounces: no passes (every thread reads the count after the barrier).
-    if (u === 0 && Atomics.load(bar, 3) === 0) break;
+    if (failed) break;
+    base = end;
   }
   return failed ? -1 : 0;
 }

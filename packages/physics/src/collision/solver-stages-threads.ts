@@ -227,7 +227,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const site = 'contactSolverSystem#restitution';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
-  bar[0] = 0; bar[2] = 0; bar[3] = 0;
+  bar[0] = 0; bar[1] = 0; bar[2] = 0; bar[3] = 0;
   if (parallel) {
     plan[3] = pool.threads;
     pool.run('contactSolverSystem', KERNEL.restitutionColored2D, A, P, pool.threads, null);
