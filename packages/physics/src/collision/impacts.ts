@@ -61,7 +61,6 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const gh = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h;
   // Slower approaches are resting contacts (what gravity adds in two steps), left to the substeps.
   const resting = 2 * gh;
-  const gravity = gh > 0;
   const S0 = buf.separation, RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
@@ -72,7 +71,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   // marks them -1 until the passes are done.
   const imp = cs.bodyImpact, IA = buf.ia, IB = buf.ib;
   for (let i = 0; i < n; i++) {
-    if (!carriesLoad(buf, i, h, gravity)) continue;
+    if (!carriesLoad(buf, i, h, g)) continue;
     if (IA[i] !== 0) imp[IA[i]! * IMPACT_STRIDE + 3] = -1;
     imp[IB[i]! * IMPACT_STRIDE + 3] = -1;
   }
@@ -106,7 +105,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     }
     if (applied === 0) break;
   }
-  separateImpactedBodies(world, buf, S, gravity);
+  separateImpactedBodies(world, buf, S);
 }
 
 /**
@@ -132,7 +131,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  * at the end of the step is then the true one (a clean body beside an unclean one no longer ends
  * inside it: the elastic pile's worst one-step energy rise went from 3.9e-4 to 7e-8 of the total).
  */
-function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number, gravity: boolean): void {
+function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number): void {
   const cs = world.collision;
   const imp = cs.bodyImpact, key = cs.impactKey;
   const count = cs.solverBodyCount;
@@ -159,7 +158,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const act = cs.impactOrder;
   for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
   for (let i = 0; i < n; i++) {
-    if (S0[i]! <= 0 && carriesLoad(buf, i, h, gravity)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
+    if (S0[i]! <= 0 && carriesLoad(buf, i, h, world.gravity)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
   }
   imp[4] = 1;
   for (let i = 0; i < n; i++) {
@@ -175,7 +174,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
       active = contactState(world, buf, i, S);
       if (active) key[i] = 0;
     } else if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-      active = ballsMeet(world, buf, i, S, h, gravity);
+      active = ballsMeet(world, buf, i, S, h);
     } else {
       active = faceMeets(world, buf, i, S);
     }
@@ -243,6 +242,9 @@ const LOAD_FLOOR = 1e-9;
  */
 const ROUNDING = 1e-12;
 
+/** A row whose normal is within LEVEL (rad, small) of perpendicular to gravity is level: |n . g| <= LEVEL |g| (see carriesLoad). */
+const LEVEL = 1e-9;
+
 /**
  * Whether contact i carried a load last step (a warm-started row: a body resting in a pile or on the
  * floor, or pressed by a joint), which keeps its bodies out of the impact stage. A load counts when
@@ -251,27 +253,35 @@ const ROUNDING = 1e-12;
  * - without gravity (`gravity` false), always: nothing rests there; counting such a push kept both
  *   balls of two touching movers out of the impact stage, and a Newton's cradle hit by them lost 15
  *   to 30 % of its energy at some phases of the step (issue 13);
- * - under gravity, only if the row also touches to rounding (|s0| <= ROUNDING (ra + rb)) and its bodies
- *   do not move relative to each other along the normal (|v_n| h <= ROUNDING (ra + rb), v_n at the start
- *   of the step): exactly touching balls at rest relative to each other, as a hanging Newton's cradle's
- *   or the lifted balls swinging together. Counting their rounding-level loads left the whole chain to
- *   the soft substeps at some lift angles (two or three of 4 to 8 balls lifted: the balls behind the
- *   first hit left too, the far ones at 0.3 to 0.8 of the entering speed). Other rounding-level loads
- *   still count under gravity: a pile's rows carry such loads as balls land (1e-18 to 1e-15 N s, on rows
- *   a little apart or moving), and not counting those changed how an 800-ball pile of balls-in-box
- *   settles (fastest ball 0.57 m/s after 300 steps instead of 0.002, at rest from step 363 instead of
- *   291; over seeds 1 to 8 at rest at least 10 steps later on average, one not by step 400;
- *   test/physics/threads-contact-colors.test.ts asks for under 0.1 m/s at step 300).
+ * - under gravity (`g` the world's gravity, m/s^2), only on a ball-ball row that touches to rounding
+ *   (|s0| <= ROUNDING (ra + rb)), whose bodies do not move relative to each other along the normal
+ *   (|v_n| h <= ROUNDING (ra + rb), v_n at the start of the step) and whose normal is level (gravity
+ *   cannot press it: |n . g| <= LEVEL |g|): exactly touching balls side by side at rest relative to
+ *   each other, as a hanging Newton's cradle's or the lifted balls swinging together. Counting their
+ *   rounding-level loads left the whole chain to the soft substeps at some lift angles (two or three of
+ *   4 to 8 balls lifted: the balls behind the first hit left too, the far ones at 0.3 to 0.8 of the
+ *   entering speed). Other rounding-level loads still count under gravity: a pile's rows carry such
+ *   loads as balls land (1e-18 to 1e-15 N s, on rows a little apart or moving), and not counting those
+ *   changed how an 800-ball pile of balls-in-box settles (fastest ball 0.57 m/s after 300 steps instead
+ *   of 0.002, at rest from step 363 instead of 291; over seeds 1 to 8 at rest at least 10 steps later
+ *   on average, one not by step 400; test/physics/threads-contact-colors.test.ts asks for under 0.1 m/s
+ *   at step 300). So do boundary walls and oblique rows: balls put exactly onto a side wall slide down
+ *   it with such loads, and not counting those (or one oblique ball-ball row) raised the 2,000-ball
+ *   pile's worst one-step energy rise from 4.8e-7 to 4.4e-6 of the total (test/physics/pile.test.ts
+ *   bounds it at 1e-6).
  * A row with m_eff = 0 counts whenever LN > 0.
  */
-function carriesLoad(buf: ContactBuffer, i: number, h: number, gravity: boolean): boolean {
+function carriesLoad(buf: ContactBuffer, i: number, h: number, g: ArrayLike<number>): boolean {
   const ln = buf.normalImpulse[i]!;
   if (!(ln > 0)) return false;
   const len = buf.ra[i]! + buf.rb[i]!;
   if (ln * h > LOAD_FLOOR * len * buf.normalMass[i]!) return true;
-  if (!gravity) return false;
+  const g2 = g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!;
+  if (!(g2 > 0)) return false;
+  if (buf.kind[i] !== ContactKind.Ball) return true;
   const tiny = ROUNDING * len;
-  return !(Math.abs(buf.separation[i]!) <= tiny && Math.abs(buf.relativeVelocity[i]!) * h <= tiny);
+  const gn = g[0]! * buf.nx[i]! + g[1]! * buf.ny[i]! + g[2]! * buf.nz[i]!;
+  return !(Math.abs(buf.separation[i]!) <= tiny && Math.abs(buf.relativeVelocity[i]!) * h <= tiny && gn * gn <= LEVEL * LEVEL * g2);
 }
 
 /** Marks solver body k unclean (slot 4 = 0) and drops its end-position corrections; the static world stays clean. */
@@ -318,7 +328,7 @@ function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number
  * the relative acceleration of gravity refined once. The path before t0 is not the bodies' (the
  * position corrections make x0 + dx + v t exact only after the latest impact), so it is not swept.
  */
-function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number, gravity: boolean): boolean {
+function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number): boolean {
   const cs = world.collision;
   const c = world.components;
   const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
@@ -337,7 +347,7 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   if (still && s0 <= 0) {
     // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
     // rounding-level length within the step), or gravity presses it.
-    if (carriesLoad(buf, i, world.h, gravity) || s0 < -1e-6 * R) return true;
+    if (carriesLoad(buf, i, world.h, g) || s0 < -1e-6 * R) return true;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
