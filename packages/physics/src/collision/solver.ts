@@ -700,6 +700,8 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny;
     const oldN = LN[i]!;
+    // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse below is 0).
+    if (s > 0 && oldN === 0 && vn + bias >= 0 && LT[i] === 0) continue;
     let lambda = -NM[i]! * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
