@@ -15,7 +15,7 @@ import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { GAS_DEFAULTS, MOLECULE_MASS, buildGas, gasWorldOptions, maxwellBoltzmann2D, type GasHandles } from './scene';
+import { GAS_DEFAULTS, MOLECULE_MASS, buildGas, gasWorldOptions, maxwellBoltzmann2D, measureSpeeds, type GasHandles } from './scene';
 
 const USAGE = 'Accepted: count 10-2000; speed 0.1-10 m/s; radius 0.02-0.3 m.';
 const url = readUrlParams(() => ({
@@ -46,18 +46,11 @@ function createWorld(): PhysicsWorld {
 
 /** Temperature and speed histogram of the molecules now. */
 function measure(world: PhysicsWorld): void {
-  const V = world.components.Velocity;
   const ke = kineticEnergy(world);
-  gas.kT = ke / handles.molecules.length;
   gas.energyRatio = gas.kinetic0 > 0 ? ke / gas.kinetic0 : 1;
-  // Bins up to four times the most probable speed sqrt(kT / m).
-  gas.binWidth = (4 * Math.sqrt(gas.kT / MOLECULE_MASS)) / BINS;
-  gas.counts.fill(0);
-  for (const e of handles.molecules) {
-    const s = slotOf(e);
-    const k = Math.floor(Math.hypot(V.x[s]!, V.y[s]!) / gas.binWidth);
-    if (k < BINS) gas.counts[k]!++;
-  }
+  const { kT, binWidth } = measureSpeeds(world, handles.molecules, gas.counts);
+  gas.kT = kT;
+  gas.binWidth = binWidth;
 }
 
 function labStep(world: PhysicsWorld): void {

@@ -5,7 +5,7 @@
  * Maxwell-Boltzmann distribution f(v) = (m v / kT) exp(-m v^2 / (2 kT)), with kT the mean kinetic
  * energy per disc (equipartition over two degrees of freedom). A pure, deterministic builder; no DOM.
  */
-import { Rng, addBody, setBoundary, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import { Rng, addBody, setBoundary, slotOf, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
 
 /** Options of the scene; every field optional. */
 export interface GasOptions {
@@ -65,7 +65,47 @@ export function buildGas(world: PhysicsWorld, options: GasOptions = {}): GasHand
   return { molecules, width, height, params };
 }
 
-/** The 2D Maxwell-Boltzmann speed density at v (m/s) for kT (J) and mass m (kg), 1/(m/s). */
+/**
+ * The 2D Maxwell-Boltzmann speed density at v (m/s, >= 0) for kT (J, > 0) and mass m (kg, > 0), in
+ * 1/(m/s): f(v) = (m v / kT) exp(-m v^2 / (2 kT)) (a Rayleigh density of scale sqrt(kT / m)). It
+ * integrates to 1 over v >= 0, peaks at the most probable speed sqrt(kT / m), and has mean speed
+ * sqrt(pi kT / (2 m)). No checks: NaN or Infinity for kT <= 0.
+ */
 export function maxwellBoltzmann2D(v: number, kT: number, m = MOLECULE_MASS): number {
   return ((m * v) / kT) * Math.exp((-m * v * v) / (2 * kT));
+}
+
+/** What {@link measureSpeeds} returns besides the counts. */
+export interface SpeedMeasure {
+  /** Temperature as energy, J: mean translational kinetic energy per molecule, m <v^2> / 2 (equipartition over two degrees of freedom). */
+  kT: number;
+  /** Width of one histogram bin, m/s: 4 sqrt(kT / m) / counts.length (the bins reach four times the most probable speed). */
+  binWidth: number;
+}
+
+/**
+ * The lab's temperature and speed histogram now: kT from the molecules' velocities and, in `counts`
+ * (overwritten), how many molecules have a speed in each bin [k w, (k + 1) w), w = `binWidth`;
+ * speeds of 4 sqrt(kT / m) and above (a fraction exp(-8) = 3.4e-4 of a Maxwell-Boltzmann gas) are
+ * not counted. The page draws these counts against N w f(v), f = {@link maxwellBoltzmann2D}.
+ * @throws RangeError if `molecules` is empty or `counts` has no bins.
+ */
+export function measureSpeeds(world: PhysicsWorld, molecules: readonly number[], counts: Float64Array, m = MOLECULE_MASS): SpeedMeasure {
+  if (molecules.length === 0) throw new RangeError('measureSpeeds: molecules must not be empty');
+  if (counts.length === 0) throw new RangeError('measureSpeeds: counts must have at least one bin, got length 0');
+  const V = world.components.Velocity;
+  let v2 = 0;
+  for (const e of molecules) {
+    const s = slotOf(e);
+    v2 += V.x[s]! * V.x[s]! + V.y[s]! * V.y[s]!;
+  }
+  const kT = (0.5 * m * v2) / molecules.length;
+  const binWidth = (4 * Math.sqrt(kT / m)) / counts.length;
+  counts.fill(0);
+  for (const e of molecules) {
+    const s = slotOf(e);
+    const k = Math.floor(Math.hypot(V.x[s]!, V.y[s]!) / binWidth);
+    if (k < counts.length) counts[k]!++;
+  }
+  return { kT, binWidth };
 }
