@@ -3,7 +3,7 @@
  * top, dominoes topple in order, the stack of ten stands.
  */
 import { describe, expect, it } from 'vitest';
-import { createPhysicsWorld, step } from '@bitphysics/physics';
+import { createPhysicsWorld, joints3DOf, step, type PhysicsWorld } from '@bitphysics/physics';
 import { buildLab, hasToppled, labWorldOptions, topAxis, topHeading } from '../../games/lab-rigid-3d/scene';
 
 describe('lab-rigid-3d scenes', () => {
@@ -97,5 +97,59 @@ describe('lab-rigid-3d scenes', () => {
     const x0 = P.x[b]!, y0 = P.y[b]!, z0 = P.z[b]!;
     for (let i = 0; i < 120; i++) step(world);
     expect(Math.hypot(P.x[b]! - x0, P.y[b]! - y0, P.z[b]! - z0)).toBeLessThan(0.02);
+  });
+
+  it('the tumbling box lands on the table and comes to rest flat on its top', () => {
+    const world = createPhysicsWorld(labWorldOptions('tumble'));
+    const h = buildLab(world, 'tumble');
+    const c = world.components, b = h.main;
+    for (let i = 0; i < 240; i++) step(world);
+    // The table's top slab: centre 0.8 m, half thickness 0.04 m, half extents 0.8 x 0.5 m; the box's half extent 0.15 m.
+    const tableTop = 0.8 + 0.04, half = 0.15;
+    // Resting on a face, its centre is half an extent above the top: within 2 mm (the contacts' slop
+    // and soft penetration; measured 0.99000 - 0.98998). On an edge it would be 0.21 m up, on a corner 0.26 m.
+    expect(Math.abs(c.Position.y[b]! - (tableTop + half))).toBeLessThan(2e-3);
+    expect(Math.abs(c.Position.x[b]!)).toBeLessThan(0.8);
+    expect(Math.abs(c.Position.z[b]!)).toBeLessThan(0.5);
+    // At rest (measured 8e-8 m/s at 2 s, then asleep, exactly 0): 1 mm/s and 0.01 rad/s.
+    expect(Math.hypot(c.Velocity.x[b]!, c.Velocity.y[b]!, c.Velocity.z[b]!)).toBeLessThan(1e-3);
+    expect(Math.hypot(c.AngularVelocity.x[b]!, c.AngularVelocity.y[b]!, c.AngularVelocity.z[b]!)).toBeLessThan(1e-2);
+  });
+
+  /** Body-frame vector `l` of body e in the world (position + rotation of l); e 0 is the fixed world. */
+  function worldPoint(world: PhysicsWorld, e: number, l: [number, number, number]): [number, number, number] {
+    if (e === 0) return l;
+    const P = world.components.Position, O = world.components.Orientation;
+    const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+    // v + 2 w (q x v) + 2 q x (q x v)
+    const tx = 2 * (y * l[2] - z * l[1]), ty = 2 * (z * l[0] - x * l[2]), tz = 2 * (x * l[1] - y * l[0]);
+    return [P.x[e]! + l[0] + w * tx + (y * tz - z * ty), P.y[e]! + l[1] + w * ty + (z * tx - x * tz), P.z[e]! + l[2] + w * tz + (x * ty - y * tx)];
+  }
+
+  it('the ragdoll falls down the steps with its joints held together (gaps under 2 cm) and its torso comes to rest', () => {
+    const world = createPhysicsWorld(labWorldOptions('ragdoll'));
+    const h = buildLab(world, 'ragdoll');
+    const c = world.components, s = joints3DOf(world)!;
+    expect(s.list.length).toBe(10);
+    const y0 = c.Position.y[h.main]!;
+    let gap = 0;
+    for (let i = 0; i < 600; i++) {
+      step(world);
+      for (const j of s.list) {
+        const pa = worldPoint(world, s.a[j]!, [s.ax[j]!, s.ay[j]!, s.az[j]!]), pb = worldPoint(world, s.b[j]!, [s.bx[j]!, s.by[j]!, s.bz[j]!]);
+        gap = Math.max(gap, Math.hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]));
+      }
+    }
+    // The joints are soft (they pull the anchors together over a few substeps): the largest gap, in the
+    // landing's first hit, measured 1.18 cm; 2 cm allowed.
+    expect(gap).toBeLessThan(0.02);
+    // It went down: the pelvis more than 1 m below where it started (measured 1.68 m, on the first step).
+    expect(c.Position.y[h.main]!).toBeLessThan(y0 - 1);
+    // No part sank through the floor (the thinnest capsule's radius is 4.5 cm; its centre stays above 3.5 cm).
+    for (const e of h.parts) expect(c.Position.y[e]!).toBeGreaterThan(0.035);
+    // The torso (pelvis and chest) is at rest after 10 s: 1 cm/s (measured 0, asleep; 1.4 mm/s at most
+    // over the last second with sleep off). Not the limbs: the right forearm hangs over the steps' side
+    // and swings on its elbow hinge, which has no damping, at up to 0.45 m/s for as long as measured (25 s).
+    for (const e of h.parts.slice(0, 2)) expect(Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!)).toBeLessThan(0.01);
   });
 });
