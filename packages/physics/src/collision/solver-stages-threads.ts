@@ -40,13 +40,14 @@ import { restitutionColored2D } from './solver-stages-kernel.js';
 
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
- * fewest bodies or contact rows a thread for a stage to go to the threads (integer >= 1; default 4096,
- * as the rows' preparation: below it waking the workers costs about what the threads save); tests
+ * fewest bodies or contact rows a thread for a stage to go to the threads (integer >= 1; default 8192:
+ * these stages do little a body or row, and balls-in-box 5,000 (14,000 rows) measured no faster with
+ * them on 2 threads; 20,000 balls have 20,000 bodies and 55,000 rows); tests
  * lower it to run the kernels on small worlds. `runs`: stages run by a kernel (on the threads, or on
  * one thread where the adaptive pool chose so), `bouncing`: rows the restitution kernel found bouncing,
  * both summed since the process started (for tests and the bench).
  */
-export const stageThreading = { minPerThread: 4096, runs: 0, bouncing: 0 };
+export const stageThreading = { minPerThread: 8192, runs: 0, bouncing: 0 };
 
 /** Per world: the kernels' argument lists and parameters, the deepest-overlap slots. */
 interface StageScratch {
