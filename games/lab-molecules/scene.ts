@@ -69,9 +69,13 @@ export function buildGas(world: PhysicsWorld, options: GasOptions = {}): GasHand
  * The 2D Maxwell-Boltzmann speed density at v (m/s, >= 0) for kT (J, > 0) and mass m (kg, > 0), in
  * 1/(m/s): f(v) = (m v / kT) exp(-m v^2 / (2 kT)) (a Rayleigh density of scale sqrt(kT / m)). It
  * integrates to 1 over v >= 0, peaks at the most probable speed sqrt(kT / m), and has mean speed
- * sqrt(pi kT / (2 m)). No checks: NaN or Infinity for kT <= 0.
+ * sqrt(pi kT / (2 m)).
+ * @throws RangeError if v is not a finite number >= 0, or kT or m not finite and > 0.
  */
 export function maxwellBoltzmann2D(v: number, kT: number, m = MOLECULE_MASS): number {
+  if (!(v >= 0 && v < Infinity)) throw new RangeError(`maxwellBoltzmann2D: v must be a finite speed >= 0 m/s, got ${v}`);
+  if (!(kT > 0 && kT < Infinity)) throw new RangeError(`maxwellBoltzmann2D: kT must be finite and > 0 J, got ${kT}`);
+  if (!(m > 0 && m < Infinity)) throw new RangeError(`maxwellBoltzmann2D: m must be finite and > 0 kg, got ${m}`);
   return ((m * v) / kT) * Math.exp((-m * v * v) / (2 * kT));
 }
 

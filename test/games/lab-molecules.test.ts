@@ -33,6 +33,9 @@ describe('maxwellBoltzmann2D', () => {
       expect(f(vp * (1 + 1e-4))).toBeLessThan(f(vp));
     }
     expect(maxwellBoltzmann2D(0, 1)).toBe(0);
+    expect(() => maxwellBoltzmann2D(-1, 1)).toThrow(/maxwellBoltzmann2D: v/);
+    expect(() => maxwellBoltzmann2D(1, 0)).toThrow(/maxwellBoltzmann2D: kT/);
+    expect(() => maxwellBoltzmann2D(1, 1, Number.NaN)).toThrow(/maxwellBoltzmann2D: m/);
   });
 });
 
