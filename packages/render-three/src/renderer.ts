@@ -138,9 +138,14 @@ export interface Renderer3DStats {
 export interface PickResult {
   /** The entity hit: its handle, for the physics API (index stores with slotOf). */
   eid: number;
-  /** Hit point in world coordinates, m (on the body as drawn). */
+  /**
+   * Hit point in physics world coordinates (the renderer's root frame, scene units / unitsPerMeter), m.
+   * For a body with a collider it is where the physics has the body now (`rayCast3D`; at most one step
+   * from where the last `render` drew it); for a body drawn without a collider it is on its mesh as
+   * drawn by the last `render`. See `pick`.
+   */
   point: [number, number, number];
-  /** Unit surface normal at the hit point, world frame. */
+  /** Unit surface normal at the hit point, world frame (from the same source as `point`). */
   normal: [number, number, number];
   /** Distance from the camera to the hit point, scene units. */
   distance: number;
