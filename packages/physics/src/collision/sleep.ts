@@ -2,6 +2,7 @@ import { addComponent, hasComponent, removeComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { query, Not } from '../query.js';
 import { joinJointIslands, markJointSupport } from '../joints/islands.js';
+import { joinJoint3DIslands, markJoint3DSupport } from '../joints3d/islands.js';
 import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
 import { resolveKind } from '../handles.js';
 import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shape3d-islands.js';
@@ -87,6 +88,11 @@ export function wakeSystem(world: PhysicsWorld): void {
   if (woken) for (const e of woken) wakeIsland(world, e);
 }
 
+/** Wakes the island of every body in `list` (none when null). */
+function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
+  if (list !== null) for (const e of list) wakeIsland(world, e);
+}
+
 /**
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
@@ -112,6 +118,7 @@ export function sleepSystem(world: PhysicsWorld): void {
     supported[rows.a[i]!] = stamp; supported[rows.b[i]!] = stamp;
   }
   markJointSupport(world, supported, stamp);
+  markJoint3DSupport(world, supported, stamp);
   markShapeSupport(world, supported, stamp);
   markShape3DSupport(world, supported, stamp);
   // Whether a body has AngularVelocity, from bitecs' component masks (what hasComponent reads, without
@@ -144,6 +151,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) if (rest[bodies[i]!]! >= T) { candidates++; break; }
   if (candidates === 0) {
     joinJointIslands(world, bodies, rest, parent);
+    wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
     cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
     return;
   }
@@ -162,8 +170,9 @@ export function sleepSystem(world: PhysicsWorld): void {
   // ... over shape contacts ...
   joinShapeIslands(world, parent, find);
   joinShape3DIslands(world, parent, find);
-  // ... and over joints.
+  // ... and over joints (2D and 3D; `supported` is read no more this step, and marks the candidates).
   joinJointIslands(world, bodies, rest, parent);
+  wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
