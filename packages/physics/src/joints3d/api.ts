@@ -510,7 +510,14 @@ function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
   for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
 
-/** The 3D joints broken in the last step, as [joint, a, b, step] (handles; a 0: the world; the step count when it broke). */
+/**
+ * The 3D joints broken in the last step, as [joint, a, b, step] (handles; a 0: the world; the step count
+ * when it broke, world.steps - 1 after that step). Empty when none broke in the last step: a list left
+ * from an earlier step (the solver clears it only when it runs) is cleared here.
+ */
 export function joint3DBreaks(world: PhysicsWorld): number[][] {
-  return joints3DOf(world)?.breaks ?? [];
+  const s = joints3DOf(world);
+  if (s === undefined) return [];
+  if (s.breaks.length > 0 && s.breaks[0]![3] !== world.steps - 1) s.breaks.length = 0;
+  return s.breaks;
 }
