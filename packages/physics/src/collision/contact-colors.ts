@@ -32,8 +32,11 @@ import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
 
-/** Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same contents). */
-function shareBuffer(buf: ContactBuffer): void {
+/**
+ * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
+ * contents), so the pool's workers can read and write it (the solver and its threaded stages).
+ */
+export function shareContactBuffer(buf: ContactBuffer): void {
   const rec = buf as unknown as Record<string, unknown>;
   for (const key of Object.keys(rec)) {
     const a = rec[key];
@@ -219,7 +222,7 @@ export function solveColoredSubsteps(
   const cs = world.collision, pool = world.threadPool!;
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
-  shareBuffer(buf);
+  shareContactBuffer(buf);
   const np = colorRows(cs, buf, s, pool.threads);
   const plan = s.plan, P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;

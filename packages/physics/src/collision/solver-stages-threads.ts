@@ -35,7 +35,7 @@ import { isShared, sharedFloat64, sharedLike, type ThreadPool } from '../threads
 import { nowMs } from '../threads/adaptive.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { reportNonFinite } from '../errors.js';
-import { callerMayWait, coloredPlan } from './contact-colors.js';
+import { callerMayWait, coloredPlan, shareContactBuffer } from './contact-colors.js';
 import { restitutionColored2D } from './solver-stages-kernel.js';
 
 /**
@@ -74,15 +74,6 @@ function shared<T extends KernelArray>(a: T): T {
   return copy;
 }
 
-/** Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same contents). */
-function shareBuffer(buf: ContactBuffer): void {
-  const rec = buf as unknown as Record<string, unknown>;
-  for (const key of Object.keys(rec)) {
-    const a = rec[key];
-    if (!ArrayBuffer.isView(a) || a instanceof DataView || isShared(a)) continue;
-    rec[key] = shared(a as KernelArray);
-  }
-}
 
 /** Moves the collision state's per-entity arrays the kernels read onto shared memory. */
 function shareState(cs: CollisionState): void {
@@ -143,7 +134,7 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   const pool = poolFor(world, n);
   if (pool === null) return false;
   const cs = world.collision;
-  shareBuffer(buf);
+  shareContactBuffer(buf);
   shareState(cs);
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;
@@ -170,7 +161,7 @@ export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolea
   if (pool === null) return false;
   const c = world.components;
   shareState(cs);
-  shareBuffer(buf);
+  shareContactBuffer(buf);
   const s = scratch(world), A = s.arrays, P = s.params, out = s.deepest;
   out.fill(0);
   A.length = 0;
@@ -216,7 +207,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const cs = world.collision, pool = world.threadPool;
   const colored = coloredPlan(cs);
   if (pool === null || colored === null || world.dimensions !== 2) return false;
-  shareBuffer(buf);
+  shareContactBuffer(buf);
   const st = cs.settings;
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;

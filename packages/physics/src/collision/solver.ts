@@ -14,7 +14,7 @@ import {
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
-import { solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
+import { shareContactBuffer, solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
 import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
@@ -439,17 +439,6 @@ export const PREPARE_MIN_PER_THREAD = 4096;
 /** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepareOnThreads). */
 const prepareScratch = new WeakMap<PhysicsWorld, { stamp: Uint32Array; arrays: KernelArray[]; params: Float64Array }>();
 
-/** Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same contents). */
-function shareContactBuffer(buf: ContactBuffer): void {
-  const rec = buf as unknown as Record<string, unknown>;
-  for (const key of Object.keys(rec)) {
-    const a = rec[key];
-    if (!ArrayBuffer.isView(a) || a instanceof DataView || isShared(a)) continue;
-    const copy = sharedLike(a as KernelArray, (a as KernelArray).length);
-    copy.set(a as never);
-    rec[key] = copy;
-  }
-}
 
 /**
  * prepareContacts of a 2D world on its threads (kernel prepareContacts2D: each row on its own, the
