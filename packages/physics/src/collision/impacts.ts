@@ -12,6 +12,15 @@ import { joints3DToSolve } from '../joints3d/solver.js';
 export const IMPACT_STRIDE = 5;
 
 /**
+ * Scratch of `applyImpacts` read by `separateImpactedBodies` within the same call: per contact row,
+ * 1 if it carried a load (`carriesLoad`) at the start of the stage, else 0. Not world state.
+ */
+let loadedRows = new Uint8Array(256);
+
+/** Scratch of `separateImpactedBodies`: the indices of the contact rows still inactive, in row order. Not world state. */
+let idleRows = new Int32Array(256);
+
+/**
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of
  * pairwise impacts at their times of impact before the soft substeps run.
  *
@@ -70,30 +79,47 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
   // marks them -1 until the passes are done.
   const imp = cs.bodyImpact, IA = buf.ia, IB = buf.ib;
+  // Each row's carriesLoad at the start of the stage, kept for separateImpactedBodies (1 loaded, 0
+  // not): only an impacted row's normal changes in between, and that one is recomputed there.
+  if (loadedRows.length < n) loadedRows = new Uint8Array(Math.max(n, 2 * loadedRows.length));
+  const loaded = loadedRows;
   for (let i = 0; i < n; i++) {
-    if (!carriesLoad(buf, i, h, g)) continue;
+    if (!carriesLoad(buf, i, h, g)) { loaded[i] = 0; continue; }
+    loaded[i] = 1;
     if (IA[i] !== 0) imp[IA[i]! * IMPACT_STRIDE + 3] = -1;
     imp[IB[i]! * IMPACT_STRIDE + 3] = -1;
   }
-  let m = 0;
+  // One pass picks the candidates: seeds (fast enough) from the front of `order`, the others from its
+  // back (in reverse), then moved behind the seeds in row order.
+  const sb = cs.bodyState;
+  const lim = resting - gh, lim2 = lim * lim, is2D = S === 8;
+  let m = 0, back = n;
   for (let i = 0; i < n; i++) {
     key[i] = 0;
     if (!(E[i]! > 0)) continue;
-    if (imp[IB[i]! * IMPACT_STRIDE + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * IMPACT_STRIDE + 3] === -1)) continue;
-    if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
+    const ia = IA[i]!, ib = IB[i]!;
+    if (imp[ib * IMPACT_STRIDE + 3] === -1 || (ia !== 0 && imp[ia * IMPACT_STRIDE + 3] === -1)) continue;
+    // fastEnough, inline.
+    let fast = true;
+    if (resting !== 0 && lim > 0) {
+      const oa = ia * S, ob = ib * S;
+      const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+      fast = wx * wx + wy * wy + wz * wz > lim2;
+    }
+    if (!fast) { order[--back] = i; continue; }
     const s0 = S0[i]!, rv = RV[i]!;
     key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
     order[m++] = i;
   }
   const seeds = m;
   if (seeds === 0) { imp.fill(0, 0, count * IMPACT_STRIDE); return; }
-  for (let i = 0; i < n; i++) {
-    if (!(E[i]! > 0) || imp[IB[i]! * IMPACT_STRIDE + 3] === -1 || (IA[i] !== 0 && imp[IA[i]! * IMPACT_STRIDE + 3] === -1)) continue;
-    if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) order[m++] = i;
-  }
+  // The others, stored reversed in [back, n): put back in row order, then moved behind the seeds
+  // (copyWithin copies as if through a buffer, so the ranges may overlap).
+  for (let lo = back, hi = n - 1; lo < hi; lo++, hi--) { const t = order[lo]!; order[lo] = order[hi]!; order[hi] = t; }
+  order.copyWithin(seeds, back, n);
+  m += n - back;
   const cand = order.subarray(0, m);
   if (seeds > 1) order.subarray(0, seeds).sort((x, y) => key[x]! - key[y]!);
-  for (let k = seeds; k < m; k++) key[cand[k]!] = 0;
 
   const iterations = st.impactIterations;
   for (let pass = 0; pass < iterations; pass++) {
@@ -157,10 +183,17 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const Q = IMPACT_STRIDE;
   const act = cs.impactOrder;
   for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
+  // carriesLoad from applyImpacts' first pass; an impacted row's normal has changed since, so it is
+  // asked again.
+  const loaded = loadedRows, g = world.gravity;
   for (let i = 0; i < n; i++) {
-    if (S0[i]! <= 0 && carriesLoad(buf, i, h, world.gravity)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
+    if (S0[i]! <= 0 && (key[i] === -1 ? carriesLoad(buf, i, h, g) : loaded[i] === 1)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
   }
   imp[4] = 1;
+  // The rows left inactive, in row order, for the repeated pass below.
+  if (idleRows.length < n) idleRows = new Int32Array(Math.max(n, 2 * idleRows.length));
+  const idle = idleRows;
+  let idleCount = 0;
   for (let i = 0; i < n; i++) {
     if (act[i] === 1) continue;
     const ia = IA[i]!, ib = IB[i]!;
@@ -178,24 +211,26 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     } else {
       active = faceMeets(world, buf, i, S);
     }
-    if (active) { act[i] = 1; if (ia !== 0) imp[ia * Q + 4] = 0; imp[ib * Q + 4] = 0; }
+    if (active) { act[i] = 1; if (ia !== 0) imp[ia * Q + 4] = 0; imp[ib * Q + 4] = 0; } else idle[idleCount++] = i;
   }
   // An unclean body loses its corrections (the substeps move it from where it was at the start of the step).
   for (let k = 1; k < count; k++) if (imp[k * Q + 4] === 0) unclean(imp, k);
   // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
   // of that row could close within the step: the substeps would push it. Repeated until nothing changes.
+  // (Only the inactive rows are visited; a row made active leaves the list, which keeps row order.)
   for (let changed = true; changed;) {
     changed = false;
-    for (let i = 0; i < n; i++) {
-      if (act[i] === 1) continue;
+    let kept = 0;
+    for (let k = 0; k < idleCount; k++) {
+      const i = idle[k]!;
       const ia = IA[i]!, ib = IB[i]!;
       const ca = ia === 0 || imp[ia * Q + 4] === 1, cb = imp[ib * Q + 4] === 1;
-      if (ca === cb) continue;
-      if (!linearCloses(world, buf, i, S, reach)) continue;
+      if (ca === cb || !linearCloses(world, buf, i, S, reach)) { idle[kept++] = i; continue; }
       act[i] = 1;
       unclean(imp, ca ? ia : ib);
       changed = true;
     }
+    idleCount = kept;
   }
   const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, NM = buf.normalMass, TM = buf.tangentMass;
   for (let i = 0; i < n; i++) {
