@@ -48,6 +48,9 @@ test('stores over 64 kB: restore into a world holding other values puts back eve
   const world = build(11_000, (i) => (i < 50 ? 0.5 : 0), 2);
   stepMany(world, 2);
   const saved = snapshot(world);
+  // The entity list 1 .. 11,000 (no removals) is stored as a range, not 44 kB of ids.
+  const lists = (saved.header.ecs as { lists: Array<{ $t: string; first?: number; n?: number }> }).lists;
+  expect(lists.some((l) => l.$t === 'range' && l.first === 1 && l.n === 11_000)).toBe(true);
   // The target: more balls (ids up to 11,500), other masses, every one moving sideways: its stores
   // hold non-zero values in every block past the snapshot's stored parts, and another repeated mass.
   const other = build(11_500, (i) => 0.01 * ((i % 7) + 1), 3);
@@ -60,4 +63,18 @@ test('stores over 64 kB: restore into a world holding other values puts back eve
   stepMany(world, 20);
   stepMany(other, 20);
   expect(stateHash(other)).toBe(stateHash(world));
+});
+
+test('a damaged id range (ids past the capacity) is refused with a RangeError naming the list, the world left as it was', () => {
+  const world = build(100, () => 0, 1);
+  const saved = snapshot(world);
+  const header = JSON.parse(JSON.stringify(saved.header)) as typeof saved.header;
+  const lists = (header.ecs as { lists: Array<{ $t: string; first?: number; n?: number }> }).lists;
+  const range = lists.find((l) => l.$t === 'range')!;
+  expect(range).toBeDefined();
+  range.first = CAPACITY;
+  const target = build(30, () => 1, 2);
+  const before = stateHash(target);
+  expect(() => restore(target, { header, buffers: saved.buffers })).toThrow(/restore: snapshot's ecs\.lists\[\d+\] is damaged/);
+  expect(stateHash(target)).toBe(before); // refused before anything was written
 });

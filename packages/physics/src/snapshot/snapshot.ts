@@ -12,7 +12,8 @@ import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
  * to its last non-zero element only (for a per-entity store that is at most the highest live id; the
  * tail is all zeros and restore writes zeros there), a component store no live entity has is stored as
  * its type and length only, and bitecs' query lists that equal an earlier list (most queries hold the
- * same entities in the same order) as a reference to it (a query list neither of whose sets changed
+ * same entities in the same order) as a reference to it, a list of consecutive ids (1 .. N) as its first
+ * id and length (a query list neither of whose sets changed
  * since the world's last snapshot found them equal is not compared again: lean-ecs.ts counts each
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
  * id down (their entries above it are zero). Scratch arrays (the broadphase grid and the collision
@@ -683,7 +684,10 @@ class IdLists {
       }
     }
     const index = this.lists.length;
-    this.lists.push(js !== null ? this.w.ids(js) : this.w.arrayTo(toInt32(ids), ids.length));
+    // A list of consecutive ids (the entity list of a world without removals: 1 .. N) as its first id
+    // and length, `{ $t: 'range', first, n }`: 0.4 MB less to copy for 100,000 bodies.
+    this.lists.push(js !== null && isRange(js) ? { $t: 'range', first: js[0]!, n: js.length }
+      : js !== null ? this.w.ids(js) : this.w.arrayTo(toInt32(ids), ids.length));
     if (js !== null) this.done.push({ ids: js, index, set });
     if (set !== null && version !== undefined) {
       this.indexOf.set(set, index);
@@ -692,6 +696,46 @@ class IdLists {
     return { $t: 'same', i: index };
   }
 }
+
+/** Whether `list` (at least 64 ids) holds consecutive ids: list[i] = list[0] + i. */
+function isRange(list: readonly number[]): boolean {
+  const n = list.length;
+  if (n < 64) return false;
+  const first = list[0]!;
+  if (list[n - 1] !== first + n - 1) return false;
+  for (let i = 1; i < n; i++) if (list[i] !== first + i) return false;
+  return true;
+}
+
+/**
+ * The id lists of a snapshot's ECS part, each an Int32Array: stored ones are views into the snapshot,
+ * ranges (see IdLists) are views of one shared list of the ids 1, 2, ... (made once: no allocation a restore).
+ * @throws RangeError if a range is damaged (ids must be integers from 1, within the capacity).
+ */
+function readIdLists(encoded: readonly Encoded[], r: Reader, capacity: number): Int32Array[] {
+  return encoded.map((l, i) => {
+    const e = l as Record<string, Encoded>;
+    if (e.$t !== 'range') return r.used(e, `ecs.lists[${i}]`) as Int32Array;
+    checkRange(e, i, capacity);
+    const first = e.first as number, n = e.n as number;
+    // The list 1 .. capacity, made once and shared; a range is a view of it (its ids are never written).
+    if (counting.length < capacity) {
+      counting = new Int32Array(capacity);
+      for (let k = 0; k < capacity; k++) counting[k] = k + 1;
+    }
+    return counting.subarray(first - 1, first - 1 + n);
+  });
+}
+/** @throws RangeError `restore: snapshot's ecs.lists[i] is damaged` unless the range `e` holds integer ids from 1 up to `capacity`. */
+function checkRange(e: Record<string, Encoded>, i: number, capacity: number): void {
+  const first = e.first as number, n = e.n as number;
+  if (!(Number.isInteger(first) && Number.isInteger(n) && first >= 1 && n >= 1 && first + n - 1 <= capacity)) {
+    throw new RangeError(`restore: snapshot's ecs.lists[${i}] is damaged`);
+  }
+}
+
+/** 1, 2, ..., at least the largest capacity restored into so far (see readIdLists). */
+let counting = new Int32Array(0);
 
 function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   const ctx = internals(world);
@@ -780,7 +824,7 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   const ctx = internals(world);
   const ix = ctx.entityIndex;
   const C = world.components as unknown as Record<string, object>;
-  const lists = (ecs.lists as Encoded[]).map((l, i) => r.used(l as Record<string, Encoded>, `ecs.lists[${i}]`) as Int32Array);
+  const lists = readIdLists(ecs.lists as Encoded[], r, world.capacity);
   // Layout: the target's bit of each snapshot component (registering components the target has not seen).
   const layout = ecs.layout as [string, number, number][];
   const srcMasks = (ecs.masks as Encoded[]).map((m, g) => r.used(m as Record<string, Encoded>, `masks[${g}]`) as Int32Array);
@@ -1071,6 +1115,11 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   }
   for (const ext of externalWorldStates()) {
     if (!(ext.name in h.external)) throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
+  }
+  // Id ranges (see IdLists) checked before anything is written.
+  const ecsLists = (h.ecs as Record<string, Encoded> | null)?.lists;
+  if (Array.isArray(ecsLists)) {
+    ecsLists.forEach((l, i) => { if (isTagged(l) && l.$t === 'range') checkRange(l, i, world.capacity); });
   }
   // Stamp counters (see STAMPED): the world's own, before the snapshot's are written.
   const counters = [...STAMPED.values()].map(({ parent, counter }) => parent(world)[counter]);
