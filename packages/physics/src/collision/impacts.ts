@@ -86,8 +86,12 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   for (let i = 0; i < n; i++) {
     if (!carriesLoad(buf, i, h, g)) { loaded[i] = 0; continue; }
     loaded[i] = 1;
-    if (IA[i] !== 0) imp[IA[i]! * IMPACT_STRIDE + 3] = -1;
-    imp[IB[i]! * IMPACT_STRIDE + 3] = -1;
+    const qa = IA[i]! * IMPACT_STRIDE, qb = IB[i]! * IMPACT_STRIDE;
+    if (qa !== 0) imp[qa + 3] = -1;
+    imp[qb + 3] = -1;
+    // A loaded row that starts touching makes its bodies unclean in separateImpactedBodies: marked
+    // here in slot 4 (-1; nothing reads slot 4 before separateImpactedBodies).
+    if (S0[i]! <= 0) { if (qa !== 0) imp[qa + 4] = -1; imp[qb + 4] = -1; }
   }
   // One pass picks the candidates: seeds (fast enough) from the front of `order`, the others from its
   // back (in reverse), then moved behind the seeds in row order.
@@ -131,7 +135,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     }
     if (applied === 0) break;
   }
-  separateImpactedBodies(world, buf, S);
+  separateImpactedBodies(world, buf, S, m);
 }
 
 /**
@@ -157,7 +161,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  * at the end of the step is then the true one (a clean body beside an unclean one no longer ends
  * inside it: the elastic pile's worst one-step energy rise went from 3.9e-4 to 7e-8 of the total).
  */
-function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number): void {
+function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number, candidates: number): void {
   const cs = world.collision;
   const imp = cs.bodyImpact, key = cs.impactKey;
   const count = cs.solverBodyCount;
@@ -182,12 +186,16 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   // faceMeets return true at once). In a resting pile that skips nearly every sweep.
   const Q = IMPACT_STRIDE;
   const act = cs.impactOrder;
-  for (let k = 0; k < count; k++) imp[k * Q + 4] = 1;
-  // carriesLoad from applyImpacts' first pass; an impacted row's normal has changed since, so it is
-  // asked again.
+  // The loaded rows that start touching: carriesLoad from applyImpacts' first pass, whose bodies it
+  // marked -1 in slot 4; an impacted row's normal has changed since, so it is asked again (the
+  // candidates are still at the front of `act`, the order array, until the pass below).
+  for (let k = 0; k < count; k++) imp[k * Q + 4] = imp[k * Q + 4] === -1 ? 0 : 1;
   const loaded = loadedRows, g = world.gravity;
-  for (let i = 0; i < n; i++) {
-    if (S0[i]! <= 0 && (key[i] === -1 ? carriesLoad(buf, i, h, g) : loaded[i] === 1)) { act[i] = 1; imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; } else act[i] = 0;
+  for (let k = 0; k < candidates; k++) {
+    const i = act[k]!;
+    if (key[i] !== -1) continue;
+    loaded[i] = carriesLoad(buf, i, h, g) ? 1 : 0;
+    if (S0[i]! <= 0 && loaded[i] === 1) { imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; }
   }
   imp[4] = 1;
   // The rows left inactive, in row order, for the repeated pass below.
@@ -195,7 +203,8 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const idle = idleRows;
   let idleCount = 0;
   for (let i = 0; i < n; i++) {
-    if (act[i] === 1) continue;
+    if (S0[i]! <= 0 && loaded[i] === 1) { act[i] = 1; continue; }
+    act[i] = 0;
     const ia = IA[i]!, ib = IB[i]!;
     if (imp[ib * Q + 4] === 0 && (ia === 0 || imp[ia * Q + 4] === 0)) { act[i] = 1; continue; }
     const kind = K[i]!;
