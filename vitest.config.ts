@@ -40,6 +40,12 @@ export default defineConfig({
           globalSetup: ['test/browser/global-setup.ts'],
           // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
           hookTimeout: 600_000,
+          // One more try for a failed browser test. Every page shares one software-rendered GPU
+          // process (SwiftShader); after a heavy page it can lag for tens of seconds, and a page read
+          // or a drag timed by frames then fails although the page is right (one clean-clone run of
+          // three on 2026-11-22: balls-3d with 3,000 balls, a 2D page's first frame, a bouncing-balls
+          // drag). A test that fails twice fails the run.
+          retry: 1,
         },
       },
     ],

@@ -495,9 +495,13 @@ describe('3D games in headless Chromium', () => {
   // a frame took 1 to 2 s of GPU time. Before createThreeApp paced its frames to the GPU the page queued
   // about 4 frames a second without bound, and the read-back in canvasColors (or any call that waits for
   // the GPU) blocked the page for the whole queue: 5 s, then 16 s after 25 s of running, and in 2 of 6
-  // CI runs for the test's whole 150 s. Paced, such a wait is at most two frames.
-  it('balls-3d: 3000 balls are a handful of draw calls and keep running', async () => {
-    const g = await open('balls-3d', { count: 3000, trails: 0 });
+  // CI runs for the test's whole 150 s. Paced, such a wait is at most two frames. Even paced, one
+  // clean-clone run of three (2026-11-22, 5297c9e) stalled here for 60 s, and two more pages after it
+  // (one of them 2D) timed out or lagged, as if the GPU process still drained this page's work: the
+  // test now runs without shadows (the 2048^2 shadow map of 3,000 instances was most of that work;
+  // the page-contract test still opens balls-3d at its defaults, shadows on), with 120 s.
+  it('balls-3d: 3000 balls are a handful of draw calls and keep running', { timeout: 120_000 }, async () => {
+    const g = await open('balls-3d', { count: 3000, trails: 0, shadows: 0 });
     const s0 = await g.stats();
     await g.waitFor((n) => window.game!.stats().steps > n + 2, s0.steps, 60_000);
     const info = await g.evaluate(() => {
@@ -506,8 +510,8 @@ describe('3D games in headless Chromium', () => {
     }, null, 'reading the frame info');
     expect(info.balls).toBe(3000);
     expect(info.meshes).toBe(1);
-    // Balls and their shadow pass, two glass sides, floor, edges (and trails when on): 7 at most,
-    // whatever the ball count.
+    // Balls (and their shadow pass when shadows are on), two glass sides, floor, edges (and trails
+    // when on): 7 at most, whatever the ball count.
     expect(info.calls).toBeLessThanOrEqual(7);
     expect(info.framesDrawn).toBeGreaterThan(1);
     expect(g.errors).toEqual([]);
