@@ -499,11 +499,13 @@ describe('3D games in headless Chromium', () => {
   // clean-clone run of three (2026-11-22, 5297c9e) stalled here for 60 s, and two more pages after it
   // (one of them 2D) timed out or lagged, as if the GPU process still drained this page's work: the
   // test now runs without shadows (the 2048^2 shadow map of 3,000 instances was most of that work;
-  // the page-contract test still opens balls-3d at its defaults, shadows on), with 120 s.
-  it('balls-3d: 3000 balls are a handful of draw calls and keep running', { timeout: 120_000 }, async () => {
+  // the page-contract test still opens balls-3d at its defaults, shadows on). Without shadows it
+  // stalled once more (a clean clone at 109b14c: 120 s, then the retry passed in 4 s), so the cause
+  // is not the shadow map; a stall now costs the default 60 s before the project's one retry.
+  it('balls-3d: 3000 balls are a handful of draw calls and keep running', async () => {
     const g = await open('balls-3d', { count: 3000, trails: 0, shadows: 0 });
     const s0 = await g.stats();
-    await g.waitFor((n) => window.game!.stats().steps > n + 2, s0.steps, 60_000);
+    await g.waitFor((n) => window.game!.stats().steps > n + 2, s0.steps, 40_000);
     const info = await g.evaluate(() => {
       const game = window.game as unknown as ThreeGame;
       return { ...game.app.info(), meshes: game.renderer.stats.meshes, balls: game.renderer.stats.balls };
