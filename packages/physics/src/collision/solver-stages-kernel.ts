@@ -182,6 +182,17 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
   let base = 0, failed = false;
+  // Waits until every block of the units before the current one (`base` blocks) is done; false if
+  // another thread failed.
+  const earlierDone = (): boolean => {
+    let spins = 0;
+    for (;;) {
+      const done = Atomics.load(bar, 1);
+      if (done >= base) return true;
+      if (Atomics.load(bar, 2) !== 0) return false;
+      if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
+    }
+  };
   let b = Atomics.add(bar, 0, 1);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
@@ -190,24 +201,11 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      let spins = 0;
-      for (;;) {
-        const done = Atomics.load(bar, 1);
-        if (done >= base) break;
-        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
-        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
-      }
-      if (failed || Atomics.load(bar, 3) === 0) break;
+      if (!earlierDone()) { failed = true; break; }
+      if (Atomics.load(bar, 3) === 0) break;
     }
     while (b < end) {
-      let spins = 0;
-      for (;;) {
-        const done = Atomics.load(bar, 1);
-        if (done >= base) break;
-        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
-        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
-      }
-      if (failed) break;
+      if (!earlierDone()) { failed = true; break; }
       const blk = b - base;
       try {
         if (c < 0) {
