@@ -9,6 +9,7 @@ import { currentHandle } from '../handles.js';
 import { meshesOf, type Mesh3D } from './mesh3d.js';
 import { wakeIsland3D, wakesSleeper3D } from './shape3d-islands.js';
 import { boxBox3D, planeBox3D } from './box-box3d.js';
+import { jointKeepsApart } from '../joints/connected.js';
 
 /** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */
 const wakes = { list: new Int32Array(16), count: 0 };
@@ -68,6 +69,10 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   // A sleeping island met by a moving body wakes; then the step's pairs are found again with it awake.
   for (let pass = 0; ; pass++) {
     gather(world, s);
+    // Room for the rows up front (two a collider, and as many as last step's buffer held): growing by
+    // doubling while the rows are written cost a pile's first steps a dozen copies of every array.
+    const rows = Math.max(2 * scratch.n, st.previous.bodyA.length);
+    if (st.current.bodyA.length < rows) st.current = growManifold3DBuffer(st.current, rows);
     st.sensingNow.clear();
     st.current.count = 0;
     wakes.count = 0;
@@ -438,6 +443,7 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
   const sc = scratch;
   const bi = sc.body[i]!, bj = sc.body[j]!;
   if (bi === bj) return;
+  if (jointKeepsApart(world.joints, bi, bj)) return; // jointed without collideConnected (joints3d/api.ts)
   // A moving body reaching a sleeping one: the sleeper takes part as static this step, and the sleep system wakes it.
   // Balls against balls are the ball narrowphase's.
   if (sc.ball[i] && sc.ball[j]) return;

@@ -1,9 +1,11 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle, resolveEntity } from '../handles.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertPositive, assertVector, describe } from '../validate.js';
 import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store.js';
 import { wakeIsland } from '../collision/sleep.js';
+import { addNoCollide, removeNoCollide } from '../joints/connected.js';
+import { ensureJointArrays } from '../joints/state.js';
 
 /**
  * Joints between 3D bodies, solved in the contact solver's soft substeps (joints3d/solver.ts): ball
@@ -12,7 +14,10 @@ import { wakeIsland } from '../collision/sleep.js';
  * A (a body, or the fixed world when omitted or null) and B. Anchors and axes are given in world
  * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies'
  * frames. Removing either body removes the joint. Past `breakForce` (N) or `breakTorque` (N m) a
- * joint breaks: it is removed and listed in `joint3DBreaks(world)` after the step.
+ * joint breaks: it is removed and listed in `joint3DBreaks(world)` after the step. The two bodies of a
+ * joint do not collide with each other unless `collideConnected` is true (as 2D joints, Box2D's
+ * default): the pairs are counted in the world's joint state (joints/connected.ts), which the 3D shape
+ * narrowphase and the ball narrowphase both consult.
  */
 
 /** Options every 3D joint shares. */
@@ -25,9 +30,16 @@ export interface Joint3DBaseOptions {
   breakForce?: number;
   /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
   breakTorque?: number;
+  /**
+   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
+   * contacts between the two jointed bodies are skipped (their shapes may overlap at the joint, as a
+   * welded L's or a ragdoll's limbs do, without the contact and the joint fighting); true keeps them
+   * colliding. No effect when A is the world.
+   */
+  collideConnected?: boolean;
 }
 
-const BASE = ['a', 'b', 'breakForce', 'breakTorque'] as const;
+const BASE = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
 
 function body(where: string, param: string, world: PhysicsWorld, id: unknown): number {
   const slot = resolveEntity(world, id, where, param);
@@ -47,6 +59,7 @@ function ends(where: string, world: PhysicsWorld, o: Joint3DBaseOptions, keys: r
   if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(o.a)} twice`);
   if (o.breakForce !== undefined) assertPositive(where, 'breakForce', o.breakForce);
   if (o.breakTorque !== undefined) assertPositive(where, 'breakTorque', o.breakTorque);
+  assertOptionalBoolean(where, 'collideConnected', o.collideConnected);
   return { a, b };
 }
 
@@ -100,6 +113,9 @@ function make(world: PhysicsWorld, where: string, type: number, e: { a: number; 
   s.breakForce[j] = o.breakForce ?? Infinity; s.breakTorque[j] = o.breakTorque ?? Infinity;
   s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; s.wx[j] = 0; s.wy[j] = 0; s.wz[j] = 0; s.limit[j] = 0; s.motor[j] = 0;
   s.list.push(j);
+  ensureJointArrays(world.joints, world.capacity);
+  world.joints.noCollideJoint[j] = 0;
+  if (o.collideConnected !== true) addNoCollide(world.joints, j, e.a, e.b);
   return j;
 }
 
@@ -498,6 +514,7 @@ export function removeJoint3D(world: PhysicsWorld, joint: number): void {
 export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
   const i = s.list.indexOf(j);
   if (i >= 0) s.list.splice(i, 1);
+  removeNoCollide(world.joints, j, s.a[j]!, s.b[j]!);
   s.a[j] = 0; s.b[j] = 0;
   if (entityExists(world, j)) removeEntity(world, j);
 }
@@ -506,7 +523,7 @@ export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: 
 function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
   const s = joints3DOf(world);
   if (s === undefined || s.list.length === 0) return;
-  if (s.list.includes(eid)) { const i = s.list.indexOf(eid); s.list.splice(i, 1); s.a[eid] = 0; s.b[eid] = 0; return; }
+  if (s.list.includes(eid)) { const i = s.list.indexOf(eid); s.list.splice(i, 1); removeNoCollide(world.joints, eid, s.a[eid]!, s.b[eid]!); s.a[eid] = 0; s.b[eid] = 0; return; }
   for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
 
