@@ -56,9 +56,10 @@ function createBuffer(n: number): Manifold3DBuffer {
   };
 }
 
-/** Doubles a buffer's room, keeping its rows. */
-export function growManifold3DBuffer(b: Manifold3DBuffer): Manifold3DBuffer {
-  const n = b.bodyA.length * 2;
+/** Doubles a buffer's room (again until it holds at least `rows` rows, if given), keeping its rows. */
+export function growManifold3DBuffer(b: Manifold3DBuffer, rows = 0): Manifold3DBuffer {
+  let n = b.bodyA.length * 2;
+  while (n < rows) n *= 2;
   const g = createBuffer(n) as unknown as Record<string, unknown>;
   for (const [k, v] of Object.entries(b)) if (ArrayBuffer.isView(v)) (g[k] as { set(a: ArrayLike<number>): void }).set(v as unknown as ArrayLike<number>);
   g.count = b.count;
