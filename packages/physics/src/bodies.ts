@@ -3,6 +3,7 @@ import { assertTimeStep, type PhysicsWorld } from './world.js';
 import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { wakeIsland } from './collision/sleep.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from './handles.js';
+import { shapes3DOf } from './shapes3d/store.js';
 export { assertRoom, createSlot } from './handles.js';
 import {
   assertFinite, assertInRange, assertNonNegative, assertOptionalBoolean, assertOptions, assertPositive, assertVector, describe,
@@ -29,7 +30,7 @@ export interface BodyOptions {
   mass?: number;
   /** Density, kg/m^2 in 2D (mass = density pi r^2) or kg/m^3 in 3D (mass = density 4/3 pi r^3); needs `radius`. Exclusive with `mass`. */
   density?: number;
-  /** Collision radius, m, > 0: the body becomes a ball (circle in 2D, sphere in 3D). Without it the body does not collide. */
+  /** Collision radius, m, > 0: the body becomes a ball (circle in 2D, sphere in 3D). Without it the body does not collide (unless given shapes). A 3D ball body takes no shapes (addShape3D throws): give a compound's sphere as a 'sphere' shape. */
   radius?: number;
   /** Restitution in [0, 1]. Default 0. */
   restitution?: number;
@@ -416,11 +417,16 @@ export function setMaterial(world: PhysicsWorld, eid: number, material: Material
  * Sets a body's collision radius, m (> 0), making it a ball if it was not, and rescales its moment of
  * inertia if it has one.
  * @param eid a body's handle.
- * @throws RangeError on radius <= 0 or NaN, a removed entity or one that is not a body.
+ * @throws RangeError on radius <= 0 or NaN, a removed entity, one that is not a body, or a 3D body with
+ *   shapes (addShape3D). A call that throws changes nothing.
  */
 export function setRadius(world: PhysicsWorld, eid: number, radius: number): void {
   const slot = resolveKind(world, eid, 'body', 'setRadius');
   assertPositive('setRadius', 'radius', radius);
+  const shapes = shapes3DOf(world);
+  if (shapes !== undefined && shapes.first[slot] !== 0) {
+    throw new RangeError(`setRadius: eid must be a body without 3D shapes (its shapes give its size and mass; add a 'sphere' shape instead), got body ${describe(eid)}`);
+  }
   const c = world.components;
   if (!hasComponent(world, slot, c.Ball)) addComponent(world, slot, c.Ball);
   const old = c.Ball.radius[slot]!;

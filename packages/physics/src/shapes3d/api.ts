@@ -111,7 +111,8 @@ function shapeMass(s: Shape3DStore, e: number): MassProperties3D {
  * keeps infinite mass.
  * @param body a 3D body's handle (addBody).
  * @throws TypeError | RangeError `addShape3D: <param> must be ...` in a 2D world, on a removed entity or
- *   one that is not a body, an unknown type or option, a geometry option that does not apply to the
+ *   one that is not a body, a ball body (made with addBody's `radius`: give the sphere as a 'sphere'
+ *   shape of a body without radius instead), an unknown type or option, a geometry option that does not apply to the
  *   type, non-positive radius, half height or half extents, a degenerate hull (fewer than 4 points,
  *   all on a plane, or more than 64 hull vertices), negative density or friction, restitution outside
  *   [0, 1], a zero rotation quaternion, filter bits that are not integers of their range, or a full
@@ -124,6 +125,12 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   const where = 'addShape3D';
   if (world.dimensions !== 3) throw new TypeError(`${where}: 3D shapes need a 3D world; this world has 2 dimensions`);
   const b = resolveKind(world, body, 'body', where, 'body');
+  const balls = world.components.Ball;
+  if (hasComponent(world, b, balls) && balls.radius[b]! > 0) {
+    // A ball body is a sphere collider of the ball narrowphase with the mass addBody gave it; shapes would
+    // replace that mass with theirs while the ball kept colliding. One body, one kind of collider.
+    throw new RangeError(`${where}: body must be a body without a ball radius (addBody's radius makes it a ball; give the sphere as a shape instead: { type: 'sphere', radius }), got body ${describe(body)} with radius ${balls.radius[b]}`);
+  }
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, OPTIONS);
   const g = geometryOf(where, options);
