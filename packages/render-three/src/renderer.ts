@@ -145,7 +145,7 @@ export interface PickResult {
    * drawn by the last `render`. See `pick`.
    */
   point: [number, number, number];
-  /** Unit surface normal at the hit point, world frame (from the same source as `point`). */
+  /** Unit outward surface normal at the hit point, in the physics world frame (the renderer's root frame, as `point`, whether the physics' or three.js' ray cast found it). */
   normal: [number, number, number];
   /** Distance from the camera to the hit point, scene units. */
   distance: number;
@@ -697,6 +697,9 @@ export class WorldRenderer3D {
       this.m4.premultiply(this.groups[gi]!.mesh.matrixWorld);
       this.m3.getNormalMatrix(this.m4);
       const n = this.v3.copy(best.normal).applyMatrix3(this.m3).normalize();
+      // That is the scene's frame; the result's is the physics' (the root's): n_root ~ M_root^T n_scene
+      // (a normal transforms by the inverse transpose; root.matrixWorld maps root to scene).
+      n.applyMatrix3(this.m3.setFromMatrix4(this.root.matrixWorld).transpose()).normalize();
       normal[0] = n.x; normal[1] = n.y; normal[2] = n.z;
     }
     // Hits are in scene coordinates; the renderer's root may sit anywhere in the scene.
