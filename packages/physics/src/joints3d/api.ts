@@ -502,7 +502,7 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
   wakeJoint3D(world, s, j);
 }
 
-/** Removes a 3D joint. @throws RangeError on a removed entity or one that is not a 3D joint. */
+/** Removes a 3D joint and wakes its bodies. @throws RangeError on a removed entity or one that is not a 3D joint. */
 export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
   const s = joints3DOf(world);
@@ -510,20 +510,31 @@ export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   removeJoint3DUnchecked(world, s, j);
 }
 
-/** Internal: unlists and removes joint slot j. */
+/** Internal: unlists and removes joint slot j, and wakes its bodies (what held them is gone). */
 export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
+  unlistJoint3D(world, s, j);
+  if (entityExists(world, j)) removeEntity(world, j);
+}
+
+/**
+ * Takes joint slot j out of the list and the no-collide pairs, and wakes the islands of its bodies
+ * that still exist: a sleeping body the joint held up (a bob at rest on its string) must fall.
+ */
+function unlistJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
   const i = s.list.indexOf(j);
   if (i >= 0) s.list.splice(i, 1);
-  removeNoCollide(world.joints, j, s.a[j]!, s.b[j]!);
+  const a = s.a[j]!, b = s.b[j]!;
+  removeNoCollide(world.joints, j, a, b);
   s.a[j] = 0; s.b[j] = 0;
-  if (entityExists(world, j)) removeEntity(world, j);
+  if (a !== 0 && entityExists(world, a)) wakeIsland(world, a);
+  if (b !== 0 && entityExists(world, b)) wakeIsland(world, b);
 }
 
 /** Removal hook: removing a body removes its 3D joints (and removing a joint entity unlists it). */
 function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
   const s = joints3DOf(world);
   if (s === undefined || s.list.length === 0) return;
-  if (s.list.includes(eid)) { const i = s.list.indexOf(eid); s.list.splice(i, 1); removeNoCollide(world.joints, eid, s.a[eid]!, s.b[eid]!); s.a[eid] = 0; s.b[eid] = 0; return; }
+  if (s.list.includes(eid)) { unlistJoint3D(world, s, eid); return; }
   for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
 
