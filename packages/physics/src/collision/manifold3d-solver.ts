@@ -16,11 +16,16 @@ import { currentHandle } from '../handles.js';
  *   1 / (1/m_A + 1/m_B + (r_A x u) . I_A^-1 (r_A x u) + (r_B x u) . I_B^-1 (r_B x u));
  * - normal rows: speculative (s > 0: bias s / h_s) or soft (Box2D's soft constraint; twice as stiff
  *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
- * - friction in two tangent directions t1, t2 = n x t1, each |lambda_t| <= mu lambda_n;
- * - per point and direction u (n, t1, t2), r x u and I^-1 (r x u) of both bodies are computed once a
- *   step (`jacobians`), so a pass reads them instead of multiplying tensors; a manifold whose two bodies
- *   are isotropic (I^-1 = i 1: spheres, cubes, or a static side) reads only r x u and scales it by i,
- *   half the memory a pass streams; the points of a manifold are solved in alternating order from
+ * - friction once a manifold, not once a point (central friction, as Box2D v2.0's 3D predecessors and
+ *   Bullet's friction anchors): two tangent rows t1, t2 = n x t1 at an anchor, the points' centre
+ *   weighted by their warm-started normal impulses (their plain centre when none has any), each
+ *   |lambda_t| <= mu sum(lambda_n), and a twist row about n, |lambda_w| <= mu arm sum(lambda_n) with arm
+ *   the points' mean distance from the anchor (the torque the points' friction could resist). A manifold
+ *   of four points so solves three friction rows instead of eight;
+ * - per point, r x n and I^-1 (r x n) of both bodies, and per manifold the anchor's r x t1, r x t2 and
+ *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`), so a pass reads
+ *   them instead of multiplying tensors; a manifold whose two bodies are isotropic (I^-1 = i 1: spheres,
+ *   cubes, or a static side) reads only r x u and scales it by i, half the memory a pass streams; the points of a manifold are solved in alternating order from
  *   substep to substep; a manifold whose normal rows are all rigid in a pass (speculative, or a relax
  *   pass) is swept until they agree (NORMAL_SWEEPS), so a flat hit does not spin the boxes;
  * - warm start from the previous step's point with the same feature id (shape3d-collision.ts);
@@ -29,12 +34,19 @@ import { currentHandle } from '../handles.js';
  */
 
 /**
- * Numbers a point keeps in `jacobians`: first r_A x u, r_B x u for u = n, t1, t2 in turn (at 6 d, d = 0, 1, 2),
- * then I_A^-1 (r_A x u), I_B^-1 (r_B x u) in the same order (at INV + 6 d), so an isotropic manifold's
- * passes touch only the first 18.
+ * Numbers a point keeps in `jacobians`: r_A x n, r_B x n, then I_A^-1 (r_A x n), I_B^-1 (r_B x n) (at INV),
+ * so an isotropic manifold's passes touch only the first 6.
  */
-const JAC = 36;
-const INV = 18;
+const JAC = 12;
+const INV = 6;
+/**
+ * Numbers a manifold keeps in `frictionJacobians`: r_A x u, r_B x u of the friction anchor for u = t1, t2
+ * (at 6 d, d = 0, 1), then I_A^-1 (r_A x u), I_B^-1 (r_B x u) in the same order (at FINV + 6 d), then
+ * I_A^-1 n, I_B^-1 n (at TWIST) for the twist row (an isotropic manifold reads the first 12 only).
+ */
+const FJ = 32;
+const FINV = 12;
+const TWIST = 24;
 
 /** Stiffness as a fraction of the substep rate (as the 2D shape contacts: manifold-solver.ts). */
 const HERTZ_FRACTION = 0.125;
@@ -117,7 +129,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   void count;
   if (n === 0) return;
   if (st.jacobians.length < JAC * 4 * n) st.jacobians = new Float32Array(JAC * 4 * Math.max(n, 2 * st.jacobians.length / (4 * JAC)));
-  const J = st.jacobians;
+  if (st.frictionJacobians.length < FJ * n) st.frictionJacobians = new Float32Array(FJ * Math.max(n, 2 * st.frictionJacobians.length / FJ));
+  const J = st.jacobians, F = st.frictionJacobians;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
@@ -125,47 +138,78 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     const iso = isotropic(T, ta) && isotropic(T, tb);
     buf.iso[i] = iso ? 1 : 0;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
-    const t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
-    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     // Solver base minus where the narrowphase measured (PreviousPosition) along n.
     let shift = 0;
     if (ka > 0) { const e = buf.bodyA[i]!; shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz; }
     if (kb > 0) { const e = buf.bodyB[i]!; shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz; }
     let minSep = Infinity, reachA = 0, reachB = 0;
-    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+    // The friction anchor: the points' centre weighted by their warm-started normal impulses.
+    let wsum = 0, cax = 0, cay = 0, caz = 0, cbx = 0, cby = 0, cbz = 0;
+    const m = buf.points[i]!;
+    for (let k = 0; k < m; k++) {
       const q = 4 * i + k, o = JAC * q;
       buf.sep[q] = buf.sep[q]! + shift;
       const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
       if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
       reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz); reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
-      // Per direction u (n, t1, t2): r_A x u, r_B x u, and I_A^-1 (r_A x u), I_B^-1 (r_B x u), then the effective mass.
-      for (let d = 0; d < 3; d++) {
-        const ux = d === 0 ? nx : d === 1 ? t1x : t2x, uy = d === 0 ? ny : d === 1 ? t1y : t2y, uz = d === 0 ? nz : d === 1 ? t1z : t2z;
-        const cax = ray * uz - raz * uy, cay = raz * ux - rax * uz, caz = rax * uy - ray * ux;
-        const cbx = rby * uz - rbz * uy, cby = rbz * ux - rbx * uz, cbz = rbx * uy - rby * ux;
-        const b = o + 6 * d, bi = b + INV;
-        J[b] = cax; J[b + 1] = cay; J[b + 2] = caz; J[b + 3] = cbx; J[b + 4] = cby; J[b + 5] = cbz;
-        let k0: number;
-        if (iso) {
-          // I^-1 = i 1 on both sides: (r x u) . I^-1 (r x u) = i |r x u|^2, the products not stored.
-          k0 = mA + mB + T[ta]! * (cax * cax + cay * cay + caz * caz) + T[tb]! * (cbx * cbx + cby * cby + cbz * cbz);
-        } else {
-          const iax = T[ta]! * cax + T[ta + 3]! * cay + T[ta + 4]! * caz, iay = T[ta + 3]! * cax + T[ta + 1]! * cay + T[ta + 5]! * caz, iaz = T[ta + 4]! * cax + T[ta + 5]! * cay + T[ta + 2]! * caz;
-          const ibx = T[tb]! * cbx + T[tb + 3]! * cby + T[tb + 4]! * cbz, iby = T[tb + 3]! * cbx + T[tb + 1]! * cby + T[tb + 5]! * cbz, ibz = T[tb + 4]! * cbx + T[tb + 5]! * cby + T[tb + 2]! * cbz;
-          J[bi] = iax; J[bi + 1] = iay; J[bi + 2] = iaz; J[bi + 3] = ibx; J[bi + 4] = iby; J[bi + 5] = ibz;
-          k0 = mA + mB + cax * iax + cay * iay + caz * iaz + cbx * ibx + cby * iby + cbz * ibz;
-        }
-        const eff = k0 > 0 ? 1 / k0 : 0;
-        if (d === 0) buf.mn[q] = eff; else if (d === 1) buf.mt1[q] = eff; else buf.mt2[q] = eff;
-      }
+      const w = buf.ln[q]!;
+      wsum += w; cax += w * rax; cay += w * ray; caz += w * raz; cbx += w * rbx; cby += w * rby; cbz += w * rbz;
+      // r_A x n, r_B x n, and I_A^-1 (r_A x n), I_B^-1 (r_B x n), then the effective mass.
+      const xax = ray * nz - raz * ny, xay = raz * nx - rax * nz, xaz = rax * ny - ray * nx;
+      const xbx = rby * nz - rbz * ny, xby = rbz * nx - rbx * nz, xbz = rbx * ny - rby * nx;
+      J[o] = xax; J[o + 1] = xay; J[o + 2] = xaz; J[o + 3] = xbx; J[o + 4] = xby; J[o + 5] = xbz;
+      const k0 = iso ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
+        : mA + mB + inertiaInto(J, o + INV, T, ta, xax, xay, xaz) + inertiaInto(J, o + INV + 3, T, tb, xbx, xby, xbz);
+      buf.mn[q] = k0 > 0 ? 1 / k0 : 0;
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
-        + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
-        - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
+        + sb[b + 3]! * xbx + sb[b + 4]! * xby + sb[b + 5]! * xbz
+        - sb[a + 3]! * xax - sb[a + 4]! * xay - sb[a + 5]! * xaz;
     }
     // For the solver's skip of a speculative manifold (solveManifolds3D); padded for the single-precision crosses.
     buf.minSep[i] = minSep; buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9; buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
+    if (!(wsum > 0)) {
+      // No point carries impulse yet: the plain centre.
+      wsum = 0; cax = 0; cay = 0; caz = 0; cbx = 0; cby = 0; cbz = 0;
+      for (let k = 0; k < m; k++) {
+        const q = 4 * i + k;
+        wsum += 1; cax += buf.rax[q]!; cay += buf.ray[q]!; caz += buf.raz[q]!; cbx += buf.rbx[q]!; cby += buf.rby[q]!; cbz += buf.rbz[q]!;
+      }
+    }
+    const iw = 1 / wsum;
+    cax *= iw; cay *= iw; caz *= iw; cbx *= iw; cby *= iw; cbz *= iw;
+    // Twist arm: the points' mean distance from the anchor across n.
+    let arm = 0;
+    for (let k = 0; k < m; k++) {
+      const q = 4 * i + k;
+      const dx = buf.rax[q]! - cax, dy = buf.ray[q]! - cay, dz = buf.raz[q]! - caz, dn = dx * nx + dy * ny + dz * nz;
+      arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
+    }
+    buf.arm[i] = arm / m;
+    const t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
+    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    const f = FJ * i;
+    for (let d = 0; d < 2; d++) {
+      const ux = d === 0 ? t1x : t2x, uy = d === 0 ? t1y : t2y, uz = d === 0 ? t1z : t2z;
+      const xax = cay * uz - caz * uy, xay = caz * ux - cax * uz, xaz = cax * uy - cay * ux;
+      const xbx = cby * uz - cbz * uy, xby = cbz * ux - cbx * uz, xbz = cbx * uy - cby * ux;
+      const o = f + 6 * d;
+      F[o] = xax; F[o + 1] = xay; F[o + 2] = xaz; F[o + 3] = xbx; F[o + 4] = xby; F[o + 5] = xbz;
+      const k0 = iso ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
+        : mA + mB + inertiaInto(F, o + FINV, T, ta, xax, xay, xaz) + inertiaInto(F, o + FINV + 3, T, tb, xbx, xby, xbz);
+      if (d === 0) buf.mt1[i] = k0 > 0 ? 1 / k0 : 0; else buf.mt2[i] = k0 > 0 ? 1 / k0 : 0;
+    }
+    // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
+    const kw = iso ? T[ta]! + T[tb]! : inertiaInto(F, f + TWIST, T, ta, nx, ny, nz) + inertiaInto(F, f + TWIST + 3, T, tb, nx, ny, nz);
+    buf.mtw[i] = kw > 0 ? 1 / kw : 0;
   }
+}
+
+/** Writes I^-1 x (I^-1 at T[t..t+5]: xx, yy, zz, xy, xz, yz) into out[o..o+2] and returns x . I^-1 x. */
+function inertiaInto(out: Float32Array, o: number, T: Float64Array, t: number, x: number, y: number, z: number): number {
+  const ix = T[t]! * x + T[t + 3]! * y + T[t + 4]! * z, iy = T[t + 3]! * x + T[t + 1]! * y + T[t + 5]! * z, iz = T[t + 4]! * x + T[t + 5]! * y + T[t + 2]! * z;
+  out[o] = ix; out[o + 1] = iy; out[o + 2] = iz;
+  return x * ix + y * iy + z * iz;
 }
 
 /** Whether the world inverse inertia tensor at T[o..o+5] is i 1 (prepareSolverBodies3D writes it exactly so for isotropic bodies). */
@@ -240,61 +284,59 @@ function relativeSpeed(sb: Float64Array, J: Float32Array, a: number, b: number, 
     - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
 }
 
-/** Warm start: last step's impulses applied again (all three directions of a point at once). */
+/**
+ * Warm start: last step's impulses applied again. A manifold's normal impulses are summed over its points
+ * (linear sum(ln) n, angular sum(ln I^-1 (r x n))), its friction impulses added, and each body written once.
+ */
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians, T = st.invInertia;
-  const LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2;
+  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians, F = st.frictionJacobians, T = st.invInertia;
+  const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
+    const f1 = buf.ft1[i]!, f2 = buf.ft2[i]!, fw = buf.ftw[i]!;
+    // Sum of the normal impulses and their angular parts on A and B.
+    let sn = 0, ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
+    const iso = buf.iso[i] === 1, c = iso ? 0 : INV;
+    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+      const q = 4 * i + k, ln = LN[q]!;
+      if (ln === 0) continue;
+      // Isotropic: i sum(ln r x n) from the crosses (scaled by i below); else the stored products.
+      const o = JAC * q + c;
+      sn += ln;
+      ax += ln * J[o]!; ay += ln * J[o + 1]!; az += ln * J[o + 2]!;
+      bx += ln * J[o + 3]!; by += ln * J[o + 4]!; bz += ln * J[o + 5]!;
+    }
+    if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!, t1x = buf.t1x[i]!, t1y = buf.t1y[i]!, t1z = buf.t1z[i]!;
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+    const px = sn * nx + f1 * t1x + f2 * t2x, py = sn * ny + f1 * t1y + f2 * t2y, pz = sn * nz + f1 * t1z + f2 * t2z;
+    // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
+    const o = FJ * i + (iso ? 0 : FINV);
+    ax += f1 * F[o]! + f2 * F[o + 6]!; ay += f1 * F[o + 1]! + f2 * F[o + 7]!; az += f1 * F[o + 2]! + f2 * F[o + 8]!;
+    bx += f1 * F[o + 3]! + f2 * F[o + 9]!; by += f1 * F[o + 4]! + f2 * F[o + 10]!; bz += f1 * F[o + 5]! + f2 * F[o + 11]!;
+    if (iso) { ax += fw * nx; ay += fw * ny; az += fw * nz; bx += fw * nx; by += fw * ny; bz += fw * nz; }
+    else {
+      const w = FJ * i + TWIST;
+      ax += fw * F[w]!; ay += fw * F[w + 1]!; az += fw * F[w + 2]!; bx += fw * F[w + 3]!; by += fw * F[w + 4]!; bz += fw * F[w + 5]!;
+    }
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
-    const mA = sb[a + 9]!, mB = sb[b + 9]!;
-    const iso = buf.iso[i] === 1, iA = iso ? T[6 * ka]! : 0, iB = iso ? T[6 * kb]! : 0;
-    for (let k = 0, m = buf.points[i]!; k < m; k++) {
-      const q = 4 * i + k, ln = LN[q]!, l1 = LT1[q]!, l2 = LT2[q]!;
-      if (ln === 0 && l1 === 0 && l2 === 0) continue;
-      const o = JAC * q;
-      // Linear impulse P = ln n + l1 t1 + l2 t2; angular: the sum of lambda I^-1 (r x u) over the three directions.
-      const px = ln * nx + l1 * t1x + l2 * t2x, py = ln * ny + l1 * t1y + l2 * t2y, pz = ln * nz + l1 * t1z + l2 * t2z;
-      if (iso) {
-        // I^-1 = i 1: the angular impulses are i sum(lambda r x u), from the crosses.
-        if (ka > 0) {
-          sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
-          sb[a + 3] = sb[a + 3]! - iA * (ln * J[o]! + l1 * J[o + 6]! + l2 * J[o + 12]!);
-          sb[a + 4] = sb[a + 4]! - iA * (ln * J[o + 1]! + l1 * J[o + 7]! + l2 * J[o + 13]!);
-          sb[a + 5] = sb[a + 5]! - iA * (ln * J[o + 2]! + l1 * J[o + 8]! + l2 * J[o + 14]!);
-          sb[a + 11] = 1;
-        }
-        if (kb > 0) {
-          sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
-          sb[b + 3] = sb[b + 3]! + iB * (ln * J[o + 3]! + l1 * J[o + 9]! + l2 * J[o + 15]!);
-          sb[b + 4] = sb[b + 4]! + iB * (ln * J[o + 4]! + l1 * J[o + 10]! + l2 * J[o + 16]!);
-          sb[b + 5] = sb[b + 5]! + iB * (ln * J[o + 5]! + l1 * J[o + 11]! + l2 * J[o + 17]!);
-          sb[b + 11] = 1;
-        }
-        continue;
-      }
-      if (ka > 0) {
-        sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
-        sb[a + 3] = sb[a + 3]! - ln * J[o + 18]! - l1 * J[o + 24]! - l2 * J[o + 30]!;
-        sb[a + 4] = sb[a + 4]! - ln * J[o + 19]! - l1 * J[o + 25]! - l2 * J[o + 31]!;
-        sb[a + 5] = sb[a + 5]! - ln * J[o + 20]! - l1 * J[o + 26]! - l2 * J[o + 32]!;
-        sb[a + 11] = 1;
-      }
-      if (kb > 0) {
-        sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
-        sb[b + 3] = sb[b + 3]! + ln * J[o + 21]! + l1 * J[o + 27]! + l2 * J[o + 33]!;
-        sb[b + 4] = sb[b + 4]! + ln * J[o + 22]! + l1 * J[o + 28]! + l2 * J[o + 34]!;
-        sb[b + 5] = sb[b + 5]! + ln * J[o + 23]! + l1 * J[o + 29]! + l2 * J[o + 35]!;
-        sb[b + 11] = 1;
-      }
+    if (ka > 0) {
+      const mA = sb[a + 9]!, gA = iso ? T[6 * ka]! : 1;
+      sb[a] = sb[a]! - mA * px; sb[a + 1] = sb[a + 1]! - mA * py; sb[a + 2] = sb[a + 2]! - mA * pz;
+      sb[a + 3] = sb[a + 3]! - gA * ax; sb[a + 4] = sb[a + 4]! - gA * ay; sb[a + 5] = sb[a + 5]! - gA * az;
+      sb[a + 11] = 1;
+    }
+    if (kb > 0) {
+      const mB = sb[b + 9]!, gB = iso ? T[6 * kb]! : 1;
+      sb[b] = sb[b]! + mB * px; sb[b + 1] = sb[b + 1]! + mB * py; sb[b + 2] = sb[b + 2]! + mB * pz;
+      sb[b + 3] = sb[b + 3]! + gB * bx; sb[b + 4] = sb[b + 4]! + gB * by; sb[b + 5] = sb[b + 5]! + gB * bz;
+      sb[b + 11] = 1;
     }
   }
 }
 
-/** One pass over the rows: normal (soft with `useBias`, else relaxing), then friction in t1 and t2. */
+/** One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor). */
 export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
@@ -305,7 +347,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   if (useBias) st.solveParity ^= 1;
   const backward = st.solveParity === 1;
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
-  const sep = buf.sep, LN = buf.ln, LT1 = buf.lt1, LT2 = buf.lt2, MN = buf.mn, MT1 = buf.mt1, MT2 = buf.mt2, MAX = buf.maxLn;
+  const sep = buf.sep, LN = buf.ln, MN = buf.mn, MAX = buf.maxLn, F = st.frictionJacobians;
+  const FT1 = buf.ft1, FT2 = buf.ft2, FTW = buf.ftw, MT1 = buf.mt1, MT2 = buf.mt2, MTW = buf.mtw, ARM = buf.arm;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
   const ISO = buf.iso, T = st.invInertia, MINSEP = buf.minSep, RA = buf.reachA, RB = buf.reachB;
   const invHs = 1 / hs;
@@ -328,9 +371,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // point's s >= minSep + dn - |theta_A| reach_A - |theta_B| reach_B > 0 with
     // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
     // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
-    if (MINSEP[i]! > 0) {
+    if (MINSEP[i]! > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
       let idle = true;
-      for (let k = 0; k < m; k++) { const q = 4 * i + k; if (LN[q] !== 0 || LT1[q] !== 0 || LT2[q] !== 0) { idle = false; break; } }
+      for (let k = 0; k < m; k++) { if (LN[4 * i + k] !== 0) { idle = false; break; } }
       if (idle) {
         const rA = RA[i]!, rB = RB[i]!;
         const sLow = MINSEP[i]! + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
@@ -387,23 +430,23 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       }
       if (softMet || change <= (sw === 0 ? HIT_FRACTION : SWEEP_TOLERANCE) * total || change * (mA + mB) <= SWEEP_SPEED) break;
     }
-    const mu = MU[i]!;
-    const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
-    const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-    for (let k = 0; k < m; k++) {
-      const q = 4 * i + k;
-      const limit = mu * LN[q]!;
-      const o1 = LT1[q]!, o2 = LT2[q]!;
-      // A point that pushes nothing (a speculative one) has no friction to solve.
-      if (limit === 0 && o1 === 0 && o2 === 0) continue;
-      // t1 (crosses at o, inverse products at o + INV), then t2 (6 further on).
-      let o = JAC * q + 6;
-      let ca0 = J[o]!, ca1 = J[o + 1]!, ca2 = J[o + 2]!, cb0 = J[o + 3]!, cb1 = J[o + 4]!, cb2 = J[o + 5]!;
+    // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
+    let sumLn = 0;
+    for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
+    const limit = MU[i]! * sumLn;
+    const o1 = FT1[i]!, o2 = FT2[i]!, ow = FTW[i]!;
+    // A manifold that pushes nothing (a speculative one) has no friction to solve.
+    if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
+      const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
+      const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
+      // t1 (crosses at f, inverse products at f + FINV), then t2 (6 further on).
+      let f = FJ * i;
+      let ca0 = F[f]!, ca1 = F[f + 1]!, ca2 = F[f + 2]!, cb0 = F[f + 3]!, cb1 = F[f + 4]!, cb2 = F[f + 5]!;
       const vt1 = ((vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z)
         + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
-      let l1 = o1 - MT1[q]! * vt1;
+      let l1 = o1 - MT1[i]! * vt1;
       l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
-      LT1[q] = l1;
+      FT1[i] = l1;
       const d1 = l1 - o1;
       if (d1 !== 0) {
         const fa = mA * d1, fb = mB * d1;
@@ -414,19 +457,19 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
           wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
         } else {
-          const p = o + INV;
-          wax -= d1 * J[p]!; way -= d1 * J[p + 1]!; waz -= d1 * J[p + 2]!;
-          wbx += d1 * J[p + 3]!; wby += d1 * J[p + 4]!; wbz += d1 * J[p + 5]!;
+          const p = f + FINV;
+          wax -= d1 * F[p]!; way -= d1 * F[p + 1]!; waz -= d1 * F[p + 2]!;
+          wbx += d1 * F[p + 3]!; wby += d1 * F[p + 4]!; wbz += d1 * F[p + 5]!;
         }
         pushed = true;
       }
-      o += 6;
-      ca0 = J[o]!; ca1 = J[o + 1]!; ca2 = J[o + 2]!; cb0 = J[o + 3]!; cb1 = J[o + 4]!; cb2 = J[o + 5]!;
+      f += 6;
+      ca0 = F[f]!; ca1 = F[f + 1]!; ca2 = F[f + 2]!; cb0 = F[f + 3]!; cb1 = F[f + 4]!; cb2 = F[f + 5]!;
       const vt2 = ((vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z)
         + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
-      let l2 = o2 - MT2[q]! * vt2;
+      let l2 = o2 - MT2[i]! * vt2;
       l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
-      LT2[q] = l2;
+      FT2[i] = l2;
       const d2 = l2 - o2;
       if (d2 !== 0) {
         const fa = mA * d2, fb = mB * d2;
@@ -437,9 +480,27 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
           wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
         } else {
-          const p = o + INV;
-          wax -= d2 * J[p]!; way -= d2 * J[p + 1]!; waz -= d2 * J[p + 2]!;
-          wbx += d2 * J[p + 3]!; wby += d2 * J[p + 4]!; wbz += d2 * J[p + 5]!;
+          const p = f + FINV;
+          wax -= d2 * F[p]!; way -= d2 * F[p + 1]!; waz -= d2 * F[p + 2]!;
+          wbx += d2 * F[p + 3]!; wby += d2 * F[p + 4]!; wbz += d2 * F[p + 5]!;
+        }
+        pushed = true;
+      }
+      // Twist: relative spin about n, limited by mu arm sum(lambda_n).
+      const tl = limit * ARM[i]!;
+      let lw = ow - MTW[i]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
+      lw = lw > tl ? tl : lw < -tl ? -tl : lw;
+      FTW[i] = lw;
+      const dw = lw - ow;
+      if (dw !== 0) {
+        if (iso) {
+          const ga = iA * dw, gb = iB * dw;
+          wax -= ga * nx; way -= ga * ny; waz -= ga * nz;
+          wbx += gb * nx; wby += gb * ny; wbz += gb * nz;
+        } else {
+          const p = FJ * i + TWIST;
+          wax -= dw * F[p]!; way -= dw * F[p + 1]!; waz -= dw * F[p + 2]!;
+          wbx += dw * F[p + 3]!; wby += dw * F[p + 4]!; wbz += dw * F[p + 5]!;
         }
         pushed = true;
       }

@@ -28,13 +28,18 @@ export interface Manifold3DBuffer {
   rax: Float64Array; ray: Float64Array; raz: Float64Array; rbx: Float64Array; rby: Float64Array; rbz: Float64Array;
   sep: Float64Array; id: Float64Array;
   /**
-   * Per point: accumulated impulses (N s) along n, t1, t2; effective masses (kg; rebuilt every step by
-   * the solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach
-   * speed at the start (m/s); largest normal impulse.
+   * Per point: accumulated normal impulse (N s); effective mass along n (kg; rebuilt every step by the
+   * solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach speed
+   * at the start (m/s); largest normal impulse.
    */
-  ln: Float64Array; lt1: Float64Array; lt2: Float64Array;
-  mn: Float32Array; mt1: Float32Array; mt2: Float32Array;
-  vn0: Float64Array; maxLn: Float64Array;
+  ln: Float64Array; mn: Float32Array; vn0: Float64Array; maxLn: Float64Array;
+  /**
+   * Per row, the manifold's friction (manifold3d-solver.ts: one anchor a manifold): accumulated impulses
+   * along t1 and t2 (N s) and about n (twist, N m s); their effective masses (kg, kg m^2; rebuilt by the
+   * prepare); the twist arm (m: the points' mean distance from the anchor, the twist limit mu arm sum(ln)).
+   */
+  ft1: Float64Array; ft2: Float64Array; ftw: Float64Array;
+  mt1: Float32Array; mt2: Float32Array; mtw: Float32Array; arm: Float64Array;
   /**
    * Box-box rows (shape3d-collision.ts reuses them while the pair's relative pose barely changes): 1 when
    * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
@@ -51,7 +56,8 @@ function createBuffer(n: number): Manifold3DBuffer {
     count: 0, bodyA: i(n), bodyB: i(n), shapeA: i(n), shapeB: i(n), sub: i(n), ia: i(n), ib: i(n), points: new Uint8Array(n), iso: new Uint8Array(n), minSep: f(n), reachA: f(n), reachB: f(n),
     nx: f(n), ny: f(n), nz: f(n), t1x: f(n), t1y: f(n), t1z: f(n), friction: f(n), restitution: f(n),
     rax: f(p), ray: f(p), raz: f(p), rbx: f(p), rby: f(p), rbz: f(p), sep: f(p), id: f(p),
-    ln: f(p), lt1: f(p), lt2: f(p), mn: new Float32Array(p), mt1: new Float32Array(p), mt2: new Float32Array(p), vn0: f(p), maxLn: f(p),
+    ln: f(p), mn: new Float32Array(p), vn0: f(p), maxLn: f(p),
+    ft1: f(n), ft2: f(n), ftw: f(n), mt1: new Float32Array(n), mt2: new Float32Array(n), mtw: new Float32Array(n), arm: f(n),
     local: new Uint8Array(n), relPose: f(12 * n), localNormal: f(3 * n), localA: f(3 * p), localB: f(3 * p),
   };
 }
@@ -126,10 +132,15 @@ export interface Contact3DState {
   /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
   sensingNow: Map<number, number[]>;
   /**
-   * Per point of `current` (36 numbers each, manifold3d-solver.ts): r x u and I^-1 (r x u) of both bodies
-   * for u = n, t1, t2. Rebuilt every step; single precision (half the memory the solver streams each pass).
+   * Per point of `current` (12 numbers each, manifold3d-solver.ts): r x n and I^-1 (r x n) of both bodies.
+   * Rebuilt every step; single precision (half the memory the solver streams each pass).
    */
   jacobians: Float32Array;
+  /**
+   * Per row of `current` (32 numbers each, manifold3d-solver.ts): the friction anchor's r x u and
+   * I^-1 (r x u) of both bodies for u = t1, t2, and I^-1 n of both (twist). Rebuilt every step; single precision.
+   */
+  frictionJacobians: Float32Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (manifold3d-solver.ts). */
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
@@ -228,7 +239,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
   if (s === undefined && create) {
     s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: createRowIndex(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
       events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
-      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float32Array(0),
+      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float32Array(0), frictionJacobians: new Float32Array(0),
     };
     states.set(world, s);
   }

@@ -667,18 +667,20 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
     buf.rax[q] = m.x[k]! - ax; buf.ray[q] = m.y[k]! - ay; buf.raz[q] = m.z[k]! - az;
     buf.rbx[q] = m.x[k]! - bx; buf.rby[q] = m.y[k]! - by; buf.rbz[q] = m.z[k]! - bz;
     buf.sep[q] = m.sep[k]!; buf.id[q] = m.id[k]!;
-    buf.ln[q] = 0; buf.lt1[q] = 0; buf.lt2[q] = 0; buf.maxLn[q] = 0;
+    buf.ln[q] = 0; buf.maxLn[q] = 0;
     if (reused) {
       // A reused manifold has the previous row's points in the same order (reuseManifold).
-      const pq = 4 * prev + k;
-      buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!;
+      buf.ln[q] = P.ln[4 * prev + k]!;
     } else if (prev >= 0) {
       for (let j = 0; j < P.points[prev]!; j++) {
         const pq = 4 * prev + j;
-        if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; buf.lt1[q] = P.lt1[pq]!; buf.lt2[q] = P.lt2[pq]!; break; }
+        if (P.id[pq] === m.id[k]) { buf.ln[q] = P.ln[pq]!; break; }
       }
     }
   }
+  // The manifold's friction (one anchor a row) from the pair's last row while the normal barely turned (t1 follows n).
+  if (prev >= 0 && P.nx[prev]! * nx + P.ny[prev]! * ny + P.nz[prev]! * nz > 0.99) { buf.ft1[i] = P.ft1[prev]!; buf.ft2[i] = P.ft2[prev]!; buf.ftw[i] = P.ftw[prev]!; }
+  else { buf.ft1[i] = 0; buf.ft2[i] = 0; buf.ftw[i] = 0; }
 }
 
 /**
