@@ -351,8 +351,8 @@ function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void 
 }
 
 /**
- * Sets a dynamic body's mass and inverse mass together (and rescales its moment of inertia if it
- * has one, keeping the shape's distribution).
+ * Sets a dynamic body's mass and inverse mass together (and rescales its moment of inertia, or in 3D
+ * its principal moments, if it has them, keeping the mass distribution: I' = I m' / m).
  * @param eid a body's handle (addBody, addParticle).
  * @param mass kg, finite and > 0.
  * @throws RangeError on mass <= 0, NaN or infinite, on a static or kinematic body (infinite mass), on a
@@ -372,6 +372,12 @@ export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
     const I = c.Inertia.value[slot]! * (mass / old);
     c.Inertia.value[slot] = I;
     c.Inertia.inv[slot] = 1 / I;
+  }
+  // A 3D body's principal moments (shapes, setInertia with three moments) scale with the mass too.
+  if (hasComponent(world, slot, c.InertiaTensor) && old > 0) {
+    const T = c.InertiaTensor, f = mass / old;
+    T.x[slot] = T.x[slot]! * f; T.y[slot] = T.y[slot]! * f; T.z[slot] = T.z[slot]! * f;
+    T.invX[slot] = T.invX[slot]! / f; T.invY[slot] = T.invY[slot]! / f; T.invZ[slot] = T.invZ[slot]! / f;
   }
 }
 

@@ -116,6 +116,9 @@ function make(world: PhysicsWorld, where: string, type: number, e: { a: number; 
   ensureJointArrays(world.joints, world.capacity);
   world.joints.noCollideJoint[j] = 0;
   if (o.collideConnected !== true) addNoCollide(world.joints, j, e.a, e.b);
+  // A sleeping body newly held (or pulled) by a joint wakes, with its island (as 2D joints).
+  if (e.a !== 0) wakeIsland(world, e.a);
+  wakeIsland(world, e.b);
   return j;
 }
 
