@@ -61,6 +61,23 @@ describe('render-three: pick normals in the physics frame', () => {
     r.destroy();
   });
 
+  it('a compound: the face of a part turned in the body frame', () => {
+    const { w, r } = setup();
+    // Two boxes on one body: one at its reference point, one 2 m along x turned 0.3 rad about x. The
+    // body itself turns to its principal axes (updateMassFromShapes3D); the part's world pose does not.
+    const body = addBody(w, { position: [0, 0, -3] });
+    addShape3D(w, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+    const t = 0.3;
+    addShape3D(w, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], offset: [2, 0, 0], rotation: [Math.sin(t / 2), 0, 0, Math.cos(t / 2)] });
+    r.render(1);
+    // Straight down -z at the part's centre line: its +z face, turned to (0, -sin t, cos t), at z = -3 + 0.5 / cos t.
+    const hit = r.pick(0, 0, cameraAt(r, [2, 0, 0], [2, 0, -3]));
+    expect(hit?.eid).toBe(body);
+    expectNormal(hit?.normal, [0, -Math.sin(t), Math.cos(t)]);
+    expect(hit!.point[2]).toBeCloseTo(-3 + 0.5 / Math.cos(t), 9);
+    r.destroy();
+  });
+
   it('a body drawn without a collider (its inertia box): the face normal in the physics frame, not the scene\'s', () => {
     const { w, r } = setup();
     // A plain rigid body: principal moments of a 1 x 1 x 1 m, 6 kg cube (m s^2 / 6 = 1): drawn as that cube.
