@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { PerspectiveCamera, Scene, Vector3 } from 'three';
-import { addBody, addShape3D, createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
+import { addBody, addShape3D, createPhysicsWorld, setPosition, type PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer3D } from '../../packages/render-three/src/index';
 
 /** A renderer whose root is turned in the scene (Euler XYZ: -90 degrees about x, 0.3 rad about z) and moved to (1, 2, 3). */
@@ -75,6 +75,29 @@ describe('render-three: pick normals in the physics frame', () => {
     expect(hit?.eid).toBe(body);
     expectNormal(hit?.normal, [0, -Math.sin(t), Math.cos(t)]);
     expect(hit!.point[2]).toBeCloseTo(-3 + 0.5 / Math.cos(t), 9);
+    r.destroy();
+  });
+
+  it('with the root scaled, a collider hit and a drawn-only hit report scene distances, and the nearer one wins', () => {
+    const { w, r } = setup();
+    r.root.scale.setScalar(2);
+    r.root.updateMatrixWorld(true);
+    // A box collider 3 m ahead (face at 2.5 m) and, behind it, a body drawn without a collider (face at 4.5 m).
+    const box = addBody(w, { position: [0, 0, -3] });
+    addShape3D(w, box, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+    const drawn = addBody(w, { position: [0, 0, -5], mass: 6, inertia: [1, 1, 1] });
+    r.render(1);
+    const camera = cameraAt(r, [0, 0, 0], [0, 0, -3]);
+    const hit = r.pick(0, 0, camera);
+    // The scene distance is the physics distance times the root's scale (2): 5, not 2.5.
+    expect(hit?.eid).toBe(box);
+    expect(hit!.distance).toBeCloseTo(2 * 2.5, 6);
+    // Moved aside, the collider-less body behind is hit, 2 x 4.5 = 9 scene units away.
+    setPosition(w, box, [0, 10, -3]);
+    r.render(1);
+    const behind = r.pick(0, 0, camera);
+    expect(behind?.eid).toBe(drawn);
+    expect(behind!.distance).toBeCloseTo(2 * 4.5, 4);
     r.destroy();
   });
 

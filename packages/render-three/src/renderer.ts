@@ -661,7 +661,8 @@ export class WorldRenderer3D {
     const o = this.v3.copy(ray.origin);
     this.root.worldToLocal(o);
     const ox = o.x / k, oy = o.y / k, oz = o.z / k;
-    const far = this.v3.copy(ray.origin).addScaledVector(ray.direction, (camera as { far?: number }).far ?? 1000);
+    const farDistance = (camera as { far?: number }).far ?? 1000; // scene units: the physics segment's length in the scene
+    const far = this.v3.copy(ray.origin).addScaledVector(ray.direction, farDistance);
     this.root.worldToLocal(far);
     const tx = far.x / k - ox, ty = far.y / k - oy, tz = far.z / k - oz;
     const rayLength = Math.hypot(tx, ty, tz);
@@ -671,7 +672,7 @@ export class WorldRenderer3D {
     if (rayLength > 0) {
       const hit = rayCast3D(world, [ox, oy, oz], [tx, ty, tz]);
       if (hit) {
-        physicsDistance = hit.fraction * rayLength * k;
+        physicsDistance = hit.fraction * farDistance; // scene units, whatever the root's scale
         if (hit.body === 0) blocked = true;
         else physics = { eid: hit.body, point: [hit.x, hit.y, hit.z], normal: [hit.nx, hit.ny, hit.nz], distance: physicsDistance };
       }
