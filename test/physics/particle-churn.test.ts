@@ -206,4 +206,44 @@ describe('particle churn', () => {
     expect(stateHash(copy)).toBe(stateHash(original));
     expectQueriesConsistent(copy);
   });
+
+  test('births queued and written one array at a time leave every store exactly as births one by one (a birth hook turns the queue off)', () => {
+    // The reference is the one-by-one path (spawnOne), which a registered birth hook forces; the hook
+    // does nothing, so both worlds must agree on every element of every component store, the entity
+    // index and the queries. Fireworks covers bursts (onDeath) and rate births of two kinds; the second
+    // emitter (emitNow) the other kinds: a collider (Ball, Material), linear drag and a gravity scale.
+    const build = (hooked: boolean): PhysicsWorld => {
+      const def = SCENES.fireworks!;
+      const world = createPhysicsWorld(def.worldOptions({ count: 3000 }));
+      def.build(world, { count: 3000 });
+      if (hooked) onParticleBirth(world, () => {});
+      const other = addEmitter(world, {
+        position: [5, 5], shape: 'disc', size: 1, speed: [1, 4], lifetime: [0.2, 0.6],
+        particle: { radius: 0.05, mass: 0.01, linearDrag: 0.001, gravityScale: 0.5, colorStart: 0x336699 },
+      });
+      for (let i = 0; i < 260; i++) {
+        if (i % 20 === 0) emitNow(world, other, 150, [i * 0.1, 3], [1, 2]);
+        step(world);
+      }
+      return world;
+    };
+    const queued = build(false), oneByOne = build(true);
+    expect(queued.entityIndex.aliveCount).toBeGreaterThan(1500);
+    expect(Array.from(queued.entityIndex.dense)).toEqual(Array.from(oneByOne.entityIndex.dense));
+    let arrays = 0;
+    for (const [name, store] of Object.entries(queued.components)) {
+      const other = (oneByOne.components as unknown as Record<string, Record<string, unknown>>)[name]!;
+      for (const [field, a] of Object.entries(store as Record<string, unknown>)) {
+        if (!ArrayBuffer.isView(a)) continue;
+        const b = other[field] as ArrayLike<number>;
+        const x = a as unknown as ArrayLike<number>;
+        expect(x.length, `${name}.${field}`).toBe(b.length);
+        for (let i = 0; i < x.length; i++) if (!Object.is(x[i], b[i])) expect(`${name}.${field}[${i}] = ${x[i]}`).toBe(`${name}.${field}[${i}] = ${b[i]}`);
+        arrays++;
+      }
+    }
+    expect(arrays).toBeGreaterThan(40);
+    expect(stateHash(queued)).toBe(stateHash(oneByOne));
+    expectQueriesConsistent(queued);
+  });
 });
