@@ -59,6 +59,24 @@ export function boxBox3D(
   bx: number, by: number, bz: number, RB: Float64Array, ob: number, eb0: number, eb1: number, eb2: number,
   margin: number, out: Manifold3D,
 ): void {
+  const g = boxArgs;
+  g[0] = ax; g[1] = ay; g[2] = az; g[3] = ea0; g[4] = ea1; g[5] = ea2;
+  g[6] = bx; g[7] = by; g[8] = bz; g[9] = eb0; g[10] = eb1; g[11] = eb2; g[12] = margin;
+  boxBox3DAt(RA, oa, RB, ob, out);
+}
+
+/**
+ * `boxBox3D`'s numbers, for `boxBox3DAt`: A's centre (m) and half extents (m), B's centre and half
+ * extents, then the margin (m). A hot caller writes them here instead of passing them: V8 boxes every
+ * double passed to a call it does not inline (a heap number each, garbage every step).
+ */
+export const boxArgs = new Float64Array(13);
+
+/** `boxBox3D` with its numbers read from `boxArgs` (A's centre, half extents, B's centre, half extents, margin). */
+export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: number, out: Manifold3D): void {
+  const g = boxArgs;
+  const ax = g[0]!, ay = g[1]!, az = g[2]!, ea0 = g[3]!, ea1 = g[4]!, ea2 = g[5]!;
+  const bx = g[6]!, by = g[7]!, bz = g[8]!, eb0 = g[9]!, eb1 = g[10]!, eb2 = g[11]!, margin = g[12]!;
   out.count = 0;
   const tx = bx - ax, ty = by - ay, tz = bz - az;
   // C_ij = a_i . b_j (columns of R are the box axes in the world).
@@ -123,14 +141,15 @@ export function boxBox3D(
     edgeContact(ax, ay, az, RA, oa, ea0, ea1, ea2, bx, by, bz, RB, ob, eb0, eb1, eb2, tx, ty, tz, eI, eJ, margin, out);
     return;
   }
+  // faceContact reads the boxes' numbers from boxArgs: reference first when flipped is 0, else incident first.
   if (sB > sA + FACE_BIAS * size) {
     // B's face is the reference: A is the incident box; the normal comes out of B, flipped to A -> B.
     const tb = fB === 0 ? tb0 : fB === 1 ? tb1 : tb2;
-    faceContact(bx, by, bz, RB, ob, eb0, eb1, eb2, fB, tb > 0 ? -1 : 1, ax, ay, az, RA, oa, ea0, ea1, ea2, margin, out, 1);
+    faceContact(RB, ob, fB, tb > 0 ? -1 : 1, RA, oa, out, 1);
     out.nx = -out.nx; out.ny = -out.ny; out.nz = -out.nz;
   } else {
     const tf = fA === 0 ? ta0 : fA === 1 ? ta1 : ta2;
-    faceContact(ax, ay, az, RA, oa, ea0, ea1, ea2, fA, tf >= 0 ? 1 : -1, bx, by, bz, RB, ob, eb0, eb1, eb2, margin, out, 0);
+    faceContact(RA, oa, fA, tf >= 0 ? 1 : -1, RB, ob, out, 0);
   }
 }
 
@@ -138,11 +157,11 @@ export function boxBox3D(
  * Reference box R's face (axis k, side sg: normal sg r_k, pointing at the incident box I) against I's
  * most opposed face, clipped; writes the points and the normal (out of R) into `out`.
  */
-function faceContact(
-  rx: number, ry: number, rz: number, RR: Float64Array, or: number, er0: number, er1: number, er2: number, k: number, sg: number,
-  ix: number, iy: number, iz: number, RI: Float64Array, oi: number, ei0: number, ei1: number, ei2: number,
-  margin: number, out: Manifold3D, flipped: number,
-): void {
+function faceContact(RR: Float64Array, or: number, k: number, sg: number, RI: Float64Array, oi: number, out: Manifold3D, flipped: number): void {
+  // Centre and half extents of the reference box R and the incident box I (boxArgs: A then B; R is B when flipped).
+  const g = boxArgs, r = flipped === 0 ? 0 : 6, io = 6 - r, margin = g[12]!;
+  const rx = g[r]!, ry = g[r + 1]!, rz = g[r + 2]!, er0 = g[r + 3]!, er1 = g[r + 4]!, er2 = g[r + 5]!;
+  const ix = g[io]!, iy = g[io + 1]!, iz = g[io + 2]!, ei0 = g[io + 3]!, ei1 = g[io + 4]!, ei2 = g[io + 5]!;
   const k1 = k === 2 ? 0 : k + 1, k2 = k === 0 ? 2 : k - 1;
   const nx = sg * RR[or + k]!, ny = sg * RR[or + 3 + k]!, nz = sg * RR[or + 6 + k]!;
   const ux = RR[or + k1]!, uy = RR[or + 3 + k1]!, uz = RR[or + 6 + k1]!;
@@ -202,7 +221,7 @@ function faceContact(
     kx[c] = rx + pu[i]! * ux + pv[i]! * vx + w * nx; ky[c] = ry + pu[i]! * uy + pv[i]! * vy + w * ny; kz[c] = rz + pu[i]! * uz + pv[i]! * vz + w * nz;
     ks[c] = s; kid[c] = base + pid[i]!; c++;
   }
-  reduceToFour(c, nx, ny, nz, out);
+  reduceToFour(c, out);
 }
 
 /** Edge a_i of A against edge b_j of B: one point between their closest points. */
@@ -214,7 +233,7 @@ function edgeContact(
   const dax = RA[oa + i]!, day = RA[oa + 3 + i]!, daz = RA[oa + 6 + i]!;
   const dbx = RB[ob + j]!, dby = RB[ob + 3 + j]!, dbz = RB[ob + 6 + j]!;
   let nx = day * dbz - daz * dby, ny = daz * dbx - dax * dbz, nz = dax * dby - day * dbx;
-  const l = Math.hypot(nx, ny, nz);
+  const l = Math.sqrt(nx * nx + ny * ny + nz * nz);
   nx /= l; ny /= l; nz /= l;
   if (nx * tx + ny * ty + nz * tz < 0) { nx = -nx; ny = -ny; nz = -nz; }
   // A's edge: the support of A along n among the edges parallel to a_i; B's along -n.
@@ -260,6 +279,18 @@ function edgeContact(
  * the corners below the margin, reduced to four; normal the plane's; ids the corner numbers.
  */
 export function planeBox3D(nx: number, ny: number, nz: number, d: number, cx: number, cy: number, cz: number, R: Float64Array, o: number, e0: number, e1: number, e2: number, margin: number, out: Manifold3D): void {
+  const g = planeArgs;
+  g[0] = nx; g[1] = ny; g[2] = nz; g[3] = d; g[4] = cx; g[5] = cy; g[6] = cz; g[7] = e0; g[8] = e1; g[9] = e2; g[10] = margin;
+  planeBox3DAt(R, o, out);
+}
+
+/** `planeBox3D`'s numbers for `planeBox3DAt` (see `boxArgs`): the plane's n and d, the box's centre and half extents, the margin. */
+export const planeArgs = new Float64Array(11);
+
+/** `planeBox3D` with its numbers read from `planeArgs`. */
+export function planeBox3DAt(R: Float64Array, o: number, out: Manifold3D): void {
+  const g = planeArgs;
+  const nx = g[0]!, ny = g[1]!, nz = g[2]!, d = g[3]!, cx = g[4]!, cy = g[5]!, cz = g[6]!, e0 = g[7]!, e1 = g[8]!, e2 = g[9]!, margin = g[10]!;
   out.count = 0; out.nx = nx; out.ny = ny; out.nz = nz;
   const c0 = cx * nx + cy * ny + cz * nz - d;
   // Corner heights above the plane: c0 +- e_k (n . r_k).
@@ -275,11 +306,12 @@ export function planeBox3D(nx: number, ny: number, nz: number, d: number, cx: nu
     const z = cz + s0 * e0 * R[o + 6]! + s1 * e1 * R[o + 7]! + s2 * e2 * R[o + 8]!;
     kx[c] = x - nx * s / 2; ky[c] = y - ny * s / 2; kz[c] = z - nz * s / 2; ks[c] = s; kid[c] = v; c++;
   }
-  reduceToFour(c, nx, ny, nz, out);
+  reduceToFour(c, out);
 }
 
-/** Copies the c candidates into `out`, reduced to four when more (the deepest, the farthest from it, the largest areas either side). */
-function reduceToFour(c: number, nx: number, ny: number, nz: number, out: Manifold3D): void {
+/** Copies the c candidates into `out` (its normal already set), reduced to four when more (the deepest, the farthest from it, the largest areas either side). */
+function reduceToFour(c: number, out: Manifold3D): void {
+  const nx = out.nx, ny = out.ny, nz = out.nz;
   if (c <= 4) {
     for (let i = 0; i < c; i++) { out.x[i] = kx[i]!; out.y[i] = ky[i]!; out.z[i] = kz[i]!; out.sep[i] = ks[i]!; out.id[i] = kid[i]!; }
     out.count = c;

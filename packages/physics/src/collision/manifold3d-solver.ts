@@ -254,37 +254,6 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
 }
 
 /**
- * Applies impulse lambda along direction u (d: 0 n, 1 t1, 2 t2) at point q: -lambda u to A, +lambda u
- * to B, the angular parts from the point's precomputed I^-1 (r x u), or for an isotropic manifold
- * (`iA`, `iB` >= 0) i (r x u) from its crosses. Body row 0 (the static world) is never written.
- */
-function apply(sb: Float64Array, J: Float32Array, ka: number, kb: number, q: number, d: number, lam: number, ux: number, uy: number, uz: number, iA: number, iB: number): void {
-  const c = JAC * q + 6 * d, o = c + INV, iso = iA >= 0;
-  if (ka > 0) {
-    const a = 12 * ka, m = sb[a + 9]! * lam;
-    sb[a] = sb[a]! - m * ux; sb[a + 1] = sb[a + 1]! - m * uy; sb[a + 2] = sb[a + 2]! - m * uz;
-    if (iso) { const g = iA * lam; sb[a + 3] = sb[a + 3]! - g * J[c]!; sb[a + 4] = sb[a + 4]! - g * J[c + 1]!; sb[a + 5] = sb[a + 5]! - g * J[c + 2]!; }
-    else { sb[a + 3] = sb[a + 3]! - lam * J[o]!; sb[a + 4] = sb[a + 4]! - lam * J[o + 1]!; sb[a + 5] = sb[a + 5]! - lam * J[o + 2]!; }
-    sb[a + 11] = 1;
-  }
-  if (kb > 0) {
-    const b = 12 * kb, m = sb[b + 9]! * lam;
-    sb[b] = sb[b]! + m * ux; sb[b + 1] = sb[b + 1]! + m * uy; sb[b + 2] = sb[b + 2]! + m * uz;
-    if (iso) { const g = iB * lam; sb[b + 3] = sb[b + 3]! + g * J[c + 3]!; sb[b + 4] = sb[b + 4]! + g * J[c + 4]!; sb[b + 5] = sb[b + 5]! + g * J[c + 5]!; }
-    else { sb[b + 3] = sb[b + 3]! + lam * J[o + 3]!; sb[b + 4] = sb[b + 4]! + lam * J[o + 4]!; sb[b + 5] = sb[b + 5]! + lam * J[o + 5]!; }
-    sb[b + 11] = 1;
-  }
-}
-
-/** Relative velocity of B against A at point q along direction u (d as in `apply`). */
-function relativeSpeed(sb: Float64Array, J: Float32Array, a: number, b: number, q: number, d: number, ux: number, uy: number, uz: number): number {
-  const o = JAC * q + 6 * d;
-  return (sb[b]! - sb[a]!) * ux + (sb[b + 1]! - sb[a + 1]!) * uy + (sb[b + 2]! - sb[a + 2]!) * uz
-    + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
-    - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
-}
-
-/**
  * Warm start: last step's impulses applied again. A manifold's normal impulses are summed over its points
  * (linear sum(ln) n, angular sum(ln I^-1 (r x n))), its friction impulses added, and each body written once.
  */
@@ -512,29 +481,51 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   }
 }
 
-/** Restitution after the substeps: points that approached faster than the threshold and carried impulse leave at >= e times that speed. */
+/**
+ * Restitution after the substeps: points that approached faster than the threshold and carried impulse
+ * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
+ */
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
   const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians, T = st.invInertia;
   const threshold = cs.settings.restitutionThreshold;
+  const VN0 = buf.vn0, MAX = buf.maxLn, LN = buf.ln, MN = buf.mn;
   for (let pass = 0; pass < 4; pass++) {
     for (let i = 0; i < buf.count; i++) {
       const e = buf.restitution[i]!;
       if (e === 0) continue;
       const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
-      // apply's isotropic factors (-1: read the stored products).
-      const iA = buf.iso[i] === 1 ? T[6 * ka]! : -1, iB = buf.iso[i] === 1 ? T[6 * kb]! : -1;
+      // Isotropic: I^-1 (r x n) = i (r x n), from the crosses; else the stored products.
+      const iso = buf.iso[i] === 1, iA = iso ? T[6 * ka]! : 0, iB = iso ? T[6 * kb]! : 0;
       const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
-        if (buf.vn0[q]! > -threshold || buf.maxLn[q] === 0) continue;
-        const vn = relativeSpeed(sb, J, a, b, q, 0, nx, ny, nz);
-        const old = buf.ln[q]!;
-        const lam = Math.max(old - buf.mn[q]! * (vn + e * buf.vn0[q]!), 0);
+        if (VN0[q]! > -threshold || MAX[q] === 0) continue;
+        const o = JAC * q;
+        const vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
+          + sb[b + 3]! * J[o + 3]! + sb[b + 4]! * J[o + 4]! + sb[b + 5]! * J[o + 5]!
+          - sb[a + 3]! * J[o]! - sb[a + 4]! * J[o + 1]! - sb[a + 5]! * J[o + 2]!;
+        const old = LN[q]!;
+        const lam = Math.max(old - MN[q]! * (vn + e * VN0[q]!), 0);
         const dl = lam - old;
-        buf.ln[q] = lam;
-        if (dl !== 0) apply(sb, J, ka, kb, q, 0, dl, nx, ny, nz, iA, iB);
+        LN[q] = lam;
+        if (dl === 0) continue;
+        // Body row 0 (the static world) is never written.
+        if (ka > 0) {
+          const f = sb[a + 9]! * dl;
+          sb[a] = sb[a]! - f * nx; sb[a + 1] = sb[a + 1]! - f * ny; sb[a + 2] = sb[a + 2]! - f * nz;
+          if (iso) { const g = iA * dl; sb[a + 3] = sb[a + 3]! - g * J[o]!; sb[a + 4] = sb[a + 4]! - g * J[o + 1]!; sb[a + 5] = sb[a + 5]! - g * J[o + 2]!; }
+          else { const p = o + INV; sb[a + 3] = sb[a + 3]! - dl * J[p]!; sb[a + 4] = sb[a + 4]! - dl * J[p + 1]!; sb[a + 5] = sb[a + 5]! - dl * J[p + 2]!; }
+          sb[a + 11] = 1;
+        }
+        if (kb > 0) {
+          const f = sb[b + 9]! * dl;
+          sb[b] = sb[b]! + f * nx; sb[b + 1] = sb[b + 1]! + f * ny; sb[b + 2] = sb[b + 2]! + f * nz;
+          if (iso) { const g = iB * dl; sb[b + 3] = sb[b + 3]! + g * J[o + 3]!; sb[b + 4] = sb[b + 4]! + g * J[o + 4]!; sb[b + 5] = sb[b + 5]! + g * J[o + 5]!; }
+          else { const p = o + INV; sb[b + 3] = sb[b + 3]! + dl * J[p + 3]!; sb[b + 4] = sb[b + 4]! + dl * J[p + 4]!; sb[b + 5] = sb[b + 5]! + dl * J[p + 5]!; }
+          sb[b + 11] = 1;
+        }
       }
     }
   }

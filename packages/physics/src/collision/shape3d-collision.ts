@@ -8,7 +8,7 @@ import { clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, looku
 import { currentHandle } from '../handles.js';
 import { meshesOf, type Mesh3D } from './mesh3d.js';
 import { wakeIsland3D, wakesSleeper3D } from './shape3d-islands.js';
-import { boxBox3D, planeBox3D } from './box-box3d.js';
+import { boxArgs, boxBox3DAt, planeArgs, planeBox3DAt } from './box-box3d.js';
 import { jointKeepsApart } from '../joints/connected.js';
 
 /** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */
@@ -460,7 +460,11 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
     else {
       const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
-      boxBox3D(sc.px[a]!, sc.py[a]!, sc.pz[a]!, sc.R, 9 * a, s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, sc.px[b]!, sc.py[b]!, sc.pz[b]!, sc.R, 9 * b, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!, margin, manifold);
+      // The numbers go through boxArgs (doubles passed to a call are boxed: garbage every step).
+      const g = boxArgs;
+      g[0] = sc.px[a]!; g[1] = sc.py[a]!; g[2] = sc.pz[a]!; g[3] = s.hx[ea]!; g[4] = s.hy[ea]!; g[5] = s.hz[ea]!;
+      g[6] = sc.px[b]!; g[7] = sc.py[b]!; g[8] = sc.pz[b]!; g[9] = s.hx[eb]!; g[10] = s.hy[eb]!; g[11] = s.hz[eb]!; g[12] = margin;
+      boxBox3DAt(sc.R, 9 * a, sc.R, 9 * b, manifold);
       boxRow.from = -1;
     }
     boxRow.a = a; boxRow.b = b; boxRow.prev = prev;
@@ -617,7 +621,11 @@ function planesAndMeshes(world: PhysicsWorld, s: Shape3DStore, st: Contact3DStat
       const nx = P.nx[p]!, ny = P.ny[p]!, nz = P.nz[p]!, d = P.d[p]!;
       // Cheap reject: the bounding sphere above the plane by more than the margin.
       if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) continue;
-      if (box) planeBox3D(nx, ny, nz, d, sc.px[i]!, sc.py[i]!, sc.pz[i]!, sc.R, 9 * i, s.hx[e]!, s.hy[e]!, s.hz[e]!, margin, manifold);
+      if (box) {
+        const g = planeArgs;
+        g[0] = nx; g[1] = ny; g[2] = nz; g[3] = d; g[4] = sc.px[i]!; g[5] = sc.py[i]!; g[6] = sc.pz[i]!; g[7] = s.hx[e]!; g[8] = s.hy[e]!; g[9] = s.hz[e]!; g[10] = margin;
+        planeBox3DAt(sc.R, 9 * i, manifold);
+      }
       else {
         if (!posed) { collider(world, s, i, colB); posed = true; }
         collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
@@ -656,8 +664,8 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
     const P = type[bodyB] === BodyType.Static ? c.Position : c.PreviousPosition;
     bx = P.x[bodyB]!; by = P.y[bodyB]!; bz = P.z[bodyB]!;
   }
-  if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB, nx, ny, nz);
-  if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA, nx, ny, nz);
+  if (bodyB !== 0 && !ballB) meridianPoints(world, s, eb, bodyB);
+  if (bodyA !== 0 && !ballA && plane === 0) meridianPoints(world, s, ea, bodyA);
   // A box pair's reuse fields (see REUSE_SHIFT); other rows are never reused.
   if (boxRow.a >= 0) storeLocal(st, buf, i); else buf.local[i] = 0;
   const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
@@ -696,8 +704,10 @@ function emit(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, bodyA: n
  * (separation s > 0) that the spin could carry by more than s / 2 are moved, so a cylinder resting on its
  * rim points, or landing flat without much spin, keeps them where they are.
  */
-function meridianPoints(world: PhysicsWorld, s: Shape3DStore, e: number, body: number, nx: number, ny: number, nz: number): void {
+function meridianPoints(world: PhysicsWorld, s: Shape3DStore, e: number, body: number): void {
   if (colliderStamp[e] !== colliderPass || s.kind[e] !== Shape3DKind.Cylinder) return;
+  // The normal is the manifold's (read here: doubles passed to a call are boxed).
+  const nx = manifold.nx, ny = manifold.ny, nz = manifold.nz;
   const i = colliderOf[e]!, sc = scratch, R = sc.R, o = 9 * i, W = world.components.AngularVelocity;
   if (!(W.x.length > body)) return;
   // The cylinder's axis (its shape y axis) and u = a x n, across the meridian plane.
