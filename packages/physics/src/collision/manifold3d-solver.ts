@@ -23,7 +23,7 @@ import { currentHandle } from '../handles.js';
  *   the points' mean distance from the anchor (the torque the points' friction could resist). A manifold
  *   of four points so solves three friction rows instead of eight;
  * - per point, r x n and I^-1 (r x n) of both bodies, and per manifold the anchor's r x t1, r x t2 and
- *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`), so a pass reads
+ *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`, and the I^-1 products apart: `jacobiansInv`, `frictionInv`), so a pass reads
  *   them instead of multiplying tensors; a manifold whose two bodies are isotropic (I^-1 = i 1: spheres,
  *   cubes, or a static side) reads only r x u and scales it by i, half the memory a pass streams; the points of a manifold are solved in alternating order from
  *   substep to substep; a manifold whose normal rows are all rigid in a pass (speculative, or a relax
@@ -34,19 +34,18 @@ import { currentHandle } from '../handles.js';
  */
 
 /**
- * Numbers a point keeps in `jacobians`: r_A x n, r_B x n, then I_A^-1 (r_A x n), I_B^-1 (r_B x n) (at INV),
- * so an isotropic manifold's passes touch only the first 6.
+ * Numbers a point keeps in `jacobians` (r_A x n, r_B x n) and in `jacobiansInv` (I_A^-1 (r_A x n),
+ * I_B^-1 (r_B x n), only for a manifold whose bodies are not isotropic: a pile of cubes streams the crosses alone).
  */
-const JAC = 12;
-const INV = 6;
+const JAC = 6;
 /**
  * Numbers a manifold keeps in `frictionJacobians`: r_A x u, r_B x u of the friction anchor for u = t1, t2
- * (at 6 d, d = 0, 1), then I_A^-1 (r_A x u), I_B^-1 (r_B x u) in the same order (at FINV + 6 d), then
- * I_A^-1 n, I_B^-1 n (at TWIST) for the twist row (an isotropic manifold reads the first 12 only).
+ * (at 6 d, d = 0, 1); and in `frictionInv` (not isotropic manifolds only, FI a row): I_A^-1 (r_A x u),
+ * I_B^-1 (r_B x u) in the same order, then I_A^-1 n, I_B^-1 n (at TWIST) for the twist row.
  */
-const FJ = 32;
-const FINV = 12;
-const TWIST = 24;
+const FJ = 12;
+const FI = 18;
+const TWIST = 12;
 
 /** Stiffness as a fraction of the substep rate (as the 2D shape contacts: manifold-solver.ts). */
 const HERTZ_FRACTION = 0.125;
@@ -128,9 +127,12 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
   void count;
   if (n === 0) return;
-  if (st.jacobians.length < JAC * 4 * n) st.jacobians = new Float32Array(JAC * 4 * Math.max(n, 2 * st.jacobians.length / (4 * JAC)));
-  if (st.frictionJacobians.length < FJ * n) st.frictionJacobians = new Float32Array(FJ * Math.max(n, 2 * st.frictionJacobians.length / FJ));
-  const J = st.jacobians, F = st.frictionJacobians;
+  if (st.jacobians.length < JAC * 4 * n) {
+    const rows = Math.max(n, 2 * st.jacobians.length / (4 * JAC));
+    st.jacobians = new Float32Array(JAC * 4 * rows); st.jacobiansInv = new Float32Array(JAC * 4 * rows);
+    st.frictionJacobians = new Float32Array(FJ * rows); st.frictionInv = new Float32Array(FI * rows);
+  }
+  const J = st.jacobians, JI = st.jacobiansInv, F = st.frictionJacobians, FV = st.frictionInv;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb, ta = 6 * ka, tb = 6 * kb;
@@ -159,7 +161,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const xbx = rby * nz - rbz * ny, xby = rbz * nx - rbx * nz, xbz = rbx * ny - rby * nx;
       J[o] = xax; J[o + 1] = xay; J[o + 2] = xaz; J[o + 3] = xbx; J[o + 4] = xby; J[o + 5] = xbz;
       const k0 = iso ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
-        : mA + mB + inertiaInto(J, o + INV, T, ta, xax, xay, xaz) + inertiaInto(J, o + INV + 3, T, tb, xbx, xby, xbz);
+        : mA + mB + inertiaInto(JI, o, T, ta, xax, xay, xaz) + inertiaInto(JI, o + 3, T, tb, xbx, xby, xbz);
       buf.mn[q] = k0 > 0 ? 1 / k0 : 0;
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny + (sb[b + 2]! - sb[a + 2]!) * nz
@@ -196,11 +198,11 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const o = f + 6 * d;
       F[o] = xax; F[o + 1] = xay; F[o + 2] = xaz; F[o + 3] = xbx; F[o + 4] = xby; F[o + 5] = xbz;
       const k0 = iso ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
-        : mA + mB + inertiaInto(F, o + FINV, T, ta, xax, xay, xaz) + inertiaInto(F, o + FINV + 3, T, tb, xbx, xby, xbz);
+        : mA + mB + inertiaInto(FV, FI * i + 6 * d, T, ta, xax, xay, xaz) + inertiaInto(FV, FI * i + 6 * d + 3, T, tb, xbx, xby, xbz);
       if (d === 0) buf.mt1[i] = k0 > 0 ? 1 / k0 : 0; else buf.mt2[i] = k0 > 0 ? 1 / k0 : 0;
     }
     // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
-    const kw = iso ? T[ta]! + T[tb]! : inertiaInto(F, f + TWIST, T, ta, nx, ny, nz) + inertiaInto(F, f + TWIST + 3, T, tb, nx, ny, nz);
+    const kw = iso ? T[ta]! + T[tb]! : inertiaInto(FV, FI * i + TWIST, T, ta, nx, ny, nz) + inertiaInto(FV, FI * i + TWIST + 3, T, tb, nx, ny, nz);
     buf.mtw[i] = kw > 0 ? 1 / kw : 0;
   }
 }
@@ -260,18 +262,18 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const buf = st.current, sb = world.collision.bodyState, J = st.jacobians, F = st.frictionJacobians, T = st.invInertia;
+  const buf = st.current, sb = world.collision.bodyState, T = st.invInertia;
   const LN = buf.ln;
   for (let i = 0; i < buf.count; i++) {
     const f1 = buf.ft1[i]!, f2 = buf.ft2[i]!, fw = buf.ftw[i]!;
     // Sum of the normal impulses and their angular parts on A and B.
     let sn = 0, ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
-    const iso = buf.iso[i] === 1, c = iso ? 0 : INV;
+    const iso = buf.iso[i] === 1, J = iso ? st.jacobians : st.jacobiansInv;
     for (let k = 0, m = buf.points[i]!; k < m; k++) {
       const q = 4 * i + k, ln = LN[q]!;
       if (ln === 0) continue;
       // Isotropic: i sum(ln r x n) from the crosses (scaled by i below); else the stored products.
-      const o = JAC * q + c;
+      const o = JAC * q;
       sn += ln;
       ax += ln * J[o]!; ay += ln * J[o + 1]!; az += ln * J[o + 2]!;
       bx += ln * J[o + 3]!; by += ln * J[o + 4]!; bz += ln * J[o + 5]!;
@@ -281,12 +283,12 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
     const px = sn * nx + f1 * t1x + f2 * t2x, py = sn * ny + f1 * t1y + f2 * t2y, pz = sn * nz + f1 * t1z + f2 * t2z;
     // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
-    const o = FJ * i + (iso ? 0 : FINV);
+    const F = iso ? st.frictionJacobians : st.frictionInv, o = (iso ? FJ : FI) * i;
     ax += f1 * F[o]! + f2 * F[o + 6]!; ay += f1 * F[o + 1]! + f2 * F[o + 7]!; az += f1 * F[o + 2]! + f2 * F[o + 8]!;
     bx += f1 * F[o + 3]! + f2 * F[o + 9]!; by += f1 * F[o + 4]! + f2 * F[o + 10]!; bz += f1 * F[o + 5]! + f2 * F[o + 11]!;
     if (iso) { ax += fw * nx; ay += fw * ny; az += fw * nz; bx += fw * nx; by += fw * ny; bz += fw * nz; }
     else {
-      const w = FJ * i + TWIST;
+      const w = o + TWIST;
       ax += fw * F[w]!; ay += fw * F[w + 1]!; az += fw * F[w + 2]!; bx += fw * F[w + 3]!; by += fw * F[w + 4]!; bz += fw * F[w + 5]!;
     }
     const ka = buf.ia[i]!, kb = buf.ib[i]!, a = 12 * ka, b = 12 * kb;
@@ -309,14 +311,14 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
 export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const cs = world.collision, buf = st.current, sb = cs.bodyState, ex = cs.bodyExtra, base = st.rotationBase, J = st.jacobians;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, ex = cs.bodyExtra, base = st.rotationBase, J = st.jacobians, JI = st.jacobiansInv;
   const push = cs.settings.contactPushSpeed;
   // Points in alternating order from substep to substep (symmetric Gauss-Seidel; the relax pass keeps
   // its substep's order), so the order a manifold's points are solved in leaves no systematic torque.
   if (useBias) st.solveParity ^= 1;
   const backward = st.solveParity === 1;
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
-  const sep = buf.sep, LN = buf.ln, MN = buf.mn, MAX = buf.maxLn, F = st.frictionJacobians;
+  const sep = buf.sep, LN = buf.ln, MN = buf.mn, MAX = buf.maxLn, F = st.frictionJacobians, FV = st.frictionInv;
   const FT1 = buf.ft1, FT2 = buf.ft2, FTW = buf.ftw, MT1 = buf.mt1, MT2 = buf.mt2, MTW = buf.mtw, ARM = buf.arm;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
   const ISO = buf.iso, T = st.invInertia, MINSEP = buf.minSep, RA = buf.reachA, RB = buf.reachB;
@@ -388,9 +390,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
             wax -= ga * ra0; way -= ga * ra1; waz -= ga * ra2;
             wbx += gb * rb0; wby += gb * rb1; wbz += gb * rb2;
           } else {
-            const p = o + INV;
-            wax -= dl * J[p]!; way -= dl * J[p + 1]!; waz -= dl * J[p + 2]!;
-            wbx += dl * J[p + 3]!; wby += dl * J[p + 4]!; wbz += dl * J[p + 5]!;
+            wax -= dl * JI[o]!; way -= dl * JI[o + 1]!; waz -= dl * JI[o + 2]!;
+            wbx += dl * JI[o + 3]!; wby += dl * JI[o + 4]!; wbz += dl * JI[o + 5]!;
           }
           pushed = true;
           change += dl > 0 ? dl : -dl;
@@ -408,7 +409,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
       const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
       const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-      // t1 (crosses at f, inverse products at f + FINV), then t2 (6 further on).
+      // t1 (crosses at f, inverse products at FI i), then t2 (6 further on in both).
       let f = FJ * i;
       let ca0 = F[f]!, ca1 = F[f + 1]!, ca2 = F[f + 2]!, cb0 = F[f + 3]!, cb1 = F[f + 4]!, cb2 = F[f + 5]!;
       const vt1 = ((vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z)
@@ -426,9 +427,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
           wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
         } else {
-          const p = f + FINV;
-          wax -= d1 * F[p]!; way -= d1 * F[p + 1]!; waz -= d1 * F[p + 2]!;
-          wbx += d1 * F[p + 3]!; wby += d1 * F[p + 4]!; wbz += d1 * F[p + 5]!;
+          const p = FI * i;
+          wax -= d1 * FV[p]!; way -= d1 * FV[p + 1]!; waz -= d1 * FV[p + 2]!;
+          wbx += d1 * FV[p + 3]!; wby += d1 * FV[p + 4]!; wbz += d1 * FV[p + 5]!;
         }
         pushed = true;
       }
@@ -449,9 +450,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
           wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
         } else {
-          const p = f + FINV;
-          wax -= d2 * F[p]!; way -= d2 * F[p + 1]!; waz -= d2 * F[p + 2]!;
-          wbx += d2 * F[p + 3]!; wby += d2 * F[p + 4]!; wbz += d2 * F[p + 5]!;
+          const p = FI * i + 6;
+          wax -= d2 * FV[p]!; way -= d2 * FV[p + 1]!; waz -= d2 * FV[p + 2]!;
+          wbx += d2 * FV[p + 3]!; wby += d2 * FV[p + 4]!; wbz += d2 * FV[p + 5]!;
         }
         pushed = true;
       }
@@ -467,9 +468,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wax -= ga * nx; way -= ga * ny; waz -= ga * nz;
           wbx += gb * nx; wby += gb * ny; wbz += gb * nz;
         } else {
-          const p = FJ * i + TWIST;
-          wax -= dw * F[p]!; way -= dw * F[p + 1]!; waz -= dw * F[p + 2]!;
-          wbx += dw * F[p + 3]!; wby += dw * F[p + 4]!; wbz += dw * F[p + 5]!;
+          const p = FI * i + TWIST;
+          wax -= dw * FV[p]!; way -= dw * FV[p + 1]!; waz -= dw * FV[p + 2]!;
+          wbx += dw * FV[p + 3]!; wby += dw * FV[p + 4]!; wbz += dw * FV[p + 5]!;
         }
         pushed = true;
       }
@@ -488,7 +489,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians, T = st.invInertia;
+  const cs = world.collision, buf = st.current, sb = cs.bodyState, J = st.jacobians, JI = st.jacobiansInv, T = st.invInertia;
   const threshold = cs.settings.restitutionThreshold;
   const VN0 = buf.vn0, MAX = buf.maxLn, LN = buf.ln, MN = buf.mn;
   for (let pass = 0; pass < 4; pass++) {
@@ -516,14 +517,14 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           const f = sb[a + 9]! * dl;
           sb[a] = sb[a]! - f * nx; sb[a + 1] = sb[a + 1]! - f * ny; sb[a + 2] = sb[a + 2]! - f * nz;
           if (iso) { const g = iA * dl; sb[a + 3] = sb[a + 3]! - g * J[o]!; sb[a + 4] = sb[a + 4]! - g * J[o + 1]!; sb[a + 5] = sb[a + 5]! - g * J[o + 2]!; }
-          else { const p = o + INV; sb[a + 3] = sb[a + 3]! - dl * J[p]!; sb[a + 4] = sb[a + 4]! - dl * J[p + 1]!; sb[a + 5] = sb[a + 5]! - dl * J[p + 2]!; }
+          else { sb[a + 3] = sb[a + 3]! - dl * JI[o]!; sb[a + 4] = sb[a + 4]! - dl * JI[o + 1]!; sb[a + 5] = sb[a + 5]! - dl * JI[o + 2]!; }
           sb[a + 11] = 1;
         }
         if (kb > 0) {
           const f = sb[b + 9]! * dl;
           sb[b] = sb[b]! + f * nx; sb[b + 1] = sb[b + 1]! + f * ny; sb[b + 2] = sb[b + 2]! + f * nz;
           if (iso) { const g = iB * dl; sb[b + 3] = sb[b + 3]! + g * J[o + 3]!; sb[b + 4] = sb[b + 4]! + g * J[o + 4]!; sb[b + 5] = sb[b + 5]! + g * J[o + 5]!; }
-          else { const p = o + INV; sb[b + 3] = sb[b + 3]! + dl * J[p + 3]!; sb[b + 4] = sb[b + 4]! + dl * J[p + 4]!; sb[b + 5] = sb[b + 5]! + dl * J[p + 5]!; }
+          else { sb[b + 3] = sb[b + 3]! + dl * JI[o + 3]!; sb[b + 4] = sb[b + 4]! + dl * JI[o + 4]!; sb[b + 5] = sb[b + 5]! + dl * JI[o + 5]!; }
           sb[b + 11] = 1;
         }
       }

@@ -132,15 +132,19 @@ export interface Contact3DState {
   /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
   sensingNow: Map<number, number[]>;
   /**
-   * Per point of `current` (12 numbers each, manifold3d-solver.ts): r x n and I^-1 (r x n) of both bodies.
-   * Rebuilt every step; single precision (half the memory the solver streams each pass).
+   * Per point of `current` (6 numbers each, manifold3d-solver.ts): r x n of both bodies; `jacobiansInv`
+   * the same place: I^-1 (r x n) of both (written only for rows whose bodies are not isotropic, so a pile
+   * of cubes streams only the crosses). Rebuilt every step; single precision (half the memory).
    */
   jacobians: Float32Array;
+  jacobiansInv: Float32Array;
   /**
-   * Per row of `current` (32 numbers each, manifold3d-solver.ts): the friction anchor's r x u and
-   * I^-1 (r x u) of both bodies for u = t1, t2, and I^-1 n of both (twist). Rebuilt every step; single precision.
+   * Per row of `current` (12 numbers each, manifold3d-solver.ts): the friction anchor's r x u of both
+   * bodies for u = t1, t2; `frictionInv` (18 a row, not isotropic rows only): I^-1 (r x u) of both for
+   * t1, t2, then I^-1 n of both (twist). Rebuilt every step; single precision.
    */
   frictionJacobians: Float32Array;
+  frictionInv: Float32Array;
   /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (manifold3d-solver.ts). */
   solveParity: number;
   /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
@@ -239,7 +243,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
   if (s === undefined && create) {
     s = { current: createBuffer(64), previous: createBuffer(64), previousIndex: createRowIndex(), invInertia: new Float64Array(6 * 64), rotationBase: new Float64Array(3 * 64),
       events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
-      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float32Array(0), frictionJacobians: new Float32Array(0),
+      touching: createTouchList(), touchingNext: createTouchList(), sensing: new Map(), sensingNow: new Map(), eventStep: -1, solveParity: 0, jacobians: new Float32Array(0), jacobiansInv: new Float32Array(0), frictionJacobians: new Float32Array(0), frictionInv: new Float32Array(0),
     };
     states.set(world, s);
   }

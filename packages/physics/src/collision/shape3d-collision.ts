@@ -455,7 +455,13 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
   if (!sa && !sb && !sc.ball[a] && !sc.ball[b] && s.kind[ea] === Shape3DKind.Box && s.kind[eb] === Shape3DKind.Box) {
     // Two boxes (the common case): straight from the scratch poses, or last step's manifold carried over.
     relativePose(a, b);
-    const size = Math.min(s.hx[ea]!, s.hy[ea]!, s.hz[ea]!, s.hx[eb]!, s.hy[eb]!, s.hz[eb]!);
+    // The smaller box's smallest half extent (written out: Math.min of six arguments is not inlined).
+    let size = s.hx[ea]!, h = s.hy[ea]!;
+    if (h < size) size = h;
+    h = s.hz[ea]!; if (h < size) size = h;
+    h = s.hx[eb]!; if (h < size) size = h;
+    h = s.hy[eb]!; if (h < size) size = h;
+    h = s.hz[eb]!; if (h < size) size = h;
     const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, 0));
     if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
     else {
