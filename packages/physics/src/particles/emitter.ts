@@ -259,10 +259,25 @@ function headingOf(world: PhysicsWorld, em: number): number {
 }
 
 /**
- * Draws a start offset and velocity for a particle of emitter `em` (into `sample`): shape offset,
- * direction within the spread, speed in range. `heading` is `headingOf(world, em)` (2D).
+ * Where the particles of the batch being spawned start and what they inherit: x, y, z (m), the
+ * inherited velocity bx, by, bz (m/s, already scaled by the emitter's fraction) and the 2D heading of
+ * the emitter (`headingOf`, rad). Set by the batch's caller (spawnFrom, emitNow) before each birth it
+ * asks for, read by `draw`, `spawnOne` and `queueBirth`: numbers passed as arguments to a call that
+ * is not inlined are boxed, which allocated some 16 bytes a number a birth (312 kB a step in a
+ * fountain of a million particles).
  */
-function draw(world: PhysicsWorld, em: number, heading: number): void {
+const origin = new Float64Array(7);
+
+/** Fills `origin` for the births of a batch. */
+function setOrigin(x: number, y: number, z: number, bx: number, by: number, bz: number, heading: number): void {
+  origin[0] = x; origin[1] = y; origin[2] = z; origin[3] = bx; origin[4] = by; origin[5] = bz; origin[6] = heading;
+}
+
+/**
+ * Draws a start offset and velocity for a particle of emitter `em` (into `sample`): shape offset,
+ * direction within the spread, speed in range; the 2D heading is `origin[6]` (`headingOf(world, em)`).
+ */
+function draw(world: PhysicsWorld, em: number): void {
   const E = world.components.Emitter;
   const rng = world.rng;
   const is3D = world.dimensions === 3;
@@ -288,7 +303,7 @@ function draw(world: PhysicsWorld, em: number, heading: number): void {
   const dx = E.dirX[em]!, dy = E.dirY[em]!, dz = E.dirZ[em]!;
   let vx: number, vy: number, vz: number;
   if (!is3D) {
-    const a = heading + rng.range(-spread, spread);
+    const a = origin[6]! + rng.range(-spread, spread);
     vx = Math.cos(a); vy = Math.sin(a); vz = 0;
   } else {
     // Uniform in the cone of half-angle `spread` about d: cos(theta) uniform in [cos spread, 1].
@@ -335,7 +350,8 @@ function archetypeFor(world: PhysicsWorld, em: number): Archetype | undefined {
  * change within a batch: no user code runs between its births but birth hooks, which a batch
  * re-reads them after). Returns the entity or 0 if dropped.
  */
-function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y: number, z: number, bx: number, by: number, bz: number, generation: number, a: Archetype | undefined, kind: number, heading: number): number {
+function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, generation: number, a: Archetype | undefined, kind: number): number {
+  const x = origin[0]!, y = origin[1]!, z = origin[2]!, bx = origin[3]!, by = origin[4]!, bz = origin[5]!;
   const c = world.components;
   const E = c.Emitter;
   if (world.entityIndex.aliveCount >= world.capacity) {
@@ -346,7 +362,7 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y
     // The removal hooks may have removed entities through bitecs.
     if (a !== undefined && !prepareArchetype(world, a)) a = undefined;
   }
-  draw(world, em, heading);
+  draw(world, em);
   const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
   const vx = sample[3]! + bx, vy = sample[4]! + by, vz = sample[5]! + bz;
   // x * 0 is NaN exactly when x is NaN or infinite: refuse the spawn before creating anything.
@@ -433,11 +449,11 @@ function birthQueue(): BirthQueue {
  * else can look at the world. Throws `spawnOne`'s NonFiniteStateError (after flushing the births
  * before it, as `spawnOne` would have written them).
  */
-function queueBirth(world: PhysicsWorld, b: ParticleBook, em: number, x: number, y: number, z: number, bx: number, by: number, bz: number, generation: number, a: Archetype, kind: number, heading: number): void {
+function queueBirth(world: PhysicsWorld, b: ParticleBook, em: number, generation: number, a: Archetype, kind: number): void {
   const E = world.components.Emitter;
-  draw(world, em, heading);
-  const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
-  const vx = sample[3]! + bx, vy = sample[4]! + by, vz = sample[5]! + bz;
+  draw(world, em);
+  const px = origin[0]! + sample[0]!, py = origin[1]! + sample[1]!, pz = origin[2]! + sample[2]!;
+  const vx = sample[3]! + origin[3]!, vy = sample[4]! + origin[4]!, vz = sample[5]! + origin[5]!;
   if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) { flushBirths(world); nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz); }
   const q = birthQueue();
   if (q.count === QUEUE) flushBirths(world);
@@ -593,21 +609,27 @@ function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: numb
   const k = E.inherit[em]!;
   let a = archetypeFor(world, em);
   let kind = particleKind(world, em), heading = headingOf(world, em);
+  const bx = k * vx, by = k * vy, bz = k * vz;
+  setOrigin(x, y, z, bx, by, bz, heading);
   const ix = world.entityIndex;
+  // An integer (generations are at most 1000; bursts carry them in a Float64Array): passed on unboxed.
+  const gen = generation | 0;
   for (let i = 0; i < n; i++) {
     if (a !== undefined && b.birthHooks.length === 0 && ix.aliveCount < world.capacity) {
-      queueBirth(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation, a, kind, heading);
+      queueBirth(world, b, em, gen, a, kind);
       continue;
     }
     // The births queued so far are written before anything else may look at the world (removal or birth hooks).
     flushBirths(world);
-    if (spawnOne(world, b, em, x, y, z, k * vx, k * vy, k * vz, generation, a, kind, heading) === 0) {
+    // A birth hook of the last birth may have spawned from another emitter: `origin` is this batch's again.
+    setOrigin(x, y, z, bx, by, bz, heading);
+    if (spawnOne(world, b, em, gen, a, kind) === 0) {
       // The world is full and the policy could not make room: the rest of this batch cannot fit either.
       E.dropped[em] = E.dropped[em]! + (n - i - 1);
       return;
     }
     // A birth hook may have changed the emitter (setEmitter): the next birth follows it.
-    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, em); kind = particleKind(world, em); heading = headingOf(world, em); }
+    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, em); kind = particleKind(world, em); heading = headingOf(world, em); setOrigin(x, y, z, bx, by, bz, heading); }
   }
 }
 
@@ -947,16 +969,18 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
   let a = archetypeFor(world, slot);
   let kind = particleKind(world, slot), heading = headingOf(world, slot);
   const bx = velocity ? k * velocity[0]! : 0, by = velocity ? k * velocity[1]! : 0, bz = velocity && d === 3 ? k * velocity[2]! : 0;
+  setOrigin(x, y, z, bx, by, bz, heading);
   const ix = world.entityIndex;
   for (let i = 0; i < count; i++) {
     if (a !== undefined && b.birthHooks.length === 0 && ix.aliveCount < world.capacity) {
-      queueBirth(world, b, slot, x, y, z, bx, by, bz, 0, a, kind, heading);
+      queueBirth(world, b, slot, 0, a, kind);
       continue;
     }
     flushBirths(world);
-    spawnOne(world, b, slot, x, y, z, bx, by, bz, 0, a, kind, heading);
+    setOrigin(x, y, z, bx, by, bz, heading);
+    spawnOne(world, b, slot, 0, a, kind);
     // A birth hook may have changed the emitter (setEmitter): the next birth follows it.
-    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, slot); kind = particleKind(world, slot); heading = headingOf(world, slot); }
+    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, slot); kind = particleKind(world, slot); heading = headingOf(world, slot); setOrigin(x, y, z, bx, by, bz, heading); }
   }
   flushBirths(world);
   return world.components.Emitter.spawned[slot]! - before;
