@@ -8,6 +8,7 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 import { pageLayout } from './layout';
+import { createFramePacer, type FramePacer } from './frame-pacer';
 
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {
@@ -64,31 +65,57 @@ export interface PixiGameOptions extends Omit<GameShellOptions, 'render'> {
   app?: PixiAppOptions;
   /** Extra drawing each frame, after the world renderer and before the frame is presented (pointer previews, overlays). */
   onFrame?: (alpha: number, world: PhysicsWorld) => void;
+  /**
+   * Most frames whose GPU work may still be unfinished when the next is drawn, integer in [1, 8].
+   * Default 2. A frame while that many are outstanding is not drawn (the canvas keeps the last one;
+   * the world still steps). See ./frame-pacer.
+   */
+  maxFramesInFlight?: number;
 }
 
 /** What `startPixiGame` returns. */
 export interface PixiGame {
-  /** The shell (also `window.game`, with `renderer` and `app` exposed on it). */
-  shell: GameShell & { renderer: WorldRenderer; app: Application };
+  /** The shell (also `window.game`, with `renderer`, `app` and the frame `pacer` exposed on it). */
+  shell: GameShell & { renderer: WorldRenderer; app: Application; pacer: FramePacer };
   /** The pixi Application. */
   app: Application;
   /** The world renderer; it follows the shell's world across resets. */
   renderer: WorldRenderer;
+  /** Paces `app.render()` to the GPU (frames drawn and skipped). */
+  pacer: FramePacer;
+}
+
+/**
+ * The WebGL 2 context of a pixi Application's renderer, or null (a WebGPU or canvas renderer, WebGL 1).
+ * pixi 8's WebGLRenderer holds its context in `gl`.
+ */
+function webgl2Of(app: Application): WebGL2RenderingContext | null {
+  const gl = (app.renderer as unknown as { gl?: unknown }).gl;
+  return typeof WebGL2RenderingContext !== 'undefined' && gl instanceof WebGL2RenderingContext ? gl : null;
 }
 
 /**
  * Starts a 2D pixi game: Application, shell (world, loop, keys, HUD, window.game, ready flag) and a
  * WorldRenderer that follows the shell's world across resets. Each frame: the renderer places the
- * display objects for alpha, `onFrame` draws extras, `app.render()` presents.
- * @throws whatever createPixiApp, createGameShell or the WorldRenderer constructor throws (bad options).
+ * display objects for alpha, `onFrame` draws extras, `app.render()` presents, unless the GPU has not
+ * finished `maxFramesInFlight` earlier frames (WebGL 2 fences, ./frame-pacer; never under WebGPU or
+ * WebGL 1): then that frame is not drawn and the canvas keeps the last one.
+ * @throws whatever createPixiApp, createGameShell or the WorldRenderer constructor throws (bad
+ *   options); RangeError if maxFramesInFlight is not an integer in [1, 8].
  */
 export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame> {
-  const { renderer: rendererOptions, app: appOptions, onFrame, ...shellOptions } = options;
+  const { renderer: rendererOptions, app: appOptions, onFrame, maxFramesInFlight, ...shellOptions } = options;
   const app = await createPixiApp(appOptions);
+  const pacer = createFramePacer(webgl2Of(app), maxFramesInFlight ?? 2);
+  const draw = (): void => {
+    if (!pacer.mayDraw()) return;
+    app.render();
+    pacer.drew();
+  };
   const { shell, renderer: worldRenderer } = createRenderedShell(
-    shellOptions, (world) => new WorldRenderer(world, { ...rendererOptions, app }), () => app.render(), onFrame,
+    shellOptions, (world) => new WorldRenderer(world, { ...rendererOptions, app }), draw, onFrame,
   );
-  const exposed = shell.expose({ renderer: worldRenderer, app });
+  const exposed = shell.expose({ renderer: worldRenderer, app, pacer });
   shell.start();
-  return { shell: exposed, app, renderer: worldRenderer };
+  return { shell: exposed, app, renderer: worldRenderer, pacer };
 }

@@ -15,6 +15,7 @@ import { WorldRenderer3D, createOrbitControls, frameBox, type OrbitOptions, type
 import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 import type { ControlHint } from './hud';
 import { pageLayout } from './layout';
+import { createFramePacer, type FramePacer } from './frame-pacer';
 
 /** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
 export interface ThreeAppOptions {
@@ -101,6 +102,8 @@ export interface ThreeApp {
   readonly controls: OrbitControls | null;
   /** The canvas. */
   readonly canvas: HTMLCanvasElement;
+  /** The frame pacer of `render` (frames drawn and skipped; see ./frame-pacer). */
+  readonly pacer: FramePacer;
   /**
    * Updates the controls (damping) and draws the scene, unless the GPU has not yet finished
    * `maxFramesInFlight` earlier frames (WebGL2 fence syncs, polled without waiting): then it draws
@@ -182,7 +185,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   observer.observe(parent);
 
   return {
-    renderer, scene, camera, controls, canvas,
+    renderer, scene, camera, controls, canvas, pacer,
     render() {
       controls?.update();
       if (!pacer.mayDraw()) return false;
@@ -218,62 +221,6 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   };
 }
 
-/** Keeps a WebGL context from running more than a given number of frames ahead of its GPU. */
-interface FramePacer {
-  /** Whether a frame may be drawn now: fewer than the limit of earlier frames unfinished on the GPU (counts a refusal in `skipped`). */
-  mayDraw(): boolean;
-  /** Marks the end of a drawn frame's commands (a fence the next `mayDraw` calls poll). */
-  drew(): void;
-  /** Deletes the outstanding fences. */
-  clear(): void;
-  /** Frames drawn (`drew` calls). */
-  readonly drawn: number;
-  /** `mayDraw` calls that said no. */
-  readonly skipped: number;
-}
-
-/**
- * A frame pacer for `gl`: one WebGL2 fence sync (SYNC_GPU_COMMANDS_COMPLETE) after each drawn frame,
- * polled with getSyncParameter (which never waits; the browser updates a fence's status between
- * tasks), and at most `maxInFlight` unsignalled. Under WebGL1 or a lost context it always allows drawing.
- */
-function createFramePacer(gl: WebGLRenderingContext | WebGL2RenderingContext, maxInFlight: number): FramePacer {
-  const gl2 = typeof WebGL2RenderingContext !== 'undefined' && gl instanceof WebGL2RenderingContext ? gl : null;
-  const fences: WebGLSync[] = [];
-  let drawn = 0;
-  let skipped = 0;
-  const clear = (): void => {
-    if (gl2 && !gl2.isContextLost()) for (const f of fences) gl2.deleteSync(f);
-    fences.length = 0;
-  };
-  return {
-    mayDraw() {
-      if (!gl2) return true;
-      if (gl2.isContextLost()) {
-        fences.length = 0; // gone with the context
-        return true;
-      }
-      while (fences.length > 0 && gl2.getSyncParameter(fences[0]!, gl2.SYNC_STATUS) === gl2.SIGNALED) gl2.deleteSync(fences.shift()!);
-      if (fences.length < maxInFlight) return true;
-      skipped++;
-      return false;
-    },
-    drew() {
-      drawn++;
-      if (!gl2 || gl2.isContextLost()) return;
-      const fence = gl2.fenceSync(gl2.SYNC_GPU_COMMANDS_COMPLETE, 0);
-      if (fence) {
-        fences.push(fence);
-        // Submit now, so the fence can signal without waiting for the next frame's commands.
-        gl2.flush();
-      }
-    },
-    clear,
-    get drawn() { return drawn; },
-    get skipped() { return skipped; },
-  };
-}
-
 /** Legend lines for the default orbit controls. */
 export const ORBIT_CONTROLS: readonly ControlHint[] = Object.freeze([
   { keys: 'Drag', action: 'orbit the camera' },
@@ -306,8 +253,8 @@ export interface ThreeGameOptions extends Omit<GameShellOptions, 'render'> {
 
 /** What `startThreeGame` returns. */
 export interface ThreeGame {
-  /** The shell (also `window.game`, with `renderer` and `app` exposed on it). */
-  shell: GameShell & { renderer: WorldRenderer3D; app: ThreeApp };
+  /** The shell (also `window.game`, with `renderer`, `app` and the app's frame `pacer` exposed on it). */
+  shell: GameShell & { renderer: WorldRenderer3D; app: ThreeApp; pacer: FramePacer };
   /** The three.js app. */
   app: ThreeApp;
   /** The world renderer; it follows the shell's world across resets. */
@@ -337,7 +284,7 @@ export async function startThreeGame(options: ThreeGameOptions): Promise<ThreeGa
       app.frame([min[0]! * k, min[1]! * k, min[2]! * k], [max[0]! * k, max[1]! * k, max[2]! * k], viewDirection);
     }
   }
-  const exposed = shell.expose({ renderer: worldRenderer, app });
+  const exposed = shell.expose({ renderer: worldRenderer, app, pacer: app.pacer });
   shell.start();
   return { shell: exposed, app, renderer: worldRenderer };
 }

@@ -282,8 +282,8 @@ export class GamePage {
   /**
    * Distinct colours (RGB) drawn on the first canvas matching `selector` (default 'canvas'): 1 for a
    * blank canvas, hundreds for a drawn scene. Reads the canvas in the page right after the game's
-   * next animation frame (drawImage onto a 2D canvas: fast; for a three.js game, its next frame that
-   * drew, see games/shared/three.ts `render`); if that comes back blank (a canvas not
+   * next animation frame (drawImage onto a 2D canvas: fast; for a game with a frame pacer, its next
+   * frame that drew, see games/shared/frame-pacer.ts); if that comes back blank (a canvas not
    * drawn from requestAnimationFrame, whose buffer was already presented) it falls back to an element
    * screenshot, decoded in Node, which always shows what is on screen.
    * @throws Error if there is no such canvas.
@@ -292,11 +292,11 @@ export class GamePage {
     const inPage = await this.evaluate(async (sel: string) => {
       const canvas = document.querySelector(sel);
       if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
-      // A three.js game paces its frames to the GPU (games/shared/three.ts): an animation frame in
-      // which it drew nothing leaves a presented, blank buffer to read. Its app counts drawn frames,
-      // so wait (20 s at most) for an animation frame in which the count moved: the game's callback,
+      // A game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame in which
+      // it drew nothing leaves a presented, blank buffer to read. Its pacer counts drawn frames, so
+      // wait (20 s at most) for an animation frame in which the count moved: the game's callback,
       // requested earlier, runs before this one in the same frame.
-      const drawn = (): number | undefined => (window.game as unknown as { app?: { info?(): { framesDrawn?: number } } } | undefined)?.app?.info?.().framesDrawn;
+      const drawn = (): number | undefined => (window.game as unknown as { pacer?: { drawn?: number } } | undefined)?.pacer?.drawn;
       let last = drawn();
       const until = performance.now() + 20_000;
       for (;;) {
