@@ -26,7 +26,7 @@
  */
 import type { Browser, BrowserContext, Page } from 'playwright-core';
 import type { GameStats } from '../../games/shared/contract';
-import { inject } from 'vitest';
+import { inject, onTestFinished } from 'vitest';
 import { acquireSiteLock, connectChromium, launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
 import { decodePng, distinctColors } from './png';
 
@@ -78,11 +78,23 @@ export const START_TIMEOUT_MS = 600_000;
 export const PAGE_TIMEOUT_MS = 30_000;
 
 /**
+ * With the environment variable BITPHYSICS_TEST_LOG=1 the harness prints how long each page took to
+ * open and each bounded wait took (one line each, UTC time first), to find where a slow run spends its time.
+ */
+const LOG = process.env.BITPHYSICS_TEST_LOG === '1';
+
+function log(line: string): void {
+  console.log(`[harness ${new Date().toISOString().slice(11, 23)}] ${line}`);
+}
+
+/**
  * Resolves or rejects as `work` does, unless `ms` pass first: then rejects with an Error saying what
  * was awaited (`what`) plus `detail()` (the page's errors), instead of hanging the test until vitest's
  * hook timeout.
  */
 export async function withTimeout<T>(work: Promise<T>, ms: number, what: string, detail: () => string): Promise<T> {
+  const t0 = Date.now();
+  if (LOG) work.then(() => log(`${what}: ${Date.now() - t0} ms`), () => undefined);
   let timer: ReturnType<typeof setTimeout> | undefined;
   const timeout = new Promise<never>((_, reject) => {
     timer = setTimeout(() => reject(new Error(`${what}: no answer in ${ms} ms; ${detail()}`)), ms);
@@ -153,20 +165,32 @@ export class Harness {
    * @throws Error (with the page's errors) if the ready flag is not set in time.
    */
   async open(path: string, options: OpenOptions = {}): Promise<GamePage> {
+    const t0 = Date.now();
+    const where = `opening ${path}${toQuery(options.query)}`;
     // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
-    const context = await this.browser.newContext({
+    const context = await withTimeout(this.browser.newContext({
       viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: options.locale ?? 'en-US',
       ...(options.touch ? { hasTouch: true, isMobile: true } : {}),
-    });
-    const page = await context.newPage();
+    }), PAGE_TIMEOUT_MS, `${where}: a new browser context`, () => 'the browser did not answer');
+    const page = await withTimeout(context.newPage(), PAGE_TIMEOUT_MS, `${where}: a new page`, () => 'the browser did not answer')
+      .catch(async (error: unknown) => { await context.close().catch(() => undefined); throw error; });
     // Every playwright wait (goto, locators, waitForFunction) gives up with a message after this long.
     page.setDefaultTimeout(PAGE_TIMEOUT_MS);
     const gp = new GamePage(context, page);
     this.pages.add(gp);
+    // A page opened inside a test is closed when that test ends, passed, failed or timed out: a page
+    // left running (a failed test skips its own close) would draw on the one software GPU that every
+    // later page shares, through the retry and the rest of the file. Pages opened in beforeAll (no
+    // current test: onTestFinished throws) stay open until `close`.
+    try {
+      onTestFinished(() => gp.close());
+    } catch { /* not inside a test */ }
     // Only until the response arrives: the ready flag (below) is the page's own "loaded", and a page
     // parsing a large bundle on a busy machine should fail with its errors there, not in goto.
     await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query), { waitUntil: 'commit' });
+    if (LOG) log(`${where}: response after ${Date.now() - t0} ms`);
     if (options.waitReady !== false) await gp.waitReady(options.readyTimeoutMs);
+    if (LOG) log(`open ${path}${toQuery(options.query)}: ${Date.now() - t0} ms`);
     return gp;
   }
 
@@ -221,6 +245,8 @@ export class GamePage {
    */
   async waitReady(timeoutMs = 30_000): Promise<void> {
     let outcome: string;
+    // With BITPHYSICS_TEST_LOG=1, every 10 s without the flag: what the page is doing (over CDP, 3 s at most).
+    const watch = LOG ? setInterval(() => void this.snapshot().then((state) => log(`${this.page.url()} not ready yet: ${state}`)), 10_000) : undefined;
     try {
       // Ready, or an error box (the page stopped: no point waiting out the timeout).
       const handle = await this.page.waitForFunction(() => {
@@ -231,8 +257,30 @@ export class GamePage {
       outcome = String(await handle.jsonValue());
     } catch (error) {
       throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}; ${String(error)}`);
+    } finally {
+      clearInterval(watch);
     }
     if (outcome !== 'ready') throw new Error(`${this.page.url()} stopped before it was ready: ${outcome}; ${this.describe()}`);
+  }
+
+  /**
+   * What the page is doing, for logs: its document state, ready flag, whether window.game exists, the
+   * resources it has loaded (name: end time, ms), or that its main thread did not answer in 3 s.
+   */
+  async snapshot(): Promise<string> {
+    try {
+      const cdp = await this.context.newCDPSession(this.page);
+      try {
+        const expression = `JSON.stringify({ state: document.readyState, ready: document.body?.dataset.ready ?? null, game: !!window.game, now: Math.round(performance.now()),
+          loaded: performance.getEntriesByType('resource').map((e) => e.name.split('/').pop() + ':' + Math.round(e.responseEnd)).join(' ') })`;
+        const answer = cdp.send('Runtime.evaluate', { expression, returnByValue: true }).then((r) => String(r.result.value));
+        return await Promise.race([answer, new Promise<string>((r) => setTimeout(() => r('its main thread did not answer in 3 s'), 3000))]);
+      } finally {
+        void cdp.detach().catch(() => undefined);
+      }
+    } catch (error) {
+      return `no snapshot: ${String(error)}`;
+    }
   }
 
   /** The page's errors and its last console lines, for failure messages. */
