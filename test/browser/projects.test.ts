@@ -31,13 +31,15 @@ describe('projects', () => {
     const x0 = await g.page.evaluate(() => { const w = window.game as unknown as Game & { hull(): number }; return w.world.components.Position.x[w.hull()] as number; });
     await g.page.keyboard.down('d');
     await g.page.keyboard.down('w');
-    await g.page.waitForTimeout(1500);
+    // Held until the controls have moved (simulated time, not a wall-clock wait: a loaded machine
+    // runs few frames a second, and 1.5 s of held keys once left the throttle at 0.08).
+    const s = await g.waitFor((start) => {
+      const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
+      const r = { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
+      return r.throttle > 0.3 && r.fill > 0.1 && r.x > start ? r : null;
+    }, x0, 30_000);
     await g.page.keyboard.up('d');
     await g.page.keyboard.up('w');
-    const s = await g.page.evaluate(() => {
-      const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
-      return { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
-    });
     expect(s.throttle).toBeGreaterThan(0.3);
     expect(s.fill).toBeGreaterThan(0.1);
     expect(s.x).toBeGreaterThan(x0);
@@ -51,8 +53,13 @@ describe('projects', () => {
     const before = await g.page.evaluate(() => { const w = window.game as unknown as Flight; return { throttle: w.state.throttle, pitch: w.instruments().pitch }; });
     await g.page.keyboard.down('Shift');
     await g.page.keyboard.down('ArrowDown');
-    await g.page.waitForTimeout(1200);
-    const during = await g.page.evaluate(() => { const w = window.game as unknown as Flight; return { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch }; });
+    // Held until the nose has come up (simulated time, not a wall-clock wait, which a loaded machine
+    // fills with few frames).
+    const during = await g.waitFor((b) => {
+      const w = window.game as unknown as Flight;
+      const r = { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch };
+      return r.throttle > b.throttle && r.elevator > 0.5 && r.pitch > b.pitch + 1 ? r : null;
+    }, before, 30_000);
     await g.page.keyboard.up('ArrowDown');
     await g.page.keyboard.up('Shift');
     expect(during.throttle).toBeGreaterThan(before.throttle);
