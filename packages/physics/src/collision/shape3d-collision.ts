@@ -76,6 +76,7 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     st.sensingNow.clear();
     st.current.count = 0;
     wakes.count = 0;
+    rowShift = 0;
     pairs(world, s, st);
     if (wakes.count === 0 || pass >= 8) break;
     let woken = 0;
@@ -462,7 +463,7 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     h = s.hx[eb]!; if (h < size) size = h;
     h = s.hy[eb]!; if (h < size) size = h;
     h = s.hz[eb]!; if (h < size) size = h;
-    const prev = lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, 0));
+    const prev = previousBoxRow(st, ea, eb, world.capacity);
     if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
     else {
       const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
@@ -491,6 +492,23 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
   const margin = world.collision.settings.speculativeDistance + (sc.speed[a]! + sc.speed[b]!) * world.h;
   collide3D(colA, colB, margin, manifold);
   if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
+}
+
+/**
+ * Offset of the last box pair's previous row from the row it is written to (this pass): pairs come in
+ * nearly the same order every step, so the previous row of the next pair is most often at the same
+ * offset, found without a hash lookup (a cache miss each in a large pile) and read in sequence.
+ */
+let rowShift = 0;
+
+/** The previous step's row of box pair (ea, eb), or -1: the row at `rowShift` if it is that pair's, else from the index. */
+function previousBoxRow(st: Contact3DState, ea: number, eb: number, capacity: number): number {
+  const P = st.previous, guess = st.current.count + rowShift;
+  let prev: number;
+  if (guess >= 0 && guess < P.count && P.shapeA[guess] === ea && P.shapeB[guess] === eb && P.sub[guess] === 0) prev = guess;
+  else prev = lookupRow(st.previousIndex, rowKey(capacity, ea, eb, 0));
+  if (prev >= 0) rowShift = prev - st.current.count;
+  return prev;
 }
 
 /**
