@@ -19,6 +19,7 @@ import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThr
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
+import { downward, holdsLower, SUPPORT_COS } from './support.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, withScaledSubsteps } from './contact-scale.js';
 
 /**
@@ -40,7 +41,8 @@ import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, 
  *    `integrateVelocities` (v += g h_s); `warmStart`*; `solve`* with soft bias (non-penetration, then
  *    Coulomb friction |lambda_t| <= mu lambda_n, mu_s while sticking); `integratePositions`
  *    (dx += v h_s); relax (`solve`* without bias, so push-out velocity does not survive as kinetic
- *    energy). A row that applies an impulse to a body marks it (the `pushed` slot of its packed row);
+ *    energy; in 2D a frictionless row with one ball resting on another may hold the lower one, so one
+ *    sweep clears a tall column: support.ts). A row that applies an impulse to a body marks it (the `pushed` slot of its packed row);
  * 6. `applyRestitution`: contacts the impact stage did not resolve (still approaching after its
  *    passes, e.g. deep in a dense pile) bounce as a small LCP;
  * 7. `finishBodies`: velocities and positions (with the impact corrections) back to the components;
@@ -96,6 +98,8 @@ function solveContacts(world: PhysicsWorld): void {
   prepareJoints(world, hs);
   prepareJoints3D(world, hs);
   const is2D = world.dimensions === 2;
+  // Which way is down, for the support rows of the 2D relax sweep (support.ts).
+  const [downX, downY] = downward(world.gravity);
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
   const colored = is2D && useColoredSolve(world, buf, jointsToSolve(world) || cs.shapes.manifolds.count > 0);
@@ -109,7 +113,7 @@ function solveContacts(world: PhysicsWorld): void {
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
       solveJoints3D(world, hs, true);
-      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid, push); else solve3D(cs, buf, hs, true, dyn, rigid, push);
+      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid, push, downX, downY); else solve3D(cs, buf, hs, true, dyn, rigid, push);
       if (is2D) solveManifolds(cs, hs, true); else solveManifolds3D(world, hs, true);
     }
     integratePositions(world, hs);
@@ -117,7 +121,7 @@ function solveContacts(world: PhysicsWorld): void {
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
       solveJoints3D(world, hs, false);
-      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid, push); else solve3D(cs, buf, hs, false, dyn, rigid, push);
+      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid, push, downX, downY); else solve3D(cs, buf, hs, false, dyn, rigid, push);
       if (is2D) solveManifolds(cs, hs, false); else solveManifolds3D(world, hs, false);
     }
     if (is2D) accumulateManifoldImpulses(cs);
@@ -662,7 +666,12 @@ function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
   }
 }
 
-function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number): void {
+/**
+ * One Gauss-Seidel sweep over the 2D ball contacts: with soft bias if `useBias`, else the relax sweep,
+ * which solves the frictionless support rows with the lower ball held when that only slows the upper
+ * one (support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without).
+ */
+function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number, downX: number, downY: number): void {
   const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
@@ -676,6 +685,16 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
     const nx = NX[i]!, ny = NY[i]!;
     const imA = sb[a + 5]!, imB = sb[b + 5]!;
     let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[b]!, vby = sb[b + 1]!;
+    // The normal impulse's inverse masses and effective mass: a frictionless support row of the relax
+    // sweep may hold its lower ball (support.ts).
+    let jmA = imA, jmB = imB, nm = NM[i]!;
+    if (!useBias && FB[i] === 0 && imA > 0 && imB > 0 && nm > 0) {
+      const up = -(downX * nx + downY * ny);
+      if (up > SUPPORT_COS || up < -SUPPORT_COS) {
+        const va = Math.abs(vax * nx + vay * ny), vb = Math.abs(vbx * nx + vby * ny);
+        if (up > 0 ? holdsLower(va, vb) : holdsLower(vb, va)) { if (up > 0) jmA = 0; else jmB = 0; nm = 1 / (jmA + jmB); }
+      }
+    }
 
     // Non-penetration, soft when overlapping and useBias, speculative when apart.
     const s = S0[i]! + (sb[b + 3]! - sb[a + 3]!) * nx + (sb[b + 4]! - sb[a + 4]!) * ny;
@@ -691,14 +710,14 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
     const oldN = LN[i]!;
     // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse below is 0).
     if (s > 0 && oldN === 0 && vn + bias >= 0 && LT[i] === 0) continue;
-    let lambda = -NM[i]! * massScale * (vn + bias) - impulseScale * oldN;
+    let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
     lambda = newN - oldN;
     LN[i] = newN;
     if (lambda > MAXN[i]!) MAXN[i] = lambda;
     let Px = lambda * nx, Py = lambda * ny;
-    vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
+    vax -= jmA * Px; vay -= jmA * Py; vbx += jmB * Px; vby += jmB * Py;
 
     // Coulomb friction along t = (-ny, nx) at the contact point.
     const ra = RA[i]!, rb = RB[i]!;
