@@ -244,6 +244,10 @@ describe('particle churn', () => {
     }
     expect(arrays).toBeGreaterThan(40);
     expect(stateHash(queued)).toBe(stateHash(oneByOne));
+    // The query lists in the same order too (the queued births' query work is done one query at a time).
+    const qa = Array.from(ecs(queued).queries), qb = Array.from(ecs(oneByOne).queries);
+    expect(qa.length).toBe(qb.length);
+    for (let i = 0; i < qa.length; i++) expect(Array.from(qa[i]!.dense)).toEqual(Array.from(qb[i]!.dense));
     expectQueriesConsistent(queued);
   });
 });

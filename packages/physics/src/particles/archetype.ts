@@ -115,6 +115,10 @@ export interface ArchetypeTable {
   /** Slots of pending deaths, in death order (entries whose mark a birth cleared are skipped). */
   pending: Int32Array;
   pendingCount: number;
+  /** Scratch of `applyQueuedBirths`: the queries done, a flag an archetype, the births with query work. */
+  readonly seenQueries: Set<QueryData>;
+  archFlags: Uint8Array;
+  work: Int32Array;
   /** What bitecs' commitRemovals sees in its dirty queries while deaths pend: its commit calls `settle`. */
   readonly sentinel: { toRemove: { dense: number[]; reset(): void }; remove(e: number): void };
 }
@@ -130,7 +134,7 @@ registerExternalWorldState({
     return t;
   },
   clear: (world) => { tables.delete(world); },
-  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks', 'pendingMark', 'pending', 'pendingCount', 'sentinel'],
+  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks', 'pendingMark', 'pending', 'pendingCount', 'sentinel', 'seenQueries', 'archFlags', 'work'],
 });
 
 /** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
@@ -141,7 +145,7 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
     const none = new Int32Array(0);
     const table: ArchetypeTable = {
       list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
-      staleArchetype: none, marks: new Uint8Array(0), pendingMark: none, pending: none, pendingCount: 0,
+      staleArchetype: none, marks: new Uint8Array(0), pendingMark: none, pending: none, pendingCount: 0, seenQueries: new Set(), archFlags: new Uint8Array(0), work: new Int32Array(0),
       sentinel: { toRemove: { dense: [], reset: () => settle(world, table) }, remove: () => {} },
     };
     t = table;
@@ -261,6 +265,76 @@ function leaveOthers(old: Archetype, a: Archetype, e: number): void {
   for (let i = 0; i < qs.length; i++) if (!matchesMasks(qs[i]!, a.masks)) qs[i]!.remove(e);
 }
 
+/**
+ * The query work of `n` births made with `bornSlotQueued`, in birth order for each query: slot
+ * `slots[k]` of archetype id + 1 `marks[k]`, whose slot was pending as `pends[k]` (0: not pending).
+ * For each query, the births' operations on it come in the order `bornSlot` would have made them (a
+ * birth in a pending slot of another archetype leaves that archetype's queries it does not match;
+ * one not in place joins its own archetype's queries, or leaves bitecs' pending removals of one
+ * that still lists the slot), and queries are independent of each other, so the lists end as
+ * `bornSlot` one birth at a time leaves them. Done one query at a time: the births of a step land in
+ * slots scattered over the capacity, and taking each query's arrays in turn keeps the memory pages in
+ * use few (see emitter.ts `flushBirths`).
+ */
+export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, marks: Int32Array, pends: Int32Array, n: number): void {
+  const list = table.list;
+  // Births not in place, and rebirths over another archetype's pending death: the only ones with query work.
+  if (table.work.length < n) table.work = new Int32Array(Math.max(n, 2 * table.work.length));
+  const list2 = table.work;
+  let work = 0, leaving = 0;
+  for (let k = 0; k < n; k++) {
+    const p = pends[k]!, m = marks[k]!;
+    if (p !== m) { list2[work++] = k; if (p !== 0) leaving++; }
+  }
+  if (work === 0) return;
+  // The archetypes involved (1: born not in place, 2: a pending death of it reborn as another).
+  if (table.archFlags.length < 2 * list.length) table.archFlags = new Uint8Array(4 * list.length);
+  const flags = table.archFlags;
+  flags.fill(0, 0, list.length);
+  for (let w = 0; w < work; w++) {
+    const k = list2[w]!, p = pends[k]!, m = marks[k]!;
+    flags[m - 1]! |= 1;
+    if (p !== 0) flags[p - 1]! |= 2;
+  }
+  const seen = table.seenQueries;
+  seen.clear();
+  for (let i = 0; i < list.length; i++) {
+    if (flags[i] === 0) continue;
+    const qs = list[i]!.queries;
+    for (let j = 0; j < qs.length; j++) {
+      const q = qs[j]!;
+      if (seen.has(q)) continue;
+      seen.add(q);
+      // Per archetype: 1 if it belongs to q, 2 if its masks match q (what leaveOthers asks).
+      for (let b = 0; b < list.length; b++) flags[list.length + b] = (list[b]!.queries.includes(q) ? 1 : 0) | (leaving > 0 && matchesMasks(q, list[b]!.masks) ? 2 : 0);
+      applyToQuery(flags, list.length, q, slots, marks, pends, list2, work, leaving > 0);
+    }
+  }
+  seen.clear();
+}
+
+/**
+ * `applyQueuedBirths` for one query `q`, over the births `work[0..n-1]` (indices of those with query
+ * work, in birth order). `flags[o + i]` says of archetype id i: 1 it belongs to q, 2 its masks match q
+ * (computed only when `leaving`: some birth took another archetype's pending slot).
+ */
+function applyToQuery(flags: Uint8Array, o: number, q: QueryData, slots: Int32Array, marks: Int32Array, pends: Int32Array, work: Int32Array, n: number, leaving: boolean): void {
+  const r = q.toRemove;
+  for (let w = 0; w < n; w++) {
+    const k = work[w]!, p = pends[k]!, m = marks[k]!;
+    const e = slots[k]!;
+    const f = flags[o + m - 1]!;
+    if (leaving && p !== 0 && (f & 2) === 0) {
+      // leaveOthers: out of the old archetype's queries that the new one does not match.
+      if ((flags[o + p - 1]! & 1) !== 0) q.remove(e);
+      continue;
+    }
+    if ((f & 1) === 0) continue;
+    if (r.dense.length !== 0 && r.has(e)) r.remove(e);
+    else q.add(e);
+  }
+}
+
 function countBirth(table: ArchetypeTable, inPlace: boolean): void {
   const o = table.order;
   if (!inPlace) o.disorder++;
@@ -294,6 +368,23 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
  * field of every component of the set. @returns its slot.
  */
 export function bornSlot(world: PhysicsWorld, a: Archetype): number {
+  return born(world, a, false);
+}
+
+/**
+ * `bornSlot` whose query work is left to `applyQueuedBirths`: the entity exists (entity index, masks,
+ * component set, spawn stamp) and `queuedPending` holds the slot's pending mark (`pendingArchetype`)
+ * from before the birth, which the caller keeps with the slot and passes to `applyQueuedBirths`
+ * before anything reads the queries. @returns its slot.
+ */
+export function bornSlotQueued(world: PhysicsWorld, a: Archetype): number {
+  return born(world, a, true);
+}
+
+/** The pending mark of the slot `bornSlotQueued` returned last (0: none). */
+export let queuedPending = 0;
+
+function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
   const table = a.table, ecs = ecsOf(world);
   if (table.slotArchetype.length === 0) slotArrays(table);
   // A hook between births may have made a query.
@@ -333,6 +424,12 @@ export function bornSlot(world: PhysicsWorld, a: Archetype): number {
   // archetype's keeps it in the queries both match.
   const pend = table.pendingMark[e]!;
   let inPlace = pend === mark;
+  if (queued) {
+    queuedPending = pend;
+    if (pend !== 0) table.pendingMark[e] = 0;
+    countBirth(table, inPlace);
+    return e;
+  }
   if (pend !== 0) {
     table.pendingMark[e] = 0;
     if (!inPlace) leaveOthers(table.list[pend - 1]!, a, e);

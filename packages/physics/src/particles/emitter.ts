@@ -4,7 +4,7 @@ import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import { DEFAULT_MATERIAL } from '../components.js';
 import { nextSlot } from './bulk.js';
 import {
-  archetypeFromEntity, archetypes, bornSlot, defragment, ecsOf, killSlot, pendingArchetype, prepareArchetype, type Archetype,
+  applyQueuedBirths, archetypeFromEntity, archetypes, bornSlot, bornSlotQueued, defragment, queuedPending, ecsOf, killSlot, pendingArchetype, prepareArchetype, type Archetype,
 } from './archetype.js';
 import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
@@ -427,6 +427,8 @@ const QUEUE = 4096;
 interface BirthQueue {
   world: PhysicsWorld | null; count: number;
   slot: Int32Array; em: Int32Array; kind: Uint8Array; generation: Float64Array;
+  /** Archetype id + 1 of each birth, and the slot's pending mark before it (`bornSlotQueued`). */
+  mark: Int32Array; pend: Int32Array;
   px: Float64Array; py: Float64Array; pz: Float64Array; vx: Float64Array; vy: Float64Array; vz: Float64Array; life: Float64Array;
 }
 let queue: BirthQueue | null = null;
@@ -436,6 +438,7 @@ function birthQueue(): BirthQueue {
     const f = () => new Float64Array(QUEUE);
     queue = {
       world: null, count: 0, slot: new Int32Array(QUEUE), em: new Int32Array(QUEUE), kind: new Uint8Array(QUEUE), generation: f(),
+      mark: new Int32Array(QUEUE), pend: new Int32Array(QUEUE),
       px: f(), py: f(), pz: f(), vx: f(), vy: f(), vz: f(), life: f(),
     };
   }
@@ -458,9 +461,10 @@ function queueBirth(world: PhysicsWorld, b: ParticleBook, em: number, generation
   const q = birthQueue();
   if (q.count === QUEUE) flushBirths(world);
   q.world = world;
-  const e = bornSlot(world, a);
+  const e = bornSlotQueued(world, a);
   const k = q.count++;
   q.slot[k] = e; q.em[k] = em; q.kind[k] = kind; q.generation[k] = generation;
+  q.mark[k] = a.id + 1; q.pend[k] = queuedPending;
   q.px[k] = px; q.py[k] = py; q.pz[k] = pz; q.vx[k] = vx; q.vy[k] = vy; q.vz[k] = vz;
   q.life[k] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
   pushParticle(world, b, e);
@@ -479,6 +483,8 @@ function flushBirths(world: PhysicsWorld): void {
   q.world = null;
   const c = world.components, E = c.Emitter;
   const S = q.slot, EM = q.em, K = q.kind;
+  // The births' query work (joining the queries, or keeping a pending death's place), one query at a time.
+  applyQueuedBirths(archetypes(world), S, q.mark, q.pend, n);
   // What bitecs' observers write when these components are added (create-world.ts); stores a world
   // allocates lazily may have no arrays yet: nothing to reset there.
   const W = c.AngularVelocity, F = c.Force, T = c.Torque;
