@@ -58,13 +58,17 @@ test('per-step scratch is kept as type and length only, and a world without coll
   expect(copy.collision.solverMark.every((m) => m === 0)).toBe(true);
 });
 
-test('contact buffers are stored up to their count: restore puts back every row below it bit for bit, zeros included, and the buffer between steps stores nothing', () => {
+test('contact buffers are stored up to their count: restore puts back every row below it bit for bit, zeros included (the 2D tangents derived from the normals), and the buffer between steps stores nothing', () => {
   const world = ballsInBox(300);
   stepMany(world, 40);
   const saved = snapshot(world);
   const contacts = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.contacts!.v;
   expect(world.collision.contacts.count).toBe(0); // holds no rows between steps (contacts.ts)
   for (const [key, e] of Object.entries(contacts)) if (typeof e === 'object' && e !== null && 'o' in e) expect(e.n, key).toBe(0);
+  // The 2D tangents of the cached rows are (-ny, nx): stored as notes, derived by restore (checked bit for bit below).
+  const cached = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }> }).v.collision!).v.cache!.v.rows!.v;
+  expect(cached.t1x!.$t).toBe('tangent2d');
+  expect(cached.t1y!.$t).toBe('tangent2d');
   // Another world, stepped further: its contact rows differ, and more of them.
   const other = ballsInBox(300);
   stepMany(other, 90);

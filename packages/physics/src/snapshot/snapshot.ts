@@ -391,6 +391,20 @@ class Writer {
     }
     return this.object(v as Record<string, unknown>, path, undefined);
   }
+  /**
+   * The TANGENT_2D note of contact buffer `o`'s column `key` (t1x or t1y) for rows 0 .. n-1, with the
+   * rows that differ from -ny (t1x) or nx (t1y) as (row, value) pairs; null (store the column) when the
+   * columns are not all Float64Array of the buffer's capacity or more than an eighth of the rows differ.
+   */
+  tangent(o: Record<string, unknown>, key: string, n: number): Encoded | null {
+    const t = o[key], src = key === 't1x' ? o.ny : o.nx;
+    if (!(t instanceof Float64Array && src instanceof Float64Array && t.length === o.capacity && src.length === t.length)) return null;
+    const pairs = tangentExceptions(t, src, key === 't1x', n, n >> 3);
+    if (pairs === null) return null;
+    const e: Record<string, Encoded> = { $t: TANGENT_2D, axis: key === 't1x' ? 'x' : 'y', len: t.length, upto: n };
+    if (pairs.length > 0) e.rows = this.arrayTo(Float64Array.from(pairs), pairs.length);
+    return e;
+  }
   object(o: Record<string, unknown>, path: string, skip: ReadonlySet<string> | undefined): Encoded {
     const out: Record<string, Encoded> = {};
     // A contact buffer (see CONTACT_BUFFERS): its columns (capacity rows) up to its count only.
@@ -398,6 +412,11 @@ class Writer {
     for (const key of Object.keys(o)) {
       if (skip?.has(key)) continue;
       const v = o[key];
+      // Its 2D tangents, where most rows' are (-ny, nx) to the bit, as a note and the other rows (see TANGENT_2D).
+      if (rows > 0 && (key === 't1x' || key === 't1y')) {
+        const note = this.tangent(o, key, Math.min(rows, o.capacity as number));
+        if (note !== null) { out[key] = note; continue; }
+      }
       if (rows >= 0 && ArrayBuffer.isView(v) && (v as TypedArray).length === o.capacity && v.constructor.name in TYPED) {
         out[key] = this.arrayTo(v as TypedArray, Math.min(rows, (v as TypedArray).length), true);
         continue;
@@ -406,6 +425,36 @@ class Writer {
     }
     return { $t: 'o', v: out };
   }
+}
+
+/**
+ * Tag of a 2D contact tangent column stored as a note: tangent 1 of a 2D contact is (-ny, nx) as
+ * prepareContacts (collision/solver.ts, and its kernel) computes it, so `t1x` and `t1y` are stored as
+ * a note, `{ $t: 'tangent2d', axis, len, upto, rows? }`, plus the rows that differ (a normal the
+ * impact stage or the relax pass turned after the tangent was set: ~2 % of a 100,000-ball box's rows)
+ * as (row, value) pairs in `rows`, a Float64Array. Restore writes -ny (axis x) or nx (axis y) into rows
+ * 0 .. upto-1, then the pairs (rows from the count on are left as they are, as for every contact
+ * column). Compared bit for bit (-0 included, NaN never equal) when the snapshot is taken; a 3D
+ * buffer's basis differs in most rows and is stored as it is. ~0.9 MB of a settled 100,000-ball pile.
+ */
+const TANGENT_2D = 'tangent2d';
+
+/**
+ * The rows i < n where `t[i]` differs in its bits from -src[i] (`negate`) or src[i], as a flat list
+ * (row, t[i], row, t[i], ...), or null when more than `most` rows differ.
+ */
+function tangentExceptions(t: Float64Array, src: Float64Array, negate: boolean, n: number, most: number): number[] | null {
+  const pairs: number[] = [];
+  const sign = negate ? -1 : 1;
+  for (let i = 0; i < n; i++) {
+    const a = t[i]!, b = sign * src[i]!;
+    // === is bitwise for every value but zeros (+0 === -0, told apart by 1 / x) and NaN (never equal: a pair).
+    if (a === b && (a !== 0 || 1 / a === 1 / b)) continue;
+    // A NaN tangent keeps its column (a NaN's payload may not survive a trip through a JS number).
+    if (pairs.length >= 2 * most || a !== a) return null;
+    pairs.push(i, a);
+  }
+  return pairs;
 }
 
 function isTagged(e: Encoded): e is { [key: string]: Encoded } {
@@ -481,7 +530,12 @@ class Reader {
     if (t === 'm') return new Map((v as Encoded[][]).map(([k, x]) => [this.fresh(k!, path), this.fresh(x!, path)]));
     if (t === 'o') {
       const o: Record<string, unknown> = {};
-      for (const [k, x] of Object.entries(v as Record<string, Encoded>)) o[k] = this.fresh(x, `${path}.${k}`);
+      const derived: string[] = [];
+      for (const [k, x] of Object.entries(v as Record<string, Encoded>)) {
+        if (isTagged(x) && x.$t === TANGENT_2D) { derived.push(k); o[k] = null; continue; } // keeps the key order
+        o[k] = this.fresh(x, `${path}.${k}`);
+      }
+      for (const k of derived) this.tangent(o, k, (v as Record<string, Record<string, Encoded>>)[k]!, `${path}.${k}`);
       return o;
     }
     throw new RangeError(`restore: snapshot's ${path} is damaged (unknown tag ${describe(t)})`);
@@ -553,10 +607,47 @@ class Reader {
         throw new RangeError(`restore: snapshot has no ${path}.${key} (it was made by another version of bitphysics)`);
       }
     }
+    let derived = false;
     for (const [key, x] of Object.entries(enc)) {
       if (keep?.has(key)) continue;
+      if (isTagged(x) && x.$t === TANGENT_2D) { derived = true; continue; }
       this.into(target, key, x, `${path}.${key}`);
     }
+    // Derived columns after the rest: they are computed from the normals just restored.
+    if (derived) {
+      for (const [key, x] of Object.entries(enc)) {
+        if (!keep?.has(key) && isTagged(x) && x.$t === TANGENT_2D) this.tangent(target, key, x, `${path}.${key}`);
+      }
+    }
+  }
+  /**
+   * Writes a 2D tangent column noted by TANGENT_2D into `target[key]` from `target.nx` / `target.ny`
+   * (restored before it): rows below `upto` get -ny (axis x) or nx (axis y), the world's rows from
+   * `upto` on stay; an array of another type or length is replaced by a zeroed one of `len` first.
+   * @throws RangeError if the note is damaged or the normals are missing or too short.
+   */
+  tangent(target: Record<string, unknown>, key: string, e: { [key: string]: Encoded }, path: string): void {
+    const len = e.len as number, upto = e.upto as number, axis = e.axis;
+    const src = axis === 'x' ? target.ny : target.nx;
+    if (!(Number.isInteger(len) && Number.isInteger(upto) && upto >= 0 && upto <= len && (axis === 'x' || axis === 'y') &&
+      src instanceof Float64Array && src.length >= upto)) {
+      throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    }
+    const pairs = e.rows === undefined ? null : isTagged(e.rows) ? this.full(e.rows, `${path}.rows`) : undefined;
+    if (pairs === undefined || (pairs !== null && !(pairs instanceof Float64Array && pairs.length % 2 === 0))) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    if (pairs !== null) {
+      for (let k = 0; k < pairs.length; k += 2) {
+        const row = pairs[k]!;
+        if (!(Number.isInteger(row) && row >= 0 && row < upto)) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+      }
+    }
+    let out = target[key];
+    if (!(out instanceof Float64Array && out.length === len)) { out = new Float64Array(len); target[key] = out; }
+    const t = out as Float64Array;
+    // -x is exactly x with its sign bit flipped, as prepareContacts' -ny.
+    if (axis === 'x') for (let i = 0; i < upto; i++) t[i] = -src[i]!;
+    else t.set(src.subarray(0, upto));
+    if (pairs !== null) for (let k = 0; k < pairs.length; k += 2) t[pairs[k]!] = pairs[k + 1]!;
   }
 }
 
@@ -581,9 +672,34 @@ function internals(world: PhysicsWorld): EcsInternals {
 }
 
 function namesOf(world: PhysicsWorld): Map<object, string> {
+  // The map is kept per world while world.components holds the same stores under the same names, so
+  // query descriptors computed from it stay valid (see describeKeyed).
+  const entries = Object.entries(world.components);
+  const last = nameMaps.get(world);
+  if (last !== undefined && last.size === entries.length && entries.every(([name, store]) => last.get(store as object) === name)) return last;
   const names = new Map<object, string>();
-  for (const [name, store] of Object.entries(world.components)) names.set(store as object, name);
+  for (const [name, store] of entries) names.set(store as object, name);
+  nameMaps.set(world, names);
   return names;
+}
+/** The last name map of each world (see namesOf). */
+const nameMaps = new WeakMap<PhysicsWorld, Map<object, string>>();
+
+/**
+ * Each query's descriptor and key as last computed, with the name map they were computed from (a
+ * query's components never change; the names of world.components could, so a new map recomputes).
+ */
+const described = new WeakMap<object, { names: Map<object, string>; d: { and: string[]; not: string[]; or: string[] } | null; key: string }>();
+
+/** `describeQuery` and its `keyOf` (key '' when null), computed once per query and name map (see `namesOf`). */
+function describeKeyed(q: QueryData, names: Map<object, string>): { d: { and: string[]; not: string[]; or: string[] } | null; key: string } {
+  let c = described.get(q);
+  if (c === undefined || c.names !== names) {
+    const d = describeQuery(q, names);
+    c = { names, d, key: d === null ? '' : keyOf(d) };
+    described.set(q, c);
+  }
+  return c;
 }
 
 /** Query descriptor: its component names (and, not, or), or null if it involves a component outside world.components. */
@@ -779,9 +895,9 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   const lists = new IdLists(w, world);
   const queries: Encoded[] = [];
   for (const q of ctx.queries) {
-    const d = describeQuery(q, names);
+    const d = describeKeyed(q, names).d;
     if (d === null) continue;
-    queries.push({ $t: 'o', v: { and: d.and, not: d.not, or: d.or, dense: lists.encode(q.dense, q), toRemove: lists.encode(q.toRemove.dense, q.toRemove) } });
+    queries.push({ $t: 'o', v: { and: d.and.slice(), not: d.not.slice(), or: d.or.slice(), dense: lists.encode(q.dense, q), toRemove: lists.encode(q.toRemove.dense, q.toRemove) } });
   }
   // The entity index has no version: compared with the query lists (it usually equals a query's).
   const dense = lists.encode(ix.dense, null);
@@ -827,7 +943,10 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   const lists = readIdLists(ecs.lists as Encoded[], r, world.capacity);
   // Layout: the target's bit of each snapshot component (registering components the target has not seen).
   const layout = ecs.layout as [string, number, number][];
-  const srcMasks = (ecs.masks as Encoded[]).map((m, g) => r.used(m as Record<string, Encoded>, `masks[${g}]`) as Int32Array);
+  // The stored masks: views into the snapshot, checked here (before anything is written); a repeated
+  // value is expanded only where the layouts differ (else written straight into the world's masks).
+  const maskEnc = (ecs.masks as Encoded[]).map((m) => m as Record<string, Encoded>);
+  const maskViews = maskEnc.map((m, g) => r.array(m, `masks[${g}]`) as Int32Array);
   let same = true;
   const map: Array<{ sg: number; sbit: number; tg: number; tflag: number }> = [];
   for (const [name, sg, sbit] of layout) {
@@ -842,7 +961,7 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   // 40-odd queries of a world that has not stepped yet), and these lists are overwritten below anyway.
   const names = namesOf(world);
   const byKey = new Map<string, QueryData>();
-  for (const q of ctx.queries) { const d = describeQuery(q, names); if (d !== null) byKey.set(keyOf(d), q); }
+  for (const q of ctx.queries) { const { d, key } = describeKeyed(q, names); if (d !== null) byKey.set(key, q); }
   for (const enc of ecs.queries as Encoded[]) {
     const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
     const d = { and: qd.and as string[], not: qd.not as string[], or: qd.or as string[] };
@@ -852,7 +971,7 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     for (const n of d.not) terms.push(Not(C[n]! as never) as object);
     if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
     bitecsQuery(world as never, terms as never);
-    const q = [...ctx.queries].find((x) => { const dx = describeQuery(x, names); return dx !== null && keyOf(dx) === key; });
+    const q = [...ctx.queries].find((x) => { const dx = describeKeyed(x, names); return dx.d !== null && dx.key === key; });
     if (q === undefined) throw new Error(`restore: could not make the query ${key}`);
     byKey.set(key, q);
   }
@@ -861,8 +980,19 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   // Masks, written in place: entries up to the larger of the two highest ids (ids above both are 0).
   const top = Math.max(maxId, oldMaxId) + 1;
   if (same) {
-    for (let g = 0; g < gens; g++) writeMask(ctx.entityMasks[g]!, srcMasks[g], top);
+    for (let g = 0; g < gens; g++) {
+      const arr = ctx.entityMasks[g]!, e = maskEnc[g];
+      if (e !== undefined && e.rep !== undefined && arr instanceof Int32Array && arr.length >= (e.rep as number)) {
+        // A repeated mask (every entity up to the highest id with the same components) written in
+        // place, its repeat left as it is where the world already holds it (Reader.write); zeros up to `top`.
+        const written = r.write(arr, maskViews[g]!, e);
+        if (top > written) zeroFill(arr, written, Math.min(top, arr.length));
+      } else {
+        writeMask(arr, e === undefined ? undefined : r.used(e, `masks[${g}]`) as Int32Array, top);
+      }
+    }
   } else {
+    const srcMasks = maskEnc.map((m, g) => r.used(m, `masks[${g}]`) as Int32Array);
     const newMasks: Int32Array[] = [];
     for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(top));
     for (const { sg, sbit, tg, tflag } of map) {
@@ -1023,9 +1153,13 @@ function unusedStores(world: PhysicsWorld): Set<object> {
     let u = 0;
     if (m instanceof Int32Array) {
       const n = Math.min(m.length, ix.maxId + 1);
-      let e = 0;
-      for (; e + 4 <= n; e += 4) u |= m[e]! | m[e + 1]! | m[e + 2]! | m[e + 3]!;
-      for (; e < n; e++) u |= m[e]!;
+      // Every entity with the same components (a world of one kind of body): one native comparison.
+      if (sameFrom1Native(m, n)) u = m[0]! | m[1]!;
+      else {
+        let e = 0;
+        for (; e + 4 <= n; e += 4) u |= m[e]! | m[e + 1]! | m[e + 2]! | m[e + 3]!;
+        for (; e < n; e++) u |= m[e]!;
+      }
     } else {
       for (let i = 0; i < ix.aliveCount; i++) u |= m[ix.dense[i]!] ?? 0;
     }
