@@ -38,7 +38,8 @@ function shared<T extends KernelArray>(a: T): T {
 /**
  * Runs the cell pass for the `small` grid bodies on the world's threads and appends the pairs to
  * `cs`'s pair list, when the world has threads, no ball sleeps and the grid is large enough; returns
- * false (nothing done) otherwise, and the caller runs its own loop. `mask` is the grid's hash mask.
+ * false (nothing done) otherwise, and the caller runs its own loop. `mask` is the grid's hash mask
+ * (unused by a dense grid, whose origin and spans the kernel reads from `cs.grid`).
  * @throws Error naming broadphaseSystem if a worker thread failed.
  */
 export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small: number, mask: number): boolean {
@@ -57,7 +58,7 @@ export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small
     const size = Math.max(cap, 2 * (buf?.a[0]!.length ?? 0));
     const a: Int32Array[] = [], b: Int32Array[] = [];
     for (let p = 0; p < pool.threads; p++) { a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size))); }
-    buf = { a, b, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(3) };
+    buf = { a, b, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(8) };
     buffersOf.set(cs, buf);
   }
   const A = buf.arrays;
@@ -67,6 +68,7 @@ export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small
   for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!);
   const P = buf.params;
   P[0] = mask; P[1] = world.dimensions; P[2] = buf.a[0]!.length;
+  P[3] = g.spanX; P[4] = g.spanXZ; P[5] = g.originX; P[6] = g.originY; P[7] = g.originZ;
   buf.counts.fill(0);
   if (runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) === null) return false;
   let total = 0;

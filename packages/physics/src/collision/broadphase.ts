@@ -23,6 +23,24 @@ const HALF_3D: readonly number[] = (() => {
 })();
 
 /**
+ * The broadphase uses a dense grid (one bucket per cell, in space order) when there are at least
+ * DENSE_MIN_BODIES balls and the cells spanned by the ordinary ones, with a cell to spare on every
+ * side, number at most DENSE_CELLS_PER_BODY per ball (plus 64); other worlds use the spatial hash (a
+ * power-of-two table of at least 2 buckets per body, in an order unrelated to space). The space order
+ * is what makes the dense grid pay: the pairs, contacts and solver bodies that follow it read memory
+ * near each other, where the hash's order jumps across the whole solver state, which a large world's
+ * does not fit in a core's cache (balls-in-box: 22 % less CPU time a step at 5,000 and 20,000 balls,
+ * 7 % at 2,000). A small world's state fits in the cache anyway, and keeps the hash's order.
+ */
+export const DENSE_CELLS_PER_BODY = 8;
+
+/** Fewest balls for the dense grid (see DENSE_CELLS_PER_BODY). */
+export const DENSE_MIN_BODIES = 1024;
+
+/** Scratch: the bucket offset of each neighbour cell of the half neighbourhood in a dense grid. */
+const neighbourStep = new Float64Array(13);
+
+/**
  * Largest cell coordinate, in cells either side of the origin (2^28). Cell coordinates are clamped to
  * [-CELL_LIMIT, CELL_LIMIT]: bodies farther out than CELL_LIMIT cells (about 2.7e7 m with 0.1 m
  * cells) share the outermost cells of the grid. Clamping keeps neighbouring cells neighbours (it is
@@ -199,23 +217,51 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
   }
 
-  // Cell size from the reach of ordinary bodies; outliers go to the oversized list.
+  // Cell size from the reach of ordinary bodies; outliers go to the oversized list. The ordinary
+  // bodies' extent too (NaN positions are counted in cell 0, as cellOf puts them).
   const g = cs.grid;
   const limit = OVERSIZED_FACTOR * (reachSum / n);
   let maxReach = 0;
   let maxReachAll = 0;
+  let loX = Infinity, hiX = -Infinity, loY = Infinity, hiY = -Infinity, loZ = Infinity, hiZ = -Infinity;
+  let nan = false;
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
     const r = radius[e]! + margin[e]!;
     if (r > maxReachAll) maxReachAll = r;
-    if (r <= limit && r > maxReach) maxReach = r;
+    if (r > limit) continue;
+    if (r > maxReach) maxReach = r;
+    const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
+    if (x < loX) loX = x;
+    if (x > hiX) hiX = x;
+    if (y < loY) loY = y;
+    if (y > hiY) hiY = y;
+    if (z < loZ) loZ = z;
+    if (z > hiZ) hiZ = z;
+    if (x !== x || y !== y || z !== z) nan = true;
   }
   const cell = 2 * maxReach;
   const invCell = 1 / cell;
   g.cellSize = cell;
 
+  // Dense grid when the cells around the bodies are few enough (buckets in space order: the pairs,
+  // contacts and solver bodies follow, which keeps the solver's reads near each other); else the hash.
+  // cellOf is monotonic, so the extreme positions give the extreme cells.
+  let cx0 = cellOf(loX, invCell), cx1 = cellOf(hiX, invCell), cy0 = cellOf(loY, invCell), cy1 = cellOf(hiY, invCell);
+  let cz0 = cellOf(loZ, invCell), cz1 = cellOf(hiZ, invCell);
+  if (nan) { cx0 = Math.min(cx0, 0); cx1 = Math.max(cx1, 0); cy0 = Math.min(cy0, 0); cy1 = Math.max(cy1, 0); cz0 = Math.min(cz0, 0); cz1 = Math.max(cz1, 0); }
+  const spanX = cx1 - cx0 + 3, spanY = cy1 - cy0 + 3, spanZ = is3D ? cz1 - cz0 + 3 : 1;
+  const cells = spanX * spanY * spanZ;
+  const dense = n >= DENSE_MIN_BODIES && maxReach > 0 && spanX >= 3 && spanY >= 3 && cells <= DENSE_CELLS_PER_BODY * n + 64;
   let table = 16;
-  while (table < 2 * n) table *= 2;
+  if (dense) {
+    table = cells;
+    g.originX = cx0 - 1; g.originY = cy1 + 1; g.originZ = is3D ? cz0 - 1 : 0; g.spanX = spanX; g.spanXZ = spanX * spanZ;
+  } else {
+    while (table < 2 * n) table *= 2;
+    g.originX = 0; g.originY = 0; g.originZ = 0; g.spanX = 0; g.spanXZ = 0;
+  }
+  const gx0 = g.originX, gy0 = g.originY, gz0 = g.originZ, sX = g.spanX, sXZ = g.spanXZ;
   ensureGrid(cs, n, table);
   const mask = table - 1;
   const start = g.bucketStart;
@@ -228,7 +274,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const e = balls[i]!;
     if (radius[e]! + margin[e]! > limit) { bucketOf[i] = -1; over[overCount++] = e; continue; }
     const cx = cellOf(ox[e]!, invCell), cy = cellOf(oy[e]!, invCell), cz = is3D ? cellOf(oz[e]!, invCell) : 0;
-    const b = hashCell(cx, cy, cz) & mask;
+    const b = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
     bucketOf[i] = b;
     start[b + 1]!++;
   }
@@ -255,35 +301,37 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   for (let pass = 0; pass < 4; pass++) {
     cs.pairCount = 0;
     const woken = cs.wakeCount;
-    // Pairs among grid bodies: own cell (later entries only) and half the neighbours.
+    // Pairs among grid bodies: own cell (later entries only) and half the neighbours. A dense grid's
+    // buckets hold one cell each (no coordinates to compare), its neighbours a fixed bucket offset away.
     const offsets = is3D ? HALF_3D : HALF_2D;
     const stride = is3D ? 3 : 2;
     const nOffsets = offsets.length / stride;
+    for (let k = 0; k < nOffsets; k++) neighbourStep[k] = offsets[k * stride]! - offsets[k * stride + 1]! * sXZ + (is3D ? offsets[k * stride + 2]! * sX : 0);
     // On the world's threads when it has them and no ball sleeps (broadphase-pairs.ts: the same pairs in the same order).
     if (!(pass === 0 && parallelBallPairs(world, cs, small, mask))) for (let p = 0; p < small; p++) {
       const e = sorted[p]!;
       const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
-      const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+      const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
       const reach = radius[e]! + margin[e]!;
       const te = type[e]!;
       // Own cell.
-      const own = hashCell(cx, cy, cz) & mask;
+      const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
       for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
-        if (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz) continue;
+        if (!dense && (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz)) continue;
         const f = sorted[q]!;
         if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
       }
       for (let k = 0; k < nOffsets; k++) {
         const nx = cx + offsets[k * stride]!, ny = cy + offsets[k * stride + 1]!, nz = is3D ? cz + offsets[k * stride + 2]! : 0;
-        const bucket = hashCell(nx, ny, nz) & mask;
+        const bucket = dense ? own + neighbourStep[k]! : hashCell(nx, ny, nz) & mask;
         for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-          if (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz) continue;
+          if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
           const f = sorted[q]!;
           if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-          const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+          const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
           const rr = reach + radius[f]! + margin[f]!;
           if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
         }
@@ -376,10 +424,15 @@ function queryBox(
     return count;
   }
   const mask = g.tableSize - 1;
-  for (let cz = cz0; cz <= cz1; cz++)
-    for (let cy = cy0; cy <= cy1; cy++)
-      for (let cx = cx0; cx <= cx1; cx++) {
-        const b = hashCell(cx, cy, cz) & mask;
+  const sX = g.spanX, sXZ = g.spanXZ, gx0 = g.originX, gy0 = g.originY, gz0 = g.originZ;
+  // A dense grid holds nothing outside its range: the loops are clipped to it (cells there are empty).
+  const lx = sX > 0 ? Math.max(cx0, gx0) : cx0, hx = sX > 0 ? Math.min(cx1, gx0 + sX - 1) : cx1;
+  const ly = sX > 0 ? Math.max(cy0, gy0 - g.tableSize / sXZ + 1) : cy0, hy = sX > 0 ? Math.min(cy1, gy0) : cy1;
+  const lz = sX > 0 ? Math.max(cz0, gz0) : cz0, hz = sX > 0 ? Math.min(cz1, gz0 + sXZ / sX - 1) : cz1;
+  for (let cz = lz; cz <= hz; cz++)
+    for (let cy = ly; cy <= hy; cy++)
+      for (let cx = lx; cx <= hx; cx++) {
+        const b = sX > 0 ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
         for (let q = start[b]!, end = start[b + 1]!; q < end; q++) {
           if (cellX[q] === cx && cellY[q] === cy && cellZ[q] === cz) out[count++] = sorted[q]!;
         }

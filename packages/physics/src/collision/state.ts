@@ -220,8 +220,25 @@ export interface CollisionState {
 export interface GridScratch {
   /** Cell edge, m, chosen each step from the body sizes and speeds. */
   cellSize: number;
-  /** Hash table size (power of two) and its bucket start offsets (size + 1). */
+  /**
+   * Table size and its bucket start offsets (size + 1): a power of two for the spatial hash, or the
+   * number of cells of the dense grid (see `spanX`).
+   */
   tableSize: number;
+  /**
+   * Dense grid, used when the cells around the bodies number at most DENSE_CELLS_PER_BODY per body (see
+   * broadphase.ts): cell (cx, cy, cz) is bucket (cx - originX) + (cz - originZ) spanX + (originY - cy)
+   * spanXZ, so the buckets, and the pairs, contacts and solver bodies that follow them, run through
+   * space row by row from the top (y descending; in 3D each row of cells along x, the z rows, then y).
+   * The range covers the bodies' cells and one more on every side, so every neighbour the pass looks at
+   * is inside it; originY is its top row. spanX = 0: the spatial hash (hashCell & (tableSize - 1))
+   * instead. Cell coordinates and counts, integers.
+   */
+  originX: number;
+  originY: number;
+  originZ: number;
+  spanX: number;
+  spanXZ: number;
   bucketStart: Int32Array;
   /** Bodies sorted by bucket: entity ids, and their cell coordinates. */
   sorted: Int32Array;
@@ -294,6 +311,11 @@ export function createCollisionState(
     grid: {
       cellSize: 1,
       tableSize: 0,
+      originX: 0,
+      originY: 0,
+      originZ: 0,
+      spanX: 0,
+      spanXZ: 0,
       bucketStart: new Int32Array(1),
       sorted: new Int32Array(0),
       cellX: new Int32Array(0),
