@@ -17,11 +17,13 @@ import { currentHandle } from '../handles.js';
  * - normal rows: speculative (s > 0: bias s / h_s) or soft (Box2D's soft constraint; twice as stiff
  *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
  * - friction once a manifold, not once a point (central friction, as Box2D v2.0's 3D predecessors and
- *   Bullet's friction anchors): two tangent rows t1, t2 = n x t1 at an anchor, the points' centre
- *   weighted by their warm-started normal impulses (their plain centre when none has any), each
+ *   Bullet's friction anchors): two tangent rows t1, t2 = n x t1 at an anchor, the points' centre, each
  *   |lambda_t| <= mu sum(lambda_n), and a twist row about n, |lambda_w| <= mu arm sum(lambda_n) with arm
- *   the points' mean distance from the anchor (the torque the points' friction could resist). A manifold
- *   of four points so solves three friction rows instead of eight;
+ *   the points' mean distance from the anchor (the torque the points' friction could resist: a cube
+ *   spinning on its four corners slows as under Coulomb friction at each). A manifold of four points so
+ *   solves three friction rows instead of eight. (An anchor weighted by the points' normal impulses
+ *   wandered off the centre of a spinning cube, and its tangent rows then braked the spin too: twice
+ *   the Coulomb torque after a few steps.);
  * - per point, r x n and I^-1 (r x n) of both bodies, and per manifold the anchor's r x t1, r x t2 and
  *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`, and the I^-1 products apart: `jacobiansInv`, `frictionInv`), so a pass reads
  *   them instead of multiplying tensors; a manifold whose two bodies are isotropic (I^-1 = i 1: spheres,
@@ -145,8 +147,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     if (ka > 0) { const e = buf.bodyA[i]!; shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz; }
     if (kb > 0) { const e = buf.bodyB[i]!; shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz; }
     let minSep = Infinity, reachA = 0, reachB = 0;
-    // The friction anchor: the points' centre weighted by their warm-started normal impulses.
-    let wsum = 0, cax = 0, cay = 0, caz = 0, cbx = 0, cby = 0, cbz = 0;
+    // The friction anchor: the points' centre.
+    let cax = 0, cay = 0, caz = 0, cbx = 0, cby = 0, cbz = 0;
     const m = buf.points[i]!;
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k, o = JAC * q;
@@ -154,8 +156,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const rax = buf.rax[q]!, ray = buf.ray[q]!, raz = buf.raz[q]!, rbx = buf.rbx[q]!, rby = buf.rby[q]!, rbz = buf.rbz[q]!;
       if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
       reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz); reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
-      const w = buf.ln[q]!;
-      wsum += w; cax += w * rax; cay += w * ray; caz += w * raz; cbx += w * rbx; cby += w * rby; cbz += w * rbz;
+      cax += rax; cay += ray; caz += raz; cbx += rbx; cby += rby; cbz += rbz;
       // r_A x n, r_B x n, and I_A^-1 (r_A x n), I_B^-1 (r_B x n), then the effective mass.
       const xax = ray * nz - raz * ny, xay = raz * nx - rax * nz, xaz = rax * ny - ray * nx;
       const xbx = rby * nz - rbz * ny, xby = rbz * nx - rbx * nz, xbz = rbx * ny - rby * nx;
@@ -170,15 +171,7 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     }
     // For the solver's skip of a speculative manifold (solveManifolds3D); padded for the single-precision crosses.
     buf.minSep[i] = minSep; buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9; buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
-    if (!(wsum > 0)) {
-      // No point carries impulse yet: the plain centre.
-      wsum = 0; cax = 0; cay = 0; caz = 0; cbx = 0; cby = 0; cbz = 0;
-      for (let k = 0; k < m; k++) {
-        const q = 4 * i + k;
-        wsum += 1; cax += buf.rax[q]!; cay += buf.ray[q]!; caz += buf.raz[q]!; cbx += buf.rbx[q]!; cby += buf.rby[q]!; cbz += buf.rbz[q]!;
-      }
-    }
-    const iw = 1 / wsum;
+    const iw = 1 / m;
     cax *= iw; cay *= iw; caz *= iw; cbx *= iw; cby *= iw; cbz *= iw;
     // Twist arm: the points' mean distance from the anchor across n.
     let arm = 0;
