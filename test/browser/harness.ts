@@ -78,6 +78,18 @@ export const START_TIMEOUT_MS = 600_000;
 export const PAGE_TIMEOUT_MS = 30_000;
 
 /**
+ * A page not ready this long after its response whose main thread then does not answer a CDP
+ * evaluation within 3 s is stuck: `Harness.open` closes it and opens it once more, in a new context.
+ * Seen in headless Chromium 143 with SwiftShader about once in 6 to 20 openings of balls-3d with
+ * 3,000 balls right after another WebGL page closed (2026-11-22, load 13 to 20): the new page's main
+ * thread waited without end in a synchronous call to the GPU process, whose main thread and
+ * VizCompositorThread both sat in condition-variable waits using no CPU (gdb: SwiftShader's queue
+ * and worker threads idle) for minutes, past any timeout of the test. The same page opened again in
+ * a new context was ready in 0.6 to 4 s (the test's retry, twice). ms.
+ */
+export const STUCK_MS = 15_000;
+
+/**
  * With the environment variable BITPHYSICS_TEST_LOG=1 the harness prints how long each page took to
  * open and each bounded wait took (one line each, UTC time first), to find where a slow run spends its time.
  */
@@ -165,6 +177,15 @@ export class Harness {
    * @throws Error (with the page's errors) if the ready flag is not set in time.
    */
   async open(path: string, options: OpenOptions = {}): Promise<GamePage> {
+    return this.openPage(path, options, true);
+  }
+
+  /** `open` without the second try of a stuck page. */
+  private openOnce(path: string, options: OpenOptions): Promise<GamePage> {
+    return this.openPage(path, options, false);
+  }
+
+  private async openPage(path: string, options: OpenOptions, mayRetry: boolean): Promise<GamePage> {
     const t0 = Date.now();
     const where = `opening ${path}${toQuery(options.query)}`;
     // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
@@ -189,7 +210,13 @@ export class Harness {
     // parsing a large bundle on a busy machine should fail with its errors there, not in goto.
     await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query), { waitUntil: 'commit' });
     if (LOG) log(`${where}: response after ${Date.now() - t0} ms`);
-    if (options.waitReady !== false) await gp.waitReady(options.readyTimeoutMs);
+    if (options.waitReady !== false && await gp.readyOrStuck(options.readyTimeoutMs ?? 30_000, mayRetry ? STUCK_MS : Infinity) === 'stuck') {
+      // See STUCK_MS: close it and open the page once more, in a new context.
+      console.warn(`[harness] ${page.url()}: not ready after ${STUCK_MS} ms and its main thread does not answer; closing it and opening it again once`);
+      await gp.close();
+      this.pages.delete(gp);
+      return this.openOnce(path, { ...options, readyTimeoutMs: Math.max(10_000, (options.readyTimeoutMs ?? 30_000) - (Date.now() - t0)) });
+    }
     if (LOG) log(`open ${path}${toQuery(options.query)}: ${Date.now() - t0} ms`);
     return gp;
   }
@@ -244,23 +271,51 @@ export class GamePage {
    * @throws Error naming the page and listing its errors when `timeoutMs` (default 30 000) passes first.
    */
   async waitReady(timeoutMs = 30_000): Promise<void> {
-    let outcome: string;
+    const outcome = await this.readyOrStuck(timeoutMs, Infinity);
+    if (outcome === 'stuck') throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}`);
+  }
+
+  /**
+   * Waits until the ready flag is set ('ready'), or, when `stuckMs` pass without it and the page's
+   * main thread then does not answer within 3 s (`snapshot`), gives up at once ('stuck'; see
+   * STUCK_MS). The wait is bounded here (a timer in Node), not only by playwright's timeout, which
+   * a page whose main thread never returns does not end.
+   * @throws Error naming the page and listing its errors when the page shows an error box, or
+   *   `timeoutMs` passes while its main thread still answers.
+   */
+  async readyOrStuck(timeoutMs: number, stuckMs: number): Promise<'ready' | 'stuck'> {
+    const started = Date.now();
     // With BITPHYSICS_TEST_LOG=1, every 10 s without the flag: what the page is doing (over CDP, 3 s at most).
     const watch = LOG ? setInterval(() => void this.snapshot().then((state) => log(`${this.page.url()} not ready yet: ${state}`)), 10_000) : undefined;
+    // Ready, or an error box (the page stopped: no point waiting out the timeout).
+    const flag = this.page.waitForFunction(() => {
+      if (document.body?.dataset.ready === 'true') return 'ready';
+      const box = document.querySelector('[data-page-error], [data-lab="error"], .bp-error');
+      return box ? `error box: ${box.textContent ?? ''}` : false;
+    }, null, { timeout: timeoutMs, polling: 50 }).then(async (handle) => String(await handle.jsonValue()));
+    flag.catch(() => undefined); // it may settle after this wait gave up
     try {
-      // Ready, or an error box (the page stopped: no point waiting out the timeout).
-      const handle = await this.page.waitForFunction(() => {
-        if (document.body?.dataset.ready === 'true') return 'ready';
-        const box = document.querySelector('[data-page-error], [data-lab="error"], .bp-error');
-        return box ? `error box: ${box.textContent ?? ''}` : false;
-      }, null, { timeout: timeoutMs, polling: 50 });
-      outcome = String(await handle.jsonValue());
+      let checked = false;
+      for (;;) {
+        const left = timeoutMs - (Date.now() - started);
+        const next = checked || !Number.isFinite(stuckMs) ? left : Math.min(left, stuckMs - (Date.now() - started));
+        let timer: ReturnType<typeof setTimeout> | undefined;
+        const outcome = await Promise.race([flag, new Promise<null>((r) => { timer = setTimeout(() => r(null), Math.max(0, next)); })])
+          .finally(() => clearTimeout(timer));
+        if (outcome === 'ready') return 'ready';
+        if (outcome !== null) throw new Error(`${this.page.url()} stopped before it was ready: ${outcome}; ${this.describe()}`);
+        if (Date.now() - started >= timeoutMs) throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}`);
+        checked = true;
+        const state = await this.snapshot();
+        if (state.startsWith('its main thread did not answer')) return 'stuck';
+        if (LOG) log(`${this.page.url()} not ready after ${stuckMs} ms but answering: ${state}`);
+      }
     } catch (error) {
+      if (error instanceof Error && error.message.startsWith(this.page.url())) throw error;
       throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}; ${String(error)}`);
     } finally {
       clearInterval(watch);
     }
-    if (outcome !== 'ready') throw new Error(`${this.page.url()} stopped before it was ready: ${outcome}; ${this.describe()}`);
   }
 
   /**
