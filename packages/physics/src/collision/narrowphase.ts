@@ -100,6 +100,8 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
 
   const pairA = cs.pairA, pairB = cs.pairB, pairKind = cs.pairKind;
   const S = c.Segment;
+  // A 2D world's z stores hold 0 (bodies.ts writes them so; nothing integrates them): not read.
+  const is3D = world.dimensions === 3;
   // The leading ball-ball pairs on the world's threads when it has them (narrowphase-balls.ts: the same contacts in the same order).
   for (let i = parallelBallContacts(world, cs, buf), n = cs.pairCount; i < n; i++) {
     const kind = pairKind[i]!;
@@ -107,14 +109,14 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     if (kind === PairKind.BallBall) {
       const a = pairA[i]!;
       if (jointKeepsApart(world.joints, a, b)) continue; // jointed without collideConnected
-      const rx = ox[b]! - ox[a]!, ry = oy[b]! - oy[a]!, rz = oz[b]! - oz[a]!;
+      const rx = ox[b]! - ox[a]!, ry = oy[b]! - oy[a]!, rz = is3D ? oz[b]! - oz[a]! : 0;
       const ra = radius[a]!, rb = radius[b]!;
       const R = ra + rb;
       const ta = type[a]!, tb = type[b]!;
       // Velocity of a static body is 0 by definition (its store is not read).
       const wx = (tb === BodyType.Static ? 0 : vx[b]!) - (ta === BodyType.Static ? 0 : vx[a]!);
       const wy = (tb === BodyType.Static ? 0 : vy[b]!) - (ta === BodyType.Static ? 0 : vy[a]!);
-      const wz = (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!);
+      const wz = is3D ? (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!) : 0;
       let dx = rx, dy = ry, dz = rz;
       // Normal where the balls first touch during the step, if they do (see sweepNormal).
       const t = sweepSphere(rx, ry, rz, wx, wy, wz, R, h);
@@ -168,7 +170,6 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     const balls = query(world, [c.Position, c.Ball]);
     const minX = box.min[0]!, minY = box.min[1]!, minZ = box.min[2]!;
     const maxX = box.max[0]!, maxY = box.max[1]!, maxZ = box.max[2]!;
-    const is3D = world.dimensions === 3;
     for (let i = 0; i < balls.length; i++) {
       const b = balls[i]!;
       if (type[b] >= BodyType.Static) continue;
