@@ -16,16 +16,17 @@ import { currentHandle } from '../handles.js';
  *   1 / (1/m_A + 1/m_B + (r_A x u) . I_A^-1 (r_A x u) + (r_B x u) . I_B^-1 (r_B x u));
  * - normal rows: speculative (s > 0: bias s / h_s) or soft (Box2D's soft constraint; twice as stiff
  *   against infinite mass; push-out speed capped), accumulated impulse >= 0; relax passes without bias;
- * - friction once a manifold, not once a point (central friction, as Box2D v2.0's 3D predecessors and
- *   Bullet's friction anchors): two tangent rows t1, t2 = n x t1 at an anchor, the points' centre, each
- *   |lambda_t| <= mu sum(lambda_n), and a twist row about n, |lambda_w| <= mu arm sum(lambda_n) with arm
- *   the points' mean distance from the anchor (the torque the points' friction could resist: a cube
- *   spinning on its four corners slows as under Coulomb friction at each). A manifold of four points so
- *   solves three friction rows instead of eight. (An anchor weighted by the points' normal impulses
- *   wandered off the centre of a spinning cube, and its tangent rows then braked the spin too: twice
- *   the Coulomb torque after a few steps.);
+ * - friction once a manifold, not once a point (a friction patch): two tangent rows t1, t2 = n x t1 at
+ *   an anchor, the points' centre, solved together and held within the circle
+ *   |(lambda_t1, lambda_t2)| <= mu sum(lambda_n) (the same limit whichever way it slides), and a twist row
+ *   about n, |lambda_w| <= mu arm sum(lambda_n), arm the points' mean distance from the anchor (the
+ *   torque their friction could resist: a cube spinning on its four corners slows as under Coulomb
+ *   friction at each). A manifold of four points so solves three friction rows instead of eight. (An
+ *   anchor weighted by the points' normal impulses wandered off the centre of a spinning cube, and its
+ *   tangent rows then braked the spin too: twice the Coulomb torque after a few steps.);
  * - per point, r x n and I^-1 (r x n) of both bodies, and per manifold the anchor's r x t1, r x t2 and
- *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`, and the I^-1 products apart: `jacobiansInv`, `frictionInv`), so a pass reads
+ *   their I^-1 products, are computed once a step (`jacobians`, `frictionJacobians`; the I^-1 products
+ *   apart: `jacobiansInv`, `frictionInv`), so a pass reads
  *   them instead of multiplying tensors; a manifold whose two bodies are isotropic (I^-1 = i 1: spheres,
  *   cubes, or a static side) reads only r x u and scales it by i, half the memory a pass streams; the points of a manifold are solved in alternating order from
  *   substep to substep; a manifold whose normal rows are all rigid in a pass (speculative, or a relax
@@ -402,50 +403,31 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
       const t1x = T1X[i]!, t1y = T1Y[i]!, t1z = T1Z[i]!;
       const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-      // t1 (crosses at f, inverse products at FI i), then t2 (6 further on in both).
-      let f = FJ * i;
-      let ca0 = F[f]!, ca1 = F[f + 1]!, ca2 = F[f + 2]!, cb0 = F[f + 3]!, cb1 = F[f + 4]!, cb2 = F[f + 5]!;
-      const vt1 = ((vbx - vax) * t1x + (vby - vay) * t1y + (vbz - vaz) * t1z)
-        + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
-      let l1 = o1 - MT1[i]! * vt1;
-      l1 = l1 > limit ? limit : l1 < -limit ? -limit : l1;
-      FT1[i] = l1;
-      const d1 = l1 - o1;
-      if (d1 !== 0) {
-        const fa = mA * d1, fb = mB * d1;
-        vax -= fa * t1x; vay -= fa * t1y; vaz -= fa * t1z;
-        vbx += fb * t1x; vby += fb * t1y; vbz += fb * t1z;
+      // t1 (crosses at f, inverse products at FI i) and t2 (6 further on in both), both from the same
+      // velocities, the impulse (l1, l2) then held within the circle of radius mu sum(lambda_n): the same
+      // limit in every direction of sliding (clamping each separately let a diagonal slide take sqrt 2 of it).
+      const f = FJ * i;
+      const a10 = F[f]!, a11 = F[f + 1]!, a12 = F[f + 2]!, b10 = F[f + 3]!, b11 = F[f + 4]!, b12 = F[f + 5]!;
+      const a20 = F[f + 6]!, a21 = F[f + 7]!, a22 = F[f + 8]!, b20 = F[f + 9]!, b21 = F[f + 10]!, b22 = F[f + 11]!;
+      const dvx = vbx - vax, dvy = vby - vay, dvz = vbz - vaz;
+      const vt1 = (dvx * t1x + dvy * t1y + dvz * t1z) + ((wbx * b10 + wby * b11 + wbz * b12) - (wax * a10 + way * a11 + waz * a12));
+      const vt2 = (dvx * t2x + dvy * t2y + dvz * t2z) + ((wbx * b20 + wby * b21 + wbz * b22) - (wax * a20 + way * a21 + waz * a22));
+      let l1 = o1 - MT1[i]! * vt1, l2 = o2 - MT2[i]! * vt2;
+      const l2sum = l1 * l1 + l2 * l2;
+      if (l2sum > limit * limit) { const k = limit / Math.sqrt(l2sum); l1 *= k; l2 *= k; }
+      FT1[i] = l1; FT2[i] = l2;
+      const d1 = l1 - o1, d2 = l2 - o2;
+      if (d1 !== 0 || d2 !== 0) {
+        const px = d1 * t1x + d2 * t2x, py = d1 * t1y + d2 * t2y, pz = d1 * t1z + d2 * t2z;
+        vax -= mA * px; vay -= mA * py; vaz -= mA * pz;
+        vbx += mB * px; vby += mB * py; vbz += mB * pz;
         if (iso) {
-          const ga = iA * d1, gb = iB * d1;
-          wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
-          wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
+          wax -= iA * (d1 * a10 + d2 * a20); way -= iA * (d1 * a11 + d2 * a21); waz -= iA * (d1 * a12 + d2 * a22);
+          wbx += iB * (d1 * b10 + d2 * b20); wby += iB * (d1 * b11 + d2 * b21); wbz += iB * (d1 * b12 + d2 * b22);
         } else {
           const p = FI * i;
-          wax -= d1 * FV[p]!; way -= d1 * FV[p + 1]!; waz -= d1 * FV[p + 2]!;
-          wbx += d1 * FV[p + 3]!; wby += d1 * FV[p + 4]!; wbz += d1 * FV[p + 5]!;
-        }
-        pushed = true;
-      }
-      f += 6;
-      ca0 = F[f]!; ca1 = F[f + 1]!; ca2 = F[f + 2]!; cb0 = F[f + 3]!; cb1 = F[f + 4]!; cb2 = F[f + 5]!;
-      const vt2 = ((vbx - vax) * t2x + (vby - vay) * t2y + (vbz - vaz) * t2z)
-        + ((wbx * cb0 + wby * cb1 + wbz * cb2) - (wax * ca0 + way * ca1 + waz * ca2));
-      let l2 = o2 - MT2[i]! * vt2;
-      l2 = l2 > limit ? limit : l2 < -limit ? -limit : l2;
-      FT2[i] = l2;
-      const d2 = l2 - o2;
-      if (d2 !== 0) {
-        const fa = mA * d2, fb = mB * d2;
-        vax -= fa * t2x; vay -= fa * t2y; vaz -= fa * t2z;
-        vbx += fb * t2x; vby += fb * t2y; vbz += fb * t2z;
-        if (iso) {
-          const ga = iA * d2, gb = iB * d2;
-          wax -= ga * ca0; way -= ga * ca1; waz -= ga * ca2;
-          wbx += gb * cb0; wby += gb * cb1; wbz += gb * cb2;
-        } else {
-          const p = FI * i + 6;
-          wax -= d2 * FV[p]!; way -= d2 * FV[p + 1]!; waz -= d2 * FV[p + 2]!;
-          wbx += d2 * FV[p + 3]!; wby += d2 * FV[p + 4]!; wbz += d2 * FV[p + 5]!;
+          wax -= d1 * FV[p]! + d2 * FV[p + 6]!; way -= d1 * FV[p + 1]! + d2 * FV[p + 7]!; waz -= d1 * FV[p + 2]! + d2 * FV[p + 8]!;
+          wbx += d1 * FV[p + 3]! + d2 * FV[p + 9]!; wby += d1 * FV[p + 4]! + d2 * FV[p + 10]!; wbz += d1 * FV[p + 5]! + d2 * FV[p + 11]!;
         }
         pushed = true;
       }
