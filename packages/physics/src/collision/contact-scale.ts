@@ -93,7 +93,11 @@ export const MAX_AUTO_SUBSTEPS = 16;
  * rate. Below BALL_HERTZ_FRACTION, because piles at the cap do not settle: 300 balls of 2 cm in a bin
  * 9 radii wide kept moving at 0.5 sqrt(g r) and more with f h_s between 0.64 and 0.88 (8, 9 and 11
  * substeps at 424 Hz), and came to rest with f h_s <= 0.6 (also 0.1 m and 0.065 m balls, which boil
- * with the world's 4 substeps: f h_s 0.79 and 0.98).
+ * with the world's 4 substeps: f h_s 0.79 and 0.98). That holds for rows with friction, whose tangent
+ * rows damp a column; a frictionless column is stable with one relax sweep only up to f h_s ~ 0.27
+ * (the exact equilibrium of 120 balls of 2 cm zigzagging between walls 5 r apart grew unstable at 26
+ * substeps, f h_s 0.27, and held at 28), and comes to rest at 0.6 thanks to the relax sweep's support
+ * rows (support.ts).
  */
 export const AUTO_HERTZ_FRACTION = 0.6;
 
