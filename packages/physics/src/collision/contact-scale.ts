@@ -96,8 +96,8 @@ export const MAX_AUTO_SUBSTEPS = 16;
  * with the world's 4 substeps: f h_s 0.79 and 0.98). That holds for rows with friction, whose tangent
  * rows damp a column; a frictionless column is stable with one relax sweep only up to f h_s ~ 0.27
  * (the exact equilibrium of 120 balls of 2 cm zigzagging between walls 5 r apart grew unstable at 26
- * substeps, f h_s 0.27, and held at 28), and comes to rest at 0.6 thanks to the relax sweep's support
- * rows (support.ts).
+ * substeps, f h_s 0.27, and held at 28); at 0.6 the relax sweep's support rows (support.ts) bring
+ * such columns to rest from a Galton-bin start, not from every start.
  */
 export const AUTO_HERTZ_FRACTION = 0.6;
 
