@@ -111,3 +111,33 @@ test('a replica restored again and again from snapshots of another world (query 
   stepMany(replica, 20);
   expect(stateHash(replica)).toBe(stateHash(world));
 });
+
+test('an Int32Array whose element i is i (the sleep stage\'s union-find parents between island searches) keeps element 0 only, and restore writes 1, 2, ... back over other values', () => {
+  const world = ballsInBox(300);
+  stepMany(world, 40);
+  const parent = world.collision.sleep.parent;
+  const used = parent.findLastIndex((x) => x !== 0) + 1;
+  expect(used).toBeGreaterThan(64);
+  for (let i = 1; i < used; i++) expect(parent[i]).toBe(i); // the premise: no island search yet
+  const saved = snapshot(world);
+  const enc = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.sleep!.v.parent!;
+  expect(enc.iota).toBe(used);
+  expect(enc.n).toBe(1);
+  // Another world whose parents hold other values (scribbled over: a union-find that merged islands).
+  const other = ballsInBox(300);
+  stepMany(other, 10);
+  for (let i = 1; i < other.collision.sleep.parent.length; i += 3) other.collision.sleep.parent[i] = 7;
+  restore(other, saved);
+  expect(Array.from(other.collision.sleep.parent)).toEqual(Array.from(parent));
+  // A damaged count (past the array) is refused with the array's path.
+  const bad = structuredClone(saved);
+  ((bad.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.sleep!.v.parent!.iota = parent.length + 5;
+  expect(() => restore(createPhysicsWorld(def300()), bad)).toThrow(/restore: snapshot's world\.collision\.sleep\.parent is damaged/);
+  stepMany(world, 30);
+  stepMany(other, 30);
+  expect(stateHash(other)).toBe(stateHash(world));
+});
+
+function def300(): ReturnType<NonNullable<typeof SCENES['balls-in-box']>['worldOptions']> {
+  return SCENES['balls-in-box']!.worldOptions({ count: 300 });
+}

@@ -322,11 +322,15 @@ class Writer {
     // A store whose entities all hold one value (materials, masses of equal bodies) keeps two elements:
     // index 0 (no entity) and the value, repeated up to `rep` by restore.
     const rep = used > 3 && uniformFrom1(a, used) ? used : 0;
-    const n = rep > 0 ? 2 : used;
+    // An Int32Array whose element i is i for 1 .. used-1 (the sleep stage's union-find parents between
+    // island searches: 0.4 MB of a 100,000-ball world) keeps element 0 only; restore writes the rest.
+    const iota = rep === 0 && used >= 64 && a instanceof Int32Array && iotaFrom1(a, used) ? used : 0;
+    const n = rep > 0 ? 2 : iota > 0 ? 1 : used;
     const type = a.constructor.name;
     const offset = this.place(n * a.BYTES_PER_ELEMENT);
     this.pending.push({ src: a, n, offset, type });
     const e: Record<string, Encoded> = rep > 0 ? { $t: type, o: offset, n, len: a.length, rep } : { $t: type, o: offset, n, len: a.length };
+    if (iota > 0) e.iota = iota;
     if (rowsOnly) e.upto = end;
     return e;
   }
@@ -474,9 +478,12 @@ class Reader {
     const Ctor = TYPED[e.$t as string] as unknown as (new (b: ArrayBuffer, o: number, n: number) => TypedArray) | undefined;
     const o = e.o as number, n = e.n as number, len = e.len as number;
     const rep = e.rep as number | undefined;
+    const iota = e.iota as number | undefined;
     const upto = e.upto as number | undefined;
     if (Ctor === undefined || !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
-      (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len)) || (upto !== undefined && !(upto >= (rep ?? n) && upto <= len))) {
+      (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len)) ||
+      (iota !== undefined && !(Ctor === Int32Array && rep === undefined && n === 1 && Number.isInteger(iota) && iota >= 2 && iota <= len)) ||
+      (upto !== undefined && !(upto >= (rep ?? iota ?? n) && upto <= len))) {
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
     }
     return new Ctor(this.buffer, o, n);
@@ -484,16 +491,22 @@ class Reader {
   /** Writes the encoded elements into the start of `out` (stored ones, then a repeated value); @returns how many. */
   write(out: TypedArray, src: TypedArray, e: { [key: string]: Encoded }): number {
     out.set(src as never);
+    const iota = e.iota as number | undefined;
+    if (iota !== undefined) {
+      // Elements 1 .. iota-1 are 1 .. iota-1 (see Writer.arrayTo): left as they are where they already are.
+      if (!iotaFrom1(out as Int32Array, iota)) out.set(countingTo(iota - 1).subarray(0, iota - 1), 1);
+      return iota;
+    }
     const rep = e.rep as number | undefined;
     if (rep === undefined) return src.length;
     // Elements 1 .. rep-1 of `out` already the same (element 1 was just set): left as they are.
     if (!sameFrom1Native(out, rep)) out.fill(src[1]! as never, 2, rep);
     return rep;
   }
-  /** The encoded elements up to the last non-zero one: a view into the snapshot, or a copy if a value repeats. */
+  /** The encoded elements up to the last non-zero one: a view into the snapshot, or a copy if a value repeats (or elements are their index). */
   used(e: { [key: string]: Encoded }, path: string): TypedArray {
     const src = this.array(e, path);
-    const rep = e.rep as number | undefined;
+    const rep = (e.rep ?? e.iota) as number | undefined;
     if (rep === undefined) return src;
     const out = new TYPED[e.$t as string]!(rep);
     this.write(out, src, e);
@@ -835,11 +848,7 @@ function readIdLists(encoded: readonly Encoded[], r: Reader, capacity: number): 
     checkRange(e, i, capacity);
     const first = e.first as number, n = e.n as number;
     // The list 1 .. capacity, made once and shared; a range is a view of it (its ids are never written).
-    if (counting.length < capacity) {
-      counting = new Int32Array(capacity);
-      for (let k = 0; k < capacity; k++) counting[k] = k + 1;
-    }
-    return counting.subarray(first - 1, first - 1 + n);
+    return countingTo(capacity).subarray(first - 1, first - 1 + n);
   });
 }
 /** @throws RangeError `restore: snapshot's ecs.lists[i] is damaged` unless the range `e` holds integer ids from 1 up to `capacity`. */
@@ -850,8 +859,34 @@ function checkRange(e: Record<string, Encoded>, i: number, capacity: number): vo
   }
 }
 
-/** 1, 2, ..., at least the largest capacity restored into so far (see readIdLists). */
+/** 1, 2, ..., at least the largest capacity restored into so far (see readIdLists, countingTo). */
 let counting = new Int32Array(0);
+
+/** The shared list 1, 2, ..., at least `n` long (grown by doubling; its elements are never written elsewhere). */
+function countingTo(n: number): Int32Array {
+  if (counting.length < n) {
+    const next = new Int32Array(Math.max(n, 2 * counting.length));
+    for (let k = 0; k < next.length; k++) next[k] = k + 1;
+    counting = next;
+  }
+  return counting;
+}
+
+/**
+ * Whether element i of `a` is i for i = 1 .. n-1 (n <= a.length): natively, elements 1 .. n-1
+ * against the shared list 1, 2, ... (see countingTo), where the host compares natively; else a loop.
+ */
+function iotaFrom1(a: Int32Array, n: number): boolean {
+  if (n < 2 || a[1] !== 1 || a[n - 1] !== n - 1) return n < 2;
+  if (nativeCompare !== undefined) {
+    const ones = countingTo(n - 1);
+    const x = new Uint8Array(a.buffer, a.byteOffset + 4, 4 * (n - 1));
+    const y = new Uint8Array(ones.buffer, ones.byteOffset, 4 * (n - 1));
+    return nativeCompare(x, y) === 0;
+  }
+  for (let i = 2; i < n - 1; i++) if (a[i] !== i) return false;
+  return true;
+}
 
 function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   const ctx = internals(world);
