@@ -18,7 +18,9 @@ import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
  * id down (their entries above it are zero). Scratch arrays (the broadphase grid and the collision
  * stage's per-step arrays, see SCRATCH; the solver's marks, see STAMPED) are stored as their type and
- * length only, and the 2D contact buffers' columns up to their row count (CONTACT_BUFFERS). The format is unchanged by these: a version 2 snapshot written before
+ * length only, and the 2D contact buffers' columns up to their row count (CONTACT_BUFFERS), their 2D tangents
+ * as a note plus the rows that differ from (-ny, nx) (TANGENT_2D); an Int32Array whose element i is i
+ * (union-find parents) as its element 0 and count (`iota`, see Writer.arrayTo). A version 2 snapshot written before
  * them restores as it did. Restoring a snapshot object into the world it was taken from (or into
  * one it was restored into before) leaves alone the query lists that have not changed since (their
  * versions say so), and the entity index when it is equal. `restore` writes into the world's own arrays
