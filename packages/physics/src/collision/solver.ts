@@ -805,6 +805,9 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
   }
 }
 
+/** Scratch of applyRestitution: the indices of the rows that take part, in row order. Not world state. */
+let restitutionRows = new Int32Array(256);
+
 /**
  * Restitution, after Box2D v3 b2ApplyRestitution but solved as a small LCP rather than one pass.
  * A contact that approached faster than the threshold and carried an impulse this step must leave
@@ -831,10 +834,15 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   // and totalNormalImpulse as its cap (all spent by now); a negative target marks a contact that
   // takes no part. A contact that closed its gap only in the last substep may still be approaching:
   // the impulse to stop that is part of its compression, so it counts toward the cap too.
+  // The rows that take part, in row order (the passes below visit only these).
+  if (restitutionRows.length < n) restitutionRows = new Int32Array(Math.max(n, 2 * restitutionRows.length));
+  const rows = restitutionRows;
+  let taking = 0;
   let bouncing = 0;
   for (let i = 0; i < n; i++) {
     const e = E[i]!;
     if (MAXN[i] === 0) { RV[i] = -1; continue; }
+    rows[taking++] = i;
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
@@ -848,9 +856,9 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   }
   if (bouncing === 0) return;
   for (let it = 0; it < iterations; it++) {
-    for (let i = 0; i < n; i++) {
+    for (let k = 0; k < taking; k++) {
+      const i = rows[k]!;
       const target = RV[i]!;
-      if (target < 0) continue;
       const a = IA[i]! * S, b = IB[i]! * S;
       const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
       let vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny;
