@@ -40,11 +40,14 @@ export default defineConfig({
           globalSetup: ['test/browser/global-setup.ts'],
           // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
           hookTimeout: 600_000,
-          // One more try for a failed browser test. Every page shares one software-rendered GPU
-          // process (SwiftShader); after a heavy page it can lag for tens of seconds, and a page read
-          // or a drag timed by frames then fails although the page is right (one clean-clone run of
-          // three on 2026-11-22: balls-3d with 3,000 balls, a 2D page's first frame, a bouncing-balls
-          // drag). A test that fails twice fails the run.
+          // One more try for a failed browser test, kept as a safety net. Every page shares one
+          // software-rendered GPU process (SwiftShader). The known causes of first-attempt failures
+          // are handled where they arise: pages pace their frames to the GPU (games/shared/frame-pacer.ts),
+          // a page stuck at its start is reopened (test/browser/harness.ts STUCK_MS), a page opened in
+          // a test is closed when it ends, and input tests wait on the game's state, not the clock.
+          // With those, five full browser lanes at load 3 to 20 (2026-11-22) needed no retry (a page
+          // stuck at its start was reopened in two of them).
+          // A test that fails twice fails the run.
           retry: 1,
         },
       },

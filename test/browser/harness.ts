@@ -81,7 +81,9 @@ export const PAGE_TIMEOUT_MS = 30_000;
  * A page not ready this long after its response whose main thread then does not answer a CDP
  * evaluation within 3 s is stuck: `Harness.open` closes it and opens it once more, in a new context.
  * Seen in headless Chromium 143 with SwiftShader about once in 6 to 20 openings of balls-3d with
- * 3,000 balls right after another WebGL page closed (2026-11-22, load 13 to 20): the new page's main
+ * 3,000 balls right after another WebGL page closed (2026-11-22, load 13 to 20), and in full browser
+ * lanes once a run for a 2D page (lab-projectile-drag after earth-moon closed; bouncing-balls with
+ * 1,200 balls beside an open one): the new page's main
  * thread waited without end in a synchronous call to the GPU process, whose main thread and
  * VizCompositorThread both sat in condition-variable waits using no CPU (gdb: SwiftShader's queue
  * and worker threads idle) for minutes, past any timeout of the test. The same page opened again in
