@@ -9,49 +9,61 @@ import type { KernelArray } from '../threads/kernel-types.js';
 /**
  * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
- * the contact buffer's rows (contact-pack2d.ts layout) colour by colour into the pack (one block a
- * range of plan[7] ranges, each from its own first slot of every colour, `offsets`), then each
+ * the contact buffer's rows (contact-pack2d.ts layout) group by group into the pack (one block a
+ * range of plan[7] ranges, each from its own first slot of every group, `offsets`), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
- * pass colour by colour, 256 rows a block, the overflow colour in one block), then writing the
- * impulses back to the buffer (normal, tangent, largest pass impulse, delivered total, as
- * unpackContacts2D). Threads claim blocks in that order from one counter (Atomics.add) and start a
- * unit's block only once every block of the earlier units is done, so a thread the system has not
- * scheduled holds nothing up unless it holds a block (work sharing, as Box2D v3's solver stages), and
- * which thread runs a block never changes a result: blocks of a unit touch disjoint movable bodies
- * (the overflow colour is one block), rows of a colour stay in pack order.
+ * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
+ * the buffer (normal, tangent, largest pass impulse, delivered total, as unpackContacts2D). Threads
+ * claim blocks in that order from one counter (Atomics.add) and start a unit's block only once every
+ * block of the earlier units is done, so a thread the system has not scheduled holds nothing up
+ * unless it holds a block (work sharing, as Box2D v3's solver stages), and which thread runs a block
+ * never changes a result: blocks of a colour touch disjoint movable bodies, a block's rows run in pack
+ * order. With strips (plan[9] = 1, contact-colors.ts) the body stages run inside colour 0's blocks
+ * instead of as units of their own: gravity before a block's warm start, positions before its first
+ * relax pass (when there is one), each block for its strip pair's bodies (`bodyOrder` from
+ * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
+ * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
+ * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
  * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running (not read here), 4 colours
- * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 .. 8 + C + 1
- * the colours' first rows, the overflow colour's rows from plan[8 + C] to plan[9 + C]), 5 counters
- * (Int32, 0 on entry: blocks claimed, blocks done, abort), 6 each row's colour (Uint8: 0 .. P[12] - 2,
- * P[12] - 1 the overflow colour, 255 not packed), 7 offsets (Int32, P[12] a packing range: its next
- * pack slot of each colour; advanced as it packs),
+ * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 rows packed,
+ * 9 strips (1: fused body stages), 12 + c colour c's first block (c = 0 .. C; colour C the overflow
+ * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: blocks claimed, blocks done, abort),
+ * 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255 not packed),
+ * 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as it packs),
  * the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15 normalMass,
  * 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner (Uint8),
- * 21 maxNormalImpulse, 22 totalNormalImpulse. P: 0 1 / h_s, 1-3 dynamic softness, 4-6 rigid softness,
- * 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the buffer's rows, 12 colour slots a thread in
- * offsets. The arithmetic of each row and body is that of solver.ts's one-thread loops. Returns 0
- * (-1 if another thread failed and this one stopped).
+ * 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j] ..
+ * bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32). P: 0 1 / h_s, 1-3
+ * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
+ * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds). The
+ * arithmetic of each row and body is that of solver.ts's one-thread loops. Returns 0 (-1 if another
+ * thread failed and this one stopped).
  */
 export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
   const pk = A[0] as Float64Array, sb = A[1] as Float64Array, ex = A[2] as Float64Array, dyn = A[3] as Uint8Array;
   const plan = A[4] as Int32Array, bar = A[5] as Int32Array;
   const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, C = plan[4]!, nb = plan[5]!, parts = plan[7]!;
+  const np = plan[8]!, fused = plan[9] === 1;
   const wait = part !== 0 || plan[6] === 1;
   const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
-  const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!;
+  const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!, spinMs = P[13]! / 1000;
   const color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
   const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
   const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
   const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
   const RP = A[20] as Uint8Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
-  // Rows and bodies a block.
+  const bounds = A[23] as Int32Array, order = A[24] as Int32Array, bodyBounds = A[25] as Int32Array;
+  const clock = (globalThis as { performance?: { now(): number } }).performance;
+  // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256, BB = 1024;
   // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
   // positions (bodies), then the relax passes.
   const stages = 3 + iters + relax;
-  const np = plan[9 + C]!;
+  // With strips, gravity always and positions when a relax pass follows run inside colour 0's blocks.
+  const bodyUnits = Math.ceil((nb - 1) / BB);
+  const gravityUnits = fused ? 0 : bodyUnits, positionUnits = fused && relax > 0 ? 0 : bodyUnits;
   // The units in order: the packing (one block a range of `parts`), then every substep's stages (a
   // body stage one unit, a pass C + 1 units, one a colour, the overflow colour one block), then the
   // unpacking. Blocks are numbered across the units in that order and claimed from bar[0]; bar[1]
@@ -62,26 +74,31 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   let stage = 0, u = 0;
   for (let g = 0; g < units; g++) {
     // Which unit g is: kind 0 pack, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
-    let kind: number, first = 0, last = 0, count: number;
+    let kind: number, first = 0, count: number;
     if (g === 0) { kind = 0; count = parts; }
-    else if (g === units - 1) { kind = 4; first = 0; last = np; count = Math.ceil(np / RB_); }
+    else if (g === units - 1) { kind = 4; count = Math.ceil(np / RB_); }
     else {
-      if (stage === 0 || stage === 2 + iters) { kind = stage === 0 ? 1 : 2; count = Math.ceil((nb - 1) / BB); }
+      if (stage === 0 || stage === 2 + iters) { kind = stage === 0 ? 1 : 2; count = stage === 0 ? gravityUnits : positionUnits; }
       else {
         kind = 3;
-        first = plan[8 + u]!; last = plan[9 + u]!;
-        count = u === C ? (last > first ? 1 : 0) : Math.ceil((last - first) / RB_);
+        first = plan[12 + u]!;
+        count = plan[13 + u]! - first;
       }
     }
     const end = base + count;
     while (b < end) {
-      // Wait until every block of the earlier units is done.
-      let spins = 0;
-      for (;;) {
-        const done = Atomics.load(bar, 1);
-        if (done >= base) break;
-        if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
-        if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
+      // Wait until every block of the earlier units is done: spin a while, then block.
+      if (Atomics.load(bar, 1) < base) {
+        let t0 = -1, spins = 0;
+        for (;;) {
+          const done = Atomics.load(bar, 1);
+          if (done >= base) break;
+          if (Atomics.load(bar, 2) !== 0) { failed = true; break; }
+          if (!wait || (++spins & 255) !== 0) continue;
+          const t = clock !== undefined ? clock.now() : 0;
+          if (t0 < 0) t0 = t;
+          if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
+        }
       }
       if (failed) break;
       const blk = b - base;
@@ -120,9 +137,27 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
             LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
           }
         } else {
-          // A block of colour u's rows (the overflow colour in one block: its rows may share bodies).
-          const r0 = u === C ? first : first + blk * RB_;
-          const r1 = u === C ? last : Math.min(last, r0 + RB_);
+          // A block of colour u's rows.
+          const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
+          // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+          // positions before the first relax pass).
+          if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+            const q0 = bodyBounds[blk]!, q1 = bodyBounds[blk + 1]!;
+            if (stage === 1) {
+              for (let q = q0; q < q1; q++) {
+                const k = order[q]!;
+                if (dyn[k] !== 1) continue;
+                const o = k * 8;
+                sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
+              }
+            } else {
+              for (let q = q0; q < q1; q++) {
+                const k = order[q]!, o = k * 8;
+                sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
+                if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+              }
+            }
+          }
           if (stage === 1) {
             for (let k = r0; k < r1; k++) {
               const o = k * 16;

@@ -1,22 +1,36 @@
 /**
- * The 2D ball contacts' soft substeps on the world's threads, by graph colouring (Box2D v3's approach,
- * Catto, "Solver2D" and Box2D v3.0 solver.c / constraint_graph.c).
+ * The 2D ball contacts' soft substeps on the world's threads, in blocks of rows that share no movable
+ * body, as Box2D v3 does with its graph colours (Catto, "Solver2D" and Box2D v3.0 solver.c /
+ * constraint_graph.c). A "colour" here is a set of blocks that may run at once; the threads claim
+ * blocks and meet only where one colour ends and the next begins. Two ways to cut the rows:
  *
- * The step's contact rows are coloured greedily, in buffer order, so that no two rows of one colour
- * share a body that can move under an impulse (a solver body with inverse mass or inertia; the static
- * world and kinematic bodies are shared freely: rows only read them). Up to `MAX_COLORS` colours; a row
- * that finds none free goes to an overflow colour that one thread solves alone. The rows are packed
- * colour by colour (contact-pack2d.ts, buffer order within a colour) and the whole substep loop
- * (gravity, warm start, biased passes, positions, relax passes) runs as one kernel on every thread:
- * each colour's rows are split into one contiguous range a thread, the bodies into ranges for the
- * per-body stages, and the threads meet at a barrier (Atomics) after every colour and stage.
+ * - strips (the usual way): the movable solver bodies are cut into `STRIPS` strips across the pile's
+ *   longer axis, each holding about as many rows as the others (quantiles of a histogram of the rows'
+ *   first movable body). A row belongs to the strip of its lower body; when no row joins bodies more
+ *   than one strip apart, the even strips' rows touch disjoint bodies (strip 2j's rows touch strips 2j
+ *   and 2j + 1 only), and so do the odd strips': colour 0 is the even strips, colour 1 the odd ones,
+ *   each strip one block solved in buffer order, and the few rows that join bodies further apart go to
+ *   the overflow colour. A pass then takes two meetings of the threads instead of one a graph colour
+ *   (about ten), and the body stages (gravity before the warm start, positions before the relax pass)
+ *   run inside the even blocks, for their strip pair's bodies, without a meeting of their own;
+ * - graph colours (when the strips leave more than 1/64 of the rows to the overflow colour even at
+ *   four strips, e.g. a tall narrow pile of mixed sizes): the rows are coloured greedily, in buffer
+ *   order, so that no two rows of one colour share a body that can move under an impulse (a solver body
+ *   with inverse mass or inertia; the static world and kinematic bodies are shared freely: rows only
+ *   read them). Up to `MAX_COLORS` colours; a row that finds none free goes to an overflow colour that
+ *   one thread solves alone. Blocks of 256 rows.
  *
- * Rows of one colour touch disjoint movable bodies, so how a colour is split does not change any
- * result: the coloured solve gives the same bits on 1, 2 or n threads, and the adaptive pool may run
- * it on one thread when the threads do not pay (threads/adaptive.ts) without changing the state. Its
- * impulse order (colour by colour) differs from the one-thread world's (buffer order), so a world
- * made with `threads: n > 1` whose step takes this path follows a slightly different trajectory than
- * the same world with `threads: 1`: both are deterministic, and equal for a given thread count.
+ * Either way the rows are packed colour by colour (contact-pack2d.ts; within a block in buffer order)
+ * and the whole substep loop (gravity, warm start, biased passes, positions, relax passes) runs as one
+ * kernel on every thread (contact-colors-kernel.ts).
+ *
+ * Blocks of one colour touch disjoint movable bodies, and the cut depends on the state alone (not on
+ * the number of threads), so which thread runs a block does not change any result: the solve gives
+ * the same bits on 1, 2 or n threads, and the adaptive pool may run it on one thread when the threads
+ * do not pay (threads/adaptive.ts) without changing the state. Its impulse order (block by block)
+ * differs from the one-thread world's (buffer order), so a world made with `threads: n > 1` whose step
+ * takes this path follows a slightly different trajectory than the same world with `threads: 1`: both
+ * are deterministic, and equal for any thread count above one.
  *
  * Taken only in 2D worlds with a thread pool, no joints and no shape manifolds in the step (they
  * solve between the contacts within each pass), and at least `CollisionSettings.coloredSolveMinRows` rows (default 16384).
@@ -50,8 +64,27 @@ export function shareContactBuffer(buf: ContactBuffer): void {
 /** Colours before the overflow colour (bits of a 32-bit mask a body). */
 export const MAX_COLORS = 32;
 
-/** Int32 slots of the plan before the colour starts (see solveColored2D). */
-const PLAN_HEAD = 8;
+/**
+ * Strips the movable bodies are first cut into (even, at most MAX_COLORS: a strip is a packing group);
+ * fewer (halved down to 4) when too many rows join bodies more than one strip apart.
+ */
+export const STRIPS = 32;
+
+/** Rows a block of a graph colour. */
+const BLOCK_ROWS = 256;
+
+/** Int32 slots of the plan before the colours' first blocks (see solveColored2D). */
+export const PLAN_HEAD = 12;
+
+/**
+ * Microseconds a thread of the coloured solve spins, waiting for the next colour, before it blocks in
+ * Atomics.wait: waking a blocked thread takes some tens of microseconds, about what the threads' ends
+ * of a colour differ by, so a short spin saves that wake-up without holding a core for long.
+ */
+export const SPIN_MICROSECONDS = 50;
+
+/** Histogram bins of the strips' quantiles. */
+const BINS = 4096;
 
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
@@ -60,6 +93,12 @@ interface ColorScratch {
   offsets: Int32Array;
   /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each). */
   counts: Int32Array; start: Int32Array; next: Int32Array;
+  /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
+  bounds: Int32Array;
+  /** Strips: the movable solver bodies by strip pair, and each pair's first entry there (shared). */
+  bodyOrder: Int32Array; bodyBounds: Int32Array;
+  /** Strips: each solver body's strip (255: fixed, in no strip); the rows' histogram; each bin's strip. */
+  strip: Uint8Array; hist: Int32Array; binStrip: Uint8Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
   pending: boolean;
 }
@@ -75,14 +114,21 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       params: new Float64Array(16), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
+      bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
+      bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)), bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      strip: new Uint8Array(1024), hist: new Int32Array(BINS), binStrip: new Uint8Array(BINS),
       pending: false,
     };
     scratchOf.set(cs, s);
   }
   if (s.pack.length < rows * PACK_STRIDE) s.pack = sharedLike(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
   if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
+  const blocks = Math.ceil(rows / BLOCK_ROWS) + MAX_COLORS + 2;
+  if (s.bounds.length < blocks) s.bounds = sharedLike(s.bounds, Math.max(blocks, 2 * s.bounds.length));
   if (s.dyn.length < bodies) s.dyn = sharedLike(s.dyn, Math.max(bodies, 2 * s.dyn.length));
+  if (s.bodyOrder.length < bodies) s.bodyOrder = sharedLike(s.bodyOrder, Math.max(bodies, 2 * s.bodyOrder.length));
   if (s.mask.length < bodies) s.mask = new Uint32Array(Math.max(bodies, 2 * s.mask.length));
+  if (s.strip.length < bodies) s.strip = new Uint8Array(Math.max(bodies, 2 * s.strip.length));
   return s;
 }
 
@@ -103,17 +149,20 @@ export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others:
   return isShared(cs.bodyState) && isShared(cs.bodyExtra);
 }
 
+/** Whether a row can do nothing (no mass to move, no impulse to warm start): it is left out of the pack. */
+function idle(NM: Float64Array, TM: Float64Array, LN: Float64Array, LT: Float64Array, i: number): boolean {
+  return NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0;
+}
+
 /**
- * Colours the rows of `buf` (solver indices, masses and impulses prepared) greedily in buffer order;
- * fills the plan's colour starts and, for the kernel's packing stage, each of `parts` row ranges'
- * first pack slot of every colour (`offsets`, MAX_COLORS + 1 a range: the range's rows of a colour
- * follow the previous ranges' rows of that colour, so the pack is in buffer order within each colour
- * however many threads pack it). Returns the rows to pack.
+ * Colours the rows of `buf` (solver indices, masses and impulses prepared) greedily in buffer order
+ * into `s.color` (255: not packed, MAX_COLORS: the overflow colour) and counts them per colour
+ * (`s.counts`) and per packing range (`s.offsets`, MAX_COLORS + 1 a range). Returns the colours used.
  */
 function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
   const n = buf.count, bodies = cs.solverBodyCount;
   const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
-  const sb = cs.bodyState, mask = s.mask, color = s.color, plan = s.plan;
+  const sb = cs.bodyState, mask = s.mask, color = s.color;
   const W = MAX_COLORS + 1, partCounts = s.offsets;
   mask.fill(0, 0, bodies);
   partCounts.fill(0, 0, parts * W);
@@ -122,7 +171,7 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
   for (let p = 0; p < parts; p++) {
     const lo = Math.floor((n * p) / parts), hi = Math.floor((n * (p + 1)) / parts), base = p * W;
     for (let i = lo; i < hi; i++) {
-      if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) { color[i] = 255; continue; } // a row that can do nothing
+      if (idle(NM, TM, LN, LT, i)) { color[i] = 255; continue; }
       const a = IA[i]!, b = IB[i]!;
       // Only bodies an impulse can move take a colour's slot (the static world and kinematic bodies are read only).
       const ma = a !== 0 && (sb[a * 8 + 5]! > 0 || sb[a * 8 + 6]! > 0);
@@ -141,20 +190,108 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
       partCounts[base + c] = partCounts[base + c]! + 1;
     }
   }
-  // Colour starts (the overflow colour last), then rows in buffer order within each colour.
   let used = 0;
   for (let c = 0; c < MAX_COLORS; c++) if (counts[c]! > 0) used = c + 1;
-  const start = s.start;
+  return used;
+}
+
+/**
+ * Cuts the movable solver bodies into `strips` strips (even, 2 .. MAX_COLORS) across the longer axis of
+ * their base positions (bodyExtra), each with about n / strips rows, and gives every row the packing
+ * group of its lower strip (even strips first: strip 2j is group j, strip 2j + 1 group strips / 2 + j;
+ * MAX_COLORS: the overflow colour, rows joining bodies more than one strip apart; 255 not packed), with
+ * the counts per group and per packing range as colorRows. A body is movable unless nothing can change
+ * it (no inverse mass or inertia, no gravity, no velocity). Returns the rows in the overflow colour.
+ */
+function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number, strips: number, dyn: Uint8Array): number {
+  const n = buf.count, bodies = cs.solverBodyCount;
+  const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
+  const sb = cs.bodyState, ex = cs.bodyExtra, strip = s.strip, color = s.color;
+  // The longer axis of the movable bodies' spread.
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  strip[0] = 255;
+  for (let k = 1; k < bodies; k++) {
+    const o = k * 8;
+    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) { strip[k] = 255; continue; }
+    strip[k] = 0;
+    const x = ex[k * 6]!, y = ex[k * 6 + 1]!;
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  }
+  const axis = x1 - x0 >= y1 - y0 ? 0 : 1;
+  const lo = axis === 0 ? x0 : y0, span = axis === 0 ? x1 - x0 : y1 - y0;
+  const scale = span > 0 && Number.isFinite(span) ? (BINS - 1) / span : 0;
+  // Rows a bin (by the row's first movable body), then the bins' strips at the rows' quantiles.
+  const hist = s.hist, binStrip = s.binStrip;
+  hist.fill(0);
+  for (let i = 0; i < n; i++) {
+    const a = IA[i]!, b = IB[i]!;
+    const k = strip[a] !== 255 ? a : b;
+    if (strip[k] === 255) continue;
+    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
+    hist[bin >= 0 && bin < BINS ? bin : 0]++;
+  }
+  let total = 0;
+  for (let j = 0; j < BINS; j++) total += hist[j]!;
+  let acc = 0;
+  for (let j = 0; j < BINS; j++) {
+    // Strip of the bin's middle row: floor(strips * rows before its middle / rows).
+    const mid = acc + hist[j]! / 2;
+    const st = total > 0 ? Math.min(strips - 1, Math.floor((strips * mid) / total)) : 0;
+    binStrip[j] = st;
+    acc += hist[j]!;
+  }
+  for (let k = 1; k < bodies; k++) {
+    if (strip[k] === 255) continue;
+    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
+    strip[k] = binStrip[bin >= 0 && bin < BINS ? bin : 0]!;
+  }
+  // Each row's group.
+  const W = MAX_COLORS + 1, partCounts = s.offsets, counts = s.counts, half = strips >> 1;
+  partCounts.fill(0, 0, parts * W);
+  counts.fill(0);
+  let overflow = 0;
+  for (let p = 0; p < parts; p++) {
+    const r0 = Math.floor((n * p) / parts), r1 = Math.floor((n * (p + 1)) / parts), base = p * W;
+    for (let i = r0; i < r1; i++) {
+      if (idle(NM, TM, LN, LT, i)) { color[i] = 255; continue; }
+      const sa = strip[IA[i]!]!, sbb = strip[IB[i]!]!;
+      let low: number, high: number;
+      if (sa === 255) { low = sbb === 255 ? 0 : sbb; high = low; }
+      else if (sbb === 255) { low = sa; high = sa; }
+      else { low = sa < sbb ? sa : sbb; high = sa < sbb ? sbb : sa; }
+      let c: number;
+      if (high - low > 1) { c = MAX_COLORS; overflow++; }
+      else c = (low & 1) === 0 ? low >> 1 : half + (low >> 1);
+      color[i] = c;
+      counts[c] = counts[c]! + 1;
+      partCounts[base + c] = partCounts[base + c]! + 1;
+    }
+  }
+  return overflow;
+}
+
+/**
+ * Lays the pack out from the rows' groups (colorRows or stripRows): groups 0 .. `groups` - 1 in order,
+ * then the overflow group (MAX_COLORS); turns `s.offsets` into each packing range's first slot of each
+ * group (the range's rows of a group follow the previous ranges' rows of it, so the pack is in buffer
+ * order within each group however many threads pack it) and fills the blocks: `blocksOf(g)` cuts
+ * group g into blocks (graph colours: 256 rows; strips: one). The plan gets colour c's first block at
+ * PLAN_HEAD + c (`colorOf(g)`: the colour of group g, non-decreasing in g; `colors` of them, then the
+ * overflow colour, one block) and the rows to pack at slot 8. Returns the rows to pack.
+ */
+function layout(s: ColorScratch, parts: number, groups: number, colors: number, colorOf: (g: number) => number, wholeGroups: boolean): number {
+  const counts = s.counts, start = s.start, plan = s.plan, bounds = s.bounds;
+  const W = MAX_COLORS + 1, partCounts = s.offsets;
   start.fill(0);
   let at = 0;
-  for (let c = 0; c < used; c++) { start[c] = at; at += counts[c]!; }
-  start[used] = at; at += counts[MAX_COLORS]!; start[used + 1] = at;
-  plan[4] = used;
-  for (let c = 0; c <= used + 1; c++) plan[PLAN_HEAD + c] = start[c]!;
-  // Each range's first slot of each colour (slot MAX_COLORS: the overflow colour, packed after colour used - 1).
+  for (let g = 0; g < groups; g++) { start[g] = at; at += counts[g]!; }
+  start[groups] = at; at += counts[MAX_COLORS]!; start[groups + 1] = at;
   const next = s.next;
   next.set(start);
-  next[MAX_COLORS] = start[used]!;
+  next[MAX_COLORS] = start[groups]!;
   for (let p = 0; p < parts; p++) {
     const base = p * W;
     for (let c = 0; c < W; c++) {
@@ -163,11 +300,78 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
       next[c] = next[c]! + k;
     }
   }
+  // Blocks, colour by colour.
+  let nb = 0, color = -1;
+  for (let g = 0; g < groups; g++) {
+    const c = colorOf(g);
+    while (color < c) plan[PLAN_HEAD + ++color] = nb;
+    const r0 = start[g]!, r1 = start[g + 1]!;
+    if (wholeGroups) { if (r1 > r0) bounds[nb++] = r0; }
+    else for (let r = r0; r < r1; r += BLOCK_ROWS) bounds[nb++] = r;
+  }
+  while (color < colors) plan[PLAN_HEAD + ++color] = nb;
+  if (start[groups + 1]! > start[groups]!) bounds[nb++] = start[groups]!;
+  plan[PLAN_HEAD + colors + 1] = nb;
+  bounds[nb] = at;
+  plan[4] = colors;
+  plan[8] = at;
+  return at;
+}
+
+/**
+ * Plans the coloured solve of `buf`'s rows: strips when they leave at most 1/64 of the rows (and at
+ * least 64) to the overflow colour at some strip count from STRIPS down to 4, else graph colours (see
+ * the file's header). Fills the pack layout, the blocks, the plan's colours (slot 9: 1 for strips,
+ * whose even blocks also run their strip pair's body stages: `s.bodyOrder`, `s.bodyBounds`), and the
+ * bodies that take gravity (`s.dyn`). Returns the rows to pack.
+ */
+function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
+  const bodies = cs.solverBodyCount, plan = s.plan;
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver.ts).
   const list = cs.solverBodies, type = cs.bodyType, dyn = s.dyn;
   dyn[0] = 0;
   for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === BodyType.Dynamic ? 1 : 0;
-  return at;
+  const limit = Math.max(64, buf.count >> 6);
+  for (let strips = STRIPS; strips >= 4; strips >>= 1) {
+    if (stripRows(cs, buf, s, parts, strips, dyn) > limit) continue;
+    const half = strips >> 1;
+    // Movable bodies by strip pair (counting sort), for the even blocks' body stages.
+    const bb = s.bodyBounds, order = s.bodyOrder, strip = s.strip;
+    bb.fill(0);
+    for (let k = 1; k < bodies; k++) if (strip[k] !== 255) bb[(strip[k]! >> 1) + 1]++;
+    for (let j = 0; j < half; j++) bb[j + 1] = bb[j + 1]! + bb[j]!;
+    const cursor = s.next;
+    for (let j = 0; j <= half; j++) cursor[j] = bb[j]!;
+    for (let k = 1; k < bodies; k++) {
+      if (strip[k] === 255) continue;
+      const j = strip[k]! >> 1;
+      order[cursor[j]!] = k;
+      cursor[j] = cursor[j]! + 1;
+    }
+    // A strip pair without rows has no block: its bodies join the previous pair's (or the next) block.
+    // Blocks are whole groups; the body ranges follow the even blocks, so an even strip without rows
+    // passes its bodies to the block before it (the first such block takes those before it).
+    const counts = s.counts;
+    const evenBlock = s.start; // scratch: body range end of each even block
+    let blocks = 0;
+    for (let j = 0; j < half; j++) if (counts[j]! > 0) evenBlock[blocks++] = j;
+    // bodyBounds per even block: block m covers pairs from its own (or 0 for m = 0) to the next block's.
+    const pairStart = new Int32Array(blocks + 1);
+    for (let m = 0; m < blocks; m++) pairStart[m] = m === 0 ? 0 : evenBlock[m]!;
+    pairStart[blocks] = half;
+    const ranges = new Int32Array(blocks + 1);
+    for (let m = 0; m <= blocks; m++) ranges[m] = bb[pairStart[m]!]!;
+    if (blocks === 0) { plan[9] = 0; }
+    else {
+      for (let m = 0; m <= blocks; m++) bb[m] = ranges[m]!;
+      plan[9] = 1;
+    }
+    plan[10] = blocks;
+    return layout(s, parts, strips, 2, (g) => (g < half ? 0 : 1), true);
+  }
+  const used = colorRows(cs, buf, s, parts);
+  plan[9] = 0;
+  return layout(s, parts, used, used, (g) => g, false);
 }
 
 /** Colours used by the last coloured solve of `cs` (0: none ran), for tests and the bench. */
@@ -177,27 +381,32 @@ export function lastColorCount(cs: CollisionState): number {
 }
 
 /**
- * Checks the last coloured solve of `cs` (a test of the colouring, not of physics): the number of times
- * a movable solver body (inverse mass or inertia > 0) appears in two rows of one colour (the overflow
- * colour, solved by one thread, excepted), and the rows in the overflow colour. 0 conflicts is the
- * colouring's promise.
+ * Checks the last coloured solve of `cs` (a test of the cut, not of physics): the number of times a
+ * movable solver body (inverse mass or inertia > 0) appears in rows of two blocks of one colour (blocks
+ * of a colour run at once on different threads; the overflow colour is one block), the rows in the
+ * overflow colour, the rows packed, and whether the rows were cut into strips. 0 conflicts is the
+ * cut's promise.
  */
-export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number } {
+export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number; strips: boolean } {
   const s = scratchOf.get(cs);
-  if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0 };
-  const plan = s.plan, C = plan[4]!, pk = s.pack, sb = cs.bodyState;
+  if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
+  const plan = s.plan, C = plan[4]!, pk = s.pack, sb = cs.bodyState, bounds = s.bounds;
   const seen = new Map<number, number>();
   let conflicts = 0;
   for (let c = 0; c < C; c++) {
-    for (let k = plan[PLAN_HEAD + c]!; k < plan[PLAN_HEAD + c + 1]!; k++) {
-      for (const off of [pk[k * PACK_STRIDE]!, pk[k * PACK_STRIDE + 1]!]) {
-        if (!(sb[off + 5]! > 0 || sb[off + 6]! > 0)) continue;
-        if (seen.get(off) === c) conflicts++;
-        seen.set(off, c);
+    for (let j = plan[PLAN_HEAD + c]!; j < plan[PLAN_HEAD + c + 1]!; j++) {
+      for (let k = bounds[j]!; k < bounds[j + 1]!; k++) {
+        for (const off of [pk[k * PACK_STRIDE]!, pk[k * PACK_STRIDE + 1]!]) {
+          if (!(sb[off + 5]! > 0 || sb[off + 6]! > 0)) continue;
+          const key = c * 1e9 + off, was = seen.get(key);
+          if (was !== undefined && was !== j) conflicts++;
+          seen.set(key, j);
+        }
       }
     }
   }
-  return { conflicts, overflow: plan[PLAN_HEAD + C + 1]! - plan[PLAN_HEAD + C]!, rows: plan[PLAN_HEAD + C + 1]! };
+  const o0 = plan[PLAN_HEAD + C]!, o1 = plan[PLAN_HEAD + C + 1]!;
+  return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[8]!, strips: plan[9] === 1 };
 }
 
 /** Whether this thread may block in Atomics.wait (not a browser's main thread); cached. */
@@ -223,18 +432,19 @@ export function solveColoredSubsteps(
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   shareContactBuffer(buf);
-  const np = colorRows(cs, buf, s, pool.threads);
+  const np = planRows(cs, buf, s, pool.threads);
   const plan = s.plan, P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;
   plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0; plan[7] = pool.threads;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
-  P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1;
+  P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
   const A = s.arrays;
   A.length = 0;
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
     buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
-    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse);
+    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
+    s.bounds, s.bodyOrder, s.bodyBounds);
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
@@ -254,8 +464,10 @@ export function solveColoredSubsteps(
 export interface ColoredPlan {
   /** The packed rows, colour by colour (contact-pack2d.ts), shared. */
   pack: Float64Array;
-  /** The plan (solveColored2D's layout: 3 threads, 4 colours, 8.. the colours' first rows), shared. */
+  /** The plan (solveColored2D's layout: 3 threads, 4 colours C, 8 rows packed, PLAN_HEAD + c colour c's first block), shared. */
   plan: Int32Array;
+  /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
+  bounds: Int32Array;
   /** The barrier's four Int32 slots, shared (slot 3 free for the restitution stage's count). */
   bar: Int32Array;
 }

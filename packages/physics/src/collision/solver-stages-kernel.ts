@@ -158,46 +158,53 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
  * (or by one thread alone). First, per row (blocks of 1,024 rows, each row on its own as in solver.ts):
  * a row that carried no impulse takes no part (target -1); one that approached faster than its
  * threshold gets the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0.
- * Then, if any row bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the rows
- * of a colour share no movable body, so its blocks (256 rows; the overflow colour one block) may go to
- * any thread. Threads claim blocks in order from one counter and start a unit (the first stage, or a
- * colour of a pass) once every block of the earlier units is done, as solveColored2D.
+ * Then, if any row bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the
+ * blocks of a colour share no movable body (contact-colors.ts: strips or graph colours; the overflow
+ * colour one block), so they may go to any thread. Threads claim blocks in order from one counter and
+ * start a unit (the first stage, or a colour of a pass) once every block of the earlier units is
+ * done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 4
- * colours C, 8 .. 9 + C the colours' first rows), 2 counters (Int32, 0 on entry: 0 blocks claimed,
- * 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32), 6 nx, 7 ny,
- * 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12 maxNormalImpulse,
- * 13 totalNormalImpulse, 14 impulse. P: 0 contact rows, 1 restitutionThreshold (m/s), 2
+ * colours C, 12 + c colour c's first block, c = 0 .. C + 1), 2 counters (Int32, 0 on entry: 0 blocks
+ * claimed, 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
+ * 6 nx, 7 ny, 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12
+ * maxNormalImpulse, 13 totalNormalImpulse, 14 impulse, 15 bounds (Int32: block j is pack rows
+ * bounds[j] .. bounds[j + 1] - 1). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
  * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
- * Atomics.wait (1). Returns 0 (-1 if another thread failed and this one stopped).
+ * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
+ * this one stopped).
  */
 export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
   const pk = A[0] as Float64Array, plan = A[1] as Int32Array, bar = A[2] as Int32Array, sb = A[3] as Float64Array;
   const IA = A[4] as Int32Array, IB = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
   const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
-  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
-  const n = P[0]!, threshold = P[1]!, elasticThreshold = P[2]!, iterations = P[3]!;
+  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array, bounds = A[15] as Int32Array;
+  const n = P[0]!, threshold = P[1]!, elasticThreshold = P[2]!, iterations = P[3]!, spinMs = P[5]! / 1000;
   const C = plan[4]!;
   const wait = part !== 0 || P[4] === 1;
-  const FIRST = 1024, ROWS = 256;
+  const clock = (globalThis as { performance?: { now(): number } }).performance;
+  const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
   let base = 0, failed = false;
   // Waits until every block of the units before the current one (`base` blocks) is done; false if
   // another thread failed.
   const earlierDone = (): boolean => {
-    let spins = 0;
+    let spins = 0, t0 = -1;
     for (;;) {
       const done = Atomics.load(bar, 1);
       if (done >= base) return true;
       if (Atomics.load(bar, 2) !== 0) return false;
-      if (++spins > 200 && wait) Atomics.wait(bar, 1, done, 50);
+      if (!wait || (++spins & 255) !== 0) continue;
+      const t = clock !== undefined ? clock.now() : 0;
+      if (t0 < 0) t0 = t;
+      if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
     }
   };
   let b = Atomics.add(bar, 0, 1);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
-    const first = c < 0 ? 0 : plan[8 + c]!, last = c < 0 ? n : plan[9 + c]!;
-    const count = c < 0 ? Math.ceil(n / FIRST) : c === C ? (last > first ? 1 : 0) : Math.ceil((last - first) / ROWS);
+    const first = c < 0 ? 0 : plan[12 + c]!;
+    const count = c < 0 ? Math.ceil(n / FIRST) : plan[13 + c]! - first;
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
@@ -226,8 +233,7 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
           }
           if (bouncing > 0) Atomics.add(bar, 3, bouncing);
         } else {
-          const r0 = c === C ? first : first + blk * ROWS;
-          const r1 = c === C ? last : Math.min(last, r0 + ROWS);
+          const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
           for (let k = r0; k < r1; k++) {
             const o = k * 16;
             const i = pk[o + 15]!;

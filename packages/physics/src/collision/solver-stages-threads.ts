@@ -35,7 +35,7 @@ import { isShared, sharedFloat64, sharedLike, type ThreadPool } from '../threads
 import { nowMs } from '../threads/adaptive.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { reportNonFinite } from '../errors.js';
-import { callerMayWait, coloredPlan, shareContactBuffer } from './contact-colors.js';
+import { callerMayWait, coloredPlan, shareContactBuffer, SPIN_MICROSECONDS } from './contact-colors.js';
 import { restitutionColored2D } from './solver-stages-kernel.js';
 
 /**
@@ -212,9 +212,9 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;
   A.push(colored.pack, colored.plan, colored.bar, cs.bodyState, buf.ia, buf.ib, buf.nx, buf.ny, buf.normalMass, buf.restitution,
-    buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse);
+    buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse, colored.bounds);
   P[0] = buf.count; P[1] = st.restitutionThreshold; P[2] = st.elasticRestitutionThreshold; P[3] = st.restitutionIterations;
-  P[4] = callerMayWait() ? 1 : 0;
+  P[4] = callerMayWait() ? 1 : 0; P[5] = SPIN_MICROSECONDS;
   const bar = colored.bar, plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
