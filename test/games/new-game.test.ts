@@ -109,10 +109,21 @@ describe('npm run new-game', () => {
       await page.keyboard.press('b');
       await page.waitForFunction(() => (window.game as unknown as Game).ballCount() === 6, null, { timeout: 10_000 });
       await page.waitForFunction(() => (window.game as unknown as Game).stats().steps > 2, null, { timeout: 10_000 });
-      // Drawn: the canvas, read right after a frame, holds more than the background's colour.
+      // Drawn: the canvas, read right after a frame the game drew, holds more than the background's
+      // colour. The game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame
+      // in which it drew nothing leaves a blank buffer, so wait (20 s at most) for one in which its
+      // pacer's count of drawn frames moved, as test/browser/harness.ts canvasColors does.
       const colors = await page.evaluate(async () => {
         const canvas = document.querySelector('canvas')!;
-        await new Promise((r) => requestAnimationFrame(r));
+        const drawn = (): number | undefined => (window.game as unknown as { pacer?: { drawn?: number } }).pacer?.drawn;
+        let last = drawn();
+        const until = performance.now() + 20_000;
+        for (;;) {
+          await new Promise((r) => requestAnimationFrame(r));
+          const now = drawn();
+          if (now === undefined || now !== last || performance.now() > until) break;
+          last = now;
+        }
         const copy = new OffscreenCanvas(canvas.width, canvas.height).getContext('2d')!;
         copy.drawImage(canvas, 0, 0);
         const data = copy.getImageData(0, 0, canvas.width, canvas.height).data;
