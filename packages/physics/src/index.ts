@@ -65,7 +65,7 @@ export { sphereMass, boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, p
 export type { MassProperties3D } from './shapes3d/mass.js';
 export { Shape3DKind, shapes3DOf } from './shapes3d/store.js';
 export type { Shape3DStore } from './shapes3d/store.js';
-export { rayCast3D, rayCastAll3D } from './collision/shape3d-queries.js';
+export { rayCast3D, rayCastAll3D, overlapPoint3D, overlapAABB3D } from './collision/shape3d-queries.js';
 export type { RayHit3D } from './collision/shape3d-queries.js';
 export { addTriangleMesh3D, addHeightField3D } from './collision/mesh3d.js';
 export type { TriangleMeshOptions, HeightFieldOptions, Mesh3D } from './collision/mesh3d.js';

@@ -136,7 +136,7 @@ function pointDistance(x: number, y: number, s: ConvexGeometry): number {
 }
 
 function checkRay(where: string, world: PhysicsWorld, origin: unknown, translation: unknown): void {
-  if (world.dimensions !== 2) throw new TypeError(`${where}: ray casts are 2D; this world has 3 dimensions`);
+  if (world.dimensions !== 2) throw new TypeError(`${where}: ray casts here are 2D; this world has 3 dimensions (use ${where}3D)`);
   assertVector(where, 'origin', origin, 2);
   assertVector(where, 'translation', translation, 2);
   if (translation[0] === 0 && translation[1] === 0) throw new RangeError(`${where}: translation must not be zero, got ${describe(translation)}`);
@@ -181,7 +181,7 @@ export function rayCast(world: PhysicsWorld, origin: ArrayLike<number>, translat
  * @throws TypeError on a 3D world or a point that is not 2 finite numbers.
  */
 export function overlapPoint(world: PhysicsWorld, point: ArrayLike<number>): number[] {
-  if (world.dimensions !== 2) throw new TypeError('overlapPoint: shape queries are 2D; this world has 3 dimensions');
+  if (world.dimensions !== 2) throw new TypeError('overlapPoint: shape queries here are 2D; this world has 3 dimensions (use overlapPoint3D)');
   assertVector('overlapPoint', 'point', point, 2);
   const out: number[] = [];
   for (const e of colliders(world)) {
@@ -197,7 +197,7 @@ export function overlapPoint(world: PhysicsWorld, point: ArrayLike<number>): num
  */
 export function overlapAABB(world: PhysicsWorld, min: ArrayLike<number>, max: ArrayLike<number>): number[] {
   const where = 'overlapAABB';
-  if (world.dimensions !== 2) throw new TypeError(`${where}: shape queries are 2D; this world has 3 dimensions`);
+  if (world.dimensions !== 2) throw new TypeError(`${where}: shape queries here are 2D; this world has 3 dimensions (use overlapAABB3D)`);
   assertVector(where, 'min', min, 2);
   assertVector(where, 'max', max, 2);
   if (!(min[0]! <= max[0]! && min[1]! <= max[1]!)) throw new RangeError(`${where}: min must not exceed max, got ${describe(min)} and ${describe(max)}`);
