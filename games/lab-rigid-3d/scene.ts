@@ -220,7 +220,7 @@ function ragdoll(world: PhysicsWorld, h: LabHandles, mu: number): void {
   const x0 = 2.5, y0 = 2.6;
   const part = (p: [number, number, number], r: number, hh: number, horizontal = false): number => {
     const e = addBody(world, { position: p, orientation: horizontal ? [Math.SQRT1_2, 0, 0, Math.SQRT1_2] : [0, 0, 0, 1] });
-    addShape3D(world, e, { type: 'capsule', radius: r, halfHeight: hh, density: 1000, friction: mu, group: -7 });
+    addShape3D(world, e, { type: 'capsule', radius: r, halfHeight: hh, density: 1000, friction: mu });
     h.bodies.push(e); h.parts.push(e);
     return e;
   };

@@ -211,13 +211,13 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   for (let i = 0; i < CHAIN_LINKS; i++) {
     const cy = top - pitch / 2;
     const link = addBody(world, { position: [hx, cy, hz] });
-    addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: 7800, group: -1 });
+    addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: 7800 });
     addBallJoint3D(world, { a: prev, b: link, anchor: [hx, top, hz] });
     links.push(link);
     prev = link; top -= pitch;
   }
   const ball = addBody(world, { position: [hx, top - BALL_RADIUS, hz] });
-  addShape3D(world, ball, { type: 'sphere', radius: BALL_RADIUS, density: BALL_DENSITY * weight, friction: 0.4, restitution: 0.1, group: -1 });
+  addShape3D(world, ball, { type: 'sphere', radius: BALL_RADIUS, density: BALL_DENSITY * weight, friction: 0.4, restitution: 0.1 });
   addBallJoint3D(world, { a: prev, b: ball, anchor: [hx, top, hz] });
   // The chain's links are light next to the ball: a rope from the hook to the ball (its length the
   // chain's) carries the load, so the chain cannot stretch (Box2D's advice for heavy ends on chains).
