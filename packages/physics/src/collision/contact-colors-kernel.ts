@@ -37,8 +37,11 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j] ..
  * bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32). P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
- * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds). The
- * arithmetic of each row and body is that of solver.ts's one-thread loops. Returns 0 (-1 if another
+ * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
+ * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS. The arithmetic
+ * of each row and body is that of solver.ts's one-thread loops, support rows of the relax passes
+ * included (support.ts: a frictionless row with one ball resting on another holds the lower ball when
+ * that slows the upper one less than the lower). Returns 0 (-1 if another
  * thread failed and this one stopped).
  */
 export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
@@ -49,6 +52,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   const wait = part !== 0 || plan[6] === 1;
   const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
   const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!, spinMs = P[13]! / 1000;
+  const downX = P[14]!, downY = P[15]!, supportCos = P[16]!;
   const color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
   const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
   const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
@@ -183,6 +187,16 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
               const nx = pk[o + 2]!, ny = pk[o + 3]!;
               const imA = sb[a + 5]!, imB = sb[bb + 5]!;
               let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[bb]!, vby = sb[bb + 1]!;
+              // The normal impulse's inverse masses and effective mass: a frictionless support row of
+              // a relax pass may hold its lower ball (support.ts's holdsLower: lower speed <= upper).
+              let jmA = imA, jmB = imB, nm = pk[o + 7]!;
+              if (!useBias && pk[o + 9] === 0 && imA > 0 && imB > 0 && nm > 0) {
+                const up = -(downX * nx + downY * ny);
+                if (up > supportCos || up < -supportCos) {
+                  const va = Math.abs(vax * nx + vay * ny), vb = Math.abs(vbx * nx + vby * ny);
+                  if (up > 0 ? va <= vb : vb <= va) { if (up > 0) jmA = 0; else jmB = 0; nm = 1 / (jmA + jmB); }
+                }
+              }
               const sep = pk[o + 6]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
               let bias = 0, massScale = 1, impulseScale = 0;
               if (sep > 0) {
@@ -194,7 +208,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
               }
               const vn = (vbx - vax) * nx + (vby - vay) * ny;
               const oldN = pk[o + 10]!;
-              let lambda = -pk[o + 7]! * massScale * (vn + bias) - impulseScale * oldN;
+              let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
               let newN = oldN + lambda;
               if (newN < 0) newN = 0;
               lambda = newN - oldN;
@@ -202,7 +216,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
               if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
               if (total) pk[o + 14] = pk[o + 14]! + newN;
               let Px = lambda * nx, Py = lambda * ny;
-              vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
+              vax -= jmA * Px; vay -= jmA * Py; vbx += jmB * Px; vby += jmB * Py;
               const ra = pk[o + 4]!, rb = pk[o + 5]!;
               let wa = sb[a + 2]!, wb = sb[bb + 2]!;
               const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;

@@ -45,6 +45,7 @@ import { KERNEL } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
+import { downward, SUPPORT_COS } from './support.js';
 
 /**
  * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
@@ -111,7 +112,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
     s = {
       pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
-      params: new Float64Array(16), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
+      params: new Float64Array(24), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
@@ -439,6 +440,9 @@ export function solveColoredSubsteps(
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
+  // The relax passes' support rows (support.ts): which way is down, and the cosine past which a row is one.
+  const down = downward(g);
+  P[14] = down[0]; P[15] = down[1]; P[16] = SUPPORT_COS;
   const A = s.arrays;
   A.length = 0;
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,

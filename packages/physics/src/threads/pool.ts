@@ -32,7 +32,7 @@ interface AnyWorker {
 }
 
 /** Most scalar parameters a kernel takes. */
-const MAX_PARAMS = 16;
+const MAX_PARAMS = 24;
 
 /** Characters of a worker's error message kept (longer messages are cut). */
 const ERROR_TEXT = 1024;
