@@ -94,7 +94,7 @@ describe('the fused force-and-integrate pass', () => {
     });
   });
 
-  test('runs in a world with worker threads too while its stages would stay on one thread; the state is the one-thread world\'s to the bit', () => {
+  test('runs in a world with worker threads too (on its calling thread); the state is the one-thread world\'s to the bit', () => {
     const make = (threads: number) => {
       const def = SCENES.fireworks!;
       const world = createPhysicsWorld({ ...def.worldOptions({ count: 3000 }), threads });
