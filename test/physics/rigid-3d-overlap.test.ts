@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import {
-  addBody, addPlane, addShape3D, addTriangleMesh3D, createPhysicsWorld, overlapAABB3D, overlapPoint3D, rayCast3D, type PhysicsWorld,
+  addBody, addPlane, addShape3D, addTriangleMesh3D, createPhysicsWorld, overlapAABB3D, overlapPoint3D, rayCast3D, Rng, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /**
@@ -27,18 +27,6 @@ function matrix(q: readonly number[]): number[] {
 const apply = (R: number[], v: readonly number[]): number[] => [0, 1, 2].map((i) => R[3 * i]! * v[0]! + R[3 * i + 1]! * v[1]! + R[3 * i + 2]! * v[2]!);
 const unit = (v: number[]): number[] => { const l = Math.hypot(v[0]!, v[1]!, v[2]!); return v.map((c) => c / l); };
 const axisAngle = (axis: number[], angle: number): number[] => { const u = unit(axis), s = Math.sin(angle / 2); return [u[0]! * s, u[1]! * s, u[2]! * s, Math.cos(angle / 2)]; };
-
-/** A seeded uniform generator (mulberry32), so the random points are the same every run. */
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 describe('overlapPoint3D against each shape\'s own geometry', () => {
   test('points 1e-9 inside and outside the surface of a turned box, sphere, capsule and cylinder', () => {
@@ -76,7 +64,7 @@ describe('overlapPoint3D against each shape\'s own geometry', () => {
     const hull = addShape3D(world, body, { type: 'hull', vertices: [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]] });
     const ball = addBody(world, { position: [10, 0, 0], radius: 0.5, mass: 1 });
     const ground = addPlane(world, { normal: [0, 1, 0], point: [0, -3, 0] });
-    const random = rng(7);
+    const rng = new Rng(7), random = (): number => rng.next();
     let inside = 0;
     for (let i = 0; i < 2000; i++) {
       const local = [0, 1, 2].map(() => 2.4 * random() - 1.2);

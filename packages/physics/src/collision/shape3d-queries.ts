@@ -314,6 +314,30 @@ function shapeBounds(s: Shape3DStore, e: number, box: Float64Array): void {
   }
 }
 
+/**
+ * The handles of the 3D shapes for which `shape(store, e)` holds (called with the shape posed in
+ * `pose`), then of the ball bodies without a 3D shape for which `ball(b)` holds: a fresh array.
+ */
+function collect(world: PhysicsWorld, shape: (s: Shape3DStore, e: number) => boolean, ball: (b: number) => boolean): number[] {
+  const out: number[] = [];
+  const c = world.components, s = shapes3DOf(world);
+  if (s !== undefined) {
+    for (let e = 1; e <= world.capacity; e++) {
+      const b = s.body[e]!;
+      if (b === 0) continue;
+      poseShape(world, s, e, b);
+      if (shape(s, e)) out.push(currentHandle(world, e));
+    }
+  }
+  const balls = query(world, [c.Position, c.Ball]);
+  for (let i = 0; i < balls.length; i++) {
+    const b = balls[i]!;
+    if (s !== undefined && s.first[b] !== 0) continue;
+    if (ball(b)) out.push(currentHandle(world, b));
+  }
+  return out;
+}
+
 function checkWorld3D(where: string, world: PhysicsWorld): void {
   if (world.dimensions !== 3) throw new TypeError(`${where}: needs a 3D world (use ${where.replace('3D', '')} in 2D), got dimensions ${world.dimensions}`);
 }
@@ -332,24 +356,11 @@ export function overlapPoint3D(world: PhysicsWorld, point: ArrayLike<number>): n
   checkWorld3D(where, world);
   assertVector(where, 'point', point, 3);
   const px = point[0]!, py = point[1]!, pz = point[2]!;
-  const out: number[] = [];
   const c = world.components, P = c.Position;
-  const s = shapes3DOf(world);
-  if (s !== undefined) {
-    for (let e = 1; e <= world.capacity; e++) {
-      const b = s.body[e]!;
-      if (b === 0) continue;
-      poseShape(world, s, e, b);
-      if (shapeContains(s, e, px, py, pz)) out.push(currentHandle(world, e));
-    }
-  }
-  const balls = query(world, [c.Position, c.Ball]);
-  for (let i = 0; i < balls.length; i++) {
-    const b = balls[i]!;
-    if (s !== undefined && s.first[b] !== 0) continue;
+  const out = collect(world, (s, e) => shapeContains(s, e, px, py, pz), (b) => {
     const dx = px - P.x[b]!, dy = py - P.y[b]!, dz = pz - P.z[b]!, r = c.Ball.radius[b]!;
-    if (dx * dx + dy * dy + dz * dz <= r * r) out.push(currentHandle(world, b));
-  }
+    return dx * dx + dy * dy + dz * dz <= r * r;
+  });
   const planes = query(world, [c.Plane]);
   for (let i = 0; i < planes.length; i++) {
     const p = planes[i]!;
@@ -377,26 +388,12 @@ export function overlapAABB3D(world: PhysicsWorld, min: ArrayLike<number>, max: 
   const x0 = min[0]!, y0 = min[1]!, z0 = min[2]!, x1 = max[0]!, y1 = max[1]!, z1 = max[2]!;
   if (!(x0 <= x1 && y0 <= y1 && z0 <= z1)) throw new RangeError(`${where}: min must not exceed max, got ${describe(min)} and ${describe(max)}`);
   const meets = (b: Float64Array): boolean => b[0]! <= x1 && b[3]! >= x0 && b[1]! <= y1 && b[4]! >= y0 && b[2]! <= z1 && b[5]! >= z0;
-  const out: number[] = [];
   const c = world.components, P = c.Position;
-  const s = shapes3DOf(world);
-  if (s !== undefined) {
-    for (let e = 1; e <= world.capacity; e++) {
-      const b = s.body[e]!;
-      if (b === 0) continue;
-      poseShape(world, s, e, b);
-      shapeBounds(s, e, bounds);
-      if (meets(bounds)) out.push(currentHandle(world, e));
-    }
-  }
-  const balls = query(world, [c.Position, c.Ball]);
-  for (let i = 0; i < balls.length; i++) {
-    const b = balls[i]!;
-    if (s !== undefined && s.first[b] !== 0) continue;
+  const out = collect(world, (s, e) => { shapeBounds(s, e, bounds); return meets(bounds); }, (b) => {
     const r = c.Ball.radius[b]!, x = P.x[b]!, y = P.y[b]!, z = P.z[b]!;
     bounds[0] = x - r; bounds[1] = y - r; bounds[2] = z - r; bounds[3] = x + r; bounds[4] = y + r; bounds[5] = z + r;
-    if (meets(bounds)) out.push(currentHandle(world, b));
-  }
+    return meets(bounds);
+  });
   const planes = query(world, [c.Plane]);
   for (let i = 0; i < planes.length; i++) {
     const p = planes[i]!, nx = c.Plane.nx[p]!, ny = c.Plane.ny[p]!, nz = c.Plane.nz[p]!;
