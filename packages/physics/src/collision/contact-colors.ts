@@ -89,6 +89,8 @@ const BINS = 4096;
 
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
+  /** Each pack row's two bodies' solver state offsets (shared; the kernel's integer copy of the pack's slots 0 and 1). */
+  pair: Int32Array;
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
   /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
   offsets: Int32Array;
@@ -110,7 +112,8 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   let s = scratchOf.get(cs);
   if (s === undefined) {
     s = {
-      pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), dyn: new Uint8Array(new SharedArrayBuffer(1024)),
+      pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), pair: new Int32Array(new SharedArrayBuffer(4 * 2 * 1024)),
+      dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
       params: new Float64Array(24), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
@@ -123,6 +126,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
     scratchOf.set(cs, s);
   }
   if (s.pack.length < rows * PACK_STRIDE) s.pack = sharedLike(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
+  if (s.pair.length < 2 * rows) s.pair = sharedLike(s.pair, Math.max(2 * rows, 2 * s.pair.length));
   if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
   const blocks = Math.ceil(rows / BLOCK_ROWS) + MAX_COLORS + 2;
   if (s.bounds.length < blocks) s.bounds = sharedLike(s.bounds, Math.max(blocks, 2 * s.bounds.length));
@@ -448,7 +452,7 @@ export function solveColoredSubsteps(
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
     buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
     buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
-    s.bounds, s.bodyOrder, s.bodyBounds);
+    s.bounds, s.bodyOrder, s.bodyBounds, s.pair);
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
