@@ -2,28 +2,21 @@ import type { PhysicsWorld } from '../world.js';
 import { reportNonFinite } from '../errors.js';
 import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js';
 import { rotateInPlace } from '../math/quaternion.js';
-import { splitRigidRotation } from './euler-equations.js';
-import { hasComponent } from 'bitecs';
+import { splitRigidRotations } from './euler-equations.js';
 
 
 /**
  * Angular velocity update of the semi-implicit Euler scheme: w += tau I^-1 h with a scalar moment of
  * inertia (2D: the z component; 3D: isotropic bodies such as balls), Newton's second law for rotation
  * (Ramtal and Dobre ch. 13); for 3D bodies with a principal inertia tensor, a torque kick and the
- * symplectic splitting of the free rigid body (`splitRigidRotation`), which also turns the orientation.
+ * symplectic splitting of the free rigid body (`splitRigidRotations`), which also turns the orientation.
  */
 export function applyTorques(world: PhysicsWorld, h: number): void {
   const c = world.components;
   if (world.dimensions === 3) {
     // Principal inertia tensors: the free rigid-body splitting turns w and the orientation together
     // (euler-equations.ts), so advanceOrientations leaves these bodies alone.
-    const tensors = tensorBodies(world);
-    const T = c.Torque;
-    for (let i = 0; i < tensors.length; i++) {
-      const e = tensors[i]!;
-      const has = hasComponent(world, e, T);
-      splitRigidRotation(world, e, h, has ? T.x[e]! : 0, has ? T.y[e]! : 0, has ? T.z[e]! : 0);
-    }
+    splitRigidRotations(world, tensorBodies(world), h);
   }
   const ents = torquedBodies(world);
   if (ents.length === 0) return;
