@@ -313,7 +313,7 @@ const RESTING_SEARCH_PERIOD = 8;
 
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
 const grid = {
-  start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), seen: new Int32Array(0),
+  start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), width: new Float64Array(0), seen: new Int32Array(0),
   packed: new Float64Array(0), source: new Uint8Array(0), searching: new Uint8Array(0),
 };
 
@@ -332,14 +332,22 @@ function cellHash(x: number, y: number, z: number, mask: number): number {
 function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   const sc = scratch, n = sc.n, type = world.collision.bodyType;
   const minX = sc.minX, maxX = sc.maxX, minY = sc.minY, maxY = sc.maxY, minZ = sc.minZ, maxZ = sc.maxZ;
+  // Each box's widest side (written out: Math.max of three arguments is a call), kept for the second loop.
+  if (grid.large.length < n) { grid.large = new Int32Array(Math.max(64, 2 * n)); grid.width = new Float64Array(Math.max(64, 2 * n)); }
+  const width = grid.width;
   let mean = 0;
-  for (let i = 0; i < n; i++) mean += Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!, maxZ[i]! - minZ[i]!);
+  for (let i = 0; i < n; i++) {
+    let w = maxX[i]! - minX[i]!, d = maxY[i]! - minY[i]!;
+    if (d > w) w = d;
+    d = maxZ[i]! - minZ[i]!;
+    if (d > w) w = d;
+    width[i] = w; mean += w;
+  }
   mean = n > 0 ? mean / n : 1;
   let cell = 0, nl = 0;
-  if (grid.large.length < n) grid.large = new Int32Array(Math.max(64, 2 * n));
   const large = grid.large;
   for (let i = 0; i < n; i++) {
-    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!, maxZ[i]! - minZ[i]!);
+    const w = width[i]!;
     if (w > 4 * mean) { large[nl++] = i; sc.order[i] = -1; } else { if (w > cell) cell = w; sc.order[i] = 0; }
   }
   if (!(cell > 0)) cell = 1;
@@ -579,9 +587,12 @@ function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: numbe
   buf.local[i] = 1;
   const P = st.previous, from = boxRow.from;
   if (from >= 0) {
-    for (let k = 0; k < 12; k++) buf.relPose[12 * i + k] = P.relPose[12 * from + k]!;
-    for (let k = 0; k < 3; k++) buf.localNormal[3 * i + k] = P.localNormal[3 * from + k]!;
-    for (let k = 0; k < 12; k++) { buf.localA[12 * i + k] = P.localA[12 * from + k]!; buf.localB[12 * i + k] = P.localB[12 * from + k]!; }
+    const RP = buf.relPose, PR = P.relPose, NL = buf.localNormal, PN = P.localNormal;
+    for (let k = 0, o = 12 * i, po = 12 * from; k < 12; k++) RP[o + k] = PR[po + k]!;
+    NL[3 * i] = PN[3 * from]!; NL[3 * i + 1] = PN[3 * from + 1]!; NL[3 * i + 2] = PN[3 * from + 2]!;
+    // Only the points in use (a resting box on a face has four, on an edge two).
+    const LA = buf.localA, LB = buf.localB, PA = P.localA, PB = P.localB, o = 12 * i, po = 12 * from;
+    for (let k = 0, e = 3 * P.points[from]!; k < e; k++) { LA[o + k] = PA[po + k]!; LB[o + k] = PB[po + k]!; }
     return;
   }
   const sc = scratch, R = sc.R, a = boxRow.a, b = boxRow.b, oa = 9 * a, ob = 9 * b, m = manifold;
