@@ -21,6 +21,23 @@ let loadedRows = new Uint8Array(256);
 let idleRows = new Int32Array(256);
 
 /**
+ * Scratch of one `applyImpacts` call: [resting, gh, reach] (m/s, m/s, s; see applyImpacts and
+ * separateImpactedBodies), read by the helpers it calls. Doubles reach the helpers through this and
+ * `sweepIO`, not as arguments: V8 boxes (allocates) every double passed to or returned from a call it
+ * does not inline, which was most of what the step allocated in a large pile. Not world state.
+ */
+const impactScalars = new Float64Array(3);
+
+/**
+ * Scratch of `sweep`: its arguments r (x, y, z), u (x, y, z), R and span, then its result t (slot 8).
+ * Not world state.
+ */
+const sweepIO = new Float64Array(9);
+
+/** Scratch of `sortByKey`: the merge sort's two work arrays. Not world state. */
+let sortWork1 = new Int32Array(256), sortWork2 = new Int32Array(256);
+
+/**
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of
  * pairwise impacts at their times of impact before the soft substeps run.
  *
@@ -70,6 +87,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const gh = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h;
   // Slower approaches are resting contacts (what gravity adds in two steps), left to the substeps.
   const resting = 2 * gh;
+  impactScalars[0] = resting; impactScalars[1] = gh;
   const S0 = buf.separation, RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
@@ -84,7 +102,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   if (loadedRows.length < n) loadedRows = new Uint8Array(Math.max(n, 2 * loadedRows.length));
   const loaded = loadedRows;
   for (let i = 0; i < n; i++) {
-    if (!carriesLoad(buf, i, h, g)) { loaded[i] = 0; continue; }
+    if (!carriesLoad(world, buf, i)) { loaded[i] = 0; continue; }
     loaded[i] = 1;
     const qa = IA[i]! * IMPACT_STRIDE, qb = IB[i]! * IMPACT_STRIDE;
     if (qa !== 0) imp[qa + 3] = -1;
@@ -122,20 +140,54 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   for (let lo = back, hi = n - 1; lo < hi; lo++, hi--) { const t = order[lo]!; order[lo] = order[hi]!; order[hi] = t; }
   order.copyWithin(seeds, back, n);
   m += n - back;
-  const cand = order.subarray(0, m);
-  if (seeds > 1) order.subarray(0, seeds).sort((x, y) => key[x]! - key[y]!);
+  if (seeds > 1) sortByKey(order, key, seeds);
 
   const iterations = st.impactIterations;
   for (let pass = 0; pass < iterations; pass++) {
     let applied = 0;
     for (let k = 0; k < m; k++) {
-      const i = cand[k]!;
-      if (!fastEnough(cs.bodyState, buf, i, S, resting, gh)) continue;
-      if (impact(world, buf, i, S, resting)) { applied++; key[i] = -1; }
+      const i = order[k]!;
+      if (!fastEnough(cs.bodyState, buf, i, S)) continue;
+      if (impact(world, buf, i, S)) { applied++; key[i] = -1; }
     }
     if (applied === 0) break;
   }
   separateImpactedBodies(world, buf, S, m);
+}
+
+/**
+ * Sorts order[0, n) by key[order[k]] ascending (key: impact times, s), with the permutation of V8's
+ * order.subarray(0, n).sort((x, y) => key[x] - key[y]), which this replaced: V8 sorts a typed array
+ * with a comparator by a stable top-down merge sort (into a copy, halving at from + (to - from) / 2,
+ * taking the left element unless the comparison is > 0, a NaN comparison counting as 0), so ties and
+ * even NaN keys come out in the same order. Without the closure and the boxed number each of its
+ * calls returned (~250 kB a step at 20,000 balls) and the builtin's two work arrays. n >= 0.
+ */
+function sortByKey(order: Int32Array, key: Float64Array, n: number): void {
+  if (n < 2) return;
+  if (sortWork1.length < n) { const len = Math.max(n, 2 * sortWork1.length); sortWork1 = new Int32Array(len); sortWork2 = new Int32Array(len); }
+  const w1 = sortWork1, w2 = sortWork2;
+  for (let k = 0; k < n; k++) { const v = order[k]!; w1[k] = v; w2[k] = v; }
+  mergeSortRange(w2, 0, n, w1, key);
+  for (let k = 0; k < n; k++) order[k] = w1[k]!;
+}
+
+/**
+ * Merge sort of [from, to) (to - from >= 2) into `target`, `source` holding the same elements there on
+ * entry and used as the work array (the halves are sorted into it, then merged into target).
+ */
+function mergeSortRange(source: Int32Array, from: number, to: number, target: Int32Array, key: Float64Array): void {
+  const middle = from + ((to - from) >>> 1);
+  if (middle - from > 1) mergeSortRange(target, from, middle, source, key);
+  if (to - middle > 1) mergeSortRange(target, middle, to, source, key);
+  let left = from, right = middle;
+  for (let k = from; k < to; k++) {
+    if (left < middle && right >= to) target[k] = source[left++]!;
+    else if (left < middle) {
+      const l = source[left]!, r = source[right]!;
+      if (!(key[l]! - key[r]! > 0)) { target[k] = l; left++; } else { target[k] = r; right++; }
+    } else target[k] = source[right++]!;
+  }
 }
 
 /**
@@ -169,6 +221,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, K = buf.kind;
   const h = world.h;
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
+  impactScalars[2] = reach;
   // A row is given the spare gap below if its gap is within the linear model's closure or, in a world
   // with joints, within 1.1 times it: a joint row turns gravity toward the row's normal within the step
   // (a pendulum's string speeds the ball up as it swings down), which the model does not see. A hanging
@@ -190,11 +243,11 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   // marked -1 in slot 4; an impacted row's normal has changed since, so it is asked again (the
   // candidates are still at the front of `act`, the order array, until the pass below).
   for (let k = 0; k < count; k++) imp[k * Q + 4] = imp[k * Q + 4] === -1 ? 0 : 1;
-  const loaded = loadedRows, g = world.gravity;
+  const loaded = loadedRows;
   for (let k = 0; k < candidates; k++) {
     const i = act[k]!;
     if (key[i] !== -1) continue;
-    loaded[i] = carriesLoad(buf, i, h, g) ? 1 : 0;
+    loaded[i] = carriesLoad(world, buf, i) ? 1 : 0;
     if (S0[i]! <= 0 && loaded[i] === 1) { imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; }
   }
   imp[4] = 1;
@@ -216,7 +269,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
       active = contactState(world, buf, i, S);
       if (active) key[i] = 0;
     } else if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-      active = ballsMeet(world, buf, i, S, h);
+      active = ballsMeet(world, buf, i, S);
     } else {
       active = faceMeets(world, buf, i, S);
     }
@@ -234,7 +287,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
       const i = idle[k]!;
       const ia = IA[i]!, ib = IB[i]!;
       const ca = ia === 0 || imp[ia * Q + 4] === 1, cb = imp[ib * Q + 4] === 1;
-      if (ca === cb || !linearCloses(world, buf, i, S, reach)) { idle[kept++] = i; continue; }
+      if (ca === cb || !linearCloses(world, buf, i, S)) { idle[kept++] = i; continue; }
       act[i] = 1;
       unclean(imp, ca ? ia : ib);
       changed = true;
@@ -262,7 +315,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     // restitution stage, which loses energy when a body has several such rows.
     const s0 = S0[i]!;
     if (!(s0 > 0)) continue;
-    const closes = linearClosure(world, buf, i, S, reach);
+    const closes = linearClosure(world, buf, i, S);
     // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
     if (s0 <= closes * within) S0[i] = closes * 1.1;
   }
@@ -294,10 +347,10 @@ const LEVEL = 1e-9;
  * floor, or pressed by a joint), which keeps its bodies out of the impact stage. A load counts when
  * it is above LOAD_FLOOR. A smaller one is the push-out of a rounding-level overlap, and it does not
  * count:
- * - without gravity (`gravity` false), always: nothing rests there; counting such a push kept both
+ * - without gravity, always: nothing rests there; counting such a push kept both
  *   balls of two touching movers out of the impact stage, and a Newton's cradle hit by them lost 15
  *   to 30 % of its energy at some phases of the step (issue 13);
- * - under gravity (`g` the world's gravity, m/s^2), only on a ball-ball row that touches to rounding
+ * - under gravity (the world's, m/s^2), only on a ball-ball row that touches to rounding
  *   (|s0| <= ROUNDING (ra + rb)), whose bodies do not move relative to each other along the normal
  *   (|v_n| h <= ROUNDING (ra + rb), v_n at the start of the step) and whose normal is level (gravity
  *   cannot press it: |n . g| <= LEVEL |g|): exactly touching balls side by side at rest relative to
@@ -315,7 +368,8 @@ const LEVEL = 1e-9;
  *   bounds it at 1e-6).
  * A row with m_eff = 0 counts whenever LN > 0.
  */
-function carriesLoad(buf: ContactBuffer, i: number, h: number, g: ArrayLike<number>): boolean {
+function carriesLoad(world: PhysicsWorld, buf: ContactBuffer, i: number): boolean {
+  const h = world.h, g = world.gravity;
   const ln = buf.normalImpulse[i]!;
   if (!(ln > 0)) return false;
   const len = buf.ra[i]! + buf.rb[i]!;
@@ -336,11 +390,12 @@ function unclean(imp: Float64Array, k: number): void {
 }
 
 /**
- * How far the soft substeps' linear gap model of contact i can close within `reach` (the step plus
- * the substep the last relax pass looks ahead) at the current solver velocities, m (>= 0): the normal
+ * How far the soft substeps' linear gap model of contact i can close within reach (`impactScalars[2]`:
+ * the step plus the substep the last relax pass looks ahead, s) at the current solver velocities, m (>= 0): the normal
  * approach and gravity's relative normal acceleration, each counted only when it closes the gap.
  */
-function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, reach: number): number {
+function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): number {
+  const reach = impactScalars[2]!;
   const cs = world.collision;
   const sb = cs.bodyState, type = cs.bodyType, g = world.gravity;
   const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
@@ -353,11 +408,11 @@ function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
 }
 
 /**
- * Whether the soft substeps' linear gap model of contact i closes within `reach` (see linearClosure),
+ * Whether the soft substeps' linear gap model of contact i closes within the reach (see linearClosure),
  * from the start separation opened by the bodies' corrections (those of unclean bodies are zero).
  */
-function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, reach: number): boolean {
-  return buf.separation[i]! + correctionGap(world.collision.bodyImpact, buf, i) <= linearClosure(world, buf, i, S, reach);
+function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+  return buf.separation[i]! + correctionGap(world.collision.bodyImpact, buf, i) <= linearClosure(world, buf, i, S);
 }
 
 /** (c_B - c_A) . n of contact i: how much the bodies' end-position corrections open its gap, m. */
@@ -368,11 +423,12 @@ function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number
 
 /**
  * Whether the balls of contact i touch at their latest impact this step (t0, or the start of the step)
- * or within `span` of the step's start, at the current solver velocities: an exact sweep from t0 with
+ * or before the step ends, at the current solver velocities: an exact sweep from t0 with
  * the relative acceleration of gravity refined once. The path before t0 is not the bodies' (the
  * position corrections make x0 + dx + v t exact only after the latest impact), so it is not swept.
  */
-function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, span: number): boolean {
+function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+  const span = world.h;
   const cs = world.collision;
   const c = world.components;
   const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
@@ -391,7 +447,7 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   if (still && s0 <= 0) {
     // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
     // rounding-level length within the step), or gravity presses it.
-    if (carriesLoad(buf, i, world.h, g) || s0 < -1e-6 * R) return true;
+    if (carriesLoad(world, buf, i) || s0 < -1e-6 * R) return true;
     const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
     let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
@@ -423,7 +479,12 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const gap = Math.sqrt(rx * rx + ry * ry + rz * rz) - R;
   if (Math.sqrt(wx * wx + wy * wy + wz * wz) * rest + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * rest < gap) return false;
   // Mean velocity over the first half of the span and over all of it: either meeting counts.
-  return sweep(rx, ry, rz, wx + hx, wy + hy, wz + hz, R, rest) >= 0 || sweep(rx, ry, rz, wx + 2 * hx, wy + 2 * hy, wz + 2 * hz, R, rest) >= 0;
+  const io = sweepIO;
+  io[0] = rx; io[1] = ry; io[2] = rz; io[6] = R; io[7] = rest;
+  io[3] = wx + hx; io[4] = wy + hy; io[5] = wz + hz;
+  if (sweep()) return true;
+  io[3] = wx + 2 * hx; io[4] = wy + 2 * hy; io[5] = wz + 2 * hz;
+  return sweep();
 }
 
 /**
@@ -457,9 +518,11 @@ function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
 
 /**
  * Cheap test before the sweep: whether the bodies of contact i move apart fast enough, relative to
- * each other, that they could hit at more than `floor` m/s within the step (|w| + g h > floor).
+ * each other, that they could hit at more than the resting speed floor (`impactScalars[0]`, m/s)
+ * within the step (|w| + g h > floor, g h = `impactScalars[1]`).
  */
-function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: number, floor: number, gh: number): boolean {
+function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: number): boolean {
+  const floor = impactScalars[0]!, gh = impactScalars[1]!;
   if (floor === 0) return true;
   const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
   const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
@@ -504,13 +567,21 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
     let t = 0;
     if (c0 > 0) {
       const span = h - t0;
-      t = sweep(rx, ry, rz, ux, uy, uz, R, span);
+      const io = sweepIO;
+      io[0] = rx; io[1] = ry; io[2] = rz; io[6] = R; io[7] = span;
+      io[3] = ux; io[4] = uy; io[5] = uz;
+      sweep();
+      t = io[8]!;
       if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
         // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
-        t = sweep(rx, ry, rz, ux + 0.5 * ax * span, uy + 0.5 * ay * span, uz + 0.5 * az * span, R, span);
+        io[3] = ux + 0.5 * ax * span; io[4] = uy + 0.5 * ay * span; io[5] = uz + 0.5 * az * span;
+        sweep();
+        t = io[8]!;
       } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
         // Refine with the mean velocity over [0, t].
-        const t2 = sweep(rx, ry, rz, ux + 0.5 * ax * t, uy + 0.5 * ay * t, uz + 0.5 * az * t, R, span);
+        io[3] = ux + 0.5 * ax * t; io[4] = uy + 0.5 * ay * t; io[5] = uz + 0.5 * az * t;
+        sweep();
+        const t2 = io[8]!;
         if (t2 >= 0) t = t2;
       }
       if (t < 0) return false;
@@ -547,22 +618,34 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
   return true;
 }
 
-/** Smallest t in [0, span] with |r + u t| = R for r outside the sphere, or -1. */
-function sweep(rx: number, ry: number, rz: number, ux: number, uy: number, uz: number, R: number, span: number): number {
+/**
+ * Smallest t in [0, span] with |r + u t| = R for r outside the sphere, or -1: r, u, R and span read
+ * from `sweepIO` (slots 0-7), t written to its slot 8; returns whether t >= 0.
+ */
+function sweep(): boolean {
+  const io = sweepIO;
+  const rx = io[0]!, ry = io[1]!, rz = io[2]!, ux = io[3]!, uy = io[4]!, uz = io[5]!, R = io[6]!, span = io[7]!;
+  io[8] = -1;
   const cc = rx * rx + ry * ry + rz * rz - R * R;
   const bb = rx * ux + ry * uy + rz * uz;
-  if (bb >= 0) return -1;
+  if (bb >= 0) return false;
   const aa = ux * ux + uy * uy + uz * uz;
   const disc = bb * bb - aa * cc;
-  if (disc < 0) return -1;
+  if (disc < 0) return false;
   // Stable root: t = c / (-b + sqrt(disc)).
   const t = cc / (-bb + Math.sqrt(disc));
-  return t <= span ? t : -1;
+  if (!(t <= span)) return false;
+  io[8] = t;
+  return t >= 0;
 }
 
-/** Applies contact i's impact if it happens this step above its threshold; returns whether it did. */
-function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, resting: number): boolean {
+/**
+ * Applies contact i's impact if it happens this step above its threshold (at least the resting speed,
+ * `impactScalars[0]`); returns whether it did.
+ */
+function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
   if (!contactState(world, buf, i, S)) return false;
+  const resting = impactScalars[0]!;
   const cs = world.collision;
   const st = cs.settings;
   const e = buf.restitution[i]!;
