@@ -19,7 +19,7 @@ import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThr
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
-import { downward, holdsLower, SUPPORT_COS } from './support.js';
+import { downwardInto, holdsLower, SUPPORT_COS } from './support.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength, withScaledSubsteps } from './contact-scale.js';
 
 /**
@@ -93,17 +93,19 @@ function solveContacts(world: PhysicsWorld): void {
   // (contact-scale.ts); contacts against infinite mass twice as stiff.
   const hertz = ballContactHertz(st, length, hs);
   const push = ballContactPushSpeed(st, length);
-  const dyn = makeSoft(hertz, st.contactDampingRatio, hs);
-  const rigid = makeSoft(2 * hertz, st.contactDampingRatio, hs);
+  const sp = solveParams;
+  sp[0] = hs; sp[1] = push;
+  makeSoftInto(sp, 4, hertz, st.contactDampingRatio, hs);
+  makeSoftInto(sp, 7, 2 * hertz, st.contactDampingRatio, hs);
   prepareJoints(world, hs);
   prepareJoints3D(world, hs);
   const is2D = world.dimensions === 2;
   // Which way is down, for the support rows of the 2D relax sweep (support.ts).
-  const [downX, downY] = downward(world.gravity);
+  downwardInto(world.gravity, sp, 2);
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
   const colored = is2D && useColoredSolve(world, buf, jointsToSolve(world) || cs.shapes.manifolds.count > 0);
-  if (colored) solveColoredSubsteps(world, buf, hs, [dyn.biasRate, dyn.massScale, dyn.impulseScale, rigid.biasRate, rigid.massScale, rigid.impulseScale], push);
+  if (colored) solveColoredSubsteps(world, buf, hs, [sp[4]!, sp[5]!, sp[6]!, sp[7]!, sp[8]!, sp[9]!], push);
   for (let s = 0; s < (colored ? 0 : substeps); s++) {
     integrateVelocities(world, hs);
     warmStartJoints(world);
@@ -113,7 +115,7 @@ function solveContacts(world: PhysicsWorld): void {
     for (let it = 0; it < st.solverIterations; it++) {
       solveJoints(world, hs, true);
       solveJoints3D(world, hs, true);
-      if (is2D) solve2D(cs, buf, hs, true, dyn, rigid, push, downX, downY); else solve3D(cs, buf, hs, true, dyn, rigid, push);
+      if (is2D) solve2D(cs, buf, true); else solve3D(cs, buf, true);
       if (is2D) solveManifolds(cs, hs, true); else solveManifolds3D(world, hs, true);
     }
     integratePositions(world, hs);
@@ -121,7 +123,7 @@ function solveContacts(world: PhysicsWorld): void {
     for (let it = 0; it < st.relaxIterations; it++) {
       solveJoints(world, hs, false);
       solveJoints3D(world, hs, false);
-      if (is2D) solve2D(cs, buf, hs, false, dyn, rigid, push, downX, downY); else solve3D(cs, buf, hs, false, dyn, rigid, push);
+      if (is2D) solve2D(cs, buf, false); else solve3D(cs, buf, false);
       if (is2D) solveManifolds(cs, hs, false); else solveManifolds3D(world, hs, false);
     }
     if (is2D) accumulateManifoldImpulses(cs);
@@ -141,20 +143,28 @@ function solveContacts(world: PhysicsWorld): void {
   cs.contacts = storeWarmStart(cs.cache, buf);
 }
 
-/** Soft constraint coefficients (Box2D v3 b2Softness). */
-interface Softness { biasRate: number; massScale: number; impulseScale: number }
+/**
+ * Scratch of one contact solve (solveContacts), read by solve2D and solve3D: [0] the substep hs (s),
+ * [1] the push-out speed cap (m/s), [2, 3] the unit vector along gravity (2D support rows; (0, 0)
+ * without gravity), [4, 5, 6] the soft coefficients of contacts between movable bodies (bias rate
+ * 1/s, mass scale, impulse scale), [7, 8, 9] those of contacts against infinite mass. The doubles pass
+ * through this, not as arguments or object fields: V8 boxed (allocated) every double passed to a
+ * sweep it did not inline, and each step made two coefficient objects and a direction array. Not world state.
+ */
+const solveParams = new Float64Array(10);
 
 /**
- * Coefficients of a soft constraint: a spring of frequency `hertz` and damping ratio `zeta`
- * integrated implicitly over h (Catto, "Soft Constraints", GDC 2011; Box2D v3 b2MakeSoft).
+ * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping
+ * ratio `zeta` integrated implicitly over `h` (s), into out[at..at+2]: bias rate (1/s), mass scale and
+ * impulse scale (Catto, "Soft Constraints", GDC 2011; Box2D v3 b2MakeSoft); hertz 0 gives 0, 1, 0.
  */
-function makeSoft(hertz: number, zeta: number, h: number): Softness {
-  if (hertz === 0) return { biasRate: 0, massScale: 1, impulseScale: 0 };
+function makeSoftInto(out: Float64Array, at: number, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) { out[at] = 0; out[at + 1] = 1; out[at + 2] = 0; return; }
   const omega = 2 * Math.PI * hertz;
   const a1 = 2 * zeta + h * omega;
   const a2 = h * omega * a1;
   const a3 = 1 / (1 + a2);
-  return { biasRate: omega / a1, massScale: a2 * a3, impulseScale: a3 };
+  out[at] = omega / a1; out[at + 1] = a2 * a3; out[at + 2] = a3;
 }
 
 /** Row stride of the packed solver state: 8 in 2D, 12 in 3D (see CollisionState.bodyState). */
@@ -669,16 +679,19 @@ function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
 /**
  * One Gauss-Seidel sweep over the 2D ball contacts: with soft bias if `useBias`, else the relax sweep,
  * which solves the frictionless support rows with the lower ball held when that only slows the upper
- * one (support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without).
+ * one (support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without). The substep,
+ * push-out cap, down vector and soft coefficients are read from `solveParams`.
  */
-function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number, downX: number, downY: number): void {
+function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void {
+  const sp = solveParams;
+  const hs = sp[0]!, push = sp[1]!, downX = sp[2]!, downY = sp[3]!;
   const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
   const NM = buf.normalMass, TM = buf.tangentMass, FB = buf.frictionBound, RP = buf.rigidPartner;
   const LN = buf.normalImpulse, LT = buf.tangentImpulse1, MAXN = buf.maxNormalImpulse;
-  const dBias = dyn.biasRate, dMass = dyn.massScale, dImp = dyn.impulseScale;
-  const rBias = rigid.biasRate, rMass = rigid.massScale, rImp = rigid.impulseScale;
+  const dBias = sp[4]!, dMass = sp[5]!, dImp = sp[6]!;
+  const rBias = sp[7]!, rMass = sp[8]!, rImp = sp[9]!;
 
   for (let i = 0; i < n; i++) {
     const a = IA[i]! * 8, b = IB[i]! * 8;
@@ -740,7 +753,10 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
   }
 }
 
-function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: boolean, dyn: Softness, rigid: Softness, push: number): void {
+/** One Gauss-Seidel sweep over the 3D ball contacts (with soft bias if `useBias`); parameters from `solveParams` as solve2D. */
+function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void {
+  const sp = solveParams;
+  const hs = sp[0]!, push = sp[1]!;
   const n = buf.count, sb = cs.bodyState;
   const invH = 1 / hs;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, RA = buf.ra, RB = buf.rb, S0 = buf.separation;
@@ -759,8 +775,8 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, hs: number, useBias: bo
     if (s > 0) {
       bias = s * invH;
     } else if (useBias) {
-      const soft = RP[i] === 1 ? rigid : dyn;
-      bias = soft.biasRate * s; massScale = soft.massScale; impulseScale = soft.impulseScale;
+      const at = RP[i] === 1 ? 7 : 4;
+      bias = sp[at]! * s; massScale = sp[at + 1]!; impulseScale = sp[at + 2]!;
       if (bias < -push) bias = -push;
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz;

@@ -58,3 +58,13 @@ export function downward(g: ArrayLike<number>): [number, number] {
   const l = Math.sqrt(gx * gx + gy * gy);
   return l > 0 ? [gx / l, gy / l] : [0, 0];
 }
+
+/**
+ * `downward(g)` written into out[at] and out[at + 1] (the same two numbers, no array made: the
+ * solver asks once a step).
+ */
+export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number): void {
+  const gx = g[0]!, gy = g[1]!;
+  const l = Math.sqrt(gx * gx + gy * gy);
+  if (l > 0) { out[at] = gx / l; out[at + 1] = gy / l; } else { out[at] = 0; out[at + 1] = 0; }
+}
