@@ -51,9 +51,21 @@ export const CELL_LIMIT = 268_435_456;
 
 /** The cell coordinate of x (m) for cells of 1 / invCell metres, clamped to +-CELL_LIMIT (NaN gives 0). */
 function cellOf(x: number, invCell: number): number {
-  const c = Math.floor(x * invCell);
+  return cellClamp(Math.floor(x * invCell));
+}
+
+/**
+ * A floored cell coordinate c = floor(x / cell) clamped to +-CELL_LIMIT (NaN gives 0): cellOf(x, inv)
+ * is cellClamp(Math.floor(x * inv)). The hot loops call this with the floored value, a whole number
+ * V8 passes untagged as a small integer, where cellOf's x and invCell were boxed (allocated) at every
+ * call it did not inline.
+ */
+function cellClamp(c: number): number {
   return c > CELL_LIMIT ? CELL_LIMIT : c < -CELL_LIMIT ? -CELL_LIMIT : c === c ? c : 0;
 }
+
+/** Scratch of queryBox: the box's lower corner [0..2] and upper corner [3..5], m (no doubles cross the call). Not world state. */
+const boxArgs = new Float64Array(6);
 
 function hashCell(cx: number, cy: number, cz: number): number {
   return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663) ^ Math.imul(cz, 83492791)) >>> 0;
@@ -273,7 +285,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
     if (radius[e]! + margin[e]! > limit) { bucketOf[i] = -1; over[overCount++] = e; continue; }
-    const cx = cellOf(ox[e]!, invCell), cy = cellOf(oy[e]!, invCell), cz = is3D ? cellOf(oz[e]!, invCell) : 0;
+    const cx = cellClamp(Math.floor(ox[e]! * invCell)), cy = cellClamp(Math.floor(oy[e]! * invCell)), cz = is3D ? cellClamp(Math.floor(oz[e]! * invCell)) : 0;
     const b = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
     bucketOf[i] = b;
     start[b + 1]!++;
@@ -288,9 +300,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const e = balls[i]!;
     const p = start[b]!++;
     sorted[p] = e;
-    cellX[p] = cellOf(ox[e]!, invCell);
-    cellY[p] = cellOf(oy[e]!, invCell);
-    cellZ[p] = is3D ? cellOf(oz[e]!, invCell) : 0;
+    cellX[p] = cellClamp(Math.floor(ox[e]! * invCell));
+    cellY[p] = cellClamp(Math.floor(oy[e]! * invCell));
+    cellZ[p] = is3D ? cellClamp(Math.floor(oz[e]! * invCell)) : 0;
   }
   for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
@@ -351,7 +363,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
       }
-      const found = queryBox(world, cs, x - reach, y - reach, z - reach, x + reach, y + reach, z + reach, small);
+      const B = boxArgs;
+      B[0] = x - reach; B[1] = y - reach; B[2] = z - reach; B[3] = x + reach; B[4] = y + reach; B[5] = z + reach;
+      const found = queryBox(world, cs, small);
       const cand = g.candidates;
       for (let k = 0; k < found; k++) {
         const f = cand[k]!;
@@ -370,12 +384,10 @@ export function broadphaseSystem(world: PhysicsWorld): void {
         const s = segs[i]!;
         const pad = S.radius[s]! + maxReachAll;
         const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!, bx = S.bx[s]!, by = S.by[s]!, bz = S.bz[s]!;
-        const found = queryBox(
-          world, cs,
-          Math.min(ax, bx) - pad, Math.min(ay, by) - pad, Math.min(az, bz) - pad,
-          Math.max(ax, bx) + pad, Math.max(ay, by) + pad, Math.max(az, bz) + pad,
-          small,
-        );
+        const B = boxArgs;
+        B[0] = Math.min(ax, bx) - pad; B[1] = Math.min(ay, by) - pad; B[2] = Math.min(az, bz) - pad;
+        B[3] = Math.max(ax, bx) + pad; B[4] = Math.max(ay, by) + pad; B[5] = Math.max(az, bz) + pad;
+        const found = queryBox(world, cs, small);
         const cand = g.candidates;
         for (let k = 0; k < found; k++) {
           const f = cand[k]!;
@@ -395,23 +407,21 @@ export function broadphaseSystem(world: PhysicsWorld): void {
 }
 
 /**
- * Writes into `cs.grid.candidates` every grid body whose cell overlaps the box [lo, hi] widened by
+ * Writes into `cs.grid.candidates` every grid body whose cell overlaps the box [lo, hi] (`boxArgs`) widened by
  * half a cell (so bodies whose reach crosses into the box are included) and returns their count;
  * scans every grid body instead when the box covers more cells than there are bodies. Cell ranges are
  * clamped like the grid's cells (see CELL_LIMIT), so the loops are finite at any coordinate.
  */
-function queryBox(
-  world: PhysicsWorld, cs: CollisionState,
-  x0: number, y0: number, z0: number, x1: number, y1: number, z1: number,
-  small: number,
-): number {
+function queryBox(world: PhysicsWorld, cs: CollisionState, small: number): number {
   const g = cs.grid;
   const inv = 1 / g.cellSize;
   const half = 0.5 * g.cellSize;
   const is3D = world.dimensions === 3;
-  const cx0 = cellOf(x0 - half, inv), cx1 = cellOf(x1 + half, inv);
-  const cy0 = cellOf(y0 - half, inv), cy1 = cellOf(y1 + half, inv);
-  const cz0 = is3D ? cellOf(z0 - half, inv) : 0, cz1 = is3D ? cellOf(z1 + half, inv) : 0;
+  const B = boxArgs;
+  const x0 = B[0]!, y0 = B[1]!, z0 = B[2]!, x1 = B[3]!, y1 = B[4]!, z1 = B[5]!;
+  const cx0 = cellClamp(Math.floor((x0 - half) * inv)), cx1 = cellClamp(Math.floor((x1 + half) * inv));
+  const cy0 = cellClamp(Math.floor((y0 - half) * inv)), cy1 = cellClamp(Math.floor((y1 + half) * inv));
+  const cz0 = is3D ? cellClamp(Math.floor((z0 - half) * inv)) : 0, cz1 = is3D ? cellClamp(Math.floor((z1 + half) * inv)) : 0;
   const cells = (cx1 - cx0 + 1) * (cy1 - cy0 + 1) * (cz1 - cz0 + 1);
   const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, start = g.bucketStart;
   const out = g.candidates;

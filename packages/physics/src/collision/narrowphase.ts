@@ -5,22 +5,35 @@ import { BodyType, PairKind } from './broadphase.js';
 import { jointKeepsApart } from '../joints/connected.js';
 import { parallelBallContacts } from './narrowphase-balls.js';
 
-function pushContact(
-  buf: ContactBuffer, kind: number, a: number, b: number, feature: number,
-  nx: number, ny: number, nz: number, separation: number, ra: number, rb: number,
-): void {
+function pushContact(buf: ContactBuffer, kind: number, a: number, b: number, feature: number): void {
   const i = buf.count;
   if (i >= buf.capacity) growContactBuffer(buf, i + 1);
+  const r = rowArgs;
   buf.kind[i] = kind;
   buf.a[i] = a;
   buf.b[i] = b;
   buf.feature[i] = feature;
-  buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
-  buf.separation[i] = separation;
-  buf.ra[i] = ra;
-  buf.rb[i] = rb;
+  buf.nx[i] = r[0]!; buf.ny[i] = r[1]!; buf.nz[i] = r[2]!;
+  buf.separation[i] = r[3]!;
+  buf.ra[i] = r[4]!;
+  buf.rb[i] = r[5]!;
   buf.count = i + 1;
 }
+
+/**
+ * Scratch of the narrowphase's calls: the doubles of a contact row for pushContact ([0..2] normal,
+ * [3] separation m, [4] ra m, [5] rb m). The narrowphase's doubles reach its helpers through this,
+ * `sphereArgs` and `segmentArgs`, not as arguments or returns: V8 boxes (allocates) each double
+ * passed to or returned from a call it does not inline, and in a big narrowphase (a Galton board's
+ * segments and pegs) it inlined neither the sweeps nor every pushContact (~0.4 MB a step). Not world state.
+ */
+const rowArgs = new Float64Array(6);
+
+/** Scratch of sphereSweep: [0..2] r, [3..5] w, [6] R, [7] h (see sweepSphere), then [8] its result t. Not world state. */
+const sphereArgs = new Float64Array(9);
+
+/** Scratch of segmentSweep: [0..2] p, [3..5] e, [6..8] w, [9] R, [10] h (see sweepSegment), then [11] its result t. Not world state. */
+const segmentArgs = new Float64Array(12);
 
 /**
  * Earliest time t in (0, h] at which two spheres with centre offset r (B minus A) and relative
@@ -28,15 +41,26 @@ function pushContact(
  * already touch or overlap, or do not meet within h. (Ericson, Real-Time Collision Detection, 5.5.7.)
  */
 export function sweepSphere(rx: number, ry: number, rz: number, wx: number, wy: number, wz: number, R: number, h: number): number {
+  const io = sphereArgs;
+  io[0] = rx; io[1] = ry; io[2] = rz; io[3] = wx; io[4] = wy; io[5] = wz; io[6] = R; io[7] = h;
+  sphereSweep();
+  return io[8]!;
+}
+
+/** sweepSphere on `sphereArgs` (r, w, R, h in slots 0-7), its t written to slot 8 (no doubles cross the call). */
+function sphereSweep(): void {
+  const io = sphereArgs;
+  const rx = io[0]!, ry = io[1]!, rz = io[2]!, wx = io[3]!, wy = io[4]!, wz = io[5]!, R = io[6]!, h = io[7]!;
+  io[8] = 0;
   const c = rx * rx + ry * ry + rz * rz - R * R;
-  if (c <= 0) return 0;
+  if (c <= 0) return;
   const b = rx * wx + ry * wy + rz * wz;
-  if (b >= 0) return 0;
+  if (b >= 0) return;
   const a = wx * wx + wy * wy + wz * wz;
   const disc = b * b - a * c;
-  if (disc < 0) return 0;
+  if (disc < 0) return;
   const t = (-b - Math.sqrt(disc)) / a;
-  return t > 0 && t <= h ? t : 0;
+  io[8] = t > 0 && t <= h ? t : 0;
 }
 
 /**
@@ -49,22 +73,38 @@ export function sweepSegment(
   px: number, py: number, pz: number, ex: number, ey: number, ez: number,
   wx: number, wy: number, wz: number, R: number, h: number,
 ): number {
+  const io = segmentArgs;
+  io[0] = px; io[1] = py; io[2] = pz; io[3] = ex; io[4] = ey; io[5] = ez; io[6] = wx; io[7] = wy; io[8] = wz; io[9] = R; io[10] = h;
+  segmentSweep();
+  return io[11]!;
+}
+
+/** sweepSegment on `segmentArgs` (p, e, w, R, h in slots 0-10), its t written to slot 11 (no doubles cross the call). */
+function segmentSweep(): void {
+  const io = segmentArgs, sp = sphereArgs;
+  const px = io[0]!, py = io[1]!, pz = io[2]!, ex = io[3]!, ey = io[4]!, ez = io[5]!, wx = io[6]!, wy = io[7]!, wz = io[8]!, R = io[9]!, h = io[10]!;
   const len2 = ex * ex + ey * ey + ez * ez;
   let best = 0;
   if (len2 > 0) {
     // Side: remove the components along the segment and sweep against the line.
     const pe = (px * ex + py * ey + pz * ez) / len2, we = (wx * ex + wy * ey + wz * ez) / len2;
-    const t = sweepSphere(px - pe * ex, py - pe * ey, pz - pe * ez, wx - we * ex, wy - we * ey, wz - we * ez, R, h);
+    sp[0] = px - pe * ex; sp[1] = py - pe * ey; sp[2] = pz - pe * ez; sp[3] = wx - we * ex; sp[4] = wy - we * ey; sp[5] = wz - we * ez; sp[6] = R; sp[7] = h;
+    sphereSweep();
+    const t = sp[8]!;
     if (t > 0) {
       const u = pe + we * t;
-      if (u >= 0 && u <= 1) return t;
+      if (u >= 0 && u <= 1) { io[11] = t; return; }
     }
   }
-  const t0 = sweepSphere(px, py, pz, wx, wy, wz, R, h);
+  sp[0] = px; sp[1] = py; sp[2] = pz; sp[3] = wx; sp[4] = wy; sp[5] = wz; sp[6] = R; sp[7] = h;
+  sphereSweep();
+  const t0 = sp[8]!;
   if (t0 > 0) best = t0;
-  const t1 = sweepSphere(px - ex, py - ey, pz - ez, wx, wy, wz, R, h);
+  sp[0] = px - ex; sp[1] = py - ey; sp[2] = pz - ez;
+  sphereSweep();
+  const t1 = sp[8]!;
   if (t1 > 0 && (best === 0 || t1 < best)) best = t1;
-  return best;
+  io[11] = best;
 }
 
 /**
@@ -102,6 +142,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
   const S = c.Segment;
   // A 2D world's z stores hold 0 (bodies.ts writes them so; nothing integrates them): not read.
   const is3D = world.dimensions === 3;
+  const W = rowArgs, SA = sphereArgs, GA = segmentArgs;
   // The leading ball-ball pairs on the world's threads when it has them (narrowphase-balls.ts: the same contacts in the same order).
   for (let i = parallelBallContacts(world, cs, buf), n = cs.pairCount; i < n; i++) {
     const kind = pairKind[i]!;
@@ -119,7 +160,9 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const wz = is3D ? (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!) : 0;
       let dx = rx, dy = ry, dz = rz;
       // Normal where the balls first touch during the step, if they do (see sweepNormal).
-      const t = sweepSphere(rx, ry, rz, wx, wy, wz, R, h);
+      SA[0] = rx; SA[1] = ry; SA[2] = rz; SA[3] = wx; SA[4] = wy; SA[5] = wz; SA[6] = R; SA[7] = h;
+      sphereSweep();
+      const t = SA[8]!;
       if (t > 0) { dx += wx * t; dy += wy * t; dz += wz * t; }
       const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
       if (d > 1e-12) { const inv = 1 / d; dx *= inv; dy *= inv; dz *= inv; } else { dx = 0; dy = 1; dz = 0; }
@@ -128,11 +171,14 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const vn = wx * dx + wy * dy + wz * dz;
       if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.25 * R ? spec : 0.25 * R)) continue;
       if (ta === BodyType.Static) {
-        pushContact(buf, ContactKind.StaticBall, 0, b, a, dx, dy, dz, sep, 0, rb);
+        W[0] = dx; W[1] = dy; W[2] = dz; W[3] = sep; W[4] = 0; W[5] = rb;
+        pushContact(buf, ContactKind.StaticBall, 0, b, a);
       } else if (tb === BodyType.Static) {
-        pushContact(buf, ContactKind.StaticBall, 0, a, b, -dx, -dy, -dz, sep, 0, ra);
+        W[0] = -dx; W[1] = -dy; W[2] = -dz; W[3] = sep; W[4] = 0; W[5] = ra;
+        pushContact(buf, ContactKind.StaticBall, 0, a, b);
       } else {
-        pushContact(buf, ContactKind.Ball, a, b, 0, dx, dy, dz, sep, ra, rb);
+        W[0] = dx; W[1] = dy; W[2] = dz; W[3] = sep; W[4] = ra; W[5] = rb;
+        pushContact(buf, ContactKind.Ball, a, b, 0);
       }
     } else {
       const s = pairA[i]!;
@@ -141,7 +187,10 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const wx = vx[b]!, wy = vy[b]!, wz = vz[b]!;
       const R = S.radius[s]! + radius[b]!;
       // Where the ball's centre is when it first touches the segment this step (or at the start).
-      const t = sweepSegment(ox[b]! - ax, oy[b]! - ay, oz[b]! - az, ex, ey, ez, wx, wy, wz, R, h);
+      GA[0] = ox[b]! - ax; GA[1] = oy[b]! - ay; GA[2] = oz[b]! - az; GA[3] = ex; GA[4] = ey; GA[5] = ez;
+      GA[6] = wx; GA[7] = wy; GA[8] = wz; GA[9] = R; GA[10] = h;
+      segmentSweep();
+      const t = GA[11]!;
       const px = ox[b]! + wx * t, py = oy[b]! + wy * t, pz = oz[b]! + wz * t;
       const len2 = ex * ex + ey * ey + ez * ez;
       let u = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
@@ -161,7 +210,8 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const vn = wx * dx + wy * dy + wz * dz;
       const rb = radius[b]!;
       if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.5 * rb ? spec : 0.5 * rb)) continue;
-      pushContact(buf, ContactKind.Segment, 0, b, s, dx, dy, dz, sep, 0, radius[b]!);
+      W[0] = dx; W[1] = dy; W[2] = dz; W[3] = sep; W[4] = 0; W[5] = radius[b]!;
+      pushContact(buf, ContactKind.Segment, 0, b, s);
     }
   }
 
@@ -178,19 +228,19 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
       const x = ox[b]!, y = oy[b]!;
       const sx = vx[b]!, sy = vy[b]!;
       let sep = x - r - minX;
-      if (sep < (sx < 0 ? -sx * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 0, 1, 0, 0, sep, 0, r);
+      if (sep < (sx < 0 ? -sx * h : 0) + spec) { W[0] = 1; W[1] = 0; W[2] = 0; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 0); }
       sep = maxX - x - r;
-      if (sep < (sx > 0 ? sx * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 1, -1, 0, 0, sep, 0, r);
+      if (sep < (sx > 0 ? sx * h : 0) + spec) { W[0] = -1; W[1] = 0; W[2] = 0; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 1); }
       sep = y - r - minY;
-      if (sep < (sy < 0 ? -sy * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 2, 0, 1, 0, sep, 0, r);
+      if (sep < (sy < 0 ? -sy * h : 0) + spec) { W[0] = 0; W[1] = 1; W[2] = 0; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 2); }
       sep = maxY - y - r;
-      if (sep < (sy > 0 ? sy * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 3, 0, -1, 0, sep, 0, r);
+      if (sep < (sy > 0 ? sy * h : 0) + spec) { W[0] = 0; W[1] = -1; W[2] = 0; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 3); }
       if (is3D) {
         const z = oz[b]!, sz = vz[b]!;
         sep = z - r - minZ;
-        if (sep < (sz < 0 ? -sz * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 4, 0, 0, 1, sep, 0, r);
+        if (sep < (sz < 0 ? -sz * h : 0) + spec) { W[0] = 0; W[1] = 0; W[2] = 1; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 4); }
         sep = maxZ - z - r;
-        if (sep < (sz > 0 ? sz * h : 0) + spec) pushContact(buf, ContactKind.Boundary, 0, b, 5, 0, 0, -1, sep, 0, r);
+        if (sep < (sz > 0 ? sz * h : 0) + spec) { W[0] = 0; W[1] = 0; W[2] = -1; W[3] = sep; W[4] = 0; W[5] = r; pushContact(buf, ContactKind.Boundary, 0, b, 5); }
       }
     }
   }
@@ -207,7 +257,10 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
         const r = radius[b]!;
         const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
         const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;
-        if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) pushContact(buf, ContactKind.Plane, 0, b, p, nx, ny, nz, sep, 0, r);
+        if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) {
+          W[0] = nx; W[1] = ny; W[2] = nz; W[3] = sep; W[4] = 0; W[5] = r;
+          pushContact(buf, ContactKind.Plane, 0, b, p);
+        }
       }
     }
   }
