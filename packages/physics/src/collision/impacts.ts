@@ -161,9 +161,10 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  * with a comparator by a stable top-down merge sort (into a copy, halving at from + (to - from) / 2,
  * taking the left element unless the comparison is > 0, a NaN comparison counting as 0), so ties and
  * even NaN keys come out in the same order. Without the closure and the boxed number each of its
- * calls returned (~250 kB a step at 20,000 balls) and the builtin's two work arrays. n >= 0.
+ * calls returned (~250 kB a step at 20,000 balls) and the builtin's two work arrays. n >= 0 and
+ * n <= order.length; order's entries index key. Exported for its test (impact-order.test.ts).
  */
-function sortByKey(order: Int32Array, key: Float64Array, n: number): void {
+export function sortByKey(order: Int32Array, key: Float64Array, n: number): void {
   if (n < 2) return;
   if (sortWork1.length < n) { const len = Math.max(n, 2 * sortWork1.length); sortWork1 = new Int32Array(len); sortWork2 = new Int32Array(len); }
   const w1 = sortWork1, w2 = sortWork2;
