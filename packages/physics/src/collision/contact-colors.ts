@@ -45,7 +45,7 @@ import { KERNEL } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
-import { downward, SUPPORT_COS } from './support.js';
+import { downwardInto, SUPPORT_COS } from './support.js';
 
 /**
  * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
@@ -445,8 +445,7 @@ export function solveColoredSubsteps(
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
   // The relax passes' support rows (support.ts): which way is down, and the cosine past which a row is one.
-  const down = downward(g);
-  P[14] = down[0]; P[15] = down[1]; P[16] = SUPPORT_COS;
+  downwardInto(g, P, 14); P[16] = SUPPORT_COS;
   const A = s.arrays;
   A.length = 0;
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,

@@ -52,16 +52,9 @@ export function holdsLower(speedLower: number, speedUpper: number): boolean {
   return speedLower <= speedUpper;
 }
 
-/** Unit vector along `g` (m/s^2, 2 or 3 components; the first two used), or [0, 0] for no gravity. */
-export function downward(g: ArrayLike<number>): [number, number] {
-  const gx = g[0]!, gy = g[1]!;
-  const l = Math.sqrt(gx * gx + gy * gy);
-  return l > 0 ? [gx / l, gy / l] : [0, 0];
-}
-
 /**
- * `downward(g)` written into out[at] and out[at + 1] (the same two numbers, no array made: the
- * solver asks once a step).
+ * Writes the unit vector along `g` (m/s^2, 2 or 3 components; the first two used), or (0, 0) for no
+ * gravity, into out[at] and out[at + 1] (no array made: the solvers ask once a step).
  */
 export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number): void {
   const gx = g[0]!, gy = g[1]!;
