@@ -309,14 +309,14 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const push = cs.settings.contactPushSpeed;
   // Points in alternating order from substep to substep (symmetric Gauss-Seidel; the relax pass keeps
   // its substep's order), so the order a manifold's points are solved in leaves no systematic torque.
-  if (useBias) st.solveParity ^= 1;
+  st.solveParity ^= useBias ? 1 : 0;
   const backward = st.solveParity === 1;
   const sBias = soft[0]!, sMass = soft[1]!, sImp = soft[2]!, rBias = rigid[0]!, rMass = rigid[1]!, rImp = rigid[2]!;
   const sep = buf.sep, LN = buf.ln, MN = buf.mn, MAX = buf.maxLn, F = st.frictionJacobians, FV = st.frictionInv;
   const FT1 = buf.ft1, FT2 = buf.ft2, FTW = buf.ftw, MT1 = buf.mt1, MT2 = buf.mt2, MTW = buf.mtw, ARM = buf.arm;
   const IA = buf.ia, IB = buf.ib, NX = buf.nx, NY = buf.ny, NZ = buf.nz, T1X = buf.t1x, T1Y = buf.t1y, T1Z = buf.t1z, PTS = buf.points, MU = buf.friction;
   const ISO = buf.iso, T = st.invInertia, MINSEP = buf.minSep, RA = buf.reachA, RB = buf.reachB;
-  const invHs = 1 / hs;
+  const invHs = 1 / hs, negPush = -push;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!, kb = IB[i]!, a = 12 * ka, b = 12 * kb;
     const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
@@ -356,43 +356,54 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
     const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
     let softMet = false;
-    for (let sw = 0; sw < sweeps; sw++) {
-      let change = 0, total = 0;
+    // The sweep count goes up at the top of a sweep, not in a loop update the first sweep never reaches
+    // (optimised code compiled before any second sweep was thrown away at the first hit).
+    for (let sw = 0; ;) {
+      const odd = (sw & 1) === 1, first = sw === 0;
+      sw++;
+      // -0, a heap number: V8 types both sums as doubles from their first use (from a small-integer 0 it
+      // typed them as integers while the first rows added zeros, and deoptimised at the first fraction).
+      let change = -0, total = -0;
       for (let kk = 0; kk < m; kk++) {
-        const k = (backward !== ((sw & 1) === 1)) ? m - 1 - kk : kk;
+        const k = (backward !== odd) ? m - 1 - kk : kk;
         const q = 4 * i + k, o = JAC * q;
         const ra0 = J[o]!, ra1 = J[o + 1]!, ra2 = J[o + 2]!, rb0 = J[o + 3]!, rb1 = J[o + 4]!, rb2 = J[o + 5]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
         const s = (sep[q]! + dn) + ((hbx * rb0 + hby * rb1 + hbz * rb2) - (hax * ra0 + hay * ra1 + haz * ra2));
+        // Both biases are worked out on every row (branches first taken after V8 optimised the loop
+        // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
+        const speculative = s * invHs, softBias = Math.max(biasRate * s, negPush);
         let bias = 0, ms = 1, is = 0;
-        if (s > 0) bias = s * invHs;
-        else if (useBias) { bias = Math.max(biasRate * s, -push); ms = massScale; is = impScale; softMet = true; }
+        if (s > 0) bias = speculative;
+        else if (useBias) { bias = softBias; ms = massScale; is = impScale; softMet = true; }
         const vn = ((vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz)
           + ((wbx * rb0 + wby * rb1 + wbz * rb2) - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
         const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
         const dl = lam - old;
         LN[q] = lam;
-        if (lam > MAX[q]!) MAX[q] = lam;
-        if (dl !== 0) {
-          // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
-          const fa = mA * dl, fb = mB * dl;
-          vax -= fa * nx; vay -= fa * ny; vaz -= fa * nz;
-          vbx += fb * nx; vby += fb * ny; vbz += fb * nz;
-          if (iso) {
-            const ga = iA * dl, gb = iB * dl;
-            wax -= ga * ra0; way -= ga * ra1; waz -= ga * ra2;
-            wbx += gb * rb0; wby += gb * rb1; wbz += gb * rb2;
-          } else {
-            wax -= dl * JI[o]!; way -= dl * JI[o + 1]!; waz -= dl * JI[o + 2]!;
-            wbx += dl * JI[o + 3]!; wby += dl * JI[o + 4]!; wbz += dl * JI[o + 5]!;
-          }
-          pushed = true;
-          change += dl > 0 ? dl : -dl;
+        const mx = MAX[q]!;
+        MAX[q] = lam > mx ? lam : mx;
+        // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
+        // never entered was compiled without type feedback, and its first push threw the code away.
+        // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
+        const fa = mA * dl, fb = mB * dl;
+        vax -= fa * nx; vay -= fa * ny; vaz -= fa * nz;
+        vbx += fb * nx; vby += fb * ny; vbz += fb * nz;
+        if (iso) {
+          const ga = iA * dl, gb = iB * dl;
+          wax -= ga * ra0; way -= ga * ra1; waz -= ga * ra2;
+          wbx += gb * rb0; wby += gb * rb1; wbz += gb * rb2;
+        } else {
+          wax -= dl * JI[o]!; way -= dl * JI[o + 1]!; waz -= dl * JI[o + 2]!;
+          wbx += dl * JI[o + 3]!; wby += dl * JI[o + 4]!; wbz += dl * JI[o + 5]!;
         }
+        pushed = pushed || dl !== 0;
+        change += Math.abs(dl);
         total += lam;
       }
-      if (softMet || change <= (sw === 0 ? HIT_FRACTION : SWEEP_TOLERANCE) * total || change * (mA + mB) <= SWEEP_SPEED) break;
+      const settled = change <= (first ? HIT_FRACTION : SWEEP_TOLERANCE) * total, slow = change * (mA + mB) <= SWEEP_SPEED, last = sw >= sweeps;
+      if (softMet || settled || slow || last) break;
     }
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
@@ -432,9 +443,9 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         pushed = true;
       }
       // Twist: relative spin about n, limited by mu arm sum(lambda_n).
-      const tl = limit * ARM[i]!;
+      const tl = limit * ARM[i]!, ntl = -tl;
       let lw = ow - MTW[i]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
-      lw = lw > tl ? tl : lw < -tl ? -tl : lw;
+      lw = lw > tl ? tl : lw < ntl ? ntl : lw;
       FTW[i] = lw;
       const dw = lw - ow;
       if (dw !== 0) {
