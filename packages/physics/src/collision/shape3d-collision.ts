@@ -34,7 +34,7 @@ function meets(ta: number, tb: number): boolean {
  * - Poses are those at the start of the step (PreviousPosition, and the orientation turned back by
  *   the step's rotation w h), as the solver measures displacement from there.
  * - Broadphase: bounding boxes (a box's own, tight; other shapes a sphere of their reach about their
- *   centre) fattened by half its speculative distance (SPECULATIVE_FRACTION) and what the body's speed covers in the step
+ *   centre) fattened by half the shapes' speculative distance (SHAPE_SPECULATIVE_DISTANCE) and what the body's speed covers in the step
  *   (two such boxes overlap when the shapes are within the pair's margin), in a hashed uniform grid (`pairs`);
  *   a resting collider searches it only every few steps (RESTING_SEARCH_PERIOD), its other pairs coming
  *   from searching neighbours and last step's manifolds.
@@ -103,13 +103,11 @@ interface Scratch {
   n: number;
   shape: Int32Array; body: Int32Array; minX: Float64Array; maxX: Float64Array; minY: Float64Array; maxY: Float64Array; minZ: Float64Array; maxZ: Float64Array;
   px: Float64Array; py: Float64Array; pz: Float64Array; R: Float64Array; speed: Float64Array; order: Int32Array; ball: Uint8Array;
-  /** The collider's speculative distance, m (SPECULATIVE_FRACTION). */
-  spec: Float64Array;
 }
 const scratch: Scratch = {
   n: 0, shape: new Int32Array(0), body: new Int32Array(0), minX: new Float64Array(0), maxX: new Float64Array(0), minY: new Float64Array(0), maxY: new Float64Array(0),
   minZ: new Float64Array(0), maxZ: new Float64Array(0), px: new Float64Array(0), py: new Float64Array(0), pz: new Float64Array(0), R: new Float64Array(0),
-  speed: new Float64Array(0), order: new Int32Array(0), ball: new Uint8Array(0), spec: new Float64Array(0),
+  speed: new Float64Array(0), order: new Int32Array(0), ball: new Uint8Array(0),
 };
 
 function ensure(n: number): void {
@@ -125,7 +123,7 @@ function ensure(n: number): void {
   const sc = scratch;
   sc.shape = grow(sc.shape, m); sc.body = grow(sc.body, m); sc.order = grow(sc.order, m); sc.ball = grow(sc.ball, m);
   sc.minX = grow(sc.minX, m); sc.maxX = grow(sc.maxX, m); sc.minY = grow(sc.minY, m); sc.maxY = grow(sc.maxY, m); sc.minZ = grow(sc.minZ, m); sc.maxZ = grow(sc.maxZ, m);
-  sc.px = grow(sc.px, m); sc.py = grow(sc.py, m); sc.pz = grow(sc.pz, m); sc.R = grow(sc.R, 9 * m); sc.speed = grow(sc.speed, m); sc.spec = grow(sc.spec, m);
+  sc.px = grow(sc.px, m); sc.py = grow(sc.py, m); sc.pz = grow(sc.pz, m); sc.R = grow(sc.R, 9 * m); sc.speed = grow(sc.speed, m);
 }
 
 const bodyQ = new Float64Array(4);
@@ -179,38 +177,17 @@ function classifyDynamic3D(world: PhysicsWorld, b: number): number {
 /** Per shape slot (a ball's body slot): its collider index in the scratch this pass, valid where colliderStamp holds the pass's stamp. */
 let colliderOf = new Int32Array(0), colliderStamp = new Int32Array(0), colliderPass = 0;
 /**
- * Speculative distance of a 3D shape as a fraction of its size: SPECULATIVE_FRACTION of its smallest half
- * extent (box: the least of hx, hy, hz; sphere, ball and capsule: the radius; cylinder: the lesser of radius
- * and half height; hull: the least distance from its centre to a face plane, else its bounding radius), at
- * most the world's `speculativeDistance` (0.1 m by default). As in 2D (shape-collision.ts): 0.02 m for a
- * 1 m cube, Box2D v3's 4 linear slops, so neighbours standing 5 cm apart are no contacts; a pair's margin
- * is the mean of its two shapes' plus what their speeds close in a step (speculative contacts).
+ * Speculative distance of the 3D shapes, m: Box2D v3's (b2_speculativeDistance, 4 linear slops of 5 mm),
+ * at most the world's `speculativeDistance` (0.1 m by default, which the ball contacts keep). A pair's
+ * margin is this plus what the two bodies' speeds close in the step (speculative contacts), so boxes
+ * standing 5 cm apart (a pyramid's side neighbours) are no contacts: with 0.1 m they were manifolds that
+ * never pushed, a third of a pyramid's. As a fraction of the shape's size (2D's rule) it was too small
+ * for thin capsules: a ragdoll's joints stretched 2.6 cm in its landing, against 1.2 cm.
  */
-const SPECULATIVE_FRACTION = 0.04;
+const SHAPE_SPECULATIVE_DISTANCE = 0.02;
 
-/** SPECULATIVE_FRACTION of `size` (m), at most `spec` (the world's speculative distance, m). */
-function speculativeDistanceOf3D(spec: number, size: number): number {
-  const f = SPECULATIVE_FRACTION * size;
-  return f < spec ? f : spec;
-}
-
-/** The speculative distance of shape e, m (see SPECULATIVE_FRACTION). */
-function shapeSpeculativeDistance(s: Shape3DStore, e: number, spec: number): number {
-  const kind = s.kind[e]!;
-  let size: number;
-  if (kind === Shape3DKind.Box) {
-    size = s.hx[e]!;
-    if (s.hy[e]! < size) size = s.hy[e]!;
-    if (s.hz[e]! < size) size = s.hz[e]!;
-  } else if (kind === Shape3DKind.Cylinder) size = s.radius[e]! < s.hy[e]! ? s.radius[e]! : s.hy[e]!;
-  else if (kind === Shape3DKind.Hull) {
-    const offsets = s.hulls[s.hull[e]!]!.faceOffsets;
-    size = s.reach[e]!;
-    for (let k = 0; k < offsets.length; k++) if (offsets[k]! < size) size = offsets[k]!;
-    if (!(size > 0)) size = s.reach[e]!;
-  } else size = s.radius[e]!;
-  return speculativeDistanceOf3D(spec, size);
-}
+/** This pass's speculative distance of the 3D shapes, m (SHAPE_SPECULATIVE_DISTANCE capped by the world's). */
+let shapeSpec = SHAPE_SPECULATIVE_DISTANCE;
 
 /** Whether a sensor shape took part in this pass (resting colliders then search every step: sensor events need it). */
 let anySensor = false;
@@ -242,7 +219,9 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const cap = world.capacity;
   let n = 0;
   ensure(64);
-  const h = world.h, spec = cs.settings.speculativeDistance;
+  const h = world.h, spec = cs.settings.speculativeDistance < SHAPE_SPECULATIVE_DISTANCE ? cs.settings.speculativeDistance : SHAPE_SPECULATIVE_DISTANCE;
+  const halfSpec = 0.5 * spec;
+  shapeSpec = spec;
   const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
   const add = (e: number, b: number, isBall: boolean): void => {
     ensure(n + 1);
@@ -287,10 +266,8 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       }
     }
     // Half its speculative distance on each box: two boxes' fattened boxes overlap exactly when they are
-    // within (spec_a + spec_b) / 2 + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
-    const sp = isBall ? speculativeDistanceOf3D(spec, reach) : shapeSpeculativeDistance(s, e, spec);
-    sc.spec[n] = sp;
-    const pad = speed * h + 0.5 * sp;
+    // within spec + (|v_a| + |v_b|) h of each other along every axis, the pair's narrowphase margin.
+    const pad = speed * h + halfSpec;
     // Half widths of the box: a box's own (sum of h_k |R_ak|, tight), else the bounding sphere's.
     let wx = reach, wy = reach, wz = reach;
     if (!isBall && s.kind[e] === Shape3DKind.Box) {
@@ -340,13 +317,12 @@ function filtered(s: Shape3DStore, a: number, b: number, ballA: boolean, ballB: 
  * A resting collider (its body dynamic and below the sleep thresholds at the end of the last step:
  * rest time > 0) searches its neighbourhood only every RESTING_SEARCH_PERIOD steps (staggered by
  * collider); in between, its pairs are those a searching neighbour finds and those that had a manifold
- * last step. A pair it misses was farther apart than the pair's margin (the mean of the two shapes'
- * speculative distances, SPECULATIVE_FRACTION) at the last search, and each body, under the sleep speeds,
- * moves at most v_sleep + w_sleep reach per second: only colliders for which that stays under a quarter
- * of their own speculative distance over the period skip, so a missed pair closes by at most half its
- * margin and is found before it can touch. (At the defaults, dt 1/60 s and 3D sleep speeds 0.1, no
- * collider skips: a 1 m cube's 0.02 m would allow at most 0.005 m in the period, and 0.1 m/s alone
- * moves 0.013 m.) With a sensor in the world, or sleeping off, every collider
+ * last step. A pair it misses was farther apart than the margin (SHAPE_SPECULATIVE_DISTANCE) at the last
+ * search, and each body, under the sleep speeds, moves at most v_sleep + w_sleep reach per second: only
+ * colliders for which that stays under a quarter of the speculative distance over the period skip, so a
+ * missed pair closes by at most half the margin and is found before it can touch. (At the defaults, dt
+ * 1/60 s and the 3D sleep speeds of 0.1, none skips: 0.02 m allows 0.005 m in the period, and 0.1 m/s
+ * alone moves 0.013 m.) With a sensor in the world, or sleeping off, every collider
  * searches every step (sensor overlaps have no manifold to carry them).
  */
 const RESTING_SEARCH_PERIOD = 8;
@@ -423,12 +399,12 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   if (grid.searching.length < n) grid.searching = new Uint8Array(Math.max(64, 2 * n));
   const sl = world.collision.sleep, searching = grid.searching, rest = sl.restTime, phase = world.steps;
   // How far a resting collider may move between searches (at the sleep speeds) must stay under a quarter
-  // of its speculative distance, so a pair of two closes by at most half the pair's margin.
+  // of the speculative distance, so a pair of two closes by at most half the margin.
   const mayRest = sl.enabled && !anySensor, period = RESTING_SEARCH_PERIOD * world.h;
   for (let i = 0; i < n; i++) {
     const b = sc.body[i]!, t = type[b]!;
     const reach = sc.ball[i] === 1 ? world.components.Ball.radius[b]! : s.reach[sc.shape[i]!]!;
-    const skips = mayRest && t === BodyType.Dynamic && rest[b]! > 0 && (sl.linearSpeed + sl.angularSpeed * reach) * period <= 0.25 * sc.spec[i]!
+    const skips = mayRest && t === BodyType.Dynamic && rest[b]! > 0 && (sl.linearSpeed + sl.angularSpeed * reach) * period <= 0.25 * shapeSpec
       && (phase + i) % RESTING_SEARCH_PERIOD !== 0;
     searching[i] = (t === BodyType.Kinematic || t === BodyType.Dynamic) && !skips ? 1 : 0;
   }
@@ -516,7 +492,7 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     const prev = previousBoxRow(st, ea, eb, world.capacity);
     if (prev >= 0 && reusable(st.previous, prev, size)) { reuseManifold(st.previous, prev, a, b); boxRow.from = prev; }
     else {
-      const margin = 0.5 * (sc.spec[a]! + sc.spec[b]!) + (sc.speed[a]! + sc.speed[b]!) * world.h;
+      const margin = shapeSpec + (sc.speed[a]! + sc.speed[b]!) * world.h;
       // The numbers go through boxArgs (doubles passed to a call are boxed: garbage every step).
       const g = boxArgs;
       g[0] = sc.px[a]!; g[1] = sc.py[a]!; g[2] = sc.pz[a]!; g[3] = s.hx[ea]!; g[4] = s.hy[ea]!; g[5] = s.hz[ea]!;
@@ -539,7 +515,7 @@ function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i: numbe
     if (overlap) st.sensingNow.set(ea * (world.capacity + 1) + eb, sa ? [ea, eb, sc.body[a]!, sc.body[b]!] : [eb, ea, sc.body[b]!, sc.body[a]!]);
     return;
   }
-  const margin = 0.5 * (sc.spec[a]! + sc.spec[b]!) + (sc.speed[a]! + sc.speed[b]!) * world.h;
+  const margin = shapeSpec + (sc.speed[a]! + sc.speed[b]!) * world.h;
   collide3D(colA, colB, margin, manifold);
   if (manifold.count > 0) emitPair(world, s, st, a, b, bi, bj);
 }
@@ -692,7 +668,7 @@ function planesAndMeshes(world: PhysicsWorld, s: Shape3DStore, st: Contact3DStat
     if (s.sensor[e]) continue;
     const box = s.kind[e] === Shape3DKind.Box;
     let posed = false;
-    const margin = sc.spec[i]! + sc.speed[i]! * h;
+    const margin = shapeSpec + sc.speed[i]! * h;
     for (let k = 0; k < planes.length; k++) {
       const p = planes[k]!;
       const nx = P.nx[p]!, ny = P.ny[p]!, nz = P.nz[p]!, d = P.d[p]!;
@@ -838,9 +814,9 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
   const e = sc.shape[i]!;
   if (!sc.ball[i] && s.sensor[e]) return;
   const Bd = m.bounds, N = m.normals, V = m.vertices, T = m.triangles;
-  const margin = sc.spec[i]! + sc.speed[i]! * world.h;
+  const margin = shapeSpec + sc.speed[i]! * world.h;
   // The triangles' boxes are not fattened: the collider's box takes the other half of its speculative distance here.
-  const g = 0.5 * sc.spec[i]!;
+  const g = 0.5 * shapeSpec;
   collider(world, s, i, colB);
   const reach = sc.ball[i] ? colB.radius : s.reach[e]!;
   const out = manifold;

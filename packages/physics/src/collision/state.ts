@@ -81,9 +81,9 @@ export interface CollisionSettings {
   /**
    * Gap within which contacts are kept even without approach speed, m. Default 0.1 m (Box2D v3 pads its
    * bounding boxes by the same margin), so a body knocked sideways during a step still meets the contacts
-   * it runs into. Balls use it as it is; 2D and 3D shapes take at most this, 4 % of half their smallest
-   * extent (0.02 m for a 1 m box: shape-collision.ts, shape3d-collision.ts), so neighbours standing a few
-   * centimetres apart are no contacts.
+   * it runs into. Balls use it as it is; shapes take at most this: 2D shapes 4 % of half their smallest
+   * extent (0.02 m for a 1 m box, shape-collision.ts), 3D shapes 0.02 m (shape3d-collision.ts), so
+   * neighbours standing a few centimetres apart are no contacts.
    */
   speculativeDistance: number;
   /**
