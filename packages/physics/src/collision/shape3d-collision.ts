@@ -283,9 +283,26 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     sc.minX[n] = cx - wx - pad; sc.maxX[n] = cx + wx + pad; sc.minY[n] = cy - wy - pad; sc.maxY[n] = cy + wy + pad; sc.minZ[n] = cz - wz - pad; sc.maxZ[n] = cz + wz + pad;
     n++;
   };
+  // Only static and sleeping colliders (a settled pile): no pair can collide (pairs need a dynamic or
+  // kinematic body), so none is posed. A pile asleep cost 0.51 ms a step, 55 % of it posing its boxes.
+  if (!anyMoving(s, balls, cap, stamp)) { scratch.n = 0; return; }
   for (let e = 1; e <= cap; e++) if (s.body[e] !== 0) add(e, s.body[e]!, false);
   for (let i = 0; i < balls.length; i++) { const b = balls[i]!; if (s.first[b] === 0) add(b, b, true); }
   scratch.n = n;
+}
+
+/** Whether a 3D shape or shapeless ball's body is dynamic or kinematic (not static or sleeping by markClasses' `stamp`). */
+function anyMoving(s: Shape3DStore, balls: ArrayLike<number>, cap: number, stamp: number): boolean {
+  const body = s.body;
+  for (let e = 1; e <= cap; e++) {
+    const b = body[e]!;
+    if (b !== 0 && (classStamp[b] !== stamp || classKind[b] === BodyType.Kinematic)) return true;
+  }
+  for (let i = 0; i < balls.length; i++) {
+    const b = balls[i]!;
+    if (s.first[b] === 0 && (classStamp[b] !== stamp || classKind[b] === BodyType.Kinematic)) return true;
+  }
+  return false;
 }
 
 const colA: Collider3D = { kind: 0, px: 0, py: 0, pz: 0, R: new Float64Array(9), radius: 0, hy: 0, hull: null, box: 0, hx: 0, hz: 0 };
