@@ -1,5 +1,5 @@
 import {
-  contactSpringEnergy, createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, type PhysicsWorld,
+  contactSpringEnergy, createPhysicsWorld, forEachContact3D, gravitationalPotentialEnergy, kineticEnergy, slotOf, type PhysicsWorld,
 } from '@bitphysics/physics';
 
 /** Mechanical energy as the soft-contact model defines it: kinetic + gravitational + contact springs, J. */
@@ -40,4 +40,14 @@ export function maxPairOverlap(world: PhysicsWorld, ids: ArrayLike<number>): num
     }
   }
   return worst;
+}
+
+/** Contact points of the last step between bodies a and b (either order), with the least separation. */
+export function pairContacts(world: PhysicsWorld, a: number, b: number): { points: number; minSep: number } {
+  const ea = slotOf(a), eb = slotOf(b);
+  let points = 0, minSep = Infinity;
+  forEachContact3D(world, (c) => {
+    if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) { points++; minSep = Math.min(minSep, c.separation); }
+  });
+  return { points, minSep };
 }

@@ -1,5 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
+import { pairContacts } from './helpers.js';
 import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
 
 /**
@@ -20,16 +21,6 @@ const corners = (h: number): number[][] => [-1, 1].flatMap((x) => [-1, 1].flatMa
 
 function world3(gravity: number): PhysicsWorld {
   return createPhysicsWorld({ dimensions: 3, gravity: [0, gravity, 0], sleep: false });
-}
-
-/** Contact points of the last step between bodies a and b (either order), with the least separation. */
-function pairContacts(world: PhysicsWorld, a: number, b: number): { points: number; minSep: number } {
-  const ea = slotOf(a), eb = slotOf(b);
-  let points = 0, minSep = Infinity;
-  forEachContact3D(world, (c) => {
-    if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) { points++; minSep = Math.min(minSep, c.separation); }
-  });
-  return { points, minSep };
 }
 
 function speed(world: PhysicsWorld, b: number): number {

@@ -1,5 +1,6 @@
 import { describe, expect, test } from 'vitest';
-import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
+import { addBody, addShape3D, createPhysicsWorld, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
+import { pairContacts } from './helpers.js';
 
 /**
  * The speculative distance of 3D shapes (shape3d-collision.ts, SHAPE_SPECULATIVE_DISTANCE): Box2D v3's
@@ -19,20 +20,11 @@ function pair(gap: number, worldSpec?: number): { world: PhysicsWorld; a: number
   return { world, a, b };
 }
 
-function contacts(world: PhysicsWorld, a: number, b: number): { points: number; minSep: number } {
-  const ea = slotOf(a), eb = slotOf(b);
-  let points = 0, minSep = Infinity;
-  forEachContact3D(world, (c) => {
-    if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) { points++; minSep = Math.min(minSep, c.separation); }
-  });
-  return { points, minSep };
-}
-
 describe('3D shapes: speculative contacts within 0.02 m (Box2D v3: 4 linear slops)', () => {
   test('two cubes 19 mm apart have a face manifold of four speculative points at 19 mm that pushes nothing; 21 mm apart, none', () => {
     const near = pair(0.019);
     step(near.world);
-    const c = contacts(near.world, near.a, near.b);
+    const c = pairContacts(near.world, near.a, near.b);
     expect(c.points).toBe(4);
     expect(c.minSep).toBeCloseTo(0.019, 9);
     // Speculative rows stop an approach only: at rest, neither cube moves.
@@ -40,15 +32,15 @@ describe('3D shapes: speculative contacts within 0.02 m (Box2D v3: 4 linear slop
     expect(near.world.components.Velocity.x[slotOf(near.b)]).toBe(0);
     const far = pair(0.021);
     step(far.world);
-    expect(contacts(far.world, far.a, far.b).points).toBe(0);
+    expect(pairContacts(far.world, far.a, far.b).points).toBe(0);
   });
 
   test("a world's smaller speculativeDistance caps it: at 0.01 m, cubes 11 mm apart have no contact, 9 mm apart have one", () => {
     const far = pair(0.011, 0.01);
     step(far.world);
-    expect(contacts(far.world, far.a, far.b).points).toBe(0);
+    expect(pairContacts(far.world, far.a, far.b).points).toBe(0);
     const near = pair(0.009, 0.01);
     step(near.world);
-    expect(contacts(near.world, near.a, near.b).points).toBe(4);
+    expect(pairContacts(near.world, near.a, near.b).points).toBe(4);
   });
 });
