@@ -85,11 +85,15 @@ export async function buildSite(options = {}) {
   return siteDir;
 }
 
-/** Builds the bench CLI into packages/bench/dist/cli.js (workspace code bundled, peers external). */
+/** Builds the bench CLI into packages/bench/dist/cli.js and its peer engines' worker thread into dist/engine-thread.js (workspace code bundled, peers external). */
 export async function buildBench() {
   await esbuild.build({
-    entryPoints: [join(root, 'packages', 'bench', 'src', 'cli.ts')],
-    outfile: join(root, 'packages', 'bench', 'dist', 'cli.js'),
+    // The CLI, and the worker thread each peer engine runs in (isolation/engine-thread.ts), side by side.
+    entryPoints: {
+      cli: join(root, 'packages', 'bench', 'src', 'cli.ts'),
+      'engine-thread': join(root, 'packages', 'bench', 'src', 'isolation', 'engine-thread.ts'),
+    },
+    outdir: join(root, 'packages', 'bench', 'dist'),
     bundle: true,
     format: 'esm',
     platform: 'node',

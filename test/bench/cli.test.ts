@@ -275,6 +275,30 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
   });
 
   /**
+   * Each peer runs in a worker thread (a V8 isolate) of its own unless --same-isolate: the isolation
+   * must change no result. Both runs of a small box pile give every engine the same contacts, overlap
+   * and final quality fields (rapier is deterministic on one machine; ours on every machine), and the
+   * peer's setup time and memory are still measured (in its isolate).
+   */
+  it('peers in their own isolates compute what they compute beside ours (--same-isolate)', async () => {
+    const args = ['--scene', 'box-pile-3d', '--count', '27', '--steps', '40', '--warmup', '20', '--vs', 'rapier3d', '--json', '--hash'];
+    const [apart, together] = await Promise.all([runCli(args), runCli([...args, '--same-isolate'])]);
+    expect(apart.code).toBe(0);
+    expect(together.code).toBe(0);
+    const a = jsonLines(apart.stdout), b = jsonLines(together.stdout);
+    expect(a.map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d']);
+    for (let i = 0; i < 2; i++) {
+      for (const field of ['contacts', 'maxOverlapPercent', 'overlappingPairs', 'maxWallPenetrationPercent', 'stateHash']) expect(a[i]![field]).toEqual(b[i]![field]);
+      expect(a[i]!.setupMs as number).toBeGreaterThan(0);
+      expect(typeof a[i]!.engineMemoryMB).toBe('number');
+    }
+    // Landed boxes: the compared figures are not zeros.
+    expect(a[1]!.contacts as number).toBeGreaterThan(0);
+    expect(a[1]!.maxWallPenetrationPercent as number).toBeGreaterThan(0);
+    expect(typeof a[0]!.stateHash).toBe('string');
+  });
+
+  /**
    * The 2D pyramid against its three peers: every engine runs the same layout and reports the quality
    * fields from its own final poses. A base-3 pyramid (6 boxes) on its exact start barely moves in 30
    * steps in any engine; before the Box2D v2 peers' boxes were shrunk by their 0.01 m polygon skin, the

@@ -38,6 +38,11 @@ export interface BenchArgs {
   readonly block: number;
   /** `--times`: add every step's milliseconds (`timesMs`) to the JSON lines. */
   readonly times: boolean;
+  /**
+   * `--same-isolate`: run the `--vs` peers on the bench's thread beside ours, not each in a worker
+   * thread (V8 isolate) of its own (the default; see isolation/isolated-engine.ts for why).
+   */
+  readonly sameIsolate: boolean;
   /** Engines to run: ours first, then the `--vs` peers in the order given (duplicates dropped). */
   readonly engines: readonly string[];
   /**
@@ -64,6 +69,7 @@ const BUILTIN_OPTIONS = {
   soak: { type: 'boolean' },
   threads: { type: 'string' },
   times: { type: 'boolean' },
+  'same-isolate': { type: 'boolean' },
   list: { type: 'boolean' },
   help: { type: 'boolean', short: 'h' },
 } as const;
@@ -96,6 +102,8 @@ export const USAGE = `usage: npm run bench -- [options] [--<param> <value> ...]
                      median step time printed every 10,000 steps (e.g. --scene fireworks --soak)
   --json             one JSON object per line per engine (or per study item) on stdout; notes and progress go to stderr
   --times            with --json: add every timed step's milliseconds as "timesMs" (not for studies)
+  --same-isolate     run the --vs peers on bitphysics' thread (one V8 isolate) instead of each in a worker thread
+                     of its own; a WASM peer then slows every JavaScript engine in the run (it detaches buffers)
   --list             list scenes, their parameters and the engines that support each
   -h, --help         this text
 
@@ -173,6 +181,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
     if (str('block') !== undefined) throw new UsageError(`--block does not apply to "${scene}" (its timed worlds alternate every 5 steps)`);
     if (values.times === true) throw new UsageError(`--times does not apply to "${scene}" (it reports medians per item)`);
     if (threads > 1) throw new UsageError(`--threads does not apply to "${scene}" (it measures single-threaded laws)`);
+    if (values['same-isolate'] === true) throw new UsageError(`--same-isolate does not apply to "${scene}": it runs no peer engines`);
   }
   const engines = [OURS];
   if (str('vs') !== undefined) {
@@ -190,7 +199,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, hash: values.hash === true, soak: values.soak === true, threads, times: values.times === true, scene, study, count, steps, warmup, seed, block, engines, params };
+  return { list, help, json, hash: values.hash === true, soak: values.soak === true, threads, times: values.times === true, sameIsolate: values['same-isolate'] === true, scene, study, count, steps, warmup, seed, block, engines, params };
 }
 
 /**

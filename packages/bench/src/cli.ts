@@ -25,6 +25,7 @@ import { catalogEntry, catalogNames } from './catalog.js';
 import { describeParam } from './params.js';
 import { runSoak } from './soak.js';
 import { runBenchmark, SceneBuildError } from './runner.js';
+import { isolated } from './isolation/isolated-engine.js';
 import { humanReport, jsonRecords, studyReport, table } from './report.js';
 
 /** Where the CLI writes: injectable so the CLI can run inside another program. */
@@ -141,7 +142,8 @@ function runStudy(args: BenchArgs, io: CliIO): number {
 /** Runs the benchmark the arguments describe and prints its results. */
 async function run(args: BenchArgs, io: CliIO): Promise<number> {
   const scene = resolveScene(args.scene)!;
-  const adapters = args.engines.map((name) => ENGINES[name]!);
+  // Peers each in a worker thread of their own (a V8 isolate: isolation/isolated-engine.ts), ours here.
+  const adapters = args.engines.map((name) => (name === OURS || args.sameIsolate ? ENGINES[name]! : isolated(ENGINES[name]!)));
   // --threads n: the threaded world runs right after the single-threaded one, in the same process.
   if (args.threads > 1) adapters.splice(1, 0, bitphysicsThreadedEngine(args.threads));
   const showBar = io.isTTY && !args.json;

@@ -136,10 +136,11 @@ export async function runBenchmark(
       } catch (error) {
         throw new SceneBuildError(a.name, options, error);
       }
-      setupMs.push(performance.now() - t0);
+      const inst = instances[instances.length - 1]!;
+      setupMs.push(inst.setupMs ?? performance.now() - t0);
       collectGarbage();
       collectGarbage();
-      memoryMB.push(engineMemoryMB(m0, sampleMemory(), instances[instances.length - 1]!.benchBytes));
+      memoryMB.push(inst.engineMemoryMB ?? engineMemoryMB(m0, sampleMemory(), inst.benchBytes));
     }
     const total = (timing.steps + timing.warmup) * instances.length;
     let done = 0;
@@ -155,7 +156,7 @@ export async function runBenchmark(
     const loadStart = loadNow();
     runInterleaved(instances, timing.steps, timing.block, times, progress, cpu);
     const loadEnd = loadNow();
-    const heapUsedMB = sampleMemory().heapUsed;
+    let heapUsedMB = sampleMemory().heapUsed;
     for (const inst of instances) inst.endTiming?.();
 
     const engines = instances.map((inst, i): EngineResult => {
@@ -179,6 +180,8 @@ export async function runBenchmark(
         notes: inst.notes,
       };
     });
+    // Engines in isolates of their own: their heaps too (read by `stats` above).
+    for (const inst of instances) heapUsedMB += inst.heapUsedMB?.() ?? 0;
     return {
       scene: options, steps: timing.steps, warmup: timing.warmup, block: timing.block, engines, heapUsedMB, gcForced,
       load: { start: loadStart, end: loadEnd, cpus: cpuCount() },
@@ -191,11 +194,12 @@ export async function runBenchmark(
 /**
  * Steps every instance `steps` times, alternating in blocks of `block` steps with the engine order
  * rotating every round; records each step's milliseconds into `times[engine][step]` when given, and
- * then (outside the timed interval) calls the instance's `afterStep` hook. With `cpu` (timed runs),
+ * then (outside the timed interval) calls the instance's `afterStep` hook. An instance with `runSteps`
+ * (an engine in a thread of its own) runs and times each block there instead. With `cpu` (timed runs),
  * adds each engine's process CPU time of its blocks, ms, less its hooks', into `cpu[engine]`.
  */
 export function runInterleaved(
-  instances: readonly Pick<EngineInstance, 'step' | 'afterStep'>[], steps: number, block: number, times: Float64Array[] | null,
+  instances: readonly Pick<EngineInstance, 'step' | 'afterStep' | 'runSteps'>[], steps: number, block: number, times: Float64Array[] | null,
   progress?: (steps: number) => void, cpu?: Float64Array,
 ): void {
   const m = instances.length;
@@ -205,7 +209,12 @@ export function runInterleaved(
       const idx = (j + round) % m;
       const inst = instances[idx]!;
       const out = times ? times[idx]! : null;
-      if (out) {
+      if (inst.runSteps) {
+        // An engine in a thread of its own runs and times the block there.
+        const r = inst.runSteps(k, out !== null);
+        if (out && r.times) out.set(r.times, start);
+        if (cpu) cpu[idx] = cpu[idx]! + r.cpuMs;
+      } else if (out) {
         const c0 = cpu ? cpuMs() : 0;
         let hooks = 0;
         for (let s = 0; s < k; s++) {

@@ -94,6 +94,19 @@ export interface EngineInstance {
   afterStep?(): void;
   /** Optional: called once right after this engine's last timed step, before `stats`. */
   endTiming?(): void;
+  /**
+   * Optional, for an engine stepped in a thread of its own (isolation/isolated-engine.ts): runs `steps`
+   * steps there, calling `afterStep` after each when `timed`, and returns each step's milliseconds
+   * (`timed`) and the process CPU time of the block less the hooks', ms. The runner then calls it
+   * instead of `step`, so no message between threads is timed.
+   */
+  runSteps?(steps: number, timed: boolean): { readonly times: Float64Array | null; readonly cpuMs: number };
+  /** Optional: the scene's build time, ms, measured where the engine runs (its own thread); replaces the runner's figure. */
+  readonly setupMs?: number;
+  /** Optional: the engine's memory, MB (`engineMemoryMB`), measured where the engine runs; replaces the runner's figure. */
+  readonly engineMemoryMB?: number;
+  /** Optional: V8 heap in use where the engine runs (its own isolate) as of the last `stats` call, MB; added to the run's `heapUsedMB`. */
+  heapUsedMB?(): number;
 }
 
 /** An engine the bench can run: a factory of instances plus what it supports. */
