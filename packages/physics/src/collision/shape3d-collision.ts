@@ -347,7 +347,7 @@ const RESTING_SEARCH_PERIOD = 8;
 /** Broadphase scratch: a hashed uniform grid (counting sort of colliders by the cell of their box's low corner). */
 const grid = {
   start: new Int32Array(0), items: new Int32Array(0), bucket: new Int32Array(0), large: new Int32Array(0), width: new Float64Array(0), seen: new Int32Array(0),
-  packed: new Float64Array(0), source: new Uint8Array(0), searching: new Uint8Array(0),
+  packed: new Float64Array(0), searching: new Uint8Array(0), firstRest: new Int32Array(0),
 };
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
@@ -395,23 +395,8 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
   if (grid.start.length < size + 1) { grid.start = new Int32Array(2 * size + 1); grid.seen = new Int32Array(2 * size + 1); }
   grid.seen.fill(0, 0, size);
   if (grid.items.length < n) { grid.items = new Int32Array(Math.max(64, 2 * n)); grid.bucket = new Int32Array(Math.max(64, 2 * n)); }
-  const start = grid.start, items = grid.items, bucket = grid.bucket, seen = grid.seen, order = sc.order;
-  start.fill(0, 0, size + 1);
-  for (let i = 0; i < n; i++) {
-    if (order[i] === -1) continue;
-    const b = cellHash(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
-    bucket[i] = b; start[b + 1]!++;
-  }
-  for (let b = 0; b < size; b++) start[b + 1] = start[b + 1]! + start[b]!;
-  // Fill (start[b] is advanced while filling, then restored from the next bucket's start).
-  for (let i = 0; i < n; i++) { if (order[i] === -1) continue; const b = bucket[i]!; items[start[b]!++] = i; }
-  for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
-  start[0] = 0;
-  // The boxes in bucket order, packed (min x, max x, min y, max y, min z, max z) with a source flag, so
-  // the neighbour search below reads memory in sequence instead of jumping through the collider arrays.
-  const placed = start[size]!;
-  if (grid.packed.length < 6 * placed) { grid.packed = new Float64Array(12 * placed); grid.source = new Uint8Array(2 * placed); }
-  const pk = grid.packed, src = grid.source;
+  if (grid.firstRest.length < size) grid.firstRest = new Int32Array(2 * size);
+  const start = grid.start, items = grid.items, bucket = grid.bucket, seen = grid.seen, order = sc.order, firstRest = grid.firstRest;
   // Which colliders search their neighbourhood this step (see the note at RESTING_SEARCH_PERIOD).
   if (grid.searching.length < n) grid.searching = new Uint8Array(Math.max(64, 2 * n));
   const sl = world.collision.sleep, searching = grid.searching, rest = sl.restTime, phase = world.steps;
@@ -425,10 +410,30 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
       && (phase + i) % RESTING_SEARCH_PERIOD !== 0;
     searching[i] = (t === BodyType.Kinematic || t === BodyType.Dynamic) && !skips ? 1 : 0;
   }
+  // Counting sort by bucket; within a bucket the searching colliders first, then the others (from
+  // firstRest[b]), each part in ascending collider index, so a collider meets the searching ones above
+  // its own index without testing those below (their own search finds the pair).
+  start.fill(0, 0, size + 1);
+  firstRest.fill(0, 0, size);
+  for (let i = 0; i < n; i++) {
+    if (order[i] === -1) continue;
+    const b = cellHash(Math.floor(minX[i]! * inv), Math.floor(minY[i]! * inv), Math.floor(minZ[i]! * inv), mask);
+    bucket[i] = b; start[b + 1]!++; firstRest[b] = firstRest[b]! + searching[i]!;
+  }
+  for (let b = 0; b < size; b++) { start[b + 1] = start[b + 1]! + start[b]!; firstRest[b] = firstRest[b]! + start[b]!; }
+  // Fill (start[b] is advanced while filling, then restored from the next bucket's start).
+  for (let i = 0; i < n; i++) { if (order[i] === -1 || searching[i] === 0) continue; const b = bucket[i]!; items[start[b]!++] = i; }
+  for (let i = 0; i < n; i++) { if (order[i] === -1 || searching[i] === 1) continue; const b = bucket[i]!; items[start[b]!++] = i; }
+  for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
+  start[0] = 0;
+  // The boxes in bucket order, packed (min x, max x, min y, max y, min z, max z), so the neighbour
+  // search below reads memory in sequence instead of jumping through the collider arrays.
+  const placed = start[size]!;
+  if (grid.packed.length < 6 * placed) grid.packed = new Float64Array(12 * placed);
+  const pk = grid.packed;
   for (let k = 0; k < placed; k++) {
     const j = items[k]!, o = 6 * k;
     pk[o] = minX[j]!; pk[o + 1] = maxX[j]!; pk[o + 2] = minY[j]!; pk[o + 3] = maxY[j]!; pk[o + 4] = minZ[j]!; pk[o + 5] = maxZ[j]!;
-    src[k] = searching[j]!;
   }
   // Sources: the colliders of moving (dynamic or kinematic) bodies; a resting pile's sleeping and static
   // colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
@@ -446,12 +451,15 @@ function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
       // Two neighbour cells may share a bucket: each bucket is searched once per collider.
       if (seen[b] === mark) continue;
       seen[b] = mark;
-      for (let k = start[b]!, e = start[b + 1]!; k < e; k++) {
+      // A pair of two searching colliders is taken from its lower index: of the bucket's searching
+      // colliders (ascending), only those above i; then every collider that does not search.
+      const b0 = start[b]!, e = start[b + 1]!;
+      let k = firstRest[b]!;
+      while (k > b0 && items[k - 1]! > i) k--;
+      for (; k < e; k++) {
         const o = 6 * k;
         if (pk[o]! > x1 || pk[o + 1]! < x0 || pk[o + 2]! > y1 || pk[o + 3]! < y0 || pk[o + 4]! > z1 || pk[o + 5]! < z0) continue;
         const j = items[k]!;
-        // A pair of two searching colliders is taken from its lower index.
-        if (j === i || j < i && src[k] === 1) continue;
         if (!meets(ti, type[sc.body[j]!]!)) continue;
         pair(world, s, st, i, j);
       }
