@@ -7,7 +7,7 @@ import {
 } from '@bitphysics/physics';
 import { Rng } from '../../packages/physics/src/rng.js';
 import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut.js';
-import { KERNEL, KERNELS } from '../../packages/physics/src/threads/kernels.js';
+import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
 import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 
@@ -53,7 +53,7 @@ test('Barnes-Hut evaluated in parts: every field identical to the one-part walk 
       const arrays = [t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info];
       for (let p = 0; p < parts; p++) arrays.push(new Float64Array(size).fill(1e300));
       t.ax.fill(NaN); t.ay.fill(NaN); t.az.fill(NaN);
-      KERNELS[dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2]!(arrays, t.walkParams, null, 0, parts, 0);
+      KERNELS[dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2]!(arrays, t.walkParams, null, 0, parts, 0, KERNEL_HELPERS);
       for (let i = 0; i < n; i++) {
         if (!Object.is(t.ax[i], ref[0]![i]) || !Object.is(t.ay[i], ref[1]![i]) || !Object.is(t.az[i], ref[2]![i])) {
           throw new Error(`${dims}D, ${parts} parts: slot ${i} differs`);

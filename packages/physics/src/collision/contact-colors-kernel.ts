@@ -4,7 +4,7 @@
  * says when.
  */
 
-import type { KernelArray } from '../threads/kernel-types.js';
+import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 
 /**
  * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
@@ -47,22 +47,23 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * that slows the upper one less than the lower). Returns 0 (-1 if another
  * thread failed and this one stopped).
  */
-export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
+export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
   const pk = A[0] as Float64Array, sb = A[1] as Float64Array, ex = A[2] as Float64Array, dyn = A[3] as Uint8Array;
   const plan = A[4] as Int32Array, bar = A[5] as Int32Array;
   const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, C = plan[4]!, nb = plan[5]!, parts = plan[7]!;
   const np = plan[8]!, fused = plan[9] === 1;
   const wait = part !== 0 || plan[6] === 1;
-  const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
-  const hs = P[8]!, gx = P[9]!, gy = P[10]!, rows = P[11]!, W = P[12]!, spinMs = P[13]! / 1000;
-  const downX = P[14]!, downY = P[15]!, supportCos = P[16]!;
-  const color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
-  const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
-  const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
-  const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
-  const RP = A[20] as Uint8Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
   const bounds = A[23] as Int32Array, order = A[24] as Int32Array, bodyBounds = A[25] as Int32Array, pair = A[26] as Int32Array;
+  const spinMs = P[13]! / 1000;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
+  // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
+  // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
+  // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
+  // call, which every branch first reached later threw away: 14 recompiles of ~50 ms each in 100
+  // steps of balls-in-box 20,000 on 2 threads, on the cores the threads need.
+  // (Indices of KERNEL_HELPERS, threads/kernels.ts; the kernel may name nothing outside itself.)
+  const packRows = H[0] as typeof coloredPack2D, unpackRows = H[1] as typeof coloredUnpack2D;
+  const bodyStage = H[2] as typeof coloredBodies2D, rowPass = H[3] as typeof coloredRows2D;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256, BB = 1024;
   // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
@@ -110,135 +111,26 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       if (failed) break;
       const blk = b - base;
       try {
-        if (kind === 0) {
-          const lo = Math.floor((rows * blk) / parts), hi = Math.floor((rows * (blk + 1)) / parts), o0 = blk * W;
-          for (let i = lo; i < hi; i++) {
-            const c = color[i]!;
-            if (c === 255) continue;
-            const k = offsets[o0 + c]!;
-            offsets[o0 + c] = k + 1;
-            const o = k * 16;
-            pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
-            pair[2 * k] = IA[i]! * 8; pair[2 * k + 1] = IB[i]! * 8;
-            pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
-            pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
-            pk[o + 14] = 0; pk[o + 15] = i;
-          }
-        } else if (kind === 1) {
+        if (kind === 0) packRows(A, P, blk, parts);
+        else if (kind === 1 || kind === 2) {
           const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
-          for (let k = k0; k < k1; k++) {
-            if (dyn[k] !== 1) continue;
-            const o = k * 8;
-            sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
-          }
-        } else if (kind === 2) {
-          const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
-          for (let k = k0; k < k1; k++) {
-            const o = k * 8;
-            sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
-            if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
-          }
+          bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
         } else if (kind === 4) {
           const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
-          for (let k = k0; k < k1; k++) {
-            const o = k * 16, i = pk[o + 15]!;
-            LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
-          }
+          unpackRows(A, k0, k1);
         } else {
           // A block of colour u's rows.
           const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
           // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
           // positions before the first relax pass).
           if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
-            const q0 = bodyBounds[blk]!, q1 = bodyBounds[blk + 1]!;
-            if (stage === 1) {
-              for (let q = q0; q < q1; q++) {
-                const k = order[q]!;
-                if (dyn[k] !== 1) continue;
-                const o = k * 8;
-                sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
-              }
-            } else {
-              for (let q = q0; q < q1; q++) {
-                const k = order[q]!, o = k * 8;
-                sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
-                if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
-              }
-            }
+            bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
           }
-          if (stage === 1) {
-            for (let k = r0; k < r1; k++) {
-              const o = k * 16;
-              const ln = pk[o + 10]!, lt = pk[o + 11]!;
-              if (ln === 0 && lt === 0) continue;
-              const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
-              sb[a + 7] = 1; sb[bb + 7] = 1;
-              const nx = pk[o + 2]!, ny = pk[o + 3]!;
-              const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
-              const imA = sb[a + 5]!, imB = sb[bb + 5]!;
-              sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
-              sb[bb] = sb[bb]! + imB * Px; sb[bb + 1] = sb[bb + 1]! + imB * Py;
-              sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 4]! * lt;
-              sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 5]! * lt;
-            }
-          } else {
-            const useBias = stage < 2 + iters;
-            // The substep's last pass adds each row's impulse to what the substep delivered.
-            const total = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-            for (let k = r0; k < r1; k++) {
-              const o = k * 16;
-              const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
-              const nx = pk[o + 2]!, ny = pk[o + 3]!;
-              const imA = sb[a + 5]!, imB = sb[bb + 5]!;
-              let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[bb]!, vby = sb[bb + 1]!;
-              // The normal impulse's inverse masses and effective mass: a frictionless support row of
-              // a relax pass may hold its lower ball (support.ts's holdsLower: lower speed <= upper).
-              let jmA = imA, jmB = imB, nm = pk[o + 7]!;
-              if (!useBias && pk[o + 9] === 0 && imA > 0 && imB > 0 && nm > 0) {
-                const up = -(downX * nx + downY * ny);
-                if (up > supportCos || up < -supportCos) {
-                  const va = Math.abs(vax * nx + vay * ny), vb = Math.abs(vbx * nx + vby * ny);
-                  if (up > 0 ? va <= vb : vb <= va) { if (up > 0) jmA = 0; else jmB = 0; nm = 1 / (jmA + jmB); }
-                }
-              }
-              const sep = pk[o + 6]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
-              let bias = 0, massScale = 1, impulseScale = 0;
-              if (sep > 0) {
-                bias = sep * invH;
-              } else if (useBias) {
-                if (pk[o + 12] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
-                else { bias = dBias * sep; massScale = dMass; impulseScale = dImp; }
-                if (bias < -push) bias = -push;
-              }
-              const vn = (vbx - vax) * nx + (vby - vay) * ny;
-              const oldN = pk[o + 10]!;
-              let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
-              let newN = oldN + lambda;
-              if (newN < 0) newN = 0;
-              lambda = newN - oldN;
-              pk[o + 10] = newN;
-              if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
-              if (total) pk[o + 14] = pk[o + 14]! + newN;
-              let Px = lambda * nx, Py = lambda * ny;
-              vax -= jmA * Px; vay -= jmA * Py; vbx += jmB * Px; vby += jmB * Py;
-              const ra = pk[o + 4]!, rb = pk[o + 5]!;
-              let wa = sb[a + 2]!, wb = sb[bb + 2]!;
-              const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
-              lambda = -pk[o + 8]! * vt;
-              const maxF = pk[o + 9]! * newN;
-              const oldT = pk[o + 11]!;
-              let newT = oldT + lambda;
-              newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
-              lambda = newT - oldT;
-              pk[o + 11] = newT;
-              Px = -lambda * ny; Py = lambda * nx;
-              vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
-              wa -= sb[a + 6]! * ra * lambda; wb -= sb[bb + 6]! * rb * lambda;
-              sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
-              sb[bb] = vbx; sb[bb + 1] = vby; sb[bb + 2] = wb;
-              if (newN !== 0 || newT !== 0) { sb[a + 7] = 1; sb[bb + 7] = 1; }
-            }
-          }
+          // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+          // adds each row's impulse to what the substep delivered).
+          const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+          const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+          rowPass(pk, sb, pair, P, r0, r1, mode);
         }
       } catch (e) {
         // Let the other threads out of their waits, then report this one's error.
@@ -260,4 +152,150 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
     }
   }
   return failed ? -1 : 0;
+}
+
+/*
+ * The coloured kernel's block loops (KERNEL_HELPERS 0 to 3, threads/kernels.ts), self-contained like a
+ * kernel; the arithmetic of each row and body is the one the kernel had inline.
+ */
+
+/**
+ * Packs the contact buffer's rows of packing range `blk` (of `parts`) into the pack, each at its group's
+ * next slot (solveColored2D's A and P layout: A 0 pack, 6 groups, 7 offsets, 8 to 20 the buffer's
+ * arrays, 26 pair; P 11 rows, 12 group slots a range).
+ */
+export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
+  const pk = A[0] as Float64Array, color = A[6] as Uint8Array, offsets = A[7] as Int32Array;
+  const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
+  const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
+  const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
+  const RP = A[20] as Uint8Array, pair = A[26] as Int32Array;
+  const rows = P[11]!, W = P[12]!;
+  const lo = Math.floor((rows * blk) / parts), hi = Math.floor((rows * (blk + 1)) / parts), o0 = blk * W;
+  for (let i = lo; i < hi; i++) {
+    const c = color[i]!;
+    if (c === 255) continue;
+    const k = offsets[o0 + c]!;
+    offsets[o0 + c] = k + 1;
+    const o = k * 16;
+    pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
+    pair[2 * k] = IA[i]! * 8; pair[2 * k + 1] = IB[i]! * 8;
+    pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
+    pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
+    pk[o + 14] = 0; pk[o + 15] = i;
+  }
+}
+
+/** Writes pack rows [k0, k1)'s impulses back to the contact buffer (normal, tangent, largest pass impulse, delivered total; A as coloredPack2D, 21 and 22 the last two). */
+export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
+  const pk = A[0] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
+  for (let k = k0; k < k1; k++) {
+    const o = k * 16, i = pk[o + 15]!;
+    LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
+  }
+}
+
+/**
+ * A body stage over solver bodies [q0, q1) (`ordered` 1: the bodies order[q0 .. q1 - 1], a strip pair's;
+ * 0: the solver indices themselves): `stage` 1 gravity (dynamic bodies: v += g h_s, P 9-10), 2 positions
+ * (x += v h_s, and the rotation owed, P 8).
+ */
+export function coloredBodies2D(sb: Float64Array, ex: Float64Array, dyn: Uint8Array, order: Int32Array, ordered: number, q0: number, q1: number, stage: number, P: Float64Array): void {
+  if (stage === 1) {
+    const gx = P[9]!, gy = P[10]!;
+    for (let q = q0; q < q1; q++) {
+      const k = ordered === 1 ? order[q]! : q;
+      if (dyn[k] !== 1) continue;
+      const o = k * 8;
+      sb[o] = sb[o]! + gx; sb[o + 1] = sb[o + 1]! + gy;
+    }
+  } else {
+    const hs = P[8]!;
+    for (let q = q0; q < q1; q++) {
+      const k = ordered === 1 ? order[q]! : q, o = k * 8;
+      sb[o + 3] = sb[o + 3]! + sb[o]! * hs; sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
+      if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+    }
+  }
+}
+
+/**
+ * Pack rows [r0, r1) of one block: `mode` 0 the warm start; else a pass, 1 relax or 3 biased, plus 4
+ * on the substep's last pass (each row's impulse is added to what the substep delivered). P as
+ * solveColored2D's.
+ */
+export function coloredRows2D(pk: Float64Array, sb: Float64Array, pair: Int32Array, P: Float64Array, r0: number, r1: number, mode: number): void {
+  if (mode === 0) {
+    for (let k = r0; k < r1; k++) {
+      const o = k * 16;
+      const ln = pk[o + 10]!, lt = pk[o + 11]!;
+      if (ln === 0 && lt === 0) continue;
+      const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
+      sb[a + 7] = 1; sb[bb + 7] = 1;
+      const nx = pk[o + 2]!, ny = pk[o + 3]!;
+      const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
+      const imA = sb[a + 5]!, imB = sb[bb + 5]!;
+      sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
+      sb[bb] = sb[bb]! + imB * Px; sb[bb + 1] = sb[bb + 1]! + imB * Py;
+      sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 4]! * lt;
+      sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 5]! * lt;
+    }
+    return;
+  }
+  const invH = P[0]!, dBias = P[1]!, dMass = P[2]!, dImp = P[3]!, rBias = P[4]!, rMass = P[5]!, rImp = P[6]!, push = P[7]!;
+  const downX = P[14]!, downY = P[15]!, supportCos = P[16]!;
+  const useBias = (mode & 2) !== 0, total = (mode & 4) !== 0;
+  for (let k = r0; k < r1; k++) {
+    const o = k * 16;
+    const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
+    const nx = pk[o + 2]!, ny = pk[o + 3]!;
+    const imA = sb[a + 5]!, imB = sb[bb + 5]!;
+    let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[bb]!, vby = sb[bb + 1]!;
+    // The normal impulse's inverse masses and effective mass: a frictionless support row of
+    // a relax pass may hold its lower ball (support.ts's holdsLower: lower speed <= upper).
+    let jmA = imA, jmB = imB, nm = pk[o + 7]!;
+    if (!useBias && pk[o + 9] === 0 && imA > 0 && imB > 0 && nm > 0) {
+      const up = -(downX * nx + downY * ny);
+      if (up > supportCos || up < -supportCos) {
+        const va = Math.abs(vax * nx + vay * ny), vb = Math.abs(vbx * nx + vby * ny);
+        if (up > 0 ? va <= vb : vb <= va) { if (up > 0) jmA = 0; else jmB = 0; nm = 1 / (jmA + jmB); }
+      }
+    }
+    const sep = pk[o + 6]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
+    let bias = 0, massScale = 1, impulseScale = 0;
+    if (sep > 0) {
+      bias = sep * invH;
+    } else if (useBias) {
+      if (pk[o + 12] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
+      else { bias = dBias * sep; massScale = dMass; impulseScale = dImp; }
+      if (bias < -push) bias = -push;
+    }
+    const vn = (vbx - vax) * nx + (vby - vay) * ny;
+    const oldN = pk[o + 10]!;
+    let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
+    let newN = oldN + lambda;
+    if (newN < 0) newN = 0;
+    lambda = newN - oldN;
+    pk[o + 10] = newN;
+    if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
+    if (total) pk[o + 14] = pk[o + 14]! + newN;
+    let Px = lambda * nx, Py = lambda * ny;
+    vax -= jmA * Px; vay -= jmA * Py; vbx += jmB * Px; vby += jmB * Py;
+    const ra = pk[o + 4]!, rb = pk[o + 5]!;
+    let wa = sb[a + 2]!, wb = sb[bb + 2]!;
+    const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
+    lambda = -pk[o + 8]! * vt;
+    const maxF = pk[o + 9]! * newN;
+    const oldT = pk[o + 11]!;
+    let newT = oldT + lambda;
+    newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
+    lambda = newT - oldT;
+    pk[o + 11] = newT;
+    Px = -lambda * ny; Py = lambda * nx;
+    vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
+    wa -= sb[a + 6]! * ra * lambda; wb -= sb[bb + 6]! * rb * lambda;
+    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
+    sb[bb] = vbx; sb[bb + 1] = vby; sb[bb + 2] = wb;
+    if (newN !== 0 || newT !== 0) { sb[a + 7] = 1; sb[bb + 7] = 1; }
+  }
 }

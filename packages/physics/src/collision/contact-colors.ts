@@ -41,7 +41,7 @@ import type { ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { solveColored2D } from './contact-colors-kernel.js';
-import { KERNEL } from '../threads/kernels.js';
+import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
@@ -461,7 +461,7 @@ export function solveColoredSubsteps(
     pool.run('contactSolverSystem', KERNEL.solveColored2D, A, P, pool.threads, null);
   } else {
     plan[3] = 1;
-    solveColored2D(A, P, null, 0, 1, 0);
+    solveColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, np);
   s.pending = true;

@@ -1,5 +1,5 @@
 import type { PhysicsWorld } from '../world.js';
-import { KERNEL, KERNELS } from '../threads/kernels.js';
+import { KERNEL, KERNEL_HELPERS, KERNELS } from '../threads/kernels.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { INFO_STRIDE } from './barnes-hut-walk.js';
@@ -610,7 +610,7 @@ function treeFieldsWith(t: GravityTree, G: number, eps2: number, theta: number, 
   const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
   const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
-  else KERNELS[kernel]!(arrays, P, null, 0, 1, 0);
+  else KERNELS[kernel]!(arrays, P, null, 0, 1, 0, KERNEL_HELPERS);
   if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {

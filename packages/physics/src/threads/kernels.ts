@@ -9,19 +9,21 @@
  * - no inner functions (bundlers may wrap them in helpers the worker does not have);
  * - `A` holds the typed arrays in the order its caller documents, `P` the scalar parameters,
  *   `ids` the entity ids of the loop (null: the loop is over the dense ids lo + 1 .. hi);
- * - it returns a number the caller sums over the ranges (a finiteness check or a count).
+ * - it returns a number the caller sums over the ranges (a finiteness check or a count);
+ * - functions it calls come as its last argument, `helpers` (KERNEL_HELPERS, by index), and follow
+ *   these same rules.
  */
 
-import type { Kernel, KernelArray } from './kernel-types.js';
+import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
 import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
-import { solveColored2D } from '../collision/contact-colors-kernel.js';
+import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
 import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionColored2D } from '../collision/solver-stages-kernel.js';
 
-export type { Kernel, KernelArray } from './kernel-types.js';
+export type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
 /**
  * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
@@ -307,6 +309,14 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 }
 
 /** Every kernel, indexed by `KERNEL`. */
+/**
+ * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
+ * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
+ * (contact-colors-kernel.ts: pack, unpack, body stage, rows). A kernel's hot loops live here when the
+ * kernel runs once a step: V8 then compiles the loops as whole functions with full type feedback.
+ */
+export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D]);
+
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
   treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors, solveColored2D, prepareContacts2D,

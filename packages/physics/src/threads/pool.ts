@@ -11,7 +11,7 @@
  * `dispose` stops and terminates them.
  */
 
-import { KERNELS, type KernelArray } from './kernels.js';
+import { KERNEL_HELPERS, KERNELS, type KernelArray } from './kernels.js';
 import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
 import { workerSource } from './worker-source.js';
 import { LoopChooser } from './adaptive.js';
@@ -225,7 +225,7 @@ export class ThreadPool {
     const t = this.threads;
     let own: number;
     try {
-      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t), 0);
+      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t), 0, KERNEL_HELPERS);
     } finally {
       this.await();
     }

@@ -37,7 +37,8 @@ export type PoolMessage =
   | { type: 'array'; id: number; array: ArrayBufferView };
 
 /**
- * The worker's loop, as JavaScript source text: `workerMain(kernels, nodePort)` installs the message
+ * The worker's loop, as JavaScript source text: `workerMain(kernels, helpers, nodePort)` (helpers: the
+ * kernels' last argument, kernels.ts KERNEL_HELPERS) installs the message
  * handler on `nodePort` (Node's parentPort, or null for the browser's `self`) and serves the pool's
  * commands as the file's header describes. It is text, not a function of this module, because
  * bundlers rewrite inner functions (a minifier keeping names wraps them in a helper of its own
@@ -45,7 +46,7 @@ export type PoolMessage =
  * are those of `CONTROL`; commands those of `COMMAND`.
  */
 export const WORKER_MAIN_SOURCE = `
-function workerMain(kernels, nodePort) {
+function workerMain(kernels, helpers, nodePort) {
   var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11;
   var RUN = 0, SYNC = 1, QUIT = 2;
   var arrays = [], have = 0, ctl = null, params = null, results = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
@@ -81,7 +82,7 @@ function workerMain(kernels, nodePort) {
         var ids = idsId < 0 ? null : arrays[idsId];
         var n = ctl[COUNT], t = ctl[THREADS];
         var lo = Math.floor((n * index) / t), hi = Math.floor((n * (index + 1)) / t);
-        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index);
+        results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index, helpers);
       } catch (e) {
         fail(e);
       }

@@ -5,7 +5,7 @@
  * URL, which a cross-origin isolated page may start).
  */
 
-import { KERNELS } from './kernels.js';
+import { KERNEL_HELPERS, KERNELS } from './kernels.js';
 import { WORKER_MAIN_SOURCE } from './worker-main.js';
 
 let cached: string | null = null;
@@ -18,8 +18,10 @@ export function workerSource(): string {
     // A bundler keeping names may wrap the kernels' names in a __name helper; the worker has none.
     'var __name = function (f) { return f; };',
     `var KERNELS = [${KERNELS.map((k) => k.toString()).join(',\n')}];`,
+    // The kernels' helpers, reached by index (kernels.ts KERNEL_HELPERS), so no name a bundler chose matters.
+    `var KERNEL_HELPERS = [${KERNEL_HELPERS.map((k) => k.toString()).join(',\n')}];`,
     WORKER_MAIN_SOURCE,
-    "workerMain(KERNELS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",
+    "workerMain(KERNELS, KERNEL_HELPERS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",
   ].join('\n');
   return cached;
 }
