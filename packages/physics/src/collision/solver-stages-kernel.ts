@@ -11,7 +11,7 @@
  * the one-thread world's order (see solver-stages-threads.ts).
  */
 
-import type { KernelArray } from '../threads/kernel-types.js';
+import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver.ts), one
@@ -91,12 +91,22 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * gravity (m/s^2), 12 contact rows, 13 solver bodies - 1. Returns the sum of the positions and
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  */
-export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
+export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number, H: readonly KernelHelper[]): number {
+  // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, threads/kernels.ts): this
+  // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
+  // had compiled the first loop on the stack (OSR), throwing that code away at every step.
+  const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
+  if (P[4] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
+  (A[12] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
+  return check;
+}
+
+/** finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's. */
+export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
   const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
   const wz = A[4] as Float64Array, angle = A[5] as Float64Array, type = A[6] as Uint8Array;
   const sb = A[7] as Float64Array, ex = A[8] as Float64Array, imp = A[9] as Float64Array;
   const fx = P[0]!, fy = P[1]!, DYNAMIC = P[2]!, Q = P[3]!;
-  const list = ids as Int32Array;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1, e = list[i]!;
@@ -109,36 +119,44 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
     check += x + y + sb[o]! + sb[o + 1]!;
     if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
   }
-  if (P[4] === 1) {
-    const radius = A[10] as Float64Array, eM = A[11] as Float64Array;
-    const boxE = P[9]!, g0 = P[10]!, g1 = P[11]!;
-    for (let i = lo; i < hi; i++) {
-      const e = list[i]!;
-      if (type[e] !== DYNAMIC) continue;
-      const rad = radius[e]!;
-      let gain = 0;
-      for (let d = 0; d < 2; d++) {
-        const p = d === 0 ? px : py, v = d === 0 ? vx : vy, g = d === 0 ? g0 : g1;
-        const wlo = P[5 + d]! + rad, whi = P[7 + d]! - rad;
-        const x = p[e]!;
-        if (x < wlo && wlo <= whi) {
-          p[e] = wlo; gain -= g * (wlo - x);
-          if (v[e]! < 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
-        } else if (x > whi && wlo <= whi) {
-          p[e] = whi; gain -= g * (whi - x);
-          if (v[e]! > 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
-        }
-      }
-      if (gain > 0) {
-        let v2 = 0;
-        v2 += vx[e]! * vx[e]!;
-        v2 += vy[e]! * vy[e]!;
-        const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
-        vx[e] = vx[e]! * f; vy[e] = vy[e]! * f;
+  return check;
+}
+
+/** finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's). */
+export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
+  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
+  const type = A[6] as Uint8Array, radius = A[10] as Float64Array, eM = A[11] as Float64Array;
+  const DYNAMIC = P[2]!, boxE = P[9]!, g0 = P[10]!, g1 = P[11]!;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    if (type[e] !== DYNAMIC) continue;
+    const rad = radius[e]!;
+    let gain = 0;
+    for (let d = 0; d < 2; d++) {
+      const p = d === 0 ? px : py, v = d === 0 ? vx : vy, g = d === 0 ? g0 : g1;
+      const wlo = P[5 + d]! + rad, whi = P[7 + d]! - rad;
+      const x = p[e]!;
+      if (x < wlo && wlo <= whi) {
+        p[e] = wlo; gain -= g * (wlo - x);
+        if (v[e]! < 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
+      } else if (x > whi && wlo <= whi) {
+        p[e] = whi; gain -= g * (whi - x);
+        if (v[e]! > 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
       }
     }
+    if (gain > 0) {
+      let v2 = 0;
+      v2 += vx[e]! * vx[e]!;
+      v2 += vy[e]! * vy[e]!;
+      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
+      vx[e] = vx[e]! * f; vy[e] = vy[e]! * f;
+    }
   }
-  const out = A[12] as Float64Array;
+}
+
+/** finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m. */
+export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+  const sb = A[7] as Float64Array;
   const IA = A[13] as Int32Array, IB = A[14] as Int32Array, S0 = A[15] as Float64Array, NX = A[16] as Float64Array, NY = A[17] as Float64Array;
   const m = P[12]!, nb = P[13]!;
   const r0 = Math.floor((m * lo) / nb), r1 = Math.floor((m * hi) / nb);
@@ -148,8 +166,7 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
     const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
     if (s < deepest) deepest = s;
   }
-  out[part] = deepest;
-  return check;
+  return deepest;
 }
 
 /**
