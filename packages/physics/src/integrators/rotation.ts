@@ -46,27 +46,43 @@ export function applyTorques(world: PhysicsWorld, h: number): void {
  * Source: Shoemake, "Animating rotation with quaternion curves" (SIGGRAPH 1985); Ramtal and Dobre ch. 15.
  */
 export function advanceOrientations(world: PhysicsWorld, h: number): void {
-  const c = world.components;
   const ents = simpleSpinningBodies(world);
   if (ents.length === 0) return;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  let check = 0;
-  if (world.dimensions === 2) {
-    const a = c.Angle.value;
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const w = wz[e]!;
-      a[e] = a[e]! + w * h;
-      check += w;
-    }
-  } else {
-    const qx = c.Orientation.x, qy = c.Orientation.y, qz = c.Orientation.z, qw = c.Orientation.w;
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
-      check += ax + ay + az;
-      if (ax !== 0 || ay !== 0 || az !== 0) rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
-    }
-  }
+  const check = world.dimensions === 2 ? advanceAngles(world, ents, h) : advanceQuaternions(world, ents, h);
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
+}
+
+/*
+ * The two loops of advanceOrientations, each a function that returns its finiteness sum and does
+ * nothing after its loop: run once a step, a long loop is compiled on the stack (OSR) during its
+ * first call, and an operation after it that had not run by then threw that code away at every
+ * later call (70 times in 100 steps of a threaded balls-in-box at 20,000 balls).
+ */
+
+/** 2D: angle += w_z h for every body of `ents`; returns the sum of their w_z (NaN if one is not finite). */
+function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
+  const a = world.components.Angle.value, wz = world.components.AngularVelocity.z;
+  let check = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const w = wz[e]!;
+    a[e] = a[e]! + w * h;
+    check += w;
+  }
+  return check;
+}
+
+/** 3D: q <- exp(w h / 2) q for every body of `ents`; returns the sum of their w components (NaN if one is not finite). */
+function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
+  const c = world.components;
+  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const qx = c.Orientation.x, qy = c.Orientation.y, qz = c.Orientation.z, qw = c.Orientation.w;
+  let check = 0;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
+    check += ax + ay + az;
+    if (ax !== 0 || ay !== 0 || az !== 0) rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
+  }
+  return check;
 }
