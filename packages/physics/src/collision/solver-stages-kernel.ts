@@ -190,12 +190,9 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
  * this one stopped).
  */
-export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number): number {
-  const pk = A[0] as Float64Array, plan = A[1] as Int32Array, bar = A[2] as Int32Array, sb = A[3] as Float64Array;
-  const IA = A[4] as Int32Array, IB = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
-  const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
-  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array, bounds = A[15] as Int32Array;
-  const n = P[0]!, threshold = P[1]!, elasticThreshold = P[2]!, iterations = P[3]!, spinMs = P[5]! / 1000;
+export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
+  const plan = A[1] as Int32Array, bar = A[2] as Int32Array, bounds = A[15] as Int32Array;
+  const n = P[0]!, iterations = P[3]!, spinMs = P[5]! / 1000;
   const C = plan[4]!;
   const wait = part !== 0 || P[4] === 1;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
@@ -232,46 +229,13 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
       if (!earlierDone()) { failed = true; break; }
       const blk = b - base;
       try {
+        // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
+        // runs once a step, and inline they were compiled on the stack partway through a call.
         if (c < 0) {
           const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
-          let bouncing = 0;
-          for (let i = lo; i < hi; i++) {
-            const e = E[i]!;
-            if (MAXN[i] === 0) { RV[i] = -1; continue; }
-            MAXN[i] = 0;
-            if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
-              RV[i] = -e * IV[i]!;
-              const a = IA[i]! * 8, bb = IB[i]! * 8;
-              const vn = (sb[bb]! - sb[a]!) * NX[i]! + (sb[bb + 1]! - sb[a + 1]!) * NY[i]!;
-              const stop = vn < 0 ? -NM[i]! * vn : 0;
-              TOT[i] = stop + e * (TOT[i]! + stop);
-              bouncing++;
-            } else RV[i] = 0;
-          }
+          const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
           if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-        } else {
-          const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
-          for (let k = r0; k < r1; k++) {
-            const o = k * 16;
-            const i = pk[o + 15]!;
-            const target = RV[i]!;
-            if (target < 0) continue;
-            const a = pk[o]!, bb = pk[o + 1]!;
-            const nx = pk[o + 2]!, ny = pk[o + 3]!;
-            const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
-            const old = MAXN[i]!;
-            let acc = old - pk[o + 7]! * (vn - target);
-            if (acc < 0) acc = 0;
-            if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
-            const dl = acc - old;
-            if (dl === 0) continue;
-            MAXN[i] = acc;
-            IMP[i] = IMP[i]! + dl;
-            const ka = sb[a + 5]! * dl, kb = sb[bb + 5]! * dl;
-            sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
-            sb[bb] = sb[bb]! + kb * nx; sb[bb + 1] = sb[bb + 1]! + kb * ny;
-          }
-        }
+        } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
       } catch (e) {
         Atomics.store(bar, 2, 1);
         Atomics.notify(bar, 1);
@@ -284,4 +248,53 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
     base = end;
   }
   return failed ? -1 : 0;
+}
+
+/** restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce. */
+export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
+  const sb = A[3] as Float64Array, IA = A[4] as Int32Array, IB = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
+  const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
+  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array;
+  const threshold = P[1]!, elasticThreshold = P[2]!;
+  let bouncing = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = E[i]!;
+    if (MAXN[i] === 0) { RV[i] = -1; continue; }
+    MAXN[i] = 0;
+    if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
+      RV[i] = -e * IV[i]!;
+      const a = IA[i]! * 8, bb = IB[i]! * 8;
+      const vn = (sb[bb]! - sb[a]!) * NX[i]! + (sb[bb + 1]! - sb[a + 1]!) * NY[i]!;
+      const stop = vn < 0 ? -NM[i]! * vn : 0;
+      TOT[i] = stop + e * (TOT[i]! + stop);
+      bouncing++;
+    } else RV[i] = 0;
+  }
+  return bouncing;
+}
+
+/** One block of a restitution pass: pack rows [r0, r1) (A as restitutionColored2D's). */
+export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
+  const pk = A[0] as Float64Array, sb = A[3] as Float64Array, RV = A[10] as Float64Array;
+  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
+  for (let k = r0; k < r1; k++) {
+    const o = k * 16;
+    const i = pk[o + 15]!;
+    const target = RV[i]!;
+    if (target < 0) continue;
+    const a = pk[o]!, bb = pk[o + 1]!;
+    const nx = pk[o + 2]!, ny = pk[o + 3]!;
+    const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
+    const old = MAXN[i]!;
+    let acc = old - pk[o + 7]! * (vn - target);
+    if (acc < 0) acc = 0;
+    if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
+    const dl = acc - old;
+    if (dl === 0) continue;
+    MAXN[i] = acc;
+    IMP[i] = IMP[i]! + dl;
+    const ka = sb[a + 5]! * dl, kb = sb[bb + 5]! * dl;
+    sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
+    sb[bb] = sb[bb]! + kb * nx; sb[bb + 1] = sb[bb + 1]! + kb * ny;
+  }
 }

@@ -29,7 +29,7 @@ import type { PhysicsWorld } from '../world.js';
 import type { ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { KERNEL } from '../threads/kernels.js';
+import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
 import { nowMs } from '../threads/adaptive.js';
@@ -225,7 +225,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
     pool.run('contactSolverSystem', KERNEL.restitutionColored2D, A, P, pool.threads, null);
   } else {
     plan[3] = 1;
-    restitutionColored2D(A, P, null, 0, 1, 0);
+    restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);
   stageThreading.runs++;

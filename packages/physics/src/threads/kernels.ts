@@ -21,7 +21,9 @@ import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
 import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
-import { approach2D, containBodies2D, deepestRow2D, finishBodies2D, finishBodyRows2D, gatherFill2D, restitutionColored2D } from '../collision/solver-stages-kernel.js';
+import {
+  approach2D, containBodies2D, deepestRow2D, finishBodies2D, finishBodyRows2D, gatherFill2D, restitutionColored2D, restitutionRows2D, restitutionTargets2D,
+} from '../collision/solver-stages-kernel.js';
 
 export type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
@@ -313,11 +315,13 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
  * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
  * (contact-colors-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
- * (solver-stages-kernel.ts: bodies, boundary, deepest row). A kernel's hot loops live here when the
+ * (solver-stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
+ * a pass's block). A kernel's hot loops live here when the
  * kernel runs once a step: V8 then compiles the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
+  restitutionTargets2D, restitutionRows2D,
 ]);
 
 export const KERNELS: readonly Kernel[] = Object.freeze([
