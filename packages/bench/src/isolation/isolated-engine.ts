@@ -135,16 +135,20 @@ export class IsolatedInstance implements EngineInstance {
     return this.call({ op: 'run', steps, timed }) as RunReply;
   }
 
+  /** The engine's beginTiming, in its thread (after a full collection there). */
   beginTiming(steps: number): void {
     this.call({ op: 'beginTiming', steps });
   }
 
+  /** The engine's endTiming, in its thread. */
   endTiming(): void {
     this.call({ op: 'endTiming' });
   }
 
+  /** V8 heap in use in the engine's isolate at the last `stats`, MB. */
   private lastHeapMB = 0;
 
+  /** The engine's counters, read in its thread (also records its isolate's heap for `heapUsedMB`). */
   stats(): EngineStats {
     const reply = this.call({ op: 'stats' }) as StatsReply;
     this.lastHeapMB = reply.heapUsedMB;
@@ -156,10 +160,12 @@ export class IsolatedInstance implements EngineInstance {
     return this.lastHeapMB;
   }
 
+  /** The engine's snapshot, copied from its thread. */
   snapshot(): BodySnapshot {
     return this.call({ op: 'snapshot' }) as BodySnapshot;
   }
 
+  /** Disposes the engine in its thread, then ends the thread. Idempotent. */
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
@@ -171,6 +177,7 @@ export class IsolatedInstance implements EngineInstance {
     }
   }
 
+  /** A synchronous request to the engine's thread. @throws Error once disposed; the request's own error. */
   private call(req: EngineRequest): unknown {
     if (this.disposed && req.op !== 'dispose') throw new Error(`${this.engine}: the instance was disposed`);
     return request(this.engine, this.port, this.flag, req);
