@@ -127,20 +127,18 @@ export async function runBenchmark(
   let gcForced = false;
   try {
     for (const a of adapters) {
-      // Twice: the first collection can leave garbage that only a second one frees (weak references).
-      gcForced = collectGarbage() && collectGarbage();
-      const m0 = sampleMemory();
-      const t0 = performance.now();
+      let built: MeasuredBuild;
       try {
-        instances.push(await a.create(options));
+        built = await buildMeasured(() => a.create(options));
       } catch (error) {
         throw new SceneBuildError(a.name, options, error);
       }
-      const inst = instances[instances.length - 1]!;
-      setupMs.push(inst.setupMs ?? performance.now() - t0);
-      collectGarbage();
-      collectGarbage();
-      memoryMB.push(inst.engineMemoryMB ?? engineMemoryMB(m0, sampleMemory(), inst.benchBytes));
+      const inst = built.instance;
+      gcForced = built.gcForced;
+      instances.push(inst);
+      // An engine in a thread of its own measured its build there.
+      setupMs.push(inst.setupMs ?? built.setupMs);
+      memoryMB.push(inst.engineMemoryMB ?? built.engineMemoryMB);
     }
     const total = (timing.steps + timing.warmup) * instances.length;
     let done = 0;
@@ -192,6 +190,59 @@ export async function runBenchmark(
 }
 
 /**
+ * Steps `inst` `steps` times. With `out` (a timed block), writes each step's milliseconds into
+ * out[offset + s], calls `afterStep` after each outside the timed interval, and returns the process CPU
+ * time of the block less the hooks', ms; untimed, returns 0. Used by the runner, and by a peer's own
+ * thread (isolation/engine-thread.ts) for its blocks.
+ */
+export function runBlock(inst: Pick<EngineInstance, 'step' | 'afterStep'>, steps: number, out: Float64Array | null, offset: number): number {
+  if (out === null) {
+    for (let s = 0; s < steps; s++) inst.step();
+    return 0;
+  }
+  const c0 = cpuMs();
+  let hooks = 0;
+  for (let s = 0; s < steps; s++) {
+    const t0 = performance.now();
+    inst.step();
+    out[offset + s] = performance.now() - t0;
+    if (inst.afterStep) {
+      const a0 = cpuMs();
+      inst.afterStep();
+      hooks += cpuMs() - a0;
+    }
+  }
+  return cpuMs() - c0 - hooks;
+}
+
+/** An instance built with its build time and memory measured (`buildMeasured`). */
+export interface MeasuredBuild {
+  readonly instance: EngineInstance;
+  /** Time `create` took, ms. */
+  readonly setupMs: number;
+  /** The instance's memory, MB (`engineMemoryMB`). */
+  readonly engineMemoryMB: number;
+  /** Whether full garbage collections could be forced around the build (the memory figure is then exact). */
+  readonly gcForced: boolean;
+}
+
+/**
+ * Builds an instance with `create`, between full garbage collections (twice each: the first can leave
+ * garbage only a second frees, weak references), timing the build and measuring the memory it kept.
+ * Used by the runner, and by a peer's own thread for its isolate. @throws whatever `create` throws.
+ */
+export async function buildMeasured(create: () => Promise<EngineInstance>): Promise<MeasuredBuild> {
+  const gcForced = collectGarbage() && collectGarbage();
+  const m0 = sampleMemory();
+  const t0 = performance.now();
+  const instance = await create();
+  const setupMs = performance.now() - t0;
+  collectGarbage();
+  collectGarbage();
+  return { instance, setupMs, engineMemoryMB: engineMemoryMB(m0, sampleMemory(), instance.benchBytes), gcForced };
+}
+
+/**
  * Steps every instance `steps` times, alternating in blocks of `block` steps with the engine order
  * rotating every round; records each step's milliseconds into `times[engine][step]` when given, and
  * then (outside the timed interval) calls the instance's `afterStep` hook. An instance with `runSteps`
@@ -214,22 +265,9 @@ export function runInterleaved(
         const r = inst.runSteps(k, out !== null);
         if (out && r.times) out.set(r.times, start);
         if (cpu) cpu[idx] = cpu[idx]! + r.cpuMs;
-      } else if (out) {
-        const c0 = cpu ? cpuMs() : 0;
-        let hooks = 0;
-        for (let s = 0; s < k; s++) {
-          const t0 = performance.now();
-          inst.step();
-          out[start + s] = performance.now() - t0;
-          if (inst.afterStep) {
-            const a0 = cpu ? cpuMs() : 0;
-            inst.afterStep();
-            if (cpu) hooks += cpuMs() - a0;
-          }
-        }
-        if (cpu) cpu[idx] = cpu[idx]! + cpuMs() - c0 - hooks;
       } else {
-        for (let s = 0; s < k; s++) inst.step();
+        const used = runBlock(inst, k, out, start);
+        if (cpu) cpu[idx] = cpu[idx]! + used;
       }
       progress?.(k);
     }

@@ -3,21 +3,15 @@
  * times blocks of steps, and answers the bench thread's requests, raising the shared flag after each
  * reply. Built to packages/bench/dist/engine-thread.js beside the CLI.
  */
-import { performance } from 'node:perf_hooks';
 import { workerData } from 'node:worker_threads';
 import { ENGINES } from '../engines/index.js';
 import type { EngineInstance } from '../engines/types.js';
-import { collectGarbage, engineMemoryMB, sampleMemory } from '../memory.js';
+import { collectGarbage, sampleMemory } from '../memory.js';
+import { buildMeasured, runBlock } from '../runner.js';
 import { Flag, type CreatedReply, type EngineReply, type EngineRequest, type EngineThreadData, type RunReply, type StatsReply } from './isolated-engine.js';
 
 const { engine, port, flag } = workerData as EngineThreadData;
 let instance: EngineInstance | undefined;
-
-/** CPU time the process has used so far (user + system, all threads), ms. */
-function cpuMs(): number {
-  const u = process.cpuUsage();
-  return (u.user + u.system) / 1000;
-}
 
 /** The built instance. @throws Error before `create`. */
 function built(): EngineInstance {
@@ -32,35 +26,14 @@ async function handle(req: EngineRequest): Promise<unknown> {
       const adapter = ENGINES[engine];
       if (adapter === undefined) throw new Error(`no engine named "${engine}"`);
       await adapter.prepare?.();
-      // Twice: the first collection can leave garbage that only a second one frees (as the runner does).
-      collectGarbage(); collectGarbage();
-      const m0 = sampleMemory();
-      const t0 = performance.now();
-      instance = await adapter.create(req.options);
-      const setupMs = performance.now() - t0;
-      collectGarbage(); collectGarbage();
-      const reply: CreatedReply = {
-        engine: instance.engine, notes: instance.notes, setupMs,
-        engineMemoryMB: engineMemoryMB(m0, sampleMemory(), instance.benchBytes),
-      };
+      const measured = await buildMeasured(() => adapter.create(req.options));
+      instance = measured.instance;
+      const reply: CreatedReply = { engine: instance.engine, notes: instance.notes, setupMs: measured.setupMs, engineMemoryMB: measured.engineMemoryMB };
       return reply;
     }
     case 'run': {
-      const inst = built(), n = req.steps;
-      const times = req.timed ? new Float64Array(n) : null;
-      const c0 = cpuMs();
-      let hooks = 0;
-      for (let s = 0; s < n; s++) {
-        const t0 = performance.now();
-        inst.step();
-        if (times) times[s] = performance.now() - t0;
-        if (times && inst.afterStep) {
-          const a0 = cpuMs();
-          inst.afterStep();
-          hooks += cpuMs() - a0;
-        }
-      }
-      const reply: RunReply = { times, cpuMs: cpuMs() - c0 - hooks };
+      const times = req.timed ? new Float64Array(req.steps) : null;
+      const reply: RunReply = { times, cpuMs: runBlock(built(), req.steps, times, 0) };
       return reply;
     }
     case 'beginTiming':

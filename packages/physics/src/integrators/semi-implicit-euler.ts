@@ -156,25 +156,6 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
 }
 
 /**
- * The fused pass of a 2D semi-implicit Euler substep (integrators/fused-gate.ts): for each forced body,
- * its force as the cleared accumulator and the built-in laws would leave it (0 for a body without drag;
- * 0 - k v for linear drag and 0 - k |v| v for quadratic drag, or 0 and the stiff stamp where the law is
- * stiff, exactly as `linearDragSystem` and `quadraticDragSystem` decide; the z component as they write
- * it), stored in `Force`, then the forced-body update of `semiImplicitEuler` with it. The same
- * operations in the same order per body as the separate stages, so the same bits.
- * @throws NonFiniteStateError naming a force (field 'Force.x' or 'Force.y', stage 'forces') if one
- *   is NaN or infinite, else a velocity or position (stage 'integrate'). Each body's force is tested
- *   before the body is written (one branch a body), so the body with a non-finite force keeps its
- *   position, velocity and PreviousPosition from before the substep (its `Force` holds the non-finite
- *   value, as the forces stage leaves it), and so do the bodies after it in the pass. The bodies
- *   before it were moved with finite forces and stay moved: every forced body without drag (that list
- *   runs first), then those of its own list (quadratic drag, then linear) that precede it. The separate
- *   stages would have moved none (the forces stage throws before the integrator runs); moving them
- *   back would not be exact ((v + a h) - a h need not be v), so they are left, as pipeline/finite.ts
- *   and fused-gate.ts state. A non-finite velocity or position (stage 'integrate') is found by the running sum after
- *   its list has been moved, as in the separate integrator.
- */
-/**
  * fusedForced2's pass over the bodies without drag (force 0, exact free fall); returns the running
  * finiteness sum of their new velocities and positions. A loop of its own, with nothing after it but
  * the return: the pass runs once a step, V8 compiles a long loop on the stack (OSR) during its first
@@ -204,6 +185,25 @@ function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): nu
   return check;
 }
 
+/**
+ * The fused pass of a 2D semi-implicit Euler substep (integrators/fused-gate.ts): for each forced body,
+ * its force as the cleared accumulator and the built-in laws would leave it (0 for a body without drag;
+ * 0 - k v for linear drag and 0 - k |v| v for quadratic drag, or 0 and the stiff stamp where the law is
+ * stiff, exactly as `linearDragSystem` and `quadraticDragSystem` decide; the z component as they write
+ * it), stored in `Force`, then the forced-body update of `semiImplicitEuler` with it. The same
+ * operations in the same order per body as the separate stages, so the same bits.
+ * @throws NonFiniteStateError naming a force (field 'Force.x' or 'Force.y', stage 'forces') if one
+ *   is NaN or infinite, else a velocity or position (stage 'integrate'). Each body's force is tested
+ *   before the body is written (one branch a body), so the body with a non-finite force keeps its
+ *   position, velocity and PreviousPosition from before the substep (its `Force` holds the non-finite
+ *   value, as the forces stage leaves it), and so do the bodies after it in the pass. The bodies
+ *   before it were moved with finite forces and stay moved: every forced body without drag (that list
+ *   runs first), then those of its own list (quadratic drag, then linear) that precede it. The separate
+ *   stages would have moved none (the forces stage throws before the integrator runs); moving them
+ *   back would not be exact ((v + a h) - a h need not be v), so they are left, as pipeline/finite.ts
+ *   and fused-gate.ts state. A non-finite velocity or position (stage 'integrate') is found by the running sum after
+ *   its list has been moved, as in the separate integrator.
+ */
 function fusedForced2(world: PhysicsWorld, h: number): void {
   const c = world.components;
   const px = c.Position.x, py = c.Position.y;

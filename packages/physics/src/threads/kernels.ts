@@ -310,20 +310,20 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
   return ids === null ? sum : sum;
 }
 
-/** Every kernel, indexed by `KERNEL`. */
 /**
  * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
  * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
  * (contact-colors-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
  * (solver-stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
- * a pass's block). A kernel's hot loops live here when the
- * kernel runs once a step: V8 then compiles the loops as whole functions with full type feedback.
+ * a pass's block). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
+ * the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
   restitutionTargets2D, restitutionRows2D,
 ]);
 
+/** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
   treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors, solveColored2D, prepareContacts2D,
