@@ -15,6 +15,7 @@ import { KERNEL_HELPERS, KERNELS, type KernelArray } from './kernels.js';
 import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
 import { workerSource } from './worker-source.js';
 import { LoopChooser } from './adaptive.js';
+import { epochMs, RangeBalance } from './balance.js';
 
 /** The least a worker must offer: Node's Worker and the browser's Worker both do. */
 interface AnyWorker {
@@ -108,6 +109,10 @@ export class ThreadPool {
   private readonly ctl: Int32Array;
   private readonly params: Float64Array;
   private readonly results: Float64Array;
+  /** When each worker finished its range of the last run, ms since the epoch (slot 0 unused). */
+  private readonly finished: Float64Array;
+  /** The threads' learnt shares of each kernel's loop (balance.ts). */
+  readonly balance: RangeBalance;
   private readonly errorText: Uint16Array;
   private readonly ids = new Map<ArrayBufferView, number>();
   private readonly blocking: boolean;
@@ -125,6 +130,8 @@ export class ThreadPool {
     this.ctl = new Int32Array(new SharedArrayBuffer(CONTROL.LENGTH * 4));
     this.params = sharedFloat64(MAX_PARAMS);
     this.results = sharedFloat64(threads);
+    this.finished = sharedFloat64(threads);
+    this.balance = new RangeBalance(threads);
     this.errorText = new Uint16Array(new SharedArrayBuffer(ERROR_TEXT * 2));
     this.idBuffer = new Int32Array(new SharedArrayBuffer(4));
     this.blocking = canBlock();
@@ -140,7 +147,7 @@ export class ThreadPool {
       };
       if (typeof w.on === 'function') w.on('error', died);
       else w.onerror = died;
-      const msg: PoolMessage = { type: 'init', index: i, ctl: this.ctl, params: this.params, results: this.results, errorText: this.errorText };
+      const msg: PoolMessage = { type: 'init', index: i, ctl: this.ctl, params: this.params, results: this.results, finished: this.finished, errorText: this.errorText };
       w.postMessage(msg);
       this.workers.push(w);
     }
@@ -195,7 +202,8 @@ export class ThreadPool {
   }
 
   /**
-   * Runs kernel `kernel` (kernels.ts) over [0, n) split into `threads` contiguous ranges, with
+   * Runs kernel `kernel` (kernels.ts) over [0, n) split into `threads` contiguous ranges (in
+   * proportion to how fast each thread has run this kernel: balance.ts), with
    * `arrays` (each on a SharedArrayBuffer) and the scalar `params`; `ids` (null: dense ids lo+1..hi)
    * is copied to a shared buffer. Returns the sum of the ranges' return values, in thread order.
    * @throws Error naming `system` if a worker's range threw (the message is the worker's).
@@ -220,15 +228,19 @@ export class ThreadPool {
     ctl[CONTROL.COUNT] = n;
     ctl[CONTROL.THREADS] = this.threads;
     ctl[CONTROL.ERROR] = 0;
+    this.balance.bounds(kernel, n, ctl, CONTROL.BOUNDS);
+    const t0 = epochMs();
     this.dispatch(COMMAND.RUN);
     this.runs++;
     const t = this.threads;
-    let own: number;
+    let own: number, t1 = t0;
     try {
-      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, Math.floor(n / t), 0, KERNEL_HELPERS);
+      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
+      t1 = epochMs();
     } finally {
       this.await();
     }
+    this.balance.record(kernel, n, t0, t1, this.finished);
     if (ctl[CONTROL.ERROR] !== 0) {
       const text = this.errorText;
       let msg = '';

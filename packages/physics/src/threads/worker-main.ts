@@ -5,8 +5,10 @@
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
  * - the worker waits (Atomics.wait) for `GEN` to change; then reads `CMD`;
  * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of
- *   [0, `COUNT`) (thread `index` of `THREADS`, passed to the kernel as `part`; the main thread is thread 0), stores its kernel's
- *   return value in `results[index]` and decrements `PENDING` (notifying at 0);
+ *   [0, `COUNT`), from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index` of `THREADS`, passed to
+ *   the kernel as `part`; the main thread is thread 0), stores its kernel's return value in
+ *   `results[index]` and when it finished in `finished[index]` (ms since the epoch,
+ *   performance.timeOrigin + now(): one clock across threads), and decrements `PENDING` (notifying at 0);
  * - SYNC: new shared arrays were posted as messages; the worker returns to its event loop to receive
  *   them, and reports done once it holds `EXPECT` arrays;
  * - QUIT: it leaves the loop (the pool then terminates it).
@@ -19,8 +21,10 @@ export const CONTROL = Object.freeze({
   GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, COUNT: 7, THREADS: 8, IDS: 9, NARRAYS: 10, ARRAYS: 11,
   /** Most arrays a kernel takes. */
   MAX_ARRAYS: 48,
-  /** Length of the control array. */
-  LENGTH: 59,
+  /** First slot of the ranges' bounds: thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
+  BOUNDS: 59,
+  /** Length of the control array (the bounds of up to 64 threads). */
+  LENGTH: 59 + 65,
 });
 
 /** Commands in `CONTROL.CMD`. */
@@ -33,7 +37,7 @@ export interface WorkerPort {
 
 /** Message a pool posts to its workers. */
 export type PoolMessage =
-  | { type: 'init'; index: number; ctl: Int32Array; params: Float64Array; results: Float64Array; errorText: Uint16Array }
+  | { type: 'init'; index: number; ctl: Int32Array; params: Float64Array; results: Float64Array; finished: Float64Array; errorText: Uint16Array }
   | { type: 'array'; id: number; array: ArrayBufferView };
 
 /**
@@ -47,9 +51,10 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11;
+  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59;
   var RUN = 0, SYNC = 1, QUIT = 2;
-  var arrays = [], have = 0, ctl = null, params = null, results = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
+  var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
+  var clock = globalThis.performance;
   function finish() {
     if (Atomics.sub(ctl, PENDING, 1) === 1) Atomics.notify(ctl, PENDING);
   }
@@ -80,9 +85,9 @@ function workerMain(kernels, helpers, nodePort) {
         for (var i = 0; i < na; i++) args[i] = arrays[ctl[ARRAYS + i]];
         var idsId = ctl[IDS];
         var ids = idsId < 0 ? null : arrays[idsId];
-        var n = ctl[COUNT], t = ctl[THREADS];
-        var lo = Math.floor((n * index) / t), hi = Math.floor((n * (index + 1)) / t);
+        var lo = ctl[BOUNDS + index], hi = ctl[BOUNDS + index + 1];
         results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index, helpers);
+        finished[index] = clock.timeOrigin + clock.now();
       } catch (e) {
         fail(e);
       }
@@ -91,7 +96,7 @@ function workerMain(kernels, helpers, nodePort) {
   }
   function onMessage(m) {
     if (m.type === 'init') {
-      ctl = m.ctl; params = m.params; results = m.results; errorText = m.errorText; index = m.index;
+      ctl = m.ctl; params = m.params; results = m.results; finished = m.finished; errorText = m.errorText; index = m.index;
       seen = Atomics.load(ctl, GEN);
       Atomics.add(ctl, READY, 1);
       Atomics.notify(ctl, READY);
