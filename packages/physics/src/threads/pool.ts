@@ -35,6 +35,12 @@ interface AnyWorker {
 /** Most scalar parameters a kernel takes. */
 const MAX_PARAMS = 24;
 
+/**
+ * Default microseconds an idle worker watches for the next run before it blocks (ThreadPool.idleSpin).
+ * The loops of a step come a few hundred microseconds apart, with the caller's own work between them.
+ */
+export const IDLE_SPIN_MICROSECONDS = 500;
+
 /** Characters of a worker's error message kept (longer messages are cut). */
 const ERROR_TEXT = 1024;
 
@@ -125,9 +131,24 @@ export class ThreadPool {
   /** Loops this pool has run on its threads (a count for tests and the bench). */
   runs = 0;
 
+  /**
+   * Microseconds an idle worker keeps watching for the next run before it blocks in Atomics.wait
+   * (integer in [0, 1e6]; default `IDLE_SPIN_MICROSECONDS`). A run that starts within it finds the
+   * worker awake; past it the worker sleeps and costs no CPU.
+   * @throws RangeError `ThreadPool.idleSpin: ...` on a value out of range.
+   */
+  get idleSpin(): number {
+    return this.ctl[CONTROL.SPIN]!;
+  }
+  set idleSpin(us: number) {
+    if (!Number.isInteger(us) || us < 0 || us > 1e6) throw new RangeError(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${us}`);
+    this.ctl[CONTROL.SPIN] = us;
+  }
+
   constructor(threads: number, factory: WorkerFactory) {
     this.threads = threads;
     this.ctl = new Int32Array(new SharedArrayBuffer(CONTROL.LENGTH * 4));
+    this.ctl[CONTROL.SPIN] = IDLE_SPIN_MICROSECONDS;
     this.params = sharedFloat64(MAX_PARAMS);
     this.results = sharedFloat64(threads);
     this.finished = sharedFloat64(threads);

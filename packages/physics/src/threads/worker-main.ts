@@ -3,7 +3,8 @@
  * together with the kernels (worker-source.ts).
  *
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
- * - the worker waits (Atomics.wait) for `GEN` to change; then reads `CMD`;
+ * - the worker waits for `GEN` to change: it watches it for `SPIN` microseconds, then blocks in
+ *   Atomics.wait; then it reads `CMD`;
  * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of
  *   [0, `COUNT`), from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index` of `THREADS`, passed to
  *   the kernel as `part`; the main thread is thread 0), stores its kernel's return value in
@@ -23,8 +24,10 @@ export const CONTROL = Object.freeze({
   MAX_ARRAYS: 48,
   /** First slot of the ranges' bounds: thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
   BOUNDS: 59,
-  /** Length of the control array (the bounds of up to 64 threads). */
-  LENGTH: 59 + 65,
+  /** Microseconds an idle worker watches `GEN` before it blocks in Atomics.wait (ThreadPool.idleSpin). */
+  SPIN: 124,
+  /** Length of the control array. */
+  LENGTH: 125,
 });
 
 /** Commands in `CONTROL.CMD`. */
@@ -51,7 +54,7 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59;
+  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124;
   var RUN = 0, SYNC = 1, QUIT = 2;
   var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
   var clock = globalThis.performance;
@@ -65,9 +68,21 @@ function workerMain(kernels, helpers, nodePort) {
     errorText[n] = 0;
     Atomics.store(ctl, ERROR, 1);
   }
+  // Waits for GEN to move past seen: a spin of ctl[SPIN] microseconds first (a run that follows soon
+  // then starts at once, and the caller's notify finds no sleeper to wake), then Atomics.wait.
+  function idle() {
+    var spinMs = ctl[SPIN] / 1000;
+    if (spinMs > 0 && clock !== undefined) {
+      var t0 = clock.now(), k = 0;
+      while (Atomics.load(ctl, GEN) === seen) {
+        if ((++k & 127) === 0 && clock.now() - t0 >= spinMs) break;
+      }
+    }
+    Atomics.wait(ctl, GEN, seen);
+  }
   function loop() {
     for (;;) {
-      Atomics.wait(ctl, GEN, seen);
+      idle();
       var g = Atomics.load(ctl, GEN);
       if (g === seen) continue;
       seen = g;

@@ -1,0 +1,56 @@
+import { afterEach, expect, test } from 'vitest';
+import { addBody, createPhysicsWorld, disposeWorld, setBoundary, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.js';
+
+// An idle worker watches for the next run for `idleSpin` microseconds before it blocks (threads/pool.ts,
+// worker-main.ts). The promises: the spin changes no result (stateHash, every bit), it is bounded (an
+// idle pool stops using CPU), and bad values are refused.
+
+const worlds: PhysicsWorld[] = [];
+afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+
+/** 40,000 balls in a box: enough that the integration and collision loops run on both threads. */
+function balls(spin: number): PhysicsWorld {
+  const world = createPhysicsWorld({ dimensions: 2, capacity: 40_000, gravity: [0, -10], threads: 2 });
+  worlds.push(world);
+  world.threadPool!.adaptive = false;
+  world.threadPool!.idleSpin = spin;
+  setBoundary(world, { min: [0, 0], max: [200, 400] });
+  const rng = new Rng(3);
+  for (let i = 0; i < 40_000; i++) addBody(world, { position: [rng.range(1, 199), rng.range(1, 399)], radius: 0.4, velocity: [rng.range(-2, 2), 0] });
+  return world;
+}
+
+test('the idle spin changes no result: 0, the default and 0.1 s give the same state', () => {
+  const hashes = [0, IDLE_SPIN_MICROSECONDS, 100_000].map((spin) => {
+    const world = balls(spin);
+    stepMany(world, 10);
+    expect(world.threadPool!.runs).toBeGreaterThan(10);
+    return stateHash(world);
+  });
+  expect(hashes[1]).toBe(hashes[0]);
+  expect(hashes[2]).toBe(hashes[0]);
+}, 60_000);
+
+test('an idle pool stops spinning: under 0.1 s of CPU in 0.3 s after a spin of 20 ms', async () => {
+  const world = balls(20_000);
+  stepMany(world, 2);
+  await new Promise((r) => setTimeout(r, 100)); // the spin ends 20 ms after the last run
+  const before = process.cpuUsage();
+  await new Promise((r) => setTimeout(r, 300));
+  const used = process.cpuUsage(before);
+  // A worker spinning throughout would use about 0.3 s (a whole core); the test process alone uses little.
+  expect((used.user + used.system) / 1e6).toBeLessThan(0.1);
+}, 60_000);
+
+test('idleSpin refuses what is not an integer in [0, 1e6] microseconds, and keeps its value', () => {
+  const world = balls(0);
+  const pool = world.threadPool!;
+  for (const bad of [-1, 1.5, 2e6, Number.NaN]) {
+    expect(() => { pool.idleSpin = bad; }).toThrow(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${bad}`);
+  }
+  expect(pool.idleSpin).toBe(0);
+  pool.idleSpin = 250;
+  expect(pool.idleSpin).toBe(250);
+});
