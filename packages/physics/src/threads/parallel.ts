@@ -17,9 +17,12 @@ import type { KernelArray } from './kernels.js';
 /**
  * Fewest entities per thread for a loop to run on several threads. Waking a worker and waiting for
  * it costs some tens of microseconds; the cheapest kernel (free particles) does about 4,000 entities
- * in that time on one core.
+ * in that time on one core. Since the workers spin a while between loops (pool.ts idleSpin) and the
+ * ranges follow each thread's speed (balance.ts), 8,192 a thread pays: balls-in-box at 20,000 balls
+ * on 2 threads, whose integration then splits, ran 2.4 to 7 % faster a step than at 16,384
+ * (alternate steps in one process); an adaptive pool still keeps a loop that does not pay to one thread.
  */
-export const MIN_PARALLEL_PER_THREAD = 16_384;
+export const MIN_PARALLEL_PER_THREAD = 8192;
 
 /**
  * Runs kernel `kernel` over n entities on the world's threads when that pays (see the file's
