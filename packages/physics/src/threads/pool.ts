@@ -261,13 +261,13 @@ export class ThreadPool {
     } finally {
       this.await();
     }
-    this.balance.record(kernel, n, t0, t1, this.finished);
     if (ctl[CONTROL.ERROR] !== 0) {
       const text = this.errorText;
       let msg = '';
       for (let i = 0; i < text.length && text[i] !== 0; i++) msg += String.fromCharCode(text[i]!);
       throw new Error(`${system}: a worker thread failed: ${msg}`);
     }
+    this.balance.record(kernel, n, t0, t1, this.finished);
     let sum = own;
     for (let i = 1; i < t; i++) sum += this.results[i]!;
     return sum;

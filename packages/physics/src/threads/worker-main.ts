@@ -102,7 +102,7 @@ function workerMain(kernels, helpers, nodePort) {
         var ids = idsId < 0 ? null : arrays[idsId];
         var lo = ctl[BOUNDS + index], hi = ctl[BOUNDS + index + 1];
         results[index] = kernels[ctl[KERNEL]](args, params, ids, lo, hi, index, helpers);
-        finished[index] = clock.timeOrigin + clock.now();
+        finished[index] = clock !== undefined ? clock.timeOrigin + clock.now() : Date.now();
       } catch (e) {
         fail(e);
       }
