@@ -1,5 +1,7 @@
 import { afterEach, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, disposeWorld, setBoundary, stateHash, step, stepMany, type PhysicsWorld } from '@bitphysics/physics';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { query } from '../../packages/physics/src/query.js';
 import { Rng } from '../../packages/physics/src/rng.js';
 import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase.js';
 import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase-pairs.js';
@@ -74,3 +76,38 @@ for (const dims of [2, 3] as const) {
     expect(cs.pairCount).toBe(brute);
   }, 60_000);
 }
+
+test('sleeping balls: the cell pass stays on the threads, wakes the same balls in the same order and gives the one-thread state', () => {
+  // A resting lattice of 4,096 balls (256 x 16) on the floor of a box falls asleep (by step ~180); then a
+  // ball thrown in wakes the part of the pile it hits. Threads and one thread step side by side; the
+  // solve of this pile (under 16,384 rows) is in the one-thread order, so the states are equal to the bit.
+  const make = (threads: number): PhysicsWorld => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 5000, gravity: [0, -10], threads });
+    worlds.push(world);
+    if (world.threadPool !== null) world.threadPool.adaptive = false;
+    setBoundary(world, { min: [0, 0], max: [256, 200] });
+    for (let j = 0; j < 16; j++) for (let i = 0; i < 256; i++) addBody(world, { position: [0.5 + i, 0.5 + j], radius: 0.5 });
+    return world;
+  };
+  const one = make(1), two = make(2);
+  const asleep = (w: PhysicsWorld): number => query(w, [w.components.Ball, w.components.Sleeping]).length;
+  const pool = two.threadPool!;
+  let pairRunsAsleep = 0, sleptMost = 0, wokenAfterHit = 0;
+  const run = pool.run.bind(pool);
+  pool.run = (system, kernel, arrays, params, n, ids) => {
+    if (kernel === KERNEL.ballPairs && asleep(two) > 0) pairRunsAsleep++;
+    return run(system, kernel, arrays, params, n, ids);
+  };
+  for (let s = 0; s < 230; s++) {
+    if (s === 200) {
+      sleptMost = asleep(two);
+      for (const w of [one, two]) addBody(w, { position: [100.3, 18], velocity: [3, -20], radius: 0.5 });
+    }
+    step(one); step(two);
+    if (s === 215) wokenAfterHit = sleptMost - asleep(two);
+    if (s % 10 === 0 || s >= 199) expect(stateHash(two), `step ${s}`).toBe(stateHash(one));
+  }
+  expect(sleptMost).toBe(4096); // the lattice was asleep before the hit
+  expect(wokenAfterHit).toBeGreaterThan(0); // and the hit woke some of it
+  expect(pairRunsAsleep).toBeGreaterThan(20); // the cell pass ran on the threads with sleeping balls
+}, 60_000);

@@ -5,14 +5,16 @@
  * to the step's pair list in range order, which is exactly the order one thread finds them in, so
  * the pair list, and everything after it, is identical to the bit to the one-thread broadphase.
  *
- * Only while no ball sleeps: a sleeping ball met by a moving one is woken during the pass, which
- * changes the body types (and positions) the rest of the pass reads, so a world with sleeping balls
- * runs the pass on one thread.
+ * Sleeping balls: the threads read the body types as they were when the pass began and list the
+ * sleeping balls they meet that a moving or kinematic ball wakes; the caller then wakes them in range
+ * order, skipping those already woken. The one-thread loop wakes each as it meets it, but the woken
+ * ball has rested (so it wakes nobody) and is met where it slept (waking leaves its start-of-step
+ * position), so the same balls wake in the same order; a pass that woke any ball is run again in
+ * full either way (broadphase.ts), so the pairs are the one-thread ones too.
  */
 
-import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { PairKind, type CollisionState } from './state.js';
+import { BodyType, PairKind, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
@@ -23,7 +25,7 @@ export { ballPairs } from './broadphase-pairs-kernel.js';
 /** Fewest grid bodies a thread for the cell pass to go parallel. */
 export const PAIRS_MIN_PER_THREAD = 2048;
 
-interface PairBuffers { a: Int32Array[]; b: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array }
+interface PairBuffers { a: Int32Array[]; b: Int32Array[]; w: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array }
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
@@ -36,36 +38,45 @@ function shared<T extends KernelArray>(a: T): T {
 }
 
 /**
- * Runs the cell pass for the `small` grid bodies on the world's threads and appends the pairs to
- * `cs`'s pair list, when the world has threads, no ball sleeps and the grid is large enough; returns
- * false (nothing done) otherwise, and the caller runs its own loop. `mask` is the grid's hash mask
- * (unused by a dense grid, whose origin and spans the kernel reads from `cs.grid`).
+ * Runs the cell pass for the `small` grid bodies on the world's threads, appends the pairs to `cs`'s
+ * pair list and calls `wake(world, cs, e)` for each sleeping ball to wake (in the one-thread order),
+ * when the world has threads and the grid is large enough; returns false (nothing done) otherwise, and
+ * the caller runs its own loop. `mask` is the grid's hash mask (unused by a dense grid, whose origin
+ * and spans the kernel reads from `cs.grid`).
  * @throws Error naming broadphaseSystem if a worker thread failed.
  */
-export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small: number, mask: number): boolean {
+export function parallelBallPairs(
+  world: PhysicsWorld, cs: CollisionState, small: number, mask: number,
+  wake: (world: PhysicsWorld, cs: CollisionState, e: number) => void,
+): boolean {
   const pool = world.threadPool;
   if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > 16) return false;
+  // Sleepers have rested at least timeToSleep: with 0 a sleeper may not have, and then a ball the
+  // one-thread loop wakes may wake others in the same pass (see the file's header).
+  if (!(cs.sleep.timeToSleep > 0)) return false;
   const c = world.components;
-  if (query(world, [c.Ball, c.Sleeping]).length > 0) return false;
   const g = cs.grid;
   // The scratch arrays the pass reads move to shared memory once (and again after they grow).
   g.sorted = shared(g.sorted); g.cellX = shared(g.cellX); g.cellY = shared(g.cellY); g.cellZ = shared(g.cellZ);
   g.bucketStart = shared(g.bucketStart);
-  cs.margin = shared(cs.margin); cs.bodyType = shared(cs.bodyType);
+  cs.margin = shared(cs.margin); cs.bodyType = shared(cs.bodyType); cs.sleep.restTime = shared(cs.sleep.restTime);
   let buf = buffersOf.get(cs);
   const cap = 4 * small + 1024;
   if (buf === undefined || buf.a.length < pool.threads || buf.a[0]!.length < cap) {
     const size = Math.max(cap, 2 * (buf?.a[0]!.length ?? 0));
-    const a: Int32Array[] = [], b: Int32Array[] = [];
-    for (let p = 0; p < pool.threads; p++) { a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size))); }
-    buf = { a, b, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(8) };
+    const a: Int32Array[] = [], b: Int32Array[] = [], w: Int32Array[] = [];
+    for (let p = 0; p < pool.threads; p++) {
+      a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size)));
+      w.push(new Int32Array(new SharedArrayBuffer(4 * size)));
+    }
+    buf = { a, b, w, counts: new Int32Array(new SharedArrayBuffer(4 * 32)), arrays: [], params: new Float64Array(8) };
     buffersOf.set(cs, buf);
   }
   const A = buf.arrays;
   A.length = 0;
   A.push(g.sorted, g.cellX, g.cellY, g.cellZ, g.bucketStart, c.PreviousPosition.x, c.PreviousPosition.y, c.PreviousPosition.z,
-    c.Ball.radius, cs.margin, cs.bodyType, buf.counts);
-  for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!);
+    c.Ball.radius, cs.margin, cs.bodyType, buf.counts, cs.sleep.restTime);
+  for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!, buf.w[p]!);
   const P = buf.params;
   P[0] = mask; P[1] = world.dimensions; P[2] = buf.a[0]!.length;
   P[3] = g.spanX; P[4] = g.spanXZ; P[5] = g.originX; P[6] = g.originY; P[7] = g.originZ;
@@ -74,7 +85,7 @@ export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small
   let total = 0;
   for (let p = 0; p < pool.threads; p++) {
     const k = buf.counts[p]!;
-    if (k < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
+    if (k < 0 || buf.counts[16 + p]! < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
     total += k;
   }
   // Append in range order: the one-thread order.
@@ -95,5 +106,14 @@ export function parallelBallPairs(world: PhysicsWorld, cs: CollisionState, small
     n += k;
   }
   cs.pairCount = n;
+  // Wake in range order, each ball once (the first time it was met, as the one-thread loop does).
+  const type = cs.bodyType;
+  for (let p = 0; p < pool.threads; p++) {
+    const W: Int32Array = buf.w[p]!;
+    for (let j = 0, k = buf.counts[16 + p]!; j < k; j++) {
+      const e = W[j]!;
+      if (type[e] === BodyType.Sleeping) wake(world, cs, e);
+    }
+  }
   return true;
 }

@@ -319,8 +319,8 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const stride = is3D ? 3 : 2;
     const nOffsets = offsets.length / stride;
     for (let k = 0; k < nOffsets; k++) neighbourStep[k] = offsets[k * stride]! - offsets[k * stride + 1]! * sXZ + (is3D ? offsets[k * stride + 2]! * sX : 0);
-    // On the world's threads when it has them and no ball sleeps (broadphase-pairs.ts: the same pairs in the same order).
-    if (!(pass === 0 && parallelBallPairs(world, cs, small, mask))) for (let p = 0; p < small; p++) {
+    // On the world's threads when it has them (broadphase-pairs.ts: the same pairs and wakes in the same order).
+    if (!parallelBallPairs(world, cs, small, mask, wakeForContact)) for (let p = 0; p < small; p++) {
       const e = sorted[p]!;
       const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
       const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
