@@ -25,6 +25,9 @@ export { ballPairs } from './broadphase-pairs-kernel.js';
 /** Fewest grid bodies a thread for the cell pass to go parallel. */
 export const PAIRS_MIN_PER_THREAD = 2048;
 
+/** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at 16 + p their wake counts (the kernel's layout). */
+const MAX_PARTS = 16;
+
 interface PairBuffers { a: Int32Array[]; b: Int32Array[]; w: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array }
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
@@ -50,7 +53,7 @@ export function parallelBallPairs(
   wake: (world: PhysicsWorld, cs: CollisionState, e: number) => void,
 ): boolean {
   const pool = world.threadPool;
-  if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > 16) return false;
+  if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > MAX_PARTS) return false;
   // Sleepers have rested at least timeToSleep: with 0 a sleeper may not have, and then a ball the
   // one-thread loop wakes may wake others in the same pass (see the file's header).
   if (!(cs.sleep.timeToSleep > 0)) return false;
@@ -69,7 +72,7 @@ export function parallelBallPairs(
       a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size)));
       w.push(new Int32Array(new SharedArrayBuffer(4 * size)));
     }
-    buf = { a, b, w, counts: new Int32Array(new SharedArrayBuffer(4 * 32)), arrays: [], params: new Float64Array(8) };
+    buf = { a, b, w, counts: new Int32Array(new SharedArrayBuffer(4 * 2 * MAX_PARTS)), arrays: [], params: new Float64Array(8) };
     buffersOf.set(cs, buf);
   }
   const A = buf.arrays;
@@ -85,7 +88,7 @@ export function parallelBallPairs(
   let total = 0;
   for (let p = 0; p < pool.threads; p++) {
     const k = buf.counts[p]!;
-    if (k < 0 || buf.counts[16 + p]! < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
+    if (k < 0 || buf.counts[MAX_PARTS + p]! < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
     total += k;
   }
   // Append in range order: the one-thread order.
@@ -110,7 +113,7 @@ export function parallelBallPairs(
   const type = cs.bodyType;
   for (let p = 0; p < pool.threads; p++) {
     const W: Int32Array = buf.w[p]!;
-    for (let j = 0, k = buf.counts[16 + p]!; j < k; j++) {
+    for (let j = 0, k = buf.counts[MAX_PARTS + p]!; j < k; j++) {
       const e = W[j]!;
       if (type[e] === BodyType.Sleeping) wake(world, cs, e);
     }

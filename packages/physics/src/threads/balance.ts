@@ -49,10 +49,13 @@ export class RangeBalance {
   private readonly shares: Float64Array;
   /** Whether the shares are held (`hold`), not learnt. */
   private held = false;
+  /** Scratch of `record`: each thread's share per ms in the run. */
+  private readonly speed: Float64Array;
 
   constructor(threads: number) {
     this.threads = threads;
     this.shares = new Float64Array(MAX_KERNELS * threads).fill(1 / threads);
+    this.speed = new Float64Array(threads);
   }
 
   /**
@@ -79,17 +82,17 @@ export class RangeBalance {
   record(kernel: number, n: number, start: number, own: number, finished: Float64Array): void {
     const t = this.threads;
     if (this.held || kernel >= MAX_KERNELS || n < BALANCE_MIN_PER_THREAD * t) return;
-    const sh = this.shares, o = kernel * t;
+    const sh = this.shares, o = kernel * t, speed = this.speed;
     let sum = 0;
     for (let i = 0; i < t; i++) {
       const time = (i === 0 ? own : finished[i]!) - start;
       if (!(time > 0)) return; // a clock without the resolution to tell
-      sum += sh[o + i]! / time; // speed: share per ms
+      speed[i] = sh[o + i]! / time; // share per ms
+      sum += speed[i]!;
     }
     let norm = 0;
     for (let i = 0; i < t; i++) {
-      const time = (i === 0 ? own : finished[i]!) - start;
-      const next = Math.max(MIN_SHARE, sh[o + i]! + RATE * (sh[o + i]! / time / sum - sh[o + i]!));
+      const next = Math.max(MIN_SHARE, sh[o + i]! + RATE * (speed[i]! / sum - sh[o + i]!));
       sh[o + i] = next;
       norm += next;
     }

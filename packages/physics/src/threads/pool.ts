@@ -246,8 +246,6 @@ export class ThreadPool {
     ctl[CONTROL.KERNEL] = kernel;
     ctl[CONTROL.NARRAYS] = arrays.length;
     ctl[CONTROL.IDS] = idsId;
-    ctl[CONTROL.COUNT] = n;
-    ctl[CONTROL.THREADS] = this.threads;
     ctl[CONTROL.ERROR] = 0;
     this.balance.bounds(kernel, n, ctl, CONTROL.BOUNDS);
     const t0 = epochMs();

@@ -5,9 +5,9 @@
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
  * - the worker waits for `GEN` to change: it watches it for `SPIN` microseconds, then blocks in
  *   Atomics.wait; then it reads `CMD`;
- * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of
- *   [0, `COUNT`), from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index` of `THREADS`, passed to
- *   the kernel as `part`; the main thread is thread 0), stores its kernel's return value in
+ * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of the
+ *   loop, from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index`, passed to the kernel as
+ *   `part`; the main thread is thread 0), stores its kernel's return value in
  *   `results[index]` and when it finished in `finished[index]` (ms since the epoch,
  *   performance.timeOrigin + now(): one clock across threads), and decrements `PENDING` (notifying at 0);
  * - SYNC: new shared arrays were posted as messages; the worker returns to its event loop to receive
@@ -19,7 +19,7 @@
 
 /** Slots of the control array shared by a pool and its workers. */
 export const CONTROL = Object.freeze({
-  GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, COUNT: 7, THREADS: 8, IDS: 9, NARRAYS: 10, ARRAYS: 11,
+  GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, IDS: 9, NARRAYS: 10, ARRAYS: 11,
   /** Most arrays a kernel takes. */
   MAX_ARRAYS: 48,
   /** First slot of the ranges' bounds: thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
@@ -54,7 +54,7 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, COUNT = 7, THREADS = 8, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124;
+  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124;
   var RUN = 0, SYNC = 1, QUIT = 2;
   var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
   var clock = globalThis.performance;
