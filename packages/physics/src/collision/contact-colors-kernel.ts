@@ -13,7 +13,7 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * range of plan[7] ranges, each from its own first slot of every group, `offsets`), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
- * the buffer (normal, tangent, largest pass impulse, delivered total, as unpackContacts2D). Threads
+ * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
  * claim blocks in that order from one counter (Atomics.add) and start a unit's block only once every
  * block of the earlier units is done, so a thread the system has not scheduled holds nothing up
  * unless it holds a block (work sharing, as Box2D v3's solver stages), and which thread runs a block
@@ -36,9 +36,10 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner (Uint8),
  * 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j] ..
  * bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32), 26 pair (Int32, two
- * a pack row: its bodies' solver state offsets, the pack's slots 0 and 1 as integers, which the warm
- * start and the passes read: indexing by an integer array was 17 % faster a pass than by the
- * doubles, measured on a captured 47,000-row step). P: 0 1 / h_s, 1-3
+ * a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
+ * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
+ * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
+ * pack row: its row in the contact buffer, read by the unpacking only). P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
  * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
  * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS. The arithmetic
@@ -54,6 +55,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   const np = plan[8]!, fused = plan[9] === 1;
   const wait = part !== 0 || plan[6] === 1;
   const bounds = A[23] as Int32Array, order = A[24] as Int32Array, bodyBounds = A[25] as Int32Array, pair = A[26] as Int32Array;
+  const tot = A[27] as Float64Array;
   const spinMs = P[13]! / 1000;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
@@ -130,7 +132,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
           // adds each row's impulse to what the substep delivered).
           const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
           const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
-          rowPass(pk, sb, pair, P, r0, r1, mode);
+          rowPass(pk, sb, pair, tot, P, r0, r1, mode);
         }
       } catch (e) {
         // Let the other threads out of their waits, then report this one's error.
@@ -169,7 +171,7 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
   const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NX = A[10] as Float64Array, NY = A[11] as Float64Array;
   const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
   const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
-  const RP = A[20] as Uint8Array, pair = A[26] as Int32Array;
+  const RP = A[20] as Uint8Array, pair = A[26] as Int32Array, tot = A[27] as Float64Array, row = A[28] as Int32Array;
   const rows = P[11]!, W = P[12]!;
   const lo = Math.floor((rows * blk) / parts), hi = Math.floor((rows * (blk + 1)) / parts), o0 = blk * W;
   for (let i = lo; i < hi; i++) {
@@ -177,21 +179,22 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     if (c === 255) continue;
     const k = offsets[o0 + c]!;
     offsets[o0 + c] = k + 1;
-    const o = k * 16;
-    pk[o] = IA[i]! * 8; pk[o + 1] = IB[i]! * 8; pk[o + 2] = NX[i]!; pk[o + 3] = NY[i]!;
+    const o = k * 12;
     pair[2 * k] = IA[i]! * 8; pair[2 * k + 1] = IB[i]! * 8;
-    pk[o + 4] = RA[i]!; pk[o + 5] = RB[i]!; pk[o + 6] = S0[i]!; pk[o + 7] = NM[i]!; pk[o + 8] = TM[i]!;
-    pk[o + 9] = FB[i]!; pk[o + 10] = LN[i]!; pk[o + 11] = LT[i]!; pk[o + 12] = RP[i]!; pk[o + 13] = 0;
-    pk[o + 14] = 0; pk[o + 15] = i;
+    pk[o] = NX[i]!; pk[o + 1] = NY[i]!; pk[o + 2] = RA[i]!; pk[o + 3] = RB[i]!; pk[o + 4] = S0[i]!;
+    pk[o + 5] = NM[i]!; pk[o + 6] = TM[i]!; pk[o + 7] = FB[i]!; pk[o + 8] = LN[i]!; pk[o + 9] = LT[i]!;
+    pk[o + 10] = RP[i]!; pk[o + 11] = 0;
+    tot[k] = 0; row[k] = i;
   }
 }
 
 /** Writes pack rows [k0, k1)'s impulses back to the contact buffer (normal, tangent, largest pass impulse, delivered total; A as coloredPack2D, 21 and 22 the last two). */
 export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
   const pk = A[0] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array, MAXN = A[21] as Float64Array, TOT = A[22] as Float64Array;
+  const tot = A[27] as Float64Array, row = A[28] as Int32Array;
   for (let k = k0; k < k1; k++) {
-    const o = k * 16, i = pk[o + 15]!;
-    LN[i] = pk[o + 10]!; LT[i] = pk[o + 11]!; MAXN[i] = pk[o + 13]!; TOT[i] = pk[o + 14]!;
+    const o = k * 12, i = row[k]!;
+    LN[i] = pk[o + 8]!; LT[i] = pk[o + 9]!; MAXN[i] = pk[o + 11]!; TOT[i] = tot[k]!;
   }
 }
 
@@ -224,21 +227,21 @@ export function coloredBodies2D(sb: Float64Array, ex: Float64Array, dyn: Uint8Ar
  * on the substep's last pass (each row's impulse is added to what the substep delivered). P as
  * solveColored2D's.
  */
-export function coloredRows2D(pk: Float64Array, sb: Float64Array, pair: Int32Array, P: Float64Array, r0: number, r1: number, mode: number): void {
+export function coloredRows2D(pk: Float64Array, sb: Float64Array, pair: Int32Array, tot: Float64Array, P: Float64Array, r0: number, r1: number, mode: number): void {
   if (mode === 0) {
     for (let k = r0; k < r1; k++) {
-      const o = k * 16;
-      const ln = pk[o + 10]!, lt = pk[o + 11]!;
+      const o = k * 12;
+      const ln = pk[o + 8]!, lt = pk[o + 9]!;
       if (ln === 0 && lt === 0) continue;
       const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
       sb[a + 7] = 1; sb[bb + 7] = 1;
-      const nx = pk[o + 2]!, ny = pk[o + 3]!;
+      const nx = pk[o]!, ny = pk[o + 1]!;
       const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
       const imA = sb[a + 5]!, imB = sb[bb + 5]!;
       sb[a] = sb[a]! - imA * Px; sb[a + 1] = sb[a + 1]! - imA * Py;
       sb[bb] = sb[bb]! + imB * Px; sb[bb + 1] = sb[bb + 1]! + imB * Py;
-      sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 4]! * lt;
-      sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 5]! * lt;
+      sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 2]! * lt;
+      sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 3]! * lt;
     }
     return;
   }
@@ -246,51 +249,51 @@ export function coloredRows2D(pk: Float64Array, sb: Float64Array, pair: Int32Arr
   const downX = P[14]!, downY = P[15]!, supportCos = P[16]!;
   const useBias = (mode & 2) !== 0, total = (mode & 4) !== 0;
   for (let k = r0; k < r1; k++) {
-    const o = k * 16;
+    const o = k * 12;
     const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
-    const nx = pk[o + 2]!, ny = pk[o + 3]!;
+    const nx = pk[o]!, ny = pk[o + 1]!;
     const imA = sb[a + 5]!, imB = sb[bb + 5]!;
     let vax = sb[a]!, vay = sb[a + 1]!, vbx = sb[bb]!, vby = sb[bb + 1]!;
     // The normal impulse's inverse masses and effective mass: a frictionless support row of
     // a relax pass may hold its lower ball (support.ts's holdsLower: lower speed <= upper).
-    let jmA = imA, jmB = imB, nm = pk[o + 7]!;
-    if (!useBias && pk[o + 9] === 0 && imA > 0 && imB > 0 && nm > 0) {
+    let jmA = imA, jmB = imB, nm = pk[o + 5]!;
+    if (!useBias && pk[o + 7] === 0 && imA > 0 && imB > 0 && nm > 0) {
       const up = -(downX * nx + downY * ny);
       if (up > supportCos || up < -supportCos) {
         const va = Math.abs(vax * nx + vay * ny), vb = Math.abs(vbx * nx + vby * ny);
         if (up > 0 ? va <= vb : vb <= va) { if (up > 0) jmA = 0; else jmB = 0; nm = 1 / (jmA + jmB); }
       }
     }
-    const sep = pk[o + 6]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
+    const sep = pk[o + 4]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
     let bias = 0, massScale = 1, impulseScale = 0;
     if (sep > 0) {
       bias = sep * invH;
     } else if (useBias) {
-      if (pk[o + 12] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
+      if (pk[o + 10] === 1) { bias = rBias * sep; massScale = rMass; impulseScale = rImp; }
       else { bias = dBias * sep; massScale = dMass; impulseScale = dImp; }
       if (bias < -push) bias = -push;
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny;
-    const oldN = pk[o + 10]!;
+    const oldN = pk[o + 8]!;
     let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
     lambda = newN - oldN;
-    pk[o + 10] = newN;
-    if (lambda > pk[o + 13]!) pk[o + 13] = lambda;
-    if (total) pk[o + 14] = pk[o + 14]! + newN;
+    pk[o + 8] = newN;
+    if (lambda > pk[o + 11]!) pk[o + 11] = lambda;
+    if (total) tot[k] = tot[k]! + newN;
     let Px = lambda * nx, Py = lambda * ny;
     vax -= jmA * Px; vay -= jmA * Py; vbx += jmB * Px; vby += jmB * Py;
-    const ra = pk[o + 4]!, rb = pk[o + 5]!;
+    const ra = pk[o + 2]!, rb = pk[o + 3]!;
     let wa = sb[a + 2]!, wb = sb[bb + 2]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
-    lambda = -pk[o + 8]! * vt;
-    const maxF = pk[o + 9]! * newN;
-    const oldT = pk[o + 11]!;
+    lambda = -pk[o + 6]! * vt;
+    const maxF = pk[o + 7]! * newN;
+    const oldT = pk[o + 9]!;
     let newT = oldT + lambda;
     newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
     lambda = newT - oldT;
-    pk[o + 11] = newT;
+    pk[o + 9] = newT;
     Px = -lambda * ny; Py = lambda * nx;
     vax -= imA * Px; vay -= imA * Py; vbx += imB * Px; vby += imB * Py;
     wa -= sb[a + 6]! * ra * lambda; wb -= sb[bb + 6]! * rb * lambda;

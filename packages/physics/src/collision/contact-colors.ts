@@ -91,6 +91,8 @@ interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
   /** Each pack row's two bodies' solver state offsets (shared; the kernel's integer copy of the pack's slots 0 and 1). */
   pair: Int32Array;
+  /** Each pack row's normal impulse delivered over the substeps, and its row in the contact buffer (shared). */
+  tot: Float64Array; row: Int32Array;
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
   /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
   offsets: Int32Array;
@@ -113,6 +115,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   if (s === undefined) {
     s = {
       pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), pair: new Int32Array(new SharedArrayBuffer(4 * 2 * 1024)),
+      tot: new Float64Array(new SharedArrayBuffer(8 * 1024)), row: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
       params: new Float64Array(24), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
@@ -127,6 +130,8 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   }
   if (s.pack.length < rows * PACK_STRIDE) s.pack = sharedLike(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
   if (s.pair.length < 2 * rows) s.pair = sharedLike(s.pair, Math.max(2 * rows, 2 * s.pair.length));
+  if (s.tot.length < rows) s.tot = sharedLike(s.tot, Math.max(rows, 2 * s.tot.length));
+  if (s.row.length < rows) s.row = sharedLike(s.row, Math.max(rows, 2 * s.row.length));
   if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
   const blocks = Math.ceil(rows / BLOCK_ROWS) + MAX_COLORS + 2;
   if (s.bounds.length < blocks) s.bounds = sharedLike(s.bounds, Math.max(blocks, 2 * s.bounds.length));
@@ -395,13 +400,13 @@ export function lastColorCount(cs: CollisionState): number {
 export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number; strips: boolean } {
   const s = scratchOf.get(cs);
   if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
-  const plan = s.plan, C = plan[4]!, pk = s.pack, sb = cs.bodyState, bounds = s.bounds;
+  const plan = s.plan, C = plan[4]!, pair = s.pair, sb = cs.bodyState, bounds = s.bounds;
   const seen = new Map<number, number>();
   let conflicts = 0;
   for (let c = 0; c < C; c++) {
     for (let j = plan[PLAN_HEAD + c]!; j < plan[PLAN_HEAD + c + 1]!; j++) {
       for (let k = bounds[j]!; k < bounds[j + 1]!; k++) {
-        for (const off of [pk[k * PACK_STRIDE]!, pk[k * PACK_STRIDE + 1]!]) {
+        for (const off of [pair[2 * k]!, pair[2 * k + 1]!]) {
           if (!(sb[off + 5]! > 0 || sb[off + 6]! > 0)) continue;
           const key = c * 1e9 + off, was = seen.get(key);
           if (was !== undefined && was !== j) conflicts++;
@@ -451,7 +456,7 @@ export function solveColoredSubsteps(
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
     buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
     buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
-    s.bounds, s.bodyOrder, s.bodyBounds, s.pair);
+    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row);
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
@@ -475,6 +480,10 @@ export interface ColoredPlan {
   plan: Int32Array;
   /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
   bounds: Int32Array;
+  /** Each pack row's two bodies' solver state offsets (two a row), shared. */
+  pair: Int32Array;
+  /** Each pack row's row in the contact buffer, shared. */
+  row: Int32Array;
   /** The barrier's four Int32 slots, shared (slot 3 free for the restitution stage's count). */
   bar: Int32Array;
 }

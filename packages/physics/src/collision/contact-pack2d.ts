@@ -5,27 +5,16 @@
  * that can do nothing (no mass to move, no impulse to warm start: the impact stage took them out) are
  * left out. The one-thread solve keeps the contact buffer's own arrays: packing them for it measured
  * no faster (20,000 balls, 8 passes over 52,000 rows: 115 ms packed vs 113 ms not, load 16).
+ *
+ * A row holds only what the passes read or write. Its two bodies' solver state offsets live beside
+ * the pack in an Int32 array (`pair`, two a row), and the impulse delivered over the substeps and the
+ * row's place in the contact buffer in arrays of their own (`tot`, `row`): the passes stream the pack
+ * once a colour, and every number a row carries costs memory traffic on every pass (contact-colors-kernel.ts).
  */
-
-import type { ContactBuffer } from './contacts.js';
 
 /**
- * Numbers a packed row: 0 body A's offset in the solver state (solver index x 8), 1 body B's,
- * 2 nx, 3 ny, 4 ra, 5 rb (m), 6 start separation (m), 7 normal mass, 8 tangent mass (kg), 9 friction
- * bound, 10 normal impulse, 11 tangent impulse (N s), 12 1 if A has infinite mass, 13 largest normal
- * impulse of a solve pass (N s), 14 normal impulse delivered over the substeps (N s), 15 the row in
- * the contact buffer.
+ * Numbers a packed row: 0 nx, 1 ny, 2 ra, 3 rb (m), 4 start separation (m), 5 normal mass,
+ * 6 tangent mass (kg), 7 friction bound, 8 normal impulse, 9 tangent impulse (N s), 10 1 if A has
+ * infinite mass, 11 largest normal impulse of a solve pass (N s).
  */
-export const PACK_STRIDE = 16;
-
-/**
- * Writes the packed rows' impulses back to `buf`: normal and tangent impulse, the largest normal
- * impulse of a pass, and the substeps' delivered normal impulse (into totalNormalImpulse).
- */
-export function unpackContacts2D(buf: ContactBuffer, pack: Float64Array, count: number): void {
-  const LN = buf.normalImpulse, LT = buf.tangentImpulse1, MAXN = buf.maxNormalImpulse, TOT = buf.totalNormalImpulse;
-  for (let k = 0; k < count; k++) {
-    const o = k * PACK_STRIDE, i = pack[o + 15]!;
-    LN[i] = pack[o + 10]!; LT[i] = pack[o + 11]!; MAXN[i] = pack[o + 13]!; TOT[i] = pack[o + 14]!;
-  }
-}
+export const PACK_STRIDE = 12;

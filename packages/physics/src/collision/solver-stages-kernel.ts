@@ -185,7 +185,8 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * claimed, 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
  * 6 nx, 7 ny, 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12
  * maxNormalImpulse, 13 totalNormalImpulse, 14 impulse, 15 bounds (Int32: block j is pack rows
- * bounds[j] .. bounds[j + 1] - 1). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
+ * bounds[j] .. bounds[j + 1] - 1), 16 pair (Int32, two a pack row: its bodies' solver state
+ * offsets), 17 row (Int32, a pack row: its row in the contact buffer). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
  * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
  * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
  * this one stopped).
@@ -277,16 +278,17 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
 export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
   const pk = A[0] as Float64Array, sb = A[3] as Float64Array, RV = A[10] as Float64Array;
   const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
+  const pair = A[16] as Int32Array, row = A[17] as Int32Array;
   for (let k = r0; k < r1; k++) {
-    const o = k * 16;
-    const i = pk[o + 15]!;
+    const o = k * 12;
+    const i = row[k]!;
     const target = RV[i]!;
     if (target < 0) continue;
-    const a = pk[o]!, bb = pk[o + 1]!;
-    const nx = pk[o + 2]!, ny = pk[o + 3]!;
+    const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
+    const nx = pk[o]!, ny = pk[o + 1]!;
     const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
     const old = MAXN[i]!;
-    let acc = old - pk[o + 7]! * (vn - target);
+    let acc = old - pk[o + 5]! * (vn - target);
     if (acc < 0) acc = 0;
     if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
     const dl = acc - old;

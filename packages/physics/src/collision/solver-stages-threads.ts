@@ -212,7 +212,8 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;
   A.push(colored.pack, colored.plan, colored.bar, cs.bodyState, buf.ia, buf.ib, buf.nx, buf.ny, buf.normalMass, buf.restitution,
-    buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse, colored.bounds);
+    buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse, colored.bounds,
+    colored.pair, colored.row);
   P[0] = buf.count; P[1] = st.restitutionThreshold; P[2] = st.elasticRestitutionThreshold; P[3] = st.restitutionIterations;
   P[4] = callerMayWait() ? 1 : 0; P[5] = SPIN_MICROSECONDS;
   const bar = colored.bar, plan = colored.plan;
