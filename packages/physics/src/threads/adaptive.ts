@@ -1,16 +1,24 @@
 /**
  * Chooses, loop by loop, between running a parallel loop on the pool's threads and running the same
- * kernel on the calling thread alone, by the time each took (per element, smoothed). A loop that the
+ * kernel on the calling thread alone, by the time each took (per element). A loop that the
  * threads do not speed up (too short to pay for waking the workers, or a machine whose other cores
  * are busy) so falls back to one thread by itself, and probes the threads again now and then. Both
  * ways run the same kernel on the same data, so the choice never changes a result, only the time.
  *
  * Policy per loop (a `site`): the first three calls run parallel (the first is not timed: it may pay
  * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
- * average (which follows a faster time at once and a slower one by ALPHA, so other processes'
- * delays weigh little), except every probePeriod-th call, which runs the other way to keep its
- * average current (a machine that got quieter or busier is noticed within a few probes): often
- * while the loop is young and the two ways are close, rarely once one way is clearly faster.
+ * estimate, except every probePeriod-th call, which runs the other way to keep its estimate current
+ * (a machine that got quieter or busier is noticed within a few probes): often while the loop is
+ * young and the two ways are close, rarely once one way is clearly faster.
+ *
+ * A way's estimate is the least of its last WINDOW times. On a shared machine a delay is another
+ * process's, or a worker the system did not schedule, or a garbage collection: it says nothing of
+ * what the way costs, and one delayed call must not switch a loop. It takes WINDOW slow calls in a row
+ * to raise the estimate, so a loop whose work grows (a pile forming) is followed within WINDOW calls.
+ * The average this replaced (a faster time taken at once, a slower one weighted 0.3) let one delayed
+ * call switch a loop to the other way until the next probe, up to PROBE_EVERY calls: balls-in-box's
+ * cell pass (20,000 balls, 2 threads) ran 92 of 181 steps on one thread at 4.8 ms a call against 2.6
+ * ms on the threads, after delays of 5 to 40 ms in single calls of the threads.
  */
 
 /** Calls between two runs of the way not currently preferred. */
@@ -39,16 +47,21 @@ export function probePeriod(c: number, a: number, b: number): number {
   return clear ? CLEAR_PROBE_EVERY : PROBE_EVERY;
 }
 
-/** Weight of the newest time in a moving average. */
-const ALPHA = 0.3;
+/** Times a way's estimate is the least of (see the file's header). */
+export const WINDOW = 3;
 
 /** What is known of one loop. */
 interface Site {
   /** Calls so far. */
   calls: number;
-  /** Moving averages of the time per element, ms, on the threads and on one thread (NaN: not measured yet). */
+  /** The estimates, ms per element, on the threads and on one thread (NaN: not measured yet): the least of the window's times. */
   parallel: number;
   serial: number;
+  /** The last WINDOW times per element of each way (NaN: none yet), and where each way writes its next. */
+  parallelTimes: Float64Array;
+  serialTimes: Float64Array;
+  parallelNext: number;
+  serialNext: number;
 }
 
 /** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
@@ -64,7 +77,13 @@ export class LoopChooser {
   /** Whether the next call of loop `site` should run on the threads (true) or on one thread. */
   choose(site: string): boolean {
     let s = this.sites.get(site);
-    if (s === undefined) { s = { calls: 0, parallel: NaN, serial: NaN }; this.sites.set(site, s); }
+    if (s === undefined) {
+      s = {
+        calls: 0, parallel: NaN, serial: NaN, parallelTimes: new Float64Array(WINDOW).fill(NaN),
+        serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
+      };
+      this.sites.set(site, s);
+    }
     const c = s.calls;
     if (c < 3) return true;
     if (c < 5 || Number.isNaN(s.serial)) return false;
@@ -81,13 +100,14 @@ export class LoopChooser {
     s.calls++;
     if (first || !(n > 0) || !(ms >= 0)) return;
     const v = ms / n;
-    // The way in use is averaged; a probe of the other way replaces its (old) average, so a machine
-    // that got quieter is noticed at the next probe.
-    // A time below the average is taken at once, one above moves it by ALPHA: on a shared machine the
-    // delays are other processes', so the lower times are the ones that say what a way costs. Both
-    // ways follow the same rule, probes included, so neither is favoured by having more samples.
-    const old = parallel ? s.parallel : s.serial;
-    const est = Number.isNaN(old) || v < old ? v : old + ALPHA * (v - old);
+    // The least of the way's last WINDOW times (see the file's header). Both ways follow the same
+    // rule, probes included, so neither is favoured by having more samples.
+    const times = parallel ? s.parallelTimes : s.serialTimes;
+    const at = parallel ? s.parallelNext : s.serialNext;
+    times[at] = v;
+    if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
+    let est = v;
+    for (let k = 0; k < WINDOW; k++) if (times[k]! < est) est = times[k]!; // NaN (no time yet) is never less
     if (parallel) s.parallel = est; else s.serial = est;
   }
 
