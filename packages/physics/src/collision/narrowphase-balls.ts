@@ -1,8 +1,9 @@
 /**
  * The narrowphase's ball-ball contacts (narrowphase.ts) on the world's threads. Each thread turns a
- * contiguous range of the step's ball-ball pairs into contacts in its own buffer; the buffers are
- * appended to the contact list in range order, the order one thread makes them in, so the contacts,
- * and everything after them, are identical to the bit to the one-thread narrowphase.
+ * contiguous range of the step's ball-ball pairs into contacts; the first range (the calling
+ * thread's) writes them straight into the contact buffer, the others into arrays of their own, which
+ * are then appended after it in range order (typed-array copies), the order one thread makes them in,
+ * so the contacts, and everything after them, are identical to the bit to the one-thread narrowphase.
  *
  * Only for the leading run of ball-ball pairs (the broadphase lists segment pairs after them) and
  * while no joint keeps bodies apart (that test looks pairs up in a map the workers do not have).
@@ -15,12 +16,16 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
 import { isShared, sharedLike } from '../threads/pool.js';
-import { CONTACT_F, CONTACT_I } from './narrowphase-balls-kernel.js';
+import { shareContactBuffer } from './contact-colors.js';
 
 /** Fewest ball-ball pairs a thread for the contacts to be made in parallel. */
 export const CONTACTS_MIN_PER_THREAD = 2048;
 
-interface ContactBuffers { f: Float64Array[]; i: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array; cap: number }
+/** The contact buffer's fields a range writes, in the kernel's order (narrowphase-balls-kernel.ts). */
+const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'feature'] as const;
+
+/** Each range after the first: its CONTACT_FIELDS arrays (FIELDS' types), `cap` rows each; the ranges' counts. */
+interface ContactBuffers { out: KernelArray[][]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array; cap: number }
 
 const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
 
@@ -29,6 +34,14 @@ function shared<T extends KernelArray>(a: T): T {
   const c = sharedLike(a, a.length);
   c.set(a as never);
   return c;
+}
+
+/** A range's arrays of `cap` rows, typed as the contact buffer's FIELDS, on shared memory. */
+function rangeArrays(cap: number): KernelArray[] {
+  const out: KernelArray[] = [new Uint8Array(new SharedArrayBuffer(cap))];
+  for (let k = 1; k < 7; k++) out.push(new Float64Array(new SharedArrayBuffer(8 * cap)));
+  for (let k = 7; k < 10; k++) out.push(new Int32Array(new SharedArrayBuffer(4 * cap)));
+  return out;
 }
 
 /**
@@ -46,16 +59,16 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   while (m < n && kind[m] === PairKind.BallBall) m++;
   if (m < CONTACTS_MIN_PER_THREAD * pool.threads) return 0;
   cs.pairA = shared(cs.pairA); cs.pairB = shared(cs.pairB); cs.bodyType = shared(cs.bodyType);
+  // The first range writes into the buffer itself: room for every pair, on shared memory.
+  if (buf.capacity < m) growContactBuffer(buf, m);
+  shareContactBuffer(buf);
   let B = buffersOf.get(cs);
   const want = m + 1024;
-  if (B === undefined || B.f.length < pool.threads || B.cap < want) {
+  if (B === undefined || B.out.length < pool.threads - 1 || B.cap < want) {
     const cap = Math.max(want, 2 * (B?.cap ?? 0));
-    const f: Float64Array[] = [], i: Int32Array[] = [];
-    for (let p = 0; p < pool.threads; p++) {
-      f.push(new Float64Array(new SharedArrayBuffer(8 * CONTACT_F * cap)));
-      i.push(new Int32Array(new SharedArrayBuffer(4 * CONTACT_I * cap)));
-    }
-    B = { f, i, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(6), cap };
+    const out: KernelArray[][] = [];
+    for (let p = 1; p < pool.threads; p++) out.push(rangeArrays(cap));
+    B = { out, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(8), cap };
     buffersOf.set(cs, B);
   }
   const c = world.components;
@@ -63,10 +76,11 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   A.length = 0;
   A.push(cs.pairA, cs.pairB, c.PreviousPosition.x, c.PreviousPosition.y, c.PreviousPosition.z,
     c.Velocity.x, c.Velocity.y, c.Velocity.z, c.Ball.radius, cs.bodyType, B.counts);
-  for (let p = 0; p < pool.threads; p++) A.push(B.f[p]!, B.i[p]!);
+  for (const f of FIELDS) A.push(buf[f]);
+  for (let p = 1; p < pool.threads; p++) for (const a of B.out[p - 1]!) A.push(a);
   const P = B.params;
   P[0] = world.h; P[1] = cs.settings.speculativeDistance; P[2] = BodyType.Static;
-  P[3] = ContactKind.Ball; P[4] = ContactKind.StaticBall; P[5] = B.cap;
+  P[3] = ContactKind.Ball; P[4] = ContactKind.StaticBall; P[5] = B.cap; P[6] = buf.capacity; P[7] = world.dimensions;
   B.counts.fill(0);
   if (runOnPool(pool, 'narrowphaseSystem', KERNEL.ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) === null) return 0;
   let total = 0;
@@ -74,17 +88,16 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
     if (B.counts[p]! < 0) { buffersOf.delete(cs); return 0; } // too small a buffer: the caller's loop this step
     total += B.counts[p]!;
   }
+  // The first range's rows are in place; the others follow in range order (the one-thread order).
+  buf.count = B.counts[0]!;
   if (total > buf.capacity) growContactBuffer(buf, total);
-  // Append in range order: the one-thread order.
-  let r = 0;
-  for (let p = 0; p < pool.threads; p++) {
-    const F = B.f[p]!, I = B.i[p]!, k = B.counts[p]!;
-    for (let j = 0; j < k; j++, r++) {
-      const f = j * CONTACT_F, q = j * CONTACT_I;
-      buf.kind[r] = F[f]!; buf.nx[r] = F[f + 1]!; buf.ny[r] = F[f + 2]!; buf.nz[r] = F[f + 3]!;
-      buf.separation[r] = F[f + 4]!; buf.ra[r] = F[f + 5]!; buf.rb[r] = F[f + 6]!;
-      buf.a[r] = I[q]!; buf.b[r] = I[q + 1]!; buf.feature[r] = I[q + 2]!;
-    }
+  let r = buf.count;
+  for (let p = 1; p < pool.threads; p++) {
+    const k = B.counts[p]!;
+    if (k === 0) continue;
+    const out = B.out[p - 1]!;
+    for (let j = 0; j < FIELDS.length; j++) (buf[FIELDS[j]!] as KernelArray).set(out[j]!.subarray(0, k) as never, r);
+    r += k;
   }
   buf.count = total;
   return m;
