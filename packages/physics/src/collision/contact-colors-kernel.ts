@@ -275,6 +275,9 @@ export function coloredRows2D(pk: Float64Array, sb: Float64Array, pair: Int32Arr
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny;
     const oldN = pk[o + 8]!;
+    // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse
+    // below is 0), as in solver.ts's solve2D: a fifth of the pass's time in a settled pile.
+    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + 9] === 0) continue;
     let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
