@@ -14,9 +14,10 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
  * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
- * claim blocks in that order from one counter (Atomics.add) and start a unit's block only once every
- * block of the earlier units is done, so a thread the system has not scheduled holds nothing up
- * unless it holds a block (work sharing, as Box2D v3's solver stages), and which thread runs a block
+ * claim a unit's blocks one by one (a flag each, Atomics.compareExchange), each from its own share of
+ * the unit first, and start a unit only once every block of the earlier units is done, so a thread
+ * the system has not scheduled holds nothing up unless it holds a block (work sharing, as Box2D v3's
+ * solver stages), a thread keeps the same strips pass after pass, and which thread runs a block
  * never changes a result: blocks of a colour touch disjoint movable bodies, a block's rows run in pack
  * order. With strips (plan[9] = 1, contact-colors.ts) the body stages run inside colour 0's blocks
  * instead of as units of their own: gravity before a block's warm start, positions before its first
@@ -29,7 +30,7 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running (not read here), 4 colours
  * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 rows packed,
  * 9 strips (1: fused body stages), 12 + c colour c's first block (c = 0 .. C; colour C the overflow
- * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: blocks claimed, blocks done, abort),
+ * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort),
  * 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255 not packed),
  * 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as it packs),
  * the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15 normalMass,
@@ -39,7 +40,9 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
  * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
  * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
- * pack row: its row in the contact buffer, read by the unpacking only). P: 0 1 / h_s, 1-3
+ * pack row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry,
+ * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them).
+ * plan[3] is the number of threads running the kernel (parts 0 .. plan[3] - 1). P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
  * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
  * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS. The arithmetic
@@ -76,11 +79,17 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   const gravityUnits = fused ? 0 : bodyUnits, positionUnits = fused && relax > 0 ? 0 : bodyUnits;
   // The units in order: the packing (one block a range of `parts`), then every substep's stages (a
   // body stage one unit, a pass C + 1 units, one a colour, the overflow colour one block), then the
-  // unpacking. Blocks are numbered across the units in that order and claimed from bar[0]; bar[1]
+  // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
   // counts finished blocks, so a unit starts once bar[1] reaches its first block.
   const units = 1 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
+  // Blocks are claimed one by one (claim flags, Atomics.compareExchange). Thread `part` of `threads`
+  // (plan[3]) takes a unit's blocks from its own share first, in order (the part-th of `threads`
+  // equal runs of blocks), then takes what is left of the others' shares from their ends. With strips,
+  // block j of either colour is strip pair j's, so a thread keeps solving the same strips, pass after
+  // pass, with their bodies and rows in its own core's cache; a thread that is late or slow still
+  // holds nothing up that the others can take.
+  const claim = A[29] as Int32Array, threads = plan[3]! > 0 ? plan[3]! : 1;
   let base = 0, failed = false;
-  let b = Atomics.add(bar, 0, 1);
   let stage = 0, u = 0;
   for (let g = 0; g < units; g++) {
     // Which unit g is: kind 0 pack, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
@@ -96,7 +105,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       }
     }
     const end = base + count;
-    while (b < end) {
+    if (count > 0) {
       // Wait until every block of the earlier units is done: spin a while, then block.
       if (Atomics.load(bar, 1) < base) {
         let t0 = -1, spins = 0;
@@ -111,40 +120,47 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
         }
       }
       if (failed) break;
-      const blk = b - base;
-      try {
-        if (kind === 0) packRows(A, P, blk, parts);
-        else if (kind === 1 || kind === 2) {
-          const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
-          bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
-        } else if (kind === 4) {
-          const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
-          unpackRows(A, k0, k1);
-        } else {
-          // A block of colour u's rows.
-          const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
-          // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
-          // positions before the first relax pass).
-          if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
-            bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
+      for (let sh = 0; sh < threads; sh++) {
+        const t = (part + sh) % threads;
+        const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
+        for (let k = 0; k < s1 - s0; k++) {
+          // Its own share forward, another's backward from the end: the first block found taken
+          // means the rest of that share is taken too (its owner went forward, takers backward).
+          const blk = sh === 0 ? s0 + k : s1 - 1 - k;
+          if (Atomics.load(claim, base + blk) !== 0 || Atomics.compareExchange(claim, base + blk, 0, 1) !== 0) break;
+          try {
+            if (kind === 0) packRows(A, P, blk, parts);
+            else if (kind === 1 || kind === 2) {
+              const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
+              bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
+            } else if (kind === 4) {
+              const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
+              unpackRows(A, k0, k1);
+            } else {
+              // A block of colour u's rows.
+              const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
+              // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+              // positions before the first relax pass).
+              if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+                bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
+              }
+              // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+              // adds each row's impulse to what the substep delivered).
+              const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+              const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+              rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+            }
+          } catch (e) {
+            // Let the other threads out of their waits, then report this one's error.
+            Atomics.store(bar, 2, 1);
+            Atomics.notify(bar, 1);
+            throw e;
           }
-          // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
-          // adds each row's impulse to what the substep delivered).
-          const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-          const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
-          rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+          // Done: the last block of a unit wakes the threads waiting to start the next.
+          if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
         }
-      } catch (e) {
-        // Let the other threads out of their waits, then report this one's error.
-        Atomics.store(bar, 2, 1);
-        Atomics.notify(bar, 1);
-        throw e;
       }
-      // Done: the last block of a unit wakes the threads waiting to start the next.
-      if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      b = Atomics.add(bar, 0, 1);
     }
-    if (failed) break;
     base = end;
     // Next unit: advance (stage, colour, substep) past the packing.
     if (g > 0 && g < units - 1) {
@@ -154,6 +170,19 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
     }
   }
   return failed ? -1 : 0;
+}
+
+/**
+ * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
+ * filled): the size its claim array needs.
+ */
+export function solveColoredBlocks2D(plan: Int32Array): number {
+  const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, C = plan[4]!, nb = plan[5]!, parts = plan[7]!;
+  const np = plan[8]!, fused = plan[9] === 1;
+  const bodyUnits = Math.ceil((nb - 1) / 1024);
+  const bodies = (fused ? 0 : bodyUnits) + (fused && relax > 0 ? 0 : bodyUnits);
+  const rows = plan[12 + C + 1]! - plan[12]!;
+  return parts + substeps * (bodies + (1 + iters + relax) * rows) + Math.ceil(np / 256);
 }
 
 /*

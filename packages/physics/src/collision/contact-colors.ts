@@ -40,7 +40,7 @@ import type { PhysicsWorld } from '../world.js';
 import type { ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { solveColored2D } from './contact-colors-kernel.js';
+import { solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
@@ -89,6 +89,8 @@ const BINS = 4096;
 
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
+  /** The kernel's claim flags, a block of every unit (shared; zeroed before each run). */
+  claim: Int32Array;
   /** Each pack row's two bodies' solver state offsets (shared; the kernel's integer copy of the pack's slots 0 and 1). */
   pair: Int32Array;
   /** Each pack row's normal impulse delivered over the substeps, and its row in the contact buffer (shared). */
@@ -118,7 +120,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       tot: new Float64Array(new SharedArrayBuffer(8 * 1024)), row: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       dyn: new Uint8Array(new SharedArrayBuffer(1024)),
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
-      params: new Float64Array(24), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
+      params: new Float64Array(24), claim: new Int32Array(new SharedArrayBuffer(4 * 1024)), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
@@ -451,16 +453,19 @@ export function solveColoredSubsteps(
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
   // The relax passes' support rows (support.ts): which way is down, and the cosine past which a row is one.
   downwardInto(g, P, 14); P[16] = SUPPORT_COS;
+  const blocks = solveColoredBlocks2D(plan);
+  if (s.claim.length < blocks) s.claim = sharedLike(s.claim, Math.max(blocks, 2 * s.claim.length));
   const A = s.arrays;
   A.length = 0;
   A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
     buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
     buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
-    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row);
+    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row, s.claim);
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
   s.bar[0] = 0; s.bar[1] = 0; s.bar[2] = 0;
+  s.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[3] = pool.threads;
     pool.run('contactSolverSystem', KERNEL.solveColored2D, A, P, pool.threads, null);
