@@ -491,6 +491,8 @@ export interface ColoredPlan {
   row: Int32Array;
   /** The barrier's four Int32 slots, shared (slot 3 free for the restitution stage's count). */
   bar: Int32Array;
+  /** Claim flags, a block each (shared; the restitution stage may grow it, and zeroes what it uses). */
+  claim: Int32Array;
 }
 
 /**

@@ -177,18 +177,20 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * threshold gets the target -e v_impact and the cap of Poisson's hypothesis; the rest the target 0.
  * Then, if any row bounces, `restitutionIterations` sequential-impulse passes, colour by colour: the
  * blocks of a colour share no movable body (contact-colors.ts: strips or graph colours; the overflow
- * colour one block), so they may go to any thread. Threads claim blocks in order from one counter and
- * start a unit (the first stage, or a colour of a pass) once every block of the earlier units is
- * done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
+ * colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
+ * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
+ * the earlier units is done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 4
  * colours C, 12 + c colour c's first block, c = 0 .. C + 1), 2 counters (Int32, 0 on entry: 0 blocks
- * claimed, 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
+ * claimed (unused), 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
  * 6 nx, 7 ny, 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12
  * maxNormalImpulse, 13 totalNormalImpulse, 14 impulse, 15 bounds (Int32: block j is pack rows
  * bounds[j] .. bounds[j + 1] - 1), 16 pair (Int32, two a pack row: its bodies' solver state
- * offsets), 17 row (Int32, a pack row: its row in the contact buffer). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
+ * offsets), 17 row (Int32, a pack row: its row in the contact buffer), 18 claim (Int32, 0 on entry:
+ * a flag a block, numbered across the units; restitutionBlocks2D of them). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
  * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
- * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
+ * Atomics.wait (1), 5 spin before blocking (microseconds), 6 threads running the kernel (parts 0 ..
+ * P[6] - 1). Returns 0 (-1 if another thread failed and
  * this one stopped).
  */
 export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
@@ -215,7 +217,10 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
       if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
     }
   };
-  let b = Atomics.add(bar, 0, 1);
+  // Blocks are claimed by flags (claim, Atomics.compareExchange), each thread from its own share of a
+  // unit first, then what is left of the others' from their ends, as solveColored2D: with strips a
+  // thread keeps the strips, and their bodies, it solved in the substeps.
+  const claim = A[18] as Int32Array, threads = P[6]! > 0 ? P[6]! : 1;
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
     const first = c < 0 ? 0 : plan[12 + c]!;
@@ -226,29 +231,40 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
       if (!earlierDone()) { failed = true; break; }
       if (Atomics.load(bar, 3) === 0) break;
     }
-    while (b < end) {
+    if (count > 0) {
       if (!earlierDone()) { failed = true; break; }
-      const blk = b - base;
-      try {
-        // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
-        // runs once a step, and inline they were compiled on the stack partway through a call.
-        if (c < 0) {
-          const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
-          const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
-          if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-        } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
-      } catch (e) {
-        Atomics.store(bar, 2, 1);
-        Atomics.notify(bar, 1);
-        throw e;
+      for (let sh = 0; sh < threads; sh++) {
+        const t = (part + sh) % threads;
+        const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
+        for (let k = 0; k < s1 - s0; k++) {
+          const blk = sh === 0 ? s0 + k : s1 - 1 - k;
+          if (Atomics.load(claim, base + blk) !== 0 || Atomics.compareExchange(claim, base + blk, 0, 1) !== 0) break;
+          try {
+            // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
+            // runs once a step, and inline they were compiled on the stack partway through a call.
+            if (c < 0) {
+              const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
+              const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
+              if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+            } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
+          } catch (e) {
+            Atomics.store(bar, 2, 1);
+            Atomics.notify(bar, 1);
+            throw e;
+          }
+          if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+        }
       }
-      if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      b = Atomics.add(bar, 0, 1);
     }
-    if (failed) break;
     base = end;
   }
   return failed ? -1 : 0;
+}
+
+/** The blocks of every unit of restitutionColored2D over `n` rows with `plan` (the colours' layout) and `iterations` passes: the size its claim array needs. */
+export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: number): number {
+  const C = plan[4]!;
+  return Math.ceil(n / 1024) + iterations * (plan[12 + C + 1]! - plan[12]!);
 }
 
 /** restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce. */
