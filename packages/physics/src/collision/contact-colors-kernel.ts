@@ -5,6 +5,7 @@
  */
 
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
+import type { claimBlock } from '../threads/block-claim.js';
 
 /**
  * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
@@ -82,13 +83,11 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
   // counts finished blocks, so a unit starts once bar[1] reaches its first block.
   const units = 1 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
-  // Blocks are claimed one by one (claim flags, Atomics.compareExchange). Thread `part` of `threads`
-  // (plan[3]) takes a unit's blocks from its own share first, in order (the part-th of `threads`
-  // equal runs of blocks), then takes what is left of the others' shares from their ends. With strips,
-  // block j of either colour is strip pair j's, so a thread keeps solving the same strips, pass after
-  // pass, with their bodies and rows in its own core's cache; a thread that is late or slow still
-  // holds nothing up that the others can take.
+  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[3])
+  // from its own share of a unit first: with strips, block j of either colour is strip pair j's, so a
+  // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
   const claim = A[29] as Int32Array, threads = plan[3]! > 0 ? plan[3]! : 1;
+  const claimNext = H[9] as typeof claimBlock, cursor = new Int32Array(2);
   let base = 0, failed = false;
   let stage = 0, u = 0;
   for (let g = 0; g < units; g++) {
@@ -120,45 +119,38 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
         }
       }
       if (failed) break;
-      for (let sh = 0; sh < threads; sh++) {
-        const t = (part + sh) % threads;
-        const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
-        for (let k = 0; k < s1 - s0; k++) {
-          // Its own share forward, another's backward from the end: the first block found taken
-          // means the rest of that share is taken too (its owner went forward, takers backward).
-          const blk = sh === 0 ? s0 + k : s1 - 1 - k;
-          if (Atomics.load(claim, base + blk) !== 0 || Atomics.compareExchange(claim, base + blk, 0, 1) !== 0) break;
-          try {
-            if (kind === 0) packRows(A, P, blk, parts);
-            else if (kind === 1 || kind === 2) {
-              const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
-              bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
-            } else if (kind === 4) {
-              const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
-              unpackRows(A, k0, k1);
-            } else {
-              // A block of colour u's rows.
-              const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
-              // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
-              // positions before the first relax pass).
-              if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
-                bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
-              }
-              // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
-              // adds each row's impulse to what the substep delivered).
-              const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-              const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
-              rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+      cursor[0] = 0; cursor[1] = 0;
+      for (let blk = claimNext(claim, base, count, part, threads, cursor); blk >= 0; blk = claimNext(claim, base, count, part, threads, cursor)) {
+        try {
+          if (kind === 0) packRows(A, P, blk, parts);
+          else if (kind === 1 || kind === 2) {
+            const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
+            bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
+          } else if (kind === 4) {
+            const k0 = blk * RB_, k1 = Math.min(np, k0 + RB_);
+            unpackRows(A, k0, k1);
+          } else {
+            // A block of colour u's rows.
+            const r0 = bounds[first + blk]!, r1 = bounds[first + blk + 1]!;
+            // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+            // positions before the first relax pass).
+            if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+              bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
             }
-          } catch (e) {
-            // Let the other threads out of their waits, then report this one's error.
-            Atomics.store(bar, 2, 1);
-            Atomics.notify(bar, 1);
-            throw e;
+            // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+            // adds each row's impulse to what the substep delivered).
+            const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+            const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+            rowPass(pk, sb, pair, tot, P, r0, r1, mode);
           }
-          // Done: the last block of a unit wakes the threads waiting to start the next.
-          if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+        } catch (e) {
+          // Let the other threads out of their waits, then report this one's error.
+          Atomics.store(bar, 2, 1);
+          Atomics.notify(bar, 1);
+          throw e;
         }
+        // Done: the last block of a unit wakes the threads waiting to start the next.
+        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
       }
     }
     base = end;

@@ -12,6 +12,7 @@
  */
 
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
+import type { claimBlock } from '../threads/block-claim.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver.ts), one
@@ -217,10 +218,11 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
       if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
     }
   };
-  // Blocks are claimed by flags (claim, Atomics.compareExchange), each thread from its own share of a
-  // unit first, then what is left of the others' from their ends, as solveColored2D: with strips a
-  // thread keeps the strips, and their bodies, it solved in the substeps.
+  // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
+  // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
+  // bodies, it solved in the substeps.
   const claim = A[18] as Int32Array, threads = P[6]! > 0 ? P[6]! : 1;
+  const claimNext = H[9] as typeof claimBlock, cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
     const first = c < 0 ? 0 : plan[12 + c]!;
@@ -233,27 +235,22 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
     }
     if (count > 0) {
       if (!earlierDone()) { failed = true; break; }
-      for (let sh = 0; sh < threads; sh++) {
-        const t = (part + sh) % threads;
-        const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
-        for (let k = 0; k < s1 - s0; k++) {
-          const blk = sh === 0 ? s0 + k : s1 - 1 - k;
-          if (Atomics.load(claim, base + blk) !== 0 || Atomics.compareExchange(claim, base + blk, 0, 1) !== 0) break;
-          try {
-            // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
-            // runs once a step, and inline they were compiled on the stack partway through a call.
-            if (c < 0) {
-              const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
-              const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
-              if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-            } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
-          } catch (e) {
-            Atomics.store(bar, 2, 1);
-            Atomics.notify(bar, 1);
-            throw e;
-          }
-          if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+      cursor[0] = 0; cursor[1] = 0;
+      for (let blk = claimNext(claim, base, count, part, threads, cursor); blk >= 0; blk = claimNext(claim, base, count, part, threads, cursor)) {
+        try {
+          // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
+          // runs once a step, and inline they were compiled on the stack partway through a call.
+          if (c < 0) {
+            const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
+            const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
+            if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+          } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
+        } catch (e) {
+          Atomics.store(bar, 2, 1);
+          Atomics.notify(bar, 1);
+          throw e;
         }
+        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
       }
     }
     base = end;

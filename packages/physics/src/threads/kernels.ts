@@ -15,6 +15,7 @@
  */
 
 import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
+import { claimBlock } from './block-claim.js';
 import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
 import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
@@ -315,12 +316,13 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
  * (contact-colors-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
  * (solver-stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
- * a pass's block). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
+ * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
+ * those kernels). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
  * the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
-  restitutionTargets2D, restitutionRows2D,
+  restitutionTargets2D, restitutionRows2D, claimBlock,
 ]);
 
 /** Every kernel, indexed by `KERNEL`. */

@@ -1,0 +1,34 @@
+/**
+ * Claiming the blocks of a unit of work by flags, for kernels whose threads share a unit's blocks
+ * (contact-colors-kernel.ts, solver-stages-kernel.ts). A kernel helper (threads/kernels.ts rules:
+ * self-contained; kernels reach it through KERNEL_HELPERS).
+ */
+
+/**
+ * The next block thread `part` of `threads` takes of a unit of `count` blocks whose claim flags are
+ * claim[base .. base + count - 1] (0 free, 1 taken; set with Atomics.compareExchange), or -1 when none
+ * is left for it. A thread takes its own share first (the part-th of `threads` equal runs of blocks),
+ * in order, then what is left of the others' shares, each from its end backward; the first block it
+ * finds taken ends a share (its owner went forward, other takers backward, so the rest is taken too).
+ * So each thread keeps to the same blocks from unit to unit where the units' blocks correspond (the
+ * coloured solve's strips), and a late or slow thread holds up nothing the others can take.
+ * `cursor` is the thread's own: [0] the share it is in (0: its own), [1] blocks of it tried; set both
+ * to 0 before a unit's first call.
+ */
+export function claimBlock(claim: Int32Array, base: number, count: number, part: number, threads: number, cursor: Int32Array): number {
+  let sh = cursor[0]!, k = cursor[1]!;
+  while (sh < threads) {
+    const t = (part + sh) % threads;
+    const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
+    if (k < s1 - s0) {
+      const blk = sh === 0 ? s0 + k : s1 - 1 - k;
+      if (Atomics.load(claim, base + blk) === 0 && Atomics.compareExchange(claim, base + blk, 0, 1) === 0) {
+        cursor[0] = sh; cursor[1] = k + 1;
+        return blk;
+      }
+    }
+    sh++; k = 0;
+  }
+  cursor[0] = sh; cursor[1] = 0;
+  return -1;
+}
