@@ -35,56 +35,33 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
     ? [1, 0, 0, -1, 1, 0, 0, 1, 0, 1, 1, 0, -1, -1, 1, 0, -1, 1, 1, -1, 1, -1, 0, 1, 0, 0, 1, 1, 0, 1, -1, 1, 1, 0, 1, 1, 1, 1, 1]
     : [1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0];
   const nOff = off.length / 3;
+  // A dense grid's neighbours are fixed bucket offsets (dx + dz spanX - dy spanXZ), and its buckets
+  // hold one cell each, so no cell comparison; a hash bucket may hold other cells. A 2D world reads no
+  // z (its cells' and stores' z are 0).
+  const step = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+  for (let k = 0; k < nOff; k++) step[k] = off[3 * k]! + off[3 * k + 2]! * sX - off[3 * k + 1]! * sXZ;
   let count = 0, woken = 0;
-  if (dense && !is3D) {
-    // A dense 2D grid (the usual case): a bucket is one cell, so no cell comparison, and the
-    // neighbours are fixed bucket offsets (dx - dy spanXZ); no z. The same pairs in the same order as
-    // the general loop below, about a third faster a ball (balls-in-box, 20,000).
-    const step = [0, 0, 0, 0];
-    for (let k = 0; k < 4; k++) step[k] = off[3 * k]! - off[3 * k + 1]! * sXZ;
-    for (let p = lo; p < hi && count >= 0; p++) {
-      const e = sorted[p]!;
-      const x = ox[e]!, y = oy[e]!;
-      const reach = radius[e]! + margin[e]!;
-      const te = type[e]!;
-      const own = cellX[p]! - gx0 + (gy0 - cellY[p]!) * sXZ;
-      for (let k = -1; k < 4 && count >= 0; k++) {
-        const bucket = k < 0 ? own : own + step[k]!;
-        for (let q = k < 0 ? p + 1 : start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-          const f = sorted[q]!, tf = type[f]!;
-          if (te !== 0 && tf !== 0 && !((te === 1 && tf === 3) || (te === 3 && tf === 1))) continue;
-          const dx = ox[f]! - x, dy = oy[f]! - y;
-          const rr = reach + radius[f]! + margin[f]!;
-          if (dx * dx + dy * dy < rr * rr) {
-            if (count >= cap || woken + 2 > cap) { count = -1; break; }
-            if (te === 3 && (tf === 1 || rest[f] === 0)) outW[woken++] = e;
-            if (tf === 3 && (te === 1 || rest[e] === 0)) outW[woken++] = f;
-            outA[count] = e < f ? e : f; outB[count] = e < f ? f : e;
-            count++;
-          }
-        }
-      }
-    }
-    counts[part] = count;
-    counts[16 + part] = count < 0 ? -1 : woken;
-    return 0;
-  }
   for (let p = lo; p < hi && count >= 0; p++) {
     const e = sorted[p]!;
     const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
-    const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+    const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
     const reach = radius[e]! + margin[e]!;
     const te = type[e]!;
+    const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : 0;
     // Own cell (later entries only), then the half neighbourhood.
     for (let k = -1; k < nOff && count >= 0; k++) {
-      const nx = k < 0 ? cx : cx + off[3 * k]!, ny = k < 0 ? cy : cy + off[3 * k + 1]!, nz = k < 0 ? cz : is3D ? cz + off[3 * k + 2]! : 0;
-      const bucket = dense ? nx - gx0 + (nz - gz0) * sX + (gy0 - ny) * sXZ : ((Math.imul(nx, 73856093) ^ Math.imul(ny, 19349663) ^ Math.imul(nz, 83492791)) >>> 0) & mask;
+      let nx = cx, ny = cy, nz = cz, bucket = own;
+      if (k >= 0) {
+        nx = cx + off[3 * k]!; ny = cy + off[3 * k + 1]!; nz = cz + off[3 * k + 2]!;
+        if (dense) bucket = own + step[k]!;
+      }
+      if (!dense) bucket = ((Math.imul(nx, 73856093) ^ Math.imul(ny, 19349663) ^ Math.imul(nz, 83492791)) >>> 0) & mask;
       for (let q = k < 0 ? p + 1 : start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-        if (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz) continue;
+        if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
         const f = sorted[q]!, tf = type[f]!;
         // Neither dynamic: no pair, unless a kinematic ball meets a sleeping one.
         if (te !== 0 && tf !== 0 && !((te === 1 && tf === 3) || (te === 3 && tf === 1))) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) {
           if (count >= cap || woken + 2 > cap) { count = -1; break; }
