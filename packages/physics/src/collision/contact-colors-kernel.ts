@@ -28,7 +28,7 @@ import type { claimBlock } from '../threads/block-claim.js';
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
  * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
- * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running (not read here), 4 colours
+ * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours
  * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 rows packed,
  * 9 strips (1: fused body stages), 12 + c colour c's first block (c = 0 .. C; colour C the overflow
  * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort),
@@ -42,8 +42,8 @@ import type { claimBlock } from '../threads/block-claim.js';
  * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
  * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
  * pack row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry,
- * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them).
- * plan[3] is the number of threads running the kernel (parts 0 .. plan[3] - 1). P: 0 1 / h_s, 1-3
+ * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them);
+ * the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
  * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
  * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS. The arithmetic
