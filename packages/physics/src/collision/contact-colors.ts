@@ -91,7 +91,7 @@ interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
   /** The kernel's claim flags, a block of every unit (shared; zeroed before each run). */
   claim: Int32Array;
-  /** Each pack row's two bodies' solver state offsets (shared; the kernel's integer copy of the pack's slots 0 and 1). */
+  /** Each pack row's two bodies' solver state offsets (shared; two a row). */
   pair: Int32Array;
   /** Each pack row's normal impulse delivered over the substeps, and its row in the contact buffer (shared). */
   tot: Float64Array; row: Int32Array;

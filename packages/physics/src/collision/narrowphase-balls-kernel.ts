@@ -6,17 +6,14 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 
-/** Typed arrays of a range's output, as the contact buffer's fields: kind (Uint8), nx, ny, nz, separation, ra, rb (Float64), a, b, feature (Int32). */
-export const CONTACT_FIELDS = 10;
-
 /**
  * Ball-ball contacts of pairs lo .. hi - 1 (all BallBall pairs of bodies no joint keeps apart), with
  * the arithmetic of narrowphase.ts's loop: the normal where the balls first touch this step (swept
  * test, Ericson 5.5.7), the separation where they were at the start of the step, kept when the gap
  * can close this step. A: 0 pairA, 1 pairB, 2 ox, 3 oy, 4 oz, 5 vx, 6 vy, 7 vz, 8 radius, 9 bodyType
  * (Uint8), 10 counts (Int32, the contacts of each range at `part`; -1: its arrays were too small),
- * then per range p the CONTACT_FIELDS arrays it writes its contacts to, from row 0, at
- * 11 + CONTACT_FIELDS p: kind (Uint8), nx, ny, nz, separation, ra, rb (Float64), a, b, feature (Int32)
+ * then per range p the 10 arrays it writes its contacts to, from row 0, at 11 + 10 p: kind (Uint8),
+ * nx, ny, nz, separation, ra, rb (Float64), a, b, feature (Int32)
  * (range 0's are the contact buffer's own, so its rows need no copy). P: 0 h (s), 1 speculative
  * distance (m), 2 the Static body type, 3 ContactKind.Ball, 4 ContactKind.StaticBall, 5 rows range
  * p > 0's arrays hold, 6 rows range 0's hold, 7 dimensions (2: z is not read; a 2D world's z stores

@@ -24,7 +24,7 @@ export const CONTACTS_MIN_PER_THREAD = 2048;
 /** The contact buffer's fields a range writes, in the kernel's order (narrowphase-balls-kernel.ts). */
 const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'feature'] as const;
 
-/** Each range after the first: its CONTACT_FIELDS arrays (FIELDS' types), `cap` rows each; the ranges' counts. */
+/** Each range after the first: its arrays (FIELDS', typed as the buffer's), `cap` rows each; the ranges' counts. */
 interface ContactBuffers { out: KernelArray[][]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array; cap: number }
 
 const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
@@ -34,14 +34,6 @@ function shared<T extends KernelArray>(a: T): T {
   const c = sharedLike(a, a.length);
   c.set(a as never);
   return c;
-}
-
-/** A range's arrays of `cap` rows, typed as the contact buffer's FIELDS, on shared memory. */
-function rangeArrays(cap: number): KernelArray[] {
-  const out: KernelArray[] = [new Uint8Array(new SharedArrayBuffer(cap))];
-  for (let k = 1; k < 7; k++) out.push(new Float64Array(new SharedArrayBuffer(8 * cap)));
-  for (let k = 7; k < 10; k++) out.push(new Int32Array(new SharedArrayBuffer(4 * cap)));
-  return out;
 }
 
 /**
@@ -67,7 +59,7 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   if (B === undefined || B.out.length < pool.threads - 1 || B.cap < want) {
     const cap = Math.max(want, 2 * (B?.cap ?? 0));
     const out: KernelArray[][] = [];
-    for (let p = 1; p < pool.threads; p++) out.push(rangeArrays(cap));
+    for (let p = 1; p < pool.threads; p++) out.push(FIELDS.map((f) => sharedLike(buf[f] as KernelArray, cap)));
     B = { out, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(8), cap };
     buffersOf.set(cs, B);
   }

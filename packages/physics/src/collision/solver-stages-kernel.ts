@@ -182,16 +182,15 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
  * the earlier units is done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 plan (Int32, contact-colors-kernel.ts: 4
- * colours C, 12 + c colour c's first block, c = 0 .. C + 1), 2 counters (Int32, 0 on entry: 0 blocks
- * claimed (unused), 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
+ * threads running the kernel (parts 0 .. plan[3] - 1), 4 colours C, 12 + c colour c's first block, c =
+ * 0 .. C + 1), 2 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
  * 6 nx, 7 ny, 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12
  * maxNormalImpulse, 13 totalNormalImpulse, 14 impulse, 15 bounds (Int32: block j is pack rows
  * bounds[j] .. bounds[j + 1] - 1), 16 pair (Int32, two a pack row: its bodies' solver state
  * offsets), 17 row (Int32, a pack row: its row in the contact buffer), 18 claim (Int32, 0 on entry:
  * a flag a block, numbered across the units; restitutionBlocks2D of them). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
  * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
- * Atomics.wait (1), 5 spin before blocking (microseconds), 6 threads running the kernel (parts 0 ..
- * P[6] - 1). Returns 0 (-1 if another thread failed and
+ * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
  * this one stopped).
  */
 export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
@@ -221,7 +220,7 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
-  const claim = A[18] as Int32Array, threads = P[6]! > 0 ? P[6]! : 1;
+  const claim = A[18] as Int32Array, threads = plan[3]! > 0 ? plan[3]! : 1;
   const claimNext = H[9] as typeof claimBlock, cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);

@@ -210,15 +210,14 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   shareContactBuffer(buf);
   const st = cs.settings;
   const s = scratch(world), A = s.arrays, P = s.params;
+  const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
+  if (colored.claim.length < blocks) colored.claim = sharedLike(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
   A.push(colored.pack, colored.plan, colored.bar, cs.bodyState, buf.ia, buf.ib, buf.nx, buf.ny, buf.normalMass, buf.restitution,
     buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse, colored.bounds,
     colored.pair, colored.row, colored.claim);
   P[0] = buf.count; P[1] = st.restitutionThreshold; P[2] = st.elasticRestitutionThreshold; P[3] = st.restitutionIterations;
   P[4] = callerMayWait() ? 1 : 0; P[5] = SPIN_MICROSECONDS;
-  const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
-  if (colored.claim.length < blocks) colored.claim = sharedLike(colored.claim, Math.max(blocks, 2 * colored.claim.length));
-  A[18] = colored.claim;
   const bar = colored.bar, plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
@@ -226,10 +225,10 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   bar[0] = 0; bar[1] = 0; bar[2] = 0; bar[3] = 0;
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
-    plan[3] = pool.threads; P[6] = pool.threads;
+    plan[3] = pool.threads;
     pool.run('contactSolverSystem', KERNEL.restitutionColored2D, A, P, pool.threads, null);
   } else {
-    plan[3] = 1; P[6] = 1;
+    plan[3] = 1;
     restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);

@@ -59,10 +59,7 @@ export const WINDOW = 3;
 interface Site {
   /** Calls so far. */
   calls: number;
-  /** The estimates, ms per element, on the threads and on one thread (NaN: not measured yet): the least of the window's times. */
-  parallel: number;
-  serial: number;
-  /** The last WINDOW times per element of each way (NaN: none yet), and where each way writes its next. */
+  /** The last WINDOW times per element, ms, of each way (NaN: none yet; the estimate is the least, see `least`), and where each way writes its next. */
   parallelTimes: Float64Array;
   serialTimes: Float64Array;
   parallelNext: number;
@@ -84,17 +81,18 @@ export class LoopChooser {
     let s = this.sites.get(site);
     if (s === undefined) {
       s = {
-        calls: 0, parallel: NaN, serial: NaN, parallelTimes: new Float64Array(WINDOW).fill(NaN),
+        calls: 0, parallelTimes: new Float64Array(WINDOW).fill(NaN),
         serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
       };
       this.sites.set(site, s);
     }
     const c = s.calls;
     if (c < 3) return true;
-    if (c < 5 || Number.isNaN(s.serial)) return false;
-    if (Number.isNaN(s.parallel)) return true;
-    const preferParallel = s.parallel <= s.serial;
-    return c % probePeriod(c, s.parallel, s.serial) === 0 ? !preferParallel : preferParallel;
+    const parallel = least(s.parallelTimes), serial = least(s.serialTimes);
+    if (c < 5 || Number.isNaN(serial)) return false;
+    if (Number.isNaN(parallel)) return true;
+    const preferParallel = parallel <= serial;
+    return c % probePeriod(c, parallel, serial) === 0 ? !preferParallel : preferParallel;
   }
 
   /** Records that a call of `site` ran `parallel` or not and took `ms` for `n` (> 0) elements. */
@@ -105,21 +103,26 @@ export class LoopChooser {
     s.calls++;
     if (first || !(n > 0) || !(ms >= 0)) return;
     const v = ms / n;
-    // The least of the way's last WINDOW times (see the file's header). Both ways follow the same
-    // rule, probes included, so neither is favoured by having more samples.
-    const times = parallel ? s.parallelTimes : s.serialTimes;
+    // Into the way's window of its last WINDOW times (see the file's header). Both ways follow the
+    // same rule, probes included, so neither is favoured by having more samples.
     const at = parallel ? s.parallelNext : s.serialNext;
-    times[at] = v;
+    (parallel ? s.parallelTimes : s.serialTimes)[at] = v;
     if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
-    let est = v;
-    for (let k = 0; k < WINDOW; k++) if (times[k]! < est) est = times[k]!; // NaN (no time yet) is never less
-    if (parallel) s.parallel = est; else s.serial = est;
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
   preference(site: string): boolean | null {
     const s = this.sites.get(site);
-    if (s === undefined || Number.isNaN(s.parallel) || Number.isNaN(s.serial)) return null;
-    return s.parallel <= s.serial;
+    if (s === undefined) return null;
+    const parallel = least(s.parallelTimes), serial = least(s.serialTimes);
+    if (Number.isNaN(parallel) || Number.isNaN(serial)) return null;
+    return parallel <= serial;
   }
+}
+
+/** A way's estimate, ms per element: the least of its window's times (NaN when it has none). */
+function least(times: Float64Array): number {
+  let est = Infinity;
+  for (let k = 0; k < times.length; k++) if (times[k]! < est) est = times[k]!; // NaN (no time) is never less
+  return est === Infinity ? NaN : est;
 }
