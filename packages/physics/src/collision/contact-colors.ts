@@ -87,6 +87,9 @@ export const SPIN_MICROSECONDS = 50;
 /** Histogram bins of the strips' quantiles. */
 const BINS = 4096;
 
+/** A fixed body's bin (stripRows): in none. */
+const NO_BIN = 0xffff;
+
 interface ColorScratch {
   pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
   /** The kernel's claim flags, a block of every unit (shared; zeroed before each run). */
@@ -106,6 +109,8 @@ interface ColorScratch {
   bodyOrder: Int32Array; bodyBounds: Int32Array;
   /** Strips: each solver body's strip (255: fixed, in no strip); the rows' histogram; each bin's strip. */
   strip: Uint8Array; hist: Int32Array; binStrip: Uint8Array;
+  /** Strips: each solver body's histogram bin (NO_BIN: fixed). */
+  bin: Uint16Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
   pending: boolean;
 }
@@ -125,7 +130,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)), bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      strip: new Uint8Array(1024), hist: new Int32Array(BINS), binStrip: new Uint8Array(BINS),
+      strip: new Uint8Array(1024), bin: new Uint16Array(1024), hist: new Int32Array(BINS), binStrip: new Uint8Array(BINS),
       pending: false,
     };
     scratchOf.set(cs, s);
@@ -141,6 +146,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   if (s.bodyOrder.length < bodies) s.bodyOrder = sharedLike(s.bodyOrder, Math.max(bodies, 2 * s.bodyOrder.length));
   if (s.mask.length < bodies) s.mask = new Uint32Array(Math.max(bodies, 2 * s.mask.length));
   if (s.strip.length < bodies) s.strip = new Uint8Array(Math.max(bodies, 2 * s.strip.length));
+  if (s.bin.length < bodies) s.bin = new Uint16Array(Math.max(bodies, 2 * s.bin.length));
   return s;
 }
 
@@ -235,15 +241,20 @@ function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
   const axis = x1 - x0 >= y1 - y0 ? 0 : 1;
   const lo = axis === 0 ? x0 : y0, span = axis === 0 ? x1 - x0 : y1 - y0;
   const scale = span > 0 && Number.isFinite(span) ? (BINS - 1) / span : 0;
-  // Rows a bin (by the row's first movable body), then the bins' strips at the rows' quantiles.
-  const hist = s.hist, binStrip = s.binStrip;
+  // Each movable body's bin along the axis (NO_BIN: fixed), then rows a bin (by the row's first
+  // movable body), then the bins' strips at the rows' quantiles.
+  const binOf = s.bin, hist = s.hist, binStrip = s.binStrip;
+  binOf[0] = NO_BIN;
+  for (let k = 1; k < bodies; k++) {
+    if (strip[k] === 255) { binOf[k] = NO_BIN; continue; }
+    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
+    binOf[k] = bin >= 0 && bin < BINS ? bin : 0;
+  }
   hist.fill(0);
   for (let i = 0; i < n; i++) {
-    const a = IA[i]!, b = IB[i]!;
-    const k = strip[a] !== 255 ? a : b;
-    if (strip[k] === 255) continue;
-    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
-    hist[bin >= 0 && bin < BINS ? bin : 0]++;
+    const ba = binOf[IA[i]!]!;
+    const bin = ba !== NO_BIN ? ba : binOf[IB[i]!]!;
+    if (bin !== NO_BIN) hist[bin]++;
   }
   let total = 0;
   for (let j = 0; j < BINS; j++) total += hist[j]!;
@@ -255,11 +266,7 @@ function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
     binStrip[j] = st;
     acc += hist[j]!;
   }
-  for (let k = 1; k < bodies; k++) {
-    if (strip[k] === 255) continue;
-    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
-    strip[k] = binStrip[bin >= 0 && bin < BINS ? bin : 0]!;
-  }
+  for (let k = 1; k < bodies; k++) if (strip[k] !== 255) strip[k] = binStrip[binOf[k]!]!;
   // Each row's group.
   const W = MAX_COLORS + 1, partCounts = s.offsets, counts = s.counts, half = strips >> 1;
   partCounts.fill(0, 0, parts * W);
