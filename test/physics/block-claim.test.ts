@@ -33,12 +33,23 @@ test('every block of a unit is taken exactly once, each thread from its own shar
   expect(a).toEqual([0, 1, 2, 3]);
   expect(b).toEqual([8, 9, 10, 11, 12, 13, 14, 15, 7, 6, 5, 4]);
   // Three threads, one that never runs: the other two take its share between them.
-  // Thread 0, done with its own share, finds thread 1's end taken and takes thread 2's from its end;
-  // thread 1 then finds that end taken too and stops, and thread 0 takes the rest of it.
+  // Thread 0, done with its own share, finds thread 1's share taken and takes thread 2's from its end;
+  // thread 1 passes over that taken end and takes the next, and so on until they meet.
   const [p, q, r] = run(9, 3, [0, 1]);
   expect(r).toEqual([]);
-  expect(p).toEqual([0, 1, 2, 8, 7, 6]);
-  expect(q).toEqual([3, 4, 5]);
+  expect(p).toEqual([0, 1, 2, 8, 6]);
+  expect(q).toEqual([3, 4, 5, 7]);
+});
+
+test('every idle thread helps with a slow thread\'s share, not only the first to reach it', () => {
+  // Four threads, thread 3 never running: threads 0, 1 and 2 finish their own shares together, then
+  // all three take thread 3's share from its end, each passing over the blocks the others took.
+  // (Before, a thief stopped at the first taken block, so thread 0 alone took 15, 14, 13 and 12.)
+  const [p, q, r, s] = run(16, 4, [0, 1, 2]);
+  expect(s).toEqual([]);
+  expect(p).toEqual([0, 1, 2, 3, 15, 12]);
+  expect(q).toEqual([4, 5, 6, 7, 14]);
+  expect(r).toEqual([8, 9, 10, 11, 13]);
 });
 
 test('a thread that arrives after the others took everything finds nothing', () => {

@@ -8,8 +8,10 @@
  * The next block thread `part` of `threads` takes of a unit of `count` blocks whose claim flags are
  * claim[base .. base + count - 1] (0 free, 1 taken; set with Atomics.compareExchange), or -1 when none
  * is left for it. A thread takes its own share first (the part-th of `threads` equal runs of blocks),
- * in order, then what is left of the others' shares, each from its end backward; the first block it
- * finds taken ends a share (its owner went forward, other takers backward, so the rest is taken too).
+ * in order, then what is left of the others' shares, each from its end backward. In its own share the
+ * first block it finds taken ends the share (the others take from its end backward, so the rest is
+ * taken too); in another's it passes over taken blocks (another thief's) to the share's start, so
+ * every idle thread can help with a slow thread's share, not only the first to reach it.
  * So each thread keeps to the same blocks from unit to unit where the units' blocks correspond (the
  * coloured solve's strips), and a late or slow thread holds up nothing the others can take.
  * `cursor` is the thread's own: [0] the share it is in (0: its own), [1] blocks of it tried; set both
@@ -26,6 +28,7 @@ export function claimBlock(claim: Int32Array, base: number, count: number, part:
         cursor[0] = sh; cursor[1] = k + 1;
         return blk;
       }
+      if (sh !== 0) { k++; continue; }
     }
     sh++; k = 0;
   }
