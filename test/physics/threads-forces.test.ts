@@ -184,7 +184,7 @@ test('a world with nothing to collide does not check its bodies again after the 
   expect(stageNeedsCheck(world, 'collide', world.stages.collide)).toBe(2);
 });
 
-test('the adaptive choice: threads first, then one thread, then the faster by its average, probing the other every 16th call', () => {
+test('the adaptive choice: threads first, then one thread, then the faster by its estimate, probing the other less and less often', () => {
   const c = new LoopChooser();
   const site = 'loop';
   const ran: boolean[] = [];
@@ -196,9 +196,9 @@ test('the adaptive choice: threads first, then one thread, then the faster by it
   }
   expect(ran.slice(0, 5)).toEqual([true, true, true, false, false]);
   expect(c.preference(site)).toBe(false);
-  // After the first five calls only the probes (calls 16, 32, 48) take the threads.
-  expect(ran.map((p, i) => (p && i >= 5 ? i : -1)).filter((i) => i >= 0)).toEqual([16, 32, 48]);
-  // When the threads become faster (0.4 ms), the average follows and they are preferred.
+  // After the first five calls only the probes take the threads, 4, 8 and 16 calls apart (threads/adaptive.ts).
+  expect(ran.map((p, i) => (p && i >= 5 ? i : -1)).filter((i) => i >= 0)).toEqual([8, 16, 32]);
+  // When the threads become faster (0.4 ms), the estimate follows and they are preferred.
   for (let i = 0; i < 60; i++) {
     const parallel = c.choose(site);
     c.record(site, parallel, parallel ? 0.4 : 1, 1000);

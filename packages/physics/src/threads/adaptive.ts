@@ -7,9 +7,16 @@
  *
  * Policy per loop (a `site`): the first three calls run parallel (the first is not timed: it may pay
  * for sending arrays to the workers), the next two on one thread; from then on the faster way by its
- * estimate, except every probePeriod-th call, which runs the other way to keep its estimate current
- * (a machine that got quieter or busier is noticed within a few probes): often while the loop is
- * young and the two ways are close, rarely once one way is clearly faster.
+ * estimate, except that now and then a call runs the other way (a probe) to keep its estimate
+ * current, so a machine that got quieter or busier is noticed. The calls between probes back off: a
+ * probe that confirms the choice doubles them (from MIN_PROBE_PERIOD up to PROBE_EVERY while the two
+ * ways are within CLEAR_RATIO of each other, CLEAR_PROBE_EVERY once one is clearly faster), and a
+ * change of the preferred way, by a probe or by the preferred way's own calls getting slower, resets
+ * them to MIN_PROBE_PERIOD. So a switch that a passing delay caused is undone within a few calls, and
+ * a choice that holds is probed rarely. (A fixed period let WINDOW delayed calls of the threads in a
+ * row put a loop on one thread for a whole CLEAR_PROBE_EVERY calls: balls-in-box's narrowphase,
+ * 20,000 balls on 2 threads, steps 150 to 190, ran 15 of 40 calls on one thread at 2.35 ms against
+ * 1.47 on the threads.)
  *
  * A way's estimate is the least of its last WINDOW times. On a shared machine a delay is another
  * process's, or a worker the system did not schedule, or a garbage collection: it says nothing of
@@ -21,35 +28,28 @@
  * ms on the threads, after delays of 5 to 40 ms in single calls of the threads.
  */
 
-/** Calls between two runs of the way not currently preferred. */
+/** Calls between two probes right after a loop's preferred way changed (and at its start). */
+export const MIN_PROBE_PERIOD = 4;
+/** Most calls between two probes while the two ways' estimates are within CLEAR_RATIO of each other. */
 export const PROBE_EVERY = 16;
-
-/** Calls, from the first, during which an undecided loop is probed more often (EARLY_PROBE_EVERY). */
-export const EARLY_CALLS = 64;
-/** Calls between two probes while a loop is young and the two ways are within CLEAR_RATIO of each other. */
-export const EARLY_PROBE_EVERY = 4;
-/** Calls between two probes once a loop's ways differ by more than CLEAR_RATIO, after EARLY_CALLS. */
+/** Most calls between two probes once one way's estimate is more than CLEAR_RATIO times the other's. */
 export const CLEAR_PROBE_EVERY = 64;
 /**
- * Ratio of the two ways' estimates above which the choice is clear (probed less often). A probe of
- * the slower way costs the difference once: at 1.25 and CLEAR_PROBE_EVERY that is under 0.4 % of the
- * loop's time, where probing every PROBE_EVERY calls cost 3 % of balls-in-box's coloured solve
- * (20,000 balls, 2 threads, 6 ms a probe at a ratio of 1.48, under the 1.5 this was).
+ * Ratio of the two ways' estimates above which the choice is clear (probed at most every
+ * CLEAR_PROBE_EVERY calls). A probe of the slower way costs the difference once: at 1.25 and
+ * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls cost
+ * 3 % of balls-in-box's coloured solve (20,000 balls, 2 threads, 6 ms a probe at a ratio of 1.48).
  */
 export const CLEAR_RATIO = 1.25;
 
 /**
- * Calls between probes of the way not preferred, at call `c` with estimates `a` and `b` (ms per
- * element, positive): a close call is probed every EARLY_PROBE_EVERY calls while the loop is young
- * (one noisy first sample, such as a worker still compiling the kernel or a burst of other
- * processes, is then undone within a few calls instead of sixteen) and every PROBE_EVERY after; a
- * clear one (a ratio above CLEAR_RATIO) every PROBE_EVERY while young and every CLEAR_PROBE_EVERY
- * after (a probe of a way that is twice as slow costs a whole extra run of the loop).
+ * Calls until the next probe after a probe that confirmed the choice, from the calls `period` before
+ * it and the two ways' estimates `a` and `b` (ms per element, positive): twice `period`, at most
+ * CLEAR_PROBE_EVERY when one estimate is more than CLEAR_RATIO times the other, else PROBE_EVERY.
  */
-export function probePeriod(c: number, a: number, b: number): number {
+export function nextProbePeriod(period: number, a: number, b: number): number {
   const clear = a > CLEAR_RATIO * b || b > CLEAR_RATIO * a;
-  if (c < EARLY_CALLS) return clear ? PROBE_EVERY : EARLY_PROBE_EVERY;
-  return clear ? CLEAR_PROBE_EVERY : PROBE_EVERY;
+  return Math.min(2 * period, clear ? CLEAR_PROBE_EVERY : PROBE_EVERY);
 }
 
 /** Times a way's estimate is the least of (see the file's header). */
@@ -64,6 +64,12 @@ interface Site {
   serialTimes: Float64Array;
   parallelNext: number;
   serialNext: number;
+  /** The way preferred at the last choice (null: none yet), calls between probes now, calls since the last probe or change. */
+  preferred: boolean | null;
+  period: number;
+  since: number;
+  /** Whether the call chosen last is a probe. */
+  probing: boolean;
 }
 
 /** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
@@ -83,6 +89,7 @@ export class LoopChooser {
       s = {
         calls: 0, parallelTimes: new Float64Array(WINDOW).fill(NaN),
         serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
+        preferred: null, period: MIN_PROBE_PERIOD, since: 0, probing: false,
       };
       this.sites.set(site, s);
     }
@@ -92,15 +99,21 @@ export class LoopChooser {
     if (c < 5 || Number.isNaN(serial)) return false;
     if (Number.isNaN(parallel)) return true;
     const preferParallel = parallel <= serial;
-    return c % probePeriod(c, parallel, serial) === 0 ? !preferParallel : preferParallel;
+    // A change of the preferred way (its own calls got slower) is checked back on soon.
+    if (s.preferred !== preferParallel) { s.preferred = preferParallel; s.period = MIN_PROBE_PERIOD; s.since = 0; }
+    s.probing = ++s.since >= s.period;
+    if (!s.probing) return preferParallel;
+    s.since = 0;
+    return !preferParallel;
   }
 
   /** Records that a call of `site` ran `parallel` or not and took `ms` for `n` (> 0) elements. */
   record(site: string, parallel: boolean, ms: number, n: number): void {
     const s = this.sites.get(site);
     if (s === undefined) return;
-    const first = s.calls === 0;
+    const first = s.calls === 0, probe = s.probing;
     s.calls++;
+    s.probing = false;
     if (first || !(n > 0) || !(ms >= 0)) return;
     const v = ms / n;
     // Into the way's window of its last WINDOW times (see the file's header). Both ways follow the
@@ -108,6 +121,11 @@ export class LoopChooser {
     const at = parallel ? s.parallelNext : s.serialNext;
     (parallel ? s.parallelTimes : s.serialTimes)[at] = v;
     if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
+    if (!probe) return;
+    // A probe: the choice confirmed backs off; a changed one is checked back on soon.
+    const a = least(s.parallelTimes), b = least(s.serialTimes);
+    if ((a <= b) === s.preferred) s.period = nextProbePeriod(s.period, a, b);
+    else { s.preferred = a <= b; s.period = MIN_PROBE_PERIOD; s.since = 0; }
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
