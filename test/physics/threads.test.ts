@@ -99,6 +99,33 @@ test('a worker that throws surfaces its error in the main thread with the system
   expect(out[1]).toBe(2);
 });
 
+test('start runs a kernel on a worker while the caller goes on; join (or the next run) waits for it and surfaces its error', () => {
+  const world = make({ capacity: 10, threads: 3 });
+  const pool = world.threadPool!;
+  expect(pool.usable()).toBe(true);
+  const out = sharedFloat64(1000).fill(-1);
+  // The first worker takes all of [0, 1000); the caller's range and the second worker's are empty.
+  pool.start('testSystem', KERNEL.test, [out], [3, -1], 1000);
+  // The caller works meanwhile on memory the kernel does not touch, then joins: the kernel's sum.
+  let own = 0;
+  for (let i = 0; i < 1e5; i++) own += i;
+  expect(own).toBe((1e5 * (1e5 - 1)) / 2);
+  expect(pool.join()).toBe((999 * 1000) / 2);
+  expect(out[0]).toBe(0);
+  expect(out[999]).toBe(2997);
+  // Nothing left to join.
+  expect(pool.join()).toBe(0);
+  // A started kernel that throws: join names the system and the worker's message.
+  pool.start('cutSystem', KERNEL.test, [out], [1, 10], 1000);
+  expect(() => pool.join()).toThrow(/^cutSystem: a worker thread failed: test kernel: index 10/);
+  // A run joins a started kernel first, and reports its error.
+  pool.start('cutSystem', KERNEL.test, [out], [1, 20], 1000);
+  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toThrow(/^cutSystem: a worker thread failed: test kernel: index 20/);
+  pool.start('cutSystem', KERNEL.test, [out], [5, -1], 1000);
+  expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
+  expect(out[999]).toBe(1998);
+});
+
 test('threads: bad values are refused; disposeWorld stops the workers and the world steps on alone', () => {
   expect(() => createPhysicsWorld({ threads: 0 })).toThrow(/^createPhysicsWorld: threads must be/);
   expect(() => createPhysicsWorld({ threads: 1.5 })).toThrow(/^createPhysicsWorld: threads must be/);

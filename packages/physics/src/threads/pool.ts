@@ -230,6 +230,7 @@ export class ThreadPool {
    * @throws Error naming `system` if a worker's range threw (the message is the worker's).
    */
   run(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
+    this.join();
     const ctl = this.ctl;
     let idsId = -1;
     if (ids !== null) {
@@ -259,22 +260,70 @@ export class ThreadPool {
     } finally {
       this.await();
     }
-    if (ctl[CONTROL.ERROR] !== 0) {
-      const text = this.errorText;
-      let msg = '';
-      for (let i = 0; i < text.length && text[i] !== 0; i++) msg += String.fromCharCode(text[i]!);
-      throw new Error(`${system}: a worker thread failed: ${msg}`);
-    }
+    if (ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
     this.balance.record(kernel, n, t0, t1, this.finished);
     let sum = own;
     for (let i = 1; i < t; i++) sum += this.results[i]!;
     return sum;
   }
 
+  /** The system of the kernel `start` left running on a worker, or null. */
+  private started: string | null = null;
+
+  /**
+   * Starts kernel `kernel` (kernels.ts) over all of [0, n) on the first worker alone and returns at
+   * once, so the calling thread can do other work meanwhile (work that neither writes what the kernel
+   * reads nor reads what it writes); `join` waits for it. The other threads' ranges are empty
+   * ([n, n) and, for the caller, [0, 0)), so the kernel must do nothing on an empty range. The next
+   * `run` or `start` joins it first. Needs a usable pool (`usable()`) with at least one worker.
+   * @throws RangeError naming `system` if the pool has no usable worker or `arrays` is too long.
+   */
+  start(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
+    this.join();
+    if (this.workers.length === 0 || !this.usable()) throw new RangeError(`${system}: ThreadPool.start needs a usable worker`);
+    if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
+    const ctl = this.ctl;
+    for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
+    this.sync();
+    const P = this.params;
+    for (let i = 0; i < params.length; i++) P[i] = params[i]!;
+    ctl[CONTROL.KERNEL] = kernel;
+    ctl[CONTROL.NARRAYS] = arrays.length;
+    ctl[CONTROL.IDS] = -1;
+    ctl[CONTROL.ERROR] = 0;
+    ctl[CONTROL.BOUNDS] = 0; ctl[CONTROL.BOUNDS + 1] = 0;
+    for (let i = 2; i <= this.threads; i++) ctl[CONTROL.BOUNDS + i] = n;
+    this.started = system;
+    this.dispatch(COMMAND.RUN);
+    this.runs++;
+  }
+
+  /**
+   * Waits for the kernel `start` left running (nothing if none) and returns its result (0 if none).
+   * @throws Error naming the started kernel's system if the worker's range threw.
+   */
+  join(): number {
+    const system = this.started;
+    if (system === null) return 0;
+    this.started = null;
+    this.await();
+    if (this.ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
+    return this.results[1]!;
+  }
+
+  /** The message of the worker's error of the last run. */
+  private workerError(): string {
+    const text = this.errorText;
+    let msg = '';
+    for (let i = 0; i < text.length && text[i] !== 0; i++) msg += String.fromCharCode(text[i]!);
+    return msg;
+  }
+
   /** Stops and terminates the workers; the pool cannot run afterwards. Safe to call twice. */
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
+    this.started = null;
     const ctl = this.ctl;
     ctl[CONTROL.CMD] = COMMAND.QUIT;
     Atomics.add(ctl, CONTROL.GEN, 1);
