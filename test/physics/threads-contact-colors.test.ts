@@ -3,6 +3,8 @@ import { addBody, createPhysicsWorld, disposeWorld, SCENES, stateHash, stepMany,
 import { Rng } from '../../packages/physics/src/rng.js';
 import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/solver.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
+import { stripCut2D } from '../../packages/physics/src/collision/contact-strips-kernel.js';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // The 2D ball contacts solved by graph colouring on the world's threads (collision/contact-colors.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a
@@ -98,4 +100,36 @@ test('contact rows prepared on 2 threads (coloured solve off): the one-thread st
   // The kernel ran: it moves the contact buffers onto shared memory first.
   expect(world.collision.cache.rows.normalMass.buffer instanceof SharedArrayBuffer).toBe(true);
   expect(two).toBe(one);
+});
+
+test('the strip cut made on a worker (ThreadPool.start, beside the impact stage) is the cut made on the calling thread', () => {
+  // 3,000 solver bodies (every 7th fixed, every 5th other kinematic, moving) and 9,000 rows between random bodies,
+  // on shared memory; the kernel's outputs compared slot by slot (tolerance zero: the same arithmetic).
+  const world = createPhysicsWorld({ threads: 2 });
+  worlds.push(world);
+  const pool = world.threadPool!;
+  const bodies = 3000, rows = 9000, bins = 4096, rng = new Rng(5);
+  const shared = <T extends Float64Array | Int32Array | Uint8Array | Uint16Array>(C: { new (b: SharedArrayBuffer): T; BYTES_PER_ELEMENT: number }, n: number): T => new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
+  const sb = shared(Float64Array, 8 * bodies), ex = shared(Float64Array, 6 * bodies), type = shared(Uint8Array, bodies + 1), list = shared(Int32Array, bodies);
+  const IA = shared(Int32Array, rows), IB = shared(Int32Array, rows);
+  for (let k = 1; k < bodies; k++) {
+    list[k] = k;
+    type[k] = k % 7 === 0 ? 3 : k % 5 === 0 ? 2 : 0; // 0 dynamic (P[4]), others not
+    sb[k * 8 + 5] = k % 7 === 0 || k % 5 === 0 ? 0 : 1;
+    sb[k * 8] = k % 5 === 0 ? 0.5 : 0;
+    ex[k * 6] = rng.range(-3, 3); ex[k * 6 + 1] = rng.range(0, 2);
+  }
+  for (let i = 0; i < rows; i++) { IA[i] = i % 9 === 0 ? 0 : 1 + Math.floor(rng.range(0, bodies - 1)); IB[i] = 1 + Math.floor(rng.range(0, bodies - 1)); }
+  const outputs = () => [shared(Uint8Array, bodies), shared(Uint8Array, bodies), shared(Uint16Array, bodies), shared(Int32Array, bins), shared(Uint8Array, bins)];
+  const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff]);
+  const inline = outputs(), worker = outputs();
+  stripCut2D([sb, ex, type, list, ...inline, IA, IB], P, null, 0, 1);
+  pool.start('contactSolverSystem', KERNEL.stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);
+  pool.join();
+  for (let j = 0; j < inline.length; j++) expect(Array.from(worker[j]!)).toEqual(Array.from(inline[j]!));
+  // A real cut: fixed bodies in no strip, the others spread over all 32 strips, every row counted once.
+  const strip = inline[1]!;
+  expect(strip[7]).toBe(255);
+  expect(new Set(Array.from(strip.subarray(1)).filter((v) => v !== 255)).size).toBe(32);
+  expect(Array.from(inline[3]!).reduce((a, b) => a + b, 0)).toBe(rows - Array.from({ length: rows }, (_, i) => i).filter((i) => strip[IA[i]!] === 255 && strip[IB[i]!] === 255).length);
 });

@@ -46,6 +46,7 @@ import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
+import { stripCut2D } from './contact-strips-kernel.js';
 
 /**
  * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
@@ -111,6 +112,10 @@ interface ColorScratch {
   strip: Uint8Array; hist: Int32Array; binStrip: Uint8Array;
   /** Strips: each solver body's histogram bin (NO_BIN: fixed). */
   bin: Uint16Array;
+  /** The strips of the cut in `strip`, `bin`, `hist`, `binStrip` and `dyn` this step (0: none yet; stripRows). */
+  cut: number;
+  /** The strip cut kernel's arguments (stripCut2D). */
+  cutArrays: KernelArray[]; cutParams: Float64Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
   pending: boolean;
 }
@@ -130,8 +135,9 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)), bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      strip: new Uint8Array(1024), bin: new Uint16Array(1024), hist: new Int32Array(BINS), binStrip: new Uint8Array(BINS),
-      pending: false,
+      strip: new Uint8Array(new SharedArrayBuffer(1024)), bin: new Uint16Array(new SharedArrayBuffer(2 * 1024)),
+      hist: new Int32Array(new SharedArrayBuffer(4 * BINS)), binStrip: new Uint8Array(new SharedArrayBuffer(BINS)),
+      pending: false, cut: 0, cutArrays: [], cutParams: new Float64Array(6),
     };
     scratchOf.set(cs, s);
   }
@@ -145,8 +151,8 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   if (s.dyn.length < bodies) s.dyn = sharedLike(s.dyn, Math.max(bodies, 2 * s.dyn.length));
   if (s.bodyOrder.length < bodies) s.bodyOrder = sharedLike(s.bodyOrder, Math.max(bodies, 2 * s.bodyOrder.length));
   if (s.mask.length < bodies) s.mask = new Uint32Array(Math.max(bodies, 2 * s.mask.length));
-  if (s.strip.length < bodies) s.strip = new Uint8Array(Math.max(bodies, 2 * s.strip.length));
-  if (s.bin.length < bodies) s.bin = new Uint16Array(Math.max(bodies, 2 * s.bin.length));
+  if (s.strip.length < bodies) s.strip = sharedLike(s.strip, Math.max(bodies, 2 * s.strip.length));
+  if (s.bin.length < bodies) s.bin = sharedLike(s.bin, Math.max(bodies, 2 * s.bin.length));
   return s;
 }
 
@@ -214,59 +220,22 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
 }
 
 /**
- * Cuts the movable solver bodies into `strips` strips (even, 2 .. MAX_COLORS) across the longer axis of
- * their base positions (bodyExtra), each with about n / strips rows, and gives every row the packing
- * group of its lower strip (even strips first: strip 2j is group j, strip 2j + 1 group strips / 2 + j;
- * MAX_COLORS: the overflow colour, rows joining bodies more than one strip apart; 255 not packed), with
- * the counts per group and per packing range as colorRows. A body is movable unless nothing can change
- * it (no inverse mass or inertia, no gravity, no velocity). Returns the rows in the overflow colour.
+ * Gives every row the packing group of its lower strip (even strips first: strip 2j is group j, strip
+ * 2j + 1 group strips / 2 + j; MAX_COLORS: the overflow colour, rows joining bodies more than one strip
+ * apart; 255 not packed), from the cut of the movable solver bodies into `strips` strips (even, 2 ..
+ * MAX_COLORS; contact-strips-kernel.ts stripCut2D: each with about n / strips rows, across the longer
+ * axis of their base positions), which it makes unless the cut in `s.strip` is already of `strips`
+ * (`s.cut`, made on a worker by startStripCut); with the counts per group and per packing range as
+ * colorRows. Returns the rows in the overflow colour.
  */
-function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number, strips: number, dyn: Uint8Array): number {
-  const n = buf.count, bodies = cs.solverBodyCount;
+function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number, strips: number): number {
+  const n = buf.count;
   const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
-  const sb = cs.bodyState, ex = cs.bodyExtra, strip = s.strip, color = s.color;
-  // The longer axis of the movable bodies' spread.
-  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
-  strip[0] = 255;
-  for (let k = 1; k < bodies; k++) {
-    const o = k * 8;
-    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) { strip[k] = 255; continue; }
-    strip[k] = 0;
-    const x = ex[k * 6]!, y = ex[k * 6 + 1]!;
-    if (x < x0) x0 = x;
-    if (x > x1) x1 = x;
-    if (y < y0) y0 = y;
-    if (y > y1) y1 = y;
+  const strip = s.strip, color = s.color;
+  if (s.cut !== strips) {
+    stripCut2D(cutArguments(cs, buf, s), cutParameters(cs, buf, s, strips), null, 0, 1);
+    s.cut = strips;
   }
-  const axis = x1 - x0 >= y1 - y0 ? 0 : 1;
-  const lo = axis === 0 ? x0 : y0, span = axis === 0 ? x1 - x0 : y1 - y0;
-  const scale = span > 0 && Number.isFinite(span) ? (BINS - 1) / span : 0;
-  // Each movable body's bin along the axis (NO_BIN: fixed), then rows a bin (by the row's first
-  // movable body), then the bins' strips at the rows' quantiles.
-  const binOf = s.bin, hist = s.hist, binStrip = s.binStrip;
-  binOf[0] = NO_BIN;
-  for (let k = 1; k < bodies; k++) {
-    if (strip[k] === 255) { binOf[k] = NO_BIN; continue; }
-    const bin = Math.floor((ex[k * 6 + axis]! - lo) * scale);
-    binOf[k] = bin >= 0 && bin < BINS ? bin : 0;
-  }
-  hist.fill(0);
-  for (let i = 0; i < n; i++) {
-    const ba = binOf[IA[i]!]!;
-    const bin = ba !== NO_BIN ? ba : binOf[IB[i]!]!;
-    if (bin !== NO_BIN) hist[bin]++;
-  }
-  let total = 0;
-  for (let j = 0; j < BINS; j++) total += hist[j]!;
-  let acc = 0;
-  for (let j = 0; j < BINS; j++) {
-    // Strip of the bin's middle row: floor(strips * rows before its middle / rows).
-    const mid = acc + hist[j]! / 2;
-    const st = total > 0 ? Math.min(strips - 1, Math.floor((strips * mid) / total)) : 0;
-    binStrip[j] = st;
-    acc += hist[j]!;
-  }
-  for (let k = 1; k < bodies; k++) if (strip[k] !== 255) strip[k] = binStrip[binOf[k]!]!;
   // Each row's group.
   const W = MAX_COLORS + 1, partCounts = s.offsets, counts = s.counts, half = strips >> 1;
   partCounts.fill(0, 0, parts * W);
@@ -290,6 +259,44 @@ function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
     }
   }
   return overflow;
+}
+
+/** stripCut2D's arrays for `buf`'s rows (see contact-strips-kernel.ts), in `s.cutArrays`. */
+function cutArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
+  const A = s.cutArrays;
+  A.length = 0;
+  A.push(cs.bodyState, cs.bodyExtra, cs.bodyType, cs.solverBodies, s.dyn, s.strip, s.bin, s.hist, s.binStrip, buf.ia, buf.ib);
+  return A;
+}
+
+/** stripCut2D's parameters for a cut into `strips` strips, in `s.cutParams`. */
+function cutParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, strips: number): Float64Array {
+  const P = s.cutParams;
+  P[0] = cs.solverBodyCount; P[1] = buf.count; P[2] = strips; P[3] = BINS; P[4] = BodyType.Dynamic; P[5] = NO_BIN;
+  return P;
+}
+
+/**
+ * Starts this step's strip cut (STRIPS strips) on a worker of the world's pool when the step's 2D ball
+ * contacts will go through the coloured solve (useColoredSolve; `others` as there), so it runs while
+ * the calling thread runs the impact stage (ThreadPool.start): the cut reads the solver bodies' inverse
+ * masses, base positions and types and the rows' bodies, which that stage does not change (it changes
+ * the movable bodies' velocities, which the cut reads only of bodies without inverse mass or inertia,
+ * and the angle corrections). solveColoredSubsteps joins it before it plans the rows. Otherwise the
+ * plan cuts on the calling thread (stripRows), the same cut.
+ */
+export function startStripCut(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
+  const cs = world.collision;
+  const old = scratchOf.get(cs);
+  if (old !== undefined) old.cut = 0;
+  const pool = world.threadPool;
+  if (pool === null || pool.threads < 2 || others || world.dimensions !== 2 || pool.threads > 16) return;
+  if (!(buf.count >= cs.settings.coloredSolveMinRows) || !isShared(cs.bodyState) || !isShared(cs.bodyExtra)) return;
+  if (!isShared(cs.bodyType) || !isShared(cs.solverBodies) || !pool.usable()) return;
+  shareContactBuffer(buf);
+  const s = scratch(cs, buf.count, cs.solverBodyCount);
+  pool.start('contactSolverSystem', KERNEL.stripCut2D, cutArguments(cs, buf, s), cutParameters(cs, buf, s, STRIPS), 1);
+  s.cut = STRIPS;
 }
 
 /**
@@ -346,13 +353,9 @@ function layout(s: ColorScratch, parts: number, groups: number, colors: number, 
  */
 function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
   const bodies = cs.solverBodyCount, plan = s.plan;
-  // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver.ts).
-  const list = cs.solverBodies, type = cs.bodyType, dyn = s.dyn;
-  dyn[0] = 0;
-  for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === BodyType.Dynamic ? 1 : 0;
   const limit = Math.max(64, buf.count >> 6);
   for (let strips = STRIPS; strips >= 4; strips >>= 1) {
-    if (stripRows(cs, buf, s, parts, strips, dyn) > limit) continue;
+    if (stripRows(cs, buf, s, parts, strips) > limit) continue;
     const half = strips >> 1;
     // Movable bodies by strip pair (counting sort), for the even blocks' body stages.
     const bb = s.bodyBounds, order = s.bodyOrder, strip = s.strip;
@@ -451,6 +454,7 @@ export function solveColoredSubsteps(
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   shareContactBuffer(buf);
+  pool.join(); // the strip cut startStripCut left on a worker
   const np = planRows(cs, buf, s, pool.threads);
   const plan = s.plan, P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;

@@ -14,7 +14,7 @@ import {
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
-import { shareContactBuffer, solveColoredSubsteps, useColoredSolve } from './contact-colors.js';
+import { shareContactBuffer, solveColoredSubsteps, startStripCut, useColoredSolve } from './contact-colors.js';
 import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
@@ -83,6 +83,10 @@ function solveContacts(world: PhysicsWorld): void {
   prepareContacts(world, buf, ballStickSpeed(cs.settings, length));
   prepareManifolds(world);
   if (world.dimensions === 3) prepareManifolds3D(world);
+  const is2D = world.dimensions === 2;
+  const others = jointsToSolve(world) || cs.shapes.manifolds.count > 0;
+  // A threaded 2D world cuts the coloured solve's strips on a worker meanwhile (contact-colors.ts).
+  if (is2D) startStripCut(world, buf, others);
   applyImpacts(world, buf);
   measureApproach(world, buf);
 
@@ -99,12 +103,11 @@ function solveContacts(world: PhysicsWorld): void {
   makeSoftInto(sp, 7, 2 * hertz, st.contactDampingRatio, hs);
   prepareJoints(world, hs);
   prepareJoints3D(world, hs);
-  const is2D = world.dimensions === 2;
   // Which way is down, for the support rows of the 2D relax sweep (support.ts).
   downwardInto(world.gravity, sp, 2);
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
-  const colored = is2D && useColoredSolve(world, buf, jointsToSolve(world) || cs.shapes.manifolds.count > 0);
+  const colored = is2D && useColoredSolve(world, buf, others);
   if (colored) solveColoredSubsteps(world, buf, hs, [sp[4]!, sp[5]!, sp[6]!, sp[7]!, sp[8]!, sp[9]!], push);
   for (let s = 0; s < (colored ? 0 : substeps); s++) {
     integrateVelocities(world, hs);

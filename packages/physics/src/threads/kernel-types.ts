@@ -4,7 +4,7 @@
  */
 
 /** A typed array a kernel reads or writes. */
-export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
+export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint16Array | Uint8Array;
 
 /**
  * The signature every kernel has: `A` the typed arrays in the order its caller documents, `P` the
