@@ -1,6 +1,7 @@
 import { afterEach, expect, test } from 'vitest';
 import { createPhysicsWorld, disposeWorld, SCENES, stateHash, step, stepMany, type PhysicsWorld } from '@bitphysics/physics';
 import { stageThreading } from '../../packages/physics/src/collision/solver-stages-threads.js';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // The contact solver's stages beside the coloured substeps on the world's threads
 // (collision/solver-stages-threads.ts): the solver rows' fill, measureApproach and finishBodies do each
@@ -41,17 +42,25 @@ function energy(world: PhysicsWorld, count: number): number {
   return e;
 }
 
-test('solver rows, approach speeds and write-back on 2 threads (coloured solve off): the one-thread state to the bit', () => {
+test('solver rows, approach speeds, write-back and the warm-start table on 2 threads (coloured solve off): the one-thread state to the bit', () => {
   stageThreading.minPerThread = 1;
   const count = 300, steps = 80;
   const one = pile(count, 1, false);
   stepMany(one, steps);
   const runs = stageThreading.runs;
   const two = pile(count, 2, false);
+  // Count the warm-start tables a worker builds (ThreadPool.start).
+  const pool = two.threadPool!, start = pool.start.bind(pool);
+  let tables = 0;
+  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.warmStartTable) tables++; start(system, kernel, arrays, params, n); };
   stepMany(two, steps);
-  // Fill, approach and write-back (two kernels) each step with contacts: most of the 80.
-  expect(stageThreading.runs - runs).toBeGreaterThan(3 * 40);
+  // Fill, approach, write-back and the warm-start table each step with contacts: most of the 80.
+  expect(stageThreading.runs - runs).toBeGreaterThan(4 * 40);
+  expect(tables).toBeGreaterThan(40);
   expect(stateHash(two)).toBe(stateHash(one));
+  // The table a worker built while the step finished is storeWarmStart's, slot by slot.
+  expect(two.collision.cache.size).toBe(one.collision.cache.size);
+  expect(Array.from(two.collision.cache.slots)).toEqual(Array.from(one.collision.cache.slots));
   // The deepest overlap left (not in the hash) is the one-thread value too.
   expect(two.collision.stats.maxOverlap).toBe(one.collision.stats.maxOverlap);
   expect(one.collision.stats.maxOverlap).toBeGreaterThan(0);

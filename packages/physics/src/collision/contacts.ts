@@ -161,6 +161,13 @@ function hashKey(kind: number, a: number, b: number, f: number): number {
   return Math.imul(h, 0x27d4eb2f) >>> 0;
 }
 
+/** Slots of a warm-start table for `n` rows: the least power of two, at least 16, that is at least 2n. */
+export function warmStartSlots(n: number): number {
+  let size = 16;
+  while (size < 2 * n) size *= 2;
+  return size;
+}
+
 /**
  * Stores this step's contacts as the cache for the next step. The cache swaps buffers with `current`
  * (no copying): afterwards `current` holds stale rows and must be refilled from count 0.
@@ -172,8 +179,7 @@ export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): C
   const n = current.count;
   let size = cache.size;
   if (size < 2 * n || size === 0) {
-    size = 16;
-    while (size < 2 * n) size *= 2;
+    size = warmStartSlots(n);
     cache.slots = new Int32Array(size);
     cache.size = size;
   } else {

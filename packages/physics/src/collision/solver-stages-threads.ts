@@ -7,7 +7,9 @@
  * - `approachOnThreads`: measureApproach, a range of rows a thread;
  * - `finishOnThreads`: finishBodies (velocities, positions and angles back to the components; the
  *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
- * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour.
+ * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
+ * - `storeWarmStartOnThreads`: the warm-start table of the step's contacts, built on a worker while
+ *   the calling thread finishes the step (the same table).
  *
  * The first three do each body's or row's arithmetic of the one-thread loop unchanged (kernels in
  * solver-stages-kernel.ts), so the state after a step is the same to the bit as with `threads: 1`. The
@@ -26,7 +28,7 @@
  */
 
 import type { PhysicsWorld } from '../world.js';
-import type { ContactBuffer } from './contacts.js';
+import { warmStartSlots, type ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
@@ -143,6 +145,38 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   const g = world.gravity;
   P[0] = g[0]!; P[1] = g[1]!; P[2] = g[2]!; P[3] = BodyType.Dynamic;
   return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));
+}
+
+/**
+ * storeWarmStart (contacts.ts) of a 2D world's contact rows with the hash table built on a worker
+ * (ThreadPool.start, kernel warmStartTable: the same table to the slot) while the calling thread
+ * finishes the step: the rows are swapped into the cache at once, and the table is complete once the
+ * pool joins, which its next run or start does, prepareContacts does before it reads the table, and
+ * `step` does before it returns. Returns the buffer to fill next (as storeWarmStart), or null when the
+ * stage stays on one thread (too few rows, no usable worker; the caller's storeWarmStart then runs).
+ */
+export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer): ContactBuffer | null {
+  const n = buf.count;
+  const pool = poolFor(world, n);
+  if (pool === null || pool.threads < 2 || !pool.usable()) return null;
+  const cache = world.collision.cache;
+  shareContactBuffer(buf);
+  pool.join();
+  if (cache.size < 2 * n || cache.size === 0 || !isShared(cache.slots)) {
+    const size = cache.size < 2 * n || cache.size === 0 ? warmStartSlots(n) : cache.size;
+    cache.slots = new Int32Array(new SharedArrayBuffer(4 * size));
+    cache.size = size;
+  }
+  const s = scratch(world), A = s.arrays, P = s.params;
+  A.length = 0;
+  A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
+  P[0] = n; P[1] = cache.size;
+  pool.start('contactSolverSystem', KERNEL.warmStartTable, A, P, 1);
+  stageThreading.runs++;
+  const spare = cache.rows;
+  cache.rows = buf;
+  spare.count = 0;
+  return spare;
 }
 
 /**

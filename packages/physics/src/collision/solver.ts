@@ -15,7 +15,7 @@ import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, 
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
 import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
 import { shareContactBuffer, solveColoredSubsteps, startStripCut, useColoredSolve } from './contact-colors.js';
-import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads } from './solver-stages-threads.js';
+import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads, storeWarmStartOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
@@ -143,7 +143,8 @@ function solveContacts(world: PhysicsWorld): void {
   if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
   finishJoints3D(world, hs);
-  cs.contacts = storeWarmStart(cs.cache, buf);
+  // A threaded 2D world builds the warm-start table on a worker while the step finishes (solver-stages-threads.ts).
+  cs.contacts = storeWarmStartOnThreads(world, buf) ?? storeWarmStart(cs.cache, buf);
 }
 
 /**
@@ -496,6 +497,8 @@ function prepareOnThreads(world: PhysicsWorld, buf: ContactBuffer, stick: number
 }
 
 function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number): void {
+  // The warm-start table may still be building on a worker (storeWarmStartOnThreads).
+  world.threadPool?.join();
   if (prepareOnThreads(world, buf, stick)) return;
   const c = world.components;
   const cs = world.collision;

@@ -50,6 +50,18 @@ export function step(world: PhysicsWorld): void {
   }
   const timings = world.timings;
   for (const s of STAGES) timings[s] = 0;
+  try {
+    runStages(world);
+  } finally {
+    // Work a worker was left doing while the step finished (the warm-start table,
+    // collision/solver-stages-threads.ts) is done before step returns or throws.
+    world.threadPool?.join();
+  }
+  world.steps++;
+}
+
+/** The stages of one step (see step). */
+function runStages(world: PhysicsWorld): void {
   runStage(world, 'spawn');
   const n = world.substeps;
   const h = world.dt / n;
@@ -69,7 +81,6 @@ export function step(world: PhysicsWorld): void {
   world.time = t0 + world.dt;
   if (movers) restoreStepStart(world, movers);
   runStage(world, 'finalize');
-  world.steps++;
 }
 
 const moverTerms = (world: PhysicsWorld) => [world.components.Position, world.components.Velocity];

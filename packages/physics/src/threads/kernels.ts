@@ -23,6 +23,7 @@ import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
 import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
 import { stripCut2D } from '../collision/contact-strips-kernel.js';
+import { warmStartTable } from '../collision/warm-start-kernel.js';
 import {
   approach2D, containBodies2D, deepestRow2D, finishBodies2D, finishBodyRows2D, gatherFill2D, restitutionColored2D, restitutionRows2D, restitutionTargets2D,
 } from '../collision/solver-stages-kernel.js';
@@ -292,7 +293,7 @@ export const KERNEL = Object.freeze({
   sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
   barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeysHist: 11, treeForces: 12,
   quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, mortonBucketSort: 17, treeMoments: 18, mortonScatter: 19, centralForce: 20, attractors: 21, solveColored2D: 22, prepareContacts2D: 23,
-  gatherFill2D: 24, approach2D: 25, finishBodies2D: 26, restitutionColored2D: 27, stripCut2D: 28,
+  gatherFill2D: 24, approach2D: 25, finishBodies2D: 26, restitutionColored2D: 27, stripCut2D: 28, warmStartTable: 29,
 });
 
 /**
@@ -330,5 +331,5 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
   treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors, solveColored2D, prepareContacts2D,
-  gatherFill2D, approach2D, finishBodies2D, restitutionColored2D, stripCut2D,
+  gatherFill2D, approach2D, finishBodies2D, restitutionColored2D, stripCut2D, warmStartTable,
 ]);
