@@ -1,5 +1,5 @@
 import { expect, test } from 'vitest';
-import { CLEAR_PROBE_EVERY, LoopChooser, MIN_PROBE_PERIOD, nextProbePeriod, PROBE_EVERY, WINDOW } from '../../packages/physics/src/threads/adaptive.js';
+import { CLEAR_PROBE_EVERY, LoopChooser, MIN_PROBE_PERIOD, nextProbePeriod, PROBE_EVERY, SWITCH_RATIO, WINDOW } from '../../packages/physics/src/threads/adaptive.js';
 
 // The adaptive choice between a pool's threads and one thread (threads/adaptive.ts). The rule under
 // test is counted in calls, not timed, so there is no tolerance: the fake loop's times are given.
@@ -72,4 +72,15 @@ test('WINDOW delayed calls in a row switch a loop for a few calls, not for CLEAR
   const { ran, chooser } = simulate(160, (i, p) => (p ? (i >= 70 && i < 73 ? 8 : 0.5) : 1));
   expect(serialCalls(ran)).toEqual([3, 4, 8, 16, 32, 64, 73, 74, 75, 80, 88, 104, 136]);
   expect(chooser.preference('loop')).toBe(true);
+});
+
+test('the other way takes over only when it looks more than 10 % faster (SWITCH_RATIO)', () => {
+  expect(SWITCH_RATIO).toBe(0.9);
+  // One thread takes 1.05 ms for 1000 elements. The threads take 1 ms for calls 0 to 29, then 1.1 ms
+  // (within 10 % of one thread: they stay preferred, probed at 48 and 64), then from call 60 1.3 ms:
+  // after WINDOW calls at that cost one thread takes over at call 63, and the threads are probed 4
+  // and 8 calls later (66, 74). Without the margin the loop went to one thread at call 34 already.
+  const ran = simulate(80, (i, p) => (p ? (i < 30 ? 1 : i < 60 ? 1.1 : 1.3) : 1.05)).ran;
+  expect(serialCalls(ran).filter((i) => i < 63)).toEqual([3, 4, 8, 16, 32, 48]);
+  expect(ran.slice(63)).toEqual(ran.slice(63).map((_, k) => k + 63 === 66 || k + 63 === 74));
 });

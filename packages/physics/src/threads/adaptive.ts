@@ -13,7 +13,8 @@
  * ways are within CLEAR_RATIO of each other, CLEAR_PROBE_EVERY once one is clearly faster), and a
  * change of the preferred way, by a probe or by the preferred way's own calls getting slower, resets
  * them to MIN_PROBE_PERIOD. So a switch that a passing delay caused is undone within a few calls, and
- * a choice that holds is probed rarely. (A fixed period let WINDOW delayed calls of the threads in a
+ * a choice that holds is probed rarely. The way not preferred takes over only when its estimate is
+ * below SWITCH_RATIO times the preferred way's, so close ways do not trade places back and forth. (A fixed period let WINDOW delayed calls of the threads in a
  * row put a loop on one thread for a whole CLEAR_PROBE_EVERY calls: balls-in-box's narrowphase,
  * 20,000 balls on 2 threads, steps 150 to 190, ran 15 of 40 calls on one thread at 2.35 ms against
  * 1.47 on the threads.)
@@ -51,6 +52,16 @@ export function nextProbePeriod(period: number, a: number, b: number): number {
   const clear = a > CLEAR_RATIO * b || b > CLEAR_RATIO * a;
   return Math.min(2 * period, clear ? CLEAR_PROBE_EVERY : PROBE_EVERY);
 }
+
+/**
+ * How much faster the way not preferred must look to take over (its estimate below this times the
+ * preferred way's). Two ways within 10 % of each other cost about the same, but each change of the
+ * preferred way brings probes MIN_PROBE_PERIOD calls apart, and a least-of-WINDOW estimate can be one
+ * lucky call (a worker that happened to be awake): balls-in-box's cell pass (20,000 balls, 2 threads)
+ * ran at 0.7 to 1.0 of its one-thread time and changed ways 7 times in 40 steps. With the margin a
+ * step took 0.979, 0.982, 0.997, 1.002 and 0.977 of before in process (0.93 in steps 150 to 180).
+ */
+export const SWITCH_RATIO = 0.9;
 
 /** Times a way's estimate is the least of (see the file's header). */
 export const WINDOW = 3;
@@ -98,7 +109,7 @@ export class LoopChooser {
     const parallel = least(s.parallelTimes), serial = least(s.serialTimes);
     if (c < 5 || Number.isNaN(serial)) return false;
     if (Number.isNaN(parallel)) return true;
-    const preferParallel = parallel <= serial;
+    const preferParallel = prefers(s.preferred, parallel, serial);
     // A change of the preferred way (its own calls got slower) is checked back on soon.
     if (s.preferred !== preferParallel) { s.preferred = preferParallel; s.period = MIN_PROBE_PERIOD; s.since = 0; }
     s.probing = ++s.since >= s.period;
@@ -124,8 +135,9 @@ export class LoopChooser {
     if (!probe) return;
     // A probe: the choice confirmed backs off; a changed one is checked back on soon.
     const a = least(s.parallelTimes), b = least(s.serialTimes);
-    if ((a <= b) === s.preferred) s.period = nextProbePeriod(s.period, a, b);
-    else { s.preferred = a <= b; s.period = MIN_PROBE_PERIOD; s.since = 0; }
+    const p = prefers(s.preferred, a, b);
+    if (p === s.preferred) s.period = nextProbePeriod(s.period, a, b);
+    else { s.preferred = p; s.period = MIN_PROBE_PERIOD; s.since = 0; }
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
@@ -136,6 +148,16 @@ export class LoopChooser {
     if (Number.isNaN(parallel) || Number.isNaN(serial)) return null;
     return parallel <= serial;
   }
+}
+
+/**
+ * Whether the threads are preferred, from the estimates `a` (threads) and `b` (one thread) and the
+ * preference so far `was` (null: none yet, the smaller estimate wins): the other way takes over only
+ * when its estimate is below SWITCH_RATIO times the preferred way's (NaN: never).
+ */
+function prefers(was: boolean | null, a: number, b: number): boolean {
+  if (was === null) return a <= b;
+  return was ? !(b < SWITCH_RATIO * a) : a < SWITCH_RATIO * b;
 }
 
 /** A way's estimate, ms per element: the least of its window's times (NaN when it has none). */
