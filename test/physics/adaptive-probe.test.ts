@@ -19,7 +19,7 @@ function simulate(calls: number, time: (i: number, parallel: boolean) => number)
 /** The calls that ran on one thread. */
 const serialCalls = (ran: boolean[]): number[] => ran.map((p, i) => (p ? -1 : i)).filter((i) => i >= 0);
 
-test('the calls between probes double while the choice holds, up to CLEAR_PROBE_EVERY when it is clear', () => {
+test('the calls between probes grow while the choice holds: twice up to PROBE_EVERY when close, four times up to CLEAR_PROBE_EVERY when clear', () => {
   expect(MIN_PROBE_PERIOD).toBe(4);
   expect(PROBE_EVERY).toBe(16);
   expect(CLEAR_PROBE_EVERY).toBe(64);
@@ -27,11 +27,12 @@ test('the calls between probes double while the choice holds, up to CLEAR_PROBE_
   expect(nextProbePeriod(4, 1, 1.2)).toBe(8);
   expect(nextProbePeriod(16, 1, 1.2)).toBe(PROBE_EVERY);
   expect(nextProbePeriod(32, 1.2, 1)).toBe(PROBE_EVERY);
+  expect(nextProbePeriod(4, 1, 2)).toBe(16);
   expect(nextProbePeriod(32, 1, 2)).toBe(CLEAR_PROBE_EVERY);
   expect(nextProbePeriod(64, 2, 1)).toBe(CLEAR_PROBE_EVERY);
   // The threads twice as fast: calls 3 and 4 are one thread's first two, then probes of one thread
-  // 4, 8, 16 and 32 calls apart, then every 64.
-  expect(serialCalls(simulate(300, (_, p) => (p ? 0.5 : 1)).ran)).toEqual([3, 4, 8, 16, 32, 64, 128, 192, 256]);
+  // 4 and 16 calls apart, then every 64.
+  expect(serialCalls(simulate(300, (_, p) => (p ? 0.5 : 1)).ran)).toEqual([3, 4, 8, 24, 88, 152, 216, 280]);
   // One thread a little faster (1 against 1.1 ms): the threads are probed at 8, 16 and 32 (PROBE_EVERY apart from then on).
   const close = simulate(48, (_, p) => (p ? 1.1 : 1)).ran;
   expect(close.map((p, i) => (p && i >= 5 ? i : -1)).filter((i) => i >= 0)).toEqual([8, 16, 32]);
@@ -41,9 +42,9 @@ test('a noisy early sample of the threads is undone within a few calls', () => {
   // The threads take 0.6 ms for 1000 elements and one thread 1 ms, but other processes delayed the
   // threads' two timed calls of the start (5 ms, then 1.2 ms): the threads look slower, so calls 5
   // to 7 run on one thread; the threads are probed at call 8, MIN_PROBE_PERIOD after the choice was
-  // made, found faster and kept; one thread is then probed at 12, 20 and 36 (4, 8, 16 calls apart).
+  // made, found faster and kept; one thread is then probed at 12 and 28 (4 and 16 calls apart).
   const { ran, chooser } = simulate(40, (i, p) => (p ? (i === 1 ? 5 : i === 2 ? 1.2 : 0.6) : 1));
-  expect(serialCalls(ran)).toEqual([3, 4, 5, 6, 7, 12, 20, 36]);
+  expect(serialCalls(ran)).toEqual([3, 4, 5, 6, 7, 12, 28]);
   expect(chooser.preference('loop')).toBe(true);
 });
 
@@ -54,8 +55,8 @@ test('one delayed call does not switch a loop; WINDOW slow calls in a row do', (
   // 3 ms: after WINDOW calls at that cost the loop runs on one thread.
   expect(WINDOW).toBe(3);
   const { ran, chooser } = simulate(40, (i, p) => (p ? (i === 10 || i === 20 ? 8 : i >= 33 ? 3 : 0.5) : 1));
-  // Calls 3 and 4 are one thread's first two; 8, 16 and 32 are probes.
-  expect(serialCalls(ran).filter((i) => i < 33)).toEqual([3, 4, 8, 16, 32]);
+  // Calls 3 and 4 are one thread's first two; 8 and 24 are probes.
+  expect(serialCalls(ran).filter((i) => i < 33)).toEqual([3, 4, 8, 24]);
   // Calls 33, 34 and 35 run on the threads at 3 ms; 36 to 38 on one thread, and 39 probes the
   // threads (MIN_PROBE_PERIOD after the switch), which are still slower.
   expect(ran.slice(33, 36)).toEqual([true, true, true]);
@@ -66,11 +67,11 @@ test('one delayed call does not switch a loop; WINDOW slow calls in a row do', (
 test('WINDOW delayed calls in a row switch a loop for a few calls, not for CLEAR_PROBE_EVERY', () => {
   // The threads take 0.5 ms and one thread 1 ms, but calls 70 to 72 of the threads are delayed to
   // 8 ms (a burst of other processes). Calls 73 to 75 then run on one thread, call 76 probes the
-  // threads, finds them fast again and goes back to them; one thread is probed again 4, 8, 16 and 32
-  // calls later. (With a fixed period, the loop stayed on one thread until call 128, 55 calls at
-  // twice the time.)
+  // threads, finds them fast again and goes back to them; one thread is probed again 4 and 20 calls
+  // later. (With a fixed period, the loop stayed on one thread until call 128, 55 calls at twice the
+  // time.)
   const { ran, chooser } = simulate(160, (i, p) => (p ? (i >= 70 && i < 73 ? 8 : 0.5) : 1));
-  expect(serialCalls(ran)).toEqual([3, 4, 8, 16, 32, 64, 73, 74, 75, 80, 88, 104, 136]);
+  expect(serialCalls(ran)).toEqual([3, 4, 8, 24, 73, 74, 75, 80, 96]);
   expect(chooser.preference('loop')).toBe(true);
 });
 
