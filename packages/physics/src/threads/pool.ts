@@ -239,15 +239,7 @@ export class ThreadPool {
       for (let i = 0; i < n; i++) buf[i] = ids[i]!;
       idsId = this.idOf(buf);
     }
-    if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
-    for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
-    this.sync();
-    const P = this.params;
-    for (let i = 0; i < params.length; i++) P[i] = params[i]!;
-    ctl[CONTROL.KERNEL] = kernel;
-    ctl[CONTROL.NARRAYS] = arrays.length;
-    ctl[CONTROL.IDS] = idsId;
-    ctl[CONTROL.ERROR] = 0;
+    this.setUp(system, kernel, arrays, params, idsId);
     this.balance.bounds(kernel, n, ctl, CONTROL.BOUNDS);
     const t0 = epochMs();
     this.dispatch(COMMAND.RUN);
@@ -255,7 +247,7 @@ export class ThreadPool {
     const t = this.threads;
     let own: number, t1 = t0;
     try {
-      own = KERNELS[kernel]!(arrays, P, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
+      own = KERNELS[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
       t1 = epochMs();
     } finally {
       this.await();
@@ -265,6 +257,24 @@ export class ThreadPool {
     let sum = own;
     for (let i = 1; i < t; i++) sum += this.results[i]!;
     return sum;
+  }
+
+  /**
+   * Writes a run's kernel, arrays (posted to the workers first if new), parameters and ids slot
+   * (-1: none) into the control block, and clears the error flag.
+   * @throws RangeError naming `system` if `arrays` is too long.
+   */
+  private setUp(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, idsId: number): void {
+    if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
+    const ctl = this.ctl;
+    for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
+    this.sync();
+    const P = this.params;
+    for (let i = 0; i < params.length; i++) P[i] = params[i]!;
+    ctl[CONTROL.KERNEL] = kernel;
+    ctl[CONTROL.NARRAYS] = arrays.length;
+    ctl[CONTROL.IDS] = idsId;
+    ctl[CONTROL.ERROR] = 0;
   }
 
   /** The system of the kernel `start` left running on a worker, or null. */
@@ -281,16 +291,8 @@ export class ThreadPool {
   start(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
     this.join();
     if (this.workers.length === 0 || !this.usable()) throw new RangeError(`${system}: ThreadPool.start needs a usable worker`);
-    if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
+    this.setUp(system, kernel, arrays, params, -1);
     const ctl = this.ctl;
-    for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
-    this.sync();
-    const P = this.params;
-    for (let i = 0; i < params.length; i++) P[i] = params[i]!;
-    ctl[CONTROL.KERNEL] = kernel;
-    ctl[CONTROL.NARRAYS] = arrays.length;
-    ctl[CONTROL.IDS] = -1;
-    ctl[CONTROL.ERROR] = 0;
     ctl[CONTROL.BOUNDS] = 0; ctl[CONTROL.BOUNDS + 1] = 0;
     for (let i = 2; i <= this.threads; i++) ctl[CONTROL.BOUNDS + i] = n;
     this.started = system;
