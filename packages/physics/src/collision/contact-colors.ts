@@ -43,7 +43,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
-import { isShared, sharedLike } from '../threads/pool.js';
+import { isShared, sharedLike, type ThreadPool } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 import { stripCut2D } from './contact-strips-kernel.js';
@@ -164,13 +164,18 @@ export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others:
   // A plan left by a step that stopped before its restitution stage is not this step's.
   const old = scratchOf.get(world.collision);
   if (old !== undefined) old.pending = false;
+  return coloredPool(world, buf, others) !== null;
+}
+
+/** The world's pool if its step's 2D ball contacts go through the coloured solve (useColoredSolve), else null. */
+function coloredPool(world: PhysicsWorld, buf: ContactBuffer, others: boolean): ThreadPool | null {
   const pool = world.threadPool;
-  if (pool === null || others || world.dimensions !== 2 || pool.threads > 16) return false;
+  if (pool === null || others || world.dimensions !== 2 || pool.threads > 16) return null;
   const cs = world.collision;
   // The same threshold for every thread count, so worlds with 2, 3 or n threads take the same path
   // each step and end in the same state.
-  if (!(buf.count >= cs.settings.coloredSolveMinRows)) return false;
-  return isShared(cs.bodyState) && isShared(cs.bodyExtra);
+  if (!(buf.count >= cs.settings.coloredSolveMinRows)) return null;
+  return isShared(cs.bodyState) && isShared(cs.bodyExtra) ? pool : null;
 }
 
 /** Whether a row can do nothing (no mass to move, no impulse to warm start): it is left out of the pack. */
@@ -289,10 +294,8 @@ export function startStripCut(world: PhysicsWorld, buf: ContactBuffer, others: b
   const cs = world.collision;
   const old = scratchOf.get(cs);
   if (old !== undefined) old.cut = 0;
-  const pool = world.threadPool;
-  if (pool === null || pool.threads < 2 || others || world.dimensions !== 2 || pool.threads > 16) return;
-  if (!(buf.count >= cs.settings.coloredSolveMinRows) || !isShared(cs.bodyState) || !isShared(cs.bodyExtra)) return;
-  if (!isShared(cs.bodyType) || !isShared(cs.solverBodies) || !pool.usable()) return;
+  const pool = coloredPool(world, buf, others);
+  if (pool === null || pool.threads < 2 || !isShared(cs.bodyType) || !isShared(cs.solverBodies) || !pool.usable()) return;
   shareContactBuffer(buf);
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, cutArguments(cs, buf, s), cutParameters(cs, buf, s, STRIPS), 1);

@@ -11,6 +11,9 @@
  * contacts with the boundary box, static segments and static balls.
  */
 
+import type { KernelArray } from '../threads/kernel-types.js';
+import { warmStartTable } from './warm-start-kernel.js';
+
 /**
  * What body A of a contact is:
  * - `Ball` (0): two balls, both entities (either may be kinematic);
@@ -161,40 +164,51 @@ function hashKey(kind: number, a: number, b: number, f: number): number {
   return Math.imul(h, 0x27d4eb2f) >>> 0;
 }
 
-/** Slots of a warm-start table for `n` rows: the least power of two, at least 16, that is at least 2n. */
-export function warmStartSlots(n: number): number {
-  let size = 16;
-  while (size < 2 * n) size *= 2;
-  return size;
+/**
+ * Makes `cache.slots` hold a warm-start table for `n` rows (>= 0): the least power of two slots, at
+ * least 16, that is at least 2n, kept when the present table is large enough; on a SharedArrayBuffer
+ * when `shared` (a worker builds it) or when it is already there. Its contents are left to the build
+ * (warm-start-kernel.ts warmStartTable zeroes them).
+ */
+export function reserveWarmStartTable(cache: WarmStartCache, n: number, shared: boolean): void {
+  const fits = cache.size >= 2 * n && cache.size !== 0;
+  if (fits && (!shared || (typeof SharedArrayBuffer === 'function' && cache.slots.buffer instanceof SharedArrayBuffer))) return;
+  let size = cache.size;
+  if (!fits) {
+    size = 16;
+    while (size < 2 * n) size *= 2;
+  }
+  cache.slots = shared ? new Int32Array(new SharedArrayBuffer(4 * size)) : new Int32Array(size);
+  cache.size = size;
 }
 
 /**
- * Stores this step's contacts as the cache for the next step. The cache swaps buffers with `current`
- * (no copying): afterwards `current` holds stale rows and must be refilled from count 0.
+ * Makes `current` the cache's rows (no copying) and returns the buffer the caller should fill next,
+ * emptied (it holds stale rows, refilled from count 0).
+ */
+export function swapWarmStartRows(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
+  const spare = cache.rows;
+  cache.rows = current;
+  spare.count = 0;
+  return spare;
+}
+
+/** warmStartTable's arguments on the calling thread (storeWarmStart). Not state. */
+const tableArrays: KernelArray[] = [];
+const tableParams = new Float64Array(2);
+
+/**
+ * Stores this step's contacts as the cache for the next step: the rows by swapWarmStartRows, the
+ * table (slot -> row + 1 by hashKey and linear probing) built here by warmStartTable.
  * Returns the buffer the caller should use as its next `current`.
  */
 export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
-  const spare = cache.rows;
-  cache.rows = current;
-  const n = current.count;
-  let size = cache.size;
-  if (size < 2 * n || size === 0) {
-    size = warmStartSlots(n);
-    cache.slots = new Int32Array(size);
-    cache.size = size;
-  } else {
-    cache.slots.fill(0);
-  }
-  const mask = size - 1;
-  const slots = cache.slots;
-  const kind = current.kind, a = current.a, b = current.b, f = current.feature;
-  for (let i = 0; i < n; i++) {
-    let s = hashKey(kind[i]!, a[i]!, b[i]!, f[i]!) & mask;
-    while (slots[s] !== 0) s = (s + 1) & mask;
-    slots[s] = i + 1;
-  }
-  spare.count = 0;
-  return spare;
+  reserveWarmStartTable(cache, current.count, false);
+  tableArrays.length = 0;
+  tableArrays.push(cache.slots, current.kind, current.a, current.b, current.feature);
+  tableParams[0] = current.count; tableParams[1] = cache.size;
+  warmStartTable(tableArrays, tableParams, null, 0, 1);
+  return swapWarmStartRows(cache, current);
 }
 
 /**

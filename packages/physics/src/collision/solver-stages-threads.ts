@@ -28,7 +28,7 @@
  */
 
 import type { PhysicsWorld } from '../world.js';
-import { warmStartSlots, type ContactBuffer } from './contacts.js';
+import { reserveWarmStartTable, swapWarmStartRows, type ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
@@ -161,22 +161,15 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
   if (pool === null || pool.threads < 2 || !pool.usable()) return null;
   const cache = world.collision.cache;
   shareContactBuffer(buf);
-  pool.join();
-  if (cache.size < 2 * n || cache.size === 0 || !isShared(cache.slots)) {
-    const size = cache.size < 2 * n || cache.size === 0 ? warmStartSlots(n) : cache.size;
-    cache.slots = new Int32Array(new SharedArrayBuffer(4 * size));
-    cache.size = size;
-  }
+  pool.join(); // nothing may still be writing the table it replaces
+  reserveWarmStartTable(cache, n, true);
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;
   A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
   P[0] = n; P[1] = cache.size;
   pool.start('contactSolverSystem', KERNEL.warmStartTable, A, P, 1);
   stageThreading.runs++;
-  const spare = cache.rows;
-  cache.rows = buf;
-  spare.count = 0;
-  return spare;
+  return swapWarmStartRows(cache, buf);
 }
 
 /**

@@ -1,15 +1,16 @@
 /**
- * The warm-start cache's hash table (contacts.ts storeWarmStart) built as a thread kernel
- * (threads/kernels.ts rules: self-contained, the worker threads run its source text), so that a worker
- * builds it while the calling thread finishes the step (solver-stages-threads.ts storeWarmStartOnThreads).
+ * The warm-start cache's hash table (contacts.ts) built by a thread kernel (threads/kernels.ts rules:
+ * self-contained, the worker threads run its source text): storeWarmStart runs it on the calling
+ * thread, and a threaded world on a worker while the calling thread finishes the step
+ * (solver-stages-threads.ts storeWarmStartOnThreads), so the table is the same either way.
  */
 
 import type { KernelArray } from '../threads/kernel-types.js';
 
 /**
  * Fills the warm-start table of P[0] contact rows: slots zeroed, then each row i stored as i + 1 at
- * the first free slot from hashKey(kind, a, b, feature) (contacts.ts, the same hash and linear probing,
- * so the table is storeWarmStart's to the slot). The whole table is built on the thread whose range is
+ * the first free slot from hashKey(kind, a, b, feature) (contacts.ts: the hash and linear probing that
+ * findWarmStart and the preparation kernel read the table with). The whole table is built on the thread whose range is
  * not empty (lo < hi); other ranges do nothing. A: 0 slots (Int32, out; P[1] of them, a power of two
  * above twice the rows), 1 kind (Uint8), 2 a, 3 b, 4 feature (Int32). P: 0 rows, 1 slots. Returns 0.
  */

@@ -11,14 +11,14 @@
  * current, so a machine that got quieter or busier is noticed. The calls between probes back off: a
  * probe that confirms the choice doubles them from MIN_PROBE_PERIOD up to PROBE_EVERY while the two
  * ways are within CLEAR_RATIO of each other, and quadruples them up to CLEAR_PROBE_EVERY once one is
- * clearly faster (nextProbePeriod); and a
- * change of the preferred way, by a probe or by the preferred way's own calls getting slower, resets
- * them to MIN_PROBE_PERIOD. So a switch that a passing delay caused is undone within a few calls, and
- * a choice that holds is probed rarely. The way not preferred takes over only when its estimate is
- * below SWITCH_RATIO times the preferred way's, so close ways do not trade places back and forth. (A fixed period let WINDOW delayed calls of the threads in a
- * row put a loop on one thread for a whole CLEAR_PROBE_EVERY calls: balls-in-box's narrowphase,
- * 20,000 balls on 2 threads, steps 150 to 190, ran 15 of 40 calls on one thread at 2.35 ms against
- * 1.47 on the threads.)
+ * clearly faster (nextProbePeriod); a change of the preferred way, by a probe or by the preferred
+ * way's own calls getting slower, resets them to MIN_PROBE_PERIOD. So a switch that a passing delay
+ * caused is undone within a few calls, and a choice that holds is probed rarely. (A fixed period let
+ * WINDOW delayed calls of the threads in a row put a loop on one thread for a whole CLEAR_PROBE_EVERY
+ * calls: balls-in-box's narrowphase, 20,000 balls on 2 threads, steps 150 to 190, ran 15 of 40 calls
+ * on one thread at 2.35 ms against 1.47 on the threads.) The way not preferred takes over only when
+ * its estimate is below SWITCH_RATIO times the preferred way's, so close ways do not trade places
+ * back and forth.
  *
  * A way's estimate is the least of its last WINDOW times. On a shared machine a delay is another
  * process's, or a worker the system did not schedule, or a garbage collection: it says nothing of
