@@ -99,6 +99,22 @@ test('a worker that throws surfaces its error in the main thread with the system
   expect(out[1]).toBe(2);
 });
 
+test('a kernel takes up to 64 parameters; more are refused before anything runs (they were cut to 24 without a word)', () => {
+  const world = make({ capacity: 10, threads: 2 });
+  const pool = world.threadPool!;
+  expect(pool.usable()).toBe(true);
+  const out = sharedFloat64(1000).fill(-1);
+  // 64 parameters: the kernel reads P[0] (2) and P[1] (no bad index); the rest are padding it passes by.
+  const params = new Float64Array(64).fill(7);
+  params[0] = 2; params[1] = -1;
+  expect(pool.run('testSystem', KERNEL.test, [out], params, 1000, null)).toBe((999 * 1000) / 2);
+  expect(out[999]).toBe(1998);
+  out.fill(-1);
+  expect(() => pool.run('testSystem', KERNEL.test, [out], new Float64Array(65), 1000, null)).toThrow(/^testSystem: a kernel takes at most 64 parameters, got 65$/);
+  expect(() => pool.start('testSystem', KERNEL.test, [out], new Float64Array(65), 1000)).toThrow(/^testSystem: a kernel takes at most 64 parameters, got 65$/);
+  expect(out[999]).toBe(-1);
+});
+
 test('start runs a kernel on a worker while the caller goes on; join (or the next run) waits for it and surfaces its error', () => {
   const world = make({ capacity: 10, threads: 3 });
   const pool = world.threadPool!;

@@ -33,7 +33,7 @@ interface AnyWorker {
 }
 
 /** Most scalar parameters a kernel takes. */
-const MAX_PARAMS = 24;
+const MAX_PARAMS = 64;
 
 /**
  * Default microseconds an idle worker watches for the next run before it blocks (ThreadPool.idleSpin).
@@ -225,8 +225,10 @@ export class ThreadPool {
   /**
    * Runs kernel `kernel` (kernels.ts) over [0, n) split into `threads` contiguous ranges (in
    * proportion to how fast each thread has run this kernel: balance.ts), with
-   * `arrays` (each on a SharedArrayBuffer) and the scalar `params`; `ids` (null: dense ids lo+1..hi)
-   * is copied to a shared buffer. Returns the sum of the ranges' return values, in thread order.
+   * `arrays` (each on a SharedArrayBuffer; at most CONTROL.MAX_ARRAYS) and the scalar `params` (at most
+   * 64); `ids` (null: dense ids lo+1..hi) is copied to a shared buffer. Returns the sum of the ranges'
+   * return values, in thread order.
+   * @throws RangeError naming `system` if `arrays` or `params` is too long (nothing runs).
    * @throws Error naming `system` if a worker's range threw (the message is the worker's).
    */
   run(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
@@ -262,10 +264,11 @@ export class ThreadPool {
   /**
    * Writes a run's kernel, arrays (posted to the workers first if new), parameters and ids slot
    * (-1: none) into the control block, and clears the error flag.
-   * @throws RangeError naming `system` if `arrays` is too long.
+   * @throws RangeError naming `system` if `arrays` or `params` is too long.
    */
   private setUp(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, idsId: number): void {
     if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
+    if (params.length > MAX_PARAMS) throw new RangeError(`${system}: a kernel takes at most ${MAX_PARAMS} parameters, got ${params.length}`);
     const ctl = this.ctl;
     for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
     this.sync();
@@ -286,7 +289,7 @@ export class ThreadPool {
    * reads nor reads what it writes); `join` waits for it. The other threads' ranges are empty
    * ([n, n) and, for the caller, [0, 0)), so the kernel must do nothing on an empty range. The next
    * `run` or `start` joins it first. Needs a usable pool (`usable()`) with at least one worker.
-   * @throws RangeError naming `system` if the pool has no usable worker or `arrays` is too long.
+   * @throws RangeError naming `system` if the pool has no usable worker or `arrays` or `params` is too long.
    */
   start(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
     this.join();
