@@ -46,6 +46,18 @@ test('coloured contact solve: one state on 2 threads run twice, on 3 threads and
   expect(run(2, true)).toBe(a);
 });
 
+test('a threaded 2D pile cuts its strips on a worker beside the impact stage (the solver bodies\' list on shared memory)', () => {
+  const world = pile(600, 2, false);
+  const pool = world.threadPool!, start = pool.start.bind(pool);
+  let cuts = 0;
+  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.stripCut2D) cuts++; start(system, kernel, arrays, params, n); };
+  stepMany(world, 90);
+  // Every step that solved by colours (most of the 90) cut on the worker; none did before, as the
+  // list of solver bodies the cut reads was never on shared memory.
+  expect(world.collision.solverBodies.buffer instanceof SharedArrayBuffer).toBe(true);
+  expect(cuts).toBeGreaterThan(45);
+});
+
 test('coloured contact solve: a pile of 800 balls settles as on one thread (overlap < 2 % of a radius, every ball slower than 0.1 m/s) and stays in the box', () => {
   const count = 800, steps = 300;
   const settle = (threads: number): { overlap: number; inside: boolean; speed: number } => {

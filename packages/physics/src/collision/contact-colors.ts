@@ -295,7 +295,9 @@ export function startStripCut(world: PhysicsWorld, buf: ContactBuffer, others: b
   const old = scratchOf.get(cs);
   if (old !== undefined) old.cut = 0;
   const pool = coloredPool(world, buf, others);
-  if (pool === null || pool.threads < 2 || !isShared(cs.bodyType) || !isShared(cs.solverBodies) || !pool.usable()) return;
+  if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
+  // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
+  if (!isShared(cs.bodyType)) { const types = sharedLike(cs.bodyType, cs.bodyType.length); types.set(cs.bodyType); cs.bodyType = types; }
   shareContactBuffer(buf);
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, cutArguments(cs, buf, s), cutParameters(cs, buf, s, STRIPS), 1);

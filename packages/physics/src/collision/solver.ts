@@ -188,7 +188,14 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const mark = cs.solverMark, index = cs.solverIndex;
   const stamp = ++cs.solverStamp;
+  // Room for both bodies of every row, on shared memory in a threaded 2D world: the coloured solve's
+  // stages read the list on the workers (contact-colors.ts startStripCut, solver-stages-threads.ts).
+  const shareList = world.threadPool !== null && world.dimensions === 2;
   let list = cs.solverBodies;
+  if (list.length < 2 * n + 1 || (shareList && !isShared(list))) {
+    const size = Math.max(2 * n + 1, list.length);
+    list = shareList ? sharedLike(list, size) : new Int32Array(size);
+  }
   let count = 1;
   list[0] = 0;
   const A = buf.a, B = buf.b, IA = buf.ia, IB = buf.ib;
@@ -199,14 +206,12 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     } else {
       if (mark[a] !== stamp) {
         mark[a] = stamp;
-        if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
         index[a] = count; list[count++] = a;
       }
       IA[i] = index[a]!;
     }
     if (mark[b] !== stamp) {
       mark[b] = stamp;
-      if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
       index[b] = count; list[count++] = b;
     }
     IB[i] = index[b]!;
