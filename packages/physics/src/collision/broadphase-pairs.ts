@@ -18,7 +18,7 @@ import { BodyType, PairKind, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
-import { isShared, sharedLike } from '../threads/pool.js';
+import { sharedCopy } from '../threads/pool.js';
 
 export { ballPairs } from './broadphase-pairs-kernel.js';
 
@@ -32,13 +32,6 @@ interface PairBuffers { a: Int32Array[]; b: Int32Array[]; w: Int32Array[]; count
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
-/** A shared copy of `a` (itself if already shared). */
-function shared<T extends KernelArray>(a: T): T {
-  if (isShared(a)) return a;
-  const c = sharedLike(a, a.length);
-  c.set(a as never);
-  return c;
-}
 
 /**
  * Runs the cell pass for the `small` grid bodies on the world's threads, appends the pairs to `cs`'s
@@ -60,9 +53,9 @@ export function parallelBallPairs(
   const c = world.components;
   const g = cs.grid;
   // The scratch arrays the pass reads move to shared memory once (and again after they grow).
-  g.sorted = shared(g.sorted); g.cellX = shared(g.cellX); g.cellY = shared(g.cellY); g.cellZ = shared(g.cellZ);
-  g.bucketStart = shared(g.bucketStart);
-  cs.margin = shared(cs.margin); cs.bodyType = shared(cs.bodyType); cs.sleep.restTime = shared(cs.sleep.restTime);
+  g.sorted = sharedCopy(g.sorted); g.cellX = sharedCopy(g.cellX); g.cellY = sharedCopy(g.cellY); g.cellZ = sharedCopy(g.cellZ);
+  g.bucketStart = sharedCopy(g.bucketStart);
+  cs.margin = sharedCopy(cs.margin); cs.bodyType = sharedCopy(cs.bodyType); cs.sleep.restTime = sharedCopy(cs.sleep.restTime);
   let buf = buffersOf.get(cs);
   const cap = 4 * small + 1024;
   if (buf === undefined || buf.a.length < pool.threads || buf.a[0]!.length < cap) {

@@ -43,7 +43,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
-import { isShared, sharedLike, type ThreadPool } from '../threads/pool.js';
+import { isShared, sharedCopy, sharedLike, type ThreadPool } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 import { stripCut2D } from './contact-strips-kernel.js';
@@ -56,10 +56,8 @@ export function shareContactBuffer(buf: ContactBuffer): void {
   const rec = buf as unknown as Record<string, unknown>;
   for (const key of Object.keys(rec)) {
     const a = rec[key];
-    if (!ArrayBuffer.isView(a) || a instanceof DataView || isShared(a)) continue;
-    const copy = sharedLike(a as KernelArray, (a as KernelArray).length);
-    copy.set(a as never);
-    rec[key] = copy;
+    if (!ArrayBuffer.isView(a) || a instanceof DataView) continue;
+    rec[key] = sharedCopy(a as KernelArray);
   }
 }
 
@@ -297,7 +295,7 @@ export function startStripCut(world: PhysicsWorld, buf: ContactBuffer, others: b
   const pool = coloredPool(world, buf, others);
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
   // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
-  if (!isShared(cs.bodyType)) { const types = sharedLike(cs.bodyType, cs.bodyType.length); types.set(cs.bodyType); cs.bodyType = types; }
+  cs.bodyType = sharedCopy(cs.bodyType);
   shareContactBuffer(buf);
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, cutArguments(cs, buf, s), cutParameters(cs, buf, s, STRIPS), 1);

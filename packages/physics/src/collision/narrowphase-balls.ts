@@ -15,7 +15,7 @@ import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts.j
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
-import { isShared, sharedLike } from '../threads/pool.js';
+import { sharedCopy, sharedLike } from '../threads/pool.js';
 import { shareContactBuffer } from './contact-colors.js';
 
 /** Fewest ball-ball pairs a thread for the contacts to be made in parallel. */
@@ -29,12 +29,6 @@ interface ContactBuffers { out: KernelArray[][]; counts: Int32Array; arrays: Ker
 
 const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
 
-function shared<T extends KernelArray>(a: T): T {
-  if (isShared(a)) return a;
-  const c = sharedLike(a, a.length);
-  c.set(a as never);
-  return c;
-}
 
 /**
  * Makes the contacts of the leading ball-ball pairs of `cs` on the world's threads into `buf` (which
@@ -50,7 +44,7 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   const kind = cs.pairKind;
   while (m < n && kind[m] === PairKind.BallBall) m++;
   if (m < CONTACTS_MIN_PER_THREAD * pool.threads) return 0;
-  cs.pairA = shared(cs.pairA); cs.pairB = shared(cs.pairB); cs.bodyType = shared(cs.bodyType);
+  cs.pairA = sharedCopy(cs.pairA); cs.pairB = sharedCopy(cs.pairB); cs.bodyType = sharedCopy(cs.bodyType);
   // The first range writes into the buffer itself: room for every pair, on shared memory.
   if (buf.capacity < m) growContactBuffer(buf, m);
   shareContactBuffer(buf);

@@ -33,7 +33,7 @@ import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
-import { isShared, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
+import { isShared, sharedCopy, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
 import { nowMs } from '../threads/adaptive.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { reportNonFinite } from '../errors.js';
@@ -68,19 +68,12 @@ function scratch(world: PhysicsWorld): StageScratch {
   return s;
 }
 
-/** A shared copy of `a` (same type and contents), or `a` itself if it is shared already. */
-function shared<T extends KernelArray>(a: T): T {
-  if (isShared(a)) return a;
-  const copy = sharedLike(a, a.length);
-  copy.set(a as never);
-  return copy;
-}
 
 
 /** Moves the collision state's per-entity arrays the kernels read onto shared memory. */
 function shareState(cs: CollisionState): void {
-  cs.bodyType = shared(cs.bodyType); cs.invMass = shared(cs.invMass); cs.invInertia = shared(cs.invInertia);
-  cs.bodyImpact = shared(cs.bodyImpact);
+  cs.bodyType = sharedCopy(cs.bodyType); cs.invMass = sharedCopy(cs.invMass); cs.invInertia = sharedCopy(cs.invInertia);
+  cs.bodyImpact = sharedCopy(cs.bodyImpact);
 }
 
 /** The world's pool if a 2D stage of `n` elements may go to its threads (see the file's header), else null. */

@@ -60,6 +60,14 @@ export function sharedLike<T extends KernelArray>(like: T, n: number): T {
   return new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
 }
 
+/** `a` itself if it lives on a SharedArrayBuffer, else a copy of it there (same type and contents). */
+export function sharedCopy<T extends KernelArray>(a: T): T {
+  if (isShared(a)) return a;
+  const copy = sharedLike(a, a.length);
+  copy.set(a as never);
+  return copy;
+}
+
 /** Whether a typed array lives on a SharedArrayBuffer. */
 export function isShared(a: ArrayBufferView): boolean {
   return typeof SharedArrayBuffer === 'function' && a.buffer instanceof SharedArrayBuffer;

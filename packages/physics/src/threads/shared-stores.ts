@@ -4,7 +4,7 @@
  * each lazily allocated store when it gets its arrays.
  */
 
-import { isShared, sharedLike } from './pool.js';
+import { sharedCopy } from './pool.js';
 import type { KernelArray } from './kernels.js';
 
 /**
@@ -17,10 +17,8 @@ export function shareStore(store: object, capacity: number): void {
     const a = rec[key];
     if (!ArrayBuffer.isView(a) || a instanceof DataView) continue;
     const arr = a as KernelArray;
-    if (arr.length !== capacity + 1 || isShared(arr)) continue;
-    const copy = sharedLike(arr, arr.length);
-    copy.set(arr as never);
-    rec[key] = copy;
+    if (arr.length !== capacity + 1) continue;
+    rec[key] = sharedCopy(arr);
   }
 }
 
