@@ -193,7 +193,9 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const shareList = world.threadPool !== null && world.dimensions === 2;
   let list = cs.solverBodies;
   if (list.length < 2 * n + 1 || (shareList && !isShared(list))) {
-    const size = Math.max(2 * n + 1, list.length);
+    // Doubling: a threaded pool keeps every array it has been given (threads/pool.ts), so the list must
+    // not grow a little every step while a pile's rows grow.
+    const size = list.length < 2 * n + 1 ? Math.max(2 * n + 1, 2 * list.length) : list.length;
     list = shareList ? sharedLike(list, size) : new Int32Array(size);
   }
   let count = 1;
