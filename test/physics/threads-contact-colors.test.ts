@@ -5,6 +5,7 @@ import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/sol
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
 import { stripCut2D } from '../../packages/physics/src/collision/contact-strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { impactChangedRows } from '../../packages/physics/src/collision/impacts.js';
 
 // The 2D ball contacts solved by graph colouring on the world's threads (collision/contact-colors.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a
@@ -46,16 +47,16 @@ test('coloured contact solve: one state on 2 threads run twice, on 3 threads and
   expect(run(2, true)).toBe(a);
 });
 
-test('a threaded 2D pile cuts its strips on a worker beside the impact stage (the solver bodies\' list on shared memory)', () => {
+test('a threaded 2D pile plans and packs its strips on a worker beside the impact stage (the solver bodies\' list on shared memory)', () => {
   const world = pile(600, 2, false);
   const pool = world.threadPool!, start = pool.start.bind(pool);
-  let cuts = 0;
-  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.stripCut2D) cuts++; start(system, kernel, arrays, params, n); };
+  let plans = 0;
+  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.stripPlan2D) plans++; start(system, kernel, arrays, params, n); };
   stepMany(world, 90);
-  // Every step that solved by colours (most of the 90) cut on the worker; none did before, as the
-  // list of solver bodies the cut reads was never on shared memory.
+  // Every step that solved by colours (most of the 90) planned on the worker; none cut there before
+  // stop 28, as the list of solver bodies the cut reads was never on shared memory.
   expect(world.collision.solverBodies.buffer instanceof SharedArrayBuffer).toBe(true);
-  expect(cuts).toBeGreaterThan(45);
+  expect(plans).toBeGreaterThan(45);
 });
 
 test('coloured contact solve: a pile of 800 balls settles as on one thread (overlap < 2 % of a radius, every ball slower than 0.1 m/s) and stays in the box', () => {
@@ -125,6 +126,27 @@ test('a threaded pile whose rows grow step by step keeps its solver bodies\' lis
   expect(lists.size).toBeLessThanOrEqual(6);
 });
 
+test('rows packed on a worker while the impact stage runs: the state of a pack made after the stage (rows the stage changed packed again)', () => {
+  // Two threaded piles, restitution 0.5: one packs on the worker beside the impact stage (stripPlan2D
+  // with P[8] = 1), the other only cuts and plans there and packs in the solve, after the stage. The
+  // stage changes some rows' normals and gaps meanwhile, which the first must pack again
+  // (coloredRepack2D); tolerance zero, the same arithmetic on the same rows.
+  const run = (packOnWorker: boolean): { hash: string; changed: number } => {
+    const world = pile(600, 2, false);
+    const pool = world.threadPool!, start = pool.start.bind(pool);
+    let changed = 0;
+    pool.start = (system, kernel, arrays, params, n) => {
+      if (kernel === KERNEL.stripPlan2D && !packOnWorker) { const Q = Float64Array.from(params); Q[8] = 0; params = Q; }
+      start(system, kernel, arrays, params, n);
+    };
+    for (let k = 0; k < 120; k++) { stepMany(world, 1); changed += impactChangedRows().count; }
+    return { hash: stateHash(world), changed };
+  };
+  const worker = run(true), after = run(false);
+  expect(worker.changed).toBeGreaterThan(100);
+  expect(worker.hash).toBe(after.hash);
+});
+
 test('the strip cut made on a worker (ThreadPool.start, beside the impact stage) is the cut made on the calling thread', () => {
   // 3,000 solver bodies (every 7th fixed, every 5th other kinematic, moving) and 9,000 rows between random bodies,
   // on shared memory; the kernel's outputs compared slot by slot (tolerance zero: the same arithmetic).
@@ -144,7 +166,8 @@ test('the strip cut made on a worker (ThreadPool.start, beside the impact stage)
   }
   for (let i = 0; i < rows; i++) { IA[i] = i % 9 === 0 ? 0 : 1 + Math.floor(rng.range(0, bodies - 1)); IB[i] = 1 + Math.floor(rng.range(0, bodies - 1)); }
   const outputs = () => [shared(Uint8Array, bodies), shared(Uint8Array, bodies), shared(Uint16Array, bodies), shared(Int32Array, bins), shared(Uint8Array, bins)];
-  const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff]);
+  // P[6] = 7: the table of the cut's arrays at P[7 .. 17], here in their own order.
+  const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
   const inline = outputs(), worker = outputs();
   stripCut2D([sb, ex, type, list, ...inline, IA, IB], P, null, 0, 1);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);

@@ -29,8 +29,8 @@ import type { claimBlock } from '../threads/block-claim.js';
  * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
  * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours
- * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges, 8 rows packed,
- * 9 strips (1: fused body stages), 12 + c colour c's first block (c = 0 .. C; colour C the overflow
+ * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are packed already, contact-strip-plan-kernel.ts), 8 rows packed,
+ * 9 strips (1: fused body stages), 10 even blocks, 11 1 when the strip plan packed the rows, 12 + c colour c's first block (c = 0 .. C; colour C the overflow
  * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort),
  * 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255 not packed),
  * 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as it packs),
@@ -42,7 +42,8 @@ import type { claimBlock } from '../threads/block-claim.js';
  * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
  * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
  * pack row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry,
- * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them);
+ * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
+ * (Int32, a buffer row: its pack row, written by the packing);
  * the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
  * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
@@ -193,6 +194,7 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
   const RA = A[12] as Float64Array, RB = A[13] as Float64Array, S0 = A[14] as Float64Array, NM = A[15] as Float64Array;
   const TM = A[16] as Float64Array, FB = A[17] as Float64Array, LN = A[18] as Float64Array, LT = A[19] as Float64Array;
   const RP = A[20] as Uint8Array, pair = A[26] as Int32Array, tot = A[27] as Float64Array, row = A[28] as Int32Array;
+  const slot = A[30] as Int32Array;
   const rows = P[11]!, W = P[12]!;
   const lo = Math.floor((rows * blk) / parts), hi = Math.floor((rows * (blk + 1)) / parts), o0 = blk * W;
   for (let i = lo; i < hi; i++) {
@@ -205,7 +207,27 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     pk[o] = NX[i]!; pk[o + 1] = NY[i]!; pk[o + 2] = RA[i]!; pk[o + 3] = RB[i]!; pk[o + 4] = S0[i]!;
     pk[o + 5] = NM[i]!; pk[o + 6] = TM[i]!; pk[o + 7] = FB[i]!; pk[o + 8] = LN[i]!; pk[o + 9] = LT[i]!;
     pk[o + 10] = RP[i]!; pk[o + 11] = 0;
-    tot[k] = 0; row[k] = i;
+    tot[k] = 0; row[k] = i; slot[i] = k;
+  }
+}
+
+/**
+ * Packs rows[0 .. count - 1] of the contact buffer again, each into the pack row coloredPack2D gave it
+ * (A[30], slot), from the buffer's values now (A as coloredPack2D's): for rows whose values changed
+ * after they were packed (impacts.ts impactChangedRows). Rows left out of the pack (group 255) stay out.
+ */
+export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
+  const pk = A[0] as Float64Array, color = A[6] as Uint8Array, slot = A[30] as Int32Array;
+  const NX = A[10] as Float64Array, NY = A[11] as Float64Array, RA = A[12] as Float64Array, RB = A[13] as Float64Array;
+  const S0 = A[14] as Float64Array, NM = A[15] as Float64Array, TM = A[16] as Float64Array, FB = A[17] as Float64Array;
+  const LN = A[18] as Float64Array, LT = A[19] as Float64Array, RP = A[20] as Uint8Array;
+  for (let j = 0; j < count; j++) {
+    const i = rows[j]!;
+    if (color[i] === 255) continue;
+    const o = slot[i]! * 12;
+    pk[o] = NX[i]!; pk[o + 1] = NY[i]!; pk[o + 2] = RA[i]!; pk[o + 3] = RB[i]!; pk[o + 4] = S0[i]!;
+    pk[o + 5] = NM[i]!; pk[o + 6] = TM[i]!; pk[o + 7] = FB[i]!; pk[o + 8] = LN[i]!; pk[o + 9] = LT[i]!;
+    pk[o + 10] = RP[i]!; pk[o + 11] = 0;
   }
 }
 

@@ -22,7 +22,9 @@
  *
  * Either way the rows are packed colour by colour (contact-pack2d.ts; within a block in buffer order)
  * and the whole substep loop (gravity, warm start, biased passes, positions, relax passes) runs as one
- * kernel on every thread (contact-colors-kernel.ts).
+ * kernel on every thread (contact-colors-kernel.ts). The strip plan and the packing usually run on a
+ * worker while the calling thread runs the impact stage (startStripPlan), which leaves the rows it
+ * resolves in the pack with nothing to do and the rows whose values it changes to be packed again.
  *
  * Blocks of one colour touch disjoint movable bodies, and the cut depends on the state alone (not on
  * the number of threads), so which thread runs a block does not change any result: the solve gives
@@ -40,13 +42,14 @@ import type { PhysicsWorld } from '../world.js';
 import type { ContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
+import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
+import { stripLayout2D, stripPlan2D } from './contact-strip-plan-kernel.js';
+import { impactChangedRows, releaseImpactedRows } from './impacts.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
 import { isShared, sharedCopy, sharedLike, type ThreadPool } from '../threads/pool.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
-import { stripCut2D } from './contact-strips-kernel.js';
 
 /**
  * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
@@ -86,7 +89,7 @@ export const SPIN_MICROSECONDS = 50;
 /** Histogram bins of the strips' quantiles. */
 const BINS = 4096;
 
-/** A fixed body's bin (stripRows): in none. */
+/** A fixed body's bin (stripCut2D): in none. */
 const NO_BIN = 0xffff;
 
 interface ColorScratch {
@@ -100,8 +103,10 @@ interface ColorScratch {
   color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
   /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
   offsets: Int32Array;
-  /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each). */
+  /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each, shared). */
   counts: Int32Array; start: Int32Array; next: Int32Array;
+  /** Each contact buffer row's pack row (shared; written by the packing, read by coloredRepack2D). */
+  slot: Int32Array;
   /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
   bounds: Int32Array;
   /** Strips: the movable solver bodies by strip pair, and each pair's first entry there (shared). */
@@ -110,10 +115,10 @@ interface ColorScratch {
   strip: Uint8Array; hist: Int32Array; binStrip: Uint8Array;
   /** Strips: each solver body's histogram bin (NO_BIN: fixed). */
   bin: Uint16Array;
-  /** The strips of the cut in `strip`, `bin`, `hist`, `binStrip` and `dyn` this step (0: none yet; stripRows). */
+  /** The strips of the cut in `strip`, `bin`, `hist`, `binStrip` and `dyn` this step (0: none yet; planRows). */
   cut: number;
-  /** The strip cut kernel's arguments (stripCut2D). */
-  cutArrays: KernelArray[]; cutParams: Float64Array;
+  /** The strip plan kernel's arguments (stripPlan2D; its layout helper's for graph colours too). */
+  planArrays: KernelArray[]; planParams: Float64Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
   pending: boolean;
 }
@@ -130,12 +135,13 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
       plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
       params: new Float64Array(24), claim: new Int32Array(new SharedArrayBuffer(4 * 1024)), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
-      counts: new Int32Array(MAX_COLORS + 2), start: new Int32Array(MAX_COLORS + 2), next: new Int32Array(MAX_COLORS + 2),
+      counts: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))), start: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      next: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))), slot: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)), bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
       strip: new Uint8Array(new SharedArrayBuffer(1024)), bin: new Uint16Array(new SharedArrayBuffer(2 * 1024)),
       hist: new Int32Array(new SharedArrayBuffer(4 * BINS)), binStrip: new Uint8Array(new SharedArrayBuffer(BINS)),
-      pending: false, cut: 0, cutArrays: [], cutParams: new Float64Array(6),
+      pending: false, cut: 0, planArrays: [], planParams: new Float64Array(PLAN_PARAMS),
     };
     scratchOf.set(cs, s);
   }
@@ -144,6 +150,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   if (s.tot.length < rows) s.tot = sharedLike(s.tot, Math.max(rows, 2 * s.tot.length));
   if (s.row.length < rows) s.row = sharedLike(s.row, Math.max(rows, 2 * s.row.length));
   if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
+  if (s.slot.length < rows) s.slot = sharedLike(s.slot, Math.max(rows, 2 * s.slot.length));
   const blocks = Math.ceil(rows / BLOCK_ROWS) + MAX_COLORS + 2;
   if (s.bounds.length < blocks) s.bounds = sharedLike(s.bounds, Math.max(blocks, 2 * s.bounds.length));
   if (s.dyn.length < bodies) s.dyn = sharedLike(s.dyn, Math.max(bodies, 2 * s.dyn.length));
@@ -222,181 +229,93 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
   return used;
 }
 
-/**
- * Gives every row the packing group of its lower strip (even strips first: strip 2j is group j, strip
- * 2j + 1 group strips / 2 + j; MAX_COLORS: the overflow colour, rows joining bodies more than one strip
- * apart; 255 not packed), from the cut of the movable solver bodies into `strips` strips (even, 2 ..
- * MAX_COLORS; contact-strips-kernel.ts stripCut2D: each with about n / strips rows, across the longer
- * axis of their base positions), which it makes unless the cut in `s.strip` is already of `strips`
- * (`s.cut`, made on a worker by startStripCut); with the counts per group and per packing range as
- * colorRows. Returns the rows in the overflow colour.
- */
-function stripRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number, strips: number): number {
-  const n = buf.count;
-  const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
-  const strip = s.strip, color = s.color;
-  if (s.cut !== strips) {
-    stripCut2D(cutArguments(cs, buf, s), cutParameters(cs, buf, s, strips), null, 0, 1);
-    s.cut = strips;
-  }
-  // Each row's group.
-  const W = MAX_COLORS + 1, partCounts = s.offsets, counts = s.counts, half = strips >> 1;
-  partCounts.fill(0, 0, parts * W);
-  counts.fill(0);
-  let overflow = 0;
-  for (let p = 0; p < parts; p++) {
-    const r0 = Math.floor((n * p) / parts), r1 = Math.floor((n * (p + 1)) / parts), base = p * W;
-    for (let i = r0; i < r1; i++) {
-      if (idle(NM, TM, LN, LT, i)) { color[i] = 255; continue; }
-      const sa = strip[IA[i]!]!, sbb = strip[IB[i]!]!;
-      let low: number, high: number;
-      if (sa === 255) { low = sbb === 255 ? 0 : sbb; high = low; }
-      else if (sbb === 255) { low = sa; high = sa; }
-      else { low = sa < sbb ? sa : sbb; high = sa < sbb ? sbb : sa; }
-      let c: number;
-      if (high - low > 1) { c = MAX_COLORS; overflow++; }
-      else c = (low & 1) === 0 ? low >> 1 : half + (low >> 1);
-      color[i] = c;
-      counts[c] = counts[c]! + 1;
-      partCounts[base + c] = partCounts[base + c]! + 1;
-    }
-  }
-  return overflow;
-}
+/** Length of stripPlan2D's parameters (its table of stripCut2D's arrays at 32 .. 42). */
+const PLAN_PARAMS = 43;
 
-/** stripCut2D's arrays for `buf`'s rows (see contact-strips-kernel.ts), in `s.cutArrays`. */
-function cutArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
-  const A = s.cutArrays;
-  A.length = 0;
-  A.push(cs.bodyState, cs.bodyExtra, cs.bodyType, cs.solverBodies, s.dyn, s.strip, s.bin, s.hist, s.binStrip, buf.ia, buf.ib);
+/**
+ * stripPlan2D's arrays for `buf`'s rows (contact-strip-plan-kernel.ts: solveColored2D's 0 to 30, then
+ * the cut's and the layout's own), in `s.planArrays`. The arrays must be sized (scratch) first.
+ */
+function planArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
+  const A = solveArguments(cs, buf, s, s.planArrays);
+  A.push(cs.bodyType, cs.solverBodies, s.strip, s.bin, s.hist, s.binStrip, s.counts, s.start, s.next);
   return A;
 }
 
-/** stripCut2D's parameters for a cut into `strips` strips, in `s.cutParams`. */
-function cutParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, strips: number): Float64Array {
-  const P = s.cutParams;
+/** solveColored2D's arrays for `buf`'s rows (contact-colors-kernel.ts, 0 to 30), into `A` (emptied first). */
+function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, A: KernelArray[]): KernelArray[] {
+  A.length = 0;
+  A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, s.plan, s.bar, s.color, s.offsets,
+    buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
+    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
+    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row, s.claim, s.slot);
+  return A;
+}
+
+/** Where stripPlan2D's arguments hold stripCut2D's arrays, in the cut's order (see contact-strips-kernel.ts). */
+const CUT_TABLE = [1, 2, 31, 32, 3, 33, 34, 35, 36, 8, 9];
+
+/**
+ * stripPlan2D's parameters, in `s.planParams`: a plan by `strips` strips (cut first if `cut`) over
+ * `parts` packing ranges, packed there if `pack`.
+ */
+function planParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, strips: number, parts: number, pack: boolean, cut: boolean): Float64Array {
+  const P = s.planParams;
   P[0] = cs.solverBodyCount; P[1] = buf.count; P[2] = strips; P[3] = BINS; P[4] = BodyType.Dynamic; P[5] = NO_BIN;
+  P[6] = 32; P[7] = parts; P[8] = pack ? 1 : 0; P[9] = cut ? 1 : 0; P[10] = Math.max(64, buf.count >> 6);
+  P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = PLAN_HEAD; P[14] = MAX_COLORS; P[15] = BLOCK_ROWS;
+  for (let j = 0; j < CUT_TABLE.length; j++) P[32 + j] = CUT_TABLE[j]!;
   return P;
 }
 
 /**
- * Starts this step's strip cut (STRIPS strips) on a worker of the world's pool when the step's 2D ball
- * contacts will go through the coloured solve (useColoredSolve; `others` as there), so it runs while
- * the calling thread runs the impact stage (ThreadPool.start): the cut reads the solver bodies' inverse
- * masses, base positions and types and the rows' bodies, which that stage does not change (it changes
- * the movable bodies' velocities, which the cut reads only of bodies without inverse mass or inertia,
- * and the angle corrections). solveColoredSubsteps joins it before it plans the rows. Otherwise the
- * plan cuts on the calling thread (stripRows), the same cut.
+ * Starts this step's strip plan (contact-strip-plan-kernel.ts stripPlan2D: the cut into STRIPS strips,
+ * the rows' groups, the blocks, and every row packed) on a worker of the world's pool when the step's 2D
+ * ball contacts will go through the coloured solve (useColoredSolve; `others` as there), so it runs
+ * while the calling thread runs the impact stage (ThreadPool.start). What the plan reads that the
+ * impact stage writes:
+ * - the movable bodies' velocities and the angle corrections: the cut reads velocities only of
+ *   bodies without inverse mass or inertia, and base positions;
+ * - the start separations and normals of the rows it changes: solveColoredSubsteps packs those rows
+ *   again after it joins (impacts.ts impactChangedRows);
+ * - the masses and impulses that decide whether a row is packed: the stage leaves them to
+ *   releaseImpactedRows, which runs after the plan.
+ * So the plan and pack are the ones the calling thread would make after the stage. solveColoredSubsteps
+ * joins it; when it did not plan (too many rows overflow at STRIPS strips) or did not start, the plan is
+ * made there, on the calling thread.
  */
-export function startStripCut(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
+export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
   const cs = world.collision;
   const old = scratchOf.get(cs);
-  if (old !== undefined) old.cut = 0;
+  if (old !== undefined) { old.cut = 0; old.plan[11] = 0; }
   const pool = coloredPool(world, buf, others);
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
   // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
   cs.bodyType = sharedCopy(cs.bodyType);
   shareContactBuffer(buf);
   const s = scratch(cs, buf.count, cs.solverBodyCount);
-  pool.start('contactSolverSystem', KERNEL.stripCut2D, cutArguments(cs, buf, s), cutParameters(cs, buf, s, STRIPS), 1);
+  pool.start('contactSolverSystem', KERNEL.stripPlan2D, planArguments(cs, buf, s), planParameters(cs, buf, s, STRIPS, 1, true, true), 1);
   s.cut = STRIPS;
 }
 
 /**
- * Lays the pack out from the rows' groups (colorRows or stripRows): groups 0 .. `groups` - 1 in order,
- * then the overflow group (MAX_COLORS); turns `s.offsets` into each packing range's first slot of each
- * group (the range's rows of a group follow the previous ranges' rows of it, so the pack is in buffer
- * order within each group however many threads pack it) and fills the blocks: `blocksOf(g)` cuts
- * group g into blocks (graph colours: 256 rows; strips: one). The plan gets colour c's first block at
- * PLAN_HEAD + c (`colorOf(g)`: the colour of group g, non-decreasing in g; `colors` of them, then the
- * overflow colour, one block) and the rows to pack at slot 8. Returns the rows to pack.
- */
-function layout(s: ColorScratch, parts: number, groups: number, colors: number, colorOf: (g: number) => number, wholeGroups: boolean): number {
-  const counts = s.counts, start = s.start, plan = s.plan, bounds = s.bounds;
-  const W = MAX_COLORS + 1, partCounts = s.offsets;
-  start.fill(0);
-  let at = 0;
-  for (let g = 0; g < groups; g++) { start[g] = at; at += counts[g]!; }
-  start[groups] = at; at += counts[MAX_COLORS]!; start[groups + 1] = at;
-  const next = s.next;
-  next.set(start);
-  next[MAX_COLORS] = start[groups]!;
-  for (let p = 0; p < parts; p++) {
-    const base = p * W;
-    for (let c = 0; c < W; c++) {
-      const k = partCounts[base + c]!;
-      partCounts[base + c] = next[c]!;
-      next[c] = next[c]! + k;
-    }
-  }
-  // Blocks, colour by colour.
-  let nb = 0, color = -1;
-  for (let g = 0; g < groups; g++) {
-    const c = colorOf(g);
-    while (color < c) plan[PLAN_HEAD + ++color] = nb;
-    const r0 = start[g]!, r1 = start[g + 1]!;
-    if (wholeGroups) { if (r1 > r0) bounds[nb++] = r0; }
-    else for (let r = r0; r < r1; r += BLOCK_ROWS) bounds[nb++] = r;
-  }
-  while (color < colors) plan[PLAN_HEAD + ++color] = nb;
-  if (start[groups + 1]! > start[groups]!) bounds[nb++] = start[groups]!;
-  plan[PLAN_HEAD + colors + 1] = nb;
-  bounds[nb] = at;
-  plan[4] = colors;
-  plan[8] = at;
-  return at;
-}
-
-/**
- * Plans the coloured solve of `buf`'s rows: strips when they leave at most 1/64 of the rows (and at
- * least 64) to the overflow colour at some strip count from STRIPS down to 4, else graph colours (see
- * the file's header). Fills the pack layout, the blocks, the plan's colours (slot 9: 1 for strips,
- * whose even blocks also run their strip pair's body stages: `s.bodyOrder`, `s.bodyBounds`), and the
- * bodies that take gravity (`s.dyn`). Returns the rows to pack.
+ * Plans the coloured solve of `buf`'s rows on the calling thread: strips (stripPlan2D) when they leave
+ * at most 1/64 of the rows (and at least 64) to the overflow colour at some strip count from STRIPS down
+ * to 4, else graph colours (see the file's header), over `parts` packing ranges (the solve packs).
+ * Fills the pack layout, the blocks, the plan's colours (slot 9: 1 for strips, whose even blocks also
+ * run their strip pair's body stages: `s.bodyOrder`, `s.bodyBounds`), and the bodies that take gravity
+ * (`s.dyn`). Returns the rows to pack.
  */
 function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
-  const bodies = cs.solverBodyCount, plan = s.plan;
-  const limit = Math.max(64, buf.count >> 6);
+  const A = planArguments(cs, buf, s);
   for (let strips = STRIPS; strips >= 4; strips >>= 1) {
-    if (stripRows(cs, buf, s, parts, strips) > limit) continue;
-    const half = strips >> 1;
-    // Movable bodies by strip pair (counting sort), for the even blocks' body stages.
-    const bb = s.bodyBounds, order = s.bodyOrder, strip = s.strip;
-    bb.fill(0);
-    for (let k = 1; k < bodies; k++) if (strip[k] !== 255) bb[(strip[k]! >> 1) + 1]++;
-    for (let j = 0; j < half; j++) bb[j + 1] = bb[j + 1]! + bb[j]!;
-    const cursor = s.next;
-    for (let j = 0; j <= half; j++) cursor[j] = bb[j]!;
-    for (let k = 1; k < bodies; k++) {
-      if (strip[k] === 255) continue;
-      const j = strip[k]! >> 1;
-      order[cursor[j]!] = k;
-      cursor[j] = cursor[j]! + 1;
-    }
-    // A strip pair without rows has no block: its bodies join the previous pair's (or the next) block.
-    // Blocks are whole groups; the body ranges follow the even blocks, so an even strip without rows
-    // passes its bodies to the block before it (the first such block takes those before it).
-    const counts = s.counts;
-    const evenBlock = s.start; // scratch: body range end of each even block
-    let blocks = 0;
-    for (let j = 0; j < half; j++) if (counts[j]! > 0) evenBlock[blocks++] = j;
-    // bodyBounds per even block: block m covers pairs from its own (or 0 for m = 0) to the next block's.
-    const pairStart = new Int32Array(blocks + 1);
-    for (let m = 0; m < blocks; m++) pairStart[m] = m === 0 ? 0 : evenBlock[m]!;
-    pairStart[blocks] = half;
-    const ranges = new Int32Array(blocks + 1);
-    for (let m = 0; m <= blocks; m++) ranges[m] = bb[pairStart[m]!]!;
-    if (blocks === 0) { plan[9] = 0; }
-    else {
-      for (let m = 0; m <= blocks; m++) bb[m] = ranges[m]!;
-      plan[9] = 1;
-    }
-    plan[10] = blocks;
-    return layout(s, parts, strips, 2, (g) => (g < half ? 0 : 1), true);
+    const P = planParameters(cs, buf, s, strips, parts, false, s.cut !== strips);
+    s.cut = strips;
+    if (stripPlan2D(A, P, null, 0, 1, 0, KERNEL_HELPERS) > 0) return s.plan[8]!;
   }
   const used = colorRows(cs, buf, s, parts);
-  plan[9] = 0;
-  return layout(s, parts, used, used, (g) => g, false);
+  s.plan[9] = 0;
+  return stripLayout2D(A, planParameters(cs, buf, s, used, parts, false, false), used, 0);
 }
 
 /** Colours used by the last coloured solve of `cs` (0: none ran), for tests and the bench. */
@@ -457,11 +376,19 @@ export function solveColoredSubsteps(
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   shareContactBuffer(buf);
-  pool.join(); // the strip cut startStripCut left on a worker
-  const np = planRows(cs, buf, s, pool.threads);
-  const plan = s.plan, P = s.params, g = world.gravity;
+  pool.join(); // the strip plan startStripPlan left on a worker
+  const plan = s.plan;
+  const packed = plan[11] === 1;
+  const np = packed ? plan[8]! : planRows(cs, buf, s, pool.threads);
+  // Planned from the masses and impulses before the impact stage took its resolved rows out: they stay
+  // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
+  releaseImpactedRows(buf);
+  const A = solveArguments(cs, buf, s, s.arrays);
+  // Rows packed on the worker whose values the impact stage changed meanwhile are packed again.
+  if (packed) { const changed = impactChangedRows(); coloredRepack2D(A, changed.rows, changed.count); }
+  const P = s.params, g = world.gravity;
   plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;
-  plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0; plan[7] = pool.threads;
+  plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0; plan[7] = packed ? 0 : pool.threads;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
@@ -469,12 +396,7 @@ export function solveColoredSubsteps(
   downwardInto(g, P, 14); P[16] = SUPPORT_COS;
   const blocks = solveColoredBlocks2D(plan);
   if (s.claim.length < blocks) s.claim = sharedLike(s.claim, Math.max(blocks, 2 * s.claim.length));
-  const A = s.arrays;
-  A.length = 0;
-  A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, plan, s.bar, s.color, s.offsets,
-    buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
-    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
-    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row, s.claim);
+  A[29] = s.claim;
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();

@@ -34,6 +34,49 @@ const impactScalars = new Float64Array(3);
  */
 const sweepIO = new Float64Array(9);
 
+/**
+ * Rows the last `applyImpacts` changed a value of that the soft substeps read (normal, start
+ * separation), each once, in the order first changed: `changedRows[0 .. changedCount - 1]`, with
+ * `changedMark` (1: listed) for the rows of that call. And the impacted rows it takes out of the soft
+ * substeps (`releasedRows[0 .. releasedCount - 1]`), whose masses and impulses `releaseImpactedRows`
+ * zeroes. Read through impactChangedRows. Not world state.
+ */
+let changedRows = new Int32Array(256), changedMark = new Uint8Array(256), releasedRows = new Int32Array(256);
+let changedCount = 0, releasedCount = 0;
+
+/** Lists row i as changed by the impact stage (once). */
+function markChanged(i: number): void {
+  if (changedMark[i] === 1) return;
+  changedMark[i] = 1;
+  changedRows[changedCount++] = i;
+}
+
+/**
+ * The rows the last `applyImpacts` changed a value of that the soft substeps read (the normal of an
+ * impacted row, a start separation that took in corrections or a spare gap; the rows
+ * `releaseImpactedRows` zeroes are among them): rows[0 .. count - 1], each once. A coloured solve whose
+ * rows were packed while the stage ran packs these again (contact-colors.ts). Valid until the next call.
+ */
+export function impactChangedRows(): { rows: Int32Array; count: number } {
+  return { rows: changedRows, count: changedCount };
+}
+
+/**
+ * Takes the rows the last `applyImpacts` resolved between clean bodies out of the soft substeps: their
+ * normal and tangent masses and impulses become 0 (a row with nothing to move and nothing to warm start
+ * does nothing in a pass). Kept apart from `applyImpacts` so the coloured solve can plan its rows from
+ * the values before it (contact-colors.ts: the plan runs on a worker beside the stage). Call it once,
+ * after `applyImpacts` and before the substeps.
+ */
+export function releaseImpactedRows(buf: ContactBuffer): void {
+  const NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2;
+  for (let k = 0; k < releasedCount; k++) {
+    const i = releasedRows[k]!;
+    NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;
+  }
+  releasedCount = 0;
+}
+
 /** Scratch of `sortByKey`: the merge sort's two work arrays. Not world state. */
 let sortWork1 = new Int32Array(256), sortWork2 = new Int32Array(256);
 
@@ -101,6 +144,9 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   // not): only an impacted row's normal changes in between, and that one is recomputed there.
   if (loadedRows.length < n) loadedRows = new Uint8Array(Math.max(n, 2 * loadedRows.length));
   const loaded = loadedRows;
+  if (changedMark.length < n) { const len = Math.max(n, 2 * changedMark.length); changedMark = new Uint8Array(len); changedRows = new Int32Array(len); releasedRows = new Int32Array(len); }
+  for (let k = 0; k < changedCount; k++) changedMark[changedRows[k]!] = 0;
+  changedCount = 0; releasedCount = 0;
   for (let i = 0; i < n; i++) {
     if (!carriesLoad(world, buf, i)) { loaded[i] = 0; continue; }
     loaded[i] = 1;
@@ -295,18 +341,20 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     }
     idleCount = kept;
   }
-  const LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2, NM = buf.normalMass, TM = buf.tangentMass;
   for (let i = 0; i < n; i++) {
     // The substeps move a body from where it was at the start of the step and add its correction at
     // the end, so every row's start separation takes the corrections in: the substeps' gap at the end
     // of the step is then the true one, also between a clean body and an unclean one.
     const ua = IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0, ub = imp[IB[i]! * Q + 4] === 0;
     if (ub && (ua || IA[i] === 0)) continue; // unclean bodies and the static world have no corrections
-    S0[i] = S0[i]! + correctionGap(imp, buf, i);
+    const gap = correctionGap(imp, buf, i), was = S0[i]!;
+    S0[i] = was + gap;
+    if (gap !== 0 || was === 0) markChanged(i); // (-0 + 0 is 0)
     if (ua || ub) continue;
     if (E[i]! > 0 && key[i] === -1) {
-      // Impacted rows between clean bodies leave the soft substeps.
-      NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;
+      // Impacted rows between clean bodies leave the soft substeps (releaseImpactedRows).
+      markChanged(i);
+      releasedRows[releasedCount++] = i;
       continue;
     }
     // A row between clean bodies that stays apart through the step gets a start separation the soft
@@ -318,7 +366,7 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     if (!(s0 > 0)) continue;
     const closes = linearClosure(world, buf, i, S);
     // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
-    if (s0 <= closes * within) S0[i] = closes * 1.1;
+    if (s0 <= closes * within) { S0[i] = closes * 1.1; markChanged(i); }
   }
 }
 
@@ -722,6 +770,7 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): 
   if (ia !== 0 && imA > 0) imp[qa + 3] = t;
   if (imB > 0) imp[qb + 3] = t;
   buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
+  markChanged(i);
   buf.impulse[i] = buf.impulse[i]! + J;
   return true;
 }

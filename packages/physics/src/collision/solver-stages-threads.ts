@@ -127,7 +127,9 @@ export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: 
 export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const n = buf.count;
   const pool = poolFor(world, n);
-  if (pool === null) return false;
+  // While the strip plan runs on a worker (contact-colors.ts startStripPlan) the loop stays here: on the
+  // threads it would first wait for the plan.
+  if (pool === null || pool.busy) return false;
   const cs = world.collision;
   shareContactBuffer(buf);
   shareState(cs);

@@ -13,8 +13,8 @@ import {
 } from './manifold3d-solver.js';
 import { finishJoints3D, gatherJoint3DBodies, joints3DToSolve, prepareJoints3D, solveJoints3D, warmStartJoints3D } from '../joints3d/solver.js';
 import { finishJoints, gatherJointBodies, integrateJointRotations, jointsToSolve, prepareJoints, solveJoints, warmStartJoints } from '../joints/solver.js';
-import { applyImpacts, IMPACT_STRIDE } from './impacts.js';
-import { shareContactBuffer, solveColoredSubsteps, startStripCut, useColoredSolve } from './contact-colors.js';
+import { applyImpacts, IMPACT_STRIDE, releaseImpactedRows } from './impacts.js';
+import { shareContactBuffer, solveColoredSubsteps, startStripPlan, useColoredSolve } from './contact-colors.js';
 import { approachOnThreads, containedOnThreads, finishOnThreads, gatherFillOnThreads, restitutionOnThreads, storeWarmStartOnThreads } from './solver-stages-threads.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { runOnPool } from '../threads/parallel.js';
@@ -85,8 +85,8 @@ function solveContacts(world: PhysicsWorld): void {
   if (world.dimensions === 3) prepareManifolds3D(world);
   const is2D = world.dimensions === 2;
   const others = jointsToSolve(world) || cs.shapes.manifolds.count > 0;
-  // A threaded 2D world cuts the coloured solve's strips on a worker meanwhile (contact-colors.ts).
-  if (is2D) startStripCut(world, buf, others);
+  // A threaded 2D world plans and packs the coloured solve's rows on a worker meanwhile (contact-colors.ts).
+  if (is2D) startStripPlan(world, buf, others);
   applyImpacts(world, buf);
   measureApproach(world, buf);
 
@@ -108,7 +108,9 @@ function solveContacts(world: PhysicsWorld): void {
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
   // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
   const colored = is2D && useColoredSolve(world, buf, others);
+  // The coloured solve takes the impacted rows out after it plans (contact-colors.ts), the others now.
   if (colored) solveColoredSubsteps(world, buf, hs, [sp[4]!, sp[5]!, sp[6]!, sp[7]!, sp[8]!, sp[9]!], push);
+  else releaseImpactedRows(buf);
   for (let s = 0; s < (colored ? 0 : substeps); s++) {
     integrateVelocities(world, hs);
     warmStartJoints(world);
@@ -189,7 +191,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const mark = cs.solverMark, index = cs.solverIndex;
   const stamp = ++cs.solverStamp;
   // Room for both bodies of every row, on shared memory in a threaded 2D world: the coloured solve's
-  // stages read the list on the workers (contact-colors.ts startStripCut, solver-stages-threads.ts).
+  // stages read the list on the workers (contact-colors.ts startStripPlan, solver-stages-threads.ts).
   const shareList = world.threadPool !== null && world.dimensions === 2;
   let list = cs.solverBodies;
   if (list.length < 2 * n + 1 || (shareList && !isShared(list))) {

@@ -23,6 +23,7 @@ import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
 import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
 import { stripCut2D } from '../collision/contact-strips-kernel.js';
+import { stripLayout2D, stripPlan2D } from '../collision/contact-strip-plan-kernel.js';
 import { warmStartTable } from '../collision/warm-start-kernel.js';
 import {
   approach2D, containBodies2D, deepestRow2D, finishBodies2D, finishBodyRows2D, gatherFill2D, restitutionColored2D, restitutionRows2D, restitutionTargets2D,
@@ -294,6 +295,7 @@ export const KERNEL = Object.freeze({
   barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeysHist: 11, treeForces: 12,
   quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, mortonBucketSort: 17, treeMoments: 18, mortonScatter: 19, centralForce: 20, attractors: 21, solveColored2D: 22, prepareContacts2D: 23,
   gatherFill2D: 24, approach2D: 25, finishBodies2D: 26, restitutionColored2D: 27, stripCut2D: 28, warmStartTable: 29,
+  stripPlan2D: 30,
 });
 
 /**
@@ -319,17 +321,18 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * (contact-colors-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
  * (solver-stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
  * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
- * those kernels). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
+ * those kernels); 10 stripCut2D and 11 stripLayout2D (contact-strips-kernel.ts and
+ * contact-strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
  * the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
-  restitutionTargets2D, restitutionRows2D, claimBlock,
+  restitutionTargets2D, restitutionRows2D, claimBlock, stripCut2D, stripLayout2D,
 ]);
 
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
   treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors, solveColored2D, prepareContacts2D,
-  gatherFill2D, approach2D, finishBodies2D, restitutionColored2D, stripCut2D, warmStartTable,
+  gatherFill2D, approach2D, finishBodies2D, restitutionColored2D, stripCut2D, warmStartTable, stripPlan2D,
 ]);
