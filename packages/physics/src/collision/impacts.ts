@@ -327,6 +327,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
   // of that row could close within the step: the substeps would push it. Repeated until nothing changes.
   // (Only the inactive rows are visited; a row made active leaves the list, which keeps row order.)
+  // A body only ever turns unclean here, so a row leaves the list for good once it cannot turn active:
+  // both bodies unclean, or one unclean and its gap model not closing (its inputs change only if the
+  // clean body turns unclean too). The rows kept, with both bodies clean, see the same bodies' states in
+  // the same order, so the outcome is that of visiting every inactive row each time.
   for (let changed = true; changed;) {
     changed = false;
     let kept = 0;
@@ -334,7 +338,9 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
       const i = idle[k]!;
       const ia = IA[i]!, ib = IB[i]!;
       const ca = ia === 0 || imp[ia * Q + 4] === 1, cb = imp[ib * Q + 4] === 1;
-      if (ca === cb || !linearCloses(world, buf, i, S)) { idle[kept++] = i; continue; }
+      if (ca && cb) { idle[kept++] = i; continue; }
+      if (!ca && !cb) continue;
+      if (!linearCloses(world, buf, i, S)) continue;
       act[i] = 1;
       unclean(imp, ca ? ia : ib);
       changed = true;
