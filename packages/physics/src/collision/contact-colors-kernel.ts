@@ -6,12 +6,14 @@
 
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import type { claimBlock } from '../threads/block-claim.js';
+import type { approach2D } from './solver-stages-kernel.js';
 
 /**
  * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
  * the contact buffer's rows (contact-pack2d.ts layout) group by group into the pack (one block a
- * range of plan[7] ranges, each from its own first slot of every group, `offsets`), then each
+ * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
+ * speeds of the buffer's rows (solver.ts measureApproach, 2,048 rows a block, when P[21] = 1), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
  * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
@@ -43,11 +45,14 @@ import type { claimBlock } from '../threads/block-claim.js';
  * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
  * pack row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry,
  * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
- * (Int32, a buffer row: its pack row, written by the packing);
+ * (Int32, a buffer row: its pack row, written by the packing), 31 to 43 approach2D's arrays
+ * (solver-stages-kernel.ts: measureApproach of the buffer's rows, run as the unit after the packing,
+ * when P[21] > 0);
  * the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3
  * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
  * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
- * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS. The arithmetic
+ * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS, 17-19 gravity
+ * (m/s^2), 20 BodyType.Dynamic, 21 1 to measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic
  * of each row and body is that of solver.ts's one-thread loops, support rows of the relax passes
  * included (support.ts: a frictionless row with one ball resting on another holds the lower ball when
  * that slows the upper one less than the lower). Returns 0 (-1 if another
@@ -71,6 +76,12 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   // (Indices of KERNEL_HELPERS, threads/kernels.ts; the kernel may name nothing outside itself.)
   const packRows = H[0] as typeof coloredPack2D, unpackRows = H[1] as typeof coloredUnpack2D;
   const bodyStage = H[2] as typeof coloredBodies2D, rowPass = H[3] as typeof coloredRows2D;
+  const approachRows = H[12] as typeof approach2D;
+  // The approach speeds' blocks (when P[21] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
+  // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
+  const APPROACH_ROWS = 2048, rows = P[11]!, approachBlocks = P[21] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
+  const approachParams = new Float64Array(5);
+  approachParams[0] = P[17]!; approachParams[1] = P[18]!; approachParams[2] = P[19]!; approachParams[3] = P[20]!; approachParams[4] = 31;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256, BB = 1024;
   // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
@@ -79,11 +90,11 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   // With strips, gravity always and positions when a relax pass follows run inside colour 0's blocks.
   const bodyUnits = Math.ceil((nb - 1) / BB);
   const gravityUnits = fused ? 0 : bodyUnits, positionUnits = fused && relax > 0 ? 0 : bodyUnits;
-  // The units in order: the packing (one block a range of `parts`), then every substep's stages (a
+  // The units in order: the packing (one block a range of `parts`), the approach speeds, then every substep's stages (a
   // body stage one unit, a pass C + 1 units, one a colour, the overflow colour one block), then the
   // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
   // counts finished blocks, so a unit starts once bar[1] reaches its first block.
-  const units = 1 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
+  const units = 2 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
   // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[3])
   // from its own share of a unit first: with strips, block j of either colour is strip pair j's, so a
   // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
@@ -92,9 +103,10 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
   let base = 0, failed = false;
   let stage = 0, u = 0;
   for (let g = 0; g < units; g++) {
-    // Which unit g is: kind 0 pack, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
+    // Which unit g is: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
     let kind: number, first = 0, count: number;
     if (g === 0) { kind = 0; count = parts; }
+    else if (g === 1) { kind = 5; count = approachBlocks; }
     else if (g === units - 1) { kind = 4; count = Math.ceil(np / RB_); }
     else {
       if (stage === 0 || stage === 2 + iters) { kind = stage === 0 ? 1 : 2; count = stage === 0 ? gravityUnits : positionUnits; }
@@ -124,6 +136,7 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       for (let blk = claimNext(claim, base, count, part, threads, cursor); blk >= 0; blk = claimNext(claim, base, count, part, threads, cursor)) {
         try {
           if (kind === 0) packRows(A, P, blk, parts);
+          else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
           else if (kind === 1 || kind === 2) {
             const k0 = 1 + blk * BB, k1 = Math.min(nb, k0 + BB);
             bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
@@ -155,8 +168,8 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
       }
     }
     base = end;
-    // Next unit: advance (stage, colour, substep) past the packing.
-    if (g > 0 && g < units - 1) {
+    // Next unit: advance (stage, colour, substep) past the packing and the approach speeds.
+    if (g > 1 && g < units - 1) {
       if (stage === 0 || stage === 2 + iters) { stage++; u = 0; }
       else if (++u > C) { u = 0; stage++; }
       if (stage === stages) stage = 0;
@@ -167,15 +180,17 @@ export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Arr
 
 /**
  * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
- * filled): the size its claim array needs.
+ * filled), over `rows` buffer rows (its P[11]), measuring the approach speeds if `approach` (its P[21] = 1):
+ * the size its claim array needs.
  */
-export function solveColoredBlocks2D(plan: Int32Array): number {
+export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: boolean): number {
   const substeps = plan[0]!, iters = plan[1]!, relax = plan[2]!, C = plan[4]!, nb = plan[5]!, parts = plan[7]!;
   const np = plan[8]!, fused = plan[9] === 1;
   const bodyUnits = Math.ceil((nb - 1) / 1024);
   const bodies = (fused ? 0 : bodyUnits) + (fused && relax > 0 ? 0 : bodyUnits);
-  const rows = plan[12 + C + 1]! - plan[12]!;
-  return parts + substeps * (bodies + (1 + iters + relax) * rows) + Math.ceil(np / 256);
+  const colorBlocks = plan[12 + C + 1]! - plan[12]!;
+  const approachBlocks = approach ? Math.ceil(rows / 2048) : 0;
+  return parts + approachBlocks + substeps * (bodies + (1 + iters + relax) * colorBlocks) + Math.ceil(np / 256);
 }
 
 /*

@@ -384,6 +384,9 @@ export function solveColoredSubsteps(
   // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
   releaseImpactedRows(buf);
   const A = solveArguments(cs, buf, s, s.arrays);
+  // measureApproach (solver.ts) of the rows, as the solve's unit after the packing.
+  A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
+    buf.impulse, cs.bodyType, cs.bodyState);
   // Rows packed on the worker whose values the impact stage changed meanwhile are packed again.
   if (packed) { const changed = impactChangedRows(); coloredRepack2D(A, changed.rows, changed.count); }
   const P = s.params, g = world.gravity;
@@ -394,7 +397,8 @@ export function solveColoredSubsteps(
   P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
   // The relax passes' support rows (support.ts): which way is down, and the cosine past which a row is one.
   downwardInto(g, P, 14); P[16] = SUPPORT_COS;
-  const blocks = solveColoredBlocks2D(plan);
+  P[17] = g[0]!; P[18] = g[1]!; P[19] = g[2]!; P[20] = BodyType.Dynamic; P[21] = 1;
+  const blocks = solveColoredBlocks2D(plan, buf.count, true);
   if (s.claim.length < blocks) s.claim = sharedLike(s.claim, Math.max(blocks, 2 * s.claim.length));
   A[29] = s.claim;
   const site = 'contactSolverSystem#colors';

@@ -52,13 +52,16 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
  * measureApproach (solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
  * impact stage and the speed at impact across a closing gap. A: 0 ia, 1 ib, 2 a, 3 b (Int32), 4 nx,
  * 5 ny, 6 nz, 7 relativeVelocity (out), 8 impactVelocity (out), 9 separation, 10 impulse, 11 bodyType
- * (Uint8), 12 solver state (rows of 8). P: 0-2 gravity (m/s^2), 3 BodyType.Dynamic. Returns 0.
+ * (Uint8), 12 solver state (rows of 8), each at A[b + j] for b = P[4] (0 when these are A's only
+ * arrays; the coloured solve, contact-colors-kernel.ts, passes them after its own). P: 0-2 gravity
+ * (m/s^2), 3 BodyType.Dynamic, 4 b. Returns 0.
  */
 export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const IA = A[0] as Int32Array, IB = A[1] as Int32Array, CA = A[2] as Int32Array, CB = A[3] as Int32Array;
-  const NX = A[4] as Float64Array, NY = A[5] as Float64Array, NZ = A[6] as Float64Array;
-  const RV = A[7] as Float64Array, IV = A[8] as Float64Array, S0 = A[9] as Float64Array, IMP = A[10] as Float64Array;
-  const type = A[11] as Uint8Array, sb = A[12] as Float64Array;
+  const b0 = P[4]!;
+  const IA = A[b0] as Int32Array, IB = A[b0 + 1] as Int32Array, CA = A[b0 + 2] as Int32Array, CB = A[b0 + 3] as Int32Array;
+  const NX = A[b0 + 4] as Float64Array, NY = A[b0 + 5] as Float64Array, NZ = A[b0 + 6] as Float64Array;
+  const RV = A[b0 + 7] as Float64Array, IV = A[b0 + 8] as Float64Array, S0 = A[b0 + 9] as Float64Array, IMP = A[b0 + 10] as Float64Array;
+  const type = A[b0 + 11] as Uint8Array, sb = A[b0 + 12] as Float64Array;
   const gx = P[0]!, gy = P[1]!, gz = P[2]!, DYNAMIC = P[3]!;
   for (let i = lo; i < hi; i++) {
     const oa = IA[i]! * 8, ob = IB[i]! * 8;

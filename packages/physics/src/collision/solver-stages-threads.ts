@@ -127,9 +127,7 @@ export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: 
 export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const n = buf.count;
   const pool = poolFor(world, n);
-  // While the strip plan runs on a worker (contact-colors.ts startStripPlan) the loop stays here: on the
-  // threads it would first wait for the plan.
-  if (pool === null || pool.busy) return false;
+  if (pool === null) return false;
   const cs = world.collision;
   shareContactBuffer(buf);
   shareState(cs);
@@ -138,7 +136,7 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
     buf.impulse, cs.bodyType, cs.bodyState);
   const g = world.gravity;
-  P[0] = g[0]!; P[1] = g[1]!; P[2] = g[2]!; P[3] = BodyType.Dynamic;
+  P[0] = g[0]!; P[1] = g[1]!; P[2] = g[2]!; P[3] = BodyType.Dynamic; P[4] = 0;
   return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));
 }
 

@@ -88,7 +88,10 @@ function solveContacts(world: PhysicsWorld): void {
   // A threaded 2D world plans and packs the coloured solve's rows on a worker meanwhile (contact-colors.ts).
   if (is2D) startStripPlan(world, buf, others);
   applyImpacts(world, buf);
-  measureApproach(world, buf);
+  // A threaded 2D world with only ball contacts solves them colour by colour on its threads
+  // (contact-colors.ts), measuring the approach speeds there too.
+  const colored = is2D && useColoredSolve(world, buf, others);
+  if (!colored) measureApproach(world, buf);
 
   const st = cs.settings;
   const substeps = st.solverSubsteps;
@@ -106,8 +109,6 @@ function solveContacts(world: PhysicsWorld): void {
   // Which way is down, for the support rows of the 2D relax sweep (support.ts).
   downwardInto(world.gravity, sp, 2);
   const TOT = buf.totalNormalImpulse, LN = buf.normalImpulse;
-  // A threaded 2D world with only ball contacts solves them colour by colour on its threads (contact-colors.ts).
-  const colored = is2D && useColoredSolve(world, buf, others);
   // The coloured solve takes the impacted rows out after it plans (contact-colors.ts), the others now.
   if (colored) solveColoredSubsteps(world, buf, hs, [sp[4]!, sp[5]!, sp[6]!, sp[7]!, sp[8]!, sp[9]!], push);
   else releaseImpactedRows(buf);

@@ -311,11 +311,6 @@ export class ThreadPool {
     this.runs++;
   }
 
-  /** Whether a kernel `start` left running is not joined yet (the next `run` would wait for it). */
-  get busy(): boolean {
-    return this.started !== null;
-  }
-
   /**
    * Waits for the kernel `start` left running (nothing if none) and returns its result (0 if none).
    * @throws Error naming the started kernel's system if the worker's range threw.
