@@ -19,17 +19,17 @@ import type { claimBlock } from '../threads/block-claim.js';
  * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
  * i + 1). A: 0-2 Position x, y, z, 3-5 Velocity x, y, z, 6-8 AngularVelocity x, y, z, 9-11 Force x, y,
  * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of 8), 16 solver extra (rows
- * of 6). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step, every body counts as pushed),
+ * of 6); of the components, x and y and the spin about z are read (slots 2 to 4 of the extra rows, z
+ * and the turn about x and y, are 0 in 2D). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step, every body counts as pushed),
  * 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
  */
 export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
-  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
-  const wx = A[6] as Float64Array, wy = A[7] as Float64Array, wz = A[8] as Float64Array;
+  const px = A[0] as Float64Array, py = A[1] as Float64Array;
+  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, wz = A[8] as Float64Array;
   const fx = A[9] as Float64Array, fy = A[10] as Float64Array, fz = A[11] as Float64Array;
   const type = A[12] as Uint8Array, invMass = A[13] as Float64Array, invInertia = A[14] as Float64Array;
   const sb = A[15] as Float64Array, ex = A[16] as Float64Array;
-  const h = P[0]!, gx = P[1]!, gy = P[2]!, gz = P[3]!, pushed = P[4]!, DYNAMIC = P[5]!, KINEMATIC = P[6]!;
+  const h = P[0]!, gx = P[1]!, gy = P[2]!, pushed = P[4]!, DYNAMIC = P[5]!, KINEMATIC = P[6]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1, e = list[i]!;
@@ -40,8 +40,9 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
-    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
+    // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D, nor their stores here.
+    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = 0;
+    ex[q + 3] = 0; ex[q + 4] = 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
     sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
   }

@@ -267,13 +267,16 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
+    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
+    ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
     if (is2D) {
+      // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D: their stores are not read either.
+      ex[q + 2] = 0; ex[q + 3] = 0; ex[q + 4] = 0;
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
       sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
     } else {
+      ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb; ex[q + 3] = ii > 0 ? -wx[e]! * h : 0; ex[q + 4] = ii > 0 ? -wy[e]! * h : 0;
       sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
       sb[o + 3] = ii > 0 || spins ? wx[e]! : 0; sb[o + 4] = ii > 0 || spins ? wy[e]! : 0; sb[o + 5] = ii > 0 || spins ? wz[e]! : 0;
       sb[o + 6] = 0; sb[o + 7] = 0; sb[o + 8] = 0; sb[o + 9] = invMass[e]!; sb[o + 10] = ii; sb[o + 11] = held;
