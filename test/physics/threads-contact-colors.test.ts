@@ -166,8 +166,8 @@ test('the strip cut made on a worker (ThreadPool.start, beside the impact stage)
   }
   for (let i = 0; i < rows; i++) { IA[i] = i % 9 === 0 ? 0 : 1 + Math.floor(rng.range(0, bodies - 1)); IB[i] = 1 + Math.floor(rng.range(0, bodies - 1)); }
   const outputs = () => [shared(Uint8Array, bodies), shared(Uint8Array, bodies), shared(Uint16Array, bodies), shared(Int32Array, bins), shared(Uint8Array, bins)];
-  // P[6] = 7: the table of the cut's arrays at P[7 .. 17], here in their own order.
-  const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff, 7, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]);
+  // P[6] = 0: the cut's arrays are A's only ones.
+  const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff, 0]);
   const inline = outputs(), worker = outputs();
   stripCut2D([sb, ex, type, list, ...inline, IA, IB], P, null, 0, 1);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);

@@ -32,7 +32,6 @@ interface PairBuffers { a: Int32Array[]; b: Int32Array[]; w: Int32Array[]; count
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
-
 /**
  * Runs the cell pass for the `small` grid bodies on the world's threads, appends the pairs to `cs`'s
  * pair list and calls `wake(world, cs, e)` for each sleeping ball to wake (in the one-thread order),

@@ -229,16 +229,17 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
   return used;
 }
 
-/** Length of stripPlan2D's parameters (its table of stripCut2D's arrays at 32 .. 42). */
-const PLAN_PARAMS = 43;
+/** Length of stripPlan2D's parameters. */
+const PLAN_PARAMS = 16;
 
 /**
  * stripPlan2D's arrays for `buf`'s rows (contact-strip-plan-kernel.ts: solveColored2D's 0 to 30, then
- * the cut's and the layout's own), in `s.planArrays`. The arrays must be sized (scratch) first.
+ * stripCut2D's, then the layout's own), in `s.planArrays`. The arrays must be sized (scratch) first.
  */
 function planArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
   const A = solveArguments(cs, buf, s, s.planArrays);
-  A.push(cs.bodyType, cs.solverBodies, s.strip, s.bin, s.hist, s.binStrip, s.counts, s.start, s.next);
+  A.push(cs.bodyState, cs.bodyExtra, cs.bodyType, cs.solverBodies, s.dyn, s.strip, s.bin, s.hist, s.binStrip, buf.ia, buf.ib);
+  A.push(s.counts, s.start, s.next);
   return A;
 }
 
@@ -252,9 +253,6 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
   return A;
 }
 
-/** Where stripPlan2D's arguments hold stripCut2D's arrays, in the cut's order (see contact-strips-kernel.ts). */
-const CUT_TABLE = [1, 2, 31, 32, 3, 33, 34, 35, 36, 8, 9];
-
 /**
  * stripPlan2D's parameters, in `s.planParams`: a plan by `strips` strips (cut first if `cut`) over
  * `parts` packing ranges, packed there if `pack`.
@@ -262,9 +260,8 @@ const CUT_TABLE = [1, 2, 31, 32, 3, 33, 34, 35, 36, 8, 9];
 function planParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, strips: number, parts: number, pack: boolean, cut: boolean): Float64Array {
   const P = s.planParams;
   P[0] = cs.solverBodyCount; P[1] = buf.count; P[2] = strips; P[3] = BINS; P[4] = BodyType.Dynamic; P[5] = NO_BIN;
-  P[6] = 32; P[7] = parts; P[8] = pack ? 1 : 0; P[9] = cut ? 1 : 0; P[10] = Math.max(64, buf.count >> 6);
+  P[6] = 31; P[7] = parts; P[8] = pack ? 1 : 0; P[9] = cut ? 1 : 0; P[10] = Math.max(64, buf.count >> 6);
   P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = PLAN_HEAD; P[14] = MAX_COLORS; P[15] = BLOCK_ROWS;
-  for (let j = 0; j < CUT_TABLE.length; j++) P[32 + j] = CUT_TABLE[j]!;
   return P;
 }
 

@@ -28,15 +28,14 @@ import type { stripCut2D } from './contact-strips-kernel.js';
  * A: 0 to 29 as solveColored2D's (contact-colors-kernel.ts: 0 pack, 1 solver state, 2 solver extra,
  * 3 dyn, 4 plan, 6 groups, 7 offsets, 8 ia, 9 ib, 15 normalMass, 16 tangentMass, 18 normalImpulse,
  * 19 tangentImpulse1, 23 bounds, 24 bodyOrder, 25 bodyBounds, 26 pair, 27 tot, 28 row), 30 slot (Int32,
- * a buffer row: its pack row), 31 bodyType (Uint8, by entity), 32 the solver bodies' entities (Int32),
- * 33 strip (Uint8, a solver body: its strip, 255 not movable), 34 bin (Uint16), 35 rows a bin (Int32),
- * 36 each bin's strip (Uint8), 37 counts, 38 start, 39 next (Int32, P[14] + 2 each: rows a group, and
- * scratch). P: 0 solver bodies, 1 rows, 2 strips (even, 2 .. P[14]), 3 bins, 4 BodyType.Dynamic, 5 the
- * "no bin" mark, 6 where stripCut2D's table of arrays starts in P (32: P[32 + j] is the index in A of
- * its array j), 7 packing ranges, 8 pack here (1) or not (0), 9 cut here (1) or not (0), 10 the most
- * rows the overflow group may take, 11 rows (again, for coloredPack2D), 12 group slots a packing range
+ * a buffer row: its pack row), 31 to 41 stripCut2D's arrays in its order (contact-strips-kernel.ts:
+ * 36 strip, Uint8, a solver body's strip, 255 not movable), 42 counts, 43 start, 44 next (Int32,
+ * P[14] + 2 each: rows a group, and scratch). P: 0 solver bodies, 1 rows, 2 strips (even, 2 .. P[14]),
+ * 3 bins, 4 BodyType.Dynamic, 5 the "no bin" mark, 6 where stripCut2D's arrays start in A (31),
+ * 7 packing ranges, 8 pack here (1) or not (0), 9 cut here (1) or not (0), 10 the most rows the
+ * overflow group may take, 11 rows (again, for coloredPack2D), 12 group slots a packing range
  * (P[14] + 1), 13 PLAN_HEAD (contact-colors.ts), 14 MAX_COLORS, 15 rows a block (graph colours; unused
- * here), 32 to 42 stripCut2D's table. `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
+ * here). `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
  * 11 stripLayout2D. Returns 1 when planned, -1 when too many rows overflow.
  */
 export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number, _part: number, H: readonly KernelHelper[]): number {
@@ -47,7 +46,7 @@ export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array 
   // Each row's group, counted per group and per packing range.
   const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NM = A[15] as Float64Array, TM = A[16] as Float64Array;
   const LN = A[18] as Float64Array, LT = A[19] as Float64Array, color = A[6] as Uint8Array, partCounts = A[7] as Int32Array;
-  const strip = A[33] as Uint8Array, counts = A[37] as Int32Array, start = A[38] as Int32Array, next = A[39] as Int32Array;
+  const strip = A[36] as Uint8Array, counts = A[42] as Int32Array, start = A[43] as Int32Array, next = A[44] as Int32Array;
   const half = strips >> 1;
   partCounts.fill(0, 0, parts * W);
   counts.fill(0);
@@ -107,11 +106,11 @@ export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array 
  * has colour 0 below `half` and 1 from it, and is one block; with `half` = 0 (graph colours) group g is
  * colour g, cut into blocks of P[15] rows. The plan (A[4]) gets colour c's first block at P[13] + c (the
  * overflow colour, after the others, one block), the colours at slot 4 and the rows to pack at slot 8.
- * A and P as stripPlan2D's (37 counts, 38 start, 39 next). Returns the rows to pack.
+ * A and P as stripPlan2D's (42 counts, 43 start, 44 next). Returns the rows to pack.
  */
 export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number, half: number): number {
   const plan = A[4] as Int32Array, partCounts = A[7] as Int32Array, bounds = A[23] as Int32Array;
-  const counts = A[37] as Int32Array, start = A[38] as Int32Array, next = A[39] as Int32Array;
+  const counts = A[42] as Int32Array, start = A[43] as Int32Array, next = A[44] as Int32Array;
   const parts = P[7]!, W = P[12]!, HEAD = P[13]!, MAXC = P[14]!, blockRows = P[15]!;
   const colors = half > 0 ? 2 : groups;
   start.fill(0);

@@ -16,23 +16,23 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * bin (by the row's first movable body), each bin's strip at the rows' quantiles (the strip of the
  * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
- * Its arrays, j = 0 .. 10, are A[P[P[6] + j]] (a table in P, so a kernel with arrays of its own can
- * call this as a helper: contact-strip-plan-kernel.ts): 0 solver state (rows of 8), 1 solver extra
+ * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
+ * contact-strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state (rows of 8), 1 solver extra
  * (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity), 3 the solver bodies' entity
  * ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out; 255: not movable), 6 bin
  * (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's strip (Uint8, out), 9 ia,
  * 10 ib (Int32, the rows' solver bodies).
  * P: 0 solver bodies, 1 rows, 2 strips (2 .. 255), 3 bins (<= P[5]), 4 BodyType.Dynamic, 5 the "no bin"
- * mark, 6 where the table of arrays starts in P (7: P[7 .. 17] = 0 .. 10 for arrays in that order in A).
+ * mark, 6 b.
  * Returns 0.
  */
 export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
-  const t = P[6]!;
-  const sb = A[P[t]!] as Float64Array, ex = A[P[t + 1]!] as Float64Array, type = A[P[t + 2]!] as Uint8Array, list = A[P[t + 3]!] as Int32Array;
-  const dyn = A[P[t + 4]!] as Uint8Array, strip = A[P[t + 5]!] as Uint8Array, binOf = A[P[t + 6]!] as Uint16Array;
-  const hist = A[P[t + 7]!] as Int32Array, binStrip = A[P[t + 8]!] as Uint8Array;
-  const IA = A[P[t + 9]!] as Int32Array, IB = A[P[t + 10]!] as Int32Array;
+  const b = P[6]!;
+  const sb = A[b] as Float64Array, ex = A[b + 1] as Float64Array, type = A[b + 2] as Uint8Array, list = A[b + 3] as Int32Array;
+  const dyn = A[b + 4] as Uint8Array, strip = A[b + 5] as Uint8Array, binOf = A[b + 6] as Uint16Array;
+  const hist = A[b + 7] as Int32Array, binStrip = A[b + 8] as Uint8Array;
+  const IA = A[b + 9] as Int32Array, IB = A[b + 10] as Int32Array;
   const bodies = P[0]!, n = P[1]!, strips = P[2]!, BINS = P[3]!, DYNAMIC = P[4]!, NO_BIN = P[5]!;
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver.ts).
   dyn[0] = 0;

@@ -29,7 +29,6 @@ interface ContactBuffers { out: KernelArray[][]; counts: Int32Array; arrays: Ker
 
 const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
 
-
 /**
  * Makes the contacts of the leading ball-ball pairs of `cs` on the world's threads into `buf` (which
  * must be empty) and returns how many pairs it handled (0: none, the caller's loop makes them all).

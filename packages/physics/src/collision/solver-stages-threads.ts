@@ -68,8 +68,6 @@ function scratch(world: PhysicsWorld): StageScratch {
   return s;
 }
 
-
-
 /** Moves the collision state's per-entity arrays the kernels read onto shared memory. */
 function shareState(cs: CollisionState): void {
   cs.bodyType = sharedCopy(cs.bodyType); cs.invMass = sharedCopy(cs.invMass); cs.invInertia = sharedCopy(cs.invInertia);
