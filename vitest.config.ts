@@ -18,10 +18,19 @@ class HeadlessFirst extends BaseSequencer {
 // Workspace packages export their TypeScript sources under the 'bitphysics-source' condition, so
 // tests run against the sources without a build step.
 //
-// Two projects: `node` (everything headless) and `browser` (test/browser: pages in Chromium). The
-// browser project's global setup builds and serves the site once and starts one Chromium that its
-// files share, one file at a time. `npm test` (scripts/test.mjs) runs the two projects in two vitest
-// processes at once; a plain `npx vitest run` runs both in one, headless files first.
+// Two projects: `node` (the headless files) and `browser` (the files that drive Chromium:
+// test/browser's pages, and the two files that bundle a page and open it in a Chromium of their own,
+// CHROMIUM_FILES). The browser project's global setup builds and serves the site once and starts one
+// Chromium that test/browser's files share, one file at a time. `npm test` (scripts/test.mjs) runs the
+// two projects in two vitest processes at once, one file at a time each on two cores (vitest's
+// default: cores - 1 workers); a plain `npx vitest run` runs both in one, headless files first.
+/**
+ * Files outside test/browser that open Chromium themselves: they run in the browser lane, which
+ * finished about 150 s before the node lane in a full run on 2 cores (2026-11-23: node 470 s, browser
+ * 318 s; these two took 49 s of the node lane's), so the two lanes end closer together.
+ */
+const CHROMIUM_FILES = ['test/packaging/packages.test.ts', 'test/games/new-game.test.ts'];
+
 export default defineConfig({
   resolve: { conditions: ['bitphysics-source', ...defaultClientConditions] },
   ssr: { resolve: { conditions: ['bitphysics-source', ...defaultServerConditions] } },
@@ -31,12 +40,12 @@ export default defineConfig({
     hookTimeout: 120_000,
     sequence: { sequencer: HeadlessFirst },
     projects: [
-      { extends: true, test: { name: 'node', include: ['test/**/*.test.ts'], exclude: ['test/browser/**'] } },
+      { extends: true, test: { name: 'node', include: ['test/**/*.test.ts'], exclude: ['test/browser/**', ...CHROMIUM_FILES] } },
       {
         extends: true,
         test: {
           name: 'browser',
-          include: ['test/browser/**/*.test.ts'],
+          include: ['test/browser/**/*.test.ts', ...CHROMIUM_FILES],
           globalSetup: ['test/browser/global-setup.ts'],
           // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
           hookTimeout: 600_000,
