@@ -1,5 +1,5 @@
 import { expect, test } from 'vitest';
-import { CLEAR_PROBE_EVERY, LoopChooser, MIN_PROBE_PERIOD, nextProbePeriod, PROBE_EVERY, SWITCH_RATIO, WINDOW } from '../../packages/physics/src/threads/adaptive.js';
+import { CLEAR_PROBE_EVERY, LoopChooser, MAX_AGE, MIN_PROBE_PERIOD, nextProbePeriod, PROBE_EVERY, SWITCH_RATIO, WINDOW } from '../../packages/physics/src/threads/adaptive.js';
 
 // The adaptive choice between a pool's threads and one thread (threads/adaptive.ts). The rule under
 // test is counted in calls, not timed, so there is no tolerance: the fake loop's times are given.
@@ -84,4 +84,21 @@ test('the other way takes over only when it looks more than 10 % faster (SWITCH_
   const ran = simulate(80, (i, p) => (p ? (i < 30 ? 1 : i < 60 ? 1.1 : 1.3) : 1.05)).ran;
   expect(serialCalls(ran).filter((i) => i < 63)).toEqual([3, 4, 8, 16, 32, 48]);
   expect(ran.slice(63)).toEqual(ran.slice(63).map((_, k) => k + 63 === 66 || k + 63 === 74));
+});
+
+test('a loop whose work grows on both ways (a pile forming) stays on the faster way: the way not preferred runs only as single probes', () => {
+  // The threads take half of one thread's time throughout, and both grow by 5 % of the first call's
+  // time a call (four times as long by call 60). One thread runs only as probes, up to
+  // CLEAR_PROBE_EVERY calls apart; its estimate is its newest probe (older times than MAX_AGE calls do
+  // not count), and by call 81 the threads' own calls look slower than that: the call instead runs one
+  // thread as a probe, which finds it still twice as slow. Before, the least of the last WINDOW probes
+  // (calls 4 to 24) switched the loop: one thread ran calls 37 and 38 and again 112 and 113, each pair
+  // at twice the threads' time.
+  expect(MAX_AGE).toBe(PROBE_EVERY);
+  const ran = simulate(300, (i, p) => (p ? 0.5 : 1) * (1 + 0.05 * i)).ran;
+  expect(serialCalls(ran)).toEqual([3, 4, 8, 24, 81, 145, 209, 273]);
+  // And one thread twice as fast as the threads, both growing: the threads only ever run as single probes.
+  const rev = simulate(300, (i, p) => (p ? 1 : 0.5) * (1 + 0.05 * i)).ran;
+  const threadCalls = rev.map((p, i) => (p && i >= 3 ? i : -1)).filter((i) => i >= 0);
+  for (let k = 1; k < threadCalls.length; k++) expect(threadCalls[k]! - threadCalls[k - 1]!).toBeGreaterThan(1);
 });

@@ -24,6 +24,15 @@
  * process's, or a worker the system did not schedule, or a garbage collection: it says nothing of
  * what the way costs, and one delayed call must not switch a loop. It takes WINDOW slow calls in a row
  * to raise the estimate, so a loop whose work grows (a pile forming) is followed within WINDOW calls.
+ * But the way not preferred runs only as probes, up to CLEAR_PROBE_EVERY calls apart, and its older
+ * probes tell what it cost long ago: a time older than MAX_AGE calls counts only while it is its way's
+ * newest. And when the preferred way's own calls have grown past the other way's estimate and the
+ * other way's newest time is older than MIN_PROBE_PERIOD calls, the call runs the other way as a probe
+ * instead of switching, its time replaces that way's window, and the two estimates then decide.
+ * (Switching on the old times moved loops whose work grows on both ways to the slower way:
+ * balls-in-box's cell pass, 20,000 balls on 2 threads, ran 11 of 45 calls in steps 120 to 165 on one
+ * thread at 8.7 ms against 4.4 ms on the threads, and the rows' preparation 4 at 15.7 ms against 4.8,
+ * while the pile formed.)
  * The average this replaced (a faster time taken at once, a slower one weighted 0.3) let one delayed
  * call switch a loop to the other way until the next probe, up to PROBE_EVERY calls: balls-in-box's
  * cell pass (20,000 balls, 2 threads) ran 92 of 181 steps on one thread at 4.8 ms a call against 2.6
@@ -70,6 +79,9 @@ export const SWITCH_RATIO = 0.9;
 /** Times a way's estimate is the least of (see the file's header). */
 export const WINDOW = 3;
 
+/** Calls after which a time no longer counts in its way's estimate, unless it is the way's newest (see the file's header). */
+export const MAX_AGE = PROBE_EVERY;
+
 /** What is known of one loop. */
 interface Site {
   /** Calls so far. */
@@ -83,8 +95,14 @@ interface Site {
   preferred: boolean | null;
   period: number;
   since: number;
-  /** Whether the call chosen last is a probe. */
+  /** Whether the call chosen last is a probe, and whether it checks a switch the estimates asked for (see the file's header). */
   probing: boolean;
+  checking: boolean;
+  /** The call (`calls` before it) that gave each time of the windows, and each way's newest (-1: none). */
+  parallelCalls: Float64Array;
+  serialCalls: Float64Array;
+  parallelAt: number;
+  serialAt: number;
 }
 
 /** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
@@ -104,17 +122,24 @@ export class LoopChooser {
       s = {
         calls: 0, parallelTimes: new Float64Array(WINDOW).fill(NaN),
         serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
-        preferred: null, period: MIN_PROBE_PERIOD, since: 0, probing: false,
+        preferred: null, period: MIN_PROBE_PERIOD, since: 0, probing: false, checking: false,
+        parallelCalls: new Float64Array(WINDOW), serialCalls: new Float64Array(WINDOW), parallelAt: -1, serialAt: -1,
       };
       this.sites.set(site, s);
     }
     const c = s.calls;
     if (c < 3) return true;
-    const parallel = least(s.parallelTimes), serial = least(s.serialTimes);
+    const parallel = least(s.parallelTimes, s.parallelCalls, c), serial = least(s.serialTimes, s.serialCalls, c);
     if (c < 5 || Number.isNaN(serial)) return false;
     if (Number.isNaN(parallel)) return true;
     const preferParallel = prefers(s.preferred, parallel, serial);
-    // A change of the preferred way (its own calls got slower) is checked back on soon.
+    if (s.preferred !== null && s.preferred !== preferParallel) {
+      // The preferred way's own calls got slower. If the other way's newest time is older than
+      // MIN_PROBE_PERIOD calls, this call runs it as a probe: its time then decides (record).
+      const otherAt = s.preferred ? s.serialAt : s.parallelAt;
+      if (c - otherAt > MIN_PROBE_PERIOD) { s.probing = true; s.checking = true; s.since = 0; return preferParallel; }
+    }
+    // A change of the preferred way is checked back on soon.
     if (s.preferred !== preferParallel) { s.preferred = preferParallel; s.period = MIN_PROBE_PERIOD; s.since = 0; }
     s.probing = ++s.since >= s.period;
     if (!s.probing) return preferParallel;
@@ -126,29 +151,35 @@ export class LoopChooser {
   record(site: string, parallel: boolean, ms: number, n: number): void {
     const s = this.sites.get(site);
     if (s === undefined) return;
-    const first = s.calls === 0, probe = s.probing;
+    const first = s.calls === 0, probe = s.probing, checking = s.checking, call = s.calls;
     s.calls++;
     s.probing = false;
+    s.checking = false;
     if (first || !(n > 0) || !(ms >= 0)) return;
     const v = ms / n;
     // Into the way's window of its last WINDOW times (see the file's header). Both ways follow the
-    // same rule, probes included, so neither is favoured by having more samples.
-    const at = parallel ? s.parallelNext : s.serialNext;
-    (parallel ? s.parallelTimes : s.serialTimes)[at] = v;
-    if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
+    // same rule, probes included, so neither is favoured by having more samples; but the time of a
+    // probe that checks a switch replaces the window, so the switch is judged by what the way costs now.
+    const times = parallel ? s.parallelTimes : s.serialTimes;
+    if (checking) times.fill(NaN);
+    const at = checking ? 0 : parallel ? s.parallelNext : s.serialNext;
+    times[at] = v;
+    (parallel ? s.parallelCalls : s.serialCalls)[at] = call;
+    if (parallel) { s.parallelNext = (at + 1) % WINDOW; s.parallelAt = call; } else { s.serialNext = (at + 1) % WINDOW; s.serialAt = call; }
     if (!probe) return;
-    // A probe: the choice confirmed backs off; a changed one is checked back on soon.
-    const a = least(s.parallelTimes), b = least(s.serialTimes);
+    // A probe: the choice confirmed backs off; a changed one is checked back on soon (the probe that
+    // made the change counts as the first call of the new way when it checked a switch).
+    const a = least(s.parallelTimes, s.parallelCalls, s.calls), b = least(s.serialTimes, s.serialCalls, s.calls);
     const p = prefers(s.preferred, a, b);
     if (p === s.preferred) s.period = nextProbePeriod(s.period, a, b);
-    else { s.preferred = p; s.period = MIN_PROBE_PERIOD; s.since = 0; }
+    else { s.preferred = p; s.period = MIN_PROBE_PERIOD; s.since = checking ? 1 : 0; }
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
   preference(site: string): boolean | null {
     const s = this.sites.get(site);
     if (s === undefined) return null;
-    const parallel = least(s.parallelTimes), serial = least(s.serialTimes);
+    const parallel = least(s.parallelTimes, s.parallelCalls, s.calls), serial = least(s.serialTimes, s.serialCalls, s.calls);
     if (Number.isNaN(parallel) || Number.isNaN(serial)) return null;
     return parallel <= serial;
   }
@@ -164,9 +195,17 @@ function prefers(was: boolean | null, a: number, b: number): boolean {
   return was ? !(b < SWITCH_RATIO * a) : a < SWITCH_RATIO * b;
 }
 
-/** A way's estimate, ms per element: the least of its window's times (NaN when it has none). */
-function least(times: Float64Array): number {
-  let est = Infinity;
-  for (let k = 0; k < times.length; k++) if (times[k]! < est) est = times[k]!; // NaN (no time) is never less
-  return est === Infinity ? NaN : est;
+/**
+ * A way's estimate, ms per element, at call `now`: the least of its window's `times` taken within the
+ * last MAX_AGE calls (`calls`: the call of each), or its newest time when none is (NaN when it has none).
+ */
+function least(times: Float64Array, calls: Float64Array, now: number): number {
+  let est = Infinity, newest = NaN, newestCall = -Infinity;
+  for (let k = 0; k < times.length; k++) {
+    const t = times[k]!;
+    if (t !== t) continue; // NaN: no time
+    if (now - calls[k]! <= MAX_AGE && t < est) est = t;
+    if (calls[k]! > newestCall) { newestCall = calls[k]!; newest = t; }
+  }
+  return est === Infinity ? newest : est;
 }
