@@ -28,35 +28,34 @@ import type { approach2D } from './solver-stages-kernel.js';
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
  * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
- * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver
- * extra (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
- * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours
- * C, 5 solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are packed already, contact-strip-plan-kernel.ts), 8 rows packed,
- * 9 strips (1: fused body stages), 10 even blocks, 11 1 when the strip plan packed the rows, 12 + c colour c's first block (c = 0 .. C; colour C the overflow
- * colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort),
- * 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255 not packed),
- * 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as it packs),
- * the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15 normalMass,
- * 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner (Uint8),
- * 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j] ..
- * bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32), 26 pair (Int32, two
- * a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
+ * A: 0 pack (contact-pack2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver extra
+ * (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
+ * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours C, 5
+ * solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are
+ * packed already, contact-strip-plan-kernel.ts), 8 rows packed, 9 strips (1: fused body stages), 10
+ * even blocks, 11 1 when the strip plan packed the rows, 12 + c colour c's first block (c = 0 .. C;
+ * colour C the overflow colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks
+ * done, 2 abort), 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255
+ * not packed), 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as
+ * it packs), the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15
+ * normalMass, 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner
+ * (Uint8), 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j]
+ * .. bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32), 26 pair (Int32,
+ * two a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
  * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
- * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a
- * pack row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry,
- * a flag a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
+ * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a pack
+ * row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry, a flag
+ * a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
  * (Int32, a buffer row: its pack row, written by the packing), 31 to 43 approach2D's arrays
  * (solver-stages-kernel.ts: measureApproach of the buffer's rows, run as the unit after the packing,
- * when P[21] > 0);
- * the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3
- * dynamic softness, 4-6 rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the
- * buffer's rows, 12 group slots a thread in offsets, 13 spin before blocking (microseconds), 14-15
- * the unit vector along gravity (0, 0 without gravity), 16 support.ts's SUPPORT_COS, 17-19 gravity
- * (m/s^2), 20 BodyType.Dynamic, 21 1 to measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic
- * of each row and body is that of solver.ts's one-thread loops, support rows of the relax passes
- * included (support.ts: a frictionless row with one ball resting on another holds the lower ball when
- * that slows the upper one less than the lower). Returns 0 (-1 if another
- * thread failed and this one stopped).
+ * when P[21] > 0); the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3 dynamic softness, 4-6
+ * rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the buffer's rows, 12 group slots
+ * a thread in offsets, 13 spin before blocking (microseconds), 14-15 the unit vector along gravity (0,
+ * 0 without gravity), 16 support.ts's SUPPORT_COS, 17-19 gravity (m/s^2), 20 BodyType.Dynamic, 21 1 to
+ * measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic of each row and body is
+ * that of solver.ts's one-thread loops, support rows of the relax passes included (support.ts: a
+ * frictionless row with one ball resting on another holds the lower ball when that slows the upper one
+ * less than the lower). Returns 0 (-1 if another thread failed and this one stopped).
  */
 export function solveColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
   const pk = A[0] as Float64Array, sb = A[1] as Float64Array, ex = A[2] as Float64Array, dyn = A[3] as Uint8Array;

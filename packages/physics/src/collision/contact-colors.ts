@@ -254,6 +254,16 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
 }
 
 /**
+ * Appends approach2D's arrays for `buf`'s rows (solver-stages-kernel.ts: ia, ib, a, b, the normal,
+ * relativeVelocity, impactVelocity, separation, impulse, body types, solver state) to `A`; returns `A`.
+ */
+export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: KernelArray[]): KernelArray[] {
+  A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
+    buf.impulse, cs.bodyType, cs.bodyState);
+  return A;
+}
+
+/**
  * stripPlan2D's parameters, in `s.planParams`: a plan by `strips` strips (cut first if `cut`) over
  * `parts` packing ranges, packed there if `pack`.
  */
@@ -380,10 +390,8 @@ export function solveColoredSubsteps(
   // Planned from the masses and impulses before the impact stage took its resolved rows out: they stay
   // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
   releaseImpactedRows(buf);
-  const A = solveArguments(cs, buf, s, s.arrays);
   // measureApproach (solver.ts) of the rows, as the solve's unit after the packing.
-  A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
-    buf.impulse, cs.bodyType, cs.bodyState);
+  const A = approachArguments(cs, buf, solveArguments(cs, buf, s, s.arrays));
   // Rows packed on the worker whose values the impact stage changed meanwhile are packed again.
   if (packed) { const changed = impactChangedRows(); coloredRepack2D(A, changed.rows, changed.count); }
   const P = s.params, g = world.gravity;

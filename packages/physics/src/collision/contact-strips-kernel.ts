@@ -17,11 +17,11 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
  * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
- * contact-strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state (rows of 8), 1 solver extra
- * (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity), 3 the solver bodies' entity
- * ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out; 255: not movable), 6 bin
- * (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's strip (Uint8, out), 9 ia,
- * 10 ib (Int32, the rows' solver bodies).
+ * contact-strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state
+ * (rows of 8), 1 solver extra (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity),
+ * 3 the solver bodies' entity ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out;
+ * 255: not movable), 6 bin (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's
+ * strip (Uint8, out), 9 ia, 10 ib (Int32, the rows' solver bodies).
  * P: 0 solver bodies, 1 rows, 2 strips (2 .. 255), 3 bins (<= P[5]), 4 BodyType.Dynamic, 5 the "no bin"
  * mark, 6 b.
  * Returns 0.

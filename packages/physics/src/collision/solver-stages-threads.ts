@@ -37,7 +37,7 @@ import { isShared, sharedCopy, sharedFloat64, sharedLike, type ThreadPool } from
 import { nowMs } from '../threads/adaptive.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { reportNonFinite } from '../errors.js';
-import { callerMayWait, coloredPlan, shareContactBuffer, SPIN_MICROSECONDS } from './contact-colors.js';
+import { approachArguments, callerMayWait, coloredPlan, shareContactBuffer, SPIN_MICROSECONDS } from './contact-colors.js';
 import { restitutionBlocks2D, restitutionColored2D } from './solver-stages-kernel.js';
 
 /**
@@ -131,8 +131,7 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   shareState(cs);
   const s = scratch(world), A = s.arrays, P = s.params;
   A.length = 0;
-  A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
-    buf.impulse, cs.bodyType, cs.bodyState);
+  approachArguments(cs, buf, A);
   const g = world.gravity;
   P[0] = g[0]!; P[1] = g[1]!; P[2] = g[2]!; P[3] = BodyType.Dynamic; P[4] = 0;
   return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));

@@ -98,11 +98,9 @@ interface Site {
   /** Whether the call chosen last is a probe, and whether it checks a switch the estimates asked for (see the file's header). */
   probing: boolean;
   checking: boolean;
-  /** The call (`calls` before it) that gave each time of the windows, and each way's newest (-1: none). */
+  /** The call (`calls` before it) that gave each time of the windows. */
   parallelCalls: Float64Array;
   serialCalls: Float64Array;
-  parallelAt: number;
-  serialAt: number;
 }
 
 /** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
@@ -123,7 +121,7 @@ export class LoopChooser {
         calls: 0, parallelTimes: new Float64Array(WINDOW).fill(NaN),
         serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
         preferred: null, period: MIN_PROBE_PERIOD, since: 0, probing: false, checking: false,
-        parallelCalls: new Float64Array(WINDOW), serialCalls: new Float64Array(WINDOW), parallelAt: -1, serialAt: -1,
+        parallelCalls: new Float64Array(WINDOW), serialCalls: new Float64Array(WINDOW),
       };
       this.sites.set(site, s);
     }
@@ -136,7 +134,7 @@ export class LoopChooser {
     if (s.preferred !== null && s.preferred !== preferParallel) {
       // The preferred way's own calls got slower. If the other way's newest time is older than
       // MIN_PROBE_PERIOD calls, this call runs it as a probe: its time then decides (record).
-      const otherAt = s.preferred ? s.serialAt : s.parallelAt;
+      const otherAt = s.preferred ? newestCall(s.serialTimes, s.serialCalls) : newestCall(s.parallelTimes, s.parallelCalls);
       if (c - otherAt > MIN_PROBE_PERIOD) { s.probing = true; s.checking = true; s.since = 0; return preferParallel; }
     }
     // A change of the preferred way is checked back on soon.
@@ -165,7 +163,7 @@ export class LoopChooser {
     const at = checking ? 0 : parallel ? s.parallelNext : s.serialNext;
     times[at] = v;
     (parallel ? s.parallelCalls : s.serialCalls)[at] = call;
-    if (parallel) { s.parallelNext = (at + 1) % WINDOW; s.parallelAt = call; } else { s.serialNext = (at + 1) % WINDOW; s.serialAt = call; }
+    if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
     if (!probe) return;
     // A probe: the choice confirmed backs off; a changed one is checked back on soon (the probe that
     // made the change counts as the first call of the new way when it checked a switch).
@@ -200,12 +198,19 @@ function prefers(was: boolean | null, a: number, b: number): boolean {
  * last MAX_AGE calls (`calls`: the call of each), or its newest time when none is (NaN when it has none).
  */
 function least(times: Float64Array, calls: Float64Array, now: number): number {
-  let est = Infinity, newest = NaN, newestCall = -Infinity;
+  let est = Infinity, newest = NaN, at = -1;
   for (let k = 0; k < times.length; k++) {
     const t = times[k]!;
     if (t !== t) continue; // NaN: no time
     if (now - calls[k]! <= MAX_AGE && t < est) est = t;
-    if (calls[k]! > newestCall) { newestCall = calls[k]!; newest = t; }
+    if (calls[k]! > at) { at = calls[k]!; newest = t; }
   }
   return est === Infinity ? newest : est;
+}
+
+/** The call that gave a way's newest time (`times` and `calls` as least's), -1 when it has none. */
+function newestCall(times: Float64Array, calls: Float64Array): number {
+  let at = -1;
+  for (let k = 0; k < times.length; k++) if (times[k] === times[k] && calls[k]! > at) at = calls[k]!;
+  return at;
 }

@@ -323,8 +323,8 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
  * those kernels); 10 stripCut2D and 11 stripLayout2D (contact-strips-kernel.ts and
  * contact-strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
- * (solver-stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs once a step: V8 then compiles
- * the loops as whole functions with full type feedback.
+ * (solver-stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
+ * once a step: V8 then compiles the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
