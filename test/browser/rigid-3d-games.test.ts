@@ -89,7 +89,11 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(toppled).toBeGreaterThan(3);
     // Key 2: the stack. A drag from the top box upward lifts it off the stack.
     await g.press('2');
-    await g.waitFor(() => (window.game as unknown as Lab).handles().scene === 'stack', null);
+    // The new scene's bodies are drawn from the first frame after the switch: wait for it too.
+    await g.waitFor(() => {
+      const game = window.game as unknown as Lab;
+      return game.handles().scene === 'stack' && game.renderer.drawnPosition(game.handles().main) !== null;
+    }, null);
     const at = await g.page.evaluate(() => {
       const game = window.game as unknown as Lab;
       game.paused = true;
