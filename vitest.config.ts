@@ -1,6 +1,6 @@
+import { defaultClientConditions, defaultServerConditions } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { BaseSequencer, type TestSpecification } from 'vitest/node';
-import { defaultClientConditions, defaultServerConditions } from 'vite';
 
 /**
  * Runs the headless files first (longest first, side by side on every worker), then the browser

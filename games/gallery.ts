@@ -1,6 +1,11 @@
 /** The gallery page: reads registry.json (written by the build from each game's game.json) and lists the games. */
 
-interface Entry { folder: string; title: string; summary: string; category: string }
+interface Entry {
+  folder: string;
+  title: string;
+  summary: string;
+  category: string;
+}
 
 async function main(): Promise<void> {
   const root = document.getElementById('gallery');

@@ -11,19 +11,22 @@
 //
 // Flags: --scene (default balls-in-box), --count (scene default), --threads (default 1), --steps
 // (default 330), --window a-b (default 150-250), --seed (default 1). Exit code 2 on a usage error.
-import * as esbuild from 'esbuild';
+
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
+import * as esbuild from 'esbuild';
 import { root } from './build.mjs';
 
 /** A bad flag found only once the packages are built (an unknown scene): reported as a usage error. */
 class UsageError extends Error {}
 
 function usage(message) {
-  console.error(`ab: ${message}\nusage: node scripts/ab.mjs <rev> [--scene balls-in-box] [--count n] [--threads n] [--steps n] [--window a-b] [--seed n]`);
+  console.error(
+    `ab: ${message}\nusage: node scripts/ab.mjs <rev> [--scene balls-in-box] [--count n] [--threads n] [--steps n] [--window a-b] [--seed n]`,
+  );
   process.exit(2);
 }
 
@@ -32,8 +35,12 @@ try {
   parsed = parseArgs({
     allowPositionals: true,
     options: {
-      scene: { type: 'string', default: 'balls-in-box' }, count: { type: 'string' }, threads: { type: 'string', default: '1' },
-      steps: { type: 'string', default: '330' }, window: { type: 'string', default: '150-250' }, seed: { type: 'string', default: '1' },
+      scene: { type: 'string', default: 'balls-in-box' },
+      count: { type: 'string' },
+      threads: { type: 'string', default: '1' },
+      steps: { type: 'string', default: '330' },
+      window: { type: 'string', default: '150-250' },
+      seed: { type: 'string', default: '1' },
     },
   });
 } catch (e) {
@@ -46,10 +53,13 @@ const integer = (name, text, min) => {
   if (!Number.isInteger(v) || v < min) usage(`--${name} must be an integer >= ${min}, got ${text}`);
   return v;
 };
-const threads = integer('threads', values.threads, 1), steps = integer('steps', values.steps, 1), seed = integer('seed', values.seed, 0);
+const threads = integer('threads', values.threads, 1),
+  steps = integer('steps', values.steps, 1),
+  seed = integer('seed', values.seed, 0);
 const count = values.count === undefined ? undefined : integer('count', values.count, 1);
 const win = /^(\d+)-(\d+)$/.exec(values.window);
-if (!win || Number(win[1]) >= Number(win[2]) || Number(win[2]) > steps) usage(`--window must be a-b with a < b <= steps, got ${values.window}`);
+if (!win || Number(win[1]) >= Number(win[2]) || Number(win[2]) > steps)
+  usage(`--window must be a-b with a < b <= steps, got ${values.window}`);
 const [w0, w1] = [Number(win[1]), Number(win[2])];
 
 const rev = positionals[0];
@@ -65,12 +75,22 @@ try {
   // The revision's sources resolve their packages (bitecs) from this tree's node_modules.
   symlinkSync(join(root, 'node_modules'), join(base, 'node_modules'), 'dir');
   const bundle = async (tree, name) => {
-    const entry = join(temp, `${name}.ts`), out = join(temp, `${name}.mjs`);
+    const entry = join(temp, `${name}.ts`),
+      out = join(temp, `${name}.mjs`);
     writeFileSync(entry, `export * from ${JSON.stringify(join(tree, 'packages', 'physics', 'src', 'index.ts'))};\n`);
-    await esbuild.build({ entryPoints: [entry], bundle: true, platform: 'node', format: 'esm', conditions: ['bitphysics-source'], outfile: out, logLevel: 'error' });
+    await esbuild.build({
+      entryPoints: [entry],
+      bundle: true,
+      platform: 'node',
+      format: 'esm',
+      conditions: ['bitphysics-source'],
+      outfile: out,
+      logLevel: 'error',
+    });
     return import(out);
   };
-  const A = await bundle(base, 'rev'), B = await bundle(root, 'tree');
+  const A = await bundle(base, 'rev'),
+    B = await bundle(root, 'tree');
   const make = (M) => {
     const scene = M.SCENES[values.scene];
     if (!scene) throw new UsageError(`unknown scene ${values.scene} (scenes: ${Object.keys(M.SCENES).join(', ')})`);
@@ -79,7 +99,10 @@ try {
     scene.build(w, options);
     return w;
   };
-  const worlds = [[A, make(A), []], [B, make(B), []]];
+  const worlds = [
+    [A, make(A), []],
+    [B, make(B), []],
+  ];
   if (threads > 1) for (const [M, w] of worlds) await M.threadsReady(w);
   for (let s = 0; s < steps; s++) {
     for (const [M, w, times] of s % 2 === 0 ? worlds : [...worlds].reverse()) {
@@ -89,17 +112,24 @@ try {
     }
   }
   const [[, wa, ta], [, wb, tb]] = worlds;
-  const median = (x) => { const y = [...x].sort((p, q) => p - q); return y[y.length >> 1]; };
+  const median = (x) => {
+    const y = [...x].sort((p, q) => p - q);
+    return y[y.length >> 1];
+  };
   const mean = (x) => x.reduce((p, q) => p + q, 0) / x.length;
-  const a = ta.slice(w0, w1), b = tb.slice(w0, w1), ratios = b.map((t, i) => t / a[i]);
+  const a = ta.slice(w0, w1),
+    b = tb.slice(w0, w1),
+    ratios = b.map((t, i) => t / a[i]);
   const f = (x) => x.toFixed(2);
   console.log(`${values.scene}${count === undefined ? '' : ` ${count}`}, threads ${threads}, steps ${w0}-${w1} of ${steps}:`);
   console.log(`  ${rev}: mean ${f(mean(a))} ms, median ${f(median(a))} ms`);
   console.log(`  working tree: mean ${f(mean(b))} ms, median ${f(median(b))} ms`);
   console.log(`  working tree / ${rev}: mean ${(mean(b) / mean(a)).toFixed(3)}, median of the steps' ratios ${median(ratios).toFixed(3)}`);
-  const ha = A.stateHash(wa), hb = B.stateHash(wb);
+  const ha = A.stateHash(wa),
+    hb = B.stateHash(wb);
   console.log(`  state hashes after ${steps} steps: ${ha} ${hb} (${ha === hb ? 'equal' : 'different'})`);
-  A.disposeWorld(wa); B.disposeWorld(wb);
+  A.disposeWorld(wa);
+  B.disposeWorld(wb);
 } catch (e) {
   if (!(e instanceof UsageError)) throw e;
   console.error(`ab: ${e.message}`);

@@ -1,10 +1,11 @@
 // Builds the gallery of games (dist/site), the bench CLI (packages/bench/dist) and the packages'
 // ESM bundles (packages/*/dist). Run directly (`npm run build`) or import the functions.
-import * as esbuild from 'esbuild';
+
 import { execFileSync } from 'node:child_process';
-import { existsSync, readdirSync, readFileSync, statSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import * as esbuild from 'esbuild';
 
 export const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 export const siteDir = join(root, 'dist', 'site');
@@ -38,7 +39,9 @@ export function readRegistry(games = join(root, 'games')) {
     if (!categories.includes(category)) throw new Error(`games/${folder}/game.json: category must be one of ${categories.join(', ')}`);
     return { folder, title: meta.title, summary: meta.summary, category, order: meta.order ?? 100 };
   });
-  entries.sort((a, b) => categories.indexOf(a.category) - categories.indexOf(b.category) || a.order - b.order || a.title.localeCompare(b.title));
+  entries.sort(
+    (a, b) => categories.indexOf(a.category) - categories.indexOf(b.category) || a.order - b.order || a.title.localeCompare(b.title),
+  );
   return entries;
 }
 
@@ -156,7 +159,11 @@ function buildDeclarations(dir) {
   const config = join(dir, 'tsconfig.build.json');
   if (!existsSync(config)) return;
   try {
-    execFileSync(process.execPath, [join(root, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', config], { cwd: root, encoding: 'utf8', stdio: 'pipe' });
+    execFileSync(process.execPath, [join(root, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', config], {
+      cwd: root,
+      encoding: 'utf8',
+      stdio: 'pipe',
+    });
   } catch (error) {
     throw new Error(`declarations of ${dir} failed:\n${error.stdout ?? ''}${error.stderr ?? ''}`);
   }

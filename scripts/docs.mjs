@@ -24,11 +24,16 @@ export function buildDocs({ quiet = false } = {}) {
   if (!existsSync(typedoc)) return Promise.reject(new Error(`${typedoc} is missing: run npm install at the repository root`));
   return new Promise((resolveDocs, reject) => {
     const child = spawn(process.execPath, [typedoc, '--options', 'typedoc.json', '--treatValidationWarningsAsErrors'], {
-      cwd: tools, stdio: quiet ? ['ignore', 'pipe', 'pipe'] : 'inherit',
+      cwd: tools,
+      stdio: quiet ? ['ignore', 'pipe', 'pipe'] : 'inherit',
     });
     let output = '';
-    child.stdout?.on('data', (d) => { output += d; });
-    child.stderr?.on('data', (d) => { output += d; });
+    child.stdout?.on('data', (d) => {
+      output += d;
+    });
+    child.stderr?.on('data', (d) => {
+      output += d;
+    });
     child.on('error', reject);
     child.on('exit', (code) => (code === 0 ? resolveDocs(docsDir) : reject(new Error(`typedoc exited with ${code}\n${output}`))));
   });

@@ -3,7 +3,7 @@
 // pause, FPS, window.game and the ready flag; index.html; game.json; a placeholder thumbnail.png)
 // and its browser test test/browser/<name>.test.ts. The new game builds, appears in the gallery and
 // passes its test as generated. Tests import newGame().
-import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { deflateSync } from 'node:zlib';
@@ -31,7 +31,9 @@ export function titleOf(name) {
  */
 export function newGame(name, { title = undefined, gamesDir = join(root, 'games'), testDir = join(root, 'test', 'browser') } = {}) {
   if (typeof name !== 'string' || !NAME.test(name) || name.length < 2 || name.length > 40) {
-    throw new TypeError(`new-game: name must be lower-case words joined by dashes (e.g. my-game), 2 to 40 characters, got ${JSON.stringify(name)}`);
+    throw new TypeError(
+      `new-game: name must be lower-case words joined by dashes (e.g. my-game), 2 to 40 characters, got ${JSON.stringify(name)}`,
+    );
   }
   if (name === 'shared') throw new Error('new-game: "shared" is the games\' shared folder');
   const dir = join(gamesDir, name);
@@ -77,15 +79,24 @@ export function placeholderPng(width, height) {
       const floor = y > height * 0.85;
       const [r, g, b] = inBall ? [108, 182, 255] : floor ? [60, 68, 84] : [16, 20, 28];
       const o = y * (width * 3 + 1) + 1 + x * 3;
-      raw[o] = r; raw[o + 1] = g; raw[o + 2] = b;
+      raw[o] = r;
+      raw[o + 1] = g;
+      raw[o + 2] = b;
     }
   }
   const header = Buffer.alloc(13);
-  header.writeUInt32BE(width, 0); header.writeUInt32BE(height, 4);
-  header[8] = 8; header[9] = 2; header[10] = 0; header[11] = 0; header[12] = 0;
+  header.writeUInt32BE(width, 0);
+  header.writeUInt32BE(height, 4);
+  header[8] = 8;
+  header[9] = 2;
+  header[10] = 0;
+  header[11] = 0;
+  header[12] = 0;
   return Buffer.concat([
     Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]),
-    chunk('IHDR', header), chunk('IDAT', deflateSync(raw)), chunk('IEND', Buffer.alloc(0)),
+    chunk('IHDR', header),
+    chunk('IDAT', deflateSync(raw)),
+    chunk('IEND', Buffer.alloc(0)),
   ]);
 }
 
@@ -121,7 +132,9 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
   try {
     const { dir, test, files } = newGame(names[0], { title });
     for (const f of files) console.log(`wrote ${f.slice(root.length + 1)}`);
-    console.log(`\nnext: npm start, then open /${names[0]}/; edit ${dir.slice(root.length + 1)}/scene.ts and main.ts; npx vitest run ${test.slice(root.length + 1)}`);
+    console.log(
+      `\nnext: npm start, then open /${names[0]}/; edit ${dir.slice(root.length + 1)}/scene.ts and main.ts; npx vitest run ${test.slice(root.length + 1)}`,
+    );
   } catch (error) {
     console.error(error instanceof Error ? error.message : error);
     process.exit(1);

@@ -5,11 +5,12 @@
 // waits for a build. While watching, esbuild rebuilds incrementally when a source changes and the
 // new output replaces the old one only when the build has finished (a failed build keeps serving
 // the last good one and prints its errors); a new game folder restarts the build with it included.
-import * as esbuild from 'esbuild';
+
 import { existsSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, watch as watchDir, writeFileSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { extname, join, normalize, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import * as esbuild from 'esbuild';
 import { gameFolders, readRegistry, root, siteDir, siteOptions } from './build.mjs';
 import { buildDocs, docsDir } from './docs.mjs';
 
@@ -75,7 +76,10 @@ function writeCache(dir, files, metafile, startedAt) {
       writeFileSync(file, contents);
     }
     const inputs = Object.keys(metafile?.inputs ?? {}).map((p) => relative(root, resolve(p)));
-    writeFileSync(join(fresh, 'stamp.json'), JSON.stringify({ startedAt, folders: gameFolders().join(','), inputs, outputs: [...files.keys()] }));
+    writeFileSync(
+      join(fresh, 'stamp.json'),
+      JSON.stringify({ startedAt, folders: gameFolders().join(','), inputs, outputs: [...files.keys()] }),
+    );
     if (existsSync(dir)) renameSync(dir, old);
     renameSync(fresh, dir);
   } catch {
@@ -97,7 +101,13 @@ function writeCache(dir, files, metafile, startedAt) {
  *   '/'; `builds()` counts finished builds (first included), for tests that wait for a rebuild.
  * @throws Error if the first build fails without `watch` (its esbuild errors), or the port cannot be bound.
  */
-export async function startServer({ port = 8080, host = '127.0.0.1', watch = true, cache = false, log = (line) => console.error(line) } = {}) {
+export async function startServer({
+  port = 8080,
+  host = '127.0.0.1',
+  watch = true,
+  cache = false,
+  log = (line) => console.error(line),
+} = {}) {
   /** Built files: path relative to the site root ('lab-orbits/main.js') -> contents. */
   let files = new Map();
   let builds = 0;
@@ -114,7 +124,10 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
     setup(build) {
       build.onEnd((result) => {
         if (result.errors.length > 0) {
-          failure = result.errors.slice(0, 10).map((e) => (e.location ? `${e.location.file}:${e.location.line}: ${e.text}` : e.text)).join('\n');
+          failure = result.errors
+            .slice(0, 10)
+            .map((e) => (e.location ? `${e.location.file}:${e.location.line}: ${e.text}` : e.text))
+            .join('\n');
           log(`build failed${builds > 0 ? ' (still serving the last good build)' : ''}:\n${failure}`);
           return;
         }
@@ -171,18 +184,18 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
         if (gameFolders().join(',') === folders) return;
         try {
           const cached = cache && !watch ? readCache(cacheDir) : null;
-  if (cached) {
-    files = cached;
-    builds = 1;
-  } else {
-    const startedAt = Date.now();
-    await createContext();
-    if (cache && !watch && builds > 0) writeCache(cacheDir, files, metafile, startedAt);
-    if (!watch) {
-      await ctx.dispose();
-      ctx = null;
-    }
-  }
+          if (cached) {
+            files = cached;
+            builds = 1;
+          } else {
+            const startedAt = Date.now();
+            await createContext();
+            if (cache && !watch && builds > 0) writeCache(cacheDir, files, metafile, startedAt);
+            if (!watch) {
+              await ctx.dispose();
+              ctx = null;
+            }
+          }
           log(`game folders changed: now ${gameFolders().length}`);
         } catch (error) {
           log(String(error));
@@ -195,8 +208,10 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
   // to the pages, which worlds made with `threads > 1` need; every resource of the site is same-origin.
   const send = (res, status, type, body) => {
     res.writeHead(status, {
-      'content-type': type, 'cache-control': 'no-cache',
-      'cross-origin-opener-policy': 'same-origin', 'cross-origin-embedder-policy': 'require-corp',
+      'content-type': type,
+      'cache-control': 'no-cache',
+      'cross-origin-opener-policy': 'same-origin',
+      'cross-origin-embedder-policy': 'require-corp',
     });
     res.end(body);
   };
@@ -205,7 +220,14 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
   const lookup = (path) => {
     // The gallery's list, read from the games' game.json now, of the games this build holds (a
     // folder that appeared since waits for its build).
-    if (path === 'registry.json') return Buffer.from(JSON.stringify(readRegistry().filter((e) => files.has(`${e.folder}/index.html`)), null, 2));
+    if (path === 'registry.json')
+      return Buffer.from(
+        JSON.stringify(
+          readRegistry().filter((e) => files.has(`${e.folder}/index.html`)),
+          null,
+          2,
+        ),
+      );
     return files.get(path);
   };
 
@@ -214,25 +236,41 @@ export async function startServer({ port = 8080, host = '127.0.0.1', watch = tru
       const url = new URL(req.url ?? '/', 'http://localhost');
       const pathname = decodeURIComponent(url.pathname);
       for (const [prefix, dir] of Object.entries(staticRoutes)) {
-        if (pathname === prefix.slice(0, -1)) { res.writeHead(301, { location: prefix + url.search }); res.end(); return; }
+        if (pathname === prefix.slice(0, -1)) {
+          res.writeHead(301, { location: prefix + url.search });
+          res.end();
+          return;
+        }
         if (!pathname.startsWith(prefix)) continue;
         const file = normalize(join(dir, pathname.slice(prefix.length)));
-        if (!file.startsWith(resolve(dir))) { send(res, 403, TYPES['.txt'], 'forbidden'); return; }
+        if (!file.startsWith(resolve(dir))) {
+          send(res, 403, TYPES['.txt'], 'forbidden');
+          return;
+        }
         const target = existsSync(file) && statSync(file).isDirectory() ? join(file, 'index.html') : file;
-        if (!existsSync(target)) { send(res, 404, TYPES['.txt'], `not found: ${pathname}`); return; }
+        if (!existsSync(target)) {
+          send(res, 404, TYPES['.txt'], `not found: ${pathname}`);
+          return;
+        }
         send(res, 200, TYPES[extname(target)] ?? 'application/octet-stream', readFileSync(target));
         return;
       }
       let path = pathname.replace(/^\/+/, '');
       if (path === '' || path.endsWith('/')) path += 'index.html';
-      let body = lookup(path);
+      const body = lookup(path);
       if (body === undefined && lookup(`${path}/index.html`) !== undefined) {
         res.writeHead(301, { location: `${pathname}/${url.search}` });
         res.end();
         return;
       }
-      if (body === undefined && builds === 0 && failure) { send(res, 503, TYPES['.txt'], `The site does not build yet:\n${failure}`); return; }
-      if (body === undefined) { send(res, 404, TYPES['.txt'], `not found: ${pathname}`); return; }
+      if (body === undefined && builds === 0 && failure) {
+        send(res, 503, TYPES['.txt'], `The site does not build yet:\n${failure}`);
+        return;
+      }
+      if (body === undefined) {
+        send(res, 404, TYPES['.txt'], `not found: ${pathname}`);
+        return;
+      }
       send(res, 200, TYPES[extname(path)] ?? 'application/octet-stream', body);
     } catch (error) {
       send(res, 500, TYPES['.txt'], String(error));

@@ -5,9 +5,9 @@
 // otherwise leave the second core idle. Each line of output is prefixed with its lane; the exit code
 // is non-zero if either lane fails. Arguments are passed to both vitest runs.
 import { spawn } from 'node:child_process';
+import { dirname, join } from 'node:path';
 import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
-import { dirname, join } from 'node:path';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const vitest = join(root, 'node_modules', 'vitest', 'vitest.mjs');
@@ -17,12 +17,14 @@ const extra = process.argv.slice(2);
 function lane(project) {
   return new Promise((resolve) => {
     const child = spawn(process.execPath, [vitest, 'run', '--project', project, ...extra], {
-      cwd: root, stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, FORCE_COLOR: process.env.FORCE_COLOR ?? '0' },
+      cwd: root,
+      stdio: ['ignore', 'pipe', 'pipe'],
+      env: { ...process.env, FORCE_COLOR: process.env.FORCE_COLOR ?? '0' },
     });
     const prefix = `[${project}] `;
-    createInterface({ input: child.stdout }).on('line', (line) => process.stdout.write(prefix + line + '\n'));
-    createInterface({ input: child.stderr }).on('line', (line) => process.stderr.write(prefix + line + '\n'));
-    child.on('close', (code, signal) => resolve(signal ? 1 : code ?? 1));
+    createInterface({ input: child.stdout }).on('line', (line) => process.stdout.write(`${prefix + line}\n`));
+    createInterface({ input: child.stderr }).on('line', (line) => process.stderr.write(`${prefix + line}\n`));
+    child.on('close', (code, signal) => resolve(signal ? 1 : (code ?? 1)));
   });
 }
 

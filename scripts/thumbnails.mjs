@@ -1,7 +1,7 @@
 // `npm run thumbnails [-- folder ...] [-- --seconds=1.5]`: opens each registered game (or the named
 // folders) in headless Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play,
 // and writes a screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
-import { writeFileSync, statSync } from 'node:fs';
+import { statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launchChromium, readRegistry, repoRoot, startSite } from '../test/browser/chromium.mjs';
 
@@ -33,7 +33,9 @@ try {
     const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT }, deviceScaleFactor: 1, locale: 'en-US' });
     const page = await context.newPage();
     const errors = [];
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    page.on('console', (m) => {
+      if (m.type() === 'error') errors.push(m.text());
+    });
     page.on('pageerror', (e) => errors.push(e.message));
     try {
       await page.goto(`${site.url}${entry.folder}/`);

@@ -10,13 +10,21 @@
  * on unless WebGL runs in software).
  * Every ball is one instance of a single InstancedMesh (one draw call, one more for the shadow map).
  */
-import { BufferAttribute, BufferGeometry, Line, LineDashedMaterial, Mesh, MeshBasicMaterial, SphereGeometry, Vector3 } from 'three';
+
 import { createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
-import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
+import { BufferAttribute, BufferGeometry, Line, LineDashedMaterial, Mesh, MeshBasicMaterial, SphereGeometry, Vector3 } from 'three';
 import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
 import {
-  BOX, applyGravity, applyMaterial, balls3DWorldOptions, buildBalls3D, rayEntersBox, removeBall, spawnBall,
+  applyGravity,
+  applyMaterial,
   type Balls3DHandles,
+  BOX,
+  balls3DWorldOptions,
+  buildBalls3D,
+  rayEntersBox,
+  removeBall,
+  spawnBall,
 } from './scene';
 
 /** A press that moves less than this, CSS px, still throws (at the lowest speed). */
@@ -45,7 +53,13 @@ let handles: Balls3DHandles;
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
-  const options = { count: params.count, seed: params.seed, gravity: params.gravity, restitution: params.restitution, friction: params.friction };
+  const options = {
+    count: params.count,
+    seed: params.seed,
+    gravity: params.gravity,
+    restitution: params.restitution,
+    friction: params.friction,
+  };
   const world = createPhysicsWorld(balls3DWorldOptions(options));
   handles = buildBalls3D(world, options);
   return world;
@@ -105,35 +119,73 @@ function setDebug(on: boolean): void {
   panel.refresh();
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => applyGravity(shell.world, handles, g) },
-  { type: 'slider', key: 'restitution', min: 0, max: 1, step: 0.01, onChange: (e, p) => applyMaterial(shell.world, handles, e, p.friction) },
-  { type: 'slider', key: 'friction', min: 0, max: 1, step: 0.01, onChange: (mu, p) => applyMaterial(shell.world, handles, p.restitution, mu) },
-  { type: 'slider', key: 'throwSpeed', label: 'throw speed (m/s)', min: 3, max: 30, step: 0.5 },
-  {
-    type: 'slider', key: 'count', label: 'balls (rebuilds)', min: 1, max: 5000, step: 1, onRelease: true, onChange: () => {
-      shell.reset();
-      if (params.trails) renderer.setTrails(trailOptions(params.count));
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => applyGravity(shell.world, handles, g),
     },
-  },
-  { type: 'checkbox', key: 'trails', onChange: (v) => setTrails(v === true) },
-  { type: 'checkbox', key: 'debug', label: 'debug layer', onChange: (v) => setDebug(v === true) },
-  {
-    type: 'checkbox', key: 'shadows', onChange: (v) => {
-      const on = v === true;
-      renderer.setShadows(on);
-      if (renderer.lights) renderer.lights.sun.castShadow = on;
+    {
+      type: 'slider',
+      key: 'restitution',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      onChange: (e, p) => applyMaterial(shell.world, handles, e, p.friction),
     },
-  },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Balls 3D' });
+    {
+      type: 'slider',
+      key: 'friction',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      onChange: (mu, p) => applyMaterial(shell.world, handles, p.restitution, mu),
+    },
+    { type: 'slider', key: 'throwSpeed', label: 'throw speed (m/s)', min: 3, max: 30, step: 0.5 },
+    {
+      type: 'slider',
+      key: 'count',
+      label: 'balls (rebuilds)',
+      min: 1,
+      max: 5000,
+      step: 1,
+      onRelease: true,
+      onChange: () => {
+        shell.reset();
+        if (params.trails) renderer.setTrails(trailOptions(params.count));
+      },
+    },
+    { type: 'checkbox', key: 'trails', onChange: (v) => setTrails(v === true) },
+    { type: 'checkbox', key: 'debug', label: 'debug layer', onChange: (v) => setDebug(v === true) },
+    {
+      type: 'checkbox',
+      key: 'shadows',
+      onChange: (v) => {
+        const on = v === true;
+        renderer.setShadows(on);
+        if (renderer.lights) renderer.lights.sun.castShadow = on;
+      },
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Balls 3D' },
+);
 
 // ---- Throwing: drag to aim, release to throw -------------------------------------------------
 
 const canvas = app.canvas;
 const ndc: [number, number] = [0, 0];
 const aim = { active: false, pointerId: -1, startX: 0, startY: 0, x: 0, y: 0 };
-const origin = new Float64Array(3), dir = new Float64Array(3), spawnAt = new Float64Array(3), velocity = new Float64Array(3);
+const origin = new Float64Array(3),
+  dir = new Float64Array(3),
+  spawnAt = new Float64Array(3),
+  velocity = new Float64Array(3);
 const rayPoint = new Vector3();
 
 /**
@@ -145,14 +197,20 @@ function planThrow(ndcX: number, ndcY: number, speed: number): void {
   const cam = app.camera;
   const k = renderer.unitsPerMeter;
   cam.updateMatrixWorld();
-  origin[0] = cam.position.x / k; origin[1] = cam.position.y / k; origin[2] = cam.position.z / k;
+  origin[0] = cam.position.x / k;
+  origin[1] = cam.position.y / k;
+  origin[2] = cam.position.z / k;
   const v = rayPoint.set(ndcX, ndcY, 0.5).unproject(cam).sub(cam.position).normalize();
-  dir[0] = v.x; dir[1] = v.y; dir[2] = v.z;
+  dir[0] = v.x;
+  dir[1] = v.y;
+  dir[2] = v.z;
   const margin = 1.6 * handles.meanRadius;
   let t = rayEntersBox(origin, dir, margin);
   if (t < 0) {
     // Nearest point of the ray to the box centre (spawnBall clamps it inside the box).
-    const cx = 0.5 * (BOX.min[0] + BOX.max[0]), cy = 0.5 * (BOX.min[1] + BOX.max[1]), cz = 0.5 * (BOX.min[2] + BOX.max[2]);
+    const cx = 0.5 * (BOX.min[0] + BOX.max[0]),
+      cy = 0.5 * (BOX.min[1] + BOX.max[1]),
+      cz = 0.5 * (BOX.min[2] + BOX.max[2]);
     t = Math.max(0, (cx - origin[0]) * dir[0] + (cy - origin[1]) * dir[1] + (cz - origin[2]) * dir[2]);
   }
   for (let i = 0; i < 3; i++) {
@@ -203,10 +261,16 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 const arcPositions = new Float32Array(ARC_POINTS * 3);
 const arcGeometry = new BufferGeometry();
 arcGeometry.setAttribute('position', new BufferAttribute(arcPositions, 3));
-const arc = new Line(arcGeometry, new LineDashedMaterial({ color: 0xffffff, dashSize: 0.08, gapSize: 0.06, transparent: true, opacity: 0.8 }));
+const arc = new Line(
+  arcGeometry,
+  new LineDashedMaterial({ color: 0xffffff, dashSize: 0.08, gapSize: 0.06, transparent: true, opacity: 0.8 }),
+);
 arc.frustumCulled = false;
 arc.visible = false;
-const ghost = new Mesh(new SphereGeometry(1, 16, 12), new MeshBasicMaterial({ color: 0xffffff, wireframe: true, transparent: true, opacity: 0.5 }));
+const ghost = new Mesh(
+  new SphereGeometry(1, 16, 12),
+  new MeshBasicMaterial({ color: 0xffffff, wireframe: true, transparent: true, opacity: 0.5 }),
+);
 ghost.visible = false;
 app.scene.add(arc, ghost);
 
@@ -219,15 +283,19 @@ function drawAim(): void {
   }
   app.toNdc(aim.x, aim.y, ndc);
   planThrow(ndc[0], ndc[1], speedFor(Math.hypot(aim.x - aim.startX, aim.y - aim.startY)));
-  const k = renderer.unitsPerMeter, g = shell.world.gravity;
-  const T = 1.5, dt = T / (ARC_POINTS - 1);
+  const k = renderer.unitsPerMeter,
+    g = shell.world.gravity;
+  const T = 1.5,
+    dt = T / (ARC_POINTS - 1);
   let used = 0;
   for (let i = 0; i < ARC_POINTS; i++) {
     const t = i * dt;
     const x = spawnAt[0]! + velocity[0]! * t + 0.5 * g[0]! * t * t;
     const y = spawnAt[1]! + velocity[1]! * t + 0.5 * g[1]! * t * t;
     const z = spawnAt[2]! + velocity[2]! * t + 0.5 * g[2]! * t * t;
-    arcPositions[3 * i] = x * k; arcPositions[3 * i + 1] = y * k; arcPositions[3 * i + 2] = z * k;
+    arcPositions[3 * i] = x * k;
+    arcPositions[3 * i + 1] = y * k;
+    arcPositions[3 * i + 2] = z * k;
     used = i + 1;
     if (x < BOX.min[0] || x > BOX.max[0] || y < BOX.min[1] || y > BOX.max[1] || z < BOX.min[2] || z > BOX.max[2]) break;
   }
@@ -250,7 +318,8 @@ shell.expose({
   /** Throws a ball through the screen point (ndcX, ndcY) at `speed` m/s, as a drag would; returns its id. */
   throwAt: (ndcX: number, ndcY: number, speed = 8): number => throwAt(ndcX, ndcY, speed),
   /** Adds a ball at `position` (m) with `velocity` (m/s) and optional radius (m); returns its id. */
-  spawn: (position: number[], velocity: number[] = [0, 0, 0], radius?: number): number => spawnBall(shell.world, handles, position, velocity, radius),
+  spawn: (position: number[], velocity: number[] = [0, 0, 0], radius?: number): number =>
+    spawnBall(shell.world, handles, position, velocity, radius),
   /** Removes ball `eid`. @throws RangeError if it is not a ball of the scene. */
   remove: (eid: number): void => removeBall(shell.world, handles, eid),
   /** Draw calls, triangles and GPU resources of the last frame. */

@@ -7,7 +7,16 @@
  * and 1.5 times a mean radius that makes the balls fill about 8% of the box) and one density (so mass
  * goes with r^3) on a jittered grid in the upper part of the box, with random horizontal velocities.
  */
-import { Rng, addBody, removeBody, setBoundary, setGravity, setMaterial, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import {
+  addBody,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  Rng,
+  removeBody,
+  setBoundary,
+  setGravity,
+  setMaterial,
+} from '@bitphysics/physics';
 
 /** Options of the scene. Every field optional. */
 export interface Balls3DOptions {
@@ -32,7 +41,11 @@ export type Balls3DParams = Required<Balls3DOptions>;
 export const BOX = Object.freeze({ min: [-2, 0, -2] as const, max: [2, 3, 2] as const });
 
 /** Ball sizes as factors of the mean radius, and how often each is picked (cumulative). */
-export const SIZES = Object.freeze([{ factor: 0.6, upTo: 0.4 }, { factor: 1, upTo: 0.85 }, { factor: 1.5, upTo: 1 }]);
+export const SIZES = Object.freeze([
+  { factor: 0.6, upTo: 0.4 },
+  { factor: 1, upTo: 0.85 },
+  { factor: 1.5, upTo: 1 },
+]);
 
 /** Density of every ball, kg/m^3 (water: a 10 cm ball weighs about 4 kg). */
 export const DENSITY = 1000;
@@ -75,7 +88,10 @@ export function resolveOptions(options: Balls3DOptions = {}): Balls3DParams {
   check(p.gravity >= 0 && p.gravity <= 100, `gravity must be in [0, 100] m/s^2, got ${p.gravity}`);
   check(p.restitution >= 0 && p.restitution <= 1, `restitution must be in [0, 1], got ${p.restitution}`);
   check(p.friction >= 0 && Number.isFinite(p.friction), `friction must be >= 0, got ${p.friction}`);
-  check(Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 100_000, `spawnBudget must be an integer in [0, 100000], got ${p.spawnBudget}`);
+  check(
+    Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 100_000,
+    `spawnBudget must be an integer in [0, 100000], got ${p.spawnBudget}`,
+  );
   return p;
 }
 
@@ -115,13 +131,16 @@ export function buildBalls3D(world: PhysicsWorld, options: Balls3DOptions = {}):
   const rMean = meanRadiusFor(p.count);
   const rMax = 1.5 * rMean;
   const pitch = 2 * rMax * 1.12;
-  const x0 = BOX.min[0] + rMax + 0.02, x1 = BOX.max[0] - rMax - 0.02;
-  const z0 = BOX.min[2] + rMax + 0.02, z1 = BOX.max[2] - rMax - 0.02;
+  const x0 = BOX.min[0] + rMax + 0.02,
+    x1 = BOX.max[0] - rMax - 0.02;
+  const z0 = BOX.min[2] + rMax + 0.02,
+    z1 = BOX.max[2] - rMax - 0.02;
   const cols = Math.max(1, Math.floor((x1 - x0) / pitch) + 1);
   const rows = Math.max(1, Math.floor((z1 - z0) / pitch) + 1);
   const jitter = 0.45 * (pitch - 2 * rMax);
   const handles: Balls3DHandles = { balls: [], meanRadius: rMean, params: p, rng };
-  const pos = [0, 0, 0], vel = [0, 0, 0];
+  const pos = [0, 0, 0],
+    vel = [0, 0, 0];
   let y = BOX.max[1] - rMax - 0.02;
   while (handles.balls.length < p.count) {
     check(y >= BOX.min[1] + rMax, `${p.count} balls do not fit the box`);
@@ -150,7 +169,13 @@ function addBall(world: PhysicsWorld, p: Balls3DParams, position: ArrayLike<numb
  * (default: one of the scene's sizes, seeded). If the world is full the oldest ball goes first.
  * @returns the new entity id. @throws RangeError on non-finite input or radius <= 0.
  */
-export function spawnBall(world: PhysicsWorld, h: Balls3DHandles, position: ArrayLike<number>, velocity: ArrayLike<number> = [0, 0, 0], radius?: number): number {
+export function spawnBall(
+  world: PhysicsWorld,
+  h: Balls3DHandles,
+  position: ArrayLike<number>,
+  velocity: ArrayLike<number> = [0, 0, 0],
+  radius?: number,
+): number {
   for (let i = 0; i < 3; i++) {
     check(Number.isFinite(position[i]), `spawnBall: position[${i}] must be finite, got ${position[i]}`);
     check(Number.isFinite(velocity[i]), `spawnBall: velocity[${i}] must be finite, got ${velocity[i]}`);
@@ -189,16 +214,24 @@ export function applyGravity(world: PhysicsWorld, h: Balls3DHandles, g: number):
  * inside), or -1 if the ray misses.
  */
 export function rayEntersBox(o: ArrayLike<number>, d: ArrayLike<number>, margin = 0): number {
-  let t0 = 0, t1 = Infinity;
+  let t0 = 0,
+    t1 = Infinity;
   for (let i = 0; i < 3; i++) {
-    const lo = BOX.min[i]! + margin, hi = BOX.max[i]! - margin;
-    const di = d[i]!, oi = o[i]!;
+    const lo = BOX.min[i]! + margin,
+      hi = BOX.max[i]! - margin;
+    const di = d[i]!,
+      oi = o[i]!;
     if (Math.abs(di) < 1e-12) {
       if (oi < lo || oi > hi) return -1;
       continue;
     }
-    let a = (lo - oi) / di, b = (hi - oi) / di;
-    if (a > b) { const t = a; a = b; b = t; }
+    let a = (lo - oi) / di,
+      b = (hi - oi) / di;
+    if (a > b) {
+      const t = a;
+      a = b;
+      b = t;
+    }
     if (a > t0) t0 = a;
     if (b < t1) t1 = b;
     if (t0 > t1) return -1;

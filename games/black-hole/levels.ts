@@ -15,8 +15,17 @@
  */
 import { addBody, removeBody, setAttractor, setPosition, slotOf } from '@bitphysics/physics';
 import {
-  FIELD, LINE_Y, MAX_HOLES, START, gravitationalConstant, resetShip, schwarzschildMass, setThrust, stepBlackHole,
-  type BlackHoleEvent, type BlackHoleGame,
+  type BlackHoleEvent,
+  type BlackHoleGame,
+  FIELD,
+  gravitationalConstant,
+  LINE_Y,
+  MAX_HOLES,
+  resetShip,
+  START,
+  schwarzschildMass,
+  setThrust,
+  stepBlackHole,
 } from './rules';
 
 /** What a level asks of the player. */
@@ -47,15 +56,17 @@ export function levelSpec(level: number): LevelSpec {
   const spec = (holes: number, radius: [number, number], corridor: number, drift: number, fuel: number): LevelSpec =>
     Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, drift, fuel });
   switch (level) {
-    case 1: return spec(1, [0.45, 0.6], 9, 0, Infinity);
-    case 2: return spec(2, [0.5, 0.9], 5, 0, Infinity);
-    case 3: return spec(3, [0.5, 1.2], 0, 0, Infinity);
-    case 4: return spec(3, [0.6, 1.3], 0, 1, Infinity);
+    case 1:
+      return spec(1, [0.45, 0.6], 9, 0, Infinity);
+    case 2:
+      return spec(2, [0.5, 0.9], 5, 0, Infinity);
+    case 3:
+      return spec(3, [0.5, 1.2], 0, 0, Infinity);
+    case 4:
+      return spec(3, [0.6, 1.3], 0, 1, Infinity);
     default: {
       const k = level - 5;
-      return spec(
-        Math.min(MAX_HOLES, 4 + k), [0.6, Math.min(2, 1.4 + 0.1 * k)], 0, Math.min(3, 1.5 + 0.25 * k), Math.max(4, 10 - k),
-      );
+      return spec(Math.min(MAX_HOLES, 4 + k), [0.6, Math.min(2, 1.4 + 0.1 * k)], 0, Math.min(3, 1.5 + 0.25 * k), Math.max(4, 10 - k));
     }
   }
 }
@@ -137,17 +148,22 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   game.holeMass.length = 0;
   run.holeVx.length = 0;
   const rng = game.rng;
-  const G = gravitationalConstant(game), c = game.params.c;
+  const G = gravitationalConstant(game),
+    c = game.params.c;
   const [r0, r1] = spec.radius;
   for (let k = 0; k < spec.holes; k++) {
-    let bestX = 0, bestY = 0, bestR = r0, bestGap = -Infinity;
+    let bestX = 0,
+      bestY = 0,
+      bestR = r0,
+      bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(r0, r1);
       let x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
       if (spec.corridor > 0) {
         // Outside the corridor: on the side the draw fell on.
         const side = x < START[0] ? -1 : 1;
-        const lo = START[0] + spec.corridor, hi = FIELD.width - 1.5 - r;
+        const lo = START[0] + spec.corridor,
+          hi = FIELD.width - 1.5 - r;
         x = side > 0 ? Math.max(x, lo) : Math.min(x, FIELD.width - lo);
         if (lo > hi) x = side > 0 ? hi : FIELD.width - hi;
       }
@@ -158,7 +174,12 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
         const P = world.components.Position;
         gap = Math.min(gap, Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!) - r - game.holeRadius[j]! - 3);
       }
-      if (gap > bestGap) { bestGap = gap; bestX = x; bestY = y; bestR = r; }
+      if (gap > bestGap) {
+        bestGap = gap;
+        bestX = x;
+        bestY = y;
+        bestR = r;
+      }
       if (gap >= 0) break;
     }
     const mass = schwarzschildMass(bestR, c, G);
@@ -180,15 +201,24 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
   const P = game.world.components.Position;
   const at: [number, number] = [0, 0];
   for (let i = 0; i < game.holes.length; i++) {
-    const h = game.holes[i]!, r = game.holeRadius[i]!;
+    const h = game.holes[i]!,
+      r = game.holeRadius[i]!;
     // Holes laid out by other means (the page's holes slider) have no speed: they stay put.
     const vx = run.holeVx[i] ?? 0;
     if (vx === 0) continue;
     let x = P.x[slotOf(h)]! + vx * dt;
-    const lo = 1.5 + r, hi = FIELD.width - 1.5 - r;
-    if (x < lo) { x = 2 * lo - x; run.holeVx[i] = Math.abs(run.holeVx[i]!); }
-    if (x > hi) { x = 2 * hi - x; run.holeVx[i] = -Math.abs(run.holeVx[i]!); }
-    at[0] = x; at[1] = P.y[slotOf(h)]!;
+    const lo = 1.5 + r,
+      hi = FIELD.width - 1.5 - r;
+    if (x < lo) {
+      x = 2 * lo - x;
+      run.holeVx[i] = Math.abs(run.holeVx[i]!);
+    }
+    if (x > hi) {
+      x = 2 * hi - x;
+      run.holeVx[i] = -Math.abs(run.holeVx[i]!);
+    }
+    at[0] = x;
+    at[1] = P.y[slotOf(h)]!;
     setPosition(game.world, h, at);
   }
   game.version++;
@@ -213,7 +243,11 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   const event = stepBlackHole(game);
   if (event !== 'scored') return event;
   run.summary = Object.freeze({
-    level: run.spec.level, time, lives: game.lives, points: run.spec.holes, fuelLeft: run.fuelLeft,
+    level: run.spec.level,
+    time,
+    lives: game.lives,
+    points: run.spec.holes,
+    fuelLeft: run.fuelLeft,
     falls: game.falls - run.fallsAtStart,
   });
   // ./rules scored one point per hole on screen and laid out one more hole: the levels lay out their own.
@@ -221,7 +255,8 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   setThrust(game, 'none');
   run.waiting = true;
   const s = run.summary;
-  game.message = `Level ${s.level} cleared in ${s.time.toFixed(1)} s with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
+  game.message =
+    `Level ${s.level} cleared in ${s.time.toFixed(1)} s with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
     `Tap here or press Enter for level ${run.spec.level}.`;
   return 'cleared';
 }

@@ -18,15 +18,25 @@
  * additive); the ship; its predicted path for the next second, integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
+
+import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { Rng, slotOf, stateHash, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
+import { startPixiGame } from '../shared/pixi';
+import { canThrust, type LevelRun, startLevel } from './levels';
+import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
-  C_GAME, FIELD, LINE_Y, MAX_HOLES, createBlackHoleGame, createPredictor, predictPath, type BlackHoleGame, type Predictor, type Thrust,
+  type BlackHoleGame,
+  C_GAME,
+  createBlackHoleGame,
+  createPredictor,
+  FIELD,
+  LINE_Y,
+  MAX_HOLES,
+  type Predictor,
+  predictPath,
+  type Thrust,
 } from './rules';
-import { canThrust, startLevel, type LevelRun } from './levels';
-import { createBlackHoleReplay, type BlackHoleReplay, type GameStepEvent } from './replay';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -54,7 +64,11 @@ function onGameStep(event: GameStepEvent): void {
 function recordScore(score: number): void {
   if (score <= best) return;
   best = score;
-  try { localStorage.setItem(BEST_KEY, String(score)); } catch { /* private mode: kept for this page only */ }
+  try {
+    localStorage.setItem(BEST_KEY, String(score));
+  } catch {
+    /* private mode: kept for this page only */
+  }
 }
 const params = {
   holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),
@@ -98,8 +112,23 @@ const game = await startPixiGame({
   ],
   keys: [
     { key: 'Enter', label: 'next level / restart', action: () => advance() },
-    { key: 'f', label: 'path', action: () => { params.path = !params.path; panel.refresh(); } },
-    { key: 'v', label: 'replay', action: () => { replay.play(); predictor = createPredictor(bh); updateStatus(true); } },
+    {
+      key: 'f',
+      label: 'path',
+      action: () => {
+        params.path = !params.path;
+        panel.refresh();
+      },
+    },
+    {
+      key: 'v',
+      label: 'replay',
+      action: () => {
+        replay.play();
+        predictor = createPredictor(bh);
+        updateStatus(true);
+      },
+    },
   ],
   renderer: {
     view: { minX: 0, minY: 0, maxX: FIELD.width, maxY: FIELD.height },
@@ -110,16 +139,50 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
-shell.onWorldChange(() => { applyHeld(); updateStatus(true); });
+shell.onWorldChange(() => {
+  applyHeld();
+  updateStatus(true);
+});
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'holes', label: 'holes (new layout)', min: 1, max: MAX_HOLES, step: 1, onChange: (n) => { params.holes = Math.round(n); replay.input('holes', params.holes); } },
-  { type: 'slider', key: 'gScale', label: 'G scale (× 1 m³/kg/s²)', min: 0.1, max: 5, step: 0.01, onChange: (s) => replay.input('gScale', s) },
-  { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
-  { type: 'slider', key: 'thrust', label: 'thrust (m/s²)', min: 0, max: 20, step: 0.1, onChange: (a) => replay.input('thrustAcceleration', a) },
-  { type: 'checkbox', key: 'path', label: 'predicted path (F)' },
-  { type: 'button', key: 'restart', label: 'restart (R)' },
-], { title: 'Black hole' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'holes',
+      label: 'holes (new layout)',
+      min: 1,
+      max: MAX_HOLES,
+      step: 1,
+      onChange: (n) => {
+        params.holes = Math.round(n);
+        replay.input('holes', params.holes);
+      },
+    },
+    {
+      type: 'slider',
+      key: 'gScale',
+      label: 'G scale (× 1 m³/kg/s²)',
+      min: 0.1,
+      max: 5,
+      step: 0.01,
+      onChange: (s) => replay.input('gScale', s),
+    },
+    { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
+    {
+      type: 'slider',
+      key: 'thrust',
+      label: 'thrust (m/s²)',
+      min: 0,
+      max: 20,
+      step: 0.1,
+      onChange: (a) => replay.input('thrustAcceleration', a),
+    },
+    { type: 'checkbox', key: 'path', label: 'predicted path (F)' },
+    { type: 'button', key: 'restart', label: 'restart (R)' },
+  ],
+  { title: 'Black hole' },
+);
 
 // ---- Input: arrow keys and touch buttons, one direction at a time -------------------------------
 
@@ -136,7 +199,10 @@ function applyHeld(): void {
 /** Enter or a tap on the message: the next level after a clear, a new game after the last life. */
 function advance(): void {
   if (bh.over) game.shell.reset();
-  else if (run?.waiting) { replay.input('beginLevel'); updateStatus(true); }
+  else if (run?.waiting) {
+    replay.input('beginLevel');
+    updateStatus(true);
+  }
 }
 function press(dir: Thrust): void {
   const i = held.indexOf(dir);
@@ -159,7 +225,10 @@ window.addEventListener('keyup', (e) => {
   const dir = KEY_DIR[e.key];
   if (dir) release(dir);
 });
-window.addEventListener('blur', () => { held.length = 0; applyHeld(); });
+window.addEventListener('blur', () => {
+  held.length = 0;
+  applyHeld();
+});
 
 const style = document.createElement('style');
 style.textContent = `
@@ -178,7 +247,12 @@ const pad = document.createElement('div');
 pad.className = 'bh-pad';
 pad.setAttribute('aria-label', 'thrust buttons');
 const buttons: Partial<Record<Thrust, HTMLButtonElement>> = {};
-for (const [dir, label, col, row] of [['up', '↑', 2, 1], ['left', '←', 1, 2], ['down', '↓', 2, 2], ['right', '→', 3, 2]] as const) {
+for (const [dir, label, col, row] of [
+  ['up', '↑', 2, 1],
+  ['left', '←', 1, 2],
+  ['down', '↓', 2, 2],
+  ['right', '→', 3, 2],
+] as const) {
   const b = document.createElement('button');
   b.type = 'button';
   b.textContent = label;
@@ -186,7 +260,11 @@ for (const [dir, label, col, row] of [['up', '↑', 2, 1], ['left', '←', 1, 2]
   b.setAttribute('aria-label', `thrust ${dir}`);
   b.style.gridColumn = String(col);
   b.style.gridRow = String(row);
-  b.addEventListener('pointerdown', (e) => { e.preventDefault(); b.setPointerCapture(e.pointerId); press(dir); });
+  b.addEventListener('pointerdown', (e) => {
+    e.preventDefault();
+    b.setPointerCapture(e.pointerId);
+    press(dir);
+  });
   const up = (): void => release(dir);
   b.addEventListener('pointerup', up);
   b.addEventListener('pointercancel', up);
@@ -211,7 +289,9 @@ message.dataset.hud = 'message';
 status.append(numbers, message);
 pageLayout().status.append(status);
 message.addEventListener('click', () => advance());
-let shownNumbers = '', shownMessage = '', shownThrust: Thrust | '' = '';
+let shownNumbers = '',
+  shownMessage = '',
+  shownThrust: Thrust | '' = '';
 
 function updateStatus(force = false): void {
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
@@ -220,8 +300,14 @@ function updateStatus(force = false): void {
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
     : `${lives}   Score ${bh.score}   Holes ${bh.holes.length}`;
   const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
-  if (force || n + playing !== shownNumbers) { shownNumbers = n + playing; numbers.textContent = n + playing; }
-  if (force || bh.message !== shownMessage) { shownMessage = bh.message; message.textContent = bh.message; }
+  if (force || n + playing !== shownNumbers) {
+    shownNumbers = n + playing;
+    numbers.textContent = n + playing;
+  }
+  if (force || bh.message !== shownMessage) {
+    shownMessage = bh.message;
+    message.textContent = bh.message;
+  }
   status.classList.toggle('over', bh.over || (run?.waiting ?? false));
   if (force || bh.thrust !== shownThrust) {
     shownThrust = bh.thrust;
@@ -236,7 +322,9 @@ app.stage.addChildAt(backdrop, 0);
 const holesLayer = new Graphics({ label: 'holes' });
 const overlay = new Graphics({ label: 'ship-and-path' });
 app.stage.addChild(holesLayer, overlay);
-let backdropVersion = -1, holesVersion = -1, holesCamera = -1;
+let backdropVersion = -1,
+  holesVersion = -1,
+  holesCamera = -1;
 const stars = (() => {
   const rng = new Rng(7);
   const out: [number, number, number][] = [];
@@ -249,12 +337,16 @@ function drawBackdrop(): void {
   if (cam.version === backdropVersion) return;
   backdropVersion = cam.version;
   backdrop.clear();
-  backdrop.rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height)).fill(0x070a16);
+  backdrop
+    .rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
+    .fill(0x070a16);
   for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
-  backdrop.rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
+  backdrop
+    .rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
     .stroke({ width: 1, color: 0x3a4560 });
   // The finish line, dashed.
-  const y = cam.toScreenY(LINE_Y), dash = 12;
+  const y = cam.toScreenY(LINE_Y),
+    dash = 12;
   for (let x = cam.toScreenX(0); x < cam.toScreenX(FIELD.width); x += 2 * dash) {
     backdrop.moveTo(x, y).lineTo(Math.min(x + dash, cam.toScreenX(FIELD.width)), y);
   }
@@ -272,7 +364,9 @@ function drawHoles(world: PhysicsWorld): void {
   const P = world.components.Position;
   for (let i = 0; i < bh.holes.length; i++) {
     const h = bh.holes[i]!;
-    const x = cam.toScreenX(P.x[slotOf(h)]!), y = cam.toScreenY(P.y[slotOf(h)]!), r = cam.toScreenLength(bh.holeRadius[i]!);
+    const x = cam.toScreenX(P.x[slotOf(h)]!),
+      y = cam.toScreenY(P.y[slotOf(h)]!),
+      r = cam.toScreenLength(bh.holeRadius[i]!);
     // Glow outside the horizon (the photon sphere is at 1.5 r), then the horizon itself.
     for (let k = 6; k >= 1; k--) holesLayer.circle(x, y, r * (1 + 0.12 * k)).fill({ color: 0xff8a3c, alpha: 0.05 });
     holesLayer.circle(x, y, r * 1.5).stroke({ width: 1, color: 0xffc080, alpha: 0.25 });
@@ -285,19 +379,28 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawHoles(world);
   const cam = renderer.camera;
   overlay.clear();
-  const s = bh.ship, P = world.components.Position, O = world.components.PreviousPosition;
-  const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha, y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
+  const s = bh.ship,
+    P = world.components.Position,
+    O = world.components.PreviousPosition;
+  const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
+    y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   if (params.path && !bh.over) {
     pathPoints = predictPath(bh, predictor, path, PATH_STEPS);
     for (let i = 1; i < pathPoints; i += 2) {
-      overlay.circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), 1.6).fill({ color: 0x9fd3ff, alpha: 0.45 * (1 - i / (PATH_STEPS + 1)) + 0.08 });
+      overlay
+        .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), 1.6)
+        .fill({ color: 0x9fd3ff, alpha: 0.45 * (1 - i / (PATH_STEPS + 1)) + 0.08 });
     }
   } else {
     pathPoints = 0;
   }
   // The ship: a small arrowhead, nose up, 1 m tall.
-  const sx = cam.toScreenX(x), sy = cam.toScreenY(y), k = cam.toScreenLength(1);
-  overlay.poly([sx, sy - 0.55 * k, sx + 0.38 * k, sy + 0.45 * k, sx, sy + 0.25 * k, sx - 0.38 * k, sy + 0.45 * k]).fill(bh.over ? 0x5c677d : 0xe8ecf1);
+  const sx = cam.toScreenX(x),
+    sy = cam.toScreenY(y),
+    k = cam.toScreenLength(1);
+  overlay
+    .poly([sx, sy - 0.55 * k, sx + 0.38 * k, sy + 0.45 * k, sx, sy + 0.25 * k, sx - 0.38 * k, sy + 0.45 * k])
+    .fill(bh.over ? 0x5c677d : 0xe8ecf1);
   updateStatus();
 }
 

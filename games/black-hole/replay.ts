@@ -5,16 +5,34 @@
  * in the same state to the last bit (the physics is deterministic: see `snapshot` and `stateHash`).
  */
 import {
-  createInputRecorder, createReplayPlayer, type InputRecorder, type Replay, type ReplayOptions, type ReplayPlayer,
+  createInputRecorder,
+  createReplayPlayer,
+  type InputRecorder,
+  type Replay,
+  type ReplayOptions,
+  type ReplayPlayer,
 } from '@bitphysics/physics';
-import { layoutHoles, setGScale, setLightSpeed, setThrust, setThrustAcceleration, stepBlackHole, type BlackHoleEvent, type BlackHoleGame, type Thrust } from './rules';
-import { beginLevel, stepLevel, type LevelRun } from './levels';
+import { beginLevel, type LevelRun, stepLevel } from './levels';
+import {
+  type BlackHoleEvent,
+  type BlackHoleGame,
+  layoutHoles,
+  setGScale,
+  setLightSpeed,
+  setThrust,
+  setThrustAcceleration,
+  stepBlackHole,
+  type Thrust,
+} from './rules';
 
 /** What a step of the game reports (the classic game's events, or a level's). */
 export type GameStepEvent = BlackHoleEvent | 'cleared' | 'waiting';
 
 /** The game's state outside its world (lives, score, holes, the layout generator, the level run). */
-interface Outside { game: Record<string, unknown>; run: Record<string, unknown> | null }
+interface Outside {
+  game: Record<string, unknown>;
+  run: Record<string, unknown> | null;
+}
 
 function save(game: BlackHoleGame, run: LevelRun | null): Outside {
   const g: Record<string, unknown> = {};
@@ -26,8 +44,11 @@ function save(game: BlackHoleGame, run: LevelRun | null): Outside {
 function assignDeep(into: Record<string, unknown>, from: Record<string, unknown>): void {
   for (const [k, v] of Object.entries(from)) {
     const cur = into[k];
-    if (Array.isArray(cur) && Array.isArray(v)) { cur.length = 0; cur.push(...(v as unknown[])); }
-    else if (cur !== null && typeof cur === 'object' && v !== null && typeof v === 'object') assignDeep(cur as Record<string, unknown>, v as Record<string, unknown>);
+    if (Array.isArray(cur) && Array.isArray(v)) {
+      cur.length = 0;
+      cur.push(...(v as unknown[]));
+    } else if (cur !== null && typeof cur === 'object' && v !== null && typeof v === 'object')
+      assignDeep(cur as Record<string, unknown>, v as Record<string, unknown>);
     else into[k] = v;
   }
 }
@@ -39,7 +60,10 @@ function load(game: BlackHoleGame, run: LevelRun | null, saved: Outside): void {
     const into = run as unknown as Record<string, unknown>;
     for (const [k, v] of Object.entries(saved.run)) {
       const cur = into[k];
-      if (Array.isArray(cur) && Array.isArray(v)) { cur.length = 0; cur.push(...(v as unknown[])); } else into[k] = v;
+      if (Array.isArray(cur) && Array.isArray(v)) {
+        cur.length = 0;
+        cur.push(...(v as unknown[]));
+      } else into[k] = v;
     }
   }
 }
@@ -52,7 +76,9 @@ export function replayOptions(game: BlackHoleGame, run: LevelRun | null, onStep?
   return {
     handlers: {
       thrust: (dir: Thrust) => setThrust(game, dir),
-      beginLevel: () => { if (run) beginLevel(game, run); },
+      beginLevel: () => {
+        if (run) beginLevel(game, run);
+      },
       holes: (n: number) => layoutHoles(game, n),
       gScale: (s: number) => setGScale(game, s),
       lightSpeed: (c: number) => setLightSpeed(game, c),
@@ -91,8 +117,12 @@ export function createBlackHoleReplay(game: BlackHoleGame, run: LevelRun | null,
   let player: ReplayPlayer | null = null;
   return {
     recorder,
-    get player() { return player; },
-    input(name, ...args) { if (!player) recorder.input(name, ...args); },
+    get player() {
+      return player;
+    },
+    input(name, ...args) {
+      if (!player) recorder.input(name, ...args);
+    },
     step() {
       if (player) {
         player.step();

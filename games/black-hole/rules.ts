@@ -29,11 +29,25 @@
  * holes and of the ship (`createPredictor`), with the same force laws, step and integrator, so with
  * the input held it is exactly the path the ship will take.
  */
-import { query } from 'bitecs';
+
 import {
-  Rng, addBody, addEmitter, addSystem, createPhysicsWorld, removeBody, setAttractor, setEmitterEnabled,
-  setGravitation, setPosition, setVelocity, step, slotOf, handleOf, type PhysicsWorld,
+  addBody,
+  addEmitter,
+  addSystem,
+  createPhysicsWorld,
+  handleOf,
+  type PhysicsWorld,
+  Rng,
+  removeBody,
+  setAttractor,
+  setEmitterEnabled,
+  setGravitation,
+  setPosition,
+  setVelocity,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { query } from 'bitecs';
 
 /** The playing field, m: x in [0, width], y in [0, height]. Leaving it sends the ship back to the start. */
 export const FIELD = Object.freeze({ width: 32, height: 24 });
@@ -63,7 +77,11 @@ export const SHIP_MASS = 1;
 export type Thrust = 'none' | 'up' | 'down' | 'left' | 'right';
 
 const DIRS: Record<Thrust, readonly [number, number]> = {
-  none: [0, 0], up: [0, 1], down: [0, -1], left: [-1, 0], right: [1, 0],
+  none: [0, 0],
+  up: [0, 1],
+  down: [0, -1],
+  left: [-1, 0],
+  right: [1, 0],
 };
 
 /** What happened in a step. */
@@ -130,8 +148,12 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
   const p: BlackHoleParams = {
-    seed: options.seed ?? 1, holes: options.holes ?? 3, gScale: options.gScale ?? 1, c: options.c ?? C_GAME,
-    thrust: options.thrust ?? 6, lives: options.lives ?? 3,
+    seed: options.seed ?? 1,
+    holes: options.holes ?? 3,
+    gScale: options.gScale ?? 1,
+    c: options.c ?? C_GAME,
+    thrust: options.thrust ?? 6,
+    lives: options.lives ?? 3,
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
   check(Number.isInteger(p.holes) && p.holes >= 1 && p.holes <= MAX_HOLES, `holes must be an integer in [1, ${MAX_HOLES}], got ${p.holes}`);
@@ -142,9 +164,15 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
   return p;
 }
 
-function checkGScale(s: number): void { check(s >= 0.1 && s <= 10, `gScale must be in [0.1, 10], got ${s}`); }
-function checkC(c: number): void { check(c >= 2 && c <= 50, `c must be in [2, 50] m/s, got ${c}`); }
-function checkThrust(a: number): void { check(a >= 0 && a <= 40, `thrust must be in [0, 40] m/s^2, got ${a}`); }
+function checkGScale(s: number): void {
+  check(s >= 0.1 && s <= 10, `gScale must be in [0.1, 10], got ${s}`);
+}
+function checkC(c: number): void {
+  check(c >= 2 && c <= 50, `c must be in [2, 50] m/s, got ${c}`);
+}
+function checkThrust(a: number): void {
+  check(a >= 0 && a <= 40, `thrust must be in [0, 40] m/s^2, got ${a}`);
+}
 
 /**
  * Mass, kg, of a black hole whose Schwarzschild radius is `radius` m: M = c^2 r / (2 G).
@@ -152,7 +180,10 @@ function checkThrust(a: number): void { check(a >= 0 && a <= 40, `thrust must be
  * @throws RangeError unless radius, c and G are finite and > 0.
  */
 export function schwarzschildMass(radius: number, c: number, G: number): number {
-  check(radius > 0 && c > 0 && G > 0 && Number.isFinite(radius * c * G), `schwarzschildMass: radius, c and G must be finite and > 0, got ${radius}, ${c}, ${G}`);
+  check(
+    radius > 0 && c > 0 && G > 0 && Number.isFinite(radius * c * G),
+    `schwarzschildMass: radius, c and G must be finite and > 0, got ${radius}, ${c}, ${G}`,
+  );
   return (c * c * radius) / (2 * G);
 }
 
@@ -161,7 +192,10 @@ export function schwarzschildMass(radius: number, c: number, G: number): number 
  * @throws RangeError unless mass, c and G are finite and > 0.
  */
 export function schwarzschildRadius(mass: number, c: number, G: number): number {
-  check(mass > 0 && c > 0 && G > 0 && Number.isFinite(mass * c * G), `schwarzschildRadius: mass, c and G must be finite and > 0, got ${mass}, ${c}, ${G}`);
+  check(
+    mass > 0 && c > 0 && G > 0 && Number.isFinite(mass * c * G),
+    `schwarzschildRadius: mass, c and G must be finite and > 0, got ${mass}, ${c}, ${G}`,
+  );
   return (2 * G * mass) / (c * c);
 }
 
@@ -196,14 +230,34 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
   setGravitation(world, { constant: G_GAME * p.gScale });
   const ship = addBody(world, { position: START, mass: SHIP_MASS });
   addEmitter(world, {
-    attachTo: ship, rate: 160, enabled: false, direction: [0, -1], spread: 0.28, speed: [4, 7], lifetime: [0.35, 0.8],
-    inheritVelocity: 1, policy: 'recycle-oldest',
+    attachTo: ship,
+    rate: 160,
+    enabled: false,
+    direction: [0, -1],
+    spread: 0.28,
+    speed: [4, 7],
+    lifetime: [0.35, 0.8],
+    inheritVelocity: 1,
+    policy: 'recycle-oldest',
     particle: { mass: 0.01, colorStart: 0xfff0a0, colorEnd: 0xff3a10, sizeStart: 0.45, sizeEnd: 0.12, alphaStart: 1, alphaEnd: 0 },
   });
   const game: BlackHoleGame = {
-    world, params: p, ship, holes: [], holeRadius: [], holeMass: [], lives: p.lives, score: 0, over: false,
-    message: 'Reach the green line at the top. The arrow keys or buttons thrust.', thrust: 'none', falls: 0, crossings: 0, resets: 0,
-    version: 0, rng: new Rng(p.seed),
+    world,
+    params: p,
+    ship,
+    holes: [],
+    holeRadius: [],
+    holeMass: [],
+    lives: p.lives,
+    score: 0,
+    over: false,
+    message: 'Reach the green line at the top. The arrow keys or buttons thrust.',
+    thrust: 'none',
+    falls: 0,
+    crossings: 0,
+    resets: 0,
+    version: 0,
+    rng: new Rng(p.seed),
   };
   addSystem(world, 'forces', thrustLaw(game, ship));
   layoutHoles(game, p.holes);
@@ -218,17 +272,25 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
  * @throws RangeError unless count is an integer in [1, MAX_HOLES].
  */
 export function layoutHoles(game: BlackHoleGame, count = game.holes.length): void {
-  check(Number.isInteger(count) && count >= 1 && count <= MAX_HOLES, `layoutHoles: count must be an integer in [1, ${MAX_HOLES}], got ${count}`);
+  check(
+    Number.isInteger(count) && count >= 1 && count <= MAX_HOLES,
+    `layoutHoles: count must be an integer in [1, ${MAX_HOLES}], got ${count}`,
+  );
   const world = game.world;
   for (const h of game.holes) removeBody(world, h);
   game.holes.length = 0;
   game.holeRadius.length = 0;
   game.holeMass.length = 0;
   const rng = game.rng;
-  const G = gravitationalConstant(game), c = game.params.c;
-  const xs: number[] = [], ys: number[] = [];
+  const G = gravitationalConstant(game),
+    c = game.params.c;
+  const xs: number[] = [],
+    ys: number[] = [];
   for (let k = 0; k < count; k++) {
-    let bestX = 0, bestY = 0, bestR = HOLE_RADIUS[0], bestGap = -Infinity;
+    let bestX = 0,
+      bestY = 0,
+      bestR = HOLE_RADIUS[0],
+      bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(HOLE_RADIUS[0], HOLE_RADIUS[1]);
       const x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
@@ -236,10 +298,16 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
       // Smallest clearance to the other horizons (minus 3 m) and to the start (minus 4 m).
       let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
       for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - game.holeRadius[j]! - 3);
-      if (gap > bestGap) { bestGap = gap; bestX = x; bestY = y; bestR = r; }
+      if (gap > bestGap) {
+        bestGap = gap;
+        bestX = x;
+        bestY = y;
+        bestR = r;
+      }
       if (gap >= 0) break;
     }
-    xs.push(bestX); ys.push(bestY);
+    xs.push(bestX);
+    ys.push(bestY);
     const mass = schwarzschildMass(bestR, c, G);
     const e = addBody(world, { position: [bestX, bestY], static: true });
     setAttractor(world, e, { mass });
@@ -275,7 +343,8 @@ export function setThrustAcceleration(game: BlackHoleGame, a: number): void {
 }
 
 function updateHorizons(game: BlackHoleGame): void {
-  const G = gravitationalConstant(game), c = game.params.c;
+  const G = gravitationalConstant(game),
+    c = game.params.c;
   for (let i = 0; i < game.holes.length; i++) game.holeRadius[i] = schwarzschildRadius(game.holeMass[i]!, c, G);
   game.version++;
 }
@@ -294,7 +363,8 @@ export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
   setEmitterEnabled(world, game.ship, on);
   if (on) {
     // The physics API has no setter for an emitter's direction; its unit vector is component data.
-    const E = world.components.Emitter, d = DIRS[t];
+    const E = world.components.Emitter,
+      d = DIRS[t];
     E.dirX[slotOf(game.ship)] = -d[0];
     E.dirY[slotOf(game.ship)] = -d[1];
   }
@@ -314,12 +384,16 @@ export function resetShip(game: BlackHoleGame): void {
  */
 export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number, by: number): number {
   const P = game.world.components.Position;
-  const ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
+  const ex = bx - ax,
+    ey = by - ay,
+    len2 = ex * ex + ey * ey;
   for (let i = 0; i < game.holes.length; i++) {
     const h = game.holes[i]!;
-    const cx = P.x[slotOf(h)]!, cy = P.y[slotOf(h)]!;
+    const cx = P.x[slotOf(h)]!,
+      cy = P.y[slotOf(h)]!;
     const t = len2 > 0 ? Math.max(0, Math.min(1, ((cx - ax) * ex + (cy - ay) * ey) / len2)) : 0;
-    const dx = ax + t * ex - cx, dy = ay + t * ey - cy;
+    const dx = ax + t * ex - cx,
+      dy = ay + t * ey - cy;
     const r = game.holeRadius[i]!;
     if (dx * dx + dy * dy < r * r) return i;
   }
@@ -338,13 +412,15 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
   step(world);
   swallowParticles(game);
   const ship = game.ship;
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   if (game.over) {
     setPosition(world, ship, START);
     setVelocity(world, ship, [0, 0]);
     return 'none';
   }
-  const x = P.x[slotOf(ship)]!, y = P.y[slotOf(ship)]!;
+  const x = P.x[slotOf(ship)]!,
+    y = P.y[slotOf(ship)]!;
   const hit = holeHit(game, O.x[slotOf(ship)]!, O.y[slotOf(ship)]!, x, y);
   if (hit >= 0) {
     game.lives--;
@@ -382,15 +458,19 @@ function swallowParticles(game: BlackHoleGame): void {
   const world = game.world;
   const c = world.components;
   const ents = query(world, [c.Particle, c.Position]);
-  const px = c.Position.x, py = c.Position.y;
-  const holes = game.holes, radius = game.holeRadius;
+  const px = c.Position.x,
+    py = c.Position.y;
+  const holes = game.holes,
+    radius = game.holeRadius;
   let n = 0;
   const doomed = swallowScratch;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     for (let k = 0; k < holes.length; k++) {
       const h = holes[k]!;
-      const dx = px[e]! - px[slotOf(h)]!, dy = py[e]! - py[slotOf(h)]!, r = radius[k]!;
+      const dx = px[e]! - px[slotOf(h)]!,
+        dy = py[e]! - py[slotOf(h)]!,
+        r = radius[k]!;
       if (dx * dx + dy * dy < r * r) {
         if (n < doomed.length) doomed[n++] = e;
         break;
@@ -430,7 +510,13 @@ export interface Predictor {
 
 /** Creates the predictor of `game` (its holes are copied on the first `predictPath`). */
 export function createPredictor(game: BlackHoleGame): Predictor {
-  const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0], capacity: MAX_HOLES + 4, dt: game.world.dt, integrator: game.world.integrator });
+  const world = createPhysicsWorld({
+    dimensions: 2,
+    gravity: [0, 0],
+    capacity: MAX_HOLES + 4,
+    dt: game.world.dt,
+    integrator: game.world.integrator,
+  });
   const ship = addBody(world, { position: START, mass: SHIP_MASS });
   const pred: Predictor = { world, ship, version: -1, holes: [] };
   addSystem(world, 'forces', thrustLaw(game, ship));
@@ -464,28 +550,43 @@ function syncPredictor(game: BlackHoleGame, pred: Predictor): void {
 export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Array, steps = 60): number {
   check(Number.isInteger(steps) && steps >= 1 && steps <= 10_000, `predictPath: steps must be an integer in [1, 10000], got ${steps}`);
   if (pred.version !== game.version) syncPredictor(game, pred);
-  const w = pred.world, s = pred.ship;
-  const src = game.world.components, dst = w.components;
-  const P = dst.Position, O = dst.PreviousPosition, V = dst.Velocity;
-  P.x[s] = src.Position.x[slotOf(game.ship)]!; P.y[s] = src.Position.y[slotOf(game.ship)]!;
-  O.x[s] = P.x[s]!; O.y[s] = P.y[s]!;
-  V.x[s] = src.Velocity.x[slotOf(game.ship)]!; V.y[s] = src.Velocity.y[slotOf(game.ship)]!;
+  const w = pred.world,
+    s = pred.ship;
+  const src = game.world.components,
+    dst = w.components;
+  const P = dst.Position,
+    O = dst.PreviousPosition,
+    V = dst.Velocity;
+  P.x[s] = src.Position.x[slotOf(game.ship)]!;
+  P.y[s] = src.Position.y[slotOf(game.ship)]!;
+  O.x[s] = P.x[s]!;
+  O.y[s] = P.y[s]!;
+  V.x[s] = src.Velocity.x[slotOf(game.ship)]!;
+  V.y[s] = src.Velocity.y[slotOf(game.ship)]!;
   const max = Math.min(steps + 1, out.length >> 1);
   if (max < 1) return 0;
-  out[0] = P.x[s]!; out[1] = P.y[s]!;
+  out[0] = P.x[s]!;
+  out[1] = P.y[s]!;
   let n = 1;
   const radius = game.holeRadius;
   const HP = P;
   while (n < max) {
     step(w);
-    const x = P.x[s]!, y = P.y[s]!;
-    out[2 * n] = x; out[2 * n + 1] = y;
+    const x = P.x[s]!,
+      y = P.y[s]!;
+    out[2 * n] = x;
+    out[2 * n + 1] = y;
     n++;
     let inside = false;
     for (let i = 0; i < pred.holes.length; i++) {
       const h = pred.holes[i]!;
-      const dx = x - HP.x[slotOf(h)]!, dy = y - HP.y[slotOf(h)]!, r = radius[i]!;
-      if (dx * dx + dy * dy < r * r) { inside = true; break; }
+      const dx = x - HP.x[slotOf(h)]!,
+        dy = y - HP.y[slotOf(h)]!,
+        r = radius[i]!;
+      if (dx * dx + dy * dy < r * r) {
+        inside = true;
+        break;
+      }
     }
     if (inside || x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) break;
   }

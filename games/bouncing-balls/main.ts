@@ -8,14 +8,25 @@
  * URL: ?count=N (balls, 1..10000), ?seed=S, ?mode=auto|sprites|particles, ?trails=0|1, ?debug.
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
+
+import { addBox, createPhysicsWorld, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { addBox, createPhysicsWorld, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
 import { enableMouseDrag } from '../shared/drag';
+import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
+import { startPixiGame } from '../shared/pixi';
 import {
-  DRAG_MODES, applyDrag, applyGravity, applyMaterial, bouncingBallsWorldOptions, buildBouncingBalls, isHeavy, meanRadiusFor, removeBall, spawnBall,
-  type BouncingBallsHandles, type DragMode,
+  applyDrag,
+  applyGravity,
+  applyMaterial,
+  type BouncingBallsHandles,
+  bouncingBallsWorldOptions,
+  buildBouncingBalls,
+  DRAG_MODES,
+  type DragMode,
+  isHeavy,
+  meanRadiusFor,
+  removeBall,
+  spawnBall,
 } from './scene';
 
 /** Colour of the heavy balls (density 4 kg/m^2); the others keep their seeded colours. */
@@ -49,8 +60,13 @@ let crates: number[] = [];
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const options = {
-    count: params.count, seed: params.seed, gravity: params.gravity, restitution: params.restitution,
-    friction: params.friction, drag: params.drag, dragK: params.dragK,
+    count: params.count,
+    seed: params.seed,
+    gravity: params.gravity,
+    restitution: params.restitution,
+    friction: params.friction,
+    drag: params.drag,
+    dragK: params.dragK,
   };
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
@@ -60,10 +76,15 @@ function createWorld(): PhysicsWorld {
 
 /** Drops a crate (a box of about two mean ball diameters, turned a little) near the top of the box. */
 function dropCrate(): number {
-  const r = handles.meanRadius, n = crates.length;
+  const r = handles.meanRadius,
+    n = crates.length;
   const crate = addBox(shell.world, {
-    position: [4 + ((n * 2.7) % 8), 9], angle: 0.4 * ((n % 5) - 2), halfExtents: [2 * r, 1.4 * r],
-    density: 1 / (Math.PI * r * r), restitution: params.restitution, friction: params.friction,
+    position: [4 + ((n * 2.7) % 8), 9],
+    angle: 0.4 * ((n % 5) - 2),
+    halfExtents: [2 * r, 1.4 * r],
+    density: 1 / (Math.PI * r * r),
+    restitution: params.restitution,
+    friction: params.friction,
   });
   crates.push(crate);
   return crate;
@@ -122,22 +143,63 @@ function setDebug(on: boolean): void {
   panel.refresh();
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => applyGravity(shell.world, handles, g) },
-  { type: 'slider', key: 'restitution', min: 0, max: 1, step: 0.01, onChange: (e, p) => applyMaterial(shell.world, handles, e, p.friction) },
-  { type: 'slider', key: 'friction', min: 0, max: 1, step: 0.01, onChange: (mu, p) => applyMaterial(shell.world, handles, p.restitution, mu) },
-  { type: 'choice', key: 'drag', options: DRAG_MODES, onChange: (m, p) => applyDrag(shell.world, handles, m as DragMode, p.dragK) },
-  { type: 'slider', key: 'dragK', label: 'drag k (kg/s | kg/m)', min: 0, max: 2, step: 0.01, onChange: (k, p) => applyDrag(shell.world, handles, p.drag, k) },
-  {
-    type: 'slider', key: 'count', label: 'balls (rebuilds)', min: 1, max: 6000, step: 1, onRelease: true, onChange: () => {
-      shell.reset();
-      if (params.trails) renderer.setTrails(trailOptions(params.count));
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => applyGravity(shell.world, handles, g),
     },
-  },
-  { type: 'checkbox', key: 'trails', onChange: (v) => setTrails(v === true) },
-  { type: 'checkbox', key: 'debug', label: 'debug overlay', onChange: (v) => setDebug(v === true) },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Bouncing balls' });
+    {
+      type: 'slider',
+      key: 'restitution',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      onChange: (e, p) => applyMaterial(shell.world, handles, e, p.friction),
+    },
+    {
+      type: 'slider',
+      key: 'friction',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      onChange: (mu, p) => applyMaterial(shell.world, handles, p.restitution, mu),
+    },
+    { type: 'choice', key: 'drag', options: DRAG_MODES, onChange: (m, p) => applyDrag(shell.world, handles, m as DragMode, p.dragK) },
+    {
+      type: 'slider',
+      key: 'dragK',
+      label: 'drag k (kg/s | kg/m)',
+      min: 0,
+      max: 2,
+      step: 0.01,
+      onChange: (k, p) => applyDrag(shell.world, handles, p.drag, k),
+    },
+    {
+      type: 'slider',
+      key: 'count',
+      label: 'balls (rebuilds)',
+      min: 1,
+      max: 6000,
+      step: 1,
+      onRelease: true,
+      onChange: () => {
+        shell.reset();
+        if (params.trails) renderer.setTrails(trailOptions(params.count));
+      },
+    },
+    { type: 'checkbox', key: 'trails', onChange: (v) => setTrails(v === true) },
+    { type: 'checkbox', key: 'debug', label: 'debug overlay', onChange: (v) => setDebug(v === true) },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Bouncing balls' },
+);
 
 // ---- Pointer: a press on a body drags it; elsewhere a click drops, a drag throws -----------------
 
@@ -145,15 +207,26 @@ const canvas = app.canvas;
 // Registered before the drop/throw listeners, so a press that grabs a body is seen as taken there.
 // Reach 1.4 mean radii: a ball grabs within that of its edge, a crate (a box, no radius) within that of its
 // centre (its half height), so presses in the open still drop and throw balls.
-const drag = enableMouseDrag(canvas, () => shell.world, () => renderer.camera, { reach: 1.4 * meanRadiusFor(params.count) });
+const drag = enableMouseDrag(
+  canvas,
+  () => shell.world,
+  () => renderer.camera,
+  { reach: 1.4 * meanRadiusFor(params.count) },
+);
 
 const overlay = new Graphics({ label: 'pointer' });
 app.stage.addChild(overlay);
 const SAMPLES = 32;
-const sampleX = new Float64Array(SAMPLES), sampleY = new Float64Array(SAMPLES), sampleT = new Float64Array(SAMPLES);
-let sampleHead = 0, sampleCount = 0;
+const sampleX = new Float64Array(SAMPLES),
+  sampleY = new Float64Array(SAMPLES),
+  sampleT = new Float64Array(SAMPLES);
+let sampleHead = 0,
+  sampleCount = 0;
 let pointerId = -1;
-let startX = 0, startY = 0, lastX = 0, lastY = 0;
+let startX = 0,
+  startY = 0,
+  lastX = 0,
+  lastY = 0;
 let dragged = false;
 
 /** The pointer position in CSS px relative to the canvas' top-left corner. */
@@ -164,7 +237,9 @@ function local(event: PointerEvent): [number, number] {
 
 /** Records a pointer sample (px, px, ms) in the ring used for the throw velocity. */
 function sample(x: number, y: number, t: number): void {
-  sampleX[sampleHead] = x; sampleY[sampleHead] = y; sampleT[sampleHead] = t;
+  sampleX[sampleHead] = x;
+  sampleY[sampleHead] = y;
+  sampleT[sampleHead] = t;
   sampleHead = (sampleHead + 1) % SAMPLES;
   if (sampleCount < SAMPLES) sampleCount++;
 }
@@ -174,9 +249,11 @@ canvas.addEventListener('pointerdown', (event) => {
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   [startX, startY] = local(event);
-  lastX = startX; lastY = startY;
+  lastX = startX;
+  lastY = startY;
   dragged = false;
-  sampleHead = 0; sampleCount = 0;
+  sampleHead = 0;
+  sampleCount = 0;
   sample(startX, startY, event.timeStamp);
 });
 
@@ -211,7 +288,10 @@ function release(event: PointerEvent, cancelled: boolean): void {
   let vx = (sampleX[newest]! - sampleX[oldest]!) / dt / cam.pixelsPerMeter;
   let vy = -(sampleY[newest]! - sampleY[oldest]!) / dt / cam.pixelsPerMeter;
   const speed = Math.hypot(vx, vy);
-  if (speed > MAX_THROW_SPEED) { vx *= MAX_THROW_SPEED / speed; vy *= MAX_THROW_SPEED / speed; }
+  if (speed > MAX_THROW_SPEED) {
+    vx *= MAX_THROW_SPEED / speed;
+    vy *= MAX_THROW_SPEED / speed;
+  }
   spawnBall(shell.world, handles, cam.toWorldX(lastX), cam.toWorldY(lastY), vx, vy);
 }
 canvas.addEventListener('pointerup', (event) => release(event, false));

@@ -7,7 +7,16 @@
  * jittered grid in the upper part of the box, kept clear of the segments.
  */
 import {
-  Rng, addBody, addSegment, addComponentIfMissing, removeBody, setBoundary, setMaterial, slotOf, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addComponentIfMissing,
+  addSegment,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  Rng,
+  removeBody,
+  setBoundary,
+  setMaterial,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** Drag law applied to every ball. */
@@ -80,7 +89,8 @@ function check(cond: boolean, message: string): void {
 export function resolveOptions(options: BouncingBallsOptions = {}): BouncingBallsParams {
   const known = ['count', 'seed', 'gravity', 'restitution', 'friction', 'drag', 'dragK', 'spawnBudget'];
   for (const k of Object.keys(options)) {
-    if (!known.includes(k)) throw new TypeError(`bouncing-balls: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
+    if (!known.includes(k))
+      throw new TypeError(`bouncing-balls: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
   const p: BouncingBallsParams = {
     count: options.count ?? 40,
@@ -99,7 +109,10 @@ export function resolveOptions(options: BouncingBallsOptions = {}): BouncingBall
   check(p.friction >= 0 && Number.isFinite(p.friction), `friction must be >= 0, got ${p.friction}`);
   check(DRAG_MODES.includes(p.drag), `drag must be one of ${DRAG_MODES.join(', ')}, got ${JSON.stringify(p.drag)}`);
   check(p.dragK >= 0 && Number.isFinite(p.dragK), `dragK must be >= 0, got ${p.dragK}`);
-  check(Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 100_000, `spawnBudget must be an integer in [0, 100000], got ${p.spawnBudget}`);
+  check(
+    Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 100_000,
+    `spawnBudget must be an integer in [0, 100000], got ${p.spawnBudget}`,
+  );
   return p;
 }
 
@@ -117,9 +130,11 @@ export function meanRadiusFor(count: number): number {
 
 /** Distance from (px, py) to the segment (ax, ay)-(bx, by), m. Layout helper (keeps starting balls clear of walls). */
 function distanceToSegment(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const ex = bx - ax, ey = by - ay;
+  const ex = bx - ax,
+    ey = by - ay;
   const t = Math.max(0, Math.min(1, ((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey)));
-  const dx = px - ax - t * ex, dy = py - ay - t * ey;
+  const dx = px - ax - t * ex,
+    dy = py - ay - t * ey;
   return Math.sqrt(dx * dx + dy * dy);
 }
 
@@ -134,7 +149,9 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
   setBoundary(world, { min: BOX.min, max: BOX.max, restitution: p.restitution, friction: p.friction });
   const segments: number[] = [];
   for (const [ax, ay, bx, by] of SEGMENTS) {
-    segments.push(addSegment(world, { a: [ax, ay], b: [bx, by], radius: SEGMENT_RADIUS, restitution: p.restitution, friction: p.friction }));
+    segments.push(
+      addSegment(world, { a: [ax, ay], b: [bx, by], radius: SEGMENT_RADIUS, restitution: p.restitution, friction: p.friction }),
+    );
   }
   const rMean = meanRadiusFor(p.count);
   // The solver keeps contacts within a speculative gap (default 0.1 m, sized for balls of about a
@@ -144,11 +161,13 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
   settings.speculativeDistance = Math.min(settings.speculativeDistance, rMean);
   const rMax = 1.4 * rMean;
   const pitch = 2 * rMax + Math.max(0.02, 0.3 * rMax);
-  const x0 = BOX.min[0] + rMax + 0.05, x1 = BOX.max[0] - rMax - 0.05;
+  const x0 = BOX.min[0] + rMax + 0.05,
+    x1 = BOX.max[0] - rMax - 0.05;
   const cols = Math.max(1, Math.floor((x1 - x0) / pitch) + 1);
   const jitter = 0.5 * (pitch - 2 * rMax);
   const handles: BouncingBallsHandles = { balls: [], segments, meanRadius: rMean, params: p, rng };
-  const pos = [0, 0], vel = [0, 0];
+  const pos = [0, 0],
+    vel = [0, 0];
   let y = BOX.max[1] - rMax - 0.05;
   while (handles.balls.length < p.count) {
     check(y >= BOX.min[1] + rMax, `${p.count} balls do not fit the box`);
@@ -156,7 +175,10 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
       const cx = x0 + c * pitch;
       let clear = true;
       for (const [ax, ay, bx, by] of SEGMENTS) {
-        if (distanceToSegment(cx, y, ax, ay, bx, by) < rMax + SEGMENT_RADIUS + jitter + 0.05) { clear = false; break; }
+        if (distanceToSegment(cx, y, ax, ay, bx, by) < rMax + SEGMENT_RADIUS + jitter + 0.05) {
+          clear = false;
+          break;
+        }
       }
       if (!clear) continue;
       pos[0] = cx + rng.range(-jitter, jitter);
@@ -173,9 +195,21 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
   return handles;
 }
 
-function addBallUnchecked(world: PhysicsWorld, p: BouncingBallsParams, position: number[], velocity: number[], radius: number, density: number): number {
+function addBallUnchecked(
+  world: PhysicsWorld,
+  p: BouncingBallsParams,
+  position: number[],
+  velocity: number[],
+  radius: number,
+  density: number,
+): number {
   return addBody(world, {
-    position, velocity, radius, density, restitution: p.restitution, friction: p.friction,
+    position,
+    velocity,
+    radius,
+    density,
+    restitution: p.restitution,
+    friction: p.friction,
     ...(p.drag === 'linear' ? { linearDrag: p.dragK } : {}),
     ...(p.drag === 'quadratic' ? { quadraticDrag: p.dragK } : {}),
   });
@@ -194,7 +228,12 @@ export function isHeavy(world: PhysicsWorld, eid: number): boolean {
  * @returns the new entity id. @throws RangeError on non-finite input or radius <= 0.
  */
 export function spawnBall(world: PhysicsWorld, h: BouncingBallsHandles, x: number, y: number, vx = 0, vy = 0, radius?: number): number {
-  for (const [name, v] of [['x', x], ['y', y], ['vx', vx], ['vy', vy]] as const) {
+  for (const [name, v] of [
+    ['x', x],
+    ['y', y],
+    ['vx', vx],
+    ['vy', vy],
+  ] as const) {
     check(Number.isFinite(v), `spawnBall: ${name} must be finite, got ${v}`);
   }
   const r = radius ?? h.meanRadius * h.rng.range(0.6, 1.4);

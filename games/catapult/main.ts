@@ -6,13 +6,25 @@
  * Input: drag from the cup and release. Keys: L next level, R reset the level, P pause, N step.
  * URL: ?level=1..4, ?seed=S.
  */
+
+import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { createPhysicsWorld, setGravity, slotOf, isAlive, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
 import { createReadout } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  LAUNCH, LEVEL_COUNT, PULL, buildLevel, hasFallen, launch, launchVelocity, predictArc, tally, worldOptions, type Level, type Tally,
+  buildLevel,
+  hasFallen,
+  LAUNCH,
+  LEVEL_COUNT,
+  type Level,
+  launch,
+  launchVelocity,
+  PULL,
+  predictArc,
+  type Tally,
+  tally,
+  worldOptions,
 } from './scene';
 
 const params = {
@@ -35,7 +47,10 @@ let lastShotTime = 0;
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(worldOptions(params));
   lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
-  shotsLeft = lv.shots; shots = []; best = { fallen: 0, broken: 0, score: 0 }; lastShotTime = 0;
+  shotsLeft = lv.shots;
+  shots = [];
+  best = { fallen: 0, broken: 0, score: 0 };
+  lastShotTime = 0;
   return world;
 }
 
@@ -58,14 +73,44 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: LEVEL_COUNT, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 1, max: 30, step: 0.01, onChange: (g) => setGravity(shell.world, [0, -g]) },
-  { type: 'slider', key: 'jointStrength', label: 'joint strength (N, rebuilds)', min: 50, max: 3000, step: 10, onRelease: true, onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset level (R)' },
-  { type: 'button', key: 'next', label: 'next level (L)' },
-], { title: 'Catapult' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'level',
+      label: 'level (rebuilds)',
+      min: 1,
+      max: LEVEL_COUNT,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 1,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => setGravity(shell.world, [0, -g]),
+    },
+    {
+      type: 'slider',
+      key: 'jointStrength',
+      label: 'joint strength (N, rebuilds)',
+      min: 50,
+      max: 3000,
+      step: 10,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'button', key: 'reset', label: 'reset level (R)' },
+    { type: 'button', key: 'next', label: 'next level (L)' },
+  ],
+  { title: 'Catapult' },
+);
 
 const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
 
@@ -79,13 +124,16 @@ const toWorld = (e: PointerEvent): [number, number] => {
 app.canvas.addEventListener('pointerdown', (e) => {
   const [x, y] = toWorld(e);
   if (shotsLeft <= 0 || Math.hypot(x - LAUNCH.x, y - LAUNCH.y) > 2.5) return;
-  aim.active = true; aim.dx = x - LAUNCH.x; aim.dy = y - LAUNCH.y;
+  aim.active = true;
+  aim.dx = x - LAUNCH.x;
+  aim.dy = y - LAUNCH.y;
   app.canvas.setPointerCapture(e.pointerId);
 });
 app.canvas.addEventListener('pointermove', (e) => {
   if (!aim.active) return;
   const [x, y] = toWorld(e);
-  aim.dx = x - LAUNCH.x; aim.dy = y - LAUNCH.y;
+  aim.dx = x - LAUNCH.x;
+  aim.dy = y - LAUNCH.y;
 });
 const release = (): void => {
   if (!aim.active) return;
@@ -93,19 +141,26 @@ const release = (): void => {
   fire(aim.dx, aim.dy);
 };
 app.canvas.addEventListener('pointerup', release);
-app.canvas.addEventListener('pointercancel', () => { aim.active = false; });
+app.canvas.addEventListener('pointercancel', () => {
+  aim.active = false;
+});
 
 /** Throws with the pull (dx, dy), m, if shots are left and the pull is long enough (0.3 m). */
 function fire(dx: number, dy: number): number {
   if (shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
   const ball = launch(shell.world, vx, vy, params.projectileMass);
-  shots.push(ball); shotsLeft--; lastShotTime = shell.world.time;
+  shots.push(ball);
+  shotsLeft--;
+  lastShotTime = shell.world.time;
   return ball;
 }
 
 const overlay = new Graphics({ label: 'catapult' });
-const banner = new Text({ text: '', style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', align: 'center', stroke: { color: 0x000000, width: 4 } } });
+const banner = new Text({
+  text: '',
+  style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', align: 'center', stroke: { color: 0x000000, width: 4 } },
+});
 banner.anchor.set(0.5, 0);
 renderer.root.addChild(overlay, banner);
 
@@ -115,15 +170,22 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
 }
 
 function draw(world: PhysicsWorld): void {
-  const cam = renderer.camera, sx = (x: number) => cam.toScreenX(x), sy = (y: number) => cam.toScreenY(y);
+  const cam = renderer.camera,
+    sx = (x: number) => cam.toScreenX(x),
+    sy = (y: number) => cam.toScreenY(y);
   overlay.clear();
   // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
-  overlay.moveTo(sx(LAUNCH.x - 0.6), sy(0.9)).lineTo(sx(LAUNCH.x), sy(LAUNCH.y)).lineTo(sx(LAUNCH.x + 0.3), sy(0.9))
+  overlay
+    .moveTo(sx(LAUNCH.x - 0.6), sy(0.9))
+    .lineTo(sx(LAUNCH.x), sy(LAUNCH.y))
+    .lineTo(sx(LAUNCH.x + 0.3), sy(0.9))
     .stroke({ width: 6, color: 0x8d5a2b });
   overlay.circle(sx(LAUNCH.x), sy(LAUNCH.y), Math.abs(sx(0.35) - sx(0))).stroke({ width: 2, color: 0xffd166 });
   if (aim.active) {
-    const d = Math.hypot(aim.dx, aim.dy), k = d > PULL.max ? PULL.max / d : 1;
-    const hx = LAUNCH.x + aim.dx * k, hy = LAUNCH.y + aim.dy * k;
+    const d = Math.hypot(aim.dx, aim.dy),
+      k = d > PULL.max ? PULL.max / d : 1;
+    const hx = LAUNCH.x + aim.dx * k,
+      hy = LAUNCH.y + aim.dy * k;
     overlay.moveTo(sx(LAUNCH.x), sy(LAUNCH.y)).lineTo(sx(hx), sy(hy)).stroke({ width: 3, color: 0xe76f51 });
     overlay.circle(sx(hx), sy(hy), 6).fill({ color: 0xe76f51 });
     const [vx, vy] = launchVelocity(aim.dx, aim.dy);
@@ -144,7 +206,8 @@ function draw(world: PhysicsWorld): void {
   readout.set(2, String(t.score));
   readout.set(3, `${t.fallen} / ${lv.pieces.length}`);
   readout.set(4, `${t.broken} / ${lv.joints.length}`);
-  banner.x = app.screen.width / 2; banner.y = 16;
+  banner.x = app.screen.width / 2;
+  banner.y = 16;
   if (levelOver(world, t)) {
     const share = t.fallen / Math.max(1, lv.pieces.length);
     const stars = share >= 0.9 ? '★★★' : share >= 0.6 ? '★★☆' : share >= 0.3 ? '★☆☆' : '☆☆☆';
@@ -166,7 +229,12 @@ shell.expose({
   /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
   fire,
   /** Position of a body by handle, m (tests). */
-  positionOf: (h: number): [number, number] => [shell.world.components.Position.x[slotOf(h)]!, shell.world.components.Position.y[slotOf(h)]!],
+  positionOf: (h: number): [number, number] => [
+    shell.world.components.Position.x[slotOf(h)]!,
+    shell.world.components.Position.y[slotOf(h)]!,
+  ],
   /** Steps the world n times (tests). */
-  advance: (n: number) => { for (let i = 0; i < n; i++) shell.step(); },
+  advance: (n: number) => {
+    for (let i = 0; i < n; i++) shell.step();
+  },
 });

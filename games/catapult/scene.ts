@@ -8,9 +8,7 @@
  * more than FALL_DROP below where it started, or off the ground's end) and BREAK_POINTS for every
  * weld joint that broke.
  */
-import {
-  Rng, addBody, addBox, addWeldJoint, slotOf, isAlive, type PhysicsWorld, type PhysicsWorldOptions,
-} from '@bitphysics/physics';
+import { addBody, addBox, addWeldJoint, isAlive, type PhysicsWorld, type PhysicsWorldOptions, Rng, slotOf } from '@bitphysics/physics';
 
 /** Where the projectile leaves the catapult (its cup), m. */
 export const LAUNCH = { x: 0, y: 1.5 } as const;
@@ -41,7 +39,12 @@ export interface LevelOptions {
 }
 
 /** One castle piece: its body and where it started. */
-export interface Piece { body: number; startX: number; startY: number; kind: 'post' | 'plank' | 'block' | 'stone' }
+export interface Piece {
+  body: number;
+  startX: number;
+  startY: number;
+  kind: 'post' | 'plank' | 'block' | 'stone';
+}
 
 /** What a level holds. */
 export interface Level {
@@ -71,60 +74,87 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
   if (!Number.isInteger(o.level) || o.level < 0 || o.level >= LEVEL_COUNT) {
     throw new RangeError(`buildLevel: level must be an integer in [0, ${LEVEL_COUNT}), got ${o.level}`);
   }
-  addBox(world, { position: [(GROUND.minX + GROUND.maxX) / 2, -0.5], halfExtents: [(GROUND.maxX - GROUND.minX) / 2, 0.5], static: true, friction: 0.9 });
+  addBox(world, {
+    position: [(GROUND.minX + GROUND.maxX) / 2, -0.5],
+    halfExtents: [(GROUND.maxX - GROUND.minX) / 2, 0.5],
+    static: true,
+    friction: 0.9,
+  });
   // The catapult's mound (static, under the cup).
   addBox(world, { position: [LAUNCH.x - 0.4, 0.45], halfExtents: [0.5, 0.45], static: true, friction: 0.9 });
   const rng = new Rng(o.seed * 7919 + o.level);
   const lv: Level = { pieces: [], joints: [], shots: [3, 3, 4, 5][o.level]!, castleMinX: Infinity, castleMaxX: -Infinity };
-  const towers = [1, 2, 3, 4][o.level]!, storeys = [2, 2, 3, 4][o.level]!;
+  const towers = [1, 2, 3, 4][o.level]!,
+    storeys = [2, 2, 3, 4][o.level]!;
   const x0 = [18, 17, 16, 15][o.level]! + rng.range(-1, 1);
   const span = 2.4; // width of a storey: two posts under a plank
   const weld = (a: number, b: number, anchor: [number, number]): void => {
     lv.joints.push(addWeldJoint(world, { a, b, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
   };
   const piece = (body: number, kind: Piece['kind']): number => {
-    const P = world.components.Position, s = slotOf(body);
+    const P = world.components.Position,
+      s = slotOf(body);
     lv.pieces.push({ body, startX: P.x[s]!, startY: P.y[s]!, kind });
     return body;
   };
-  const POST = { hx: 0.15, hy: 0.6 }, PLANK = { hx: span / 2 + 0.2, hy: 0.12 };
+  const POST = { hx: 0.15, hy: 0.6 },
+    PLANK = { hx: span / 2 + 0.2, hy: 0.12 };
   for (let t = 0; t < towers; t++) {
     const cx = x0 + t * (span + 1.2);
-    let y = 0, below: number[] = [];
+    let y = 0,
+      below: number[] = [];
     for (let s = 0; s < storeys; s++) {
       const base = y;
       const posts: number[] = [];
       for (const side of [-1, 1]) {
         const px = cx + side * (span / 2 - POST.hx);
-        const post = piece(addBox(world, { position: [px, y + POST.hy], halfExtents: [POST.hx, POST.hy], density: 2, friction: 0.7 }), 'post');
+        const post = piece(
+          addBox(world, { position: [px, y + POST.hy], halfExtents: [POST.hx, POST.hy], density: 2, friction: 0.7 }),
+          'post',
+        );
         posts.push(post);
         // Glue the post to the plank under it.
         if (below.length) weld(below[0]!, post, [px, y]);
       }
       y += 2 * POST.hy;
-      const plank = piece(addBox(world, { position: [cx, y + PLANK.hy], halfExtents: [PLANK.hx, PLANK.hy], density: 2, friction: 0.7 }), 'plank');
+      const plank = piece(
+        addBox(world, { position: [cx, y + PLANK.hy], halfExtents: [PLANK.hx, PLANK.hy], density: 2, friction: 0.7 }),
+        'plank',
+      );
       for (const post of posts) weld(post, plank, [world.components.Position.x[slotOf(post)]!, y]);
       y += 2 * PLANK.hy;
       below = [plank];
       // A block in the middle of some storeys, from the seed.
-      if (s > 0 && rng.next() < 0.5) piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block');
+      if (s > 0 && rng.next() < 0.5)
+        piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block');
     }
     // Crown: a stone (or two) on the top plank.
     const stones = o.level >= 2 ? 2 : 1;
     for (let k = 0; k < stones; k++) {
       const r = 0.3 + 0.05 * o.level;
-      piece(addBody(world, { position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01], radius: r, mass: 2 + o.level, friction: 0.8, restitution: 0.1 }), 'stone');
+      piece(
+        addBody(world, {
+          position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01],
+          radius: r,
+          mass: 2 + o.level,
+          friction: 0.8,
+          restitution: 0.1,
+        }),
+        'stone',
+      );
     }
     lv.castleMinX = Math.min(lv.castleMinX, cx - span / 2 - 0.2);
     lv.castleMaxX = Math.max(lv.castleMaxX, cx + span / 2 + 0.2);
     // A bridge plank between neighbouring towers' roofs, welded to both.
     if (t > 0) {
       const prevRoof = lv.pieces.filter((p) => p.kind === 'plank' && Math.abs(p.startY - (y - PLANK.hy)) < 1e-6);
-      const a = prevRoof[prevRoof.length - 2], b = prevRoof[prevRoof.length - 1];
+      const a = prevRoof[prevRoof.length - 2],
+        b = prevRoof[prevRoof.length - 1];
       if (a && b) {
         const mid = (a.startX + b.startX) / 2;
         const bridge = piece(addBox(world, { position: [mid, y + 0.12], halfExtents: [0.75, 0.12], density: 2, friction: 0.7 }), 'plank');
-        weld(a.body, bridge, [mid - 0.6, y]); weld(b.body, bridge, [mid + 0.6, y]);
+        weld(a.body, bridge, [mid - 0.6, y]);
+        weld(b.body, bridge, [mid + 0.6, y]);
       }
     }
   }
@@ -165,7 +195,8 @@ export function angleForRange(range: number, speed: number, g: number): number {
 export function predictArc(x0: number, y0: number, vx: number, vy: number, g: number, count = 40, dt = 0.06): Array<[number, number]> {
   const out: Array<[number, number]> = [];
   for (let i = 0; i < count; i++) {
-    const t = i * dt, y = y0 + vy * t - 0.5 * g * t * t;
+    const t = i * dt,
+      y = y0 + vy * t - 0.5 * g * t * t;
     out.push([x0 + vx * t, y]);
     if (y < 0) break;
   }
@@ -174,17 +205,30 @@ export function predictArc(x0: number, y0: number, vx: number, vy: number, g: nu
 
 /** Adds a projectile at the cup with velocity (vx, vy), m/s, and mass (kg, > 0). @returns its handle. */
 export function launch(world: PhysicsWorld, vx: number, vy: number, mass: number): number {
-  return addBody(world, { position: [LAUNCH.x, LAUNCH.y], velocity: [vx, vy], radius: PROJECTILE_RADIUS, mass, friction: 0.6, restitution: 0.2 });
+  return addBody(world, {
+    position: [LAUNCH.x, LAUNCH.y],
+    velocity: [vx, vy],
+    radius: PROJECTILE_RADIUS,
+    mass,
+    friction: 0.6,
+    restitution: 0.2,
+  });
 }
 
 /** A tally of the level: pieces fallen, joints broken (counted by `countBreaks`), score. */
-export interface Tally { fallen: number; broken: number; score: number }
+export interface Tally {
+  fallen: number;
+  broken: number;
+  score: number;
+}
 
 /** Whether a piece has fallen: dropped FALL_DROP below its start, off the ground's end, or removed. */
 export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
   if (!isAlive(world, p.body)) return true;
-  const s = slotOf(p.body), P = world.components.Position;
-  const x = P.x[s]!, y = P.y[s]!;
+  const s = slotOf(p.body),
+    P = world.components.Position;
+  const x = P.x[s]!,
+    y = P.y[s]!;
   return y < p.startY - FALL_DROP || x < GROUND.minX || x > GROUND.maxX || y < -1;
 }
 
@@ -193,7 +237,8 @@ export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
  * removed by the solver). Score = FALL_POINTS x fallen + BREAK_POINTS x broken.
  */
 export function tally(world: PhysicsWorld, lv: Level): Tally {
-  let fallen = 0, broken = 0;
+  let fallen = 0,
+    broken = 0;
   for (const p of lv.pieces) if (hasFallen(world, p)) fallen++;
   for (const j of lv.joints) if (!isAlive(world, j)) broken++;
   return { fallen, broken, score: fallen * FALL_POINTS + broken * BREAK_POINTS };

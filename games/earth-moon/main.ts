@@ -10,16 +10,35 @@
  * [ and ] slower / faster. Drag orbits the camera, the wheel zooms.
  * URL: ?timeScale=days-per-second (0..30), ?follow=barycentre|earth|moon, ?size=1..20, ?trails=0|1, ?texture=256..2048.
  */
+
+import { createPhysicsWorld, type PhysicsWorld, step, totalEnergy } from '@bitphysics/physics';
 import {
-  AdditiveBlending, BackSide, BufferAttribute, BufferGeometry, CanvasTexture, Mesh, MeshBasicMaterial, MeshStandardMaterial,
-  Points, PointsMaterial, SRGBColorSpace, SphereGeometry, Vector3,
+  AdditiveBlending,
+  BackSide,
+  BufferAttribute,
+  BufferGeometry,
+  CanvasTexture,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  Points,
+  PointsMaterial,
+  SphereGeometry,
+  SRGBColorSpace,
+  Vector3,
 } from 'three';
-import { createPhysicsWorld, step, totalEnergy, type PhysicsWorld } from '@bitphysics/physics';
-import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
 import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
+import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 import {
-  DAY, EARTH_RADIUS, MOON_RADIUS, MOON_SEMI_MAJOR_AXIS, buildEarthMoon, configureStep, distance, earthMoonWorldOptions,
+  buildEarthMoon,
+  configureStep,
+  DAY,
+  distance,
+  EARTH_RADIUS,
   type EarthMoonHandles,
+  earthMoonWorldOptions,
+  MOON_RADIUS,
+  MOON_SEMI_MAJOR_AXIS,
 } from './scene';
 import { cloudPixels, earthPixels, moonPixels, toCanvas } from './textures';
 
@@ -61,7 +80,10 @@ const TRAILS = { length: 1500, maxEntities: 4, spacing: 1.6e6, alpha: 0.8 };
 const earthMap = new CanvasTexture(toCanvas(earthPixels(textureWidth, textureWidth / 2)));
 const cloudMap = new CanvasTexture(toCanvas(cloudPixels(Math.min(1024, textureWidth), Math.min(1024, textureWidth) / 2)));
 const moonMap = new CanvasTexture(toCanvas(moonPixels(Math.min(512, textureWidth / 2), Math.min(512, textureWidth / 2) / 2)));
-for (const t of [earthMap, cloudMap, moonMap]) { t.colorSpace = SRGBColorSpace; t.anisotropy = 4; }
+for (const t of [earthMap, cloudMap, moonMap]) {
+  t.colorSpace = SRGBColorSpace;
+  t.anisotropy = 4;
+}
 const sphere = new SphereGeometry(1, 64, 40);
 const earthMaterial = new MeshStandardMaterial({ map: earthMap, roughness: 0.85, metalness: 0 });
 const moonMaterial = new MeshStandardMaterial({ map: moonMap, roughness: 0.95, metalness: 0 });
@@ -111,17 +133,36 @@ shell.onWorldChange(() => dress());
 // Clouds: a slightly larger sphere that follows where the Earth was drawn (position and orientation).
 const clouds = new Mesh(sphere, new MeshStandardMaterial({ map: cloudMap, transparent: true, depthWrite: false, roughness: 1 }));
 // A thin additive halo for the atmosphere, seen around the limb.
-const halo = new Mesh(sphere, new MeshBasicMaterial({ color: 0x4d9bff, transparent: true, opacity: 0.07, side: BackSide, blending: AdditiveBlending, depthWrite: false }));
+const halo = new Mesh(
+  sphere,
+  new MeshBasicMaterial({
+    color: 0x4d9bff,
+    transparent: true,
+    opacity: 0.07,
+    side: BackSide,
+    blending: AdditiveBlending,
+    depthWrite: false,
+  }),
+);
 app.scene.add(clouds, halo);
 
 // A seeded star field far away (a fixed sphere of points around the origin).
 {
-  const n = 2500, positions = new Float32Array(n * 3);
+  const n = 2500,
+    positions = new Float32Array(n * 3);
   let s = 12345;
-  const rand = (): number => { s = (Math.imul(s, 1103515245) + 12345) >>> 0; return s / 4294967296; };
+  const rand = (): number => {
+    s = (Math.imul(s, 1103515245) + 12345) >>> 0;
+    return s / 4294967296;
+  };
   for (let i = 0; i < n; i++) {
-    const u = rand() * 2 - 1, phi = rand() * 2 * Math.PI, r = Math.sqrt(1 - u * u), d = 1500;
-    positions[3 * i] = r * Math.cos(phi) * d; positions[3 * i + 1] = u * d; positions[3 * i + 2] = r * Math.sin(phi) * d;
+    const u = rand() * 2 - 1,
+      phi = rand() * 2 * Math.PI,
+      r = Math.sqrt(1 - u * u),
+      d = 1500;
+    positions[3 * i] = r * Math.cos(phi) * d;
+    positions[3 * i + 1] = u * d;
+    positions[3 * i + 2] = r * Math.sin(phi) * d;
   }
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(positions, 3));
@@ -136,8 +177,10 @@ app.camera.updateProjectionMatrix();
 
 // ---- Camera follow, clouds and the readout, every frame --------------------------------------
 
-const followed = new Vector3(), lastFollowed = new Vector3();
-const p3 = [0, 0, 0], q4 = [0, 0, 0, 1];
+const followed = new Vector3(),
+  lastFollowed = new Vector3();
+const p3 = [0, 0, 0],
+  q4 = [0, 0, 0, 1];
 let followReset = true;
 
 /** Per frame: clouds on the Earth, the camera target on the followed body, the readout. */
@@ -152,14 +195,18 @@ function frame(): void {
     halo.scale.setScalar(r * 1.035);
   }
   if (params.follow === 'barycentre') followed.set(0, 0, 0);
-  else if (renderer.drawnPosition(params.follow === 'earth' ? handles.earth : handles.moon, p3)) followed.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
+  else if (renderer.drawnPosition(params.follow === 'earth' ? handles.earth : handles.moon, p3))
+    followed.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
   const controls = app.controls;
   if (controls) {
     if (followReset) {
       // Jump: keep the viewing direction, pick a distance that suits the followed body.
       followReset = false;
       const dir = app.camera.position.clone().sub(controls.target).normalize();
-      const dist = params.follow === 'barycentre' ? 2.3 * MOON_SEMI_MAJOR_AXIS * k : (params.follow === 'earth' ? 9 * EARTH_RADIUS : 12 * MOON_RADIUS) * params.size * k;
+      const dist =
+        params.follow === 'barycentre'
+          ? 2.3 * MOON_SEMI_MAJOR_AXIS * k
+          : (params.follow === 'earth' ? 9 * EARTH_RADIUS : 12 * MOON_RADIUS) * params.size * k;
       controls.target.copy(followed);
       app.camera.position.copy(followed).addScaledVector(dir, dist);
     } else {
@@ -192,13 +239,28 @@ function setTrails(on: boolean): void {
   panel.refresh();
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'timeScale', label: 'time scale (days/s)', min: 0, max: 30, step: 0.01 },
-  { type: 'checkbox', key: 'trails', label: 'show trails', onChange: (v) => setTrails(v === true) },
-  { type: 'choice', key: 'follow', label: 'camera follows', options: FOLLOW, onChange: (v) => setFollow(v as Follow) },
-  { type: 'slider', key: 'size', label: 'body size (× true)', min: 1, max: 20, step: 0.5, onChange: () => { dress(); followReset = true; } },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Earth and Moon' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'timeScale', label: 'time scale (days/s)', min: 0, max: 30, step: 0.01 },
+    { type: 'checkbox', key: 'trails', label: 'show trails', onChange: (v) => setTrails(v === true) },
+    { type: 'choice', key: 'follow', label: 'camera follows', options: FOLLOW, onChange: (v) => setFollow(v as Follow) },
+    {
+      type: 'slider',
+      key: 'size',
+      label: 'body size (× true)',
+      min: 1,
+      max: 20,
+      step: 0.5,
+      onChange: () => {
+        dress();
+        followReset = true;
+      },
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Earth and Moon' },
+);
 
 // The readout: elapsed days, Earth-Moon distance, the Moon's speed, the energy drift.
 const readout = document.createElement('div');
@@ -207,13 +269,17 @@ readout.dataset.hud = 'orbit';
 const lines = Array.from({ length: 5 }, () => readout.appendChild(document.createElement('div')));
 shell.hud.readout.after(readout);
 let energy0 = totalEnergy(shell.world);
-shell.onWorldChange((w) => { energy0 = totalEnergy(w); });
+shell.onWorldChange((w) => {
+  energy0 = totalEnergy(w);
+});
 let readoutFrame = 0;
 
 function updateReadout(): void {
   if (readoutFrame++ % 15 !== 0) return;
   const w = shell.world;
-  const V = w.components.Velocity, m = handles.moon, e = handles.earth;
+  const V = w.components.Velocity,
+    m = handles.moon,
+    e = handles.earth;
   const vrel = Math.hypot(V.x[m]! - V.x[e]!, V.y[m]! - V.y[e]!, V.z[m]! - V.z[e]!);
   const drift = (totalEnergy(w) - energy0) / Math.abs(energy0);
   lines[0]!.textContent = `day ${(w.time / DAY).toFixed(2)}`;

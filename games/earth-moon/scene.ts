@@ -13,9 +13,7 @@
  * second), split into substeps of at most `MAX_SUBSTEP` s, so the orbit is integrated the same way
  * whatever the time scale.
  */
-import {
-  G_SI, addBody, enableMutualGravity, type PhysicsWorld, type PhysicsWorldOptions,
-} from '@bitphysics/physics';
+import { addBody, enableMutualGravity, G_SI, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
 
 /** Mass of the Earth, kg. */
 export const EARTH_MASS = 5.9722e24;
@@ -71,16 +69,20 @@ export interface EarthMoonHandles {
  */
 export function buildEarthMoon(world: PhysicsWorld): EarthMoonHandles {
   if (world.dimensions !== 3) throw new RangeError(`earth-moon: needs a 3D world, got dimensions ${world.dimensions}`);
-  const M = EARTH_MASS, m = MOON_MASS, total = M + m;
+  const M = EARTH_MASS,
+    m = MOON_MASS,
+    total = M + m;
   const e = MOON_ECCENTRICITY;
   const rp = MOON_SEMI_MAJOR_AXIS * (1 - e);
   const vp = Math.sqrt((G_SI * total * (1 + e)) / rp);
   // Relative state in the orbit plane (x out to perigee, velocity along -z so the orbit turns
   // counter-clockwise seen from +y), then tilted by the inclination about x.
-  const ci = Math.cos(MOON_INCLINATION), si = Math.sin(MOON_INCLINATION);
+  const ci = Math.cos(MOON_INCLINATION),
+    si = Math.sin(MOON_INCLINATION);
   const r = [rp, 0, 0];
   const v = [0, vp * si, -vp * ci];
-  const fe = -m / total, fm = M / total;
+  const fe = -m / total,
+    fm = M / total;
   // Earth: spin axis tilted by EARTH_TILT from +y towards +x (the body's y axis is the pole).
   const ht = EARTH_TILT / 2;
   const earthQ = [0, 0, -Math.sin(ht), Math.cos(ht)];
@@ -121,7 +123,8 @@ export function buildEarthMoon(world: PhysicsWorld): EarthMoonHandles {
  * @throws RangeError on a negative or non-finite time scale or tick.
  */
 export function configureStep(world: PhysicsWorld, timeScale: number, tick: number): boolean {
-  if (!(timeScale >= 0) || !Number.isFinite(timeScale)) throw new RangeError(`earth-moon: timeScale must be finite and >= 0, got ${timeScale}`);
+  if (!(timeScale >= 0) || !Number.isFinite(timeScale))
+    throw new RangeError(`earth-moon: timeScale must be finite and >= 0, got ${timeScale}`);
   if (!(tick > 0) || !Number.isFinite(tick)) throw new RangeError(`earth-moon: tick must be finite and > 0, got ${tick}`);
   if (timeScale === 0) return false;
   const dt = timeScale * tick;

@@ -19,14 +19,26 @@
  *
  * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
  */
+
+import { createPhysicsWorld, disposeWorld, type PhysicsWorld, Rng, slotOf, stateHash, threadsReady } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, disposeWorld, Rng, slotOf, stateHash, threadsReady, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
+import { startPixiGame } from '../shared/pixi';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
-  MAX_HOLD, SKY, burstScale, buildFireworks, fireworksWorldOptions, launchShell, setAutoShow, setShowDrag, setShowGenerations, setShowGravity,
-  setShowSparks, stepFireworks, type FireworksShow,
+  buildFireworks,
+  burstScale,
+  type FireworksShow,
+  fireworksWorldOptions,
+  launchShell,
+  MAX_HOLD,
+  SKY,
+  setAutoShow,
+  setShowDrag,
+  setShowGenerations,
+  setShowGravity,
+  setShowSparks,
+  stepFireworks,
 } from './show';
 
 const search = new URLSearchParams(location.search);
@@ -70,8 +82,14 @@ let previous: PhysicsWorld | null = null;
 function createWorld(): PhysicsWorld {
   if (previous !== null) disposeWorld(previous);
   const options = {
-    seed: params.seed, gravity: params.gravity, drag: params.drag / 1000, sparks: params.sparks, generations: params.generations,
-    autoShow: params.autoShow, opening: params.opening, capacity: params.capacity,
+    seed: params.seed,
+    gravity: params.gravity,
+    drag: params.drag / 1000,
+    sparks: params.sparks,
+    generations: params.generations,
+    autoShow: params.autoShow,
+    opening: params.opening,
+    capacity: params.capacity,
   };
   const world = createPhysicsWorld({ ...fireworksWorldOptions(options), threads: ISOLATED ? params.threads : 1 });
   show = buildFireworks(world, options);
@@ -122,22 +140,66 @@ function setTrails(on: boolean): void {
 /** Launches a shell at a random point of the upper sky with a random hold. @returns its id or 0. */
 function randomLaunch(): number {
   const r = show.rng;
-  return launchShell(shell.world, show, r.range(0.15, 0.85) * SKY.width, r.range(0.45, 0.85) * SKY.height, r.range(0, MAX_HOLD), nextRecipe());
+  return launchShell(
+    shell.world,
+    show,
+    r.range(0.15, 0.85) * SKY.width,
+    r.range(0.45, 0.85) * SKY.height,
+    r.range(0, MAX_HOLD),
+    nextRecipe(),
+  );
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => setShowGravity(shell.world, show, g) },
-  { type: 'slider', key: 'drag', label: 'drag k (g/m, 1 g spark)', min: 0, max: 0.5, step: 0.001, onChange: (k) => setShowDrag(shell.world, show, k / 1000) },
-  { type: 'slider', key: 'sparks', label: 'sparks per burst', min: 10, max: 5000, step: 10, onChange: (n) => setShowSparks(show, Math.round(n)) },
-  { type: 'slider', key: 'generations', min: 1, max: 3, step: 1, onChange: (g) => setShowGenerations(shell.world, show, Math.round(g)) },
-  { type: 'checkbox', key: 'autoShow', label: 'auto-show (A)', onChange: (v) => setAuto(v === true) },
-  { type: 'choice', key: 'shellType', label: 'shell (click, Space)', options: ['random', ...RECIPE_NAMES] },
-  { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
-  { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => layer.setBlend(v === true ? 'add' : 'normal') },
-  { type: 'slider', key: 'threads', label: ISOLATED ? 'threads (rebuilds)' : 'threads (page not isolated: 1)', min: 1, max: 16, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'button', key: 'launch', label: 'launch a shell (Space)' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Fireworks' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => setShowGravity(shell.world, show, g),
+    },
+    {
+      type: 'slider',
+      key: 'drag',
+      label: 'drag k (g/m, 1 g spark)',
+      min: 0,
+      max: 0.5,
+      step: 0.001,
+      onChange: (k) => setShowDrag(shell.world, show, k / 1000),
+    },
+    {
+      type: 'slider',
+      key: 'sparks',
+      label: 'sparks per burst',
+      min: 10,
+      max: 5000,
+      step: 10,
+      onChange: (n) => setShowSparks(show, Math.round(n)),
+    },
+    { type: 'slider', key: 'generations', min: 1, max: 3, step: 1, onChange: (g) => setShowGenerations(shell.world, show, Math.round(g)) },
+    { type: 'checkbox', key: 'autoShow', label: 'auto-show (A)', onChange: (v) => setAuto(v === true) },
+    { type: 'choice', key: 'shellType', label: 'shell (click, Space)', options: ['random', ...RECIPE_NAMES] },
+    { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
+    { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => layer.setBlend(v === true ? 'add' : 'normal') },
+    {
+      type: 'slider',
+      key: 'threads',
+      label: ISOLATED ? 'threads (rebuilds)' : 'threads (page not isolated: 1)',
+      min: 1,
+      max: 16,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'button', key: 'launch', label: 'launch a shell (Space)' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Fireworks' },
+);
 
 // ---- HUD line: live sparks ---------------------------------------------------------------------
 
@@ -174,7 +236,8 @@ function drawSkyAndGround(): void {
   // Bands of a night sky, darker upwards.
   const bands = 12;
   for (let i = 0; i < bands; i++) {
-    const y0 = (SKY.height * i) / bands, y1 = (SKY.height * (i + 1)) / bands;
+    const y0 = (SKY.height * i) / bands,
+      y1 = (SKY.height * (i + 1)) / bands;
     const f = 1 - i / bands;
     const color = (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
     sky.rect(cam.toScreenX(0), cam.toScreenY(y1), cam.toScreenLength(SKY.width), cam.toScreenLength(y1 - y0) + 1).fill(color);
@@ -188,18 +251,23 @@ function drawSkyAndGround(): void {
 
 let pointerId = -1;
 let pressedAt = 0;
-let pointerX = 0, pointerY = 0;
+let pointerX = 0,
+  pointerY = 0;
 
 function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawSkyAndGround();
   const cam = renderer.camera;
   overlay.clear();
   // Shell heads (the shells are bodies, not particles), interpolated like everything else.
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   for (let i = 0; i < show.shellCount; i++) {
     const e = slotOf(show.shellIds[i]!);
-    const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha, y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
-    overlay.circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!)))).fill({ color: 0xfff3d0 });
+    const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
+      y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
+    overlay
+      .circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!))))
+      .fill({ color: 0xfff3d0 });
   }
   // Charging ring: its radius grows with the burst the hold would make.
   if (pointerId !== -1) {
@@ -210,7 +278,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.8 });
   }
   const n = layer.stats.particles;
-  if (n !== sparkShown) { sparkShown = n; sparkLine.textContent = plural(n, 'spark', 'sparks'); }
+  if (n !== sparkShown) {
+    sparkShown = n;
+    sparkLine.textContent = plural(n, 'spark', 'sparks');
+  }
 }
 
 // ---- Pointer: press to charge, release to launch ------------------------------------------------

@@ -26,10 +26,20 @@
  * Everything random comes from seeded generators: the same seed and the same launches give the same show.
  */
 import {
-  Rng, addBody, addEmitter, createEntity, createPhysicsWorld, emitNow, removeBody, setGravity, step, slotOf,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addEmitter,
+  createEntity,
+  createPhysicsWorld,
+  emitNow,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  Rng,
+  removeBody,
+  setGravity,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
-import { GOLD, RECIPES, RECIPE_NAMES, type RecipeName, type ShellRecipe } from './recipes';
+import { GOLD, RECIPE_NAMES, RECIPES, type RecipeName, type ShellRecipe } from './recipes';
 
 /** Width and height of the sky, m. The ground is y = 0. */
 export const SKY = Object.freeze({ width: 120, height: 70 });
@@ -151,23 +161,25 @@ export interface ShowAct {
  * salvos, a finale of everything. About 25 s a round. Launch points and holds are drawn from the
  * show's seeded generator.
  */
-export const PROGRAMME: readonly ShowAct[] = Object.freeze([
-  { recipe: 'peony', count: 1, pause: 1.1 },
-  { recipe: 'chrysanthemum', count: 1, pause: 1.3 },
-  { recipe: 'willow', count: 2, pause: 2.2 },
-  { recipe: 'ring', count: 1, pause: 1 },
-  { recipe: 'crossette', count: 2, pause: 1.6 },
-  { recipe: 'palm', count: 1, pause: 1.6 },
-  { recipe: 'strobe', count: 1, pause: 1.4 },
-  { recipe: 'crackle', count: 1, pause: 1.4 },
-  { recipe: 'peony', count: 3, pause: 1.8 },
-  { recipe: 'chrysanthemum', count: 2, pause: 1.6 },
-  { recipe: 'ring', count: 2, pause: 1.4 },
-  { recipe: 'willow', count: 3, pause: 2.6 },
-  { recipe: 'crossette', count: 3, pause: 1.4 },
-  { recipe: 'strobe', count: 2, pause: 1.2 },
-  { recipe: 'palm', count: 3, pause: 3.5 },
-].map((a) => Object.freeze(a as ShowAct)));
+export const PROGRAMME: readonly ShowAct[] = Object.freeze(
+  [
+    { recipe: 'peony', count: 1, pause: 1.1 },
+    { recipe: 'chrysanthemum', count: 1, pause: 1.3 },
+    { recipe: 'willow', count: 2, pause: 2.2 },
+    { recipe: 'ring', count: 1, pause: 1 },
+    { recipe: 'crossette', count: 2, pause: 1.6 },
+    { recipe: 'palm', count: 1, pause: 1.6 },
+    { recipe: 'strobe', count: 1, pause: 1.4 },
+    { recipe: 'crackle', count: 1, pause: 1.4 },
+    { recipe: 'peony', count: 3, pause: 1.8 },
+    { recipe: 'chrysanthemum', count: 2, pause: 1.6 },
+    { recipe: 'ring', count: 2, pause: 1.4 },
+    { recipe: 'willow', count: 3, pause: 2.6 },
+    { recipe: 'crossette', count: 3, pause: 1.4 },
+    { recipe: 'strobe', count: 2, pause: 1.2 },
+    { recipe: 'palm', count: 3, pause: 3.5 },
+  ].map((a) => Object.freeze(a as ShowAct)),
+);
 
 function check(cond: boolean, message: string): void {
   if (!cond) throw new RangeError(`fireworks: ${message}`);
@@ -199,14 +211,25 @@ export function resolveFireworksOptions(options: FireworksOptions = {}): Firewor
   checkGenerations(p.generations);
   check(typeof p.autoShow === 'boolean', `autoShow must be a boolean, got ${String(p.autoShow)}`);
   check(Number.isInteger(p.opening) && p.opening >= 0 && p.opening <= 16, `opening must be an integer in [0, 16], got ${p.opening}`);
-  check(Number.isInteger(p.capacity) && p.capacity >= 1000 && p.capacity <= 2_000_000, `capacity must be an integer in [1000, 2000000], got ${p.capacity}`);
+  check(
+    Number.isInteger(p.capacity) && p.capacity >= 1000 && p.capacity <= 2_000_000,
+    `capacity must be an integer in [1000, 2000000], got ${p.capacity}`,
+  );
   return p;
 }
 
-function checkGravity(g: number): void { check(g >= 0 && g <= 30, `gravity must be in [0, 30] m/s^2, got ${g}`); }
-function checkDrag(k: number): void { check(k >= 0 && k <= 1e-3, `drag must be in [0, 0.001] kg/m, got ${k}`); }
-function checkSparks(n: number): void { check(Number.isInteger(n) && n >= 10 && n <= 10_000, `sparks must be an integer in [10, 10000], got ${n}`); }
-function checkGenerations(g: number): void { check(g === 1 || g === 2 || g === 3, `generations must be 1, 2 or 3, got ${g}`); }
+function checkGravity(g: number): void {
+  check(g >= 0 && g <= 30, `gravity must be in [0, 30] m/s^2, got ${g}`);
+}
+function checkDrag(k: number): void {
+  check(k >= 0 && k <= 1e-3, `drag must be in [0, 0.001] kg/m, got ${k}`);
+}
+function checkSparks(n: number): void {
+  check(Number.isInteger(n) && n >= 10 && n <= 10_000, `sparks must be an integer in [10, 10000], got ${n}`);
+}
+function checkGenerations(g: number): void {
+  check(g === 1 || g === 2 || g === 3, `generations must be 1, 2 or 3, got ${g}`);
+}
 
 /** World options for the show: 2D, the capacity, gravity, seed. @throws like `resolveFireworksOptions`. */
 export function fireworksWorldOptions(options: FireworksOptions = {}): PhysicsWorldOptions {
@@ -233,7 +256,9 @@ function mix(a: number, b: number, f: number): number {
 
 /** Multiplies each channel of a 0xRRGGBB colour by f in [0, 1]. */
 function shade(color: number, f: number): number {
-  const r = Math.round(((color >> 16) & 255) * f), g = Math.round(((color >> 8) & 255) * f), b = Math.round((color & 255) * f);
+  const r = Math.round(((color >> 16) & 255) * f),
+    g = Math.round(((color >> 8) & 255) * f),
+    b = Math.round((color & 255) * f);
   return (r << 16) | (g << 8) | b;
 }
 
@@ -247,19 +272,59 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
   check(world.dimensions === 2, `needs a 2D world, got dimensions ${world.dimensions}`);
   const policy = 'recycle-oldest' as const;
   const crackle2 = addEmitter(world, {
-    speed: [1.5, 4], lifetime: [0.3, 0.6], inheritVelocity: 1, policy,
-    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: 0xffffff, colorEnd: 0xffa040, sizeStart: 0.8, sizeEnd: 0.2, alphaStart: 1, alphaEnd: 0 },
+    speed: [1.5, 4],
+    lifetime: [0.3, 0.6],
+    inheritVelocity: 1,
+    policy,
+    particle: {
+      mass: SPARK_MASS,
+      quadraticDrag: p.drag,
+      colorStart: 0xffffff,
+      colorEnd: 0xffa040,
+      sizeStart: 0.8,
+      sizeEnd: 0.2,
+      alphaStart: 1,
+      alphaEnd: 0,
+    },
   });
-  const crackles = PALETTE.map((color) => addEmitter(world, {
-    speed: [2, 5], lifetime: [0.35, 0.7], inheritVelocity: 1, policy,
-    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: mix(color, 0xffffff, 0.55), colorEnd: shade(color, 0.6), sizeStart: 0.9, sizeEnd: 0.25, alphaStart: 1, alphaEnd: 0 },
-    onDeath: { emitter: crackle2, count: CRACKLES.second, maxGeneration: p.generations - 1 },
-  }));
-  const sparks = PALETTE.map((color, i) => addEmitter(world, {
-    speed: [SPEED_MIN * BURST_SPEED, BURST_SPEED], lifetime: [1.4, 2.4], inheritVelocity: 1, policy,
-    particle: { mass: SPARK_MASS, quadraticDrag: p.drag, colorStart: color, colorEnd: shade(color, 0.55), sizeStart: 1.3, sizeEnd: 0.35, alphaStart: 1, alphaEnd: 0 },
-    onDeath: { emitter: crackles[i]!, count: CRACKLES.first, maxGeneration: p.generations - 1 },
-  }));
+  const crackles = PALETTE.map((color) =>
+    addEmitter(world, {
+      speed: [2, 5],
+      lifetime: [0.35, 0.7],
+      inheritVelocity: 1,
+      policy,
+      particle: {
+        mass: SPARK_MASS,
+        quadraticDrag: p.drag,
+        colorStart: mix(color, 0xffffff, 0.55),
+        colorEnd: shade(color, 0.6),
+        sizeStart: 0.9,
+        sizeEnd: 0.25,
+        alphaStart: 1,
+        alphaEnd: 0,
+      },
+      onDeath: { emitter: crackle2, count: CRACKLES.second, maxGeneration: p.generations - 1 },
+    }),
+  );
+  const sparks = PALETTE.map((color, i) =>
+    addEmitter(world, {
+      speed: [SPEED_MIN * BURST_SPEED, BURST_SPEED],
+      lifetime: [1.4, 2.4],
+      inheritVelocity: 1,
+      policy,
+      particle: {
+        mass: SPARK_MASS,
+        quadraticDrag: p.drag,
+        colorStart: color,
+        colorEnd: shade(color, 0.55),
+        sizeStart: 1.3,
+        sizeEnd: 0.35,
+        alphaStart: 1,
+        alphaEnd: 0,
+      },
+      onDeath: { emitter: crackles[i]!, count: CRACKLES.first, maxGeneration: p.generations - 1 },
+    }),
+  );
   const placeholders: number[] = [];
   for (let i = 0; i < MAX_SHELLS; i++) placeholders.push(createEntity(world));
   const show: FireworksShow = {
@@ -311,7 +376,14 @@ export function createFireworks(options: FireworksOptions = {}): { world: Physic
  * @returns the shell's entity id, or 0 if `MAX_SHELLS` shells are already in flight.
  * @throws RangeError on non-finite coordinates, a negative hold or an unknown recipe.
  */
-export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: number, targetY: number, holdSeconds = 0, recipe: RecipeName = 'crackle'): number {
+export function launchShell(
+  world: PhysicsWorld,
+  show: FireworksShow,
+  targetX: number,
+  targetY: number,
+  holdSeconds = 0,
+  recipe: RecipeName = 'crackle',
+): number {
   check(Number.isFinite(targetX) && Number.isFinite(targetY), `launchShell: target must be finite, got (${targetX}, ${targetY})`);
   const recipeIndex = RECIPE_NAMES.indexOf(recipe);
   check(recipeIndex >= 0, `launchShell: recipe must be one of ${RECIPE_NAMES.join(', ')}, got ${String(recipe)}`);
@@ -339,8 +411,22 @@ export function launchShell(world: PhysicsWorld, show: FireworksShow, targetX: n
   removeBody(world, show.placeholders.pop()!);
   const id = addBody(world, { position: [x0, y0], velocity: [vx, vy], mass: 1 });
   addEmitter(world, {
-    attachTo: id, rate: 90, speed: [0.3, 2], lifetime: [0.4, 0.9], inheritVelocity: 0.15, policy: 'recycle-oldest',
-    particle: { mass: SPARK_MASS, quadraticDrag: show.params.drag, colorStart: 0xffd890, colorEnd: 0xff5a10, sizeStart: 0.8, sizeEnd: 0.2, alphaStart: 1, alphaEnd: 0 },
+    attachTo: id,
+    rate: 90,
+    speed: [0.3, 2],
+    lifetime: [0.4, 0.9],
+    inheritVelocity: 0.15,
+    policy: 'recycle-oldest',
+    particle: {
+      mass: SPARK_MASS,
+      quadraticDrag: show.params.drag,
+      colorStart: 0xffd890,
+      colorEnd: 0xff5a10,
+      sizeStart: 0.8,
+      sizeEnd: 0.2,
+      alphaStart: 1,
+      alphaEnd: 0,
+    },
   });
   const i = show.shellCount++;
   show.shellIds[i] = id;
@@ -389,8 +475,20 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
     let inner: number | null = null;
     for (let level = levels; level >= 1; level--) {
       const em: number = addEmitter(world, {
-        speed: [b.speed[0], b.speed[1]], lifetime: [b.lifetime[0], b.lifetime[1]], inheritVelocity: 1, policy,
-        particle: { mass: SPARK_MASS, quadraticDrag: drag * recipe.drag, colorStart: c, colorEnd: shade(c, 0.6), sizeStart: b.size, sizeEnd: b.size * 0.3, alphaStart: 1, alphaEnd: 0 },
+        speed: [b.speed[0], b.speed[1]],
+        lifetime: [b.lifetime[0], b.lifetime[1]],
+        inheritVelocity: 1,
+        policy,
+        particle: {
+          mass: SPARK_MASS,
+          quadraticDrag: drag * recipe.drag,
+          colorStart: c,
+          colorEnd: shade(c, 0.6),
+          sizeStart: b.size,
+          sizeEnd: b.size * 0.3,
+          alphaStart: 1,
+          alphaEnd: 0,
+        },
         ...(inner !== null ? { onDeath: { emitter: inner, count: b.count, maxGeneration: 16 } } : {}),
       });
       show.recipeDrag.set(em, recipe.drag);
@@ -399,10 +497,19 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
     onDeath = { emitter: inner!, count: b.count, maxGeneration: 16 };
   }
   const em = addEmitter(world, {
-    speed: [recipe.speed[0] * BURST_SPEED, recipe.speed[1] * BURST_SPEED], lifetime: [recipe.lifetime[0], recipe.lifetime[1]], inheritVelocity: 1, policy,
+    speed: [recipe.speed[0] * BURST_SPEED, recipe.speed[1] * BURST_SPEED],
+    lifetime: [recipe.lifetime[0], recipe.lifetime[1]],
+    inheritVelocity: 1,
+    policy,
     particle: {
-      mass: SPARK_MASS, quadraticDrag: drag * recipe.drag, colorStart: base, colorEnd: recipe.fade === 'gold' ? shade(GOLD, 0.7) : shade(base, 0.55),
-      sizeStart: recipe.size[0], sizeEnd: recipe.size[1], alphaStart: 1, alphaEnd: 0,
+      mass: SPARK_MASS,
+      quadraticDrag: drag * recipe.drag,
+      colorStart: base,
+      colorEnd: recipe.fade === 'gold' ? shade(GOLD, 0.7) : shade(base, 0.55),
+      sizeStart: recipe.size[0],
+      sizeEnd: recipe.size[1],
+      alphaStart: 1,
+      alphaEnd: 0,
     },
     ...(onDeath ? { onDeath } : {}),
   });
@@ -411,7 +518,8 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
   return em;
 }
 
-const burstPos = [0, 0], burstVel = [0, 0];
+const burstPos = [0, 0],
+  burstVel = [0, 0];
 
 /**
  * Bursts every shell whose fuse has burnt: `sparks x scale` sparks of its colour at its position,
@@ -433,8 +541,10 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
       const colorIndex = show.shellColor[i]!;
       const crackle = recipe.name === 'crackle';
       const s = Math.sqrt(scale);
-      Q[o] = c.Position.x[slotOf(e)]!; Q[o + 1] = c.Position.y[slotOf(e)]!;
-      Q[o + 2] = c.Velocity.x[slotOf(e)]!; Q[o + 3] = c.Velocity.y[slotOf(e)]!;
+      Q[o] = c.Position.x[slotOf(e)]!;
+      Q[o + 1] = c.Position.y[slotOf(e)]!;
+      Q[o + 2] = c.Velocity.x[slotOf(e)]!;
+      Q[o + 3] = c.Velocity.y[slotOf(e)]!;
       Q[o + 4] = crackle ? show.emitters.sparks[colorIndex]! : recipeEmitter(world, show, recipe, colorIndex);
       Q[o + 5] = Math.max(1, Math.round(show.params.sparks * scale * recipe.stars));
       Q[o + 6] = (crackle ? SPEED_MIN : recipe.speed[0]) * BURST_SPEED * s;
@@ -458,8 +568,10 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
     const n = Math.min(Q[5]!, budget);
     E.speedMin[slotOf(em)] = Q[6]!;
     E.speedMax[slotOf(em)] = Q[7]!;
-    burstPos[0] = Q[0]!; burstPos[1] = Q[1]!;
-    burstVel[0] = Q[2]!; burstVel[1] = Q[3]!;
+    burstPos[0] = Q[0]!;
+    burstPos[1] = Q[1]!;
+    burstVel[0] = Q[2]!;
+    burstVel[1] = Q[3]!;
     emitNow(world, em, n, burstPos, burstVel);
     budget -= n;
     Q[5] = Q[5]! - n;
@@ -470,7 +582,6 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
     }
   }
 }
-
 
 /**
  * The auto-show: plays `PROGRAMME` act by act (a salvo spreads its shells across the sky), then
@@ -484,7 +595,7 @@ export function autoShow(world: PhysicsWorld, show: FireworksShow): void {
   const act = PROGRAMME[show.act % PROGRAMME.length]!;
   show.act++;
   for (let k = 0; k < act.count; k++) {
-    const lane = act.count === 1 ? rng.range(0.2, 0.8) : (k + 0.5) / act.count * 0.76 + 0.12 + rng.range(-0.04, 0.04);
+    const lane = act.count === 1 ? rng.range(0.2, 0.8) : ((k + 0.5) / act.count) * 0.76 + 0.12 + rng.range(-0.04, 0.04);
     launchShell(world, show, lane * SKY.width, rng.range(0.5, 0.88) * SKY.height, rng.range(0, MAX_HOLD), act.recipe);
   }
   show.autoTimer = act.pause;

@@ -9,17 +9,43 @@
  * C: camera (chase / cockpit); P pause, N step, R reset.
  * URL: ?seed=n, ?rings=n (1..30).
  */
+
 import {
-  BoxGeometry, BufferAttribute, Color, ConeGeometry, CylinderGeometry, DoubleSide, Float32BufferAttribute, Fog, HemisphereLight,
-  Mesh, MeshBasicMaterial, MeshStandardMaterial, PlaneGeometry, Quaternion, TorusGeometry, Vector3, type BufferGeometry,
+  AIRCRAFT,
+  AIRCRAFT_TRIM_SPEED,
+  type AircraftHandles,
+  aircraft,
+  aircraftLevelDrag,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  Rng,
+  setBodyThrust,
+  setControlDeflection,
+  step,
+  terrainHeight,
+} from '@bitphysics/physics';
+import {
+  BoxGeometry,
+  type BufferAttribute,
+  type BufferGeometry,
+  Color,
+  ConeGeometry,
+  CylinderGeometry,
+  DoubleSide,
+  Float32BufferAttribute,
+  Fog,
+  HemisphereLight,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  PlaneGeometry,
+  Quaternion,
+  TorusGeometry,
+  Vector3,
 } from 'three';
 import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
-import {
-  aircraft, AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraftLevelDrag, createPhysicsWorld, setBodyThrust, setControlDeflection, step,
-  terrainHeight, Rng, type AircraftHandles, type PhysicsWorld,
-} from '@bitphysics/physics';
-import { startThreeGame } from '../shared/three';
 import { createPanel, numberParam, seedParam } from '../shared/index';
+import { startThreeGame } from '../shared/three';
 
 const params = {
   seed: seedParam(),
@@ -31,7 +57,14 @@ const params = {
 
 /** Controls and game state beside the physics. */
 const state = {
-  throttle: 0, elevator: 0, aileron: 0, rudder: 0, score: 0, crashed: false, camera: 'chase' as 'chase' | 'cockpit', stalled: false,
+  throttle: 0,
+  elevator: 0,
+  aileron: 0,
+  rudder: 0,
+  score: 0,
+  crashed: false,
+  camera: 'chase' as 'chase' | 'cockpit',
+  stalled: false,
 };
 let handles: AircraftHandles;
 /** Rings: centre (x, y, z) and whether passed. */
@@ -44,9 +77,11 @@ function createWorld(): PhysicsWorld {
   Object.assign(state, { elevator: 0, aileron: 0, rudder: 0, score: 0, crashed: false, stalled: false });
   const rng = new Rng(params.seed + 7);
   rings = [];
-  let x = 0, z = 0;
+  let x = 0,
+    z = 0;
   for (let i = 0; i < params.rings; i++) {
-    x += rng.range(1500, 2500); z += rng.range(-600, 600);
+    x += rng.range(1500, 2500);
+    z += rng.range(-600, 600);
     // Near the cruise altitude, but always 200 m clear of the hills below.
     rings.push({ x, y: Math.max(terrainHeight(handles.terrain, x, z) + 200, 900 + rng.range(-250, 250)), z, passed: false });
   }
@@ -54,8 +89,13 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
-addEventListener('keydown', (e) => { held.add(e.key.toLowerCase()); if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault(); });
-addEventListener('keyup', (e) => { held.delete(e.key.toLowerCase()); });
+addEventListener('keydown', (e) => {
+  held.add(e.key.toLowerCase());
+  if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault();
+});
+addEventListener('keyup', (e) => {
+  held.delete(e.key.toLowerCase());
+});
 addEventListener('blur', () => held.clear());
 
 /** Moves a control towards `target` at `rate` per second. */
@@ -63,13 +103,20 @@ function approach(value: number, target: number, rate: number, dt: number): numb
   return value + Math.max(-rate * dt, Math.min(rate * dt, target - value));
 }
 
-const q = new Quaternion(), f = new Vector3(), u = new Vector3(), r = new Vector3(), v = new Vector3();
+const q = new Quaternion(),
+  f = new Vector3(),
+  u = new Vector3(),
+  r = new Vector3(),
+  v = new Vector3();
 
 /** The body's axes in world coordinates: forward f, up u, right r. */
 function axes(world: PhysicsWorld): void {
-  const O = world.components.Orientation, e = handles.body;
+  const O = world.components.Orientation,
+    e = handles.body;
   q.set(O.x[e]!, O.y[e]!, O.z[e]!, O.w[e]!);
-  f.set(1, 0, 0).applyQuaternion(q); u.set(0, 1, 0).applyQuaternion(q); r.set(0, 0, 1).applyQuaternion(q);
+  f.set(1, 0, 0).applyQuaternion(q);
+  u.set(0, 1, 0).applyQuaternion(q);
+  r.set(0, 0, 1).applyQuaternion(q);
 }
 
 function stepWorld(world: PhysicsWorld): void {
@@ -94,15 +141,22 @@ function stepWorld(world: PhysicsWorld): void {
   // Right rudder: the fin's force to the left at the tail swings the nose right.
   setControlDeflection(world, s.fin, -state.rudder * full);
   setBodyThrust(world, handles.body, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
-  const P = world.components.Position, e = handles.body;
+  const P = world.components.Position,
+    e = handles.body;
   const x0 = P.x[e]!;
   step(world);
   // Rings: passed when the aircraft crosses a ring's plane (x = const) within 45 m of its centre.
   for (const ring of rings) {
     if (ring.passed || !(x0 < ring.x && P.x[e]! >= ring.x)) continue;
-    if (Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z) < 45) { ring.passed = true; state.score++; ringMeshes[rings.indexOf(ring)]!.material = passedMaterial; }
+    if (Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z) < 45) {
+      ring.passed = true;
+      state.score++;
+      ringMeshes[rings.indexOf(ring)]!.material = passedMaterial;
+    }
   }
-  if (P.y[e]! < terrainHeight(handles.terrain, P.x[e]!, P.z[e]!) + 2) { state.crashed = true; }
+  if (P.y[e]! < terrainHeight(handles.terrain, P.x[e]!, P.z[e]!) + 2) {
+    state.crashed = true;
+  }
 }
 
 const game = await startThreeGame({
@@ -117,10 +171,20 @@ const game = await startThreeGame({
     { keys: 'Shift / Ctrl', action: 'throttle up / down' },
     { keys: 'C', action: 'camera: chase / cockpit' },
   ],
-  keys: [{ key: 'c', label: 'camera', action: () => { state.camera = state.camera === 'chase' ? 'cockpit' : 'chase'; } }],
+  keys: [
+    {
+      key: 'c',
+      label: 'camera',
+      action: () => {
+        state.camera = state.camera === 'chase' ? 'cockpit' : 'chase';
+      },
+    },
+  ],
   app: { background: 0x9cc8f0, shadows: false, controls: false, fov: 60 },
   renderer: {
-    unitsPerMeter: 1, boundary: 'none', shadows: false,
+    unitsPerMeter: 1,
+    boundary: 'none',
+    shadows: false,
     lights: { direction: [0.4, 1, 0.3], intensity: 2.2, hemisphereIntensity: 0.6, ambientIntensity: 0.2, shadows: false },
   },
   view: null,
@@ -137,22 +201,40 @@ app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
 
 function aircraftGeometry(): BufferGeometry {
   const parts: BufferGeometry[] = [];
-  const fuselage = new CylinderGeometry(1.3, 1.1, 24, 16); fuselage.rotateZ(-Math.PI / 2); fuselage.translate(-1, 0, 0); parts.push(fuselage);
-  const nose = new ConeGeometry(1.3, 4, 16); nose.rotateZ(-Math.PI / 2); nose.translate(13, 0, 0); parts.push(nose);
-  const wing = new BoxGeometry(4, 0.35, 30); wing.translate(0.5, -0.4, 0); parts.push(wing);
-  const tail = new BoxGeometry(2.6, 0.25, 10); tail.translate(-12, 0.3, 0); parts.push(tail);
-  const fin = new BoxGeometry(3, 5, 0.3); fin.translate(-12, 2.8, 0); parts.push(fin);
+  const fuselage = new CylinderGeometry(1.3, 1.1, 24, 16);
+  fuselage.rotateZ(-Math.PI / 2);
+  fuselage.translate(-1, 0, 0);
+  parts.push(fuselage);
+  const nose = new ConeGeometry(1.3, 4, 16);
+  nose.rotateZ(-Math.PI / 2);
+  nose.translate(13, 0, 0);
+  parts.push(nose);
+  const wing = new BoxGeometry(4, 0.35, 30);
+  wing.translate(0.5, -0.4, 0);
+  parts.push(wing);
+  const tail = new BoxGeometry(2.6, 0.25, 10);
+  tail.translate(-12, 0.3, 0);
+  parts.push(tail);
+  const fin = new BoxGeometry(3, 5, 0.3);
+  fin.translate(-12, 2.8, 0);
+  parts.push(fin);
   return mergeGeometries(parts.map((p) => p.toNonIndexed()))!;
 }
 const planeMaterial = new MeshStandardMaterial({ color: 0xe8ecf2, roughness: 0.5, metalness: 0.2 });
 const planeGeometry = aircraftGeometry();
-function dress(): void { renderer.setShape(handles.body, { geometry: planeGeometry, material: planeMaterial, scale: 1 }); }
+function dress(): void {
+  renderer.setShape(handles.body, { geometry: planeGeometry, material: planeMaterial, scale: 1 });
+}
 dress();
-shell.onWorldChange(() => { dress(); terrainCentre = null; });
+shell.onWorldChange(() => {
+  dress();
+  terrainCentre = null;
+});
 
 // ---- Terrain: a 24 km grid that follows the aircraft, heights from the scene's terrain function --------
 
-const SIZE = 24_000, SEGMENTS = 160;
+const SIZE = 24_000,
+  SEGMENTS = 160;
 const terrainGeometry = new PlaneGeometry(SIZE, SIZE, SEGMENTS, SEGMENTS);
 terrainGeometry.rotateX(-Math.PI / 2);
 terrainGeometry.setAttribute('color', new Float32BufferAttribute(new Float32Array(terrainGeometry.attributes.position!.count * 3), 3));
@@ -164,22 +246,30 @@ sea.rotateX(-Math.PI / 2);
 sea.position.y = 60;
 app.scene.add(sea);
 let terrainCentre: [number, number] | null = null;
-const low = new Color(0x4f8a3c), mid = new Color(0x8a7a52), high = new Color(0xf2f4f6), tmpColor = new Color();
+const low = new Color(0x4f8a3c),
+  mid = new Color(0x8a7a52),
+  high = new Color(0xf2f4f6),
+  tmpColor = new Color();
 
 /** Rebuilds the grid's heights and colours around (cx, cz), snapped to whole cells. */
 function rebuildTerrain(cx: number, cz: number): void {
   const cell = SIZE / SEGMENTS;
-  const sx = Math.round(cx / cell) * cell, sz = Math.round(cz / cell) * cell;
+  const sx = Math.round(cx / cell) * cell,
+    sz = Math.round(cz / cell) * cell;
   terrainCentre = [sx, sz];
-  const pos = terrainGeometry.attributes.position as BufferAttribute, col = terrainGeometry.attributes.color as BufferAttribute;
+  const pos = terrainGeometry.attributes.position as BufferAttribute,
+    col = terrainGeometry.attributes.color as BufferAttribute;
   for (let i = 0; i < pos.count; i++) {
-    const x = base[3 * i]! + sx, z = base[3 * i + 2]! + sz;
+    const x = base[3 * i]! + sx,
+      z = base[3 * i + 2]! + sz;
     const h = terrainHeight(handles.terrain, x, z);
     pos.setXYZ(i, x, h, z);
-    if (h < 300) tmpColor.copy(low).lerp(mid, h / 300); else tmpColor.copy(mid).lerp(high, Math.min(1, (h - 300) / 300));
+    if (h < 300) tmpColor.copy(low).lerp(mid, h / 300);
+    else tmpColor.copy(mid).lerp(high, Math.min(1, (h - 300) / 300));
     col.setXYZ(i, tmpColor.r, tmpColor.g, tmpColor.b);
   }
-  pos.needsUpdate = true; col.needsUpdate = true;
+  pos.needsUpdate = true;
+  col.needsUpdate = true;
   terrainGeometry.computeVertexNormals();
   terrainGeometry.computeBoundingSphere();
 }
@@ -193,15 +283,25 @@ const passedMaterial = new MeshBasicMaterial({ color: 0x50e070, transparent: tru
 let ringMeshes: Mesh[] = [];
 function placeRings(): void {
   for (const m of ringMeshes) app.scene.remove(m);
-  ringMeshes = rings.map((ring) => { const m = new Mesh(ringGeometry, ringMaterial); m.position.set(ring.x, ring.y, ring.z); app.scene.add(m); return m; });
+  ringMeshes = rings.map((ring) => {
+    const m = new Mesh(ringGeometry, ringMaterial);
+    m.position.set(ring.x, ring.y, ring.z);
+    app.scene.add(m);
+    return m;
+  });
 }
 placeRings();
 shell.onWorldChange(() => placeRings());
 
 // ---- Camera and instruments, every frame ----------------------------------------------------------
 
-const p3 = [0, 0, 0], q4 = [0, 0, 0, 1];
-const drawnQ = new Quaternion(), at = new Vector3(), eye = new Vector3(), look = new Vector3(), smoothEye = new Vector3();
+const p3 = [0, 0, 0],
+  q4 = [0, 0, 0, 1];
+const drawnQ = new Quaternion(),
+  at = new Vector3(),
+  eye = new Vector3(),
+  look = new Vector3(),
+  smoothEye = new Vector3();
 let smoothReady = false;
 
 const panelEl = document.createElement('div');
@@ -217,11 +317,15 @@ function frame(): void {
   at.set(p3[0]!, p3[1]!, p3[2]!);
   drawnQ.set(q4[0]!, q4[1]!, q4[2]!, q4[3]!);
   if (!terrainCentre || Math.hypot(at.x - terrainCentre[0], at.z - terrainCentre[1]) > 2000) rebuildTerrain(at.x, at.z);
-  sea.position.x = at.x; sea.position.z = at.z;
+  sea.position.x = at.x;
+  sea.position.z = at.z;
   if (state.camera === 'chase') {
     eye.set(-45, 12, 0).applyQuaternion(drawnQ).add(at);
     // Keep the chase camera level-ish: follow the heading, not all of the roll.
-    if (!smoothReady) { smoothEye.copy(eye); smoothReady = true; }
+    if (!smoothReady) {
+      smoothEye.copy(eye);
+      smoothReady = true;
+    }
     smoothEye.lerp(eye, 0.12);
     app.camera.position.copy(smoothEye);
     app.camera.up.set(0, 1, 0);
@@ -237,9 +341,19 @@ function frame(): void {
 }
 
 /** Instrument readings of the aircraft now: speed, altitude, attitude, heading, angle of attack. */
-function instruments(world: PhysicsWorld): { speed: number; altitude: number; agl: number; climb: number; pitch: number; roll: number; heading: number; aoa: number } {
+function instruments(world: PhysicsWorld): {
+  speed: number;
+  altitude: number;
+  agl: number;
+  climb: number;
+  pitch: number;
+  roll: number;
+  heading: number;
+  aoa: number;
+} {
   axes(world);
-  const c = world.components, e = handles.body;
+  const c = world.components,
+    e = handles.body;
   v.set(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
   const deg = 180 / Math.PI;
   return {
@@ -249,7 +363,7 @@ function instruments(world: PhysicsWorld): { speed: number; altitude: number; ag
     climb: v.y,
     pitch: Math.asin(Math.max(-1, Math.min(1, f.y))) * deg,
     roll: Math.atan2(-r.y, u.y) * deg,
-    heading: ((Math.atan2(f.z, f.x) * deg) + 360) % 360,
+    heading: (Math.atan2(f.z, f.x) * deg + 360) % 360,
     aoa: Math.atan2(-v.dot(u), v.dot(f)) * deg,
   };
 }
@@ -269,12 +383,16 @@ function updateInstruments(world: PhysicsWorld): void {
   ].join('\n');
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
-  { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
-  { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Flight simulator' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
+    { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Flight simulator' },
+);
 
 shell.expose({
   params,

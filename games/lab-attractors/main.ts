@@ -9,16 +9,27 @@
  * URL: ?count (1-50000 particles), ?mass (G M, m^3/s^2), ?softening (m), ?drag (N s/m), ?vortex=0|1,
  * ?strength (vortex, N), ?seed.
  */
+
+import { type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import { type Point2, PointLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
 import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, exposeLive } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, exposeLive } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  MAX_ATTRACTORS, START_AREA, addAttractor, attractorNear, createAttractorField, moveAttractor, removeAttractor, setAttractorField,
-  setParticleDrag, setVortexOn, stepAttractors, type AttractorField,
+  type AttractorField,
+  addAttractor,
+  attractorNear,
+  createAttractorField,
+  MAX_ATTRACTORS,
+  moveAttractor,
+  removeAttractor,
+  START_AREA,
+  setAttractorField,
+  setParticleDrag,
+  setVortexOn,
+  stepAttractors,
 } from './scene';
 
 /** A press moving less than this, CSS px, is a click. */
@@ -26,25 +37,34 @@ const CLICK_SLOP = 6;
 /** How close to an attractor a press must be to grab it, CSS px. */
 const REACH_PX = 18;
 
-const USAGE = 'Accepted: count 1-50000 (integer); mass 1-500 m³/s²; softening 0-3 m; drag 0-2 N s/m; vortex 0|1; strength -10..10 N; trails 0|1; seed (integer).';
+const USAGE =
+  'Accepted: count 1-50000 (integer); mass 1-500 m³/s²; softening 0-3 m; drag 0-2 N s/m; vortex 0|1; strength -10..10 N; trails 0|1; seed (integer).';
 const search = new URLSearchParams(location.search);
-const url = readUrlParams(() => ({
-  count: numberParam('count', { default: 3000, min: 1, max: 50_000, integer: true }),
-  mass: numberParam('mass', { default: 40, min: 1, max: 500 }),
-  softening: numberParam('softening', { default: 0.4, min: 0, max: 3 }),
-  drag: numberParam('drag', { default: 0.05, min: 0, max: 2 }),
-  vortex: search.has('vortex') ? flagParam('vortex') : false,
-  vortexStrength: numberParam('strength', { default: 2, min: -10, max: 10 }),
-  trails: search.has('trails') ? flagParam('trails') : true,
-  seed: seedParam(),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    count: numberParam('count', { default: 3000, min: 1, max: 50_000, integer: true }),
+    mass: numberParam('mass', { default: 40, min: 1, max: 500 }),
+    softening: numberParam('softening', { default: 0.4, min: 0, max: 3 }),
+    drag: numberParam('drag', { default: 0.05, min: 0, max: 2 }),
+    vortex: search.has('vortex') ? flagParam('vortex') : false,
+    vortexStrength: numberParam('strength', { default: 2, min: -10, max: 10 }),
+    trails: search.has('trails') ? flagParam('trails') : true,
+    seed: seedParam(),
+  }),
+  USAGE,
+);
 const params = { ...url, reset: () => shell.reset(), clear: () => clearAttractors() };
 
 let field: AttractorField;
 function createWorld(): PhysicsWorld {
   field = createAttractorField({
-    count: params.count, mass: params.mass, softening: params.softening, drag: params.drag, vortex: params.vortex,
-    vortexStrength: params.vortexStrength, seed: params.seed,
+    count: params.count,
+    mass: params.mass,
+    softening: params.softening,
+    drag: params.drag,
+    vortex: params.vortex,
+    vortexStrength: params.vortexStrength,
+    seed: params.seed,
   });
   return field.world;
 }
@@ -73,7 +93,11 @@ const { shell, renderer, app } = game;
 
 const TRAILS = { duration: 0.1, width: 1.4, alpha: 0.5 };
 const points = new PointLayer({
-  size: 2, blend: 'add', colorBy: 'speed', range: [0, 12], palette: [0x2f4cff, 0x39c6ff, 0xb8ffd9, 0xffe66b, 0xff5e3a],
+  size: 2,
+  blend: 'add',
+  colorBy: 'speed',
+  range: [0, 12],
+  palette: [0x2f4cff, 0x39c6ff, 0xb8ffd9, 0xffe66b, 0xff5e3a],
   trails: params.trails ? TRAILS : false,
 });
 const marks = new Graphics({ label: 'attractors' });
@@ -96,17 +120,54 @@ function clearAttractors(): void {
   while (field.attractorCount > 0) removeAttractor(field, field.attractors[0]!);
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'mass', label: 'attractor G M (m³/s²)', min: 1, max: 200, step: 1, onChange: (m, p) => setAttractorField(field, m, p.softening) },
-  { type: 'slider', key: 'softening', label: 'softening (m)', min: 0, max: 3, step: 0.01, onChange: (s, p) => setAttractorField(field, p.mass, s) },
-  { type: 'slider', key: 'drag', label: 'drag (N s/m)', min: 0, max: 2, step: 0.01, onChange: (k) => setParticleDrag(field, k) },
-  { type: 'checkbox', key: 'vortex', label: 'vortex (V)', onChange: (v) => setVortex(v === true) },
-  { type: 'slider', key: 'vortexStrength', label: 'vortex strength (N)', min: -10, max: 10, step: 0.1, onChange: (k) => setVortexOn(field, params.vortex, k) },
-  { type: 'slider', key: 'count', label: 'particles (rebuilds)', min: 100, max: 30_000, step: 100, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
-  { type: 'button', key: 'clear', label: 'remove every attractor' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Attractors' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'mass',
+      label: 'attractor G M (m³/s²)',
+      min: 1,
+      max: 200,
+      step: 1,
+      onChange: (m, p) => setAttractorField(field, m, p.softening),
+    },
+    {
+      type: 'slider',
+      key: 'softening',
+      label: 'softening (m)',
+      min: 0,
+      max: 3,
+      step: 0.01,
+      onChange: (s, p) => setAttractorField(field, p.mass, s),
+    },
+    { type: 'slider', key: 'drag', label: 'drag (N s/m)', min: 0, max: 2, step: 0.01, onChange: (k) => setParticleDrag(field, k) },
+    { type: 'checkbox', key: 'vortex', label: 'vortex (V)', onChange: (v) => setVortex(v === true) },
+    {
+      type: 'slider',
+      key: 'vortexStrength',
+      label: 'vortex strength (N)',
+      min: -10,
+      max: 10,
+      step: 0.1,
+      onChange: (k) => setVortexOn(field, params.vortex, k),
+    },
+    {
+      type: 'slider',
+      key: 'count',
+      label: 'particles (rebuilds)',
+      min: 100,
+      max: 30_000,
+      step: 100,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
+    { type: 'button', key: 'clear', label: 'remove every attractor' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Attractors' },
+);
 
 const info = createReadout(shell.hud.readout, ['attractors', 'vortex', 'escaped and put back']);
 
@@ -121,7 +182,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const r = Math.max(5, cam.toScreenLength(0.15 + 0.03 * Math.sqrt(field.settings.mass)));
   for (let i = 0; i < field.attractorCount; i++) {
     const e = field.attractors[i]!;
-    const x = cam.toScreenX(P.x[slotOf(e)]!), y = cam.toScreenY(P.y[slotOf(e)]!);
+    const x = cam.toScreenX(P.x[slotOf(e)]!),
+      y = cam.toScreenY(P.y[slotOf(e)]!);
     const soft = cam.toScreenLength(field.settings.softening);
     if (soft > 2) marks.circle(x, y, soft).stroke({ width: 1, color: 0xffd08a, alpha: 0.35 });
     marks.circle(x, y, r * 2).fill({ color: 0xffb347, alpha: 0.12 });
@@ -129,15 +191,25 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   if (params.vortex) {
     // A swirl mark at the vortex centre, turning the way the vortex pushes.
-    const cx = cam.toScreenX(0), cy = cam.toScreenY(0), s = params.vortexStrength >= 0 ? -1 : 1;
+    const cx = cam.toScreenX(0),
+      cy = cam.toScreenY(0),
+      s = params.vortexStrength >= 0 ? -1 : 1;
     for (let k = 0; k < 3; k++) {
       const a0 = (k * 2 * Math.PI) / 3;
-      marks.moveTo(cx + 14 * Math.cos(a0), cy + 14 * Math.sin(a0)).arc(cx, cy, 14, a0, a0 + s * 1.6, s < 0).stroke({ width: 2, color: 0x7fd1ff, alpha: 0.7 });
+      marks
+        .moveTo(cx + 14 * Math.cos(a0), cy + 14 * Math.sin(a0))
+        .arc(cx, cy, 14, a0, a0 + s * 1.6, s < 0)
+        .stroke({ width: 2, color: 0x7fd1ff, alpha: 0.7 });
     }
   }
   if (frame++ % 6 === 0) {
     info.set(0, `${field.attractorCount} of ${MAX_ATTRACTORS}`);
-    info.set(1, params.vortex ? `${params.vortexStrength} N (steady swirl ${params.drag > 0 ? (params.vortexStrength / params.drag).toFixed(1) : '∞'} m/s)` : 'off');
+    info.set(
+      1,
+      params.vortex
+        ? `${params.vortexStrength} N (steady swirl ${params.drag > 0 ? (params.vortexStrength / params.drag).toFixed(1) : '∞'} m/s)`
+        : 'off',
+    );
     info.set(2, plural(field.returns, 'particle', 'particles'));
   }
 }
@@ -145,8 +217,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 // ---- Pointer: click adds, drag moves, right-click / shift-click removes --------------------------------
 
 const canvas = app.canvas;
-const down: Point2 = { x: 0, y: 0 }, now: Point2 = { x: 0, y: 0 };
-let pointerId = -1, dragged = false, held = 0;
+const down: Point2 = { x: 0, y: 0 },
+  now: Point2 = { x: 0, y: 0 };
+let pointerId = -1,
+  dragged = false,
+  held = 0;
 canvas.addEventListener('contextmenu', (event) => event.preventDefault());
 
 /** The attractor under screen point (sx, sy), px, or 0. */
@@ -180,7 +255,12 @@ canvas.addEventListener('pointerup', (event) => {
   if (held === 0 && !dragged) addAttractor(field, renderer.camera.toWorldX(down.x), renderer.camera.toWorldY(down.y));
   held = 0;
 });
-canvas.addEventListener('pointercancel', (event) => { if (event.pointerId === pointerId) { pointerId = -1; held = 0; } });
+canvas.addEventListener('pointercancel', (event) => {
+  if (event.pointerId === pointerId) {
+    pointerId = -1;
+    held = 0;
+  }
+});
 
 // ---- Test and console hooks on window.game -------------------------------------------------------------
 

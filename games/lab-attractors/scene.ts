@@ -15,8 +15,19 @@
  *   area (a game rule: the population stays constant).
  */
 import {
-  Rng, addBody, createPhysicsWorld, removeBody, setAttractor, setDrag, setGravitation, setPosition,
-  setVelocity, setVortex, step, slotOf, type PhysicsWorld,
+  addBody,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  Rng,
+  removeBody,
+  setAttractor,
+  setDrag,
+  setGravitation,
+  setPosition,
+  setVelocity,
+  setVortex,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
 
 /** Most attractors at once. */
@@ -59,10 +70,12 @@ export interface AttractorField {
 }
 
 function check(where: string, name: string, v: number, min: number, max: number): void {
-  if (typeof v !== 'number' || !(v >= min && v <= max)) throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
+  if (typeof v !== 'number' || !(v >= min && v <= max))
+    throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
 }
 
-const p2 = new Float64Array(2), v2 = new Float64Array(2);
+const p2 = new Float64Array(2),
+  v2 = new Float64Array(2);
 const ORIGIN = [0, 0] as const;
 
 /**
@@ -70,9 +83,19 @@ const ORIGIN = [0, 0] as const;
  * three attractors. @throws RangeError on a setting out of range.
  */
 export function createAttractorField(options: Partial<AttractorSettings> = {}): AttractorField {
-  const settings: AttractorSettings = { count: 3000, mass: 40, softening: 0.4, drag: 0.05, vortex: false, vortexStrength: 2, seed: 1, ...options };
+  const settings: AttractorSettings = {
+    count: 3000,
+    mass: 40,
+    softening: 0.4,
+    drag: 0.05,
+    vortex: false,
+    vortexStrength: 2,
+    seed: 1,
+    ...options,
+  };
   const where = 'createAttractorField';
-  if (!Number.isInteger(settings.count) || settings.count < 1 || settings.count > 50_000) throw new RangeError(`${where}: count must be an integer in [1, 50000], got ${settings.count}`);
+  if (!Number.isInteger(settings.count) || settings.count < 1 || settings.count > 50_000)
+    throw new RangeError(`${where}: count must be an integer in [1, 50000], got ${settings.count}`);
   check(where, 'mass', settings.mass, 1e-6, 1000);
   check(where, 'softening', settings.softening, 0, 5);
   check(where, 'drag', settings.drag, 0, 5);
@@ -80,12 +103,19 @@ export function createAttractorField(options: Partial<AttractorSettings> = {}): 
   const world = createPhysicsWorld({ dimensions: 2, capacity: settings.count + MAX_ATTRACTORS + 4, gravity: [0, 0], seed: settings.seed });
   setGravitation(world, { constant: 1 });
   const f: AttractorField = {
-    world, particles: new Uint32Array(settings.count), attractors: new Int32Array(MAX_ATTRACTORS), attractorCount: 0, settings, returns: 0,
+    world,
+    particles: new Uint32Array(settings.count),
+    attractors: new Int32Array(MAX_ATTRACTORS),
+    attractorCount: 0,
+    settings,
+    returns: 0,
     rng: new Rng(settings.seed),
   };
   for (let i = 0; i < settings.count; i++) {
-    p2[0] = f.rng.range(-START_AREA.w, START_AREA.w); p2[1] = f.rng.range(-START_AREA.h, START_AREA.h);
-    v2[0] = f.rng.range(-0.5, 0.5); v2[1] = f.rng.range(-0.5, 0.5);
+    p2[0] = f.rng.range(-START_AREA.w, START_AREA.w);
+    p2[1] = f.rng.range(-START_AREA.h, START_AREA.h);
+    v2[0] = f.rng.range(-0.5, 0.5);
+    v2[1] = f.rng.range(-0.5, 0.5);
     const e = addBody(world, { position: p2, velocity: v2, mass: 1 });
     f.particles[i] = e;
   }
@@ -100,7 +130,8 @@ export function createAttractorField(options: Partial<AttractorSettings> = {}): 
 /** Adds an attractor at (x, y), m, with the field's mass and softening. @returns its id, or 0 at MAX_ATTRACTORS. */
 export function addAttractor(f: AttractorField, x: number, y: number): number {
   if (f.attractorCount >= MAX_ATTRACTORS) return 0;
-  p2[0] = x; p2[1] = y;
+  p2[0] = x;
+  p2[1] = y;
   const e = addBody(f.world, { position: p2, static: true });
   setAttractor(f.world, e, { mass: f.settings.mass, softening: f.settings.softening });
   f.attractors[f.attractorCount++] = e;
@@ -117,19 +148,25 @@ export function removeAttractor(f: AttractorField, eid: number): void {
 
 /** Moves attractor `eid` to (x, y), m. @throws RangeError if it is not an attractor of the field. */
 export function moveAttractor(f: AttractorField, eid: number, x: number, y: number): void {
-  if (f.attractors.subarray(0, f.attractorCount).indexOf(eid) < 0) throw new RangeError(`moveAttractor: ${eid} is not an attractor of the field`);
-  p2[0] = x; p2[1] = y;
+  if (f.attractors.subarray(0, f.attractorCount).indexOf(eid) < 0)
+    throw new RangeError(`moveAttractor: ${eid} is not an attractor of the field`);
+  p2[0] = x;
+  p2[1] = y;
   setPosition(f.world, eid, p2);
 }
 
 /** The attractor nearest to (x, y), m, within `reach` m, or 0. */
 export function attractorNear(f: AttractorField, x: number, y: number, reach: number): number {
   const P = f.world.components.Position;
-  let best = 0, bestD = reach;
+  let best = 0,
+    bestD = reach;
   for (let i = 0; i < f.attractorCount; i++) {
     const e = f.attractors[i]!;
     const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
-    if (d <= bestD) { bestD = d; best = e; }
+    if (d <= bestD) {
+      bestD = d;
+      best = e;
+    }
   }
   return best;
 }
@@ -170,10 +207,13 @@ export function stepAttractors(f: AttractorField): void {
   const r2 = ESCAPE_RADIUS * ESCAPE_RADIUS;
   for (let i = 0; i < f.particles.length; i++) {
     const e = f.particles[i]!;
-    const x = P.x[slotOf(e)]!, y = P.y[slotOf(e)]!;
+    const x = P.x[slotOf(e)]!,
+      y = P.y[slotOf(e)]!;
     if (x * x + y * y > r2) {
-      p2[0] = f.rng.range(-START_AREA.w, START_AREA.w); p2[1] = f.rng.range(-START_AREA.h, START_AREA.h);
-      v2[0] = 0; v2[1] = 0;
+      p2[0] = f.rng.range(-START_AREA.w, START_AREA.w);
+      p2[1] = f.rng.range(-START_AREA.h, START_AREA.h);
+      v2[0] = 0;
+      v2[1] = 0;
       setPosition(f.world, e, p2);
       setVelocity(f.world, e, v2);
       f.returns++;

@@ -14,21 +14,48 @@
  * balloonRadius, envelopeMass, scaleHeight, tetherLength), ?openingTime= (s, 0..10),
  * ?autoOpen= (m, 0..5000; 0 off), ?tethered.
  */
+
+import { createPhysicsWorld, type PhysicsWorld, setMass, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { createPhysicsWorld, setMass, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import type { Plot } from '../shared/plot';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, type Panel, type PanelControl } from '../shared/index';
 import { createPlotDock, createStatusLine, dashedLine, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
+import type { Plot } from '../shared/plot';
 import {
-  JUMPER_RADIUS, SCENES, airDensity, applyWind, balloonMass, buildBalloon, buildParachute, equilibriumAltitude, fallSpeedFromRest, openChute,
-  rangeOf, resolveOptions, setTether, terminalSpeed, updateChute, worldOptions, type BalloonHandles, type Handles, type ParachuteHandles,
+  airDensity,
+  applyWind,
+  type BalloonHandles,
+  balloonMass,
+  buildBalloon,
+  buildParachute,
+  equilibriumAltitude,
+  fallSpeedFromRest,
+  type Handles,
+  JUMPER_RADIUS,
+  openChute,
+  type ParachuteHandles,
+  rangeOf,
+  resolveOptions,
+  SCENES,
   type SceneName,
+  setTether,
+  terminalSpeed,
+  updateChute,
+  worldOptions,
 } from './scene';
 
 type NumericOption = Parameters<typeof rangeOf>[0];
 const NUMERIC: readonly NumericOption[] = [
-  'jumperMass', 'jumpAltitude', 'kClosed', 'kOpen', 'wind', 'turbulence', 'balloonRadius', 'envelopeMass', 'scaleHeight', 'tetherLength',
+  'jumperMass',
+  'jumpAltitude',
+  'kClosed',
+  'kOpen',
+  'wind',
+  'turbulence',
+  'balloonRadius',
+  'envelopeMass',
+  'scaleHeight',
+  'tetherLength',
 ];
 
 const params = readUrlParams(() => {
@@ -77,10 +104,14 @@ function stepLab(world: PhysicsWorld): void {
 }
 
 function sample(world: PhysicsWorld): void {
-  const V = world.components.Velocity, P = world.components.Position;
+  const V = world.components.Velocity,
+    P = world.components.Position;
   if (handles.scene === 'parachute') {
-    const h = handles, p = h.params, m = world.components.Mass.value[slotOf(h.jumper)]!;
-    const vt1 = terminalSpeed(m, p.kClosed), vt2 = terminalSpeed(m, p.kOpen);
+    const h = handles,
+      p = h.params,
+      m = world.components.Mass.value[slotOf(h.jumper)]!;
+    const vt1 = terminalSpeed(m, p.kClosed),
+      vt2 = terminalSpeed(m, p.kOpen);
     const still = p.wind === 0 && p.turbulence === 0 && Number.isNaN(h.openedAt);
     plot.push(world.time, -V.y[slotOf(h.jumper)]!, vt1, vt2, still ? fallSpeedFromRest(world.time, vt1) : Number.NaN);
   } else {
@@ -117,29 +148,34 @@ let plot: Plot = makePlot(params.scene);
 function makePlot(scene: SceneName): Plot {
   return scene === 'parachute'
     ? dock.add({
-      title: 'Parachutist: descent speed',
-      yLabel: 'speed (m/s)',
-      series: [
-        { label: 'descent speed (m/s)', color: '#ffd166' },
-        { label: 'v_t closed', color: '#ef476f', dashed: true },
-        { label: 'v_t open', color: '#06d6a0', dashed: true },
-        { label: 'exact fall (still air)', color: '#8ecae6', dashed: true },
-      ],
-    })
+        title: 'Parachutist: descent speed',
+        yLabel: 'speed (m/s)',
+        series: [
+          { label: 'descent speed (m/s)', color: '#ffd166' },
+          { label: 'v_t closed', color: '#ef476f', dashed: true },
+          { label: 'v_t open', color: '#06d6a0', dashed: true },
+          { label: 'exact fall (still air)', color: '#8ecae6', dashed: true },
+        ],
+      })
     : dock.add({
-      title: 'Balloon: height',
-      yLabel: 'height (m)',
-      series: [
-        { label: 'height (m)', color: '#ffd166' },
-        { label: 'exact equilibrium (m)', color: '#8ecae6', dashed: true },
-      ],
-    });
+        title: 'Balloon: height',
+        yLabel: 'height (m)',
+        series: [
+          { label: 'height (m)', color: '#ffd166' },
+          { label: 'exact equilibrium (m)', color: '#8ecae6', dashed: true },
+        ],
+      });
 }
 
 // ---- Panel (one per scene) --------------------------------------------------------------------------
 
 type Params = typeof params;
-const slider = (key: NumericOption | 'openingTime' | 'autoOpen' | 'zoom', label: string, onChange?: (v: number) => void, onRelease = false): PanelControl<Params> => {
+const slider = (
+  key: NumericOption | 'openingTime' | 'autoOpen' | 'zoom',
+  label: string,
+  onChange?: (v: number) => void,
+  onRelease = false,
+): PanelControl<Params> => {
   const [min, max] = key === 'openingTime' ? [0, 10] : key === 'autoOpen' ? [0, 3000] : key === 'zoom' ? [1, 60] : rangeOf(key);
   const step = 10 ** Math.floor(Math.log10((max - min) / 200));
   return { type: 'slider', key, label, min, max, step, ...(onChange ? { onChange } : {}), onRelease };
@@ -156,7 +192,10 @@ function controlsFor(scene: SceneName): PanelControl<Params>[] {
   if (scene === 'parachute') {
     return [
       ...common,
-      slider('jumperMass', 'mass (kg)', (m) => { syncParams(); if (handles.scene === 'parachute') setMass(shell.world, handles.jumper, m); }),
+      slider('jumperMass', 'mass (kg)', (m) => {
+        syncParams();
+        if (handles.scene === 'parachute') setMass(shell.world, handles.jumper, m);
+      }),
       slider('jumpAltitude', 'jump altitude (m, resets)', () => shell.reset(), true),
       slider('kClosed', 'k closed (kg/m)', () => syncParams()),
       slider('kOpen', 'k open (kg/m)', () => syncParams()),
@@ -234,7 +273,8 @@ function toggleTether(): void {
 
 app.canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
-  if (handles.scene === 'parachute') pullRipcord(); else toggleTether();
+  if (handles.scene === 'parachute') pullRipcord();
+  else toggleTether();
 });
 
 // ---- Drawing -----------------------------------------------------------------------------------------
@@ -264,7 +304,8 @@ function gridStep(ppm: number): number {
 
 function draw(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   const subject = handles.scene === 'parachute' ? handles.jumper : handles.balloon;
   const sx = O.x[slotOf(subject)]! + (P.x[slotOf(subject)]! - O.x[slotOf(subject)]!) * alpha;
   const sy = O.y[slotOf(subject)]! + (P.y[slotOf(subject)]! - O.y[slotOf(subject)]!) * alpha;
@@ -305,7 +346,8 @@ function draw(alpha: number, world: PhysicsWorld): void {
   }
   grid.stroke({ width: 1, color: 0xffffff, alpha: 0.08 });
   overlay.clear();
-  const px = cam.toScreenX(sx), py = cam.toScreenY(sy);
+  const px = cam.toScreenX(sx),
+    py = cam.toScreenY(sy);
   if (handles.scene === 'parachute') drawChute(world, handles, px, py);
   else drawBalloon(handles, px, py);
   if (++statusFrame % 6 === 1) status.set(statusLine(world));
@@ -315,21 +357,42 @@ function drawChute(world: PhysicsWorld, h: ParachuteHandles, px: number, py: num
   const cam = renderer.camera;
   const r = cam.toScreenLength(JUMPER_RADIUS);
   // Body line under the head (the ball is the head and torso).
-  overlay.moveTo(px, py + r).lineTo(px, py + 2.2 * r).stroke({ width: 2, color: 0xe8ecf1 });
+  overlay
+    .moveTo(px, py + r)
+    .lineTo(px, py + 2.2 * r)
+    .stroke({ width: 2, color: 0xe8ecf1 });
   if (Number.isNaN(h.openedAt)) return;
   const f = params.openingTime > 0 ? Math.min(1, (world.time - h.openedAt) / params.openingTime) : 1;
-  const half = cam.toScreenLength(0.6 + 3.4 * f), lift = cam.toScreenLength(5);
+  const half = cam.toScreenLength(0.6 + 3.4 * f),
+    lift = cam.toScreenLength(5);
   const top = py - r - lift;
-  overlay.moveTo(px - half, top).quadraticCurveTo(px, top - half * 0.9, px + half, top).closePath().fill({ color: 0xef476f, alpha: 0.9 });
-  overlay.moveTo(px - half, top).lineTo(px, py - r).moveTo(px + half, top).lineTo(px, py - r).stroke({ width: 1, color: 0xe8ecf1, alpha: 0.7 });
+  overlay
+    .moveTo(px - half, top)
+    .quadraticCurveTo(px, top - half * 0.9, px + half, top)
+    .closePath()
+    .fill({ color: 0xef476f, alpha: 0.9 });
+  overlay
+    .moveTo(px - half, top)
+    .lineTo(px, py - r)
+    .moveTo(px + half, top)
+    .lineTo(px, py - r)
+    .stroke({ width: 1, color: 0xe8ecf1, alpha: 0.7 });
 }
 
 function drawBalloon(h: BalloonHandles, px: number, py: number): void {
   const cam = renderer.camera;
   const r = cam.toScreenLength(h.params.balloonRadius);
   // Tether or a dangling string.
-  if (h.tether !== 0) overlay.moveTo(px, py + r).lineTo(cam.toScreenX(h.anchor[0]), cam.toScreenY(h.anchor[1])).stroke({ width: 1.5, color: 0xe8ecf1, alpha: 0.8 });
-  else overlay.moveTo(px, py + r).lineTo(px, py + r + cam.toScreenLength(2)).stroke({ width: 1.5, color: 0xe8ecf1, alpha: 0.6 });
+  if (h.tether !== 0)
+    overlay
+      .moveTo(px, py + r)
+      .lineTo(cam.toScreenX(h.anchor[0]), cam.toScreenY(h.anchor[1]))
+      .stroke({ width: 1.5, color: 0xe8ecf1, alpha: 0.8 });
+  else
+    overlay
+      .moveTo(px, py + r)
+      .lineTo(px, py + r + cam.toScreenLength(2))
+      .stroke({ width: 1.5, color: 0xe8ecf1, alpha: 0.6 });
   const yStar = equilibriumAltitude(h.params);
   if (Number.isFinite(yStar)) {
     const ye = cam.toScreenY(yStar);
@@ -338,7 +401,8 @@ function drawBalloon(h: BalloonHandles, px: number, py: number): void {
 }
 
 function statusLine(world: PhysicsWorld): string {
-  const P = world.components.Position, V = world.components.Velocity;
+  const P = world.components.Position,
+    V = world.components.Velocity;
   if (handles.scene === 'parachute') {
     const e = handles.jumper;
     const landed = P.y[slotOf(e)]! - JUMPER_RADIUS < 0.05;
@@ -347,7 +411,7 @@ function statusLine(world: PhysicsWorld): string {
   }
   const e = handles.balloon;
   const yStar = equilibriumAltitude(handles.params);
-  return `height ${P.y[slotOf(e)]!.toFixed(1)} m · equilibrium ${Number.isFinite(yStar) ? yStar.toFixed(1) + ' m' : 'none (too heavy)'} · ${handles.tether !== 0 ? 'tethered' : 'free'}`;
+  return `height ${P.y[slotOf(e)]!.toFixed(1)} m · equilibrium ${Number.isFinite(yStar) ? `${yStar.toFixed(1)} m` : 'none (too heavy)'} · ${handles.tether !== 0 ? 'tethered' : 'free'}`;
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------------

@@ -26,8 +26,16 @@
  * densities (kg/m^2) read as kg/m^3.
  */
 import {
-  addBody, addFluidRegion, addSpring, removeBody, setBoundary, setBuoyancy, setWind, slotOf,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addFluidRegion,
+  addSpring,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  removeBody,
+  setBoundary,
+  setBuoyancy,
+  setWind,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** The two scenes. */
@@ -72,9 +80,16 @@ export interface BalloonParachuteOptions {
 export type BalloonParachuteParams = Required<BalloonParachuteOptions>;
 
 const RANGES: Record<Exclude<keyof BalloonParachuteOptions, 'tethered'>, [number, number, number]> = {
-  jumperMass: [30, 200, 85], jumpAltitude: [100, 5000, 1200], kClosed: [0.01, 5, 0.27], kOpen: [1, 200, 30],
-  wind: [-30, 30, 0], turbulence: [0, 10, 0], balloonRadius: [0.3, 3, 1], envelopeMass: [0.01, 50, 1.2],
-  scaleHeight: [20, 1000, 120], tetherLength: [2, 500, 25],
+  jumperMass: [30, 200, 85],
+  jumpAltitude: [100, 5000, 1200],
+  kClosed: [0.01, 5, 0.27],
+  kOpen: [1, 200, 30],
+  wind: [-30, 30, 0],
+  turbulence: [0, 10, 0],
+  balloonRadius: [0.3, 3, 1],
+  envelopeMass: [0.01, 50, 1.2],
+  scaleHeight: [20, 1000, 120],
+  tetherLength: [2, 500, 25],
 };
 
 /** The accepted range [min, max] of a numeric option (for panels and URL parameters). */
@@ -95,7 +110,8 @@ export function resolveOptions(options: BalloonParachuteOptions = {}): BalloonPa
   const out: Record<string, number | boolean> = {};
   for (const [k, [lo, hi, d]] of Object.entries(RANGES)) {
     const v = (options as Record<string, unknown>)[k] ?? d;
-    if (!(typeof v === 'number' && v >= lo && v <= hi)) throw new RangeError(`lab-balloon-parachute: ${k} must be in [${lo}, ${hi}], got ${String(v)}`);
+    if (!(typeof v === 'number' && v >= lo && v <= hi))
+      throw new RangeError(`lab-balloon-parachute: ${k} must be in [${lo}, ${hi}], got ${String(v)}`);
     out[k] = v;
   }
   const tethered = options.tethered ?? false;
@@ -181,7 +197,12 @@ export function buildParachute(world: PhysicsWorld, options: BalloonParachuteOpt
   const p = resolveOptions(options);
   setBoundary(world, { min: [-10_000, 0], max: [10_000, 6000], restitution: 0, friction: 0.8 });
   const jumper = addBody(world, {
-    position: [0, p.jumpAltitude], radius: JUMPER_RADIUS, mass: p.jumperMass, quadraticDrag: p.kClosed, rotates: false, friction: 0.8,
+    position: [0, p.jumpAltitude],
+    radius: JUMPER_RADIUS,
+    mass: p.jumperMass,
+    quadraticDrag: p.kClosed,
+    rotates: false,
+    friction: 0.8,
   });
   applyWind(world, p);
   return { scene: 'parachute', jumper, openedAt: Number.NaN, params: p };
@@ -209,7 +230,8 @@ export function balloonDrag(p: BalloonParachuteParams): number {
  */
 export function buildBalloon(world: PhysicsWorld, options: BalloonParachuteOptions = {}): BalloonHandles {
   const p = resolveOptions(options);
-  const H = p.scaleHeight, r = p.balloonRadius;
+  const H = p.scaleHeight,
+    r = p.balloonRadius;
   const top = atmosphereTop(H);
   setBoundary(world, { min: [-20_000, 0], max: [20_000, top + 10 * r], restitution: 0.2, friction: 0.5 });
   const dz = layerThickness(H, r);
@@ -222,7 +244,12 @@ export function buildBalloon(world: PhysicsWorld, options: BalloonParachuteOptio
     layers.push(addFluidRegion(world, { surface: (k + 1) * dz, density: here - above }));
   }
   const balloon = addBody(world, {
-    position: [0, r + 0.05], radius: r, mass: balloonMass(p), quadraticDrag: balloonDrag(p), rotates: false, restitution: 0.2,
+    position: [0, r + 0.05],
+    radius: r,
+    mass: balloonMass(p),
+    quadraticDrag: balloonDrag(p),
+    rotates: false,
+    restitution: 0.2,
   });
   setBuoyancy(world, balloon, { shape: 'ball', radius: r, dragCoefficient: 0 });
   applyWind(world, p);
@@ -247,7 +274,12 @@ export function setTether(world: PhysicsWorld, h: BalloonHandles, on: boolean): 
   // Rope: natural frequency about 3 Hz for the balloon's mass, critically damped along the rope.
   const w = 2 * Math.PI * 3;
   h.tether = addSpring(world, {
-    anchor: h.anchor, b: h.balloon, stiffness: m * w * w, damping: 2 * m * w, restLength: h.params.tetherLength, oneSided: true,
+    anchor: h.anchor,
+    b: h.balloon,
+    stiffness: m * w * w,
+    damping: 2 * m * w,
+    restLength: h.params.tetherLength,
+    oneSided: true,
   });
 }
 
@@ -296,7 +328,8 @@ export function fallSpeedFromRest(t: number, vt: number, g = G): number {
 
 /** 2 I_1(a) / a, the mean of exp(-eta / H) over a disc of radius r with a = r / H (power series; a <= 3 here). */
 function discMeanOfExp(a: number): number {
-  let term = 1, sum = 1;
+  let term = 1,
+    sum = 1;
   const q = (a * a) / 4;
   for (let k = 1; k < 40; k++) {
     term *= q / (k * (k + 1));
@@ -315,7 +348,8 @@ function discMeanOfExp(a: number): number {
  * Atmospheric Science, eq. 3.30.
  */
 export function equilibriumAltitude(p: BalloonParachuteParams): number {
-  const r = p.balloonRadius, H = p.scaleHeight;
+  const r = p.balloonRadius,
+    H = p.scaleHeight;
   const lift = RHO_AIR * Math.PI * r * r * discMeanOfExp(r / H);
   const m = balloonMass(p);
   if (!(lift > m * Math.exp(r / H))) return Number.NaN; // not even the bottom layer can float it off the ground

@@ -10,23 +10,27 @@
  * Keys: P pause, N step, R reset. URL: ?length (2-50 m), ?k (10-5000 N/m), ?damping (0-1000 N s/m),
  * ?mass (20-200 kg).
  */
-import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+
+import { createPhysicsWorld, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, numberParam } from '../shared/index';
-import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { BRIDGE_HEIGHT, BUNGEE_DEFAULTS, GRAVITY, JUMPER_RADIUS, buildBungee, bungeeWorldOptions, type BungeeHandles } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
 import { equilibriumStretch, freeFallHeight, freeFallTime, lowestStretch } from './exact';
+import { BRIDGE_HEIGHT, BUNGEE_DEFAULTS, type BungeeHandles, buildBungee, bungeeWorldOptions, GRAVITY, JUMPER_RADIUS } from './scene';
 
 const USAGE = 'Accepted: length 2-50 m; k 10-5000 N/m; damping 0-1000 N s/m; mass 20-200 kg.';
-const url = readUrlParams(() => ({
-  ropeLength: numberParam('length', { default: BUNGEE_DEFAULTS.ropeLength, min: 2, max: 50 }),
-  stiffness: numberParam('k', { default: BUNGEE_DEFAULTS.stiffness, min: 10, max: 5000 }),
-  damping: numberParam('damping', { default: BUNGEE_DEFAULTS.damping, min: 0, max: 1000 }),
-  mass: numberParam('mass', { default: BUNGEE_DEFAULTS.mass, min: 20, max: 200 }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    ropeLength: numberParam('length', { default: BUNGEE_DEFAULTS.ropeLength, min: 2, max: 50 }),
+    stiffness: numberParam('k', { default: BUNGEE_DEFAULTS.stiffness, min: 10, max: 5000 }),
+    damping: numberParam('damping', { default: BUNGEE_DEFAULTS.damping, min: 0, max: 1000 }),
+    mass: numberParam('mass', { default: BUNGEE_DEFAULTS.mass, min: 20, max: 200 }),
+  }),
+  USAGE,
+);
 
 const params = { ...url, jump: () => shell.reset() };
 
@@ -62,8 +66,12 @@ function createWorld(): PhysicsWorld {
   jump.predictedLowest = BRIDGE_HEIGHT - p.ropeLength - lowestStretch(p.mass, GRAVITY, p.stiffness, p.ropeLength);
   jump.equilibrium = BRIDGE_HEIGHT - p.ropeLength - equilibriumStretch(p.mass, GRAVITY, p.stiffness);
   jump.freeFallTime = freeFallTime(GRAVITY, p.ropeLength);
-  jump.lowest = BRIDGE_HEIGHT; jump.lowestTime = 0; jump.tautTime = Number.NaN;
-  jump.freeFallError = 0; jump.maxSpeed = 0; jump.maxPull = 0;
+  jump.lowest = BRIDGE_HEIGHT;
+  jump.lowestTime = 0;
+  jump.tautTime = Number.NaN;
+  jump.freeFallError = 0;
+  jump.maxSpeed = 0;
+  jump.maxPull = 0;
   lastVy = 0;
   plot?.clear();
   return world;
@@ -73,12 +81,17 @@ function createWorld(): PhysicsWorld {
 function labStep(world: PhysicsWorld): void {
   physicsStep(world);
   const e = handles.jumper;
-  const y = world.components.Position.y[e]!, vy = world.components.Velocity.y[e]!, vx = world.components.Velocity.x[e]!;
+  const y = world.components.Position.y[e]!,
+    vy = world.components.Velocity.y[e]!,
+    vx = world.components.Velocity.x[e]!;
   const t = world.time;
   const p = handles.params;
   const ff = freeFallHeight(BRIDGE_HEIGHT, GRAVITY, p.ropeLength, t);
   if (!Number.isNaN(ff)) jump.freeFallError = Math.max(jump.freeFallError, Math.abs(y - ff));
-  if (y < jump.lowest) { jump.lowest = y; jump.lowestTime = t; }
+  if (y < jump.lowest) {
+    jump.lowest = y;
+    jump.lowestTime = t;
+  }
   if (Number.isNaN(jump.tautTime) && BRIDGE_HEIGHT - y > p.ropeLength) jump.tautTime = t;
   jump.maxSpeed = Math.max(jump.maxSpeed, Math.hypot(vx, vy));
   // Acceleration measured from the velocity change over the step, in g, counted upward from free fall.
@@ -113,26 +126,45 @@ paint();
 shell.onWorldChange(paint);
 
 const rejump = (): void => shell.reset();
-const panel = createPanel(params, [
-  { type: 'slider', key: 'ropeLength', label: 'rope length L (m)', min: 2, max: 40, step: 0.5, onRelease: true, onChange: rejump },
-  { type: 'slider', key: 'stiffness', label: 'stiffness k (N/m)', min: 20, max: 1000, step: 1, onRelease: true, onChange: rejump },
-  { type: 'slider', key: 'damping', label: 'damping (N s/m)', min: 0, max: 300, step: 1, onRelease: true, onChange: rejump },
-  { type: 'slider', key: 'mass', label: 'jumper mass m (kg)', min: 20, max: 200, step: 1, onRelease: true, onChange: rejump },
-  { type: 'button', key: 'jump', label: 'jump again (Space)' },
-], { title: 'Bungee', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'ropeLength', label: 'rope length L (m)', min: 2, max: 40, step: 0.5, onRelease: true, onChange: rejump },
+    { type: 'slider', key: 'stiffness', label: 'stiffness k (N/m)', min: 20, max: 1000, step: 1, onRelease: true, onChange: rejump },
+    { type: 'slider', key: 'damping', label: 'damping (N s/m)', min: 0, max: 300, step: 1, onRelease: true, onChange: rejump },
+    { type: 'slider', key: 'mass', label: 'jumper mass m (kg)', min: 20, max: 200, step: 1, onRelease: true, onChange: rejump },
+    { type: 'button', key: 'jump', label: 'jump again (Space)' },
+  ],
+  { title: 'Bungee', container: dock.panelSlot },
+);
 
 const readout = createReadout(shell.hud.readout, [
-  'free fall √(2L/g)', 'rope taut at', 'max |y − y_free fall|', 'lowest by energy', 'lowest reached', 'hangs at (m g / k)', 'top speed', 'peak pull',
+  'free fall √(2L/g)',
+  'rope taut at',
+  'max |y − y_free fall|',
+  'lowest by energy',
+  'lowest reached',
+  'hangs at (m g / k)',
+  'top speed',
+  'peak pull',
 ]);
 plot = createPlot({
-  parent: dock.charts, title: 'Height of the jumper', yLabel: 'y (m)', width: dock.chartWidth, height: 230, capacity: 1800,
+  parent: dock.charts,
+  title: 'Height of the jumper',
+  yLabel: 'y (m)',
+  width: dock.chartWidth,
+  height: 230,
+  capacity: 1800,
   series: [
-    { label: 'simulated', color: '#ff8c42' }, { label: 'free fall (exact)', color: '#e6e9ef', dashed: true },
+    { label: 'simulated', color: '#ff8c42' },
+    { label: 'free fall (exact)', color: '#e6e9ef', dashed: true },
     { label: 'lowest (energy)', color: '#ef476f', dashed: true },
   ],
 });
 shell.reset();
-app.canvas.addEventListener('pointerdown', (event) => { if (event.button === 0) shell.reset(); });
+app.canvas.addEventListener('pointerdown', (event) => {
+  if (event.button === 0) shell.reset();
+});
 
 // ---- Drawing ------------------------------------------------------------------------------------
 
@@ -144,10 +176,12 @@ const at: Point2 = { x: 0, y: 0 };
 function drawOverlay(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
-  const left = 0, right = cam.width;
+  const left = 0,
+    right = cam.width;
   const y0 = cam.toScreenY(0);
   overlay.rect(left, y0, right, cam.height - y0).fill({ color: 0x1d3557, alpha: 0.9 });
-  const deckY = cam.toScreenY(BRIDGE_HEIGHT), pierX = cam.toScreenX(-12);
+  const deckY = cam.toScreenY(BRIDGE_HEIGHT),
+    pierX = cam.toScreenX(-12);
   overlay.rect(pierX - cam.toScreenLength(1.5), deckY, cam.toScreenLength(3), y0 - deckY).fill({ color: 0x3a4253 });
   const low = cam.toScreenY(jump.predictedLowest);
   drawDashedLine(overlay, cam.toScreenX(-10), low, cam.toScreenX(10), low, 2, 0xef476f, 0.85);
@@ -155,15 +189,20 @@ function drawOverlay(alpha: number, world: PhysicsWorld): void {
   drawDashedLine(overlay, cam.toScreenX(-4), eq, cam.toScreenX(4), eq, 1, 0x98a2b3, 0.6, 4, 4);
   // The rope: straight while taut, a sagging curve of the same length (drawn only) while slack.
   drawnPosition(world, handles.jumper, alpha, at);
-  const ax = cam.toScreenX(handles.anchor[0]), ay = cam.toScreenY(handles.anchor[1]);
-  const jx = cam.toScreenX(at.x), jy = cam.toScreenY(at.y);
+  const ax = cam.toScreenX(handles.anchor[0]),
+    ay = cam.toScreenY(handles.anchor[1]);
+  const jx = cam.toScreenX(at.x),
+    jy = cam.toScreenY(at.y);
   const L = handles.params.ropeLength;
   const d = Math.hypot(at.x - handles.anchor[0], at.y - handles.anchor[1]);
   if (d >= L) {
     overlay.moveTo(ax, ay).lineTo(jx, jy).stroke({ width: 3, color: 0xffd166 });
   } else {
     const sag = cam.toScreenLength(Math.sqrt(L * L - d * d) / 2);
-    overlay.moveTo(ax, ay).quadraticCurveTo((ax + jx) / 2 + sag * 0.9, (ay + jy) / 2 + sag * 0.6, jx, jy).stroke({ width: 2, color: 0xffd166, alpha: 0.8 });
+    overlay
+      .moveTo(ax, ay)
+      .quadraticCurveTo((ax + jx) / 2 + sag * 0.9, (ay + jy) / 2 + sag * 0.6, jx, jy)
+      .stroke({ width: 2, color: 0xffd166, alpha: 0.8 });
   }
   overlay.circle(ax, ay, 3).fill({ color: 0xffffff });
   // The jumper is a few pixels wide at this scale: ring it.

@@ -53,10 +53,13 @@ export interface BungeeHandles {
  */
 export function resolveBungeeOptions(options: BungeeOptions = {}): BungeeParams {
   for (const k of Object.keys(options)) {
-    if (!(k in BUNGEE_DEFAULTS)) throw new TypeError(`lab-bungee: unknown option ${JSON.stringify(k)}; known: ${Object.keys(BUNGEE_DEFAULTS).join(', ')}`);
+    if (!(k in BUNGEE_DEFAULTS))
+      throw new TypeError(`lab-bungee: unknown option ${JSON.stringify(k)}; known: ${Object.keys(BUNGEE_DEFAULTS).join(', ')}`);
   }
   const p = { ...BUNGEE_DEFAULTS, ...options } as BungeeParams;
-  const check = (ok: boolean, what: string, v: unknown) => { if (!ok) throw new RangeError(`lab-bungee: ${what}, got ${String(v)}`); };
+  const check = (ok: boolean, what: string, v: unknown) => {
+    if (!ok) throw new RangeError(`lab-bungee: ${what}, got ${String(v)}`);
+  };
   check(p.ropeLength >= 2 && p.ropeLength <= 50, 'ropeLength must be in [2, 50] m', p.ropeLength);
   check(p.stiffness >= 10 && p.stiffness <= 5000, 'stiffness must be in [10, 5000] N/m', p.stiffness);
   check(p.damping >= 0 && p.damping <= 1000, 'damping must be in [0, 1000] N s/m', p.damping);
@@ -83,7 +86,20 @@ export function buildBungee(world: PhysicsWorld, options: BungeeOptions = {}): B
     addSegment(world, { a: [-60, 0], b: [60, 0], friction: 0.8 }),
   ];
   const anchor = [0, H] as const;
-  const jumper = addBody(world, { position: [anchor[0], anchor[1]], radius: JUMPER_RADIUS, mass: p.mass, rotates: false, restitution: 0.1 });
-  const rope = addSpring(world, { anchor, b: jumper, stiffness: p.stiffness, restLength: p.ropeLength, damping: p.damping, oneSided: true });
+  const jumper = addBody(world, {
+    position: [anchor[0], anchor[1]],
+    radius: JUMPER_RADIUS,
+    mass: p.mass,
+    rotates: false,
+    restitution: 0.1,
+  });
+  const rope = addSpring(world, {
+    anchor,
+    b: jumper,
+    stiffness: p.stiffness,
+    restLength: p.ropeLength,
+    damping: p.damping,
+    oneSided: true,
+  });
   return { jumper, rope, anchor, segments, params: p };
 }

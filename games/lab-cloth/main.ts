@@ -9,20 +9,31 @@
  * ?wind (0-20 m/s), ?tear (0.05-2).
  */
 import {
-  createCloth, createPhysicsWorld, pinClothPoint, query, setWind, slotOf, step as physicsStep, type Cloth, type PhysicsWorld,
+  type Cloth,
+  createCloth,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  step as physicsStep,
+  pinClothPoint,
+  query,
+  setWind,
+  slotOf,
 } from '@bitphysics/physics';
 import { ClothLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
 
 const USAGE = 'Accepted: size 4-64 points a side; wind 0-20 m/s; tear 0.05-2 (strain).';
-const url = readUrlParams(() => ({
-  size: numberParam('size', { default: 32, min: 4, max: 64, integer: true }),
-  wind: numberParam('wind', { default: 4, min: 0, max: 20 }),
-  tear: numberParam('tear', { default: 0.25, min: 0.05, max: 2 }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    size: numberParam('size', { default: 32, min: 4, max: 64, integer: true }),
+    wind: numberParam('wind', { default: 4, min: 0, max: 20 }),
+    tear: numberParam('tear', { default: 0.25, min: 0.05, max: 2 }),
+  }),
+  USAGE,
+);
 const params = { ...url, turbulence: 1.5, substeps: 12, reset: () => shell.reset() };
 
 const SIDE = 4; // m
@@ -38,7 +49,16 @@ function applyWind(world: PhysicsWorld): void {
 function createWorld(): PhysicsWorld {
   const n = params.size;
   const world = createPhysicsWorld({ gravity: [0, -9.81], capacity: 7 * n * n + 64 });
-  cloth = createCloth(world, { columns: n, rows: n, width: SIDE, height: SIDE, origin: [0, SIDE], mass: 0.6, tearStretch: params.tear, drag: 0.04 / n });
+  cloth = createCloth(world, {
+    columns: n,
+    rows: n,
+    width: SIDE,
+    height: SIDE,
+    origin: [0, SIDE],
+    mass: 0.6,
+    tearStretch: params.tear,
+    drag: 0.04 / n,
+  });
   world.cloth.substeps = params.substeps;
   applyWind(world);
   torn = 0;
@@ -68,18 +88,49 @@ const { shell, renderer, app } = game;
 const dock = createLabDock();
 followView(app, renderer.camera, dock, () => view);
 
-createPanel(params, [
-  { type: 'slider', key: 'size', label: 'points a side', min: 4, max: 64, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'wind', label: 'wind (m/s)', min: 0, max: 20, step: 0.1, onChange: () => applyWind(shell.world) },
-  { type: 'slider', key: 'turbulence', label: 'turbulence (m/s RMS)', min: 0, max: 5, step: 0.1, onChange: () => applyWind(shell.world) },
-  { type: 'slider', key: 'tear', label: 'tears at strain', min: 0.05, max: 2, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'substeps', label: 'solver substeps', min: 1, max: 30, step: 1, onChange: (v) => { shell.world.cloth.substeps = v as number; } },
-  { type: 'button', key: 'reset', label: 'new cloth (R)' },
-], { title: 'Cloth', container: dock.panelSlot });
+createPanel(
+  params,
+  [
+    { type: 'slider', key: 'size', label: 'points a side', min: 4, max: 64, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'wind', label: 'wind (m/s)', min: 0, max: 20, step: 0.1, onChange: () => applyWind(shell.world) },
+    { type: 'slider', key: 'turbulence', label: 'turbulence (m/s RMS)', min: 0, max: 5, step: 0.1, onChange: () => applyWind(shell.world) },
+    {
+      type: 'slider',
+      key: 'tear',
+      label: 'tears at strain',
+      min: 0.05,
+      max: 2,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'substeps',
+      label: 'solver substeps',
+      min: 1,
+      max: 30,
+      step: 1,
+      onChange: (v) => {
+        shell.world.cloth.substeps = v as number;
+      },
+    },
+    { type: 'button', key: 'reset', label: 'new cloth (R)' },
+  ],
+  { title: 'Cloth', container: dock.panelSlot },
+);
 const readout = createReadout(shell.hud.readout, ['points', 'links', 'torn', 'largest stretch', 'step time']);
 plot = createPlot({
-  parent: dock.charts, title: 'Stretch and step time', yLabel: '% / ms', width: dock.chartWidth, height: 200, capacity: 1200,
-  series: [{ label: 'largest stretch (%)', color: '#e76f51' }, { label: 'step (ms)', color: '#98a2b3' }],
+  parent: dock.charts,
+  title: 'Stretch and step time',
+  yLabel: '% / ms',
+  width: dock.chartWidth,
+  height: 200,
+  capacity: 1200,
+  series: [
+    { label: 'largest stretch (%)', color: '#e76f51' },
+    { label: 'step (ms)', color: '#98a2b3' },
+  ],
 });
 
 // Drag: the cloth point nearest the press follows the pointer (held like a pin) until release.
@@ -96,21 +147,36 @@ canvas.addEventListener('pointerdown', (e) => {
   held = grab(x, y);
   if (held) canvas.setPointerCapture(e.pointerId);
 });
-canvas.addEventListener('pointermove', (e) => { if (held) pinClothPoint(shell.world, held, pointerWorld(e)); });
-const release = (): void => { if (held) { pinClothPoint(shell.world, held, null); held = 0; } };
+canvas.addEventListener('pointermove', (e) => {
+  if (held) pinClothPoint(shell.world, held, pointerWorld(e));
+});
+const release = (): void => {
+  if (held) {
+    pinClothPoint(shell.world, held, null);
+    held = 0;
+  }
+};
 canvas.addEventListener('pointerup', release);
 canvas.addEventListener('pointercancel', release);
-shell.onWorldChange(() => { held = 0; });
+shell.onWorldChange(() => {
+  held = 0;
+});
 
 /** Grabs the moving cloth point nearest (x, y) within 0.3 m. @returns its handle, or 0. */
 function grab(x: number, y: number): number {
-  const P = shell.world.components.Position, inv = shell.world.components.Mass.inv;
-  let best = 0, bestD = 0.3;
+  const P = shell.world.components.Position,
+    inv = shell.world.components.Mass.inv;
+  let best = 0,
+    bestD = 0.3;
   for (let i = 0; i < cloth.points.length; i++) {
-    const h = cloth.points[i]!, e = slotOf(h);
+    const h = cloth.points[i]!,
+      e = slotOf(h);
     if (!(inv[e]! > 0)) continue;
     const d = Math.hypot(P.x[e]! - x, P.y[e]! - y);
-    if (d < bestD) { bestD = d; best = h; }
+    if (d < bestD) {
+      bestD = d;
+      best = h;
+    }
   }
   if (best) pinClothPoint(shell.world, best, [x, y]);
   return best;
@@ -142,5 +208,7 @@ shell.expose({
   links: () => query(shell.world, [shell.world.components.ClothLink]).length,
   torn: () => torn,
   /** Runs the lab's step n times (tests). */
-  advance: (n: number) => { for (let i = 0; i < n; i++) labStep(shell.world); },
+  advance: (n: number) => {
+    for (let i = 0; i < n; i++) labStep(shell.world);
+  },
 });

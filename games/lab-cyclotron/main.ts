@@ -9,13 +9,21 @@
  * state (new exact orbit). URL: ?charge= (mC, -5..5, not 0), ?mass= (g, 0.5..20), ?B= (T, 0.1..4),
  * ?speed= (m/s, 0.1..20), ?E= (V/m, -5..5), ?integrator=<name>, ?substeps= (1..64).
  */
+
+import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, step } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { INTEGRATOR_NAMES, createPhysicsWorld, step, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam } from '../shared/index';
 import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  buildCyclotron, cyclotronWorldOptions, exactCentre, flipField, measure, rebaseline, resolveCyclotronOptions, type CyclotronHandles,
+  buildCyclotron,
+  type CyclotronHandles,
+  cyclotronWorldOptions,
+  exactCentre,
+  flipField,
+  measure,
+  rebaseline,
+  resolveCyclotronOptions,
 } from './scene';
 
 const params = readUrlParams(() => {
@@ -40,8 +48,13 @@ const centre = new Float64Array(2);
 function createWorld(): PhysicsWorld {
   const options = resolveCyclotronOptions({
     // The slider reaches 0, which would not circle: |q| below 0.05 mC is taken as 0.05 mC.
-    charge: Math.abs(params.charge) < 0.05 ? 0.05 : params.charge, mass: params.mass, field: params.field, speed: params.speed,
-    electric: params.electric, integrator: params.integrator, substeps: params.substeps,
+    charge: Math.abs(params.charge) < 0.05 ? 0.05 : params.charge,
+    mass: params.mass,
+    field: params.field,
+    speed: params.speed,
+    electric: params.electric,
+    integrator: params.integrator,
+    substeps: params.substeps,
   });
   const world = createPhysicsWorld(cyclotronWorldOptions(options));
   handles = buildCyclotron(world, options);
@@ -120,19 +133,25 @@ shell.onWorldChange(() => {
 });
 
 const rebuild = () => shell.reset();
-const panel = createPanel(params, [
-  { type: 'slider', key: 'charge', label: 'charge q (mC)', min: -5, max: 5, step: 0.1, onRelease: true, onChange: rebuild },
-  { type: 'slider', key: 'mass', label: 'mass m (g)', min: 0.5, max: 20, step: 0.1, onRelease: true, onChange: rebuild },
-  { type: 'slider', key: 'field', label: 'field B (T)', min: 0.1, max: 4, step: 0.05, onRelease: true, onChange: rebuild },
-  { type: 'slider', key: 'speed', label: 'speed v (m/s)', min: 0.1, max: 20, step: 0.1, onRelease: true, onChange: rebuild },
-  { type: 'slider', key: 'electric', label: 'electric field E_y (V/m)', min: -5, max: 5, step: 0.1, onRelease: true, onChange: rebuild },
-  { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: rebuild },
-  { type: 'slider', key: 'substeps', min: 1, max: 32, step: 1, onRelease: true, onChange: rebuild },
-  { type: 'button', key: 'flip', label: 'flip B (F)' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Cyclotron' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'charge', label: 'charge q (mC)', min: -5, max: 5, step: 0.1, onRelease: true, onChange: rebuild },
+    { type: 'slider', key: 'mass', label: 'mass m (g)', min: 0.5, max: 20, step: 0.1, onRelease: true, onChange: rebuild },
+    { type: 'slider', key: 'field', label: 'field B (T)', min: 0.1, max: 4, step: 0.05, onRelease: true, onChange: rebuild },
+    { type: 'slider', key: 'speed', label: 'speed v (m/s)', min: 0.1, max: 20, step: 0.1, onRelease: true, onChange: rebuild },
+    { type: 'slider', key: 'electric', label: 'electric field E_y (V/m)', min: -5, max: 5, step: 0.1, onRelease: true, onChange: rebuild },
+    { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: rebuild },
+    { type: 'slider', key: 'substeps', min: 1, max: 32, step: 1, onRelease: true, onChange: rebuild },
+    { type: 'button', key: 'flip', label: 'flip B (F)' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Cyclotron' },
+);
 
-app.canvas.addEventListener('pointerdown', (event) => { if (event.button === 0) restartRun(); });
+app.canvas.addEventListener('pointerdown', (event) => {
+  if (event.button === 0) restartRun();
+});
 
 // ---- Drawing: the exact orbit (dashed), the field symbols, the view following the orbit ---------------
 
@@ -142,7 +161,9 @@ app.stage.addChildAt(back, 0);
 app.stage.addChild(orbit);
 const status = createStatusLine();
 let frame = 0;
-let viewX = Number.NaN, viewY = 0, viewScale = 0;
+let viewX = Number.NaN,
+  viewY = 0,
+  viewScale = 0;
 const reserve = plotReserve();
 
 let backKey = '';
@@ -155,7 +176,12 @@ function drawField(bz: number): void {
   for (let x = spacing / 2; x < cam.width; x += spacing) {
     for (let y = spacing / 2; y < cam.height; y += spacing) {
       if (bz > 0) back.circle(x, y, 2.5);
-      else back.moveTo(x - 4, y - 4).lineTo(x + 4, y + 4).moveTo(x + 4, y - 4).lineTo(x - 4, y + 4);
+      else
+        back
+          .moveTo(x - 4, y - 4)
+          .lineTo(x + 4, y + 4)
+          .moveTo(x + 4, y - 4)
+          .lineTo(x - 4, y + 4);
     }
   }
   if (bz > 0) back.fill({ color: 0x5c677d });
@@ -170,10 +196,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const r = handles.exactRadius;
   const usable = Math.max(200, cam.width - reserve);
   const scale = Math.min(usable / (2.8 * r), cam.height / (2.8 * r));
-  const cx = centre[0]!, cy = centre[1]!;
+  const cx = centre[0]!,
+    cy = centre[1]!;
   if (Number.isNaN(viewX) || scale !== viewScale || Math.abs(cx - viewX) > 0.8 * r) {
     viewScale = scale;
-    viewX = cx; viewY = cy;
+    viewX = cx;
+    viewY = cy;
     // Centre the orbit in the usable (left) part: the screen centre sits (width/2 - usable/2) px to the right of it.
     const shift = (cam.width / 2 - usable / 2) / scale;
     cam.setPixelsPerMeter(scale, viewX + shift, viewY);
@@ -186,24 +214,36 @@ function draw(alpha: number, world: PhysicsWorld): void {
   backKey = key;
   // The exact orbit.
   orbit.clear();
-  const sx = cam.toScreenX(cx), sy = cam.toScreenY(cy), sr = cam.toScreenLength(r);
+  const sx = cam.toScreenX(cx),
+    sy = cam.toScreenY(cy),
+    sr = cam.toScreenLength(r);
   const n = 96;
   for (let i = 0; i < n; i += 2) {
-    const a0 = (2 * Math.PI * i) / n, a1 = (2 * Math.PI * (i + 1)) / n;
+    const a0 = (2 * Math.PI * i) / n,
+      a1 = (2 * Math.PI * (i + 1)) / n;
     orbit.moveTo(sx + sr * Math.cos(a0), sy + sr * Math.sin(a0)).lineTo(sx + sr * Math.cos(a1), sy + sr * Math.sin(a1));
   }
   orbit.stroke({ width: 1.5, color: 0x8ecae6, alpha: 0.8 });
   orbit.circle(sx, sy, 3).fill({ color: 0x8ecae6 });
   if (world.components.ElectricField.y[handles.electric] !== 0) {
     const ey = world.components.ElectricField.y[handles.electric]!;
-    const x0 = 30, y0 = cam.height / 2, len = 40 * Math.sign(ey);
+    const x0 = 30,
+      y0 = cam.height / 2,
+      len = 40 * Math.sign(ey);
     dashedLine(orbit, x0, y0 + len, x0, y0 - len, 1000, 1).stroke({ width: 2, color: 0xef476f });
-    orbit.moveTo(x0, y0 - len - 6 * Math.sign(ey)).lineTo(x0 - 5, y0 - len).lineTo(x0 + 5, y0 - len).closePath().fill({ color: 0xef476f });
+    orbit
+      .moveTo(x0, y0 - len - 6 * Math.sign(ey))
+      .lineTo(x0 - 5, y0 - len)
+      .lineTo(x0 + 5, y0 - len)
+      .closePath()
+      .fill({ color: 0xef476f });
   }
   if (++frame % 10 === 1) {
     const m = handles.meter;
-    status.set(`B ${bz > 0 ? 'out of' : 'into'} the screen · exact r = ${r.toFixed(3)} m, T = ${handles.exactPeriod.toFixed(3)} s · ` +
-      `measured r = ${Number.isNaN(m.radius) ? '…' : m.radius.toFixed(3)} m, T = ${Number.isNaN(m.period) ? '…' : m.period.toFixed(3)} s · ${m.revolutions} rev`);
+    status.set(
+      `B ${bz > 0 ? 'out of' : 'into'} the screen · exact r = ${r.toFixed(3)} m, T = ${handles.exactPeriod.toFixed(3)} s · ` +
+        `measured r = ${Number.isNaN(m.radius) ? '…' : m.radius.toFixed(3)} m, T = ${Number.isNaN(m.period) ? '…' : m.period.toFixed(3)} s · ${m.revolutions} rev`,
+    );
   }
 }
 
@@ -219,8 +259,11 @@ shell.expose({
   handles: (): CyclotronHandles => handles,
   /** Measured and exact radius (m) and period (s), and revolutions measured. */
   measurement: () => ({
-    radius: handles.meter.radius, period: handles.meter.period, revolutions: handles.meter.revolutions,
-    exactRadius: handles.exactRadius, exactPeriod: handles.exactPeriod,
+    radius: handles.meter.radius,
+    period: handles.meter.period,
+    revolutions: handles.meter.revolutions,
+    exactRadius: handles.exactRadius,
+    exactPeriod: handles.exactPeriod,
   }),
   /** The magnetic field B_z now, T. */
   field: (): number => shell.world.components.MagneticField.z[handles.magnetic]!,

@@ -15,7 +15,13 @@
  * of y between them is the radius.
  */
 import {
-  addBody, addElectricField, addMagneticField, setCharge, type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addElectricField,
+  addMagneticField,
+  type IntegratorName,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  setCharge,
 } from '@bitphysics/physics';
 
 /** Options of the scene; every field optional. Units chosen so the orbit is metres across and seconds long. */
@@ -54,15 +60,21 @@ export function resolveCyclotronOptions(options: CyclotronOptions = {}): Cyclotr
     if (!KNOWN.includes(k)) throw new TypeError(`lab-cyclotron: unknown option ${JSON.stringify(k)}; known: ${KNOWN.join(', ')}`);
   }
   const p: CyclotronParams = {
-    charge: options.charge ?? 1, mass: options.mass ?? 1, field: options.field ?? 1, speed: options.speed ?? 3,
-    electric: options.electric ?? 0, integrator: options.integrator ?? 'rk4', substeps: options.substeps ?? 1,
+    charge: options.charge ?? 1,
+    mass: options.mass ?? 1,
+    field: options.field ?? 1,
+    speed: options.speed ?? 3,
+    electric: options.electric ?? 0,
+    integrator: options.integrator ?? 'rk4',
+    substeps: options.substeps ?? 1,
   };
   if (!(p.charge >= -5 && p.charge <= 5 && p.charge !== 0)) fail(`charge must be non-zero in [-5, 5] mC, got ${p.charge}`);
   if (!(p.mass >= 0.5 && p.mass <= 20)) fail(`mass must be in [0.5, 20] g, got ${p.mass}`);
   if (!(p.field >= 0.1 && p.field <= 4)) fail(`field must be in [0.1, 4] T, got ${p.field}`);
   if (!(p.speed >= 0.1 && p.speed <= 20)) fail(`speed must be in [0.1, 20] m/s, got ${p.speed}`);
   if (!(p.electric >= -5 && p.electric <= 5)) fail(`electric must be in [-5, 5] V/m, got ${p.electric}`);
-  if (!(Number.isInteger(p.substeps) && p.substeps >= 1 && p.substeps <= 64)) fail(`substeps must be an integer in [1, 64], got ${p.substeps}`);
+  if (!(Number.isInteger(p.substeps) && p.substeps >= 1 && p.substeps <= 64))
+    fail(`substeps must be an integer in [1, 64], got ${p.substeps}`);
   return p;
 }
 
@@ -99,8 +111,14 @@ export function createOrbitMeter(): OrbitMeter {
 
 /** Forgets every measurement (after a reset, a flip or a change of parameters). */
 export function restartMeter(m: OrbitMeter): void {
-  m.period = Number.NaN; m.radius = Number.NaN; m.revolutions = 0; m.lastCrossing = Number.NaN;
-  m.minY = Infinity; m.maxY = -Infinity; m.prevVy = Number.NaN; m.prevT = Number.NaN;
+  m.period = Number.NaN;
+  m.radius = Number.NaN;
+  m.revolutions = 0;
+  m.lastCrossing = Number.NaN;
+  m.minY = Infinity;
+  m.maxY = -Infinity;
+  m.prevVy = Number.NaN;
+  m.prevT = Number.NaN;
 }
 
 /** Feeds the meter the body's state after a step: time t (s), y (m), v_y (m/s). */
@@ -115,9 +133,11 @@ export function meterSample(m: OrbitMeter, t: number, y: number, vy: number): vo
       m.revolutions++;
     }
     m.lastCrossing = tc;
-    m.minY = y; m.maxY = y;
+    m.minY = y;
+    m.maxY = y;
   }
-  m.prevVy = vy; m.prevT = t;
+  m.prevVy = vy;
+  m.prevT = t;
 }
 
 /** What `buildCyclotron` returns. */
@@ -154,7 +174,8 @@ function sim(world: PhysicsWorld, h: CyclotronHandles): { q: number; m: number; 
  */
 export function buildCyclotron(world: PhysicsWorld, options: CyclotronOptions = {}): CyclotronHandles {
   const p = resolveCyclotronOptions(options);
-  const q = p.charge * 1e-3, m = p.mass * 1e-3;
+  const q = p.charge * 1e-3,
+    m = p.mass * 1e-3;
   const omega = (q * p.field) / m; // signed: > 0 turns clockwise
   const drift = p.electric / p.field;
   // Centre = x + (v_y, -v_x)_rel / omega with v_rel = v - v_d = (speed - drift, 0): start at (0, (speed - drift) / omega).
@@ -164,7 +185,17 @@ export function buildCyclotron(world: PhysicsWorld, options: CyclotronOptions = 
   const magnetic = addMagneticField(world, { field: p.field });
   const electric = addElectricField(world, { field: [0, p.electric] });
   const h: CyclotronHandles = {
-    particle, magnetic, electric, centreX: 0, centreY: 0, baseTime: 0, exactRadius: 0, exactPeriod: 0, drift, params: p, meter: createOrbitMeter(),
+    particle,
+    magnetic,
+    electric,
+    centreX: 0,
+    centreY: 0,
+    baseTime: 0,
+    exactRadius: 0,
+    exactPeriod: 0,
+    drift,
+    params: p,
+    meter: createOrbitMeter(),
   };
   setCharge(world, particle, q);
   rebaseline(world, h);
@@ -178,12 +209,14 @@ export function buildCyclotron(world: PhysicsWorld, options: CyclotronOptions = 
  */
 export function rebaseline(world: PhysicsWorld, h: CyclotronHandles): void {
   const { q, m, b } = sim(world, h);
-  const P = world.components.Position, V = world.components.Velocity;
+  const P = world.components.Position,
+    V = world.components.Velocity;
   const e = h.particle;
   const ey = world.components.ElectricField.y[h.electric]!;
   h.drift = ey / b;
   const omega = (q * b) / m;
-  const ux = V.x[e]! - h.drift, uy = V.y[e]!;
+  const ux = V.x[e]! - h.drift,
+    uy = V.y[e]!;
   h.centreX = P.x[e]! + uy / omega;
   h.centreY = P.y[e]! - ux / omega;
   h.baseTime = world.time;

@@ -10,15 +10,43 @@
  * ?test= (test charge, uC, -10..10), ?mass= (g, 0.01..1000), ?softening= (m, 0..2),
  * ?integrator=<name>, ?substeps= (1..64), ?lines=0|1.
  */
+
+import {
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  setPosition,
+  setVelocity,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { INTEGRATOR_NAMES, createPhysicsWorld, setPosition, setVelocity, step, slotOf, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam, plural, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  BOX, MAX_CHARGES, MICRO, PRESETS, TEST_RADIUS, addCharge, buildElectric, createFieldLines, electricWorldOptions, hasRoom,
-  moveCharge, rebaseline, relaunch, removeCharge, setChargeValue, setSoftening, setTestCharge, testEnergy, traceFieldLines,
-  type ElectricHandles, type Preset,
+  addCharge,
+  BOX,
+  buildElectric,
+  createFieldLines,
+  type ElectricHandles,
+  electricWorldOptions,
+  hasRoom,
+  MAX_CHARGES,
+  MICRO,
+  moveCharge,
+  PRESETS,
+  type Preset,
+  rebaseline,
+  relaunch,
+  removeCharge,
+  setChargeValue,
+  setSoftening,
+  setTestCharge,
+  TEST_RADIUS,
+  testEnergy,
+  traceFieldLines,
 } from './scene';
 
 const params = readUrlParams(() => ({
@@ -44,8 +72,13 @@ let selected = 0;
 
 function createWorld(): PhysicsWorld {
   const options = {
-    preset: params.preset, sourceCharge: params.sourceCharge, testCharge: params.testCharge, testMass: params.testMass,
-    softening: params.softening, integrator: params.integrator, substeps: params.substeps,
+    preset: params.preset,
+    sourceCharge: params.sourceCharge,
+    testCharge: params.testCharge,
+    testMass: params.testMass,
+    softening: params.softening,
+    integrator: params.integrator,
+    substeps: params.substeps,
   };
   const world = createPhysicsWorld(electricWorldOptions(options));
   handles = buildElectric(world, options);
@@ -79,7 +112,14 @@ const game = await startPixiGame({
   ],
   keys: [
     { key: 'l', label: 'relaunch', action: () => relaunchTest() },
-    { key: 'f', label: 'field lines', action: () => { params.lines = !params.lines; panel.refresh(); } },
+    {
+      key: 'f',
+      label: 'field lines',
+      action: () => {
+        params.lines = !params.lines;
+        panel.refresh();
+      },
+    },
   ],
   // On wide windows the view reaches 9 m right of the box so the plot docked bottom right leaves the box in view.
   renderer: { view: { minX: BOX.minX, minY: BOX.minY, maxX: BOX.maxX + (plotReserve() > 0 ? 9 : 0), maxY: BOX.maxY }, rotation: false },
@@ -99,7 +139,10 @@ const plot = dock.add({
 });
 
 renderer.setColor(handles.test, 0xffd166);
-shell.onWorldChange(() => { plot.clear(); renderer.setColor(handles.test, 0xffd166); });
+shell.onWorldChange(() => {
+  plot.clear();
+  renderer.setColor(handles.test, 0xffd166);
+});
 
 /** The field or the test charge changed by hand: new exact energy, retrace the lines, restart the plot. */
 function changed(): void {
@@ -119,26 +162,76 @@ function clearCharges(): void {
   changed();
 }
 
-const panel = createPanel(params, [
-  { type: 'choice', key: 'preset', options: PRESETS, onChange: () => shell.reset() },
-  { type: 'slider', key: 'sourceCharge', label: 'new charge |q| (µC)', min: 0.1, max: 20, step: 0.1 },
-  {
-    type: 'slider', key: 'selected', label: 'selected charge q (µC)', min: -20, max: 20, step: 0.1, onChange: (v) => {
-      if (selected === 0 || v === 0) return;
-      setChargeValue(shell.world, handles, selected, v);
-      changed();
+const panel = createPanel(
+  params,
+  [
+    { type: 'choice', key: 'preset', options: PRESETS, onChange: () => shell.reset() },
+    { type: 'slider', key: 'sourceCharge', label: 'new charge |q| (µC)', min: 0.1, max: 20, step: 0.1 },
+    {
+      type: 'slider',
+      key: 'selected',
+      label: 'selected charge q (µC)',
+      min: -20,
+      max: 20,
+      step: 0.1,
+      onChange: (v) => {
+        if (selected === 0 || v === 0) return;
+        setChargeValue(shell.world, handles, selected, v);
+        changed();
+      },
     },
-  },
-  { type: 'slider', key: 'testCharge', label: 'test charge (µC)', min: -10, max: 10, step: 0.1, onChange: (v) => { setTestCharge(shell.world, handles, v); changed(); } },
-  { type: 'slider', key: 'testMass', label: 'test mass (g, resets)', min: 0.01, max: 20, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'softening', label: 'softening (m)', min: 0, max: 2, step: 0.01, onChange: (v) => { setSoftening(shell.world, handles, v); changed(); } },
-  { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
-  { type: 'slider', key: 'substeps', label: 'substeps (resets)', min: 1, max: 32, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'lines', label: 'field lines (F)' },
-  { type: 'button', key: 'relaunch', label: 'relaunch test charge (L)' },
-  { type: 'button', key: 'clear', label: 'remove all charges' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Electric field' });
+    {
+      type: 'slider',
+      key: 'testCharge',
+      label: 'test charge (µC)',
+      min: -10,
+      max: 10,
+      step: 0.1,
+      onChange: (v) => {
+        setTestCharge(shell.world, handles, v);
+        changed();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'testMass',
+      label: 'test mass (g, resets)',
+      min: 0.01,
+      max: 20,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'softening',
+      label: 'softening (m)',
+      min: 0,
+      max: 2,
+      step: 0.01,
+      onChange: (v) => {
+        setSoftening(shell.world, handles, v);
+        changed();
+      },
+    },
+    { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'substeps',
+      label: 'substeps (resets)',
+      min: 1,
+      max: 32,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'lines', label: 'field lines (F)' },
+    { type: 'button', key: 'relaunch', label: 'relaunch test charge (L)' },
+    { type: 'button', key: 'clear', label: 'remove all charges' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Electric field' },
+);
 
 function select(eid: number): void {
   selected = eid;
@@ -163,13 +256,16 @@ const signs: Text[] = Array.from({ length: MAX_CHARGES }, () => {
 let cameraVersion = -1;
 
 function drawFieldLines(): void {
-  const world = shell.world, cam = renderer.camera;
+  const world = shell.world,
+    cam = renderer.camera;
   lineLayer.clear();
   if (!params.lines) return;
   traceFieldLines(world, handles, lines);
-  const xy = lines.xy, start = lines.start;
+  const xy = lines.xy,
+    start = lines.start;
   for (let k = 0; k < lines.count; k++) {
-    const a = start[k]!, b = start[k + 1]!;
+    const a = start[k]!,
+      b = start[k + 1]!;
     if (b - a < 2) continue;
     lineLayer.moveTo(cam.toScreenX(xy[2 * a]!), cam.toScreenY(xy[2 * a + 1]!));
     for (let i = a + 1; i < b; i++) lineLayer.lineTo(cam.toScreenX(xy[2 * i]!), cam.toScreenY(xy[2 * i + 1]!));
@@ -177,28 +273,42 @@ function drawFieldLines(): void {
   lineLayer.stroke({ width: 1.2, color: 0x8ecae6, alpha: 0.55 });
   // An arrowhead a third of the way along each line, pointing along the field.
   for (let k = 0; k < lines.count; k++) {
-    const a = start[k]!, b = start[k + 1]!;
+    const a = start[k]!,
+      b = start[k + 1]!;
     if (b - a < 8) continue;
     let i = a + Math.floor((b - a) / 3);
-    const x0 = cam.toScreenX(xy[2 * i]!), y0 = cam.toScreenY(xy[2 * i + 1]!);
+    const x0 = cam.toScreenX(xy[2 * i]!),
+      y0 = cam.toScreenY(xy[2 * i + 1]!);
     i += 2;
-    const x1 = cam.toScreenX(xy[2 * i]!), y1 = cam.toScreenY(xy[2 * i + 1]!);
+    const x1 = cam.toScreenX(xy[2 * i]!),
+      y1 = cam.toScreenY(xy[2 * i + 1]!);
     // Lines traced from negative charges run against the field: point the arrow the other way.
-    const first = xy[2 * a]!, firstY = xy[2 * a + 1]!;
+    const first = xy[2 * a]!,
+      firstY = xy[2 * a + 1]!;
     let fromNegative = false;
     for (const c of handles.charges) {
       const P = world.components.Position;
-      if (Math.hypot(first - P.x[slotOf(c)]!, firstY - P.y[slotOf(c)]!) < 0.2) { fromNegative = world.components.Charge.value[slotOf(c)]! < 0; break; }
+      if (Math.hypot(first - P.x[slotOf(c)]!, firstY - P.y[slotOf(c)]!) < 0.2) {
+        fromNegative = world.components.Charge.value[slotOf(c)]! < 0;
+        break;
+      }
     }
-    let dx = x1 - x0, dy = y1 - y0;
+    let dx = x1 - x0,
+      dy = y1 - y0;
     const n = Math.hypot(dx, dy) || 1;
-    dx /= n; dy /= n;
-    if (fromNegative) { dx = -dx; dy = -dy; }
+    dx /= n;
+    dy /= n;
+    if (fromNegative) {
+      dx = -dx;
+      dy = -dy;
+    }
     const s = 6;
-    lineLayer.moveTo(x1 + dx * s, y1 + dy * s)
+    lineLayer
+      .moveTo(x1 + dx * s, y1 + dy * s)
       .lineTo(x1 - dx * s - dy * s * 0.6, y1 - dy * s + dx * s * 0.6)
       .lineTo(x1 - dx * s + dy * s * 0.6, y1 - dy * s - dx * s * 0.6)
-      .closePath().fill({ color: 0x8ecae6, alpha: 0.7 });
+      .closePath()
+      .fill({ color: 0x8ecae6, alpha: 0.7 });
   }
 }
 
@@ -207,11 +317,15 @@ let frame = 0;
 
 let linesShown = params.lines;
 function draw(): void {
-  const world = shell.world, cam = renderer.camera;
+  const world = shell.world,
+    cam = renderer.camera;
   if (++frame % 10 === 1) {
-    const e = testEnergy(world, handles), e0 = handles.initialEnergy;
-    status.set(`test charge energy ${(e * 1e3).toFixed(4)} mJ · exact ${(e0 * 1e3).toFixed(4)} mJ · ` +
-      `relative drift ${(Math.abs(e - e0) / Math.abs(e0 || 1)).toExponential(1)} · ${params.integrator}, ${plural(params.substeps, 'substep', 'substeps')}`);
+    const e = testEnergy(world, handles),
+      e0 = handles.initialEnergy;
+    status.set(
+      `test charge energy ${(e * 1e3).toFixed(4)} mJ · exact ${(e0 * 1e3).toFixed(4)} mJ · ` +
+        `relative drift ${(Math.abs(e - e0) / Math.abs(e0 || 1)).toExponential(1)} · ${params.integrator}, ${plural(params.substeps, 'substep', 'substeps')}`,
+    );
   }
   if (fieldDirty || cam.version !== cameraVersion || linesShown !== params.lines) {
     drawFieldLines();
@@ -220,12 +334,15 @@ function draw(): void {
     linesShown = params.lines;
   }
   chargeLayer.clear();
-  const P = world.components.Position, Q = world.components.Charge.value;
+  const P = world.components.Position,
+    Q = world.components.Charge.value;
   const r = Math.max(8, cam.toScreenLength(0.22));
   const charges = handles.charges;
   for (let i = 0; i < charges.length; i++) {
     const c = charges[i]!;
-    const x = cam.toScreenX(P.x[slotOf(c)]!), y = cam.toScreenY(P.y[slotOf(c)]!), q = Q[slotOf(c)]! / MICRO;
+    const x = cam.toScreenX(P.x[slotOf(c)]!),
+      y = cam.toScreenY(P.y[slotOf(c)]!),
+      q = Q[slotOf(c)]! / MICRO;
     const rr = r * (0.8 + 0.2 * Math.min(3, Math.sqrt(Math.abs(q))));
     chargeLayer.circle(x, y, rr).fill({ color: q > 0 ? 0xe63946 : 0x3a86ff });
     if (c === selected) chargeLayer.circle(x, y, rr + 4).stroke({ width: 2, color: 0xffd166 });
@@ -243,18 +360,27 @@ function draw(): void {
 const canvas = app.canvas;
 const pointer = { x: 0, y: 0 };
 let dragging = 0; // entity being dragged (a fixed charge or the test charge), 0 none
-let pressed = false, moved = false, shiftDown = false;
-let pressX = 0, pressY = 0;
+let pressed = false,
+  moved = false,
+  shiftDown = false;
+let pressX = 0,
+  pressY = 0;
 
 /** The fixed charge (or the test charge) within 0.35 m of screen point (sx, sy), or 0. */
 function pick(sx: number, sy: number): number {
-  const cam = renderer.camera, P = shell.world.components.Position;
-  const x = cam.toWorldX(sx), y = cam.toWorldY(sy);
+  const cam = renderer.camera,
+    P = shell.world.components.Position;
+  const x = cam.toWorldX(sx),
+    y = cam.toWorldY(sy);
   const reach = Math.max(0.35, cam.toWorldX(sx + 12) - x);
-  let best = 0, bestD = reach;
+  let best = 0,
+    bestD = reach;
   for (const e of [...handles.charges, handles.test]) {
     const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
-    if (d < bestD) { best = e; bestD = d; }
+    if (d < bestD) {
+      best = e;
+      bestD = d;
+    }
   }
   return best;
 }
@@ -273,8 +399,11 @@ canvas.addEventListener('pointerdown', (event) => {
   }
   if (event.button !== 0) return;
   canvas.setPointerCapture(event.pointerId);
-  pressed = true; moved = false; shiftDown = event.shiftKey;
-  pressX = pointer.x; pressY = pointer.y;
+  pressed = true;
+  moved = false;
+  shiftDown = event.shiftKey;
+  pressX = pointer.x;
+  pressY = pointer.y;
   dragging = hit;
   if (hit !== 0 && hit !== handles.test) select(hit);
 });
@@ -284,8 +413,10 @@ canvas.addEventListener('pointermove', (event) => {
   pointerOnCanvas(canvas, event, pointer);
   if (Math.hypot(pointer.x - pressX, pointer.y - pressY) > 5) moved = true;
   if (!moved || dragging === 0) return;
-  const cam = renderer.camera, w = shell.world;
-  const x = cam.toWorldX(pointer.x), y = cam.toWorldY(pointer.y);
+  const cam = renderer.camera,
+    w = shell.world;
+  const x = cam.toWorldX(pointer.x),
+    y = cam.toWorldY(pointer.y);
   if (dragging === handles.test) {
     const r = TEST_RADIUS;
     setPosition(w, dragging, [Math.min(BOX.maxX - r, Math.max(BOX.minX + r, x)), Math.min(BOX.maxY - r, Math.max(BOX.minY + r, y))]);
@@ -302,7 +433,8 @@ canvas.addEventListener('pointerup', (event) => {
   pointerOnCanvas(canvas, event, pointer);
   if (!moved && dragging === 0 && hasRoom(shell.world, handles)) {
     const cam = renderer.camera;
-    const x = cam.toWorldX(pointer.x), y = cam.toWorldY(pointer.y);
+    const x = cam.toWorldX(pointer.x),
+      y = cam.toWorldY(pointer.y);
     if (x >= BOX.minX && x <= BOX.maxX && y >= BOX.minY && y <= BOX.maxY) {
       const e = addCharge(shell.world, handles, x, y, (shiftDown || event.shiftKey ? -1 : 1) * params.sourceCharge);
       select(e);
@@ -311,7 +443,10 @@ canvas.addEventListener('pointerup', (event) => {
   }
   dragging = 0;
 });
-canvas.addEventListener('pointercancel', () => { pressed = false; dragging = 0; });
+canvas.addEventListener('pointercancel', () => {
+  pressed = false;
+  dragging = 0;
+});
 
 // ---- Test and console hooks on window.game -------------------------------------------------------------
 
@@ -323,11 +458,16 @@ shell.expose({
   handles: (): ElectricHandles => handles,
   /** Fixed charges as [x m, y m, q uC] triples. */
   charges: (): [number, number, number][] => {
-    const P = shell.world.components.Position, Q = shell.world.components.Charge.value;
+    const P = shell.world.components.Position,
+      Q = shell.world.components.Charge.value;
     return handles.charges.map((e) => [P.x[slotOf(e)]!, P.y[slotOf(e)]!, Q[slotOf(e)]! / MICRO]);
   },
   /** Places a fixed charge of q uC at (x, y) m; returns its id. */
-  place: (x: number, y: number, q: number): number => { const e = addCharge(shell.world, handles, x, y, q); changed(); return e; },
+  place: (x: number, y: number, q: number): number => {
+    const e = addCharge(shell.world, handles, x, y, q);
+    changed();
+    return e;
+  },
   /** The test charge's energy now and its exact value, J. */
   energy: (): { measured: number; exact: number } => ({ measured: testEnergy(shell.world, handles), exact: handles.initialEnergy }),
   /** Field lines traced in the last redraw. */

@@ -18,8 +18,19 @@
  * and softening eps, read from the world), with classical RK4 steps of fixed arc length.
  */
 import {
-  addBody, electricPotentialEnergy, kineticEnergy, removeBody, setBoundary, setCharge, setElectrostatics,
-  setPosition, setVelocity, slotOf, type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  electricPotentialEnergy,
+  type IntegratorName,
+  kineticEnergy,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  removeBody,
+  setBoundary,
+  setCharge,
+  setElectrostatics,
+  setPosition,
+  setVelocity,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** Inner corners of the box, m. */
@@ -61,7 +72,17 @@ export interface ElectricOptions {
 /** Resolved options. */
 export type ElectricParams = Required<ElectricOptions>;
 
-const KNOWN = ['preset', 'sourceCharge', 'testCharge', 'testMass', 'softening', 'integrator', 'substeps', 'launchPosition', 'launchVelocity'];
+const KNOWN = [
+  'preset',
+  'sourceCharge',
+  'testCharge',
+  'testMass',
+  'softening',
+  'integrator',
+  'substeps',
+  'launchPosition',
+  'launchVelocity',
+];
 
 function fail(message: string): never {
   throw new RangeError(`lab-electric-field: ${message}`);
@@ -76,18 +97,29 @@ export function resolveElectricOptions(options: ElectricOptions = {}): ElectricP
     if (!KNOWN.includes(k)) throw new TypeError(`lab-electric-field: unknown option ${JSON.stringify(k)}; known: ${KNOWN.join(', ')}`);
   }
   const p: ElectricParams = {
-    preset: options.preset ?? 'dipole', sourceCharge: options.sourceCharge ?? 2, testCharge: options.testCharge ?? 0.5,
-    testMass: options.testMass ?? 1, softening: options.softening ?? 0.2, integrator: options.integrator ?? 'velocity-verlet',
-    substeps: options.substeps ?? 8, launchPosition: options.launchPosition ?? [0, 2.5], launchVelocity: options.launchVelocity ?? [1.2, 0],
+    preset: options.preset ?? 'dipole',
+    sourceCharge: options.sourceCharge ?? 2,
+    testCharge: options.testCharge ?? 0.5,
+    testMass: options.testMass ?? 1,
+    softening: options.softening ?? 0.2,
+    integrator: options.integrator ?? 'velocity-verlet',
+    substeps: options.substeps ?? 8,
+    launchPosition: options.launchPosition ?? [0, 2.5],
+    launchVelocity: options.launchVelocity ?? [1.2, 0],
   };
   if (!PRESETS.includes(p.preset)) fail(`preset must be one of ${PRESETS.join(', ')}, got ${JSON.stringify(p.preset)}`);
   if (!(p.sourceCharge > 0 && p.sourceCharge <= 20)) fail(`sourceCharge must be in (0, 20] uC, got ${p.sourceCharge}`);
   if (!(p.testCharge >= -10 && p.testCharge <= 10)) fail(`testCharge must be in [-10, 10] uC, got ${p.testCharge}`);
   if (!(p.testMass >= 0.01 && p.testMass <= 1000)) fail(`testMass must be in [0.01, 1000] g, got ${p.testMass}`);
   if (!(p.softening >= 0 && p.softening <= 2)) fail(`softening must be in [0, 2] m, got ${p.softening}`);
-  if (!(Number.isInteger(p.substeps) && p.substeps >= 1 && p.substeps <= 64)) fail(`substeps must be an integer in [1, 64], got ${p.substeps}`);
-  for (const [name, v] of [['launchPosition', p.launchPosition], ['launchVelocity', p.launchVelocity]] as const) {
-    if (!(Array.isArray(v) && v.length === 2 && v.every(Number.isFinite))) fail(`${name} must be two finite numbers, got ${JSON.stringify(v)}`);
+  if (!(Number.isInteger(p.substeps) && p.substeps >= 1 && p.substeps <= 64))
+    fail(`substeps must be an integer in [1, 64], got ${p.substeps}`);
+  for (const [name, v] of [
+    ['launchPosition', p.launchPosition],
+    ['launchVelocity', p.launchVelocity],
+  ] as const) {
+    if (!(Array.isArray(v) && v.length === 2 && v.every(Number.isFinite)))
+      fail(`${name} must be two finite numbers, got ${JSON.stringify(v)}`);
   }
   return p;
 }
@@ -95,7 +127,14 @@ export function resolveElectricOptions(options: ElectricOptions = {}): ElectricP
 /** World options: 2D, no gravity, restitution threshold 0 (elastic walls at every speed), the scheme and substeps. */
 export function electricWorldOptions(options: ElectricOptions = {}): PhysicsWorldOptions {
   const p = resolveElectricOptions(options);
-  return { dimensions: 2, capacity: MAX_CHARGES + 8, gravity: [0, 0], integrator: p.integrator, substeps: p.substeps, restitutionThreshold: 0 };
+  return {
+    dimensions: 2,
+    capacity: MAX_CHARGES + 8,
+    gravity: [0, 0],
+    integrator: p.integrator,
+    substeps: p.substeps,
+    restitutionThreshold: 0,
+  };
 }
 
 /** What `buildElectric` returns. */
@@ -114,11 +153,27 @@ export interface ElectricHandles {
 /** Preset charge layouts: [x m, y m, sign]. */
 function presetLayout(preset: Preset): [number, number, number][] {
   switch (preset) {
-    case 'dipole': return [[-3, 0, 1], [3, 0, -1]];
-    case 'like pair': return [[-3, 0, 1], [3, 0, 1]];
-    case 'quadrupole': return [[-2.5, -2, 1], [2.5, -2, -1], [2.5, 2, 1], [-2.5, 2, -1]];
-    case 'single': return [[0, 0, -1]];
-    case 'none': return [];
+    case 'dipole':
+      return [
+        [-3, 0, 1],
+        [3, 0, -1],
+      ];
+    case 'like pair':
+      return [
+        [-3, 0, 1],
+        [3, 0, 1],
+      ];
+    case 'quadrupole':
+      return [
+        [-2.5, -2, 1],
+        [2.5, -2, -1],
+        [2.5, 2, 1],
+        [-2.5, 2, -1],
+      ];
+    case 'single':
+      return [[0, 0, -1]];
+    case 'none':
+      return [];
   }
 }
 
@@ -133,7 +188,13 @@ export function buildElectric(world: PhysicsWorld, options: ElectricOptions = {}
   setBoundary(world, { min: [BOX.minX, BOX.minY], max: [BOX.maxX, BOX.maxY], restitution: 1, friction: 0 });
   setElectrostatics(world, { softening: p.softening });
   const test = addBody(world, {
-    position: p.launchPosition, velocity: p.launchVelocity, radius: TEST_RADIUS, mass: p.testMass * 1e-3, restitution: 1, friction: 0, rotates: false,
+    position: p.launchPosition,
+    velocity: p.launchVelocity,
+    radius: TEST_RADIUS,
+    mass: p.testMass * 1e-3,
+    restitution: 1,
+    friction: 0,
+    rotates: false,
   });
   setCharge(world, test, p.testCharge * MICRO);
   const h: ElectricHandles = { charges: [], test, sourceEnergy: 0, initialEnergy: 0, params: p };
@@ -149,7 +210,8 @@ export function buildElectric(world: PhysicsWorld, options: ElectricOptions = {}
  */
 export function addCharge(world: PhysicsWorld, h: ElectricHandles, x: number, y: number, microcoulombs: number): number {
   if (!Number.isFinite(x) || !Number.isFinite(y)) fail(`addCharge: x and y must be finite, got ${x}, ${y}`);
-  if (!(microcoulombs !== 0 && Math.abs(microcoulombs) <= 20)) fail(`addCharge: charge must be non-zero with |q| <= 20 uC, got ${microcoulombs}`);
+  if (!(microcoulombs !== 0 && Math.abs(microcoulombs) <= 20))
+    fail(`addCharge: charge must be non-zero with |q| <= 20 uC, got ${microcoulombs}`);
   if (h.charges.length >= MAX_CHARGES) fail(`addCharge: at most ${MAX_CHARGES} charges`);
   const e = addBody(world, { position: [clampX(x), clampY(y)], static: true });
   setCharge(world, e, microcoulombs * MICRO);
@@ -157,8 +219,12 @@ export function addCharge(world: PhysicsWorld, h: ElectricHandles, x: number, y:
   return e;
 }
 
-function clampX(x: number): number { return Math.min(BOX.maxX, Math.max(BOX.minX, x)); }
-function clampY(y: number): number { return Math.min(BOX.maxY, Math.max(BOX.minY, y)); }
+function clampX(x: number): number {
+  return Math.min(BOX.maxX, Math.max(BOX.minX, x));
+}
+function clampY(y: number): number {
+  return Math.min(BOX.maxY, Math.max(BOX.minY, y));
+}
 
 /** Moves fixed charge `eid` to (x, y) m (clamped into the box). Call `rebaseline` afterwards. @throws RangeError if it is not a fixed charge. */
 export function moveCharge(world: PhysicsWorld, h: ElectricHandles, eid: number, x: number, y: number): void {
@@ -177,7 +243,8 @@ export function removeCharge(world: PhysicsWorld, h: ElectricHandles, eid: numbe
 /** Sets fixed charge `eid` to `microcoulombs` uC (non-zero, |q| <= 20). Call `rebaseline` afterwards. @throws RangeError. */
 export function setChargeValue(world: PhysicsWorld, h: ElectricHandles, eid: number, microcoulombs: number): void {
   if (!h.charges.includes(eid)) fail(`setChargeValue: ${eid} is not a fixed charge`);
-  if (!(microcoulombs !== 0 && Math.abs(microcoulombs) <= 20)) fail(`setChargeValue: charge must be non-zero with |q| <= 20 uC, got ${microcoulombs}`);
+  if (!(microcoulombs !== 0 && Math.abs(microcoulombs) <= 20))
+    fail(`setChargeValue: charge must be non-zero with |q| <= 20 uC, got ${microcoulombs}`);
   setCharge(world, eid, microcoulombs * MICRO);
 }
 
@@ -253,22 +320,29 @@ export function createFieldLines(maxSteps = 700): FieldLines {
   return { xy: new Float64Array(lines * (maxSteps + 1) * 2), start: new Int32Array(lines + 1), count: 0 };
 }
 
-const ex = new Float64Array(1), ey = new Float64Array(1);
+const ex = new Float64Array(1),
+  ey = new Float64Array(1);
 
 /** The softened Coulomb field of the fixed charges at (x, y), V/m, into ex[0], ey[0] (same law and constants as the physics). */
 function fieldAt(world: PhysicsWorld, charges: readonly number[], x: number, y: number): void {
-  const P = world.components.Position, q = world.components.Charge.value;
-  const K = world.laws.coulombConstant, eps2 = world.laws.electricSoftening ** 2;
-  let sx = 0, sy = 0;
+  const P = world.components.Position,
+    q = world.components.Charge.value;
+  const K = world.laws.coulombConstant,
+    eps2 = world.laws.electricSoftening ** 2;
+  let sx = 0,
+    sy = 0;
   for (let i = 0; i < charges.length; i++) {
     const c = charges[i]!;
-    const dx = x - P.x[slotOf(c)]!, dy = y - P.y[slotOf(c)]!;
+    const dx = x - P.x[slotOf(c)]!,
+      dy = y - P.y[slotOf(c)]!;
     const r2 = dx * dx + dy * dy + eps2;
     if (r2 === 0) continue;
     const k = (K * q[slotOf(c)]!) / (r2 * Math.sqrt(r2));
-    sx += k * dx; sy += k * dy;
+    sx += k * dx;
+    sy += k * dy;
   }
-  ex[0] = sx; ey[0] = sy;
+  ex[0] = sx;
+  ey[0] = sy;
 }
 
 /**
@@ -279,12 +353,17 @@ function fieldAt(world: PhysicsWorld, charges: readonly number[], x: number, y: 
  * `stepLength`. @returns `out`.
  */
 export function traceFieldLines(world: PhysicsWorld, h: ElectricHandles, out: FieldLines, options: TraceOptions = {}): FieldLines {
-  const perUC = options.linesPerMicrocoulomb ?? 8, ds = options.stepLength ?? 0.05, radius = options.radius ?? 0.18;
+  const perUC = options.linesPerMicrocoulomb ?? 8,
+    ds = options.stepLength ?? 0.05,
+    radius = options.radius ?? 0.18;
   const maxSteps = Math.min(options.maxSteps ?? 700, out.xy.length / 2 / (MAX_CHARGES * 32) - 1);
-  const P = world.components.Position, Q = world.components.Charge.value;
+  const P = world.components.Position,
+    Q = world.components.Charge.value;
   const charges = h.charges;
-  const xy = out.xy, start = out.start;
-  let line = 0, point = 0;
+  const xy = out.xy,
+    start = out.start;
+  let line = 0,
+    point = 0;
   const margin = 0.05;
   // Direction of the (normalised) field at (x, y) times sign, into dir[0], dir[1]; false where E = 0.
   const dir = [0, 0];
@@ -292,7 +371,8 @@ export function traceFieldLines(world: PhysicsWorld, h: ElectricHandles, out: Fi
     fieldAt(world, charges, x, y);
     const n = Math.hypot(ex[0]!, ey[0]!);
     if (!(n > 0)) return false;
-    dir[0] = (sign * ex[0]!) / n; dir[1] = (sign * ey[0]!) / n;
+    dir[0] = (sign * ex[0]!) / n;
+    dir[1] = (sign * ey[0]!) / n;
     return true;
   };
   for (const pass of [1, -1]) {
@@ -303,32 +383,50 @@ export function traceFieldLines(world: PhysicsWorld, h: ElectricHandles, out: Fi
       for (let k = 0; k < n; k++) {
         if (line >= start.length - 1) break;
         const a = (2 * Math.PI * (k + 0.5)) / n;
-        let x = P.x[slotOf(c)]! + radius * Math.cos(a), y = P.y[slotOf(c)]! + radius * Math.sin(a);
+        let x = P.x[slotOf(c)]! + radius * Math.cos(a),
+          y = P.y[slotOf(c)]! + radius * Math.sin(a);
         const first = point;
         start[line] = first;
-        xy[2 * point] = x; xy[2 * point + 1] = y; point++;
+        xy[2 * point] = x;
+        xy[2 * point + 1] = y;
+        point++;
         let endedOnPositive = false;
         for (let s = 0; s < maxSteps; s++) {
           if (!direction(x, y, pass)) break;
-          const k1x = dir[0]!, k1y = dir[1]!;
+          const k1x = dir[0]!,
+            k1y = dir[1]!;
           if (!direction(x + 0.5 * ds * k1x, y + 0.5 * ds * k1y, pass)) break;
-          const k2x = dir[0]!, k2y = dir[1]!;
+          const k2x = dir[0]!,
+            k2y = dir[1]!;
           if (!direction(x + 0.5 * ds * k2x, y + 0.5 * ds * k2y, pass)) break;
-          const k3x = dir[0]!, k3y = dir[1]!;
+          const k3x = dir[0]!,
+            k3y = dir[1]!;
           if (!direction(x + ds * k3x, y + ds * k3y, pass)) break;
           x += (ds / 6) * (k1x + 2 * k2x + 2 * k3x + dir[0]!);
           y += (ds / 6) * (k1y + 2 * k2y + 2 * k3y + dir[1]!);
-          xy[2 * point] = x; xy[2 * point + 1] = y; point++;
+          xy[2 * point] = x;
+          xy[2 * point + 1] = y;
+          point++;
           if (x < BOX.minX - margin || x > BOX.maxX + margin || y < BOX.minY - margin || y > BOX.maxY + margin) break;
           let hit = 0;
           for (const o of charges) {
             if (o === c) continue;
-            const dx = x - P.x[slotOf(o)]!, dy = y - P.y[slotOf(o)]!;
-            if (dx * dx + dy * dy < radius * radius) { hit = o; break; }
+            const dx = x - P.x[slotOf(o)]!,
+              dy = y - P.y[slotOf(o)]!;
+            if (dx * dx + dy * dy < radius * radius) {
+              hit = o;
+              break;
+            }
           }
-          if (hit !== 0) { endedOnPositive = Q[hit]! > 0; break; }
+          if (hit !== 0) {
+            endedOnPositive = Q[hit]! > 0;
+            break;
+          }
         }
-        if (pass === -1 && endedOnPositive) { point = first; continue; }
+        if (pass === -1 && endedOnPositive) {
+          point = first;
+          continue;
+        }
         line++;
       }
     }

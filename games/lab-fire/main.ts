@@ -7,30 +7,47 @@
  * Input: click or drag moves the fire, P pause, N step, R reset.
  * URL: ?intensity (0-3), ?wind (-6..6 m/s), ?smoke=0|1, ?seed.
  */
-import { Graphics } from 'pixi.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  FIRE_LIFETIMES, FIRE_RATES, MAX_INTENSITY, createFire, moveFire, setFireIntensity, setFireSmoke, setFireWind, stepFire, type Fire,
+  createFire,
+  FIRE_LIFETIMES,
+  FIRE_RATES,
+  type Fire,
+  MAX_INTENSITY,
+  moveFire,
+  setFireIntensity,
+  setFireSmoke,
+  setFireWind,
+  stepFire,
 } from './scene';
 
 const GROUND = 0;
 /** The logs under the fire: offset from the fire (m, m) and tilt (fraction of their thickness). */
-const LOGS: ReadonlyArray<readonly [number, number, number]> = [[-0.55, 0.12, 0.25], [0.55, 0.12, -0.25], [0, 0.2, 0]];
+const LOGS: ReadonlyArray<readonly [number, number, number]> = [
+  [-0.55, 0.12, 0.25],
+  [0.55, 0.12, -0.25],
+  [0, 0.2, 0],
+];
 const VIEW = { minX: -4, minY: -0.6, maxX: 4, maxY: 4.4 };
 
 const USAGE = `Accepted: intensity 0-${MAX_INTENSITY}; wind -6..6 m/s; smoke 0|1; seed (integer).`;
 const search = new URLSearchParams(location.search);
-const url = readUrlParams(() => ({
-  intensity: numberParam('intensity', { default: 1, min: 0, max: MAX_INTENSITY }),
-  wind: numberParam('wind', { default: 0, min: -6, max: 6 }),
-  smoke: search.has('smoke') ? flagParam('smoke') : true,
-  seed: seedParam(),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    intensity: numberParam('intensity', { default: 1, min: 0, max: MAX_INTENSITY }),
+    wind: numberParam('wind', { default: 0, min: -6, max: 6 }),
+    smoke: search.has('smoke') ? flagParam('smoke') : true,
+    seed: seedParam(),
+  }),
+  USAGE,
+);
 const params = { ...url, trails: true, additive: true, reset: () => shell.reset() };
 
 let fire: Fire;
@@ -49,9 +66,17 @@ const game = await startPixiGame({
   bodies: (world) => countParticles(world),
   controls: [{ keys: 'Click', action: 'move the fire (or drag it)' }],
   renderer: {
-    view: VIEW, padding: 0,
+    view: VIEW,
+    padding: 0,
     // The flames and their glow: additive, so overlapping particles add up towards white.
-    particles: { blend: 'add', minPixelSize: 2, include: (w, e) => { const em = emitterOf(w, e); return em === fire.flames || em === fire.glow; } },
+    particles: {
+      blend: 'add',
+      minPixelSize: 2,
+      include: (w, e) => {
+        const em = emitterOf(w, e);
+        return em === fire.flames || em === fire.glow;
+      },
+    },
   },
   app: { background: 0x07060a },
   onFrame: (alpha, world) => drawFrame(alpha, world),
@@ -61,21 +86,30 @@ const flameLayer = renderer.particles!;
 
 const SPARK_TRAILS = { duration: 0.12, width: 0.7, alpha: 0.7 };
 const smokeLayer = new ParticleLayer({ blend: 'normal', minPixelSize: 2, include: (w, e) => emitterOf(w, e) === fire.smoke });
-const sparkLayer = new ParticleLayer({ blend: 'add', minPixelSize: 1.5, trails: SPARK_TRAILS, include: (w, e) => emitterOf(w, e) === fire.sparks });
+const sparkLayer = new ParticleLayer({
+  blend: 'add',
+  minPixelSize: 1.5,
+  trails: SPARK_TRAILS,
+  include: (w, e) => emitterOf(w, e) === fire.sparks,
+});
 const scenery = new Graphics({ label: 'ground-and-logs' });
 // Bottom to top: scenery, smoke, (renderer: walls, trails, flames, balls, debug), sparks.
 renderer.root.addChildAt(scenery, 0);
 renderer.root.addChildAt(smokeLayer.container, 1);
 renderer.root.addChild(sparkLayer.container);
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'intensity', min: 0, max: MAX_INTENSITY, step: 0.05, onChange: (v) => setFireIntensity(fire, v) },
-  { type: 'slider', key: 'wind', label: 'wind (m/s)', min: -6, max: 6, step: 0.1, onChange: (v) => setFireWind(fire, v) },
-  { type: 'checkbox', key: 'smoke', onChange: (v) => setFireSmoke(fire, v === true) },
-  { type: 'checkbox', key: 'trails', label: 'spark trails', onChange: (v) => sparkLayer.setTrails(v === true ? SPARK_TRAILS : false) },
-  { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => flameLayer.setBlend(v === true ? 'add' : 'normal') },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Fire' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'intensity', min: 0, max: MAX_INTENSITY, step: 0.05, onChange: (v) => setFireIntensity(fire, v) },
+    { type: 'slider', key: 'wind', label: 'wind (m/s)', min: -6, max: 6, step: 0.1, onChange: (v) => setFireWind(fire, v) },
+    { type: 'checkbox', key: 'smoke', onChange: (v) => setFireSmoke(fire, v === true) },
+    { type: 'checkbox', key: 'trails', label: 'spark trails', onChange: (v) => sparkLayer.setTrails(v === true ? SPARK_TRAILS : false) },
+    { type: 'checkbox', key: 'additive', label: 'additive blending', onChange: (v) => flameLayer.setBlend(v === true ? 'add' : 'normal') },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Fire' },
+);
 
 const info = createReadout(shell.hud.readout, ['particles alive', 'flames + glow', 'sparks', 'smoke', 'flame rate', 'steady state']);
 
@@ -89,20 +123,30 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // Three logs under the fire.
   const [x, y] = fire.at;
   for (const [dx, dy, tilt] of LOGS) {
-    const lx = cam.toScreenX(x + dx), ly = cam.toScreenY(y - 0.25 + dy);
-    const w = cam.toScreenLength(1.1), h = cam.toScreenLength(0.18);
-    scenery.moveTo(lx - w / 2, ly + tilt * h).lineTo(lx + w / 2, ly - tilt * h).stroke({ width: h, color: 0x4a2d1a, cap: 'round' });
+    const lx = cam.toScreenX(x + dx),
+      ly = cam.toScreenY(y - 0.25 + dy);
+    const w = cam.toScreenLength(1.1),
+      h = cam.toScreenLength(0.18);
+    scenery
+      .moveTo(lx - w / 2, ly + tilt * h)
+      .lineTo(lx + w / 2, ly - tilt * h)
+      .stroke({ width: h, color: 0x4a2d1a, cap: 'round' });
   }
   smokeLayer.render(world, cam, alpha);
   sparkLayer.render(world, cam, alpha);
   if (frame++ % 6 === 0) {
-    const s = fire.settings.intensity, L = FIRE_LIFETIMES, R = FIRE_RATES;
+    const s = fire.settings.intensity,
+      L = FIRE_LIFETIMES,
+      R = FIRE_RATES;
     info.set(0, String(countParticles(world)));
     info.set(1, String(countParticles(world, fire.flames) + countParticles(world, fire.glow)));
     info.set(2, String(countParticles(world, fire.sparks)));
     info.set(3, String(countParticles(world, fire.smoke)));
     info.set(4, `${fmt(fire.flameRate)} /s (flicker)`);
-    info.set(5, `≈ ${Math.round(s * (R.flames * (L.flames + L.glow) + R.sparks * L.sparks + (fire.settings.smoke ? R.smoke * L.smoke : 0)))}`);
+    info.set(
+      5,
+      `≈ ${Math.round(s * (R.flames * (L.flames + L.glow) + R.sparks * L.sparks + (fire.settings.smoke ? R.smoke * L.smoke : 0)))}`,
+    );
   }
 }
 

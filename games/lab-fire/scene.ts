@@ -19,7 +19,15 @@
  * (0.35 s) that sways the tongues. `intensity` scales every rate.
  */
 import {
-  addEmitter, createPhysicsWorld, setEmitterEnabled, setEmitterRate, setPosition, setWind, step, valueNoise, type PhysicsWorld,
+  addEmitter,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  setEmitterEnabled,
+  setEmitterRate,
+  setPosition,
+  setWind,
+  step,
+  valueNoise,
 } from '@bitphysics/physics';
 
 /** Base rates at intensity 1, particles per second. */
@@ -57,7 +65,8 @@ export interface Fire {
 }
 
 function check(where: string, name: string, v: number, min: number, max: number): void {
-  if (typeof v !== 'number' || !(v >= min && v <= max)) throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
+  if (typeof v !== 'number' || !(v >= min && v <= max))
+    throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
 }
 
 /** Builds the world and the four emitters. @throws RangeError on a setting out of range. */
@@ -66,29 +75,96 @@ export function createFire(options: Partial<FireSettings> = {}): Fire {
   check('createFire', 'intensity', settings.intensity, 0, MAX_INTENSITY);
   check('createFire', 'wind', settings.wind, -6, 6);
   // Room for the most particles alive at once: the largest rates (flicker peak 1.3) times the longest lifetimes.
-  const R = FIRE_RATES, k = MAX_INTENSITY * 1.3;
+  const R = FIRE_RATES,
+    k = MAX_INTENSITY * 1.3;
   const capacity = Math.ceil(k * (R.flames * (0.5 + 0.7) + R.sparks * 1.8 + R.smoke * 3.5)) + 64;
   const world = createPhysicsWorld({ dimensions: 2, capacity, gravity: [0, -9.81], seed: settings.seed });
   const at: [number, number] = [0, 0.25];
   const glow = addEmitter(world, {
-    position: at, speed: [0, 0.3], lifetime: [0.3, 0.7], inheritVelocity: 1, policy: 'recycle-oldest',
-    particle: { mass: 0.001, linearDrag: 0.004, gravityScale: -0.8, colorStart: 0xff4a12, colorEnd: 0x2a0000, sizeStart: 0.34, sizeEnd: 0.5, alphaStart: 0.6, alphaEnd: 0 },
+    position: at,
+    speed: [0, 0.3],
+    lifetime: [0.3, 0.7],
+    inheritVelocity: 1,
+    policy: 'recycle-oldest',
+    particle: {
+      mass: 0.001,
+      linearDrag: 0.004,
+      gravityScale: -0.8,
+      colorStart: 0xff4a12,
+      colorEnd: 0x2a0000,
+      sizeStart: 0.34,
+      sizeEnd: 0.5,
+      alphaStart: 0.6,
+      alphaEnd: 0,
+    },
   });
   const flames = addEmitter(world, {
-    position: at, rate: R.flames * settings.intensity, shape: 'line', size: 0.45, direction: [0, 1], spread: 0.3,
-    speed: [0.3, 1.2], lifetime: [0.25, 0.5], policy: 'recycle-oldest',
-    particle: { mass: 0.001, linearDrag: 0.004, gravityScale: -1.2, colorStart: 0xffe9a8, colorEnd: 0xff7a1c, sizeStart: 0.4, sizeEnd: 0.3, alphaStart: 0.5, alphaEnd: 0.45 },
+    position: at,
+    rate: R.flames * settings.intensity,
+    shape: 'line',
+    size: 0.45,
+    direction: [0, 1],
+    spread: 0.3,
+    speed: [0.3, 1.2],
+    lifetime: [0.25, 0.5],
+    policy: 'recycle-oldest',
+    particle: {
+      mass: 0.001,
+      linearDrag: 0.004,
+      gravityScale: -1.2,
+      colorStart: 0xffe9a8,
+      colorEnd: 0xff7a1c,
+      sizeStart: 0.4,
+      sizeEnd: 0.3,
+      alphaStart: 0.5,
+      alphaEnd: 0.45,
+    },
     onDeath: { emitter: glow, count: 1, maxGeneration: 1 },
   });
   const sparks = addEmitter(world, {
-    position: at, rate: R.sparks * settings.intensity, shape: 'line', size: 0.3, direction: [0, 1], spread: 0.5,
-    speed: [2, 5], lifetime: [0.8, 1.8], policy: 'recycle-oldest',
-    particle: { mass: 1e-4, linearDrag: 2e-4, gravityScale: 0.6, colorStart: 0xfff0a0, colorEnd: 0xff3000, sizeStart: 0.08, sizeEnd: 0.035, alphaStart: 1, alphaEnd: 0 },
+    position: at,
+    rate: R.sparks * settings.intensity,
+    shape: 'line',
+    size: 0.3,
+    direction: [0, 1],
+    spread: 0.5,
+    speed: [2, 5],
+    lifetime: [0.8, 1.8],
+    policy: 'recycle-oldest',
+    particle: {
+      mass: 1e-4,
+      linearDrag: 2e-4,
+      gravityScale: 0.6,
+      colorStart: 0xfff0a0,
+      colorEnd: 0xff3000,
+      sizeStart: 0.08,
+      sizeEnd: 0.035,
+      alphaStart: 1,
+      alphaEnd: 0,
+    },
   });
   const smoke = addEmitter(world, {
-    position: [at[0], at[1] + 1.3], rate: R.smoke * settings.intensity, shape: 'line', size: 0.3, direction: [0, 1], spread: 0.3,
-    speed: [0.3, 0.8], lifetime: [2, 3.5], enabled: settings.smoke, policy: 'recycle-oldest',
-    particle: { mass: 0.01, linearDrag: 0.02, gravityScale: -0.3, colorStart: 0x2c2824, colorEnd: 0x707070, sizeStart: 0.4, sizeEnd: 2.2, alphaStart: 0.32, alphaEnd: 0 },
+    position: [at[0], at[1] + 1.3],
+    rate: R.smoke * settings.intensity,
+    shape: 'line',
+    size: 0.3,
+    direction: [0, 1],
+    spread: 0.3,
+    speed: [0.3, 0.8],
+    lifetime: [2, 3.5],
+    enabled: settings.smoke,
+    policy: 'recycle-oldest',
+    particle: {
+      mass: 0.01,
+      linearDrag: 0.02,
+      gravityScale: -0.3,
+      colorStart: 0x2c2824,
+      colorEnd: 0x707070,
+      sizeStart: 0.4,
+      sizeEnd: 2.2,
+      alphaStart: 0.32,
+      alphaEnd: 0,
+    },
   });
   const fire: Fire = { world, flames, glow, sparks, smoke, at, settings, flameRate: R.flames * settings.intensity };
   applyWind(fire);
@@ -127,7 +203,8 @@ export function setFireSmoke(fire: Fire, on: boolean): void {
 
 /** Moves the fire to (x, y), m (its flames, sparks and smoke). */
 export function moveFire(fire: Fire, x: number, y: number): void {
-  fire.at[0] = x; fire.at[1] = y;
+  fire.at[0] = x;
+  fire.at[1] = y;
   setPosition(fire.world, fire.flames, fire.at);
   setPosition(fire.world, fire.sparks, fire.at);
   setPosition(fire.world, fire.smoke, [x, y + 1.3]);

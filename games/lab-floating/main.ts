@@ -9,14 +9,30 @@
  * URL: ?light=&medium=&heavy=&box=&fluid= (densities, kg/m^2, 10..20000), ?drag= (kg/m, 0..5000),
  * ?track=light|medium|heavy|box.
  */
+
+import { createPhysicsWorld, type PhysicsWorld, setPosition, setVelocity, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { createPhysicsWorld, setPosition, setVelocity, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
 import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  BALL_RADIUS, BODY_KINDS, BOX_HALF, DIVIDER, SURFACE, TANK, buildFloating, dropBall, equilibriumOf, floatingWorldOptions,
-  immersionDepth, resolveFloatingOptions, setBodyDensity, setFluidDensity, setFluidDrag, type BodyKind, type FloatingHandles,
+  BALL_RADIUS,
+  BODY_KINDS,
+  BOX_HALF,
+  type BodyKind,
+  buildFloating,
+  DIVIDER,
+  dropBall,
+  equilibriumOf,
+  type FloatingHandles,
+  floatingWorldOptions,
+  immersionDepth,
+  resolveFloatingOptions,
+  SURFACE,
+  setBodyDensity,
+  setFluidDensity,
+  setFluidDrag,
+  TANK,
 } from './scene';
 
 const density = (name: string, fallback: number) => numberParam(name, { default: fallback, min: 10, max: 20000 });
@@ -44,7 +60,14 @@ let handles: FloatingHandles;
 
 /** Builds a fresh world with the tank (start, and R). */
 function createWorld(): PhysicsWorld {
-  const options = { light: params.light, medium: params.medium, heavy: params.heavy, box: params.box, fluid: params.fluid, drag: params.drag };
+  const options = {
+    light: params.light,
+    medium: params.medium,
+    heavy: params.heavy,
+    box: params.box,
+    fluid: params.fluid,
+    drag: params.drag,
+  };
   const world = createPhysicsWorld(floatingWorldOptions(options));
   handles = buildFloating(world, options);
   return world;
@@ -91,7 +114,9 @@ const plot = dock.add({
 /** Colour of a body by its density relative to the fluid: light bodies pale, dense ones dark. */
 function densityColor(rho: number): number {
   const t = Math.max(0, Math.min(1, rho / params.fluid / 1.6));
-  const r = Math.round(250 - 170 * t), g = Math.round(215 - 140 * t), b = Math.round(140 - 40 * t);
+  const r = Math.round(250 - 170 * t),
+    g = Math.round(215 - 140 * t),
+    b = Math.round(140 - 40 * t);
   return (r << 16) | (g << 8) | b;
 }
 
@@ -104,7 +129,10 @@ function recolor(): void {
   }
 }
 recolor();
-shell.onWorldChange(() => { plot.clear(); recolor(); });
+shell.onWorldChange(() => {
+  plot.clear();
+  recolor();
+});
 
 /** Puts the tracked body at rest at its exact equilibrium draft (the E key, the panel button). */
 function placeAtEquilibrium(): void {
@@ -118,19 +146,83 @@ function placeAtEquilibrium(): void {
   w.components.AngularVelocity.z[slotOf(e)] = 0;
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'light', label: 'light ball ρ (kg/m²)', min: 10, max: 3000, step: 10, onChange: (v) => { setBodyDensity(shell.world, handles, 'light', v); recolor(); } },
-  { type: 'slider', key: 'medium', label: 'medium ball ρ (kg/m²)', min: 10, max: 3000, step: 10, onChange: (v) => { setBodyDensity(shell.world, handles, 'medium', v); recolor(); } },
-  { type: 'slider', key: 'heavy', label: 'heavy ball ρ (kg/m²)', min: 10, max: 3000, step: 10, onChange: (v) => { setBodyDensity(shell.world, handles, 'heavy', v); recolor(); } },
-  { type: 'slider', key: 'box', label: 'box ρ (kg/m²)', min: 10, max: 3000, step: 10, onChange: (v) => setBodyDensity(shell.world, handles, 'box', v) },
-  { type: 'slider', key: 'fluid', label: 'fluid ρ (kg/m²)', min: 100, max: 3000, step: 10, onChange: (v) => { setFluidDensity(shell.world, handles, v); recolor(); } },
-  { type: 'slider', key: 'drag', label: 'fluid drag k (kg/m)', min: 0, max: 5000, step: 10, onChange: (v) => setFluidDrag(shell.world, handles, v) },
-  { type: 'choice', key: 'tracked', label: 'tracked body', options: BODY_KINDS, onChange: () => plot.clear() },
-  { type: 'slider', key: 'newDensity', label: 'new ball ρ (kg/m²)', min: 10, max: 3000, step: 10 },
-  { type: 'slider', key: 'newRadius', label: 'new ball radius (m)', min: 0.15, max: 1, step: 0.01 },
-  { type: 'button', key: 'equilibrium', label: 'place at equilibrium (E)' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Floating' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'light',
+      label: 'light ball ρ (kg/m²)',
+      min: 10,
+      max: 3000,
+      step: 10,
+      onChange: (v) => {
+        setBodyDensity(shell.world, handles, 'light', v);
+        recolor();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'medium',
+      label: 'medium ball ρ (kg/m²)',
+      min: 10,
+      max: 3000,
+      step: 10,
+      onChange: (v) => {
+        setBodyDensity(shell.world, handles, 'medium', v);
+        recolor();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'heavy',
+      label: 'heavy ball ρ (kg/m²)',
+      min: 10,
+      max: 3000,
+      step: 10,
+      onChange: (v) => {
+        setBodyDensity(shell.world, handles, 'heavy', v);
+        recolor();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'box',
+      label: 'box ρ (kg/m²)',
+      min: 10,
+      max: 3000,
+      step: 10,
+      onChange: (v) => setBodyDensity(shell.world, handles, 'box', v),
+    },
+    {
+      type: 'slider',
+      key: 'fluid',
+      label: 'fluid ρ (kg/m²)',
+      min: 100,
+      max: 3000,
+      step: 10,
+      onChange: (v) => {
+        setFluidDensity(shell.world, handles, v);
+        recolor();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'drag',
+      label: 'fluid drag k (kg/m)',
+      min: 0,
+      max: 5000,
+      step: 10,
+      onChange: (v) => setFluidDrag(shell.world, handles, v),
+    },
+    { type: 'choice', key: 'tracked', label: 'tracked body', options: BODY_KINDS, onChange: () => plot.clear() },
+    { type: 'slider', key: 'newDensity', label: 'new ball ρ (kg/m²)', min: 10, max: 3000, step: 10 },
+    { type: 'slider', key: 'newRadius', label: 'new ball radius (m)', min: 0.15, max: 1, step: 0.01 },
+    { type: 'button', key: 'equilibrium', label: 'place at equilibrium (E)' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Floating' },
+);
 
 // ---- Drawing: the box, the water over everything, the tracked body's equilibrium mark -------------
 
@@ -140,10 +232,16 @@ const marks = new Graphics({ label: 'marks' });
 app.stage.addChild(boxLayer, water, marks);
 const labelStyle = { fill: 0xe8ecf1, fontSize: 12, fontFamily: 'system-ui, sans-serif' };
 const labels = new Map<BodyKind, Text>(BODY_KINDS.map((k) => [k, new Text({ text: '', style: labelStyle })]));
-for (const t of labels.values()) { t.anchor.set(0.5, 1); app.stage.addChild(t); }
+for (const t of labels.values()) {
+  t.anchor.set(0.5, 1);
+  app.stage.addChild(t);
+}
 // The pole between the box and the balls: the box has no collider (it cannot touch the balls), so a
 // divider keeps it in a compartment of its own.
-const dividerLabel = new Text({ text: 'divider: keeps the box\n(no collider) on its side', style: { ...labelStyle, fontSize: 11, fill: 0x98a2b3, align: 'center' } });
+const dividerLabel = new Text({
+  text: 'divider: keeps the box\n(no collider) on its side',
+  style: { ...labelStyle, fontSize: 11, fill: 0x98a2b3, align: 'center' },
+});
 dividerLabel.anchor.set(0.5, 1);
 app.stage.addChild(dividerLabel);
 const shownDensity = new Map<BodyKind, number>();
@@ -152,22 +250,37 @@ let frame = 0;
 
 function draw(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   const lerpX = (e: number) => O.x[slotOf(e)]! + (P.x[slotOf(e)]! - O.x[slotOf(e)]!) * alpha;
   const lerpY = (e: number) => O.y[slotOf(e)]! + (P.y[slotOf(e)]! - O.y[slotOf(e)]!) * alpha;
   // Box (no collider, so the world renderer does not draw it).
   const b = handles.box;
-  const bx = cam.toScreenX(lerpX(b) - BOX_HALF[0]), by = cam.toScreenY(lerpY(b) + BOX_HALF[1]);
-  const bw = cam.toScreenLength(2 * BOX_HALF[0]), bh = cam.toScreenLength(2 * BOX_HALF[1]);
-  boxLayer.clear().rect(bx, by, bw, bh).fill({ color: densityColor(params.box) }).stroke({ width: 1.5, color: 0x3a3020 });
+  const bx = cam.toScreenX(lerpX(b) - BOX_HALF[0]),
+    by = cam.toScreenY(lerpY(b) + BOX_HALF[1]);
+  const bw = cam.toScreenLength(2 * BOX_HALF[0]),
+    bh = cam.toScreenLength(2 * BOX_HALF[1]);
+  boxLayer
+    .clear()
+    .rect(bx, by, bw, bh)
+    .fill({ color: densityColor(params.box) })
+    .stroke({ width: 1.5, color: 0x3a3020 });
   // Water: translucent, over the bodies, so what is submerged looks submerged.
-  const wx = cam.toScreenX(TANK.minX), wy = cam.toScreenY(SURFACE);
-  const ww = cam.toScreenLength(TANK.maxX - TANK.minX), wh = cam.toScreenLength(SURFACE - TANK.minY);
-  water.clear().rect(wx, wy, ww, wh).fill({ color: 0x2a7fd4, alpha: 0.33 })
-    .moveTo(wx, wy).lineTo(wx + ww, wy).stroke({ width: 2, color: 0x8ecae6, alpha: 0.9 });
+  const wx = cam.toScreenX(TANK.minX),
+    wy = cam.toScreenY(SURFACE);
+  const ww = cam.toScreenLength(TANK.maxX - TANK.minX),
+    wh = cam.toScreenLength(SURFACE - TANK.minY);
+  water
+    .clear()
+    .rect(wx, wy, ww, wh)
+    .fill({ color: 0x2a7fd4, alpha: 0.33 })
+    .moveTo(wx, wy)
+    .lineTo(wx + ww, wy)
+    .stroke({ width: 2, color: 0x8ecae6, alpha: 0.9 });
   // Tracked body: a ring, and a dashed line where its lowest point sits at equilibrium.
   const e = handles[params.tracked];
-  const ex = lerpX(e), ey = lerpY(e);
+  const ex = lerpX(e),
+    ey = lerpY(e);
   const halfW = params.tracked === 'box' ? BOX_HALF[0] : BALL_RADIUS;
   const extent = params.tracked === 'box' ? BOX_HALF[1] : BALL_RADIUS;
   marks.clear();
@@ -176,18 +289,26 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const d = equilibriumOf(handles, params.tracked);
   if (Number.isFinite(d)) {
     const yEq = cam.toScreenY(SURFACE - d);
-    dashedLine(marks, cam.toScreenX(ex - halfW - 0.35), yEq, cam.toScreenX(ex + halfW + 0.35), yEq, 5, 4).stroke({ width: 2, color: 0x8ecae6 });
+    dashedLine(marks, cam.toScreenX(ex - halfW - 0.35), yEq, cam.toScreenX(ex + halfW + 0.35), yEq, 5, 4).stroke({
+      width: 2,
+      color: 0x8ecae6,
+    });
   }
   if (++frame % 10 === 1) {
     const ratio = (params[params.tracked] / params.fluid).toFixed(3);
-    status.set(`tracked: ${params.tracked} · ρ/ρ_fluid = ${ratio} · draft ${immersionDepth(world, handles, e).toFixed(3)} m · ` +
-      (Number.isFinite(d) ? `equilibrium ${d.toFixed(3)} m` : 'denser than the fluid: it sinks'));
+    status.set(
+      `tracked: ${params.tracked} · ρ/ρ_fluid = ${ratio} · draft ${immersionDepth(world, handles, e).toFixed(3)} m · ` +
+        (Number.isFinite(d) ? `equilibrium ${d.toFixed(3)} m` : 'denser than the fluid: it sinks'),
+    );
   }
   // Density labels above the starting bodies.
   for (const kind of BODY_KINDS) {
     const t = labels.get(kind)!;
     const rho = params[kind];
-    if (shownDensity.get(kind) !== rho) { shownDensity.set(kind, rho); t.text = `${kind} ${rho} kg/m²`; }
+    if (shownDensity.get(kind) !== rho) {
+      shownDensity.set(kind, rho);
+      t.text = `${kind} ${rho} kg/m²`;
+    }
     const id = handles[kind];
     const top = kind === 'box' ? BOX_HALF[1] : BALL_RADIUS;
     t.position.set(cam.toScreenX(lerpX(id)), cam.toScreenY(lerpY(id) + top) - 4);

@@ -16,8 +16,16 @@
  * compares against (`equilibriumDepth`, `circularSegmentArea`).
  */
 import {
-  addBody, addFluidRegion, addSegment, addSystem, removeBody, setBoundary, setBuoyancy, setMass, type PhysicsWorld,
+  addBody,
+  addFluidRegion,
+  addSegment,
+  addSystem,
+  type PhysicsWorld,
   type PhysicsWorldOptions,
+  removeBody,
+  setBoundary,
+  setBuoyancy,
+  setMass,
 } from '@bitphysics/physics';
 
 /** Inner corners of the tank, m. */
@@ -97,15 +105,22 @@ function checkDrag(value: number): void {
  */
 export function resolveFloatingOptions(options: FloatingOptions = {}): FloatingParams {
   for (const k of Object.keys(options)) {
-    if (!(KNOWN as readonly string[]).includes(k)) throw new TypeError(`lab-floating: unknown option ${JSON.stringify(k)}; known: ${KNOWN.join(', ')}`);
+    if (!(KNOWN as readonly string[]).includes(k))
+      throw new TypeError(`lab-floating: unknown option ${JSON.stringify(k)}; known: ${KNOWN.join(', ')}`);
   }
   const p: FloatingParams = {
-    light: options.light ?? 250, medium: options.medium ?? 650, heavy: options.heavy ?? 920, box: options.box ?? 500,
-    fluid: options.fluid ?? 1000, drag: options.drag ?? 600, spawnBudget: options.spawnBudget ?? 60,
+    light: options.light ?? 250,
+    medium: options.medium ?? 650,
+    heavy: options.heavy ?? 920,
+    box: options.box ?? 500,
+    fluid: options.fluid ?? 1000,
+    drag: options.drag ?? 600,
+    spawnBudget: options.spawnBudget ?? 60,
   };
   for (const k of ['light', 'medium', 'heavy', 'box', 'fluid'] as const) checkDensity(k, p[k]);
   checkDrag(p.drag);
-  if (!(Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 1000)) fail(`spawnBudget must be an integer in [0, 1000], got ${p.spawnBudget}`);
+  if (!(Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 1000))
+    fail(`spawnBudget must be an integer in [0, 1000], got ${p.spawnBudget}`);
   return p;
 }
 
@@ -128,7 +143,8 @@ function discArea(r: number): number {
 function boxFloorSystem(h: FloatingHandles) {
   return (world: PhysicsWorld): void => {
     const e = h.box;
-    const P = world.components.Position, V = world.components.Velocity;
+    const P = world.components.Position,
+      V = world.components.Velocity;
     const floor = TANK.minY + BOX_HALF[1];
     if (P.y[e]! < floor) {
       P.y[e] = floor;
@@ -250,10 +266,12 @@ export function equilibriumDepth(shape: 'ball' | 'box', size: number, bodyDensit
   if (!(ratio < 1) || !(ratio > 0)) return Number.NaN;
   if (shape === 'box') return ratio * 2 * size;
   const target = ratio * discArea(size);
-  let lo = 0, hi = 2 * size;
+  let lo = 0,
+    hi = 2 * size;
   for (let i = 0; i < 80 && hi - lo > 1e-12; i++) {
     const mid = 0.5 * (lo + hi);
-    if (circularSegmentArea(size, mid) < target) lo = mid; else hi = mid;
+    if (circularSegmentArea(size, mid) < target) lo = mid;
+    else hi = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -261,7 +279,5 @@ export function equilibriumDepth(shape: 'ball' | 'box', size: number, bodyDensit
 /** Exact equilibrium draft of body `kind` of the scene with the densities in force, m (NaN if it sinks). */
 export function equilibriumOf(h: FloatingHandles, kind: BodyKind): number {
   const p = h.params;
-  return kind === 'box'
-    ? equilibriumDepth('box', BOX_HALF[1], p.box, p.fluid)
-    : equilibriumDepth('ball', BALL_RADIUS, p[kind], p.fluid);
+  return kind === 'box' ? equilibriumDepth('box', BOX_HALF[1], p.box, p.fluid) : equilibriumDepth('ball', BALL_RADIUS, p[kind], p.fluid);
 }

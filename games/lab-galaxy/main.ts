@@ -20,13 +20,23 @@
  * worker threads sharing the integration loop; the page must be cross-origin isolated, as `npm start`
  * serves it; otherwise one thread is used and the readout says why).
  */
+
+import {
+  createPhysicsWorld,
+  disposeWorld,
+  galaxy,
+  type PhysicsWorld,
+  step as physicsStep,
+  setGravitation,
+  stateHash,
+  threadsReady,
+} from '@bitphysics/physics';
+import { type Point2, PointLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, disposeWorld, galaxy, setGravitation, stateHash, step as physicsStep, threadsReady, type PhysicsWorld } from '@bitphysics/physics';
-import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, createStepTimer, fmt } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, createStepTimer, fmt } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 
 /** Real time a step stands for, s: the loop runs one step per 1/60 s; the world's dt is timeScale times it. */
 const REAL_STEP = 1 / 60;
@@ -42,21 +52,27 @@ const COLORINGS = {
 };
 type Coloring = keyof typeof COLORINGS;
 
-const USAGE = 'Accepted: count 1-200000 (integer); theta 0.1-2; softening 0.01-5 m; timescale 0.05-4; color = speed | radius; method = barnes-hut | direct; seed (integer); threads 1-16 (integer).';
+const USAGE =
+  'Accepted: count 1-200000 (integer); theta 0.1-2; softening 0.01-5 m; timescale 0.05-4; color = speed | radius; method = barnes-hut | direct; seed (integer); threads 1-16 (integer).';
 /** Whether this page may share memory with workers (SharedArrayBuffer needs cross-origin isolation). */
 const ISOLATED = (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
-const url = readUrlParams(() => ({
-  count: numberParam('count', { default: 100_000, min: 1, max: 200_000, integer: true }),
-  openingAngle: numberParam('theta', { default: 0.5, min: 0.1, max: 2 }),
-  softening: numberParam('softening', { default: 0.3, min: 0.01, max: 5 }),
-  timeScale: numberParam('timescale', { default: 1, min: 0.05, max: 4 }),
-  color: choiceParam('color', ['speed', 'radius'] as const, 'speed') as Coloring,
-  method: choiceParam('method', ['barnes-hut', 'direct'] as const, 'barnes-hut') as 'barnes-hut' | 'direct',
-  seed: seedParam(),
-  threads: numberParam('threads', { default: 1, min: 1, max: 16, integer: true }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    count: numberParam('count', { default: 100_000, min: 1, max: 200_000, integer: true }),
+    openingAngle: numberParam('theta', { default: 0.5, min: 0.1, max: 2 }),
+    softening: numberParam('softening', { default: 0.3, min: 0.01, max: 5 }),
+    timeScale: numberParam('timescale', { default: 1, min: 0.05, max: 4 }),
+    color: choiceParam('color', ['speed', 'radius'] as const, 'speed') as Coloring,
+    method: choiceParam('method', ['barnes-hut', 'direct'] as const, 'barnes-hut') as 'barnes-hut' | 'direct',
+    seed: seedParam(),
+    threads: numberParam('threads', { default: 1, min: 1, max: 16, integer: true }),
+  }),
+  USAGE,
+);
 if (url.method === 'direct' && url.count > DIRECT_LIMIT) {
-  readUrlParams(() => { throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`); }, USAGE);
+  readUrlParams(() => {
+    throw new RangeError(`URL parameter method=direct needs count <= ${DIRECT_LIMIT}, got ${url.count}`);
+  }, USAGE);
 }
 
 const params = {
@@ -111,7 +127,13 @@ shell.onWorldChange(() => shell.loop.setTimeStep(REAL_STEP));
 const glow = new Graphics({ label: 'nucleus' });
 /** Star opacity for `count` stars: additive dots saturate to white where they pile up, so the more stars the fainter each. */
 const starAlpha = (count: number): number => Math.min(0.85, Math.max(0.3, 0.85 * Math.sqrt(20_000 / count)));
-const points = new PointLayer({ entities: () => stars, size: params.pointSize, blend: 'add', alpha: starAlpha(stars.length), ...COLORINGS[params.color] });
+const points = new PointLayer({
+  entities: () => stars,
+  size: params.pointSize,
+  blend: 'add',
+  alpha: starAlpha(stars.length),
+  ...COLORINGS[params.color],
+});
 shell.onWorldChange(() => points.setAlpha(starAlpha(stars.length)));
 renderer.root.addChild(points.container, glow);
 
@@ -144,21 +166,71 @@ function setTimeScale(scale: number): void {
   world.h = world.dt / world.substeps;
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'openingAngle', label: 'opening angle θ', min: 0.1, max: 1.5, step: 0.01, onChange: (t) => { setGravitation(shell.world, { openingAngle: t }); timer.reset(); } },
-  { type: 'slider', key: 'softening', label: 'softening ε (m)', min: 0.01, max: 3, step: 0.01, onChange: (e) => setGravitation(shell.world, { softening: e }) },
-  { type: 'slider', key: 'timeScale', label: 'time scale', min: 0.1, max: 4, step: 0.05, onChange: (s) => setTimeScale(s) },
-  { type: 'slider', key: 'count', label: 'stars (rebuilds)', min: 1000, max: 200_000, step: 1000, onRelease: true, onChange: () => {
-    if (params.method === 'direct' && params.count > DIRECT_LIMIT) { params.method = 'barnes-hut'; notice = `direct needs <= ${DIRECT_LIMIT} stars`; }
-    shell.reset();
-    panel.refresh();
-  } },
-  { type: 'slider', key: 'threads', label: 'threads (rebuilds)', min: 1, max: 16, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'choice', key: 'method', label: 'gravity sum', options: ['barnes-hut', 'direct'], onChange: (m) => setMethod(m as 'barnes-hut' | 'direct') },
-  { type: 'choice', key: 'color', label: 'colour by', options: ['speed', 'radius'], onChange: (m) => setColoring(m as Coloring) },
-  { type: 'slider', key: 'pointSize', label: 'star size (px)', min: 1, max: 4, step: 0.5, onChange: (s) => points.setSize(s) },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Galaxy' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'openingAngle',
+      label: 'opening angle θ',
+      min: 0.1,
+      max: 1.5,
+      step: 0.01,
+      onChange: (t) => {
+        setGravitation(shell.world, { openingAngle: t });
+        timer.reset();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'softening',
+      label: 'softening ε (m)',
+      min: 0.01,
+      max: 3,
+      step: 0.01,
+      onChange: (e) => setGravitation(shell.world, { softening: e }),
+    },
+    { type: 'slider', key: 'timeScale', label: 'time scale', min: 0.1, max: 4, step: 0.05, onChange: (s) => setTimeScale(s) },
+    {
+      type: 'slider',
+      key: 'count',
+      label: 'stars (rebuilds)',
+      min: 1000,
+      max: 200_000,
+      step: 1000,
+      onRelease: true,
+      onChange: () => {
+        if (params.method === 'direct' && params.count > DIRECT_LIMIT) {
+          params.method = 'barnes-hut';
+          notice = `direct needs <= ${DIRECT_LIMIT} stars`;
+        }
+        shell.reset();
+        panel.refresh();
+      },
+    },
+    {
+      type: 'slider',
+      key: 'threads',
+      label: 'threads (rebuilds)',
+      min: 1,
+      max: 16,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'choice',
+      key: 'method',
+      label: 'gravity sum',
+      options: ['barnes-hut', 'direct'],
+      onChange: (m) => setMethod(m as 'barnes-hut' | 'direct'),
+    },
+    { type: 'choice', key: 'color', label: 'colour by', options: ['speed', 'radius'], onChange: (m) => setColoring(m as Coloring) },
+    { type: 'slider', key: 'pointSize', label: 'star size (px)', min: 1, max: 4, step: 0.5, onChange: (s) => points.setSize(s) },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Galaxy' },
+);
 
 const info = createReadout(shell.hud.readout, ['physics step', 'force stage (tree)', 'sim time', 'draw (CPU)', 'gravity', 'threads']);
 
@@ -169,7 +241,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   points.render(world, cam, alpha);
   glow.clear();
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   const x = cam.toScreenX(O.x[nucleus]! + (P.x[nucleus]! - O.x[nucleus]!) * alpha);
   const y = cam.toScreenY(O.y[nucleus]! + (P.y[nucleus]! - O.y[nucleus]!) * alpha);
   const r = Math.max(3, cam.toScreenLength(0.6));
@@ -190,23 +263,32 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 
 const canvas = app.canvas;
 const at: Point2 = { x: 0, y: 0 };
-let dragId = -1, lastX = 0, lastY = 0;
-canvas.addEventListener('wheel', (event) => {
-  event.preventDefault();
-  const cam = renderer.camera;
-  pointerOnCanvas(canvas, event, at);
-  const wx = cam.toWorldX(at.x), wy = cam.toWorldY(at.y);
-  const ppm = Math.min(400, Math.max(1, cam.pixelsPerMeter * Math.exp(-event.deltaY * 0.0015)));
-  // Keep the world point under the pointer where it is.
-  const cx = wx - (at.x - cam.width / 2) / ppm, cy = wy + (at.y - cam.height / 2) / ppm;
-  cam.setPixelsPerMeter(ppm, cx, cy);
-}, { passive: false });
+let dragId = -1,
+  lastX = 0,
+  lastY = 0;
+canvas.addEventListener(
+  'wheel',
+  (event) => {
+    event.preventDefault();
+    const cam = renderer.camera;
+    pointerOnCanvas(canvas, event, at);
+    const wx = cam.toWorldX(at.x),
+      wy = cam.toWorldY(at.y);
+    const ppm = Math.min(400, Math.max(1, cam.pixelsPerMeter * Math.exp(-event.deltaY * 0.0015)));
+    // Keep the world point under the pointer where it is.
+    const cx = wx - (at.x - cam.width / 2) / ppm,
+      cy = wy + (at.y - cam.height / 2) / ppm;
+    cam.setPixelsPerMeter(ppm, cx, cy);
+  },
+  { passive: false },
+);
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0 || dragId !== -1) return;
   dragId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   pointerOnCanvas(canvas, event, at);
-  lastX = at.x; lastY = at.y;
+  lastX = at.x;
+  lastY = at.y;
 });
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== dragId) return;
@@ -214,9 +296,12 @@ canvas.addEventListener('pointermove', (event) => {
   const cam = renderer.camera;
   const ppm = cam.pixelsPerMeter;
   cam.setPixelsPerMeter(ppm, cam.toWorldX(cam.width / 2) - (at.x - lastX) / ppm, cam.toWorldY(cam.height / 2) + (at.y - lastY) / ppm);
-  lastX = at.x; lastY = at.y;
+  lastX = at.x;
+  lastY = at.y;
 });
-const endDrag = (event: PointerEvent): void => { if (event.pointerId === dragId) dragId = -1; };
+const endDrag = (event: PointerEvent): void => {
+  if (event.pointerId === dragId) dragId = -1;
+};
 canvas.addEventListener('pointerup', endDrag);
 canvas.addEventListener('pointercancel', endDrag);
 

@@ -12,15 +12,23 @@
  * world per frame step). Keys: P pause, N step, R reset, + / - speed-up.
  * URL: ?dt (0.0005-0.2 s), ?e (0-0.95), ?speedup (1-20).
  */
-import { Graphics } from 'pixi.js';
-import { INTEGRATOR_NAMES, INTEGRATOR_ORDER, step as physicsStep, totalEnergy, type IntegratorName, type PhysicsWorld } from '@bitphysics/physics';
+
+import {
+  INTEGRATOR_NAMES,
+  INTEGRATOR_ORDER,
+  type IntegratorName,
+  type PhysicsWorld,
+  step as physicsStep,
+  totalEnergy,
+} from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam } from '../shared/index';
-import { createPlot } from '../shared/plot';
-import { PathBuffer, createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { Graphics } from 'pixi.js';
 import { conicRadius, type OrbitShape } from '../lab-orbits/exact';
-import { GM, PERIOD, PLANET_RADIUS, SEMI_MAJOR_AXIS, createKeplerWorld, type KeplerWorld } from './scene';
+import { createPanel, numberParam } from '../shared/index';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
+import { createKeplerWorld, GM, type KeplerWorld, PERIOD, PLANET_RADIUS, SEMI_MAJOR_AXIS } from './scene';
 
 /** Colour of each scheme, in INTEGRATOR_NAMES order. */
 const COLORS: Readonly<Record<IntegratorName, number>> = Object.freeze({
@@ -39,11 +47,14 @@ const PRIMARY: IntegratorName = 'rk4';
 const PATH_POINTS = 720;
 
 const USAGE = 'Accepted: dt 0.0005-0.2 s; e (eccentricity) 0-0.95; speedup 1-20 (integer).';
-const url = readUrlParams(() => ({
-  dt: numberParam('dt', { default: 1 / 60, min: 0.0005, max: 0.2 }),
-  eccentricity: numberParam('e', { default: 0.5, min: 0, max: 0.95 }),
-  speedUp: numberParam('speedup', { default: 1, min: 1, max: 20, integer: true }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    dt: numberParam('dt', { default: 1 / 60, min: 0.0005, max: 0.2 }),
+    eccentricity: numberParam('e', { default: 0.5, min: 0, max: 0.95 }),
+    speedUp: numberParam('speedup', { default: 1, min: 1, max: 20, integer: true }),
+  }),
+  USAGE,
+);
 
 const params = { ...url, reset: () => shell.reset() };
 
@@ -67,7 +78,15 @@ interface Run {
 }
 
 const runs: Run[] = INTEGRATOR_NAMES.map((name) => ({
-  name, kw: null as unknown as KeplerWorld, e0: 0, error: 0, maxError: 0, diverged: false, reason: '', cost: 0, path: new PathBuffer(PATH_POINTS),
+  name,
+  kw: null as unknown as KeplerWorld,
+  e0: 0,
+  error: 0,
+  maxError: 0,
+  diverged: false,
+  reason: '',
+  cost: 0,
+  path: new PathBuffer(PATH_POINTS),
 }));
 const primaryIndex = INTEGRATOR_NAMES.indexOf(PRIMARY);
 const view: WorldRect = { minX: -8, minY: -5, maxX: 3, maxY: 5 };
@@ -79,7 +98,11 @@ function createWorld(): PhysicsWorld {
   for (const run of runs) {
     run.kw = createKeplerWorld({ integrator: run.name, eccentricity: params.eccentricity, dt: params.dt });
     run.e0 = totalEnergy(run.kw.world);
-    run.error = 0; run.maxError = 0; run.diverged = false; run.reason = ''; run.cost = 0;
+    run.error = 0;
+    run.maxError = 0;
+    run.diverged = false;
+    run.reason = '';
+    run.cost = 0;
     run.path.clear();
     const P = run.kw.world.components.Position;
     run.path.push(P.x[run.kw.planet]!, P.y[run.kw.planet]!);
@@ -88,12 +111,17 @@ function createWorld(): PhysicsWorld {
   shape.e = params.eccentricity;
   ellipse.clear();
   for (let i = 0; i <= 360; i++) {
-    const th = (i / 360) * 2 * Math.PI, r = conicRadius(shape, th);
+    const th = (i / 360) * 2 * Math.PI,
+      r = conicRadius(shape, th);
     ellipse.push(r * Math.cos(th), r * Math.sin(th));
   }
-  const a = SEMI_MAJOR_AXIS, e = params.eccentricity, b = a * Math.sqrt(1 - e * e);
-  view.minX = -a * (1 + e) - 0.15 * a; view.maxX = a * (1 - e) + 0.15 * a;
-  view.minY = -b - 0.15 * a; view.maxY = b + 0.15 * a;
+  const a = SEMI_MAJOR_AXIS,
+    e = params.eccentricity,
+    b = a * Math.sqrt(1 - e * e);
+  view.minX = -a * (1 + e) - 0.15 * a;
+  view.maxX = a * (1 - e) + 0.15 * a;
+  view.minY = -b - 0.15 * a;
+  view.maxY = b + 0.15 * a;
   refit?.();
   plot?.clear();
   return runs[primaryIndex]!.kw.world;
@@ -122,14 +150,27 @@ function labStep(): void {
   }
   for (let i = 0; i < runs.length; i++) {
     const run = runs[i]!;
-    const w = run.kw.world, p = run.kw.planet;
-    if (run.diverged) { run.error = Number.NaN; continue; }
+    const w = run.kw.world,
+      p = run.kw.planet;
+    if (run.diverged) {
+      run.error = Number.NaN;
+      continue;
+    }
     run.error = Math.abs((totalEnergy(w) - run.e0) / run.e0);
     if (!(run.error <= run.maxError)) run.maxError = run.error;
     run.path.push(w.components.Position.x[p]!, w.components.Position.y[p]!);
   }
   const r = runs;
-  plot?.push(r[primaryIndex]!.kw.world.time, lg(r[0]!.error), lg(r[1]!.error), lg(r[2]!.error), lg(r[3]!.error), lg(r[4]!.error), lg(r[5]!.error), lg(r[6]!.error));
+  plot?.push(
+    r[primaryIndex]!.kw.world.time,
+    lg(r[0]!.error),
+    lg(r[1]!.error),
+    lg(r[2]!.error),
+    lg(r[3]!.error),
+    lg(r[4]!.error),
+    lg(r[5]!.error),
+    lg(r[6]!.error),
+  );
 }
 
 /** log10 of an error for the chart (errors below 1e-16 are rounding: shown at -16; NaN stays a gap). */
@@ -147,9 +188,7 @@ const game = await startPixiGame({
   createWorld,
   step: () => labStep(),
   bodies: () => runs.length,
-  controls: [
-    { keys: '+ / −', action: 'speed-up (steps per frame step)' },
-  ],
+  controls: [{ keys: '+ / −', action: 'speed-up (steps per frame step)' }],
   keys: [
     { key: '+', label: 'faster', action: () => setSpeedUp(params.speedUp + 1) },
     { key: '=', label: 'faster', action: () => setSpeedUp(params.speedUp + 1) },
@@ -166,12 +205,34 @@ const paint = (): void => renderer.setColor(runs[primaryIndex]!.kw.planet, COLOR
 paint();
 shell.onWorldChange(paint);
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'dt', label: 'time step dt (s)', min: 0.001, max: 0.1, step: 0.0005, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'eccentricity', label: 'eccentricity', min: 0, max: 0.95, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'speedUp', label: 'speed-up (steps/frame step)', min: 1, max: 20, step: 1 },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Integrators', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'dt',
+      label: 'time step dt (s)',
+      min: 0.001,
+      max: 0.1,
+      step: 0.0005,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'eccentricity',
+      label: 'eccentricity',
+      min: 0,
+      max: 0.95,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'slider', key: 'speedUp', label: 'speed-up (steps/frame step)', min: 1, max: 20, step: 1 },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Integrators', container: dock.panelSlot },
+);
 
 /** Sets the speed-up, clamped to [1, 20]. */
 function setSpeedUp(n: number): void {
@@ -185,7 +246,11 @@ const readout = createReadout(
   ['', ...INTEGRATOR_NAMES.map((n) => css(COLORS[n]))],
 );
 plot = createPlot({
-  parent: dock.charts, title: 'Relative energy error |E − E₀| / |E₀|', yLabel: 'log₁₀ error', width: dock.chartWidth, height: 230,
+  parent: dock.charts,
+  title: 'Relative energy error |E − E₀| / |E₀|',
+  yLabel: 'log₁₀ error',
+  width: dock.chartWidth,
+  height: 230,
   capacity: 1200,
   series: INTEGRATOR_NAMES.map((n) => ({ label: n, color: css(COLORS[n]) })),
 });
@@ -200,7 +265,8 @@ const at: Point2 = { x: 0, y: 0 };
 function drawOverlay(alpha: number): void {
   const cam = renderer.camera;
   overlay.clear();
-  const sx = cam.toScreenX(0), sy = cam.toScreenY(0);
+  const sx = cam.toScreenX(0),
+    sy = cam.toScreenY(0);
   overlay.circle(sx, sy, Math.max(5, cam.toScreenLength(0.3))).fill({ color: 0xffd166 });
   ellipse.draw(overlay, cam, 1.5, 0xe6e9ef, 0.5, true);
   const r = Math.max(3, cam.toScreenLength(PLANET_RADIUS));
@@ -221,7 +287,10 @@ function updateReadout(): void {
   readout.set(0, fmt(runs[primaryIndex]!.kw.world.time / PERIOD, 3));
   for (let i = 0; i < runs.length; i++) {
     const run = runs[i]!;
-    readout.set(i + 1, run.diverged ? `stopped at t = ${fmt(run.kw.world.time, 3)} s` : `${fmt(run.error, 2).padEnd(8)} ${fmt(run.cost, 2)} µs/step`);
+    readout.set(
+      i + 1,
+      run.diverged ? `stopped at t = ${fmt(run.kw.world.time, 3)} s` : `${fmt(run.error, 2).padEnd(8)} ${fmt(run.cost, 2)} µs/step`,
+    );
   }
 }
 
@@ -234,10 +303,21 @@ shell.expose({
   /** G M of the sun, m^3/s^2. */
   gm: GM,
   /** A snapshot of every scheme: name, error now and largest, diverged, time, planet position. */
-  runs: () => runs.map((r) => {
-    const P = r.kw.world.components.Position;
-    return { name: r.name, error: r.error, maxError: r.maxError, diverged: r.diverged, reason: r.reason, time: r.kw.world.time, steps: r.kw.world.steps, x: P.x[r.kw.planet]!, y: P.y[r.kw.planet]! };
-  }),
+  runs: () =>
+    runs.map((r) => {
+      const P = r.kw.world.components.Position;
+      return {
+        name: r.name,
+        error: r.error,
+        maxError: r.maxError,
+        diverged: r.diverged,
+        reason: r.reason,
+        time: r.kw.world.time,
+        steps: r.kw.world.steps,
+        x: P.x[r.kw.planet]!,
+        y: P.y[r.kw.planet]!,
+      };
+    }),
   /** Runs `n` (integer >= 0) frame steps now (each `speedUp` steps of every world). @throws RangeError otherwise. */
   advance: (n: number): void => {
     if (!Number.isInteger(n) || n < 0) throw new RangeError(`advance: n must be an integer >= 0, got ${n}`);

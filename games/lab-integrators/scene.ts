@@ -6,7 +6,13 @@
  * A pure, deterministic builder; no DOM.
  */
 import {
-  INTEGRATOR_NAMES, addBody, createPhysicsWorld, setAttractor, setGravitation, type IntegratorName, type PhysicsWorld,
+  addBody,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  setAttractor,
+  setGravitation,
 } from '@bitphysics/physics';
 
 /** Semi-major axis of the orbit, m. */
@@ -49,10 +55,14 @@ export interface KeplerWorld {
  */
 export function checkKeplerOptions(options: KeplerOptions): void {
   if (!(INTEGRATOR_NAMES as readonly string[]).includes(options.integrator)) {
-    throw new RangeError(`lab-integrators: integrator must be one of ${INTEGRATOR_NAMES.join(', ')}, got ${JSON.stringify(options.integrator)}`);
+    throw new RangeError(
+      `lab-integrators: integrator must be one of ${INTEGRATOR_NAMES.join(', ')}, got ${JSON.stringify(options.integrator)}`,
+    );
   }
-  if (!(options.eccentricity >= 0 && options.eccentricity <= 0.95)) throw new RangeError(`lab-integrators: eccentricity must be in [0, 0.95], got ${options.eccentricity}`);
-  if (!(options.dt >= 0.0005 && options.dt <= 0.2)) throw new RangeError(`lab-integrators: dt must be in [0.0005, 0.2] s, got ${options.dt}`);
+  if (!(options.eccentricity >= 0 && options.eccentricity <= 0.95))
+    throw new RangeError(`lab-integrators: eccentricity must be in [0, 0.95], got ${options.eccentricity}`);
+  if (!(options.dt >= 0.0005 && options.dt <= 0.2))
+    throw new RangeError(`lab-integrators: dt must be in [0.0005, 0.2] s, got ${options.dt}`);
 }
 
 /**

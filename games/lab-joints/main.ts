@@ -8,17 +8,16 @@
  * Input: drag any body (a mouse joint: a soft spring of limited force). Keys: P pause, N step,
  * R reset. URL: ?scene (pendulum, chain, bridge, car, ragdoll, windmill).
  */
-import { Graphics } from 'pixi.js';
-import {
-  createPhysicsWorld, jointAnchors, query, slotOf, step as physicsStep, type PhysicsWorld, handleOf,
-} from '@bitphysics/physics';
+
+import { createPhysicsWorld, handleOf, jointAnchors, type PhysicsWorld, step as physicsStep, query, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
-import { choiceParam, createPanel } from '../shared/index';
-import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { Graphics } from 'pixi.js';
 import { enableMouseDrag } from '../shared/drag';
-import { buildScene, SCENE_NAMES, type JointScene, type SceneName } from './scenes';
+import { choiceParam, createPanel } from '../shared/index';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
+import { buildScene, type JointScene, SCENE_NAMES, type SceneName } from './scenes';
 
 const USAGE = `Accepted: scene ${SCENE_NAMES.join(', ')}.`;
 const url = readUrlParams(() => ({ scene: choiceParam('scene', SCENE_NAMES, 'pendulum') as SceneName }), USAGE);
@@ -36,18 +35,30 @@ const view: WorldRect = { ...VIEWS.pendulum };
 let handles: JointScene = {};
 const measure = { period: Number.NaN, exactPeriod: Number.NaN, turns: 0, lastTurn: Number.NaN, lastW: 0 };
 
-function agm(a: number, b: number): number { for (let i = 0; i < 40; i++) { const m = (a + b) / 2; b = Math.sqrt(a * b); a = m; } return a; }
+function agm(a: number, b: number): number {
+  for (let i = 0; i < 40; i++) {
+    const m = (a + b) / 2;
+    b = Math.sqrt(a * b);
+    a = m;
+  }
+  return a;
+}
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld({ gravity: [0, -params.gravity], capacity: 2000 });
   handles = buildScene(world, params.scene, params);
   Object.assign(view, VIEWS[params.scene]);
   refit?.();
-  measure.period = Number.NaN; measure.turns = 0; measure.lastTurn = Number.NaN; measure.lastW = 0;
+  measure.period = Number.NaN;
+  measure.turns = 0;
+  measure.lastTurn = Number.NaN;
+  measure.lastW = 0;
   if (handles.bob !== undefined) {
     // Physical pendulum: equivalent length (I + m L^2) / (m L) with the bob's I = 0.02 kg m^2, m = 1 kg.
-    const L = handles.length!, Leq = (0.02 + L * L) / L, k = Math.sin(Math.abs(handles.amplitude!) / 2);
-    measure.exactPeriod = 4 * Math.sqrt(Leq / params.gravity) * Math.PI / (2 * agm(1, Math.sqrt(1 - k * k)));
+    const L = handles.length!,
+      Leq = (0.02 + L * L) / L,
+      k = Math.sin(Math.abs(handles.amplitude!) / 2);
+    measure.exactPeriod = (4 * Math.sqrt(Leq / params.gravity) * Math.PI) / (2 * agm(1, Math.sqrt(1 - k * k)));
   } else measure.exactPeriod = Number.NaN;
   plot?.clear();
   return world;
@@ -64,7 +75,8 @@ function labStep(world: PhysicsWorld): void {
     if (measure.lastW < 0 && w >= 0) {
       const t = world.time - (world.dt * w) / (w - measure.lastW);
       if (!Number.isNaN(measure.lastTurn)) measure.period = t - measure.lastTurn;
-      measure.lastTurn = t; measure.turns++;
+      measure.lastTurn = t;
+      measure.turns++;
     }
     measure.lastW = w;
   }
@@ -83,16 +95,53 @@ const { shell, renderer, app } = game;
 const dock = createLabDock();
 refit = followView(app, renderer.camera, dock, () => view);
 
-createPanel(params, [
-  { type: 'choice', key: 'scene', label: 'scene', options: SCENE_NAMES, onChange: () => shell.reset() },
-  { type: 'slider', key: 'amplitude', label: 'pendulum release (°)', min: 5, max: 175, step: 1, onRelease: true, onChange: () => { if (params.scene === 'pendulum') shell.reset(); } },
-  { type: 'slider', key: 'motorSpeed', label: 'motor speed (rad/s)', min: -15, max: 15, step: 0.1, onChange: () => applyMotor() },
-  { type: 'slider', key: 'gravity', label: 'gravity g (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => { shell.world.gravity[1] = -(g as number); } },
-  { type: 'button', key: 'reset', label: 'rebuild (R)' },
-], { title: 'Joints', container: dock.panelSlot });
-const readout = createReadout(shell.hud.readout, ['scene', 'bodies / joints', 'largest joint error', 'pendulum period', 'exact period', 'speed']);
+createPanel(
+  params,
+  [
+    { type: 'choice', key: 'scene', label: 'scene', options: SCENE_NAMES, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'amplitude',
+      label: 'pendulum release (°)',
+      min: 5,
+      max: 175,
+      step: 1,
+      onRelease: true,
+      onChange: () => {
+        if (params.scene === 'pendulum') shell.reset();
+      },
+    },
+    { type: 'slider', key: 'motorSpeed', label: 'motor speed (rad/s)', min: -15, max: 15, step: 0.1, onChange: () => applyMotor() },
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity g (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => {
+        shell.world.gravity[1] = -(g as number);
+      },
+    },
+    { type: 'button', key: 'reset', label: 'rebuild (R)' },
+  ],
+  { title: 'Joints', container: dock.panelSlot },
+);
+const readout = createReadout(shell.hud.readout, [
+  'scene',
+  'bodies / joints',
+  'largest joint error',
+  'pendulum period',
+  'exact period',
+  'speed',
+]);
 plot = createPlot({
-  parent: dock.charts, title: 'Largest joint error', yLabel: 'mm', width: dock.chartWidth, height: 180, capacity: 1200,
+  parent: dock.charts,
+  title: 'Largest joint error',
+  yLabel: 'mm',
+  width: dock.chartWidth,
+  height: 180,
+  capacity: 1200,
   series: [{ label: 'anchor separation (mm)', color: '#f4a261' }],
 });
 
@@ -103,18 +152,26 @@ function applyMotor(): void {
   if (handles.motor !== undefined) J.motorSpeed[slotOf(handles.motor)] = params.motorSpeed;
 }
 
-const drag = enableMouseDrag(app.canvas, () => shell.world, () => renderer.camera, { reach: 0.4, strength: 40 });
+const drag = enableMouseDrag(
+  app.canvas,
+  () => shell.world,
+  () => renderer.camera,
+  { reach: 0.4, strength: 40 },
+);
 
 const lines = new Graphics({ label: 'joints' });
 renderer.root.addChild(lines);
 function draw(world: PhysicsWorld): void {
-  const cam = renderer.camera, J = world.components.Joint, P = world.components.Position;
+  const cam = renderer.camera,
+    J = world.components.Joint,
+    P = world.components.Position;
   lines.clear();
   const joints = query(world, [J]);
   for (let i = 0; i < joints.length; i++) {
     const j = joints[i]!;
     const [ax, ay, bx, by] = jointAnchors(world, handleOf(world, j));
-    const a = J.a[j]!, b = J.b[j]!;
+    const a = J.a[j]!,
+      b = J.b[j]!;
     const mouse = J.type[j] === 5;
     if (a !== 0) lines.moveTo(cam.toScreenX(P.x[a]!), cam.toScreenY(P.y[a]!)).lineTo(cam.toScreenX(ax), cam.toScreenY(ay));
     lines.moveTo(cam.toScreenX(bx), cam.toScreenY(by)).lineTo(cam.toScreenX(P.x[b]!), cam.toScreenY(P.y[b]!));
@@ -124,8 +181,16 @@ function draw(world: PhysicsWorld): void {
   }
   // The car's chassis has no collider: draw it as a box over its wheels.
   if (handles.chassis !== undefined) {
-    const e = slotOf(handles.chassis), t = world.components.Angle.value[e]!, c = Math.cos(t), s = Math.sin(t);
-    const pts = [[-1.2, -0.25], [1.2, -0.25], [1.2, 0.25], [-1.2, 0.25]].map(([x, y]) => [cam.toScreenX(P.x[e]! + c * x! - s * y!), cam.toScreenY(P.y[e]! + s * x! + c * y!)]);
+    const e = slotOf(handles.chassis),
+      t = world.components.Angle.value[e]!,
+      c = Math.cos(t),
+      s = Math.sin(t);
+    const pts = [
+      [-1.2, -0.25],
+      [1.2, -0.25],
+      [1.2, 0.25],
+      [-1.2, 0.25],
+    ].map(([x, y]) => [cam.toScreenX(P.x[e]! + c * x! - s * y!), cam.toScreenY(P.y[e]! + s * x! + c * y!)]);
     lines.poly(pts.flat()).fill({ color: 0x2a9d8f, alpha: 0.9 });
   }
   readout.set(0, params.scene);
@@ -134,7 +199,10 @@ function draw(world: PhysicsWorld): void {
   readout.set(3, Number.isNaN(measure.period) ? '-' : `${fmt(measure.period)} s`);
   readout.set(4, Number.isNaN(measure.exactPeriod) ? '-' : `${fmt(measure.exactPeriod)} s`);
   const v = handles.chassis ?? handles.bob;
-  readout.set(5, v === undefined ? '-' : `${fmt(Math.hypot(world.components.Velocity.x[slotOf(v)]!, world.components.Velocity.y[slotOf(v)]!))} m/s`);
+  readout.set(
+    5,
+    v === undefined ? '-' : `${fmt(Math.hypot(world.components.Velocity.x[slotOf(v)]!, world.components.Velocity.y[slotOf(v)]!))} m/s`,
+  );
 }
 
 shell.expose({
@@ -145,5 +213,7 @@ shell.expose({
   /** The scene's handles. */
   ids: () => ({ ...handles }),
   /** Runs the lab's step n times (tests). */
-  advance: (n: number) => { for (let i = 0; i < n; i++) labStep(shell.world); },
+  advance: (n: number) => {
+    for (let i = 0; i < n; i++) labStep(shell.world);
+  },
 });

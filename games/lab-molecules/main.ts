@@ -8,21 +8,25 @@
  * Input: click in the box to heat the molecules near the point (their speeds x 1.5). Keys: P pause,
  * N step, R reset. URL: ?count (10-2000), ?speed (0.1-10 m/s), ?radius (0.02-0.3 m).
  */
-import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, kineticEnergy, slotOf, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+
+import { createPhysicsWorld, kineticEnergy, type PhysicsWorld, step as physicsStep, slotOf } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { GAS_DEFAULTS, MOLECULE_MASS, buildGas, gasWorldOptions, maxwellBoltzmann2D, measureSpeeds, type GasHandles } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
+import { buildGas, GAS_DEFAULTS, type GasHandles, gasWorldOptions, MOLECULE_MASS, maxwellBoltzmann2D, measureSpeeds } from './scene';
 
 const USAGE = 'Accepted: count 10-2000; speed 0.1-10 m/s; radius 0.02-0.3 m.';
-const url = readUrlParams(() => ({
-  count: numberParam('count', { default: GAS_DEFAULTS.count, min: 10, max: 2000, integer: true }),
-  speed: numberParam('speed', { default: GAS_DEFAULTS.speed, min: 0.1, max: 10 }),
-  radius: numberParam('radius', { default: GAS_DEFAULTS.radius, min: 0.02, max: 0.3 }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    count: numberParam('count', { default: GAS_DEFAULTS.count, min: 10, max: 2000, integer: true }),
+    speed: numberParam('speed', { default: GAS_DEFAULTS.speed, min: 0.1, max: 10 }),
+    radius: numberParam('radius', { default: GAS_DEFAULTS.radius, min: 0.02, max: 0.3 }),
+  }),
+  USAGE,
+);
 const params = { ...url, reset: () => shell.reset() };
 
 const BINS = 24;
@@ -35,8 +39,10 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(gasWorldOptions({ count: params.count }));
   handles = buildGas(world, { count: params.count, speed: params.speed, radius: params.radius });
   // The box on the left, the histogram (as wide as the box is tall) on the right.
-  view.minX = -0.05 * handles.width; view.minY = -0.08 * handles.height;
-  view.maxX = handles.width * 1.1 + handles.height * 1.2; view.maxY = handles.height * 1.05;
+  view.minX = -0.05 * handles.width;
+  view.minY = -0.08 * handles.height;
+  view.maxX = handles.width * 1.1 + handles.height * 1.2;
+  view.maxY = handles.height * 1.05;
   refit?.();
   gas.kinetic0 = kineticEnergy(world);
   plot?.clear();
@@ -77,15 +83,24 @@ refit = followView(app, renderer.camera, dock, () => view);
 refit();
 
 const restart = (): void => shell.reset();
-const panel = createPanel(params, [
-  { type: 'slider', key: 'count', label: 'molecules', min: 10, max: 2000, step: 10, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'speed', label: 'starting speed (m/s)', min: 0.1, max: 10, step: 0.1, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'radius', label: 'radius (m)', min: 0.02, max: 0.3, step: 0.01, onRelease: true, onChange: restart },
-  { type: 'button', key: 'reset', label: 'start again (R)' },
-], { title: 'Molecules', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'count', label: 'molecules', min: 10, max: 2000, step: 10, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'speed', label: 'starting speed (m/s)', min: 0.1, max: 10, step: 0.1, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'radius', label: 'radius (m)', min: 0.02, max: 0.3, step: 0.01, onRelease: true, onChange: restart },
+    { type: 'button', key: 'reset', label: 'start again (R)' },
+  ],
+  { title: 'Molecules', container: dock.panelSlot },
+);
 const readout = createReadout(shell.hud.readout, ['kT (mean KE)', 'most probable speed √(kT/m)', 'KE / KE at start']);
 plot = createPlot({
-  parent: dock.charts, title: 'Kinetic energy', yLabel: 'KE / KE₀', width: dock.chartWidth, height: 180, capacity: 1200,
+  parent: dock.charts,
+  title: 'Kinetic energy',
+  yLabel: 'KE / KE₀',
+  width: dock.chartWidth,
+  height: 180,
+  capacity: 1200,
   series: [{ label: 'KE / KE at start', color: '#4cc9f0' }],
 });
 shell.reset();
@@ -102,13 +117,16 @@ canvas.addEventListener('pointerdown', (event) => {
 
 /** Multiplies the speed of every molecule within a fifth of the box height of (x, y) by 1.5. @returns how many. */
 function heatAt(x: number, y: number): number {
-  const w = shell.world, P = w.components.Position, V = w.components.Velocity;
+  const w = shell.world,
+    P = w.components.Position,
+    V = w.components.Velocity;
   const reach = 0.2 * handles.height;
   let n = 0;
   for (const e of handles.molecules) {
     const s = slotOf(e);
     if (Math.hypot(P.x[s]! - x, P.y[s]! - y) > reach) continue;
-    V.x[s] = 1.5 * V.x[s]!; V.y[s] = 1.5 * V.y[s]!;
+    V.x[s] = 1.5 * V.x[s]!;
+    V.y[s] = 1.5 * V.y[s]!;
     n++;
   }
   gas.kinetic0 = kineticEnergy(w);
@@ -124,9 +142,11 @@ renderer.root.addChild(overlay);
 function drawOverlay(): void {
   const cam = renderer.camera;
   overlay.clear();
-  const W = handles.width, H = handles.height;
+  const W = handles.width,
+    H = handles.height;
   // Histogram frame: x from 1.1 W to 1.1 W + 1.1 H (speed), y from 0 to H (count).
-  const x0 = 1.1 * W, span = 1.05 * H;
+  const x0 = 1.1 * W,
+    span = 1.05 * H;
   const N = handles.molecules.length;
   // Tallest expected bar: N dv f(v_p) at the most probable speed, times 1.6 for fluctuations.
   const vp = Math.sqrt(gas.kT / MOLECULE_MASS);
@@ -136,7 +156,8 @@ function drawOverlay(): void {
   for (let k = 0; k < BINS; k++) {
     const c = gas.counts[k]!;
     if (c === 0) continue;
-    const left = sx(k * gas.binWidth), right = sx((k + 1) * gas.binWidth);
+    const left = sx(k * gas.binWidth),
+      right = sx((k + 1) * gas.binWidth);
     overlay.rect(left + 1, sy(c), right - left - 2, sy(0) - sy(c)).fill({ color: 0x4cc9f0, alpha: 0.75 });
   }
   overlay.moveTo(sx(0), sy(0));
@@ -145,7 +166,10 @@ function drawOverlay(): void {
     overlay.lineTo(sx(v), sy(N * gas.binWidth * maxwellBoltzmann2D(v, gas.kT)));
   }
   overlay.stroke({ width: 2, color: 0xf4a261 });
-  overlay.moveTo(sx(0), sy(0)).lineTo(sx(BINS * gas.binWidth), sy(0)).stroke({ width: 1, color: 0xd0d6e0 });
+  overlay
+    .moveTo(sx(0), sy(0))
+    .lineTo(sx(BINS * gas.binWidth), sy(0))
+    .stroke({ width: 1, color: 0xd0d6e0 });
   overlay.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 1.5, color: 0x8d99ae });
   updateReadout();
 }

@@ -5,7 +5,7 @@
  * Maxwell-Boltzmann distribution f(v) = (m v / kT) exp(-m v^2 / (2 kT)), with kT the mean kinetic
  * energy per disc (equipartition over two degrees of freedom). A pure, deterministic builder; no DOM.
  */
-import { Rng, addBody, setBoundary, slotOf, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import { addBody, type PhysicsWorld, type PhysicsWorldOptions, Rng, setBoundary, slotOf } from '@bitphysics/physics';
 
 /** Options of the scene; every field optional. */
 export interface GasOptions {
@@ -50,17 +50,29 @@ export function buildGas(world: PhysicsWorld, options: GasOptions = {}): GasHand
   const params: GasParams = { ...GAS_DEFAULTS, ...options };
   const { count, speed, radius } = params;
   const area = (count * Math.PI * radius * radius) / 0.12;
-  const height = Math.sqrt(area / 1.5), width = 1.5 * height;
+  const height = Math.sqrt(area / 1.5),
+    width = 1.5 * height;
   setBoundary(world, { min: [0, 0], max: [width, height], restitution: 1, friction: 0 });
-  const cols = Math.ceil(Math.sqrt(count * 1.5)), rows = Math.ceil(count / cols);
-  const dx = width / cols, dy = height / rows;
+  const cols = Math.ceil(Math.sqrt(count * 1.5)),
+    rows = Math.ceil(count / cols);
+  const dx = width / cols,
+    dy = height / rows;
   const rng = new Rng(params.seed);
   const molecules: number[] = [];
   for (let i = 0; i < count; i++) {
-    const x = (i % cols + 0.5) * dx + rng.range(-0.2, 0.2) * (dx - 2 * radius);
+    const x = ((i % cols) + 0.5) * dx + rng.range(-0.2, 0.2) * (dx - 2 * radius);
     const y = (Math.floor(i / cols) + 0.5) * dy + rng.range(-0.2, 0.2) * (dy - 2 * radius);
     const a = rng.range(0, 2 * Math.PI);
-    molecules.push(addBody(world, { position: [x, y], velocity: [speed * Math.cos(a), speed * Math.sin(a)], radius, mass: MOLECULE_MASS, restitution: 1, friction: 0 }));
+    molecules.push(
+      addBody(world, {
+        position: [x, y],
+        velocity: [speed * Math.cos(a), speed * Math.sin(a)],
+        radius,
+        mass: MOLECULE_MASS,
+        restitution: 1,
+        friction: 0,
+      }),
+    );
   }
   return { molecules, width, height, params };
 }

@@ -9,29 +9,41 @@
  * row; the hand holds them (the whole row waits at rest, the clock stopped) until you release them. Keys: P pause, N step, R reset (lifts `lift` balls by `angle` again).
  * URL: ?count (2-8), ?lift (1-7), ?angle (5-80 deg).
  */
-import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, slotOf, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+
+import {
+  createPhysicsWorld,
+  gravitationalPotentialEnergy,
+  kineticEnergy,
+  type PhysicsWorld,
+  step as physicsStep,
+  slotOf,
+} from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { BALL_MASS, CRADLE_DEFAULTS, buildCradle, cradleWorldOptions, liftBalls, type CradleHandles } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
+import { BALL_MASS, buildCradle, CRADLE_DEFAULTS, type CradleHandles, cradleWorldOptions, liftBalls } from './scene';
 
 const DEG = 180 / Math.PI;
 const USAGE = 'Accepted: count 2-8; lift 1-7; angle 5-80 deg.';
-const url = readUrlParams(() => ({
-  count: numberParam('count', { default: CRADLE_DEFAULTS.count, min: 2, max: 8, integer: true }),
-  lift: numberParam('lift', { default: 1, min: 1, max: 7, integer: true }),
-  angle: numberParam('angle', { default: 30, min: 5, max: 80 }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    count: numberParam('count', { default: CRADLE_DEFAULTS.count, min: 2, max: 8, integer: true }),
+    lift: numberParam('lift', { default: 1, min: 1, max: 7, integer: true }),
+    angle: numberParam('angle', { default: 30, min: 5, max: 80 }),
+  }),
+  USAGE,
+);
 
 const params = { ...url, release: () => shell.reset() };
 let handles: CradleHandles;
 const view: WorldRect = { minX: -1.4, minY: -1.25, maxX: 1.4, maxY: 0.15 };
 
 /** Index of the ball the pointer holds, -1 if none; `heldAngle` its string's angle, rad (negative: left). */
-let held = -1, heldAngle = 0;
+let held = -1,
+  heldAngle = 0;
 
 /** Energy and momentum now and at the release (live object, also on window.game). */
 const measure = { energy: 0, energy0: 0, momentum: 0, kinetic: 0, moving: 0 };
@@ -43,7 +55,8 @@ function createWorld(): PhysicsWorld {
   handles = buildCradle(world, { count: params.count });
   const k = Math.min(params.lift, params.count - 1);
   liftBalls(world, handles, 0, k - 1, -params.angle / DEG);
-  plot?.clear(); momentumPlot?.clear();
+  plot?.clear();
+  momentumPlot?.clear();
   measure.energy0 = totalEnergy(world);
   update(world);
   return world;
@@ -51,14 +64,26 @@ function createWorld(): PhysicsWorld {
 
 /** Kinetic plus potential energy, J (potential from the balls' lowest point, y = -L). */
 function totalEnergy(world: PhysicsWorld): number {
-  return kineticEnergy(world) + gravitationalPotentialEnergy(world) + handles.balls.length * BALL_MASS * world.gravity[1]! * -handles.params.length;
+  return (
+    kineticEnergy(world) +
+    gravitationalPotentialEnergy(world) +
+    handles.balls.length * BALL_MASS * world.gravity[1]! * -handles.params.length
+  );
 }
 
 function update(world: PhysicsWorld): void {
   const V = world.components.Velocity;
-  let p = 0, moving = 0;
-  for (const b of handles.balls) { const s = slotOf(b); p += BALL_MASS * V.x[s]!; if (Math.hypot(V.x[s]!, V.y[s]!) > 0.05) moving++; }
-  measure.energy = totalEnergy(world); measure.kinetic = kineticEnergy(world); measure.momentum = p; measure.moving = moving;
+  let p = 0,
+    moving = 0;
+  for (const b of handles.balls) {
+    const s = slotOf(b);
+    p += BALL_MASS * V.x[s]!;
+    if (Math.hypot(V.x[s]!, V.y[s]!) > 0.05) moving++;
+  }
+  measure.energy = totalEnergy(world);
+  measure.kinetic = kineticEnergy(world);
+  measure.momentum = p;
+  measure.moving = moving;
 }
 
 /**
@@ -67,7 +92,10 @@ function update(world: PhysicsWorld): void {
  * row before they are let go, nor leave at whatever speed they had gathered since the last move.
  */
 function labStep(world: PhysicsWorld): void {
-  if (held >= 0) { hold(world); return; }
+  if (held >= 0) {
+    hold(world);
+    return;
+  }
   physicsStep(world);
   update(world);
   plot?.push(world.time, measure.energy, measure.kinetic);
@@ -93,20 +121,37 @@ refit = followView(app, renderer.camera, dock, () => view);
 refit();
 
 const restart = (): void => shell.reset();
-const panel = createPanel(params, [
-  { type: 'slider', key: 'count', label: 'balls', min: 2, max: 8, step: 1, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'lift', label: 'balls lifted', min: 1, max: 7, step: 1, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'angle', label: 'lift angle (°)', min: 5, max: 80, step: 1, onRelease: true, onChange: restart },
-  { type: 'button', key: 'release', label: 'lift and release (R)' },
-], { title: "Newton's cradle", container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'count', label: 'balls', min: 2, max: 8, step: 1, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'lift', label: 'balls lifted', min: 1, max: 7, step: 1, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'angle', label: 'lift angle (°)', min: 5, max: 80, step: 1, onRelease: true, onChange: restart },
+    { type: 'button', key: 'release', label: 'lift and release (R)' },
+  ],
+  { title: "Newton's cradle", container: dock.panelSlot },
+);
 
 const readout = createReadout(shell.hud.readout, ['energy E', 'E / E at release', 'momentum pₓ', 'balls moving']);
 plot = createPlot({
-  parent: dock.charts, title: 'Energy', yLabel: 'E (J)', width: dock.chartWidth, height: 180, capacity: 1200,
-  series: [{ label: 'kinetic + potential', color: '#4cc9f0' }, { label: 'kinetic', color: '#f4a261' }],
+  parent: dock.charts,
+  title: 'Energy',
+  yLabel: 'E (J)',
+  width: dock.chartWidth,
+  height: 180,
+  capacity: 1200,
+  series: [
+    { label: 'kinetic + potential', color: '#4cc9f0' },
+    { label: 'kinetic', color: '#f4a261' },
+  ],
 });
 momentumPlot = createPlot({
-  parent: dock.charts, title: 'Momentum', yLabel: 'pₓ (kg m/s)', width: dock.chartWidth, height: 160, capacity: 1200,
+  parent: dock.charts,
+  title: 'Momentum',
+  yLabel: 'pₓ (kg m/s)',
+  width: dock.chartWidth,
+  height: 160,
+  capacity: 1200,
   series: [{ label: 'Σ m vₓ', color: '#90be6d' }],
 });
 shell.reset();
@@ -118,12 +163,17 @@ const pointer: Point2 = { x: 0, y: 0 };
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
   pointerOnCanvas(canvas, event, pointer);
-  const x = renderer.camera.toWorldX(pointer.x), y = renderer.camera.toWorldY(pointer.y);
+  const x = renderer.camera.toWorldX(pointer.x),
+    y = renderer.camera.toWorldY(pointer.y);
   const P = shell.world.components.Position;
-  let best = -1, bestD = Infinity;
+  let best = -1,
+    bestD = Infinity;
   handles.balls.forEach((b, i) => {
     const d = Math.hypot(P.x[slotOf(b)]! - x, P.y[slotOf(b)]! - y);
-    if (d < bestD) { bestD = d; best = i; }
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
   });
   if (best < 0 || bestD > 3 * handles.params.radius) return;
   held = best;
@@ -140,7 +190,8 @@ const letGo = (): void => {
   if (held < 0) return;
   held = -1;
   measure.energy0 = totalEnergy(shell.world);
-  plot?.clear(); momentumPlot?.clear();
+  plot?.clear();
+  momentumPlot?.clear();
 };
 canvas.addEventListener('pointerup', letGo);
 canvas.addEventListener('pointercancel', letGo);
@@ -149,7 +200,8 @@ canvas.addEventListener('lostpointercapture', letGo);
 /** Puts the row back in the held pose (ball `held` and those beyond it at `heldAngle`), all at rest. */
 function hold(world: PhysicsWorld): void {
   const n = handles.balls.length;
-  if (held < n / 2) liftBalls(world, handles, 0, held, heldAngle); else liftBalls(world, handles, held, n - 1, heldAngle);
+  if (held < n / 2) liftBalls(world, handles, 0, held, heldAngle);
+  else liftBalls(world, handles, held, n - 1, heldAngle);
   update(world);
 }
 
@@ -164,7 +216,8 @@ function liftTo(index: number, x: number, y: number): number {
   const [ax, ay] = handles.anchors[index]!;
   let a = Math.atan2(x - ax, -(y - ay));
   a = left ? Math.min(0, Math.max(-80 / DEG, a)) : Math.max(0, Math.min(80 / DEG, a));
-  if (left) liftBalls(shell.world, handles, 0, index, a); else liftBalls(shell.world, handles, index, n - 1, a);
+  if (left) liftBalls(shell.world, handles, 0, index, a);
+  else liftBalls(shell.world, handles, index, n - 1, a);
   if (index === held) heldAngle = a;
   update(shell.world);
   return a * DEG;
@@ -179,12 +232,16 @@ const at: Point2 = { x: 0, y: 0 };
 function drawOverlay(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
-  const x0 = cam.toScreenX(handles.anchors[0]![0] - 0.3), x1 = cam.toScreenX(handles.anchors[handles.anchors.length - 1]![0] + 0.3);
+  const x0 = cam.toScreenX(handles.anchors[0]![0] - 0.3),
+    x1 = cam.toScreenX(handles.anchors[handles.anchors.length - 1]![0] + 0.3);
   overlay.rect(x0, cam.toScreenY(0) - 6, x1 - x0, 6).fill({ color: 0x8d99ae });
   handles.balls.forEach((b, i) => {
     const [ax, ay] = handles.anchors[i]!;
     drawnPosition(world, b, alpha, at);
-    overlay.moveTo(cam.toScreenX(ax), cam.toScreenY(ay)).lineTo(cam.toScreenX(at.x), cam.toScreenY(at.y)).stroke({ width: 1.5, color: 0xd0d6e0, alpha: 0.8 });
+    overlay
+      .moveTo(cam.toScreenX(ax), cam.toScreenY(ay))
+      .lineTo(cam.toScreenX(at.x), cam.toScreenY(at.y))
+      .stroke({ width: 1.5, color: 0xd0d6e0, alpha: 0.8 });
   });
   updateReadout();
 }

@@ -5,7 +5,7 @@
  * and kinetic energy can only both be kept that way (Ramtal and Dobre ch. 11, collisions between
  * equal masses). A pure, deterministic builder; no DOM.
  */
-import { addBody, addDistanceJoint, setPosition, setVelocity, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import { addBody, addDistanceJoint, type PhysicsWorld, type PhysicsWorldOptions, setPosition, setVelocity } from '@bitphysics/physics';
 
 /** Options of the scene; every field optional. */
 export interface CradleOptions {
@@ -74,7 +74,8 @@ export function buildCradle(world: PhysicsWorld, options: CradleOptions = {}): C
 export function liftBalls(world: PhysicsWorld, h: CradleHandles, from: number, to: number, angle: number): void {
   const L = h.params.length;
   for (let i = 0; i < h.balls.length; i++) {
-    const b = h.balls[i]!, [ax, ay] = h.anchors[i]!;
+    const b = h.balls[i]!,
+      [ax, ay] = h.anchors[i]!;
     const a = i >= from && i <= to ? angle : 0;
     setPosition(world, b, [ax + L * Math.sin(a), ay - L * Math.cos(a)]);
     setVelocity(world, b, [0, 0]);

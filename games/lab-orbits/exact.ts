@@ -32,7 +32,11 @@ export function keplerPeriod(a: number, gm: number): number {
 }
 
 /** An orbit's shape: semi-major axis a (m), eccentricity e, argument of periapsis omega (rad). */
-export interface OrbitShape { a: number; e: number; omega: number }
+export interface OrbitShape {
+  a: number;
+  e: number;
+  omega: number;
+}
 
 /**
  * The conic a body at (x, y) with velocity (vx, vy) follows around G M at the origin (unsoftened):

@@ -10,23 +10,35 @@
  * nearest body, S selects the next one, X removes launched bodies. P pause, N step, R reset.
  * URL: ?planets (1-8), ?gm (1-500 m^3/s^2), ?softening (0-3 m), ?integrator, ?seed.
  */
-import { Graphics } from 'pixi.js';
+
 import {
-  INTEGRATOR_NAMES, createPhysicsWorld, step as physicsStep, totalEnergy, slotOf, type IntegratorName,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
   type PhysicsWorld,
+  step as physicsStep,
+  slotOf,
+  totalEnergy,
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import { createPlot } from '../shared/plot';
+import { conicRadius, keplerPeriod, type OrbitShape, orbitShape, semiMajorAxis, specificEnergy } from './exact';
 import {
-  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
-} from '../shared/lab-kit';
-import {
-  ESCAPE_DISTANCE, ORBITS_DEFAULTS, SUN_RADIUS, buildOrbits, launchBody, orbitsWorldOptions, outerRadius, removeOrbiter, setCentralMass,
+  buildOrbits,
+  ESCAPE_DISTANCE,
+  launchBody,
+  ORBITS_DEFAULTS,
   type OrbitsHandles,
+  orbitsWorldOptions,
+  outerRadius,
+  removeOrbiter,
+  SUN_RADIUS,
+  setCentralMass,
 } from './scene';
-import { conicRadius, keplerPeriod, orbitShape, semiMajorAxis, specificEnergy, type OrbitShape } from './exact';
 
 /** Launch velocity per metre of drag, 1/s. */
 const LAUNCH_GAIN = 1;
@@ -35,13 +47,16 @@ const CLICK_SLOP = 6;
 const SELECTED_COLOR = 0xffd166;
 
 const USAGE = `Accepted: planets 1-8 (integer); gm 1-500 m³/s²; softening 0-3 m; integrator = ${INTEGRATOR_NAMES.join(' | ')}; seed (integer).`;
-const url = readUrlParams(() => ({
-  planets: numberParam('planets', { default: ORBITS_DEFAULTS.planets, min: 1, max: 8, integer: true }),
-  gm: numberParam('gm', { default: ORBITS_DEFAULTS.gm, min: 1, max: 500 }),
-  softening: numberParam('softening', { default: ORBITS_DEFAULTS.softening, min: 0, max: 3 }),
-  integrator: choiceParam('integrator', INTEGRATOR_NAMES, ORBITS_DEFAULTS.integrator),
-  seed: seedParam(ORBITS_DEFAULTS.seed),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    planets: numberParam('planets', { default: ORBITS_DEFAULTS.planets, min: 1, max: 8, integer: true }),
+    gm: numberParam('gm', { default: ORBITS_DEFAULTS.gm, min: 1, max: 500 }),
+    softening: numberParam('softening', { default: ORBITS_DEFAULTS.softening, min: 0, max: 3 }),
+    integrator: choiceParam('integrator', INTEGRATOR_NAMES, ORBITS_DEFAULTS.integrator),
+    seed: seedParam(ORBITS_DEFAULTS.seed),
+  }),
+  USAGE,
+);
 
 const params = {
   ...url,
@@ -55,11 +70,20 @@ const view: WorldRect = { minX: -10, minY: -10, maxX: 10, maxY: 10 };
 
 /** Builds a fresh world from the params; the shell calls it at start and on R. */
 function createWorld(): PhysicsWorld {
-  const options = { planets: params.planets, gm: params.gm, softening: params.softening, integrator: params.integrator as IntegratorName, seed: params.seed };
+  const options = {
+    planets: params.planets,
+    gm: params.gm,
+    softening: params.softening,
+    integrator: params.integrator as IntegratorName,
+    seed: params.seed,
+  };
   const world = createPhysicsWorld(orbitsWorldOptions(options));
   handles = buildOrbits(world, options);
   const R = outerRadius(params.planets) + 0.5;
-  view.minX = -R; view.maxX = R; view.minY = -R; view.maxY = R;
+  view.minX = -R;
+  view.maxX = R;
+  view.minY = -R;
+  view.maxY = R;
   refit?.();
   select(world, handles.planets[Math.min(1, handles.planets.length - 1)] ?? 0);
   return world;
@@ -87,28 +111,47 @@ const orbit = {
   /** Total energy of the world when selected (package `totalEnergy`), J. */
   total0: Number.NaN,
 };
-let swept = 0, lastAngle = 0, lastTurnTime = 0;
+let swept = 0,
+  lastAngle = 0,
+  lastTurnTime = 0;
 const shape: OrbitShape = { a: 0, e: 0, omega: 0 };
 const keplerPath = new PathBuffer(361);
 const orbitPath = new PathBuffer(1500);
 
 /** Specific energy of body `eid` of `world`, J/kg (see exact.ts). */
 function energyOf(world: PhysicsWorld, eid: number): number {
-  const P = world.components.Position, V = world.components.Velocity;
-  return specificEnergy(P.x[slotOf(eid)]!, P.y[slotOf(eid)]!, V.x[slotOf(eid)]!, V.y[slotOf(eid)]!, handles.params.gm, handles.params.softening);
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  return specificEnergy(
+    P.x[slotOf(eid)]!,
+    P.y[slotOf(eid)]!,
+    V.x[slotOf(eid)]!,
+    V.y[slotOf(eid)]!,
+    handles.params.gm,
+    handles.params.softening,
+  );
 }
 
 /** Selects body `eid` (0 for none): restarts the energy chart, the period measurement and the paths. */
 function select(world: PhysicsWorld, eid: number): void {
   orbit.eid = eid;
-  orbit.turns = 0; orbit.measuredPeriod = Number.NaN; orbit.maxDrift = 0;
-  swept = 0; lastTurnTime = world.time;
-  orbitPath.clear(); keplerPath.clear();
+  orbit.turns = 0;
+  orbit.measuredPeriod = Number.NaN;
+  orbit.maxDrift = 0;
+  swept = 0;
+  lastTurnTime = world.time;
+  orbitPath.clear();
+  keplerPath.clear();
   plot?.clear();
   orbit.total0 = totalEnergy(world);
-  if (eid === 0) { orbit.e0 = orbit.energy = orbit.a = orbit.keplerPeriod = Number.NaN; return; }
-  const P = world.components.Position, V = world.components.Velocity;
-  const x = P.x[slotOf(eid)]!, y = P.y[slotOf(eid)]!;
+  if (eid === 0) {
+    orbit.e0 = orbit.energy = orbit.a = orbit.keplerPeriod = Number.NaN;
+    return;
+  }
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  const x = P.x[slotOf(eid)]!,
+    y = P.y[slotOf(eid)]!;
   lastAngle = Math.atan2(y, x);
   orbit.e0 = orbit.energy = energyOf(world, eid);
   orbit.a = semiMajorAxis(orbit.e0, handles.params.gm);
@@ -150,13 +193,15 @@ function labStep(world: PhysicsWorld): void {
   const P = world.components.Position;
   const e = orbit.eid;
   if (e === 0) return;
-  const x = P.x[slotOf(e)]!, y = P.y[slotOf(e)]!;
+  const x = P.x[slotOf(e)]!,
+    y = P.y[slotOf(e)]!;
   orbit.energy = energyOf(world, e);
   if (orbit.e0 !== 0) orbit.maxDrift = Math.max(orbit.maxDrift, Math.abs((orbit.energy - orbit.e0) / orbit.e0));
   // Angle swept since selection; each full turn ends a measured period (crossing time interpolated).
   const angle = Math.atan2(y, x);
   let d = angle - lastAngle;
-  if (d > Math.PI) d -= 2 * Math.PI; else if (d < -Math.PI) d += 2 * Math.PI;
+  if (d > Math.PI) d -= 2 * Math.PI;
+  else if (d < -Math.PI) d += 2 * Math.PI;
   const before = swept;
   swept += d;
   lastAngle = angle;
@@ -200,21 +245,37 @@ const { shell, renderer, app } = game;
 const dock = createLabDock();
 refit = followView(app, renderer.camera, dock, () => view);
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'gm', label: 'G M (m³/s²)', min: 1, max: 500, step: 0.5, onChange: () => applyCentralMass() },
-  { type: 'slider', key: 'softening', label: 'softening (m)', min: 0, max: 3, step: 0.01, onChange: () => applyCentralMass() },
-  {
-    type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: (name) => {
-      // The world reads its scheme by name every step: switching needs no rebuild.
-      shell.world.integrator = name as IntegratorName;
-      select(shell.world, orbit.eid);
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'gm', label: 'G M (m³/s²)', min: 1, max: 500, step: 0.5, onChange: () => applyCentralMass() },
+    { type: 'slider', key: 'softening', label: 'softening (m)', min: 0, max: 3, step: 0.01, onChange: () => applyCentralMass() },
+    {
+      type: 'choice',
+      key: 'integrator',
+      options: INTEGRATOR_NAMES,
+      onChange: (name) => {
+        // The world reads its scheme by name every step: switching needs no rebuild.
+        shell.world.integrator = name as IntegratorName;
+        select(shell.world, orbit.eid);
+      },
     },
-  },
-  { type: 'slider', key: 'planets', label: 'planets (rebuilds)', min: 1, max: 8, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'trails', onChange: (on) => renderer.setTrails(on === true ? trailOptions : false) },
-  { type: 'button', key: 'clearLaunched', label: 'remove launched bodies (X)' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Orbits', container: dock.panelSlot });
+    {
+      type: 'slider',
+      key: 'planets',
+      label: 'planets (rebuilds)',
+      min: 1,
+      max: 8,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'trails', onChange: (on) => renderer.setTrails(on === true ? trailOptions : false) },
+    { type: 'button', key: 'clearLaunched', label: 'remove launched bodies (X)' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Orbits', container: dock.panelSlot },
+);
 
 /** Applies the panel's G M and softening to the running world and restarts the selected orbit's measurements. */
 function applyCentralMass(): void {
@@ -223,12 +284,27 @@ function applyCentralMass(): void {
 }
 
 const readout = createReadout(shell.hud.readout, [
-  'selected body', 'energy E (J/kg)', 'E₀ at selection', 'max |E − E₀|/|E₀|', 'a = −GM/2E₀',
-  'Kepler 2π√(a³/GM)', 'measured period', 'turns', 'drift of the total energy',
+  'selected body',
+  'energy E (J/kg)',
+  'E₀ at selection',
+  'max |E − E₀|/|E₀|',
+  'a = −GM/2E₀',
+  'Kepler 2π√(a³/GM)',
+  'measured period',
+  'turns',
+  'drift of the total energy',
 ]);
 plot = createPlot({
-  parent: dock.charts, title: 'Energy of the selected orbit', yLabel: 'E (J/kg)', width: dock.chartWidth, height: 190, capacity: 2400,
-  series: [{ label: 'E(t)', color: '#ffd166' }, { label: 'E₀ (initial)', color: '#e6e9ef', dashed: true }],
+  parent: dock.charts,
+  title: 'Energy of the selected orbit',
+  yLabel: 'E (J/kg)',
+  width: dock.chartWidth,
+  height: 190,
+  capacity: 2400,
+  series: [
+    { label: 'E(t)', color: '#ffd166' },
+    { label: 'E₀ (initial)', color: '#e6e9ef', dashed: true },
+  ],
 });
 select(shell.world, orbit.eid);
 
@@ -250,15 +326,18 @@ function clearLaunched(): void {
 // ---- Pointer: drag launches, click selects --------------------------------------------------------
 
 const canvas = app.canvas;
-const down: Point2 = { x: 0, y: 0 }, now: Point2 = { x: 0, y: 0 };
-let pointerId = -1, dragged = false;
+const down: Point2 = { x: 0, y: 0 },
+  now: Point2 = { x: 0, y: 0 };
+let pointerId = -1,
+  dragged = false;
 
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0 || pointerId !== -1) return;
   pointerId = event.pointerId;
   canvas.setPointerCapture(event.pointerId);
   pointerOnCanvas(canvas, event, down);
-  now.x = down.x; now.y = down.y;
+  now.x = down.x;
+  now.y = down.y;
   dragged = false;
 });
 canvas.addEventListener('pointermove', (event) => {
@@ -271,7 +350,8 @@ canvas.addEventListener('pointerup', (event) => {
   pointerId = -1;
   pointerOnCanvas(canvas, event, now);
   const cam = renderer.camera;
-  const x = cam.toWorldX(down.x), y = cam.toWorldY(down.y);
+  const x = cam.toWorldX(down.x),
+    y = cam.toWorldY(down.y);
   if (dragged) {
     if (Math.hypot(x, y) < SUN_RADIUS) return;
     launch(x, y, (cam.toWorldX(now.x) - x) * LAUNCH_GAIN, (cam.toWorldY(now.y) - y) * LAUNCH_GAIN);
@@ -279,7 +359,9 @@ canvas.addEventListener('pointerup', (event) => {
     selectNearest(x, y);
   }
 });
-canvas.addEventListener('pointercancel', (event) => { if (event.pointerId === pointerId) pointerId = -1; });
+canvas.addEventListener('pointercancel', (event) => {
+  if (event.pointerId === pointerId) pointerId = -1;
+});
 
 /** Launches a body at (x, y), m, with velocity (vx, vy), m/s, and selects it. @returns its id. */
 function launch(x: number, y: number, vx: number, vy: number): number {
@@ -291,10 +373,14 @@ function launch(x: number, y: number, vx: number, vy: number): number {
 /** Selects the body nearest to world point (x, y), m. @returns its id (0 if there is none). */
 function selectNearest(x: number, y: number): number {
   const P = shell.world.components.Position;
-  let best = 0, bestD = Infinity;
+  let best = 0,
+    bestD = Infinity;
   for (const e of orbiters()) {
     const d = Math.hypot(P.x[slotOf(e)]! - x, P.y[slotOf(e)]! - y);
-    if (d < bestD) { bestD = d; best = e; }
+    if (d < bestD) {
+      bestD = d;
+      best = e;
+    }
   }
   if (best !== 0) select(shell.world, best);
   return best;
@@ -310,14 +396,18 @@ const at: Point2 = { x: 0, y: 0 };
 function drawOverlay(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
-  const sx = cam.toScreenX(0), sy = cam.toScreenY(0), sr = Math.max(5, cam.toScreenLength(SUN_RADIUS));
+  const sx = cam.toScreenX(0),
+    sy = cam.toScreenY(0),
+    sr = Math.max(5, cam.toScreenLength(SUN_RADIUS));
   overlay.circle(sx, sy, sr * 1.8).fill({ color: 0xffb703, alpha: 0.12 });
   overlay.circle(sx, sy, sr).fill({ color: 0xffd166 });
   if (keplerPath.count > 1) keplerPath.draw(overlay, cam, 1.5, 0xe6e9ef, 0.55, true);
   if (orbit.eid !== 0) {
     drawnPosition(world, orbit.eid, alpha, at);
     orbitPath.draw(overlay, cam, 1.5, SELECTED_COLOR, 0.6, false, at.x, at.y);
-    overlay.circle(cam.toScreenX(at.x), cam.toScreenY(at.y), Math.max(7, cam.toScreenLength(0.3))).stroke({ width: 2, color: SELECTED_COLOR });
+    overlay
+      .circle(cam.toScreenX(at.x), cam.toScreenY(at.y), Math.max(7, cam.toScreenLength(0.3)))
+      .stroke({ width: 2, color: SELECTED_COLOR });
   }
   if (pointerId !== -1 && dragged) {
     drawDashedLine(overlay, down.x, down.y, now.x, now.y, 2, 0xffffff, 0.7, 6, 4);

@@ -6,8 +6,15 @@
  * attractor pulls. A pure, deterministic builder; no DOM.
  */
 import {
-  INTEGRATOR_NAMES, Rng, addBody, removeBody, setAttractor, setGravitation,
-  type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  Rng,
+  removeBody,
+  setAttractor,
+  setGravitation,
 } from '@bitphysics/physics';
 
 /** Options of the scene; every field optional. */
@@ -28,7 +35,13 @@ export interface OrbitsOptions {
 export type OrbitsParams = Required<OrbitsOptions>;
 
 /** Defaults. */
-export const ORBITS_DEFAULTS: Readonly<OrbitsParams> = Object.freeze({ planets: 5, gm: 50, softening: 0, integrator: 'semi-implicit-euler', seed: 1 });
+export const ORBITS_DEFAULTS: Readonly<OrbitsParams> = Object.freeze({
+  planets: 5,
+  gm: 50,
+  softening: 0,
+  integrator: 'semi-implicit-euler',
+  seed: 1,
+});
 
 /** Radius the sun is drawn with, m; a body closer than this to its centre falls in and is removed. */
 export const SUN_RADIUS = 0.5;
@@ -58,12 +71,15 @@ export interface OrbitsHandles {
  */
 export function resolveOrbitsOptions(options: OrbitsOptions = {}): OrbitsParams {
   for (const k of Object.keys(options)) {
-    if (!(k in ORBITS_DEFAULTS)) throw new TypeError(`lab-orbits: unknown option ${JSON.stringify(k)}; known: ${Object.keys(ORBITS_DEFAULTS).join(', ')}`);
+    if (!(k in ORBITS_DEFAULTS))
+      throw new TypeError(`lab-orbits: unknown option ${JSON.stringify(k)}; known: ${Object.keys(ORBITS_DEFAULTS).join(', ')}`);
   }
   const p = { ...ORBITS_DEFAULTS, ...options } as OrbitsParams;
-  if (!(Number.isInteger(p.planets) && p.planets >= 1 && p.planets <= 8)) throw new RangeError(`lab-orbits: planets must be an integer in [1, 8], got ${String(p.planets)}`);
+  if (!(Number.isInteger(p.planets) && p.planets >= 1 && p.planets <= 8))
+    throw new RangeError(`lab-orbits: planets must be an integer in [1, 8], got ${String(p.planets)}`);
   if (!(p.gm >= 1 && p.gm <= 500)) throw new RangeError(`lab-orbits: gm must be in [1, 500] m^3/s^2, got ${String(p.gm)}`);
-  if (!(p.softening >= 0 && p.softening <= 3)) throw new RangeError(`lab-orbits: softening must be in [0, 3] m, got ${String(p.softening)}`);
+  if (!(p.softening >= 0 && p.softening <= 3))
+    throw new RangeError(`lab-orbits: softening must be in [0, 3] m, got ${String(p.softening)}`);
   if (!(INTEGRATOR_NAMES as readonly string[]).includes(p.integrator)) {
     throw new RangeError(`lab-orbits: integrator must be one of ${INTEGRATOR_NAMES.join(', ')}, got ${JSON.stringify(p.integrator)}`);
   }
@@ -79,7 +95,7 @@ export function orbitsWorldOptions(options: OrbitsOptions = {}): PhysicsWorldOpt
 
 /** Largest distance from the sun any planet of `planets` reaches, m (apoapsis bound). */
 export function outerRadius(planets: number): number {
-  return FIRST_ORBIT * Math.pow(ORBIT_RATIO, planets - 1) * 1.1;
+  return FIRST_ORBIT * ORBIT_RATIO ** (planets - 1) * 1.1;
 }
 
 /**
@@ -95,15 +111,25 @@ export function buildOrbits(world: PhysicsWorld, options: OrbitsOptions = {}): O
   const h: OrbitsHandles = { sun, planets: [], launched: [], params: p };
   const rng = new Rng(p.seed);
   for (let i = 0; i < p.planets; i++) {
-    const a = FIRST_ORBIT * Math.pow(ORBIT_RATIO, i);
+    const a = FIRST_ORBIT * ORBIT_RATIO ** i;
     const e = rng.range(0, 0.1);
     const phi = rng.range(0, 2 * Math.PI);
     // Start at periapsis r_p = a (1 - e) with the vis-viva speed v_p = sqrt(G M (1 + e) / (a (1 - e)))
     // (Kepler orbit set-up; Ramtal and Dobre ch. 6), moving counter-clockwise.
     const rp = a * (1 - e);
     const vp = Math.sqrt((p.gm * (1 + e)) / rp);
-    const c = Math.cos(phi), s = Math.sin(phi);
-    h.planets.push(addBody(world, { position: [rp * c, rp * s], velocity: [-vp * s, vp * c], radius: 0.12 + 0.03 * (i % 3), mass: 1, restitution: 1, friction: 0 }));
+    const c = Math.cos(phi),
+      s = Math.sin(phi);
+    h.planets.push(
+      addBody(world, {
+        position: [rp * c, rp * s],
+        velocity: [-vp * s, vp * c],
+        radius: 0.12 + 0.03 * (i % 3),
+        mass: 1,
+        restitution: 1,
+        friction: 0,
+      }),
+    );
   }
   return h;
 }
@@ -114,10 +140,16 @@ export function buildOrbits(world: PhysicsWorld, options: OrbitsOptions = {}): O
  * @returns its entity id. @throws RangeError on non-finite input or a point inside the sun.
  */
 export function launchBody(world: PhysicsWorld, h: OrbitsHandles, x: number, y: number, vx: number, vy: number): number {
-  for (const [name, v] of [['x', x], ['y', y], ['vx', vx], ['vy', vy]] as const) {
+  for (const [name, v] of [
+    ['x', x],
+    ['y', y],
+    ['vx', vx],
+    ['vy', vy],
+  ] as const) {
     if (!Number.isFinite(v)) throw new RangeError(`lab-orbits: launch ${name} must be finite, got ${v}`);
   }
-  if (Math.hypot(x, y) < SUN_RADIUS) throw new RangeError(`lab-orbits: cannot launch inside the sun (r = ${Math.hypot(x, y).toFixed(2)} m < ${SUN_RADIUS} m)`);
+  if (Math.hypot(x, y) < SUN_RADIUS)
+    throw new RangeError(`lab-orbits: cannot launch inside the sun (r = ${Math.hypot(x, y).toFixed(2)} m < ${SUN_RADIUS} m)`);
   if (h.launched.length >= LAUNCH_BUDGET) removeOrbiter(world, h, h.launched[0]!);
   const eid = addBody(world, { position: [x, y], velocity: [vx, vy], radius: 0.14, mass: 1, restitution: 1, friction: 0 });
   h.launched.push(eid);

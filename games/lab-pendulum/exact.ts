@@ -25,7 +25,8 @@ export function smallAngle(theta0: number, g: number, L: number, b: number, m: n
   }
   if (disc >= -1e-12 * w0 * w0) return theta0 * Math.exp(-gamma * t) * (1 + gamma * t);
   const s = Math.sqrt(-disc);
-  const r1 = -gamma - s, r2 = -gamma + s;
+  const r1 = -gamma - s,
+    r2 = -gamma + s;
   return (theta0 * (r2 * Math.exp(r1 * t) - r1 * Math.exp(r2 * t))) / (r2 - r1);
 }
 

@@ -9,15 +9,16 @@
  * Input: click places the bob (sets length and amplitude) and releases it. Keys: P pause, N step, R reset.
  * URL: ?length (0.2-20 m), ?amplitude (-179-179 deg), ?g (0.5-30 m/s^2), ?damping (0-5 N s/m).
  */
-import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+
+import { createPhysicsWorld, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlot } from '../shared/plot';
 import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { BOB_MASS, PENDULUM_DEFAULTS, PENDULUM_RANGES, buildPendulum, pendulumWorldOptions, type PendulumHandles } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
 import { largeAmplitudePeriod, smallAngle, smallAnglePeriod } from './exact';
+import { BOB_MASS, buildPendulum, PENDULUM_DEFAULTS, PENDULUM_RANGES, type PendulumHandles, pendulumWorldOptions } from './scene';
 
 const DEG = 180 / Math.PI;
 const BOB_COLOR = 0x4cc9f0;
@@ -56,29 +57,39 @@ const swing = {
   /** Largest relative stretch of the rod, (|r| - L) / L. */
   maxStretch: 0,
 };
-let lastAngle = 0, lastCrossing = Number.NaN;
+let lastAngle = 0,
+  lastCrossing = Number.NaN;
 
 /** Builds a fresh pendulum from the params; the shell calls it at start and on R. */
 function createWorld(): PhysicsWorld {
   const { length, amplitude, gravity, damping } = params;
   const world = createPhysicsWorld(pendulumWorldOptions({ length, amplitude, gravity, damping }));
   handles = buildPendulum(world, { length, amplitude, gravity, damping });
-  const L = length, a = amplitude / DEG;
+  const L = length,
+    a = amplitude / DEG;
   const up = Math.max(0.35 * L, -L * Math.cos(a) + 0.25 * L);
-  view.minX = -1.2 * L; view.maxX = 1.2 * L; view.minY = -1.2 * L; view.maxY = up;
+  view.minX = -1.2 * L;
+  view.maxX = 1.2 * L;
+  view.minY = -1.2 * L;
+  view.maxY = up;
   refit?.();
   swing.angle = swing.exact = a;
-  swing.measuredPeriod = Number.NaN; swing.crossings = 0; swing.maxDeviation = 0; swing.maxStretch = 0;
+  swing.measuredPeriod = Number.NaN;
+  swing.crossings = 0;
+  swing.maxDeviation = 0;
+  swing.maxStretch = 0;
   swing.smallAnglePeriod = smallAnglePeriod(L, gravity);
   swing.exactPeriod = damping === 0 ? largeAmplitudePeriod(L, gravity, a) : Number.NaN;
-  lastAngle = a; lastCrossing = Number.NaN;
+  lastAngle = a;
+  lastCrossing = Number.NaN;
   plot?.clear();
   return world;
 }
 
 /** The bob's angle from the downward vertical, rad (counter-clockwise positive). */
 function angleOf(world: PhysicsWorld): number {
-  const P = world.components.Position, b = handles.bob;
+  const P = world.components.Position,
+    b = handles.bob;
   return Math.atan2(P.x[b]! - handles.anchor[0], -(P.y[b]! - handles.anchor[1]));
 }
 
@@ -127,20 +138,38 @@ paint();
 shell.onWorldChange(paint);
 
 const restart = (): void => shell.reset();
-const panel = createPanel(params, [
-  { type: 'slider', key: 'length', label: 'length L (m)', min: 0.2, max: 10, step: 0.01, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'amplitude', label: 'amplitude θ₀ (°)', min: -179, max: 179, step: 0.5, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'gravity', label: 'gravity g (m/s²)', min: 0.5, max: 30, step: 0.01, onRelease: true, onChange: restart },
-  { type: 'slider', key: 'damping', label: 'damping b (N s/m)', min: 0, max: 5, step: 0.01, onRelease: true, onChange: restart },
-  { type: 'button', key: 'release', label: 'release again (R)' },
-], { title: 'Pendulum', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'length', label: 'length L (m)', min: 0.2, max: 10, step: 0.01, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'amplitude', label: 'amplitude θ₀ (°)', min: -179, max: 179, step: 0.5, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'gravity', label: 'gravity g (m/s²)', min: 0.5, max: 30, step: 0.01, onRelease: true, onChange: restart },
+    { type: 'slider', key: 'damping', label: 'damping b (N s/m)', min: 0, max: 5, step: 0.01, onRelease: true, onChange: restart },
+    { type: 'button', key: 'release', label: 'release again (R)' },
+  ],
+  { title: 'Pendulum', container: dock.panelSlot },
+);
 
 const readout = createReadout(shell.hud.readout, [
-  'angle θ', '2π√(L/g)', 'exact, any amplitude', 'measured period', 'measured / 2π√(L/g)', 'max |θ − θ_small|', 'rod stretch (max)',
+  'angle θ',
+  '2π√(L/g)',
+  'exact, any amplitude',
+  'measured period',
+  'measured / 2π√(L/g)',
+  'max |θ − θ_small|',
+  'rod stretch (max)',
 ]);
 plot = createPlot({
-  parent: dock.charts, title: 'Angle', yLabel: 'θ (°)', width: dock.chartWidth, height: 220, capacity: 1200,
-  series: [{ label: 'simulated', color: '#4cc9f0' }, { label: 'small-angle θ₀ cos(√(g/L) t)', color: '#e6e9ef', dashed: true }],
+  parent: dock.charts,
+  title: 'Angle',
+  yLabel: 'θ (°)',
+  width: dock.chartWidth,
+  height: 220,
+  capacity: 1200,
+  series: [
+    { label: 'simulated', color: '#4cc9f0' },
+    { label: 'small-angle θ₀ cos(√(g/L) t)', color: '#e6e9ef', dashed: true },
+  ],
 });
 shell.reset();
 
@@ -159,7 +188,8 @@ canvas.addEventListener('pointerdown', (event) => {
  * anchor (clamped to the panel's ranges), then releases it. @returns the new length (m) and amplitude (deg).
  */
 function placeAt(x: number, y: number): { length: number; amplitude: number } {
-  const dx = x - handles.anchor[0], dy = y - handles.anchor[1];
+  const dx = x - handles.anchor[0],
+    dy = y - handles.anchor[1];
   params.length = Math.round(Math.min(10, Math.max(0.2, Math.hypot(dx, dy))) * 100) / 100;
   params.amplitude = Math.round(Math.min(179, Math.max(-179, Math.atan2(dx, -dy) * DEG)) * 2) / 2;
   panel.refresh();
@@ -178,13 +208,15 @@ function drawOverlay(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
   const p = handles.params;
-  const ax = cam.toScreenX(handles.anchor[0]), ay = cam.toScreenY(handles.anchor[1]);
+  const ax = cam.toScreenX(handles.anchor[0]),
+    ay = cam.toScreenY(handles.anchor[1]);
   const Lpx = cam.toScreenLength(p.length);
   // Arc of the starting amplitude (both sides), faint.
   const a0 = Math.abs(p.amplitude) / DEG;
   overlay.arc(ax, ay, Lpx, Math.PI / 2 - a0, Math.PI / 2 + a0).stroke({ width: 1, color: 0x98a2b3, alpha: 0.35 });
   // Ghost: where the small-angle solution puts the bob now.
-  const gx = ax + Lpx * Math.sin(swing.exact), gy = ay + Lpx * Math.cos(swing.exact);
+  const gx = ax + Lpx * Math.sin(swing.exact),
+    gy = ay + Lpx * Math.cos(swing.exact);
   const br = Math.max(4, cam.toScreenLength(handles.bobRadius));
   overlay.moveTo(ax, ay).lineTo(gx, gy).stroke({ width: 1, color: 0xe6e9ef, alpha: 0.3 });
   overlay.circle(gx, gy, br).stroke({ width: 1.5, color: 0xe6e9ef, alpha: 0.55 });

@@ -10,7 +10,7 @@
  * (setDrag), F = -b v. Velocity Verlet with 8 substeps (h = 1/480 s) resolves the rod's vibration
  * (omega h = 0.2). A pure, deterministic builder; no DOM.
  */
-import { addBody, addSpring, setDrag, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import { addBody, addSpring, type PhysicsWorld, type PhysicsWorldOptions, setDrag } from '@bitphysics/physics';
 
 /** Mass of the bob, kg. */
 export const BOB_MASS = 1;
@@ -64,12 +64,14 @@ export interface PendulumHandles {
  */
 export function resolvePendulumOptions(options: PendulumOptions = {}): PendulumParams {
   for (const k of Object.keys(options)) {
-    if (!(k in PENDULUM_DEFAULTS)) throw new TypeError(`lab-pendulum: unknown option ${JSON.stringify(k)}; known: ${Object.keys(PENDULUM_DEFAULTS).join(', ')}`);
+    if (!(k in PENDULUM_DEFAULTS))
+      throw new TypeError(`lab-pendulum: unknown option ${JSON.stringify(k)}; known: ${Object.keys(PENDULUM_DEFAULTS).join(', ')}`);
   }
   const p = { ...PENDULUM_DEFAULTS, ...options } as PendulumParams;
   for (const [key, [min, max]] of Object.entries(PENDULUM_RANGES)) {
     const v = p[key as keyof PendulumParams];
-    if (!(typeof v === 'number' && v >= min && v <= max)) throw new RangeError(`lab-pendulum: ${key} must be a number in [${min}, ${max}], got ${String(v)}`);
+    if (!(typeof v === 'number' && v >= min && v <= max))
+      throw new RangeError(`lab-pendulum: ${key} must be a number in [${min}, ${max}], got ${String(v)}`);
   }
   return p;
 }
@@ -92,7 +94,10 @@ export function buildPendulum(world: PhysicsWorld, options: PendulumOptions = {}
   const a = (p.amplitude * Math.PI) / 180;
   const bobRadius = Math.max(0.04, 0.06 * p.length);
   const bob = addBody(world, {
-    position: [anchor[0] + p.length * Math.sin(a), anchor[1] - p.length * Math.cos(a)], radius: bobRadius, mass: BOB_MASS, rotates: false,
+    position: [anchor[0] + p.length * Math.sin(a), anchor[1] - p.length * Math.cos(a)],
+    radius: bobRadius,
+    mass: BOB_MASS,
+    rotates: false,
   });
   setDrag(world, bob, { linear: p.damping });
   // Rest length shortened by the static stretch m g / k, so that the hanging length is L.

@@ -6,12 +6,19 @@
 
 /** A launch: position (m), velocity (m/s), gravity g (m/s^2, downwards, > 0). */
 export interface Launch {
-  x0: number; y0: number; vx0: number; vy0: number; g: number;
+  x0: number;
+  y0: number;
+  vx0: number;
+  vy0: number;
+  g: number;
 }
 
 /** State at time t: position (m) and velocity (m/s). Written in place by the functions below. */
 export interface KinematicState {
-  x: number; y: number; vx: number; vy: number;
+  x: number;
+  y: number;
+  vx: number;
+  vy: number;
 }
 
 /**

@@ -11,22 +11,33 @@
  * URL: ?law=none|linear|quadratic, ?k (coefficient of that law), ?speed, ?angle, ?mass, ?height,
  * ?g, ?integrator. Bad values stop the page with a message naming the parameter.
  */
-import { Graphics } from 'pixi.js';
+
 import {
-  INTEGRATOR_NAMES, contactCount, createPhysicsWorld, step as physicsStep, type IntegratorName, type PhysicsWorld,
+  contactCount,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  step as physicsStep,
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import { createPlot } from '../shared/plot';
+import { type KinematicState, type Launch, linearDragState, linearTerminalSpeed, noDragState, quadraticTerminalSpeed } from './exact';
 import {
-  PathBuffer, createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams,
-} from '../shared/lab-kit';
-import {
-  BALL_RADIUS, DRAG_LAWS, PROJECTILE_DEFAULTS, PROJECTILE_RANGES, buildProjectile, projectileWorldOptions,
-  type DragLaw, type ProjectileHandles, type ProjectileOptions,
+  BALL_RADIUS,
+  buildProjectile,
+  DRAG_LAWS,
+  type DragLaw,
+  PROJECTILE_DEFAULTS,
+  PROJECTILE_RANGES,
+  type ProjectileHandles,
+  type ProjectileOptions,
+  projectileWorldOptions,
 } from './scene';
-import { linearDragState, linearTerminalSpeed, noDragState, quadraticTerminalSpeed, type KinematicState, type Launch } from './exact';
 
 /** Colour of each drag law's path and ball. */
 const LAW_COLOR: Record<DragLaw, number> = { none: 0x8ecae6, linear: 0xffb703, quadratic: 0xfb5607 };
@@ -35,13 +46,18 @@ const KEPT_PATHS = 4;
 /** Longest flight recorded, s (at 60 steps/s). */
 const MAX_FLIGHT = 40;
 
-const USAGE = 'Accepted: law = none | linear | quadratic; k = drag coefficient of that law (linear 0-50 N s/m, quadratic 0-5 kg/m); ' +
+const USAGE =
+  'Accepted: law = none | linear | quadratic; k = drag coefficient of that law (linear 0-50 N s/m, quadratic 0-5 kg/m); ' +
   `speed 0-100 m/s; angle -90-180 deg; mass 0.01-100 kg; height 1-100 m; g 0.1-50 m/s²; integrator = ${INTEGRATOR_NAMES.join(' | ')}.`;
 
 const url = readUrlParams(() => {
   const law = choiceParam('law', DRAG_LAWS, PROJECTILE_DEFAULTS.law);
   const kMax = law === 'quadratic' ? PROJECTILE_RANGES.quadraticK[1] : PROJECTILE_RANGES.linearK[1];
-  const k = numberParam('k', { default: law === 'quadratic' ? PROJECTILE_DEFAULTS.quadraticK : PROJECTILE_DEFAULTS.linearK, min: 0, max: kMax });
+  const k = numberParam('k', {
+    default: law === 'quadratic' ? PROJECTILE_DEFAULTS.quadraticK : PROJECTILE_DEFAULTS.linearK,
+    min: 0,
+    max: kMax,
+  });
   const range = (name: string, key: keyof typeof PROJECTILE_RANGES, fallback: number) =>
     numberParam(name, { default: fallback, min: PROJECTILE_RANGES[key][0], max: PROJECTILE_RANGES[key][1] });
   return {
@@ -99,8 +115,14 @@ let handles: ProjectileHandles;
 /** The exact state at time t for the current law into `exact`; false when there is none (quadratic drag). */
 function exactAt(t: number): boolean {
   const p = handles.params;
-  if (p.law === 'none') { noDragState(launch, t, exact); return true; }
-  if (p.law === 'linear') { linearDragState(launch, p.mass, p.linearK, t, exact); return true; }
+  if (p.law === 'none') {
+    noDragState(launch, t, exact);
+    return true;
+  }
+  if (p.law === 'linear') {
+    linearDragState(launch, p.mass, p.linearK, t, exact);
+    return true;
+  }
   return false;
 }
 
@@ -120,27 +142,43 @@ function fitFlightView(): void {
   const w = createPhysicsWorld(projectileWorldOptions(sceneOptions()));
   const h = buildProjectile(w, sceneOptions());
   const P = w.components.Position;
-  let minX = -4, maxX = 4, minY = 0, maxY = h.y0 + 1;
+  let minX = -4,
+    maxX = 4,
+    minY = 0,
+    maxY = h.y0 + 1;
   for (let i = 0; i < MAX_FLIGHT * 60; i++) {
     physicsStep(w);
-    const x = P.x[h.ball]!, y = P.y[h.ball]!;
-    if (x < minX) minX = x; if (x > maxX) maxX = x;
-    if (y > maxY) maxY = y; if (y < minY) minY = y;
+    const x = P.x[h.ball]!,
+      y = P.y[h.ball]!;
+    if (x < minX) minX = x;
+    if (x > maxX) maxX = x;
+    if (y > maxY) maxY = y;
+    if (y < minY) minY = y;
     if (contactCount(w) > 0) break;
   }
-  const wx = maxX - minX, wy = maxY - minY;
-  view.minX = minX - 0.08 * wx; view.maxX = maxX + 0.08 * wx;
-  view.minY = minY - 0.05 * wy - 0.5; view.maxY = maxY + 0.1 * wy + 0.5;
+  const wx = maxX - minX,
+    wy = maxY - minY;
+  view.minX = minX - 0.08 * wx;
+  view.maxX = maxX + 0.08 * wx;
+  view.minY = minY - 0.05 * wy - 0.5;
+  view.maxY = maxY + 0.1 * wy + 0.5;
 }
 
 /** Builds a fresh world (a new launch) from the params; the shell calls it at start and on R. */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(projectileWorldOptions(sceneOptions()));
   handles = buildProjectile(world, sceneOptions());
-  launch.x0 = handles.x0; launch.y0 = handles.y0; launch.vx0 = handles.vx0; launch.vy0 = handles.vy0; launch.g = handles.params.gravity;
-  flight.flying = true; flight.landedTime = Number.NaN; flight.range = Number.NaN;
+  launch.x0 = handles.x0;
+  launch.y0 = handles.y0;
+  launch.vx0 = handles.vx0;
+  launch.vy0 = handles.vy0;
+  launch.g = handles.params.gravity;
+  flight.flying = true;
+  flight.landedTime = Number.NaN;
+  flight.range = Number.NaN;
   flight.maxDeviation = handles.params.law === 'quadratic' ? Number.NaN : 0;
-  flight.maxFallSpeed = 0; flight.samples = 0;
+  flight.maxFallSpeed = 0;
+  flight.samples = 0;
   // The previous flight becomes a faded path; this one starts empty.
   if (paths[current]!.count > 0) current = (current + 1) % KEPT_PATHS;
   paths[current]!.clear();
@@ -165,7 +203,9 @@ function createWorld(): PhysicsWorld {
 function labStep(world: PhysicsWorld): void {
   physicsStep(world);
   const e = handles.ball;
-  const x = world.components.Position.x[e]!, y = world.components.Position.y[e]!, vy = world.components.Velocity.y[e]!;
+  const x = world.components.Position.x[e]!,
+    y = world.components.Position.y[e]!,
+    vy = world.components.Velocity.y[e]!;
   const t = world.time;
   if (t <= MAX_FLIGHT) paths[current]!.push(x, y);
   if (!flight.flying) return;
@@ -212,32 +252,48 @@ const dock = createLabDock();
 refit = followView(app, renderer.camera, dock, () => view);
 
 const relaunch = (): void => shell.reset();
-const panel = createPanel(params, [
-  { type: 'choice', key: 'law', label: 'drag law', options: DRAG_LAWS, onChange: relaunch },
-  { type: 'slider', key: 'linearK', label: 'linear k (N s/m)', min: 0, max: 5, step: 0.01, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'quadraticK', label: 'quadratic k (kg/m)', min: 0, max: 0.5, step: 0.001, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'speed', label: 'launch speed (m/s)', min: 0, max: 60, step: 0.1, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'angle', label: 'angle (°)', min: -90, max: 180, step: 0.5, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'mass', label: 'mass (kg)', min: 0.05, max: 20, step: 0.01, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'height', label: 'launch height (m)', min: 1, max: 60, step: 0.5, onRelease: true, onChange: relaunch },
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0.5, max: 30, step: 0.01, onRelease: true, onChange: relaunch },
-  { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: relaunch },
-  { type: 'button', key: 'launch', label: 'launch (Space)' },
-  { type: 'button', key: 'clearPaths', label: 'clear old paths (C)' },
-], { title: 'Projectile', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'choice', key: 'law', label: 'drag law', options: DRAG_LAWS, onChange: relaunch },
+    { type: 'slider', key: 'linearK', label: 'linear k (N s/m)', min: 0, max: 5, step: 0.01, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'quadraticK', label: 'quadratic k (kg/m)', min: 0, max: 0.5, step: 0.001, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'speed', label: 'launch speed (m/s)', min: 0, max: 60, step: 0.1, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'angle', label: 'angle (°)', min: -90, max: 180, step: 0.5, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'mass', label: 'mass (kg)', min: 0.05, max: 20, step: 0.01, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'height', label: 'launch height (m)', min: 1, max: 60, step: 0.5, onRelease: true, onChange: relaunch },
+    { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0.5, max: 30, step: 0.01, onRelease: true, onChange: relaunch },
+    { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: relaunch },
+    { type: 'button', key: 'launch', label: 'launch (Space)' },
+    { type: 'button', key: 'clearPaths', label: 'clear old paths (C)' },
+  ],
+  { title: 'Projectile', container: dock.panelSlot },
+);
 
-const readout = createReadout(shell.hud.readout, [
-  'terminal speed v_t', 'time of flight', 'range', 'max |y − y_exact|', 'fastest fall',
-]);
+const readout = createReadout(shell.hud.readout, ['terminal speed v_t', 'time of flight', 'range', 'max |y − y_exact|', 'fastest fall']);
 plots = {
   height: createPlot({
-    parent: dock.charts, title: 'Height', yLabel: 'y (m)', width: dock.chartWidth, height: 150, capacity: MAX_FLIGHT * 60,
-    series: [{ label: 'simulated', color: '#ffb703' }, { label: 'exact', color: '#e6e9ef', dashed: true }],
+    parent: dock.charts,
+    title: 'Height',
+    yLabel: 'y (m)',
+    width: dock.chartWidth,
+    height: 150,
+    capacity: MAX_FLIGHT * 60,
+    series: [
+      { label: 'simulated', color: '#ffb703' },
+      { label: 'exact', color: '#e6e9ef', dashed: true },
+    ],
   }),
   velocity: createPlot({
-    parent: dock.charts, title: 'Vertical velocity', yLabel: 'v_y (m/s)', width: dock.chartWidth, height: 150, capacity: MAX_FLIGHT * 60,
+    parent: dock.charts,
+    title: 'Vertical velocity',
+    yLabel: 'v_y (m/s)',
+    width: dock.chartWidth,
+    height: 150,
+    capacity: MAX_FLIGHT * 60,
     series: [
-      { label: 'simulated', color: '#ffb703' }, { label: 'exact', color: '#e6e9ef', dashed: true },
+      { label: 'simulated', color: '#ffb703' },
+      { label: 'exact', color: '#e6e9ef', dashed: true },
       { label: '−v_t (terminal)', color: '#ef476f', dashed: true },
     ],
   }),
@@ -256,8 +312,13 @@ function clearOldPaths(): void {
 const canvas = app.canvas;
 const pointer: Point2 = { x: 0, y: 0 };
 let hover = false;
-canvas.addEventListener('pointermove', (event) => { pointerOnCanvas(canvas, event, pointer); hover = true; });
-canvas.addEventListener('pointerleave', () => { hover = false; });
+canvas.addEventListener('pointermove', (event) => {
+  pointerOnCanvas(canvas, event, pointer);
+  hover = true;
+});
+canvas.addEventListener('pointerleave', () => {
+  hover = false;
+});
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
   pointerOnCanvas(canvas, event, pointer);
@@ -295,9 +356,13 @@ function drawOverlay(alpha: number, world: PhysicsWorld): void {
   drawnPosition(world, handles.ball, alpha, at);
   paths[current]!.draw(overlay, cam, 2.5, LAW_COLOR[handles.params.law], 0.95, false, at.x, at.y);
   // Launch arrow: direction and (scaled) speed.
-  const sx = cam.toScreenX(launch.x0), sy = cam.toScreenY(launch.y0);
+  const sx = cam.toScreenX(launch.x0),
+    sy = cam.toScreenY(launch.y0);
   const s = handles.params.speed > 0 ? 40 / handles.params.speed : 0;
-  overlay.moveTo(sx, sy).lineTo(sx + launch.vx0 * s, sy - launch.vy0 * s).stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
+  overlay
+    .moveTo(sx, sy)
+    .lineTo(sx + launch.vx0 * s, sy - launch.vy0 * s)
+    .stroke({ width: 2, color: 0xffffff, alpha: 0.8 });
   if (hover) drawDashedLine(overlay, sx, sy, pointer.x, pointer.y, 1.5, 0xffffff, 0.35);
   // The ball may be under a pixel at large scales: mark it.
   const r = Math.max(4, cam.toScreenLength(BALL_RADIUS));

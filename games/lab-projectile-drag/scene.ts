@@ -7,7 +7,13 @@
  * just left of it, the cliff face drops to the ground, the ground is a long static segment at y = 0.
  */
 import {
-  INTEGRATOR_NAMES, addBody, addSegment, setDrag, type IntegratorName, type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addSegment,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  setDrag,
 } from '@bitphysics/physics';
 
 /** Drag law of the projectile. */
@@ -46,12 +52,26 @@ export type ProjectileParams = Required<ProjectileOptions>;
 
 /** Defaults of every option. */
 export const PROJECTILE_DEFAULTS: Readonly<ProjectileParams> = Object.freeze({
-  law: 'linear', linearK: 0.2, quadraticK: 0.02, speed: 20, angle: 50, mass: 1, height: 10, gravity: 9.81, integrator: 'rk4',
+  law: 'linear',
+  linearK: 0.2,
+  quadraticK: 0.02,
+  speed: 20,
+  angle: 50,
+  mass: 1,
+  height: 10,
+  gravity: 9.81,
+  integrator: 'rk4',
 });
 
 /** Ranges of the numeric options: [min, max]. */
 export const PROJECTILE_RANGES = Object.freeze({
-  linearK: [0, 50], quadraticK: [0, 5], speed: [0, 100], angle: [-90, 180], mass: [0.01, 100], height: [1, 100], gravity: [0.1, 50],
+  linearK: [0, 50],
+  quadraticK: [0, 5],
+  speed: [0, 100],
+  angle: [-90, 180],
+  mass: [0.01, 100],
+  height: [1, 100],
+  gravity: [0.1, 50],
 } as const);
 
 /** What the builder returns. */
@@ -59,7 +79,10 @@ export interface ProjectileHandles {
   /** The ball. */
   ball: number;
   /** Launch state: position (m) and velocity (m/s). */
-  x0: number; y0: number; vx0: number; vy0: number;
+  x0: number;
+  y0: number;
+  vx0: number;
+  vy0: number;
   /** The static segments: ground, cliff top, cliff face. */
   segments: number[];
   /** The options used. */
@@ -72,16 +95,23 @@ export interface ProjectileHandles {
  */
 export function resolveProjectileOptions(options: ProjectileOptions = {}): ProjectileParams {
   for (const k of Object.keys(options)) {
-    if (!(k in PROJECTILE_DEFAULTS)) throw new TypeError(`lab-projectile-drag: unknown option ${JSON.stringify(k)}; known: ${Object.keys(PROJECTILE_DEFAULTS).join(', ')}`);
+    if (!(k in PROJECTILE_DEFAULTS))
+      throw new TypeError(
+        `lab-projectile-drag: unknown option ${JSON.stringify(k)}; known: ${Object.keys(PROJECTILE_DEFAULTS).join(', ')}`,
+      );
   }
   const p = { ...PROJECTILE_DEFAULTS, ...options } as ProjectileParams;
-  if (!DRAG_LAWS.includes(p.law)) throw new RangeError(`lab-projectile-drag: law must be one of ${DRAG_LAWS.join(', ')}, got ${JSON.stringify(p.law)}`);
+  if (!DRAG_LAWS.includes(p.law))
+    throw new RangeError(`lab-projectile-drag: law must be one of ${DRAG_LAWS.join(', ')}, got ${JSON.stringify(p.law)}`);
   if (!(INTEGRATOR_NAMES as readonly string[]).includes(p.integrator)) {
-    throw new RangeError(`lab-projectile-drag: integrator must be one of ${INTEGRATOR_NAMES.join(', ')}, got ${JSON.stringify(p.integrator)}`);
+    throw new RangeError(
+      `lab-projectile-drag: integrator must be one of ${INTEGRATOR_NAMES.join(', ')}, got ${JSON.stringify(p.integrator)}`,
+    );
   }
   for (const [key, [min, max]] of Object.entries(PROJECTILE_RANGES)) {
     const v = p[key as keyof typeof PROJECTILE_RANGES];
-    if (!(typeof v === 'number' && v >= min && v <= max)) throw new RangeError(`lab-projectile-drag: ${key} must be a number in [${min}, ${max}], got ${String(v)}`);
+    if (!(typeof v === 'number' && v >= min && v <= max))
+      throw new RangeError(`lab-projectile-drag: ${key} must be a number in [${min}, ${max}], got ${String(v)}`);
   }
   return p;
 }
@@ -109,7 +139,8 @@ export function buildProjectile(world: PhysicsWorld, options: ProjectileOptions 
     segments.push(addSegment(world, { a: [edge, top], b: [edge, 0], friction: 0.5, restitution: 0.2 }));
   }
   const a = (p.angle * Math.PI) / 180;
-  const vx0 = p.speed * Math.cos(a), vy0 = p.speed * Math.sin(a);
+  const vx0 = p.speed * Math.cos(a),
+    vy0 = p.speed * Math.sin(a);
   const ball = addBody(world, { position: [0, p.height], velocity: [vx0, vy0], radius: r, mass: p.mass, restitution: 0.2, friction: 0.5 });
   applyDragLaw(world, ball, p.law, p.linearK, p.quadraticK);
   return { ball, x0: 0, y0: p.height, vx0, vy0, segments, params: p };
@@ -120,6 +151,7 @@ export function buildProjectile(world: PhysicsWorld, options: ProjectileOptions 
  * law not in use gets coefficient 0. @throws RangeError on an unknown law or a negative coefficient.
  */
 export function applyDragLaw(world: PhysicsWorld, ball: number, law: DragLaw, linearK: number, quadraticK: number): void {
-  if (!DRAG_LAWS.includes(law)) throw new RangeError(`lab-projectile-drag: law must be one of ${DRAG_LAWS.join(', ')}, got ${JSON.stringify(law)}`);
+  if (!DRAG_LAWS.includes(law))
+    throw new RangeError(`lab-projectile-drag: law must be one of ${DRAG_LAWS.join(', ')}, got ${JSON.stringify(law)}`);
   setDrag(world, ball, { linear: law === 'linear' ? linearK : 0, quadratic: law === 'quadratic' ? quadraticK : 0 });
 }

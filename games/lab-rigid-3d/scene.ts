@@ -18,8 +18,15 @@
  *   neck) and hinges with limits (elbows, knees), dropped onto a flight of steps.
  */
 import {
-  addBallJoint3D, addBody, addHingeJoint3D, addPlane, addShape3D, setAngularVelocity, setVelocity, type PhysicsWorld,
+  addBallJoint3D,
+  addBody,
+  addHingeJoint3D,
+  addPlane,
+  addShape3D,
+  type PhysicsWorld,
   type PhysicsWorldOptions,
+  setAngularVelocity,
+  setVelocity,
 } from '@bitphysics/physics';
 
 /** The scenes. */
@@ -69,7 +76,19 @@ export interface LabHandles {
    * the moment about the centre of mass, which stays on its vertical line), which the gyroscope
    * formula approximates to first order in I1 cos(tilt) m g r / (I3 omega3)^2.
    */
-  top: { tip: [number, number, number]; mass: number; r: number; rho: number; I3: number; I1: number; spin: number; tilt: number; tipFriction: number; precession: number; steadyPrecession: number } | null;
+  top: {
+    tip: [number, number, number];
+    mass: number;
+    r: number;
+    rho: number;
+    I3: number;
+    I1: number;
+    spin: number;
+    tilt: number;
+    tipFriction: number;
+    precession: number;
+    steadyPrecession: number;
+  } | null;
 }
 
 /**
@@ -84,7 +103,10 @@ export function labWorldOptions(scene: SceneName = 'stack'): PhysicsWorldOptions
 /** Builds `scene` into `world` (with a floor at y = 0). @throws RangeError on an unknown scene or an option out of range. */
 export function buildLab(world: PhysicsWorld, scene: SceneName, options: LabOptions = {}): LabHandles {
   if (!SCENES.includes(scene)) throw new RangeError(`buildLab: scene must be one of ${SCENES.join(', ')}, got ${String(scene)}`);
-  const n = options.dominoes ?? 100, spin = options.spin ?? 60, tilt = options.tilt ?? 0.35, mu = options.friction ?? 0.6;
+  const n = options.dominoes ?? 100,
+    spin = options.spin ?? 60,
+    tilt = options.tilt ?? 0.35,
+    mu = options.friction ?? 0.6;
   const tipMu = options.tipFriction ?? 0;
   if (!Number.isInteger(n) || n < 2 || n > 400) throw new RangeError(`buildLab: dominoes must be an integer in [2, 400], got ${n}`);
   if (!(spin > 0 && Number.isFinite(spin))) throw new RangeError(`buildLab: spin must be > 0, got ${spin}`);
@@ -94,16 +116,33 @@ export function buildLab(world: PhysicsWorld, scene: SceneName, options: LabOpti
   addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: mu });
   const h: LabHandles = { scene, bodies: [], statics: [], main: 0, parts: [], headings: [], upAxes: [], top: null };
   switch (scene) {
-    case 'tumble': tumble(world, h, mu); break;
-    case 'stack': stack(world, h, mu); break;
-    case 'dominoes': dominoes(world, h, n, mu); break;
-    case 'top': top(world, h, spin, tilt, tipMu, mu); break;
-    case 'ragdoll': ragdoll(world, h, mu); break;
+    case 'tumble':
+      tumble(world, h, mu);
+      break;
+    case 'stack':
+      stack(world, h, mu);
+      break;
+    case 'dominoes':
+      dominoes(world, h, n, mu);
+      break;
+    case 'top':
+      top(world, h, spin, tilt, tipMu, mu);
+      break;
+    case 'ragdoll':
+      ragdoll(world, h, mu);
+      break;
   }
   return h;
 }
 
-function box(world: PhysicsWorld, p: [number, number, number], half: [number, number, number], mu: number, q: [number, number, number, number] = [0, 0, 0, 1], density = 600): number {
+function box(
+  world: PhysicsWorld,
+  p: [number, number, number],
+  half: [number, number, number],
+  mu: number,
+  q: [number, number, number, number] = [0, 0, 0, 1],
+  density = 600,
+): number {
   const e = addBody(world, { position: p, orientation: q });
   addShape3D(world, e, { type: 'box', halfExtents: half, density, friction: mu, restitution: 0.1 });
   return e;
@@ -118,20 +157,28 @@ function tumble(world: PhysicsWorld, h: LabHandles, mu: number): void {
   const table = addBody(world, { position: [0, 0.8, 0], static: true });
   h.statics.push(table);
   addShape3D(world, table, { type: 'box', halfExtents: [0.8, 0.04, 0.5], friction: mu });
-  for (const [x, z] of [[-0.7, -0.4], [0.7, -0.4], [-0.7, 0.4], [0.7, 0.4]] as const) {
+  for (const [x, z] of [
+    [-0.7, -0.4],
+    [0.7, -0.4],
+    [-0.7, 0.4],
+    [0.7, 0.4],
+  ] as const) {
     addShape3D(world, table, { type: 'box', halfExtents: [0.04, 0.38, 0.04], offset: [x, -0.42, z], friction: mu });
   }
   const b = box(world, [-1.2, 1.6, 0], [0.15, 0.15, 0.15], mu, [0.2, 0.3, 0.1, 0.93]);
   setVelocity(world, b, [2.2, 0.5, 0.1]);
   setAngularVelocity(world, b, [3, -6, 8]);
-  h.main = b; h.bodies.push(b); h.parts.push(b);
+  h.main = b;
+  h.bodies.push(b);
+  h.parts.push(b);
 }
 
 /** Ten 0.5 m boxes stacked, each turned a little. */
 function stack(world: PhysicsWorld, h: LabHandles, mu: number): void {
   for (let i = 0; i < 10; i++) {
     const b = box(world, [0, 0.25 + 0.5 * i, 0], [0.25, 0.25, 0.25], mu, yaw(0.1 * ((i * 7) % 5)));
-    h.bodies.push(b); h.parts.push(b);
+    h.bodies.push(b);
+    h.parts.push(b);
   }
   h.main = h.parts[h.parts.length - 1]!;
 }
@@ -151,12 +198,17 @@ function dominoes(world: PhysicsWorld, h: LabHandles, n: number, mu: number): vo
     const d = box(world, [R * Math.cos(a), DOMINO_HALF[1], -R * Math.sin(a)], [...DOMINO_HALF], mu, yaw(heading), 700);
     let up = 0;
     for (let k = 1; k < 3; k++) if (Math.abs(upComponent(world, d, k)) > Math.abs(upComponent(world, d, up))) up = k;
-    h.bodies.push(d); h.parts.push(d); h.headings.push(heading); h.upAxes.push(up);
+    h.bodies.push(d);
+    h.parts.push(d);
+    h.headings.push(heading);
+    h.upAxes.push(up);
   }
   h.main = h.parts[0]!;
   // The push: the first domino's top moves along the ring at 0.8 m/s (an angular velocity about its base edge's axis).
-  const first = h.parts[0]!, a = h.headings[0]!;
-  const tx = Math.cos(a), tz = -Math.sin(a);
+  const first = h.parts[0]!,
+    a = h.headings[0]!;
+  const tx = Math.cos(a),
+    tz = -Math.sin(a);
   // Pivoting about its base edge, omega = k (y x t) moves the top along t at k h (Euler: v = omega x r).
   setAngularVelocity(world, first, [1.6 * tz, 0, -1.6 * tx]);
   setVelocity(world, first, [tx * 0.4, 0, tz * 0.4]);
@@ -190,21 +242,31 @@ function top(world: PhysicsWorld, h: LabHandles, spin: number, tilt: number, tip
   addShape3D(world, b, { type: 'cylinder', radius: 0.25, halfHeight: 0.02, offset: [0, 0.25, 0], density: 2700, friction: mu });
   const c = world.components;
   const mass = c.Mass.value[b]!;
-  const dx = c.Position.x[b]! - tip[0], dy = c.Position.y[b]! - tip[1], dz = c.Position.z[b]! - tip[2];
+  const dx = c.Position.x[b]! - tip[0],
+    dy = c.Position.y[b]! - tip[1],
+    dz = c.Position.z[b]! - tip[2];
   const r = Math.hypot(dx, dy, dz);
   // The symmetric top's principal moments about its centre of mass: two equal (across) and I3 (about the symmetry axis), the one that differs.
   const T = c.InertiaTensor;
   const I = [T.x[b]!, T.y[b]!, T.z[b]!].sort((u, v) => u - v);
   const firstOdd = Math.abs(I[0]! - I[1]!) > Math.abs(I[1]! - I[2]!);
-  const I3 = firstOdd ? I[0]! : I[2]!, I1 = firstOdd ? I[2]! : I[0]!; // across, about the centre of mass (it stays put on a smooth floor)
-  const g = Math.abs(world.gravity[1]!), L = I3 * spin, cos = Math.cos(tilt), torque = mass * g * r;
+  const I3 = firstOdd ? I[0]! : I[2]!,
+    I1 = firstOdd ? I[2]! : I[0]!; // across, about the centre of mass (it stays put on a smooth floor)
+  const g = Math.abs(world.gravity[1]!),
+    L = I3 * spin,
+    cos = Math.cos(tilt),
+    torque = mass * g * r;
   const precession = torque / L;
   const steadyPrecession = (L - Math.sqrt(L * L - 4 * I1 * cos * torque)) / (2 * I1 * cos);
   // Spin omega3 along the symmetry axis (world: y tilted toward +x) and the steady precession about +y,
   // so it starts without nutation: omega = (omega3 - Omega cos tilt) axis + Omega y.
-  const ax = Math.sin(tilt), ay = cos, s = spin - steadyPrecession * cos;
+  const ax = Math.sin(tilt),
+    ay = cos,
+    s = spin - steadyPrecession * cos;
   setAngularVelocity(world, b, [s * ax, s * ay + steadyPrecession, 0]);
-  h.main = b; h.bodies.push(b); h.parts.push(b);
+  h.main = b;
+  h.bodies.push(b);
+  h.parts.push(b);
   h.top = { tip, mass, r, rho, I3, I1, spin, tilt, tipFriction: tipMu, precession, steadyPrecession };
 }
 
@@ -212,16 +274,20 @@ function top(world: PhysicsWorld, h: LabHandles, spin: number, tilt: number, tip
 function ragdoll(world: PhysicsWorld, h: LabHandles, mu: number): void {
   // Step i runs from x = 0.5 i - 0.25 back to x = 3 and is 0.3 (i + 1) m high.
   for (let i = 0; i < 5; i++) {
-    const x1 = 0.5 * i - 0.25, x2 = 3, top = 0.3 * (i + 1);
+    const x1 = 0.5 * i - 0.25,
+      x2 = 3,
+      top = 0.3 * (i + 1);
     const s = addBody(world, { position: [(x1 + x2) / 2, top / 2, 0], static: true });
     h.statics.push(s);
     addShape3D(world, s, { type: 'box', halfExtents: [(x2 - x1) / 2, top / 2, 1], friction: mu });
   }
-  const x0 = 2.5, y0 = 2.6;
+  const x0 = 2.5,
+    y0 = 2.6;
   const part = (p: [number, number, number], r: number, hh: number, horizontal = false): number => {
     const e = addBody(world, { position: p, orientation: horizontal ? [Math.SQRT1_2, 0, 0, Math.SQRT1_2] : [0, 0, 0, 1] });
     addShape3D(world, e, { type: 'capsule', radius: r, halfHeight: hh, density: 1000, friction: mu });
-    h.bodies.push(e); h.parts.push(e);
+    h.bodies.push(e);
+    h.parts.push(e);
     return e;
   };
   const pelvis = part([x0, y0, 0], 0.12, 0.1, true);
@@ -235,7 +301,8 @@ function ragdoll(world: PhysicsWorld, h: LabHandles, mu: number): void {
   const thighR = part([x0, y0 - 0.4, 0.12], 0.07, 0.15);
   const shinL = part([x0, y0 - 0.86, -0.12], 0.06, 0.15);
   const shinR = part([x0, y0 - 0.86, 0.12], 0.06, 0.15);
-  const cone = (a: number, b: number, at: [number, number, number], angle: number): number => addBallJoint3D(world, { a, b, anchor: at, axis: [0, -1, 0], coneAngle: angle });
+  const cone = (a: number, b: number, at: [number, number, number], angle: number): number =>
+    addBallJoint3D(world, { a, b, anchor: at, axis: [0, -1, 0], coneAngle: angle });
   cone(pelvis, chest, [x0, y0 + 0.2, 0], 0.5);
   cone(chest, head, [x0, y0 + 0.62, 0], 0.6);
   cone(chest, upperArmL, [x0, y0 + 0.56, -0.42], 1.8);
@@ -258,7 +325,10 @@ export const TOPPLED_TILT = (20 * Math.PI) / 180;
 /** The y component of body axis `axis` (0 x, 1 y, 2 z) in the world: row y of its rotation matrix. */
 export function upComponent(world: PhysicsWorld, e: number, axis: number): number {
   const O = world.components.Orientation;
-  const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+  const x = O.x[e]!,
+    y = O.y[e]!,
+    z = O.z[e]!,
+    w = O.w[e]!;
   return axis === 0 ? 2 * (x * y + w * z) : axis === 1 ? 1 - 2 * (x * x + z * z) : 2 * (y * z - w * x);
 }
 
@@ -279,9 +349,15 @@ export function toppledCount(world: PhysicsWorld, h: LabHandles): number {
  * @returns out.
  */
 export function topAxis(world: PhysicsWorld, h: LabHandles, out: number[] | Float64Array = [0, 0, 0]): number[] | Float64Array {
-  const O = world.components.Orientation, b = h.main;
-  const x = O.x[b]!, y = O.y[b]!, z = O.z[b]!, w = O.w[b]!;
-  out[0] = 2 * (x * y - w * z); out[1] = 1 - 2 * (x * x + z * z); out[2] = 2 * (y * z + w * x);
+  const O = world.components.Orientation,
+    b = h.main;
+  const x = O.x[b]!,
+    y = O.y[b]!,
+    z = O.z[b]!,
+    w = O.w[b]!;
+  out[0] = 2 * (x * y - w * z);
+  out[1] = 1 - 2 * (x * x + z * z);
+  out[2] = 2 * (y * z + w * x);
   return out;
 }
 

@@ -7,11 +7,11 @@
  * Input: click drops a crate at the pointer; B drops one at the top. Keys: P pause, N single step,
  * R reset. URL: ?scene (incline, bouncing, colliding, torque, turbine), ?seed=S.
  */
-import { createPhysicsWorld, setGravity, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
+import { createPhysicsWorld, type PhysicsWorld, setGravity, slotOf } from '@bitphysics/physics';
 import { choiceParam, createPanel, pointerOnCanvas, seedParam } from '../shared/index';
 import { createReadout, fmt } from '../shared/lab-kit';
-import { SCENE_NAMES, STAGE, buildScene, spawnBox, worldOptions, type SceneHandles, type SceneName } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { buildScene, SCENE_NAMES, type SceneHandles, type SceneName, STAGE, spawnBox, worldOptions } from './scene';
 
 const params = {
   scene: choiceParam('scene', SCENE_NAMES, 'incline') as SceneName,
@@ -47,17 +47,73 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 
-const panel = createPanel(params, [
-  { type: 'choice', key: 'scene', label: 'demo', options: SCENE_NAMES, onChange: () => shell.reset() },
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => setGravity(shell.world, [0, -g]) },
-  { type: 'slider', key: 'friction', label: 'friction μ (rebuilds)', min: 0, max: 1.5, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'tiltRate', label: 'incline tilt rate (rad/s, rebuilds)', min: 0.01, max: 0.3, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'torque', label: 'torque / wind (N m, rebuilds)', min: 0, max: 20, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'damping', label: 'angular damping k (N m s, rebuilds)', min: 0.1, max: 10, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Rigid bodies' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'choice', key: 'scene', label: 'demo', options: SCENE_NAMES, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => setGravity(shell.world, [0, -g]),
+    },
+    {
+      type: 'slider',
+      key: 'friction',
+      label: 'friction μ (rebuilds)',
+      min: 0,
+      max: 1.5,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'tiltRate',
+      label: 'incline tilt rate (rad/s, rebuilds)',
+      min: 0.01,
+      max: 0.3,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'torque',
+      label: 'torque / wind (N m, rebuilds)',
+      min: 0,
+      max: 20,
+      step: 0.1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'damping',
+      label: 'angular damping k (N m s, rebuilds)',
+      min: 0.1,
+      max: 10,
+      step: 0.1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Rigid bodies' },
+);
 
-const readout = createReadout(shell.hud.readout, ['demo', 'incline angle', 'tan(angle)', 'tips when tan >', 'slides when tan >', 'spin w', 'w limit torque / k']);
+const readout = createReadout(shell.hud.readout, [
+  'demo',
+  'incline angle',
+  'tan(angle)',
+  'tips when tan >',
+  'slides when tan >',
+  'spin w',
+  'w limit torque / k',
+]);
 
 /** Fills the readout from the world. */
 function show(world: PhysicsWorld): void {
@@ -73,7 +129,10 @@ function show(world: PhysicsWorld): void {
   if (handles.spinner !== undefined) {
     readout.set(5, `${fmt(c.AngularVelocity.z[slotOf(handles.spinner)]!)} rad/s`);
     readout.set(6, params.scene === 'torque' ? `${fmt(params.torque / params.damping)} rad/s` : '-');
-  } else { readout.set(5, '-'); readout.set(6, '-'); }
+  } else {
+    readout.set(5, '-');
+    readout.set(6, '-');
+  }
 }
 
 const pointer = { x: 0, y: 0 };
@@ -91,5 +150,7 @@ shell.expose({
   /** The scene's handles. */
   ids: () => ({ ...handles }),
   /** Steps the world n times (tests). */
-  advance: (n: number) => { for (let i = 0; i < n; i++) shell.step(); },
+  advance: (n: number) => {
+    for (let i = 0; i < n; i++) shell.step();
+  },
 });

@@ -10,8 +10,18 @@
  * - `turbine`: a three-bladed rotor on a pin, driven by the wind's torque against its bearing's damping.
  */
 import {
-  Rng, addBody, addBox, addRevoluteJoint, addShape, addSystem, setAngularDamping, setBoundary, setGravityScale, slotOf,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addBox,
+  addRevoluteJoint,
+  addShape,
+  addSystem,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  Rng,
+  setAngularDamping,
+  setBoundary,
+  setGravityScale,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** Names of the demos. */
@@ -68,18 +78,35 @@ export function buildScene(world: PhysicsWorld, options: SceneOptions): SceneHan
     case 'incline': {
       // The board turns about its left end: a kinematic body whose centre circles the pivot.
       const board = addBox(world, {
-        position: [BOARD.x + BOARD.half, BOARD.y], halfExtents: [BOARD.half, BOARD.thick], kinematic: true,
-        friction: mu, angularVelocity: 0, rotates: true,
+        position: [BOARD.x + BOARD.half, BOARD.y],
+        halfExtents: [BOARD.half, BOARD.thick],
+        kinematic: true,
+        friction: mu,
+        angularVelocity: 0,
+        rotates: true,
       });
       h.board = board;
-      const tall = addBox(world, { position: [BOARD.x + 3, BOARD.y + BOARD.thick + 0.75], halfExtents: [0.3, 0.75], friction: mu, density: 1 });
-      const wide = addBox(world, { position: [BOARD.x + 8, BOARD.y + BOARD.thick + 0.3], halfExtents: [0.6, 0.3], friction: mu, density: 1 });
-      h.tall = tall; h.wide = wide; h.tallRatio = 0.6 / 1.5;
+      const tall = addBox(world, {
+        position: [BOARD.x + 3, BOARD.y + BOARD.thick + 0.75],
+        halfExtents: [0.3, 0.75],
+        friction: mu,
+        density: 1,
+      });
+      const wide = addBox(world, {
+        position: [BOARD.x + 8, BOARD.y + BOARD.thick + 0.3],
+        halfExtents: [0.6, 0.3],
+        friction: mu,
+        density: 1,
+      });
+      h.tall = tall;
+      h.wide = wide;
+      h.tallRatio = 0.6 / 1.5;
       h.boxes.push(tall, wide);
       const rate = options.tiltRate;
       // Each step: the board's angle rises at `rate` until 60 degrees; its centre moves on the circle about the pivot.
       addSystem(world, 'forces', (w) => {
-        const e = slotOf(board), c = w.components;
+        const e = slotOf(board),
+          c = w.components;
         const a = c.Angle.value[e]!;
         const wz = a < Math.PI / 3 ? rate : 0;
         c.AngularVelocity.z[e] = wz;
@@ -89,13 +116,41 @@ export function buildScene(world: PhysicsWorld, options: SceneOptions): SceneHan
       break;
     }
     case 'bouncing': {
-      const block = addBox(world, { position: [8, 7], angle: 0.5, halfExtents: [0.8, 0.4], restitution: 0.4, friction: mu, angularVelocity: 0.5 });
+      const block = addBox(world, {
+        position: [8, 7],
+        angle: 0.5,
+        halfExtents: [0.8, 0.4],
+        restitution: 0.4,
+        friction: mu,
+        angularVelocity: 0.5,
+      });
       h.boxes.push(block);
       break;
     }
     case 'colliding': {
-      h.boxes.push(addBox(world, { position: [4, 5], angle: 0.3, halfExtents: [0.6, 0.4], velocity: [6, 2], angularVelocity: 1, friction: mu, restitution: 0.4 }));
-      h.boxes.push(addBox(world, { position: [12, 5.5], angle: -0.2, halfExtents: [0.5, 0.5], velocity: [-6, 1.5], angularVelocity: -2, friction: mu, restitution: 0.4, density: 2 }));
+      h.boxes.push(
+        addBox(world, {
+          position: [4, 5],
+          angle: 0.3,
+          halfExtents: [0.6, 0.4],
+          velocity: [6, 2],
+          angularVelocity: 1,
+          friction: mu,
+          restitution: 0.4,
+        }),
+      );
+      h.boxes.push(
+        addBox(world, {
+          position: [12, 5.5],
+          angle: -0.2,
+          halfExtents: [0.5, 0.5],
+          velocity: [-6, 1.5],
+          angularVelocity: -2,
+          friction: mu,
+          restitution: 0.4,
+          density: 2,
+        }),
+      );
       break;
     }
     case 'torque': {
@@ -103,7 +158,9 @@ export function buildScene(world: PhysicsWorld, options: SceneOptions): SceneHan
       setGravityScale(world, block, 0);
       setAngularDamping(world, block, options.damping);
       const tau = options.torque;
-      addSystem(world, 'forces', (w) => { w.components.Torque.z[slotOf(block)] = w.components.Torque.z[slotOf(block)]! + tau; });
+      addSystem(world, 'forces', (w) => {
+        w.components.Torque.z[slotOf(block)] = w.components.Torque.z[slotOf(block)]! + tau;
+      });
       h.spinner = block;
       h.boxes.push(block);
       break;
@@ -113,13 +170,23 @@ export function buildScene(world: PhysicsWorld, options: SceneOptions): SceneHan
       const rotor = addBody(world, { position: [8, 5], rotates: true });
       for (let k = 0; k < 3; k++) {
         const a = (2 * Math.PI * k) / 3;
-        addShape(world, rotor, { type: 'capsule', center1: [0.3 * Math.cos(a), 0.3 * Math.sin(a)], center2: [2.2 * Math.cos(a), 2.2 * Math.sin(a)], radius: 0.12, density: 2, category: 2, mask: 1 });
+        addShape(world, rotor, {
+          type: 'capsule',
+          center1: [0.3 * Math.cos(a), 0.3 * Math.sin(a)],
+          center2: [2.2 * Math.cos(a), 2.2 * Math.sin(a)],
+          radius: 0.12,
+          density: 2,
+          category: 2,
+          mask: 1,
+        });
       }
       addShape(world, rotor, { type: 'circle', radius: 0.3, density: 2, category: 2, mask: 1 });
       addRevoluteJoint(world, { a: null, b: rotor, anchor: [8, 5] });
       setAngularDamping(world, rotor, options.damping);
       const tau = options.torque;
-      addSystem(world, 'forces', (w) => { w.components.Torque.z[slotOf(rotor)] = w.components.Torque.z[slotOf(rotor)]! + tau; });
+      addSystem(world, 'forces', (w) => {
+        w.components.Torque.z[slotOf(rotor)] = w.components.Torque.z[slotOf(rotor)]! + tau;
+      });
       h.spinner = rotor;
       break;
     }
@@ -127,7 +194,8 @@ export function buildScene(world: PhysicsWorld, options: SceneOptions): SceneHan
   // A few seeded crates on the floor to knock about (not in the incline, whose stage is the board).
   if (options.scene === 'bouncing' || options.scene === 'colliding') {
     const rng = new Rng(options.seed);
-    for (let i = 0; i < 3; i++) h.boxes.push(addBox(world, { position: [rng.range(2, 14), 0.5 + 1.2 * i], halfExtents: [0.4, 0.4], friction: mu }));
+    for (let i = 0; i < 3; i++)
+      h.boxes.push(addBox(world, { position: [rng.range(2, 14), 0.5 + 1.2 * i], halfExtents: [0.4, 0.4], friction: mu }));
   }
   return h;
 }

@@ -10,14 +10,26 @@
  * P pause, N step, R reset. URL: ?planet=toy|earth|none, ?dryMass=, ?fuel= (kg), ?ve= (m/s),
  * ?mdot= (kg/s), ?drag=0|1, ?warp= (1..50).
  */
+
+import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createPhysicsWorld, step, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
 import { createPlotDock, createStatusLine, readUrlParams, trackHeldKeys } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  PLANETS, PLANET_SPECS, altitude, applyControls, buildRocket, orbitAltitudes, resolveRocketOptions, rocketWorldOptions, speed,
-  tsiolkovsky, uniformGravityModel, type PlanetName, type RocketHandles,
+  altitude,
+  applyControls,
+  buildRocket,
+  orbitAltitudes,
+  PLANET_SPECS,
+  PLANETS,
+  type PlanetName,
+  type RocketHandles,
+  resolveRocketOptions,
+  rocketWorldOptions,
+  speed,
+  tsiolkovsky,
+  uniformGravityModel,
 } from './scene';
 
 const params = readUrlParams(() => {
@@ -43,8 +55,13 @@ const PLOT_EVERY = 3;
 
 function createWorld(): PhysicsWorld {
   const options = resolveRocketOptions({
-    planet: params.planet, dryMass: params.dryMass, fuel: params.fuel, exhaustVelocity: params.exhaustVelocity,
-    massFlowRate: params.massFlowRate, drag: params.drag, warp: params.warp,
+    planet: params.planet,
+    dryMass: params.dryMass,
+    fuel: params.fuel,
+    exhaustVelocity: params.exhaustVelocity,
+    massFlowRate: params.massFlowRate,
+    drag: params.drag,
+    warp: params.warp,
   });
   const world = createPhysicsWorld(rocketWorldOptions(options));
   handles = buildRocket(world, options);
@@ -58,8 +75,10 @@ const keys = trackHeldKeys(['arrowleft', 'arrowright', 'arrowup', 'arrowdown', '
 
 /** Reads the held keys into throttle and heading for a step of `dt` s. */
 function pilot(dt: number): void {
-  const left = keys.held('arrowleft') || keys.held('a'), right = keys.held('arrowright') || keys.held('d');
-  const up = keys.held('arrowup') || keys.held('w'), down = keys.held('arrowdown') || keys.held('s');
+  const left = keys.held('arrowleft') || keys.held('a'),
+    right = keys.held('arrowright') || keys.held('d');
+  const up = keys.held('arrowup') || keys.held('w'),
+    down = keys.held('arrowdown') || keys.held('s');
   if (left !== right) handles.heading += (left ? 1 : -1) * handles.spec.turnRate * dt;
   if (up !== down) setThrottle(handles.throttle + (up ? 1 : -1) * 0.8 * dt * Math.max(1, 1 / params.warp));
 }
@@ -126,26 +145,84 @@ function colorBodies(): void {
   if (handles.planet !== 0) renderer.setColor(handles.planet, 0x2d4a2b);
 }
 colorBodies();
-shell.onWorldChange(() => { speedPlot.clear(); altitudePlot.clear(); colorBodies(); panel.refresh(); });
+shell.onWorldChange(() => {
+  speedPlot.clear();
+  altitudePlot.clear();
+  colorBodies();
+  panel.refresh();
+});
 
-const panel = createPanel(params, [
-  {
-    type: 'choice', key: 'planet', options: PLANETS, onChange: (v) => {
-      const s = PLANET_SPECS[v as PlanetName];
-      params.dryMass = s.dryMass; params.fuel = s.fuel; params.exhaustVelocity = s.exhaustVelocity; params.massFlowRate = s.massFlowRate;
-      params.warp = v === 'earth' ? 10 : 1;
-      shell.reset();
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'choice',
+      key: 'planet',
+      options: PLANETS,
+      onChange: (v) => {
+        const s = PLANET_SPECS[v as PlanetName];
+        params.dryMass = s.dryMass;
+        params.fuel = s.fuel;
+        params.exhaustVelocity = s.exhaustVelocity;
+        params.massFlowRate = s.massFlowRate;
+        params.warp = v === 'earth' ? 10 : 1;
+        shell.reset();
+      },
     },
-  },
-  { type: 'slider', key: 'throttle', min: 0, max: 1, step: 0.01, onChange: (v) => setThrottle(v) },
-  { type: 'slider', key: 'dryMass', label: 'dry mass (kg, resets)', min: 1, max: 100_000, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'fuel', label: 'fuel (kg, resets)', min: 0, max: 1_000_000, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'exhaustVelocity', label: 'exhaust velocity (m/s, resets)', min: 10, max: 5000, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'massFlowRate', label: 'mass flow (kg/s, resets)', min: 0.1, max: 5000, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'drag', label: 'air drag', onChange: (v) => { handles.params.drag = v === true; } },
-  { type: 'choice', key: 'warp', label: 'time warp (resets)', options: [1, 2, 5, 10, 20, 50], onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Rocket' });
+    { type: 'slider', key: 'throttle', min: 0, max: 1, step: 0.01, onChange: (v) => setThrottle(v) },
+    {
+      type: 'slider',
+      key: 'dryMass',
+      label: 'dry mass (kg, resets)',
+      min: 1,
+      max: 100_000,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'fuel',
+      label: 'fuel (kg, resets)',
+      min: 0,
+      max: 1_000_000,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'exhaustVelocity',
+      label: 'exhaust velocity (m/s, resets)',
+      min: 10,
+      max: 5000,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'slider',
+      key: 'massFlowRate',
+      label: 'mass flow (kg/s, resets)',
+      min: 0.1,
+      max: 5000,
+      step: 0.1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'checkbox',
+      key: 'drag',
+      label: 'air drag',
+      onChange: (v) => {
+        handles.params.drag = v === true;
+      },
+    },
+    { type: 'choice', key: 'warp', label: 'time warp (resets)', options: [1, 2, 5, 10, 20, 50], onChange: () => shell.reset() },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Rocket' },
+);
 
 // ---- Drawing -----------------------------------------------------------------------------------------
 
@@ -157,8 +234,12 @@ let frame = 0;
 
 function draw(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const P = world.components.Position, O = world.components.PreviousPosition, e = handles.rocket, s = handles.spec;
-  const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha, y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition,
+    e = handles.rocket,
+    s = handles.spec;
+  const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
+    y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
   const alt = Math.max(0, altitude(world, handles));
   // Follow the rocket; zoom out as it climbs so the ground below stays in view.
   const half = Math.max(4 * s.rocketLength, 1.15 * (alt + s.rocketLength));
@@ -180,20 +261,28 @@ function draw(alpha: number, world: PhysicsWorld): void {
 function drawPlanet(): void {
   ground.clear();
   if (handles.planet === 0) return;
-  const cam = renderer.camera, R = handles.spec.radius;
-  const px = cam.toScreenX(0), py = cam.toScreenY(0), pr = cam.toScreenLength(R);
+  const cam = renderer.camera,
+    R = handles.spec.radius;
+  const px = cam.toScreenX(0),
+    py = cam.toScreenY(0),
+    pr = cam.toScreenLength(R);
   if (pr < 4000) {
     ground.circle(px, py, pr).fill({ color: 0x2d4a2b }).stroke({ width: 2, color: 0x6a8f4e });
   } else {
     const v = cam.visibleRect();
-    const cx = (v.minX + v.maxX) / 2, cy = (v.minY + v.maxY) / 2;
+    const cx = (v.minX + v.maxX) / 2,
+      cy = (v.minY + v.maxY) / 2;
     const diag = Math.hypot(v.maxX - v.minX, v.maxY - v.minY);
-    const phi = Math.atan2(cy, cx), span = Math.min(Math.PI, (2 * diag) / R), depth = Math.min(R, 2 * diag);
+    const phi = Math.atan2(cy, cx),
+      span = Math.min(Math.PI, (2 * diag) / R),
+      depth = Math.min(R, 2 * diag);
     const n = 96;
     for (let i = 0; i <= n; i++) {
       const a = phi - span + (2 * span * i) / n;
-      const sx = cam.toScreenX(R * Math.cos(a)), sy = cam.toScreenY(R * Math.sin(a));
-      if (i === 0) ground.moveTo(sx, sy); else ground.lineTo(sx, sy);
+      const sx = cam.toScreenX(R * Math.cos(a)),
+        sy = cam.toScreenY(R * Math.sin(a));
+      if (i === 0) ground.moveTo(sx, sy);
+      else ground.lineTo(sx, sy);
     }
     for (let i = n; i >= 0; i--) {
       const a = phi - span + (2 * span * i) / n;
@@ -202,8 +291,10 @@ function drawPlanet(): void {
     ground.closePath().fill({ color: 0x2d4a2b });
     for (let i = 0; i <= n; i++) {
       const a = phi - span + (2 * span * i) / n;
-      const sx = cam.toScreenX(R * Math.cos(a)), sy = cam.toScreenY(R * Math.sin(a));
-      if (i === 0) ground.moveTo(sx, sy); else ground.lineTo(sx, sy);
+      const sx = cam.toScreenX(R * Math.cos(a)),
+        sy = cam.toScreenY(R * Math.sin(a));
+      if (i === 0) ground.moveTo(sx, sy);
+      else ground.lineTo(sx, sy);
     }
     ground.stroke({ width: 2, color: 0x6a8f4e });
   }
@@ -214,26 +305,39 @@ function drawPlanet(): void {
 
 /** The rocket along its heading (at least 26 px long so it stays visible when zoomed out), with its flame. */
 function drawRocket(world: PhysicsWorld, x: number, y: number): void {
-  const cam = renderer.camera, s = handles.spec;
-  const len = Math.max(26, cam.toScreenLength(s.rocketLength)), wid = len * 0.22;
-  const ux = Math.cos(handles.heading), uy = -Math.sin(handles.heading); // screen y points down
-  const nx = -uy, ny = ux;
+  const cam = renderer.camera,
+    s = handles.spec;
+  const len = Math.max(26, cam.toScreenLength(s.rocketLength)),
+    wid = len * 0.22;
+  const ux = Math.cos(handles.heading),
+    uy = -Math.sin(handles.heading); // screen y points down
+  const nx = -uy,
+    ny = ux;
   const base = Math.max(cam.toScreenLength(s.rocketRadius), len * 0.12);
-  const bx = cam.toScreenX(x) - ux * base, by = cam.toScreenY(y) - uy * base;
+  const bx = cam.toScreenX(x) - ux * base,
+    by = cam.toScreenY(y) - uy * base;
   craft.clear();
   const T = world.components.Thrust;
   if (T.fuel[handles.rocket]! > 0 && handles.throttle > 0) {
     const fl = len * (0.35 + 0.5 * handles.throttle);
-    craft.moveTo(bx + nx * wid * 0.4, by + ny * wid * 0.4).lineTo(bx - ux * fl, by - uy * fl).lineTo(bx - nx * wid * 0.4, by - ny * wid * 0.4)
-      .closePath().fill({ color: 0xffa94d, alpha: 0.9 });
+    craft
+      .moveTo(bx + nx * wid * 0.4, by + ny * wid * 0.4)
+      .lineTo(bx - ux * fl, by - uy * fl)
+      .lineTo(bx - nx * wid * 0.4, by - ny * wid * 0.4)
+      .closePath()
+      .fill({ color: 0xffa94d, alpha: 0.9 });
   }
-  const tx = bx + ux * len, ty = by + uy * len;
-  craft.moveTo(bx + nx * wid / 2, by + ny * wid / 2)
-    .lineTo(bx + ux * len * 0.75 + nx * wid / 2, by + uy * len * 0.75 + ny * wid / 2)
+  const tx = bx + ux * len,
+    ty = by + uy * len;
+  craft
+    .moveTo(bx + (nx * wid) / 2, by + (ny * wid) / 2)
+    .lineTo(bx + ux * len * 0.75 + (nx * wid) / 2, by + uy * len * 0.75 + (ny * wid) / 2)
     .lineTo(tx, ty)
-    .lineTo(bx + ux * len * 0.75 - nx * wid / 2, by + uy * len * 0.75 - ny * wid / 2)
-    .lineTo(bx - nx * wid / 2, by - ny * wid / 2)
-    .closePath().fill({ color: 0xd9dde3 }).stroke({ width: 1, color: 0x5c677d });
+    .lineTo(bx + ux * len * 0.75 - (nx * wid) / 2, by + uy * len * 0.75 - (ny * wid) / 2)
+    .lineTo(bx - (nx * wid) / 2, by - (ny * wid) / 2)
+    .closePath()
+    .fill({ color: 0xd9dde3 })
+    .stroke({ width: 1, color: 0x5c677d });
 }
 
 function fmt(m: number): string {
@@ -245,14 +349,18 @@ function statusLine(world: PhysicsWorld): string {
   const e = handles.rocket;
   const fuel = world.components.Thrust.fuel[e]!;
   const alt = altitude(world, handles);
-  let text = `alt ${fmt(alt)} · v ${speed(world, handles).toFixed(1)} m/s · fuel ${fuel.toFixed(0)} kg · throttle ${(handles.throttle * 100).toFixed(0)}% · ` +
+  let text =
+    `alt ${fmt(alt)} · v ${speed(world, handles).toFixed(1)} m/s · fuel ${fuel.toFixed(0)} kg · throttle ${(handles.throttle * 100).toFixed(0)}% · ` +
     `heading ${((handles.heading * 180) / Math.PI).toFixed(0)}°`;
   if (handles.planet !== 0) {
     orbitAltitudes(world, handles, orbit);
     const inOrbit = orbit[0]! > 3 * handles.spec.scaleHeight;
-    text += orbit[1] === Infinity ? ' · escape trajectory'
-      : orbit[0]! < 0 ? ` · suborbital, apoapsis ${fmt(orbit[1]!)}`
-      : ` · orbit ${fmt(orbit[0]!)} × ${fmt(orbit[1]!)}${inOrbit ? ' (in orbit!)' : ' (grazes the air)'}`;
+    text +=
+      orbit[1] === Infinity
+        ? ' · escape trajectory'
+        : orbit[0]! < 0
+          ? ` · suborbital, apoapsis ${fmt(orbit[1]!)}`
+          : ` · orbit ${fmt(orbit[0]!)} × ${fmt(orbit[1]!)}${inOrbit ? ' (in orbit!)' : ' (grazes the air)'}`;
   }
   if (params.warp > 1) text += ` · warp ×${params.warp}`;
   return text;
@@ -270,10 +378,16 @@ shell.expose({
   handles: (): RocketHandles => handles,
   /** Speed (m/s), altitude (m), mass (kg), fuel (kg) and Tsiolkovsky's ideal speed (m/s) now. */
   state: () => {
-    const w = shell.world, m = w.components.Mass.value[handles.rocket]!;
+    const w = shell.world,
+      m = w.components.Mass.value[handles.rocket]!;
     return {
-      speed: speed(w, handles), altitude: altitude(w, handles), mass: m, fuel: w.components.Thrust.fuel[handles.rocket]!,
-      tsiolkovsky: tsiolkovsky(handles.params.exhaustVelocity, handles.initialMass, m), throttle: handles.throttle, heading: handles.heading,
+      speed: speed(w, handles),
+      altitude: altitude(w, handles),
+      mass: m,
+      fuel: w.components.Thrust.fuel[handles.rocket]!,
+      tsiolkovsky: tsiolkovsky(handles.params.exhaustVelocity, handles.initialMass, m),
+      throttle: handles.throttle,
+      heading: handles.heading,
     };
   },
   /** Sets the throttle in [0, 1] (clamped). */

@@ -15,9 +15,7 @@
  * 'earth' (SI: G = 6.6743e-11, M = 5.972e24 kg, R = 6.371e6 m) and 'none' (free space: no gravity,
  * no air).
  */
-import {
-  G_SI, addBody, setAttractor, setGravitation, setThrust, type PhysicsWorld, type PhysicsWorldOptions,
-} from '@bitphysics/physics';
+import { addBody, G_SI, type PhysicsWorld, type PhysicsWorldOptions, setAttractor, setGravitation, setThrust } from '@bitphysics/physics';
 
 /** The planets. */
 export type PlanetName = 'toy' | 'earth' | 'none';
@@ -55,16 +53,46 @@ export interface PlanetSpec {
  */
 export const PLANET_SPECS: Readonly<Record<PlanetName, Readonly<PlanetSpec>>> = Object.freeze({
   toy: {
-    radius: 1000, mass: 9.81 * 1000 * 1000, G: 1, drag: 0.25, scaleHeight: 300,
-    dryMass: 300, fuel: 450, exhaustVelocity: 220, massFlowRate: 45, rocketRadius: 1.5, rocketLength: 12, turnRate: 0.8,
+    radius: 1000,
+    mass: 9.81 * 1000 * 1000,
+    G: 1,
+    drag: 0.25,
+    scaleHeight: 300,
+    dryMass: 300,
+    fuel: 450,
+    exhaustVelocity: 220,
+    massFlowRate: 45,
+    rocketRadius: 1.5,
+    rocketLength: 12,
+    turnRate: 0.8,
   },
   earth: {
-    radius: 6.371e6, mass: 5.972e24, G: G_SI, drag: 1.98, scaleHeight: 8500,
-    dryMass: 25_000, fuel: 395_000, exhaustVelocity: 3000, massFlowRate: 2500, rocketRadius: 5, rocketLength: 45, turnRate: 0.1,
+    radius: 6.371e6,
+    mass: 5.972e24,
+    G: G_SI,
+    drag: 1.98,
+    scaleHeight: 8500,
+    dryMass: 25_000,
+    fuel: 395_000,
+    exhaustVelocity: 3000,
+    massFlowRate: 2500,
+    rocketRadius: 5,
+    rocketLength: 45,
+    turnRate: 0.1,
   },
   none: {
-    radius: 0, mass: 0, G: 0, drag: 0, scaleHeight: 1,
-    dryMass: 300, fuel: 450, exhaustVelocity: 220, massFlowRate: 45, rocketRadius: 1.5, rocketLength: 12, turnRate: 0.8,
+    radius: 0,
+    mass: 0,
+    G: 0,
+    drag: 0,
+    scaleHeight: 1,
+    dryMass: 300,
+    fuel: 450,
+    exhaustVelocity: 220,
+    massFlowRate: 45,
+    rocketRadius: 1.5,
+    rocketLength: 12,
+    turnRate: 0.8,
   },
 });
 
@@ -107,8 +135,13 @@ export function resolveRocketOptions(options: RocketOptions = {}): RocketParams 
   if (!PLANETS.includes(planet)) fail(`planet must be one of ${PLANETS.join(', ')}, got ${JSON.stringify(planet)}`);
   const s = PLANET_SPECS[planet];
   const p: RocketParams = {
-    planet, dryMass: options.dryMass ?? s.dryMass, fuel: options.fuel ?? s.fuel, exhaustVelocity: options.exhaustVelocity ?? s.exhaustVelocity,
-    massFlowRate: options.massFlowRate ?? s.massFlowRate, drag: options.drag ?? true, warp: options.warp ?? 1,
+    planet,
+    dryMass: options.dryMass ?? s.dryMass,
+    fuel: options.fuel ?? s.fuel,
+    exhaustVelocity: options.exhaustVelocity ?? s.exhaustVelocity,
+    massFlowRate: options.massFlowRate ?? s.massFlowRate,
+    drag: options.drag ?? true,
+    warp: options.warp ?? 1,
   };
   if (!(p.dryMass > 0 && Number.isFinite(p.dryMass))) fail(`dryMass must be > 0 kg, got ${p.dryMass}`);
   if (!(p.fuel >= 0 && Number.isFinite(p.fuel))) fail(`fuel must be >= 0 kg, got ${p.fuel}`);
@@ -163,14 +196,29 @@ export function buildRocket(world: PhysicsWorld, options: RocketOptions = {}): R
   }
   const m0 = p.dryMass + p.fuel;
   const rocket = addBody(world, {
-    position: p.planet === 'none' ? [0, 0] : [0, s.radius + s.rocketRadius], mass: m0, radius: s.rocketRadius, rotates: false, friction: 0.9, restitution: 0,
+    position: p.planet === 'none' ? [0, 0] : [0, s.radius + s.rocketRadius],
+    mass: m0,
+    radius: s.rocketRadius,
+    rotates: false,
+    friction: 0.9,
+    restitution: 0,
     // Drag law on every planet (its coefficient is set each step by applyControls; 0 with drag off).
     ...(p.planet !== 'none' ? { quadraticDrag: p.drag ? s.drag : 0 } : {}),
   });
   setThrust(world, rocket, { exhaustVelocity: p.exhaustVelocity, massFlowRate: p.massFlowRate, fuel: p.fuel, direction: [0, 1] });
   return {
-    rocket, planet, spec: s, params: p, throttle: 1, heading: Math.PI / 2, initialMass: m0,
-    liftoffTime: Number.NaN, liftoffMass: Number.NaN, liftoffThrottle: Number.NaN, liftoffGravity: Number.NaN, vertical: true,
+    rocket,
+    planet,
+    spec: s,
+    params: p,
+    throttle: 1,
+    heading: Math.PI / 2,
+    initialMass: m0,
+    liftoffTime: Number.NaN,
+    liftoffMass: Number.NaN,
+    liftoffThrottle: Number.NaN,
+    liftoffGravity: Number.NaN,
+    vertical: true,
   };
 }
 
@@ -193,12 +241,14 @@ export function speed(world: PhysicsWorld, h: RocketHandles): number {
  * still vertical at constant throttle.
  */
 export function applyControls(world: PhysicsWorld, h: RocketHandles): void {
-  const T = world.components.Thrust, e = h.rocket;
+  const T = world.components.Thrust,
+    e = h.rocket;
   T.massFlowRate[e] = h.throttle * h.params.massFlowRate;
   T.dirX[e] = Math.cos(h.heading);
   T.dirY[e] = Math.sin(h.heading);
   const alt = altitude(world, h);
-  if (h.planet !== 0) world.components.QuadraticDrag.k[e] = h.params.drag ? h.spec.drag * Math.exp(-Math.max(0, alt) / h.spec.scaleHeight) : 0;
+  if (h.planet !== 0)
+    world.components.QuadraticDrag.k[e] = h.params.drag ? h.spec.drag * Math.exp(-Math.max(0, alt) / h.spec.scaleHeight) : 0;
   // Lift-off: the moment the thrust exceeds the weight on the pad (in free space: the first thrust).
   const thrust = h.params.exhaustVelocity * T.massFlowRate[e]! * (T.fuel[e]! > 0 ? 1 : 0);
   if (Number.isNaN(h.liftoffTime) && thrust > world.components.Mass.value[e]! * surfaceGravity(h)) {
@@ -237,9 +287,11 @@ export function tsiolkovsky(ve: number, m0: number, m: number): number {
  * Writes [speed m/s, height m] into `out`.
  */
 export function uniformGravityModel(world: PhysicsWorld, h: RocketHandles, out: Float64Array): Float64Array {
-  out[0] = Number.NaN; out[1] = Number.NaN;
+  out[0] = Number.NaN;
+  out[1] = Number.NaN;
   if (h.planet === 0 || Number.isNaN(h.liftoffTime) || !h.vertical) return out;
-  const g = h.liftoffGravity, ve = h.params.exhaustVelocity;
+  const g = h.liftoffGravity,
+    ve = h.params.exhaustVelocity;
   const t = world.time - h.liftoffTime;
   const m = world.components.Mass.value[h.rocket]!;
   const ml = h.liftoffMass;
@@ -263,12 +315,19 @@ export function uniformGravityModel(world: PhysicsWorld, h: RocketHandles, out: 
  * Source: Ramtal and Dobre ch. 6; any orbital mechanics text (Curtis, Orbital Mechanics for Engineering Students, ch. 2).
  */
 export function orbitAltitudes(world: PhysicsWorld, h: RocketHandles, out: Float64Array): Float64Array {
-  out[0] = Number.NaN; out[1] = Number.NaN;
+  out[0] = Number.NaN;
+  out[1] = Number.NaN;
   if (h.planet === 0) return out;
-  const P = world.components.Position, V = world.components.Velocity, e = h.rocket;
-  const x = P.x[e]!, y = P.y[e]!, vx = V.x[e]!, vy = V.y[e]!;
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    e = h.rocket;
+  const x = P.x[e]!,
+    y = P.y[e]!,
+    vx = V.x[e]!,
+    vy = V.y[e]!;
   const mu = h.spec.G * h.spec.mass;
-  const r = Math.hypot(x, y), v2 = vx * vx + vy * vy;
+  const r = Math.hypot(x, y),
+    v2 = vx * vx + vy * vy;
   const eps = v2 / 2 - mu / r;
   const L = x * vy - y * vx;
   const ecc = Math.sqrt(Math.max(0, 1 + (2 * eps * L * L) / (mu * mu)));

@@ -7,21 +7,33 @@
  * there. Keys: P pause, N step, R reset. URL: ?segments (2-200), ?length (1-20 m), ?mass (0.1-20 kg).
  */
 import {
-  addBody, addDistanceJoint, createPhysicsWorld, createRope, isAlive, removeJoint, slotOf, step as physicsStep, type PhysicsWorld, type Rope,
+  addBody,
+  addDistanceJoint,
+  createPhysicsWorld,
+  createRope,
+  isAlive,
+  type PhysicsWorld,
+  step as physicsStep,
+  type Rope,
+  removeJoint,
+  slotOf,
 } from '@bitphysics/physics';
 import { RopeLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import { enableMouseDrag } from '../shared/drag';
+import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
+import { createPlot } from '../shared/plot';
 
 const USAGE = 'Accepted: segments 2-200; length 1-20 m; mass 0.1-20 kg.';
-const url = readUrlParams(() => ({
-  segments: numberParam('segments', { default: 30, min: 2, max: 200, integer: true }),
-  length: numberParam('length', { default: 5, min: 1, max: 20 }),
-  mass: numberParam('mass', { default: 1, min: 0.1, max: 20 }),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    segments: numberParam('segments', { default: 30, min: 2, max: 200, integer: true }),
+    length: numberParam('length', { default: 5, min: 1, max: 20 }),
+    mass: numberParam('mass', { default: 1, min: 0.1, max: 20 }),
+  }),
+  USAGE,
+);
 const params = { ...url, bobMass: 2, slack: true, gravity: 9.81, reset: () => shell.reset() };
 
 const PIN: [number, number] = [0, 3];
@@ -34,11 +46,17 @@ let cuts = 0;
 /** Builds the rope: pinned at PIN, laid out 60 degrees from the vertical so it swings at once. */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld({ gravity: [0, -params.gravity], capacity: 1000 });
-  const L = params.length, a = Math.PI / 3;
+  const L = params.length,
+    a = Math.PI / 3;
   const end: [number, number] = [PIN[0] + L * Math.sin(a), PIN[1] - L * Math.cos(a)];
   rope = createRope(world, { start: PIN, end, segments: params.segments, mass: params.mass, slack: params.slack, drag: 0.01 });
   const last = rope.bodies[rope.bodies.length - 1]!;
-  bob = addBody(world, { position: [end[0] + 0.3 * Math.sin(a), end[1] - 0.3 * Math.cos(a)], mass: params.bobMass, radius: 0.25, restitution: 0.3 });
+  bob = addBody(world, {
+    position: [end[0] + 0.3 * Math.sin(a), end[1] - 0.3 * Math.cos(a)],
+    mass: params.bobMass,
+    radius: 0.25,
+    restitution: 0.3,
+  });
   bobLink = addDistanceJoint(world, { a: last, b: bob, ...(params.slack ? { minLength: 0 } : {}) });
   cuts = 0;
   plot?.clear();
@@ -57,7 +75,10 @@ const game = await startPixiGame({
   title: 'Rope',
   createWorld,
   step: labStep,
-  controls: [{ keys: 'Drag', action: 'swing the bob or rope' }, { keys: 'Click', action: 'cut the rope there' }],
+  controls: [
+    { keys: 'Drag', action: 'swing the bob or rope' },
+    { keys: 'Click', action: 'cut the rope there' },
+  ],
   renderer: { view, balls: 'sprites' },
   onFrame: (alpha, world) => draw(alpha, world),
 });
@@ -65,19 +86,50 @@ const { shell, renderer, app } = game;
 const dock = createLabDock();
 followView(app, renderer.camera, dock, () => view);
 
-createPanel(params, [
-  { type: 'slider', key: 'segments', label: 'segments', min: 2, max: 200, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'length', label: 'length (m)', min: 1, max: 8, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'mass', label: 'rope mass (kg)', min: 0.1, max: 20, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'bobMass', label: 'bob mass (kg)', min: 0.1, max: 50, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'slack', label: 'links only pull (rope), else rods', onChange: () => shell.reset() },
-  { type: 'slider', key: 'gravity', label: 'gravity g (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => { shell.world.gravity[1] = -(g as number); } },
-  { type: 'button', key: 'reset', label: 'new rope (R)' },
-], { title: 'Rope', container: dock.panelSlot });
+createPanel(
+  params,
+  [
+    { type: 'slider', key: 'segments', label: 'segments', min: 2, max: 200, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'length', label: 'length (m)', min: 1, max: 8, step: 0.1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'mass', label: 'rope mass (kg)', min: 0.1, max: 20, step: 0.1, onRelease: true, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'bobMass',
+      label: 'bob mass (kg)',
+      min: 0.1,
+      max: 50,
+      step: 0.1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'slack', label: 'links only pull (rope), else rods', onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity g (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => {
+        shell.world.gravity[1] = -(g as number);
+      },
+    },
+    { type: 'button', key: 'reset', label: 'new rope (R)' },
+  ],
+  { title: 'Rope', container: dock.panelSlot },
+);
 const readout = createReadout(shell.hud.readout, ['links', 'cuts', 'largest link error', 'bob speed', 'tension at the pin']);
 plot = createPlot({
-  parent: dock.charts, title: 'Bob height and link error', yLabel: 'y (m) / error (mm)', width: dock.chartWidth, height: 200, capacity: 1200,
-  series: [{ label: 'bob height (m)', color: '#4cc9f0' }, { label: 'largest link error (mm)', color: '#f4a261' }],
+  parent: dock.charts,
+  title: 'Bob height and link error',
+  yLabel: 'y (m) / error (mm)',
+  width: dock.chartWidth,
+  height: 200,
+  capacity: 1200,
+  series: [
+    { label: 'bob height (m)', color: '#4cc9f0' },
+    { label: 'largest link error (mm)', color: '#f4a261' },
+  ],
 });
 
 // Cut: a click near the rope (not on the bob) removes the nearest link; otherwise the press drags.
@@ -86,28 +138,41 @@ const at = { x: 0, y: 0 };
 canvas.addEventListener('pointerdown', (e) => {
   if (e.button !== 0) return;
   pointerOnCanvas(canvas, e, at);
-  const x = renderer.camera.toWorldX(at.x), y = renderer.camera.toWorldY(at.y);
+  const x = renderer.camera.toWorldX(at.x),
+    y = renderer.camera.toWorldY(at.y);
   if (cutAt(x, y)) e.stopImmediatePropagation();
 });
-const drag = enableMouseDrag(canvas, () => shell.world, () => renderer.camera, { reach: 0.4 });
+const drag = enableMouseDrag(
+  canvas,
+  () => shell.world,
+  () => renderer.camera,
+  { reach: 0.4 },
+);
 
 /**
  * Removes the rope link nearest to world point (x, y) if it is within 0.15 m and the point is not on
  * the bob. @returns whether a link was cut.
  */
 function cutAt(x: number, y: number): boolean {
-  const world = shell.world, P = world.components.Position;
+  const world = shell.world,
+    P = world.components.Position;
   const b = slotOf(bob);
   if (Math.hypot(P.x[b]! - x, P.y[b]! - y) < 0.4) return false;
   const J = world.components.Joint;
-  let best = 0, bestD = 0.15;
+  let best = 0,
+    bestD = 0.15;
   for (const h of [...rope.joints, bobLink]) {
     if (!isAlive(world, h)) continue;
     const j = slotOf(h);
-    const a = J.a[j]!, bb = J.b[j]!;
-    const ax = a === 0 ? J.localAx[j]! : P.x[a]!, ay = a === 0 ? J.localAy[j]! : P.y[a]!;
+    const a = J.a[j]!,
+      bb = J.b[j]!;
+    const ax = a === 0 ? J.localAx[j]! : P.x[a]!,
+      ay = a === 0 ? J.localAy[j]! : P.y[a]!;
     const d = segmentDistance(x, y, ax, ay, P.x[bb]!, P.y[bb]!);
-    if (d < bestD) { bestD = d; best = h; }
+    if (d < bestD) {
+      bestD = d;
+      best = h;
+    }
   }
   if (!best) return false;
   removeJoint(world, best);
@@ -116,7 +181,9 @@ function cutAt(x: number, y: number): boolean {
 }
 
 function segmentDistance(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+  const dx = bx - ax,
+    dy = by - ay,
+    l2 = dx * dx + dy * dy;
   const t = l2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / l2)) : 0;
   return Math.hypot(px - ax - t * dx, py - ay - t * dy);
 }
@@ -133,7 +200,8 @@ function draw(alpha: number, world: PhysicsWorld): void {
   }
   layer.update(renderer.camera, alpha);
   const links = [...rope.joints, bobLink].filter((h) => isAlive(world, h)).length;
-  const V = world.components.Velocity, b = slotOf(bob);
+  const V = world.components.Velocity,
+    b = slotOf(bob);
   readout.set(0, String(links));
   readout.set(1, String(cuts));
   readout.set(2, `${fmt(world.joints.stats.maxError * 1000)} mm`);
@@ -152,5 +220,7 @@ shell.expose({
   links: () => [...rope.joints, bobLink].filter((h) => isAlive(shell.world, h)).length,
   cuts: () => cuts,
   /** Runs the lab's step n times (tests). */
-  advance: (n: number) => { for (let i = 0; i < n; i++) labStep(shell.world); },
+  advance: (n: number) => {
+    for (let i = 0; i < n; i++) labStep(shell.world);
+  },
 });

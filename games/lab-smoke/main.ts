@@ -6,33 +6,52 @@
  * Input: click or drag moves the chimney, P pause, N step, R reset.
  * URL: ?rate (0-600 /s), ?wind (-10..10 m/s), ?turbulence (0-5 m/s), ?buoyancy (0-2), ?seed.
  */
+
+import { type PhysicsWorld, windAt } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { windAt, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
 import { createPanel, numberParam, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  MAX_RATE, PUFF_LIFETIME, createSmoke, moveSmokeSource, setSmokeBuoyancy, setSmokeRate, setSmokeWind, stepSmoke, type Smoke,
+  createSmoke,
+  MAX_RATE,
+  moveSmokeSource,
+  PUFF_LIFETIME,
+  type Smoke,
+  setSmokeBuoyancy,
+  setSmokeRate,
+  setSmokeWind,
+  stepSmoke,
 } from './scene';
 
 /** The ground's height, m, and the lowest the chimney top may be above it. */
-const GROUND = -1.5, MIN_CHIMNEY = 0.4;
+const GROUND = -1.5,
+  MIN_CHIMNEY = 0.4;
 const VIEW = { minX: -6, minY: GROUND - 0.3, maxX: 14, maxY: 11 };
 
 const USAGE = `Accepted: rate 0-${MAX_RATE} /s; wind -10..10 m/s; turbulence 0-5 m/s; buoyancy 0-2; seed (integer).`;
-const url = readUrlParams(() => ({
-  rate: numberParam('rate', { default: 120, min: 0, max: MAX_RATE }),
-  wind: numberParam('wind', { default: 1.5, min: -10, max: 10 }),
-  turbulence: numberParam('turbulence', { default: 0.8, min: 0, max: 5 }),
-  buoyancy: numberParam('buoyancy', { default: 0.25, min: 0, max: 2 }),
-  seed: seedParam(),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    rate: numberParam('rate', { default: 120, min: 0, max: MAX_RATE }),
+    wind: numberParam('wind', { default: 1.5, min: -10, max: 10 }),
+    turbulence: numberParam('turbulence', { default: 0.8, min: 0, max: 5 }),
+    buoyancy: numberParam('buoyancy', { default: 0.25, min: 0, max: 2 }),
+    seed: seedParam(),
+  }),
+  USAGE,
+);
 const params = { ...url, reset: () => shell.reset() };
 
 let smoke: Smoke;
 function createWorld(): PhysicsWorld {
-  smoke = createSmoke({ rate: params.rate, wind: params.wind, turbulence: params.turbulence, buoyancy: params.buoyancy, seed: params.seed });
+  smoke = createSmoke({
+    rate: params.rate,
+    wind: params.wind,
+    turbulence: params.turbulence,
+    buoyancy: params.buoyancy,
+    seed: params.seed,
+  });
   return smoke.world;
 }
 
@@ -48,13 +67,41 @@ const game = await startPixiGame({
 });
 const { shell, renderer, app } = game;
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'wind', label: 'wind (m/s)', min: -6, max: 8, step: 0.1, onChange: (v, p) => setSmokeWind(smoke, v, p.turbulence) },
-  { type: 'slider', key: 'turbulence', label: 'turbulence (m/s rms)', min: 0, max: 3, step: 0.05, onChange: (v, p) => setSmokeWind(smoke, p.wind, v) },
-  { type: 'slider', key: 'rate', label: 'rate (puffs/s)', min: 0, max: MAX_RATE, step: 1, onChange: (v) => setSmokeRate(smoke, v) },
-  { type: 'slider', key: 'buoyancy', label: 'buoyancy (× weight)', min: 0, max: 1, step: 0.01, onChange: (v) => setSmokeBuoyancy(smoke, v) },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Smoke' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'wind',
+      label: 'wind (m/s)',
+      min: -6,
+      max: 8,
+      step: 0.1,
+      onChange: (v, p) => setSmokeWind(smoke, v, p.turbulence),
+    },
+    {
+      type: 'slider',
+      key: 'turbulence',
+      label: 'turbulence (m/s rms)',
+      min: 0,
+      max: 3,
+      step: 0.05,
+      onChange: (v, p) => setSmokeWind(smoke, p.wind, v),
+    },
+    { type: 'slider', key: 'rate', label: 'rate (puffs/s)', min: 0, max: MAX_RATE, step: 1, onChange: (v) => setSmokeRate(smoke, v) },
+    {
+      type: 'slider',
+      key: 'buoyancy',
+      label: 'buoyancy (× weight)',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      onChange: (v) => setSmokeBuoyancy(smoke, v),
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Smoke' },
+);
 
 const info = createReadout(shell.hud.readout, ['puffs alive', 'steady state', 'wind at the chimney']);
 
@@ -65,7 +112,8 @@ renderer.root.addChildAt(scenery, 0);
 const chimney = new Graphics({ label: 'chimney' });
 renderer.root.addChild(chimney);
 const wind = new Float64Array(3);
-let sceneryVersion = -1, frame = 0;
+let sceneryVersion = -1,
+  frame = 0;
 
 function drawFrame(world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -75,7 +123,8 @@ function drawFrame(world: PhysicsWorld): void {
     const r = cam.visibleRect();
     const bands = 10;
     for (let i = 0; i < bands; i++) {
-      const y0 = GROUND + ((r.maxY - GROUND) * i) / bands, y1 = GROUND + ((r.maxY - GROUND) * (i + 1)) / bands;
+      const y0 = GROUND + ((r.maxY - GROUND) * i) / bands,
+        y1 = GROUND + ((r.maxY - GROUND) * (i + 1)) / bands;
       const f = i / bands;
       const color = (Math.round(150 - 60 * f) << 16) | (Math.round(172 - 50 * f) << 8) | Math.round(196 - 30 * f);
       scenery.rect(0, cam.toScreenY(y1), cam.width, cam.toScreenY(y0) - cam.toScreenY(y1) + 1).fill(color);
@@ -89,9 +138,13 @@ function drawFrame(world: PhysicsWorld): void {
   chimney.rect(cam.toScreenX(sx) - w * 0.6, cam.toScreenY(sy), w * 1.2, cam.toScreenLength(0.18)).fill(0x5b352a);
   // Wind vane at the top right: an arrow as long as the wind at the chimney, 1 m/s = 0.5 m.
   windAt(world, sx, sy, 0, world.time, wind);
-  const ax = cam.toScreenX(VIEW.maxX - 3), ay = cam.toScreenY(VIEW.maxY - 1.2);
+  const ax = cam.toScreenX(VIEW.maxX - 3),
+    ay = cam.toScreenY(VIEW.maxY - 1.2);
   const len = cam.toScreenLength(0.5);
-  chimney.moveTo(ax, ay).lineTo(ax + wind[0]! * len, ay - wind[1]! * len).stroke({ width: 3, color: 0xffffff, alpha: 0.8 });
+  chimney
+    .moveTo(ax, ay)
+    .lineTo(ax + wind[0]! * len, ay - wind[1]! * len)
+    .stroke({ width: 3, color: 0xffffff, alpha: 0.8 });
   chimney.circle(ax, ay, 3).fill({ color: 0xffffff, alpha: 0.8 });
   if (frame++ % 6 === 0) {
     const mean = (PUFF_LIFETIME[0] + PUFF_LIFETIME[1]) / 2;

@@ -14,7 +14,14 @@
  * expire each second as are born).
  */
 import {
-  addEmitter, createPhysicsWorld, removeBody, setEmitterRate, setPosition, setWind, step, type PhysicsWorld,
+  addEmitter,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  removeBody,
+  setEmitterRate,
+  setPosition,
+  setWind,
+  step,
 } from '@bitphysics/physics';
 
 /** Mass of a puff, kg. */
@@ -51,7 +58,8 @@ export interface Smoke {
 }
 
 function check(where: string, name: string, v: number, min: number, max: number): void {
-  if (typeof v !== 'number' || !(v >= min && v <= max)) throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
+  if (typeof v !== 'number' || !(v >= min && v <= max))
+    throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
 }
 
 /** Builds the world and the chimney's emitter. @throws RangeError on a setting out of range. */
@@ -72,11 +80,25 @@ export function createSmoke(options: Partial<SmokeSettings> = {}): Smoke {
 /** A chimney emitter with the current settings at the current source. */
 function makeEmitter(smoke: Smoke): number {
   return addEmitter(smoke.world, {
-    position: smoke.source, rate: smoke.settings.rate, shape: 'line', size: 0.25, direction: [0, 1], spread: 0.25,
-    speed: [0.6, 1.2], lifetime: PUFF_LIFETIME, policy: 'recycle-oldest',
+    position: smoke.source,
+    rate: smoke.settings.rate,
+    shape: 'line',
+    size: 0.25,
+    direction: [0, 1],
+    spread: 0.25,
+    speed: [0.6, 1.2],
+    lifetime: PUFF_LIFETIME,
+    policy: 'recycle-oldest',
     particle: {
-      mass: PUFF_MASS, linearDrag: PUFF_DRAG, gravityScale: -smoke.settings.buoyancy,
-      colorStart: 0x55585e, colorEnd: 0xc9ccd1, sizeStart: 0.3, sizeEnd: 2.4, alphaStart: 0.5, alphaEnd: 0,
+      mass: PUFF_MASS,
+      linearDrag: PUFF_DRAG,
+      gravityScale: -smoke.settings.buoyancy,
+      colorStart: 0x55585e,
+      colorEnd: 0xc9ccd1,
+      sizeStart: 0.3,
+      sizeEnd: 2.4,
+      alphaStart: 0.5,
+      alphaEnd: 0,
     },
   });
 }
@@ -119,7 +141,8 @@ export function setSmokeBuoyancy(smoke: Smoke, buoyancy: number): void {
 
 /** Moves the source to (x, y), m. */
 export function moveSmokeSource(smoke: Smoke, x: number, y: number): void {
-  smoke.source[0] = x; smoke.source[1] = y;
+  smoke.source[0] = x;
+  smoke.source[1] = y;
   setPosition(smoke.world, smoke.emitter, smoke.source);
 }
 

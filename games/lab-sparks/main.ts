@@ -7,15 +7,26 @@
  * P pause, N step, R reset.
  * URL: ?tool=grinder|welding, ?rate (0-1500 /s), ?angle (deg), ?spread (deg), ?speed (m/s), ?seed.
  */
-import { Graphics } from 'pixi.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  MAX_RATE, SPARK_MASS, TOOL_PRESETS, WALL_X, configureSparks, createSparks, moveTool, setToolOn, stepSparks, type SparkTool, type Sparks,
+  configureSparks,
+  createSparks,
+  MAX_RATE,
+  moveTool,
+  SPARK_MASS,
+  type Sparks,
+  type SparkTool,
+  setToolOn,
+  stepSparks,
+  TOOL_PRESETS,
+  WALL_X,
 } from './scene';
 
 const VIEW = { minX: WALL_X - 0.3, minY: -0.4, maxX: 9, maxY: 6 };
@@ -49,8 +60,14 @@ const params = {
 let sparks: Sparks;
 function createWorld(): PhysicsWorld {
   sparks = createSparks({
-    tool: params.tool, rate: params.rate, angle: params.angle, spread: params.spread, speed: params.speed,
-    drag: params.drag * 1e-6, restitution: params.restitution, seed: params.seed,
+    tool: params.tool,
+    rate: params.rate,
+    angle: params.angle,
+    spread: params.spread,
+    speed: params.speed,
+    drag: params.drag * 1e-6,
+    restitution: params.restitution,
+    seed: params.seed,
   });
   setToolOn(sparks, params.on);
   return sparks.world;
@@ -95,22 +112,31 @@ function setTool(tool: SparkTool): void {
 /** Applies the panel's cone, drag and restitution (the scene replaces the emitter when the cone changes). */
 function applyCone(): void {
   configureSparks(sparks, {
-    rate: params.rate, angle: params.angle, spread: params.spread, speed: params.speed, drag: params.drag * 1e-6, restitution: params.restitution,
+    rate: params.rate,
+    angle: params.angle,
+    spread: params.spread,
+    speed: params.speed,
+    drag: params.drag * 1e-6,
+    restitution: params.restitution,
   });
 }
 
-const panel = createPanel(params, [
-  { type: 'choice', key: 'tool', label: 'tool (W)', options: ['grinder', 'welding'], onChange: (t) => setTool(t as SparkTool) },
-  { type: 'slider', key: 'rate', label: 'rate (sparks/s)', min: 0, max: MAX_RATE, step: 10, onChange: () => applyCone() },
-  { type: 'slider', key: 'angle', label: 'direction (°)', min: 0, max: 360, step: 1, onChange: () => applyCone() },
-  { type: 'slider', key: 'spread', label: 'cone half-angle (°)', min: 0, max: 180, step: 1, onChange: () => applyCone() },
-  { type: 'slider', key: 'speed', label: 'launch speed (m/s)', min: 1, max: 40, step: 0.5, onChange: () => applyCone() },
-  { type: 'slider', key: 'drag', label: 'drag k (mg/m)', min: 0, max: 40, step: 0.5, onChange: () => applyCone() },
-  { type: 'slider', key: 'restitution', label: 'floor restitution', min: 0, max: 1, step: 0.01, onChange: () => applyCone() },
-  { type: 'checkbox', key: 'trails', label: 'streak trails', onChange: (v) => layer.setTrails(v === true ? TRAILS : false) },
-  { type: 'checkbox', key: 'on', label: 'tool on (Space)', onChange: (v) => setOn(v === true) },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Sparks' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'choice', key: 'tool', label: 'tool (W)', options: ['grinder', 'welding'], onChange: (t) => setTool(t as SparkTool) },
+    { type: 'slider', key: 'rate', label: 'rate (sparks/s)', min: 0, max: MAX_RATE, step: 10, onChange: () => applyCone() },
+    { type: 'slider', key: 'angle', label: 'direction (°)', min: 0, max: 360, step: 1, onChange: () => applyCone() },
+    { type: 'slider', key: 'spread', label: 'cone half-angle (°)', min: 0, max: 180, step: 1, onChange: () => applyCone() },
+    { type: 'slider', key: 'speed', label: 'launch speed (m/s)', min: 1, max: 40, step: 0.5, onChange: () => applyCone() },
+    { type: 'slider', key: 'drag', label: 'drag k (mg/m)', min: 0, max: 40, step: 0.5, onChange: () => applyCone() },
+    { type: 'slider', key: 'restitution', label: 'floor restitution', min: 0, max: 1, step: 0.01, onChange: () => applyCone() },
+    { type: 'checkbox', key: 'trails', label: 'streak trails', onChange: (v) => layer.setTrails(v === true ? TRAILS : false) },
+    { type: 'checkbox', key: 'on', label: 'tool on (Space)', onChange: (v) => setOn(v === true) },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Sparks' },
+);
 
 const info = createReadout(shell.hud.readout, ['sparks alive', 'bounces', 'terminal fall speed']);
 
@@ -122,29 +148,45 @@ let frame = 0;
 function drawFrame(_alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   const [x, y] = sparks.at;
-  const sx = cam.toScreenX(x), sy = cam.toScreenY(y);
+  const sx = cam.toScreenX(x),
+    sy = cam.toScreenY(y);
   const a = (sparks.settings.angle * Math.PI) / 180;
-  const dx = Math.cos(a), dy = Math.sin(a);
+  const dx = Math.cos(a),
+    dy = Math.sin(a);
   tool.clear();
   if (sparks.settings.tool === 'grinder') {
     // The wheel touches the work at the emitter; the sparks leave its rim tangentially, so its centre
     // lies off the cone's axis, on the side away from the floor.
-    let nx = -dy, ny = dx;
-    if (ny < 0) { nx = -nx; ny = -ny; }
+    let nx = -dy,
+      ny = dx;
+    if (ny < 0) {
+      nx = -nx;
+      ny = -ny;
+    }
     const r = cam.toScreenLength(WHEEL);
-    const cx = sx + nx * r, cy = sy - ny * r;
+    const cx = sx + nx * r,
+      cy = sy - ny * r;
     tool.circle(cx, cy, r).fill({ color: 0x3a3f4a }).stroke({ width: 3, color: 0x8a93a6 });
-    tool.moveTo(cx, cy).lineTo(cx + nx * r * 2.2, cy - ny * r * 2.2).stroke({ width: cam.toScreenLength(0.22), color: 0x2d5d8c, cap: 'round' });
+    tool
+      .moveTo(cx, cy)
+      .lineTo(cx + nx * r * 2.2, cy - ny * r * 2.2)
+      .stroke({ width: cam.toScreenLength(0.22), color: 0x2d5d8c, cap: 'round' });
   } else {
     // Torch: a nozzle pointing at the weld from up and to the right.
     const len = cam.toScreenLength(1.2);
-    tool.moveTo(sx + 4, sy - 4).lineTo(sx + len * 0.7, sy - len * 0.7).stroke({ width: cam.toScreenLength(0.12), color: 0x9aa3b5, cap: 'round' });
+    tool
+      .moveTo(sx + 4, sy - 4)
+      .lineTo(sx + len * 0.7, sy - len * 0.7)
+      .stroke({ width: cam.toScreenLength(0.12), color: 0x9aa3b5, cap: 'round' });
   }
   if (sparks.on) tool.circle(sx, sy, 4).fill({ color: 0xfff3c0, alpha: 0.9 });
   if (frame++ % 6 === 0) {
     info.set(0, String(countParticles(world)));
     info.set(1, String(sparks.bounces));
-    info.set(2, sparks.settings.drag > 0 ? `${Math.sqrt((SPARK_MASS * 9.81) / sparks.settings.drag).toFixed(1)} m/s (√(m g / k))` : '∞ (no drag)');
+    info.set(
+      2,
+      sparks.settings.drag > 0 ? `${Math.sqrt((SPARK_MASS * 9.81) / sparks.settings.drag).toFixed(1)} m/s (√(m g / k))` : '∞ (no drag)',
+    );
   }
 }
 

@@ -17,8 +17,18 @@
  * impact speed exceeds 1 m/s and that pushed.
  */
 import {
-  ContactKind, addEmitter, addSegment, createPhysicsWorld, removeBody, setEmitterEnabled, setEmitterRate,
-  setMaterial, setPosition, step, slotOf, type PhysicsWorld,
+  addEmitter,
+  addSegment,
+  ContactKind,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  removeBody,
+  setEmitterEnabled,
+  setEmitterRate,
+  setMaterial,
+  setPosition,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
 
 /** Mass of a spark, kg (0.1 g). */
@@ -28,7 +38,8 @@ export const SPARK_RADIUS = 0.01;
 /** Most sparks per second. */
 export const MAX_RATE = 1500;
 /** Where the back wall stands, m, and how long the floor runs. */
-export const WALL_X = -7, FLOOR_END = 14;
+export const WALL_X = -7,
+  FLOOR_END = 14;
 
 /** The two tools. */
 export type SparkTool = 'grinder' | 'welding';
@@ -80,11 +91,13 @@ export interface Sparks {
 }
 
 function check(where: string, name: string, v: number, min: number, max: number): void {
-  if (typeof v !== 'number' || !(v >= min && v <= max)) throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
+  if (typeof v !== 'number' || !(v >= min && v <= max))
+    throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
 }
 
 function checkAll(where: string, s: SparksSettings): void {
-  if (s.tool !== 'grinder' && s.tool !== 'welding') throw new RangeError(`${where}: tool must be 'grinder' or 'welding', got ${String(s.tool)}`);
+  if (s.tool !== 'grinder' && s.tool !== 'welding')
+    throw new RangeError(`${where}: tool must be 'grinder' or 'welding', got ${String(s.tool)}`);
   check(where, 'rate', s.rate, 0, MAX_RATE);
   check(where, 'angle', s.angle, -360, 360);
   check(where, 'spread', s.spread, 0, 180);
@@ -111,11 +124,26 @@ function makeEmitter(s: Sparks): number {
   const o = s.settings;
   const a = (o.angle * Math.PI) / 180;
   return addEmitter(s.world, {
-    position: s.at, rate: o.rate, shape: 'disc', size: 0.06, direction: [Math.cos(a), Math.sin(a)], spread: (o.spread * Math.PI) / 180,
-    speed: [o.speed * 0.5, o.speed], lifetime: LIFETIMES[o.tool], policy: 'recycle-oldest', enabled: s.on,
+    position: s.at,
+    rate: o.rate,
+    shape: 'disc',
+    size: 0.06,
+    direction: [Math.cos(a), Math.sin(a)],
+    spread: (o.spread * Math.PI) / 180,
+    speed: [o.speed * 0.5, o.speed],
+    lifetime: LIFETIMES[o.tool],
+    policy: 'recycle-oldest',
+    enabled: s.on,
     particle: {
-      mass: SPARK_MASS, quadraticDrag: o.drag, radius: SPARK_RADIUS,
-      colorStart: 0xfffbe0, colorEnd: 0xff4a00, sizeStart: 0.07, sizeEnd: 0.025, alphaStart: 1, alphaEnd: 0,
+      mass: SPARK_MASS,
+      quadraticDrag: o.drag,
+      radius: SPARK_RADIUS,
+      colorStart: 0xfffbe0,
+      colorEnd: 0xff4a00,
+      sizeStart: 0.07,
+      sizeEnd: 0.025,
+      alphaStart: 1,
+      alphaEnd: 0,
     },
   });
 }
@@ -127,10 +155,18 @@ function makeEmitter(s: Sparks): number {
  * and speed unless those are given too. @throws RangeError on a value out of range.
  */
 export function configureSparks(s: Sparks, changes: Partial<Omit<SparksSettings, 'seed'>>): void {
-  const next: SparksSettings = { ...s.settings, ...(changes.tool && changes.tool !== s.settings.tool ? TOOL_PRESETS[changes.tool] : {}), ...changes };
+  const next: SparksSettings = {
+    ...s.settings,
+    ...(changes.tool && changes.tool !== s.settings.tool ? TOOL_PRESETS[changes.tool] : {}),
+    ...changes,
+  };
   checkAll('configureSparks', next);
-  const rebuild = next.tool !== s.settings.tool || next.angle !== s.settings.angle || next.spread !== s.settings.spread ||
-    next.speed !== s.settings.speed || next.drag !== s.settings.drag;
+  const rebuild =
+    next.tool !== s.settings.tool ||
+    next.angle !== s.settings.angle ||
+    next.spread !== s.settings.spread ||
+    next.speed !== s.settings.speed ||
+    next.drag !== s.settings.drag;
   if (next.restitution !== s.settings.restitution) {
     setMaterial(s.world, s.floor, { restitution: next.restitution });
     setMaterial(s.world, s.wall, { restitution: next.restitution });
@@ -163,8 +199,17 @@ export function stepSparks(s: Sparks): void {
   // The last step's contacts: after a step the solver has moved them into the warm-start cache
   // (`world.collision.contacts` is then the empty spare buffer), as the renderers' debug layers read them.
   const buf = s.world.collision.cache.rows;
-  const kind = buf.kind, feature = buf.feature, impact = buf.impactVelocity, pushed = buf.impulse;
+  const kind = buf.kind,
+    feature = buf.feature,
+    impact = buf.impactVelocity,
+    pushed = buf.impulse;
   for (let i = 0; i < buf.count; i++) {
-    if (kind[i] === ContactKind.Segment && (feature[i] === slotOf(s.floor) || feature[i] === slotOf(s.wall)) && impact[i]! < -1 && pushed[i]! > 0) s.bounces++;
+    if (
+      kind[i] === ContactKind.Segment &&
+      (feature[i] === slotOf(s.floor) || feature[i] === slotOf(s.wall)) &&
+      impact[i]! < -1 &&
+      pushed[i]! > 0
+    )
+      s.bounces++;
   }
 }

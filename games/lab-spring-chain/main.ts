@@ -10,19 +10,37 @@
  * URL: ?links (1-40), ?k (1-5000 N/m), ?damping (0-50 N s/m), ?mass (0.01-10 kg), ?angle (deg),
  * ?integrator.
  */
-import { Graphics } from 'pixi.js';
+
 import {
-  INTEGRATOR_NAMES, addSpring, createPhysicsWorld, gravitationalPotentialEnergy, kineticEnergy, removeBody,
-  springPotentialEnergy, step as physicsStep, totalEnergy, slotOf, type IntegratorName, type PhysicsWorld,
+  addSpring,
+  createPhysicsWorld,
+  gravitationalPotentialEnergy,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  kineticEnergy,
+  type PhysicsWorld,
+  step as physicsStep,
+  removeBody,
+  slotOf,
+  springPotentialEnergy,
+  totalEnergy,
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics } from 'pixi.js';
 import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
+import { createLabDock, createReadout, drawnPosition, drawSpring, fmt, followView, readUrlParams } from '../shared/lab-kit';
+import { startPixiGame } from '../shared/pixi';
 import { createPlot } from '../shared/plot';
-import { createLabDock, createReadout, drawSpring, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
 import {
-  BALL_RADIUS, CHAIN_DEFAULTS, LINK_LENGTH, buildChain, chainWorldOptions, hangingLength, setSpringConstants, substepsFor,
+  BALL_RADIUS,
+  buildChain,
+  CHAIN_DEFAULTS,
   type ChainHandles,
+  chainWorldOptions,
+  hangingLength,
+  LINK_LENGTH,
+  setSpringConstants,
+  substepsFor,
 } from './scene';
 
 /** Mouse spring stiffness per kilogram of chain, N/m/kg: the grabbed ball sags about g / 150 = 7 cm under the chain's weight. */
@@ -34,14 +52,17 @@ const GRAB_RADIUS_PX = 28;
 const BALL_COLOR = 0x4cc9f0;
 
 const USAGE = `Accepted: links 1-40 (integer); k 1-5000 N/m; damping 0-50 N s/m; mass 0.01-10 kg; angle -180-180 deg; integrator = ${INTEGRATOR_NAMES.join(' | ')}.`;
-const url = readUrlParams(() => ({
-  links: numberParam('links', { default: CHAIN_DEFAULTS.links, min: 1, max: 40, integer: true }),
-  stiffness: numberParam('k', { default: CHAIN_DEFAULTS.stiffness, min: 1, max: 5000 }),
-  damping: numberParam('damping', { default: CHAIN_DEFAULTS.damping, min: 0, max: 50 }),
-  mass: numberParam('mass', { default: CHAIN_DEFAULTS.mass, min: 0.01, max: 10 }),
-  angle: numberParam('angle', { default: CHAIN_DEFAULTS.angle, min: -180, max: 180 }),
-  integrator: choiceParam('integrator', INTEGRATOR_NAMES, CHAIN_DEFAULTS.integrator),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    links: numberParam('links', { default: CHAIN_DEFAULTS.links, min: 1, max: 40, integer: true }),
+    stiffness: numberParam('k', { default: CHAIN_DEFAULTS.stiffness, min: 1, max: 5000 }),
+    damping: numberParam('damping', { default: CHAIN_DEFAULTS.damping, min: 0, max: 50 }),
+    mass: numberParam('mass', { default: CHAIN_DEFAULTS.mass, min: 0.01, max: 10 }),
+    angle: numberParam('angle', { default: CHAIN_DEFAULTS.angle, min: -180, max: 180 }),
+    integrator: choiceParam('integrator', INTEGRATOR_NAMES, CHAIN_DEFAULTS.integrator),
+  }),
+  USAGE,
+);
 
 const params = { ...url, reset: () => shell.reset() };
 
@@ -63,12 +84,23 @@ const grab = { ball: 0, spring: 0 };
 
 /** Builds a fresh chain from the params; the shell calls it at start and on R. */
 function createWorld(): PhysicsWorld {
-  const options = { links: params.links, stiffness: params.stiffness, damping: params.damping, mass: params.mass, angle: params.angle, integrator: params.integrator as IntegratorName };
+  const options = {
+    links: params.links,
+    stiffness: params.stiffness,
+    damping: params.damping,
+    mass: params.mass,
+    angle: params.angle,
+    integrator: params.integrator as IntegratorName,
+  };
   const world = createPhysicsWorld(chainWorldOptions(options));
   handles = buildChain(world, options);
-  grab.ball = 0; grab.spring = 0;
+  grab.ball = 0;
+  grab.spring = 0;
   const R = hangingLength(handles.params) + 0.3;
-  view.minX = -R; view.maxX = R; view.minY = -R * 1.05; view.maxY = 0.6;
+  view.minX = -R;
+  view.maxX = R;
+  view.minY = -R * 1.05;
+  view.maxY = 0.6;
   refit?.();
   baseline(world);
   return world;
@@ -106,18 +138,41 @@ const game = await startPixiGame({
 const { shell, renderer, app } = game;
 const dock = createLabDock();
 refit = followView(app, renderer.camera, dock, () => view);
-const paint = (): void => { for (const b of handles.balls) renderer.setColor(b, BALL_COLOR); };
+const paint = (): void => {
+  for (const b of handles.balls) renderer.setColor(b, BALL_COLOR);
+};
 paint();
 shell.onWorldChange(paint);
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'stiffness', label: 'stiffness k (N/m)', min: 5, max: 2000, step: 1, onChange: () => applySprings() },
-  { type: 'slider', key: 'damping', label: 'damping (N s/m)', min: 0, max: 5, step: 0.01, onChange: () => applySprings() },
-  { type: 'slider', key: 'links', label: 'links (rebuilds)', min: 1, max: 40, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'mass', label: 'mass per ball (kg, rebuilds)', min: 0.02, max: 2, step: 0.01, onRelease: true, onChange: () => shell.reset() },
-  { type: 'choice', key: 'integrator', options: INTEGRATOR_NAMES, onChange: (name) => { shell.world.integrator = name as IntegratorName; baseline(shell.world); } },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Spring chain', container: dock.panelSlot });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'stiffness', label: 'stiffness k (N/m)', min: 5, max: 2000, step: 1, onChange: () => applySprings() },
+    { type: 'slider', key: 'damping', label: 'damping (N s/m)', min: 0, max: 5, step: 0.01, onChange: () => applySprings() },
+    { type: 'slider', key: 'links', label: 'links (rebuilds)', min: 1, max: 40, step: 1, onRelease: true, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'mass',
+      label: 'mass per ball (kg, rebuilds)',
+      min: 0.02,
+      max: 2,
+      step: 0.01,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    {
+      type: 'choice',
+      key: 'integrator',
+      options: INTEGRATOR_NAMES,
+      onChange: (name) => {
+        shell.world.integrator = name as IntegratorName;
+        baseline(shell.world);
+      },
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Spring chain', container: dock.panelSlot },
+);
 
 /** Applies the panel's stiffness and damping to the running chain and takes a new energy reference. */
 function applySprings(): void {
@@ -128,10 +183,18 @@ function applySprings(): void {
 
 const readout = createReadout(shell.hud.readout, ['total energy E', 'reference E₀', 'max |E − E₀|', 'substeps', 'dragging']);
 plot = createPlot({
-  parent: dock.charts, title: 'Energy', yLabel: 'E (J)', width: dock.chartWidth, height: 220, capacity: 1200,
+  parent: dock.charts,
+  title: 'Energy',
+  yLabel: 'E (J)',
+  width: dock.chartWidth,
+  height: 220,
+  capacity: 1200,
   series: [
-    { label: 'total', color: '#f8f9fa' }, { label: 'kinetic', color: '#4cc9f0' }, { label: 'gravity', color: '#06d6a0' },
-    { label: 'springs', color: '#ff8c42' }, { label: 'reference', color: '#ffd166', dashed: true },
+    { label: 'total', color: '#f8f9fa' },
+    { label: 'kinetic', color: '#4cc9f0' },
+    { label: 'gravity', color: '#06d6a0' },
+    { label: 'springs', color: '#ff8c42' },
+    { label: 'reference', color: '#ffd166', dashed: true },
   ],
 });
 shell.reset();
@@ -179,7 +242,8 @@ function dragTo(x: number, y: number): void {
 function release(): void {
   if (grab.spring === 0) return;
   removeBody(shell.world, grab.spring);
-  grab.ball = 0; grab.spring = 0;
+  grab.ball = 0;
+  grab.spring = 0;
   shell.world.substeps = substepsFor(handles.params.stiffness, handles.params.mass, shell.world.dt);
   baseline(shell.world);
 }
@@ -188,11 +252,15 @@ canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0 || pointerId !== -1) return;
   pointerOnCanvas(canvas, event, pointer);
   const cam = renderer.camera;
-  let best = -1, bestD = GRAB_RADIUS_PX;
+  let best = -1,
+    bestD = GRAB_RADIUS_PX;
   for (let i = 0; i < handles.balls.length; i++) {
     drawnPosition(shell.world, handles.balls[i]!, 1, at);
     const d = Math.hypot(cam.toScreenX(at.x) - pointer.x, cam.toScreenY(at.y) - pointer.y);
-    if (d < bestD) { bestD = d; best = i; }
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
   }
   if (best < 0) return;
   pointerId = event.pointerId;
@@ -212,18 +280,23 @@ const up = (event: PointerEvent): void => {
 canvas.addEventListener('pointerup', up);
 canvas.addEventListener('pointercancel', up);
 // A reset drops the old world's grab (its entities are gone with it).
-shell.onWorldChange(() => { pointerId = -1; });
+shell.onWorldChange(() => {
+  pointerId = -1;
+});
 
 // ---- Drawing ------------------------------------------------------------------------------------
 
 const overlay = new Graphics({ label: 'lab-overlay' });
 renderer.root.addChildAt(overlay, 1);
-const pa: Point2 = { x: 0, y: 0 }, pb: Point2 = { x: 0, y: 0 };
+const pa: Point2 = { x: 0, y: 0 },
+  pb: Point2 = { x: 0, y: 0 };
 
 /** Spring colour from its strain (L - L0) / L0: blue compressed, grey at rest, red stretched. */
 function strainColor(strain: number): number {
   const s = Math.max(-1, Math.min(1, strain * 4));
-  const r = s > 0 ? 160 + 95 * s : 160 + 60 * s, g = 170 - 90 * Math.abs(s), b = s < 0 ? 170 - 85 * s : 170 - 90 * s;
+  const r = s > 0 ? 160 + 95 * s : 160 + 60 * s,
+    g = 170 - 90 * Math.abs(s),
+    b = s < 0 ? 170 - 85 * s : 170 - 90 * s;
   return (Math.round(r) << 16) | (Math.round(g) << 8) | Math.round(Math.min(255, b));
 }
 
@@ -231,22 +304,40 @@ function strainColor(strain: number): number {
 function drawOverlay(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
   overlay.clear();
-  const ax = cam.toScreenX(handles.anchor[0]), ay = cam.toScreenY(handles.anchor[1]);
+  const ax = cam.toScreenX(handles.anchor[0]),
+    ay = cam.toScreenY(handles.anchor[1]);
   overlay.rect(ax - 30, ay - 6, 60, 6).fill({ color: 0x8d99ae });
   for (let k = -3; k <= 3; k++) overlay.moveTo(ax + k * 9, ay - 6).lineTo(ax + k * 9 + 6, ay - 13);
   overlay.stroke({ width: 1.5, color: 0x8d99ae });
   const amp = Math.max(3, Math.min(8, cam.toScreenLength(0.06)));
   for (let i = 0; i < handles.balls.length; i++) {
-    if (i === 0) { pa.x = handles.anchor[0]; pa.y = handles.anchor[1]; } else drawnPosition(world, handles.balls[i - 1]!, alpha, pa);
+    if (i === 0) {
+      pa.x = handles.anchor[0];
+      pa.y = handles.anchor[1];
+    } else drawnPosition(world, handles.balls[i - 1]!, alpha, pa);
     drawnPosition(world, handles.balls[i]!, alpha, pb);
     const L = Math.hypot(pb.x - pa.x, pb.y - pa.y);
-    drawSpring(overlay, cam.toScreenX(pa.x), cam.toScreenY(pa.y), cam.toScreenX(pb.x), cam.toScreenY(pb.y), 6, amp, 1.5, strainColor((L - LINK_LENGTH) / LINK_LENGTH));
+    drawSpring(
+      overlay,
+      cam.toScreenX(pa.x),
+      cam.toScreenY(pa.y),
+      cam.toScreenX(pb.x),
+      cam.toScreenY(pb.y),
+      6,
+      amp,
+      1.5,
+      strainColor((L - LINK_LENGTH) / LINK_LENGTH),
+    );
   }
   if (grab.spring !== 0) {
     const S = world.components.Spring;
     drawnPosition(world, grab.ball, alpha, pb);
-    const bx = cam.toScreenX(pb.x), by = cam.toScreenY(pb.y);
-    overlay.moveTo(cam.toScreenX(S.anchorX[slotOf(grab.spring)]!), cam.toScreenY(S.anchorY[slotOf(grab.spring)]!)).lineTo(bx, by).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    const bx = cam.toScreenX(pb.x),
+      by = cam.toScreenY(pb.y);
+    overlay
+      .moveTo(cam.toScreenX(S.anchorX[slotOf(grab.spring)]!), cam.toScreenY(S.anchorY[slotOf(grab.spring)]!))
+      .lineTo(bx, by)
+      .stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
     overlay.circle(bx, by, Math.max(6, cam.toScreenLength(BALL_RADIUS)) + 3).stroke({ width: 2, color: 0xffffff });
   }
   updateReadout(world);

@@ -6,8 +6,13 @@
  * deterministic builder; no DOM.
  */
 import {
-  INTEGRATOR_NAMES, addBody, addSpring, slotOf, type IntegratorName, type PhysicsWorld,
+  addBody,
+  addSpring,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
   type PhysicsWorldOptions,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** Rest length of every spring, m. */
@@ -37,7 +42,14 @@ export interface ChainOptions {
 export type ChainParams = Required<ChainOptions>;
 
 /** Defaults. */
-export const CHAIN_DEFAULTS: Readonly<ChainParams> = Object.freeze({ links: 8, stiffness: 200, damping: 0, mass: 0.2, angle: 70, integrator: 'velocity-verlet' });
+export const CHAIN_DEFAULTS: Readonly<ChainParams> = Object.freeze({
+  links: 8,
+  stiffness: 200,
+  damping: 0,
+  mass: 0.2,
+  angle: 70,
+  integrator: 'velocity-verlet',
+});
 
 /** What the builder returns. */
 export interface ChainHandles {
@@ -57,16 +69,23 @@ export interface ChainHandles {
  */
 export function resolveChainOptions(options: ChainOptions = {}): ChainParams {
   for (const k of Object.keys(options)) {
-    if (!(k in CHAIN_DEFAULTS)) throw new TypeError(`lab-spring-chain: unknown option ${JSON.stringify(k)}; known: ${Object.keys(CHAIN_DEFAULTS).join(', ')}`);
+    if (!(k in CHAIN_DEFAULTS))
+      throw new TypeError(`lab-spring-chain: unknown option ${JSON.stringify(k)}; known: ${Object.keys(CHAIN_DEFAULTS).join(', ')}`);
   }
   const p = { ...CHAIN_DEFAULTS, ...options } as ChainParams;
-  const check = (ok: boolean, what: string, v: unknown) => { if (!ok) throw new RangeError(`lab-spring-chain: ${what}, got ${String(v)}`); };
+  const check = (ok: boolean, what: string, v: unknown) => {
+    if (!ok) throw new RangeError(`lab-spring-chain: ${what}, got ${String(v)}`);
+  };
   check(Number.isInteger(p.links) && p.links >= 1 && p.links <= 40, 'links must be an integer in [1, 40]', p.links);
   check(p.stiffness >= 1 && p.stiffness <= 5000, 'stiffness must be in [1, 5000] N/m', p.stiffness);
   check(p.damping >= 0 && p.damping <= 50, 'damping must be in [0, 50] N s/m', p.damping);
   check(p.mass >= 0.01 && p.mass <= 10, 'mass must be in [0.01, 10] kg', p.mass);
   check(p.angle >= -180 && p.angle <= 180, 'angle must be in [-180, 180] degrees', p.angle);
-  check((INTEGRATOR_NAMES as readonly string[]).includes(p.integrator), `integrator must be one of ${INTEGRATOR_NAMES.join(', ')}`, p.integrator);
+  check(
+    (INTEGRATOR_NAMES as readonly string[]).includes(p.integrator),
+    `integrator must be one of ${INTEGRATOR_NAMES.join(', ')}`,
+    p.integrator,
+  );
   return p;
 }
 
@@ -84,8 +103,12 @@ export function substepsFor(stiffness: number, mass: number, dt = 1 / 60): numbe
 export function chainWorldOptions(options: ChainOptions = {}): PhysicsWorldOptions {
   const p = resolveChainOptions(options);
   return {
-    dimensions: 2, capacity: 2 * p.links + 8, gravity: [0, -GRAVITY], dt: 1 / 60,
-    substeps: substepsFor(p.stiffness, p.mass), integrator: p.integrator,
+    dimensions: 2,
+    capacity: 2 * p.links + 8,
+    gravity: [0, -GRAVITY],
+    dt: 1 / 60,
+    substeps: substepsFor(p.stiffness, p.mass),
+    integrator: p.integrator,
   };
 }
 
@@ -106,14 +129,23 @@ export function buildChain(world: PhysicsWorld, options: ChainOptions = {}): Cha
   if (world.dimensions !== 2) throw new RangeError(`lab-spring-chain: needs a 2D world, got dimensions ${world.dimensions}`);
   const anchor = [0, 0] as const;
   const a = (p.angle * Math.PI) / 180;
-  const ux = Math.sin(a), uy = -Math.cos(a);
+  const ux = Math.sin(a),
+    uy = -Math.cos(a);
   const h: ChainHandles = { balls: [], springs: [], anchor, params: p };
   for (let i = 0; i < p.links; i++) {
     const d = (i + 1) * LINK_LENGTH;
-    const ball = addBody(world, { position: [anchor[0] + ux * d, anchor[1] + uy * d], radius: BALL_RADIUS, mass: p.mass, rotates: false, restitution: 0.5, friction: 0.1 });
-    const spring = i === 0
-      ? addSpring(world, { anchor, b: ball, stiffness: p.stiffness, restLength: LINK_LENGTH, damping: p.damping })
-      : addSpring(world, { a: h.balls[i - 1]!, b: ball, stiffness: p.stiffness, restLength: LINK_LENGTH, damping: p.damping });
+    const ball = addBody(world, {
+      position: [anchor[0] + ux * d, anchor[1] + uy * d],
+      radius: BALL_RADIUS,
+      mass: p.mass,
+      rotates: false,
+      restitution: 0.5,
+      friction: 0.1,
+    });
+    const spring =
+      i === 0
+        ? addSpring(world, { anchor, b: ball, stiffness: p.stiffness, restLength: LINK_LENGTH, damping: p.damping })
+        : addSpring(world, { a: h.balls[i - 1]!, b: ball, stiffness: p.stiffness, restLength: LINK_LENGTH, damping: p.damping });
     h.balls.push(ball);
     h.springs.push(spring);
   }
@@ -128,7 +160,10 @@ export function buildChain(world: PhysicsWorld, options: ChainOptions = {}): Cha
 export function setSpringConstants(world: PhysicsWorld, h: ChainHandles, stiffness: number, damping: number): void {
   const p = resolveChainOptions({ ...h.params, stiffness, damping });
   const S = world.components.Spring;
-  for (const s of h.springs) { S.stiffness[slotOf(s)] = p.stiffness; S.damping[slotOf(s)] = p.damping; }
+  for (const s of h.springs) {
+    S.stiffness[slotOf(s)] = p.stiffness;
+    S.damping[slotOf(s)] = p.damping;
+  }
   world.substeps = substepsFor(p.stiffness, p.mass, world.dt);
   h.params = p;
 }

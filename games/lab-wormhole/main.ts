@@ -9,34 +9,48 @@
  * Input: drag a hole to move it, click elsewhere to add 40 stars, T trails, P pause, N step, R reset.
  * URL: ?count (1-20000 stars), ?bh and ?wh (G M of the holes, m^3/s^2), ?horizon (m), ?drag (1/s), ?seed.
  */
-import { Graphics } from 'pixi.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { PointLayer, type Point2 } from '@bitphysics/render-pixi';
-import { startPixiGame } from '../shared/pixi';
+import { type Point2, PointLayer } from '@bitphysics/render-pixi';
+import { Graphics } from 'pixi.js';
 import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
-import { advanceSteps, exposeLive, fmt } from '../shared/particle-kit';
 import { createReadout, readUrlParams } from '../shared/lab-kit';
+import { advanceSteps, exposeLive, fmt } from '../shared/particle-kit';
+import { startPixiGame } from '../shared/pixi';
 import {
-  BLACK_HOLE_SOFTENING, addStar, createWormhole, moveHole, setBlackHoleMass, setHorizon, setStarDrag,
-  setWhiteHoleStrength, stepWormhole, type Wormhole,
+  addStar,
+  BLACK_HOLE_SOFTENING,
+  createWormhole,
+  moveHole,
+  setBlackHoleMass,
+  setHorizon,
+  setStarDrag,
+  setWhiteHoleStrength,
+  stepWormhole,
+  type Wormhole,
 } from './scene';
 
 /** Stars a click adds, in a disc of this radius (m). */
-const CLICK_STARS = 40, CLICK_RADIUS = 0.8;
+const CLICK_STARS = 40,
+  CLICK_RADIUS = 0.8;
 /** A press moving less than this, CSS px, is a click. */
 const CLICK_SLOP = 6;
 
-const USAGE = 'Accepted: count 1-20000 (integer); bh 1-300 and wh 0-300 (m³/s²); horizon 0.35-3 m; drag 0-3 /s; trails 0|1; seed (integer).';
+const USAGE =
+  'Accepted: count 1-20000 (integer); bh 1-300 and wh 0-300 (m³/s²); horizon 0.35-3 m; drag 0-3 /s; trails 0|1; seed (integer).';
 const search = new URLSearchParams(location.search);
-const url = readUrlParams(() => ({
-  count: numberParam('count', { default: 2000, min: 1, max: 20_000, integer: true }),
-  blackHole: numberParam('bh', { default: 60, min: 1, max: 300 }),
-  whiteHole: numberParam('wh', { default: 30, min: 0, max: 300 }),
-  horizon: numberParam('horizon', { default: 0.8, min: 0.35, max: 3 }),
-  drag: numberParam('drag', { default: 0.5, min: 0, max: 3 }),
-  trails: search.has('trails') ? flagParam('trails') : true,
-  seed: seedParam(),
-}), USAGE);
+const url = readUrlParams(
+  () => ({
+    count: numberParam('count', { default: 2000, min: 1, max: 20_000, integer: true }),
+    blackHole: numberParam('bh', { default: 60, min: 1, max: 300 }),
+    whiteHole: numberParam('wh', { default: 30, min: 0, max: 300 }),
+    horizon: numberParam('horizon', { default: 0.8, min: 0.35, max: 3 }),
+    drag: numberParam('drag', { default: 0.5, min: 0, max: 3 }),
+    trails: search.has('trails') ? flagParam('trails') : true,
+    seed: seedParam(),
+  }),
+  USAGE,
+);
 
 const params = { ...url, trailLength: 0.12, reset: () => shell.reset() };
 
@@ -44,7 +58,12 @@ let hole: Wormhole;
 
 function createWorld(): PhysicsWorld {
   hole = createWormhole({
-    count: params.count, blackHole: params.blackHole, whiteHole: params.whiteHole, horizon: params.horizon, drag: params.drag, seed: params.seed,
+    count: params.count,
+    blackHole: params.blackHole,
+    whiteHole: params.whiteHole,
+    horizon: params.horizon,
+    drag: params.drag,
+    seed: params.seed,
   });
   return hole.world;
 }
@@ -69,7 +88,11 @@ const { shell, renderer, app } = game;
 const holes = new Graphics({ label: 'holes' });
 const trailOptions = () => ({ duration: params.trailLength, width: 1.6, alpha: 0.55 });
 const points = new PointLayer({
-  size: 2.5, blend: 'add', colorBy: 'speed', range: [0, 14], palette: [0x6a5cff, 0x8fb8ff, 0xffffff, 0xffd36b, 0xff7b39],
+  size: 2.5,
+  blend: 'add',
+  colorBy: 'speed',
+  range: [0, 14],
+  palette: [0x6a5cff, 0x8fb8ff, 0xffffff, 0xffd36b, 0xff7b39],
   trails: params.trails ? trailOptions() : false,
 });
 renderer.root.addChild(holes, points.container);
@@ -80,18 +103,64 @@ function setTrails(on: boolean): void {
   panel.refresh();
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'blackHole', label: 'black hole G M (m³/s²)', min: 5, max: 300, step: 1, onChange: (v) => setBlackHoleMass(hole, v) },
-  { type: 'slider', key: 'whiteHole', label: 'white hole push G Mw (m³/s²)', min: 0, max: 300, step: 1, onChange: (v) => setWhiteHoleStrength(hole, v) },
-  { type: 'slider', key: 'horizon', label: 'horizon radius (m)', min: 0.35, max: 3, step: 0.05, onChange: (v) => setHorizon(hole, v) },
-  { type: 'slider', key: 'drag', label: 'drag (1/s)', min: 0, max: 3, step: 0.01, onChange: (v) => setStarDrag(hole, v) },
-  { type: 'slider', key: 'count', label: 'stars (rebuilds)', min: 100, max: 10_000, step: 100, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
-  { type: 'slider', key: 'trailLength', label: 'trail length (s)', min: 0.02, max: 0.5, step: 0.01, onChange: () => { if (params.trails) points.setTrails(trailOptions()); } },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Wormhole' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'blackHole',
+      label: 'black hole G M (m³/s²)',
+      min: 5,
+      max: 300,
+      step: 1,
+      onChange: (v) => setBlackHoleMass(hole, v),
+    },
+    {
+      type: 'slider',
+      key: 'whiteHole',
+      label: 'white hole push G Mw (m³/s²)',
+      min: 0,
+      max: 300,
+      step: 1,
+      onChange: (v) => setWhiteHoleStrength(hole, v),
+    },
+    { type: 'slider', key: 'horizon', label: 'horizon radius (m)', min: 0.35, max: 3, step: 0.05, onChange: (v) => setHorizon(hole, v) },
+    { type: 'slider', key: 'drag', label: 'drag (1/s)', min: 0, max: 3, step: 0.01, onChange: (v) => setStarDrag(hole, v) },
+    {
+      type: 'slider',
+      key: 'count',
+      label: 'stars (rebuilds)',
+      min: 100,
+      max: 10_000,
+      step: 100,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'trails', label: 'trails (T)', onChange: (v) => setTrails(v === true) },
+    {
+      type: 'slider',
+      key: 'trailLength',
+      label: 'trail length (s)',
+      min: 0.02,
+      max: 0.5,
+      step: 0.01,
+      onChange: () => {
+        if (params.trails) points.setTrails(trailOptions());
+      },
+    },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Wormhole' },
+);
 
-const info = createReadout(shell.hud.readout, ['through the wormhole', 'last jump', 're-entered', 'net far-field G M', 'black hole', 'white hole']);
+const info = createReadout(shell.hud.readout, [
+  'through the wormhole',
+  'last jump',
+  're-entered',
+  'net far-field G M',
+  'black hole',
+  'white hole',
+]);
 
 // ---- Drawing --------------------------------------------------------------------------------------
 
@@ -101,11 +170,13 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const P = world.components.Position;
   holes.clear();
   const rh = Math.max(3, cam.toScreenLength(hole.settings.horizon));
-  const bx = cam.toScreenX(P.x[hole.blackHole]!), by = cam.toScreenY(P.y[hole.blackHole]!);
+  const bx = cam.toScreenX(P.x[hole.blackHole]!),
+    by = cam.toScreenY(P.y[hole.blackHole]!);
   holes.circle(bx, by, rh * 2.2).fill({ color: 0xff8a3d, alpha: 0.07 });
   holes.circle(bx, by, rh * 1.35).stroke({ width: 3, color: 0xffa14d, alpha: 0.45 });
   holes.circle(bx, by, rh).fill({ color: 0x000000 }).stroke({ width: 1.5, color: 0xffc680, alpha: 0.9 });
-  const wx = cam.toScreenX(P.x[hole.whiteHole]!), wy = cam.toScreenY(P.y[hole.whiteHole]!);
+  const wx = cam.toScreenX(P.x[hole.whiteHole]!),
+    wy = cam.toScreenY(P.y[hole.whiteHole]!);
   holes.circle(wx, wy, rh * 2.4).fill({ color: 0x9fc4ff, alpha: 0.08 });
   holes.circle(wx, wy, rh * 1.5).fill({ color: 0xd8e6ff, alpha: 0.25 });
   holes.circle(wx, wy, rh).fill({ color: 0xffffff, alpha: 0.9 });
@@ -123,8 +194,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 // ---- Pointer: drag a hole, click to add stars --------------------------------------------------------
 
 const canvas = app.canvas;
-const down: Point2 = { x: 0, y: 0 }, now: Point2 = { x: 0, y: 0 };
-let pointerId = -1, dragged = false, held: 'black' | 'white' | null = null;
+const down: Point2 = { x: 0, y: 0 },
+  now: Point2 = { x: 0, y: 0 };
+let pointerId = -1,
+  dragged = false,
+  held: 'black' | 'white' | null = null;
 
 /** The hole within reach of screen point (sx, sy), px, or null. */
 function holeNear(sx: number, sy: number): 'black' | 'white' | null {
@@ -158,13 +232,19 @@ canvas.addEventListener('pointerup', (event) => {
   if (!held && !dragged) addCluster(renderer.camera.toWorldX(down.x), renderer.camera.toWorldY(down.y));
   held = null;
 });
-canvas.addEventListener('pointercancel', (event) => { if (event.pointerId === pointerId) { pointerId = -1; held = null; } });
+canvas.addEventListener('pointercancel', (event) => {
+  if (event.pointerId === pointerId) {
+    pointerId = -1;
+    held = null;
+  }
+});
 
 /** Adds up to CLICK_STARS stars at rest in a disc about (x, y), m. @returns how many were added. */
 function addCluster(x: number, y: number): number {
   let n = 0;
   for (let i = 0; i < CLICK_STARS; i++) {
-    const a = hole.rng.range(0, 2 * Math.PI), r = CLICK_RADIUS * Math.sqrt(hole.rng.next());
+    const a = hole.rng.range(0, 2 * Math.PI),
+      r = CLICK_RADIUS * Math.sqrt(hole.rng.next());
     if (addStar(hole, x + r * Math.cos(a), y + r * Math.sin(a)) === 0) break;
     n++;
   }

@@ -21,8 +21,17 @@
  *   pull alone): a game rule that keeps the flow going.
  */
 import {
-  Rng, addBody, createPhysicsWorld, setAttractor, setCentralForce, setDrag, setGravitation, setPosition, setVelocity,
-  step, type PhysicsWorld,
+  addBody,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  Rng,
+  setAttractor,
+  setCentralForce,
+  setDrag,
+  setGravitation,
+  setPosition,
+  setVelocity,
+  step,
 } from '@bitphysics/physics';
 
 /** Distance from the origin beyond which a star re-enters, m. */
@@ -79,7 +88,8 @@ const scratchP = new Float64Array(2);
 const scratchV = new Float64Array(2);
 
 function check(where: string, name: string, v: number, min: number, max: number): void {
-  if (typeof v !== 'number' || !(v >= min && v <= max)) throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
+  if (typeof v !== 'number' || !(v >= min && v <= max))
+    throw new RangeError(`${where}: ${name} must be in [${min}, ${max}], got ${String(v)}`);
 }
 
 /**
@@ -89,9 +99,13 @@ function check(where: string, name: string, v: number, min: number, max: number)
 export function createWormhole(options: WormholeOptions = {}): Wormhole {
   const where = 'createWormhole';
   const count = options.count ?? 2000;
-  if (!Number.isInteger(count) || count < 1 || count > 20_000) throw new RangeError(`${where}: count must be an integer in [1, 20000], got ${count}`);
+  if (!Number.isInteger(count) || count < 1 || count > 20_000)
+    throw new RangeError(`${where}: count must be an integer in [1, 20000], got ${count}`);
   const settings = {
-    blackHole: options.blackHole ?? 60, whiteHole: options.whiteHole ?? 30, horizon: options.horizon ?? 0.8, drag: options.drag ?? 0.5,
+    blackHole: options.blackHole ?? 60,
+    whiteHole: options.whiteHole ?? 30,
+    horizon: options.horizon ?? 0.8,
+    drag: options.drag ?? 0.5,
   };
   check(where, 'blackHole', settings.blackHole, 1e-6, 1e6);
   check(where, 'whiteHole', settings.whiteHole, 0, 1e6);
@@ -99,13 +113,21 @@ export function createWormhole(options: WormholeOptions = {}): Wormhole {
   check(where, 'drag', settings.drag, 0, 100);
   const world = createPhysicsWorld({ dimensions: 2, capacity: count + EXTRA_STARS + 8, gravity: [0, 0], seed: options.seed ?? 1 });
   setGravitation(world, { constant: 1 });
-  const bhp = options.blackHolePosition ?? [-6, 0], whp = options.whiteHolePosition ?? [6, 0];
+  const bhp = options.blackHolePosition ?? [-6, 0],
+    whp = options.whiteHolePosition ?? [6, 0];
   const blackHole = addBody(world, { position: bhp, static: true });
   setAttractor(world, blackHole, { mass: settings.blackHole, softening: BLACK_HOLE_SOFTENING });
   const whiteHole = addBody(world, { position: whp, static: true });
   const w: Wormhole = {
-    world, blackHole, whiteHole, ids: new Uint32Array(count + EXTRA_STARS), count: 0, settings,
-    teleports: 0, respawns: 0, last: { speedIn: Number.NaN, speedOut: Number.NaN, x: Number.NaN, y: Number.NaN, step: -1 },
+    world,
+    blackHole,
+    whiteHole,
+    ids: new Uint32Array(count + EXTRA_STARS),
+    count: 0,
+    settings,
+    teleports: 0,
+    respawns: 0,
+    last: { speedIn: Number.NaN, speedOut: Number.NaN, x: Number.NaN, y: Number.NaN, step: -1 },
     rng: new Rng(options.seed ?? 1),
   };
   for (let i = 0; i < count; i++) {
@@ -121,9 +143,13 @@ export function createWormhole(options: WormholeOptions = {}): Wormhole {
  */
 function placeInDisc(w: Wormhole): void {
   const P = w.world.components.Position;
-  const r = w.rng.range(DISC_INNER, DISC_OUTER), a = w.rng.range(0, 2 * Math.PI), v = Math.sqrt(w.settings.blackHole / r);
-  scratchP[0] = P.x[w.blackHole]! + r * Math.cos(a); scratchP[1] = P.y[w.blackHole]! + r * Math.sin(a);
-  scratchV[0] = -v * Math.sin(a); scratchV[1] = v * Math.cos(a);
+  const r = w.rng.range(DISC_INNER, DISC_OUTER),
+    a = w.rng.range(0, 2 * Math.PI),
+    v = Math.sqrt(w.settings.blackHole / r);
+  scratchP[0] = P.x[w.blackHole]! + r * Math.cos(a);
+  scratchP[1] = P.y[w.blackHole]! + r * Math.sin(a);
+  scratchV[0] = -v * Math.sin(a);
+  scratchV[1] = v * Math.cos(a);
 }
 
 /**
@@ -132,7 +158,10 @@ function placeInDisc(w: Wormhole): void {
  */
 export function addStar(w: Wormhole, x: number, y: number, vx = 0, vy = 0): number {
   if (w.count >= w.ids.length || w.world.entityIndex.aliveCount >= w.world.capacity) return 0;
-  scratchP[0] = x; scratchP[1] = y; scratchV[0] = vx; scratchV[1] = vy;
+  scratchP[0] = x;
+  scratchP[1] = y;
+  scratchV[0] = vx;
+  scratchV[1] = vy;
   const e = addBody(w.world, { position: scratchP, velocity: scratchV, mass: 1, linearDrag: w.settings.drag });
   setCentralForce(w.world, e, { centre: holeAt(w, w.whiteHole), k: w.settings.whiteHole, n: -1 });
   w.ids[w.count++] = e;
@@ -142,7 +171,8 @@ export function addStar(w: Wormhole, x: number, y: number, vx = 0, vy = 0): numb
 const holeScratch: [number, number] = [0, 0];
 function holeAt(w: Wormhole, hole: number): [number, number] {
   const P = w.world.components.Position;
-  holeScratch[0] = P.x[hole]!; holeScratch[1] = P.y[hole]!;
+  holeScratch[0] = P.x[hole]!;
+  holeScratch[1] = P.y[hole]!;
   return holeScratch;
 }
 
@@ -175,7 +205,8 @@ export function setStarDrag(w: Wormhole, k: number): void {
 
 /** Moves hole `which` to (x, y), m; moving the white hole moves the centre of every star's push. */
 export function moveHole(w: Wormhole, which: 'black' | 'white', x: number, y: number): void {
-  scratchP[0] = x; scratchP[1] = y;
+  scratchP[0] = x;
+  scratchP[1] = y;
   setPosition(w.world, which === 'black' ? w.blackHole : w.whiteHole, scratchP);
   if (which === 'white') refreshPush(w);
 }
@@ -192,30 +223,43 @@ function refreshPush(w: Wormhole): void {
 export function stepWormhole(w: Wormhole): void {
   const world = w.world;
   step(world);
-  const P = world.components.Position, V = world.components.Velocity;
-  const bx = P.x[w.blackHole]!, by = P.y[w.blackHole]!, wx = P.x[w.whiteHole]!, wy = P.y[w.whiteHole]!;
-  const rh = w.settings.horizon, cull2 = CULL_RADIUS * CULL_RADIUS;
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  const bx = P.x[w.blackHole]!,
+    by = P.y[w.blackHole]!,
+    wx = P.x[w.whiteHole]!,
+    wy = P.y[w.whiteHole]!;
+  const rh = w.settings.horizon,
+    cull2 = CULL_RADIUS * CULL_RADIUS;
   const ids = w.ids;
   for (let i = 0; i < w.count; i++) {
     const e = ids[i]!;
-    const x = P.x[e]!, y = P.y[e]!;
-    const dx = x - bx, dy = y - by;
+    const x = P.x[e]!,
+      y = P.y[e]!;
+    const dx = x - bx,
+      dy = y - by;
     const r2 = dx * dx + dy * dy;
     if (r2 < rh * rh) {
       const r = Math.sqrt(r2);
       // n: unit vector from the black hole to the star (any direction if it sits on the centre).
-      const nx = r > 0 ? dx / r : 1, ny = r > 0 ? dy / r : 0;
-      const vx = V.x[e]!, vy = V.y[e]!;
+      const nx = r > 0 ? dx / r : 1,
+        ny = r > 0 ? dy / r : 0;
+      const vx = V.x[e]!,
+        vy = V.y[e]!;
       const vn = vx * nx + vy * ny;
-      scratchP[0] = wx + nx * rh; scratchP[1] = wy + ny * rh;
-      scratchV[0] = vx - 2 * vn * nx; scratchV[1] = vy - 2 * vn * ny;
+      scratchP[0] = wx + nx * rh;
+      scratchP[1] = wy + ny * rh;
+      scratchV[0] = vx - 2 * vn * nx;
+      scratchV[1] = vy - 2 * vn * ny;
       setPosition(world, e, scratchP);
       setVelocity(world, e, scratchV);
       w.teleports++;
       const last = w.last;
       last.speedIn = Math.sqrt(vx * vx + vy * vy);
       last.speedOut = Math.hypot(scratchV[0], scratchV[1]);
-      last.x = scratchP[0]; last.y = scratchP[1]; last.step = world.steps;
+      last.x = scratchP[0];
+      last.y = scratchP[1];
+      last.step = world.steps;
     } else if (x * x + y * y > cull2) {
       placeInDisc(w);
       setPosition(world, e, scratchP);

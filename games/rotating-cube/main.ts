@@ -16,18 +16,34 @@
  * Click a face: an impulse there. Drag: orbit.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
-import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
+
 import {
-  addPlane, addSystem, applyImpulse, applyImpulseAtPoint, createPhysicsWorld, rotateVectorInverse, spinAngularMomentum, spinKineticEnergy,
+  addPlane,
+  addSystem,
+  applyImpulse,
+  applyImpulseAtPoint,
+  createPhysicsWorld,
   type PhysicsWorld,
+  rotateVectorInverse,
+  spinAngularMomentum,
+  spinKineticEnergy,
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
-import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
+import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
 import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
 import type { Plot } from '../shared/plot';
+import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 import {
-  JUMP_IMPULSE, MODES, ROOM_HALF, ROOM_PUSH, WALL_HEIGHT, buildRotatingCube, rotatingCubeWorldOptions, torqueCouple, type Mode,
+  buildRotatingCube,
+  JUMP_IMPULSE,
+  MODES,
+  type Mode,
+  ROOM_HALF,
+  ROOM_PUSH,
   type RotatingCubeHandles,
+  rotatingCubeWorldOptions,
+  torqueCouple,
+  WALL_HEIGHT,
 } from './scene';
 
 /** A press that moves more than this, CSS px, is a camera drag, not a click. */
@@ -57,9 +73,14 @@ const keyTorque = new Float64Array(3);
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
   handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin });
-  const w = world.components.AngularVelocity, e = handles.body;
+  const w = world.components.AngularVelocity,
+    e = handles.body;
   omegaScale = ARROW_LENGTH / Math.max(1, Math.hypot(w.x[e]!, w.y[e]!, w.z[e]!));
-  addSystem(world, 'forces', torqueCouple(handles.body, () => keyTorque));
+  addSystem(
+    world,
+    'forces',
+    torqueCouple(handles.body, () => keyTorque),
+  );
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
   if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
   return world;
@@ -139,7 +160,10 @@ const dress = (): void => {
   for (const wall of handles.walls) renderer.setColor(wall, 0x5a6478);
 };
 dress();
-shell.onWorldChange(() => { dress(); plot?.clear(); });
+shell.onWorldChange(() => {
+  dress();
+  plot?.clear();
+});
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
 const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
@@ -162,7 +186,9 @@ window.addEventListener('keydown', (event) => {
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
 window.addEventListener('blur', () => held.clear());
 
-const right = new Vector3(), up = new Vector3(), back = new Vector3();
+const right = new Vector3(),
+  up = new Vector3(),
+  back = new Vector3();
 /** Updates keyTorque from the keys held and the camera's axes (called every frame). */
 function updateKeyTorque(): void {
   const pitch = (held.has('s') ? 1 : 0) - (held.has('w') ? 1 : 0);
@@ -179,10 +205,14 @@ function updateKeyTorque(): void {
 
 const canvas = app.canvas;
 const ndc: [number, number] = [0, 0];
-let downX = 0, downY = 0, downId = -1;
+let downX = 0,
+  downY = 0,
+  downId = -1;
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
-  downId = event.pointerId; downX = event.clientX; downY = event.clientY;
+  downId = event.pointerId;
+  downX = event.clientX;
+  downY = event.clientY;
 });
 canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
@@ -211,7 +241,9 @@ let flash = 0;
 /** Zeroes the body's angular velocity (X key, panel button). */
 function stopSpin(): void {
   const w = shell.world.components.AngularVelocity;
-  w.x[handles.body] = 0; w.y[handles.body] = 0; w.z[handles.body] = 0;
+  w.x[handles.body] = 0;
+  w.y[handles.body] = 0;
+  w.z[handles.body] = 0;
 }
 
 /** Switches mode, rebuilds the world and frames it. */
@@ -224,17 +256,42 @@ function setMode(mode: Mode): void {
   if (params.axes) renderer.setDebug(debugOptions());
 }
 
-const panel = createPanel(params, [
-  { type: 'choice', key: 'mode', options: { 'room (gravity, floor, walls)': 'room', 'cube on a pivot (no gravity)': 'cube', 'Dzhanibekov flip (pivot)': 'flip' }, onChange: (m) => setMode(m as Mode) },
-  { type: 'slider', key: 'torque', label: 'key torque (N m)', min: 0.05, max: 3, step: 0.05 },
-  { type: 'slider', key: 'impulse', label: 'click impulse (N s)', min: 0.02, max: 2, step: 0.02 },
-  { type: 'slider', key: 'spin', label: 'flip spin (rad/s, rebuilds)', min: 0.5, max: 30, step: 0.5, onRelease: true, onChange: () => { if (params.mode === 'flip') shell.reset(); } },
-  { type: 'checkbox', key: 'showL', label: 'angular momentum L' },
-  { type: 'checkbox', key: 'showOmega', label: 'angular velocity ω' },
-  { type: 'checkbox', key: 'axes', label: 'contacts (room) / body axes (pivot)', onChange: (v) => renderer.setDebug(v === true ? debugOptions() : false) },
-  { type: 'button', key: 'stop', label: 'stop spinning (X)' },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Rotating cube' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'choice',
+      key: 'mode',
+      options: { 'room (gravity, floor, walls)': 'room', 'cube on a pivot (no gravity)': 'cube', 'Dzhanibekov flip (pivot)': 'flip' },
+      onChange: (m) => setMode(m as Mode),
+    },
+    { type: 'slider', key: 'torque', label: 'key torque (N m)', min: 0.05, max: 3, step: 0.05 },
+    { type: 'slider', key: 'impulse', label: 'click impulse (N s)', min: 0.02, max: 2, step: 0.02 },
+    {
+      type: 'slider',
+      key: 'spin',
+      label: 'flip spin (rad/s, rebuilds)',
+      min: 0.5,
+      max: 30,
+      step: 0.5,
+      onRelease: true,
+      onChange: () => {
+        if (params.mode === 'flip') shell.reset();
+      },
+    },
+    { type: 'checkbox', key: 'showL', label: 'angular momentum L' },
+    { type: 'checkbox', key: 'showOmega', label: 'angular velocity ω' },
+    {
+      type: 'checkbox',
+      key: 'axes',
+      label: 'contacts (room) / body axes (pivot)',
+      onChange: (v) => renderer.setDebug(v === true ? debugOptions() : false),
+    },
+    { type: 'button', key: 'stop', label: 'stop spinning (X)' },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Rotating cube' },
+);
 
 // ---- Readout and plot (bottom right) -------------------------------------------------------------
 
@@ -253,30 +310,47 @@ let plot: Plot | null = null;
 try {
   const { createPlot } = await import('../shared/plot');
   plot = createPlot({
-    parent: box, title: 'ω in the body frame (rad/s)', xLabel: 'time (s)', width: 340, height: 170, capacity: 900, redrawEvery: 10,
-    series: [{ label: 'ω_x', color: '#ff5a5f' }, { label: 'ω_y', color: '#5fd068' }, { label: 'ω_z', color: '#4d8dff' }],
+    parent: box,
+    title: 'ω in the body frame (rad/s)',
+    xLabel: 'time (s)',
+    width: 340,
+    height: 170,
+    capacity: 900,
+    redrawEvery: 10,
+    series: [
+      { label: 'ω_x', color: '#ff5a5f' },
+      { label: 'ω_y', color: '#5fd068' },
+      { label: 'ω_z', color: '#4d8dff' },
+    ],
   });
 } catch (error) {
   console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
 }
 
-const L = new Float64Array(3), wb = new Float64Array(3);
-let lastPlotted = -1, frames = 0;
+const L = new Float64Array(3),
+  wb = new Float64Array(3);
+let lastPlotted = -1,
+  frames = 0;
 
 /** Per frame: key torque, arrows, readout, plot. */
 function frame(): void {
   updateKeyTorque();
-  const world = shell.world, e = handles.body;
+  const world = shell.world,
+    e = handles.body;
   const c = world.components;
   spinAngularMomentum(world, e, L);
-  const wx = c.AngularVelocity.x[e]!, wy = c.AngularVelocity.y[e]!, wz = c.AngularVelocity.z[e]!;
+  const wx = c.AngularVelocity.x[e]!,
+    wy = c.AngularVelocity.y[e]!,
+    wz = c.AngularVelocity.z[e]!;
   // L is drawn on the same scale as w: L / I_mid (rad/s) times omegaScale.
   const I = handles.inertia;
   const iMid = Math.max(Math.min(I[0], I[1]), Math.min(Math.max(I[0], I[1]), I[2]));
   const P = c.Position;
   const o = params.mode === 'room' ? [P.x[e]!, P.y[e]!, P.z[e]!] : handles.pivot;
-  if (params.showL) lArrow.set(o[0], o[1], o[2], L[0]!, L[1]!, L[2]!, omegaScale / iMid); else lArrow.hide();
-  if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale); else wArrow.hide();
+  if (params.showL) lArrow.set(o[0], o[1], o[2], L[0]!, L[1]!, L[2]!, omegaScale / iMid);
+  else lArrow.hide();
+  if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale);
+  else wArrow.hide();
   if (world.steps !== lastPlotted) {
     lastPlotted = world.steps;
     const q = c.Orientation;
@@ -287,9 +361,12 @@ function frame(): void {
     lines[0]!.textContent = `|ω| ${Math.hypot(wx, wy, wz).toFixed(3)} rad/s`;
     lines[1]!.textContent = `|L| ${Math.hypot(L[0]!, L[1]!, L[2]!).toFixed(4)} kg m²/s`;
     lines[2]!.textContent = `E_rot ${spinKineticEnergy(world, e).toFixed(4)} J`;
-    lines[3]!.textContent = flash > 0 ? 'impulse!' : params.mode === 'room'
-      ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
-      : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
+    lines[3]!.textContent =
+      flash > 0
+        ? 'impulse!'
+        : params.mode === 'room'
+          ? `height ${P.y[e]!.toFixed(2)} m · speed ${Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!).toFixed(2)} m/s`
+          : `I = ${handles.inertia.map((v) => v.toFixed(3)).join(', ')} kg m²`;
     lines[4]!.textContent = `arrows: 1 rad/s = ${omegaScale.toFixed(2)} m`;
     // For a cube (equal moments) L stays parallel to w; for other boxes it does not.
     const lw = Math.hypot(L[0]!, L[1]!, L[2]!) * Math.hypot(wx, wy, wz);
@@ -308,14 +385,17 @@ shell.expose({
   body: (): number => handles.body,
   /** Angular velocity, rad/s, world frame. */
   angularVelocity: (): number[] => {
-    const w = shell.world.components.AngularVelocity, e = handles.body;
+    const w = shell.world.components.AngularVelocity,
+      e = handles.body;
     return [w.x[e]!, w.y[e]!, w.z[e]!];
   },
   /** Angular momentum about the centre of mass, kg m^2/s, world frame. */
   angularMomentum: (): number[] => Array.from(spinAngularMomentum(shell.world, handles.body, new Float64Array(3))),
   /** The body's y axis in the world frame (a unit vector): flips sign in flip mode. */
   bodyUp: (): number[] => {
-    const q = shell.world.components.Orientation, e = handles.body, out = new Float64Array(3);
+    const q = shell.world.components.Orientation,
+      e = handles.body,
+      out = new Float64Array(3);
     // Rotating (0, 1, 0) by q is the inverse of rotating by its conjugate.
     rotateVectorInverse(-q.x[e]!, -q.y[e]!, -q.z[e]!, q.w[e]!, 0, 1, 0, out);
     return Array.from(out);

@@ -17,8 +17,16 @@
  *   "The twisting tennis racket", J. Dyn. Diff. Eq. 3, 1991).
  */
 import {
-  addBody, addPlane, addShape3D, addSystem, applyForceAtPoint, inertiaOfSolidBox, setAngularVelocity, type PhysicsWorld,
-  type PhysicsWorldOptions, type System,
+  addBody,
+  addPlane,
+  addShape3D,
+  addSystem,
+  applyForceAtPoint,
+  inertiaOfSolidBox,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  type System,
+  setAngularVelocity,
 } from '@bitphysics/physics';
 
 /** The modes, the default first (the M key cycles through them in this order). */
@@ -89,9 +97,11 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
   const mode = options.mode ?? 'room';
   if (!MODES.includes(mode)) throw new RangeError(`rotating-cube: mode must be one of ${MODES.join(', ')}, got ${String(mode)}`);
   if (world.dimensions !== 3) throw new RangeError(`rotating-cube: needs a 3D world, got dimensions ${world.dimensions}`);
-  const spin = options.spin ?? 6, perturbation = options.perturbation ?? 0.01;
+  const spin = options.spin ?? 6,
+    perturbation = options.perturbation ?? 0.01;
   const tumble = options.tumble ?? [0.35, 0.8, 0.2];
-  if (tumble.length !== 3 || !Array.from(tumble).every(Number.isFinite)) throw new RangeError(`rotating-cube: tumble must be 3 finite numbers, got ${JSON.stringify(Array.from(tumble))}`);
+  if (tumble.length !== 3 || !Array.from(tumble).every(Number.isFinite))
+    throw new RangeError(`rotating-cube: tumble must be 3 finite numbers, got ${JSON.stringify(Array.from(tumble))}`);
   if (!Number.isFinite(spin)) throw new RangeError(`rotating-cube: spin must be finite, got ${spin}`);
   if (!Number.isFinite(perturbation)) throw new RangeError(`rotating-cube: perturbation must be finite, got ${perturbation}`);
   const mass = MASS[mode];
@@ -115,8 +125,16 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
 function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCubeHandles {
   addPlane(world, { normal: [0, 1, 0], point: [0, 0, 0], friction: 0.5, restitution: 0.3 });
   const walls: number[] = [];
-  const h = WALL_HEIGHT / 2, t = WALL_HALF_THICKNESS, a = ROOM_HALF + t, l = ROOM_HALF + 2 * t;
-  for (const [x, z, hx, hz] of [[a, 0, t, l], [-a, 0, t, l], [0, a, l, t], [0, -a, l, t]] as const) {
+  const h = WALL_HEIGHT / 2,
+    t = WALL_HALF_THICKNESS,
+    a = ROOM_HALF + t,
+    l = ROOM_HALF + 2 * t;
+  for (const [x, z, hx, hz] of [
+    [a, 0, t, l],
+    [-a, 0, t, l],
+    [0, a, l, t],
+    [0, -a, l, t],
+  ] as const) {
     const wall = addBody(world, { position: [x, h, z], static: true });
     addShape3D(world, wall, { type: 'box', halfExtents: [hx, h, hz], friction: 0.5, restitution: 0.3 });
     walls.push(wall);
@@ -131,9 +149,15 @@ function buildRoom(world: PhysicsWorld, tumble: ArrayLike<number>): RotatingCube
 function holdAtPivot(body: number, pivot: readonly [number, number, number]): System {
   return (world: PhysicsWorld): void => {
     const c = world.components;
-    c.Position.x[body] = pivot[0]; c.Position.y[body] = pivot[1]; c.Position.z[body] = pivot[2];
-    c.PreviousPosition.x[body] = pivot[0]; c.PreviousPosition.y[body] = pivot[1]; c.PreviousPosition.z[body] = pivot[2];
-    c.Velocity.x[body] = 0; c.Velocity.y[body] = 0; c.Velocity.z[body] = 0;
+    c.Position.x[body] = pivot[0];
+    c.Position.y[body] = pivot[1];
+    c.Position.z[body] = pivot[2];
+    c.PreviousPosition.x[body] = pivot[0];
+    c.PreviousPosition.y[body] = pivot[1];
+    c.PreviousPosition.z[body] = pivot[2];
+    c.Velocity.x[body] = 0;
+    c.Velocity.y[body] = 0;
+    c.Velocity.z[body] = 0;
   };
 }
 
@@ -145,28 +169,55 @@ function holdAtPivot(body: number, pivot: readonly [number, number, number]): Sy
  * validates its vectors, which is cheap for one body).
  */
 export function torqueCouple(body: number, torque: () => ArrayLike<number>): System {
-  const force = new Float64Array(3), point = new Float64Array(3);
+  const force = new Float64Array(3),
+    point = new Float64Array(3);
   const d = 0.5;
   return (world: PhysicsWorld): void => {
     const t = torque();
-    const tx = t[0]!, ty = t[1]!, tz = t[2]!;
+    const tx = t[0]!,
+      ty = t[1]!,
+      tz = t[2]!;
     const T = Math.sqrt(tx * tx + ty * ty + tz * tz);
     if (!(T > 0)) return;
-    const nx = tx / T, ny = ty / T, nz = tz / T;
+    const nx = tx / T,
+      ny = ty / T,
+      nz = tz / T;
     // u: a unit vector perpendicular to the torque axis n; F = f (n x u) at +d u, -F at -d u.
     let ux: number, uy: number, uz: number;
-    if (Math.abs(nx) < 0.9) { ux = 0; uy = nz; uz = -ny; } else { ux = -nz; uy = 0; uz = nx; }
+    if (Math.abs(nx) < 0.9) {
+      ux = 0;
+      uy = nz;
+      uz = -ny;
+    } else {
+      ux = -nz;
+      uy = 0;
+      uz = nx;
+    }
     const ul = 1 / Math.sqrt(ux * ux + uy * uy + uz * uz);
-    ux *= ul; uy *= ul; uz *= ul;
+    ux *= ul;
+    uy *= ul;
+    uz *= ul;
     const f = T / (2 * d);
-    const fx = f * (ny * uz - nz * uy), fy = f * (nz * ux - nx * uz), fz = f * (nx * uy - ny * ux);
+    const fx = f * (ny * uz - nz * uy),
+      fy = f * (nz * ux - nx * uz),
+      fz = f * (nx * uy - ny * ux);
     const P = world.components.Position;
-    const cx = P.x[body]!, cy = P.y[body]!, cz = P.z[body]!;
-    force[0] = fx; force[1] = fy; force[2] = fz;
-    point[0] = cx + d * ux; point[1] = cy + d * uy; point[2] = cz + d * uz;
+    const cx = P.x[body]!,
+      cy = P.y[body]!,
+      cz = P.z[body]!;
+    force[0] = fx;
+    force[1] = fy;
+    force[2] = fz;
+    point[0] = cx + d * ux;
+    point[1] = cy + d * uy;
+    point[2] = cz + d * uz;
     applyForceAtPoint(world, body, force, point);
-    force[0] = -fx; force[1] = -fy; force[2] = -fz;
-    point[0] = cx - d * ux; point[1] = cy - d * uy; point[2] = cz - d * uz;
+    force[0] = -fx;
+    force[1] = -fy;
+    force[2] = -fz;
+    point[0] = cx - d * ux;
+    point[1] = cy - d * uy;
+    point[2] = cz - d * uz;
     applyForceAtPoint(world, body, force, point);
   };
 }

@@ -39,7 +39,13 @@ declare global {
  * @throws TypeError if `game` lacks `world`, `paused` or `stats()`.
  */
 export function exposeGame<T extends GameHandle>(game: T): T {
-  if (game === null || typeof game !== 'object' || !('world' in game) || typeof game.stats !== 'function' || typeof game.paused !== 'boolean') {
+  if (
+    game === null ||
+    typeof game !== 'object' ||
+    !('world' in game) ||
+    typeof game.stats !== 'function' ||
+    typeof game.paused !== 'boolean'
+  ) {
     throw new TypeError('exposeGame: game must have world, a boolean paused and stats()');
   }
   window.game = game;

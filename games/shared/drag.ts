@@ -3,7 +3,7 @@
  * grab it at that point, move to pull it (a soft spring of limited force, so it swings and collides
  * on the way), release to let go. Works on any 2D game's canvas and camera.
  */
-import { addMouseJoint, isAlive, removeJoint, setMouseTarget, handleOf, query, Not, type PhysicsWorld } from '@bitphysics/physics';
+import { addMouseJoint, handleOf, isAlive, Not, type PhysicsWorld, query, removeJoint, setMouseTarget } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
 import { pointerOnCanvas } from './pointer';
 
@@ -31,8 +31,15 @@ export interface MouseDrag {
  * Lets the pointer drag any dynamic body of `world()` on `canvas` (camera `camera()` maps pixels to
  * metres). @returns the drag state.
  */
-export function enableMouseDrag(canvas: HTMLCanvasElement, world: () => PhysicsWorld, camera: () => Camera, options: MouseDragOptions = {}): MouseDrag {
-  const reach = options.reach ?? 0.5, hertz = options.hertz ?? 5, strength = options.strength ?? 50;
+export function enableMouseDrag(
+  canvas: HTMLCanvasElement,
+  world: () => PhysicsWorld,
+  camera: () => Camera,
+  options: MouseDragOptions = {},
+): MouseDrag {
+  const reach = options.reach ?? 0.5,
+    hertz = options.hertz ?? 5,
+    strength = options.strength ?? 50;
   const p = { x: 0, y: 0 };
   const state = { joint: 0, body: 0, world: null as PhysicsWorld | null };
   const toWorld = (e: PointerEvent): [number, number] => {
@@ -41,7 +48,9 @@ export function enableMouseDrag(canvas: HTMLCanvasElement, world: () => PhysicsW
   };
   const release = (): void => {
     if (state.joint && state.world && isAlive(state.world, state.joint)) removeJoint(state.world, state.joint);
-    state.joint = 0; state.body = 0; state.world = null;
+    state.joint = 0;
+    state.body = 0;
+    state.world = null;
   };
   canvas.addEventListener('pointerdown', (e) => {
     if (e.button !== 0 || (options.enabled && !options.enabled())) return;
@@ -49,33 +58,53 @@ export function enableMouseDrag(canvas: HTMLCanvasElement, world: () => PhysicsW
     const [x, y] = toWorld(e);
     const c = w.components;
     const bodies = query(w, [c.Position, c.Mass, c.Angle, Not(c.Static), Not(c.Kinematic)]);
-    let best = 0, bestD = Infinity;
+    let best = 0,
+      bestD = Infinity;
     for (let i = 0; i < bodies.length; i++) {
       const s = bodies[i]!;
       if (!(c.Mass.inv[s]! > 0)) continue;
       const r = c.Ball.radius.length > s ? c.Ball.radius[s]! : 0;
       const d = Math.hypot(c.Position.x[s]! - x, c.Position.y[s]! - y) - r;
-      if (d < bestD) { bestD = d; best = s; }
+      if (d < bestD) {
+        bestD = d;
+        best = s;
+      }
     }
     if (best === 0 || bestD > reach) return;
     release();
     const g = Math.max(10, Math.hypot(w.gravity[0]!, w.gravity[1]!));
     const body = handleOf(w, best);
-    state.joint = addMouseJoint(w, { b: body, anchor: [x, y], target: [x, y], hertz, dampingRatio: 0.7, maxForce: strength * c.Mass.value[best]! * g });
-    state.body = body; state.world = w;
+    state.joint = addMouseJoint(w, {
+      b: body,
+      anchor: [x, y],
+      target: [x, y],
+      hertz,
+      dampingRatio: 0.7,
+      maxForce: strength * c.Mass.value[best]! * g,
+    });
+    state.body = body;
+    state.world = w;
     canvas.setPointerCapture(e.pointerId);
   });
   canvas.addEventListener('pointermove', (e) => {
     if (!state.joint || !state.world) return;
-    if (state.world !== world() || !isAlive(state.world, state.joint)) { state.joint = 0; state.body = 0; return; }
+    if (state.world !== world() || !isAlive(state.world, state.joint)) {
+      state.joint = 0;
+      state.body = 0;
+      return;
+    }
     setMouseTarget(state.world, state.joint, toWorld(e));
   });
   const up = (): void => release();
   canvas.addEventListener('pointerup', up);
   canvas.addEventListener('pointercancel', up);
   return {
-    get joint() { return state.joint; },
-    get body() { return state.body; },
+    get joint() {
+      return state.joint;
+    },
+    get body() {
+      return state.body;
+    },
     release,
   };
 }

@@ -73,7 +73,11 @@ export function createFramePacer(gl: unknown, maxInFlight = 2): FramePacer {
       if (gl2 && !gl2.isContextLost()) for (const f of fences) gl2.deleteSync(f);
       fences.length = 0;
     },
-    get drawn() { return drawn; },
-    get skipped() { return skipped; },
+    get drawn() {
+      return drawn;
+    },
+    get skipped() {
+      return skipped;
+    },
   };
 }

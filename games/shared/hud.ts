@@ -124,16 +124,31 @@ export function createHud(options: HudOptions): Hud {
   }
   const touch = layout ? layout.touch() : false;
 
-  let shownFps = -1, shownBodies = -1, shownSteps = -1, shownPaused: boolean | null = null;
+  let shownFps = -1,
+    shownBodies = -1,
+    shownSteps = -1,
+    shownPaused: boolean | null = null;
   const hud: Hud = {
     readout,
     legend,
     update(fps, bodies, steps, paused) {
       const f = Math.round(fps);
-      if (f !== shownFps) { shownFps = f; fpsLine.textContent = `${f} fps`; }
-      if (bodies !== shownBodies) { shownBodies = bodies; bodiesLine.textContent = plural(bodies, 'body', 'bodies'); }
-      if (steps !== shownSteps) { shownSteps = steps; stepsLine.textContent = `step ${steps}`; }
-      if (paused !== shownPaused) { shownPaused = paused; status.textContent = paused ? 'paused' : ''; }
+      if (f !== shownFps) {
+        shownFps = f;
+        fpsLine.textContent = `${f} fps`;
+      }
+      if (bodies !== shownBodies) {
+        shownBodies = bodies;
+        bodiesLine.textContent = plural(bodies, 'body', 'bodies');
+      }
+      if (steps !== shownSteps) {
+        shownSteps = steps;
+        stepsLine.textContent = `step ${steps}`;
+      }
+      if (paused !== shownPaused) {
+        shownPaused = paused;
+        status.textContent = paused ? 'paused' : '';
+      }
     },
     setControls(controls) {
       const lines: HTMLElement[] = [];

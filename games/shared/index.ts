@@ -5,20 +5,21 @@
  * lil-gui panels, URL parameters and pointer positions.
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
-export { exposeGame, markReady } from './contract';
+
 export type { GameHandle, GameStats } from './contract';
-export { createGameLoop } from './loop';
-export type { GameLoop, GameLoopOptions } from './loop';
-export { bindKeys } from './keys';
-export type { KeyBinding } from './keys';
-export { createHud, plural, touchGesture } from './hud';
+export { exposeGame, markReady } from './contract';
 export type { ControlHint, Hud, HudOptions } from './hud';
-export { pageLayout, COMPACT_MAX_WIDTH, COMPACT_MAX_HEIGHT } from './layout';
+export { createHud, plural, touchGesture } from './hud';
+export type { KeyBinding } from './keys';
+export { bindKeys } from './keys';
 export type { PageLayout } from './layout';
+export { COMPACT_MAX_HEIGHT, COMPACT_MAX_WIDTH, pageLayout } from './layout';
+export type { GameLoop, GameLoopOptions } from './loop';
+export { createGameLoop } from './loop';
+export type { ChoiceControl, Panel, PanelControl, PanelOptions, PlainControl, SliderControl } from './panel';
 export { createPanel } from './panel';
-export type { Panel, PanelControl, PanelOptions, SliderControl, ChoiceControl, PlainControl } from './panel';
-export { numberParam, flagParam, choiceParam, seedParam } from './params';
-export { pointerOnCanvas } from './pointer';
 export type { NumberParamOptions } from './params';
-export { createGameShell, SHELL_CONTROLS } from './shell';
+export { choiceParam, flagParam, numberParam, seedParam } from './params';
+export { pointerOnCanvas } from './pointer';
 export type { GameShell, GameShellOptions } from './shell';
+export { createGameShell, SHELL_CONTROLS } from './shell';

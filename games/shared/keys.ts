@@ -35,7 +35,8 @@ function isTyping(target: EventTarget | null): boolean {
 export function bindKeys(bindings: readonly KeyBinding[], target: EventTarget = window): () => void {
   const map = new Map<string, KeyBinding>();
   for (const b of bindings) {
-    if (typeof b.key !== 'string' || b.key.length === 0) throw new TypeError(`bindKeys: key must be a non-empty string, got ${JSON.stringify(b.key)}`);
+    if (typeof b.key !== 'string' || b.key.length === 0)
+      throw new TypeError(`bindKeys: key must be a non-empty string, got ${JSON.stringify(b.key)}`);
     if (typeof b.action !== 'function') throw new TypeError(`bindKeys: action of key ${JSON.stringify(b.key)} must be a function`);
     const k = b.key.toLowerCase();
     if (map.has(k)) throw new TypeError(`bindKeys: key ${JSON.stringify(b.key)} is bound twice`);

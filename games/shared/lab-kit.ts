@@ -15,11 +15,12 @@
  *
  * The particle labs add ./particle-kit on top of it.
  */
-import type { Application, Graphics } from 'pixi.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2, WorldRect } from '@bitphysics/render-pixi';
-import { createPlot, type Plot, type PlotOptions } from './plot';
+import type { Application, Graphics } from 'pixi.js';
 import { pageLayout } from './layout';
+import { createPlot, type Plot, type PlotOptions } from './plot';
 
 const STYLE_ID = 'bp-lab-style';
 const CSS = `
@@ -67,7 +68,8 @@ export interface LabDock {
  * @throws RangeError on a width out of range.
  */
 export function createLabDock(preferred = 360): LabDock {
-  if (!Number.isInteger(preferred) || preferred < 240 || preferred > 800) throw new RangeError(`createLabDock: width must be an integer in [240, 800] px, got ${preferred}`);
+  if (!Number.isInteger(preferred) || preferred < 240 || preferred > 800)
+    throw new RangeError(`createLabDock: width must be an integer in [240, 800] px, got ${preferred}`);
   injectStyle();
   const layout = pageLayout();
   const width = layout.sideWidth(preferred);
@@ -82,7 +84,10 @@ export function createLabDock(preferred = 360): LabDock {
   root.append(panelSlot, charts);
   layout.side.append(root);
   return {
-    root, panelSlot, charts, width,
+    root,
+    panelSlot,
+    charts,
+    width,
     chartWidth: width - 16,
     reserved: () => 0,
     destroy: () => root.remove(),
@@ -100,14 +105,18 @@ export function createLabDock(preferred = 360): LabDock {
  * @throws RangeError (from the camera) on a bad rectangle.
  */
 export function fitViewBeside(camera: Camera, rect: WorldRect, reservedPx: number, padding = 24): void {
-  const W = camera.width, H = camera.height;
+  const W = camera.width,
+    H = camera.height;
   let free = W - reservedPx;
   if (free - 2 * padding < 80) free = W;
-  const w = rect.maxX - rect.minX, h = rect.maxY - rect.minY;
+  const w = rect.maxX - rect.minX,
+    h = rect.maxY - rect.minY;
   const pad = Math.min(padding, free / 4, H / 4);
   const ppm = Math.min((free - 2 * pad) / w, (H - 2 * pad) / h);
-  const cx = (rect.minX + rect.maxX) / 2, cy = (rect.minY + rect.maxY) / 2;
-  const minX = cx - free / 2 / ppm, minY = cy - H / 2 / ppm;
+  const cx = (rect.minX + rect.maxX) / 2,
+    cy = (rect.minY + rect.maxY) / 2;
+  const minX = cx - free / 2 / ppm,
+    minY = cy - H / 2 / ppm;
   camera.fit({ minX, minY, maxX: minX + W / ppm, maxY: minY + H / ppm }, 0);
 }
 
@@ -198,9 +207,14 @@ export function createReadout(parent: HTMLElement, labels: readonly string[], sw
     set(i, text) {
       const el = values[i];
       if (!el) throw new RangeError(`Readout.set: no line ${i} (there are ${values.length})`);
-      if (texts[i] !== text) { texts[i] = text; el.textContent = text; }
+      if (texts[i] !== text) {
+        texts[i] = text;
+        el.textContent = text;
+      }
     },
-    get(i) { return texts[i] ?? ''; },
+    get(i) {
+      return texts[i] ?? '';
+    },
   };
 }
 
@@ -216,7 +230,8 @@ export function fmt(value: number, digits = 4): string {
  * PreviousPosition -> Position blend the WorldRenderer uses, so overlays line up with the balls.
  */
 export function drawnPosition(world: PhysicsWorld, eid: number, alpha: number, out: Point2): Point2 {
-  const P = world.components.Position, O = world.components.PreviousPosition;
+  const P = world.components.Position,
+    O = world.components.PreviousPosition;
   out.x = O.x[eid]! + (P.x[eid]! - O.x[eid]!) * alpha;
   out.y = O.y[eid]! + (P.y[eid]! - O.y[eid]!) * alpha;
   return out;
@@ -227,11 +242,26 @@ export function drawnPosition(world: PhysicsWorld, eid: number, alpha: number, o
  * >= 1) of half-width `amplitude` px, straight leads of `lead` px at both ends. Appends a path to `g`
  * and strokes it.
  */
-export function drawSpring(g: Graphics, x1: number, y1: number, x2: number, y2: number, coils: number, amplitude: number, width: number, color: number, alpha = 1): void {
-  const dx = x2 - x1, dy = y2 - y1;
+export function drawSpring(
+  g: Graphics,
+  x1: number,
+  y1: number,
+  x2: number,
+  y2: number,
+  coils: number,
+  amplitude: number,
+  width: number,
+  color: number,
+  alpha = 1,
+): void {
+  const dx = x2 - x1,
+    dy = y2 - y1;
   const len = Math.sqrt(dx * dx + dy * dy);
   if (len < 1e-6) return;
-  const ux = dx / len, uy = dy / len, nx = -uy, ny = ux;
+  const ux = dx / len,
+    uy = dy / len,
+    nx = -uy,
+    ny = ux;
   const lead = Math.min(6, len * 0.1);
   const body = len - 2 * lead;
   g.moveTo(x1, y1).lineTo(x1 + ux * lead, y1 + uy * lead);
@@ -241,11 +271,24 @@ export function drawSpring(g: Graphics, x1: number, y1: number, x2: number, y2: 
     const side = i % 2 === 0 ? amplitude : -amplitude;
     g.lineTo(x1 + ux * s + nx * side, y1 + uy * s + ny * side);
   }
-  g.lineTo(x2 - ux * lead, y2 - uy * lead).lineTo(x2, y2).stroke({ width, color, alpha });
+  g.lineTo(x2 - ux * lead, y2 - uy * lead)
+    .lineTo(x2, y2)
+    .stroke({ width, color, alpha });
 }
 
 /** Draws a dashed straight line from (x1, y1) to (x2, y2), px, and strokes it: dashes of `dash` px, gaps of `gap` px (`dashedLine`). */
-export function drawDashedLine(g: Graphics, x1: number, y1: number, x2: number, y2: number, width: number, color: number, alpha = 1, dash = 8, gap = 6): void {
+export function drawDashedLine(
+  g: Graphics,
+  x1: number,
+  y1: number,
+  x2: number,
+  y2: number,
+  width: number,
+  color: number,
+  alpha = 1,
+  dash = 8,
+  gap = 6,
+): void {
   if (x1 === x2 && y1 === y2) return;
   dashedLine(g, x1, y1, x2, y2, dash, gap).stroke({ width, color, alpha });
 }
@@ -299,14 +342,17 @@ export class PathBuffer {
     if (this.count < 2 && Number.isNaN(endX)) return;
     const start = (this.head - this.count + this.capacity) % this.capacity;
     const cap = this.capacity;
-    let px = 0, py = 0;
+    let px = 0,
+      py = 0;
     for (let k = 0; k < this.count; k++) {
       const i = (start + k) % cap;
-      const sx = camera.toScreenX(this.xs[i]!), sy = camera.toScreenY(this.ys[i]!);
+      const sx = camera.toScreenX(this.xs[i]!),
+        sy = camera.toScreenY(this.ys[i]!);
       if (k === 0) g.moveTo(sx, sy);
       else if (!dashed) g.lineTo(sx, sy);
       else if (((k - 1) >> 2) % 2 === 0) g.moveTo(px, py).lineTo(sx, sy);
-      px = sx; py = sy;
+      px = sx;
+      py = sy;
     }
     if (!dashed && !Number.isNaN(endX)) g.lineTo(camera.toScreenX(endX), camera.toScreenY(endY));
     g.stroke({ width, color, alpha });
@@ -366,7 +412,9 @@ export function trackHeldKeys(keys: readonly string[]): { held(key: string): boo
   const down = new Set<string>();
   const typing = (t: EventTarget | null): boolean => {
     const el = t as HTMLElement | null;
-    return !!el && (el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' || (el.tagName === 'INPUT' && (el as HTMLInputElement).type === 'text'));
+    return (
+      !!el && (el.tagName === 'TEXTAREA' || el.tagName === 'SELECT' || (el.tagName === 'INPUT' && (el as HTMLInputElement).type === 'text'))
+    );
   };
   const onDown = (e: KeyboardEvent): void => {
     const k = e.key.toLowerCase();
@@ -374,7 +422,9 @@ export function trackHeldKeys(keys: readonly string[]): { held(key: string): boo
     e.preventDefault();
     down.add(k);
   };
-  const onUp = (e: KeyboardEvent): void => { down.delete(e.key.toLowerCase()); };
+  const onUp = (e: KeyboardEvent): void => {
+    down.delete(e.key.toLowerCase());
+  };
   const onBlur = (): void => down.clear();
   window.addEventListener('keydown', onDown);
   window.addEventListener('keyup', onUp);
@@ -396,7 +446,8 @@ export function trackHeldKeys(keys: readonly string[]): { held(key: string): boo
 export function dashedLine(g: Graphics, x0: number, y0: number, x1: number, y1: number, dash = 6, gap = 4): Graphics {
   const len = Math.hypot(x1 - x0, y1 - y0);
   if (!(dash > 0 && gap > 0) || len === 0) return g.moveTo(x0, y0).lineTo(x1, y1);
-  const ux = (x1 - x0) / len, uy = (y1 - y0) / len;
+  const ux = (x1 - x0) / len,
+    uy = (y1 - y0) / len;
   for (let s = 0; s < len; s += dash + gap) {
     const e = Math.min(len, s + dash);
     g.moveTo(x0 + ux * s, y0 + uy * s).lineTo(x0 + ux * e, y0 + uy * e);
@@ -418,7 +469,10 @@ export function createStatusLine(): { element: HTMLElement; set(text: string): v
   return {
     element,
     set(text: string) {
-      if (text !== shown) { shown = text; element.textContent = text; }
+      if (text !== shown) {
+        shown = text;
+        element.textContent = text;
+      }
     },
   };
 }

@@ -73,12 +73,15 @@ export interface PageLayout {
  * symbols): pause-or-play, single step, reset, the info drawer and the settings drawer.
  */
 export const ICONS = Object.freeze({
-  pause: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M3 2h3.5v12H3zM9.5 2H13v12H9.5z" fill="currentColor"/></svg>',
+  pause:
+    '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M3 2h3.5v12H3zM9.5 2H13v12H9.5z" fill="currentColor"/></svg>',
   play: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M4 2l10 6-10 6z" fill="currentColor"/></svg>',
   step: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M2 2l8 6-8 6zM11 2h3v12h-3z" fill="currentColor"/></svg>',
-  reset: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M8 2.5a5.5 5.5 0 1 1-5.2 3.7" fill="none" stroke="currentColor" stroke-width="1.8"/><path d="M1.5 2.5l1.6 4.4 4.2-1.8z" fill="currentColor"/></svg>',
+  reset:
+    '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M8 2.5a5.5 5.5 0 1 1-5.2 3.7" fill="none" stroke="currentColor" stroke-width="1.8"/><path d="M1.5 2.5l1.6 4.4 4.2-1.8z" fill="currentColor"/></svg>',
   info: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M2 3h12v2H2zM2 7h12v2H2zM2 11h12v2H2z" fill="currentColor"/></svg>',
-  settings: '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M2 4h7M13 4h1M2 12h1M7 12h7" stroke="currentColor" stroke-width="1.6"/><circle cx="11" cy="4" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/><circle cx="5" cy="12" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/></svg>',
+  settings:
+    '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M2 4h7M13 4h1M2 12h1M7 12h7" stroke="currentColor" stroke-width="1.6"/><circle cx="11" cy="4" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/><circle cx="5" cy="12" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/></svg>',
 });
 
 const STYLE_ID = 'bp-layout-style';
@@ -181,7 +184,10 @@ export function pageLayout(): PageLayout {
     else b.textContent = icon;
     b.title = label;
     b.setAttribute('aria-label', label);
-    b.addEventListener('click', (e) => { e.preventDefault(); onClick(); });
+    b.addEventListener('click', (e) => {
+      e.preventDefault();
+      onClick();
+    });
     buttons.append(b);
     return b;
   };
@@ -192,7 +198,9 @@ export function pageLayout(): PageLayout {
   const sideButton = addButton('settings', 'parameters and charts', () => open('side'));
   sideButton.classList.add('bp-drawer-button');
   drawerButtons.side = sideButton;
-  const syncSideButton = (): void => { sideButton.style.display = side.childElementCount === 0 ? 'none' : ''; };
+  const syncSideButton = (): void => {
+    sideButton.style.display = side.childElementCount === 0 ? 'none' : '';
+  };
   new MutationObserver(syncSideButton).observe(side, { childList: true });
   syncSideButton();
   // Drawers sit under the toolbar, whatever its height.
@@ -204,12 +212,24 @@ export function pageLayout(): PageLayout {
     for (const k of ['top', 'bottom', 'left', 'right', 'position'] as const) node.style[k] = '';
     side.append(node);
   };
-  new MutationObserver((records) => { for (const r of records) r.addedNodes.forEach(adopt); }).observe(document.body, { childList: true });
+  new MutationObserver((records) => {
+    for (const r of records) r.addedNodes.forEach(adopt);
+  }).observe(document.body, { childList: true });
   // Growing into the wide arrangement closes the drawers.
-  query.addEventListener('change', () => { if (!query.matches) open(null); });
+  query.addEventListener('change', () => {
+    if (!query.matches) open(null);
+  });
 
   layout = {
-    root, toolbar, buttons, info, help, status, stage, controls, side,
+    root,
+    toolbar,
+    buttons,
+    info,
+    help,
+    status,
+    stage,
+    controls,
+    side,
     compact: () => query.matches,
     touch: () => coarse.matches,
     setTitle(text) {

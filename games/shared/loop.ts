@@ -62,7 +62,8 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
   const where = 'createGameLoop';
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object`);
   for (const key of Object.keys(options)) {
-    if (!LOOP_OPTIONS.includes(key)) throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${LOOP_OPTIONS.join(', ')}`);
+    if (!LOOP_OPTIONS.includes(key))
+      throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${LOOP_OPTIONS.join(', ')}`);
   }
   if (typeof options.step !== 'function') throw new TypeError(`${where}: step must be a function, got ${typeof options.step}`);
   if (typeof options.render !== 'function') throw new TypeError(`${where}: render must be a function, got ${typeof options.render}`);
@@ -114,7 +115,7 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
     windowFrames++;
     const elapsed = timeMs - windowStart;
     if (elapsed >= 500) {
-      fps = (windowFrames - 1) * 1000 / elapsed;
+      fps = ((windowFrames - 1) * 1000) / elapsed;
       windowStart = timeMs;
       windowFrames = 1;
     }
@@ -138,8 +139,12 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
       running = false;
       cancelFrame(frameId);
     },
-    get running() { return running; },
-    get paused() { return paused; },
+    get running() {
+      return running;
+    },
+    get paused() {
+      return paused;
+    },
     set paused(value: boolean) {
       if (typeof value !== 'boolean') throw new TypeError(`GameLoop.paused must be a boolean, got ${typeof value}`);
       if (paused && !value) fixed.reset();
@@ -152,11 +157,21 @@ export function createGameLoop(options: GameLoopOptions): GameLoop {
         fail(error);
       }
     },
-    resetClock() { fixed.reset(); },
-    setTimeStep(dt: number) { fixed = makeFixed(dt); },
-    get fps() { return fps; },
-    get frames() { return frames; },
-    get alpha() { return alpha; },
+    resetClock() {
+      fixed.reset();
+    },
+    setTimeStep(dt: number) {
+      fixed = makeFixed(dt);
+    },
+    get fps() {
+      return fps;
+    },
+    get frames() {
+      return frames;
+    },
+    get alpha() {
+      return alpha;
+    },
     afterFirstFrame(callback: () => void) {
       if (frames > 0) callback();
       else firstFrameCallbacks.push(callback);

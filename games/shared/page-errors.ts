@@ -33,7 +33,8 @@ export function showUncaughtError(message: string): void {
       box = document.createElement('div');
       box.dataset.pageError = '';
       box.setAttribute('role', 'alert');
-      box.style.cssText = 'position:fixed;top:40%;left:50%;transform:translate(-50%,-50%);z-index:1000;max-width:min(80vw,640px);' +
+      box.style.cssText =
+        'position:fixed;top:40%;left:50%;transform:translate(-50%,-50%);z-index:1000;max-width:min(80vw,640px);' +
         'box-sizing:border-box;padding:12px 16px;border-radius:8px;background:rgba(160,20,40,0.95);color:#fff;' +
         'font:14px/1.5 system-ui,sans-serif;white-space:pre-wrap;overflow-wrap:anywhere';
       const title = document.createElement('strong');

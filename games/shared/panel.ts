@@ -107,13 +107,16 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
       if (!(key in record)) throw new TypeError(`${where}: key ${JSON.stringify(key)} is not a field of params`);
       let ctl: Controller;
       const expected = { slider: 'number', choice: '', checkbox: 'boolean', button: 'function', text: 'string' }[control.type];
-      if (expected === undefined) throw new TypeError(`${where}: control ${JSON.stringify(key)} has unknown type ${JSON.stringify(control.type)}`);
+      if (expected === undefined)
+        throw new TypeError(`${where}: control ${JSON.stringify(key)} has unknown type ${JSON.stringify(control.type)}`);
       if (expected && typeof record[key] !== expected) {
         throw new TypeError(`${where}: ${control.type} ${JSON.stringify(key)} needs a ${expected} field, got ${typeof record[key]}`);
       }
       if (control.type === 'slider') {
         if (!(Number.isFinite(control.min) && Number.isFinite(control.max) && control.min < control.max)) {
-          throw new RangeError(`${where}: slider ${JSON.stringify(key)} needs finite min < max, got min ${control.min}, max ${control.max}`);
+          throw new RangeError(
+            `${where}: slider ${JSON.stringify(key)} needs finite min < max, got min ${control.min}, max ${control.max}`,
+          );
         }
         if (control.step !== undefined && !(control.step > 0)) {
           throw new RangeError(`${where}: slider ${JSON.stringify(key)} needs step > 0, got ${control.step}`);

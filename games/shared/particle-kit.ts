@@ -5,11 +5,12 @@
  * number format (`fmt`) and URL-parameter error box (`readUrlParams`) they use as they are. Particle
  * counts, step timing, hiding the ball layer, click-or-drag input and test hooks only: no physics in here.
  */
-import { query } from 'bitecs';
-import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
+
+import { type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { WorldRenderer } from '@bitphysics/render-pixi';
-import { pointerOnCanvas } from './pointer';
+import { query } from 'bitecs';
 import { fmt as labFmt } from './lab-kit';
+import { pointerOnCanvas } from './pointer';
 
 /** Formats `value` for the particle labs' readouts: the lab kit's `fmt`, at 3 significant digits by default. */
 export function fmt(value: number, digits = 3): string {
@@ -48,8 +49,12 @@ export function followPointerWhileDown(canvas: HTMLCanvasElement, renderer: Worl
     canvas.setPointerCapture(event.pointerId);
     move(event);
   });
-  canvas.addEventListener('pointermove', (event) => { if (event.pointerId === pointerId) move(event); });
-  const release = (event: PointerEvent): void => { if (event.pointerId === pointerId) pointerId = -1; };
+  canvas.addEventListener('pointermove', (event) => {
+    if (event.pointerId === pointerId) move(event);
+  });
+  const release = (event: PointerEvent): void => {
+    if (event.pointerId === pointerId) pointerId = -1;
+  };
   canvas.addEventListener('pointerup', release);
   canvas.addEventListener('pointercancel', release);
 }
@@ -62,7 +67,8 @@ export function countParticles(world: PhysicsWorld, emitter = 0): number {
   const c = world.components;
   const ents = query(world, [c.Particle]);
   if (emitter === 0) return ents.length;
-  const em = c.Particle.emitter, slot = slotOf(emitter); // Particle.emitter holds the emitter's slot
+  const em = c.Particle.emitter,
+    slot = slotOf(emitter); // Particle.emitter holds the emitter's slot
   let n = 0;
   for (let i = 0; i < ents.length; i++) if (em[ents[i]!] === slot) n++;
   return n;
@@ -75,12 +81,19 @@ export function countParticles(world: PhysicsWorld, emitter = 0): number {
 export function particleCentroid(world: PhysicsWorld, emitter: number, out: Float64Array | number[]): number {
   const c = world.components;
   const ents = query(world, [c.Particle]);
-  const em = c.Particle.emitter, px = c.Position.x, py = c.Position.y, slot = slotOf(emitter);
-  let n = 0, sx = 0, sy = 0;
+  const em = c.Particle.emitter,
+    px = c.Position.x,
+    py = c.Position.y,
+    slot = slotOf(emitter);
+  let n = 0,
+    sx = 0,
+    sy = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     if (emitter !== 0 && em[e] !== slot) continue;
-    sx += px[e]!; sy += py[e]!; n++;
+    sx += px[e]!;
+    sy += py[e]!;
+    n++;
   }
   out[0] = n > 0 ? sx / n : Number.NaN;
   out[1] = n > 0 ? sy / n : Number.NaN;
@@ -103,11 +116,19 @@ export interface StepTimer {
 
 /** Creates a step timer (performance.now around each step; an average with weight 0.1 for the newest). */
 export function createStepTimer(): StepTimer {
-  let last = Number.NaN, mean = Number.NaN, count = 0;
+  let last = Number.NaN,
+    mean = Number.NaN,
+    count = 0;
   return {
-    get last() { return last; },
-    get mean() { return mean; },
-    get count() { return count; },
+    get last() {
+      return last;
+    },
+    get mean() {
+      return mean;
+    },
+    get count() {
+      return count;
+    },
     run(step, world) {
       const t0 = performance.now();
       step(world);
@@ -115,7 +136,11 @@ export function createStepTimer(): StepTimer {
       mean = count === 0 ? last : mean + 0.1 * (last - mean);
       count++;
     },
-    reset() { last = Number.NaN; mean = Number.NaN; count = 0; },
+    reset() {
+      last = Number.NaN;
+      mean = Number.NaN;
+      count = 0;
+    },
   };
 }
 

@@ -3,12 +3,13 @@
  * `startPixiGame`, which joins a `WorldRenderer` to the renderer-agnostic shell through
  * `createRenderedShell` (as './three' does for 3D games).
  */
-import { Application, type ColorSource } from 'pixi.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
-import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
-import { pageLayout } from './layout';
+import { Application, type ColorSource } from 'pixi.js';
 import { createFramePacer, type FramePacer } from './frame-pacer';
+import { pageLayout } from './layout';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {
@@ -113,7 +114,10 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
     pacer.drew();
   };
   const { shell, renderer: worldRenderer } = createRenderedShell(
-    shellOptions, (world) => new WorldRenderer(world, { ...rendererOptions, app }), draw, onFrame,
+    shellOptions,
+    (world) => new WorldRenderer(world, { ...rendererOptions, app }),
+    draw,
+    onFrame,
   );
   const exposed = shell.expose({ renderer: worldRenderer, app, pacer });
   shell.start();

@@ -13,7 +13,7 @@ let cssInjected = false;
 function injectCss(): void {
   if (cssInjected || typeof document === 'undefined') return;
   const style = document.createElement('style');
-  style.textContent = uplotCss + `
+  style.textContent = `${uplotCss}
 .bp-plot { background: rgba(14, 17, 22, 0.85); border-radius: 8px; padding: 6px 8px; color: #e6e9ef; font: 12px system-ui, sans-serif; }
 .bp-plot .u-legend { color: #e6e9ef; }
 .bp-plot .u-title { font-size: 13px; font-weight: 600; white-space: normal; height: auto; line-height: 1.3; padding: 2px 4px; }
@@ -81,7 +81,12 @@ export function createPlot(options: PlotOptions): Plot {
   if (!Array.isArray(options.series) || options.series.length === 0) throw new TypeError('createPlot: series must list at least one line');
   const capacity = options.capacity ?? 1200;
   const redrawEvery = options.redrawEvery ?? 6;
-  for (const [name, v] of [['capacity', capacity], ['redrawEvery', redrawEvery], ['width', options.width ?? 1], ['height', options.height ?? 1]] as const) {
+  for (const [name, v] of [
+    ['capacity', capacity],
+    ['redrawEvery', redrawEvery],
+    ['width', options.width ?? 1],
+    ['height', options.height ?? 1],
+  ] as const) {
     if (!Number.isInteger(v) || v <= 0) throw new RangeError(`createPlot: ${name} must be a positive integer, got ${v}`);
   }
   injectCss();
@@ -92,7 +97,9 @@ export function createPlot(options: PlotOptions): Plot {
   // Ring buffers, and ordered views handed to uPlot on redraw.
   const ring = Array.from({ length: n + 1 }, () => new Float64Array(capacity));
   const view = Array.from({ length: n + 1 }, () => new Array<number | null>(0));
-  let head = 0, count = 0, pending = 0;
+  let head = 0,
+    count = 0,
+    pending = 0;
   // A y label longer than the axis (uPlot draws it rotated along the plot's height) would be cut
   // off: it goes under the title instead.
   const height = options.height ?? 220;
@@ -108,7 +115,16 @@ export function createPlot(options: PlotOptions): Plot {
         { label: options.xLabel ?? 'time (s)', stroke: '#98a2b3', grid: { stroke: '#252b36' } },
         { label: yLabelFits ? yLabel : '', stroke: '#98a2b3', grid: { stroke: '#252b36' } },
       ],
-      series: [{}, ...options.series.map((s) => ({ label: s.label, stroke: s.color, width: 1.5, dash: s.dashed ? [6, 4] : undefined, spanGaps: false }))],
+      series: [
+        {},
+        ...options.series.map((s) => ({
+          label: s.label,
+          stroke: s.color,
+          width: 1.5,
+          dash: s.dashed ? [6, 4] : undefined,
+          spanGaps: false,
+        })),
+      ],
       legend: { live: false },
       cursor: { show: false },
     },
@@ -124,7 +140,8 @@ export function createPlot(options: PlotOptions): Plot {
   const redraw = (): void => {
     const start = (head - count + capacity) % capacity;
     for (let k = 0; k <= n; k++) {
-      const v = view[k]!, r = ring[k]!;
+      const v = view[k]!,
+        r = ring[k]!;
       v.length = count;
       for (let i = 0; i < count; i++) {
         const x = r[(start + i) % capacity]!;
@@ -142,10 +159,21 @@ export function createPlot(options: PlotOptions): Plot {
       if (count < capacity) count++;
       if (++pending >= redrawEvery) redraw();
     },
-    clear() { head = 0; count = 0; redraw(); },
+    clear() {
+      head = 0;
+      count = 0;
+      redraw();
+    },
     redraw,
-    get length() { return count; },
-    last(i: number) { return count === 0 ? Number.NaN : ring[i + 1]![(head - 1 + capacity) % capacity]!; },
-    destroy() { chart.destroy(); wrap.remove(); },
+    get length() {
+      return count;
+    },
+    last(i: number) {
+      return count === 0 ? Number.NaN : ring[i + 1]![(head - 1 + capacity) % capacity]!;
+    },
+    destroy() {
+      chart.destroy();
+      wrap.remove();
+    },
   };
 }

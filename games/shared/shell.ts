@@ -1,9 +1,9 @@
-import { step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
-import { exposeGame, markReady, type GameHandle, type GameStats } from './contract';
-import { createHud, type ControlHint, type Hud } from './hud';
+import { type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
+import { exposeGame, type GameHandle, type GameStats, markReady } from './contract';
+import { type ControlHint, createHud, type Hud } from './hud';
 import { bindKeys, type KeyBinding } from './keys';
-import { createGameLoop, type GameLoop } from './loop';
 import { ICONS, pageLayout } from './layout';
+import { createGameLoop, type GameLoop } from './loop';
 
 /** Options of `createGameShell`. */
 export interface GameShellOptions {
@@ -126,11 +126,28 @@ export function createGameShell(options: GameShellOptions): GameShell {
   });
   loop.paused = options.paused ?? false;
 
-  const builtIn = new Set(['world', 'paused', 'stats', 'step', 'reset', 'togglePause', 'loop', 'hud', 'onWorldChange', 'expose', 'start', 'destroy']);
+  const builtIn = new Set([
+    'world',
+    'paused',
+    'stats',
+    'step',
+    'reset',
+    'togglePause',
+    'loop',
+    'hud',
+    'onWorldChange',
+    'expose',
+    'start',
+    'destroy',
+  ]);
 
   const shell: GameShell = {
-    get world() { return world; },
-    get paused() { return loop.paused; },
+    get world() {
+      return world;
+    },
+    get paused() {
+      return loop.paused;
+    },
     set paused(value: boolean) {
       loop.paused = value;
       updateHud();
@@ -178,7 +195,8 @@ export function createGameShell(options: GameShellOptions): GameShell {
 
   const extraKeys = options.keys ?? [];
   for (const k of extraKeys) {
-    if (['p', 'n', 'r'].includes(k.key.toLowerCase())) throw new TypeError(`${where}: key ${JSON.stringify(k.key)} is built in (P pause, N step, R reset)`);
+    if (['p', 'n', 'r'].includes(k.key.toLowerCase()))
+      throw new TypeError(`${where}: key ${JSON.stringify(k.key)} is built in (P pause, N step, R reset)`);
   }
   const unbind = bindKeys([
     { key: 'p', label: 'pause / resume', action: () => shell.togglePause() },

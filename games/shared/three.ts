@@ -6,16 +6,15 @@
  * `createRenderedShell`, as './pixi' does.
  * 2D games never load this file, so they never load three.js.
  */
-import {
-  ACESFilmicToneMapping, Color, PCFShadowMap, PerspectiveCamera, SRGBColorSpace, Scene, WebGLRenderer,
-} from 'three';
-import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { WorldRenderer3D, createOrbitControls, frameBox, type OrbitOptions, type WorldRenderer3DOptions } from '@bitphysics/render-three';
-import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
+import { createOrbitControls, frameBox, type OrbitOptions, WorldRenderer3D, type WorldRenderer3DOptions } from '@bitphysics/render-three';
+import { ACESFilmicToneMapping, Color, PCFShadowMap, PerspectiveCamera, Scene, SRGBColorSpace, WebGLRenderer } from 'three';
+import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { createFramePacer, type FramePacer } from './frame-pacer';
 import type { ControlHint } from './hud';
 import { pageLayout } from './layout';
-import { createFramePacer, type FramePacer } from './frame-pacer';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
 
 /** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
 export interface ThreeAppOptions {
@@ -45,7 +44,17 @@ export interface ThreeAppOptions {
   maxFramesInFlight?: number;
 }
 
-const APP_OPTIONS = ['background', 'parent', 'pixelRatio', 'antialias', 'shadows', 'fov', 'cameraPosition', 'controls', 'maxFramesInFlight'];
+const APP_OPTIONS = [
+  'background',
+  'parent',
+  'pixelRatio',
+  'antialias',
+  'shadows',
+  'fov',
+  'cameraPosition',
+  'controls',
+  'maxFramesInFlight',
+];
 
 let softwareGL: boolean | null = null;
 
@@ -138,7 +147,8 @@ export interface ThreeApp {
 export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   const where = 'createThreeApp';
   for (const key of Object.keys(options)) {
-    if (!APP_OPTIONS.includes(key)) throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${APP_OPTIONS.join(', ')}`);
+    if (!APP_OPTIONS.includes(key))
+      throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${APP_OPTIONS.join(', ')}`);
   }
   const pixelRatio = options.pixelRatio ?? Math.min(window.devicePixelRatio || 1, 2);
   if (!(pixelRatio > 0 && pixelRatio <= 4)) throw new RangeError(`${where}: pixelRatio must be in (0, 4], got ${pixelRatio}`);
@@ -185,7 +195,12 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   observer.observe(parent);
 
   return {
-    renderer, scene, camera, controls, canvas, pacer,
+    renderer,
+    scene,
+    camera,
+    controls,
+    canvas,
+    pacer,
     render() {
       controls?.update();
       if (!pacer.mayDraw()) return false;
@@ -196,9 +211,14 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     info() {
       const i = renderer.info;
       return {
-        calls: i.render.calls, triangles: i.render.triangles, lines: i.render.lines, points: i.render.points,
-        geometries: i.memory.geometries, textures: i.memory.textures,
-        framesDrawn: pacer.drawn, framesSkipped: pacer.skipped,
+        calls: i.render.calls,
+        triangles: i.render.triangles,
+        lines: i.render.lines,
+        points: i.render.points,
+        geometries: i.memory.geometries,
+        textures: i.memory.textures,
+        framesDrawn: pacer.drawn,
+        framesSkipped: pacer.skipped,
       };
     },
     toNdc(clientX, clientY, out = [0, 0]) {
@@ -272,7 +292,10 @@ export async function startThreeGame(options: ThreeGameOptions): Promise<ThreeGa
   const { renderer: rendererOptions, app: appOptions, onFrame, view, viewDirection, ...shellOptions } = options;
   const app = createThreeApp(appOptions);
   const { shell, renderer: worldRenderer } = createRenderedShell(
-    shellOptions, (world) => new WorldRenderer3D(world, { ...rendererOptions, scene: app.scene }), () => app.render(), onFrame,
+    shellOptions,
+    (world) => new WorldRenderer3D(world, { ...rendererOptions, scene: app.scene }),
+    () => app.render(),
+    onFrame,
   );
   const v = view === undefined ? 'boundary' : view;
   if (v !== null) {

@@ -11,25 +11,50 @@
  * Keys: P pause, N single step, R reset, [ ] slower / faster, T trails, E exaggerated sizes.
  * URL: ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name, ?date=ISO date.
  */
-import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
+
 import {
-  createPhysicsWorld, INTEGRATOR_NAMES, SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_EPOCH, SOLAR_SYSTEM_FLOOR, SOLAR_SYSTEM_PLANETS, solarSystem,
-  solarSystemErrors, step, type IntegratorName, type PhysicsWorld, type SolarSystemHandles,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  SOLAR_SYSTEM_BODIES,
+  SOLAR_SYSTEM_EPOCH,
+  SOLAR_SYSTEM_FLOOR,
+  SOLAR_SYSTEM_PLANETS,
+  type SolarSystemHandles,
+  solarSystem,
+  solarSystemErrors,
+  step,
 } from '@bitphysics/physics';
-import { startThreeGame, ORBIT_CONTROLS } from '../shared/three';
+import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
 import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '../shared/index';
+import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 
 /** Scene units per AU. */
 const UNITS_PER_AU = 10;
 const STEPS = ['0.25', '1', '6', '24'] as const;
 /** Mean radii, AU (IAU), for true-size drawing. */
 const RADIUS_AU: Record<string, number> = {
-  Sun: 4.652e-3, Mercury: 1.631e-5, Venus: 4.045e-5, Earth: 4.259e-5, Mars: 2.266e-5,
-  Jupiter: 4.673e-4, Saturn: 3.893e-4, Uranus: 1.695e-4, Neptune: 1.646e-4,
+  Sun: 4.652e-3,
+  Mercury: 1.631e-5,
+  Venus: 4.045e-5,
+  Earth: 4.259e-5,
+  Mars: 2.266e-5,
+  Jupiter: 4.673e-4,
+  Saturn: 3.893e-4,
+  Uranus: 1.695e-4,
+  Neptune: 1.646e-4,
 };
 const COLOR: Record<string, number> = {
-  Sun: 0xffd27a, Mercury: 0xb5a89a, Venus: 0xe8cf94, Earth: 0x4f8fe8, Mars: 0xd0643c,
-  Jupiter: 0xd9b38c, Saturn: 0xe6d19a, Uranus: 0x9fd8e0, Neptune: 0x5a78e0,
+  Sun: 0xffd27a,
+  Mercury: 0xb5a89a,
+  Venus: 0xe8cf94,
+  Earth: 0x4f8fe8,
+  Mars: 0xd0643c,
+  Jupiter: 0xd9b38c,
+  Saturn: 0xe6d19a,
+  Uranus: 0x9fd8e0,
+  Neptune: 0x5a78e0,
 };
 
 const params = {
@@ -82,7 +107,15 @@ const game = await startThreeGame({
     { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
     { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
-    { key: 'e', label: 'sizes', action: () => { params.exaggerate = !params.exaggerate; dress(); panel.refresh(); } },
+    {
+      key: 'e',
+      label: 'sizes',
+      action: () => {
+        params.exaggerate = !params.exaggerate;
+        dress();
+        panel.refresh();
+      },
+    },
   ],
   app: { background: 0x020308, shadows: false, controls: { minDistance: 0.5, maxDistance: 1500 }, cameraPosition: [0, 60, 90] },
   renderer: {
@@ -106,9 +139,14 @@ app.camera.far = 5000;
 app.camera.updateProjectionMatrix();
 
 const sphere = new SphereGeometry(1, 32, 20);
-const materials = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((b) => [b, b === 'Sun'
-  ? new MeshBasicMaterial({ color: COLOR[b] })
-  : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.25 })]));
+const materials = Object.fromEntries(
+  SOLAR_SYSTEM_BODIES.map((b) => [
+    b,
+    b === 'Sun'
+      ? new MeshBasicMaterial({ color: COLOR[b] })
+      : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.25 }),
+  ]),
+);
 
 /**
  * Drawn radius of a body, AU: the true radius, or exaggerated so every body shows at the scale of
@@ -138,17 +176,20 @@ app.scene.add(rings);
 // ---- Labels, date and the error table ---------------------------------------------------------
 
 const labelLayer = document.createElement('div');
-labelLayer.style.cssText = 'position: absolute; inset: 0; pointer-events: none; z-index: 5; font: 12px system-ui, sans-serif; color: #dfe7ff';
+labelLayer.style.cssText =
+  'position: absolute; inset: 0; pointer-events: none; z-index: 5; font: 12px system-ui, sans-serif; color: #dfe7ff';
 // Over the canvas (in the layout's stage): the labels are part of the scene.
 labelLayer.dataset.sceneOverlay = '';
 pageLayout().stage.append(labelLayer);
-const labels = Object.fromEntries(SOLAR_SYSTEM_BODIES.map((name) => {
-  const el = document.createElement('div');
-  el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
-  el.style.cssText = 'position: absolute; transform: translate(6px, -50%); text-shadow: 0 0 3px #000; white-space: nowrap';
-  labelLayer.append(el);
-  return [name, el];
-}));
+const labels = Object.fromEntries(
+  SOLAR_SYSTEM_BODIES.map((name) => {
+    const el = document.createElement('div');
+    el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
+    el.style.cssText = 'position: absolute; transform: translate(6px, -50%); text-shadow: 0 0 3px #000; white-space: nowrap';
+    labelLayer.append(el);
+    return [name, el];
+  }),
+);
 
 const table = document.createElement('div');
 table.className = 'bp-hud';
@@ -166,10 +207,14 @@ let tableFrame = 0;
 
 function frame(): void {
   const k = UNITS_PER_AU;
-  const w = app.canvas.clientWidth, h = app.canvas.clientHeight;
+  const w = app.canvas.clientWidth,
+    h = app.canvas.clientHeight;
   for (const name of SOLAR_SYSTEM_BODIES) {
     const el = labels[name]!;
-    if (!renderer.drawnPosition(handles.bodies[name], p3)) { el.style.display = 'none'; continue; }
+    if (!renderer.drawnPosition(handles.bodies[name], p3)) {
+      el.style.display = 'none';
+      continue;
+    }
     v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
     if (name === 'Saturn') {
       rings.position.copy(v);
@@ -178,7 +223,10 @@ function frame(): void {
     v.project(app.camera);
     const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
     el.style.display = visible ? 'block' : 'none';
-    if (visible) { el.style.left = `${((v.x + 1) / 2) * w}px`; el.style.top = `${((1 - v.y) / 2) * h}px`; }
+    if (visible) {
+      el.style.left = `${((v.x + 1) / 2) * w}px`;
+      el.style.top = `${((1 - v.y) / 2) * h}px`;
+    }
   }
   if (tableFrame++ % 15 === 0) updateTable();
 }
@@ -204,15 +252,30 @@ function setTrails(on: boolean): void {
   panel.refresh();
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'rate', label: 'rate (days/s)', min: 0, max: 400, step: 0.5 },
-  { type: 'choice', key: 'step', label: 'step (hours)', options: STEPS, onChange: () => shell.reset() },
-  { type: 'choice', key: 'integrator', label: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
-  { type: 'text', key: 'date', label: 'start date (UTC)', onChange: () => { try { shell.reset(); } catch (error) { shell.hud.showError(String((error as Error).message)); } } },
-  { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes', onChange: () => dress() },
-  { type: 'checkbox', key: 'trails', label: 'trails', onChange: (x) => setTrails(x === true) },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Solar system' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'rate', label: 'rate (days/s)', min: 0, max: 400, step: 0.5 },
+    { type: 'choice', key: 'step', label: 'step (hours)', options: STEPS, onChange: () => shell.reset() },
+    { type: 'choice', key: 'integrator', label: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
+    {
+      type: 'text',
+      key: 'date',
+      label: 'start date (UTC)',
+      onChange: () => {
+        try {
+          shell.reset();
+        } catch (error) {
+          shell.hud.showError(String((error as Error).message));
+        }
+      },
+    },
+    { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes', onChange: () => dress() },
+    { type: 'checkbox', key: 'trails', label: 'trails', onChange: (x) => setTrails(x === true) },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Solar system' },
+);
 
 shell.expose({
   params,

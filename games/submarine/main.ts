@@ -7,13 +7,22 @@
  * Keys: W / S flood / blow (both tanks), Q / E trim nose down / up, A / D or arrows astern / ahead,
  * P pause, N step, R reset.
  */
-import { Graphics, Text } from 'pixi.js';
+
 import {
-  seabedHeight, setBallastTarget, setBodyThrust, step, submarine, SUBMARINE, SUBMARINE_NEUTRAL_FILL,
-  createPhysicsWorld, type PhysicsWorld, type SubmarineHandles,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  SUBMARINE,
+  SUBMARINE_NEUTRAL_FILL,
+  type SubmarineHandles,
+  seabedHeight,
+  setBallastTarget,
+  setBodyThrust,
+  step,
+  submarine,
 } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
+import { Graphics, Text } from 'pixi.js';
 import { createPanel, numberParam, seedParam } from '../shared/index';
+import { startPixiGame } from '../shared/pixi';
 
 const params = {
   seed: seedParam(),
@@ -37,16 +46,30 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
-addEventListener('keydown', (e) => { held.add(e.key.toLowerCase()); });
-addEventListener('keyup', (e) => { held.delete(e.key.toLowerCase()); });
+addEventListener('keydown', (e) => {
+  held.add(e.key.toLowerCase());
+});
+addEventListener('keyup', (e) => {
+  held.delete(e.key.toLowerCase());
+});
 addEventListener('blur', () => held.clear());
 
 /** Hull end points and keel in world coordinates (bow, stern, keel centre). */
 function hullPoints(world: PhysicsWorld): number[][] {
-  const c = world.components, e = handles.hull;
-  const x = c.Position.x[e]!, y = c.Position.y[e]!, a = c.Angle.value[e]!;
-  const co = Math.cos(a), s = Math.sin(a), L = SUBMARINE.length / 2, H = SUBMARINE.height / 2;
-  return [[x + L * co, y + L * s], [x - L * co, y - L * s], [x + H * s, y - H * co]];
+  const c = world.components,
+    e = handles.hull;
+  const x = c.Position.x[e]!,
+    y = c.Position.y[e]!,
+    a = c.Angle.value[e]!;
+  const co = Math.cos(a),
+    s = Math.sin(a),
+    L = SUBMARINE.length / 2,
+    H = SUBMARINE.height / 2;
+  return [
+    [x + L * co, y + L * s],
+    [x - L * co, y - L * s],
+    [x + H * s, y - H * co],
+  ];
 }
 
 function stepWorld(world: PhysicsWorld): void {
@@ -56,7 +79,8 @@ function stepWorld(world: PhysicsWorld): void {
   if (held.has('s')) state.fill = Math.max(0, state.fill - 0.25 * dt);
   if (held.has('q')) state.trim = Math.min(0.3, state.trim + 0.2 * dt);
   if (held.has('e')) state.trim = Math.max(-0.3, state.trim - 0.2 * dt);
-  const ahead = held.has('d') || held.has('arrowright'), astern = held.has('a') || held.has('arrowleft');
+  const ahead = held.has('d') || held.has('arrowright'),
+    astern = held.has('a') || held.has('arrowleft');
   if (ahead) state.throttle = Math.min(1, state.throttle + 0.6 * dt);
   if (astern) state.throttle = Math.max(-0.5, state.throttle - 0.6 * dt);
   applyControls(world);
@@ -67,25 +91,35 @@ function stepWorld(world: PhysicsWorld): void {
   if (state.over) return;
   state.time = world.time;
   // The seabed: scraping it costs hull integrity and bounces the boat up.
-  const c = world.components, e = handles.hull;
+  const c = world.components,
+    e = handles.hull;
   let hit = false;
   for (const [px, py] of hullPoints(world)) if (py! < seabedHeight(handles.seabed, px!)) hit = true;
   if (hit) {
     c.Velocity.y[e] = Math.max(c.Velocity.y[e]!, 1.5);
     c.Velocity.x[e] = c.Velocity.x[e]! * 0.5;
-    if (!state.touching) { state.hits++; if (state.hits >= 3) state.over = 'sunk'; }
+    if (!state.touching) {
+      state.hits++;
+      if (state.hits >= 3) state.over = 'sunk';
+    }
   }
   state.touching = hit;
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
-    const dx = handles.beacons[2 * i]! - c.Position.x[e]!, dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
-    if (dx * dx + dy * dy < 7 * 7) { taken[i] = true; state.collected++; if (state.collected === taken.length) state.over = 'won'; }
+    const dx = handles.beacons[2 * i]! - c.Position.x[e]!,
+      dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
+    if (dx * dx + dy * dy < 7 * 7) {
+      taken[i] = true;
+      state.collected++;
+      if (state.collected === taken.length) state.over = 'won';
+    }
   }
 }
 
 /** Writes the controls into the world: ballast targets (fill +- trim) and screw thrust. */
 function applyControls(world: PhysicsWorld): void {
-  const fore = Math.min(1, Math.max(0, state.fill + state.trim)), aft = Math.min(1, Math.max(0, state.fill - state.trim));
+  const fore = Math.min(1, Math.max(0, state.fill + state.trim)),
+    aft = Math.min(1, Math.max(0, state.fill - state.trim));
   setBallastTarget(world, handles.hull, fore, aft);
   setBodyThrust(world, handles.hull, [state.throttle * SUBMARINE.maxThrust, 0]);
 }
@@ -114,14 +148,21 @@ const gauge = new Text({ text: '', style: { fill: 0xe8f4ff, fontFamily: 'monospa
 app.stage.addChild(gauge);
 
 function draw(): void {
-  const world = shell.world, c = world.components, e = handles.hull;
-  const k = params.pixelsPerMeter, W = app.screen.width, H = app.screen.height;
-  const cx = c.Position.x[e]!, cy = Math.min(-H / k / 2 + 25, c.Position.y[e]!);
-  const sx = (x: number) => W / 2 + (x - cx) * k, sy = (y: number) => H / 2 - (y - cy) * k;
+  const world = shell.world,
+    c = world.components,
+    e = handles.hull;
+  const k = params.pixelsPerMeter,
+    W = app.screen.width,
+    H = app.screen.height;
+  const cx = c.Position.x[e]!,
+    cy = Math.min(-H / k / 2 + 25, c.Position.y[e]!);
+  const sx = (x: number) => W / 2 + (x - cx) * k,
+    sy = (y: number) => H / 2 - (y - cy) * k;
   g.clear();
   g.rect(0, 0, W, Math.max(0, sy(0))).fill(0x8fc3ea);
   // Sea surface with waves.
-  const t = world.time, surface = c.FluidRegion.surface[handles.sea]!;
+  const t = world.time,
+    surface = c.FluidRegion.surface[handles.sea]!;
   g.moveTo(0, H);
   for (let px = 0; px <= W; px += 8) {
     const x = cx + (px - W / 2) / k;
@@ -135,24 +176,44 @@ function draw(): void {
   // Beacons.
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
-    const bx = sx(handles.beacons[2 * i]!), by = sy(handles.beacons[2 * i + 1]!);
+    const bx = sx(handles.beacons[2 * i]!),
+      by = sy(handles.beacons[2 * i + 1]!);
     g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
     g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
   }
   // Hull: a rounded rectangle with a sail, rotated by the hull's angle.
-  const a = c.Angle.value[e]!, co = Math.cos(a), s = Math.sin(a);
-  const L = SUBMARINE.length / 2, Hh = SUBMARINE.height / 2;
+  const a = c.Angle.value[e]!,
+    co = Math.cos(a),
+    s = Math.sin(a);
+  const L = SUBMARINE.length / 2,
+    Hh = SUBMARINE.height / 2;
   const pt = (u: number, v: number): [number, number] => [sx(cx + u * co - v * s), sy(c.Position.y[e]! + u * s + v * co)];
-  const hull = [[-L, -Hh * 0.6], [-L * 0.9, -Hh], [L * 0.8, -Hh], [L, 0], [L * 0.8, Hh], [-L * 0.9, Hh], [-L, Hh * 0.6]].map(([u, v]) => pt(u!, v!));
-  g.poly(hull.flat()).fill(state.touching ? 0xd05050 : 0x2f3b45).stroke({ color: 0x9fb3c2, width: 1.5 });
+  const hull = [
+    [-L, -Hh * 0.6],
+    [-L * 0.9, -Hh],
+    [L * 0.8, -Hh],
+    [L, 0],
+    [L * 0.8, Hh],
+    [-L * 0.9, Hh],
+    [-L, Hh * 0.6],
+  ].map(([u, v]) => pt(u!, v!));
+  g.poly(hull.flat())
+    .fill(state.touching ? 0xd05050 : 0x2f3b45)
+    .stroke({ color: 0x9fb3c2, width: 1.5 });
   g.poly([pt(-1, Hh), pt(-0.5, Hh + 2), pt(1.5, Hh + 2), pt(2, Hh)].flat()).fill(0x2f3b45);
   // Water in the tanks.
   const B = c.Ballast;
-  for (const [u, f] of [[SUBMARINE.tankArm, B.fore[e]!], [-SUBMARINE.tankArm, B.aft[e]!]] as const) {
-    g.poly([pt(u - 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8 + 1.6 * Hh * f), pt(u - 1.5, -Hh * 0.8 + 1.6 * Hh * f)].flat()).fill({ color: 0x4fa3ff, alpha: 0.8 });
+  for (const [u, f] of [
+    [SUBMARINE.tankArm, B.fore[e]!],
+    [-SUBMARINE.tankArm, B.aft[e]!],
+  ] as const) {
+    g.poly(
+      [pt(u - 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8 + 1.6 * Hh * f), pt(u - 1.5, -Hh * 0.8 + 1.6 * Hh * f)].flat(),
+    ).fill({ color: 0x4fa3ff, alpha: 0.8 });
   }
   // Gauges.
-  const depth = -c.Position.y[e]!, speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
+  const depth = -c.Position.y[e]!,
+    speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
   const floor = seabedHeight(handles.seabed, cx);
   gauge.text = [
     `depth    ${depth.toFixed(1)} m   (seabed ${(-floor).toFixed(0)} m)`,
@@ -164,13 +225,17 @@ function draw(): void {
   gauge.position.set(W - 430, 10);
 }
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'beacons', min: 1, max: 20, step: 1, onChange: () => shell.reset() },
-  { type: 'slider', key: 'waveHeight', label: 'wave height (m)', min: 0, max: 3, step: 0.1 },
-  { type: 'slider', key: 'pixelsPerMeter', label: 'zoom (px/m)', min: 2, max: 20, step: 0.5 },
-  { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: 'Submarine' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'beacons', min: 1, max: 20, step: 1, onChange: () => shell.reset() },
+    { type: 'slider', key: 'waveHeight', label: 'wave height (m)', min: 0, max: 3, step: 0.1 },
+    { type: 'slider', key: 'pixelsPerMeter', label: 'zoom (px/m)', min: 2, max: 20, step: 0.5 },
+    { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: 'Submarine' },
+);
 
 shell.expose({
   params,

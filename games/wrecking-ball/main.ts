@@ -10,17 +10,36 @@
  * there; drag the ball to pull it; right-drag orbits, wheel zooms.
  * URL: ?level=N, ?seed=S, ?debug.
  */
-import {
-  BoxGeometry, BufferAttribute, BufferGeometry, Line, LineBasicMaterial, Mesh, MeshBasicMaterial, MeshStandardMaterial, Plane, Raycaster, RingGeometry,
-  Vector2, Vector3,
-} from 'three';
-import { createPhysicsWorld, isAlive, step as physicsStep, type PhysicsWorld } from '@bitphysics/physics';
+
+import { createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
-import { startThreeGame, ORBIT_CONTROLS_RIGHT } from '../shared/three';
-import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
 import {
-  CLEAR_FRACTION, JIB_HEIGHT, RADIUS_RANGE, buildWreckingBall, fallenCount, hookPosition, scorePieces, wreckingBallWorldOptions,
+  BoxGeometry,
+  BufferAttribute,
+  BufferGeometry,
+  Line,
+  LineBasicMaterial,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  Plane,
+  Raycaster,
+  RingGeometry,
+  Vector2,
+  Vector3,
+} from 'three';
+import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
+import {
+  buildWreckingBall,
+  CLEAR_FRACTION,
+  fallenCount,
+  hookPosition,
+  JIB_HEIGHT,
+  RADIUS_RANGE,
+  scorePieces,
   type WreckingBallHandles,
+  wreckingBallWorldOptions,
 } from './scene';
 
 const params = {
@@ -43,7 +62,16 @@ let stepMs = 0;
 let worstMs = 0;
 let worstAge = 0;
 
-const COLORS = { tower: 0xd1495b, wall: 0xc8763c, planks: 0xe0b872, fallen: 0x59606c, ball: 0xb8c2d0, link: 0x9aa3ad, mast: 0xf2b705, hook: 0xf2b705 };
+const COLORS = {
+  tower: 0xd1495b,
+  wall: 0xc8763c,
+  planks: 0xe0b872,
+  fallen: 0x59606c,
+  ball: 0xb8c2d0,
+  link: 0x9aa3ad,
+  mast: 0xf2b705,
+  hook: 0xf2b705,
+};
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(wreckingBallWorldOptions());
@@ -59,7 +87,10 @@ function gameStep(world: PhysicsWorld): void {
   physicsStep(world);
   const ms = performance.now() - t0;
   stepMs = stepMs === 0 ? ms : stepMs + (ms - stepMs) / 30;
-  if (ms > worstMs || ++worstAge > 60) { worstMs = ms; worstAge = 0; }
+  if (ms > worstMs || ++worstAge > 60) {
+    worstMs = ms;
+    worstAge = 0;
+  }
   const gained = scorePieces(world, handles.pieces);
   if (gained > 0) {
     levelScore += gained;
@@ -87,12 +118,21 @@ const game = await startThreeGame({
     ...ORBIT_CONTROLS_RIGHT,
   ],
   keys: [
-    { key: 'l', label: 'next level', action: () => { if (cleared) nextLevel(); } },
+    {
+      key: 'l',
+      label: 'next level',
+      action: () => {
+        if (cleared) nextLevel();
+      },
+    },
     { key: 'g', label: 'debug', action: () => setDebug(!params.debug) },
   ],
   app: { controls: { leftButton: 'none', minDistance: 4, maxDistance: 60, target: [0, 2, 0] }, cameraPosition: [16, 12, 18] },
   renderer: {
-    boundary: 'none', planeSize: 50, debug: params.debug ? debugOptions() : false, initialInstances: 128,
+    boundary: 'none',
+    planeSize: 50,
+    debug: params.debug ? debugOptions() : false,
+    initialInstances: 128,
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
   view: { min: [-9, 0, -9], max: [9, 5, 9] },
@@ -122,7 +162,10 @@ function dress(): void {
 }
 const hookGeometry = new BoxGeometry(1, 1, 1);
 dress();
-shell.onWorldChange(() => { drag.release(); dress(); });
+shell.onWorldChange(() => {
+  drag.release();
+  dress();
+});
 
 /** Next level: bank the score and build the next one. */
 function nextLevel(): void {
@@ -225,15 +268,35 @@ canvas.addEventListener('pointercancel', up);
 
 // ---- Panel and status line ---------------------------------------------------------------------
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: 20, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'seed', label: 'seed (rebuilds)', min: 1, max: 999, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'slider', key: 'ballWeight', label: 'ball weight (× 5.4 t, rebuilds)', min: 0.1, max: 3, step: 0.1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'checkbox', key: 'debug', label: 'debug layer (G)', onChange: (v) => setDebug(v === true) },
-  { type: 'checkbox', key: 'shadows', onChange: (v) => { renderer.setShadows(v === true); if (renderer.lights) renderer.lights.sun.castShadow = v === true; } },
-  { type: 'button', key: 'nextLevel', label: 'next level (L)' },
-  { type: 'button', key: 'reset', label: 'reset level (R)' },
-], { title: 'Wrecking ball' });
+const panel = createPanel(
+  params,
+  [
+    { type: 'slider', key: 'level', label: 'level (rebuilds)', min: 1, max: 20, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'slider', key: 'seed', label: 'seed (rebuilds)', min: 1, max: 999, step: 1, onRelease: true, onChange: () => shell.reset() },
+    {
+      type: 'slider',
+      key: 'ballWeight',
+      label: 'ball weight (× 5.4 t, rebuilds)',
+      min: 0.1,
+      max: 3,
+      step: 0.1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'checkbox', key: 'debug', label: 'debug layer (G)', onChange: (v) => setDebug(v === true) },
+    {
+      type: 'checkbox',
+      key: 'shadows',
+      onChange: (v) => {
+        renderer.setShadows(v === true);
+        if (renderer.lights) renderer.lights.sun.castShadow = v === true;
+      },
+    },
+    { type: 'button', key: 'nextLevel', label: 'next level (L)' },
+    { type: 'button', key: 'reset', label: 'reset level (R)' },
+  ],
+  { title: 'Wrecking ball' },
+);
 
 const status = document.createElement('div');
 status.className = 'bp-hud';
@@ -251,19 +314,25 @@ function frame(): void {
   updateControls();
   const c = handles.crane;
   // Jib: along the slew direction through the mast top, reaching RADIUS_RANGE[1] + 2 out and 2 back.
-  const ca = Math.cos(c.angle), sa = Math.sin(c.angle);
+  const ca = Math.cos(c.angle),
+    sa = Math.sin(c.angle);
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
-  cablePositions[0] = hp[0]!; cablePositions[1] = JIB_HEIGHT; cablePositions[2] = hp[2]!;
-  cablePositions[3] = hp[0]!; cablePositions[4] = hp[1]! + 0.2; cablePositions[5] = hp[2]!;
+  cablePositions[0] = hp[0]!;
+  cablePositions[1] = JIB_HEIGHT;
+  cablePositions[2] = hp[2]!;
+  cablePositions[3] = hp[0]!;
+  cablePositions[4] = hp[1]! + 0.2;
+  cablePositions[5] = hp[2]!;
   cableGeometry.attributes.position!.needsUpdate = true;
   const goal = handles.controls.goal;
   goalMarker.visible = goal !== null;
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   if (frames++ % 6 === 0) {
-    const n = handles.pieces.length, f = fallenCount(handles.pieces);
+    const n = handles.pieces.length,
+      f = fallenCount(handles.pieces);
     status.textContent = cleared
       ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · press L for level ${handles.level + 1}`
       : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})`;

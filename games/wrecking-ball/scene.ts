@@ -14,7 +14,14 @@
  * stood above the ground. A level is cleared when CLEAR_FRACTION of its pieces have fallen.
  */
 import {
-  addBallJoint3D, addBody, addDistanceJoint3D, addPlane, addShape3D, addSystem, type PhysicsWorld, type PhysicsWorldOptions,
+  addBallJoint3D,
+  addBody,
+  addDistanceJoint3D,
+  addPlane,
+  addShape3D,
+  addSystem,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
 } from '@bitphysics/physics';
 
 /** Height of the jib, m. */
@@ -123,7 +130,7 @@ export function wreckingBallWorldOptions(substeps = 4): PhysicsWorldOptions {
 
 /** A small seeded generator (mulberry32): numbers in [0, 1). */
 export function seededRandom(seed: number): () => number {
-  let a = (seed >>> 0) || 0x9e3779b9;
+  let a = seed >>> 0 || 0x9e3779b9;
   return () => {
     a = (a + 0x6d2b79f5) >>> 0;
     let t = a;
@@ -138,7 +145,16 @@ export function hookPosition(c: CraneState): [number, number, number] {
   return [c.radius * Math.cos(c.angle), c.height, -c.radius * Math.sin(c.angle)];
 }
 
-function addPiece(world: PhysicsWorld, pieces: Piece[], kind: Piece['kind'], x: number, y: number, z: number, half: [number, number, number], yaw: number): void {
+function addPiece(
+  world: PhysicsWorld,
+  pieces: Piece[],
+  kind: Piece['kind'],
+  x: number,
+  y: number,
+  z: number,
+  half: [number, number, number],
+  yaw: number,
+): void {
   const body = addBody(world, { position: [x, y, z], orientation: [0, Math.sin(yaw / 2), 0, Math.cos(yaw / 2)] });
   addShape3D(world, body, { type: 'box', halfExtents: half, density: PIECE_DENSITY, friction: 0.6, restitution: 0.05 });
   let upAxis = 0;
@@ -154,9 +170,13 @@ function tower(world: PhysicsWorld, pieces: Piece[], x: number, z: number, n: nu
 
 /** A wall of bricks (1.2 x 0.6 x 0.5 m), `rows` high and `cols` long, running along the direction yaw, in stretcher bond (odd rows shifted half a brick, with half bricks at their ends). */
 function wall(world: PhysicsWorld, pieces: Piece[], x: number, z: number, rows: number, cols: number, yaw: number): void {
-  const ux = Math.cos(yaw), uz = -Math.sin(yaw);
-  const L = 1.2, H = 0.6, T = 0.25; // brick length, height, half thickness
-  const put = (s: number, y: number, half: number): void => addPiece(world, pieces, 'wall', x + ux * s * L, y, z + uz * s * L, [half, H / 2, T], yaw);
+  const ux = Math.cos(yaw),
+    uz = -Math.sin(yaw);
+  const L = 1.2,
+    H = 0.6,
+    T = 0.25; // brick length, height, half thickness
+  const put = (s: number, y: number, half: number): void =>
+    addPiece(world, pieces, 'wall', x + ux * s * L, y, z + uz * s * L, [half, H / 2, T], yaw);
   for (let r = 0; r < rows; r++) {
     const y = H / 2 + r * H;
     if (r % 2 === 0) {
@@ -173,7 +193,8 @@ function wall(world: PhysicsWorld, pieces: Piece[], x: number, z: number, rows: 
 function planks(world: PhysicsWorld, pieces: Piece[], x: number, z: number, layers: number, yaw: number): void {
   for (let l = 0; l < layers; l++) {
     const a = yaw + (l % 2 === 0 ? 0 : Math.PI / 2);
-    const ux = -Math.sin(a), uz = -Math.cos(a); // across the planks
+    const ux = -Math.sin(a),
+      uz = -Math.cos(a); // across the planks
     for (const s of [-0.9, 0.9]) addPiece(world, pieces, 'planks', x + ux * s, 0.12 + l * 0.24, z + uz * s, [1.2, 0.12, 0.18], a);
   }
 }
@@ -185,7 +206,9 @@ function planks(world: PhysicsWorld, pieces: Piece[], x: number, z: number, laye
  * @throws RangeError on a level that is not an integer >= 1, a non-integer seed or a ballWeight <= 0.
  */
 export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOptions = {}): WreckingBallHandles {
-  const level = options.level ?? 1, seed = options.seed ?? 1, weight = options.ballWeight ?? 1;
+  const level = options.level ?? 1,
+    seed = options.seed ?? 1,
+    weight = options.ballWeight ?? 1;
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`buildWreckingBall: level must be an integer >= 1, got ${level}`);
   if (!Number.isInteger(seed)) throw new RangeError(`buildWreckingBall: seed must be an integer, got ${seed}`);
   if (!(weight > 0 && Number.isFinite(weight))) throw new RangeError(`buildWreckingBall: ballWeight must be > 0, got ${weight}`);
@@ -200,21 +223,24 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
     radius: Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], at.radius ?? 4)),
     height: Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], at.height ?? 7.5)),
   };
-  for (const v of [crane.angle, crane.radius, crane.height]) if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
+  for (const v of [crane.angle, crane.radius, crane.height])
+    if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
   const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
   const links: number[] = [];
   const pitch = 2 * (LINK_HALF + LINK_RADIUS);
-  let prev = trolley, top = hy;
+  let prev = trolley,
+    top = hy;
   for (let i = 0; i < CHAIN_LINKS; i++) {
     const cy = top - pitch / 2;
     const link = addBody(world, { position: [hx, cy, hz] });
     addShape3D(world, link, { type: 'capsule', radius: LINK_RADIUS, halfHeight: LINK_HALF, density: 7800 });
     addBallJoint3D(world, { a: prev, b: link, anchor: [hx, top, hz] });
     links.push(link);
-    prev = link; top -= pitch;
+    prev = link;
+    top -= pitch;
   }
   const ball = addBody(world, { position: [hx, top - BALL_RADIUS, hz] });
   addShape3D(world, ball, { type: 'sphere', radius: BALL_RADIUS, density: BALL_DENSITY * weight, friction: 0.4, restitution: 0.1 });
@@ -228,7 +254,13 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   const layout = ((level - 1) % LEVELS) + 1;
   const extra = Math.floor((level - 1) / LEVELS);
   const kinds: Array<'tower' | 'wall' | 'planks'> = (
-    [['tower', 'wall', 'planks'], ['tower', 'planks', 'wall', 'tower'], ['wall', 'tower', 'tower', 'planks'], ['tower', 'wall', 'planks', 'wall', 'tower'], ['tower', 'tower', 'wall', 'planks', 'wall']] as const
+    [
+      ['tower', 'wall', 'planks'],
+      ['tower', 'planks', 'wall', 'tower'],
+      ['wall', 'tower', 'tower', 'planks'],
+      ['tower', 'wall', 'planks', 'wall', 'tower'],
+      ['tower', 'tower', 'wall', 'planks', 'wall'],
+    ] as const
   )[layout - 1]!.slice();
   for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
   const spread = (2 * Math.PI) / Math.max(3, kinds.length);
@@ -236,7 +268,8 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   kinds.forEach((kind, i) => {
     const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
     const r = 5.5 + rng() * 3.5;
-    const x = r * Math.cos(a), z = -r * Math.sin(a);
+    const x = r * Math.cos(a),
+      z = -r * Math.sin(a);
     const facing = a + Math.PI / 2; // walls across the ball's swing about the mast
     if (kind === 'tower') tower(world, pieces, x, z, 4 + Math.floor(rng() * (2 + layout)), 0.7, rng() * Math.PI);
     else if (kind === 'wall') wall(world, pieces, x, z, 3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2), facing);
@@ -259,11 +292,15 @@ function wrap(a: number): number {
  */
 export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => void {
   return (world) => {
-    const c = h.crane, k = h.controls, dt = world.dt / world.substeps;
-    let slew = k.slew, run = k.trolley;
+    const c = h.crane,
+      k = h.controls,
+      dt = world.dt / world.substeps;
+    let slew = k.slew,
+      run = k.trolley;
     if (k.goal !== null) {
       const [gx, gz] = k.goal;
-      const want = Math.atan2(-gz, gx), d = wrap(want - c.angle);
+      const want = Math.atan2(-gz, gx),
+        d = wrap(want - c.angle);
       const wantR = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(gx, gz)));
       slew = Math.max(-1, Math.min(1, d / (SLEW_RATE * 0.3)));
       run = Math.max(-1, Math.min(1, (wantR - c.radius) / (TROLLEY_SPEED * 0.3)));
@@ -274,10 +311,16 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
     c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
     c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
     const after = hookPosition(c);
-    const V = world.components.Velocity, P = world.components.Position, e = h.trolley;
+    const V = world.components.Velocity,
+      P = world.components.Position,
+      e = h.trolley;
     // Put the trolley exactly where the crane was, and give it the velocity that takes it to the new state.
-    P.x[e] = before[0]; P.y[e] = before[1]; P.z[e] = before[2];
-    V.x[e] = (after[0] - before[0]) / dt; V.y[e] = (after[1] - before[1]) / dt; V.z[e] = (after[2] - before[2]) / dt;
+    P.x[e] = before[0];
+    P.y[e] = before[1];
+    P.z[e] = before[2];
+    V.x[e] = (after[0] - before[0]) / dt;
+    V.y[e] = (after[1] - before[1]) / dt;
+    V.z[e] = (after[2] - before[2]) / dt;
   };
 }
 
@@ -303,7 +346,10 @@ export function scorePieces(world: PhysicsWorld, pieces: Piece[]): number {
 /** The y component of body axis `axis` (0 x, 1 y, 2 z) in the world: row y of the rotation matrix of its orientation. */
 export function upComponent(world: PhysicsWorld, e: number, axis: number): number {
   const O = world.components.Orientation;
-  const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+  const x = O.x[e]!,
+    y = O.y[e]!,
+    z = O.z[e]!,
+    w = O.w[e]!;
   return axis === 0 ? 2 * (x * y + w * z) : axis === 1 ? 1 - 2 * (x * x + z * z) : 2 * (y * z - w * x);
 }
 

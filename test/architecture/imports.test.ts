@@ -2,10 +2,11 @@
 // the collision, joint and cloth states, stage names) at the bottom, systems above it, and the
 // assembly (create-world.ts, pipeline/stages.ts, index.ts) on top (docs/architecture.md). A cycle
 // makes every file of it depend on every other, which is what this test refuses.
-import { describe, expect, it } from 'vitest';
+
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { dirname, join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 
@@ -39,19 +40,32 @@ function importGraph(dir: string): Map<string, string[]> {
 /** Strongly connected components with more than one file, or a file importing itself (Tarjan). */
 function cycles(graph: Map<string, string[]>): string[][] {
   let counter = 0;
-  const index = new Map<string, number>(), low = new Map<string, number>(), stack: string[] = [], onStack = new Set<string>();
+  const index = new Map<string, number>(),
+    low = new Map<string, number>(),
+    stack: string[] = [],
+    onStack = new Set<string>();
   const found: string[][] = [];
   const visit = (v: string): void => {
-    index.set(v, counter); low.set(v, counter); counter++; stack.push(v); onStack.add(v);
+    index.set(v, counter);
+    low.set(v, counter);
+    counter++;
+    stack.push(v);
+    onStack.add(v);
     for (const w of graph.get(v) ?? []) {
       if (!graph.has(w)) continue;
-      if (!index.has(w)) { visit(w); low.set(v, Math.min(low.get(v)!, low.get(w)!)); }
-      else if (onStack.has(w)) low.set(v, Math.min(low.get(v)!, index.get(w)!));
+      if (!index.has(w)) {
+        visit(w);
+        low.set(v, Math.min(low.get(v)!, low.get(w)!));
+      } else if (onStack.has(w)) low.set(v, Math.min(low.get(v)!, index.get(w)!));
     }
     if (low.get(v) === index.get(v)) {
       const component: string[] = [];
       let w: string;
-      do { w = stack.pop()!; onStack.delete(w); component.push(w); } while (w !== v);
+      do {
+        w = stack.pop()!;
+        onStack.delete(w);
+        component.push(w);
+      } while (w !== v);
       if (component.length > 1 || (graph.get(v) ?? []).includes(v)) found.push(component.map((f) => relative(root, f)).sort());
     }
   };
@@ -67,7 +81,10 @@ describe('module layering', () => {
   }
 
   it('the finder sees a cycle when there is one (a self-check on a made-up graph)', () => {
-    const graph = new Map([[join(root, 'a.ts'), [join(root, 'b.ts')]], [join(root, 'b.ts'), [join(root, 'a.ts')]]]);
+    const graph = new Map([
+      [join(root, 'a.ts'), [join(root, 'b.ts')]],
+      [join(root, 'b.ts'), [join(root, 'a.ts')]],
+    ]);
     expect(cycles(graph)).toEqual([['a.ts', 'b.ts']]);
   });
 

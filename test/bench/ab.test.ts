@@ -12,7 +12,10 @@ const root = resolve(import.meta.dirname, '..', '..');
 function ab(args: string[]): Promise<{ code: number; stdout: string; stderr: string }> {
   return new Promise((done, fail) => {
     execFile(process.execPath, [join(root, 'scripts', 'ab.mjs'), ...args], { cwd: root, timeout: 120_000 }, (error, stdout, stderr) => {
-      if (error && typeof error.code !== 'number') { fail(error); return; }
+      if (error && typeof error.code !== 'number') {
+        fail(error);
+        return;
+      }
       done({ code: error ? (error.code as number) : 0, stdout, stderr });
     });
   });
@@ -33,7 +36,11 @@ test('HEAD against the working tree: both worlds step the window, the same state
   // With the physics package as committed (a clean clone, as in CI) the two worlds are the same code
   // with the same seed, so their states must be equal to the bit.
   let unchanged = true;
-  try { execFileSync('git', ['-C', root, 'diff', '--quiet', 'HEAD', '--', 'packages/physics']); } catch { unchanged = false; }
+  try {
+    execFileSync('git', ['-C', root, 'diff', '--quiet', 'HEAD', '--', 'packages/physics']);
+  } catch {
+    unchanged = false;
+  }
   if (unchanged) expect(hashes![1]).toBe(hashes![2]);
   expect(worktrees()).toBe(before);
 }, 120_000);

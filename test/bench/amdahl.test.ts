@@ -5,7 +5,7 @@ import { amdahlSpeedup, serialFraction } from '../../packages/bench/src/amdahl.j
 // speedup made by Amdahl's law from a fraction e gives e back (to rounding, 1e-12), and the projection
 // from it reproduces the law at any core count.
 
-test('serialFraction inverts Amdahl\'s law; the projection follows 1 / (e + (1 - e) / N)', () => {
+test("serialFraction inverts Amdahl's law; the projection follows 1 / (e + (1 - e) / N)", () => {
   for (const e of [0, 0.05, 0.2, 0.5, 1]) {
     for (const p of [2, 4, 16]) {
       expect(serialFraction(amdahlSpeedup(e, p), p)).toBeCloseTo(e, 12);

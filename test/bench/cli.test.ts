@@ -30,7 +30,10 @@ function runCli(args: string[]): Promise<CliRun> {
 
 /** Parses every stdout line as JSON (fails the test if any line is not). */
 function jsonLines(stdout: string): Array<Record<string, unknown>> {
-  return stdout.trim().split('\n').map((line) => JSON.parse(line) as Record<string, unknown>);
+  return stdout
+    .trim()
+    .split('\n')
+    .map((line) => JSON.parse(line) as Record<string, unknown>);
 }
 
 /** Checks the fields every engine line carries. */
@@ -105,7 +108,20 @@ describe('bench CLI', () => {
 
   it('--threads 2 runs bitphysics-threads beside bitphysics: threads, speedup, serial fraction, Amdahl projection and the same state hash', async () => {
     // 40,000 particles: above 2 x MIN_PARALLEL_PER_THREAD, so the workers take their half.
-    const run = await runCli(['--scene', 'particles', '--count', '40000', '--steps', '5', '--warmup', '1', '--threads', '2', '--hash', '--json']);
+    const run = await runCli([
+      '--scene',
+      'particles',
+      '--count',
+      '40000',
+      '--steps',
+      '5',
+      '--warmup',
+      '1',
+      '--threads',
+      '2',
+      '--hash',
+      '--json',
+    ]);
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     expect(lines.map((l) => l.engine)).toEqual(['bitphysics', 'bitphysics-threads']);
@@ -115,7 +131,8 @@ describe('bench CLI', () => {
     expect(lines[1]!.speedup).toBeCloseTo(ms(lines[0]!) / ms(lines[1]!), 2);
     // Karp-Flatt serial fraction of that speedup on 2 threads, (1/S - 1/2) / (1/2) in [0, 1], and
     // Amdahl's projection from it (rounded to 3 digits in the line).
-    const S = lines[1]!.speedup as number, f = lines[1]!.serialFraction as number;
+    const S = lines[1]!.speedup as number,
+      f = lines[1]!.serialFraction as number;
     expect(f).toBeCloseTo(Math.min(1, Math.max(0, 2 / S - 1)), 2);
     expect(lines[1]!.amdahl8).toBeCloseTo(1 / (f + (1 - f) / 8), 1);
     expect(lines[1]!.amdahl16).toBeCloseTo(1 / (f + (1 - f) / 16), 1);
@@ -150,10 +167,25 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
    * contact compression, which holds some of the energy as overlap rather than motion).
    */
   it('balls-in-box takes --restitution, echoes it and reports energyDrift for every engine', async () => {
-    const run = await runCli(['--scene', 'balls-in-box', '--count', '200', '--steps', '20', '--warmup', '0', '--restitution', '1', '--vs', 'rapier2d', '--json']);
+    const run = await runCli([
+      '--scene',
+      'balls-in-box',
+      '--count',
+      '200',
+      '--steps',
+      '20',
+      '--warmup',
+      '0',
+      '--restitution',
+      '1',
+      '--vs',
+      'rapier2d',
+      '--json',
+    ]);
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
-    const ours = lines.find((l) => l.engine === 'bitphysics')!, rapier = lines.find((l) => l.engine === 'rapier2d')!;
+    const ours = lines.find((l) => l.engine === 'bitphysics')!,
+      rapier = lines.find((l) => l.engine === 'rapier2d')!;
     expect(ours.params).toEqual({ restitution: 1 });
     expect(ours.restitution).toBe(1);
     expect(rapier.restitution).toBe(1);
@@ -184,7 +216,13 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     expect(run.code).toBe(0);
     const lines = jsonLines(run.stdout);
     const expected: Record<string, number> = {
-      'explicit-euler': 1, 'semi-implicit-euler': 1, 'implicit-euler': 1, rk2: 2, rk4: 4, 'position-verlet': 2, 'velocity-verlet': 2,
+      'explicit-euler': 1,
+      'semi-implicit-euler': 1,
+      'implicit-euler': 1,
+      rk2: 2,
+      rk4: 4,
+      'position-verlet': 2,
+      'velocity-verlet': 2,
     };
     expect(lines.map((l) => l.integrator)).toEqual(Object.keys(expected));
     for (const line of lines) {
@@ -226,7 +264,20 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
   });
 
   it('spheres-in-box --vs rapier3d gives a ratio line, on the median and on the mean (whole timed run)', async () => {
-    const run = await runCli(['--scene', 'spheres-in-box', '--count', '100', '--steps', '5', '--warmup', '1', '--vs', 'rapier3d', '--json', '--times']);
+    const run = await runCli([
+      '--scene',
+      'spheres-in-box',
+      '--count',
+      '100',
+      '--steps',
+      '5',
+      '--warmup',
+      '1',
+      '--vs',
+      'rapier3d',
+      '--json',
+      '--times',
+    ]);
     expect(run.code).toBe(0);
     const [ours, peer] = jsonLines(run.stdout);
     expectEngineLine(ours!, 'bitphysics', 'spheres-in-box', 100, 5);
@@ -236,7 +287,7 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     // The mean is the total of the timed steps over their count (timesMs rounded to 4 digits: 1e-3 relative).
     const ms = (l: Record<string, unknown>) => l.msPerStep as Record<string, number>;
     const total = (l: Record<string, unknown>) => (l.timesMs as number[]).reduce((x, y) => x + y, 0);
-    for (const line of [ours!, peer!]) expect(Math.abs(ms(line).mean! * 5 / total(line) - 1)).toBeLessThan(1e-3);
+    for (const line of [ours!, peer!]) expect(Math.abs((ms(line).mean! * 5) / total(line) - 1)).toBeLessThan(1e-3);
     expect(ours!.ratioMean).toBeUndefined();
     expect(Math.abs((peer!.ratioMean as number) / (ms(ours!).mean! / ms(peer!).mean!) - 1)).toBeLessThan(1e-3);
     // CPU time: positive, and the ratio is of the two lines' figures (each rounded to 6 digits).
@@ -285,10 +336,12 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
     const [apart, together] = await Promise.all([runCli(args), runCli([...args, '--same-isolate'])]);
     expect(apart.code).toBe(0);
     expect(together.code).toBe(0);
-    const a = jsonLines(apart.stdout), b = jsonLines(together.stdout);
+    const a = jsonLines(apart.stdout),
+      b = jsonLines(together.stdout);
     expect(a.map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d']);
     for (let i = 0; i < 2; i++) {
-      for (const field of ['contacts', 'maxOverlapPercent', 'overlappingPairs', 'maxWallPenetrationPercent', 'stateHash']) expect(a[i]![field]).toEqual(b[i]![field]);
+      for (const field of ['contacts', 'maxOverlapPercent', 'overlappingPairs', 'maxWallPenetrationPercent', 'stateHash'])
+        expect(a[i]![field]).toEqual(b[i]![field]);
       expect(a[i]!.setupMs as number).toBeGreaterThan(0);
       expect(typeof a[i]!.engineMemoryMB).toBe('number');
     }

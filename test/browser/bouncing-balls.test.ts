@@ -6,7 +6,7 @@
  * same seeded scene.
  */
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 /** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
 interface BallsGame {
@@ -26,7 +26,13 @@ const SEGMENTS = 3;
 function balls(g: GamePage) {
   return g.page.evaluate(() => {
     const game = window.game as unknown as BallsGame;
-    return { ids: game.ballIds(), positions: game.positions(), shown: game.renderer.stats.balls, steps: game.world.steps, paused: game.paused };
+    return {
+      ids: game.ballIds(),
+      positions: game.positions(),
+      shown: game.renderer.stats.balls,
+      steps: game.world.steps,
+      paused: game.paused,
+    };
   });
 }
 
@@ -59,10 +65,10 @@ describe('bouncing balls', () => {
     const b = await balls(g);
     expect(b.ids.length).toBe(COUNT);
     await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 8, null);
-    const legend = await g.page.locator('.bp-legend').innerText();
+    const legend = await g.page.locator('.bp-legend').textContent();
     for (const key of ['P', 'N', 'R', 'Click', 'Drag']) expect(legend).toContain(key);
     await g.waitFor(() => /\d+ fps/.test(document.querySelector('[data-hud="fps"]')?.textContent ?? ''), null);
-    expect(await g.page.locator('[data-hud="bodies"]').innerText()).toBe(`${COUNT} bodies`);
+    expect(await g.page.locator('[data-hud="bodies"]').textContent()).toBe(`${COUNT} bodies`);
     expect(g.errors).toEqual([]);
   });
 
@@ -70,7 +76,10 @@ describe('bouncing balls', () => {
     const g = await open();
     const before = await g.stats();
     await g.clickCanvas(0.5, 0.45);
-    const after = await g.waitFor((n) => { const s = window.game!.stats(); return s.entities === n + 1 ? s : null; }, before.entities);
+    const after = await g.waitFor((n) => {
+      const s = window.game!.stats();
+      return s.entities === n + 1 ? s : null;
+    }, before.entities);
     expect(after.entities).toBe(before.entities + 1);
     await g.frames(2);
     const b = await balls(g);
@@ -182,7 +191,9 @@ describe('bouncing balls', () => {
     await field('restitution').fill('0.25');
     await field('restitution').press('Enter');
     const r = await g.page.evaluate(() => {
-      const game = window.game as unknown as BallsGame & { world: { gravity: Float64Array; components: Record<string, Record<string, Float64Array>> } };
+      const game = window.game as unknown as BallsGame & {
+        world: { gravity: Float64Array; components: Record<string, Record<string, Float64Array>> };
+      };
       const e = game.ballIds()[0]!;
       const c = game.world.components;
       return { gy: game.world.gravity[1], kq: c.QuadraticDrag!.k![e], kl: c.LinearDrag!.k![e], e: c.Material!.restitution![e] };
@@ -195,7 +206,10 @@ describe('bouncing balls', () => {
     await field('balls (rebuilds)').press('Enter');
     await g.waitFor(() => window.game!.stats().entities === 30 + 3, null);
     // The rebuilt world keeps the panel's settings.
-    expect(await g.page.evaluate(() => (window.game as unknown as { world: { gravity: Float64Array } }).world.gravity[1])).toBeCloseTo(-3.5, 12);
+    expect(await g.page.evaluate(() => (window.game as unknown as { world: { gravity: Float64Array } }).world.gravity[1])).toBeCloseTo(
+      -3.5,
+      12,
+    );
     await g.waitFor(() => (window.game as unknown as BallsGame).renderer.stats.balls === 30, null);
     expect(g.errors).toEqual([]);
     // Back to the test count for the other tests.
@@ -216,11 +230,16 @@ describe('bouncing balls', () => {
       const e = game.ballIds()[0]! % 2 ** 25;
       return { x: game.world.components.Position.x[e]!, y: game.world.components.Position.y[e]! };
     });
-    const screen = (x: number, y: number) => g.page.evaluate(([x, y]) => {
-      const cam = (window.game as unknown as { renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } } }).renderer.camera;
-      const box = document.querySelector('canvas')!.getBoundingClientRect();
-      return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
-    }, [x, y] as const);
+    const screen = (x: number, y: number) =>
+      g.page.evaluate(
+        ([x, y]) => {
+          const cam = (window.game as unknown as { renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } } })
+            .renderer.camera;
+          const box = document.querySelector('canvas')!.getBoundingClientRect();
+          return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+        },
+        [x, y] as const,
+      );
     const from = await screen(start.x, start.y);
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
@@ -232,12 +251,16 @@ describe('bouncing balls', () => {
     const target = { x: start.x < 8 ? start.x + 2 : start.x - 2, y: 8 };
     const to = await screen(target.x, target.y);
     await g.page.mouse.move(to.x, to.y, { steps: 6 });
-    const moved = await g.waitFor((t) => {
-      const game = window.game as unknown as BallsGame & { world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
-      const e = game.ballIds()[0]! % 2 ** 25;
-      const r = { x: game.world.components.Position.x[e]!, y: game.world.components.Position.y[e]!, count: game.ballIds().length };
-      return Math.hypot(r.x - t.x, r.y - t.y) < 0.6 ? r : null;
-    }, target, 20_000);
+    const moved = await g.waitFor(
+      (t) => {
+        const game = window.game as unknown as BallsGame & { world: { components: { Position: { x: Float64Array; y: Float64Array } } } };
+        const e = game.ballIds()[0]! % 2 ** 25;
+        const r = { x: game.world.components.Position.x[e]!, y: game.world.components.Position.y[e]!, count: game.ballIds().length };
+        return Math.hypot(r.x - t.x, r.y - t.y) < 0.6 ? r : null;
+      },
+      target,
+      20_000,
+    );
     await g.page.mouse.up();
     const after = await g.page.evaluate(() => (window.game as unknown as { drag: { joint: number } }).drag.joint);
     expect(Math.hypot(moved.x - target.x, moved.y - target.y)).toBeLessThan(0.6);

@@ -3,9 +3,12 @@
  * cup and release throws a projectile that flies; a throw at the castle raises the score; P pauses.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
-interface Cam { toScreenX(x: number): number; toScreenY(y: number): number }
+interface Cam {
+  toScreenX(x: number): number;
+  toScreenY(y: number): number;
+}
 interface CatapultGame {
   paused: boolean;
   reset(): void;
@@ -21,26 +24,36 @@ interface CatapultGame {
 
 let h: Harness;
 let g: GamePage;
-beforeAll(async () => { h = await Harness.start(); g = await h.openGame('catapult', { query: { level: 1 } }); }, START_TIMEOUT_MS);
-afterAll(async () => { await h?.close(); });
+beforeAll(async () => {
+  h = await Harness.start();
+  g = await h.openGame('catapult', { query: { level: 1 } });
+}, START_TIMEOUT_MS);
+afterAll(async () => {
+  await h?.close();
+});
 
-const screen = (x: number, y: number) => g.page.evaluate(([x, y]) => {
-  const cam = (window.game as unknown as CatapultGame).renderer.camera;
-  const box = document.querySelector('canvas')!.getBoundingClientRect();
-  return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
-}, [x, y] as const);
+const screen = (x: number, y: number) =>
+  g.page.evaluate(
+    ([x, y]) => {
+      const cam = (window.game as unknown as CatapultGame).renderer.camera;
+      const box = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+    },
+    [x, y] as const,
+  );
 
 describe('catapult', () => {
   it('draws, shows its controls and panel', async () => {
     expect(await g.canvasColors()).toBeGreaterThan(4);
-    const legend = await g.page.locator('.bp-legend').innerText();
+    const legend = await g.page.locator('.bp-legend').textContent();
     for (const key of ['P', 'R', 'L', 'Drag']) expect(legend).toContain(key);
     expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
     expect(g.errors).toEqual([]);
   });
 
   it('a drag back from the cup and release throws a projectile that flies', async () => {
-    const from = await screen(0, 1.5), to = await screen(-2, 0.2);
+    const from = await screen(0, 1.5),
+      to = await screen(-2, 0.2);
     const before = await g.page.evaluate(() => (window.game as unknown as CatapultGame).shotsLeft());
     await g.page.mouse.move(from.x, from.y);
     await g.page.mouse.down();
@@ -61,10 +74,15 @@ describe('catapult', () => {
   it('a throw at the castle raises the score', async () => {
     const t = await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
-      w.paused = true; w.reset(); w.advance(30);
+      w.paused = true;
+      w.reset();
+      w.advance(30);
       const before = w.tally().score;
       // Aim the low angle at the castle's front: sin(2 theta) = g R / v^2 at v = 24 m/s (pull 24 / 9 m).
-      const R = w.level().castleMinX + 0.5, v = 24, th = 0.5 * Math.asin((9.81 * R) / (v * v)), d = v / 9;
+      const R = w.level().castleMinX + 0.5,
+        v = 24,
+        th = 0.5 * Math.asin((9.81 * R) / (v * v)),
+        d = v / 9;
       w.fire(-d * Math.cos(th), -d * Math.sin(th));
       w.advance(300);
       return { before, after: w.tally().score };

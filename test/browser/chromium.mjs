@@ -1,11 +1,12 @@
 // Headless Chromium and the site server for browser tests and scripts (plain JS so that
 // scripts/thumbnails.mjs can import it without a TypeScript step; types in chromium.d.mts).
+
+import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { createHash } from 'node:crypto';
 
 /** Repository root. */
 export const repoRoot = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -108,15 +109,25 @@ export async function acquireSiteLock({ timeoutMs = 110_000, name = 'site' } = {
     } catch (error) {
       if (error.code !== 'EEXIST') throw error;
       let pid = NaN;
-      try { pid = Number(readFileSync(owner, 'utf8')); } catch { /* being written or removed */ }
+      try {
+        pid = Number(readFileSync(owner, 'utf8'));
+      } catch {
+        /* being written or removed */
+      }
       if (Number.isInteger(pid) && pid > 0 && !pidAlive(pid)) {
         rmSync(dir, { recursive: true, force: true });
         continue;
       }
       if (Date.now() > deadline) {
         let holder = '';
-        try { holder = readFileSync(`/proc/${pid}/cmdline`, 'utf8').split('\0').join(' ').slice(0, 200); } catch { /* not Linux, or gone */ }
-        throw new Error(`acquireSiteLock: ${dir} still held by pid ${pid}${holder ? ` (${holder})` : ''} after ${timeoutMs} ms: another browser test file or the thumbnail script is running`);
+        try {
+          holder = readFileSync(`/proc/${pid}/cmdline`, 'utf8').split('\0').join(' ').slice(0, 200);
+        } catch {
+          /* not Linux, or gone */
+        }
+        throw new Error(
+          `acquireSiteLock: ${dir} still held by pid ${pid}${holder ? ` (${holder})` : ''} after ${timeoutMs} ms: another browser test file or the thumbnail script is running`,
+        );
       }
       await new Promise((r) => setTimeout(r, 100));
     }
@@ -128,7 +139,9 @@ export async function acquireSiteLock({ timeoutMs = 110_000, name = 'site' } = {
     process.off('exit', release);
     try {
       if (readFileSync(owner, 'utf8') === String(process.pid)) rmSync(dir, { recursive: true, force: true });
-    } catch { /* already gone */ }
+    } catch {
+      /* already gone */
+    }
   };
   process.on('exit', release);
   return release;
@@ -152,7 +165,11 @@ export async function startSite({ lockTimeoutMs = 110_000 } = {}) {
     return {
       url: server.url,
       stop: async () => {
-        try { await server.stop(); } finally { release(); }
+        try {
+          await server.stop();
+        } finally {
+          release();
+        }
       },
     };
   } catch (error) {

@@ -26,9 +26,16 @@ beforeAll(async () => {
   await esbuild.build({
     entryPoints: [join(repoRoot, 'test', 'browser', 'fixtures', 'scenery.ts')],
     outfile: join(dir, 'scenery.js'),
-    bundle: true, format: 'esm', target: 'es2022', conditions: ['bitphysics-source'], logLevel: 'silent',
+    bundle: true,
+    format: 'esm',
+    target: 'es2022',
+    conditions: ['bitphysics-source'],
+    logLevel: 'silent',
   });
-  writeFileSync(join(dir, 'index.html'), '<!doctype html><html><head><meta charset="utf-8"><link rel="icon" href="data:,"></head><body style="margin:0"><script type="module" src="./scenery.js"></script></body></html>');
+  writeFileSync(
+    join(dir, 'index.html'),
+    '<!doctype html><html><head><meta charset="utf-8"><link rel="icon" href="data:,"></head><body style="margin:0"><script type="module" src="./scenery.js"></script></body></html>',
+  );
   server = await esbuild.context({ entryPoints: [], logLevel: 'silent' });
   const { port } = await server.serve({ host: '127.0.0.1', port: 0, servedir: dir });
   url = `http://127.0.0.1:${port}/`;
@@ -49,7 +56,9 @@ async function open(d: 2 | 3) {
   const context = await browser!.newContext({ viewport: { width: 640, height: 400 }, deviceScaleFactor: 1, locale: 'en-US' });
   const page = await context.newPage();
   const errors: string[] = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
   page.on('pageerror', (e) => errors.push(e.message));
   await page.goto(`${url}?d=${d}`);
   try {

@@ -10,15 +10,22 @@ function fakeFrames() {
   let pending: ((t: number) => void) | null = null;
   let now = 1000;
   return {
-    requestFrame: (cb: (t: number) => void) => { pending = cb; return 1; },
-    cancelFrame: () => { pending = null; },
+    requestFrame: (cb: (t: number) => void) => {
+      pending = cb;
+      return 1;
+    },
+    cancelFrame: () => {
+      pending = null;
+    },
     tick(ms: number) {
       now += ms;
       const cb = pending;
       pending = null;
       cb?.(now);
     },
-    get pending() { return pending !== null; },
+    get pending() {
+      return pending !== null;
+    },
   };
 }
 
@@ -28,8 +35,12 @@ function setup(dt = 0.01) {
   const alphas: number[] = [];
   const loop = createGameLoop({
     dt,
-    step: () => { steps++; },
-    render: (a) => { alphas.push(a); },
+    step: () => {
+      steps++;
+    },
+    render: (a) => {
+      alphas.push(a);
+    },
     requestFrame: frames.requestFrame,
     cancelFrame: frames.cancelFrame,
   });
@@ -40,7 +51,9 @@ describe('createGameLoop', () => {
   it('runs the whole steps that fit the real time and renders once a frame with alpha', () => {
     const { frames, loop, alphas, steps } = setup(0.01);
     let first = 0;
-    loop.afterFirstFrame(() => { first++; });
+    loop.afterFirstFrame(() => {
+      first++;
+    });
     loop.start();
     frames.tick(16); // first frame: no elapsed time yet
     expect(steps()).toBe(0);
@@ -91,7 +104,9 @@ describe('createGameLoop', () => {
     const errors: unknown[] = [];
     const loop = createGameLoop({
       dt: 0.01,
-      step: () => { throw new RangeError('boom'); },
+      step: () => {
+        throw new RangeError('boom');
+      },
       render: () => {},
       onError: (e) => errors.push(e),
       requestFrame: frames.requestFrame,
@@ -112,6 +127,8 @@ describe('createGameLoop', () => {
     expect(() => createGameLoop({ ...base, dt: 0.01, fps: 60 } as never)).toThrow(/unknown option "fps"/);
     expect(() => createGameLoop({ ...base, dt: 0.01, render: 5 } as never)).toThrow(TypeError);
     const loop = createGameLoop({ ...base, dt: 0.01 });
-    expect(() => { (loop as { paused: unknown }).paused = 'yes'; }).toThrow(TypeError);
+    expect(() => {
+      (loop as { paused: unknown }).paused = 'yes';
+    }).toThrow(TypeError);
   });
 });

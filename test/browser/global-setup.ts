@@ -18,7 +18,11 @@ export default async function setup(project: TestProject): Promise<() => Promise
     project.provide('bitphysicsSiteUrl', site.url);
     project.provide('bitphysicsBrowserWs', server.wsEndpoint());
     return async () => {
-      try { await server.close(); } finally { await site.stop(); }
+      try {
+        await server.close();
+      } finally {
+        await site.stop();
+      }
     };
   } catch (error) {
     await site.stop();

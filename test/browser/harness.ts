@@ -25,12 +25,12 @@
  * });
  */
 import type { Browser, BrowserContext, Page } from 'playwright-core';
-import type { GameStats } from '../../games/shared/contract';
 import { inject, onTestFinished } from 'vitest';
-import { acquireSiteLock, connectChromium, launchChromium, readRegistry, startSite, type RegistryEntry } from './chromium.mjs';
+import type { GameStats } from '../../games/shared/contract';
+import { acquireSiteLock, connectChromium, launchChromium, type RegistryEntry, readRegistry, startSite } from './chromium.mjs';
 import { decodePng, distinctColors } from './png';
 
-export { readRegistry, type RegistryEntry };
+export { type RegistryEntry, readRegistry };
 
 declare module 'vitest' {
   export interface ProvidedContext {
@@ -108,7 +108,11 @@ function log(line: string): void {
  */
 export async function withTimeout<T>(work: Promise<T>, ms: number, what: string, detail: () => string): Promise<T> {
   const t0 = Date.now();
-  if (LOG) work.then(() => log(`${what}: ${Date.now() - t0} ms`), () => undefined);
+  if (LOG)
+    work.then(
+      () => log(`${what}: ${Date.now() - t0} ms`),
+      () => undefined,
+    );
   let timer: ReturnType<typeof setTimeout> | undefined;
   const timeout = new Promise<never>((_, reject) => {
     timer = setTimeout(() => reject(new Error(`${what}: no answer in ${ms} ms; ${detail()}`)), ms);
@@ -191,12 +195,23 @@ export class Harness {
     const t0 = Date.now();
     const where = `opening ${path}${toQuery(options.query)}`;
     // A fixed locale: headless Chromium under LANG=C.UTF-8 reports 'en-US@posix', which Intl (and uPlot) reject.
-    const context = await withTimeout(this.browser.newContext({
-      viewport: options.viewport ?? DEFAULT_VIEWPORT, deviceScaleFactor: 1, locale: options.locale ?? 'en-US',
-      ...(options.touch ? { hasTouch: true, isMobile: true } : {}),
-    }), PAGE_TIMEOUT_MS, `${where}: a new browser context`, () => 'the browser did not answer');
-    const page = await withTimeout(context.newPage(), PAGE_TIMEOUT_MS, `${where}: a new page`, () => 'the browser did not answer')
-      .catch(async (error: unknown) => { await context.close().catch(() => undefined); throw error; });
+    const context = await withTimeout(
+      this.browser.newContext({
+        viewport: options.viewport ?? DEFAULT_VIEWPORT,
+        deviceScaleFactor: 1,
+        locale: options.locale ?? 'en-US',
+        ...(options.touch ? { hasTouch: true, isMobile: true } : {}),
+      }),
+      PAGE_TIMEOUT_MS,
+      `${where}: a new browser context`,
+      () => 'the browser did not answer',
+    );
+    const page = await withTimeout(context.newPage(), PAGE_TIMEOUT_MS, `${where}: a new page`, () => 'the browser did not answer').catch(
+      async (error: unknown) => {
+        await context.close().catch(() => undefined);
+        throw error;
+      },
+    );
     // Every playwright wait (goto, locators, waitForFunction) gives up with a message after this long.
     page.setDefaultTimeout(PAGE_TIMEOUT_MS);
     const gp = new GamePage(context, page);
@@ -207,14 +222,21 @@ export class Harness {
     // current test: onTestFinished throws) stay open until `close`.
     try {
       onTestFinished(() => gp.close());
-    } catch { /* not inside a test */ }
+    } catch {
+      /* not inside a test */
+    }
     // Only until the response arrives: the ready flag (below) is the page's own "loaded", and a page
     // parsing a large bundle on a busy machine should fail with its errors there, not in goto.
     await page.goto(this.url + path.replace(/^\//, '') + toQuery(options.query), { waitUntil: 'commit' });
     if (LOG) log(`${where}: response after ${Date.now() - t0} ms`);
-    if (options.waitReady !== false && await gp.readyOrStuck(options.readyTimeoutMs ?? 30_000, mayRetry ? STUCK_MS : Infinity) === 'stuck') {
+    if (
+      options.waitReady !== false &&
+      (await gp.readyOrStuck(options.readyTimeoutMs ?? 30_000, mayRetry ? STUCK_MS : Infinity)) === 'stuck'
+    ) {
       // See STUCK_MS: close it and open the page once more, in a new context.
-      console.warn(`[harness] ${page.url()}: not ready after ${STUCK_MS} ms and its main thread does not answer; closing it and opening it again once`);
+      console.warn(
+        `[harness] ${page.url()}: not ready after ${STUCK_MS} ms and its main thread does not answer; closing it and opening it again once`,
+      );
       await gp.close();
       this.pages.delete(gp);
       return this.openOnce(path, { ...options, readyTimeoutMs: Math.max(10_000, (options.readyTimeoutMs ?? 30_000) - (Date.now() - t0)) });
@@ -264,7 +286,9 @@ export class GamePage {
     });
     page.on('crash', () => this.errors.push('page crashed'));
     page.on('pageerror', (e) => this.errors.push(`page error: ${e.message}`));
-    page.on('response', (r) => { if (r.status() >= 400) this.errors.push(`HTTP ${r.status()}: ${r.url()}`); });
+    page.on('response', (r) => {
+      if (r.status() >= 400) this.errors.push(`HTTP ${r.status()}: ${r.url()}`);
+    });
     page.on('requestfailed', (r) => this.errors.push(`request failed: ${r.url()} (${r.failure()?.errorText ?? 'unknown'})`));
   }
 
@@ -288,13 +312,21 @@ export class GamePage {
   async readyOrStuck(timeoutMs: number, stuckMs: number): Promise<'ready' | 'stuck'> {
     const started = Date.now();
     // With BITPHYSICS_TEST_LOG=1, every 10 s without the flag: what the page is doing (over CDP, 3 s at most).
-    const watch = LOG ? setInterval(() => void this.snapshot().then((state) => log(`${this.page.url()} not ready yet: ${state}`)), 10_000) : undefined;
+    const watch = LOG
+      ? setInterval(() => void this.snapshot().then((state) => log(`${this.page.url()} not ready yet: ${state}`)), 10_000)
+      : undefined;
     // Ready, or an error box (the page stopped: no point waiting out the timeout).
-    const flag = this.page.waitForFunction(() => {
-      if (document.body?.dataset.ready === 'true') return 'ready';
-      const box = document.querySelector('[data-page-error], [data-lab="error"], .bp-error');
-      return box ? `error box: ${box.textContent ?? ''}` : false;
-    }, null, { timeout: timeoutMs, polling: 50 }).then(async (handle) => String(await handle.jsonValue()));
+    const flag = this.page
+      .waitForFunction(
+        () => {
+          if (document.body?.dataset.ready === 'true') return 'ready';
+          const box = document.querySelector('[data-page-error], [data-lab="error"], .bp-error');
+          return box ? `error box: ${box.textContent ?? ''}` : false;
+        },
+        null,
+        { timeout: timeoutMs, polling: 50 },
+      )
+      .then(async (handle) => String(await handle.jsonValue()));
     flag.catch(() => undefined); // it may settle after this wait gave up
     try {
       let checked = false;
@@ -302,11 +334,16 @@ export class GamePage {
         const left = timeoutMs - (Date.now() - started);
         const next = checked || !Number.isFinite(stuckMs) ? left : Math.min(left, stuckMs - (Date.now() - started));
         let timer: ReturnType<typeof setTimeout> | undefined;
-        const outcome = await Promise.race([flag, new Promise<null>((r) => { timer = setTimeout(() => r(null), Math.max(0, next)); })])
-          .finally(() => clearTimeout(timer));
+        const outcome = await Promise.race([
+          flag,
+          new Promise<null>((r) => {
+            timer = setTimeout(() => r(null), Math.max(0, next));
+          }),
+        ]).finally(() => clearTimeout(timer));
         if (outcome === 'ready') return 'ready';
         if (outcome !== null) throw new Error(`${this.page.url()} stopped before it was ready: ${outcome}; ${this.describe()}`);
-        if (Date.now() - started >= timeoutMs) throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}`);
+        if (Date.now() - started >= timeoutMs)
+          throw new Error(`${this.page.url()} did not become ready in ${timeoutMs} ms; ${this.describe()}`);
         checked = true;
         const state = await this.snapshot();
         if (state.startsWith('its main thread did not answer')) return 'stuck';
@@ -356,10 +393,14 @@ export class GamePage {
    * @throws Error if the page has no window.game, or (with the page's errors) if it does not answer within PAGE_TIMEOUT_MS.
    */
   stats(): Promise<GameStats> {
-    return this.evaluate(() => {
-      if (!window.game) throw new Error('window.game is missing');
-      return window.game.stats();
-    }, null, 'window.game.stats()');
+    return this.evaluate(
+      () => {
+        if (!window.game) throw new Error('window.game is missing');
+        return window.game.stats();
+      },
+      null,
+      'window.game.stats()',
+    );
   }
 
   /**
@@ -379,9 +420,13 @@ export class GamePage {
 
   /** Waits for `n` (>= 1) animation frames in the page. */
   async frames(n = 1): Promise<void> {
-    await this.evaluate(async (count) => {
-      for (let i = 0; i < count; i++) await new Promise<number>((r) => requestAnimationFrame(r));
-    }, n, `waiting for ${n} animation frames`);
+    await this.evaluate(
+      async (count) => {
+        for (let i = 0; i < count; i++) await new Promise<number>((r) => requestAnimationFrame(r));
+      },
+      n,
+      `waiting for ${n} animation frames`,
+    );
   }
 
   /**
@@ -394,31 +439,36 @@ export class GamePage {
    * @throws Error if there is no such canvas.
    */
   async canvasColors(selector = 'canvas'): Promise<number> {
-    const inPage = await this.evaluate(async (sel: string) => {
-      const canvas = document.querySelector(sel);
-      if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
-      // A game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame in which
-      // it drew nothing leaves a presented, blank buffer to read. Its pacer counts drawn frames, so
-      // wait (20 s at most) for an animation frame in which the count moved: the game's callback,
-      // requested earlier, runs before this one in the same frame.
-      const drawn = (): number | undefined => (window.game as unknown as { pacer?: { drawn?: number } } | undefined)?.pacer?.drawn;
-      let last = drawn();
-      const until = performance.now() + 20_000;
-      for (;;) {
-        await new Promise<number>((r) => requestAnimationFrame(r));
-        const now = drawn();
-        if (now === undefined || now !== last || performance.now() > until) break;
-        last = now;
-      }
-      const w = canvas.width, h = canvas.height;
-      const copy = new OffscreenCanvas(w, h).getContext('2d');
-      if (!copy || w === 0 || h === 0) return 0;
-      copy.drawImage(canvas, 0, 0);
-      const data = copy.getImageData(0, 0, w, h).data;
-      const seen = new Set<number>();
-      for (let i = 0; i < data.length; i += 4) seen.add((data[i]! << 16) | (data[i + 1]! << 8) | data[i + 2]!);
-      return seen.size;
-    }, selector, `reading the colours of ${selector}`);
+    const inPage = await this.evaluate(
+      async (sel: string) => {
+        const canvas = document.querySelector(sel);
+        if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
+        // A game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame in which
+        // it drew nothing leaves a presented, blank buffer to read. Its pacer counts drawn frames, so
+        // wait (20 s at most) for an animation frame in which the count moved: the game's callback,
+        // requested earlier, runs before this one in the same frame.
+        const drawn = (): number | undefined => (window.game as unknown as { pacer?: { drawn?: number } } | undefined)?.pacer?.drawn;
+        let last = drawn();
+        const until = performance.now() + 20_000;
+        for (;;) {
+          await new Promise<number>((r) => requestAnimationFrame(r));
+          const now = drawn();
+          if (now === undefined || now !== last || performance.now() > until) break;
+          last = now;
+        }
+        const w = canvas.width,
+          h = canvas.height;
+        const copy = new OffscreenCanvas(w, h).getContext('2d');
+        if (!copy || w === 0 || h === 0) return 0;
+        copy.drawImage(canvas, 0, 0);
+        const data = copy.getImageData(0, 0, w, h).data;
+        const seen = new Set<number>();
+        for (let i = 0; i < data.length; i += 4) seen.add((data[i]! << 16) | (data[i + 1]! << 8) | data[i + 2]!);
+        return seen.size;
+      },
+      selector,
+      `reading the colours of ${selector}`,
+    );
     if (inPage > 1) return inPage;
     return this.screenshotColors(selector);
   }
@@ -471,11 +521,15 @@ export class GamePage {
    */
   async worldToPage(x: number, y: number): Promise<{ x: number; y: number }> {
     const box = await this.canvasBox();
-    const s = await this.page.evaluate(([wx, wy]) => {
-      const cam = (window.game as unknown as { renderer?: { camera?: { toScreenX(v: number): number; toScreenY(v: number): number } } }).renderer?.camera;
-      if (!cam) throw new Error('window.game.renderer.camera is missing');
-      return { x: cam.toScreenX(wx!), y: cam.toScreenY(wy!) };
-    }, [x, y]);
+    const s = await this.page.evaluate(
+      ([wx, wy]) => {
+        const cam = (window.game as unknown as { renderer?: { camera?: { toScreenX(v: number): number; toScreenY(v: number): number } } })
+          .renderer?.camera;
+        if (!cam) throw new Error('window.game.renderer.camera is missing');
+        return { x: cam.toScreenX(wx!), y: cam.toScreenY(wy!) };
+      },
+      [x, y],
+    );
     return { x: box.x + s.x, y: box.y + s.y };
   }
 

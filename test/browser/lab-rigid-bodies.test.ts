@@ -4,7 +4,7 @@
  * the board rises, every demo builds and steps, and the page logs no error.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, START_TIMEOUT_MS, type GamePage } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 /** The extras games/lab-rigid-bodies/main.ts puts on window.game. */
 interface TemplateGame {
@@ -65,9 +65,11 @@ describe('lab-rigid-bodies', () => {
       const ids = game.ids();
       const slot = (hh: number) => hh % 33554432;
       const c = game.world.components;
-      let tipAt = -1, slideAt = -1;
+      let tipAt = -1,
+        slideAt = -1;
       // Distance of the wide box along the board from its pivot (2, 1.5), the scene's BOARD constant.
-      const along = (a: number) => (c.Position.x[slot(ids.wide!)]! - 2) * Math.cos(a) + (c.Position.y[slot(ids.wide!)]! - 1.5) * Math.sin(a);
+      const along = (a: number) =>
+        (c.Position.x[slot(ids.wide!)]! - 2) * Math.cos(a) + (c.Position.y[slot(ids.wide!)]! - 1.5) * Math.sin(a);
       const s0 = along(0);
       for (let i = 0; i < 600; i++) {
         game.advance(1);

@@ -9,7 +9,7 @@
  * One page per lab, small and paused while measuring, so the file stays well under a minute.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 /** Fields every lab puts on window.game (see games/lab-*\/main.ts). */
 interface LabGame {
@@ -19,10 +19,15 @@ interface LabGame {
   advance(n: number): void;
   params: Record<string, unknown>;
   world: {
-    time: number; steps: number; integrator: string; substeps: number;
+    time: number;
+    steps: number;
+    integrator: string;
+    substeps: number;
     components: Record<string, Record<string, Float64Array>>;
   };
-  renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; toWorldX(x: number): number; toWorldY(y: number): number } };
+  renderer: {
+    camera: { toScreenX(x: number): number; toScreenY(y: number): number; toWorldX(x: number): number; toWorldY(y: number): number };
+  };
   plot?: { length: number };
 }
 
@@ -31,13 +36,17 @@ async function openLab(h: Harness, folder: string, query: Record<string, string 
   const g = await h.openGame(folder, { query });
   expect(await g.canvasColors()).toBeGreaterThan(16);
   // The chart gets data as the lab runs (a few frames of real time), then its canvas is drawn.
-  await g.waitFor(() => {
-    const w = window.game as unknown as { plot?: { length: number }; plots?: { height: { length: number } } };
-    return (w.plot?.length ?? w.plots?.height.length ?? 0) > 12;
-  }, null, 20_000);
+  await g.waitFor(
+    () => {
+      const w = window.game as unknown as { plot?: { length: number }; plots?: { height: { length: number } } };
+      return (w.plot?.length ?? w.plots?.height.length ?? 0) > 12;
+    },
+    null,
+    20_000,
+  );
   await g.frames(2);
   expect(await g.canvasColors('.bp-plot canvas')).toBeGreaterThan(4);
-  const legend = await g.page.locator('.bp-legend').innerText();
+  const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
   expect(await g.page.locator('[data-lab="info"]').count()).toBe(1);
   expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
@@ -122,7 +131,10 @@ describe('lab-projectile-drag', () => {
     await field(g, 'drag law').selectOption('quadratic');
     await setNumber(g, 'quadratic k (kg/m)', 0.1);
     const quad = await g.page.evaluate(() => {
-      const w = window.game as unknown as LabGame & { flight: { maxFallSpeed: number; flying: boolean; landedTime: number }; ball(): number };
+      const w = window.game as unknown as LabGame & {
+        flight: { maxFallSpeed: number; flying: boolean; landedTime: number };
+        ball(): number;
+      };
       for (let i = 0; i < 1200 && w.flight.flying; i++) w.advance(1);
       return { ...w.flight, k: w.world.components.QuadraticDrag!.k![w.ball() % 2 ** 25], m: w.params.mass as number };
     });
@@ -148,7 +160,12 @@ describe('lab-projectile-drag', () => {
       const w = window.game as unknown as LabGame & { ball(): number };
       if (Math.abs(w.params.angle as number) > 2) return null;
       const e = w.ball();
-      return { angle: w.params.angle as number, vx: w.world.components.Velocity!.x![e % 2 ** 25]!, vy: w.world.components.Velocity!.y![e % 2 ** 25]!, steps: w.world.steps };
+      return {
+        angle: w.params.angle as number,
+        vx: w.world.components.Velocity!.x![e % 2 ** 25]!,
+        vy: w.world.components.Velocity!.y![e % 2 ** 25]!,
+        steps: w.world.steps,
+      };
     }, null);
     expect(Math.abs(after.angle)).toBeLessThan(2);
     expect(after.vx).toBeGreaterThan(15);
@@ -166,16 +183,17 @@ describe('lab-orbits', () => {
     await g?.close();
   });
 
-  it('conserves the selected orbit\'s energy and turns in the Kepler period (velocity Verlet); explicit Euler drifts', async () => {
+  it("conserves the selected orbit's energy and turns in the Kepler period (velocity Verlet); explicit Euler drifts", async () => {
     await pauseAndReset(g);
     await field(g, 'integrator').selectOption('velocity-verlet');
     type Orbit = { eid: number; turns: number; measuredPeriod: number; keplerPeriod: number; maxDrift: number };
-    const run = () => g.page.evaluate(() => {
-      const w = window.game as unknown as LabGame & { orbit: Orbit; orbiters(): number[]; select(e: number): void };
-      w.select(w.orbiters()[0]!);
-      w.advance(60 * 8);
-      return { ...w.orbit, integrator: w.world.integrator };
-    });
+    const run = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as LabGame & { orbit: Orbit; orbiters(): number[]; select(e: number): void };
+        w.select(w.orbiters()[0]!);
+        w.advance(60 * 8);
+        return { ...w.orbit, integrator: w.world.integrator };
+      });
     const vv = await run();
     expect(vv.integrator).toBe('velocity-verlet');
     expect(vv.turns).toBeGreaterThanOrEqual(2);
@@ -204,7 +222,9 @@ describe('lab-orbits', () => {
     const launched = await g.waitFor((n) => {
       const w = window.game as unknown as LabGame & { orbit: { eid: number } };
       if (w.stats().entities !== n + 1) return null;
-      const e = w.orbit.eid, P = w.world.components.Position!, V = w.world.components.Velocity!;
+      const e = w.orbit.eid,
+        P = w.world.components.Position!,
+        V = w.world.components.Velocity!;
       return { e, x: P.x![e % 2 ** 25]!, y: P.y![e % 2 ** 25]!, vx: V.x![e % 2 ** 25]!, vy: V.y![e % 2 ** 25]! };
     }, before.entities);
     expect(launched.x).toBeCloseTo(-4, 0);
@@ -215,7 +235,9 @@ describe('lab-orbits', () => {
     // Click next to planet 0 selects it.
     const p0 = await g.page.evaluate(() => {
       const w = window.game as unknown as LabGame & { orbiters(): number[] };
-      const e = w.orbiters()[0]!, cam = w.renderer.camera, P = w.world.components.Position!;
+      const e = w.orbiters()[0]!,
+        cam = w.renderer.camera,
+        P = w.world.components.Position!;
       return { e, x: cam.toScreenX(P.x![e % 2 ** 25]!) + 3, y: cam.toScreenY(P.y![e % 2 ** 25]!) + 3 };
     });
     await g.page.mouse.click(box.x + p0.x, box.y + p0.y);
@@ -246,8 +268,19 @@ describe('lab-integrators', () => {
     await pauseAndReset(g);
     type Run = { name: string; error: number; diverged: boolean; time: number; steps: number; x: number; y: number };
     const start = await g.page.evaluate(() => (window.game as unknown as { runs(): Run[] }).runs());
-    expect(start.map((r) => r.name)).toEqual(['explicit-euler', 'semi-implicit-euler', 'implicit-euler', 'rk2', 'rk4', 'position-verlet', 'velocity-verlet']);
-    for (const r of start) { expect(r.x).toBe(start[0]!.x); expect(r.y).toBe(start[0]!.y); }
+    expect(start.map((r) => r.name)).toEqual([
+      'explicit-euler',
+      'semi-implicit-euler',
+      'implicit-euler',
+      'rk2',
+      'rk4',
+      'position-verlet',
+      'velocity-verlet',
+    ]);
+    for (const r of start) {
+      expect(r.x).toBe(start[0]!.x);
+      expect(r.y).toBe(start[0]!.y);
+    }
     const runs = await g.page.evaluate(() => {
       const w = window.game as unknown as LabGame & { runs(): Run[] };
       w.advance(240); // one period (4 s) at dt = 1/60 s, e = 0.5
@@ -311,20 +344,30 @@ describe('lab-spring-chain', () => {
   it('dragging a ball pulls it on a mouse spring that follows the pointer and goes on release', async () => {
     await pauseAndReset(g);
     await g.frames(2);
-    const ball = await g.page.evaluate(() => (window.game as unknown as { ballOnScreen(i: number): { x: number; y: number } }).ballOnScreen(2));
+    const ball = await g.page.evaluate(() =>
+      (window.game as unknown as { ballOnScreen(i: number): { x: number; y: number } }).ballOnScreen(2),
+    );
     const m = g.page.mouse;
     const box = await g.canvasBox(); // ballOnScreen is in canvas coordinates; the mouse takes the page's
     await m.move(box.x + ball.x, box.y + ball.y);
     await m.down();
     await m.move(box.x + ball.x + 60, box.y + ball.y + 20, { steps: 4 });
-    const held = await g.page.evaluate(([px, py]) => {
-      const w = window.game as unknown as LabGame & { grab: { ball: number; spring: number }; balls(): number[] };
-      const S = w.world.components.Spring!, cam = w.renderer.camera;
-      return {
-        grabbed: w.grab.ball === w.balls()[2], spring: w.grab.spring,
-        ax: S.anchorX![w.grab.spring % 2 ** 25]!, ay: S.anchorY![w.grab.spring % 2 ** 25]!, px: cam.toWorldX(px!), py: cam.toWorldY(py!),
-      };
-    }, [ball.x + 60, ball.y + 20]);
+    const held = await g.page.evaluate(
+      ([px, py]) => {
+        const w = window.game as unknown as LabGame & { grab: { ball: number; spring: number }; balls(): number[] };
+        const S = w.world.components.Spring!,
+          cam = w.renderer.camera;
+        return {
+          grabbed: w.grab.ball === w.balls()[2],
+          spring: w.grab.spring,
+          ax: S.anchorX![w.grab.spring % 2 ** 25]!,
+          ay: S.anchorY![w.grab.spring % 2 ** 25]!,
+          px: cam.toWorldX(px!),
+          py: cam.toWorldY(py!),
+        };
+      },
+      [ball.x + 60, ball.y + 20],
+    );
     expect(held.grabbed).toBe(true);
     expect(held.spring).toBeGreaterThan(0);
     expect(held.ax).toBeCloseTo(held.px, 6);
@@ -332,8 +375,10 @@ describe('lab-spring-chain', () => {
     // While held, the ball is pulled toward the pointer.
     const moved = await g.page.evaluate(() => {
       const w = window.game as unknown as LabGame & { grab: { ball: number; spring: number } };
-      const P = w.world.components.Position!, S = w.world.components.Spring!;
-      const e = w.grab.ball, s = w.grab.spring;
+      const P = w.world.components.Position!,
+        S = w.world.components.Spring!;
+      const e = w.grab.ball,
+        s = w.grab.spring;
       const d0 = Math.hypot(P.x![e % 2 ** 25]! - S.anchorX![s % 2 ** 25]!, P.y![e % 2 ** 25]! - S.anchorY![s % 2 ** 25]!);
       w.advance(60);
       return { d0, d1: Math.hypot(P.x![e % 2 ** 25]! - S.anchorX![s % 2 ** 25]!, P.y![e % 2 ** 25]! - S.anchorY![s % 2 ** 25]!) };
@@ -362,7 +407,9 @@ describe('lab-bungee', () => {
   it('falls freely along the exact curve and bottoms out where energy predicts', async () => {
     await pauseAndReset(g);
     const jump = await g.page.evaluate(() => {
-      const w = window.game as unknown as LabGame & { jump: { freeFallError: number; lowest: number; predictedLowest: number; tautTime: number; freeFallTime: number } };
+      const w = window.game as unknown as LabGame & {
+        jump: { freeFallError: number; lowest: number; predictedLowest: number; tautTime: number; freeFallTime: number };
+      };
       w.advance(60 * 4);
       return { ...w.jump };
     });
@@ -400,7 +447,9 @@ describe('lab-pendulum', () => {
   it('swings with the exact large-amplitude period, longer than 2π√(L/g)', async () => {
     await pauseAndReset(g);
     const swing = await g.page.evaluate(() => {
-      const w = window.game as unknown as LabGame & { swing: { measuredPeriod: number; exactPeriod: number; smallAnglePeriod: number; crossings: number; maxStretch: number } };
+      const w = window.game as unknown as LabGame & {
+        swing: { measuredPeriod: number; exactPeriod: number; smallAnglePeriod: number; crossings: number; maxStretch: number };
+      };
       w.advance(60 * 7);
       return { ...w.swing };
     });
@@ -423,7 +472,8 @@ describe('lab-pendulum', () => {
     const placed = await g.waitFor(() => {
       const w = window.game as unknown as LabGame & { ids(): { bob: number } };
       if (Math.abs((w.params.amplitude as number) - 45) > 1) return null;
-      const P = w.world.components.Position!, b = w.ids().bob;
+      const P = w.world.components.Position!,
+        b = w.ids().bob;
       return { length: w.params.length as number, x: P.x![b % 2 ** 25]!, y: P.y![b % 2 ** 25]!, steps: w.world.steps };
     }, null);
     expect(placed.length).toBeCloseTo(Math.SQRT2, 1);
@@ -437,7 +487,7 @@ describe('lab-pendulum', () => {
 
   it('a bad URL parameter stops the lab with a message naming it', async () => {
     const bad = await h.openGame('lab-pendulum', { query: { length: 'long' }, waitReady: false });
-    const text = await bad.page.locator('[data-lab="error"]').innerText();
+    const text = await bad.page.locator('[data-lab="error"]').textContent();
     expect(text).toContain('length');
     expect(text).toContain('"long"');
     await expect.poll(() => bad.errors.some((e) => e.includes('URL parameter length'))).toBe(true);

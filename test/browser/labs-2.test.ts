@@ -6,13 +6,14 @@
  * these checks do not depend on how fast software WebGL draws). One page per lab, small viewports.
  * A bad URL parameter is reported on the page.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
 import { createPhysicsWorld, step } from '@bitphysics/physics';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
-import { circularSegmentArea, equilibriumDepth } from '../../games/lab-floating/scene';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { equilibriumAltitude, fallSpeedFromRest, resolveOptions } from '../../games/lab-balloon-parachute/scene';
 import { createOrbitMeter, meterSample } from '../../games/lab-cyclotron/scene';
+import { circularSegmentArea, equilibriumDepth } from '../../games/lab-floating/scene';
 import { applyControls, buildRocket, rocketWorldOptions, uniformGravityModel } from '../../games/lab-rocket/scene';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 describe('exact curves of the labs (Node)', () => {
   it('circular segment: half and whole disc; the equilibrium draft balances the areas', () => {
@@ -26,11 +27,12 @@ describe('exact curves of the labs (Node)', () => {
     expect(equilibriumDepth('ball', 0.5, 1200, 1000)).toBeNaN();
   });
 
-  it('balloon equilibrium: the disc-averaged exponential atmosphere lifts exactly the balloon\'s mass there', () => {
+  it("balloon equilibrium: the disc-averaged exponential atmosphere lifts exactly the balloon's mass there", () => {
     const p = resolveOptions({ balloonRadius: 2, scaleHeight: 40 });
     const y = equilibriumAltitude(p);
     // Midpoint quadrature of rho0 exp(-(y + eta) / H) over the disc of radius r.
-    const n = 2000, r = p.balloonRadius;
+    const n = 2000,
+      r = p.balloonRadius;
     let lift = 0;
     for (let i = 0; i < n; i++) {
       const eta = -r + ((i + 0.5) * 2 * r) / n;
@@ -48,7 +50,9 @@ describe('exact curves of the labs (Node)', () => {
 
   it('orbit meter: a sampled circle gives its radius and period', () => {
     const m = createOrbitMeter();
-    const w = 2 * Math.PI / 5, R = 1.5, h = 1 / 240;
+    const w = (2 * Math.PI) / 5,
+      R = 1.5,
+      h = 1 / 240;
     for (let t = 0; t < 16; t += h) meterSample(m, t, R * Math.sin(-w * t), -R * w * Math.cos(w * t));
     expect(m.revolutions).toBeGreaterThanOrEqual(2);
     expect(m.period).toBeCloseTo(5, 6);
@@ -62,9 +66,13 @@ describe('exact curves of the labs (Node)', () => {
     const world = createPhysicsWorld(rocketWorldOptions({ planet: 'toy', drag: false }));
     const h = buildRocket(world, { planet: 'toy', drag: false });
     const out = new Float64Array(2);
-    for (let i = 0; i < 15; i++) { applyControls(world, h); step(world); }
+    for (let i = 0; i < 15; i++) {
+      applyControls(world, h);
+      step(world);
+    }
     uniformGravityModel(world, h, out);
-    const P = world.components.Position, V = world.components.Velocity;
+    const P = world.components.Position,
+      V = world.components.Velocity;
     const height = P.y[h.rocket]! - 1000 - 1.5;
     expect(Math.abs(V.y[h.rocket]! - out[0]!) / out[0]!).toBeLessThan(5e-4);
     expect(Math.abs(height - out[1]!) / out[1]!).toBeLessThan(5e-4);
@@ -89,7 +97,7 @@ async function basics(g: GamePage): Promise<void> {
   expect(await g.canvasColors()).toBeGreaterThan(16);
   await g.waitFor(() => ((window.game as unknown as LabGame).plot.length > 0 ? true : null), null, 20_000);
   expect(await g.page.locator('.bp-plot canvas').count()).toBeGreaterThan(0);
-  expect(await g.page.locator('.bp-legend').innerText()).toMatch(/P[\s\S]*N[\s\S]*R/);
+  expect(await g.page.locator('.bp-legend').textContent()).toMatch(/P[\s\S]*N[\s\S]*R/);
   expect(g.errors).toEqual([]);
 }
 
@@ -108,9 +116,14 @@ describe('labs of Part II', () => {
     const before = (await lab<{ handles(): { balls: number[] } }>(g, (game) => game.handles().balls.length)) as number;
     // Above the water near the right wall, away from the tracked (medium) ball.
     await g.clickWorld(12.5, 8);
-    await g.waitFor((n) => ((window.game as unknown as { handles(): { balls: number[] } }).handles().balls.length === n + 1 ? true : null), before);
+    await g.waitFor(
+      (n) => ((window.game as unknown as { handles(): { balls: number[] } }).handles().balls.length === n + 1 ? true : null),
+      before,
+    );
     // E: the tracked (medium) body at rest at the circular-segment equilibrium; upthrust balances weight, so it stays.
-    await g.page.evaluate(() => { (window.game as unknown as LabGame).paused = true; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as LabGame).paused = true;
+    });
     await g.press('e');
     const r = (await lab<{ draft(k: string): number; equilibrium(k: string): number }>(g, (game) => {
       const start = game.draft('medium');
@@ -200,9 +213,20 @@ describe('labs of Part II', () => {
   it('cyclotron: measured radius and period match m v / (|q| B) and 2 pi m / (|q| B); F flips the field', async () => {
     const g = await h.openGame('lab-cyclotron', { query: { E: 0 } });
     await basics(g);
-    type Cyc = { measurement(): { radius: number; period: number; revolutions: number; exactRadius: number; exactPeriod: number }; field(): number };
-    const run = async () => (await lab<Cyc>(g, (game) => { game.advance(60 * 16); return game.measurement(); })) as ReturnType<Cyc['measurement']>;
-    await g.page.evaluate(() => { const game = window.game as unknown as LabGame; game.paused = true; game.reset(); });
+    type Cyc = {
+      measurement(): { radius: number; period: number; revolutions: number; exactRadius: number; exactPeriod: number };
+      field(): number;
+    };
+    const run = async () =>
+      (await lab<Cyc>(g, (game) => {
+        game.advance(60 * 16);
+        return game.measurement();
+      })) as ReturnType<Cyc['measurement']>;
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as LabGame;
+      game.paused = true;
+      game.reset();
+    });
     const m = await run();
     expect(m.exactRadius).toBeCloseTo(3, 12); // 1 g, 3 m/s, 1 mC, 1 T
     expect(m.revolutions).toBeGreaterThanOrEqual(1);
@@ -220,14 +244,14 @@ describe('labs of Part II', () => {
 
   it('cyclotron: a bad URL parameter is shown on the page', async () => {
     const g = await h.openGame('lab-cyclotron', { query: { B: 'strong' }, waitReady: false });
-    const text = await g.page.locator('.lab-param-error').innerText({ timeout: 15_000 });
+    const text = await g.page.locator('.lab-param-error').textContent({ timeout: 15_000 });
     expect(text).toContain('B');
     expect(text).toContain('strong');
     expect(g.errors.join('\n')).toContain('URL parameter B');
     await g.close();
   });
 
-  it('rocket: in free space the speed is Tsiolkovsky\'s ve ln(m0 / m); arrow keys steer, Space cuts the engine', async () => {
+  it("rocket: in free space the speed is Tsiolkovsky's ve ln(m0 / m); arrow keys steer, Space cuts the engine", async () => {
     const g = await h.openGame('lab-rocket');
     await basics(g);
     type Rocket = { state(): { speed: number; tsiolkovsky: number; heading: number; throttle: number; fuel: number; altitude: number } };

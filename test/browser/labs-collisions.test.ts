@@ -5,9 +5,12 @@
  * window.game (a drag lifts a ball; a click heats the gas).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
-interface Cam { toScreenX(x: number): number; toScreenY(y: number): number }
+interface Cam {
+  toScreenX(x: number): number;
+  toScreenY(y: number): number;
+}
 interface LabWindow {
   paused: boolean;
   reset(): void;
@@ -17,34 +20,49 @@ interface LabWindow {
 }
 
 let h: Harness;
-beforeAll(async () => { h = await Harness.start(); }, START_TIMEOUT_MS);
-afterAll(async () => { await h?.close(); });
+beforeAll(async () => {
+  h = await Harness.start();
+}, START_TIMEOUT_MS);
+afterAll(async () => {
+  await h?.close();
+});
 
 /** Opens a lab, checks the common furniture, pauses it on a fresh world. */
 async function open(folder: string, keys: string[]): Promise<GamePage> {
   const g = await h.openGame(folder, {});
   expect(await g.canvasColors()).toBeGreaterThan(8);
-  const legend = await g.page.locator('.bp-legend').innerText();
+  const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
   expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
-  await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.paused = true; w.reset(); });
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as LabWindow;
+    w.paused = true;
+    w.reset();
+  });
   expect(g.errors).toEqual([]);
   return g;
 }
 
 /** Screen point of world point (x, y) on the lab's canvas. */
 function screen(g: GamePage, x: number, y: number): Promise<{ x: number; y: number }> {
-  return g.page.evaluate(([x, y]) => {
-    const cam = (window.game as unknown as LabWindow).renderer.camera;
-    const box = document.querySelector('canvas')!.getBoundingClientRect();
-    return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
-  }, [x, y] as const);
+  return g.page.evaluate(
+    ([x, y]) => {
+      const cam = (window.game as unknown as LabWindow).renderer.camera;
+      const box = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+    },
+    [x, y] as const,
+  );
 }
 
 describe('lab-newtons-cradle', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await open('lab-newtons-cradle', ['Drag']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await open('lab-newtons-cradle', ['Drag']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   /**
    * One ball lifted by 30 degrees on 1 m strings: after the impacts the last ball swings out to
@@ -60,19 +78,24 @@ describe('lab-newtons-cradle', () => {
       const most = balls.map(() => 0);
       for (let i = 0; i < 90; i++) {
         w.advance(1);
-        balls.forEach((s, k) => { most[k] = Math.max(most[k]!, P.x[s]! - x0[k]!); });
+        balls.forEach((s, k) => {
+          most[k] = Math.max(most[k]!, P.x[s]! - x0[k]!);
+        });
       }
       return { most, ratio: w.measure.energy / w.measure.energy0 };
     });
     const last = m.most[m.most.length - 1]!;
-    expect(Math.asin(last) * 180 / Math.PI).toBeGreaterThan(28);
-    for (let k = 1; k < m.most.length - 1; k++) expect(m.most[k]!).toBeLessThan(Math.sin(2 * Math.PI / 180));
+    expect((Math.asin(last) * 180) / Math.PI).toBeGreaterThan(28);
+    for (let k = 1; k < m.most.length - 1; k++) expect(m.most[k]!).toBeLessThan(Math.sin((2 * Math.PI) / 180));
     expect(Math.abs(m.ratio - 1)).toBeLessThan(0.01);
     expect(g.errors).toEqual([]);
   });
 
   it('dragging a ball with the mouse lifts it', async () => {
-    await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.reset(); });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow;
+      w.reset();
+    });
     const start = await g.page.evaluate(() => {
       const w = window.game as unknown as LabWindow & { balls(): number[] };
       const s = w.balls()[1]! % 2 ** 25;
@@ -101,14 +124,21 @@ describe('lab-newtons-cradle', () => {
    * under 3 % of v) and the lifted pair stops (under 3 % of v once the far balls are out).
    */
   it('a two-ball lift with the mouse sends two balls out on the far side at the entering speed', async () => {
-    const ball = (i: number): Promise<{ x: number; y: number }> => g.page.evaluate((i) => {
-      const w = window.game as unknown as LabWindow & { balls(): number[] };
-      const s = w.balls()[i]! % 2 ** 25, P = w.world.components.Position;
-      return { x: P.x[s]!, y: P.y[s]! };
-    }, i);
-    const L = 1, gravity = 9.81;
+    const ball = (i: number): Promise<{ x: number; y: number }> =>
+      g.page.evaluate((i) => {
+        const w = window.game as unknown as LabWindow & { balls(): number[] };
+        const s = w.balls()[i]! % 2 ** 25,
+          P = w.world.components.Position;
+        return { x: P.x[s]!, y: P.y[s]! };
+      }, i);
+    const L = 1,
+      gravity = 9.81;
     for (const deg of [10, 30, 50, 70]) {
-      await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.paused = false; w.reset(); });
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as LabWindow;
+        w.paused = false;
+        w.reset();
+      });
       const start = await ball(1);
       const a = (deg * Math.PI) / 180;
       const from = await screen(g, start.x, start.y);
@@ -129,19 +159,31 @@ describe('lab-newtons-cradle', () => {
       expect(Math.abs(lifted[1]!.y - lifted[0]!.y)).toBeLessThan(1e-9);
       for (let k = 0; k < 2; k++) expect(Math.hypot(still[k]!.x - lifted[k]!.x, still[k]!.y - lifted[k]!.y)).toBeLessThan(1e-9);
       // Pause, then let go, so the steps after the release are counted from the release.
-      await g.page.evaluate(() => { (window.game as unknown as LabWindow).paused = true; });
+      await g.page.evaluate(() => {
+        (window.game as unknown as LabWindow).paused = true;
+      });
       await g.page.mouse.up();
       const m = await g.page.evaluate(() => {
-        const w = window.game as unknown as LabWindow & { balls(): number[]; held(): number; world: { components: { Velocity: { x: Float64Array } } } };
+        const w = window.game as unknown as LabWindow & {
+          balls(): number[];
+          held(): number;
+          world: { components: { Velocity: { x: Float64Array } } };
+        };
         const V = w.world.components.Velocity;
         const balls = w.balls().map((b) => b % 2 ** 25);
         const peak = balls.map(() => 0);
-        for (let i = 0; i < 50; i++) { w.advance(1); balls.forEach((s, k) => { peak[k] = Math.max(peak[k]!, Math.abs(V.x[s]!)); }); }
+        for (let i = 0; i < 50; i++) {
+          w.advance(1);
+          balls.forEach((s, k) => {
+            peak[k] = Math.max(peak[k]!, Math.abs(V.x[s]!));
+          });
+        }
         return { held: w.held(), peak, after: balls.map((s) => V.x[s]!) };
       });
       expect(m.held).toBe(-1);
       const v = Math.sqrt(2 * gravity * (L + still[1]!.y)); // anchors at y = 0: L (1 - cos a) = L + y
-      const n = m.peak.length, what = `lift ${deg} deg: peaks ${m.peak.map((p) => (p / v).toFixed(3)).join(' ')} of v = ${v.toFixed(3)} m/s`;
+      const n = m.peak.length,
+        what = `lift ${deg} deg: peaks ${m.peak.map((p) => (p / v).toFixed(3)).join(' ')} of v = ${v.toFixed(3)} m/s`;
       for (const k of [n - 2, n - 1]) expect(Math.abs(m.peak[k]! / v - 1), what).toBeLessThan(0.03);
       for (let k = 2; k < n - 2; k++) expect(m.peak[k]!, what).toBeLessThan(0.03 * v);
       for (const k of [0, 1]) expect(Math.abs(m.after[k]!), what).toBeLessThan(0.03 * v);
@@ -152,8 +194,12 @@ describe('lab-newtons-cradle', () => {
 
 describe('lab-molecules', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await open('lab-molecules', ['Click']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await open('lab-molecules', ['Click']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   /** Perfectly elastic discs: kinetic energy constant within 1 % over 600 steps (10 s). */
   it('keeps the kinetic energy of the gas', async () => {
@@ -167,7 +213,10 @@ describe('lab-molecules', () => {
   });
 
   it('a click in the box heats the gas', async () => {
-    await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.reset(); });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow;
+      w.reset();
+    });
     const before = await g.page.evaluate(() => (window.game as unknown as { gas: { kT: number } }).gas.kT);
     const box = await g.page.evaluate(() => (window.game as unknown as { box(): { width: number; height: number } }).box());
     const at = await screen(g, box.width / 2, box.height / 2);

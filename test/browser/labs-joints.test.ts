@@ -4,9 +4,12 @@
  * through a mouse joint; a click cuts the rope; a drag tears the cloth).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
-interface Cam { toScreenX(x: number): number; toScreenY(y: number): number }
+interface Cam {
+  toScreenX(x: number): number;
+  toScreenY(y: number): number;
+}
 interface LabWindow {
   paused: boolean;
   reset(): void;
@@ -16,35 +19,50 @@ interface LabWindow {
 }
 
 let h: Harness;
-beforeAll(async () => { h = await Harness.start(); }, START_TIMEOUT_MS);
-afterAll(async () => { await h?.close(); });
+beforeAll(async () => {
+  h = await Harness.start();
+}, START_TIMEOUT_MS);
+afterAll(async () => {
+  await h?.close();
+});
 
 /** Opens a lab, checks the common furniture, pauses it on a fresh world. */
 async function open(folder: string, query: Record<string, string | number>, keys: string[]): Promise<GamePage> {
   const g = await h.openGame(folder, { query });
   expect(await g.canvasColors()).toBeGreaterThan(8);
-  const legend = await g.page.locator('.bp-legend').innerText();
+  const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
   expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
   expect(await g.page.locator('[data-lab="info"]').count()).toBe(1);
-  await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.paused = true; w.reset(); });
+  await g.page.evaluate(() => {
+    const w = window.game as unknown as LabWindow;
+    w.paused = true;
+    w.reset();
+  });
   expect(g.errors).toEqual([]);
   return g;
 }
 
 /** Screen point of world point (x, y) on the lab's canvas. */
 function screen(g: GamePage, x: number, y: number): Promise<{ x: number; y: number }> {
-  return g.page.evaluate(([x, y]) => {
-    const cam = (window.game as unknown as LabWindow).renderer.camera;
-    const box = document.querySelector('canvas')!.getBoundingClientRect();
-    return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
-  }, [x, y] as const);
+  return g.page.evaluate(
+    ([x, y]) => {
+      const cam = (window.game as unknown as LabWindow).renderer.camera;
+      const box = document.querySelector('canvas')!.getBoundingClientRect();
+      return { x: box.left + cam.toScreenX(x), y: box.top + cam.toScreenY(y) };
+    },
+    [x, y] as const,
+  );
 }
 
 describe('lab-joints', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await open('lab-joints', { scene: 'pendulum' }, ['Drag']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await open('lab-joints', { scene: 'pendulum' }, ['Drag']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('the pendulum swings with the exact large-amplitude period', async () => {
     const m = await g.page.evaluate(() => {
@@ -58,7 +76,11 @@ describe('lab-joints', () => {
   });
 
   it('dragging the bob with the mouse moves it', async () => {
-    await g.page.evaluate(() => { const w = window.game as unknown as LabWindow; w.reset(); w.paused = false; });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow;
+      w.reset();
+      w.paused = false;
+    });
     const bob = await g.page.evaluate(() => {
       const w = window.game as unknown as LabWindow & { ids(): { bob: number } };
       const b = w.ids().bob;
@@ -100,14 +122,20 @@ describe('lab-joints', () => {
 
 describe('lab-rope', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await open('lab-rope', { segments: 20 }, ['Drag', 'Click']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await open('lab-rope', { segments: 20 }, ['Drag', 'Click']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('a click on the rope cuts a link', async () => {
     const mid = await g.page.evaluate(() => {
       const w = window.game as unknown as LabWindow & { ids(): { bodies: number[] }; links(): number };
-      const ids = w.ids().bodies, P = w.world.components.Position;
-      const a = ids[9]!, b = ids[10]!;
+      const ids = w.ids().bodies,
+        P = w.world.components.Position;
+      const a = ids[9]!,
+        b = ids[10]!;
       return { x: (P.x[a]! + P.x[b]!) / 2, y: (P.y[a]! + P.y[b]!) / 2, links: w.links() };
     });
     const at = await screen(g, mid.x, mid.y);
@@ -131,11 +159,17 @@ describe('lab-rope', () => {
 
 describe('lab-cloth', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await open('lab-cloth', { size: 16, wind: 0, tear: 0.2 }, ['Drag']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await open('lab-cloth', { size: 16, wind: 0, tear: 0.2 }, ['Drag']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('dragging the cloth down tears it', async () => {
-    await g.page.evaluate(() => { (window.game as unknown as LabWindow).paused = false; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as LabWindow).paused = false;
+    });
     const before = await g.page.evaluate(() => (window.game as unknown as { links(): number }).links());
     // Grab the bottom middle of the 4 m cloth and pull it far down.
     const from = await screen(g, 2, 0);
@@ -145,7 +179,10 @@ describe('lab-cloth', () => {
     await g.page.mouse.move(to.x, to.y, { steps: 20 });
     await g.frames(30);
     await g.page.mouse.up();
-    const after = await g.page.evaluate(() => ({ links: (window.game as unknown as { links(): number }).links(), torn: (window.game as unknown as { torn(): number }).torn() }));
+    const after = await g.page.evaluate(() => ({
+      links: (window.game as unknown as { links(): number }).links(),
+      torn: (window.game as unknown as { torn(): number }).torn(),
+    }));
     expect(after.torn).toBeGreaterThan(0);
     expect(after.links).toBe(before - after.torn);
     expect(g.errors).toEqual([]);

@@ -13,7 +13,12 @@
 import type { Page } from 'playwright-core';
 
 /** A box in CSS px. */
-export interface Box { x: number; y: number; width: number; height: number }
+export interface Box {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
 
 /** What `checkLayout` found. */
 export interface LayoutReport {
@@ -37,7 +42,12 @@ export interface LayoutReport {
 /** Runs the checks in `page` (a ready game page). */
 export function checkLayout(page: Page): Promise<LayoutReport> {
   return page.evaluate(() => {
-    const r = (b: DOMRect | { x: number; y: number; width: number; height: number }) => ({ x: b.x, y: b.y, width: b.width, height: b.height });
+    const r = (b: DOMRect | { x: number; y: number; width: number; height: number }) => ({
+      x: b.x,
+      y: b.y,
+      width: b.width,
+      height: b.height,
+    });
     const describeEl = (el: Element): string => {
       const b = el.getBoundingClientRect();
       const cls = typeof el.className === 'string' && el.className ? `.${el.className.trim().split(/\s+/).join('.')}` : '';
@@ -47,25 +57,44 @@ export function checkLayout(page: Page): Promise<LayoutReport> {
     const canvas = (document.querySelector('.bp-stage canvas') ?? document.querySelector('canvas')) as HTMLCanvasElement | null;
     if (!canvas) throw new Error('no canvas');
     const cb = canvas.getBoundingClientRect();
-    const game = (window as unknown as { game?: { renderer?: { camera?: {
-      view: { minX: number; minY: number; maxX: number; maxY: number } | null; toScreenX(x: number): number; toScreenY(y: number): number;
-    } } } }).game;
+    const game = (
+      window as unknown as {
+        game?: {
+          renderer?: {
+            camera?: {
+              view: { minX: number; minY: number; maxX: number; maxY: number } | null;
+              toScreenX(x: number): number;
+              toScreenY(y: number): number;
+            };
+          };
+        };
+      }
+    ).game;
     const cam = game?.renderer?.camera;
     let scene = r(cb);
     let sceneFrom = 'canvas';
-    if (cam && cam.view && typeof cam.toScreenX === 'function') {
-      const x0 = cam.toScreenX(cam.view.minX), x1 = cam.toScreenX(cam.view.maxX);
-      const y0 = cam.toScreenY(cam.view.maxY), y1 = cam.toScreenY(cam.view.minY);
+    if (cam?.view && typeof cam.toScreenX === 'function') {
+      const x0 = cam.toScreenX(cam.view.minX),
+        x1 = cam.toScreenX(cam.view.maxX);
+      const y0 = cam.toScreenY(cam.view.maxY),
+        y1 = cam.toScreenY(cam.view.minY);
       scene = { x: cb.x + x0, y: cb.y + y0, width: x1 - x0, height: y1 - y0 };
       sceneFrom = 'camera view';
     }
-    const W = window.innerWidth, H = window.innerHeight;
+    const W = window.innerWidth,
+      H = window.innerHeight;
     const clipped: string[] = [];
     const tol = 1.5;
-    if (scene.x < cb.x - tol || scene.y < cb.y - tol || scene.x + scene.width > cb.right + tol || scene.y + scene.height > cb.bottom + tol) {
+    if (
+      scene.x < cb.x - tol ||
+      scene.y < cb.y - tol ||
+      scene.x + scene.width > cb.right + tol ||
+      scene.y + scene.height > cb.bottom + tol
+    ) {
       clipped.push(`scene ${JSON.stringify(scene)} reaches outside the canvas ${JSON.stringify(r(cb))}`);
     }
-    if (cb.x < -tol || cb.y < -tol || cb.right > W + tol || cb.bottom > H + tol) clipped.push(`canvas ${JSON.stringify(r(cb))} reaches outside the window ${W}x${H}`);
+    if (cb.x < -tol || cb.y < -tol || cb.right > W + tol || cb.bottom > H + tol)
+      clipped.push(`canvas ${JSON.stringify(r(cb))} reaches outside the window ${W}x${H}`);
     const ancestors = new Set<Element>();
     for (let e: Element | null = canvas; e; e = e.parentElement) ancestors.add(e);
     const overlays: string[] = [];
@@ -90,19 +119,29 @@ export function checkLayout(page: Page): Promise<LayoutReport> {
         }
         // Text cut off by an element that hides its overflow.
         const hides = /hidden|clip/.test(st.overflowX) || /hidden|clip/.test(st.overflowY);
-        if (hides && st.textOverflow !== 'ellipsis' && !['CANVAS', 'INPUT', 'TEXTAREA', 'SELECT'].includes(el.tagName) && (el.scrollWidth > el.clientWidth + 2 || el.scrollHeight > el.clientHeight + 2)) {
-          clipped.push(`${describeEl(el)} cuts off its content (${el.scrollWidth}x${el.scrollHeight} in ${el.clientWidth}x${el.clientHeight})`);
+        if (
+          hides &&
+          st.textOverflow !== 'ellipsis' &&
+          !['CANVAS', 'INPUT', 'TEXTAREA', 'SELECT'].includes(el.tagName) &&
+          (el.scrollWidth > el.clientWidth + 2 || el.scrollHeight > el.clientHeight + 2)
+        ) {
+          clipped.push(
+            `${describeEl(el)} cuts off its content (${el.scrollWidth}x${el.scrollHeight} in ${el.clientWidth}x${el.clientHeight})`,
+          );
         }
       }
       for (const child of Array.from(el.children)) walk(child);
     };
     walk(document.body);
     // Layout regions and their direct children stay inside the window (scrolling columns may scroll).
-    for (const el of Array.from(document.querySelectorAll('.bp-toolbar, .bp-status, .bp-controls, .bp-info, .bp-side, .bp-toolbar > *, .bp-plot'))) {
+    for (const el of Array.from(
+      document.querySelectorAll('.bp-toolbar, .bp-status, .bp-controls, .bp-info, .bp-side, .bp-toolbar > *, .bp-plot'),
+    )) {
       if (!visible(el)) continue;
       const b = el.getBoundingClientRect();
       const inScroller = el.closest('.bp-side, .bp-info') !== null && !el.matches('.bp-side, .bp-info');
-      if (b.x < -tol || b.right > W + tol || (!inScroller && (b.y < -tol || b.bottom > H + tol))) clipped.push(`${describeEl(el)} reaches outside the window ${W}x${H}`);
+      if (b.x < -tol || b.right > W + tol || (!inScroller && (b.y < -tol || b.bottom > H + tol)))
+        clipped.push(`${describeEl(el)} reaches outside the window ${W}x${H}`);
     }
     // Chart titles fit their chart.
     for (const t of Array.from(document.querySelectorAll('.bp-plot .u-title'))) {

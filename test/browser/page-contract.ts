@@ -16,8 +16,8 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, readRegistry, START_TIMEOUT_MS } from './harness';
 import { repoRoot } from './chromium.mjs';
+import { Harness, readRegistry, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 
 const registry = await readRegistry();
@@ -89,7 +89,7 @@ export function describePages(shard: number, shards: number): void {
         expect(await side.isVisible()).toBe(false);
         await g.page.getByRole('button', { name: 'information and controls' }).tap();
         expect(await info.isVisible()).toBe(true);
-        const help = await g.page.locator('.bp-legend').innerText();
+        const help = await g.page.locator('.bp-legend').textContent();
         expect(help).toContain('Tap');
         expect(help).not.toContain('trails on / off'); // a keyboard-only control (T) is left out on touch
         await g.page.getByRole('button', { name: 'parameters and charts' }).tap();
@@ -109,36 +109,39 @@ export function describePages(shard: number, shards: number): void {
     }
 
     let k = -1;
-    for (const [index, entry] of registry.entries()) for (const [r, run] of RUNS.entries()) {
-      // Both runs of every page with BITPHYSICS_PAGES=all; otherwise one, alternating down the registry.
-      if (!BOTH_RUNS && r !== index % RUNS.length) continue;
-      if (++k % shards !== shard) continue;
-      it(`${entry.folder} (${run.name}, ${run.locale}): ready, window.game, canvas drawn, scene clear and whole, no errors`, async () => {
-        const g = await h.openGame(entry.folder, { locale: run.locale, viewport: run.viewport, touch: run.touch });
-        expect(await g.page.evaluate(() => navigator.language)).toBe(run.language);
-        const stats = await g.stats();
-        expect(Number.isInteger(stats.entities) && stats.entities > 0).toBe(true);
-        expect(Number.isInteger(stats.steps) && stats.steps >= 0).toBe(true);
-        expect(typeof stats.fps).toBe('number');
-        expect(await g.page.evaluate(() => typeof window.game?.paused === 'boolean' && typeof window.game?.world === 'object')).toBe(true);
-        // A blank canvas has one colour (two or three with a frame); a drawn scene has more. Sparse
-        // scenes of flat shapes (lab-rigid-bodies' tilting board: two boxes, a board, the frame) draw
-        // about a dozen, so the bar is 8.
-        expect(await g.canvasColors()).toBeGreaterThan(8);
-        await g.frames(5);
-        expect(await g.page.locator('[data-page-error], [role="alert"]').allInnerTexts()).toEqual([]);
-        expect(g.errors).toEqual([]);
-        const layout = await checkLayout(g.page);
-        writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
-        expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
-        expect(layout.clipped).toEqual([]);
-        // The world is framed to fit: it spans the canvas one way, less the camera's padding (a wide
-        // world on a tall phone is letterboxed above and below), and the canvas is most of the window.
-        expect(layout.sceneFill).toBeGreaterThan(0.8);
-        const canvas = await g.canvasBox();
-        expect(canvas.width * canvas.height).toBeGreaterThan(0.4 * run.viewport.width * run.viewport.height);
-        await g.close();
-      });
-    }
+    for (const [index, entry] of registry.entries())
+      for (const [r, run] of RUNS.entries()) {
+        // Both runs of every page with BITPHYSICS_PAGES=all; otherwise one, alternating down the registry.
+        if (!BOTH_RUNS && r !== index % RUNS.length) continue;
+        if (++k % shards !== shard) continue;
+        it(`${entry.folder} (${run.name}, ${run.locale}): ready, window.game, canvas drawn, scene clear and whole, no errors`, async () => {
+          const g = await h.openGame(entry.folder, { locale: run.locale, viewport: run.viewport, touch: run.touch });
+          expect(await g.page.evaluate(() => navigator.language)).toBe(run.language);
+          const stats = await g.stats();
+          expect(Number.isInteger(stats.entities) && stats.entities > 0).toBe(true);
+          expect(Number.isInteger(stats.steps) && stats.steps >= 0).toBe(true);
+          expect(typeof stats.fps).toBe('number');
+          expect(await g.page.evaluate(() => typeof window.game?.paused === 'boolean' && typeof window.game?.world === 'object')).toBe(
+            true,
+          );
+          // A blank canvas has one colour (two or three with a frame); a drawn scene has more. Sparse
+          // scenes of flat shapes (lab-rigid-bodies' tilting board: two boxes, a board, the frame) draw
+          // about a dozen, so the bar is 8.
+          expect(await g.canvasColors()).toBeGreaterThan(8);
+          await g.frames(5);
+          expect(await g.page.locator('[data-page-error], [role="alert"]').allInnerTexts()).toEqual([]);
+          expect(g.errors).toEqual([]);
+          const layout = await checkLayout(g.page);
+          writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
+          expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
+          expect(layout.clipped).toEqual([]);
+          // The world is framed to fit: it spans the canvas one way, less the camera's padding (a wide
+          // world on a tall phone is letterboxed above and below), and the canvas is most of the window.
+          expect(layout.sceneFill).toBeGreaterThan(0.8);
+          const canvas = await g.canvasBox();
+          expect(canvas.width * canvas.height).toBeGreaterThan(0.4 * run.viewport.width * run.viewport.height);
+          await g.close();
+        });
+      }
   });
 }

@@ -8,7 +8,7 @@
  * step with `advance(n)` while the page is paused, so they do not depend on the frame rate.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 /** What every particle lab puts on window.game, loosely typed (each test casts what it reads). */
 type Lab = Record<string, unknown> & {
@@ -17,11 +17,15 @@ type Lab = Record<string, unknown> & {
   advance(n: number): void;
   stats(): { entities: number; steps: number; fps: number };
   world: {
-    time: number; steps: number; dt: number;
+    time: number;
+    steps: number;
+    dt: number;
     laws: { openingAngle: number; gravitySoftening: number; gravityMethod: string; wind: { velocity: Float64Array } };
     components: Record<string, Record<string, ArrayLike<number>>>;
   };
-  renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; toWorldX(x: number): number; toWorldY(y: number): number } };
+  renderer: {
+    camera: { toScreenX(x: number): number; toScreenY(y: number): number; toWorldX(x: number): number; toWorldY(y: number): number };
+  };
 };
 
 let h: Harness;
@@ -36,7 +40,7 @@ afterAll(async () => {
 async function openLab(folder: string, query: Record<string, string | number>, keys: string[]): Promise<GamePage> {
   const g = await h.openGame(folder, { query });
   expect(await g.canvasColors()).toBeGreaterThan(16);
-  const legend = await g.page.locator('.bp-legend').innerText();
+  const legend = await g.page.locator('.bp-legend').textContent();
   for (const key of ['P', 'N', 'R', ...keys]) expect(legend).toContain(key);
   expect(await g.page.locator('[data-lab="info"]').count()).toBe(1);
   expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
@@ -63,22 +67,33 @@ async function setNumber(g: GamePage, name: string, value: number): Promise<void
 /** Screen position (page px) of world point (x, y), m. */
 async function pageXY(g: GamePage, x: number, y: number): Promise<{ x: number; y: number }> {
   const box = await g.canvasBox();
-  const s = await g.page.evaluate(([wx, wy]) => {
-    const cam = (window.game as unknown as Lab).renderer.camera;
-    return { x: cam.toScreenX(wx!), y: cam.toScreenY(wy!) };
-  }, [x, y]);
+  const s = await g.page.evaluate(
+    ([wx, wy]) => {
+      const cam = (window.game as unknown as Lab).renderer.camera;
+      return { x: cam.toScreenX(wx!), y: cam.toScreenY(wy!) };
+    },
+    [x, y],
+  );
   return { x: box.x + s.x, y: box.y + s.y };
 }
 
 describe('lab-galaxy', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-galaxy', { count: 3000 }, ['Wheel', 'Drag', 'C']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-galaxy', { count: 3000 }, ['Wheel', 'Drag', 'C']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('times its steps, and pausing stops the stars', async () => {
-    await g.waitFor(() => ((window.game as unknown as { timer: { count: number } }).timer.count >= 3), null, 20_000);
+    await g.waitFor(() => (window.game as unknown as { timer: { count: number } }).timer.count >= 3, null, 20_000);
     const timing = await g.page.evaluate(() => {
-      const w = window.game as unknown as Lab & { timer: { mean: number; count: number }; starCount(): number; points: { stats: { points: number } } };
+      const w = window.game as unknown as Lab & {
+        timer: { mean: number; count: number };
+        starCount(): number;
+        points: { stats: { points: number } };
+      };
       return { mean: w.timer.mean, stars: w.starCount(), drawn: w.points.stats.points };
     });
     expect(timing.stars).toBe(3000);
@@ -117,9 +132,19 @@ describe('lab-galaxy', () => {
     await setNumber(g, 'stars (rebuilds)', 2000);
     await g.press('c');
     const rebuilt = await g.page.evaluate(() => {
-      const w = window.game as unknown as Lab & { starCount(): number; params: { color: string }; points: { options: { colorBy: string } } };
+      const w = window.game as unknown as Lab & {
+        starCount(): number;
+        params: { color: string };
+        points: { options: { colorBy: string } };
+      };
       w.advance(2);
-      return { stars: w.starCount(), steps: w.world.steps, theta: w.world.laws.openingAngle, color: w.params.color, colorBy: w.points.options.colorBy };
+      return {
+        stars: w.starCount(),
+        steps: w.world.steps,
+        theta: w.world.laws.openingAngle,
+        color: w.params.color,
+        colorBy: w.points.options.colorBy,
+      };
     });
     expect(rebuilt.stars).toBe(2000);
     expect(rebuilt.theta).toBe(1);
@@ -131,22 +156,43 @@ describe('lab-galaxy', () => {
 
 describe('lab-wormhole', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-wormhole', { count: 300 }, ['Drag', 'Click', 'T']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-wormhole', { count: 300 }, ['Drag', 'Click', 'T']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('moves stars that cross the horizon to the white hole with the same speed and an outward velocity', async () => {
     await pauseAndReset(g);
     const jump = await g.page.evaluate(() => {
-      type Hole = { teleports: number; last: { speedIn: number; speedOut: number; x: number; y: number; step: number }; settings: { horizon: number }; whiteHole: number; ids: Uint32Array };
+      type Hole = {
+        teleports: number;
+        last: { speedIn: number; speedOut: number; x: number; y: number; step: number };
+        settings: { horizon: number };
+        whiteHole: number;
+        ids: Uint32Array;
+      };
       const w = window.game as unknown as Lab & { hole: Hole };
       for (let i = 0; i < 900 && w.hole.teleports === 0; i++) w.advance(1);
-      const hole = w.hole, P = w.world.components.Position!, V = w.world.components.Velocity!;
-      const wx = P.x![hole.whiteHole % 2 ** 25]!, wy = P.y![hole.whiteHole % 2 ** 25]!;
+      const hole = w.hole,
+        P = w.world.components.Position!,
+        V = w.world.components.Velocity!;
+      const wx = P.x![hole.whiteHole % 2 ** 25]!,
+        wy = P.y![hole.whiteHole % 2 ** 25]!;
       // The star that just came out: the one sitting at the exit point.
       let star = 0;
       for (const e of hole.ids) if (e !== 0 && P.x![e % 2 ** 25] === hole.last.x && P.y![e % 2 ** 25] === hole.last.y) star = e;
-      const vr = star ? (V.x![star % 2 ** 25]! * (hole.last.x - wx) + V.y![star % 2 ** 25]! * (hole.last.y - wy)) : Number.NaN;
-      return { teleports: hole.teleports, ...hole.last, horizon: hole.settings.horizon, exitR: Math.hypot(hole.last.x - wx, hole.last.y - wy), star, vr, steps: w.world.steps };
+      const vr = star ? V.x![star % 2 ** 25]! * (hole.last.x - wx) + V.y![star % 2 ** 25]! * (hole.last.y - wy) : Number.NaN;
+      return {
+        teleports: hole.teleports,
+        ...hole.last,
+        horizon: hole.settings.horizon,
+        exitR: Math.hypot(hole.last.x - wx, hole.last.y - wy),
+        star,
+        vr,
+        steps: w.world.steps,
+      };
     });
     expect(jump.teleports).toBeGreaterThan(0);
     expect(jump.step).toBe(jump.steps);
@@ -157,13 +203,14 @@ describe('lab-wormhole', () => {
     expect(jump.vr).toBeGreaterThan(0);
   });
 
-  it('adds stars on a click and moves the white hole (and every star\'s push centre) on a drag', async () => {
+  it("adds stars on a click and moves the white hole (and every star's push centre) on a drag", async () => {
     const before = await g.page.evaluate(() => (window.game as unknown as Lab & { hole: { count: number } }).hole.count);
     const empty = await pageXY(g, 0, -7);
     await g.page.mouse.click(empty.x, empty.y);
     const added = await g.page.evaluate(() => (window.game as unknown as Lab & { hole: { count: number } }).hole.count);
     expect(added).toBe(before + 40);
-    const from = await pageXY(g, 6, 0), to = await pageXY(g, 8, -4);
+    const from = await pageXY(g, 6, 0),
+      to = await pageXY(g, 8, -4);
     const m = g.page.mouse;
     await m.move(from.x, from.y);
     await m.down();
@@ -171,9 +218,15 @@ describe('lab-wormhole', () => {
     await m.up();
     const moved = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { hole: { whiteHole: number; ids: Uint32Array } };
-      const P = w.world.components.Position!, C = w.world.components.CentralForce!;
+      const P = w.world.components.Position!,
+        C = w.world.components.CentralForce!;
       const star = w.hole.ids[0]!;
-      return { x: P.x![w.hole.whiteHole % 2 ** 25]!, y: P.y![w.hole.whiteHole % 2 ** 25]!, cx: C.cx![star % 2 ** 25]!, cy: C.cy![star % 2 ** 25]! };
+      return {
+        x: P.x![w.hole.whiteHole % 2 ** 25]!,
+        y: P.y![w.hole.whiteHole % 2 ** 25]!,
+        cx: C.cx![star % 2 ** 25]!,
+        cy: C.cy![star % 2 ** 25]!,
+      };
     });
     expect(moved.x).toBeCloseTo(8, 1);
     expect(moved.y).toBeCloseTo(-4, 1);
@@ -185,21 +238,35 @@ describe('lab-wormhole', () => {
 
 describe('lab-splash', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-splash', { rain: 0 }, ['Click']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-splash', { rain: 0 }, ['Click']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('a drop hitting the ground bursts into droplets that are all gone a few lifetimes later', async () => {
     await pauseAndReset(g);
     const run = await g.page.evaluate(() => {
       type S = { groundImpacts: number; waterImpacts: number; last: { surface: string; speed: number; droplets: number } };
-      const w = window.game as unknown as Lab & { splash: S; splashCount(): number; dropCount(): number; drop(x: number, y: number): number };
+      const w = window.game as unknown as Lab & {
+        splash: S;
+        splashCount(): number;
+        dropCount(): number;
+        drop(x: number, y: number): number;
+      };
       const before = w.splashCount();
       w.drop(3, 3);
       const dropsInAir = w.dropCount();
       let steps = 0;
-      while (w.splash.groundImpacts === 0 && steps < 240) { w.advance(1); steps++; }
+      while (w.splash.groundImpacts === 0 && steps < 240) {
+        w.advance(1);
+        steps++;
+      }
       const justAfter = w.splashCount();
-      const droplets = w.splash.last.droplets, speed = w.splash.last.speed, surface = w.splash.last.surface;
+      const droplets = w.splash.last.droplets,
+        speed = w.splash.last.speed,
+        surface = w.splash.last.surface;
       w.advance(30);
       const peakLater = w.splashCount();
       w.advance(150);
@@ -223,10 +290,19 @@ describe('lab-splash', () => {
       const w = window.game as unknown as Lab & { splash: S; splashCount(): number; drop(x: number, y: number): number };
       w.drop(-2.5, 2);
       let steps = 0;
-      while (w.splash.waterImpacts === 0 && steps < 240) { w.advance(1); steps++; }
+      while (w.splash.waterImpacts === 0 && steps < 240) {
+        w.advance(1);
+        steps++;
+      }
       const crown = w.splashCount();
       w.advance(150);
-      return { impacts: w.splash.waterImpacts, crown, absorbed: w.splash.absorbed, ripples: Array.from(w.splash.rippleT).filter((t) => t > 0).length, end: w.splashCount() };
+      return {
+        impacts: w.splash.waterImpacts,
+        crown,
+        absorbed: w.splash.absorbed,
+        ripples: Array.from(w.splash.rippleT).filter((t) => t > 0).length,
+        end: w.splashCount(),
+      };
     });
     expect(water.impacts).toBe(1);
     expect(water.crown).toBeGreaterThan(5);
@@ -248,16 +324,21 @@ describe('lab-splash', () => {
 
 describe('lab-smoke', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-smoke', {}, ['Click']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-smoke', {}, ['Click']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('settles to a steady puff count near rate x mean lifetime, which follows the rate set in the panel', async () => {
     await pauseAndReset(g);
-    const count = () => g.page.evaluate((n) => {
-      const w = window.game as unknown as Lab & { particleCount(): number };
-      w.advance(n);
-      return w.particleCount();
-    }, 0);
+    const count = () =>
+      g.page.evaluate((n) => {
+        const w = window.game as unknown as Lab & { particleCount(): number };
+        w.advance(n);
+        return w.particleCount();
+      }, 0);
     const advance = (n: number) => g.page.evaluate((k) => (window.game as unknown as Lab).advance(k), n);
     await advance(120);
     const early = await count();
@@ -297,7 +378,9 @@ describe('lab-smoke', () => {
     expect(drift.meanX).toBeGreaterThan(drift.x0 + 3);
     const target = await pageXY(g, 8, 2);
     await g.page.mouse.click(target.x, target.y);
-    const source = await g.page.evaluate(() => (window.game as unknown as Lab & { smoke: { source: [number, number] } }).smoke.source.slice());
+    const source = await g.page.evaluate(() =>
+      (window.game as unknown as Lab & { smoke: { source: [number, number] } }).smoke.source.slice(),
+    );
     expect(source[0]).toBeCloseTo(8, 1);
     expect(source[1]).toBeCloseTo(2, 1);
     expect(g.errors).toEqual([]);
@@ -306,17 +389,31 @@ describe('lab-smoke', () => {
 
 describe('lab-fire', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-fire', {}, ['Click']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-fire', {}, ['Click']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('reaches a steady count that scales with the intensity, flames turning into glow', async () => {
     await pauseAndReset(g);
-    const at = (n: number) => g.page.evaluate((k) => {
-      const w = window.game as unknown as Lab & { particleCount(e?: number): number; fire: { flames: number; glow: number; sparks: number; smoke: number } };
-      w.advance(k);
-      const f = w.fire;
-      return { all: w.particleCount(), flames: w.particleCount(f.flames), glow: w.particleCount(f.glow), sparks: w.particleCount(f.sparks), smoke: w.particleCount(f.smoke) };
-    }, n);
+    const at = (n: number) =>
+      g.page.evaluate((k) => {
+        const w = window.game as unknown as Lab & {
+          particleCount(e?: number): number;
+          fire: { flames: number; glow: number; sparks: number; smoke: number };
+        };
+        w.advance(k);
+        const f = w.fire;
+        return {
+          all: w.particleCount(),
+          flames: w.particleCount(f.flames),
+          glow: w.particleCount(f.glow),
+          sparks: w.particleCount(f.sparks),
+          smoke: w.particleCount(f.smoke),
+        };
+      }, n);
     const c1 = await at(240);
     const c2 = await at(60);
     // 500 flames/s (flicker 0.7-1.3) x 0.375 s + as many glows x 0.5 s + 14 sparks/s x 1.3 s + 30 smoke/s x 2.75 s = about 540.
@@ -343,15 +440,20 @@ describe('lab-fire', () => {
 
 describe('lab-sparks', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-sparks', {}, ['Mouse', 'Space', 'W']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-sparks', {}, ['Mouse', 'Space', 'W']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   it('sparks bounce off the floor and settle to a steady count; Space stops them', async () => {
     await pauseAndReset(g);
     const run = await g.page.evaluate(() => {
       const w = window.game as unknown as Lab & { particleCount(): number; sparks: { bounces: number; on: boolean } };
       w.advance(180);
-      const c1 = w.particleCount(), b1 = w.sparks.bounces;
+      const c1 = w.particleCount(),
+        b1 = w.sparks.bounces;
       w.advance(60);
       return { c1, c2: w.particleCount(), b1, b2: w.sparks.bounces };
     });
@@ -400,8 +502,12 @@ describe('lab-sparks', () => {
 
 describe('lab-attractors', () => {
   let g: GamePage;
-  beforeAll(async () => { g = await openLab('lab-attractors', { count: 500 }, ['Click', 'Drag', 'Right-click', 'V', 'T']); });
-  afterAll(async () => { await g?.close(); });
+  beforeAll(async () => {
+    g = await openLab('lab-attractors', { count: 500 }, ['Click', 'Drag', 'Right-click', 'V', 'T']);
+  });
+  afterAll(async () => {
+    await g?.close();
+  });
 
   const ids = () => g.page.evaluate(() => (window.game as unknown as Lab & { attractorIds(): number[] }).attractorIds());
 
@@ -427,7 +533,8 @@ describe('lab-attractors', () => {
     await g.page.mouse.click(first.x, first.y, { button: 'right' });
     const left = await ids();
     expect(left.length).toBe(2);
-    const from = await pageXY(g, 1.5, 2.5), to = await pageXY(g, -6, 3);
+    const from = await pageXY(g, 1.5, 2.5),
+      to = await pageXY(g, -6, 3);
     const m = g.page.mouse;
     await m.move(from.x, from.y);
     await m.down();
@@ -442,15 +549,21 @@ describe('lab-attractors', () => {
     expect(dragged.some(([x, y]) => Math.abs(x! + 6) < 0.1 && Math.abs(y! - 3) < 0.1)).toBe(true);
   });
 
-  it('the panel sets the attractors\' mass and softening, V turns the vortex on, and the particles respond', async () => {
+  it("the panel sets the attractors' mass and softening, V turns the vortex on, and the particles respond", async () => {
     await setNumber(g, 'attractor G M (m³/s²)', 100);
     await setNumber(g, 'softening (m)', 1);
     await g.press('v');
     const state = await g.page.evaluate(() => {
-      const w = window.game as unknown as Lab & { attractorIds(): number[]; field: { particles: Uint32Array }; params: { vortex: boolean; vortexStrength: number } };
-      const A = w.world.components.Attractor!, Vx = w.world.components.Vortex!;
+      const w = window.game as unknown as Lab & {
+        attractorIds(): number[];
+        field: { particles: Uint32Array };
+        params: { vortex: boolean; vortexStrength: number };
+      };
+      const A = w.world.components.Attractor!,
+        Vx = w.world.components.Vortex!;
       const p = w.field.particles[0]!;
-      const P = w.world.components.Position!, V = w.world.components.Velocity!;
+      const P = w.world.components.Position!,
+        V = w.world.components.Velocity!;
       // Mean angular momentum about the vortex centre per kg, m^2/s: the swirl's torque k_v r drives it up.
       const spin = (): number => {
         let L = 0;
@@ -460,8 +573,13 @@ describe('lab-attractors', () => {
       const L0 = spin();
       w.advance(120);
       return {
-        masses: w.attractorIds().map((e) => A.mass![e % 2 ** 25]), soft: w.attractorIds().map((e) => A.softening![e % 2 ** 25]),
-        vortex: w.params.vortex, k: Vx.k![p % 2 ** 25], strength: w.params.vortexStrength, L0, L1: spin(),
+        masses: w.attractorIds().map((e) => A.mass![e % 2 ** 25]),
+        soft: w.attractorIds().map((e) => A.softening![e % 2 ** 25]),
+        vortex: w.params.vortex,
+        k: Vx.k![p % 2 ** 25],
+        strength: w.params.vortexStrength,
+        L0,
+        L1: spin(),
       };
     });
     expect(state.masses.every((m) => m === 100)).toBe(true);

@@ -10,9 +10,15 @@
  * run with small counts (?sparks, ?generations=1, ?opening=0) and waits are generous.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
-interface LayerStats { particles: number; drawn: number; trails: number; pooled: number; frames: number }
+interface LayerStats {
+  particles: number;
+  drawn: number;
+  trails: number;
+  pooled: number;
+  frames: number;
+}
 interface FireworksGame {
   params: { autoShow: boolean; trails: boolean };
   show: { launched: number; bursts: number; shellCount: number; shellScale: Float64Array };
@@ -54,7 +60,7 @@ describe('fireworks', () => {
     const stats = await page.stats();
     expect(stats.entities).toBeGreaterThan(0);
     expect(await page.canvasColors()).toBeGreaterThan(16);
-    const legend = await page.page.locator('.bp-legend').innerText();
+    const legend = await page.page.locator('.bp-legend').textContent();
     for (const key of ['Click', 'A', 'T']) expect(legend).toContain(key);
     expect(page.errors).toEqual([]);
   });
@@ -72,7 +78,10 @@ describe('fireworks', () => {
     const burstAfter = await g.page.evaluate(() => {
       const game = window.game as unknown as Stepped;
       let steps = 0;
-      while (game.show.bursts < 1 && steps < 1200) { game.loop.stepOnce(); steps++; }
+      while (game.show.bursts < 1 && steps < 1200) {
+        game.loop.stepOnce();
+        steps++;
+      }
       for (let i = 0; i < 2; i++) game.loop.stepOnce(); // the burst's first steps
       (game as unknown as { paused: boolean }).paused = true; // drawn as it is: no step between frames
       return steps;
@@ -80,7 +89,9 @@ describe('fireworks', () => {
     expect(burstAfter).toBeLessThan(1200);
     await g.frames(2);
     const peak = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
-    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = false; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     // Two steps into the burst (its 120 sparks come out over several steps): dozens drawn, not zero.
     expect(peak.particles).toBeGreaterThan(40);
     expect(peak.drawn).toBeGreaterThan(40);
@@ -93,7 +104,7 @@ describe('fireworks', () => {
         for (let i = 0; i < 60; i++) game.loop.stepOnce();
       });
       await g.frames(2);
-      if (await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount()) === 0) break;
+      if ((await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())) === 0) break;
     }
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
     const after = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
@@ -105,7 +116,9 @@ describe('fireworks', () => {
   it('holding the button longer makes a bigger burst', async () => {
     const g = page;
     const b = await g.canvasBox();
-    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = true; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
     await g.page.mouse.move(b.x + b.width * 0.3, b.y + b.height * 0.5);
     await g.page.mouse.down();
     await g.page.waitForTimeout(1700);
@@ -117,7 +130,9 @@ describe('fireworks', () => {
     }, null);
     expect(scales[0]).toBeCloseTo(3, 6); // held 1.7 s >= 1.5 s: the largest burst
     expect(scales[1]).toBeLessThan(1.5); // a click
-    await g.page.evaluate(() => { (window.game as unknown as { paused: boolean }).paused = false; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     expect(g.errors).toEqual([]);
   });
 
@@ -150,7 +165,7 @@ describe('black hole', () => {
 
   it('loads with the holes, the ship, lives and score on screen and no errors', async () => {
     expect(await page.canvasColors()).toBeGreaterThan(16);
-    expect(await page.page.locator('[data-hud="numbers"]').innerText()).toMatch(/Lives ♥♥♥\s+Score 0\s+Holes 2/);
+    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0\s+Holes 2/);
     const s = await page.stats();
     expect(s.entities).toBe(3); // the ship (with its exhaust emitter) and two holes
     await page.waitFor(() => (window.game as unknown as BlackHoleGameHandle).pathPoints() > 1, null);
@@ -162,17 +177,28 @@ describe('black hole', () => {
     await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).reset());
     const v0 = await ship(g);
     await g.page.keyboard.down('ArrowUp');
-    const up = await g.waitFor((vy0) => {
-      const game = window.game as unknown as BlackHoleGameHandle;
-      const s = game.ship();
-      return s[3]! > vy0 + 0.5 && game.particleCount() > 5 ? { s, thrust: game.bh.thrust } : null;
-    }, v0[3]!, 30_000);
+    const up = await g.waitFor(
+      (vy0) => {
+        const game = window.game as unknown as BlackHoleGameHandle;
+        const s = game.ship();
+        return s[3]! > vy0 + 0.5 && game.particleCount() > 5 ? { s, thrust: game.bh.thrust } : null;
+      },
+      v0[3]!,
+      30_000,
+    );
     expect(up.thrust).toBe('up');
     expect(up.s[1]).toBeGreaterThan(v0[1]!);
     // One direction at a time: pressing right while up is held switches to right.
     await g.page.keyboard.down('ArrowRight');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('right');
-    const right = await g.waitFor(() => { const s = (window.game as unknown as BlackHoleGameHandle).ship(); return s[2]! > 0.5 ? s : null; }, null, 30_000);
+    const right = await g.waitFor(
+      () => {
+        const s = (window.game as unknown as BlackHoleGameHandle).ship();
+        return s[2]! > 0.5 ? s : null;
+      },
+      null,
+      30_000,
+    );
     expect(right[2]).toBeGreaterThan(0.5);
     await g.page.keyboard.up('ArrowRight');
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('up');
@@ -202,7 +228,7 @@ describe('black hole', () => {
       return { spec: game.level?.spec, holes: game.bh.holes.length };
     });
     expect(level).toEqual({ spec: expect.objectContaining({ level: 1, holes: 1 }), holes: 1 });
-    expect(await g.page.locator('[data-hud="numbers"]').innerText()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);
@@ -211,17 +237,24 @@ describe('black hole', () => {
 
   it('V replays the run from its start (the HUD says so) and ends in the state the run was in, bit for bit', async () => {
     const g = page;
-    type Replaying = BlackHoleGameHandle & { replay: { player: { played: number } | null; play(): void; step(): void }; stateHash(): string };
+    type Replaying = BlackHoleGameHandle & {
+      replay: { player: { played: number } | null; play(): void; step(): void };
+      stateHash(): string;
+    };
     await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).reset());
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).ship()[3]! > 1, null, 30_000);
     await g.page.keyboard.up('ArrowUp');
     // Paused while V starts the replay, so a slow machine cannot finish it before the HUD is read.
-    await g.page.evaluate(() => { (window.game as unknown as BlackHoleGameHandle).paused = true; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as BlackHoleGameHandle).paused = true;
+    });
     await g.press('v');
     expect(await g.page.evaluate(() => (window.game as unknown as Replaying).replay.player !== null)).toBe(true);
     await g.waitFor(() => /▶ Replay/.test(document.querySelector('[data-hud="numbers"]')?.textContent ?? ''), null);
-    await g.page.evaluate(() => { (window.game as unknown as BlackHoleGameHandle).paused = false; });
+    await g.page.evaluate(() => {
+      (window.game as unknown as BlackHoleGameHandle).paused = false;
+    });
     await g.waitFor(() => (window.game as unknown as Replaying).replay.player === null, null, 60_000);
     // The same check without frames in between: play the recording to its end in one go.
     const [end, replayed] = await g.page.evaluate(() => {
@@ -238,17 +271,25 @@ describe('black hole', () => {
   it('falling into a hole costs a life and says so on screen', async () => {
     const g = page;
     await g.page.evaluate(() => {
-      const game = window.game as unknown as BlackHoleGameHandle & { world: { components: { PreviousPosition: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } }; bh: { ship: number } };
+      const game = window.game as unknown as BlackHoleGameHandle & {
+        world: { components: { PreviousPosition: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
+        bh: { ship: number };
+      };
       game.reset();
-      const c = game.world.components, hole = game.bh.holes[0]!, s = game.bh.ship;
+      const c = game.world.components,
+        hole = game.bh.holes[0]!,
+        s = game.bh.ship;
       // Into the first hole's horizon (the next step notices).
-      c.Position.x[s] = c.Position.x[hole]!; c.Position.y[s] = c.Position.y[hole]! + 0.5 * game.bh.holeRadius[0]!;
-      c.PreviousPosition.x[s] = c.Position.x[s]!; c.PreviousPosition.y[s] = c.Position.y[s]!;
-      c.Velocity.x[s] = 0; c.Velocity.y[s] = 0;
+      c.Position.x[s] = c.Position.x[hole]!;
+      c.Position.y[s] = c.Position.y[hole]! + 0.5 * game.bh.holeRadius[0]!;
+      c.PreviousPosition.x[s] = c.Position.x[s]!;
+      c.PreviousPosition.y[s] = c.Position.y[s]!;
+      c.Velocity.x[s] = 0;
+      c.Velocity.y[s] = 0;
     });
     await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).bh.lives === 2, null, 30_000);
     await g.waitFor(() => /Lives ♥♥♡/.test(document.querySelector('[data-hud="numbers"]')?.textContent ?? ''), null);
-    expect(await g.page.locator('[data-hud="message"]').innerText()).toMatch(/Swallowed by a black hole! 2 lives left/);
+    expect(await g.page.locator('[data-hud="message"]').textContent()).toMatch(/Swallowed by a black hole! 2 lives left/);
     expect(g.errors).toEqual([]);
   });
 });

@@ -22,7 +22,9 @@ export function decodePng(png: Uint8Array): DecodedPng {
   for (let i = 0; i < 8; i++) if (png[i] !== sig[i]) throw new Error('decodePng: not a PNG file');
   const view = new DataView(png.buffer, png.byteOffset, png.byteLength);
   let offset = 8;
-  let width = 0, height = 0, channels: 3 | 4 = 4;
+  let width = 0,
+    height = 0,
+    channels: 3 | 4 = 4;
   const idat: Uint8Array[] = [];
   while (offset < png.length) {
     const length = view.getUint32(offset);
@@ -31,9 +33,13 @@ export function decodePng(png: Uint8Array): DecodedPng {
     if (type === 'IHDR') {
       width = view.getUint32(offset + 8);
       height = view.getUint32(offset + 12);
-      const depth = body[8], colorType = body[9], interlace = body[12];
+      const depth = body[8],
+        colorType = body[9],
+        interlace = body[12];
       if (depth !== 8 || (colorType !== 2 && colorType !== 6) || interlace !== 0) {
-        throw new Error(`decodePng: only 8-bit RGB/RGBA non-interlaced PNGs are supported (depth ${depth}, colour type ${colorType}, interlace ${interlace})`);
+        throw new Error(
+          `decodePng: only 8-bit RGB/RGBA non-interlaced PNGs are supported (depth ${depth}, colour type ${colorType}, interlace ${interlace})`,
+        );
       }
       channels = colorType === 2 ? 3 : 4;
     } else if (type === 'IDAT') {
@@ -57,17 +63,28 @@ export function decodePng(png: Uint8Array): DecodedPng {
       const c = x >= channels && y > 0 ? data[dst + x - stride - channels]! : 0;
       let v: number;
       switch (filter) {
-        case 0: v = r; break;
-        case 1: v = r + a; break;
-        case 2: v = r + b; break;
-        case 3: v = r + ((a + b) >> 1); break;
+        case 0:
+          v = r;
+          break;
+        case 1:
+          v = r + a;
+          break;
+        case 2:
+          v = r + b;
+          break;
+        case 3:
+          v = r + ((a + b) >> 1);
+          break;
         case 4: {
           const p = a + b - c;
-          const pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+          const pa = Math.abs(p - a),
+            pb = Math.abs(p - b),
+            pc = Math.abs(p - c);
           v = r + (pa <= pb && pa <= pc ? a : pb <= pc ? b : c);
           break;
         }
-        default: throw new Error(`decodePng: bad filter type ${filter} in row ${y}`);
+        default:
+          throw new Error(`decodePng: bad filter type ${filter} in row ${y}`);
       }
       data[dst + x] = v & 255;
     }

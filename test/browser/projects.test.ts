@@ -6,12 +6,21 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness } from './harness';
 
-interface Game { paused: boolean; world: { time: number; components: any }; step(): void }
+interface Game {
+  paused: boolean;
+  // biome-ignore lint/suspicious/noExplicitAny: the page's stores are read loosely here
+  world: { time: number; components: any };
+  step(): void;
+}
 
 describe('projects', () => {
   let h: Harness;
-  beforeAll(async () => { h = await Harness.start(); });
-  afterAll(async () => { await h?.close(); });
+  beforeAll(async () => {
+    h = await Harness.start();
+  });
+  afterAll(async () => {
+    await h?.close();
+  });
 
   it('solar-system: ] raises the rate; the error table starts at the ephemeris', async () => {
     const g = await h.openGame('solar-system');
@@ -28,16 +37,23 @@ describe('projects', () => {
 
   it('submarine: D drives the screw ahead, W floods the tanks', async () => {
     const g = await h.openGame('submarine');
-    const x0 = await g.page.evaluate(() => { const w = window.game as unknown as Game & { hull(): number }; return w.world.components.Position.x[w.hull()] as number; });
+    const x0 = await g.page.evaluate(() => {
+      const w = window.game as unknown as Game & { hull(): number };
+      return w.world.components.Position.x[w.hull()] as number;
+    });
     await g.page.keyboard.down('d');
     await g.page.keyboard.down('w');
     // Held until the controls have moved (simulated time, not a wall-clock wait: a loaded machine
     // runs few frames a second, and 1.5 s of held keys once left the throttle at 0.08).
-    const s = await g.waitFor((start) => {
-      const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
-      const r = { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
-      return r.throttle > 0.3 && r.fill > 0.1 && r.x > start ? r : null;
-    }, x0, 30_000);
+    const s = await g.waitFor(
+      (start) => {
+        const w = window.game as unknown as Game & { hull(): number; state: { throttle: number; fill: number } };
+        const r = { throttle: w.state.throttle, fill: w.state.fill, x: w.world.components.Position.x[w.hull()] as number };
+        return r.throttle > 0.3 && r.fill > 0.1 && r.x > start ? r : null;
+      },
+      x0,
+      30_000,
+    );
     await g.page.keyboard.up('d');
     await g.page.keyboard.up('w');
     expect(s.throttle).toBeGreaterThan(0.3);
@@ -50,16 +66,23 @@ describe('projects', () => {
   it('flight-simulator: Shift opens the throttle, the down arrow pitches the nose up', async () => {
     const g = await h.openGame('flight-simulator');
     type Flight = Game & { state: { throttle: number; elevator: number }; instruments(): { pitch: number; speed: number } };
-    const before = await g.page.evaluate(() => { const w = window.game as unknown as Flight; return { throttle: w.state.throttle, pitch: w.instruments().pitch }; });
+    const before = await g.page.evaluate(() => {
+      const w = window.game as unknown as Flight;
+      return { throttle: w.state.throttle, pitch: w.instruments().pitch };
+    });
     await g.page.keyboard.down('Shift');
     await g.page.keyboard.down('ArrowDown');
     // Held until the nose has come up (simulated time, not a wall-clock wait, which a loaded machine
     // fills with few frames).
-    const during = await g.waitFor((b) => {
-      const w = window.game as unknown as Flight;
-      const r = { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch };
-      return r.throttle > b.throttle && r.elevator > 0.5 && r.pitch > b.pitch + 1 ? r : null;
-    }, before, 30_000);
+    const during = await g.waitFor(
+      (b) => {
+        const w = window.game as unknown as Flight;
+        const r = { throttle: w.state.throttle, elevator: w.state.elevator, pitch: w.instruments().pitch };
+        return r.throttle > b.throttle && r.elevator > 0.5 && r.pitch > b.pitch + 1 ? r : null;
+      },
+      before,
+      30_000,
+    );
     await g.page.keyboard.up('ArrowDown');
     await g.page.keyboard.up('Shift');
     expect(during.throttle).toBeGreaterThan(before.throttle);

@@ -3,10 +3,10 @@
  * headless Chromium, hosted by the bouncing-balls page (window.game.renderer is a WorldRenderer).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Camera } from '../../packages/render-pixi/src/camera';
+import { choiceParam, flagParam, numberParam } from '../../games/shared/params';
 import { parseColor, seededColor } from '../../packages/render-common/src/colors';
-import { numberParam, flagParam, choiceParam } from '../../games/shared/params';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { Camera } from '../../packages/render-pixi/src/camera';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 describe('Camera (metres to pixels)', () => {
   it('fits a view centred with padding and flips y', () => {
@@ -35,7 +35,8 @@ describe('Camera (metres to pixels)', () => {
     const cam = new Camera({ width: 400, height: 400, pixelsPerMeter: 20 });
     expect(cam.toScreenX(0)).toBeCloseTo(0, 12); // default: world origin at the bottom-left corner
     expect(cam.toScreenY(0)).toBeCloseTo(400, 12);
-    const cx = cam.toWorldX(200), cy = cam.toWorldY(200);
+    const cx = cam.toWorldX(200),
+      cy = cam.toWorldY(200);
     cam.setPixelsPerMeter(80);
     expect(cam.toWorldX(200)).toBeCloseTo(cx, 12);
     expect(cam.toWorldY(200)).toBeCloseTo(cy, 12);
@@ -73,7 +74,9 @@ describe('colours and URL parameters', () => {
   it('reads URL parameters with clear errors', () => {
     expect(numberParam('count', { default: 40, min: 1, max: 100, integer: true }, '?count=8')).toBe(8);
     expect(numberParam('count', { default: 40, min: 1, max: 100 }, '')).toBe(40);
-    expect(() => numberParam('count', { default: 40, min: 1, max: 100, integer: true }, '?count=2.5')).toThrow(/count must be an integer in \[1, 100\], got "2.5"/);
+    expect(() => numberParam('count', { default: 40, min: 1, max: 100, integer: true }, '?count=2.5')).toThrow(
+      /count must be an integer in \[1, 100\], got "2.5"/,
+    );
     expect(() => numberParam('count', { default: 40, min: 1, max: 100 }, '?count=abc')).toThrow(RangeError);
     expect(flagParam('debug', '?debug')).toBe(true);
     expect(flagParam('debug', '?debug=0')).toBe(false);
@@ -86,7 +89,11 @@ describe('colours and URL parameters', () => {
 /** What the renderer tests read from window.game on the bouncing-balls page. */
 interface Host {
   paused: boolean;
-  world: { steps: number; collision: { boundary: { min: Float64Array; max: Float64Array } }; components: Record<string, Record<string, Float64Array>> };
+  world: {
+    steps: number;
+    collision: { boundary: { min: Float64Array; max: Float64Array } };
+    components: Record<string, Record<string, Float64Array>>;
+  };
   ballIds(): number[];
   spawn(x: number, y: number, vx?: number, vy?: number): number;
   remove(eid: number): void;
@@ -124,7 +131,12 @@ describe('WorldRenderer in the browser', () => {
       const game = window.game as unknown as Host;
       const R = game.renderer.constructor;
       const attempt = (f: () => unknown): string => {
-        try { f(); return 'no error'; } catch (e) { return `${(e as Error).name}: ${(e as Error).message}`; }
+        try {
+          f();
+          return 'no error';
+        } catch (e) {
+          return `${(e as Error).name}: ${(e as Error).message}`;
+        }
       };
       const w = game.world;
       const id = game.ballIds()[0]!;
@@ -163,11 +175,18 @@ describe('WorldRenderer in the browser', () => {
       game.paused = true;
       const e = game.spawn(4, 8, 3, 0);
       game.step(); // one step: PreviousPosition is the start of it, Position the end
-      const P = game.world.components.Position!, O = game.world.components.PreviousPosition!;
+      const P = game.world.components.Position!,
+        O = game.world.components.PreviousPosition!;
       const cam = game.renderer.camera;
-      const at = (alpha: number) => { game.renderer.render(alpha); const p = game.renderer.drawnPosition(e)!; return [p.x, p.y]; };
+      const at = (alpha: number) => {
+        game.renderer.render(alpha);
+        const p = game.renderer.drawnPosition(e)!;
+        return [p.x, p.y];
+      };
       return {
-        a0: at(0), a1: at(1), ah: at(0.5),
+        a0: at(0),
+        a1: at(1),
+        ah: at(0.5),
         prev: [cam.toScreenX(O.x![e]!), cam.toScreenY(O.y![e]!)],
         cur: [cam.toScreenX(P.x![e]!), cam.toScreenY(P.y![e]!)],
         moved: P.x![e]! - O.x![e]!,
@@ -185,8 +204,13 @@ describe('WorldRenderer in the browser', () => {
   });
 
   it('gives entities display objects as they come and takes them away as they go', async () => {
-    await g.page.evaluate(() => { (window.game as unknown as Host).paused = true; });
-    const n0 = await g.waitFor(() => { const game = window.game as unknown as Host; return game.renderer.stats.balls === game.ballIds().length && game.renderer.stats.balls; }, null);
+    await g.page.evaluate(() => {
+      (window.game as unknown as Host).paused = true;
+    });
+    const n0 = await g.waitFor(() => {
+      const game = window.game as unknown as Host;
+      return game.renderer.stats.balls === game.ballIds().length && game.renderer.stats.balls;
+    }, null);
     const added = await g.page.evaluate(() => (window.game as unknown as Host).spawn(12, 8));
     await g.waitFor((n) => (window.game as unknown as Host).renderer.stats.balls === n + 1, n0);
     expect(await g.page.evaluate((e) => (window.game as unknown as Host).renderer.drawnPosition(e) !== null, added)).toBe(true);
@@ -196,7 +220,7 @@ describe('WorldRenderer in the browser', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('never draws a new entity with a removed one\'s state: the old handle is refused, the slot\'s new ball has its own', async () => {
+  it("never draws a new entity with a removed one's state: the old handle is refused, the slot's new ball has its own", async () => {
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as Host;
       game.paused = true;
@@ -207,14 +231,23 @@ describe('WorldRenderer in the browser', () => {
       const fresh = game.spawn(15, 4); // bitecs reuses the slot at once
       game.renderer.render(1);
       const slot = fresh % 2 ** 25; // slotOf, in the page
-      const P = game.world.components.Position!, cam = game.renderer.camera;
+      const P = game.world.components.Position!,
+        cam = game.renderer.camera;
       let refused = '';
-      try { game.renderer.setColor(old, 0x00ff00); } catch (e) { refused = String(e); }
+      try {
+        game.renderer.setColor(old, 0x00ff00);
+      } catch (e) {
+        refused = String(e);
+      }
       const p = game.renderer.drawnPosition(fresh)!;
       return {
-        sameSlot: old % 2 ** 25 === slot, differ: fresh !== old, refused,
-        oldDrawn: game.renderer.drawnPosition(old), freshColor: game.renderer.colorOf(fresh),
-        drawn: [p.x, p.y], expected: [cam.toScreenX(P.x![slot]!), cam.toScreenY(P.y![slot]!)],
+        sameSlot: old % 2 ** 25 === slot,
+        differ: fresh !== old,
+        refused,
+        oldDrawn: game.renderer.drawnPosition(old),
+        freshColor: game.renderer.colorOf(fresh),
+        drawn: [p.x, p.y],
+        expected: [cam.toScreenX(P.x![slot]!), cam.toScreenY(P.y![slot]!)],
       };
     });
     expect(r.sameSlot).toBe(true);
@@ -253,10 +286,14 @@ describe('WorldRenderer in the browser', () => {
       game.renderer.setTrails({ length: 20 });
       game.paused = false;
     });
-    const s = await g.waitFor(() => {
-      const st = (window.game as unknown as Host).renderer.stats;
-      return st.contacts > 0 && st.arrows > 0 ? { ...st } : null;
-    }, null, 30_000);
+    const s = await g.waitFor(
+      () => {
+        const st = (window.game as unknown as Host).renderer.stats;
+        return st.contacts > 0 && st.arrows > 0 ? { ...st } : null;
+      },
+      null,
+      30_000,
+    );
     expect(s.segments).toBe(3);
     expect(await g.page.evaluate(() => (window.game as unknown as Host).renderer.trailsEnabled)).toBe(true);
     expect(await g.canvasColors()).toBeGreaterThan(16);
@@ -276,8 +313,16 @@ describe('WorldRenderer in the browser', () => {
     const canvas = await g.canvasBox();
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as Host;
-      const cam = game.renderer.camera, box = game.world.collision.boundary;
-      return { x0: cam.toScreenX(box.min[0]!), x1: cam.toScreenX(box.max[0]!), yTop: cam.toScreenY(box.max[1]!), yBottom: cam.toScreenY(box.min[1]!), w: cam.width, h: cam.height };
+      const cam = game.renderer.camera,
+        box = game.world.collision.boundary;
+      return {
+        x0: cam.toScreenX(box.min[0]!),
+        x1: cam.toScreenX(box.max[0]!),
+        yTop: cam.toScreenY(box.max[1]!),
+        yBottom: cam.toScreenY(box.min[1]!),
+        w: cam.width,
+        h: cam.height,
+      };
     });
     expect(r.h).toBe(canvas.height);
     expect(canvas.height).toBeGreaterThan(560);
@@ -291,7 +336,14 @@ describe('WorldRenderer in the browser', () => {
 
   it('uses the ParticleContainer path from 1000 balls on (auto) or when asked', async () => {
     const big = await h.openGame('bouncing-balls', { query: { count: 1200, trails: 0 } });
-    const s = await big.waitFor(() => { const st = (window.game as unknown as Host).renderer.stats; return st.balls === 1200 ? { ...st } : null; }, null, 30_000);
+    const s = await big.waitFor(
+      () => {
+        const st = (window.game as unknown as Host).renderer.stats;
+        return st.balls === 1200 ? { ...st } : null;
+      },
+      null,
+      30_000,
+    );
     expect(s.mode).toBe('particles');
     expect(await big.canvasColors()).toBeGreaterThan(16);
     expect(big.errors).toEqual([]);

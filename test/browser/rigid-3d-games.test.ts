@@ -3,14 +3,17 @@
  * Chromium: each loads without errors and draws its shapes, and input changes the game.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 interface Game3D {
   paused: boolean;
   step(): void;
   reset(): void;
   world: { steps: number; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
-  renderer: { stats: { shaped: number; shapes: { boxes: number; spheres: number; capsules: number; cylinders: number; hulls: number } }; drawnPosition(e: number): number[] | null };
+  renderer: {
+    stats: { shaped: number; shapes: { boxes: number; spheres: number; capsules: number; cylinders: number; hulls: number } };
+    drawnPosition(e: number): number[] | null;
+  };
   app: { camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } } };
 }
 
@@ -57,7 +60,8 @@ describe('3D rigid-body games in headless Chromium', () => {
     // A press on the ball grabs it; moving the hand pulls it.
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
-      const ball = game.handles().ball, P = game.world.components.Position;
+      const ball = game.handles().ball,
+        P = game.world.components.Position;
       const at = game.renderer.drawnPosition(ball)!;
       const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
       const pressed = game.pressAt(s.x, s.y);
@@ -143,7 +147,7 @@ describe('3D rigid-body games in headless Chromium', () => {
   it('rotating-cube (room mode, the default): the cube lands in its room and Space makes it jump', async () => {
     const g = await open('rotating-cube', {});
     // The legend names the room's keys and the modes behind M.
-    const legend = await g.page.locator('.bp-legend').innerText();
+    const legend = await g.page.locator('.bp-legend').textContent();
     for (const text of ['Space', 'jump', 'room / cube on a pivot / Dzhanibekov flip']) expect(legend).toContain(text);
     type Cube = Game3D & { body(): number; angularVelocity(): number[] };
     const landed = await g.page.evaluate(() => {

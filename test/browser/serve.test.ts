@@ -9,12 +9,17 @@
  * process for longer than that, so one slow page is noise, a slow median is a regression. The
  * slowest page is printed.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { pathToFileURL } from 'node:url';
+
 import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { acquireSiteLock, readRegistry, repoRoot } from './chromium.mjs';
 
-interface DevServer { url: string; stop(): Promise<void>; builds(): number }
+interface DevServer {
+  url: string;
+  stop(): Promise<void>;
+  builds(): number;
+}
 
 const registry = await readRegistry();
 
@@ -35,13 +40,17 @@ describe('npm start (scripts/serve.mjs, watching)', () => {
   beforeAll(async () => {
     // One browser test file at a time (./harness): the watching build is as heavy as a page.
     releaseLane = await acquireSiteLock({ name: 'browser-lane', timeoutMs: 590_000 });
-    const { startServer } = await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href) as {
+    const { startServer } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'serve.mjs')).href)) as {
       startServer(o: { port: number; watch: boolean; log: (line: string) => void }): Promise<DevServer>;
     };
     server = await startServer({ port: 0, watch: true, log: () => undefined });
   });
   afterAll(async () => {
-    try { await server?.stop(); } finally { releaseLane?.(); }
+    try {
+      await server?.stop();
+    } finally {
+      releaseLane?.();
+    }
   });
 
   it('answers every page from memory after sitting idle: median page under 300 ms', async () => {
@@ -54,11 +63,13 @@ describe('npm start (scripts/serve.mjs, watching)', () => {
       const js = await timedFetch(`${server.url}${entry.folder}/main.js`);
       pages.push({ folder: entry.folder, ms: html + js });
     }
-    const gallery = await timedFetch(server.url) + await timedFetch(`${server.url}registry.json`);
+    const gallery = (await timedFetch(server.url)) + (await timedFetch(`${server.url}registry.json`));
     const sorted = pages.map((p) => p.ms).sort((a, b) => a - b);
     const median = sorted[Math.floor(sorted.length / 2)]!;
     const slowest = pages.reduce((a, b) => (b.ms > a.ms ? b : a));
-    console.log(`serve: ${pages.length} pages, median ${median.toFixed(1)} ms, slowest ${slowest.folder} ${slowest.ms.toFixed(1)} ms, gallery ${gallery.toFixed(1)} ms`);
+    console.log(
+      `serve: ${pages.length} pages, median ${median.toFixed(1)} ms, slowest ${slowest.folder} ${slowest.ms.toFixed(1)} ms, gallery ${gallery.toFixed(1)} ms`,
+    );
     expect(pages.length).toBe(registry.length);
     expect(median).toBeLessThan(300);
   });

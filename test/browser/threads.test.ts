@@ -22,8 +22,12 @@ type ThreadedLab = {
 };
 
 let h: Harness;
-beforeAll(async () => { h = await Harness.start(); }, START_TIMEOUT_MS);
-afterAll(async () => { await h?.close(); });
+beforeAll(async () => {
+  h = await Harness.start();
+}, START_TIMEOUT_MS);
+afterAll(async () => {
+  await h?.close();
+});
 
 /** Opens `folder` with `query`, pauses it, starts over, waits for its workers and runs `steps` steps; returns what the page saw. */
 async function run(folder: string, query: Record<string, string | number>, steps: number) {
@@ -37,8 +41,12 @@ async function run(folder: string, query: Record<string, string | number>, steps
       if (w.advance) w.advance(n);
       else for (let i = 0; i < n; i++) w.step();
       return {
-        isolated: w.isolated, coi: (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true,
-        threads: w.world.threads, steps: w.world.steps, runs: w.parallelRuns?.() ?? 0, hash: w.stateHash(),
+        isolated: w.isolated,
+        coi: (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true,
+        threads: w.world.threads,
+        steps: w.world.steps,
+        runs: w.parallelRuns?.() ?? 0,
+        hash: w.stateHash(),
       };
     }, steps);
   } finally {

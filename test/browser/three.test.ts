@@ -10,17 +10,35 @@
  * changes the game (a drag throws a ball, held keys and clicks turn the cube, the time scale and
  * pause change the Earth-Moon clock); the draw calls of thousands of balls stay a handful.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { BoxGeometry, Color, Matrix4, MeshBasicMaterial, PerspectiveCamera, Quaternion, Scene, Vector3 } from 'three';
+
 import {
-  addBody, addPlane, addSegment, createEntity, createPhysicsWorld, inertiaOfSolidBox, removeBody, rotateFrom, setBoundary, step,
+  addBody,
+  addPlane,
+  addSegment,
+  createEntity,
+  createPhysicsWorld,
+  inertiaOfSolidBox,
   type PhysicsWorld,
+  removeBody,
+  rotateFrom,
+  setBoundary,
+  step,
 } from '@bitphysics/physics';
+import { BoxGeometry, Color, Matrix4, MeshBasicMaterial, PerspectiveCamera, Quaternion, Scene, Vector3 } from 'three';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
-  InstanceBook, WorldRenderer3D, composeInto, equivalentBoxEdges, frameBox, hexToLinear, resolveTrailOptions, rotateBack, slerpInto,
+  composeInto,
+  equivalentBoxEdges,
+  frameBox,
+  hexToLinear,
+  InstanceBook,
   type InstanceBookListener,
+  resolveTrailOptions,
+  rotateBack,
+  slerpInto,
+  WorldRenderer3D,
 } from '../../packages/render-three/src/index';
-import { Harness, type GamePage, START_TIMEOUT_MS } from './harness';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 
 // ---------------------------------------------------------------------------------------------
 // Node: bookkeeping and maths
@@ -42,7 +60,8 @@ describe('InstanceBook (entity -> instance, swap-remove)', () => {
     const book = new InstanceBook(10);
     const rec = recorder();
     book.listener = rec;
-    const a = book.addGroup(2), b = book.addGroup();
+    const a = book.addGroup(2),
+      b = book.addGroup();
     expect([a, b]).toEqual([0, 1]);
     expect(book.add(3, a, 1)).toBe(0);
     expect(book.add(5, a, 1)).toBe(1);
@@ -57,8 +76,12 @@ describe('InstanceBook (entity -> instance, swap-remove)', () => {
     book.remove(5); // already last: nothing moves
     book.remove(5); // not shown: no-op
     expect(rec.log).toEqual([
-      'add g0 i0 e3', 'add g0 i1 e5', 'add g0 i2 e7', 'add g1 i0 e4',
-      'move g0 2->0 e7', 'remove g0 e3',
+      'add g0 i0 e3',
+      'add g0 i1 e5',
+      'add g0 i2 e7',
+      'add g1 i0 e4',
+      'move g0 2->0 e7',
+      'remove g0 e3',
       'remove g0 e5',
     ]);
     expect(book.groupOf(7)).toBe(0);
@@ -69,7 +92,8 @@ describe('InstanceBook (entity -> instance, swap-remove)', () => {
 
   it('sweeps entities not marked in a pass, and re-adding moves an entity between groups', () => {
     const book = new InstanceBook(20);
-    const g0 = book.addGroup(), g1 = book.addGroup();
+    const g0 = book.addGroup(),
+      g1 = book.addGroup();
     for (const e of [1, 2, 3, 4, 5]) book.add(e, e % 2 === 0 ? g1 : g0, 1);
     book.beginPass();
     for (const e of [1, 4, 5]) book.mark(e);
@@ -121,8 +145,12 @@ describe('interpolation maths', () => {
 
   it('rotateBack undoes one step of the physics orientation update (rotateFrom)', () => {
     const q = new Quaternion().setFromAxisAngle(new Vector3(0.3, 1, -0.2).normalize(), 1.1);
-    const w = [0.7, -2.5, 1.9], h = 1 / 60;
-    const x = new Float64Array(1), y = new Float64Array(1), z = new Float64Array(1), ww = new Float64Array(1);
+    const w = [0.7, -2.5, 1.9],
+      h = 1 / 60;
+    const x = new Float64Array(1),
+      y = new Float64Array(1),
+      z = new Float64Array(1),
+      ww = new Float64Array(1);
     rotateFrom(x, y, z, ww, 0, q.x, q.y, q.z, q.w, w[0]! * h, w[1]! * h, w[2]! * h);
     const back = new Float64Array(4);
     rotateBack(x[0]!, y[0]!, z[0]!, ww[0]!, w[0]!, w[1]!, w[2]!, h, back, 0);
@@ -165,8 +193,15 @@ function world3(capacity = 64): PhysicsWorld {
 
 /** The instanced mesh of the renderer's group of `kind` (first match). */
 function meshOf(r: WorldRenderer3D, name: RegExp) {
-  const found: Array<{ name: string; count: number; instanceMatrix: { array: ArrayLike<number> }; instanceColor: { array: ArrayLike<number> } | null }> = [];
-  r.root.traverse((o) => { if (name.test(o.name)) found.push(o as never); });
+  const found: Array<{
+    name: string;
+    count: number;
+    instanceMatrix: { array: ArrayLike<number> };
+    instanceColor: { array: ArrayLike<number> } | null;
+  }> = [];
+  r.root.traverse((o) => {
+    if (name.test(o.name)) found.push(o as never);
+  });
   if (found.length === 0) throw new Error(`no mesh named ${name}`);
   return found[0]!;
 }
@@ -215,7 +250,8 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     const e = addBody(w, { position: [0, 0, 0], velocity: [6, 0, 0], mass: 1, inertia: [1, 1, 1], angularVelocity: [0, 3, 0] });
     r.render(1);
     step(w);
-    const q0 = new Quaternion(), q1 = new Quaternion();
+    const q0 = new Quaternion(),
+      q1 = new Quaternion();
     r.render(0);
     const O = w.components.Orientation;
     q1.set(O.x[e]!, O.y[e]!, O.z[e]!, O.w[e]!);
@@ -231,7 +267,9 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     // The instance matrix carries the same pose.
     const mesh = meshOf(r, /instances-box/);
     const m = new Matrix4().fromArray(Array.from(mesh.instanceMatrix.array).slice(0, 16));
-    const p = new Vector3(), q = new Quaternion(), s = new Vector3();
+    const p = new Vector3(),
+      q = new Quaternion(),
+      s = new Vector3();
     m.decompose(p, q, s);
     expect(p.x).toBeCloseTo(0.05, 6);
     expect(Math.abs(q.dot(ref))).toBeCloseTo(1, 6);
@@ -251,7 +289,9 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     addBody(w, { position: [1, 0, 0], radius: 0.25 });
     r.render(1);
     const s = new Vector3();
-    new Matrix4().fromArray(Array.from(meshOf(r, /instances-box/).instanceMatrix.array).slice(0, 16)).decompose(new Vector3(), new Quaternion(), s);
+    new Matrix4()
+      .fromArray(Array.from(meshOf(r, /instances-box/).instanceMatrix.array).slice(0, 16))
+      .decompose(new Vector3(), new Quaternion(), s);
     expect(s.x).toBeCloseTo(0.6, 5); // edges x unitsPerMeter 2
     expect(s.y).toBeCloseTo(1.6, 5);
     expect(s.z).toBeCloseTo(2.8, 5);
@@ -269,7 +309,9 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     r.render(1);
     expect(r.stats).toMatchObject({ balls: 5000, boxes: 20, meshes: 2 });
     let meshes = 0;
-    r.root.traverse((o) => { if ((o as { isInstancedMesh?: boolean }).isInstancedMesh) meshes++; });
+    r.root.traverse((o) => {
+      if ((o as { isInstancedMesh?: boolean }).isInstancedMesh) meshes++;
+    });
     expect(meshes).toBe(2);
     const balls = meshOf(r, /instances-ball/);
     expect(balls.instanceMatrix.array.length).toBeGreaterThanOrEqual(5000 * 16);
@@ -283,7 +325,8 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
   it('setShape groups entities by geometry and material, tints white under a given material; setColor tints', () => {
     const w = world3();
     const r = new WorldRenderer3D(w, { lights: false });
-    const geometry = new BoxGeometry(1, 1, 1), material = new MeshBasicMaterial();
+    const geometry = new BoxGeometry(1, 1, 1),
+      material = new MeshBasicMaterial();
     const a = addBody(w, { position: [0, 0, 0], radius: 0.5 });
     const b = addBody(w, { position: [1, 0, 0], radius: 0.5 });
     const c = addBody(w, { position: [2, 0, 0], radius: 0.5 });
@@ -315,7 +358,10 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     r.render(1);
     expect(r.stats.trails).toBe(2); // maxEntities
     expect(ids.filter((e) => r.hasTrail(e)).length).toBe(2);
-    for (let i = 0; i < 20; i++) { step(w); r.render(1); }
+    for (let i = 0; i < 20; i++) {
+      step(w);
+      r.render(1);
+    }
     const trailed = ids.find((e) => r.hasTrail(e))!;
     removeBody(w, trailed);
     r.render(1);
@@ -330,7 +376,9 @@ describe('WorldRenderer3D in Node (no WebGL)', () => {
     expect(r.hasTrail(kept)).toBe(true);
     expect(r.stats).toMatchObject({ custom: 1, trails: 2 });
     let lines = 0;
-    r.root.traverse((o) => { if (o.name === 'trails') lines++; });
+    r.root.traverse((o) => {
+      if (o.name === 'trails') lines++;
+    });
     expect(lines).toBe(1);
     r.setTrails(false);
     expect(r.trailsEnabled).toBe(false);
@@ -461,7 +509,8 @@ describe('3D games in headless Chromium', () => {
       const game = window.game as unknown as ThreeGame & { ballIds(): number[] };
       const ids = game.ballIds();
       if (ids.length !== 31) return null;
-      const e = ids[ids.length - 1]!, V = game.world.components.Velocity;
+      const e = ids[ids.length - 1]!,
+        V = game.world.components.Velocity;
       return { vx: V.x[e]!, vy: V.y[e]!, vz: V.z[e]! };
     }, null);
     // The camera looks at the box from +z: a throw goes into the screen (-z), and the 200 px drag is faster than the slowest throw.
@@ -473,15 +522,24 @@ describe('3D games in headless Chromium', () => {
     await g.waitFor(() => (window.game as unknown as ThreeGame).renderer.stats.balls === 32, null);
     expect((await g.stats()).entities).toBe(32);
     // three.js pages pace their frames to the GPU (createThreeApp): two frames of GPU work outstanding at most.
-    const r = await g.evaluate(() => {
-      const app = (window.game as unknown as ThreeGame).app;
-      const before = app.info();
-      // A fence cannot signal before the page returns to its event loop (WebGL 2 spec, 5.27), so in
-      // one task the third of three draws finds the two before it unfinished, whatever the GPU's speed.
-      const drew = [app.render(), app.render(), app.render()];
-      const after = app.info();
-      return { drew, total: after.framesDrawn, drawn: after.framesDrawn - before.framesDrawn, skipped: after.framesSkipped - before.framesSkipped };
-    }, null, 'drawing three frames in one task');
+    const r = await g.evaluate(
+      () => {
+        const app = (window.game as unknown as ThreeGame).app;
+        const before = app.info();
+        // A fence cannot signal before the page returns to its event loop (WebGL 2 spec, 5.27), so in
+        // one task the third of three draws finds the two before it unfinished, whatever the GPU's speed.
+        const drew = [app.render(), app.render(), app.render()];
+        const after = app.info();
+        return {
+          drew,
+          total: after.framesDrawn,
+          drawn: after.framesDrawn - before.framesDrawn,
+          skipped: after.framesSkipped - before.framesSkipped,
+        };
+      },
+      null,
+      'drawing three frames in one task',
+    );
     expect(r.drew[2]).toBe(false);
     expect(r.drawn).toBeLessThanOrEqual(2);
     expect(r.drawn + r.skipped).toBe(3);
@@ -508,10 +566,14 @@ describe('3D games in headless Chromium', () => {
     const g = await open('balls-3d', { count: 3000, trails: 0, shadows: 0 });
     const s0 = await g.stats();
     await g.waitFor((n) => window.game!.stats().steps > n + 2, s0.steps, 40_000);
-    const info = await g.evaluate(() => {
-      const game = window.game as unknown as ThreeGame;
-      return { ...game.app.info(), meshes: game.renderer.stats.meshes, balls: game.renderer.stats.balls };
-    }, null, 'reading the frame info');
+    const info = await g.evaluate(
+      () => {
+        const game = window.game as unknown as ThreeGame;
+        return { ...game.app.info(), meshes: game.renderer.stats.meshes, balls: game.renderer.stats.balls };
+      },
+      null,
+      'reading the frame info',
+    );
     expect(info.balls).toBe(3000);
     expect(info.meshes).toBe(1);
     // Balls (and their shadow pass when shadows are on), two glass sides, floor, edges (and trails
@@ -563,7 +625,10 @@ describe('3D games in headless Chromium', () => {
       game.reset();
       const L0 = game.angularMomentum();
       let minUp = 1;
-      for (let i = 0; i < 600; i++) { game.step(); minUp = Math.min(minUp, game.bodyUp()[1]!); }
+      for (let i = 0; i < 600; i++) {
+        game.step();
+        minUp = Math.min(minUp, game.bodyUp()[1]!);
+      }
       const L1 = game.angularMomentum();
       return { minUp, L0, L1 };
     });
@@ -584,7 +649,8 @@ describe('3D games in headless Chromium', () => {
       game.step();
       const dt1 = game.world.time - t0;
       game.setTimeScale(10);
-      const t1 = game.world.time, d1 = game.separation();
+      const t1 = game.world.time,
+        d1 = game.separation();
       game.step();
       const dt10 = game.world.time - t1;
       return { dt1, dt10, moved: Math.abs(game.separation() - d1), steps: game.world.steps };

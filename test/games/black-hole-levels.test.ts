@@ -4,10 +4,19 @@
  * their speed and keep r = 2 G M / c^2, fuel runs out, and clearing a level gives a summary and lays
  * out the next one.
  */
-import { describe, expect, test } from 'vitest';
+
 import { slotOf } from '@bitphysics/physics';
-import { FIELD, LINE_Y, START, createBlackHoleGame, gravitationalConstant, setThrust, type BlackHoleGame } from '../../games/black-hole/rules';
-import { beginLevel, canThrust, levelSpec, startLevel, stepLevel, type LevelRun } from '../../games/black-hole/levels';
+import { describe, expect, test } from 'vitest';
+import { beginLevel, canThrust, type LevelRun, levelSpec, startLevel, stepLevel } from '../../games/black-hole/levels';
+import {
+  type BlackHoleGame,
+  createBlackHoleGame,
+  FIELD,
+  gravitationalConstant,
+  LINE_Y,
+  START,
+  setThrust,
+} from '../../games/black-hole/rules';
 
 const shipY = (g: BlackHoleGame) => g.world.components.Position.y[slotOf(g.ship)]!;
 
@@ -93,9 +102,11 @@ describe('levels', () => {
       expect(P.y[slotOf(g.holes[i]!)]).toBe(y0[i]);
     }
     for (let k = 0; k < 600; k++) stepLevel(g, run);
-    const G = gravitationalConstant(g), c = g.params.c;
+    const G = gravitationalConstant(g),
+      c = g.params.c;
     for (let i = 0; i < g.holes.length; i++) {
-      const x = P.x[slotOf(g.holes[i]!)]!, r = g.holeRadius[i]!;
+      const x = P.x[slotOf(g.holes[i]!)]!,
+        r = g.holeRadius[i]!;
       expect(x).toBeGreaterThanOrEqual(1.5 + r - 1e-9);
       expect(x).toBeLessThanOrEqual(FIELD.width - 1.5 - r + 1e-9);
       expect(r / ((2 * G * g.holeMass[i]!) / (c * c))).toBeCloseTo(1, 12);

@@ -5,15 +5,26 @@
  * recorded run itself; tolerance zero (stateHash covers every bit of every body; the game's own
  * counters are compared exactly).
  */
-import { describe, expect, test } from 'vitest';
+
 import { stateHash } from '@bitphysics/physics';
-import { createBlackHoleGame, type BlackHoleGame } from '../../games/black-hole/rules';
-import { canThrust, startLevel, type LevelRun } from '../../games/black-hole/levels';
-import { createBlackHoleReplay, type BlackHoleReplay } from '../../games/black-hole/replay';
+import { describe, expect, test } from 'vitest';
+import { canThrust, type LevelRun, startLevel } from '../../games/black-hole/levels';
+import { type BlackHoleReplay, createBlackHoleReplay } from '../../games/black-hole/replay';
+import { type BlackHoleGame, createBlackHoleGame } from '../../games/black-hole/rules';
 
 const summary = (g: BlackHoleGame, run: LevelRun) => ({
-  hash: stateHash(g.world), lives: g.lives, score: g.score, falls: g.falls, crossings: g.crossings, thrust: g.thrust,
-  holes: [...g.holes], level: run.spec.level, waiting: run.waiting, fuel: run.fuelLeft, time: run.time, rng: { ...g.rng },
+  hash: stateHash(g.world),
+  lives: g.lives,
+  score: g.score,
+  falls: g.falls,
+  crossings: g.crossings,
+  thrust: g.thrust,
+  holes: [...g.holes],
+  level: run.spec.level,
+  waiting: run.waiting,
+  fuel: run.fuelLeft,
+  time: run.time,
+  rng: { ...g.rng },
 });
 
 /** Taps thrust up (on 0.25 s, off 0.35 s), then right for a while; begins the next level when one is cleared. */
@@ -29,7 +40,10 @@ function playRecorded(g: BlackHoleGame, run: LevelRun, replay: BlackHoleReplay, 
 
 describe('black hole replay', () => {
   test('a recorded run replays to the same final state, rewound in the same game and in a new game', () => {
-    const make = () => { const g = createBlackHoleGame({ seed: 4 }); return { g, run: startLevel(g, 1) }; };
+    const make = () => {
+      const g = createBlackHoleGame({ seed: 4 });
+      return { g, run: startLevel(g, 1) };
+    };
     const { g, run } = make();
     const replay = createBlackHoleReplay(g, run);
     playRecorded(g, run, replay, 1500);

@@ -4,13 +4,32 @@
  * without penalty, zero lives ends the game; every hole's drawn radius is its Schwarzschild radius;
  * thrust, exhaust and the predicted path.
  */
-import { describe, expect, test } from 'vitest';
-import { query } from 'bitecs';
+
 import { setPosition, setVelocity, slotOf } from '@bitphysics/physics';
+import { query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 import {
-  C_GAME, FIELD, G_GAME, LINE_Y, MAX_HOLES, START, createBlackHoleGame, createPredictor, gravitationalConstant, holeHit,
-  layoutHoles, predictPath, resolveBlackHoleOptions, restart, schwarzschildMass, schwarzschildRadius, setGScale, setLightSpeed,
-  setThrust, stepBlackHole, type BlackHoleGame,
+  type BlackHoleGame,
+  C_GAME,
+  createBlackHoleGame,
+  createPredictor,
+  FIELD,
+  G_GAME,
+  gravitationalConstant,
+  holeHit,
+  LINE_Y,
+  layoutHoles,
+  MAX_HOLES,
+  predictPath,
+  resolveBlackHoleOptions,
+  restart,
+  START,
+  schwarzschildMass,
+  schwarzschildRadius,
+  setGScale,
+  setLightSpeed,
+  setThrust,
+  stepBlackHole,
 } from '../../games/black-hole/rules';
 
 const shipAt = (g: BlackHoleGame) => [g.world.components.Position.x[slotOf(g.ship)]!, g.world.components.Position.y[slotOf(g.ship)]!];
@@ -20,7 +39,8 @@ const place = (g: BlackHoleGame, x: number, y: number, vx = 0, vy = 0) => {
 };
 /** Every hole satisfies r = 2 G M / c^2 with the world's G and the game's c, and the attractor mass is M. */
 const expectSchwarzschild = (g: BlackHoleGame) => {
-  const G = g.world.laws.gravitationalConstant, c = g.params.c;
+  const G = g.world.laws.gravitationalConstant,
+    c = g.params.c;
   expect(G).toBe(gravitationalConstant(g));
   for (let i = 0; i < g.holes.length; i++) {
     const M = g.world.components.Attractor.mass[slotOf(g.holes[i]!)]!;
@@ -33,7 +53,9 @@ describe('Schwarzschild holes', () => {
   test('M = c^2 r / 2G and back; at the horizon the escape speed is c', () => {
     expect(schwarzschildMass(1, 10, 1)).toBe(50);
     expect(schwarzschildRadius(50, 10, 1)).toBe(1);
-    const r = 0.73, c = 7, G = 2.5;
+    const r = 0.73,
+      c = 7,
+      G = 2.5;
     const M = schwarzschildMass(r, c, G);
     expect(schwarzschildRadius(M, c, G)).toBeCloseTo(r, 14);
     expect(Math.sqrt((2 * G * M) / r)).toBeCloseTo(c, 12);
@@ -46,7 +68,11 @@ describe('Schwarzschild holes', () => {
     expect(g.world.laws.gravitationalConstant).toBe(G_GAME);
     expect(g.params.c).toBe(C_GAME);
     expectSchwarzschild(g);
-    for (let n = 1; n <= MAX_HOLES; n++) { layoutHoles(g, n); expect(g.holes.length).toBe(n); expectSchwarzschild(g); }
+    for (let n = 1; n <= MAX_HOLES; n++) {
+      layoutHoles(g, n);
+      expect(g.holes.length).toBe(n);
+      expectSchwarzschild(g);
+    }
     const masses = [...g.holeMass];
     setGScale(g, 2.5);
     expectSchwarzschild(g);
@@ -54,16 +80,18 @@ describe('Schwarzschild holes', () => {
     setLightSpeed(g, 14);
     expectSchwarzschild(g);
     // The pull of a hole of radius r at distance d is c^2 r / (2 d^2), whatever G is.
-    const h = g.holes[0]!, P = g.world.components.Position;
+    const h = g.holes[0]!,
+      P = g.world.components.Position;
     place(g, P.x[slotOf(h)]! + 3 * g.holeRadius[0]!, P.y[slotOf(h)]!);
     const v0 = g.world.components.Velocity.x[slotOf(g.ship)]!;
     stepBlackHole(g);
     // Only this hole matters much at 3 radii: compare with the sum over all holes.
     let ax = 0;
     for (let i = 0; i < g.holes.length; i++) {
-      const dx = P.x[slotOf(g.holes[i]!)]! - (P.x[slotOf(h)]! + 3 * g.holeRadius[0]!), dy = P.y[slotOf(g.holes[i]!)]! - P.y[slotOf(h)]!;
+      const dx = P.x[slotOf(g.holes[i]!)]! - (P.x[slotOf(h)]! + 3 * g.holeRadius[0]!),
+        dy = P.y[slotOf(g.holes[i]!)]! - P.y[slotOf(h)]!;
       const d = Math.hypot(dx, dy);
-      ax += (14 * 14 * g.holeRadius[i]!) / (2 * d * d) * (dx / d);
+      ax += ((14 * 14 * g.holeRadius[i]!) / (2 * d * d)) * (dx / d);
     }
     expect((g.world.components.Velocity.x[slotOf(g.ship)]! - v0) / g.world.dt).toBeCloseTo(ax, 9);
   });
@@ -73,7 +101,9 @@ describe('Schwarzschild holes', () => {
       const g = createBlackHoleGame({ seed, holes: 8 });
       const P = g.world.components.Position;
       for (let i = 0; i < g.holes.length; i++) {
-        const x = P.x[slotOf(g.holes[i]!)]!, y = P.y[slotOf(g.holes[i]!)]!, r = g.holeRadius[i]!;
+        const x = P.x[slotOf(g.holes[i]!)]!,
+          y = P.y[slotOf(g.holes[i]!)]!,
+          r = g.holeRadius[i]!;
         expect(x - r).toBeGreaterThan(0);
         expect(x + r).toBeLessThan(FIELD.width);
         expect(y + r).toBeLessThan(LINE_Y);
@@ -89,7 +119,8 @@ describe('Schwarzschild holes', () => {
 describe('rules', () => {
   test('entering a hole costs a life and puts the ship back at the start', () => {
     const g = createBlackHoleGame({ seed: 1 });
-    const P = g.world.components.Position, h = g.holes[0]!;
+    const P = g.world.components.Position,
+      h = g.holes[0]!;
     place(g, P.x[slotOf(h)]! + g.holeRadius[0]! + 0.05, P.y[slotOf(h)]!, -3, 0);
     let event = 'none';
     for (let i = 0; i < 10 && event === 'none'; i++) event = stepBlackHole(g);
@@ -102,7 +133,9 @@ describe('rules', () => {
 
   test('a fast ship cannot jump over a horizon within one step (swept test)', () => {
     const g = createBlackHoleGame({ seed: 1 });
-    const P = g.world.components.Position, h = g.holes[0]!, r = g.holeRadius[0]!;
+    const P = g.world.components.Position,
+      h = g.holes[0]!,
+      r = g.holeRadius[0]!;
     // From 1.2 r left of the centre to 1.2 r right of it in one step: both ends outside the horizon.
     expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]!, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]!)).toBe(0);
     expect(holeHit(g, P.x[slotOf(h)]! - 1.2 * r, P.y[slotOf(h)]! + 1.1 * r, P.x[slotOf(h)]! + 1.2 * r, P.y[slotOf(h)]! + 1.1 * r)).toBe(-1);
@@ -131,7 +164,11 @@ describe('rules', () => {
 
   test('leaving the field puts the ship back without penalty, on every side', () => {
     const g = createBlackHoleGame({ seed: 4 });
-    for (const [x, y, vx, vy] of [[0.02, 10, -5, 0], [FIELD.width - 0.02, 10, 5, 0], [10, 0.02, 0, -5]] as const) {
+    for (const [x, y, vx, vy] of [
+      [0.02, 10, -5, 0],
+      [FIELD.width - 0.02, 10, 5, 0],
+      [10, 0.02, 0, -5],
+    ] as const) {
       place(g, x, y, vx, vy);
       const e = stepBlackHole(g);
       expect(e).toBe('lost');
@@ -173,9 +210,14 @@ describe('thrust, exhaust, prediction', () => {
       const h = createBlackHoleGame({ seed: 6, holes: 1, thrust: 6 });
       setThrust(h, dir);
       for (let i = 0; i < 30; i++) stepBlackHole(h);
-      return { v: [h.world.components.Velocity.x[h.ship]!, h.world.components.Velocity.y[h.ship]!], particles: query(h.world, [h.world.components.Particle]).length };
+      return {
+        v: [h.world.components.Velocity.x[h.ship]!, h.world.components.Velocity.y[h.ship]!],
+        particles: query(h.world, [h.world.components.Particle]).length,
+      };
     };
-    const none = run('none'), right = run('right'), up = run('up');
+    const none = run('none'),
+      right = run('right'),
+      up = run('up');
     expect(right.v[0] - none.v[0]).toBeCloseTo(6 * 0.5, 2);
     expect(right.v[1] - none.v[1]).toBeCloseTo(0, 2);
     expect(up.v[1] - none.v[1]).toBeCloseTo(6 * 0.5, 2);
@@ -197,13 +239,15 @@ describe('thrust, exhaust, prediction', () => {
 
   test('exhaust that crosses a horizon is swallowed', () => {
     const g = createBlackHoleGame({ seed: 7, holes: 1 });
-    const P = g.world.components.Position, h = g.holes[0]!;
+    const P = g.world.components.Position,
+      h = g.holes[0]!;
     // Park the ship right above the hole (kept there each step) and fire downwards into it.
     setThrust(g, 'up');
     let inside = 0;
     for (let i = 0; i < 40; i++) {
       place(g, P.x[slotOf(h)]!, P.y[slotOf(h)]! + g.holeRadius[0]! + 0.6);
-      g.world.components.Emitter.dirX[slotOf(g.ship)] = 0; g.world.components.Emitter.dirY[slotOf(g.ship)] = -1;
+      g.world.components.Emitter.dirX[slotOf(g.ship)] = 0;
+      g.world.components.Emitter.dirY[slotOf(g.ship)] = -1;
       stepBlackHole(g);
       for (const e of query(g.world, [g.world.components.Particle])) {
         if (Math.hypot(P.x[e]! - P.x[slotOf(h)]!, P.y[e]! - P.y[slotOf(h)]!) < g.holeRadius[0]!) inside++;
@@ -233,19 +277,24 @@ describe('thrust, exhaust, prediction', () => {
     place(g, 8, 4, 2.5, 3);
     const m = predictPath(g, pred, out, 60);
     expect(pred.holes.length).toBe(6);
-    for (let i = 1; i < m; i++) { stepBlackHole(g); expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]); }
+    for (let i = 1; i < m; i++) {
+      stepBlackHole(g);
+      expect(P.x[slotOf(g.ship)]).toBe(out[2 * i]);
+    }
     expect(() => predictPath(g, pred, out, 0)).toThrow(/steps must be an integer in \[1, 10000\], got 0/);
   });
 
   test('the prediction stops at a horizon', () => {
     const g = createBlackHoleGame({ seed: 9, holes: 1 });
     const pred = createPredictor(g);
-    const P = g.world.components.Position, h = g.holes[0]!;
+    const P = g.world.components.Position,
+      h = g.holes[0]!;
     place(g, P.x[slotOf(h)]! + g.holeRadius[0]! + 1, P.y[slotOf(h)]!, -4, 0);
     const out = new Float64Array(2 * 61);
     const n = predictPath(g, pred, out, 60);
     expect(n).toBeLessThan(30);
-    const x = out[2 * (n - 1)]!, y = out[2 * (n - 1) + 1]!;
+    const x = out[2 * (n - 1)]!,
+      y = out[2 * (n - 1) + 1]!;
     expect(Math.hypot(x - P.x[slotOf(h)]!, y - P.y[slotOf(h)]!)).toBeLessThan(g.holeRadius[0]!);
   });
 

@@ -3,9 +3,20 @@
  * the angle from sin(2 theta) = g R / v^2 lands at the drag-free range, and a strong hit on the castle
  * breaks welds and scores.
  */
+
+import { createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { createPhysicsWorld, step, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { LAUNCH, LEVEL_COUNT, angleForRange, buildLevel, launch, launchVelocity, pullFor, tally, worldOptions } from '../../games/catapult/scene';
+import {
+  angleForRange,
+  buildLevel,
+  LAUNCH,
+  LEVEL_COUNT,
+  launch,
+  launchVelocity,
+  pullFor,
+  tally,
+  worldOptions,
+} from '../../games/catapult/scene';
 
 const G = 9.81;
 function level(n: number, jointStrength = 400): { w: PhysicsWorld; lv: ReturnType<typeof buildLevel> } {
@@ -26,18 +37,25 @@ describe('catapult rules', () => {
     // Empty sky (level 0's castle is at x > 16 m; the range aimed at is 12 m): the landing x where the
     // projectile comes back down through its launch height, interpolated between steps.
     const { w } = level(0);
-    const v = 15, R = 12, theta = angleForRange(R, v, G);
+    const v = 15,
+      R = 12,
+      theta = angleForRange(R, v, G);
     const [px, py] = pullFor(v, theta);
     const [vx, vy] = launchVelocity(px, py);
     expect(Math.hypot(vx, vy)).toBeCloseTo(v, 12);
     const ball = launch(w, vx, vy, 3);
-    const P = w.components.Position, s = slotOf(ball);
-    let prevX: number = LAUNCH.x, prevY: number = LAUNCH.y, land = Number.NaN;
+    const P = w.components.Position,
+      s = slotOf(ball);
+    let prevX: number = LAUNCH.x,
+      prevY: number = LAUNCH.y,
+      land = Number.NaN;
     for (let i = 0; i < 600 && Number.isNaN(land); i++) {
       step(w);
-      const x = P.x[s]!, y = P.y[s]!;
+      const x = P.x[s]!,
+        y = P.y[s]!;
       if (i > 2 && prevY >= LAUNCH.y && y < LAUNCH.y) land = prevX + ((x - prevX) * (prevY - LAUNCH.y)) / (prevY - y);
-      prevX = x; prevY = y;
+      prevX = x;
+      prevY = y;
     }
     // Drag-free: the time stepping alone differs from the parabola, by O(dt) in the flight time;
     // tolerance: the distance travelled in one step, vx dt (0.24 m here), 2% of the range.
@@ -46,7 +64,8 @@ describe('catapult rules', () => {
     // Aimed at the castle's front (a longer range at 24 m/s), the throw hits it: pieces fall.
     const h = level(0);
     for (let i = 0; i < 60; i++) step(h.w);
-    const R2 = h.lv.castleMinX + 0.5 - LAUNCH.x, th2 = angleForRange(R2, 24, G);
+    const R2 = h.lv.castleMinX + 0.5 - LAUNCH.x,
+      th2 = angleForRange(R2, 24, G);
     launch(h.w, 24 * Math.cos(th2), 24 * Math.sin(th2), 3);
     for (let i = 0; i < 300; i++) step(h.w);
     expect(tally(h.w, h.lv).fallen).toBeGreaterThan(0);
@@ -55,7 +74,8 @@ describe('catapult rules', () => {
   it('a strong hit breaks welds and scores 100 a fallen piece and 25 a broken weld', () => {
     const { w, lv } = level(2);
     for (let i = 0; i < 60; i++) step(w);
-    const R = lv.castleMinX + 0.5 - LAUNCH.x, th = angleForRange(R, 26, G);
+    const R = lv.castleMinX + 0.5 - LAUNCH.x,
+      th = angleForRange(R, 26, G);
     launch(w, 26 * Math.cos(th), 26 * Math.sin(th), 8);
     for (let i = 0; i < 300; i++) step(w);
     const t = tally(w, lv);
@@ -66,6 +86,8 @@ describe('catapult rules', () => {
 
   it('rejects a level out of range', () => {
     const w = createPhysicsWorld(worldOptions({ gravity: G }));
-    expect(() => buildLevel(w, { level: LEVEL_COUNT, seed: 1, gravity: G, jointStrength: 400 })).toThrow(/buildLevel: level must be an integer/);
+    expect(() => buildLevel(w, { level: LEVEL_COUNT, seed: 1, gravity: G, jointStrength: 400 })).toThrow(
+      /buildLevel: level must be an integer/,
+    );
   });
 });

@@ -5,12 +5,21 @@
  * stars, under eight times the drag, fall at a terminal speed sqrt(8) times lower; strobes flash
  * again where they die; the auto-show plays PROGRAMME in order.
  */
-import { describe, expect, test } from 'vitest';
+
+import { type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { query } from 'bitecs';
-import { slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { RECIPES, RECIPE_NAMES, type RecipeName } from '../../games/fireworks/recipes';
+import { describe, expect, test } from 'vitest';
+import { RECIPE_NAMES, RECIPES, type RecipeName } from '../../games/fireworks/recipes';
 import {
-  BURST_SPEED, PALETTE, PROGRAMME, SPARK_MASS, createFireworks, launchShell, recipeEmitter, stepFireworks, type FireworksShow,
+  BURST_SPEED,
+  createFireworks,
+  type FireworksShow,
+  launchShell,
+  PALETTE,
+  PROGRAMME,
+  recipeEmitter,
+  SPARK_MASS,
+  stepFireworks,
 } from '../../games/fireworks/show';
 
 /** Stars alive made by emitter `em` (Particle.emitter holds the emitter's slot). */
@@ -96,7 +105,8 @@ describe('shell recipes', () => {
     let launched = 0;
     for (let i = 0; i < 60 * 30; i++) {
       stepFireworks(world, show);
-      for (; launched < show.launched; launched++) seen.push(RECIPE_NAMES[show.shellRecipe[show.shellCount - (show.launched - launched)]!]!);
+      for (; launched < show.launched; launched++)
+        seen.push(RECIPE_NAMES[show.shellRecipe[show.shellCount - (show.launched - launched)]!]!);
     }
     const expected = PROGRAMME.flatMap((a) => Array.from({ length: a.count }, () => a.recipe));
     expect(seen.slice(0, expected.length)).toEqual(expected);

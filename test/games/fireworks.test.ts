@@ -3,12 +3,28 @@
  * into as many sparks as the hold asks for, the sparks fall, fade and expire; generations; a long
  * auto-show stays within the world's capacity; the same seed replays the same show.
  */
-import { describe, expect, test } from 'vitest';
+
+import { type PhysicsWorld, slotOf, stepMany } from '@bitphysics/physics';
 import { query } from 'bitecs';
-import { stepMany, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 import {
-  BURST_SPARKS_PER_STEP, CRACKLES, MAX_HOLD, MAX_SHELLS, PALETTE, SKY, burstScale, createFireworks, launchShell, resolveFireworksOptions, setAutoShow, setShowDrag,
-  setShowGenerations, setShowGravity, setShowSparks, stepFireworks, type FireworksShow,
+  BURST_SPARKS_PER_STEP,
+  burstScale,
+  CRACKLES,
+  createFireworks,
+  type FireworksShow,
+  launchShell,
+  MAX_HOLD,
+  MAX_SHELLS,
+  PALETTE,
+  resolveFireworksOptions,
+  SKY,
+  setAutoShow,
+  setShowDrag,
+  setShowGenerations,
+  setShowGravity,
+  setShowSparks,
+  stepFireworks,
 } from '../../games/fireworks/show';
 
 const particles = (world: PhysicsWorld) => query(world, [world.components.Particle]).length;
@@ -18,12 +34,16 @@ const sparksOf = (world: PhysicsWorld, show: FireworksShow) => {
 };
 /** Mean position of the sparks (right after a burst: where the shell burst, since they start there). */
 const sparkCentre = (world: PhysicsWorld, show: FireworksShow): [number, number] => {
-  const P = world.components.Particle, X = world.components.Position;
+  const P = world.components.Particle,
+    X = world.components.Position;
   const ids = Array.from(query(world, [P])).filter((e) => show.emitters.sparks.includes(P.emitter[e]!));
   return [ids.reduce((s, e) => s + X.x[e]!, 0) / ids.length, ids.reduce((s, e) => s + X.y[e]!, 0) / ids.length];
 };
 const run = (world: PhysicsWorld, show: FireworksShow, steps: number, each?: (i: number) => void) => {
-  for (let i = 0; i < steps; i++) { stepFireworks(world, show); each?.(i); }
+  for (let i = 0; i < steps; i++) {
+    stepFireworks(world, show);
+    each?.(i);
+  }
 };
 
 describe('burst size from hold time', () => {
@@ -65,8 +85,12 @@ describe('a launch', () => {
     const { world: w2, show: s2 } = createFireworks({ opening: 0, generations: 1, sparks: 300, seed: 4 });
     launchShell(w2, s2, 60, 40, 0);
     while (s2.bursts === 0) stepFireworks(w2, s2);
-    const ids = Array.from(query(w2, [w2.components.Particle])).filter((e) => s2.emitters.sparks.includes(w2.components.Particle.emitter[e]!));
-    const V = w2.components.Velocity, L = w2.components.Lifetime, Part = w2.components.Particle;
+    const ids = Array.from(query(w2, [w2.components.Particle])).filter((e) =>
+      s2.emitters.sparks.includes(w2.components.Particle.emitter[e]!),
+    );
+    const V = w2.components.Velocity,
+      L = w2.components.Lifetime,
+      Part = w2.components.Particle;
     const vy0 = ids.map((e) => V.y[e]!);
     const speed0 = ids.map((e) => Math.hypot(V.x[e]!, V.y[e]!));
     stepMany(w2, 30); // 0.5 s, no new bursts (generations 1)
@@ -90,11 +114,15 @@ describe('a launch', () => {
       const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 100, seed: 5 });
       launchShell(world, show, 60, 40, hold);
       while (show.bursts === 0) stepFireworks(world, show);
-      const ids = Array.from(query(world, [world.components.Particle])).filter((e) => show.emitters.sparks.includes(world.components.Particle.emitter[e]!));
+      const ids = Array.from(query(world, [world.components.Particle])).filter((e) =>
+        show.emitters.sparks.includes(world.components.Particle.emitter[e]!),
+      );
       const V = world.components.Velocity;
       return { count: ids.length, maxSpeed: Math.max(...ids.map((e) => Math.hypot(V.x[e]!, V.y[e]!))) };
     };
-    const click = sizeAfter(0), held = sizeAfter(MAX_HOLD), half = sizeAfter(MAX_HOLD / 2);
+    const click = sizeAfter(0),
+      held = sizeAfter(MAX_HOLD),
+      half = sizeAfter(MAX_HOLD / 2);
     expect(click.count).toBe(100);
     expect(half.count).toBe(200);
     expect(held.count).toBe(300);
@@ -107,12 +135,20 @@ describe('a launch', () => {
     while (show.bursts === 0) stepFireworks(world, show);
     const counts = [sparksOf(world, show)];
     const centre = sparkCentre(world, show); // all sparks of the first chunk start at the burst point
-    for (let i = 0; i < 2; i++) { stepFireworks(world, show); counts.push(sparksOf(world, show)); }
+    for (let i = 0; i < 2; i++) {
+      stepFireworks(world, show);
+      counts.push(sparksOf(world, show));
+    }
     // The third chunk was emitted after this step: age 0, at the burst point.
-    const P = world.components.Position, Part = world.components.Particle, L = world.components.Lifetime;
+    const P = world.components.Position,
+      Part = world.components.Particle,
+      L = world.components.Lifetime;
     const fresh = Array.from(query(world, [Part])).filter((e) => L.age[e] === 0 && show.emitters.sparks.includes(Part.emitter[e]!));
     expect(fresh.length).toBe(2000);
-    for (const e of fresh) { expect(P.x[e]).toBeCloseTo(centre[0], 9); expect(P.y[e]).toBeCloseTo(centre[1], 9); }
+    for (const e of fresh) {
+      expect(P.x[e]).toBeCloseTo(centre[0], 9);
+      expect(P.y[e]).toBeCloseTo(centre[1], 9);
+    }
     stepFireworks(world, show);
     counts.push(sparksOf(world, show));
     expect(counts).toEqual([BURST_SPARKS_PER_STEP, 2 * BURST_SPARKS_PER_STEP, 6000, 6000]);
@@ -147,7 +183,10 @@ describe('a launch', () => {
     const { world: w, show: s } = createFireworks({ opening: 0, seed: 7, generations: 1 });
     const e = slotOf(launchShell(w, s, -50, 1e4));
     let top = 0;
-    while (s.bursts === 0) { stepFireworks(w, s); if (s.shellCount) top = Math.max(top, w.components.Position.y[e]!); }
+    while (s.bursts === 0) {
+      stepFireworks(w, s);
+      if (s.shellCount) top = Math.max(top, w.components.Position.y[e]!);
+    }
     expect(top).toBeGreaterThan(SKY.height - 3 - 0.7);
     expect(top).toBeLessThan(SKY.height - 3 + 0.1);
   });
@@ -157,7 +196,8 @@ describe('the show', () => {
   test('a long auto-show stays within capacity (recycle-oldest), never throws, and keeps bursting', () => {
     const capacity = 3000;
     const { world, show } = createFireworks({ capacity, sparks: 500, generations: 2, autoShow: true, seed: 8 });
-    let maxAlive = 0, full = 0;
+    let maxAlive = 0,
+      full = 0;
     run(world, show, 60 * 30, () => {
       const n = world.entityIndex.aliveCount;
       maxAlive = Math.max(maxAlive, n);
@@ -211,7 +251,10 @@ describe('the show', () => {
     const { world, show } = createFireworks({ opening: 0, gravity: 0, generations: 1, seed: 2 });
     launchShell(world, show, 30, 40, 0);
     let steps = 0;
-    while (show.bursts === 0) { stepFireworks(world, show); steps++; }
+    while (show.bursts === 0) {
+      stepFireworks(world, show);
+      steps++;
+    }
     expect(steps).toBe(120);
     const at = sparkCentre(world, show);
     expect(at[0]).toBeCloseTo(30, 6);

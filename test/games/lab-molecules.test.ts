@@ -4,9 +4,10 @@
  * (buildGas, measureSpeeds), relaxes from one common speed into that distribution at the measured
  * temperature.
  */
-import { describe, expect, it } from 'vitest';
+
 import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
-import { MOLECULE_MASS, buildGas, gasWorldOptions, maxwellBoltzmann2D, measureSpeeds } from '../../games/lab-molecules/scene';
+import { describe, expect, it } from 'vitest';
+import { buildGas, gasWorldOptions, MOLECULE_MASS, maxwellBoltzmann2D, measureSpeeds } from '../../games/lab-molecules/scene';
 
 /** Composite Simpson integral of f over [a, b] with n (even) intervals. */
 function simpson(f: (x: number) => number, a: number, b: number, n: number): number {
@@ -20,8 +21,14 @@ describe('maxwellBoltzmann2D', () => {
   it('is a density (integral 1), peaks at sqrt(kT / m) and has mean speed sqrt(pi kT / (2 m))', () => {
     // Simpson with 4,000 intervals on [0, 12 sqrt(kT/m)] (the tail beyond holds exp(-72)): error
     // ~1e-12, so 1e-9 is loose yet far below any wrong factor.
-    for (const [kT, m] of [[0.5, 1], [2, 1], [0.3, 2.5], [1e-3, 0.01]] as const) {
-      const vp = Math.sqrt(kT / m), top = 12 * vp;
+    for (const [kT, m] of [
+      [0.5, 1],
+      [2, 1],
+      [0.3, 2.5],
+      [1e-3, 0.01],
+    ] as const) {
+      const vp = Math.sqrt(kT / m),
+        top = 12 * vp;
       const f = (v: number): number => maxwellBoltzmann2D(v, kT, m);
       expect(simpson(f, 0, top, 4000)).toBeCloseTo(1, 9);
       expect(simpson((v) => v * f(v), 0, top, 4000) / Math.sqrt((Math.PI * kT) / (2 * m))).toBeCloseTo(1, 9);
@@ -45,40 +52,56 @@ describe('lab-molecules gas', () => {
     // about once a second, 60 steps); snapshots at steps 300, 360, ..., 600 are pooled.
     const world = createPhysicsWorld(gasWorldOptions({}));
     const gas = buildGas(world, {});
-    const N = gas.molecules.length, BINS = 24;
+    const N = gas.molecules.length,
+      BINS = 24;
     const counts = new Float64Array(BINS);
     // At the start every speed is v0: mean speed / sqrt(pi kT / 2m) = 2 / sqrt(pi) = 1.128 and no
     // molecule is below v_p = v0 / sqrt(2): the test must see that change.
     const m0 = measureSpeeds(world, gas.molecules, counts);
     expect(m0.kT).toBeCloseTo(0.5 * MOLECULE_MASS * 1 * 1, 12);
     const V = world.components.Velocity;
-    let sumRatio = 0, sumBelow = 0, sumM4 = 0, snaps = 0, worstChi2 = 0, dof = 0;
+    let sumRatio = 0,
+      sumBelow = 0,
+      sumM4 = 0,
+      snaps = 0,
+      worstChi2 = 0,
+      dof = 0;
     for (let i = 1; i <= 600; i++) {
       step(world);
       if (i < 300 || i % 60 !== 0) continue;
       const { kT, binWidth } = measureSpeeds(world, gas.molecules, counts);
       expect(kT / m0.kT).toBeCloseTo(1, 2); // elastic: temperature kept (issue 13 asks 1 % over 20,000 steps)
       const vp = Math.sqrt(kT / MOLECULE_MASS);
-      let sv = 0, sv4 = 0, below = 0;
+      let sv = 0,
+        sv4 = 0,
+        below = 0;
       for (const e of gas.molecules) {
-        const sl = slotOf(e), v = Math.hypot(V.x[sl]!, V.y[sl]!);
-        sv += v; sv4 += v ** 4;
+        const sl = slotOf(e),
+          v = Math.hypot(V.x[sl]!, V.y[sl]!);
+        sv += v;
+        sv4 += v ** 4;
         if (v < vp) below++;
       }
       sumRatio += sv / N / Math.sqrt((Math.PI * kT) / (2 * MOLECULE_MASS));
       sumBelow += below / N;
-      sumM4 += sv4 / N / (2 * kT / MOLECULE_MASS) ** 2;
+      sumM4 += sv4 / N / ((2 * kT) / MOLECULE_MASS) ** 2;
       // Chi-square of the page's histogram against the bin integrals of the law, N [F(a) - F(b)],
       // F(v) = exp(-m v^2 / 2kT); bins expecting under 5 merged into one tail bin.
       const F = (v: number): number => Math.exp((-MOLECULE_MASS * v * v) / (2 * kT));
-      let chi2 = 0, tailObs = 0, tailExp = N * F(BINS * binWidth), k = 0;
+      let chi2 = 0,
+        tailObs = 0,
+        tailExp = N * F(BINS * binWidth),
+        k = 0;
       for (; k < BINS; k++) {
         const e = N * (F(k * binWidth) - F((k + 1) * binWidth));
         if (e < 5) break;
         chi2 += (counts[k]! - e) ** 2 / e;
       }
       dof = k; // k bins plus the tail, less one for the fixed total
-      for (let j = k; j < BINS; j++) { tailObs += counts[j]!; tailExp += N * (F(j * binWidth) - F((j + 1) * binWidth)); }
+      for (let j = k; j < BINS; j++) {
+        tailObs += counts[j]!;
+        tailExp += N * (F(j * binWidth) - F((j + 1) * binWidth));
+      }
       tailObs += N - counts.reduce((a, b) => a + b, 0);
       chi2 += (tailObs - tailExp) ** 2 / tailExp;
       worstChi2 = Math.max(worstChi2, chi2);

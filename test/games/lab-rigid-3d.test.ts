@@ -2,21 +2,28 @@
  * The 3D rigid-body lab's scenes, headless: the free top precesses at the rate of a heavy symmetric
  * top, dominoes topple in order, the stack of ten stands.
  */
+
+import { createPhysicsWorld, joints3DOf, type PhysicsWorld, shapes3DOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { createPhysicsWorld, joints3DOf, shapes3DOf, step, type PhysicsWorld } from '@bitphysics/physics';
 import { buildLab, hasToppled, labWorldOptions, topAxis, topHeading } from '../../games/lab-rigid-3d/scene';
 
 describe('lab-rigid-3d scenes', () => {
   /** Runs the top for `steps` steps; returns its mean precession rate (rad/s) and the final tilt (rad). */
-  function spinTop(world: ReturnType<typeof createPhysicsWorld>, h: ReturnType<typeof buildLab>, steps: number): { rate: number; tilt: number } {
-    let heading = topHeading(world, h), last = heading;
+  function spinTop(
+    world: ReturnType<typeof createPhysicsWorld>,
+    h: ReturnType<typeof buildLab>,
+    steps: number,
+  ): { rate: number; tilt: number } {
+    let heading = topHeading(world, h),
+      last = heading;
     const start = heading;
     for (let i = 0; i < steps; i++) {
       step(world);
       const hd = topHeading(world, h);
       let d = hd - last;
       d -= 2 * Math.PI * Math.round(d / (2 * Math.PI));
-      heading += d; last = hd;
+      heading += d;
+      last = hd;
     }
     return { rate: (heading - start) / (steps * world.dt), tilt: Math.acos(topAxis(world, h)[1]!) };
   }
@@ -25,8 +32,10 @@ describe('lab-rigid-3d scenes', () => {
     const world = createPhysicsWorld(labWorldOptions('top'));
     const h = buildLab(world, 'top', { spin: 60 });
     const t = h.top!;
-    const P = world.components.Position, b = h.main;
-    const x0 = P.x[b]!, z0 = P.z[b]!;
+    const P = world.components.Position,
+      b = h.main;
+    const x0 = P.x[b]!,
+      z0 = P.z[b]!;
     const { rate, tilt } = spinTop(world, h, 60);
     // Free, on its tip, no joint: it stands and keeps its tilt within 2 degrees over the second (the
     // solver adds about 1.3 degrees a second at 16 substeps).
@@ -47,8 +56,10 @@ describe('lab-rigid-3d scenes', () => {
     const world = createPhysicsWorld(labWorldOptions('top'));
     const h = buildLab(world, 'top', { spin: 60, tipFriction: 0.6 });
     const t = h.top!;
-    const P = world.components.Position, b = h.main;
-    const x0 = P.x[b]!, z0 = P.z[b]!;
+    const P = world.components.Position,
+      b = h.main;
+    const x0 = P.x[b]!,
+      z0 = P.z[b]!;
     const { rate, tilt } = spinTop(world, h, 60);
     // Still standing and precessing the same way at about the formula's rate: the rounded tip is no
     // fixed pivot (it rolls, and the friction force moves the centre of mass), measured 5 % slow over
@@ -82,7 +93,11 @@ describe('lab-rigid-3d scenes', () => {
     let left = h.parts.length;
     for (let s = 0; s < 800 && left > 0; s++) {
       step(world);
-      for (let i = 0; i < h.parts.length; i++) if (when[i] === Infinity && hasToppled(world, h, i)) { when[i] = s; left--; }
+      for (let i = 0; i < h.parts.length; i++)
+        if (when[i] === Infinity && hasToppled(world, h, i)) {
+          when[i] = s;
+          left--;
+        }
     }
     expect(left).toBe(0);
     // Strict order: domino i tips past TOPPLED_TILT on a later step than domino i - 1 (a domino that
@@ -93,8 +108,11 @@ describe('lab-rigid-3d scenes', () => {
   it('the stack of ten stands: the top box moves less than 2 cm in 2 s', () => {
     const world = createPhysicsWorld(labWorldOptions('stack'));
     const h = buildLab(world, 'stack');
-    const P = world.components.Position, b = h.main;
-    const x0 = P.x[b]!, y0 = P.y[b]!, z0 = P.z[b]!;
+    const P = world.components.Position,
+      b = h.main;
+    const x0 = P.x[b]!,
+      y0 = P.y[b]!,
+      z0 = P.z[b]!;
     for (let i = 0; i < 120; i++) step(world);
     expect(Math.hypot(P.x[b]! - x0, P.y[b]! - y0, P.z[b]! - z0)).toBeLessThan(0.02);
   });
@@ -102,10 +120,12 @@ describe('lab-rigid-3d scenes', () => {
   it('the tumbling box lands on the table and comes to rest flat on its top', () => {
     const world = createPhysicsWorld(labWorldOptions('tumble'));
     const h = buildLab(world, 'tumble');
-    const c = world.components, b = h.main;
+    const c = world.components,
+      b = h.main;
     for (let i = 0; i < 240; i++) step(world);
     // The table's top slab: centre 0.8 m, half thickness 0.04 m, half extents 0.8 x 0.5 m; the box's half extent 0.15 m.
-    const tableTop = 0.8 + 0.04, half = 0.15;
+    const tableTop = 0.8 + 0.04,
+      half = 0.15;
     // Resting on a face, its centre is half an extent above the top: within 2 mm (the contacts' slop
     // and soft penetration; measured 0.99000 - 0.98998). On an edge it would be 0.21 m up, on a corner 0.26 m.
     expect(Math.abs(c.Position.y[b]! - (tableTop + half))).toBeLessThan(2e-3);
@@ -119,19 +139,36 @@ describe('lab-rigid-3d scenes', () => {
   /** Body-frame vector `l` of body e in the world (position + rotation of l); e 0 is the fixed world. */
   function worldPoint(world: PhysicsWorld, e: number, l: [number, number, number]): [number, number, number] {
     if (e === 0) return l;
-    const P = world.components.Position, O = world.components.Orientation;
-    const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+    const P = world.components.Position,
+      O = world.components.Orientation;
+    const x = O.x[e]!,
+      y = O.y[e]!,
+      z = O.z[e]!,
+      w = O.w[e]!;
     // v + 2 w (q x v) + 2 q x (q x v)
-    const tx = 2 * (y * l[2] - z * l[1]), ty = 2 * (z * l[0] - x * l[2]), tz = 2 * (x * l[1] - y * l[0]);
-    return [P.x[e]! + l[0] + w * tx + (y * tz - z * ty), P.y[e]! + l[1] + w * ty + (z * tx - x * tz), P.z[e]! + l[2] + w * tz + (x * ty - y * tx)];
+    const tx = 2 * (y * l[2] - z * l[1]),
+      ty = 2 * (z * l[0] - x * l[2]),
+      tz = 2 * (x * l[1] - y * l[0]);
+    return [
+      P.x[e]! + l[0] + w * tx + (y * tz - z * ty),
+      P.y[e]! + l[1] + w * ty + (z * tx - x * tz),
+      P.z[e]! + l[2] + w * tz + (x * ty - y * tx),
+    ];
   }
 
   /** The segment (ends p, q, m, world) and radius of the capsule on body e, from the shape store's placement. */
   function capsuleOf(world: PhysicsWorld, e: number): { p: number[]; q: number[]; r: number } {
-    const s = shapes3DOf(world)!, sh = s.first[e]!, O = world.components.Orientation;
-    const x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+    const s = shapes3DOf(world)!,
+      sh = s.first[e]!,
+      O = world.components.Orientation;
+    const x = O.x[e]!,
+      y = O.y[e]!,
+      z = O.z[e]!,
+      w = O.w[e]!;
     const rot = (v: [number, number, number], qx: number, qy: number, qz: number, qw: number): [number, number, number] => {
-      const tx = 2 * (qy * v[2] - qz * v[1]), ty = 2 * (qz * v[0] - qx * v[2]), tz = 2 * (qx * v[1] - qy * v[0]);
+      const tx = 2 * (qy * v[2] - qz * v[1]),
+        ty = 2 * (qz * v[0] - qx * v[2]),
+        tz = 2 * (qx * v[1] - qy * v[0]);
       return [v[0] + qw * tx + (qy * tz - qz * ty), v[1] + qw * ty + (qz * tx - qx * tz), v[2] + qw * tz + (qx * ty - qy * tx)];
     };
     const c = worldPoint(world, e, [s.px[sh]!, s.py[sh]!, s.pz[sh]!]);
@@ -144,7 +181,8 @@ describe('lab-rigid-3d scenes', () => {
     let best = Infinity;
     for (let i = 0; i <= 40; i++) {
       for (let j = 0; j <= 40; j++) {
-        const u = i / 40, v = j / 40;
+        const u = i / 40,
+          v = j / 40;
         const d = [0, 1, 2].map((k) => a.p[k]! + u * (a.q[k]! - a.p[k]!) - b.p[k]! - v * (b.q[k]! - b.p[k]!));
         best = Math.min(best, Math.hypot(d[0]!, d[1]!, d[2]!));
       }
@@ -155,24 +193,29 @@ describe('lab-rigid-3d scenes', () => {
   it('the ragdoll falls down the steps with its joints held together (gaps under 2 cm), its limbs not through each other, and its torso comes to rest', () => {
     const world = createPhysicsWorld(labWorldOptions('ragdoll'));
     const h = buildLab(world, 'ragdoll');
-    const c = world.components, s = joints3DOf(world)!;
+    const c = world.components,
+      s = joints3DOf(world)!;
     expect(s.list.length).toBe(10);
     const y0 = c.Position.y[h.main]!;
     const jointed = new Set(s.list.map((j) => `${Math.min(s.a[j]!, s.b[j]!)} ${Math.max(s.a[j]!, s.b[j]!)}`));
-    let gap = 0, overlap = 0;
+    let gap = 0,
+      overlap = 0;
     for (let i = 0; i < 600; i++) {
       step(world);
       for (const j of s.list) {
-        const pa = worldPoint(world, s.a[j]!, [s.ax[j]!, s.ay[j]!, s.az[j]!]), pb = worldPoint(world, s.b[j]!, [s.bx[j]!, s.by[j]!, s.bz[j]!]);
+        const pa = worldPoint(world, s.a[j]!, [s.ax[j]!, s.ay[j]!, s.az[j]!]),
+          pb = worldPoint(world, s.b[j]!, [s.bx[j]!, s.by[j]!, s.bz[j]!]);
         gap = Math.max(gap, Math.hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]));
       }
       if (i % 10 !== 0) continue;
       // Parts that share no joint collide with each other (the joints keep only their own pair apart).
       for (let a = 0; a < h.parts.length; a++) {
         for (let b = a + 1; b < h.parts.length; b++) {
-          const ea = h.parts[a]!, eb = h.parts[b]!;
+          const ea = h.parts[a]!,
+            eb = h.parts[b]!;
           if (jointed.has(`${Math.min(ea, eb)} ${Math.max(ea, eb)}`)) continue;
-          const A = capsuleOf(world, ea), B = capsuleOf(world, eb);
+          const A = capsuleOf(world, ea),
+            B = capsuleOf(world, eb);
           overlap = Math.max(overlap, A.r + B.r - segmentDistance(A, B));
         }
       }

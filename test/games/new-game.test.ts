@@ -39,7 +39,8 @@ beforeAll(async () => {
   mkdirSync(gamesDir, { recursive: true });
   symlinkSync(join(repoRoot, 'games', 'shared'), join(gamesDir, 'shared'));
   for (const file of readdirSync(join(repoRoot, 'test', 'browser'))) {
-    if (/\.(ts|mjs|d\.mts)$/.test(file) && !file.endsWith('.test.ts')) symlinkSync(join(repoRoot, 'test', 'browser', file), join(testDir, file));
+    if (/\.(ts|mjs|d\.mts)$/.test(file) && !file.endsWith('.test.ts'))
+      symlinkSync(join(repoRoot, 'test', 'browser', file), join(testDir, file));
   }
   const { newGame } = await load<NewGameModule>('new-game.mjs');
   newGame(NAME, { gamesDir, testDir });
@@ -54,7 +55,8 @@ afterAll(() => {
 
 describe('npm run new-game', () => {
   it('writes the scene, page, manifest, thumbnail and browser test', () => {
-    for (const file of ['scene.ts', 'main.ts', 'index.html', 'game.json', 'thumbnail.png']) expect(existsSync(join(gameDir, file)), file).toBe(true);
+    for (const file of ['scene.ts', 'main.ts', 'index.html', 'game.json', 'thumbnail.png'])
+      expect(existsSync(join(gameDir, file)), file).toBe(true);
     expect(existsSync(join(testDir, `${NAME}.test.ts`))).toBe(true);
   });
 
@@ -69,16 +71,21 @@ describe('npm run new-game', () => {
     expect(readRegistry(gamesDir).map((e) => e.folder)).toContain(NAME);
   });
 
-  it('type-checks with its test and the README walkthrough\'s files (strict, the workspace\'s options)', async () => {
+  it("type-checks with its test and the README walkthrough's files (strict, the workspace's options)", async () => {
     const extra = [...readmeBlocks().keys()].filter((f) => f.startsWith('game/')).map((f) => `games/${NAME}/${f.slice('game/'.length)}`);
     expect(extra.length).toBeGreaterThan(0);
-    writeFileSync(join(scratch, 'tsconfig.json'), JSON.stringify({
-      extends: '../../tsconfig.base.json',
-      files: [`games/${NAME}/main.ts`, `test/browser/${NAME}.test.ts`, ...extra, '../../games/shared/assets.d.ts'],
-    }));
+    writeFileSync(
+      join(scratch, 'tsconfig.json'),
+      JSON.stringify({
+        extends: '../../tsconfig.base.json',
+        files: [`games/${NAME}/main.ts`, `test/browser/${NAME}.test.ts`, ...extra, '../../games/shared/assets.d.ts'],
+      }),
+    );
     const tsc = join(repoRoot, 'node_modules', 'typescript', 'bin', 'tsc');
     const result = await run(process.execPath, [tsc, '-p', join(scratch, 'tsconfig.json')], { cwd: repoRoot }).then(
-      () => '', (error: { stdout?: string }) => error.stdout ?? String(error));
+      () => '',
+      (error: { stdout?: string }) => error.stdout ?? String(error),
+    );
     expect(result).toBe('');
   }, 90_000);
 
@@ -86,9 +93,15 @@ describe('npm run new-game', () => {
     const out = join(scratch, 'site');
     await esbuild.build({
       entryPoints: [join(gameDir, 'main.ts')],
-      outdir: out, bundle: true, format: 'esm', target: 'es2022', platform: 'browser',
-      conditions: ['bitphysics-source'], inject: [join(repoRoot, 'games', 'shared', 'page-errors.ts')],
-      loader: { '.png': 'file' }, logLevel: 'silent',
+      outdir: out,
+      bundle: true,
+      format: 'esm',
+      target: 'es2022',
+      platform: 'browser',
+      conditions: ['bitphysics-source'],
+      inject: [join(repoRoot, 'games', 'shared', 'page-errors.ts')],
+      loader: { '.png': 'file' },
+      logLevel: 'silent',
     });
     writeFileSync(join(out, 'index.html'), (await import('node:fs')).readFileSync(join(gameDir, 'index.html'), 'utf8'));
     const server = await esbuild.context({ entryPoints: [], logLevel: 'silent' });
@@ -98,12 +111,16 @@ describe('npm run new-game', () => {
       const context = await browser.newContext({ viewport: { width: 800, height: 500 }, locale: 'en-US' });
       const page = await context.newPage();
       const errors: string[] = [];
-      page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+      page.on('console', (m) => {
+        if (m.type() === 'error') errors.push(m.text());
+      });
       page.on('pageerror', (e) => errors.push(e.message));
       await page.goto(`http://127.0.0.1:${port}/index.html?count=5`);
-      await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 30_000 }).catch((error: unknown) => {
-        throw new Error(`not ready; page errors: ${JSON.stringify(errors)}; ${String(error)}`);
-      });
+      await page
+        .waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 30_000 })
+        .catch((error: unknown) => {
+          throw new Error(`not ready; page errors: ${JSON.stringify(errors)}; ${String(error)}`);
+        });
       type Game = { ballCount(): number; stats(): { entities: number; steps: number; fps: number } };
       expect(await page.evaluate(() => (window.game as unknown as Game).ballCount())).toBe(5);
       await page.keyboard.press('b');

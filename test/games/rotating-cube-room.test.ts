@@ -2,9 +2,10 @@
  * rotating-cube's room mode (the default), headless: the free cube lands on the floor and comes to
  * rest on a face (centre 0.5 m up), and thrown at a wall it bounces back instead of passing through.
  */
+
+import { createPhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { createPhysicsWorld, setVelocity, setAngularVelocity, step } from '@bitphysics/physics';
-import { EDGES, ROOM_HALF, buildRotatingCube, rotatingCubeWorldOptions } from '../../games/rotating-cube/scene';
+import { buildRotatingCube, EDGES, ROOM_HALF, rotatingCubeWorldOptions } from '../../games/rotating-cube/scene';
 
 describe('rotating-cube room mode', () => {
   it('the cube falls, lands and rests on a face; thrown at a wall it stays in the room', () => {
@@ -13,7 +14,8 @@ describe('rotating-cube room mode', () => {
     const h = buildRotatingCube(world);
     expect(h.mode).toBe('room');
     expect(world.gravity[1]).toBeCloseTo(-9.81, 12);
-    const P = world.components.Position, V = world.components.Velocity;
+    const P = world.components.Position,
+      V = world.components.Velocity;
     expect(h.walls).toHaveLength(4);
     for (let i = 0; i < 180; i++) step(world);
     // Resting on a face: the centre of a 1 m cube is 0.5 m up (contact slop and soft contacts: 1 cm).
@@ -23,11 +25,17 @@ describe('rotating-cube room mode', () => {
     // 8 m/s at the +x wall: the face reaches the wall in 0.3 s; with restitution 0.3 it comes back.
     setVelocity(world, h.body, [8, 0.5, 0]);
     setAngularVelocity(world, h.body, [0, 0, 0]);
-    const O = world.components.Orientation, half = EDGES.room[0] / 2;
-    let maxX = -Infinity, reach = -Infinity;
+    const O = world.components.Orientation,
+      half = EDGES.room[0] / 2;
+    let maxX = -Infinity,
+      reach = -Infinity;
     for (let i = 0; i < 60; i++) {
       step(world);
-      const e = h.body, x = O.x[e]!, y = O.y[e]!, z = O.z[e]!, w = O.w[e]!;
+      const e = h.body,
+        x = O.x[e]!,
+        y = O.y[e]!,
+        z = O.z[e]!,
+        w = O.w[e]!;
       maxX = Math.max(maxX, P.x[e]!);
       // The cube's farthest point along +x: its centre plus half an edge times the summed |x components|
       // of its three body axes (row x of its rotation matrix): half an edge on a face, up to the half

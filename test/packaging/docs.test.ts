@@ -11,8 +11,8 @@ import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import * as esbuild from 'esbuild';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot } from '../browser/chromium.mjs';
 
 const run = promisify(execFile);
@@ -39,10 +39,25 @@ beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'bitphysics-docs-'));
   const tools = join(repoRoot, 'tools', 'docs');
   const json = join(dir, 'api.json');
-  await run(process.execPath, [join(tools, 'node_modules', 'typedoc', 'bin', 'typedoc'), '--options', 'typedoc.json', '--json', json, '--treatValidationWarningsAsErrors'], { cwd: tools })
-    .catch((error: { stdout?: string; stderr?: string }) => { throw new Error(`typedoc failed:\n${error.stdout ?? ''}${error.stderr ?? ''}`); });
+  await run(
+    process.execPath,
+    [
+      join(tools, 'node_modules', 'typedoc', 'bin', 'typedoc'),
+      '--options',
+      'typedoc.json',
+      '--json',
+      json,
+      '--treatValidationWarningsAsErrors',
+    ],
+    { cwd: tools },
+  ).catch((error: { stdout?: string; stderr?: string }) => {
+    throw new Error(`typedoc failed:\n${error.stdout ?? ''}${error.stderr ?? ''}`);
+  });
   const project = JSON.parse(readFileSync(json, 'utf8')) as Reflection;
-  const walk = (r: Reflection): void => { byId.set(r.id, r); for (const c of r.children ?? []) walk(c); };
+  const walk = (r: Reflection): void => {
+    byId.set(r.id, r);
+    for (const c of r.children ?? []) walk(c);
+  };
   walk(project);
   modules = new Map((project.children ?? []).map((m) => [m.name, m]));
 }, 240_000);
@@ -73,8 +88,15 @@ const PACKAGES: [string, string][] = [
 /** The names `entry` exports at run time, as esbuild's bundler sees them (other packages external). */
 async function runtimeExports(entry: string): Promise<string[]> {
   const result = await esbuild.build({
-    entryPoints: [join(repoRoot, entry)], bundle: true, write: false, metafile: true, format: 'esm',
-    platform: 'neutral', packages: 'external', outdir: dir, logLevel: 'silent',
+    entryPoints: [join(repoRoot, entry)],
+    bundle: true,
+    write: false,
+    metafile: true,
+    format: 'esm',
+    platform: 'neutral',
+    packages: 'external',
+    outdir: dir,
+    logLevel: 'silent',
   });
   return Object.values(result.metafile.outputs).flatMap((o) => o.exports);
 }

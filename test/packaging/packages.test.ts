@@ -41,9 +41,18 @@ beforeAll(async () => {
     packPackages(options: { destination: string }): Promise<{ name: string; file: string }[]>;
   };
   const tarballs = await packPackages({ destination: join(project, 'tarballs') });
-  expect(tarballs.map((t) => t.name)).toEqual(['@bitphysics/physics', '@bitphysics/render-common', '@bitphysics/render-pixi', '@bitphysics/render-three']);
+  expect(tarballs.map((t) => t.name)).toEqual([
+    '@bitphysics/physics',
+    '@bitphysics/render-common',
+    '@bitphysics/render-pixi',
+    '@bitphysics/render-three',
+  ]);
   writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }, null, 2));
-  await run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error', ...tarballs.map((t) => t.file)], { cwd: project });
+  await run(
+    'npm',
+    ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error', ...tarballs.map((t) => t.file)],
+    { cwd: project },
+  );
   const blocks = readmeBlocks();
   for (const file of [...TS_EXAMPLES, 'index.html']) {
     const block = blocks.get(file);
@@ -59,20 +68,27 @@ afterAll(() => {
 /** Runs the workspace's tsc on the examples with `moduleResolution`; returns its diagnostics, one a line. */
 async function typeCheck(moduleResolution: 'bundler' | 'node16'): Promise<string[]> {
   const config = `tsconfig.${moduleResolution}.json`;
-  writeFileSync(join(project, config), JSON.stringify({
-    compilerOptions: {
-      target: 'ES2022',
-      module: moduleResolution === 'node16' ? 'node16' : 'esnext',
-      moduleResolution,
-      lib: ['ES2023', 'DOM', 'DOM.Iterable'],
-      types: [],
-      strict: true,
-      noUncheckedIndexedAccess: true,
-      skipLibCheck: false,
-      noEmit: true,
-    },
-    files: TS_EXAMPLES,
-  }, null, 2));
+  writeFileSync(
+    join(project, config),
+    JSON.stringify(
+      {
+        compilerOptions: {
+          target: 'ES2022',
+          module: moduleResolution === 'node16' ? 'node16' : 'esnext',
+          moduleResolution,
+          lib: ['ES2023', 'DOM', 'DOM.Iterable'],
+          types: [],
+          strict: true,
+          noUncheckedIndexedAccess: true,
+          skipLibCheck: false,
+          noEmit: true,
+        },
+        files: TS_EXAMPLES,
+      },
+      null,
+      2,
+    ),
+  );
   try {
     await run(process.execPath, [tsc, '-p', config], { cwd: project });
     return [];
@@ -99,7 +115,7 @@ describe('the packed packages in a fresh project', () => {
     expect(await typeCheck('bundler')).toEqual([]);
   }, 60_000);
 
-  it('type-check the README examples with moduleResolution node16 (only pixi.js\'s own two CommonJS complaints)', async () => {
+  it("type-check the README examples with moduleResolution node16 (only pixi.js's own two CommonJS complaints)", async () => {
     const errors = await typeCheck('node16');
     expect(errors.filter((line) => !UPSTREAM_NODE16.test(line))).toEqual([]);
   }, 60_000);
@@ -138,9 +154,13 @@ describe('the packed packages in a fresh project', () => {
         const context = await browser.newContext({ viewport: { width: 640, height: 400 }, locale: 'en-US' });
         const tab = await context.newPage();
         const errors: string[] = [];
-        tab.on('console', (m) => { if (m.type() === 'error') errors.push(`console.error: ${m.text()}`); });
+        tab.on('console', (m) => {
+          if (m.type() === 'error') errors.push(`console.error: ${m.text()}`);
+        });
         tab.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
-        tab.on('response', (r) => { if (r.status() >= 400) errors.push(`HTTP ${r.status()}: ${r.url()}`); });
+        tab.on('response', (r) => {
+          if (r.status() >= 400) errors.push(`HTTP ${r.status()}: ${r.url()}`);
+        });
         await tab.goto(`http://127.0.0.1:${port}/${page}`);
         await tab.waitForFunction(() => document.querySelector('canvas') !== null, null, { timeout: 20_000 });
         // A few frames, then the canvas must show more than its background.

@@ -31,7 +31,7 @@ export function namedBlocks(markdown: string): ReadmeBlock[] {
     const file = open[2]!;
     if (seen.has(file)) throw new Error(`README names ${file} twice`);
     seen.add(file);
-    blocks.push({ lang: open[1]!, file, code: body.join('\n') + '\n' });
+    blocks.push({ lang: open[1]!, file, code: `${body.join('\n')}\n` });
     i = j;
   }
   return blocks;

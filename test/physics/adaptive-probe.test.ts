@@ -1,5 +1,14 @@
 import { expect, test } from 'vitest';
-import { CLEAR_PROBE_EVERY, LoopChooser, MAX_AGE, MIN_PROBE_PERIOD, nextProbePeriod, PROBE_EVERY, SWITCH_RATIO, WINDOW } from '../../packages/physics/src/threads/adaptive.js';
+import {
+  CLEAR_PROBE_EVERY,
+  LoopChooser,
+  MAX_AGE,
+  MIN_PROBE_PERIOD,
+  nextProbePeriod,
+  PROBE_EVERY,
+  SWITCH_RATIO,
+  WINDOW,
+} from '../../packages/physics/src/threads/adaptive.js';
 
 // The adaptive choice between a pool's threads and one thread (threads/adaptive.ts). The rule under
 // test is counted in calls, not timed, so there is no tolerance: the fake loop's times are given.

@@ -1,11 +1,24 @@
 // The aircraft scene and the lifting-surface law: level flight at the trim speed lift = weight
 // predicts, the stall past the stall angle, and the roll rate from the aileron torque against
 // Euler's equation.
-import { describe, expect, test } from 'vitest';
+
 import {
-  addBody, addLiftingSurface, aircraft, AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraftLevelDrag, createPhysicsWorld, DEFAULT_LIFT_SLOPE,
-  evaluateForces, setControlDeflection, setInertia, setTimeStep, step, type PhysicsWorld,
+  AIRCRAFT,
+  AIRCRAFT_TRIM_SPEED,
+  addBody,
+  addLiftingSurface,
+  aircraft,
+  aircraftLevelDrag,
+  createPhysicsWorld,
+  DEFAULT_LIFT_SLOPE,
+  evaluateForces,
+  type PhysicsWorld,
+  setControlDeflection,
+  setInertia,
+  setTimeStep,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 function run(world: PhysicsWorld, seconds: number): void {
   for (let i = 0, n = Math.round(seconds / world.dt); i < n; i++) step(world);
@@ -17,7 +30,8 @@ describe('aircraft: lifting surfaces', () => {
     const world = createPhysicsWorld(aircraft.worldOptions());
     const { body } = aircraft.build(world); // level, trim speed, thrust = level drag
     run(world, 30);
-    const P = world.components.Position, V = world.components.Velocity;
+    const P = world.components.Position,
+      V = world.components.Velocity;
     // Every force balances exactly at t = 0 (lift = weight, thrust = drag, no pitching moment), so the
     // state stays put to the integrator's rounding over 30 s (1,800 RK4 steps).
     expect(Math.abs(P.y[body]! - 1200)).toBeLessThan(1e-3);
@@ -34,7 +48,8 @@ describe('aircraft: lifting surfaces', () => {
     // evaluated lift with q A C_L on either side of 20 degrees.
     const lift = (alphaDeg: number): number => {
       const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0] });
-      const a = (alphaDeg * Math.PI) / 180, v = 100;
+      const a = (alphaDeg * Math.PI) / 180,
+        v = 100;
       const b = addBody(world, { velocity: [v * Math.cos(a), -v * Math.sin(a), 0], mass: 1000 });
       setInertia(world, b, [1e4, 1e4, 1e4]);
       addLiftingSurface(world, { body: b, area: 75 });
@@ -44,7 +59,7 @@ describe('aircraft: lifting surfaces', () => {
       return F.x[b]! * Math.sin(a) + F.y[b]! * Math.cos(a);
     };
     const q = 0.5 * 1.225 * 100 * 100 * 75;
-    expect(lift(19) / (q * DEFAULT_LIFT_SLOPE * (19 * Math.PI) / 180)).toBeCloseTo(1, 9);
+    expect(lift(19) / ((q * DEFAULT_LIFT_SLOPE * (19 * Math.PI)) / 180)).toBeCloseTo(1, 9);
     expect(lift(21) / (q * Math.sin((2 * 21 * Math.PI) / 180))).toBeCloseTo(1, 9);
     expect(lift(21)).toBeLessThan(0.5 * lift(19)); // the stall: more than half the lift is lost
   });
@@ -56,7 +71,8 @@ describe('aircraft: lifting surfaces', () => {
     setControlDeflection(world, surfaces.leftWing, delta);
     setControlDeflection(world, surfaces.rightWing, -delta);
     // Euler's equations at w = 0: I dw/dt = tau. Each half gets q A k delta of extra lift at y = 7.5 m.
-    const V = AIRCRAFT_TRIM_SPEED, q = 0.5 * AIRCRAFT.airDensity * V * V;
+    const V = AIRCRAFT_TRIM_SPEED,
+      q = 0.5 * AIRCRAFT.airDensity * V * V;
     const tau = 2 * q * (AIRCRAFT.wingArea / 2) * AIRCRAFT.aileronPower * delta * AIRCRAFT.wingHalfOffset;
     evaluateForces(world);
     expect(world.components.Torque.x[body]! / tau).toBeCloseTo(1, 9);

@@ -16,10 +16,19 @@ const fn = (name: string): Fn | undefined => (api as unknown as Record<string, F
 /** The entities every case starts from, each made through the public API. */
 export interface Fixture {
   world: World;
-  ball: number; ball2: number; particle: number; segment: number; plane: number;
-  electric: number; magnetic: number; fluid: number; spring: number; emitter: number;
+  ball: number;
+  ball2: number;
+  particle: number;
+  segment: number;
+  plane: number;
+  electric: number;
+  magnetic: number;
+  fluid: number;
+  spring: number;
+  emitter: number;
   /** A removed ball whose slot now holds `fresh` (bitecs recycles a removed id at once). */
-  stale: number; fresh: number;
+  stale: number;
+  fresh: number;
 }
 
 export function makeFixture(): Fixture {
@@ -53,12 +62,19 @@ const wrongKinds: Record<Kind, Array<keyof Fixture>> = {
   spring: ['ball', 'segment'],
 };
 const validEntity: Record<Kind, keyof Fixture> = {
-  body: 'ball', emitter: 'emitter', any: 'ball', electric: 'electric', magnetic: 'magnetic', fluid: 'fluid', spring: 'spring',
+  body: 'ball',
+  emitter: 'emitter',
+  any: 'ball',
+  electric: 'electric',
+  magnetic: 'magnetic',
+  fluid: 'fluid',
+  spring: 'spring',
 };
 
 /** One function taking (world, entity, arg). */
 interface EntityFn {
-  name: string; kind: Kind;
+  name: string;
+  kind: Kind;
   /** A valid argument (options object, vector, number) or undefined for none. */
   arg?: unknown;
   /** Calls the function; default fn(world, entity, arg). */
@@ -126,7 +142,13 @@ interface OptionsFn {
 }
 
 const optionsFns: OptionsFn[] = [
-  { name: 'createPhysicsWorld', valid: () => ({ capacity: 8 }), optional: true, booleans: ['interpolation', 'sleep'], call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o) },
+  {
+    name: 'createPhysicsWorld',
+    valid: () => ({ capacity: 8 }),
+    optional: true,
+    booleans: ['interpolation', 'sleep'],
+    call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o),
+  },
   { name: 'addBody', valid: () => ({ radius: 0.5, mass: 1 }), optional: true, booleans: ['static', 'kinematic', 'rotates'] },
   { name: 'addParticle', valid: () => ({ position: [1, 1] }), optional: true },
   { name: 'addSegment', valid: () => ({ a: [0, 0], b: [1, 1] }) },
@@ -135,15 +157,32 @@ const optionsFns: OptionsFn[] = [
   { name: 'addElectricField', valid: () => ({ field: [1, 0] }) },
   { name: 'addMagneticField', valid: () => ({ field: 1 }) },
   { name: 'addFluidRegion', valid: () => ({ surface: 0, density: 1000 }) },
-  { name: 'addSpring', valid: (fx) => ({ a: fx.ball, b: fx.ball2, stiffness: 1 }), booleans: ['oneSided'], entities: [['a', 'body'], ['b', 'body']] },
+  {
+    name: 'addSpring',
+    valid: (fx) => ({ a: fx.ball, b: fx.ball2, stiffness: 1 }),
+    booleans: ['oneSided'],
+    entities: [
+      ['a', 'body'],
+      ['b', 'body'],
+    ],
+  },
   { name: 'addEmitter', valid: () => ({ position: [0, 0], rate: 1 }), optional: true, booleans: ['enabled'] },
   { name: 'addEmitter', valid: (fx) => ({ attachTo: fx.ball2, rate: 1 }), optional: true, entities: [['attachTo', 'body']] },
   { name: 'setGravitation', valid: () => ({ constant: 1 }) },
   { name: 'setElectrostatics', valid: () => ({ constant: 1 }) },
   { name: 'setWind', valid: () => ({ velocity: [1, 0] }) },
-  { name: 'createFixedStepLoop', valid: () => ({ dt: 0.01, step: () => {} }), call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o) },
+  {
+    name: 'createFixedStepLoop',
+    valid: () => ({ dt: 0.01, step: () => {} }),
+    call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o),
+  },
   { name: 'createRecorder', valid: () => ({ quantities: { energy: api.kineticEnergy }, every: 1 }) },
-  { name: 'addSystem', valid: () => ({}), optional: true, call: (f, w, o) => (f as never as (...a: unknown[]) => unknown)(w, 'forces', () => {}, o) },
+  {
+    name: 'addSystem',
+    valid: () => ({}),
+    optional: true,
+    call: (f, w, o) => (f as never as (...a: unknown[]) => unknown)(w, 'forces', () => {}, o),
+  },
 ];
 
 /** What a case expects: a clear error from `expectFrom` (the function the user called). */
@@ -168,34 +207,74 @@ export function buildCases(): Case[] {
     const call = d.call ?? ((g: Fn, w: World, e: number, a: unknown) => (g as never as (...x: unknown[]) => unknown)(w, e, a));
     const valid = validEntity[d.kind];
     cases.push({
-      label: `${d.name}: a removed entity whose slot was recycled`, expectFrom: d.name, pattern: /removed entity/,
+      label: `${d.name}: a removed entity whose slot was recycled`,
+      expectFrom: d.name,
+      pattern: /removed entity/,
       run: (fx) => call(f, fx.world, fx.stale, d.arg),
     });
     for (const bad of NOT_ENTITIES) {
       cases.push({ label: `${d.name}: entity ${String(bad)}`, expectFrom: d.name, run: (fx) => call(f, fx.world, bad as number, d.arg) });
     }
     for (const k of d.wrong ?? wrongKinds[d.kind]) {
-      cases.push({ label: `${d.name}: ${k} entity where ${d.kind} is meant`, expectFrom: d.name, pattern: /must be an? /, run: (fx) => call(f, fx.world, fx[k] as number, d.arg) });
+      cases.push({
+        label: `${d.name}: ${k} entity where ${d.kind} is meant`,
+        expectFrom: d.name,
+        pattern: /must be an? /,
+        run: (fx) => call(f, fx.world, fx[k] as number, d.arg),
+      });
     }
     if (d.options) {
-      cases.push({ label: `${d.name}: options missing`, expectFrom: d.name, pattern: /must be an object/, run: (fx) => call(f, fx.world, fx[valid] as number, undefined) });
-      cases.push({ label: `${d.name}: options null`, expectFrom: d.name, pattern: /must be an object/, run: (fx) => call(f, fx.world, fx[valid] as number, null) });
+      cases.push({
+        label: `${d.name}: options missing`,
+        expectFrom: d.name,
+        pattern: /must be an object/,
+        run: (fx) => call(f, fx.world, fx[valid] as number, undefined),
+      });
+      cases.push({
+        label: `${d.name}: options null`,
+        expectFrom: d.name,
+        pattern: /must be an object/,
+        run: (fx) => call(f, fx.world, fx[valid] as number, null),
+      });
       cases.push({ label: `${d.name}: options a string`, expectFrom: d.name, run: (fx) => call(f, fx.world, fx[valid] as number, 'rate') });
-      cases.push({ label: `${d.name}: unknown option`, expectFrom: d.name, pattern: /unknown option/, run: (fx) => call(f, fx.world, fx[valid] as number, { ...(d.arg as object), bogus: 1 }) });
+      cases.push({
+        label: `${d.name}: unknown option`,
+        expectFrom: d.name,
+        pattern: /unknown option/,
+        run: (fx) => call(f, fx.world, fx[valid] as number, { ...(d.arg as object), bogus: 1 }),
+      });
       for (const key of Object.keys(d.arg as object)) {
-        cases.push({ label: `${d.name}: ${key} null`, expectFrom: d.name, pattern: new RegExp(key), run: (fx) => call(f, fx.world, fx[valid] as number, { ...(d.arg as object), [key]: null }) });
+        cases.push({
+          label: `${d.name}: ${key} null`,
+          expectFrom: d.name,
+          pattern: new RegExp(key),
+          run: (fx) => call(f, fx.world, fx[valid] as number, { ...(d.arg as object), [key]: null }),
+        });
       }
       for (const key of d.booleans ?? []) {
         for (const bad of BAD_BOOLEANS) {
-          cases.push({ label: `${d.name}: ${key} ${JSON.stringify(bad)}`, expectFrom: d.name, pattern: new RegExp(key), run: (fx) => call(f, fx.world, fx[valid] as number, { [key]: bad }) });
+          cases.push({
+            label: `${d.name}: ${key} ${JSON.stringify(bad)}`,
+            expectFrom: d.name,
+            pattern: new RegExp(key),
+            run: (fx) => call(f, fx.world, fx[valid] as number, { [key]: bad }),
+          });
         }
       }
     } else if (d.arg !== undefined) {
-      cases.push({ label: `${d.name}: argument missing`, expectFrom: d.name, run: (fx) => call(f, fx.world, fx[valid] as number, undefined) });
+      cases.push({
+        label: `${d.name}: argument missing`,
+        expectFrom: d.name,
+        run: (fx) => call(f, fx.world, fx[valid] as number, undefined),
+      });
       cases.push({ label: `${d.name}: argument null`, expectFrom: d.name, run: (fx) => call(f, fx.world, fx[valid] as number, null) });
       if (typeof d.arg === 'boolean') {
         for (const bad of BAD_BOOLEANS) {
-          cases.push({ label: `${d.name}: ${JSON.stringify(bad)} for a boolean`, expectFrom: d.name, run: (fx) => call(f, fx.world, fx[valid] as number, bad) });
+          cases.push({
+            label: `${d.name}: ${JSON.stringify(bad)} for a boolean`,
+            expectFrom: d.name,
+            run: (fx) => call(f, fx.world, fx[valid] as number, bad),
+          });
         }
       }
     }
@@ -204,55 +283,176 @@ export function buildCases(): Case[] {
     const f = fn(d.name);
     if (!f) continue;
     const call = d.call ?? ((g: Fn, w: World, o: unknown) => (g as never as (...x: unknown[]) => unknown)(w, o));
-    if (!d.optional) cases.push({ label: `${d.name}: options missing`, expectFrom: d.name, pattern: /must be an object/, run: (fx) => call(f, fx.world, undefined) });
-    cases.push({ label: `${d.name}: options null`, expectFrom: d.name, pattern: /must be an object/, run: (fx) => call(f, fx.world, null) });
+    if (!d.optional)
+      cases.push({
+        label: `${d.name}: options missing`,
+        expectFrom: d.name,
+        pattern: /must be an object/,
+        run: (fx) => call(f, fx.world, undefined),
+      });
+    cases.push({
+      label: `${d.name}: options null`,
+      expectFrom: d.name,
+      pattern: /must be an object/,
+      run: (fx) => call(f, fx.world, null),
+    });
     cases.push({ label: `${d.name}: options a number`, expectFrom: d.name, run: (fx) => call(f, fx.world, 3) });
-    cases.push({ label: `${d.name}: unknown option`, expectFrom: d.name, pattern: /unknown option/, run: (fx) => call(f, fx.world, { ...d.valid(fx), bogus: 1 }) });
+    cases.push({
+      label: `${d.name}: unknown option`,
+      expectFrom: d.name,
+      pattern: /unknown option/,
+      run: (fx) => call(f, fx.world, { ...d.valid(fx), bogus: 1 }),
+    });
     const keys = Object.keys(d.valid(makeFixtureKeysOnly()));
     for (const key of keys) {
-      cases.push({ label: `${d.name}: ${key} null`, expectFrom: d.name, pattern: new RegExp(key), run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: null }) });
+      cases.push({
+        label: `${d.name}: ${key} null`,
+        expectFrom: d.name,
+        pattern: new RegExp(key),
+        run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: null }),
+      });
     }
     for (const key of d.booleans ?? []) {
       for (const bad of BAD_BOOLEANS) {
-        cases.push({ label: `${d.name}: ${key} ${JSON.stringify(bad)}`, expectFrom: d.name, pattern: new RegExp(key), run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: bad }) });
+        cases.push({
+          label: `${d.name}: ${key} ${JSON.stringify(bad)}`,
+          expectFrom: d.name,
+          pattern: new RegExp(key),
+          run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: bad }),
+        });
       }
     }
     for (const [key, kind] of d.entities ?? []) {
-      cases.push({ label: `${d.name}: ${key} a removed entity`, expectFrom: d.name, pattern: /removed entity/, run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: fx.stale }) });
+      cases.push({
+        label: `${d.name}: ${key} a removed entity`,
+        expectFrom: d.name,
+        pattern: /removed entity/,
+        run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: fx.stale }),
+      });
       for (const k of wrongKinds[kind]) {
-        cases.push({ label: `${d.name}: ${key} a ${k} entity`, expectFrom: d.name, pattern: /must be an? /, run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: fx[k] }) });
+        cases.push({
+          label: `${d.name}: ${key} a ${k} entity`,
+          expectFrom: d.name,
+          pattern: /must be an? /,
+          run: (fx) => call(f, fx.world, { ...d.valid(fx), [key]: fx[k] }),
+        });
       }
     }
   }
   // Nested option objects and entity-valued options of the emitter functions.
-  const addEmitter = fn('addEmitter'), setEmitter = fn('setEmitter');
+  const addEmitter = fn('addEmitter'),
+    setEmitter = fn('setEmitter');
   const e2 = (g: Fn | undefined) => g as never as (...x: unknown[]) => unknown;
   if (addEmitter) {
-    cases.push({ label: 'addEmitter: particle null', expectFrom: 'addEmitter', pattern: /particle/, run: (fx) => e2(addEmitter)(fx.world, { particle: null }) });
-    cases.push({ label: 'addEmitter: onDeath null', expectFrom: 'addEmitter', pattern: /onDeath/, run: (fx) => e2(addEmitter)(fx.world, { onDeath: null }) });
-    cases.push({ label: 'addEmitter: shape "toString"', expectFrom: 'addEmitter', pattern: /shape/, run: (fx) => e2(addEmitter)(fx.world, { shape: 'toString' }) });
-    cases.push({ label: 'addEmitter: onDeath.emitter a removed entity', expectFrom: 'addEmitter', pattern: /removed entity/, run: (fx) => e2(addEmitter)(fx.world, { onDeath: { emitter: fx.stale, count: 1, maxGeneration: 1 } }) });
-    cases.push({ label: 'addEmitter: onDeath.emitter a body', expectFrom: 'addEmitter', pattern: /must be an? /, run: (fx) => e2(addEmitter)(fx.world, { onDeath: { emitter: fx.ball, count: 1, maxGeneration: 1 } }) });
-    cases.push({ label: 'addEmitter: particle.radius null', expectFrom: 'addEmitter', pattern: /radius/, run: (fx) => e2(addEmitter)(fx.world, { particle: { radius: null } }) });
+    cases.push({
+      label: 'addEmitter: particle null',
+      expectFrom: 'addEmitter',
+      pattern: /particle/,
+      run: (fx) => e2(addEmitter)(fx.world, { particle: null }),
+    });
+    cases.push({
+      label: 'addEmitter: onDeath null',
+      expectFrom: 'addEmitter',
+      pattern: /onDeath/,
+      run: (fx) => e2(addEmitter)(fx.world, { onDeath: null }),
+    });
+    cases.push({
+      label: 'addEmitter: shape "toString"',
+      expectFrom: 'addEmitter',
+      pattern: /shape/,
+      run: (fx) => e2(addEmitter)(fx.world, { shape: 'toString' }),
+    });
+    cases.push({
+      label: 'addEmitter: onDeath.emitter a removed entity',
+      expectFrom: 'addEmitter',
+      pattern: /removed entity/,
+      run: (fx) => e2(addEmitter)(fx.world, { onDeath: { emitter: fx.stale, count: 1, maxGeneration: 1 } }),
+    });
+    cases.push({
+      label: 'addEmitter: onDeath.emitter a body',
+      expectFrom: 'addEmitter',
+      pattern: /must be an? /,
+      run: (fx) => e2(addEmitter)(fx.world, { onDeath: { emitter: fx.ball, count: 1, maxGeneration: 1 } }),
+    });
+    cases.push({
+      label: 'addEmitter: particle.radius null',
+      expectFrom: 'addEmitter',
+      pattern: /radius/,
+      run: (fx) => e2(addEmitter)(fx.world, { particle: { radius: null } }),
+    });
   }
   if (setEmitter) {
-    cases.push({ label: 'setEmitter: shape "toString"', expectFrom: 'setEmitter', pattern: /shape/, run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { shape: 'toString' }) });
-    cases.push({ label: 'setEmitter: onDeath.emitter a removed entity', expectFrom: 'setEmitter', pattern: /removed entity/, run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { onDeath: { emitter: fx.stale, count: 1, maxGeneration: 1 } }) });
-    cases.push({ label: 'setEmitter: particle null', expectFrom: 'setEmitter', pattern: /particle/, run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { particle: null }) });
-    cases.push({ label: 'setEmitter: a bad field after a good one', expectFrom: 'setEmitter', pattern: /spread/, run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { rate: 99, spread: 9 }) });
+    cases.push({
+      label: 'setEmitter: shape "toString"',
+      expectFrom: 'setEmitter',
+      pattern: /shape/,
+      run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { shape: 'toString' }),
+    });
+    cases.push({
+      label: 'setEmitter: onDeath.emitter a removed entity',
+      expectFrom: 'setEmitter',
+      pattern: /removed entity/,
+      run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { onDeath: { emitter: fx.stale, count: 1, maxGeneration: 1 } }),
+    });
+    cases.push({
+      label: 'setEmitter: particle null',
+      expectFrom: 'setEmitter',
+      pattern: /particle/,
+      run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { particle: null }),
+    });
+    cases.push({
+      label: 'setEmitter: a bad field after a good one',
+      expectFrom: 'setEmitter',
+      pattern: /spread/,
+      run: (fx) => e2(setEmitter)(fx.world, fx.emitter, { rate: 99, spread: 9 }),
+    });
   }
   const setBuoyancy = fn('setBuoyancy');
-  if (setBuoyancy) cases.push({ label: 'setBuoyancy: shape "toString"', expectFrom: 'setBuoyancy', pattern: /shape/, run: (fx) => e2(setBuoyancy)(fx.world, fx.ball, { shape: 'toString', radius: 1 }) });
+  if (setBuoyancy)
+    cases.push({
+      label: 'setBuoyancy: shape "toString"',
+      expectFrom: 'setBuoyancy',
+      pattern: /shape/,
+      run: (fx) => e2(setBuoyancy)(fx.world, fx.ball, { shape: 'toString', radius: 1 }),
+    });
   const setDrag = fn('setDrag');
-  if (setDrag) cases.push({ label: 'setDrag: a bad quadratic after a good linear', expectFrom: 'setDrag', pattern: /quadratic/, run: (fx) => e2(setDrag)(fx.world, fx.ball, { linear: 1, quadratic: -1 }) });
+  if (setDrag)
+    cases.push({
+      label: 'setDrag: a bad quadratic after a good linear',
+      expectFrom: 'setDrag',
+      pattern: /quadratic/,
+      run: (fx) => e2(setDrag)(fx.world, fx.ball, { linear: 1, quadratic: -1 }),
+    });
   const setInertia = fn('setInertia');
-  if (setInertia) cases.push({ label: 'setInertia: -1 on a body without rotation', expectFrom: 'setInertia', pattern: /inertia/, run: (fx) => e2(setInertia)(fx.world, fx.particle, -1) });
+  if (setInertia)
+    cases.push({
+      label: 'setInertia: -1 on a body without rotation',
+      expectFrom: 'setInertia',
+      pattern: /inertia/,
+      run: (fx) => e2(setInertia)(fx.world, fx.particle, -1),
+    });
   const setAngularVelocity = fn('setAngularVelocity');
-  if (setAngularVelocity) cases.push({ label: 'setAngularVelocity: NaN on a body without rotation', expectFrom: 'setAngularVelocity', pattern: /angularVelocity/, run: (fx) => e2(setAngularVelocity)(fx.world, fx.particle, NaN) });
+  if (setAngularVelocity)
+    cases.push({
+      label: 'setAngularVelocity: NaN on a body without rotation',
+      expectFrom: 'setAngularVelocity',
+      pattern: /angularVelocity/,
+      run: (fx) => e2(setAngularVelocity)(fx.world, fx.particle, NaN),
+    });
   const addBody = fn('addBody');
   if (addBody) {
-    cases.push({ label: 'addBody: a bad inertia', expectFrom: 'addBody', pattern: /inertia/, run: (fx) => e2(addBody)(fx.world, { radius: 1, inertia: -1 }) });
-    cases.push({ label: 'addBody: principal moments in 2D', expectFrom: 'addBody', pattern: /inertia/, run: (fx) => e2(addBody)(fx.world, { radius: 1, inertia: [1, 1, 1] }) });
+    cases.push({
+      label: 'addBody: a bad inertia',
+      expectFrom: 'addBody',
+      pattern: /inertia/,
+      run: (fx) => e2(addBody)(fx.world, { radius: 1, inertia: -1 }),
+    });
+    cases.push({
+      label: 'addBody: principal moments in 2D',
+      expectFrom: 'addBody',
+      pattern: /inertia/,
+      run: (fx) => e2(addBody)(fx.world, { radius: 1, inertia: [1, 1, 1] }),
+    });
   }
   return cases;
 }
@@ -266,7 +466,9 @@ function makeFixtureKeysOnly(): Fixture {
 export function snapshot(world: World): string {
   const c = world.components as unknown as Record<string, Record<string, ArrayLike<number>> | object>;
   const parts: string[] = [];
-  parts.push(`alive ${world.entityIndex.aliveCount} dense ${Array.from(world.entityIndex.dense.slice(0, world.entityIndex.aliveCount)).join(',')}`);
+  parts.push(
+    `alive ${world.entityIndex.aliveCount} dense ${Array.from(world.entityIndex.dense.slice(0, world.entityIndex.aliveCount)).join(',')}`,
+  );
   parts.push(`stamps ${Array.from(world.spawnStamp).join(',')}`);
   for (const name of Object.keys(c)) {
     const store = c[name]!;

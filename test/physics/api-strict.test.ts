@@ -1,8 +1,24 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addElectricField, addEmitter, addFluidRegion, addMagneticField, addParticle, addSpring, createEntity,
-  createPhysicsWorld, handleOf, isAlive, query, removeBody, setVelocity, slotOf, SLOT_RANGE, step, stepMany,
+  addBody,
+  addElectricField,
+  addEmitter,
+  addFluidRegion,
+  addMagneticField,
+  addParticle,
+  addSpring,
+  createEntity,
+  createPhysicsWorld,
+  handleOf,
+  isAlive,
+  query,
+  removeBody,
+  SLOT_RANGE,
+  setVelocity,
+  slotOf,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 import { buildCases, classify, makeFixture, snapshot } from './api-strict-cases.js';
 
 /**
@@ -24,7 +40,11 @@ describe('every public function refuses bad calls with a clear error and changes
       const fx = makeFixture();
       const before = snapshot(fx.world);
       let error: unknown;
-      try { c.run(fx); } catch (e) { error = e; }
+      try {
+        c.run(fx);
+      } catch (e) {
+        error = e;
+      }
       expect(classify(c, error), String(error)).toBe('clear');
       if (c.pattern) expect((error as Error).message).toMatch(c.pattern);
       expect(snapshot(fx.world)).toBe(before);
@@ -33,14 +53,16 @@ describe('every public function refuses bad calls with a clear error and changes
 });
 
 describe('generational handles', () => {
-  test('a removed body\'s handle does not move the body that reuses its slot', () => {
+  test("a removed body's handle does not move the body that reuses its slot", () => {
     const world = createPhysicsWorld({ gravity: [0, 0], capacity: 8 });
     const old = addBody(world, { position: [0, 0], radius: 0.5 });
     removeBody(world, old);
     const fresh = addBody(world, { position: [5, 5], radius: 0.5 });
     expect(slotOf(fresh)).toBe(slotOf(old));
     expect(fresh).toBe(old + SLOT_RANGE); // second life of the slot
-    expect(() => setVelocity(world, old, [1, 0])).toThrow(/setVelocity: entity refers to a removed entity \(id \d+, slot \d+ now holds handle \d+\)/);
+    expect(() => setVelocity(world, old, [1, 0])).toThrow(
+      /setVelocity: entity refers to a removed entity \(id \d+, slot \d+ now holds handle \d+\)/,
+    );
     stepMany(world, 10);
     const P = world.components.Position;
     expect([P.x[slotOf(fresh)], P.y[slotOf(fresh)]]).toEqual([5, 5]); // untouched: nothing moved it
@@ -48,7 +70,7 @@ describe('generational handles', () => {
     expect(isAlive(world, fresh)).toBe(true);
   });
 
-  test('a stale handle cannot turn a field into a ball (the issue\'s setRadius case)', () => {
+  test("a stale handle cannot turn a field into a ball (the issue's setRadius case)", () => {
     const world = createPhysicsWorld({ capacity: 8 });
     const ball = addBody(world, { radius: 0.5 });
     removeBody(world, ball);
@@ -78,7 +100,8 @@ describe('generational handles', () => {
 
   test('a spring to a removed body is refused even though the slot holds a new body', () => {
     const world = createPhysicsWorld({ capacity: 8 });
-    const a = addBody(world, {}), b = addBody(world, { position: [1, 0] });
+    const a = addBody(world, {}),
+      b = addBody(world, { position: [1, 0] });
     removeBody(world, b);
     addBody(world, { position: [2, 0] });
     expect(() => addSpring(world, { a, b, stiffness: 1 })).toThrow(/addSpring: b refers to a removed entity/);
@@ -106,7 +129,8 @@ describe('atomic creation: a refused call leaves nothing behind', () => {
 
   test('a full world refuses every creating function by its own name, and nothing changes', () => {
     const world = createPhysicsWorld({ capacity: 2 });
-    const a = addBody(world, {}), b = addBody(world, { position: [1, 0] });
+    const a = addBody(world, {}),
+      b = addBody(world, { position: [1, 0] });
     const before = snapshot(world);
     const calls: Array<[string, () => unknown]> = [
       ['addBody', () => addBody(world, {})],

@@ -1,11 +1,30 @@
-import { describe, expect, test } from 'vitest';
-import fc from 'fast-check';
 import {
-  addBody, addParticle, addSegment, applyImpulse, ballsInBox, createEntity, createFixedStepLoop, createPhysicsWorld,
-  NonFiniteStateError, removeBody, Rng, setBoundary, setMass, setMaterial, setRadius, step, stepMany, addSystem,
-  setTimeStep, setAngularVelocity, setOrientation, slotOf,
+  addBody,
+  addParticle,
+  addSegment,
+  addSystem,
+  applyImpulse,
+  ballsInBox,
+  createEntity,
+  createFixedStepLoop,
+  createPhysicsWorld,
+  NonFiniteStateError,
+  Rng,
+  removeBody,
+  setAngularVelocity,
+  setBoundary,
+  setMass,
+  setMaterial,
+  setOrientation,
+  setRadius,
+  setTimeStep,
+  slotOf,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
 import { addEntity } from 'bitecs';
+import fc from 'fast-check';
+import { describe, expect, test } from 'vitest';
 
 describe('bad input is refused at the boundary, naming the parameter and the value', () => {
   const world = createPhysicsWorld({ capacity: 10 });
@@ -16,7 +35,12 @@ describe('bad input is refused at the boundary, naming the parameter and the val
     ['radius 0', () => addBody(world, { radius: 0 }), RangeError, /radius must be > 0, got 0/],
     ['negative radius', () => addBody(world, { radius: -0.5 }), RangeError, /radius must be > 0, got -0.5/],
     ['restitution above 1', () => addBody(world, { radius: 1, restitution: 1.5 }), RangeError, /restitution must be in \[0, 1\], got 1.5/],
-    ['restitution below 0', () => addBody(world, { radius: 1, restitution: -0.1 }), RangeError, /restitution must be in \[0, 1\], got -0.1/],
+    [
+      'restitution below 0',
+      () => addBody(world, { radius: 1, restitution: -0.1 }),
+      RangeError,
+      /restitution must be in \[0, 1\], got -0.1/,
+    ],
     ['negative friction', () => addBody(world, { radius: 1, friction: -1 }), RangeError, /friction must be >= 0, got -1/],
     ['unknown body option', () => addBody(world, { restituion: 0.5 } as never), TypeError, /unknown option "restituion"/],
     ['position of the wrong length', () => addBody(world, { position: [1, 2, 3] }), TypeError, /position must be an array of 2 numbers/],
@@ -26,18 +50,38 @@ describe('bad input is refused at the boundary, naming the parameter and the val
     ['dt infinite', () => createPhysicsWorld({ dt: Infinity }), RangeError, /dt must be finite, got Infinity/],
     ['dt NaN', () => createPhysicsWorld({ dt: NaN }), RangeError, /dt must be finite, got NaN/],
     ['unknown world option', () => createPhysicsWorld({ gravty: [0, -9.81] } as never), TypeError, /unknown option "gravty"/],
-    ['unknown integrator', () => createPhysicsWorld({ integrator: 'verlet' as never }), RangeError, /integrator must be one of .*got "verlet"/],
+    [
+      'unknown integrator',
+      () => createPhysicsWorld({ integrator: 'verlet' as never }),
+      RangeError,
+      /integrator must be one of .*got "verlet"/,
+    ],
     ['dimensions 4', () => createPhysicsWorld({ dimensions: 4 as never }), RangeError, /dimensions must be 2 or 3, got 4/],
     ['capacity 0', () => createPhysicsWorld({ capacity: 0 }), RangeError, /capacity must be an integer in \[1, 16777216\], got 0/],
     ['fractional substeps', () => createPhysicsWorld({ substeps: 1.5 }), RangeError, /substeps must be an integer, got 1.5/],
-    ['gravity of the wrong dimension', () => createPhysicsWorld({ dimensions: 3, gravity: [0, -9.81] }), TypeError, /gravity must be an array of 3 numbers/],
+    [
+      'gravity of the wrong dimension',
+      () => createPhysicsWorld({ dimensions: 3, gravity: [0, -9.81] }),
+      TypeError,
+      /gravity must be an array of 3 numbers/,
+    ],
     ['setMass negative', () => setMass(world, addParticle(world), -2), RangeError, /mass must be > 0, got -2/],
     ['setRadius zero', () => setRadius(world, addParticle(world), 0), RangeError, /radius must be > 0, got 0/],
-    ['setMaterial restitution 2', () => setMaterial(world, addParticle(world), { restitution: 2 }), RangeError, /restitution must be in \[0, 1\], got 2/],
+    [
+      'setMaterial restitution 2',
+      () => setMaterial(world, addParticle(world), { restitution: 2 }),
+      RangeError,
+      /restitution must be in \[0, 1\], got 2/,
+    ],
     ['boundary with max below min', () => setBoundary(world, { min: [0, 0], max: [-1, 5] }), RangeError, /max\[0\] must be > min\[0\]/],
     ['segment with a NaN end', () => addSegment(world, { a: [0, 0], b: [NaN, 1] }), RangeError, /b\[0\] must be finite, got NaN/],
     ['removing a missing entity', () => removeBody(world, 999), RangeError, /removeBody: entity must be an entity of this world .*got 999/],
-    ['impulse on a missing entity', () => applyImpulse(world, 998, [1, 0]), RangeError, /applyImpulse: entity must be an entity of this world .*got 998/],
+    [
+      'impulse on a missing entity',
+      () => applyImpulse(world, 998, [1, 0]),
+      RangeError,
+      /applyImpulse: entity must be an entity of this world .*got 998/,
+    ],
     ['loop with dt 0', () => createFixedStepLoop({ dt: 0, step: () => {} }), RangeError, /dt must be > 0, got 0/],
   ];
   for (const [name, run, type, message] of cases) {
@@ -58,9 +102,11 @@ describe('bad input is refused at the boundary, naming the parameter and the val
     expect(small.components.Position.x[3]).toBe(2);
   });
 
-  test('entities made with bitecs\' own addEntity past capacity are caught before their data is lost', () => {
+  test("entities made with bitecs' own addEntity past capacity are caught before their data is lost", () => {
     const small = createPhysicsWorld({ capacity: 2 });
-    addEntity(small); addEntity(small); addEntity(small);
+    addEntity(small);
+    addEntity(small);
+    addEntity(small);
     expect(() => step(small)).toThrow(/entity id 3 exceeds the world's capacity 2/);
   });
 });
@@ -73,7 +119,11 @@ describe('a NaN never spreads silently', () => {
     stepMany(world, 10);
     world.components.Velocity.y[ids[1]!] = NaN;
     let error: unknown;
-    try { step(world); } catch (e) { error = e; }
+    try {
+      step(world);
+    } catch (e) {
+      error = e;
+    }
     expect(error).toBeInstanceOf(NonFiniteStateError);
     expect(error).toBeInstanceOf(RangeError);
     expect((error as NonFiniteStateError).entity).toBe(ids[1]);
@@ -89,7 +139,9 @@ describe('a NaN never spreads silently', () => {
   test('a force law that returns NaN is caught at the same step', () => {
     const world = createPhysicsWorld();
     const body = addBody(world, { position: [0, 1] });
-    addSystem(world, 'forces', (w) => { w.components.Force.x[body] = 0 / 0; });
+    addSystem(world, 'forces', (w) => {
+      w.components.Force.x[body] = 0 / 0;
+    });
     expect(() => step(world)).toThrow(NonFiniteStateError);
   });
 });
@@ -104,7 +156,8 @@ describe('entities', () => {
     // Same slot (bitecs recycles at once), new handle (the slot's second life).
     expect(slotOf(b)).toBe(slotOf(a));
     expect(b).not.toBe(a);
-    const s = slotOf(b), c = world.components;
+    const s = slotOf(b),
+      c = world.components;
     expect([c.Velocity.x[s], c.Velocity.y[s], c.AngularVelocity.z[s], c.Force.x[s], c.Force.y[s]]).toEqual([0, 0, 0, 0, 0]);
     expect(c.PreviousPosition.x[s]).toBe(1);
   });
@@ -116,7 +169,7 @@ describe('entities', () => {
       stepMany(world, 200);
       const P = world.components.Position;
       let hash = 0;
-      for (const e of balls) hash = (Math.imul(hash, 31) + (P.x[e]! * 1e9) | 0) ^ ((P.y[e]! * 1e9) | 0);
+      for (const e of balls) hash = ((Math.imul(hash, 31) + P.x[e]! * 1e9) | 0) ^ ((P.y[e]! * 1e9) | 0);
       return hash;
     };
     expect(run()).toBe(run());
@@ -138,7 +191,14 @@ describe('previous position', () => {
 describe('fixed-step loop', () => {
   test('runs whole steps, keeps the remainder as alpha, clamps the backlog', () => {
     let steps = 0;
-    const loop = createFixedStepLoop({ dt: 0.01, step: () => { steps++; }, maxFrameTime: 0.1, maxStepsPerFrame: 5 });
+    const loop = createFixedStepLoop({
+      dt: 0.01,
+      step: () => {
+        steps++;
+      },
+      maxFrameTime: 0.1,
+      maxStepsPerFrame: 5,
+    });
     let r = loop.advance(0.035);
     expect(r.steps).toBe(3);
     expect(r.alpha).toBeCloseTo(0.5, 9);
@@ -176,12 +236,15 @@ describe('broadphase', () => {
         const rows = world.collision.cache.rows;
         const found = new Set<string>();
         for (let i = 0; i < rows.count; i++) found.add(`${Math.min(rows.a[i]!, rows.b[i]!)}-${Math.max(rows.a[i]!, rows.b[i]!)}`);
-        const O = world.components.PreviousPosition, R = world.components.Ball.radius;
-        for (let i = 0; i < ids.length; i++) for (let j = i + 1; j < ids.length; j++) {
-          const a = ids[i]!, b = ids[j]!;
-          const d = Math.hypot(O.x[b]! - O.x[a]!, O.y[b]! - O.y[a]!, O.z[b]! - O.z[a]!);
-          if (d < R[a]! + R[b]!) expect(found.has(`${a}-${b}`)).toBe(true);
-        }
+        const O = world.components.PreviousPosition,
+          R = world.components.Ball.radius;
+        for (let i = 0; i < ids.length; i++)
+          for (let j = i + 1; j < ids.length; j++) {
+            const a = ids[i]!,
+              b = ids[j]!;
+            const d = Math.hypot(O.x[b]! - O.x[a]!, O.y[b]! - O.y[a]!, O.z[b]! - O.z[a]!);
+            if (d < R[a]! + R[b]!) expect(found.has(`${a}-${b}`)).toBe(true);
+          }
       }),
       { numRuns: 12, seed: 1 },
     );

@@ -1,9 +1,27 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, buildTree, createPhysicsWorld, directField, enableMutualGravity, fieldErrorStats, forceErrorMedian, galaxy,
-  gravityFieldError, gravityMomentumRate, linearMomentum, mutualGravitySystem, Rng, sampleIndices, setGravitation,
-  step, treeField, treeFields, worldTree, type GravityTree, type PhysicsWorld,
+  addBody,
+  buildTree,
+  createPhysicsWorld,
+  directField,
+  enableMutualGravity,
+  fieldErrorStats,
+  forceErrorMedian,
+  type GravityTree,
+  galaxy,
+  gravityFieldError,
+  gravityMomentumRate,
+  linearMomentum,
+  mutualGravitySystem,
+  type PhysicsWorld,
+  Rng,
+  sampleIndices,
+  setGravitation,
+  step,
+  treeField,
+  treeFields,
+  worldTree,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Barnes-Hut mutual gravity (packages/physics/src/forces/barnes-hut.ts) against the direct sum.
@@ -11,7 +29,13 @@ import {
  * evenly spaced sample of bodies (fractions: 0.01 = 1%).
  */
 
-interface Bodies { n: number; x: Float64Array; y: Float64Array; z: Float64Array; m: Float64Array }
+interface Bodies {
+  n: number;
+  x: Float64Array;
+  y: Float64Array;
+  z: Float64Array;
+  m: Float64Array;
+}
 
 function bodies(n: number): Bodies {
   return { n, x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n), m: new Float64Array(n) };
@@ -19,9 +43,12 @@ function bodies(n: number): Bodies {
 
 /** Uniform in the square [-50, 50]^2 (3D: the cube), masses uniform in [0.5, 1.5] kg. */
 function uniform(n: number, dims: 2 | 3, seed: number): Bodies {
-  const rng = new Rng(seed), b = bodies(n);
+  const rng = new Rng(seed),
+    b = bodies(n);
   for (let i = 0; i < n; i++) {
-    b.x[i] = rng.range(-50, 50); b.y[i] = rng.range(-50, 50); b.z[i] = dims === 3 ? rng.range(-50, 50) : 0;
+    b.x[i] = rng.range(-50, 50);
+    b.y[i] = rng.range(-50, 50);
+    b.z[i] = dims === 3 ? rng.range(-50, 50) : 0;
     b.m[i] = rng.range(0.5, 1.5);
   }
   return b;
@@ -32,18 +59,29 @@ function uniform(n: number, dims: 2 | 3, seed: number): Bodies {
  * Gaussian clumps (sigma 0.5 m) scattered over the disc, and a nucleus of 5% of the mass at the centre.
  */
 function clustered2D(n: number, seed: number): Bodies {
-  const rng = new Rng(seed), b = bodies(n);
-  const cx: number[] = [], cy: number[] = [];
-  for (let k = 0; k < 8; k++) { const r = rng.range(3, 25), a = rng.range(0, 2 * Math.PI); cx.push(r * Math.cos(a)); cy.push(r * Math.sin(a)); }
+  const rng = new Rng(seed),
+    b = bodies(n);
+  const cx: number[] = [],
+    cy: number[] = [];
+  for (let k = 0; k < 8; k++) {
+    const r = rng.range(3, 25),
+      a = rng.range(0, 2 * Math.PI);
+    cx.push(r * Math.cos(a));
+    cy.push(r * Math.sin(a));
+  }
   for (let i = 1; i < n; i++) {
     if (rng.next() < 0.7) {
       let r: number;
-      do { r = -5 * Math.log(rng.next() * rng.next() + 1e-300); } while (r > 40);
+      do {
+        r = -5 * Math.log(rng.next() * rng.next() + 1e-300);
+      } while (r > 40);
       const a = rng.range(0, 2 * Math.PI);
-      b.x[i] = r * Math.cos(a); b.y[i] = r * Math.sin(a);
+      b.x[i] = r * Math.cos(a);
+      b.y[i] = r * Math.sin(a);
     } else {
       const k = Math.floor(rng.next() * 8);
-      b.x[i] = cx[k]! + 0.5 * rng.normal(); b.y[i] = cy[k]! + 0.5 * rng.normal();
+      b.x[i] = cx[k]! + 0.5 * rng.normal();
+      b.y[i] = cy[k]! + 0.5 * rng.normal();
     }
     b.m[i] = rng.range(0.5, 1.5);
   }
@@ -53,12 +91,19 @@ function clustered2D(n: number, seed: number): Bodies {
 
 /** Plummer sphere of scale 1 m (3D, clustered: half the mass within 1.3 m), cut at 30 m; equal masses. */
 function plummer3D(n: number, seed: number): Bodies {
-  const rng = new Rng(seed), b = bodies(n);
+  const rng = new Rng(seed),
+    b = bodies(n);
   for (let i = 0; i < n; i++) {
     let r: number;
-    do { r = 1 / Math.sqrt(Math.pow(rng.range(1e-6, 1), -2 / 3) - 1); } while (r > 30);
-    const zc = rng.range(-1, 1), a = rng.range(0, 2 * Math.PI), s = Math.sqrt(1 - zc * zc);
-    b.x[i] = r * s * Math.cos(a); b.y[i] = r * s * Math.sin(a); b.z[i] = r * zc;
+    do {
+      r = 1 / Math.sqrt(rng.range(1e-6, 1) ** (-2 / 3) - 1);
+    } while (r > 30);
+    const zc = rng.range(-1, 1),
+      a = rng.range(0, 2 * Math.PI),
+      s = Math.sqrt(1 - zc * zc);
+    b.x[i] = r * s * Math.cos(a);
+    b.y[i] = r * s * Math.sin(a);
+    b.z[i] = r * zc;
     b.m[i] = 1;
   }
   return b;
@@ -71,7 +116,9 @@ function newTree(dims: 2 | 3): GravityTree {
 /** Tree field at every body (input order). */
 function treeFieldOf(b: Bodies, dims: 2 | 3, eps: number, theta: number, t = newTree(dims)) {
   buildTree(t, b.n, b.x, b.y, b.z, b.m);
-  const ax = new Float64Array(b.n), ay = new Float64Array(b.n), az = new Float64Array(b.n);
+  const ax = new Float64Array(b.n),
+    ay = new Float64Array(b.n),
+    az = new Float64Array(b.n);
   treeFields(t, 1, eps * eps, theta, ax, ay, az);
   return { t, ax, ay, az };
 }
@@ -82,7 +129,11 @@ function treeError(b: Bodies, dims: 2 | 3, eps: number, theta: number, sample = 
   const targets = sampleIndices(b.n, sample);
   const exact = directField(b.n, b.x, b.y, b.z, b.m, 1, eps * eps, targets);
   const approx = new Float64Array(exact.length);
-  targets.forEach((i, k) => { approx[3 * k] = ax[i]!; approx[3 * k + 1] = ay[i]!; approx[3 * k + 2] = az[i]!; });
+  targets.forEach((i, k) => {
+    approx[3 * k] = ax[i]!;
+    approx[3 * k + 1] = ay[i]!;
+    approx[3 * k + 2] = az[i]!;
+  });
   return fieldErrorStats(approx, exact);
 }
 
@@ -120,7 +171,10 @@ describe('accuracy against the direct sum', () => {
   // With theta tiny no two cells are far enough apart, so every pair is summed directly (or by an
   // expansion of point-like cells, which is exact): the tree reproduces the direct sum to rounding.
   // 1e-9 relative leaves room for the different summation order (measured worst 6e-14).
-  test.each([[2, 3000], [3, 2000]] as const)('%iD, N = %i: theta = 1e-3 reproduces the direct sum to 1e-9', (dims, n) => {
+  test.each([
+    [2, 3000],
+    [3, 2000],
+  ] as const)('%iD, N = %i: theta = 1e-3 reproduces the direct sum to 1e-9', (dims, n) => {
     const b = dims === 2 ? clustered2D(n, 5) : plummer3D(n, 6);
     const eps = 0.02;
     const { ax, ay, az } = treeFieldOf(b, dims, eps, 1e-3);
@@ -137,13 +191,18 @@ describe('accuracy against the direct sum', () => {
   // The single-body walk (treeField, a classic quadrupole Barnes-Hut walk) has the same accuracy
   // target, 1% median at theta = 0.5 (measured 0.4%).
   test('treeField for single bodies agrees with the direct sum', () => {
-    const b = clustered2D(5000, 7), eps = 0.05;
+    const b = clustered2D(5000, 7),
+      eps = 0.05;
     const t = newTree(2);
     buildTree(t, b.n, b.x, b.y, b.z, b.m);
     const targets = sampleIndices(b.n, 200);
     const exact = directField(b.n, b.x, b.y, b.z, b.m, 1, eps * eps, targets);
-    const approx = new Float64Array(exact.length), out = new Float64Array(3);
-    targets.forEach((i, k) => { treeField(t, i, 1, eps * eps, 0.5, out); approx.set(out, 3 * k); });
+    const approx = new Float64Array(exact.length),
+      out = new Float64Array(3);
+    targets.forEach((i, k) => {
+      treeField(t, i, 1, eps * eps, 0.5, out);
+      approx.set(out, 3 * k);
+    });
     expect(fieldErrorStats(approx, exact).median).toBeLessThan(0.01);
   });
 });
@@ -172,18 +231,35 @@ describe('degenerate inputs', () => {
   // Coincident bodies cannot be separated by splitting; the cell-size floor (1e-9 of the root) makes
   // them one leaf. Softened, a coincident pair pulls with zero force (d = 0); unsoftened, the pair is
   // skipped as in the direct sum. Either way: finite, and equal to the direct sum.
-  test.each([[2, 0.05], [2, 0], [3, 0.05], [3, 0]] as const)('%iD, eps = %f: coincident bodies', (dims, eps) => {
+  test.each([
+    [2, 0.05],
+    [2, 0],
+    [3, 0.05],
+    [3, 0],
+  ] as const)('%iD, eps = %f: coincident bodies', (dims, eps) => {
     const n = 400;
     const b = uniform(n, dims, 8);
-    for (let i = 0; i < 200; i++) { b.x[i] = 1.5; b.y[i] = -2.5; b.z[i] = dims === 3 ? 0.5 : 0; }
-    for (let i = 200; i < 230; i++) { b.x[i] = 1.5 + 1e-13 * i; b.y[i] = -2.5; b.z[i] = 0; } // closer than the cell floor
+    for (let i = 0; i < 200; i++) {
+      b.x[i] = 1.5;
+      b.y[i] = -2.5;
+      b.z[i] = dims === 3 ? 0.5 : 0;
+    }
+    for (let i = 200; i < 230; i++) {
+      b.x[i] = 1.5 + 1e-13 * i;
+      b.y[i] = -2.5;
+      b.z[i] = 0;
+    } // closer than the cell floor
     for (const theta of [1e-3, 0.5]) {
       const { ax, ay, az } = treeFieldOf(b, dims, eps, theta);
       expect(finite(ax) && finite(ay) && finite(az)).toBe(true);
       const all = sampleIndices(n, n);
       const exact = directField(n, b.x, b.y, b.z, b.m, 1, eps * eps, all);
       const approx = new Float64Array(3 * n);
-      for (let i = 0; i < n; i++) { approx[3 * i] = ax[i]!; approx[3 * i + 1] = ay[i]!; approx[3 * i + 2] = az[i]!; }
+      for (let i = 0; i < n; i++) {
+        approx[3 * i] = ax[i]!;
+        approx[3 * i + 1] = ay[i]!;
+        approx[3 * i + 2] = az[i]!;
+      }
       // Tiny theta: the direct sum to rounding, as above (measured <= 1e-15 median). Theta 0.5: the
       // accuracy target (measured <= 0.5%).
       expect(fieldErrorStats(approx, exact).median).toBeLessThan(theta < 0.01 ? 1e-9 : 0.01);
@@ -208,7 +284,9 @@ describe('degenerate inputs', () => {
   test('all bodies at one point: zero field, no NaN', () => {
     const n = 1000;
     const b = bodies(n);
-    b.x.fill(7); b.y.fill(7); b.m.fill(1);
+    b.x.fill(7);
+    b.y.fill(7);
+    b.m.fill(1);
     const { ax, ay } = treeFieldOf(b, 2, 0.1, 0.5);
     expect(ax.every((v) => v === 0) && ay.every((v) => v === 0)).toBe(true);
   });
@@ -220,7 +298,8 @@ function discWorld(n: number, method: 'direct' | 'barnes-hut', seed = 9): Physic
   setGravitation(world, { constant: 1, softening: 0.2, method, openingAngle: 0.6 });
   const rng = new Rng(seed);
   for (let i = 0; i < n; i++) {
-    const r = 20 * Math.sqrt(rng.next()), a = rng.range(0, 2 * Math.PI);
+    const r = 20 * Math.sqrt(rng.next()),
+      a = rng.range(0, 2 * Math.PI);
     const e = addBody(world, {
       position: [r * Math.cos(a), r * Math.sin(a)],
       velocity: [-0.3 * r * Math.sin(a) + rng.normal(), 0.3 * r * Math.cos(a) + rng.normal()],
@@ -239,7 +318,13 @@ describe('in a world', () => {
     const n = 3000;
     const world = discWorld(n, 'direct');
     const F = world.components.Force;
-    const force = () => { F.x.fill(0); F.y.fill(0); F.z.fill(0); mutualGravitySystem(world); return [F.x.slice(), F.y.slice()]; };
+    const force = () => {
+      F.x.fill(0);
+      F.y.fill(0);
+      F.z.fill(0);
+      mutualGravitySystem(world);
+      return [F.x.slice(), F.y.slice()];
+    };
     const [dx, dy] = force();
     setGravitation(world, { method: 'barnes-hut', openingAngle: 0.5 });
     const [bx, by] = force();
@@ -263,7 +348,8 @@ describe('in a world', () => {
   // (here 2e-9 kg m/s; measured drift 3e-13, against a total |P| of 46 kg m/s).
   test('barnes-hut keeps total momentum to rounding over 200 steps', () => {
     const world = discWorld(1000, 'barnes-hut');
-    const steps = 200, h = world.h;
+    const steps = 200,
+      h = world.h;
     const p0 = Float64Array.from(linearMomentum(world));
     const rate0 = gravityMomentumRate(world);
     expect(rate0.relative).toBeLessThan(1e-12);

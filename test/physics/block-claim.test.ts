@@ -17,7 +17,8 @@ function run(count: number, threads: number, order: number[]): number[][] {
     const t = order[i % order.length]!;
     if (done[t]) continue;
     const b = claimBlock(claim, base, count, t, threads, cursors[t]!);
-    if (b < 0) done[t] = true; else taken[t]!.push(b);
+    if (b < 0) done[t] = true;
+    else taken[t]!.push(b);
   }
   expect(Array.from(claim.subarray(0, base))).toEqual([0, 0, 0, 0, 0]);
   expect(Array.from(claim.subarray(base, base + count))).toEqual(new Array(count).fill(1));
@@ -26,7 +27,10 @@ function run(count: number, threads: number, order: number[]): number[][] {
 
 test('every block of a unit is taken exactly once, each thread from its own share first', () => {
   // Two threads at the same pace: each takes exactly its own half, in order.
-  expect(run(16, 2, [0, 1])).toEqual([[0, 1, 2, 3, 4, 5, 6, 7], [8, 9, 10, 11, 12, 13, 14, 15]]);
+  expect(run(16, 2, [0, 1])).toEqual([
+    [0, 1, 2, 3, 4, 5, 6, 7],
+    [8, 9, 10, 11, 12, 13, 14, 15],
+  ]);
   // Thread 1 three times as fast: it finishes its half, then takes thread 0's from the end backward,
   // and they meet; no block twice, none left.
   const [a, b] = run(16, 2, [0, 1, 1, 1]);
@@ -41,7 +45,7 @@ test('every block of a unit is taken exactly once, each thread from its own shar
   expect(q).toEqual([3, 4, 5, 7]);
 });
 
-test('every idle thread helps with a slow thread\'s share, not only the first to reach it', () => {
+test("every idle thread helps with a slow thread's share, not only the first to reach it", () => {
   // Four threads, thread 3 never running: threads 0, 1 and 2 finish their own shares together, then
   // all three take thread 3's share from its end, each passing over the blocks the others took.
   // (Before, a thief stopped at the first taken block, so thread 0 alone took 15, 14, 13 and 12.)

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Friction of a manifold solved once a manifold (manifold3d-solver.ts: two tangent rows at an anchor and
@@ -24,7 +24,8 @@ function cubeOnFloor(velocity: number[], angularVelocity: number[]): { world: Re
 describe('3D boxes: friction of a cube on a floor against Coulomb at its corners', () => {
   test('a cube spinning about the vertical at 4 rad/s slows at mu m g r / I = 25.5 rad/s^2 and stops', () => {
     const { world, e } = cubeOnFloor([0, 0, 0], [0, 4, 0]);
-    const W = world.components.AngularVelocity, P = world.components.Position;
+    const W = world.components.AngularVelocity,
+      P = world.components.Position;
     // 6 steps of 1/60 s: 4 - 25.46 * 0.1 = 1.454 rad/s. Bound 10 % of the 2.546 rad/s lost (the first
     // substeps build the normal impulse, and the limit follows it).
     for (let s = 0; s < 6; s++) step(world);
@@ -50,7 +51,8 @@ describe('3D boxes: friction of a cube on a floor against Coulomb at its corners
 
   test('a cube sliding at 3 m/s slows at mu g = 6 m/s^2 without turning', () => {
     const { world, e } = cubeOnFloor([3, 0, 0], [0, 0, 0]);
-    const V = world.components.Velocity, W = world.components.AngularVelocity;
+    const V = world.components.Velocity,
+      W = world.components.AngularVelocity;
     // 15 steps: 3 - 6 * 0.25 = 1.5 m/s; bound 5 % of the 1.5 m/s lost.
     for (let s = 0; s < 15; s++) step(world);
     expect(Math.abs(V.x[e]! - 1.5)).toBeLessThan(0.05 * 1.5);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Two 1 m cubes (1 kg each, zero restitution, no gravity) meeting face to face: the deepest overlap of
@@ -12,10 +12,14 @@ function faceHit(v: number): { pen: number; p: number; side: number; part: numbe
   addShape3D(world, A, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1 });
   const B = addBody(world, { position: [0.8, 0, 0], velocity: [-v / 2, 0, 0] });
   addShape3D(world, B, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1 });
-  const a = slotOf(A), b = slotOf(B), c = world.components;
-  let pen = 0, p = 0, side = 0;
+  const a = slotOf(A),
+    b = slotOf(B),
+    c = world.components;
+  let pen = 0,
+    p = 0,
+    side = 0;
   // Contact after (1.6 - 1) m / v; 30 steps more to see them part.
-  const steps = Math.ceil(0.6 / v * 60) + 30;
+  const steps = Math.ceil((0.6 / v) * 60) + 30;
   for (let s = 0; s < steps; s++) {
     step(world);
     pen = Math.max(pen, 1 - (c.Position.x[b]! - c.Position.x[a]!));
@@ -50,10 +54,15 @@ describe('3D boxes: a flat hit', () => {
     addShape3D(world, f, { type: 'box', halfExtents: [3, 0.5, 3] });
     const d = addBody(world, { position: [0, 1.3, 0], velocity: [0, -10, 0] });
     addShape3D(world, d, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
-    const e = slotOf(d), c = world.components;
+    const e = slotOf(d),
+      c = world.components;
     let pen = 0;
-    for (let s = 0; s < 20; s++) { step(world); pen = Math.max(pen, 1 - c.Position.y[e]!); }
-    const V = c.Velocity, W = c.AngularVelocity;
+    for (let s = 0; s < 20; s++) {
+      step(world);
+      pen = Math.max(pen, 1 - c.Position.y[e]!);
+    }
+    const V = c.Velocity,
+      W = c.AngularVelocity;
     // Zero restitution: it should end at rest on the floor. One Gauss-Seidel sweep per pass over the four
     // points left it at 0.16 m/s sideways, 0.13 m/s back up and 0.23 rad/s; bounds 0.01 m/s and 0.01 rad/s.
     expect(pen).toBeLessThan(1e-3);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('3D box pairs: a manifold carried over between steps follows the boxes', () => {
   // Box pairs reuse last step's manifold while their relative pose barely changes (shape3d-collision.ts,
@@ -13,7 +13,8 @@ describe('3D box pairs: a manifold carried over between steps follows the boxes'
     const v0 = 0.1;
     const top = addBody(world, { position: [0, 1, 0], velocity: [v0, 0, 0] });
     addShape3D(world, top, { type: 'box', halfExtents: [0.5, 0.5, 0.5], friction: 0 });
-    const t = slotOf(top), c = world.components;
+    const t = slotOf(top),
+      c = world.components;
     // The centre reaches the edge (x = 0.5 m) at 5 s = 300 steps; the box is statically stable until then.
     for (let s = 0; s < 280; s++) {
       step(world);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addPlane, addShape3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('3D collide stage: the first step of many boxes', () => {
   // Regression: the collider scratch of the 3D broadphase grew while it was being filled and dropped
@@ -20,7 +20,8 @@ describe('3D collide stage: the first step of many boxes', () => {
     expect(world.collision.stats.contacts).toBe(4 * boxes.length);
     // Held by the floor: a box the floor missed would fall at v = -g h = -0.167 m/s after one step;
     // a held one keeps |v_y| far below that (1 % of g h allows for the soft contact's settling).
-    const c = world.components, gh = 10 * world.dt;
+    const c = world.components,
+      gh = 10 * world.dt;
     for (const b of boxes) expect(Math.abs(c.Velocity.y[b]!)).toBeLessThan(0.01 * gh);
   });
 });

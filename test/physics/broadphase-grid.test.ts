@@ -1,7 +1,7 @@
+import { addBody, addSegment, createPhysicsWorld, disposeWorld, type PhysicsWorld, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { addBody, addSegment, createPhysicsWorld, disposeWorld, stepMany, type PhysicsWorld } from '@bitphysics/physics';
-import { Rng } from '../../packages/physics/src/rng.js';
 import { broadphaseSystem, DENSE_MIN_BODIES, PairKind } from '../../packages/physics/src/collision/broadphase.js';
+import { Rng } from '../../packages/physics/src/rng.js';
 
 // The broadphase's two grids (collision/broadphase.ts): a dense grid in space order for a large,
 // compact world, the spatial hash otherwise. Whichever runs, the pairs must be exactly those a brute-
@@ -10,7 +10,9 @@ import { broadphaseSystem, DENSE_MIN_BODIES, PairKind } from '../../packages/phy
 // queries) and segments too.
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 /**
  * 1,200 balls (radius 0.5 m, 0.02 diameters apart, small random velocities, no gravity) in a block of
@@ -22,7 +24,8 @@ function blocks(apart: number): PhysicsWorld {
   worlds.push(world);
   const rng = new Rng(5);
   for (let k = 0; k < 1200; k++) {
-    const i = k % 40, j = Math.floor(k / 40);
+    const i = k % 40,
+      j = Math.floor(k / 40);
     const shift = apart > 0 && k >= 600 ? apart : 0;
     const y = apart > 0 && k >= 600 ? 1.02 * (j - 15) : 1.02 * j;
     addBody(world, { position: [1.02 * i + shift, y], velocity: [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)], radius: 0.5 });
@@ -35,7 +38,8 @@ function blocks(apart: number): PhysicsWorld {
 /** Runs the broadphase on `world`'s current state and checks its ball pairs against brute force; returns the pair count. */
 function checkPairs(world: PhysicsWorld, skip = -1): number {
   broadphaseSystem(world);
-  const c = world.components, cs = world.collision;
+  const c = world.components,
+    cs = world.collision;
   const n = c.Ball.radius.length - 1;
   const found = new Set<number>();
   let ballPairs = 0;
@@ -46,13 +50,16 @@ function checkPairs(world: PhysicsWorld, skip = -1): number {
   }
   expect(found.size).toBe(ballPairs); // no pair twice
   let brute = 0;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, R = c.Ball.radius;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    R = c.Ball.radius;
   for (let e = 1; e <= n; e++) {
     if (!(R[e]! > 0) || e === skip) continue;
     for (let f = e + 1; f <= n; f++) {
       if (!(R[f]! > 0) || f === skip) continue;
       const rr = R[e]! + cs.margin[e]! + R[f]! + cs.margin[f]!;
-      const dx = ox[f]! - ox[e]!, dy = oy[f]! - oy[e]!;
+      const dx = ox[f]! - ox[e]!,
+        dy = oy[f]! - oy[e]!;
       if (dx * dx + dy * dy < rr * rr) {
         brute++;
         if (!found.has(e * (n + 1) + f)) throw new Error(`pair ${e} ${f} missed`);
@@ -73,15 +80,21 @@ test('dense grid (a compact world of 1,200 balls): the brute-force pairs, with a
   // The lattice's neighbours and the big ball's: far more pairs than balls.
   expect(pairs).toBeGreaterThan(2000);
   // The segment is paired with every ball that touches its line between the end points (and no ball twice).
-  const cs = world.collision, c = world.components;
+  const cs = world.collision,
+    c = world.components;
   const withSegment = new Set<number>();
   for (let i = 0; i < cs.pairCount; i++) if (cs.pairKind[i] === PairKind.SegmentBall) withSegment.add(cs.pairB[i]!);
   let touching = 0;
   for (let e = 1; e <= 1200; e++) {
-    const px = c.PreviousPosition.x[e]! + 2, py = c.PreviousPosition.y[e]! - 3.3;
-    const ex = 47, ey = 5.8;
+    const px = c.PreviousPosition.x[e]! + 2,
+      py = c.PreviousPosition.y[e]! - 3.3;
+    const ex = 47,
+      ey = 5.8;
     const u = Math.min(1, Math.max(0, (px * ex + py * ey) / (ex * ex + ey * ey)));
-    if (Math.hypot(px - u * ex, py - u * ey) < 0.5) { touching++; expect(withSegment.has(e)).toBe(true); }
+    if (Math.hypot(px - u * ex, py - u * ey) < 0.5) {
+      touching++;
+      expect(withSegment.has(e)).toBe(true);
+    }
   }
   expect(touching).toBeGreaterThan(20);
 });

@@ -1,9 +1,9 @@
+import { createCloth, createPhysicsWorld, pinClothPoint, setTimeStep, setWind, slotOf, step, windAt } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { createCloth, createPhysicsWorld, pinClothPoint, setTimeStep, setWind, step, windAt, slotOf } from '@bitphysics/physics';
 import { cosine } from '../../packages/physics/src/math/cosine.js';
 
 describe('cloth solver', () => {
-  test('a compliant link holds its load by Hooke\'s law: extension = compliance x weight', () => {
+  test("a compliant link holds its load by Hooke's law: extension = compliance x weight", () => {
     // A 2 x 2 cloth pinned along its top: each lower point hangs on a vertical structural link of rest
     // length 1 m and compliance alpha (1 / stiffness); the lower horizontal link carries no load. In
     // small-step XPBD the rest state is exactly alpha m g below the rest length (Macklin et al. 2019: the
@@ -11,11 +11,21 @@ describe('cloth solver', () => {
     // Chosen for a 5% stretch, where a square-root-free projection that is only first-order right
     // (Jakobsen's, 2.5% off at 5% strain) would be 1.2 mm out; the solver's rational step is 6e-4 of
     // the strain off, 3e-5 m here. Tolerance 1e-4 m, with the oscillation damped by drag (tau ~ 0.17 s).
-    const g = 9.81, m = 0.25, alpha = 0.05 / (m * g);
+    const g = 9.81,
+      m = 0.25,
+      alpha = 0.05 / (m * g);
     const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -g], capacity: 32 });
     const cloth = createCloth(world, {
-      columns: 2, rows: 2, width: 1, height: 1, origin: [0, 2], mass: 4 * m, compliance: alpha,
-      shearCompliance: null, bendCompliance: null, drag: 3,
+      columns: 2,
+      rows: 2,
+      width: 1,
+      height: 1,
+      origin: [0, 2],
+      mass: 4 * m,
+      compliance: alpha,
+      shearCompliance: null,
+      bendCompliance: null,
+      drag: 3,
     });
     for (let i = 0; i < 240; i++) step(world);
     const y = world.components.Position.y;
@@ -32,8 +42,14 @@ describe('cloth solver', () => {
       const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 512 });
       const cloth = createCloth(world, { columns: 8, rows: 8, width: 1, height: 1, origin: [0, 2], compliance: 1e-4 });
       const grabbed = cloth.points[7 * 8 + 3]!;
-      const n = cloth.points.length, out = new Float64Array(4 * n), p = world.components.Position;
-      const record = (at: number): void => cloth.points.forEach((h, i) => { out[at + 2 * i] = p.x[slotOf(h)]!; out[at + 2 * i + 1] = p.y[slotOf(h)]!; });
+      const n = cloth.points.length,
+        out = new Float64Array(4 * n),
+        p = world.components.Position;
+      const record = (at: number): void =>
+        cloth.points.forEach((h, i) => {
+          out[at + 2 * i] = p.x[slotOf(h)]!;
+          out[at + 2 * i + 1] = p.y[slotOf(h)]!;
+        });
       for (let i = 0; i < 90; i++) {
         if (hold && i === 20) pinClothPoint(world, grabbed, [0.4, 0.6]);
         if (hold && i === 50) pinClothPoint(world, grabbed, null);
@@ -45,7 +61,8 @@ describe('cloth solver', () => {
       record(2 * n); // positions while held (step 49), then at the end
       return out;
     };
-    const kept = run(false), fresh = run(true);
+    const kept = run(false),
+      fresh = run(true);
     expect(Array.from(kept)).toEqual(Array.from(fresh));
     // The hold changed the motion (by more than 1 cm somewhere), so the comparison covers it.
     const free = run(false, false);
@@ -53,7 +70,7 @@ describe('cloth solver', () => {
   });
 });
 
-describe('cosine (the wind\'s turbulence)', () => {
+describe("cosine (the wind's turbulence)", () => {
   test('matches Math.cos within its stated bound, 5e-14 + 2.4e-16 |x|', () => {
     let worst = 0;
     for (let i = 0; i <= 200000; i++) {
@@ -71,14 +88,22 @@ describe('cosine (the wind\'s turbulence)', () => {
   test('windAt sums the turbulent modes it documents (checked with Math.cos)', () => {
     const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0] });
     setWind(world, { velocity: [4, 0], turbulence: { intensity: 1, lengthScale: 2, timeScale: 1, seed: 3, modes: 8 } });
-    const w = world.laws.wind, out = new Float64Array(3);
+    const w = world.laws.wind,
+      out = new Float64Array(3);
     const amp = w.intensity * Math.sqrt(4 / w.modes);
-    for (const [x, y, t] of [[0.3, 6.1, 0], [5.2, -1.4, 12.5], [300, 200, 3600]] as const) {
-      let u = 4, v = 0;
+    for (const [x, y, t] of [
+      [0.3, 6.1, 0],
+      [5.2, -1.4, 12.5],
+      [300, 200, 3600],
+    ] as const) {
+      let u = 4,
+        v = 0;
       for (let m = 0; m < w.modes; m++) {
-        const d = w.modeData, o = 8 * m;
+        const d = w.modeData,
+          o = 8 * m;
         const c = amp * Math.cos(d[o]! * x + d[o + 1]! * y - d[o + 3]! * t + d[o + 4]!);
-        u += c * d[o + 5]!; v += c * d[o + 6]!;
+        u += c * d[o + 5]!;
+        v += c * d[o + 6]!;
       }
       windAt(world, x, y, 0, t, out);
       expect(Math.abs(out[0]! - u)).toBeLessThan(1e-10);

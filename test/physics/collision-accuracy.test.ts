@@ -1,5 +1,15 @@
+import {
+  addBody,
+  addSegment,
+  createPhysicsWorld,
+  forEachContact,
+  kineticEnergy,
+  linearMomentum,
+  setBoundary,
+  step,
+  stepMany,
+} from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addSegment, createPhysicsWorld, forEachContact, kineticEnergy, linearMomentum, setBoundary, step, stepMany } from '@bitphysics/physics';
 
 /**
  * Collisions against their analytic results: bounce heights, Newton's cradle, oblique elastic hits,
@@ -17,17 +27,22 @@ describe('collision accuracy', () => {
     for (const dt of [1 / 60, 1 / 240]) {
       const world = createPhysicsWorld({ dimensions: 2, capacity: 4, dt });
       setBoundary(world, { min: [-10, 0], max: [10, 100], restitution: 0.8 });
-      const r = 0.1, g = 9.81;
+      const r = 0.1,
+        g = 9.81;
       const ball = addBody(world, { position: [0, 5 + r], radius: r, restitution: 0.8, friction: 0 });
-      const P = world.components.Position, V = world.components.Velocity;
+      const P = world.components.Position,
+        V = world.components.Velocity;
       const peaks: number[] = [];
       for (let i = 0; i < 30 / dt && peaks.length < 5; i++) {
-        const y0 = P.y[ball]!, v0 = V.y[ball]!;
+        const y0 = P.y[ball]!,
+          v0 = V.y[ball]!;
         step(world);
         if (v0 > 0 && V.y[ball]! <= 0) peaks.push(y0 + (v0 * v0) / (2 * g) - r);
       }
       expect(peaks.length).toBe(5);
-      peaks.forEach((p, n) => expect(Math.abs(p / (5 * 0.8 ** (2 * (n + 1))) - 1)).toBeLessThan(0.01));
+      peaks.forEach((p, n) => {
+        expect(Math.abs(p / (5 * 0.8 ** (2 * (n + 1))) - 1)).toBeLessThan(0.01);
+      });
     }
   });
 
@@ -42,7 +57,8 @@ describe('collision accuracy', () => {
       const world = createPhysicsWorld({ dimensions: 2, capacity: 8, gravity: [0, 0] });
       const r = 0.5;
       const ids: number[] = [];
-      for (let i = 0; i < 5; i++) ids.push(addBody(world, { position: [i * (2 * r + gap), 0], radius: r, mass: 1, restitution: 1, friction: 0 }));
+      for (let i = 0; i < 5; i++)
+        ids.push(addBody(world, { position: [i * (2 * r + gap), 0], radius: r, mass: 1, restitution: 1, friction: 0 }));
       world.components.Position.x[ids[0]!] = -0.3 - gap;
       world.components.Velocity.x[ids[0]!] = 2;
       stepMany(world, 120);
@@ -68,13 +84,17 @@ describe('collision accuracy', () => {
       for (const b of impacts) {
         for (let j = 0; j < 10; j++) {
           const world = createPhysicsWorld({ dimensions: 2, capacity: 4, gravity: [0, 0] });
-          const h = world.dt, R = 0.5;
-          const nx = Math.sqrt(1 - b * b), ny = -b;
+          const h = world.dt,
+            R = 0.5;
+          const nx = Math.sqrt(1 - b * b),
+            ny = -b;
           const x0 = -nx - u * h * (3 + j / 10);
           const A = addBody(world, { position: [x0, b], velocity: [u, 0], radius: R, mass: 1, restitution: 1, friction: 0 });
           const B = addBody(world, { position: [0, 0], radius: R, mass: 1, restitution: 1, friction: 0 });
-          const P = world.components.Position, V = world.components.Velocity;
-          let hitStep = -1, gapAtImpulse = Number.NaN;
+          const P = world.components.Position,
+            V = world.components.Velocity;
+          let hitStep = -1,
+            gapAtImpulse = Number.NaN;
           for (let i = 0; i < 8; i++) {
             const before = V.x[B]!;
             step(world);
@@ -83,7 +103,8 @@ describe('collision accuracy', () => {
               // B sat at the origin until the impulse, then moved at its new velocity for the rest of
               // the step, tau; A likewise moved at its new velocity for tau. So tau = |x_B| / |v_B|
               // and the centres were |x_A - v_A tau - 0| apart when the impulse was applied.
-              const vb = Math.hypot(V.x[B]!, V.y[B]!), tau = Math.hypot(P.x[B]!, P.y[B]!) / vb;
+              const vb = Math.hypot(V.x[B]!, V.y[B]!),
+                tau = Math.hypot(P.x[B]!, P.y[B]!) / vb;
               expect(tau).toBeLessThanOrEqual(h * (1 + 1e-9));
               gapAtImpulse = Math.hypot(P.x[A]! - V.x[A]! * tau, P.y[A]! - V.y[A]! * tau) - 2 * R;
             }
@@ -154,8 +175,16 @@ describe('collision accuracy', () => {
     const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
     const ids: number[] = [];
     for (let i = 0; i < 100; i++) {
-      const a = rnd() * 2 * Math.PI, s = 200 * rnd();
-      ids.push(addBody(world, { position: [1 + 8 * rnd(), 1 + 8 * rnd()], velocity: [s * Math.cos(a), s * Math.sin(a)], radius: 0.2, restitution: 0.9 }));
+      const a = rnd() * 2 * Math.PI,
+        s = 200 * rnd();
+      ids.push(
+        addBody(world, {
+          position: [1 + 8 * rnd(), 1 + 8 * rnd()],
+          velocity: [s * Math.cos(a), s * Math.sin(a)],
+          radius: 0.2,
+          restitution: 0.9,
+        }),
+      );
     }
     const P = world.components.Position;
     let worst = 0;
@@ -177,11 +206,20 @@ describe('collision accuracy', () => {
     const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
     let scale = 0;
     for (let i = 0; i < 100; i++) {
-      const a = rnd() * 2 * Math.PI, s = 1 + rnd();
+      const a = rnd() * 2 * Math.PI,
+        s = 1 + rnd();
       scale += s;
-      addBody(world, { position: [(i % 10) * 0.5, Math.floor(i / 10) * 0.5], velocity: [s * Math.cos(a), s * Math.sin(a)], radius: 0.2, mass: 1 + rnd(), restitution: 1, friction: 0 });
+      addBody(world, {
+        position: [(i % 10) * 0.5, Math.floor(i / 10) * 0.5],
+        velocity: [s * Math.cos(a), s * Math.sin(a)],
+        radius: 0.2,
+        mass: 1 + rnd(),
+        restitution: 1,
+        friction: 0,
+      });
     }
-    const p0 = linearMomentum(world), k0 = kineticEnergy(world);
+    const p0 = linearMomentum(world),
+      k0 = kineticEnergy(world);
     stepMany(world, 600);
     const p1 = linearMomentum(world);
     expect(Math.hypot(p1[0]! - p0[0]!, p1[1]! - p0[1]!)).toBeLessThan(1e-12 * scale);
@@ -198,17 +236,22 @@ describe('collision accuracy', () => {
    * the relax pass looking a substep past the step) this gas lost 0.096 % in 500 steps.
    */
   test('an elastic gas of 500 balls in a box keeps its kinetic energy (0.025 % over 500 steps)', () => {
-    const count = 500, r = 0.1;
+    const count = 500,
+      r = 0.1;
     const world = createPhysicsWorld({ dimensions: 2, capacity: count + 8, gravity: [0, 0], sleep: false });
-    const H = Math.sqrt((count * Math.PI * r * r) / 0.12 / 1.5), W = 1.5 * H;
+    const H = Math.sqrt((count * Math.PI * r * r) / 0.12 / 1.5),
+      W = 1.5 * H;
     setBoundary(world, { min: [0, 0], max: [W, H], restitution: 1, friction: 0 });
     let seed = 3;
     const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
-    const cols = Math.ceil(Math.sqrt(count * 1.5)), rows = Math.ceil(count / cols);
-    const dx = W / cols, dy = H / rows;
+    const cols = Math.ceil(Math.sqrt(count * 1.5)),
+      rows = Math.ceil(count / cols);
+    const dx = W / cols,
+      dy = H / rows;
     for (let i = 0; i < count; i++) {
       const a = 2 * Math.PI * rnd();
-      const x = (i % cols + 0.5) * dx + (rnd() - 0.5) * 0.4 * (dx - 2 * r), y = (Math.floor(i / cols) + 0.5) * dy + (rnd() - 0.5) * 0.4 * (dy - 2 * r);
+      const x = ((i % cols) + 0.5) * dx + (rnd() - 0.5) * 0.4 * (dx - 2 * r),
+        y = (Math.floor(i / cols) + 0.5) * dy + (rnd() - 0.5) * 0.4 * (dy - 2 * r);
       addBody(world, { position: [x, y], velocity: [Math.cos(a), Math.sin(a)], radius: r, mass: 1, restitution: 1, friction: 0 });
     }
     const k0 = kineticEnergy(world);
@@ -229,12 +272,19 @@ describe('collision accuracy', () => {
    */
   test('a 0.2 m marble run follows the 2 m one scaled, within 1e-3 of its length', () => {
     const run = (L: number): Float64Array[] => {
-      const world = createPhysicsWorld({ dimensions: 2, capacity: 16, dt: Math.sqrt(L / 2) / 60, sleep: false, restitutionThreshold: 0.5 * Math.sqrt(L / 2) });
+      const world = createPhysicsWorld({
+        dimensions: 2,
+        capacity: 16,
+        dt: Math.sqrt(L / 2) / 60,
+        sleep: false,
+        restitutionThreshold: 0.5 * Math.sqrt(L / 2),
+      });
       setBoundary(world, { min: [0, 0], max: [L, L], restitution: 0.4, friction: 0.3 });
       addSegment(world, { a: [0.05 * L, 0.75 * L], b: [0.65 * L, 0.4 * L], friction: 0.3, restitution: 0.4 });
       const r = 0.04 * L;
       const ids: number[] = [];
-      for (let i = 0; i < 3; i++) ids.push(addBody(world, { position: [L - r, r + 2 * r * i], radius: r, mass: 1, restitution: 0.4, friction: 0.3 }));
+      for (let i = 0; i < 3; i++)
+        ids.push(addBody(world, { position: [L - r, r + 2 * r * i], radius: r, mass: 1, restitution: 0.4, friction: 0.3 }));
       ids.push(addBody(world, { position: [0.1 * L, 0.75 * L + 1.2 * r], radius: r, mass: 2, restitution: 0.4, friction: 0.3 }));
       const P = world.components.Position;
       const path: Float64Array[] = [];
@@ -244,9 +294,14 @@ describe('collision accuracy', () => {
       }
       return path;
     };
-    const big = run(2), small = run(0.2);
+    const big = run(2),
+      small = run(0.2);
     let worst = 0;
-    big.forEach((frame, k) => frame.forEach((v, j) => { worst = Math.max(worst, Math.abs(v - small[k]![j]!)); }));
+    big.forEach((frame, k) => {
+      frame.forEach((v, j) => {
+        worst = Math.max(worst, Math.abs(v - small[k]![j]!));
+      });
+    });
     expect(worst).toBeLessThan(1e-3);
     // The run did something: the rolling ball reached the column and moved it.
     expect(big[299]![0]!).toBeLessThan(0.95);
@@ -260,20 +315,33 @@ describe('collision accuracy', () => {
    * (measured 3.9 %; 21.7 % with one 60 Hz contact frequency for every size).
    */
   test('a bin of 100 balls of radius 2 cm overlaps by less than 5 % of a radius', () => {
-    const r = 0.02, count = 100, across = 4;
+    const r = 0.02,
+      count = 100,
+      across = 4;
     const world = createPhysicsWorld({ dimensions: 2, capacity: count + 8 });
     setBoundary(world, { min: [0, 0], max: [(2 * across + 1) * r, 1000 * r], restitution: 0.5, friction: 0.3 });
     const ids: number[] = [];
     for (let i = 0; i < count; i++) {
-      const col = i % across, row = Math.floor(i / across);
-      ids.push(addBody(world, { position: [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)], radius: r, mass: 1, restitution: 0.5, friction: 0.3 }));
+      const col = i % across,
+        row = Math.floor(i / across);
+      ids.push(
+        addBody(world, {
+          position: [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)],
+          radius: r,
+          mass: 1,
+          restitution: 0.5,
+          friction: 0.3,
+        }),
+      );
     }
     stepMany(world, 200);
     const P = world.components.Position;
-    let worst = 0, top = 0;
+    let worst = 0,
+      top = 0;
     for (let a = 0; a < count; a++) {
       top = Math.max(top, P.y[ids[a]!]!);
-      for (let b = a + 1; b < count; b++) worst = Math.max(worst, 2 * r - Math.hypot(P.x[ids[a]!]! - P.x[ids[b]!]!, P.y[ids[a]!]! - P.y[ids[b]!]!));
+      for (let b = a + 1; b < count; b++)
+        worst = Math.max(worst, 2 * r - Math.hypot(P.x[ids[a]!]! - P.x[ids[b]!]!, P.y[ids[a]!]! - P.y[ids[b]!]!));
     }
     expect(worst / r).toBeLessThan(0.05);
     // Settled into about 25 layers (not still falling: the top ball is below its start of 218 r).

@@ -1,6 +1,6 @@
-import { describe, expect, test } from 'vitest';
-import fc from 'fast-check';
 import { addBody, addSegment, kineticEnergy, linearMomentum, stepMany } from '@bitphysics/physics';
+import fc from 'fast-check';
+import { describe, expect, test } from 'vitest';
 import { zeroGravityWorld } from './helpers';
 
 /**
@@ -16,13 +16,16 @@ describe('two-body collisions', () => {
   test('1D elastic collision conserves momentum and kinetic energy and matches the exact velocities', () => {
     fc.assert(
       fc.property(
-        fc.double({ min: 0.1, max: 10, noNaN: true }), fc.double({ min: 0.1, max: 10, noNaN: true }),
-        fc.double({ min: 1, max: 20, noNaN: true }), fc.double({ min: -20, max: -1, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: 1, max: 20, noNaN: true }),
+        fc.double({ min: -20, max: -1, noNaN: true }),
         (m1, m2, u1, u2) => {
           const world = zeroGravityWorld();
           const a = addBody(world, { position: [0, 0], velocity: [u1, 0], mass: m1, radius: 0.5, restitution: 1, friction: 0 });
           const b = addBody(world, { position: [1.5, 0], velocity: [u2, 0], mass: m2, radius: 0.5, restitution: 1, friction: 0 });
-          const p0 = linearMomentum(world)[0]!, k0 = kineticEnergy(world);
+          const p0 = linearMomentum(world)[0]!,
+            k0 = kineticEnergy(world);
           stepMany(world, 20);
           const V = world.components.Velocity;
           expect(rel(linearMomentum(world)[0]!, p0)).toBeLessThan(1e-12);
@@ -39,14 +42,18 @@ describe('two-body collisions', () => {
   test('2D elastic oblique collision conserves momentum and kinetic energy', () => {
     fc.assert(
       fc.property(
-        fc.double({ min: 0.1, max: 10, noNaN: true }), fc.double({ min: 0.1, max: 10, noNaN: true }),
-        fc.double({ min: -0.9, max: 0.9, noNaN: true }), fc.double({ min: 1, max: 20, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: -0.9, max: 0.9, noNaN: true }),
+        fc.double({ min: 1, max: 20, noNaN: true }),
         (m1, m2, offset, speed) => {
           const world = zeroGravityWorld();
           addBody(world, { position: [-2, offset], velocity: [speed, 0], mass: m1, radius: 0.5, restitution: 1, friction: 0 });
           addBody(world, { position: [0, 0], velocity: [0, 0], mass: m2, radius: 0.5, restitution: 1, friction: 0 });
-          const p0 = linearMomentum(world), k0 = kineticEnergy(world);
-          const px = p0[0]!, py = p0[1]!;
+          const p0 = linearMomentum(world),
+            k0 = kineticEnergy(world);
+          const px = p0[0]!,
+            py = p0[1]!;
           stepMany(world, 60);
           const p1 = linearMomentum(world);
           expect(Math.abs(p1[0]! - px) / (m1 * speed)).toBeLessThan(1e-12);
@@ -64,10 +71,12 @@ describe('two-body collisions', () => {
       // Oblique: centres offset by 0.6 m across the line of motion.
       const a = addBody(world, { position: [-2, 0.6], velocity: [6, 0], mass: 2, radius: 0.5, restitution: e, friction: 0 });
       const b = addBody(world, { position: [0, 0], velocity: [-1, 0], mass: 3, radius: 0.5, restitution: e, friction: 0 });
-      const P = world.components.Position, V = world.components.Velocity;
+      const P = world.components.Position,
+        V = world.components.Velocity;
       // The normal at impact: where the centres are when they first touch (straight-line motion before).
       // Relative motion along x at 7 m/s with vertical offset 0.6: touching when dx = -sqrt(1 - 0.36) = -0.8.
-      const nx = 0.8, ny = -0.6; // from a to b
+      const nx = 0.8,
+        ny = -0.6; // from a to b
       const vn0 = (V.x[b]! - V.x[a]!) * nx + (V.y[b]! - V.y[a]!) * ny;
       const vt0 = (V.x[b]! - V.x[a]!) * -ny + (V.y[b]! - V.y[a]!) * nx;
       stepMany(world, 40);
@@ -96,14 +105,17 @@ describe('two-body collisions', () => {
   test('3D sphere collisions conserve momentum and kinetic energy; the normal velocity scales by restitution', () => {
     fc.assert(
       fc.property(
-        fc.double({ min: 0.1, max: 10, noNaN: true }), fc.double({ min: 0.1, max: 10, noNaN: true }),
-        fc.double({ min: -0.6, max: 0.6, noNaN: true }), fc.double({ min: -0.6, max: 0.6, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: 0.1, max: 10, noNaN: true }),
+        fc.double({ min: -0.6, max: 0.6, noNaN: true }),
+        fc.double({ min: -0.6, max: 0.6, noNaN: true }),
         fc.constantFrom(0.3, 1),
         (m1, m2, oy, oz, e) => {
           const world = zeroGravityWorld(3);
           const a = addBody(world, { position: [-3, oy, oz], velocity: [8, 0, 0], mass: m1, radius: 0.5, restitution: e, friction: 0 });
           const b = addBody(world, { position: [0, 0, 0], velocity: [-1, 0, 0], mass: m2, radius: 0.5, restitution: e, friction: 0 });
-          const p0 = Array.from(linearMomentum(world)), k0 = kineticEnergy(world);
+          const p0 = Array.from(linearMomentum(world)),
+            k0 = kineticEnergy(world);
           // Normal at first touch: relative motion along x, offset (oy, oz).
           const d = Math.sqrt(1 - oy * oy - oz * oz);
           const n = [d, -oy, -oz];

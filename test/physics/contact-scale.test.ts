@@ -1,6 +1,6 @@
-import { describe, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, setBoundary, solverSubstepsFor, step, stepMany } from '@bitphysics/physics';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, setBoundary, solverSubstepsFor, step, stepMany } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Lengths that scale (issue 13): small balls squash no more than big ones, because the solver takes
@@ -37,8 +37,17 @@ describe('contact scale', () => {
     setBoundary(world, { min: [0, 0], max: [5 * r, 1000 * r], restitution: 0.3, friction: 0.2 });
     const ids: number[] = [];
     for (let i = 0; i < count; i++) {
-      const col = i % 2, row = Math.floor(i / 2);
-      ids.push(addBody(world, { position: [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)], radius: r, mass: 0.03, restitution: 0.3, friction: 0.2 }));
+      const col = i % 2,
+        row = Math.floor(i / 2);
+      ids.push(
+        addBody(world, {
+          position: [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)],
+          radius: r,
+          mass: 0.03,
+          restitution: 0.3,
+          friction: 0.2,
+        }),
+      );
     }
     return { world, ids, r };
   }
@@ -81,22 +90,43 @@ describe('contact scale', () => {
    * from 85 Hz to 424 Hz in one step, the pile's resting overlap then pushed out at once).
    */
   test('small balls landing on a pile of big ones do not throw it', () => {
-    const R = 0.5, across = 6;
+    const R = 0.5,
+      across = 6;
     const world = createPhysicsWorld({ dimensions: 2, capacity: 100, sleep: false });
     setBoundary(world, { min: [0, 0], max: [(2 * across + 1) * R, 100], restitution: 0.3, friction: 0.3 });
     const ids: number[] = [];
     for (let i = 0; i < 60; i++) {
-      const c = i % across, row = Math.floor(i / across);
-      ids.push(addBody(world, { position: [R * (1.1 + 2.1 * c + 0.3 * (row % 2)), R * (1.1 + 2.2 * row)], radius: R, mass: 1, restitution: 0.3, friction: 0.3 }));
+      const c = i % across,
+        row = Math.floor(i / across);
+      ids.push(
+        addBody(world, {
+          position: [R * (1.1 + 2.1 * c + 0.3 * (row % 2)), R * (1.1 + 2.2 * row)],
+          radius: R,
+          mass: 1,
+          restitution: 0.3,
+          friction: 0.3,
+        }),
+      );
     }
     stepMany(world, 400);
-    const V = world.components.Velocity, P = world.components.Position;
+    const V = world.components.Velocity,
+      P = world.components.Position;
     const fastest = (): number => Math.max(...ids.map((e) => Math.hypot(V.x[e]!, V.y[e]!)));
     expect(fastest()).toBeLessThan(0.01);
     const top = Math.max(...ids.map((e) => P.y[e]!));
     const small: number[] = [];
-    for (let k = 0; k < 5; k++) small.push(addBody(world, { position: [R * (2 + 2 * k), top + R + 0.05 + 0.3 * k], radius: 0.02, mass: 0.01, restitution: 0.8, friction: 0.3 }));
-    let worst = 0, lowest = Infinity;
+    for (let k = 0; k < 5; k++)
+      small.push(
+        addBody(world, {
+          position: [R * (2 + 2 * k), top + R + 0.05 + 0.3 * k],
+          radius: 0.02,
+          mass: 0.01,
+          restitution: 0.8,
+          friction: 0.3,
+        }),
+      );
+    let worst = 0,
+      lowest = Infinity;
     for (let s = 0; s < 300; s++) {
       step(world);
       worst = Math.max(worst, fastest());

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { createPhysicsWorld, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 import { buildCradle, cradleWorldOptions, liftBalls } from '../../games/lab-newtons-cradle/scene.js';
 
 /**
@@ -26,11 +26,14 @@ import { buildCradle, cradleWorldOptions, liftBalls } from '../../games/lab-newt
  * (the far balls leave at the bottom, where their speed peaks) and the strings are soft joint rows.
  */
 describe("Newton's cradle hung on strings with touching balls (the lab's scene)", () => {
-  const g = 9.81, L = 1, count = 5;
+  const g = 9.81,
+    L = 1,
+    count = 5;
 
   /** Complete elliptic integral of the first kind K(k), by the arithmetic-geometric mean. */
   const ellipticK = (k: number): number => {
-    let a = 1, b = Math.sqrt(1 - k * k);
+    let a = 1,
+      b = Math.sqrt(1 - k * k);
     for (let i = 0; i < 8; i++) [a, b] = [(a + b) / 2, Math.sqrt(a * b)];
     return Math.PI / (2 * a);
   };
@@ -50,7 +53,10 @@ describe("Newton's cradle hung on strings with touching balls (the lab's scene)"
       step(world);
       // The step of the hit: the far ball starts to move.
       if (hit < 0 && Math.abs(V.x[last]!) > 0.05 * u) hit = k;
-      if (hit >= 0) h.balls.forEach((b, i) => { peak[i] = Math.max(peak[i]!, Math.hypot(V.x[b]!, V.y[b]!) / u); });
+      if (hit >= 0)
+        h.balls.forEach((b, i) => {
+          peak[i] = Math.max(peak[i]!, Math.hypot(V.x[b]!, V.y[b]!) / u);
+        });
       if (hit >= 0 && k >= hit + 6) break;
     }
     expect(hit, `lifted ${lifted}, ${deg} degrees: no hit`).toBeGreaterThan(0);
@@ -61,10 +67,12 @@ describe("Newton's cradle hung on strings with touching balls (the lab's scene)"
 
   test('the first touch falls at phases covering the whole substep', () => {
     const hs = 1 / 60 / 2;
-    const phases = angles.map((deg) => {
-      const t = ellipticK(Math.sin((deg * Math.PI) / 360)) * Math.sqrt(L / g);
-      return t / hs - Math.floor(t / hs);
-    }).sort((x, y) => x - y);
+    const phases = angles
+      .map((deg) => {
+        const t = ellipticK(Math.sin((deg * Math.PI) / 360)) * Math.sqrt(L / g);
+        return t / hs - Math.floor(t / hs);
+      })
+      .sort((x, y) => x - y);
     let widest = phases[0]! + 1 - phases[phases.length - 1]!;
     for (let i = 1; i < phases.length; i++) widest = Math.max(widest, phases[i]! - phases[i - 1]!);
     expect(widest).toBeLessThan(0.1);

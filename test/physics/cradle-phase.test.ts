@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, createPhysicsWorld, kineticEnergy, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Newton's cradle with several movers, at every phase of the step (issue 13). Five equal touching
@@ -17,7 +17,9 @@ import { addBody, createPhysicsWorld, kineticEnergy, step } from '@bitphysics/ph
 describe("Newton's cradle at every phase of the step", () => {
   const run = (movers: number, phase: number): { v: number[]; ke: number } => {
     const world = createPhysicsWorld({ dimensions: 2, capacity: 8, gravity: [0, 0] });
-    const r = 0.5, u = 2, h = world.dt;
+    const r = 0.5,
+      u = 2,
+      h = world.dt;
     const ids: number[] = [];
     for (let i = 0; i < 5; i++) ids.push(addBody(world, { position: [i * 2 * r, 0], radius: r, mass: 1, restitution: 1, friction: 0 }));
     const back = u * h * (3 + phase);
@@ -35,7 +37,9 @@ describe("Newton's cradle at every phase of the step", () => {
     for (const movers of [2, 3]) {
       for (let j = 0; j < 20; j++) {
         const { v, ke } = run(movers, j / 20);
-        v.forEach((vx, i) => expect(Math.abs(vx - (i >= 5 - movers ? u : 0)), `movers ${movers}, phase ${j / 20}, ball ${i}`).toBeLessThan(0.02 * u));
+        v.forEach((vx, i) => {
+          expect(Math.abs(vx - (i >= 5 - movers ? u : 0)), `movers ${movers}, phase ${j / 20}, ball ${i}`).toBeLessThan(0.02 * u);
+        });
         expect(Math.abs(ke - 0.5 * movers * u * u)).toBeLessThan(0.02 * 0.5 * movers * u * u);
       }
     }

@@ -1,11 +1,11 @@
-import { expect, test } from 'vitest';
 import { execFile } from 'node:child_process';
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { build } from 'esbuild';
 import { stateHash, stepMany } from '@bitphysics/physics';
+import { build } from 'esbuild';
+import { expect, test } from 'vitest';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
 
 // Box2D v3's determinism test: the same scene built twice gives the same state to the last bit after
@@ -16,7 +16,8 @@ const STEPS = 1000;
 
 test('the same scene built twice in one process: identical hashes after 1,000 steps (fireworks and the mixed scene)', () => {
   for (const { name, build: make } of SNAPSHOT_SCENES.filter((s) => s.name === 'fireworks' || s.name.startsWith('mixed'))) {
-    const a = make(), b = make();
+    const a = make(),
+      b = make();
     stepMany(a, STEPS);
     stepMany(b, STEPS);
     expect(stateHash(b), name).toBe(stateHash(a));
@@ -26,17 +27,26 @@ test('the same scene built twice in one process: identical hashes after 1,000 st
 test('the same scene in two separate processes: identical hashes after 1,000 steps, equal to this process', async () => {
   const dir = mkdtempSync(join(tmpdir(), 'bitphysics-determinism-'));
   const entry = join(dir, 'run.ts');
-  writeFileSync(entry, [
-    `import { stateHash, stepMany } from '@bitphysics/physics';`,
-    `import { mixedScene } from ${JSON.stringify(join(__dirname, 'snapshot-scenes.ts'))};`,
-    `const world = mixedScene();`,
-    `stepMany(world, ${STEPS});`,
-    `console.log(stateHash(world));`,
-  ].join('\n'));
+  writeFileSync(
+    entry,
+    [
+      `import { stateHash, stepMany } from '@bitphysics/physics';`,
+      `import { mixedScene } from ${JSON.stringify(join(__dirname, 'snapshot-scenes.ts'))};`,
+      `const world = mixedScene();`,
+      `stepMany(world, ${STEPS});`,
+      `console.log(stateHash(world));`,
+    ].join('\n'),
+  );
   const out = join(dir, 'run.mjs');
   await build({
-    entryPoints: [entry], outfile: out, bundle: true, platform: 'node', format: 'esm', logLevel: 'silent',
-    conditions: ['bitphysics-source'], nodePaths: [join(__dirname, '../../node_modules')],
+    entryPoints: [entry],
+    outfile: out,
+    bundle: true,
+    platform: 'node',
+    format: 'esm',
+    logLevel: 'silent',
+    conditions: ['bitphysics-source'],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   const run = promisify(execFile);
   const [one, two] = await Promise.all([run(process.execPath, [out]), run(process.execPath, [out])]);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addFluidRegion, addSpring, createPhysicsWorld, setBuoyancy, stepMany } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 // A body whose weight another force balances exactly must stay where it is with v = 0 under every
 // scheme: the exact-free-fall correction (-g h / 2 on the drift) belongs to bodies no force acts on.
@@ -24,7 +24,10 @@ describe('force balance: a body at equilibrium stays exactly at rest', () => {
     });
 
     test(`a spring hanging at its equilibrium stretch m g / k stays put under ${integrator}`, () => {
-      const g = 9.81, m = 2, k = 100, L0 = 1;
+      const g = 9.81,
+        m = 2,
+        k = 100,
+        L0 = 1;
       const world = createPhysicsWorld({ gravity: [0, -g], dt: 1 / 60, integrator });
       const y0 = -(L0 + (m * g) / k);
       const bob = addBody(world, { position: [0, y0], mass: m });

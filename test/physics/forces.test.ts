@@ -1,11 +1,35 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addFluidRegion, addMagneticField, addSpring, angularMomentum, createPhysicsWorld, enableMutualGravity,
-  linearMomentum, removeBody, setBuoyancy, setCentralForce, setCharge, setDrag, setDrivingForce, setGravitation,
-  setGravityScale, setThrust, setWind, setRandomForce, step, stepMany, setElectrostatics, kineticEnergy,
-  potentialEnergy, addElectricField, valueNoise, windAt, setLift,
+  addBody,
+  addElectricField,
+  addFluidRegion,
+  addMagneticField,
+  addSpring,
+  angularMomentum,
+  createPhysicsWorld,
+  enableMutualGravity,
+  kineticEnergy,
+  linearMomentum,
+  potentialEnergy,
+  removeBody,
+  setBuoyancy,
+  setCentralForce,
+  setCharge,
+  setDrag,
+  setDrivingForce,
+  setElectrostatics,
+  setGravitation,
+  setGravityScale,
+  setLift,
+  setRandomForce,
+  setThrust,
+  setWind,
+  step,
+  stepMany,
+  valueNoise,
+  windAt,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 
 const rel = (a: number, b: number) => Math.abs(a - b) / Math.abs(b);
 
@@ -16,7 +40,8 @@ describe('oscillators (RK4, h = 1 ms: global error ~ h^4, far below the toleranc
     const b = addBody(world, { position: [1, 0], mass: 1 });
     setCentralForce(world, b, { centre: [0, 0], k: -16, n: 2 });
     setDrag(world, b, { linear: 1.6 });
-    const gamma = 0.8, wd = Math.sqrt(16 - gamma * gamma);
+    const gamma = 0.8,
+      wd = Math.sqrt(16 - gamma * gamma);
     let worst = 0;
     for (let i = 0; i < 5000; i++) {
       step(world);
@@ -29,7 +54,11 @@ describe('oscillators (RK4, h = 1 ms: global error ~ h^4, far below the toleranc
 
   test('driven damped oscillator matches transient + steady state', () => {
     // x'' + 2 gamma x' + w0^2 x = (F0 / m) cos(w t), x(0) = 0, v(0) = 0.
-    const m = 2, w0 = 3, gamma = 0.5, F0 = 4, w = 2;
+    const m = 2,
+      w0 = 3,
+      gamma = 0.5,
+      F0 = 4,
+      w = 2;
     const world = createPhysicsWorld({ gravity: [0, 0], dt: 1e-3, integrator: 'rk4' });
     const b = addBody(world, { position: [0, 0], mass: m });
     setCentralForce(world, b, { centre: [0, 0], k: -m * w0 * w0, n: 2 });
@@ -53,7 +82,10 @@ describe('oscillators (RK4, h = 1 ms: global error ~ h^4, far below the toleranc
 
   test('pendulum on a stiff spring: small-angle period 2 pi sqrt(L / g)', () => {
     // A 1 kg bob on a 2 m spring of 1e6 N/m (stretch under its weight m g / k = 1e-5 m, included in L).
-    const g = 9.81, L0 = 2, k = 1e6, m = 1;
+    const g = 9.81,
+      L0 = 2,
+      k = 1e6,
+      m = 1;
     const world = createPhysicsWorld({ gravity: [0, -g], dt: 1e-4, integrator: 'velocity-verlet' });
     const L = L0 + (m * g) / k;
     const theta0 = 0.02;
@@ -76,7 +108,9 @@ describe('oscillators (RK4, h = 1 ms: global error ~ h^4, far below the toleranc
 
 describe('drag', () => {
   test('projectile with linear drag falls y = (m g / k)(t + (m / k) e^(-k t / m) - m / k)', () => {
-    const m = 2, k = 0.5, g = 9.81;
+    const m = 2,
+      k = 0.5,
+      g = 9.81;
     const world = createPhysicsWorld({ gravity: [0, -g], dt: 1e-3, integrator: 'rk4' });
     const b = addBody(world, { position: [0, 0], mass: m, linearDrag: k });
     let worst = 0;
@@ -90,7 +124,9 @@ describe('drag', () => {
   });
 
   test('quadratic drag: v(t) = v_t tanh(g t / v_t) toward the terminal velocity v_t = sqrt(m g / k)', () => {
-    const m = 0.5, k = 0.02, g = 9.81;
+    const m = 0.5,
+      k = 0.02,
+      g = 9.81;
     const vt = Math.sqrt((m * g) / k);
     const world = createPhysicsWorld({ gravity: [0, -g], dt: 1e-3, integrator: 'rk4' });
     const b = addBody(world, { mass: m, quadraticDrag: k });
@@ -115,11 +151,14 @@ describe('drag', () => {
   test('turbulence is seeded, has the requested RMS speed, and is a pure function of (x, t)', () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
     setWind(world, { turbulence: { intensity: 2, lengthScale: 10, timeScale: 3, seed: 4, modes: 32 } });
-    const out = new Float64Array(3), again = new Float64Array(3);
+    const out = new Float64Array(3),
+      again = new Float64Array(3);
     let sum2 = 0;
     const n = 20000;
     for (let i = 0; i < n; i++) {
-      const x = (i * 37.1) % 1000, y = (i * 91.7) % 1000, t = i * 0.37;
+      const x = (i * 37.1) % 1000,
+        y = (i * 91.7) % 1000,
+        t = i * 0.37;
       windAt(world, x, y, 0, t, out);
       sum2 += out[0]! * out[0]!;
       windAt(world, x, y, 0, t, again);
@@ -144,7 +183,9 @@ describe('drag', () => {
 describe('buoyancy', () => {
   test('a floating sphere settles where buoyancy equals weight', () => {
     // 3D ball of radius 0.5 m and density 400 kg/m^3 in water (1000): submerged volume fraction 0.4.
-    const r = 0.5, rho = 400, g = 9.81;
+    const r = 0.5,
+      rho = 400,
+      g = 9.81;
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -g, 0], dt: 1 / 240 });
     addFluidRegion(world, { surface: 0, density: 1000 });
     const mass = rho * (4 / 3) * Math.PI * r ** 3;
@@ -153,10 +194,12 @@ describe('buoyancy', () => {
     setDrag(world, b, { linear: 400 }); // quadratic drag alone barely damps small bobbing
     stepMany(world, 240 * 30);
     // Depth h of the cap with pi h^2 (3 r - h) / 3 = 0.4 * (4/3) pi r^3, solved by bisection.
-    let lo = 0, hi = 2 * r;
+    let lo = 0,
+      hi = 2 * r;
     for (let i = 0; i < 100; i++) {
       const h = (lo + hi) / 2;
-      if ((Math.PI * h * h * (3 * r - h)) / 3 < 0.4 * (4 / 3) * Math.PI * r ** 3) lo = h; else hi = h;
+      if ((Math.PI * h * h * (3 * r - h)) / 3 < 0.4 * (4 / 3) * Math.PI * r ** 3) lo = h;
+      else hi = h;
     }
     const expectedY = -(lo - r); // centre is r above the lowest point, which is lo below the surface
     expect(Math.abs(world.components.Position.y[b]! - expectedY)).toBeLessThan(1e-4);
@@ -177,7 +220,10 @@ describe('buoyancy', () => {
 
 describe('electromagnetism', () => {
   test('a charge in a magnetic field circles with radius m v / (|q| B) and period 2 pi m / (|q| B)', () => {
-    const m = 2, q = -0.5, B = 4, v = 3;
+    const m = 2,
+      q = -0.5,
+      B = 4,
+      v = 3;
     const world = createPhysicsWorld({ gravity: [0, 0], dt: 1e-3, integrator: 'rk4' });
     addMagneticField(world, { field: B });
     const b = addBody(world, { position: [0, 0], velocity: [v, 0], mass: m });
@@ -203,7 +249,8 @@ describe('electromagnetism', () => {
     setElectrostatics(world, { constant: 1 });
     const a = addBody(world, { position: [0, 0], mass: 1 });
     const b = addBody(world, { position: [1, 0], mass: 3 });
-    setCharge(world, a, 1); setCharge(world, b, 2);
+    setCharge(world, a, 1);
+    setCharge(world, b, 2);
     const E0 = kineticEnergy(world) + potentialEnergy(world);
     stepMany(world, 5000);
     expect(Math.abs(linearMomentum(world)[0]!)).toBeLessThan(1e-12);
@@ -227,8 +274,10 @@ describe('gravitation', () => {
     setGravitation(world, { constant: 1 });
     const a = addBody(world, { position: [-1, 0], velocity: [0, -0.2], mass: 3 });
     const b = addBody(world, { position: [2, 0], velocity: [0.1, 0.6], mass: 1 });
-    enableMutualGravity(world, a); enableMutualGravity(world, b);
-    const p0 = Array.from(linearMomentum(world)), L0 = angularMomentum(world)[2]!;
+    enableMutualGravity(world, a);
+    enableMutualGravity(world, b);
+    const p0 = Array.from(linearMomentum(world)),
+      L0 = angularMomentum(world)[2]!;
     stepMany(world, 20000);
     const p1 = linearMomentum(world);
     expect(Math.abs(p1[0]! - p0[0]!)).toBeLessThan(1e-12);
@@ -239,7 +288,8 @@ describe('gravitation', () => {
 
   test('gravity scale multiplies the uniform gravity a body feels', () => {
     const world = createPhysicsWorld({ gravity: [0, -10] });
-    const a = addBody(world, {}), b = addBody(world, {});
+    const a = addBody(world, {}),
+      b = addBody(world, {});
     setGravityScale(world, b, -0.5);
     stepMany(world, 60);
     expect(world.components.Velocity.y[a]!).toBeCloseTo(-10, 9);
@@ -304,7 +354,10 @@ describe('driving and rockets', () => {
     test(`a rocket reaches the Tsiolkovsky delta-v ve ln(m0 / m1) (${integrator})`, () => {
       const h = 1 / 600;
       const world = createPhysicsWorld({ gravity: [0, 0], dt: h, integrator });
-      const m0 = 1000, fuel = 600, ve = 2500, mdot = 50;
+      const m0 = 1000,
+        fuel = 600,
+        ve = 2500,
+        mdot = 50;
       const b = addBody(world, { mass: m0 });
       setThrust(world, b, { exhaustVelocity: ve, massFlowRate: mdot, fuel, direction: [0, 1] });
       stepMany(world, 600 * 15); // burns out after 12 s
@@ -313,7 +366,8 @@ describe('driving and rockets', () => {
       // so the error is the scheme's quadrature error of that smooth function of time: RK4 (Simpson's
       // rule per step) is exact to ~1e-9 here; semi-implicit Euler takes the start-of-step value, a
       // left Riemann sum whose error is h (a_end - a_start) / 2 = 0.156 m/s; we allow 10% over it.
-      const aStart = (ve * mdot) / m0, aEnd = (ve * mdot) / (m0 - fuel);
+      const aStart = (ve * mdot) / m0,
+        aEnd = (ve * mdot) / (m0 - fuel);
       const tol = integrator === 'rk4' ? 1e-6 : 1.1 * 0.5 * h * (aEnd - aStart);
       expect(Math.abs(world.components.Velocity.y[b]! - dv)).toBeLessThan(tol);
       // 7,200 decrements of 1/12 kg leave ~1e-10 kg of rounding; inverse mass stays consistent with mass.
@@ -329,14 +383,42 @@ describe('bad input for force laws', () => {
   test.each([
     ['negative drag', () => setDrag(world, body, { linear: -1 }), /linear must be >= 0, got -1/],
     ['negative softening', () => setGravitation(world, { softening: -0.1 }), /softening must be >= 0, got -0.1/],
-    ['unknown gravity method', () => setGravitation(world, { method: 'fmm' as never }), /method must be one of 'direct', 'barnes-hut', got "fmm"/],
-    ['spring to a missing entity', () => addSpring(world, { a: body, b: 4242, stiffness: 1 }), /b must be an entity of this world .*got 4242/],
-    ['spring with negative stiffness', () => addSpring(world, { anchor: [0, 0], b: body, stiffness: -5 }), /stiffness must be >= 0, got -5/],
+    [
+      'unknown gravity method',
+      () => setGravitation(world, { method: 'fmm' as never }),
+      /method must be one of 'direct', 'barnes-hut', got "fmm"/,
+    ],
+    [
+      'spring to a missing entity',
+      () => addSpring(world, { a: body, b: 4242, stiffness: 1 }),
+      /b must be an entity of this world .*got 4242/,
+    ],
+    [
+      'spring with negative stiffness',
+      () => addSpring(world, { anchor: [0, 0], b: body, stiffness: -5 }),
+      /stiffness must be >= 0, got -5/,
+    ],
     ['spring with both a and anchor', () => addSpring(world, { a: body, anchor: [0, 0], b: body, stiffness: 1 }), /exactly one of a/],
-    ['fuel heavier than the body', () => setThrust(world, body, { exhaustVelocity: 100, massFlowRate: 1, fuel: 2, direction: [0, 1] }), /fuel \(2 kg\) must be less than/],
-    ['negative exhaust velocity', () => setThrust(world, body, { exhaustVelocity: -1, massFlowRate: 1, fuel: 0.5, direction: [0, 1] }), /exhaustVelocity must be > 0/],
-    ['unknown buoyancy shape', () => setBuoyancy(world, body, { shape: 'cone' as never }), /shape must be one of 'ball', 'box', got "cone"/],
-    ['negative turbulence', () => setWind(world, { turbulence: { intensity: -1, lengthScale: 1, timeScale: 1 } }), /intensity must be >= 0/],
+    [
+      'fuel heavier than the body',
+      () => setThrust(world, body, { exhaustVelocity: 100, massFlowRate: 1, fuel: 2, direction: [0, 1] }),
+      /fuel \(2 kg\) must be less than/,
+    ],
+    [
+      'negative exhaust velocity',
+      () => setThrust(world, body, { exhaustVelocity: -1, massFlowRate: 1, fuel: 0.5, direction: [0, 1] }),
+      /exhaustVelocity must be > 0/,
+    ],
+    [
+      'unknown buoyancy shape',
+      () => setBuoyancy(world, body, { shape: 'cone' as never }),
+      /shape must be one of 'ball', 'box', got "cone"/,
+    ],
+    [
+      'negative turbulence',
+      () => setWind(world, { turbulence: { intensity: -1, lengthScale: 1, timeScale: 1 } }),
+      /intensity must be >= 0/,
+    ],
     ['NaN charge', () => setCharge(world, body, NaN), /charge must be finite, got NaN/],
   ])('%s', (_name, run, message) => {
     expect(run).toThrow(RangeError);

@@ -1,5 +1,11 @@
 import {
-  contactSpringEnergy, createPhysicsWorld, forEachContact3D, gravitationalPotentialEnergy, kineticEnergy, slotOf, type PhysicsWorld,
+  contactSpringEnergy,
+  createPhysicsWorld,
+  forEachContact3D,
+  gravitationalPotentialEnergy,
+  kineticEnergy,
+  type PhysicsWorld,
+  slotOf,
 } from '@bitphysics/physics';
 
 /** Mechanical energy as the soft-contact model defines it: kinetic + gravitational + contact springs, J. */
@@ -14,7 +20,8 @@ export function zeroGravityWorld(dimensions: 2 | 3 = 2): PhysicsWorld {
 
 /** The largest overlap between any two of `ids` (balls of radius r), m, found with a uniform grid. */
 export function maxPairOverlap(world: PhysicsWorld, ids: ArrayLike<number>): number {
-  const P = world.components.Position, R = world.components.Ball.radius;
+  const P = world.components.Position,
+    R = world.components.Ball.radius;
   let rMax = 0;
   for (let i = 0; i < ids.length; i++) rMax = Math.max(rMax, R[ids[i]!]!);
   const cell = 2 * rMax;
@@ -30,24 +37,33 @@ export function maxPairOverlap(world: PhysicsWorld, ids: ArrayLike<number>): num
   let worst = 0;
   for (let i = 0; i < ids.length; i++) {
     const e = ids[i]!;
-    const cx = Math.floor(P.x[e]! / cell), cy = Math.floor(P.y[e]! / cell), cz = Math.floor(P.z[e]! / cell);
-    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) for (let dz = -1; dz <= 1; dz++) {
-      for (const f of grid.get(`${cx + dx},${cy + dy},${cz + dz}`) ?? []) {
-        if (f <= e) continue;
-        const d = Math.hypot(P.x[f]! - P.x[e]!, P.y[f]! - P.y[e]!, P.z[f]! - P.z[e]!);
-        worst = Math.max(worst, R[e]! + R[f]! - d);
-      }
-    }
+    const cx = Math.floor(P.x[e]! / cell),
+      cy = Math.floor(P.y[e]! / cell),
+      cz = Math.floor(P.z[e]! / cell);
+    for (let dx = -1; dx <= 1; dx++)
+      for (let dy = -1; dy <= 1; dy++)
+        for (let dz = -1; dz <= 1; dz++) {
+          for (const f of grid.get(`${cx + dx},${cy + dy},${cz + dz}`) ?? []) {
+            if (f <= e) continue;
+            const d = Math.hypot(P.x[f]! - P.x[e]!, P.y[f]! - P.y[e]!, P.z[f]! - P.z[e]!);
+            worst = Math.max(worst, R[e]! + R[f]! - d);
+          }
+        }
   }
   return worst;
 }
 
 /** Contact points of the last step between bodies a and b (either order), with the least separation. */
 export function pairContacts(world: PhysicsWorld, a: number, b: number): { points: number; minSep: number } {
-  const ea = slotOf(a), eb = slotOf(b);
-  let points = 0, minSep = Infinity;
+  const ea = slotOf(a),
+    eb = slotOf(b);
+  let points = 0,
+    minSep = Infinity;
   forEachContact3D(world, (c) => {
-    if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) { points++; minSep = Math.min(minSep, c.separation); }
+    if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) {
+      points++;
+      minSep = Math.min(minSep, c.separation);
+    }
   });
   return { points, minSep };
 }

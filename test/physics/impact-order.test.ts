@@ -1,6 +1,6 @@
+import { Rng } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import { sortByKey } from '../../packages/physics/src/collision/impacts.js';
-import { Rng } from '@bitphysics/physics';
 
 /**
  * The impact stage orders its seeds with sortByKey, which replaced
@@ -19,10 +19,22 @@ describe('impact order (sortByKey)', () => {
       const mode = it % 4;
       for (let i = 0; i < key.length; i++) {
         const u = rng.range(0, 1);
-        key[i] = mode === 0 ? Math.floor(u * 5) // many ties
-          : mode === 1 ? (u < 0.1 ? NaN : u < 0.2 ? Infinity : u < 0.3 ? -1 : u) // non-finite keys
-          : mode === 2 ? (u < 0.3 ? 0 : u * 1e-3) // touching rows (key 0) among impact times
-          : u;
+        key[i] =
+          mode === 0
+            ? Math.floor(u * 5) // many ties
+            : mode === 1
+              ? u < 0.1
+                ? NaN
+                : u < 0.2
+                  ? Infinity
+                  : u < 0.3
+                    ? -1
+                    : u // non-finite keys
+              : mode === 2
+                ? u < 0.3
+                  ? 0
+                  : u * 1e-3 // touching rows (key 0) among impact times
+                : u;
       }
       const order = new Int32Array(n + spare);
       for (let i = 0; i < order.length; i++) order[i] = Math.floor(rng.range(0, key.length));

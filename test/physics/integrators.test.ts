@@ -1,8 +1,20 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, ballsInBox, createPhysicsWorld, INTEGRATOR_NAMES, INTEGRATOR_ORDER, kineticEnergy, potentialEnergy,
-  setAttractor, setCentralForce, setGravitation, addSpring, step, stepMany, type IntegratorName,
+  addBody,
+  addSpring,
+  ballsInBox,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  INTEGRATOR_ORDER,
+  type IntegratorName,
+  kineticEnergy,
+  potentialEnergy,
+  setAttractor,
+  setCentralForce,
+  setGravitation,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 import { maxPairOverlap } from './helpers';
 
 /** Harmonic oscillator x'' = -omega^2 x through the central force law F = k r (n = 2, k = -m omega^2). */
@@ -24,7 +36,8 @@ describe('integrators', () => {
   for (const name of INTEGRATOR_NAMES) {
     test(`${name} converges with order ${INTEGRATOR_ORDER[name]}`, () => {
       const dt = name === 'rk4' ? 0.02 : 0.005;
-      const e1 = oscillatorError(name, dt, 2), e2 = oscillatorError(name, dt / 2, 2);
+      const e1 = oscillatorError(name, dt, 2),
+        e2 = oscillatorError(name, dt / 2, 2);
       expect(Math.abs(Math.log2(e1 / e2) - INTEGRATOR_ORDER[name])).toBeLessThan(0.2);
     });
   }
@@ -49,14 +62,16 @@ describe('integrators', () => {
     const E0 = kineticEnergy(world) + potentialEnergy(world);
     const errors: number[] = [];
     const periapses: number[] = [];
-    let prevR = 0.5, prevDr = 0;
+    let prevR = 0.5,
+      prevDr = 0;
     for (let k = 0; k < orbits * 1000; k++) {
       step(world);
       const P = world.components.Position;
       const r = Math.hypot(P.x[planet]!, P.y[planet]!);
       const dr = r - prevR;
       if (prevDr < 0 && dr >= 0) periapses.push(world.time - world.dt);
-      prevDr = dr; prevR = r;
+      prevDr = dr;
+      prevR = r;
       if (k % 100 === 0) errors.push(Math.abs((kineticEnergy(world) + potentialEnergy(world) - E0) / E0));
     }
     return { errors, periapses, finalError: errors[errors.length - 1]!, world, planet };
@@ -65,13 +80,14 @@ describe('integrators', () => {
   for (const name of ['semi-implicit-euler', 'position-verlet', 'velocity-verlet'] as const) {
     test(`${name} keeps the Kepler energy error bounded over 100 orbits`, () => {
       const { errors } = kepler(name, 100);
-      const first = Math.max(...errors.slice(0, 100)), last = Math.max(...errors.slice(-100));
+      const first = Math.max(...errors.slice(0, 100)),
+        last = Math.max(...errors.slice(-100));
       expect(last).toBeLessThan(2 * first);
       expect(Math.max(...errors)).toBeLessThan(name === 'semi-implicit-euler' ? 0.05 : 1e-3);
     });
   }
 
-  test('RK4 Kepler energy error stays below 1e-6 over 100 orbits at dt = T/1000, and the period obeys Kepler\'s third law', () => {
+  test("RK4 Kepler energy error stays below 1e-6 over 100 orbits at dt = T/1000, and the period obeys Kepler's third law", () => {
     const { finalError, periapses } = kepler('rk4', 100);
     expect(finalError).toBeLessThan(1e-6);
     const periods = periapses.slice(1).map((t, i) => t - periapses[i]!);
@@ -98,7 +114,14 @@ describe('integrators', () => {
       const b = addBody(world, { position: [1.1, 0], mass: 1 });
       addSpring(world, { anchor: [0, 0], b, stiffness: 1e6, restLength: 1 });
       let amp = 0;
-      try { for (let i = 0; i < 120; i++) { step(world); amp = Math.abs(world.components.Position.x[b]! - 1); } } catch { return Infinity; }
+      try {
+        for (let i = 0; i < 120; i++) {
+          step(world);
+          amp = Math.abs(world.components.Position.x[b]! - 1);
+        }
+      } catch {
+        return Infinity;
+      }
       return amp;
     };
     expect(run('explicit-euler')).toBeGreaterThan(1e6);
@@ -114,7 +137,8 @@ describe('integrators', () => {
       let out = -Infinity;
       for (let i = 0; i < 600; i++) {
         step(world);
-        for (const e of balls) out = Math.max(out, layout.min[1] - (P.y[e]! - 0.5), P.x[e]! + 0.5 - layout.max[0], layout.min[0] - (P.x[e]! - 0.5));
+        for (const e of balls)
+          out = Math.max(out, layout.min[1] - (P.y[e]! - 0.5), P.x[e]! + 0.5 - layout.max[0], layout.min[0] - (P.x[e]! - 0.5));
       }
       expect(out).toBeLessThan(0.025);
       expect(maxPairOverlap(world, balls)).toBeLessThan(0.025);

@@ -5,8 +5,19 @@
  * they stay exactly where they are (momentum and position conserved bit for bit); with collideConnected
  * the contact separates them to at least (close to) their touching distance.
  */
+
+import {
+  addBody,
+  addBox,
+  addDistanceJoint,
+  addRevoluteJoint,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  removeJoint,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addBox, addDistanceJoint, addRevoluteJoint, createPhysicsWorld, removeJoint, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
 
 type Maker = (world: PhysicsWorld, x: number) => number;
 /** Ball colliders (narrowphase.ts) of radius 0.5 m; box colliders (shape-collision.ts) of half width 0.5 m. */
@@ -16,8 +27,16 @@ const box: Maker = (world, x) => addBox(world, { position: [x, 0], halfExtents: 
 /** Two bodies 0.6 m apart (touching distance 1 m) on a slack joint; returns their distance after 30 steps. */
 function separation(make: Maker, collideConnected: boolean | undefined, remove = false): number {
   const world = createPhysicsWorld({ gravity: [0, 0] });
-  const a = make(world, 0), b = make(world, 0.6);
-  const j = addDistanceJoint(world, { a, b, length: 0.6, minLength: 0, maxLength: 3, ...(collideConnected === undefined ? {} : { collideConnected }) });
+  const a = make(world, 0),
+    b = make(world, 0.6);
+  const j = addDistanceJoint(world, {
+    a,
+    b,
+    length: 0.6,
+    minLength: 0,
+    maxLength: 3,
+    ...(collideConnected === undefined ? {} : { collideConnected }),
+  });
   if (remove) removeJoint(world, j);
   for (let i = 0; i < 30; i++) step(world);
   const P = world.components.Position;
@@ -25,7 +44,10 @@ function separation(make: Maker, collideConnected: boolean | undefined, remove =
 }
 
 describe('collideConnected', () => {
-  for (const [name, make] of [['balls', ball], ['boxes', box]] as const) {
+  for (const [name, make] of [
+    ['balls', ball],
+    ['boxes', box],
+  ] as const) {
     test(`${name}: jointed bodies do not touch by default, collide with collideConnected, collide again once the joint is gone`, () => {
       // No contact: no force at all, so the distance stays 0.6 m to rounding.
       expect(separation(make, undefined)).toBeCloseTo(0.6, 12);
@@ -38,7 +60,9 @@ describe('collideConnected', () => {
 
   test('only the jointed pair is exempt: a third body still collides with both', () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
-    const a = ball(world, 0), b = ball(world, 0.6), c = ball(world, -0.6);
+    const a = ball(world, 0),
+      b = ball(world, 0.6),
+      c = ball(world, -0.6);
     addRevoluteJoint(world, { a, b, anchor: [0.3, 0] });
     for (let i = 0; i < 30; i++) step(world);
     const P = world.components.Position;
@@ -47,8 +71,11 @@ describe('collideConnected', () => {
 
   test('a collideConnected that is not a boolean is refused and leaves the world as it was', () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
-    const a = ball(world, 0), b = ball(world, 0.6);
-    expect(() => addDistanceJoint(world, { a, b, collideConnected: 1 as unknown as boolean })).toThrow(/addDistanceJoint: collideConnected must be/);
+    const a = ball(world, 0),
+      b = ball(world, 0.6);
+    expect(() => addDistanceJoint(world, { a, b, collideConnected: 1 as unknown as boolean })).toThrow(
+      /addDistanceJoint: collideConnected must be/,
+    );
     expect(world.joints.noCollidePairs.size).toBe(0);
   });
 });

@@ -1,10 +1,27 @@
-import { describe, expect, test } from 'vitest';
-import {
-  addBallJoint3D, addBody, addDistanceJoint3D, addHingeJoint3D, addPlane, addShape3D, addSliderJoint3D, createPhysicsWorld, isSleeping,
-  joint3DBreaks, joints3DOf, removeJoint3D, setBallJoint3DCone, setDistanceJoint3DLength, setDistanceJoint3DSpring, setJoint3DBreak,
-  setJoint3DLimits, setJoint3DMotor, slotOf, step,
-} from '@bitphysics/physics';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import {
+  addBallJoint3D,
+  addBody,
+  addDistanceJoint3D,
+  addHingeJoint3D,
+  addPlane,
+  addShape3D,
+  addSliderJoint3D,
+  createPhysicsWorld,
+  isSleeping,
+  joint3DBreaks,
+  joints3DOf,
+  removeJoint3D,
+  setBallJoint3DCone,
+  setDistanceJoint3DLength,
+  setDistanceJoint3DSpring,
+  setJoint3DBreak,
+  setJoint3DLimits,
+  setJoint3DMotor,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Setters of 3D joints after creation (issue 9): each one changes the motion measurably, against an
@@ -44,15 +61,27 @@ describe('3D joint setters change the motion as the laws say', () => {
     const world = world3([0, -G, 0], 1 / 240);
     const b = ball(world, [0, -1, 0]);
     const j = addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], length: 1 });
-    const P = world.components.Position, V = world.components.Velocity, e = slotOf(b), m = world.components.Mass.value[e]!;
+    const P = world.components.Position,
+      V = world.components.Velocity,
+      e = slotOf(b),
+      m = world.components.Mass.value[e]!;
     // A rod: the ball hangs still at 1 m (0.1 mm).
     for (let i = 0; i < 60; i++) step(world);
     expect(Math.abs(-P.y[e]! - 1)).toBeLessThan(1e-4);
     for (const f of [2, 1]) {
       setDistanceJoint3DSpring(world, j, f, 0);
       const k = m * (2 * Math.PI * f) ** 2;
-      let lo = Infinity, hi = -Infinity;
-      const cross = zeroCrossings(world, () => { lo = Math.min(lo, P.y[e]!); hi = Math.max(hi, P.y[e]!); return V.y[e]!; }, Math.round(2.6 / f / world.dt));
+      let lo = Infinity,
+        hi = -Infinity;
+      const cross = zeroCrossings(
+        world,
+        () => {
+          lo = Math.min(lo, P.y[e]!);
+          hi = Math.max(hi, P.y[e]!);
+          return V.y[e]!;
+        },
+        Math.round(2.6 / f / world.dt),
+      );
       // Undamped: the implicit soft step lengthens the period by ~(h_s 2 pi f)^2 / 3, under 0.1 % here
       // (measured +0.006 % at 2 Hz, +0.001 % at 1 Hz; 1 % allowed).
       expect(cross.length).toBeGreaterThanOrEqual(5);
@@ -73,7 +102,9 @@ describe('3D joint setters change the motion as the laws say', () => {
     const world = world3([0, -G, 0], 1 / 240);
     const b = ball(world, [0, -1, 0]);
     const j = addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], length: 1 });
-    const P = world.components.Position, V = world.components.Velocity, e = slotOf(b);
+    const P = world.components.Position,
+      V = world.components.Velocity,
+      e = slotOf(b);
     const dist = (): number => Math.hypot(P.x[e]!, P.y[e]!, P.z[e]!);
     const L = 0.5;
     setDistanceJoint3DLength(world, j, L);
@@ -89,18 +120,23 @@ describe('3D joint setters change the motion as the laws say', () => {
     // A rope of 0.8 m: the ball falls freely from 0.5 m (after 0.1 s: g t^2 / 2 = 4.9 cm further, 5 mm
     // allowed for the swing's own motion; measured +0.5 mm), then hangs at 0.8 m (3 mm; measured 0.07 mm).
     for (let i = 0; i < 720 && Math.abs(P.x[e]!) > 1e-3; i++) step(world); // near the bottom
-    V.x[e] = 0; V.y[e] = 0; V.z[e] = 0;
+    V.x[e] = 0;
+    V.y[e] = 0;
+    V.z[e] = 0;
     setDistanceJoint3DLength(world, j, 0.8, 0);
     const d0 = dist();
     for (let i = 0; i < 24; i++) step(world);
     expect(Math.abs(dist() - d0 - (G * 0.1 ** 2) / 2)).toBeLessThan(5e-3);
     let most = 0;
-    for (let i = 0; i < 480; i++) { step(world); most = Math.max(most, dist()); }
+    for (let i = 0; i < 480; i++) {
+      step(world);
+      most = Math.max(most, dist());
+    }
     expect(most).toBeLessThan(0.8 + 3e-3);
     expect(Math.abs(dist() - 0.8)).toBeLessThan(3e-3);
   });
 
-  test('a setter wakes the joint\'s bodies: a box asleep on the floor under a slack rope is lifted when the rope is shortened to a rod', () => {
+  test("a setter wakes the joint's bodies: a box asleep on the floor under a slack rope is lifted when the rope is shortened to a rod", () => {
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -G, 0], dt: 1 / 60 });
     addPlane(world, { normal: [0, 1, 0] });
     const b = addBody(world, { position: [0, 0.1, 0] });
@@ -123,8 +159,11 @@ describe('3D joint setters change the motion as the laws say', () => {
       const b = addBody(world, { position: [0, -0.5, 0] });
       addShape3D(world, b, { type: 'box', halfExtents: [0.05, 0.5, 0.05], density: 1000 });
       const j = addBallJoint3D(world, { b, anchor: [0, 0, 0], axis: [0, 1, 0] });
-      const e = slotOf(b), w = 3.7, c = world.components;
-      c.AngularVelocity.z[e] = w; c.Velocity.x[e] = 0.5 * w;
+      const e = slotOf(b),
+        w = 3.7,
+        c = world.components;
+      c.AngularVelocity.z[e] = w;
+      c.Velocity.x[e] = 0.5 * w;
       return { world, e, j };
     };
     /** Largest swing over 1.5 s: the angle of the rod's axis from the vertical, rad. */
@@ -137,11 +176,15 @@ describe('3D joint setters change the motion as the laws say', () => {
       }
       return most;
     };
-    const free = make(), coned = make(), removed = make();
+    const free = make(),
+      coned = make(),
+      removed = make();
     setBallJoint3DCone(coned.world, coned.j, 0.3);
     setBallJoint3DCone(removed.world, removed.j, 0.3);
     setBallJoint3DCone(removed.world, removed.j, null);
-    const a = swing(free.world, free.e), b = swing(coned.world, coned.e), r = swing(removed.world, removed.e);
+    const a = swing(free.world, free.e),
+      b = swing(coned.world, coned.e),
+      r = swing(removed.world, removed.e);
     expect(a).toBeGreaterThan(0.9);
     // The cone's soft row lets a hit overshoot a little (0.05 rad measured for a loaded cone: 0.07 allowed;
     // measured here 0.3009 with the cone, 1.008 free).
@@ -155,7 +198,8 @@ describe('3D joint setters change the motion as the laws say', () => {
   test('setJoint3DBreak: a rod holding m g breaks once its threshold is set below m g, not above', () => {
     const world = world3([0, -G, 0], 1 / 120);
     const b = ball(world, [0, -1, 0]);
-    const e = slotOf(b), m = world.components.Mass.value[e]!;
+    const e = slotOf(b),
+      m = world.components.Mass.value[e]!;
     const j = addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], length: 1 });
     setJoint3DBreak(world, j, 1.5 * m * G);
     for (let i = 0; i < 120; i++) step(world);
@@ -174,7 +218,9 @@ describe('3D joint setters change the motion as the laws say', () => {
     const wheel = addBody(world, { position: [0, 0, 0] });
     addShape3D(world, wheel, { type: 'box', halfExtents: [0.5, 0.5, 0.05], density: 1000 });
     const hinge = addHingeJoint3D(world, { b: wheel, axis: [0, 0, 1] });
-    const W = world.components.AngularVelocity, O = world.components.Orientation, e = slotOf(wheel);
+    const W = world.components.AngularVelocity,
+      O = world.components.Orientation,
+      e = slotOf(wheel);
     for (let i = 0; i < 10; i++) step(world);
     expect(W.z[e]).toBe(0);
     setJoint3DMotor(world, hinge, 2, 1e4);
@@ -189,7 +235,10 @@ describe('3D joint setters change the motion as the laws say', () => {
     // (angle 2 atan2(q_z, q_w); 0.02 rad allowed for the soft rows).
     setJoint3DLimits(world, hinge, -0.2, 0.2);
     let most = 0;
-    for (let i = 0; i < 120; i++) { step(world); if (i >= 60) most = Math.max(most, Math.abs(2 * Math.atan2(O.z[e]!, O.w[e]!))); }
+    for (let i = 0; i < 120; i++) {
+      step(world);
+      if (i >= 60) most = Math.max(most, Math.abs(2 * Math.atan2(O.z[e]!, O.w[e]!)));
+    }
     expect(most).toBeLessThan(0.2 + 0.02);
     expect(Math.abs(W.z[e]!)).toBeLessThan(0.05);
 
@@ -199,7 +248,9 @@ describe('3D joint setters change the motion as the laws say', () => {
     addShape3D(w2, sl, { type: 'box', halfExtents: [0.1, 0.1, 0.1], density: 1000 });
     const slider = addSliderJoint3D(w2, { b: sl, axis: [0, 1, 0] });
     setJoint3DLimits(w2, slider, -0.1, 0.1);
-    const P = w2.components.Position, V = w2.components.Velocity, s = slotOf(sl);
+    const P = w2.components.Position,
+      V = w2.components.Velocity,
+      s = slotOf(sl);
     for (let i = 0; i < 60; i++) step(w2);
     expect(Math.abs(P.y[s]! + 0.1)).toBeLessThan(2e-3);
     // A motor up at 0.3 m/s (force cap 10 m g): it climbs at that speed (1 %) to the upper limit.
@@ -236,7 +287,8 @@ describe('3D joint setters reject bad input and then change nothing', () => {
   }
 
   test('each bad call throws a clear error; a twin world stepped alike stays bit-identical', () => {
-    const A = scene(), B = scene();
+    const A = scene(),
+      B = scene();
     const w = A.world;
     const bad: Array<[() => void, RegExp]> = [
       [() => setBallJoint3DCone(w, A.ballJ, 0), /^setBallJoint3DCone: coneAngle must be in \(0, pi\), got 0$/],
@@ -252,7 +304,10 @@ describe('3D joint setters reject bad input and then change nothing', () => {
       [() => setDistanceJoint3DLength(w, A.hinge, 1), /^setDistanceJoint3DLength: joint must be a 3D distance joint, got a hinge joint/],
       [() => setDistanceJoint3DSpring(w, A.dist, -1, 0), /^setDistanceJoint3DSpring: hertz must be >= 0, got -1$/],
       [() => setDistanceJoint3DSpring(w, A.dist, 2, Infinity), /^setDistanceJoint3DSpring: dampingRatio must be finite, got Infinity$/],
-      [() => setDistanceJoint3DSpring(w, A.dist, '2' as unknown as number, 0), /^setDistanceJoint3DSpring: hertz must be a number, got "2"$/],
+      [
+        () => setDistanceJoint3DSpring(w, A.dist, '2' as unknown as number, 0),
+        /^setDistanceJoint3DSpring: hertz must be a number, got "2"$/,
+      ],
       [() => setJoint3DBreak(w, A.dist, 0), /^setJoint3DBreak: breakForce must be > 0 \(Infinity: never\), got 0$/],
       [() => setJoint3DBreak(w, A.hinge, 10, Number.NaN), /^setJoint3DBreak: breakTorque must be > 0 \(Infinity: never\), got NaN$/],
       [() => setJoint3DBreak(w, 0, 10), /^setJoint3DBreak: joint must be an entity of this world/],
@@ -265,12 +320,32 @@ describe('3D joint setters reject bad input and then change nothing', () => {
     ];
     for (const [call, message] of bad) expect(call).toThrow(message);
     // Nothing changed: both worlds step alike, to the bit, and their joint stores agree.
-    for (let i = 0; i < 60; i++) { step(A.world); step(B.world); }
-    const pa = A.world.components.Position, pb = B.world.components.Position;
+    for (let i = 0; i < 60; i++) {
+      step(A.world);
+      step(B.world);
+    }
+    const pa = A.world.components.Position,
+      pb = B.world.components.Position;
     for (let e = 1; e <= 6; e++) for (const k of ['x', 'y', 'z'] as const) expect(pa[k][e]).toBe(pb[k][e]);
-    const sa = joints3DOf(A.world)!, sb = joints3DOf(B.world)!;
+    const sa = joints3DOf(A.world)!,
+      sb = joints3DOf(B.world)!;
     expect(sa.list).toEqual(sb.list);
-    for (const key of ['flags', 'lower', 'upper', 'length', 'hertz', 'dampingRatio', 'motorSpeed', 'maxMotorTorque', 'breakForce', 'breakTorque', 'limit', 'motor', 'lx', 'ly'] as const) {
+    for (const key of [
+      'flags',
+      'lower',
+      'upper',
+      'length',
+      'hertz',
+      'dampingRatio',
+      'motorSpeed',
+      'maxMotorTorque',
+      'breakForce',
+      'breakTorque',
+      'limit',
+      'motor',
+      'lx',
+      'ly',
+    ] as const) {
       expect(Array.from(sa[key])).toEqual(Array.from(sb[key]));
     }
   });

@@ -1,7 +1,17 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBallJoint3D, addBody, addHingeJoint3D, addShape3D, addSliderJoint3D, createPhysicsWorld, joint3DBreaks, joints3DOf, removeBody, slotOf, step,
+  addBallJoint3D,
+  addBody,
+  addHingeJoint3D,
+  addShape3D,
+  addSliderJoint3D,
+  createPhysicsWorld,
+  joint3DBreaks,
+  joints3DOf,
+  removeBody,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 const G = 9.81;
 
@@ -22,10 +32,14 @@ describe('3D slider joint', () => {
     const b = cube(world, [0, 0, 0]);
     const u = [Math.SQRT1_2, -Math.SQRT1_2, 0];
     addSliderJoint3D(world, { b, axis: u });
-    const c = world.components, e = slotOf(b);
+    const c = world.components,
+      e = slotOf(b);
     const n = 240; // 1 s
     for (let i = 0; i < n; i++) step(world);
-    const t = world.time, x = c.Position.x[e]!, y = c.Position.y[e]!, z = c.Position.z[e]!;
+    const t = world.time,
+      x = c.Position.x[e]!,
+      y = c.Position.y[e]!,
+      z = c.Position.z[e]!;
     const along = x * u[0]! + y * u[1]!;
     // Independent reference: motion along a line under gravity, s = g_parallel t^2 / 2.
     const expected = (G * Math.SQRT1_2 * t * t) / 2;
@@ -55,7 +69,8 @@ describe('3D slider joint', () => {
     const b = cube(world, [0, 0, 0]);
     const j = addSliderJoint3D(world, { b, axis: [0, 1, 0], lower: -0.2, upper: 0.2 });
     for (let i = 0; i < 240; i++) step(world);
-    const s = joints3DOf(world)!, e = slotOf(j);
+    const s = joints3DOf(world)!,
+      e = slotOf(j);
     // The limit row carries the weight: impulse per substep m g h_s along +y (soft rows: 1 %).
     const hs = world.dt / world.collision.settings.solverSubsteps;
     expect(Math.abs(s.limit[e]! - G * hs) / (G * hs)).toBeLessThan(0.01);
@@ -78,8 +93,12 @@ describe('3D slider joint', () => {
     expect(joints3DOf(world)!.list.length).toBe(0);
     const other = cube(world, [6, 0, 0]);
     expect(() => addSliderJoint3D(world, { b: other, axis: [0, 0, 0] })).toThrow('addSliderJoint3D: axis must be a non-zero vector');
-    expect(() => addSliderJoint3D(world, { b: other, axis: [1, 0, 0], lower: 0.1, upper: 1 })).toThrow('addSliderJoint3D: lower must be <= 0, got 0.1');
-    expect(() => addSliderJoint3D(world, { b: other, axis: [1, 0, 0], motorSpeed: 1 })).toThrow('addSliderJoint3D: maxMotorForce must be given with motorSpeed');
+    expect(() => addSliderJoint3D(world, { b: other, axis: [1, 0, 0], lower: 0.1, upper: 1 })).toThrow(
+      'addSliderJoint3D: lower must be <= 0, got 0.1',
+    );
+    expect(() => addSliderJoint3D(world, { b: other, axis: [1, 0, 0], motorSpeed: 1 })).toThrow(
+      'addSliderJoint3D: maxMotorForce must be given with motorSpeed',
+    );
     // A joint to a removed body.
     expect(() => addSliderJoint3D(world, { b: kept, axis: [1, 0, 0] })).toThrow(/addSliderJoint3D: b .*removed/);
     expect(() => addHingeJoint3D(world, { a: kept, b: other, axis: [0, 0, 1] })).toThrow(/addHingeJoint3D: a .*removed/);

@@ -1,5 +1,15 @@
+import {
+  addBody,
+  addDistanceJoint3D,
+  addShape3D,
+  createPhysicsWorld,
+  isSleeping,
+  removeBody,
+  removeJoint3D,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addDistanceJoint3D, addShape3D, createPhysicsWorld, isSleeping, removeBody, removeJoint3D, slotOf, step } from '@bitphysics/physics';
 
 const G = 9.81;
 
@@ -24,8 +34,11 @@ describe('removing a 3D joint wakes what it held', () => {
     // g t^2 / 2 (t = n h), checked to 1e-9 m (rounding).
     for (const how of ['removeJoint3D', 'removeBody holder'] as const) {
       const { world, holder, bob, joint } = sleepingBob(how === 'removeBody holder');
-      const c = world.components, e = slotOf(bob), y0 = c.Position.y[e]!;
-      if (how === 'removeJoint3D') removeJoint3D(world, joint); else removeBody(world, holder!);
+      const c = world.components,
+        e = slotOf(bob),
+        y0 = c.Position.y[e]!;
+      if (how === 'removeJoint3D') removeJoint3D(world, joint);
+      else removeBody(world, holder!);
       expect(isSleeping(world, bob)).toBe(false);
       const n = 30;
       for (let i = 0; i < n; i++) step(world);

@@ -1,7 +1,15 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBallJoint3D, addBody, addDistanceJoint3D, addHingeJoint3D, addShape3D, createPhysicsWorld, joints3DOf, slotOf, step,
+  addBallJoint3D,
+  addBody,
+  addDistanceJoint3D,
+  addHingeJoint3D,
+  addShape3D,
+  createPhysicsWorld,
+  joints3DOf,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * 3D joint rows that no other test drives (the hinge motor, the distance spring and rope), and the warm
@@ -44,7 +52,8 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     const b = addBody(world, { position: [1.1, 0, 0] });
     addShape3D(world, b, { type: 'sphere', radius: 0.1, density: 1000 });
     addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], length: 1, hertz: f, dampingRatio: 0 });
-    const p = addBody(world, { position: [5, 0, 0] }), q = addBody(world, { position: [6.2, 0, 0] });
+    const p = addBody(world, { position: [5, 0, 0] }),
+      q = addBody(world, { position: [6.2, 0, 0] });
     addShape3D(world, p, { type: 'sphere', radius: 0.1, density: 1000 });
     addShape3D(world, q, { type: 'sphere', radius: 0.1, density: 3000 });
     addDistanceJoint3D(world, { a: p, b: q, length: 1, hertz: f, dampingRatio: 0 });
@@ -56,7 +65,8 @@ describe('3D joints: motor, spring, rope, warm start', () => {
       step(world);
       const now = [V.x[slotOf(b)]!, rel()];
       for (let k = 0; k < 2; k++) {
-        const a0 = prev[k]!, a1 = now[k]!;
+        const a0 = prev[k]!,
+          a1 = now[k]!;
         // Velocity zero crossing, interpolated within the step.
         if ((a0 > 0 && a1 <= 0) || (a0 < 0 && a1 >= 0)) cross[k]!.push(world.time - world.h * (a1 / (a1 - a0)));
       }
@@ -74,7 +84,8 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     const b = addBody(world, { position: [0, -1, 0] });
     addShape3D(world, b, { type: 'sphere', radius: 0.1, density: 1000 });
     addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], minLength: 0 });
-    const c = world.components, e = slotOf(b);
+    const c = world.components,
+      e = slotOf(b);
     const len = (): number => Math.hypot(c.Position.x[e]!, c.Position.y[e]!, c.Position.z[e]!);
     for (let i = 0; i < 60; i++) step(world);
     // Pulled by its weight: held at maxLength = 1 m (soft rows: within 1 mm).
@@ -84,7 +95,9 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     // substeps of h_s: y = y0 + v0 t - g t^2 / 2 - g h_s t / 2 exactly; tolerance 1e-6 m (no rope
     // impulse, not even the warm-started one, may act once it is slack).
     const y0 = c.Position.y[e]!;
-    c.Velocity.x[e] = 0; c.Velocity.y[e] = 2; c.Velocity.z[e] = 0;
+    c.Velocity.x[e] = 0;
+    c.Velocity.y[e] = 2;
+    c.Velocity.z[e] = 0;
     const t0 = world.time;
     for (let i = 0; i < 12; i++) step(world);
     const t = world.time - t0;
@@ -99,8 +112,10 @@ describe('3D joints: motor, spring, rope, warm start', () => {
   test('a distance joint at its lower limit (a strut) breaks by its force, not its torque', () => {
     // A 0.1 m sphere (4.19 kg, weight 41.1 N) held 1 m above the anchor by a strut with limits [1, 2] m.
     const world = world3([0, -9.81, 0]);
-    const m = (4 / 3) * Math.PI * 0.1 ** 3 * 1000, W = m * 9.81;
-    const held = addBody(world, { position: [0, 1, 0] }), weak = addBody(world, { position: [3, 1, 0] });
+    const m = (4 / 3) * Math.PI * 0.1 ** 3 * 1000,
+      W = m * 9.81;
+    const held = addBody(world, { position: [0, 1, 0] }),
+      weak = addBody(world, { position: [3, 1, 0] });
     for (const b of [held, weak]) addShape3D(world, b, { type: 'sphere', radius: 0.1, density: 1000 });
     // Carries no torque: a tiny torque threshold must not break it (the lower-limit impulse is a force).
     addDistanceJoint3D(world, { b: held, anchorA: [0, 0, 0], minLength: 1, maxLength: 2, breakTorque: 1e-3, breakForce: 2 * W });
@@ -115,25 +130,43 @@ describe('3D joints: motor, spring, rope, warm start', () => {
   /** A chain of 10 links (0.5 m distance rods, the last 100 times heavier) swinging; the worst summed length error over steps 60-120. `cold`: every joint impulse is cleared before each step (no warm start across steps). */
   function chainError(cold: boolean): number {
     const world = world3([0, -9.81, 0]);
-    const c = world.components, links: number[] = [];
+    const c = world.components,
+      links: number[] = [];
     let prev: number | null = null;
     for (let i = 0; i < 10; i++) {
       const b = addBody(world, { position: [0, -0.5 * (i + 1), 0] });
       addShape3D(world, b, { type: 'sphere', radius: 0.05, density: i === 9 ? 100000 : 1000 });
-      if (prev === null) addDistanceJoint3D(world, { b, anchorA: [0, 0, 0] }); else addDistanceJoint3D(world, { a: prev, b });
-      links.push(b); prev = b;
+      if (prev === null) addDistanceJoint3D(world, { b, anchorA: [0, 0, 0] });
+      else addDistanceJoint3D(world, { a: prev, b });
+      links.push(b);
+      prev = b;
     }
     c.Velocity.x[slotOf(links[9]!)] = 1;
     const s = joints3DOf(world)!;
     let worst = 0;
     for (let n = 0; n < 120; n++) {
-      if (cold) for (const j of s.list) { s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; s.limit[j] = 0; }
+      if (cold)
+        for (const j of s.list) {
+          s.lx[j] = 0;
+          s.ly[j] = 0;
+          s.lz[j] = 0;
+          s.limit[j] = 0;
+        }
       step(world);
       if (n < 60) continue;
-      let px = 0, py = 0, pz = 0, err = 0;
+      let px = 0,
+        py = 0,
+        pz = 0,
+        err = 0;
       for (const b of links) {
-        const e = slotOf(b), x = c.Position.x[e]!, y = c.Position.y[e]!, z = c.Position.z[e]!;
-        err += Math.abs(Math.hypot(x - px, y - py, z - pz) - 0.5); px = x; py = y; pz = z;
+        const e = slotOf(b),
+          x = c.Position.x[e]!,
+          y = c.Position.y[e]!,
+          z = c.Position.z[e]!;
+        err += Math.abs(Math.hypot(x - px, y - py, z - pz) - 0.5);
+        px = x;
+        py = y;
+        pz = z;
       }
       worst = Math.max(worst, err);
     }
@@ -145,7 +178,8 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     // impulse carried between substeps without being applied again) 1.68 m summed over the 10 links;
     // warm-started 0.20 m; warm-started but cleared before each step (`cold`) 0.50 m. Bounds: 0.4 m,
     // which the old solver exceeded fourfold, and half the cold error.
-    const warm = chainError(false), cold = chainError(true);
+    const warm = chainError(false),
+      cold = chainError(true);
     expect(warm).toBeLessThan(0.4);
     expect(warm).toBeLessThan(cold / 2);
   });
@@ -169,7 +203,8 @@ describe('3D joints: motor, spring, rope, warm start', () => {
     for (let n = 0; n < 240; n++) {
       step(world);
       if (n < 120) continue;
-      const y = c.Orientation.y[e]!, z = c.Orientation.z[e]!;
+      const y = c.Orientation.y[e]!,
+        z = c.Orientation.z[e]!;
       worst = Math.max(worst, Math.acos(Math.min(1, 1 - 2 * (y * y + z * z))) - 0.5); // arm axis q (1, 0, 0) against x
     }
     expect(worst).toBeGreaterThan(0); // it does rest on the cone

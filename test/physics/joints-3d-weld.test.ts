@@ -1,12 +1,28 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBallJoint3D, addBody, addFixedJoint3D, addHingeJoint3D, addShape3D, createPhysicsWorld, forEachContact3D, slotOf, step, type PhysicsWorld,
+  addBallJoint3D,
+  addBody,
+  addFixedJoint3D,
+  addHingeJoint3D,
+  addShape3D,
+  createPhysicsWorld,
+  forEachContact3D,
+  type PhysicsWorld,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /** Angle of B's orientation relative to A's, rad: 2 acos |w| of conj(q_A) q_B (both start unturned). */
 function relativeAngle(world: PhysicsWorld, a: number, b: number): number {
   const O = world.components.Orientation;
-  const x1 = -O.x[a]!, y1 = -O.y[a]!, z1 = -O.z[a]!, w1 = O.w[a]!, x2 = O.x[b]!, y2 = O.y[b]!, z2 = O.z[b]!, w2 = O.w[b]!;
+  const x1 = -O.x[a]!,
+    y1 = -O.y[a]!,
+    z1 = -O.z[a]!,
+    w1 = O.w[a]!,
+    x2 = O.x[b]!,
+    y2 = O.y[b]!,
+    z2 = O.z[b]!,
+    w2 = O.w[b]!;
   const rw = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
   return 2 * Math.acos(Math.min(1, Math.abs(rw)));
 }
@@ -14,7 +30,7 @@ function relativeAngle(world: PhysicsWorld, a: number, b: number): number {
 const DEG = Math.PI / 180;
 
 describe('3D fixed joint between two dynamic bodies', () => {
-  test('a 1 m, 1 kg lever welded to a dynamic carrier bends by the soft rows\' static deflection, whatever the substep count', () => {
+  test("a 1 m, 1 kg lever welded to a dynamic carrier bends by the soft rows' static deflection, whatever the substep count", () => {
     // Carrier A: an 8 kg cube (0.2 m, I = 8 (0.2^2 + 0.2^2) / 12 = 0.0533 kg m^2) on a hinge about y to the
     // world (dynamic, free to spin about y only). Lever B: 1 x 0.02 x 0.02 m, 1 kg (I_z = (1 + 0.0004) / 12),
     // welded to A's face and sticking out along x. The weld carries B's weight torque about B's centre,
@@ -24,7 +40,10 @@ describe('3D fixed joint between two dynamic bodies', () => {
     // with f = 60 Hz (the joint stiffness; below a quarter of the substep rate for 4 and 8 substeps at 60 Hz).
     // That is 0.0608 degree. Tolerance 3 %: the formula is the rows' exact fixed point; what is left after
     // 2 s is the lever's settling (damping ratio 2) and the carrier's own soft hinge.
-    const IA = (8 * (0.04 + 0.04)) / 12, IB = (1 * (1 + 0.0004)) / 12, tau = 1 * 9.81 * 0.5, omega = 2 * Math.PI * 60;
+    const IA = (8 * (0.04 + 0.04)) / 12,
+      IB = (1 * (1 + 0.0004)) / 12,
+      tau = 1 * 9.81 * 0.5,
+      omega = 2 * Math.PI * 60;
     const expected = (tau * (1 / IA + 1 / IB)) / (omega * omega);
     for (const solverSubsteps of [4, 8]) {
       const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -9.81, 0], sleep: false, dt: 1 / 60, solverSubsteps });
@@ -61,11 +80,15 @@ describe('3D fixed joint between two dynamic bodies', () => {
     };
     const pairContacts = (w: PhysicsWorld, a: number, b: number): number => {
       let n = 0;
-      forEachContact3D(w, (c) => { if ((c.bodyA === a && c.bodyB === b) || (c.bodyA === b && c.bodyB === a)) n++; });
+      forEachContact3D(w, (c) => {
+        if ((c.bodyA === a && c.bodyB === b) || (c.bodyA === b && c.bodyB === a)) n++;
+      });
       return n;
     };
     const free = build(false);
-    let rel = 0, contacts = 0, turned = 0;
+    let rel = 0,
+      contacts = 0,
+      turned = 0;
     const O = free.w.components.Orientation;
     for (let i = 0; i < 240; i++) {
       step(free.w);
@@ -81,6 +104,8 @@ describe('3D fixed joint between two dynamic bodies', () => {
     const touching = build(true);
     step(touching.w);
     expect(pairContacts(touching.w, touching.a, touching.b)).toBeGreaterThan(0);
-    expect(() => addFixedJoint3D(touching.w, { a: touching.ha, b: touching.hb, collideConnected: 1 as unknown as boolean })).toThrow(/addFixedJoint3D: collideConnected/);
+    expect(() => addFixedJoint3D(touching.w, { a: touching.ha, b: touching.hb, collideConnected: 1 as unknown as boolean })).toThrow(
+      /addFixedJoint3D: collideConnected/,
+    );
   });
 });

@@ -1,8 +1,19 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBallJoint3D, addBody, addDistanceJoint3D, addFixedJoint3D, addHingeJoint3D, addShape3D, createPhysicsWorld, joint3DBreaks, joints3DOf,
-  removeBody, slotOf, step, type PhysicsWorld,
+  addBallJoint3D,
+  addBody,
+  addDistanceJoint3D,
+  addFixedJoint3D,
+  addHingeJoint3D,
+  addShape3D,
+  createPhysicsWorld,
+  joint3DBreaks,
+  joints3DOf,
+  type PhysicsWorld,
+  removeBody,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /** A body's rotation angle from the identity, rad: 2 acos |w| of its unit quaternion. */
 function rotationAngle(O: PhysicsWorld['components']['Orientation'], e: number): number {
@@ -19,15 +30,19 @@ describe('3D joints', () => {
     const bob = addBody(world, { position: [0, -1, 0] });
     addShape3D(world, bob, { type: 'box', halfExtents: [0.05, 0.05, 0.05], density: 1000 });
     addHingeJoint3D(world, { b: bob, anchor: [0, 0, 0], axis: [0, 0, 1] });
-    const c = world.components, e = slotOf(bob);
+    const c = world.components,
+      e = slotOf(bob);
     c.Velocity.x[e] = 0.3; // small swing (amplitude ~0.1 rad)
     // Physical pendulum: T = 2 pi sqrt(I / (m g d)), I = m d^2 + m (2 a)^2 / 6 for a cube of side 2a.
-    const d = 1, a = 0.05, T = 2 * Math.PI * Math.sqrt((d * d + (4 * a * a) / 6) / (9.81 * d));
-    let prev = c.Velocity.x[e]!, crossings: number[] = [];
+    const d = 1,
+      a = 0.05,
+      T = 2 * Math.PI * Math.sqrt((d * d + (4 * a * a) / 6) / (9.81 * d));
+    let prev = c.Velocity.x[e]!,
+      crossings: number[] = [];
     for (let i = 0; i < 2000 && crossings.length < 3; i++) {
       step(world);
       const v = c.Velocity.x[e]!;
-      if (prev > 0 && v <= 0 || prev < 0 && v >= 0) crossings.push(world.time);
+      if ((prev > 0 && v <= 0) || (prev < 0 && v >= 0)) crossings.push(world.time);
       prev = v;
     }
     const period = crossings[2]! - crossings[0]!;
@@ -50,7 +65,8 @@ describe('3D joints', () => {
     addShape3D(world, hang, { type: 'box', halfExtents: [0.5, 0.05, 0.05] });
     addBallJoint3D(world, { b: hang, anchor: [5, 0, 0], axis: [1, 0, 0], coneAngle: 0.5 });
     for (let i = 0; i < 480; i++) step(world);
-    const c = world.components, p = (b: number): number[] => [c.Position.x[slotOf(b)]!, c.Position.y[slotOf(b)]!];
+    const c = world.components,
+      p = (b: number): number[] => [c.Position.x[slotOf(b)]!, c.Position.y[slotOf(b)]!];
     // Rests at the lower limit (falling clockwise = negative angle): centre at 0.5 + 0.5 (cos 0.3, -sin 0.3) (1 cm).
     expect(p(arm)[0]!).toBeCloseTo(0.5 + 0.5 * Math.cos(0.3), 2);
     expect(p(arm)[1]!).toBeCloseTo(-0.5 * Math.sin(0.3), 2);
@@ -66,7 +82,8 @@ describe('3D joints', () => {
     const b = addBody(world, { position: [0, -2, 0] });
     addShape3D(world, b, { type: 'sphere', radius: 0.1, density: 1000 });
     const rod = addDistanceJoint3D(world, { b, anchorA: [0, 0, 0], breakForce: 1e6 });
-    const c = world.components, e = slotOf(b);
+    const c = world.components,
+      e = slotOf(b);
     c.Velocity.x[e] = 3;
     for (let i = 0; i < 240; i++) step(world);
     expect(Math.abs(Math.hypot(c.Position.x[e]!, c.Position.y[e]!) - 2)).toBeLessThan(2e-3);
@@ -88,7 +105,9 @@ describe('3D joints', () => {
     removeBody(world, b);
     expect(joints3DOf(world)!.list.length).toBe(0);
     void rod;
-    expect(() => addHingeJoint3D(world, { b: addBody(world, {}), axis: [0, 0, 0] })).toThrow(/addHingeJoint3D: axis must be a non-zero vector/);
+    expect(() => addHingeJoint3D(world, { b: addBody(world, {}), axis: [0, 0, 0] })).toThrow(
+      /addHingeJoint3D: axis must be a non-zero vector/,
+    );
   });
 
   test('a fixed joint breaks past its breakTorque and holds below it', () => {

@@ -1,21 +1,46 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addDistanceJoint, addMouseJoint, addPrismaticJoint, addRevoluteJoint, addWeldJoint, addWheelJoint, createCloth,
-  createPhysicsWorld, createRope, isJoint, isSleeping, jointAngle, jointLength, removeBody, removeJoint, setJointLimits,
-  setJointMotor, setMouseTarget, slotOf, step, stepMany, pinClothPoint, type PhysicsWorld,
+  addBody,
+  addDistanceJoint,
+  addMouseJoint,
+  addPrismaticJoint,
+  addRevoluteJoint,
+  addWeldJoint,
+  addWheelJoint,
+  createCloth,
+  createPhysicsWorld,
+  createRope,
+  isJoint,
+  isSleeping,
+  jointAngle,
+  jointLength,
+  type PhysicsWorld,
+  pinClothPoint,
+  removeBody,
+  removeJoint,
+  setJointLimits,
+  setJointMotor,
+  setMouseTarget,
+  slotOf,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 
 /** Arithmetic-geometric mean; K(k) = pi / (2 AGM(1, sqrt(1 - k^2))) (Abramowitz and Stegun 17.6). */
 function agm(a: number, b: number): number {
-  for (let i = 0; i < 40; i++) { const m = (a + b) / 2; b = Math.sqrt(a * b); a = m; }
+  for (let i = 0; i < 40; i++) {
+    const m = (a + b) / 2;
+    b = Math.sqrt(a * b);
+    a = m;
+  }
   return a;
 }
 
 /** Exact period of a pendulum of equivalent length l released at rest from theta0: 4 sqrt(l / g) K(sin(theta0 / 2)). */
 function pendulumPeriod(l: number, g: number, theta0: number): number {
   const k = Math.sin(theta0 / 2);
-  return 4 * Math.sqrt(l / g) * Math.PI / (2 * agm(1, Math.sqrt(1 - k * k)));
+  return (4 * Math.sqrt(l / g) * Math.PI) / (2 * agm(1, Math.sqrt(1 - k * k)));
 }
 
 const jointCount = (world: PhysicsWorld) => query(world, [world.components.Joint]).length;
@@ -23,7 +48,11 @@ const jointCount = (world: PhysicsWorld) => query(world, [world.components.Joint
 describe('revolute pendulum against the exact elliptic-integral period', () => {
   for (const deg of [10, 90, 150]) {
     test(`released from ${deg} degrees`, () => {
-      const g = 9.81, L = 1, m = 1, Icm = 0.001, theta0 = (deg * Math.PI) / 180;
+      const g = 9.81,
+        L = 1,
+        m = 1,
+        Icm = 0.001,
+        theta0 = (deg * Math.PI) / 180;
       const world = createPhysicsWorld({ gravity: [0, -g] });
       const bob = addBody(world, { position: [L * Math.sin(theta0), -L * Math.cos(theta0)], mass: m, inertia: Icm });
       addRevoluteJoint(world, { b: bob, anchor: [0, 0] });
@@ -55,12 +84,28 @@ describe('revolute pendulum against the exact elliptic-integral period', () => {
 describe('rope against the catenary', () => {
   test('a rope hanging between two pins lies on y = c cosh(x / c) + const with 2 c sinh(a / c) = length', () => {
     const world = createPhysicsWorld({ gravity: [0, -9.81] });
-    const a = 4, length = 10, segments = 50;
+    const a = 4,
+      length = 10,
+      segments = 50;
     // Built straight between the pins (8 m), then every link lengthened to 10 m / 51: it falls into shape.
-    const rope = createRope(world, { start: [-a, 0], end: [a, 0], segments, mass: 5, pinStart: true, pinEnd: true, slack: false, drag: 0.2 });
+    const rope = createRope(world, {
+      start: [-a, 0],
+      end: [a, 0],
+      segments,
+      mass: 5,
+      pinStart: true,
+      pinEnd: true,
+      slack: false,
+      drag: 0.2,
+    });
     // slack: false makes rods; set each link to length / (segments + 1) by hand: the rope is longer than the span.
     const J = world.components.Joint;
-    for (const h of rope.joints) { const j = slotOf(h); J.length[j] = length / (segments + 1); J.minLength[j] = J.length[j]!; J.maxLength[j] = J.length[j]!; }
+    for (const h of rope.joints) {
+      const j = slotOf(h);
+      J.length[j] = length / (segments + 1);
+      J.minLength[j] = J.length[j]!;
+      J.maxLength[j] = J.length[j]!;
+    }
     stepMany(world, 900);
     // The links stretch a little under tension (soft joints); the shape is a catenary of the rope's
     // actual length, measured from pin to pin. That stretch itself stays under 3%.
@@ -71,8 +116,13 @@ describe('rope against the catenary', () => {
     for (let i = 1; i < xs.length; i++) measured += Math.hypot(xs[i]! - xs[i - 1]!, ys[i]! - ys[i - 1]!);
     expect(measured / length - 1).toBeLessThan(0.03);
     // c from 2 c sinh(a / c) = length (bisection; the left side falls with c).
-    let lo = 0.1, hi = 100;
-    for (let i = 0; i < 200; i++) { const c = (lo + hi) / 2; if (2 * c * Math.sinh(a / c) > measured) lo = c; else hi = c; }
+    let lo = 0.1,
+      hi = 100;
+    for (let i = 0; i < 200; i++) {
+      const c = (lo + hi) / 2;
+      if (2 * c * Math.sinh(a / c) > measured) lo = c;
+      else hi = c;
+    }
     const c = (lo + hi) / 2;
     let worst = 0;
     for (let i = 1; i < xs.length - 1; i++) {
@@ -98,7 +148,10 @@ describe('every joint holds its constraint under load', () => {
         prev = b;
       }
       let worst = 0;
-      for (let i = 0; i < 300; i++) { step(world); worst = Math.max(worst, world.joints.stats.maxError); }
+      for (let i = 0; i < 300; i++) {
+        step(world);
+        worst = Math.max(worst, world.joints.stats.maxError);
+      }
       expect(worst).toBeLessThan(0.01);
       // Statics: the top joint carries the whole weight, (9 + 10) g.
       const top = query(world, [world.components.Joint])[0]!; // a slot
@@ -135,7 +188,8 @@ describe('every joint holds its constraint under load', () => {
   });
 
   test('wheel: the suspension sags by g / omega^2 under the wheel weight and the wheel stays on its axis', () => {
-    const g = 9.81, hz = 4;
+    const g = 9.81,
+      hz = 4;
     const world = createPhysicsWorld({ gravity: [0, -g] });
     const wheel = addBody(world, { position: [0, 0], mass: 1, radius: 0.3 });
     addWheelJoint(world, { b: wheel, axis: [0, 1], hertz: hz, dampingRatio: 1 });
@@ -148,7 +202,8 @@ describe('every joint holds its constraint under load', () => {
   });
 
   test('mouse joint: the dragged body hangs g / omega^2 below the target and follows it', () => {
-    const g = 9.81, hz = 5;
+    const g = 9.81,
+      hz = 5;
     const world = createPhysicsWorld({ gravity: [0, -g] });
     const b = addBody(world, { position: [0, 0], mass: 2, radius: 0.2 });
     const m = addMouseJoint(world, { b, hertz: hz, dampingRatio: 1 });
@@ -164,7 +219,9 @@ describe('every joint holds its constraint under load', () => {
 describe('motors and limits', () => {
   test('a revolute motor spins a free disc up at tau_max / I, then holds the target speed', () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
-    const I = 0.5, tau = 2, target = 10;
+    const I = 0.5,
+      tau = 2,
+      target = 10;
     const disc = addBody(world, { position: [0, 0], mass: 1, inertia: I });
     const j = addRevoluteJoint(world, { b: disc, motorSpeed: target, maxMotorTorque: tau });
     stepMany(world, 60);
@@ -177,7 +234,9 @@ describe('motors and limits', () => {
   });
 
   test('a motor holds a horizontal arm with torque m g L, and cannot when its limit is below that', () => {
-    const g = 9.81, m = 2, L = 1.5;
+    const g = 9.81,
+      m = 2,
+      L = 1.5;
     for (const factor of [2, 0.5]) {
       const world = createPhysicsWorld({ gravity: [0, -g] });
       // A uniform rod of length 2 L pinned at one end: centre L out, I = m (2 L)^2 / 12.
@@ -202,7 +261,10 @@ describe('motors and limits', () => {
     const bob = addBody(world, { position: [0.5, 0], mass: 1, inertia: 1 / 12 });
     const pin = addRevoluteJoint(world, { b: bob, anchor: [0, 0], lowerAngle: -0.5, upperAngle: 0.5 });
     let lowest = 0;
-    for (let i = 0; i < 240; i++) { step(world); lowest = Math.min(lowest, jointAngle(world, pin)); }
+    for (let i = 0; i < 240; i++) {
+      step(world);
+      lowest = Math.min(lowest, jointAngle(world, pin));
+    }
     // Swinging down from horizontal, it stops at -0.5 rad (within 0.02 rad: the limit is a soft constraint).
     expect(lowest).toBeGreaterThan(-0.52);
     expect(lowest).toBeLessThan(-0.48);
@@ -323,7 +385,9 @@ describe('bad input', () => {
     expect(() => createRope(world, { start: [0, 0], end: [0, 0] })).toThrow(/start and end must differ/);
     expect(world.entityIndex.aliveCount).toBe(alive);
     const d = addDistanceJoint(world, { a, b });
-    expect(() => setJointMotor(world, d, 1, 1)).toThrow(/setJointMotor: joint must be a revolute or prismatic or wheel joint, got a distance joint/);
+    expect(() => setJointMotor(world, d, 1, 1)).toThrow(
+      /setJointMotor: joint must be a revolute or prismatic or wheel joint, got a distance joint/,
+    );
     expect(jointLength(world, d)).toBeCloseTo(1, 12);
     removeJoint(world, d);
     expect(() => removeJoint(world, d)).toThrow(/removeJoint: joint refers to a removed entity/);

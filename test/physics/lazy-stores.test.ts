@@ -1,16 +1,32 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addComponent, addEmitter, addParticle, createPhysicsWorld, entityExists, getEntityComponents, hasComponent,
-  LAZY_GROUPS, removeComponent, restore, slotOf, snapshot, stateHash, stepMany, type PhysicsWorld,
+  addBody,
+  addComponent,
+  addEmitter,
+  addParticle,
+  createPhysicsWorld,
+  entityExists,
+  getEntityComponents,
+  hasComponent,
+  LAZY_GROUPS,
+  type PhysicsWorld,
+  removeComponent,
+  restore,
+  slotOf,
+  snapshot,
+  stateHash,
+  stepMany,
 } from '@bitphysics/physics';
 import { addEntity, query, removeEntity } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 
 // Stores a world never uses are never allocated (components.ts), and bitecs' bookkeeping is kept in
 // typed arrays (lean-ecs.ts). The references here are independent of that code: the documented
 // defaults, a brute-force membership check over every entity, and a world that never took the lazy path.
 
 const allocated = (store: object, capacity: number): boolean[] =>
-  Object.values(store).filter((a) => ArrayBuffer.isView(a)).map((a) => (a as Float64Array).length === capacity + 1);
+  Object.values(store)
+    .filter((a) => ArrayBuffer.isView(a))
+    .map((a) => (a as Float64Array).length === capacity + 1);
 
 describe('lazily allocated stores', () => {
   test('a world of bare particles holds only Position, Velocity and PreviousPosition; a body allocates the body group, an emitter the particle group', () => {
@@ -21,7 +37,10 @@ describe('lazily allocated stores', () => {
     for (const [name, store] of Object.entries(c)) {
       const flags = allocated(store, cap);
       const eager = name === 'Position' || name === 'Velocity' || name === 'PreviousPosition';
-      expect(flags.every((f) => f === eager), name).toBe(true);
+      expect(
+        flags.every((f) => f === eager),
+        name,
+      ).toBe(true);
     }
     expect(world.collision.invMass.length).toBe(0);
     stepMany(world, 3); // bare particles step without any other store
@@ -45,7 +64,8 @@ describe('lazily allocated stores', () => {
     stepMany(world, 6);
     expect(world.components.PreviousPosition.x.length).toBe(0);
     const b = addBody(world, { position: [0, 0], radius: 0.5 });
-    const P = world.components.Position, O = world.components.PreviousPosition;
+    const P = world.components.Position,
+      O = world.components.PreviousPosition;
     expect(O.x.length).toBe(21);
     for (let e = 1; e <= 4; e++) expect([O.x[e], O.y[e]]).toEqual([P.x[e], P.y[e]]);
     expect([O.x[slotOf(b)], O.y[slotOf(b)]]).toEqual([0, 0]);
@@ -79,7 +99,7 @@ describe('lean bitecs bookkeeping', () => {
     const c = world.components;
     const stores = [c.Position, c.Velocity, c.Mass, c.Ball, c.LinearDrag];
     let seed = 12345;
-    const rand = (): number => ((seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32);
+    const rand = (): number => (seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32;
     const alive = new Set<number>();
     for (let k = 0; k < 2000; k++) {
       const r = rand();
@@ -93,12 +113,17 @@ describe('lean bitecs bookkeeping', () => {
       } else if (alive.size > 0) {
         const e = [...alive][Math.floor(rand() * alive.size)]!;
         const s = stores[Math.floor(rand() * stores.length)]!;
-        if (rand() < 0.7) addComponent(world, e, s); else removeComponent(world, e, s);
+        if (rand() < 0.7) addComponent(world, e, s);
+        else removeComponent(world, e, s);
       }
     }
     for (const e of alive) expect(entityExists(world, e)).toBe(true);
     // Every query holds exactly the live entities with (and without) its terms.
-    const pairs: Array<[object, object]> = [[c.Position, c.Velocity], [c.Mass, c.Ball], [c.Position, c.LinearDrag]];
+    const pairs: Array<[object, object]> = [
+      [c.Position, c.Velocity],
+      [c.Mass, c.Ball],
+      [c.Position, c.LinearDrag],
+    ];
     for (const [s1, s2] of pairs) {
       const got = [...query(world, [s1, s2])].sort((x, y) => x - y);
       const want = [...alive].filter((e) => hasComponent(world, e, s1) && hasComponent(world, e, s2)).sort((x, y) => x - y);
@@ -113,13 +138,15 @@ describe('lean bitecs bookkeeping', () => {
     }
     // A recycled id carries nothing of its previous life: no component, and Position's documented reset.
     const e = [...alive][0]!;
-    addComponent(world, e, c.Position); addComponent(world, e, c.Velocity);
+    addComponent(world, e, c.Position);
+    addComponent(world, e, c.Velocity);
     c.Velocity.x[e] = 7;
     removeEntity(world, e);
     const again = addEntity(world);
     expect(again).toBe(e);
     expect(getEntityComponents(world, again)).toEqual([]);
-    addComponent(world, again, c.Position); addComponent(world, again, c.Velocity);
+    addComponent(world, again, c.Position);
+    addComponent(world, again, c.Velocity);
     expect(c.Velocity.x[again]).toBe(0);
   });
 });

@@ -1,7 +1,7 @@
+import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
-import { pairContacts } from './helpers.js';
 import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
+import { pairContacts } from './helpers.js';
 
 /**
  * Resting contact and head-on hits of the 3D pairs that go through their own manifold code
@@ -24,23 +24,33 @@ function world3(gravity: number): PhysicsWorld {
 }
 
 function speed(world: PhysicsWorld, b: number): number {
-  const c = world.components, e = slotOf(b);
-  return Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) + Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!);
+  const c = world.components,
+    e = slotOf(b);
+  return (
+    Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) +
+    Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!)
+  );
 }
 
 /** Drops `top` a little above its rest height on the static `base`, runs 180 steps (3 s) and returns its height, contact count, speed and how often the manifold's feature ids changed over the last 30 steps. */
 function settle(world: PhysicsWorld, base: number, top: number): { y: number; points: number; speed: number; idChanges: number } {
-  let ids = '', idChanges = 0;
+  let ids = '',
+    idChanges = 0;
   for (let s = 0; s < 180; s++) {
     step(world);
     if (s < 150) continue;
     // The one manifold's feature ids: the same from step to step at rest, so warm starting finds its points.
     const st = contact3DStateOf(world)!.current;
-    const now = st.count === 1 ? Array.from(st.id.subarray(0, st.points[0]!)).sort().join(',') : 'rows ' + st.count;
+    const now = st.count === 1 ? Array.from(st.id.subarray(0, st.points[0]!)).sort().join(',') : `rows ${st.count}`;
     if (s > 150 && now !== ids) idChanges++;
     ids = now;
   }
-  return { y: world.components.Position.y[slotOf(top)]!, points: pairContacts(world, base, top).points, speed: speed(world, top), idChanges };
+  return {
+    y: world.components.Position.y[slotOf(top)]!,
+    points: pairContacts(world, base, top).points,
+    speed: speed(world, top),
+    idChanges,
+  };
 }
 
 // Rest tolerance: the soft contact lets a body sink a fraction of a millimetre under its own weight
@@ -49,7 +59,8 @@ function settle(world: PhysicsWorld, base: number, top: number): { y: number; po
 describe('3D manifolds: resting pairs sit at their geometric height with the right number of points', () => {
   test('a capsule lying across another at 90 degrees rests at r1 + r2 above its centre line, one point', () => {
     const world = world3(-G);
-    const r1 = 0.2, r2 = 0.15;
+    const r1 = 0.2,
+      r2 = 0.15;
     const base = addBody(world, { position: [0, 0, 0], static: true });
     addShape3D(world, base, { type: 'capsule', radius: r1, halfHeight: 0.6, rotation: ALONG_X });
     const top = addBody(world, { position: [0, r1 + r2 + 0.05, 0] });
@@ -63,7 +74,8 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
 
   test('two parallel capsules touch along a line: two points, rest at r1 + r2', () => {
     const world = world3(-G);
-    const r1 = 0.2, r2 = 0.15;
+    const r1 = 0.2,
+      r2 = 0.15;
     const base = addBody(world, { position: [0, 0, 0], static: true });
     addShape3D(world, base, { type: 'capsule', radius: r1, halfHeight: 0.6, rotation: ALONG_X });
     const top = addBody(world, { position: [0.1, r1 + r2 + 0.05, 0] });
@@ -77,7 +89,8 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
 
   test('a capsule lying on a box rests at the box top + r with two points', () => {
     const world = world3(-G);
-    const r = 0.2, boxHalf = 0.5;
+    const r = 0.2,
+      boxHalf = 0.5;
     const base = addBody(world, { position: [0, 0, 0], static: true });
     addShape3D(world, base, { type: 'box', halfExtents: [1, boxHalf, 1] });
     const top = addBody(world, { position: [0.2, boxHalf + r + 0.05, -0.1] });
@@ -91,7 +104,8 @@ describe('3D manifolds: resting pairs sit at their geometric height with the rig
 
   test('a hull cube (hull of 8 corners) resting on a hull cube has four points and sits at h1 + h2', () => {
     const world = world3(-G);
-    const h1 = 0.5, h2 = 0.3;
+    const h1 = 0.5,
+      h2 = 0.3;
     const base = addBody(world, { position: [0, 0, 0], static: true });
     addShape3D(world, base, { type: 'hull', vertices: corners(h1) });
     const top = addBody(world, { position: [0.05, h1 + h2 + 0.05, 0.1] });
@@ -114,7 +128,8 @@ describe('3D manifolds: reduction to four points and feature ids', () => {
     const q = Math.PI / 8; // half of 45 degrees about y
     const top = addBody(world, { position: [0, 2 * h + 0.02, 0], orientation: [0, Math.sin(q), 0, Math.cos(q)] });
     addShape3D(world, top, { type: 'hull', vertices: corners(h), density: 1000 });
-    const c = world.components, e = slotOf(top);
+    const c = world.components,
+      e = slotOf(top);
     // The kept four keep their feature ids from step 30 (settled) to 200: all eight octagon vertices
     // are equally deep to ~1e-8 m, and a reduction that picked the deepest by rounding noise alternated
     // between the two interleaved sets every ~32 steps (steps 45, 77, 108, 140, 172), each switch
@@ -133,7 +148,10 @@ describe('3D manifolds: reduction to four points and feature ids', () => {
     // The two squares overlap in a regular octagon: 8 clipped points, of which four are kept.
     const pts: number[][] = [];
     let impulse = 0;
-    forEachContact3D(world, (v) => { pts.push([v.x, v.z]); impulse += v.normalImpulse; });
+    forEachContact3D(world, (v) => {
+      pts.push([v.x, v.z]);
+      impulse += v.normalImpulse;
+    });
     expect(pts.length).toBe(4);
     // Each kept point is an octagon vertex: at the circumradius h / cos(22.5 deg) from the axis (1 mm).
     for (const [x, z] of pts) expect(Math.abs(Math.hypot(x!, z!) - h / Math.cos(q))).toBeLessThan(1e-3);
@@ -154,26 +172,34 @@ describe('3D manifolds: reduction to four points and feature ids', () => {
 
 describe('3D manifolds: head-on hits conserve linear momentum and do not interpenetrate', () => {
   type Maker = (world: PhysicsWorld, position: number[], velocity: number[]) => number;
-  const capsuleAlongZ = (r: number, hh: number): Maker => (world, position, velocity) => {
-    const b = addBody(world, { position, velocity });
-    addShape3D(world, b, { type: 'capsule', radius: r, halfHeight: hh, rotation: ALONG_Z, density: 1000, restitution: 0.3 });
-    return b;
-  };
-  const capsuleAlongX = (r: number, hh: number): Maker => (world, position, velocity) => {
-    const b = addBody(world, { position, velocity });
-    addShape3D(world, b, { type: 'capsule', radius: r, halfHeight: hh, rotation: ALONG_X, density: 1000, restitution: 0.3 });
-    return b;
-  };
-  const box = (h: number): Maker => (world, position, velocity) => {
-    const b = addBody(world, { position, velocity });
-    addShape3D(world, b, { type: 'box', halfExtents: [h, h, h], density: 700, restitution: 0.3 });
-    return b;
-  };
-  const hull = (h: number): Maker => (world, position, velocity) => {
-    const b = addBody(world, { position, velocity });
-    addShape3D(world, b, { type: 'hull', vertices: corners(h), density: 900, restitution: 0.3 });
-    return b;
-  };
+  const capsuleAlongZ =
+    (r: number, hh: number): Maker =>
+    (world, position, velocity) => {
+      const b = addBody(world, { position, velocity });
+      addShape3D(world, b, { type: 'capsule', radius: r, halfHeight: hh, rotation: ALONG_Z, density: 1000, restitution: 0.3 });
+      return b;
+    };
+  const capsuleAlongX =
+    (r: number, hh: number): Maker =>
+    (world, position, velocity) => {
+      const b = addBody(world, { position, velocity });
+      addShape3D(world, b, { type: 'capsule', radius: r, halfHeight: hh, rotation: ALONG_X, density: 1000, restitution: 0.3 });
+      return b;
+    };
+  const box =
+    (h: number): Maker =>
+    (world, position, velocity) => {
+      const b = addBody(world, { position, velocity });
+      addShape3D(world, b, { type: 'box', halfExtents: [h, h, h], density: 700, restitution: 0.3 });
+      return b;
+    };
+  const hull =
+    (h: number): Maker =>
+    (world, position, velocity) => {
+      const b = addBody(world, { position, velocity });
+      addShape3D(world, b, { type: 'hull', vertices: corners(h), density: 900, restitution: 0.3 });
+      return b;
+    };
   // [name, mover, target, target position]: the mover starts at the origin at (4, 0.5, 0) m/s, the target
   // at rest off its line a little (so the hit also turns them and the normal is not an axis).
   const cases: [string, Maker, Maker, number[]][] = [
@@ -191,14 +217,21 @@ describe('3D manifolds: head-on hits conserve linear momentum and do not interpe
       const world = world3(0);
       const a = mover(world, [0, 0, 0], [4, 0.5, 0]);
       const b = target(world, at, [0, 0, 0]);
-      const c = world.components, ea = slotOf(a), eb = slotOf(b);
-      const p = (): number[] => [c.Velocity.x, c.Velocity.y, c.Velocity.z].map((v) => c.Mass.value[ea]! * v[ea]! + c.Mass.value[eb]! * v[eb]!);
+      const c = world.components,
+        ea = slotOf(a),
+        eb = slotOf(b);
+      const p = (): number[] =>
+        [c.Velocity.x, c.Velocity.y, c.Velocity.z].map((v) => c.Mass.value[ea]! * v[ea]! + c.Mass.value[eb]! * v[eb]!);
       const p0 = p();
-      let minSep = Infinity, touched = 0;
+      let minSep = Infinity,
+        touched = 0;
       for (let s = 0; s < 60; s++) {
         step(world);
         const k = pairContacts(world, a, b);
-        if (k.points > 0) { touched++; minSep = Math.min(minSep, k.minSep); }
+        if (k.points > 0) {
+          touched++;
+          minSep = Math.min(minSep, k.minSep);
+        }
       }
       expect(touched).toBeGreaterThan(0);
       expect(c.Velocity.x[eb]!).toBeGreaterThan(0.5); // they did collide

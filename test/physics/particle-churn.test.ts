@@ -1,10 +1,29 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addElectricField, addEmitter, addParticle, addParticles, createPhysicsWorld, emitNow, handleOf, hasComponent, isAlive,
-  onParticleBirth, onParticleDeath, particlesExpired, removeBody, restore, SCENES, setCharge, setVelocity, snapshot, stateHash, step, stepMany,
+  addElectricField,
+  addEmitter,
+  addParticle,
+  addParticles,
+  createPhysicsWorld,
+  emitNow,
+  handleOf,
+  hasComponent,
+  isAlive,
+  onParticleBirth,
+  onParticleDeath,
   type PhysicsWorld,
+  particlesExpired,
+  removeBody,
+  restore,
+  SCENES,
+  setCharge,
+  setVelocity,
+  snapshot,
+  stateHash,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
 import { $internal, query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 import { archetypes } from '../../packages/physics/src/particles/archetype.js';
 
 // The churn path (particles/archetype.ts) writes bitecs' entity index, masks and query lists itself.
@@ -12,7 +31,14 @@ import { archetypes } from '../../packages/physics/src/particles/archetype.js';
 // query exactly when it has every component of it and none of its Not components (checked component
 // by component with hasComponent), once, and dead entities belong to none.
 
-interface Q { dense: ArrayLike<number>; sparse: ArrayLike<number>; allComponents: object[]; notComponents: object[]; orComponents: object[]; toRemove: { dense: ArrayLike<number> } }
+interface Q {
+  dense: ArrayLike<number>;
+  sparse: ArrayLike<number>;
+  allComponents: object[];
+  notComponents: object[];
+  orComponents: object[];
+  toRemove: { dense: ArrayLike<number> };
+}
 function ecs(world: PhysicsWorld): { queries: Iterable<Q>; entityIndex: { aliveCount: number; dense: number[] } } {
   return (world as unknown as Record<symbol, never>)[$internal];
 }
@@ -27,9 +53,12 @@ function expectQueriesConsistent(world: PhysicsWorld): void {
     expect(new Set(members).size).toBe(members.length);
     for (let i = 0; i < q.dense.length; i++) expect(q.sparse[q.dense[i]!]).toBe(i);
     const and = q.allComponents.filter((c) => !q.notComponents.includes(c) && !q.orComponents.includes(c));
-    const expected = alive.filter((e) => and.every((c) => hasComponent(world, e, c))
-      && !q.notComponents.some((c) => hasComponent(world, e, c))
-      && (q.orComponents.length === 0 || q.orComponents.some((c) => hasComponent(world, e, c))));
+    const expected = alive.filter(
+      (e) =>
+        and.every((c) => hasComponent(world, e, c)) &&
+        !q.notComponents.some((c) => hasComponent(world, e, c)) &&
+        (q.orComponents.length === 0 || q.orComponents.some((c) => hasComponent(world, e, c))),
+    );
     expect(members.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
   }
 }
@@ -40,7 +69,10 @@ describe('particle churn', () => {
   test('a recycled slot carries nothing of its previous life: state, user components, queries', () => {
     const world = createPhysicsWorld({ gravity: [0, 0], capacity: 200 });
     const em = addEmitter(world, {
-      position: [1, 2], speed: [3, 3], lifetime: 0.05, policy: 'drop-new',
+      position: [1, 2],
+      speed: [3, 3],
+      lifetime: 0.05,
+      policy: 'drop-new',
       particle: { mass: 0.5, quadraticDrag: 0.01, colorStart: 0x112233, colorEnd: 0x445566, sizeStart: 0.2, alphaStart: 0.7 },
     });
     const c = world.components;
@@ -49,8 +81,13 @@ describe('particle churn', () => {
     const stamps = first.map((e) => world.spawnStamp[e]!);
     // Scribble over everything a particle has, and give it a component the emitter does not.
     for (const e of first) {
-      c.Velocity.x[e] = 99; c.AngularVelocity.z[e] = 7; c.Lifetime.age[e] = 0.01; c.Particle.colorStart[e] = 0xffffff;
-      c.Particle.generation[e] = 5; c.Mass.value[e] = 9; c.QuadraticDrag.k[e] = 4;
+      c.Velocity.x[e] = 99;
+      c.AngularVelocity.z[e] = 7;
+      c.Lifetime.age[e] = 0.01;
+      c.Particle.colorStart[e] = 0xffffff;
+      c.Particle.generation[e] = 5;
+      c.Mass.value[e] = 9;
+      c.QuadraticDrag.k[e] = 4;
       setCharge(world, handleOf(world, e), 1);
     }
     stepMany(world, 3); // lifetime 0.05 s = 3 steps: all expire
@@ -99,14 +136,25 @@ describe('particle churn', () => {
     const world = createPhysicsWorld(def.worldOptions({ count: 2000 }));
     const h = def.build(world, { count: 2000 }) as { shells: number; sparks: number; embers: number };
     let hooked = 0;
-    onParticleDeath(world, () => { hooked++; });
+    onParticleDeath(world, () => {
+      hooked++;
+    });
     const spawned = () => [h.shells, h.sparks, h.embers].reduce((s, em) => s + world.components.Emitter.spawned[em]!, 0);
     const lives = () => world.spawnStamp.reduce((s, x) => s + x, 0);
     stepMany(world, 200);
-    const s0 = spawned(), l0 = lives(), x0 = particlesExpired(world), hk0 = hooked, alive0 = world.entityIndex.aliveCount;
+    const s0 = spawned(),
+      l0 = lives(),
+      x0 = particlesExpired(world),
+      hk0 = hooked,
+      alive0 = world.entityIndex.aliveCount;
     let expiredSteps = 0;
-    for (let i = 0; i < 150; i++) { const before = particlesExpired(world); step(world); if (particlesExpired(world) > before) expiredSteps++; }
-    const births = spawned() - s0, deaths = particlesExpired(world) - x0;
+    for (let i = 0; i < 150; i++) {
+      const before = particlesExpired(world);
+      step(world);
+      if (particlesExpired(world) > before) expiredSteps++;
+    }
+    const births = spawned() - s0,
+      deaths = particlesExpired(world) - x0;
     expect(births).toBeGreaterThan(1000);
     expect(expiredSteps).toBeGreaterThan(100);
     expect(lives() - l0).toBe(births); // every birth is one new life of a slot, and nothing else was made
@@ -142,27 +190,37 @@ describe('particle churn', () => {
 
   test('addParticles makes the same world as addParticle in a loop, and checks its input', () => {
     const n = 500;
-    const positions = new Float64Array(2 * n).map((_, i) => i * 0.25 - 7), velocities = new Float64Array(2 * n).map((_, i) => (i % 7) - 3);
-    const a = createPhysicsWorld({ capacity: 600 }), b = createPhysicsWorld({ capacity: 600 });
+    const positions = new Float64Array(2 * n).map((_, i) => i * 0.25 - 7),
+      velocities = new Float64Array(2 * n).map((_, i) => (i % 7) - 3);
+    const a = createPhysicsWorld({ capacity: 600 }),
+      b = createPhysicsWorld({ capacity: 600 });
     const ha = Array.from(addParticles(a, n, { positions, velocities }));
     const hb: number[] = [];
-    for (let i = 0; i < n; i++) hb.push(addParticle(b, { position: [positions[2 * i]!, positions[2 * i + 1]!], velocity: [velocities[2 * i]!, velocities[2 * i + 1]!] }));
+    for (let i = 0; i < n; i++)
+      hb.push(
+        addParticle(b, { position: [positions[2 * i]!, positions[2 * i + 1]!], velocity: [velocities[2 * i]!, velocities[2 * i + 1]!] }),
+      );
     expect(ha).toEqual(hb);
     expect(stateHash(a)).toBe(stateHash(b));
-    stepMany(a, 10); stepMany(b, 10);
+    stepMany(a, 10);
+    stepMany(b, 10);
     expect(stateHash(a)).toBe(stateHash(b));
     expectQueriesConsistent(a);
     expect(() => addParticles(a, 101)).toThrow(/addParticles: count must be .*got 101/);
     expect(() => addParticles(a, 2, { positions: [1, 2, 3] })).toThrow(/addParticles: positions must hold 4 numbers/);
-    expect(() => addParticles(a, 2, { velocities: [1, 2, NaN, 0] })).toThrow(/addParticles: velocities\[2\] must be a finite number, got NaN/);
+    expect(() => addParticles(a, 2, { velocities: [1, 2, NaN, 0] })).toThrow(
+      /addParticles: velocities\[2\] must be a finite number, got NaN/,
+    );
     expect(a.entityIndex.aliveCount).toBe(n); // refused calls changed nothing
   });
 
   test('addParticles in bulk (freed slots first, then a long run of new ones) makes the same world as addParticle in a loop', () => {
     // 6,000 particles: above the length (4,096) from which the new slots' ids are appended to bitecs'
     // lists in one go (bulk.ts), after 300 slots freed by removals (taken first, one at a time, as bitecs would).
-    const n = 6_000, cap = 7_000;
-    const positions = new Float64Array(2 * n).map((_, i) => (i % 97) * 0.5 - 20), velocities = new Float64Array(2 * n).map((_, i) => (i % 13) - 6);
+    const n = 6_000,
+      cap = 7_000;
+    const positions = new Float64Array(2 * n).map((_, i) => (i % 97) * 0.5 - 20),
+      velocities = new Float64Array(2 * n).map((_, i) => (i % 13) - 6);
     const make = () => {
       const w = createPhysicsWorld({ capacity: cap });
       const hs: number[] = [];
@@ -171,14 +229,19 @@ describe('particle churn', () => {
       step(w);
       return w;
     };
-    const a = make(), b = make();
+    const a = make(),
+      b = make();
     const ha = Array.from(addParticles(a, n, { positions, velocities }));
     const hb: number[] = [];
-    for (let i = 0; i < n; i++) hb.push(addParticle(b, { position: [positions[2 * i]!, positions[2 * i + 1]!], velocity: [velocities[2 * i]!, velocities[2 * i + 1]!] }));
+    for (let i = 0; i < n; i++)
+      hb.push(
+        addParticle(b, { position: [positions[2 * i]!, positions[2 * i + 1]!], velocity: [velocities[2 * i]!, velocities[2 * i + 1]!] }),
+      );
     expect(ha).toEqual(hb);
     expect(ecs(a).entityIndex.dense).toEqual(ecs(b).entityIndex.dense);
     expect(stateHash(a)).toBe(stateHash(b));
-    stepMany(a, 3); stepMany(b, 3);
+    stepMany(a, 3);
+    stepMany(b, 3);
     expect(stateHash(a)).toBe(stateHash(b));
     expectQueriesConsistent(a);
     // The query lists hold the same entities in the same order as bitecs' own path made them.
@@ -192,7 +255,8 @@ describe('particle churn', () => {
     def.build(original, { count: 4000 });
     stepMany(original, 320);
     const saved = snapshot(original);
-    let reordered = 0, last = archetypes(original).order.disorder;
+    let reordered = 0,
+      last = archetypes(original).order.disorder;
     for (let i = 0; i < 200; i++) {
       step(original);
       const d = archetypes(original).order.disorder;
@@ -218,7 +282,11 @@ describe('particle churn', () => {
       def.build(world, { count: 3000 });
       if (hooked) onParticleBirth(world, () => {});
       const other = addEmitter(world, {
-        position: [5, 5], shape: 'disc', size: 1, speed: [1, 4], lifetime: [0.2, 0.6],
+        position: [5, 5],
+        shape: 'disc',
+        size: 1,
+        speed: [1, 4],
+        lifetime: [0.2, 0.6],
         particle: { radius: 0.05, mass: 0.01, linearDrag: 0.001, gravityScale: 0.5, colorStart: 0x336699 },
       });
       for (let i = 0; i < 260; i++) {
@@ -227,7 +295,8 @@ describe('particle churn', () => {
       }
       return world;
     };
-    const queued = build(false), oneByOne = build(true);
+    const queued = build(false),
+      oneByOne = build(true);
     expect(queued.entityIndex.aliveCount).toBeGreaterThan(1500);
     expect(Array.from(queued.entityIndex.dense)).toEqual(Array.from(oneByOne.entityIndex.dense));
     let arrays = 0;
@@ -238,14 +307,16 @@ describe('particle churn', () => {
         const b = other[field] as ArrayLike<number>;
         const x = a as unknown as ArrayLike<number>;
         expect(x.length, `${name}.${field}`).toBe(b.length);
-        for (let i = 0; i < x.length; i++) if (!Object.is(x[i], b[i])) expect(`${name}.${field}[${i}] = ${x[i]}`).toBe(`${name}.${field}[${i}] = ${b[i]}`);
+        for (let i = 0; i < x.length; i++)
+          if (!Object.is(x[i], b[i])) expect(`${name}.${field}[${i}] = ${x[i]}`).toBe(`${name}.${field}[${i}] = ${b[i]}`);
         arrays++;
       }
     }
     expect(arrays).toBeGreaterThan(40);
     expect(stateHash(queued)).toBe(stateHash(oneByOne));
     // The query lists in the same order too (the queued births' query work is done one query at a time).
-    const qa = Array.from(ecs(queued).queries), qb = Array.from(ecs(oneByOne).queries);
+    const qa = Array.from(ecs(queued).queries),
+      qb = Array.from(ecs(oneByOne).queries);
     expect(qa.length).toBe(qb.length);
     for (let i = 0; i < qa.length; i++) expect(Array.from(qa[i]!.dense)).toEqual(Array.from(qb[i]!.dense));
     expectQueriesConsistent(queued);

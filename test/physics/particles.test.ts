@@ -1,9 +1,20 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addEmitter, burst, createPhysicsWorld, emitNow, onParticleDeath, particleLook, setVortex, step, stepMany,
-  removeBody, setEmitter, slotOf,
+  addBody,
+  addEmitter,
+  burst,
+  createPhysicsWorld,
+  emitNow,
+  onParticleDeath,
+  particleLook,
+  removeBody,
+  setEmitter,
+  setVortex,
+  slotOf,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 
 const particlesOf = (world: ReturnType<typeof createPhysicsWorld>) => query(world, [world.components.Particle]).length;
 
@@ -26,16 +37,29 @@ describe('emitters', () => {
 
   test('speeds, directions and lifetimes stay in their ranges; the emitter passes on velocity', () => {
     const world = createPhysicsWorld({ gravity: [0, 0], capacity: 5000 });
-    const em = addEmitter(world, { position: [0, 0], velocity: [10, 0], inheritVelocity: 0.5, direction: [0, 1], spread: 0.3, speed: [2, 4], lifetime: [1, 3] });
+    const em = addEmitter(world, {
+      position: [0, 0],
+      velocity: [10, 0],
+      inheritVelocity: 0.5,
+      direction: [0, 1],
+      spread: 0.3,
+      speed: [2, 4],
+      lifetime: [1, 3],
+    });
     emitNow(world, em, 2000, [0, 0], [10, 0]);
     const ids = query(world, [world.components.Particle]);
-    const V = world.components.Velocity, L = world.components.Lifetime;
+    const V = world.components.Velocity,
+      L = world.components.Lifetime;
     for (const e of ids) {
-      const vx = V.x[e]! - 5, vy = V.y[e]!; // minus the inherited half of (10, 0)
-      const speed = Math.hypot(vx, vy), angle = Math.atan2(vy, vx) - Math.PI / 2;
-      expect(speed).toBeGreaterThanOrEqual(2 - 1e-12); expect(speed).toBeLessThanOrEqual(4 + 1e-12);
+      const vx = V.x[e]! - 5,
+        vy = V.y[e]!; // minus the inherited half of (10, 0)
+      const speed = Math.hypot(vx, vy),
+        angle = Math.atan2(vy, vx) - Math.PI / 2;
+      expect(speed).toBeGreaterThanOrEqual(2 - 1e-12);
+      expect(speed).toBeLessThanOrEqual(4 + 1e-12);
       expect(Math.abs(angle)).toBeLessThanOrEqual(0.3 + 1e-12);
-      expect(L.duration[e]!).toBeGreaterThanOrEqual(1); expect(L.duration[e]!).toBeLessThanOrEqual(3);
+      expect(L.duration[e]!).toBeGreaterThanOrEqual(1);
+      expect(L.duration[e]!).toBeLessThanOrEqual(3);
     }
   });
 
@@ -65,8 +89,13 @@ describe('emitters', () => {
     emitNow(world, shells, 1);
     const counts: number[] = [];
     let deaths = 0;
-    onParticleDeath(world, () => { deaths++; });
-    for (let i = 0; i < 200; i++) { step(world); counts.push(particlesOf(world)); }
+    onParticleDeath(world, () => {
+      deaths++;
+    });
+    for (let i = 0; i < 200; i++) {
+      step(world);
+      counts.push(particlesOf(world));
+    }
     expect(Math.max(...counts)).toBe(30);
     expect(world.components.Emitter.spawned[sparks]).toBe(10 + 30);
     expect(deaths).toBe(1 + 10 + 30);
@@ -87,7 +116,10 @@ describe('emitters', () => {
     stepMany(world, 20);
     const firstBorn = [...query(world, [world.components.Particle])];
     expect(firstBorn.length).toBe(20);
-    const oldest = Math.min(...firstBorn.map((e) => world.components.Lifetime.age[e]!)) < 0 ? -1 : firstBorn.reduce((a, e) => (world.components.Lifetime.age[e]! > world.components.Lifetime.age[a]! ? e : a));
+    const oldest =
+      Math.min(...firstBorn.map((e) => world.components.Lifetime.age[e]!)) < 0
+        ? -1
+        : firstBorn.reduce((a, e) => (world.components.Lifetime.age[e]! > world.components.Lifetime.age[a]! ? e : a));
     const oldestAge = world.components.Lifetime.age[oldest]!;
     step(world);
     const now = query(world, [world.components.Particle]);
@@ -100,9 +132,20 @@ describe('emitters', () => {
   test('constant churn keeps the entity count flat and ids within capacity for 5,000 steps', () => {
     const world = createPhysicsWorld({ gravity: [0, -10], capacity: 3000 });
     const sparks = addEmitter(world, { lifetime: [0.3, 0.8], speed: [3, 8], particle: { quadraticDrag: 0.01, mass: 0.01 } });
-    const shells = addEmitter(world, { rate: 20, lifetime: [0.4, 0.6], speed: [10, 12], direction: [0, 1], spread: 0.2, onDeath: { emitter: sparks, count: 40, maxGeneration: 1 }, policy: 'recycle-oldest' });
+    const shells = addEmitter(world, {
+      rate: 20,
+      lifetime: [0.4, 0.6],
+      speed: [10, 12],
+      direction: [0, 1],
+      spread: 0.2,
+      onDeath: { emitter: sparks, count: 40, maxGeneration: 1 },
+      policy: 'recycle-oldest',
+    });
     const counts: number[] = [];
-    for (let i = 0; i < 5000; i++) { step(world); if (i >= 1000) counts.push(world.entityIndex.aliveCount); }
+    for (let i = 0; i < 5000; i++) {
+      step(world);
+      if (i >= 1000) counts.push(world.entityIndex.aliveCount);
+    }
     expect(Math.max(...counts)).toBeLessThanOrEqual(3000);
     expect(world.entityIndex.maxId).toBeLessThanOrEqual(3000);
     // Flat: the mean over the last 1,000 steps is within 10% of the mean over steps 1,000-2,000.
@@ -124,7 +167,10 @@ describe('emitters', () => {
 
   test('look over life interpolates colour, size and alpha linearly in age', () => {
     const world = createPhysicsWorld({ gravity: [0, 0], dt: 0.1 });
-    const em = addEmitter(world, { lifetime: 1, particle: { colorStart: 0xff0000, colorEnd: 0x0000ff, sizeStart: 1, sizeEnd: 0, alphaStart: 1, alphaEnd: 0 } });
+    const em = addEmitter(world, {
+      lifetime: 1,
+      particle: { colorStart: 0xff0000, colorEnd: 0x0000ff, sizeStart: 1, sizeEnd: 0, alphaStart: 1, alphaEnd: 0 },
+    });
     emitNow(world, em, 1);
     stepMany(world, 5); // age 0.5
     const [p] = query(world, [world.components.Particle]);
@@ -175,8 +221,12 @@ describe('emitters', () => {
     expect(() => addEmitter(world, { lifetime: [2, 1] })).toThrow(/lifetime must be \[min, max\] with max >= min/);
     expect(() => addEmitter(world, { lifetime: 0 })).toThrow(/lifetime\[0\] must be > 0, got 0/);
     expect(() => addEmitter(world, { spread: 4 })).toThrow(/spread must be in \[0, 3.14/);
-    expect(() => addEmitter(world, { shape: 'cone' as never })).toThrow(/shape must be one of 'point', 'disc', 'ring', 'box', 'line', got "cone"/);
-    expect(() => addEmitter(world, { onDeath: { emitter: 999, count: 3, maxGeneration: 1 } })).toThrow(/addEmitter: onDeath.emitter must be an entity of this world .*got 999/);
+    expect(() => addEmitter(world, { shape: 'cone' as never })).toThrow(
+      /shape must be one of 'point', 'disc', 'ring', 'box', 'line', got "cone"/,
+    );
+    expect(() => addEmitter(world, { onDeath: { emitter: 999, count: 3, maxGeneration: 1 } })).toThrow(
+      /addEmitter: onDeath.emitter must be an entity of this world .*got 999/,
+    );
     expect(() => addEmitter(world, { policy: 'grow' as never })).toThrow(/policy must be one of 'drop-new', 'recycle-oldest', got "grow"/);
     expect(() => burst(world, 12345, 3)).toThrow(/burst: emitter must be an entity of this world .*got 12345/);
   });

@@ -1,5 +1,5 @@
+import { addBody, ballsInBox, createPhysicsWorld, Rng, setBoundary, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, ballsInBox, createPhysicsWorld, setBoundary, step, Rng } from '@bitphysics/physics';
 import { maxPairOverlap, modelEnergy } from './helpers';
 
 /**
@@ -50,12 +50,20 @@ describe('balls-in-box', () => {
       // the end, so the pile has settled again for the overlap check.
       if (i % 500 === 250 && i < 2500) {
         const V = world.components.Velocity;
-        for (const e of balls) { V.x[e] = shake.range(-15, 15); V.y[e] = shake.range(0, 25); }
+        for (const e of balls) {
+          V.x[e] = shake.range(-15, 15);
+          V.y[e] = shake.range(0, 25);
+        }
       }
       step(world);
       for (let k = 0; k < balls.length; k++) {
         const e = balls[k]!;
-        const out = Math.max(layout.min[0] - (P.x[e]! - r), (P.x[e]! + r) - layout.max[0], layout.min[1] - (P.y[e]! - r), (P.y[e]! + r) - layout.max[1]);
+        const out = Math.max(
+          layout.min[0] - (P.x[e]! - r),
+          P.x[e]! + r - layout.max[0],
+          layout.min[1] - (P.y[e]! - r),
+          P.y[e]! + r - layout.max[1],
+        );
         if (out > worst) worst = out;
       }
     }
@@ -65,29 +73,44 @@ describe('balls-in-box', () => {
 
   test('3D: spheres in a closed box conserve-or-lose energy and stay inside', () => {
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, -10, 0], capacity: 600 });
-    const n = 8, pitch = 1.5;
+    const n = 8,
+      pitch = 1.5;
     setBoundary(world, { min: [0, 0, 0], max: [n * pitch, 12 * pitch, n * pitch], restitution: 0.5, friction: 0.1 });
     const rng = new Rng(9);
     const ids: number[] = [];
     for (let i = 0; i < 512; i++) {
-      const x = (i % n) + 0.5, z = (Math.floor(i / n) % n) + 0.5, y = Math.floor(i / (n * n)) + 0.5;
-      ids.push(addBody(world, {
-        position: [x * pitch + rng.range(-0.2, 0.2), y * pitch + rng.range(-0.2, 0.2), z * pitch + rng.range(-0.2, 0.2)],
-        velocity: [rng.range(-3, 3), rng.range(-3, 3), rng.range(-3, 3)],
-        radius: 0.5, restitution: 0.5, friction: 0.1,
-      }));
+      const x = (i % n) + 0.5,
+        z = (Math.floor(i / n) % n) + 0.5,
+        y = Math.floor(i / (n * n)) + 0.5;
+      ids.push(
+        addBody(world, {
+          position: [x * pitch + rng.range(-0.2, 0.2), y * pitch + rng.range(-0.2, 0.2), z * pitch + rng.range(-0.2, 0.2)],
+          velocity: [rng.range(-3, 3), rng.range(-3, 3), rng.range(-3, 3)],
+          radius: 0.5,
+          restitution: 0.5,
+          friction: 0.1,
+        }),
+      );
     }
     const P = world.components.Position;
     let e0 = modelEnergy(world);
     const start = e0;
-    let worstRise = -Infinity, worstOut = -Infinity;
+    let worstRise = -Infinity,
+      worstOut = -Infinity;
     for (let i = 0; i < 1500; i++) {
       step(world);
       const e = modelEnergy(world);
       worstRise = Math.max(worstRise, (e - e0) / Math.abs(start));
       e0 = e;
       for (const id of ids) {
-        worstOut = Math.max(worstOut, -(P.x[id]! - 0.5), P.x[id]! + 0.5 - n * pitch, -(P.y[id]! - 0.5), -(P.z[id]! - 0.5), P.z[id]! + 0.5 - n * pitch);
+        worstOut = Math.max(
+          worstOut,
+          -(P.x[id]! - 0.5),
+          P.x[id]! + 0.5 - n * pitch,
+          -(P.y[id]! - 0.5),
+          -(P.z[id]! - 0.5),
+          P.z[id]! + 0.5 - n * pitch,
+        );
       }
     }
     expect(worstRise).toBeLessThan(1e-6);

@@ -1,7 +1,5 @@
+import { addBody, addMagneticField, addSegment, createPhysicsWorld, setBoundary, setCharge, slotOf, step } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
-import {
-  createPhysicsWorld, addBody, addSegment, setBoundary, setCharge, addMagneticField, step, slotOf,
-} from '@bitphysics/physics';
 
 /** The README's example, verbatim, so the front door cannot rot. */
 test('the README example runs and the ball stays in its box', () => {
@@ -13,8 +11,11 @@ test('the README example runs and the ball stays in its box', () => {
   addMagneticField(world, { field: 2 });
   for (let i = 0; i < 600; i++) step(world);
   const at = slotOf(ball);
-  const x = world.components.Position.x[at]!, y = world.components.Position.y[at]!;
-  expect(x).toBeGreaterThan(0.4 - 0.02); expect(x).toBeLessThan(20 - 0.4 + 0.02);
-  expect(y).toBeGreaterThan(0.4 - 0.02); expect(y).toBeLessThan(12 - 0.4 + 0.02);
+  const x = world.components.Position.x[at]!,
+    y = world.components.Position.y[at]!;
+  expect(x).toBeGreaterThan(0.4 - 0.02);
+  expect(x).toBeLessThan(20 - 0.4 + 0.02);
+  expect(y).toBeGreaterThan(0.4 - 0.02);
+  expect(y).toBeLessThan(12 - 0.4 + 0.02);
   expect(Math.hypot(x - 3, y - 10)).toBeGreaterThan(1);
 });

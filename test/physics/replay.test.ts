@@ -1,8 +1,16 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, applyImpulse, createInputRecorder, createPhysicsWorld, playReplay, setGravity, stateHash, stepMany, createReplayPlayer,
+  addBody,
+  applyImpulse,
+  createInputRecorder,
+  createPhysicsWorld,
+  createReplayPlayer,
   type PhysicsWorld,
+  playReplay,
+  setGravity,
+  stateHash,
+  stepMany,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 import { mixedScene } from './snapshot-scenes.js';
 
 // Reference: the recorded run itself. Replayed from its start with the same inputs at the same steps, the
@@ -12,7 +20,9 @@ function handlersFor(world: PhysicsWorld) {
   return {
     kick: (slot: number, ix: number, iy: number) => applyImpulse(world, slot, [ix, iy]),
     gravity: (gx: number, gy: number) => setGravity(world, [gx, gy]),
-    drop: (x: number, y: number) => { addBody(world, { position: [x, y], radius: 0.3, restitution: 0.4 }); },
+    drop: (x: number, y: number) => {
+      addBody(world, { position: [x, y], radius: 0.3, restitution: 0.4 });
+    },
   };
 }
 
@@ -35,7 +45,12 @@ describe('input replay', () => {
     stepMany(world, 10);
     const replay = recordRun(world);
     expect(replay.steps).toBe(300);
-    expect(replay.events.map((e) => [e.step, e.name])).toEqual([[25, 'kick'], [65, 'drop'], [65, 'gravity'], [145, 'drop']]);
+    expect(replay.events.map((e) => [e.step, e.name])).toEqual([
+      [25, 'kick'],
+      [65, 'drop'],
+      [65, 'gravity'],
+      [145, 'drop'],
+    ]);
     const expected = stateHash(world);
     const copy = createPhysicsWorld({ dimensions: 2, capacity: world.capacity });
     playReplay(copy, replay, { handlers: handlersFor(copy) });
@@ -61,8 +76,14 @@ describe('input replay', () => {
     const ball = addBody(world, { position: [0, 10] });
     const score = { points: 0 };
     const options = {
-      handlers: { score: (n: number) => { score.points += n; }, kick: (v: number) => applyImpulse(world, ball, [v, 0]) },
-      save: () => ({ ...score }), load: (s: unknown) => Object.assign(score, s),
+      handlers: {
+        score: (n: number) => {
+          score.points += n;
+        },
+        kick: (v: number) => applyImpulse(world, ball, [v, 0]),
+      },
+      save: () => ({ ...score }),
+      load: (s: unknown) => Object.assign(score, s),
     };
     score.points = 5;
     const rec = createInputRecorder(world, options);
@@ -76,7 +97,10 @@ describe('input replay', () => {
     const player = createReplayPlayer(world, replay, options);
     expect(score.points).toBe(5);
     let frames = 0;
-    while (!player.done) { player.step(); frames++; }
+    while (!player.done) {
+      player.step();
+      frames++;
+    }
     player.step(); // nothing once done
     expect([frames, player.played, score.points, stateHash(world)]).toEqual([6, 6, 7, end]);
   });
@@ -86,7 +110,9 @@ describe('input replay', () => {
     const rec = createInputRecorder(world, { handlers: { a: () => {} } });
     expect(() => rec.input('b')).toThrow(/InputRecorder.input: name must be one of the handlers \(a\), got .b./);
     expect(rec.replay.events).toEqual([]);
-    expect(() => createInputRecorder(world, { handlers: { a: 3 as never } })).toThrow(/createInputRecorder: handlers.a must be a function, got 3/);
+    expect(() => createInputRecorder(world, { handlers: { a: 3 as never } })).toThrow(
+      /createInputRecorder: handlers.a must be a function, got 3/,
+    );
     rec.input('a');
     expect(() => playReplay(world, rec.replay, { handlers: {} })).toThrow(/the replay calls 'a', which is not among the handlers/);
   });

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addSegment, createPhysicsWorld, setBoundary, step, stepMany } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('projectile under constant gravity', () => {
   /**
@@ -9,7 +9,15 @@ describe('projectile under constant gravity', () => {
    */
   test('matches x(t), y(t) exactly under every scheme and step', () => {
     const g = 9.81;
-    for (const integrator of ['semi-implicit-euler', 'explicit-euler', 'implicit-euler', 'rk2', 'rk4', 'position-verlet', 'velocity-verlet'] as const) {
+    for (const integrator of [
+      'semi-implicit-euler',
+      'explicit-euler',
+      'implicit-euler',
+      'rk2',
+      'rk4',
+      'position-verlet',
+      'velocity-verlet',
+    ] as const) {
       for (const dt of [1 / 30, 1 / 60, 1 / 120]) {
         const world = createPhysicsWorld({ gravity: [0, -g], dt, integrator });
         const ball = addBody(world, { position: [1, 2], velocity: [3, 12] });
@@ -17,7 +25,8 @@ describe('projectile under constant gravity', () => {
         const n = Math.round(T / dt);
         stepMany(world, n);
         const t = n * dt;
-        const P = world.components.Position, V = world.components.Velocity;
+        const P = world.components.Position,
+          V = world.components.Velocity;
         expect(Math.abs(P.x[ball]! - (1 + 3 * t))).toBeLessThan(1e-9);
         expect(Math.abs(V.y[ball]! - (12 - g * t))).toBeLessThan(1e-9);
         expect(Math.abs(P.y[ball]! - (2 + 12 * t - 0.5 * g * t * t))).toBeLessThan(1e-9);
@@ -38,8 +47,10 @@ describe('resting contact', () => {
       const world = createPhysicsWorld({ dimensions, gravity: dimensions === 2 ? [0, -9.81] : [0, -9.81, 0], sleep: false });
       setBoundary(world, dimensions === 2 ? { min: [-5, 0], max: [5, 10] } : { min: [-5, 0, -5], max: [5, 10, 5] });
       const ball = addBody(world, { position: dimensions === 2 ? [0, 0.5] : [0, 0.5, 0], radius: 0.5, restitution: 0.5, friction: 0.3 });
-      const P = world.components.Position, V = world.components.Velocity;
-      let maxDrift = 0, maxSpeed = 0;
+      const P = world.components.Position,
+        V = world.components.Velocity;
+      let maxDrift = 0,
+        maxSpeed = 0;
       for (let i = 0; i < 600; i++) {
         step(world);
         maxDrift = Math.max(maxDrift, Math.abs(P.y[ball]! - 0.5), Math.abs(P.x[ball]!), Math.abs(P.z[ball]!));
@@ -55,8 +66,13 @@ describe('resting contact', () => {
     // cannot roll: rotation off, the ball then behaves as a block on an incline.
     const world = createPhysicsWorld({ gravity: [0, -9.81], sleep: false });
     const theta = (20 * Math.PI) / 180;
-    addSegment(world, { a: [-10 * Math.cos(theta), -10 * Math.sin(theta)], b: [10 * Math.cos(theta), 10 * Math.sin(theta)], friction: 0.6 });
-    const nx = -Math.sin(theta), ny = Math.cos(theta);
+    addSegment(world, {
+      a: [-10 * Math.cos(theta), -10 * Math.sin(theta)],
+      b: [10 * Math.cos(theta), 10 * Math.sin(theta)],
+      friction: 0.6,
+    });
+    const nx = -Math.sin(theta),
+      ny = Math.cos(theta);
     const ball = addBody(world, { position: [0.5 * nx, 0.5 * ny], radius: 0.5, friction: 0.6, rotates: false });
     const P = world.components.Position;
     stepMany(world, 600);
@@ -65,10 +81,17 @@ describe('resting contact', () => {
 
   test('a block-like ball slides down a frictionless-enough incline with a = g (sin theta - mu_k cos theta)', () => {
     // 30 degrees, mu = 0.2 < tan(30) = 0.577: slides. Rotation off, so the contact behaves as a block.
-    const g = 9.81, theta = Math.PI / 6, mu = 0.2;
+    const g = 9.81,
+      theta = Math.PI / 6,
+      mu = 0.2;
     const world = createPhysicsWorld({ gravity: [0, -g], dt: 1 / 240 });
-    addSegment(world, { a: [-100 * Math.cos(theta), 100 * Math.sin(theta)], b: [100 * Math.cos(theta), -100 * Math.sin(theta)], friction: mu });
-    const nx = Math.sin(theta), ny = Math.cos(theta);
+    addSegment(world, {
+      a: [-100 * Math.cos(theta), 100 * Math.sin(theta)],
+      b: [100 * Math.cos(theta), -100 * Math.sin(theta)],
+      friction: mu,
+    });
+    const nx = Math.sin(theta),
+      ny = Math.cos(theta);
     const ball = addBody(world, { position: [0.5 * nx, 0.5 * ny], radius: 0.5, friction: mu, rotates: false });
     const V = world.components.Velocity;
     stepMany(world, 480); // 2 s

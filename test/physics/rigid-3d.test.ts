@@ -1,5 +1,5 @@
+import { addBody, addPlane, addShape3D, createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addPlane, addShape3D, createPhysicsWorld, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
 import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
 
 const G = 9.81;
@@ -8,7 +8,13 @@ function world3(gravity = -G): PhysicsWorld {
   return createPhysicsWorld({ dimensions: 3, gravity: [0, gravity, 0], sleep: false });
 }
 
-function cube(world: PhysicsWorld, position: number[], half = 0.5, extra: Record<string, unknown> = {}, body: Record<string, unknown> = {}): number {
+function cube(
+  world: PhysicsWorld,
+  position: number[],
+  half = 0.5,
+  extra: Record<string, unknown> = {},
+  body: Record<string, unknown> = {},
+): number {
   const b = addBody(world, { position, ...body });
   addShape3D(world, b, { type: 'box', halfExtents: [half, half, half], density: 1000, ...extra });
   return b;
@@ -20,7 +26,8 @@ describe('3D boxes in the contact solver', () => {
     addPlane(world, { normal: [0, 1, 0] });
     const b = cube(world, [0, 0.5, 0]);
     for (let s = 0; s < 300; s++) step(world);
-    const c = world.components, e = slotOf(b);
+    const c = world.components,
+      e = slotOf(b);
     expect(contact3DStateOf(world)!.current.points[0]).toBe(4);
     expect(Math.hypot(c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!)).toBeLessThan(1e-6);
     // The soft contact settles a fraction of a millimetre into the plane under the cube's weight.
@@ -33,14 +40,22 @@ describe('3D boxes in the contact solver', () => {
       const th = (deg * Math.PI) / 180;
       const world = world3();
       addPlane(world, { normal: [-Math.sin(th), Math.cos(th), 0], friction: mu });
-      const b = cube(world, [-0.5 * Math.sin(th), 0.5 * Math.cos(th), 0], 0.5, { friction: mu }, { orientation: [0, 0, Math.sin(th / 2), Math.cos(th / 2)] });
-      const c = world.components, e = slotOf(b);
+      const b = cube(
+        world,
+        [-0.5 * Math.sin(th), 0.5 * Math.cos(th), 0],
+        0.5,
+        { friction: mu },
+        { orientation: [0, 0, Math.sin(th / 2), Math.cos(th / 2)] },
+      );
+      const c = world.components,
+        e = slotOf(b);
       for (let s = 0; s < 30; s++) step(world);
       const v0 = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
       for (let s = 0; s < 60; s++) step(world);
       const v1 = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
       const a = (v1 - v0) / (60 * world.h);
-      if (deg === 35) expect(Math.abs(a - G * (Math.sin(th) - mu * Math.cos(th))) / (G * (Math.sin(th) - mu * Math.cos(th)))).toBeLessThan(1e-4);
+      if (deg === 35)
+        expect(Math.abs(a - G * (Math.sin(th) - mu * Math.cos(th))) / (G * (Math.sin(th) - mu * Math.cos(th)))).toBeLessThan(1e-4);
       else expect(v1).toBeLessThan(1e-5); // static friction holds it: at rest to solver rounding
       // It slides without tumbling.
       expect(Math.abs(c.AngularVelocity.z[e]!)).toBeLessThan(1e-6);
@@ -51,12 +66,17 @@ describe('3D boxes in the contact solver', () => {
     const world = world3();
     addPlane(world, { normal: [0, 1, 0], restitution: 0.5 });
     const b = cube(world, [0, 2, 0], 0.5, { restitution: 0.5 });
-    const c = world.components, e = slotOf(b);
-    let vin = 0, vout = 0;
+    const c = world.components,
+      e = slotOf(b);
+    let vin = 0,
+      vout = 0;
     for (let s = 0; s < 120; s++) {
       const before = c.Velocity.y[e]!;
       step(world);
-      if (before < 0 && c.Velocity.y[e]! > 0 && vout === 0) { vin = before; vout = c.Velocity.y[e]!; }
+      if (before < 0 && c.Velocity.y[e]! > 0 && vout === 0) {
+        vin = before;
+        vout = c.Velocity.y[e]!;
+      }
     }
     expect(vout).toBeGreaterThan(0);
     expect(Math.abs(vout / -vin - 0.5)).toBeLessThan(0.01);
@@ -72,8 +92,11 @@ describe('3D boxes in the contact solver', () => {
     addPlane(world, { normal: [0, 1, 0] });
     const boxes: number[] = [];
     for (let i = 0; i < 10; i++) boxes.push(cube(world, [0, 0.5 + i, 0]));
-    const c = world.components, top = slotOf(boxes[9]!);
-    let settled = 0, maxSide = 0, maxVertical = 0;
+    const c = world.components,
+      top = slotOf(boxes[9]!);
+    let settled = 0,
+      maxSide = 0,
+      maxVertical = 0;
     for (let s = 0; s < 10000; s++) {
       step(world);
       if (s === 120) settled = c.Position.y[top]!;
@@ -91,11 +114,14 @@ describe('3D boxes in the contact solver', () => {
     const world = world3(0);
     const a = cube(world, [0, 0, 0], 0.5, { restitution: 0.3 }, { velocity: [4, 0.5, 0] });
     const b = cube(world, [1.5, 0.3, 0.2], 0.4, { restitution: 0.3 });
-    const c = world.components, ea = slotOf(a), eb = slotOf(b);
-    const p = (): number[] => [0, 1, 2].map((k) => {
-      const v = [c.Velocity.x, c.Velocity.y, c.Velocity.z][k]!;
-      return c.Mass.value[ea]! * v[ea]! + c.Mass.value[eb]! * v[eb]!;
-    });
+    const c = world.components,
+      ea = slotOf(a),
+      eb = slotOf(b);
+    const p = (): number[] =>
+      [0, 1, 2].map((k) => {
+        const v = [c.Velocity.x, c.Velocity.y, c.Velocity.z][k]!;
+        return c.Mass.value[ea]! * v[ea]! + c.Mass.value[eb]! * v[eb]!;
+      });
     const p0 = p();
     for (let s = 0; s < 60; s++) step(world);
     expect(c.Velocity.x[eb]!).toBeGreaterThan(0.5); // they did collide
@@ -108,7 +134,8 @@ describe('3D boxes in the contact solver', () => {
     const wall = addBody(world, { position: [5, 0, 0], static: true });
     addShape3D(world, wall, { type: 'box', halfExtents: [0.025, 2, 2] });
     const b = cube(world, [0, 0, 0], 0.05, { density: 7800 }, { velocity: [300, 0, 0] });
-    const c = world.components, e = slotOf(b);
+    const c = world.components,
+      e = slotOf(b);
     for (let s = 0; s < 60; s++) {
       step(world);
       expect(c.Position.x[e]!).toBeLessThan(5 - 0.025 - 0.05 + 0.005);
@@ -125,7 +152,16 @@ describe('3D boxes in the contact solver', () => {
     const sph = addBody(world, { position: [6, 1, 0] });
     addShape3D(world, sph, { type: 'sphere', radius: 0.25 });
     const hull = addBody(world, { position: [9, 1, 0] });
-    addShape3D(world, hull, { type: 'hull', vertices: [[-0.5, 0, -0.5], [0.5, 0, -0.5], [0.5, 0, 0.5], [-0.5, 0, 0.5], [0, 0.6, 0]] }); // a square pyramid
+    addShape3D(world, hull, {
+      type: 'hull',
+      vertices: [
+        [-0.5, 0, -0.5],
+        [0.5, 0, -0.5],
+        [0.5, 0, 0.5],
+        [-0.5, 0, 0.5],
+        [0, 0.6, 0],
+      ],
+    }); // a square pyramid
     for (let s = 0; s < 240; s++) step(world);
     const c = world.components;
     // Rest heights: capsule radius, cylinder half height, sphere radius, pyramid centroid 0.6 / 4 above its base (2 mm for soft contact).

@@ -1,27 +1,40 @@
 import { describe, expect, it } from 'vitest';
-import {
-  addBody, addBox, addShape, createPhysicsWorld, setMass, setShapeFilter, shapesOf, step, type PhysicsWorld,
-} from '../../packages/physics/src/index.js';
 import { slotOf } from '../../packages/physics/src/handles.js';
+import {
+  addBody,
+  addBox,
+  addShape,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  setMass,
+  setShapeFilter,
+  shapesOf,
+  step,
+} from '../../packages/physics/src/index.js';
 
 const G = 9.81;
 
 /** A static incline: a long box turned by `theta`, its top surface through the origin. Returns where a box of half height hy rests, s m along the slope. */
 function incline(world: PhysicsWorld, theta: number, friction: number): (s: number, hy: number) => [number, number] {
-  const nx = -Math.sin(theta), ny = Math.cos(theta), tx = Math.cos(theta), ty = Math.sin(theta);
+  const nx = -Math.sin(theta),
+    ny = Math.cos(theta),
+    tx = Math.cos(theta),
+    ty = Math.sin(theta);
   addBox(world, { position: [-0.5 * nx, -0.5 * ny], halfExtents: [40, 0.5], angle: theta, static: true, friction });
   return (s, hy) => [s * tx + hy * nx, s * ty + hy * ny];
 }
 
 function along(world: PhysicsWorld, e: number, theta: number): { s: number; v: number } {
   const c = world.components;
-  const tx = Math.cos(theta), ty = Math.sin(theta);
+  const tx = Math.cos(theta),
+    ty = Math.sin(theta);
   return { s: c.Position.x[e]! * tx + c.Position.y[e]! * ty, v: c.Velocity.x[e]! * tx + c.Velocity.y[e]! * ty };
 }
 
 describe('boxes on an incline (Coulomb friction)', () => {
   it('slides with a = g (sin theta - mu cos theta)', () => {
-    const theta = Math.PI / 6, mu = 0.3;
+    const theta = Math.PI / 6,
+      mu = 0.3;
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     const at = incline(world, theta, mu);
     const box = slotOf(addBox(world, { position: at(0, 0.25), angle: theta, halfExtents: [0.25, 0.25], friction: mu }));
@@ -32,15 +45,27 @@ describe('boxes on an incline (Coulomb friction)', () => {
     const expected = -G * (Math.sin(theta) - mu * Math.cos(theta)); // down the slope: negative s
     // Velocity change over exactly 1 s. 1% covers the soft contact's settling (no angle error: the box stays flat).
     expect((a1.v - a0.v) / 1).toBeCloseTo(expected, 1);
-    expect(Math.abs((a1.v - a0.v) - expected) / Math.abs(expected)).toBeLessThan(0.01);
+    expect(Math.abs(a1.v - a0.v - expected) / Math.abs(expected)).toBeLessThan(0.01);
   });
   it('static friction holds it where kinetic friction alone would not (mu_k < tan theta < mu_s)', () => {
     // tan 20 deg = 0.364: with mu_k = 0.3 alone it would slide at g (sin - mu_k cos) = 0.59 m/s^2, 1.2 m in 2 s.
-    const theta = (20 * Math.PI) / 180, muK = 0.3, muS = 0.5;
+    const theta = (20 * Math.PI) / 180,
+      muK = 0.3,
+      muS = 0.5;
     const world = createPhysicsWorld({ gravity: [0, -G] });
-    const nx = -Math.sin(theta), ny = Math.cos(theta);
-    addBox(world, { position: [-0.5 * nx, -0.5 * ny], halfExtents: [40, 0.5], angle: theta, static: true, friction: muK, staticFriction: muS });
-    const box = slotOf(addBox(world, { position: [0.25 * nx, 0.25 * ny], angle: theta, halfExtents: [0.25, 0.25], friction: muK, staticFriction: muS }));
+    const nx = -Math.sin(theta),
+      ny = Math.cos(theta);
+    addBox(world, {
+      position: [-0.5 * nx, -0.5 * ny],
+      halfExtents: [40, 0.5],
+      angle: theta,
+      static: true,
+      friction: muK,
+      staticFriction: muS,
+    });
+    const box = slotOf(
+      addBox(world, { position: [0.25 * nx, 0.25 * ny], angle: theta, halfExtents: [0.25, 0.25], friction: muK, staticFriction: muS }),
+    );
     for (let i = 0; i < 120; i++) step(world);
     // Sequential impulses let a resting box creep a few mm/s until it sleeps; 1 cm in 2 s is far
     // below the 1.2 m of a slide.
@@ -50,7 +75,8 @@ describe('boxes on an incline (Coulomb friction)', () => {
     // tan 20 deg = 0.36 < mu = 0.6: static friction holds it exactly (Coulomb). Sleeping is off, so the
     // solver must hold it every step; before the manifold rows marked their bodies as pushed, each
     // step's free-flight correction dropped it 0.34 mm and it crept 35 mm in 600 steps.
-    const theta = (20 * Math.PI) / 180, mu = 0.6;
+    const theta = (20 * Math.PI) / 180,
+      mu = 0.6;
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     const at = incline(world, theta, mu);
     const box = slotOf(addBox(world, { position: at(0, 0.25), angle: theta, halfExtents: [0.25, 0.25], friction: mu }));
@@ -81,29 +107,52 @@ describe('impacts', () => {
     // across it; only gravity's torque about P over the impact step changes it (m g r_x h, counted here).
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     addBox(world, { position: [0, -0.5], halfExtents: [20, 0.5], static: true, friction: 2 });
-    const angle = 0.4, hx = 0.5, hy = 0.25;
+    const angle = 0.4,
+      hx = 0.5,
+      hy = 0.25;
     const box = slotOf(addBox(world, { position: [0, 2], angle, halfExtents: [hx, hy], friction: 2, velocity: [1, 0] }));
     const c = world.components;
-    const m = c.Mass.value[box]!, I = c.Inertia.value[box]!;
+    const m = c.Mass.value[box]!,
+      I = c.Inertia.value[box]!;
     const lowest = (): [number, number] => {
-      const a = c.Angle.value[box]!, ca = Math.cos(a), sa = Math.sin(a);
-      let bx = 0, by = Infinity;
-      for (const [lx, ly] of [[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]] as const) {
-        const x = c.Position.x[box]! + ca * lx - sa * ly, y = c.Position.y[box]! + sa * lx + ca * ly;
-        if (y < by) { by = y; bx = x; }
+      const a = c.Angle.value[box]!,
+        ca = Math.cos(a),
+        sa = Math.sin(a);
+      let bx = 0,
+        by = Infinity;
+      for (const [lx, ly] of [
+        [-hx, -hy],
+        [hx, -hy],
+        [hx, hy],
+        [-hx, hy],
+      ] as const) {
+        const x = c.Position.x[box]! + ca * lx - sa * ly,
+          y = c.Position.y[box]! + sa * lx + ca * ly;
+        if (y < by) {
+          by = y;
+          bx = x;
+        }
       }
       return [bx, by];
     };
     const LP = (px: number, py: number): number => {
-      const rx = c.Position.x[box]! - px, ry = c.Position.y[box]! - py;
+      const rx = c.Position.x[box]! - px,
+        ry = c.Position.y[box]! - py;
       return I * c.AngularVelocity.z[box]! + m * (rx * c.Velocity.y[box]! - ry * c.Velocity.x[box]!);
     };
     // Step until the corner is within the last step's travel of the ground, then take the impact step.
-    let before = 0, px = 0, rx = 0;
+    let before = 0,
+      px = 0,
+      rx = 0;
     for (let i = 0; i < 200; i++) {
       const [x, y] = lowest();
       const vy = c.Velocity.y[box]!;
-      if (y + vy * world.dt * 1.5 < 0) { px = x; before = LP(x, 0); rx = c.Position.x[box]! - x; break; }
+      if (y + vy * world.dt * 1.5 < 0) {
+        px = x;
+        before = LP(x, 0);
+        rx = c.Position.x[box]! - x;
+        break;
+      }
       step(world);
     }
     expect(before).not.toBe(0);
@@ -120,20 +169,34 @@ describe('impacts', () => {
     addBox(world, { position: [3.5, 5], halfExtents: [0.5, 6], static: true });
     const boxes: number[] = [];
     for (let i = 0; i < 30; i++) {
-      boxes.push(slotOf(addBox(world, { position: [-2 + (i % 5) * 1.0 + 0.1 * (i % 3), 1 + Math.floor(i / 5) * 1.1], angle: 0.3 * (i % 4), halfExtents: [0.4, 0.3] })));
+      boxes.push(
+        slotOf(
+          addBox(world, {
+            position: [-2 + (i % 5) * 1.0 + 0.1 * (i % 3), 1 + Math.floor(i / 5) * 1.1],
+            angle: 0.3 * (i % 4),
+            halfExtents: [0.4, 0.3],
+          }),
+        ),
+      );
     }
     const c = world.components;
     const energy = (): number => {
       let e = 0;
       for (const b of boxes) {
         const m = c.Mass.value[b]!;
-        e += 0.5 * m * (c.Velocity.x[b]! ** 2 + c.Velocity.y[b]! ** 2) + 0.5 * c.Inertia.value[b]! * c.AngularVelocity.z[b]! ** 2 + m * G * c.Position.y[b]!;
+        e +=
+          0.5 * m * (c.Velocity.x[b]! ** 2 + c.Velocity.y[b]! ** 2) +
+          0.5 * c.Inertia.value[b]! * c.AngularVelocity.z[b]! ** 2 +
+          m * G * c.Position.y[b]!;
       }
       return e;
     };
     const e0 = energy();
     let max = -Infinity;
-    for (let i = 0; i < 240; i++) { step(world); max = Math.max(max, energy()); }
+    for (let i = 0; i < 240; i++) {
+      step(world);
+      max = Math.max(max, energy());
+    }
     // Push-out of overlaps may lift a box by millimetres; 1e-3 of the start energy allows that and nothing more.
     expect(max).toBeLessThan(e0 + 1e-3 * Math.abs(e0));
     expect(energy()).toBeLessThan(e0 - 0.05 * Math.abs(e0)); // and it did fall and settle
@@ -153,22 +216,43 @@ describe('impacts', () => {
     // one it hits and let the box slip over the end. Passing through: the box's centre is ever beyond
     // the wall's far face (in the wall's frame) within the wall's length.
     const passed: string[] = [];
-    for (const dynamic of [false, true]) for (const deg of [-45, 0, 60]) for (const phase of [0, 0.37]) for (const spin of [0, 30]) {
-      const world = createPhysicsWorld({ gravity: [0, 0], sleep: false, capacity: 8 });
-      const wall = slotOf(addBox(world, dynamic ? { position: [10, 0], halfExtents: [0.025, 3], density: 1 } : { position: [10, 0], halfExtents: [0.025, 3], static: true }));
-      const a = (deg * Math.PI) / 180, back = 5 + 5 * phase;
-      const bullet = slotOf(addBox(world, {
-        position: [9.9 - back * Math.cos(a), 0.3 - back * Math.sin(a)], halfExtents: [0.05, 0.05],
-        velocity: [300 * Math.cos(a), 300 * Math.sin(a)], angularVelocity: spin,
-      }));
-      const c = world.components;
-      for (let i = 0; i < 8; i++) {
-        step(world);
-        const w = c.Angle.value[wall]!, rx = c.Position.x[bullet]! - c.Position.x[wall]!, ry = c.Position.y[bullet]! - c.Position.y[wall]!;
-        const lx = Math.cos(w) * rx + Math.sin(w) * ry, ly = -Math.sin(w) * rx + Math.cos(w) * ry;
-        if (lx > 0.025 && Math.abs(ly) < 3) { passed.push(`${dynamic ? 'dynamic' : 'static'} ${deg} deg, phase ${phase}, spin ${spin}`); break; }
-      }
-    }
+    for (const dynamic of [false, true])
+      for (const deg of [-45, 0, 60])
+        for (const phase of [0, 0.37])
+          for (const spin of [0, 30]) {
+            const world = createPhysicsWorld({ gravity: [0, 0], sleep: false, capacity: 8 });
+            const wall = slotOf(
+              addBox(
+                world,
+                dynamic
+                  ? { position: [10, 0], halfExtents: [0.025, 3], density: 1 }
+                  : { position: [10, 0], halfExtents: [0.025, 3], static: true },
+              ),
+            );
+            const a = (deg * Math.PI) / 180,
+              back = 5 + 5 * phase;
+            const bullet = slotOf(
+              addBox(world, {
+                position: [9.9 - back * Math.cos(a), 0.3 - back * Math.sin(a)],
+                halfExtents: [0.05, 0.05],
+                velocity: [300 * Math.cos(a), 300 * Math.sin(a)],
+                angularVelocity: spin,
+              }),
+            );
+            const c = world.components;
+            for (let i = 0; i < 8; i++) {
+              step(world);
+              const w = c.Angle.value[wall]!,
+                rx = c.Position.x[bullet]! - c.Position.x[wall]!,
+                ry = c.Position.y[bullet]! - c.Position.y[wall]!;
+              const lx = Math.cos(w) * rx + Math.sin(w) * ry,
+                ly = -Math.sin(w) * rx + Math.cos(w) * ry;
+              if (lx > 0.025 && Math.abs(ly) < 3) {
+                passed.push(`${dynamic ? 'dynamic' : 'static'} ${deg} deg, phase ${phase}, spin ${spin}`);
+                break;
+              }
+            }
+          }
     expect(passed).toEqual([]);
   });
   it('a fast box does not pass through a thin dynamic plank at rest', () => {
@@ -180,7 +264,7 @@ describe('impacts', () => {
     for (let i = 0; i < 10; i++) step(world);
     const c = world.components;
     expect(c.Position.x[box]!).toBeLessThan(c.Position.x[plank]!);
-    expect(c.Velocity.x[plank]!).toBeGreaterThan(0.5 * (0.04 * 120) / 1.04);
+    expect(c.Velocity.x[plank]!).toBeGreaterThan((0.5 * (0.04 * 120)) / 1.04);
   });
   it('a kinematic platform lifts a box', () => {
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
@@ -195,7 +279,7 @@ describe('impacts', () => {
 });
 
 describe('kinematic spin', () => {
-  it('a box on top of a spinning kinematic disc is carried along at the disc\'s surface speed (v + w x r)', () => {
+  it("a box on top of a spinning kinematic disc is carried along at the disc's surface speed (v + w x r)", () => {
     // Disc of radius 1 m spinning at w = 2 rad/s (counter-clockwise): its top moves at w R = 2 m/s to
     // the left. Friction (mu = 1) drags the box from rest up to that speed in about w R / (mu g) = 0.2 s.
     // Without the spin in the contact rows the disc's surface looks still and the box just sits there.
@@ -231,11 +315,16 @@ describe('filtering, sensors and events', () => {
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     const sensor = slotOf(addBox(world, { position: [0, 0], halfExtents: [2, 0.5], static: true, sensor: true }));
     const box = slotOf(addBox(world, { position: [0, 3], halfExtents: [0.25, 0.25] }));
-    let begins = 0, ends = 0;
+    let begins = 0,
+      ends = 0;
     const ev = world.collision.shapes.events;
     for (let i = 0; i < 90; i++) {
       step(world);
-      for (let k = 0; k < ev.sensorBegin.count; k++) { begins++; expect(ev.sensorBegin.shapeA[k]).toBe(sensor); expect(ev.sensorBegin.bodyB[k]).toBe(box); }
+      for (let k = 0; k < ev.sensorBegin.count; k++) {
+        begins++;
+        expect(ev.sensorBegin.shapeA[k]).toBe(sensor);
+        expect(ev.sensorBegin.bodyB[k]).toBe(box);
+      }
       ends += ev.sensorEnd.count;
     }
     expect(begins).toBe(1);
@@ -248,7 +337,9 @@ describe('filtering, sensors and events', () => {
     const ground = slotOf(addBox(world, { position: [0, -0.5], halfExtents: [5, 0.5], static: true }));
     const box = slotOf(addBox(world, { position: [0, 2.5], halfExtents: [0.5, 0.5] }));
     const ev = world.collision.shapes.events;
-    let begins = 0, ends = 0, speed = 0;
+    let begins = 0,
+      ends = 0,
+      speed = 0;
     for (let i = 0; i < 120; i++) {
       step(world);
       for (let k = 0; k < ev.begin.count; k++) {
@@ -264,7 +355,10 @@ describe('filtering, sensors and events', () => {
     // Dropped from 2 m: v = sqrt(2 g h) = 6.26 m/s; one step's gravity (0.16 m/s) either way.
     expect(Math.abs(speed - Math.sqrt(2 * G * 2))).toBeLessThan(G / 60);
     world.components.Velocity.y[box] = 5;
-    for (let i = 0; i < 10; i++) { step(world); ends += ev.end.count; }
+    for (let i = 0; i < 10; i++) {
+      step(world);
+      ends += ev.end.count;
+    }
     expect(ends).toBe(1);
   });
 });
@@ -305,10 +399,31 @@ describe('shapes: mass, compounds, rolling, bad input', () => {
     const world = createPhysicsWorld();
     const body = slotOf(addBody(world, { position: [0, 0] }));
     const alive = world.entityIndex.aliveCount;
-    expect(() => addShape(world, body, { type: 'polygon', vertices: [[0, 0], [1, 0]] })).toThrow('addShape: vertices must hold 3 to 8 points, got 2');
-    expect(() => addShape(world, body, { type: 'polygon', vertices: [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]] })).toThrow(/addShape: vertices must form a convex polygon, got one that is not convex at \[1,0.5\]/);
+    expect(() =>
+      addShape(world, body, {
+        type: 'polygon',
+        vertices: [
+          [0, 0],
+          [1, 0],
+        ],
+      }),
+    ).toThrow('addShape: vertices must hold 3 to 8 points, got 2');
+    expect(() =>
+      addShape(world, body, {
+        type: 'polygon',
+        vertices: [
+          [0, 0],
+          [2, 0],
+          [1, 0.5],
+          [2, 2],
+          [0, 2],
+        ],
+      }),
+    ).toThrow(/addShape: vertices must form a convex polygon, got one that is not convex at \[1,0.5\]/);
     expect(() => addShape(world, body, { type: 'box', halfExtents: [1, 0] })).toThrow('addShape: halfExtents[1] must be > 0, got 0');
-    expect(() => addShape(world, body, { type: 'box', halfExtents: [1, 1], density: -1 })).toThrow('addShape: density must be >= 0, got -1');
+    expect(() => addShape(world, body, { type: 'box', halfExtents: [1, 1], density: -1 })).toThrow(
+      'addShape: density must be >= 0, got -1',
+    );
     expect(() => addShape(world, body, { type: 'circle', radius: 0.5, category: 1.5 })).toThrow(/addShape: category must be an integer/);
     expect(() => addBox(world, { halfExtents: [0, 1] })).toThrow('addBox: halfExtents[0] must be > 0, got 0');
     expect(() => setShapeFilter(world, body, { mask: -1 })).toThrow(/setShapeFilter: shape must be a shape/);
@@ -328,11 +443,14 @@ describe('queries', () => {
     // Hand-computed: the box's left face at x = 4, the ball's left point at x = 9.5, the capsule's side at x = 14.75.
     const first = rayCast(world, [0, 0], [20, 0])!;
     expect(first.shape).toBe(box);
-    expect(first.x).toBeCloseTo(4, 12); expect(first.fraction).toBeCloseTo(0.2, 12);
-    expect(first.nx).toBeCloseTo(-1, 12); expect(first.ny).toBeCloseTo(0, 12);
+    expect(first.x).toBeCloseTo(4, 12);
+    expect(first.fraction).toBeCloseTo(0.2, 12);
+    expect(first.nx).toBeCloseTo(-1, 12);
+    expect(first.ny).toBeCloseTo(0, 12);
     const all = rayCastAll(world, [0, 0], [20, 0]);
     expect(all.map((h) => h.shape)).toEqual([box, ball, capShape]);
-    expect(all[1]!.x).toBeCloseTo(9.5, 12); expect(all[2]!.x).toBeCloseTo(14.75, 12);
+    expect(all[1]!.x).toBeCloseTo(9.5, 12);
+    expect(all[2]!.x).toBeCloseTo(14.75, 12);
     // A ray over the top of the box (y = 1.5) misses it and grazes nothing else but the capsule's cap (r 0.25 at y = 1: misses at 1.5).
     expect(rayCast(world, [0, 1.5], [20, 0])).toBeNull();
     // The capsule's upper cap: a ray down from above hits it at y = 1.25.
@@ -349,7 +467,10 @@ describe('shapes against static geometry', () => {
   it('a box rests on a plane, a capsule on a segment, a ball on a box, a triangle on the boundary box floor', async () => {
     const { addPlane, addSegment, setBoundary } = await import('../../packages/physics/src/index.js');
     // Resting heights from the geometry; 5 mm covers the soft contacts' sink under their own weight.
-    const settle = (world: PhysicsWorld): Float64Array => { for (let i = 0; i < 120; i++) step(world); return world.components.Position.y; };
+    const settle = (world: PhysicsWorld): Float64Array => {
+      for (let i = 0; i < 120; i++) step(world);
+      return world.components.Position.y;
+    };
     let world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     addPlane(world, { normal: [0, 1], point: [0, 0] });
     const box = slotOf(addBox(world, { position: [0, 0.6], halfExtents: [0.5, 0.5] }));
@@ -368,7 +489,14 @@ describe('shapes against static geometry', () => {
     world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     setBoundary(world, { min: [20, -1], max: [30, 10] });
     const tri = slotOf(addBody(world, { position: [25, 0] }));
-    addShape(world, tri, { type: 'polygon', vertices: [[-0.5, -0.3], [0.5, -0.3], [0, 0.6]] });
+    addShape(world, tri, {
+      type: 'polygon',
+      vertices: [
+        [-0.5, -0.3],
+        [0.5, -0.3],
+        [0, 0.6],
+      ],
+    });
     // Its centroid is 0.3 m above its base.
     expect(Math.abs(settle(world)[tri]! - (-1 + 0.3))).toBeLessThan(5e-3);
   });

@@ -1,11 +1,38 @@
-import { describe, expect, test } from 'vitest';
-import { hasComponent } from 'bitecs';
 import {
-  addBody, addEmitter, addFluidRegion, addMagneticField, addSpring, addSystem, createPhysicsWorld, INTEGRATOR_NAMES,
-  MAX_EMITTER_RATE, MAX_TIME_STEP, NonFiniteStateError, removeBody, setAngularDamping, setBoundary, setBuoyancy,
-  setCentralForce, setDrag, setEmitterEnabled, setEmitterRate, setMaterial, setRadius, setTimeStep, setVelocity, setWind,
-  addSegment, slotOf, step, STAGES, type IntegratorName, type PhysicsWorld, type StageName,
+  addBody,
+  addEmitter,
+  addFluidRegion,
+  addMagneticField,
+  addSegment,
+  addSpring,
+  addSystem,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  MAX_EMITTER_RATE,
+  MAX_TIME_STEP,
+  NonFiniteStateError,
+  type PhysicsWorld,
+  removeBody,
+  STAGES,
+  type StageName,
+  setAngularDamping,
+  setBoundary,
+  setBuoyancy,
+  setCentralForce,
+  setDrag,
+  setEmitterEnabled,
+  setEmitterRate,
+  setMaterial,
+  setRadius,
+  setTimeStep,
+  setVelocity,
+  setWind,
+  slotOf,
+  step,
 } from '@bitphysics/physics';
+import { hasComponent } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 
 /** k h / m from 1e-6 to 1e6, one value a decade. */
 const RATES = Array.from({ length: 13 }, (_, i) => 10 ** (i - 6));
@@ -30,7 +57,8 @@ interface Probe {
 function probe(law: Law, integrator: IntegratorName, lambda: number): Probe {
   const world = createPhysicsWorld({ gravity: [0, 0], dt: H, integrator });
   const c = world.components;
-  const m = 2, v0 = 5;
+  const m = 2,
+    v0 = 5;
   let b: number;
   if (law === 'linear') b = addBody(world, { velocity: [3, 4], mass: m, linearDrag: (lambda * m) / H });
   else if (law === 'quadratic') b = addBody(world, { velocity: [3, 4], mass: m, quadraticDrag: (lambda * m) / (H * v0) });
@@ -50,14 +78,19 @@ function probe(law: Law, integrator: IntegratorName, lambda: number): Probe {
     const inertia = 1 / c.Inertia.inv[b]!;
     setAngularDamping(world, b, (lambda * inertia) / H);
   }
-  const windX = law === 'quadratic-wind' ? 1 : 0, windY = law === 'quadratic-wind' ? -2 : 0;
+  const windX = law === 'quadratic-wind' ? 1 : 0,
+    windY = law === 'quadratic-wind' ? -2 : 0;
   return {
     world,
     // A spring damps only the velocity along it, u = (0.6, 0.8): the other component stays (at rounding).
-    read: () => law === 'angular' ? [c.AngularVelocity.z[b]!, 0]
-      : law === 'spring' ? [(0.6 * c.Velocity.x[b]! + 0.8 * c.Velocity.y[b]!) * 0.6, (0.6 * c.Velocity.x[b]! + 0.8 * c.Velocity.y[b]!) * 0.8]
-      : [c.Velocity.x[b]! - windX, c.Velocity.y[b]! - windY],
-    where: () => law === 'angular' ? [c.Angle.value[b]!, 0] : [c.Position.x[b]! - windX * world.time, c.Position.y[b]! - windY * world.time],
+    read: () =>
+      law === 'angular'
+        ? [c.AngularVelocity.z[b]!, 0]
+        : law === 'spring'
+          ? [(0.6 * c.Velocity.x[b]! + 0.8 * c.Velocity.y[b]!) * 0.6, (0.6 * c.Velocity.x[b]! + 0.8 * c.Velocity.y[b]!) * 0.8]
+          : [c.Velocity.x[b]! - windX, c.Velocity.y[b]! - windY],
+    where: () =>
+      law === 'angular' ? [c.Angle.value[b]!, 0] : [c.Position.x[b]! - windX * world.time, c.Position.y[b]! - windY * world.time],
   };
 }
 
@@ -117,7 +150,9 @@ describe('dissipative forces cannot reverse or amplify a velocity at any step si
   test('under gravity with linear drag, no scheme exceeds the terminal speed m g / k at any step size', () => {
     for (const integrator of INTEGRATOR_NAMES) {
       for (const lambda of RATES) {
-        const m = 2, g = 9.81, k = (lambda * m) / H;
+        const m = 2,
+          g = 9.81,
+          k = (lambda * m) / H;
         const world = createPhysicsWorld({ gravity: [0, -g], dt: H, integrator });
         const b = addBody(world, { mass: m, linearDrag: k });
         const vt = (m * g) / k;
@@ -166,7 +201,8 @@ describe('dissipative forces cannot reverse or amplify a velocity at any step si
           const b = addBody(world, { mass: 1, inertia: moments, angularVelocity: w0 });
           const k = lambda / H;
           setAngularDamping(world, b, k);
-          const W = world.components.AngularVelocity, s = slotOf(b);
+          const W = world.components.AngularVelocity,
+            s = slotOf(b);
           const read = () => [W.x[s]!, W.y[s]!, W.z[s]!][axis]!;
           let w = read();
           for (let n = 1; n <= STEPS; n++) {
@@ -215,10 +251,26 @@ describe('a non-finite state stops the step at the end of the stage that wrote i
   const values = [NaN, Infinity, -Infinity];
   const motion: Record<2 | 3, string[]> = {
     2: ['Position.x', 'Position.y', 'Velocity.x', 'Velocity.y', 'Angle.value', 'AngularVelocity.z'],
-    3: ['Position.x', 'Position.y', 'Position.z', 'Velocity.x', 'Velocity.y', 'Velocity.z', 'AngularVelocity.x',
-      'AngularVelocity.y', 'AngularVelocity.z', 'Orientation.x', 'Orientation.y', 'Orientation.z', 'Orientation.w'],
+    3: [
+      'Position.x',
+      'Position.y',
+      'Position.z',
+      'Velocity.x',
+      'Velocity.y',
+      'Velocity.z',
+      'AngularVelocity.x',
+      'AngularVelocity.y',
+      'AngularVelocity.z',
+      'Orientation.x',
+      'Orientation.y',
+      'Orientation.z',
+      'Orientation.w',
+    ],
   };
-  const forces: Record<2 | 3, string[]> = { 2: ['Force.x', 'Force.y', 'Torque.z'], 3: ['Force.x', 'Force.y', 'Force.z', 'Torque.x', 'Torque.y', 'Torque.z'] };
+  const forces: Record<2 | 3, string[]> = {
+    2: ['Force.x', 'Force.y', 'Torque.z'],
+    3: ['Force.x', 'Force.y', 'Force.z', 'Torque.x', 'Torque.y', 'Torque.z'],
+  };
   // Every stage that runs systems; clearForces only zeroes the accumulators.
   const stages = STAGES.filter((s) => s !== 'clearForces');
 
@@ -229,9 +281,15 @@ describe('a non-finite state stops the step at the end of the stage that wrote i
     const [component, key] = field.split('.') as [string, string];
     const store = (world.components as unknown as Record<string, Record<string, Float64Array>>)[component]![key]!;
     for (let i = 0; i < 3; i++) step(world);
-    addSystem(world, stage, () => { store[b] = value; });
+    addSystem(world, stage, () => {
+      store[b] = value;
+    });
     let caught: unknown;
-    try { step(world); } catch (e) { caught = e; }
+    try {
+      step(world);
+    } catch (e) {
+      caught = e;
+    }
     const where = `${dimensions}D ${field} = ${value} in stage ${stage}`;
     expect(caught, where).toBeInstanceOf(NonFiniteStateError);
     const err = caught as NonFiniteStateError;
@@ -258,7 +316,13 @@ describe('a non-finite state stops the step at the end of the stage that wrote i
     const world = createPhysicsWorld({ gravity: [0, 0] });
     const b = addBody(world, { position: [1.7e308, 0], velocity: [1.7e308, 0], mass: 1 });
     let caught: unknown;
-    for (let i = 0; i < 10 && caught === undefined; i++) { try { step(world); } catch (e) { caught = e; } }
+    for (let i = 0; i < 10 && caught === undefined; i++) {
+      try {
+        step(world);
+      } catch (e) {
+        caught = e;
+      }
+    }
     expect(caught).toBeInstanceOf(NonFiniteStateError);
     expect((caught as NonFiniteStateError).field).toBe('Position.x');
     expect((caught as NonFiniteStateError).entity).toBe(b);
@@ -274,7 +338,11 @@ describe('a non-finite state stops the step at the end of the stage that wrote i
       // Written straight into the store between steps: the integrator's own check finds it.
       world.components.Velocity.x[slotOf(b)] = NaN;
       let caught: unknown;
-      try { step(world); } catch (e) { caught = e; }
+      try {
+        step(world);
+      } catch (e) {
+        caught = e;
+      }
       expect(caught, integrator).toBeInstanceOf(NonFiniteStateError);
       expect((caught as NonFiniteStateError).entity, integrator).toBe(b);
       expect((caught as NonFiniteStateError).field, integrator).toBe('Velocity.x');
@@ -346,7 +414,11 @@ describe('emitters: spawns per step are capped, the excess counted as dropped; t
     world.dt = 1e308;
     // Particles already alive fly to an infinite position: the step stops with the error, or returns.
     let caught: unknown;
-    try { step(world); } catch (e) { caught = e; }
+    try {
+      step(world);
+    } catch (e) {
+      caught = e;
+    }
     expect(caught === undefined || caught instanceof NonFiniteStateError).toBe(true);
   });
 });
@@ -370,11 +442,17 @@ describe('issue 15 regressions', () => {
     for (let i = 0; i < 10; i++) addBody(world, { position: [-3 - i, 0], radius: 0.1, mass: 1 });
     setCentralForce(world, b, { centre: [0, 0], k: 1e6, n: 4 });
     let stopped: unknown;
-    for (let i = 0; i < 200 && stopped === undefined; i++) { try { step(world); } catch (e) { stopped = e; } }
+    for (let i = 0; i < 200 && stopped === undefined; i++) {
+      try {
+        step(world);
+      } catch (e) {
+        stopped = e;
+      }
+    }
     expect(stopped === undefined || stopped instanceof NonFiniteStateError).toBe(true);
   });
 
-  test('a removed ball\'s handle is refused by setVelocity and cannot move the next body in its slot', () => {
+  test("a removed ball's handle is refused by setVelocity and cannot move the next body in its slot", () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
     const old = addBody(world, { mass: 1 });
     removeBody(world, old);
@@ -384,7 +462,7 @@ describe('issue 15 regressions', () => {
     expect(world.components.Velocity.x[slotOf(next)]).toBe(0);
   });
 
-  test('setRadius on a removed ball\'s handle cannot turn the magnetic field now in its slot into a ball', () => {
+  test("setRadius on a removed ball's handle cannot turn the magnetic field now in its slot into a ball", () => {
     const world = createPhysicsWorld({ gravity: [0, 0] });
     const old = addBody(world, { mass: 1, radius: 0.5 });
     removeBody(world, old);
@@ -419,7 +497,9 @@ describe('issue 15 regressions', () => {
     const a = addBody(world, { mass: 1 });
     expect(() => addBody(world, { mass: 1, static: 'yes' as never })).toThrow(/^addBody: static must be/);
     expect(() => addBody(world, { mass: 1, radius: 0.5, rotates: 'false' as never })).toThrow(/^addBody: rotates must be/);
-    expect(() => addSpring(world, { anchor: [0, 0], b: a, stiffness: 1, oneSided: 'false' as never })).toThrow(/^addSpring: oneSided must be/);
+    expect(() => addSpring(world, { anchor: [0, 0], b: a, stiffness: 1, oneSided: 'false' as never })).toThrow(
+      /^addSpring: oneSided must be/,
+    );
     const em = addEmitter(world, { rate: 10 });
     expect(() => setEmitterEnabled(world, em, 'false' as never)).toThrow(/^setEmitterEnabled: enabled must be/);
     expect(world.components.Emitter.enabled[slotOf(em)]).toBe(1);
@@ -435,12 +515,22 @@ describe('issue 15 regressions', () => {
   test('100 balls at dt = 1/10 and up to 140 m/s stay in the box', () => {
     const world = createPhysicsWorld({ gravity: [0, -9.81], dt: 1 / 10, capacity: 200 });
     setBoundary(world, { min: [0, 0], max: [20, 20], restitution: 0.9 });
-    const r = 0.3, balls: number[] = [];
+    const r = 0.3,
+      balls: number[] = [];
     let seed = 1;
-    const rand = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+    const rand = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
     for (let i = 0; i < 100; i++) {
-      const a = rand() * 2 * Math.PI, v = 140 * rand();
-      balls.push(addBody(world, { position: [1 + (i % 10) * 1.8, 1 + Math.floor(i / 10) * 1.8], velocity: [v * Math.cos(a), v * Math.sin(a)], radius: r, mass: 1, restitution: 0.9 }));
+      const a = rand() * 2 * Math.PI,
+        v = 140 * rand();
+      balls.push(
+        addBody(world, {
+          position: [1 + (i % 10) * 1.8, 1 + Math.floor(i / 10) * 1.8],
+          velocity: [v * Math.cos(a), v * Math.sin(a)],
+          radius: r,
+          mass: 1,
+          restitution: 0.9,
+        }),
+      );
     }
     const P = world.components.Position;
     let worst = 0;
@@ -465,7 +555,12 @@ describe('issue 15 regressions', () => {
       addSegment(w, { a: [-100, 0], b: [100, 0] });
       const speed = 5 + trial * 4;
       const angle = (trial * 0.37) % 1.2;
-      const ball = addBody(w, { position: [0, 3], velocity: [speed * Math.sin(angle), -speed * Math.cos(angle)], radius: 0.25, restitution: 0.5 });
+      const ball = addBody(w, {
+        position: [0, 3],
+        velocity: [speed * Math.sin(angle), -speed * Math.cos(angle)],
+        radius: 0.25,
+        restitution: 0.5,
+      });
       for (let i = 0; i < 20; i++) {
         step(w);
         lowest = Math.min(lowest, w.components.Position.y[slotOf(ball)]!);

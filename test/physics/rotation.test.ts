@@ -1,26 +1,38 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addPlane, addSystem, angularMomentum, applyForceAtPoint, createPhysicsWorld, inertiaOfSolidBox, kineticEnergy,
-  linearMomentum, rotateVectorInverse, step, stepMany,
+  addBody,
+  addPlane,
+  addSystem,
+  angularMomentum,
+  applyForceAtPoint,
+  createPhysicsWorld,
+  inertiaOfSolidBox,
+  kineticEnergy,
+  linearMomentum,
+  rotateVectorInverse,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /** The body-frame direction of world axis `axis` for entity e: where that axis points in the body. */
 function bodyAxisInWorld(world: ReturnType<typeof createPhysicsWorld>, e: number, axis: 0 | 1 | 2): [number, number, number] {
   // World direction of the body's own axis: rotate the unit axis by q.
   const q = world.components.Orientation;
-  const v = [0, 0, 0]; v[axis] = 1;
+  const v = [0, 0, 0];
+  v[axis] = 1;
   const out = new Float64Array(3);
   rotateVectorInverse(-q.x[e]!, -q.y[e]!, -q.z[e]!, q.w[e]!, v[0]!, v[1]!, v[2]!, out);
   return [out[0]!, out[1]!, out[2]!];
 }
 
-describe('3D rigid rotation (Euler\'s equations)', () => {
+describe("3D rigid rotation (Euler's equations)", () => {
   const I = inertiaOfSolidBox(2, [0.4, 1, 1.6]); // three distinct principal moments
 
   test('a torque-free asymmetric body conserves angular momentum and kinetic energy (RK4, 1e-9 over 10 s)', () => {
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], dt: 1e-3, integrator: 'rk4' });
     const b = addBody(world, { mass: 2, inertia: I, angularVelocity: [0.3, 2, -0.7] });
-    const L0 = Array.from(angularMomentum(world)), K0 = kineticEnergy(world);
+    const L0 = Array.from(angularMomentum(world)),
+      K0 = kineticEnergy(world);
     stepMany(world, 10000);
     const L = angularMomentum(world);
     for (let i = 0; i < 3; i++) expect(Math.abs(L[i]! - L0[i]!)).toBeLessThan(1e-9 * Math.hypot(...L0));
@@ -34,10 +46,15 @@ describe('3D rigid rotation (Euler\'s equations)', () => {
    * perturbation; over 20 s the intermediate axis reverses (its world direction ends up pointing
    * against where it started at some time), while the other two stay within 1 degree of the start.
    */
-  for (const [axis, flips] of [[0, false], [1, true], [2, false]] as const) {
+  for (const [axis, flips] of [
+    [0, false],
+    [1, true],
+    [2, false],
+  ] as const) {
     test(`spin about the ${['smallest', 'intermediate', 'largest'][axis]} principal axis ${flips ? 'flips' : 'stays stable'}`, () => {
       const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], dt: 1e-3, integrator: 'rk4' });
-      const w = [1e-3, 1e-3, 1e-3]; w[axis] = 5;
+      const w = [1e-3, 1e-3, 1e-3];
+      w[axis] = 5;
       const b = addBody(world, { mass: 2, inertia: I, angularVelocity: w });
       const start = bodyAxisInWorld(world, b, axis);
       let minDot = 1;
@@ -58,8 +75,10 @@ describe('3D rigid rotation (Euler\'s equations)', () => {
     // and keeps the kinetic energy within its O(h^2) bounded error (measured 6.4e-7 here; bound 1e-5).
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0] });
     addBody(world, { mass: 1, inertia: [1, 2, 3], angularVelocity: [1, 1, 1] });
-    const K0 = kineticEnergy(world), L0 = Math.hypot(...angularMomentum(world));
-    let worstK = 0, worstL = 0;
+    const K0 = kineticEnergy(world),
+      L0 = Math.hypot(...angularMomentum(world));
+    let worstK = 0,
+      worstL = 0;
     for (let i = 0; i < 100_000; i++) {
       step(world);
       worstK = Math.max(worstK, Math.abs(kineticEnergy(world) - K0) / K0);
@@ -87,7 +106,9 @@ describe('3D rigid rotation (Euler\'s equations)', () => {
     const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], dt: 1e-3, integrator: 'rk4' });
     const b = addBody(world, { mass: 1, inertia: 0.5 });
     // F = (0, 0, 2) N at r = (1, 0, 0): tau = r x F = (0, -2, 0); alpha = tau / I = (0, -4, 0).
-    addSystem(world, 'forces', (w) => applyForceAtPoint(w, b, [0, 0, 2], [w.components.Position.x[b]! + 1, w.components.Position.y[b]!, w.components.Position.z[b]!]));
+    addSystem(world, 'forces', (w) =>
+      applyForceAtPoint(w, b, [0, 0, 2], [w.components.Position.x[b]! + 1, w.components.Position.y[b]!, w.components.Position.z[b]!]),
+    );
     stepMany(world, 100);
     expect(world.components.AngularVelocity.y[b]!).toBeCloseTo(-0.4, 12);
     expect(world.components.Velocity.z[b]!).toBeCloseTo(0.2, 12);
@@ -114,20 +135,29 @@ describe('3D rigid rotation (Euler\'s equations)', () => {
    * (Implicit Euler is left out: it damps the motion by design, see implicitGyroscopicStep.)
    */
   test('intermediate-axis flip period matches 4 K(k) / lambda within 1 % under every explicit scheme at dt 1/60', () => {
-    const I1 = 1, I2 = 2, I3 = 3, w0 = [0.01, 2, 0.01] as const;
-    const L2 = (I1 * w0[0]) ** 2 + (I2 * w0[1]) ** 2 + (I3 * w0[2]) ** 2, E2 = I1 * w0[0] ** 2 + I2 * w0[1] ** 2 + I3 * w0[2] ** 2;
+    const I1 = 1,
+      I2 = 2,
+      I3 = 3,
+      w0 = [0.01, 2, 0.01] as const;
+    const L2 = (I1 * w0[0]) ** 2 + (I2 * w0[1]) ** 2 + (I3 * w0[2]) ** 2,
+      E2 = I1 * w0[0] ** 2 + I2 * w0[1] ** 2 + I3 * w0[2] ** 2;
     expect(L2).toBeGreaterThan(E2 * I2);
     const lambda = Math.sqrt(((I3 - I2) * (L2 - E2 * I1)) / (I1 * I2 * I3));
     const k2 = ((I2 - I1) * (E2 * I3 - L2)) / ((I3 - I2) * (L2 - E2 * I1));
-    let a = 1, b = Math.sqrt(1 - k2);
+    let a = 1,
+      b = Math.sqrt(1 - k2);
     for (let i = 0; i < 30; i++) [a, b] = [(a + b) / 2, Math.sqrt(a * b)]; // K(k) = pi / (2 AGM(1, k'))
     const exact = (4 * (Math.PI / (2 * a))) / lambda;
     const wb = new Float64Array(3);
     for (const integrator of ['explicit-euler', 'semi-implicit-euler', 'rk2', 'rk4', 'position-verlet', 'velocity-verlet'] as const) {
       const world = createPhysicsWorld({ dimensions: 3, gravity: [0, 0, 0], integrator });
       const e = addBody(world, { mass: 1, inertia: [I1, I2, I3], angularVelocity: [...w0] });
-      const q = world.components.Orientation, W = world.components.AngularVelocity;
-      const bodyWy = (): number => { rotateVectorInverse(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, W.x[e]!, W.y[e]!, W.z[e]!, wb); return wb[1]!; };
+      const q = world.components.Orientation,
+        W = world.components.AngularVelocity;
+      const bodyWy = (): number => {
+        rotateVectorInverse(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, W.x[e]!, W.y[e]!, W.z[e]!, wb);
+        return wb[1]!;
+      };
       const crossings: number[] = [];
       let prev = bodyWy();
       for (let i = 1; i <= 3600; i++) {
@@ -152,22 +182,32 @@ describe('rolling', () => {
    */
   for (const dimensions of [2, 3] as const) {
     test(`a ${dimensions === 3 ? 'sphere' : 'disc'} rolling down an incline reaches ${dimensions === 3 ? 'sqrt(10 g h / 7)' : 'sqrt(4 g h / 3)'}`, () => {
-      const g = 9.81, theta = Math.PI / 6, r = 0.5;
+      const g = 9.81,
+        theta = Math.PI / 6,
+        r = 0.5;
       const world = createPhysicsWorld({ dimensions, gravity: dimensions === 3 ? [0, -g, 0] : [0, -g], dt: 1 / 240 });
       const n = [-Math.sin(theta), Math.cos(theta), 0];
       addPlane(world, { normal: dimensions === 3 ? n : [n[0]!, n[1]!], friction: 0.8 });
       const start = [r * n[0]!, r * n[1]!, 0];
       const ball = addBody(world, { position: dimensions === 3 ? start : [start[0]!, start[1]!], radius: r, mass: 2, friction: 0.8 });
       stepMany(world, 480); // 2 s
-      const P = world.components.Position, V = world.components.Velocity;
+      const P = world.components.Position,
+        V = world.components.Velocity;
       const drop = start[1]! - P.y[ball]!;
       const speed = Math.hypot(V.x[ball]!, V.y[ball]!, V.z[ball]!);
       // Disc: I = m r^2 / 2 gives v = sqrt(4 g h / 3); sphere: I = 2 m r^2 / 5 gives sqrt(10 g h / 7).
-      const expected = Math.sqrt(((dimensions === 3 ? 10 / 7 : 4 / 3)) * g * drop);
+      const expected = Math.sqrt((dimensions === 3 ? 10 / 7 : 4 / 3) * g * drop);
       expect(drop).toBeGreaterThan(1);
       expect(Math.abs(speed - expected) / expected).toBeLessThan(0.005);
       // And it rolls: contact-point speed v - w r is ~0.
-      const w = dimensions === 3 ? Math.hypot(world.components.AngularVelocity.x[ball]!, world.components.AngularVelocity.y[ball]!, world.components.AngularVelocity.z[ball]!) : Math.abs(world.components.AngularVelocity.z[ball]!);
+      const w =
+        dimensions === 3
+          ? Math.hypot(
+              world.components.AngularVelocity.x[ball]!,
+              world.components.AngularVelocity.y[ball]!,
+              world.components.AngularVelocity.z[ball]!,
+            )
+          : Math.abs(world.components.AngularVelocity.z[ball]!);
       expect(Math.abs(speed - w * r) / speed).toBeLessThan(0.005);
     });
   }

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, createPhysicsWorld, setRadius, shapes3DOfBody, slotOf, stateHash, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('3D ball bodies and shapes do not mix', () => {
   test('addShape3D on a body made with a radius throws naming the function, parameter and radius, and changes nothing', () => {
@@ -10,8 +10,9 @@ describe('3D ball bodies and shapes do not mix', () => {
     const ball = addBody(world, { position: [0, 2, 0], radius: 0.5, mass: 3 });
     step(world);
     const before = stateHash(world);
-    expect(() => addShape3D(world, ball, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1000 }))
-      .toThrow(/^addShape3D: body must be a body without a ball radius .*got body \d+ with radius 0\.5$/);
+    expect(() => addShape3D(world, ball, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 1000 })).toThrow(
+      /^addShape3D: body must be a body without a ball radius .*got body \d+ with radius 0\.5$/,
+    );
     expect(stateHash(world)).toBe(before);
     expect(shapes3DOfBody(world, ball)).toEqual([]);
     expect(world.components.Mass.value[slotOf(ball)]).toBe(3);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addShape3D, applyImpulseAtPoint, createPhysicsWorld, setMass, slotOf } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('setMass on a 3D body with shapes', () => {
   test('scales its principal moments with the mass: a 1 x 2 x 3 m box set to 2,000 kg turns as m (b^2 + c^2) / 12 says (1e-12)', () => {
@@ -9,9 +9,11 @@ describe('setMass on a 3D body with shapes', () => {
     const box = addBody(world, { position: [0, 0, 0] });
     addShape3D(world, box, { type: 'box', halfExtents: [0.5, 1, 1.5], density: 1000 });
     setMass(world, box, 2000);
-    const c = world.components, e = slotOf(box), m = 2000;
+    const c = world.components,
+      e = slotOf(box),
+      m = 2000;
     // Solid box of edges a, b, c: I_x = m (b^2 + c^2) / 12, etc. (principal axes = the box's, unturned).
-    const I = [m * (4 + 9) / 12, m * (1 + 9) / 12, m * (1 + 4) / 12];
+    const I = [(m * (4 + 9)) / 12, (m * (1 + 9)) / 12, (m * (1 + 4)) / 12];
     const T = c.InertiaTensor;
     expect([T.x[e]!, T.y[e]!, T.z[e]!].map((v, k) => Math.abs(v - I[k]!) / I[k]!).every((d) => d < 1e-12)).toBe(true);
     expect(c.Mass.value[e]).toBe(m);

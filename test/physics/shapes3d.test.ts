@@ -1,13 +1,33 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, addShape3D, boxMass, capsuleMass, createPhysicsWorld, cylinderMass, hullMass, hullOfShape3D, hullVolume, isAlive,
-  quickhull, removeBody, restore, shapes3DOf, shapes3DOfBody, slotOf, snapshot, sphereMass, type MassProperties3D,
+  addBody,
+  addShape3D,
+  boxMass,
+  capsuleMass,
+  createPhysicsWorld,
+  cylinderMass,
+  hullMass,
+  hullOfShape3D,
+  hullVolume,
+  isAlive,
+  type MassProperties3D,
+  quickhull,
+  removeBody,
+  restore,
+  shapes3DOf,
+  shapes3DOfBody,
+  slotOf,
+  snapshot,
+  sphereMass,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /** A seeded generator (LCG, Numerical Recipes constants) so the point clouds are fixed. */
 function lcg(seed: number): () => number {
   let s = seed >>> 0;
-  return () => { s = (1664525 * s + 1013904223) >>> 0; return s / 2 ** 32; };
+  return () => {
+    s = (1664525 * s + 1013904223) >>> 0;
+    return s / 2 ** 32;
+  };
 }
 
 /** Cube corners of half extent h plus `inner` interior points. */
@@ -23,14 +43,31 @@ function cubeCloud(h: number, inner: number): number[][] {
  * Independent reference for capsule and cylinder: midpoint quadrature of mass and moments over a grid
  * of n^3 cells covering the solid's bounding box, with `inside` deciding each cell.
  */
-function quadrature(inside: (x: number, y: number, z: number) => boolean, ex: number, ey: number, ez: number, n: number): { m: number; Ix: number; Iy: number } {
-  let m = 0, Ix = 0, Iy = 0;
-  const dx = (2 * ex) / n, dy = (2 * ey) / n, dz = (2 * ez) / n, dv = dx * dy * dz;
-  for (let i = 0; i < n; i++) for (let j = 0; j < n; j++) for (let k = 0; k < n; k++) {
-    const x = -ex + (i + 0.5) * dx, y = -ey + (j + 0.5) * dy, z = -ez + (k + 0.5) * dz;
-    if (!inside(x, y, z)) continue;
-    m += dv; Ix += dv * (y * y + z * z); Iy += dv * (x * x + z * z);
-  }
+function quadrature(
+  inside: (x: number, y: number, z: number) => boolean,
+  ex: number,
+  ey: number,
+  ez: number,
+  n: number,
+): { m: number; Ix: number; Iy: number } {
+  let m = 0,
+    Ix = 0,
+    Iy = 0;
+  const dx = (2 * ex) / n,
+    dy = (2 * ey) / n,
+    dz = (2 * ez) / n,
+    dv = dx * dy * dz;
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < n; j++)
+      for (let k = 0; k < n; k++) {
+        const x = -ex + (i + 0.5) * dx,
+          y = -ey + (j + 0.5) * dy,
+          z = -ez + (k + 0.5) * dz;
+        if (!inside(x, y, z)) continue;
+        m += dv;
+        Ix += dv * (y * y + z * z);
+        Iy += dv * (x * x + z * z);
+      }
   return { m, Ix, Iy };
 }
 
@@ -51,22 +88,46 @@ describe('quickhull', () => {
     for (let i = 0; i < 200; i++) pts.push([r() - 0.5, 2 * r() - 1, 0.3 * (r() - 0.5)]);
     const h = quickhull('test', pts);
     const nf = h.faceStart.length - 1;
-    for (const p of pts) for (let f = 0; f < nf; f++) {
-      const d = h.faceNormals[3 * f]! * p[0]! + h.faceNormals[3 * f + 1]! * p[1]! + h.faceNormals[3 * f + 2]! * p[2]! - h.faceOffsets[f]!;
-      expect(d).toBeLessThan(1e-12);
-    }
+    for (const p of pts)
+      for (let f = 0; f < nf; f++) {
+        const d = h.faceNormals[3 * f]! * p[0]! + h.faceNormals[3 * f + 1]! * p[1]! + h.faceNormals[3 * f + 2]! * p[2]! - h.faceOffsets[f]!;
+        expect(d).toBeLessThan(1e-12);
+      }
     // Euler's formula for a triangulated convex polyhedron: T = 2 V - 4.
     expect(h.triangles.length / 3).toBe(2 * (h.vertices.length / 3) - 4);
   });
 
   test('bad clouds get clear errors', () => {
-    expect(() => quickhull('addShape3D', [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0.5, 0.2, 0]])).toThrow(/addShape3D: vertices must span a volume/);
-    expect(() => quickhull('addShape3D', [[0, 0, 0], [1, 0, 0], [0, 1, 0]])).toThrow(/vertices must hold 4 to 1024 points, got 3/);
-    expect(() => quickhull('addShape3D', [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, NaN]])).toThrow(/vertices\[3\]\[2\] must be a finite number/);
+    expect(() =>
+      quickhull('addShape3D', [
+        [0, 0, 0],
+        [1, 0, 0],
+        [0, 1, 0],
+        [1, 1, 0],
+        [0.5, 0.2, 0],
+      ]),
+    ).toThrow(/addShape3D: vertices must span a volume/);
+    expect(() =>
+      quickhull('addShape3D', [
+        [0, 0, 0],
+        [1, 0, 0],
+        [0, 1, 0],
+      ]),
+    ).toThrow(/vertices must hold 4 to 1024 points, got 3/);
+    expect(() =>
+      quickhull('addShape3D', [
+        [0, 0, 0],
+        [1, 0, 0],
+        [0, 1, 0],
+        [0, 0, NaN],
+      ]),
+    ).toThrow(/vertices\[3\]\[2\] must be a finite number/);
     // 100 points on a sphere all lie on the hull: more than 64 vertices.
     const pts: number[][] = [];
     for (let i = 0; i < 100; i++) {
-      const y = 1 - (2 * (i + 0.5)) / 100, r = Math.sqrt(1 - y * y), a = i * 2.399963;
+      const y = 1 - (2 * (i + 0.5)) / 100,
+        r = Math.sqrt(1 - y * y),
+        a = i * 2.399963;
       pts.push([r * Math.cos(a), y, r * Math.sin(a)]);
     }
     expect(() => quickhull('addShape3D', pts)).toThrow(/at most 64 vertices, got 100/);
@@ -79,35 +140,52 @@ describe('3D mass properties (kg/m^3)', () => {
     for (let i = 0; i < 9; i++) expect(Math.abs(a.inertia[i]! - b.inertia[i]!)).toBeLessThan(tol * b.inertia[0]!);
   };
 
-  test('a hull of box corners has the box formula\'s mass and tensor (rounding only, 1e-12)', () => {
+  test("a hull of box corners has the box formula's mass and tensor (rounding only, 1e-12)", () => {
     const pts: number[][] = [];
     for (const x of [-0.3, 0.3]) for (const y of [-0.5, 0.5]) for (const z of [-1, 1]) pts.push([x + 2, y - 1, z + 3]);
     const p = hullMass(700, quickhull('test', pts));
     close(p, boxMass(700, 0.3, 0.5, 1), 1e-12);
-    expect(p.center[0]).toBeCloseTo(2, 12); expect(p.center[1]).toBeCloseTo(-1, 12); expect(p.center[2]).toBeCloseTo(3, 12);
+    expect(p.center[0]).toBeCloseTo(2, 12);
+    expect(p.center[1]).toBeCloseTo(-1, 12);
+    expect(p.center[2]).toBeCloseTo(3, 12);
   });
 
-  test('a tetrahedron: volume det/6, centroid the vertex mean, tensor from Tonon\'s closed form', () => {
-    const pts = [[0, 0, 0], [1, 0, 0], [0, 2, 0], [0, 0, 3]];
+  test("a tetrahedron: volume det/6, centroid the vertex mean, tensor from Tonon's closed form", () => {
+    const pts = [
+      [0, 0, 0],
+      [1, 0, 0],
+      [0, 2, 0],
+      [0, 0, 3],
+    ];
     const p = hullMass(1, quickhull('test', pts));
     expect(p.mass).toBeCloseTo(1, 12); // 1 * 2 * 3 / 6
     expect(p.center).toEqual([0.25, 0.5, 0.75].map((v) => expect.closeTo(v, 12)));
     // Right tetrahedron with legs a, b, c at the origin: about the origin, int y^2 + z^2 dV = V (b^2 + c^2) / 10.
     // Moved to the centroid by the parallel-axis theorem.
-    const V = 1, a = 1, b = 2, c = 3;
-    const Ixx = V * (b * b + c * c) / 10 - V * (0.5 ** 2 + 0.75 ** 2);
+    const V = 1,
+      a = 1,
+      b = 2,
+      c = 3;
+    const Ixx = (V * (b * b + c * c)) / 10 - V * (0.5 ** 2 + 0.75 ** 2);
     expect(p.inertia[0]).toBeCloseTo(Ixx, 12);
     // Product of inertia: -int x y dV = -V a b / 20 about the origin, + V x_c y_c at the centroid.
-    expect(p.inertia[1]).toBeCloseTo(-V * a * b / 20 + V * 0.25 * 0.5, 12);
+    expect(p.inertia[1]).toBeCloseTo((-V * a * b) / 20 + V * 0.25 * 0.5, 12);
   });
 
-  test('capsule and cylinder against midpoint quadrature on a 160^3 grid (0.5 %: the grid\'s resolution of a curved boundary)', () => {
-    const r = 0.3, hh = 0.5;
+  test("capsule and cylinder against midpoint quadrature on a 160^3 grid (0.5 %: the grid's resolution of a curved boundary)", () => {
+    const r = 0.3,
+      hh = 0.5;
     const cap = capsuleMass(1, r, hh);
-    const qc = quadrature((x, y, z) => {
-      const t = Math.max(-hh, Math.min(hh, y));
-      return x * x + (y - t) ** 2 + z * z <= r * r;
-    }, r, hh + r, r, 160);
+    const qc = quadrature(
+      (x, y, z) => {
+        const t = Math.max(-hh, Math.min(hh, y));
+        return x * x + (y - t) ** 2 + z * z <= r * r;
+      },
+      r,
+      hh + r,
+      r,
+      160,
+    );
     expect(Math.abs(cap.mass - qc.m) / qc.m).toBeLessThan(5e-3);
     expect(Math.abs(cap.inertia[0]! - qc.Ix) / qc.Ix).toBeLessThan(5e-3);
     expect(Math.abs(cap.inertia[4]! - qc.Iy) / qc.Iy).toBeLessThan(5e-3);
@@ -117,7 +195,7 @@ describe('3D mass properties (kg/m^3)', () => {
     expect(Math.abs(cyl.inertia[0]! - qy.Ix) / qy.Ix).toBeLessThan(5e-3);
     expect(Math.abs(cyl.inertia[4]! - qy.Iy) / qy.Iy).toBeLessThan(5e-3);
     const s = sphereMass(2, 0.5);
-    expect(s.mass).toBeCloseTo(2 * (4 / 3) * Math.PI / 8, 12);
+    expect(s.mass).toBeCloseTo((2 * (4 / 3) * Math.PI) / 8, 12);
   });
 });
 
@@ -126,7 +204,8 @@ describe('addShape3D', () => {
     const world = createPhysicsWorld({ dimensions: 3 });
     const body = addBody(world, { position: [0, 2, 0] });
     addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.25, 1], density: 400 });
-    const b = slotOf(body), c = world.components;
+    const b = slotOf(body),
+      c = world.components;
     const m = 400 * 8 * 0.5 * 0.25 * 1;
     expect(c.Mass.value[b]).toBeCloseTo(m, 12);
     expect(c.InertiaTensor.x[b]).toBeCloseTo((m * (0.5 ** 2 + 2 ** 2)) / 12, 10);
@@ -140,7 +219,8 @@ describe('addShape3D', () => {
     const body = addBody(world, { position: [1, 0, 0] });
     addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 10 });
     addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], offset: [1, 0, 0], density: 10 });
-    const b = slotOf(body), c = world.components;
+    const b = slotOf(body),
+      c = world.components;
     expect(c.Mass.value[b]).toBeCloseTo(20, 12);
     expect(c.Position.x[b]).toBeCloseTo(1.5, 12);
     const ref = boxMass(10, 1, 0.5, 0.5);
@@ -155,21 +235,35 @@ describe('addShape3D', () => {
     expect(shapes3DOfBody(world, body)).toHaveLength(3);
   });
 
-  test('a rotated box: the world-frame tensor R diag(I) R^T equals the turned box\'s (1e-10)', () => {
+  test("a rotated box: the world-frame tensor R diag(I) R^T equals the turned box's (1e-10)", () => {
     const world = createPhysicsWorld({ dimensions: 3 });
     const body = addBody(world, {});
-    const a = 0.7, q = [Math.sin(a / 2) / Math.SQRT2, 0, Math.sin(a / 2) / Math.SQRT2, Math.cos(a / 2)];
+    const a = 0.7,
+      q = [Math.sin(a / 2) / Math.SQRT2, 0, Math.sin(a / 2) / Math.SQRT2, Math.cos(a / 2)];
     addShape3D(world, body, { type: 'box', halfExtents: [0.2, 0.5, 1], rotation: q, density: 1 });
-    const b = slotOf(body), c = world.components;
+    const b = slotOf(body),
+      c = world.components;
     const ref = boxMass(1, 0.2, 0.5, 1);
     // Expected world tensor: R_q diag R_q^T. Ours: R_body diag(InertiaTensor) R_body^T.
     const mat = (x: number, y: number, z: number, w: number): number[] => [
-      1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
-      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
-      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)];
+      1 - 2 * (y * y + z * z),
+      2 * (x * y - z * w),
+      2 * (x * z + y * w),
+      2 * (x * y + z * w),
+      1 - 2 * (x * x + z * z),
+      2 * (y * z - x * w),
+      2 * (x * z - y * w),
+      2 * (y * z + x * w),
+      1 - 2 * (x * x + y * y),
+    ];
     const tensor = (R: number[], d: number[]): number[] => {
       const out: number[] = [];
-      for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) { let s = 0; for (let k = 0; k < 3; k++) s += R[3 * i + k]! * d[k]! * R[3 * j + k]!; out.push(s); }
+      for (let i = 0; i < 3; i++)
+        for (let j = 0; j < 3; j++) {
+          let s = 0;
+          for (let k = 0; k < 3; k++) s += R[3 * i + k]! * d[k]! * R[3 * j + k]!;
+          out.push(s);
+        }
       return out;
     };
     const want = tensor(mat(q[0]!, q[1]!, q[2]!, q[3]!), [ref.inertia[0]!, ref.inertia[4]!, ref.inertia[8]!]);
@@ -196,12 +290,28 @@ describe('addShape3D', () => {
   test('bad input gets clear errors and changes nothing', () => {
     const world = createPhysicsWorld({ dimensions: 3 });
     const body = addBody(world, {});
-    expect(() => addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0, 0.5] })).toThrow('addShape3D: halfExtents[1] must be > 0, got 0');
-    expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, halfExtents: [1, 1, 1] })).toThrow('addShape3D: halfExtents does not apply to a sphere');
-    expect(() => addShape3D(world, body, { type: 'hull', vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]] })).toThrow(/addShape3D: vertices must span a volume/);
+    expect(() => addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0, 0.5] })).toThrow(
+      'addShape3D: halfExtents[1] must be > 0, got 0',
+    );
+    expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, halfExtents: [1, 1, 1] })).toThrow(
+      'addShape3D: halfExtents does not apply to a sphere',
+    );
+    expect(() =>
+      addShape3D(world, body, {
+        type: 'hull',
+        vertices: [
+          [0, 0, 0],
+          [1, 0, 0],
+          [0, 1, 0],
+          [1, 1, 0],
+        ],
+      }),
+    ).toThrow(/addShape3D: vertices must span a volume/);
     expect(() => addShape3D(world, body, { type: 'cone' as 'box' })).toThrow(/addShape3D: type must be one of/);
     expect(() => addShape3D(world, body, { type: 'capsule', radius: 0.2 })).toThrow(/addShape3D: halfHeight must be/);
-    expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, rotation: [0, 0, 0, 0] })).toThrow(/rotation must be a non-zero quaternion/);
+    expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, rotation: [0, 0, 0, 0] })).toThrow(
+      /rotation must be a non-zero quaternion/,
+    );
     expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, restitution: 2 })).toThrow(/restitution/);
     expect(() => addShape3D(world, body, { type: 'sphere', radius: 1, density: -1 })).toThrow(/density/);
     expect(shapes3DOfBody(world, body)).toHaveLength(0);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 describe('3D shape bodies sleep in islands', () => {
   test('a stack of boxes falls asleep and stays put; a box dropped on it wakes the stack, which holds it and sleeps again', () => {
@@ -11,7 +11,8 @@ describe('3D shape bodies sleep in islands', () => {
       addShape3D(world, b, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
       stack.push(b);
     }
-    const c = world.components, top = slotOf(stack[2]!);
+    const c = world.components,
+      top = slotOf(stack[2]!);
     let asleepAt = -1;
     for (let s = 0; s < 240 && asleepAt < 0; s++) {
       step(world);

@@ -1,5 +1,5 @@
-import { describe, expect, test } from 'vitest';
 import { addBallJoint3D, addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, slotOf, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * 3D joints in the sleeping islands: bodies joined by a 3D joint sleep and wake together, as 2D joints
@@ -25,11 +25,15 @@ describe('3D joints and sleeping islands', () => {
     const { world, base, bob } = build();
     const V = world.components.Velocity;
     world.components.Velocity.z[bob] = 1; // swings across the box's side, touching nothing
-    let fastAndBaseAsleep = 0, fastSteps = 0;
+    let fastAndBaseAsleep = 0,
+      fastSteps = 0;
     for (let i = 0; i < 240; i++) {
       step(world);
       const speed = Math.hypot(V.x[bob]!, V.y[bob]!, V.z[bob]!);
-      if (speed > 0.1) { fastSteps++; if (isSleeping(world, base)) fastAndBaseAsleep++; }
+      if (speed > 0.1) {
+        fastSteps++;
+        if (isSleeping(world, base)) fastAndBaseAsleep++;
+      }
     }
     expect(fastSteps).toBeGreaterThan(100);
     expect(fastAndBaseAsleep).toBe(0);
@@ -41,7 +45,8 @@ describe('3D joints and sleeping islands', () => {
     let both = -1;
     for (let i = 0; i < 600 && both < 0; i++) {
       step(world);
-      const a = isSleeping(world, base), b = isSleeping(world, bob);
+      const a = isSleeping(world, base),
+        b = isSleeping(world, bob);
       // One island: neither sleeps without the other.
       expect(a).toBe(b);
       if (a && b) both = i;

@@ -1,5 +1,5 @@
+import { addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addPlane, addShape3D, createPhysicsWorld, isSleeping, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
 
 /**
  * A sleeping box wakes when a moving body can reach it within the step, not when one merely passes
@@ -39,7 +39,10 @@ describe('3D sleeping islands wake on reach, not on proximity', () => {
   test('a box heading at a sleeping box wakes it and pushes it without sinking in', () => {
     const { world, sleeper } = sleepingBox();
     const m = mover(world, [-1, 0, 0]);
-    const P = world.components.Position, V = world.components.Velocity, a = slotOf(sleeper), b = slotOf(m);
+    const P = world.components.Position,
+      V = world.components.Velocity,
+      a = slotOf(sleeper),
+      b = slotOf(m);
     let wokeAt = -1;
     for (let s = 0; s < 30; s++) {
       step(world);

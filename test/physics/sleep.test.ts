@@ -1,8 +1,17 @@
-import { describe, expect, test } from 'vitest';
 import {
-  addBody, ballsInBox, createPhysicsWorld, isSleeping, removeBody, setBoundary, setGravity, setVelocity, step, stepMany,
+  addBody,
+  ballsInBox,
+  createPhysicsWorld,
+  isSleeping,
+  removeBody,
+  setBoundary,
+  setGravity,
+  setVelocity,
+  step,
+  stepMany,
 } from '@bitphysics/physics';
 import { query } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 import { maxPairOverlap } from './helpers';
 
 const asleep = (world: ReturnType<typeof createPhysicsWorld>) => query(world, [world.components.Sleeping]).length;
@@ -25,9 +34,18 @@ describe('sleeping islands', () => {
     const { balls, layout } = ballsInBox.build(world, { count: 300 });
     stepMany(world, 900);
     expect(asleep(world)).toBe(300);
-    const drop = addBody(world, { position: [layout.max[0] / 2, layout.max[1] - 1], velocity: [0, -15], radius: 0.5, restitution: 0.5, friction: 0.1 });
+    const drop = addBody(world, {
+      position: [layout.max[0] / 2, layout.max[1] - 1],
+      velocity: [0, -15],
+      radius: 0.5,
+      restitution: 0.5,
+      friction: 0.1,
+    });
     let minAsleep = 301;
-    for (let i = 0; i < 120; i++) { step(world); minAsleep = Math.min(minAsleep, asleep(world)); }
+    for (let i = 0; i < 120; i++) {
+      step(world);
+      minAsleep = Math.min(minAsleep, asleep(world));
+    }
     expect(minAsleep).toBeLessThan(300);
     stepMany(world, 900);
     expect(maxPairOverlap(world, [...balls, drop])).toBeLessThan(0.025);

@@ -1,5 +1,5 @@
+import { addBody, createPhysicsWorld, type PhysicsWorld, restore, snapshot, stateHash, stepMany } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, restore, snapshot, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
 
 // Stores longer than 64 kB (capacity 12,000: 96 kB a Float64 store) take the snapshot's native paths
 // in Node (snapshot.ts: trailing zeros dropped 64 kB at a time, repeats found by comparing a store
@@ -30,14 +30,20 @@ function stores(world: PhysicsWorld): Map<string, ArrayBufferView> {
 }
 
 function expectSameBits(a: PhysicsWorld, b: PhysicsWorld): void {
-  const sa = stores(a), sb = stores(b);
+  const sa = stores(a),
+    sb = stores(b);
   for (const [path, x] of sa) {
     const y = sb.get(path);
     expect(y, path).toBeDefined();
-    const bx = new Uint8Array(x.buffer, x.byteOffset, x.byteLength), by = new Uint8Array(y!.buffer, y!.byteOffset, y!.byteLength);
+    const bx = new Uint8Array(x.buffer, x.byteOffset, x.byteLength),
+      by = new Uint8Array(y!.buffer, y!.byteOffset, y!.byteLength);
     expect(by.length, path).toBe(bx.length);
     let first = -1;
-    for (let i = 0; i < bx.length; i++) if (bx[i] !== by[i]) { first = i; break; }
+    for (let i = 0; i < bx.length; i++)
+      if (bx[i] !== by[i]) {
+        first = i;
+        break;
+      }
     expect(first, `${path}: first differing byte`).toBe(-1);
   }
 }

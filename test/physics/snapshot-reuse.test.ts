@@ -1,5 +1,5 @@
-import { expect, test } from 'vitest';
 import { createPhysicsWorld, restore, snapshot, stateHash, stepMany, type WorldSnapshot } from '@bitphysics/physics';
+import { expect, test } from 'vitest';
 import { mixedScene } from './snapshot-scenes.js';
 
 // Reference: the original world itself, stepped on; a snapshot written over an older snapshot's buffer

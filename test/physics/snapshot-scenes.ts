@@ -1,6 +1,16 @@
 import {
-  addBody, addBox, addDistanceJoint, addEmitter, addRevoluteJoint, addSegment, addSpring, createCloth, createPhysicsWorld,
-  setBoundary, SCENES, type PhysicsWorld,
+  addBody,
+  addBox,
+  addDistanceJoint,
+  addEmitter,
+  addRevoluteJoint,
+  addSegment,
+  addSpring,
+  createCloth,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  SCENES,
+  setBoundary,
 } from '@bitphysics/physics';
 
 /**
@@ -14,7 +24,13 @@ export function mixedScene(): PhysicsWorld {
   setBoundary(world, { min: [-12, -1], max: [12, 30], restitution: 0.3 });
   addSegment(world, { a: [-12, 0], b: [12, 0] });
   for (let i = 0; i < 6; i++) addBox(world, { position: [-6, 0.5 + 1.05 * i], halfExtents: [0.5, 0.5], friction: 0.6 });
-  for (let i = 0; i < 24; i++) addBody(world, { position: [2 + (i % 6) * 1.1, 3 + Math.floor(i / 6) * 1.1], radius: 0.4, restitution: 0.5, velocity: [(i % 3) - 1, 0] });
+  for (let i = 0; i < 24; i++)
+    addBody(world, {
+      position: [2 + (i % 6) * 1.1, 3 + Math.floor(i / 6) * 1.1],
+      radius: 0.4,
+      restitution: 0.5,
+      velocity: [(i % 3) - 1, 0],
+    });
   // A chain of springs from a fixed anchor.
   let prev = addBody(world, { position: [8, 20], radius: 0.2 });
   addSpring(world, { anchor: [8, 22], b: prev, stiffness: 200, damping: 0.5, restLength: 1.5 });
@@ -35,10 +51,22 @@ export function mixedScene(): PhysicsWorld {
   addDistanceJoint(world, { b: bob, anchorA: [-2, 18] });
   createCloth(world, { origin: [3, 25], width: 3, height: 2, columns: 4, rows: 4, pinned: 'corners' });
   // Emitters: a fountain whose drops burst into mist.
-  const mist = addEmitter(world, { speed: [0.5, 2], lifetime: [0.2, 0.6], policy: 'recycle-oldest', particle: { mass: 0.001, quadraticDrag: 1e-5 } });
+  const mist = addEmitter(world, {
+    speed: [0.5, 2],
+    lifetime: [0.2, 0.6],
+    policy: 'recycle-oldest',
+    particle: { mass: 0.001, quadraticDrag: 1e-5 },
+  });
   addEmitter(world, {
-    position: [0, 1], rate: 60, direction: [0, 1], spread: 0.4, speed: [6, 10], lifetime: [0.5, 1.2], policy: 'recycle-oldest',
-    particle: { mass: 0.01, linearDrag: 0.002, colorStart: 0x88ccff }, onDeath: { emitter: mist, count: 3, maxGeneration: 1 },
+    position: [0, 1],
+    rate: 60,
+    direction: [0, 1],
+    spread: 0.4,
+    speed: [6, 10],
+    lifetime: [0.5, 1.2],
+    policy: 'recycle-oldest',
+    particle: { mass: 0.01, linearDrag: 0.002, colorStart: 0x88ccff },
+    onDeath: { emitter: mist, count: 3, maxGeneration: 1 },
   });
   return world;
 }

@@ -1,5 +1,5 @@
+import { createPhysicsWorld, type PhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
-import { createPhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
 import { mixedScene } from './snapshot-scenes.js';
 
 // Per-step collision scratch (margins, the pair list, solver indices and rows) and the solver's marks
@@ -10,7 +10,11 @@ import { mixedScene } from './snapshot-scenes.js';
 
 function kick(world: PhysicsWorld): void {
   const v = world.components.Velocity;
-  for (let e = 1; e < v.x.length; e++) if (v.x[e] !== 0 || v.y[e] !== 0) { v.x[e] = -v.y[e]! * 0.5; v.y[e] = v.x[e]! + 3; }
+  for (let e = 1; e < v.x.length; e++)
+    if (v.x[e] !== 0 || v.y[e] !== 0) {
+      v.x[e] = -v.y[e]! * 0.5;
+      v.y[e] = v.x[e]! + 3;
+    }
 }
 
 function ballsInBox(count: number): PhysicsWorld {
@@ -20,7 +24,10 @@ function ballsInBox(count: number): PhysicsWorld {
   return world;
 }
 
-for (const [name, build, ahead] of [['balls-in-box', () => ballsInBox(300), 1], ['mixed', mixedScene, 1]] as const) {
+for (const [name, build, ahead] of [
+  ['balls-in-box', () => ballsInBox(300), 1],
+  ['mixed', mixedScene, 1],
+] as const) {
   test(`${name}: a world rewound ${ahead} step(s), then sent another way, steps as a new world restored from the same snapshot`, () => {
     const world = build();
     stepMany(world, 40);
@@ -46,7 +53,7 @@ test('per-step scratch is kept as type and length only, and a world without coll
   const world = ballsInBox(200);
   stepMany(world, 30);
   const saved = snapshot(world);
-  const collision = ((saved.header.state as { v: Record<string, { v: Record<string, Record<string, unknown>> }> }).v.collision!).v;
+  const collision = (saved.header.state as { v: Record<string, { v: Record<string, Record<string, unknown>> }> }).v.collision!.v;
   for (const key of ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'solverMark', 'bodyState', 'bodyExtra', 'bodyImpact']) {
     expect(collision[key]!.$t, key).toBe('scratch');
   }
@@ -62,11 +69,16 @@ test('contact buffers are stored up to their count: restore puts back every row 
   const world = ballsInBox(300);
   stepMany(world, 40);
   const saved = snapshot(world);
-  const contacts = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.contacts!.v;
+  const contacts = (saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v
+    .collision!.v.contacts!.v;
   expect(world.collision.contacts.count).toBe(0); // holds no rows between steps (contacts.ts)
   for (const [key, e] of Object.entries(contacts)) if (typeof e === 'object' && e !== null && 'o' in e) expect(e.n, key).toBe(0);
   // The 2D tangents of the cached rows are (-ny, nx): stored as notes, derived by restore (checked bit for bit below).
-  const cached = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }> }).v.collision!).v.cache!.v.rows!.v;
+  const cached = (
+    saved.header.state as {
+      v: Record<string, { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }>;
+    }
+  ).v.collision!.v.cache!.v.rows!.v;
   expect(cached.t1x!.$t).toBe('tangent2d');
   expect(cached.t1y!.$t).toBe('tangent2d');
   // Another world, stepped further: its contact rows differ, and more of them.
@@ -75,14 +87,21 @@ test('contact buffers are stored up to their count: restore puts back every row 
   const rows = world.collision.cache.rows as unknown as Record<string, ArrayLike<number>>;
   const n = world.collision.cache.rows.count;
   expect(n).toBeGreaterThan(10);
-  const before = new Map(Object.entries(rows).filter(([, a]) => ArrayBuffer.isView(a)).map(([k, a]) => [k, Array.from(a).slice(0, n)]));
+  const before = new Map(
+    Object.entries(rows)
+      .filter(([, a]) => ArrayBuffer.isView(a))
+      .map(([k, a]) => [k, Array.from(a).slice(0, n)]),
+  );
   restore(other, saved);
   const got = other.collision.cache.rows as unknown as Record<string, ArrayLike<number>>;
   expect(other.collision.cache.rows.count).toBe(n);
   for (const [k, want] of before) {
     // Bits, so -0 and 0 differ: Object.is per row.
     const have = Array.from(got[k]!).slice(0, n);
-    expect(have.every((x, i) => Object.is(x, want[i])), k).toBe(true);
+    expect(
+      have.every((x, i) => Object.is(x, want[i])),
+      k,
+    ).toBe(true);
   }
   stepMany(world, 50);
   stepMany(other, 50);
@@ -112,7 +131,7 @@ test('a replica restored again and again from snapshots of another world (query 
   expect(stateHash(replica)).toBe(stateHash(world));
 });
 
-test('an Int32Array whose element i is i (the sleep stage\'s union-find parents between island searches) keeps element 0 only, and restore writes 1, 2, ... back over other values', () => {
+test("an Int32Array whose element i is i (the sleep stage's union-find parents between island searches) keeps element 0 only, and restore writes 1, 2, ... back over other values", () => {
   const world = ballsInBox(300);
   stepMany(world, 40);
   const parent = world.collision.sleep.parent;
@@ -120,7 +139,8 @@ test('an Int32Array whose element i is i (the sleep stage\'s union-find parents 
   expect(used).toBeGreaterThan(64);
   for (let i = 1; i < used; i++) expect(parent[i]).toBe(i); // the premise: no island search yet
   const saved = snapshot(world);
-  const enc = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.sleep!.v.parent!;
+  const enc = (saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v
+    .collision!.v.sleep!.v.parent!;
   expect(enc.iota).toBe(used);
   expect(enc.n).toBe(1);
   // Another world whose parents hold other values (scribbled over: a union-find that merged islands).
@@ -131,13 +151,14 @@ test('an Int32Array whose element i is i (the sleep stage\'s union-find parents 
   expect(Array.from(other.collision.sleep.parent)).toEqual(Array.from(parent));
   // A damaged count (past the array) is refused with the array's path.
   const bad = structuredClone(saved);
-  ((bad.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!).v.sleep!.v.parent!.iota = parent.length + 5;
+  (bad.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!.v.sleep!.v
+    .parent!.iota = parent.length + 5;
   expect(() => restore(createPhysicsWorld(def300()), bad)).toThrow(/restore: snapshot's world\.collision\.sleep\.parent is damaged/);
   stepMany(world, 30);
   stepMany(other, 30);
   expect(stateHash(other)).toBe(stateHash(world));
 });
 
-function def300(): ReturnType<NonNullable<typeof SCENES['balls-in-box']>['worldOptions']> {
+function def300(): ReturnType<NonNullable<(typeof SCENES)['balls-in-box']>['worldOptions']> {
   return SCENES['balls-in-box']!.worldOptions({ count: 300 });
 }

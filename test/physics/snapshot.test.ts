@@ -1,10 +1,20 @@
-import { describe, expect, test } from 'vitest';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import {
-  addBody, addComponent, createPhysicsWorld, restore, setGravity, snapshot, stateHash, step, stepMany, type PhysicsWorld, type WorldSnapshot,
+  addBody,
+  addComponent,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  restore,
+  setGravity,
+  snapshot,
+  stateHash,
+  step,
+  stepMany,
+  type WorldSnapshot,
 } from '@bitphysics/physics';
 import { query, removeComponent } from 'bitecs';
+import { describe, expect, test } from 'vitest';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
 
 // Independent reference for every check here: the original world itself. A restored world must step to
@@ -123,12 +133,27 @@ describe('snapshot and restore', () => {
     // words where aligned; each case below puts the last such element where a word-sized read could misjudge it.
     const world = createPhysicsWorld({ capacity: 10 });
     const cases: Record<string, ArrayLike<number> & { [i: number]: number }> = {
-      negZero64: new Float64Array(11), nan64: new Float64Array(11), negZero32: new Float32Array(11), odd32: new Int32Array(11),
-      even32: new Uint32Array(12), bytes: new Uint8Array(13), shorts: new Int16Array(9), repeated32: new Uint32Array(11), repeated64: new Float64Array(11),
+      negZero64: new Float64Array(11),
+      nan64: new Float64Array(11),
+      negZero32: new Float32Array(11),
+      odd32: new Int32Array(11),
+      even32: new Uint32Array(12),
+      bytes: new Uint8Array(13),
+      shorts: new Int16Array(9),
+      repeated32: new Uint32Array(11),
+      repeated64: new Float64Array(11),
     };
-    cases.negZero64![9] = -0; cases.nan64![10] = NaN; cases.negZero32![10] = -0; cases.odd32![10] = -1; cases.even32![10] = 7;
-    cases.bytes![12] = 1; cases.shorts![7] = -2;
-    for (let i = 1; i < 11; i++) { cases.repeated32![i] = 3; cases.repeated64![i] = 0.1; }
+    cases.negZero64![9] = -0;
+    cases.nan64![10] = NaN;
+    cases.negZero32![10] = -0;
+    cases.odd32![10] = -1;
+    cases.even32![10] = 7;
+    cases.bytes![12] = 1;
+    cases.shorts![7] = -2;
+    for (let i = 1; i < 11; i++) {
+      cases.repeated32![i] = 3;
+      cases.repeated64![i] = 0.1;
+    }
     (world as unknown as Record<string, unknown>).futureArrays = cases;
     const saved = snapshot(world);
     const expected = Object.fromEntries(Object.entries(cases).map(([k, a]) => [k, Array.from(a)]));
@@ -147,7 +172,12 @@ describe('snapshot and restore', () => {
     const saved = snapshot(world);
     const copy = createPhysicsWorld({ capacity: 50 });
     restore(copy, saved);
-    expect([copy.dt, copy.integrator, copy.collision.settings.solverSubsteps, [...copy.gravity]]).toEqual([1 / 120, 'velocity-verlet', 6, [1, -2, 0]]);
+    expect([copy.dt, copy.integrator, copy.collision.settings.solverSubsteps, [...copy.gravity]]).toEqual([
+      1 / 120,
+      'velocity-verlet',
+      6,
+      [1, -2, 0],
+    ]);
   });
 
   test('refused: another capacity or dimensions, or not a snapshot; the world is left as it was', () => {
@@ -160,9 +190,13 @@ describe('snapshot and restore', () => {
     expect(() => restore(other, saved)).toThrow(
       'restore: snapshot must come from a world with the same options: it has dimensions 2 and capacity 3000, this world 2 and 100',
     );
-    expect(() => restore(createPhysicsWorld({ dimensions: 3, capacity: 3000 }), saved)).toThrow(/dimensions 2 and capacity 3000, this world 3 and 3000/);
+    expect(() => restore(createPhysicsWorld({ dimensions: 3, capacity: 3000 }), saved)).toThrow(
+      /dimensions 2 and capacity 3000, this world 3 and 3000/,
+    );
     expect(() => restore(other, {} as WorldSnapshot)).toThrow(/restore: snapshot must be a value returned by snapshot\(world\)/);
-    expect(() => restore(other, { header: { ...saved.header, format: 'x' }, buffers: [] })).toThrow(/restore: snapshot must be a bitphysics snapshot/);
+    expect(() => restore(other, { header: { ...saved.header, format: 'x' }, buffers: [] })).toThrow(
+      /restore: snapshot must be a bitphysics snapshot/,
+    );
     expect(stateHash(other)).toBe(before);
     step(other);
   });
@@ -174,7 +208,7 @@ describe('snapshot captures every piece of state', () => {
     stepMany(world, 5);
     const saved = snapshot(world);
     type Enc = { $t: string; o?: number; n?: number; len?: number; rep?: number };
-    const stores = ((saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Enc> }> }> }).v.components.v);
+    const stores = (saved.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Enc> }> }> }).v.components.v;
     expect(saved.buffers.length).toBe(1);
     let copied = 0;
     for (const [name, store] of Object.entries(world.components)) {
@@ -191,14 +225,22 @@ describe('snapshot captures every piece of state', () => {
           // Stored up to its last non-zero element (or as its first two elements, the second repeated up to
           // `rep`): those bytes exactly, and nothing but zero bits after them.
           expect([enc!.$t, enc!.len], `${name}.${field}`).toEqual([a.constructor.name, a.length]);
-          const n = enc!.n!, bytes = a.BYTES_PER_ELEMENT, end = enc!.rep ?? n;
+          const n = enc!.n!,
+            bytes = a.BYTES_PER_ELEMENT,
+            end = enc!.rep ?? n;
           const whole = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
           const stored = new Uint8Array(saved.buffers[0]!, enc!.o!, n * bytes);
           expect(Buffer.from(stored).equals(Buffer.from(whole.subarray(0, n * bytes))), `${name}.${field}`).toBe(true);
           for (let i = n; i < end; i++) {
-            expect(Buffer.from(whole.subarray(i * bytes, (i + 1) * bytes)).equals(Buffer.from(stored.subarray(bytes, 2 * bytes))), `${name}.${field}[${i}]`).toBe(true);
+            expect(
+              Buffer.from(whole.subarray(i * bytes, (i + 1) * bytes)).equals(Buffer.from(stored.subarray(bytes, 2 * bytes))),
+              `${name}.${field}[${i}]`,
+            ).toBe(true);
           }
-          expect(whole.subarray(end * bytes).every((x) => x === 0), `${name}.${field} beyond the stored part`).toBe(true);
+          expect(
+            whole.subarray(end * bytes).every((x) => x === 0),
+            `${name}.${field} beyond the stored part`,
+          ).toBe(true);
           copied++;
         }
       }
@@ -212,7 +254,9 @@ describe('snapshot captures every piece of state', () => {
     const e = addBody(world, { position: [1, 1] });
     expect(() => snapshot(world)).not.toThrow();
     addComponent(world, e, { foreign: new Float64Array(11) });
-    expect(() => snapshot(world)).toThrow(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
+    expect(() => snapshot(world)).toThrow(
+      `snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`,
+    );
   });
 
   test('a store or world field added later is captured and restored without changes to snapshot code', () => {
@@ -242,14 +286,20 @@ describe('snapshot captures every piece of state', () => {
     // collision/solver-stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
     // and one deepest-overlap slot a thread, all written before each parallel run.
     const scratch = new Set([
-      'pipeline/step.ts', 'forces/gravity.ts', 'integrators/fused-state.ts', 'snapshot/snapshot.ts', 'collision/solver.ts', 'collision/solver-stages-threads.ts',
+      'pipeline/step.ts',
+      'forces/gravity.ts',
+      'integrators/fused-state.ts',
+      'snapshot/snapshot.ts',
+      'collision/solver.ts',
+      'collision/solver-stages-threads.ts',
     ]);
     const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];
     const walk = (dir: string) => {
       for (const f of readdirSync(dir)) {
         const p = join(dir, f);
-        if (statSync(p).isDirectory()) walk(p); else if (p.endsWith('.ts')) files.push(p);
+        if (statSync(p).isDirectory()) walk(p);
+        else if (p.endsWith('.ts')) files.push(p);
       }
     };
     walk(root);

@@ -1,11 +1,20 @@
 // The solar-system scene against the ephemeris it starts from (astronomy-engine): the book's closing
 // project, graded by the issue's goal (every planet within 1.5 times the point-mass floor after one
 // year from 2012-01-01 with RK4 at 1 h).
-import { describe, expect, test } from 'vitest';
+
 import {
-  createPhysicsWorld, linearMomentum, SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_PLANETS, solarSystem, solarSystemErrors, step,
-  type IntegratorName, type PhysicsWorld, type SolarSystemHandles,
+  createPhysicsWorld,
+  type IntegratorName,
+  linearMomentum,
+  type PhysicsWorld,
+  SOLAR_SYSTEM_BODIES,
+  SOLAR_SYSTEM_PLANETS,
+  type SolarSystemHandles,
+  solarSystem,
+  solarSystemErrors,
+  step,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * The floor a point-mass model of these nine bodies reaches against astronomy-engine after one year
@@ -13,10 +22,21 @@ import {
  * The outer planets are "below 2e-5".
  */
 const ISSUE_FLOOR: Record<string, number> = {
-  Mercury: 2.8e-3, Venus: 1.1e-4, Earth: 1.6e-4, Mars: 2.4e-4, Jupiter: 2e-5, Saturn: 2e-5, Uranus: 2e-5, Neptune: 2e-5,
+  Mercury: 2.8e-3,
+  Venus: 1.1e-4,
+  Earth: 1.6e-4,
+  Mars: 2.4e-4,
+  Jupiter: 2e-5,
+  Saturn: 2e-5,
+  Uranus: 2e-5,
+  Neptune: 2e-5,
 };
 
-function run(integrator: IntegratorName, stepHours: number, days: number): { world: PhysicsWorld; handles: SolarSystemHandles; errors: Float64Array } {
+function run(
+  integrator: IntegratorName,
+  stepHours: number,
+  days: number,
+): { world: PhysicsWorld; handles: SolarSystemHandles; errors: Float64Array } {
   const world = createPhysicsWorld(solarSystem.worldOptions({ integrator, stepHours }));
   const handles = solarSystem.build(world);
   const n = Math.round((days * 24) / stepHours);

@@ -1,5 +1,5 @@
+import { addBody, addShape3D, createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { addBody, addShape3D, createPhysicsWorld, slotOf, step, type PhysicsWorld } from '@bitphysics/physics';
 import { pairContacts } from './helpers.js';
 
 /**

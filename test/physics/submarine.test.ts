@@ -1,10 +1,20 @@
 // The submarine scene and the ballast law against Archimedes' balance, the terminal speed of
 // quadratic drag (F = k v^2) and the hydrostatic trim balance.
-import { describe, expect, test } from 'vitest';
+
 import {
-  createPhysicsWorld, setBallast, setBallastTarget, setBodyThrust, step, SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY,
-  submarine, addBody, type PhysicsWorld,
+  addBody,
+  createPhysicsWorld,
+  type PhysicsWorld,
+  SUBMARINE,
+  SUBMARINE_NEUTRAL_FILL,
+  SUBMARINE_WATER_DENSITY,
+  setBallast,
+  setBallastTarget,
+  setBodyThrust,
+  step,
+  submarine,
 } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /** A submerged hull 40 m down with both tanks at `fill`. */
 function submerged(fill: number): { world: PhysicsWorld; hull: number } {
@@ -36,9 +46,11 @@ describe('ballast and buoyancy (Archimedes)', () => {
     for (const sign of [1, -1]) {
       const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL + sign * 0.05);
       world.components.Position.y[hull] = -400; // deep water: no surface or seabed in 30 s
-      const m = world.components.Mass.value[hull]!, dW = 0.05 * 2 * SUBMARINE.tankCapacity * 9.81;
+      const m = world.components.Mass.value[hull]!,
+        dW = 0.05 * 2 * SUBMARINE.tankCapacity * 9.81;
       run(world, 30);
-      const vt = Math.sqrt(dW / SUBMARINE.dragCoefficient), a0 = dW / m;
+      const vt = Math.sqrt(dW / SUBMARINE.dragCoefficient),
+        a0 = dW / m;
       const expected = vt * Math.tanh((a0 * world.time) / vt);
       expect(Math.abs(-sign * world.components.Velocity.y[hull]! - expected) / expected).toBeLessThan(1e-3);
     }
@@ -59,7 +71,8 @@ describe('ballast and buoyancy (Archimedes)', () => {
     run(world, 40);
     // F = 120 kN, k = 1200 kg/m: v_t = 10 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
     const m = world.components.Mass.value[hull]!;
-    const vt = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient), a0 = SUBMARINE.maxThrust / m;
+    const vt = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient),
+      a0 = SUBMARINE.maxThrust / m;
     const expected = vt * Math.tanh((a0 * world.time) / vt);
     expect(Math.abs(world.components.Velocity.x[hull]! - expected) / expected).toBeLessThan(1e-3);
     expect(expected).toBeGreaterThan(0.95 * vt); // close to terminal by then
@@ -73,7 +86,10 @@ describe('ballast and buoyancy (Archimedes)', () => {
     const aft = 2 * SUBMARINE_NEUTRAL_FILL - 0.9;
     const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
     setBallast(world, hull, {
-      dryMass: SUBMARINE.dryMass, capacity: SUBMARINE.tankCapacity, fill: [0.9, aft], arm: SUBMARINE.tankArm,
+      dryMass: SUBMARINE.dryMass,
+      capacity: SUBMARINE.tankCapacity,
+      fill: [0.9, aft],
+      arm: SUBMARINE.tankArm,
       metacentricHeight: SUBMARINE.metacentricHeight,
     });
     run(world, 60);

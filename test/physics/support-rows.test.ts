@@ -1,6 +1,6 @@
-import { describe, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, setBoundary, step } from '@bitphysics/physics';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, disposeWorld, setBoundary, step } from '@bitphysics/physics';
+import { describe, expect, test } from 'vitest';
 
 /**
  * Frictionless columns come to rest (issue 13: "keep piles and stacks as stable as they are now").
@@ -39,8 +39,10 @@ describe('frictionless columns settle', () => {
     setBoundary(world, { min: [0, 0], max: [width * r, 1000 * r], restitution: 0.3, friction: 0 });
     const ids: number[] = [];
     for (let i = 0; i < count; i++) {
-      const col = i % 2, row = Math.floor(i / 2);
-      const position: [number, number] = layout === 'tube' ? [r, r * (1 + 2 * i)] : [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)];
+      const col = i % 2,
+        row = Math.floor(i / 2);
+      const position: [number, number] =
+        layout === 'tube' ? [r, r * (1 + 2 * i)] : [r * (1.1 + 2.1 * col + 0.3 * (row % 2)), r * (1.1 + 2.2 * row)];
       ids.push(addBody(world, { position, radius: r, mass: 1, restitution: 0.3, friction: 0 }));
     }
     return { world, ids };
@@ -48,7 +50,8 @@ describe('frictionless columns settle', () => {
 
   /** Steps `steps` times; returns the fastest ball over the last 100 steps (m/s) and the deepest overlap at the end (m). */
   function settle(world: PhysicsWorld, ids: number[], r: number, steps: number): { late: number; overlap: number } {
-    const V = world.components.Velocity, P = world.components.Position;
+    const V = world.components.Velocity,
+      P = world.components.Position;
     let late = 0;
     for (let s = 1; s <= steps; s++) {
       step(world);

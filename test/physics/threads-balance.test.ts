@@ -1,9 +1,9 @@
+import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, setBoundary, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
-import { Rng } from '../../packages/physics/src/rng.js';
-import { BALANCE_MIN_PER_THREAD, RangeBalance } from '../../packages/physics/src/threads/balance.js';
 import { lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
 import { stageThreading } from '../../packages/physics/src/collision/solver-stages-threads.js';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { BALANCE_MIN_PER_THREAD, RangeBalance } from '../../packages/physics/src/threads/balance.js';
 
 // A pool cuts a loop into ranges by shares it learns from when each thread finished (threads/balance.ts).
 // Two promises: the shares settle where every thread finishes at once (checked against a model of
@@ -12,7 +12,8 @@ import { stageThreading } from '../../packages/physics/src/collision/solver-stag
 
 /** Runs one modelled loop of n elements: thread i takes latency[i] + share_i n perElement[i] ms. */
 function simulate(b: RangeBalance, kernel: number, n: number, perElement: number[], latency: number[]): number[] {
-  const t = perElement.length, bounds = new Int32Array(t + 1);
+  const t = perElement.length,
+    bounds = new Int32Array(t + 1);
   b.bounds(kernel, n, bounds, 0);
   const times = perElement.map((p, i) => latency[i]! + (bounds[i + 1]! - bounds[i]!) * p);
   const finished = new Float64Array(t);
@@ -23,10 +24,18 @@ function simulate(b: RangeBalance, kernel: number, n: number, perElement: number
 
 test('shares settle where the threads finish together: 2 and 3 threads of different speeds, with a wake-up delay', () => {
   for (const [perElement, latency] of [
-    [[1e-4, 1.6e-4], [0, 0.2]],
-    [[1e-4, 1.5e-4, 2e-4], [0, 0.1, 0.3]],
+    [
+      [1e-4, 1.6e-4],
+      [0, 0.2],
+    ],
+    [
+      [1e-4, 1.5e-4, 2e-4],
+      [0, 0.1, 0.3],
+    ],
   ] as const) {
-    const t = perElement.length, n = 20_000, b = new RangeBalance(t);
+    const t = perElement.length,
+      n = 20_000,
+      b = new RangeBalance(t);
     const bounds = new Int32Array(t + 1);
     b.bounds(3, n, bounds, 0);
     // Equal ranges (to the element) before anything is learnt.
@@ -34,8 +43,12 @@ test('shares settle where the threads finish together: 2 and 3 threads of differ
     let times: number[] = [];
     for (let run = 0; run < 60; run++) times = simulate(b, 3, n, [...perElement], [...latency]);
     // The balance in closed form: every thread ends at T with sum_i (T - latency_i) / perElement_i = n.
-    let a = 0, c = 0;
-    for (let i = 0; i < t; i++) { a += 1 / perElement[i]!; c += latency[i]! / perElement[i]!; }
+    let a = 0,
+      c = 0;
+    for (let i = 0; i < t; i++) {
+      a += 1 / perElement[i]!;
+      c += latency[i]! / perElement[i]!;
+    }
     const T = (n + c) / a;
     // Within 1 % of T: the ranges are whole elements and the shares move a quarter of the way a run.
     for (const time of times) expect(Math.abs(time - T) / T).toBeLessThan(0.01);
@@ -53,7 +66,8 @@ test('shares settle where the threads finish together: 2 and 3 threads of differ
 });
 
 test('hold: fixed shares, checked; null learns again from equal shares', () => {
-  const b = new RangeBalance(2), bounds = new Int32Array(3);
+  const b = new RangeBalance(2),
+    bounds = new Int32Array(3);
   b.hold([0.9, 0.1]);
   b.bounds(0, 10_000, bounds, 0);
   expect([...bounds]).toEqual([0, 9000, 10_000]);
@@ -90,7 +104,11 @@ function pile(shares: number[] | null): PhysicsWorld {
   setBoundary(world, { min: [0, 0], max: [60, 200] });
   const rng = new Rng(5);
   for (let i = 0; i < 6000; i++) {
-    addBody(world, { position: [0.5 + 1.0001 * (i % 59), 0.5 + 1.02 * Math.floor(i / 59)], radius: 0.5, velocity: [rng.range(-1, 1), rng.range(-0.2, 0.2)] });
+    addBody(world, {
+      position: [0.5 + 1.0001 * (i % 59), 0.5 + 1.02 * Math.floor(i / 59)],
+      radius: 0.5,
+      velocity: [rng.range(-1, 1), rng.range(-0.2, 0.2)],
+    });
   }
   return world;
 }

@@ -1,10 +1,10 @@
+import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, setBoundary, stateHash, step, stepMany, type PhysicsWorld } from '@bitphysics/physics';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
-import { query } from '../../packages/physics/src/query.js';
-import { Rng } from '../../packages/physics/src/rng.js';
 import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase.js';
 import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase-pairs.js';
+import { query } from '../../packages/physics/src/query.js';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // The broadphase's cell pass and the narrowphase's ball-ball contacts on the world's threads: each
 // thread handles a range (of the grid, of the pairs), and the ranges are appended in order, so the
@@ -13,7 +13,9 @@ import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broad
 // every pair of balls finds.
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 /** A lattice of nearly touching balls (gaps of 0.02 diameters) with small random velocities: dense contacts from the first step. */
 function lattice(dims: 2 | 3, threads: number): PhysicsWorld {
@@ -27,9 +29,12 @@ function lattice(dims: 2 | 3, threads: number): PhysicsWorld {
     for (let j = 0; j < side[1]!; j++) {
       for (let i = 0; i < side[0]!; i++) {
         const v = [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)];
-        addBody(world, dims === 2
-          ? { position: [1.02 * i, 1.02 * j], velocity: [v[0]!, v[1]!], radius: 0.5 }
-          : { position: [1.02 * i, 1.02 * j, 1.02 * k], velocity: v, radius: 0.5 });
+        addBody(
+          world,
+          dims === 2
+            ? { position: [1.02 * i, 1.02 * j], velocity: [v[0]!, v[1]!], radius: 0.5 }
+            : { position: [1.02 * i, 1.02 * j, 1.02 * k], velocity: v, radius: 0.5 },
+        );
       }
     }
   }
@@ -54,17 +59,21 @@ for (const dims of [2, 3] as const) {
     const runs = world.threadPool!.runs;
     broadphaseSystem(world);
     expect(world.threadPool!.runs).toBe(runs + 1);
-    const c = world.components, cs = world.collision;
+    const c = world.components,
+      cs = world.collision;
     const n = c.Ball.radius.length - 1;
     const found = new Set<number>();
     for (let i = 0; i < cs.pairCount; i++) found.add(cs.pairA[i]! * (n + 1) + cs.pairB[i]!);
     expect(found.size).toBe(cs.pairCount);
     let brute = 0;
-    const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+    const ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y,
+      oz = c.PreviousPosition.z;
     for (let e = 1; e <= n; e++) {
       for (let f = e + 1; f <= n; f++) {
         const rr = c.Ball.radius[e]! + cs.margin[e]! + c.Ball.radius[f]! + cs.margin[f]!;
-        const dx = ox[f]! - ox[e]!, dy = oy[f]! - oy[e]!;
+        const dx = ox[f]! - ox[e]!,
+          dy = oy[f]! - oy[e]!;
         if (dx * dx + dy * dy >= rr * rr) continue;
         const dz = oz[f]! - oz[e]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) {
@@ -89,10 +98,13 @@ test('sleeping balls: the cell pass stays on the threads, wakes the same balls i
     for (let j = 0; j < 16; j++) for (let i = 0; i < 256; i++) addBody(world, { position: [0.5 + i, 0.5 + j], radius: 0.5 });
     return world;
   };
-  const one = make(1), two = make(2);
+  const one = make(1),
+    two = make(2);
   const asleep = (w: PhysicsWorld): number => query(w, [w.components.Ball, w.components.Sleeping]).length;
   const pool = two.threadPool!;
-  let pairRunsAsleep = 0, sleptMost = 0, wokenAfterHit = 0;
+  let pairRunsAsleep = 0,
+    sleptMost = 0,
+    wokenAfterHit = 0;
   const run = pool.run.bind(pool);
   pool.run = (system, kernel, arrays, params, n, ids) => {
     if (kernel === KERNEL.ballPairs && asleep(two) > 0) pairRunsAsleep++;
@@ -103,7 +115,8 @@ test('sleeping balls: the cell pass stays on the threads, wakes the same balls i
       sleptMost = asleep(two);
       for (const w of [one, two]) addBody(w, { position: [100.3, 18], velocity: [3, -20], radius: 0.5 });
     }
-    step(one); step(two);
+    step(one);
+    step(two);
     if (s === 215) wokenAfterHit = sleptMost - asleep(two);
     if (s % 10 === 0 || s >= 199) expect(stateHash(two), `step ${s}`).toBe(stateHash(one));
   }

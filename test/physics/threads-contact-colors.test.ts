@@ -1,11 +1,11 @@
+import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, SCENES, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
-import { Rng } from '../../packages/physics/src/rng.js';
-import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/solver.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
 import { stripCut2D } from '../../packages/physics/src/collision/contact-strips-kernel.js';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { impactChangedRows } from '../../packages/physics/src/collision/impacts.js';
+import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/solver.js';
+import { Rng } from '../../packages/physics/src/rng.js';
+import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // The 2D ball contacts solved by graph colouring on the world's threads (collision/contact-colors.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a
@@ -15,7 +15,9 @@ import { impactChangedRows } from '../../packages/physics/src/collision/impacts.
 // under 5 % of a radius, well under the pile test's 5 % bound: 0.3 % and 0.4 % measured, both settled below 0.02 m/s) and no ball leaves the box.
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 const scene = SCENES['balls-in-box']!;
 
@@ -30,7 +32,8 @@ function pile(count: number, threads: number, adaptive: boolean): PhysicsWorld {
 }
 
 test('coloured contact solve: one state on 2 threads run twice, on 3 threads and on an adaptive pool; no movable body twice in a colour', () => {
-  const count = 600, steps = 90;
+  const count = 600,
+    steps = 90;
   const run = (threads: number, adaptive: boolean): string => {
     const world = pile(count, threads, adaptive);
     stepMany(world, steps);
@@ -47,11 +50,15 @@ test('coloured contact solve: one state on 2 threads run twice, on 3 threads and
   expect(run(2, true)).toBe(a);
 });
 
-test('a threaded 2D pile plans and packs its strips on a worker beside the impact stage (the solver bodies\' list on shared memory)', () => {
+test("a threaded 2D pile plans and packs its strips on a worker beside the impact stage (the solver bodies' list on shared memory)", () => {
   const world = pile(600, 2, false);
-  const pool = world.threadPool!, start = pool.start.bind(pool);
+  const pool = world.threadPool!,
+    start = pool.start.bind(pool);
   let plans = 0;
-  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.stripPlan2D) plans++; start(system, kernel, arrays, params, n); };
+  pool.start = (system, kernel, arrays, params, n) => {
+    if (kernel === KERNEL.stripPlan2D) plans++;
+    start(system, kernel, arrays, params, n);
+  };
   stepMany(world, 90);
   // Every step that solved by colours (most of the 90) planned on the worker; none cut there before
   // stop 28, as the list of solver bodies the cut reads was never on shared memory.
@@ -60,16 +67,21 @@ test('a threaded 2D pile plans and packs its strips on a worker beside the impac
 });
 
 test('coloured contact solve: a pile of 800 balls settles as on one thread (overlap < 2 % of a radius, every ball slower than 0.1 m/s) and stays in the box', () => {
-  const count = 800, steps = 300;
+  const count = 800,
+    steps = 300;
   const settle = (threads: number): { overlap: number; inside: boolean; speed: number } => {
     const world = pile(count, threads, false);
     stepMany(world, steps);
-    const c = world.components, r = 0.5;
+    const c = world.components,
+      r = 0.5;
     const layout = world.collision.boundary;
-    let inside = true, speed = 0;
+    let inside = true,
+      speed = 0;
     for (let e = 1; e <= count; e++) {
-      const x = c.Position.x[e]!, y = c.Position.y[e]!;
-      if (x < layout.min[0]! + r - 1e-3 || x > layout.max[0]! - r + 1e-3 || y < layout.min[1]! + r - 1e-3 || y > layout.max[1]! - r + 1e-3) inside = false;
+      const x = c.Position.x[e]!,
+        y = c.Position.y[e]!;
+      if (x < layout.min[0]! + r - 1e-3 || x > layout.max[0]! - r + 1e-3 || y < layout.min[1]! + r - 1e-3 || y > layout.max[1]! - r + 1e-3)
+        inside = false;
       speed = Math.max(speed, Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!));
     }
     // Deepest overlap of any two balls, by brute force over the pairs (a sleeping pile reports no contacts).
@@ -82,7 +94,8 @@ test('coloured contact solve: a pile of 800 balls settles as on one thread (over
     }
     return { overlap: deepest / r, inside, speed };
   };
-  const one = settle(1), two = settle(2);
+  const one = settle(1),
+    two = settle(2);
   expect(two.inside).toBe(true);
   expect(two.overlap).toBeLessThan(0.02);
   expect(one.overlap).toBeLessThan(0.02);
@@ -102,7 +115,8 @@ test('contact rows prepared on 2 threads (coloured solve off): the one-thread st
     world.collision.settings.coloredSolveMinRows = Infinity;
     const rng = new Rng(5);
     for (let j = 0; j < 64; j++) {
-      for (let i = 0; i < 70; i++) addBody(world, { position: [1.02 * i, 1.02 * j], velocity: [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)], radius: 0.5 });
+      for (let i = 0; i < 70; i++)
+        addBody(world, { position: [1.02 * i, 1.02 * j], velocity: [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)], radius: 0.5 });
     }
     stepMany(world, 3);
     return [stateHash(world), world];
@@ -115,14 +129,17 @@ test('contact rows prepared on 2 threads (coloured solve off): the one-thread st
   expect(two).toBe(one);
 });
 
-test('a threaded pile whose rows grow step by step keeps its solver bodies\' list (the pool is not handed a new array each step)', () => {
+test("a threaded pile whose rows grow step by step keeps its solver bodies' list (the pool is not handed a new array each step)", () => {
   // The pool keeps every array it is given (threads/pool.ts), posted to each worker: the list grown to
   // exactly twice the rows was a new array in nearly every step of a landing pile (about 0.5 ms a step
   // of posting and syncing at 20,000 balls, and every old list kept). Grown by doubling, a 600-ball
   // pile's list changes a few times in 120 steps.
   const world = pile(600, 2, false);
   const lists = new Set<Int32Array>();
-  for (let k = 0; k < 120; k++) { stepMany(world, 1); lists.add(world.collision.solverBodies); }
+  for (let k = 0; k < 120; k++) {
+    stepMany(world, 1);
+    lists.add(world.collision.solverBodies);
+  }
   expect(lists.size).toBeLessThanOrEqual(6);
 });
 
@@ -133,16 +150,25 @@ test('rows packed on a worker while the impact stage runs: the state of a pack m
   // (coloredRepack2D); tolerance zero, the same arithmetic on the same rows.
   const run = (packOnWorker: boolean): { hash: string; changed: number } => {
     const world = pile(600, 2, false);
-    const pool = world.threadPool!, start = pool.start.bind(pool);
+    const pool = world.threadPool!,
+      start = pool.start.bind(pool);
     let changed = 0;
     pool.start = (system, kernel, arrays, params, n) => {
-      if (kernel === KERNEL.stripPlan2D && !packOnWorker) { const Q = Float64Array.from(params); Q[8] = 0; params = Q; }
+      if (kernel === KERNEL.stripPlan2D && !packOnWorker) {
+        const Q = Float64Array.from(params);
+        Q[8] = 0;
+        params = Q;
+      }
       start(system, kernel, arrays, params, n);
     };
-    for (let k = 0; k < 120; k++) { stepMany(world, 1); changed += impactChangedRows().count; }
+    for (let k = 0; k < 120; k++) {
+      stepMany(world, 1);
+      changed += impactChangedRows().count;
+    }
     return { hash: stateHash(world), changed };
   };
-  const worker = run(true), after = run(false);
+  const worker = run(true),
+    after = run(false);
   expect(worker.changed).toBeGreaterThan(100);
   expect(worker.hash).toBe(after.hash);
 });
@@ -153,22 +179,43 @@ test('the strip cut made on a worker (ThreadPool.start, beside the impact stage)
   const world = createPhysicsWorld({ threads: 2 });
   worlds.push(world);
   const pool = world.threadPool!;
-  const bodies = 3000, rows = 9000, bins = 4096, rng = new Rng(5);
-  const shared = <T extends Float64Array | Int32Array | Uint8Array | Uint16Array>(C: { new (b: SharedArrayBuffer): T; BYTES_PER_ELEMENT: number }, n: number): T => new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
-  const sb = shared(Float64Array, 8 * bodies), ex = shared(Float64Array, 6 * bodies), type = shared(Uint8Array, bodies + 1), list = shared(Int32Array, bodies);
-  const IA = shared(Int32Array, rows), IB = shared(Int32Array, rows);
+  const bodies = 3000,
+    rows = 9000,
+    bins = 4096,
+    rng = new Rng(5);
+  const shared = <T extends Float64Array | Int32Array | Uint8Array | Uint16Array>(
+    C: { new (b: SharedArrayBuffer): T; BYTES_PER_ELEMENT: number },
+    n: number,
+  ): T => new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
+  const sb = shared(Float64Array, 8 * bodies),
+    ex = shared(Float64Array, 6 * bodies),
+    type = shared(Uint8Array, bodies + 1),
+    list = shared(Int32Array, bodies);
+  const IA = shared(Int32Array, rows),
+    IB = shared(Int32Array, rows);
   for (let k = 1; k < bodies; k++) {
     list[k] = k;
     type[k] = k % 7 === 0 ? 3 : k % 5 === 0 ? 2 : 0; // 0 dynamic (P[4]), others not
     sb[k * 8 + 5] = k % 7 === 0 || k % 5 === 0 ? 0 : 1;
     sb[k * 8] = k % 5 === 0 ? 0.5 : 0;
-    ex[k * 6] = rng.range(-3, 3); ex[k * 6 + 1] = rng.range(0, 2);
+    ex[k * 6] = rng.range(-3, 3);
+    ex[k * 6 + 1] = rng.range(0, 2);
   }
-  for (let i = 0; i < rows; i++) { IA[i] = i % 9 === 0 ? 0 : 1 + Math.floor(rng.range(0, bodies - 1)); IB[i] = 1 + Math.floor(rng.range(0, bodies - 1)); }
-  const outputs = () => [shared(Uint8Array, bodies), shared(Uint8Array, bodies), shared(Uint16Array, bodies), shared(Int32Array, bins), shared(Uint8Array, bins)];
+  for (let i = 0; i < rows; i++) {
+    IA[i] = i % 9 === 0 ? 0 : 1 + Math.floor(rng.range(0, bodies - 1));
+    IB[i] = 1 + Math.floor(rng.range(0, bodies - 1));
+  }
+  const outputs = () => [
+    shared(Uint8Array, bodies),
+    shared(Uint8Array, bodies),
+    shared(Uint16Array, bodies),
+    shared(Int32Array, bins),
+    shared(Uint8Array, bins),
+  ];
   // P[6] = 0: the cut's arrays are A's only ones.
   const P = new Float64Array([bodies, rows, 32, bins, 0, 0xffff, 0]);
-  const inline = outputs(), worker = outputs();
+  const inline = outputs(),
+    worker = outputs();
   stripCut2D([sb, ex, type, list, ...inline, IA, IB], P, null, 0, 1);
   pool.start('contactSolverSystem', KERNEL.stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);
   pool.join();
@@ -177,5 +224,7 @@ test('the strip cut made on a worker (ThreadPool.start, beside the impact stage)
   const strip = inline[1]!;
   expect(strip[7]).toBe(255);
   expect(new Set(Array.from(strip.subarray(1)).filter((v) => v !== 255)).size).toBe(32);
-  expect(Array.from(inline[3]!).reduce((a, b) => a + b, 0)).toBe(rows - Array.from({ length: rows }, (_, i) => i).filter((i) => strip[IA[i]!] === 255 && strip[IB[i]!] === 255).length);
+  expect(Array.from(inline[3]!).reduce((a, b) => a + b, 0)).toBe(
+    rows - Array.from({ length: rows }, (_, i) => i).filter((i) => strip[IA[i]!] === 255 && strip[IB[i]!] === 255).length,
+  );
 });

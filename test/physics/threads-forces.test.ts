@@ -1,15 +1,32 @@
-import { afterEach, expect, test } from 'vitest';
 import {
-  addBody, addShape, buildTree, createPhysicsWorld, disposeWorld, enableMutualGravity, galaxy, gravityFieldError,
-  evaluateForces, MIN_PARALLEL_PER_THREAD, setAngularDamping, setAttractor, setCentralForce, setDrag, setGravitation, stateHash, stepMany,
-  treeFieldsSorted, worldTree,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addShape,
+  buildTree,
+  createPhysicsWorld,
+  disposeWorld,
+  enableMutualGravity,
+  evaluateForces,
+  galaxy,
+  gravityFieldError,
+  MIN_PARALLEL_PER_THREAD,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  setAngularDamping,
+  setAttractor,
+  setCentralForce,
+  setDrag,
+  setGravitation,
+  stateHash,
+  stepMany,
+  treeFieldsSorted,
+  worldTree,
 } from '@bitphysics/physics';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { afterEach, expect, test } from 'vitest';
 import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut.js';
-import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
 import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
+import { Rng } from '../../packages/physics/src/rng.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
+import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
 
 // Force laws on the world's threads: Barnes-Hut's walk (each thread replays the walk for its own
 // bodies, in the one-thread order), drag and angular damping (one body's arithmetic a thread). The
@@ -17,7 +34,9 @@ import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 // tolerance is zero; each test also checks the physics against something independent.
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 /** A world whose parallel loops always take the threads (not the adaptive choice), so the tests see them. */
 function make(options: PhysicsWorldOptions): PhysicsWorld {
@@ -32,11 +51,17 @@ test('Barnes-Hut evaluated in parts: every field identical to the one-part walk 
     const n = 900;
     const t = worldTree(make({ dimensions: dims }));
     const rng = new Rng(11 + dims);
-    const x = new Float64Array(n), y = new Float64Array(n), z = new Float64Array(n), m = new Float64Array(n);
+    const x = new Float64Array(n),
+      y = new Float64Array(n),
+      z = new Float64Array(n),
+      m = new Float64Array(n);
     // A third of the bodies in a tight clump: deep cells and straddling pairs at every cut.
     for (let i = 0; i < n; i++) {
       const r = i % 3 === 0 ? 0.05 : 50;
-      x[i] = rng.range(-r, r); y[i] = rng.range(-r, r); z[i] = dims === 3 ? rng.range(-r, r) : 0; m[i] = rng.range(0.5, 1.5);
+      x[i] = rng.range(-r, r);
+      y[i] = rng.range(-r, r);
+      z[i] = dims === 3 ? rng.range(-r, r) : 0;
+      m[i] = rng.range(0.5, 1.5);
     }
     buildTree(t, n, x, y, z, m);
     treeFieldsSorted(t, 1.3, 0.01, 0.6);
@@ -52,7 +77,9 @@ test('Barnes-Hut evaluated in parts: every field identical to the one-part walk 
       const size = t.scratch[0]!.length;
       const arrays = [t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info];
       for (let p = 0; p < parts; p++) arrays.push(new Float64Array(size).fill(1e300));
-      t.ax.fill(NaN); t.ay.fill(NaN); t.az.fill(NaN);
+      t.ax.fill(NaN);
+      t.ay.fill(NaN);
+      t.az.fill(NaN);
       KERNELS[dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2]!(arrays, t.walkParams, null, 0, parts, 0, KERNEL_HELPERS);
       for (let i = 0; i < n; i++) {
         if (!Object.is(t.ax[i], ref[0]![i]) || !Object.is(t.ay[i], ref[1]![i]) || !Object.is(t.az[i], ref[2]![i])) {
@@ -60,8 +87,12 @@ test('Barnes-Hut evaluated in parts: every field identical to the one-part walk 
         }
       }
       // Each interaction is counted by exactly one part: the counts add up to the one-part walk's.
-      let cellPairs = 0, bodyPairs = 0;
-      for (let p = 0; p < parts; p++) { cellPairs += t.info[4 * p]!; bodyPairs += t.info[4 * p + 1]!; }
+      let cellPairs = 0,
+        bodyPairs = 0;
+      for (let p = 0; p < parts; p++) {
+        cellPairs += t.info[4 * p]!;
+        bodyPairs += t.info[4 * p + 1]!;
+      }
       expect([cellPairs, bodyPairs]).toEqual([counts.cellPairs, counts.bodyPairs]);
     }
   }
@@ -106,16 +137,21 @@ test('3D mutual gravity by Barnes-Hut on 2 threads: identical state; total momen
   // The mutual expansions and direct pairs are exactly opposite both ways: from rest, the total
   // momentum stays zero up to rounding (|P| / sum m|v| < 1e-12).
   const c = world.components;
-  let px = 0, py = 0, pz = 0, scale = 0;
+  let px = 0,
+    py = 0,
+    pz = 0,
+    scale = 0;
   for (let e = 1; e <= n; e++) {
     const m = c.Mass.value[e]!;
-    px += m * c.Velocity.x[e]!; py += m * c.Velocity.y[e]!; pz += m * c.Velocity.z[e]!;
+    px += m * c.Velocity.x[e]!;
+    py += m * c.Velocity.y[e]!;
+    pz += m * c.Velocity.z[e]!;
     scale += m * Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
   }
   expect(Math.hypot(px, py, pz) / scale).toBeLessThan(1e-12);
 }, 60_000);
 
-test('drag, angular damping, central forces and an attractor on an adaptive 2-thread pool: the one-thread state and forces; a body\'s force is the sum of its laws', () => {
+test("drag, angular damping, central forces and an attractor on an adaptive 2-thread pool: the one-thread state and forces; a body's force is the sum of its laws", () => {
   // The adaptive choice runs each loop on the threads at its first three calls and on one thread at
   // the next two (threads/adaptive.ts): five steps take every loop both ways.
   const n = 2 * MIN_PARALLEL_PER_THREAD + 33;
@@ -125,7 +161,11 @@ test('drag, angular damping, central forces and an attractor on an adaptive 2-th
     setGravitation(world, { constant: 1 });
     const rng = new Rng(21);
     for (let i = 0; i < n; i++) {
-      const e = addBody(world, { position: [rng.range(-50, 50), rng.range(-50, 50)], velocity: [rng.range(-9, 9), rng.range(-9, 9)], mass: rng.range(0.5, 2) });
+      const e = addBody(world, {
+        position: [rng.range(-50, 50), rng.range(-50, 50)],
+        velocity: [rng.range(-9, 9), rng.range(-9, 9)],
+        mass: rng.range(0.5, 2),
+      });
       // Every 1000th body's drag is stiff (k h / m far above the explicit limit): the exact decay path.
       if (i % 3 === 0) setDrag(world, e, { linear: i % 1000 === 0 ? 1e4 : rng.range(0, 2) });
       else if (i % 3 === 1) setDrag(world, e, { quadratic: i % 1000 === 1 ? 1e4 : rng.range(0, 0.5) });
@@ -147,12 +187,22 @@ test('drag, angular damping, central forces and an attractor on an adaptive 2-th
   expect(two).toBe(one);
   // Independent check at the final state: body 16 (i = 15: linear drag, central force with n = 1)
   // feels -k v + k_c r^(n-2) (x - c) - G M m (x - x_a) / (|x - x_a|^2 + eps^2)^(3/2), to rounding (1e-12).
-  const c = world.components, e = 16, a = 8;
-  const x = c.Position.x[e]!, y = c.Position.y[e]!, m = c.Mass.value[e]!, k = c.LinearDrag.k[e]!;
-  const cx = x - 1, cy = y - 2, r = Math.hypot(cx, cy);
-  const ax = x - c.Position.x[a]!, ay = y - c.Position.y[a]!, d2 = ax * ax + ay * ay + 4;
+  const c = world.components,
+    e = 16,
+    a = 8;
+  const x = c.Position.x[e]!,
+    y = c.Position.y[e]!,
+    m = c.Mass.value[e]!,
+    k = c.LinearDrag.k[e]!;
+  const cx = x - 1,
+    cy = y - 2,
+    r = Math.hypot(cx, cy);
+  const ax = x - c.Position.x[a]!,
+    ay = y - c.Position.y[a]!,
+    d2 = ax * ax + ay * ay + 4;
   const g = (-50 * m) / (d2 * Math.sqrt(d2));
-  const fx = -k * c.Velocity.x[e]! - 0.3 * cx / r + g * ax, fy = -k * c.Velocity.y[e]! - 0.3 * cy / r + g * ay;
+  const fx = -k * c.Velocity.x[e]! - (0.3 * cx) / r + g * ax,
+    fy = -k * c.Velocity.y[e]! - (0.3 * cy) / r + g * ay;
   expect(c.Force.x[e]! / fx - 1).toBeCloseTo(0, 12);
   expect(c.Force.y[e]! / fy - 1).toBeCloseTo(0, 12);
 }, 60_000);
@@ -164,7 +214,10 @@ function hashForces(world: PhysicsWorld): string {
   const bits = new Uint32Array(new Float64Array([0]).buffer);
   const one = new Float64Array(bits.buffer);
   for (let e = 0; e < f.x.length; e++) {
-    for (const v of [f.x[e]!, f.y[e]!]) { one[0] = v; h = (Math.imul(h ^ bits[0]!, 0x01000193) ^ bits[1]!) >>> 0; }
+    for (const v of [f.x[e]!, f.y[e]!]) {
+      one[0] = v;
+      h = (Math.imul(h ^ bits[0]!, 0x01000193) ^ bits[1]!) >>> 0;
+    }
   }
   return ` forces ${h.toString(16)}`;
 }

@@ -1,5 +1,5 @@
+import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { addBody, createPhysicsWorld, disposeWorld, setBoundary, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
 import { Rng } from '../../packages/physics/src/rng.js';
 import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.js';
 
@@ -8,7 +8,9 @@ import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.
 // idle pool stops using CPU), and bad values are refused.
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 /** 40,000 balls in a box: enough that the integration and collision loops run on both threads. */
 function balls(spin: number): PhysicsWorld {
@@ -18,7 +20,8 @@ function balls(spin: number): PhysicsWorld {
   world.threadPool!.idleSpin = spin;
   setBoundary(world, { min: [0, 0], max: [200, 400] });
   const rng = new Rng(3);
-  for (let i = 0; i < 40_000; i++) addBody(world, { position: [rng.range(1, 199), rng.range(1, 399)], radius: 0.4, velocity: [rng.range(-2, 2), 0] });
+  for (let i = 0; i < 40_000; i++)
+    addBody(world, { position: [rng.range(1, 199), rng.range(1, 399)], radius: 0.4, velocity: [rng.range(-2, 2), 0] });
   return world;
 }
 
@@ -48,7 +51,9 @@ test('idleSpin refuses what is not an integer in [0, 1e6] microseconds, and keep
   const world = balls(0);
   const pool = world.threadPool!;
   for (const bad of [-1, 1.5, 2e6, Number.NaN]) {
-    expect(() => { pool.idleSpin = bad; }).toThrow(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${bad}`);
+    expect(() => {
+      pool.idleSpin = bad;
+    }).toThrow(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${bad}`);
   }
   expect(pool.idleSpin).toBe(0);
   pool.idleSpin = 250;

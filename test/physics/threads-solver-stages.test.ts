@@ -1,5 +1,5 @@
+import { createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { createPhysicsWorld, disposeWorld, SCENES, stateHash, step, stepMany, type PhysicsWorld } from '@bitphysics/physics';
 import { stageThreading } from '../../packages/physics/src/collision/solver-stages-threads.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
@@ -32,10 +32,12 @@ function pile(count: number, threads: number, colored: boolean, adaptive = false
 
 /** Kinetic (translation and spin) plus potential energy of balls 1 .. count, J. */
 function energy(world: PhysicsWorld, count: number): number {
-  const c = world.components, g = -world.gravity[1]!;
+  const c = world.components,
+    g = -world.gravity[1]!;
   let e = 0;
   for (let i = 1; i <= count; i++) {
-    const m = 1 / c.Mass.inv[i]!, inv = c.Inertia.inv[i]!;
+    const m = 1 / c.Mass.inv[i]!,
+      inv = c.Inertia.inv[i]!;
     e += 0.5 * m * (c.Velocity.x[i]! ** 2 + c.Velocity.y[i]! ** 2) + m * g * c.Position.y[i]!;
     if (inv > 0) e += (0.5 * c.AngularVelocity.z[i]! ** 2) / inv;
   }
@@ -44,15 +46,20 @@ function energy(world: PhysicsWorld, count: number): number {
 
 test('solver rows, approach speeds, write-back and the warm-start table on 2 threads (coloured solve off): the one-thread state to the bit', () => {
   stageThreading.minPerThread = 1;
-  const count = 300, steps = 80;
+  const count = 300,
+    steps = 80;
   const one = pile(count, 1, false);
   stepMany(one, steps);
   const runs = stageThreading.runs;
   const two = pile(count, 2, false);
   // Count the warm-start tables a worker builds (ThreadPool.start).
-  const pool = two.threadPool!, start = pool.start.bind(pool);
+  const pool = two.threadPool!,
+    start = pool.start.bind(pool);
   let tables = 0;
-  pool.start = (system, kernel, arrays, params, n) => { if (kernel === KERNEL.warmStartTable) tables++; start(system, kernel, arrays, params, n); };
+  pool.start = (system, kernel, arrays, params, n) => {
+    if (kernel === KERNEL.warmStartTable) tables++;
+    start(system, kernel, arrays, params, n);
+  };
   stepMany(two, steps);
   // Fill, approach, write-back and the warm-start table each step with contacts: most of the 80.
   expect(stageThreading.runs - runs).toBeGreaterThan(4 * 40);
@@ -68,7 +75,8 @@ test('solver rows, approach speeds, write-back and the warm-start table on 2 thr
 
 test('restitution by colours: one state on 2 threads run twice, on 3 threads and on an adaptive pool; the pile never gains energy', () => {
   stageThreading.minPerThread = 1;
-  const count = 300, steps = 80;
+  const count = 300,
+    steps = 80;
   const run = (threads: number, adaptive: boolean): string => {
     const world = pile(count, threads, true, adaptive);
     const e0 = energy(world, count);
@@ -80,7 +88,8 @@ test('restitution by colours: one state on 2 threads run twice, on 3 threads and
     expect(worst).toBeLessThan(1e-9 * Math.abs(e0));
     return stateHash(world);
   };
-  const bouncing = stageThreading.bouncing, runs = stageThreading.runs;
+  const bouncing = stageThreading.bouncing,
+    runs = stageThreading.runs;
   const a = run(2, false);
   // The stage ran by colours and found rows to bounce (it is not skipped).
   expect(stageThreading.runs).toBeGreaterThan(runs);

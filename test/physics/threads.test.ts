@@ -1,15 +1,22 @@
-import { afterEach, expect, test } from 'vitest';
 import { execFile } from 'node:child_process';
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { build } from 'esbuild';
-import { addComponent, removeEntity } from 'bitecs';
 import {
-  addBody, addParticle, createPhysicsWorld, disposeWorld, MIN_PARALLEL_PER_THREAD, stateHash, stepMany,
-  type PhysicsWorld, type PhysicsWorldOptions,
+  addBody,
+  addParticle,
+  createPhysicsWorld,
+  disposeWorld,
+  MIN_PARALLEL_PER_THREAD,
+  type PhysicsWorld,
+  type PhysicsWorldOptions,
+  stateHash,
+  stepMany,
 } from '@bitphysics/physics';
+import { addComponent, removeEntity } from 'bitecs';
+import { build } from 'esbuild';
+import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
@@ -19,7 +26,9 @@ import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
 // reference is the one-thread run of the same scene, the tolerance zero (stateHash hashes every bit).
 
 const worlds: PhysicsWorld[] = [];
-afterEach(() => { for (const w of worlds.splice(0)) disposeWorld(w); });
+afterEach(() => {
+  for (const w of worlds.splice(0)) disposeWorld(w);
+});
 
 function make(options: PhysicsWorldOptions): PhysicsWorld {
   const w = createPhysicsWorld(options);
@@ -43,7 +52,10 @@ function particleWorld(threads: number, interpolation: boolean, holes: boolean):
 }
 
 test('particles (dense and sparse, with and without interpolation): 1, 2 and 4 threads give identical states', () => {
-  for (const [interpolation, holes] of [[false, false], [true, true]] as const) {
+  for (const [interpolation, holes] of [
+    [false, false],
+    [true, true],
+  ] as const) {
     {
       const hashes = [1, 2, 4].map((threads) => {
         const world = particleWorld(threads, interpolation, holes);
@@ -63,7 +75,11 @@ test('3D bodies with forces and gravity scale: 1 and 2 threads give identical st
     const world = make({ dimensions: 3, capacity: n, gravity: [0, -9.81, 0], threads });
     const rng = new Rng(3);
     for (let i = 0; i < n; i++) {
-      const e = addBody(world, { position: [rng.range(-5, 5), rng.range(0, 10), rng.range(-5, 5)], velocity: [rng.range(-1, 1), 0, 0], mass: rng.range(0.5, 2) });
+      const e = addBody(world, {
+        position: [rng.range(-5, 5), rng.range(0, 10), rng.range(-5, 5)],
+        velocity: [rng.range(-1, 1), 0, 0],
+        mass: rng.range(0.5, 2),
+      });
       addComponent(world, e, world.components.GravityScale);
       world.components.GravityScale.value[e] = rng.range(0, 2);
     }
@@ -78,21 +94,25 @@ test('3D bodies with forces and gravity scale: 1 and 2 threads give identical st
   // (here (s - 1) m g) moves by plain semi-implicit Euler under the constant acceleration a = -s g, whose
   // k steps from rest in y move by a h^2 k (k + 1) / 2. 1e-9 m covers rounding.
   const rng = new Rng(3);
-  const y0 = (rng.range(-5, 5), rng.range(0, 10));
-  const h = 1 / 60, k = 10;
+  rng.range(-5, 5);
+  const y0 = rng.range(0, 10);
+  const h = 1 / 60,
+    k = 10;
   const s = world.components.GravityScale.value[1]!;
   expect(s).not.toBe(1);
   const expected = y0 - (s * 9.81 * h * h * k * (k + 1)) / 2;
   expect(world.components.Position.y[1]!).toBeCloseTo(expected, 9);
 }, 60_000);
 
-test('a worker that throws surfaces its error in the main thread with the system\'s name', () => {
+test("a worker that throws surfaces its error in the main thread with the system's name", () => {
   const world = make({ capacity: 10, threads: 2 });
   const pool = world.threadPool!;
   expect(pool.usable()).toBe(true);
   const out = sharedFloat64(1000);
   // Worker (thread 1) owns indices 500..999; index 700 throws there.
-  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, 700], 1000, null)).toThrow(/^testSystem: a worker thread failed: test kernel: index 700/);
+  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, 700], 1000, null)).toThrow(
+    /^testSystem: a worker thread failed: test kernel: index 700/,
+  );
   // The pool still works after a failure, and both halves are written.
   expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
@@ -106,12 +126,17 @@ test('a kernel takes up to 64 parameters; more are refused before anything runs 
   const out = sharedFloat64(1000).fill(-1);
   // 64 parameters: the kernel reads P[0] (2) and P[1] (no bad index); the rest are padding it passes by.
   const params = new Float64Array(64).fill(7);
-  params[0] = 2; params[1] = -1;
+  params[0] = 2;
+  params[1] = -1;
   expect(pool.run('testSystem', KERNEL.test, [out], params, 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
   out.fill(-1);
-  expect(() => pool.run('testSystem', KERNEL.test, [out], new Float64Array(65), 1000, null)).toThrow(/^testSystem: a kernel takes at most 64 parameters, got 65$/);
-  expect(() => pool.start('testSystem', KERNEL.test, [out], new Float64Array(65), 1000)).toThrow(/^testSystem: a kernel takes at most 64 parameters, got 65$/);
+  expect(() => pool.run('testSystem', KERNEL.test, [out], new Float64Array(65), 1000, null)).toThrow(
+    /^testSystem: a kernel takes at most 64 parameters, got 65$/,
+  );
+  expect(() => pool.start('testSystem', KERNEL.test, [out], new Float64Array(65), 1000)).toThrow(
+    /^testSystem: a kernel takes at most 64 parameters, got 65$/,
+  );
   expect(out[999]).toBe(-1);
 });
 
@@ -136,7 +161,9 @@ test('start runs a kernel on a worker while the caller goes on; join (or the nex
   expect(() => pool.join()).toThrow(/^cutSystem: a worker thread failed: test kernel: index 10/);
   // A run joins a started kernel first, and reports its error.
   pool.start('cutSystem', KERNEL.test, [out], [1, 20], 1000);
-  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toThrow(/^cutSystem: a worker thread failed: test kernel: index 20/);
+  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toThrow(
+    /^cutSystem: a worker thread failed: test kernel: index 20/,
+  );
   pool.start('cutSystem', KERNEL.test, [out], [5, -1], 1000);
   expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
@@ -163,21 +190,30 @@ test('threads: bad values are refused; disposeWorld stops the workers and the wo
 test('a Node process with a threaded world exits by itself when its script ends, disposed or not', async () => {
   const dir = mkdtempSync(join(tmpdir(), 'bitphysics-threads-'));
   const entry = join(dir, 'run.ts');
-  writeFileSync(entry, [
-    `import { addParticle, createPhysicsWorld, disposeWorld, stepMany } from '@bitphysics/physics';`,
-    `for (const dispose of [false, true]) {`,
-    `  const world = createPhysicsWorld({ capacity: 70000, threads: 2, interpolation: false });`,
-    `  for (let i = 0; i < 70000; i++) addParticle(world, { position: [i, 0] });`,
-    `  stepMany(world, 3);`,
-    `  if (world.threadPool.runs === 0) throw new Error('no parallel loop ran');`,
-    `  if (dispose) disposeWorld(world);`,
-    `}`,
-    `console.log('done');`,
-  ].join('\n'));
+  writeFileSync(
+    entry,
+    [
+      `import { addParticle, createPhysicsWorld, disposeWorld, stepMany } from '@bitphysics/physics';`,
+      `for (const dispose of [false, true]) {`,
+      `  const world = createPhysicsWorld({ capacity: 70000, threads: 2, interpolation: false });`,
+      `  for (let i = 0; i < 70000; i++) addParticle(world, { position: [i, 0] });`,
+      `  stepMany(world, 3);`,
+      `  if (world.threadPool.runs === 0) throw new Error('no parallel loop ran');`,
+      `  if (dispose) disposeWorld(world);`,
+      `}`,
+      `console.log('done');`,
+    ].join('\n'),
+  );
   const out = join(dir, 'run.mjs');
   await build({
-    entryPoints: [entry], outfile: out, bundle: true, platform: 'node', format: 'esm', logLevel: 'silent',
-    conditions: ['bitphysics-source'], nodePaths: [join(__dirname, '../../node_modules')],
+    entryPoints: [entry],
+    outfile: out,
+    bundle: true,
+    platform: 'node',
+    format: 'esm',
+    logLevel: 'silent',
+    conditions: ['bitphysics-source'],
+    nodePaths: [join(__dirname, '../../node_modules')],
   });
   // A process held open by its workers would hit the timeout (execFile then rejects).
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 30_000 });

@@ -4,11 +4,15 @@
  * caller's name, the option and the value (the contract of every public API here).
  */
 import { describe, expect, it } from 'vitest';
-import { resolveOptions, type OptionRules } from '../../packages/render-common/src/index';
+import { type OptionRules, resolveOptions } from '../../packages/render-common/src/index';
 import { resolveDebugOptions } from '../../packages/render-three/src/index';
 
 describe('resolveOptions', () => {
-  interface Opts { on?: boolean; scale?: number; most?: number }
+  interface Opts {
+    on?: boolean;
+    scale?: number;
+    most?: number;
+  }
   const rules: OptionRules<Opts> = {
     on: { kind: 'boolean', default: true },
     scale: { kind: 'positive', default: 0.5 },
@@ -30,12 +34,27 @@ describe('resolveOptions', () => {
 describe('render-three resolveDebugOptions', () => {
   it('has the documented defaults', () => {
     expect(resolveDebugOptions('WorldRenderer3D.setDebug')).toEqual({
-      axes: true, velocities: true, velocityScale: 0.1, angularVelocities: false, angularVelocityScale: 0.1, maxBodies: 2000,
-      contacts: true, normalLength: 0.25, maxContacts: 4000, pointSize: 5, springs: true, joints: true, planes: true,
-      fields: true, emitters: true, maxScenery: 20_000,
+      axes: true,
+      velocities: true,
+      velocityScale: 0.1,
+      angularVelocities: false,
+      angularVelocityScale: 0.1,
+      maxBodies: 2000,
+      contacts: true,
+      normalLength: 0.25,
+      maxContacts: 4000,
+      pointSize: 5,
+      springs: true,
+      joints: true,
+      planes: true,
+      fields: true,
+      emitters: true,
+      maxScenery: 20_000,
     });
   });
   it('refuses a bad value naming it', () => {
-    expect(() => resolveDebugOptions('WorldRenderer3D.setDebug', { maxBodies: 100_001 })).toThrow(/WorldRenderer3D\.setDebug: debug\.maxBodies/);
+    expect(() => resolveDebugOptions('WorldRenderer3D.setDebug', { maxBodies: 100_001 })).toThrow(
+      /WorldRenderer3D\.setDebug: debug\.maxBodies/,
+    );
   });
 });

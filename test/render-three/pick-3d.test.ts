@@ -4,9 +4,10 @@
  * capsule with colliders (the physics' ray cast) and a body drawn without a collider (three.js' ray
  * cast against its instanced inertia box). Node only: three.js scene objects need no GL context.
  */
-import { describe, expect, it } from 'vitest';
+
+import { addBody, addShape3D, createPhysicsWorld, type PhysicsWorld, setPosition } from '@bitphysics/physics';
 import { PerspectiveCamera, Scene, Vector3 } from 'three';
-import { addBody, addShape3D, createPhysicsWorld, setPosition, type PhysicsWorld } from '@bitphysics/physics';
+import { describe, expect, it } from 'vitest';
 import { WorldRenderer3D } from '../../packages/render-three/src/index';
 
 /** A renderer whose root is turned in the scene (Euler XYZ: -90 degrees about x, 0.3 rad about z) and moved to (1, 2, 3). */
@@ -40,7 +41,7 @@ function expectNormal(got: [number, number, number] | undefined, n: [number, num
 }
 
 describe('render-three: pick normals in the physics frame', () => {
-  it('box, cylinder and capsule colliders: a box face, the cylinder\'s flat cap and the capsule\'s side', () => {
+  it("box, cylinder and capsule colliders: a box face, the cylinder's flat cap and the capsule's side", () => {
     const { w, r } = setup();
     const box = addBody(w, { position: [0, 0, -3] });
     addShape3D(w, box, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
@@ -51,11 +52,14 @@ describe('render-three: pick normals in the physics frame', () => {
     r.render(1);
     // The box's +z face (seen from the origin), the cylinder's flat top, the capsule's side.
     const hb = r.pick(0, 0, cameraAt(r, [0, 0, 0], [0, 0, -3]));
-    expect(hb?.eid).toBe(box); expectNormal(hb?.normal, [0, 0, 1]);
+    expect(hb?.eid).toBe(box);
+    expectNormal(hb?.normal, [0, 0, 1]);
     const hc = r.pick(0, 0, cameraAt(r, [5, 4, 0.01], [5, 0, 0]));
-    expect(hc?.eid).toBe(cyl); expectNormal(hc?.normal, [0, 1, 0]);
+    expect(hc?.eid).toBe(cyl);
+    expectNormal(hc?.normal, [0, 1, 0]);
     const hs = r.pick(0, 0, cameraAt(r, [4, 6, 0], [0, 6, 0]));
-    expect(hs?.eid).toBe(cap); expectNormal(hs?.normal, [1, 0, 0]);
+    expect(hs?.eid).toBe(cap);
+    expectNormal(hs?.normal, [1, 0, 0]);
     // Point on the capsule's side: x = r.
     expect(hs!.point[0]).toBeCloseTo(0.3, 9);
     r.destroy();
@@ -68,7 +72,12 @@ describe('render-three: pick normals in the physics frame', () => {
     const body = addBody(w, { position: [0, 0, -3] });
     addShape3D(w, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
     const t = 0.3;
-    addShape3D(w, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5], offset: [2, 0, 0], rotation: [Math.sin(t / 2), 0, 0, Math.cos(t / 2)] });
+    addShape3D(w, body, {
+      type: 'box',
+      halfExtents: [0.5, 0.5, 0.5],
+      offset: [2, 0, 0],
+      rotation: [Math.sin(t / 2), 0, 0, Math.cos(t / 2)],
+    });
     r.render(1);
     // Straight down -z at the part's centre line: its +z face, turned to (0, -sin t, cos t), at z = -3 + 0.5 / cos t.
     const hit = r.pick(0, 0, cameraAt(r, [2, 0, 0], [2, 0, -3]));
@@ -101,7 +110,7 @@ describe('render-three: pick normals in the physics frame', () => {
     r.destroy();
   });
 
-  it('a body drawn without a collider (its inertia box): the face normal in the physics frame, not the scene\'s', () => {
+  it("a body drawn without a collider (its inertia box): the face normal in the physics frame, not the scene's", () => {
     const { w, r } = setup();
     // A plain rigid body: principal moments of a 1 x 1 x 1 m, 6 kg cube (m s^2 / 6 = 1): drawn as that cube.
     const body = addBody(w, { position: [0, 0, -3], mass: 6, inertia: [1, 1, 1] });

@@ -4,12 +4,22 @@
  * compounds keep their parts where they were placed; picking goes through the physics' ray cast;
  * `BodyDrag3D` holds a body at the pointer with a spring; the debug layer draws 3D joints and contacts.
  */
-import { describe, expect, it } from 'vitest';
-import { Matrix4, PerspectiveCamera, Quaternion, Vector3 } from 'three';
+
 import {
-  addBallJoint3D, addBody, addHeightField3D, addHingeJoint3D, addPlane, addShape3D, createPhysicsWorld, isAlive, step, type PhysicsWorld,
+  addBallJoint3D,
+  addBody,
+  addHeightField3D,
+  addHingeJoint3D,
+  addPlane,
+  addShape3D,
+  createPhysicsWorld,
+  isAlive,
+  type PhysicsWorld,
+  step,
 } from '@bitphysics/physics';
-import { BodyDrag3D, WorldRenderer3D, type ShapeLayer3D } from '../../packages/render-three/src/index';
+import { Matrix4, PerspectiveCamera, Quaternion, Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+import { BodyDrag3D, type ShapeLayer3D, WorldRenderer3D } from '../../packages/render-three/src/index';
 
 function world3(capacity = 64, gravity: [number, number, number] = [0, 0, 0]): PhysicsWorld {
   return createPhysicsWorld({ dimensions: 3, capacity, gravity });
@@ -22,7 +32,9 @@ function instance(r: WorldRenderer3D, prefix: string, i = 0): { p: Vector3; q: Q
   expect(mesh, prefix).toBeDefined();
   const m = new Matrix4();
   mesh.getMatrixAt(i, m);
-  const p = new Vector3(), q = new Quaternion(), s = new Vector3();
+  const p = new Vector3(),
+    q = new Quaternion(),
+    s = new Vector3();
   m.decompose(p, q, s);
   return { p, q, s, count: mesh.count };
 }
@@ -39,7 +51,15 @@ describe('render-three: 3D shapes', () => {
     const cyl = addBody(w, { position: [0, 3, 0] });
     addShape3D(w, cyl, { type: 'cylinder', radius: 0.2, halfHeight: 0.4 });
     const hull = addBody(w, { position: [0, -3, 0] });
-    addShape3D(w, hull, { type: 'hull', vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]] });
+    addShape3D(w, hull, {
+      type: 'hull',
+      vertices: [
+        [0, 0, 0],
+        [1, 0, 0],
+        [0, 1, 0],
+        [0, 0, 1],
+      ],
+    });
     r.render(1);
     expect(r.stats.shaped).toBe(4);
     expect(r.stats.boxes).toBe(0); // not drawn as equivalent-inertia boxes any more
@@ -51,7 +71,11 @@ describe('render-three: 3D shapes', () => {
     const corner = new Vector3(0.5, 0.5, 0.5).multiply(b.s).applyQuaternion(b.q);
     const want = new Vector3(0.5, 0.25, 0.1).applyQuaternion(new Quaternion(q[0], q[1], q[2], q[3]));
     const sorted = (v: Vector3): number[] => [Math.abs(v.x), Math.abs(v.y), Math.abs(v.z)].sort();
-    expect(sorted(corner).map((x, i) => Math.abs(x - sorted(want)[i]!)).every((d) => d < 1e-6)).toBe(true);
+    expect(
+      sorted(corner)
+        .map((x, i) => Math.abs(x - sorted(want)[i]!))
+        .every((d) => d < 1e-6),
+    ).toBe(true);
     expect(instance(r, 'shapes-sphere').s.x).toBeCloseTo(0.3, 6);
     const c = instance(r, 'shapes-cylinder');
     expect([c.s.x, c.s.y, c.s.z].sort()).toEqual([expect.closeTo(0.2, 6), expect.closeTo(0.2, 6), expect.closeTo(0.4, 6)]);
@@ -170,7 +194,15 @@ describe('render-three: 3D shapes', () => {
 
   it('draws a height field as one mesh through its grid points (the physics vertices)', () => {
     const w = world3();
-    addHeightField3D(w, { heights: [[0, 1, 0], [1, 2, 1], [0, 1, 0]], spacing: [2, 3], origin: [-2, 0, -3] });
+    addHeightField3D(w, {
+      heights: [
+        [0, 1, 0],
+        [1, 2, 1],
+        [0, 1, 0],
+      ],
+      spacing: [2, 3],
+      origin: [-2, 0, -3],
+    });
     const r = new WorldRenderer3D(w, { lights: false });
     r.render(1);
     expect(r.stats.shapes.triangleMeshes).toBe(1);

@@ -1,9 +1,9 @@
 import { parseArgs } from 'node:util';
-import { UsageError } from './errors.js';
-import { ENGINES, OURS } from './engines/index.js';
-import { sceneNames } from './scenes/index.js';
 import { catalogEntry, catalogNames, paramDeclarations } from './catalog.js';
+import { ENGINES, OURS } from './engines/index.js';
+import { UsageError } from './errors.js';
 import { describeParam, parseParamValue } from './params.js';
+import { sceneNames } from './scenes/index.js';
 
 /** The command line, parsed and checked. */
 export interface BenchArgs {
@@ -126,7 +126,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
   const declarations = paramDeclarations();
   const options: Record<string, { type: 'string' | 'boolean'; short?: string }> = { ...BUILTIN_OPTIONS };
   for (const param of declarations.keys()) {
-    if (Object.prototype.hasOwnProperty.call(options, param)) throw new Error(`scene parameter --${param} clashes with a CLI flag`);
+    if (Object.hasOwn(options, param)) throw new Error(`scene parameter --${param} clashes with a CLI flag`);
     options[param] = { type: 'string' };
   }
   let values: Record<string, string | boolean | undefined>;
@@ -136,7 +136,9 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
     throw new UsageError((error as Error).message);
   }
   const str = (k: string): string | undefined => values[k] as string | undefined;
-  const list = values.list === true, help = values.help === true, json = values.json === true;
+  const list = values.list === true,
+    help = values.help === true,
+    json = values.json === true;
 
   const scene = str('scene') ?? DEFAULTS.scene;
   const entry = catalogEntry(scene);
@@ -147,8 +149,8 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
   if (count > entry.maxCount) {
     throw new UsageError(`--count ${count} is above the limit of scene "${scene}" (${entry.maxCount})`);
   }
-  const steps = str('steps') === undefined ? entry.defaults.steps ?? DEFAULTS.steps : parseInteger('--steps', str('steps')!, 1);
-  const warmup = str('warmup') === undefined ? entry.defaults.warmup ?? DEFAULTS.warmup : parseInteger('--warmup', str('warmup')!, 0);
+  const steps = str('steps') === undefined ? (entry.defaults.steps ?? DEFAULTS.steps) : parseInteger('--steps', str('steps')!, 1);
+  const warmup = str('warmup') === undefined ? (entry.defaults.warmup ?? DEFAULTS.warmup) : parseInteger('--warmup', str('warmup')!, 0);
   const threads = str('threads') === undefined ? 1 : parseInteger('--threads', str('threads')!, 1);
   if (threads > 64) throw new UsageError(`--threads must be at most 64, got ${threads}`);
   const block = str('block') === undefined ? DEFAULTS.block : parseInteger('--block', str('block')!, 1);
@@ -189,7 +191,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       const name = raw.trim();
       if (name === '') throw new UsageError(`--vs takes a comma-separated list of engines, got ${JSON.stringify(str('vs'))}`);
       const adapter = ENGINES[name];
-      if (!adapter || !Object.prototype.hasOwnProperty.call(ENGINES, name)) {
+      if (!adapter || !Object.hasOwn(ENGINES, name)) {
         throw new UsageError(`unknown engine ${JSON.stringify(name)}; engines: ${Object.keys(ENGINES).join(', ')}`);
       }
       if (!adapter.supports(scene)) {
@@ -199,7 +201,25 @@ export function parseBenchArgs(argv: readonly string[]): BenchArgs {
       if (!engines.includes(name)) engines.push(name);
     }
   }
-  return { list, help, json, hash: values.hash === true, soak: values.soak === true, threads, times: values.times === true, sameIsolate: values['same-isolate'] === true, scene, study, count, steps, warmup, seed, block, engines, params };
+  return {
+    list,
+    help,
+    json,
+    hash: values.hash === true,
+    soak: values.soak === true,
+    threads,
+    times: values.times === true,
+    sameIsolate: values['same-isolate'] === true,
+    scene,
+    study,
+    count,
+    steps,
+    warmup,
+    seed,
+    block,
+    engines,
+    params,
+  };
 }
 
 /**

@@ -1,5 +1,5 @@
-import type { SceneParam } from './scenes/types.js';
 import { resolveScene, sceneNames } from './scenes/index.js';
+import type { SceneParam } from './scenes/types.js';
 import { resolveStudy, STUDIES } from './studies/index.js';
 
 /**
@@ -38,14 +38,24 @@ export function catalogEntry(name: string): CatalogEntry | undefined {
   if (scene && study) throw new Error(`bench study "${name}" has the name of a physics scene; rename the study`);
   if (scene) {
     return {
-      name, kind: 'scene', description: scene.definition.description, defaultCount: scene.definition.defaultCount,
-      maxCount: scene.bench.maxCount, defaults: scene.bench.defaults ?? {}, params: scene.bench.params ?? {},
+      name,
+      kind: 'scene',
+      description: scene.definition.description,
+      defaultCount: scene.definition.defaultCount,
+      maxCount: scene.bench.maxCount,
+      defaults: scene.bench.defaults ?? {},
+      params: scene.bench.params ?? {},
     };
   }
   if (study) {
     return {
-      name, kind: 'study', description: study.description, defaultCount: study.defaultCount, maxCount: study.maxCount,
-      defaults: study.defaults, params: study.params ?? {},
+      name,
+      kind: 'study',
+      description: study.description,
+      defaultCount: study.defaultCount,
+      maxCount: study.maxCount,
+      defaults: study.defaults,
+      params: study.params ?? {},
     };
   }
   return undefined;

@@ -15,18 +15,18 @@
 import { realpathSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import cliProgress from 'cli-progress';
-import { DEFAULTS, parseBenchArgs, USAGE, type BenchArgs } from './args.js';
-import { UsageError, USAGE_EXIT_CODE } from './errors.js';
-import { ENGINES, enginesFor, OURS } from './engines/index.js';
-import { bitphysicsThreadedEngine } from './engines/bitphysics.js';
-import { resolveScene } from './scenes/index.js';
-import { resolveStudy } from './studies/index.js';
+import { type BenchArgs, DEFAULTS, parseBenchArgs, USAGE } from './args.js';
 import { catalogEntry, catalogNames } from './catalog.js';
-import { describeParam } from './params.js';
-import { runSoak } from './soak.js';
-import { runBenchmark, SceneBuildError } from './runner.js';
+import { bitphysicsThreadedEngine } from './engines/bitphysics.js';
+import { ENGINES, enginesFor, OURS } from './engines/index.js';
+import { USAGE_EXIT_CODE, UsageError } from './errors.js';
 import { isolated } from './isolation/isolated-engine.js';
+import { describeParam } from './params.js';
 import { humanReport, jsonRecords, studyReport, table } from './report.js';
+import { runBenchmark, SceneBuildError } from './runner.js';
+import { resolveScene } from './scenes/index.js';
+import { runSoak } from './soak.js';
+import { resolveStudy } from './studies/index.js';
 
 /** Where the CLI writes: injectable so the CLI can run inside another program. */
 export interface CliIO {
@@ -70,7 +70,14 @@ export async function main(argv: readonly string[], io: CliIO = processIO): Prom
   }
   if (args.soak && !args.study) {
     const steps = argv.some((a) => a === '--steps' || a.startsWith('--steps=')) ? args.steps : 100_000;
-    runSoak({ scene: args.scene, count: args.count, seed: args.seed, steps, every: Math.min(10_000, steps), print: (line) => io.out(line) });
+    runSoak({
+      scene: args.scene,
+      count: args.count,
+      seed: args.seed,
+      steps,
+      every: Math.min(10_000, steps),
+      print: (line) => io.out(line),
+    });
     return 0;
   }
   return args.study ? runStudy(args, io) : run(args, io);
@@ -89,15 +96,27 @@ function listScenes(json: boolean, io: CliIO): void {
     const engines = s.kind === 'study' ? ['bitphysics (study)'] : enginesFor(name);
     const params = Object.entries(s.params);
     if (json) {
-      io.out(JSON.stringify({
-        scene: name, kind: s.kind, description: s.description, engines: s.kind === 'study' ? [OURS] : engines,
-        defaultCount: s.defaultCount, maxCount: s.maxCount, defaultSteps: s.defaults.steps ?? DEFAULTS.steps,
-        defaultWarmup: s.defaults.warmup ?? DEFAULTS.warmup, params: Object.fromEntries(params),
-      }));
+      io.out(
+        JSON.stringify({
+          scene: name,
+          kind: s.kind,
+          description: s.description,
+          engines: s.kind === 'study' ? [OURS] : engines,
+          defaultCount: s.defaultCount,
+          maxCount: s.maxCount,
+          defaultSteps: s.defaults.steps ?? DEFAULTS.steps,
+          defaultWarmup: s.defaults.warmup ?? DEFAULTS.warmup,
+          params: Object.fromEntries(params),
+        }),
+      );
     } else {
       rows.push([
-        name, engines.join(', '), String(s.defaultCount), String(s.maxCount),
-        params.map(([p, spec]) => `--${p} ${spec.default}`).join(' ') || '-', s.description,
+        name,
+        engines.join(', '),
+        String(s.defaultCount),
+        String(s.maxCount),
+        params.map(([p, spec]) => `--${p} ${spec.default}`).join(' ') || '-',
+        s.description,
       ]);
       for (const [p, spec] of params) paramLines.push(`  ${describeParam(p, spec)} [--scene ${name}]`);
     }
@@ -107,7 +126,12 @@ function listScenes(json: boolean, io: CliIO): void {
     if (paramLines.length > 0) io.out(['', 'scene parameters:', ...paramLines].join('\n'));
     io.out('');
     io.out('engines:');
-    io.out(table(Object.values(ENGINES).map((e) => [`  ${e.name}`, e.description]), ['l', 'l']));
+    io.out(
+      table(
+        Object.values(ENGINES).map((e) => [`  ${e.name}`, e.description]),
+        ['l', 'l'],
+      ),
+    );
   }
 }
 
@@ -121,7 +145,11 @@ function runStudy(args: BenchArgs, io: CliIO): number {
   const showProgress = io.isTTY && !args.json;
   try {
     const result = study.run({
-      count: args.count, steps: args.steps, warmup: args.warmup, seed: args.seed, params: args.params,
+      count: args.count,
+      steps: args.steps,
+      warmup: args.warmup,
+      seed: args.seed,
+      params: args.params,
       onProgress: showProgress ? (what) => io.err(`${args.scene}: ${what}`) : undefined,
     });
     const hasParams = Object.keys(args.params).length > 0;
@@ -130,7 +158,15 @@ function runStudy(args: BenchArgs, io: CliIO): number {
         io.out(JSON.stringify({ scene: args.scene, ...record, seed: args.seed, ...(hasParams ? { params: args.params } : {}) }));
       }
     } else {
-      io.out(studyReport(args.scene, result, { count: args.count, steps: args.steps, warmup: args.warmup, seed: args.seed, params: args.params }));
+      io.out(
+        studyReport(args.scene, result, {
+          count: args.count,
+          steps: args.steps,
+          warmup: args.warmup,
+          seed: args.seed,
+          params: args.params,
+        }),
+      );
     }
     return 0;
   } catch (error) {
@@ -149,21 +185,33 @@ async function run(args: BenchArgs, io: CliIO): Promise<number> {
   const showBar = io.isTTY && !args.json;
   const bar = showBar
     ? new cliProgress.SingleBar(
-      { format: `${args.scene} [{bar}] {percentage}% | {value}/{total} steps | {duration_formatted}`, stream: process.stderr, hideCursor: true, clearOnComplete: true },
-      cliProgress.Presets.shades_classic,
-    )
+        {
+          format: `${args.scene} [{bar}] {percentage}% | {value}/{total} steps | {duration_formatted}`,
+          stream: process.stderr,
+          hideCursor: true,
+          clearOnComplete: true,
+        },
+        cliProgress.Presets.shades_classic,
+      )
     : undefined;
   let started = false;
   try {
     const result = await runBenchmark(
-      adapters, scene.bench, { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash, threads: args.threads },
+      adapters,
+      scene.bench,
+      { scene: args.scene, count: args.count, seed: args.seed, params: args.params, hash: args.hash, threads: args.threads },
       {
-        steps: args.steps, warmup: args.warmup, block: args.block,
+        steps: args.steps,
+        warmup: args.warmup,
+        block: args.block,
         onProgress: bar
           ? (done, total) => {
-            if (!started) { bar.start(total, 0); started = true; }
-            bar.update(done);
-          }
+              if (!started) {
+                bar.start(total, 0);
+                started = true;
+              }
+              bar.update(done);
+            }
           : undefined,
       },
     );

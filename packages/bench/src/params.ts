@@ -1,5 +1,5 @@
-import type { SceneParam } from './scenes/types.js';
 import { UsageError } from './errors.js';
+import type { SceneParam } from './scenes/types.js';
 
 /**
  * Parses and checks the value of a scene parameter flag: a finite decimal number (underscores allowed

@@ -37,7 +37,9 @@ export function maxBallOverlap(positions: Float64Array, radius: number | Float64
   let table = 16;
   while (table < 2 * n) table *= 2;
   const mask = table - 1;
-  const cx = new Int32Array(n), cy = new Int32Array(n), cz = new Int32Array(n);
+  const cx = new Int32Array(n),
+    cy = new Int32Array(n),
+    cz = new Int32Array(n);
   const start = new Int32Array(table + 1);
   const bucket = new Int32Array(n);
   for (let i = 0; i < n; i++) {
@@ -54,23 +56,31 @@ export function maxBallOverlap(positions: Float64Array, radius: number | Float64
   const sorted = new Int32Array(n);
   for (let i = 0; i < n; i++) sorted[cursor[bucket[i]!]!++] = i;
 
-  let deepest = 0, deepestPercent = 0, overlapping = 0;
+  let deepest = 0,
+    deepestPercent = 0,
+    overlapping = 0;
   const zRange = dimensions === 3 ? 1 : 0;
   for (let i = 0; i < n; i++) {
     const o = i * dimensions;
-    const x = positions[o]!, y = positions[o + 1]!, z = dimensions === 3 ? positions[o + 2]! : 0;
+    const x = positions[o]!,
+      y = positions[o + 1]!,
+      z = dimensions === 3 ? positions[o + 2]! : 0;
     const ri = r(i);
     for (let dz = -zRange; dz <= zRange; dz++)
       for (let dy = -1; dy <= 1; dy++)
         for (let dx = -1; dx <= 1; dx++) {
-          const nx = cx[i]! + dx, ny = cy[i]! + dy, nz = cz[i]! + dz;
+          const nx = cx[i]! + dx,
+            ny = cy[i]! + dy,
+            nz = cz[i]! + dz;
           const b = hashCell(nx, ny, nz) & mask;
           for (let q = start[b]!, end = start[b + 1]!; q < end; q++) {
             const j = sorted[q]!;
             // Each unordered pair once; skip other cells sharing the bucket.
             if (j <= i || cx[j] !== nx || cy[j] !== ny || cz[j] !== nz) continue;
             const p = j * dimensions;
-            const ex = positions[p]! - x, ey = positions[p + 1]! - y, ez = dimensions === 3 ? positions[p + 2]! - z : 0;
+            const ex = positions[p]! - x,
+              ey = positions[p + 1]! - y,
+              ez = dimensions === 3 ? positions[p + 2]! - z : 0;
             const rj = r(j);
             const overlap = ri + rj - Math.sqrt(ex * ex + ey * ey + ez * ez);
             if (overlap > 1e-9) overlapping++;
@@ -89,7 +99,11 @@ export function maxBallOverlap(positions: Float64Array, radius: number | Float64
  * Balls whose centre left the box count with their full distance outside plus their radius.
  */
 export function maxWallPenetration(
-  positions: Float64Array, radius: number | Float64Array, dimensions: 2 | 3, min: ArrayLike<number>, max: ArrayLike<number>,
+  positions: Float64Array,
+  radius: number | Float64Array,
+  dimensions: 2 | 3,
+  min: ArrayLike<number>,
+  max: ArrayLike<number>,
 ): number {
   const n = Math.floor(positions.length / dimensions);
   let deepest = 0;
@@ -97,7 +111,8 @@ export function maxWallPenetration(
     const ri = typeof radius === 'number' ? radius : radius[i]!;
     for (let k = 0; k < dimensions; k++) {
       const p = positions[i * dimensions + k]!;
-      const low = ri - (p - min[k]!), high = ri - (max[k]! - p);
+      const low = ri - (p - min[k]!),
+        high = ri - (max[k]! - p);
       if (low > deepest) deepest = low;
       if (high > deepest) deepest = high;
     }

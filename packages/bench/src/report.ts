@@ -1,9 +1,9 @@
-import { OURS } from './engines/index.js';
+import { amdahlSpeedup, PROJECTED_CORES, serialFraction } from './amdahl.js';
 import { THREADED } from './engines/bitphysics.js';
+import { OURS } from './engines/index.js';
 import type { BenchResult, EngineResult } from './runner.js';
 import type { BenchScene, ExtraValue } from './scenes/types.js';
 import type { StudyResult } from './studies/types.js';
-import { amdahlSpeedup, PROJECTED_CORES, serialFraction } from './amdahl.js';
 
 /** A peer's time ratio against our engine. */
 export interface Ratio {
@@ -50,7 +50,9 @@ export function ratios(result: BenchResult): Ratio[] {
   return result.engines
     .filter((e) => e.engine !== OURS)
     .map((e) => ({
-      peer: e.engine, ratio: ours.msPerStep.median / e.msPerStep.median, meanRatio: ours.msPerStep.mean / e.msPerStep.mean,
+      peer: e.engine,
+      ratio: ours.msPerStep.median / e.msPerStep.median,
+      meanRatio: ours.msPerStep.mean / e.msPerStep.mean,
       cpuRatio: ours.cpuMsPerStep / e.cpuMsPerStep,
     }));
 }
@@ -82,8 +84,11 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
       count: result.scene.count,
       steps: result.steps,
       msPerStep: {
-        median: sig(e.msPerStep.median), min: sig(e.msPerStep.min), max: sig(e.msPerStep.max),
-        mean: sig(e.msPerStep.mean), p90: sig(e.msPerStep.p90),
+        median: sig(e.msPerStep.median),
+        min: sig(e.msPerStep.min),
+        max: sig(e.msPerStep.max),
+        mean: sig(e.msPerStep.mean),
+        p90: sig(e.msPerStep.p90),
       },
       cpuMsPerStep: sig(e.cpuMsPerStep),
       contacts: e.contacts,
@@ -113,7 +118,11 @@ export function jsonRecords(result: BenchResult, options: { times?: boolean } = 
 /** Formats a rate with an SI prefix: 1.75e6 -> "1.75 M". */
 export function formatRate(value: number): string {
   if (!Number.isFinite(value)) return String(value);
-  const units: Array<[number, string]> = [[1e9, 'G'], [1e6, 'M'], [1e3, 'k']];
+  const units: Array<[number, string]> = [
+    [1e9, 'G'],
+    [1e6, 'M'],
+    [1e3, 'k'],
+  ];
   for (const [f, u] of units) if (Math.abs(value) >= f) return `${(value / f).toPrecision(3)} ${u}`;
   return value.toPrecision(3);
 }
@@ -129,10 +138,18 @@ export function formatMs(ms: number): string {
  */
 export function table(rows: readonly (readonly string[])[], align?: readonly ('l' | 'r')[]): string {
   const widths: number[] = [];
-  for (const row of rows) row.forEach((cell, i) => { widths[i] = Math.max(widths[i] ?? 0, cell.length); });
+  for (const row of rows)
+    row.forEach((cell, i) => {
+      widths[i] = Math.max(widths[i] ?? 0, cell.length);
+    });
   const left = (i: number): boolean => (align ? align[i] === 'l' : i === 0);
   return rows
-    .map((row) => row.map((cell, i) => (left(i) ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!))).join('  ').trimEnd())
+    .map((row) =>
+      row
+        .map((cell, i) => (left(i) ? cell.padEnd(widths[i]!) : cell.padStart(widths[i]!)))
+        .join('  ')
+        .trimEnd(),
+    )
     .join('\n');
 }
 
@@ -152,7 +169,19 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
     '',
   );
   const columns = scene.columns ?? [];
-  const header = ['engine', 'median ms', 'mean ms', 'cpu ms', 'min ms', 'max ms', 'body-steps/s', 'contacts', 'setup ms', 'mem MB', ...columns.map((c) => c.label)];
+  const header = [
+    'engine',
+    'median ms',
+    'mean ms',
+    'cpu ms',
+    'min ms',
+    'max ms',
+    'body-steps/s',
+    'contacts',
+    'setup ms',
+    'mem MB',
+    ...columns.map((c) => c.label),
+  ];
   const rows: string[][] = [header];
   for (const e of result.engines) {
     rows.push([
@@ -174,19 +203,32 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
   const single = result.engines.find((e) => e.engine === OURS);
   const r = ratios(result).filter((x) => x.peer !== THREADED);
   if (r.length > 0) {
-    lines.push('', `time ratio ours/peer (< 1: bitphysics is faster; median step, mean step = whole timed run of ${result.steps} steps, ` +
-      `and process CPU time of that run; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus):`);
-    lines.push(table([['', 'median', 'mean', 'cpu'], ...r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3), x.meanRatio.toFixed(3), x.cpuRatio.toFixed(3)])]));
+    lines.push(
+      '',
+      `time ratio ours/peer (< 1: bitphysics is faster; median step, mean step = whole timed run of ${result.steps} steps, ` +
+        `and process CPU time of that run; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus):`,
+    );
+    lines.push(
+      table([
+        ['', 'median', 'mean', 'cpu'],
+        ...r.map((x) => [`  ${OURS}/${x.peer}`, x.ratio.toFixed(3), x.meanRatio.toFixed(3), x.cpuRatio.toFixed(3)]),
+      ]),
+    );
   }
   if (threaded && single) {
     const threads = result.scene.threads ?? 1;
     const speedup = single.msPerStep.median / threaded.msPerStep.median;
-    lines.push('', `speedup with threads: ${threads}: ${speedup.toFixed(3)} ` +
-      `(single-threaded median / threaded median; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus)`);
+    lines.push(
+      '',
+      `speedup with threads: ${threads}: ${speedup.toFixed(3)} ` +
+        `(single-threaded median / threaded median; load average ${result.load.start.toFixed(2)} at start, ${result.load.end.toFixed(2)} at end, ${result.load.cpus} cpus)`,
+    );
     const f = serialFraction(speedup, threads);
     if (Number.isFinite(f)) {
-      lines.push(`serial fraction ${f.toFixed(3)} (Karp-Flatt: (1/speedup - 1/${threads}) / (1 - 1/${threads}), overheads included); ` +
-        `Amdahl projection 1 / (f + (1 - f) / N): ${PROJECTED_CORES.map((n) => `${amdahlSpeedup(f, n).toFixed(2)}x on ${n} cores`).join(', ')}`);
+      lines.push(
+        `serial fraction ${f.toFixed(3)} (Karp-Flatt: (1/speedup - 1/${threads}) / (1 - 1/${threads}), overheads included); ` +
+          `Amdahl projection 1 / (f + (1 - f) / N): ${PROJECTED_CORES.map((n) => `${amdahlSpeedup(f, n).toFixed(2)}x on ${n} cores`).join(', ')}`,
+      );
     }
   }
   lines.push('', `heap used: ${result.heapUsedMB.toFixed(1)} MB (V8 heap of the whole process after timing)`);
@@ -194,7 +236,9 @@ export function humanReport(result: BenchResult, scene: BenchScene): string {
   if (extras.length > 0) lines.push(...extras);
   const notes = [...result.engines.flatMap((e) => e.notes), ...(scene.notes ?? [])];
   if (result.engines.some((e) => e.engine === 'matter')) {
-    notes.push('matter-js is not SI (pixels, milliseconds): it ran at 100 px/m with its gravity scaled to 10 m/s^2; its results are converted back to metres.');
+    notes.push(
+      'matter-js is not SI (pixels, milliseconds): it ran at 100 px/m with its gravity scaled to 10 m/s^2; its results are converted back to metres.',
+    );
   }
   if (notes.length > 0) lines.push('', 'notes:', ...notes.map((n) => `  ${n}`));
   return lines.join('\n');
@@ -213,7 +257,9 @@ function otherExtras(engines: readonly EngineResult[], shown: ReadonlySet<string
 /** ", theta 0.5, orbits 100" for the header line; "" without parameters. */
 function formatParams(params: Readonly<Record<string, number>> | undefined): string {
   if (!params) return '';
-  return Object.entries(params).map(([k, v]) => `, ${k} ${v}`).join('');
+  return Object.entries(params)
+    .map(([k, v]) => `, ${k} ${v}`)
+    .join('');
 }
 
 /**
@@ -222,7 +268,8 @@ function formatParams(params: Readonly<Record<string, number>> | undefined): str
  * when it has one) and its notes.
  */
 export function studyReport(
-  scene: string, result: StudyResult,
+  scene: string,
+  result: StudyResult,
   run: { count: number; steps: number; warmup: number; seed: number; params: Readonly<Record<string, number>> },
 ): string {
   const width = result.header.length;

@@ -1,9 +1,9 @@
 import { availableParallelism, loadavg } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import type { EngineAdapter, EngineInstance, SceneRunOptions } from './engines/types.js';
+import { collectGarbage, engineMemoryMB, sampleMemory } from './memory.js';
 import type { BenchScene, ExtraValue } from './scenes/types.js';
 import { summarize, type TimeSummary } from './stats.js';
-import { collectGarbage, engineMemoryMB, sampleMemory } from './memory.js';
 
 /**
  * An engine failed to build the scene (the scene rejected the options, or the engine failed).
@@ -13,7 +13,10 @@ export class SceneBuildError extends Error {
   /** The engine that failed. */
   readonly engine: string;
   constructor(engine: string, options: SceneRunOptions, cause: unknown) {
-    super(`${engine} could not build scene "${options.scene}" with count ${options.count}, seed ${options.seed}: ${(cause as Error)?.message ?? String(cause)}`, { cause });
+    super(
+      `${engine} could not build scene "${options.scene}" with count ${options.count}, seed ${options.seed}: ${(cause as Error)?.message ?? String(cause)}`,
+      { cause },
+    );
     this.name = 'SceneBuildError';
     this.engine = engine;
   }
@@ -118,7 +121,10 @@ export function cpuCount(): number {
  * @throws SceneBuildError if an engine cannot build the scene; whatever a step throws.
  */
 export async function runBenchmark(
-  adapters: readonly EngineAdapter[], scene: BenchScene, options: SceneRunOptions, timing: TimingOptions,
+  adapters: readonly EngineAdapter[],
+  scene: BenchScene,
+  options: SceneRunOptions,
+  timing: TimingOptions,
 ): Promise<BenchResult> {
   for (const a of adapters) await a.prepare?.();
   const instances: EngineInstance[] = [];
@@ -181,7 +187,13 @@ export async function runBenchmark(
     // Engines in isolates of their own: their heaps too (read by `stats` above).
     for (const inst of instances) heapUsedMB += inst.heapUsedMB?.() ?? 0;
     return {
-      scene: options, steps: timing.steps, warmup: timing.warmup, block: timing.block, engines, heapUsedMB, gcForced,
+      scene: options,
+      steps: timing.steps,
+      warmup: timing.warmup,
+      block: timing.block,
+      engines,
+      heapUsedMB,
+      gcForced,
       load: { start: loadStart, end: loadEnd, cpus: cpuCount() },
     };
   } finally {
@@ -195,7 +207,12 @@ export async function runBenchmark(
  * time of the block less the hooks', ms; untimed, returns 0. Used by the runner, and by a peer's own
  * thread (isolation/engine-thread.ts) for its blocks.
  */
-export function runBlock(inst: Pick<EngineInstance, 'step' | 'afterStep'>, steps: number, out: Float64Array | null, offset: number): number {
+export function runBlock(
+  inst: Pick<EngineInstance, 'step' | 'afterStep'>,
+  steps: number,
+  out: Float64Array | null,
+  offset: number,
+): number {
   if (out === null) {
     for (let s = 0; s < steps; s++) inst.step();
     return 0;
@@ -250,8 +267,12 @@ export async function buildMeasured(create: () => Promise<EngineInstance>): Prom
  * adds each engine's process CPU time of its blocks, ms, less its hooks', into `cpu[engine]`.
  */
 export function runInterleaved(
-  instances: readonly Pick<EngineInstance, 'step' | 'afterStep' | 'runSteps'>[], steps: number, block: number, times: Float64Array[] | null,
-  progress?: (steps: number) => void, cpu?: Float64Array,
+  instances: readonly Pick<EngineInstance, 'step' | 'afterStep' | 'runSteps'>[],
+  steps: number,
+  block: number,
+  times: Float64Array[] | null,
+  progress?: (steps: number) => void,
+  cpu?: Float64Array,
 ): void {
   const m = instances.length;
   for (let start = 0, round = 0; start < steps; start += block, round++) {

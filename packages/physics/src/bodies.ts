@@ -1,12 +1,21 @@
 import { addComponent, hasComponent, removeEntity } from 'bitecs';
-import { assertTimeStep, type PhysicsWorld } from './world.js';
-import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { wakeIsland } from './collision/sleep.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from './handles.js';
+import { checkInertia, setInertiaUnchecked } from './rigid.js';
 import { shapes3DOf } from './shapes3d/store.js';
+import { assertTimeStep, type PhysicsWorld } from './world.js';
+
 export { assertRoom, createSlot } from './handles.js';
+
 import {
-  assertFinite, assertInRange, assertNonNegative, assertOptionalBoolean, assertOptions, assertPositive, assertVector, describe,
+  assertFinite,
+  assertInRange,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
 } from './validate.js';
 
 /**
@@ -62,8 +71,23 @@ export interface BodyOptions {
 }
 
 const BODY_OPTIONS = [
-  'position', 'velocity', 'mass', 'density', 'radius', 'restitution', 'friction', 'staticFriction', 'static',
-  'kinematic', 'linearDrag', 'quadraticDrag', 'rotates', 'angularVelocity', 'angle', 'orientation', 'inertia',
+  'position',
+  'velocity',
+  'mass',
+  'density',
+  'radius',
+  'restitution',
+  'friction',
+  'staticFriction',
+  'static',
+  'kinematic',
+  'linearDrag',
+  'quadraticDrag',
+  'rotates',
+  'angularVelocity',
+  'angle',
+  'orientation',
+  'inertia',
 ] as const;
 
 /**
@@ -132,8 +156,12 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
   addComponent(world, eid, c.Mass);
   if (options.position) {
     const p = options.position;
-    c.Position.x[eid] = p[0]!; c.Position.y[eid] = p[1]!; c.Position.z[eid] = d === 3 ? p[2]! : 0;
-    c.PreviousPosition.x[eid] = p[0]!; c.PreviousPosition.y[eid] = p[1]!; c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
+    c.Position.x[eid] = p[0]!;
+    c.Position.y[eid] = p[1]!;
+    c.Position.z[eid] = d === 3 ? p[2]! : 0;
+    c.PreviousPosition.x[eid] = p[0]!;
+    c.PreviousPosition.y[eid] = p[1]!;
+    c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
   }
   if (isStatic) {
     addComponent(world, eid, c.Static);
@@ -141,7 +169,9 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
   } else {
     if (options.velocity) {
       const v = options.velocity;
-      c.Velocity.x[eid] = v[0]!; c.Velocity.y[eid] = v[1]!; c.Velocity.z[eid] = d === 3 ? v[2]! : 0;
+      c.Velocity.x[eid] = v[0]!;
+      c.Velocity.y[eid] = v[1]!;
+      c.Velocity.z[eid] = d === 3 ? v[2]! : 0;
     }
     if (isKinematic) {
       addComponent(world, eid, c.Kinematic);
@@ -175,7 +205,10 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
     const q = options.orientation;
     if (q) {
       const n = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
-      c.Orientation.x[eid] = q[0]! / n; c.Orientation.y[eid] = q[1]! / n; c.Orientation.z[eid] = q[2]! / n; c.Orientation.w[eid] = q[3]! / n;
+      c.Orientation.x[eid] = q[0]! / n;
+      c.Orientation.y[eid] = q[1]! / n;
+      c.Orientation.z[eid] = q[2]! / n;
+      c.Orientation.w[eid] = q[3]! / n;
     }
   }
   if (rotates) {
@@ -183,7 +216,8 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
     addComponent(world, eid, c.Torque);
     addComponent(world, eid, c.Inertia);
     if (!isStatic && !isKinematic && options.radius !== undefined) {
-      const m = c.Mass.value[eid]!, r = options.radius;
+      const m = c.Mass.value[eid]!,
+        r = options.radius;
       const I = d === 2 ? 0.5 * m * r * r : 0.4 * m * r * r;
       c.Inertia.value[eid] = I;
       c.Inertia.inv[eid] = 1 / I;
@@ -192,7 +226,11 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
     const w = options.angularVelocity;
     if (w !== undefined) {
       if (typeof w === 'number') c.AngularVelocity.z[eid] = w;
-      else { c.AngularVelocity.x[eid] = w[0]!; c.AngularVelocity.y[eid] = w[1]!; c.AngularVelocity.z[eid] = w[2]!; }
+      else {
+        c.AngularVelocity.x[eid] = w[0]!;
+        c.AngularVelocity.y[eid] = w[1]!;
+        c.AngularVelocity.z[eid] = w[2]!;
+      }
     }
   }
   return currentHandle(world, eid);
@@ -228,12 +266,21 @@ export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}):
   const c = world.components;
   addComponent(world, eid, c.Position);
   addComponent(world, eid, c.Velocity);
-  const p = options.position, v = options.velocity;
+  const p = options.position,
+    v = options.velocity;
   if (p) {
-    c.Position.x[eid] = p[0]!; c.Position.y[eid] = p[1]!; c.Position.z[eid] = d === 3 ? p[2]! : 0;
-    c.PreviousPosition.x[eid] = p[0]!; c.PreviousPosition.y[eid] = p[1]!; c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
+    c.Position.x[eid] = p[0]!;
+    c.Position.y[eid] = p[1]!;
+    c.Position.z[eid] = d === 3 ? p[2]! : 0;
+    c.PreviousPosition.x[eid] = p[0]!;
+    c.PreviousPosition.y[eid] = p[1]!;
+    c.PreviousPosition.z[eid] = d === 3 ? p[2]! : 0;
   }
-  if (v) { c.Velocity.x[eid] = v[0]!; c.Velocity.y[eid] = v[1]!; c.Velocity.z[eid] = d === 3 ? v[2]! : 0; }
+  if (v) {
+    c.Velocity.x[eid] = v[0]!;
+    c.Velocity.y[eid] = v[1]!;
+    c.Velocity.z[eid] = d === 3 ? v[2]! : 0;
+  }
   return currentHandle(world, eid);
 }
 
@@ -275,8 +322,12 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   addComponent(world, eid, c.Static);
   addComponent(world, eid, c.Material);
   const S = c.Segment;
-  S.ax[eid] = options.a[0]!; S.ay[eid] = options.a[1]!; S.az[eid] = d === 3 ? options.a[2]! : 0;
-  S.bx[eid] = options.b[0]!; S.by[eid] = options.b[1]!; S.bz[eid] = d === 3 ? options.b[2]! : 0;
+  S.ax[eid] = options.a[0]!;
+  S.ay[eid] = options.a[1]!;
+  S.az[eid] = d === 3 ? options.a[2]! : 0;
+  S.bx[eid] = options.b[0]!;
+  S.by[eid] = options.b[1]!;
+  S.bz[eid] = d === 3 ? options.b[2]! : 0;
   S.radius[eid] = options.radius ?? 0;
   setMaterialUnchecked(world, eid, options.restitution, options.friction, options.staticFriction);
   return currentHandle(world, eid);
@@ -375,9 +426,14 @@ export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
   }
   // A 3D body's principal moments (shapes, setInertia with three moments) scale with the mass too.
   if (hasComponent(world, slot, c.InertiaTensor) && old > 0) {
-    const T = c.InertiaTensor, f = mass / old;
-    T.x[slot] = T.x[slot]! * f; T.y[slot] = T.y[slot]! * f; T.z[slot] = T.z[slot]! * f;
-    T.invX[slot] = T.invX[slot]! / f; T.invY[slot] = T.invY[slot]! / f; T.invZ[slot] = T.invZ[slot]! / f;
+    const T = c.InertiaTensor,
+      f = mass / old;
+    T.x[slot] = T.x[slot]! * f;
+    T.y[slot] = T.y[slot]! * f;
+    T.z[slot] = T.z[slot]! * f;
+    T.invX[slot] = T.invX[slot]! / f;
+    T.invY[slot] = T.invY[slot]! / f;
+    T.invZ[slot] = T.invZ[slot]! / f;
   }
 }
 
@@ -431,14 +487,16 @@ export function setRadius(world: PhysicsWorld, eid: number, radius: number): voi
   assertPositive('setRadius', 'radius', radius);
   const shapes = shapes3DOf(world);
   if (shapes !== undefined && shapes.first[slot] !== 0) {
-    throw new RangeError(`setRadius: eid must be a body without 3D shapes (its shapes give its size and mass; add a 'sphere' shape instead), got body ${describe(eid)}`);
+    throw new RangeError(
+      `setRadius: eid must be a body without 3D shapes (its shapes give its size and mass; add a 'sphere' shape instead), got body ${describe(eid)}`,
+    );
   }
   const c = world.components;
   if (!hasComponent(world, slot, c.Ball)) addComponent(world, slot, c.Ball);
   const old = c.Ball.radius[slot]!;
   c.Ball.radius[slot] = radius;
   if (hasComponent(world, slot, c.Inertia) && c.Inertia.value[slot]! > 0 && old > 0) {
-    const I = c.Inertia.value[slot]! * (radius * radius) / (old * old);
+    const I = (c.Inertia.value[slot]! * (radius * radius)) / (old * old);
     c.Inertia.value[slot] = I;
     c.Inertia.inv[slot] = 1 / I;
   }
@@ -459,8 +517,12 @@ export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLik
   assertVector(where, 'position', position, world.dimensions);
   wakeIsland(world, slot);
   const z = world.dimensions === 3 ? position[2]! : 0;
-  c.Position.x[slot] = position[0]!; c.Position.y[slot] = position[1]!; c.Position.z[slot] = z;
-  c.PreviousPosition.x[slot] = position[0]!; c.PreviousPosition.y[slot] = position[1]!; c.PreviousPosition.z[slot] = z;
+  c.Position.x[slot] = position[0]!;
+  c.Position.y[slot] = position[1]!;
+  c.Position.z[slot] = z;
+  c.PreviousPosition.x[slot] = position[0]!;
+  c.PreviousPosition.y[slot] = position[1]!;
+  c.PreviousPosition.z[slot] = z;
 }
 
 /**
@@ -481,7 +543,9 @@ export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLik
     addComponent(world, slot, c.Kinematic);
   }
   wakeIsland(world, slot);
-  c.Velocity.x[slot] = velocity[0]!; c.Velocity.y[slot] = velocity[1]!; c.Velocity.z[slot] = world.dimensions === 3 ? velocity[2]! : 0;
+  c.Velocity.x[slot] = velocity[0]!;
+  c.Velocity.y[slot] = velocity[1]!;
+  c.Velocity.z[slot] = world.dimensions === 3 ? velocity[2]! : 0;
 }
 
 /**
@@ -544,7 +608,9 @@ export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelo
     return;
   }
   const w = angularVelocity as ArrayLike<number>;
-  c.AngularVelocity.x[slot] = w[0]!; c.AngularVelocity.y[slot] = w[1]!; c.AngularVelocity.z[slot] = w[2]!;
+  c.AngularVelocity.x[slot] = w[0]!;
+  c.AngularVelocity.y[slot] = w[1]!;
+  c.AngularVelocity.z[slot] = w[2]!;
 }
 
 /**
@@ -569,5 +635,8 @@ export function setOrientation(world: PhysicsWorld, eid: number, orientation: nu
   if (!(n > 0)) throw new RangeError(`${where}: orientation must not be the zero quaternion`);
   wakeIsland(world, slot);
   if (!hasComponent(world, slot, c.Orientation)) addComponent(world, slot, c.Orientation);
-  c.Orientation.x[slot] = q[0]! / n; c.Orientation.y[slot] = q[1]! / n; c.Orientation.z[slot] = q[2]! / n; c.Orientation.w[slot] = q[3]! / n;
+  c.Orientation.x[slot] = q[0]! / n;
+  c.Orientation.y[slot] = q[1]! / n;
+  c.Orientation.z[slot] = q[2]! / n;
+  c.Orientation.w[slot] = q[3]! / n;
 }

@@ -37,8 +37,8 @@
  *   they are made on SharedArrayBuffer.
  */
 
+import { type ClothLinkStore, createClothLinkStore } from './cloth/store.js';
 import { createJointStore, type JointStore } from './joints/store.js';
-import { createClothLinkStore, type ClothLinkStore } from './cloth/store.js';
 
 import { createEmptyShapeStore, type ShapeStore } from './shapes/store.js';
 
@@ -91,8 +91,12 @@ export interface Components {
    * `radius` thickens it into a capsule, m, >= 0 (default 0). Segments never move.
    */
   Segment: {
-    ax: Float64Array; ay: Float64Array; az: Float64Array;
-    bx: Float64Array; by: Float64Array; bz: Float64Array;
+    ax: Float64Array;
+    ay: Float64Array;
+    az: Float64Array;
+    bx: Float64Array;
+    by: Float64Array;
+    bz: Float64Array;
     radius: Float64Array;
   };
   /**
@@ -141,12 +145,30 @@ export interface Components {
    * A uniform electric field, V/m, filling the world: E(t) = E0 + A cos(omega t + phase), with E0 =
    * (x, y, z), A = (ampX, ampY, ampZ), `omega` rad/s, `phase` rad. Charged bodies feel q E.
    */
-  ElectricField: { x: Float64Array; y: Float64Array; z: Float64Array; ampX: Float64Array; ampY: Float64Array; ampZ: Float64Array; omega: Float64Array; phase: Float64Array };
+  ElectricField: {
+    x: Float64Array;
+    y: Float64Array;
+    z: Float64Array;
+    ampX: Float64Array;
+    ampY: Float64Array;
+    ampZ: Float64Array;
+    omega: Float64Array;
+    phase: Float64Array;
+  };
   /**
    * A uniform magnetic field, T: B(t) = B0 + A cos(omega t + phase), fields as ElectricField. In a 2D
    * world only z is used (B out of the screen). Charged bodies feel the Lorentz force q v x B.
    */
-  MagneticField: { x: Float64Array; y: Float64Array; z: Float64Array; ampX: Float64Array; ampY: Float64Array; ampZ: Float64Array; omega: Float64Array; phase: Float64Array };
+  MagneticField: {
+    x: Float64Array;
+    y: Float64Array;
+    z: Float64Array;
+    ampX: Float64Array;
+    ampY: Float64Array;
+    ampZ: Float64Array;
+    omega: Float64Array;
+    phase: Float64Array;
+  };
   /**
    * General central force about the point (cx, cy, cz): F = k r^(n-1) r_hat, r the distance from the
    * centre. k < 0 attracts. n = 2 is Hooke's law (k = -stiffness), n = -1 inverse-square gravity
@@ -165,12 +187,26 @@ export interface Components {
    * fluid pushes up with rho g V_submerged and drags with -f k |v_rel| v_rel, f the submerged fraction
    * and `dragCoefficient` k in kg/m. Source: Ramtal and Dobre ch. 7, "upthrust".
    */
-  Buoyancy: { shape: Float64Array; radius: Float64Array; halfX: Float64Array; halfY: Float64Array; halfZ: Float64Array; dragCoefficient: Float64Array };
+  Buoyancy: {
+    shape: Float64Array;
+    radius: Float64Array;
+    halfX: Float64Array;
+    halfY: Float64Array;
+    halfZ: Float64Array;
+    dragCoefficient: Float64Array;
+  };
   /**
    * A body of fluid below the horizontal surface y = `surface` (m), of `density` kg/m^3 (2D: kg/m^2),
    * optionally limited to x in [minX, maxX] and z in [minZ, maxZ] (defaults: unlimited).
    */
-  FluidRegion: { surface: Float64Array; density: Float64Array; minX: Float64Array; maxX: Float64Array; minZ: Float64Array; maxZ: Float64Array };
+  FluidRegion: {
+    surface: Float64Array;
+    density: Float64Array;
+    minX: Float64Array;
+    maxX: Float64Array;
+    minZ: Float64Array;
+    maxZ: Float64Array;
+  };
   /**
    * A spring between bodies `a` and `b` (entity ids), or between body `b` and the fixed anchor
    * (anchorX, anchorY, anchorZ) when `a` is 0. Hooke: F = -stiffness (L - restLength) along the
@@ -179,8 +215,15 @@ export interface Components {
    * own entity; removing either body removes it. Source: Ramtal and Dobre ch. 8.
    */
   Spring: {
-    a: Int32Array; b: Int32Array; restLength: Float64Array; stiffness: Float64Array; damping: Float64Array;
-    oneSided: Uint8Array; anchorX: Float64Array; anchorY: Float64Array; anchorZ: Float64Array;
+    a: Int32Array;
+    b: Int32Array;
+    restLength: Float64Array;
+    stiffness: Float64Array;
+    damping: Float64Array;
+    oneSided: Uint8Array;
+    anchorX: Float64Array;
+    anchorY: Float64Array;
+    anchorZ: Float64Array;
   };
   /**
    * Periodic driving force F = F0 cos(omega t + phase), F0 = (x, y, z) in N, omega rad/s, phase rad.
@@ -199,29 +242,69 @@ export interface Components {
    * mdot (kg/s); the body's mass drops by mdot per second and `fuel` with it. Source: Ramtal and
    * Dobre ch. 6, "rockets"; Tsiolkovsky's equation dv = ve ln(m0 / m1).
    */
-  Thrust: { exhaustVelocity: Float64Array; massFlowRate: Float64Array; fuel: Float64Array; dirX: Float64Array; dirY: Float64Array; dirZ: Float64Array };
+  Thrust: {
+    exhaustVelocity: Float64Array;
+    massFlowRate: Float64Array;
+    fuel: Float64Array;
+    dirX: Float64Array;
+    dirY: Float64Array;
+    dirZ: Float64Array;
+  };
   /**
    * A swirl about an axis through (cx, cy, cz): tangential force F = k r^(n-1) (axis x r_hat), r the
    * distance from the axis, `k` in N / m^(n-1) (positive: counter-clockwise about the axis), axis unit
    * (default z, the only axis that makes sense in 2D). Particles in a whirlpool or tornado.
    */
-  Vortex: { cx: Float64Array; cy: Float64Array; cz: Float64Array; axisX: Float64Array; axisY: Float64Array; axisZ: Float64Array; k: Float64Array; n: Float64Array };
+  Vortex: {
+    cx: Float64Array;
+    cy: Float64Array;
+    cz: Float64Array;
+    axisX: Float64Array;
+    axisY: Float64Array;
+    axisZ: Float64Array;
+    k: Float64Array;
+    n: Float64Array;
+  };
   /**
    * A particle emitter on an entity with Position (and Velocity, to pass some of it on). See
    * particles/emitter.ts and `addEmitter` for every field; all units SI (rates per second, speeds
    * m/s, angles rad, lifetimes s).
    */
   Emitter: {
-    rate: Float64Array; carry: Float64Array; pendingBurst: Float64Array; enabled: Uint8Array;
-    shape: Uint8Array; size: Float64Array; sizeY: Float64Array; sizeZ: Float64Array;
-    dirX: Float64Array; dirY: Float64Array; dirZ: Float64Array; spread: Float64Array;
-    speedMin: Float64Array; speedMax: Float64Array; lifeMin: Float64Array; lifeMax: Float64Array;
-    inherit: Float64Array; mass: Float64Array; linearDrag: Float64Array; quadraticDrag: Float64Array;
-    gravityScale: Float64Array; radius: Float64Array;
-    colorStart: Uint32Array; colorEnd: Uint32Array; sizeStart: Float64Array; sizeEnd: Float64Array;
-    alphaStart: Float64Array; alphaEnd: Float64Array;
-    deathEmitter: Int32Array; deathCount: Float64Array; maxGeneration: Float64Array; policy: Uint8Array;
-    spawned: Float64Array; dropped: Float64Array;
+    rate: Float64Array;
+    carry: Float64Array;
+    pendingBurst: Float64Array;
+    enabled: Uint8Array;
+    shape: Uint8Array;
+    size: Float64Array;
+    sizeY: Float64Array;
+    sizeZ: Float64Array;
+    dirX: Float64Array;
+    dirY: Float64Array;
+    dirZ: Float64Array;
+    spread: Float64Array;
+    speedMin: Float64Array;
+    speedMax: Float64Array;
+    lifeMin: Float64Array;
+    lifeMax: Float64Array;
+    inherit: Float64Array;
+    mass: Float64Array;
+    linearDrag: Float64Array;
+    quadraticDrag: Float64Array;
+    gravityScale: Float64Array;
+    radius: Float64Array;
+    colorStart: Uint32Array;
+    colorEnd: Uint32Array;
+    sizeStart: Float64Array;
+    sizeEnd: Float64Array;
+    alphaStart: Float64Array;
+    alphaEnd: Float64Array;
+    deathEmitter: Int32Array;
+    deathCount: Float64Array;
+    maxGeneration: Float64Array;
+    policy: Uint8Array;
+    spawned: Float64Array;
+    dropped: Float64Array;
   };
   /** Age and lifetime of a particle, s: it is removed when `age` reaches `duration`. */
   Lifetime: { age: Float64Array; duration: Float64Array };
@@ -232,9 +315,15 @@ export interface Components {
    * emitted, +1 for each burst on death).
    */
   Particle: {
-    emitter: Int32Array; emitterStamp: Uint32Array; generation: Float64Array;
-    colorStart: Uint32Array; colorEnd: Uint32Array; sizeStart: Float64Array; sizeEnd: Float64Array;
-    alphaStart: Float64Array; alphaEnd: Float64Array;
+    emitter: Int32Array;
+    emitterStamp: Uint32Array;
+    generation: Float64Array;
+    colorStart: Uint32Array;
+    colorEnd: Uint32Array;
+    sizeStart: Float64Array;
+    sizeEnd: Float64Array;
+    alphaStart: Float64Array;
+    alphaEnd: Float64Array;
   };
   /** Rotation angle in a 2D world, rad, counter-clockwise. Default 0. */
   Angle: { value: Float64Array };
@@ -286,8 +375,15 @@ export interface Components {
    * centre of mass), which give the trim torques.
    */
   Ballast: {
-    dryMass: Float64Array; capacity: Float64Array; fore: Float64Array; aft: Float64Array;
-    foreTarget: Float64Array; aftTarget: Float64Array; rate: Float64Array; arm: Float64Array; metacentricHeight: Float64Array;
+    dryMass: Float64Array;
+    capacity: Float64Array;
+    fore: Float64Array;
+    aft: Float64Array;
+    foreTarget: Float64Array;
+    aftTarget: Float64Array;
+    rate: Float64Array;
+    arm: Float64Array;
+    metacentricHeight: Float64Array;
   };
   /**
    * A force fixed in the body frame, N (x, y, z; z unused in 2D), applied at the centre of mass and
@@ -305,10 +401,21 @@ export interface Components {
    * Air density `airDensity` kg/m^3.
    */
   LiftingSurface: {
-    body: Int32Array; offsetX: Float64Array; offsetY: Float64Array; offsetZ: Float64Array;
-    normalX: Float64Array; normalY: Float64Array; normalZ: Float64Array; area: Float64Array;
-    liftSlope: Float64Array; stallAngle: Float64Array; dragZero: Float64Array; inducedDrag: Float64Array;
-    deflection: Float64Array; controlPower: Float64Array; airDensity: Float64Array;
+    body: Int32Array;
+    offsetX: Float64Array;
+    offsetY: Float64Array;
+    offsetZ: Float64Array;
+    normalX: Float64Array;
+    normalY: Float64Array;
+    normalZ: Float64Array;
+    area: Float64Array;
+    liftSlope: Float64Array;
+    stallAngle: Float64Array;
+    dragZero: Float64Array;
+    inducedDrag: Float64Array;
+    deflection: Float64Array;
+    controlPower: Float64Array;
+    airDensity: Float64Array;
   };
   /**
    * A joint between two 2D bodies (its own entity: see joints/store.ts for every field and
@@ -324,7 +431,15 @@ export interface Components {
  * shape, a material). Its first use also allocates the collision state's per-entity scratch.
  */
 export const BODY_STORES: ReadonlyArray<keyof Components> = [
-  'Force', 'Torque', 'Mass', 'Inertia', 'AngularVelocity', 'Angle', 'Orientation', 'Ball', 'Material',
+  'Force',
+  'Torque',
+  'Mass',
+  'Inertia',
+  'AngularVelocity',
+  'Angle',
+  'Orientation',
+  'Ball',
+  'Material',
 ];
 
 /**
@@ -337,10 +452,31 @@ export const LAZY_GROUPS: ReadonlyArray<ReadonlyArray<keyof Components>> = [
   BODY_STORES,
   ['Lifetime', 'Particle'],
   ['Segment'],
-  ['LinearDrag'], ['QuadraticDrag'], ['GravityScale'], ['Attractor'], ['Charge'], ['ElectricField'], ['MagneticField'],
-  ['CentralForce'], ['Lift'], ['Buoyancy'], ['FluidRegion'], ['Spring'], ['DrivingForce'], ['RandomForce'], ['Thrust'],
-  ['Vortex'], ['Emitter'], ['InertiaTensor'], ['AngularDamping'], ['Plane'], ['Ballast'], ['LiftingSurface'],
-  ['BodyThrust'], ['Joint'], ['ClothLink'],
+  ['LinearDrag'],
+  ['QuadraticDrag'],
+  ['GravityScale'],
+  ['Attractor'],
+  ['Charge'],
+  ['ElectricField'],
+  ['MagneticField'],
+  ['CentralForce'],
+  ['Lift'],
+  ['Buoyancy'],
+  ['FluidRegion'],
+  ['Spring'],
+  ['DrivingForce'],
+  ['RandomForce'],
+  ['Thrust'],
+  ['Vortex'],
+  ['Emitter'],
+  ['InertiaTensor'],
+  ['AngularDamping'],
+  ['Plane'],
+  ['Ballast'],
+  ['LiftingSurface'],
+  ['BodyThrust'],
+  ['Joint'],
+  ['ClothLink'],
 ];
 
 /** Every lazily allocated component (the union of LAZY_GROUPS), in group order. */
@@ -430,29 +566,67 @@ export function createComponents(capacity: number, previousPosition = true): Com
     Buoyancy: { shape: z(), radius: z(), halfX: z(), halfY: z(), halfZ: z(), dragCoefficient: z() },
     FluidRegion: { surface: z(), density: z(), minX: z(), maxX: z(), minZ: z(), maxZ: z() },
     Spring: {
-      a: new Int32Array(0), b: new Int32Array(0), restLength: z(), stiffness: z(), damping: z(),
-      oneSided: new Uint8Array(0), anchorX: z(), anchorY: z(), anchorZ: z(),
+      a: new Int32Array(0),
+      b: new Int32Array(0),
+      restLength: z(),
+      stiffness: z(),
+      damping: z(),
+      oneSided: new Uint8Array(0),
+      anchorX: z(),
+      anchorY: z(),
+      anchorZ: z(),
     },
     DrivingForce: { x: z(), y: z(), z: z(), omega: z(), phase: z() },
     RandomForce: { magnitude: z(), correlationTime: z(), seed: z() },
     Thrust: { exhaustVelocity: z(), massFlowRate: z(), fuel: z(), dirX: z(), dirY: z(), dirZ: z() },
     Vortex: { cx: z(), cy: z(), cz: z(), axisX: z(), axisY: z(), axisZ: z(), k: z(), n: z() },
     Emitter: {
-      rate: z(), carry: z(), pendingBurst: z(), enabled: new Uint8Array(0),
-      shape: new Uint8Array(0), size: z(), sizeY: z(), sizeZ: z(),
-      dirX: z(), dirY: z(), dirZ: z(), spread: z(),
-      speedMin: z(), speedMax: z(), lifeMin: z(), lifeMax: z(),
-      inherit: z(), mass: z(), linearDrag: z(), quadraticDrag: z(), gravityScale: z(), radius: z(),
-      colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(),
-      alphaStart: z(), alphaEnd: z(),
-      deathEmitter: new Int32Array(0), deathCount: z(), maxGeneration: z(), policy: new Uint8Array(0),
-      spawned: z(), dropped: z(),
+      rate: z(),
+      carry: z(),
+      pendingBurst: z(),
+      enabled: new Uint8Array(0),
+      shape: new Uint8Array(0),
+      size: z(),
+      sizeY: z(),
+      sizeZ: z(),
+      dirX: z(),
+      dirY: z(),
+      dirZ: z(),
+      spread: z(),
+      speedMin: z(),
+      speedMax: z(),
+      lifeMin: z(),
+      lifeMax: z(),
+      inherit: z(),
+      mass: z(),
+      linearDrag: z(),
+      quadraticDrag: z(),
+      gravityScale: z(),
+      radius: z(),
+      colorStart: new Uint32Array(0),
+      colorEnd: new Uint32Array(0),
+      sizeStart: z(),
+      sizeEnd: z(),
+      alphaStart: z(),
+      alphaEnd: z(),
+      deathEmitter: new Int32Array(0),
+      deathCount: z(),
+      maxGeneration: z(),
+      policy: new Uint8Array(0),
+      spawned: z(),
+      dropped: z(),
     },
     Lifetime: { age: z(), duration: z() },
     Particle: {
-      emitter: new Int32Array(0), emitterStamp: new Uint32Array(0), generation: z(),
-      colorStart: new Uint32Array(0), colorEnd: new Uint32Array(0), sizeStart: z(), sizeEnd: z(),
-      alphaStart: z(), alphaEnd: z(),
+      emitter: new Int32Array(0),
+      emitterStamp: new Uint32Array(0),
+      generation: z(),
+      colorStart: new Uint32Array(0),
+      colorEnd: new Uint32Array(0),
+      sizeStart: z(),
+      sizeEnd: z(),
+      alphaStart: z(),
+      alphaEnd: z(),
     },
     Angle: { value: z() },
     Orientation: { x: z(), y: z(), z: z(), w: z() },
@@ -464,12 +638,33 @@ export function createComponents(capacity: number, previousPosition = true): Com
     Plane: { nx: z(), ny: z(), nz: z(), d: z() },
     Shape: createEmptyShapeStore(),
     Ballast: {
-      dryMass: z(), capacity: z(), fore: z(), aft: z(), foreTarget: z(), aftTarget: z(), rate: z(), arm: z(), metacentricHeight: z(),
+      dryMass: z(),
+      capacity: z(),
+      fore: z(),
+      aft: z(),
+      foreTarget: z(),
+      aftTarget: z(),
+      rate: z(),
+      arm: z(),
+      metacentricHeight: z(),
     },
     BodyThrust: { x: z(), y: z(), z: z() },
     LiftingSurface: {
-      body: new Int32Array(0), offsetX: z(), offsetY: z(), offsetZ: z(), normalX: z(), normalY: z(), normalZ: z(), area: z(),
-      liftSlope: z(), stallAngle: z(), dragZero: z(), inducedDrag: z(), deflection: z(), controlPower: z(), airDensity: z(),
+      body: new Int32Array(0),
+      offsetX: z(),
+      offsetY: z(),
+      offsetZ: z(),
+      normalX: z(),
+      normalY: z(),
+      normalZ: z(),
+      area: z(),
+      liftSlope: z(),
+      stallAngle: z(),
+      dragZero: z(),
+      inducedDrag: z(),
+      deflection: z(),
+      controlPower: z(),
+      airDensity: z(),
     },
     Joint: createJointStore(),
     ClothLink: createClothLinkStore(),

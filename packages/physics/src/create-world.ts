@@ -4,27 +4,47 @@
  * (pipeline/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
  * systems above it, and this file on top: nothing below imports it.
  */
-import {  createEntityIndex, createWorld, observe, onAdd } from 'bitecs';
-import { useLeanEcsStorage } from './lean-ecs.js';
-import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './components.js';
+import { createEntityIndex, createWorld, observe, onAdd } from 'bitecs';
+import { createClothState } from './cloth/state.js';
+import { wakeTouching } from './collision/sleep.js';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
-import { createStages, STAGES } from './pipeline/stages.js';
-import { INTEGRATOR_NAMES } from './integrators/names.js';
-import { Rng } from './rng.js';
+import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './components.js';
 import { createForceLawSettings } from './forces/settings.js';
 import { removeSpringsOf } from './forces/spring.js';
-import { wakeTouching } from './collision/sleep.js';
-import { createJointState } from './joints/state.js';
+import { INTEGRATOR_NAMES } from './integrators/names.js';
 import { removeJointsOf } from './joints/remove.js';
-import { createClothState } from './cloth/state.js';
+import { createJointState } from './joints/state.js';
+import { useLeanEcsStorage } from './lean-ecs.js';
+import { createStages, STAGES } from './pipeline/stages.js';
+import { Rng } from './rng.js';
 import { createThreadPool } from './threads/pool.js';
 import { shareStores } from './threads/shared-stores.js';
 import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './validate.js';
-import { addComponentIfMissing, registerForceLaw, assertTimeStep, type PhysicsWorld, type PhysicsWorldContext, type PhysicsWorldOptions, type StageTimings, MAX_CAPACITY } from './world.js';
+import {
+  addComponentIfMissing,
+  assertTimeStep,
+  MAX_CAPACITY,
+  type PhysicsWorld,
+  type PhysicsWorldContext,
+  type PhysicsWorldOptions,
+  registerForceLaw,
+  type StageTimings,
+} from './world.js';
 
 const KNOWN_OPTIONS = [
-  'dimensions', 'capacity', 'gravity', 'dt', 'substeps', 'integrator', 'seed',
-  'solverSubsteps', 'solverIterations', 'restitutionThreshold', 'interpolation', 'sleep', 'threads',
+  'dimensions',
+  'capacity',
+  'gravity',
+  'dt',
+  'substeps',
+  'integrator',
+  'seed',
+  'solverSubsteps',
+  'solverIterations',
+  'restitutionThreshold',
+  'interpolation',
+  'sleep',
+  'threads',
 ] as const;
 
 /**
@@ -59,7 +79,9 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertInteger(where, 'substeps', substeps, 1, 64);
   const integrator = options.integrator ?? 'semi-implicit-euler';
   if (typeof integrator !== 'string' || !(INTEGRATOR_NAMES as readonly string[]).includes(integrator)) {
-    throw new RangeError(`${where}: integrator must be one of ${INTEGRATOR_NAMES.map((n) => `'${n}'`).join(', ')}, got ${describe(integrator)}`);
+    throw new RangeError(
+      `${where}: integrator must be one of ${INTEGRATOR_NAMES.map((n) => `'${n}'`).join(', ')}, got ${describe(integrator)}`,
+    );
   }
   const seed = options.seed ?? 1;
   assertFinite(where, 'seed', seed);
@@ -102,7 +124,11 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     stages: createStages(),
     // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
     collision: createCollisionState(capacity, {
-      solverSubsteps, solverIterations, sleep, dimensions, ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
+      solverSubsteps,
+      solverIterations,
+      sleep,
+      dimensions,
+      ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
     }),
     joints: createJointState(),
     cloth: createClothState(),
@@ -127,9 +153,12 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
  * do not, keep where they were when the first body came.
  */
 function allocatePreviousPosition(world: PhysicsWorld): void {
-  const O = world.components.PreviousPosition, P = world.components.Position;
+  const O = world.components.PreviousPosition,
+    P = world.components.Position;
   if (O.x.length > world.capacity) return;
-  O.x = P.x.slice(); O.y = P.y.slice(); O.z = P.z.slice();
+  O.x = P.x.slice();
+  O.y = P.y.slice();
+  O.z = P.z.slice();
 }
 
 /**
@@ -155,17 +184,31 @@ function installDefaults(world: PhysicsWorld): void {
     });
   }
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
-    s.x[eid] = 0; s.y[eid] = 0; s.z[eid] = 0;
+    s.x[eid] = 0;
+    s.y[eid] = 0;
+    s.z[eid] = 0;
   };
   // Position is where every body starts: reset all its per-entity motion state, so a recycled id
   // never inherits velocity, spin or force from the entity that had it before.
   observe(world, onAdd(c.Position), (eid: number) => {
-    c.Position.x[eid] = 0; c.Position.y[eid] = 0; c.Position.z[eid] = 0;
-    c.PreviousPosition.x[eid] = 0; c.PreviousPosition.y[eid] = 0; c.PreviousPosition.z[eid] = 0;
-    c.Velocity.x[eid] = 0; c.Velocity.y[eid] = 0; c.Velocity.z[eid] = 0;
-    c.AngularVelocity.x[eid] = 0; c.AngularVelocity.y[eid] = 0; c.AngularVelocity.z[eid] = 0;
-    c.Force.x[eid] = 0; c.Force.y[eid] = 0; c.Force.z[eid] = 0;
-    c.Torque.x[eid] = 0; c.Torque.y[eid] = 0; c.Torque.z[eid] = 0;
+    c.Position.x[eid] = 0;
+    c.Position.y[eid] = 0;
+    c.Position.z[eid] = 0;
+    c.PreviousPosition.x[eid] = 0;
+    c.PreviousPosition.y[eid] = 0;
+    c.PreviousPosition.z[eid] = 0;
+    c.Velocity.x[eid] = 0;
+    c.Velocity.y[eid] = 0;
+    c.Velocity.z[eid] = 0;
+    c.AngularVelocity.x[eid] = 0;
+    c.AngularVelocity.y[eid] = 0;
+    c.AngularVelocity.z[eid] = 0;
+    c.Force.x[eid] = 0;
+    c.Force.y[eid] = 0;
+    c.Force.z[eid] = 0;
+    c.Torque.x[eid] = 0;
+    c.Torque.y[eid] = 0;
+    c.Torque.z[eid] = 0;
   });
   // Velocity is reset when an entity comes to have both Position and Velocity: the same query as the
   // integrators' (no membership of its own, 16 bytes an entity), and a velocity means nothing without
@@ -174,8 +217,13 @@ function installDefaults(world: PhysicsWorld): void {
   observe(world, onAdd(c.Force), zero3(c.Force));
   observe(world, onAdd(c.AngularVelocity), zero3(c.AngularVelocity));
   observe(world, onAdd(c.Torque), zero3(c.Torque));
-  observe(world, onAdd(c.Mass), (eid: number) => { c.Mass.value[eid] = 1; c.Mass.inv[eid] = 1; });
-  observe(world, onAdd(c.Ball), (eid: number) => { c.Ball.radius[eid] = DEFAULT_RADIUS; });
+  observe(world, onAdd(c.Mass), (eid: number) => {
+    c.Mass.value[eid] = 1;
+    c.Mass.inv[eid] = 1;
+  });
+  observe(world, onAdd(c.Ball), (eid: number) => {
+    c.Ball.radius[eid] = DEFAULT_RADIUS;
+  });
   observe(world, onAdd(c.Material), (eid: number) => {
     c.Material.restitution[eid] = DEFAULT_MATERIAL.restitution;
     c.Material.friction[eid] = DEFAULT_MATERIAL.friction;
@@ -183,61 +231,170 @@ function installDefaults(world: PhysicsWorld): void {
   });
   observe(world, onAdd(c.Segment), (eid: number) => {
     const s = c.Segment;
-    s.ax[eid] = 0; s.ay[eid] = 0; s.az[eid] = 0; s.bx[eid] = 0; s.by[eid] = 0; s.bz[eid] = 0; s.radius[eid] = 0;
+    s.ax[eid] = 0;
+    s.ay[eid] = 0;
+    s.az[eid] = 0;
+    s.bx[eid] = 0;
+    s.by[eid] = 0;
+    s.bz[eid] = 0;
+    s.radius[eid] = 0;
   });
-  observe(world, onAdd(c.Angle), (eid: number) => { c.Angle.value[eid] = 0; });
+  observe(world, onAdd(c.Angle), (eid: number) => {
+    c.Angle.value[eid] = 0;
+  });
   observe(world, onAdd(c.Orientation), (eid: number) => {
-    c.Orientation.x[eid] = 0; c.Orientation.y[eid] = 0; c.Orientation.z[eid] = 0; c.Orientation.w[eid] = 1;
+    c.Orientation.x[eid] = 0;
+    c.Orientation.y[eid] = 0;
+    c.Orientation.z[eid] = 0;
+    c.Orientation.w[eid] = 1;
   });
-  observe(world, onAdd(c.Inertia), (eid: number) => { c.Inertia.value[eid] = 0; c.Inertia.inv[eid] = 0; });
+  observe(world, onAdd(c.Inertia), (eid: number) => {
+    c.Inertia.value[eid] = 0;
+    c.Inertia.inv[eid] = 0;
+  });
   observe(world, onAdd(c.InertiaTensor), (eid: number) => {
-    const T = c.InertiaTensor; T.x[eid] = 0; T.y[eid] = 0; T.z[eid] = 0; T.invX[eid] = 0; T.invY[eid] = 0; T.invZ[eid] = 0;
+    const T = c.InertiaTensor;
+    T.x[eid] = 0;
+    T.y[eid] = 0;
+    T.z[eid] = 0;
+    T.invX[eid] = 0;
+    T.invY[eid] = 0;
+    T.invZ[eid] = 0;
   });
   observe(world, onAdd(c.AngularDamping), (eid: number) => {
     c.AngularDamping.k[eid] = 0;
     addComponentIfMissing(world, eid, c.Torque);
   });
-  observe(world, onAdd(c.Plane), (eid: number) => { c.Plane.nx[eid] = 0; c.Plane.ny[eid] = 1; c.Plane.nz[eid] = 0; c.Plane.d[eid] = 0; });
-  observe(world, onAdd(c.LinearDrag), (eid: number) => { c.LinearDrag.k[eid] = 0; });
-  observe(world, onAdd(c.QuadraticDrag), (eid: number) => { c.QuadraticDrag.k[eid] = 0; });
-  observe(world, onAdd(c.GravityScale), (eid: number) => { c.GravityScale.value[eid] = 1; });
-  observe(world, onAdd(c.Attractor), (eid: number) => { c.Attractor.mass[eid] = 0; c.Attractor.softening[eid] = 0; });
-  observe(world, onAdd(c.Charge), (eid: number) => { c.Charge.value[eid] = 0; });
+  observe(world, onAdd(c.Plane), (eid: number) => {
+    c.Plane.nx[eid] = 0;
+    c.Plane.ny[eid] = 1;
+    c.Plane.nz[eid] = 0;
+    c.Plane.d[eid] = 0;
+  });
+  observe(world, onAdd(c.LinearDrag), (eid: number) => {
+    c.LinearDrag.k[eid] = 0;
+  });
+  observe(world, onAdd(c.QuadraticDrag), (eid: number) => {
+    c.QuadraticDrag.k[eid] = 0;
+  });
+  observe(world, onAdd(c.GravityScale), (eid: number) => {
+    c.GravityScale.value[eid] = 1;
+  });
+  observe(world, onAdd(c.Attractor), (eid: number) => {
+    c.Attractor.mass[eid] = 0;
+    c.Attractor.softening[eid] = 0;
+  });
+  observe(world, onAdd(c.Charge), (eid: number) => {
+    c.Charge.value[eid] = 0;
+  });
   const zeroField = (F: typeof c.ElectricField) => (eid: number) => {
-    F.x[eid] = 0; F.y[eid] = 0; F.z[eid] = 0; F.ampX[eid] = 0; F.ampY[eid] = 0; F.ampZ[eid] = 0; F.omega[eid] = 0; F.phase[eid] = 0;
+    F.x[eid] = 0;
+    F.y[eid] = 0;
+    F.z[eid] = 0;
+    F.ampX[eid] = 0;
+    F.ampY[eid] = 0;
+    F.ampZ[eid] = 0;
+    F.omega[eid] = 0;
+    F.phase[eid] = 0;
   };
   observe(world, onAdd(c.ElectricField), zeroField(c.ElectricField));
   observe(world, onAdd(c.MagneticField), zeroField(c.MagneticField));
   observe(world, onAdd(c.CentralForce), (eid: number) => {
-    const C = c.CentralForce; C.cx[eid] = 0; C.cy[eid] = 0; C.cz[eid] = 0; C.k[eid] = 0; C.n[eid] = 2;
+    const C = c.CentralForce;
+    C.cx[eid] = 0;
+    C.cy[eid] = 0;
+    C.cz[eid] = 0;
+    C.k[eid] = 0;
+    C.n[eid] = 2;
   });
-  observe(world, onAdd(c.Lift), (eid: number) => { c.Lift.k[eid] = 0; c.Lift.axisX[eid] = 0; c.Lift.axisY[eid] = 0; c.Lift.axisZ[eid] = 1; });
+  observe(world, onAdd(c.Lift), (eid: number) => {
+    c.Lift.k[eid] = 0;
+    c.Lift.axisX[eid] = 0;
+    c.Lift.axisY[eid] = 0;
+    c.Lift.axisZ[eid] = 1;
+  });
   observe(world, onAdd(c.Buoyancy), (eid: number) => {
-    const B = c.Buoyancy; B.shape[eid] = 0; B.radius[eid] = 0.5; B.halfX[eid] = 0.5; B.halfY[eid] = 0.5; B.halfZ[eid] = 0.5; B.dragCoefficient[eid] = 0;
+    const B = c.Buoyancy;
+    B.shape[eid] = 0;
+    B.radius[eid] = 0.5;
+    B.halfX[eid] = 0.5;
+    B.halfY[eid] = 0.5;
+    B.halfZ[eid] = 0.5;
+    B.dragCoefficient[eid] = 0;
   });
   observe(world, onAdd(c.FluidRegion), (eid: number) => {
-    const F = c.FluidRegion; F.surface[eid] = 0; F.density[eid] = 1000;
-    F.minX[eid] = -Infinity; F.maxX[eid] = Infinity; F.minZ[eid] = -Infinity; F.maxZ[eid] = Infinity;
+    const F = c.FluidRegion;
+    F.surface[eid] = 0;
+    F.density[eid] = 1000;
+    F.minX[eid] = -Infinity;
+    F.maxX[eid] = Infinity;
+    F.minZ[eid] = -Infinity;
+    F.maxZ[eid] = Infinity;
   });
   observe(world, onAdd(c.Spring), (eid: number) => {
-    const S = c.Spring; S.a[eid] = 0; S.b[eid] = 0; S.restLength[eid] = 1; S.stiffness[eid] = 0; S.damping[eid] = 0;
-    S.oneSided[eid] = 0; S.anchorX[eid] = 0; S.anchorY[eid] = 0; S.anchorZ[eid] = 0;
+    const S = c.Spring;
+    S.a[eid] = 0;
+    S.b[eid] = 0;
+    S.restLength[eid] = 1;
+    S.stiffness[eid] = 0;
+    S.damping[eid] = 0;
+    S.oneSided[eid] = 0;
+    S.anchorX[eid] = 0;
+    S.anchorY[eid] = 0;
+    S.anchorZ[eid] = 0;
   });
   observe(world, onAdd(c.DrivingForce), (eid: number) => {
-    const D = c.DrivingForce; D.x[eid] = 0; D.y[eid] = 0; D.z[eid] = 0; D.omega[eid] = 0; D.phase[eid] = 0;
+    const D = c.DrivingForce;
+    D.x[eid] = 0;
+    D.y[eid] = 0;
+    D.z[eid] = 0;
+    D.omega[eid] = 0;
+    D.phase[eid] = 0;
   });
-  observe(world, onAdd(c.RandomForce), (eid: number) => { c.RandomForce.magnitude[eid] = 0; c.RandomForce.correlationTime[eid] = 1; c.RandomForce.seed[eid] = eid; });
+  observe(world, onAdd(c.RandomForce), (eid: number) => {
+    c.RandomForce.magnitude[eid] = 0;
+    c.RandomForce.correlationTime[eid] = 1;
+    c.RandomForce.seed[eid] = eid;
+  });
   observe(world, onAdd(c.Thrust), (eid: number) => {
-    const T = c.Thrust; T.exhaustVelocity[eid] = 0; T.massFlowRate[eid] = 0; T.fuel[eid] = 0; T.dirX[eid] = 0; T.dirY[eid] = 1; T.dirZ[eid] = 0;
+    const T = c.Thrust;
+    T.exhaustVelocity[eid] = 0;
+    T.massFlowRate[eid] = 0;
+    T.fuel[eid] = 0;
+    T.dirX[eid] = 0;
+    T.dirY[eid] = 1;
+    T.dirZ[eid] = 0;
   });
   observe(world, onAdd(c.Vortex), (eid: number) => {
-    const V = c.Vortex; V.cx[eid] = 0; V.cy[eid] = 0; V.cz[eid] = 0; V.axisX[eid] = 0; V.axisY[eid] = 0; V.axisZ[eid] = 1; V.k[eid] = 0; V.n[eid] = 1;
+    const V = c.Vortex;
+    V.cx[eid] = 0;
+    V.cy[eid] = 0;
+    V.cz[eid] = 0;
+    V.axisX[eid] = 0;
+    V.axisY[eid] = 0;
+    V.axisZ[eid] = 1;
+    V.k[eid] = 0;
+    V.n[eid] = 1;
   });
-  observe(world, onAdd(c.Lifetime), (eid: number) => { c.Lifetime.age[eid] = 0; c.Lifetime.duration[eid] = 1; });
+  observe(world, onAdd(c.Lifetime), (eid: number) => {
+    c.Lifetime.age[eid] = 0;
+    c.Lifetime.duration[eid] = 1;
+  });
   for (const law of [
-    c.LinearDrag, c.Vortex, c.QuadraticDrag, c.GravityScale, c.MutualGravity, c.Charge, c.CentralForce, c.Lift, c.Buoyancy,
-    c.DrivingForce, c.RandomForce, c.Thrust,
-  ]) registerForceLaw(world, law);
+    c.LinearDrag,
+    c.Vortex,
+    c.QuadraticDrag,
+    c.GravityScale,
+    c.MutualGravity,
+    c.Charge,
+    c.CentralForce,
+    c.Lift,
+    c.Buoyancy,
+    c.DrivingForce,
+    c.RandomForce,
+    c.Thrust,
+  ])
+    registerForceLaw(world, law);
   // A force accumulator needs a mass to turn force into acceleration; a collider needs a mass and a material.
   observe(world, onAdd(c.Force), (eid: number) => addComponentIfMissing(world, eid, c.Mass));
   // A collider is always a body with a force accumulator: contacts need its start-of-step position,
@@ -248,4 +405,3 @@ function installDefaults(world: PhysicsWorld): void {
     addComponentIfMissing(world, eid, c.Force);
   });
 }
-

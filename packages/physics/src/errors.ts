@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from './world.js';
 import { currentHandle } from './handles.js';
+import type { PhysicsWorld } from './world.js';
 
 /**
  * Thrown by `step` when a body's state becomes NaN or infinite. It is a RangeError so callers that
@@ -35,9 +35,15 @@ export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, st
   const c = world.components;
   // Velocities first: a NaN velocity makes the position NaN in the same step, and the velocity is the cause.
   const fields: Array<[string, Float64Array]> = [
-    ['Velocity.x', c.Velocity.x], ['Velocity.y', c.Velocity.y], ['Velocity.z', c.Velocity.z],
-    ['Position.x', c.Position.x], ['Position.y', c.Position.y], ['Position.z', c.Position.z],
-    ['AngularVelocity.z', c.AngularVelocity.z], ['AngularVelocity.x', c.AngularVelocity.x], ['AngularVelocity.y', c.AngularVelocity.y],
+    ['Velocity.x', c.Velocity.x],
+    ['Velocity.y', c.Velocity.y],
+    ['Velocity.z', c.Velocity.z],
+    ['Position.x', c.Position.x],
+    ['Position.y', c.Position.y],
+    ['Position.z', c.Position.z],
+    ['AngularVelocity.z', c.AngularVelocity.z],
+    ['AngularVelocity.x', c.AngularVelocity.x],
+    ['AngularVelocity.y', c.AngularVelocity.y],
   ];
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;

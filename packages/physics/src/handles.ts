@@ -1,6 +1,6 @@
 import { addEntity, entityExists, hasComponent } from 'bitecs';
-import type { PhysicsWorld } from './world.js';
 import { describe } from './validate.js';
+import type { PhysicsWorld } from './world.js';
 
 /**
  * Generational entity handles: what the public API hands out and accepts.
@@ -131,15 +131,24 @@ export function kindOf(world: PhysicsWorld, slot: number): string {
 export function isKind(world: PhysicsWorld, slot: number, kind: EntityKind): boolean {
   const c = world.components;
   switch (kind) {
-    case 'body': return hasComponent(world, slot, c.Position) && hasComponent(world, slot, c.Velocity);
-    case 'emitter': return hasComponent(world, slot, c.Emitter);
-    case 'electric-field': return hasComponent(world, slot, c.ElectricField);
-    case 'magnetic-field': return hasComponent(world, slot, c.MagneticField);
-    case 'fluid-region': return hasComponent(world, slot, c.FluidRegion);
-    case 'spring': return hasComponent(world, slot, c.Spring);
+    case 'body':
+      return hasComponent(world, slot, c.Position) && hasComponent(world, slot, c.Velocity);
+    case 'emitter':
+      return hasComponent(world, slot, c.Emitter);
+    case 'electric-field':
+      return hasComponent(world, slot, c.ElectricField);
+    case 'magnetic-field':
+      return hasComponent(world, slot, c.MagneticField);
+    case 'fluid-region':
+      return hasComponent(world, slot, c.FluidRegion);
+    case 'spring':
+      return hasComponent(world, slot, c.Spring);
     case 'collider':
-      return (hasComponent(world, slot, c.Position) && hasComponent(world, slot, c.Velocity))
-        || hasComponent(world, slot, c.Segment) || hasComponent(world, slot, c.Plane);
+      return (
+        (hasComponent(world, slot, c.Position) && hasComponent(world, slot, c.Velocity)) ||
+        hasComponent(world, slot, c.Segment) ||
+        hasComponent(world, slot, c.Plane)
+      );
   }
 }
 
@@ -181,4 +190,3 @@ export function createSlot(world: PhysicsWorld, where: string): number {
   world.spawnStamp[slot] = world.spawnStamp[slot]! + 1;
   return slot;
 }
-

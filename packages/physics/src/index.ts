@@ -2,141 +2,7 @@
  * @bitphysics/physics: components, systems, the staged step, collisions, diagnostics and scenes.
  * Everything is SI (m, kg, s, rad, N), y up, angles counter-clockwise.
  */
-export { createPhysicsWorld } from './create-world.js';
-export { registerForceLaw, addComponentIfMissing, disposeWorld, threadsReady, MAX_CAPACITY, MAX_TIME_STEP } from './world.js';
-export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
-export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
-export { createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, LAZY_GROUPS, materializeStore, materializeGroup, storesAllocatedWith } from './components.js';
-export type { Components, Vec3Store } from './components.js';
-export {
-  createEntity, addBody, addParticle, addSegment, setBoundary, clearBoundary, removeBody,
-  setMass, setMaterial, setRadius, setPosition, setVelocity, applyImpulse, setGravity, setTimeStep,
-  setAngularVelocity, setOrientation,
-} from './bodies.js';
-export type { BodyOptions, ParticleOptions, SegmentOptions, BoundaryOptions, MaterialOptions } from './bodies.js';
-/**
- * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
- * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
- */
-export { slotOf, handleOf, isAlive, resolveEntity, SLOT_RANGE } from './handles.js';
-export type { EntityKind } from './handles.js';
-export {
-  inertiaOfSolidSphere, inertiaOfSphericalShell, inertiaOfSolidBox, inertiaOfSolidCylinder, inertiaOfDisc, inertiaOfRectangle,
-  setInertia, applyForceAtPoint, applyImpulseAtPoint, spinAngularMomentum, spinKineticEnergy, setAngularDamping, addPlane,
-} from './rigid.js';
-export type { PlaneOptions } from './rigid.js';
-export { rotateVector, rotateVectorInverse, rotateFrom, rotateInPlace } from './math/quaternion.js';
-export { eulerAcceleration } from './integrators/euler-equations.js';
-export { angularDampingSystem } from './forces/angular-damping.js';
-export { STAGES, SUBSTEP_STAGES, PIPELINE } from './pipeline/stages.js';
-export type { StageName, System } from './pipeline/stages.js';
-export { step, stepMany, evaluateForces, addSystem, removeSystem } from './pipeline/step.js';
-export type { AddSystemOptions } from './pipeline/step.js';
-export { createFixedStepLoop } from './pipeline/loop.js';
-export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop.js';
-export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names.js';
-export type { IntegratorName } from './integrators/names.js';
-export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
-export type { Integrator } from './integrators/integrate.js';
-export { clearForcesSystem } from './forces/clear.js';
-export { linearDragSystem, quadraticDragSystem } from './forces/drag.js';
-export { broadphaseSystem, BodyType, PairKind } from './collision/broadphase.js';
-export { narrowphaseSystem, currentSeparation } from './collision/narrowphase.js';
-export { contactSolverSystem } from './collision/solver.js';
-export { CONTACT_LENGTH_UNIT, MAX_AUTO_SUBSTEPS, contactLength, solverSubstepsFor } from './collision/contact-scale.js';
-export { shapeCollisionSystem } from './collision/shape-collision.js';
-export { rayCast, rayCastAll, overlapPoint, overlapAABB } from './collision/shape-queries.js';
-export type { RayHit } from './collision/shape-queries.js';
-export type { ManifoldBuffer, ContactEvents, EventList, ShapeCollisionState } from './collision/manifolds.js';
-export { collideShapes, collideHalfPlane, collideCircles, createManifold, segmentFractions } from './collision/manifold.js';
-export type { Manifold } from './collision/manifold.js';
-export { addShape, addBox, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api.js';
-export type { ShapeOptions, BoxOptions } from './shapes/api.js';
-export { ShapeKind, MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon } from './shapes/geometry.js';
-export type { ConvexGeometry } from './shapes/geometry.js';
-export { shapeMassProperties } from './shapes/mass.js';
-export type { MassProperties } from './shapes/mass.js';
-export type { ShapeStore } from './shapes/store.js';
-export { addShape3D, updateMassFromShapes3D, shapes3DOfBody, hullOfShape3D } from './shapes3d/api.js';
-export type { Shape3DOptions } from './shapes3d/api.js';
-export { quickhull, MAX_HULL_VERTICES, MAX_HULL_INPUT } from './shapes3d/hull.js';
-export type { Hull } from './shapes3d/hull.js';
-export { sphereMass, boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, principalAxes } from './shapes3d/mass.js';
-export type { MassProperties3D } from './shapes3d/mass.js';
-export { Shape3DKind, shapes3DOf } from './shapes3d/store.js';
-export type { Shape3DStore } from './shapes3d/store.js';
-export { rayCast3D, rayCastAll3D, overlapPoint3D, overlapAABB3D } from './collision/shape3d-queries.js';
-export type { RayHit3D } from './collision/shape3d-queries.js';
-export { addTriangleMesh3D, addHeightField3D } from './collision/mesh3d.js';
-export type { TriangleMeshOptions, HeightFieldOptions, Mesh3D } from './collision/mesh3d.js';
-export { contactEvents3D } from './collision/manifold3d-solver.js';
-export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
-export { forEachContact3D } from './collision/contacts3d-view.js';
-export { meshesOf } from './collision/mesh3d.js';
-export type { Contact3DView } from './collision/contacts3d-view.js';
-export { addBallJoint3D, addHingeJoint3D, addFixedJoint3D, addDistanceJoint3D, addSliderJoint3D, removeJoint3D, joint3DBreaks } from './joints3d/api.js';
-export { setBallJoint3DCone, setDistanceJoint3DLength, setDistanceJoint3DSpring, setJoint3DBreak, setJoint3DLimits, setJoint3DMotor } from './joints3d/api.js';
-export type { Joint3DBaseOptions, BallJoint3DOptions, HingeJoint3DOptions, FixedJoint3DOptions, DistanceJoint3DOptions, SliderJoint3DOptions } from './joints3d/api.js';
-export { Joint3DType, Joint3DFlag, joints3DOf } from './joints3d/store.js';
-export type { Joint3DStore } from './joints3d/store.js';
-export { sleepSystem, wakeSystem, wakeBody, wakeAll, isSleeping } from './collision/sleep.js';
-export type { SleepState } from './collision/state.js';
-export { ContactKind, forEachContact } from './collision/contacts.js';
-export type { ContactView } from './collision/contacts.js';
-export type { ContactBuffer } from './collision/contacts.js';
-export type { CollisionState, CollisionSettings, Boundary } from './collision/state.js';
-export {
-  kineticEnergy, gravitationalPotentialEnergy, newtonianPotentialEnergy, springPotentialEnergy, electricPotentialEnergy,
-  centralPotentialEnergy, potentialEnergy, contactSpringEnergy, totalEnergy, linearMomentum, angularMomentum,
-  contactCount, stageTimings,
-} from './diagnostics/energy.js';
-export { createRecorder } from './diagnostics/recorder.js';
-export type { Recorder, RecorderOptions, Quantity } from './diagnostics/recorder.js';
-export {
-  setGravityScale, enableMutualGravity, setAttractor, setCharge, addElectricField, addMagneticField, setCentralForce,
-  setDrag, setLift, setBuoyancy, addFluidRegion, addSpring, setDrivingForce, setRandomForce, setThrust, setVortex,
-  setElectricField, setMagneticField, setFluidRegion, setSpring,
-} from './forces/api.js';
-export { vortexSystem } from './forces/vortex.js';
-export {
-  addEmitter, setEmitter, burst, emitNow, setEmitterEnabled, setEmitterRate, onParticleDeath, onParticleBirth, particlesExpired, particleLook, lifetimeSystem, emitterSystem,
-  EmitterShape, CapacityPolicy, MAX_EMITTER_RATE, maxSpawnsPerStep,
-} from './particles/emitter.js';
-export type { EmitterOptions, EmittedParticleOptions, ParticleBirthHook, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
-export { addParticles } from './particles/bulk.js';
-export type { BulkParticleOptions } from './particles/bulk.js';
-export type { FieldOptions, BuoyancyOptions, SpringOptions, SpringSettings, FluidRegionOptions } from './forces/api.js';
-export { G_SI, COULOMB_SI, MAX_WIND_MODES } from './forces/settings.js';
-export { setGravitation, setElectrostatics, setWind, windAt } from './forces/configure.js';
-export type { ForceLawSettings, WindField, GravityMethod } from './forces/settings.js';
-export type { WindOptions, GravitationOptions } from './forces/configure.js';
-export type { ForceLaw } from './forces/law.js';
-export { gravityScaleSystem, mutualGravitySystem, attractorSystem } from './forces/gravity.js';
-export { coulombSystem, lorentzSystem, fieldsAt } from './forces/electromagnetism.js';
-export { centralForceSystem } from './forces/central.js';
-export { liftSystem } from './forces/drag.js';
-export { buoyancySystem, submergedMeasure, BuoyancyShape } from './forces/fluid.js';
-export { springSystem } from './forces/spring.js';
-export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving.js';
-export { thrustSystem, burnFuelSystem } from './forces/thrust.js';
-export { setBallast, setBallastTarget, ballastTrimSystem, ballastFillSystem } from './forces/ballast.js';
-export type { BallastOptions } from './forces/ballast.js';
-export { setBodyThrust, bodyThrustSystem } from './forces/body-thrust.js';
-export {
-  addLiftingSurface, setControlDeflection, liftingSurfaceSystem, liftCoefficient, dragCoefficient, removeSurfacesOf, DEFAULT_LIFT_SLOPE,
-} from './forces/lifting-surface.js';
-export type { LiftingSurfaceOptions } from './forces/lifting-surface.js';
-export {
-  buildTree, treeField, treeFields, treeFieldsSorted, worldTree, worldTreeFields, barnesHutGravity,
-} from './forces/barnes-hut.js';
-export {
-  directField, sampleIndices, fieldErrorStats, gravityFieldError, forceErrorMedian, gravityMomentumRate,
-} from './forces/gravity-accuracy.js';
-export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy.js';
-export type { GravityTree } from './forces/barnes-hut.js';
-export { NonFiniteStateError } from './errors.js';
-export { Rng } from './rng.js';
-export { query, Not } from './query.js';
+
 /**
  * bitecs' own functions for raw ECS use on a physics world (`addComponent(world, slotOf(e),
  * world.components.LinearDrag)`), re-exported so a project needs no import of its own from bitecs.
@@ -144,30 +10,292 @@ export { query, Not } from './query.js';
  * entityExists, to ask whether an entity handed out by the API still exists).
  * bitecs is a peer dependency: the project and every bitphysics package share one copy.
  */
-export { entityExists, hasComponent, addComponent, removeComponent, getEntityComponents } from 'bitecs';
+export { addComponent, entityExists, getEntityComponents, hasComponent, removeComponent } from 'bitecs';
+export type { BodyOptions, BoundaryOptions, MaterialOptions, ParticleOptions, SegmentOptions } from './bodies.js';
 export {
-  addDistanceJoint, addRevoluteJoint, addPrismaticJoint, addWeldJoint, addWheelJoint, addMouseJoint, removeJoint, isJoint,
-  setMouseTarget, setJointMotor, setJointLimits, setJointSpring, jointLength, jointAngle, jointAnchors,
-} from './joints/api.js';
-export type {
-  JointBaseOptions, DistanceJointOptions, RevoluteJointOptions, PrismaticJointOptions, WeldJointOptions, WheelJointOptions, MouseJointOptions,
-} from './joints/api.js';
-export { JointType, JointFlag, JOINT_TYPE_NAMES } from './joints/store.js';
-export type { JointStore, JointTypeCode } from './joints/store.js';
-export type { JointState, JointSettings, JointBreakEvents } from './joints/state.js';
-export { createRope } from './joints/rope.js';
-export type { RopeOptions, Rope } from './joints/rope.js';
-export { createCloth, clothPointIndex } from './cloth/create.js';
+  addBody,
+  addParticle,
+  addSegment,
+  applyImpulse,
+  clearBoundary,
+  createEntity,
+  removeBody,
+  setAngularVelocity,
+  setBoundary,
+  setGravity,
+  setMass,
+  setMaterial,
+  setOrientation,
+  setPosition,
+  setRadius,
+  setTimeStep,
+  setVelocity,
+} from './bodies.js';
+export type { Cloth, ClothOptions } from './cloth/create.js';
+export { clothPointIndex, createCloth } from './cloth/create.js';
 export { pinClothPoint } from './cloth/pin.js';
-export type { ClothOptions, Cloth } from './cloth/create.js';
-export { ClothLinkKind } from './cloth/store.js';
-export type { ClothLinkStore } from './cloth/store.js';
-export type { ClothState } from './cloth/state.js';
 export { clothSystem } from './cloth/solver.js';
+export type { ClothState } from './cloth/state.js';
+export type { ClothLinkStore } from './cloth/store.js';
+export { ClothLinkKind } from './cloth/store.js';
+export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase.js';
+export { CONTACT_LENGTH_UNIT, contactLength, MAX_AUTO_SUBSTEPS, solverSubstepsFor } from './collision/contact-scale.js';
+export type { ContactBuffer, ContactView } from './collision/contacts.js';
+export { ContactKind, forEachContact } from './collision/contacts.js';
+export type { Contact3DView } from './collision/contacts3d-view.js';
+export { forEachContact3D } from './collision/contacts3d-view.js';
+export type { Manifold } from './collision/manifold.js';
+export { collideCircles, collideHalfPlane, collideShapes, createManifold, segmentFractions } from './collision/manifold.js';
+export { contactEvents3D } from './collision/manifold3d-solver.js';
+export type { ContactEvents, EventList, ManifoldBuffer, ShapeCollisionState } from './collision/manifolds.js';
+export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
+export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './collision/mesh3d.js';
+export { addHeightField3D, addTriangleMesh3D, meshesOf } from './collision/mesh3d.js';
+export { currentSeparation, narrowphaseSystem } from './collision/narrowphase.js';
+export { shapeCollisionSystem } from './collision/shape-collision.js';
+export type { RayHit } from './collision/shape-queries.js';
+export { overlapAABB, overlapPoint, rayCast, rayCastAll } from './collision/shape-queries.js';
+export type { RayHit3D } from './collision/shape3d-queries.js';
+export { overlapAABB3D, overlapPoint3D, rayCast3D, rayCastAll3D } from './collision/shape3d-queries.js';
+export { isSleeping, sleepSystem, wakeAll, wakeBody, wakeSystem } from './collision/sleep.js';
+export { contactSolverSystem } from './collision/solver.js';
+export type { Boundary, CollisionSettings, CollisionState, SleepState } from './collision/state.js';
+export type { Components, Vec3Store } from './components.js';
+export {
+  createComponents,
+  DEFAULT_MATERIAL,
+  DEFAULT_RADIUS,
+  LAZY_COMPONENTS,
+  LAZY_GROUPS,
+  materializeGroup,
+  materializeStore,
+  storesAllocatedWith,
+} from './components.js';
+export { createPhysicsWorld } from './create-world.js';
+export {
+  angularMomentum,
+  centralPotentialEnergy,
+  contactCount,
+  contactSpringEnergy,
+  electricPotentialEnergy,
+  gravitationalPotentialEnergy,
+  kineticEnergy,
+  linearMomentum,
+  newtonianPotentialEnergy,
+  potentialEnergy,
+  springPotentialEnergy,
+  stageTimings,
+  totalEnergy,
+} from './diagnostics/energy.js';
+export type { Quantity, Recorder, RecorderOptions } from './diagnostics/recorder.js';
+export { createRecorder } from './diagnostics/recorder.js';
+export { NonFiniteStateError } from './errors.js';
+export { angularDampingSystem } from './forces/angular-damping.js';
+export type { BuoyancyOptions, FieldOptions, FluidRegionOptions, SpringOptions, SpringSettings } from './forces/api.js';
+export {
+  addElectricField,
+  addFluidRegion,
+  addMagneticField,
+  addSpring,
+  enableMutualGravity,
+  setAttractor,
+  setBuoyancy,
+  setCentralForce,
+  setCharge,
+  setDrag,
+  setDrivingForce,
+  setElectricField,
+  setFluidRegion,
+  setGravityScale,
+  setLift,
+  setMagneticField,
+  setRandomForce,
+  setSpring,
+  setThrust,
+  setVortex,
+} from './forces/api.js';
+export type { BallastOptions } from './forces/ballast.js';
+export { ballastFillSystem, ballastTrimSystem, setBallast, setBallastTarget } from './forces/ballast.js';
+export type { GravityTree } from './forces/barnes-hut.js';
+export {
+  barnesHutGravity,
+  buildTree,
+  treeField,
+  treeFields,
+  treeFieldsSorted,
+  worldTree,
+  worldTreeFields,
+} from './forces/barnes-hut.js';
+export { bodyThrustSystem, setBodyThrust } from './forces/body-thrust.js';
+export { centralForceSystem } from './forces/central.js';
+export { clearForcesSystem } from './forces/clear.js';
+export type { GravitationOptions, WindOptions } from './forces/configure.js';
+export { setElectrostatics, setGravitation, setWind, windAt } from './forces/configure.js';
+export { liftSystem, linearDragSystem, quadraticDragSystem } from './forces/drag.js';
+export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving.js';
+export { coulombSystem, fieldsAt, lorentzSystem } from './forces/electromagnetism.js';
+export { BuoyancyShape, buoyancySystem, submergedMeasure } from './forces/fluid.js';
+export { attractorSystem, gravityScaleSystem, mutualGravitySystem } from './forces/gravity.js';
+export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy.js';
+export {
+  directField,
+  fieldErrorStats,
+  forceErrorMedian,
+  gravityFieldError,
+  gravityMomentumRate,
+  sampleIndices,
+} from './forces/gravity-accuracy.js';
+export type { ForceLaw } from './forces/law.js';
+export type { LiftingSurfaceOptions } from './forces/lifting-surface.js';
+export {
+  addLiftingSurface,
+  DEFAULT_LIFT_SLOPE,
+  dragCoefficient,
+  liftCoefficient,
+  liftingSurfaceSystem,
+  removeSurfacesOf,
+  setControlDeflection,
+} from './forces/lifting-surface.js';
+export type { ForceLawSettings, GravityMethod, WindField } from './forces/settings.js';
+export { COULOMB_SI, G_SI, MAX_WIND_MODES } from './forces/settings.js';
+export { springSystem } from './forces/spring.js';
+export { burnFuelSystem, thrustSystem } from './forces/thrust.js';
+export { vortexSystem } from './forces/vortex.js';
+export type { EntityKind } from './handles.js';
+/**
+ * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
+ * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
+ */
+export { handleOf, isAlive, resolveEntity, SLOT_RANGE, slotOf } from './handles.js';
+export { eulerAcceleration } from './integrators/euler-equations.js';
+export type { Integrator } from './integrators/integrate.js';
+export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
+export type { IntegratorName } from './integrators/names.js';
+export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names.js';
+export type {
+  DistanceJointOptions,
+  JointBaseOptions,
+  MouseJointOptions,
+  PrismaticJointOptions,
+  RevoluteJointOptions,
+  WeldJointOptions,
+  WheelJointOptions,
+} from './joints/api.js';
+export {
+  addDistanceJoint,
+  addMouseJoint,
+  addPrismaticJoint,
+  addRevoluteJoint,
+  addWeldJoint,
+  addWheelJoint,
+  isJoint,
+  jointAnchors,
+  jointAngle,
+  jointLength,
+  removeJoint,
+  setJointLimits,
+  setJointMotor,
+  setJointSpring,
+  setMouseTarget,
+} from './joints/api.js';
+export type { Rope, RopeOptions } from './joints/rope.js';
+export { createRope } from './joints/rope.js';
+export type { JointBreakEvents, JointSettings, JointState } from './joints/state.js';
+export type { JointStore, JointTypeCode } from './joints/store.js';
+export { JOINT_TYPE_NAMES, JointFlag, JointType } from './joints/store.js';
+export type {
+  BallJoint3DOptions,
+  DistanceJoint3DOptions,
+  FixedJoint3DOptions,
+  HingeJoint3DOptions,
+  Joint3DBaseOptions,
+  SliderJoint3DOptions,
+} from './joints3d/api.js';
+export {
+  addBallJoint3D,
+  addDistanceJoint3D,
+  addFixedJoint3D,
+  addHingeJoint3D,
+  addSliderJoint3D,
+  joint3DBreaks,
+  removeJoint3D,
+  setBallJoint3DCone,
+  setDistanceJoint3DLength,
+  setDistanceJoint3DSpring,
+  setJoint3DBreak,
+  setJoint3DLimits,
+  setJoint3DMotor,
+} from './joints3d/api.js';
+export type { Joint3DStore } from './joints3d/store.js';
+export { Joint3DFlag, Joint3DType, joints3DOf } from './joints3d/store.js';
+export { rotateFrom, rotateInPlace, rotateVector, rotateVectorInverse } from './math/quaternion.js';
+export type { BulkParticleOptions } from './particles/bulk.js';
+export { addParticles } from './particles/bulk.js';
+export type { EmittedParticleOptions, EmitterOptions, ParticleBirthHook, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
+export {
+  addEmitter,
+  burst,
+  CapacityPolicy,
+  EmitterShape,
+  emitNow,
+  emitterSystem,
+  lifetimeSystem,
+  MAX_EMITTER_RATE,
+  maxSpawnsPerStep,
+  onParticleBirth,
+  onParticleDeath,
+  particleLook,
+  particlesExpired,
+  setEmitter,
+  setEmitterEnabled,
+  setEmitterRate,
+} from './particles/emitter.js';
+export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop.js';
+export { createFixedStepLoop } from './pipeline/loop.js';
+export type { StageName, System } from './pipeline/stages.js';
+export { PIPELINE, STAGES, SUBSTEP_STAGES } from './pipeline/stages.js';
+export type { AddSystemOptions } from './pipeline/step.js';
+export { addSystem, evaluateForces, removeSystem, step, stepMany } from './pipeline/step.js';
+export { Not, query } from './query.js';
+export type { PlaneOptions } from './rigid.js';
+export {
+  addPlane,
+  applyForceAtPoint,
+  applyImpulseAtPoint,
+  inertiaOfDisc,
+  inertiaOfRectangle,
+  inertiaOfSolidBox,
+  inertiaOfSolidCylinder,
+  inertiaOfSolidSphere,
+  inertiaOfSphericalShell,
+  setAngularDamping,
+  setInertia,
+  spinAngularMomentum,
+  spinKineticEnergy,
+} from './rigid.js';
+export { Rng } from './rng.js';
 export * from './scenes/index.js';
-/** Snapshots (save, load, rewind, rollback) and a state fingerprint for determinism checks. */
-export { snapshot, restore } from './snapshot/snapshot.js';
-export type { WorldSnapshot, SnapshotHeader, Encoded } from './snapshot/snapshot.js';
+export type { BoxOptions, ShapeOptions } from './shapes/api.js';
+export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api.js';
+export type { ConvexGeometry } from './shapes/geometry.js';
+export { MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon, ShapeKind } from './shapes/geometry.js';
+export type { MassProperties } from './shapes/mass.js';
+export { shapeMassProperties } from './shapes/mass.js';
+export type { ShapeStore } from './shapes/store.js';
+export type { Shape3DOptions } from './shapes3d/api.js';
+export { addShape3D, hullOfShape3D, shapes3DOfBody, updateMassFromShapes3D } from './shapes3d/api.js';
+export type { Hull } from './shapes3d/hull.js';
+export { MAX_HULL_INPUT, MAX_HULL_VERTICES, quickhull } from './shapes3d/hull.js';
+export type { MassProperties3D } from './shapes3d/mass.js';
+export { boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, principalAxes, sphereMass } from './shapes3d/mass.js';
+export type { Shape3DStore } from './shapes3d/store.js';
+export { Shape3DKind, shapes3DOf } from './shapes3d/store.js';
 export { stateHash } from './snapshot/hash.js';
+export type { InputEvent, InputHandlers, InputRecorder, Replay, ReplayOptions, ReplayPlayer } from './snapshot/replay.js';
 export { createInputRecorder, createReplayPlayer, playReplay } from './snapshot/replay.js';
-export type { InputEvent, Replay, InputHandlers, ReplayOptions, InputRecorder, ReplayPlayer } from './snapshot/replay.js';
+export type { Encoded, SnapshotHeader, WorldSnapshot } from './snapshot/snapshot.js';
+/** Snapshots (save, load, rewind, rollback) and a state fingerprint for determinism checks. */
+export { restore, snapshot } from './snapshot/snapshot.js';
+export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
+export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
+export { addComponentIfMissing, disposeWorld, MAX_CAPACITY, MAX_TIME_STEP, registerForceLaw, threadsReady } from './world.js';

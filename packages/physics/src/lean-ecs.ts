@@ -30,7 +30,11 @@ import { $internal } from 'bitecs';
  * Ids above the capacity are never made (createSlot refuses them).
  */
 
-interface ComponentData { generationId: number; bitflag: number; ref: object }
+interface ComponentData {
+  generationId: number;
+  bitflag: number;
+  ref: object;
+}
 interface EcsContext {
   entityIndex: { aliveCount: number; dense: number[]; sparse: ArrayLike<number | undefined> & { [i: number]: number | undefined } };
   entityMasks: (ArrayLike<number> & { [i: number]: number })[];
@@ -70,7 +74,10 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
   set.version = 0;
   set.add = (v: number): void => {
     if (has(v)) return;
-    if (sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    if (sparse.length === 0) {
+      sparse = new Int32Array(capacity + 1);
+      set.sparse = sparse;
+    }
     sparse[v] = dense.push(v) - 1;
     set.version!++;
   };
@@ -79,12 +86,21 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
     set.version!++;
     const index = sparse[v]!;
     const swapped = dense.pop()!;
-    if (swapped !== v) { dense[index] = swapped; sparse[swapped] = index; }
+    if (swapped !== v) {
+      dense[index] = swapped;
+      sparse[swapped] = index;
+    }
   };
-  set.reset = (): void => { dense.length = 0; set.version!++; };
+  set.reset = (): void => {
+    dense.length = 0;
+    set.version!++;
+  };
   assigners.set(set, (ids: ArrayLike<number>): void => {
     const n = ids.length;
-    if (n > 0 && sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    if (n > 0 && sparse.length === 0) {
+      sparse = new Int32Array(capacity + 1);
+      set.sparse = sparse;
+    }
     const m = Math.min(dense.length, n);
     for (let i = 0; i < m; i++) dense[i] = ids[i]!;
     if (dense.length > n) dense.length = n;
@@ -95,7 +111,10 @@ function typedSparseSet(set: SparseSetLike, capacity: number): void {
   set.sort = (compare?: (a: number, b: number) => number): void => {
     dense.sort(compare);
     set.version!++;
-    if (dense.length > 0 && sparse.length === 0) { sparse = new Int32Array(capacity + 1); set.sparse = sparse; }
+    if (dense.length > 0 && sparse.length === 0) {
+      sparse = new Int32Array(capacity + 1);
+      set.sparse = sparse;
+    }
     for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
   };
 }
@@ -147,11 +166,14 @@ function leanObservable(): Observable {
   return {
     subscribe(listener) {
       listeners.add(listener);
-      return () => { listeners.delete(listener); };
+      return () => {
+        listeners.delete(listener);
+      };
     },
     // No rest parameter: it would gather an array on every call; `arguments` is read only with listeners.
     notify(entity: number): object {
       if (listeners.size === 0) return NO_RESULT;
+      // biome-ignore lint/complexity/noArguments: a rest parameter would allocate on every call
       const args = Array.prototype.slice.call(arguments, 1) as unknown[];
       let acc: object = {};
       for (const listener of Array.from(listeners)) {
@@ -165,7 +187,10 @@ function leanObservable(): Observable {
 
 /** The world's query set: each query registered gets typed sparse arrays before bitecs fills it. */
 class LeanQuerySet<Q extends SparseSetLike & { toRemove: SparseSetLike }> extends Set<Q> {
-  constructor(private readonly capacity: number, queries: Iterable<Q>) {
+  constructor(
+    private readonly capacity: number,
+    queries: Iterable<Q>,
+  ) {
     super();
     // Queries made before (the component defaults' observers) keep bitecs' observables: they may have listeners.
     for (const q of queries) this.register(q, false);
@@ -176,7 +201,8 @@ class LeanQuerySet<Q extends SparseSetLike & { toRemove: SparseSetLike }> extend
   /** Typed sparse sets for `q` (once), and lean observables if `lean` and `q` is new (no listener can hold bitecs' yet). */
   private register(q: Q, lean: boolean): this {
     if (!(q.sparse instanceof Int32Array)) {
-      typedSparseSet(q, this.capacity); typedSparseSet(q.toRemove, this.capacity);
+      typedSparseSet(q, this.capacity);
+      typedSparseSet(q.toRemove, this.capacity);
       const o = q as unknown as { addObservable?: Observable; removeObservable?: Observable };
       if (lean && o.addObservable !== undefined) o.addObservable = leanObservable();
       if (lean && o.removeObservable !== undefined) o.removeObservable = leanObservable();
@@ -191,9 +217,13 @@ class MaskComponentSet {
   eid = 0;
   constructor(private readonly ctx: EcsContext) {}
   /** No-op: bitecs has already set the component's bit in the entity's mask. */
-  add(): this { return this; }
+  add(): this {
+    return this;
+  }
   /** No-op: bitecs has already cleared the component's bit. */
-  delete(): boolean { return true; }
+  delete(): boolean {
+    return true;
+  }
   has(component: object): boolean {
     const d = this.ctx.componentMap.get(component);
     return d !== undefined && ((this.ctx.entityMasks[d.generationId]![this.eid] ?? 0) & d.bitflag) === d.bitflag;
@@ -204,39 +234,56 @@ class MaskComponentSet {
     return n;
   }
   *[Symbol.iterator](): IterableIterator<object> {
-    const eid = this.eid, ctx = this.ctx;
+    const eid = this.eid,
+      ctx = this.ctx;
     for (const d of ctx.componentMap.values()) {
       if (((ctx.entityMasks[d.generationId]![eid] ?? 0) & d.bitflag) === d.bitflag) yield d.ref;
     }
   }
-  values(): IterableIterator<object> { return this[Symbol.iterator](); }
-  keys(): IterableIterator<object> { return this[Symbol.iterator](); }
-  forEach(fn: (c: object, c2: object, set: this) => void): void { for (const c of this) fn(c, c, this); }
+  values(): IterableIterator<object> {
+    return this[Symbol.iterator]();
+  }
+  keys(): IterableIterator<object> {
+    return this[Symbol.iterator]();
+  }
+  forEach(fn: (c: object, c2: object, set: this) => void): void {
+    for (const c of this) fn(c, c, this);
+  }
 }
 
 /** The map bitecs reads as `entityComponents`: live entity id -> its component set (a mask view). */
 class MaskComponentSets {
   private readonly view: MaskComponentSet;
-  constructor(private readonly ctx: EcsContext) { this.view = new MaskComponentSet(ctx); }
+  constructor(private readonly ctx: EcsContext) {
+    this.view = new MaskComponentSet(ctx);
+  }
   private alive(eid: number): boolean {
     const ix = this.ctx.entityIndex;
     const i = ix.sparse[eid];
     return i !== undefined && i < ix.aliveCount && ix.dense[i] === eid;
   }
   /** No-op (bitecs' addEntity hands a fresh empty Set; the mask is the record). */
-  set(): this { return this; }
+  set(): this {
+    return this;
+  }
   /** The entity's components as a view, or undefined for an id that is not alive. The view is shared: read it before the next `get`. */
   get(eid: number): MaskComponentSet | undefined {
     if (!this.alive(eid)) return undefined;
     this.view.eid = eid;
     return this.view;
   }
-  has(eid: number): boolean { return this.alive(eid); }
+  has(eid: number): boolean {
+    return this.alive(eid);
+  }
   /** No-op (bitecs clears the removed entity's masks itself). */
-  delete(): boolean { return true; }
+  delete(): boolean {
+    return true;
+  }
   /** No-op: the entity index is the record of live ids. */
   clear(): void {}
-  get size(): number { return this.ctx.entityIndex.aliveCount; }
+  get size(): number {
+    return this.ctx.entityIndex.aliveCount;
+  }
   *keys(): IterableIterator<number> {
     const ix = this.ctx.entityIndex;
     for (let i = 0; i < ix.aliveCount; i++) yield ix.dense[i]!;
@@ -253,7 +300,8 @@ class MaskComponentSets {
  */
 export function useLeanEcsStorage(world: object, capacity: number): void {
   const ctx = (world as Record<symbol, EcsContext>)[$internal]!;
-  if (ctx.entityIndex.aliveCount !== 0 || ctx.entityIndex.dense.length !== 0) throw new Error('useLeanEcsStorage: the world must have no entities yet');
+  if (ctx.entityIndex.aliveCount !== 0 || ctx.entityIndex.dense.length !== 0)
+    throw new Error('useLeanEcsStorage: the world must have no entities yet');
   ctx.entityComponents = new MaskComponentSets(ctx);
   ctx.entityIndex.sparse = new Int32Array(capacity + 1) as never;
   // Every generation typed, those bitecs adds later too (it pushes an empty JS array when a
@@ -261,7 +309,11 @@ export function useLeanEcsStorage(world: object, capacity: number): void {
   const masks = ctx.entityMasks;
   for (let g = 0; g < masks.length; g++) masks[g] = new Int32Array(capacity + 1);
   Object.defineProperty(masks, 'push', {
-    value: (...items: unknown[]): number => Array.prototype.push.apply(masks, items.map(() => new Int32Array(capacity + 1))),
+    value: (...items: unknown[]): number =>
+      Array.prototype.push.apply(
+        masks,
+        items.map(() => new Int32Array(capacity + 1)),
+      ),
     enumerable: false,
   });
   ctx.queries = new LeanQuerySet(capacity, ctx.queries);

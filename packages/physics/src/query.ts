@@ -1,4 +1,4 @@
-import { commitRemovals, Not as bitecsNot, query as bitecsQuery, type QueryResult } from 'bitecs';
+import { Not as bitecsNot, query as bitecsQuery, commitRemovals, type QueryResult } from 'bitecs';
 
 /**
  * Cached queries. bitecs 0.4's `query(world, terms)` hashes its terms on every call (map, sort and
@@ -16,7 +16,10 @@ const ids = new WeakMap<object, number>();
 let nextId = 1;
 function idOf(term: object): number {
   let id = ids.get(term);
-  if (id === undefined) { id = nextId++; ids.set(term, id); }
+  if (id === undefined) {
+    id = nextId++;
+    ids.set(term, id);
+  }
   return id;
 }
 
@@ -32,7 +35,10 @@ export function Not(component: object): Term {
   return term;
 }
 
-interface Entry { terms: Term[]; dense: QueryResult }
+interface Entry {
+  terms: Term[];
+  dense: QueryResult;
+}
 const caches = new WeakMap<object, Map<number, Entry[]>>();
 
 /**
@@ -41,7 +47,10 @@ const caches = new WeakMap<object, Map<number, Entry[]>>();
  */
 export function query(world: object, terms: Term[]): QueryResult {
   let cache = caches.get(world);
-  if (cache === undefined) { cache = new Map(); caches.set(world, cache); }
+  if (cache === undefined) {
+    cache = new Map();
+    caches.set(world, cache);
+  }
   let key = terms.length;
   for (let i = 0; i < terms.length; i++) key = (Math.imul(key, 0x01000193) ^ idOf(terms[i]!)) >>> 0;
   let bucket = cache.get(key);
@@ -51,7 +60,11 @@ export function query(world: object, terms: Term[]): QueryResult {
       const t = entry.terms;
       if (t.length !== terms.length) continue;
       let same = true;
-      for (let i = 0; i < t.length; i++) if (t[i] !== terms[i]) { same = false; break; }
+      for (let i = 0; i < t.length; i++)
+        if (t[i] !== terms[i]) {
+          same = false;
+          break;
+        }
       if (same) {
         commitRemovals(world as never);
         return entry.dense;

@@ -1,10 +1,10 @@
 import { addComponent, hasComponent } from 'bitecs';
+import { wakeIsland } from './collision/sleep.js';
+import { createSlot, currentHandle, resolveKind } from './handles.js';
+import { rotateVector, rotateVectorInverse } from './math/quaternion.js';
+import { assertFinite, assertInRange, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
 import type { PhysicsWorld } from './world.js';
 import { addComponentIfMissing } from './world.js';
-import { createSlot, currentHandle, resolveKind } from './handles.js';
-import { assertFinite, assertInRange, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from './validate.js';
-import { rotateVector, rotateVectorInverse } from './math/quaternion.js';
-import { wakeIsland } from './collision/sleep.js';
 
 /**
  * Rigid-body rotation helpers: moments of inertia of standard solids, setting a body's inertia,
@@ -35,7 +35,9 @@ export function inertiaOfSolidBox(mass: number, size: ArrayLike<number>): [numbe
   assertPositive('inertiaOfSolidBox', 'mass', mass);
   assertVector('inertiaOfSolidBox', 'size', size, 3);
   for (let i = 0; i < 3; i++) assertPositive('inertiaOfSolidBox', `size[${i}]`, size[i]);
-  const a = size[0]!, b = size[1]!, c = size[2]!;
+  const a = size[0]!,
+    b = size[1]!,
+    c = size[2]!;
   return [(mass * (b * b + c * c)) / 12, (mass * (a * a + c * c)) / 12, (mass * (a * a + b * b)) / 12];
 }
 
@@ -73,11 +75,16 @@ export function inertiaOfRectangle(mass: number, width: number, height: number):
  * @throws TypeError | RangeError naming `where` and the value.
  */
 export function checkInertia(where: string, dimensions: 2 | 3, inertia: unknown): void {
-  if (typeof inertia === 'number') { assertPositive(where, 'inertia', inertia); return; }
-  if (dimensions === 2) throw new TypeError(`${where}: inertia must be a number in 2D (one moment about z, kg m^2), got ${describe(inertia)}`);
+  if (typeof inertia === 'number') {
+    assertPositive(where, 'inertia', inertia);
+    return;
+  }
+  if (dimensions === 2)
+    throw new TypeError(`${where}: inertia must be a number in 2D (one moment about z, kg m^2), got ${describe(inertia)}`);
   assertVector(where, 'inertia', inertia, 3);
   for (let i = 0; i < 3; i++) assertNonNegative(where, `inertia[${i}]`, inertia[i]);
-  if (!(inertia[0]! > 0 || inertia[1]! > 0 || inertia[2]! > 0)) throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${describe(inertia)}`);
+  if (!(inertia[0]! > 0 || inertia[1]! > 0 || inertia[2]! > 0))
+    throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${describe(inertia)}`);
 }
 
 /** Internal: sets an inertia already checked with `checkInertia` on the body in `slot`. */
@@ -94,7 +101,9 @@ export function setInertiaUnchecked(world: PhysicsWorld, slot: number, inertia: 
   }
   addComponentIfMissing(world, slot, c.InertiaTensor);
   const T = c.InertiaTensor;
-  T.x[slot] = inertia[0]!; T.y[slot] = inertia[1]!; T.z[slot] = inertia[2]!;
+  T.x[slot] = inertia[0]!;
+  T.y[slot] = inertia[1]!;
+  T.z[slot] = inertia[2]!;
   T.invX[slot] = inertia[0]! > 0 ? 1 / inertia[0]! : 0;
   T.invY[slot] = inertia[1]! > 0 ? 1 / inertia[1]! : 0;
   T.invZ[slot] = inertia[2]! > 0 ? 1 / inertia[2]! : 0;
@@ -133,9 +142,15 @@ export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: Array
   const c = world.components;
   addComponentIfMissing(world, slot, c.Force);
   addComponentIfMissing(world, slot, c.Torque);
-  const fx = force[0]!, fy = force[1]!, fz = d === 3 ? force[2]! : 0;
-  const rx = point[0]! - c.Position.x[slot]!, ry = point[1]! - c.Position.y[slot]!, rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
-  c.Force.x[slot] = c.Force.x[slot]! + fx; c.Force.y[slot] = c.Force.y[slot]! + fy; c.Force.z[slot] = c.Force.z[slot]! + fz;
+  const fx = force[0]!,
+    fy = force[1]!,
+    fz = d === 3 ? force[2]! : 0;
+  const rx = point[0]! - c.Position.x[slot]!,
+    ry = point[1]! - c.Position.y[slot]!,
+    rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
+  c.Force.x[slot] = c.Force.x[slot]! + fx;
+  c.Force.y[slot] = c.Force.y[slot]! + fy;
+  c.Force.z[slot] = c.Force.z[slot]! + fz;
   c.Torque.x[slot] = c.Torque.x[slot]! + (ry * fz - rz * fy);
   c.Torque.y[slot] = c.Torque.y[slot]! + (rz * fx - rx * fz);
   c.Torque.z[slot] = c.Torque.z[slot]! + (rx * fy - ry * fx);
@@ -157,16 +172,26 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
   wakeIsland(world, slot);
   const c = world.components;
   const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
-  const jx = impulse[0]!, jy = impulse[1]!, jz = d === 3 ? impulse[2]! : 0;
+  const jx = impulse[0]!,
+    jy = impulse[1]!,
+    jz = d === 3 ? impulse[2]! : 0;
   c.Velocity.x[slot] = c.Velocity.x[slot]! + jx * im;
   c.Velocity.y[slot] = c.Velocity.y[slot]! + jy * im;
   c.Velocity.z[slot] = c.Velocity.z[slot]! + jz * im;
   if (!hasComponent(world, slot, c.AngularVelocity)) return;
-  const rx = point[0]! - c.Position.x[slot]!, ry = point[1]! - c.Position.y[slot]!, rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
-  const Lx = ry * jz - rz * jy, Ly = rz * jx - rx * jz, Lz = rx * jy - ry * jx;
+  const rx = point[0]! - c.Position.x[slot]!,
+    ry = point[1]! - c.Position.y[slot]!,
+    rz = d === 3 ? point[2]! - c.Position.z[slot]! : 0;
+  const Lx = ry * jz - rz * jy,
+    Ly = rz * jx - rx * jz,
+    Lz = rx * jy - ry * jx;
   if (d === 3 && hasComponent(world, slot, c.InertiaTensor)) {
-    const q = c.Orientation, T = c.InertiaTensor;
-    const qx = q.x[slot]!, qy = q.y[slot]!, qz = q.z[slot]!, qw = q.w[slot]!;
+    const q = c.Orientation,
+      T = c.InertiaTensor;
+    const qx = q.x[slot]!,
+      qy = q.y[slot]!,
+      qz = q.z[slot]!,
+      qw = q.w[slot]!;
     rotateVectorInverse(qx, qy, qz, qw, Lx, Ly, Lz, tmp);
     rotateVector(qx, qy, qz, qw, tmp[0]! * T.invX[slot]!, tmp[1]! * T.invY[slot]!, tmp[2]! * T.invZ[slot]!, tmp);
     c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + tmp[0]!;
@@ -175,7 +200,10 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
     return;
   }
   const ii = hasComponent(world, slot, c.Inertia) ? c.Inertia.inv[slot]! : 0;
-  if (d === 3) { c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + Lx * ii; c.AngularVelocity.y[slot] = c.AngularVelocity.y[slot]! + Ly * ii; }
+  if (d === 3) {
+    c.AngularVelocity.x[slot] = c.AngularVelocity.x[slot]! + Lx * ii;
+    c.AngularVelocity.y[slot] = c.AngularVelocity.y[slot]! + Ly * ii;
+  }
   c.AngularVelocity.z[slot] = c.AngularVelocity.z[slot]! + Lz * ii;
 }
 
@@ -190,16 +218,24 @@ export function spinAngularMomentum(world: PhysicsWorld, eid: number, out: Float
 /** Internal: spinAngularMomentum of the body in slot `eid`. */
 function spinMomentumOf(world: PhysicsWorld, eid: number, out: Float64Array): Float64Array {
   const c = world.components;
-  const wx = c.AngularVelocity.x[eid]!, wy = c.AngularVelocity.y[eid]!, wz = c.AngularVelocity.z[eid]!;
+  const wx = c.AngularVelocity.x[eid]!,
+    wy = c.AngularVelocity.y[eid]!,
+    wz = c.AngularVelocity.z[eid]!;
   if (world.dimensions === 3 && hasComponent(world, eid, c.InertiaTensor)) {
-    const q = c.Orientation, T = c.InertiaTensor;
-    const qx = q.x[eid]!, qy = q.y[eid]!, qz = q.z[eid]!, qw = q.w[eid]!;
+    const q = c.Orientation,
+      T = c.InertiaTensor;
+    const qx = q.x[eid]!,
+      qy = q.y[eid]!,
+      qz = q.z[eid]!,
+      qw = q.w[eid]!;
     rotateVectorInverse(qx, qy, qz, qw, wx, wy, wz, tmp);
     rotateVector(qx, qy, qz, qw, tmp[0]! * T.x[eid]!, tmp[1]! * T.y[eid]!, tmp[2]! * T.z[eid]!, out);
     return out;
   }
   const I = hasComponent(world, eid, c.Inertia) ? c.Inertia.value[eid]! : 0;
-  out[0] = world.dimensions === 3 ? I * wx : 0; out[1] = world.dimensions === 3 ? I * wy : 0; out[2] = I * wz;
+  out[0] = world.dimensions === 3 ? I * wx : 0;
+  out[1] = world.dimensions === 3 ? I * wy : 0;
+  out[2] = I * wz;
   return out;
 }
 
@@ -253,10 +289,14 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
   if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
   if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
-  const nx0 = options.normal[0]!, ny0 = options.normal[1]!, nz0 = d === 3 ? options.normal[2]! : 0;
+  const nx0 = options.normal[0]!,
+    ny0 = options.normal[1]!,
+    nz0 = d === 3 ? options.normal[2]! : 0;
   const len = Math.hypot(nx0, ny0, nz0);
   if (!(len > 0)) throw new RangeError(`${where}: normal must not be zero, got ${describe(options.normal)}`);
-  const nx = nx0 / len, ny = ny0 / len, nz = nz0 / len;
+  const nx = nx0 / len,
+    ny = ny0 / len,
+    nz = nz0 / len;
   const p = options.point;
   const dist = p ? nx * p[0]! + ny * p[1]! + (d === 3 ? nz * p[2]! : 0) : 0;
   assertFinite(where, 'offset', dist);
@@ -265,9 +305,15 @@ export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   addComponent(world, eid, c.Plane);
   addComponent(world, eid, c.Static);
   addComponent(world, eid, c.Material);
-  c.Plane.nx[eid] = nx; c.Plane.ny[eid] = ny; c.Plane.nz[eid] = nz; c.Plane.d[eid] = dist;
+  c.Plane.nx[eid] = nx;
+  c.Plane.ny[eid] = ny;
+  c.Plane.nz[eid] = nz;
+  c.Plane.d[eid] = dist;
   if (options.restitution !== undefined) c.Material.restitution[eid] = options.restitution;
-  if (options.friction !== undefined) { c.Material.friction[eid] = options.friction; c.Material.staticFriction[eid] = options.friction; }
+  if (options.friction !== undefined) {
+    c.Material.friction[eid] = options.friction;
+    c.Material.staticFriction[eid] = options.friction;
+  }
   if (options.staticFriction !== undefined) c.Material.staticFriction[eid] = options.staticFriction;
   return currentHandle(world, eid);
 }

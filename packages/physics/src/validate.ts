@@ -50,13 +50,7 @@ export function assertNonNegative(where: string, param: string, value: unknown):
 }
 
 /** Throws unless `value` is a finite number in the closed interval [min, max]. @throws TypeError | RangeError */
-export function assertInRange(
-  where: string,
-  param: string,
-  value: unknown,
-  min: number,
-  max: number,
-): asserts value is number {
+export function assertInRange(where: string, param: string, value: unknown, min: number, max: number): asserts value is number {
   assertFinite(where, param, value);
   if (!(value >= min && value <= max)) {
     throw new RangeError(`${where}: ${param} must be in [${min}, ${max}], got ${describe(value)}`);
@@ -64,13 +58,7 @@ export function assertInRange(
 }
 
 /** Throws unless `value` is an integer in [min, max]. @throws TypeError | RangeError */
-export function assertInteger(
-  where: string,
-  param: string,
-  value: unknown,
-  min: number,
-  max: number,
-): asserts value is number {
+export function assertInteger(where: string, param: string, value: unknown, min: number, max: number): asserts value is number {
   assertFinite(where, param, value);
   if (!Number.isInteger(value)) throw new RangeError(`${where}: ${param} must be an integer, got ${describe(value)}`);
   if (value < min || value > max) {
@@ -87,12 +75,7 @@ export function assertBoolean(where: string, param: string, value: unknown): ass
  * Throws unless `value` is an array (or typed array) of `length` finite numbers.
  * @throws TypeError if not array-like of numbers or of the wrong length; RangeError if an element is not finite.
  */
-export function assertVector(
-  where: string,
-  param: string,
-  value: unknown,
-  length: number,
-): asserts value is ArrayLike<number> {
+export function assertVector(where: string, param: string, value: unknown, length: number): asserts value is ArrayLike<number> {
   const ok = Array.isArray(value) || ArrayBuffer.isView(value);
   if (!ok || (value as ArrayLike<unknown>).length !== length) {
     throw new TypeError(`${where}: ${param} must be an array of ${length} numbers, got ${describe(value)}`);
@@ -142,7 +125,9 @@ export function assertOptions(where: string, options: unknown, known: readonly s
   const prefix = param === 'options' ? '' : `${param}.`;
   for (const key of Object.keys(options)) {
     if (!known.includes(key)) {
-      throw new TypeError(`${where}: unknown option ${JSON.stringify(prefix + key)}; known options${prefix ? ` of ${param}` : ''} are ${known.join(', ')}`);
+      throw new TypeError(
+        `${where}: unknown option ${JSON.stringify(prefix + key)}; known options${prefix ? ` of ${param}` : ''} are ${known.join(', ')}`,
+      );
     }
     if ((options as Record<string, unknown>)[key] === null) {
       throw new TypeError(`${where}: ${prefix}${key} must be a value (omit it for the default), got null`);

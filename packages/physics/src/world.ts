@@ -1,12 +1,12 @@
-import { addComponent, hasComponent, observe, onAdd, type createEntityIndex, type World } from 'bitecs';
-import type { Components } from './components.js';
-import type { CollisionState } from './collision/state.js';
-import type { StageName } from './pipeline/stage-names.js';
-import type { IntegratorName } from './integrators/names.js';
-import type { Rng } from './rng.js';
-import type { ForceLawSettings } from './forces/settings.js';
-import type { JointState } from './joints/state.js';
+import { addComponent, type createEntityIndex, hasComponent, observe, onAdd, type World } from 'bitecs';
 import type { ClothState } from './cloth/state.js';
+import type { CollisionState } from './collision/state.js';
+import type { Components } from './components.js';
+import type { ForceLawSettings } from './forces/settings.js';
+import type { IntegratorName } from './integrators/names.js';
+import type { JointState } from './joints/state.js';
+import type { StageName } from './pipeline/stage-names.js';
+import type { Rng } from './rng.js';
 import type { ThreadPool } from './threads/pool.js';
 import { assertPositive } from './validate.js';
 
@@ -82,7 +82,6 @@ export interface PhysicsWorldOptions {
    */
   threads?: number;
 }
-
 
 /** The largest capacity a world accepts (2^24 entities). */
 export const MAX_CAPACITY = 16_777_216;
@@ -167,7 +166,6 @@ export function registerForceLaw(world: PhysicsWorld, component: object): void {
 export function addComponentIfMissing(world: PhysicsWorld, eid: number, component: object): void {
   if (!hasComponent(world, eid, component)) addComponent(world, eid, component);
 }
-
 
 /**
  * Ends a world's worker threads (a world made with threads > 1); the world still steps, on the

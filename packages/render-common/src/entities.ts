@@ -1,4 +1,4 @@
-import { resolveEntity, type PhysicsWorld } from '@bitphysics/physics';
+import { type PhysicsWorld, resolveEntity } from '@bitphysics/physics';
 
 /**
  * The slot (store index) of the live entity `eid` of `world`, where `eid` is a handle as the physics

@@ -7,8 +7,9 @@
  * of a seeded scene), `hslToRgb`, `hash3`, `parsePalette` (a renderer's palette option);
  * `assertLiveEntity` (the renderers' check of an entity id argument); `resolveOptions` (a table-driven check of an options object, used by both debug layers).
  */
-export { parseColor, parsePalette, seededColor, hslToRgb, hash3 } from './colors.js';
+
 export type { ColorInput } from './colors.js';
+export { hash3, hslToRgb, parseColor, parsePalette, seededColor } from './colors.js';
 export { assertLiveEntity, entitySlot } from './entities.js';
-export { resolveOptions } from './options.js';
 export type { OptionRule, OptionRules } from './options.js';
+export { resolveOptions } from './options.js';

@@ -1,8 +1,8 @@
-import { Container, Particle, ParticleContainer, Sprite, type Texture } from 'pixi.js';
-import { hasComponent, Not, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import type { Camera, Point2 } from './camera.js';
 import { seededColor } from '@bitphysics/render-common';
+import { hasComponent, Not, query } from 'bitecs';
+import { Container, Particle, ParticleContainer, Sprite, type Texture } from 'pixi.js';
+import type { Camera, Point2 } from './camera.js';
 import { ballTextureDiameter } from './textures.js';
 
 /**
@@ -229,7 +229,10 @@ export class BallLayer {
   sync(world: PhysicsWorld): void {
     const ents = query(world, this.terms);
     const pass = ++this.pass;
-    const slot = this.slot, stamp = this.stamp, seen = this.seen, spawn = world.spawnStamp;
+    const slot = this.slot,
+      stamp = this.stamp,
+      seen = this.seen,
+      spawn = world.spawnStamp;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const s = slot[e]!;
@@ -255,21 +258,32 @@ export class BallLayer {
    */
   update(world: PhysicsWorld, camera: Camera, alpha: number, stepped: boolean): void {
     const c = world.components;
-    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-    const radius = c.Ball.radius, angle = c.Angle.value;
-    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
+    const px = c.Position.x,
+      py = c.Position.y,
+      ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y;
+    const radius = c.Ball.radius,
+      angle = c.Angle.value;
+    const ppm = camera.pixelsPerMeter,
+      x0 = camera.originX,
+      y0 = camera.originY;
     const rescale = camera.version !== this.cameraVersion;
     this.cameraVersion = camera.version;
     const k = (2 * ppm) / this.textureDiameter;
-    const eids = this.eids, n = this.count;
-    const shown = this.radiusShown, hasAngle = this.hasAngle, aPrev = this.anglePrev, aCur = this.angleCur;
+    const eids = this.eids,
+      n = this.count;
+    const shown = this.radiusShown,
+      hasAngle = this.hasAngle,
+      aPrev = this.anglePrev,
+      aCur = this.angleCur;
     const rotate = this.rotate;
     if (this.mode === 'sprites') {
       const sprites = this.sprites;
       for (let i = 0; i < n; i++) {
         const e = eids[i]!;
         const sp = sprites[i]!;
-        const ax = ox[e]!, ay = oy[e]!;
+        const ax = ox[e]!,
+          ay = oy[e]!;
         sp.position.set(x0 + (ax + (px[e]! - ax) * alpha) * ppm, y0 - (ay + (py[e]! - ay) * alpha) * ppm);
         const r = radius[e]!;
         if (rescale || r !== shown[e]) {
@@ -277,7 +291,10 @@ export class BallLayer {
           sp.scale.set(r * k);
         }
         if (rotate && hasAngle[e] === 1) {
-          if (stepped) { aPrev[e] = aCur[e]!; aCur[e] = angle[e]!; }
+          if (stepped) {
+            aPrev[e] = aCur[e]!;
+            aCur[e] = angle[e]!;
+          }
           const a0 = aPrev[e]!;
           sp.rotation = -(a0 + (aCur[e]! - a0) * alpha);
         }
@@ -288,7 +305,8 @@ export class BallLayer {
       for (let i = 0; i < n; i++) {
         const e = eids[i]!;
         const p = list[i]!;
-        const ax = ox[e]!, ay = oy[e]!;
+        const ax = ox[e]!,
+          ay = oy[e]!;
         p.x = x0 + (ax + (px[e]! - ax) * alpha) * ppm;
         p.y = y0 - (ay + (py[e]! - ay) * alpha) * ppm;
         const r = radius[e]!;
@@ -300,7 +318,10 @@ export class BallLayer {
           dirty = true;
         }
         if (rotate && hasAngle[e] === 1) {
-          if (stepped) { aPrev[e] = aCur[e]!; aCur[e] = angle[e]!; }
+          if (stepped) {
+            aPrev[e] = aCur[e]!;
+            aCur[e] = angle[e]!;
+          }
           const a0 = aPrev[e]!;
           p.rotation = -(a0 + (aCur[e]! - a0) * alpha);
         }

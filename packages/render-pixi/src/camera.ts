@@ -221,7 +221,8 @@ export class Camera {
   private update(): void {
     const v = this.view;
     if (v) {
-      const w = v.maxX - v.minX, h = v.maxY - v.minY;
+      const w = v.maxX - v.minX,
+        h = v.maxY - v.minY;
       let pad = this.padding;
       if (this.width - 2 * pad <= 0 || this.height - 2 * pad <= 0) pad = 0;
       this.pixelsPerMeter = Math.min((this.width - 2 * pad) / w, (this.height - 2 * pad) / h);

@@ -1,5 +1,5 @@
+import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { MeshSimple, Texture } from 'pixi.js';
-import { isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera.js';
 
 /** The cloth as `createCloth` returns it (point and link handles, grid size). */
@@ -29,33 +29,59 @@ export class ClothLayer {
   private readonly cellLinks: Float64Array;
   private builtVersion = -1;
 
-  constructor(private readonly world: PhysicsWorld, private readonly cloth: ClothGrid, options: ClothLayerOptions = {}) {
+  constructor(
+    private readonly world: PhysicsWorld,
+    private readonly cloth: ClothGrid,
+    options: ClothLayerOptions = {},
+  ) {
     const { columns: C, rows: R } = cloth;
-    if (!(C >= 2 && R >= 2) || cloth.points.length !== C * R) throw new RangeError(`ClothLayer: cloth must have columns x rows points (>= 2 each), got ${C} x ${R} and ${cloth.points.length} points`);
+    if (!(C >= 2 && R >= 2) || cloth.points.length !== C * R)
+      throw new RangeError(
+        `ClothLayer: cloth must have columns x rows points (>= 2 each), got ${C} x ${R} and ${cloth.points.length} points`,
+      );
     this.vertices = new Float32Array(2 * C * R);
     const uvs = new Float32Array(2 * C * R);
-    for (let r = 0; r < R; r++) for (let c = 0; c < C; c++) { const i = r * C + c; uvs[2 * i] = c / (C - 1); uvs[2 * i + 1] = r / (R - 1); }
+    for (let r = 0; r < R; r++)
+      for (let c = 0; c < C; c++) {
+        const i = r * C + c;
+        uvs[2 * i] = c / (C - 1);
+        uvs[2 * i + 1] = r / (R - 1);
+      }
     // Structural links come first in createCloth's order: for each point, right then down.
-    const right = new Float64Array(C * R), down = new Float64Array(C * R);
+    const right = new Float64Array(C * R),
+      down = new Float64Array(C * R);
     let k = 0;
-    for (let r = 0; r < R; r++) for (let c = 0; c < C; c++) {
-      const i = r * C + c;
-      if (c + 1 < C) right[i] = cloth.links[k++]!;
-      if (r + 1 < R) down[i] = cloth.links[k++]!;
-    }
+    for (let r = 0; r < R; r++)
+      for (let c = 0; c < C; c++) {
+        const i = r * C + c;
+        if (c + 1 < C) right[i] = cloth.links[k++]!;
+        if (r + 1 < R) down[i] = cloth.links[k++]!;
+      }
     this.cellLinks = new Float64Array(4 * (C - 1) * (R - 1));
-    for (let r = 0; r + 1 < R; r++) for (let c = 0; c + 1 < C; c++) {
-      const i = r * C + c, q = 4 * (r * (C - 1) + c);
-      this.cellLinks[q] = right[i]!; this.cellLinks[q + 1] = down[i]!; this.cellLinks[q + 2] = right[i + C]!; this.cellLinks[q + 3] = down[i + 1]!;
-    }
-    this.mesh = new MeshSimple({ texture: options.texture ?? fabricTexture(), vertices: this.vertices, uvs, indices: new Uint32Array(6 * (C - 1) * (R - 1)) });
+    for (let r = 0; r + 1 < R; r++)
+      for (let c = 0; c + 1 < C; c++) {
+        const i = r * C + c,
+          q = 4 * (r * (C - 1) + c);
+        this.cellLinks[q] = right[i]!;
+        this.cellLinks[q + 1] = down[i]!;
+        this.cellLinks[q + 2] = right[i + C]!;
+        this.cellLinks[q + 3] = down[i + 1]!;
+      }
+    this.mesh = new MeshSimple({
+      texture: options.texture ?? fabricTexture(),
+      vertices: this.vertices,
+      uvs,
+      indices: new Uint32Array(6 * (C - 1) * (R - 1)),
+    });
     this.mesh.label = 'cloth';
   }
 
   /** Moves the vertices to the points for interpolation factor `alpha` through `camera`; drops torn cells. */
   update(camera: Camera, alpha: number): void {
-    const P = this.world.components.Position, O = this.world.components.PreviousPosition;
-    const v = this.vertices, pts = this.cloth.points;
+    const P = this.world.components.Position,
+      O = this.world.components.PreviousPosition;
+    const v = this.vertices,
+      pts = this.cloth.points;
     for (let i = 0; i < pts.length; i++) {
       const e = slotOf(pts[i]!);
       v[2 * i] = camera.toScreenX(O.x[e]! + (P.x[e]! - O.x[e]!) * alpha);
@@ -69,15 +95,24 @@ export class ClothLayer {
     const { columns: C, rows: R } = this.cloth;
     const idx = new Uint32Array(6 * (C - 1) * (R - 1));
     let n = 0;
-    for (let r = 0; r + 1 < R; r++) for (let c = 0; c + 1 < C; c++) {
-      const q = 4 * (r * (C - 1) + c);
-      let whole = true;
-      for (let s = 0; s < 4; s++) if (!isAlive(this.world, this.cellLinks[q + s]!)) { whole = false; break; }
-      if (!whole) continue;
-      const i = r * C + c;
-      idx[n++] = i; idx[n++] = i + 1; idx[n++] = i + C;
-      idx[n++] = i + 1; idx[n++] = i + C + 1; idx[n++] = i + C;
-    }
+    for (let r = 0; r + 1 < R; r++)
+      for (let c = 0; c + 1 < C; c++) {
+        const q = 4 * (r * (C - 1) + c);
+        let whole = true;
+        for (let s = 0; s < 4; s++)
+          if (!isAlive(this.world, this.cellLinks[q + s]!)) {
+            whole = false;
+            break;
+          }
+        if (!whole) continue;
+        const i = r * C + c;
+        idx[n++] = i;
+        idx[n++] = i + 1;
+        idx[n++] = i + C;
+        idx[n++] = i + 1;
+        idx[n++] = i + C + 1;
+        idx[n++] = i + C;
+      }
     this.mesh.geometry.indices = idx.subarray(0, n);
     this.builtVersion = this.world.cloth.version;
   }
@@ -92,7 +127,8 @@ export class ClothLayer {
 function fabricTexture(): Texture {
   const size = 256;
   const canvas = document.createElement('canvas');
-  canvas.width = size; canvas.height = size;
+  canvas.width = size;
+  canvas.height = size;
   const g = canvas.getContext('2d')!;
   g.fillStyle = '#b8323c';
   g.fillRect(0, 0, size, size);

@@ -1,5 +1,5 @@
+import { fieldsAt, type PhysicsWorld, query } from '@bitphysics/physics';
 import type { Graphics } from 'pixi.js';
-import { fieldsAt, query, type PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera.js';
 
 /**
@@ -35,13 +35,15 @@ const fields = { e: new Float64Array(3), b: new Float64Array(3) };
 
 /** Interpolated x (m) of entity `e`: PreviousPosition to Position by alpha. */
 function ix(world: PhysicsWorld, e: number, alpha: number): number {
-  const P = world.components.Position.x, O = world.components.PreviousPosition.x;
+  const P = world.components.Position.x,
+    O = world.components.PreviousPosition.x;
   return O[e]! + (P[e]! - O[e]!) * alpha;
 }
 
 /** Interpolated y (m) of entity `e`. */
 function iy(world: PhysicsWorld, e: number, alpha: number): number {
-  const P = world.components.Position.y, O = world.components.PreviousPosition.y;
+  const P = world.components.Position.y,
+    O = world.components.PreviousPosition.y;
   return O[e]! + (P[e]! - O[e]!) * alpha;
 }
 
@@ -54,17 +56,22 @@ export function drawSprings(g: Graphics, world: PhysicsWorld, camera: Camera, al
   const springs = query(world, [S]);
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    const a = S.a[s]!, b = S.b[s]!;
+    const a = S.a[s]!,
+      b = S.b[s]!;
     const ax = camera.toScreenX(a > 0 ? ix(world, a, alpha) : S.anchorX[s]!);
     const ay = camera.toScreenY(a > 0 ? iy(world, a, alpha) : S.anchorY[s]!);
-    const bx = camera.toScreenX(ix(world, b, alpha)), by = camera.toScreenY(iy(world, b, alpha));
-    const dx = bx - ax, dy = by - ay;
+    const bx = camera.toScreenX(ix(world, b, alpha)),
+      by = camera.toScreenY(iy(world, b, alpha));
+    const dx = bx - ax,
+      dy = by - ay;
     const len = Math.sqrt(dx * dx + dy * dy);
     g.moveTo(ax, ay);
     if (len > 4 * SPRING_WIDTH) {
-      const ux = dx / len, uy = dy / len;
+      const ux = dx / len,
+        uy = dy / len;
       // Straight leads of 10% at each end, the zigzag between.
-      const lead = 0.1 * len, body = len - 2 * lead;
+      const lead = 0.1 * len,
+        body = len - 2 * lead;
       g.lineTo(ax + ux * lead, ay + uy * lead);
       for (let k = 0; k < 2 * SPRING_COILS; k++) {
         const t = lead + ((k + 0.5) / (2 * SPRING_COILS)) * body;
@@ -87,23 +94,39 @@ export function drawSprings(g: Graphics, world: PhysicsWorld, camera: Camera, al
  */
 export function drawJoints(g: Graphics, world: PhysicsWorld, camera: Camera, alpha: number): number {
   const c = world.components;
-  const J = c.Joint, angle = c.Angle.value;
+  const J = c.Joint,
+    angle = c.Angle.value;
   const joints = query(world, [J]);
   for (let i = 0; i < joints.length; i++) {
     const j = joints[i]!;
-    const a = J.a[j]!, b = J.b[j]!;
-    let ax = J.localAx[j]!, ay = J.localAy[j]!;
-    let acx = ax, acy = ay;
+    const a = J.a[j]!,
+      b = J.b[j]!;
+    let ax = J.localAx[j]!,
+      ay = J.localAy[j]!;
+    let acx = ax,
+      acy = ay;
     if (a > 0) {
-      const th = angle[a] ?? 0, cs = Math.cos(th), sn = Math.sin(th);
-      acx = ix(world, a, alpha); acy = iy(world, a, alpha);
-      const lx = ax, ly = ay;
-      ax = acx + cs * lx - sn * ly; ay = acy + sn * lx + cs * ly;
+      const th = angle[a] ?? 0,
+        cs = Math.cos(th),
+        sn = Math.sin(th);
+      acx = ix(world, a, alpha);
+      acy = iy(world, a, alpha);
+      const lx = ax,
+        ly = ay;
+      ax = acx + cs * lx - sn * ly;
+      ay = acy + sn * lx + cs * ly;
     }
-    const th = angle[b] ?? 0, cs = Math.cos(th), sn = Math.sin(th);
-    const bcx = ix(world, b, alpha), bcy = iy(world, b, alpha);
-    const bx = bcx + cs * J.localBx[j]! - sn * J.localBy[j]!, by = bcy + sn * J.localBx[j]! + cs * J.localBy[j]!;
-    const sax = camera.toScreenX(ax), say = camera.toScreenY(ay), sbx = camera.toScreenX(bx), sby = camera.toScreenY(by);
+    const th = angle[b] ?? 0,
+      cs = Math.cos(th),
+      sn = Math.sin(th);
+    const bcx = ix(world, b, alpha),
+      bcy = iy(world, b, alpha);
+    const bx = bcx + cs * J.localBx[j]! - sn * J.localBy[j]!,
+      by = bcy + sn * J.localBx[j]! + cs * J.localBy[j]!;
+    const sax = camera.toScreenX(ax),
+      say = camera.toScreenY(ay),
+      sbx = camera.toScreenX(bx),
+      sby = camera.toScreenY(by);
     g.moveTo(camera.toScreenX(acx), camera.toScreenY(acy)).lineTo(sax, say);
     g.moveTo(camera.toScreenX(bcx), camera.toScreenY(bcy)).lineTo(sbx, sby);
     g.moveTo(sax, say).lineTo(sbx, sby);
@@ -123,18 +146,24 @@ export function drawPlanes(g: Graphics, world: PhysicsWorld, camera: Camera): nu
   const planes = query(world, [P]);
   // Long enough to cross the view from any point on it: the view's diagonal, px.
   const reach = Math.hypot(camera.width, camera.height);
-  const cx = camera.toWorldX(camera.width / 2), cy = camera.toWorldY(camera.height / 2);
+  const cx = camera.toWorldX(camera.width / 2),
+    cy = camera.toWorldY(camera.height / 2);
   for (let i = 0; i < planes.length; i++) {
     const e = planes[i]!;
-    const nx = P.nx[e]!, ny = P.ny[e]!, d = P.d[e]!;
+    const nx = P.nx[e]!,
+      ny = P.ny[e]!,
+      d = P.d[e]!;
     // The point of the line nearest the view's centre, then along the tangent (-ny, nx).
     const s = nx * cx + ny * cy - d;
-    const px = camera.toScreenX(cx - nx * s), py = camera.toScreenY(cy - ny * s);
-    const tx = -ny, ty = -nx; // tangent in screen axes (y flipped)
+    const px = camera.toScreenX(cx - nx * s),
+      py = camera.toScreenY(cy - ny * s);
+    const tx = -ny,
+      ty = -nx; // tangent in screen axes (y flipped)
     g.moveTo(px - tx * reach, py - ty * reach).lineTo(px + tx * reach, py + ty * reach);
     // Hatches every 16 px on the solid side (screen normal is (nx, -ny)).
     for (let k = -Math.ceil(reach / 16); k <= Math.ceil(reach / 16); k++) {
-      const hx = px + tx * k * 16, hy = py + ty * k * 16;
+      const hx = px + tx * k * 16,
+        hy = py + ty * k * 16;
       g.moveTo(hx, hy).lineTo(hx - nx * 8 - tx * 6, hy + ny * 8 - ty * 6);
     }
   }
@@ -152,14 +181,19 @@ export function drawFields(g: Graphics, world: PhysicsWorld, camera: Camera): nu
   const c = world.components;
   const F = c.FluidRegion;
   const regions = query(world, [F]);
-  const left = camera.toWorldX(0), right = camera.toWorldX(camera.width);
+  const left = camera.toWorldX(0),
+    right = camera.toWorldX(camera.width);
   const bottom = camera.toWorldY(camera.height);
   for (let i = 0; i < regions.length; i++) {
     const e = regions[i]!;
-    const x1 = Math.max(left, F.minX[e]!), x2 = Math.min(right, F.maxX[e]!);
+    const x1 = Math.max(left, F.minX[e]!),
+      x2 = Math.min(right, F.maxX[e]!);
     const top = F.surface[e]!;
     if (!(x2 > x1) || !(top > bottom)) continue;
-    const sx1 = camera.toScreenX(x1), sx2 = camera.toScreenX(x2), sy = camera.toScreenY(top), sb = camera.toScreenY(bottom);
+    const sx1 = camera.toScreenX(x1),
+      sx2 = camera.toScreenX(x2),
+      sy = camera.toScreenY(top),
+      sb = camera.toScreenY(bottom);
     g.rect(sx1, sy, sx2 - sx1, sb - sy).fill({ color: SCENERY_COLORS.fluid, alpha: 0.18 });
     g.moveTo(sx1, sy).lineTo(sx2, sy).stroke({ width: 1.5, color: SCENERY_COLORS.fluid, alpha: 0.9 });
   }
@@ -167,21 +201,30 @@ export function drawFields(g: Graphics, world: PhysicsWorld, camera: Camera): nu
   const magnetic = query(world, [c.MagneticField]).length;
   if (electric + magnetic > 0) {
     fieldsAt(world, world.time, fields.e, fields.b);
-    const ex = fields.e[0]!, ey = fields.e[1]!, bz = fields.b[2]!;
+    const ex = fields.e[0]!,
+      ey = fields.e[1]!,
+      bz = fields.b[2]!;
     const eLen = Math.hypot(ex, ey);
-    const cols = Math.max(1, Math.floor(camera.width / FIELD_SPACING)), rows = Math.max(1, Math.floor(camera.height / FIELD_SPACING));
-    const stepX = camera.width / cols, stepY = camera.height / rows;
+    const cols = Math.max(1, Math.floor(camera.width / FIELD_SPACING)),
+      rows = Math.max(1, Math.floor(camera.height / FIELD_SPACING));
+    const stepX = camera.width / cols,
+      stepY = camera.height / rows;
     // Two passes over the grid (arrows, then glyphs), each one stroke: a pixi path takes every
     // command since the last stroke.
     if (electric > 0 && eLen > 0) {
-      const ux = ex / eLen, uy = -ey / eLen; // screen y flipped
+      const ux = ex / eLen,
+        uy = -ey / eLen; // screen y flipped
       for (let r = 0; r < rows; r++) {
         for (let q = 0; q < cols; q++) {
           // A 24 px arrow along E, centred on the grid point.
-          const gx = (q + 0.5) * stepX, gy = (r + 0.5) * stepY;
-          const tx = gx + ux * 12, ty = gy + uy * 12;
+          const gx = (q + 0.5) * stepX,
+            gy = (r + 0.5) * stepY;
+          const tx = gx + ux * 12,
+            ty = gy + uy * 12;
           g.moveTo(gx - ux * 12, gy - uy * 12).lineTo(tx, ty);
-          g.moveTo(tx - ux * 6 - uy * 4, ty - uy * 6 + ux * 4).lineTo(tx, ty).lineTo(tx - ux * 6 + uy * 4, ty - uy * 6 - ux * 4);
+          g.moveTo(tx - ux * 6 - uy * 4, ty - uy * 6 + ux * 4)
+            .lineTo(tx, ty)
+            .lineTo(tx - ux * 6 + uy * 4, ty - uy * 6 - ux * 4);
         }
       }
       g.stroke({ width: 1.25, color: SCENERY_COLORS.electric, alpha: 0.6 });
@@ -189,10 +232,15 @@ export function drawFields(g: Graphics, world: PhysicsWorld, camera: Camera): nu
     if (magnetic > 0 && bz !== 0) {
       for (let r = 0; r < rows; r++) {
         for (let q = 0; q < cols; q++) {
-          const mx = (q + 0.75) * stepX, my = (r + 0.75) * stepY;
+          const mx = (q + 0.75) * stepX,
+            my = (r + 0.75) * stepY;
           g.circle(mx, my, 6);
           if (bz > 0) g.circle(mx, my, 1.5);
-          else g.moveTo(mx - 4, my - 4).lineTo(mx + 4, my + 4).moveTo(mx - 4, my + 4).lineTo(mx + 4, my - 4);
+          else
+            g.moveTo(mx - 4, my - 4)
+              .lineTo(mx + 4, my + 4)
+              .moveTo(mx - 4, my + 4)
+              .lineTo(mx + 4, my - 4);
         }
       }
       g.stroke({ width: 1.25, color: SCENERY_COLORS.magnetic, alpha: 0.7 });
@@ -215,13 +263,16 @@ export function drawEmitters(g: Graphics, world: PhysicsWorld, camera: Camera, a
     for (let i = 0; i < emitters.length; i++) {
       const e = emitters[i]!;
       if ((E.enabled[e] === 1) !== (pass === 0)) continue;
-      const sx = camera.toScreenX(ix(world, e, alpha)), sy = camera.toScreenY(iy(world, e, alpha));
+      const sx = camera.toScreenX(ix(world, e, alpha)),
+        sy = camera.toScreenY(iy(world, e, alpha));
       const r = Math.max(6, camera.toScreenLength(E.size[e] ?? 0));
       g.circle(sx, sy, r);
-      const dx = E.dirX[e]!, dy = E.dirY[e]!;
+      const dx = E.dirX[e]!,
+        dy = E.dirY[e]!;
       const dl = Math.hypot(dx, dy);
       if (dl > 0) {
-        const th = Math.atan2(-dy, dx), spread = E.spread[e]!;
+        const th = Math.atan2(-dy, dx),
+          spread = E.spread[e]!;
         g.moveTo(sx, sy).lineTo(sx + Math.cos(th) * 30, sy + Math.sin(th) * 30);
         if (spread > 0) {
           g.moveTo(sx, sy).lineTo(sx + Math.cos(th - spread) * 20, sy + Math.sin(th - spread) * 20);

@@ -1,10 +1,10 @@
-import { Graphics } from 'pixi.js';
-import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { type OptionRules, resolveOptions } from '@bitphysics/render-common';
+import { query } from 'bitecs';
+import { Graphics } from 'pixi.js';
 import type { BallLayer } from './balls.js';
 import type { Camera } from './camera.js';
 import { drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings } from './debug-scenery.js';
-import { resolveOptions, type OptionRules } from '@bitphysics/render-common';
 
 /** Options of the debug layer (`WorldRendererOptions.debug`, `WorldRenderer.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {
@@ -110,8 +110,13 @@ export class DebugLayer {
     g.clear();
     const o = this.options;
     const c = world.components;
-    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
+    const px = c.Position.x,
+      py = c.Position.y,
+      ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y;
+    const ppm = camera.pixelsPerMeter,
+      x0 = camera.originX,
+      y0 = camera.originY;
     this.arrowsDrawn = 0;
     this.contactsDrawn = 0;
 
@@ -124,23 +129,28 @@ export class DebugLayer {
     d.emitters = o.emitters ? drawEmitters(g, world, camera, alpha) : 0;
 
     if (o.velocities && o.maxArrows > 0) {
-      const vx = c.Velocity.x, vy = c.Velocity.y;
+      const vx = c.Velocity.x,
+        vy = c.Velocity.y;
       const k = o.velocityScale * ppm;
       const n = Math.min(balls.count, o.maxArrows);
       const eids = balls.eids;
       let drawn = 0;
       for (let i = 0; i < n; i++) {
         const e = eids[i]!;
-        const dx = vx[e]! * k, dy = -vy[e]! * k;
+        const dx = vx[e]! * k,
+          dy = -vy[e]! * k;
         const len = Math.sqrt(dx * dx + dy * dy);
         if (len < 2) continue;
         const sx = x0 + (ox[e]! + (px[e]! - ox[e]!) * alpha) * ppm;
         const sy = y0 - (oy[e]! + (py[e]! - oy[e]!) * alpha) * ppm;
-        const tx = sx + dx, ty = sy + dy;
+        const tx = sx + dx,
+          ty = sy + dy;
         const hl = Math.min(8, len * 0.35);
-        const ux = dx / len, uy = dy / len;
+        const ux = dx / len,
+          uy = dy / len;
         g.moveTo(sx, sy).lineTo(tx, ty);
-        g.moveTo(tx - ux * hl - uy * hl * 0.5, ty - uy * hl + ux * hl * 0.5).lineTo(tx, ty)
+        g.moveTo(tx - ux * hl - uy * hl * 0.5, ty - uy * hl + ux * hl * 0.5)
+          .lineTo(tx, ty)
           .lineTo(tx - ux * hl + uy * hl * 0.5, ty - uy * hl - ux * hl * 0.5);
         drawn++;
       }
@@ -151,7 +161,11 @@ export class DebugLayer {
     if (o.contacts && o.maxContacts > 0) {
       const rows = world.collision.cache.rows;
       const n = Math.min(rows.count, o.maxContacts);
-      const b = rows.b, nx = rows.nx, ny = rows.ny, rb = rows.rb, J = rows.totalNormalImpulse;
+      const b = rows.b,
+        nx = rows.nx,
+        ny = rows.ny,
+        rb = rows.rb,
+        J = rows.totalNormalImpulse;
       const L = o.normalLength;
       // Two passes (active, then speculative) so each colour is one stroke.
       for (let pass = 0; pass < 2; pass++) {
@@ -163,7 +177,8 @@ export class DebugLayer {
           // The contact point lies rb behind B's centre along the normal (contacts.ts: rb is measured along -n).
           const cx = ox[e]! + (px[e]! - ox[e]!) * alpha - nx[i]! * rb[i]!;
           const cy = oy[e]! + (py[e]! - oy[e]!) * alpha - ny[i]! * rb[i]!;
-          const sx = x0 + cx * ppm, sy = y0 - cy * ppm;
+          const sx = x0 + cx * ppm,
+            sy = y0 - cy * ppm;
           g.moveTo(sx, sy).lineTo(sx + nx[i]! * L, sy - ny[i]! * L);
           g.circle(sx, sy, 2.5);
           any = true;
@@ -186,8 +201,10 @@ export class DebugLayer {
     let any = false;
     for (let i = 0; i < segs.length; i++) {
       const e = segs[i]!;
-      const ax = camera.toScreenX(S.ax[e]!), ay = camera.toScreenY(S.ay[e]!);
-      const bx = camera.toScreenX(S.bx[e]!), by = camera.toScreenY(S.by[e]!);
+      const ax = camera.toScreenX(S.ax[e]!),
+        ay = camera.toScreenY(S.ay[e]!);
+      const bx = camera.toScreenX(S.bx[e]!),
+        by = camera.toScreenY(S.by[e]!);
       const r = Math.max(camera.toScreenLength(S.radius[e]!), 0);
       g.moveTo(ax, ay).lineTo(bx, by);
       g.circle(ax, ay, r + 3);
@@ -196,8 +213,10 @@ export class DebugLayer {
     }
     const box = world.collision.boundary;
     if (box.enabled) {
-      const x1 = camera.toScreenX(box.min[0]!), x2 = camera.toScreenX(box.max[0]!);
-      const y1 = camera.toScreenY(box.max[1]!), y2 = camera.toScreenY(box.min[1]!);
+      const x1 = camera.toScreenX(box.min[0]!),
+        x2 = camera.toScreenX(box.max[0]!);
+      const y1 = camera.toScreenY(box.max[1]!),
+        y2 = camera.toScreenY(box.min[1]!);
       g.rect(x1, y1, x2 - x1, y2 - y1);
       any = true;
     }

@@ -9,28 +9,36 @@
  * also the renderer's `particles` option), `Camera` (metres <-> pixels, no pixi inside),
  * `createBallTexture` (the shared circle texture), colour helpers.
  */
-export { WorldRenderer } from './renderer.js';
-export type { WorldRendererOptions, RendererStats } from './renderer.js';
-export { Camera, assertWorldRect } from './camera.js';
-export type { CameraOptions, WorldRect, Point2 } from './camera.js';
-export type { BallMode } from './balls.js';
-export { createBallTexture, ballTextureDiameter, createStreakTexture } from './textures.js';
-export type { BallTextureOptions } from './textures.js';
-export { parseColor, seededColor, hslToRgb } from '@bitphysics/render-common';
+
 export type { ColorInput } from '@bitphysics/render-common';
-export { resolveTrailOptions } from './trails.js';
-export type { TrailOptions } from './trails.js';
-export {
-  ParticleLayer, createSoftParticleTexture, resolveParticleLayerOptions, resolveParticleTrailOptions,
-} from './particles.js';
-export type {
-  ParticleLayerOptions, ParticleTrailOptions, ParticleLayerStats, ResolvedParticleLayerOptions, ResolvedParticleTrailOptions,
-} from './particles.js';
-export { resolveDebugOptions } from './debug.js';
-export type { DebugOptions, DebugCounts } from './debug.js';
-export { SCENERY_COLORS, drawSprings, drawJoints, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
-export * from './points.js';
-export { RopeLayer } from './rope.js';
-export type { RopeLayerOptions } from './rope.js';
+export { hslToRgb, parseColor, seededColor } from '@bitphysics/render-common';
+export type { BallMode } from './balls.js';
+export type { CameraOptions, Point2, WorldRect } from './camera.js';
+export { assertWorldRect, Camera } from './camera.js';
+export type { ClothGrid, ClothLayerOptions } from './cloth.js';
 export { ClothLayer } from './cloth.js';
-export type { ClothLayerOptions, ClothGrid } from './cloth.js';
+export type { DebugCounts, DebugOptions } from './debug.js';
+export { resolveDebugOptions } from './debug.js';
+export { drawEmitters, drawFields, drawJoints, drawPlanes, drawSprings, SCENERY_COLORS } from './debug-scenery.js';
+export type {
+  ParticleLayerOptions,
+  ParticleLayerStats,
+  ParticleTrailOptions,
+  ResolvedParticleLayerOptions,
+  ResolvedParticleTrailOptions,
+} from './particles.js';
+export {
+  createSoftParticleTexture,
+  ParticleLayer,
+  resolveParticleLayerOptions,
+  resolveParticleTrailOptions,
+} from './particles.js';
+export * from './points.js';
+export type { RendererStats, WorldRendererOptions } from './renderer.js';
+export { WorldRenderer } from './renderer.js';
+export type { RopeLayerOptions } from './rope.js';
+export { RopeLayer } from './rope.js';
+export type { BallTextureOptions } from './textures.js';
+export { ballTextureDiameter, createBallTexture, createStreakTexture } from './textures.js';
+export type { TrailOptions } from './trails.js';
+export { resolveTrailOptions } from './trails.js';

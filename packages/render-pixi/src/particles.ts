@@ -1,10 +1,18 @@
-import { Container, Particle, Texture } from 'pixi.js';
-import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import {
+  assertBoolean,
+  assertInRange,
+  assertInteger,
+  assertKnownKeys,
+  assertNonNegative,
+  assertPositive,
+  describe,
+} from '@bitphysics/physics/validate';
+import { query } from 'bitecs';
+import { Container, Particle, type Texture } from 'pixi.js';
 import type { Camera } from './camera.js';
 import { QuadPools } from './quads.js';
-import { STREAK_H, STREAK_W, radialAlphaTexture, sharedStreakTexture } from './textures.js';
-import { assertBoolean, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
+import { radialAlphaTexture, STREAK_H, STREAK_W, sharedStreakTexture } from './textures.js';
 
 /**
  * The particle layer: draws every entity that has Particle and Position (emitted sparks, smoke,
@@ -158,7 +166,8 @@ export function resolveParticleLayerOptions(where: string, options: ParticleLaye
   }
   const trails = t === false ? null : resolveParticleTrailOptions(where, t === true ? {} : t);
   const include = options.include ?? null;
-  if (include !== null && typeof include !== 'function') throw new TypeError(`${where}: include must be a function (world, eid) => boolean, got ${describe(include)}`);
+  if (include !== null && typeof include !== 'function')
+    throw new TypeError(`${where}: include must be a function (world, eid) => boolean, got ${describe(include)}`);
   return { blend, textureSize, minPixelSize, sizeScale, alphaScale, cull, trails, include };
 }
 
@@ -172,7 +181,14 @@ export function createSoftParticleTexture(size = 64): Texture {
   const where = 'createSoftParticleTexture';
   assertInteger(where, 'size', size, 8, 512);
   // A smooth bump close to (1 - r^2)^2: bright core, soft rim, exactly 0 at the edge.
-  return radialAlphaTexture(where, size, [[0, 1], [0.2, 0.92], [0.4, 0.7], [0.6, 0.41], [0.8, 0.13], [1, 0]]);
+  return radialAlphaTexture(where, size, [
+    [0, 1],
+    [0.2, 0.92],
+    [0.4, 0.7],
+    [0.6, 0.41],
+    [0.8, 0.13],
+    [1, 0],
+  ]);
 }
 
 /**
@@ -184,7 +200,10 @@ const sharedSoft = new Map<number, Texture>();
 
 function softTexture(size: number): Texture {
   let t = sharedSoft.get(size);
-  if (!t) { t = createSoftParticleTexture(size); sharedSoft.set(size, t); }
+  if (!t) {
+    t = createSoftParticleTexture(size);
+    sharedSoft.set(size, t);
+  }
   return t;
 }
 
@@ -216,7 +235,13 @@ export class ParticleLayer {
   constructor(options: ParticleLayerOptions = {}) {
     this.opts = resolveParticleLayerOptions('ParticleLayer', options);
     this.texture = softTexture(this.opts.textureSize);
-    this.quads = new QuadPools(this.container, { main: 'particle-sparks', streaks: 'particle-trails' }, this.texture, true, this.opts.blend);
+    this.quads = new QuadPools(
+      this.container,
+      { main: 'particle-sparks', streaks: 'particle-trails' },
+      this.texture,
+      true,
+      this.opts.blend,
+    );
     if (this.opts.trails) this.quads.showStreaks(true);
   }
 
@@ -258,7 +283,8 @@ export class ParticleLayer {
    * @throws RangeError on another value.
    */
   setBlend(blend: 'normal' | 'add'): void {
-    if (blend !== 'normal' && blend !== 'add') throw new RangeError(`ParticleLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
+    if (blend !== 'normal' && blend !== 'add')
+      throw new RangeError(`ParticleLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
     this.opts.blend = blend;
     this.quads.setBlend(blend);
   }
@@ -291,13 +317,26 @@ export class ParticleLayer {
     const o = this.opts;
     const c = world.components;
     const ents = query(world, this.terms);
-    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-    const vx = c.Velocity.x, vy = c.Velocity.y;
-    const age = c.Lifetime.age, duration = c.Lifetime.duration;
+    const px = c.Position.x,
+      py = c.Position.y,
+      ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y;
+    const vx = c.Velocity.x,
+      vy = c.Velocity.y;
+    const age = c.Lifetime.age,
+      duration = c.Lifetime.duration;
     const P = c.Particle;
-    const cs = P.colorStart, ce = P.colorEnd, ss = P.sizeStart, se = P.sizeEnd, as = P.alphaStart, ae = P.alphaEnd;
-    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
-    const width = camera.width, height = camera.height;
+    const cs = P.colorStart,
+      ce = P.colorEnd,
+      ss = P.sizeStart,
+      se = P.sizeEnd,
+      as = P.alphaStart,
+      ae = P.alphaEnd;
+    const ppm = camera.pixelsPerMeter,
+      x0 = camera.originX,
+      y0 = camera.originY;
+    const width = camera.width,
+      height = camera.height;
     const back = (1 - alpha) * world.dt;
     const sizePx = ppm * o.sizeScale;
     const minPx = o.minPixelSize;
@@ -305,13 +344,20 @@ export class ParticleLayer {
     const texScale = 1 / o.textureSize;
     const cull = o.cull;
     const trails = o.trails;
-    const trailT = trails ? trails.duration : 0, trailW = trails ? trails.width / STREAK_H : 0;
-    const trailA = trails ? trails.alpha : 0, trailMin = trails ? trails.minLength : 0;
+    const trailT = trails ? trails.duration : 0,
+      trailW = trails ? trails.width / STREAK_H : 0;
+    const trailA = trails ? trails.alpha : 0,
+      trailMin = trails ? trails.minLength : 0;
     const include = o.include;
-    const spawn = world.spawnStamp, incStamp = this.includeStamp, incValue = this.includeValue;
-    const sparkPool = this.quads.mainPool, streakPool = this.quads.streakPool;
+    const spawn = world.spawnStamp,
+      incStamp = this.includeStamp,
+      incValue = this.includeValue;
+    const sparkPool = this.quads.mainPool,
+      streakPool = this.quads.streakPool;
     const streakTexture = trails !== null ? sharedStreakTexture() : null;
-    let n = 0, k = 0, shown = 0;
+    let n = 0,
+      k = 0,
+      shown = 0;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       if (include !== null) {
@@ -330,15 +376,21 @@ export class ParticleLayer {
       if (!(a > 0)) continue;
       let size = (ss[e]! + (se[e]! - ss[e]!) * t) * sizePx;
       if (!(size > 0)) continue;
-      if (size < minPx) { a *= size / minPx; size = minPx; }
-      const ax = ox[e]!, ay = oy[e]!;
+      if (size < minPx) {
+        a *= size / minPx;
+        size = minPx;
+      }
+      const ax = ox[e]!,
+        ay = oy[e]!;
       const x = x0 + (ax + (px[e]! - ax) * alpha) * ppm;
       const y = y0 - (ay + (py[e]! - ay) * alpha) * ppm;
       // Streak length, px: |v| min(duration, shown age).
       let len = 0;
-      let svx = 0, svy = 0;
+      let svx = 0,
+        svy = 0;
       if (trails !== null) {
-        svx = vx[e]!; svy = vy[e]!;
+        svx = vx[e]!;
+        svy = vy[e]!;
         const span = a0 < trailT ? (a0 > 0 ? a0 : 0) : trailT;
         len = Math.sqrt(svx * svx + svy * svy) * span * ppm;
       }
@@ -347,12 +399,15 @@ export class ParticleLayer {
         const m = r + len;
         if (x < -m || x > width + m || y < -m || y > height + m) continue;
       }
-      const c0 = cs[e]!, c1 = ce[e]!;
+      const c0 = cs[e]!,
+        c1 = ce[e]!;
       let bgr: number;
       if (c0 === c1) {
         bgr = ((c0 & 255) << 16) | (c0 & 0xff00) | ((c0 >> 16) & 255);
       } else {
-        const r0 = (c0 >> 16) & 255, g0 = (c0 >> 8) & 255, b0 = c0 & 255;
+        const r0 = (c0 >> 16) & 255,
+          g0 = (c0 >> 8) & 255,
+          b0 = c0 & 255;
         const rr = (r0 + (((c1 >> 16) & 255) - r0) * t + 0.5) | 0;
         const gg = (g0 + (((c1 >> 8) & 255) - g0) * t + 0.5) | 0;
         const bb = (b0 + ((c1 & 255) - b0) * t + 0.5) | 0;
@@ -360,19 +415,28 @@ export class ParticleLayer {
       }
       const a8 = a >= 255 ? 255 : (a + 0.5) | 0;
       let p = sparkPool[n];
-      if (p === undefined) { p = this.newParticle(this.texture, 0.5); sparkPool.push(p); }
+      if (p === undefined) {
+        p = this.newParticle(this.texture, 0.5);
+        sparkPool.push(p);
+      }
       n++;
-      p.x = x; p.y = y;
+      p.x = x;
+      p.y = y;
       const s = size * texScale;
-      p.scaleX = s; p.scaleY = s;
+      p.scaleX = s;
+      p.scaleY = s;
       p.color = ((a8 << 24) | bgr) >>> 0;
       if (trails !== null && len >= trailMin) {
         const ta = (a8 * trailA + 0.5) | 0;
         if (ta > 0) {
           let q = streakPool[k];
-          if (q === undefined) { q = this.newParticle(streakTexture!, 1); streakPool.push(q); }
+          if (q === undefined) {
+            q = this.newParticle(streakTexture!, 1);
+            streakPool.push(q);
+          }
           k++;
-          q.x = x; q.y = y;
+          q.x = x;
+          q.y = y;
           q.scaleX = len / STREAK_W;
           q.scaleY = size * trailW;
           q.rotation = Math.atan2(-svy, svx);

@@ -1,11 +1,19 @@
-import { Container, Particle, Texture } from 'pixi.js';
-import { Not as notTerm, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import {
+  assertBoolean,
+  assertFinite,
+  assertInRange,
+  assertInteger,
+  assertKnownKeys,
+  assertNonNegative,
+  describe,
+} from '@bitphysics/physics/validate';
+import { type ColorInput, parseColor } from '@bitphysics/render-common';
+import { Not as notTerm, query } from 'bitecs';
+import { Container, Particle, type Texture } from 'pixi.js';
 import type { Camera } from './camera.js';
-import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { QuadPools } from './quads.js';
 import { radialAlphaTexture, sharedStreakTexture } from './textures.js';
-import { assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
 
 /**
  * The point layer: draws bodies that have no collider (stars, dust, test particles in a force field)
@@ -135,7 +143,20 @@ export interface PointLayerStats {
 /** The default gradient: deep blue, blue-white, white, warm yellow, orange (slow to fast, or inner to outer). */
 export const DEFAULT_POINT_PALETTE: readonly number[] = Object.freeze([0x3050ff, 0x9fc4ff, 0xffffff, 0xffe08a, 0xff8a3d]);
 
-const LAYER_OPTIONS = ['entities', 'size', 'alpha', 'blend', 'cull', 'trails', 'textureSize', 'colorBy', 'color', 'range', 'centre', 'palette'] as const;
+const LAYER_OPTIONS = [
+  'entities',
+  'size',
+  'alpha',
+  'blend',
+  'cull',
+  'trails',
+  'textureSize',
+  'colorBy',
+  'color',
+  'range',
+  'centre',
+  'palette',
+] as const;
 const COLORING_OPTIONS = ['colorBy', 'color', 'range', 'centre', 'palette'] as const;
 const TRAIL_OPTIONS = ['duration', 'width', 'alpha', 'minLength'] as const;
 
@@ -159,7 +180,11 @@ export function resolvePointTrailOptions(where: string, options: PointTrailOptio
   return { duration, width, alpha, minLength };
 }
 
-function resolveColoring(where: string, options: PointColoring, base: Pick<ResolvedPointLayerOptions, 'colorBy' | 'color' | 'range' | 'centre' | 'palette'>): Pick<ResolvedPointLayerOptions, 'colorBy' | 'color' | 'range' | 'centre' | 'palette'> {
+function resolveColoring(
+  where: string,
+  options: PointColoring,
+  base: Pick<ResolvedPointLayerOptions, 'colorBy' | 'color' | 'range' | 'centre' | 'palette'>,
+): Pick<ResolvedPointLayerOptions, 'colorBy' | 'color' | 'range' | 'centre' | 'palette'> {
   const colorBy = options.colorBy ?? base.colorBy;
   if (colorBy !== 'uniform' && colorBy !== 'speed' && colorBy !== 'radius') {
     throw new RangeError(`${where}: colorBy must be 'uniform', 'speed' or 'radius', got ${describe(colorBy)}`);
@@ -184,7 +209,8 @@ function resolveColoring(where: string, options: PointColoring, base: Pick<Resol
   }
   let palette = base.palette;
   if (options.palette !== undefined) {
-    if (!Array.isArray(options.palette)) throw new TypeError(`${where}: palette must be an array of colours, got ${describe(options.palette)}`);
+    if (!Array.isArray(options.palette))
+      throw new TypeError(`${where}: palette must be an array of colours, got ${describe(options.palette)}`);
     if (options.palette.length < 2) throw new RangeError(`${where}: palette needs at least 2 colours, got ${options.palette.length}`);
     palette = options.palette.map((c, i) => parseColor(where, `palette[${i}]`, c));
   }
@@ -199,7 +225,8 @@ function resolveColoring(where: string, options: PointColoring, base: Pick<Resol
 export function resolvePointLayerOptions(where: string, options: PointLayerOptions = {}): ResolvedPointLayerOptions {
   assertKnownKeys(where, options, LAYER_OPTIONS);
   const entities = options.entities ?? null;
-  if (entities !== null && typeof entities !== 'function') throw new TypeError(`${where}: entities must be a function (world) => ids, got ${describe(entities)}`);
+  if (entities !== null && typeof entities !== 'function')
+    throw new TypeError(`${where}: entities must be a function (world) => ids, got ${describe(entities)}`);
   const size = options.size ?? 2;
   assertInRange(where, 'size', size, 0, 64);
   if (size === 0) throw new RangeError(`${where}: size must be in (0, 64] px, got 0`);
@@ -217,7 +244,11 @@ export function resolvePointLayerOptions(where: string, options: PointLayerOptio
   }
   const trails = t === false ? null : resolvePointTrailOptions(where, t === true ? {} : t, size);
   const coloring = resolveColoring(where, options, {
-    colorBy: 'uniform', color: 0xffffff, range: [0, 10], centre: [0, 0], palette: [...DEFAULT_POINT_PALETTE],
+    colorBy: 'uniform',
+    color: 0xffffff,
+    range: [0, 10],
+    centre: [0, 0],
+    palette: [...DEFAULT_POINT_PALETTE],
   });
   return { entities, size, alpha, blend, cull, trails, textureSize, ...coloring };
 }
@@ -231,7 +262,12 @@ export function resolvePointLayerOptions(where: string, options: PointLayerOptio
 export function createPointTexture(size = 16): Texture {
   const where = 'createPointTexture';
   assertInteger(where, 'size', size, 8, 256);
-  return radialAlphaTexture(where, size, [[0, 1], [0.45, 1], [0.7, 0.45], [1, 0]]);
+  return radialAlphaTexture(where, size, [
+    [0, 1],
+    [0.45, 1],
+    [0.7, 0.45],
+    [1, 0],
+  ]);
 }
 
 /**
@@ -242,7 +278,10 @@ const dotTextures = new Map<number, Texture>();
 
 function dotTexture(size: number): Texture {
   let t = dotTextures.get(size);
-  if (!t) { t = createPointTexture(size); dotTextures.set(size, t); }
+  if (!t) {
+    t = createPointTexture(size);
+    dotTextures.set(size, t);
+  }
   return t;
 }
 
@@ -309,7 +348,11 @@ export class PointLayer {
     this.opts.size = size;
     const s = size / this.opts.textureSize;
     const dotPool = this.quads.mainPool;
-    for (let i = 0; i < dotPool.length; i++) { const p = dotPool[i]!; p.scaleX = s; p.scaleY = s; }
+    for (let i = 0; i < dotPool.length; i++) {
+      const p = dotPool[i]!;
+      p.scaleX = s;
+      p.scaleY = s;
+    }
     this.quads.main.update();
   }
 
@@ -323,7 +366,8 @@ export class PointLayer {
   /** Switches between additive ('add') and alpha ('normal') blending. @throws RangeError on another value. */
   setBlend(blend: 'normal' | 'add'): void {
     this.assertAlive('setBlend');
-    if (blend !== 'normal' && blend !== 'add') throw new RangeError(`PointLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
+    if (blend !== 'normal' && blend !== 'add')
+      throw new RangeError(`PointLayer.setBlend: blend must be 'normal' or 'add', got ${describe(blend)}`);
     this.opts.blend = blend;
     this.quads.setBlend(blend);
   }
@@ -337,7 +381,8 @@ export class PointLayer {
     if (typeof options !== 'boolean' && (options === null || typeof options !== 'object')) {
       throw new TypeError(`PointLayer.setTrails: options must be a boolean or an options object, got ${describe(options)}`);
     }
-    this.opts.trails = options === false ? null : resolvePointTrailOptions('PointLayer.setTrails', options === true ? {} : options, this.opts.size);
+    this.opts.trails =
+      options === false ? null : resolvePointTrailOptions('PointLayer.setTrails', options === true ? {} : options, this.opts.size);
     this.quads.showStreaks(this.opts.trails !== null);
   }
 
@@ -363,35 +408,54 @@ export class PointLayer {
       }
       ents = query(world, this.terms);
     }
-    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-    const vx = c.Velocity.x, vy = c.Velocity.y;
-    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
-    const width = camera.width, height = camera.height;
+    const px = c.Position.x,
+      py = c.Position.y,
+      ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y;
+    const vx = c.Velocity.x,
+      vy = c.Velocity.y;
+    const ppm = camera.pixelsPerMeter,
+      x0 = camera.originX,
+      y0 = camera.originY;
+    const width = camera.width,
+      height = camera.height;
     const half = o.size * 0.5;
     const a8 = Math.round(o.alpha * 255);
     const cull = o.cull;
     const mode = o.colorBy === 'speed' ? 1 : o.colorBy === 'radius' ? 2 : 0;
     const lut = this.lut;
-    const low = o.range[0], scale = (LUT_SIZE - 1) / (o.range[1] - o.range[0]);
-    const cx = o.centre[0], cy = o.centre[1];
+    const low = o.range[0],
+      scale = (LUT_SIZE - 1) / (o.range[1] - o.range[0]);
+    const cx = o.centre[0],
+      cy = o.centre[1];
     const uniform = ((a8 << 24) | lut[0]!) >>> 0;
     const trails = o.trails;
     const trailT = trails ? trails.duration * ppm : 0;
     const trailMin = trails ? trails.minLength : 0;
     const trailA = trails ? Math.round(a8 * trails.alpha) : 0;
     const streakTexture = sharedStreakTexture();
-    const sw = trails ? 1 / streakTexture.width : 0, sh = trails ? trails.width / streakTexture.height : 0;
+    const sw = trails ? 1 / streakTexture.width : 0,
+      sh = trails ? trails.width / streakTexture.height : 0;
     const dotScale = o.size / o.textureSize;
-    const dotPool = this.quads.mainPool, streakPool = this.quads.streakPool;
-    let n = 0, k = 0;
+    const dotPool = this.quads.mainPool,
+      streakPool = this.quads.streakPool;
+    let n = 0,
+      k = 0;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
-      const ax = ox[e]!, ay = oy[e]!;
-      const wx = ax + (px[e]! - ax) * alpha, wy = ay + (py[e]! - ay) * alpha;
-      const x = x0 + wx * ppm, y = y0 - wy * ppm;
-      let len = 0, svx = 0, svy = 0, speed = -1;
+      const ax = ox[e]!,
+        ay = oy[e]!;
+      const wx = ax + (px[e]! - ax) * alpha,
+        wy = ay + (py[e]! - ay) * alpha;
+      const x = x0 + wx * ppm,
+        y = y0 - wy * ppm;
+      let len = 0,
+        svx = 0,
+        svy = 0,
+        speed = -1;
       if (trails !== null) {
-        svx = vx[e]!; svy = vy[e]!;
+        svx = vx[e]!;
+        svy = vy[e]!;
         speed = Math.sqrt(svx * svx + svy * svy);
         len = speed * trailT;
       }
@@ -403,10 +467,15 @@ export class PointLayer {
       if (mode !== 0) {
         let v: number;
         if (mode === 1) {
-          if (speed < 0) { const ux = vx[e]!, uy = vy[e]!; speed = Math.sqrt(ux * ux + uy * uy); }
+          if (speed < 0) {
+            const ux = vx[e]!,
+              uy = vy[e]!;
+            speed = Math.sqrt(ux * ux + uy * uy);
+          }
           v = speed;
         } else {
-          const dx = wx - cx, dy = wy - cy;
+          const dx = wx - cx,
+            dy = wy - cy;
           v = Math.sqrt(dx * dx + dy * dy);
         }
         let j = (v - low) * scale;
@@ -419,17 +488,22 @@ export class PointLayer {
         dotPool.push(p);
       }
       n++;
-      p.x = x; p.y = y;
+      p.x = x;
+      p.y = y;
       p.color = color;
       if (trails !== null && len >= trailMin && trailA > 0) {
         let q = streakPool[k];
-        if (q === undefined) { q = new Particle({ texture: streakTexture, anchorX: 1, anchorY: 0.5 }); streakPool.push(q); }
+        if (q === undefined) {
+          q = new Particle({ texture: streakTexture, anchorX: 1, anchorY: 0.5 });
+          streakPool.push(q);
+        }
         k++;
-        q.x = x; q.y = y;
+        q.x = x;
+        q.y = y;
         q.scaleX = len * sw;
         q.scaleY = sh;
         q.rotation = Math.atan2(-svy, svx);
-        q.color = (((trailA << 24) | (color & 0xffffff)) >>> 0);
+        q.color = ((trailA << 24) | (color & 0xffffff)) >>> 0;
       }
     }
     this.quads.commit(n, trails !== null ? k : 0);
@@ -453,14 +527,18 @@ export class PointLayer {
   private buildLut(): void {
     const o = this.opts;
     const lut = this.lut;
-    if (o.colorBy === 'uniform') { lut.fill(bgr(o.color)); return; }
+    if (o.colorBy === 'uniform') {
+      lut.fill(bgr(o.color));
+      return;
+    }
     const stops = o.palette;
     const segments = stops.length - 1;
     for (let i = 0; i < LUT_SIZE; i++) {
       const t = (i / (LUT_SIZE - 1)) * segments;
       const s = Math.min(segments - 1, Math.floor(t));
       const f = t - s;
-      const a = stops[s]!, b = stops[s + 1]!;
+      const a = stops[s]!,
+        b = stops[s + 1]!;
       const r = Math.round(((a >> 16) & 255) + (((b >> 16) & 255) - ((a >> 16) & 255)) * f);
       const g = Math.round(((a >> 8) & 255) + (((b >> 8) & 255) - ((a >> 8) & 255)) * f);
       const bl = Math.round((a & 255) + ((b & 255) - (a & 255)) * f);

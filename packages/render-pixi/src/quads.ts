@@ -1,4 +1,4 @@
-import { Container, Particle, ParticleContainer, Texture } from 'pixi.js';
+import { type Container, type Particle, ParticleContainer, type Texture } from 'pixi.js';
 import { sharedStreakTexture } from './textures.js';
 
 /**

@@ -1,16 +1,24 @@
-import { Container, type Application, type Texture } from 'pixi.js';
+import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import {
+  assertBoolean,
+  assertFinite,
+  assertInteger,
+  assertKnownKeys,
+  assertNonNegative,
+  assertPositive,
+  describe,
+} from '@bitphysics/physics/validate';
+import { type ColorInput, entitySlot, parseColor, parsePalette } from '@bitphysics/render-common';
 import { query } from 'bitecs';
-import { isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { type Application, Container, type Texture } from 'pixi.js';
 import { BallLayer, type BallMode } from './balls.js';
-import { Camera, assertWorldRect, type Point2, type WorldRect } from './camera.js';
-import { entitySlot, parseColor, parsePalette, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugOptions } from './debug.js';
-import { ParticleLayer, resolveParticleLayerOptions, type ParticleLayerOptions } from './particles.js';
-import { createBallTexture } from './textures.js';
-import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
-import { WallLayer } from './walls.js';
+import { assertWorldRect, Camera, type Point2, type WorldRect } from './camera.js';
+import { type DebugCounts, DebugLayer, type DebugOptions, resolveDebugOptions } from './debug.js';
+import { ParticleLayer, type ParticleLayerOptions, resolveParticleLayerOptions } from './particles.js';
 import { ShapeLayer } from './shapes.js';
-import { assertBoolean, assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe } from '@bitphysics/physics/validate';
+import { createBallTexture } from './textures.js';
+import { resolveTrailOptions, TrailLayer, type TrailOptions } from './trails.js';
+import { WallLayer } from './walls.js';
 
 /** Options of `new WorldRenderer`. Every field is optional; unknown fields are rejected. */
 export interface WorldRendererOptions {
@@ -71,8 +79,23 @@ export interface WorldRendererOptions {
 }
 
 const RENDERER_OPTIONS = [
-  'app', 'width', 'height', 'pixelsPerMeter', 'view', 'padding', 'balls', 'particleThreshold', 'rotation', 'colorSeed',
-  'palette', 'segmentColor', 'boundaryColor', 'trails', 'debug', 'textureSize', 'particles',
+  'app',
+  'width',
+  'height',
+  'pixelsPerMeter',
+  'view',
+  'padding',
+  'balls',
+  'particleThreshold',
+  'rotation',
+  'colorSeed',
+  'palette',
+  'segmentColor',
+  'boundaryColor',
+  'trails',
+  'debug',
+  'textureSize',
+  'particles',
 ] as const;
 
 /** What the renderer drew in its last frame (one object, updated in place by `render`). */
@@ -96,14 +119,21 @@ export interface RendererStats {
 /** Validates particle layer options up front (before anything is allocated); returns them as given. */
 function particleLayerOptions(where: string, options: true | ParticleLayerOptions): ParticleLayerOptions {
   if (options === true) return {};
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: particles must be a boolean or an options object, got ${describe(options)}`);
+  if (options === null || typeof options !== 'object')
+    throw new TypeError(`${where}: particles must be a boolean or an options object, got ${describe(options)}`);
   resolveParticleLayerOptions(where, options);
   return options;
 }
 
 function checkWorld(where: string, world: unknown): asserts world is PhysicsWorld {
   const w = world as Partial<PhysicsWorld> | null;
-  if (w === null || typeof w !== 'object' || typeof w.capacity !== 'number' || typeof w.components !== 'object' || !(w.spawnStamp instanceof Uint32Array)) {
+  if (
+    w === null ||
+    typeof w !== 'object' ||
+    typeof w.capacity !== 'number' ||
+    typeof w.components !== 'object' ||
+    !(w.spawnStamp instanceof Uint32Array)
+  ) {
     throw new TypeError(`${where}: world must be a physics world from createPhysicsWorld, got ${describe(world)}`);
   }
   if (w.dimensions !== 2) throw new RangeError(`${where}: world must be 2D (dimensions 2), got dimensions ${describe(w.dimensions)}`);
@@ -135,7 +165,13 @@ export class WorldRenderer {
   readonly camera: Camera;
   /** Statistics of the last frame (updated in place). */
   readonly stats: RendererStats = {
-    balls: 0, mode: 'sprites', segments: 0, contacts: 0, arrows: 0, scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
+    balls: 0,
+    mode: 'sprites',
+    segments: 0,
+    contacts: 0,
+    arrows: 0,
+    scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 },
+    frames: 0,
   };
   private worldRef: PhysicsWorld;
   private readonly texture: Texture;
@@ -201,15 +237,21 @@ export class WorldRenderer {
     const textureSize = options.textureSize ?? 128;
     assertInteger(where, 'textureSize', textureSize, 8, 1024);
     // Validate optional layers before anything is allocated.
-    const trailOptions = options.trails === undefined || options.trails === false ? null
-      : resolveTrailOptions(where, options.trails === true ? {} : options.trails);
-    const debugOptions = options.debug === undefined || options.debug === false ? null
-      : resolveDebugOptions(where, options.debug === true ? {} : options.debug);
-    const particleOptions = options.particles === undefined || options.particles === false ? null
-      : particleLayerOptions(where, options.particles);
+    const trailOptions =
+      options.trails === undefined || options.trails === false
+        ? null
+        : resolveTrailOptions(where, options.trails === true ? {} : options.trails);
+    const debugOptions =
+      options.debug === undefined || options.debug === false
+        ? null
+        : resolveDebugOptions(where, options.debug === true ? {} : options.debug);
+    const particleOptions =
+      options.particles === undefined || options.particles === false ? null : particleLayerOptions(where, options.particles);
 
     this.camera = new Camera({
-      width, height, padding,
+      width,
+      height,
+      padding,
       ...(options.pixelsPerMeter !== undefined ? { pixelsPerMeter: options.pixelsPerMeter } : {}),
       ...(view !== undefined && view !== 'boundary' ? { view } : {}),
     });
@@ -222,7 +264,14 @@ export class WorldRenderer {
     this.balls = new BallLayer(this.texture, mode === 'particles' ? 'particles' : 'sprites', rotation, colorSeed, palette);
     this.walls = new WallLayer(segmentColor, boundaryColor);
     this.shapes = new ShapeLayer(colorSeed, palette);
-    this.root.addChild(this.walls.graphics, this.shapes.graphics, this.trailHolder, this.particleHolder, this.balls.container, this.debugHolder);
+    this.root.addChild(
+      this.walls.graphics,
+      this.shapes.graphics,
+      this.trailHolder,
+      this.particleHolder,
+      this.balls.container,
+      this.debugHolder,
+    );
     if (particleOptions) this.installParticles(particleOptions);
     this.bindWorld(world);
     if (trailOptions) this.installTrails(trailOptions);
@@ -293,9 +342,13 @@ export class WorldRenderer {
     s.segments = this.walls.segments;
     s.contacts = debug ? debug.contactsDrawn : 0;
     s.arrows = debug ? debug.arrowsDrawn : 0;
-    const sc = s.scenery, dd = debug?.drawn;
-    sc.springs = dd ? dd.springs : 0; sc.joints = dd ? dd.joints : 0; sc.planes = dd ? dd.planes : 0;
-    sc.fields = dd ? dd.fields : 0; sc.emitters = dd ? dd.emitters : 0;
+    const sc = s.scenery,
+      dd = debug?.drawn;
+    sc.springs = dd ? dd.springs : 0;
+    sc.joints = dd ? dd.joints : 0;
+    sc.planes = dd ? dd.planes : 0;
+    sc.fields = dd ? dd.fields : 0;
+    sc.emitters = dd ? dd.emitters : 0;
     s.frames++;
   }
 
@@ -470,7 +523,11 @@ export class WorldRenderer {
     const seen = this.boxSeen;
     const enabled = box.enabled ? 1 : 0;
     if (seen[0] === enabled && seen[1] === box.min[0] && seen[2] === box.min[1] && seen[3] === box.max[0] && seen[4] === box.max[1]) return;
-    seen[0] = enabled; seen[1] = box.min[0]!; seen[2] = box.min[1]!; seen[3] = box.max[0]!; seen[4] = box.max[1]!;
+    seen[0] = enabled;
+    seen[1] = box.min[0]!;
+    seen[2] = box.min[1]!;
+    seen[3] = box.max[0]!;
+    seen[4] = box.max[1]!;
     if (box.enabled) this.camera.fit({ minX: box.min[0]!, minY: box.min[1]!, maxX: box.max[0]!, maxY: box.max[1]! });
   }
 

@@ -1,5 +1,5 @@
+import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { isAlive, slotOf, type PhysicsWorld } from '@bitphysics/physics';
 import type { Camera } from './camera.js';
 
 /** Options of `RopeLayer`. */
@@ -30,30 +30,51 @@ export class RopeLayer {
    * @param bodies the rope's body handles in order.
    * @throws RangeError on a smoothing that is not an integer >= 1 or a negative width.
    */
-  constructor(private readonly world: PhysicsWorld, private readonly bodies: ArrayLike<number>, private readonly options: RopeLayerOptions = {}) {
+  constructor(
+    private readonly world: PhysicsWorld,
+    private readonly bodies: ArrayLike<number>,
+    private readonly options: RopeLayerOptions = {},
+  ) {
     const s = options.smoothing ?? 6;
     if (!Number.isInteger(s) || s < 1) throw new RangeError(`RopeLayer: smoothing must be an integer >= 1, got ${String(s)}`);
-    if (options.width !== undefined && !(options.width >= 0)) throw new RangeError(`RopeLayer: width must be >= 0, got ${String(options.width)}`);
+    if (options.width !== undefined && !(options.width >= 0))
+      throw new RangeError(`RopeLayer: width must be >= 0, got ${String(options.width)}`);
   }
 
   /** Redraws the rope for interpolation factor `alpha` in [0, 1] through `camera`. */
   update(camera: Camera, alpha: number): void {
     const g = this.graphics;
     g.clear();
-    const P = this.world.components.Position, O = this.world.components.PreviousPosition;
+    const P = this.world.components.Position,
+      O = this.world.components.PreviousPosition;
     const { xs, ys } = this;
-    xs.length = 0; ys.length = 0;
-    const flush = (): void => { this.stroke(camera, xs, ys); xs.length = 0; ys.length = 0; };
-    const start = this.options.start, end = this.options.end;
-    if (start) { xs.push(start[0]); ys.push(start[1]); }
+    xs.length = 0;
+    ys.length = 0;
+    const flush = (): void => {
+      this.stroke(camera, xs, ys);
+      xs.length = 0;
+      ys.length = 0;
+    };
+    const start = this.options.start,
+      end = this.options.end;
+    if (start) {
+      xs.push(start[0]);
+      ys.push(start[1]);
+    }
     for (let i = 0; i < this.bodies.length; i++) {
       const h = this.bodies[i]!;
-      if (!isAlive(this.world, h)) { flush(); continue; }
+      if (!isAlive(this.world, h)) {
+        flush();
+        continue;
+      }
       const e = slotOf(h);
       xs.push(O.x[e]! + (P.x[e]! - O.x[e]!) * alpha);
       ys.push(O.y[e]! + (P.y[e]! - O.y[e]!) * alpha);
     }
-    if (end && (this.bodies.length === 0 || isAlive(this.world, this.bodies[this.bodies.length - 1]!))) { xs.push(end[0]); ys.push(end[1]); }
+    if (end && (this.bodies.length === 0 || isAlive(this.world, this.bodies[this.bodies.length - 1]!))) {
+      xs.push(end[0]);
+      ys.push(end[1]);
+    }
     flush();
   }
 
@@ -62,20 +83,34 @@ export class RopeLayer {
     if (n < 2) return;
     const g = this.graphics;
     const s = this.options.smoothing ?? 6;
-    const sx = (x: number) => camera.toScreenX(x), sy = (y: number) => camera.toScreenY(y);
+    const sx = (x: number) => camera.toScreenX(x),
+      sy = (y: number) => camera.toScreenY(y);
     g.moveTo(sx(xs[0]!), sy(ys[0]!));
     for (let i = 0; i + 1 < n; i++) {
-      const x0 = xs[Math.max(0, i - 1)]!, y0 = ys[Math.max(0, i - 1)]!, x1 = xs[i]!, y1 = ys[i]!;
-      const x2 = xs[i + 1]!, y2 = ys[i + 1]!, x3 = xs[Math.min(n - 1, i + 2)]!, y3 = ys[Math.min(n - 1, i + 2)]!;
+      const x0 = xs[Math.max(0, i - 1)]!,
+        y0 = ys[Math.max(0, i - 1)]!,
+        x1 = xs[i]!,
+        y1 = ys[i]!;
+      const x2 = xs[i + 1]!,
+        y2 = ys[i + 1]!,
+        x3 = xs[Math.min(n - 1, i + 2)]!,
+        y3 = ys[Math.min(n - 1, i + 2)]!;
       for (let k = 1; k <= s; k++) {
-        const t = k / s, t2 = t * t, t3 = t2 * t;
+        const t = k / s,
+          t2 = t * t,
+          t3 = t2 * t;
         // Catmull-Rom: 0.5 (2 p1 + (p2 - p0) t + (2 p0 - 5 p1 + 4 p2 - p3) t^2 + (3 p1 - p0 - 3 p2 + p3) t^3).
         const x = 0.5 * (2 * x1 + (x2 - x0) * t + (2 * x0 - 5 * x1 + 4 * x2 - x3) * t2 + (3 * x1 - x0 - 3 * x2 + x3) * t3);
         const y = 0.5 * (2 * y1 + (y2 - y0) * t + (2 * y0 - 5 * y1 + 4 * y2 - y3) * t2 + (3 * y1 - y0 - 3 * y2 + y3) * t3);
         g.lineTo(sx(x), sy(y));
       }
     }
-    g.stroke({ width: Math.max(1.5, camera.toScreenLength(this.options.width ?? 0.05)), color: this.options.color ?? 0xd9b38c, cap: 'round', join: 'round' });
+    g.stroke({
+      width: Math.max(1.5, camera.toScreenLength(this.options.width ?? 0.05)),
+      color: this.options.color ?? 0xd9b38c,
+      cap: 'round',
+      join: 'round',
+    });
   }
 
   /** Removes and frees the graphics. */

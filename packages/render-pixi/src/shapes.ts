@@ -1,7 +1,7 @@
-import { Graphics } from 'pixi.js';
-import { hasComponent, query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { seededColor } from '@bitphysics/render-common';
+import { hasComponent, query } from 'bitecs';
+import { Graphics } from 'pixi.js';
 import type { Camera } from './camera.js';
 
 /** Vertices a shape store holds per entity (the physics package's SHAPE_STRIDE). */
@@ -42,36 +42,48 @@ export class ShapeLayer {
     const S = c.Shape;
     if (world.dimensions !== 2 || !S || S.body.length === 0) return;
     const shapes = query(world, [c.Shape]);
-    const P = c.Position, O = c.PreviousPosition, A = c.Angle.value, W = c.AngularVelocity.z;
+    const P = c.Position,
+      O = c.PreviousPosition,
+      A = c.Angle.value,
+      W = c.AngularVelocity.z;
     const back = (1 - alpha) * world.dt;
     const pts = this.points;
     for (let k = 0; k < shapes.length; k++) {
       const e = shapes[k]!;
       const b = S.body[e]!;
       if (!hasComponent(world, b, c.Position)) continue;
-      const x = O.x[b]! + (P.x[b]! - O.x[b]!) * alpha, y = O.y[b]! + (P.y[b]! - O.y[b]!) * alpha;
+      const x = O.x[b]! + (P.x[b]! - O.x[b]!) * alpha,
+        y = O.y[b]! + (P.y[b]! - O.y[b]!) * alpha;
       let a = hasComponent(world, b, c.Angle) ? A[b]! : 0;
       if (!hasComponent(world, b, c.Static) && hasComponent(world, b, c.AngularVelocity)) a -= W[b]! * back;
-      const ca = Math.cos(a), sa = Math.sin(a);
-      const n = S.count[e]!, r = S.radius[e]!, o = STRIDE * e;
+      const ca = Math.cos(a),
+        sa = Math.sin(a);
+      const n = S.count[e]!,
+        r = S.radius[e]!,
+        o = STRIDE * e;
       pts.length = 0;
       const color = seededColor(this.colorSeed, b, world.spawnStamp[b]!, this.palette);
       if (n === 1) {
-        const cx = x + ca * S.vx[o]! - sa * S.vy[o]!, cy = y + sa * S.vx[o]! + ca * S.vy[o]!;
+        const cx = x + ca * S.vx[o]! - sa * S.vy[o]!,
+          cy = y + sa * S.vx[o]! + ca * S.vy[o]!;
         g.circle(camera.toScreenX(cx), camera.toScreenY(cy), camera.toScreenLength(r));
         // A radius line shows the turn.
         if (S.sensor[e] === 1) g.stroke({ width: 1.5, color, alpha: 0.8 });
         else {
           g.fill({ color, alpha: 0.85 }).stroke({ width: 1.5, color: 0x1d2330, alpha: 0.9 });
-          g.moveTo(camera.toScreenX(cx), camera.toScreenY(cy)).lineTo(camera.toScreenX(cx + ca * r), camera.toScreenY(cy + sa * r)).stroke({ width: 1.5, color: 0x1d2330, alpha: 0.9 });
+          g.moveTo(camera.toScreenX(cx), camera.toScreenY(cy))
+            .lineTo(camera.toScreenX(cx + ca * r), camera.toScreenY(cy + sa * r))
+            .stroke({ width: 1.5, color: 0x1d2330, alpha: 0.9 });
         }
         this.drawn++;
         continue;
       }
       for (let i = 0; i < n; i++) {
         // Vertex i in the world; with a radius, the arc around it from the previous edge's normal to this edge's.
-        const lx = S.vx[o + i]!, ly = S.vy[o + i]!;
-        const vx = x + ca * lx - sa * ly, vy = y + sa * lx + ca * ly;
+        const lx = S.vx[o + i]!,
+          ly = S.vy[o + i]!;
+        const vx = x + ca * lx - sa * ly,
+          vy = y + sa * lx + ca * ly;
         if (r > 0) {
           const p = i === 0 ? n - 1 : i - 1;
           const a0 = Math.atan2(sa * S.nx[o + p]! + ca * S.ny[o + p]!, ca * S.nx[o + p]! - sa * S.ny[o + p]!);

@@ -1,5 +1,5 @@
-import { CanvasSource, DOMAdapter, Texture, type ICanvas } from 'pixi.js';
 import { assertBoolean, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
+import { CanvasSource, DOMAdapter, type ICanvas, Texture } from 'pixi.js';
 
 /**
  * A canvas of `width` x `height` px from pixi's DOM adapter (a page's canvas, or an OffscreenCanvas
@@ -31,7 +31,8 @@ export function radialAlphaTexture(where: string, size: number, stops: readonly 
 }
 
 /** Edge lengths of the streak texture, px. */
-export const STREAK_W = 64, STREAK_H = 16;
+export const STREAK_W = 64,
+  STREAK_H = 16;
 
 /**
  * Creates the streak texture of particle and point trails: opacity rising from 0 at the left (tail) to
@@ -43,13 +44,16 @@ export function createStreakTexture(): Texture {
   const image = ctx.createImageData(STREAK_W, STREAK_H);
   const d = image.data;
   for (let y = 0; y < STREAK_H; y++) {
-    const v = (y + 0.5) / STREAK_H * 2 - 1; // -1..1 across
+    const v = ((y + 0.5) / STREAK_H) * 2 - 1; // -1..1 across
     const across = Math.max(0, 1 - v * v);
     for (let x = 0; x < STREAK_W; x++) {
       const u = (x + 0.5) / STREAK_W; // 0 tail .. 1 head
       const a = u * u * across;
       const o = (y * STREAK_W + x) * 4;
-      d[o] = 255; d[o + 1] = 255; d[o + 2] = 255; d[o + 3] = Math.round(a * 255);
+      d[o] = 255;
+      d[o + 1] = 255;
+      d[o + 2] = 255;
+      d[o + 3] = Math.round(a * 255);
     }
   }
   ctx.putImageData(image, 0, 0);

@@ -1,9 +1,9 @@
-import { CanvasSource, Container, MeshRope, Texture, type PointData } from 'pixi.js';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { assertInRange, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
+import { CanvasSource, Container, MeshRope, type PointData, Texture } from 'pixi.js';
 import type { BallLayer, BallLayerListener } from './balls.js';
 import type { Camera } from './camera.js';
 import { canvas2d } from './textures.js';
-import { assertInRange, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /** Options of the trail layer (`WorldRendererOptions.trails`, `WorldRenderer.setTrails`). Unknown fields are rejected. */
 export interface TrailOptions {
@@ -135,8 +135,10 @@ export class TrailLayer implements BallLayerListener {
 
   /** Appends every trailed ball's current Position (m) to its trail; call once per frame in which the world stepped. */
   record(world: PhysicsWorld, balls: BallLayer): void {
-    const px = world.components.Position.x, py = world.components.Position.y;
-    const eids = balls.eids, slotOf = this.slotOf;
+    const px = world.components.Position.x,
+      py = world.components.Position.y;
+    const eids = balls.eids,
+      slotOf = this.slotOf;
     for (let i = 0; i < balls.count; i++) {
       const e = eids[i]!;
       const s = slotOf[e]! - 1;
@@ -149,9 +151,15 @@ export class TrailLayer implements BallLayerListener {
     const L = this.options.length;
     const hist = this.history;
     const c = world.components;
-    const px = c.Position.x, py = c.Position.y, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-    const ppm = camera.pixelsPerMeter, x0 = camera.originX, y0 = camera.originY;
-    const eids = balls.eids, slotOf = this.slotOf;
+    const px = c.Position.x,
+      py = c.Position.y,
+      ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y;
+    const ppm = camera.pixelsPerMeter,
+      x0 = camera.originX,
+      y0 = camera.originY;
+    const eids = balls.eids,
+      slotOf = this.slotOf;
     for (let i = 0; i < balls.count; i++) {
       const e = eids[i]!;
       const s = slotOf[e]! - 1;

@@ -1,6 +1,6 @@
-import { Graphics } from 'pixi.js';
-import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { query } from 'bitecs';
+import { Graphics } from 'pixi.js';
 import type { Camera } from './camera.js';
 
 /**
@@ -57,25 +57,37 @@ export class WallLayer {
     }
     const box = world.collision.boundary;
     const seen = this.boxSeen;
-    const boxChanged = seen[0] !== (box.enabled ? 1 : 0) || seen[1] !== box.min[0] || seen[2] !== box.min[1] ||
-      seen[3] !== box.max[0] || seen[4] !== box.max[1];
+    const boxChanged =
+      seen[0] !== (box.enabled ? 1 : 0) ||
+      seen[1] !== box.min[0] ||
+      seen[2] !== box.min[1] ||
+      seen[3] !== box.max[0] ||
+      seen[4] !== box.max[1];
     if (sig === this.signature && !boxChanged && camera.version === this.cameraVersion) return;
     this.signature = sig;
     this.cameraVersion = camera.version;
-    seen[0] = box.enabled ? 1 : 0; seen[1] = box.min[0]!; seen[2] = box.min[1]!; seen[3] = box.max[0]!; seen[4] = box.max[1]!;
+    seen[0] = box.enabled ? 1 : 0;
+    seen[1] = box.min[0]!;
+    seen[2] = box.min[1]!;
+    seen[3] = box.max[0]!;
+    seen[4] = box.max[1]!;
 
     const g = this.graphics;
     g.clear();
     if (box.enabled) {
       const w = this.boundaryWidth;
-      const x1 = camera.toScreenX(box.min[0]!) - w / 2, x2 = camera.toScreenX(box.max[0]!) + w / 2;
-      const y1 = camera.toScreenY(box.max[1]!) - w / 2, y2 = camera.toScreenY(box.min[1]!) + w / 2;
+      const x1 = camera.toScreenX(box.min[0]!) - w / 2,
+        x2 = camera.toScreenX(box.max[0]!) + w / 2;
+      const y1 = camera.toScreenY(box.max[1]!) - w / 2,
+        y2 = camera.toScreenY(box.min[1]!) + w / 2;
       g.rect(x1, y1, x2 - x1, y2 - y1).stroke({ width: w, color: this.boundaryColor, alpha: 1, join: 'miter' });
     }
     for (let i = 0; i < segs.length; i++) {
       const e = segs[i]!;
-      const ax = camera.toScreenX(S.ax[e]!), ay = camera.toScreenY(S.ay[e]!);
-      const bx = camera.toScreenX(S.bx[e]!), by = camera.toScreenY(S.by[e]!);
+      const ax = camera.toScreenX(S.ax[e]!),
+        ay = camera.toScreenY(S.ay[e]!);
+      const bx = camera.toScreenX(S.bx[e]!),
+        by = camera.toScreenY(S.by[e]!);
       const width = Math.max(this.minWidth, 2 * camera.toScreenLength(S.radius[e]!));
       g.moveTo(ax, ay).lineTo(bx, by).stroke({ width, color: this.segmentColor, cap: 'round' });
       const dot = Math.max(2, width * 0.35);

@@ -1,6 +1,6 @@
-import { ConeGeometry, CylinderGeometry, Group, Mesh, MeshStandardMaterial, Quaternion, Vector3 } from 'three';
-import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { assertKnownKeys, assertNonNegative, assertPositive } from '@bitphysics/physics/validate';
+import { type ColorInput, parseColor } from '@bitphysics/render-common';
+import { ConeGeometry, CylinderGeometry, Group, Mesh, MeshStandardMaterial, Quaternion, Vector3 } from 'three';
 
 /** Options of `new VectorArrow`. Every field optional; unknown fields are rejected. */
 export interface VectorArrowOptions {
@@ -68,7 +68,9 @@ export class VectorArrow {
    * arrow when the result is shorter than `minLength`. Non-finite input hides it too.
    */
   set(ox: number, oy: number, oz: number, vx: number, vy: number, vz: number, scale = 1): void {
-    const x = vx * scale, y = vy * scale, z = vz * scale;
+    const x = vx * scale,
+      y = vy * scale,
+      z = vz * scale;
     const len = Math.sqrt(x * x + y * y + z * z);
     if (!(len >= this.minLength) || !Number.isFinite(len) || !Number.isFinite(ox + oy + oz)) {
       this.object.visible = false;

@@ -44,7 +44,8 @@ export class InstanceBook {
 
   /** @param capacity largest entity id, integer >= 1. @throws RangeError otherwise. */
   constructor(capacity: number) {
-    if (!Number.isInteger(capacity) || capacity < 1) throw new RangeError(`InstanceBook: capacity must be an integer >= 1, got ${capacity}`);
+    if (!Number.isInteger(capacity) || capacity < 1)
+      throw new RangeError(`InstanceBook: capacity must be an integer >= 1, got ${capacity}`);
     this.capacity = capacity;
     this.groupPlusOne = new Uint16Array(capacity + 1);
     this.indexOf = new Int32Array(capacity + 1);
@@ -150,7 +151,10 @@ export class InstanceBook {
   /** Starts a sync pass: entities not `mark`ed before `sweep` are removed by it. */
   beginPass(): void {
     this.pass = (this.pass + 1) >>> 0;
-    if (this.pass === 0) { this.seen.fill(0); this.pass = 1; }
+    if (this.pass === 0) {
+      this.seen.fill(0);
+      this.pass = 1;
+    }
   }
 
   /** Marks `eid` as still present in this pass. */
@@ -161,12 +165,16 @@ export class InstanceBook {
   /** Removes every shown entity not marked since `beginPass`. @returns how many were removed. */
   sweep(): number {
     let removed = 0;
-    const seen = this.seen, pass = this.pass;
+    const seen = this.seen,
+      pass = this.pass;
     for (let g = 0; g < this.lists.length; g++) {
       const list = this.lists[g]!;
       for (let i = this.counts[g]! - 1; i >= 0; i--) {
         const e = list[i]!;
-        if (seen[e] !== pass) { this.remove(e); removed++; }
+        if (seen[e] !== pass) {
+          this.remove(e);
+          removed++;
+        }
       }
     }
     return removed;

@@ -1,6 +1,6 @@
-import { MOUSE, TOUCH, Vector3, type PerspectiveCamera } from 'three';
-import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { assertBoolean, assertKnownKeys, assertPositive, describe } from '@bitphysics/physics/validate';
+import { MOUSE, type PerspectiveCamera, TOUCH, Vector3 } from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { assertVector } from './validate.js';
 
 /** Options of `createOrbitControls`. Every field optional; unknown fields are rejected. */
@@ -39,7 +39,8 @@ export function createOrbitControls(camera: PerspectiveCamera, domElement: HTMLE
   assertPositive(where, 'minDistance', minDistance);
   const maxDistance = options.maxDistance ?? 1e6;
   assertPositive(where, 'maxDistance', maxDistance);
-  if (!(maxDistance > minDistance)) throw new RangeError(`${where}: maxDistance must be > minDistance, got ${maxDistance} <= ${minDistance}`);
+  if (!(maxDistance > minDistance))
+    throw new RangeError(`${where}: maxDistance must be > minDistance, got ${maxDistance} <= ${minDistance}`);
   const left = options.leftButton ?? 'rotate';
   if (left !== 'rotate' && left !== 'none') throw new RangeError(`${where}: leftButton must be 'rotate' or 'none', got ${describe(left)}`);
   const controls = new OrbitControls(camera, domElement);
@@ -75,8 +76,11 @@ const scratch = new Vector3();
  * @throws TypeError | RangeError on bad corners (max must exceed min on every axis) or options.
  */
 export function frameBox(
-  camera: PerspectiveCamera, controls: { target: Vector3; update(): unknown } | null,
-  min: ArrayLike<number>, max: ArrayLike<number>, options: FrameOptions = {},
+  camera: PerspectiveCamera,
+  controls: { target: Vector3; update(): unknown } | null,
+  min: ArrayLike<number>,
+  max: ArrayLike<number>,
+  options: FrameOptions = {},
 ): void {
   const where = 'frameBox';
   assertVector(where, 'min', min, 3);
@@ -90,7 +94,9 @@ export function frameBox(
   const margin = options.margin ?? 1.15;
   assertPositive(where, 'margin', margin);
   if (margin < 1) throw new RangeError(`${where}: margin must be >= 1, got ${margin}`);
-  const cx = 0.5 * (min[0]! + max[0]!), cy = 0.5 * (min[1]! + max[1]!), cz = 0.5 * (min[2]! + max[2]!);
+  const cx = 0.5 * (min[0]! + max[0]!),
+    cy = 0.5 * (min[1]! + max[1]!),
+    cz = 0.5 * (min[2]! + max[2]!);
   const r = Math.max(1e-6, 0.5 * Math.hypot(max[0]! - min[0]!, max[1]! - min[1]!, max[2]! - min[2]!));
   const vfov = (camera.fov * Math.PI) / 180;
   const hfov = 2 * Math.atan(Math.tan(vfov / 2) * camera.aspect);

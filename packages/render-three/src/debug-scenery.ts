@@ -1,4 +1,4 @@
-import { Joint3DType, fieldsAt, joints3DOf, query, type PhysicsWorld } from '@bitphysics/physics';
+import { fieldsAt, Joint3DType, joints3DOf, type PhysicsWorld, query } from '@bitphysics/physics';
 
 /**
  * The 3D debug layer's drawings of what is not a body: springs, joints, planes, field regions (fluid
@@ -44,10 +44,14 @@ const p = new Float64Array(6);
 /** Writes the drawn (or current) position of `e` into p[o..o+2]. */
 function place(world: PhysicsWorld, at: DrawnPositions, e: number, o: number): void {
   if (at.shown(e)) {
-    p[o] = at.drawn[3 * e]!; p[o + 1] = at.drawn[3 * e + 1]!; p[o + 2] = at.drawn[3 * e + 2]!;
+    p[o] = at.drawn[3 * e]!;
+    p[o + 1] = at.drawn[3 * e + 1]!;
+    p[o + 2] = at.drawn[3 * e + 2]!;
   } else {
     const P = world.components.Position;
-    p[o] = P.x[e]!; p[o + 1] = P.y[e]!; p[o + 2] = P.z[e]!;
+    p[o] = P.x[e]!;
+    p[o + 1] = P.y[e]!;
+    p[o + 2] = P.z[e]!;
   }
 }
 
@@ -62,25 +66,52 @@ export function drawSprings(world: PhysicsWorld, at: DrawnPositions, out: Segmen
     const s = springs[i]!;
     const a = S.a[s]!;
     if (a > 0) place(world, at, a, 0);
-    else { p[0] = S.anchorX[s]!; p[1] = S.anchorY[s]!; p[2] = S.anchorZ[s]!; }
+    else {
+      p[0] = S.anchorX[s]!;
+      p[1] = S.anchorY[s]!;
+      p[2] = S.anchorZ[s]!;
+    }
     place(world, at, S.b[s]!, 3);
-    const ax = p[0]!, ay = p[1]!, az = p[2]!, dx = p[3]! - ax, dy = p[4]! - ay, dz = p[5]! - az;
+    const ax = p[0]!,
+      ay = p[1]!,
+      az = p[2]!,
+      dx = p[3]! - ax,
+      dy = p[4]! - ay,
+      dz = p[5]! - az;
     const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (len < 1e-6) continue;
-    const ux = dx / len, uy = dy / len, uz = dz / len;
+    const ux = dx / len,
+      uy = dy / len,
+      uz = dz / len;
     // A unit vector perpendicular to the spring: u x (an axis not along u).
     let wx: number, wy: number, wz: number;
-    if (Math.abs(uy) < 0.9) { wx = -uz; wy = 0; wz = ux; } else { wx = 0; wy = uz; wz = -uy; }
+    if (Math.abs(uy) < 0.9) {
+      wx = -uz;
+      wy = 0;
+      wz = ux;
+    } else {
+      wx = 0;
+      wy = uz;
+      wz = -uy;
+    }
     const wl = Math.min(0.1, 0.1 * len) / Math.sqrt(wx * wx + wy * wy + wz * wz);
-    wx *= wl; wy *= wl; wz *= wl;
-    let qx = ax, qy = ay, qz = az;
+    wx *= wl;
+    wy *= wl;
+    wz *= wl;
+    let qx = ax,
+      qy = ay,
+      qz = az;
     const n = 2 * SPRING_COILS;
     for (let k = 0; k <= n + 1; k++) {
       const t = k === n + 1 ? len : (k / n) * len;
       const side = k === 0 || k === n + 1 ? 0 : k % 2 === 0 ? 1 : -1;
-      const rx = ax + ux * t + wx * side, ry = ay + uy * t + wy * side, rz = az + uz * t + wz * side;
+      const rx = ax + ux * t + wx * side,
+        ry = ay + uy * t + wy * side,
+        rz = az + uz * t + wz * side;
       if (k > 0) out.segment(qx, qy, qz, rx, ry, rz, SceneryColor.Spring);
-      qx = rx; qy = ry; qz = rz;
+      qx = rx;
+      qy = ry;
+      qz = rz;
     }
   }
   return springs.length;
@@ -92,21 +123,35 @@ export function drawSprings(world: PhysicsWorld, at: DrawnPositions, out: Segmen
  */
 export function drawJoints(world: PhysicsWorld, at: DrawnPositions, out: SegmentSink): number {
   const c = world.components;
-  const J = c.Joint, angle = c.Angle.value;
+  const J = c.Joint,
+    angle = c.Angle.value;
   const joints = query(world, [J]);
   for (let i = 0; i < joints.length; i++) {
     const j = joints[i]!;
-    const a = J.a[j]!, b = J.b[j]!;
-    let ax = J.localAx[j]!, ay = J.localAy[j]!, az = 0;
+    const a = J.a[j]!,
+      b = J.b[j]!;
+    let ax = J.localAx[j]!,
+      ay = J.localAy[j]!,
+      az = 0;
     if (a > 0) {
       place(world, at, a, 0);
-      const th = angle[a] ?? 0, cs = Math.cos(th), sn = Math.sin(th), lx = ax, ly = ay;
-      ax = p[0]! + cs * lx - sn * ly; ay = p[1]! + sn * lx + cs * ly; az = p[2]!;
+      const th = angle[a] ?? 0,
+        cs = Math.cos(th),
+        sn = Math.sin(th),
+        lx = ax,
+        ly = ay;
+      ax = p[0]! + cs * lx - sn * ly;
+      ay = p[1]! + sn * lx + cs * ly;
+      az = p[2]!;
       out.segment(p[0]!, p[1]!, p[2]!, ax, ay, az, SceneryColor.Joint);
     }
     place(world, at, b, 3);
-    const th = angle[b] ?? 0, cs = Math.cos(th), sn = Math.sin(th);
-    const bx = p[3]! + cs * J.localBx[j]! - sn * J.localBy[j]!, by = p[4]! + sn * J.localBx[j]! + cs * J.localBy[j]!, bz = p[5]!;
+    const th = angle[b] ?? 0,
+      cs = Math.cos(th),
+      sn = Math.sin(th);
+    const bx = p[3]! + cs * J.localBx[j]! - sn * J.localBy[j]!,
+      by = p[4]! + sn * J.localBx[j]! + cs * J.localBy[j]!,
+      bz = p[5]!;
     out.segment(p[3]!, p[4]!, p[5]!, bx, by, bz, SceneryColor.Joint);
     out.segment(ax, ay, az, bx, by, bz, SceneryColor.Joint);
   }
@@ -120,20 +165,36 @@ const q = new Float64Array(4);
 /** Writes the drawn (or current) orientation of `e` into q (identity for the world, e = 0). */
 function orient(world: PhysicsWorld, at: DrawnPositions, e: number): void {
   if (e !== 0 && at.shown(e)) {
-    q[0] = at.orientation[4 * e]!; q[1] = at.orientation[4 * e + 1]!; q[2] = at.orientation[4 * e + 2]!; q[3] = at.orientation[4 * e + 3]!;
+    q[0] = at.orientation[4 * e]!;
+    q[1] = at.orientation[4 * e + 1]!;
+    q[2] = at.orientation[4 * e + 2]!;
+    q[3] = at.orientation[4 * e + 3]!;
   } else if (e !== 0) {
     const O = world.components.Orientation;
-    q[0] = O.x[e]!; q[1] = O.y[e]!; q[2] = O.z[e]!; q[3] = O.w[e]!;
+    q[0] = O.x[e]!;
+    q[1] = O.y[e]!;
+    q[2] = O.z[e]!;
+    q[3] = O.w[e]!;
   } else {
-    q[0] = 0; q[1] = 0; q[2] = 0; q[3] = 1;
+    q[0] = 0;
+    q[1] = 0;
+    q[2] = 0;
+    q[3] = 1;
   }
 }
 
 /** Rotates (vx, vy, vz) by q into r[o..o+2] (v + 2 w (u x v) + 2 u x (u x v)). */
 function turn(vx: number, vy: number, vz: number, r: Float64Array, o: number): void {
-  const x = q[0]!, y = q[1]!, z = q[2]!, w = q[3]!;
-  const tx = 2 * (y * vz - z * vy), ty = 2 * (z * vx - x * vz), tz = 2 * (x * vy - y * vx);
-  r[o] = vx + w * tx + (y * tz - z * ty); r[o + 1] = vy + w * ty + (z * tx - x * tz); r[o + 2] = vz + w * tz + (x * ty - y * tx);
+  const x = q[0]!,
+    y = q[1]!,
+    z = q[2]!,
+    w = q[3]!;
+  const tx = 2 * (y * vz - z * vy),
+    ty = 2 * (z * vx - x * vz),
+    tz = 2 * (x * vy - y * vx);
+  r[o] = vx + w * tx + (y * tz - z * ty);
+  r[o + 1] = vy + w * ty + (z * tx - x * tz);
+  r[o + 2] = vz + w * tz + (x * ty - y * tx);
 }
 
 const arm = new Float64Array(6);
@@ -149,20 +210,46 @@ export function drawJoints3D(world: PhysicsWorld, at: DrawnPositions, out: Segme
   if (s === undefined) return 0;
   const list = s.list;
   for (let i = 0; i < list.length; i++) {
-    const j = list[i]!, a = s.a[j]!, b = s.b[j]!;
-    if (a !== 0) { place(world, at, a, 0); orient(world, at, a); turn(s.ax[j]!, s.ay[j]!, s.az[j]!, arm, 0); }
-    else { p[0] = 0; p[1] = 0; p[2] = 0; arm[0] = s.ax[j]!; arm[1] = s.ay[j]!; arm[2] = s.az[j]!; }
-    const ax = p[0]! + arm[0]!, ay = p[1]! + arm[1]!, az = p[2]! + arm[2]!;
+    const j = list[i]!,
+      a = s.a[j]!,
+      b = s.b[j]!;
+    if (a !== 0) {
+      place(world, at, a, 0);
+      orient(world, at, a);
+      turn(s.ax[j]!, s.ay[j]!, s.az[j]!, arm, 0);
+    } else {
+      p[0] = 0;
+      p[1] = 0;
+      p[2] = 0;
+      arm[0] = s.ax[j]!;
+      arm[1] = s.ay[j]!;
+      arm[2] = s.az[j]!;
+    }
+    const ax = p[0]! + arm[0]!,
+      ay = p[1]! + arm[1]!,
+      az = p[2]! + arm[2]!;
     if (a !== 0) out.segment(p[0]!, p[1]!, p[2]!, ax, ay, az, SceneryColor.Joint);
-    place(world, at, b, 3); orient(world, at, b); turn(s.bx[j]!, s.by[j]!, s.bz[j]!, arm, 3);
-    const bx = p[3]! + arm[3]!, by = p[4]! + arm[4]!, bz = p[5]! + arm[5]!;
+    place(world, at, b, 3);
+    orient(world, at, b);
+    turn(s.bx[j]!, s.by[j]!, s.bz[j]!, arm, 3);
+    const bx = p[3]! + arm[3]!,
+      by = p[4]! + arm[4]!,
+      bz = p[5]! + arm[5]!;
     out.segment(p[3]!, p[4]!, p[5]!, bx, by, bz, SceneryColor.Joint);
     out.segment(ax, ay, az, bx, by, bz, SceneryColor.Joint);
     const type = s.type[j]!;
     if (type === Joint3DType.Hinge || type === Joint3DType.Slider || (type === Joint3DType.Ball && s.upper[j]! > 0)) {
       turn(s.ubx[j]!, s.uby[j]!, s.ubz[j]!, arm, 0);
       const h = 0.5 * AXIS_STUB;
-      out.segment(bx - h * arm[0]!, by - h * arm[1]!, bz - h * arm[2]!, bx + h * arm[0]!, by + h * arm[1]!, bz + h * arm[2]!, SceneryColor.Joint);
+      out.segment(
+        bx - h * arm[0]!,
+        by - h * arm[1]!,
+        bz - h * arm[2]!,
+        bx + h * arm[0]!,
+        by + h * arm[1]!,
+        bz + h * arm[2]!,
+        SceneryColor.Joint,
+      );
     }
   }
   return list.length;
@@ -177,7 +264,10 @@ export function drawPlanes(world: PhysicsWorld, out: SegmentSink): number {
   const planes = query(world, [P]);
   for (let i = 0; i < planes.length; i++) {
     const e = planes[i]!;
-    const nx = P.nx[e]!, ny = P.ny[e]!, nz = P.nz[e]!, d = P.d[e]!;
+    const nx = P.nx[e]!,
+      ny = P.ny[e]!,
+      nz = P.nz[e]!,
+      d = P.d[e]!;
     out.arrow(nx * d, ny * d, nz * d, nx, ny, nz, SceneryColor.Plane);
   }
   return planes.length;
@@ -196,32 +286,42 @@ export function drawFields(world: PhysicsWorld, extent: ArrayLike<number>, arrow
   const regions = query(world, [F]);
   for (let i = 0; i < regions.length; i++) {
     const e = regions[i]!;
-    const x1 = Math.max(extent[0]!, F.minX[e]!), x2 = Math.min(extent[3]!, F.maxX[e]!);
-    const z1 = Math.max(extent[2]!, F.minZ[e]!), z2 = Math.min(extent[5]!, F.maxZ[e]!);
-    const y = F.surface[e]!, col = SceneryColor.Fluid;
-    out.segment(x1, y, z1, x2, y, z1, col); out.segment(x2, y, z1, x2, y, z2, col);
-    out.segment(x2, y, z2, x1, y, z2, col); out.segment(x1, y, z2, x1, y, z1, col);
-    out.segment(x1, y, z1, x2, y, z2, col); out.segment(x1, y, z2, x2, y, z1, col);
+    const x1 = Math.max(extent[0]!, F.minX[e]!),
+      x2 = Math.min(extent[3]!, F.maxX[e]!);
+    const z1 = Math.max(extent[2]!, F.minZ[e]!),
+      z2 = Math.min(extent[5]!, F.maxZ[e]!);
+    const y = F.surface[e]!,
+      col = SceneryColor.Fluid;
+    out.segment(x1, y, z1, x2, y, z1, col);
+    out.segment(x2, y, z1, x2, y, z2, col);
+    out.segment(x2, y, z2, x1, y, z2, col);
+    out.segment(x1, y, z2, x1, y, z1, col);
+    out.segment(x1, y, z1, x2, y, z2, col);
+    out.segment(x1, y, z2, x2, y, z1, col);
   }
   const electric = query(world, [c.ElectricField]).length;
   const magnetic = query(world, [c.MagneticField]).length;
   if (electric + magnetic > 0) {
     fieldsAt(world, world.time, fields.e, fields.b);
-    const E = fields.e, B = fields.b;
-    const eLen = Math.hypot(E[0]!, E[1]!, E[2]!), bLen = Math.hypot(B[0]!, B[1]!, B[2]!);
-    for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) for (let k = 0; k < 3; k++) {
-      const x = extent[0]! + ((i + 0.5) / 3) * (extent[3]! - extent[0]!);
-      const y = extent[1]! + ((j + 0.5) / 3) * (extent[4]! - extent[1]!);
-      const z = extent[2]! + ((k + 0.5) / 3) * (extent[5]! - extent[2]!);
-      if (electric > 0 && eLen > 0) {
-        const s = arrowLength / eLen;
-        out.arrow(x, y, z, E[0]! * s, E[1]! * s, E[2]! * s, SceneryColor.Electric);
-      }
-      if (magnetic > 0 && bLen > 0) {
-        const s = arrowLength / bLen;
-        out.arrow(x + 0.25 * arrowLength, y, z, B[0]! * s, B[1]! * s, B[2]! * s, SceneryColor.Magnetic);
-      }
-    }
+    const E = fields.e,
+      B = fields.b;
+    const eLen = Math.hypot(E[0]!, E[1]!, E[2]!),
+      bLen = Math.hypot(B[0]!, B[1]!, B[2]!);
+    for (let i = 0; i < 3; i++)
+      for (let j = 0; j < 3; j++)
+        for (let k = 0; k < 3; k++) {
+          const x = extent[0]! + ((i + 0.5) / 3) * (extent[3]! - extent[0]!);
+          const y = extent[1]! + ((j + 0.5) / 3) * (extent[4]! - extent[1]!);
+          const z = extent[2]! + ((k + 0.5) / 3) * (extent[5]! - extent[2]!);
+          if (electric > 0 && eLen > 0) {
+            const s = arrowLength / eLen;
+            out.arrow(x, y, z, E[0]! * s, E[1]! * s, E[2]! * s, SceneryColor.Electric);
+          }
+          if (magnetic > 0 && bLen > 0) {
+            const s = arrowLength / bLen;
+            out.arrow(x + 0.25 * arrowLength, y, z, B[0]! * s, B[1]! * s, B[2]! * s, SceneryColor.Magnetic);
+          }
+        }
   }
   return regions.length + electric + magnetic;
 }
@@ -237,10 +337,17 @@ export function drawEmitters(world: PhysicsWorld, at: DrawnPositions, out: Segme
   for (let i = 0; i < emitters.length; i++) {
     const e = emitters[i]!;
     place(world, at, e, 0);
-    const x = p[0]!, y = p[1]!, z = p[2]!, r = Math.max(0.1, E.size[e] ?? 0);
+    const x = p[0]!,
+      y = p[1]!,
+      z = p[2]!,
+      r = Math.max(0.1, E.size[e] ?? 0);
     const col = SceneryColor.Emitter;
-    out.segment(x - r, y, z, x + r, y, z, col); out.segment(x, y - r, z, x, y + r, z, col); out.segment(x, y, z - r, x, y, z + r, col);
-    const dx = E.dirX[e]!, dy = E.dirY[e]!, dz = E.dirZ[e]!;
+    out.segment(x - r, y, z, x + r, y, z, col);
+    out.segment(x, y - r, z, x, y + r, z, col);
+    out.segment(x, y, z - r, x, y, z + r, col);
+    const dx = E.dirX[e]!,
+      dy = E.dirY[e]!,
+      dz = E.dirZ[e]!;
     const dl = Math.hypot(dx, dy, dz);
     if (dl > 0) out.arrow(x, y, z, (dx / dl) * 0.5, (dy / dl) * 0.5, (dz / dl) * 0.5, col);
   }

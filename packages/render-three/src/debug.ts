@@ -1,9 +1,18 @@
+import { type Contact3DView, forEachContact3D, type PhysicsWorld } from '@bitphysics/physics';
+import { type OptionRules, resolveOptions } from '@bitphysics/render-common';
 import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMaterial, LineSegments, Points, PointsMaterial } from 'three';
-import { forEachContact3D, type Contact3DView, type PhysicsWorld } from '@bitphysics/physics';
 import type { InstanceBook } from './book.js';
+import {
+  drawEmitters,
+  drawFields,
+  drawJoints,
+  drawJoints3D,
+  drawPlanes,
+  drawSprings,
+  SCENERY_PALETTE,
+  type SegmentSink,
+} from './debug-scenery.js';
 import { hexToLinear, rotateInto } from './math.js';
-import { SCENERY_PALETTE, drawEmitters, drawFields, drawJoints, drawJoints3D, drawPlanes, drawSprings, type SegmentSink } from './debug-scenery.js';
-import { resolveOptions, type OptionRules } from '@bitphysics/render-common';
 
 /** Options of the debug layer (`WorldRenderer3DOptions.debug`, `WorldRenderer3D.setDebug`). Unknown fields are rejected. */
 export interface DebugOptions {
@@ -72,9 +81,13 @@ const DEBUG_RULES: OptionRules<DebugOptions> = {
 export function resolveDebugOptions(where: string, options: DebugOptions = {}): ResolvedDebugOptions {
   return resolveOptions(where, 'debug.', options, DEBUG_RULES);
 }
-const AXIS_X = 0xff5a5f, AXIS_Y = 0x5fd068, AXIS_Z = 0x4d8dff;
-const ARROW = 0x7cf2a0, SPIN = 0xff5ce1;
-const CONTACT_ACTIVE = 0xff4d5e, CONTACT_SPECULATIVE = 0x9aa0a6;
+const AXIS_X = 0xff5a5f,
+  AXIS_Y = 0x5fd068,
+  AXIS_Z = 0x4d8dff;
+const ARROW = 0x7cf2a0,
+  SPIN = 0xff5ce1;
+const CONTACT_ACTIVE = 0xff4d5e,
+  CONTACT_SPECULATIVE = 0x9aa0a6;
 /** Line segments an arrow takes: the shaft and four head strokes. */
 const ARROW_SEGMENTS = 5;
 
@@ -134,7 +147,9 @@ export class DebugLayer {
     drawn: new Float64Array(0) as Float64Array<ArrayBufferLike>,
     orientation: new Float64Array(0) as Float64Array<ArrayBufferLike>,
     book: null as InstanceBook | null,
-    shown(eid: number): boolean { return this.book !== null && this.book.has(eid); },
+    shown(eid: number): boolean {
+      return this.book?.has(eid) === true;
+    },
   };
   /** Scene units per metre of the frame being drawn (for `sink`). */
   private scale = 1;
@@ -164,17 +179,32 @@ export class DebugLayer {
   private contactFrame: DebugFrame | null = null;
   private contactWorld: PhysicsWorld | null = null;
   private readonly onContact3D = (v: Readonly<Contact3DView>): void => {
-    const o = this.options, f = this.contactFrame!, world = this.contactWorld!;
+    const o = this.options,
+      f = this.contactFrame!,
+      world = this.contactWorld!;
     if (this.contactsDrawn >= o.maxContacts) return;
     // The point was measured where B was at the start of the step; move it with B to where B was drawn.
-    const b = v.bodyB, P = world.components.PreviousPosition;
-    const shown = f.book.has(b), pos = f.drawnPosition;
-    const cx = shown ? v.x - P.x[b]! + pos[3 * b]! : v.x, cy = shown ? v.y - P.y[b]! + pos[3 * b + 1]! : v.y, cz = shown ? v.z - P.z[b]! + pos[3 * b + 2]! : v.z;
-    const color = v.normalImpulse > 0 ? 5 : 6, L = o.normalLength, k = f.scale;
+    const b = v.bodyB,
+      P = world.components.PreviousPosition;
+    const shown = f.book.has(b),
+      pos = f.drawnPosition;
+    const cx = shown ? v.x - P.x[b]! + pos[3 * b]! : v.x,
+      cy = shown ? v.y - P.y[b]! + pos[3 * b + 1]! : v.y,
+      cz = shown ? v.z - P.z[b]! + pos[3 * b + 2]! : v.z;
+    const color = v.normalImpulse > 0 ? 5 : 6,
+      L = o.normalLength,
+      k = f.scale;
     this.segment(cx, cy, cz, cx + v.nx * L, cy + v.ny * L, cz + v.nz * L, color, k);
-    const p = this.contactPoints * 3, pp = this.pointPos, pc = this.pointCol, rgb = this.rgb;
-    pp[p] = cx * k; pp[p + 1] = cy * k; pp[p + 2] = cz * k;
-    pc[p] = rgb[3 * color]!; pc[p + 1] = rgb[3 * color + 1]!; pc[p + 2] = rgb[3 * color + 2]!;
+    const p = this.contactPoints * 3,
+      pp = this.pointPos,
+      pc = this.pointCol,
+      rgb = this.rgb;
+    pp[p] = cx * k;
+    pp[p + 1] = cy * k;
+    pp[p + 2] = cz * k;
+    pc[p] = rgb[3 * color]!;
+    pc[p + 1] = rgb[3 * color + 1]!;
+    pc[p + 2] = rgb[3 * color + 2]!;
     this.contactPoints++;
     this.contactsDrawn++;
   };
@@ -184,7 +214,10 @@ export class DebugLayer {
     this.options = options;
     const arrowsPerBody = (options.velocities ? 1 : 0) + (options.angularVelocities ? 1 : 0);
     const scenery = options.springs || options.joints || options.planes || options.fields || options.emitters ? options.maxScenery : 0;
-    const maxSegments = options.maxBodies * ((options.axes ? 3 : 0) + arrowsPerBody * ARROW_SEGMENTS) + (options.contacts ? options.maxContacts : 0) + scenery;
+    const maxSegments =
+      options.maxBodies * ((options.axes ? 3 : 0) + arrowsPerBody * ARROW_SEGMENTS) +
+      (options.contacts ? options.maxContacts : 0) +
+      scenery;
     this.linePos = new Float32Array(Math.max(1, maxSegments) * 6);
     this.lineCol = new Float32Array(Math.max(1, maxSegments) * 6);
     const maxPoints = options.contacts ? Math.max(1, options.maxContacts) : 1;
@@ -200,7 +233,13 @@ export class DebugLayer {
     this.pointGeometry.setAttribute('color', this.pointColAttr);
     this.lineGeometry.setDrawRange(0, 0);
     this.pointGeometry.setDrawRange(0, 0);
-    this.pointMaterial = new PointsMaterial({ size: options.pointSize, sizeAttenuation: false, vertexColors: true, depthTest: false, transparent: true });
+    this.pointMaterial = new PointsMaterial({
+      size: options.pointSize,
+      sizeAttenuation: false,
+      vertexColors: true,
+      depthTest: false,
+      transparent: true,
+    });
     const lines = new LineSegments(this.lineGeometry, this.lineMaterial);
     const points = new Points(this.pointGeometry, this.pointMaterial);
     lines.frustumCulled = false;
@@ -217,24 +256,37 @@ export class DebugLayer {
   draw(world: PhysicsWorld, frame: DebugFrame): void {
     const o = this.options;
     const c = world.components;
-    const book = frame.book, pos = frame.drawnPosition, ori = frame.drawnOrientation, size = frame.size, k = frame.scale;
+    const book = frame.book,
+      pos = frame.drawnPosition,
+      ori = frame.drawnOrientation,
+      size = frame.size,
+      k = frame.scale;
     this.segments = 0;
     this.axesDrawn = 0;
     this.arrowsDrawn = 0;
     this.contactsDrawn = 0;
     const v = this.v;
     let budget = o.maxBodies;
-    const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-    const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+    const vx = c.Velocity.x,
+      vy = c.Velocity.y,
+      vz = c.Velocity.z;
+    const wx = c.AngularVelocity.x,
+      wy = c.AngularVelocity.y,
+      wz = c.AngularVelocity.z;
     for (let g = 0; g < book.groups && budget > 0; g++) {
       const eids = book.eids(g);
       const n = Math.min(book.count(g), budget);
       budget -= n;
       for (let i = 0; i < n; i++) {
         const e = eids[i]!;
-        const x = pos[3 * e]!, y = pos[3 * e + 1]!, z = pos[3 * e + 2]!;
+        const x = pos[3 * e]!,
+          y = pos[3 * e + 1]!,
+          z = pos[3 * e + 2]!;
         if (o.axes) {
-          const qx = ori[4 * e]!, qy = ori[4 * e + 1]!, qz = ori[4 * e + 2]!, qw = ori[4 * e + 3]!;
+          const qx = ori[4 * e]!,
+            qy = ori[4 * e + 1]!,
+            qz = ori[4 * e + 2]!,
+            qw = ori[4 * e + 3]!;
           const len = 1.5 * size[e]!;
           for (let axis = 0; axis < 3; axis++) {
             rotateInto(qx, qy, qz, qw, axis === 0 ? len : 0, axis === 1 ? len : 0, axis === 2 ? len : 0, v, 0);
@@ -257,22 +309,37 @@ export class DebugLayer {
     if (o.contacts && o.maxContacts > 0) {
       const rows = world.collision.cache.rows;
       const n = Math.min(rows.count, o.maxContacts);
-      const b = rows.b, nx = rows.nx, ny = rows.ny, nz = rows.nz, rb = rows.rb, J = rows.totalNormalImpulse;
+      const b = rows.b,
+        nx = rows.nx,
+        ny = rows.ny,
+        nz = rows.nz,
+        rb = rows.rb,
+        J = rows.totalNormalImpulse;
       const P = c.Position;
       const L = o.normalLength;
-      const pp = this.pointPos, pc = this.pointCol, rgb = this.rgb;
+      const pp = this.pointPos,
+        pc = this.pointCol,
+        rgb = this.rgb;
       for (let i = 0; i < n; i++) {
         const e = b[i]!;
         // Where B was drawn (or, if it is not shown, its current position), minus rb along the normal:
         // the contact point (contacts.ts: rb is measured from B's centre along -n).
         const shown = book.has(e);
-        const bx = shown ? pos[3 * e]! : P.x[e]!, by = shown ? pos[3 * e + 1]! : P.y[e]!, bz = shown ? pos[3 * e + 2]! : P.z[e]!;
-        const cx = bx - nx[i]! * rb[i]!, cy = by - ny[i]! * rb[i]!, cz = bz - nz[i]! * rb[i]!;
+        const bx = shown ? pos[3 * e]! : P.x[e]!,
+          by = shown ? pos[3 * e + 1]! : P.y[e]!,
+          bz = shown ? pos[3 * e + 2]! : P.z[e]!;
+        const cx = bx - nx[i]! * rb[i]!,
+          cy = by - ny[i]! * rb[i]!,
+          cz = bz - nz[i]! * rb[i]!;
         const color = J[i]! > 0 ? 5 : 6;
         this.segment(cx, cy, cz, cx + nx[i]! * L, cy + ny[i]! * L, cz + nz[i]! * L, color, k);
         const p = points * 3;
-        pp[p] = cx * k; pp[p + 1] = cy * k; pp[p + 2] = cz * k;
-        pc[p] = rgb[3 * color]!; pc[p + 1] = rgb[3 * color + 1]!; pc[p + 2] = rgb[3 * color + 2]!;
+        pp[p] = cx * k;
+        pp[p + 1] = cy * k;
+        pp[p + 2] = cz * k;
+        pc[p] = rgb[3 * color]!;
+        pc[p + 1] = rgb[3 * color + 1]!;
+        pc[p + 2] = rgb[3 * color + 2]!;
         points++;
       }
       this.contactsDrawn = n;
@@ -288,19 +355,29 @@ export class DebugLayer {
     const verts = this.segments * 2;
     this.lineGeometry.setDrawRange(0, verts);
     if (verts > 0) {
-      this.linePosAttr.clearUpdateRanges(); this.linePosAttr.addUpdateRange(0, verts * 3); this.linePosAttr.needsUpdate = true;
-      this.lineColAttr.clearUpdateRanges(); this.lineColAttr.addUpdateRange(0, verts * 3); this.lineColAttr.needsUpdate = true;
+      this.linePosAttr.clearUpdateRanges();
+      this.linePosAttr.addUpdateRange(0, verts * 3);
+      this.linePosAttr.needsUpdate = true;
+      this.lineColAttr.clearUpdateRanges();
+      this.lineColAttr.addUpdateRange(0, verts * 3);
+      this.lineColAttr.needsUpdate = true;
     }
     this.pointGeometry.setDrawRange(0, points);
     if (points > 0) {
-      this.pointPosAttr.clearUpdateRanges(); this.pointPosAttr.addUpdateRange(0, points * 3); this.pointPosAttr.needsUpdate = true;
-      this.pointColAttr.clearUpdateRanges(); this.pointColAttr.addUpdateRange(0, points * 3); this.pointColAttr.needsUpdate = true;
+      this.pointPosAttr.clearUpdateRanges();
+      this.pointPosAttr.addUpdateRange(0, points * 3);
+      this.pointPosAttr.needsUpdate = true;
+      this.pointColAttr.clearUpdateRanges();
+      this.pointColAttr.addUpdateRange(0, points * 3);
+      this.pointColAttr.needsUpdate = true;
     }
   }
 
   /** Appends the springs, joints, plane normals, field regions and emitters (debug-scenery.ts). */
   private drawScenery(world: PhysicsWorld, frame: DebugFrame): void {
-    const o = this.options, d = this.drawn, at = this.at;
+    const o = this.options,
+      d = this.drawn,
+      at = this.at;
     at.drawn = frame.drawnPosition;
     at.orientation = frame.drawnOrientation;
     at.book = frame.book;
@@ -309,12 +386,16 @@ export class DebugLayer {
     d.joints = o.joints ? drawJoints(world, at, this.sink) + drawJoints3D(world, at, this.sink) : 0;
     d.planes = o.planes ? drawPlanes(world, this.sink) : 0;
     if (o.fields) {
-      const box = world.collision.boundary, ext = this.extent;
+      const box = world.collision.boundary,
+        ext = this.extent;
       for (let i = 0; i < 3; i++) {
-        ext[i] = box.enabled ? box.min[i] ?? 0 : DEFAULT_FIELD_EXTENT[i]!;
-        ext[i + 3] = box.enabled ? box.max[i] ?? 0 : DEFAULT_FIELD_EXTENT[i + 3]!;
+        ext[i] = box.enabled ? (box.min[i] ?? 0) : DEFAULT_FIELD_EXTENT[i]!;
+        ext[i + 3] = box.enabled ? (box.max[i] ?? 0) : DEFAULT_FIELD_EXTENT[i + 3]!;
       }
-      if (!(ext[2]! < ext[5]!)) { ext[2] = -0.5; ext[5] = 0.5; } // a 2D world's box has no depth
+      if (!(ext[2]! < ext[5]!)) {
+        ext[2] = -0.5;
+        ext[5] = 0.5;
+      } // a 2D world's box has no depth
       const smallest = Math.min(ext[3]! - ext[0]!, ext[4]! - ext[1]!, ext[5]! - ext[2]!);
       d.fields = drawFields(world, ext, 0.2 * smallest, this.sink);
     } else {
@@ -336,11 +417,25 @@ export class DebugLayer {
   private segment(ax: number, ay: number, az: number, bx: number, by: number, bz: number, color: number, k: number): void {
     const s = this.segments;
     if ((s + 1) * 6 > this.linePos.length) return;
-    const p = this.linePos, c = this.lineCol, rgb = this.rgb;
+    const p = this.linePos,
+      c = this.lineCol,
+      rgb = this.rgb;
     const o = s * 6;
-    p[o] = ax * k; p[o + 1] = ay * k; p[o + 2] = az * k; p[o + 3] = bx * k; p[o + 4] = by * k; p[o + 5] = bz * k;
-    const r = rgb[3 * color]!, g = rgb[3 * color + 1]!, b = rgb[3 * color + 2]!;
-    c[o] = r; c[o + 1] = g; c[o + 2] = b; c[o + 3] = r; c[o + 4] = g; c[o + 5] = b;
+    p[o] = ax * k;
+    p[o + 1] = ay * k;
+    p[o + 2] = az * k;
+    p[o + 3] = bx * k;
+    p[o + 4] = by * k;
+    p[o + 5] = bz * k;
+    const r = rgb[3 * color]!,
+      g = rgb[3 * color + 1]!,
+      b = rgb[3 * color + 2]!;
+    c[o] = r;
+    c[o + 1] = g;
+    c[o + 2] = b;
+    c[o + 3] = r;
+    c[o + 4] = g;
+    c[o + 5] = b;
     this.segments = s + 1;
   }
 
@@ -351,17 +446,36 @@ export class DebugLayer {
   private arrow(x: number, y: number, z: number, dx: number, dy: number, dz: number, color: number, k: number): boolean {
     const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (len < 1e-3) return false;
-    const tx = x + dx, ty = y + dy, tz = z + dz;
+    const tx = x + dx,
+      ty = y + dy,
+      tz = z + dz;
     this.segment(x, y, z, tx, ty, tz, color, k);
-    const ux = dx / len, uy = dy / len, uz = dz / len;
+    const ux = dx / len,
+      uy = dy / len,
+      uz = dz / len;
     // Two unit vectors perpendicular to the arrow: p = u x (an axis not along u), q = u x p.
     let px: number, py: number, pz: number;
-    if (Math.abs(uy) < 0.9) { px = -uz; py = 0; pz = ux; } else { px = 0; py = uz; pz = -uy; }
+    if (Math.abs(uy) < 0.9) {
+      px = -uz;
+      py = 0;
+      pz = ux;
+    } else {
+      px = 0;
+      py = uz;
+      pz = -uy;
+    }
     const pl = 1 / Math.sqrt(px * px + py * py + pz * pz);
-    px *= pl; py *= pl; pz *= pl;
-    const qx = uy * pz - uz * py, qy = uz * px - ux * pz, qz = ux * py - uy * px;
-    const h = Math.min(0.25 * len, 0.3), w = 0.45 * h;
-    const bx = tx - ux * h, by = ty - uy * h, bz = tz - uz * h;
+    px *= pl;
+    py *= pl;
+    pz *= pl;
+    const qx = uy * pz - uz * py,
+      qy = uz * px - ux * pz,
+      qz = ux * py - uy * px;
+    const h = Math.min(0.25 * len, 0.3),
+      w = 0.45 * h;
+    const bx = tx - ux * h,
+      by = ty - uy * h,
+      bz = tz - uz * h;
     this.segment(tx, ty, tz, bx + px * w, by + py * w, bz + pz * w, color, k);
     this.segment(tx, ty, tz, bx - px * w, by - py * w, bz - pz * w, color, k);
     this.segment(tx, ty, tz, bx + qx * w, by + qy * w, bz + qz * w, color, k);

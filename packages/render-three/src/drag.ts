@@ -1,7 +1,7 @@
-import { Plane, Raycaster, SphereGeometry, Vector2, Vector3, type Camera } from 'three';
-import { addBody, addDistanceJoint3D, isAlive, removeBody, setPosition, slotOf, type PhysicsWorld } from '@bitphysics/physics';
+import { addBody, addDistanceJoint3D, isAlive, type PhysicsWorld, removeBody, setPosition, slotOf } from '@bitphysics/physics';
 import { assertFinite, assertKnownKeys, assertNonNegative, assertPositive } from '@bitphysics/physics/validate';
-import { parseColor, type ColorInput } from '@bitphysics/render-common';
+import { type ColorInput, parseColor } from '@bitphysics/render-common';
+import { type Camera, Plane, Raycaster, SphereGeometry, Vector2, Vector3 } from 'three';
 import type { WorldRenderer3D } from './renderer.js';
 
 /** Options of `new BodyDrag3D`. Every field optional; unknown fields are rejected. */
@@ -90,11 +90,20 @@ export class BodyDrag3D {
     const p = hit.point;
     const hand = addBody(world, { position: p, kinematic: true, orientation: [0, 0, 0, 1] });
     const joint = addDistanceJoint3D(world, {
-      a: hand, b: hit.eid, anchorA: p, anchorB: p, length: 1e-3, minLength: 0, hertz: this.hertz, dampingRatio: this.dampingRatio,
+      a: hand,
+      b: hit.eid,
+      anchorA: p,
+      anchorB: p,
+      length: 1e-3,
+      minLength: 0,
+      hertz: this.hertz,
+      dampingRatio: this.dampingRatio,
     });
     this.renderer.setShape(hand, { geometry: this.marker, scale: this.markerRadius, color: this.markerColor });
     this.state = { world, body: hit.eid, hand, joint };
-    this.target[0] = p[0]; this.target[1] = p[1]; this.target[2] = p[2];
+    this.target[0] = p[0];
+    this.target[1] = p[1];
+    this.target[2] = p[2];
     // The drag plane: through the grab point, facing the camera.
     camera.getWorldDirection(this.n);
     this.plane.setFromNormalAndCoplanarPoint(this.n, this.v.set(p[0], p[1], p[2]).multiplyScalar(this.renderer.unitsPerMeter));
@@ -121,7 +130,9 @@ export class BodyDrag3D {
   moveTo(point: ArrayLike<number>): void {
     for (let i = 0; i < 3; i++) assertFinite('BodyDrag3D.moveTo', `point[${i}]`, point[i]);
     if (!this.check()) return;
-    this.target[0] = point[0]!; this.target[1] = point[1]!; this.target[2] = point[2]!;
+    this.target[0] = point[0]!;
+    this.target[1] = point[1]!;
+    this.target[2] = point[2]!;
     setPosition(this.state.world!, this.state.hand, this.target);
   }
 

@@ -1,9 +1,24 @@
-import {
-  BackSide, BoxGeometry, BufferAttribute, BufferGeometry, Color, DoubleSide, EdgesGeometry, FrontSide, Group, LineBasicMaterial,
-  LineSegments, Mesh, MeshStandardMaterial, PlaneGeometry, Quaternion, Vector3, type Material,
-} from 'three';
-import { query } from 'bitecs';
 import type { PhysicsWorld } from '@bitphysics/physics';
+import { query } from 'bitecs';
+import {
+  BackSide,
+  BoxGeometry,
+  BufferAttribute,
+  BufferGeometry,
+  Color,
+  DoubleSide,
+  EdgesGeometry,
+  FrontSide,
+  Group,
+  LineBasicMaterial,
+  LineSegments,
+  type Material,
+  Mesh,
+  MeshStandardMaterial,
+  PlaneGeometry,
+  Quaternion,
+  Vector3,
+} from 'three';
 
 /**
  * How the boundary box (`setBoundary`) is drawn: `'glass'` (translucent walls, an opaque floor that
@@ -82,10 +97,23 @@ export class EnvironmentLayer {
     const box = world.collision.boundary;
     const seen = this.seen;
     const on = box.enabled ? 1 : 0;
-    if (scaleChanged || seen[0] !== on || seen[1] !== box.min[0] || seen[2] !== box.min[1] || seen[3] !== box.min[2] ||
-      seen[4] !== box.max[0] || seen[5] !== box.max[1] || seen[6] !== box.max[2]) {
-      seen[0] = on; seen[1] = box.min[0]!; seen[2] = box.min[1]!; seen[3] = box.min[2]!;
-      seen[4] = box.max[0]!; seen[5] = box.max[1]!; seen[6] = box.max[2]!;
+    if (
+      scaleChanged ||
+      seen[0] !== on ||
+      seen[1] !== box.min[0] ||
+      seen[2] !== box.min[1] ||
+      seen[3] !== box.min[2] ||
+      seen[4] !== box.max[0] ||
+      seen[5] !== box.max[1] ||
+      seen[6] !== box.max[2]
+    ) {
+      seen[0] = on;
+      seen[1] = box.min[0]!;
+      seen[2] = box.min[1]!;
+      seen[3] = box.min[2]!;
+      seen[4] = box.max[0]!;
+      seen[5] = box.max[1]!;
+      seen[6] = box.max[2]!;
       this.buildBoundary(world, scale);
       this.planeSignature = -1; // plane size may follow the box
     }
@@ -136,9 +164,14 @@ export class EnvironmentLayer {
     const box = world.collision.boundary;
     const st = this.style;
     if (!box.enabled || st.boundary === 'none' || world.dimensions !== 3) return;
-    const min = box.min, max = box.max;
-    const sx = (max[0]! - min[0]!) * k, sy = (max[1]! - min[1]!) * k, sz = (max[2]! - min[2]!) * k;
-    const cx = 0.5 * (min[0]! + max[0]!) * k, cy = 0.5 * (min[1]! + max[1]!) * k, cz = 0.5 * (min[2]! + max[2]!) * k;
+    const min = box.min,
+      max = box.max;
+    const sx = (max[0]! - min[0]!) * k,
+      sy = (max[1]! - min[1]!) * k,
+      sz = (max[2]! - min[2]!) * k;
+    const cx = 0.5 * (min[0]! + max[0]!) * k,
+      cy = 0.5 * (min[1]! + max[1]!) * k,
+      cz = 0.5 * (min[2]! + max[2]!) * k;
     const group = new Group();
     group.name = 'boundary';
     const geometry = new BoxGeometry(sx, sy, sz);
@@ -199,7 +232,8 @@ export class EnvironmentLayer {
     const material = new MeshStandardMaterial({ color: st.floorColor, roughness: 0.95, metalness: 0, side: DoubleSide });
     this.planeOwned.push(geometry, material);
     const P = world.components.Plane;
-    const from = new Vector3(0, 0, 1), to = new Vector3();
+    const from = new Vector3(0, 0, 1),
+      to = new Vector3();
     const q = new Quaternion();
     for (let i = 0; i < planes.length; i++) {
       const e = planes[i]!;
@@ -246,8 +280,13 @@ export class EnvironmentLayer {
 
 function glass(st: EnvironmentStyle, side: typeof FrontSide | typeof BackSide): Material {
   return new MeshStandardMaterial({
-    color: st.glassColor, transparent: true, opacity: side === BackSide ? st.glassOpacity * 0.6 : st.glassOpacity,
-    roughness: 0.08, metalness: 0, depthWrite: false, side,
+    color: st.glassColor,
+    transparent: true,
+    opacity: side === BackSide ? st.glassOpacity * 0.6 : st.glassOpacity,
+    roughness: 0.08,
+    metalness: 0,
+    depthWrite: false,
+    side,
   });
 }
 

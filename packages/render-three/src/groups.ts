@@ -1,4 +1,4 @@
-import { DynamicDrawUsage, InstancedBufferAttribute, InstancedMesh, type BufferGeometry, type Material, type Object3D } from 'three';
+import { type BufferGeometry, DynamicDrawUsage, InstancedBufferAttribute, InstancedMesh, type Material, type Object3D } from 'three';
 
 /**
  * What an instance group draws: `'ball'` (the shared unit sphere, scaled by each ball's radius),
@@ -39,7 +39,15 @@ export class InstanceGroup {
    * @param initial instances to make room for at first, integer >= 1.
    * @param shadows whether the mesh casts and receives shadows.
    */
-  constructor(parent: Object3D, geometry: BufferGeometry, material: Material, kind: GroupKind, name: string, initial: number, shadows: boolean) {
+  constructor(
+    parent: Object3D,
+    geometry: BufferGeometry,
+    material: Material,
+    kind: GroupKind,
+    name: string,
+    initial: number,
+    shadows: boolean,
+  ) {
     this.parent = parent;
     this.geometry = geometry;
     this.material = material;

@@ -11,31 +11,41 @@
  * physical vectors), `createLights`; and the three.js-free parts: `InstanceBook` (entity to
  * instance bookkeeping), the interpolation maths, colours.
  */
-export { WorldRenderer3D } from './renderer.js';
-export type { WorldRenderer3DOptions, BodyShape, Renderer3DStats, PickResult } from './renderer.js';
-export { InstanceBook, MAX_GROUPS } from './book.js';
-export type { InstanceBookListener } from './book.js';
-export { InstanceGroup } from './groups.js';
-export type { GroupKind } from './groups.js';
-export { TrailLayer, resolveTrailOptions, MAX_TRAIL_POINTS } from './trails.js';
-export type { TrailOptions, ResolvedTrailOptions } from './trails.js';
-export { DebugLayer, resolveDebugOptions } from './debug.js';
-export type { DebugOptions, ResolvedDebugOptions, DebugFrame, DebugCounts } from './debug.js';
-export { ShapeLayer3D, hullGeometry, CYLINDER_SEGMENTS, CAPSULE_RATIO_STEP } from './shapes.js';
-export type { ShapeCounts, ShapeFrame } from './shapes.js';
-export { BodyDrag3D } from './drag.js';
-export type { BodyDrag3DOptions } from './drag.js';
-export { SceneryColor, SCENERY_PALETTE, drawSprings, drawJoints, drawJoints3D, drawPlanes, drawFields, drawEmitters } from './debug-scenery.js';
-export type { SegmentSink, DrawnPositions } from './debug-scenery.js';
-export { EnvironmentLayer } from './environment.js';
-export type { BoundaryStyle, EnvironmentStyle } from './environment.js';
-export { LightRig, createLights, resolveLightOptions } from './lights.js';
-export type { LightOptions, ResolvedLightOptions } from './lights.js';
-export { VectorArrow } from './arrow.js';
-export type { VectorArrowOptions } from './arrow.js';
-export { createOrbitControls, frameBox } from './camera.js';
-export type { OrbitOptions, FrameOptions } from './camera.js';
-export { slerpInto, rotateBack, composeInto, rotateInto, equivalentBoxEdges, hexToLinear } from './math.js';
-export type { NumberArray } from './math.js';
-export { parseColor, seededColor, hslToRgb, hash3 } from '@bitphysics/render-common';
+
 export type { ColorInput } from '@bitphysics/render-common';
+export { hash3, hslToRgb, parseColor, seededColor } from '@bitphysics/render-common';
+export type { VectorArrowOptions } from './arrow.js';
+export { VectorArrow } from './arrow.js';
+export type { InstanceBookListener } from './book.js';
+export { InstanceBook, MAX_GROUPS } from './book.js';
+export type { FrameOptions, OrbitOptions } from './camera.js';
+export { createOrbitControls, frameBox } from './camera.js';
+export type { DebugCounts, DebugFrame, DebugOptions, ResolvedDebugOptions } from './debug.js';
+export { DebugLayer, resolveDebugOptions } from './debug.js';
+export type { DrawnPositions, SegmentSink } from './debug-scenery.js';
+export {
+  drawEmitters,
+  drawFields,
+  drawJoints,
+  drawJoints3D,
+  drawPlanes,
+  drawSprings,
+  SCENERY_PALETTE,
+  SceneryColor,
+} from './debug-scenery.js';
+export type { BodyDrag3DOptions } from './drag.js';
+export { BodyDrag3D } from './drag.js';
+export type { BoundaryStyle, EnvironmentStyle } from './environment.js';
+export { EnvironmentLayer } from './environment.js';
+export type { GroupKind } from './groups.js';
+export { InstanceGroup } from './groups.js';
+export type { LightOptions, ResolvedLightOptions } from './lights.js';
+export { createLights, LightRig, resolveLightOptions } from './lights.js';
+export type { NumberArray } from './math.js';
+export { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, rotateInto, slerpInto } from './math.js';
+export type { BodyShape, PickResult, Renderer3DStats, WorldRenderer3DOptions } from './renderer.js';
+export { WorldRenderer3D } from './renderer.js';
+export type { ShapeCounts, ShapeFrame } from './shapes.js';
+export { CAPSULE_RATIO_STEP, CYLINDER_SEGMENTS, hullGeometry, ShapeLayer3D } from './shapes.js';
+export type { ResolvedTrailOptions, TrailOptions } from './trails.js';
+export { MAX_TRAIL_POINTS, resolveTrailOptions, TrailLayer } from './trails.js';

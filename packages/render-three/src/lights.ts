@@ -1,6 +1,6 @@
-import { AmbientLight, DirectionalLight, Group, HemisphereLight, Vector3 } from 'three';
-import { parseColor, type ColorInput } from '@bitphysics/render-common';
 import { assertBoolean, assertInteger, assertKnownKeys, assertNonNegative, describe } from '@bitphysics/physics/validate';
+import { type ColorInput, parseColor } from '@bitphysics/render-common';
+import { AmbientLight, DirectionalLight, Group, HemisphereLight, Vector3 } from 'three';
 import { assertVector } from './validate.js';
 
 /** Options of `createLights` (and `WorldRenderer3DOptions.lights`). Every field optional; unknown fields are rejected. */
@@ -27,11 +27,22 @@ export interface LightOptions {
 
 /** Resolved light options. */
 export type ResolvedLightOptions = Required<Omit<LightOptions, 'direction' | 'color' | 'skyColor' | 'groundColor'>> & {
-  direction: [number, number, number]; color: number; skyColor: number; groundColor: number;
+  direction: [number, number, number];
+  color: number;
+  skyColor: number;
+  groundColor: number;
 };
 
 const LIGHT_OPTIONS = [
-  'direction', 'color', 'intensity', 'skyColor', 'groundColor', 'hemisphereIntensity', 'ambientIntensity', 'shadows', 'shadowMapSize',
+  'direction',
+  'color',
+  'intensity',
+  'skyColor',
+  'groundColor',
+  'hemisphereIntensity',
+  'ambientIntensity',
+  'shadows',
+  'shadowMapSize',
 ] as const;
 
 /** Checks light options and fills in defaults. @throws TypeError | RangeError naming the bad option and value. */
@@ -51,7 +62,8 @@ export function resolveLightOptions(where: string, options: LightOptions = {}): 
   assertBoolean(where, 'lights.shadows', shadows);
   const shadowMapSize = options.shadowMapSize ?? 2048;
   assertInteger(where, 'lights.shadowMapSize', shadowMapSize, 256, 8192);
-  if ((shadowMapSize & (shadowMapSize - 1)) !== 0) throw new RangeError(`${where}: lights.shadowMapSize must be a power of two, got ${shadowMapSize}`);
+  if ((shadowMapSize & (shadowMapSize - 1)) !== 0)
+    throw new RangeError(`${where}: lights.shadowMapSize must be a power of two, got ${shadowMapSize}`);
   return {
     direction: [d[0]! / len, d[1]! / len, d[2]! / len],
     color: parseColor(where, 'lights.color', options.color ?? 0xffffff),
@@ -106,14 +118,20 @@ export class LightRig {
    * orthographic shadow camera to enclose the box, so the shadow map's resolution is spent on it.
    */
   fit(minX: number, minY: number, minZ: number, maxX: number, maxY: number, maxZ: number): void {
-    const cx = 0.5 * (minX + maxX), cy = 0.5 * (minY + maxY), cz = 0.5 * (minZ + maxZ);
+    const cx = 0.5 * (minX + maxX),
+      cy = 0.5 * (minY + maxY),
+      cz = 0.5 * (minZ + maxZ);
     const r = 0.5 * Math.hypot(maxX - minX, maxY - minY, maxZ - minZ) || 1;
     const sun = this.sun;
     sun.target.position.set(cx, cy, cz);
     sun.position.set(cx + this.dir.x * 2 * r, cy + this.dir.y * 2 * r, cz + this.dir.z * 2 * r);
     const cam = sun.shadow.camera;
-    cam.left = -r; cam.right = r; cam.top = r; cam.bottom = -r;
-    cam.near = 0.01 * r; cam.far = 4 * r;
+    cam.left = -r;
+    cam.right = r;
+    cam.top = r;
+    cam.bottom = -r;
+    cam.near = 0.01 * r;
+    cam.far = 4 * r;
     cam.updateProjectionMatrix();
     sun.target.updateMatrixWorld();
     sun.updateMatrixWorld();

@@ -1,21 +1,40 @@
+import { entityExists, handleOf, isAlive, type PhysicsWorld, rayCast3D, shapes3DOf, slotOf } from '@bitphysics/physics';
 import {
-  BoxGeometry, BufferGeometry, Group, Matrix3, Matrix4, MeshStandardMaterial, Raycaster, SphereGeometry, Vector2, Vector3,
-  type Camera, type Intersection, type Material, type Object3D,
-} from 'three';
-import { hasComponent, query } from 'bitecs';
-import { entityExists, handleOf, isAlive, rayCast3D, shapes3DOf, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import { InstanceBook, type InstanceBookListener } from './book.js';
-import { entitySlot, parseColor, parsePalette, seededColor, type ColorInput } from '@bitphysics/render-common';
-import { DebugLayer, resolveDebugOptions, type DebugCounts, type DebugFrame, type DebugOptions } from './debug.js';
-import { EnvironmentLayer, type BoundaryStyle } from './environment.js';
-import { InstanceGroup, type GroupKind } from './groups.js';
-import { LightRig, resolveLightOptions, type LightOptions } from './lights.js';
-import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math.js';
-import { TrailLayer, resolveTrailOptions, type TrailOptions } from './trails.js';
-import { ShapeLayer3D, type ShapeCounts, type ShapeFrame } from './shapes.js';
-import {
-  assertBoolean, assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, describe,
+  assertBoolean,
+  assertFinite,
+  assertInRange,
+  assertInteger,
+  assertKnownKeys,
+  assertNonNegative,
+  assertPositive,
+  describe,
 } from '@bitphysics/physics/validate';
+import { type ColorInput, entitySlot, parseColor, parsePalette, seededColor } from '@bitphysics/render-common';
+import { hasComponent, query } from 'bitecs';
+import {
+  BoxGeometry,
+  BufferGeometry,
+  type Camera,
+  Group,
+  type Intersection,
+  type Material,
+  Matrix3,
+  Matrix4,
+  MeshStandardMaterial,
+  type Object3D,
+  Raycaster,
+  SphereGeometry,
+  Vector2,
+  Vector3,
+} from 'three';
+import { InstanceBook, type InstanceBookListener } from './book.js';
+import { type DebugCounts, type DebugFrame, DebugLayer, type DebugOptions, resolveDebugOptions } from './debug.js';
+import { type BoundaryStyle, EnvironmentLayer } from './environment.js';
+import { type GroupKind, InstanceGroup } from './groups.js';
+import { type LightOptions, LightRig, resolveLightOptions } from './lights.js';
+import { composeInto, equivalentBoxEdges, hexToLinear, rotateBack, slerpInto } from './math.js';
+import { type ShapeCounts, type ShapeFrame, ShapeLayer3D } from './shapes.js';
+import { resolveTrailOptions, TrailLayer, type TrailOptions } from './trails.js';
 import { assertVector } from './validate.js';
 
 /** Options of `new WorldRenderer3D`. Every field is optional; unknown fields are rejected. */
@@ -78,9 +97,28 @@ export interface WorldRenderer3DOptions {
 }
 
 const RENDERER_OPTIONS = [
-  'scene', 'unitsPerMeter', 'sphereSegments', 'ballMaterial', 'boxMaterial', 'bodies', 'boxSize', 'colorSeed', 'palette',
-  'shadows', 'lights', 'shadowBounds', 'boundary', 'boundaryColor', 'glassColor', 'glassOpacity', 'floorColor', 'segmentColor',
-  'planeSize', 'trails', 'debug', 'initialInstances',
+  'scene',
+  'unitsPerMeter',
+  'sphereSegments',
+  'ballMaterial',
+  'boxMaterial',
+  'bodies',
+  'boxSize',
+  'colorSeed',
+  'palette',
+  'shadows',
+  'lights',
+  'shadowBounds',
+  'boundary',
+  'boundaryColor',
+  'glassColor',
+  'glassOpacity',
+  'floorColor',
+  'segmentColor',
+  'planeSize',
+  'trails',
+  'debug',
+  'initialInstances',
 ] as const;
 
 /**
@@ -156,7 +194,13 @@ const SCALE_FIXED = 0;
 
 function checkWorld(where: string, world: unknown): asserts world is PhysicsWorld {
   const w = world as Partial<PhysicsWorld> | null;
-  if (w === null || typeof w !== 'object' || typeof w.capacity !== 'number' || typeof w.components !== 'object' || !(w.spawnStamp instanceof Uint32Array)) {
+  if (
+    w === null ||
+    typeof w !== 'object' ||
+    typeof w.capacity !== 'number' ||
+    typeof w.components !== 'object' ||
+    !(w.spawnStamp instanceof Uint32Array)
+  ) {
     throw new TypeError(`${where}: world must be a physics world from createPhysicsWorld, got ${describe(world)}`);
   }
   if (w.dimensions !== 3) throw new RangeError(`${where}: world must be 3D (dimensions 3), got dimensions ${describe(w.dimensions)}`);
@@ -207,8 +251,18 @@ export class WorldRenderer3D {
   readonly root = new Group();
   /** Statistics of the last frame (updated in place). */
   readonly stats: Renderer3DStats = {
-    instances: 0, balls: 0, boxes: 0, custom: 0, shaped: 0, shapes: { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0, triangleMeshes: 0 }, meshes: 0, trails: 0, contacts: 0, arrows: 0,
-    scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 }, frames: 0,
+    instances: 0,
+    balls: 0,
+    boxes: 0,
+    custom: 0,
+    shaped: 0,
+    shapes: { spheres: 0, boxes: 0, capsules: 0, cylinders: 0, hulls: 0, meshes: 0, triangleMeshes: 0 },
+    meshes: 0,
+    trails: 0,
+    contacts: 0,
+    arrows: 0,
+    scenery: { springs: 0, joints: 0, planes: 0, fields: 0, emitters: 0 },
+    frames: 0,
   };
   /** The light rig, or null when `lights` is false. */
   readonly lights: LightRig | null;
@@ -293,8 +347,10 @@ export class WorldRenderer3D {
     assertPositive(where, 'unitsPerMeter', unitsPerMeter);
     const segments = options.sphereSegments ?? 24;
     assertInteger(where, 'sphereSegments', segments, 4, 128);
-    if (options.ballMaterial !== undefined && !isMaterial(options.ballMaterial)) throw new TypeError(`${where}: ballMaterial must be a three.js Material, got ${describe(options.ballMaterial)}`);
-    if (options.boxMaterial !== undefined && !isMaterial(options.boxMaterial)) throw new TypeError(`${where}: boxMaterial must be a three.js Material, got ${describe(options.boxMaterial)}`);
+    if (options.ballMaterial !== undefined && !isMaterial(options.ballMaterial))
+      throw new TypeError(`${where}: ballMaterial must be a three.js Material, got ${describe(options.ballMaterial)}`);
+    if (options.boxMaterial !== undefined && !isMaterial(options.boxMaterial))
+      throw new TypeError(`${where}: boxMaterial must be a three.js Material, got ${describe(options.boxMaterial)}`);
     const bodies = options.bodies ?? true;
     assertBoolean(where, 'bodies', bodies);
     const boxSize = options.boxSize ?? 0.2;
@@ -304,8 +360,12 @@ export class WorldRenderer3D {
     const palette = parsePalette(where, 'palette', options.palette);
     const shadows = options.shadows ?? true;
     assertBoolean(where, 'shadows', shadows);
-    const lightOptions = options.lights === undefined || options.lights === true ? resolveLightOptions(where, {})
-      : options.lights === false ? null : resolveLightOptions(where, options.lights);
+    const lightOptions =
+      options.lights === undefined || options.lights === true
+        ? resolveLightOptions(where, {})
+        : options.lights === false
+          ? null
+          : resolveLightOptions(where, options.lights);
     if (options.shadowBounds !== undefined) {
       const b = options.shadowBounds;
       if (b === null || typeof b !== 'object') throw new TypeError(`${where}: shadowBounds must be { min, max }, got ${describe(b)}`);
@@ -313,11 +373,14 @@ export class WorldRenderer3D {
       assertVector(where, 'shadowBounds.min', b.min, 3);
       assertVector(where, 'shadowBounds.max', b.max, 3);
       for (let i = 0; i < 3; i++) {
-        if (!(b.max[i]! > b.min[i]!)) throw new RangeError(`${where}: shadowBounds.max[${i}] must be > shadowBounds.min[${i}], got ${describe(b)}`);
-        this.shadowMin[i] = b.min[i]!; this.shadowMax[i] = b.max[i]!;
+        if (!(b.max[i]! > b.min[i]!))
+          throw new RangeError(`${where}: shadowBounds.max[${i}] must be > shadowBounds.min[${i}], got ${describe(b)}`);
+        this.shadowMin[i] = b.min[i]!;
+        this.shadowMax[i] = b.max[i]!;
       }
     } else {
-      this.shadowMin.fill(-10); this.shadowMax.fill(10);
+      this.shadowMin.fill(-10);
+      this.shadowMax.fill(10);
     }
     const boundary = options.boundary ?? 'glass';
     if (boundary !== 'glass' && boundary !== 'edges' && boundary !== 'none') {
@@ -339,10 +402,14 @@ export class WorldRenderer3D {
       planeSize,
       shadows,
     };
-    const trailOptions = options.trails === undefined || options.trails === false ? null
-      : resolveTrailOptions(where, options.trails === true ? {} : options.trails);
-    const debugOptions = options.debug === undefined || options.debug === false ? null
-      : resolveDebugOptions(where, options.debug === true ? {} : options.debug);
+    const trailOptions =
+      options.trails === undefined || options.trails === false
+        ? null
+        : resolveTrailOptions(where, options.trails === true ? {} : options.trails);
+    const debugOptions =
+      options.debug === undefined || options.debug === false
+        ? null
+        : resolveDebugOptions(where, options.debug === true ? {} : options.debug);
 
     this.unitsPerMeter = unitsPerMeter;
     this.drawBodies = bodies;
@@ -365,11 +432,19 @@ export class WorldRenderer3D {
 
     this.worldRef = world;
     this.book = new InstanceBook(world.capacity);
-    this.debugFrame = { book: this.book, drawnPosition: this.drawnPos, drawnOrientation: this.drawnQuat, size: this.size, scale: unitsPerMeter };
+    this.debugFrame = {
+      book: this.book,
+      drawnPosition: this.drawnPos,
+      drawnOrientation: this.drawnQuat,
+      size: this.size,
+      scale: unitsPerMeter,
+    };
     this.listener = {
       added: (g, i, e) => this.onAdded(g, i, e),
       moved: (g, _from, to, e) => this.writeTint(g, to, e),
-      removed: (_g, e) => { if (!this.regrouping) this.trails?.removed(e); },
+      removed: (_g, e) => {
+        if (!this.regrouping) this.trails?.removed(e);
+      },
     };
     this.book.listener = this.listener;
     this.ballGroup = this.groupFor(sphere, this.ballMaterial, 'ball', initial);
@@ -378,8 +453,12 @@ export class WorldRenderer3D {
     this.shapes = new ShapeLayer3D(world.capacity, this.boxMaterial, sphere, shadows, envStyle.floorColor);
     this.root.add(this.shapes.object);
     this.shapeFrame = {
-      bodies: this.book.eids(this.shapedGroup), count: 0, drawnPosition: this.drawnPos, drawnOrientation: this.drawnQuat,
-      scale: unitsPerMeter, colorOf: (b) => this.entityColor[b]!,
+      bodies: this.book.eids(this.shapedGroup),
+      count: 0,
+      drawnPosition: this.drawnPos,
+      drawnOrientation: this.drawnQuat,
+      scale: unitsPerMeter,
+      colorOf: (b) => this.entityColor[b]!,
     };
     this.allocate(world.capacity);
     this.bindWorld(world);
@@ -435,14 +514,29 @@ export class WorldRenderer3D {
     const delta = this.lastSteps < 0 ? 0 : steps - this.lastSteps;
     this.lastSteps = steps;
     const c = world.components;
-    const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-    const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-    const Ox = c.Orientation.x, Oy = c.Orientation.y, Oz = c.Orientation.z, Ow = c.Orientation.w;
-    const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+    const px = c.Position.x,
+      py = c.Position.y,
+      pz = c.Position.z;
+    const ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y,
+      oz = c.PreviousPosition.z;
+    const Ox = c.Orientation.x,
+      Oy = c.Orientation.y,
+      Oz = c.Orientation.z,
+      Ow = c.Orientation.w;
+    const wx = c.AngularVelocity.x,
+      wy = c.AngularVelocity.y,
+      wz = c.AngularVelocity.z;
     const radius = c.Ball.radius;
     const h = world.dt;
-    const oriented = this.oriented, qp = this.qPrev, qc = this.qCur, dp = this.drawnPos, dq = this.drawnQuat;
-    const mode = this.scaleMode, fixed = this.fixedScale, size = this.size;
+    const oriented = this.oriented,
+      qp = this.qPrev,
+      qc = this.qCur,
+      dp = this.drawnPos,
+      dq = this.drawnQuat;
+    const mode = this.scaleMode,
+      fixed = this.fixedScale,
+      size = this.size;
     const book = this.book;
     let meshes = 0;
     for (let g = 0; g < this.groups.length; g++) {
@@ -453,40 +547,70 @@ export class WorldRenderer3D {
       const m = group.matrices;
       for (let i = 0; i < n; i++) {
         const e = eids[i]!;
-        const q4 = 4 * e, p3 = 3 * e;
+        const q4 = 4 * e,
+          p3 = 3 * e;
         if (oriented[e] === 1) {
-          const x = Ox[e]!, y = Oy[e]!, z = Oz[e]!, w = Ow[e]!;
+          const x = Ox[e]!,
+            y = Oy[e]!,
+            z = Oz[e]!,
+            w = Ow[e]!;
           if (delta === 1) {
-            qp[q4] = qc[q4]!; qp[q4 + 1] = qc[q4 + 1]!; qp[q4 + 2] = qc[q4 + 2]!; qp[q4 + 3] = qc[q4 + 3]!;
-            qc[q4] = x; qc[q4 + 1] = y; qc[q4 + 2] = z; qc[q4 + 3] = w;
+            qp[q4] = qc[q4]!;
+            qp[q4 + 1] = qc[q4 + 1]!;
+            qp[q4 + 2] = qc[q4 + 2]!;
+            qp[q4 + 3] = qc[q4 + 3]!;
+            qc[q4] = x;
+            qc[q4 + 1] = y;
+            qc[q4 + 2] = z;
+            qc[q4 + 3] = w;
           } else if (delta > 1) {
-            qc[q4] = x; qc[q4 + 1] = y; qc[q4 + 2] = z; qc[q4 + 3] = w;
+            qc[q4] = x;
+            qc[q4 + 1] = y;
+            qc[q4 + 2] = z;
+            qc[q4 + 3] = w;
             rotateBack(x, y, z, w, wx[e]!, wy[e]!, wz[e]!, h, qp, q4);
           } else if (x !== qc[q4] || y !== qc[q4 + 1] || z !== qc[q4 + 2] || w !== qc[q4 + 3]) {
             // Changed without a step (set by hand): show it as is, no interpolation.
-            qp[q4] = x; qp[q4 + 1] = y; qp[q4 + 2] = z; qp[q4 + 3] = w;
-            qc[q4] = x; qc[q4 + 1] = y; qc[q4 + 2] = z; qc[q4 + 3] = w;
+            qp[q4] = x;
+            qp[q4 + 1] = y;
+            qp[q4 + 2] = z;
+            qp[q4 + 3] = w;
+            qc[q4] = x;
+            qc[q4 + 1] = y;
+            qc[q4 + 2] = z;
+            qc[q4 + 3] = w;
           }
           slerpInto(qp[q4]!, qp[q4 + 1]!, qp[q4 + 2]!, qp[q4 + 3]!, qc[q4]!, qc[q4 + 1]!, qc[q4 + 2]!, qc[q4 + 3]!, alpha, dq, q4);
         }
-        const ax = ox[e]!, ay = oy[e]!, az = oz[e]!;
-        const x = ax + (px[e]! - ax) * alpha, y = ay + (py[e]! - ay) * alpha, z = az + (pz[e]! - az) * alpha;
-        dp[p3] = x; dp[p3 + 1] = y; dp[p3 + 2] = z;
+        const ax = ox[e]!,
+          ay = oy[e]!,
+          az = oz[e]!;
+        const x = ax + (px[e]! - ax) * alpha,
+          y = ay + (py[e]! - ay) * alpha,
+          z = az + (pz[e]! - az) * alpha;
+        dp[p3] = x;
+        dp[p3 + 1] = y;
+        dp[p3 + 2] = z;
         let sx: number, sy: number, sz: number;
         if (mode[e] === SCALE_RADIUS) {
           const r = radius[e]!;
           size[e] = r;
           sx = sy = sz = r * k;
         } else {
-          sx = fixed[p3]! * k; sy = fixed[p3 + 1]! * k; sz = fixed[p3 + 2]! * k;
+          sx = fixed[p3]! * k;
+          sy = fixed[p3 + 1]! * k;
+          sz = fixed[p3 + 2]! * k;
         }
         composeInto(m, 16 * i, x * k, y * k, z * k, dq[q4]!, dq[q4 + 1]!, dq[q4 + 2]!, dq[q4 + 3]!, sx, sy, sz);
       }
       group.commit(n);
     }
     const sf = this.shapeFrame;
-    sf.bodies = book.eids(this.shapedGroup); sf.count = book.count(this.shapedGroup);
-    sf.drawnPosition = dp; sf.drawnOrientation = dq; sf.scale = k;
+    sf.bodies = book.eids(this.shapedGroup);
+    sf.count = book.count(this.shapedGroup);
+    sf.drawnPosition = dp;
+    sf.drawnOrientation = dq;
+    sf.scale = k;
     this.shapes.draw(world, sf);
     meshes += this.shapes.counts.meshes;
     const trails = this.trails;
@@ -497,7 +621,11 @@ export class WorldRenderer3D {
     const debug = this.debug;
     if (debug) {
       const f = this.debugFrame;
-      f.book = book; f.drawnPosition = dp; f.drawnOrientation = dq; f.size = size; f.scale = k;
+      f.book = book;
+      f.drawnPosition = dp;
+      f.drawnOrientation = dq;
+      f.size = size;
+      f.scale = k;
       debug.draw(world, f);
     }
     const s = this.stats;
@@ -506,15 +634,26 @@ export class WorldRenderer3D {
     s.boxes = book.count(this.boxGroup);
     s.shaped = book.count(this.shapedGroup);
     s.custom = s.instances - s.balls - s.boxes - s.shaped;
-    const sc3 = this.shapes.counts, ss = s.shapes;
-    ss.spheres = sc3.spheres; ss.boxes = sc3.boxes; ss.capsules = sc3.capsules; ss.cylinders = sc3.cylinders; ss.hulls = sc3.hulls; ss.meshes = sc3.meshes; ss.triangleMeshes = sc3.triangleMeshes;
+    const sc3 = this.shapes.counts,
+      ss = s.shapes;
+    ss.spheres = sc3.spheres;
+    ss.boxes = sc3.boxes;
+    ss.capsules = sc3.capsules;
+    ss.cylinders = sc3.cylinders;
+    ss.hulls = sc3.hulls;
+    ss.meshes = sc3.meshes;
+    ss.triangleMeshes = sc3.triangleMeshes;
     s.meshes = meshes;
     s.trails = trails ? trails.count : 0;
     s.contacts = debug ? debug.contactsDrawn : 0;
     s.arrows = debug ? debug.arrowsDrawn : 0;
-    const sc = s.scenery, dd = debug?.drawn;
-    sc.springs = dd ? dd.springs : 0; sc.joints = dd ? dd.joints : 0; sc.planes = dd ? dd.planes : 0;
-    sc.fields = dd ? dd.fields : 0; sc.emitters = dd ? dd.emitters : 0;
+    const sc = s.scenery,
+      dd = debug?.drawn;
+    sc.springs = dd ? dd.springs : 0;
+    sc.joints = dd ? dd.joints : 0;
+    sc.planes = dd ? dd.planes : 0;
+    sc.fields = dd ? dd.fields : 0;
+    sc.emitters = dd ? dd.emitters : 0;
     s.frames++;
   }
 
@@ -534,10 +673,13 @@ export class WorldRenderer3D {
     if (shape === null) {
       this.shapeStamp[eid] = 0;
     } else {
-      if (shape === undefined || typeof shape !== 'object') throw new TypeError(`${where}: shape must be { geometry, material?, scale?, color? } or null, got ${describe(shape)}`);
+      if (shape === undefined || typeof shape !== 'object')
+        throw new TypeError(`${where}: shape must be { geometry, material?, scale?, color? } or null, got ${describe(shape)}`);
       assertKnownKeys(where, shape, ['geometry', 'material', 'scale', 'color']);
-      if (!isGeometry(shape.geometry)) throw new TypeError(`${where}: geometry must be a three.js BufferGeometry, got ${describe(shape.geometry)}`);
-      if (shape.material !== undefined && !isMaterial(shape.material)) throw new TypeError(`${where}: material must be a three.js Material, got ${describe(shape.material)}`);
+      if (!isGeometry(shape.geometry))
+        throw new TypeError(`${where}: geometry must be a three.js BufferGeometry, got ${describe(shape.geometry)}`);
+      if (shape.material !== undefined && !isMaterial(shape.material))
+        throw new TypeError(`${where}: material must be a three.js Material, got ${describe(shape.material)}`);
       const s = shape.scale;
       let scaleMode = -1; // -1 default by kind, 0 fixed, 1 radius, 2 inertia
       const o = 3 * eid;
@@ -545,11 +687,17 @@ export class WorldRenderer3D {
       else if (s === 'inertia') scaleMode = 2;
       else if (typeof s === 'number') {
         assertPositive(where, 'scale', s);
-        scaleMode = 0; this.shapeScale[o] = s; this.shapeScale[o + 1] = s; this.shapeScale[o + 2] = s;
+        scaleMode = 0;
+        this.shapeScale[o] = s;
+        this.shapeScale[o + 1] = s;
+        this.shapeScale[o + 2] = s;
       } else if (s !== undefined) {
         assertVector(where, 'scale', s, 3);
         for (let i = 0; i < 3; i++) assertPositive(where, `scale[${i}]`, s[i]);
-        scaleMode = 0; this.shapeScale[o] = s[0]!; this.shapeScale[o + 1] = s[1]!; this.shapeScale[o + 2] = s[2]!;
+        scaleMode = 0;
+        this.shapeScale[o] = s[0]!;
+        this.shapeScale[o + 1] = s[1]!;
+        this.shapeScale[o + 2] = s[2]!;
       }
       const tint = shape.color !== undefined ? parseColor(where, 'color', shape.color) : shape.material !== undefined ? 0xffffff : -1;
       const isBall = hasComponent(this.worldRef, eid, this.worldRef.components.Ball);
@@ -614,7 +762,9 @@ export class WorldRenderer3D {
     if (!Number.isInteger(entity)) throw new RangeError(`WorldRenderer3D.drawnPosition: eid must be an integer, got ${describe(entity)}`);
     const eid = this.shownSlot(entity);
     if (eid === 0) return null;
-    out[0] = this.drawnPos[3 * eid]!; out[1] = this.drawnPos[3 * eid + 1]!; out[2] = this.drawnPos[3 * eid + 2]!;
+    out[0] = this.drawnPos[3 * eid]!;
+    out[1] = this.drawnPos[3 * eid + 1]!;
+    out[2] = this.drawnPos[3 * eid + 2]!;
     return out;
   }
 
@@ -623,7 +773,8 @@ export class WorldRenderer3D {
    * @returns `out`, or null if the entity is not shown. @throws RangeError if `eid` is not an integer.
    */
   drawnOrientation(entity: number, out: number[] | Float64Array = [0, 0, 0, 1]): number[] | Float64Array | null {
-    if (!Number.isInteger(entity)) throw new RangeError(`WorldRenderer3D.drawnOrientation: eid must be an integer, got ${describe(entity)}`);
+    if (!Number.isInteger(entity))
+      throw new RangeError(`WorldRenderer3D.drawnOrientation: eid must be an integer, got ${describe(entity)}`);
     const eid = this.shownSlot(entity);
     if (eid === 0) return null;
     for (let i = 0; i < 4; i++) out[i] = this.drawnQuat[4 * eid + i]!;
@@ -660,11 +811,15 @@ export class WorldRenderer3D {
     const ray = this.raycaster.ray;
     const o = this.v3.copy(ray.origin);
     this.root.worldToLocal(o);
-    const ox = o.x / k, oy = o.y / k, oz = o.z / k;
+    const ox = o.x / k,
+      oy = o.y / k,
+      oz = o.z / k;
     const farDistance = (camera as { far?: number }).far ?? 1000; // scene units: the physics segment's length in the scene
     const far = this.v3.copy(ray.origin).addScaledVector(ray.direction, farDistance);
     this.root.worldToLocal(far);
-    const tx = far.x / k - ox, ty = far.y / k - oy, tz = far.z / k - oz;
+    const tx = far.x / k - ox,
+      ty = far.y / k - oy,
+      tz = far.z / k - oz;
     const rayLength = Math.hypot(tx, ty, tz);
     let physics: PickResult | null = null;
     let physicsDistance = Infinity;
@@ -701,7 +856,9 @@ export class WorldRenderer3D {
       // That is the scene's frame; the result's is the physics' (the root's): n_root ~ M_root^T n_scene
       // (a normal transforms by the inverse transpose; root.matrixWorld maps root to scene).
       n.applyMatrix3(this.m3.setFromMatrix4(this.root.matrixWorld).transpose()).normalize();
-      normal[0] = n.x; normal[1] = n.y; normal[2] = n.z;
+      normal[0] = n.x;
+      normal[1] = n.y;
+      normal[2] = n.z;
     }
     // Hits are in scene coordinates; the renderer's root may sit anywhere in the scene.
     const local = this.v3.copy(best.point);
@@ -787,7 +944,10 @@ export class WorldRenderer3D {
   /** The group drawing (geometry, material), created on first use. */
   private groupFor(geometry: BufferGeometry, material: Material, kind: GroupKind, initial: number): number {
     let byMaterial = this.groupIndex.get(geometry);
-    if (!byMaterial) { byMaterial = new Map(); this.groupIndex.set(geometry, byMaterial); }
+    if (!byMaterial) {
+      byMaterial = new Map();
+      this.groupIndex.set(geometry, byMaterial);
+    }
     const known = byMaterial.get(material);
     if (known !== undefined) return known;
     const g = this.book.addGroup(initial);
@@ -854,7 +1014,9 @@ export class WorldRenderer3D {
     const book = this.book;
     const spawn = world.spawnStamp;
     const s3 = world.dimensions === 3 ? shapes3DOf(world) : undefined;
-    const first = s3 !== undefined ? s3.first : null, shaped = this.shapedGroup, userStamp = this.shapeStamp;
+    const first = s3 !== undefined ? s3.first : null,
+      shaped = this.shapedGroup,
+      userStamp = this.shapeStamp;
     book.beginPass();
     for (let pass = 0; pass < 2; pass++) {
       const ents = query(world, pass === 0 ? this.terms.balls : this.terms.bodies);
@@ -862,7 +1024,13 @@ export class WorldRenderer3D {
         const e = ents[i]!;
         if (book.has(e)) {
           // A body given its first 3D shape after it was first drawn moves to the shapes (unless the user chose its look).
-          if (book.stampOf[e] === spawn[e] && (first === null || first[e] === 0 || book.groupOf(e) === shaped || userStamp[e] === spawn[e])) { book.mark(e); continue; }
+          if (
+            book.stampOf[e] === spawn[e] &&
+            (first === null || first[e] === 0 || book.groupOf(e) === shaped || userStamp[e] === spawn[e])
+          ) {
+            book.mark(e);
+            continue;
+          }
           book.remove(e);
         }
         const g = this.classify(world, e);
@@ -893,11 +1061,14 @@ export class WorldRenderer3D {
       this.scaleMode[e] = SCALE_FIXED;
       this.fixedScale[o] = this.fixedScale[o + 1] = this.fixedScale[o + 2] = 1;
       let reach = 0;
-      for (let sh = s3.first[e]!; sh !== 0; sh = s3.next[sh]!) reach = Math.max(reach, Math.hypot(s3.px[sh]!, s3.py[sh]!, s3.pz[sh]!) + s3.reach[sh]!);
+      for (let sh = s3.first[e]!; sh !== 0; sh = s3.next[sh]!)
+        reach = Math.max(reach, Math.hypot(s3.px[sh]!, s3.py[sh]!, s3.pz[sh]!) + s3.reach[sh]!);
       this.size[e] = reach;
     } else if (want === 0) {
       this.scaleMode[e] = SCALE_FIXED;
-      this.fixedScale[o] = this.shapeScale[o]!; this.fixedScale[o + 1] = this.shapeScale[o + 1]!; this.fixedScale[o + 2] = this.shapeScale[o + 2]!;
+      this.fixedScale[o] = this.shapeScale[o]!;
+      this.fixedScale[o + 1] = this.shapeScale[o + 1]!;
+      this.fixedScale[o + 2] = this.shapeScale[o + 2]!;
       this.size[e] = 0.5 * Math.max(this.shapeScale[o]!, this.shapeScale[o + 1]!, this.shapeScale[o + 2]!);
     } else if ((want === 1 || want === -1) && ball) {
       this.scaleMode[e] = SCALE_RADIUS;
@@ -906,7 +1077,9 @@ export class WorldRenderer3D {
       this.scaleMode[e] = SCALE_FIXED;
       this.boxEdges(world, e, this.edgesScratch);
       const ed = this.edgesScratch;
-      this.fixedScale[o] = ed[0]!; this.fixedScale[o + 1] = ed[1]!; this.fixedScale[o + 2] = ed[2]!;
+      this.fixedScale[o] = ed[0]!;
+      this.fixedScale[o + 1] = ed[1]!;
+      this.fixedScale[o + 2] = ed[2]!;
       this.size[e] = 0.5 * Math.max(ed[0]!, ed[1]!, ed[2]!);
     }
     const q4 = 4 * e;
@@ -919,7 +1092,10 @@ export class WorldRenderer3D {
       this.qPrev[q4 + 3] = this.qCur[q4 + 3] = this.drawnQuat[q4 + 3] = O.w[e]!;
     } else {
       this.oriented[e] = 0;
-      this.drawnQuat[q4] = 0; this.drawnQuat[q4 + 1] = 0; this.drawnQuat[q4 + 2] = 0; this.drawnQuat[q4 + 3] = 1;
+      this.drawnQuat[q4] = 0;
+      this.drawnQuat[q4 + 1] = 0;
+      this.drawnQuat[q4 + 2] = 0;
+      this.drawnQuat[q4 + 3] = 1;
     }
     return g;
   }
@@ -994,11 +1170,26 @@ export class WorldRenderer3D {
     const box = world.collision.boundary;
     const seen = this.boxSeen;
     const on = box.enabled ? 1 : 0;
-    if (seen[0] === on && seen[1] === box.min[0] && seen[2] === box.min[1] && seen[3] === box.min[2] &&
-      seen[4] === box.max[0] && seen[5] === box.max[1] && seen[6] === box.max[2]) return;
-    seen[0] = on; seen[1] = box.min[0]!; seen[2] = box.min[1]!; seen[3] = box.min[2]!; seen[4] = box.max[0]!; seen[5] = box.max[1]!; seen[6] = box.max[2]!;
+    if (
+      seen[0] === on &&
+      seen[1] === box.min[0] &&
+      seen[2] === box.min[1] &&
+      seen[3] === box.min[2] &&
+      seen[4] === box.max[0] &&
+      seen[5] === box.max[1] &&
+      seen[6] === box.max[2]
+    )
+      return;
+    seen[0] = on;
+    seen[1] = box.min[0]!;
+    seen[2] = box.min[1]!;
+    seen[3] = box.min[2]!;
+    seen[4] = box.max[0]!;
+    seen[5] = box.max[1]!;
+    seen[6] = box.max[2]!;
     const k = this.unitsPerMeter;
-    const min = box.enabled ? box.min : this.shadowMin, max = box.enabled ? box.max : this.shadowMax;
+    const min = box.enabled ? box.min : this.shadowMin,
+      max = box.enabled ? box.max : this.shadowMax;
     lights.fit(min[0]! * k, min[1]! * k, min[2]! * k, max[0]! * k, max[1]! * k, max[2]! * k);
   }
 

@@ -1,7 +1,15 @@
+import { type Hull, type Mesh3D, meshesOf, type PhysicsWorld, Shape3DKind, type Shape3DStore, shapes3DOf } from '@bitphysics/physics';
 import {
-  BoxGeometry, BufferGeometry, CapsuleGeometry, CylinderGeometry, Float32BufferAttribute, Group, Mesh, MeshStandardMaterial, type Material,
+  BoxGeometry,
+  BufferGeometry,
+  CapsuleGeometry,
+  CylinderGeometry,
+  Float32BufferAttribute,
+  Group,
+  type Material,
+  Mesh,
+  MeshStandardMaterial,
 } from 'three';
-import { Shape3DKind, meshesOf, shapes3DOf, type Hull, type Mesh3D, type PhysicsWorld, type Shape3DStore } from '@bitphysics/physics';
 import { InstanceBook, type InstanceBookListener } from './book.js';
 import { InstanceGroup } from './groups.js';
 import { composeInto, hexToLinear } from './math.js';
@@ -65,10 +73,14 @@ export interface ShapeFrame {
 
 /** Hull geometry: flat-shaded triangles fanned from each polygonal face, with the face's normal. */
 export function hullGeometry(hull: Hull): BufferGeometry {
-  const pos: number[] = [], nor: number[] = [];
-  const V = hull.vertices, F = hull.faceVertices, N = hull.faceNormals;
+  const pos: number[] = [],
+    nor: number[] = [];
+  const V = hull.vertices,
+    F = hull.faceVertices,
+    N = hull.faceNormals;
   for (let f = 0; f + 1 < hull.faceStart.length; f++) {
-    const s = hull.faceStart[f]!, e = hull.faceStart[f + 1]!;
+    const s = hull.faceStart[f]!,
+      e = hull.faceStart[f + 1]!;
     for (let i = s + 1; i + 1 < e; i++) {
       for (const v of [F[s]!, F[i]!, F[i + 1]!]) {
         pos.push(V[3 * v]!, V[3 * v + 1]!, V[3 * v + 2]!);
@@ -87,7 +99,7 @@ export function hullGeometry(hull: Hull): BufferGeometry {
 function hullKey(hull: Hull): string {
   let key = 'h';
   const V = hull.vertices;
-  for (let i = 0; i < V.length; i++) key += ',' + Math.round(V[i]! * 1e6);
+  for (let i = 0; i < V.length; i++) key += `,${Math.round(V[i]! * 1e6)}`;
   return key;
 }
 
@@ -128,7 +140,9 @@ export class ShapeLayer3D {
     this.book = new InstanceBook(capacity);
     this.listener = {
       added: (g, i) => this.groups[g]!.ensure(i + 1),
-      moved: (_g, _from, _to, e) => { this.written[e] = 0; },
+      moved: (_g, _from, _to, e) => {
+        this.written[e] = 0;
+      },
       removed: () => undefined,
     };
     this.book.listener = this.listener;
@@ -156,7 +170,10 @@ export class ShapeLayer3D {
   /** Sets shadow casting and receiving of every mesh. */
   setShadows(on: boolean): void {
     for (const g of this.groups) g.setShadows(on);
-    for (const m of this.triangleMeshes.values()) { m.castShadow = on; m.receiveShadow = on; }
+    for (const m of this.triangleMeshes.values()) {
+      m.castShadow = on;
+      m.receiveShadow = on;
+    }
   }
 
   /** Places every shape of the bodies in `frame` for this frame. */
@@ -174,7 +191,10 @@ export class ShapeLayer3D {
         const b = frame.bodies[i]!;
         for (let e = s.first[b]!; e !== 0; e = s.next[e]!) {
           if (book.has(e)) {
-            if (book.stampOf[e] === spawn[e]) { book.mark(e); continue; }
+            if (book.stampOf[e] === spawn[e]) {
+              book.mark(e);
+              continue;
+            }
             book.remove(e);
           }
           book.add(e, this.classify(s, e), spawn[e]!);
@@ -183,36 +203,80 @@ export class ShapeLayer3D {
       }
     }
     book.sweep();
-    if (s === undefined) { for (const g of this.groups) g.commit(0); return; }
-    const dp = frame.drawnPosition, dq = frame.drawnOrientation, k = frame.scale;
-    const px = s.px, py = s.py, pz = s.pz, qx = s.qx, qy = s.qy, qz = s.qz, qw = s.qw, body = s.body;
-    const scale = this.scale, written = this.written, version = this.colorVersion;
+    if (s === undefined) {
+      for (const g of this.groups) g.commit(0);
+      return;
+    }
+    const dp = frame.drawnPosition,
+      dq = frame.drawnOrientation,
+      k = frame.scale;
+    const px = s.px,
+      py = s.py,
+      pz = s.pz,
+      qx = s.qx,
+      qy = s.qy,
+      qz = s.qz,
+      qw = s.qw,
+      body = s.body;
+    const scale = this.scale,
+      written = this.written,
+      version = this.colorVersion;
     for (let g = 0; g < this.groups.length; g++) {
       const group = this.groups[g]!;
       const n = book.count(g);
-      if (n === 0) { group.commit(0); continue; }
+      if (n === 0) {
+        group.commit(0);
+        continue;
+      }
       counts.meshes++;
       switch (this.groupKind[g]) {
-        case Shape3DKind.Sphere: counts.spheres += n; break;
-        case Shape3DKind.Box: counts.boxes += n; break;
-        case Shape3DKind.Capsule: counts.capsules += n; break;
-        case Shape3DKind.Cylinder: counts.cylinders += n; break;
-        default: counts.hulls += n;
+        case Shape3DKind.Sphere:
+          counts.spheres += n;
+          break;
+        case Shape3DKind.Box:
+          counts.boxes += n;
+          break;
+        case Shape3DKind.Capsule:
+          counts.capsules += n;
+          break;
+        case Shape3DKind.Cylinder:
+          counts.cylinders += n;
+          break;
+        default:
+          counts.hulls += n;
       }
-      const eids = book.eids(g), m = group.matrices;
+      const eids = book.eids(g),
+        m = group.matrices;
       let recolored = false;
       for (let i = 0; i < n; i++) {
-        const e = eids[i]!, b = body[e]!;
-        const bx = dp[3 * b]!, by = dp[3 * b + 1]!, bz = dp[3 * b + 2]!;
-        const x = dq[4 * b]!, y = dq[4 * b + 1]!, z = dq[4 * b + 2]!, w = dq[4 * b + 3]!;
+        const e = eids[i]!,
+          b = body[e]!;
+        const bx = dp[3 * b]!,
+          by = dp[3 * b + 1]!,
+          bz = dp[3 * b + 2]!;
+        const x = dq[4 * b]!,
+          y = dq[4 * b + 1]!,
+          z = dq[4 * b + 2]!,
+          w = dq[4 * b + 3]!;
         // Shape centre: body position + R(q_body) p_shape (v + 2 w (u x v) + 2 u x (u x v)).
-        const vx = px[e]!, vy = py[e]!, vz = pz[e]!;
-        const tx = 2 * (y * vz - z * vy), ty = 2 * (z * vx - x * vz), tz = 2 * (x * vy - y * vx);
-        const cx = bx + vx + w * tx + (y * tz - z * ty), cy = by + vy + w * ty + (z * tx - x * tz), cz = bz + vz + w * tz + (x * ty - y * tx);
+        const vx = px[e]!,
+          vy = py[e]!,
+          vz = pz[e]!;
+        const tx = 2 * (y * vz - z * vy),
+          ty = 2 * (z * vx - x * vz),
+          tz = 2 * (x * vy - y * vx);
+        const cx = bx + vx + w * tx + (y * tz - z * ty),
+          cy = by + vy + w * ty + (z * tx - x * tz),
+          cz = bz + vz + w * tz + (x * ty - y * tx);
         // Shape orientation: q_body q_shape.
-        const sx = qx[e]!, sy = qy[e]!, sz = qz[e]!, sw = qw[e]!;
-        const ox = w * sx + x * sw + y * sz - z * sy, oy = w * sy - x * sz + y * sw + z * sx;
-        const oz = w * sz + x * sy - y * sx + z * sw, ow = w * sw - x * sx - y * sy - z * sz;
+        const sx = qx[e]!,
+          sy = qy[e]!,
+          sz = qz[e]!,
+          sw = qw[e]!;
+        const ox = w * sx + x * sw + y * sz - z * sy,
+          oy = w * sy - x * sz + y * sw + z * sx;
+        const oz = w * sz + x * sy - y * sx + z * sw,
+          ow = w * sw - x * sx - y * sy - z * sz;
         composeInto(m, 16 * i, cx * k, cy * k, cz * k, ox, oy, oz, ow, scale[3 * e]! * k, scale[3 * e + 1]! * k, scale[3 * e + 2]! * k);
         if (written[e] !== version) {
           written[e] = version;
@@ -250,7 +314,8 @@ export class ShapeLayer3D {
         g.computeVertexNormals();
         mesh = new Mesh(g, this.meshMaterial);
         mesh.name = `triangle-mesh-${m.entity}`;
-        mesh.castShadow = this.shadows; mesh.receiveShadow = this.shadows;
+        mesh.castShadow = this.shadows;
+        mesh.receiveShadow = this.shadows;
         this.triangleMeshes.set(m, mesh);
         this.object.add(mesh);
       }
@@ -261,7 +326,7 @@ export class ShapeLayer3D {
   /** Removes the drawn triangle meshes not in `keep` (all of them for null). */
   private dropTriangleMeshes(keep: readonly Mesh3D[] | null): void {
     for (const [m, mesh] of this.triangleMeshes) {
-      if (keep !== null && keep.includes(m)) continue;
+      if (keep?.includes(m)) continue;
       mesh.removeFromParent();
       mesh.geometry.dispose();
       this.triangleMeshes.delete(m);
@@ -275,21 +340,30 @@ export class ShapeLayer3D {
 
   /** The group shape `e` is drawn in (made on first use); fills its scale. */
   private classify(s: Shape3DStore, e: number): number {
-    const kind = s.kind[e]!, o = 3 * e, sc = this.scale;
+    const kind = s.kind[e]!,
+      o = 3 * e,
+      sc = this.scale;
     let key: string;
     let make: () => BufferGeometry;
     switch (kind) {
       case Shape3DKind.Sphere:
         sc[o] = sc[o + 1] = sc[o + 2] = s.radius[e]!;
-        key = 'sphere'; make = () => this.sphere;
+        key = 'sphere';
+        make = () => this.sphere;
         break;
       case Shape3DKind.Box:
-        sc[o] = 2 * s.hx[e]!; sc[o + 1] = 2 * s.hy[e]!; sc[o + 2] = 2 * s.hz[e]!;
-        key = 'box'; make = () => this.box;
+        sc[o] = 2 * s.hx[e]!;
+        sc[o + 1] = 2 * s.hy[e]!;
+        sc[o + 2] = 2 * s.hz[e]!;
+        key = 'box';
+        make = () => this.box;
         break;
       case Shape3DKind.Cylinder:
-        sc[o] = s.radius[e]!; sc[o + 1] = s.hy[e]!; sc[o + 2] = s.radius[e]!;
-        key = 'cylinder'; make = () => this.cylinder;
+        sc[o] = s.radius[e]!;
+        sc[o + 1] = s.hy[e]!;
+        sc[o + 2] = s.radius[e]!;
+        key = 'cylinder';
+        make = () => this.cylinder;
         break;
       case Shape3DKind.Capsule: {
         const r = s.radius[e]!;

@@ -1,7 +1,7 @@
-import { BufferAttribute, BufferGeometry, DynamicDrawUsage, LineBasicMaterial, LineSegments } from 'three';
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { hexToLinear } from './math.js';
 import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative } from '@bitphysics/physics/validate';
+import { BufferAttribute, BufferGeometry, DynamicDrawUsage, LineBasicMaterial, LineSegments } from 'three';
+import { hexToLinear } from './math.js';
 
 /** Options of the trail layer (`WorldRenderer3DOptions.trails`, `WorldRenderer3D.setTrails`). Unknown fields are rejected. */
 export interface TrailOptions {
@@ -87,7 +87,8 @@ export class TrailLayer {
   /** @param options resolved options (see `resolveTrailOptions`). @param capacity the world's capacity. */
   constructor(options: ResolvedTrailOptions, capacity: number) {
     this.options = options;
-    const m = options.maxEntities, L = options.length;
+    const m = options.maxEntities,
+      L = options.length;
     this.slotOf = new Int32Array(capacity + 1);
     this.owner = new Int32Array(m);
     this.head = new Int32Array(m);
@@ -165,15 +166,22 @@ export class TrailLayer {
   /** Appends every trailed entity's Position (m) to its trail (honouring `spacing`); call once per frame in which the world stepped. */
   record(world: PhysicsWorld): void {
     const P = world.components.Position;
-    const px = P.x, py = P.y, pz = P.z;
-    const L = this.options.length, sp2 = this.options.spacing * this.options.spacing;
+    const px = P.x,
+      py = P.y,
+      pz = P.z;
+    const L = this.options.length,
+      sp2 = this.options.spacing * this.options.spacing;
     const hist = this.history;
     for (let s = 0; s < this.active; s++) {
       const e = this.owner[s]!;
-      const x = px[e]!, y = py[e]!, z = pz[e]!;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
       if (sp2 > 0) {
         const a = (s * L + ((this.head[s]! - 1 + L) % L)) * 3;
-        const dx = x - hist[a]!, dy = y - hist[a + 1]!, dz = z - hist[a + 2]!;
+        const dx = x - hist[a]!,
+          dy = y - hist[a + 1]!,
+          dz = z - hist[a + 2]!;
         if (dx * dx + dy * dy + dz * dz < sp2) continue;
       }
       this.push(s, x, y, z);
@@ -187,10 +195,15 @@ export class TrailLayer {
    */
   draw(world: PhysicsWorld, alpha: number, scale: number, colors: Uint32Array): void {
     const c = world.components;
-    const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-    const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+    const px = c.Position.x,
+      py = c.Position.y,
+      pz = c.Position.z;
+    const ox = c.PreviousPosition.x,
+      oy = c.PreviousPosition.y,
+      oz = c.PreviousPosition.z;
     const L = this.options.length;
-    const hist = this.history, pos = this.positions;
+    const hist = this.history,
+      pos = this.positions;
     let colorsDirty = false;
     for (let s = 0; s < this.active; s++) {
       const e = this.owner[s]!;
@@ -205,13 +218,17 @@ export class TrailLayer {
       const pad = L - n;
       const base = s * L * 6;
       // Point j (0..L-1) of the trail: unfilled history collapses onto the oldest stored point.
-      let prevX = 0, prevY = 0, prevZ = 0;
+      let prevX = 0,
+        prevY = 0,
+        prevZ = 0;
       for (let j = 0; j <= L; j++) {
         let x: number, y: number, z: number;
         if (j < L) {
           const k = j < pad ? 0 : j - pad;
           const a = (s * L + ((start + k) % L)) * 3;
-          x = hist[a]! * scale; y = hist[a + 1]! * scale; z = hist[a + 2]! * scale;
+          x = hist[a]! * scale;
+          y = hist[a + 1]! * scale;
+          z = hist[a + 2]! * scale;
         } else {
           x = (ox[e]! + (px[e]! - ox[e]!) * alpha) * scale;
           y = (oy[e]! + (py[e]! - oy[e]!) * alpha) * scale;
@@ -220,10 +237,16 @@ export class TrailLayer {
         if (j > 0) {
           // Segment j - 1 runs from point j - 1 to point j.
           const v = base + (j - 1) * 6;
-          pos[v] = prevX; pos[v + 1] = prevY; pos[v + 2] = prevZ;
-          pos[v + 3] = x; pos[v + 4] = y; pos[v + 5] = z;
+          pos[v] = prevX;
+          pos[v + 1] = prevY;
+          pos[v + 2] = prevZ;
+          pos[v + 3] = x;
+          pos[v + 4] = y;
+          pos[v + 5] = z;
         }
-        prevX = x; prevY = y; prevZ = z;
+        prevX = x;
+        prevY = y;
+        prevZ = z;
       }
     }
     const used = this.active * L * 2;
@@ -244,14 +267,21 @@ export class TrailLayer {
   }
 
   private writeColors(s: number, color: number): void {
-    const L = this.options.length, a = this.options.alpha;
+    const L = this.options.length,
+      a = this.options.alpha;
     const rgb = this.scratch;
     hexToLinear(color, rgb, 0);
     const col = this.colors;
     for (let j = 0; j < L; j++) {
       const v = (s * L + j) * 8;
-      col[v] = rgb[0]!; col[v + 1] = rgb[1]!; col[v + 2] = rgb[2]!; col[v + 3] = (a * j) / L;
-      col[v + 4] = rgb[0]!; col[v + 5] = rgb[1]!; col[v + 6] = rgb[2]!; col[v + 7] = (a * (j + 1)) / L;
+      col[v] = rgb[0]!;
+      col[v + 1] = rgb[1]!;
+      col[v + 2] = rgb[2]!;
+      col[v + 3] = (a * j) / L;
+      col[v + 4] = rgb[0]!;
+      col[v + 5] = rgb[1]!;
+      col[v + 6] = rgb[2]!;
+      col[v + 7] = (a * (j + 1)) / L;
     }
   }
 
@@ -259,7 +289,9 @@ export class TrailLayer {
     const L = this.options.length;
     const h = this.head[s]!;
     const a = (s * L + h) * 3;
-    this.history[a] = x; this.history[a + 1] = y; this.history[a + 2] = z;
+    this.history[a] = x;
+    this.history[a + 1] = y;
+    this.history[a + 2] = z;
     this.head[s] = (h + 1) % L;
     if (this.filled[s]! < L) this.filled[s] = this.filled[s]! + 1;
   }

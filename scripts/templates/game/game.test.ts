@@ -3,7 +3,7 @@
  * B and a click each drop one more, P pauses (no steps while paused) and the page logs no error.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { Harness, type GamePage } from './harness';
+import { type GamePage, Harness } from './harness';
 
 /** The extras games/__NAME__/main.ts puts on window.game. */
 interface TemplateGame {

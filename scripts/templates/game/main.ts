@@ -4,10 +4,10 @@
  * Input: click drops a ball at the pointer; B drops one at the top. Keys: P pause, N single step,
  * R reset. URL: ?count=N (balls at the start, 0..500), ?seed=S.
  */
-import { createPhysicsWorld, setGravity, type PhysicsWorld } from '@bitphysics/physics';
-import { startPixiGame } from '../shared/pixi';
+import { createPhysicsWorld, type PhysicsWorld, setGravity } from '@bitphysics/physics';
 import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { BOX, buildScene, spawnBall, worldOptions, type SceneHandles } from './scene';
+import { startPixiGame } from '../shared/pixi';
+import { BOX, buildScene, type SceneHandles, spawnBall, worldOptions } from './scene';
 
 const params = {
   count: numberParam('count', { default: 20, min: 0, max: 500, integer: true }),
@@ -35,17 +35,31 @@ const game = await startPixiGame({
     { keys: 'Click', action: 'drop a ball' },
     { keys: 'B', action: 'drop a ball at the top' },
   ],
-  keys: [{ key: 'b', label: 'ball', action: () => spawnBall(game.shell.world, handles, BOX.width / 2, BOX.height - 1, params.restitution) }],
+  keys: [
+    { key: 'b', label: 'ball', action: () => spawnBall(game.shell.world, handles, BOX.width / 2, BOX.height - 1, params.restitution) },
+  ],
   renderer: { view: 'boundary' },
 });
 const { shell, renderer, app } = game;
 
-const panel = createPanel(params, [
-  { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 0, max: 30, step: 0.01, onChange: (g) => setGravity(shell.world, [0, -g]) },
-  { type: 'slider', key: 'restitution', label: 'restitution (new balls)', min: 0, max: 1, step: 0.01 },
-  { type: 'slider', key: 'count', label: 'balls (rebuilds)', min: 0, max: 500, step: 1, onRelease: true, onChange: () => shell.reset() },
-  { type: 'button', key: 'reset', label: 'reset (R)' },
-], { title: '__TITLE__' });
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 0,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => setGravity(shell.world, [0, -g]),
+    },
+    { type: 'slider', key: 'restitution', label: 'restitution (new balls)', min: 0, max: 1, step: 0.01 },
+    { type: 'slider', key: 'count', label: 'balls (rebuilds)', min: 0, max: 500, step: 1, onRelease: true, onChange: () => shell.reset() },
+    { type: 'button', key: 'reset', label: 'reset (R)' },
+  ],
+  { title: '__TITLE__' },
+);
 
 const pointer = { x: 0, y: 0 };
 app.canvas.addEventListener('pointerdown', (event) => {

@@ -2,7 +2,7 @@
  * __TITLE__: the scene, a pure and seeded builder (no DOM, no pixi: it runs in Node and in tests
  * too). A 16 m x 10 m box with a ramp; `count` balls dropped from the top.
  */
-import { Rng, addBody, addSegment, setBoundary, type PhysicsWorld, type PhysicsWorldOptions } from '@bitphysics/physics';
+import { addBody, addSegment, type PhysicsWorld, type PhysicsWorldOptions, Rng, setBoundary } from '@bitphysics/physics';
 
 /** Options of the scene. */
 export interface SceneOptions {

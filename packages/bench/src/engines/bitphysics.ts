@@ -1,7 +1,7 @@
+import { contactCount, createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, step } from '@bitphysics/physics';
 import { query } from 'bitecs';
-import { contactCount, createPhysicsWorld, disposeWorld, SCENES, stateHash, step, type PhysicsWorld } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { resolveScene } from '../scenes/index.js';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 /**
  * Our engine: any scene of the physics package's `SCENES` registry, built by the scene's own
@@ -24,85 +24,94 @@ export function bitphysicsThreadedEngine(threads: number): EngineAdapter {
 
 function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
   return {
-  name,
-  description: threads === 1
-    ? 'this framework (@bitphysics/physics): the scene builder from SCENES, stepped with step(world)'
-    : `this framework in a world with threads: ${threads} (worker threads on shared component arrays)`,
-  supports(scene: string): boolean {
-    return Object.prototype.hasOwnProperty.call(SCENES, scene);
-  },
-  async create(options: SceneRunOptions): Promise<EngineInstance> {
-    const resolved = resolveScene(options.scene);
-    if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
-    const { definition, bench } = resolved;
-    const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
-    const w: PhysicsWorld = createPhysicsWorld({ ...definition.worldOptions(sceneOptions), seed: options.seed, ...(threads > 1 ? { threads } : {}) });
-    const handles = definition.build(w, sceneOptions);
-    const probe = bench.probe?.(w, handles, options);
-    const ids = bench.bodyIds ? Uint32Array.from(bench.bodyIds(handles)) : Uint32Array.from(query(w, [w.components.Position]));
-    const dims = w.dimensions;
-    const notes = [
-      `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
-        `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : "no sleeping"}` +
-        (threads > 1 ? `, threads ${threads}` : ''),
-    ];
-    return {
-      engine: name,
-      notes,
-      benchBytes: ids.byteLength,
-      step(): void {
-        step(w);
-      },
-      stats() {
-        const extra = options.hash ? { ...(probe ? probe.extras() : {}), stateHash: stateHash(w) } : probe ? probe.extras() : undefined;
-        const bodies = probe?.bodies ? probe.bodies() : ids.length;
-        return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
-      },
-      beginTiming(steps: number): void {
-        probe?.beginTiming?.(steps);
-      },
-      afterStep: probe?.afterStep ? () => probe.afterStep!() : undefined,
-      endTiming(): void {
-        probe?.endTiming?.();
-      },
-      snapshot(): BodySnapshot {
-        const c = w.components;
-        const positions = new Float64Array(ids.length * dims);
-        const velocities = new Float64Array(ids.length * dims);
-        const radius = new Float64Array(ids.length);
-        let round = false;
-        for (let i = 0; i < ids.length; i++) {
-          const e = ids[i]!;
-          positions[i * dims] = c.Position.x[e]!;
-          positions[i * dims + 1] = c.Position.y[e]!;
-          if (dims === 3) positions[i * dims + 2] = c.Position.z[e]!;
-          velocities[i * dims] = c.Velocity.x[e]!;
-          velocities[i * dims + 1] = c.Velocity.y[e]!;
-          if (dims === 3) velocities[i * dims + 2] = c.Velocity.z[e]!;
-          radius[i] = c.Ball.radius[e]!;
-          if (radius[i]! > 0) round = true;
-        }
-        // 3D: orientations too (identity for a body without one), for scenes of boxes.
-        let orientations: Float64Array | undefined;
-        if (dims === 3) {
-          orientations = new Float64Array(4 * ids.length);
-          const Q = c.Orientation;
+    name,
+    description:
+      threads === 1
+        ? 'this framework (@bitphysics/physics): the scene builder from SCENES, stepped with step(world)'
+        : `this framework in a world with threads: ${threads} (worker threads on shared component arrays)`,
+    supports(scene: string): boolean {
+      return Object.hasOwn(SCENES, scene);
+    },
+    async create(options: SceneRunOptions): Promise<EngineInstance> {
+      const resolved = resolveScene(options.scene);
+      if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
+      const { definition, bench } = resolved;
+      const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
+      const w: PhysicsWorld = createPhysicsWorld({
+        ...definition.worldOptions(sceneOptions),
+        seed: options.seed,
+        ...(threads > 1 ? { threads } : {}),
+      });
+      const handles = definition.build(w, sceneOptions);
+      const probe = bench.probe?.(w, handles, options);
+      const ids = bench.bodyIds ? Uint32Array.from(bench.bodyIds(handles)) : Uint32Array.from(query(w, [w.components.Position]));
+      const dims = w.dimensions;
+      const notes = [
+        `bitphysics: dt ${fmtDt(w.dt)} s, substeps ${w.substeps}, solver substeps ${w.collision.settings.solverSubsteps}, ` +
+          `iterations ${w.collision.settings.solverIterations}, integrator ${w.integrator}, ${w.collision.sleep.enabled ? `sleeping allowed (${w.collision.sleep.linearSpeed} m/s, ${w.collision.sleep.timeToSleep} s)` : 'no sleeping'}` +
+          (threads > 1 ? `, threads ${threads}` : ''),
+      ];
+      return {
+        engine: name,
+        notes,
+        benchBytes: ids.byteLength,
+        step(): void {
+          step(w);
+        },
+        stats() {
+          const extra = options.hash ? { ...(probe ? probe.extras() : {}), stateHash: stateHash(w) } : probe ? probe.extras() : undefined;
+          const bodies = probe?.bodies ? probe.bodies() : ids.length;
+          return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
+        },
+        beginTiming(steps: number): void {
+          probe?.beginTiming?.(steps);
+        },
+        afterStep: probe?.afterStep ? () => probe.afterStep!() : undefined,
+        endTiming(): void {
+          probe?.endTiming?.();
+        },
+        snapshot(): BodySnapshot {
+          const c = w.components;
+          const positions = new Float64Array(ids.length * dims);
+          const velocities = new Float64Array(ids.length * dims);
+          const radius = new Float64Array(ids.length);
+          let round = false;
           for (let i = 0; i < ids.length; i++) {
             const e = ids[i]!;
-            const has = Q.w[e] !== undefined && Q.x[e]! ** 2 + Q.y[e]! ** 2 + Q.z[e]! ** 2 + Q.w[e]! ** 2 > 0;
-            orientations[4 * i] = has ? Q.x[e]! : 0; orientations[4 * i + 1] = has ? Q.y[e]! : 0;
-            orientations[4 * i + 2] = has ? Q.z[e]! : 0; orientations[4 * i + 3] = has ? Q.w[e]! : 1;
+            positions[i * dims] = c.Position.x[e]!;
+            positions[i * dims + 1] = c.Position.y[e]!;
+            if (dims === 3) positions[i * dims + 2] = c.Position.z[e]!;
+            velocities[i * dims] = c.Velocity.x[e]!;
+            velocities[i * dims + 1] = c.Velocity.y[e]!;
+            if (dims === 3) velocities[i * dims + 2] = c.Velocity.z[e]!;
+            radius[i] = c.Ball.radius[e]!;
+            if (radius[i]! > 0) round = true;
           }
-        }
-        const base = round ? { dimensions: dims, count: ids.length, positions, radius, velocities } : { dimensions: dims, count: ids.length, positions, velocities };
-        return orientations ? { ...base, orientations } : base;
-      },
-      dispose(): void {
-        // The world's typed arrays go with the instance; a threaded world's workers are stopped here.
-        disposeWorld(w);
-      },
-    };
-  },
+          // 3D: orientations too (identity for a body without one), for scenes of boxes.
+          let orientations: Float64Array | undefined;
+          if (dims === 3) {
+            orientations = new Float64Array(4 * ids.length);
+            const Q = c.Orientation;
+            for (let i = 0; i < ids.length; i++) {
+              const e = ids[i]!;
+              const has = Q.w[e] !== undefined && Q.x[e]! ** 2 + Q.y[e]! ** 2 + Q.z[e]! ** 2 + Q.w[e]! ** 2 > 0;
+              orientations[4 * i] = has ? Q.x[e]! : 0;
+              orientations[4 * i + 1] = has ? Q.y[e]! : 0;
+              orientations[4 * i + 2] = has ? Q.z[e]! : 0;
+              orientations[4 * i + 3] = has ? Q.w[e]! : 1;
+            }
+          }
+          const base = round
+            ? { dimensions: dims, count: ids.length, positions, radius, velocities }
+            : { dimensions: dims, count: ids.length, positions, velocities };
+          return orientations ? { ...base, orientations } : base;
+        },
+        dispose(): void {
+          // The world's typed arrays go with the instance; a threaded world's workers are stopped here.
+          disposeWorld(w);
+        },
+      };
+    },
   };
 }
 

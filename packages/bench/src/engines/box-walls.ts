@@ -17,10 +17,13 @@ export interface WallBox {
  * side walls at the corners so nothing leaks there.
  */
 export function boxWalls(layout: BallsInBoxLayout, thickness = 2): WallBox[] {
-  const [x0, y0] = layout.min, [x1, y1] = layout.max;
+  const [x0, y0] = layout.min,
+    [x1, y1] = layout.max;
   const t = thickness / 2;
-  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-  const hx = (x1 - x0) / 2 + thickness, hy = (y1 - y0) / 2 + thickness;
+  const cx = (x0 + x1) / 2,
+    cy = (y0 + y1) / 2;
+  const hx = (x1 - x0) / 2 + thickness,
+    hy = (y1 - y0) / 2 + thickness;
   return [
     { cx, cy: y0 - t, hx, hy: t },
     { cx, cy: y1 + t, hx, hy: t },
@@ -48,10 +51,15 @@ export interface WallBox3 {
  * past the box's edges, so the slabs overlap at the edges and corners and nothing leaks there.
  */
 export function boxWalls3d(min: readonly number[], max: readonly number[], thickness = 2): WallBox3[] {
-  const [x0, y0, z0] = min as [number, number, number], [x1, y1, z1] = max as [number, number, number];
+  const [x0, y0, z0] = min as [number, number, number],
+    [x1, y1, z1] = max as [number, number, number];
   const t = thickness / 2;
-  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, cz = (z0 + z1) / 2;
-  const hx = (x1 - x0) / 2 + thickness, hy = (y1 - y0) / 2 + thickness, hz = (z1 - z0) / 2 + thickness;
+  const cx = (x0 + x1) / 2,
+    cy = (y0 + y1) / 2,
+    cz = (z0 + z1) / 2;
+  const hx = (x1 - x0) / 2 + thickness,
+    hy = (y1 - y0) / 2 + thickness,
+    hz = (z1 - z0) / 2 + thickness;
   return [
     { cx, cy: y0 - t, cz, hx, hy: t, hz },
     { cx, cy: y1 + t, cz, hx, hy: t, hz },

@@ -1,11 +1,11 @@
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { pyramidLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { optimizedWasm } from './rapier2d.js';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 // The module's typings describe the Emscripten factory loosely; the adapter uses a small part of it.
-/* eslint-disable @typescript-eslint/no-explicit-any */
+// biome-ignore lint/suspicious/noExplicitAny: the module ships no usable typings
 type Box2D = any;
 
 let box2d: Promise<Box2D> | undefined;
@@ -48,7 +48,11 @@ export const box2dWasmEngine: EngineAdapter = {
     const B = await loadBox2d();
     const layout = pyramidLayout({ count: options.count });
     const made: Box2D[] = [];
-    const vec = (x: number, y: number): Box2D => { const v = new B.b2Vec2(x, y); made.push(v); return v; };
+    const vec = (x: number, y: number): Box2D => {
+      const v = new B.b2Vec2(x, y);
+      made.push(v);
+      return v;
+    };
     let world: Box2D | undefined = new B.b2World(vec(layout.gravity[0], layout.gravity[1]));
     const w = world;
     const groundDef = new B.b2BodyDef();
@@ -56,17 +60,23 @@ export const box2dWasmEngine: EngineAdapter = {
     const groundShape = new B.b2PolygonShape();
     groundShape.SetAsBox(layout.groundHalf[0], layout.groundHalf[1]);
     const groundFixture = new B.b2FixtureDef();
-    groundFixture.set_shape(groundShape); groundFixture.set_friction(layout.friction); groundFixture.set_restitution(layout.restitution);
+    groundFixture.set_shape(groundShape);
+    groundFixture.set_friction(layout.friction);
+    groundFixture.set_restitution(layout.restitution);
     w.CreateBody(groundDef).CreateFixture(groundFixture);
     const shape = new B.b2PolygonShape();
     shape.SetAsBox(layout.half, layout.half);
     // Box2D v2 polygons carry a skin (m_radius, b2_polygonRadius = 0.01 m) around their vertices: a core
     // of half - skin makes the box the layout's 1 x 1 m where it touches, and the density is raised so
     // its mass (computed from the core) is the layout's.
-    const skin: number = shape.get_m_radius(), core = layout.half - skin;
+    const skin: number = shape.get_m_radius(),
+      core = layout.half - skin;
     shape.SetAsBox(core, core);
     const fixture = new B.b2FixtureDef();
-    fixture.set_shape(shape); fixture.set_density(layout.density * (layout.half / core) ** 2); fixture.set_friction(layout.friction); fixture.set_restitution(layout.restitution);
+    fixture.set_shape(shape);
+    fixture.set_density(layout.density * (layout.half / core) ** 2);
+    fixture.set_friction(layout.friction);
+    fixture.set_restitution(layout.restitution);
     const def = new B.b2BodyDef();
     def.set_type(B.b2_dynamicBody);
     const n = layout.count;
@@ -94,7 +104,8 @@ export const box2dWasmEngine: EngineAdapter = {
         const positions = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
           const t = bodies[i].GetPosition();
-          positions[2 * i] = t.get_x(); positions[2 * i + 1] = t.get_y();
+          positions[2 * i] = t.get_x();
+          positions[2 * i + 1] = t.get_y();
         }
         return { dimensions: 2, count: n, positions };
       },

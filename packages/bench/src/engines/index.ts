@@ -1,11 +1,11 @@
-import type { EngineAdapter } from './types.js';
 import { bitphysicsEngine } from './bitphysics.js';
-import { rapier2dEngine } from './rapier2d.js';
-import { rapier3dEngine } from './rapier3d.js';
+import { box2dWasmEngine } from './box2d-wasm.js';
 import { matterEngine } from './matter.js';
 import { plainLoopEngine } from './plain-loop.js';
 import { planckEngine } from './planck.js';
-import { box2dWasmEngine } from './box2d-wasm.js';
+import { rapier2dEngine } from './rapier2d.js';
+import { rapier3dEngine } from './rapier3d.js';
+import type { EngineAdapter } from './types.js';
 
 /** Our engine's name; it runs in every benchmark and is the numerator of every ratio. */
 export const OURS = 'bitphysics';
@@ -23,7 +23,9 @@ export const ENGINES: Readonly<Record<string, EngineAdapter>> = Object.freeze({
 
 /** Names of the engines that can build `scene`, ours first. */
 export function enginesFor(scene: string): string[] {
-  return Object.values(ENGINES).filter((e) => e.supports(scene)).map((e) => e.name);
+  return Object.values(ENGINES)
+    .filter((e) => e.supports(scene))
+    .map((e) => e.name);
 }
 
-export type { EngineAdapter, EngineInstance, EngineStats, BodySnapshot, SceneRunOptions } from './types.js';
+export type { BodySnapshot, EngineAdapter, EngineInstance, EngineStats, SceneRunOptions } from './types.js';

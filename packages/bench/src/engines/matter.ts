@@ -1,6 +1,6 @@
 import { ballsInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { boxWalls } from './box-walls.js';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 type MatterModule = typeof import('matter-js');
 
@@ -86,12 +86,16 @@ export const matterEngine: EngineAdapter = {
         return { bodies: n, contacts };
       },
       snapshot(): BodySnapshot {
-        const positions = new Float64Array(2 * n), velocities = new Float64Array(2 * n);
+        const positions = new Float64Array(2 * n),
+          velocities = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
-          const q = balls[i]!.position, v = balls[i]!.velocity;
-          positions[2 * i] = q.x / S; positions[2 * i + 1] = -q.y / S;
+          const q = balls[i]!.position,
+            v = balls[i]!.velocity;
+          positions[2 * i] = q.x / S;
+          positions[2 * i + 1] = -q.y / S;
           // matter's velocity is px per its base step (1000/60 ms), y down.
-          velocities[2 * i] = (v.x / S) * 60; velocities[2 * i + 1] = (-v.y / S) * 60;
+          velocities[2 * i] = (v.x / S) * 60;
+          velocities[2 * i + 1] = (-v.y / S) * 60;
         }
         return { dimensions: 2, count: n, positions, radius: layout.radius, velocities };
       },

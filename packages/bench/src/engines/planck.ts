@@ -33,7 +33,9 @@ export const planckEngine: EngineAdapter = {
     const layout = pyramidLayout({ count: options.count });
     const world = new P.World({ gravity: { x: layout.gravity[0], y: layout.gravity[1] } });
     world.createBody({ type: 'static', position: { x: 0, y: -layout.groundHalf[1] } }).createFixture({
-      shape: new P.Box(layout.groundHalf[0], layout.groundHalf[1]), friction: layout.friction, restitution: layout.restitution,
+      shape: new P.Box(layout.groundHalf[0], layout.groundHalf[1]),
+      friction: layout.friction,
+      restitution: layout.restitution,
     });
     const n = layout.count;
     const bodies = new Array<ReturnType<typeof world.createBody>>(n);
@@ -41,7 +43,8 @@ export const planckEngine: EngineAdapter = {
     // Box2D v2 polygons carry a skin of Settings.polygonRadius (0.01 m) around their vertices: a core of
     // half - skin makes the box the layout's 1 x 1 m where it touches, and the density is raised so its
     // mass (computed from the core) is the layout's.
-    const skin = P.Settings.polygonRadius, core = layout.half - skin;
+    const skin = P.Settings.polygonRadius,
+      core = layout.half - skin;
     const density = layout.density * (layout.half / core) ** 2;
     for (let i = 0; i < n; i++) {
       const body = world.createBody({ type: 'dynamic', position: { x: p[2 * i]!, y: p[2 * i + 1]! } });
@@ -63,7 +66,8 @@ export const planckEngine: EngineAdapter = {
         const positions = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
           const t = bodies[i]!.getPosition();
-          positions[2 * i] = t.x; positions[2 * i + 1] = t.y;
+          positions[2 * i] = t.x;
+          positions[2 * i + 1] = t.y;
         }
         return { dimensions: 2, count: n, positions };
       },

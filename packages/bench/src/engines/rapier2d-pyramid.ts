@@ -14,14 +14,20 @@ export function createRapierPyramid(R: Rapier, options: SceneRunOptions): Engine
   const w = world;
   w.timestep = 1 / 60;
   const ground = w.createRigidBody(R.RigidBodyDesc.fixed().setTranslation(0, -layout.groundHalf[1]));
-  w.createCollider(R.ColliderDesc.cuboid(layout.groundHalf[0], layout.groundHalf[1]).setFriction(layout.friction).setRestitution(layout.restitution), ground);
+  w.createCollider(
+    R.ColliderDesc.cuboid(layout.groundHalf[0], layout.groundHalf[1]).setFriction(layout.friction).setRestitution(layout.restitution),
+    ground,
+  );
   const n = layout.count;
   const bodies: Array<InstanceType<Rapier['RigidBody']>> = new Array(n);
   const p = layout.positions;
   for (let i = 0; i < n; i++) {
     const body = w.createRigidBody(R.RigidBodyDesc.dynamic().setTranslation(p[2 * i]!, p[2 * i + 1]!));
     w.createCollider(
-      R.ColliderDesc.cuboid(layout.half, layout.half).setDensity(layout.density).setFriction(layout.friction).setRestitution(layout.restitution),
+      R.ColliderDesc.cuboid(layout.half, layout.half)
+        .setDensity(layout.density)
+        .setFriction(layout.friction)
+        .setRestitution(layout.restitution),
       body,
     );
     bodies[i] = body;
@@ -44,7 +50,8 @@ export function createRapierPyramid(R: Rapier, options: SceneRunOptions): Engine
       const positions = new Float64Array(2 * n);
       for (let i = 0; i < n; i++) {
         const t = bodies[i]!.translation();
-        positions[2 * i] = t.x; positions[2 * i + 1] = t.y;
+        positions[2 * i] = t.x;
+        positions[2 * i + 1] = t.y;
       }
       return { dimensions: 2, count: n, positions };
     },

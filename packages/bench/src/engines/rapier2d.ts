@@ -1,8 +1,8 @@
 import { setFlagsFromString } from 'node:v8';
 import { ballsInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 import { boxWalls } from './box-walls.js';
 import { createRapierPyramid } from './rapier2d-pyramid.js';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 type Rapier = typeof import('@dimforge/rapier2d-compat').default;
 
@@ -111,17 +111,23 @@ export const rapier2dEngine: EngineAdapter = {
           w.contactPairsWith(c, (other) => {
             // Each ball-ball pair once (from its lower handle); ball-wall pairs from the ball.
             if (!walls.has(other.handle) && other.handle < h) return;
-            w.contactPair(c, other, (manifold) => { contacts += manifold.numContacts(); });
+            w.contactPair(c, other, (manifold) => {
+              contacts += manifold.numContacts();
+            });
           });
         }
         return { bodies: n, contacts, extra: { sleeping } };
       },
       snapshot(): BodySnapshot {
-        const positions = new Float64Array(2 * n), velocities = new Float64Array(2 * n);
+        const positions = new Float64Array(2 * n),
+          velocities = new Float64Array(2 * n);
         for (let i = 0; i < n; i++) {
-          const t = bodies[i]!.translation(), v = bodies[i]!.linvel();
-          positions[2 * i] = t.x; positions[2 * i + 1] = t.y;
-          velocities[2 * i] = v.x; velocities[2 * i + 1] = v.y;
+          const t = bodies[i]!.translation(),
+            v = bodies[i]!.linvel();
+          positions[2 * i] = t.x;
+          positions[2 * i + 1] = t.y;
+          velocities[2 * i] = v.x;
+          velocities[2 * i + 1] = v.y;
         }
         return { dimensions: 2, count: n, positions, radius: layout.radius, velocities };
       },

@@ -1,8 +1,8 @@
 import { boxPile3DLayout, pyramid3DLayout, spheresInBoxLayout } from '@bitphysics/physics';
-import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
+import { asleepSteps } from '../scenes/box-pile-3d.js';
 import { boxWalls3d } from './box-walls.js';
 import { optimizedWasm } from './rapier2d.js';
-import { asleepSteps } from '../scenes/box-pile-3d.js';
+import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
 type Rapier = typeof import('@dimforge/rapier3d-compat').default;
 
@@ -52,15 +52,21 @@ export const rapier3dEngine: EngineAdapter = {
     if (options.scene !== 'spheres-in-box') throw new RangeError(`rapier3d: does not support scene "${options.scene}"`);
     const R = await loadRapier3d();
     const layout = spheresInBoxLayout({ count: options.count, seed: options.seed });
-    let world: InstanceType<Rapier['World']> | undefined = new R.World({ x: layout.gravity[0], y: layout.gravity[1], z: layout.gravity[2] });
+    let world: InstanceType<Rapier['World']> | undefined = new R.World({
+      x: layout.gravity[0],
+      y: layout.gravity[1],
+      z: layout.gravity[2],
+    });
     const w = world;
     w.timestep = 1 / 60;
     const ground = w.createRigidBody(R.RigidBodyDesc.fixed());
     const walls = new Set<number>();
     for (const b of boxWalls3d(layout.min, layout.max)) {
       const collider = w.createCollider(
-        R.ColliderDesc.cuboid(b.hx, b.hy, b.hz).setTranslation(b.cx, b.cy, b.cz)
-          .setRestitution(layout.restitution).setFriction(layout.friction),
+        R.ColliderDesc.cuboid(b.hx, b.hy, b.hz)
+          .setTranslation(b.cx, b.cy, b.cz)
+          .setRestitution(layout.restitution)
+          .setFriction(layout.friction),
         ground,
       );
       walls.add(collider.handle);
@@ -99,7 +105,9 @@ export const rapier3dEngine: EngineAdapter = {
           w.contactPairsWith(c, (other) => {
             // Each sphere-sphere pair once (from its lower handle); sphere-wall pairs from the sphere.
             if (!walls.has(other.handle) && other.handle < h) return;
-            w.contactPair(c, other, (manifold) => { contacts += manifold.numContacts(); });
+            w.contactPair(c, other, (manifold) => {
+              contacts += manifold.numContacts();
+            });
           });
         }
         return { bodies: n, contacts, extra: { sleeping } };
@@ -108,7 +116,9 @@ export const rapier3dEngine: EngineAdapter = {
         const positions = new Float64Array(3 * n);
         for (let i = 0; i < n; i++) {
           const t = bodies[i]!.translation();
-          positions[3 * i] = t.x; positions[3 * i + 1] = t.y; positions[3 * i + 2] = t.z;
+          positions[3 * i] = t.x;
+          positions[3 * i + 1] = t.y;
+          positions[3 * i + 2] = t.z;
         }
         return { dimensions: 3, count: n, positions, radius: layout.radius };
       },
@@ -137,24 +147,40 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
   const w = world;
   w.timestep = 1 / 60;
   const ground = w.createRigidBody(R.RigidBodyDesc.fixed());
-  const walls = 'min' in layout
-    ? boxWalls3d(layout.min, layout.max)
-    : [{ cx: 0, cy: -0.5, cz: 0, hx: (layout.base * layout.pitch) / 2 + 10, hy: 0.5, hz: (layout.base * layout.pitch) / 2 + 10 }];
+  const walls =
+    'min' in layout
+      ? boxWalls3d(layout.min, layout.max)
+      : [{ cx: 0, cy: -0.5, cz: 0, hx: (layout.base * layout.pitch) / 2 + 10, hy: 0.5, hz: (layout.base * layout.pitch) / 2 + 10 }];
   for (const b of walls) {
-    w.createCollider(R.ColliderDesc.cuboid(b.hx, b.hy, b.hz).setTranslation(b.cx, b.cy, b.cz).setRestitution(layout.restitution).setFriction(layout.friction), ground);
+    w.createCollider(
+      R.ColliderDesc.cuboid(b.hx, b.hy, b.hz)
+        .setTranslation(b.cx, b.cy, b.cz)
+        .setRestitution(layout.restitution)
+        .setFriction(layout.friction),
+      ground,
+    );
   }
-  const n = layout.count, h = layout.half, p = layout.positions;
+  const n = layout.count,
+    h = layout.half,
+    p = layout.positions;
   const bodies: Array<InstanceType<Rapier['RigidBody']>> = new Array(n);
   for (let i = 0; i < n; i++) {
     const body = w.createRigidBody(R.RigidBodyDesc.dynamic().setTranslation(p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!));
-    w.createCollider(R.ColliderDesc.cuboid(h, h, h).setDensity(layout.mass / (8 * h * h * h)).setRestitution(layout.restitution).setFriction(layout.friction), body);
+    w.createCollider(
+      R.ColliderDesc.cuboid(h, h, h)
+        .setDensity(layout.mass / (8 * h * h * h))
+        .setRestitution(layout.restitution)
+        .setFriction(layout.friction),
+      body,
+    );
     bodies[i] = body;
   }
   const ip = w.integrationParameters;
   const notes = [
     `rapier3d ${R.version()}: dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, ` +
       `${ip.numInternalPgsIterations} internal PGS iteration, sleeping allowed with Rapier's default thresholds (defaults); ` +
-      (pile ? 'six static cuboid walls' : 'a static cuboid ground') + '; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
+      (pile ? 'six static cuboid walls' : 'a static cuboid ground') +
+      '; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
   ];
   const sleep = asleepSteps(n);
   let steps = 0;
@@ -171,22 +197,32 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
       sleep.record(asleep, steps);
     },
     stats() {
-      let contacts = 0, sleeping = 0;
+      let contacts = 0,
+        sleeping = 0;
       for (let i = 0; i < n; i++) if (bodies[i]!.isSleeping()) sleeping++;
       w.forEachCollider((c) => {
         w.contactPairsWith(c, (other) => {
           if (other.handle < c.handle) return; // each pair once
-          w.contactPair(c, other, (manifold) => { contacts += manifold.numContacts(); });
+          w.contactPair(c, other, (manifold) => {
+            contacts += manifold.numContacts();
+          });
         });
       });
       return { bodies: n, contacts, extra: { sleeping, ...sleep.fields() } };
     },
     snapshot(): BodySnapshot {
-      const positions = new Float64Array(3 * n), orientations = new Float64Array(4 * n);
+      const positions = new Float64Array(3 * n),
+        orientations = new Float64Array(4 * n);
       for (let i = 0; i < n; i++) {
-        const t = bodies[i]!.translation(), q = bodies[i]!.rotation();
-        positions[3 * i] = t.x; positions[3 * i + 1] = t.y; positions[3 * i + 2] = t.z;
-        orientations[4 * i] = q.x; orientations[4 * i + 1] = q.y; orientations[4 * i + 2] = q.z; orientations[4 * i + 3] = q.w;
+        const t = bodies[i]!.translation(),
+          q = bodies[i]!.rotation();
+        positions[3 * i] = t.x;
+        positions[3 * i + 1] = t.y;
+        positions[3 * i + 2] = t.z;
+        orientations[4 * i] = q.x;
+        orientations[4 * i + 1] = q.y;
+        orientations[4 * i + 2] = q.z;
+        orientations[4 * i + 3] = q.w;
       }
       return { dimensions: 3, count: n, positions, orientations };
     },

@@ -8,7 +8,15 @@ import { ENGINES } from '../engines/index.js';
 import type { EngineInstance } from '../engines/types.js';
 import { collectGarbage, sampleMemory } from '../memory.js';
 import { buildMeasured, runBlock } from '../runner.js';
-import { Flag, type CreatedReply, type EngineReply, type EngineRequest, type EngineThreadData, type RunReply, type StatsReply } from './isolated-engine.js';
+import {
+  type CreatedReply,
+  type EngineReply,
+  type EngineRequest,
+  type EngineThreadData,
+  Flag,
+  type RunReply,
+  type StatsReply,
+} from './isolated-engine.js';
 
 const { engine, port, flag } = workerData as EngineThreadData;
 let instance: EngineInstance | undefined;
@@ -28,7 +36,12 @@ async function handle(req: EngineRequest): Promise<unknown> {
       await adapter.prepare?.();
       const measured = await buildMeasured(() => adapter.create(req.options));
       instance = measured.instance;
-      const reply: CreatedReply = { engine: instance.engine, notes: instance.notes, setupMs: measured.setupMs, engineMemoryMB: measured.engineMemoryMB };
+      const reply: CreatedReply = {
+        engine: instance.engine,
+        notes: instance.notes,
+        setupMs: measured.setupMs,
+        engineMemoryMB: measured.engineMemoryMB,
+      };
       return reply;
     }
     case 'run': {
@@ -57,17 +70,19 @@ async function handle(req: EngineRequest): Promise<unknown> {
 }
 
 port.on('message', (req: EngineRequest) => {
-  handle(req).then(
-    (value): EngineReply => ({ ok: true, value }),
-    (error: unknown): EngineReply => {
-      const e = error instanceof Error ? error : new Error(String(error));
-      return { ok: false, name: e.name, message: e.message, stack: e.stack };
-    },
-  ).then((reply) => {
-    port.postMessage(reply);
-    Atomics.store(flag, 0, Flag.Replied);
-    Atomics.notify(flag, 0);
-  });
+  handle(req)
+    .then(
+      (value): EngineReply => ({ ok: true, value }),
+      (error: unknown): EngineReply => {
+        const e = error instanceof Error ? error : new Error(String(error));
+        return { ok: false, name: e.name, message: e.message, stack: e.stack };
+      },
+    )
+    .then((reply) => {
+      port.postMessage(reply);
+      Atomics.store(flag, 0, Flag.Replied);
+      Atomics.notify(flag, 0);
+    });
 });
 
 // A thread that ends for any reason releases a waiting bench thread (which then reports it).

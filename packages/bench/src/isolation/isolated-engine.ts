@@ -1,4 +1,4 @@
-import { MessageChannel, receiveMessageOnPort, Worker, type MessagePort } from 'node:worker_threads';
+import { MessageChannel, type MessagePort, receiveMessageOnPort, Worker } from 'node:worker_threads';
 import type { BodySnapshot, EngineAdapter, EngineInstance, EngineStats, SceneRunOptions } from '../engines/types.js';
 
 /**

@@ -1,6 +1,6 @@
-import { ballsInBoxLayout, type BallsInBoxHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
+import { type BallsInBoxHandles, ballsInBoxLayout } from '@bitphysics/physics';
 import { maxBallOverlap, maxWallPenetration } from '../quality.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 const percent = (v: ExtraValue): string => (typeof v === 'number' ? `${v.toFixed(2)}` : String(v));
 
@@ -19,7 +19,9 @@ export const ballsInBoxBench: BenchScene = {
   maxCount: 10_000_000,
   params: {
     restitution: {
-      default: 0.5, min: 0, max: 1,
+      default: 0.5,
+      min: 0,
+      max: 1,
       description: 'balls-in-box: restitution of balls and walls (1: perfectly elastic, for energyDrift)',
     },
   },
@@ -35,8 +37,10 @@ export const ballsInBoxBench: BenchScene = {
     const layout = ballsInBoxLayout({ count: options.count, seed: options.seed });
     const r = typeof radius === 'number' ? radius : layout.radius;
     const wall = maxWallPenetration(snapshot.positions, radius, snapshot.dimensions, layout.min, layout.max);
-    const g = -layout.gravity[1], m = layout.mass;
-    let e0 = 0, e1 = 0;
+    const g = -layout.gravity[1],
+      m = layout.mass;
+    let e0 = 0,
+      e1 = 0;
     for (let i = 0; i < layout.count; i++) e0 += m * g * layout.positions[2 * i + 1]!;
     const v = snapshot.velocities;
     for (let i = 0; i < snapshot.count; i++) {

@@ -1,7 +1,7 @@
-import { boxPile3DLayout, type BoxPile3DHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
+import { type BoxPile3DHandles, boxPile3DLayout } from '@bitphysics/physics';
 import { maxBoxOverlap3D, maxBoxWallPenetration3D } from '../quality-boxes3d.js';
 import { round } from './format.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 /**
  * Tracks when a pile of `count` bodies first had half and all of them asleep: `record(asleep, step)`
@@ -10,8 +10,12 @@ import { round } from './format.js';
  * `allAsleepStep`, each that step number or null if it never happened in the timed steps. Used by
  * our probe and by the rapier3d adapter, so both engines are counted the same way.
  */
-export function asleepSteps(count: number): { record(asleep: number, step: number): void; fields(): { halfAsleepStep: number | null; allAsleepStep: number | null } } {
-  let half: number | null = null, all: number | null = null;
+export function asleepSteps(count: number): {
+  record(asleep: number, step: number): void;
+  fields(): { halfAsleepStep: number | null; allAsleepStep: number | null };
+} {
+  let half: number | null = null,
+    all: number | null = null;
   return {
     record(asleep, step) {
       if (half === null && 2 * asleep >= count) half = step;
@@ -64,7 +68,7 @@ export const boxPile3DBench: BenchScene = {
     { key: 'allAsleepStep', label: 'all asleep', format: (v) => (v === null ? '-' : String(v)) },
   ],
   notes: [
-    'box-pile-3d: 1 m cubes (1 kg, friction 0.6, restitution 0.1) from a jittered 1.5 m grid about eight layers deep into a closed box, gravity -10 m/s^2; 300 timed steps after 30 of warm-up by default (the top layer lands after ~1.5 s, the pile sleeps by step ~300): the warm-up holds the first JIT compilation and the bottom layer\'s landing (~0.2 s); --warmup 0 --steps 330 times everything from the drop.',
+    "box-pile-3d: 1 m cubes (1 kg, friction 0.6, restitution 0.1) from a jittered 1.5 m grid about eight layers deep into a closed box, gravity -10 m/s^2; 300 timed steps after 30 of warm-up by default (the top layer lands after ~1.5 s, the pile sleeps by step ~300): the warm-up holds the first JIT compilation and the bottom layer's landing (~0.2 s); --warmup 0 --steps 330 times everything from the drop.",
     'half asleep / all asleep: the first step (counted from the drop, warm-up included) after which half / all of the boxes were asleep, within the timed steps (-: not within them).',
     'mean ms covers every timed step, landing and settling included (the median of a pile that ends asleep is mostly sleeping steps): the whole-run measure.',
     'max overlap: largest penetration depth between two boxes after the last step (separating-axis test of the 15 axes), in % of the half extent (goal <= 5 %); wall pen.: deepest box corner past a wall, same unit.',

@@ -1,8 +1,8 @@
-import { particlesExpired, slotOf, type PhysicsWorld } from '@bitphysics/physics';
-import type { ExtraColumn, ExtraValue, SceneProbe } from './types.js';
+import { type PhysicsWorld, particlesExpired, slotOf } from '@bitphysics/physics';
 import { collectGarbage } from '../memory.js';
 import { summarize } from '../stats.js';
 import { round, sig } from './format.js';
+import type { ExtraColumn, ExtraValue, SceneProbe } from './types.js';
 
 const MB = 2 ** 20;
 
@@ -11,7 +11,10 @@ function heapBytes(): number {
   return process.memoryUsage().heapUsed;
 }
 
-const num = (digits: number) => (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(digits) : String(v));
+const num =
+  (digits: number) =>
+  (v: ExtraValue): string =>
+    typeof v === 'number' ? v.toFixed(digits) : String(v);
 
 /**
  * The measurements of a particle churn scene (fireworks, fountain) on our world, taken after every
@@ -34,26 +37,51 @@ const num = (digits: number) => (v: ExtraValue): string => (typeof v === 'number
 export function churnProbe(world: PhysicsWorld, emitters: readonly number[]): SceneProbe {
   const others = world.entityIndex.aliveCount; // the emitters: everything alive before the first particle
   const slots = emitters.map(slotOf);
-  const sum = (of: Float64Array): number => { let s = 0; for (let i = 0; i < slots.length; i++) s += of[slots[i]!]!; return s; };
+  const sum = (of: Float64Array): number => {
+    let s = 0;
+    for (let i = 0; i < slots.length; i++) s += of[slots[i]!]!;
+    return s;
+  };
   const spawnedNow = (): number => sum(world.components.Emitter.spawned);
   const droppedNow = (): number => sum(world.components.Emitter.dropped);
 
-  let live = new Float64Array(0), spawned = new Float64Array(0), expired = new Float64Array(0);
-  let k = 0, lastSpawned = 0, lastExpired = 0, lastHeap = 0, allocated = 0, samplerBytes = 0;
-  let liveStart = 0, droppedStart = 0, droppedEnd = 0, maxEntities = 0;
-  let heapStart = NaN, heapEnd = NaN, heapEndGc = NaN;
+  let live = new Float64Array(0),
+    spawned = new Float64Array(0),
+    expired = new Float64Array(0);
+  let k = 0,
+    lastSpawned = 0,
+    lastExpired = 0,
+    lastHeap = 0,
+    allocated = 0,
+    samplerBytes = 0;
+  let liveStart = 0,
+    droppedStart = 0,
+    droppedEnd = 0,
+    maxEntities = 0;
+  let heapStart = NaN,
+    heapEnd = NaN,
+    heapEndGc = NaN;
   return {
     beginTiming(steps: number): void {
-      live = new Float64Array(steps); spawned = new Float64Array(steps); expired = new Float64Array(steps);
+      live = new Float64Array(steps);
+      spawned = new Float64Array(steps);
+      expired = new Float64Array(steps);
       k = 0;
-      lastSpawned = spawnedNow(); lastExpired = particlesExpired(world); droppedStart = droppedNow();
+      lastSpawned = spawnedNow();
+      lastExpired = particlesExpired(world);
+      droppedStart = droppedNow();
       liveStart = world.entityIndex.aliveCount - others;
       collectGarbage();
       collectGarbage();
       // What one heap sample allocates (process.memoryUsage builds an object), to subtract below.
       const calibrate = 256;
-      let rises = 0, prev = heapBytes();
-      for (let i = 0; i < calibrate; i++) { const now = heapBytes(); if (now > prev) rises += now - prev; prev = now; }
+      let rises = 0,
+        prev = heapBytes();
+      for (let i = 0; i < calibrate; i++) {
+        const now = heapBytes();
+        if (now > prev) rises += now - prev;
+        prev = now;
+      }
       samplerBytes = rises / calibrate;
       collectGarbage();
       heapStart = heapBytes();
@@ -69,9 +97,11 @@ export function churnProbe(world: PhysicsWorld, emitters: readonly number[]): Sc
       if (alive > maxEntities) maxEntities = alive;
       live[k] = alive - others;
       const s = spawnedNow();
-      spawned[k] = s - lastSpawned; lastSpawned = s;
+      spawned[k] = s - lastSpawned;
+      lastSpawned = s;
       const ex = particlesExpired(world);
-      expired[k] = ex - lastExpired; lastExpired = ex;
+      expired[k] = ex - lastExpired;
+      lastExpired = ex;
       k++;
     },
     endTiming(): void {
@@ -87,9 +117,13 @@ export function churnProbe(world: PhysicsWorld, emitters: readonly number[]): Sc
     extras() {
       const n = Math.max(1, k);
       const liveSummary = k > 0 ? summarize(live.subarray(0, k)) : { min: 0, median: 0, max: 0 };
-      let spawnedSum = 0, expiredSum = 0, noSpawn = 0, noExpiry = 0;
+      let spawnedSum = 0,
+        expiredSum = 0,
+        noSpawn = 0,
+        noExpiry = 0;
       for (let i = 0; i < k; i++) {
-        spawnedSum += spawned[i]!; expiredSum += expired[i]!;
+        spawnedSum += spawned[i]!;
+        expiredSum += expired[i]!;
         if (spawned[i] === 0) noSpawn++;
         if (expired[i] === 0) noExpiry++;
       }
@@ -136,5 +170,5 @@ export const CHURN_NOTES: readonly string[] = [
   'live: particles alive after each timed step (min/median/max in --json); spawned/expired/recycled per step: means over the timed steps ' +
     '(recycled: removed early by the recycle-oldest policy of a full world).',
   'heap: V8 heap used at the start of the timed run and at its end, both after a full garbage collection; MB/1000 steps: their difference ' +
-    'per 1,000 steps (flat heap: ~0); alloc KB/step: sum of the heap\'s step-to-step rises per step, less the sampling\'s own allocation.',
+    "per 1,000 steps (flat heap: ~0); alloc KB/step: sum of the heap's step-to-step rises per step, less the sampling's own allocation.",
 ];

@@ -1,5 +1,5 @@
-import type { BenchScene } from './types.js';
 import { CHURN_COLUMNS, CHURN_NOTES, churnProbe } from './churn-probe.js';
+import type { BenchScene } from './types.js';
 
 /**
  * Bench side of `fireworks` (2D steady churn: shells burst into sparks that burst into embers, spawn

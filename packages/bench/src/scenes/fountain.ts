@@ -1,5 +1,5 @@
-import type { BenchScene } from './types.js';
 import { CHURN_COLUMNS, CHURN_NOTES, churnProbe } from './churn-probe.js';
+import type { BenchScene } from './types.js';
 
 /**
  * Bench side of `fountain` (churn at scale: count live bare drops, count / 50 born and as many expiring

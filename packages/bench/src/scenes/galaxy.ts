@@ -1,12 +1,19 @@
 import { performance } from 'node:perf_hooks';
-import { query } from 'bitecs';
 import {
-  createPhysicsWorld, directField, galaxy, gravityFieldError, gravityMomentumRate, linearMomentum, sampleIndices, step,
+  createPhysicsWorld,
+  directField,
+  galaxy,
+  gravityFieldError,
+  gravityMomentumRate,
+  linearMomentum,
   type PhysicsWorld,
+  sampleIndices,
+  step,
 } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
+import { query } from 'bitecs';
 import { median } from '../stats.js';
 import { sig } from './format.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 /** Opening angle the bench uses unless `--theta` says otherwise (the physics engineer's recommendation: median force error ~0.07%). */
 export const GALAXY_DEFAULT_THETA = 0.7;
@@ -15,7 +22,10 @@ export const GALAXY_SAMPLE = 1000;
 /** Largest world the pairwise direct method is timed at for `directSpeedupPairwise` (scaled up by (N / M)^2). */
 export const GALAXY_DIRECT_WORLD_MAX = 3000;
 
-const fixed = (digits: number) => (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(digits) : String(v));
+const fixed =
+  (digits: number) =>
+  (v: ExtraValue): string =>
+    typeof v === 'number' ? v.toFixed(digits) : String(v);
 
 /**
  * Bench side of `galaxy` (2D, mutual gravity by Barnes-Hut): `--theta` (opening angle, default 0.7,
@@ -41,7 +51,9 @@ export const galaxyBench: BenchScene = {
   defaults: { steps: 30, warmup: 3 },
   params: {
     theta: {
-      default: GALAXY_DEFAULT_THETA, min: 0, exclusiveMin: true,
+      default: GALAXY_DEFAULT_THETA,
+      min: 0,
+      exclusiveMin: true,
       description: 'galaxy: Barnes-Hut opening angle (smaller: more accurate, slower)',
     },
   },
@@ -52,7 +64,8 @@ export const galaxyBench: BenchScene = {
     return (handles as { stars: Uint32Array }).stars;
   },
   probe(world, _handles, options) {
-    const p0 = new Float64Array(3), p1 = new Float64Array(3);
+    const p0 = new Float64Array(3),
+      p1 = new Float64Array(3);
     let drift = NaN;
     return {
       beginTiming(): void {
@@ -84,7 +97,8 @@ export const galaxyBench: BenchScene = {
     };
   },
   derive(_engine, msPerStep, extra) {
-    const direct = extra.directMsEstimate, pairwise = extra.directPairwiseMsEstimate;
+    const direct = extra.directMsEstimate,
+      pairwise = extra.directPairwiseMsEstimate;
     return {
       directSpeedup: typeof direct === 'number' ? sig(direct / msPerStep.median, 4) : null,
       directSpeedupPairwise: typeof pairwise === 'number' ? sig(pairwise / msPerStep.median, 4) : null,
@@ -101,9 +115,9 @@ export const galaxyBench: BenchScene = {
   notes: [
     'force err: median relative error of the Barnes-Hut field against the direct sum on 1,000 stars spread evenly over the disc (gravityFieldError).',
     'direct ms (est.): directField for those 1,000 stars against all N timed (median of 3) and scaled by N / 1000 (N^2 pair terms, no third-law halving, no integration); ' +
-      'x faster than direct = that / median Barnes-Hut step. x vs pairwise direct: the physics package\'s own direct method (N(N-1)/2 pairs) timed as whole steps of the ' +
+      "x faster than direct = that / median Barnes-Hut step. x vs pairwise direct: the physics package's own direct method (N(N-1)/2 pairs) timed as whole steps of the " +
       'same scene at min(N, 3000) stars (median of 5) and scaled by (N / M)^2.',
-    '|sum F|/sum|F|: net mutual-gravity force over the sum of magnitudes (gravityMomentumRate), the tree\'s momentum drift rate; momentumDriftRelative in --json: |P_end - P_start| / sum m|v| over the timed steps.',
+    "|sum F|/sum|F|: net mutual-gravity force over the sum of magnitudes (gravityMomentumRate), the tree's momentum drift rate; momentumDriftRelative in --json: |P_end - P_start| / sum m|v| over the timed steps.",
   ],
 };
 
@@ -128,10 +142,16 @@ export function timeDirectField(world: PhysicsWorld, sample: number): number {
   const c = world.components;
   const ents = query(world, [c.MutualGravity, c.Position, c.Mass]);
   const n = ents.length;
-  const x = new Float64Array(n), y = new Float64Array(n), z = new Float64Array(n), m = new Float64Array(n);
+  const x = new Float64Array(n),
+    y = new Float64Array(n),
+    z = new Float64Array(n),
+    m = new Float64Array(n);
   for (let i = 0; i < n; i++) {
     const e = ents[i]!;
-    x[i] = c.Position.x[e]!; y[i] = c.Position.y[e]!; z[i] = c.Position.z[e]!; m[i] = c.Mass.value[e]!;
+    x[i] = c.Position.x[e]!;
+    y[i] = c.Position.y[e]!;
+    z[i] = c.Position.z[e]!;
+    m[i] = c.Mass.value[e]!;
   }
   const targets = sampleIndices(n, sample);
   const out = new Float64Array(3 * targets.length);

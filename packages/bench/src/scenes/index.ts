@@ -1,16 +1,16 @@
 import { MAX_CAPACITY, SCENES, type SceneDefinition } from '@bitphysics/physics';
-import type { BenchScene } from './types.js';
 import { ballsInBoxBench } from './balls-in-box.js';
-import { particlesBench } from './particles.js';
-import { spheresInBoxBench } from './spheres-in-box.js';
-import { galaxyBench } from './galaxy.js';
+import { boxPile3DBench } from './box-pile-3d.js';
+import { clothBench } from './cloth.js';
 import { fireworksBench } from './fireworks.js';
 import { fountainBench } from './fountain.js';
-import { pyramidBench } from './pyramid.js';
+import { galaxyBench } from './galaxy.js';
 import { jointGridBench } from './joint-grid.js';
-import { clothBench } from './cloth.js';
-import { boxPile3DBench } from './box-pile-3d.js';
+import { particlesBench } from './particles.js';
+import { pyramidBench } from './pyramid.js';
 import { pyramid3DBench } from './pyramid-3d.js';
+import { spheresInBoxBench } from './spheres-in-box.js';
+import type { BenchScene } from './types.js';
 
 /** Bench-side scene adapters by scene name; add one a scene that needs a limit, ids or extra fields. */
 const BENCH_SCENES: Readonly<Record<string, BenchScene>> = Object.freeze({
@@ -42,7 +42,7 @@ export function sceneNames(): string[] {
 
 /** The scene called `name`, or undefined if the physics package has none by that name. */
 export function resolveScene(name: string): ResolvedScene | undefined {
-  if (!Object.prototype.hasOwnProperty.call(SCENES, name)) return undefined;
+  if (!Object.hasOwn(SCENES, name)) return undefined;
   const definition = SCENES[name]!;
   const bench = BENCH_SCENES[name] ?? { name, maxCount: MAX_CAPACITY };
   return { definition, bench };

@@ -1,5 +1,5 @@
-import type { BenchScene, ExtraValue } from './types.js';
 import { round } from './format.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 const metres = (v: ExtraValue): string => (typeof v === 'number' ? v.toExponential(2) : String(v));
 
@@ -15,8 +15,12 @@ export const jointGridBench: BenchScene = {
   probe(world) {
     let worst = 0;
     return {
-      beginTiming(): void { worst = 0; },
-      afterStep(): void { if (world.joints.stats.maxError > worst) worst = world.joints.stats.maxError; },
+      beginTiming(): void {
+        worst = 0;
+      },
+      afterStep(): void {
+        if (world.joints.stats.maxError > worst) worst = world.joints.stats.maxError;
+      },
       extras(): Record<string, ExtraValue> {
         return { maxJointError: round(worst, 6), lastJointError: round(world.joints.stats.maxError, 6), joints: world.joints.stats.rows };
       },

@@ -19,6 +19,10 @@ export const particlesBench: BenchScene = {
     return { positionChecksum: sum };
   },
   columns: [
-    { key: 'positionChecksum', label: 'sum of coords (m)', format: (v: ExtraValue) => (typeof v === 'number' ? v.toPrecision(12) : String(v)) },
+    {
+      key: 'positionChecksum',
+      label: 'sum of coords (m)',
+      format: (v: ExtraValue) => (typeof v === 'number' ? v.toPrecision(12) : String(v)),
+    },
   ],
 };

@@ -1,6 +1,6 @@
-import { pyramid3DLayout, type Pyramid3DHandles } from '@bitphysics/physics';
-import type { BenchScene } from './types.js';
+import { type Pyramid3DHandles, pyramid3DLayout } from '@bitphysics/physics';
 import { PYRAMID_COLUMNS, pyramidStanding } from './pyramid.js';
+import type { BenchScene } from './types.js';
 
 /**
  * Bench side of `pyramid-3d`: the base limit, our box ids, and how well every engine's pyramid stood

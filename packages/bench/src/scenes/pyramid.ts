@@ -1,6 +1,6 @@
-import { pyramidLayout, type PyramidHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
+import { type PyramidHandles, pyramidLayout } from '@bitphysics/physics';
 import { round } from './format.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 const metres = (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(4) : String(v));
 
@@ -11,10 +11,12 @@ const metres = (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(4) 
  * in 3D) and `fallen` (boxes more than 0.5 m below their start). Shared by `pyramid` and `pyramid-3d`.
  */
 export function pyramidStanding(p: ArrayLike<number>, p0: ArrayLike<number>, count: number, dims: 2 | 3): Record<string, number> {
-  let maxDrift = 0, fallen = 0;
+  let maxDrift = 0,
+    fallen = 0;
   for (let i = 0; i < count; i++) {
     const o = dims * i;
-    const dx = p[o]! - p0[o]!, dz = dims === 3 ? p[o + 2]! - p0[o + 2]! : 0;
+    const dx = p[o]! - p0[o]!,
+      dz = dims === 3 ? p[o + 2]! - p0[o + 2]! : 0;
     const d = dims === 3 ? Math.hypot(dx, dz) : Math.abs(dx);
     if (d > maxDrift) maxDrift = d;
     if (p[o + 1]! < p0[o + 1]! - 0.5) fallen++;

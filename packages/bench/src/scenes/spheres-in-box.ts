@@ -1,7 +1,7 @@
-import { spheresInBoxLayout, type SpheresInBoxHandles } from '@bitphysics/physics';
-import type { BenchScene, ExtraValue } from './types.js';
+import { type SpheresInBoxHandles, spheresInBoxLayout } from '@bitphysics/physics';
 import { maxBallOverlap, maxWallPenetration } from '../quality.js';
 import { round } from './format.js';
+import type { BenchScene, ExtraValue } from './types.js';
 
 const percent = (v: ExtraValue): string => (typeof v === 'number' ? v.toFixed(2) : String(v));
 

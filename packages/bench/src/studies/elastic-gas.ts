@@ -1,6 +1,6 @@
 import { addBody, createPhysicsWorld, kineticEnergy, Rng, setBoundary, step } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 import { sig } from '../scenes/format.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /**
  * The elastic gas study (`--scene elastic-gas`): the book's molecules (Ramtal and Dobre ch. 11) as a
@@ -18,15 +18,19 @@ export const elasticGasStudy: BenchStudy = {
   maxCount: 100_000,
   defaults: { steps: 20_000, warmup: 0 },
   run(options: StudyRunOptions): StudyResult {
-    const count = options.count, r = 0.1;
+    const count = options.count,
+      r = 0.1;
     const world = createPhysicsWorld({ dimensions: 2, capacity: count + 8, gravity: [0, 0], sleep: false, seed: options.seed });
-    const height = Math.sqrt((count * Math.PI * r * r) / 0.12 / 1.5), width = 1.5 * height;
+    const height = Math.sqrt((count * Math.PI * r * r) / 0.12 / 1.5),
+      width = 1.5 * height;
     setBoundary(world, { min: [0, 0], max: [width, height], restitution: 1, friction: 0 });
-    const cols = Math.ceil(Math.sqrt(count * 1.5)), rows = Math.ceil(count / cols);
-    const dx = width / cols, dy = height / rows;
+    const cols = Math.ceil(Math.sqrt(count * 1.5)),
+      rows = Math.ceil(count / cols);
+    const dx = width / cols,
+      dy = height / rows;
     const rng = new Rng(options.seed);
     for (let i = 0; i < count; i++) {
-      const x = (i % cols + 0.5) * dx + rng.range(-0.2, 0.2) * (dx - 2 * r);
+      const x = ((i % cols) + 0.5) * dx + rng.range(-0.2, 0.2) * (dx - 2 * r);
       const y = (Math.floor(i / cols) + 0.5) * dy + rng.range(-0.2, 0.2) * (dy - 2 * r);
       const a = rng.range(0, 2 * Math.PI);
       addBody(world, { position: [x, y], velocity: [Math.cos(a), Math.sin(a)], radius: r, mass: 1, restitution: 1, friction: 0 });

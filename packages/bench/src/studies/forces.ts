@@ -1,12 +1,32 @@
 import {
-  addBody, addElectricField, addFluidRegion, addMagneticField, addSpring, createPhysicsWorld, enableMutualGravity,
-  Rng, setAngularDamping, setAttractor, setBuoyancy, setCentralForce, setCharge, setDrag, setDrivingForce,
-  setElectrostatics, setGravitation, setGravityScale, setLift, setRandomForce, setThrust, setVortex, setWind,
+  addBody,
+  addElectricField,
+  addFluidRegion,
+  addMagneticField,
+  addSpring,
+  createPhysicsWorld,
+  enableMutualGravity,
   type PhysicsWorld,
+  Rng,
+  setAngularDamping,
+  setAttractor,
+  setBuoyancy,
+  setCentralForce,
+  setCharge,
+  setDrag,
+  setDrivingForce,
+  setElectrostatics,
+  setGravitation,
+  setGravityScale,
+  setLift,
+  setRandomForce,
+  setThrust,
+  setVortex,
+  setWind,
 } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
-import { medianStepMs, nsPerBodyStep } from './timing.js';
 import { sig } from '../scenes/format.js';
+import { medianStepMs, nsPerBodyStep } from './timing.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /**
  * Largest body count the pairwise (O(N^2)) laws are timed at: Coulomb and direct mutual gravity run
@@ -39,62 +59,152 @@ export interface ForceLawCase {
  * gravity is not among them: every integrator adds the world's g to every body (baseline included).
  */
 export const FORCE_LAWS: readonly ForceLawCase[] = Object.freeze([
-  { law: 'gravity-scale', description: 'setGravityScale 0.5: (s - 1) m g on each body', setup: (w, ids) => { for (const e of ids) setGravityScale(w, e, 0.5); } },
   {
-    law: 'attractor', description: 'one static attractor (G = 1, M = 1 kg, softening 0.1 m) pulling every body',
-    setup: (w) => { setGravitation(w, { constant: 1 }); setAttractor(w, addBody(w, { position: [0, 0], static: true }), { mass: 1, softening: 0.1 }); },
-  },
-  { law: 'central-force', description: 'setCentralForce k = -1, n = 2 (Hooke-like k r^(n-1) about the origin)', setup: (w, ids) => { for (const e of ids) setCentralForce(w, e, { centre: [0, 0], k: -1, n: 2 }); } },
-  { law: 'linear-drag', description: 'setDrag linear 0.1 N s/m, still air', setup: (w, ids) => { for (const e of ids) setDrag(w, e, { linear: 0.1 }); } },
-  { law: 'quadratic-drag', description: 'setDrag quadratic 0.01 kg/m, still air', setup: (w, ids) => { for (const e of ids) setDrag(w, e, { quadratic: 0.01 }); } },
-  {
-    law: 'drag-wind', description: 'quadratic drag 0.01 kg/m against a uniform gusting wind (5 m/s, gust 2 m/s at 1 rad/s)',
-    setup: (w, ids) => { setWind(w, { velocity: [5, 0], gust: [2, 0], gustOmega: 1 }); for (const e of ids) setDrag(w, e, { quadratic: 0.01 }); },
+    law: 'gravity-scale',
+    description: 'setGravityScale 0.5: (s - 1) m g on each body',
+    setup: (w, ids) => {
+      for (const e of ids) setGravityScale(w, e, 0.5);
+    },
   },
   {
-    law: 'drag-turbulence', description: 'quadratic drag 0.01 kg/m against wind 5 m/s with turbulence (16 modes, 1 m/s RMS, 5 m, 1 s)',
+    law: 'attractor',
+    description: 'one static attractor (G = 1, M = 1 kg, softening 0.1 m) pulling every body',
+    setup: (w) => {
+      setGravitation(w, { constant: 1 });
+      setAttractor(w, addBody(w, { position: [0, 0], static: true }), { mass: 1, softening: 0.1 });
+    },
+  },
+  {
+    law: 'central-force',
+    description: 'setCentralForce k = -1, n = 2 (Hooke-like k r^(n-1) about the origin)',
+    setup: (w, ids) => {
+      for (const e of ids) setCentralForce(w, e, { centre: [0, 0], k: -1, n: 2 });
+    },
+  },
+  {
+    law: 'linear-drag',
+    description: 'setDrag linear 0.1 N s/m, still air',
+    setup: (w, ids) => {
+      for (const e of ids) setDrag(w, e, { linear: 0.1 });
+    },
+  },
+  {
+    law: 'quadratic-drag',
+    description: 'setDrag quadratic 0.01 kg/m, still air',
+    setup: (w, ids) => {
+      for (const e of ids) setDrag(w, e, { quadratic: 0.01 });
+    },
+  },
+  {
+    law: 'drag-wind',
+    description: 'quadratic drag 0.01 kg/m against a uniform gusting wind (5 m/s, gust 2 m/s at 1 rad/s)',
+    setup: (w, ids) => {
+      setWind(w, { velocity: [5, 0], gust: [2, 0], gustOmega: 1 });
+      for (const e of ids) setDrag(w, e, { quadratic: 0.01 });
+    },
+  },
+  {
+    law: 'drag-turbulence',
+    description: 'quadratic drag 0.01 kg/m against wind 5 m/s with turbulence (16 modes, 1 m/s RMS, 5 m, 1 s)',
     setup: (w, ids) => {
       setWind(w, { velocity: [5, 0], turbulence: { intensity: 1, lengthScale: 5, timeScale: 1, modes: 16 } });
       for (const e of ids) setDrag(w, e, { quadratic: 0.01 });
     },
   },
-  { law: 'lift', description: 'setLift k = 0.01 kg/m about z, still air', setup: (w, ids) => { for (const e of ids) setLift(w, e, { k: 0.01 }); } },
   {
-    law: 'buoyancy', description: 'one fluid region (surface y = 0, 1000 kg/m^2); balls of radius 0.1 m with fluid drag 1 kg/m',
-    setup: (w, ids) => { addFluidRegion(w, { surface: 0, density: 1000 }); for (const e of ids) setBuoyancy(w, e, { shape: 'ball', radius: 0.1, dragCoefficient: 1 }); },
+    law: 'lift',
+    description: 'setLift k = 0.01 kg/m about z, still air',
+    setup: (w, ids) => {
+      for (const e of ids) setLift(w, e, { k: 0.01 });
+    },
   },
   {
-    law: 'spring', description: 'a chain: each body tied to the next (N - 1 springs, 10 N/m, damping 0.1 N s/m)',
-    setup: (w, ids) => { for (let i = 0; i + 1 < ids.length; i++) addSpring(w, { a: ids[i]!, b: ids[i + 1]!, stiffness: 10, damping: 0.1 }); },
+    law: 'buoyancy',
+    description: 'one fluid region (surface y = 0, 1000 kg/m^2); balls of radius 0.1 m with fluid drag 1 kg/m',
+    setup: (w, ids) => {
+      addFluidRegion(w, { surface: 0, density: 1000 });
+      for (const e of ids) setBuoyancy(w, e, { shape: 'ball', radius: 0.1, dragCoefficient: 1 });
+    },
   },
-  { law: 'driving-force', description: 'setDrivingForce 1 N cos(2 t) along x', setup: (w, ids) => { for (const e of ids) setDrivingForce(w, e, { amplitude: [1, 0], omega: 2 }); } },
-  { law: 'random-force', description: 'setRandomForce 1 N, correlation time 0.5 s (seeded value noise)', setup: (w, ids) => { for (const e of ids) setRandomForce(w, e, { magnitude: 1, correlationTime: 0.5 }); } },
   {
-    law: 'thrust', description: 'setThrust: exhaust 100 m/s, 0.01 kg/s, 0.9 kg of fuel (lasts 90 s), along +y; fuel burn included',
-    setup: (w, ids) => { for (const e of ids) setThrust(w, e, { exhaustVelocity: 100, massFlowRate: 0.01, fuel: 0.9, direction: [0, 1] }); },
+    law: 'spring',
+    description: 'a chain: each body tied to the next (N - 1 springs, 10 N/m, damping 0.1 N s/m)',
+    setup: (w, ids) => {
+      for (let i = 0; i + 1 < ids.length; i++) addSpring(w, { a: ids[i]!, b: ids[i + 1]!, stiffness: 10, damping: 0.1 });
+    },
+  },
+  {
+    law: 'driving-force',
+    description: 'setDrivingForce 1 N cos(2 t) along x',
+    setup: (w, ids) => {
+      for (const e of ids) setDrivingForce(w, e, { amplitude: [1, 0], omega: 2 });
+    },
+  },
+  {
+    law: 'random-force',
+    description: 'setRandomForce 1 N, correlation time 0.5 s (seeded value noise)',
+    setup: (w, ids) => {
+      for (const e of ids) setRandomForce(w, e, { magnitude: 1, correlationTime: 0.5 });
+    },
+  },
+  {
+    law: 'thrust',
+    description: 'setThrust: exhaust 100 m/s, 0.01 kg/s, 0.9 kg of fuel (lasts 90 s), along +y; fuel burn included',
+    setup: (w, ids) => {
+      for (const e of ids) setThrust(w, e, { exhaustVelocity: 100, massFlowRate: 0.01, fuel: 0.9, direction: [0, 1] });
+    },
   },
   {
     law: 'lorentz',
-    description: 'charge 1 mC in a uniform electric (1 V/m) and magnetic (0.5 T) field: q (E + v x B); Coulomb constant 0 so the charges do not also interact pairwise',
+    description:
+      'charge 1 mC in a uniform electric (1 V/m) and magnetic (0.5 T) field: q (E + v x B); Coulomb constant 0 so the charges do not also interact pairwise',
     setup: (w, ids) => {
       setElectrostatics(w, { constant: 0 });
-      addElectricField(w, { field: [1, 0] }); addMagneticField(w, { field: 0.5 });
+      addElectricField(w, { field: [1, 0] });
+      addMagneticField(w, { field: 0.5 });
       for (const e of ids) setCharge(w, e, 1e-3);
     },
   },
-  { law: 'vortex', description: 'setVortex k = 1, n = 1 about the z axis through the origin', setup: (w, ids) => { for (const e of ids) setVortex(w, e, { centre: [0, 0], k: 1 }); } },
-  { law: 'angular-damping', bodies: 'rotating', description: 'setAngularDamping 0.1 N m s on spinning bodies (baseline: the same spinning bodies)', setup: (w, ids) => { for (const e of ids) setAngularDamping(w, e, 0.1); } },
   {
-    law: 'coulomb-direct', pairwise: true, description: 'charges +-1 uC, every pair (Coulomb, softening 0.1 m)',
-    setup: (w, ids, rng) => { setElectrostatics(w, { softening: 0.1 }); for (const e of ids) setCharge(w, e, rng.next() < 0.5 ? -1e-6 : 1e-6); },
+    law: 'vortex',
+    description: 'setVortex k = 1, n = 1 about the z axis through the origin',
+    setup: (w, ids) => {
+      for (const e of ids) setVortex(w, e, { centre: [0, 0], k: 1 });
+    },
   },
   {
-    law: 'mutual-gravity-direct', pairwise: true, description: "mutual gravity, every pair (method 'direct', SI G, softening 0.1 m)",
-    setup: (w, ids) => { setGravitation(w, { method: 'direct', softening: 0.1 }); for (const e of ids) enableMutualGravity(w, e); },
+    law: 'angular-damping',
+    bodies: 'rotating',
+    description: 'setAngularDamping 0.1 N m s on spinning bodies (baseline: the same spinning bodies)',
+    setup: (w, ids) => {
+      for (const e of ids) setAngularDamping(w, e, 0.1);
+    },
   },
   {
-    law: 'mutual-gravity-barnes-hut', description: "mutual gravity by Barnes-Hut (method 'barnes-hut', opening angle 0.7, SI G, softening 0.1 m) at the full count",
-    setup: (w, ids) => { setGravitation(w, { method: 'barnes-hut', openingAngle: 0.7, softening: 0.1 }); for (const e of ids) enableMutualGravity(w, e); },
+    law: 'coulomb-direct',
+    pairwise: true,
+    description: 'charges +-1 uC, every pair (Coulomb, softening 0.1 m)',
+    setup: (w, ids, rng) => {
+      setElectrostatics(w, { softening: 0.1 });
+      for (const e of ids) setCharge(w, e, rng.next() < 0.5 ? -1e-6 : 1e-6);
+    },
+  },
+  {
+    law: 'mutual-gravity-direct',
+    pairwise: true,
+    description: "mutual gravity, every pair (method 'direct', SI G, softening 0.1 m)",
+    setup: (w, ids) => {
+      setGravitation(w, { method: 'direct', softening: 0.1 });
+      for (const e of ids) enableMutualGravity(w, e);
+    },
+  },
+  {
+    law: 'mutual-gravity-barnes-hut',
+    description: "mutual gravity by Barnes-Hut (method 'barnes-hut', opening angle 0.7, SI G, softening 0.1 m) at the full count",
+    setup: (w, ids) => {
+      setGravitation(w, { method: 'barnes-hut', openingAngle: 0.7, softening: 0.1 });
+      for (const e of ids) enableMutualGravity(w, e);
+    },
   },
 ] satisfies ForceLawCase[]);
 
@@ -112,9 +222,10 @@ export function forceWorld(count: number, seed: number, kind: BodyKind): { world
   for (let i = 0; i < count; i++) {
     const position = [rng.range(-half, half), rng.range(-half, half)];
     const velocity = [rng.range(-1, 1), rng.range(-1, 1)];
-    ids[i] = kind === 'rotating'
-      ? addBody(world, { position, velocity, mass: 1, inertia: 0.1, angularVelocity: 1 })
-      : addBody(world, { position, velocity, mass: 1 });
+    ids[i] =
+      kind === 'rotating'
+        ? addBody(world, { position, velocity, mass: 1, inertia: 0.1, angularVelocity: 1 })
+        : addBody(world, { position, velocity, mass: 1 });
   }
   return { world, ids };
 }
@@ -158,7 +269,12 @@ export const forcesStudy: BenchStudy = {
       };
     });
     const rows = records.map((r) => [
-      r.law, r.nsPerBodyStep.toFixed(1), r.baselineNsPerBodyStep.toFixed(1), r.wholeNsPerBodyStep.toFixed(1), String(r.count), r.description,
+      r.law,
+      r.nsPerBodyStep.toFixed(1),
+      r.baselineNsPerBodyStep.toFixed(1),
+      r.wholeNsPerBodyStep.toFixed(1),
+      String(r.count),
+      r.description,
     ]);
     const capped = options.count > PAIRWISE_MAX_COUNT;
     return {

@@ -1,6 +1,6 @@
 import { addBody, addSegment, contactLength, createPhysicsWorld, Rng, setBoundary, solverSubstepsFor, step } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 import { sig } from '../scenes/format.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /**
  * The Galton board study (`--scene galton`): `count` balls of radius 2 cm (default 2,000; restitution
@@ -36,17 +36,28 @@ export const galtonStudy: BenchStudy = {
   defaults: { steps: 900, warmup: 0 },
   params: {
     'solver-substeps': {
-      default: 4, min: 1, max: 16, integer: true,
+      default: 4,
+      min: 1,
+      max: 16,
+      integer: true,
       description: 'galton: solver substeps of the world (the least a step takes; the contact stiffness cap is the substep rate)',
     },
     'auto-substeps': {
-      default: 1, min: 0, max: 1, integer: true,
+      default: 1,
+      min: 0,
+      max: 1,
+      integer: true,
       description: 'galton: 1 lets small balls take more substeps (CollisionSettings.autoSubsteps), 0 keeps exactly --solver-substeps',
     },
   },
   run(options: StudyRunOptions): StudyResult {
-    const count = options.count, r = 0.02, pitch = 0.1, bins = 13, binHeight = 4;
-    const width = bins * pitch, pegTop = binHeight + 1.3;
+    const count = options.count,
+      r = 0.02,
+      pitch = 0.1,
+      bins = 13,
+      binHeight = 4;
+    const width = bins * pitch,
+      pegTop = binHeight + 1.3;
     const solverSubsteps = options.params['solver-substeps'] ?? 4;
     const autoSubsteps = (options.params['auto-substeps'] ?? 1) === 1;
     const world = createPhysicsWorld({ dimensions: 2, capacity: count + 400, seed: options.seed, solverSubsteps });
@@ -64,7 +75,8 @@ export const galtonStudy: BenchStudy = {
     }
     const rng = new Rng(options.seed);
     const balls: number[] = [];
-    const across = 24, x0 = width / 2 - (across / 2) * 2.2 * r;
+    const across = 24,
+      x0 = width / 2 - (across / 2) * 2.2 * r;
     for (let i = 0; i < count; i++) {
       const x = x0 + ((i % across) + 0.5) * 2.2 * r + rng.range(-0.1, 0.1) * r;
       const y = pegTop + 0.3 + Math.floor(i / across) * 2.2 * r;
@@ -77,42 +89,84 @@ export const galtonStudy: BenchStudy = {
     let usedSubsteps = 0;
     const P = world.components.Position;
     // Deepest ball-ball overlap over the run, and the steps that ended with one above 5 % of a radius.
-    let runDeepest = 0, stepsOver5 = 0;
+    let runDeepest = 0,
+      stepsOver5 = 0;
     for (let s = 0; s < options.steps; s++) {
       const t = performance.now();
       step(world);
       times.push(performance.now() - t);
-      usedSubsteps = Math.max(usedSubsteps, solverSubstepsFor(world.collision.settings, contactLength(world.collision.cache.rows), world.h));
+      usedSubsteps = Math.max(
+        usedSubsteps,
+        solverSubstepsFor(world.collision.settings, contactLength(world.collision.cache.rows), world.h),
+      );
       const d = ballOverlaps(P.x, P.y, balls, r, width).deepest;
       if (d > runDeepest) runDeepest = d;
       if (d > 0.05 * r) stepsOver5++;
     }
     const { deepest, over10 } = ballOverlaps(P.x, P.y, balls, r, width);
     // Ball-peg overlaps (pegs of radius 0.01) and ball-segment overlaps (the bins' walls: x = k pitch, 0 <= y <= binHeight).
-    let pegDeepest = 0, segmentDeepest = 0;
+    let pegDeepest = 0,
+      segmentDeepest = 0;
     for (const b of balls) {
-      const x = P.x[b]!, y = P.y[b]!;
+      const x = P.x[b]!,
+        y = P.y[b]!;
       for (const p of pegs) pegDeepest = Math.max(pegDeepest, r + 0.01 - Math.hypot(P.x[p]! - x, P.y[p]! - y));
       const k = Math.round(x / pitch);
-      if (k >= 1 && k < bins) segmentDeepest = Math.max(segmentDeepest, r - Math.hypot(x - k * pitch, y - Math.min(binHeight, Math.max(0, y))));
+      if (k >= 1 && k < bins)
+        segmentDeepest = Math.max(segmentDeepest, r - Math.hypot(x - k * pitch, y - Math.min(binHeight, Math.max(0, y))));
     }
     const perBin = new Array<number>(bins).fill(0);
     for (const b of balls) if (P.y[b]! < binHeight) perBin[Math.min(bins - 1, Math.max(0, Math.floor(P.x[b]! / pitch)))]!++;
     const tallest = Math.max(...perBin);
     times.sort((a, b) => a - b);
     const median = times[Math.floor(times.length / 2)]!;
-    const pct = (v: number): string => (100 * v / r).toFixed(2);
+    const pct = (v: number): string => ((100 * v) / r).toFixed(2);
     return {
-      records: [{
-        count, steps: options.steps, solverSubsteps, autoSubsteps, usedSubsteps, maxOverlapPercent: 100 * deepest / r, pairsOver10Percent: over10,
-        pegOverlapPercent: 100 * pegDeepest / r, segmentOverlapPercent: 100 * segmentDeepest / r,
-        runMaxOverlapPercent: 100 * runDeepest / r, stepsOver5Percent: stepsOver5, tallestBin: tallest, medianMs: median,
-      }],
-      header: ['balls', 'steps', 'most substeps', 'max overlap %r', 'pairs > 10 %r', 'peg %r', 'segment %r', 'run max %r', 'steps > 5 %r', 'tallest bin', 'median ms'],
-      rows: [[
-        String(count), String(options.steps), String(usedSubsteps), pct(deepest), String(over10), pct(pegDeepest), pct(segmentDeepest),
-        pct(runDeepest), String(stepsOver5), String(tallest), String(sig(median)),
-      ]],
+      records: [
+        {
+          count,
+          steps: options.steps,
+          solverSubsteps,
+          autoSubsteps,
+          usedSubsteps,
+          maxOverlapPercent: (100 * deepest) / r,
+          pairsOver10Percent: over10,
+          pegOverlapPercent: (100 * pegDeepest) / r,
+          segmentOverlapPercent: (100 * segmentDeepest) / r,
+          runMaxOverlapPercent: (100 * runDeepest) / r,
+          stepsOver5Percent: stepsOver5,
+          tallestBin: tallest,
+          medianMs: median,
+        },
+      ],
+      header: [
+        'balls',
+        'steps',
+        'most substeps',
+        'max overlap %r',
+        'pairs > 10 %r',
+        'peg %r',
+        'segment %r',
+        'run max %r',
+        'steps > 5 %r',
+        'tallest bin',
+        'median ms',
+      ],
+      rows: [
+        [
+          String(count),
+          String(options.steps),
+          String(usedSubsteps),
+          pct(deepest),
+          String(over10),
+          pct(pegDeepest),
+          pct(segmentDeepest),
+          pct(runDeepest),
+          String(stepsOver5),
+          String(tallest),
+          String(sig(median)),
+        ],
+      ],
       notes: [
         'max overlap: largest 2r - |x_i - x_j| between two balls after the last step, in % of the radius; budget 5 %.',
         'peg, segment: deepest ball-peg and ball-wall overlap after the last step; run max, steps > 5 %r: ball-ball, after every step.',
@@ -126,26 +180,37 @@ export const galtonStudy: BenchStudy = {
  * rounding) found on a grid of 2r cells: the deepest 2r - |x_i - x_j| (m, 0 if none overlap) and how
  * many pairs overlap by more than 10 % of r.
  */
-function ballOverlaps(px: Float64Array, py: Float64Array, balls: readonly number[], r: number, width: number): { deepest: number; over10: number } {
-  const cell = 2 * r, cols = Math.ceil(width / cell) + 2;
+function ballOverlaps(
+  px: Float64Array,
+  py: Float64Array,
+  balls: readonly number[],
+  r: number,
+  width: number,
+): { deepest: number; over10: number } {
+  const cell = 2 * r,
+    cols = Math.ceil(width / cell) + 2;
   const grid = new Map<number, number[]>();
   const key = (cx: number, cy: number): number => cy * cols + cx;
   for (const b of balls) {
     const k = key(Math.floor(px[b]! / cell) + 1, Math.floor(py[b]! / cell));
     const list = grid.get(k);
-    if (list) list.push(b); else grid.set(k, [b]);
+    if (list) list.push(b);
+    else grid.set(k, [b]);
   }
-  let deepest = 0, over10 = 0;
+  let deepest = 0,
+    over10 = 0;
   for (const b of balls) {
-    const cx = Math.floor(px[b]! / cell) + 1, cy = Math.floor(py[b]! / cell);
-    for (let dx = -1; dx <= 1; dx++) for (let dy = -1; dy <= 1; dy++) {
-      for (const o of grid.get(key(cx + dx, cy + dy)) ?? []) {
-        if (o <= b) continue;
-        const d = 2 * r - Math.hypot(px[o]! - px[b]!, py[o]! - py[b]!);
-        if (d > deepest) deepest = d;
-        if (d > 0.1 * r) over10++;
+    const cx = Math.floor(px[b]! / cell) + 1,
+      cy = Math.floor(py[b]! / cell);
+    for (let dx = -1; dx <= 1; dx++)
+      for (let dy = -1; dy <= 1; dy++) {
+        for (const o of grid.get(key(cx + dx, cy + dy)) ?? []) {
+          if (o <= b) continue;
+          const d = 2 * r - Math.hypot(px[o]! - px[b]!, py[o]! - py[b]!);
+          if (d > deepest) deepest = d;
+          if (d > 0.1 * r) over10++;
+        }
       }
-    }
   }
   return { deepest, over10 };
 }

@@ -1,10 +1,20 @@
 import {
-  addBody, createPhysicsWorld, INTEGRATOR_NAMES, INTEGRATOR_ORDER, kineticEnergy, potentialEnergy, Rng, setAttractor,
-  setGravitation, step, type IntegratorName, type PhysicsWorld,
+  addBody,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  INTEGRATOR_ORDER,
+  type IntegratorName,
+  kineticEnergy,
+  type PhysicsWorld,
+  potentialEnergy,
+  Rng,
+  setAttractor,
+  setGravitation,
+  step,
 } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
-import { medianStepMs, nsPerBodyStep } from './timing.js';
 import { sig } from '../scenes/format.js';
+import { medianStepMs, nsPerBodyStep } from './timing.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /**
  * The Kepler orbit every accuracy measurement uses, in units with G M = 1 (G = 1 set with
@@ -134,7 +144,9 @@ export function centralFieldWorld(integrator: IntegratorName, count: number, see
   setAttractor(world, sun, { mass: 1, softening: 0.05 });
   const rng = new Rng(seed);
   for (let i = 0; i < count; i++) {
-    const r = rng.range(1, 3), phi = rng.range(0, 2 * Math.PI), v = Math.sqrt(1 / r);
+    const r = rng.range(1, 3),
+      phi = rng.range(0, 2 * Math.PI),
+      v = Math.sqrt(1 / r);
     addBody(world, { position: [r * Math.cos(phi), r * Math.sin(phi)], velocity: [-v * Math.sin(phi), v * Math.cos(phi)], mass: 1 });
   }
   return world;
@@ -163,14 +175,19 @@ export const integratorsStudy: BenchStudy = {
   defaults: { steps: 60, warmup: 10 },
   params: {
     orbits: {
-      default: DEFAULT_ORBITS, min: 1, max: 10_000, integer: true,
+      default: DEFAULT_ORBITS,
+      min: 1,
+      max: 10_000,
+      integer: true,
       description: 'integrators: Kepler orbits of each energy run (at T/500 and T/1000)',
     },
   },
   run(options: StudyRunOptions): StudyResult {
     const orbits = options.params.orbits ?? DEFAULT_ORBITS;
     const accuracy = INTEGRATOR_NAMES.map((name) => {
-      options.onProgress?.(`${name}: convergence and ${orbits} Kepler orbits at T/${ENERGY_STEPS_PER_ORBIT.coarse} and T/${ENERGY_STEPS_PER_ORBIT.fine}`);
+      options.onProgress?.(
+        `${name}: convergence and ${orbits} Kepler orbits at T/${ENERGY_STEPS_PER_ORBIT.coarse} and T/${ENERGY_STEPS_PER_ORBIT.fine}`,
+      );
       const errors = ORDER_STEPS_PER_ORBIT.map((n) => keplerPositionError(name, n));
       const orders = [Math.log2(errors[0]! / errors[1]!), Math.log2(errors[1]! / errors[2]!)];
       const coarse = keplerEnergyError(name, ENERGY_STEPS_PER_ORBIT.coarse, orbits);
@@ -182,8 +199,12 @@ export const integratorsStudy: BenchStudy = {
     const ms = medianStepMs(worlds, options.steps, options.warmup);
 
     const records = accuracy.map((a, i) => {
-      const failure = [a.coarse.failure && `T/${ENERGY_STEPS_PER_ORBIT.coarse}: ${a.coarse.failure}`, a.fine.failure && `T/${ENERGY_STEPS_PER_ORBIT.fine}: ${a.fine.failure}`]
-        .filter(Boolean).join('; ');
+      const failure = [
+        a.coarse.failure && `T/${ENERGY_STEPS_PER_ORBIT.coarse}: ${a.coarse.failure}`,
+        a.fine.failure && `T/${ENERGY_STEPS_PER_ORBIT.fine}: ${a.fine.failure}`,
+      ]
+        .filter(Boolean)
+        .join('; ');
       return {
         integrator: a.name,
         order: sig(a.orders[1]!, 4),
@@ -224,7 +245,15 @@ export const integratorsStudy: BenchStudy = {
     ];
     return {
       records,
-      header: ['integrator', 'order (theory)', `pos. err T/${ORDER_STEPS_PER_ORBIT[2]} m`, `|dE/E| T/${ENERGY_STEPS_PER_ORBIT.coarse}`, `|dE/E| T/${ENERGY_STEPS_PER_ORBIT.fine}`, `max |dE/E| T/${ENERGY_STEPS_PER_ORBIT.fine}`, 'ns/body-step'],
+      header: [
+        'integrator',
+        'order (theory)',
+        `pos. err T/${ORDER_STEPS_PER_ORBIT[2]} m`,
+        `|dE/E| T/${ENERGY_STEPS_PER_ORBIT.coarse}`,
+        `|dE/E| T/${ENERGY_STEPS_PER_ORBIT.fine}`,
+        `max |dE/E| T/${ENERGY_STEPS_PER_ORBIT.fine}`,
+        'ns/body-step',
+      ],
       rows,
       notes,
     };

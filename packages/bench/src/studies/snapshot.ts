@@ -1,7 +1,7 @@
-import { createPhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany, type PhysicsWorld } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
-import { median } from '../stats.js';
+import { createPhysicsWorld, type PhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany } from '@bitphysics/physics';
 import { sig } from '../scenes/format.js';
+import { median } from '../stats.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /**
  * The snapshot study (`--scene snapshot`): what `snapshot(world)` and `restore(world, snapshot)` cost
@@ -18,7 +18,8 @@ import { sig } from '../scenes/format.js';
  */
 export const snapshotStudy: BenchStudy = {
   name: 'snapshot',
-  description: 'snapshot(world) and restore(world, snapshot) cost for a balls-in-box world (median ms), and the restored worlds step bit-identically',
+  description:
+    'snapshot(world) and restore(world, snapshot) cost for a balls-in-box world (median ms), and the restored worlds step bit-identically',
   defaultCount: 100_000,
   maxCount: 1_000_000,
   defaults: { steps: 20, warmup: 30 },
@@ -32,16 +33,28 @@ export const snapshotStudy: BenchStudy = {
     options.onProgress?.(`warm-up: ${options.warmup} steps of ${options.count} bodies`);
     stepMany(world, options.warmup);
     const fresh = make();
-    const snapMs: number[] = [], reuseMs: number[] = [], rewindMs: number[] = [], freshMs: number[] = [], newMs: number[] = [];
+    const snapMs: number[] = [],
+      reuseMs: number[] = [],
+      rewindMs: number[] = [],
+      freshMs: number[] = [],
+      newMs: number[] = [];
     let saved = snapshot(world);
     let spare = snapshot(world);
     // CPU time of the process beside the wall time: on a machine shared with other work the wall time
     // also counts the time other processes held the core; CPU time does not (it does count V8's helper
     // threads, such as concurrent garbage collection, while the operation runs).
-    const snapCpu: number[] = [], reuseCpu: number[] = [], rewindCpu: number[] = [], freshCpu: number[] = [], newCpu: number[] = [];
-    const cpuNow = (): number => { const u = process.cpuUsage(); return (u.user + u.system) / 1000; };
+    const snapCpu: number[] = [],
+      reuseCpu: number[] = [],
+      rewindCpu: number[] = [],
+      freshCpu: number[] = [],
+      newCpu: number[] = [];
+    const cpuNow = (): number => {
+      const u = process.cpuUsage();
+      return (u.user + u.system) / 1000;
+    };
     const timed = (wall: number[], cpu: number[], f: () => void): void => {
-      const c = cpuNow(), t = performance.now();
+      const c = cpuNow(),
+        t = performance.now();
       f();
       wall.push(performance.now() - t);
       cpu.push(cpuNow() - c);
@@ -51,10 +64,14 @@ export const snapshotStudy: BenchStudy = {
       // One step (untimed) before the snapshots and again before the rewind, as in a rollback loop:
       // bodies move, some fall asleep or wake, so the state and query lists differ from the last round's.
       stepMany(world, 1);
-      timed(snapMs, snapCpu, () => { saved = snapshot(world); });
+      timed(snapMs, snapCpu, () => {
+        saved = snapshot(world);
+      });
       // A rollback ring writes each new snapshot over its oldest one's buffer.
       const spareBuffer = spare.buffers[0];
-      timed(reuseMs, reuseCpu, () => { spare = snapshot(world, spare); });
+      timed(reuseMs, reuseCpu, () => {
+        spare = snapshot(world, spare);
+      });
       if (spare.buffers[0] === spareBuffer) reused++;
       stepMany(world, 1);
       timed(rewindMs, rewindCpu, () => restore(world, saved));
@@ -67,7 +84,10 @@ export const snapshotStudy: BenchStudy = {
     // Baseline in the same run: copying the snapshot's bytes once (one memcpy into a new buffer).
     const copyMs: number[] = [];
     const copyCpu: number[] = [];
-    for (let r = 0; r < options.steps; r++) timed(copyMs, copyCpu, () => { for (const b of saved.buffers) b.slice(0); });
+    for (let r = 0; r < options.steps; r++)
+      timed(copyMs, copyCpu, () => {
+        for (const b of saved.buffers) b.slice(0);
+      });
     const headerBytes = JSON.stringify(saved.header).length;
     // Bit-identical check: the original, the rewound and the fresh world step 10 steps from the snapshot.
     const reference = make();
@@ -78,22 +98,56 @@ export const snapshotStudy: BenchStudy = {
     const hash = stateHash(world);
     const identical = stateHash(fresh) === hash && stateHash(reference) === hash;
     const record = {
-      bodies: options.count, snapshotMs: median(snapMs), snapshotReuseMs: median(reuseMs), restoreMs: median(rewindMs), restoreFreshMs: median(freshMs),
+      bodies: options.count,
+      snapshotMs: median(snapMs),
+      snapshotReuseMs: median(reuseMs),
+      restoreMs: median(rewindMs),
+      restoreFreshMs: median(freshMs),
       restoreNewWorldMs: median(newMs),
-      reusedRounds: reused, copyMs: median(copyMs),
-      cpuMs: { snapshot: median(snapCpu), snapshotReuse: median(reuseCpu), restore: median(rewindCpu), restoreFresh: median(freshCpu), restoreNewWorld: median(newCpu), copy: median(copyCpu) }, bytes, headerBytes, buffers: saved.buffers.length, identical, stateHash: hash,
+      reusedRounds: reused,
+      copyMs: median(copyMs),
+      cpuMs: {
+        snapshot: median(snapCpu),
+        snapshotReuse: median(reuseCpu),
+        restore: median(rewindCpu),
+        restoreFresh: median(freshCpu),
+        restoreNewWorld: median(newCpu),
+        copy: median(copyCpu),
+      },
+      bytes,
+      headerBytes,
+      buffers: saved.buffers.length,
+      identical,
+      stateHash: hash,
     };
     return {
       records: [record],
       header: [
-        'bodies', 'snapshot ms', 'snapshot ms (reused buffer)', 'restore ms (same world)', 'restore ms (fresh world)', 'restore ms (new world)', 'copy of the bytes ms',
-        'data MB', 'header kB', 'bit-identical after',
+        'bodies',
+        'snapshot ms',
+        'snapshot ms (reused buffer)',
+        'restore ms (same world)',
+        'restore ms (fresh world)',
+        'restore ms (new world)',
+        'copy of the bytes ms',
+        'data MB',
+        'header kB',
+        'bit-identical after',
       ],
-      rows: [[
-        String(options.count), String(sig(record.snapshotMs)), String(sig(record.snapshotReuseMs)), String(sig(record.restoreMs)),
-        String(sig(record.restoreFreshMs)), String(sig(record.restoreNewWorldMs)), String(sig(record.copyMs)),
-        String(sig(bytes / 1e6)), String(sig(headerBytes / 1e3)), identical ? 'yes' : 'NO',
-      ]],
+      rows: [
+        [
+          String(options.count),
+          String(sig(record.snapshotMs)),
+          String(sig(record.snapshotReuseMs)),
+          String(sig(record.restoreMs)),
+          String(sig(record.restoreFreshMs)),
+          String(sig(record.restoreNewWorldMs)),
+          String(sig(record.copyMs)),
+          String(sig(bytes / 1e6)),
+          String(sig(headerBytes / 1e3)),
+          identical ? 'yes' : 'NO',
+        ],
+      ],
       notes: [
         `medians of ${options.steps} rounds after ${options.warmup} warm-up steps; ${saved.buffers.length} buffers; the reused buffer was written into in ${reused} of ${options.steps} rounds; goal: under 5 ms each for 100,000 bodies`,
         `CPU ms (medians, same order): ${[snapCpu, reuseCpu, rewindCpu, freshCpu, newCpu, copyCpu].map((a) => String(sig(median(a)))).join(', ')}`,

@@ -1,10 +1,15 @@
 import {
-  createPhysicsWorld, INTEGRATOR_NAMES, SOLAR_SYSTEM_PLANETS, solarSystem, solarSystemErrors, step,
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
   type IntegratorName,
+  SOLAR_SYSTEM_PLANETS,
+  solarSystem,
+  solarSystemErrors,
+  step,
 } from '@bitphysics/physics';
-import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
-import { medianStepMs, nsPerBodyStep } from './timing.js';
 import { sig } from '../scenes/format.js';
+import { medianStepMs, nsPerBodyStep } from './timing.js';
+import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';
 
 /** Default `--days`: one (leap) year, the issue's goal from 2012-01-01. */
 export const SOLAR_SYSTEM_DAYS = 366;
@@ -39,13 +44,17 @@ const exp2 = (v: number): string => v.toExponential(2);
  */
 export const solarSystemStudy: BenchStudy = {
   name: 'solar-system',
-  description: 'Sun and eight planets from astronomy-engine: each planet\'s position error after --days, every scheme at 24 h .. 15 min, and the point-mass floor',
+  description:
+    "Sun and eight planets from astronomy-engine: each planet's position error after --days, every scheme at 24 h .. 15 min, and the point-mass floor",
   defaultCount: 9,
   maxCount: 9,
   defaults: { steps: 300, warmup: 30 },
   params: {
     days: {
-      default: SOLAR_SYSTEM_DAYS, min: 0, exclusiveMin: true, max: 36_600,
+      default: SOLAR_SYSTEM_DAYS,
+      min: 0,
+      exclusiveMin: true,
+      max: 36_600,
       description: 'solar-system: simulated days after 2012-01-01 at which the errors are read',
     },
   },
@@ -62,20 +71,39 @@ export const solarSystemStudy: BenchStudy = {
       return w;
     });
     const ms = medianStepMs(worlds, options.steps, options.warmup);
-    const records: Array<Record<string, unknown>> = [{
-      integrator: 'rk4', stepHours: SOLAR_SYSTEM_FLOOR_STEP_HOURS, days, reference: true, positionError: perPlanet(floor),
-      worstRatio: 1, reachesFloor: true,
-    }];
+    const records: Array<Record<string, unknown>> = [
+      {
+        integrator: 'rk4',
+        stepHours: SOLAR_SYSTEM_FLOOR_STEP_HOURS,
+        days,
+        reference: true,
+        positionError: perPlanet(floor),
+        worstRatio: 1,
+        reachesFloor: true,
+      },
+    ];
     INTEGRATOR_NAMES.forEach((integrator, k) => {
       for (const stepHours of SOLAR_SYSTEM_STEP_HOURS) {
         options.onProgress?.(`${integrator} at ${stepHours} h for ${days} days`);
         let errors: Float64Array | null = null;
         let failure: string | null = null;
-        try { errors = errorsAfter(integrator, stepHours, days); } catch (error) { failure = (error as Error)?.message ?? String(error); }
+        try {
+          errors = errorsAfter(integrator, stepHours, days);
+        } catch (error) {
+          failure = (error as Error)?.message ?? String(error);
+        }
         let worst = Infinity;
-        if (errors) { worst = 0; errors.forEach((e, i) => { worst = Math.max(worst, e / floor[i]!); }); }
+        if (errors) {
+          worst = 0;
+          errors.forEach((e, i) => {
+            worst = Math.max(worst, e / floor[i]!);
+          });
+        }
         records.push({
-          integrator, stepHours, days, reference: false,
+          integrator,
+          stepHours,
+          days,
+          reference: false,
           positionError: errors ? perPlanet(errors) : null,
           worstRatio: errors ? sig(worst, 3) : null,
           reachesFloor: errors !== null && worst <= SOLAR_SYSTEM_FLOOR_FACTOR,
@@ -87,9 +115,11 @@ export const solarSystemStudy: BenchStudy = {
     const rows = records.map((r) => {
       const e = r.positionError as Record<string, number> | null;
       return [
-        `${String(r.integrator)}${r.reference ? ' (floor)' : ''}`, String(r.stepHours),
+        `${String(r.integrator)}${r.reference ? ' (floor)' : ''}`,
+        String(r.stepHours),
         ...SOLAR_SYSTEM_PLANETS.map((p) => (e ? exp2(e[p]!) : 'failed')),
-        r.worstRatio === null ? '-' : String(r.worstRatio), r.reachesFloor ? 'yes' : 'no',
+        r.worstRatio === null ? '-' : String(r.worstRatio),
+        r.reachesFloor ? 'yes' : 'no',
         typeof r.msPerStep === 'number' ? (r.msPerStep * 1000).toFixed(1) : '',
       ];
     });

@@ -1,6 +1,6 @@
-import { step, type PhysicsWorld } from '@bitphysics/physics';
-import { runInterleaved } from '../runner.js';
+import { type PhysicsWorld, step } from '@bitphysics/physics';
 import { collectGarbage } from '../memory.js';
+import { runInterleaved } from '../runner.js';
 import { median } from '../stats.js';
 
 /** Steps a study's timed worlds alternate in (as `--block` does for engines): short, so all see the same load. */
@@ -14,7 +14,11 @@ export const STUDY_BLOCK = 5;
  * @throws whatever a step throws (e.g. NonFiniteStateError, implicit Euler's RangeError).
  */
 export function medianStepMs(worlds: readonly PhysicsWorld[], steps: number, warmup: number): number[] {
-  const instances = worlds.map((w) => ({ step: (): void => { step(w); } }));
+  const instances = worlds.map((w) => ({
+    step: (): void => {
+      step(w);
+    },
+  }));
   runInterleaved(instances, warmup, STUDY_BLOCK, null);
   collectGarbage();
   const times = worlds.map(() => new Float64Array(steps));

@@ -1,9 +1,9 @@
 import { addComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import { addBody, createSlot } from '../bodies.js';
 import { currentHandle, slotOf } from '../handles.js';
 import { ensureJointArrays } from '../joints/state.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import { ClothLinkKind } from './store.js';
 
 /** Options of `createCloth`. Unknown fields are rejected. */
@@ -42,7 +42,20 @@ export interface Cloth {
   readonly rows: number;
 }
 
-const KEYS = ['origin', 'width', 'height', 'columns', 'rows', 'mass', 'pinned', 'compliance', 'shearCompliance', 'bendCompliance', 'tearStretch', 'drag'] as const;
+const KEYS = [
+  'origin',
+  'width',
+  'height',
+  'columns',
+  'rows',
+  'mass',
+  'pinned',
+  'compliance',
+  'shearCompliance',
+  'bendCompliance',
+  'tearStretch',
+  'drag',
+] as const;
 
 /**
  * Builds a cloth (Ramtal and Dobre ch. 13; the mass-spring cloth of Provot, "Deformation constraints in
@@ -61,10 +74,14 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   assertKnownKeys(where, options, KEYS);
   const origin = options.origin ?? [0, 0];
   assertVector(where, 'origin', origin, 2);
-  const width = options.width ?? 1, height = options.height ?? 1;
-  assertPositive(where, 'width', width); assertPositive(where, 'height', height);
-  const cols = options.columns ?? 32, rows = options.rows ?? 32;
-  assertInteger(where, 'columns', cols, 2, 512); assertInteger(where, 'rows', rows, 2, 512);
+  const width = options.width ?? 1,
+    height = options.height ?? 1;
+  assertPositive(where, 'width', width);
+  assertPositive(where, 'height', height);
+  const cols = options.columns ?? 32,
+    rows = options.rows ?? 32;
+  assertInteger(where, 'columns', cols, 2, 512);
+  assertInteger(where, 'rows', rows, 2, 512);
   const mass = options.mass ?? 0.5;
   assertPositive(where, 'mass', mass);
   const compliance = options.compliance ?? 0;
@@ -81,19 +98,31 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   const pinned = new Uint8Array(n);
   const pin = options.pinned ?? 'top';
   if (pin === 'top') for (let c = 0; c < cols; c++) pinned[c] = 1;
-  else if (pin === 'corners') { pinned[0] = 1; pinned[cols - 1] = 1; }
-  else if (pin !== 'none') {
-    if (!Array.isArray(pin)) throw new TypeError(`${where}: pinned must be 'top', 'corners', 'none' or an array of point indices, got ${describe(pin)}`);
-    for (const i of pin) { assertInteger(where, 'pinned[i]', i, 0, n - 1); pinned[i] = 1; }
+  else if (pin === 'corners') {
+    pinned[0] = 1;
+    pinned[cols - 1] = 1;
+  } else if (pin !== 'none') {
+    if (!Array.isArray(pin))
+      throw new TypeError(`${where}: pinned must be 'top', 'corners', 'none' or an array of point indices, got ${describe(pin)}`);
+    for (const i of pin) {
+      assertInteger(where, 'pinned[i]', i, 0, n - 1);
+      pinned[i] = 1;
+    }
   }
-  const linkCount = 2 * cols * rows - cols - rows
-    + (shear === null ? 0 : 2 * (cols - 1) * (rows - 1))
-    + (bend === null ? 0 : (cols - 2) * rows + (rows - 2) * cols);
+  const linkCount =
+    2 * cols * rows -
+    cols -
+    rows +
+    (shear === null ? 0 : 2 * (cols - 1) * (rows - 1)) +
+    (bend === null ? 0 : (cols - 2) * rows + (rows - 2) * cols);
   if (world.entityIndex.aliveCount + n + linkCount > world.capacity) {
-    throw new RangeError(`${where}: the cloth needs ${n + linkCount} entities (${n} points, ${linkCount} links), the world has room for ${world.capacity - world.entityIndex.aliveCount}`);
+    throw new RangeError(
+      `${where}: the cloth needs ${n + linkCount} entities (${n} points, ${linkCount} links), the world has room for ${world.capacity - world.entityIndex.aliveCount}`,
+    );
   }
 
-  const dx = width / (cols - 1), dy = height / (rows - 1);
+  const dx = width / (cols - 1),
+    dy = height / (rows - 1);
   const m = mass / n;
   const points = new Int32Array(n);
   for (let r = 0; r < rows; r++) {
@@ -109,34 +138,45 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   ensureJointArrays(world.joints, world.capacity);
   const att = world.joints.attached;
   const link = (i: number, j: number, comp: number, kind: number, tears: boolean): void => {
-    const a = slotOf(points[i]!), b = slotOf(points[j]!);
+    const a = slotOf(points[i]!),
+      b = slotOf(points[j]!);
     const e = createSlot(world, 'createCloth');
     addComponent(world, e, C.ClothLink);
     const L = C.ClothLink;
-    L.a[e] = a; L.b[e] = b;
+    L.a[e] = a;
+    L.b[e] = b;
     L.restLength[e] = Math.hypot(C.Position.x[b]! - C.Position.x[a]!, C.Position.y[b]! - C.Position.y[a]!);
-    L.compliance[e] = comp; L.tearStretch[e] = tears ? tear : Infinity; L.kind[e] = kind;
-    att[a] = att[a]! + 1; att[b] = att[b]! + 1;
+    L.compliance[e] = comp;
+    L.tearStretch[e] = tears ? tear : Infinity;
+    L.kind[e] = kind;
+    att[a] = att[a]! + 1;
+    att[b] = att[b]! + 1;
     links[k++] = currentHandle(world, e);
   };
-  for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) {
-    const i = r * cols + c;
-    if (c + 1 < cols) link(i, i + 1, compliance, ClothLinkKind.Structural, true);
-    if (r + 1 < rows) link(i, i + cols, compliance, ClothLinkKind.Structural, true);
-  }
-  if (shear !== null) for (let r = 0; r + 1 < rows; r++) for (let c = 0; c + 1 < cols; c++) {
-    const i = r * cols + c;
-    link(i, i + cols + 1, shear, ClothLinkKind.Shear, true);
-    link(i + 1, i + cols, shear, ClothLinkKind.Shear, true);
-  }
-  if (bend !== null) for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) {
-    const i = r * cols + c;
-    // Bending links break with their cloth: they tear at twice the stretch, so a cut opens cleanly.
-    if (c + 2 < cols) link(i, i + 2, bend, ClothLinkKind.Bending, false);
-    if (r + 2 < rows) link(i, i + 2 * cols, bend, ClothLinkKind.Bending, false);
-  }
+  for (let r = 0; r < rows; r++)
+    for (let c = 0; c < cols; c++) {
+      const i = r * cols + c;
+      if (c + 1 < cols) link(i, i + 1, compliance, ClothLinkKind.Structural, true);
+      if (r + 1 < rows) link(i, i + cols, compliance, ClothLinkKind.Structural, true);
+    }
+  if (shear !== null)
+    for (let r = 0; r + 1 < rows; r++)
+      for (let c = 0; c + 1 < cols; c++) {
+        const i = r * cols + c;
+        link(i, i + cols + 1, shear, ClothLinkKind.Shear, true);
+        link(i + 1, i + cols, shear, ClothLinkKind.Shear, true);
+      }
+  if (bend !== null)
+    for (let r = 0; r < rows; r++)
+      for (let c = 0; c < cols; c++) {
+        const i = r * cols + c;
+        // Bending links break with their cloth: they tear at twice the stretch, so a cut opens cleanly.
+        if (c + 2 < cols) link(i, i + 2, bend, ClothLinkKind.Bending, false);
+        if (r + 2 < rows) link(i, i + 2 * cols, bend, ClothLinkKind.Bending, false);
+      }
   if (tear !== Infinity && bend !== null) {
-    for (let i = linkCount - ((cols - 2) * rows + (rows - 2) * cols); i < linkCount; i++) C.ClothLink.tearStretch[slotOf(links[i]!)] = 2 * tear;
+    for (let i = linkCount - ((cols - 2) * rows + (rows - 2) * cols); i < linkCount; i++)
+      C.ClothLink.tearStretch[slotOf(links[i]!)] = 2 * tear;
   }
   world.cloth.version++;
   return { points, links, columns: cols, rows };

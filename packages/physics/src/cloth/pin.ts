@@ -1,7 +1,7 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import { resolveKind } from '../handles.js';
 import { assertVector } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Holds a cloth point (or any dynamic body) fixed at `position` (m), or with `position` null lets it go
@@ -25,8 +25,14 @@ export function pinClothPoint(world: PhysicsWorld, point: number, position: Arra
     }
     return;
   }
-  if (!hasComponent(world, e, c.Kinematic)) { addComponent(world, e, c.Kinematic); c.Mass.inv[e] = 0; }
-  c.Position.x[e] = position[0]!; c.Position.y[e] = position[1]!;
-  c.PreviousPosition.x[e] = position[0]!; c.PreviousPosition.y[e] = position[1]!;
-  c.Velocity.x[e] = 0; c.Velocity.y[e] = 0;
+  if (!hasComponent(world, e, c.Kinematic)) {
+    addComponent(world, e, c.Kinematic);
+    c.Mass.inv[e] = 0;
+  }
+  c.Position.x[e] = position[0]!;
+  c.Position.y[e] = position[1]!;
+  c.PreviousPosition.x[e] = position[0]!;
+  c.PreviousPosition.y[e] = position[1]!;
+  c.Velocity.x[e] = 0;
+  c.Velocity.y[e] = 0;
 }

@@ -1,9 +1,9 @@
 import { removeEntity } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import type { Components } from '../components.js';
-import { query } from '../query.js';
-import { pushBreak } from '../joints/state.js';
 import { currentHandle } from '../handles.js';
+import { pushBreak } from '../joints/state.js';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
 import type { ClothState } from './state.js';
 
 /**
@@ -40,17 +40,30 @@ export function clothSystem(world: PhysicsWorld): void {
   const n = cl.count;
   if (n === 0) return;
   const c = world.components;
-  const h = world.h, S = cl.substeps, hs = h / S, ihs = 1 / hs, ihs2 = ihs * ihs;
-  const gx = world.gravity[0]!, gy = world.gravity[1]!;
+  const h = world.h,
+    S = cl.substeps,
+    hs = h / S,
+    ihs = 1 / hs,
+    ihs2 = ihs * ihs;
+  const gx = world.gravity[0]!,
+    gy = world.gravity[1]!;
   const k = cl.scalars;
-  k[0] = hs; k[1] = ihs; k[2] = gx * hs; k[3] = gy * hs; k[4] = gx * h; k[5] = gy * h; k[6] = ihs2;
-  const np = cl.pointCount, rigid = cl.rigidCount;
+  k[0] = hs;
+  k[1] = ihs;
+  k[2] = gx * hs;
+  k[3] = gy * hs;
+  k[4] = gx * h;
+  k[5] = gy * h;
+  k[6] = ihs2;
+  const np = cl.pointCount,
+    rigid = cl.rigidCount;
   let massesChanged = false;
   for (let i = 0; i < np; i += CHUNK) if (gatherPoints(cl, c, i, Math.min(np, i + CHUNK))) massesChanged = true;
   // The per-link factors depend on the links, the points' inverse masses and h_s only: most steps reuse them.
   if (massesChanged || cl.preparedVersion !== cl.built || cl.preparedStep !== hs) {
     for (let l = 0; l < n; l += CHUNK) prepareLinks(cl, l, Math.min(n, l + CHUNK));
-    cl.preparedVersion = cl.built; cl.preparedStep = hs;
+    cl.preparedVersion = cl.built;
+    cl.preparedStep = hs;
   }
   for (let sub = 0; sub < S; sub++) {
     for (let i = 0; i < np; i += CHUNK) predictPoints(cl, sub > 0, i, Math.min(np, i + CHUNK));
@@ -90,15 +103,39 @@ const CHUNK = 2048;
  * @returns whether any of these points' inverse mass differs from the one the buffer held.
  */
 function gatherPoints(cl: ClothState, c: Components, from: number, to: number): boolean {
-  const P = cl.points, xb = cl.buffer, U = 5 * cl.pointCount, gxh = cl.scalars[4]!, gyh = cl.scalars[5]!;
-  const px = c.Position.x, py = c.Position.y, inv = c.Mass.inv;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, vx = c.Velocity.x, vy = c.Velocity.y;
+  const P = cl.points,
+    xb = cl.buffer,
+    U = 5 * cl.pointCount,
+    gxh = cl.scalars[4]!,
+    gyh = cl.scalars[5]!;
+  const px = c.Position.x,
+    py = c.Position.y,
+    inv = c.Mass.inv;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y;
   let changed = false;
   for (let i = from; i < to; i++) {
-    const e = P[i]!, o = 3 * i, v = 2 * i, w = inv[e]!;
-    if (xb[o + 2] !== w) { xb[o + 2] = w; changed = true; }
-    if (w > 0) { xb[o] = ox[e]!; xb[o + 1] = oy[e]!; xb[U + v] = vx[e]! - gxh; xb[U + v + 1] = vy[e]! - gyh; }
-    else { xb[o] = px[e]!; xb[o + 1] = py[e]!; xb[U + v] = 0; xb[U + v + 1] = 0; }
+    const e = P[i]!,
+      o = 3 * i,
+      v = 2 * i,
+      w = inv[e]!;
+    if (xb[o + 2] !== w) {
+      xb[o + 2] = w;
+      changed = true;
+    }
+    if (w > 0) {
+      xb[o] = ox[e]!;
+      xb[o + 1] = oy[e]!;
+      xb[U + v] = vx[e]! - gxh;
+      xb[U + v + 1] = vy[e]! - gyh;
+    } else {
+      xb[o] = px[e]!;
+      xb[o + 1] = py[e]!;
+      xb[U + v] = 0;
+      xb[U + v + 1] = 0;
+    }
   }
   return changed;
 }
@@ -109,78 +146,139 @@ function gatherPoints(cl: ClothState, c: Components, from: number, to: number): 
  * header's step).
  */
 function prepareLinks(cl: ClothState, from: number, to: number): void {
-  const xb = cl.buffer, I = cl.pair, R = cl.rest, K = cl.compliance, F = cl.solve, ihs2 = cl.scalars[6]!;
+  const xb = cl.buffer,
+    I = cl.pair,
+    R = cl.rest,
+    K = cl.compliance,
+    F = cl.solve,
+    ihs2 = cl.scalars[6]!;
   for (let l = from; l < to; l++) {
-    const d = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + K[l]! * ihs2, r = R[l]!;
-    F[2 * l] = (r * r) / 3; F[2 * l + 1] = d > 0 ? 2 / (3 * d) : 0;
+    const d = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + K[l]! * ihs2,
+      r = R[l]!;
+    F[2 * l] = (r * r) / 3;
+    F[2 * l + 1] = d > 0 ? 2 / (3 * d) : 0;
   }
 }
 
 /** Points [from, to): velocities from the last substep's moves (when `after`: from the second substep on), then predict: v += g h_s, x += v h_s. */
 function predictPoints(cl: ClothState, after: boolean, from: number, to: number): void {
-  const xb = cl.buffer, np = cl.pointCount, Q = 3 * np, U = 5 * np, k = cl.scalars;
-  const hs = k[0]!, ihs = k[1]!, dvx = k[2]!, dvy = k[3]!;
+  const xb = cl.buffer,
+    np = cl.pointCount,
+    Q = 3 * np,
+    U = 5 * np,
+    k = cl.scalars;
+  const hs = k[0]!,
+    ihs = k[1]!,
+    dvx = k[2]!,
+    dvy = k[3]!;
   for (let i = from; i < to; i++) {
     const o = 3 * i;
     if (xb[o + 2] === 0) continue;
-    const v = 2 * i, x = xb[o]!, y = xb[o + 1]!;
+    const v = 2 * i,
+      x = xb[o]!,
+      y = xb[o + 1]!;
     let v1: number, v2: number;
-    if (after) { v1 = (x - xb[Q + v]!) * ihs + dvx; v2 = (y - xb[Q + v + 1]!) * ihs + dvy; }
-    else { v1 = xb[U + v]! + dvx; v2 = xb[U + v + 1]! + dvy; }
-    xb[Q + v] = x; xb[Q + v + 1] = y;
-    xb[o] = x + v1 * hs; xb[o + 1] = y + v2 * hs;
+    if (after) {
+      v1 = (x - xb[Q + v]!) * ihs + dvx;
+      v2 = (y - xb[Q + v + 1]!) * ihs + dvy;
+    } else {
+      v1 = xb[U + v]! + dvx;
+      v2 = xb[U + v + 1]! + dvy;
+    }
+    xb[Q + v] = x;
+    xb[Q + v + 1] = y;
+    xb[o] = x + v1 * hs;
+    xb[o + 1] = y + v2 * hs;
   }
 }
 
 /** One Gauss-Seidel pass over the packed links [from, to). */
 function projectLinks(cl: ClothState, from: number, to: number): void {
-  const xb = cl.buffer, I = cl.pair, F = cl.solve;
+  const xb = cl.buffer,
+    I = cl.pair,
+    F = cl.solve;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-    const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
-    const dx = bx - ax, dy = by - ay;
-    const p = F[2 * l]!, d2 = dx * dx + dy * dy;
-    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
-    xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
-    xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
+    const oa = I[2 * l]!,
+      ob = I[2 * l + 1]!;
+    const ax = xb[oa]!,
+      ay = xb[oa + 1]!,
+      bx = xb[ob]!,
+      by = xb[ob + 1]!;
+    const dx = bx - ax,
+      dy = by - ay;
+    const p = F[2 * l]!,
+      d2 = dx * dx + dy * dy;
+    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)),
+      sa = xb[oa + 2]! * ks,
+      sb = xb[ob + 2]! * ks;
+    xb[oa] = ax - sa * dx;
+    xb[oa + 1] = ay - sa * dy;
+    xb[ob] = bx + sb * dx;
+    xb[ob + 1] = by + sb * dy;
   }
 }
 
 /** `projectLinks`, also keeping each link's multiplier in `lambda` (the last substep's, for break forces). */
 function projectLinksRecording(cl: ClothState, from: number, to: number): void {
-  const xb = cl.buffer, I = cl.pair, F = cl.solve, lam = cl.lambda;
+  const xb = cl.buffer,
+    I = cl.pair,
+    F = cl.solve,
+    lam = cl.lambda;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-    const ax = xb[oa]!, ay = xb[oa + 1]!, bx = xb[ob]!, by = xb[ob + 1]!;
-    const dx = bx - ax, dy = by - ay;
-    const p = F[2 * l]!, d2 = dx * dx + dy * dy;
-    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)), sa = xb[oa + 2]! * ks, sb = xb[ob + 2]! * ks;
+    const oa = I[2 * l]!,
+      ob = I[2 * l + 1]!;
+    const ax = xb[oa]!,
+      ay = xb[oa + 1]!,
+      bx = xb[ob]!,
+      by = xb[ob + 1]!;
+    const dx = bx - ax,
+      dy = by - ay;
+    const p = F[2 * l]!,
+      d2 = dx * dx + dy * dy;
+    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)),
+      sa = xb[oa + 2]! * ks,
+      sb = xb[ob + 2]! * ks;
     // The multiplier of this projection: dlambda = -C / D = (r - L) / D = (s / D) L, with s / D = ks.
     lam[l] = ks * Math.sqrt(d2);
-    xb[oa] = ax - sa * dx; xb[oa + 1] = ay - sa * dy;
-    xb[ob] = bx + sb * dx; xb[ob + 1] = by + sb * dy;
+    xb[oa] = ax - sa * dx;
+    xb[oa + 1] = ay - sa * dy;
+    xb[ob] = bx + sb * dx;
+    xb[ob + 1] = by + sb * dy;
   }
 }
 
 /** Writes points [from, to) that move back to the stores: positions, and velocities from their last substep's move. */
 function scatterPoints(cl: ClothState, c: Components, from: number, to: number): void {
-  const P = cl.points, xb = cl.buffer, Q = 3 * cl.pointCount, ihs = cl.scalars[1]!;
-  const px = c.Position.x, py = c.Position.y, vx = c.Velocity.x, vy = c.Velocity.y;
+  const P = cl.points,
+    xb = cl.buffer,
+    Q = 3 * cl.pointCount,
+    ihs = cl.scalars[1]!;
+  const px = c.Position.x,
+    py = c.Position.y,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y;
   for (let i = from; i < to; i++) {
     const o = 3 * i;
     if (xb[o + 2] === 0) continue;
-    const e = P[i]!, v = 2 * i;
-    px[e] = xb[o]!; py[e] = xb[o + 1]!;
-    vx[e] = (xb[o]! - xb[Q + v]!) * ihs; vy[e] = (xb[o + 1]! - xb[Q + v + 1]!) * ihs;
+    const e = P[i]!,
+      v = 2 * i;
+    px[e] = xb[o]!;
+    py[e] = xb[o + 1]!;
+    vx[e] = (xb[o]! - xb[Q + v]!) * ihs;
+    vy[e] = (xb[o + 1]! - xb[Q + v + 1]!) * ihs;
   }
 }
 
 /** The larger of `maxQ` and the largest q = (L / r)^2 of links [from, to). */
 function largestStretch(cl: ClothState, from: number, to: number, maxQ: number): number {
-  const xb = cl.buffer, I = cl.pair, F = cl.solve;
+  const xb = cl.buffer,
+    I = cl.pair,
+    F = cl.solve;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-    const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
+    const oa = I[2 * l]!,
+      ob = I[2 * l + 1]!;
+    const dx = xb[ob]! - xb[oa]!,
+      dy = xb[ob + 1]! - xb[oa + 1]!;
     const q = (dx * dx + dy * dy) / (3 * F[2 * l]!);
     if (q > maxQ) maxQ = q;
   }
@@ -189,23 +287,45 @@ function largestStretch(cl: ClothState, from: number, to: number, maxQ: number):
 
 /** Tears the links past their tear strain: reports each in `world.joints.breaks` (in link order), then removes them. */
 function tearLinks(world: PhysicsWorld, ihs2: number): void {
-  const cl = world.cloth, c = world.components, n = cl.count, rigid = cl.rigidCount;
-  const I = cl.pair, F = cl.solve, T = cl.tear, E = cl.link, lam = cl.lambda, xb = cl.buffer;
+  const cl = world.cloth,
+    c = world.components,
+    n = cl.count,
+    rigid = cl.rigidCount;
+  const I = cl.pair,
+    F = cl.solve,
+    T = cl.tear,
+    E = cl.link,
+    lam = cl.lambda,
+    xb = cl.buffer;
   const doomed: number[] = [];
   for (let l = 0; l < n; l++) {
-    const oa = I[2 * l]!, ob = I[2 * l + 1]!;
-    const dx = xb[ob]! - xb[oa]!, dy = xb[ob + 1]! - xb[oa + 1]!;
-    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!), t1 = 1 + T[l]!;
+    const oa = I[2 * l]!,
+      ob = I[2 * l + 1]!;
+    const dx = xb[ob]! - xb[oa]!,
+      dy = xb[ob + 1]! - xb[oa + 1]!;
+    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!),
+      t1 = 1 + T[l]!;
     if (q > t1 * t1) {
       const strain = Math.sqrt(q) - 1;
       const e = E[l]!;
       doomed.push(e);
       // Force: the link's tension k strain for a compliant link, else the last substep's correction impulse.
       const force = l >= rigid ? Math.abs(lam[l]!) * ihs2 : 0;
-      pushBreak(world.joints.breaks, currentHandle(world, e), currentHandle(world, c.ClothLink.a[e]!), currentHandle(world, c.ClothLink.b[e]!), force, 0, strain);
+      pushBreak(
+        world.joints.breaks,
+        currentHandle(world, e),
+        currentHandle(world, c.ClothLink.a[e]!),
+        currentHandle(world, c.ClothLink.b[e]!),
+        force,
+        0,
+        strain,
+      );
     }
   }
-  for (const e of doomed) { detachClothLink(world, e); removeEntity(world, e); }
+  for (const e of doomed) {
+    detachClothLink(world, e);
+    removeEntity(world, e);
+  }
 }
 
 /** Packs the cloth links (as pairs of compact point offsets) and their distinct points. */
@@ -217,24 +337,43 @@ function pack(world: PhysicsWorld): void {
   const n = links.length;
   if (cl.rest.length < n) {
     const cap = Math.max(16, n * 2);
-    cl.link = new Int32Array(cap); cl.pair = new Int32Array(2 * cap);
-    cl.rest = new Float64Array(cap); cl.compliance = new Float64Array(cap); cl.tear = new Float64Array(cap);
-    cl.lambda = new Float64Array(cap); cl.solve = new Float64Array(2 * cap);
+    cl.link = new Int32Array(cap);
+    cl.pair = new Int32Array(2 * cap);
+    cl.rest = new Float64Array(cap);
+    cl.compliance = new Float64Array(cap);
+    cl.tear = new Float64Array(cap);
+    cl.lambda = new Float64Array(cap);
+    cl.solve = new Float64Array(2 * cap);
   }
-  if (cl.seen.length < world.capacity + 1) { cl.seen = new Uint32Array(world.capacity + 1); cl.compact = new Int32Array(world.capacity + 1); }
-  const seen = cl.seen, compact = cl.compact, stamp = ++cl.seenStamp;
+  if (cl.seen.length < world.capacity + 1) {
+    cl.seen = new Uint32Array(world.capacity + 1);
+    cl.compact = new Int32Array(world.capacity + 1);
+  }
+  const seen = cl.seen,
+    compact = cl.compact,
+    stamp = ++cl.seenStamp;
   const points: number[] = [];
   const index = (e: number): number => {
-    if (seen[e] !== stamp) { seen[e] = stamp; compact[e] = points.length; points.push(e); }
+    if (seen[e] !== stamp) {
+      seen[e] = stamp;
+      compact[e] = points.length;
+      points.push(e);
+    }
     return compact[e]! * 3;
   };
   // Inextensible links go first, the compliant ones after (see clothSystem).
-  let front = 0, back = n - 1, tearQ = Infinity;
+  let front = 0,
+    back = n - 1,
+    tearQ = Infinity;
   for (let i = 0; i < n; i++) {
     const e = links[i]!;
     const k = L.compliance[e]! === 0 ? front++ : back--;
-    cl.link[k] = e; cl.pair[2 * k] = index(L.a[e]!); cl.pair[2 * k + 1] = index(L.b[e]!);
-    cl.rest[k] = L.restLength[e]!; cl.compliance[k] = L.compliance[e]!; cl.tear[k] = L.tearStretch[e]!;
+    cl.link[k] = e;
+    cl.pair[2 * k] = index(L.a[e]!);
+    cl.pair[2 * k + 1] = index(L.b[e]!);
+    cl.rest[k] = L.restLength[e]!;
+    cl.compliance[k] = L.compliance[e]!;
+    cl.tear[k] = L.tearStretch[e]!;
     const t1 = 1 + L.tearStretch[e]!;
     if (t1 * t1 < tearQ) tearQ = t1 * t1;
   }
@@ -263,32 +402,47 @@ function colourOrder(cl: ClothState, from: number, to: number, pointCount: numbe
   const colour = new Int32Array(m);
   let colours = 0;
   for (let k = 0; k < m; k++) {
-    const a = cl.pair[2 * (from + k)]! / 3, b = cl.pair[2 * (from + k) + 1]! / 3;
+    const a = cl.pair[2 * (from + k)]! / 3,
+      b = cl.pair[2 * (from + k) + 1]! / 3;
     let c = 0;
     for (; c < 64; c++) {
-      const word = c >> 5, bit = 1 << (c & 31);
+      const word = c >> 5,
+        bit = 1 << (c & 31);
       if (((used[2 * a + word]! | used[2 * b + word]!) & bit) === 0) break;
     }
-    if (c < 64) { const word = c >> 5, bit = 1 << (c & 31); used[2 * a + word]! |= bit; used[2 * b + word]! |= bit; }
-    else c = 63; // more than 63 links at a point: the rest share the last colour (still correct, only slower)
+    if (c < 64) {
+      const word = c >> 5,
+        bit = 1 << (c & 31);
+      used[2 * a + word]! |= bit;
+      used[2 * b + word]! |= bit;
+    } else c = 63; // more than 63 links at a point: the rest share the last colour (still correct, only slower)
     colour[k] = c;
     if (c + 1 > colours) colours = c + 1;
   }
   const start = new Int32Array(colours + 1);
   for (let k = 0; k < m; k++) start[colour[k]! + 1]!++;
   for (let c = 0; c < colours; c++) start[c + 1]! += start[c]!;
-  const link = cl.link.slice(from, to), pair = cl.pair.slice(2 * from, 2 * to);
-  const rest = cl.rest.slice(from, to), comp = cl.compliance.slice(from, to), tear = cl.tear.slice(from, to);
+  const link = cl.link.slice(from, to),
+    pair = cl.pair.slice(2 * from, 2 * to);
+  const rest = cl.rest.slice(from, to),
+    comp = cl.compliance.slice(from, to),
+    tear = cl.tear.slice(from, to);
   for (let k = 0; k < m; k++) {
     const j = from + start[colour[k]!]!++;
-    cl.link[j] = link[k]!; cl.pair[2 * j] = pair[2 * k]!; cl.pair[2 * j + 1] = pair[2 * k + 1]!;
-    cl.rest[j] = rest[k]!; cl.compliance[j] = comp[k]!; cl.tear[j] = tear[k]!;
+    cl.link[j] = link[k]!;
+    cl.pair[2 * j] = pair[2 * k]!;
+    cl.pair[2 * j + 1] = pair[2 * k + 1]!;
+    cl.rest[j] = rest[k]!;
+    cl.compliance[j] = comp[k]!;
+    cl.tear[j] = tear[k]!;
   }
 }
 
 /** Bookkeeping of a cloth link's removal (the caller removes the entity): uncount it from its points, repack. */
 export function detachClothLink(world: PhysicsWorld, e: number): void {
-  const L = world.components.ClothLink, att = world.joints.attached;
-  att[L.a[e]!] = att[L.a[e]!]! - 1; att[L.b[e]!] = att[L.b[e]!]! - 1;
+  const L = world.components.ClothLink,
+    att = world.joints.attached;
+  att[L.a[e]!] = att[L.a[e]!]! - 1;
+  att[L.b[e]!] = att[L.b[e]!]! - 1;
   world.cloth.version++;
 }

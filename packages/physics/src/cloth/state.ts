@@ -12,9 +12,12 @@ export interface ClothState {
   count: number;
   rigidCount: number;
   /** Per link: its entity; and (2 per link) the position offsets (3 x compact index) of its points a and b in `buffer`. */
-  link: Int32Array; pair: Int32Array;
+  link: Int32Array;
+  pair: Int32Array;
   /** Per link: rest length (m), compliance (m/N), tear strain. */
-  rest: Float64Array; compliance: Float64Array; tear: Float64Array;
+  rest: Float64Array;
+  compliance: Float64Array;
+  tear: Float64Array;
   /** Distinct points of the links (entity slots; the moving ones get their velocities from their moves). */
   pointCount: number;
   points: Int32Array;
@@ -23,7 +26,8 @@ export interface ClothState {
   /** Per link (2 each): r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
   solve: Float64Array;
   /** The packing (`built`) and the substep h_s (s) `solve` was computed for; it is recomputed when either, or a point's inverse mass, changes. */
-  preparedVersion: number; preparedStep: number;
+  preparedVersion: number;
+  preparedStep: number;
   /** Per entity scratch: compact index of a point while packing. */
   compact: Int32Array;
   /** Per link: XPBD multiplier of the last substep (N s^2). */
@@ -42,11 +46,29 @@ export interface ClothState {
 /** An empty cloth state. */
 export function createClothState(): ClothState {
   const state: ClothState = {
-    substeps: 11, version: 0, built: 0, count: 0, rigidCount: 0,
-    link: new Int32Array(0), pair: new Int32Array(0), buffer: new Float64Array(0), solve: new Float64Array(0), compact: new Int32Array(0),
-    rest: new Float64Array(0), compliance: new Float64Array(0), tear: new Float64Array(0),
-    pointCount: 0, points: new Int32Array(0), lambda: new Float64Array(0), seen: new Uint32Array(0), seenStamp: 0, maxStretch: 0,
-    tearQ: Infinity, scalars: new Float64Array(7), preparedVersion: -1, preparedStep: 0,
+    substeps: 11,
+    version: 0,
+    built: 0,
+    count: 0,
+    rigidCount: 0,
+    link: new Int32Array(0),
+    pair: new Int32Array(0),
+    buffer: new Float64Array(0),
+    solve: new Float64Array(0),
+    compact: new Int32Array(0),
+    rest: new Float64Array(0),
+    compliance: new Float64Array(0),
+    tear: new Float64Array(0),
+    pointCount: 0,
+    points: new Int32Array(0),
+    lambda: new Float64Array(0),
+    seen: new Uint32Array(0),
+    seenStamp: 0,
+    maxStretch: 0,
+    tearQ: Infinity,
+    scalars: new Float64Array(7),
+    preparedVersion: -1,
+    preparedStep: 0,
   };
   // maxStretch and preparedStep hold fractions: V8 gives a field first written with 0 small-integer storage
   // and changes the object's hidden class when the first fraction arrives, which threw the solver's

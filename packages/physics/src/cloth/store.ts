@@ -11,7 +11,8 @@ export const ClothLinkKind = Object.freeze({ Structural: 0, Shear: 1, Bending: 2
 /** Fields of a cloth link. Units SI. */
 export interface ClothLinkStore {
   /** The two point bodies (entity slots). */
-  a: Int32Array; b: Int32Array;
+  a: Int32Array;
+  b: Int32Array;
   /** Rest length, m, > 0. */
   restLength: Float64Array;
   /**
@@ -28,7 +29,11 @@ export interface ClothLinkStore {
 /** The store with empty arrays (lazily allocated on first use; see LAZY_COMPONENTS). */
 export function createClothLinkStore(): ClothLinkStore {
   return {
-    a: new Int32Array(0), b: new Int32Array(0), restLength: new Float64Array(0), compliance: new Float64Array(0),
-    tearStretch: new Float64Array(0), kind: new Uint8Array(0),
+    a: new Int32Array(0),
+    b: new Int32Array(0),
+    restLength: new Float64Array(0),
+    compliance: new Float64Array(0),
+    tearStretch: new Float64Array(0),
+    kind: new Uint8Array(0),
   };
 }

@@ -23,13 +23,31 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * Returns 0.
  */
 export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const sorted = A[0] as Int32Array, cellX = A[1] as Int32Array, cellY = A[2] as Int32Array, cellZ = A[3] as Int32Array;
-  const start = A[4] as Int32Array, ox = A[5] as Float64Array, oy = A[6] as Float64Array, oz = A[7] as Float64Array;
-  const radius = A[8] as Float64Array, margin = A[9] as Float64Array, type = A[10] as Uint8Array, counts = A[11] as Int32Array;
+  const sorted = A[0] as Int32Array,
+    cellX = A[1] as Int32Array,
+    cellY = A[2] as Int32Array,
+    cellZ = A[3] as Int32Array;
+  const start = A[4] as Int32Array,
+    ox = A[5] as Float64Array,
+    oy = A[6] as Float64Array,
+    oz = A[7] as Float64Array;
+  const radius = A[8] as Float64Array,
+    margin = A[9] as Float64Array,
+    type = A[10] as Uint8Array,
+    counts = A[11] as Int32Array;
   const rest = A[12] as Float64Array;
-  const outA = A[13 + 3 * part] as Int32Array, outB = A[14 + 3 * part] as Int32Array, outW = A[15 + 3 * part] as Int32Array;
-  const mask = P[0]!, is3D = P[1] === 3, cap = P[2]!;
-  const sX = P[3]!, sXZ = P[4]!, gx0 = P[5]!, gy0 = P[6]!, gz0 = P[7]!, dense = sX > 0;
+  const outA = A[13 + 3 * part] as Int32Array,
+    outB = A[14 + 3 * part] as Int32Array,
+    outW = A[15 + 3 * part] as Int32Array;
+  const mask = P[0]!,
+    is3D = P[1] === 3,
+    cap = P[2]!;
+  const sX = P[3]!,
+    sXZ = P[4]!,
+    gx0 = P[5]!,
+    gy0 = P[6]!,
+    gz0 = P[7]!,
+    dense = sX > 0;
   // The half neighbourhood (broadphase.ts HALF_2D, HALF_3D), as (dx, dy, dz) triples.
   const off = is3D
     ? [1, 0, 0, -1, 1, 0, 0, 1, 0, 1, 1, 0, -1, -1, 1, 0, -1, 1, 1, -1, 1, -1, 0, 1, 0, 0, 1, 1, 0, 1, -1, 1, 1, 0, 1, 1, 1, 1, 1]
@@ -40,35 +58,52 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
   // z (its cells' and stores' z are 0).
   const step = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0];
   for (let k = 0; k < nOff; k++) step[k] = off[3 * k]! + off[3 * k + 2]! * sX - off[3 * k + 1]! * sXZ;
-  let count = 0, woken = 0;
+  let count = 0,
+    woken = 0;
   for (let p = lo; p < hi && count >= 0; p++) {
     const e = sorted[p]!;
-    const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
-    const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
+    const cx = cellX[p]!,
+      cy = cellY[p]!,
+      cz = cellZ[p]!;
+    const x = ox[e]!,
+      y = oy[e]!,
+      z = is3D ? oz[e]! : 0;
     const reach = radius[e]! + margin[e]!;
     const te = type[e]!;
     const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : 0;
     // Own cell (later entries only), then the half neighbourhood.
     for (let k = -1; k < nOff && count >= 0; k++) {
-      let nx = cx, ny = cy, nz = cz, bucket = own;
+      let nx = cx,
+        ny = cy,
+        nz = cz,
+        bucket = own;
       if (k >= 0) {
-        nx = cx + off[3 * k]!; ny = cy + off[3 * k + 1]!; nz = cz + off[3 * k + 2]!;
+        nx = cx + off[3 * k]!;
+        ny = cy + off[3 * k + 1]!;
+        nz = cz + off[3 * k + 2]!;
         if (dense) bucket = own + step[k]!;
       }
       if (!dense) bucket = ((Math.imul(nx, 73856093) ^ Math.imul(ny, 19349663) ^ Math.imul(nz, 83492791)) >>> 0) & mask;
       for (let q = k < 0 ? p + 1 : start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
         if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
-        const f = sorted[q]!, tf = type[f]!;
+        const f = sorted[q]!,
+          tf = type[f]!;
         // Neither dynamic: no pair, unless a kinematic ball meets a sleeping one.
         if (te !== 0 && tf !== 0 && !((te === 1 && tf === 3) || (te === 3 && tf === 1))) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
+        const dx = ox[f]! - x,
+          dy = oy[f]! - y,
+          dz = is3D ? oz[f]! - z : 0;
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) {
-          if (count >= cap || woken + 2 > cap) { count = -1; break; }
+          if (count >= cap || woken + 2 > cap) {
+            count = -1;
+            break;
+          }
           // A sleeping ball met by a kinematic one or a moving one (no rest time) is to be woken.
           if (te === 3 && (tf === 1 || rest[f] === 0)) outW[woken++] = e;
           if (tf === 3 && (te === 1 || rest[e] === 0)) outW[woken++] = f;
-          outA[count] = e < f ? e : f; outB[count] = e < f ? f : e;
+          outA[count] = e < f ? e : f;
+          outB[count] = e < f ? f : e;
           count++;
         }
       }
@@ -78,4 +113,3 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
   counts[16 + part] = count < 0 ? -1 : woken;
   return ids === null ? 0 : 0;
 }
-

@@ -13,12 +13,12 @@
  * full either way (broadphase.ts), so the pairs are the one-thread ones too.
  */
 
-import type { PhysicsWorld } from '../world.js';
-import { BodyType, PairKind, type CollisionState } from './state.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
 import { sharedCopy } from '../threads/pool.js';
+import type { PhysicsWorld } from '../world.js';
+import { BodyType, type CollisionState, PairKind } from './state.js';
 
 export { ballPairs } from './broadphase-pairs-kernel.js';
 
@@ -28,7 +28,14 @@ export const PAIRS_MIN_PER_THREAD = 2048;
 /** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at 16 + p their wake counts (the kernel's layout). */
 const MAX_PARTS = 16;
 
-interface PairBuffers { a: Int32Array[]; b: Int32Array[]; w: Int32Array[]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array }
+interface PairBuffers {
+  a: Int32Array[];
+  b: Int32Array[];
+  w: Int32Array[];
+  counts: Int32Array;
+  arrays: KernelArray[];
+  params: Float64Array;
+}
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
@@ -41,7 +48,10 @@ const buffersOf = new WeakMap<CollisionState, PairBuffers>();
  * @throws Error naming broadphaseSystem if a worker thread failed.
  */
 export function parallelBallPairs(
-  world: PhysicsWorld, cs: CollisionState, small: number, mask: number,
+  world: PhysicsWorld,
+  cs: CollisionState,
+  small: number,
+  mask: number,
   wake: (world: PhysicsWorld, cs: CollisionState, e: number) => void,
 ): boolean {
   const pool = world.threadPool;
@@ -52,16 +62,24 @@ export function parallelBallPairs(
   const c = world.components;
   const g = cs.grid;
   // The scratch arrays the pass reads move to shared memory once (and again after they grow).
-  g.sorted = sharedCopy(g.sorted); g.cellX = sharedCopy(g.cellX); g.cellY = sharedCopy(g.cellY); g.cellZ = sharedCopy(g.cellZ);
+  g.sorted = sharedCopy(g.sorted);
+  g.cellX = sharedCopy(g.cellX);
+  g.cellY = sharedCopy(g.cellY);
+  g.cellZ = sharedCopy(g.cellZ);
   g.bucketStart = sharedCopy(g.bucketStart);
-  cs.margin = sharedCopy(cs.margin); cs.bodyType = sharedCopy(cs.bodyType); cs.sleep.restTime = sharedCopy(cs.sleep.restTime);
+  cs.margin = sharedCopy(cs.margin);
+  cs.bodyType = sharedCopy(cs.bodyType);
+  cs.sleep.restTime = sharedCopy(cs.sleep.restTime);
   let buf = buffersOf.get(cs);
   const cap = 4 * small + 1024;
   if (buf === undefined || buf.a.length < pool.threads || buf.a[0]!.length < cap) {
-    const size = Math.max(cap, 2 * (buf?.a[0]!.length ?? 0));
-    const a: Int32Array[] = [], b: Int32Array[] = [], w: Int32Array[] = [];
+    const size = Math.max(cap, 2 * (buf === undefined ? 0 : buf.a[0]!.length));
+    const a: Int32Array[] = [],
+      b: Int32Array[] = [],
+      w: Int32Array[] = [];
     for (let p = 0; p < pool.threads; p++) {
-      a.push(new Int32Array(new SharedArrayBuffer(4 * size))); b.push(new Int32Array(new SharedArrayBuffer(4 * size)));
+      a.push(new Int32Array(new SharedArrayBuffer(4 * size)));
+      b.push(new Int32Array(new SharedArrayBuffer(4 * size)));
       w.push(new Int32Array(new SharedArrayBuffer(4 * size)));
     }
     buf = { a, b, w, counts: new Int32Array(new SharedArrayBuffer(4 * 2 * MAX_PARTS)), arrays: [], params: new Float64Array(8) };
@@ -69,18 +87,40 @@ export function parallelBallPairs(
   }
   const A = buf.arrays;
   A.length = 0;
-  A.push(g.sorted, g.cellX, g.cellY, g.cellZ, g.bucketStart, c.PreviousPosition.x, c.PreviousPosition.y, c.PreviousPosition.z,
-    c.Ball.radius, cs.margin, cs.bodyType, buf.counts, cs.sleep.restTime);
+  A.push(
+    g.sorted,
+    g.cellX,
+    g.cellY,
+    g.cellZ,
+    g.bucketStart,
+    c.PreviousPosition.x,
+    c.PreviousPosition.y,
+    c.PreviousPosition.z,
+    c.Ball.radius,
+    cs.margin,
+    cs.bodyType,
+    buf.counts,
+    cs.sleep.restTime,
+  );
   for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!, buf.w[p]!);
   const P = buf.params;
-  P[0] = mask; P[1] = world.dimensions; P[2] = buf.a[0]!.length;
-  P[3] = g.spanX; P[4] = g.spanXZ; P[5] = g.originX; P[6] = g.originY; P[7] = g.originZ;
+  P[0] = mask;
+  P[1] = world.dimensions;
+  P[2] = buf.a[0]!.length;
+  P[3] = g.spanX;
+  P[4] = g.spanXZ;
+  P[5] = g.originX;
+  P[6] = g.originY;
+  P[7] = g.originZ;
   buf.counts.fill(0);
   if (runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) === null) return false;
   let total = 0;
   for (let p = 0; p < pool.threads; p++) {
     const k = buf.counts[p]!;
-    if (k < 0 || buf.counts[MAX_PARTS + p]! < 0) { buffersOf.delete(cs); return false; } // a buffer overflowed: the caller's loop this step, larger buffers next
+    if (k < 0 || buf.counts[MAX_PARTS + p]! < 0) {
+      buffersOf.delete(cs);
+      return false;
+    } // a buffer overflowed: the caller's loop this step, larger buffers next
     total += k;
   }
   // Append in range order: the one-thread order.
@@ -88,9 +128,15 @@ export function parallelBallPairs(
   if (cs.pairA.length < n + total) {
     let size = Math.max(16, cs.pairA.length);
     while (size < n + total) size *= 2;
-    const a = new Int32Array(size), b = new Int32Array(size), k = new Uint8Array(size);
-    a.set(cs.pairA.subarray(0, n)); b.set(cs.pairB.subarray(0, n)); k.set(cs.pairKind.subarray(0, n));
-    cs.pairA = a; cs.pairB = b; cs.pairKind = k;
+    const a = new Int32Array(size),
+      b = new Int32Array(size),
+      k = new Uint8Array(size);
+    a.set(cs.pairA.subarray(0, n));
+    b.set(cs.pairB.subarray(0, n));
+    k.set(cs.pairKind.subarray(0, n));
+    cs.pairA = a;
+    cs.pairB = b;
+    cs.pairKind = k;
   }
   for (let p = 0; p < pool.threads; p++) {
     const k = buf.counts[p]!;

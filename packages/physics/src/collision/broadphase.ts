@@ -1,11 +1,11 @@
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { BodyType, PairKind, type CollisionState } from './state.js';
+import { BodyType, type CollisionState, PairKind } from './state.js';
+
 export { BodyType, PairKind } from './state.js';
-import { wakeTag } from './sleep.js';
+
 import { parallelBallPairs } from './broadphase-pairs.js';
-
-
+import { wakeTag } from './sleep.js';
 
 /** Bodies whose reach (radius + speculative margin) exceeds this many times the mean reach skip the grid. */
 const OVERSIZED_FACTOR = 2.5;
@@ -17,8 +17,7 @@ const HALF_3D: readonly number[] = (() => {
   const out: number[] = [];
   for (let dz = -1; dz <= 1; dz++)
     for (let dy = -1; dy <= 1; dy++)
-      for (let dx = -1; dx <= 1; dx++)
-        if (dz > 0 || (dz === 0 && dy > 0) || (dz === 0 && dy === 0 && dx > 0)) out.push(dx, dy, dz);
+      for (let dx = -1; dx <= 1; dx++) if (dz > 0 || (dz === 0 && dy > 0) || (dz === 0 && dy === 0 && dx > 0)) out.push(dx, dy, dz);
   return out;
 })();
 
@@ -75,11 +74,15 @@ function ensurePairs(cs: CollisionState, needed: number): void {
   if (needed <= cs.pairA.length) return;
   let n = cs.pairA.length;
   while (n < needed) n *= 2;
-  const a = new Int32Array(n), b = new Int32Array(n), k = new Uint8Array(n);
+  const a = new Int32Array(n),
+    b = new Int32Array(n),
+    k = new Uint8Array(n);
   a.set(cs.pairA.subarray(0, cs.pairCount));
   b.set(cs.pairB.subarray(0, cs.pairCount));
   k.set(cs.pairKind.subarray(0, cs.pairCount));
-  cs.pairA = a; cs.pairB = b; cs.pairKind = k;
+  cs.pairA = a;
+  cs.pairB = b;
+  cs.pairKind = k;
 }
 
 function pushPair(cs: CollisionState, kind: number, a: number, b: number): void {
@@ -105,7 +108,8 @@ function wakes(ta: number, tb: number): boolean {
  */
 function addBallPair(world: PhysicsWorld, cs: CollisionState, e: number, f: number): void {
   const type = cs.bodyType;
-  const te = type[e]!, tf = type[f]!;
+  const te = type[e]!,
+    tf = type[f]!;
   if (te === BodyType.Sleeping && tf === BodyType.Sleeping) return;
   const rest = cs.sleep.restTime;
   if (te === BodyType.Sleeping && (tf === BodyType.Kinematic || rest[f] === 0)) wakeForContact(world, cs, e);
@@ -122,12 +126,23 @@ function wakeForContact(world: PhysicsWorld, cs: CollisionState, e: number): voi
   const c = world.components;
   cs.bodyType[e] = BodyType.Dynamic;
   cs.invMass[e] = c.Mass.inv[e]!;
-  const g = world.gravity, h = world.h;
-  c.Velocity.x[e] = g[0]! * h; c.Velocity.y[e] = g[1]! * h; c.Velocity.z[e] = g[2]! * h;
-  c.PreviousPosition.x[e] = c.Position.x[e]!; c.PreviousPosition.y[e] = c.Position.y[e]!; c.PreviousPosition.z[e] = c.Position.z[e]!;
+  const g = world.gravity,
+    h = world.h;
+  c.Velocity.x[e] = g[0]! * h;
+  c.Velocity.y[e] = g[1]! * h;
+  c.Velocity.z[e] = g[2]! * h;
+  c.PreviousPosition.x[e] = c.Position.x[e]!;
+  c.PreviousPosition.y[e] = c.Position.y[e]!;
+  c.PreviousPosition.z[e] = c.Position.z[e]!;
   const f = 0.5 * h * h;
-  c.Position.x[e] = c.Position.x[e]! + g[0]! * f; c.Position.y[e] = c.Position.y[e]! + g[1]! * f; c.Position.z[e] = c.Position.z[e]! + g[2]! * f;
-  if (cs.wakeCount >= cs.wakeList.length) { const l = new Int32Array(cs.wakeList.length * 2 + 16); l.set(cs.wakeList); cs.wakeList = l; }
+  c.Position.x[e] = c.Position.x[e]! + g[0]! * f;
+  c.Position.y[e] = c.Position.y[e]! + g[1]! * f;
+  c.Position.z[e] = c.Position.z[e]! + g[2]! * f;
+  if (cs.wakeCount >= cs.wakeList.length) {
+    const l = new Int32Array(cs.wakeList.length * 2 + 16);
+    l.set(cs.wakeList);
+    cs.wakeList = l;
+  }
   cs.wakeList[cs.wakeCount++] = e;
 }
 
@@ -190,10 +205,19 @@ export function broadphaseSystem(world: PhysicsWorld): void {
 
   const h = world.h;
   const is3D = world.dimensions === 3;
-  const invMass = cs.invMass, invInertia = cs.invInertia, margin = cs.margin, type = cs.bodyType;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const invMass = cs.invMass,
+    invInertia = cs.invInertia,
+    margin = cs.margin,
+    type = cs.bodyType;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const radius = c.Ball.radius;
   const mInv = c.Mass.inv;
   const halfSpec = 0.5 * cs.settings.speculativeDistance;
@@ -205,7 +229,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     invMass[e] = mInv[e]!;
     invInertia[e] = 0;
     type[e] = BodyType.Dynamic;
-    const sx = vx[e]!, sy = vy[e]!, sz = vz[e]!;
+    const sx = vx[e]!,
+      sy = vy[e]!,
+      sz = vz[e]!;
     // The speculative pad shrinks for small balls (a quarter radius) so a heap of marbles does not
     // turn every neighbour within 5 cm into a contact.
     const r = radius[e]!;
@@ -215,18 +241,35 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   }
   let ents = query(world, [c.Ball, c.Inertia, c.AngularVelocity]);
   const iInv = c.Inertia.inv;
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invInertia[e] = iInv[e]!; }
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    invInertia[e] = iInv[e]!;
+  }
   ents = query(world, [c.Ball, c.Kinematic]);
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Kinematic; }
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    invMass[e] = 0;
+    invInertia[e] = 0;
+    type[e] = BodyType.Kinematic;
+  }
   ents = query(world, [c.Ball, c.Sleeping]);
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; invMass[e] = 0; type[e] = BodyType.Sleeping; }
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    invMass[e] = 0;
+    type[e] = BodyType.Sleeping;
+  }
   cs.wakeCount = 0;
   ents = query(world, [c.Ball, c.Position, c.Static]);
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    invMass[e] = 0; invInertia[e] = 0; type[e] = BodyType.Static; margin[e] = Math.min(halfSpec, 0.25 * radius[e]!);
+    invMass[e] = 0;
+    invInertia[e] = 0;
+    type[e] = BodyType.Static;
+    margin[e] = Math.min(halfSpec, 0.25 * radius[e]!);
     // Static bodies are never integrated: where they are is where they were.
-    ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!;
+    ox[e] = px[e]!;
+    oy[e] = py[e]!;
+    oz[e] = pz[e]!;
   }
 
   // Cell size from the reach of ordinary bodies; outliers go to the oversized list. The ordinary
@@ -235,7 +278,12 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const limit = OVERSIZED_FACTOR * (reachSum / n);
   let maxReach = 0;
   let maxReachAll = 0;
-  let loX = Infinity, hiX = -Infinity, loY = Infinity, hiY = -Infinity, loZ = Infinity, hiZ = -Infinity;
+  let loX = Infinity,
+    hiX = -Infinity,
+    loY = Infinity,
+    hiY = -Infinity,
+    loZ = Infinity,
+    hiZ = -Infinity;
   let nan = false;
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
@@ -243,7 +291,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     if (r > maxReachAll) maxReachAll = r;
     if (r > limit) continue;
     if (r > maxReach) maxReach = r;
-    const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
+    const x = ox[e]!,
+      y = oy[e]!,
+      z = is3D ? oz[e]! : 0;
     if (x < loX) loX = x;
     if (x > hiX) hiX = x;
     if (y < loY) loY = y;
@@ -259,33 +309,69 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   // Dense grid when the cells around the bodies are few enough (buckets in space order: the pairs,
   // contacts and solver bodies follow, which keeps the solver's reads near each other); else the hash.
   // cellOf is monotonic, so the extreme positions give the extreme cells.
-  let cx0 = cellOf(loX, invCell), cx1 = cellOf(hiX, invCell), cy0 = cellOf(loY, invCell), cy1 = cellOf(hiY, invCell);
-  let cz0 = cellOf(loZ, invCell), cz1 = cellOf(hiZ, invCell);
-  if (nan) { cx0 = Math.min(cx0, 0); cx1 = Math.max(cx1, 0); cy0 = Math.min(cy0, 0); cy1 = Math.max(cy1, 0); cz0 = Math.min(cz0, 0); cz1 = Math.max(cz1, 0); }
-  const spanX = cx1 - cx0 + 3, spanY = cy1 - cy0 + 3, spanZ = is3D ? cz1 - cz0 + 3 : 1;
+  let cx0 = cellOf(loX, invCell),
+    cx1 = cellOf(hiX, invCell),
+    cy0 = cellOf(loY, invCell),
+    cy1 = cellOf(hiY, invCell);
+  let cz0 = cellOf(loZ, invCell),
+    cz1 = cellOf(hiZ, invCell);
+  if (nan) {
+    cx0 = Math.min(cx0, 0);
+    cx1 = Math.max(cx1, 0);
+    cy0 = Math.min(cy0, 0);
+    cy1 = Math.max(cy1, 0);
+    cz0 = Math.min(cz0, 0);
+    cz1 = Math.max(cz1, 0);
+  }
+  const spanX = cx1 - cx0 + 3,
+    spanY = cy1 - cy0 + 3,
+    spanZ = is3D ? cz1 - cz0 + 3 : 1;
   const cells = spanX * spanY * spanZ;
   const dense = n >= DENSE_MIN_BODIES && maxReach > 0 && spanX >= 3 && spanY >= 3 && cells <= DENSE_CELLS_PER_BODY * n + 64;
   let table = 16;
   if (dense) {
     table = cells;
-    g.originX = cx0 - 1; g.originY = cy1 + 1; g.originZ = is3D ? cz0 - 1 : 0; g.spanX = spanX; g.spanXZ = spanX * spanZ;
+    g.originX = cx0 - 1;
+    g.originY = cy1 + 1;
+    g.originZ = is3D ? cz0 - 1 : 0;
+    g.spanX = spanX;
+    g.spanXZ = spanX * spanZ;
   } else {
     while (table < 2 * n) table *= 2;
-    g.originX = 0; g.originY = 0; g.originZ = 0; g.spanX = 0; g.spanXZ = 0;
+    g.originX = 0;
+    g.originY = 0;
+    g.originZ = 0;
+    g.spanX = 0;
+    g.spanXZ = 0;
   }
-  const gx0 = g.originX, gy0 = g.originY, gz0 = g.originZ, sX = g.spanX, sXZ = g.spanXZ;
+  const gx0 = g.originX,
+    gy0 = g.originY,
+    gz0 = g.originZ,
+    sX = g.spanX,
+    sXZ = g.spanXZ;
   ensureGrid(cs, n, table);
   const mask = table - 1;
   const start = g.bucketStart;
   start.fill(0, 0, table + 1);
-  const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, bucketOf = g.bucketOf, over = g.oversized;
+  const sorted = g.sorted,
+    cellX = g.cellX,
+    cellY = g.cellY,
+    cellZ = g.cellZ,
+    bucketOf = g.bucketOf,
+    over = g.oversized;
   let overCount = 0;
 
   // Counting sort by bucket: count, prefix sum, place.
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
-    if (radius[e]! + margin[e]! > limit) { bucketOf[i] = -1; over[overCount++] = e; continue; }
-    const cx = cellClamp(Math.floor(ox[e]! * invCell)), cy = cellClamp(Math.floor(oy[e]! * invCell)), cz = is3D ? cellClamp(Math.floor(oz[e]! * invCell)) : 0;
+    if (radius[e]! + margin[e]! > limit) {
+      bucketOf[i] = -1;
+      over[overCount++] = e;
+      continue;
+    }
+    const cx = cellClamp(Math.floor(ox[e]! * invCell)),
+      cy = cellClamp(Math.floor(oy[e]! * invCell)),
+      cz = is3D ? cellClamp(Math.floor(oz[e]! * invCell)) : 0;
     const b = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
     bucketOf[i] = b;
     start[b + 1]!++;
@@ -318,59 +404,82 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const offsets = is3D ? HALF_3D : HALF_2D;
     const stride = is3D ? 3 : 2;
     const nOffsets = offsets.length / stride;
-    for (let k = 0; k < nOffsets; k++) neighbourStep[k] = offsets[k * stride]! - offsets[k * stride + 1]! * sXZ + (is3D ? offsets[k * stride + 2]! * sX : 0);
+    for (let k = 0; k < nOffsets; k++)
+      neighbourStep[k] = offsets[k * stride]! - offsets[k * stride + 1]! * sXZ + (is3D ? offsets[k * stride + 2]! * sX : 0);
     // On the world's threads when it has them (broadphase-pairs.ts: the same pairs and wakes in the same order).
-    if (!parallelBallPairs(world, cs, small, mask, wakeForContact)) for (let p = 0; p < small; p++) {
-      const e = sorted[p]!;
-      const cx = cellX[p]!, cy = cellY[p]!, cz = cellZ[p]!;
-      const x = ox[e]!, y = oy[e]!, z = is3D ? oz[e]! : 0;
-      const reach = radius[e]! + margin[e]!;
-      const te = type[e]!;
-      // Own cell.
-      const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
-      for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
-        if (!dense && (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz)) continue;
-        const f = sorted[q]!;
-        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
-        const rr = reach + radius[f]! + margin[f]!;
-        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-      }
-      for (let k = 0; k < nOffsets; k++) {
-        const nx = cx + offsets[k * stride]!, ny = cy + offsets[k * stride + 1]!, nz = is3D ? cz + offsets[k * stride + 2]! : 0;
-        const bucket = dense ? own + neighbourStep[k]! : hashCell(nx, ny, nz) & mask;
-        for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-          if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
+    if (!parallelBallPairs(world, cs, small, mask, wakeForContact))
+      for (let p = 0; p < small; p++) {
+        const e = sorted[p]!;
+        const cx = cellX[p]!,
+          cy = cellY[p]!,
+          cz = cellZ[p]!;
+        const x = ox[e]!,
+          y = oy[e]!,
+          z = is3D ? oz[e]! : 0;
+        const reach = radius[e]! + margin[e]!;
+        const te = type[e]!;
+        // Own cell.
+        const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
+        for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
+          if (!dense && (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz)) continue;
           const f = sorted[q]!;
           if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-          const dx = ox[f]! - x, dy = oy[f]! - y, dz = is3D ? oz[f]! - z : 0;
+          const dx = ox[f]! - x,
+            dy = oy[f]! - y,
+            dz = is3D ? oz[f]! - z : 0;
           const rr = reach + radius[f]! + margin[f]!;
           if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
         }
+        for (let k = 0; k < nOffsets; k++) {
+          const nx = cx + offsets[k * stride]!,
+            ny = cy + offsets[k * stride + 1]!,
+            nz = is3D ? cz + offsets[k * stride + 2]! : 0;
+          const bucket = dense ? own + neighbourStep[k]! : hashCell(nx, ny, nz) & mask;
+          for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
+            if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
+            const f = sorted[q]!;
+            if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+            const dx = ox[f]! - x,
+              dy = oy[f]! - y,
+              dz = is3D ? oz[f]! - z : 0;
+            const rr = reach + radius[f]! + margin[f]!;
+            if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
+          }
+        }
       }
-    }
 
     // Oversized bodies: against each other directly, against grid bodies by a range query.
     for (let i = 0; i < overCount; i++) {
       const e = over[i]!;
-      const x = ox[e]!, y = oy[e]!, z = oz[e]!;
+      const x = ox[e]!,
+        y = oy[e]!,
+        z = oz[e]!;
       const reach = radius[e]! + margin[e]!;
       const te = type[e]!;
       for (let j = i + 1; j < overCount; j++) {
         const f = over[j]!;
         if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const dx = ox[f]! - x,
+          dy = oy[f]! - y,
+          dz = oz[f]! - z;
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
       }
       const B = boxArgs;
-      B[0] = x - reach; B[1] = y - reach; B[2] = z - reach; B[3] = x + reach; B[4] = y + reach; B[5] = z + reach;
+      B[0] = x - reach;
+      B[1] = y - reach;
+      B[2] = z - reach;
+      B[3] = x + reach;
+      B[4] = y + reach;
+      B[5] = z + reach;
       const found = queryBox(world, cs, small);
       const cand = g.candidates;
       for (let k = 0; k < found; k++) {
         const f = cand[k]!;
         if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x, dy = oy[f]! - y, dz = oz[f]! - z;
+        const dx = ox[f]! - x,
+          dy = oy[f]! - y,
+          dz = oz[f]! - z;
         const rr = reach + radius[f]! + margin[f]!;
         if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
       }
@@ -383,10 +492,19 @@ export function broadphaseSystem(world: PhysicsWorld): void {
       for (let i = 0; i < segs.length; i++) {
         const s = segs[i]!;
         const pad = S.radius[s]! + maxReachAll;
-        const ax = S.ax[s]!, ay = S.ay[s]!, az = S.az[s]!, bx = S.bx[s]!, by = S.by[s]!, bz = S.bz[s]!;
+        const ax = S.ax[s]!,
+          ay = S.ay[s]!,
+          az = S.az[s]!,
+          bx = S.bx[s]!,
+          by = S.by[s]!,
+          bz = S.bz[s]!;
         const B = boxArgs;
-        B[0] = Math.min(ax, bx) - pad; B[1] = Math.min(ay, by) - pad; B[2] = Math.min(az, bz) - pad;
-        B[3] = Math.max(ax, bx) + pad; B[4] = Math.max(ay, by) + pad; B[5] = Math.max(az, bz) + pad;
+        B[0] = Math.min(ax, bx) - pad;
+        B[1] = Math.min(ay, by) - pad;
+        B[2] = Math.min(az, bz) - pad;
+        B[3] = Math.max(ax, bx) + pad;
+        B[4] = Math.max(ay, by) + pad;
+        B[5] = Math.max(az, bz) + pad;
         const found = queryBox(world, cs, small);
         const cand = g.candidates;
         for (let k = 0; k < found; k++) {
@@ -418,27 +536,48 @@ function queryBox(world: PhysicsWorld, cs: CollisionState, small: number): numbe
   const half = 0.5 * g.cellSize;
   const is3D = world.dimensions === 3;
   const B = boxArgs;
-  const x0 = B[0]!, y0 = B[1]!, z0 = B[2]!, x1 = B[3]!, y1 = B[4]!, z1 = B[5]!;
-  const cx0 = cellClamp(Math.floor((x0 - half) * inv)), cx1 = cellClamp(Math.floor((x1 + half) * inv));
-  const cy0 = cellClamp(Math.floor((y0 - half) * inv)), cy1 = cellClamp(Math.floor((y1 + half) * inv));
-  const cz0 = is3D ? cellClamp(Math.floor((z0 - half) * inv)) : 0, cz1 = is3D ? cellClamp(Math.floor((z1 + half) * inv)) : 0;
+  const x0 = B[0]!,
+    y0 = B[1]!,
+    z0 = B[2]!,
+    x1 = B[3]!,
+    y1 = B[4]!,
+    z1 = B[5]!;
+  const cx0 = cellClamp(Math.floor((x0 - half) * inv)),
+    cx1 = cellClamp(Math.floor((x1 + half) * inv));
+  const cy0 = cellClamp(Math.floor((y0 - half) * inv)),
+    cy1 = cellClamp(Math.floor((y1 + half) * inv));
+  const cz0 = is3D ? cellClamp(Math.floor((z0 - half) * inv)) : 0,
+    cz1 = is3D ? cellClamp(Math.floor((z1 + half) * inv)) : 0;
   const cells = (cx1 - cx0 + 1) * (cy1 - cy0 + 1) * (cz1 - cz0 + 1);
-  const sorted = g.sorted, cellX = g.cellX, cellY = g.cellY, cellZ = g.cellZ, start = g.bucketStart;
+  const sorted = g.sorted,
+    cellX = g.cellX,
+    cellY = g.cellY,
+    cellZ = g.cellZ,
+    start = g.bucketStart;
   const out = g.candidates;
   let count = 0;
   if (!(cells <= small)) {
     for (let p = 0; p < small; p++) {
-      const x = cellX[p]!, y = cellY[p]!, z = cellZ[p]!;
+      const x = cellX[p]!,
+        y = cellY[p]!,
+        z = cellZ[p]!;
       if (x >= cx0 && x <= cx1 && y >= cy0 && y <= cy1 && z >= cz0 && z <= cz1) out[count++] = sorted[p]!;
     }
     return count;
   }
   const mask = g.tableSize - 1;
-  const sX = g.spanX, sXZ = g.spanXZ, gx0 = g.originX, gy0 = g.originY, gz0 = g.originZ;
+  const sX = g.spanX,
+    sXZ = g.spanXZ,
+    gx0 = g.originX,
+    gy0 = g.originY,
+    gz0 = g.originZ;
   // A dense grid holds nothing outside its range: the loops are clipped to it (cells there are empty).
-  const lx = sX > 0 ? Math.max(cx0, gx0) : cx0, hx = sX > 0 ? Math.min(cx1, gx0 + sX - 1) : cx1;
-  const ly = sX > 0 ? Math.max(cy0, gy0 - g.tableSize / sXZ + 1) : cy0, hy = sX > 0 ? Math.min(cy1, gy0) : cy1;
-  const lz = sX > 0 ? Math.max(cz0, gz0) : cz0, hz = sX > 0 ? Math.min(cz1, gz0 + sXZ / sX - 1) : cz1;
+  const lx = sX > 0 ? Math.max(cx0, gx0) : cx0,
+    hx = sX > 0 ? Math.min(cx1, gx0 + sX - 1) : cx1;
+  const ly = sX > 0 ? Math.max(cy0, gy0 - g.tableSize / sXZ + 1) : cy0,
+    hy = sX > 0 ? Math.min(cy1, gy0) : cy1;
+  const lz = sX > 0 ? Math.max(cz0, gz0) : cz0,
+    hz = sX > 0 ? Math.min(cz1, gz0 + sXZ / sX - 1) : cz1;
   for (let cz = lz; cz <= hz; cz++)
     for (let cy = ly; cy <= hy; cy++)
       for (let cx = lx; cx <= hx; cx++) {

@@ -38,17 +38,17 @@
  * solve between the contacts within each pass), and at least `CollisionSettings.coloredSolveMinRows` rows (default 16384).
  */
 
-import type { PhysicsWorld } from '../world.js';
-import type { ContactBuffer } from './contacts.js';
-import { BodyType, type CollisionState } from './state.js';
-import type { KernelArray } from '../threads/kernel-types.js';
-import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
-import { stripLayout2D, stripPlan2D } from './contact-strip-plan-kernel.js';
-import { impactChangedRows, releaseImpactedRows } from './impacts.js';
-import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { nowMs } from '../threads/adaptive.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { isShared, sharedCopy, sharedLike, type ThreadPool } from '../threads/pool.js';
+import type { PhysicsWorld } from '../world.js';
+import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './contact-colors-kernel.js';
 import { PACK_STRIDE } from './contact-pack2d.js';
+import { stripLayout2D, stripPlan2D } from './contact-strip-plan-kernel.js';
+import type { ContactBuffer } from './contacts.js';
+import { impactChangedRows, releaseImpactedRows } from './impacts.js';
+import { BodyType, type CollisionState } from './state.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 
 /**
@@ -93,32 +93,45 @@ const BINS = 4096;
 const NO_BIN = 0xffff;
 
 interface ColorScratch {
-  pack: Float64Array; dyn: Uint8Array; plan: Int32Array; bar: Int32Array; params: Float64Array;
+  pack: Float64Array;
+  dyn: Uint8Array;
+  plan: Int32Array;
+  bar: Int32Array;
+  params: Float64Array;
   /** The kernel's claim flags, a block of every unit (shared; zeroed before each run). */
   claim: Int32Array;
   /** Each pack row's two bodies' solver state offsets (shared; two a row). */
   pair: Int32Array;
   /** Each pack row's normal impulse delivered over the substeps, and its row in the contact buffer (shared). */
-  tot: Float64Array; row: Int32Array;
-  color: Uint8Array; mask: Uint32Array; arrays: KernelArray[];
+  tot: Float64Array;
+  row: Int32Array;
+  color: Uint8Array;
+  mask: Uint32Array;
+  arrays: KernelArray[];
   /** Each thread's first pack slot of every colour (MAX_COLORS + 1 a thread; the packing stage's cursors). */
   offsets: Int32Array;
   /** Rows a colour, the colours' first rows, the next free row of each (MAX_COLORS + 2 each, shared). */
-  counts: Int32Array; start: Int32Array; next: Int32Array;
+  counts: Int32Array;
+  start: Int32Array;
+  next: Int32Array;
   /** Each contact buffer row's pack row (shared; written by the packing, read by coloredRepack2D). */
   slot: Int32Array;
   /** The blocks' first pack rows (block j: bounds[j] .. bounds[j + 1] - 1), shared. */
   bounds: Int32Array;
   /** Strips: the movable solver bodies by strip pair, and each pair's first entry there (shared). */
-  bodyOrder: Int32Array; bodyBounds: Int32Array;
+  bodyOrder: Int32Array;
+  bodyBounds: Int32Array;
   /** Strips: each solver body's strip (255: fixed, in no strip); the rows' histogram; each bin's strip. */
-  strip: Uint8Array; hist: Int32Array; binStrip: Uint8Array;
+  strip: Uint8Array;
+  hist: Int32Array;
+  binStrip: Uint8Array;
   /** Strips: each solver body's histogram bin (NO_BIN: fixed). */
   bin: Uint16Array;
   /** The strips of the cut in `strip`, `bin`, `hist`, `binStrip` and `dyn` this step (0: none yet; planRows). */
   cut: number;
   /** The strip plan kernel's arguments (stripPlan2D; its layout helper's for graph colours too). */
-  planArrays: KernelArray[]; planParams: Float64Array;
+  planArrays: KernelArray[];
+  planParams: Float64Array;
   /** Whether this step's substeps ran by colours and the restitution stage has not used the plan yet. */
   pending: boolean;
 }
@@ -129,19 +142,34 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
   let s = scratchOf.get(cs);
   if (s === undefined) {
     s = {
-      pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)), pair: new Int32Array(new SharedArrayBuffer(4 * 2 * 1024)),
-      tot: new Float64Array(new SharedArrayBuffer(8 * 1024)), row: new Int32Array(new SharedArrayBuffer(4 * 1024)),
+      pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)),
+      pair: new Int32Array(new SharedArrayBuffer(4 * 2 * 1024)),
+      tot: new Float64Array(new SharedArrayBuffer(8 * 1024)),
+      row: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       dyn: new Uint8Array(new SharedArrayBuffer(1024)),
-      plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))), bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
-      params: new Float64Array(24), claim: new Int32Array(new SharedArrayBuffer(4 * 1024)), color: new Uint8Array(new SharedArrayBuffer(1024)), mask: new Uint32Array(1024), arrays: [],
+      plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))),
+      bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
+      params: new Float64Array(24),
+      claim: new Int32Array(new SharedArrayBuffer(4 * 1024)),
+      color: new Uint8Array(new SharedArrayBuffer(1024)),
+      mask: new Uint32Array(1024),
+      arrays: [],
       offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
-      counts: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))), start: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      next: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))), slot: new Int32Array(new SharedArrayBuffer(4 * 1024)),
+      counts: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      start: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      next: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      slot: new Int32Array(new SharedArrayBuffer(4 * 1024)),
       bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)), bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      strip: new Uint8Array(new SharedArrayBuffer(1024)), bin: new Uint16Array(new SharedArrayBuffer(2 * 1024)),
-      hist: new Int32Array(new SharedArrayBuffer(4 * BINS)), binStrip: new Uint8Array(new SharedArrayBuffer(BINS)),
-      pending: false, cut: 0, planArrays: [], planParams: new Float64Array(PLAN_PARAMS),
+      bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)),
+      bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
+      strip: new Uint8Array(new SharedArrayBuffer(1024)),
+      bin: new Uint16Array(new SharedArrayBuffer(2 * 1024)),
+      hist: new Int32Array(new SharedArrayBuffer(4 * BINS)),
+      binStrip: new Uint8Array(new SharedArrayBuffer(BINS)),
+      pending: false,
+      cut: 0,
+      planArrays: [],
+      planParams: new Float64Array(PLAN_PARAMS),
     };
     scratchOf.set(cs, s);
   }
@@ -194,19 +222,34 @@ function idle(NM: Float64Array, TM: Float64Array, LN: Float64Array, LT: Float64A
  * (`s.counts`) and per packing range (`s.offsets`, MAX_COLORS + 1 a range). Returns the colours used.
  */
 function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts: number): number {
-  const n = buf.count, bodies = cs.solverBodyCount;
-  const IA = buf.ia, IB = buf.ib, NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse1;
-  const sb = cs.bodyState, mask = s.mask, color = s.color;
-  const W = MAX_COLORS + 1, partCounts = s.offsets;
+  const n = buf.count,
+    bodies = cs.solverBodyCount;
+  const IA = buf.ia,
+    IB = buf.ib,
+    NM = buf.normalMass,
+    TM = buf.tangentMass,
+    LN = buf.normalImpulse,
+    LT = buf.tangentImpulse1;
+  const sb = cs.bodyState,
+    mask = s.mask,
+    color = s.color;
+  const W = MAX_COLORS + 1,
+    partCounts = s.offsets;
   mask.fill(0, 0, bodies);
   partCounts.fill(0, 0, parts * W);
   const counts = s.counts;
   counts.fill(0);
   for (let p = 0; p < parts; p++) {
-    const lo = Math.floor((n * p) / parts), hi = Math.floor((n * (p + 1)) / parts), base = p * W;
+    const lo = Math.floor((n * p) / parts),
+      hi = Math.floor((n * (p + 1)) / parts),
+      base = p * W;
     for (let i = lo; i < hi; i++) {
-      if (idle(NM, TM, LN, LT, i)) { color[i] = 255; continue; }
-      const a = IA[i]!, b = IB[i]!;
+      if (idle(NM, TM, LN, LT, i)) {
+        color[i] = 255;
+        continue;
+      }
+      const a = IA[i]!,
+        b = IB[i]!;
       // Only bodies an impulse can move take a colour's slot (the static world and kinematic bodies are read only).
       const ma = a !== 0 && (sb[a * 8 + 5]! > 0 || sb[a * 8 + 6]! > 0);
       const mb = sb[b * 8 + 5]! > 0 || sb[b * 8 + 6]! > 0;
@@ -246,10 +289,39 @@ function planArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch):
 /** solveColored2D's arrays for `buf`'s rows (contact-colors-kernel.ts, 0 to 30), into `A` (emptied first). */
 function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, A: KernelArray[]): KernelArray[] {
   A.length = 0;
-  A.push(s.pack, cs.bodyState, cs.bodyExtra, s.dyn, s.plan, s.bar, s.color, s.offsets,
-    buf.ia, buf.ib, buf.nx, buf.ny, buf.ra, buf.rb, buf.separation, buf.normalMass, buf.tangentMass, buf.frictionBound,
-    buf.normalImpulse, buf.tangentImpulse1, buf.rigidPartner, buf.maxNormalImpulse, buf.totalNormalImpulse,
-    s.bounds, s.bodyOrder, s.bodyBounds, s.pair, s.tot, s.row, s.claim, s.slot);
+  A.push(
+    s.pack,
+    cs.bodyState,
+    cs.bodyExtra,
+    s.dyn,
+    s.plan,
+    s.bar,
+    s.color,
+    s.offsets,
+    buf.ia,
+    buf.ib,
+    buf.nx,
+    buf.ny,
+    buf.ra,
+    buf.rb,
+    buf.separation,
+    buf.normalMass,
+    buf.tangentMass,
+    buf.frictionBound,
+    buf.normalImpulse,
+    buf.tangentImpulse1,
+    buf.rigidPartner,
+    buf.maxNormalImpulse,
+    buf.totalNormalImpulse,
+    s.bounds,
+    s.bodyOrder,
+    s.bodyBounds,
+    s.pair,
+    s.tot,
+    s.row,
+    s.claim,
+    s.slot,
+  );
   return A;
 }
 
@@ -258,8 +330,21 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
  * relativeVelocity, impactVelocity, separation, impulse, body types, solver state) to `A`; returns `A`.
  */
 export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: KernelArray[]): KernelArray[] {
-  A.push(buf.ia, buf.ib, buf.a, buf.b, buf.nx, buf.ny, buf.nz, buf.relativeVelocity, buf.impactVelocity, buf.separation,
-    buf.impulse, cs.bodyType, cs.bodyState);
+  A.push(
+    buf.ia,
+    buf.ib,
+    buf.a,
+    buf.b,
+    buf.nx,
+    buf.ny,
+    buf.nz,
+    buf.relativeVelocity,
+    buf.impactVelocity,
+    buf.separation,
+    buf.impulse,
+    cs.bodyType,
+    cs.bodyState,
+  );
   return A;
 }
 
@@ -267,11 +352,32 @@ export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: Ker
  * stripPlan2D's parameters, in `s.planParams`: a plan by `strips` strips (cut first if `cut`) over
  * `parts` packing ranges, packed there if `pack`.
  */
-function planParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, strips: number, parts: number, pack: boolean, cut: boolean): Float64Array {
+function planParameters(
+  cs: CollisionState,
+  buf: ContactBuffer,
+  s: ColorScratch,
+  strips: number,
+  parts: number,
+  pack: boolean,
+  cut: boolean,
+): Float64Array {
   const P = s.planParams;
-  P[0] = cs.solverBodyCount; P[1] = buf.count; P[2] = strips; P[3] = BINS; P[4] = BodyType.Dynamic; P[5] = NO_BIN;
-  P[6] = 31; P[7] = parts; P[8] = pack ? 1 : 0; P[9] = cut ? 1 : 0; P[10] = Math.max(64, buf.count >> 6);
-  P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = PLAN_HEAD; P[14] = MAX_COLORS; P[15] = BLOCK_ROWS;
+  P[0] = cs.solverBodyCount;
+  P[1] = buf.count;
+  P[2] = strips;
+  P[3] = BINS;
+  P[4] = BodyType.Dynamic;
+  P[5] = NO_BIN;
+  P[6] = 31;
+  P[7] = parts;
+  P[8] = pack ? 1 : 0;
+  P[9] = cut ? 1 : 0;
+  P[10] = Math.max(64, buf.count >> 6);
+  P[11] = buf.count;
+  P[12] = MAX_COLORS + 1;
+  P[13] = PLAN_HEAD;
+  P[14] = MAX_COLORS;
+  P[15] = BLOCK_ROWS;
   return P;
 }
 
@@ -294,7 +400,10 @@ function planParameters(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
 export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
   const cs = world.collision;
   const old = scratchOf.get(cs);
-  if (old !== undefined) { old.cut = 0; old.plan[11] = 0; }
+  if (old !== undefined) {
+    old.cut = 0;
+    old.plan[11] = 0;
+  }
   const pool = coloredPool(world, buf, others);
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
   // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
@@ -341,7 +450,11 @@ export function lastColorCount(cs: CollisionState): number {
 export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number; strips: boolean } {
   const s = scratchOf.get(cs);
   if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
-  const plan = s.plan, C = plan[4]!, pair = s.pair, sb = cs.bodyState, bounds = s.bounds;
+  const plan = s.plan,
+    C = plan[4]!,
+    pair = s.pair,
+    sb = cs.bodyState,
+    bounds = s.bounds;
   const seen = new Map<number, number>();
   let conflicts = 0;
   for (let c = 0; c < C; c++) {
@@ -349,14 +462,16 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
       for (let k = bounds[j]!; k < bounds[j + 1]!; k++) {
         for (const off of [pair[2 * k]!, pair[2 * k + 1]!]) {
           if (!(sb[off + 5]! > 0 || sb[off + 6]! > 0)) continue;
-          const key = c * 1e9 + off, was = seen.get(key);
+          const key = c * 1e9 + off,
+            was = seen.get(key);
           if (was !== undefined && was !== j) conflicts++;
           seen.set(key, j);
         }
       }
     }
   }
-  const o0 = plan[PLAN_HEAD + C]!, o1 = plan[PLAN_HEAD + C + 1]!;
+  const o0 = plan[PLAN_HEAD + C]!,
+    o1 = plan[PLAN_HEAD + C + 1]!;
   return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[8]!, strips: plan[9] === 1 };
 }
 
@@ -364,7 +479,12 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
 let mainMayWait: boolean | null = null;
 function mayWait(): boolean {
   if (mainMayWait === null) {
-    try { Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0); mainMayWait = true; } catch { mainMayWait = false; }
+    try {
+      Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
+      mainMayWait = true;
+    } catch {
+      mainMayWait = false;
+    }
   }
   return mainMayWait;
 }
@@ -376,10 +496,9 @@ function mayWait(): boolean {
  * solver.ts leaves them. `soft`: dynamic bias rate, mass scale, impulse scale, then the rigid ones.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  */
-export function solveColoredSubsteps(
-  world: PhysicsWorld, buf: ContactBuffer, hs: number, soft: readonly number[], push: number,
-): void {
-  const cs = world.collision, pool = world.threadPool!;
+export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs: number, soft: readonly number[], push: number): void {
+  const cs = world.collision,
+    pool = world.threadPool!;
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
   shareContactBuffer(buf);
@@ -393,23 +512,44 @@ export function solveColoredSubsteps(
   // measureApproach (solver.ts) of the rows, as the solve's unit after the packing.
   const A = approachArguments(cs, buf, solveArguments(cs, buf, s, s.arrays));
   // Rows packed on the worker whose values the impact stage changed meanwhile are packed again.
-  if (packed) { const changed = impactChangedRows(); coloredRepack2D(A, changed.rows, changed.count); }
-  const P = s.params, g = world.gravity;
-  plan[0] = st.solverSubsteps; plan[1] = st.solverIterations; plan[2] = st.relaxIterations;
-  plan[5] = cs.solverBodyCount; plan[6] = mayWait() ? 1 : 0; plan[7] = packed ? 0 : pool.threads;
+  if (packed) {
+    const changed = impactChangedRows();
+    coloredRepack2D(A, changed.rows, changed.count);
+  }
+  const P = s.params,
+    g = world.gravity;
+  plan[0] = st.solverSubsteps;
+  plan[1] = st.solverIterations;
+  plan[2] = st.relaxIterations;
+  plan[5] = cs.solverBodyCount;
+  plan[6] = mayWait() ? 1 : 0;
+  plan[7] = packed ? 0 : pool.threads;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
-  P[7] = push; P[8] = hs; P[9] = g[0]! * hs; P[10] = g[1]! * hs; P[11] = buf.count; P[12] = MAX_COLORS + 1; P[13] = SPIN_MICROSECONDS;
+  P[7] = push;
+  P[8] = hs;
+  P[9] = g[0]! * hs;
+  P[10] = g[1]! * hs;
+  P[11] = buf.count;
+  P[12] = MAX_COLORS + 1;
+  P[13] = SPIN_MICROSECONDS;
   // The relax passes' support rows (support.ts): which way is down, and the cosine past which a row is one.
-  downwardInto(g, P, 14); P[16] = SUPPORT_COS;
-  P[17] = g[0]!; P[18] = g[1]!; P[19] = g[2]!; P[20] = BodyType.Dynamic; P[21] = 1;
+  downwardInto(g, P, 14);
+  P[16] = SUPPORT_COS;
+  P[17] = g[0]!;
+  P[18] = g[1]!;
+  P[19] = g[2]!;
+  P[20] = BodyType.Dynamic;
+  P[21] = 1;
   const blocks = solveColoredBlocks2D(plan, buf.count, true);
   if (s.claim.length < blocks) s.claim = sharedLike(s.claim, Math.max(blocks, 2 * s.claim.length));
   A[29] = s.claim;
   const site = 'contactSolverSystem#colors';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
-  s.bar[0] = 0; s.bar[1] = 0; s.bar[2] = 0;
+  s.bar[0] = 0;
+  s.bar[1] = 0;
+  s.bar[2] = 0;
   s.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[3] = pool.threads;

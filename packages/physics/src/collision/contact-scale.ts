@@ -1,7 +1,7 @@
+import { registerExternalWorldState } from '../snapshot/world-state.js';
+import type { PhysicsWorld } from '../world.js';
 import type { ContactBuffer } from './contacts.js';
 import type { CollisionSettings } from './state.js';
-import type { PhysicsWorld } from '../world.js';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
 
 /**
  * Lengths that scale: the ball contacts' tolerances follow the size of the balls, so a 2 cm marble
@@ -54,9 +54,11 @@ export const BALL_HERTZ_FRACTION = 1;
  */
 export function smallestBallRadius(buf: ContactBuffer): number {
   let r = Infinity;
-  const RA = buf.ra, RB = buf.rb;
+  const RA = buf.ra,
+    RB = buf.rb;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const rb = RB[i]!, ra = RA[i]!;
+    const rb = RB[i]!,
+      ra = RA[i]!;
     if (rb < r) r = rb;
     if (ra > 0 && ra < r) r = ra;
   }
@@ -123,10 +125,15 @@ registerExternalWorldState({
   name: 'contact-scale',
   get: (world, create) => {
     let state = scaleState.get(world);
-    if (state === undefined && create) { state = { substeps: 0, length: Infinity }; scaleState.set(world, state); }
+    if (state === undefined && create) {
+      state = { substeps: 0, length: Infinity };
+      scaleState.set(world, state);
+    }
     return state;
   },
-  clear: (world) => { scaleState.delete(world); },
+  clear: (world) => {
+    scaleState.delete(world);
+  },
 });
 
 /**
@@ -143,9 +150,15 @@ registerExternalWorldState({
  * first substep corrects.
  */
 export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWorld) => void): void {
-  const cs = world.collision, settings = cs.settings, base = settings.solverSubsteps, buf = cs.contacts;
+  const cs = world.collision,
+    settings = cs.settings,
+    base = settings.solverSubsteps,
+    buf = cs.contacts;
   let state = scaleState.get(world);
-  if (state === undefined) { state = { substeps: 0, length: Infinity }; scaleState.set(world, state); }
+  if (state === undefined) {
+    state = { substeps: 0, length: Infinity };
+    scaleState.set(world, state);
+  }
   const target = smallestBallRadius(buf);
   if (target < Infinity) {
     const last = state.length;
@@ -158,15 +171,28 @@ export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWo
     if (state.substeps > 0) scaleWarmStart(cs.cache.rows, state.substeps / count);
     state.substeps = count;
   }
-  if (count === base) { solve(world); return; }
+  if (count === base) {
+    solve(world);
+    return;
+  }
   settings.solverSubsteps = count;
-  try { solve(world); } finally { settings.solverSubsteps = base; }
+  try {
+    solve(world);
+  } finally {
+    settings.solverSubsteps = base;
+  }
 }
 
 /** Multiplies the warm-start impulses (normal and both tangents) of the cached rows by `k`. */
 function scaleWarmStart(rows: ContactBuffer, k: number): void {
-  const LN = rows.normalImpulse, L1 = rows.tangentImpulse1, L2 = rows.tangentImpulse2;
-  for (let i = 0, n = rows.count; i < n; i++) { LN[i] = LN[i]! * k; L1[i] = L1[i]! * k; L2[i] = L2[i]! * k; }
+  const LN = rows.normalImpulse,
+    L1 = rows.tangentImpulse1,
+    L2 = rows.tangentImpulse2;
+  for (let i = 0, n = rows.count; i < n; i++) {
+    LN[i] = LN[i]! * k;
+    L1[i] = L1[i]! * k;
+    L2[i] = L2[i]! * k;
+  }
 }
 
 /** sqrt(length / CONTACT_LENGTH_UNIT), the factor speeds scale by; 1 for no contacts (length Infinity) or length <= 0. */

@@ -38,31 +38,68 @@ import type { stripCut2D } from './contact-strips-kernel.js';
  * here). `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
  * 11 stripLayout2D. Returns 1 when planned, -1 when too many rows overflow.
  */
-export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number, _part: number, H: readonly KernelHelper[]): number {
+export function stripPlan2D(
+  A: KernelArray[],
+  P: Float64Array,
+  _ids: Int32Array | null,
+  lo: number,
+  hi: number,
+  _part: number,
+  H: readonly KernelHelper[],
+): number {
   if (lo >= hi) return 0;
   const plan = A[4] as Int32Array;
-  const bodies = P[0]!, n = P[1]!, strips = P[2]!, parts = P[7]!, W = P[12]!, MAXC = P[14]!;
+  const bodies = P[0]!,
+    n = P[1]!,
+    strips = P[2]!,
+    parts = P[7]!,
+    W = P[12]!,
+    MAXC = P[14]!;
   if (P[9] === 1) (H[10] as typeof stripCut2D)(A, P, null, 0, 1);
   // Each row's group, counted per group and per packing range.
-  const IA = A[8] as Int32Array, IB = A[9] as Int32Array, NM = A[15] as Float64Array, TM = A[16] as Float64Array;
-  const LN = A[18] as Float64Array, LT = A[19] as Float64Array, color = A[6] as Uint8Array, partCounts = A[7] as Int32Array;
-  const strip = A[36] as Uint8Array, counts = A[42] as Int32Array, start = A[43] as Int32Array, next = A[44] as Int32Array;
+  const IA = A[8] as Int32Array,
+    IB = A[9] as Int32Array,
+    NM = A[15] as Float64Array,
+    TM = A[16] as Float64Array;
+  const LN = A[18] as Float64Array,
+    LT = A[19] as Float64Array,
+    color = A[6] as Uint8Array,
+    partCounts = A[7] as Int32Array;
+  const strip = A[36] as Uint8Array,
+    counts = A[42] as Int32Array,
+    start = A[43] as Int32Array,
+    next = A[44] as Int32Array;
   const half = strips >> 1;
   partCounts.fill(0, 0, parts * W);
   counts.fill(0);
   let overflow = 0;
   for (let p = 0; p < parts; p++) {
-    const r0 = Math.floor((n * p) / parts), r1 = Math.floor((n * (p + 1)) / parts), base = p * W;
+    const r0 = Math.floor((n * p) / parts),
+      r1 = Math.floor((n * (p + 1)) / parts),
+      base = p * W;
     for (let i = r0; i < r1; i++) {
-      if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) { color[i] = 255; continue; }
-      const sa = strip[IA[i]!]!, sbb = strip[IB[i]!]!;
+      if (NM[i] === 0 && TM[i] === 0 && LN[i] === 0 && LT[i] === 0) {
+        color[i] = 255;
+        continue;
+      }
+      const sa = strip[IA[i]!]!,
+        sbb = strip[IB[i]!]!;
       let low: number, high: number;
-      if (sa === 255) { low = sbb === 255 ? 0 : sbb; high = low; }
-      else if (sbb === 255) { low = sa; high = sa; }
-      else { low = sa < sbb ? sa : sbb; high = sa < sbb ? sbb : sa; }
+      if (sa === 255) {
+        low = sbb === 255 ? 0 : sbb;
+        high = low;
+      } else if (sbb === 255) {
+        low = sa;
+        high = sa;
+      } else {
+        low = sa < sbb ? sa : sbb;
+        high = sa < sbb ? sbb : sa;
+      }
       let c: number;
-      if (high - low > 1) { c = MAXC; overflow++; }
-      else c = (low & 1) === 0 ? low >> 1 : half + (low >> 1);
+      if (high - low > 1) {
+        c = MAXC;
+        overflow++;
+      } else c = (low & 1) === 0 ? low >> 1 : half + (low >> 1);
       color[i] = c;
       counts[c] = counts[c]! + 1;
       partCounts[base + c] = partCounts[base + c]! + 1;
@@ -70,7 +107,8 @@ export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array 
   }
   if (overflow > P[10]!) return -1;
   // The movable bodies by strip pair (counting sort), for the even blocks' body stages.
-  const bb = A[25] as Int32Array, order = A[24] as Int32Array;
+  const bb = A[25] as Int32Array,
+    order = A[24] as Int32Array;
   bb.fill(0, 0, half + 1);
   for (let k = 1; k < bodies; k++) if (strip[k] !== 255) bb[(strip[k]! >> 1) + 1]++;
   for (let j = 0; j < half; j++) bb[j + 1] = bb[j + 1]! + bb[j]!;
@@ -109,14 +147,27 @@ export function stripPlan2D(A: KernelArray[], P: Float64Array, _ids: Int32Array 
  * A and P as stripPlan2D's (42 counts, 43 start, 44 next). Returns the rows to pack.
  */
 export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number, half: number): number {
-  const plan = A[4] as Int32Array, partCounts = A[7] as Int32Array, bounds = A[23] as Int32Array;
-  const counts = A[42] as Int32Array, start = A[43] as Int32Array, next = A[44] as Int32Array;
-  const parts = P[7]!, W = P[12]!, HEAD = P[13]!, MAXC = P[14]!, blockRows = P[15]!;
+  const plan = A[4] as Int32Array,
+    partCounts = A[7] as Int32Array,
+    bounds = A[23] as Int32Array;
+  const counts = A[42] as Int32Array,
+    start = A[43] as Int32Array,
+    next = A[44] as Int32Array;
+  const parts = P[7]!,
+    W = P[12]!,
+    HEAD = P[13]!,
+    MAXC = P[14]!,
+    blockRows = P[15]!;
   const colors = half > 0 ? 2 : groups;
   start.fill(0);
   let at = 0;
-  for (let g = 0; g < groups; g++) { start[g] = at; at += counts[g]!; }
-  start[groups] = at; at += counts[MAXC]!; start[groups + 1] = at;
+  for (let g = 0; g < groups; g++) {
+    start[g] = at;
+    at += counts[g]!;
+  }
+  start[groups] = at;
+  at += counts[MAXC]!;
+  start[groups + 1] = at;
   next.set(start);
   next[MAXC] = start[groups]!;
   for (let p = 0; p < parts; p++) {
@@ -128,13 +179,16 @@ export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number,
     }
   }
   // Blocks, colour by colour.
-  let nb = 0, color = -1;
+  let nb = 0,
+    color = -1;
   for (let g = 0; g < groups; g++) {
     const c = half > 0 ? (g < half ? 0 : 1) : g;
     while (color < c) plan[HEAD + ++color] = nb;
-    const r0 = start[g]!, r1 = start[g + 1]!;
-    if (half > 0) { if (r1 > r0) bounds[nb++] = r0; }
-    else for (let r = r0; r < r1; r += blockRows) bounds[nb++] = r;
+    const r0 = start[g]!,
+      r1 = start[g + 1]!;
+    if (half > 0) {
+      if (r1 > r0) bounds[nb++] = r0;
+    } else for (let r = r0; r < r1; r += blockRows) bounds[nb++] = r;
   }
   while (color < colors) plan[HEAD + ++color] = nb;
   if (start[groups + 1]! > start[groups]!) bounds[nb++] = start[groups]!;

@@ -29,35 +29,58 @@ import type { KernelArray } from '../threads/kernel-types.js';
 export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
   const b = P[6]!;
-  const sb = A[b] as Float64Array, ex = A[b + 1] as Float64Array, type = A[b + 2] as Uint8Array, list = A[b + 3] as Int32Array;
-  const dyn = A[b + 4] as Uint8Array, strip = A[b + 5] as Uint8Array, binOf = A[b + 6] as Uint16Array;
-  const hist = A[b + 7] as Int32Array, binStrip = A[b + 8] as Uint8Array;
-  const IA = A[b + 9] as Int32Array, IB = A[b + 10] as Int32Array;
-  const bodies = P[0]!, n = P[1]!, strips = P[2]!, BINS = P[3]!, DYNAMIC = P[4]!, NO_BIN = P[5]!;
+  const sb = A[b] as Float64Array,
+    ex = A[b + 1] as Float64Array,
+    type = A[b + 2] as Uint8Array,
+    list = A[b + 3] as Int32Array;
+  const dyn = A[b + 4] as Uint8Array,
+    strip = A[b + 5] as Uint8Array,
+    binOf = A[b + 6] as Uint16Array;
+  const hist = A[b + 7] as Int32Array,
+    binStrip = A[b + 8] as Uint8Array;
+  const IA = A[b + 9] as Int32Array,
+    IB = A[b + 10] as Int32Array;
+  const bodies = P[0]!,
+    n = P[1]!,
+    strips = P[2]!,
+    BINS = P[3]!,
+    DYNAMIC = P[4]!,
+    NO_BIN = P[5]!;
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver.ts).
   dyn[0] = 0;
   for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === DYNAMIC ? 1 : 0;
   // The longer axis of the movable bodies' spread.
-  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    x1 = -Infinity,
+    y0 = Infinity,
+    y1 = -Infinity;
   strip[0] = 255;
   for (let k = 1; k < bodies; k++) {
     const o = k * 8;
-    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) { strip[k] = 255; continue; }
+    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) {
+      strip[k] = 255;
+      continue;
+    }
     strip[k] = 0;
-    const x = ex[k * 6]!, y = ex[k * 6 + 1]!;
+    const x = ex[k * 6]!,
+      y = ex[k * 6 + 1]!;
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
     if (y < y0) y0 = y;
     if (y > y1) y1 = y;
   }
   const axis = x1 - x0 >= y1 - y0 ? 0 : 1;
-  const low = axis === 0 ? x0 : y0, span = axis === 0 ? x1 - x0 : y1 - y0;
+  const low = axis === 0 ? x0 : y0,
+    span = axis === 0 ? x1 - x0 : y1 - y0;
   const scale = span > 0 && Number.isFinite(span) ? (BINS - 1) / span : 0;
   // Each movable body's bin along the axis, then rows a bin (by the row's first movable body), then
   // the bins' strips at the rows' quantiles.
   binOf[0] = NO_BIN;
   for (let k = 1; k < bodies; k++) {
-    if (strip[k] === 255) { binOf[k] = NO_BIN; continue; }
+    if (strip[k] === 255) {
+      binOf[k] = NO_BIN;
+      continue;
+    }
     const bin = Math.floor((ex[k * 6 + axis]! - low) * scale);
     binOf[k] = bin >= 0 && bin < BINS ? bin : 0;
   }

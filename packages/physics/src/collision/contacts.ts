@@ -43,7 +43,9 @@ export interface ContactBuffer {
   /** Static feature: boundary face or static entity id, see ContactKind. */
   feature: Int32Array;
   /** Unit normal from A to B. */
-  nx: Float64Array; ny: Float64Array; nz: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+  nz: Float64Array;
   /** Separation along the normal where the bodies were at the start of the step, m (< 0: overlap). */
   separation: Float64Array;
   /** Distance from A's centre to the contact point along +n, m (0 for the static world). */
@@ -84,7 +86,9 @@ export interface ContactBuffer {
   /** Accumulated friction impulse along tangent 2 (3D only), N s. */
   tangentImpulse2: Float64Array;
   /** Tangent 1 (3D: first axis of the basis (n, t1, n x t1); 2D: (-ny, nx)). */
-  t1x: Float64Array; t1y: Float64Array; t1z: Float64Array;
+  t1x: Float64Array;
+  t1y: Float64Array;
+  t1z: Float64Array;
   /** Normal relative velocity at the start of the step, before this step's gravity, m/s (negative: approaching). */
   relativeVelocity: Float64Array;
   /** Spawn stamps of A (or of the static feature) and B when the contact was made, to validate the warm-start cache. */
@@ -93,9 +97,28 @@ export interface ContactBuffer {
 }
 
 const FLOAT_FIELDS = [
-  'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'restitution', 'friction', 'frictionBound', 'normalMass',
-  'tangentMass', 'normalImpulse', 'maxNormalImpulse', 'totalNormalImpulse', 'impulse', 'impactVelocity', 'tangentImpulse1', 'tangentImpulse2',
-  't1x', 't1y', 't1z', 'relativeVelocity',
+  'nx',
+  'ny',
+  'nz',
+  'separation',
+  'ra',
+  'rb',
+  'restitution',
+  'friction',
+  'frictionBound',
+  'normalMass',
+  'tangentMass',
+  'normalImpulse',
+  'maxNormalImpulse',
+  'totalNormalImpulse',
+  'impulse',
+  'impactVelocity',
+  'tangentImpulse1',
+  'tangentImpulse2',
+  't1x',
+  't1y',
+  't1z',
+  'relativeVelocity',
 ] as const;
 const INT_FIELDS = ['a', 'b', 'ia', 'ib', 'feature'] as const;
 const UINT_FIELDS = ['stampA', 'stampB'] as const;
@@ -107,13 +130,39 @@ const UINT_FIELDS = ['stampA', 'stampB'] as const;
 export function createContactBuffer(capacity = 1024): ContactBuffer {
   const f = (): Float64Array => new Float64Array(capacity);
   return {
-    count: 0, capacity, kind: new Uint8Array(capacity),
-    a: new Int32Array(capacity), b: new Int32Array(capacity), ia: new Int32Array(capacity), ib: new Int32Array(capacity),
+    count: 0,
+    capacity,
+    kind: new Uint8Array(capacity),
+    a: new Int32Array(capacity),
+    b: new Int32Array(capacity),
+    ia: new Int32Array(capacity),
+    ib: new Int32Array(capacity),
     feature: new Int32Array(capacity),
-    nx: f(), ny: f(), nz: f(), separation: f(), ra: f(), rb: f(), restitution: f(), friction: f(),
-    frictionBound: f(), normalMass: f(), tangentMass: f(), rigidPartner: new Uint8Array(capacity), normalImpulse: f(), maxNormalImpulse: f(), totalNormalImpulse: f(), impulse: f(), impactVelocity: f(),
-    tangentImpulse1: f(), tangentImpulse2: f(), t1x: f(), t1y: f(), t1z: f(),
-    relativeVelocity: f(), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
+    nx: f(),
+    ny: f(),
+    nz: f(),
+    separation: f(),
+    ra: f(),
+    rb: f(),
+    restitution: f(),
+    friction: f(),
+    frictionBound: f(),
+    normalMass: f(),
+    tangentMass: f(),
+    rigidPartner: new Uint8Array(capacity),
+    normalImpulse: f(),
+    maxNormalImpulse: f(),
+    totalNormalImpulse: f(),
+    impulse: f(),
+    impactVelocity: f(),
+    tangentImpulse1: f(),
+    tangentImpulse2: f(),
+    t1x: f(),
+    t1y: f(),
+    t1z: f(),
+    relativeVelocity: f(),
+    stampA: new Uint32Array(capacity),
+    stampB: new Uint32Array(capacity),
   };
 }
 
@@ -206,7 +255,8 @@ export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): C
   reserveWarmStartTable(cache, current.count, false);
   tableArrays.length = 0;
   tableArrays.push(cache.slots, current.kind, current.a, current.b, current.feature);
-  tableParams[0] = current.count; tableParams[1] = cache.size;
+  tableParams[0] = current.count;
+  tableParams[1] = cache.size;
   warmStartTable(tableArrays, tableParams, null, 0, 1);
   return swapWarmStartRows(cache, current);
 }
@@ -216,7 +266,13 @@ export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): C
  * or -1 if it is new.
  */
 export function findWarmStart(
-  cache: WarmStartCache, kind: number, a: number, b: number, f: number, stampA: number, stampB: number,
+  cache: WarmStartCache,
+  kind: number,
+  a: number,
+  b: number,
+  f: number,
+  stampA: number,
+  stampB: number,
 ): number {
   if (cache.size === 0) return -1;
   const mask = cache.size - 1;
@@ -243,9 +299,13 @@ export interface ContactView {
   /** ContactKind of the row. */
   kind: number;
   /** Unit normal from A to B (z is 0 in 2D). */
-  nx: number; ny: number; nz: number;
+  nx: number;
+  ny: number;
+  nz: number;
   /** Contact point, m: on B's surface, B's centre at the end of the step minus rb n. */
-  x: number; y: number; z: number;
+  x: number;
+  y: number;
+  z: number;
   /** Normal impulse the contact delivered over the step, N s (>= 0): B got +impulse n, A -impulse n. */
   impulse: number;
   /**
@@ -270,13 +330,21 @@ export function forEachContact(
   const rows = world.collision.cache.rows;
   const P = world.components.Position;
   for (let i = 0, n = rows.count; i < n; i++) {
-    const kind = rows.kind[i]!, b = rows.b[i]!;
+    const kind = rows.kind[i]!,
+      b = rows.b[i]!;
     view.kind = kind;
     view.a = kind === ContactKind.Ball ? rows.a[i]! : kind === ContactKind.Boundary ? 0 : rows.feature[i]!;
     view.b = b;
-    const nx = rows.nx[i]!, ny = rows.ny[i]!, nz = rows.nz[i]!, rb = rows.rb[i]!;
-    view.nx = nx; view.ny = ny; view.nz = nz;
-    view.x = P.x[b]! - rb * nx; view.y = P.y[b]! - rb * ny; view.z = P.z[b]! - rb * nz;
+    const nx = rows.nx[i]!,
+      ny = rows.ny[i]!,
+      nz = rows.nz[i]!,
+      rb = rows.rb[i]!;
+    view.nx = nx;
+    view.ny = ny;
+    view.nz = nz;
+    view.x = P.x[b]! - rb * nx;
+    view.y = P.y[b]! - rb * ny;
+    view.z = P.z[b]! - rb * nz;
     view.impulse = rows.impulse[i]!;
     view.separation = rows.separation[i]!;
     fn(view);

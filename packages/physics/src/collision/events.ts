@@ -1,6 +1,7 @@
 /** Contact and sensor events: appending a begin/end touch event with the entities' current handles. */
-import type { PhysicsWorld } from '../world.js';
+
 import { currentHandle } from '../handles.js';
+import type { PhysicsWorld } from '../world.js';
 import type { EventList } from './manifolds.js';
 
 function handle(world: PhysicsWorld, e: number): number {
@@ -22,8 +23,15 @@ export function pushEvent(world: PhysicsWorld, list: EventList, shapeA: number, 
       rec[k] = next;
     }
   }
-  list.shapeA[i] = handle(world, shapeA); list.shapeB[i] = handle(world, shapeB); list.bodyA[i] = handle(world, bodyA); list.bodyB[i] = handle(world, bodyB);
-  list.px[i] = 0; list.py[i] = 0; list.nx[i] = 0; list.ny[i] = 0; list.approachSpeed[i] = 0;
+  list.shapeA[i] = handle(world, shapeA);
+  list.shapeB[i] = handle(world, shapeB);
+  list.bodyA[i] = handle(world, bodyA);
+  list.bodyB[i] = handle(world, bodyB);
+  list.px[i] = 0;
+  list.py[i] = 0;
+  list.nx[i] = 0;
+  list.ny[i] = 0;
+  list.approachSpeed[i] = 0;
   list.count = i + 1;
   return i;
 }

@@ -1,8 +1,8 @@
-import type { PhysicsWorld } from '../world.js';
-import { ContactKind, type ContactBuffer } from './contacts.js';
-import { BodyType } from './state.js';
 import { jointsToSolve } from '../joints/solver.js';
 import { joints3DToSolve } from '../joints3d/solver.js';
+import type { PhysicsWorld } from '../world.js';
+import { type ContactBuffer, ContactKind } from './contacts.js';
+import { BodyType } from './state.js';
 
 /**
  * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the
@@ -41,8 +41,11 @@ const sweepIO = new Float64Array(9);
  * substeps (`releasedRows[0 .. releasedCount - 1]`), whose masses and impulses `releaseImpactedRows`
  * zeroes. Read through impactChangedRows. Not world state.
  */
-let changedRows = new Int32Array(256), changedMark = new Uint8Array(256), releasedRows = new Int32Array(256);
-let changedCount = 0, releasedCount = 0;
+let changedRows = new Int32Array(256),
+  changedMark = new Uint8Array(256),
+  releasedRows = new Int32Array(256);
+let changedCount = 0,
+  releasedCount = 0;
 
 /** Lists row i as changed by the impact stage (once). */
 function markChanged(i: number): void {
@@ -69,16 +72,25 @@ export function impactChangedRows(): { rows: Int32Array; count: number } {
  * after `applyImpacts` and before the substeps.
  */
 export function releaseImpactedRows(buf: ContactBuffer): void {
-  const NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, L1 = buf.tangentImpulse1, L2 = buf.tangentImpulse2;
+  const NM = buf.normalMass,
+    TM = buf.tangentMass,
+    LN = buf.normalImpulse,
+    L1 = buf.tangentImpulse1,
+    L2 = buf.tangentImpulse2;
   for (let k = 0; k < releasedCount; k++) {
     const i = releasedRows[k]!;
-    NM[i] = 0; TM[i] = 0; LN[i] = 0; L1[i] = 0; L2[i] = 0;
+    NM[i] = 0;
+    TM[i] = 0;
+    LN[i] = 0;
+    L1[i] = 0;
+    L2[i] = 0;
   }
   releasedCount = 0;
 }
 
 /** Scratch of `sortByKey`: the merge sort's two work arrays. Not world state. */
-let sortWork1 = new Int32Array(256), sortWork2 = new Int32Array(256);
+let sortWork1 = new Int32Array(256),
+  sortWork2 = new Int32Array(256);
 
 /**
  * Collide stage, solver stage "impacts": the bouncing contacts of a step, resolved as a sequence of
@@ -123,67 +135,107 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const E = buf.restitution;
   // Candidates: every contact with e > 0; those whose bodies approach fast enough to impact this step
   // (the seeds) first, sorted by the time of impact their start state predicts.
-  if (cs.impactOrder.length < n) { cs.impactOrder = new Int32Array(Math.max(n, 2 * cs.impactOrder.length)); cs.impactKey = new Float64Array(cs.impactOrder.length); }
-  const order = cs.impactOrder, key = cs.impactKey;
+  if (cs.impactOrder.length < n) {
+    cs.impactOrder = new Int32Array(Math.max(n, 2 * cs.impactOrder.length));
+    cs.impactKey = new Float64Array(cs.impactOrder.length);
+  }
+  const order = cs.impactOrder,
+    key = cs.impactKey;
   const h = world.h;
   const g = world.gravity;
   const gh = Math.sqrt(g[0]! * g[0]! + g[1]! * g[1]! + g[2]! * g[2]!) * h;
   // Slower approaches are resting contacts (what gravity adds in two steps), left to the substeps.
   const resting = 2 * gh;
-  impactScalars[0] = resting; impactScalars[1] = gh;
-  const S0 = buf.separation, RV = buf.relativeVelocity;
+  impactScalars[0] = resting;
+  impactScalars[1] = gh;
+  const S0 = buf.separation,
+    RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
-  if (cs.bodyImpact.length < count * IMPACT_STRIDE) cs.bodyImpact = new Float64Array(Math.max(count * IMPACT_STRIDE, cs.bodyImpact.length * 2));
+  if (cs.bodyImpact.length < count * IMPACT_STRIDE)
+    cs.bodyImpact = new Float64Array(Math.max(count * IMPACT_STRIDE, cs.bodyImpact.length * 2));
   cs.bodyImpact.fill(0, 0, count * IMPACT_STRIDE);
   // Bodies that carried a load last step (a warm-started contact: resting in a pile, on the floor)
   // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
   // marks them -1 until the passes are done.
-  const imp = cs.bodyImpact, IA = buf.ia, IB = buf.ib;
+  const imp = cs.bodyImpact,
+    IA = buf.ia,
+    IB = buf.ib;
   // Each row's carriesLoad at the start of the stage, kept for separateImpactedBodies (1 loaded, 0
   // not): only an impacted row's normal changes in between, and that one is recomputed there.
   if (loadedRows.length < n) loadedRows = new Uint8Array(Math.max(n, 2 * loadedRows.length));
   const loaded = loadedRows;
-  if (changedMark.length < n) { const len = Math.max(n, 2 * changedMark.length); changedMark = new Uint8Array(len); changedRows = new Int32Array(len); releasedRows = new Int32Array(len); }
+  if (changedMark.length < n) {
+    const len = Math.max(n, 2 * changedMark.length);
+    changedMark = new Uint8Array(len);
+    changedRows = new Int32Array(len);
+    releasedRows = new Int32Array(len);
+  }
   for (let k = 0; k < changedCount; k++) changedMark[changedRows[k]!] = 0;
-  changedCount = 0; releasedCount = 0;
+  changedCount = 0;
+  releasedCount = 0;
   for (let i = 0; i < n; i++) {
-    if (!carriesLoad(world, buf, i)) { loaded[i] = 0; continue; }
+    if (!carriesLoad(world, buf, i)) {
+      loaded[i] = 0;
+      continue;
+    }
     loaded[i] = 1;
-    const qa = IA[i]! * IMPACT_STRIDE, qb = IB[i]! * IMPACT_STRIDE;
+    const qa = IA[i]! * IMPACT_STRIDE,
+      qb = IB[i]! * IMPACT_STRIDE;
     if (qa !== 0) imp[qa + 3] = -1;
     imp[qb + 3] = -1;
     // A loaded row that starts touching makes its bodies unclean in separateImpactedBodies: marked
     // here in slot 4 (-1; nothing reads slot 4 before separateImpactedBodies).
-    if (S0[i]! <= 0) { if (qa !== 0) imp[qa + 4] = -1; imp[qb + 4] = -1; }
+    if (S0[i]! <= 0) {
+      if (qa !== 0) imp[qa + 4] = -1;
+      imp[qb + 4] = -1;
+    }
   }
   // One pass picks the candidates: seeds (fast enough) from the front of `order`, the others from its
   // back (in reverse), then moved behind the seeds in row order.
   const sb = cs.bodyState;
-  const lim = resting - gh, lim2 = lim * lim, is2D = S === 8;
-  let m = 0, back = n;
+  const lim = resting - gh,
+    lim2 = lim * lim,
+    is2D = S === 8;
+  let m = 0,
+    back = n;
   for (let i = 0; i < n; i++) {
     key[i] = 0;
     if (!(E[i]! > 0)) continue;
-    const ia = IA[i]!, ib = IB[i]!;
+    const ia = IA[i]!,
+      ib = IB[i]!;
     if (imp[ib * IMPACT_STRIDE + 3] === -1 || (ia !== 0 && imp[ia * IMPACT_STRIDE + 3] === -1)) continue;
     // fastEnough, inline.
     let fast = true;
     if (resting !== 0 && lim > 0) {
-      const oa = ia * S, ob = ib * S;
-      const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+      const oa = ia * S,
+        ob = ib * S;
+      const wx = sb[ob]! - sb[oa]!,
+        wy = sb[ob + 1]! - sb[oa + 1]!,
+        wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
       fast = wx * wx + wy * wy + wz * wz > lim2;
     }
-    if (!fast) { order[--back] = i; continue; }
-    const s0 = S0[i]!, rv = RV[i]!;
+    if (!fast) {
+      order[--back] = i;
+      continue;
+    }
+    const s0 = S0[i]!,
+      rv = RV[i]!;
     key[i] = s0 <= 0 ? 0 : rv < 0 ? s0 / -rv : 2 * h + s0;
     order[m++] = i;
   }
   const seeds = m;
-  if (seeds === 0) { imp.fill(0, 0, count * IMPACT_STRIDE); return; }
+  if (seeds === 0) {
+    imp.fill(0, 0, count * IMPACT_STRIDE);
+    return;
+  }
   // The others, stored reversed in [back, n): put back in row order, then moved behind the seeds
   // (copyWithin copies as if through a buffer, so the ranges may overlap).
-  for (let lo = back, hi = n - 1; lo < hi; lo++, hi--) { const t = order[lo]!; order[lo] = order[hi]!; order[hi] = t; }
+  for (let lo = back, hi = n - 1; lo < hi; lo++, hi--) {
+    const t = order[lo]!;
+    order[lo] = order[hi]!;
+    order[hi] = t;
+  }
   order.copyWithin(seeds, back, n);
   m += n - back;
   if (seeds > 1) sortByKey(order, key, seeds);
@@ -194,7 +246,10 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     for (let k = 0; k < m; k++) {
       const i = order[k]!;
       if (!fastEnough(cs.bodyState, buf, i, S)) continue;
-      if (impact(world, buf, i, S)) { applied++; key[i] = -1; }
+      if (impact(world, buf, i, S)) {
+        applied++;
+        key[i] = -1;
+      }
     }
     if (applied === 0) break;
   }
@@ -212,9 +267,18 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  */
 export function sortByKey(order: Int32Array, key: Float64Array, n: number): void {
   if (n < 2) return;
-  if (sortWork1.length < n) { const len = Math.max(n, 2 * sortWork1.length); sortWork1 = new Int32Array(len); sortWork2 = new Int32Array(len); }
-  const w1 = sortWork1, w2 = sortWork2;
-  for (let k = 0; k < n; k++) { const v = order[k]!; w1[k] = v; w2[k] = v; }
+  if (sortWork1.length < n) {
+    const len = Math.max(n, 2 * sortWork1.length);
+    sortWork1 = new Int32Array(len);
+    sortWork2 = new Int32Array(len);
+  }
+  const w1 = sortWork1,
+    w2 = sortWork2;
+  for (let k = 0; k < n; k++) {
+    const v = order[k]!;
+    w1[k] = v;
+    w2[k] = v;
+  }
   mergeSortRange(w2, 0, n, w1, key);
   for (let k = 0; k < n; k++) order[k] = w1[k]!;
 }
@@ -227,12 +291,20 @@ function mergeSortRange(source: Int32Array, from: number, to: number, target: In
   const middle = from + ((to - from) >>> 1);
   if (middle - from > 1) mergeSortRange(target, from, middle, source, key);
   if (to - middle > 1) mergeSortRange(target, middle, to, source, key);
-  let left = from, right = middle;
+  let left = from,
+    right = middle;
   for (let k = from; k < to; k++) {
     if (left < middle && right >= to) target[k] = source[left++]!;
     else if (left < middle) {
-      const l = source[left]!, r = source[right]!;
-      if (!(key[l]! - key[r]! > 0)) { target[k] = l; left++; } else { target[k] = r; right++; }
+      const l = source[left]!,
+        r = source[right]!;
+      if (!(key[l]! - key[r]! > 0)) {
+        target[k] = l;
+        left++;
+      } else {
+        target[k] = r;
+        right++;
+      }
     } else target[k] = source[right++]!;
   }
 }
@@ -262,10 +334,15 @@ function mergeSortRange(source: Int32Array, from: number, to: number, target: In
  */
 function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: number, candidates: number): void {
   const cs = world.collision;
-  const imp = cs.bodyImpact, key = cs.impactKey;
+  const imp = cs.bodyImpact,
+    key = cs.impactKey;
   const count = cs.solverBodyCount;
   const n = buf.count;
-  const E = buf.restitution, S0 = buf.separation, IA = buf.ia, IB = buf.ib, K = buf.kind;
+  const E = buf.restitution,
+    S0 = buf.separation,
+    IA = buf.ia,
+    IB = buf.ib,
+    K = buf.kind;
   const h = world.h;
   const reach = h * (1 + 1 / cs.settings.solverSubsteps);
   impactScalars[2] = reach;
@@ -295,7 +372,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     const i = act[k]!;
     if (key[i] !== -1) continue;
     loaded[i] = carriesLoad(world, buf, i) ? 1 : 0;
-    if (S0[i]! <= 0 && loaded[i] === 1) { imp[IA[i]! * Q + 4] = 0; imp[IB[i]! * Q + 4] = 0; }
+    if (S0[i]! <= 0 && loaded[i] === 1) {
+      imp[IA[i]! * Q + 4] = 0;
+      imp[IB[i]! * Q + 4] = 0;
+    }
   }
   imp[4] = 1;
   // The rows left inactive, in row order, for the repeated pass below.
@@ -303,10 +383,17 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   const idle = idleRows;
   let idleCount = 0;
   for (let i = 0; i < n; i++) {
-    if (S0[i]! <= 0 && loaded[i] === 1) { act[i] = 1; continue; }
+    if (S0[i]! <= 0 && loaded[i] === 1) {
+      act[i] = 1;
+      continue;
+    }
     act[i] = 0;
-    const ia = IA[i]!, ib = IB[i]!;
-    if (imp[ib * Q + 4] === 0 && (ia === 0 || imp[ia * Q + 4] === 0)) { act[i] = 1; continue; }
+    const ia = IA[i]!,
+      ib = IB[i]!;
+    if (imp[ib * Q + 4] === 0 && (ia === 0 || imp[ia * Q + 4] === 0)) {
+      act[i] = 1;
+      continue;
+    }
     const kind = K[i]!;
     let active: boolean;
     if (E[i]! > 0 && key[i] === -1) {
@@ -320,7 +407,11 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     } else {
       active = faceMeets(world, buf, i, S);
     }
-    if (active) { act[i] = 1; if (ia !== 0) imp[ia * Q + 4] = 0; imp[ib * Q + 4] = 0; } else idle[idleCount++] = i;
+    if (active) {
+      act[i] = 1;
+      if (ia !== 0) imp[ia * Q + 4] = 0;
+      imp[ib * Q + 4] = 0;
+    } else idle[idleCount++] = i;
   }
   // An unclean body loses its corrections (the substeps move it from where it was at the start of the step).
   for (let k = 1; k < count; k++) if (imp[k * Q + 4] === 0) unclean(imp, k);
@@ -331,14 +422,19 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
   // both bodies unclean, or one unclean and its gap model not closing (its inputs change only if the
   // clean body turns unclean too). The rows kept, with both bodies clean, see the same bodies' states in
   // the same order, so the outcome is that of visiting every inactive row each time.
-  for (let changed = true; changed;) {
+  for (let changed = true; changed; ) {
     changed = false;
     let kept = 0;
     for (let k = 0; k < idleCount; k++) {
       const i = idle[k]!;
-      const ia = IA[i]!, ib = IB[i]!;
-      const ca = ia === 0 || imp[ia * Q + 4] === 1, cb = imp[ib * Q + 4] === 1;
-      if (ca && cb) { idle[kept++] = i; continue; }
+      const ia = IA[i]!,
+        ib = IB[i]!;
+      const ca = ia === 0 || imp[ia * Q + 4] === 1,
+        cb = imp[ib * Q + 4] === 1;
+      if (ca && cb) {
+        idle[kept++] = i;
+        continue;
+      }
       if (!ca && !cb) continue;
       if (!linearCloses(world, buf, i, S)) continue;
       act[i] = 1;
@@ -351,9 +447,11 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     // The substeps move a body from where it was at the start of the step and add its correction at
     // the end, so every row's start separation takes the corrections in: the substeps' gap at the end
     // of the step is then the true one, also between a clean body and an unclean one.
-    const ua = IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0, ub = imp[IB[i]! * Q + 4] === 0;
+    const ua = IA[i] !== 0 && imp[IA[i]! * Q + 4] === 0,
+      ub = imp[IB[i]! * Q + 4] === 0;
     if (ub && (ua || IA[i] === 0)) continue; // unclean bodies and the static world have no corrections
-    const gap = correctionGap(imp, buf, i), was = S0[i]!;
+    const gap = correctionGap(imp, buf, i),
+      was = S0[i]!;
     S0[i] = was + gap;
     if (gap !== 0 || was === 0) markChanged(i); // (-0 + 0 is 0)
     if (ua || ub) continue;
@@ -372,7 +470,10 @@ function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, S: numb
     if (!(s0 > 0)) continue;
     const closes = linearClosure(world, buf, i, S);
     // 10 % to spare: other rows (a joint, say) may speed the approach up a little within the step.
-    if (s0 <= closes * within) { S0[i] = closes * 1.1; markChanged(i); }
+    if (s0 <= closes * within) {
+      S0[i] = closes * 1.1;
+      markChanged(i);
+    }
   }
 }
 
@@ -424,7 +525,8 @@ const LEVEL = 1e-9;
  * A row with m_eff = 0 counts whenever LN > 0.
  */
 function carriesLoad(world: PhysicsWorld, buf: ContactBuffer, i: number): boolean {
-  const h = world.h, g = world.gravity;
+  const h = world.h,
+    g = world.gravity;
   const ln = buf.normalImpulse[i]!;
   if (!(ln > 0)) return false;
   const len = buf.ra[i]! + buf.rb[i]!;
@@ -441,7 +543,10 @@ function carriesLoad(world: PhysicsWorld, buf: ContactBuffer, i: number): boolea
 function unclean(imp: Float64Array, k: number): void {
   if (k === 0) return;
   const q = k * IMPACT_STRIDE;
-  imp[q] = 0; imp[q + 1] = 0; imp[q + 2] = 0; imp[q + 4] = 0;
+  imp[q] = 0;
+  imp[q + 1] = 0;
+  imp[q + 2] = 0;
+  imp[q + 4] = 0;
 }
 
 /**
@@ -452,13 +557,20 @@ function unclean(imp: Float64Array, k: number): void {
 function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): number {
   const reach = impactScalars[2]!;
   const cs = world.collision;
-  const sb = cs.bodyState, type = cs.bodyType, g = world.gravity;
-  const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
-  const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+  const sb = cs.bodyState,
+    type = cs.bodyType,
+    g = world.gravity;
+  const oa = buf.ia[i]! * S,
+    ob = buf.ib[i]! * S;
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = buf.nz[i]!;
   let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
   if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-  const a = buf.a[i]!, b = buf.b[i]!;
-  const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  const a = buf.a[i]!,
+    b = buf.b[i]!;
+  const an =
+    ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
 }
 
@@ -472,7 +584,8 @@ function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
 
 /** (c_B - c_A) . n of contact i: how much the bodies' end-position corrections open its gap, m. */
 function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number {
-  const qa = buf.ia[i]! * IMPACT_STRIDE, qb = buf.ib[i]! * IMPACT_STRIDE;
+  const qa = buf.ia[i]! * IMPACT_STRIDE,
+    qb = buf.ib[i]! * IMPACT_STRIDE;
   return (imp[qb]! - imp[qa]!) * buf.nx[i]! + (imp[qb + 1]! - imp[qa + 1]!) * buf.ny[i]! + (imp[qb + 2]! - imp[qa + 2]!) * buf.nz[i]!;
 }
 
@@ -486,12 +599,21 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const span = world.h;
   const cs = world.collision;
   const c = world.components;
-  const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
-  const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!, b = buf.b[i]!, kind = buf.kind[i]!;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    type = cs.bodyType;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S,
+    qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const a = buf.a[i]!,
+    b = buf.b[i]!,
+    kind = buf.kind[i]!;
   const is2D = S === 8;
-  const P = c.PreviousPosition, radius = c.Ball.radius;
+  const P = c.PreviousPosition,
+    radius = c.Ball.radius;
   const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
   const pa = kind === ContactKind.Ball ? P : c.Position;
   const R = radius[f]! + radius[b]!;
@@ -503,16 +625,23 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
     // rounding-level length within the step), or gravity presses it.
     if (carriesLoad(world, buf, i) || s0 < -1e-6 * R) return true;
-    const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!,
+      nz = buf.nz[i]!;
     let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
     return vn * world.h < -ROUNDING * R || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
-  const ta = imp[qa + 3]!, tb = imp[qb + 3]!;
-  const t0 = ta > tb ? (ta > 0 ? ta : 0) : (tb > 0 ? tb : 0);
-  const ax = gr * g[0]!, ay = gr * g[1]!, az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob]! - sb[oa]! + ax * t0, wy = sb[ob + 1]! - sb[oa + 1]! + ay * t0, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]! + az * t0;
+  const ta = imp[qa + 3]!,
+    tb = imp[qb + 3]!;
+  const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
+  const ax = gr * g[0]!,
+    ay = gr * g[1]!,
+    az = is2D ? 0 : gr * g[2]!;
+  const wx = sb[ob]! - sb[oa]! + ax * t0,
+    wy = sb[ob + 1]! - sb[oa + 1]! + ay * t0,
+    wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]! + az * t0;
   const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + (sb[ob]! - sb[oa]!) * t0 + 0.5 * ax * t0 * t0;
   const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + (sb[ob + 1]! - sb[oa + 1]!) * t0 + 0.5 * ay * t0 * t0;
   const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + (sb[ob + 2]! - sb[oa + 2]!) * t0 + 0.5 * az * t0 * t0;
@@ -525,20 +654,30 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     // look-ahead stopped the pair's hit on the next ball a substep early, across a gap, and then the
     // chain as if resting).
     if (r2 < R * R * (1 - 1e-6)) return true;
-    const lim = -ROUNDING * R * R / world.h;
+    const lim = (-ROUNDING * R * R) / world.h;
     return rx * wx + ry * wy + rz * wz < lim || rx * (wx + ax * rest) + ry * (wy + ay * rest) + rz * (wz + az * rest) < lim;
   }
   if (!(rest > 0)) return false;
-  const hx = 0.25 * ax * rest, hy = 0.25 * ay * rest, hz = 0.25 * az * rest;
+  const hx = 0.25 * ax * rest,
+    hy = 0.25 * ay * rest,
+    hz = 0.25 * az * rest;
   // The gap cannot close faster than |w| + |a| t.
   const gap = Math.sqrt(rx * rx + ry * ry + rz * rz) - R;
   if (Math.sqrt(wx * wx + wy * wy + wz * wz) * rest + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * rest < gap) return false;
   // Mean velocity over the first half of the span and over all of it: either meeting counts.
   const io = sweepIO;
-  io[0] = rx; io[1] = ry; io[2] = rz; io[6] = R; io[7] = rest;
-  io[3] = wx + hx; io[4] = wy + hy; io[5] = wz + hz;
+  io[0] = rx;
+  io[1] = ry;
+  io[2] = rz;
+  io[6] = R;
+  io[7] = rest;
+  io[3] = wx + hx;
+  io[4] = wy + hy;
+  io[5] = wz + hz;
   if (sweep()) return true;
-  io[3] = wx + 2 * hx; io[4] = wy + 2 * hy; io[5] = wz + 2 * hz;
+  io[3] = wx + 2 * hx;
+  io[4] = wy + 2 * hy;
+  io[5] = wz + 2 * hz;
   return sweep();
 }
 
@@ -551,21 +690,39 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
  */
 function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
   const cs = world.collision;
-  const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
-  const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!, b = buf.b[i]!;
-  const g = world.gravity, h = world.h;
-  const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    type = cs.bodyType;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S,
+    qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const a = buf.a[i]!,
+    b = buf.b[i]!;
+  const g = world.gravity,
+    h = world.h;
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = buf.nz[i]!;
   let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
   if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
-  const an = ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-  const ta = imp[qa + 3]!, tb = imp[qb + 3]!;
-  const t0 = ta > tb ? (ta > 0 ? ta : 0) : (tb > 0 ? tb : 0);
-  const s = buf.separation[i]! + (imp[qb]! - imp[qa]!) * nx + (imp[qb + 1]! - imp[qa + 1]!) * ny + (imp[qb + 2]! - imp[qa + 2]!) * nz
-    + vn * t0 + 0.5 * an * t0 * t0;
+  const an =
+    ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  const ta = imp[qa + 3]!,
+    tb = imp[qb + 3]!;
+  const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
+  const s =
+    buf.separation[i]! +
+    (imp[qb]! - imp[qa]!) * nx +
+    (imp[qb + 1]! - imp[qa + 1]!) * ny +
+    (imp[qb + 2]! - imp[qa + 2]!) * nz +
+    vn * t0 +
+    0.5 * an * t0 * t0;
   if (s <= 0) return true;
-  const v = vn + an * t0, rest = h - t0;
+  const v = vn + an * t0,
+    rest = h - t0;
   // Smallest s over [t0, h]: at the end, or where v + a_n t = 0 if that falls inside.
   const tm = an > 0 && v < 0 ? Math.min(-v / an, rest) : rest;
   return s + v * tm + 0.5 * an * tm * tm <= 0 || s + v * rest + 0.5 * an * rest * rest <= 0;
@@ -577,10 +734,14 @@ function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
  * within the step (|w| + g h > floor, g h = `impactScalars[1]`).
  */
 function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: number): boolean {
-  const floor = impactScalars[0]!, gh = impactScalars[1]!;
+  const floor = impactScalars[0]!,
+    gh = impactScalars[1]!;
   if (floor === 0) return true;
-  const oa = buf.ia[i]! * S, ob = buf.ib[i]! * S;
-  const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const oa = buf.ia[i]! * S,
+    ob = buf.ib[i]! * S;
+  const wx = sb[ob]! - sb[oa]!,
+    wy = sb[ob + 1]! - sb[oa + 1]!,
+    wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
   const lim = floor - gh;
   return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
 }
@@ -595,21 +756,35 @@ const hit = new Float64Array(5);
 function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
   const cs = world.collision;
   const c = world.components;
-  const sb = cs.bodyState, imp = cs.bodyImpact, type = cs.bodyType;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    type = cs.bodyType;
   const h = world.h;
-  const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S, qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!, b = buf.b[i]!, kind = buf.kind[i]!;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S,
+    qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const a = buf.a[i]!,
+    b = buf.b[i]!,
+    kind = buf.kind[i]!;
   const is2D = S === 8;
   const g = world.gravity;
-  const dynA = a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0, dynB = type[b] === BodyType.Dynamic ? 1 : 0;
+  const dynA = a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0,
+    dynB = type[b] === BodyType.Dynamic ? 1 : 0;
   const gr = dynB - dynA;
-  const ax = gr * g[0]!, ay = gr * g[1]!, az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob]! - sb[oa]!, wy = sb[ob + 1]! - sb[oa + 1]!, wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const ax = gr * g[0]!,
+    ay = gr * g[1]!,
+    az = is2D ? 0 : gr * g[2]!;
+  const wx = sb[ob]! - sb[oa]!,
+    wy = sb[ob + 1]! - sb[oa + 1]!,
+    wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
   const t0 = Math.max(imp[qa + 3]!, imp[qb + 3]!);
   if (t0 > h) return false;
   if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-    const P = c.PreviousPosition, radius = c.Ball.radius;
+    const P = c.PreviousPosition,
+      radius = c.Ball.radius;
     const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
     const pa = kind === ContactKind.Ball ? P : c.Position;
     const R = radius[f]! + radius[b]!;
@@ -617,42 +792,66 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
     let rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + wx * t0 + 0.5 * ax * t0 * t0;
     let ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + wy * t0 + 0.5 * ay * t0 * t0;
     let rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + wz * t0 + 0.5 * az * t0 * t0;
-    let ux = wx + ax * t0, uy = wy + ay * t0, uz = wz + az * t0;
+    let ux = wx + ax * t0,
+      uy = wy + ay * t0,
+      uz = wz + az * t0;
     const c0 = rx * rx + ry * ry + rz * rz - R * R;
     let t = 0;
     if (c0 > 0) {
       const span = h - t0;
       const io = sweepIO;
-      io[0] = rx; io[1] = ry; io[2] = rz; io[6] = R; io[7] = span;
-      io[3] = ux; io[4] = uy; io[5] = uz;
+      io[0] = rx;
+      io[1] = ry;
+      io[2] = rz;
+      io[6] = R;
+      io[7] = span;
+      io[3] = ux;
+      io[4] = uy;
+      io[5] = uz;
       sweep();
       t = io[8]!;
       if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
         // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
-        io[3] = ux + 0.5 * ax * span; io[4] = uy + 0.5 * ay * span; io[5] = uz + 0.5 * az * span;
+        io[3] = ux + 0.5 * ax * span;
+        io[4] = uy + 0.5 * ay * span;
+        io[5] = uz + 0.5 * az * span;
         sweep();
         t = io[8]!;
       } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
         // Refine with the mean velocity over [0, t].
-        io[3] = ux + 0.5 * ax * t; io[4] = uy + 0.5 * ay * t; io[5] = uz + 0.5 * az * t;
+        io[3] = ux + 0.5 * ax * t;
+        io[4] = uy + 0.5 * ay * t;
+        io[5] = uz + 0.5 * az * t;
         sweep();
         const t2 = io[8]!;
         if (t2 >= 0) t = t2;
       }
       if (t < 0) return false;
-      rx += ux * t + 0.5 * ax * t * t; ry += uy * t + 0.5 * ay * t * t; rz += uz * t + 0.5 * az * t * t;
-      ux += ax * t; uy += ay * t; uz += az * t;
+      rx += ux * t + 0.5 * ax * t * t;
+      ry += uy * t + 0.5 * ay * t * t;
+      rz += uz * t + 0.5 * az * t * t;
+      ux += ax * t;
+      uy += ay * t;
+      uz += az * t;
     }
     const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
     if (!(d > 1e-12 * R)) return false;
-    const nx = rx / d, ny = ry / d, nz = rz / d;
+    const nx = rx / d,
+      ny = ry / d,
+      nz = rz / d;
     const vn = ux * nx + uy * ny + uz * nz;
     if (!(vn < 0)) return false;
-    hit[0] = t0 + t; hit[1] = nx; hit[2] = ny; hit[3] = nz; hit[4] = vn;
+    hit[0] = t0 + t;
+    hit[1] = nx;
+    hit[2] = ny;
+    hit[3] = nz;
+    hit[4] = vn;
     return true;
   }
   // Fixed normal: boundary face, plane, segment.
-  const nx = buf.nx[i]!, ny = buf.ny[i]!, nz = buf.nz[i]!;
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = buf.nz[i]!;
   const an = ax * nx + ay * ny + az * nz;
   const vn0 = wx * nx + wy * ny + wz * nz;
   const s0 = buf.separation[i]! + (imp[qb]! - imp[qa]!) * nx + (imp[qb + 1]! - imp[qa + 1]!) * ny + (imp[qb + 2]! - imp[qa + 2]!) * nz;
@@ -664,12 +863,16 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
     if (disc < 0) return false;
     const den = -v + Math.sqrt(disc);
     if (!(den > 0)) return false;
-    t = 2 * s / den;
+    t = (2 * s) / den;
     if (t0 + t > h) return false;
   }
   const vn = v + an * t;
   if (!(vn < 0)) return false;
-  hit[0] = t0 + t; hit[1] = nx; hit[2] = ny; hit[3] = nz; hit[4] = vn;
+  hit[0] = t0 + t;
+  hit[1] = nx;
+  hit[2] = ny;
+  hit[3] = nz;
+  hit[4] = vn;
   return true;
 }
 
@@ -679,7 +882,14 @@ function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
  */
 function sweep(): boolean {
   const io = sweepIO;
-  const rx = io[0]!, ry = io[1]!, rz = io[2]!, ux = io[3]!, uy = io[4]!, uz = io[5]!, R = io[6]!, span = io[7]!;
+  const rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    ux = io[3]!,
+    uy = io[4]!,
+    uz = io[5]!,
+    R = io[6]!,
+    span = io[7]!;
   io[8] = -1;
   const cc = rx * rx + ry * ry + rz * rz - R * R;
   const bb = rx * ux + ry * uy + rz * uz;
@@ -709,22 +919,41 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): 
   if (!(vn < -threshold)) return false;
   const nm = buf.normalMass[i]!;
   if (!(nm > 0)) return false;
-  const t = hit[0]!, nx = hit[1]!, ny = hit[2]!, nz = hit[3]!;
-  const sb = cs.bodyState, imp = cs.bodyImpact, ex = cs.bodyExtra;
-  const ia = buf.ia[i]!, ib = buf.ib[i]!;
-  const oa = ia * S, ob = ib * S;
+  const t = hit[0]!,
+    nx = hit[1]!,
+    ny = hit[2]!,
+    nz = hit[3]!;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    ex = cs.bodyExtra;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S;
   const is2D = S === 8;
-  const im = is2D ? 5 : 9, iI = is2D ? 6 : 10;
-  const imA = sb[oa + im]!, imB = sb[ob + im]!, iiA = sb[oa + iI]!, iiB = sb[ob + iI]!;
-  const ra = buf.ra[i]!, rb = buf.rb[i]!;
+  const im = is2D ? 5 : 9,
+    iI = is2D ? 6 : 10;
+  const imA = sb[oa + im]!,
+    imB = sb[ob + im]!,
+    iiA = sb[oa + iI]!,
+    iiB = sb[ob + iI]!;
+  const ra = buf.ra[i]!,
+    rb = buf.rb[i]!;
   const J = -(1 + e) * vn * nm;
   // The row's first impact this step records its approach speed (measureApproach keeps it for a row
   // that separates afterwards, so `impactVelocity` reports the hit, not the rebound).
   if (buf.impulse[i] === 0) buf.impactVelocity[i] = vn;
-  let Px = J * nx, Py = J * ny, Pz = J * nz;
+  let Px = J * nx,
+    Py = J * ny,
+    Pz = J * nz;
   // Coulomb friction at the contact point, bounded by mu J (contact-point velocity v + w x r, r_A = ra n, r_B = -rb n).
   const mu = buf.frictionBound[i]!;
-  let dwa0 = 0, dwa1 = 0, dwa2 = 0, dwb0 = 0, dwb1 = 0, dwb2 = 0;
+  let dwa0 = 0,
+    dwa1 = 0,
+    dwa2 = 0,
+    dwb0 = 0,
+    dwb1 = 0,
+    dwb2 = 0;
   if (mu > 0 && buf.tangentMass[i]! > 0) {
     const tm = buf.tangentMass[i]!;
     const maxF = mu * J;
@@ -732,50 +961,106 @@ function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): 
       const vt = (sb[ob]! - sb[oa]!) * -ny + (sb[ob + 1]! - sb[oa + 1]!) * nx - sb[ob + 2]! * rb - sb[oa + 2]! * ra;
       let lt = -tm * vt;
       lt = lt < -maxF ? -maxF : lt > maxF ? maxF : lt;
-      Px += -lt * ny; Py += lt * nx;
-      dwa2 = -iiA * ra * lt; dwb2 = -iiB * rb * lt;
+      Px += -lt * ny;
+      Py += lt * nx;
+      dwa2 = -iiA * ra * lt;
+      dwb2 = -iiB * rb * lt;
     } else {
       let t1x: number, t1y: number, t1z: number;
-      if (Math.abs(nx) < 0.57735) { const inv = 1 / Math.sqrt(ny * ny + nz * nz); t1x = 0; t1y = nz * inv; t1z = -ny * inv; }
-      else { const inv = 1 / Math.sqrt(nx * nx + ny * ny); t1x = ny * inv; t1y = -nx * inv; t1z = 0; }
-      const t2x = ny * t1z - nz * t1y, t2y = nz * t1x - nx * t1z, t2z = nx * t1y - ny * t1x;
-      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!, sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!, sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
-      const ux = sb[ob]! - sb[oa]! + sy * nz - sz * ny, uy = sb[ob + 1]! - sb[oa + 1]! + sz * nx - sx * nz, uz = sb[ob + 2]! - sb[oa + 2]! + sx * ny - sy * nx;
-      let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z), l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
+      if (Math.abs(nx) < 0.57735) {
+        const inv = 1 / Math.sqrt(ny * ny + nz * nz);
+        t1x = 0;
+        t1y = nz * inv;
+        t1z = -ny * inv;
+      } else {
+        const inv = 1 / Math.sqrt(nx * nx + ny * ny);
+        t1x = ny * inv;
+        t1y = -nx * inv;
+        t1z = 0;
+      }
+      const t2x = ny * t1z - nz * t1y,
+        t2y = nz * t1x - nx * t1z,
+        t2z = nx * t1y - ny * t1x;
+      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
+        sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
+        sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
+      const ux = sb[ob]! - sb[oa]! + sy * nz - sz * ny,
+        uy = sb[ob + 1]! - sb[oa + 1]! + sz * nx - sx * nz,
+        uz = sb[ob + 2]! - sb[oa + 2]! + sx * ny - sy * nx;
+      let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z),
+        l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
       const mag2 = l1 * l1 + l2 * l2;
-      if (mag2 > maxF * maxF) { const q = maxF / Math.sqrt(mag2); l1 *= q; l2 *= q; }
-      const Tx = l1 * t1x + l2 * t2x, Ty = l1 * t1y + l2 * t2y, Tz = l1 * t1z + l2 * t2z;
-      Px += Tx; Py += Ty; Pz += Tz;
-      const cx = ny * Tz - nz * Ty, cy = nz * Tx - nx * Tz, cz = nx * Ty - ny * Tx;
-      dwa0 = -iiA * ra * cx; dwa1 = -iiA * ra * cy; dwa2 = -iiA * ra * cz;
-      dwb0 = -iiB * rb * cx; dwb1 = -iiB * rb * cy; dwb2 = -iiB * rb * cz;
+      if (mag2 > maxF * maxF) {
+        const q = maxF / Math.sqrt(mag2);
+        l1 *= q;
+        l2 *= q;
+      }
+      const Tx = l1 * t1x + l2 * t2x,
+        Ty = l1 * t1y + l2 * t2y,
+        Tz = l1 * t1z + l2 * t2z;
+      Px += Tx;
+      Py += Ty;
+      Pz += Tz;
+      const cx = ny * Tz - nz * Ty,
+        cy = nz * Tx - nx * Tz,
+        cz = nx * Ty - ny * Tx;
+      dwa0 = -iiA * ra * cx;
+      dwa1 = -iiA * ra * cy;
+      dwa2 = -iiA * ra * cz;
+      dwb0 = -iiB * rb * cx;
+      dwb1 = -iiB * rb * cy;
+      dwb2 = -iiB * rb * cz;
     }
   }
-  const qa = ia * IMPACT_STRIDE, qb = ib * IMPACT_STRIDE;
-  const xa = ia * 6, xb = ib * 6;
+  const qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const xa = ia * 6,
+    xb = ib * 6;
   // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
-  sb[oa] = sb[oa]! - imA * Px; sb[oa + 1] = sb[oa + 1]! - imA * Py;
-  sb[ob] = sb[ob]! + imB * Px; sb[ob + 1] = sb[ob + 1]! + imB * Py;
-  imp[qa] = imp[qa]! + imA * Px * t; imp[qa + 1] = imp[qa + 1]! + imA * Py * t;
-  imp[qb] = imp[qb]! - imB * Px * t; imp[qb + 1] = imp[qb + 1]! - imB * Py * t;
+  sb[oa] = sb[oa]! - imA * Px;
+  sb[oa + 1] = sb[oa + 1]! - imA * Py;
+  sb[ob] = sb[ob]! + imB * Px;
+  sb[ob + 1] = sb[ob + 1]! + imB * Py;
+  imp[qa] = imp[qa]! + imA * Px * t;
+  imp[qa + 1] = imp[qa + 1]! + imA * Py * t;
+  imp[qb] = imp[qb]! - imB * Px * t;
+  imp[qb + 1] = imp[qb + 1]! - imB * Py * t;
   if (is2D) {
-    if (iiA > 0) { sb[oa + 2] = sb[oa + 2]! + dwa2; ex[xa + 5] = ex[xa + 5]! - dwa2 * t; }
-    if (iiB > 0) { sb[ob + 2] = sb[ob + 2]! + dwb2; ex[xb + 5] = ex[xb + 5]! - dwb2 * t; }
-  } else {
-    sb[oa + 2] = sb[oa + 2]! - imA * Pz; sb[ob + 2] = sb[ob + 2]! + imB * Pz;
-    imp[qa + 2] = imp[qa + 2]! + imA * Pz * t; imp[qb + 2] = imp[qb + 2]! - imB * Pz * t;
     if (iiA > 0) {
-      sb[oa + 3] = sb[oa + 3]! + dwa0; sb[oa + 4] = sb[oa + 4]! + dwa1; sb[oa + 5] = sb[oa + 5]! + dwa2;
-      ex[xa + 3] = ex[xa + 3]! - dwa0 * t; ex[xa + 4] = ex[xa + 4]! - dwa1 * t; ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+      sb[oa + 2] = sb[oa + 2]! + dwa2;
+      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
     }
     if (iiB > 0) {
-      sb[ob + 3] = sb[ob + 3]! + dwb0; sb[ob + 4] = sb[ob + 4]! + dwb1; sb[ob + 5] = sb[ob + 5]! + dwb2;
-      ex[xb + 3] = ex[xb + 3]! - dwb0 * t; ex[xb + 4] = ex[xb + 4]! - dwb1 * t; ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+      sb[ob + 2] = sb[ob + 2]! + dwb2;
+      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+    }
+  } else {
+    sb[oa + 2] = sb[oa + 2]! - imA * Pz;
+    sb[ob + 2] = sb[ob + 2]! + imB * Pz;
+    imp[qa + 2] = imp[qa + 2]! + imA * Pz * t;
+    imp[qb + 2] = imp[qb + 2]! - imB * Pz * t;
+    if (iiA > 0) {
+      sb[oa + 3] = sb[oa + 3]! + dwa0;
+      sb[oa + 4] = sb[oa + 4]! + dwa1;
+      sb[oa + 5] = sb[oa + 5]! + dwa2;
+      ex[xa + 3] = ex[xa + 3]! - dwa0 * t;
+      ex[xa + 4] = ex[xa + 4]! - dwa1 * t;
+      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+    }
+    if (iiB > 0) {
+      sb[ob + 3] = sb[ob + 3]! + dwb0;
+      sb[ob + 4] = sb[ob + 4]! + dwb1;
+      sb[ob + 5] = sb[ob + 5]! + dwb2;
+      ex[xb + 3] = ex[xb + 3]! - dwb0 * t;
+      ex[xb + 4] = ex[xb + 4]! - dwb1 * t;
+      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
     }
   }
   if (ia !== 0 && imA > 0) imp[qa + 3] = t;
   if (imB > 0) imp[qb + 3] = t;
-  buf.nx[i] = nx; buf.ny[i] = ny; buf.nz[i] = nz;
+  buf.nx[i] = nx;
+  buf.ny[i] = ny;
+  buf.nz[i] = nz;
   markChanged(i);
   buf.impulse[i] = buf.impulse[i]! + J;
   return true;

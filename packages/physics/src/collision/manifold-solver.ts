@@ -1,8 +1,8 @@
 import type { PhysicsWorld } from '../world.js';
-import { BodyType } from './state.js';
-import { findPrevious, rotateManifolds } from './manifolds.js';
 import { pushEvent } from './events.js';
+import { findPrevious, rotateManifolds } from './manifolds.js';
 import type { CollisionState } from './state.js';
+import { BodyType } from './state.js';
 
 /**
  * The shape contacts' rows of the contact solver (solver.ts runs these calls next to the ball
@@ -41,15 +41,21 @@ import type { CollisionState } from './state.js';
  */
 const SHAPE_HERTZ_FRACTION = 0.125;
 
-
 /** Writes Box2D's soft-constraint coefficients (b2MakeSoft) for `hertz` and damping ratio `zeta` over step `h` into out[0..2]: bias rate, mass scale, impulse scale. */
 function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) { out[0] = 0; out[1] = 1; out[2] = 0; return; }
+  if (hertz === 0) {
+    out[0] = 0;
+    out[1] = 1;
+    out[2] = 0;
+    return;
+  }
   const omega = 2 * Math.PI * hertz;
   const a1 = 2 * zeta + h * omega;
   const a2 = h * omega * a1;
   const a3 = 1 / (1 + a2);
-  out[0] = omega / a1; out[1] = a2 * a3; out[2] = a3;
+  out[0] = omega / a1;
+  out[1] = a2 * a3;
+  out[2] = a3;
 }
 
 /**
@@ -61,9 +67,15 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
   const buf = cs.shapes.manifolds;
   const n = buf.count;
   if (n === 0) return count;
-  const mark = cs.solverMark, index = cs.solverIndex, stamp = cs.solverStamp, type = cs.bodyType;
+  const mark = cs.solverMark,
+    index = cs.solverIndex,
+    stamp = cs.solverStamp,
+    type = cs.bodyType;
   let list = cs.solverBodies;
-  const A = buf.bodyA, B = buf.bodyB, IA = buf.ia, IB = buf.ib;
+  const A = buf.bodyA,
+    B = buf.bodyB,
+    IA = buf.ia,
+    IB = buf.ib;
   for (let i = 0; i < n; i++) {
     for (let side = 0; side < 2; side++) {
       const e = side === 0 ? A[i]! : B[i]!;
@@ -72,12 +84,18 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
       if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
         if (mark[e] !== stamp) {
           mark[e] = stamp;
-          if (count >= list.length) { const l = new Int32Array(list.length * 2); l.set(list); list = l; }
-          index[e] = count; list[count++] = e;
+          if (count >= list.length) {
+            const l = new Int32Array(list.length * 2);
+            l.set(list);
+            list = l;
+          }
+          index[e] = count;
+          list[count++] = e;
         }
         k = index[e]!;
       }
-      if (side === 0) IA[i] = k; else IB[i] = k;
+      if (side === 0) IA[i] = k;
+      else IB[i] = k;
     }
   }
   cs.solverBodies = list;
@@ -86,11 +104,14 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
 
 /** Material, effective masses, start-of-step velocities and warm start of every manifold. */
 export function prepareManifolds(world: PhysicsWorld): void {
-  const cs = world.collision, st = cs.shapes, buf = st.manifolds;
+  const cs = world.collision,
+    st = cs.shapes,
+    buf = st.manifolds;
   const n = buf.count;
   const count = cs.solverBodyCount;
   if (st.angleBase.length < count) st.angleBase = new Float64Array(Math.max(count, 2 * st.angleBase.length));
-  const ex = cs.bodyExtra, base = st.angleBase;
+  const ex = cs.bodyExtra,
+    base = st.angleBase;
   for (let k = 1; k < count; k++) base[k] = ex[k * 6 + 5]!;
   base[0] = 0;
   if (n === 0) return;
@@ -99,32 +120,54 @@ export function prepareManifolds(world: PhysicsWorld): void {
   const hertz = Math.min(set.contactHertz, SHAPE_HERTZ_FRACTION / hs);
   makeSoftInto(st.softness, hertz, set.contactDampingRatio, hs);
   makeSoftInto(st.rigidSoftness, 2 * hertz, set.contactDampingRatio, hs);
-  const c = world.components, sb = cs.bodyState;
+  const c = world.components,
+    sb = cs.bodyState;
   // Where the solver starts each body (its displacement 0) relative to where the narrowphase measured
   // it (PreviousPosition): separations are corrected by the difference, so the rows agree with
   // whatever base the solver chooses.
-  const list = cs.solverBodies, ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-  const eM = c.Material.restitution, fM = c.Material.friction, sM = c.Material.staticFriction;
+  const list = cs.solverBodies,
+    ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y;
+  const eM = c.Material.restitution,
+    fM = c.Material.friction,
+    sM = c.Material.staticFriction;
   const S = c.Shape;
   const box = cs.boundary;
   const stamp = world.spawnStamp;
   const stick = cs.settings.stickSpeed;
   const prev = st.previous;
   for (let i = 0; i < n; i++) {
-    const ea = buf.shapeA[i]!, eb = buf.shapeB[i]!;
-    const oa = buf.ia[i]! * 8, ob = buf.ib[i]! * 8;
-    const mA = sb[oa + 5]!, iA = sb[oa + 6]!, mB = sb[ob + 5]!, iB = sb[ob + 6]!;
-    const nx = buf.nx[i]!, ny = buf.ny[i]!;
+    const ea = buf.shapeA[i]!,
+      eb = buf.shapeB[i]!;
+    const oa = buf.ia[i]! * 8,
+      ob = buf.ib[i]! * 8;
+    const mA = sb[oa + 5]!,
+      iA = sb[oa + 6]!,
+      mB = sb[ob + 5]!,
+      iB = sb[ob + 6]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!;
     // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
     let ra: number, fa: number, sa: number;
-    if (ea < 0) { ra = box.restitution; fa = box.friction; sa = box.staticFriction; } else { ra = eM[ea]!; fa = fM[ea]!; sa = sM[ea]!; }
-    const mu = Math.sqrt(fa * fM[eb]!), mus = Math.sqrt(sa * sM[eb]!);
+    if (ea < 0) {
+      ra = box.restitution;
+      fa = box.friction;
+      sa = box.staticFriction;
+    } else {
+      ra = eM[ea]!;
+      fa = fM[ea]!;
+      sa = sM[ea]!;
+    }
+    const mu = Math.sqrt(fa * fM[eb]!),
+      mus = Math.sqrt(sa * sM[eb]!);
     buf.friction[i] = mu;
     buf.restitution[i] = Math.max(ra, eM[eb]!);
     // Rolling resistance of round shapes: coefficient times the rolling radius.
     let roll = 0;
-    if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0) roll = S.rollingResistance[ea]! * S.radius[ea]!;
-    if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0) roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
+    if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
+      roll = S.rollingResistance[ea]! * S.radius[ea]!;
+    if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
+      roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
     buf.rolling[i] = roll;
     buf.rollingMass[i] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     buf.rollingImpulse[i] = 0;
@@ -133,44 +176,67 @@ export function prepareManifolds(world: PhysicsWorld): void {
     let j = findPrevious(st, ea, eb);
     if (j >= 0 && (prev.stampA[j] !== buf.stampA[i] || prev.stampB[j] !== buf.stampB[i])) j = -1;
     if (j >= 0) buf.rollingImpulse[i] = prev.rollingImpulse[j]!;
-    const vax = sb[oa]!, vay = sb[oa + 1]!, wa = sb[oa + 2]!, vbx = sb[ob]!, vby = sb[ob + 1]!, wb = sb[ob + 2]!;
-    const ka = buf.ia[i]!, kb = buf.ib[i]!;
-    const ea6 = ka * 6, eb6 = kb * 6;
-    const offAx = ka === 0 ? 0 : ex[ea6]! - ox[list[ka]!]!, offAy = ka === 0 ? 0 : ex[ea6 + 1]! - oy[list[ka]!]!;
-    const offBx = kb === 0 ? 0 : ex[eb6]! - ox[list[kb]!]!, offBy = kb === 0 ? 0 : ex[eb6 + 1]! - oy[list[kb]!]!;
+    const vax = sb[oa]!,
+      vay = sb[oa + 1]!,
+      wa = sb[oa + 2]!,
+      vbx = sb[ob]!,
+      vby = sb[ob + 1]!,
+      wb = sb[ob + 2]!;
+    const ka = buf.ia[i]!,
+      kb = buf.ib[i]!;
+    const ea6 = ka * 6,
+      eb6 = kb * 6;
+    const offAx = ka === 0 ? 0 : ex[ea6]! - ox[list[ka]!]!,
+      offAy = ka === 0 ? 0 : ex[ea6 + 1]! - oy[list[ka]!]!;
+    const offBx = kb === 0 ? 0 : ex[eb6]! - ox[list[kb]!]!,
+      offBy = kb === 0 ? 0 : ex[eb6 + 1]! - oy[list[kb]!]!;
     let vtMax = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p;
-      const rax = buf.rAx[q]!, ray = buf.rAy[q]!, rbx = buf.rBx[q]!, rby = buf.rBy[q]!;
+      const rax = buf.rAx[q]!,
+        ray = buf.rAy[q]!,
+        rbx = buf.rBx[q]!,
+        rby = buf.rBy[q]!;
       buf.separation[q] = buf.separation[q]! + (offBx - offAx) * nx + (offBy - offAy) * ny;
-      const rnA = rax * ny - ray * nx, rnB = rbx * ny - rby * nx;
+      const rnA = rax * ny - ray * nx,
+        rnB = rbx * ny - rby * nx;
       const kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
       buf.normalMass[q] = kn > 0 ? 1 / kn : 0;
-      const rtA = rax * nx + ray * ny, rtB = rbx * nx + rby * ny; // r x t with t = (-n_y, n_x)
+      const rtA = rax * nx + ray * ny,
+        rtB = rbx * nx + rby * ny; // r x t with t = (-n_y, n_x)
       const kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
       buf.tangentMass[q] = kt > 0 ? 1 / kt : 0;
-      const dvx = vbx - wb * rby - vax + wa * ray, dvy = vby + wb * rbx - vay - wa * rax;
+      const dvx = vbx - wb * rby - vax + wa * ray,
+        dvy = vby + wb * rbx - vay - wa * rax;
       buf.relativeVelocity[q] = dvx * nx + dvy * ny;
       const vt = Math.abs(-dvx * ny + dvy * nx);
       if (vt > vtMax) vtMax = vt;
       buf.maxNormalImpulse[q] = 0;
       buf.totalNormalImpulse[q] = 0;
-      let ln = 0, lt = 0;
+      let ln = 0,
+        lt = 0;
       if (j >= 0) {
         const id = buf.id[q]!;
         for (let r = 0, pm = prev.pointCount[j]!; r < pm; r++) {
-          if (prev.id[2 * j + r] === id) { ln = prev.normalImpulse[2 * j + r]!; lt = prev.tangentImpulse[2 * j + r]!; break; }
+          if (prev.id[2 * j + r] === id) {
+            ln = prev.normalImpulse[2 * j + r]!;
+            lt = prev.tangentImpulse[2 * j + r]!;
+            break;
+          }
         }
       }
-      buf.normalImpulse[q] = ln; buf.tangentImpulse[q] = lt;
+      buf.normalImpulse[q] = ln;
+      buf.tangentImpulse[q] = lt;
     }
     buf.frictionBound[i] = vtMax < stick ? Math.max(mus, mu) : mu;
     // Block solve of two-point manifolds (Catto's block solver of Box2D 2.x): K = J M^-1 J^T over the two normal rows.
     buf.blockValid[i] = 0;
     if (buf.pointCount[i] === 2) {
       const q = 2 * i;
-      const rn1A = buf.rAx[q]! * ny - buf.rAy[q]! * nx, rn1B = buf.rBx[q]! * ny - buf.rBy[q]! * nx;
-      const rn2A = buf.rAx[q + 1]! * ny - buf.rAy[q + 1]! * nx, rn2B = buf.rBx[q + 1]! * ny - buf.rBy[q + 1]! * nx;
+      const rn1A = buf.rAx[q]! * ny - buf.rAy[q]! * nx,
+        rn1B = buf.rBx[q]! * ny - buf.rBy[q]! * nx;
+      const rn2A = buf.rAx[q + 1]! * ny - buf.rAy[q + 1]! * nx,
+        rn2B = buf.rBx[q + 1]! * ny - buf.rBy[q + 1]! * nx;
       const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
@@ -178,7 +244,9 @@ export function prepareManifolds(world: PhysicsWorld): void {
       // Box2D's condition-number guard: the rows must not be nearly parallel.
       if (k11 * k11 < 1000 * det && det > 0) {
         const inv = 1 / det;
-        buf.block11[i] = k22 * inv; buf.block12[i] = -k12 * inv; buf.block22[i] = k11 * inv;
+        buf.block11[i] = k22 * inv;
+        buf.block12[i] = -k12 * inv;
+        buf.block22[i] = k11 * inv;
         buf.blockValid[i] = 1;
       }
     }
@@ -187,26 +255,49 @@ export function prepareManifolds(world: PhysicsWorld): void {
 
 /** Applies every manifold point's accumulated impulses (once per substep). */
 export function warmStartManifolds(cs: CollisionState): void {
-  const buf = cs.shapes.manifolds, sb = cs.bodyState;
+  const buf = cs.shapes.manifolds,
+    sb = cs.bodyState;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = buf.ia[i]! * 8, b = buf.ib[i]! * 8;
-    const mA = sb[a + 5]!, iA = sb[a + 6]!, mB = sb[b + 5]!, iB = sb[b + 6]!;
-    const nx = buf.nx[i]!, ny = buf.ny[i]!;
-    let vax = sb[a]!, vay = sb[a + 1]!, wa = sb[a + 2]!, vbx = sb[b]!, vby = sb[b + 1]!, wb = sb[b + 2]!;
+    const a = buf.ia[i]! * 8,
+      b = buf.ib[i]! * 8;
+    const mA = sb[a + 5]!,
+      iA = sb[a + 6]!,
+      mB = sb[b + 5]!,
+      iB = sb[b + 6]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!;
+    let vax = sb[a]!,
+      vay = sb[a + 1]!,
+      wa = sb[a + 2]!,
+      vbx = sb[b]!,
+      vby = sb[b + 1]!,
+      wb = sb[b + 2]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p;
-      const ln = buf.normalImpulse[q]!, lt = buf.tangentImpulse[q]!;
-      const Px = ln * nx - lt * ny, Py = ln * ny + lt * nx;
+      const ln = buf.normalImpulse[q]!,
+        lt = buf.tangentImpulse[q]!;
+      const Px = ln * nx - lt * ny,
+        Py = ln * ny + lt * nx;
       wa -= iA * (buf.rAx[q]! * Py - buf.rAy[q]! * Px);
-      vax -= mA * Px; vay -= mA * Py;
+      vax -= mA * Px;
+      vay -= mA * Py;
       wb += iB * (buf.rBx[q]! * Py - buf.rBy[q]! * Px);
-      vbx += mB * Px; vby += mB * Py;
+      vbx += mB * Px;
+      vby += mB * Py;
     }
     const lr = buf.rollingImpulse[i]!;
-    wa -= iA * lr; wb += iB * lr;
-    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
-    sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
-    if (pushes(buf, i)) { sb[a + 7] = 1; sb[b + 7] = 1; }
+    wa -= iA * lr;
+    wb += iB * lr;
+    sb[a] = vax;
+    sb[a + 1] = vay;
+    sb[a + 2] = wa;
+    sb[b] = vbx;
+    sb[b + 1] = vby;
+    sb[b + 2] = wb;
+    if (pushes(buf, i)) {
+      sb[a + 7] = 1;
+      sb[b + 7] = 1;
+    }
   }
 }
 
@@ -229,21 +320,53 @@ function pushes(buf: CollisionState['shapes']['manifolds'], i: number): boolean 
  * the softness `prepareManifolds` chose.
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
-  const buf = cs.shapes.manifolds, sb = cs.bodyState, ex = cs.bodyExtra, base = cs.shapes.angleBase;
-  const sd = cs.shapes.softness, sr = cs.shapes.rigidSoftness;
-  const invH = 1 / hs, push = cs.settings.contactPushSpeed;
-  const NX = buf.nx, NY = buf.ny, RAX = buf.rAx, RAY = buf.rAy, RBX = buf.rBx, RBY = buf.rBy, S0 = buf.separation;
-  const NM = buf.normalMass, TM = buf.tangentMass, LN = buf.normalImpulse, LT = buf.tangentImpulse, MAXN = buf.maxNormalImpulse;
+  const buf = cs.shapes.manifolds,
+    sb = cs.bodyState,
+    ex = cs.bodyExtra,
+    base = cs.shapes.angleBase;
+  const sd = cs.shapes.softness,
+    sr = cs.shapes.rigidSoftness;
+  const invH = 1 / hs,
+    push = cs.settings.contactPushSpeed;
+  const NX = buf.nx,
+    NY = buf.ny,
+    RAX = buf.rAx,
+    RAY = buf.rAy,
+    RBX = buf.rBx,
+    RBY = buf.rBy,
+    S0 = buf.separation;
+  const NM = buf.normalMass,
+    TM = buf.tangentMass,
+    LN = buf.normalImpulse,
+    LT = buf.tangentImpulse,
+    MAXN = buf.maxNormalImpulse;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const ia = buf.ia[i]!, ib = buf.ib[i]!;
-    const a = ia * 8, b = ib * 8;
-    const mA = sb[a + 5]!, iA = sb[a + 6]!, mB = sb[b + 5]!, iB = sb[b + 6]!;
-    let vax = sb[a]!, vay = sb[a + 1]!, wa = sb[a + 2]!, vbx = sb[b]!, vby = sb[b + 1]!, wb = sb[b + 2]!;
-    const dax = sb[a + 3]!, day = sb[a + 4]!, dbx = sb[b + 3]!, dby = sb[b + 4]!;
-    const ta = ia === 0 ? 0 : ex[ia * 6 + 5]! - base[ia]!, tb = ib === 0 ? 0 : ex[ib * 6 + 5]! - base[ib]!;
-    const nx = NX[i]!, ny = NY[i]!;
+    const ia = buf.ia[i]!,
+      ib = buf.ib[i]!;
+    const a = ia * 8,
+      b = ib * 8;
+    const mA = sb[a + 5]!,
+      iA = sb[a + 6]!,
+      mB = sb[b + 5]!,
+      iB = sb[b + 6]!;
+    let vax = sb[a]!,
+      vay = sb[a + 1]!,
+      wa = sb[a + 2]!,
+      vbx = sb[b]!,
+      vby = sb[b + 1]!,
+      wb = sb[b + 2]!;
+    const dax = sb[a + 3]!,
+      day = sb[a + 4]!,
+      dbx = sb[b + 3]!,
+      dby = sb[b + 4]!;
+    const ta = ia === 0 ? 0 : ex[ia * 6 + 5]! - base[ia]!,
+      tb = ib === 0 ? 0 : ex[ib * 6 + 5]! - base[ib]!;
+    const nx = NX[i]!,
+      ny = NY[i]!;
     const rigidPartner = mA === 0 || mB === 0;
-    const biasRate = rigidPartner ? sr[0]! : sd[0]!, softMass = rigidPartner ? sr[1]! : sd[1]!, softImpulse = rigidPartner ? sr[2]! : sd[2]!;
+    const biasRate = rigidPartner ? sr[0]! : sd[0]!,
+      softMass = rigidPartner ? sr[1]! : sd[1]!,
+      softImpulse = rigidPartner ? sr[2]! : sd[2]!;
     const m = buf.pointCount[i]!;
     let total = 0;
     let solved = false;
@@ -253,56 +376,109 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
       // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
       const q = 2 * i;
-      const r1ax = RAX[q]!, r1ay = RAY[q]!, r1bx = RBX[q]!, r1by = RBY[q]!;
-      const r2ax = RAX[q + 1]!, r2ay = RAY[q + 1]!, r2bx = RBX[q + 1]!, r2by = RBY[q + 1]!;
+      const r1ax = RAX[q]!,
+        r1ay = RAY[q]!,
+        r1bx = RBX[q]!,
+        r1by = RBY[q]!;
+      const r2ax = RAX[q + 1]!,
+        r2ay = RAY[q + 1]!,
+        r2bx = RBX[q + 1]!,
+        r2by = RBY[q + 1]!;
       const s1 = S0[q]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
       const s2 = S0[q + 1]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
-      let b1 = 0, m1 = 1, i1 = 0, b2 = 0, m2 = 1, i2 = 0;
+      let b1 = 0,
+        m1 = 1,
+        i1 = 0,
+        b2 = 0,
+        m2 = 1,
+        i2 = 0;
       if (s1 > 0) b1 = s1 * invH;
-      else if (useBias) { b1 = biasRate * s1; if (b1 < -push) b1 = -push; m1 = softMass; i1 = softImpulse; }
+      else if (useBias) {
+        b1 = biasRate * s1;
+        if (b1 < -push) b1 = -push;
+        m1 = softMass;
+        i1 = softImpulse;
+      }
       if (s2 > 0) b2 = s2 * invH;
-      else if (useBias) { b2 = biasRate * s2; if (b2 < -push) b2 = -push; m2 = softMass; i2 = softImpulse; }
+      else if (useBias) {
+        b2 = biasRate * s2;
+        if (b2 < -push) b2 = -push;
+        m2 = softMass;
+        i2 = softImpulse;
+      }
       // Soft rows (overlap with bias) that both push stay sequential, as in Box2D v3: solved as a block
       // their spring couples through K and a tall pyramid sinks half as much again (measured on \`pyramid\`).
       const rigidRows = i1 === 0 && i2 === 0;
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-      const o1 = LN[q]!, o2 = LN[q + 1]!;
-      const k11 = buf.block22[i]!, k22 = buf.block11[i]!, k12 = -buf.block12[i]!; // K from its inverse (scaled by det)
+      const o1 = LN[q]!,
+        o2 = LN[q + 1]!;
+      const k11 = buf.block22[i]!,
+        k22 = buf.block11[i]!,
+        k12 = -buf.block12[i]!; // K from its inverse (scaled by det)
       const det = 1 / (buf.block11[i]! * buf.block22[i]! - buf.block12[i]! * buf.block12[i]!);
-      const K11 = k11 * det, K22 = k22 * det, K12 = k12 * det;
+      const K11 = k11 * det,
+        K22 = k22 * det,
+        K12 = k12 * det;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * o1 + K12 * o2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * o1 + K22 * o2);
-      let n1 = -(buf.block11[i]! * c1 + buf.block12[i]! * c2), n2 = -(buf.block12[i]! * c1 + buf.block22[i]! * c2);
+      let n1 = -(buf.block11[i]! * c1 + buf.block12[i]! * c2),
+        n2 = -(buf.block12[i]! * c1 + buf.block22[i]! * c2);
       const both = n1 >= 0 && n2 >= 0;
       let ok = rigidRows && both;
       // Soft rows that both keep pushing are left to the sequential pass; a point that lets go (one or
       // both impulses 0: an impact undone, a box lifting off an edge) is solved here.
-      if (!both) { n1 = -c1 / K11; n2 = 0; ok = n1 >= 0 && K12 * n1 + c2 >= 0; }
-      if (!both && !ok) { n1 = 0; n2 = -c2 / K22; ok = n2 >= 0 && K12 * n2 + c1 >= 0; }
-      if (!both && !ok) { n1 = 0; n2 = 0; ok = c1 >= 0 && c2 >= 0; }
+      if (!both) {
+        n1 = -c1 / K11;
+        n2 = 0;
+        ok = n1 >= 0 && K12 * n1 + c2 >= 0;
+      }
+      if (!both && !ok) {
+        n1 = 0;
+        n2 = -c2 / K22;
+        ok = n2 >= 0 && K12 * n2 + c1 >= 0;
+      }
+      if (!both && !ok) {
+        n1 = 0;
+        n2 = 0;
+        ok = c1 >= 0 && c2 >= 0;
+      }
       if (ok) {
-        const d1 = n1 - o1, d2 = n2 - o2;
-        LN[q] = n1; LN[q + 1] = n2;
+        const d1 = n1 - o1,
+          d2 = n2 - o2;
+        LN[q] = n1;
+        LN[q + 1] = n2;
         if (d1 > MAXN[q]!) MAXN[q] = d1;
         if (d2 > MAXN[q + 1]!) MAXN[q + 1] = d2;
         total = n1 + n2;
-        const P1x = d1 * nx, P1y = d1 * ny, P2x = d2 * nx, P2y = d2 * ny;
-        vax -= mA * (P1x + P2x); vay -= mA * (P1y + P2y);
+        const P1x = d1 * nx,
+          P1y = d1 * ny,
+          P2x = d2 * nx,
+          P2y = d2 * ny;
+        vax -= mA * (P1x + P2x);
+        vay -= mA * (P1y + P2y);
         wa -= iA * (r1ax * P1y - r1ay * P1x + r2ax * P2y - r2ay * P2x);
-        vbx += mB * (P1x + P2x); vby += mB * (P1y + P2y);
+        vbx += mB * (P1x + P2x);
+        vby += mB * (P1y + P2y);
         wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
         solved = true;
       }
     }
     for (let p = 0; p < m && !solved; p++) {
       const q = 2 * i + p;
-      const rax = RAX[q]!, ray = RAY[q]!, rbx = RBX[q]!, rby = RBY[q]!;
+      const rax = RAX[q]!,
+        ray = RAY[q]!,
+        rbx = RBX[q]!,
+        rby = RBY[q]!;
       const s = S0[q]! + (dbx - tb * rby - dax + ta * ray) * nx + (dby + tb * rbx - day - ta * rax) * ny;
-      let bias = 0, massScale = 1, impulseScale = 0;
+      let bias = 0,
+        massScale = 1,
+        impulseScale = 0;
       if (s > 0) bias = s * invH;
       else if (useBias) {
-        bias = biasRate * s; massScale = softMass; impulseScale = softImpulse;
+        bias = biasRate * s;
+        massScale = softMass;
+        impulseScale = softImpulse;
         if (bias < -push) bias = -push;
       }
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
@@ -313,44 +489,69 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       LN[q] = next;
       total += next;
       if (dl > MAXN[q]!) MAXN[q] = dl;
-      const Px = dl * nx, Py = dl * ny;
-      vax -= mA * Px; vay -= mA * Py; wa -= iA * (rax * Py - ray * Px);
-      vbx += mB * Px; vby += mB * Py; wb += iB * (rbx * Py - rby * Px);
+      const Px = dl * nx,
+        Py = dl * ny;
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wa -= iA * (rax * Py - ray * Px);
+      vbx += mB * Px;
+      vby += mB * Py;
+      wb += iB * (rbx * Py - rby * Px);
     }
     const bound = buf.frictionBound[i]!;
     for (let p = 0; p < m; p++) {
       const q = 2 * i + p;
-      const rax = RAX[q]!, ray = RAY[q]!, rbx = RBX[q]!, rby = RBY[q]!;
-      const dvx = vbx - wb * rby - vax + wa * ray, dvy = vby + wb * rbx - vay - wa * rax;
+      const rax = RAX[q]!,
+        ray = RAY[q]!,
+        rbx = RBX[q]!,
+        rby = RBY[q]!;
+      const dvx = vbx - wb * rby - vax + wa * ray,
+        dvy = vby + wb * rbx - vay - wa * rax;
       const vt = -dvx * ny + dvy * nx;
-      const old = LT[q]!, maxF = bound * LN[q]!;
+      const old = LT[q]!,
+        maxF = bound * LN[q]!;
       let next = old - TM[q]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
       const dl = next - old;
       LT[q] = next;
-      const Px = -dl * ny, Py = dl * nx;
-      vax -= mA * Px; vay -= mA * Py; wa -= iA * (rax * Py - ray * Px);
-      vbx += mB * Px; vby += mB * Py; wb += iB * (rbx * Py - rby * Px);
+      const Px = -dl * ny,
+        Py = dl * nx;
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wa -= iA * (rax * Py - ray * Px);
+      vbx += mB * Px;
+      vby += mB * Py;
+      wb += iB * (rbx * Py - rby * Px);
     }
     const roll = buf.rolling[i]!;
     if (roll > 0) {
-      const old = buf.rollingImpulse[i]!, maxR = roll * total;
+      const old = buf.rollingImpulse[i]!,
+        maxR = roll * total;
       let next = old - buf.rollingMass[i]! * (wb - wa);
       next = next < -maxR ? -maxR : next > maxR ? maxR : next;
       const dl = next - old;
       buf.rollingImpulse[i] = next;
-      wa -= iA * dl; wb += iB * dl;
+      wa -= iA * dl;
+      wb += iB * dl;
     }
-    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
-    sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
-    if (total > 0 || pushes(buf, i)) { sb[a + 7] = 1; sb[b + 7] = 1; }
+    sb[a] = vax;
+    sb[a + 1] = vay;
+    sb[a + 2] = wa;
+    sb[b] = vbx;
+    sb[b + 1] = vby;
+    sb[b + 2] = wb;
+    if (total > 0 || pushes(buf, i)) {
+      sb[a + 7] = 1;
+      sb[b + 7] = 1;
+    }
   }
 }
 
 /** Adds each point's substep impulse to its step total (call once per substep, after relaxing). */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
   const buf = cs.shapes.manifolds;
-  const LN = buf.normalImpulse, TOT = buf.totalNormalImpulse;
+  const LN = buf.normalImpulse,
+    TOT = buf.totalNormalImpulse;
   for (let q = 0, n = 2 * buf.count; q < n; q++) TOT[q] = TOT[q]! + LN[q]!;
 }
 
@@ -360,20 +561,35 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
  * v_n = -e v_n0 (the accumulated normal impulse stays >= 0).
  */
 export function applyManifoldRestitution(world: PhysicsWorld): void {
-  const cs = world.collision, buf = cs.shapes.manifolds, sb = cs.bodyState;
+  const cs = world.collision,
+    buf = cs.shapes.manifolds,
+    sb = cs.bodyState;
   const threshold = cs.settings.restitutionThreshold;
   for (let i = 0, n = buf.count; i < n; i++) {
     const e = buf.restitution[i]!;
     if (e === 0) continue;
-    const a = buf.ia[i]! * 8, b = buf.ib[i]! * 8;
-    const mA = sb[a + 5]!, iA = sb[a + 6]!, mB = sb[b + 5]!, iB = sb[b + 6]!;
-    const nx = buf.nx[i]!, ny = buf.ny[i]!;
-    let vax = sb[a]!, vay = sb[a + 1]!, wa = sb[a + 2]!, vbx = sb[b]!, vby = sb[b + 1]!, wb = sb[b + 2]!;
+    const a = buf.ia[i]! * 8,
+      b = buf.ib[i]! * 8;
+    const mA = sb[a + 5]!,
+      iA = sb[a + 6]!,
+      mB = sb[b + 5]!,
+      iB = sb[b + 6]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!;
+    let vax = sb[a]!,
+      vay = sb[a + 1]!,
+      wa = sb[a + 2]!,
+      vbx = sb[b]!,
+      vby = sb[b + 1]!,
+      wb = sb[b + 2]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p;
       const v0 = buf.relativeVelocity[q]!;
       if (v0 > -threshold || buf.maxNormalImpulse[q]! === 0) continue;
-      const rax = buf.rAx[q]!, ray = buf.rAy[q]!, rbx = buf.rBx[q]!, rby = buf.rBy[q]!;
+      const rax = buf.rAx[q]!,
+        ray = buf.rAy[q]!,
+        rbx = buf.rBx[q]!,
+        rby = buf.rBy[q]!;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
       const old = buf.normalImpulse[q]!;
       let next = old - buf.normalMass[q]! * (vn + e * v0);
@@ -381,12 +597,21 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       const dl = next - old;
       buf.normalImpulse[q] = next;
       buf.totalNormalImpulse[q] = buf.totalNormalImpulse[q]! + dl;
-      const Px = dl * nx, Py = dl * ny;
-      vax -= mA * Px; vay -= mA * Py; wa -= iA * (rax * Py - ray * Px);
-      vbx += mB * Px; vby += mB * Py; wb += iB * (rbx * Py - rby * Px);
+      const Px = dl * nx,
+        Py = dl * ny;
+      vax -= mA * Px;
+      vay -= mA * Py;
+      wa -= iA * (rax * Py - ray * Px);
+      vbx += mB * Px;
+      vby += mB * Py;
+      wb += iB * (rbx * Py - rby * Px);
     }
-    sb[a] = vax; sb[a + 1] = vay; sb[a + 2] = wa;
-    sb[b] = vbx; sb[b + 1] = vby; sb[b + 2] = wb;
+    sb[a] = vax;
+    sb[a + 1] = vay;
+    sb[a + 2] = wa;
+    sb[b] = vbx;
+    sb[b + 1] = vby;
+    sb[b + 2] = wb;
   }
 }
 
@@ -397,10 +622,15 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
 export function finishManifolds(world: PhysicsWorld): void {
   const st = world.collision.shapes;
   if (!st.active) return;
-  const buf = st.manifolds, prev = st.previous, ev = st.events;
+  const buf = st.manifolds,
+    prev = st.previous,
+    ev = st.events;
   if (st.eventStep !== world.steps) {
     st.eventStep = world.steps;
-    ev.begin.count = 0; ev.end.count = 0; ev.sensorBegin.count = 0; ev.sensorEnd.count = 0;
+    ev.begin.count = 0;
+    ev.end.count = 0;
+    ev.sensorBegin.count = 0;
+    ev.sensorEnd.count = 0;
   }
   for (let i = 0, n = buf.count; i < n; i++) {
     let touching = 0;
@@ -413,15 +643,18 @@ export function finishManifolds(world: PhysicsWorld): void {
     const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
     if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
     const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
-    ev.begin.px[k] = buf.px[2 * i]!; ev.begin.py[k] = buf.py[2 * i]!;
-    ev.begin.nx[k] = buf.nx[i]!; ev.begin.ny[k] = buf.ny[i]!;
+    ev.begin.px[k] = buf.px[2 * i]!;
+    ev.begin.py[k] = buf.py[2 * i]!;
+    ev.begin.nx[k] = buf.nx[i]!;
+    ev.begin.ny[k] = buf.ny[i]!;
     let approach = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
     ev.begin.approachSpeed[k] = approach;
   }
   rotateManifolds(st);
   // End events: pairs that touched last step and do not now (`previous` is now this step's rows).
-  const now = st.previous, old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
+  const now = st.previous,
+    old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
   for (let i = 0, n = st.lastCount; i < n; i++) {
     if (old.touching[i] !== 1) continue;
     const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);

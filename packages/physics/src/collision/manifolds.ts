@@ -1,6 +1,3 @@
-
-
-
 /**
  * Storage of shape contacts (2D): one row per manifold (a touching pair of shapes, up to two points),
  * structure of arrays grown by doubling, kept in `world.collision.shapes`. Like the ball contacts of
@@ -97,11 +94,35 @@ export interface ManifoldBuffer {
   relativeVelocity: Float64Array;
 }
 
-const ROW_FLOAT = ['nx', 'ny', 'friction', 'frictionBound', 'restitution', 'rolling', 'rollingMass', 'rollingImpulse', 'block11', 'block12', 'block22'] as const;
+const ROW_FLOAT = [
+  'nx',
+  'ny',
+  'friction',
+  'frictionBound',
+  'restitution',
+  'rolling',
+  'rollingMass',
+  'rollingImpulse',
+  'block11',
+  'block12',
+  'block22',
+] as const;
 const ROW_INT = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'ia', 'ib'] as const;
 const POINT_FLOAT = [
-  'px', 'py', 'rAx', 'rAy', 'rBx', 'rBy', 'separation', 'normalMass', 'tangentMass', 'normalImpulse', 'tangentImpulse',
-  'maxNormalImpulse', 'totalNormalImpulse', 'relativeVelocity',
+  'px',
+  'py',
+  'rAx',
+  'rAy',
+  'rBx',
+  'rBy',
+  'separation',
+  'normalMass',
+  'tangentMass',
+  'normalImpulse',
+  'tangentImpulse',
+  'maxNormalImpulse',
+  'totalNormalImpulse',
+  'relativeVelocity',
 ] as const;
 
 /** A manifold buffer with room for `capacity` rows (written as one literal: see contacts.ts). */
@@ -110,13 +131,44 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
   const p = (): Float64Array => new Float64Array(2 * capacity);
   const i = (): Int32Array => new Int32Array(capacity);
   return {
-    count: 0, capacity,
-    shapeA: i(), shapeB: i(), bodyA: i(), bodyB: i(), ia: i(), ib: i(), pointCount: new Uint8Array(capacity),
-    nx: f(), ny: f(), friction: f(), frictionBound: f(), restitution: f(), rolling: f(), rollingMass: f(), rollingImpulse: f(),
-    block11: f(), block12: f(), block22: f(), blockValid: new Uint8Array(capacity),
-    touching: new Uint8Array(capacity), stampA: new Uint32Array(capacity), stampB: new Uint32Array(capacity),
-    id: new Int32Array(2 * capacity), px: p(), py: p(), rAx: p(), rAy: p(), rBx: p(), rBy: p(), separation: p(),
-    normalMass: p(), tangentMass: p(), normalImpulse: p(), tangentImpulse: p(), maxNormalImpulse: p(), totalNormalImpulse: p(),
+    count: 0,
+    capacity,
+    shapeA: i(),
+    shapeB: i(),
+    bodyA: i(),
+    bodyB: i(),
+    ia: i(),
+    ib: i(),
+    pointCount: new Uint8Array(capacity),
+    nx: f(),
+    ny: f(),
+    friction: f(),
+    frictionBound: f(),
+    restitution: f(),
+    rolling: f(),
+    rollingMass: f(),
+    rollingImpulse: f(),
+    block11: f(),
+    block12: f(),
+    block22: f(),
+    blockValid: new Uint8Array(capacity),
+    touching: new Uint8Array(capacity),
+    stampA: new Uint32Array(capacity),
+    stampB: new Uint32Array(capacity),
+    id: new Int32Array(2 * capacity),
+    px: p(),
+    py: p(),
+    rAx: p(),
+    rAy: p(),
+    rBx: p(),
+    rBy: p(),
+    separation: p(),
+    normalMass: p(),
+    tangentMass: p(),
+    normalImpulse: p(),
+    tangentImpulse: p(),
+    maxNormalImpulse: p(),
+    totalNormalImpulse: p(),
     relativeVelocity: p(),
   };
 }
@@ -137,7 +189,12 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   for (const k of ROW_FLOAT) grow(k, 1);
   for (const k of ROW_INT) grow(k, 1);
   for (const k of POINT_FLOAT) grow(k, 2);
-  grow('pointCount', 1); grow('touching', 1); grow('blockValid', 1); grow('stampA', 1); grow('stampB', 1); grow('id', 2);
+  grow('pointCount', 1);
+  grow('touching', 1);
+  grow('blockValid', 1);
+  grow('stampA', 1);
+  grow('stampB', 1);
+  grow('id', 2);
   buf.capacity = cap;
 }
 
@@ -186,14 +243,20 @@ export interface EventList {
   approachSpeed: Float64Array;
 }
 
-
 function createEventList(n = 16): EventList {
   return {
-    count: 0, shapeA: new Float64Array(n), shapeB: new Float64Array(n), bodyA: new Float64Array(n), bodyB: new Float64Array(n),
-    px: new Float64Array(n), py: new Float64Array(n), nx: new Float64Array(n), ny: new Float64Array(n), approachSpeed: new Float64Array(n),
+    count: 0,
+    shapeA: new Float64Array(n),
+    shapeB: new Float64Array(n),
+    bodyA: new Float64Array(n),
+    bodyB: new Float64Array(n),
+    px: new Float64Array(n),
+    py: new Float64Array(n),
+    nx: new Float64Array(n),
+    ny: new Float64Array(n),
+    approachSpeed: new Float64Array(n),
   };
 }
-
 
 /** Per-step scratch of the shape broadphase (colliders: shape entities and ball bodies). */
 export interface ShapeScratch {
@@ -233,9 +296,29 @@ function createShapeScratch(): ShapeScratch {
   const z = (): Float64Array => new Float64Array(0);
   const zi = (): Int32Array => new Int32Array(0);
   return {
-    count: 0, shape: zi(), body: zi(), x: z(), y: z(), c: z(), s: z(), minX: z(), minY: z(), maxX: z(), maxY: z(), spec: z(), size: z(), flags: new Uint8Array(0),
-    cellX: zi(), cellY: zi(), bucket: zi(), sorted: zi(), bucketStart: new Int32Array(1), oversized: zi(),
-    pairCount: 0, pairI: new Int32Array(256), pairJ: new Int32Array(256),
+    count: 0,
+    shape: zi(),
+    body: zi(),
+    x: z(),
+    y: z(),
+    c: z(),
+    s: z(),
+    minX: z(),
+    minY: z(),
+    maxX: z(),
+    maxY: z(),
+    spec: z(),
+    size: z(),
+    flags: new Uint8Array(0),
+    cellX: zi(),
+    cellY: zi(),
+    bucket: zi(),
+    sorted: zi(),
+    bucketStart: new Int32Array(1),
+    oversized: zi(),
+    pairCount: 0,
+    pairI: new Int32Array(256),
+    pairJ: new Int32Array(256),
   };
 }
 
@@ -371,7 +454,8 @@ export function rotateManifolds(st: ShapeCollisionState): void {
     while (size < 2 * n) size *= 2;
     st.slots = new Int32Array(size);
   } else st.slots.fill(0);
-  const mask = size - 1, slots = st.slots;
+  const mask = size - 1,
+    slots = st.slots;
   for (let i = 0; i < n; i++) {
     let s = pairHash(cur.shapeA[i]!, cur.shapeB[i]!) & mask;
     while (slots[s] !== 0) s = (s + 1) & mask;

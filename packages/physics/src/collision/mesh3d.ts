@@ -1,8 +1,8 @@
 import { addComponent, entityExists } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import { createSlot, currentHandle } from '../handles.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
 import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Static triangle meshes and height fields for ground and level geometry in 3D (a ramp, a terrain).
@@ -40,10 +40,15 @@ registerExternalWorldState({
   name: 'meshes3d',
   get: (world, create) => {
     let m = meshes.get(world);
-    if (m === undefined && create) { m = { list: [] }; meshes.set(world, m); }
+    if (m === undefined && create) {
+      m = { list: [] };
+      meshes.set(world, m);
+    }
     return m;
   },
-  clear: (world) => { meshes.delete(world); },
+  clear: (world) => {
+    meshes.delete(world);
+  },
 });
 
 /** Options of `addTriangleMesh3D`. */
@@ -72,28 +77,52 @@ function addMesh(where: string, world: PhysicsWorld, options: TriangleMeshOption
   if (world.dimensions !== 3) throw new TypeError(`${where}: needs a 3D world, got dimensions ${world.dimensions}`);
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, ['vertices', 'triangles', 'friction', 'restitution']);
-  const V = options.vertices, T = options.triangles;
-  if (V === null || typeof V !== 'object' || !(V.length >= 3)) throw new RangeError(`${where}: vertices must hold at least 3 points, got ${describe(V)}`);
-  if (T === null || typeof T !== 'object' || !(T.length >= 1)) throw new RangeError(`${where}: triangles must hold at least 1 triangle, got ${describe(T)}`);
-  const friction = options.friction ?? 0.6, restitution = options.restitution ?? 0;
+  const V = options.vertices,
+    T = options.triangles;
+  if (V === null || typeof V !== 'object' || !(V.length >= 3))
+    throw new RangeError(`${where}: vertices must hold at least 3 points, got ${describe(V)}`);
+  if (T === null || typeof T !== 'object' || !(T.length >= 1))
+    throw new RangeError(`${where}: triangles must hold at least 1 triangle, got ${describe(T)}`);
+  const friction = options.friction ?? 0.6,
+    restitution = options.restitution ?? 0;
   assertNonNegative(where, 'friction', friction);
   assertInRange(where, 'restitution', restitution, 0, 1);
   const verts = new Float64Array(3 * V.length);
   for (let i = 0; i < V.length; i++) {
     assertVector(where, `vertices[${i}]`, V[i], 3);
-    verts[3 * i] = V[i]![0]!; verts[3 * i + 1] = V[i]![1]!; verts[3 * i + 2] = V[i]![2]!;
+    verts[3 * i] = V[i]![0]!;
+    verts[3 * i + 1] = V[i]![1]!;
+    verts[3 * i + 2] = V[i]![2]!;
   }
-  const tris = new Int32Array(3 * T.length), normals = new Float64Array(3 * T.length), bounds = new Float64Array(6 * T.length);
+  const tris = new Int32Array(3 * T.length),
+    normals = new Float64Array(3 * T.length),
+    bounds = new Float64Array(6 * T.length);
   for (let t = 0; t < T.length; t++) {
     const tri = T[t];
-    if (tri === null || typeof tri !== 'object' || tri.length !== 3) throw new TypeError(`${where}: triangles[${t}] must be [i, j, k], got ${describe(tri)}`);
-    for (let k = 0; k < 3; k++) { assertInteger(where, `triangles[${t}][${k}]`, tri[k], 0, V.length - 1); tris[3 * t + k] = tri[k]!; }
-    const a = 3 * tris[3 * t]!, b = 3 * tris[3 * t + 1]!, c = 3 * tris[3 * t + 2]!;
-    const ux = verts[b]! - verts[a]!, uy = verts[b + 1]! - verts[a + 1]!, uz = verts[b + 2]! - verts[a + 2]!;
-    const vx = verts[c]! - verts[a]!, vy = verts[c + 1]! - verts[a + 1]!, vz = verts[c + 2]! - verts[a + 2]!;
-    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx, l = Math.hypot(nx, ny, nz);
-    if (!(l > 1e-12 * (ux * ux + uy * uy + uz * uz + vx * vx + vy * vy + vz * vz))) throw new RangeError(`${where}: triangles[${t}] must have a non-zero area, got vertices ${tri[0]}, ${tri[1]}, ${tri[2]}`);
-    normals[3 * t] = nx / l; normals[3 * t + 1] = ny / l; normals[3 * t + 2] = nz / l;
+    if (tri === null || typeof tri !== 'object' || tri.length !== 3)
+      throw new TypeError(`${where}: triangles[${t}] must be [i, j, k], got ${describe(tri)}`);
+    for (let k = 0; k < 3; k++) {
+      assertInteger(where, `triangles[${t}][${k}]`, tri[k], 0, V.length - 1);
+      tris[3 * t + k] = tri[k]!;
+    }
+    const a = 3 * tris[3 * t]!,
+      b = 3 * tris[3 * t + 1]!,
+      c = 3 * tris[3 * t + 2]!;
+    const ux = verts[b]! - verts[a]!,
+      uy = verts[b + 1]! - verts[a + 1]!,
+      uz = verts[b + 2]! - verts[a + 2]!;
+    const vx = verts[c]! - verts[a]!,
+      vy = verts[c + 1]! - verts[a + 1]!,
+      vz = verts[c + 2]! - verts[a + 2]!;
+    const nx = uy * vz - uz * vy,
+      ny = uz * vx - ux * vz,
+      nz = ux * vy - uy * vx,
+      l = Math.hypot(nx, ny, nz);
+    if (!(l > 1e-12 * (ux * ux + uy * uy + uz * uz + vx * vx + vy * vy + vz * vz)))
+      throw new RangeError(`${where}: triangles[${t}] must have a non-zero area, got vertices ${tri[0]}, ${tri[1]}, ${tri[2]}`);
+    normals[3 * t] = nx / l;
+    normals[3 * t + 1] = ny / l;
+    normals[3 * t + 2] = nz / l;
     for (let k = 0; k < 3; k++) {
       bounds[6 * t + k] = Math.min(verts[a + k]!, verts[b + k]!, verts[c + k]!);
       bounds[6 * t + 3 + k] = Math.max(verts[a + k]!, verts[b + k]!, verts[c + k]!);
@@ -103,9 +132,14 @@ function addMesh(where: string, world: PhysicsWorld, options: TriangleMeshOption
   const c = world.components;
   addComponent(world, e, c.Static);
   addComponent(world, e, c.Material);
-  c.Material.friction[e] = friction; c.Material.staticFriction[e] = friction; c.Material.restitution[e] = restitution;
+  c.Material.friction[e] = friction;
+  c.Material.staticFriction[e] = friction;
+  c.Material.restitution[e] = restitution;
   let m = meshes.get(world);
-  if (m === undefined) { m = { list: [] }; meshes.set(world, m); }
+  if (m === undefined) {
+    m = { list: [] };
+    meshes.set(world, m);
+  }
   m.list.push({ entity: e, vertices: verts, triangles: tris, normals, bounds });
   return currentHandle(world, e);
 }
@@ -134,26 +168,37 @@ export function addHeightField3D(world: PhysicsWorld, options: HeightFieldOption
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, ['heights', 'spacing', 'origin', 'friction', 'restitution']);
   const H = options.heights;
-  if (H === null || typeof H !== 'object' || !(H.length >= 2)) throw new RangeError(`${where}: heights must have at least 2 rows, got ${describe(H)}`);
+  if (H === null || typeof H !== 'object' || !(H.length >= 2))
+    throw new RangeError(`${where}: heights must have at least 2 rows, got ${describe(H)}`);
   const cols = H[0]?.length ?? 0;
   if (!(cols >= 2)) throw new RangeError(`${where}: heights must have at least 2 columns, got ${cols}`);
   assertVector(where, 'spacing', options.spacing, 2);
-  assertPositive(where, 'spacing[0]', options.spacing[0]); assertPositive(where, 'spacing[1]', options.spacing[1]);
+  assertPositive(where, 'spacing[0]', options.spacing[0]);
+  assertPositive(where, 'spacing[1]', options.spacing[1]);
   let o = [0, 0, 0];
-  if (options.origin !== undefined) { assertVector(where, 'origin', options.origin, 3); o = [options.origin[0]!, options.origin[1]!, options.origin[2]!]; }
-  const vertices: number[][] = [], triangles: number[][] = [];
+  if (options.origin !== undefined) {
+    assertVector(where, 'origin', options.origin, 3);
+    o = [options.origin[0]!, options.origin[1]!, options.origin[2]!];
+  }
+  const vertices: number[][] = [],
+    triangles: number[][] = [];
   for (let r = 0; r < H.length; r++) {
     const row = H[r]!;
-    if (row === null || typeof row !== 'object' || row.length !== cols) throw new RangeError(`${where}: heights[${r}] must have ${cols} columns like heights[0], got ${describe(row)}`);
+    if (row === null || typeof row !== 'object' || row.length !== cols)
+      throw new RangeError(`${where}: heights[${r}] must have ${cols} columns like heights[0], got ${describe(row)}`);
     for (let k = 0; k < cols; k++) {
       const y = row[k];
-      if (typeof y !== 'number' || !Number.isFinite(y)) throw new RangeError(`${where}: heights[${r}][${k}] must be a finite number, got ${describe(y)}`);
+      if (typeof y !== 'number' || !Number.isFinite(y))
+        throw new RangeError(`${where}: heights[${r}][${k}] must be a finite number, got ${describe(y)}`);
       vertices.push([o[0]! + k * options.spacing[0]!, o[1]! + y, o[2]! + r * options.spacing[1]!]);
     }
   }
   for (let r = 0; r + 1 < H.length; r++) {
     for (let k = 0; k + 1 < cols; k++) {
-      const i = r * cols + k, j = i + 1, p = i + cols, q = p + 1;
+      const i = r * cols + k,
+        j = i + 1,
+        p = i + cols,
+        q = p + 1;
       // Counter-clockwise seen from above (+y): x to the right, z towards the viewer.
       triangles.push([i, p, j], [j, p, q]);
     }

@@ -9,14 +9,14 @@
  * while no joint keeps bodies apart (that test looks pairs up in a map the workers do not have).
  */
 
-import type { PhysicsWorld } from '../world.js';
-import { BodyType, PairKind, type CollisionState } from './state.js';
-import { ContactKind, growContactBuffer, type ContactBuffer } from './contacts.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
 import { sharedCopy, sharedLike } from '../threads/pool.js';
+import type { PhysicsWorld } from '../world.js';
 import { shareContactBuffer } from './contact-colors.js';
+import { type ContactBuffer, ContactKind, growContactBuffer } from './contacts.js';
+import { BodyType, type CollisionState, PairKind } from './state.js';
 
 /** Fewest ball-ball pairs a thread for the contacts to be made in parallel. */
 export const CONTACTS_MIN_PER_THREAD = 2048;
@@ -25,7 +25,13 @@ export const CONTACTS_MIN_PER_THREAD = 2048;
 const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'feature'] as const;
 
 /** Each range after the first: its arrays (FIELDS', typed as the buffer's), `cap` rows each; the ranges' counts. */
-interface ContactBuffers { out: KernelArray[][]; counts: Int32Array; arrays: KernelArray[]; params: Float64Array; cap: number }
+interface ContactBuffers {
+  out: KernelArray[][];
+  counts: Int32Array;
+  arrays: KernelArray[];
+  params: Float64Array;
+  cap: number;
+}
 
 const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
 
@@ -43,7 +49,9 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   const kind = cs.pairKind;
   while (m < n && kind[m] === PairKind.BallBall) m++;
   if (m < CONTACTS_MIN_PER_THREAD * pool.threads) return 0;
-  cs.pairA = sharedCopy(cs.pairA); cs.pairB = sharedCopy(cs.pairB); cs.bodyType = sharedCopy(cs.bodyType);
+  cs.pairA = sharedCopy(cs.pairA);
+  cs.pairB = sharedCopy(cs.pairB);
+  cs.bodyType = sharedCopy(cs.bodyType);
   // The first range writes into the buffer itself: room for every pair, on shared memory.
   if (buf.capacity < m) growContactBuffer(buf, m);
   shareContactBuffer(buf);
@@ -59,18 +67,38 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
   const c = world.components;
   const A = B.arrays;
   A.length = 0;
-  A.push(cs.pairA, cs.pairB, c.PreviousPosition.x, c.PreviousPosition.y, c.PreviousPosition.z,
-    c.Velocity.x, c.Velocity.y, c.Velocity.z, c.Ball.radius, cs.bodyType, B.counts);
+  A.push(
+    cs.pairA,
+    cs.pairB,
+    c.PreviousPosition.x,
+    c.PreviousPosition.y,
+    c.PreviousPosition.z,
+    c.Velocity.x,
+    c.Velocity.y,
+    c.Velocity.z,
+    c.Ball.radius,
+    cs.bodyType,
+    B.counts,
+  );
   for (const f of FIELDS) A.push(buf[f]);
   for (let p = 1; p < pool.threads; p++) for (const a of B.out[p - 1]!) A.push(a);
   const P = B.params;
-  P[0] = world.h; P[1] = cs.settings.speculativeDistance; P[2] = BodyType.Static;
-  P[3] = ContactKind.Ball; P[4] = ContactKind.StaticBall; P[5] = B.cap; P[6] = buf.capacity; P[7] = world.dimensions;
+  P[0] = world.h;
+  P[1] = cs.settings.speculativeDistance;
+  P[2] = BodyType.Static;
+  P[3] = ContactKind.Ball;
+  P[4] = ContactKind.StaticBall;
+  P[5] = B.cap;
+  P[6] = buf.capacity;
+  P[7] = world.dimensions;
   B.counts.fill(0);
   if (runOnPool(pool, 'narrowphaseSystem', KERNEL.ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) === null) return 0;
   let total = 0;
   for (let p = 0; p < pool.threads; p++) {
-    if (B.counts[p]! < 0) { buffersOf.delete(cs); return 0; } // too small a buffer: the caller's loop this step
+    if (B.counts[p]! < 0) {
+      buffersOf.delete(cs);
+      return 0;
+    } // too small a buffer: the caller's loop this step
     total += B.counts[p]!;
   }
   // The first range's rows are in place; the others follow in range order (the one-thread order).

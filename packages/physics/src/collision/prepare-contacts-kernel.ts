@@ -23,47 +23,102 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * 7 ContactKind.Boundary. Returns 0.
  */
 export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const CA = A[0] as Int32Array, CB = A[1] as Int32Array, IA = A[2] as Int32Array, IB = A[3] as Int32Array;
-  const K = A[4] as Uint8Array, F = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
-  const RA = A[8] as Float64Array, RB = A[9] as Float64Array, sb = A[10] as Float64Array;
-  const eM = A[11] as Float64Array, fM = A[12] as Float64Array, sM = A[13] as Float64Array, stamp = A[14] as Uint32Array;
-  const NM = A[15] as Float64Array, TM = A[16] as Float64Array, RP = A[17] as Uint8Array;
-  const T1X = A[18] as Float64Array, T1Y = A[19] as Float64Array, T1Z = A[20] as Float64Array;
-  const E = A[21] as Float64Array, MU = A[22] as Float64Array, FB = A[23] as Float64Array, RV = A[24] as Float64Array;
-  const TOT = A[25] as Float64Array, IMP = A[26] as Float64Array, LN = A[27] as Float64Array, L1 = A[28] as Float64Array;
-  const L2 = A[29] as Float64Array, MAXN = A[30] as Float64Array, SA = A[31] as Uint32Array, SB = A[32] as Uint32Array;
-  const pK = A[33] as Uint8Array, pA = A[34] as Int32Array, pB = A[35] as Int32Array, pF = A[36] as Int32Array;
-  const pSA = A[37] as Uint32Array, pSB = A[38] as Uint32Array;
-  const pN = A[39] as Float64Array, p1 = A[40] as Float64Array, p2 = A[41] as Float64Array, slots = A[42] as Int32Array;
-  const stick = P[0]!, boxE = P[1]!, boxF = P[2]!, boxS = P[3]!, prevCount = P[4]!, size = P[5]!;
-  const BALL = P[6]!, BOUNDARY = P[7]!;
+  const CA = A[0] as Int32Array,
+    CB = A[1] as Int32Array,
+    IA = A[2] as Int32Array,
+    IB = A[3] as Int32Array;
+  const K = A[4] as Uint8Array,
+    F = A[5] as Int32Array,
+    NX = A[6] as Float64Array,
+    NY = A[7] as Float64Array;
+  const RA = A[8] as Float64Array,
+    RB = A[9] as Float64Array,
+    sb = A[10] as Float64Array;
+  const eM = A[11] as Float64Array,
+    fM = A[12] as Float64Array,
+    sM = A[13] as Float64Array,
+    stamp = A[14] as Uint32Array;
+  const NM = A[15] as Float64Array,
+    TM = A[16] as Float64Array,
+    RP = A[17] as Uint8Array;
+  const T1X = A[18] as Float64Array,
+    T1Y = A[19] as Float64Array,
+    T1Z = A[20] as Float64Array;
+  const E = A[21] as Float64Array,
+    MU = A[22] as Float64Array,
+    FB = A[23] as Float64Array,
+    RV = A[24] as Float64Array;
+  const TOT = A[25] as Float64Array,
+    IMP = A[26] as Float64Array,
+    LN = A[27] as Float64Array,
+    L1 = A[28] as Float64Array;
+  const L2 = A[29] as Float64Array,
+    MAXN = A[30] as Float64Array,
+    SA = A[31] as Uint32Array,
+    SB = A[32] as Uint32Array;
+  const pK = A[33] as Uint8Array,
+    pA = A[34] as Int32Array,
+    pB = A[35] as Int32Array,
+    pF = A[36] as Int32Array;
+  const pSA = A[37] as Uint32Array,
+    pSB = A[38] as Uint32Array;
+  const pN = A[39] as Float64Array,
+    p1 = A[40] as Float64Array,
+    p2 = A[41] as Float64Array,
+    slots = A[42] as Int32Array;
+  const stick = P[0]!,
+    boxE = P[1]!,
+    boxF = P[2]!,
+    boxS = P[3]!,
+    prevCount = P[4]!,
+    size = P[5]!;
+  const BALL = P[6]!,
+    BOUNDARY = P[7]!;
   const mask = size - 1;
   let next = 0;
   for (let i = lo; i < hi; i++) {
-    const a = CA[i]!, b = CB[i]!, kind = K[i]!, f = F[i]!;
-    const oa = IA[i]! * 8, ob = IB[i]! * 8;
-    const nx = NX[i]!, ny = NY[i]!;
-    const imA = sb[oa + 5]!, imB = sb[ob + 5]!;
-    const iiA = sb[oa + 6]!, iiB = sb[ob + 6]!;
-    const ra = RA[i]!, rb = RB[i]!;
+    const a = CA[i]!,
+      b = CB[i]!,
+      kind = K[i]!,
+      f = F[i]!;
+    const oa = IA[i]! * 8,
+      ob = IB[i]! * 8;
+    const nx = NX[i]!,
+      ny = NY[i]!;
+    const imA = sb[oa + 5]!,
+      imB = sb[ob + 5]!;
+    const iiA = sb[oa + 6]!,
+      iiB = sb[ob + 6]!;
+    const ra = RA[i]!,
+      rb = RB[i]!;
     const k = imA + imB;
     NM[i] = k > 0 ? 1 / k : 0;
     const kt = k + iiA * ra * ra + iiB * rb * rb;
     TM[i] = kt > 0 ? 1 / kt : 0;
     RP[i] = imA === 0 || imB === 0 ? 1 : 0;
-    const t1x = -ny, t1y = nx;
-    T1X[i] = t1x; T1Y[i] = t1y; T1Z[i] = 0;
+    const t1x = -ny,
+      t1y = nx;
+    T1X[i] = t1x;
+    T1Y[i] = t1y;
+    T1Z[i] = 0;
     let e: number, mu: number, mus: number;
     if (kind === BALL) {
-      e = Math.max(eM[a]!, eM[b]!); mu = Math.sqrt(fM[a]! * fM[b]!); mus = Math.sqrt(sM[a]! * sM[b]!);
+      e = Math.max(eM[a]!, eM[b]!);
+      mu = Math.sqrt(fM[a]! * fM[b]!);
+      mus = Math.sqrt(sM[a]! * sM[b]!);
     } else if (kind === BOUNDARY) {
-      e = Math.max(boxE, eM[b]!); mu = Math.sqrt(boxF * fM[b]!); mus = Math.sqrt(boxS * sM[b]!);
+      e = Math.max(boxE, eM[b]!);
+      mu = Math.sqrt(boxF * fM[b]!);
+      mus = Math.sqrt(boxS * sM[b]!);
     } else {
-      e = Math.max(eM[f]!, eM[b]!); mu = Math.sqrt(fM[f]! * fM[b]!); mus = Math.sqrt(sM[f]! * sM[b]!);
+      e = Math.max(eM[f]!, eM[b]!);
+      mu = Math.sqrt(fM[f]! * fM[b]!);
+      mus = Math.sqrt(sM[f]! * sM[b]!);
     }
     E[i] = e;
     MU[i] = mu;
-    const dvx = sb[ob]! - sb[oa]!, dvy = sb[ob + 1]! - sb[oa + 1]!;
+    const dvx = sb[ob]! - sb[oa]!,
+      dvy = sb[ob + 1]! - sb[oa + 1]!;
     const vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + 2]! * rb - sb[oa + 2]! * ra);
     RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + 0;
     TOT[i] = 0;
@@ -91,15 +146,22 @@ export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32
         const r = slots[s]!;
         if (r === 0) break;
         const q = r - 1;
-        if (pK[q] === kind && pA[q] === a && pB[q] === b && pF[q] === f) { j = pSA[q] === sA && pSB[q] === sB ? q : -1; break; }
+        if (pK[q] === kind && pA[q] === a && pB[q] === b && pF[q] === f) {
+          j = pSA[q] === sA && pSB[q] === sB ? q : -1;
+          break;
+        }
         s = (s + 1) & mask;
       }
     }
     if (j >= 0) {
       next = j + 1;
-      LN[i] = pN[j]!; L1[i] = p1[j]!; L2[i] = p2[j]!;
+      LN[i] = pN[j]!;
+      L1[i] = p1[j]!;
+      L2[i] = p2[j]!;
     } else {
-      LN[i] = 0; L1[i] = 0; L2[i] = 0;
+      LN[i] = 0;
+      L1[i] = 0;
+      L2[i] = 0;
     }
   }
   return 0;

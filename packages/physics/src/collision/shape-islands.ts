@@ -33,7 +33,8 @@ export function markShapeSupport(world: PhysicsWorld, supported: Uint32Array, st
   const rows = st.previous; // this step's rows (finishManifolds made them the cache)
   for (let i = 0, n = rows.count; i < n; i++) {
     if (!pushed(rows, i)) continue;
-    supported[rows.bodyA[i]!] = stamp; supported[rows.bodyB[i]!] = stamp;
+    supported[rows.bodyA[i]!] = stamp;
+    supported[rows.bodyB[i]!] = stamp;
   }
 }
 
@@ -41,11 +42,14 @@ export function markShapeSupport(world: PhysicsWorld, supported: Uint32Array, st
 export function joinShapeIslands(world: PhysicsWorld, parent: Int32Array, find: (x: number) => number): void {
   const st = world.collision.shapes;
   if (!st.active) return;
-  const rows = st.previous, type = world.collision.bodyType;
+  const rows = st.previous,
+    type = world.collision.bodyType;
   for (let i = 0, n = rows.count; i < n; i++) {
-    const a = rows.bodyA[i]!, b = rows.bodyB[i]!;
+    const a = rows.bodyA[i]!,
+      b = rows.bodyB[i]!;
     if (a === 0 || type[a] !== BodyType.Dynamic || type[b] !== BodyType.Dynamic || !pushed(rows, i)) continue;
-    const ra = find(a), rb = find(b);
+    const ra = find(a),
+      rb = find(b);
     if (ra !== rb) parent[ra] = rb;
   }
 }

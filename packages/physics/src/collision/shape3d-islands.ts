@@ -1,9 +1,9 @@
 import { hasComponent, removeComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import { Not, query } from '../query.js';
 import { shapes3DOf } from '../shapes3d/store.js';
-import { BodyType } from './state.js';
+import type { PhysicsWorld } from '../world.js';
 import { contact3DStateOf } from './manifolds3d-state.js';
+import { BodyType } from './state.js';
 
 /**
  * Sleeping for 3D shape bodies (used by sleep.ts and shape3d-collision.ts), as for 2D shapes
@@ -55,7 +55,8 @@ export function markShape3DSupport(world: PhysicsWorld, supported: Uint32Array, 
   const b = st.current;
   for (let i = 0, n = b.count; i < n; i++) {
     if (!pushed(b.maxLn, b.points, i)) continue;
-    supported[b.bodyA[i]!] = stamp; supported[b.bodyB[i]!] = stamp;
+    supported[b.bodyA[i]!] = stamp;
+    supported[b.bodyB[i]!] = stamp;
   }
 }
 
@@ -64,11 +65,14 @@ export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const b = st.current, type = world.collision.bodyType;
+  const b = st.current,
+    type = world.collision.bodyType;
   for (let i = 0, n = b.count; i < n; i++) {
-    const a = b.bodyA[i]!, c = b.bodyB[i]!;
+    const a = b.bodyA[i]!,
+      c = b.bodyB[i]!;
     if (a === 0 || c === 0 || type[a] !== BodyType.Dynamic || type[c] !== BodyType.Dynamic || !pushed(b.maxLn, b.points, i)) continue;
-    const ra = find(a), rc = find(c);
+    const ra = find(a),
+      rc = find(c);
     if (ra !== rc) parent[ra] = rc;
   }
 }
@@ -84,7 +88,7 @@ export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find
  */
 export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, gap = -Infinity, closing = 0): boolean {
   if (!(gap <= closing)) return false;
-  return t === BodyType.Kinematic || t === BodyType.Dynamic && world.collision.sleep.restTime[other] === 0;
+  return t === BodyType.Kinematic || (t === BodyType.Dynamic && world.collision.sleep.restTime[other] === 0);
 }
 
 /**
@@ -95,18 +99,27 @@ export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, ga
 export function wakeIsland3D(world: PhysicsWorld, e: number): number {
   const c = world.components;
   if (!hasComponent(world, e, c.Sleeping)) return 0;
-  const id = world.collision.sleep.island[e]!, island = world.collision.sleep.island;
+  const id = world.collision.sleep.island[e]!,
+    island = world.collision.sleep.island;
   const asleep = query(world, [c.Sleeping]);
   let list: number[] | null = null;
   for (let i = 0; i < asleep.length; i++) if (island[asleep[i]!] === id) (list ??= []).push(asleep[i]!);
   if (list === null) return 0;
-  const g = world.gravity, h = world.h, f = 0.5 * h * h;
+  const g = world.gravity,
+    h = world.h,
+    f = 0.5 * h * h;
   for (const b of list) {
     removeComponent(world, b, c.Sleeping);
     world.collision.sleep.restTime[b] = 0;
-    c.Velocity.x[b] = g[0]! * h; c.Velocity.y[b] = g[1]! * h; c.Velocity.z[b] = g[2]! * h;
-    c.PreviousPosition.x[b] = c.Position.x[b]!; c.PreviousPosition.y[b] = c.Position.y[b]!; c.PreviousPosition.z[b] = c.Position.z[b]!;
-    c.Position.x[b] = c.Position.x[b]! + g[0]! * f; c.Position.y[b] = c.Position.y[b]! + g[1]! * f; c.Position.z[b] = c.Position.z[b]! + g[2]! * f;
+    c.Velocity.x[b] = g[0]! * h;
+    c.Velocity.y[b] = g[1]! * h;
+    c.Velocity.z[b] = g[2]! * h;
+    c.PreviousPosition.x[b] = c.Position.x[b]!;
+    c.PreviousPosition.y[b] = c.Position.y[b]!;
+    c.PreviousPosition.z[b] = c.Position.z[b]!;
+    c.Position.x[b] = c.Position.x[b]! + g[0]! * f;
+    c.Position.y[b] = c.Position.y[b]! + g[1]! * f;
+    c.Position.z[b] = c.Position.z[b]! + g[2]! * f;
   }
   return list.length;
 }
@@ -116,9 +129,11 @@ export function wakeTouching3D(world: PhysicsWorld, eid: number): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  const b = st.current, c = world.components;
+  const b = st.current,
+    c = world.components;
   for (let i = 0; i < b.count; i++) {
-    const a = b.bodyA[i]!, d = b.bodyB[i]!;
+    const a = b.bodyA[i]!,
+      d = b.bodyB[i]!;
     if (a !== eid && d !== eid) continue;
     const other = a === eid ? d : a;
     if (other !== 0 && hasComponent(world, other, c.Sleeping)) wakeIsland3D(world, other);

@@ -1,12 +1,12 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { query, Not } from '../query.js';
+import { resolveKind } from '../handles.js';
 import { joinJointIslands, markJointSupport } from '../joints/islands.js';
 import { joinJoint3DIslands, markJoint3DSupport } from '../joints3d/islands.js';
-import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
-import { resolveKind } from '../handles.js';
-import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shape3d-islands.js';
 import { ecsOf } from '../particles/archetype.js';
+import { Not, query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
+import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shape-islands.js';
+import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shape3d-islands.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -34,7 +34,10 @@ export function wakeTag(world: PhysicsWorld, eid: number): void {
 /** Wakes the whole island a sleeping body sleeps in (an awake body: just itself). */
 export function wakeIsland(world: PhysicsWorld, eid: number): void {
   const c = world.components;
-  if (!hasComponent(world, eid, c.Sleeping)) { world.collision.sleep.restTime[eid] = 0; return; }
+  if (!hasComponent(world, eid, c.Sleeping)) {
+    world.collision.sleep.restTime[eid] = 0;
+    return;
+  }
   const id = world.collision.sleep.island[eid]!;
   const asleep = Array.from(query(world, [c.Sleeping]));
   const island = world.collision.sleep.island;
@@ -71,15 +74,26 @@ export function wakeAll(world: PhysicsWorld): void {
  */
 export function wakeSystem(world: PhysicsWorld): void {
   const sl = world.collision.sleep;
-  const g = world.gravity, last = sl.lastGravity;
+  const g = world.gravity,
+    last = sl.lastGravity;
   const gravityChanged = g[0] !== last[0] || g[1] !== last[1] || g[2] !== last[2];
-  last[0] = g[0]!; last[1] = g[1]!; last[2] = g[2]!;
+  last[0] = g[0]!;
+  last[1] = g[1]!;
+  last[2] = g[2]!;
   if (!sl.anyAsleep) return;
-  if (gravityChanged) { wakeAll(world); return; }
+  if (gravityChanged) {
+    wakeAll(world);
+    return;
+  }
   const c = world.components;
   const asleep = query(world, [c.Sleeping, c.Velocity]);
-  if (asleep.length === 0) { sl.anyAsleep = false; return; }
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  if (asleep.length === 0) {
+    sl.anyAsleep = false;
+    return;
+  }
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   let woken: number[] | null = null;
   for (let i = 0; i < asleep.length; i++) {
     const e = asleep[i]!;
@@ -102,20 +116,35 @@ export function sleepSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const sl = cs.sleep;
   const c = world.components;
-  if (!sl.enabled) { cs.stats.sleeping = 0; return; }
-  const bodies = withShape3DBodies(world, withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])));
+  if (!sl.enabled) {
+    cs.stats.sleeping = 0;
+    return;
+  }
+  const bodies = withShape3DBodies(
+    world,
+    withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])),
+  );
   const n = bodies.length;
-  const rest = sl.restTime, parent = sl.parent, islandRest = sl.islandRest;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const lin2 = sl.linearSpeed * sl.linearSpeed, ang2 = sl.angularSpeed * sl.angularSpeed;
+  const rest = sl.restTime,
+    parent = sl.parent,
+    islandRest = sl.islandRest;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const lin2 = sl.linearSpeed * sl.linearSpeed,
+    ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
   const rows = cs.cache.rows;
   // Support: a body rests only while some contact pushed it this step.
-  const stamp = ++sl.stamp, supported = sl.supported;
+  const stamp = ++sl.stamp,
+    supported = sl.supported;
   for (let i = 0; i < rows.count; i++) {
     if (rows.normalImpulse[i]! <= 0) continue;
-    supported[rows.a[i]!] = stamp; supported[rows.b[i]!] = stamp;
+    supported[rows.a[i]!] = stamp;
+    supported[rows.b[i]!] = stamp;
   }
   markJointSupport(world, supported, stamp);
   markJoint3DSupport(world, supported, stamp);
@@ -125,7 +154,8 @@ export function sleepSystem(world: PhysicsWorld): void {
   // its lookups per body): no entry, no body has it.
   const ecs = ecsOf(world);
   const spin = ecs.componentMap.get(c.AngularVelocity);
-  const spinMasks = spin === undefined ? null : ecs.entityMasks[spin.generationId]!, spinBit = spin === undefined ? 0 : spin.bitflag;
+  const spinMasks = spin === undefined ? null : ecs.entityMasks[spin.generationId]!,
+    spinBit = spin === undefined ? 0 : spin.bitflag;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
@@ -141,14 +171,19 @@ export function sleepSystem(world: PhysicsWorld): void {
   const springs = query(world, [c.Spring]);
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    rest[c.Spring.a[s]!] = 0; rest[c.Spring.b[s]!] = 0;
+    rest[c.Spring.a[s]!] = 0;
+    rest[c.Spring.b[s]!] = 0;
   }
   // An island sleeps only when every body in it has rested timeToSleep (its least rest time, below):
   // with no such body there are no sleepers, and the islands need not be found (a pile still settling
   // pays for no union-find). The joints still zero the rest time of the bodies they hold awake.
   const T = sl.timeToSleep;
   let candidates = 0;
-  for (let i = 0; i < n; i++) if (rest[bodies[i]!]! >= T) { candidates++; break; }
+  for (let i = 0; i < n; i++)
+    if (rest[bodies[i]!]! >= T) {
+      candidates++;
+      break;
+    }
   if (candidates === 0) {
     joinJointIslands(world, bodies, rest, parent);
     wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
@@ -157,14 +192,19 @@ export function sleepSystem(world: PhysicsWorld): void {
   }
   // Islands over contacts between dynamic awake bodies that pushed.
   const find = (x: number): number => {
-    while (parent[x] !== x) { parent[x] = parent[parent[x]!]!; x = parent[x]!; }
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]!]!;
+      x = parent[x]!;
+    }
     return x;
   };
   for (let i = 0; i < rows.count; i++) {
     if (rows.kind[i] !== 0 || rows.normalImpulse[i]! <= 0) continue;
-    const a = rows.a[i]!, b = rows.b[i]!;
+    const a = rows.a[i]!,
+      b = rows.b[i]!;
     if (cs.bodyType[a] !== 0 || cs.bodyType[b] !== 0) continue;
-    const ra = find(a), rb = find(b);
+    const ra = find(a),
+      rb = find(b);
     if (ra !== rb) parent[ra] = rb;
   }
   // ... over shape contacts ...
@@ -185,13 +225,22 @@ export function sleepSystem(world: PhysicsWorld): void {
     if (islandRest[find(e)]! >= T) (sleepers ??= []).push(e);
   }
   if (sleepers) {
-    const O = c.PreviousPosition, P = c.Position;
+    const O = c.PreviousPosition,
+      P = c.Position;
     const island = sl.island;
     for (const e of sleepers) {
       island[e] = find(e);
-      vx[e] = 0; vy[e] = 0; vz[e] = 0;
-      if (hasComponent(world, e, c.AngularVelocity)) { wx[e] = 0; wy[e] = 0; wz[e] = 0; }
-      O.x[e] = P.x[e]!; O.y[e] = P.y[e]!; O.z[e] = P.z[e]!;
+      vx[e] = 0;
+      vy[e] = 0;
+      vz[e] = 0;
+      if (hasComponent(world, e, c.AngularVelocity)) {
+        wx[e] = 0;
+        wy[e] = 0;
+        wz[e] = 0;
+      }
+      O.x[e] = P.x[e]!;
+      O.y[e] = P.y[e]!;
+      O.z[e] = P.z[e]!;
       addComponent(world, e, c.Sleeping);
     }
     sl.anyAsleep = true;
@@ -207,11 +256,16 @@ export function wakeTouching(world: PhysicsWorld, eid: number): void {
   const cs = world.collision;
   if (!cs.sleep.anyAsleep) return;
   const c = world.components;
-  if (hasComponent(world, eid, c.Sleeping)) { wakeIsland(world, eid); return; }
+  if (hasComponent(world, eid, c.Sleeping)) {
+    wakeIsland(world, eid);
+    return;
+  }
   wakeTouching3D(world, eid);
   const rows = cs.cache.rows;
   for (let i = 0; i < rows.count; i++) {
-    const a = rows.a[i]!, b = rows.b[i]!, f = rows.feature[i]!;
+    const a = rows.a[i]!,
+      b = rows.b[i]!,
+      f = rows.feature[i]!;
     const touches = a === eid || b === eid || (rows.kind[i] !== 0 && rows.kind[i] !== 1 && f === eid);
     if (!touches) continue;
     for (const other of [a, b]) {

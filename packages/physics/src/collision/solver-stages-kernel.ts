@@ -11,8 +11,8 @@
  * the one-thread world's order (see solver-stages-threads.ts).
  */
 
-import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import type { claimBlock } from '../threads/block-claim.js';
+import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver.ts), one
@@ -24,16 +24,31 @@ import type { claimBlock } from '../threads/block-claim.js';
  * every body counts as pushed), 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
  */
 export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array;
-  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, wz = A[8] as Float64Array;
-  const fx = A[9] as Float64Array, fy = A[10] as Float64Array, fz = A[11] as Float64Array;
-  const type = A[12] as Uint8Array, invMass = A[13] as Float64Array, invInertia = A[14] as Float64Array;
-  const sb = A[15] as Float64Array, ex = A[16] as Float64Array;
-  const h = P[0]!, gx = P[1]!, gy = P[2]!, pushed = P[4]!, DYNAMIC = P[5]!, KINEMATIC = P[6]!;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array;
+  const vx = A[3] as Float64Array,
+    vy = A[4] as Float64Array,
+    wz = A[8] as Float64Array;
+  const fx = A[9] as Float64Array,
+    fy = A[10] as Float64Array,
+    fz = A[11] as Float64Array;
+  const type = A[12] as Uint8Array,
+    invMass = A[13] as Float64Array,
+    invInertia = A[14] as Float64Array;
+  const sb = A[15] as Float64Array,
+    ex = A[16] as Float64Array;
+  const h = P[0]!,
+    gx = P[1]!,
+    gy = P[2]!,
+    pushed = P[4]!,
+    DYNAMIC = P[5]!,
+    KINEMATIC = P[6]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
-    const k = i + 1, e = list[i]!;
-    const o = k * 8, q = k * 6;
+    const k = i + 1,
+      e = list[i]!;
+    const o = k * 8,
+      q = k * 6;
     const ii = invInertia[e]!;
     const dynamic = type[e] === DYNAMIC;
     const spins = type[e] === KINEMATIC;
@@ -41,10 +56,20 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
     // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D, nor their stores here.
-    ex[q] = px[e]! - vx[e]! * h + gx * gb; ex[q + 1] = py[e]! - vy[e]! * h + gy * gb; ex[q + 2] = 0;
-    ex[q + 3] = 0; ex[q + 4] = 0; ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
-    sb[o] = dynamic ? vx[e]! - gx : vx[e]!; sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!; sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + 3] = 0; sb[o + 4] = 0; sb[o + 5] = invMass[e]!; sb[o + 6] = ii; sb[o + 7] = held;
+    ex[q] = px[e]! - vx[e]! * h + gx * gb;
+    ex[q + 1] = py[e]! - vy[e]! * h + gy * gb;
+    ex[q + 2] = 0;
+    ex[q + 3] = 0;
+    ex[q + 4] = 0;
+    ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
+    sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
+    sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
+    sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
+    sb[o + 3] = 0;
+    sb[o + 4] = 0;
+    sb[o + 5] = invMass[e]!;
+    sb[o + 6] = ii;
+    sb[o + 7] = held;
   }
   return 0;
 }
@@ -59,20 +84,39 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
  */
 export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   const b0 = P[4]!;
-  const IA = A[b0] as Int32Array, IB = A[b0 + 1] as Int32Array, CA = A[b0 + 2] as Int32Array, CB = A[b0 + 3] as Int32Array;
-  const NX = A[b0 + 4] as Float64Array, NY = A[b0 + 5] as Float64Array, NZ = A[b0 + 6] as Float64Array;
-  const RV = A[b0 + 7] as Float64Array, IV = A[b0 + 8] as Float64Array, S0 = A[b0 + 9] as Float64Array, IMP = A[b0 + 10] as Float64Array;
-  const type = A[b0 + 11] as Uint8Array, sb = A[b0 + 12] as Float64Array;
-  const gx = P[0]!, gy = P[1]!, gz = P[2]!, DYNAMIC = P[3]!;
+  const IA = A[b0] as Int32Array,
+    IB = A[b0 + 1] as Int32Array,
+    CA = A[b0 + 2] as Int32Array,
+    CB = A[b0 + 3] as Int32Array;
+  const NX = A[b0 + 4] as Float64Array,
+    NY = A[b0 + 5] as Float64Array,
+    NZ = A[b0 + 6] as Float64Array;
+  const RV = A[b0 + 7] as Float64Array,
+    IV = A[b0 + 8] as Float64Array,
+    S0 = A[b0 + 9] as Float64Array,
+    IMP = A[b0 + 10] as Float64Array;
+  const type = A[b0 + 11] as Uint8Array,
+    sb = A[b0 + 12] as Float64Array;
+  const gx = P[0]!,
+    gy = P[1]!,
+    gz = P[2]!,
+    DYNAMIC = P[3]!;
   for (let i = lo; i < hi; i++) {
-    const oa = IA[i]! * 8, ob = IB[i]! * 8;
-    const nx = NX[i]!, ny = NY[i]!, nz = NZ[i]!;
+    const oa = IA[i]! * 8,
+      ob = IB[i]! * 8;
+    const nx = NX[i]!,
+      ny = NY[i]!,
+      nz = NZ[i]!;
     const rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
     RV[i] = rv;
     if (IMP[i]! > 0 && rv >= 0) continue;
     const gap = S0[i]!;
-    if (!(rv < 0 && gap > 0)) { IV[i] = rv; continue; }
-    const a = CA[i]!, b = CB[i]!;
+    if (!(rv < 0 && gap > 0)) {
+      IV[i] = rv;
+      continue;
+    }
+    const a = CA[i]!,
+      b = CB[i]!;
     const an = ((type[b] === DYNAMIC ? 1 : 0) - (a !== 0 && type[a] === DYNAMIC ? 1 : 0)) * (gx * nx + gy * ny + gz * nz);
     const v2 = rv * rv - 2 * an * gap;
     IV[i] = v2 > 0 ? -Math.sqrt(v2) : rv;
@@ -96,7 +140,15 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * gravity (m/s^2), 12 contact rows, 13 solver bodies - 1. Returns the sum of the positions and
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  */
-export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number, H: readonly KernelHelper[]): number {
+export function finishBodies2D(
+  A: KernelArray[],
+  P: Float64Array,
+  ids: Int32Array | null,
+  lo: number,
+  hi: number,
+  part: number,
+  H: readonly KernelHelper[],
+): number {
   // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, threads/kernels.ts): this
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
@@ -108,44 +160,75 @@ export function finishBodies2D(A: KernelArray[], P: Float64Array, ids: Int32Arra
 
 /** finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's. */
 export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
-  const wz = A[4] as Float64Array, angle = A[5] as Float64Array, type = A[6] as Uint8Array;
-  const sb = A[7] as Float64Array, ex = A[8] as Float64Array, imp = A[9] as Float64Array;
-  const fx = P[0]!, fy = P[1]!, DYNAMIC = P[2]!, Q = P[3]!;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const wz = A[4] as Float64Array,
+    angle = A[5] as Float64Array,
+    type = A[6] as Uint8Array;
+  const sb = A[7] as Float64Array,
+    ex = A[8] as Float64Array,
+    imp = A[9] as Float64Array;
+  const fx = P[0]!,
+    fy = P[1]!,
+    DYNAMIC = P[2]!,
+    Q = P[3]!;
   let check = 0;
   for (let i = lo; i < hi; i++) {
-    const k = i + 1, e = list[i]!;
+    const k = i + 1,
+      e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
-    const o = k * 8, r = k * 6;
+    const o = k * 8,
+      r = k * 6;
     const free = sb[o + 7] === 0 ? 1 : 0;
-    vx[e] = sb[o]!; vy[e] = sb[o + 1]!;
-    const x = ex[r]! + sb[o + 3]! + imp[k * Q]! + free * fx, y = ex[r + 1]! + sb[o + 4]! + imp[k * Q + 1]! + free * fy;
-    px[e] = x; py[e] = y;
+    vx[e] = sb[o]!;
+    vy[e] = sb[o + 1]!;
+    const x = ex[r]! + sb[o + 3]! + imp[k * Q]! + free * fx,
+      y = ex[r + 1]! + sb[o + 4]! + imp[k * Q + 1]! + free * fy;
+    px[e] = x;
+    py[e] = y;
     check += x + y + sb[o]! + sb[o + 1]!;
-    if (sb[o + 6]! > 0) { wz[e] = sb[o + 2]!; angle[e] = angle[e]! + ex[r + 5]!; }
+    if (sb[o + 6]! > 0) {
+      wz[e] = sb[o + 2]!;
+      angle[e] = angle[e]! + ex[r + 5]!;
+    }
   }
   return check;
 }
 
 /** finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's). */
 export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
-  const type = A[6] as Uint8Array, radius = A[10] as Float64Array, eM = A[11] as Float64Array;
-  const DYNAMIC = P[2]!, boxE = P[9]!, g0 = P[10]!, g1 = P[11]!;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const type = A[6] as Uint8Array,
+    radius = A[10] as Float64Array,
+    eM = A[11] as Float64Array;
+  const DYNAMIC = P[2]!,
+    boxE = P[9]!,
+    g0 = P[10]!,
+    g1 = P[11]!;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
     const rad = radius[e]!;
     let gain = 0;
     for (let d = 0; d < 2; d++) {
-      const p = d === 0 ? px : py, v = d === 0 ? vx : vy, g = d === 0 ? g0 : g1;
-      const wlo = P[5 + d]! + rad, whi = P[7 + d]! - rad;
+      const p = d === 0 ? px : py,
+        v = d === 0 ? vx : vy,
+        g = d === 0 ? g0 : g1;
+      const wlo = P[5 + d]! + rad,
+        whi = P[7 + d]! - rad;
       const x = p[e]!;
       if (x < wlo && wlo <= whi) {
-        p[e] = wlo; gain -= g * (wlo - x);
+        p[e] = wlo;
+        gain -= g * (wlo - x);
         if (v[e]! < 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
       } else if (x > whi && wlo <= whi) {
-        p[e] = whi; gain -= g * (whi - x);
+        p[e] = whi;
+        gain -= g * (whi - x);
         if (v[e]! > 0) v[e] = -Math.max(boxE, eM[e]!) * v[e]!;
       }
     }
@@ -154,7 +237,8 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
       v2 += vx[e]! * vx[e]!;
       v2 += vy[e]! * vy[e]!;
       const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
-      vx[e] = vx[e]! * f; vy[e] = vy[e]! * f;
+      vx[e] = vx[e]! * f;
+      vy[e] = vy[e]! * f;
     }
   }
 }
@@ -162,12 +246,19 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
 /** finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m. */
 export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[7] as Float64Array;
-  const IA = A[13] as Int32Array, IB = A[14] as Int32Array, S0 = A[15] as Float64Array, NX = A[16] as Float64Array, NY = A[17] as Float64Array;
-  const m = P[12]!, nb = P[13]!;
-  const r0 = Math.floor((m * lo) / nb), r1 = Math.floor((m * hi) / nb);
+  const IA = A[13] as Int32Array,
+    IB = A[14] as Int32Array,
+    S0 = A[15] as Float64Array,
+    NX = A[16] as Float64Array,
+    NY = A[17] as Float64Array;
+  const m = P[12]!,
+    nb = P[13]!;
+  const r0 = Math.floor((m * lo) / nb),
+    r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
   for (let i = r0; i < r1; i++) {
-    const a = IA[i]! * 8 + 3, b = IB[i]! * 8 + 3;
+    const a = IA[i]! * 8 + 3,
+      b = IB[i]! * 8 + 3;
     const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
     if (s < deepest) deepest = s;
   }
@@ -197,20 +288,34 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
  * this one stopped).
  */
-export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, _lo: number, _hi: number, part: number, H: readonly KernelHelper[]): number {
-  const plan = A[1] as Int32Array, bar = A[2] as Int32Array, bounds = A[15] as Int32Array;
-  const n = P[0]!, iterations = P[3]!, spinMs = P[5]! / 1000;
+export function restitutionColored2D(
+  A: KernelArray[],
+  P: Float64Array,
+  _ids: Int32Array | null,
+  _lo: number,
+  _hi: number,
+  part: number,
+  H: readonly KernelHelper[],
+): number {
+  const plan = A[1] as Int32Array,
+    bar = A[2] as Int32Array,
+    bounds = A[15] as Int32Array;
+  const n = P[0]!,
+    iterations = P[3]!,
+    spinMs = P[5]! / 1000;
   const C = plan[4]!;
   const wait = part !== 0 || P[4] === 1;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
   const units = 1 + iterations * (C + 1);
-  let base = 0, failed = false;
+  let base = 0,
+    failed = false;
   // Waits until every block of the units before the current one (`base` blocks) is done; false if
   // another thread failed.
   const earlierDone = (): boolean => {
-    let spins = 0, t0 = -1;
+    let spins = 0,
+      t0 = -1;
     for (;;) {
       const done = Atomics.load(bar, 1);
       if (done >= base) return true;
@@ -224,8 +329,10 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
-  const claim = A[18] as Int32Array, threads = plan[3]! > 0 ? plan[3]! : 1;
-  const claimNext = H[9] as typeof claimBlock, cursor = new Int32Array(2);
+  const claim = A[18] as Int32Array,
+    threads = plan[3]! > 0 ? plan[3]! : 1;
+  const claimNext = H[9] as typeof claimBlock,
+    cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
     const first = c < 0 ? 0 : plan[12 + c]!;
@@ -233,18 +340,30 @@ export function restitutionColored2D(A: KernelArray[], P: Float64Array, _ids: In
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      if (!earlierDone()) { failed = true; break; }
+      if (!earlierDone()) {
+        failed = true;
+        break;
+      }
       if (Atomics.load(bar, 3) === 0) break;
     }
     if (count > 0) {
-      if (!earlierDone()) { failed = true; break; }
-      cursor[0] = 0; cursor[1] = 0;
-      for (let blk = claimNext(claim, base, count, part, threads, cursor); blk >= 0; blk = claimNext(claim, base, count, part, threads, cursor)) {
+      if (!earlierDone()) {
+        failed = true;
+        break;
+      }
+      cursor[0] = 0;
+      cursor[1] = 0;
+      for (
+        let blk = claimNext(claim, base, count, part, threads, cursor);
+        blk >= 0;
+        blk = claimNext(claim, base, count, part, threads, cursor)
+      ) {
         try {
           // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
           // runs once a step, and inline they were compiled on the stack partway through a call.
           if (c < 0) {
-            const lo = blk * FIRST, hi = Math.min(n, lo + FIRST);
+            const lo = blk * FIRST,
+              hi = Math.min(n, lo + FIRST);
             const bouncing = (H[7] as typeof restitutionTargets2D)(A, P, lo, hi);
             if (bouncing > 0) Atomics.add(bar, 3, bouncing);
           } else (H[8] as typeof restitutionRows2D)(A, bounds[first + blk]!, bounds[first + blk + 1]!);
@@ -269,18 +388,31 @@ export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: num
 
 /** restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce. */
 export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
-  const sb = A[3] as Float64Array, IA = A[4] as Int32Array, IB = A[5] as Int32Array, NX = A[6] as Float64Array, NY = A[7] as Float64Array;
-  const NM = A[8] as Float64Array, E = A[9] as Float64Array, RV = A[10] as Float64Array, IV = A[11] as Float64Array;
-  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array;
-  const threshold = P[1]!, elasticThreshold = P[2]!;
+  const sb = A[3] as Float64Array,
+    IA = A[4] as Int32Array,
+    IB = A[5] as Int32Array,
+    NX = A[6] as Float64Array,
+    NY = A[7] as Float64Array;
+  const NM = A[8] as Float64Array,
+    E = A[9] as Float64Array,
+    RV = A[10] as Float64Array,
+    IV = A[11] as Float64Array;
+  const MAXN = A[12] as Float64Array,
+    TOT = A[13] as Float64Array;
+  const threshold = P[1]!,
+    elasticThreshold = P[2]!;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     const e = E[i]!;
-    if (MAXN[i] === 0) { RV[i] = -1; continue; }
+    if (MAXN[i] === 0) {
+      RV[i] = -1;
+      continue;
+    }
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
-      const a = IA[i]! * 8, bb = IB[i]! * 8;
+      const a = IA[i]! * 8,
+        bb = IB[i]! * 8;
       const vn = (sb[bb]! - sb[a]!) * NX[i]! + (sb[bb + 1]! - sb[a + 1]!) * NY[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
@@ -292,16 +424,23 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
 
 /** One block of a restitution pass: pack rows [r0, r1) (A as restitutionColored2D's). */
 export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
-  const pk = A[0] as Float64Array, sb = A[3] as Float64Array, RV = A[10] as Float64Array;
-  const MAXN = A[12] as Float64Array, TOT = A[13] as Float64Array, IMP = A[14] as Float64Array;
-  const pair = A[16] as Int32Array, row = A[17] as Int32Array;
+  const pk = A[0] as Float64Array,
+    sb = A[3] as Float64Array,
+    RV = A[10] as Float64Array;
+  const MAXN = A[12] as Float64Array,
+    TOT = A[13] as Float64Array,
+    IMP = A[14] as Float64Array;
+  const pair = A[16] as Int32Array,
+    row = A[17] as Int32Array;
   for (let k = r0; k < r1; k++) {
     const o = k * 12;
     const i = row[k]!;
     const target = RV[i]!;
     if (target < 0) continue;
-    const a = pair[2 * k]!, bb = pair[2 * k + 1]!;
-    const nx = pk[o]!, ny = pk[o + 1]!;
+    const a = pair[2 * k]!,
+      bb = pair[2 * k + 1]!;
+    const nx = pk[o]!,
+      ny = pk[o + 1]!;
     const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
     const old = MAXN[i]!;
     let acc = old - pk[o + 5]! * (vn - target);
@@ -311,8 +450,11 @@ export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): voi
     if (dl === 0) continue;
     MAXN[i] = acc;
     IMP[i] = IMP[i]! + dl;
-    const ka = sb[a + 5]! * dl, kb = sb[bb + 5]! * dl;
-    sb[a] = sb[a]! - ka * nx; sb[a + 1] = sb[a + 1]! - ka * ny;
-    sb[bb] = sb[bb]! + kb * nx; sb[bb + 1] = sb[bb + 1]! + kb * ny;
+    const ka = sb[a + 5]! * dl,
+      kb = sb[bb + 5]! * dl;
+    sb[a] = sb[a]! - ka * nx;
+    sb[a + 1] = sb[a + 1]! - ka * ny;
+    sb[bb] = sb[bb]! + kb * nx;
+    sb[bb + 1] = sb[bb + 1]! + kb * ny;
   }
 }

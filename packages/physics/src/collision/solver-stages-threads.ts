@@ -27,18 +27,18 @@
  * Otherwise each returns false and solver.ts runs its own loop.
  */
 
-import type { PhysicsWorld } from '../world.js';
-import { reserveWarmStartTable, swapWarmStartRows, type ContactBuffer } from './contacts.js';
-import { BodyType, type CollisionState } from './state.js';
+import { reportNonFinite } from '../errors.js';
+import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedCopy, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
-import { nowMs } from '../threads/adaptive.js';
+import type { PhysicsWorld } from '../world.js';
+import { approachArguments, callerMayWait, coloredPlan, SPIN_MICROSECONDS, shareContactBuffer } from './contact-colors.js';
+import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from './contacts.js';
 import { IMPACT_STRIDE } from './impacts.js';
-import { reportNonFinite } from '../errors.js';
-import { approachArguments, callerMayWait, coloredPlan, shareContactBuffer, SPIN_MICROSECONDS } from './contact-colors.js';
 import { restitutionBlocks2D, restitutionColored2D } from './solver-stages-kernel.js';
+import { BodyType, type CollisionState } from './state.js';
 
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
@@ -53,7 +53,9 @@ export const stageThreading = { minPerThread: 8192, runs: 0, bouncing: 0 };
 
 /** Per world: the kernels' argument lists and parameters, the deepest-overlap slots. */
 interface StageScratch {
-  arrays: KernelArray[]; params: Float64Array; deepest: Float64Array;
+  arrays: KernelArray[];
+  params: Float64Array;
+  deepest: Float64Array;
   /** Whether the last finishOnThreads kept the bodies in the boundary box (containedOnThreads). */
   contained: boolean;
 }
@@ -70,7 +72,9 @@ function scratch(world: PhysicsWorld): StageScratch {
 
 /** Moves the collision state's per-entity arrays the kernels read onto shared memory. */
 function shareState(cs: CollisionState): void {
-  cs.bodyType = sharedCopy(cs.bodyType); cs.invMass = sharedCopy(cs.invMass); cs.invInertia = sharedCopy(cs.invInertia);
+  cs.bodyType = sharedCopy(cs.bodyType);
+  cs.invMass = sharedCopy(cs.invMass);
+  cs.invInertia = sharedCopy(cs.invInertia);
   cs.bodyImpact = sharedCopy(cs.bodyImpact);
 }
 
@@ -104,17 +108,54 @@ function allShared(arrays: readonly KernelArray[]): boolean {
 export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: number): boolean {
   const pool = poolFor(world, count - 1);
   if (pool === null) return false;
-  const cs = world.collision, c = world.components;
+  const cs = world.collision,
+    c = world.components;
   shareState(cs);
-  const s = scratch(world), A = s.arrays, P = s.params;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
   A.length = 0;
-  A.push(c.Position.x, c.Position.y, c.Position.z, c.Velocity.x, c.Velocity.y, c.Velocity.z,
-    c.AngularVelocity.x, c.AngularVelocity.y, c.AngularVelocity.z, c.Force.x, c.Force.y, c.Force.z,
-    cs.bodyType, cs.invMass, cs.invInertia, cs.bodyState, cs.bodyExtra);
+  A.push(
+    c.Position.x,
+    c.Position.y,
+    c.Position.z,
+    c.Velocity.x,
+    c.Velocity.y,
+    c.Velocity.z,
+    c.AngularVelocity.x,
+    c.AngularVelocity.y,
+    c.AngularVelocity.z,
+    c.Force.x,
+    c.Force.y,
+    c.Force.z,
+    cs.bodyType,
+    cs.invMass,
+    cs.invInertia,
+    cs.bodyState,
+    cs.bodyExtra,
+  );
   if (!allShared(A)) return false;
-  const h = world.h, g = world.gravity;
-  P[0] = h; P[1] = g[0]! * h; P[2] = g[1]! * h; P[3] = g[2]! * h; P[4] = pushed; P[5] = BodyType.Dynamic; P[6] = BodyType.Kinematic;
-  return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count), stageThreading.minPerThread));
+  const h = world.h,
+    g = world.gravity;
+  P[0] = h;
+  P[1] = g[0]! * h;
+  P[2] = g[1]! * h;
+  P[3] = g[2]! * h;
+  P[4] = pushed;
+  P[5] = BodyType.Dynamic;
+  P[6] = BodyType.Kinematic;
+  return ran(
+    runOnPool(
+      pool,
+      'contactSolverSystem',
+      KERNEL.gatherFill2D,
+      A,
+      P,
+      count - 1,
+      cs.solverBodies.subarray(1, count),
+      stageThreading.minPerThread,
+    ),
+  );
 }
 
 /**
@@ -129,11 +170,17 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   const cs = world.collision;
   shareContactBuffer(buf);
   shareState(cs);
-  const s = scratch(world), A = s.arrays, P = s.params;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
   A.length = 0;
   approachArguments(cs, buf, A);
   const g = world.gravity;
-  P[0] = g[0]!; P[1] = g[1]!; P[2] = g[2]!; P[3] = BodyType.Dynamic; P[4] = 0;
+  P[0] = g[0]!;
+  P[1] = g[1]!;
+  P[2] = g[2]!;
+  P[3] = BodyType.Dynamic;
+  P[4] = 0;
   return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));
 }
 
@@ -153,10 +200,13 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
   shareContactBuffer(buf);
   pool.join(); // nothing may still be writing the table it replaces
   reserveWarmStartTable(cache, n, true);
-  const s = scratch(world), A = s.arrays, P = s.params;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
   A.length = 0;
   A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
-  P[0] = n; P[1] = cache.size;
+  P[0] = n;
+  P[1] = cache.size;
   pool.start('contactSolverSystem', KERNEL.warmStartTable, A, P, 1);
   stageThreading.runs++;
   return swapWarmStartRows(cache, buf);
@@ -173,25 +223,68 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
  * @throws Error naming contactSolverSystem if a worker thread failed.
  */
 export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
-  const cs = world.collision, count = cs.solverBodyCount;
+  const cs = world.collision,
+    count = cs.solverBodyCount;
   const pool = poolFor(world, count - 1);
   if (pool === null) return false;
   const c = world.components;
   shareState(cs);
   shareContactBuffer(buf);
-  const s = scratch(world), A = s.arrays, P = s.params, out = s.deepest;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params,
+    out = s.deepest;
   out.fill(0);
   A.length = 0;
-  A.push(c.Position.x, c.Position.y, c.Velocity.x, c.Velocity.y, c.AngularVelocity.z, c.Angle.value, cs.bodyType,
-    cs.bodyState, cs.bodyExtra, cs.bodyImpact, c.Ball.radius, c.Material.restitution, out,
-    buf.ia, buf.ib, buf.separation, buf.nx, buf.ny);
+  A.push(
+    c.Position.x,
+    c.Position.y,
+    c.Velocity.x,
+    c.Velocity.y,
+    c.AngularVelocity.z,
+    c.Angle.value,
+    cs.bodyType,
+    cs.bodyState,
+    cs.bodyExtra,
+    cs.bodyImpact,
+    c.Ball.radius,
+    c.Material.restitution,
+    out,
+    buf.ia,
+    buf.ib,
+    buf.separation,
+    buf.nx,
+    buf.ny,
+  );
   if (!allShared(A)) return false;
-  const list = cs.solverBodies, box = cs.boundary;
-  const fh = -0.5 * world.h * world.h / cs.settings.solverSubsteps, g = world.gravity;
-  P[0] = g[0]! * fh; P[1] = g[1]! * fh; P[2] = BodyType.Dynamic; P[3] = IMPACT_STRIDE;
-  P[4] = box.enabled ? 1 : 0; P[5] = box.min[0]!; P[6] = box.min[1]!; P[7] = box.max[0]!; P[8] = box.max[1]!;
-  P[9] = box.restitution; P[10] = g[0]!; P[11] = g[1]!; P[12] = buf.count; P[13] = count - 1;
-  const check = runOnPool(pool, 'contactSolverSystem', KERNEL.finishBodies2D, A, P, count - 1, list.subarray(1, count), stageThreading.minPerThread);
+  const list = cs.solverBodies,
+    box = cs.boundary;
+  const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
+    g = world.gravity;
+  P[0] = g[0]! * fh;
+  P[1] = g[1]! * fh;
+  P[2] = BodyType.Dynamic;
+  P[3] = IMPACT_STRIDE;
+  P[4] = box.enabled ? 1 : 0;
+  P[5] = box.min[0]!;
+  P[6] = box.min[1]!;
+  P[7] = box.max[0]!;
+  P[8] = box.max[1]!;
+  P[9] = box.restitution;
+  P[10] = g[0]!;
+  P[11] = g[1]!;
+  P[12] = buf.count;
+  P[13] = count - 1;
+  const check = runOnPool(
+    pool,
+    'contactSolverSystem',
+    KERNEL.finishBodies2D,
+    A,
+    P,
+    count - 1,
+    list.subarray(1, count),
+    stageThreading.minPerThread,
+  );
   if (!ran(check)) return false;
   s.contained = box.enabled;
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
@@ -221,25 +314,54 @@ export function containedOnThreads(world: PhysicsWorld): boolean {
  * @throws Error naming contactSolverSystem if a worker thread failed.
  */
 export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
-  const cs = world.collision, pool = world.threadPool;
+  const cs = world.collision,
+    pool = world.threadPool;
   const colored = coloredPlan(cs);
   if (pool === null || colored === null || world.dimensions !== 2) return false;
   shareContactBuffer(buf);
   const st = cs.settings;
-  const s = scratch(world), A = s.arrays, P = s.params;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
   const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
   if (colored.claim.length < blocks) colored.claim = sharedLike(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
-  A.push(colored.pack, colored.plan, colored.bar, cs.bodyState, buf.ia, buf.ib, buf.nx, buf.ny, buf.normalMass, buf.restitution,
-    buf.relativeVelocity, buf.impactVelocity, buf.maxNormalImpulse, buf.totalNormalImpulse, buf.impulse, colored.bounds,
-    colored.pair, colored.row, colored.claim);
-  P[0] = buf.count; P[1] = st.restitutionThreshold; P[2] = st.elasticRestitutionThreshold; P[3] = st.restitutionIterations;
-  P[4] = callerMayWait() ? 1 : 0; P[5] = SPIN_MICROSECONDS;
-  const bar = colored.bar, plan = colored.plan;
+  A.push(
+    colored.pack,
+    colored.plan,
+    colored.bar,
+    cs.bodyState,
+    buf.ia,
+    buf.ib,
+    buf.nx,
+    buf.ny,
+    buf.normalMass,
+    buf.restitution,
+    buf.relativeVelocity,
+    buf.impactVelocity,
+    buf.maxNormalImpulse,
+    buf.totalNormalImpulse,
+    buf.impulse,
+    colored.bounds,
+    colored.pair,
+    colored.row,
+    colored.claim,
+  );
+  P[0] = buf.count;
+  P[1] = st.restitutionThreshold;
+  P[2] = st.elasticRestitutionThreshold;
+  P[3] = st.restitutionIterations;
+  P[4] = callerMayWait() ? 1 : 0;
+  P[5] = SPIN_MICROSECONDS;
+  const bar = colored.bar,
+    plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
   const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
-  bar[0] = 0; bar[1] = 0; bar[2] = 0; bar[3] = 0;
+  bar[0] = 0;
+  bar[1] = 0;
+  bar[2] = 0;
+  bar[3] = 0;
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[3] = pool.threads;

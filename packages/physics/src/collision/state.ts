@@ -1,4 +1,4 @@
-import { createContactBuffer, createWarmStartCache, type ContactBuffer, type WarmStartCache } from './contacts.js';
+import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds.js';
 
 /**
@@ -335,9 +335,18 @@ export function createCollisionState(
     wakeList: new Int32Array(64),
     wakeCount: 0,
     sleep: {
-      enabled: options.sleep, linearSpeed: options.dimensions === 3 ? 0.1 : 0.05, angularSpeed: options.dimensions === 3 ? 0.1 : 0.05, timeToSleep: 0.5,
-      restTime: new Float64Array(n), island: new Int32Array(n), parent: new Int32Array(n), islandRest: new Float64Array(n), supported: new Uint32Array(n), stamp: 0,
-      lastGravity: new Float64Array(3), anyAsleep: false,
+      enabled: options.sleep,
+      linearSpeed: options.dimensions === 3 ? 0.1 : 0.05,
+      angularSpeed: options.dimensions === 3 ? 0.1 : 0.05,
+      timeToSleep: 0.5,
+      restTime: new Float64Array(n),
+      island: new Int32Array(n),
+      parent: new Int32Array(n),
+      islandRest: new Float64Array(n),
+      supported: new Uint32Array(n),
+      stamp: 0,
+      lastGravity: new Float64Array(3),
+      anyAsleep: false,
     },
     shapes: createShapeCollisionState(),
     stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
@@ -352,10 +361,18 @@ export function createCollisionState(
 export function allocateCollisionScratch(cs: CollisionState, capacity: number): void {
   const n = capacity + 1;
   if (cs.invMass.length >= n) return;
-  const make = <T extends Float64Array | Int32Array | Uint32Array | Uint8Array>(like: T): T => new (like.constructor as new (x: number) => T)(n);
-  cs.invMass = make(cs.invMass); cs.invInertia = make(cs.invInertia); cs.margin = make(cs.margin);
-  cs.bodyType = make(cs.bodyType); cs.solverMark = make(cs.solverMark); cs.solverIndex = make(cs.solverIndex);
+  const make = <T extends Float64Array | Int32Array | Uint32Array | Uint8Array>(like: T): T =>
+    new (like.constructor as new (x: number) => T)(n);
+  cs.invMass = make(cs.invMass);
+  cs.invInertia = make(cs.invInertia);
+  cs.margin = make(cs.margin);
+  cs.bodyType = make(cs.bodyType);
+  cs.solverMark = make(cs.solverMark);
+  cs.solverIndex = make(cs.solverIndex);
   const sl = cs.sleep;
-  sl.restTime = make(sl.restTime); sl.island = make(sl.island); sl.parent = make(sl.parent);
-  sl.islandRest = make(sl.islandRest); sl.supported = make(sl.supported);
+  sl.restTime = make(sl.restTime);
+  sl.island = make(sl.island);
+  sl.parent = make(sl.parent);
+  sl.islandRest = make(sl.islandRest);
+  sl.supported = make(sl.supported);
 }

@@ -57,7 +57,14 @@ export function holdsLower(speedLower: number, speedUpper: number): boolean {
  * gravity, into out[at] and out[at + 1] (no array made: the solvers ask once a step).
  */
 export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number): void {
-  const gx = g[0]!, gy = g[1]!;
+  const gx = g[0]!,
+    gy = g[1]!;
   const l = Math.sqrt(gx * gx + gy * gy);
-  if (l > 0) { out[at] = gx / l; out[at + 1] = gy / l; } else { out[at] = 0; out[at + 1] = 0; }
+  if (l > 0) {
+    out[at] = gx / l;
+    out[at + 1] = gy / l;
+  } else {
+    out[at] = 0;
+    out[at + 1] = 0;
+  }
 }

@@ -16,8 +16,14 @@ import type { KernelArray } from '../threads/kernel-types.js';
  */
 export function warmStartTable(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
-  const slots = A[0] as Int32Array, kind = A[1] as Uint8Array, CA = A[2] as Int32Array, CB = A[3] as Int32Array, F = A[4] as Int32Array;
-  const n = P[0]!, size = P[1]!, mask = size - 1;
+  const slots = A[0] as Int32Array,
+    kind = A[1] as Uint8Array,
+    CA = A[2] as Int32Array,
+    CB = A[3] as Int32Array,
+    F = A[4] as Int32Array;
+  const n = P[0]!,
+    size = P[1]!,
+    mask = size - 1;
   slots.fill(0, 0, size);
   for (let i = 0; i < n; i++) {
     let h = Math.imul(CA[i]! ^ (kind[i]! << 28), 0x9e3779b1);

@@ -1,9 +1,9 @@
-import { Not, query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
-import { currentSeparation } from '../collision/narrowphase.js';
 import { ballContactHertz, contactLength, solverSubstepsFor } from '../collision/contact-scale.js';
+import { currentSeparation } from '../collision/narrowphase.js';
 import { fieldsAt } from '../forces/electromagnetism.js';
+import { Not, query } from '../query.js';
 import { spinAngularMomentum, spinKineticEnergy } from '../rigid.js';
+import type { PhysicsWorld } from '../world.js';
 
 const spin = new Float64Array(3);
 
@@ -23,7 +23,10 @@ function massive(world: PhysicsWorld) {
  */
 export function kineticEnergy(world: PhysicsWorld): number {
   const c = world.components;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, m = c.Mass.value;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z,
+    m = c.Mass.value;
   let ents = massive(world);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -31,7 +34,10 @@ export function kineticEnergy(world: PhysicsWorld): number {
     sum += m[e]! * (vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!);
   }
   ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z, I = c.Inertia.value;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z,
+    I = c.Inertia.value;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     sum += I[e]! * (wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]!);
@@ -49,9 +55,14 @@ export function kineticEnergy(world: PhysicsWorld): number {
  */
 export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    m = c.Mass.value;
   const g = world.gravity;
-  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const gx = g[0]!,
+    gy = g[1]!,
+    gz = g[2]!;
   let ents = massive(world);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -75,8 +86,12 @@ export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
 export function newtonianPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const L = world.laws;
-  const G = L.gravitationalConstant, eps2 = L.gravitySoftening ** 2;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
+  const G = L.gravitationalConstant,
+    eps2 = L.gravitySoftening ** 2;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    m = c.Mass.value;
   let sum = 0;
   const mutual = query(world, [c.MutualGravity, c.Position, c.Mass, c.Force]);
   for (let i = 0; i < mutual.length; i++) {
@@ -92,7 +107,8 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
     const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
     for (let s = 0; s < sources.length; s++) {
       const a = sources[s]!;
-      const gm = G * c.Attractor.mass[a]!, e2 = c.Attractor.softening[a]! ** 2;
+      const gm = G * c.Attractor.mass[a]!,
+        e2 = c.Attractor.softening[a]! ** 2;
       for (let i = 0; i < bodies.length; i++) {
         const b = bodies[i]!;
         if (b === a) continue;
@@ -108,13 +124,18 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
 export function springPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const S = c.Spring;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
   const springs = query(world, [c.Spring]);
   let sum = 0;
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    const a = S.a[s]!, b = S.b[s]!;
-    const ax = a === 0 ? S.anchorX[s]! : px[a]!, ay = a === 0 ? S.anchorY[s]! : py[a]!, az = a === 0 ? S.anchorZ[s]! : pz[a]!;
+    const a = S.a[s]!,
+      b = S.b[s]!;
+    const ax = a === 0 ? S.anchorX[s]! : px[a]!,
+      ay = a === 0 ? S.anchorY[s]! : py[a]!,
+      az = a === 0 ? S.anchorZ[s]! : pz[a]!;
     const stretch = Math.hypot(px[b]! - ax, py[b]! - ay, pz[b]! - az) - S.restLength[s]!;
     if (S.oneSided[s] === 1 && stretch <= 0) continue;
     sum += 0.5 * S.stiffness[s]! * stretch * stretch;
@@ -122,7 +143,8 @@ export function springPotentialEnergy(world: PhysicsWorld): number {
   return sum;
 }
 
-const E = new Float64Array(3), B = new Float64Array(3);
+const E = new Float64Array(3),
+  B = new Float64Array(3);
 
 /**
  * Electric potential energy, J: k q_i q_j / sqrt(r^2 + eps^2) over charged pairs, plus -q E . x in
@@ -130,8 +152,12 @@ const E = new Float64Array(3), B = new Float64Array(3);
  */
 export function electricPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
-  const K = world.laws.coulombConstant, eps2 = world.laws.electricSoftening ** 2;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, q = c.Charge.value;
+  const K = world.laws.coulombConstant,
+    eps2 = world.laws.electricSoftening ** 2;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    q = c.Charge.value;
   const ents = query(world, [c.Charge, c.Position]);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
@@ -156,22 +182,30 @@ export function electricPotentialEnergy(world: PhysicsWorld): number {
 export function centralPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const C = c.CentralForce;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
   const ents = query(world, [c.CentralForce, c.Position]);
   let sum = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const r = Math.hypot(px[e]! - C.cx[e]!, py[e]! - C.cy[e]!, pz[e]! - C.cz[e]!);
-    const n = C.n[e]!, k = C.k[e]!;
-    sum += n === 0 ? -k * Math.log(r) : (-k * Math.pow(r, n)) / n;
+    const n = C.n[e]!,
+      k = C.k[e]!;
+    sum += n === 0 ? -k * Math.log(r) : (-k * r ** n) / n;
   }
   return sum;
 }
 
 /** Every potential energy the world knows, J: uniform and Newtonian gravity, springs, electric, central. */
 export function potentialEnergy(world: PhysicsWorld): number {
-  return gravitationalPotentialEnergy(world) + newtonianPotentialEnergy(world) + springPotentialEnergy(world) +
-    electricPotentialEnergy(world) + centralPotentialEnergy(world);
+  return (
+    gravitationalPotentialEnergy(world) +
+    newtonianPotentialEnergy(world) +
+    springPotentialEnergy(world) +
+    electricPotentialEnergy(world) +
+    centralPotentialEnergy(world)
+  );
 }
 
 /**
@@ -213,34 +247,59 @@ export function totalEnergy(world: PhysicsWorld): number {
  * sum of m (x - about) x v plus the spin I w of bodies with a scalar moment of inertia. In 2D only
  * out[2] (about z) is nonzero.
  */
-export function angularMomentum(world: PhysicsWorld, about: ArrayLike<number> = [0, 0, 0], out: Float64Array = new Float64Array(3)): Float64Array {
+export function angularMomentum(
+  world: PhysicsWorld,
+  about: ArrayLike<number> = [0, 0, 0],
+  out: Float64Array = new Float64Array(3),
+): Float64Array {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, m = c.Mass.value;
-  const ox = about[0] ?? 0, oy = about[1] ?? 0, oz = about[2] ?? 0;
-  let lx = 0, ly = 0, lz = 0;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z,
+    m = c.Mass.value;
+  const ox = about[0] ?? 0,
+    oy = about[1] ?? 0,
+    oz = about[2] ?? 0;
+  let lx = 0,
+    ly = 0,
+    lz = 0;
   let ents = massive(world);
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const rx = px[e]! - ox, ry = py[e]! - oy, rz = pz[e]! - oz, k = m[e]!;
+    const rx = px[e]! - ox,
+      ry = py[e]! - oy,
+      rz = pz[e]! - oz,
+      k = m[e]!;
     lx += k * (ry * vz[e]! - rz * vy[e]!);
     ly += k * (rz * vx[e]! - rx * vz[e]!);
     lz += k * (rx * vy[e]! - ry * vx[e]!);
   }
   ents = query(world, [c.AngularVelocity, c.Inertia, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic)]);
-  const I = c.Inertia.value, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const I = c.Inertia.value,
+    wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    lx += I[e]! * wx[e]!; ly += I[e]! * wy[e]!; lz += I[e]! * wz[e]!;
+    lx += I[e]! * wx[e]!;
+    ly += I[e]! * wy[e]!;
+    lz += I[e]! * wz[e]!;
   }
   if (world.dimensions === 3) {
     ents = query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic)]);
     for (let i = 0; i < ents.length; i++) {
       spinAngularMomentum(world, ents[i]!, spin);
-      lx += spin[0]!; ly += spin[1]!; lz += spin[2]!;
+      lx += spin[0]!;
+      ly += spin[1]!;
+      lz += spin[2]!;
     }
   }
-  out[0] = world.dimensions === 2 ? 0 : lx; out[1] = world.dimensions === 2 ? 0 : ly; out[2] = lz;
+  out[0] = world.dimensions === 2 ? 0 : lx;
+  out[1] = world.dimensions === 2 ? 0 : ly;
+  out[2] = lz;
   return out;
 }
 
@@ -249,15 +308,24 @@ export function angularMomentum(world: PhysicsWorld, about: ArrayLike<number> = 
  */
 export function linearMomentum(world: PhysicsWorld, out: Float64Array = new Float64Array(3)): Float64Array {
   const c = world.components;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, m = c.Mass.value;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z,
+    m = c.Mass.value;
   const ents = massive(world);
-  let x = 0, y = 0, z = 0;
+  let x = 0,
+    y = 0,
+    z = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const mass = m[e]!;
-    x += mass * vx[e]!; y += mass * vy[e]!; z += mass * vz[e]!;
+    x += mass * vx[e]!;
+    y += mass * vy[e]!;
+    z += mass * vz[e]!;
   }
-  out[0] = x; out[1] = y; out[2] = z;
+  out[0] = x;
+  out[1] = y;
+  out[2] = z;
   return out;
 }
 

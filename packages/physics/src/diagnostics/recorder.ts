@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
 import { assertInteger, assertOptions, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 
 /** A quantity to record: a function of the world returning a number (J, m, kg m/s, ...). */
 export type Quantity = (world: PhysicsWorld) => number;
@@ -51,7 +51,8 @@ export function createRecorder(world: PhysicsWorld, options: RecorderOptions): R
   const cap = options.capacity ?? 10_000;
   assertInteger(where, 'capacity', cap, 2, 100_000_000);
   const data = [new Float64Array(cap), ...names.map(() => new Float64Array(cap))];
-  let head = 0, count = 0;
+  let head = 0,
+    count = 0;
   const ordered = (arr: Float64Array): Float64Array => {
     const out = new Float64Array(count);
     const start = (head - count + cap) % cap;
@@ -59,7 +60,9 @@ export function createRecorder(world: PhysicsWorld, options: RecorderOptions): R
     return out;
   };
   return {
-    get length() { return count; },
+    get length() {
+      return count;
+    },
     names,
     sample(force = false) {
       if (!force && world.steps % every !== 0) return;
@@ -68,13 +71,20 @@ export function createRecorder(world: PhysicsWorld, options: RecorderOptions): R
       head = (head + 1) % cap;
       if (count < cap) count++;
     },
-    columns() { return data.map(ordered); },
+    columns() {
+      return data.map(ordered);
+    },
     series(name: string) {
       const i = names.indexOf(name);
       if (i < 0) throw new RangeError(`Recorder.series: unknown quantity ${JSON.stringify(name)}; recorded: ${names.join(', ')}`);
       return ordered(data[i + 1]!);
     },
-    times() { return ordered(data[0]!); },
-    clear() { head = 0; count = 0; },
+    times() {
+      return ordered(data[0]!);
+    },
+    clear() {
+      head = 0;
+      count = 0;
+    },
   };
 }

@@ -1,11 +1,11 @@
 import { hasComponent } from 'bitecs';
-import { Not, query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
-import type { ForceLaw } from './law.js';
-import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { runParallel } from '../threads/parallel.js';
+import { Not, query } from '../query.js';
 import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
+import type { PhysicsWorld } from '../world.js';
+import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * The largest inverse moment of inertia of body e, 1/(kg m^2), that sets its damping rate k h / I:
@@ -37,26 +37,49 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.AngularDamping, c.AngularVelocity, c.Torque]);
   if (ents.length === 0) return;
-  const k = c.AngularDamping.k, wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z;
+  const k = c.AngularDamping.k,
+    wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const tx = c.Torque.x,
+    ty = c.Torque.y,
+    tz = c.Torque.z;
   const h = world.h;
   const is2D = world.dimensions === 2;
   const ii = c.Inertia.inv;
   // 2D (a scalar moment of inertia) on the world's threads when that pays; null: this thread.
   const par = is2D
-    ? runParallel(world, 'angularDampingSystem', KERNEL.angularDampingScalar, [k, ii, wx, wy, wz, tx, ty, tz], [h, STIFF_RATE], ents.length, ents)
+    ? runParallel(
+        world,
+        'angularDampingSystem',
+        KERNEL.angularDampingScalar,
+        [k, ii, wx, wy, wz, tx, ty, tz],
+        [h, STIFF_RATE],
+        ents.length,
+        ents,
+      )
     : null;
   let stiff = par ?? 0;
-  if (par === null) for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    const d = k[e]!;
-    if (d * (is2D ? ii[e]! : largestInverseInertia(world, e, false)) * h >= STIFF_RATE) { stiff++; continue; }
-    tx[e] = tx[e]! - d * wx[e]!; ty[e] = ty[e]! - d * wy[e]!; tz[e] = tz[e]! - d * wz[e]!;
+  if (par === null)
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const d = k[e]!;
+      if (d * (is2D ? ii[e]! : largestInverseInertia(world, e, false)) * h >= STIFF_RATE) {
+        stiff++;
+        continue;
+      }
+      tx[e] = tx[e]! - d * wx[e]!;
+      ty[e] = ty[e]! - d * wy[e]!;
+      tz[e] = tz[e]! - d * wz[e]!;
+    }
+  if (stiff > 0) {
+    const s = dissipationState(world);
+    s.angularSeen = s.epoch;
   }
-  if (stiff > 0) { const s = dissipationState(world); s.angularSeen = s.epoch; }
 };
 
-const wb = new Float64Array(3), back = new Float64Array(3);
+const wb = new Float64Array(3),
+  back = new Float64Array(3);
 
 /**
  * Integrate stage, after the integrator: the stiff regime of angular damping (see
@@ -72,32 +95,59 @@ export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
   const c = world.components;
   const is2D = world.dimensions === 2;
   const ents = query(world, [
-    c.AngularDamping, c.AngularVelocity, c.Torque, is2D ? c.Angle : c.Orientation,
-    Not(c.Static), Not(c.Kinematic), Not(c.Sleeping),
+    c.AngularDamping,
+    c.AngularVelocity,
+    c.Torque,
+    is2D ? c.Angle : c.Orientation,
+    Not(c.Static),
+    Not(c.Kinematic),
+    Not(c.Sleeping),
   ]);
-  const h = world.h, k = c.AngularDamping.k;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const angle = c.Angle.value, q = c.Orientation, T = c.InertiaTensor;
+  const h = world.h,
+    k = c.AngularDamping.k;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const angle = c.Angle.value,
+    q = c.Orientation,
+    T = c.InertiaTensor;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const d = k[e]!;
     if (d * largestInverseInertia(world, e, is2D) * h < STIFF_RATE) continue;
-    const ox = wx[e]!, oy = wy[e]!, oz = wz[e]!;
+    const ox = wx[e]!,
+      oy = wy[e]!,
+      oz = wz[e]!;
     if (is2D) {
       const nz = oz * linearDecay(d * c.Inertia.inv[e]! * h);
       wz[e] = nz;
       angle[e] = angle[e]! + h * (nz - oz);
       continue;
     }
-    const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+    const qx = q.x[e]!,
+      qy = q.y[e]!,
+      qz = q.z[e]!,
+      qw = q.w[e]!;
     if (hasComponent(world, e, T)) {
       rotateVectorInverse(qx, qy, qz, qw, ox, oy, oz, wb);
-      rotateVector(qx, qy, qz, qw,
-        wb[0]! * linearDecay(d * T.invX[e]! * h), wb[1]! * linearDecay(d * T.invY[e]! * h), wb[2]! * linearDecay(d * T.invZ[e]! * h), back);
-      wx[e] = back[0]!; wy[e] = back[1]!; wz[e] = back[2]!;
+      rotateVector(
+        qx,
+        qy,
+        qz,
+        qw,
+        wb[0]! * linearDecay(d * T.invX[e]! * h),
+        wb[1]! * linearDecay(d * T.invY[e]! * h),
+        wb[2]! * linearDecay(d * T.invZ[e]! * h),
+        back,
+      );
+      wx[e] = back[0]!;
+      wy[e] = back[1]!;
+      wz[e] = back[2]!;
     } else {
       const f = linearDecay(d * c.Inertia.inv[e]! * h);
-      wx[e] = ox * f; wy[e] = oy * f; wz[e] = oz * f;
+      wx[e] = ox * f;
+      wy[e] = oy * f;
+      wz[e] = oz * f;
     }
     rotateInPlace(q.x, q.y, q.z, q.w, e, h * (wx[e]! - ox), h * (wy[e]! - oy), h * (wz[e]! - oz));
   }

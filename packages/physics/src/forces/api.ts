@@ -1,11 +1,18 @@
 import { addComponent, hasComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { addComponentIfMissing } from '../world.js';
 import { createSlot, currentHandle, resolveKind } from '../handles.js';
 import {
-  assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions, assertPositive,
-  assertVector, describe,
+  assertFinite,
+  assertInteger,
+  assertNonNegative,
+  assertOneOf,
+  assertOptionalBoolean,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
 } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { addComponentIfMissing } from '../world.js';
 import { BuoyancyShape } from './fluid.js';
 
 /**
@@ -83,12 +90,18 @@ export interface FieldOptions {
 const FIELD_OPTIONS = ['field', 'amplitude', 'omega', 'phase'] as const;
 
 /** Checks field options without touching the world; returns the vectors as (x, y, z) or null where omitted. */
-function checkField(world: PhysicsWorld, where: string, options: FieldOptions, magnetic: boolean): { f: number[] | null; a: number[] | null } {
+function checkField(
+  world: PhysicsWorld,
+  where: string,
+  options: FieldOptions,
+  magnetic: boolean,
+): { f: number[] | null; a: number[] | null } {
   assertOptions(where, options, FIELD_OPTIONS);
   const read = (name: string, v: ArrayLike<number> | number | undefined): number[] | null => {
     if (v === undefined) return null;
     if (typeof v === 'number') {
-      if (!(magnetic && world.dimensions === 2)) throw new TypeError(`${where}: ${name} must be an array of ${world.dimensions} numbers, got ${describe(v)}`);
+      if (!(magnetic && world.dimensions === 2))
+        throw new TypeError(`${where}: ${name} must be an array of ${world.dimensions} numbers, got ${describe(v)}`);
       assertFinite(where, name, v);
       return [0, 0, v];
     }
@@ -96,20 +109,41 @@ function checkField(world: PhysicsWorld, where: string, options: FieldOptions, m
     assertVector(where, name, v, n);
     return [v[0]!, v[1]!, n === 3 ? v[2]! : 0];
   };
-  const f = read('field', options.field), a = read('amplitude', options.amplitude);
+  const f = read('field', options.field),
+    a = read('amplitude', options.amplitude);
   if (options.omega !== undefined) assertNonNegative(where, 'omega', options.omega);
   if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
   return { f, a };
 }
 
-function writeField(F: PhysicsWorld['components']['ElectricField'], eid: number, options: FieldOptions, f: number[] | null, a: number[] | null): void {
-  if (f) { F.x[eid] = f[0]!; F.y[eid] = f[1]!; F.z[eid] = f[2]!; }
-  if (a) { F.ampX[eid] = a[0]!; F.ampY[eid] = a[1]!; F.ampZ[eid] = a[2]!; }
+function writeField(
+  F: PhysicsWorld['components']['ElectricField'],
+  eid: number,
+  options: FieldOptions,
+  f: number[] | null,
+  a: number[] | null,
+): void {
+  if (f) {
+    F.x[eid] = f[0]!;
+    F.y[eid] = f[1]!;
+    F.z[eid] = f[2]!;
+  }
+  if (a) {
+    F.ampX[eid] = a[0]!;
+    F.ampY[eid] = a[1]!;
+    F.ampZ[eid] = a[2]!;
+  }
   if (options.omega !== undefined) F.omega[eid] = options.omega;
   if (options.phase !== undefined) F.phase[eid] = options.phase;
 }
 
-function fieldEntity(world: PhysicsWorld, where: string, F: PhysicsWorld['components']['ElectricField'], options: FieldOptions, magnetic: boolean): number {
+function fieldEntity(
+  world: PhysicsWorld,
+  where: string,
+  F: PhysicsWorld['components']['ElectricField'],
+  options: FieldOptions,
+  magnetic: boolean,
+): number {
   const { f, a } = checkField(world, where, options, magnetic);
   const eid = createSlot(world, where);
   addComponent(world, eid, F); // the observer zeroes every field
@@ -179,8 +213,11 @@ export function setCentralForce(world: PhysicsWorld, body: number, options: { ce
   const c = world.components;
   addComponentIfMissing(world, eid, c.CentralForce);
   const [x, y, z] = vec3(world, options.centre);
-  c.CentralForce.cx[eid] = x; c.CentralForce.cy[eid] = y; c.CentralForce.cz[eid] = z;
-  c.CentralForce.k[eid] = options.k; c.CentralForce.n[eid] = options.n;
+  c.CentralForce.cx[eid] = x;
+  c.CentralForce.cy[eid] = y;
+  c.CentralForce.cz[eid] = z;
+  c.CentralForce.k[eid] = options.k;
+  c.CentralForce.n[eid] = options.n;
 }
 
 /**
@@ -213,16 +250,23 @@ export function setLift(world: PhysicsWorld, body: number, options: { k: number;
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['k', 'axis']);
   assertNonNegative(where, 'k', options.k);
-  let ax = 0, ay = 0, az = 1;
+  let ax = 0,
+    ay = 0,
+    az = 1;
   if (options.axis !== undefined) {
     assertVector(where, 'axis', options.axis, 3);
     const n = Math.hypot(options.axis[0]!, options.axis[1]!, options.axis[2]!);
     if (!(n > 0)) throw new RangeError(`${where}: axis must not be zero, got ${describe(options.axis)}`);
-    ax = options.axis[0]! / n; ay = options.axis[1]! / n; az = options.axis[2]! / n;
+    ax = options.axis[0]! / n;
+    ay = options.axis[1]! / n;
+    az = options.axis[2]! / n;
   }
   const c = world.components;
   addComponentIfMissing(world, eid, c.Lift);
-  c.Lift.k[eid] = options.k; c.Lift.axisX[eid] = ax; c.Lift.axisY[eid] = ay; c.Lift.axisZ[eid] = az;
+  c.Lift.k[eid] = options.k;
+  c.Lift.axisX[eid] = ax;
+  c.Lift.axisY[eid] = ay;
+  c.Lift.axisZ[eid] = az;
 }
 
 /** Options of `setBuoyancy`: a ball of `radius`, or a box of `halfExtents` (x, y[, z]). */
@@ -256,10 +300,14 @@ export function setBuoyancy(world: PhysicsWorld, body: number, options: Buoyancy
   if (options.dragCoefficient !== undefined) assertNonNegative(where, 'dragCoefficient', options.dragCoefficient);
   addComponentIfMissing(world, eid, B);
   if (options.shape === 'ball') {
-    B.shape[eid] = BuoyancyShape.Ball; B.radius[eid] = options.radius!;
+    B.shape[eid] = BuoyancyShape.Ball;
+    B.radius[eid] = options.radius!;
   } else {
     const h = options.halfExtents!;
-    B.shape[eid] = BuoyancyShape.Box; B.halfX[eid] = h[0]!; B.halfY[eid] = h[1]!; B.halfZ[eid] = world.dimensions === 3 ? h[2]! : 0.5;
+    B.shape[eid] = BuoyancyShape.Box;
+    B.halfX[eid] = h[0]!;
+    B.halfY[eid] = h[1]!;
+    B.halfZ[eid] = world.dimensions === 3 ? h[2]! : 0.5;
   }
   B.dragCoefficient[eid] = options.dragCoefficient ?? 0;
 }
@@ -297,8 +345,14 @@ function writeFluid(world: PhysicsWorld, eid: number, options: FluidRegionOption
   const F = world.components.FluidRegion;
   if (options.surface !== undefined) F.surface[eid] = options.surface;
   if (options.density !== undefined) F.density[eid] = options.density;
-  if (options.xRange) { F.minX[eid] = options.xRange[0]; F.maxX[eid] = options.xRange[1]; }
-  if (options.zRange) { F.minZ[eid] = options.zRange[0]; F.maxZ[eid] = options.zRange[1]; }
+  if (options.xRange) {
+    F.minX[eid] = options.xRange[0];
+    F.maxX[eid] = options.xRange[1];
+  }
+  if (options.zRange) {
+    F.minZ[eid] = options.zRange[0];
+    F.maxZ[eid] = options.zRange[1];
+  }
 }
 
 /**
@@ -381,11 +435,15 @@ export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
   const [ax, ay, az] = a !== 0 ? [P.x[a]!, P.y[a]!, P.z[a]!] : vec3(world, options.anchor!);
   const length = Math.hypot(P.x[b]! - ax, P.y[b]! - ay, P.z[b]! - az);
   const s = createSlot(world, where);
-  for (const e of [a, b]) if (e !== 0 && !hasComponent(world, e, c.Static) && !hasComponent(world, e, c.Kinematic)) addComponentIfMissing(world, e, c.Force);
+  for (const e of [a, b])
+    if (e !== 0 && !hasComponent(world, e, c.Static) && !hasComponent(world, e, c.Kinematic)) addComponentIfMissing(world, e, c.Force);
   addComponent(world, s, c.Spring);
   const S = c.Spring;
-  S.a[s] = a; S.b[s] = b;
-  S.anchorX[s] = ax; S.anchorY[s] = ay; S.anchorZ[s] = az;
+  S.a[s] = a;
+  S.b[s] = b;
+  S.anchorX[s] = ax;
+  S.anchorY[s] = ay;
+  S.anchorZ[s] = az;
   S.stiffness[s] = options.stiffness;
   S.restLength[s] = options.restLength ?? length;
   S.damping[s] = options.damping ?? 0;
@@ -429,13 +487,22 @@ export function setSpring(world: PhysicsWorld, spring: number, options: SpringSe
   if (options.restLength !== undefined) S.restLength[s] = options.restLength;
   if (options.damping !== undefined) S.damping[s] = options.damping;
   if (options.oneSided !== undefined) S.oneSided[s] = options.oneSided ? 1 : 0;
-  if (options.anchor !== undefined) { const [x, y, z] = vec3(world, options.anchor); S.anchorX[s] = x; S.anchorY[s] = y; S.anchorZ[s] = z; }
+  if (options.anchor !== undefined) {
+    const [x, y, z] = vec3(world, options.anchor);
+    S.anchorX[s] = x;
+    S.anchorY[s] = y;
+    S.anchorZ[s] = z;
+  }
 }
 
 /**
  * Periodic driving force F = F0 cos(omega t + phase). @throws TypeError | RangeError on bad values.
  */
-export function setDrivingForce(world: PhysicsWorld, body: number, options: { amplitude: ArrayLike<number>; omega: number; phase?: number }): void {
+export function setDrivingForce(
+  world: PhysicsWorld,
+  body: number,
+  options: { amplitude: ArrayLike<number>; omega: number; phase?: number },
+): void {
   const where = 'setDrivingForce';
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['amplitude', 'omega', 'phase']);
@@ -446,7 +513,11 @@ export function setDrivingForce(world: PhysicsWorld, body: number, options: { am
   addComponentIfMissing(world, eid, c.DrivingForce);
   const [x, y, z] = vec3(world, options.amplitude);
   const D = c.DrivingForce;
-  D.x[eid] = x; D.y[eid] = y; D.z[eid] = z; D.omega[eid] = options.omega; D.phase[eid] = options.phase ?? 0;
+  D.x[eid] = x;
+  D.y[eid] = y;
+  D.z[eid] = z;
+  D.omega[eid] = options.omega;
+  D.phase[eid] = options.phase ?? 0;
 }
 
 /**
@@ -454,7 +525,11 @@ export function setDrivingForce(world: PhysicsWorld, body: number, options: { am
  * `correlationTime` s (> 0). `seed` an integer (default: the world's generator draws one).
  * @throws TypeError | RangeError on bad values.
  */
-export function setRandomForce(world: PhysicsWorld, body: number, options: { magnitude: number; correlationTime: number; seed?: number }): void {
+export function setRandomForce(
+  world: PhysicsWorld,
+  body: number,
+  options: { magnitude: number; correlationTime: number; seed?: number },
+): void {
   const where = 'setRandomForce';
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['magnitude', 'correlationTime', 'seed']);
@@ -474,7 +549,11 @@ export function setRandomForce(world: PhysicsWorld, body: number, options: { mag
  * the fuel and drops as it burns. @throws TypeError | RangeError on bad values, fuel not less than the
  * mass, or a missing or massless body.
  */
-export function setThrust(world: PhysicsWorld, body: number, options: { exhaustVelocity: number; massFlowRate: number; fuel: number; direction: ArrayLike<number> }): void {
+export function setThrust(
+  world: PhysicsWorld,
+  body: number,
+  options: { exhaustVelocity: number; massFlowRate: number; fuel: number; direction: ArrayLike<number> },
+): void {
   const where = 'setThrust';
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
@@ -485,39 +564,59 @@ export function setThrust(world: PhysicsWorld, body: number, options: { exhaustV
   const c = world.components;
   if (!hasComponent(world, eid, c.Mass) || !(c.Mass.value[eid]! > 0)) throw new RangeError(`${where}: entity ${eid} has no positive mass`);
   if (!(options.fuel < c.Mass.value[eid]!)) {
-    throw new RangeError(`${where}: fuel (${options.fuel} kg) must be less than the body's mass (${c.Mass.value[eid]} kg), which includes it`);
+    throw new RangeError(
+      `${where}: fuel (${options.fuel} kg) must be less than the body's mass (${c.Mass.value[eid]} kg), which includes it`,
+    );
   }
   const [x, y, z] = vec3(world, options.direction);
   const n = Math.hypot(x, y, z);
   if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero`);
   addComponentIfMissing(world, eid, c.Thrust);
   const T = c.Thrust;
-  T.exhaustVelocity[eid] = options.exhaustVelocity; T.massFlowRate[eid] = options.massFlowRate; T.fuel[eid] = options.fuel;
-  T.dirX[eid] = x / n; T.dirY[eid] = y / n; T.dirZ[eid] = z / n;
+  T.exhaustVelocity[eid] = options.exhaustVelocity;
+  T.massFlowRate[eid] = options.massFlowRate;
+  T.fuel[eid] = options.fuel;
+  T.dirX[eid] = x / n;
+  T.dirY[eid] = y / n;
+  T.dirZ[eid] = z / n;
 }
 
 /**
  * Gives the body a vortex force F = k r^(n-1) (axis x r_hat) about the axis through `centre`
  * (axis unit 3-vector, default z). @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
  */
-export function setVortex(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> }): void {
+export function setVortex(
+  world: PhysicsWorld,
+  body: number,
+  options: { centre: ArrayLike<number>; k: number; n?: number; axis?: ArrayLike<number> },
+): void {
   const where = 'setVortex';
   const eid = resolveKind(world, body, 'body', where);
   assertOptions(where, options, ['centre', 'k', 'n', 'axis']);
   assertVector(where, 'centre', options.centre, world.dimensions);
   assertFinite(where, 'k', options.k);
   if (options.n !== undefined) assertFinite(where, 'n', options.n);
-  let ax = 0, ay = 0, az = 1;
+  let ax = 0,
+    ay = 0,
+    az = 1;
   if (options.axis !== undefined) {
     assertVector(where, 'axis', options.axis, 3);
     const len = Math.hypot(options.axis[0]!, options.axis[1]!, options.axis[2]!);
     if (!(len > 0)) throw new RangeError(`${where}: axis must not be zero`);
-    ax = options.axis[0]! / len; ay = options.axis[1]! / len; az = options.axis[2]! / len;
+    ax = options.axis[0]! / len;
+    ay = options.axis[1]! / len;
+    az = options.axis[2]! / len;
   }
   const c = world.components;
   addComponentIfMissing(world, eid, c.Vortex);
   const [x, y, z] = vec3(world, options.centre);
   const V = c.Vortex;
-  V.cx[eid] = x; V.cy[eid] = y; V.cz[eid] = z; V.axisX[eid] = ax; V.axisY[eid] = ay; V.axisZ[eid] = az;
-  V.k[eid] = options.k; V.n[eid] = options.n ?? 1;
+  V.cx[eid] = x;
+  V.cy[eid] = y;
+  V.cz[eid] = z;
+  V.axisX[eid] = ax;
+  V.axisY[eid] = ay;
+  V.axisZ[eid] = az;
+  V.k[eid] = options.k;
+  V.n[eid] = options.n ?? 1;
 }

@@ -1,9 +1,9 @@
 import { hasComponent } from 'bitecs';
 import { resolveKind } from '../handles.js';
 import { query } from '../query.js';
+import { assertInRange, assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { assertInRange, assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -44,8 +44,12 @@ export interface BallastOptions {
 }
 
 function pair(where: string, param: string, v: number | readonly [number, number]): [number, number] {
-  if (typeof v === 'number') { assertInRange(where, param, v, 0, 1); return [v, v]; }
-  if (!Array.isArray(v) || v.length !== 2) throw new TypeError(`${where}: ${param} must be a number in [0, 1] or [fore, aft], got ${describe(v)}`);
+  if (typeof v === 'number') {
+    assertInRange(where, param, v, 0, 1);
+    return [v, v];
+  }
+  if (!Array.isArray(v) || v.length !== 2)
+    throw new TypeError(`${where}: ${param} must be a number in [0, 1] or [fore, aft], got ${describe(v)}`);
   assertInRange(where, `${param}[0]`, v[0], 0, 1);
   assertInRange(where, `${param}[1]`, v[1], 0, 1);
   return [v[0]!, v[1]!];
@@ -68,7 +72,8 @@ export function setBallast(world: PhysicsWorld, body: number, options: BallastOp
   const target = options.target === undefined ? fill : pair(where, 'target', options.target);
   const rate = options.rate ?? 0.1;
   assertPositive(where, 'rate', rate);
-  const arm = options.arm ?? 0, gm = options.metacentricHeight ?? 0;
+  const arm = options.arm ?? 0,
+    gm = options.metacentricHeight ?? 0;
   assertNonNegative(where, 'arm', arm);
   assertNonNegative(where, 'metacentricHeight', gm);
   const c = world.components;
@@ -76,11 +81,18 @@ export function setBallast(world: PhysicsWorld, body: number, options: BallastOp
   addComponentIfMissing(world, eid, c.Force);
   addComponentIfMissing(world, eid, c.Mass);
   const B = c.Ballast;
-  B.dryMass[eid] = options.dryMass; B.capacity[eid] = options.capacity;
-  B.fore[eid] = fill[0]; B.aft[eid] = fill[1]; B.foreTarget[eid] = target[0]; B.aftTarget[eid] = target[1];
-  B.rate[eid] = rate; B.arm[eid] = arm; B.metacentricHeight[eid] = gm;
+  B.dryMass[eid] = options.dryMass;
+  B.capacity[eid] = options.capacity;
+  B.fore[eid] = fill[0];
+  B.aft[eid] = fill[1];
+  B.foreTarget[eid] = target[0];
+  B.aftTarget[eid] = target[1];
+  B.rate[eid] = rate;
+  B.arm[eid] = arm;
+  B.metacentricHeight[eid] = gm;
   const m = options.dryMass + options.capacity * (fill[0] + fill[1]);
-  c.Mass.value[eid] = m; c.Mass.inv[eid] = 1 / m;
+  c.Mass.value[eid] = m;
+  c.Mass.inv[eid] = 1 / m;
 }
 
 /**
@@ -91,7 +103,8 @@ export function setBallast(world: PhysicsWorld, body: number, options: BallastOp
 export function setBallastTarget(world: PhysicsWorld, body: number, fore: number, aft: number = fore): void {
   const where = 'setBallastTarget';
   const eid = dynamicBody(where, world, body);
-  if (!hasComponent(world, eid, world.components.Ballast)) throw new RangeError(`${where}: entity ${eid} has no ballast (call setBallast first)`);
+  if (!hasComponent(world, eid, world.components.Ballast))
+    throw new RangeError(`${where}: entity ${eid} has no ballast (call setBallast first)`);
   assertInRange(where, 'fore', fore, 0, 1);
   assertInRange(where, 'aft', aft, 0, 1);
   world.components.Ballast.foreTarget[eid] = fore;
@@ -111,13 +124,19 @@ export const ballastTrimSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.Ballast, c.Angle, c.Torque, c.Mass]);
   if (ents.length === 0) return;
-  const B = c.Ballast, angle = c.Angle.value, tz = c.Torque.z, m = c.Mass.value;
-  const gx = world.gravity[0]!, gy = world.gravity[1]!;
+  const B = c.Ballast,
+    angle = c.Angle.value,
+    tz = c.Torque.z,
+    m = c.Mass.value;
+  const gx = world.gravity[0]!,
+    gy = world.gravity[1]!;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const arm = B.arm[e]!, gm = B.metacentricHeight[e]!;
+    const arm = B.arm[e]!,
+      gm = B.metacentricHeight[e]!;
     if (arm === 0 && gm === 0) continue;
-    const s = Math.sin(angle[e]!), co = Math.cos(angle[e]!);
+    const s = Math.sin(angle[e]!),
+      co = Math.cos(angle[e]!);
     const dm = B.capacity[e]! * (B.fore[e]! - B.aft[e]!);
     tz[e] = tz[e]! + arm * dm * (co * gy - s * gx) + m[e]! * gm * (s * gy + co * gx);
   }
@@ -134,18 +153,23 @@ export function ballastFillSystem(world: PhysicsWorld): void {
   const c = world.components;
   const ents = query(world, [c.Ballast, c.Mass]);
   if (ents.length === 0) return;
-  const B = c.Ballast, M = c.Mass;
+  const B = c.Ballast,
+    M = c.Mass;
   const h = world.h;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const step = B.rate[e]! * h;
-    const f = B.fore[e]!, a = B.aft[e]!;
-    const df = B.foreTarget[e]! - f, da = B.aftTarget[e]! - a;
+    const f = B.fore[e]!,
+      a = B.aft[e]!;
+    const df = B.foreTarget[e]! - f,
+      da = B.aftTarget[e]! - a;
     const nf = f + (df > step ? step : df < -step ? -step : df);
     const na = a + (da > step ? step : da < -step ? -step : da);
     if (nf === f && na === a) continue;
-    B.fore[e] = nf; B.aft[e] = na;
+    B.fore[e] = nf;
+    B.aft[e] = na;
     const mass = B.dryMass[e]! + B.capacity[e]! * (nf + na);
-    M.value[e] = mass; M.inv[e] = 1 / mass;
+    M.value[e] = mass;
+    M.inv[e] = 1 / mass;
   }
 }

@@ -1,9 +1,9 @@
 import { hasComponent } from 'bitecs';
 import { resolveKind } from '../handles.js';
 import { query } from '../query.js';
+import { assertVector } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { assertVector } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -16,11 +16,14 @@ export function setBodyThrust(world: PhysicsWorld, body: number, force: ArrayLik
   const where = 'setBodyThrust';
   const c = world.components;
   const eid = resolveKind(world, body, 'body', where);
-  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic)) throw new RangeError(`${where}: entity ${body} is static or kinematic`);
+  if (hasComponent(world, eid, c.Static) || hasComponent(world, eid, c.Kinematic))
+    throw new RangeError(`${where}: entity ${body} is static or kinematic`);
   assertVector(where, 'force', force, world.dimensions);
   addComponentIfMissing(world, eid, c.BodyThrust);
   addComponentIfMissing(world, eid, c.Force);
-  c.BodyThrust.x[eid] = force[0]!; c.BodyThrust.y[eid] = force[1]!; c.BodyThrust.z[eid] = world.dimensions === 3 ? force[2]! : 0;
+  c.BodyThrust.x[eid] = force[0]!;
+  c.BodyThrust.y[eid] = force[1]!;
+  c.BodyThrust.z[eid] = world.dimensions === 3 ? force[2]! : 0;
 }
 
 /**
@@ -33,25 +36,44 @@ export const bodyThrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.BodyThrust, c.Force]);
   if (ents.length === 0) return;
-  const T = c.BodyThrust, fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const T = c.BodyThrust,
+    fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   if (world.dimensions === 2) {
     const angle = c.Angle.value;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const a = hasComponent(world, e, c.Angle) ? angle[e]! : 0;
-      const co = Math.cos(a), s = Math.sin(a), x = T.x[e]!, y = T.y[e]!;
-      fx[e] = fx[e]! + x * co - y * s; fy[e] = fy[e]! + x * s + y * co;
+      const co = Math.cos(a),
+        s = Math.sin(a),
+        x = T.x[e]!,
+        y = T.y[e]!;
+      fx[e] = fx[e]! + x * co - y * s;
+      fy[e] = fy[e]! + x * s + y * co;
     }
     return;
   }
   const O = c.Orientation;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const vx = T.x[e]!, vy = T.y[e]!, vz = T.z[e]!;
-    if (!hasComponent(world, e, O)) { fx[e] = fx[e]! + vx; fy[e] = fy[e]! + vy; fz[e] = fz[e]! + vz; continue; }
-    const qx = O.x[e]!, qy = O.y[e]!, qz = O.z[e]!, qw = O.w[e]!;
+    const vx = T.x[e]!,
+      vy = T.y[e]!,
+      vz = T.z[e]!;
+    if (!hasComponent(world, e, O)) {
+      fx[e] = fx[e]! + vx;
+      fy[e] = fy[e]! + vy;
+      fz[e] = fz[e]! + vz;
+      continue;
+    }
+    const qx = O.x[e]!,
+      qy = O.y[e]!,
+      qz = O.z[e]!,
+      qw = O.w[e]!;
     // v' = v + 2 w (u x v) + 2 u x (u x v), u = (qx, qy, qz).
-    const tx = 2 * (qy * vz - qz * vy), ty = 2 * (qz * vx - qx * vz), tz = 2 * (qx * vy - qy * vx);
+    const tx = 2 * (qy * vz - qz * vy),
+      ty = 2 * (qz * vx - qx * vz),
+      tz = 2 * (qx * vy - qy * vx);
     fx[e] = fx[e]! + vx + qw * tx + (qy * tz - qz * ty);
     fy[e] = fy[e]! + vy + qw * ty + (qz * tx - qx * tz);
     fz[e] = fz[e]! + vz + qw * tz + (qx * ty - qy * tx);

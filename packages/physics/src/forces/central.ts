@@ -1,8 +1,8 @@
 import { query } from '../query.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
-import { runParallel } from '../threads/parallel.js';
-import { KERNEL } from '../threads/kernels.js';
 
 const NO_PARAMS: number[] = [];
 
@@ -16,18 +16,37 @@ export const centralForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.CentralForce, c.Position, c.Force]);
   if (ents.length === 0) return;
   const C = c.CentralForce;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   // On the world's threads when that pays (threads/kernels.ts centralForce: the same arithmetic).
-  if (runParallel(world, 'centralForceSystem', KERNEL.centralForce, [C.cx, C.cy, C.cz, C.k, C.n, px, py, pz, fx, fy, fz], NO_PARAMS, ents.length, ents) !== null) return;
+  if (
+    runParallel(
+      world,
+      'centralForceSystem',
+      KERNEL.centralForce,
+      [C.cx, C.cy, C.cz, C.k, C.n, px, py, pz, fx, fy, fz],
+      NO_PARAMS,
+      ents.length,
+      ents,
+    ) !== null
+  )
+    return;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const dx = px[e]! - C.cx[e]!, dy = py[e]! - C.cy[e]!, dz = pz[e]! - C.cz[e]!;
+    const dx = px[e]! - C.cx[e]!,
+      dy = py[e]! - C.cy[e]!,
+      dz = pz[e]! - C.cz[e]!;
     const r2 = dx * dx + dy * dy + dz * dz;
     if (r2 === 0) continue;
     const n = C.n[e]!;
-    const k = C.k[e]! * (n === 2 ? 1 : Math.pow(r2, 0.5 * (n - 2)));
-    fx[e] = fx[e]! + k * dx; fy[e] = fy[e]! + k * dy; fz[e] = fz[e]! + k * dz;
+    const k = C.k[e]! * (n === 2 ? 1 : r2 ** (0.5 * (n - 2)));
+    fx[e] = fx[e]! + k * dx;
+    fy[e] = fy[e]! + k * dy;
+    fz[e] = fz[e]! + k * dz;
   }
 };
 centralForceSystem.velocityDependent = false;

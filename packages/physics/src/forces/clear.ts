@@ -1,6 +1,6 @@
+import { fusedForcesOn } from '../integrators/fused-state.js';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import { fusedForcesOn } from '../integrators/fused-state.js';
 
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of
@@ -10,16 +10,34 @@ import { fusedForcesOn } from '../integrators/fused-state.js';
  */
 export function clearForcesSystem(world: PhysicsWorld): void {
   const { Force, Torque } = world.components;
-  const fx = Force.x, fy = Force.y, fz = Force.z;
+  const fx = Force.x,
+    fy = Force.y,
+    fz = Force.z;
   if (!fusedForcesOn(world)) {
     const ents = query(world, [Force]);
     if (world.dimensions === 2) {
-      for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; }
+      for (let i = 0; i < ents.length; i++) {
+        const e = ents[i]!;
+        fx[e] = 0;
+        fy[e] = 0;
+      }
     } else {
-      for (let i = 0; i < ents.length; i++) { const e = ents[i]!; fx[e] = 0; fy[e] = 0; fz[e] = 0; }
+      for (let i = 0; i < ents.length; i++) {
+        const e = ents[i]!;
+        fx[e] = 0;
+        fy[e] = 0;
+        fz[e] = 0;
+      }
     }
   }
   const ents = query(world, [Torque]);
-  const tx = Torque.x, ty = Torque.y, tz = Torque.z;
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; tx[e] = 0; ty[e] = 0; tz[e] = 0; }
+  const tx = Torque.x,
+    ty = Torque.y,
+    tz = Torque.z;
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    tx[e] = 0;
+    ty[e] = 0;
+    tz[e] = 0;
+  }
 }

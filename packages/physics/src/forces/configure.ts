@@ -2,11 +2,12 @@
  * The functions that change a world's force-law settings (gravitation, electrostatics, wind) and
  * evaluate the wind; the settings themselves are data in settings.ts.
  */
-import type { PhysicsWorld } from '../world.js';
-import { assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptions, assertPositive, assertVector } from '../validate.js';
-import { Rng } from '../rng.js';
+
 import { cosine } from '../math/cosine.js';
-import { MAX_WIND_MODES, type GravityMethod } from './settings.js';
+import { Rng } from '../rng.js';
+import { assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptions, assertPositive, assertVector } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { type GravityMethod, MAX_WIND_MODES } from './settings.js';
 
 /** Options of `setGravitation`. */
 export interface GravitationOptions {
@@ -91,7 +92,12 @@ export function setWind(world: PhysicsWorld, options: WindOptions): void {
     assertInteger(where, 'turbulence.modes', t.modes ?? 16, 1, MAX_WIND_MODES);
   }
   const w = world.laws.wind;
-  w.velocity.fill(0); w.gust.fill(0); w.gustOmega = 0; w.gustPhase = 0; w.modes = 0; w.intensity = 0;
+  w.velocity.fill(0);
+  w.gust.fill(0);
+  w.gustOmega = 0;
+  w.gustPhase = 0;
+  w.modes = 0;
+  w.intensity = 0;
   if (options.velocity !== undefined) for (let i = 0; i < d; i++) w.velocity[i] = options.velocity[i]!;
   if (options.gust !== undefined) for (let i = 0; i < d; i++) w.gust[i] = options.gust[i]!;
   if (options.gustOmega !== undefined) w.gustOmega = options.gustOmega;
@@ -105,24 +111,48 @@ export function setWind(world: PhysicsWorld, options: WindOptions): void {
     for (let m = 0; m < modes; m++) {
       // Random direction (in the plane for 2D), wavelength log-uniform in [L/2, 2L].
       let kx: number, ky: number, kz: number;
-      if (d === 2) { const a = rng.range(0, 2 * Math.PI); kx = Math.cos(a); ky = Math.sin(a); kz = 0; }
-      else { const zc = rng.range(-1, 1), a = rng.range(0, 2 * Math.PI), r = Math.sqrt(1 - zc * zc); kx = r * Math.cos(a); ky = r * Math.sin(a); kz = zc; }
-      const wavelength = t.lengthScale * Math.pow(2, rng.range(-1, 1));
+      if (d === 2) {
+        const a = rng.range(0, 2 * Math.PI);
+        kx = Math.cos(a);
+        ky = Math.sin(a);
+        kz = 0;
+      } else {
+        const zc = rng.range(-1, 1),
+          a = rng.range(0, 2 * Math.PI),
+          r = Math.sqrt(1 - zc * zc);
+        kx = r * Math.cos(a);
+        ky = r * Math.sin(a);
+        kz = zc;
+      }
+      const wavelength = t.lengthScale * 2 ** rng.range(-1, 1);
       const kmag = (2 * Math.PI) / wavelength;
       // Amplitude direction perpendicular to k (divergence-free field).
       let ax: number, ay: number, az: number;
-      if (d === 2) { ax = -ky; ay = kx; az = 0; }
-      else {
-        const px = rng.normal(), py = rng.normal(), pz = rng.normal();
-        ax = py * kz - pz * ky; ay = pz * kx - px * kz; az = px * ky - py * kx;
+      if (d === 2) {
+        ax = -ky;
+        ay = kx;
+        az = 0;
+      } else {
+        const px = rng.normal(),
+          py = rng.normal(),
+          pz = rng.normal();
+        ax = py * kz - pz * ky;
+        ay = pz * kx - px * kz;
+        az = px * ky - py * kx;
         const n = Math.hypot(ax, ay, az) || 1;
-        ax /= n; ay /= n; az /= n;
+        ax /= n;
+        ay /= n;
+        az /= n;
       }
       const o = m * 8;
-      data[o] = kx * kmag; data[o + 1] = ky * kmag; data[o + 2] = kz * kmag;
-      data[o + 3] = (1 / t.timeScale) * Math.pow(2, rng.range(-1, 1));
+      data[o] = kx * kmag;
+      data[o + 1] = ky * kmag;
+      data[o + 2] = kz * kmag;
+      data[o + 3] = (1 / t.timeScale) * 2 ** rng.range(-1, 1);
       data[o + 4] = rng.range(0, 2 * Math.PI);
-      data[o + 5] = ax; data[o + 6] = ay; data[o + 7] = az;
+      data[o + 5] = ax;
+      data[o + 6] = ay;
+      data[o + 7] = az;
     }
   }
 }
@@ -147,8 +177,12 @@ export function windAt(world: PhysicsWorld, x: number, y: number, z: number, t: 
     for (let m = 0; m < modes; m++) {
       const o = m * 8;
       const c = amp * cosine(data[o]! * x + data[o + 1]! * y + data[o + 2]! * z - data[o + 3]! * t + data[o + 4]!);
-      u += c * data[o + 5]!; v += c * data[o + 6]!; s += c * data[o + 7]!;
+      u += c * data[o + 5]!;
+      v += c * data[o + 6]!;
+      s += c * data[o + 7]!;
     }
   }
-  out[0] = u; out[1] = v; out[2] = s;
+  out[0] = u;
+  out[1] = v;
+  out[2] = s;
 }

@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Stiff dissipation: how drag and damping stay stable at every step size.
@@ -74,7 +74,11 @@ export interface DissipationState {
 
 const states = new WeakMap<PhysicsWorld, DissipationState>();
 registerExternalWorldState({
-  name: 'dissipation', get: (world, create) => states.get(world) ?? (create ? dissipationState(world) : undefined), clear: (world) => { states.delete(world); },
+  name: 'dissipation',
+  get: (world, create) => states.get(world) ?? (create ? dissipationState(world) : undefined),
+  clear: (world) => {
+    states.delete(world);
+  },
 });
 
 /**
@@ -85,10 +89,18 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
   let s = states.get(world);
   if (!s) {
     s = {
-      epoch: 1, keyStep: world.steps, keyTime: world.substepStart,
-      quadraticStamp: new Float64Array(0), fluidStamp: new Float64Array(0),
-      quadraticK: new Float64Array(0), fluidK: new Float64Array(0),
-      linearSeen: 0, quadraticSeen: 0, fluidSeen: 0, angularSeen: 0, springSeen: 0,
+      epoch: 1,
+      keyStep: world.steps,
+      keyTime: world.substepStart,
+      quadraticStamp: new Float64Array(0),
+      fluidStamp: new Float64Array(0),
+      quadraticK: new Float64Array(0),
+      fluidK: new Float64Array(0),
+      linearSeen: 0,
+      quadraticSeen: 0,
+      fluidSeen: 0,
+      angularSeen: 0,
+      springSeen: 0,
     };
     states.set(world, s);
     return s;
@@ -109,8 +121,10 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
 export function allocateStiffStamps(world: PhysicsWorld, st: DissipationState): void {
   const n = world.capacity + 1;
   if (st.quadraticStamp.length >= n) return;
-  st.quadraticStamp = new Float64Array(n); st.fluidStamp = new Float64Array(n);
-  st.quadraticK = new Float64Array(n); st.fluidK = new Float64Array(n);
+  st.quadraticStamp = new Float64Array(n);
+  st.fluidStamp = new Float64Array(n);
+  st.quadraticK = new Float64Array(n);
+  st.fluidK = new Float64Array(n);
 }
 
 /**

@@ -1,20 +1,27 @@
-import { Not, query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
-import type { ForceLaw } from './law.js';
-import { windAt } from './configure.js';
 import { reportNonFinite } from '../errors.js';
-import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
-import { runParallel } from '../threads/parallel.js';
-import { KERNEL } from '../threads/kernels.js';
 import { fusedForcesOn } from '../integrators/fused-state.js';
+import { Not, query } from '../query.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
+import type { PhysicsWorld } from '../world.js';
+import { windAt } from './configure.js';
+import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import type { ForceLaw } from './law.js';
 
 const wind = new Float64Array(3);
 
 /** Whether the world's wind is still air everywhere (then drag uses the body's own velocity). */
 export function calmAir(world: PhysicsWorld): boolean {
   const w = world.laws.wind;
-  return w.modes === 0 && w.velocity[0] === 0 && w.velocity[1] === 0 && w.velocity[2] === 0 &&
-    w.gust[0] === 0 && w.gust[1] === 0 && w.gust[2] === 0;
+  return (
+    w.modes === 0 &&
+    w.velocity[0] === 0 &&
+    w.velocity[1] === 0 &&
+    w.velocity[2] === 0 &&
+    w.gust[0] === 0 &&
+    w.gust[1] === 0 &&
+    w.gust[2] === 0
+  );
 }
 
 /**
@@ -34,8 +41,14 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   const { LinearDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [LinearDrag, Velocity, Force]);
   if (ents.length === 0) return;
-  const k = LinearDrag.k, inv = Mass.inv, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
-  const fx = Force.x, fy = Force.y, fz = Force.z;
+  const k = LinearDrag.k,
+    inv = Mass.inv,
+    vx = Velocity.x,
+    vy = Velocity.y,
+    vz = Velocity.z;
+  const fx = Force.x,
+    fy = Force.y,
+    fz = Force.z;
   // Stiff when k h / m >= STIFF_RATE, i.e. k / m >= limit.
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
@@ -48,20 +61,36 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const c = k[e]!;
-      if (c * inv[e]! >= limit) { stiff++; continue; }
-      fx[e] = fx[e]! - c * vx[e]!; fy[e] = fy[e]! - c * vy[e]!; fz[e] = fz[e]! - c * vz[e]!;
+      if (c * inv[e]! >= limit) {
+        stiff++;
+        continue;
+      }
+      fx[e] = fx[e]! - c * vx[e]!;
+      fy[e] = fy[e]! - c * vy[e]!;
+      fz[e] = fz[e]! - c * vz[e]!;
     }
   } else {
-    const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
+    const t = world.time,
+      px = Position.x,
+      py = Position.y,
+      pz = Position.z;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const c = k[e]!;
-      if (c * inv[e]! >= limit) { stiff++; continue; }
+      if (c * inv[e]! >= limit) {
+        stiff++;
+        continue;
+      }
       windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-      fx[e] = fx[e]! - c * (vx[e]! - wind[0]!); fy[e] = fy[e]! - c * (vy[e]! - wind[1]!); fz[e] = fz[e]! - c * (vz[e]! - wind[2]!);
+      fx[e] = fx[e]! - c * (vx[e]! - wind[0]!);
+      fy[e] = fy[e]! - c * (vy[e]! - wind[1]!);
+      fz[e] = fz[e]! - c * (vz[e]! - wind[2]!);
     }
   }
-  if (stiff > 0) { const s = dissipationState(world); s.linearSeen = s.epoch; }
+  if (stiff > 0) {
+    const s = dissipationState(world);
+    s.linearSeen = s.epoch;
+  }
 };
 
 /**
@@ -80,17 +109,33 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   const { QuadraticDrag, Velocity, Force, Position, Mass } = world.components;
   const ents = query(world, [QuadraticDrag, Velocity, Force]);
   if (ents.length === 0) return;
-  const k = QuadraticDrag.k, inv = Mass.inv, vx = Velocity.x, vy = Velocity.y, vz = Velocity.z;
-  const fx = Force.x, fy = Force.y, fz = Force.z;
+  const k = QuadraticDrag.k,
+    inv = Mass.inv,
+    vx = Velocity.x,
+    vy = Velocity.y,
+    vz = Velocity.z;
+  const fx = Force.x,
+    fy = Force.y,
+    fz = Force.z;
   const limit = STIFF_RATE / world.h;
   if (calmAir(world)) {
-    const stiff = runParallel(world, 'quadraticDragSystem', KERNEL.quadraticDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents);
+    const stiff = runParallel(
+      world,
+      'quadraticDragSystem',
+      KERNEL.quadraticDragCalm,
+      [k, inv, vx, vy, vz, fx, fy, fz],
+      [limit],
+      ents.length,
+      ents,
+    );
     if (stiff !== null) {
       // The threads added the force of every body that is not stiff; stamp the stiff ones here.
       if (stiff > 0) {
         for (let i = 0; i < ents.length; i++) {
           const e = ents[i]!;
-          const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+          const x = vx[e]!,
+            y = vy[e]!,
+            z = vz[e]!;
           if (k[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! >= limit) markStiffQuadratic(world, e, k[e]!);
         }
       }
@@ -98,22 +143,39 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
     }
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
-      const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+      const x = vx[e]!,
+        y = vy[e]!,
+        z = vz[e]!;
       const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
       // Stiff at this state: no force; stamped for the exact update after the integrator.
-      if (c * inv[e]! >= limit) { markStiffQuadratic(world, e, k[e]!); continue; }
-      fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+      if (c * inv[e]! >= limit) {
+        markStiffQuadratic(world, e, k[e]!);
+        continue;
+      }
+      fx[e] = fx[e]! - c * x;
+      fy[e] = fy[e]! - c * y;
+      fz[e] = fz[e]! - c * z;
     }
     return;
   }
-  const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
+  const t = world.time,
+    px = Position.x,
+    py = Position.y,
+    pz = Position.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-    const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = vz[e]! - wind[2]!;
+    const x = vx[e]! - wind[0]!,
+      y = vy[e]! - wind[1]!,
+      z = vz[e]! - wind[2]!;
     const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-    if (c * inv[e]! >= limit) { markStiffQuadratic(world, e, k[e]!); continue; }
-    fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+    if (c * inv[e]! >= limit) {
+      markStiffQuadratic(world, e, k[e]!);
+      continue;
+    }
+    fx[e] = fx[e]! - c * x;
+    fy[e] = fy[e]! - c * y;
+    fz[e] = fz[e]! - c * z;
   }
 };
 
@@ -137,26 +199,47 @@ export function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): v
  */
 export const stiffDragSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);
-  const linear = st.linearSeen === st.epoch, quadratic = st.quadraticSeen === st.epoch;
+  const linear = st.linearSeen === st.epoch,
+    quadratic = st.quadraticSeen === st.epoch;
   if (!linear && !quadratic) return;
   const c = world.components;
-  const h = world.h, t = world.time + h;
+  const h = world.h,
+    t = world.time + h;
   const calm = calmAir(world);
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z, inv = c.Mass.inv;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z,
+    inv = c.Mass.inv;
   const is2D = world.dimensions === 2;
-  wind[0] = 0; wind[1] = 0; wind[2] = 0;
+  wind[0] = 0;
+  wind[1] = 0;
+  wind[2] = 0;
   // x * 0 is NaN exactly when x is not finite: the running check of what this system writes.
   let check = 0;
   const damp = (e: number, factor: number): void => {
     if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-    const ux = wind[0]!, uy = wind[1]!, uz = wind[2]!;
-    const nx = ux + (vx[e]! - ux) * factor, ny = uy + (vy[e]! - uy) * factor;
-    vx[e] = nx; vy[e] = ny;
-    px[e] = ox[e]! + h * nx; py[e] = oy[e]! + h * ny;
+    const ux = wind[0]!,
+      uy = wind[1]!,
+      uz = wind[2]!;
+    const nx = ux + (vx[e]! - ux) * factor,
+      ny = uy + (vy[e]! - uy) * factor;
+    vx[e] = nx;
+    vy[e] = ny;
+    px[e] = ox[e]! + h * nx;
+    py[e] = oy[e]! + h * ny;
     check += nx * 0 + ny * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) { const nz = uz + (vz[e]! - uz) * factor; vz[e] = nz; pz[e] = oz[e]! + h * nz; check += pz[e]! * 0; }
+    if (!is2D) {
+      const nz = uz + (vz[e]! - uz) * factor;
+      vz[e] = nz;
+      pz[e] = oz[e]! + h * nz;
+      check += pz[e]! * 0;
+    }
   };
   if (linear) {
     const ents = query(world, [c.LinearDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
@@ -170,12 +253,16 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
   }
   if (quadratic) {
     const ents = query(world, [c.QuadraticDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
-    const epoch = st.epoch, stamp = st.quadraticStamp, stiffK = st.quadraticK;
+    const epoch = st.epoch,
+      stamp = st.quadraticStamp,
+      stiffK = st.quadraticK;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       if (stamp[e] !== epoch) continue;
       if (!calm) windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-      const x = vx[e]! - wind[0]!, y = vy[e]! - wind[1]!, z = is2D ? 0 : vz[e]! - wind[2]!;
+      const x = vx[e]! - wind[0]!,
+        y = vy[e]! - wind[1]!,
+        z = is2D ? 0 : vz[e]! - wind[2]!;
       damp(e, quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h));
     }
     if (check !== 0) reportNonFinite(world, ents, 'integrate');
@@ -191,14 +278,31 @@ export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [Lift, Velocity, Force]);
   if (ents.length === 0) return;
   const calm = calmAir(world);
-  const t = world.time, px = Position.x, py = Position.y, pz = Position.z;
-  const vx = Velocity.x, vy = Velocity.y, vz = Velocity.z, fx = Force.x, fy = Force.y, fz = Force.z;
+  const t = world.time,
+    px = Position.x,
+    py = Position.y,
+    pz = Position.z;
+  const vx = Velocity.x,
+    vy = Velocity.y,
+    vz = Velocity.z,
+    fx = Force.x,
+    fy = Force.y,
+    fz = Force.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    let x = vx[e]!, y = vy[e]!, z = vz[e]!;
-    if (!calm) { windAt(world, px[e]!, py[e]!, pz[e]!, t, wind); x -= wind[0]!; y -= wind[1]!; z -= wind[2]!; }
+    let x = vx[e]!,
+      y = vy[e]!,
+      z = vz[e]!;
+    if (!calm) {
+      windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+      x -= wind[0]!;
+      y -= wind[1]!;
+      z -= wind[2]!;
+    }
     const k = Lift.k[e]! * Math.sqrt(x * x + y * y + z * z);
-    const ax = Lift.axisX[e]!, ay = Lift.axisY[e]!, az = Lift.axisZ[e]!;
+    const ax = Lift.axisX[e]!,
+      ay = Lift.axisY[e]!,
+      az = Lift.axisZ[e]!;
     fx[e] = fx[e]! + k * (ay * z - az * y);
     fy[e] = fy[e]! + k * (az * x - ax * z);
     fz[e] = fz[e]! + k * (ax * y - ay * x);

@@ -7,12 +7,17 @@ export const drivingForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.DrivingForce, c.Force]);
   if (ents.length === 0) return;
-  const D = c.DrivingForce, t = world.time;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const D = c.DrivingForce,
+    t = world.time;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const k = Math.cos(D.omega[e]! * t + D.phase[e]!);
-    fx[e] = fx[e]! + D.x[e]! * k; fy[e] = fy[e]! + D.y[e]! * k; fz[e] = fz[e]! + D.z[e]! * k;
+    fx[e] = fx[e]! + D.x[e]! * k;
+    fy[e] = fy[e]! + D.y[e]! * k;
+    fz[e] = fz[e]! + D.z[e]! * k;
   }
 };
 drivingForceSystem.velocityDependent = false;
@@ -20,8 +25,10 @@ drivingForceSystem.velocityDependent = false;
 /** 32-bit integer hash (Wellons' "lowbias32"), mapped to [-1, 1). */
 function noiseValue(seed: number, knot: number, axis: number): number {
   let x = (Math.imul(seed | 0, 0x9e3779b9) ^ Math.imul(knot | 0, 0x85ebca6b) ^ Math.imul(axis + 1, 0xc2b2ae35)) >>> 0;
-  x ^= x >>> 16; x = Math.imul(x, 0x7feb352d);
-  x ^= x >>> 15; x = Math.imul(x, 0x846ca68b);
+  x ^= x >>> 16;
+  x = Math.imul(x, 0x7feb352d);
+  x ^= x >>> 15;
+  x = Math.imul(x, 0x846ca68b);
   x ^= x >>> 16;
   return (x >>> 0) / 2147483648 - 1;
 }
@@ -35,7 +42,8 @@ export function valueNoise(seed: number, t: number, tau: number, axis: number): 
   const k = Math.floor(x);
   const s = x - k;
   const w = s * s * (3 - 2 * s);
-  const a = noiseValue(seed, k, axis), b = noiseValue(seed, k + 1, axis);
+  const a = noiseValue(seed, k, axis),
+    b = noiseValue(seed, k + 1, axis);
   return a + (b - a) * w;
 }
 
@@ -48,12 +56,17 @@ export const randomForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.RandomForce, c.Force]);
   if (ents.length === 0) return;
-  const R = c.RandomForce, t = world.time;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const R = c.RandomForce,
+    t = world.time;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   const is3D = world.dimensions === 3;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const m = R.magnitude[e]!, tau = R.correlationTime[e]!, seed = R.seed[e]!;
+    const m = R.magnitude[e]!,
+      tau = R.correlationTime[e]!,
+      seed = R.seed[e]!;
     fx[e] = fx[e]! + m * valueNoise(seed, t, tau, 0);
     fy[e] = fy[e]! + m * valueNoise(seed, t, tau, 1);
     if (is3D) fz[e] = fz[e]! + m * valueNoise(seed, t, tau, 2);

@@ -27,7 +27,8 @@ const B = new Float64Array(3);
  */
 export function fieldsAt(world: PhysicsWorld, t: number, e: Float64Array, b: Float64Array): void {
   const c = world.components;
-  e.fill(0); b.fill(0);
+  e.fill(0);
+  b.fill(0);
   const sum = (ents: ArrayLike<number>, F: typeof c.ElectricField, out: Float64Array) => {
     for (let i = 0; i < ents.length; i++) {
       const f = ents[i]!;
@@ -53,15 +54,26 @@ export const lorentzSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.Charge, c.Force, c.Velocity]);
   if (ents.length === 0) return;
   fieldsAt(world, world.time, E, B);
-  const ex = E[0]!, ey = E[1]!, ez = E[2]!;
+  const ex = E[0]!,
+    ey = E[1]!,
+    ez = E[2]!;
   const is2D = world.dimensions === 2;
-  const bx = is2D ? 0 : B[0]!, by = is2D ? 0 : B[1]!, bz = B[2]!;
-  const q = c.Charge.value, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const bx = is2D ? 0 : B[0]!,
+    by = is2D ? 0 : B[1]!,
+    bz = B[2]!;
+  const q = c.Charge.value,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const qe = q[e]!;
-    const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
+    const ux = vx[e]!,
+      uy = vy[e]!,
+      uz = vz[e]!;
     fx[e] = fx[e]! + qe * (ex + uy * bz - uz * by);
     fy[e] = fy[e]! + qe * (ey + uz * bx - ux * bz);
     fz[e] = fz[e]! + qe * (ez + ux * by - uy * bx);

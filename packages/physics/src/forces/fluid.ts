@@ -1,7 +1,7 @@
-import { Not, query } from '../query.js';
-import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import { reportNonFinite } from '../errors.js';
+import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
+import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
 /** Shape codes of `Buoyancy.shape`. */
@@ -16,19 +16,27 @@ export const BuoyancyShape = Object.freeze({ Ball: 0, Box: 1 } as const);
  * Mathematical Tables for the cap and segment.
  */
 export function submergedMeasure(
-  dimensions: 2 | 3, shape: number, radius: number, halfX: number, halfY: number, halfZ: number, depth: number,
+  dimensions: 2 | 3,
+  shape: number,
+  radius: number,
+  halfX: number,
+  halfY: number,
+  halfZ: number,
+  depth: number,
   out: Float64Array = new Float64Array(2),
 ): Float64Array {
   if (shape === BuoyancyShape.Box) {
     const h = depth <= 0 ? 0 : depth >= 2 * halfY ? 2 * halfY : depth;
     const base = dimensions === 3 ? 4 * halfX * halfZ : 2 * halfX;
-    out[0] = base * h; out[1] = base * 2 * halfY;
+    out[0] = base * h;
+    out[1] = base * 2 * halfY;
     return out;
   }
   const r = radius;
   const h = depth <= 0 ? 0 : depth >= 2 * r ? 2 * r : depth;
   if (dimensions === 3) {
-    out[0] = (Math.PI * h * h * (3 * r - h)) / 3; out[1] = (4 / 3) * Math.PI * r * r * r;
+    out[0] = (Math.PI * h * h * (3 * r - h)) / 3;
+    out[1] = (4 / 3) * Math.PI * r * r * r;
     return out;
   }
   const a = r - h;
@@ -55,16 +63,25 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   if (fluids.length === 0) return;
   const ents = query(world, [c.Buoyancy, c.Position, c.Velocity, c.Force]);
   if (ents.length === 0) return;
-  const Fl = c.FluidRegion, Bu = c.Buoyancy;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const Fl = c.FluidRegion,
+    Bu = c.Buoyancy;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   const g = world.gravity;
   const d = world.dimensions;
   const inv = c.Mass.inv;
   const st = dissipationState(world);
   allocateStiffStamps(world, st);
-  const epoch = st.epoch, stamp = st.fluidStamp, stiffK = st.fluidK;
+  const epoch = st.epoch,
+    stamp = st.fluidStamp,
+    stiffK = st.fluidK;
   const limit = STIFF_RATE / world.h;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
@@ -75,22 +92,34 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
     let fraction = 0;
     for (let j = 0; j < fluids.length; j++) {
       const f = fluids[j]!;
-      const x = px[e]!, z = pz[e]!;
+      const x = px[e]!,
+        z = pz[e]!;
       if (x < Fl.minX[f]! || x > Fl.maxX[f]! || (d === 3 && (z < Fl.minZ[f]! || z > Fl.maxZ[f]!))) continue;
       const depth = Fl.surface[f]! - (py[e]! - extent);
       if (depth <= 0) continue;
       submergedMeasure(d, shape, Bu.radius[e]!, Bu.halfX[e]!, Bu.halfY[e]!, Bu.halfZ[e]!, depth, measure);
       const rhoV = Fl.density[f]! * measure[0]!;
-      fx[e] = fx[e]! - rhoV * g[0]!; fy[e] = fy[e]! - rhoV * g[1]!; fz[e] = fz[e]! - rhoV * g[2]!;
+      fx[e] = fx[e]! - rhoV * g[0]!;
+      fy[e] = fy[e]! - rhoV * g[1]!;
+      fz[e] = fz[e]! - rhoV * g[2]!;
       fraction += measure[0]! / measure[1]!;
     }
     const k = Bu.dragCoefficient[e]! * (fraction < 1 ? fraction : 1);
-    const ux = vx[e]!, uy = vy[e]!, uz = vz[e]!;
+    const ux = vx[e]!,
+      uy = vy[e]!,
+      uz = vz[e]!;
     const s = k * Math.sqrt(ux * ux + uy * uy + uz * uz);
     if (k > 0) {
       // Stiff at this state: no force; stamped for the exact update after the integrator.
-      if (s * inv[e]! >= limit) { stamp[e] = epoch; stiffK[e] = k; st.fluidSeen = epoch; continue; }
-      fx[e] = fx[e]! - s * ux; fy[e] = fy[e]! - s * uy; fz[e] = fz[e]! - s * uz;
+      if (s * inv[e]! >= limit) {
+        stamp[e] = epoch;
+        stiffK[e] = k;
+        st.fluidSeen = epoch;
+        continue;
+      }
+      fx[e] = fx[e]! - s * ux;
+      fy[e] = fy[e]! - s * uy;
+      fz[e] = fz[e]! - s * uz;
     }
   }
 };
@@ -107,21 +136,39 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   if (st.fluidSeen !== st.epoch) return;
   const c = world.components;
   const ents = query(world, [c.Buoyancy, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
-  const h = world.h, epoch = st.epoch, stamp = st.fluidStamp, stiffK = st.fluidK, inv = c.Mass.inv;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const h = world.h,
+    epoch = st.epoch,
+    stamp = st.fluidStamp,
+    stiffK = st.fluidK,
+    inv = c.Mass.inv;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const is2D = world.dimensions === 2;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     if (stamp[e] !== epoch) continue;
-    const x = vx[e]!, y = vy[e]!, z = is2D ? 0 : vz[e]!;
+    const x = vx[e]!,
+      y = vy[e]!,
+      z = is2D ? 0 : vz[e]!;
     const f = quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h);
-    vx[e] = x * f; vy[e] = y * f;
-    px[e] = ox[e]! + h * vx[e]!; py[e] = oy[e]! + h * vy[e]!;
+    vx[e] = x * f;
+    vy[e] = y * f;
+    px[e] = ox[e]! + h * vx[e]!;
+    py[e] = oy[e]! + h * vy[e]!;
     check += vx[e]! * 0 + vy[e]! * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) { vz[e] = z * f; pz[e] = oz[e]! + h * vz[e]!; check += pz[e]! * 0; }
+    if (!is2D) {
+      vz[e] = z * f;
+      pz[e] = oz[e]! + h * vz[e]!;
+      check += pz[e]! * 0;
+    }
   }
   if (check !== 0) reportNonFinite(world, ents, 'integrate');
 };

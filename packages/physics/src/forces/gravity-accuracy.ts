@@ -1,6 +1,6 @@
 import { query } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
 import { assertInteger } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import { worldTreeFields } from './barnes-hut.js';
 
 /**
@@ -17,22 +17,39 @@ import { worldTreeFields } from './barnes-hut.js';
  * @returns out, with the field at targets[k] in out[3k..3k+2] (allocated when not given).
  */
 export function directField(
-  n: number, x: ArrayLike<number>, y: ArrayLike<number>, z: ArrayLike<number>, m: ArrayLike<number>,
-  G: number, eps2: number, targets: ArrayLike<number>, out: Float64Array = new Float64Array(3 * targets.length),
+  n: number,
+  x: ArrayLike<number>,
+  y: ArrayLike<number>,
+  z: ArrayLike<number>,
+  m: ArrayLike<number>,
+  G: number,
+  eps2: number,
+  targets: ArrayLike<number>,
+  out: Float64Array = new Float64Array(3 * targets.length),
 ): Float64Array {
   for (let k = 0; k < targets.length; k++) {
     const i = targets[k]!;
-    const xi = x[i]!, yi = y[i]!, zi = z[i]!;
-    let ax = 0, ay = 0, az = 0;
+    const xi = x[i]!,
+      yi = y[i]!,
+      zi = z[i]!;
+    let ax = 0,
+      ay = 0,
+      az = 0;
     for (let j = 0; j < n; j++) {
       if (j === i) continue;
-      const dx = x[j]! - xi, dy = y[j]! - yi, dz = z[j]! - zi;
+      const dx = x[j]! - xi,
+        dy = y[j]! - yi,
+        dz = z[j]! - zi;
       const r2 = dx * dx + dy * dy + dz * dz + eps2;
       if (r2 === 0) continue;
       const w = m[j]! / (r2 * Math.sqrt(r2));
-      ax += w * dx; ay += w * dy; az += w * dz;
+      ax += w * dx;
+      ay += w * dy;
+      az += w * dz;
     }
-    out[3 * k] = G * ax; out[3 * k + 1] = G * ay; out[3 * k + 2] = G * az;
+    out[3 * k] = G * ax;
+    out[3 * k + 1] = G * ay;
+    out[3 * k + 2] = G * az;
   }
   return out;
 }
@@ -65,7 +82,9 @@ export function fieldErrorStats(approx: ArrayLike<number>, exact: ArrayLike<numb
   const errs = new Float64Array(k);
   let sum = 0;
   for (let i = 0; i < k; i++) {
-    const ex = exact[3 * i]!, ey = exact[3 * i + 1]!, ez = exact[3 * i + 2]!;
+    const ex = exact[3 * i]!,
+      ey = exact[3 * i + 1]!,
+      ez = exact[3 * i + 2]!;
     const d = Math.hypot(approx[3 * i]! - ex, approx[3 * i + 1]! - ey, approx[3 * i + 2]! - ez);
     const e = Math.hypot(ex, ey, ez);
     errs[i] = e > 0 ? d / e : d > 0 ? Infinity : 0;
@@ -93,9 +112,21 @@ export function gravityFieldError(world: PhysicsWorld, sample = 1000): FieldErro
   const ents = mutualBodies(world);
   const n = ents.length;
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, pm = c.Mass.value;
-  const x = new Float64Array(n), y = new Float64Array(n), z = new Float64Array(n), m = new Float64Array(n);
-  for (let i = 0; i < n; i++) { const e = ents[i]!; x[i] = px[e]!; y[i] = py[e]!; z[i] = pz[e]!; m[i] = pm[e]!; }
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    pm = c.Mass.value;
+  const x = new Float64Array(n),
+    y = new Float64Array(n),
+    z = new Float64Array(n),
+    m = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    const e = ents[i]!;
+    x[i] = px[e]!;
+    y[i] = py[e]!;
+    z[i] = pz[e]!;
+    m[i] = pm[e]!;
+  }
   const targets = sampleIndices(n, sample);
   const L = world.laws;
   const exact = directField(n, x, y, z, m, L.gravitationalConstant, L.gravitySoftening ** 2, targets);
@@ -103,7 +134,9 @@ export function gravityFieldError(world: PhysicsWorld, sample = 1000): FieldErro
   const approx = new Float64Array(exact.length);
   for (let k = 0; k < targets.length; k++) {
     const s = t.slot[targets[k]!]!;
-    approx[3 * k] = t.ax[s]!; approx[3 * k + 1] = t.ay[s]!; approx[3 * k + 2] = t.az[s]!;
+    approx[3 * k] = t.ax[s]!;
+    approx[3 * k + 1] = t.ay[s]!;
+    approx[3 * k + 2] = t.az[s]!;
   }
   return fieldErrorStats(approx, exact);
 }
@@ -139,32 +172,48 @@ export function gravityMomentumRate(world: PhysicsWorld): GravityMomentumRate {
   let total = 0;
   if (n >= 2) {
     const pm = c.Mass.value;
-    const fx = new Float64Array(n), fy = new Float64Array(n), fz = new Float64Array(n);
+    const fx = new Float64Array(n),
+      fy = new Float64Array(n),
+      fz = new Float64Array(n);
     if (world.laws.gravityMethod === 'barnes-hut') {
       const t = worldTreeFields(world, ents);
       for (let s = 0; s < n; s++) {
-        const w = t.m[s]!, i = t.perm[s]!;
-        fx[i] = w * t.ax[s]!; fy[i] = w * t.ay[s]!; fz[i] = w * t.az[s]!;
+        const w = t.m[s]!,
+          i = t.perm[s]!;
+        fx[i] = w * t.ax[s]!;
+        fy[i] = w * t.ay[s]!;
+        fz[i] = w * t.az[s]!;
       }
     } else {
-      const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+      const px = c.Position.x,
+        py = c.Position.y,
+        pz = c.Position.z;
       const L = world.laws;
-      const G = L.gravitationalConstant, eps2 = L.gravitySoftening ** 2;
+      const G = L.gravitationalConstant,
+        eps2 = L.gravitySoftening ** 2;
       for (let i = 0; i < n; i++) {
         const a = ents[i]!;
         for (let j = i + 1; j < n; j++) {
           const b = ents[j]!;
-          const dx = px[b]! - px[a]!, dy = py[b]! - py[a]!, dz = pz[b]! - pz[a]!;
+          const dx = px[b]! - px[a]!,
+            dy = py[b]! - py[a]!,
+            dz = pz[b]! - pz[a]!;
           const r2 = dx * dx + dy * dy + dz * dz + eps2;
           if (r2 === 0) continue;
           const k = (G * pm[a]! * pm[b]!) / (r2 * Math.sqrt(r2));
-          fx[i] += k * dx; fy[i] += k * dy; fz[i] += k * dz;
-          fx[j] -= k * dx; fy[j] -= k * dy; fz[j] -= k * dz;
+          fx[i] += k * dx;
+          fy[i] += k * dy;
+          fz[i] += k * dz;
+          fx[j] -= k * dx;
+          fy[j] -= k * dy;
+          fz[j] -= k * dz;
         }
       }
     }
     for (let i = 0; i < n; i++) {
-      rate[0] += fx[i]!; rate[1] += fy[i]!; rate[2] += fz[i]!;
+      rate[0] += fx[i]!;
+      rate[1] += fy[i]!;
+      rate[2] += fz[i]!;
       total += Math.hypot(fx[i]!, fy[i]!, fz[i]!);
     }
   }

@@ -1,19 +1,21 @@
 import { Not, query } from '../query.js';
+import { KERNEL } from '../threads/kernels.js';
+import { MIN_PARALLEL_PER_THREAD, runParallel } from '../threads/parallel.js';
+import { sharedFloat64 } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world.js';
+import { barnesHutGravity } from './barnes-hut.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
-import { barnesHutGravity } from './barnes-hut.js';
-import { runParallel } from '../threads/parallel.js';
-import { KERNEL } from '../threads/kernels.js';
-import { MIN_PARALLEL_PER_THREAD } from '../threads/parallel.js';
-import { sharedFloat64 } from '../threads/pool.js';
 
 const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();
 
 /** The world's packed attractor list for the threads (6 slots a source), on shared memory, grown by doubling. */
 function attractorSources(world: PhysicsWorld, n: number): Float64Array {
   let S = sourcesOf.get(world);
-  if (S === undefined || S.length < 6 * n) { S = sharedFloat64(6 * Math.max(n, 2 * (S ? S.length / 6 : 4))); sourcesOf.set(world, S); }
+  if (S === undefined || S.length < 6 * n) {
+    S = sharedFloat64(6 * Math.max(n, 2 * (S ? S.length / 6 : 4)));
+    sourcesOf.set(world, S);
+  }
   return S;
 }
 
@@ -27,14 +29,25 @@ export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.GravityScale, c.Force, c.Mass]);
   if (ents.length === 0) return;
   const g = world.gravity;
-  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
-  const s = c.GravityScale.value, m = c.Mass.value, fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  if (world.threadPool !== null &&
-    runParallel(world, 'gravityScaleSystem', KERNEL.gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents) !== null) return;
+  const gx = g[0]!,
+    gy = g[1]!,
+    gz = g[2]!;
+  const s = c.GravityScale.value,
+    m = c.Mass.value,
+    fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
+  if (
+    world.threadPool !== null &&
+    runParallel(world, 'gravityScaleSystem', KERNEL.gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents) !== null
+  )
+    return;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const k = (s[e]! - 1) * m[e]!;
-    fx[e] = fx[e]! + k * gx; fy[e] = fy[e]! + k * gy; fz[e] = fz[e]! + k * gz;
+    fx[e] = fx[e]! + k * gx;
+    fy[e] = fy[e]! + k * gy;
+    fz[e] = fz[e]! + k * gz;
   }
 };
 gravityScaleSystem.velocityDependent = false;
@@ -52,7 +65,10 @@ export const mutualGravitySystem: ForceLaw = (world: PhysicsWorld): void => {
   const n = ents.length;
   if (n < 2) return;
   const L = world.laws;
-  if (L.gravityMethod === 'barnes-hut') { barnesHutGravity(world, ents); return; }
+  if (L.gravityMethod === 'barnes-hut') {
+    barnesHutGravity(world, ents);
+    return;
+  }
   inverseSquarePairs(world, ents, c.Mass.value, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening);
 };
 mutualGravitySystem.velocityDependent = false;
@@ -69,30 +85,54 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (sources.length === 0) return;
   const bodies = query(world, [c.Position, c.Force, c.Mass, Not(c.Static), Not(c.Kinematic)]);
   const G = world.laws.gravitationalConstant;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, m = c.Mass.value;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
-  const M = c.Attractor.mass, soft = c.Attractor.softening;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    m = c.Mass.value;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
+  const M = c.Attractor.mass,
+    soft = c.Attractor.softening;
   // On the world's threads when that pays: each body sums its sources in the same order
   // (threads/kernels.ts attractors), so the forces are the one-thread ones to the bit.
   if (world.threadPool !== null && bodies.length >= 2 * MIN_PARALLEL_PER_THREAD) {
     const S = attractorSources(world, sources.length);
     for (let s = 0; s < sources.length; s++) {
-      const a = sources[s]!, o = 6 * s;
-      S[o] = a; S[o + 1] = px[a]!; S[o + 2] = py[a]!; S[o + 3] = pz[a]!; S[o + 4] = G * M[a]!; S[o + 5] = soft[a]! * soft[a]!;
+      const a = sources[s]!,
+        o = 6 * s;
+      S[o] = a;
+      S[o + 1] = px[a]!;
+      S[o + 2] = py[a]!;
+      S[o + 3] = pz[a]!;
+      S[o + 4] = G * M[a]!;
+      S[o + 5] = soft[a]! * soft[a]!;
     }
-    if (runParallel(world, 'attractorSystem', KERNEL.attractors, [S, px, py, pz, m, fx, fy, fz], [sources.length], bodies.length, bodies) !== null) return;
+    if (
+      runParallel(world, 'attractorSystem', KERNEL.attractors, [S, px, py, pz, m, fx, fy, fz], [sources.length], bodies.length, bodies) !==
+      null
+    )
+      return;
   }
   for (let s = 0; s < sources.length; s++) {
     const a = sources[s]!;
-    const xa = px[a]!, ya = py[a]!, za = pz[a]!, gm = G * M[a]!, eps2 = soft[a]! * soft[a]!;
+    const xa = px[a]!,
+      ya = py[a]!,
+      za = pz[a]!,
+      gm = G * M[a]!,
+      eps2 = soft[a]! * soft[a]!;
     for (let i = 0; i < bodies.length; i++) {
       const b = bodies[i]!;
       if (b === a) continue;
-      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
+      const dx = px[b]! - xa,
+        dy = py[b]! - ya,
+        dz = pz[b]! - za;
       const r2 = dx * dx + dy * dy + dz * dz + eps2;
       if (r2 === 0) continue;
       const k = (-gm * m[b]!) / (r2 * Math.sqrt(r2));
-      fx[b] = fx[b]! + k * dx; fy[b] = fy[b]! + k * dy; fz[b] = fz[b]! + k * dz;
+      fx[b] = fx[b]! + k * dx;
+      fy[b] = fy[b]! + k * dy;
+      fz[b] = fz[b]! + k * dz;
     }
   }
 };

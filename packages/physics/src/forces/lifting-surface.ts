@@ -1,9 +1,9 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../handles.js';
 import { query } from '../query.js';
+import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { createSlot, currentHandle, resolveEntity, resolveKind } from '../handles.js';
-import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -80,7 +80,8 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   assertVector(where, 'normal', normal, 3);
   const nLen = Math.hypot(normal[0]!, normal[1]!, normal[2]!);
   if (!(nLen > 0)) throw new RangeError(`${where}: normal must not be zero, got ${describe(normal)}`);
-  if (Math.hypot(normal[1]!, normal[2]!) / nLen < 1e-6) throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${describe(normal)}`);
+  if (Math.hypot(normal[1]!, normal[2]!) / nLen < 1e-6)
+    throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${describe(normal)}`);
   assertPositive(where, 'area', options.area);
   const slope = options.liftSlope ?? DEFAULT_LIFT_SLOPE;
   assertNonNegative(where, 'liftSlope', slope);
@@ -101,10 +102,20 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   addComponent(world, s, c.LiftingSurface);
   const L = c.LiftingSurface;
   L.body[s] = b;
-  L.offsetX[s] = offset[0]!; L.offsetY[s] = offset[1]!; L.offsetZ[s] = offset[2]!;
-  L.normalX[s] = normal[0]! / nLen; L.normalY[s] = normal[1]! / nLen; L.normalZ[s] = normal[2]! / nLen;
-  L.area[s] = options.area; L.liftSlope[s] = slope; L.stallAngle[s] = stall; L.dragZero[s] = cd0; L.inducedDrag[s] = k;
-  L.controlPower[s] = power; L.deflection[s] = 0; L.airDensity[s] = rho;
+  L.offsetX[s] = offset[0]!;
+  L.offsetY[s] = offset[1]!;
+  L.offsetZ[s] = offset[2]!;
+  L.normalX[s] = normal[0]! / nLen;
+  L.normalY[s] = normal[1]! / nLen;
+  L.normalZ[s] = normal[2]! / nLen;
+  L.area[s] = options.area;
+  L.liftSlope[s] = slope;
+  L.stallAngle[s] = stall;
+  L.dragZero[s] = cd0;
+  L.inducedDrag[s] = k;
+  L.controlPower[s] = power;
+  L.deflection[s] = 0;
+  L.airDensity[s] = rho;
   return currentHandle(world, s);
 }
 
@@ -126,7 +137,8 @@ export function setControlDeflection(world: PhysicsWorld, surface: number, defle
   const where = 'setControlDeflection';
   const L = world.components.LiftingSurface;
   const slot = resolveEntity(world, surface, where, 'surface');
-  if (!hasComponent(world, slot, L)) throw new RangeError(`${where}: surface must be a lifting surface (addLiftingSurface makes one), got entity ${surface}`);
+  if (!hasComponent(world, slot, L))
+    throw new RangeError(`${where}: surface must be a lifting surface (addLiftingSurface makes one), got entity ${surface}`);
   assertFinite(where, 'deflection', deflection);
   assertInRange(where, 'deflection', deflection, -Math.PI / 4, Math.PI / 4);
   L.deflection[slot] = deflection;
@@ -157,34 +169,75 @@ export const liftingSurfaceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.LiftingSurface]);
   if (ents.length === 0) return;
-  const L = c.LiftingSurface, O = c.Orientation, P = c.Position;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z, tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z;
+  const L = c.LiftingSurface,
+    O = c.Orientation,
+    P = c.Position;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z,
+    tx = c.Torque.x,
+    ty = c.Torque.y,
+    tz = c.Torque.z;
   for (let i = 0; i < ents.length; i++) {
     const s = ents[i]!;
     const b = L.body[s]!;
     if (!entityExists(world, b) || !hasComponent(world, b, P) || !hasComponent(world, b, c.Torque)) continue;
     // Rotation matrix of the body (columns: body x, y, z in world axes).
-    const qx = O.x[b]!, qy = O.y[b]!, qz = O.z[b]!, qw = O.w[b]!;
-    rot[0] = 1 - 2 * (qy * qy + qz * qz); rot[1] = 2 * (qx * qy + qz * qw); rot[2] = 2 * (qx * qz - qy * qw);
-    rot[3] = 2 * (qx * qy - qz * qw); rot[4] = 1 - 2 * (qx * qx + qz * qz); rot[5] = 2 * (qy * qz + qx * qw);
-    rot[6] = 2 * (qx * qz + qy * qw); rot[7] = 2 * (qy * qz - qx * qw); rot[8] = 1 - 2 * (qx * qx + qy * qy);
-    const ox = L.offsetX[s]!, oy = L.offsetY[s]!, oz = L.offsetZ[s]!;
-    const rx = rot[0]! * ox + rot[3]! * oy + rot[6]! * oz, ry = rot[1]! * ox + rot[4]! * oy + rot[7]! * oz, rz = rot[2]! * ox + rot[5]! * oy + rot[8]! * oz;
-    const bnx = L.normalX[s]!, bny = L.normalY[s]!, bnz = L.normalZ[s]!;
-    const nx = rot[0]! * bnx + rot[3]! * bny + rot[6]! * bnz, ny = rot[1]! * bnx + rot[4]! * bny + rot[7]! * bnz, nz = rot[2]! * bnx + rot[5]! * bny + rot[8]! * bnz;
+    const qx = O.x[b]!,
+      qy = O.y[b]!,
+      qz = O.z[b]!,
+      qw = O.w[b]!;
+    rot[0] = 1 - 2 * (qy * qy + qz * qz);
+    rot[1] = 2 * (qx * qy + qz * qw);
+    rot[2] = 2 * (qx * qz - qy * qw);
+    rot[3] = 2 * (qx * qy - qz * qw);
+    rot[4] = 1 - 2 * (qx * qx + qz * qz);
+    rot[5] = 2 * (qy * qz + qx * qw);
+    rot[6] = 2 * (qx * qz + qy * qw);
+    rot[7] = 2 * (qy * qz - qx * qw);
+    rot[8] = 1 - 2 * (qx * qx + qy * qy);
+    const ox = L.offsetX[s]!,
+      oy = L.offsetY[s]!,
+      oz = L.offsetZ[s]!;
+    const rx = rot[0]! * ox + rot[3]! * oy + rot[6]! * oz,
+      ry = rot[1]! * ox + rot[4]! * oy + rot[7]! * oz,
+      rz = rot[2]! * ox + rot[5]! * oy + rot[8]! * oz;
+    const bnx = L.normalX[s]!,
+      bny = L.normalY[s]!,
+      bnz = L.normalZ[s]!;
+    const nx = rot[0]! * bnx + rot[3]! * bny + rot[6]! * bnz,
+      ny = rot[1]! * bnx + rot[4]! * bny + rot[7]! * bnz,
+      nz = rot[2]! * bnx + rot[5]! * bny + rot[8]! * bnz;
     // Chord: the body's x axis made perpendicular to the normal (a surface set at an incidence).
-    const bx = rot[0]!, by = rot[1]!, bz = rot[2]!, bn = bx * nx + by * ny + bz * nz;
-    let cx = bx - bn * nx, cy = by - bn * ny, cz = bz - bn * nz;
+    const bx = rot[0]!,
+      by = rot[1]!,
+      bz = rot[2]!,
+      bn = bx * nx + by * ny + bz * nz;
+    let cx = bx - bn * nx,
+      cy = by - bn * ny,
+      cz = bz - bn * nz;
     const cl0 = Math.sqrt(cx * cx + cy * cy + cz * cz);
-    cx /= cl0; cy /= cl0; cz /= cl0;
+    cx /= cl0;
+    cy /= cl0;
+    cz /= cl0;
     // Span s = c x n (unit: c and n are perpendicular unit vectors).
-    const sx = cy * nz - cz * ny, sy = cz * nx - cx * nz, sz = cx * ny - cy * nx;
+    const sx = cy * nz - cz * ny,
+      sy = cz * nx - cx * nz,
+      sz = cx * ny - cy * nx;
     // Air velocity over the surface: v + w x r (still air).
-    const ax = vx[b]! + (wy[b]! * rz - wz[b]! * ry), ay = vy[b]! + (wz[b]! * rx - wx[b]! * rz), az = vz[b]! + (wx[b]! * ry - wy[b]! * rx);
+    const ax = vx[b]! + (wy[b]! * rz - wz[b]! * ry),
+      ay = vy[b]! + (wz[b]! * rx - wx[b]! * rz),
+      az = vz[b]! + (wx[b]! * ry - wy[b]! * rx);
     const along = ax * sx + ay * sy + az * sz;
-    const px = ax - along * sx, py = ay - along * sy, pz = az - along * sz;
+    const px = ax - along * sx,
+      py = ay - along * sy,
+      pz = az - along * sz;
     const v2 = px * px + py * py + pz * pz;
     if (!(v2 > 1e-12)) continue;
     const v = Math.sqrt(v2);
@@ -194,11 +247,16 @@ export const liftingSurfaceSystem: ForceLaw = (world: PhysicsWorld): void => {
     const cd = dragCoefficient(alpha, cl, stall, L.dragZero[s]!, L.inducedDrag[s]!);
     const qa = 0.5 * L.airDensity[s]! * v2 * L.area[s]!;
     // Lift along s x v_perp / |v_perp| (unit: s is perpendicular to v_perp); drag along -v_perp / |v_perp|.
-    const kl = (qa * cl) / v, kd = (qa * cd) / v;
+    const kl = (qa * cl) / v,
+      kd = (qa * cd) / v;
     const Fx = kl * (sy * pz - sz * py) - kd * px;
     const Fy = kl * (sz * px - sx * pz) - kd * py;
     const Fz = kl * (sx * py - sy * px) - kd * pz;
-    fx[b] = fx[b]! + Fx; fy[b] = fy[b]! + Fy; fz[b] = fz[b]! + Fz;
-    tx[b] = tx[b]! + (ry * Fz - rz * Fy); ty[b] = ty[b]! + (rz * Fx - rx * Fz); tz[b] = tz[b]! + (rx * Fy - ry * Fx);
+    fx[b] = fx[b]! + Fx;
+    fy[b] = fy[b]! + Fy;
+    fz[b] = fz[b]! + Fz;
+    tx[b] = tx[b]! + (ry * Fz - rz * Fy);
+    ty[b] = ty[b]! + (rz * Fx - rx * Fz);
+    tz[b] = tz[b]! + (rx * Fy - ry * Fx);
   }
 };

@@ -11,29 +11,45 @@ import type { PhysicsWorld } from '../world.js';
  * @param ents entity ids (a live query array); `s` the per-entity source strength (kg or C);
  *   `scale` the coupling constant with its sign; `eps2` the squared softening length, m^2 (>= 0).
  */
-export function inverseSquarePairs(
-  world: PhysicsWorld, ents: ArrayLike<number>, s: ArrayLike<number>, scale: number, eps2: number,
-): void {
+export function inverseSquarePairs(world: PhysicsWorld, ents: ArrayLike<number>, s: ArrayLike<number>, scale: number, eps2: number): void {
   const c = world.components;
   const n = ents.length;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < n; i++) {
     const a = ents[i]!;
     const sa = scale * s[a]!;
     if (sa === 0) continue;
-    const xa = px[a]!, ya = py[a]!, za = pz[a]!;
-    let sx = 0, sy = 0, sz = 0;
+    const xa = px[a]!,
+      ya = py[a]!,
+      za = pz[a]!;
+    let sx = 0,
+      sy = 0,
+      sz = 0;
     for (let j = i + 1; j < n; j++) {
       const b = ents[j]!;
-      const dx = px[b]! - xa, dy = py[b]! - ya, dz = pz[b]! - za;
+      const dx = px[b]! - xa,
+        dy = py[b]! - ya,
+        dz = pz[b]! - za;
       const r2 = dx * dx + dy * dy + dz * dz + eps2;
       if (r2 === 0) continue;
       const k = (sa * s[b]!) / (r2 * Math.sqrt(r2));
-      const kx = k * dx, ky = k * dy, kz = k * dz;
-      sx += kx; sy += ky; sz += kz;
-      fx[b] = fx[b]! - kx; fy[b] = fy[b]! - ky; fz[b] = fz[b]! - kz;
+      const kx = k * dx,
+        ky = k * dy,
+        kz = k * dz;
+      sx += kx;
+      sy += ky;
+      sz += kz;
+      fx[b] = fx[b]! - kx;
+      fy[b] = fy[b]! - ky;
+      fz[b] = fz[b]! - kz;
     }
-    fx[a] = fx[a]! + sx; fy[a] = fy[a]! + sy; fz[a] = fz[a]! + sz;
+    fx[a] = fx[a]! + sx;
+    fy[a] = fy[a]! + sy;
+    fz[a] = fz[a]! + sz;
   }
 }

@@ -1,6 +1,3 @@
-
-
-
 /** Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018). */
 export const G_SI = 6.6743e-11;
 /** Coulomb constant k = 1 / (4 pi eps0), N m^2 C^-2 (CODATA 2018). */
@@ -66,9 +63,13 @@ export function createForceLawSettings(): ForceLawSettings {
     coulombConstant: COULOMB_SI,
     electricSoftening: 0,
     wind: {
-      velocity: new Float64Array(3), gust: new Float64Array(3), gustOmega: 0, gustPhase: 0,
-      modes: 0, modeData: new Float64Array(MAX_WIND_MODES * 8), intensity: 0,
+      velocity: new Float64Array(3),
+      gust: new Float64Array(3),
+      gustOmega: 0,
+      gustPhase: 0,
+      modes: 0,
+      modeData: new Float64Array(MAX_WIND_MODES * 8),
+      intensity: 0,
     },
   };
 }
-

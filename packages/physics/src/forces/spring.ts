@@ -1,9 +1,9 @@
 import { hasComponent, removeEntity } from 'bitecs';
+import { reportNonFinite } from '../errors.js';
 import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
-import type { ForceLaw } from './law.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
-import { reportNonFinite } from '../errors.js';
+import type { ForceLaw } from './law.js';
 
 /**
  * Hooke springs with damping (Ramtal and Dobre ch. 8): for a spring from a (or its anchor) to b with
@@ -23,30 +23,55 @@ export const springSystem: ForceLaw = (world: PhysicsWorld): void => {
   const inv = c.Mass.inv;
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    const a = S.a[s]!, b = S.b[s]!;
-    const ax = a === 0 ? S.anchorX[s]! : px[a]!, ay = a === 0 ? S.anchorY[s]! : py[a]!, az = a === 0 ? S.anchorZ[s]! : pz[a]!;
-    const dx = px[b]! - ax, dy = py[b]! - ay, dz = pz[b]! - az;
+    const a = S.a[s]!,
+      b = S.b[s]!;
+    const ax = a === 0 ? S.anchorX[s]! : px[a]!,
+      ay = a === 0 ? S.anchorY[s]! : py[a]!,
+      az = a === 0 ? S.anchorZ[s]! : pz[a]!;
+    const dx = px[b]! - ax,
+      dy = py[b]! - ay,
+      dz = pz[b]! - az;
     const L = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (L === 0) continue;
     const stretch = L - S.restLength[s]!;
     if (S.oneSided[s] === 1 && stretch <= 0) continue;
-    const ux = dx / L, uy = dy / L, uz = dz / L;
-    const rv = a === 0
-      ? vx[b]! * ux + vy[b]! * uy + vz[b]! * uz
-      : (vx[b]! - vx[a]!) * ux + (vy[b]! - vy[a]!) * uy + (vz[b]! - vz[a]!) * uz;
+    const ux = dx / L,
+      uy = dy / L,
+      uz = dz / L;
+    const rv = a === 0 ? vx[b]! * ux + vy[b]! * uy + vz[b]! * uz : (vx[b]! - vx[a]!) * ux + (vy[b]! - vy[a]!) * uy + (vz[b]! - vz[a]!) * uz;
     let damping = S.damping[s]!;
-    if (damping * (inv[b]! + (a === 0 ? 0 : inv[a]!)) >= limit) { damping = 0; stiff++; }
+    if (damping * (inv[b]! + (a === 0 ? 0 : inv[a]!)) >= limit) {
+      damping = 0;
+      stiff++;
+    }
     const mag = -(S.stiffness[s]! * stretch + damping * rv);
-    const Fx = mag * ux, Fy = mag * uy, Fz = mag * uz;
-    fx[b] = fx[b]! + Fx; fy[b] = fy[b]! + Fy; fz[b] = fz[b]! + Fz;
-    if (a !== 0) { fx[a] = fx[a]! - Fx; fy[a] = fy[a]! - Fy; fz[a] = fz[a]! - Fz; }
+    const Fx = mag * ux,
+      Fy = mag * uy,
+      Fz = mag * uz;
+    fx[b] = fx[b]! + Fx;
+    fy[b] = fy[b]! + Fy;
+    fz[b] = fz[b]! + Fz;
+    if (a !== 0) {
+      fx[a] = fx[a]! - Fx;
+      fy[a] = fy[a]! - Fy;
+      fz[a] = fz[a]! - Fz;
+    }
   }
-  if (stiff > 0) { const st = dissipationState(world); st.springSeen = st.epoch; }
+  if (stiff > 0) {
+    const st = dissipationState(world);
+    st.springSeen = st.epoch;
+  }
 };
 
 /** Inverse mass of body e as the stiff update may move it: 0 if static, kinematic or asleep (the integrator left it). */
@@ -72,33 +97,55 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   if (st.springSeen !== st.epoch) return;
   const c = world.components;
   const springs = query(world, [c.Spring]);
-  const S = c.Spring, inv = c.Mass.inv, h = world.h;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const S = c.Spring,
+    inv = c.Mass.inv,
+    h = world.h;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const is2D = world.dimensions === 2;
   let check = 0;
   const move = (e: number, j: number, ux: number, uy: number, uz: number): void => {
-    vx[e] = vx[e]! + j * ux; vy[e] = vy[e]! + j * uy;
-    px[e] = ox[e]! + h * vx[e]!; py[e] = oy[e]! + h * vy[e]!;
+    vx[e] = vx[e]! + j * ux;
+    vy[e] = vy[e]! + j * uy;
+    px[e] = ox[e]! + h * vx[e]!;
+    py[e] = oy[e]! + h * vy[e]!;
     check += vx[e]! * 0 + vy[e]! * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) { vz[e] = vz[e]! + j * uz; pz[e] = oz[e]! + h * vz[e]!; check += vz[e]! * 0 + pz[e]! * 0; }
+    if (!is2D) {
+      vz[e] = vz[e]! + j * uz;
+      pz[e] = oz[e]! + h * vz[e]!;
+      check += vz[e]! * 0 + pz[e]! * 0;
+    }
   };
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    const a = S.a[s]!, b = S.b[s]!, cd = S.damping[s]!;
+    const a = S.a[s]!,
+      b = S.b[s]!,
+      cd = S.damping[s]!;
     if (cd * (inv[b]! + (a === 0 ? 0 : inv[a]!)) * h < STIFF_RATE) continue;
-    const ax = a === 0 ? S.anchorX[s]! : px[a]!, ay = a === 0 ? S.anchorY[s]! : py[a]!, az = a === 0 ? S.anchorZ[s]! : pz[a]!;
-    const dx = px[b]! - ax, dy = py[b]! - ay, dz = is2D ? 0 : pz[b]! - az;
+    const ax = a === 0 ? S.anchorX[s]! : px[a]!,
+      ay = a === 0 ? S.anchorY[s]! : py[a]!,
+      az = a === 0 ? S.anchorZ[s]! : pz[a]!;
+    const dx = px[b]! - ax,
+      dy = py[b]! - ay,
+      dz = is2D ? 0 : pz[b]! - az;
     const L = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (L === 0) continue;
     if (S.oneSided[s] === 1 && L <= S.restLength[s]!) continue;
-    const ux = dx / L, uy = dy / L, uz = dz / L;
-    const ib = movableInverse(world, b), ia = movableInverse(world, a), w = ia + ib;
+    const ux = dx / L,
+      uy = dy / L,
+      uz = dz / L;
+    const ib = movableInverse(world, b),
+      ia = movableInverse(world, a),
+      w = ia + ib;
     if (w === 0) continue;
-    const rv = a === 0
-      ? vx[b]! * ux + vy[b]! * uy + vz[b]! * uz
-      : (vx[b]! - vx[a]!) * ux + (vy[b]! - vy[a]!) * uy + (vz[b]! - vz[a]!) * uz;
+    const rv = a === 0 ? vx[b]! * ux + vy[b]! * uy + vz[b]! * uz : (vx[b]! - vx[a]!) * ux + (vy[b]! - vy[a]!) * uy + (vz[b]! - vz[a]!) * uz;
     // Impulse per unit inverse mass that takes rv to rv exp(-c h w).
     const j = (rv * linearDecay(cd * h * w) - rv) / w;
     if (ib > 0) move(b, j * ib, ux, uy, uz);
@@ -106,7 +153,11 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   }
   if (check !== 0) {
     const touched: number[] = [];
-    for (let i = 0; i < springs.length; i++) { const s = springs[i]!; touched.push(S.b[s]!); if (S.a[s]! !== 0) touched.push(S.a[s]!); }
+    for (let i = 0; i < springs.length; i++) {
+      const s = springs[i]!;
+      touched.push(S.b[s]!);
+      if (S.a[s]! !== 0) touched.push(S.a[s]!);
+    }
     reportNonFinite(world, touched, 'integrate');
   }
 };

@@ -15,9 +15,12 @@ export const thrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.Thrust, c.Force, c.Mass]);
   if (ents.length === 0) return;
-  const T = c.Thrust, m = c.Mass.value;
+  const T = c.Thrust,
+    m = c.Mass.value;
   const elapsed = world.time - world.substepStart;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const mdot = T.massFlowRate[e]!;
@@ -28,7 +31,9 @@ export const thrustSystem: ForceLaw = (world: PhysicsWorld): void => {
     if (mdot <= 0 || fuel <= 0 || burnt > fuel * (1 + 1e-9)) continue;
     const ms = m[e]!;
     const f = (T.exhaustVelocity[e]! * mdot * ms) / (ms - burnt);
-    fx[e] = fx[e]! + f * T.dirX[e]!; fy[e] = fy[e]! + f * T.dirY[e]!; fz[e] = fz[e]! + f * T.dirZ[e]!;
+    fx[e] = fx[e]! + f * T.dirX[e]!;
+    fy[e] = fy[e]! + f * T.dirY[e]!;
+    fz[e] = fz[e]! + f * T.dirZ[e]!;
   }
 };
 thrustSystem.velocityDependent = false;
@@ -42,7 +47,8 @@ export function burnFuelSystem(world: PhysicsWorld): void {
   const c = world.components;
   const ents = query(world, [c.Thrust, c.Mass]);
   if (ents.length === 0) return;
-  const T = c.Thrust, M = c.Mass;
+  const T = c.Thrust,
+    M = c.Mass;
   const h = world.h;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;

@@ -12,18 +12,28 @@ export const vortexSystem: ForceLaw = (world: PhysicsWorld): void => {
   const ents = query(world, [c.Vortex, c.Position, c.Force]);
   if (ents.length === 0) return;
   const V = c.Vortex;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const ax = V.axisX[e]!, ay = V.axisY[e]!, az = V.axisZ[e]!;
-    let dx = px[e]! - V.cx[e]!, dy = py[e]! - V.cy[e]!, dz = pz[e]! - V.cz[e]!;
+    const ax = V.axisX[e]!,
+      ay = V.axisY[e]!,
+      az = V.axisZ[e]!;
+    let dx = px[e]! - V.cx[e]!,
+      dy = py[e]! - V.cy[e]!,
+      dz = pz[e]! - V.cz[e]!;
     const along = dx * ax + dy * ay + dz * az;
-    dx -= along * ax; dy -= along * ay; dz -= along * az;
+    dx -= along * ax;
+    dy -= along * ay;
+    dz -= along * az;
     const r = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (r === 0) continue;
     // axis x r_hat, scaled by k r^(n-1).
-    const k = (V.k[e]! * Math.pow(r, V.n[e]! - 1)) / r;
+    const k = (V.k[e]! * r ** (V.n[e]! - 1)) / r;
     fx[e] = fx[e]! + k * (ay * dz - az * dy);
     fy[e] = fy[e]! + k * (az * dx - ax * dz);
     fz[e] = fz[e]! + k * (ax * dy - ay * dx);

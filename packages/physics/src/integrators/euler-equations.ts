@@ -1,8 +1,11 @@
-import type { PhysicsWorld } from '../world.js';
 import { hasComponent } from 'bitecs';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
+import type { PhysicsWorld } from '../world.js';
 
-const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3), ab = new Float64Array(3);
+const b = new Float64Array(3),
+  t = new Float64Array(3),
+  out = new Float64Array(3),
+  ab = new Float64Array(3);
 
 /**
  * Angular acceleration of a 3D body with principal moments (Ix, Iy, Iz) from Euler's equations,
@@ -10,11 +13,20 @@ const b = new Float64Array(3), t = new Float64Array(3), out = new Float64Array(3
  * alpha = R I^-1 (R^T tau - w_b x I w_b), w_b = R^T w. Writes into res[0..2] (rad/s^2).
  * Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5; Ramtal and Dobre ch. 15.
  */
-export function eulerAcceleration(world: PhysicsWorld, e: number, torqueX: number, torqueY: number, torqueZ: number, res: Float64Array): void {
+export function eulerAcceleration(
+  world: PhysicsWorld,
+  e: number,
+  torqueX: number,
+  torqueY: number,
+  torqueZ: number,
+  res: Float64Array,
+): void {
   eulerBodyAcceleration(world, e, torqueX, torqueY, torqueZ, ab);
   const q = world.components.Orientation;
   rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, ab[0]!, ab[1]!, ab[2]!, out);
-  res[0] = out[0]!; res[1] = out[1]!; res[2] = out[2]!;
+  res[0] = out[0]!;
+  res[1] = out[1]!;
+  res[2] = out[2]!;
 }
 
 /**
@@ -23,20 +35,37 @@ export function eulerAcceleration(world: PhysicsWorld, e: number, torqueX: numbe
  * The explicit schemes stage these bodies' angular velocity in the body frame (see
  * integrators/state.ts). Writes into res[0..2]. Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5.
  */
-export function eulerBodyAcceleration(world: PhysicsWorld, e: number, torqueX: number, torqueY: number, torqueZ: number, res: Float64Array): void {
+export function eulerBodyAcceleration(
+  world: PhysicsWorld,
+  e: number,
+  torqueX: number,
+  torqueY: number,
+  torqueZ: number,
+  res: Float64Array,
+): void {
   const c = world.components;
-  const q = c.Orientation, T = c.InertiaTensor;
-  const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+  const q = c.Orientation,
+    T = c.InertiaTensor;
+  const qx = q.x[e]!,
+    qy = q.y[e]!,
+    qz = q.z[e]!,
+    qw = q.w[e]!;
   rotateVectorInverse(qx, qy, qz, qw, c.AngularVelocity.x[e]!, c.AngularVelocity.y[e]!, c.AngularVelocity.z[e]!, b);
   rotateVectorInverse(qx, qy, qz, qw, torqueX, torqueY, torqueZ, t);
-  const wx = b[0]!, wy = b[1]!, wz = b[2]!;
-  const Lx = T.x[e]! * wx, Ly = T.y[e]! * wy, Lz = T.z[e]! * wz;
+  const wx = b[0]!,
+    wy = b[1]!,
+    wz = b[2]!;
+  const Lx = T.x[e]! * wx,
+    Ly = T.y[e]! * wy,
+    Lz = T.z[e]! * wz;
   res[0] = (t[0]! - (wy * Lz - wz * Ly)) * T.invX[e]!;
   res[1] = (t[1]! - (wz * Lx - wx * Lz)) * T.invY[e]!;
   res[2] = (t[2]! - (wx * Ly - wy * Lx)) * T.invZ[e]!;
 }
 
-const wb = new Float64Array(3), tb = new Float64Array(3), back = new Float64Array(3);
+const wb = new Float64Array(3),
+  tb = new Float64Array(3),
+  back = new Float64Array(3);
 
 /**
  * Semi-implicit Euler's angular velocity update for a body with a principal inertia tensor:
@@ -49,28 +78,56 @@ const wb = new Float64Array(3), tb = new Float64Array(3), back = new Float64Arra
  */
 export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number, torqueX: number, torqueY: number, torqueZ: number): void {
   const c = world.components;
-  const q = c.Orientation, T = c.InertiaTensor, W = c.AngularVelocity;
-  const qx = q.x[e]!, qy = q.y[e]!, qz = q.z[e]!, qw = q.w[e]!;
+  const q = c.Orientation,
+    T = c.InertiaTensor,
+    W = c.AngularVelocity;
+  const qx = q.x[e]!,
+    qy = q.y[e]!,
+    qz = q.z[e]!,
+    qw = q.w[e]!;
   rotateVectorInverse(qx, qy, qz, qw, W.x[e]!, W.y[e]!, W.z[e]!, wb);
   rotateVectorInverse(qx, qy, qz, qw, torqueX, torqueY, torqueZ, tb);
-  const Ix = T.x[e]!, Iy = T.y[e]!, Iz = T.z[e]!, ix = T.invX[e]!, iy = T.invY[e]!, iz = T.invZ[e]!;
-  let wx = wb[0]! + h * tb[0]! * ix, wy = wb[1]! + h * tb[1]! * iy, wz = wb[2]! + h * tb[2]! * iz;
+  const Ix = T.x[e]!,
+    Iy = T.y[e]!,
+    Iz = T.z[e]!,
+    ix = T.invX[e]!,
+    iy = T.invY[e]!,
+    iz = T.invZ[e]!;
+  let wx = wb[0]! + h * tb[0]! * ix,
+    wy = wb[1]! + h * tb[1]! * iy,
+    wz = wb[2]! + h * tb[2]! * iz;
   if (ix > 0 && iy > 0 && iz > 0) {
-    const Lx = Ix * wx, Ly = Iy * wy, Lz = Iz * wz;
-    const fx = h * (wy * Lz - wz * Ly), fy = h * (wz * Lx - wx * Lz), fz = h * (wx * Ly - wy * Lx);
-    const a00 = Ix, a01 = h * wz * (Iz - Iy), a02 = h * wy * (Iz - Iy);
-    const a10 = h * wz * (Ix - Iz), a11 = Iy, a12 = h * wx * (Ix - Iz);
-    const a20 = h * wy * (Iy - Ix), a21 = h * wx * (Iy - Ix), a22 = Iz;
+    const Lx = Ix * wx,
+      Ly = Iy * wy,
+      Lz = Iz * wz;
+    const fx = h * (wy * Lz - wz * Ly),
+      fy = h * (wz * Lx - wx * Lz),
+      fz = h * (wx * Ly - wy * Lx);
+    const a00 = Ix,
+      a01 = h * wz * (Iz - Iy),
+      a02 = h * wy * (Iz - Iy);
+    const a10 = h * wz * (Ix - Iz),
+      a11 = Iy,
+      a12 = h * wx * (Ix - Iz);
+    const a20 = h * wy * (Iy - Ix),
+      a21 = h * wx * (Iy - Ix),
+      a22 = Iz;
     // Solve J d = -f by Cramer's rule.
-    const c00 = a11 * a22 - a12 * a21, c01 = a12 * a20 - a10 * a22, c02 = a10 * a21 - a11 * a20;
+    const c00 = a11 * a22 - a12 * a21,
+      c01 = a12 * a20 - a10 * a22,
+      c02 = a10 * a21 - a11 * a20;
     const det = a00 * c00 + a01 * c01 + a02 * c02;
     if (det !== 0) {
       const inv = 1 / det;
-      const bx = -fx, by = -fy, bz = -fz;
+      const bx = -fx,
+        by = -fy,
+        bz = -fz;
       const dx = (bx * c00 + by * (a02 * a21 - a01 * a22) + bz * (a01 * a12 - a02 * a11)) * inv;
       const dy = (bx * c01 + by * (a00 * a22 - a02 * a20) + bz * (a02 * a10 - a00 * a12)) * inv;
       const dz = (bx * c02 + by * (a01 * a20 - a00 * a21) + bz * (a00 * a11 - a01 * a10)) * inv;
-      wx += dx; wy += dy; wz += dz;
+      wx += dx;
+      wy += dy;
+      wz += dz;
     }
   } else {
     if (ix === 0) wx = 0;
@@ -78,7 +135,9 @@ export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number
     if (iz === 0) wz = 0;
   }
   rotateVector(qx, qy, qz, qw, wx, wy, wz, back);
-  W.x[e] = back[0]!; W.y[e] = back[1]!; W.z[e] = back[2]!;
+  W.x[e] = back[0]!;
+  W.y[e] = back[1]!;
+  W.z[e] = back[2]!;
 }
 
 /**
@@ -99,22 +158,49 @@ export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number
  */
 export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>, h: number): void {
   const c = world.components;
-  const q = c.Orientation, T = c.InertiaTensor, W = c.AngularVelocity, Tq = c.Torque;
+  const q = c.Orientation,
+    T = c.InertiaTensor,
+    W = c.AngularVelocity,
+    Tq = c.Torque;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const has = hasComponent(world, e, Tq);
-    const torqueX = has ? Tq.x[e]! : 0, torqueY = has ? Tq.y[e]! : 0, torqueZ = has ? Tq.z[e]! : 0;
-    const Ix = T.x[e]!, Iy = T.y[e]!, Iz = T.z[e]!, ix = T.invX[e]!, iy = T.invY[e]!, iz = T.invZ[e]!;
-    let x = q.x[e]!, y = q.y[e]!, z = q.z[e]!, w = q.w[e]!;
+    const torqueX = has ? Tq.x[e]! : 0,
+      torqueY = has ? Tq.y[e]! : 0,
+      torqueZ = has ? Tq.z[e]! : 0;
+    const Ix = T.x[e]!,
+      Iy = T.y[e]!,
+      Iz = T.z[e]!,
+      ix = T.invX[e]!,
+      iy = T.invY[e]!,
+      iz = T.invZ[e]!;
+    let x = q.x[e]!,
+      y = q.y[e]!,
+      z = q.z[e]!,
+      w = q.w[e]!;
     // World momentum plus the torque kick, then into the body frame (v' = v + w t + u x t, t = 2 u x v,
     // u the quaternion's vector part; its conjugate for world to body).
-    const wx = W.x[e]!, wy = W.y[e]!, wz = W.z[e]!;
-    let tx = 2 * (-y * wz + z * wy), ty = 2 * (-z * wx + x * wz), tz = 2 * (-x * wy + y * wx);
-    const bx = (wx + w * tx + (-y * tz + z * ty)) * Ix, by = (wy + w * ty + (-z * tx + x * tz)) * Iy, bz = (wz + w * tz + (-x * ty + y * tx)) * Iz;
-    tx = 2 * (y * bz - z * by); ty = 2 * (z * bx - x * bz); tz = 2 * (x * by - y * bx);
-    const lx = bx + w * tx + (y * tz - z * ty) + h * torqueX, ly = by + w * ty + (z * tx - x * tz) + h * torqueY, lz = bz + w * tz + (x * ty - y * tx) + h * torqueZ;
-    tx = 2 * (-y * lz + z * ly); ty = 2 * (-z * lx + x * lz); tz = 2 * (-x * ly + y * lx);
-    let L0 = lx + w * tx + (-y * tz + z * ty), L1 = ly + w * ty + (-z * tx + x * tz), L2 = lz + w * tz + (-x * ty + y * tx);
+    const wx = W.x[e]!,
+      wy = W.y[e]!,
+      wz = W.z[e]!;
+    let tx = 2 * (-y * wz + z * wy),
+      ty = 2 * (-z * wx + x * wz),
+      tz = 2 * (-x * wy + y * wx);
+    const bx = (wx + w * tx + (-y * tz + z * ty)) * Ix,
+      by = (wy + w * ty + (-z * tx + x * tz)) * Iy,
+      bz = (wz + w * tz + (-x * ty + y * tx)) * Iz;
+    tx = 2 * (y * bz - z * by);
+    ty = 2 * (z * bx - x * bz);
+    tz = 2 * (x * by - y * bx);
+    const lx = bx + w * tx + (y * tz - z * ty) + h * torqueX,
+      ly = by + w * ty + (z * tx - x * tz) + h * torqueY,
+      lz = bz + w * tz + (x * ty - y * tx) + h * torqueZ;
+    tx = 2 * (-y * lz + z * ly);
+    ty = 2 * (-z * lx + x * lz);
+    tz = 2 * (-x * ly + y * lx);
+    let L0 = lx + w * tx + (-y * tz + z * ty),
+      L1 = ly + w * ty + (-z * tx + x * tz),
+      L2 = lz + w * tz + (-x * ty + y * tx);
     if (ix === 0) L0 = 0;
     if (iy === 0) L1 = 0;
     if (iz === 0) L2 = 0;
@@ -126,55 +212,132 @@ export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>
     let a = 0;
     a = hh * (L0 * ix); // turn 1: body axis x
     if (a !== 0) {
-      const cs = Math.cos(a), sn = Math.sin(a), li = L1, lj = L2;
-      L1 = cs * li + sn * lj; L2 = -sn * li + cs * lj;
-      const hs = Math.sin(0.5 * a), dw = Math.cos(0.5 * a), dx = hs, dy = 0, dz = 0;
-      const nx = w * dx + x * dw + y * dz - z * dy, ny = w * dy - x * dz + y * dw + z * dx;
-      const nz = w * dz + x * dy - y * dx + z * dw, nw = w * dw - x * dx - y * dy - z * dz;
-      x = nx; y = ny; z = nz; w = nw;
+      const cs = Math.cos(a),
+        sn = Math.sin(a),
+        li = L1,
+        lj = L2;
+      L1 = cs * li + sn * lj;
+      L2 = -sn * li + cs * lj;
+      const hs = Math.sin(0.5 * a),
+        dw = Math.cos(0.5 * a),
+        dx = hs,
+        dy = 0,
+        dz = 0;
+      const nx = w * dx + x * dw + y * dz - z * dy,
+        ny = w * dy - x * dz + y * dw + z * dx;
+      const nz = w * dz + x * dy - y * dx + z * dw,
+        nw = w * dw - x * dx - y * dy - z * dz;
+      x = nx;
+      y = ny;
+      z = nz;
+      w = nw;
     }
     a = hh * (L1 * iy); // turn 2: body axis y
     if (a !== 0) {
-      const cs = Math.cos(a), sn = Math.sin(a), li = L2, lj = L0;
-      L2 = cs * li + sn * lj; L0 = -sn * li + cs * lj;
-      const hs = Math.sin(0.5 * a), dw = Math.cos(0.5 * a), dx = 0, dy = hs, dz = 0;
-      const nx = w * dx + x * dw + y * dz - z * dy, ny = w * dy - x * dz + y * dw + z * dx;
-      const nz = w * dz + x * dy - y * dx + z * dw, nw = w * dw - x * dx - y * dy - z * dz;
-      x = nx; y = ny; z = nz; w = nw;
+      const cs = Math.cos(a),
+        sn = Math.sin(a),
+        li = L2,
+        lj = L0;
+      L2 = cs * li + sn * lj;
+      L0 = -sn * li + cs * lj;
+      const hs = Math.sin(0.5 * a),
+        dw = Math.cos(0.5 * a),
+        dx = 0,
+        dy = hs,
+        dz = 0;
+      const nx = w * dx + x * dw + y * dz - z * dy,
+        ny = w * dy - x * dz + y * dw + z * dx;
+      const nz = w * dz + x * dy - y * dx + z * dw,
+        nw = w * dw - x * dx - y * dy - z * dz;
+      x = nx;
+      y = ny;
+      z = nz;
+      w = nw;
     }
     a = h * (L2 * iz); // turn 3: body axis z
     if (a !== 0) {
-      const cs = Math.cos(a), sn = Math.sin(a), li = L0, lj = L1;
-      L0 = cs * li + sn * lj; L1 = -sn * li + cs * lj;
-      const hs = Math.sin(0.5 * a), dw = Math.cos(0.5 * a), dx = 0, dy = 0, dz = hs;
-      const nx = w * dx + x * dw + y * dz - z * dy, ny = w * dy - x * dz + y * dw + z * dx;
-      const nz = w * dz + x * dy - y * dx + z * dw, nw = w * dw - x * dx - y * dy - z * dz;
-      x = nx; y = ny; z = nz; w = nw;
+      const cs = Math.cos(a),
+        sn = Math.sin(a),
+        li = L0,
+        lj = L1;
+      L0 = cs * li + sn * lj;
+      L1 = -sn * li + cs * lj;
+      const hs = Math.sin(0.5 * a),
+        dw = Math.cos(0.5 * a),
+        dx = 0,
+        dy = 0,
+        dz = hs;
+      const nx = w * dx + x * dw + y * dz - z * dy,
+        ny = w * dy - x * dz + y * dw + z * dx;
+      const nz = w * dz + x * dy - y * dx + z * dw,
+        nw = w * dw - x * dx - y * dy - z * dz;
+      x = nx;
+      y = ny;
+      z = nz;
+      w = nw;
     }
     a = hh * (L1 * iy); // turn 4: body axis y
     if (a !== 0) {
-      const cs = Math.cos(a), sn = Math.sin(a), li = L2, lj = L0;
-      L2 = cs * li + sn * lj; L0 = -sn * li + cs * lj;
-      const hs = Math.sin(0.5 * a), dw = Math.cos(0.5 * a), dx = 0, dy = hs, dz = 0;
-      const nx = w * dx + x * dw + y * dz - z * dy, ny = w * dy - x * dz + y * dw + z * dx;
-      const nz = w * dz + x * dy - y * dx + z * dw, nw = w * dw - x * dx - y * dy - z * dz;
-      x = nx; y = ny; z = nz; w = nw;
+      const cs = Math.cos(a),
+        sn = Math.sin(a),
+        li = L2,
+        lj = L0;
+      L2 = cs * li + sn * lj;
+      L0 = -sn * li + cs * lj;
+      const hs = Math.sin(0.5 * a),
+        dw = Math.cos(0.5 * a),
+        dx = 0,
+        dy = hs,
+        dz = 0;
+      const nx = w * dx + x * dw + y * dz - z * dy,
+        ny = w * dy - x * dz + y * dw + z * dx;
+      const nz = w * dz + x * dy - y * dx + z * dw,
+        nw = w * dw - x * dx - y * dy - z * dz;
+      x = nx;
+      y = ny;
+      z = nz;
+      w = nw;
     }
     a = hh * (L0 * ix); // turn 5: body axis x
     if (a !== 0) {
-      const cs = Math.cos(a), sn = Math.sin(a), li = L1, lj = L2;
-      L1 = cs * li + sn * lj; L2 = -sn * li + cs * lj;
-      const hs = Math.sin(0.5 * a), dw = Math.cos(0.5 * a), dx = hs, dy = 0, dz = 0;
-      const nx = w * dx + x * dw + y * dz - z * dy, ny = w * dy - x * dz + y * dw + z * dx;
-      const nz = w * dz + x * dy - y * dx + z * dw, nw = w * dw - x * dx - y * dy - z * dz;
-      x = nx; y = ny; z = nz; w = nw;
+      const cs = Math.cos(a),
+        sn = Math.sin(a),
+        li = L1,
+        lj = L2;
+      L1 = cs * li + sn * lj;
+      L2 = -sn * li + cs * lj;
+      const hs = Math.sin(0.5 * a),
+        dw = Math.cos(0.5 * a),
+        dx = hs,
+        dy = 0,
+        dz = 0;
+      const nx = w * dx + x * dw + y * dz - z * dy,
+        ny = w * dy - x * dz + y * dw + z * dx;
+      const nz = w * dz + x * dy - y * dx + z * dw,
+        nw = w * dw - x * dx - y * dy - z * dz;
+      x = nx;
+      y = ny;
+      z = nz;
+      w = nw;
     }
     const n = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
-    x *= n; y *= n; z *= n; w *= n;
-    q.x[e] = x; q.y[e] = y; q.z[e] = z; q.w[e] = w;
+    x *= n;
+    y *= n;
+    z *= n;
+    w *= n;
+    q.x[e] = x;
+    q.y[e] = y;
+    q.z[e] = z;
+    q.w[e] = w;
     // omega = R (I^-1 L_body).
-    const ox = L0 * ix, oy = L1 * iy, oz = L2 * iz;
-    tx = 2 * (y * oz - z * oy); ty = 2 * (z * ox - x * oz); tz = 2 * (x * oy - y * ox);
-    W.x[e] = ox + w * tx + (y * tz - z * ty); W.y[e] = oy + w * ty + (z * tx - x * tz); W.z[e] = oz + w * tz + (x * ty - y * tx);
+    const ox = L0 * ix,
+      oy = L1 * iy,
+      oz = L2 * iz;
+    tx = 2 * (y * oz - z * oy);
+    ty = 2 * (z * ox - x * oz);
+    tz = 2 * (x * oy - y * ox);
+    W.x[e] = ox + w * tx + (y * tz - z * ty);
+    W.y[e] = oy + w * ty + (z * tx - x * tz);
+    W.z[e] = oz + w * tz + (x * ty - y * tx);
   }
 }

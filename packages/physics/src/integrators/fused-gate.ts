@@ -1,21 +1,21 @@
-import type { PhysicsWorld, System } from '../world.js';
-import { query } from '../query.js';
-import { clearForcesSystem } from '../forces/clear.js';
-import { calmAir, linearDragSystem, liftSystem, quadraticDragSystem } from '../forces/drag.js';
-import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
-import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
-import { centralForceSystem } from '../forces/central.js';
-import { buoyancySystem } from '../forces/fluid.js';
-import { springSystem } from '../forces/spring.js';
-import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
-import { thrustSystem } from '../forces/thrust.js';
 import { angularDampingSystem } from '../forces/angular-damping.js';
 import { ballastTrimSystem } from '../forces/ballast.js';
 import { bodyThrustSystem } from '../forces/body-thrust.js';
+import { centralForceSystem } from '../forces/central.js';
+import { clearForcesSystem } from '../forces/clear.js';
+import { calmAir, liftSystem, linearDragSystem, quadraticDragSystem } from '../forces/drag.js';
+import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
+import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
+import { buoyancySystem } from '../forces/fluid.js';
+import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
 import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
+import { springSystem } from '../forces/spring.js';
+import { thrustSystem } from '../forces/thrust.js';
 import { vortexSystem } from '../forces/vortex.js';
-import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
+import { query } from '../query.js';
+import type { PhysicsWorld, System } from '../world.js';
 import { beginFusedSubstep } from './fused-state.js';
+import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
 
 /**
  * When a substep may fuse stages 2 to 4 for the world's forced bodies: one pass that writes each
@@ -68,7 +68,10 @@ type Components = PhysicsWorld['components'];
  * Built-in laws that may stay in the stage while they have nothing to act on: the terms of the law's
  * own query, and the fewest entities it acts on (2 for the pairwise laws).
  */
-const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], number]> = new Map<System, readonly [(c: Components) => object[], number]>([
+const IDLE_WHEN: ReadonlyMap<System, readonly [(c: Components) => object[], number]> = new Map<
+  System,
+  readonly [(c: Components) => object[], number]
+>([
   [mutualGravitySystem, [(c) => [c.MutualGravity, c.Position, c.Mass, c.Force], 2]],
   [attractorSystem, [(c) => [c.Attractor, c.Position], 1]],
   [coulombSystem, [(c) => [c.Charge, c.Position, c.Force], 2]],
@@ -90,9 +93,15 @@ const termCache = new WeakMap<Components, Map<System, object[]>>();
 
 function idleTerms(c: Components, law: System, build: (c: Components) => object[]): object[] {
   let m = termCache.get(c);
-  if (m === undefined) { m = new Map(); termCache.set(c, m); }
+  if (m === undefined) {
+    m = new Map();
+    termCache.set(c, m);
+  }
   let t = m.get(law);
-  if (t === undefined) { t = build(c); m.set(law, t); }
+  if (t === undefined) {
+    t = build(c);
+    m.set(law, t);
+  }
   return t;
 }
 
@@ -107,7 +116,9 @@ export function registerFusedIntegrator(system: System): void {
 export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (world.integrator !== 'semi-implicit-euler') return false;
   const stages = world.stages;
-  const clear = stages.clearForces, integrate = stages.integrate, forces = stages.forces;
+  const clear = stages.clearForces,
+    integrate = stages.integrate,
+    forces = stages.forces;
   if (clear.length !== 1 || clear[0] !== clearForcesSystem) return false;
   if (integrate.length === 0 || integrate[0] !== integrator) return false;
   const forced = forcedBodies(world).length;
@@ -115,7 +126,10 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   let absorbed = 0;
   for (let i = 0; i < forces.length; i++) {
     const s = forces[i]!;
-    if (ABSORBED.includes(s)) { absorbed++; continue; }
+    if (ABSORBED.includes(s)) {
+      absorbed++;
+      continue;
+    }
     if (TORQUE_ONLY.has(s)) continue;
     const idle = IDLE_WHEN.get(s);
     if (idle === undefined || query(world, idleTerms(world.components, s, idle[0])).length >= idle[1]) return false;
@@ -124,7 +138,13 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (absorbed !== ABSORBED.length) return false;
   for (let i = 0; i < ABSORBED.length; i++) if (forces.indexOf(ABSORBED[i]!) !== forces.lastIndexOf(ABSORBED[i]!)) return false;
   if (!calmAir(world)) return false;
-  if (query(world, idleTerms(world.components, clearForcesSystem, (c) => [c.Force])).length !== forced) return false;
+  if (
+    query(
+      world,
+      idleTerms(world.components, clearForcesSystem, (c) => [c.Force]),
+    ).length !== forced
+  )
+    return false;
   return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
 }
 

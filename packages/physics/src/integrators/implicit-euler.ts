@@ -1,7 +1,16 @@
+import { rotateFrom } from '../math/quaternion.js';
 import type { PhysicsWorld } from '../world.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
-import { accelerationsAt, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, type IntegratorScratch } from './state.js';
-import { rotateFrom } from '../math/quaternion.js';
+import {
+  accelerationsAt,
+  checkFinite,
+  gather,
+  getScratch,
+  type IntegratorScratch,
+  saveState,
+  shiftByGravity,
+  stageSlopes,
+} from './state.js';
 
 /** Newton iterations before implicit Euler gives up on a step. */
 const MAX_NEWTON = 30;
@@ -10,8 +19,22 @@ const MAX_KRYLOV = 200;
 /** Converged when |R|_inf <= RESIDUAL_TOL (1 + |v|_inf + h |a|_inf): the velocity equation holds to ~1e-10 of its terms. */
 const RESIDUAL_TOL = 1e-10;
 
-interface Work { n: number; u: Float64Array; u0: Float64Array; A: Float64Array; R: Float64Array; d: Float64Array;
-  r: Float64Array; rh: Float64Array; p: Float64Array; v: Float64Array; s: Float64Array; t: Float64Array; w: Float64Array; Ap: Float64Array }
+interface Work {
+  n: number;
+  u: Float64Array;
+  u0: Float64Array;
+  A: Float64Array;
+  R: Float64Array;
+  d: Float64Array;
+  r: Float64Array;
+  rh: Float64Array;
+  p: Float64Array;
+  v: Float64Array;
+  s: Float64Array;
+  t: Float64Array;
+  w: Float64Array;
+  Ap: Float64Array;
+}
 
 function work(world: PhysicsWorld, n: number): Work {
   const holder = world as { implicitWork?: Work };
@@ -81,7 +104,8 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   gather(world, s);
   saveState(world, s, setPrevious);
   stageSlopes(world, s, t, evaluate);
-  const nm = s.nMovers, ns = s.nSpinners;
+  const nm = s.nMovers,
+    ns = s.nSpinners;
   const n = 3 * (nm + ns);
   if (n === 0) return true;
   const W = work(world, n);
@@ -91,7 +115,10 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
   readVelocities(world, s, u0);
   readAccelerations(s, A);
   let scale = 0;
-  for (let i = 0; i < n; i++) { u[i] = u0[i]! + h * A[i]!; scale = Math.max(scale, Math.abs(u0[i]!), h * Math.abs(A[i]!)); }
+  for (let i = 0; i < n; i++) {
+    u[i] = u0[i]! + h * A[i]!;
+    scale = Math.max(scale, Math.abs(u0[i]!), h * Math.abs(A[i]!));
+  }
   const tol = RESIDUAL_TOL * (1 + scale);
 
   for (let it = 0; it <= MAX_NEWTON; it++) {
@@ -99,7 +126,11 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
     accelerationsAt(world, s, t + h);
     readAccelerations(s, A);
     let residual = 0;
-    for (let i = 0; i < n; i++) { const r = u[i]! - u0[i]! - h * A[i]!; R[i] = -r; residual = Math.max(residual, Math.abs(r)); }
+    for (let i = 0; i < n; i++) {
+      const r = u[i]! - u0[i]! - h * A[i]!;
+      R[i] = -r;
+      residual = Math.max(residual, Math.abs(r));
+    }
     if (residual <= tol) {
       // The drift used the end velocity; gravity's share of it is made exact (see shiftByGravity).
       shiftByGravity(world, s, -0.5 * h * h);
@@ -123,10 +154,20 @@ function readVelocities(world: PhysicsWorld, s: IntegratorScratch, out: Float64A
   const [, , , u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   let k = 0;
-  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[k++] = u0[e]!; out[k++] = v0[e]!; out[k++] = w0[e]!; }
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    out[k++] = u0[e]!;
+    out[k++] = v0[e]!;
+    out[k++] = w0[e]!;
+  }
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
-  for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[k++] = wa[e]!; out[k++] = wb[e]!; out[k++] = wc[e]!; }
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    out[k++] = wa[e]!;
+    out[k++] = wb[e]!;
+    out[k++] = wc[e]!;
+  }
   void c;
 }
 
@@ -135,37 +176,68 @@ function readAccelerations(s: IntegratorScratch, out: Float64Array): void {
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   let k = 0;
-  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[k++] = ax[e]!; out[k++] = ay[e]!; out[k++] = az[e]!; }
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    out[k++] = ax[e]!;
+    out[k++] = ay[e]!;
+    out[k++] = az[e]!;
+  }
   const sp = s.spinners;
-  for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[k++] = bx[e]!; out[k++] = by[e]!; out[k++] = bz[e]!; }
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    out[k++] = bx[e]!;
+    out[k++] = by[e]!;
+    out[k++] = bz[e]!;
+  }
 }
 
 /** Writes the end state implied by end velocities u: v = u, x = x0 + h u; w = u, orientation turned by h w. */
 function writeState(world: PhysicsWorld, s: IntegratorScratch, h: number, u: Float64Array): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const [x0, y0, z0] = s.x0 as [Float64Array, Float64Array, Float64Array];
   const is2D = world.dimensions === 2;
   const m = s.movers;
   let k = 0;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
-    const a = u[k++]!, b = u[k++]!, cz = u[k++]!;
-    vx[e] = a; vy[e] = b; px[e] = x0[e]! + h * a; py[e] = y0[e]! + h * b;
-    if (!is2D) { vz[e] = cz; pz[e] = z0[e]! + h * cz; }
+    const a = u[k++]!,
+      b = u[k++]!,
+      cz = u[k++]!;
+    vx[e] = a;
+    vy[e] = b;
+    px[e] = x0[e]! + h * a;
+    py[e] = y0[e]! + h * b;
+    if (!is2D) {
+      vz[e] = cz;
+      pz[e] = z0[e]! + h * cz;
+    }
   }
   if (s.nSpinners === 0) return;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
-  const ang = c.Angle.value, q = c.Orientation;
+  const ang = c.Angle.value,
+    q = c.Orientation;
   const sp = s.spinners;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    const a = u[k++]!, b = u[k++]!, cz = u[k++]!;
+    const a = u[k++]!,
+      b = u[k++]!,
+      cz = u[k++]!;
     wz[e] = cz;
-    if (is2D) { ang[e] = qa[e]! + h * cz; continue; }
-    wx[e] = a; wy[e] = b;
+    if (is2D) {
+      ang[e] = qa[e]! + h * cz;
+      continue;
+    }
+    wx[e] = a;
+    wy[e] = b;
     rotateFrom(q.x, q.y, q.z, q.w, e, qa[e]!, qb[e]!, qc[e]!, qd[e]!, h * a, h * b, h * cz);
   }
 }
@@ -177,11 +249,27 @@ function dot(a: Float64Array, b: Float64Array, n: number): number {
 }
 
 /** out = J p with J = I - h da/du, by a forward difference of the accelerations (one force evaluation). */
-function jacobianTimes(world: PhysicsWorld, s: IntegratorScratch, h: number, t: number, W: Work, n: number, p: Float64Array, out: Float64Array): void {
+function jacobianTimes(
+  world: PhysicsWorld,
+  s: IntegratorScratch,
+  h: number,
+  t: number,
+  W: Work,
+  n: number,
+  p: Float64Array,
+  out: Float64Array,
+): void {
   const { u, A, w } = W;
-  let pn = 0, un = 0;
-  for (let i = 0; i < n; i++) { pn = Math.max(pn, Math.abs(p[i]!)); un = Math.max(un, Math.abs(u[i]!)); }
-  if (pn === 0) { out.fill(0, 0, n); return; }
+  let pn = 0,
+    un = 0;
+  for (let i = 0; i < n; i++) {
+    pn = Math.max(pn, Math.abs(p[i]!));
+    un = Math.max(un, Math.abs(u[i]!));
+  }
+  if (pn === 0) {
+    out.fill(0, 0, n);
+    return;
+  }
   const eps = (Math.sqrt(Number.EPSILON) * (1 + un)) / pn;
   for (let i = 0; i < n; i++) w[i] = u[i]! + eps * p[i]!;
   writeState(world, s, h, w);
@@ -195,11 +283,18 @@ function jacobianTimes(world: PhysicsWorld, s: IntegratorScratch, h: number, t: 
 function solveBiCGStab(world: PhysicsWorld, s: IntegratorScratch, h: number, t: number, W: Work, n: number): void {
   const { R: b, d, r, rh, p, v, s: sv, t: tv } = W;
   d.fill(0, 0, n);
-  for (let i = 0; i < n; i++) { r[i] = b[i]!; rh[i] = b[i]!; p[i] = 0; v[i] = 0; }
+  for (let i = 0; i < n; i++) {
+    r[i] = b[i]!;
+    rh[i] = b[i]!;
+    p[i] = 0;
+    v[i] = 0;
+  }
   const bnorm = Math.sqrt(dot(b, b, n));
   if (bnorm === 0) return;
   const tol = 1e-12 * bnorm;
-  let rho = 1, alpha = 1, omega = 1;
+  let rho = 1,
+    alpha = 1,
+    omega = 1;
   for (let it = 0; it < MAX_KRYLOV; it++) {
     const rhoNew = dot(rh, r, n);
     if (rhoNew === 0) break;
@@ -211,11 +306,17 @@ function solveBiCGStab(world: PhysicsWorld, s: IntegratorScratch, h: number, t: 
     if (rv === 0) break;
     alpha = rho / rv;
     for (let i = 0; i < n; i++) sv[i] = r[i]! - alpha * v[i]!;
-    if (Math.sqrt(dot(sv, sv, n)) <= tol) { for (let i = 0; i < n; i++) d[i] = d[i]! + alpha * p[i]!; break; }
+    if (Math.sqrt(dot(sv, sv, n)) <= tol) {
+      for (let i = 0; i < n; i++) d[i] = d[i]! + alpha * p[i]!;
+      break;
+    }
     jacobianTimes(world, s, h, t, W, n, sv, tv);
     const tt = dot(tv, tv, n);
     omega = tt === 0 ? 0 : dot(tv, sv, n) / tt;
-    for (let i = 0; i < n; i++) { d[i] = d[i]! + alpha * p[i]! + omega * sv[i]!; r[i] = sv[i]! - omega * tv[i]!; }
+    for (let i = 0; i < n; i++) {
+      d[i] = d[i]! + alpha * p[i]! + omega * sv[i]!;
+      r[i] = sv[i]! - omega * tv[i]!;
+    }
     if (Math.sqrt(dot(r, r, n)) <= tol || omega === 0) break;
   }
 }

@@ -1,9 +1,9 @@
 import type { PhysicsWorld } from '../world.js';
-import type { IntegratorName } from './names.js';
-import { semiImplicitEuler } from './semi-implicit-euler.js';
-import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
-import { implicitEuler } from './implicit-euler.js';
 import { registerFusedIntegrator } from './fused-gate.js';
+import { implicitEuler } from './implicit-euler.js';
+import type { IntegratorName } from './names.js';
+import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
+import { semiImplicitEuler } from './semi-implicit-euler.js';
 
 /** An integration scheme: advances every moving body of the world by h seconds. */
 export type Integrator = (world: PhysicsWorld, h: number) => void;

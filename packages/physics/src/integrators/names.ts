@@ -11,7 +11,13 @@
  * - `'velocity-verlet'`: kick-drift-kick. Order 2; symplectic.
  */
 export const INTEGRATOR_NAMES = [
-  'explicit-euler', 'semi-implicit-euler', 'implicit-euler', 'rk2', 'rk4', 'position-verlet', 'velocity-verlet',
+  'explicit-euler',
+  'semi-implicit-euler',
+  'implicit-euler',
+  'rk2',
+  'rk4',
+  'position-verlet',
+  'velocity-verlet',
 ] as const;
 
 /** One of `INTEGRATOR_NAMES`. */

@@ -1,4 +1,4 @@
-import { type QueryResult } from 'bitecs';
+import type { QueryResult } from 'bitecs';
 import { Not, query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 

@@ -1,9 +1,8 @@
-import type { PhysicsWorld } from '../world.js';
 import { reportNonFinite } from '../errors.js';
-import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js';
 import { rotateInPlace } from '../math/quaternion.js';
+import type { PhysicsWorld } from '../world.js';
 import { splitRigidRotations } from './euler-equations.js';
-
+import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js';
 
 /**
  * Angular velocity update of the semi-implicit Euler scheme: w += tau I^-1 h with a scalar moment of
@@ -20,8 +19,12 @@ export function applyTorques(world: PhysicsWorld, h: number): void {
   }
   const ents = torquedBodies(world);
   if (ents.length === 0) return;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const tx = c.Torque.x,
+    ty = c.Torque.y,
+    tz = c.Torque.z;
   const ii = c.Inertia.inv;
   if (world.dimensions === 2) {
     for (let i = 0; i < ents.length; i++) {
@@ -61,7 +64,8 @@ export function advanceOrientations(world: PhysicsWorld, h: number): void {
 
 /** 2D: angle += w_z h for every body of `ents`; returns the sum of their w_z (NaN if one is not finite). */
 function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
-  const a = world.components.Angle.value, wz = world.components.AngularVelocity.z;
+  const a = world.components.Angle.value,
+    wz = world.components.AngularVelocity.z;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
@@ -75,12 +79,19 @@ function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number):
 /** 3D: q <- exp(w h / 2) q for every body of `ents`; returns the sum of their w components (NaN if one is not finite). */
 function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
-  const qx = c.Orientation.x, qy = c.Orientation.y, qz = c.Orientation.z, qw = c.Orientation.w;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const qx = c.Orientation.x,
+    qy = c.Orientation.y,
+    qz = c.Orientation.z,
+    qw = c.Orientation.w;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
+    const ax = wx[e]!,
+      ay = wy[e]!,
+      az = wz[e]!;
     check += ax + ay + az;
     if (ax !== 0 || ay !== 0 || az !== 0) rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
   }

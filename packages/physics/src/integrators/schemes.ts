@@ -1,10 +1,19 @@
+import { rotateFrom, rotateVector } from '../math/quaternion.js';
 import type { PhysicsWorld, System } from '../world.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
 import {
-  accelerationsAt, accumulate, checkFinite, gather, getScratch, saveState, shiftByGravity, stageSlopes, sumGroups, writeTrial,
+  accelerationsAt,
+  accumulate,
+  checkFinite,
+  gather,
+  getScratch,
   type IntegratorScratch,
+  saveState,
+  shiftByGravity,
+  stageSlopes,
+  sumGroups,
+  writeTrial,
 } from './state.js';
-import { rotateFrom, rotateVector } from '../math/quaternion.js';
 
 /**
  * The explicit and multi-stage integration schemes. Each advances every moving body by h from the
@@ -121,15 +130,23 @@ export function positionVerlet(world: PhysicsWorld, h: number): void {
     accelerationsAt(world, s, t + h / 2);
   }
   // Kick, then drift the second half with the new velocity: x = x0 + h/2 (v0 + v1).
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
-    const nx = u0[e]! + h * ax[e]!, ny = v0[e]! + h * ay[e]!, nz = w0[e]! + h * az[e]!;
-    vx[e] = nx; vy[e] = ny; vz[e] = nz;
+    const nx = u0[e]! + h * ax[e]!,
+      ny = v0[e]! + h * ay[e]!,
+      nz = w0[e]! + h * az[e]!;
+    vx[e] = nx;
+    vy[e] = ny;
+    vz[e] = nz;
     px[e] = x0[e]! + 0.5 * h * (u0[e]! + nx);
     py[e] = y0[e]! + 0.5 * h * (v0[e]! + ny);
     pz[e] = z0[e]! + 0.5 * h * (w0[e]! + nz);
@@ -155,18 +172,26 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
   // Keep a(t) in the sum arrays: acc is overwritten by the next evaluation.
   accumulate(world, s, 1, true);
   // Drift with the half-kicked velocity; predicted end velocity for velocity-dependent laws.
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const S = s.sum;
-  const a0x = S[3]!, a0y = S[4]!, a0z = S[5]!;
+  const a0x = S[3]!,
+    a0y = S[4]!,
+    a0z = S[5]!;
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     px[e] = x0[e]! + h * (u0[e]! + 0.5 * h * a0x[e]!);
     py[e] = y0[e]! + h * (v0[e]! + 0.5 * h * a0y[e]!);
     pz[e] = z0[e]! + h * (w0[e]! + 0.5 * h * a0z[e]!);
-    vx[e] = u0[e]! + h * a0x[e]!; vy[e] = v0[e]! + h * a0y[e]!; vz[e] = w0[e]! + h * a0z[e]!;
+    vx[e] = u0[e]! + h * a0x[e]!;
+    vy[e] = v0[e]! + h * a0y[e]!;
+    vz[e] = w0[e]! + h * a0z[e]!;
   }
   spinHalfKickHalf(world, s, h, 'kdk-drift');
   accelerationsAt(world, s, t + h);
@@ -193,39 +218,62 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
 function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, phase: 'dkd' | 'kdk-drift' | 'kdk-kick'): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const S = s.sum;
-  const s0x = S[10]!, s0y = S[11]!, s0z = S[12]!;
+  const s0x = S[10]!,
+    s0y = S[11]!,
+    s0z = S[12]!;
   const is2D = world.dimensions === 2;
-  const ang = c.Angle.value, q = c.Orientation;
+  const ang = c.Angle.value,
+    q = c.Orientation;
   const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
-  const sp = s.spinners, torqued = s.torqued;
+  const sp = s.spinners,
+    torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    if (!is2D && torqued[e] === 2) { spinBodyFrame(q, wx, wy, wz, s, e, h, phase, ba[e]!, bb[e]!, bc[e]!); continue; }
+    if (!is2D && torqued[e] === 2) {
+      spinBodyFrame(q, wx, wy, wz, s, e, h, phase, ba[e]!, bb[e]!, bc[e]!);
+      continue;
+    }
     let rx: number, ry: number, rz: number;
     if (phase === 'dkd') {
-      const nx = wa[e]! + h * bx[e]!, ny = wb[e]! + h * by[e]!, nz = wc[e]! + h * bz[e]!;
-      rx = 0.5 * h * (wa[e]! + nx); ry = 0.5 * h * (wb[e]! + ny); rz = 0.5 * h * (wc[e]! + nz);
-      wx[e] = nx; wy[e] = ny; wz[e] = nz;
+      const nx = wa[e]! + h * bx[e]!,
+        ny = wb[e]! + h * by[e]!,
+        nz = wc[e]! + h * bz[e]!;
+      rx = 0.5 * h * (wa[e]! + nx);
+      ry = 0.5 * h * (wb[e]! + ny);
+      rz = 0.5 * h * (wc[e]! + nz);
+      wx[e] = nx;
+      wy[e] = ny;
+      wz[e] = nz;
     } else if (phase === 'kdk-drift') {
-      rx = h * (wa[e]! + 0.5 * h * s0x[e]!); ry = h * (wb[e]! + 0.5 * h * s0y[e]!); rz = h * (wc[e]! + 0.5 * h * s0z[e]!);
-      wx[e] = wa[e]! + h * s0x[e]!; wy[e] = wb[e]! + h * s0y[e]!; wz[e] = wc[e]! + h * s0z[e]!;
+      rx = h * (wa[e]! + 0.5 * h * s0x[e]!);
+      ry = h * (wb[e]! + 0.5 * h * s0y[e]!);
+      rz = h * (wc[e]! + 0.5 * h * s0z[e]!);
+      wx[e] = wa[e]! + h * s0x[e]!;
+      wy[e] = wb[e]! + h * s0y[e]!;
+      wz[e] = wc[e]! + h * s0z[e]!;
     } else {
       wx[e] = wa[e]! + 0.5 * h * (s0x[e]! + bx[e]!);
       wy[e] = wb[e]! + 0.5 * h * (s0y[e]! + by[e]!);
       wz[e] = wc[e]! + 0.5 * h * (s0z[e]! + bz[e]!);
       continue;
     }
-    if (is2D) { ang[e] = qa[e]! + rz; continue; }
+    if (is2D) {
+      ang[e] = qa[e]! + rz;
+      continue;
+    }
     rotateFrom(q.x, q.y, q.z, q.w, e, qa[e]!, qb[e]!, qc[e]!, qd[e]!, rx, ry, rz);
   }
 }
 
-const rb = new Float64Array(3), wOut = new Float64Array(3);
+const rb = new Float64Array(3),
+  wOut = new Float64Array(3);
 
 /**
  * `spinHalfKickHalf` for a body with a principal inertia tensor, staged in the body frame (see
@@ -235,29 +283,54 @@ const rb = new Float64Array(3), wOut = new Float64Array(3);
  */
 function spinBodyFrame(
   q: { x: Float64Array; y: Float64Array; z: Float64Array; w: Float64Array },
-  wx: Float64Array, wy: Float64Array, wz: Float64Array, s: IntegratorScratch, e: number, h: number,
-  phase: 'dkd' | 'kdk-drift' | 'kdk-kick', b0x: number, b0y: number, b0z: number,
+  wx: Float64Array,
+  wy: Float64Array,
+  wz: Float64Array,
+  s: IntegratorScratch,
+  e: number,
+  h: number,
+  phase: 'dkd' | 'kdk-drift' | 'kdk-kick',
+  b0x: number,
+  b0y: number,
+  b0z: number,
 ): void {
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const S = s.sum;
-  const a0x = S[10]![e]!, a0y = S[11]![e]!, a0z = S[12]![e]!;
+  const a0x = S[10]![e]!,
+    a0y = S[11]![e]!,
+    a0z = S[12]![e]!;
   let nx: number, ny: number, nz: number;
   if (phase === 'kdk-kick') {
-    nx = b0x + 0.5 * h * (a0x + bx[e]!); ny = b0y + 0.5 * h * (a0y + by[e]!); nz = b0z + 0.5 * h * (a0z + bz[e]!);
+    nx = b0x + 0.5 * h * (a0x + bx[e]!);
+    ny = b0y + 0.5 * h * (a0y + by[e]!);
+    nz = b0z + 0.5 * h * (a0z + bz[e]!);
   } else {
     let rx: number, ry: number, rz: number;
     if (phase === 'dkd') {
-      nx = b0x + h * bx[e]!; ny = b0y + h * by[e]!; nz = b0z + h * bz[e]!;
-      rx = 0.5 * h * (b0x + nx); ry = 0.5 * h * (b0y + ny); rz = 0.5 * h * (b0z + nz);
+      nx = b0x + h * bx[e]!;
+      ny = b0y + h * by[e]!;
+      nz = b0z + h * bz[e]!;
+      rx = 0.5 * h * (b0x + nx);
+      ry = 0.5 * h * (b0y + ny);
+      rz = 0.5 * h * (b0z + nz);
     } else {
-      rx = h * (b0x + 0.5 * h * a0x); ry = h * (b0y + 0.5 * h * a0y); rz = h * (b0z + 0.5 * h * a0z);
-      nx = b0x + h * a0x; ny = b0y + h * a0y; nz = b0z + h * a0z;
+      rx = h * (b0x + 0.5 * h * a0x);
+      ry = h * (b0y + 0.5 * h * a0y);
+      rz = h * (b0z + 0.5 * h * a0z);
+      nx = b0x + h * a0x;
+      ny = b0y + h * a0y;
+      nz = b0z + h * a0z;
     }
-    const x0 = qa[e]!, y0 = qb[e]!, z0 = qc[e]!, w0 = qd[e]!;
+    const x0 = qa[e]!,
+      y0 = qb[e]!,
+      z0 = qc[e]!,
+      w0 = qd[e]!;
     rotateVector(x0, y0, z0, w0, rx, ry, rz, rb);
     rotateFrom(q.x, q.y, q.z, q.w, e, x0, y0, z0, w0, rb[0]!, rb[1]!, rb[2]!);
   }
   rotateVector(q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!, nx, ny, nz, wOut);
-  wx[e] = wOut[0]!; wy[e] = wOut[1]!; wz[e] = wOut[2]!;
+  wx[e] = wOut[0]!;
+  wy[e] = wOut[1]!;
+  wz[e] = wOut[2]!;
 }

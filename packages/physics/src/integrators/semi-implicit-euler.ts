@@ -1,14 +1,13 @@
-import type { PhysicsWorld } from '../world.js';
 import { reportNonFinite } from '../errors.js';
-import { forcedBodies, freeBodies, kinematicBodies } from './queries.js';
-import { advanceOrientations, applyTorques } from './rotation.js';
-import { runParallel } from '../threads/parallel.js';
-import { KERNEL } from '../threads/kernels.js';
-import { fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
-import { fusedForcesOn, setFusedForces } from './fused-state.js';
-import { markStiffQuadratic } from '../forces/drag.js';
 import { dissipationState, STIFF_RATE } from '../forces/dissipation.js';
+import { markStiffQuadratic } from '../forces/drag.js';
 import { reportNonFiniteForces } from '../pipeline/finite.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
+import type { PhysicsWorld } from '../world.js';
+import { fusedForcesOn, setFusedForces } from './fused-state.js';
+import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
+import { advanceOrientations, applyTorques } from './rotation.js';
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -43,26 +42,58 @@ import { reportNonFiniteForces } from '../pipeline/finite.js';
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   const im = c.Mass.inv;
   const g = world.gravity;
-  const gxh = g[0]! * h, gyh = g[1]! * h, gzh = g[2]! * h;
+  const gxh = g[0]! * h,
+    gyh = g[1]! * h,
+    gzh = g[2]! * h;
   // Half of this step's gravity velocity, taken off the drift velocity: exact free fall.
-  const hx = 0.5 * gxh, hy = 0.5 * gyh, hz = 0.5 * gzh;
+  const hx = 0.5 * gxh,
+    hy = 0.5 * gyh,
+    hz = 0.5 * gzh;
   const is2D = world.dimensions === 2;
 
   let ents = forcedBodies(world);
   let check = 0;
   const fused = fusedForcesOn(world);
   if (fused) setFusedForces(world, false);
-  const par = fused || world.threadPool === null ? null : is2D
-    ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced2, [px, py, vx, vy, ox, oy, fx, fy, im], [h, gxh, gyh, hx, hy], ents.length, ents)
-    : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieForced3, [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im], [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
+  const par =
+    fused || world.threadPool === null
+      ? null
+      : is2D
+        ? runParallel(
+            world,
+            'integrate (semi-implicit Euler)',
+            KERNEL.sieForced2,
+            [px, py, vx, vy, ox, oy, fx, fy, im],
+            [h, gxh, gyh, hx, hy],
+            ents.length,
+            ents,
+          )
+        : runParallel(
+            world,
+            'integrate (semi-implicit Euler)',
+            KERNEL.sieForced3,
+            [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im],
+            [h, gxh, gyh, gzh, hx, hy, hz],
+            ents.length,
+            ents,
+          );
   if (fused) {
-    if (is2D) fusedForced2(world, h); else fusedForced3(world, h);
+    if (is2D) fusedForced2(world, h);
+    else fusedForced3(world, h);
   } else if (par !== null) {
     check = par;
   } else if (is2D) {
@@ -71,12 +102,16 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       const w = im[e]! * h;
       const nvx = vx[e]! + fx[e]! * w + gxh;
       const nvy = vy[e]! + fy[e]! * w + gyh;
-      const x = px[e]!, y = py[e]!;
-      ox[e] = x; oy[e] = y;
-      vx[e] = nvx; vy[e] = nvy;
+      const x = px[e]!,
+        y = py[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      vx[e] = nvx;
+      vy[e] = nvy;
       // Exact free fall only for a body no force acted on (see the docstring).
       const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
-      px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h;
+      px[e] = x + (nvx - k * hx) * h;
+      py[e] = y + (nvy - k * hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
@@ -86,11 +121,19 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
       const nvx = vx[e]! + fx[e]! * w + gxh;
       const nvy = vy[e]! + fy[e]! * w + gyh;
       const nvz = vz[e]! + fz[e]! * w + gzh;
-      const x = px[e]!, y = py[e]!, z = pz[e]!;
-      ox[e] = x; oy[e] = y; oz[e] = z;
-      vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      oz[e] = z;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      vz[e] = nvz;
       const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
-      px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h; pz[e] = z + (nvz - k * hz) * h;
+      px[e] = x + (nvx - k * hx) * h;
+      py[e] = y + (nvy - k * hy) * h;
+      pz[e] = z + (nvz - k * hz) * h;
       check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
   }
@@ -104,47 +147,93 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const save = world.interpolation;
   const n = ents.length;
   const dense = n > 0 && n === world.entityIndex.maxId;
-  const parFree = world.threadPool === null ? null : is2D
-    ? runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieFree2, [px, py, vx, vy, ox, oy], [h, gxh, gyh, hx, hy, save ? 1 : 0], n, dense ? null : ents)
-    : runParallel(world, 'integrate (semi-implicit Euler)', KERNEL.sieFree3, [px, py, pz, vx, vy, vz, ox, oy, oz], [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0], n, dense ? null : ents);
+  const parFree =
+    world.threadPool === null
+      ? null
+      : is2D
+        ? runParallel(
+            world,
+            'integrate (semi-implicit Euler)',
+            KERNEL.sieFree2,
+            [px, py, vx, vy, ox, oy],
+            [h, gxh, gyh, hx, hy, save ? 1 : 0],
+            n,
+            dense ? null : ents,
+          )
+        : runParallel(
+            world,
+            'integrate (semi-implicit Euler)',
+            KERNEL.sieFree3,
+            [px, py, pz, vx, vy, vz, ox, oy, oz],
+            [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0],
+            n,
+            dense ? null : ents,
+          );
   if (parFree !== null) {
     check = parFree;
   } else if (is2D && dense) {
     if (save) {
       for (let e = 1; e <= n; e++) {
-        const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-        const x = px[e]!, y = py[e]!;
-        ox[e] = x; oy[e] = y;
-        vx[e] = nvx; vy[e] = nvy;
-        px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+        const nvx = vx[e]! + gxh,
+          nvy = vy[e]! + gyh;
+        const x = px[e]!,
+          y = py[e]!;
+        ox[e] = x;
+        oy[e] = y;
+        vx[e] = nvx;
+        vy[e] = nvy;
+        px[e] = x + (nvx - hx) * h;
+        py[e] = y + (nvy - hy) * h;
         check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
       }
     } else {
       for (let e = 1; e <= n; e++) {
-        const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-        vx[e] = nvx; vy[e] = nvy;
-        px[e] = px[e]! + (nvx - hx) * h; py[e] = py[e]! + (nvy - hy) * h;
+        const nvx = vx[e]! + gxh,
+          nvy = vy[e]! + gyh;
+        vx[e] = nvx;
+        vy[e] = nvy;
+        px[e] = px[e]! + (nvx - hx) * h;
+        py[e] = py[e]! + (nvy - hy) * h;
         check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
       }
     }
   } else if (is2D) {
     for (let i = 0; i < n; i++) {
       const e = ents[i]!;
-      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-      const x = px[e]!, y = py[e]!;
-      if (save) { ox[e] = x; oy[e] = y; }
-      vx[e] = nvx; vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      if (save) {
+        ox[e] = x;
+        oy[e] = y;
+      }
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
     for (let i = 0; i < n; i++) {
       const e = dense ? i + 1 : ents[i]!;
-      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh, nvz = vz[e]! + gzh;
-      const x = px[e]!, y = py[e]!, z = pz[e]!;
-      if (save) { ox[e] = x; oy[e] = y; oz[e] = z; }
-      vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh,
+        nvz = vz[e]! + gzh;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
+      if (save) {
+        ox[e] = x;
+        oy[e] = y;
+        oz[e] = z;
+      }
+      vx[e] = nvx;
+      vy[e] = nvy;
+      vz[e] = nvz;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
+      pz[e] = z + (nvz - hz) * h;
       check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
     }
   }
@@ -164,22 +253,38 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
  */
 function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, vx = c.Velocity.x, vy = c.Velocity.y;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, fx = c.Force.x, fy = c.Force.y, im = c.Mass.inv;
+  const px = c.Position.x,
+    py = c.Position.y,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    fx = c.Force.x,
+    fy = c.Force.y,
+    im = c.Mass.inv;
   const g = world.gravity;
-  const gxh = g[0]! * h, gyh = g[1]! * h;
-  const hx = 0.5 * gxh, hy = 0.5 * gyh;
+  const gxh = g[0]! * h,
+    gyh = g[1]! * h;
+  const hx = 0.5 * gxh,
+    hy = 0.5 * gyh;
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    fx[e] = 0; fy[e] = 0;
+    fx[e] = 0;
+    fy[e] = 0;
     const w = im[e]! * h;
-    const nvx = vx[e]! + 0 * w + gxh, nvy = vy[e]! + 0 * w + gyh;
-    const x = px[e]!, y = py[e]!;
-    ox[e] = x; oy[e] = y;
-    vx[e] = nvx; vy[e] = nvy;
-    const nx = x + (nvx - hx) * h, ny = y + (nvy - hy) * h;
-    px[e] = nx; py[e] = ny;
+    const nvx = vx[e]! + 0 * w + gxh,
+      nvy = vy[e]! + 0 * w + gyh;
+    const x = px[e]!,
+      y = py[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    vx[e] = nvx;
+    vy[e] = nvy;
+    const nx = x + (nvx - hx) * h,
+      ny = y + (nvy - hy) * h;
+    px[e] = nx;
+    py[e] = ny;
     check += nvx + nvy + nx * 0 + ny * 0;
   }
   return check;
@@ -206,14 +311,22 @@ function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): nu
  */
 function fusedForced2(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   const im = c.Mass.inv;
   const g = world.gravity;
-  const gxh = g[0]! * h, gyh = g[1]! * h;
-  const hx = 0.5 * gxh, hy = 0.5 * gyh;
+  const gxh = g[0]! * h,
+    gyh = g[1]! * h;
+  const hx = 0.5 * gxh,
+    hy = 0.5 * gyh;
   // The drags' stiffness threshold (forces/drag.ts): k h / m >= STIFF_RATE, i.e. k / m >= limit.
   const limit = STIFF_RATE / world.h;
 
@@ -232,27 +345,41 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
   const kq = c.QuadraticDrag.k;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const u = vx[e]!, v = vy[e]!, z = vz[e]!;
+    const u = vx[e]!,
+      v = vy[e]!,
+      z = vz[e]!;
     const inv = im[e]!;
     const cq = kq[e]! * Math.sqrt(u * u + v * v + z * z);
-    let fxe = 0, fye = 0;
+    let fxe = 0,
+      fye = 0;
     if (cq * inv >= limit) markStiffQuadratic(world, e, kq[e]!);
     else {
-      fxe = 0 - cq * u; fye = 0 - cq * v;
+      fxe = 0 - cq * u;
+      fye = 0 - cq * v;
       // The z component as the law writes it (0 in a 2D world unless set by hand: then unchanged but for a -0).
       if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cq * z;
     }
-    fx[e] = fxe; fy[e] = fye;
+    fx[e] = fxe;
+    fy[e] = fye;
     // A NaN or infinite force stops the pass before this body moves (x * 0 is 0 or -0 exactly when x is finite).
-    if (fxe * 0 + fye * 0 !== 0) { bad = e; break; }
+    if (fxe * 0 + fye * 0 !== 0) {
+      bad = e;
+      break;
+    }
     const w = inv * h;
-    const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh;
-    const x = px[e]!, y = py[e]!;
-    ox[e] = x; oy[e] = y;
-    vx[e] = nvx; vy[e] = nvy;
+    const nvx = u + fxe * w + gxh,
+      nvy = v + fye * w + gyh;
+    const x = px[e]!,
+      y = py[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    vx[e] = nvx;
+    vy[e] = nvy;
     const k = fxe === 0 && fye === 0 ? 1 : 0;
-    const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h;
-    px[e] = nx; py[e] = ny;
+    const nx = x + (nvx - k * hx) * h,
+      ny = y + (nvy - k * hy) * h;
+    px[e] = nx;
+    py[e] = ny;
     check += nvx + nvy + nx * 0 + ny * 0;
   }
   if (bad >= 0) nonFiniteForce(world, bad);
@@ -266,26 +393,39 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
   const kl = c.LinearDrag.k;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const u = vx[e]!, v = vy[e]!;
+    const u = vx[e]!,
+      v = vy[e]!;
     const inv = im[e]!;
     const cl = kl[e]!;
-    let fxe = 0, fye = 0;
+    let fxe = 0,
+      fye = 0;
     if (cl * inv >= limit) stiff++;
     else {
-      fxe = 0 - cl * u; fye = 0 - cl * v;
+      fxe = 0 - cl * u;
+      fye = 0 - cl * v;
       const z = vz[e]!;
       if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cl * z;
     }
-    fx[e] = fxe; fy[e] = fye;
-    if (fxe * 0 + fye * 0 !== 0) { bad = e; break; }
+    fx[e] = fxe;
+    fy[e] = fye;
+    if (fxe * 0 + fye * 0 !== 0) {
+      bad = e;
+      break;
+    }
     const w = inv * h;
-    const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh;
-    const x = px[e]!, y = py[e]!;
-    ox[e] = x; oy[e] = y;
-    vx[e] = nvx; vy[e] = nvy;
+    const nvx = u + fxe * w + gxh,
+      nvy = v + fye * w + gyh;
+    const x = px[e]!,
+      y = py[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    vx[e] = nvx;
+    vy[e] = nvy;
     const k = fxe === 0 && fye === 0 ? 1 : 0;
-    const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h;
-    px[e] = nx; py[e] = ny;
+    const nx = x + (nvx - k * hx) * h,
+      ny = y + (nvy - k * hy) * h;
+    px[e] = nx;
+    py[e] = ny;
     check += nvx + nvy + nx * 0 + ny * 0;
   }
   if (stiff > 0) stampLinear(world);
@@ -300,48 +440,94 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
  */
 function fusedForced3(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   const im = c.Mass.inv;
   const g = world.gravity;
-  const gxh = g[0]! * h, gyh = g[1]! * h, gzh = g[2]! * h;
-  const hx = 0.5 * gxh, hy = 0.5 * gyh, hz = 0.5 * gzh;
+  const gxh = g[0]! * h,
+    gyh = g[1]! * h,
+    gzh = g[2]! * h;
+  const hx = 0.5 * gxh,
+    hy = 0.5 * gyh,
+    hz = 0.5 * gzh;
   const limit = STIFF_RATE / world.h;
-  const kq = c.QuadraticDrag.k, kl = c.LinearDrag.k;
+  const kq = c.QuadraticDrag.k,
+    kl = c.LinearDrag.k;
   let stiff = 0;
   // 0: no drag, 1: quadratic, 2: linear.
   for (let kind = 0; kind < 3; kind++) {
     const ents = kind === 0 ? fusedBareBodies(world) : kind === 1 ? fusedQuadraticBodies(world) : fusedLinearBodies(world);
-    let check = 0, bad = -1;
+    let check = 0,
+      bad = -1;
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
-      const u = vx[e]!, v = vy[e]!, s = vz[e]!;
+      const u = vx[e]!,
+        v = vy[e]!,
+        s = vz[e]!;
       const inv = im[e]!;
-      let fxe = 0, fye = 0, fze = 0;
+      let fxe = 0,
+        fye = 0,
+        fze = 0;
       if (kind === 1) {
         const cq = kq[e]! * Math.sqrt(u * u + v * v + s * s);
         if (cq * inv >= limit) markStiffQuadratic(world, e, kq[e]!);
-        else { fxe = 0 - cq * u; fye = 0 - cq * v; fze = 0 - cq * s; }
+        else {
+          fxe = 0 - cq * u;
+          fye = 0 - cq * v;
+          fze = 0 - cq * s;
+        }
       } else if (kind === 2) {
         const cl = kl[e]!;
         if (cl * inv >= limit) stiff++;
-        else { fxe = 0 - cl * u; fye = 0 - cl * v; fze = 0 - cl * s; }
+        else {
+          fxe = 0 - cl * u;
+          fye = 0 - cl * v;
+          fze = 0 - cl * s;
+        }
       }
-      fx[e] = fxe; fy[e] = fye; fz[e] = fze;
-      if (fxe * 0 + fye * 0 + fze * 0 !== 0) { bad = e; break; }
+      fx[e] = fxe;
+      fy[e] = fye;
+      fz[e] = fze;
+      if (fxe * 0 + fye * 0 + fze * 0 !== 0) {
+        bad = e;
+        break;
+      }
       const w = inv * h;
-      const nvx = u + fxe * w + gxh, nvy = v + fye * w + gyh, nvz = s + fze * w + gzh;
-      const x = px[e]!, y = py[e]!, z = pz[e]!;
-      ox[e] = x; oy[e] = y; oz[e] = z;
-      vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+      const nvx = u + fxe * w + gxh,
+        nvy = v + fye * w + gyh,
+        nvz = s + fze * w + gzh;
+      const x = px[e]!,
+        y = py[e]!,
+        z = pz[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      oz[e] = z;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      vz[e] = nvz;
       const k = fxe === 0 && fye === 0 && fze === 0 ? 1 : 0;
-      const nx = x + (nvx - k * hx) * h, ny = y + (nvy - k * hy) * h, nz = z + (nvz - k * hz) * h;
-      px[e] = nx; py[e] = ny; pz[e] = nz;
+      const nx = x + (nvx - k * hx) * h,
+        ny = y + (nvy - k * hy) * h,
+        nz = z + (nvz - k * hz) * h;
+      px[e] = nx;
+      py[e] = ny;
+      pz[e] = nz;
       check += nvx + nvy + nvz + nx * 0 + ny * 0 + nz * 0;
     }
-    if (bad >= 0) { if (stiff > 0) stampLinear(world); nonFiniteForce(world, bad); }
+    if (bad >= 0) {
+      if (stiff > 0) stampLinear(world);
+      nonFiniteForce(world, bad);
+    }
     if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
   }
   if (stiff > 0) stampLinear(world);
@@ -368,16 +554,28 @@ function nonFiniteForce(world: PhysicsWorld, e: number): never {
 /** Moves kinematic bodies with their own velocity (shared by every scheme: their velocity is given). */
 export function advanceKinematic(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
   const ents = kinematicBodies(world);
   let check = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
-    const x = px[e]!, y = py[e]!, z = pz[e]!;
-    ox[e] = x; oy[e] = y; oz[e] = z;
-    px[e] = x + vx[e]! * h; py[e] = y + vy[e]! * h; pz[e] = z + vz[e]! * h;
+    const x = px[e]!,
+      y = py[e]!,
+      z = pz[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    oz[e] = z;
+    px[e] = x + vx[e]! * h;
+    py[e] = y + vy[e]! * h;
+    pz[e] = z + vz[e]! * h;
     check += px[e]! + py[e]! + pz[e]!;
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');

@@ -1,10 +1,10 @@
-import type { PhysicsWorld } from '../world.js';
-import { evaluateForces } from '../pipeline/step.js';
-import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 import { hasComponent } from 'bitecs';
 import { reportNonFinite } from '../errors.js';
-import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
+import { evaluateForces } from '../pipeline/step.js';
+import type { PhysicsWorld } from '../world.js';
+import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';
+import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 
 /**
  * Shared machinery of the multi-stage integrators: the list of moving bodies, a copy of the state at
@@ -108,8 +108,12 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
     s.spinners[k++] = e;
     // 2: Euler's equations with a principal inertia tensor (gyroscopic term even without torque);
     // 1: scalar inertia under torque; 0: spins freely at constant w.
-    s.torqued[e] = world.dimensions === 3 && hasComponent(world, e, c.InertiaTensor) ? 2
-      : hasComponent(world, e, c.Torque) && hasComponent(world, e, c.Inertia) && c.Inertia.inv[e]! > 0 ? 1 : 0;
+    s.torqued[e] =
+      world.dimensions === 3 && hasComponent(world, e, c.InertiaTensor)
+        ? 2
+        : hasComponent(world, e, c.Torque) && hasComponent(world, e, c.Inertia) && c.Inertia.inv[e]! > 0
+          ? 1
+          : 0;
   }
   s.nSpinners = k;
 }
@@ -120,32 +124,59 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
  */
 export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious = true): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x, oy = c.PreviousPosition.y, oz = c.PreviousPosition.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
-    x0[e] = px[e]!; y0[e] = py[e]!; z0[e] = pz[e]!;
-    if (setPrevious) { ox[e] = px[e]!; oy[e] = py[e]!; oz[e] = pz[e]!; }
-    u0[e] = vx[e]!; v0[e] = vy[e]!; w0[e] = vz[e]!;
+    x0[e] = px[e]!;
+    y0[e] = py[e]!;
+    z0[e] = pz[e]!;
+    if (setPrevious) {
+      ox[e] = px[e]!;
+      oy[e] = py[e]!;
+      oz[e] = pz[e]!;
+    }
+    u0[e] = vx[e]!;
+    v0[e] = vy[e]!;
+    w0[e] = vz[e]!;
   }
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
-  const sp = s.spinners, torqued = s.torqued;
+  const sp = s.spinners,
+    torqued = s.torqued;
   const is2D = world.dimensions === 2;
-  const ang = c.Angle.value, q = c.Orientation;
+  const ang = c.Angle.value,
+    q = c.Orientation;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
     if (is2D) qa[e] = ang[e]!;
-    else { qa[e] = q.x[e]!; qb[e] = q.y[e]!; qc[e] = q.z[e]!; qd[e] = q.w[e]!; }
-    wa[e] = wx[e]!; wb[e] = wy[e]!; wc[e] = wz[e]!;
+    else {
+      qa[e] = q.x[e]!;
+      qb[e] = q.y[e]!;
+      qc[e] = q.z[e]!;
+      qd[e] = q.w[e]!;
+    }
+    wa[e] = wx[e]!;
+    wb[e] = wy[e]!;
+    wc[e] = wz[e]!;
     if (torqued[e] === 2) {
       rotateVectorInverse(qa[e]!, qb[e]!, qc[e]!, qd[e]!, wa[e]!, wb[e]!, wc[e]!, vec);
-      ba[e] = vec[0]!; bb[e] = vec[1]!; bc[e] = vec[2]!;
+      ba[e] = vec[0]!;
+      bb[e] = vec[1]!;
+      bc[e] = vec[2]!;
     }
   }
 }
@@ -167,19 +198,28 @@ export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time:
 /** Accelerations from the force and torque accumulators as they are (no force evaluation). */
 export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z, im = c.Mass.inv;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z,
+    im = c.Mass.inv;
   const g = world.gravity;
-  const gx = g[0]!, gy = g[1]!, gz = g[2]!;
+  const gx = g[0]!,
+    gy = g[1]!,
+    gz = g[2]!;
   const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
   for (let i = 0; i < s.nForced; i++) {
     const e = m[i]!;
     const k = im[e]!;
-    ax[e] = fx[e]! * k + gx; ay[e] = fy[e]! * k + gy; az[e] = fz[e]! * k + gz;
+    ax[e] = fx[e]! * k + gx;
+    ay[e] = fy[e]! * k + gy;
+    az[e] = fz[e]! * k + gz;
   }
   for (let i = s.nForced; i < s.nMovers; i++) {
     const e = m[i]!;
-    ax[e] = gx; ay[e] = gy; az[e] = gz;
+    ax[e] = gx;
+    ay[e] = gy;
+    az[e] = gz;
   }
   angularAcceleration(world, s);
 }
@@ -194,22 +234,34 @@ const euler = new Float64Array(3);
  */
 export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const tx = c.Torque.x, ty = c.Torque.y, tz = c.Torque.z, ii = c.Inertia.inv;
+  const tx = c.Torque.x,
+    ty = c.Torque.y,
+    tz = c.Torque.z,
+    ii = c.Inertia.inv;
   const [bx, by, bz] = s.alpha as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
   const torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
     const kind = torqued[e]!;
-    if (kind === 0) { bx[e] = 0; by[e] = 0; bz[e] = 0; continue; }
+    if (kind === 0) {
+      bx[e] = 0;
+      by[e] = 0;
+      bz[e] = 0;
+      continue;
+    }
     if (kind === 2) {
       const has = hasComponent(world, e, c.Torque);
       (s.bodyFrameSpin ? eulerBodyAcceleration : eulerAcceleration)(world, e, has ? tx[e]! : 0, has ? ty[e]! : 0, has ? tz[e]! : 0, euler);
-      bx[e] = euler[0]!; by[e] = euler[1]!; bz[e] = euler[2]!;
+      bx[e] = euler[0]!;
+      by[e] = euler[1]!;
+      bz[e] = euler[2]!;
       continue;
     }
     const k = ii[e]!;
-    bx[e] = tx[e]! * k; by[e] = ty[e]! * k; bz[e] = tz[e]! * k;
+    bx[e] = tx[e]! * k;
+    by[e] = ty[e]! * k;
+    bz[e] = tz[e]! * k;
   }
 }
 
@@ -219,13 +271,24 @@ export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): 
  * spinners (angle/orientation from w, w from alpha). Used by the Runge-Kutta schemes.
  */
 export function writeTrial(
-  world: PhysicsWorld, s: IntegratorScratch,
-  cx: number, dx: Float64Array[], cv: number, dv: Float64Array[],
-  cq: number, dq: Float64Array[], cw: number, dw: Float64Array[],
+  world: PhysicsWorld,
+  s: IntegratorScratch,
+  cx: number,
+  dx: Float64Array[],
+  cv: number,
+  dv: Float64Array[],
+  cq: number,
+  dq: Float64Array[],
+  cw: number,
+  dw: Float64Array[],
 ): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const [x0, y0, z0, u0, v0, w0] = s.x0 as [Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, Float64Array];
   const [dxx, dxy, dxz] = dx as [Float64Array, Float64Array, Float64Array];
   const [dvx, dvy, dvz] = dv as [Float64Array, Float64Array, Float64Array];
@@ -233,9 +296,14 @@ export function writeTrial(
   const is2D = world.dimensions === 2;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
-    px[e] = x0[e]! + cx * dxx[e]!; py[e] = y0[e]! + cx * dxy[e]!;
-    vx[e] = u0[e]! + cv * dvx[e]!; vy[e] = v0[e]! + cv * dvy[e]!;
-    if (!is2D) { pz[e] = z0[e]! + cx * dxz[e]!; vz[e] = w0[e]! + cv * dvz[e]!; }
+    px[e] = x0[e]! + cx * dxx[e]!;
+    py[e] = y0[e]! + cx * dxy[e]!;
+    vx[e] = u0[e]! + cv * dvx[e]!;
+    vy[e] = v0[e]! + cv * dvy[e]!;
+    if (!is2D) {
+      pz[e] = z0[e]! + cx * dxz[e]!;
+      vz[e] = w0[e]! + cv * dvz[e]!;
+    }
   }
   writeAngularTrial(world, s, cq, dq, cw, dw);
 }
@@ -247,17 +315,25 @@ export function writeTrial(
  * w = R(q) (w_b0 + cw dw) with dw a body-frame slope.
  */
 export function writeAngularTrial(
-  world: PhysicsWorld, s: IntegratorScratch, cq: number, dq: Float64Array[], cw: number, dw: Float64Array[],
+  world: PhysicsWorld,
+  s: IntegratorScratch,
+  cq: number,
+  dq: Float64Array[],
+  cw: number,
+  dw: Float64Array[],
 ): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const [qa, qb, qc, qd] = s.q0 as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [wa, wb, wc] = s.w0 as [Float64Array, Float64Array, Float64Array];
   const sp = s.spinners;
   if (world.dimensions === 2) {
     const ang = c.Angle.value;
-    const d = dq[0]!, dwz = dw[2]!;
+    const d = dq[0]!,
+      dwz = dw[2]!;
     for (let i = 0; i < s.nSpinners; i++) {
       const e = sp[i]!;
       ang[e] = qa[e]! + cq * d[e]!;
@@ -269,19 +345,33 @@ export function writeAngularTrial(
   const [d0, d1, d2, d3] = dq as [Float64Array, Float64Array, Float64Array, Float64Array];
   const [e0, e1, e2] = dw as [Float64Array, Float64Array, Float64Array];
   const [ba, bb, bc] = s.wb0 as [Float64Array, Float64Array, Float64Array];
-  const body = s.bodyFrameSpin, torqued = s.torqued;
+  const body = s.bodyFrameSpin,
+    torqued = s.torqued;
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    let x = qa[e]! + cq * d0[e]!, y = qb[e]! + cq * d1[e]!, z = qc[e]! + cq * d2[e]!, w = qd[e]! + cq * d3[e]!;
+    let x = qa[e]! + cq * d0[e]!,
+      y = qb[e]! + cq * d1[e]!,
+      z = qc[e]! + cq * d2[e]!,
+      w = qd[e]! + cq * d3[e]!;
     const inv = 1 / Math.sqrt(x * x + y * y + z * z + w * w);
-    x *= inv; y *= inv; z *= inv; w *= inv;
-    q.x[e] = x; q.y[e] = y; q.z[e] = z; q.w[e] = w;
+    x *= inv;
+    y *= inv;
+    z *= inv;
+    w *= inv;
+    q.x[e] = x;
+    q.y[e] = y;
+    q.z[e] = z;
+    q.w[e] = w;
     if (body && torqued[e] === 2) {
       rotateVector(x, y, z, w, ba[e]! + cw * e0[e]!, bb[e]! + cw * e1[e]!, bc[e]! + cw * e2[e]!, vec);
-      wx[e] = vec[0]!; wy[e] = vec[1]!; wz[e] = vec[2]!;
+      wx[e] = vec[0]!;
+      wy[e] = vec[1]!;
+      wz[e] = vec[2]!;
       continue;
     }
-    wx[e] = wa[e]! + cw * e0[e]!; wy[e] = wb[e]! + cw * e1[e]!; wz[e] = wc[e]! + cw * e2[e]!;
+    wx[e] = wa[e]! + cw * e0[e]!;
+    wy[e] = wb[e]! + cw * e1[e]!;
+    wz[e] = wc[e]! + cw * e2[e]!;
   }
 }
 
@@ -292,19 +382,29 @@ export function writeAngularTrial(
  */
 export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
   const c = world.components;
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const sp = s.spinners;
   if (world.dimensions === 2) {
     const o = out[0]!;
-    for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; o[e] = wz[e]!; }
+    for (let i = 0; i < s.nSpinners; i++) {
+      const e = sp[i]!;
+      o[e] = wz[e]!;
+    }
     return;
   }
   const q = c.Orientation;
   const [o0, o1, o2, o3] = out as [Float64Array, Float64Array, Float64Array, Float64Array];
   for (let i = 0; i < s.nSpinners; i++) {
     const e = sp[i]!;
-    const ax = wx[e]!, ay = wy[e]!, az = wz[e]!;
-    const x = q.x[e]!, y = q.y[e]!, z = q.z[e]!, w = q.w[e]!;
+    const ax = wx[e]!,
+      ay = wy[e]!,
+      az = wz[e]!;
+    const x = q.x[e]!,
+      y = q.y[e]!,
+      z = q.z[e]!,
+      w = q.w[e]!;
     o0[e] = 0.5 * (ax * w + ay * z - az * y);
     o1[e] = 0.5 * (-ax * z + ay * w + az * x);
     o2[e] = 0.5 * (ax * y - ay * x + az * w);
@@ -319,12 +419,20 @@ export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out:
  * start of the step).
  */
 export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: number, evaluate: boolean): void {
-  if (evaluate) accelerationsAt(world, s, time); else accelerations(world, s);
+  if (evaluate) accelerationsAt(world, s, time);
+  else accelerations(world, s);
   const c = world.components;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   const [kx, ky, kz] = s.kv as [Float64Array, Float64Array, Float64Array];
   const m = s.movers;
-  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; kx[e] = vx[e]!; ky[e] = vy[e]!; kz[e] = vz[e]!; }
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    kx[e] = vx[e]!;
+    ky[e] = vy[e]!;
+    kz[e] = vz[e]!;
+  }
   orientationSlope(world, s, s.kq);
 }
 
@@ -334,25 +442,48 @@ export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: nu
   const lin = [s.kv[0]!, s.kv[1]!, s.kv[2]!, s.acc[0]!, s.acc[1]!, s.acc[2]!];
   const m = s.movers;
   for (let k = 0; k < 6; k++) {
-    const out = S[k]!, src = lin[k]!;
-    if (reset) for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[e] = weight * src[e]!; }
-    else for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; out[e] = out[e]! + weight * src[e]!; }
+    const out = S[k]!,
+      src = lin[k]!;
+    if (reset)
+      for (let i = 0; i < s.nMovers; i++) {
+        const e = m[i]!;
+        out[e] = weight * src[e]!;
+      }
+    else
+      for (let i = 0; i < s.nMovers; i++) {
+        const e = m[i]!;
+        out[e] = out[e]! + weight * src[e]!;
+      }
   }
   const nq = world.dimensions === 2 ? 1 : 4;
   const ang = [s.kq[0]!, s.kq[1]!, s.kq[2]!, s.kq[3]!, s.alpha[0]!, s.alpha[1]!, s.alpha[2]!];
   const sp = s.spinners;
   for (let k = 0; k < 7; k++) {
     if (k >= nq && k < 4) continue;
-    const out = S[6 + k]!, src = ang[k]!;
-    if (reset) for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[e] = weight * src[e]!; }
-    else for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; out[e] = out[e]! + weight * src[e]!; }
+    const out = S[6 + k]!,
+      src = ang[k]!;
+    if (reset)
+      for (let i = 0; i < s.nSpinners; i++) {
+        const e = sp[i]!;
+        out[e] = weight * src[e]!;
+      }
+    else
+      for (let i = 0; i < s.nSpinners; i++) {
+        const e = sp[i]!;
+        out[e] = out[e]! + weight * src[e]!;
+      }
   }
 }
 
 /** The sum arrays grouped as writeTrial expects: [x-slope], [v-slope], [q-slope], [w-slope]. */
 export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[], Float64Array[], Float64Array[]] {
   const S = s.sum;
-  return [[S[0]!, S[1]!, S[2]!], [S[3]!, S[4]!, S[5]!], [S[6]!, S[7]!, S[8]!, S[9]!], [S[10]!, S[11]!, S[12]!]];
+  return [
+    [S[0]!, S[1]!, S[2]!],
+    [S[3]!, S[4]!, S[5]!],
+    [S[6]!, S[7]!, S[8]!, S[9]!],
+    [S[10]!, S[11]!, S[12]!],
+  ];
 }
 
 /**
@@ -365,32 +496,52 @@ export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[]
  */
 export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: number): void {
   const g = world.gravity;
-  const dx = k * g[0]!, dy = k * g[1]!, dz = k * g[2]!;
+  const dx = k * g[0]!,
+    dy = k * g[1]!,
+    dz = k * g[2]!;
   if (dx === 0 && dy === 0 && dz === 0) return;
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
   const m = s.movers;
-  const fx = c.Force.x, fy = c.Force.y, fz = c.Force.z;
+  const fx = c.Force.x,
+    fy = c.Force.y,
+    fz = c.Force.z;
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
     // A forced body (index < nForced) under any force keeps the scheme's own drift, so a body in
     // force balance (buoyancy = weight, a spring at equilibrium) stays exactly at rest.
     if (i < s.nForced && (fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0)) continue;
-    px[e] = px[e]! + dx; py[e] = py[e]! + dy; pz[e] = pz[e]! + dz;
+    px[e] = px[e]! + dx;
+    py[e] = py[e]! + dy;
+    pz[e] = pz[e]! + dz;
   }
 }
 
 /** Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first. */
 export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z;
-  const vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   let sum = 0;
   const m = s.movers;
-  for (let i = 0; i < s.nMovers; i++) { const e = m[i]!; sum += px[e]! + py[e]! + pz[e]! + vx[e]! + vy[e]! + vz[e]!; }
-  const wx = c.AngularVelocity.x, wy = c.AngularVelocity.y, wz = c.AngularVelocity.z;
+  for (let i = 0; i < s.nMovers; i++) {
+    const e = m[i]!;
+    sum += px[e]! + py[e]! + pz[e]! + vx[e]! + vy[e]! + vz[e]!;
+  }
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
   const sp = s.spinners;
-  for (let i = 0; i < s.nSpinners; i++) { const e = sp[i]!; sum += wx[e]! + wy[e]! + wz[e]!; }
+  for (let i = 0; i < s.nSpinners; i++) {
+    const e = sp[i]!;
+    sum += wx[e]! + wy[e]! + wz[e]!;
+  }
   if (sum - sum !== 0) {
     reportNonFinite(world, m.subarray(0, s.nMovers), 'integrate');
     reportNonFinite(world, sp.subarray(0, s.nSpinners), 'integrate');

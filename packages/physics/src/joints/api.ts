@@ -1,13 +1,21 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
-import type { PhysicsWorld } from '../world.js';
-import { createSlot, currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
 import { wakeIsland } from '../collision/sleep.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertPositive, assertVector, describe } from '../validate.js';
-import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
+import { createSlot, currentHandle, resolveEntity, SLOT_RANGE } from '../handles.js';
+import {
+  assertFinite,
+  assertKnownKeys,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import { addNoCollide } from './connected.js';
-import { ensureJointArrays, IMPULSES } from './state.js';
 import { removeJointUnchecked } from './remove.js';
+import { ensureJointArrays, IMPULSES } from './state.js';
+import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store.js';
 
 /**
  * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see
@@ -39,7 +47,10 @@ export interface JointBaseOptions {
 const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
 
 /** Where a joint's bodies are: slots and poses read for anchors. */
-interface Ends { a: number; b: number }
+interface Ends {
+  a: number;
+  b: number;
+}
 
 function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown): number {
   const slot = resolveEntity(world, id, where, param);
@@ -56,7 +67,7 @@ function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions
     throw new TypeError(`${where}: options with body b are required, got ${describe(options)}`);
   }
   const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a);
-  const b = requireBody(where, "b", world, options.b);
+  const b = requireBody(where, 'b', world, options.b);
   if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
   if (options.breakForce !== undefined) assertPositive(where, 'breakForce', options.breakForce);
   if (options.breakTorque !== undefined) assertPositive(where, 'breakTorque', options.breakTorque);
@@ -97,35 +108,69 @@ function checkLimits(where: string, lower: unknown, upper: unknown, lowerName: s
  * Makes the joint entity with every field at its default, and the anchors: `anchorA`, `anchorB` are
  * world points, stored in A's and B's body frames (A's stays a world point if A is the world).
  */
-function makeJoint(world: PhysicsWorld, type: JointTypeCode, ends: Ends, anchorA: [number, number], anchorB: [number, number], options: JointBaseOptions): number {
+function makeJoint(
+  world: PhysicsWorld,
+  type: JointTypeCode,
+  ends: Ends,
+  anchorA: [number, number],
+  anchorB: [number, number],
+  options: JointBaseOptions,
+): number {
   const c = world.components;
   ensureJointArrays(world.joints, world.capacity);
   const j = createSlot(world, 'addJoint');
   addComponent(world, j, c.Joint);
   const J = c.Joint;
   const { a, b } = ends;
-  J.type[j] = type; J.a[j] = a; J.b[j] = b;
+  J.type[j] = type;
+  J.a[j] = a;
+  J.b[j] = b;
   const toLocal = (e: number, p: [number, number]): [number, number] => {
     if (e === 0) return p;
-    const t = c.Angle.value[e]!, co = Math.cos(t), si = Math.sin(t);
-    const dx = p[0] - c.Position.x[e]!, dy = p[1] - c.Position.y[e]!;
+    const t = c.Angle.value[e]!,
+      co = Math.cos(t),
+      si = Math.sin(t);
+    const dx = p[0] - c.Position.x[e]!,
+      dy = p[1] - c.Position.y[e]!;
     return [co * dx + si * dy, -si * dx + co * dy];
   };
-  const la = toLocal(a, anchorA), lb = toLocal(b, anchorB);
-  J.localAx[j] = la[0]; J.localAy[j] = la[1]; J.localBx[j] = lb[0]; J.localBy[j] = lb[1];
+  const la = toLocal(a, anchorA),
+    lb = toLocal(b, anchorB);
+  J.localAx[j] = la[0];
+  J.localAy[j] = la[1];
+  J.localBx[j] = lb[0];
+  J.localBy[j] = lb[1];
   J.referenceAngle[j] = (b === 0 ? 0 : c.Angle.value[b]!) - (a === 0 ? 0 : c.Angle.value[a]!);
-  J.axisX[j] = 1; J.axisY[j] = 0;
-  J.length[j] = 0; J.minLength[j] = 0; J.maxLength[j] = Infinity;
-  J.hertz[j] = 0; J.dampingRatio[j] = 0; J.angularHertz[j] = 0; J.angularDampingRatio[j] = 0;
-  J.flags[j] = 0; J.lower[j] = 0; J.upper[j] = 0; J.motorSpeed[j] = 0; J.maxMotorForce[j] = 0; J.maxForce[j] = 0;
+  J.axisX[j] = 1;
+  J.axisY[j] = 0;
+  J.length[j] = 0;
+  J.minLength[j] = 0;
+  J.maxLength[j] = Infinity;
+  J.hertz[j] = 0;
+  J.dampingRatio[j] = 0;
+  J.angularHertz[j] = 0;
+  J.angularDampingRatio[j] = 0;
+  J.flags[j] = 0;
+  J.lower[j] = 0;
+  J.upper[j] = 0;
+  J.motorSpeed[j] = 0;
+  J.maxMotorForce[j] = 0;
+  J.maxForce[j] = 0;
   J.breakForce[j] = options.breakForce ?? Infinity;
   J.breakTorque[j] = options.breakTorque ?? Infinity;
   J.breakStretch[j] = Infinity;
-  J.force[j] = 0; J.torque[j] = 0;
+  J.force[j] = 0;
+  J.torque[j] = 0;
   world.joints.impulses.fill(0, j * IMPULSES, (j + 1) * IMPULSES);
   const att = world.joints.attached;
-  if (a !== 0) { att[a] = att[a]! + 1; wakeIsland(world, a); }
-  if (b !== 0) { att[b] = att[b]! + 1; wakeIsland(world, b); }
+  if (a !== 0) {
+    att[a] = att[a]! + 1;
+    wakeIsland(world, a);
+  }
+  if (b !== 0) {
+    att[b] = att[b]! + 1;
+    wakeIsland(world, b);
+  }
   world.joints.noCollideJoint[j] = 0;
   if (options.collideConnected !== true) addNoCollide(world.joints, j, a, b);
   return j;
@@ -171,8 +216,19 @@ export interface DistanceJointOptions extends JointBaseOptions {
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch']);
-  if (ends.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
+  assertKnownKeys(where, options, [
+    ...BASE_KEYS,
+    'anchorA',
+    'anchorB',
+    'length',
+    'minLength',
+    'maxLength',
+    'hertz',
+    'dampingRatio',
+    'breakStretch',
+  ]);
+  if (ends.a === 0 && options.anchorA === undefined)
+    throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
   const pa = optionalPoint(where, 'anchorA', options.anchorA, ends.a === 0 ? [0, 0] : centre(world, ends.a));
   const pb = optionalPoint(where, 'anchorB', options.anchorB, centre(world, ends.b));
   const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1]);
@@ -185,26 +241,44 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   const maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
   assertNonNegative(where, 'minLength', minL);
   if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length)) throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
   if (options.breakStretch !== undefined) assertPositive(where, 'breakStretch', options.breakStretch);
   const j = makeJoint(world, JointType.Distance, ends, pa, pb, options);
   const J = world.components.Joint;
-  J.length[j] = length; J.minLength[j] = minL; J.maxLength[j] = maxL;
-  J.hertz[j] = hertz; J.dampingRatio[j] = zeta;
+  J.length[j] = length;
+  J.minLength[j] = minL;
+  J.maxLength[j] = maxL;
+  J.hertz[j] = hertz;
+  J.dampingRatio[j] = zeta;
   J.flags[j] = (hertz > 0 ? JointFlag.Spring : 0) | (minL < maxL ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
   return handle(world, j);
 }
 
 /** A revolute, prismatic or wheel joint's checked motor and spring (`checkDrive`). */
-interface Drive { speed: number; maxMotor: number; hertz: number; zeta: number }
+interface Drive {
+  speed: number;
+  maxMotor: number;
+  hertz: number;
+  zeta: number;
+}
 
 /**
  * Checks a joint's motor (finite `motorSpeed`, `maxName` >= 0, the motor on when > 0) and spring
  * (`hertz` and `dampingRatio` >= 0) before anything is made, filling in the given defaults.
  * @throws RangeError `<where>: <param> must be ...` naming the parameter and value.
  */
-function checkDrive(where: string, motorSpeed: number | undefined, maxMotor: number | undefined, maxName: string, hertz: number | undefined, zeta: number | undefined, defaultHertz = 0, defaultZeta = 0): Drive {
+function checkDrive(
+  where: string,
+  motorSpeed: number | undefined,
+  maxMotor: number | undefined,
+  maxName: string,
+  hertz: number | undefined,
+  zeta: number | undefined,
+  defaultHertz = 0,
+  defaultZeta = 0,
+): Drive {
   const d: Drive = { speed: motorSpeed ?? 0, maxMotor: maxMotor ?? 0, hertz: hertz ?? defaultHertz, zeta: zeta ?? defaultZeta };
   assertFinite(where, 'motorSpeed', d.speed);
   assertNonNegative(where, maxName, d.maxMotor);
@@ -216,8 +290,14 @@ function checkDrive(where: string, motorSpeed: number | undefined, maxMotor: num
 /** Writes joint j's limits (when `limit`), motor and spring, and sets its Limit, Motor and Spring flags from them. */
 function storeDrive(world: PhysicsWorld, j: number, limit: boolean, lower: number | undefined, upper: number | undefined, d: Drive): void {
   const J = world.components.Joint;
-  if (limit) { J.lower[j] = lower!; J.upper[j] = upper!; }
-  J.motorSpeed[j] = d.speed; J.maxMotorForce[j] = d.maxMotor; J.hertz[j] = d.hertz; J.dampingRatio[j] = d.zeta;
+  if (limit) {
+    J.lower[j] = lower!;
+    J.upper[j] = upper!;
+  }
+  J.motorSpeed[j] = d.speed;
+  J.maxMotorForce[j] = d.maxMotor;
+  J.hertz[j] = d.hertz;
+  J.dampingRatio[j] = d.zeta;
   J.flags[j] = (limit ? JointFlag.Limit : 0) | (d.maxMotor > 0 ? JointFlag.Motor : 0) | (d.hertz > 0 ? JointFlag.Spring : 0);
 }
 
@@ -250,7 +330,16 @@ export interface RevoluteJointOptions extends JointBaseOptions {
 export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
   const where = 'addRevoluteJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio']);
+  assertKnownKeys(where, options, [
+    ...BASE_KEYS,
+    'anchor',
+    'lowerAngle',
+    'upperAngle',
+    'motorSpeed',
+    'maxMotorTorque',
+    'hertz',
+    'dampingRatio',
+  ]);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const limit = checkLimits(where, options.lowerAngle, options.upperAngle, 'lowerAngle', 'upperAngle', Math.PI);
   const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);
@@ -286,7 +375,17 @@ export interface PrismaticJointOptions extends JointBaseOptions {
 export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOptions): number {
   const where = 'addPrismaticJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce', 'hertz', 'dampingRatio']);
+  assertKnownKeys(where, options, [
+    ...BASE_KEYS,
+    'anchor',
+    'axis',
+    'lower',
+    'upper',
+    'motorSpeed',
+    'maxMotorForce',
+    'hertz',
+    'dampingRatio',
+  ]);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [1, 0]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
@@ -300,8 +399,10 @@ export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOp
 function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number, number]): void {
   const J = world.components.Joint;
   const t = a === 0 ? 0 : world.components.Angle.value[a]!;
-  const co = Math.cos(t), si = Math.sin(t);
-  J.axisX[j] = co * axis[0] + si * axis[1]; J.axisY[j] = -si * axis[0] + co * axis[1];
+  const co = Math.cos(t),
+    si = Math.sin(t);
+  J.axisX[j] = co * axis[0] + si * axis[1];
+  J.axisY[j] = -si * axis[0] + co * axis[1];
 }
 
 /** Options of `addWeldJoint`. */
@@ -329,10 +430,15 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
   assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const vals = [options.hertz ?? 0, options.dampingRatio ?? 0, options.angularHertz ?? 0, options.angularDampingRatio ?? 0];
-  ['hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'].forEach((name, i) => assertNonNegative(where, name, vals[i]));
+  ['hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'].forEach((name, i) => {
+    assertNonNegative(where, name, vals[i]);
+  });
   const j = makeJoint(world, JointType.Weld, ends, p, p, options);
   const J = world.components.Joint;
-  J.hertz[j] = vals[0]!; J.dampingRatio[j] = vals[1]!; J.angularHertz[j] = vals[2]!; J.angularDampingRatio[j] = vals[3]!;
+  J.hertz[j] = vals[0]!;
+  J.dampingRatio[j] = vals[1]!;
+  J.angularHertz[j] = vals[2]!;
+  J.angularDampingRatio[j] = vals[3]!;
   return handle(world, j);
 }
 
@@ -364,11 +470,30 @@ export interface WheelJointOptions extends JointBaseOptions {
 export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): number {
   const where = 'addWheelJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque']);
+  assertKnownKeys(where, options, [
+    ...BASE_KEYS,
+    'anchor',
+    'axis',
+    'hertz',
+    'dampingRatio',
+    'lower',
+    'upper',
+    'motorSpeed',
+    'maxMotorTorque',
+  ]);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [0, 1]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
-  const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio, 4, 0.7);
+  const drive = checkDrive(
+    where,
+    options.motorSpeed,
+    options.maxMotorTorque,
+    'maxMotorTorque',
+    options.hertz,
+    options.dampingRatio,
+    4,
+    0.7,
+  );
   const j = makeJoint(world, JointType.Wheel, ends, p, p, options);
   setAxis(world, j, ends.a, axis);
   storeDrive(world, j, limit, options.lower, options.upper, drive);
@@ -413,7 +538,9 @@ export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): 
   assertPositive(where, 'maxForce', maxForce);
   const j = makeJoint(world, JointType.Mouse, ends, target, p, { b: ends.b, breakForce: options.breakForce });
   const J = world.components.Joint;
-  J.hertz[j] = hertz; J.dampingRatio[j] = zeta; J.maxForce[j] = maxForce;
+  J.hertz[j] = hertz;
+  J.dampingRatio[j] = zeta;
+  J.maxForce[j] = maxForce;
   J.flags[j] = JointFlag.Spring;
   return handle(world, j);
 }
@@ -425,7 +552,9 @@ function requireJoint(where: string, world: PhysicsWorld, joint: unknown, types?
     throw new RangeError(`${where}: joint must be a joint of this world, got ${describe(joint)} (not a joint)`);
   }
   if (types && !types.includes(J.type[slot] as JointTypeCode)) {
-    throw new RangeError(`${where}: joint must be a ${types.map((t) => JOINT_TYPE_NAMES[t]).join(' or ')} joint, got a ${JOINT_TYPE_NAMES[J.type[slot]!]} joint`);
+    throw new RangeError(
+      `${where}: joint must be a ${types.map((t) => JOINT_TYPE_NAMES[t]).join(' or ')} joint, got a ${JOINT_TYPE_NAMES[J.type[slot]!]} joint`,
+    );
   }
   return slot;
 }
@@ -466,7 +595,8 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
   const j = requireJoint('setMouseTarget', world, joint, [JointType.Mouse]);
   assertVector('setMouseTarget', 'target', target, 2);
   const J = world.components.Joint;
-  J.localAx[j] = target[0]!; J.localAy[j] = target[1]!;
+  J.localAx[j] = target[0]!;
+  J.localAy[j] = target[1]!;
   wakeJoint(world, j);
 }
 
@@ -481,7 +611,8 @@ export function setJointMotor(world: PhysicsWorld, joint: number, speed: number,
   assertFinite(where, 'speed', speed);
   assertNonNegative(where, 'maxForce', maxForce);
   const J = world.components.Joint;
-  J.motorSpeed[j] = speed; J.maxMotorForce[j] = maxForce;
+  J.motorSpeed[j] = speed;
+  J.maxMotorForce[j] = maxForce;
   J.flags[j] = maxForce > 0 ? J.flags[j]! | JointFlag.Motor : J.flags[j]! & ~JointFlag.Motor;
   if (maxForce === 0) world.joints.impulses[j * IMPULSES + 4] = 0;
   wakeJoint(world, j);
@@ -497,10 +628,16 @@ export function setJointLimits(world: PhysicsWorld, joint: number, lower: number
   const j = requireJoint(where, world, joint, [JointType.Revolute, JointType.Prismatic, JointType.Wheel]);
   const J = world.components.Joint;
   const base = j * IMPULSES;
-  world.joints.impulses[base + 5] = 0; world.joints.impulses[base + 6] = 0;
-  if (lower === null) { J.flags[j] = J.flags[j]! & ~JointFlag.Limit; wakeJoint(world, j); return; }
+  world.joints.impulses[base + 5] = 0;
+  world.joints.impulses[base + 6] = 0;
+  if (lower === null) {
+    J.flags[j] = J.flags[j]! & ~JointFlag.Limit;
+    wakeJoint(world, j);
+    return;
+  }
   checkLimits(where, lower, upper, 'lower', 'upper', J.type[j] === JointType.Revolute ? Math.PI : Infinity);
-  J.lower[j] = lower; J.upper[j] = upper!;
+  J.lower[j] = lower;
+  J.upper[j] = upper!;
   J.flags[j] = J.flags[j]! | JointFlag.Limit;
   wakeJoint(world, j);
 }
@@ -514,9 +651,11 @@ export function setJointSpring(world: PhysicsWorld, joint: number, hertz: number
   const where = 'setJointSpring';
   const j = requireJoint(where, world, joint);
   const J = world.components.Joint;
-  if (J.type[j] === JointType.Mouse) assertPositive(where, 'hertz', hertz); else assertNonNegative(where, 'hertz', hertz);
+  if (J.type[j] === JointType.Mouse) assertPositive(where, 'hertz', hertz);
+  else assertNonNegative(where, 'hertz', hertz);
   assertNonNegative(where, 'dampingRatio', dampingRatio);
-  J.hertz[j] = hertz; J.dampingRatio[j] = dampingRatio;
+  J.hertz[j] = hertz;
+  J.dampingRatio[j] = dampingRatio;
   if (J.type[j] !== JointType.Weld && J.type[j] !== JointType.Mouse) {
     J.flags[j] = hertz > 0 ? J.flags[j]! | JointFlag.Spring : J.flags[j]! & ~JointFlag.Spring;
   }
@@ -541,7 +680,8 @@ export function jointLength(world: PhysicsWorld, joint: number): number {
  */
 export function jointAngle(world: PhysicsWorld, joint: number): number {
   const j = requireJoint('jointAngle', world, joint, [JointType.Revolute, JointType.Weld]);
-  const J = world.components.Joint, ang = world.components.Angle.value;
+  const J = world.components.Joint,
+    ang = world.components.Angle.value;
   let x = (J.b[j] === 0 ? 0 : ang[J.b[j]!]!) - (J.a[j] === 0 ? 0 : ang[J.a[j]!]!) - J.referenceAngle[j]!;
   x -= 2 * Math.PI * Math.round(x / (2 * Math.PI));
   return x;
@@ -556,12 +696,16 @@ export function jointAnchors(world: PhysicsWorld, joint: number): [number, numbe
 }
 
 function anchorsOf(world: PhysicsWorld, j: number): [number, number, number, number] {
-  const J = world.components.Joint, P = world.components.Position, ang = world.components.Angle.value;
+  const J = world.components.Joint,
+    P = world.components.Position,
+    ang = world.components.Angle.value;
   const point = (e: number, lx: number, ly: number): [number, number] => {
     if (e === 0) return [lx, ly];
-    const co = Math.cos(ang[e]!), si = Math.sin(ang[e]!);
+    const co = Math.cos(ang[e]!),
+      si = Math.sin(ang[e]!);
     return [P.x[e]! + co * lx - si * ly, P.y[e]! + si * lx + co * ly];
   };
-  const a = point(J.a[j]!, J.localAx[j]!, J.localAy[j]!), b = point(J.b[j]!, J.localBx[j]!, J.localBy[j]!);
+  const a = point(J.a[j]!, J.localAx[j]!, J.localAy[j]!),
+    b = point(J.b[j]!, J.localBx[j]!, J.localBy[j]!);
   return [a[0], a[1], b[0], b[1]];
 }

@@ -17,7 +17,8 @@ function pairKey(js: JointState, a: number, b: number): number {
 export function addNoCollide(js: JointState, j: number, a: number, b: number): void {
   if (a === 0 || b === 0 || a === b) return;
   js.noCollideJoint[j] = 1;
-  js.noCollide[a] = js.noCollide[a]! + 1; js.noCollide[b] = js.noCollide[b]! + 1;
+  js.noCollide[a] = js.noCollide[a]! + 1;
+  js.noCollide[b] = js.noCollide[b]! + 1;
   const k = pairKey(js, a, b);
   js.noCollidePairs.set(k, (js.noCollidePairs.get(k) ?? 0) + 1);
 }
@@ -26,9 +27,12 @@ export function addNoCollide(js: JointState, j: number, a: number, b: number): v
 export function removeNoCollide(js: JointState, j: number, a: number, b: number): void {
   if (js.noCollideJoint[j] !== 1) return;
   js.noCollideJoint[j] = 0;
-  js.noCollide[a] = js.noCollide[a]! - 1; js.noCollide[b] = js.noCollide[b]! - 1;
-  const k = pairKey(js, a, b), left = (js.noCollidePairs.get(k) ?? 1) - 1;
-  if (left > 0) js.noCollidePairs.set(k, left); else js.noCollidePairs.delete(k);
+  js.noCollide[a] = js.noCollide[a]! - 1;
+  js.noCollide[b] = js.noCollide[b]! - 1;
+  const k = pairKey(js, a, b),
+    left = (js.noCollidePairs.get(k) ?? 1) - 1;
+  if (left > 0) js.noCollidePairs.set(k, left);
+  else js.noCollidePairs.delete(k);
 }
 
 /** Whether a joint without `collideConnected` joins bodies a and b (so their contacts are skipped). */

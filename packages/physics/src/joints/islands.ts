@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
 import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
 import { JointType } from './store.js';
 
 /**
@@ -15,7 +15,8 @@ export function markJointSupport(world: PhysicsWorld, supported: Uint32Array, st
   for (let i = 0; i < joints.length; i++) {
     const j = joints[i]!;
     if (!(J.force[j]! > 0)) continue;
-    supported[J.a[j]!] = stamp; supported[J.b[j]!] = stamp;
+    supported[J.a[j]!] = stamp;
+    supported[J.b[j]!] = stamp;
   }
 }
 
@@ -30,20 +31,30 @@ export function joinJointIslands(world: PhysicsWorld, bodies: ArrayLike<number>,
   const J = world.components.Joint;
   const joints = query(world, [J]);
   if (joints.length === 0) return;
-  const mark = js.bodyStamp, cls = js.bodyClass;
+  const mark = js.bodyStamp,
+    cls = js.bodyClass;
   const stamp = ++js.stamp;
   for (let i = 0; i < bodies.length; i++) mark[bodies[i]!] = stamp;
   const find = (x: number): number => {
-    while (parent[x] !== x) { parent[x] = parent[parent[x]!]!; x = parent[x]!; }
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]!]!;
+      x = parent[x]!;
+    }
     return x;
   };
   for (let i = 0; i < joints.length; i++) {
     const j = joints[i]!;
-    const a = J.a[j]!, b = J.b[j]!;
-    const inA = a !== 0 && mark[a] === stamp, inB = mark[b] === stamp;
-    if (J.type[j] === JointType.Mouse) { rest[b] = 0; continue; }
+    const a = J.a[j]!,
+      b = J.b[j]!;
+    const inA = a !== 0 && mark[a] === stamp,
+      inB = mark[b] === stamp;
+    if (J.type[j] === JointType.Mouse) {
+      rest[b] = 0;
+      continue;
+    }
     if (inA && inB) {
-      const ra = find(a), rb = find(b);
+      const ra = find(a),
+        rb = find(b);
       if (ra !== rb) parent[ra] = rb;
     } else if (inA !== inB) {
       // The other end is the world, a fixed body, or a moving body that never sleeps (class from the

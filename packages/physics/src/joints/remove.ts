@@ -1,8 +1,8 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { query } from '../query.js';
-import { wakeIsland } from '../collision/sleep.js';
 import { detachClothLink } from '../cloth/solver.js';
+import { wakeIsland } from '../collision/sleep.js';
+import { query } from '../query.js';
+import type { PhysicsWorld } from '../world.js';
 import { removeNoCollide } from './connected.js';
 
 /**
@@ -18,9 +18,13 @@ export function removeJointUnchecked(world: PhysicsWorld, j: number): void {
 function detachJoint(world: PhysicsWorld, j: number): void {
   const J = world.components.Joint;
   const att = world.joints.attached;
-  const a = J.a[j]!, b = J.b[j]!;
+  const a = J.a[j]!,
+    b = J.b[j]!;
   removeNoCollide(world.joints, j, a, b);
-  if (a !== 0) { att[a] = att[a]! - 1; if (entityExists(world, a)) wakeIsland(world, a); }
+  if (a !== 0) {
+    att[a] = att[a]! - 1;
+    if (entityExists(world, a)) wakeIsland(world, a);
+  }
   att[b] = att[b]! - 1;
   if (entityExists(world, b)) wakeIsland(world, b);
 }
@@ -33,9 +37,16 @@ function detachJoint(world: PhysicsWorld, j: number): void {
 export function removeJointsOf(world: PhysicsWorld, eid: number): void {
   const att = world.joints.attached;
   if (att.length === 0) return;
-  const J = world.components.Joint, L = world.components.ClothLink;
-  if (hasComponent(world, eid, J)) { detachJoint(world, eid); return; }
-  if (hasComponent(world, eid, L)) { detachClothLink(world, eid); return; }
+  const J = world.components.Joint,
+    L = world.components.ClothLink;
+  if (hasComponent(world, eid, J)) {
+    detachJoint(world, eid);
+    return;
+  }
+  if (hasComponent(world, eid, L)) {
+    detachClothLink(world, eid);
+    return;
+  }
   if (att[eid] === 0) return;
   const joints = query(world, [J]);
   const doomed: number[] = [];
@@ -51,5 +62,8 @@ export function removeJointsOf(world: PhysicsWorld, eid: number): void {
     const l = links[i]!;
     if (L.a[l] === eid || L.b[l] === eid) cut.push(l);
   }
-  for (const l of cut) { detachClothLink(world, l); removeEntity(world, l); }
+  for (const l of cut) {
+    detachClothLink(world, l);
+    removeEntity(world, l);
+  }
 }

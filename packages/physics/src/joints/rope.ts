@@ -1,6 +1,6 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import { addDistanceJoint } from './api.js';
 
 /** Options of `createRope`. Unknown fields are rejected. */
@@ -45,7 +45,8 @@ export interface Rope {
 export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   const where = 'createRope';
   if (world.dimensions !== 2) throw new RangeError(`${where}: ropes need a 2D world, this world has ${world.dimensions} dimensions`);
-  if (options === undefined || options === null || typeof options !== 'object') throw new TypeError(`${where}: options with start and end are required, got ${describe(options)}`);
+  if (options === undefined || options === null || typeof options !== 'object')
+    throw new TypeError(`${where}: options with start and end are required, got ${describe(options)}`);
   assertKnownKeys(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
   assertVector(where, 'start', options.start, 2);
   assertVector(where, 'end', options.end, 2);
@@ -58,15 +59,21 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   const drag = options.drag ?? 0;
   assertNonNegative(where, 'drag', drag);
   if (options.breakForce !== undefined) assertPositive(where, 'breakForce', options.breakForce);
-  const x0 = options.start[0]!, y0 = options.start[1]!, x1 = options.end[0]!, y1 = options.end[1]!;
+  const x0 = options.start[0]!,
+    y0 = options.start[1]!,
+    x1 = options.end[0]!,
+    y1 = options.end[1]!;
   const length = Math.hypot(x1 - x0, y1 - y0);
   if (!(length > 0)) throw new RangeError(`${where}: start and end must differ, got ${describe(options.start)} twice`);
-  const pinStart = options.pinStart ?? true, pinEnd = options.pinEnd ?? false;
+  const pinStart = options.pinStart ?? true,
+    pinEnd = options.pinEnd ?? false;
   const slack = options.slack ?? true;
   // Equal segments: (n - 1) between bodies, plus one to each pinned end.
   const spans = n - 1 + (pinStart ? 1 : 0) + (pinEnd ? 1 : 0);
   if (world.entityIndex.aliveCount + n + spans > world.capacity) {
-    throw new RangeError(`${where}: the rope needs ${n + spans} entities, the world has room for ${world.capacity - world.entityIndex.aliveCount}`);
+    throw new RangeError(
+      `${where}: the rope needs ${n + spans} entities, the world has room for ${world.capacity - world.entityIndex.aliveCount}`,
+    );
   }
   const seg = length / Math.max(spans, 1);
   const bodies = new Int32Array(n);
@@ -74,16 +81,25 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   for (let i = 0; i < n; i++) {
     const t = spans > 0 ? (i + (pinStart ? 1 : 0)) / spans : 0;
     bodies[i] = addBody(world, {
-      position: [x0 + t * (x1 - x0), y0 + t * (y1 - y0)], mass: m, rotates: false,
-      ...(radius > 0 ? { radius } : {}), ...(drag > 0 ? { linearDrag: drag } : {}),
+      position: [x0 + t * (x1 - x0), y0 + t * (y1 - y0)],
+      mass: m,
+      rotates: false,
+      ...(radius > 0 ? { radius } : {}),
+      ...(drag > 0 ? { linearDrag: drag } : {}),
     });
   }
   const joints: number[] = [];
   const link = (a: number | null, b: number, anchorA?: [number, number]): void => {
-    joints.push(addDistanceJoint(world, {
-      a, b, ...(anchorA ? { anchorA } : {}), length: seg, ...(slack ? { minLength: 0 } : {}),
-      ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}),
-    }));
+    joints.push(
+      addDistanceJoint(world, {
+        a,
+        b,
+        ...(anchorA ? { anchorA } : {}),
+        length: seg,
+        ...(slack ? { minLength: 0 } : {}),
+        ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}),
+      }),
+    );
   };
   if (pinStart) link(null, bodies[0]!, [x0, y0]);
   for (let i = 1; i < n; i++) link(bodies[i - 1]!, bodies[i]!);

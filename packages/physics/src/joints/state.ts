@@ -140,8 +140,13 @@ export function createJointState(): JointState {
     bodyClass: new Uint8Array(0),
     stamp: 0,
     breaks: {
-      count: 0, joint: new Float64Array(16), a: new Float64Array(16), b: new Float64Array(16),
-      force: new Float64Array(16), torque: new Float64Array(16), stretch: new Float64Array(16),
+      count: 0,
+      joint: new Float64Array(16),
+      a: new Float64Array(16),
+      b: new Float64Array(16),
+      force: new Float64Array(16),
+      torque: new Float64Array(16),
+      stretch: new Float64Array(16),
     },
     breaksStep: -1,
     stats: { rows: 0, maxError: 0, maxErrorJoint: 0 },
@@ -177,10 +182,23 @@ export function ensureRows(state: JointState, n: number): void {
 export function pushBreak(ev: JointBreakEvents, joint: number, a: number, b: number, force: number, torque: number, stretch: number): void {
   if (ev.count >= ev.joint.length) {
     const n = ev.joint.length * 2;
-    const gf = (o: Float64Array) => { const x = new Float64Array(n); x.set(o); return x; };
-    ev.joint = gf(ev.joint); ev.a = gf(ev.a); ev.b = gf(ev.b);
-    ev.force = gf(ev.force); ev.torque = gf(ev.torque); ev.stretch = gf(ev.stretch);
+    const gf = (o: Float64Array) => {
+      const x = new Float64Array(n);
+      x.set(o);
+      return x;
+    };
+    ev.joint = gf(ev.joint);
+    ev.a = gf(ev.a);
+    ev.b = gf(ev.b);
+    ev.force = gf(ev.force);
+    ev.torque = gf(ev.torque);
+    ev.stretch = gf(ev.stretch);
   }
   const i = ev.count++;
-  ev.joint[i] = joint; ev.a[i] = a; ev.b[i] = b; ev.force[i] = force; ev.torque[i] = torque; ev.stretch[i] = stretch;
+  ev.joint[i] = joint;
+  ev.a[i] = a;
+  ev.b[i] = b;
+  ev.force[i] = force;
+  ev.torque[i] = torque;
+  ev.stretch[i] = stretch;
 }

@@ -40,27 +40,35 @@ export interface JointStore {
   /** Body B (entity slot), always a body. */
   b: Int32Array;
   /** Anchor on A in A's body frame (relative to its centre of mass), m; a world point when `a` is 0. */
-  localAx: Float64Array; localAy: Float64Array;
+  localAx: Float64Array;
+  localAy: Float64Array;
   /** Anchor on B in B's body frame, m. */
-  localBx: Float64Array; localBy: Float64Array;
+  localBx: Float64Array;
+  localBy: Float64Array;
   /** Angle of B minus angle of A when the joint was made, rad: the relative angle the joint holds (revolute limits are measured from it). */
   referenceAngle: Float64Array;
   /** Unit axis in A's body frame (prismatic: the slide; wheel: the suspension), dimensionless. */
-  axisX: Float64Array; axisY: Float64Array;
+  axisX: Float64Array;
+  axisY: Float64Array;
   /** Distance joint: rest length, m, and the range [minLength, maxLength] it may not leave, m. */
-  length: Float64Array; minLength: Float64Array; maxLength: Float64Array;
+  length: Float64Array;
+  minLength: Float64Array;
+  maxLength: Float64Array;
   /**
    * Spring stiffness as a natural frequency, Hz (>= 0; 0 = no spring, or rigid where the joint is
    * rigid) and damping ratio (>= 0): distance (along the rod), revolute (angular, toward the
    * reference angle), prismatic and wheel (along the axis), weld (linear part), mouse (the pull).
    */
-  hertz: Float64Array; dampingRatio: Float64Array;
+  hertz: Float64Array;
+  dampingRatio: Float64Array;
   /** Weld: angular softness, Hz (0 = rigid) and damping ratio. */
-  angularHertz: Float64Array; angularDampingRatio: Float64Array;
+  angularHertz: Float64Array;
+  angularDampingRatio: Float64Array;
   /** JointFlag bits: spring, limit, motor enabled. */
   flags: Uint8Array;
   /** Limits: revolute angle (rad, relative to the reference angle), prismatic and wheel translation along the axis (m). */
-  lower: Float64Array; upper: Float64Array;
+  lower: Float64Array;
+  upper: Float64Array;
   /** Motor target speed: rad/s (revolute, wheel: B relative to A, counter-clockwise), m/s (prismatic, along the axis). */
   motorSpeed: Float64Array;
   /** Motor's largest torque, N m (revolute, wheel), or force, N (prismatic), >= 0. */
@@ -83,10 +91,33 @@ export interface JointStore {
 export function createJointStore(): JointStore {
   const z = (): Float64Array => new Float64Array(0);
   return {
-    type: new Uint8Array(0), a: new Int32Array(0), b: new Int32Array(0),
-    localAx: z(), localAy: z(), localBx: z(), localBy: z(), referenceAngle: z(), axisX: z(), axisY: z(),
-    length: z(), minLength: z(), maxLength: z(), hertz: z(), dampingRatio: z(), angularHertz: z(), angularDampingRatio: z(),
-    flags: new Uint8Array(0), lower: z(), upper: z(), motorSpeed: z(), maxMotorForce: z(), maxForce: z(),
-    breakForce: z(), breakTorque: z(), breakStretch: z(), force: z(), torque: z(),
+    type: new Uint8Array(0),
+    a: new Int32Array(0),
+    b: new Int32Array(0),
+    localAx: z(),
+    localAy: z(),
+    localBx: z(),
+    localBy: z(),
+    referenceAngle: z(),
+    axisX: z(),
+    axisY: z(),
+    length: z(),
+    minLength: z(),
+    maxLength: z(),
+    hertz: z(),
+    dampingRatio: z(),
+    angularHertz: z(),
+    angularDampingRatio: z(),
+    flags: new Uint8Array(0),
+    lower: z(),
+    upper: z(),
+    motorSpeed: z(),
+    maxMotorForce: z(),
+    maxForce: z(),
+    breakForce: z(),
+    breakTorque: z(),
+    breakStretch: z(),
+    force: z(),
+    torque: z(),
   };
 }

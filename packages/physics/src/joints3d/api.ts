@@ -1,11 +1,19 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { createSlot, currentHandle, resolveEntity } from '../handles.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertPositive, assertVector, describe } from '../validate.js';
-import { Joint3DFlag, Joint3DType, joints3DOf, type Joint3DStore } from './store.js';
 import { wakeIsland } from '../collision/sleep.js';
+import { createSlot, currentHandle, resolveEntity } from '../handles.js';
 import { addNoCollide, removeNoCollide } from '../joints/connected.js';
 import { ensureJointArrays } from '../joints/state.js';
+import {
+  assertFinite,
+  assertKnownKeys,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store.js';
 
 /**
  * Joints between 3D bodies, solved in the contact solver's soft substeps (joints3d/solver.ts): ball
@@ -45,7 +53,9 @@ function body(where: string, param: string, world: PhysicsWorld, id: unknown): n
   const slot = resolveEntity(world, id, where, param);
   const c = world.components;
   if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Orientation)) {
-    throw new RangeError(`${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`);
+    throw new RangeError(
+      `${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`,
+    );
   }
   return slot;
 }
@@ -84,8 +94,13 @@ function quat(world: PhysicsWorld, e: number): [number, number, number, number] 
 
 /** v rotated by the inverse of unit quaternion q (world to body frame). */
 function toBody(q: [number, number, number, number], v: [number, number, number]): [number, number, number] {
-  const x = -q[0], y = -q[1], z = -q[2], w = q[3];
-  const tx = 2 * (y * v[2] - z * v[1]), ty = 2 * (z * v[0] - x * v[2]), tz = 2 * (x * v[1] - y * v[0]);
+  const x = -q[0],
+    y = -q[1],
+    z = -q[2],
+    w = q[3];
+  const tx = 2 * (y * v[2] - z * v[1]),
+    ty = 2 * (z * v[0] - x * v[2]),
+    tz = 2 * (x * v[1] - y * v[0]);
   return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz), v[2] + w * tz + (x * ty - y * tx)];
 }
 
@@ -95,23 +110,67 @@ function centre(world: PhysicsWorld, e: number): [number, number, number] {
 }
 
 /** Makes the joint entity and its common fields; anchors pa, pb (world), axis (world). */
-function make(world: PhysicsWorld, where: string, type: number, e: { a: number; b: number }, o: Joint3DBaseOptions, pa: [number, number, number], pb: [number, number, number], axis: [number, number, number]): number {
+function make(
+  world: PhysicsWorld,
+  where: string,
+  type: number,
+  e: { a: number; b: number },
+  o: Joint3DBaseOptions,
+  pa: [number, number, number],
+  pb: [number, number, number],
+  axis: [number, number, number],
+): number {
   const j = createSlot(world, where);
   const s = joints3DOf(world, true);
   if (s.list.length === 0 && !world.removeHooks.includes(removeJoints3DOf)) world.removeHooks.push(removeJoints3DOf);
-  const qa = quat(world, e.a), qb = quat(world, e.b), ca = centre(world, e.a), cb = centre(world, e.b);
-  const la = toBody(qa, [pa[0] - ca[0], pa[1] - ca[1], pa[2] - ca[2]]), lb = toBody(qb, [pb[0] - cb[0], pb[1] - cb[1], pb[2] - cb[2]]);
-  const ua = toBody(qa, axis), ub = toBody(qb, axis);
-  s.type[j] = type; s.flags[j] = 0; s.a[j] = e.a; s.b[j] = e.b;
-  s.ax[j] = la[0]; s.ay[j] = la[1]; s.az[j] = la[2]; s.bx[j] = lb[0]; s.by[j] = lb[1]; s.bz[j] = lb[2];
-  s.uax[j] = ua[0]; s.uay[j] = ua[1]; s.uaz[j] = ua[2]; s.ubx[j] = ub[0]; s.uby[j] = ub[1]; s.ubz[j] = ub[2];
+  const qa = quat(world, e.a),
+    qb = quat(world, e.b),
+    ca = centre(world, e.a),
+    cb = centre(world, e.b);
+  const la = toBody(qa, [pa[0] - ca[0], pa[1] - ca[1], pa[2] - ca[2]]),
+    lb = toBody(qb, [pb[0] - cb[0], pb[1] - cb[1], pb[2] - cb[2]]);
+  const ua = toBody(qa, axis),
+    ub = toBody(qb, axis);
+  s.type[j] = type;
+  s.flags[j] = 0;
+  s.a[j] = e.a;
+  s.b[j] = e.b;
+  s.ax[j] = la[0];
+  s.ay[j] = la[1];
+  s.az[j] = la[2];
+  s.bx[j] = lb[0];
+  s.by[j] = lb[1];
+  s.bz[j] = lb[2];
+  s.uax[j] = ua[0];
+  s.uay[j] = ua[1];
+  s.uaz[j] = ua[2];
+  s.ubx[j] = ub[0];
+  s.uby[j] = ub[1];
+  s.ubz[j] = ub[2];
   // conj(qa) qb
-  const [x1, y1, z1, w1] = [-qa[0], -qa[1], -qa[2], qa[3]], [x2, y2, z2, w2] = qb;
-  s.rx[j] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2; s.ry[j] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  s.rz[j] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2; s.rw[j] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
-  s.lower[j] = 0; s.upper[j] = 0; s.motorSpeed[j] = 0; s.maxMotorTorque[j] = 0; s.length[j] = 0; s.hertz[j] = 0; s.dampingRatio[j] = 0;
-  s.breakForce[j] = o.breakForce ?? Infinity; s.breakTorque[j] = o.breakTorque ?? Infinity;
-  s.lx[j] = 0; s.ly[j] = 0; s.lz[j] = 0; s.wx[j] = 0; s.wy[j] = 0; s.wz[j] = 0; s.limit[j] = 0; s.motor[j] = 0;
+  const [x1, y1, z1, w1] = [-qa[0], -qa[1], -qa[2], qa[3]],
+    [x2, y2, z2, w2] = qb;
+  s.rx[j] = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2;
+  s.ry[j] = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
+  s.rz[j] = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2;
+  s.rw[j] = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  s.lower[j] = 0;
+  s.upper[j] = 0;
+  s.motorSpeed[j] = 0;
+  s.maxMotorTorque[j] = 0;
+  s.length[j] = 0;
+  s.hertz[j] = 0;
+  s.dampingRatio[j] = 0;
+  s.breakForce[j] = o.breakForce ?? Infinity;
+  s.breakTorque[j] = o.breakTorque ?? Infinity;
+  s.lx[j] = 0;
+  s.ly[j] = 0;
+  s.lz[j] = 0;
+  s.wx[j] = 0;
+  s.wy[j] = 0;
+  s.wz[j] = 0;
+  s.limit[j] = 0;
+  s.motor[j] = 0;
   s.list.push(j);
   ensureJointArrays(world.joints, world.capacity);
   world.joints.noCollideJoint[j] = 0;
@@ -143,47 +202,75 @@ export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions)
   const where = 'addBallJoint3D';
   const e = ends(where, world, options, ['anchor', 'axis', 'coneAngle']);
   const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
-  const axis = options.axis === undefined ? [0, 1, 0] as [number, number, number] : unit(where, 'axis', options.axis);
+  const axis = options.axis === undefined ? ([0, 1, 0] as [number, number, number]) : unit(where, 'axis', options.axis);
   if (options.coneAngle !== undefined) {
     assertFinite(where, 'coneAngle', options.coneAngle);
-    if (!(options.coneAngle > 0 && options.coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
+    if (!(options.coneAngle > 0 && options.coneAngle < Math.PI))
+      throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
   }
   const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
   const s = joints3DOf(world, true);
-  if (options.coneAngle !== undefined) { s.flags[j] = Joint3DFlag.Cone; s.upper[j] = options.coneAngle; }
+  if (options.coneAngle !== undefined) {
+    s.flags[j] = Joint3DFlag.Cone;
+    s.upper[j] = options.coneAngle;
+  }
   return currentHandle(world, j);
 }
 
 /** A hinge's or slider's checked limits and motor (`limitAndMotor`). */
-interface LimitAndMotor { lower?: number; upper?: number; motorSpeed?: number; maxMotor?: number }
+interface LimitAndMotor {
+  lower?: number;
+  upper?: number;
+  motorSpeed?: number;
+  maxMotor?: number;
+}
 
 /**
  * Checks the limit pair (lower <= 0 <= upper, both or neither) and the motor (a finite speed with a
  * largest torque or force `maxName` >= 0) of addHingeJoint3D and addSliderJoint3D before anything is made.
  * @throws RangeError `<where>: ...` naming the parameter and value.
  */
-function limitAndMotor(where: string, lower: number | undefined, upper: number | undefined, motorSpeed: number | undefined, maxMotor: number | undefined, maxName: string): LimitAndMotor {
+function limitAndMotor(
+  where: string,
+  lower: number | undefined,
+  upper: number | undefined,
+  motorSpeed: number | undefined,
+  maxMotor: number | undefined,
+  maxName: string,
+): LimitAndMotor {
   const out: LimitAndMotor = {};
   if (lower !== undefined || upper !== undefined) {
-    if (lower === undefined || upper === undefined) throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(lower)}, upper ${describe(upper)}`);
-    assertFinite(where, 'lower', lower); assertFinite(where, 'upper', upper);
+    if (lower === undefined || upper === undefined)
+      throw new RangeError(`${where}: lower and upper must be given together, got lower ${describe(lower)}, upper ${describe(upper)}`);
+    assertFinite(where, 'lower', lower);
+    assertFinite(where, 'upper', upper);
     if (!(lower <= 0)) throw new RangeError(`${where}: lower must be <= 0, got ${lower}`);
     if (!(upper >= 0)) throw new RangeError(`${where}: upper must be >= 0, got ${upper}`);
-    out.lower = lower; out.upper = upper;
+    out.lower = lower;
+    out.upper = upper;
   }
   if (motorSpeed !== undefined || maxMotor !== undefined) {
     assertFinite(where, 'motorSpeed', motorSpeed ?? 0);
     if (maxMotor === undefined) throw new RangeError(`${where}: ${maxName} must be given with motorSpeed, got undefined`);
     assertNonNegative(where, maxName, maxMotor);
-    out.motorSpeed = motorSpeed ?? 0; out.maxMotor = maxMotor;
+    out.motorSpeed = motorSpeed ?? 0;
+    out.maxMotor = maxMotor;
   }
   return out;
 }
 
 /** Writes checked limits and motor into joint j's store row (the motor's cap goes in maxMotorTorque, N m or N). */
 function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor): void {
-  if (lm.lower !== undefined) { s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = lm.lower; s.upper[j] = lm.upper!; }
-  if (lm.maxMotor !== undefined) { s.flags[j] = s.flags[j]! | Joint3DFlag.Motor; s.motorSpeed[j] = lm.motorSpeed!; s.maxMotorTorque[j] = lm.maxMotor; }
+  if (lm.lower !== undefined) {
+    s.flags[j] = s.flags[j]! | Joint3DFlag.Limit;
+    s.lower[j] = lm.lower;
+    s.upper[j] = lm.upper!;
+  }
+  if (lm.maxMotor !== undefined) {
+    s.flags[j] = s.flags[j]! | Joint3DFlag.Motor;
+    s.motorSpeed[j] = lm.motorSpeed!;
+    s.maxMotorTorque[j] = lm.maxMotor;
+  }
 }
 
 /** Options of `addHingeJoint3D`. */
@@ -261,15 +348,23 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
   const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
   const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
   assertPositive(where, 'length', length);
-  const hertz = options.hertz ?? 0, zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'hertz', hertz); assertNonNegative(where, 'dampingRatio', zeta);
-  const minL = options.minLength ?? (hertz > 0 ? 0 : length), maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
+  const hertz = options.hertz ?? 0,
+    zeta = options.dampingRatio ?? 0;
+  assertNonNegative(where, 'hertz', hertz);
+  assertNonNegative(where, 'dampingRatio', zeta);
+  const minL = options.minLength ?? (hertz > 0 ? 0 : length),
+    maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
   assertNonNegative(where, 'minLength', minL);
   if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length)) throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
   const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
   const s = joints3DOf(world, true);
-  s.length[j] = length; s.lower[j] = minL; s.upper[j] = maxL; s.hertz[j] = hertz; s.dampingRatio[j] = zeta;
+  s.length[j] = length;
+  s.lower[j] = minL;
+  s.upper[j] = maxL;
+  s.hertz[j] = hertz;
+  s.dampingRatio[j] = zeta;
   s.flags[j] = (hertz > 0 ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
   return currentHandle(world, j);
 }
@@ -351,7 +446,8 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
   if (coneAngle !== null) {
     assertFinite(where, 'coneAngle', coneAngle);
     if (!(coneAngle > 0 && coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(coneAngle)}`);
-    s.flags[j] = s.flags[j]! | Joint3DFlag.Cone; s.upper[j] = coneAngle;
+    s.flags[j] = s.flags[j]! | Joint3DFlag.Cone;
+    s.upper[j] = coneAngle;
   } else s.flags[j] = s.flags[j]! & ~Joint3DFlag.Cone;
   s.limit[j] = 0;
   wakeJoint3D(world, s, j);
@@ -364,7 +460,9 @@ export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle
  * started from its last impulse, so that impulse is dropped; rows that still run keep theirs.
  */
 function dropIdleDistanceImpulses(s: Joint3DStore, j: number): void {
-  const f = s.flags[j]!, spring = (f & Joint3DFlag.Spring) !== 0, limit = (f & Joint3DFlag.Limit) !== 0;
+  const f = s.flags[j]!,
+    spring = (f & Joint3DFlag.Spring) !== 0,
+    limit = (f & Joint3DFlag.Limit) !== 0;
   if (!spring && limit) s.lx[j] = 0;
   if (!limit || !(s.lower[j]! > 0 || !spring)) s.limit[j] = 0;
   if (!limit || !Number.isFinite(s.upper[j]!)) s.ly[j] = 0;
@@ -390,14 +488,21 @@ export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, len
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
   assertPositive(where, 'length', length);
   const spring = (s.flags[j]! & Joint3DFlag.Spring) !== 0;
-  const minL = minLength ?? (spring ? 0 : length), maxL = maxLength ?? (spring ? Infinity : length);
+  const minL = minLength ?? (spring ? 0 : length),
+    maxL = maxLength ?? (spring ? Infinity : length);
   assertNonNegative(where, 'minLength', minL);
   if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
-  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length)) throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
   const limitsChanged = s.lower[j] !== minL || s.upper[j] !== maxL;
-  s.length[j] = length; s.lower[j] = minL; s.upper[j] = maxL;
+  s.length[j] = length;
+  s.lower[j] = minL;
+  s.upper[j] = maxL;
   s.flags[j] = (spring ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
-  if (limitsChanged) { s.limit[j] = 0; s.ly[j] = 0; }
+  if (limitsChanged) {
+    s.limit[j] = 0;
+    s.ly[j] = 0;
+  }
   dropIdleDistanceImpulses(s, j);
   wakeJoint3D(world, s, j);
 }
@@ -422,7 +527,8 @@ export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, her
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
   assertNonNegative(where, 'hertz', hertz);
   assertNonNegative(where, 'dampingRatio', dampingRatio);
-  s.hertz[j] = hertz; s.dampingRatio[j] = dampingRatio;
+  s.hertz[j] = hertz;
+  s.dampingRatio[j] = dampingRatio;
   s.flags[j] = hertz > 0 ? s.flags[j]! | Joint3DFlag.Spring : s.flags[j]! & ~Joint3DFlag.Spring;
   dropIdleDistanceImpulses(s, j);
   wakeJoint3D(world, s, j);
@@ -468,7 +574,8 @@ export function setJoint3DLimits(world: PhysicsWorld, joint: number, lower: numb
   const where = 'setJoint3DLimits';
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Hinge, Joint3DType.Slider]);
   if (lower === null) {
-    s.flags[j] = s.flags[j]! & ~Joint3DFlag.Limit; s.limit[j] = 0;
+    s.flags[j] = s.flags[j]! & ~Joint3DFlag.Limit;
+    s.limit[j] = 0;
     wakeJoint3D(world, s, j);
     return;
   }
@@ -480,7 +587,10 @@ export function setJoint3DLimits(world: PhysicsWorld, joint: number, lower: numb
     if (!(lower >= -Math.PI)) throw new RangeError(`${where}: lower must be >= -pi for a hinge, got ${lower}`);
     if (!(upper <= Math.PI)) throw new RangeError(`${where}: upper must be <= pi for a hinge, got ${upper}`);
   }
-  s.flags[j] = s.flags[j]! | Joint3DFlag.Limit; s.lower[j] = lower; s.upper[j] = upper; s.limit[j] = 0;
+  s.flags[j] = s.flags[j]! | Joint3DFlag.Limit;
+  s.lower[j] = lower;
+  s.upper[j] = upper;
+  s.limit[j] = 0;
   wakeJoint3D(world, s, j);
 }
 
@@ -499,9 +609,13 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
   const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Hinge, Joint3DType.Slider]);
   assertFinite(where, 'speed', speed);
   assertNonNegative(where, 'maxForce', maxForce);
-  s.motorSpeed[j] = speed; s.maxMotorTorque[j] = maxForce;
+  s.motorSpeed[j] = speed;
+  s.maxMotorTorque[j] = maxForce;
   if (maxForce > 0) s.flags[j] = s.flags[j]! | Joint3DFlag.Motor;
-  else { s.flags[j] = s.flags[j]! & ~Joint3DFlag.Motor; s.motor[j] = 0; }
+  else {
+    s.flags[j] = s.flags[j]! & ~Joint3DFlag.Motor;
+    s.motor[j] = 0;
+  }
   wakeJoint3D(world, s, j);
 }
 
@@ -509,7 +623,8 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
 export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
   const s = joints3DOf(world);
-  if (s === undefined || !s.list.includes(j)) throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
+  if (s === undefined || !s.list.includes(j))
+    throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
   removeJoint3DUnchecked(world, s, j);
 }
 
@@ -526,9 +641,11 @@ export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: 
 function unlistJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
   const i = s.list.indexOf(j);
   if (i >= 0) s.list.splice(i, 1);
-  const a = s.a[j]!, b = s.b[j]!;
+  const a = s.a[j]!,
+    b = s.b[j]!;
   removeNoCollide(world.joints, j, a, b);
-  s.a[j] = 0; s.b[j] = 0;
+  s.a[j] = 0;
+  s.b[j] = 0;
   if (a !== 0 && entityExists(world, a)) wakeIsland(world, a);
   if (b !== 0 && entityExists(world, b)) wakeIsland(world, b);
 }
@@ -537,7 +654,10 @@ function unlistJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
 function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
   const s = joints3DOf(world);
   if (s === undefined || s.list.length === 0) return;
-  if (s.list.includes(eid)) { unlistJoint3D(world, s, eid); return; }
+  if (s.list.includes(eid)) {
+    unlistJoint3D(world, s, eid);
+    return;
+  }
   for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
 

@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
 import { hasComponent } from 'bitecs';
+import type { PhysicsWorld } from '../world.js';
 import { joints3DOf } from './store.js';
 
 /**
@@ -12,10 +12,18 @@ export function markJoint3DSupport(world: PhysicsWorld, supported: Uint32Array, 
   const list = s.list;
   for (let i = 0; i < list.length; i++) {
     const j: number = list[i]!;
-    const load = Math.abs(s.lx[j]!) + Math.abs(s.ly[j]!) + Math.abs(s.lz[j]!) + Math.abs(s.wx[j]!) + Math.abs(s.wy[j]!) + Math.abs(s.wz[j]!)
-      + Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!);
+    const load =
+      Math.abs(s.lx[j]!) +
+      Math.abs(s.ly[j]!) +
+      Math.abs(s.lz[j]!) +
+      Math.abs(s.wx[j]!) +
+      Math.abs(s.wy[j]!) +
+      Math.abs(s.wz[j]!) +
+      Math.abs(s.limit[j]!) +
+      Math.abs(s.motor[j]!);
     if (!(load > 0)) continue;
-    supported[s.a[j]!] = stamp; supported[s.b[j]!] = stamp;
+    supported[s.a[j]!] = stamp;
+    supported[s.b[j]!] = stamp;
   }
 }
 
@@ -34,13 +42,21 @@ export function markJoint3DSupport(world: PhysicsWorld, supported: Uint32Array, 
  * its island (it would otherwise hold the moving body like a fixed anchor); null when there is none.
  */
 export function joinJoint3DIslands(
-  world: PhysicsWorld, bodies: ArrayLike<number>, rest: Float64Array, parent: Int32Array, member: Uint32Array, stamp: number,
+  world: PhysicsWorld,
+  bodies: ArrayLike<number>,
+  rest: Float64Array,
+  parent: Int32Array,
+  member: Uint32Array,
+  stamp: number,
 ): number[] | null {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return null;
   for (let i = 0; i < bodies.length; i++) member[bodies[i]!] = stamp;
   const find = (x: number): number => {
-    while (parent[x] !== x) { parent[x] = parent[parent[x]!]!; x = parent[x]!; }
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]!]!;
+      x = parent[x]!;
+    }
     return x;
   };
   const c = world.components;
@@ -48,13 +64,17 @@ export function joinJoint3DIslands(
   let wake: number[] | null = null;
   for (let i = 0; i < list.length; i++) {
     const j: number = list[i]!;
-    const a: number = s.a[j]!, b: number = s.b[j]!;
-    const inA: boolean = a !== 0 && member[a] === stamp, inB: boolean = b !== 0 && member[b] === stamp;
+    const a: number = s.a[j]!,
+      b: number = s.b[j]!;
+    const inA: boolean = a !== 0 && member[a] === stamp,
+      inB: boolean = b !== 0 && member[b] === stamp;
     if (inA && inB) {
-      const ra = find(a), rb = find(b);
+      const ra = find(a),
+        rb = find(b);
       if (ra !== rb) parent[ra] = rb;
     } else if (inA !== inB) {
-      const other = inA ? b : a, own = inA ? a : b;
+      const other = inA ? b : a,
+        own = inA ? a : b;
       if (other === 0 || hasComponent(world, other, c.Static)) continue;
       if (hasComponent(world, other, c.Sleeping)) {
         if (rest[own] === 0) (wake ??= []).push(other);

@@ -11,11 +11,22 @@
  */
 export function cosine(x: number): number {
   const r = x - TWO_PI * Math.round(x * INV_TWO_PI);
-  const y = HALF_PI - Math.abs(r), z = y * y, z2 = z * z, z4 = z2 * z2;
-  return y * ((1 + z * S3) + z2 * (S5 + z * S7) + z4 * ((S9 + z * S11) + z2 * (S13 + z * S15)) + z4 * z4 * S17);
+  const y = HALF_PI - Math.abs(r),
+    z = y * y,
+    z2 = z * z,
+    z4 = z2 * z2;
+  return y * (1 + z * S3 + z2 * (S5 + z * S7) + z4 * (S9 + z * S11 + z2 * (S13 + z * S15)) + z4 * z4 * S17);
 }
 
-const TWO_PI = 2 * Math.PI, INV_TWO_PI = 1 / TWO_PI, HALF_PI = Math.PI / 2;
+const TWO_PI = 2 * Math.PI,
+  INV_TWO_PI = 1 / TWO_PI,
+  HALF_PI = Math.PI / 2;
 // Taylor coefficients of sin: (-1)^k / (2k + 1)!
-const S3 = -1 / 6, S5 = 1 / 120, S7 = -1 / 5040, S9 = 1 / 362880, S11 = -1 / 39916800, S13 = 1 / 6227020800, S15 = -1 / 1307674368000;
+const S3 = -1 / 6,
+  S5 = 1 / 120,
+  S7 = -1 / 5040,
+  S9 = 1 / 362880,
+  S11 = -1 / 39916800,
+  S13 = 1 / 6227020800,
+  S15 = -1 / 1307674368000;
 const S17 = 1 / 355687428096000;

@@ -6,14 +6,25 @@
 
 /** Rotates (vx, vy, vz) by the quaternion (qx, qy, qz, qw); writes into out[0..2]. */
 export function rotateVector(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number, out: Float64Array): void {
-  const tx = 2 * (qy * vz - qz * vy), ty = 2 * (qz * vx - qx * vz), tz = 2 * (qx * vy - qy * vx);
+  const tx = 2 * (qy * vz - qz * vy),
+    ty = 2 * (qz * vx - qx * vz),
+    tz = 2 * (qx * vy - qy * vx);
   out[0] = vx + qw * tx + (qy * tz - qz * ty);
   out[1] = vy + qw * ty + (qz * tx - qx * tz);
   out[2] = vz + qw * tz + (qx * ty - qy * tx);
 }
 
 /** Rotates (vx, vy, vz) by the inverse (conjugate) of the unit quaternion: world to body frame. */
-export function rotateVectorInverse(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number, out: Float64Array): void {
+export function rotateVectorInverse(
+  qx: number,
+  qy: number,
+  qz: number,
+  qw: number,
+  vx: number,
+  vy: number,
+  vz: number,
+  out: Float64Array,
+): void {
   rotateVector(-qx, -qy, -qz, qw, vx, vy, vz, out);
 }
 
@@ -22,25 +33,56 @@ export function rotateVectorInverse(qx: number, qy: number, qz: number, qw: numb
  * |r| about r, world frame), renormalised so it stays unit length to rounding.
  */
 export function rotateFrom(
-  qx: Float64Array, qy: Float64Array, qz: Float64Array, qw: Float64Array, e: number,
-  x: number, y: number, z: number, w: number, rx: number, ry: number, rz: number,
+  qx: Float64Array,
+  qy: Float64Array,
+  qz: Float64Array,
+  qw: Float64Array,
+  e: number,
+  x: number,
+  y: number,
+  z: number,
+  w: number,
+  rx: number,
+  ry: number,
+  rz: number,
 ): void {
   const angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
-  let dx = 0, dy = 0, dz = 0, dw = 1;
+  let dx = 0,
+    dy = 0,
+    dz = 0,
+    dw = 1;
   if (angle > 0) {
     const k = Math.sin(0.5 * angle) / angle;
-    dx = rx * k; dy = ry * k; dz = rz * k; dw = Math.cos(0.5 * angle);
+    dx = rx * k;
+    dy = ry * k;
+    dz = rz * k;
+    dw = Math.cos(0.5 * angle);
   }
   let nx = dw * x + dx * w + dy * z - dz * y;
   let ny = dw * y - dx * z + dy * w + dz * x;
   let nz = dw * z + dx * y - dy * x + dz * w;
   let nw = dw * w - dx * x - dy * y - dz * z;
   const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-  nx *= inv; ny *= inv; nz *= inv; nw *= inv;
-  qx[e] = nx; qy[e] = ny; qz[e] = nz; qw[e] = nw;
+  nx *= inv;
+  ny *= inv;
+  nz *= inv;
+  nw *= inv;
+  qx[e] = nx;
+  qy[e] = ny;
+  qz[e] = nz;
+  qw[e] = nw;
 }
 
 /** q[e] = exp(r / 2) q[e]: turns the stored orientation of entity e by the rotation vector r. */
-export function rotateInPlace(qx: Float64Array, qy: Float64Array, qz: Float64Array, qw: Float64Array, e: number, rx: number, ry: number, rz: number): void {
+export function rotateInPlace(
+  qx: Float64Array,
+  qy: Float64Array,
+  qz: Float64Array,
+  qw: Float64Array,
+  e: number,
+  rx: number,
+  ry: number,
+  rz: number,
+): void {
   rotateFrom(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, rx, ry, rz);
 }

@@ -1,7 +1,7 @@
 import { $internal, commitRemovals } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
 import { touchSparseSet } from '../lean-ecs.js';
+import { registerExternalWorldState } from '../snapshot/world-state.js';
+import type { PhysicsWorld } from '../world.js';
 
 /**
  * Particle archetypes: creating and removing many entities of one fixed component set without
@@ -46,13 +46,26 @@ import { touchSparseSet } from '../lean-ecs.js';
  */
 
 /** bitecs 0.4 sparse set (queries and their pending removals). */
-interface SparseSet { dense: number[]; sparse: number[]; has(v: number): boolean; add(v: number): void; remove(v: number): void }
+interface SparseSet {
+  dense: number[];
+  sparse: number[];
+  has(v: number): boolean;
+  add(v: number): void;
+  remove(v: number): void;
+}
 /** bitecs 0.4 query data. */
 interface QueryData extends SparseSet {
-  masks: Record<number, number>; notMasks: Record<number, number>; orMasks: Record<number, number>;
-  generations: number[]; toRemove: SparseSet;
+  masks: Record<number, number>;
+  notMasks: Record<number, number>;
+  orMasks: Record<number, number>;
+  generations: number[];
+  toRemove: SparseSet;
 }
-interface ComponentData { generationId: number; bitflag: number; ref: object }
+interface ComponentData {
+  generationId: number;
+  bitflag: number;
+  ref: object;
+}
 /** bitecs 0.4 world internals used here. */
 interface EcsInternals {
   entityIndex: { aliveCount: number; dense: number[]; sparse: number[]; maxId: number; versioning: boolean };
@@ -133,8 +146,25 @@ registerExternalWorldState({
     if (t !== undefined) settle(world, t);
     return t;
   },
-  clear: (world) => { tables.delete(world); },
-  keep: ['list', 'byKey', 'capacity', 'slotArchetype', 'staleSet', 'staleArchetype', 'marks', 'pendingMark', 'pending', 'pendingCount', 'sentinel', 'seenQueries', 'archFlags', 'work'],
+  clear: (world) => {
+    tables.delete(world);
+  },
+  keep: [
+    'list',
+    'byKey',
+    'capacity',
+    'slotArchetype',
+    'staleSet',
+    'staleArchetype',
+    'marks',
+    'pendingMark',
+    'pending',
+    'pendingCount',
+    'sentinel',
+    'seenQueries',
+    'archFlags',
+    'work',
+  ],
 });
 
 /** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
@@ -144,8 +174,20 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
     typedMasks(world);
     const none = new Int32Array(0);
     const table: ArchetypeTable = {
-      list: [], byKey: new Map(), order: { disorder: 0 }, capacity: world.capacity, slotArchetype: none, staleSet: [],
-      staleArchetype: none, marks: new Uint8Array(0), pendingMark: none, pending: none, pendingCount: 0, seenQueries: new Set(), archFlags: new Uint8Array(0), work: new Int32Array(0),
+      list: [],
+      byKey: new Map(),
+      order: { disorder: 0 },
+      capacity: world.capacity,
+      slotArchetype: none,
+      staleSet: [],
+      staleArchetype: none,
+      marks: new Uint8Array(0),
+      pendingMark: none,
+      pending: none,
+      pendingCount: 0,
+      seenQueries: new Set(),
+      archFlags: new Uint8Array(0),
+      work: new Int32Array(0),
       sentinel: { toRemove: { dense: [], reset: () => settle(world, table) }, remove: () => {} },
     };
     t = table;
@@ -178,18 +220,26 @@ function typedMasks(world: PhysicsWorld): void {
 function slotArrays(table: ArchetypeTable): void {
   if (table.slotArchetype.length !== 0) return;
   const n = table.capacity + 1;
-  table.slotArchetype = new Int32Array(n); table.staleArchetype = new Int32Array(n); table.marks = new Uint8Array(n);
-  table.pendingMark = new Int32Array(n); table.pending = new Int32Array(n);
+  table.slotArchetype = new Int32Array(n);
+  table.staleArchetype = new Int32Array(n);
+  table.marks = new Uint8Array(n);
+  table.pendingMark = new Int32Array(n);
+  table.pending = new Int32Array(n);
 }
 
 function matchesMasks(q: QueryData, masks: Int32Array): boolean {
   let orMatch = true;
-  for (const _ in q.orMasks) { orMatch = false; break; }
+  for (const _ in q.orMasks) {
+    orMatch = false;
+    break;
+  }
   const gens = q.generations;
   for (let i = 0; i < gens.length; i++) {
     const g = gens[i]!;
     const m = g < masks.length ? masks[g]! : 0;
-    const qm = q.masks[g], qn = q.notMasks[g], qo = q.orMasks[g];
+    const qm = q.masks[g],
+      qn = q.notMasks[g],
+      qo = q.orMasks[g];
     if (qn && (m & qn) !== 0) return false;
     if (qm && (m & qm) !== qm) return false;
     if (qo && (m & qo) !== 0) orMatch = true;
@@ -255,7 +305,10 @@ export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, 
     table.pendingMark[slot] = 0;
   }
   countBirth(table, pending === mark);
-  if (ecs.entityComponents instanceof Map) { table.staleSet[slot] = ecs.entityComponents.get(slot); table.staleArchetype[slot] = mark; }
+  if (ecs.entityComponents instanceof Map) {
+    table.staleSet[slot] = ecs.entityComponents.get(slot);
+    table.staleArchetype[slot] = mark;
+  }
   return a;
 }
 
@@ -281,10 +334,15 @@ export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, mark
   // Births not in place, and rebirths over another archetype's pending death: the only ones with query work.
   if (table.work.length < n) table.work = new Int32Array(Math.max(n, 2 * table.work.length));
   const list2 = table.work;
-  let work = 0, leaving = 0;
+  let work = 0,
+    leaving = 0;
   for (let k = 0; k < n; k++) {
-    const p = pends[k]!, m = marks[k]!;
-    if (p !== m) { list2[work++] = k; if (p !== 0) leaving++; }
+    const p = pends[k]!,
+      m = marks[k]!;
+    if (p !== m) {
+      list2[work++] = k;
+      if (p !== 0) leaving++;
+    }
   }
   if (work === 0) return;
   // The archetypes involved (1: born not in place, 2: a pending death of it reborn as another).
@@ -292,7 +350,9 @@ export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, mark
   const flags = table.archFlags;
   flags.fill(0, 0, list.length);
   for (let w = 0; w < work; w++) {
-    const k = list2[w]!, p = pends[k]!, m = marks[k]!;
+    const k = list2[w]!,
+      p = pends[k]!,
+      m = marks[k]!;
     flags[m - 1]! |= 1;
     if (p !== 0) flags[p - 1]! |= 2;
   }
@@ -306,7 +366,8 @@ export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, mark
       if (seen.has(q)) continue;
       seen.add(q);
       // Per archetype: 1 if it belongs to q, 2 if its masks match q (what leaveOthers asks).
-      for (let b = 0; b < list.length; b++) flags[list.length + b] = (list[b]!.queries.includes(q) ? 1 : 0) | (leaving > 0 && matchesMasks(q, list[b]!.masks) ? 2 : 0);
+      for (let b = 0; b < list.length; b++)
+        flags[list.length + b] = (list[b]!.queries.includes(q) ? 1 : 0) | (leaving > 0 && matchesMasks(q, list[b]!.masks) ? 2 : 0);
       applyToQuery(flags, list.length, q, slots, marks, pends, list2, work, leaving > 0);
     }
   }
@@ -318,10 +379,22 @@ export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, mark
  * work, in birth order). `flags[o + i]` says of archetype id i: 1 it belongs to q, 2 its masks match q
  * (computed only when `leaving`: some birth took another archetype's pending slot).
  */
-function applyToQuery(flags: Uint8Array, o: number, q: QueryData, slots: Int32Array, marks: Int32Array, pends: Int32Array, work: Int32Array, n: number, leaving: boolean): void {
+function applyToQuery(
+  flags: Uint8Array,
+  o: number,
+  q: QueryData,
+  slots: Int32Array,
+  marks: Int32Array,
+  pends: Int32Array,
+  work: Int32Array,
+  n: number,
+  leaving: boolean,
+): void {
   const r = q.toRemove;
   for (let w = 0; w < n; w++) {
-    const k = work[w]!, p = pends[k]!, m = marks[k]!;
+    const k = work[w]!,
+      p = pends[k]!,
+      m = marks[k]!;
     const e = slots[k]!;
     const f = flags[o + m - 1]!;
     if (leaving && p !== 0 && (f & 2) === 0) {
@@ -385,7 +458,8 @@ export function bornSlotQueued(world: PhysicsWorld, a: Archetype): number {
 export let queuedPending = 0;
 
 function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
-  const table = a.table, ecs = ecsOf(world);
+  const table = a.table,
+    ecs = ecsOf(world);
   if (table.slotArchetype.length === 0) slotArrays(table);
   // A hook between births may have made a query.
   if (a.queryCount !== ecs.queries.size) refreshQueries(ecs, a);
@@ -401,7 +475,8 @@ function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
   }
   ix.aliveCount++;
   world.spawnStamp[e] = world.spawnStamp[e]! + 1;
-  const masks = a.masks, em = ecs.entityMasks;
+  const masks = a.masks,
+    em = ecs.entityMasks;
   for (let g = 0; g < masks.length; g++) em[g]![e] = masks[g]!;
   const mark = a.id + 1;
   // Component set (where bitecs keeps Sets): the one this slot's last particle of the same archetype left, if untouched since.
@@ -423,7 +498,7 @@ function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
   // A pending death of the same archetype in this slot keeps its place in every query; another
   // archetype's keeps it in the queries both match.
   const pend = table.pendingMark[e]!;
-  let inPlace = pend === mark;
+  const inPlace = pend === mark;
   if (queued) {
     queuedPending = pend;
     if (pend !== 0) table.pendingMark[e] = 0;
@@ -437,7 +512,8 @@ function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
   if (!inPlace) {
     const qs = a.queries;
     for (let i = 0; i < qs.length; i++) {
-      const q = qs[i]!, r = q.toRemove;
+      const q = qs[i]!,
+        r = q.toRemove;
       // A slot bitecs itself freed and still lists as pending keeps its place too (queryAddEntity).
       if (r.dense.length !== 0 && r.has(e)) r.remove(e);
       else q.add(e);
@@ -475,9 +551,13 @@ export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: Archetyp
   table.pendingMark[e] = mark;
   table.pending[table.pendingCount++] = e;
   const ix = ecs.entityIndex;
-  const at = ix.sparse[e]!, last = ix.aliveCount - 1, lastId = ix.dense[last]!;
-  ix.sparse[lastId] = at; ix.dense[at] = lastId;
-  ix.sparse[e] = last; ix.dense[last] = e;
+  const at = ix.sparse[e]!,
+    last = ix.aliveCount - 1,
+    lastId = ix.dense[last]!;
+  ix.sparse[lastId] = at;
+  ix.dense[at] = lastId;
+  ix.sparse[e] = last;
+  ix.dense[last] = e;
   ix.aliveCount = last;
   for (let g = 0; g < em.length; g++) em[g]![e] = 0;
   table.order.disorder++;
@@ -496,7 +576,9 @@ function hasMasks(em: number[][], e: number, masks: Int32Array): boolean {
  */
 export function settle(world: PhysicsWorld, table: ArchetypeTable): void {
   if (table.pendingCount === 0) return;
-  const list = table.list, mark = table.pendingMark, pending = table.pending;
+  const list = table.list,
+    mark = table.pendingMark,
+    pending = table.pending;
   for (let k = 0; k < table.pendingCount; k++) {
     const e = pending[k]!;
     const m = mark[e]!;
@@ -539,20 +621,35 @@ export function defragment(world: PhysicsWorld, table: ArchetypeTable): void {
 }
 
 function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
-  const dense = q.dense, sparse = q.sparse, n = dense.length;
+  const dense = q.dense,
+    sparse = q.sparse,
+    n = dense.length;
   let sorted = true;
-  for (let i = 1; i < n; i++) if (dense[i]! < dense[i - 1]!) { sorted = false; break; }
+  for (let i = 1; i < n; i++)
+    if (dense[i]! < dense[i - 1]!) {
+      sorted = false;
+      break;
+    }
   if (sorted) return;
   touchSparseSet(q); // written directly below: snapshots must not take it for unchanged
   if (n * 8 < maxId) {
     const copy = Int32Array.from(dense).sort();
-    for (let i = 0; i < n; i++) { const e = copy[i]!; dense[i] = e; sparse[e] = i; }
+    for (let i = 0; i < n; i++) {
+      const e = copy[i]!;
+      dense[i] = e;
+      sparse[e] = i;
+    }
     return;
   }
   for (let i = 0; i < n; i++) marks[dense[i]!] = 1;
   let j = 0;
   for (let e = 1; e <= maxId; e++) {
-    if (marks[e] === 1) { marks[e] = 0; dense[j] = e; sparse[e] = j; j++; }
+    if (marks[e] === 1) {
+      marks[e] = 0;
+      dense[j] = e;
+      sparse[e] = j;
+      j++;
+    }
   }
 }
 
@@ -564,7 +661,8 @@ function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
  */
 export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out: Int32Array): void {
   const ecs = ecsOf(world);
-  const ix = ecs.entityIndex, spawn = world.spawnStamp;
+  const ix = ecs.entityIndex,
+    spawn = world.spawnStamp;
   for (let k = 0; k < count; k++) {
     let e: number;
     if (ix.aliveCount < ix.dense.length) {
@@ -582,7 +680,8 @@ export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out:
   // A free slot's masks are 0 (removal clears them), so generations the archetype has no bit in need no writes.
   const masks = a.masks;
   for (let g = 0; g < masks.length; g++) {
-    const em = ecs.entityMasks[g]!, m = masks[g]!;
+    const em = ecs.entityMasks[g]!,
+      m = masks[g]!;
     if (m !== 0) for (let k = 0; k < count; k++) em[out[k]!] = m;
   }
   const qs = a.queries;
@@ -594,15 +693,22 @@ export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out:
     let k = 0;
     for (; k < count; k++) {
       const e = out[k]!;
-      if (r.has(e)) { r.remove(e); continue; }
+      if (r.has(e)) {
+        r.remove(e);
+        continue;
+      }
       q.add(e);
       break;
     }
-    const dense = q.dense, sparse = q.sparse;
+    const dense = q.dense,
+      sparse = q.sparse;
     const pending = r.dense.length > 0;
     for (k++; k < count; k++) {
       const e = out[k]!;
-      if (pending && r.has(e)) { r.remove(e); continue; }
+      if (pending && r.has(e)) {
+        r.remove(e);
+        continue;
+      }
       if (dense[sparse[e]!] !== e) sparse[e] = dense.push(e) - 1;
     }
     touchSparseSet(q); // written directly above: snapshots must not take it for unchanged

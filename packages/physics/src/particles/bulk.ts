@@ -1,9 +1,18 @@
-import type { PhysicsWorld } from '../world.js';
 import { addParticle } from '../bodies.js';
 import { currentHandle, slotOf } from '../handles.js';
-import { assertInteger, assertOptions, describe } from '../validate.js';
-import { archetypeFromEntity, archetypes, bornSlots, ecsOf, pendingArchetype, prepareArchetype, settle, type Archetype } from './archetype.js';
 import { touchSparseSet } from '../lean-ecs.js';
+import { assertInteger, assertOptions, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import {
+  type Archetype,
+  archetypeFromEntity,
+  archetypes,
+  bornSlots,
+  ecsOf,
+  pendingArchetype,
+  prepareArchetype,
+  settle,
+} from './archetype.js';
 
 /** Key of the bare particle (Position and Velocity) in the world's archetype table; emitter kinds use 0..31. */
 const BARE_PARTICLE = 64;
@@ -39,7 +48,8 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
   const room = world.capacity - world.entityIndex.aliveCount;
   assertInteger(where, 'count', count, 0, room);
   const d = world.dimensions;
-  const p = options.positions, v = options.velocities;
+  const p = options.positions,
+    v = options.velocities;
   checkArray(where, 'positions', p, count * d);
   checkArray(where, 'velocities', v, count * d);
   const handles = new Float64Array(count);
@@ -70,28 +80,51 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
     const recycled = Math.min(n, world.entityIndex.dense.length - world.entityIndex.aliveCount);
     const slots = new Int32Array(recycled);
     if (recycled > 0) bornSlots(world, a, recycled, slots);
-    const X = c.Position.x, Y = c.Position.y, Z = c.Position.z, OX = c.PreviousPosition.x, OY = c.PreviousPosition.y, OZ = c.PreviousPosition.z;
-    const VX = c.Velocity.x, VY = c.Velocity.y, VZ = c.Velocity.z;
+    const X = c.Position.x,
+      Y = c.Position.y,
+      Z = c.Position.z,
+      OX = c.PreviousPosition.x,
+      OY = c.PreviousPosition.y,
+      OZ = c.PreviousPosition.z;
+    const VX = c.Velocity.x,
+      VY = c.Velocity.y,
+      VZ = c.Velocity.z;
     const prev = OX.length > world.capacity;
     for (let k = 0; k < recycled; k++) {
       const e = slots[k]!;
-      if (e <= fresh) { Z[e] = 0; OZ[e] = 0; VZ[e] = 0; }
+      if (e <= fresh) {
+        Z[e] = 0;
+        OZ[e] = 0;
+        VZ[e] = 0;
+      }
       handles[done + k] = currentHandle(world, e);
     }
     // One array at a time: coordinate j of particle i is at i * d + j.
     const fill = (T: Float64Array, U: Float64Array | null, src: ArrayLike<number> | undefined, j: number) => {
       for (let k = 0; k < recycled; k++) {
-        const e = slots[k]!, x = src ? src[(done + k) * d + j]! : 0;
+        const e = slots[k]!,
+          x = src ? src[(done + k) * d + j]! : 0;
         T[e] = x;
         if (U) U[e] = x;
       }
     };
-    fill(X, prev ? OX : null, p, 0); fill(Y, prev ? OY : null, p, 1); fill(VX, null, v, 0); fill(VY, null, v, 1);
-    if (d === 3) { fill(Z, prev ? OZ : null, p, 2); fill(VZ, null, v, 2); }
+    fill(X, prev ? OX : null, p, 0);
+    fill(Y, prev ? OY : null, p, 1);
+    fill(VX, null, v, 0);
+    fill(VY, null, v, 1);
+    if (d === 3) {
+      fill(Z, prev ? OZ : null, p, 2);
+      fill(VZ, null, v, 2);
+    }
     // What the Position observer resets besides (create-world.ts), for stores that exist.
     for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
       if (s.x.length <= world.capacity) continue;
-      for (let k = 0; k < recycled; k++) { const e = slots[k]!; s.x[e] = 0; s.y[e] = 0; s.z[e] = 0; }
+      for (let k = 0; k < recycled; k++) {
+        const e = slots[k]!;
+        s.x[e] = 0;
+        s.y[e] = 0;
+        s.z[e] = 0;
+      }
     }
     done += recycled;
     // The rest in new slots, consecutive ids: bulk writes of the entity index, masks and query lists.
@@ -101,27 +134,46 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
       const end = first + m;
       // Handles: slot + generation x SLOT_RANGE; slots of one spawn stamp share the offset (new slots
       // usually all have stamp 1), others ask currentHandle.
-      const spawn = world.spawnStamp, s0 = spawn[first]!, offset = currentHandle(world, first) - first;
+      const spawn = world.spawnStamp,
+        s0 = spawn[first]!,
+        offset = currentHandle(world, first) - first;
       for (let e = first, i = done; e < end; e++, i++) handles[i] = spawn[e] === s0 ? e + offset : currentHandle(world, e);
       // Consecutive slots: coordinate j of particle i (= done + e - first) is at i * d + j.
       if (d === 2 && p !== undefined && v !== undefined) {
         // Both given in 2D (the common case): one pass, as a bare loop would copy them.
-        for (let e = first, o = 2 * done; e < end; e++, o += 2) { X[e] = p[o]!; Y[e] = p[o + 1]!; VX[e] = v[o]!; VY[e] = v[o + 1]!; }
+        for (let e = first, o = 2 * done; e < end; e++, o += 2) {
+          X[e] = p[o]!;
+          Y[e] = p[o + 1]!;
+          VX[e] = v[o]!;
+          VY[e] = v[o + 1]!;
+        }
       } else {
         const run = (T: Float64Array, src: ArrayLike<number> | undefined, j: number) => {
-          if (src === undefined) { T.fill(0, first, end); return; }
+          if (src === undefined) {
+            T.fill(0, first, end);
+            return;
+          }
           for (let e = first, o = done * d + j; e < end; e++, o += d) T[e] = src[o]!;
         };
-        run(X, p, 0); run(Y, p, 1); run(VX, v, 0); run(VY, v, 1);
-        if (d === 3) { run(Z, p, 2); run(VZ, v, 2); }
+        run(X, p, 0);
+        run(Y, p, 1);
+        run(VX, v, 0);
+        run(VY, v, 1);
+        if (d === 3) {
+          run(Z, p, 2);
+          run(VZ, v, 2);
+        }
       }
       if (prev) {
-        OX.set(X.subarray(first, end), first); OY.set(Y.subarray(first, end), first);
+        OX.set(X.subarray(first, end), first);
+        OY.set(Y.subarray(first, end), first);
         if (d === 3) OZ.set(Z.subarray(first, end), first);
       }
       for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
         if (s.x.length <= world.capacity) continue;
-        s.x.fill(0, first, end); s.y.fill(0, first, end); s.z.fill(0, first, end);
+        s.x.fill(0, first, end);
+        s.y.fill(0, first, end);
+        s.z.fill(0, first, end);
       }
     }
     done = count;
@@ -161,8 +213,11 @@ function appendRange(list: number[], from: number, m: number): void {
  */
 function bornFresh(world: PhysicsWorld, a: Archetype, m: number): number {
   const ecs = ecsOf(world);
-  const ix = ecs.entityIndex, spawn = world.spawnStamp;
-  const first = ix.maxId + 1, end = first + m, alive = ix.aliveCount;
+  const ix = ecs.entityIndex,
+    spawn = world.spawnStamp;
+  const first = ix.maxId + 1,
+    end = first + m,
+    alive = ix.aliveCount;
   const sparse = ix.sparse;
   appendRange(ix.dense, first, m);
   for (let e = first, i = alive; e < end; e++, i++) sparse[e] = i;
@@ -171,7 +226,8 @@ function bornFresh(world: PhysicsWorld, a: Archetype, m: number): number {
   ix.aliveCount = alive + m;
   const masks = a.masks;
   for (let g = 0; g < masks.length; g++) {
-    const em = ecs.entityMasks[g]! as number[] | Int32Array, mask = masks[g]!;
+    const em = ecs.entityMasks[g]! as number[] | Int32Array,
+      mask = masks[g]!;
     if (mask === 0) continue;
     if (em instanceof Int32Array) em.fill(mask, first, end);
     else for (let e = first; e < end; e++) em[e] = mask;
@@ -208,7 +264,8 @@ function checkArray(where: string, name: string, a: ArrayLike<number> | undefine
   }
   for (let i = 0; i < n; i++) {
     const x = a[i];
-    if (typeof x !== 'number' || !Number.isFinite(x)) throw new RangeError(`${where}: ${name}[${i}] must be a finite number, got ${describe(x)}`);
+    if (typeof x !== 'number' || !Number.isFinite(x))
+      throw new RangeError(`${where}: ${name}[${i}] must be a finite number, got ${describe(x)}`);
   }
 }
 

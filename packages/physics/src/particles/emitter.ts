@@ -1,18 +1,38 @@
-import { addComponent, entityExists, hasComponent, noCommit, query as bitecsQuery, removeEntity } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
-import { createSlot, currentHandle, resolveKind } from '../handles.js';
+import { addComponent, query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
 import { DEFAULT_MATERIAL } from '../components.js';
-import { nextSlot } from './bulk.js';
-import {
-  applyQueuedBirths, archetypeFromEntity, archetypes, bornSlot, bornSlotQueued, defragment, queuedPending, ecsOf, killSlot, pendingArchetype, prepareArchetype, type Archetype,
-} from './archetype.js';
-import { query } from '../query.js';
 import { NonFiniteStateError } from '../errors.js';
-import {
-  assertBoolean, assertFinite, assertInRange, assertInteger, assertNonNegative, assertOneOf, assertOptionalBoolean, assertOptions,
-  assertPositive, assertVector, describe,
-} from '../validate.js';
+import { createSlot, currentHandle, resolveKind } from '../handles.js';
+import { query } from '../query.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import {
+  assertBoolean,
+  assertFinite,
+  assertInRange,
+  assertInteger,
+  assertNonNegative,
+  assertOneOf,
+  assertOptionalBoolean,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import {
+  type Archetype,
+  applyQueuedBirths,
+  archetypeFromEntity,
+  archetypes,
+  bornSlot,
+  bornSlotQueued,
+  defragment,
+  ecsOf,
+  killSlot,
+  pendingArchetype,
+  prepareArchetype,
+  queuedPending,
+} from './archetype.js';
+import { nextSlot } from './bulk.js';
 
 /**
  * Particle systems (Ramtal and Dobre ch. 12): emitters spawn particles with a rate and in bursts,
@@ -145,7 +165,10 @@ export function maxSpawnsPerStep(world: PhysicsWorld): number {
 
 interface ParticleBook {
   /** FIFO of spawned particles (eid and spawn stamp), oldest at head; stale entries skipped. */
-  ids: Int32Array; stamps: Uint32Array; head: number; count: number;
+  ids: Int32Array;
+  stamps: Uint32Array;
+  head: number;
+  count: number;
   hooks: ParticleDeathHook[];
   /** Hooks run for every particle born (`onParticleBirth`). */
   birthHooks: ParticleBirthHook[];
@@ -153,16 +176,25 @@ interface ParticleBook {
    * Scratch: expired particles this step and their spawn stamps, and bursts to spawn (x, y, z, vx, vy,
    * vz, emitter, count, generation).
    */
-  expired: Int32Array; expiredStamps: Uint32Array; bursts: Float64Array; burstCount: number;
+  expired: Int32Array;
+  expiredStamps: Uint32Array;
+  bursts: Float64Array;
+  burstCount: number;
   /** Spawns left this step (`maxSpawnsPerStep`), and the step (`world.steps`) it belongs to. */
-  budget: number; budgetStep: number;
+  budget: number;
+  budgetStep: number;
   /** Particles whose lifetime ran out, removed by `lifetimeSystem`, since the world was made. */
   expiredTotal: number;
 }
 
 const books = new WeakMap<PhysicsWorld, ParticleBook>();
 registerExternalWorldState({
-  name: 'particles', get: (world, create) => (create ? book(world) : books.get(world)), clear: (world) => { books.delete(world); }, keep: ['hooks', 'birthHooks'],
+  name: 'particles',
+  get: (world, create) => (create ? book(world) : books.get(world)),
+  clear: (world) => {
+    books.delete(world);
+  },
+  keep: ['hooks', 'birthHooks'],
 });
 
 /** The particle book of `world`, made on first use. */
@@ -172,9 +204,19 @@ export function book(world: PhysicsWorld): ParticleBook {
     const n = world.capacity + 1;
     b = {
       // Twice the capacity: the FIFO holds the gone particles too until they reach its head or it is compacted.
-      ids: new Int32Array(2 * n), stamps: new Uint32Array(2 * n), head: 0, count: 0, hooks: [], birthHooks: [],
-      expired: new Int32Array(n), expiredStamps: new Uint32Array(n), bursts: new Float64Array(9 * 64), burstCount: 0,
-      budget: maxSpawnsPerStep(world), budgetStep: world.steps, expiredTotal: 0,
+      ids: new Int32Array(2 * n),
+      stamps: new Uint32Array(2 * n),
+      head: 0,
+      count: 0,
+      hooks: [],
+      birthHooks: [],
+      expired: new Int32Array(n),
+      expiredStamps: new Uint32Array(n),
+      bursts: new Float64Array(9 * 64),
+      burstCount: 0,
+      budget: maxSpawnsPerStep(world),
+      budgetStep: world.steps,
+      expiredTotal: 0,
     };
     books.set(world, b);
   }
@@ -186,7 +228,10 @@ function pushParticle(world: PhysicsWorld, b: ParticleBook, e: number): void {
   if (b.count === size) {
     // Oldest first: drop the gone ones at the head, and compact only if the oldest is still alive.
     const spawn = world.spawnStamp;
-    while (b.count > 0 && !(spawn[b.ids[b.head]!] === b.stamps[b.head] && slotAlive(world, b.ids[b.head]!))) { b.head = b.head + 1 === size ? 0 : b.head + 1; b.count--; }
+    while (b.count > 0 && !(spawn[b.ids[b.head]!] === b.stamps[b.head] && slotAlive(world, b.ids[b.head]!))) {
+      b.head = b.head + 1 === size ? 0 : b.head + 1;
+      b.count--;
+    }
     if (b.count === size) compact(world, b);
   }
   // (head + count) mod size, both below size.
@@ -210,12 +255,19 @@ function slotAlive(world: PhysicsWorld, e: number): boolean {
  */
 function compact(world: PhysicsWorld, b: ParticleBook): void {
   const size = b.ids.length;
-  const ids = b.ids, stamps = b.stamps, spawn = world.spawnStamp;
+  const ids = b.ids,
+    stamps = b.stamps,
+    spawn = world.spawnStamp;
   let w = 0;
   for (let k = 0; k < b.count; k++) {
     const i = (b.head + k) % size;
-    const e = ids[i]!, st = stamps[i]!;
-    if (spawn[e] === st && slotAlive(world, e)) { ids[w] = e; stamps[w] = st; w++; }
+    const e = ids[i]!,
+      st = stamps[i]!;
+    if (spawn[e] === st && slotAlive(world, e)) {
+      ids[w] = e;
+      stamps[w] = st;
+      w++;
+    }
   }
   b.head = 0;
   b.count = w;
@@ -229,10 +281,14 @@ function live(world: PhysicsWorld, e: number, stamp: number): boolean {
 function recycleOldest(world: PhysicsWorld, b: ParticleBook): boolean {
   const size = b.ids.length;
   while (b.count > 0) {
-    const e = b.ids[b.head]!, stamp = b.stamps[b.head]!;
+    const e = b.ids[b.head]!,
+      stamp = b.stamps[b.head]!;
     b.head = (b.head + 1) % size;
     b.count--;
-    if (live(world, e, stamp)) { removeParticle(world, e); return true; }
+    if (live(world, e, stamp)) {
+      removeParticle(world, e);
+      return true;
+    }
   }
   return false;
 }
@@ -270,7 +326,13 @@ const origin = new Float64Array(7);
 
 /** Fills `origin` for the births of a batch. */
 function setOrigin(x: number, y: number, z: number, bx: number, by: number, bz: number, heading: number): void {
-  origin[0] = x; origin[1] = y; origin[2] = z; origin[3] = bx; origin[4] = by; origin[5] = bz; origin[6] = heading;
+  origin[0] = x;
+  origin[1] = y;
+  origin[2] = z;
+  origin[3] = bx;
+  origin[4] = by;
+  origin[5] = bz;
+  origin[6] = heading;
 }
 
 /**
@@ -281,43 +343,79 @@ function draw(world: PhysicsWorld, em: number): void {
   const E = world.components.Emitter;
   const rng = world.rng;
   const is3D = world.dimensions === 3;
-  let ox = 0, oy = 0, oz = 0;
-  const shape = E.shape[em]!, s = E.size[em]!;
+  let ox = 0,
+    oy = 0,
+    oz = 0;
+  const shape = E.shape[em]!,
+    s = E.size[em]!;
   if (shape === EmitterShape.Disc || shape === EmitterShape.Ring) {
     if (is3D) {
-      const z = rng.range(-1, 1), a = rng.range(0, 2 * Math.PI), r = Math.sqrt(1 - z * z);
+      const z = rng.range(-1, 1),
+        a = rng.range(0, 2 * Math.PI),
+        r = Math.sqrt(1 - z * z);
       const rad = shape === EmitterShape.Ring ? s : s * Math.cbrt(rng.next());
-      ox = rad * r * Math.cos(a); oy = rad * r * Math.sin(a); oz = rad * z;
+      ox = rad * r * Math.cos(a);
+      oy = rad * r * Math.sin(a);
+      oz = rad * z;
     } else {
       const a = rng.range(0, 2 * Math.PI);
       const rad = shape === EmitterShape.Ring ? s : s * Math.sqrt(rng.next());
-      ox = rad * Math.cos(a); oy = rad * Math.sin(a);
+      ox = rad * Math.cos(a);
+      oy = rad * Math.sin(a);
     }
   } else if (shape === EmitterShape.Box) {
-    ox = rng.range(-s, s); oy = rng.range(-E.sizeY[em]!, E.sizeY[em]!); oz = is3D ? rng.range(-E.sizeZ[em]!, E.sizeZ[em]!) : 0;
+    ox = rng.range(-s, s);
+    oy = rng.range(-E.sizeY[em]!, E.sizeY[em]!);
+    oz = is3D ? rng.range(-E.sizeZ[em]!, E.sizeZ[em]!) : 0;
   } else if (shape === EmitterShape.Line) {
     ox = rng.range(-s, s);
   }
   const speed = rng.range(E.speedMin[em]!, E.speedMax[em]!);
   const spread = E.spread[em]!;
-  const dx = E.dirX[em]!, dy = E.dirY[em]!, dz = E.dirZ[em]!;
+  const dx = E.dirX[em]!,
+    dy = E.dirY[em]!,
+    dz = E.dirZ[em]!;
   let vx: number, vy: number, vz: number;
   if (!is3D) {
     const a = origin[6]! + rng.range(-spread, spread);
-    vx = Math.cos(a); vy = Math.sin(a); vz = 0;
+    vx = Math.cos(a);
+    vy = Math.sin(a);
+    vz = 0;
   } else {
     // Uniform in the cone of half-angle `spread` about d: cos(theta) uniform in [cos spread, 1].
-    const ct = rng.range(Math.cos(spread), 1), st = Math.sqrt(Math.max(0, 1 - ct * ct)), phi = rng.range(0, 2 * Math.PI);
+    const ct = rng.range(Math.cos(spread), 1),
+      st = Math.sqrt(Math.max(0, 1 - ct * ct)),
+      phi = rng.range(0, 2 * Math.PI);
     // Orthonormal basis (u, w) perpendicular to d.
     let ux: number, uy: number, uz: number;
-    if (Math.abs(dx) < 0.9) { ux = 0; uy = dz; uz = -dy; } else { ux = -dz; uy = 0; uz = dx; }
-    const un = Math.hypot(ux, uy, uz); ux /= un; uy /= un; uz /= un;
-    const wx = dy * uz - dz * uy, wy = dz * ux - dx * uz, wz = dx * uy - dy * ux;
-    const cp = Math.cos(phi) * st, sp = Math.sin(phi) * st;
-    vx = ct * dx + cp * ux + sp * wx; vy = ct * dy + cp * uy + sp * wy; vz = ct * dz + cp * uz + sp * wz;
+    if (Math.abs(dx) < 0.9) {
+      ux = 0;
+      uy = dz;
+      uz = -dy;
+    } else {
+      ux = -dz;
+      uy = 0;
+      uz = dx;
+    }
+    const un = Math.hypot(ux, uy, uz);
+    ux /= un;
+    uy /= un;
+    uz /= un;
+    const wx = dy * uz - dz * uy,
+      wy = dz * ux - dx * uz,
+      wz = dx * uy - dy * ux;
+    const cp = Math.cos(phi) * st,
+      sp = Math.sin(phi) * st;
+    vx = ct * dx + cp * ux + sp * wx;
+    vy = ct * dy + cp * uy + sp * wy;
+    vz = ct * dz + cp * uz + sp * wz;
   }
-  sample[0] = ox; sample[1] = oy; sample[2] = oz;
-  sample[3] = vx * speed; sample[4] = vy * speed; sample[5] = vz * speed;
+  sample[0] = ox;
+  sample[1] = oy;
+  sample[2] = oz;
+  sample[3] = vx * speed;
+  sample[4] = vy * speed;
+  sample[5] = vz * speed;
 }
 
 /**
@@ -327,7 +425,11 @@ function draw(world: PhysicsWorld, em: number): void {
  */
 function particleKind(world: PhysicsWorld, em: number): number {
   const E = world.components.Emitter;
-  const mass = E.mass[em]!, ld = E.linearDrag[em]!, qd = E.quadraticDrag[em]!, gs = E.gravityScale[em]!, r = E.radius[em]!;
+  const mass = E.mass[em]!,
+    ld = E.linearDrag[em]!,
+    qd = E.quadraticDrag[em]!,
+    gs = E.gravityScale[em]!,
+    r = E.radius[em]!;
   if (!(mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0)) return 0;
   return 1 | (ld > 0 ? 2 : 0) | (qd > 0 ? 4 : 0) | (gs !== 1 ? 8 : 0) | (r > 0 ? 16 : 0);
 }
@@ -351,7 +453,12 @@ function archetypeFor(world: PhysicsWorld, em: number): Archetype | undefined {
  * re-reads them after). Returns the entity or 0 if dropped.
  */
 function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, generation: number, a: Archetype | undefined, kind: number): number {
-  const x = origin[0]!, y = origin[1]!, z = origin[2]!, bx = origin[3]!, by = origin[4]!, bz = origin[5]!;
+  const x = origin[0]!,
+    y = origin[1]!,
+    z = origin[2]!,
+    bx = origin[3]!,
+    by = origin[4]!,
+    bz = origin[5]!;
   const c = world.components;
   const E = c.Emitter;
   if (world.entityIndex.aliveCount >= world.capacity) {
@@ -363,8 +470,12 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, generation: 
     if (a !== undefined && !prepareArchetype(world, a)) a = undefined;
   }
   draw(world, em);
-  const px = x + sample[0]!, py = y + sample[1]!, pz = z + sample[2]!;
-  const vx = sample[3]! + bx, vy = sample[4]! + by, vz = sample[5]! + bz;
+  const px = x + sample[0]!,
+    py = y + sample[1]!,
+    pz = z + sample[2]!;
+  const vx = sample[3]! + bx,
+    vy = sample[4]! + by,
+    vz = sample[5]! + bz;
   // x * 0 is NaN exactly when x is NaN or infinite: refuse the spawn before creating anything.
   if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz);
   let e: number;
@@ -374,34 +485,63 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, generation: 
     e = bornSlot(world, a);
     // What bitecs' observers write when these components are added (create-world.ts), then the
     // particle (stores a world allocates lazily may have no arrays yet: nothing to reset there).
-    const W = c.AngularVelocity, F = c.Force, T = c.Torque;
-    if (W.x.length > e) { W.x[e] = 0; W.y[e] = 0; W.z[e] = 0; }
-    if (F.x.length > e) { F.x[e] = 0; F.y[e] = 0; F.z[e] = 0; }
-    if (T.x.length > e) { T.x[e] = 0; T.y[e] = 0; T.z[e] = 0; }
+    const W = c.AngularVelocity,
+      F = c.Force,
+      T = c.Torque;
+    if (W.x.length > e) {
+      W.x[e] = 0;
+      W.y[e] = 0;
+      W.z[e] = 0;
+    }
+    if (F.x.length > e) {
+      F.x[e] = 0;
+      F.y[e] = 0;
+      F.z[e] = 0;
+    }
+    if (T.x.length > e) {
+      T.x[e] = 0;
+      T.y[e] = 0;
+      T.z[e] = 0;
+    }
     if (kind !== 0) {
-      const mass = E.mass[em]!, m = mass > 0 ? mass : 1;
-      c.Mass.value[e] = m; c.Mass.inv[e] = 1 / m;
+      const mass = E.mass[em]!,
+        m = mass > 0 ? mass : 1;
+      c.Mass.value[e] = m;
+      c.Mass.inv[e] = 1 / m;
       if ((kind & 2) !== 0) c.LinearDrag.k[e] = E.linearDrag[em]!;
       if ((kind & 4) !== 0) c.QuadraticDrag.k[e] = E.quadraticDrag[em]!;
       if ((kind & 8) !== 0) c.GravityScale.value[e] = E.gravityScale[em]!;
       if ((kind & 16) !== 0) {
         c.Ball.radius[e] = E.radius[em]!;
         const M = c.Material;
-        M.restitution[e] = DEFAULT_MATERIAL.restitution; M.friction[e] = DEFAULT_MATERIAL.friction; M.staticFriction[e] = DEFAULT_MATERIAL.friction;
+        M.restitution[e] = DEFAULT_MATERIAL.restitution;
+        M.friction[e] = DEFAULT_MATERIAL.friction;
+        M.staticFriction[e] = DEFAULT_MATERIAL.friction;
       }
     }
   }
-  c.Position.x[e] = px; c.Position.y[e] = py; c.Position.z[e] = pz;
-  c.PreviousPosition.x[e] = px; c.PreviousPosition.y[e] = py; c.PreviousPosition.z[e] = pz;
-  c.Velocity.x[e] = vx; c.Velocity.y[e] = vy; c.Velocity.z[e] = vz;
+  c.Position.x[e] = px;
+  c.Position.y[e] = py;
+  c.Position.z[e] = pz;
+  c.PreviousPosition.x[e] = px;
+  c.PreviousPosition.y[e] = py;
+  c.PreviousPosition.z[e] = pz;
+  c.Velocity.x[e] = vx;
+  c.Velocity.y[e] = vy;
+  c.Velocity.z[e] = vz;
   const L = c.Lifetime;
   L.age[e] = 0;
   L.duration[e] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
   const P = c.Particle;
-  P.emitter[e] = em; P.emitterStamp[e] = world.spawnStamp[em]!; P.generation[e] = generation;
-  P.colorStart[e] = E.colorStart[em]!; P.colorEnd[e] = E.colorEnd[em]!;
-  P.sizeStart[e] = E.sizeStart[em]!; P.sizeEnd[e] = E.sizeEnd[em]!;
-  P.alphaStart[e] = E.alphaStart[em]!; P.alphaEnd[e] = E.alphaEnd[em]!;
+  P.emitter[e] = em;
+  P.emitterStamp[e] = world.spawnStamp[em]!;
+  P.generation[e] = generation;
+  P.colorStart[e] = E.colorStart[em]!;
+  P.colorEnd[e] = E.colorEnd[em]!;
+  P.sizeStart[e] = E.sizeStart[em]!;
+  P.sizeEnd[e] = E.sizeEnd[em]!;
+  P.alphaStart[e] = E.alphaStart[em]!;
+  P.alphaEnd[e] = E.alphaEnd[em]!;
   pushParticle(world, b, e);
   E.spawned[em] = E.spawned[em]! + 1;
   const hooks = b.birthHooks;
@@ -425,11 +565,22 @@ function spawnOne(world: PhysicsWorld, b: ParticleBook, em: number, generation: 
  */
 const QUEUE = 4096;
 interface BirthQueue {
-  world: PhysicsWorld | null; count: number;
-  slot: Int32Array; em: Int32Array; kind: Uint8Array; generation: Float64Array;
+  world: PhysicsWorld | null;
+  count: number;
+  slot: Int32Array;
+  em: Int32Array;
+  kind: Uint8Array;
+  generation: Float64Array;
   /** Archetype id + 1 of each birth, and the slot's pending mark before it (`bornSlotQueued`). */
-  mark: Int32Array; pend: Int32Array;
-  px: Float64Array; py: Float64Array; pz: Float64Array; vx: Float64Array; vy: Float64Array; vz: Float64Array; life: Float64Array;
+  mark: Int32Array;
+  pend: Int32Array;
+  px: Float64Array;
+  py: Float64Array;
+  pz: Float64Array;
+  vx: Float64Array;
+  vy: Float64Array;
+  vz: Float64Array;
+  life: Float64Array;
 }
 let queue: BirthQueue | null = null;
 
@@ -437,9 +588,21 @@ function birthQueue(): BirthQueue {
   if (queue === null) {
     const f = () => new Float64Array(QUEUE);
     queue = {
-      world: null, count: 0, slot: new Int32Array(QUEUE), em: new Int32Array(QUEUE), kind: new Uint8Array(QUEUE), generation: f(),
-      mark: new Int32Array(QUEUE), pend: new Int32Array(QUEUE),
-      px: f(), py: f(), pz: f(), vx: f(), vy: f(), vz: f(), life: f(),
+      world: null,
+      count: 0,
+      slot: new Int32Array(QUEUE),
+      em: new Int32Array(QUEUE),
+      kind: new Uint8Array(QUEUE),
+      generation: f(),
+      mark: new Int32Array(QUEUE),
+      pend: new Int32Array(QUEUE),
+      px: f(),
+      py: f(),
+      pz: f(),
+      vx: f(),
+      vy: f(),
+      vz: f(),
+      life: f(),
     };
   }
   return queue;
@@ -455,17 +618,33 @@ function birthQueue(): BirthQueue {
 function queueBirth(world: PhysicsWorld, b: ParticleBook, em: number, generation: number, a: Archetype, kind: number): void {
   const E = world.components.Emitter;
   draw(world, em);
-  const px = origin[0]! + sample[0]!, py = origin[1]! + sample[1]!, pz = origin[2]! + sample[2]!;
-  const vx = sample[3]! + origin[3]!, vy = sample[4]! + origin[4]!, vz = sample[5]! + origin[5]!;
-  if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) { flushBirths(world); nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz); }
+  const px = origin[0]! + sample[0]!,
+    py = origin[1]! + sample[1]!,
+    pz = origin[2]! + sample[2]!;
+  const vx = sample[3]! + origin[3]!,
+    vy = sample[4]! + origin[4]!,
+    vz = sample[5]! + origin[5]!;
+  if (px * 0 + py * 0 + pz * 0 + vx * 0 + vy * 0 + vz * 0 !== 0) {
+    flushBirths(world);
+    nonFiniteSpawn(world, em, px, py, pz, vx, vy, vz);
+  }
   const q = birthQueue();
   if (q.count === QUEUE) flushBirths(world);
   q.world = world;
   const e = bornSlotQueued(world, a);
   const k = q.count++;
-  q.slot[k] = e; q.em[k] = em; q.kind[k] = kind; q.generation[k] = generation;
-  q.mark[k] = a.id + 1; q.pend[k] = queuedPending;
-  q.px[k] = px; q.py[k] = py; q.pz[k] = pz; q.vx[k] = vx; q.vy[k] = vy; q.vz[k] = vz;
+  q.slot[k] = e;
+  q.em[k] = em;
+  q.kind[k] = kind;
+  q.generation[k] = generation;
+  q.mark[k] = a.id + 1;
+  q.pend[k] = queuedPending;
+  q.px[k] = px;
+  q.py[k] = py;
+  q.pz[k] = pz;
+  q.vx[k] = vx;
+  q.vy[k] = vy;
+  q.vz[k] = vz;
   q.life[k] = world.rng.range(E.lifeMin[em]!, E.lifeMax[em]!);
   pushParticle(world, b, e);
   E.spawned[em] = E.spawned[em]! + 1;
@@ -481,28 +660,48 @@ function flushBirths(world: PhysicsWorld): void {
   const n = q.count;
   q.count = 0;
   q.world = null;
-  const c = world.components, E = c.Emitter;
-  const S = q.slot, EM = q.em, K = q.kind;
+  const c = world.components,
+    E = c.Emitter;
+  const S = q.slot,
+    EM = q.em,
+    K = q.kind;
   // The births' query work (joining the queries, or keeping a pending death's place), one query at a time.
   applyQueuedBirths(archetypes(world), S, q.mark, q.pend, n);
   // What bitecs' observers write when these components are added (create-world.ts); stores a world
   // allocates lazily may have no arrays yet: nothing to reset there.
-  const W = c.AngularVelocity, F = c.Force, T = c.Torque;
-  if (W.x.length > world.capacity) { zeroAt(W.x, S, n); zeroAt(W.y, S, n); zeroAt(W.z, S, n); }
-  if (F.x.length > world.capacity) { zeroAt(F.x, S, n); zeroAt(F.y, S, n); zeroAt(F.z, S, n); }
-  if (T.x.length > world.capacity) { zeroAt(T.x, S, n); zeroAt(T.y, S, n); zeroAt(T.z, S, n); }
+  const W = c.AngularVelocity,
+    F = c.Force,
+    T = c.Torque;
+  if (W.x.length > world.capacity) {
+    zeroAt(W.x, S, n);
+    zeroAt(W.y, S, n);
+    zeroAt(W.z, S, n);
+  }
+  if (F.x.length > world.capacity) {
+    zeroAt(F.x, S, n);
+    zeroAt(F.y, S, n);
+    zeroAt(F.z, S, n);
+  }
+  if (T.x.length > world.capacity) {
+    zeroAt(T.x, S, n);
+    zeroAt(T.y, S, n);
+    zeroAt(T.z, S, n);
+  }
   let kinds = 0;
   for (let k = 0; k < n; k++) kinds |= K[k]!;
   if (kinds !== 0) {
-    const mv = c.Mass.value, mi = c.Mass.inv;
+    const mv = c.Mass.value,
+      mi = c.Mass.inv;
     for (let k = 0; k < n; k++) {
       if (K[k] === 0) continue;
-      const mass = E.mass[EM[k]!]!, m = mass > 0 ? mass : 1;
+      const mass = E.mass[EM[k]!]!,
+        m = mass > 0 ? mass : 1;
       mv[S[k]!] = m;
     }
     for (let k = 0; k < n; k++) {
       if (K[k] === 0) continue;
-      const mass = E.mass[EM[k]!]!, m = mass > 0 ? mass : 1;
+      const mass = E.mass[EM[k]!]!,
+        m = mass > 0 ? mass : 1;
       mi[S[k]!] = 1 / m;
     }
     if ((kinds & 2) !== 0) perKind(2, c.LinearDrag.k, E.linearDrag, S, EM, K, n);
@@ -514,13 +713,21 @@ function flushBirths(world: PhysicsWorld): void {
       for (let k = 0; k < n; k++) {
         if ((K[k]! & 16) === 0) continue;
         const e = S[k]!;
-        M.restitution[e] = DEFAULT_MATERIAL.restitution; M.friction[e] = DEFAULT_MATERIAL.friction; M.staticFriction[e] = DEFAULT_MATERIAL.friction;
+        M.restitution[e] = DEFAULT_MATERIAL.restitution;
+        M.friction[e] = DEFAULT_MATERIAL.friction;
+        M.staticFriction[e] = DEFAULT_MATERIAL.friction;
       }
     }
   }
-  putAt(c.Position.x, S, q.px, n); putAt(c.Position.y, S, q.py, n); putAt(c.Position.z, S, q.pz, n);
-  putAt(c.PreviousPosition.x, S, q.px, n); putAt(c.PreviousPosition.y, S, q.py, n); putAt(c.PreviousPosition.z, S, q.pz, n);
-  putAt(c.Velocity.x, S, q.vx, n); putAt(c.Velocity.y, S, q.vy, n); putAt(c.Velocity.z, S, q.vz, n);
+  putAt(c.Position.x, S, q.px, n);
+  putAt(c.Position.y, S, q.py, n);
+  putAt(c.Position.z, S, q.pz, n);
+  putAt(c.PreviousPosition.x, S, q.px, n);
+  putAt(c.PreviousPosition.y, S, q.py, n);
+  putAt(c.PreviousPosition.z, S, q.pz, n);
+  putAt(c.Velocity.x, S, q.vx, n);
+  putAt(c.Velocity.y, S, q.vy, n);
+  putAt(c.Velocity.z, S, q.vz, n);
   const L = c.Lifetime;
   zeroAt(L.age, S, n);
   putAt(L.duration, S, q.life, n);
@@ -528,8 +735,12 @@ function flushBirths(world: PhysicsWorld): void {
   putAt(P.emitter, S, EM, n);
   lookAt(P.emitterStamp, world.spawnStamp, S, EM, n);
   putAt(P.generation, S, q.generation, n);
-  lookAt(P.colorStart, E.colorStart, S, EM, n); lookAt(P.colorEnd, E.colorEnd, S, EM, n); lookAt(P.sizeStart, E.sizeStart, S, EM, n);
-  lookAt(P.sizeEnd, E.sizeEnd, S, EM, n); lookAt(P.alphaStart, E.alphaStart, S, EM, n); lookAt(P.alphaEnd, E.alphaEnd, S, EM, n);
+  lookAt(P.colorStart, E.colorStart, S, EM, n);
+  lookAt(P.colorEnd, E.colorEnd, S, EM, n);
+  lookAt(P.sizeStart, E.sizeStart, S, EM, n);
+  lookAt(P.sizeEnd, E.sizeEnd, S, EM, n);
+  lookAt(P.alphaStart, E.alphaStart, S, EM, n);
+  lookAt(P.alphaEnd, E.alphaEnd, S, EM, n);
 }
 
 /** A component field array (any typed array a store uses). */
@@ -569,16 +780,33 @@ function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
   addComponent(world, e, c.Velocity);
   addComponent(world, e, c.Lifetime);
   addComponent(world, e, c.Particle);
-  const mass = E.mass[em]!, ld = E.linearDrag[em]!, qd = E.quadraticDrag[em]!, gs = E.gravityScale[em]!, r = E.radius[em]!;
+  const mass = E.mass[em]!,
+    ld = E.linearDrag[em]!,
+    qd = E.quadraticDrag[em]!,
+    gs = E.gravityScale[em]!,
+    r = E.radius[em]!;
   if (mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0) {
     addComponent(world, e, c.Mass);
     const m = mass > 0 ? mass : 1;
-    c.Mass.value[e] = m; c.Mass.inv[e] = 1 / m;
+    c.Mass.value[e] = m;
+    c.Mass.inv[e] = 1 / m;
     addComponent(world, e, c.Force);
-    if (ld > 0) { addComponent(world, e, c.LinearDrag); c.LinearDrag.k[e] = ld; }
-    if (qd > 0) { addComponent(world, e, c.QuadraticDrag); c.QuadraticDrag.k[e] = qd; }
-    if (gs !== 1) { addComponent(world, e, c.GravityScale); c.GravityScale.value[e] = gs; }
-    if (r > 0) { addComponent(world, e, c.Ball); c.Ball.radius[e] = r; }
+    if (ld > 0) {
+      addComponent(world, e, c.LinearDrag);
+      c.LinearDrag.k[e] = ld;
+    }
+    if (qd > 0) {
+      addComponent(world, e, c.QuadraticDrag);
+      c.QuadraticDrag.k[e] = qd;
+    }
+    if (gs !== 1) {
+      addComponent(world, e, c.GravityScale);
+      c.GravityScale.value[e] = gs;
+    }
+    if (r > 0) {
+      addComponent(world, e, c.Ball);
+      c.Ball.radius[e] = r;
+    }
   }
   archetypeFromEntity(world, archetypes(world), particleKind(world, em), e, pending);
   return e;
@@ -589,16 +817,31 @@ function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
  * velocity (an emitter placed or moving near the largest double), naming the emitter.
  */
 function nonFiniteSpawn(world: PhysicsWorld, em: number, px: number, py: number, pz: number, vx: number, vy: number, vz: number): never {
-  const values: Array<[string, number]> = [['Position.x', px], ['Position.y', py], ['Position.z', pz], ['Velocity.x', vx], ['Velocity.y', vy], ['Velocity.z', vz]];
+  const values: Array<[string, number]> = [
+    ['Position.x', px],
+    ['Position.y', py],
+    ['Position.z', pz],
+    ['Velocity.x', vx],
+    ['Velocity.y', vy],
+    ['Velocity.z', vz],
+  ];
   const [field, value] = values.find(([, v]) => !Number.isFinite(v))!;
   const P = world.components.Position;
-  throw new NonFiniteStateError(currentHandle(world, em), field, value, 'spawn',
-    `It is emitter ${currentHandle(world, em)} at (${P.x[em]}, ${P.y[em]}, ${P.z[em]}) m, and a particle it would spawn there has that ${field}; nothing was spawned.`);
+  throw new NonFiniteStateError(
+    currentHandle(world, em),
+    field,
+    value,
+    'spawn',
+    `It is emitter ${currentHandle(world, em)} at (${P.x[em]}, ${P.y[em]}, ${P.z[em]}) m, and a particle it would spawn there has that ${field}; nothing was spawned.`,
+  );
 }
 
 /** Takes up to `count` spawns from this step's budget (`maxSpawnsPerStep`); returns how many were granted. */
 function takeBudget(world: PhysicsWorld, b: ParticleBook, count: number): number {
-  if (b.budgetStep !== world.steps) { b.budgetStep = world.steps; b.budget = maxSpawnsPerStep(world); }
+  if (b.budgetStep !== world.steps) {
+    b.budgetStep = world.steps;
+    b.budget = maxSpawnsPerStep(world);
+  }
   const n = count < b.budget ? count : b.budget;
   b.budget -= n;
   return n;
@@ -608,14 +851,29 @@ function takeBudget(world: PhysicsWorld, b: ParticleBook, count: number): number
  * Spawns `count` particles of emitter `em` within this step's budget; the rest, and every spawn left
  * once one is refused because the world is full, are counted in `Emitter.dropped` without a loop.
  */
-function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: number, x: number, y: number, z: number, vx: number, vy: number, vz: number, generation: number): void {
+function spawnFrom(
+  world: PhysicsWorld,
+  b: ParticleBook,
+  em: number,
+  count: number,
+  x: number,
+  y: number,
+  z: number,
+  vx: number,
+  vy: number,
+  vz: number,
+  generation: number,
+): void {
   const E = world.components.Emitter;
   const n = takeBudget(world, b, count);
   if (n < count) E.dropped[em] = E.dropped[em]! + (count - n);
   const k = E.inherit[em]!;
   let a = archetypeFor(world, em);
-  let kind = particleKind(world, em), heading = headingOf(world, em);
-  const bx = k * vx, by = k * vy, bz = k * vz;
+  let kind = particleKind(world, em),
+    heading = headingOf(world, em);
+  const bx = k * vx,
+    by = k * vy,
+    bz = k * vz;
   setOrigin(x, y, z, bx, by, bz, heading);
   const ix = world.entityIndex;
   // An integer (generations are at most 1000; bursts carry them in a Float64Array): passed on unboxed.
@@ -635,7 +893,12 @@ function spawnFrom(world: PhysicsWorld, b: ParticleBook, em: number, count: numb
       return;
     }
     // A birth hook may have changed the emitter (setEmitter): the next birth follows it.
-    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, em); kind = particleKind(world, em); heading = headingOf(world, em); setOrigin(x, y, z, bx, by, bz, heading); }
+    if (a === undefined || b.birthHooks.length > 0) {
+      a = archetypeFor(world, em);
+      kind = particleKind(world, em);
+      heading = headingOf(world, em);
+      setOrigin(x, y, z, bx, by, bz, heading);
+    }
   }
 }
 
@@ -652,34 +915,55 @@ export function lifetimeSystem(world: PhysicsWorld): void {
   const ents = query(world, [c.Lifetime]);
   if (ents.length === 0) return;
   const b = book(world);
-  const L = c.Lifetime, P = c.Particle, E = c.Emitter;
+  const L = c.Lifetime,
+    P = c.Particle,
+    E = c.Emitter;
   const dt = world.dt;
   // A particle expires at the first step whose end reaches its lifetime; the slack absorbs the
   // rounding of summed steps (thirty steps of 1/60 s add up to just under 0.5 s).
   const slack = 1e-9 * dt;
-  const age = L.age, duration = L.duration;
-  const stamps = world.spawnStamp, expired = b.expired, expiredStamps = b.expiredStamps;
+  const age = L.age,
+    duration = L.duration;
+  const stamps = world.spawnStamp,
+    expired = b.expired,
+    expiredStamps = b.expiredStamps;
   let n = 0;
   for (let i = 0; i < ents.length; i++) {
     const e = ents[i]!;
     const a = age[e]! + dt;
     age[e] = a;
-    if (a >= duration[e]! - slack) { expired[n] = e; expiredStamps[n] = stamps[e]!; n++; }
+    if (a >= duration[e]! - slack) {
+      expired[n] = e;
+      expiredStamps[n] = stamps[e]!;
+      n++;
+    }
   }
   if (n === 0) return;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   b.burstCount = 0;
-  const hooks = b.hooks, removeHooks = world.removeHooks;
+  const hooks = b.hooks,
+    removeHooks = world.removeHooks;
   // Without death hooks, an expiring particle can only be gone if a removal hook removed entities
   // (they remove springs and joints, never create): check liveness only once the live count moved.
-  const ix = world.entityIndex, alive0 = ix.aliveCount;
+  const ix = world.entityIndex,
+    alive0 = ix.aliveCount;
   // The death emitter of the last emitter looked at (0: none, -1: not looked at): particles of one
   // emitter die together. Valid while no user hook runs (a hook may remove an emitter).
-  let lastEm = 0, lastStamp = 0, lastTarget = -1;
+  let lastEm = 0,
+    lastStamp = 0,
+    lastTarget = -1;
   // hasComponent(world, e, Particle) read from the masks directly (it looks the component up in a Map per call).
   const ecs = ecsOf(world);
   // (The mask array is read per particle: a hook's first churn may swap it for a typed one, archetype.ts typedMasks.)
-  const pData = ecs.componentMap.get(P)!, pGen = pData.generationId, pFlag = pData.bitflag, masks = ecs.entityMasks;
+  const pData = ecs.componentMap.get(P)!,
+    pGen = pData.generationId,
+    pFlag = pData.bitflag,
+    masks = ecs.entityMasks;
   // Hooks first, for every expiring particle still alive (a hook may remove another one).
   for (let k = 0; k < n; k++) {
     const e = expired[k]!;
@@ -692,20 +976,34 @@ export function lifetimeSystem(world: PhysicsWorld): void {
     if ((masks[pGen]![e]! & pFlag) === pFlag) {
       const em = P.emitter[e]!;
       if (lastTarget < 0 || em !== lastEm || P.emitterStamp[e] !== lastStamp) {
-        lastEm = em; lastStamp = P.emitterStamp[e]!; lastTarget = 0;
+        lastEm = em;
+        lastStamp = P.emitterStamp[e]!;
+        lastTarget = 0;
         if (em > 0 && stamps[em] === lastStamp && entityExists(world, em) && hasComponent(world, em, E)) {
           const target = E.deathEmitter[em]!;
           if (target > 0 && entityExists(world, target) && hasComponent(world, target, E)) lastTarget = target;
         }
       }
       if (lastTarget > 0) {
-        const target = lastTarget, gen = P.generation[e]!;
+        const target = lastTarget,
+          gen = P.generation[e]!;
         if (gen < E.maxGeneration[em]!) {
-          if ((b.burstCount + 1) * 9 > b.bursts.length) { const nb = new Float64Array(b.bursts.length * 2); nb.set(b.bursts); b.bursts = nb; }
+          if ((b.burstCount + 1) * 9 > b.bursts.length) {
+            const nb = new Float64Array(b.bursts.length * 2);
+            nb.set(b.bursts);
+            b.bursts = nb;
+          }
           const o = b.burstCount++ * 9;
           const B = b.bursts;
-          B[o] = px[e]!; B[o + 1] = py[e]!; B[o + 2] = pz[e]!; B[o + 3] = vx[e]!; B[o + 4] = vy[e]!; B[o + 5] = vz[e]!;
-          B[o + 6] = target; B[o + 7] = E.deathCount[em]!; B[o + 8] = gen + 1;
+          B[o] = px[e]!;
+          B[o + 1] = py[e]!;
+          B[o + 2] = pz[e]!;
+          B[o + 3] = vx[e]!;
+          B[o + 4] = vy[e]!;
+          B[o + 5] = vz[e]!;
+          B[o + 6] = target;
+          B[o + 7] = E.deathCount[em]!;
+          B[o + 8] = gen + 1;
         }
       }
     }
@@ -747,7 +1045,12 @@ export function emitterSystem(world: PhysicsWorld): void {
   const b = book(world);
   const E = c.Emitter;
   const dt = world.dt;
-  const px = c.Position.x, py = c.Position.y, pz = c.Position.z, vx = c.Velocity.x, vy = c.Velocity.y, vz = c.Velocity.z;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z,
+    vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
   for (let i = 0; i < ems.length; i++) {
     const em = ems[i]!;
     if (!entityExists(world, em) || !hasComponent(world, em, E)) continue;
@@ -775,36 +1078,86 @@ export function emitterSystem(world: PhysicsWorld): void {
 
 function range(where: string, name: string, v: number | [number, number], positive: boolean): [number, number] {
   const pair: [number, number] = typeof v === 'number' ? [v, v] : v;
-  if (!Array.isArray(pair) || pair.length !== 2) throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${describe(v)}`);
-  for (let i = 0; i < 2; i++) { if (positive) assertPositive(where, `${name}[${i}]`, pair[i]); else assertNonNegative(where, `${name}[${i}]`, pair[i]); }
+  if (!Array.isArray(pair) || pair.length !== 2)
+    throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${describe(v)}`);
+  for (let i = 0; i < 2; i++) {
+    if (positive) assertPositive(where, `${name}[${i}]`, pair[i]);
+    else assertNonNegative(where, `${name}[${i}]`, pair[i]);
+  }
   if (!(pair[1] >= pair[0])) throw new RangeError(`${where}: ${name} must be [min, max] with max >= min, got ${describe(v)}`);
   return [pair[0], pair[1]];
 }
 
 const SHAPE_NAMES = ['point', 'disc', 'ring', 'box', 'line'] as const;
 const SHAPES: Record<(typeof SHAPE_NAMES)[number], number> = { point: 0, disc: 1, ring: 2, box: 3, line: 4 };
-const SETTINGS = ['rate', 'shape', 'size', 'direction', 'spread', 'speed', 'lifetime', 'inheritVelocity', 'particle', 'onDeath', 'policy', 'enabled'] as const;
-const PARTICLE_OPTIONS = ['mass', 'linearDrag', 'quadraticDrag', 'gravityScale', 'radius', 'colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const;
+const SETTINGS = [
+  'rate',
+  'shape',
+  'size',
+  'direction',
+  'spread',
+  'speed',
+  'lifetime',
+  'inheritVelocity',
+  'particle',
+  'onDeath',
+  'policy',
+  'enabled',
+] as const;
+const PARTICLE_OPTIONS = [
+  'mass',
+  'linearDrag',
+  'quadraticDrag',
+  'gravityScale',
+  'radius',
+  'colorStart',
+  'colorEnd',
+  'sizeStart',
+  'sizeEnd',
+  'alphaStart',
+  'alphaEnd',
+] as const;
 
 /** Emitter settings after checking: only the ones given, in store units. */
 interface CheckedSettings {
-  rate?: number; shape?: number; size?: [number, number, number]; dir?: [number, number, number]; spread?: number;
-  speed?: [number, number]; life?: [number, number]; inherit?: number; policy?: number; enabled?: boolean;
-  particle?: EmittedParticleOptions; onDeath?: { slot: number; count: number; maxGeneration: number };
+  rate?: number;
+  shape?: number;
+  size?: [number, number, number];
+  dir?: [number, number, number];
+  spread?: number;
+  speed?: [number, number];
+  life?: [number, number];
+  inherit?: number;
+  policy?: number;
+  enabled?: boolean;
+  particle?: EmittedParticleOptions;
+  onDeath?: { slot: number; count: number; maxGeneration: number };
 }
 
 /**
  * Checks the settings shared by addEmitter and setEmitter without touching the world (keys were
  * checked by the caller). @throws TypeError | RangeError naming `where`.
  */
-function checkSettings(world: PhysicsWorld, where: string, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): CheckedSettings {
+function checkSettings(
+  world: PhysicsWorld,
+  where: string,
+  options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>,
+): CheckedSettings {
   const d = world.dimensions;
   const out: CheckedSettings = {};
-  if (options.rate !== undefined) { assertInRange(where, 'rate', options.rate, 0, MAX_EMITTER_RATE); out.rate = options.rate; }
-  if (options.shape !== undefined) { assertOneOf(where, 'shape', options.shape, SHAPE_NAMES); out.shape = SHAPES[options.shape]; }
+  if (options.rate !== undefined) {
+    assertInRange(where, 'rate', options.rate, 0, MAX_EMITTER_RATE);
+    out.rate = options.rate;
+  }
+  if (options.shape !== undefined) {
+    assertOneOf(where, 'shape', options.shape, SHAPE_NAMES);
+    out.shape = SHAPES[options.shape];
+  }
   if (options.size !== undefined) {
-    if (typeof options.size === 'number') { assertNonNegative(where, 'size', options.size); out.size = [options.size, options.size, options.size]; }
-    else {
+    if (typeof options.size === 'number') {
+      assertNonNegative(where, 'size', options.size);
+      out.size = [options.size, options.size, options.size];
+    } else {
       assertVector(where, 'size', options.size, d);
       for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]);
       out.size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0];
@@ -812,15 +1165,23 @@ function checkSettings(world: PhysicsWorld, where: string, options: Omit<Emitter
   }
   if (options.direction !== undefined) {
     assertVector(where, 'direction', options.direction, d);
-    const x = options.direction[0]!, y = options.direction[1]!, z = d === 3 ? options.direction[2]! : 0;
+    const x = options.direction[0]!,
+      y = options.direction[1]!,
+      z = d === 3 ? options.direction[2]! : 0;
     const n = Math.hypot(x, y, z);
     if (!(n > 0)) throw new RangeError(`${where}: direction must not be zero, got ${describe(options.direction)}`);
     out.dir = [x / n, y / n, z / n];
   }
-  if (options.spread !== undefined) { assertInRange(where, 'spread', options.spread, 0, Math.PI); out.spread = options.spread; }
+  if (options.spread !== undefined) {
+    assertInRange(where, 'spread', options.spread, 0, Math.PI);
+    out.spread = options.spread;
+  }
   if (options.speed !== undefined) out.speed = range(where, 'speed', options.speed, false);
   if (options.lifetime !== undefined) out.life = range(where, 'lifetime', options.lifetime, true);
-  if (options.inheritVelocity !== undefined) { assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1); out.inherit = options.inheritVelocity; }
+  if (options.inheritVelocity !== undefined) {
+    assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1);
+    out.inherit = options.inheritVelocity;
+  }
   if (options.policy !== undefined) {
     assertOneOf(where, 'policy', options.policy, ['drop-new', 'recycle-oldest']);
     out.policy = options.policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
@@ -857,11 +1218,25 @@ function writeSettings(world: PhysicsWorld, em: number, s: CheckedSettings): voi
   const E = world.components.Emitter;
   if (s.rate !== undefined) E.rate[em] = s.rate;
   if (s.shape !== undefined) E.shape[em] = s.shape;
-  if (s.size) { E.size[em] = s.size[0]; E.sizeY[em] = s.size[1]; E.sizeZ[em] = s.size[2]; }
-  if (s.dir) { E.dirX[em] = s.dir[0]; E.dirY[em] = s.dir[1]; E.dirZ[em] = s.dir[2]; }
+  if (s.size) {
+    E.size[em] = s.size[0];
+    E.sizeY[em] = s.size[1];
+    E.sizeZ[em] = s.size[2];
+  }
+  if (s.dir) {
+    E.dirX[em] = s.dir[0];
+    E.dirY[em] = s.dir[1];
+    E.dirZ[em] = s.dir[2];
+  }
   if (s.spread !== undefined) E.spread[em] = s.spread;
-  if (s.speed) { E.speedMin[em] = s.speed[0]; E.speedMax[em] = s.speed[1]; }
-  if (s.life) { E.lifeMin[em] = s.life[0]; E.lifeMax[em] = s.life[1]; }
+  if (s.speed) {
+    E.speedMin[em] = s.speed[0];
+    E.speedMax[em] = s.speed[1];
+  }
+  if (s.life) {
+    E.lifeMin[em] = s.life[0];
+    E.lifeMax[em] = s.life[1];
+  }
   if (s.inherit !== undefined) E.inherit[em] = s.inherit;
   if (s.policy !== undefined) E.policy[em] = s.policy;
   if (s.enabled !== undefined) E.enabled[em] = s.enabled ? 1 : 0;
@@ -872,9 +1247,14 @@ function writeSettings(world: PhysicsWorld, em: number, s: CheckedSettings): voi
     if (p.quadraticDrag !== undefined) E.quadraticDrag[em] = p.quadraticDrag;
     if (p.gravityScale !== undefined) E.gravityScale[em] = p.gravityScale;
     if (p.radius !== undefined) E.radius[em] = p.radius;
-    for (const k of ['colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) E[k][em] = p[k];
+    for (const k of ['colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const)
+      if (p[k] !== undefined) E[k][em] = p[k];
   }
-  if (s.onDeath) { E.deathEmitter[em] = s.onDeath.slot; E.deathCount[em] = s.onDeath.count; E.maxGeneration[em] = s.onDeath.maxGeneration; }
+  if (s.onDeath) {
+    E.deathEmitter[em] = s.onDeath.slot;
+    E.deathCount[em] = s.onDeath.count;
+    E.maxGeneration[em] = s.onDeath.maxGeneration;
+  }
 }
 
 /**
@@ -893,7 +1273,8 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
   const c = world.components;
   let host = 0;
   if (options.attachTo !== undefined) {
-    if (options.position !== undefined || options.velocity !== undefined) throw new TypeError(`${where}: attachTo excludes position and velocity (the body has its own)`);
+    if (options.position !== undefined || options.velocity !== undefined)
+      throw new TypeError(`${where}: attachTo excludes position and velocity (the body has its own)`);
     host = resolveKind(world, options.attachTo, 'body', where, 'attachTo');
     if (hasComponent(world, host, c.Emitter)) throw new RangeError(`${where}: attachTo ${options.attachTo} already has an emitter`);
   }
@@ -908,31 +1289,59 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
     em = createSlot(world, where);
     addComponent(world, em, c.Position);
     if (options.position) {
-      c.Position.x[em] = options.position[0]!; c.Position.y[em] = options.position[1]!; c.Position.z[em] = d === 3 ? options.position[2]! : 0;
-      c.PreviousPosition.x[em] = c.Position.x[em]!; c.PreviousPosition.y[em] = c.Position.y[em]!; c.PreviousPosition.z[em] = c.Position.z[em]!;
+      c.Position.x[em] = options.position[0]!;
+      c.Position.y[em] = options.position[1]!;
+      c.Position.z[em] = d === 3 ? options.position[2]! : 0;
+      c.PreviousPosition.x[em] = c.Position.x[em]!;
+      c.PreviousPosition.y[em] = c.Position.y[em]!;
+      c.PreviousPosition.z[em] = c.Position.z[em]!;
     }
     if (options.velocity) {
       addComponent(world, em, c.Velocity);
       addComponent(world, em, c.Kinematic);
-      c.Velocity.x[em] = options.velocity[0]!; c.Velocity.y[em] = options.velocity[1]!; c.Velocity.z[em] = d === 3 ? options.velocity[2]! : 0;
+      c.Velocity.x[em] = options.velocity[0]!;
+      c.Velocity.y[em] = options.velocity[1]!;
+      c.Velocity.z[em] = d === 3 ? options.velocity[2]! : 0;
     }
   }
   addComponent(world, em, c.Emitter);
   const E = c.Emitter;
   // Defaults (documented on EmitterOptions and EmittedParticleOptions), then the options given.
-  E.rate[em] = 0; E.carry[em] = 0; E.pendingBurst[em] = 0; E.enabled[em] = 1;
-  E.shape[em] = EmitterShape.Point; E.size[em] = 0; E.sizeY[em] = 0; E.sizeZ[em] = 0;
-  E.dirX[em] = 0; E.dirY[em] = 1; E.dirZ[em] = 0; E.spread[em] = Math.PI;
-  E.speedMin[em] = 1; E.speedMax[em] = 2; E.lifeMin[em] = 1; E.lifeMax[em] = 2;
+  E.rate[em] = 0;
+  E.carry[em] = 0;
+  E.pendingBurst[em] = 0;
+  E.enabled[em] = 1;
+  E.shape[em] = EmitterShape.Point;
+  E.size[em] = 0;
+  E.sizeY[em] = 0;
+  E.sizeZ[em] = 0;
+  E.dirX[em] = 0;
+  E.dirY[em] = 1;
+  E.dirZ[em] = 0;
+  E.spread[em] = Math.PI;
+  E.speedMin[em] = 1;
+  E.speedMax[em] = 2;
+  E.lifeMin[em] = 1;
+  E.lifeMax[em] = 2;
   E.inherit[em] = 0;
-  E.mass[em] = 0; E.linearDrag[em] = 0; E.quadraticDrag[em] = 0; E.gravityScale[em] = 1; E.radius[em] = 0;
+  E.mass[em] = 0;
+  E.linearDrag[em] = 0;
+  E.quadraticDrag[em] = 0;
+  E.gravityScale[em] = 1;
+  E.radius[em] = 0;
   const p = options.particle ?? {};
-  E.colorStart[em] = 0xffffff; E.colorEnd[em] = p.colorStart ?? 0xffffff;
-  E.sizeStart[em] = 0.1; E.sizeEnd[em] = p.sizeStart ?? 0.1;
-  E.alphaStart[em] = 1; E.alphaEnd[em] = 0;
-  E.deathEmitter[em] = 0; E.deathCount[em] = 0; E.maxGeneration[em] = 0;
+  E.colorStart[em] = 0xffffff;
+  E.colorEnd[em] = p.colorStart ?? 0xffffff;
+  E.sizeStart[em] = 0.1;
+  E.sizeEnd[em] = p.sizeStart ?? 0.1;
+  E.alphaStart[em] = 1;
+  E.alphaEnd[em] = 0;
+  E.deathEmitter[em] = 0;
+  E.deathCount[em] = 0;
+  E.maxGeneration[em] = 0;
   E.policy[em] = CapacityPolicy.DropNew;
-  E.spawned[em] = 0; E.dropped[em] = 0;
+  E.spawned[em] = 0;
+  E.dropped[em] = 0;
   writeSettings(world, em, settings);
   return currentHandle(world, em);
 }
@@ -960,7 +1369,13 @@ export function burst(world: PhysicsWorld, em: number, count: number): void {
  * world was full and the policy drops). @param em an emitter's handle.
  * @throws TypeError | RangeError on a removed entity, one that is not an emitter, or bad values.
  */
-export function emitNow(world: PhysicsWorld, em: number, count: number, position?: ArrayLike<number>, velocity?: ArrayLike<number>): number {
+export function emitNow(
+  world: PhysicsWorld,
+  em: number,
+  count: number,
+  position?: ArrayLike<number>,
+  velocity?: ArrayLike<number>,
+): number {
   const where = 'emitNow';
   const slot = emitterSlot(where, world, em);
   assertInteger(where, 'count', count, 0, 10_000_000);
@@ -968,13 +1383,18 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
   if (position !== undefined) assertVector(where, 'position', position, d);
   if (velocity !== undefined) assertVector(where, 'velocity', velocity, d);
   const P = world.components.Position;
-  const x = position ? position[0]! : P.x[slot]!, y = position ? position[1]! : P.y[slot]!, z = position && d === 3 ? position[2]! : position ? 0 : P.z[slot]!;
+  const x = position ? position[0]! : P.x[slot]!,
+    y = position ? position[1]! : P.y[slot]!,
+    z = position && d === 3 ? position[2]! : position ? 0 : P.z[slot]!;
   const k = world.components.Emitter.inherit[slot]!;
   const before = world.components.Emitter.spawned[slot]!;
   const b = book(world);
   let a = archetypeFor(world, slot);
-  let kind = particleKind(world, slot), heading = headingOf(world, slot);
-  const bx = velocity ? k * velocity[0]! : 0, by = velocity ? k * velocity[1]! : 0, bz = velocity && d === 3 ? k * velocity[2]! : 0;
+  let kind = particleKind(world, slot),
+    heading = headingOf(world, slot);
+  const bx = velocity ? k * velocity[0]! : 0,
+    by = velocity ? k * velocity[1]! : 0,
+    bz = velocity && d === 3 ? k * velocity[2]! : 0;
   setOrigin(x, y, z, bx, by, bz, heading);
   const ix = world.entityIndex;
   for (let i = 0; i < count; i++) {
@@ -986,7 +1406,12 @@ export function emitNow(world: PhysicsWorld, em: number, count: number, position
     setOrigin(x, y, z, bx, by, bz, heading);
     spawnOne(world, b, slot, 0, a, kind);
     // A birth hook may have changed the emitter (setEmitter): the next birth follows it.
-    if (a === undefined || b.birthHooks.length > 0) { a = archetypeFor(world, slot); kind = particleKind(world, slot); heading = headingOf(world, slot); setOrigin(x, y, z, bx, by, bz, heading); }
+    if (a === undefined || b.birthHooks.length > 0) {
+      a = archetypeFor(world, slot);
+      kind = particleKind(world, slot);
+      heading = headingOf(world, slot);
+      setOrigin(x, y, z, bx, by, bz, heading);
+    }
   }
   flushBirths(world);
   return world.components.Emitter.spawned[slot]! - before;
@@ -1020,7 +1445,10 @@ export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): (
   if (typeof hook !== 'function') throw new TypeError(`onParticleDeath: hook must be a function, got ${describe(hook)}`);
   const b = book(world);
   b.hooks.push(hook);
-  return () => { const i = b.hooks.indexOf(hook); if (i >= 0) b.hooks.splice(i, 1); };
+  return () => {
+    const i = b.hooks.indexOf(hook);
+    if (i >= 0) b.hooks.splice(i, 1);
+  };
 }
 
 /**
@@ -1031,7 +1459,10 @@ export function onParticleBirth(world: PhysicsWorld, hook: ParticleBirthHook): (
   if (typeof hook !== 'function') throw new TypeError(`onParticleBirth: hook must be a function, got ${describe(hook)}`);
   const b = book(world);
   b.birthHooks.push(hook);
-  return () => { const i = b.birthHooks.indexOf(hook); if (i >= 0) b.birthHooks.splice(i, 1); };
+  return () => {
+    const i = b.birthHooks.indexOf(hook);
+    if (i >= 0) b.birthHooks.splice(i, 1);
+  };
 }
 
 /**
@@ -1045,7 +1476,11 @@ export function particlesExpired(world: PhysicsWorld): number {
 }
 
 /** A particle's look now: colour 0xRRGGBB, size (m) and alpha, linear in age / duration. */
-export interface ParticleLook { color: number; size: number; alpha: number }
+export interface ParticleLook {
+  color: number;
+  size: number;
+  alpha: number;
+}
 
 /**
  * The look of particle `eid` at its current age (for renderers), written into `out`.
@@ -1054,11 +1489,13 @@ export interface ParticleLook { color: number; size: number; alpha: number }
  */
 export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook): ParticleLook {
   const c = world.components;
-  const P = c.Particle, L = c.Lifetime;
+  const P = c.Particle,
+    L = c.Lifetime;
   const d = L.duration[eid]!;
   let t = d > 0 ? L.age[eid]! / d : 1;
   t = t < 0 ? 0 : t > 1 ? 1 : t;
-  const a = P.colorStart[eid]!, b = P.colorEnd[eid]!;
+  const a = P.colorStart[eid]!,
+    b = P.colorEnd[eid]!;
   const r = ((a >> 16) & 255) + (((b >> 16) & 255) - ((a >> 16) & 255)) * t;
   const g = ((a >> 8) & 255) + (((b >> 8) & 255) - ((a >> 8) & 255)) * t;
   const bl = (a & 255) + ((b & 255) - (a & 255)) * t;

@@ -1,11 +1,11 @@
-import type { PhysicsWorld, System } from '../world.js';
 import { NonFiniteStateError } from '../errors.js';
-import { query } from '../query.js';
 import { currentHandle } from '../handles.js';
-import { type StageName } from './stage-names.js';
-import { runParallel } from '../threads/parallel.js';
-import { KERNEL } from '../threads/kernels.js';
 import { fusedForcesOn } from '../integrators/fused-state.js';
+import { query } from '../query.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
+import type { PhysicsWorld, System } from '../world.js';
+import type { StageName } from './stage-names.js';
 
 /**
  * The finiteness check `step` runs at the end of each stage: a NaN or infinity in a body's state is
@@ -83,8 +83,12 @@ function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
     // stack (OSR) in its first call, and an operation after the loop that had not run by then threw
     // that code away at every later call (140 times in 100 steps of a threaded balls-in-box).
     if (n > 0) s = a[n]! * 0 + b[n]! * 0;
-    for (let e = 1; e < n; e += 2) s += (a[e]! * 0 + b[e]! * 0) + (a[e + 1]! * 0 + b[e + 1]! * 0);
-  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s += a[e]! * 0 + b[e]! * 0; }
+    for (let e = 1; e < n; e += 2) s += a[e]! * 0 + b[e]! * 0 + (a[e + 1]! * 0 + b[e + 1]! * 0);
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0;
+    }
   return s;
 }
 
@@ -92,9 +96,13 @@ function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   let s = 0;
   const n = ents.length;
   if (dense) {
-    if (n > 0) s = (a[n]! * 0 + b[n]! * 0) + c[n]! * 0;
-    for (let e = 1; e < n; e += 2) s += ((a[e]! * 0 + b[e]! * 0) + c[e]! * 0) + ((a[e + 1]! * 0 + b[e + 1]! * 0) + c[e + 1]! * 0);
-  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s += (a[e]! * 0 + b[e]! * 0) + c[e]! * 0; }
+    if (n > 0) s = a[n]! * 0 + b[n]! * 0 + c[n]! * 0;
+    for (let e = 1; e < n; e += 2) s += a[e]! * 0 + b[e]! * 0 + c[e]! * 0 + (a[e + 1]! * 0 + b[e + 1]! * 0 + c[e + 1]! * 0);
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0 + c[e]! * 0;
+    }
   return s;
 }
 
@@ -102,27 +110,58 @@ function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float
   let s = 0;
   const n = ents.length;
   if (dense) {
-    if (n > 0) s = (a[n]! * 0 + b[n]! * 0) + (c[n]! * 0 + d[n]! * 0);
+    if (n > 0) s = a[n]! * 0 + b[n]! * 0 + (c[n]! * 0 + d[n]! * 0);
     for (let e = 1; e < n; e += 2) {
-      s += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + ((a[e + 1]! * 0 + b[e + 1]! * 0) + (c[e + 1]! * 0 + d[e + 1]! * 0));
+      s += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (a[e + 1]! * 0 + b[e + 1]! * 0 + (c[e + 1]! * 0 + d[e + 1]! * 0));
     }
-  } else for (let i = 0; i < n; i++) { const e = ents[i]!; s += (a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0); }
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0);
+    }
   return s;
 }
 
-function sum6(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array, f: Float64Array, g: Float64Array): number {
+function sum6(
+  ents: ArrayLike<number>,
+  dense: boolean,
+  a: Float64Array,
+  b: Float64Array,
+  c: Float64Array,
+  d: Float64Array,
+  f: Float64Array,
+  g: Float64Array,
+): number {
   let s0 = 0;
   const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + (f[e]! * 0 + g[e]! * 0);
-  else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + (f[e]! * 0 + g[e]! * 0); }
+  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
+    }
   return s0;
 }
 
-function sum7(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array, f: Float64Array, g: Float64Array, h: Float64Array): number {
+function sum7(
+  ents: ArrayLike<number>,
+  dense: boolean,
+  a: Float64Array,
+  b: Float64Array,
+  c: Float64Array,
+  d: Float64Array,
+  f: Float64Array,
+  g: Float64Array,
+  h: Float64Array,
+): number {
   let s0 = 0;
   const n = ents.length;
-  if (dense) for (let e = 1; e <= n; e++) s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + ((f[e]! * 0 + g[e]! * 0) + h[e]! * 0);
-  else for (let i = 0; i < n; i++) { const e = ents[i]!; s0 += ((a[e]! * 0 + b[e]! * 0) + (c[e]! * 0 + d[e]! * 0)) + ((f[e]! * 0 + g[e]! * 0) + h[e]! * 0); }
+  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
+    }
   return s0;
 }
 
@@ -141,53 +180,138 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
   const is2D = world.dimensions === 2;
   const maxId = world.entityIndex.maxId;
   if (stage === 'forces') {
-    const F = c.Force, T = c.Torque;
+    const F = c.Force,
+      T = c.Torque;
     let ents = query(world, [F]);
     if (ents.length > 0 && !fusedForcesOn(world)) {
       const dense = ents.length === maxId;
-      const par = world.threadPool === null ? null
-        : runParallel(world, 'forces stage finiteness check', KERNEL.finiteProbe, is2D ? [F.x, F.y] : [F.x, F.y, F.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+      const par =
+        world.threadPool === null
+          ? null
+          : runParallel(
+              world,
+              'forces stage finiteness check',
+              KERNEL.finiteProbe,
+              is2D ? [F.x, F.y] : [F.x, F.y, F.z],
+              EMPTY_PARAMS,
+              ents.length,
+              dense ? null : ents,
+            );
       if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
-        name(world, stage, ents, is2D ? [['Force.x', F.x], ['Force.y', F.y]] : [['Force.x', F.x], ['Force.y', F.y], ['Force.z', F.z]]);
+        name(
+          world,
+          stage,
+          ents,
+          is2D
+            ? [
+                ['Force.x', F.x],
+                ['Force.y', F.y],
+              ]
+            : [
+                ['Force.x', F.x],
+                ['Force.y', F.y],
+                ['Force.z', F.z],
+              ],
+        );
       }
     }
     ents = query(world, [T]);
     if (ents.length > 0) {
       const dense = ents.length === maxId;
-      const par = world.threadPool === null ? null
-        : runParallel(world, 'forces stage finiteness check', KERNEL.finiteProbe, is2D ? [T.z] : [T.x, T.y, T.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+      const par =
+        world.threadPool === null
+          ? null
+          : runParallel(
+              world,
+              'forces stage finiteness check',
+              KERNEL.finiteProbe,
+              is2D ? [T.z] : [T.x, T.y, T.z],
+              EMPTY_PARAMS,
+              ents.length,
+              dense ? null : ents,
+            );
       if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
-        name(world, stage, ents, is2D ? [['Torque.z', T.z]] : [['Torque.x', T.x], ['Torque.y', T.y], ['Torque.z', T.z]]);
+        name(
+          world,
+          stage,
+          ents,
+          is2D
+            ? [['Torque.z', T.z]]
+            : [
+                ['Torque.x', T.x],
+                ['Torque.y', T.y],
+                ['Torque.z', T.z],
+              ],
+        );
       }
     }
   }
   if (level === 0) return;
-  const P = c.Position, V = c.Velocity, W = c.AngularVelocity;
+  const P = c.Position,
+    V = c.Velocity,
+    W = c.AngularVelocity;
   // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
   let ents = level === 2 ? query(world, [P, V]) : EMPTY;
   if (ents.length > 0) {
     const dense = ents.length === maxId;
     // A world with threads splits the probe over them (threads/kernels.ts finiteProbe: the same test).
-    const par = world.threadPool === null ? null
-      : runParallel(world, `${stage} stage finiteness check`, KERNEL.finiteProbe, is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z], EMPTY_PARAMS, ents.length, dense ? null : ents);
+    const par =
+      world.threadPool === null
+        ? null
+        : runParallel(
+            world,
+            `${stage} stage finiteness check`,
+            KERNEL.finiteProbe,
+            is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z],
+            EMPTY_PARAMS,
+            ents.length,
+            dense ? null : ents,
+          );
     if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
-      name(world, stage, ents, is2D
-        ? [['Velocity.x', V.x], ['Velocity.y', V.y], ['Position.x', P.x], ['Position.y', P.y]]
-        : [['Velocity.x', V.x], ['Velocity.y', V.y], ['Velocity.z', V.z], ['Position.x', P.x], ['Position.y', P.y], ['Position.z', P.z]]);
+      name(
+        world,
+        stage,
+        ents,
+        is2D
+          ? [
+              ['Velocity.x', V.x],
+              ['Velocity.y', V.y],
+              ['Position.x', P.x],
+              ['Position.y', P.y],
+            ]
+          : [
+              ['Velocity.x', V.x],
+              ['Velocity.y', V.y],
+              ['Velocity.z', V.z],
+              ['Position.x', P.x],
+              ['Position.y', P.y],
+              ['Position.z', P.z],
+            ],
+      );
     }
   }
   if (is2D) {
     const A = c.Angle.value;
     ents = query(world, [W, c.Angle]);
     if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
-      name(world, stage, ents, [['AngularVelocity.z', W.z], ['Angle.value', A]]);
+      name(world, stage, ents, [
+        ['AngularVelocity.z', W.z],
+        ['Angle.value', A],
+      ]);
     }
   } else {
     const Q = c.Orientation;
     ents = query(world, [W, Q]);
     if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
-      name(world, stage, ents, [['AngularVelocity.x', W.x], ['AngularVelocity.y', W.y], ['AngularVelocity.z', W.z],
-        ['Orientation.x', Q.x], ['Orientation.y', Q.y], ['Orientation.z', Q.z], ['Orientation.w', Q.w]]);
+      name(world, stage, ents, [
+        ['AngularVelocity.x', W.x],
+        ['AngularVelocity.y', W.y],
+        ['AngularVelocity.z', W.z],
+        ['Orientation.x', Q.x],
+        ['Orientation.y', Q.y],
+        ['Orientation.z', Q.z],
+        ['Orientation.w', Q.w],
+      ]);
     }
   }
 }
@@ -201,9 +325,17 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const F = world.components.Force;
   if (world.dimensions === 2) {
-    if (sum2(ents, false, F.x, F.y) !== 0) name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y]]);
+    if (sum2(ents, false, F.x, F.y) !== 0)
+      name(world, 'forces', ents, [
+        ['Force.x', F.x],
+        ['Force.y', F.y],
+      ]);
   } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
-    name(world, 'forces', ents, [['Force.x', F.x], ['Force.y', F.y], ['Force.z', F.z]]);
+    name(world, 'forces', ents, [
+      ['Force.x', F.x],
+      ['Force.y', F.y],
+      ['Force.z', F.z],
+    ]);
   }
 }
 
@@ -216,10 +348,15 @@ function name(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fi
       if (Number.isFinite(v)) continue;
       const c = world.components;
       const at = (a: Float64Array) => a[e];
-      throw new NonFiniteStateError(currentHandle(world, e), field, v, stage,
+      throw new NonFiniteStateError(
+        currentHandle(world, e),
+        field,
+        v,
+        stage,
         `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
           `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
-          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`);
+          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`,
+      );
     }
   }
   throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);

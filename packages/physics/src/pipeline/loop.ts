@@ -1,4 +1,4 @@
-import { assertOptions, assertPositive, assertInteger } from '../validate.js';
+import { assertInteger, assertOptions, assertPositive } from '../validate.js';
 
 /** Options of `createFixedStepLoop`. */
 export interface FixedStepLoopOptions {
@@ -64,7 +64,10 @@ export function createFixedStepLoop(options: FixedStepLoopOptions): FixedStepLoo
         throw new RangeError(`FixedStepLoop.advance: frameSeconds must be finite and >= 0, got ${frameSeconds}`);
       }
       let dropped = 0;
-      if (frameSeconds > maxFrameTime) { dropped += frameSeconds - maxFrameTime; frameSeconds = maxFrameTime; }
+      if (frameSeconds > maxFrameTime) {
+        dropped += frameSeconds - maxFrameTime;
+        frameSeconds = maxFrameTime;
+      }
       acc += frameSeconds;
       let steps = 0;
       while (acc >= dt && steps < maxSteps) {
@@ -82,7 +85,11 @@ export function createFixedStepLoop(options: FixedStepLoopOptions): FixedStepLoo
       result.dropped = dropped;
       return result;
     },
-    get accumulator() { return acc; },
-    reset() { acc = 0; },
+    get accumulator() {
+      return acc;
+    },
+    reset() {
+      acc = 0;
+    },
   };
 }

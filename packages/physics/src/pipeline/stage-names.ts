@@ -22,4 +22,3 @@ export type StageName = (typeof STAGES)[number];
 
 /** The stages that run once per substep, in order. */
 export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'integrate', 'collide', 'constraints'];
-

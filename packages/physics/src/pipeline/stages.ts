@@ -1,35 +1,35 @@
-import type {  System } from '../world.js';
-import type { StageName } from './stage-names.js';
-import { clearForcesSystem } from '../forces/clear.js';
-import { linearDragSystem, liftSystem, quadraticDragSystem, stiffDragSystem } from '../forces/drag.js';
-import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
-import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
-import { centralForceSystem } from '../forces/central.js';
-import { buoyancySystem, stiffFluidDragSystem } from '../forces/fluid.js';
-import { springSystem, stiffSpringDampingSystem } from '../forces/spring.js';
-import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
-import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
-import { angularDampingSystem, stiffAngularDampingSystem } from '../forces/angular-damping.js';
-import { ballastFillSystem, ballastTrimSystem } from '../forces/ballast.js';
-import { bodyThrustSystem } from '../forces/body-thrust.js';
-import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
-import { vortexSystem } from '../forces/vortex.js';
-import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
-import { integrateSystem } from '../integrators/integrate.js';
+import { clothSystem } from '../cloth/solver.js';
 import { broadphaseSystem } from '../collision/broadphase.js';
+import { continuousCollisionSystem } from '../collision/continuous.js';
 import { narrowphaseSystem } from '../collision/narrowphase.js';
 import { shapeCollisionSystem } from '../collision/shape-collision.js';
 import { shape3DCollisionSystem } from '../collision/shape3d-collision.js';
-import { shapes3DOf } from '../shapes3d/store.js';
-import { contactSolverSystem } from '../collision/solver.js';
-import { continuousCollisionSystem } from '../collision/continuous.js';
 import { sleepSystem, wakeSystem } from '../collision/sleep.js';
-import { trustFiniteOutput } from './finite.js';
+import { contactSolverSystem } from '../collision/solver.js';
+import { angularDampingSystem, stiffAngularDampingSystem } from '../forces/angular-damping.js';
+import { ballastFillSystem, ballastTrimSystem } from '../forces/ballast.js';
+import { bodyThrustSystem } from '../forces/body-thrust.js';
+import { centralForceSystem } from '../forces/central.js';
+import { clearForcesSystem } from '../forces/clear.js';
+import { liftSystem, linearDragSystem, quadraticDragSystem, stiffDragSystem } from '../forces/drag.js';
+import { drivingForceSystem, randomForceSystem } from '../forces/driving.js';
+import { coulombSystem, lorentzSystem } from '../forces/electromagnetism.js';
+import { buoyancySystem, stiffFluidDragSystem } from '../forces/fluid.js';
+import { attractorSystem, gravityScaleSystem, mutualGravitySystem } from '../forces/gravity.js';
+import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
+import { springSystem, stiffSpringDampingSystem } from '../forces/spring.js';
+import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
+import { vortexSystem } from '../forces/vortex.js';
+import { integrateSystem } from '../integrators/integrate.js';
+import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
 import { query } from '../query.js';
-import { clothSystem } from '../cloth/solver.js';
+import { shapes3DOf } from '../shapes3d/store.js';
+import type { System } from '../world.js';
+import { trustFiniteOutput } from './finite.js';
+import type { StageName } from './stage-names.js';
 
-export { STAGES, SUBSTEP_STAGES, type StageName } from './stage-names.js';
 export type { System } from '../world.js';
+export { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
 
 /**
  * The default pipeline: every stage with its built-in systems, in run order. A world starts with a
@@ -41,14 +41,50 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
   {
     stage: 'forces',
     systems: [
-      gravityScaleSystem, mutualGravitySystem, attractorSystem, coulombSystem, lorentzSystem, centralForceSystem,
-      linearDragSystem, quadraticDragSystem, liftSystem, buoyancySystem, springSystem, drivingForceSystem,
-      randomForceSystem, thrustSystem, angularDampingSystem, vortexSystem, bodyThrustSystem, liftingSurfaceSystem,
+      gravityScaleSystem,
+      mutualGravitySystem,
+      attractorSystem,
+      coulombSystem,
+      lorentzSystem,
+      centralForceSystem,
+      linearDragSystem,
+      quadraticDragSystem,
+      liftSystem,
+      buoyancySystem,
+      springSystem,
+      drivingForceSystem,
+      randomForceSystem,
+      thrustSystem,
+      angularDampingSystem,
+      vortexSystem,
+      bodyThrustSystem,
+      liftingSurfaceSystem,
       ballastTrimSystem,
     ],
   },
-  { stage: 'integrate', systems: [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem, burnFuelSystem, ballastFillSystem] },
-  { stage: 'collide', systems: [broadphaseSystem, narrowphaseSystem, shapeCollisionSystem, shape3DCollisionSystem, contactSolverSystem, continuousCollisionSystem] },
+  {
+    stage: 'integrate',
+    systems: [
+      integrateSystem,
+      stiffDragSystem,
+      stiffFluidDragSystem,
+      stiffAngularDampingSystem,
+      stiffSpringDampingSystem,
+      burnFuelSystem,
+      ballastFillSystem,
+    ],
+  },
+  {
+    stage: 'collide',
+    systems: [
+      broadphaseSystem,
+      narrowphaseSystem,
+      shapeCollisionSystem,
+      shape3DCollisionSystem,
+      contactSolverSystem,
+      continuousCollisionSystem,
+    ],
+  },
   { stage: 'constraints', systems: [clothSystem] },
   { stage: 'finalize', systems: [sleepSystem] },
 ]);
@@ -61,8 +97,16 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
 // only in a world without such shapes or cloth links, where they write nothing (pipeline/finite.ts), so a
 // world with nothing to collide pays nothing for its collide stage.
 trustFiniteOutput([
-  wakeSystem, lifetimeSystem, emitterSystem, broadphaseSystem, narrowphaseSystem, contactSolverSystem, sleepSystem,
-  burnFuelSystem, ballastFillSystem, ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
+  wakeSystem,
+  lifetimeSystem,
+  emitterSystem,
+  broadphaseSystem,
+  narrowphaseSystem,
+  contactSolverSystem,
+  sleepSystem,
+  burnFuelSystem,
+  ballastFillSystem,
+  ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
 ]);
 trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem], 'linear');
 trustFiniteOutput([shapeCollisionSystem, continuousCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);

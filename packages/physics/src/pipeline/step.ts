@@ -1,10 +1,10 @@
-import type { PhysicsWorld, System } from '../world.js';
-import { STAGES, SUBSTEP_STAGES, type StageName } from './stage-names.js';
-import { assertOptions, describe } from '../validate.js';
-import { query } from '../query.js';
-import { checkStageState, stageNeedsCheck } from './finite.js';
 import { armFusedForces } from '../integrators/fused-gate.js';
 import { setFusedForces } from '../integrators/fused-state.js';
+import { query } from '../query.js';
+import { assertOptions, describe } from '../validate.js';
+import type { PhysicsWorld, System } from '../world.js';
+import { checkStageState, stageNeedsCheck } from './finite.js';
+import { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
 const clock = (globalThis as { performance?: { now(): number } }).performance;
@@ -102,14 +102,24 @@ function snapshotStepStart(world: PhysicsWorld): ArrayLike<number> {
   }
   const P = world.components.Position;
   const [x, y, z] = stepStart as [Float64Array, Float64Array, Float64Array];
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; x[e] = P.x[e]!; y[e] = P.y[e]!; z[e] = P.z[e]!; }
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    x[e] = P.x[e]!;
+    y[e] = P.y[e]!;
+    z[e] = P.z[e]!;
+  }
   return ents;
 }
 
 function restoreStepStart(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const O = world.components.PreviousPosition;
   const [x, y, z] = stepStarts.get(world) as [Float64Array, Float64Array, Float64Array];
-  for (let i = 0; i < ents.length; i++) { const e = ents[i]!; O.x[e] = x[e]!; O.y[e] = y[e]!; O.z[e] = z[e]!; }
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    O.x[e] = x[e]!;
+    O.y[e] = y[e]!;
+    O.z[e] = z[e]!;
+  }
 }
 
 /**

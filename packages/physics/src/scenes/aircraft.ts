@@ -1,10 +1,10 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { setBodyThrust } from '../forces/body-thrust.js';
-import { addLiftingSurface, dragCoefficient, liftCoefficient, DEFAULT_LIFT_SLOPE } from '../forces/lifting-surface.js';
+import { addLiftingSurface, DEFAULT_LIFT_SLOPE, dragCoefficient, liftCoefficient } from '../forces/lifting-surface.js';
 import { setInertia } from '../rigid.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertKnownKeys, assertPositive } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -28,14 +28,22 @@ export const AIRCRAFT = Object.freeze({
   incidence: (3 * Math.PI) / 180,
   /** Lift per radian of aileron deflection on each wing half, 1/rad. */
   aileronPower: 0.6,
-  tailArea: 30, tailArm: 12, tailSlope: 3.5, elevatorPower: 1.5,
+  tailArea: 30,
+  tailArm: 12,
+  tailSlope: 3.5,
+  elevatorPower: 1.5,
   /** The fin's centre of pressure sits at the height of the centre of mass (its drag makes no pitching moment). */
-  finArea: 15, finHeight: 0, finSlope: 3, rudderPower: 1.2,
+  finArea: 15,
+  finHeight: 0,
+  finSlope: 3,
+  rudderPower: 1.2,
   /** Largest thrust, N. */
   maxThrust: 150_000,
   airDensity: 1.225,
   stallAngle: (20 * Math.PI) / 180,
-  dragZero: 0.02, inducedDrag: 0.06, tailDragZero: 0.01,
+  dragZero: 0.02,
+  inducedDrag: 0.06,
+  tailDragZero: 0.01,
 });
 
 /** Gravity, m/s^2, of the scene's world. */
@@ -45,16 +53,21 @@ const G = 9.81;
  * The trim speed, m/s: lift = weight with the body level, from m g = rho V^2 S a i / 2,
  * V = sqrt(2 m g / (rho S a i)) (a the wing's lift slope, i its incidence; about 114 m/s).
  */
-export const AIRCRAFT_TRIM_SPEED = Math.sqrt((2 * AIRCRAFT.mass * G) / (AIRCRAFT.airDensity * AIRCRAFT.wingArea * DEFAULT_LIFT_SLOPE * AIRCRAFT.incidence));
+export const AIRCRAFT_TRIM_SPEED = Math.sqrt(
+  (2 * AIRCRAFT.mass * G) / (AIRCRAFT.airDensity * AIRCRAFT.wingArea * DEFAULT_LIFT_SLOPE * AIRCRAFT.incidence),
+);
 
 /**
  * Drag of the level, trimmed aircraft at `speed` m/s, N: wing C_D0 + K C_L^2 at its incidence, tail
  * and fin at zero angle of attack (C_D0 each): the thrust steady level flight needs.
  */
 export function aircraftLevelDrag(speed: number): number {
-  const A = AIRCRAFT, q = 0.5 * A.airDensity * speed * speed;
+  const A = AIRCRAFT,
+    q = 0.5 * A.airDensity * speed * speed;
   const cl = liftCoefficient(A.incidence, DEFAULT_LIFT_SLOPE, A.stallAngle, 0);
-  return q * (A.wingArea * dragCoefficient(A.incidence, cl, A.stallAngle, A.dragZero, A.inducedDrag) + (A.tailArea + A.finArea) * A.tailDragZero);
+  return (
+    q * (A.wingArea * dragCoefficient(A.incidence, cl, A.stallAngle, A.dragZero, A.inducedDrag) + (A.tailArea + A.finArea) * A.tailDragZero)
+  );
 }
 
 /** Options of the `aircraft` scene. */
@@ -96,7 +109,7 @@ export function terrainHeight(terrain: Float64Array, x: number, z: number): numb
  */
 export const aircraft: SceneDefinition<AircraftOptions, AircraftHandles> = {
   name: 'aircraft',
-  description: 'The book\'s flight-simulator aircraft: lifting surfaces with stall and controls, thrust, Euler\'s equations (SI, 3D)',
+  description: "The book's flight-simulator aircraft: lifting surfaces with stall and controls, thrust, Euler's equations (SI, 3D)",
   defaultCount: 1,
   worldOptions() {
     return { dimensions: 3, capacity: 16, gravity: [0, -G, 0], dt: 1 / 60, integrator: 'rk4', sleep: false };
@@ -121,18 +134,39 @@ export const aircraft: SceneDefinition<AircraftOptions, AircraftHandles> = {
     const body = addBody(world, { position: [0, altitude, 0], velocity: [speed, 0, 0], mass: A.mass });
     setInertia(world, body, A.inertia);
     const wing = {
-      area: A.wingArea / 2, normal: [-Math.sin(A.incidence), Math.cos(A.incidence), 0], controlPower: A.aileronPower,
-      stallAngle: A.stallAngle, dragZero: A.dragZero, inducedDrag: A.inducedDrag, airDensity: A.airDensity,
+      area: A.wingArea / 2,
+      normal: [-Math.sin(A.incidence), Math.cos(A.incidence), 0],
+      controlPower: A.aileronPower,
+      stallAngle: A.stallAngle,
+      dragZero: A.dragZero,
+      inducedDrag: A.inducedDrag,
+      airDensity: A.airDensity,
     };
     const leftWing = addLiftingSurface(world, { body, offset: [0, 0, -A.wingHalfOffset], ...wing });
     const rightWing = addLiftingSurface(world, { body, offset: [0, 0, A.wingHalfOffset], ...wing });
     const tail = addLiftingSurface(world, {
-      body, offset: [-A.tailArm, 0, 0], normal: [0, 1, 0], area: A.tailArea, liftSlope: A.tailSlope, controlPower: A.elevatorPower,
-      stallAngle: A.stallAngle, dragZero: A.tailDragZero, inducedDrag: 0.08, airDensity: A.airDensity,
+      body,
+      offset: [-A.tailArm, 0, 0],
+      normal: [0, 1, 0],
+      area: A.tailArea,
+      liftSlope: A.tailSlope,
+      controlPower: A.elevatorPower,
+      stallAngle: A.stallAngle,
+      dragZero: A.tailDragZero,
+      inducedDrag: 0.08,
+      airDensity: A.airDensity,
     });
     const fin = addLiftingSurface(world, {
-      body, offset: [-A.tailArm, A.finHeight, 0], normal: [0, 0, 1], area: A.finArea, liftSlope: A.finSlope, controlPower: A.rudderPower,
-      stallAngle: A.stallAngle, dragZero: A.tailDragZero, inducedDrag: 0.1, airDensity: A.airDensity,
+      body,
+      offset: [-A.tailArm, A.finHeight, 0],
+      normal: [0, 0, 1],
+      area: A.finArea,
+      liftSlope: A.finSlope,
+      controlPower: A.rudderPower,
+      stallAngle: A.stallAngle,
+      dragZero: A.tailDragZero,
+      inducedDrag: 0.1,
+      airDensity: A.airDensity,
     });
     setBodyThrust(world, body, [thrust, 0, 0]);
 

@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody, setBoundary } from '../bodies.js';
 import { Rng } from '../rng.js';
-import { assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertFinite } from '../validate.js';
+import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `balls-in-box` scene. */
@@ -77,13 +77,21 @@ export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLay
   const jitter = 0.4 * (spacing - 2 * radius);
   const positions = new Float64Array(2 * count);
   for (let i = 0; i < count; i++) {
-    const col = i % columns, row = Math.floor(i / columns);
+    const col = i % columns,
+      row = Math.floor(i / columns);
     positions[2 * i] = (col + 0.5) * spacing + rng.range(-jitter, jitter);
     positions[2 * i + 1] = (row + 0.5) * spacing + rng.range(-jitter, jitter);
   }
   return {
-    count, positions, radius, mass, restitution, friction,
-    min: [0, 0], max: [width, height], gravity: [0, -10],
+    count,
+    positions,
+    radius,
+    mass,
+    restitution,
+    friction,
+    min: [0, 0],
+    max: [width, height],
+    gravity: [0, -10],
   };
 }
 
@@ -115,10 +123,14 @@ export const ballsInBox: SceneDefinition<BallsInBoxOptions, BallsInBoxHandles> =
     const p = layout.positions;
     const pos = [0, 0];
     for (let i = 0; i < layout.count; i++) {
-      pos[0] = p[2 * i]!; pos[1] = p[2 * i + 1]!;
+      pos[0] = p[2 * i]!;
+      pos[1] = p[2 * i + 1]!;
       balls[i] = addBody(world, {
-        position: pos, radius: layout.radius, mass: layout.mass,
-        restitution: layout.restitution, friction: layout.friction,
+        position: pos,
+        radius: layout.radius,
+        mass: layout.mass,
+        restitution: layout.restitution,
+        friction: layout.friction,
       });
     }
     return { balls, layout };

@@ -1,11 +1,11 @@
-import type { PhysicsWorld } from '../world.js';
-import type { SceneDefinition } from './types.js';
 import { addBody } from '../bodies.js';
+import { slotOf } from '../handles.js';
 import { addPlane } from '../rigid.js';
 import { addShape3D } from '../shapes3d/api.js';
-import { slotOf } from '../handles.js';
-import { jitteredGrid3D } from './jittered-grid.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { jitteredGrid3D } from './jittered-grid.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `box-pile-3d` scene. */
 export interface BoxPile3DOptions {
@@ -51,11 +51,19 @@ export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout
   assertInteger(where, 'count', count, 1, 200_000);
   const seed = options.seed ?? 1;
   assertFinite(where, 'seed', seed);
-  const spacing = 1.5, half = 0.5;
+  const spacing = 1.5,
+    half = 0.5;
   const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * half);
   return {
-    count, positions, half, mass: 1, restitution: 0.1, friction: 0.6,
-    min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],
+    count,
+    positions,
+    half,
+    mass: 1,
+    restitution: 0.1,
+    friction: 0.6,
+    min: [0, 0, 0],
+    max: [side * spacing, (layers + 1) * spacing, side * spacing],
+    gravity: [0, -10, 0],
   };
 }
 
@@ -83,15 +91,40 @@ export const boxPile3D: SceneDefinition<BoxPile3DOptions, BoxPile3DHandles> = {
   build(world: PhysicsWorld, options: BoxPile3DOptions = {}): BoxPile3DHandles {
     if (world.dimensions !== 3) throw new RangeError(`box-pile-3d: needs a 3D world, got dimensions ${world.dimensions}`);
     const layout = boxPile3DLayout(options);
-    const [x0, y0, z0] = layout.min, [x1, y1, z1] = layout.max;
+    const [x0, y0, z0] = layout.min,
+      [x1, y1, z1] = layout.max;
     const material = { friction: layout.friction, restitution: layout.restitution };
     const walls: Array<[number[], number[]]> = [
-      [[0, 1, 0], [0, y0, 0]], [[0, -1, 0], [0, y1, 0]], [[1, 0, 0], [x0, 0, 0]],
-      [[-1, 0, 0], [x1, 0, 0]], [[0, 0, 1], [0, 0, z0]], [[0, 0, -1], [0, 0, z1]],
+      [
+        [0, 1, 0],
+        [0, y0, 0],
+      ],
+      [
+        [0, -1, 0],
+        [0, y1, 0],
+      ],
+      [
+        [1, 0, 0],
+        [x0, 0, 0],
+      ],
+      [
+        [-1, 0, 0],
+        [x1, 0, 0],
+      ],
+      [
+        [0, 0, 1],
+        [0, 0, z0],
+      ],
+      [
+        [0, 0, -1],
+        [0, 0, z1],
+      ],
     ];
     for (const [normal, point] of walls) addPlane(world, { normal, point, ...material });
     const boxes = new Uint32Array(layout.count);
-    const p = layout.positions, h = layout.half, extents = [h, h, h];
+    const p = layout.positions,
+      h = layout.half,
+      extents = [h, h, h];
     const density = layout.mass / (8 * h * h * h);
     for (let i = 0; i < layout.count; i++) {
       const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });

@@ -1,6 +1,6 @@
-import type { PhysicsWorld } from '../world.js';
 import { addEmitter } from '../particles/emitter.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `fireworks` scene. */
@@ -34,11 +34,16 @@ export const fireworks: SceneDefinition<FireworksOptions, { shells: number; spar
     assertInteger(where, 'count', count, 100, 10_000_000);
     if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
     const embers = addEmitter(world, {
-      speed: [1, 3], lifetime: [0.5, 1], policy: 'recycle-oldest',
+      speed: [1, 3],
+      lifetime: [0.5, 1],
+      policy: 'recycle-oldest',
       particle: { mass: 0.001, quadraticDrag: 2e-5, colorStart: 0xffee88, colorEnd: 0xff3300, sizeStart: 0.15, sizeEnd: 0.02 },
     });
     const sparks = addEmitter(world, {
-      speed: [4, 12], lifetime: [1, 2], inheritVelocity: 1, policy: 'recycle-oldest',
+      speed: [4, 12],
+      lifetime: [1, 2],
+      inheritVelocity: 1,
+      policy: 'recycle-oldest',
       particle: { mass: 0.002, quadraticDrag: 4e-5, colorStart: 0xffffff, colorEnd: 0xff6600, sizeStart: 0.25, sizeEnd: 0.05 },
       onDeath: { emitter: embers, count: 7, maxGeneration: 2 },
     });
@@ -46,8 +51,16 @@ export const fireworks: SceneDefinition<FireworksOptions, { shells: number; spar
     // live sparks per shell-per-second = 200 x 1.5 + 1400 x 0.75 = 1350.
     const rate = count / 1350;
     const shells = addEmitter(world, {
-      position: [0, 0], shape: 'line', size: 60, rate, direction: [0, 1], spread: 0.15, speed: [28, 34], lifetime: [0.9, 1.2],
-      policy: 'recycle-oldest', particle: { mass: 0.1, colorStart: 0xffcc66, sizeStart: 0.3 },
+      position: [0, 0],
+      shape: 'line',
+      size: 60,
+      rate,
+      direction: [0, 1],
+      spread: 0.15,
+      speed: [28, 34],
+      lifetime: [0.9, 1.2],
+      policy: 'recycle-oldest',
+      particle: { mass: 0.1, colorStart: 0xffcc66, sizeStart: 0.3 },
       onDeath: { emitter: sparks, count: 200, maxGeneration: 1 },
     });
     return { shells, sparks, embers };

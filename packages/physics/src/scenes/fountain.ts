@@ -1,6 +1,6 @@
-import type { PhysicsWorld } from '../world.js';
 import { addEmitter } from '../particles/emitter.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `fountain` scene. */
@@ -38,8 +38,15 @@ export const fountain: SceneDefinition<FountainOptions, { emitter: number }> = {
     assertInteger(where, 'count', count, 100, 16_000_000);
     if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
     const emitter = addEmitter(world, {
-      position: [0, 0], shape: 'disc', size: 0.5, direction: [0, 1], spread: 0.35, speed: [9, 13], lifetime: [2 / 3, 1],
-      rate: count / FOUNTAIN_MEAN_LIFETIME, policy: 'drop-new',
+      position: [0, 0],
+      shape: 'disc',
+      size: 0.5,
+      direction: [0, 1],
+      spread: 0.35,
+      speed: [9, 13],
+      lifetime: [2 / 3, 1],
+      rate: count / FOUNTAIN_MEAN_LIFETIME,
+      policy: 'drop-new',
       particle: { colorStart: 0x9fd8ff, colorEnd: 0x2a6fdb, sizeStart: 0.06, sizeEnd: 0.03, alphaStart: 0.9, alphaEnd: 0.2 },
     });
     return { emitter };

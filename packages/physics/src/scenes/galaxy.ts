@@ -1,9 +1,9 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { enableMutualGravity } from '../forces/api.js';
 import { setGravitation } from '../forces/configure.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `galaxy` scene. */
@@ -46,7 +46,10 @@ export const galaxy: SceneDefinition<GalaxyOptions, { stars: Uint32Array; nucleu
     const method = options.method ?? 'barnes-hut';
     setGravitation(world, { constant: 1, softening: 0.3, method, openingAngle: theta });
     const rng = new Rng(seed);
-    const Mn = 1000, Md = 100, scale = 10, rMax = 60;
+    const Mn = 1000,
+      Md = 100,
+      scale = 10,
+      rMax = 60;
     const m = Md / count;
     const nucleus = addBody(world, { position: [0, 0], mass: Mn });
     enableMutualGravity(world, nucleus);
@@ -54,19 +57,26 @@ export const galaxy: SceneDefinition<GalaxyOptions, { stars: Uint32Array; nucleu
     const radii = new Float64Array(count);
     for (let i = 0; i < count; i++) {
       let r: number;
-      do { r = -scale * Math.log(rng.next() * rng.next() + 1e-300); } while (r > rMax || r < 0.5);
+      do {
+        r = -scale * Math.log(rng.next() * rng.next() + 1e-300);
+      } while (r > rMax || r < 0.5);
       radii[i] = r;
     }
     const order = Array.from(radii.keys()).sort((a, b) => radii[a]! - radii[b]!);
     const rank = new Float64Array(count);
-    order.forEach((idx, k) => { rank[idx] = k; });
+    order.forEach((idx, k) => {
+      rank[idx] = k;
+    });
     const stars = new Uint32Array(count);
-    const p = [0, 0], v = [0, 0];
+    const p = [0, 0],
+      v = [0, 0];
     for (let i = 0; i < count; i++) {
-      const r = radii[i]!, a = rng.range(0, 2 * Math.PI);
+      const r = radii[i]!,
+        a = rng.range(0, 2 * Math.PI);
       const enclosed = Mn + m * rank[i]!;
       const speed = Math.sqrt(enclosed / r);
-      p[0] = r * Math.cos(a); p[1] = r * Math.sin(a);
+      p[0] = r * Math.cos(a);
+      p[1] = r * Math.sin(a);
       v[0] = -speed * Math.sin(a) + 0.05 * speed * rng.normal();
       v[1] = speed * Math.cos(a) + 0.05 * speed * rng.normal();
       stars[i] = addBody(world, { position: p, velocity: v, mass: m });

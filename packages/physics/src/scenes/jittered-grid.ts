@@ -23,7 +23,9 @@ export function jitteredGrid3D(count: number, seed: number, spacing: number, siz
   const jitter = 0.4 * (spacing - size);
   const positions = new Float64Array(3 * count);
   for (let i = 0; i < count; i++) {
-    const x = i % side, z = Math.floor(i / side) % side, y = Math.floor(i / (side * side));
+    const x = i % side,
+      z = Math.floor(i / side) % side,
+      y = Math.floor(i / (side * side));
     positions[3 * i] = (x + 0.5) * spacing + rng.range(-jitter, jitter);
     positions[3 * i + 1] = (y + 0.5) * spacing + rng.range(-jitter, jitter);
     positions[3 * i + 2] = (z + 0.5) * spacing + rng.range(-jitter, jitter);

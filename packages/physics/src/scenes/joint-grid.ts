@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { addRevoluteJoint } from '../joints/api.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `joint-grid` scene. */

@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world.js';
 import { addParticles } from '../particles/bulk.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `particles` scene. */

@@ -1,10 +1,10 @@
-import type { PhysicsWorld } from '../world.js';
-import type { SceneDefinition } from './types.js';
 import { addBody } from '../bodies.js';
+import { slotOf } from '../handles.js';
 import { addPlane } from '../rigid.js';
 import { addShape3D } from '../shapes3d/api.js';
-import { slotOf } from '../handles.js';
 import { assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import type { SceneDefinition } from './types.js';
 
 /** Options of the `pyramid-3d` scene. */
 export interface Pyramid3DOptions {
@@ -47,7 +47,8 @@ export function pyramid3DLayout(options: Pyramid3DOptions = {}): Pyramid3DLayout
   const base = options.count ?? 20;
   assertInteger('pyramid-3d', 'count', base, 1, 60);
   const count = (base * (base + 1) * (2 * base + 1)) / 6;
-  const pitch = 1.05, half = 0.5;
+  const pitch = 1.05,
+    half = 0.5;
   const positions = new Float64Array(3 * count);
   let k = 0;
   for (let layer = 0; layer < base; layer++) {
@@ -92,7 +93,9 @@ export const pyramid3D: SceneDefinition<Pyramid3DOptions, Pyramid3DHandles> = {
     const material = { friction: layout.friction, restitution: layout.restitution };
     const ground = slotOf(addPlane(world, { normal: [0, 1, 0], ...material }));
     const boxes = new Uint32Array(layout.count);
-    const p = layout.positions, h = layout.half, extents = [h, h, h];
+    const p = layout.positions,
+      h = layout.half,
+      extents = [h, h, h];
     const density = layout.mass / (8 * h * h * h);
     for (let i = 0; i < layout.count; i++) {
       const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });

@@ -1,8 +1,8 @@
+import { slotOf } from '../handles.js';
+import { addBox } from '../shapes/api.js';
+import { assertInteger } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
-import { addBox } from '../shapes/api.js';
-import { slotOf } from '../handles.js';
-import { assertInteger } from '../validate.js';
 
 /** Options of the `pyramid` scene. */
 export interface PyramidOptions {
@@ -46,7 +46,8 @@ export function pyramidLayout(options: PyramidOptions = {}): PyramidLayout {
   const base = options.count ?? 40;
   assertInteger('pyramid', 'count', base, 1, 1000);
   const count = (base * (base + 1)) / 2;
-  const pitch = 1.05, half = 0.5;
+  const pitch = 1.05,
+    half = 0.5;
   const positions = new Float64Array(2 * count);
   let k = 0;
   for (let row = 0; row < base; row++) {
@@ -57,7 +58,15 @@ export function pyramidLayout(options: PyramidOptions = {}): PyramidLayout {
     }
   }
   return {
-    base, count, half, pitch, friction: 0.6, restitution: 0, density: 1, gravity: [0, -10], positions,
+    base,
+    count,
+    half,
+    pitch,
+    friction: 0.6,
+    restitution: 0,
+    density: 1,
+    gravity: [0, -10],
+    positions,
     groundHalf: [(base * pitch) / 2 + 10, 0.5],
   };
 }
@@ -91,7 +100,9 @@ export const pyramid: SceneDefinition<PyramidOptions, PyramidHandles> = {
     if (world.dimensions !== 2) throw new RangeError(`pyramid: needs a 2D world, got dimensions ${world.dimensions}`);
     const layout = pyramidLayout(options);
     const material = { friction: layout.friction, restitution: layout.restitution };
-    const ground = slotOf(addBox(world, { position: [0, -layout.groundHalf[1]], halfExtents: layout.groundHalf, static: true, ...material }));
+    const ground = slotOf(
+      addBox(world, { position: [0, -layout.groundHalf[1]], halfExtents: layout.groundHalf, static: true, ...material }),
+    );
     const boxes = new Uint32Array(layout.count);
     const p = layout.positions;
     const half = [layout.half, layout.half];

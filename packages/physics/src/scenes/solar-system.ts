@@ -1,14 +1,21 @@
 import {
-  BaryState, Body, HelioVector, MakeTime, MassProduct, Rotation_EQJ_ECL, type AstroTime, type RotationMatrix,
+  type AstroTime,
+  BaryState,
+  Body,
+  HelioVector,
+  MakeTime,
+  MassProduct,
+  Rotation_EQJ_ECL,
+  type RotationMatrix,
 } from 'astronomy-engine';
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { enableMutualGravity } from '../forces/api.js';
 import { setGravitation } from '../forces/configure.js';
+import { slotOf } from '../handles.js';
 import { INTEGRATOR_NAMES, type IntegratorName } from '../integrators/names.js';
 import { assertFinite, assertInRange, assertKnownKeys, assertPositive, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
-import { slotOf } from '../handles.js';
 
 /**
  * The solar system of the book's closing project (Ramtal and Dobre ch. 16), started from and checked
@@ -48,7 +55,14 @@ export const SOLAR_SYSTEM_EPOCH = '2012-01-01T00:00:00Z';
  * in the second digit; the bench's `solar-system` study measures it again.
  */
 export const SOLAR_SYSTEM_FLOOR: Readonly<Record<SolarSystemPlanet, number>> = Object.freeze({
-  Mercury: 2.9e-3, Venus: 1.5e-4, Earth: 1.8e-4, Mars: 2.5e-4, Jupiter: 2.5e-5, Saturn: 6.7e-6, Uranus: 4.7e-6, Neptune: 2.4e-6,
+  Mercury: 2.9e-3,
+  Venus: 1.5e-4,
+  Earth: 1.8e-4,
+  Mars: 2.5e-4,
+  Jupiter: 2.5e-5,
+  Saturn: 6.7e-6,
+  Uranus: 4.7e-6,
+  Neptune: 2.4e-6,
 });
 
 /** Options of the `solar-system` scene. */
@@ -84,8 +98,15 @@ const MAX_DATE = Date.UTC(2300, 0, 1);
 
 /** The astronomy-engine body behind each name (Earth: the Earth-Moon barycentre). */
 const ENGINE_BODY: Readonly<Record<SolarSystemBody, Body>> = Object.freeze({
-  Sun: Body.Sun, Mercury: Body.Mercury, Venus: Body.Venus, Earth: Body.EMB, Mars: Body.Mars,
-  Jupiter: Body.Jupiter, Saturn: Body.Saturn, Uranus: Body.Uranus, Neptune: Body.Neptune,
+  Sun: Body.Sun,
+  Mercury: Body.Mercury,
+  Venus: Body.Venus,
+  Earth: Body.EMB,
+  Mars: Body.Mars,
+  Jupiter: Body.Jupiter,
+  Saturn: Body.Saturn,
+  Uranus: Body.Uranus,
+  Neptune: Body.Neptune,
 });
 
 /**
@@ -122,7 +143,9 @@ function toScene(x: number, y: number, z: number, out: Float64Array, offset: num
   const ex = x * r[0]![0]! + y * r[1]![0]! + z * r[2]![0]!;
   const ey = x * r[0]![1]! + y * r[1]![1]! + z * r[2]![1]!;
   const ez = x * r[0]![2]! + y * r[1]![2]! + z * r[2]![2]!;
-  out[offset] = ex; out[offset + 1] = ez; out[offset + 2] = -ey;
+  out[offset] = ex;
+  out[offset + 1] = ez;
+  out[offset + 2] = -ey;
 }
 
 function timeOf(epoch: number, days: number): AstroTime {
@@ -145,7 +168,12 @@ export function ephemerisState(body: SolarSystemBody, epoch: number, days: numbe
  * The ephemeris' heliocentric position of `planet` (AU, scene axes) at `days` after `epoch` (ms since
  * 1970 UTC), written into out[0..2]. Source: astronomy-engine's HelioVector. @returns out.
  */
-export function ephemerisHeliocentric(planet: SolarSystemPlanet, epoch: number, days: number, out: Float64Array = new Float64Array(3)): Float64Array {
+export function ephemerisHeliocentric(
+  planet: SolarSystemPlanet,
+  epoch: number,
+  days: number,
+  out: Float64Array = new Float64Array(3),
+): Float64Array {
   const v = HelioVector(ENGINE_BODY[planet], timeOf(epoch, days));
   toScene(v.x, v.y, v.z, out, 0);
   return out;
@@ -158,14 +186,20 @@ const helio = new Float64Array(3);
  * |(r_planet - r_sun)_world - r_ephemeris| / |r_ephemeris|, heliocentric, dimensionless. Written into
  * `out` (one entry per planet, `SOLAR_SYSTEM_PLANETS` order) and returned.
  */
-export function solarSystemErrors(world: PhysicsWorld, handles: SolarSystemHandles, out: Float64Array = new Float64Array(SOLAR_SYSTEM_PLANETS.length)): Float64Array {
+export function solarSystemErrors(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  out: Float64Array = new Float64Array(SOLAR_SYSTEM_PLANETS.length),
+): Float64Array {
   const P = world.components.Position;
   const sun = slotOf(handles.bodies.Sun);
   for (let i = 0; i < SOLAR_SYSTEM_PLANETS.length; i++) {
     const name = SOLAR_SYSTEM_PLANETS[i]!;
     const e = slotOf(handles.bodies[name]);
     ephemerisHeliocentric(name, handles.epoch, world.time, helio);
-    const dx = P.x[e]! - P.x[sun]! - helio[0]!, dy = P.y[e]! - P.y[sun]! - helio[1]!, dz = P.z[e]! - P.z[sun]! - helio[2]!;
+    const dx = P.x[e]! - P.x[sun]! - helio[0]!,
+      dy = P.y[e]! - P.y[sun]! - helio[1]!,
+      dz = P.z[e]! - P.z[sun]! - helio[2]!;
     out[i] = Math.hypot(dx, dy, dz) / Math.hypot(helio[0]!, helio[1]!, helio[2]!);
   }
   return out;
@@ -198,13 +232,17 @@ export const solarSystem: SceneDefinition<SolarSystemOptions, SolarSystemHandles
     assertKnownKeys(where, options, KNOWN);
     if (world.dimensions !== 3) throw new RangeError(`${where}: needs a 3D world, got dimensions ${world.dimensions}`);
     if (options.count !== undefined && options.count !== SOLAR_SYSTEM_BODIES.length) {
-      throw new RangeError(`${where}: count must be ${SOLAR_SYSTEM_BODIES.length} (the Sun and eight planets), got ${describe(options.count)}`);
+      throw new RangeError(
+        `${where}: count must be ${SOLAR_SYSTEM_BODIES.length} (the Sun and eight planets), got ${describe(options.count)}`,
+      );
     }
     if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
     const start = epochOf(where, options.date);
     const epoch = start - world.time * DAY * 1000;
     if (world.capacity - world.entityIndex.aliveCount < SOLAR_SYSTEM_BODIES.length) {
-      throw new RangeError(`${where}: the world has room for ${world.capacity - world.entityIndex.aliveCount} more entities, needs ${SOLAR_SYSTEM_BODIES.length}`);
+      throw new RangeError(
+        `${where}: the world has room for ${world.capacity - world.entityIndex.aliveCount} more entities, needs ${SOLAR_SYSTEM_BODIES.length}`,
+      );
     }
     setGravitation(world, { constant: MassProduct(Body.Sun), softening: 0, method: 'direct' });
     const state = new Float64Array(6);

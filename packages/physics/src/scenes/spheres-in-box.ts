@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody, setBoundary } from '../bodies.js';
-import { jitteredGrid3D } from './jittered-grid.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { jitteredGrid3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
 /** Options of the `spheres-in-box` scene. */
@@ -40,16 +40,27 @@ export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresIn
   assertInteger(where, 'count', count, 1, 2_000_000);
   const seed = options.seed ?? 1;
   assertFinite(where, 'seed', seed);
-  const spacing = 1.5, radius = 0.5;
+  const spacing = 1.5,
+    radius = 0.5;
   const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * radius);
   return {
-    count, positions, radius, mass: 1, restitution: 0.5, friction: 0.1,
-    min: [0, 0, 0], max: [side * spacing, (layers + 1) * spacing, side * spacing], gravity: [0, -10, 0],
+    count,
+    positions,
+    radius,
+    mass: 1,
+    restitution: 0.5,
+    friction: 0.1,
+    min: [0, 0, 0],
+    max: [side * spacing, (layers + 1) * spacing, side * spacing],
+    gravity: [0, -10, 0],
   };
 }
 
 /** Handles of `spheres-in-box`. */
-export interface SpheresInBoxHandles { spheres: Uint32Array; layout: SpheresInBoxLayout }
+export interface SpheresInBoxHandles {
+  spheres: Uint32Array;
+  layout: SpheresInBoxLayout;
+}
 
 /** `spheres-in-box`: the 3D benchmark scene compared against rapier3d. */
 export const spheresInBox: SceneDefinition<SpheresInBoxOptions, SpheresInBoxHandles> = {
@@ -65,10 +76,19 @@ export const spheresInBox: SceneDefinition<SpheresInBoxOptions, SpheresInBoxHand
     const layout = spheresInBoxLayout(options);
     setBoundary(world, { min: layout.min, max: layout.max, restitution: layout.restitution, friction: layout.friction });
     const spheres = new Uint32Array(layout.count);
-    const p = layout.positions, pos = [0, 0, 0];
+    const p = layout.positions,
+      pos = [0, 0, 0];
     for (let i = 0; i < layout.count; i++) {
-      pos[0] = p[3 * i]!; pos[1] = p[3 * i + 1]!; pos[2] = p[3 * i + 2]!;
-      spheres[i] = addBody(world, { position: pos, radius: layout.radius, mass: layout.mass, restitution: layout.restitution, friction: layout.friction });
+      pos[0] = p[3 * i]!;
+      pos[1] = p[3 * i + 1]!;
+      pos[2] = p[3 * i + 2]!;
+      spheres[i] = addBody(world, {
+        position: pos,
+        radius: layout.radius,
+        mass: layout.mass,
+        restitution: layout.restitution,
+        friction: layout.friction,
+      });
     }
     return { spheres, layout };
   },

@@ -1,4 +1,3 @@
-import type { PhysicsWorld } from '../world.js';
 import { addBody } from '../bodies.js';
 import { addFluidRegion, setBuoyancy } from '../forces/api.js';
 import { setBallast } from '../forces/ballast.js';
@@ -6,6 +5,7 @@ import { setBodyThrust } from '../forces/body-thrust.js';
 import { inertiaOfRectangle, setAngularDamping, setInertia } from '../rigid.js';
 import { Rng } from '../rng.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -18,7 +18,8 @@ import type { SceneDefinition } from './types.js';
  */
 export const SUBMARINE = Object.freeze({
   /** Hull length and height, m. */
-  length: 12, height: 3,
+  length: 12,
+  height: 3,
   /** Hull beam (width across), m: the 2D water density is the sea's times this. */
   beam: 3,
   /** Sea water, kg/m^3. */
@@ -81,7 +82,8 @@ export function seabedHeight(seabed: SubmarineHandles['seabed'], x: number): num
   const n = seabed.y.length;
   if (t <= 0) return seabed.y[0]!;
   if (t >= n - 1) return seabed.y[n - 1]!;
-  const i = Math.floor(t), f = t - i;
+  const i = Math.floor(t),
+    f = t - i;
   return seabed.y[i]! * (1 - f) + seabed.y[i + 1]! * f;
 }
 
@@ -112,7 +114,8 @@ export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
     // Floating draft d from rho L d = m (a box), capped at the hull's height.
     const draft = Math.min(S.height, mass / (SUBMARINE_WATER_DENSITY * S.length));
     const position = options.position ?? [0, S.height / 2 - draft];
-    if (!Array.isArray(position) || position.length !== 2) throw new TypeError(`${where}: position must be [x, y], got ${String(position)}`);
+    if (!Array.isArray(position) || position.length !== 2)
+      throw new TypeError(`${where}: position must be [x, y], got ${String(position)}`);
     assertFinite(where, 'position[0]', position[0]);
     assertFinite(where, 'position[1]', position[1]);
     if (world.capacity - world.entityIndex.aliveCount < 2) throw new RangeError(`${where}: the world needs room for 2 more entities`);
@@ -122,13 +125,20 @@ export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
     setInertia(world, hull, inertiaOfRectangle(mass, S.length, S.height));
     setBuoyancy(world, hull, { shape: 'box', halfExtents: [S.length / 2, S.height / 2], dragCoefficient: S.dragCoefficient });
     setBallast(world, hull, {
-      dryMass: S.dryMass, capacity: S.tankCapacity, fill, rate: S.fillRate, arm: S.tankArm, metacentricHeight: S.metacentricHeight,
+      dryMass: S.dryMass,
+      capacity: S.tankCapacity,
+      fill,
+      rate: S.fillRate,
+      arm: S.tankArm,
+      metacentricHeight: S.metacentricHeight,
     });
     setBodyThrust(world, hull, [0, 0]);
     setAngularDamping(world, hull, S.angularDamping);
 
     const rng = new Rng(seed);
-    const x0 = -100, dx = 5, n = 241;
+    const x0 = -100,
+      dx = 5,
+      n = 241;
     const y = new Float64Array(n);
     // Seabed: a mean depth of 90 m with three seeded sine ridges and a little roughness, in [-150, -40].
     const waves = [0, 1, 2].map((k) => ({ a: rng.range(8, 22) / (k + 1), l: rng.range(120, 320) / (k + 1), p: rng.range(0, 2 * Math.PI) }));

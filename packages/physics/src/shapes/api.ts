@@ -1,13 +1,22 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
+import { addBody, type BodyOptions, createSlot } from '../bodies.js';
+import { ensureShapeState } from '../collision/manifolds.js';
+import { slotOf } from '../handles.js';
+import {
+  assertFinite,
+  assertInRange,
+  assertInteger,
+  assertKnownKeys,
+  assertNonNegative,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { addComponentIfMissing } from '../world.js';
-import { addBody, createSlot, type BodyOptions } from '../bodies.js';
-import { slotOf } from '../handles.js';
-import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
-import { makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry, type ConvexGeometry } from './geometry.js';
+import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from './geometry.js';
 import { shapeMassProperties } from './mass.js';
 import { ensureShapeStore, SHAPE_STRIDE } from './store.js';
-import { ensureShapeState } from '../collision/manifolds.js';
 
 /**
  * Shapes of 2D bodies: adding them, their filter, and the body's mass from them.
@@ -57,12 +66,34 @@ export interface ShapeOptions {
 }
 
 const SHAPE_OPTIONS = [
-  'type', 'radius', 'halfExtents', 'vertices', 'center1', 'center2', 'offset', 'angle', 'density', 'friction', 'staticFriction',
-  'restitution', 'rollingResistance', 'sensor', 'category', 'mask', 'group',
+  'type',
+  'radius',
+  'halfExtents',
+  'vertices',
+  'center1',
+  'center2',
+  'offset',
+  'angle',
+  'density',
+  'friction',
+  'staticFriction',
+  'restitution',
+  'rollingResistance',
+  'sensor',
+  'category',
+  'mask',
+  'group',
 ] as const;
 
 function assertShapeBody(where: string, world: PhysicsWorld, body: number): void {
-  if (typeof body !== 'number' || !Number.isInteger(body) || body < 1 || body > world.capacity || !entityExists(world, body) || !hasComponent(world, body, world.components.Position)) {
+  if (
+    typeof body !== 'number' ||
+    !Number.isInteger(body) ||
+    body < 1 ||
+    body > world.capacity ||
+    !entityExists(world, body) ||
+    !hasComponent(world, body, world.components.Position)
+  ) {
     throw new RangeError(`${where}: body must be a body of this world, got ${describe(body)}`);
   }
 }
@@ -84,7 +115,8 @@ function geometryOf(where: string, o: ShapeOptions): ConvexGeometry {
     }
     case 'polygon':
       forbid(['halfExtents', 'center1', 'center2']);
-      if (!Array.isArray(o.vertices)) throw new TypeError(`${where}: vertices must be an array of 3 to 8 points [x, y], got ${describe(o.vertices)}`);
+      if (!Array.isArray(o.vertices))
+        throw new TypeError(`${where}: vertices must be an array of 3 to 8 points [x, y], got ${describe(o.vertices)}`);
       return makePolygon(where, o.vertices, o.radius ?? 0);
     case 'capsule':
       forbid(['halfExtents', 'vertices']);
@@ -93,7 +125,9 @@ function geometryOf(where: string, o: ShapeOptions): ConvexGeometry {
       assertPositive(where, 'radius', o.radius);
       return makeCapsule(where, o.center1[0]!, o.center1[1]!, o.center2[0]!, o.center2[1]!, o.radius);
     default:
-      throw new RangeError(`${where}: type must be one of 'circle', 'box', 'polygon', 'capsule', got ${describe((o as { type: unknown }).type)}`);
+      throw new RangeError(
+        `${where}: type must be one of 'circle', 'box', 'polygon', 'capsule', got ${describe((o as { type: unknown }).type)}`,
+      );
   }
 }
 
@@ -122,9 +156,18 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, SHAPE_OPTIONS);
   const g = geometryOf(where, options);
-  let ox = 0, oy = 0, angle = 0;
-  if (options.offset !== undefined) { assertVector(where, 'offset', options.offset, 2); ox = options.offset[0]!; oy = options.offset[1]!; }
-  if (options.angle !== undefined) { assertFinite(where, 'angle', options.angle); angle = options.angle; }
+  let ox = 0,
+    oy = 0,
+    angle = 0;
+  if (options.offset !== undefined) {
+    assertVector(where, 'offset', options.offset, 2);
+    ox = options.offset[0]!;
+    oy = options.offset[1]!;
+  }
+  if (options.angle !== undefined) {
+    assertFinite(where, 'angle', options.angle);
+    angle = options.angle;
+  }
   const density = options.density ?? 1;
   assertNonNegative(where, 'density', density);
   if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
@@ -132,8 +175,11 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
   if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
   const rolling = options.rollingResistance ?? 0;
   assertNonNegative(where, 'rollingResistance', rolling);
-  if (options.sensor !== undefined && typeof options.sensor !== 'boolean') throw new TypeError(`${where}: sensor must be a boolean, got ${describe(options.sensor)}`);
-  const category = options.category ?? 1, mask = options.mask ?? 0xffffffff, group = options.group ?? 0;
+  if (options.sensor !== undefined && typeof options.sensor !== 'boolean')
+    throw new TypeError(`${where}: sensor must be a boolean, got ${describe(options.sensor)}`);
+  const category = options.category ?? 1,
+    mask = options.mask ?? 0xffffffff,
+    group = options.group ?? 0;
   assertInteger(where, 'category', category, 0, 0xffffffff);
   assertInteger(where, 'mask', mask, 0, 0xffffffff);
   assertInteger(where, 'group', group, -0x80000000, 0x7fffffff);
@@ -147,31 +193,50 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
     ensureShapeState(st, world.capacity);
     world.removeHooks.push(removeShapesOf);
   }
-  if (!hasComponent(world, body, c.Shape) && !hasShapes(world, body)) { st.originX[body] = 0; st.originY[body] = 0; }
+  if (!hasComponent(world, body, c.Shape) && !hasShapes(world, body)) {
+    st.originX[body] = 0;
+    st.originY[body] = 0;
+  }
   st.active = true;
 
   // Into the body frame about the centre of mass: placement, then the body's reference point.
   transformGeometry(g, ox + st.originX[body]!, oy + st.originY[body]!, angle);
   const S = c.Shape;
   addComponent(world, e, c.Shape);
-  S.body[e] = body; S.kind[e] = g.kind; S.count[e] = g.count; S.radius[e] = g.radius;
+  S.body[e] = body;
+  S.kind[e] = g.kind;
+  S.count[e] = g.count;
+  S.radius[e] = g.radius;
   const o = SHAPE_STRIDE * e;
   for (let i = 0; i < SHAPE_STRIDE; i++) {
-    S.vx[o + i] = i < g.count ? g.vx[i]! : 0; S.vy[o + i] = i < g.count ? g.vy[i]! : 0;
-    S.nx[o + i] = i < g.count ? g.nx[i]! : 0; S.ny[o + i] = i < g.count ? g.ny[i]! : 0;
+    S.vx[o + i] = i < g.count ? g.vx[i]! : 0;
+    S.vy[o + i] = i < g.count ? g.vy[i]! : 0;
+    S.nx[o + i] = i < g.count ? g.nx[i]! : 0;
+    S.ny[o + i] = i < g.count ? g.ny[i]! : 0;
   }
-  S.category[e] = category; S.mask[e] = mask; S.group[e] = group; S.sensor[e] = options.sensor === true ? 1 : 0;
-  S.density[e] = density; S.rollingResistance[e] = rolling; S.next[e] = 0;
+  S.category[e] = category;
+  S.mask[e] = mask;
+  S.group[e] = group;
+  S.sensor[e] = options.sensor === true ? 1 : 0;
+  S.density[e] = density;
+  S.rollingResistance[e] = rolling;
+  S.next[e] = 0;
   addComponentIfMissing(world, e, c.Material);
   const M = c.Material;
   if (options.restitution !== undefined) M.restitution[e] = options.restitution;
-  if (options.friction !== undefined) { M.friction[e] = options.friction; M.staticFriction[e] = options.friction; }
+  if (options.friction !== undefined) {
+    M.friction[e] = options.friction;
+    M.staticFriction[e] = options.friction;
+  }
   if (options.staticFriction !== undefined) M.staticFriction[e] = options.staticFriction;
   if (!onBody) {
     // Append to the body's list of extra shapes.
     let last = st.firstShape[body]!;
     if (last === 0) st.firstShape[body] = e;
-    else { while (S.next[last]! !== 0) last = S.next[last]!; S.next[last] = e; }
+    else {
+      while (S.next[last]! !== 0) last = S.next[last]!;
+      S.next[last] = e;
+    }
   }
   if (!hasComponent(world, body, c.Static) && !hasComponent(world, body, c.Kinematic)) updateMassFromShapes(world, body);
   else {
@@ -194,55 +259,93 @@ function hasShapes(world: PhysicsWorld, body: number): boolean {
  * total mass leave mass and inertia as they were. Called by `addShape`.
  */
 export function updateMassFromShapes(world: PhysicsWorld, body: number): void {
-  const c = world.components, S = c.Shape, st = world.collision.shapes;
+  const c = world.components,
+    S = c.Shape,
+    st = world.collision.shapes;
   const g = scratchGeometry;
-  let m = 0, sx = 0, sy = 0, J = 0;
+  let m = 0,
+    sx = 0,
+    sy = 0,
+    J = 0;
   forEachShape(world, body, (e) => {
     readGeometry(S, e, g);
     const p = shapeMassProperties(g, S.density[e]!);
-    m += p.mass; sx += p.mass * p.cx; sy += p.mass * p.cy;
+    m += p.mass;
+    sx += p.mass * p.cx;
+    sy += p.mass * p.cy;
     J += p.inertia + p.mass * (p.cx * p.cx + p.cy * p.cy);
   });
   if (!(m > 0)) return;
-  const cx = sx / m, cy = sy / m;
+  const cx = sx / m,
+    cy = sy / m;
   const I = J - m * (cx * cx + cy * cy);
   // Shift the shapes so the body frame's origin is the centre of mass.
   if (cx !== 0 || cy !== 0) {
     forEachShape(world, body, (e) => {
       const o = SHAPE_STRIDE * e;
-      for (let i = 0; i < S.count[e]!; i++) { S.vx[o + i] = S.vx[o + i]! - cx; S.vy[o + i] = S.vy[o + i]! - cy; }
+      for (let i = 0; i < S.count[e]!; i++) {
+        S.vx[o + i] = S.vx[o + i]! - cx;
+        S.vy[o + i] = S.vy[o + i]! - cy;
+      }
     });
-    st.originX[body] = st.originX[body]! - cx; st.originY[body] = st.originY[body]! - cy;
+    st.originX[body] = st.originX[body]! - cx;
+    st.originY[body] = st.originY[body]! - cy;
     const a = hasComponent(world, body, c.Angle) ? c.Angle.value[body]! : 0;
-    const ca = Math.cos(a), sa = Math.sin(a);
-    const dx = ca * cx - sa * cy, dy = sa * cx + ca * cy;
-    c.Position.x[body] = c.Position.x[body]! + dx; c.Position.y[body] = c.Position.y[body]! + dy;
-    c.PreviousPosition.x[body] = c.PreviousPosition.x[body]! + dx; c.PreviousPosition.y[body] = c.PreviousPosition.y[body]! + dy;
+    const ca = Math.cos(a),
+      sa = Math.sin(a);
+    const dx = ca * cx - sa * cy,
+      dy = sa * cx + ca * cy;
+    c.Position.x[body] = c.Position.x[body]! + dx;
+    c.Position.y[body] = c.Position.y[body]! + dy;
+    c.PreviousPosition.x[body] = c.PreviousPosition.x[body]! + dx;
+    c.PreviousPosition.y[body] = c.PreviousPosition.y[body]! + dy;
     if (hasComponent(world, body, c.AngularVelocity)) {
       const w = c.AngularVelocity.z[body]!;
-      c.Velocity.x[body] = c.Velocity.x[body]! - w * dy; c.Velocity.y[body] = c.Velocity.y[body]! + w * dx;
+      c.Velocity.x[body] = c.Velocity.x[body]! - w * dy;
+      c.Velocity.y[body] = c.Velocity.y[body]! + w * dx;
     }
   }
-  c.Mass.value[body] = m; c.Mass.inv[body] = 1 / m;
+  c.Mass.value[body] = m;
+  c.Mass.inv[body] = 1 / m;
   addComponentIfMissing(world, body, c.AngularVelocity);
   addComponentIfMissing(world, body, c.Torque);
   addComponentIfMissing(world, body, c.Angle);
   addComponentIfMissing(world, body, c.Inertia);
-  if (I > 0) { c.Inertia.value[body] = I; c.Inertia.inv[body] = 1 / I; }
+  if (I > 0) {
+    c.Inertia.value[body] = I;
+    c.Inertia.inv[body] = 1 / I;
+  }
 }
 
-const scratchGeometry: ConvexGeometry = { kind: 0, count: 0, radius: 0, vx: new Float64Array(8), vy: new Float64Array(8), nx: new Float64Array(8), ny: new Float64Array(8) };
+const scratchGeometry: ConvexGeometry = {
+  kind: 0,
+  count: 0,
+  radius: 0,
+  vx: new Float64Array(8),
+  vy: new Float64Array(8),
+  nx: new Float64Array(8),
+  ny: new Float64Array(8),
+};
 
 /** Copies shape entity `e`'s stored geometry (body frame) into `g`. */
 export function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, g: ConvexGeometry): void {
-  const n = S.count[e]!, o = SHAPE_STRIDE * e;
-  g.kind = S.kind[e]!; g.count = n; g.radius = S.radius[e]!;
-  for (let i = 0; i < n; i++) { g.vx[i] = S.vx[o + i]!; g.vy[i] = S.vy[o + i]!; g.nx[i] = S.nx[o + i]!; g.ny[i] = S.ny[o + i]!; }
+  const n = S.count[e]!,
+    o = SHAPE_STRIDE * e;
+  g.kind = S.kind[e]!;
+  g.count = n;
+  g.radius = S.radius[e]!;
+  for (let i = 0; i < n; i++) {
+    g.vx[i] = S.vx[o + i]!;
+    g.vy[i] = S.vy[o + i]!;
+    g.nx[i] = S.nx[o + i]!;
+    g.ny[i] = S.ny[o + i]!;
+  }
 }
 
 /** Calls `fn` with every shape entity of `body` (its own shape first, then the extra ones). */
 export function forEachShape(world: PhysicsWorld, body: number, fn: (shape: number) => void): void {
-  const c = world.components, st = world.collision.shapes;
+  const c = world.components,
+    st = world.collision.shapes;
   if (hasComponent(world, body, c.Shape)) fn(body);
   if (st.firstShape.length === 0) return;
   for (let e = st.firstShape[body]!; e !== 0; e = c.Shape.next[e]!) fn(e);
@@ -278,7 +381,14 @@ function removeShapesOf(world: PhysicsWorld, eid: number): void {
  */
 export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { category?: number; mask?: number; group?: number }): void {
   const where = 'setShapeFilter';
-  if (typeof shape !== 'number' || !Number.isInteger(shape) || shape < 1 || shape > world.capacity || !entityExists(world, shape) || !hasComponent(world, shape, world.components.Shape)) {
+  if (
+    typeof shape !== 'number' ||
+    !Number.isInteger(shape) ||
+    shape < 1 ||
+    shape > world.capacity ||
+    !entityExists(world, shape) ||
+    !hasComponent(world, shape, world.components.Shape)
+  ) {
     throw new RangeError(`${where}: shape must be a shape of this world, got ${describe(shape)}`);
   }
   assertKnownKeys(where, filter, ['category', 'mask', 'group']);

@@ -43,7 +43,15 @@ export interface ConvexGeometry {
 /** An empty geometry with room for 8 vertices (reused scratch; no allocation per use). */
 export function createGeometry(): ConvexGeometry {
   const n = MAX_POLYGON_VERTICES;
-  return { kind: 0, count: 0, radius: 0, vx: new Float64Array(n), vy: new Float64Array(n), nx: new Float64Array(n), ny: new Float64Array(n) };
+  return {
+    kind: 0,
+    count: 0,
+    radius: 0,
+    vx: new Float64Array(n),
+    vy: new Float64Array(n),
+    nx: new Float64Array(n),
+    ny: new Float64Array(n),
+  };
 }
 
 /**
@@ -52,12 +60,18 @@ export function createGeometry(): ConvexGeometry {
  */
 export function computeNormals(g: ConvexGeometry): void {
   const n = g.count;
-  if (n < 2) { g.nx[0] = 0; g.ny[0] = 1; return; }
+  if (n < 2) {
+    g.nx[0] = 0;
+    g.ny[0] = 1;
+    return;
+  }
   for (let i = 0; i < n; i++) {
     const j = i + 1 < n ? i + 1 : 0;
-    const ex = g.vx[j]! - g.vx[i]!, ey = g.vy[j]! - g.vy[i]!;
+    const ex = g.vx[j]! - g.vx[i]!,
+      ey = g.vy[j]! - g.vy[i]!;
     const len = Math.sqrt(ex * ex + ey * ey);
-    g.nx[i] = ey / len; g.ny[i] = -ex / len;
+    g.nx[i] = ey / len;
+    g.ny[i] = -ex / len;
   }
 }
 
@@ -65,8 +79,13 @@ export function computeNormals(g: ConvexGeometry): void {
 export function makeCircle(where: string, radius: number, cx = 0, cy = 0): ConvexGeometry {
   if (!(radius > 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be > 0, got ${describe(radius)}`);
   const g = createGeometry();
-  g.kind = ShapeKind.Circle; g.count = 1; g.radius = radius;
-  g.vx[0] = cx; g.vy[0] = cy; g.nx[0] = 0; g.ny[0] = 1;
+  g.kind = ShapeKind.Circle;
+  g.count = 1;
+  g.radius = radius;
+  g.vx[0] = cx;
+  g.vy[0] = cy;
+  g.nx[0] = 0;
+  g.ny[0] = 1;
   return g;
 }
 
@@ -78,11 +97,18 @@ export function makeCapsule(where: string, x1: number, y1: number, x2: number, y
   if (!(radius > 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be > 0, got ${describe(radius)}`);
   const len = Math.hypot(x2 - x1, y2 - y1);
   if (!(len > 1e-9 * Math.max(1, radius))) {
-    throw new RangeError(`${where}: center1 and center2 must differ (a capsule needs a segment; use a circle), got ${describe([x1, y1])} and ${describe([x2, y2])}`);
+    throw new RangeError(
+      `${where}: center1 and center2 must differ (a capsule needs a segment; use a circle), got ${describe([x1, y1])} and ${describe([x2, y2])}`,
+    );
   }
   const g = createGeometry();
-  g.kind = ShapeKind.Capsule; g.count = 2; g.radius = radius;
-  g.vx[0] = x1; g.vy[0] = y1; g.vx[1] = x2; g.vy[1] = y2;
+  g.kind = ShapeKind.Capsule;
+  g.count = 2;
+  g.radius = radius;
+  g.vx[0] = x1;
+  g.vy[0] = y1;
+  g.vx[1] = x2;
+  g.vy[1] = y2;
   computeNormals(g);
   return g;
 }
@@ -97,9 +123,13 @@ export function makeBox(where: string, hx: number, hy: number, cx = 0, cy = 0, a
   if (!(hy > 0) || !Number.isFinite(hy)) throw new RangeError(`${where}: halfExtents[1] must be > 0, got ${describe(hy)}`);
   if (!(radius >= 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be >= 0, got ${describe(radius)}`);
   const g = createGeometry();
-  g.kind = ShapeKind.Polygon; g.count = 4; g.radius = radius;
-  const c = Math.cos(angle), s = Math.sin(angle);
-  const lx = [-hx, hx, hx, -hx], ly = [-hy, -hy, hy, hy];
+  g.kind = ShapeKind.Polygon;
+  g.count = 4;
+  g.radius = radius;
+  const c = Math.cos(angle),
+    s = Math.sin(angle);
+  const lx = [-hx, hx, hx, -hx],
+    ly = [-hy, -hy, hy, hy];
   for (let i = 0; i < 4; i++) {
     g.vx[i] = cx + c * lx[i]! - s * ly[i]!;
     g.vy[i] = cy + s * lx[i]! + c * ly[i]!;
@@ -122,14 +152,16 @@ export function makePolygon(where: string, points: ArrayLike<ArrayLike<number>>,
     throw new RangeError(`${where}: vertices must hold 3 to ${MAX_POLYGON_VERTICES} points, got ${n}`);
   }
   if (!(radius >= 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be >= 0, got ${describe(radius)}`);
-  const xs: number[] = [], ys: number[] = [];
+  const xs: number[] = [],
+    ys: number[] = [];
   let size = 0;
   for (let i = 0; i < n; i++) {
     const p = points[i]!;
-    if (!p || p.length !== 2 || !Number.isFinite(p[0]) || !Number.isFinite(p[1])) {
+    if (p?.length !== 2 || !Number.isFinite(p[0]) || !Number.isFinite(p[1])) {
       throw new RangeError(`${where}: vertices[${i}] must be a point [x, y] of finite numbers, got ${describe(p)}`);
     }
-    xs.push(p[0]!); ys.push(p[1]!);
+    xs.push(p[0]!);
+    ys.push(p[1]!);
     size = Math.max(size, Math.abs(p[0]!), Math.abs(p[1]!));
   }
   // Shoelace formula: twice the signed area; its sign is the winding.
@@ -138,7 +170,11 @@ export function makePolygon(where: string, points: ArrayLike<ArrayLike<number>>,
     const j = (i + 1) % n;
     area2 += xs[i]! * ys[j]! - xs[j]! * ys[i]!;
   }
-  if (area2 < 0) { xs.reverse(); ys.reverse(); area2 = -area2; }
+  if (area2 < 0) {
+    xs.reverse();
+    ys.reverse();
+    area2 = -area2;
+  }
   const tol = 1e-6 * Math.max(1, size);
   if (!(area2 > tol * tol)) throw new RangeError(`${where}: vertices must enclose a non-zero area, got ${describe(points)}`);
   for (let i = 0; i < n; i++) {
@@ -148,29 +184,44 @@ export function makePolygon(where: string, points: ArrayLike<ArrayLike<number>>,
     }
   }
   for (let i = 0; i < n; i++) {
-    const j = (i + 1) % n, k = (i + 2) % n;
-    const ex = xs[j]! - xs[i]!, ey = ys[j]! - ys[i]!;
-    const fx = xs[k]! - xs[j]!, fy = ys[k]! - ys[j]!;
+    const j = (i + 1) % n,
+      k = (i + 2) % n;
+    const ex = xs[j]! - xs[i]!,
+      ey = ys[j]! - ys[i]!;
+    const fx = xs[k]! - xs[j]!,
+      fy = ys[k]! - ys[j]!;
     const cross = ex * fy - ey * fx;
     if (!(cross > tol * Math.hypot(ex, ey))) {
       const what = Math.abs(cross) <= tol * Math.hypot(ex, ey) ? 'has three collinear vertices' : 'is not convex';
-      throw new RangeError(`${where}: vertices must form a convex polygon, got one that ${what} at ${describe([xs[j], ys[j]])} (in ${describe(points)})`);
+      throw new RangeError(
+        `${where}: vertices must form a convex polygon, got one that ${what} at ${describe([xs[j], ys[j]])} (in ${describe(points)})`,
+      );
     }
   }
   const g = createGeometry();
-  g.kind = ShapeKind.Polygon; g.count = n; g.radius = radius;
-  for (let i = 0; i < n; i++) { g.vx[i] = xs[i]!; g.vy[i] = ys[i]!; }
+  g.kind = ShapeKind.Polygon;
+  g.count = n;
+  g.radius = radius;
+  for (let i = 0; i < n; i++) {
+    g.vx[i] = xs[i]!;
+    g.vy[i] = ys[i]!;
+  }
   computeNormals(g);
   return g;
 }
 
 /** Turns `g` by `angle` rad about the origin, then moves it by (dx, dy), in place (vertices and normals). */
 export function transformGeometry(g: ConvexGeometry, dx: number, dy: number, angle: number): void {
-  const c = Math.cos(angle), s = Math.sin(angle);
+  const c = Math.cos(angle),
+    s = Math.sin(angle);
   for (let i = 0; i < g.count; i++) {
-    const x = g.vx[i]!, y = g.vy[i]!;
-    g.vx[i] = dx + c * x - s * y; g.vy[i] = dy + s * x + c * y;
-    const nx = g.nx[i]!, ny = g.ny[i]!;
-    g.nx[i] = c * nx - s * ny; g.ny[i] = s * nx + c * ny;
+    const x = g.vx[i]!,
+      y = g.vy[i]!;
+    g.vx[i] = dx + c * x - s * y;
+    g.vy[i] = dy + s * x + c * y;
+    const nx = g.nx[i]!,
+      ny = g.ny[i]!;
+    g.nx[i] = c * nx - s * ny;
+    g.ny[i] = s * nx + c * ny;
   }
 }

@@ -41,18 +41,29 @@ export interface MassProperties {
  * gives zero mass and inertia with the centroid of the area). Formulas in the module comment.
  */
 export function shapeMassProperties(g: ConvexGeometry, density: number): MassProperties {
-  const n = g.count, r = g.radius;
-  const vx = g.vx, vy = g.vy, nx = g.nx, ny = g.ny;
+  const n = g.count,
+    r = g.radius;
+  const vx = g.vx,
+    vy = g.vy,
+    nx = g.nx,
+    ny = g.ny;
   // Accumulate area A, first moment (Sx, Sy) and polar second moment J about the origin, per unit density.
-  let A = 0, Sx = 0, Sy = 0, J = 0;
+  let A = 0,
+    Sx = 0,
+    Sy = 0,
+    J = 0;
   if (n >= 3) {
     for (let i = 0; i < n; i++) {
       const j = i + 1 < n ? i + 1 : 0;
-      const x1 = vx[i]!, y1 = vy[i]!, x2 = vx[j]!, y2 = vy[j]!;
+      const x1 = vx[i]!,
+        y1 = vy[i]!,
+        x2 = vx[j]!,
+        y2 = vy[j]!;
       const a = 0.5 * (x1 * y2 - x2 * y1);
       A += a;
-      Sx += a * (x1 + x2) / 3; Sy += a * (y1 + y2) / 3;
-      J += a * (x1 * x1 + y1 * y1 + x1 * x2 + y1 * y2 + x2 * x2 + y2 * y2) / 6;
+      Sx += (a * (x1 + x2)) / 3;
+      Sy += (a * (y1 + y2)) / 3;
+      J += (a * (x1 * x1 + y1 * y1 + x1 * x2 + y1 * y2 + x2 * x2 + y2 * y2)) / 6;
     }
   }
   if (r > 0) {
@@ -60,18 +71,26 @@ export function shapeMassProperties(g: ConvexGeometry, density: number): MassPro
       for (let i = 0; i < n; i++) {
         const j = i + 1 < n ? i + 1 : 0;
         // Edge rectangle.
-        const ex = vx[j]! - vx[i]!, ey = vy[j]! - vy[i]!;
+        const ex = vx[j]! - vx[i]!,
+          ey = vy[j]! - vy[i]!;
         const L = Math.sqrt(ex * ex + ey * ey);
         const a = L * r;
-        const cx = 0.5 * (vx[i]! + vx[j]!) + 0.5 * r * nx[i]!, cy = 0.5 * (vy[i]! + vy[j]!) + 0.5 * r * ny[i]!;
-        A += a; Sx += a * cx; Sy += a * cy;
-        J += a * (L * L + r * r) / 12 + a * (cx * cx + cy * cy);
+        const cx = 0.5 * (vx[i]! + vx[j]!) + 0.5 * r * nx[i]!,
+          cy = 0.5 * (vy[i]! + vy[j]!) + 0.5 * r * ny[i]!;
+        A += a;
+        Sx += a * cx;
+        Sy += a * cy;
+        J += (a * (L * L + r * r)) / 12 + a * (cx * cx + cy * cy);
         // Sector at vertex j, between the normals of edges i and j.
-        const n1x = nx[i]!, n1y = ny[i]!, n2x = nx[j]!, n2y = ny[j]!;
+        const n1x = nx[i]!,
+          n1y = ny[i]!,
+          n2x = nx[j]!,
+          n2y = ny[j]!;
         const theta = Math.atan2(n1x * n2y - n1y * n2x, n1x * n2x + n1y * n2y);
         const t = theta > 0 ? theta : theta + 2 * Math.PI; // a capsule's end turns by pi
         // The sector's bisector: n_i turned counter-clockwise by half the turn.
-        const hc = Math.cos(0.5 * t), hs = Math.sin(0.5 * t);
+        const hc = Math.cos(0.5 * t),
+          hs = Math.sin(0.5 * t);
         addSector(vx[j]!, vy[j]!, hc * n1x - hs * n1y, hs * n1x + hc * n1y, t, r);
       }
     } else {
@@ -79,7 +98,8 @@ export function shapeMassProperties(g: ConvexGeometry, density: number): MassPro
     }
   }
   const mass = density * A;
-  const cx = A > 0 ? Sx / A : vx[0]!, cy = A > 0 ? Sy / A : vy[0]!;
+  const cx = A > 0 ? Sx / A : vx[0]!,
+    cy = A > 0 ? Sy / A : vy[0]!;
   const inertia = density * (J - A * (cx * cx + cy * cy));
   return { mass, cx, cy, inertia: inertia > 0 ? inertia : 0, area: A };
 
@@ -87,9 +107,12 @@ export function shapeMassProperties(g: ConvexGeometry, density: number): MassPro
     // (bx, by): unit bisector of the sector.
     const a = 0.5 * theta * rad * rad;
     const d = (4 * rad * Math.sin(0.5 * theta)) / (3 * theta);
-    const cx = px + d * bx, cy = py + d * by;
-    A += a; Sx += a * cx; Sy += a * cy;
+    const cx = px + d * bx,
+      cy = py + d * by;
+    A += a;
+    Sx += a * cx;
+    Sy += a * cy;
     // About the vertex: a r^2 / 2; moved to the origin through the centroid (Steiner twice).
-    J += a * rad * rad / 2 - a * d * d + a * (cx * cx + cy * cy);
+    J += (a * rad * rad) / 2 - a * d * d + a * (cx * cx + cy * cy);
   }
 }

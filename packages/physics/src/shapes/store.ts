@@ -46,10 +46,21 @@ export const SHAPE_STRIDE = 8;
 export function createEmptyShapeStore(): ShapeStore {
   const z = (): Float64Array => new Float64Array(0);
   return {
-    body: new Int32Array(0), kind: new Uint8Array(0), count: new Uint8Array(0), radius: z(),
-    vx: z(), vy: z(), nx: z(), ny: z(),
-    category: new Uint32Array(0), mask: new Uint32Array(0), group: new Int32Array(0), sensor: new Uint8Array(0),
-    density: z(), rollingResistance: z(), next: new Int32Array(0),
+    body: new Int32Array(0),
+    kind: new Uint8Array(0),
+    count: new Uint8Array(0),
+    radius: z(),
+    vx: z(),
+    vy: z(),
+    nx: z(),
+    ny: z(),
+    category: new Uint32Array(0),
+    mask: new Uint32Array(0),
+    group: new Int32Array(0),
+    sensor: new Uint8Array(0),
+    density: z(),
+    rollingResistance: z(),
+    next: new Int32Array(0),
   };
 }
 
@@ -57,9 +68,19 @@ export function createEmptyShapeStore(): ShapeStore {
 export function ensureShapeStore(store: ShapeStore, capacity: number): void {
   if (store.body.length > 0) return;
   const n = capacity + 1;
-  store.body = new Int32Array(n); store.kind = new Uint8Array(n); store.count = new Uint8Array(n); store.radius = new Float64Array(n);
-  store.vx = new Float64Array(SHAPE_STRIDE * n); store.vy = new Float64Array(SHAPE_STRIDE * n);
-  store.nx = new Float64Array(SHAPE_STRIDE * n); store.ny = new Float64Array(SHAPE_STRIDE * n);
-  store.category = new Uint32Array(n); store.mask = new Uint32Array(n); store.group = new Int32Array(n); store.sensor = new Uint8Array(n);
-  store.density = new Float64Array(n); store.rollingResistance = new Float64Array(n); store.next = new Int32Array(n);
+  store.body = new Int32Array(n);
+  store.kind = new Uint8Array(n);
+  store.count = new Uint8Array(n);
+  store.radius = new Float64Array(n);
+  store.vx = new Float64Array(SHAPE_STRIDE * n);
+  store.vy = new Float64Array(SHAPE_STRIDE * n);
+  store.nx = new Float64Array(SHAPE_STRIDE * n);
+  store.ny = new Float64Array(SHAPE_STRIDE * n);
+  store.category = new Uint32Array(n);
+  store.mask = new Uint32Array(n);
+  store.group = new Int32Array(n);
+  store.sensor = new Uint8Array(n);
+  store.density = new Float64Array(n);
+  store.rollingResistance = new Float64Array(n);
+  store.next = new Int32Array(n);
 }

@@ -29,7 +29,9 @@ export interface MassProperties3D {
 
 function diagonal(m: number, a: number, b: number, c: number): MassProperties3D {
   const I = new Float64Array(9);
-  I[0] = a; I[4] = b; I[8] = c;
+  I[0] = a;
+  I[4] = b;
+  I[8] = c;
   return { mass: m, center: [0, 0, 0], inertia: I };
 }
 
@@ -67,30 +69,60 @@ export function capsuleMass(density: number, r: number, hh: number): MassPropert
 
 /** A convex hull by tetrahedral decomposition (see the module's sources). Its centre of mass is returned in the hull's frame. */
 export function hullMass(density: number, hull: Hull): MassProperties3D {
-  const V = hull.vertices, T = hull.triangles;
-  let vol = 0, cx = 0, cy = 0, cz = 0;
+  const V = hull.vertices,
+    T = hull.triangles;
+  let vol = 0,
+    cx = 0,
+    cy = 0,
+    cz = 0;
   const C = new Float64Array(9);
   // Origin of the decomposition: the vertex mean (inside a convex hull), for accuracy far from 0.
-  let ox = 0, oy = 0, oz = 0;
+  let ox = 0,
+    oy = 0,
+    oz = 0;
   const nv = V.length / 3;
-  for (let i = 0; i < nv; i++) { ox += V[3 * i]!; oy += V[3 * i + 1]!; oz += V[3 * i + 2]!; }
-  ox /= nv; oy /= nv; oz /= nv;
+  for (let i = 0; i < nv; i++) {
+    ox += V[3 * i]!;
+    oy += V[3 * i + 1]!;
+    oz += V[3 * i + 2]!;
+  }
+  ox /= nv;
+  oy /= nv;
+  oz /= nv;
   for (let t = 0; t < T.length; t += 3) {
-    const a = 3 * T[t]!, b = 3 * T[t + 1]!, c = 3 * T[t + 2]!;
-    const ax = V[a]! - ox, ay = V[a + 1]! - oy, az = V[a + 2]! - oz;
-    const bx = V[b]! - ox, by = V[b + 1]! - oy, bz = V[b + 2]! - oz;
-    const qx = V[c]! - ox, qy = V[c + 1]! - oy, qz = V[c + 2]! - oz;
+    const a = 3 * T[t]!,
+      b = 3 * T[t + 1]!,
+      c = 3 * T[t + 2]!;
+    const ax = V[a]! - ox,
+      ay = V[a + 1]! - oy,
+      az = V[a + 2]! - oz;
+    const bx = V[b]! - ox,
+      by = V[b + 1]! - oy,
+      bz = V[b + 2]! - oz;
+    const qx = V[c]! - ox,
+      qy = V[c + 1]! - oy,
+      qz = V[c + 2]! - oz;
     const v6 = ax * (by * qz - bz * qy) - ay * (bx * qz - bz * qx) + az * (bx * qy - by * qx);
     const v = v6 / 6;
     vol += v;
-    const sx = ax + bx + qx, sy = ay + by + qy, sz = az + bz + qz;
-    cx += (v * sx) / 4; cy += (v * sy) / 4; cz += (v * sz) / 4;
+    const sx = ax + bx + qx,
+      sy = ay + by + qy,
+      sz = az + bz + qz;
+    cx += (v * sx) / 4;
+    cy += (v * sy) / 4;
+    cz += (v * sz) / 4;
     const k = v / 20;
-    const p = [ax, ay, az], q = [bx, by, bz], r = [qx, qy, qz], s = [sx, sy, sz];
-    for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) C[3 * i + j] = C[3 * i + j]! + k * (p[i]! * p[j]! + q[i]! * q[j]! + r[i]! * r[j]! + s[i]! * s[j]!);
+    const p = [ax, ay, az],
+      q = [bx, by, bz],
+      r = [qx, qy, qz],
+      s = [sx, sy, sz];
+    for (let i = 0; i < 3; i++)
+      for (let j = 0; j < 3; j++) C[3 * i + j] = C[3 * i + j]! + k * (p[i]! * p[j]! + q[i]! * q[j]! + r[i]! * r[j]! + s[i]! * s[j]!);
   }
   const m = density * vol;
-  const gx = cx / vol, gy = cy / vol, gz = cz / vol;
+  const gx = cx / vol,
+    gy = cy / vol,
+    gz = cz / vol;
   // Second moment about the centroid (mass-weighted), then I = tr(C) E - C.
   const g = [gx, gy, gz];
   for (let i = 0; i < 9; i++) C[i] = density * C[i]!;
@@ -98,7 +130,9 @@ export function hullMass(density: number, hull: Hull): MassProperties3D {
   const tr = C[0]! + C[4]! + C[8]!;
   const I = new Float64Array(9);
   for (let i = 0; i < 9; i++) I[i] = -C[i]!;
-  I[0] = I[0]! + tr; I[4] = I[4]! + tr; I[8] = I[8]! + tr;
+  I[0] = I[0]! + tr;
+  I[4] = I[4]! + tr;
+  I[8] = I[8]! + tr;
   return { mass: m, center: [gx + ox, gy + oy, gz + oz], inertia: I };
 }
 
@@ -112,7 +146,15 @@ export function hullVolume(hull: Hull): number {
  * of mass m whose own tensor about its centre is I_local, turned by the rotation matrix R (row-major)
  * and centred at d: R I_local R^T + m (|d|^2 E - d d^T) (parallel-axis theorem).
  */
-export function addMovedInertia(acc: Float64Array, m: number, local: Float64Array, R: Float64Array, dx: number, dy: number, dz: number): void {
+export function addMovedInertia(
+  acc: Float64Array,
+  m: number,
+  local: Float64Array,
+  R: Float64Array,
+  dx: number,
+  dy: number,
+  dz: number,
+): void {
   const d = [dx, dy, dz];
   const d2 = dx * dx + dy * dy + dz * dz;
   for (let i = 0; i < 3; i++) {
@@ -131,34 +173,58 @@ export function addMovedInertia(acc: Float64Array, m: number, local: Float64Arra
  */
 export function principalAxes(A: Float64Array, values: Float64Array, axes: Float64Array): void {
   const a = Float64Array.from(A);
-  axes.fill(0); axes[0] = 1; axes[4] = 1; axes[8] = 1;
+  axes.fill(0);
+  axes[0] = 1;
+  axes[4] = 1;
+  axes[8] = 1;
   for (let sweep = 0; sweep < 50; sweep++) {
     const off = a[1]! * a[1]! + a[2]! * a[2]! + a[5]! * a[5]!;
     const scale = a[0]! * a[0]! + a[4]! * a[4]! + a[8]! * a[8]!;
     if (off <= 1e-30 * scale || off === 0) break;
-    for (const [p, q] of [[0, 1], [0, 2], [1, 2]] as const) {
+    for (const [p, q] of [
+      [0, 1],
+      [0, 2],
+      [1, 2],
+    ] as const) {
       const apq = a[3 * p + q]!;
       if (apq === 0) continue;
-      const app = a[3 * p + p]!, aqq = a[3 * q + q]!;
+      const app = a[3 * p + p]!,
+        aqq = a[3 * q + q]!;
       const theta = (aqq - app) / (2 * apq);
       const t = Math.sign(theta || 1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
-      const c = 1 / Math.sqrt(t * t + 1), s = t * c;
+      const c = 1 / Math.sqrt(t * t + 1),
+        s = t * c;
       // a <- J^T a J with J the rotation in the (p, q) plane.
       for (let k = 0; k < 3; k++) {
-        const akp = a[3 * k + p]!, akq = a[3 * k + q]!;
-        a[3 * k + p] = c * akp - s * akq; a[3 * k + q] = s * akp + c * akq;
+        const akp = a[3 * k + p]!,
+          akq = a[3 * k + q]!;
+        a[3 * k + p] = c * akp - s * akq;
+        a[3 * k + q] = s * akp + c * akq;
       }
       for (let k = 0; k < 3; k++) {
-        const apk = a[3 * p + k]!, aqk = a[3 * q + k]!;
-        a[3 * p + k] = c * apk - s * aqk; a[3 * q + k] = s * apk + c * aqk;
+        const apk = a[3 * p + k]!,
+          aqk = a[3 * q + k]!;
+        a[3 * p + k] = c * apk - s * aqk;
+        a[3 * q + k] = s * apk + c * aqk;
       }
       for (let k = 0; k < 3; k++) {
-        const vkp = axes[3 * k + p]!, vkq = axes[3 * k + q]!;
-        axes[3 * k + p] = c * vkp - s * vkq; axes[3 * k + q] = s * vkp + c * vkq;
+        const vkp = axes[3 * k + p]!,
+          vkq = axes[3 * k + q]!;
+        axes[3 * k + p] = c * vkp - s * vkq;
+        axes[3 * k + q] = s * vkp + c * vkq;
       }
     }
   }
-  values[0] = a[0]!; values[1] = a[4]!; values[2] = a[8]!;
-  const det = axes[0]! * (axes[4]! * axes[8]! - axes[5]! * axes[7]!) - axes[1]! * (axes[3]! * axes[8]! - axes[5]! * axes[6]!) + axes[2]! * (axes[3]! * axes[7]! - axes[4]! * axes[6]!);
-  if (det < 0) { axes[2] = -axes[2]!; axes[5] = -axes[5]!; axes[8] = -axes[8]!; }
+  values[0] = a[0]!;
+  values[1] = a[4]!;
+  values[2] = a[8]!;
+  const det =
+    axes[0]! * (axes[4]! * axes[8]! - axes[5]! * axes[7]!) -
+    axes[1]! * (axes[3]! * axes[8]! - axes[5]! * axes[6]!) +
+    axes[2]! * (axes[3]! * axes[7]! - axes[4]! * axes[6]!);
+  if (det < 0) {
+    axes[2] = -axes[2]!;
+    axes[5] = -axes[5]!;
+    axes[8] = -axes[8]!;
+  }
 }

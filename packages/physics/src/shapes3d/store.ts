@@ -1,5 +1,5 @@
-import type { PhysicsWorld } from '../world.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import type { PhysicsWorld } from '../world.js';
 import type { Hull } from './hull.js';
 
 /** Kinds of 3D shapes (the `kind` field of Shape3DStore). */
@@ -23,11 +23,18 @@ export interface Shape3DStore {
   next: Int32Array;
   first: Int32Array;
   /** Placement: the shape's centre in the body frame, m. */
-  px: Float64Array; py: Float64Array; pz: Float64Array;
+  px: Float64Array;
+  py: Float64Array;
+  pz: Float64Array;
   /** Placement: the shape frame's rotation into the body frame, unit quaternion (x, y, z, w). */
-  qx: Float64Array; qy: Float64Array; qz: Float64Array; qw: Float64Array;
+  qx: Float64Array;
+  qy: Float64Array;
+  qz: Float64Array;
+  qw: Float64Array;
   /** Box half extents, m (> 0); capsule and cylinder: `hy` is the half height of the straight part along the shape's y axis. */
-  hx: Float64Array; hy: Float64Array; hz: Float64Array;
+  hx: Float64Array;
+  hy: Float64Array;
+  hz: Float64Array;
   /** Sphere, capsule and cylinder radius, m (> 0); 0 for boxes and hulls. */
   radius: Float64Array;
   /** Bounding radius about the shape's centre, m. */
@@ -51,8 +58,13 @@ export interface Shape3DStore {
    * first shape was added) lies in the current body frame, m, and the rotation from the user's body
    * frame (the orientation then) into the current one, so later shapes are placed where meant.
    */
-  originX: Float64Array; originY: Float64Array; originZ: Float64Array;
-  refX: Float64Array; refY: Float64Array; refZ: Float64Array; refW: Float64Array;
+  originX: Float64Array;
+  originY: Float64Array;
+  originZ: Float64Array;
+  refX: Float64Array;
+  refY: Float64Array;
+  refZ: Float64Array;
+  refW: Float64Array;
 }
 
 const stores = new WeakMap<PhysicsWorld, Shape3DStore>();
@@ -62,11 +74,39 @@ function createStore(capacity: number): Shape3DStore {
   const f = (): Float64Array => new Float64Array(n);
   const hull = new Int32Array(n).fill(-1);
   return {
-    active: false, body: new Int32Array(n), kind: new Uint8Array(n), next: new Int32Array(n), first: new Int32Array(n),
-    px: f(), py: f(), pz: f(), qx: f(), qy: f(), qz: f(), qw: f(), hx: f(), hy: f(), hz: f(), radius: f(), reach: f(),
-    hull, hulls: [], density: f(), friction: f(), restitution: f(),
-    category: new Uint32Array(n), mask: new Uint32Array(n), group: new Int32Array(n), sensor: new Uint8Array(n),
-    originX: f(), originY: f(), originZ: f(), refX: f(), refY: f(), refZ: f(), refW: f(),
+    active: false,
+    body: new Int32Array(n),
+    kind: new Uint8Array(n),
+    next: new Int32Array(n),
+    first: new Int32Array(n),
+    px: f(),
+    py: f(),
+    pz: f(),
+    qx: f(),
+    qy: f(),
+    qz: f(),
+    qw: f(),
+    hx: f(),
+    hy: f(),
+    hz: f(),
+    radius: f(),
+    reach: f(),
+    hull,
+    hulls: [],
+    density: f(),
+    friction: f(),
+    restitution: f(),
+    category: new Uint32Array(n),
+    mask: new Uint32Array(n),
+    group: new Int32Array(n),
+    sensor: new Uint8Array(n),
+    originX: f(),
+    originY: f(),
+    originZ: f(),
+    refX: f(),
+    refY: f(),
+    refZ: f(),
+    refW: f(),
   };
 }
 
@@ -75,12 +115,17 @@ export function shapes3DOf(world: PhysicsWorld, create: true): Shape3DStore;
 export function shapes3DOf(world: PhysicsWorld, create?: boolean): Shape3DStore | undefined;
 export function shapes3DOf(world: PhysicsWorld, create = false): Shape3DStore | undefined {
   let s = stores.get(world);
-  if (s === undefined && create) { s = createStore(world.capacity); stores.set(world, s); }
+  if (s === undefined && create) {
+    s = createStore(world.capacity);
+    stores.set(world, s);
+  }
   return s;
 }
 
 registerExternalWorldState({
   name: 'shapes3d',
   get: (world, create) => shapes3DOf(world, create),
-  clear: (world) => { stores.delete(world); },
+  clear: (world) => {
+    stores.delete(world);
+  },
 });

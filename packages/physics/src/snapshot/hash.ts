@@ -14,19 +14,30 @@ const u32 = new Uint32Array(f64.buffer);
  * Hash: two 32-bit FNV-1a streams (Fowler, Noll and Vo) over the 32-bit words, with different offset bases.
  */
 export function stateHash(world: PhysicsWorld): string {
-  let h1 = 0x811c9dc5, h2 = 0x01000193 ^ 0x9e3779b9;
+  let h1 = 0x811c9dc5,
+    h2 = 0x01000193 ^ 0x9e3779b9;
   const word = (w: number) => {
-    h1 = Math.imul(h1 ^ (w & 0xffff), 0x01000193); h1 = Math.imul(h1 ^ (w >>> 16), 0x01000193);
-    h2 = Math.imul(h2 ^ (w >>> 16), 0x01000193); h2 = Math.imul(h2 ^ (w & 0xffff), 0x01000193);
+    h1 = Math.imul(h1 ^ (w & 0xffff), 0x01000193);
+    h1 = Math.imul(h1 ^ (w >>> 16), 0x01000193);
+    h2 = Math.imul(h2 ^ (w >>> 16), 0x01000193);
+    h2 = Math.imul(h2 ^ (w & 0xffff), 0x01000193);
   };
-  const num = (v: number) => { f64[0] = v; word(u32[0]!); word(u32[1]!); };
-  num(world.time); num(world.steps);
+  const num = (v: number) => {
+    f64[0] = v;
+    word(u32[0]!);
+    word(u32[1]!);
+  };
+  num(world.time);
+  num(world.steps);
   const ix = (world as unknown as Record<symbol, { entityIndex: { aliveCount: number; dense: number[] } }>)[$internal]!.entityIndex;
   const alive = Int32Array.from(ix.dense.slice(0, ix.aliveCount)).sort();
-  const stores = Object.entries(world.components).map(([, s]) => [s, Object.values(s as object).filter((a) => ArrayBuffer.isView(a))] as const);
+  const stores = Object.entries(world.components).map(
+    ([, s]) => [s, Object.values(s as object).filter((a) => ArrayBuffer.isView(a))] as const,
+  );
   for (let i = 0; i < alive.length; i++) {
     const e = alive[i]!;
-    word(e); word(world.spawnStamp[e]!);
+    word(e);
+    word(world.spawnStamp[e]!);
     for (let c = 0; c < stores.length; c++) {
       const [store, arrays] = stores[c]!;
       if (!hasComponent(world, e, store)) continue;

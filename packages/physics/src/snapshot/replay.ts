@@ -1,7 +1,7 @@
-import type { PhysicsWorld } from '../world.js';
 import { step } from '../pipeline/step.js';
-import { restore, snapshot, type WorldSnapshot } from './snapshot.js';
 import { assertOptions, describe } from '../validate.js';
+import type { PhysicsWorld } from '../world.js';
+import { restore, snapshot, type WorldSnapshot } from './snapshot.js';
 
 /**
  * The host's structured clone (Node >= 17, every browser and worker). Typed here because the physics
@@ -100,7 +100,10 @@ export function createInputRecorder(world: PhysicsWorld, options: ReplayOptions)
     },
     input(name: string, ...args: unknown[]): void {
       const fn = options.handlers[name];
-      if (typeof fn !== 'function') throw new RangeError(`InputRecorder.input: name must be one of the handlers (${Object.keys(options.handlers).join(', ')}), got ${describe(name)}`);
+      if (typeof fn !== 'function')
+        throw new RangeError(
+          `InputRecorder.input: name must be one of the handlers (${Object.keys(options.handlers).join(', ')}), got ${describe(name)}`,
+        );
       const copy = cloneData(args);
       (fn as (...a: unknown[]) => void)(...args);
       replay.events.push({ step: world.steps - startSteps, name, args: copy });
@@ -133,12 +136,14 @@ export function createReplayPlayer(world: PhysicsWorld, replay: Replay, options:
   const total = replay.steps;
   const events = replay.events.slice();
   for (const e of events) {
-    if (typeof options.handlers[e.name] !== 'function') throw new RangeError(`${where}: the replay calls '${e.name}', which is not among the handlers`);
+    if (typeof options.handlers[e.name] !== 'function')
+      throw new RangeError(`${where}: the replay calls '${e.name}', which is not among the handlers`);
   }
   restore(world, replay.start);
   if (options.load) options.load(cloneData(replay.outside));
   const advance = options.step ?? (() => step(world));
-  let played = 0, next = 0;
+  let played = 0,
+    next = 0;
   const give = () => {
     while (next < events.length && events[next]!.step <= played) {
       const e = events[next++]!;
@@ -146,8 +151,12 @@ export function createReplayPlayer(world: PhysicsWorld, replay: Replay, options:
     }
   };
   return {
-    get played() { return played; },
-    get done() { return played >= total; },
+    get played() {
+      return played;
+    },
+    get done() {
+      return played >= total;
+    },
     step(): void {
       if (played >= total) return;
       give();

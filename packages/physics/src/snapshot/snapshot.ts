@@ -1,8 +1,8 @@
-import { $internal, Not, Or, query as bitecsQuery, registerComponent } from 'bitecs';
+import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
+import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
+import { describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { externalWorldStates } from './world-state.js';
-import { describe } from '../validate.js';
-import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
 
 /**
  * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
@@ -74,8 +74,9 @@ const SCRATCH = new Set([
  * About 3 MB of a settled 100,000-ball world's 9 to 13 MB.
  */
 function PER_STEP_SCRATCH(): string[] {
-  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact', 'impactOrder', 'impactKey']
-    .map((k) => `world.collision.${k}`);
+  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact', 'impactOrder', 'impactKey'].map(
+    (k) => `world.collision.${k}`,
+  );
 }
 
 /**
@@ -99,7 +100,10 @@ const CONTACT_BUFFERS = new Set(['world.collision.contacts', 'world.collision.ca
  * counter's value differs from the original world's; no stage reads it except to compare marks.
  */
 const STAMPED: ReadonlyMap<string, { parent: (world: PhysicsWorld) => Record<string, unknown>; counter: string }> = new Map([
-  ['world.collision.solverMark', { parent: (world: PhysicsWorld) => world.collision as unknown as Record<string, unknown>, counter: 'solverStamp' }],
+  [
+    'world.collision.solverMark',
+    { parent: (world: PhysicsWorld) => world.collision as unknown as Record<string, unknown>, counter: 'solverStamp' },
+  ],
 ]);
 
 /** A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk). */
@@ -130,9 +134,26 @@ export interface SnapshotHeader {
   ecs: Encoded;
 }
 
-type TypedArray = Float64Array | Float32Array | Int32Array | Uint32Array | Int16Array | Uint16Array | Int8Array | Uint8Array | Uint8ClampedArray;
+type TypedArray =
+  | Float64Array
+  | Float32Array
+  | Int32Array
+  | Uint32Array
+  | Int16Array
+  | Uint16Array
+  | Int8Array
+  | Uint8Array
+  | Uint8ClampedArray;
 const TYPED: Record<string, new (b: ArrayBuffer | number | ArrayLike<number>) => TypedArray> = {
-  Float64Array, Float32Array, Int32Array, Uint32Array, Int16Array, Uint16Array, Int8Array, Uint8Array, Uint8ClampedArray,
+  Float64Array,
+  Float32Array,
+  Int32Array,
+  Uint32Array,
+  Int16Array,
+  Uint16Array,
+  Int8Array,
+  Uint8Array,
+  Uint8ClampedArray,
 };
 
 /**
@@ -169,7 +190,7 @@ function usedLength(a: TypedArray, end: number): number {
  */
 const nativeCompare: ((a: Uint8Array, b: Uint8Array) => number) | undefined = (() => {
   const B = (globalThis as { Buffer?: { compare?: unknown } }).Buffer;
-  return typeof B?.compare === 'function' ? B.compare as (a: Uint8Array, b: Uint8Array) => number : undefined;
+  return typeof B?.compare === 'function' ? (B.compare as (a: Uint8Array, b: Uint8Array) => number) : undefined;
 })();
 /** Zeros compared against by `usedLength` (64 kB: a multiple of every element size). */
 const ZERO_BLOCK = new Uint8Array(nativeCompare !== undefined ? 65536 : 0);
@@ -182,7 +203,10 @@ const ZERO_BLOCK = new Uint8Array(nativeCompare !== undefined ? 65536 : 0);
  */
 function zeroFill(a: TypedArray, from: number, to: number): void {
   const bytes = a.BYTES_PER_ELEMENT;
-  if (nativeCompare === undefined || (to - from) * bytes <= ZERO_BLOCK.length) { a.fill(0, from, to); return; }
+  if (nativeCompare === undefined || (to - from) * bytes <= ZERO_BLOCK.length) {
+    a.fill(0, from, to);
+    return;
+  }
   const u8 = new Uint8Array(a.buffer, a.byteOffset + from * bytes, (to - from) * bytes);
   const B = ZERO_BLOCK.length;
   for (let lo = 0; lo < u8.length; lo += B) {
@@ -217,8 +241,10 @@ function usedLengthScan(a: TypedArray, end: number): number {
   let used: number; // bytes
   if ((a.byteOffset & 7) === 0) {
     const w8 = whole & ~7;
-    used = w8 !== whole && new Int32Array(a.buffer, a.byteOffset + w8, 1)[0] !== 0 ? whole
-      : 8 * zeroTail64(new BigInt64Array(a.buffer, a.byteOffset, w8 >> 3), w8 >> 3);
+    used =
+      w8 !== whole && new Int32Array(a.buffer, a.byteOffset + w8, 1)[0] !== 0
+        ? whole
+        : 8 * zeroTail64(new BigInt64Array(a.buffer, a.byteOffset, w8 >> 3), w8 >> 3);
   } else {
     used = 4 * zeroTail32(new Int32Array(a.buffer, a.byteOffset, whole >> 2), whole >> 2);
   }
@@ -272,10 +298,12 @@ function uniformFrom1(a: TypedArray, n: number): boolean {
   }
   // 8-byte elements: as 64-bit words where aligned (see usedLength), else element k is words 2k and 2k + 1.
   if ((a.byteOffset & 7) === 0) return sameFrom64(new BigInt64Array(a.buffer, a.byteOffset, n), n);
-  const lo = words[2]!, hi = words[3]!;
+  const lo = words[2]!,
+    hi = words[3]!;
   const m = 2 * n;
   let i = 4;
-  for (; i + 4 <= m; i += 4) if (((words[i]! ^ lo) | (words[i + 1]! ^ hi) | (words[i + 2]! ^ lo) | (words[i + 3]! ^ hi)) !== 0) return false;
+  for (; i + 4 <= m; i += 4)
+    if (((words[i]! ^ lo) | (words[i + 1]! ^ hi) | (words[i + 2]! ^ lo) | (words[i + 3]! ^ hi)) !== 0) return false;
   for (; i < m; i += 2) if (words[i] !== lo || words[i + 1] !== hi) return false;
   return true;
 }
@@ -287,7 +315,12 @@ function sameFrom64(w: BigInt64Array, n: number): boolean {
   return true;
 }
 
-interface PendingCopy { readonly src: TypedArray | readonly number[]; readonly n: number; readonly offset: number; readonly type: string }
+interface PendingCopy {
+  readonly src: TypedArray | readonly number[];
+  readonly n: number;
+  readonly offset: number;
+  readonly type: string;
+}
 
 class Writer {
   private readonly pending: PendingCopy[] = [];
@@ -302,7 +335,11 @@ class Writer {
    * @param components names of the stores of world.components that are registered bitecs components
    *   (a store that is not may hold values anywhere, and is scanned in full).
    */
-  constructor(private readonly storeLength: number, private readonly maxId: number, private readonly components: ReadonlySet<string>) {}
+  constructor(
+    private readonly storeLength: number,
+    private readonly maxId: number,
+    private readonly components: ReadonlySet<string>,
+  ) {}
   /**
    * Encodes a typed array: its type, full length `len`, and its first `n` elements (up to the last
    * non-zero one), copied into the snapshot's buffer at byte offset `o` by `finish`.
@@ -310,8 +347,10 @@ class Writer {
    */
   array(a: TypedArray, path: string): Encoded {
     const k = a.length / this.storeLength;
-    const end = Number.isInteger(k) && k >= 1 && path.startsWith('world.components.') && this.components.has(path.split('.')[2]!)
-      ? Math.min(a.length, (this.maxId + 1) * k) : a.length;
+    const end =
+      Number.isInteger(k) && k >= 1 && path.startsWith('world.components.') && this.components.has(path.split('.')[2]!)
+        ? Math.min(a.length, (this.maxId + 1) * k)
+        : a.length;
     return this.arrayTo(a, end);
   }
   /**
@@ -357,14 +396,21 @@ class Writer {
    * for a new buffer, whose page faults cost more than the copy into it).
    */
   finish(reuse?: ArrayBuffer): ArrayBuffer {
-    const buf = reuse === undefined ? new ArrayBuffer(this.bytes)
-      : reuse.byteLength >= this.bytes ? reuse : new ArrayBuffer((this.bytes + (this.bytes >> 2) + 7) & ~7);
+    const buf =
+      reuse === undefined
+        ? new ArrayBuffer(this.bytes)
+        : reuse.byteLength >= this.bytes
+          ? reuse
+          : new ArrayBuffer((this.bytes + (this.bytes >> 2) + 7) & ~7);
     for (const { src, n, offset, type } of this.pending) {
       if (n === 0) continue;
       const Ctor = TYPED[type] as unknown as new (b: ArrayBuffer, o: number, n: number) => TypedArray;
       const out = new Ctor(buf, offset, n);
       if (Array.isArray(src)) out.set(src);
-      else { const t = src as TypedArray; out.set((n === t.length ? t : t.subarray(0, n)) as never); }
+      else {
+        const t = src as TypedArray;
+        out.set((n === t.length ? t : t.subarray(0, n)) as never);
+      }
     }
     return buf;
   }
@@ -384,7 +430,9 @@ class Writer {
     if (this.unused.has(v)) {
       const out: Record<string, Encoded> = {};
       for (const [key, x] of Object.entries(v)) {
-        out[key] = ArrayBuffer.isView(x) ? { $t: 'unused', type: x.constructor.name, n: (x as TypedArray).length } : this.value(x, `${path}.${key}`);
+        out[key] = ArrayBuffer.isView(x)
+          ? { $t: 'unused', type: x.constructor.name, n: (x as TypedArray).length }
+          : this.value(x, `${path}.${key}`);
       }
       return { $t: 'o', v: out };
     }
@@ -393,7 +441,10 @@ class Writer {
     if (Array.isArray(v)) return { $t: 'a', v: v.map((x, i) => this.value(x, `${path}[${i}]`)) };
     if (v instanceof Set) return { $t: 's', v: [...v].map((x, i) => this.value(x, `${path} (set item ${i})`)) };
     if (v instanceof Map) {
-      return { $t: 'm', v: [...v].map(([k, x], i) => [this.value(k, `${path} (map key ${i})`), this.value(x, `${path}.get(${String(k)})`)]) };
+      return {
+        $t: 'm',
+        v: [...v].map(([k, x], i) => [this.value(k, `${path} (map key ${i})`), this.value(x, `${path}.get(${String(k)})`)]),
+      };
     }
     return this.object(v as Record<string, unknown>, path, undefined);
   }
@@ -403,7 +454,8 @@ class Writer {
    * columns are not all Float64Array of the buffer's capacity or more than an eighth of the rows differ.
    */
   tangent(o: Record<string, unknown>, key: string, n: number): Encoded | null {
-    const t = o[key], src = key === 't1x' ? o.ny : o.nx;
+    const t = o[key],
+      src = key === 't1x' ? o.ny : o.nx;
     if (!(t instanceof Float64Array && src instanceof Float64Array && t.length === o.capacity && src.length === t.length)) return null;
     const pairs = tangentExceptions(t, src, key === 't1x', n, n >> 3);
     if (pairs === null) return null;
@@ -421,7 +473,10 @@ class Writer {
       // Its 2D tangents, where most rows' are (-ny, nx) to the bit, as a note and the other rows (see TANGENT_2D).
       if (rows > 0 && (key === 't1x' || key === 't1y')) {
         const note = this.tangent(o, key, Math.min(rows, o.capacity as number));
-        if (note !== null) { out[key] = note; continue; }
+        if (note !== null) {
+          out[key] = note;
+          continue;
+        }
       }
       if (rows >= 0 && ArrayBuffer.isView(v) && (v as TypedArray).length === o.capacity && v.constructor.name in TYPED) {
         out[key] = this.arrayTo(v as TypedArray, Math.min(rows, (v as TypedArray).length), true);
@@ -453,7 +508,8 @@ function tangentExceptions(t: Float64Array, src: Float64Array, negate: boolean, 
   const pairs: number[] = [];
   const sign = negate ? -1 : 1;
   for (let i = 0; i < n; i++) {
-    const a = t[i]!, b = sign * src[i]!;
+    const a = t[i]!,
+      b = sign * src[i]!;
     // === is bitwise for every value but zeros (+0 === -0, told apart by 1 / x) and NaN (never equal: a pair).
     if (a === b && (a !== 0 || 1 / a === 1 / b)) continue;
     // A NaN tangent keeps its column (a NaN's payload may not survive a trip through a JS number).
@@ -474,18 +530,28 @@ class Reader {
    * @param oldMaxId the world's highest entity id before the restore: per-entity arrays hold zeros above
    *   it, so only their entries up to it need zeroing past the snapshot's data.
    */
-  constructor(private readonly buffer: ArrayBuffer, private readonly capacity: number, private readonly oldMaxId: number) {}
+  constructor(
+    private readonly buffer: ArrayBuffer,
+    private readonly capacity: number,
+    private readonly oldMaxId: number,
+  ) {}
   /** A view of an encoded array's stored elements (its first `n`; the rest, up to `len`, are zeros). */
   array(e: { [key: string]: Encoded }, path: string): TypedArray {
     const Ctor = TYPED[e.$t as string] as unknown as (new (b: ArrayBuffer, o: number, n: number) => TypedArray) | undefined;
-    const o = e.o as number, n = e.n as number, len = e.len as number;
+    const o = e.o as number,
+      n = e.n as number,
+      len = e.len as number;
     const rep = e.rep as number | undefined;
     const iota = e.iota as number | undefined;
     const upto = e.upto as number | undefined;
-    if (Ctor === undefined || !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
+    if (
+      Ctor === undefined ||
+      !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
       (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len)) ||
-      (iota !== undefined && !(Ctor === Int32Array && rep === undefined && n === 1 && Number.isInteger(iota) && iota >= 2 && iota <= len)) ||
-      (upto !== undefined && !(upto >= (rep ?? iota ?? n) && upto <= len))) {
+      (iota !== undefined &&
+        !(Ctor === Int32Array && rep === undefined && n === 1 && Number.isInteger(iota) && iota >= 2 && iota <= len)) ||
+      (upto !== undefined && !(upto >= (rep ?? iota ?? n) && upto <= len))
+    ) {
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
     }
     return new Ctor(this.buffer, o, n);
@@ -547,7 +613,11 @@ class Reader {
       const o: Record<string, unknown> = {};
       const derived: string[] = [];
       for (const [k, x] of Object.entries(v as Record<string, Encoded>)) {
-        if (isTagged(x) && x.$t === TANGENT_2D) { derived.push(k); o[k] = null; continue; } // keeps the key order
+        if (isTagged(x) && x.$t === TANGENT_2D) {
+          derived.push(k);
+          o[k] = null;
+          continue;
+        } // keeps the key order
         o[k] = this.fresh(x, `${path}.${k}`);
       }
       for (const k of derived) this.tangent(o, k, (v as Record<string, Record<string, Encoded>>)[k]!, `${path}.${k}`);
@@ -565,14 +635,26 @@ class Reader {
       const t = e.$t as string;
       // Scratch (see SCRATCH, STAMPED): the target's own array stays if it is long enough (snapshots
       // that recorded no length: any array of the target stays, as the broadphase grows the grid's).
-      if (t === 'scratch' && cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) &&
-        (typeof e.len !== 'number' || (cur.constructor.name === e.type && (cur as TypedArray).length >= e.len))) return;
+      if (
+        t === 'scratch' &&
+        cur !== null &&
+        typeof cur === 'object' &&
+        ArrayBuffer.isView(cur) &&
+        (typeof e.len !== 'number' || (cur.constructor.name === e.type && (cur as TypedArray).length >= e.len))
+      )
+        return;
       if (t === 'unused') {
         // No entity has the store's component: its contents are never read. A store the world has
         // allocated stays allocated (zeroed, as if new); one it lacks gets the snapshot's allocation.
         const Ctor = TYPED[e.type as string]!;
         const n = e.n as number;
-        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === Ctor && (cur as TypedArray).length >= n) {
+        if (
+          cur !== null &&
+          typeof cur === 'object' &&
+          ArrayBuffer.isView(cur) &&
+          cur.constructor === Ctor &&
+          (cur as TypedArray).length >= n
+        ) {
           zeroFill(cur as TypedArray, 0, this.extent(cur as TypedArray, path));
         } else {
           target[key] = new Ctor(n);
@@ -581,7 +663,13 @@ class Reader {
       }
       if (t in TYPED) {
         const src = this.array(e, path);
-        if (cur !== null && typeof cur === 'object' && ArrayBuffer.isView(cur) && cur.constructor === src.constructor && (cur as TypedArray).length === e.len) {
+        if (
+          cur !== null &&
+          typeof cur === 'object' &&
+          ArrayBuffer.isView(cur) &&
+          cur.constructor === src.constructor &&
+          (cur as TypedArray).length === e.len
+        ) {
           const a = cur as TypedArray;
           const written = this.write(a, src, e);
           // A contact buffer's column (CONTACT_BUFFERS): zeros up to the count, rows past it left as they are.
@@ -592,7 +680,15 @@ class Reader {
         }
         return;
       }
-      if (t === 'o' && cur !== null && typeof cur === 'object' && !Array.isArray(cur) && !(cur instanceof Set) && !(cur instanceof Map) && !ArrayBuffer.isView(cur)) {
+      if (
+        t === 'o' &&
+        cur !== null &&
+        typeof cur === 'object' &&
+        !Array.isArray(cur) &&
+        !(cur instanceof Set) &&
+        !(cur instanceof Map) &&
+        !ArrayBuffer.isView(cur)
+      ) {
         this.objectInto(cur as Record<string, unknown>, e.v as Record<string, Encoded>, path, keep);
         return;
       }
@@ -625,7 +721,10 @@ class Reader {
     let derived = false;
     for (const [key, x] of Object.entries(enc)) {
       if (keep?.has(key)) continue;
-      if (isTagged(x) && x.$t === TANGENT_2D) { derived = true; continue; }
+      if (isTagged(x) && x.$t === TANGENT_2D) {
+        derived = true;
+        continue;
+      }
       this.into(target, key, x, `${path}.${key}`);
     }
     // Derived columns after the rest: they are computed from the normals just restored.
@@ -642,14 +741,26 @@ class Reader {
    * @throws RangeError if the note is damaged or the normals are missing or too short.
    */
   tangent(target: Record<string, unknown>, key: string, e: { [key: string]: Encoded }, path: string): void {
-    const len = e.len as number, upto = e.upto as number, axis = e.axis;
+    const len = e.len as number,
+      upto = e.upto as number,
+      axis = e.axis;
     const src = axis === 'x' ? target.ny : target.nx;
-    if (!(Number.isInteger(len) && Number.isInteger(upto) && upto >= 0 && upto <= len && (axis === 'x' || axis === 'y') &&
-      src instanceof Float64Array && src.length >= upto)) {
+    if (
+      !(
+        Number.isInteger(len) &&
+        Number.isInteger(upto) &&
+        upto >= 0 &&
+        upto <= len &&
+        (axis === 'x' || axis === 'y') &&
+        src instanceof Float64Array &&
+        src.length >= upto
+      )
+    ) {
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
     }
     const pairs = e.rows === undefined ? null : isTagged(e.rows) ? this.full(e.rows, `${path}.rows`) : undefined;
-    if (pairs === undefined || (pairs !== null && !(pairs instanceof Float64Array && pairs.length % 2 === 0))) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    if (pairs === undefined || (pairs !== null && !(pairs instanceof Float64Array && pairs.length % 2 === 0)))
+      throw new RangeError(`restore: snapshot's ${path} is damaged`);
     if (pairs !== null) {
       for (let k = 0; k < pairs.length; k += 2) {
         const row = pairs[k]!;
@@ -657,7 +768,10 @@ class Reader {
       }
     }
     let out = target[key];
-    if (!(out instanceof Float64Array && out.length === len)) { out = new Float64Array(len); target[key] = out; }
+    if (!(out instanceof Float64Array && out.length === len)) {
+      out = new Float64Array(len);
+      target[key] = out;
+    }
     const t = out as Float64Array;
     // -x is exactly x with its sign bit flipped, as prepareContacts' -ny.
     if (axis === 'x') for (let i = 0; i < upto; i++) t[i] = -src[i]!;
@@ -668,12 +782,23 @@ class Reader {
 
 // --- bitecs internals (0.4): the entity index, component masks, entity component sets, queries. ---
 
-interface SparseSetLike { dense: ArrayLike<number>; add(v: number): void; reset(): void; has(v: number): boolean }
+interface SparseSetLike {
+  dense: ArrayLike<number>;
+  add(v: number): void;
+  reset(): void;
+  has(v: number): boolean;
+}
 interface QueryData extends SparseSetLike {
-  allComponents: object[]; notComponents: object[]; orComponents: object[];
+  allComponents: object[];
+  notComponents: object[];
+  orComponents: object[];
   toRemove: SparseSetLike;
 }
-interface ComponentData { generationId: number; bitflag: number; ref: object }
+interface ComponentData {
+  generationId: number;
+  bitflag: number;
+  ref: object;
+}
 interface EcsInternals {
   entityIndex: { aliveCount: number; dense: number[]; sparse: number[] | Int32Array; maxId: number; versioning: boolean };
   entityMasks: (number[] | Int32Array)[];
@@ -691,7 +816,8 @@ function namesOf(world: PhysicsWorld): Map<object, string> {
   // query descriptors computed from it stay valid (see describeKeyed).
   const entries = Object.entries(world.components);
   const last = nameMaps.get(world);
-  if (last !== undefined && last.size === entries.length && entries.every(([name, store]) => last.get(store as object) === name)) return last;
+  if (last !== undefined && last.size === entries.length && entries.every(([name, store]) => last.get(store as object) === name))
+    return last;
   const names = new Map<object, string>();
   for (const [name, store] of entries) names.set(store as object, name);
   nameMaps.set(world, names);
@@ -704,10 +830,16 @@ const nameMaps = new WeakMap<PhysicsWorld, Map<object, string>>();
  * Each query's descriptor and key as last computed, with the name map they were computed from (a
  * query's components never change; the names of world.components could, so a new map recomputes).
  */
-const described = new WeakMap<object, { names: Map<object, string>; d: { and: string[]; not: string[]; or: string[] } | null; key: string }>();
+const described = new WeakMap<
+  object,
+  { names: Map<object, string>; d: { and: string[]; not: string[]; or: string[] } | null; key: string }
+>();
 
 /** `describeQuery` and its `keyOf` (key '' when null), computed once per query and name map (see `namesOf`). */
-function describeKeyed(q: QueryData, names: Map<object, string>): { d: { and: string[]; not: string[]; or: string[] } | null; key: string } {
+function describeKeyed(
+  q: QueryData,
+  names: Map<object, string>,
+): { d: { and: string[]; not: string[]; or: string[] } | null; key: string } {
   let c = described.get(q);
   if (c === undefined || c.names !== names) {
     const d = describeQuery(q, names);
@@ -720,7 +852,8 @@ function describeKeyed(q: QueryData, names: Map<object, string>): { d: { and: st
 /** Query descriptor: its component names (and, not, or), or null if it involves a component outside world.components. */
 function describeQuery(q: QueryData, names: Map<object, string>): { and: string[]; not: string[]; or: string[] } | null {
   const name = (c: object) => names.get(c);
-  const not = q.notComponents.map(name), or = q.orComponents.map(name);
+  const not = q.notComponents.map(name),
+    or = q.orComponents.map(name);
   const and = q.allComponents.filter((c) => !q.notComponents.includes(c) && !q.orComponents.includes(c)).map(name);
   if ([...and, ...not, ...or].some((n) => n === undefined)) return null;
   return { and: (and as string[]).sort(), not: (not as string[]).sort(), or: (or as string[]).sort() };
@@ -747,7 +880,8 @@ function sameLists(a: readonly number[], b: readonly number[]): boolean {
   const n = a.length;
   if (n !== b.length) return false;
   let i = 0;
-  for (; i + 4 <= n; i += 4) if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
+  for (; i + 4 <= n; i += 4)
+    if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
   for (; i < n; i++) if (a[i] !== b[i]) return false;
   return true;
 }
@@ -755,7 +889,8 @@ function sameAsStored(a: readonly number[], b: Int32Array): boolean {
   const n = a.length;
   if (n !== b.length) return false;
   let i = 0;
-  for (; i + 4 <= n; i += 4) if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
+  for (; i + 4 <= n; i += 4)
+    if (((a[i]! ^ b[i]!) | (a[i + 1]! ^ b[i + 1]!) | (a[i + 2]! ^ b[i + 2]!) | (a[i + 3]! ^ b[i + 3]!)) !== 0) return false;
   for (; i < n; i++) if (a[i] !== b[i]) return false;
   return true;
 }
@@ -765,7 +900,13 @@ function sameAsStored(a: readonly number[], b: Int32Array): boolean {
  * `version`, see lean-ecs.ts): its version and length then, and the earlier set of that snapshot it
  * was equal to (null: none) with that set's version and length then.
  */
-interface ListMemo { version: number; length: number; same: object | null; sameVersion: number; sameLength: number }
+interface ListMemo {
+  version: number;
+  length: number;
+  same: object | null;
+  sameVersion: number;
+  sameLength: number;
+}
 const listMemos = new WeakMap<PhysicsWorld, Map<object, ListMemo>>();
 
 /**
@@ -780,15 +921,21 @@ class IdLists {
   private readonly indexOf = new Map<object, number>();
   private readonly memos: Map<object, ListMemo>;
   readonly lists: Encoded[] = [];
-  constructor(private readonly w: Writer, world: PhysicsWorld) {
+  constructor(
+    private readonly w: Writer,
+    world: PhysicsWorld,
+  ) {
     let m = listMemos.get(world);
-    if (m === undefined) { m = new Map(); listMemos.set(world, m); }
+    if (m === undefined) {
+      m = new Map();
+      listMemos.set(world, m);
+    }
     this.memos = m;
   }
   /** Encodes the members of `set` (a query's sparse set, or null for a list of no set). */
   encode(ids: ArrayLike<number>, set: object | null): Encoded {
     if (ids.length === 0) return { $t: 'ids', v: [] };
-    const js = Array.isArray(ids) ? ids as readonly number[] : null; // bitecs' buffered queries hold typed lists
+    const js = Array.isArray(ids) ? (ids as readonly number[]) : null; // bitecs' buffered queries hold typed lists
     const version = (set as { version?: number } | null)?.version;
     if (js !== null && set !== null && version !== undefined) {
       const m = this.memos.get(set);
@@ -806,9 +953,12 @@ class IdLists {
         if (!sameLists(d.ids, js)) continue;
         if (set !== null && version !== undefined) {
           const other = d.set as { version?: number } | null;
-          this.memos.set(set, other !== null && other.version !== undefined
-            ? { version, length: js.length, same: other, sameVersion: other.version, sameLength: d.ids.length }
-            : { version, length: js.length, same: null, sameVersion: 0, sameLength: 0 });
+          this.memos.set(
+            set,
+            other !== null && other.version !== undefined
+              ? { version, length: js.length, same: other, sameVersion: other.version, sameLength: d.ids.length }
+              : { version, length: js.length, same: null, sameVersion: 0, sameLength: 0 },
+          );
           this.indexOf.set(set, d.index);
         }
         return { $t: 'same', i: d.index };
@@ -817,8 +967,13 @@ class IdLists {
     const index = this.lists.length;
     // A list of consecutive ids (the entity list of a world without removals: 1 .. N) as its first id
     // and length, `{ $t: 'range', first, n }`: 0.4 MB less to copy for 100,000 bodies.
-    this.lists.push(js !== null && isRange(js) ? { $t: 'range', first: js[0]!, n: js.length }
-      : js !== null ? this.w.ids(js) : this.w.arrayTo(toInt32(ids), ids.length));
+    this.lists.push(
+      js !== null && isRange(js)
+        ? { $t: 'range', first: js[0]!, n: js.length }
+        : js !== null
+          ? this.w.ids(js)
+          : this.w.arrayTo(toInt32(ids), ids.length),
+    );
     if (js !== null) this.done.push({ ids: js, index, set });
     if (set !== null && version !== undefined) {
       this.indexOf.set(set, index);
@@ -848,14 +1003,16 @@ function readIdLists(encoded: readonly Encoded[], r: Reader, capacity: number): 
     const e = l as Record<string, Encoded>;
     if (e.$t !== 'range') return r.used(e, `ecs.lists[${i}]`) as Int32Array;
     checkRange(e, i, capacity);
-    const first = e.first as number, n = e.n as number;
+    const first = e.first as number,
+      n = e.n as number;
     // The list 1 .. capacity, made once and shared; a range is a view of it (its ids are never written).
     return countingTo(capacity).subarray(first - 1, first - 1 + n);
   });
 }
 /** @throws RangeError `restore: snapshot's ecs.lists[i] is damaged` unless the range `e` holds integer ids from 1 up to `capacity`. */
 function checkRange(e: Record<string, Encoded>, i: number, capacity: number): void {
-  const first = e.first as number, n = e.n as number;
+  const first = e.first as number,
+    n = e.n as number;
   if (!(Number.isInteger(first) && Number.isInteger(n) && first >= 1 && n >= 1 && first + n - 1 <= capacity)) {
     throw new RangeError(`restore: snapshot's ecs.lists[${i}] is damaged`);
   }
@@ -924,7 +1081,10 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
     }
     // Typed masks (lean-ecs.ts) are stored as they are, up to their last set entry (ids above maxId
     // have none); JS ones as Int32Array.
-    if (src instanceof Int32Array) { masks.push(w.arrayTo(src, n)); continue; }
+    if (src instanceof Int32Array) {
+      masks.push(w.arrayTo(src, n));
+      continue;
+    }
     const m = new Int32Array(n);
     for (let e = 0; e < n; e++) m[e] = src[e] ?? 0;
     masks.push(w.arrayTo(m, n));
@@ -934,14 +1094,26 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
   for (const q of ctx.queries) {
     const d = describeKeyed(q, names).d;
     if (d === null) continue;
-    queries.push({ $t: 'o', v: { and: d.and.slice(), not: d.not.slice(), or: d.or.slice(), dense: lists.encode(q.dense, q), toRemove: lists.encode(q.toRemove.dense, q.toRemove) } });
+    queries.push({
+      $t: 'o',
+      v: {
+        and: d.and.slice(),
+        not: d.not.slice(),
+        or: d.or.slice(),
+        dense: lists.encode(q.dense, q),
+        toRemove: lists.encode(q.toRemove.dense, q.toRemove),
+      },
+    });
   }
   // The entity index has no version: compared with the query lists (it usually equals a query's).
   const dense = lists.encode(ix.dense, null);
   const ecs = { aliveCount: ix.aliveCount, maxId, dense, layout, masks, queries, lists: lists.lists };
   const versions = new WeakMap<object, number>();
   for (const q of ctx.queries) {
-    for (const set of [q, q.toRemove]) { const v = versionOf(set); if (v !== undefined) versions.set(set, v); }
+    for (const set of [q, q.toRemove]) {
+      const v = versionOf(set);
+      if (v !== undefined) versions.set(set, v);
+    }
   }
   matching.set(ecs, versions);
   return ecs;
@@ -998,7 +1170,10 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   // 40-odd queries of a world that has not stepped yet), and these lists are overwritten below anyway.
   const names = namesOf(world);
   const byKey = new Map<string, QueryData>();
-  for (const q of ctx.queries) { const { d, key } = describeKeyed(q, names); if (d !== null) byKey.set(key, q); }
+  for (const q of ctx.queries) {
+    const { d, key } = describeKeyed(q, names);
+    if (d !== null) byKey.set(key, q);
+  }
   for (const enc of ecs.queries as Encoded[]) {
     const qd = (enc as Record<string, Encoded>).v as Record<string, Encoded>;
     const d = { and: qd.and as string[], not: qd.not as string[], or: qd.or as string[] };
@@ -1008,7 +1183,10 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     for (const n of d.not) terms.push(Not(C[n]! as never) as object);
     if (d.or.length > 0) terms.push(Or(...d.or.map((n) => C[n]! as never)) as object);
     bitecsQuery(world as never, terms as never);
-    const q = [...ctx.queries].find((x) => { const dx = describeKeyed(x, names); return dx.d !== null && dx.key === key; });
+    const q = [...ctx.queries].find((x) => {
+      const dx = describeKeyed(x, names);
+      return dx.d !== null && dx.key === key;
+    });
     if (q === undefined) throw new Error(`restore: could not make the query ${key}`);
     byKey.set(key, q);
   }
@@ -1018,14 +1196,15 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
   const top = Math.max(maxId, oldMaxId) + 1;
   if (same) {
     for (let g = 0; g < gens; g++) {
-      const arr = ctx.entityMasks[g]!, e = maskEnc[g];
+      const arr = ctx.entityMasks[g]!,
+        e = maskEnc[g];
       if (e !== undefined && e.rep !== undefined && arr instanceof Int32Array && arr.length >= (e.rep as number)) {
         // A repeated mask (every entity up to the highest id with the same components) written in
         // place, its repeat left as it is where the world already holds it (Reader.write); zeros up to `top`.
         const written = r.write(arr, maskViews[g]!, e);
         if (top > written) zeroFill(arr, written, Math.min(top, arr.length));
       } else {
-        writeMask(arr, e === undefined ? undefined : r.used(e, `masks[${g}]`) as Int32Array, top);
+        writeMask(arr, e === undefined ? undefined : (r.used(e, `masks[${g}]`) as Int32Array), top);
       }
     }
   } else {
@@ -1033,7 +1212,8 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     const newMasks: Int32Array[] = [];
     for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(top));
     for (const { sg, sbit, tg, tflag } of map) {
-      const s = srcMasks[sg]!, t = newMasks[tg]!;
+      const s = srcMasks[sg]!,
+        t = newMasks[tg]!;
       const f = 1 << sbit;
       for (let e = 0; e < s.length; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
     }
@@ -1060,7 +1240,11 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       const set = new Set<object>();
       for (let g = 0; g < gens; g++) {
         let m = ctx.entityMasks[g]![e] ?? 0;
-        while (m !== 0) { const b = 31 - Math.clz32(m); set.add(bits[g]![b]!); m &= ~(1 << b); }
+        while (m !== 0) {
+          const b = 31 - Math.clz32(m);
+          set.add(bits[g]![b]!);
+          m &= ~(1 << b);
+        }
       }
       ctx.entityComponents.set(e, set);
     }
@@ -1077,7 +1261,10 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
     const q = byKey.get(keyOf(d))!; // made above
     done.add(q);
     const rem = idList(qd.toRemove!, lists, 'query');
-    for (const [set, ids] of [[q, idList(qd.dense!, lists, 'query')], [q.toRemove, rem]] as const) {
+    for (const [set, ids] of [
+      [q, idList(qd.dense!, lists, 'query')],
+      [q.toRemove, rem],
+    ] as const) {
       // A set that has not changed since it last held this snapshot's list (taken from this world, or
       // written by an earlier restore of it) is left as it is; any other is compared and written.
       const v = versionOf(set);
@@ -1091,7 +1278,13 @@ function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader
       // left as it is, or written without comparing.
       const twin = holder !== undefined ? twins.get(set) : undefined;
       let changed: boolean;
-      if (holder !== undefined && twin !== undefined && twin.peer === holder.set && twin.version === v && twin.peerVersion === holder.before) {
+      if (
+        holder !== undefined &&
+        twin !== undefined &&
+        twin.peer === holder.set &&
+        twin.version === v &&
+        twin.peerVersion === holder.before
+      ) {
         changed = holder.changed;
         if (changed) setContent(set, ids, false);
       } else {
@@ -1261,12 +1454,20 @@ export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnaps
  */
 export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   const where = 'restore';
-  if (snap === null || typeof snap !== 'object' || snap.header === null || typeof snap.header !== 'object' || !Array.isArray(snap.buffers)) {
+  if (
+    snap === null ||
+    typeof snap !== 'object' ||
+    snap.header === null ||
+    typeof snap.header !== 'object' ||
+    !Array.isArray(snap.buffers)
+  ) {
     throw new RangeError(`${where}: snapshot must be a value returned by snapshot(world), got ${describe(snap)}`);
   }
   const h = snap.header;
   if (h.format !== 'bitphysics-snapshot' || h.version !== 2) {
-    throw new RangeError(`${where}: snapshot must be a bitphysics snapshot of version 2, got format ${describe(h.format)} version ${describe(h.version)}`);
+    throw new RangeError(
+      `${where}: snapshot must be a bitphysics snapshot of version 2, got format ${describe(h.format)} version ${describe(h.version)}`,
+    );
   }
   if (h.dimensions !== world.dimensions || h.capacity !== world.capacity) {
     throw new RangeError(
@@ -1282,29 +1483,42 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   // Check the structure first so a mismatch leaves the world as it was.
   const state = (h.state as Record<string, Encoded>).v as Record<string, Encoded>;
   for (const key of Object.keys(world)) {
-    if (!NOT_STATE.has(key) && !(key in state)) throw new RangeError(`${where}: snapshot has no world.${key} (it was made by another version of bitphysics)`);
+    if (!NOT_STATE.has(key) && !(key in state))
+      throw new RangeError(`${where}: snapshot has no world.${key} (it was made by another version of bitphysics)`);
   }
   for (const ext of externalWorldStates()) {
-    if (!(ext.name in h.external)) throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
+    if (!(ext.name in h.external))
+      throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
   }
   // Id ranges (see IdLists) checked before anything is written.
   const ecsLists = (h.ecs as Record<string, Encoded> | null)?.lists;
   if (Array.isArray(ecsLists)) {
-    ecsLists.forEach((l, i) => { if (isTagged(l) && l.$t === 'range') checkRange(l, i, world.capacity); });
+    ecsLists.forEach((l, i) => {
+      if (isTagged(l) && l.$t === 'range') checkRange(l, i, world.capacity);
+    });
   }
   // Stamp counters (see STAMPED): the world's own, before the snapshot's are written.
   const counters = [...STAMPED.values()].map(({ parent, counter }) => parent(world)[counter]);
   r.objectInto(world as unknown as Record<string, unknown>, state, 'world', NOT_STATE);
   let s = 0;
   for (const { parent, counter } of STAMPED.values()) {
-    const own = counters[s++], target = parent(world);
+    const own = counters[s++],
+      target = parent(world);
     if (typeof own === 'number' && typeof target[counter] === 'number' && own > (target[counter] as number)) target[counter] = own;
   }
   for (const ext of externalWorldStates()) {
     const enc = h.external[ext.name]!;
-    if (enc === null) { ext.clear(world); continue; }
+    if (enc === null) {
+      ext.clear(world);
+      continue;
+    }
     const target = ext.get(world, true)!;
-    r.objectInto(target as Record<string, unknown>, (enc as Record<string, Encoded>).v as Record<string, Encoded>, ext.name, new Set(ext.keep ?? []));
+    r.objectInto(
+      target as Record<string, unknown>,
+      (enc as Record<string, Encoded>).v as Record<string, Encoded>,
+      ext.name,
+      new Set(ext.keep ?? []),
+    );
   }
   restoreEcs(world, h.ecs as Record<string, Encoded>, r, oldMaxId);
 }

@@ -118,16 +118,25 @@ export class LoopChooser {
     let s = this.sites.get(site);
     if (s === undefined) {
       s = {
-        calls: 0, parallelTimes: new Float64Array(WINDOW).fill(NaN),
-        serialTimes: new Float64Array(WINDOW).fill(NaN), parallelNext: 0, serialNext: 0,
-        preferred: null, period: MIN_PROBE_PERIOD, since: 0, probing: false, checking: false,
-        parallelCalls: new Float64Array(WINDOW), serialCalls: new Float64Array(WINDOW),
+        calls: 0,
+        parallelTimes: new Float64Array(WINDOW).fill(NaN),
+        serialTimes: new Float64Array(WINDOW).fill(NaN),
+        parallelNext: 0,
+        serialNext: 0,
+        preferred: null,
+        period: MIN_PROBE_PERIOD,
+        since: 0,
+        probing: false,
+        checking: false,
+        parallelCalls: new Float64Array(WINDOW),
+        serialCalls: new Float64Array(WINDOW),
       };
       this.sites.set(site, s);
     }
     const c = s.calls;
     if (c < 3) return true;
-    const parallel = least(s.parallelTimes, s.parallelCalls, c), serial = least(s.serialTimes, s.serialCalls, c);
+    const parallel = least(s.parallelTimes, s.parallelCalls, c),
+      serial = least(s.serialTimes, s.serialCalls, c);
     if (c < 5 || Number.isNaN(serial)) return false;
     if (Number.isNaN(parallel)) return true;
     const preferParallel = prefers(s.preferred, parallel, serial);
@@ -135,10 +144,19 @@ export class LoopChooser {
       // The preferred way's own calls got slower. If the other way's newest time is older than
       // MIN_PROBE_PERIOD calls, this call runs it as a probe: its time then decides (record).
       const otherAt = s.preferred ? newestCall(s.serialTimes, s.serialCalls) : newestCall(s.parallelTimes, s.parallelCalls);
-      if (c - otherAt > MIN_PROBE_PERIOD) { s.probing = true; s.checking = true; s.since = 0; return preferParallel; }
+      if (c - otherAt > MIN_PROBE_PERIOD) {
+        s.probing = true;
+        s.checking = true;
+        s.since = 0;
+        return preferParallel;
+      }
     }
     // A change of the preferred way is checked back on soon.
-    if (s.preferred !== preferParallel) { s.preferred = preferParallel; s.period = MIN_PROBE_PERIOD; s.since = 0; }
+    if (s.preferred !== preferParallel) {
+      s.preferred = preferParallel;
+      s.period = MIN_PROBE_PERIOD;
+      s.since = 0;
+    }
     s.probing = ++s.since >= s.period;
     if (!s.probing) return preferParallel;
     s.since = 0;
@@ -149,7 +167,10 @@ export class LoopChooser {
   record(site: string, parallel: boolean, ms: number, n: number): void {
     const s = this.sites.get(site);
     if (s === undefined) return;
-    const first = s.calls === 0, probe = s.probing, checking = s.checking, call = s.calls;
+    const first = s.calls === 0,
+      probe = s.probing,
+      checking = s.checking,
+      call = s.calls;
     s.calls++;
     s.probing = false;
     s.checking = false;
@@ -163,21 +184,28 @@ export class LoopChooser {
     const at = checking ? 0 : parallel ? s.parallelNext : s.serialNext;
     times[at] = v;
     (parallel ? s.parallelCalls : s.serialCalls)[at] = call;
-    if (parallel) s.parallelNext = (at + 1) % WINDOW; else s.serialNext = (at + 1) % WINDOW;
+    if (parallel) s.parallelNext = (at + 1) % WINDOW;
+    else s.serialNext = (at + 1) % WINDOW;
     if (!probe) return;
     // A probe: the choice confirmed backs off; a changed one is checked back on soon (the probe that
     // made the change counts as the first call of the new way when it checked a switch).
-    const a = least(s.parallelTimes, s.parallelCalls, s.calls), b = least(s.serialTimes, s.serialCalls, s.calls);
+    const a = least(s.parallelTimes, s.parallelCalls, s.calls),
+      b = least(s.serialTimes, s.serialCalls, s.calls);
     const p = prefers(s.preferred, a, b);
     if (p === s.preferred) s.period = nextProbePeriod(s.period, a, b);
-    else { s.preferred = p; s.period = MIN_PROBE_PERIOD; s.since = checking ? 1 : 0; }
+    else {
+      s.preferred = p;
+      s.period = MIN_PROBE_PERIOD;
+      s.since = checking ? 1 : 0;
+    }
   }
 
   /** The current preference of `site`: true threads, false one thread, null not decided yet. */
   preference(site: string): boolean | null {
     const s = this.sites.get(site);
     if (s === undefined) return null;
-    const parallel = least(s.parallelTimes, s.parallelCalls, s.calls), serial = least(s.serialTimes, s.serialCalls, s.calls);
+    const parallel = least(s.parallelTimes, s.parallelCalls, s.calls),
+      serial = least(s.serialTimes, s.serialCalls, s.calls);
     if (Number.isNaN(parallel) || Number.isNaN(serial)) return null;
     return parallel <= serial;
   }
@@ -198,12 +226,17 @@ function prefers(was: boolean | null, a: number, b: number): boolean {
  * last MAX_AGE calls (`calls`: the call of each), or its newest time when none is (NaN when it has none).
  */
 function least(times: Float64Array, calls: Float64Array, now: number): number {
-  let est = Infinity, newest = NaN, at = -1;
+  let est = Infinity,
+    newest = NaN,
+    at = -1;
   for (let k = 0; k < times.length; k++) {
     const t = times[k]!;
     if (t !== t) continue; // NaN: no time
     if (now - calls[k]! <= MAX_AGE && t < est) est = t;
-    if (calls[k]! > at) { at = calls[k]!; newest = t; }
+    if (calls[k]! > at) {
+      at = calls[k]!;
+      newest = t;
+    }
   }
   return est === Infinity ? newest : est;
 }

@@ -63,7 +63,9 @@ export class RangeBalance {
    * out[at .. at + threads] (out[at] = 0, out[at + threads] = n, non-decreasing).
    */
   bounds(kernel: number, n: number, out: Int32Array, at: number): void {
-    const t = this.threads, sh = this.shares, o = kernel * t;
+    const t = this.threads,
+      sh = this.shares,
+      o = kernel * t;
     const balanced = kernel < MAX_KERNELS && n >= BALANCE_MIN_PER_THREAD * t;
     out[at] = 0;
     let acc = 0;
@@ -82,7 +84,9 @@ export class RangeBalance {
   record(kernel: number, n: number, start: number, own: number, finished: Float64Array): void {
     const t = this.threads;
     if (this.held || kernel >= MAX_KERNELS || n < BALANCE_MIN_PER_THREAD * t) return;
-    const sh = this.shares, o = kernel * t, speed = this.speed;
+    const sh = this.shares,
+      o = kernel * t,
+      speed = this.speed;
     let sum = 0;
     for (let i = 0; i < t; i++) {
       const time = (i === 0 ? own : finished[i]!) - start;
@@ -108,7 +112,11 @@ export class RangeBalance {
    */
   hold(shares: ArrayLike<number> | null): void {
     const t = this.threads;
-    if (shares === null) { this.held = false; this.shares.fill(1 / t); return; }
+    if (shares === null) {
+      this.held = false;
+      this.shares.fill(1 / t);
+      return;
+    }
     let sum = 0;
     for (let i = 0; i < shares.length; i++) {
       const v = shares[i]!;
@@ -116,7 +124,9 @@ export class RangeBalance {
       sum += v;
     }
     if (shares.length !== t || Math.abs(sum - 1) > 1e-9) {
-      throw new RangeError(`RangeBalance.hold: shares must be ${t} numbers (one a thread) summing to 1, got ${shares.length} summing to ${sum}`);
+      throw new RangeError(
+        `RangeBalance.hold: shares must be ${t} numbers (one a thread) summing to 1, got ${shares.length} summing to ${sum}`,
+      );
     }
     for (let k = 0; k < MAX_KERNELS; k++) for (let i = 0; i < t; i++) this.shares[k * t + i] = shares[i]!;
     this.held = true;

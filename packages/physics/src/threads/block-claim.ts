@@ -18,20 +18,28 @@
  * to 0 before a unit's first call.
  */
 export function claimBlock(claim: Int32Array, base: number, count: number, part: number, threads: number, cursor: Int32Array): number {
-  let sh = cursor[0]!, k = cursor[1]!;
+  let sh = cursor[0]!,
+    k = cursor[1]!;
   while (sh < threads) {
     const t = (part + sh) % threads;
-    const s0 = Math.floor((count * t) / threads), s1 = Math.floor((count * (t + 1)) / threads);
+    const s0 = Math.floor((count * t) / threads),
+      s1 = Math.floor((count * (t + 1)) / threads);
     if (k < s1 - s0) {
       const blk = sh === 0 ? s0 + k : s1 - 1 - k;
       if (Atomics.load(claim, base + blk) === 0 && Atomics.compareExchange(claim, base + blk, 0, 1) === 0) {
-        cursor[0] = sh; cursor[1] = k + 1;
+        cursor[0] = sh;
+        cursor[1] = k + 1;
         return blk;
       }
-      if (sh !== 0) { k++; continue; }
+      if (sh !== 0) {
+        k++;
+        continue;
+      }
     }
-    sh++; k = 0;
+    sh++;
+    k = 0;
   }
-  cursor[0] = sh; cursor[1] = 0;
+  cursor[0] = sh;
+  cursor[1] = 0;
   return -1;
 }

@@ -13,12 +13,20 @@ export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint16Array 
  * (the thread's index in the pool, 0 for the calling thread), for kernels that write one result a
  * range. Returns a number the caller sums over the ranges.
  */
-export type Kernel = (A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number, helpers: readonly KernelHelper[]) => number;
+export type Kernel = (
+  A: KernelArray[],
+  P: Float64Array,
+  ids: Int32Array | null,
+  lo: number,
+  hi: number,
+  part: number,
+  helpers: readonly KernelHelper[],
+) => number;
 
 /**
  * A function a kernel calls (kernels.ts KERNEL_HELPERS), self-contained like a kernel; every caller of a
  * kernel passes the list as its last argument (the workers their own copies, from source text), so a
  * kernel reaches its helpers by index and names nothing outside itself.
  */
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: helpers take any typed arrays and numbers
 export type KernelHelper = (...args: any[]) => unknown;

@@ -14,20 +14,28 @@
  *   these same rules.
  */
 
-import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
-import { claimBlock } from './block-claim.js';
-import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
-import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
 import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
-import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
 import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
-import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
-import { stripCut2D } from '../collision/contact-strips-kernel.js';
 import { stripLayout2D, stripPlan2D } from '../collision/contact-strip-plan-kernel.js';
-import { warmStartTable } from '../collision/warm-start-kernel.js';
+import { stripCut2D } from '../collision/contact-strips-kernel.js';
+import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
+import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
 import {
-  approach2D, containBodies2D, deepestRow2D, finishBodies2D, finishBodyRows2D, gatherFill2D, restitutionColored2D, restitutionRows2D, restitutionTargets2D,
+  approach2D,
+  containBodies2D,
+  deepestRow2D,
+  finishBodies2D,
+  finishBodyRows2D,
+  gatherFill2D,
+  restitutionColored2D,
+  restitutionRows2D,
+  restitutionTargets2D,
 } from '../collision/solver-stages-kernel.js';
+import { warmStartTable } from '../collision/warm-start-kernel.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
+import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
+import { claimBlock } from './block-claim.js';
+import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
 export type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
@@ -36,10 +44,20 @@ export type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
  * A: px, py, vx, vy, ox, oy, fx, fy, im. P: h, gxh, gyh, hx, hy. Returns the finiteness check sum.
  */
 function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
-  const ox = A[4] as Float64Array, oy = A[5] as Float64Array, fx = A[6] as Float64Array, fy = A[7] as Float64Array;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array,
+    oy = A[5] as Float64Array,
+    fx = A[6] as Float64Array,
+    fy = A[7] as Float64Array;
   const im = A[8] as Float64Array;
-  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, hx = P[3]!, hy = P[4]!;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    hx = P[3]!,
+    hy = P[4]!;
   const list = ids as Int32Array;
   let check = 0;
   for (let i = lo; i < hi; i++) {
@@ -47,11 +65,15 @@ function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
     const w = im[e]! * h;
     const nvx = vx[e]! + fx[e]! * w + gxh;
     const nvy = vy[e]! + fy[e]! * w + gyh;
-    const x = px[e]!, y = py[e]!;
-    ox[e] = x; oy[e] = y;
-    vx[e] = nvx; vy[e] = nvy;
+    const x = px[e]!,
+      y = py[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    vx[e] = nvx;
+    vy[e] = nvy;
     const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
-    px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h;
+    px[e] = x + (nvx - k * hx) * h;
+    py[e] = y + (nvy - k * hy) * h;
     check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
   }
   return check;
@@ -62,12 +84,26 @@ function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * A: px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im. P: h, gxh, gyh, gzh, hx, hy, hz.
  */
 function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
-  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
-  const ox = A[6] as Float64Array, oy = A[7] as Float64Array, oz = A[8] as Float64Array;
-  const fx = A[9] as Float64Array, fy = A[10] as Float64Array, fz = A[11] as Float64Array;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array,
+    vy = A[4] as Float64Array,
+    vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array,
+    oy = A[7] as Float64Array,
+    oz = A[8] as Float64Array;
+  const fx = A[9] as Float64Array,
+    fy = A[10] as Float64Array,
+    fz = A[11] as Float64Array;
   const im = A[12] as Float64Array;
-  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, gzh = P[3]!, hx = P[4]!, hy = P[5]!, hz = P[6]!;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    gzh = P[3]!,
+    hx = P[4]!,
+    hy = P[5]!,
+    hz = P[6]!;
   const list = ids as Int32Array;
   let check = 0;
   for (let i = lo; i < hi; i++) {
@@ -76,11 +112,19 @@ function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
     const nvx = vx[e]! + fx[e]! * w + gxh;
     const nvy = vy[e]! + fy[e]! * w + gyh;
     const nvz = vz[e]! + fz[e]! * w + gzh;
-    const x = px[e]!, y = py[e]!, z = pz[e]!;
-    ox[e] = x; oy[e] = y; oz[e] = z;
-    vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
+    const x = px[e]!,
+      y = py[e]!,
+      z = pz[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    oz[e] = z;
+    vx[e] = nvx;
+    vy[e] = nvy;
+    vz[e] = nvz;
     const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
-    px[e] = x + (nvx - k * hx) * h; py[e] = y + (nvy - k * hy) * h; pz[e] = z + (nvz - k * hz) * h;
+    px[e] = x + (nvx - k * hx) * h;
+    py[e] = y + (nvy - k * hy) * h;
+    pz[e] = z + (nvz - k * hz) * h;
     check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
   }
   return check;
@@ -91,34 +135,58 @@ function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * P: h, gxh, gyh, hx, hy, save (1: keep PreviousPosition). ids null: entities lo + 1 .. hi.
  */
 function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, vx = A[2] as Float64Array, vy = A[3] as Float64Array;
-  const ox = A[4] as Float64Array, oy = A[5] as Float64Array;
-  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, hx = P[3]!, hy = P[4]!, save = P[5] === 1;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array,
+    oy = A[5] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    hx = P[3]!,
+    hy = P[4]!,
+    save = P[5] === 1;
   let check = 0;
   if (ids === null && save) {
     for (let e = lo + 1; e <= hi; e++) {
-      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-      const x = px[e]!, y = py[e]!;
-      ox[e] = x; oy[e] = y;
-      vx[e] = nvx; vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else if (ids === null) {
     for (let e = lo + 1; e <= hi; e++) {
-      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-      vx[e] = nvx; vy[e] = nvy;
-      px[e] = px[e]! + (nvx - hx) * h; py[e] = py[e]! + (nvy - hy) * h;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = px[e]! + (nvx - hx) * h;
+      py[e] = py[e]! + (nvy - hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   } else {
     for (let i = lo; i < hi; i++) {
       const e = ids[i]!;
-      const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh;
-      const x = px[e]!, y = py[e]!;
-      if (save) { ox[e] = x; oy[e] = y; }
-      vx[e] = nvx; vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      if (save) {
+        ox[e] = x;
+        oy[e] = y;
+      }
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
       check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
     }
   }
@@ -130,18 +198,43 @@ function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo:
  * P: h, gxh, gyh, gzh, hx, hy, hz, save. ids null: entities lo + 1 .. hi.
  */
 function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array, py = A[1] as Float64Array, pz = A[2] as Float64Array;
-  const vx = A[3] as Float64Array, vy = A[4] as Float64Array, vz = A[5] as Float64Array;
-  const ox = A[6] as Float64Array, oy = A[7] as Float64Array, oz = A[8] as Float64Array;
-  const h = P[0]!, gxh = P[1]!, gyh = P[2]!, gzh = P[3]!, hx = P[4]!, hy = P[5]!, hz = P[6]!, save = P[7] === 1;
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array,
+    vy = A[4] as Float64Array,
+    vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array,
+    oy = A[7] as Float64Array,
+    oz = A[8] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    gzh = P[3]!,
+    hx = P[4]!,
+    hy = P[5]!,
+    hz = P[6]!,
+    save = P[7] === 1;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const e = ids === null ? i + 1 : ids[i]!;
-    const nvx = vx[e]! + gxh, nvy = vy[e]! + gyh, nvz = vz[e]! + gzh;
-    const x = px[e]!, y = py[e]!, z = pz[e]!;
-    if (save) { ox[e] = x; oy[e] = y; oz[e] = z; }
-    vx[e] = nvx; vy[e] = nvy; vz[e] = nvz;
-    px[e] = x + (nvx - hx) * h; py[e] = y + (nvy - hy) * h; pz[e] = z + (nvz - hz) * h;
+    const nvx = vx[e]! + gxh,
+      nvy = vy[e]! + gyh,
+      nvz = vz[e]! + gzh;
+    const x = px[e]!,
+      y = py[e]!,
+      z = pz[e]!;
+    if (save) {
+      ox[e] = x;
+      oy[e] = y;
+      oz[e] = z;
+    }
+    vx[e] = nvx;
+    vy[e] = nvy;
+    vz[e] = nvz;
+    px[e] = x + (nvx - hx) * h;
+    py[e] = y + (nvy - hy) * h;
+    pz[e] = z + (nvz - hz) * h;
     check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
   }
   return check;
@@ -151,14 +244,21 @@ function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo:
  * Per-body gravity scale (forces/gravity.ts): F += (s - 1) m g. A: s, m, fx, fy, fz. P: gx, gy, gz. Returns 0.
  */
 function gravityScale(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const s = A[0] as Float64Array, m = A[1] as Float64Array;
-  const fx = A[2] as Float64Array, fy = A[3] as Float64Array, fz = A[4] as Float64Array;
-  const gx = P[0]!, gy = P[1]!, gz = P[2]!;
+  const s = A[0] as Float64Array,
+    m = A[1] as Float64Array;
+  const fx = A[2] as Float64Array,
+    fy = A[3] as Float64Array,
+    fz = A[4] as Float64Array;
+  const gx = P[0]!,
+    gy = P[1]!,
+    gz = P[2]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     const k = (s[e]! - 1) * m[e]!;
-    fx[e] = fx[e]! + k * gx; fy[e] = fy[e]! + k * gy; fz[e] = fz[e]! + k * gz;
+    fx[e] = fx[e]! + k * gx;
+    fy[e] = fy[e]! + k * gy;
+    fz[e] = fz[e]! + k * gz;
   }
   return 0;
 }
@@ -168,17 +268,27 @@ function gravityScale(A: KernelArray[], P: Float64Array, ids: Int32Array | null,
  * left to the exact decay). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit. Returns the count of stiff bodies.
  */
 function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
-  const vx = A[2] as Float64Array, vy = A[3] as Float64Array, vz = A[4] as Float64Array;
-  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array,
+    vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
   const limit = P[0]!;
   const list = ids as Int32Array;
   let stiff = 0;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     const c = k[e]!;
-    if (c * inv[e]! >= limit) { stiff++; continue; }
-    fx[e] = fx[e]! - c * vx[e]!; fy[e] = fy[e]! - c * vy[e]!; fz[e] = fz[e]! - c * vz[e]!;
+    if (c * inv[e]! >= limit) {
+      stiff++;
+      continue;
+    }
+    fx[e] = fx[e]! - c * vx[e]!;
+    fy[e] = fy[e]! - c * vy[e]!;
+    fz[e] = fz[e]! - c * vz[e]!;
   }
   return stiff;
 }
@@ -189,18 +299,30 @@ function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | nul
  * fz. P: limit. Returns the count of stiff bodies.
  */
 function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
-  const vx = A[2] as Float64Array, vy = A[3] as Float64Array, vz = A[4] as Float64Array;
-  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array,
+    vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
   const limit = P[0]!;
   const list = ids as Int32Array;
   let stiff = 0;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
-    const x = vx[e]!, y = vy[e]!, z = vz[e]!;
+    const x = vx[e]!,
+      y = vy[e]!,
+      z = vz[e]!;
     const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-    if (c * inv[e]! >= limit) { stiff++; continue; }
-    fx[e] = fx[e]! - c * x; fy[e] = fy[e]! - c * y; fz[e] = fz[e]! - c * z;
+    if (c * inv[e]! >= limit) {
+      stiff++;
+      continue;
+    }
+    fx[e] = fx[e]! - c * x;
+    fy[e] = fy[e]! - c * y;
+    fz[e] = fz[e]! - c * z;
   }
   return stiff;
 }
@@ -211,17 +333,28 @@ function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | 
  * Returns the count of stiff bodies.
  */
 function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const k = A[0] as Float64Array, inv = A[1] as Float64Array;
-  const wx = A[2] as Float64Array, wy = A[3] as Float64Array, wz = A[4] as Float64Array;
-  const tx = A[5] as Float64Array, ty = A[6] as Float64Array, tz = A[7] as Float64Array;
-  const h = P[0]!, rate = P[1]!;
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const wx = A[2] as Float64Array,
+    wy = A[3] as Float64Array,
+    wz = A[4] as Float64Array;
+  const tx = A[5] as Float64Array,
+    ty = A[6] as Float64Array,
+    tz = A[7] as Float64Array;
+  const h = P[0]!,
+    rate = P[1]!;
   const list = ids as Int32Array;
   let stiff = 0;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     const d = k[e]!;
-    if (d * inv[e]! * h >= rate) { stiff++; continue; }
-    tx[e] = tx[e]! - d * wx[e]!; ty[e] = ty[e]! - d * wy[e]!; tz[e] = tz[e]! - d * wz[e]!;
+    if (d * inv[e]! * h >= rate) {
+      stiff++;
+      continue;
+    }
+    tx[e] = tx[e]! - d * wx[e]!;
+    ty[e] = ty[e]! - d * wy[e]!;
+    tz[e] = tz[e]! - d * wz[e]!;
   }
   return stiff;
 }
@@ -231,18 +364,30 @@ function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array
  * (CentralForce), px, py, pz, fx, fy, fz. P unused. Returns 0.
  */
 function centralForce(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const cx = A[0] as Float64Array, cy = A[1] as Float64Array, cz = A[2] as Float64Array, K = A[3] as Float64Array, N = A[4] as Float64Array;
-  const px = A[5] as Float64Array, py = A[6] as Float64Array, pz = A[7] as Float64Array;
-  const fx = A[8] as Float64Array, fy = A[9] as Float64Array, fz = A[10] as Float64Array;
+  const cx = A[0] as Float64Array,
+    cy = A[1] as Float64Array,
+    cz = A[2] as Float64Array,
+    K = A[3] as Float64Array,
+    N = A[4] as Float64Array;
+  const px = A[5] as Float64Array,
+    py = A[6] as Float64Array,
+    pz = A[7] as Float64Array;
+  const fx = A[8] as Float64Array,
+    fy = A[9] as Float64Array,
+    fz = A[10] as Float64Array;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
-    const dx = px[e]! - cx[e]!, dy = py[e]! - cy[e]!, dz = pz[e]! - cz[e]!;
+    const dx = px[e]! - cx[e]!,
+      dy = py[e]! - cy[e]!,
+      dz = pz[e]! - cz[e]!;
     const r2 = dx * dx + dy * dy + dz * dz;
     if (r2 === 0) continue;
     const n = N[e]!;
-    const k = K[e]! * (n === 2 ? 1 : Math.pow(r2, 0.5 * (n - 2)));
-    fx[e] = fx[e]! + k * dx; fy[e] = fy[e]! + k * dy; fz[e] = fz[e]! + k * dz;
+    const k = K[e]! * (n === 2 ? 1 : r2 ** (0.5 * (n - 2)));
+    fx[e] = fx[e]! + k * dx;
+    fy[e] = fy[e]! + k * dy;
+    fz[e] = fz[e]! + k * dz;
   }
   return P.length * 0;
 }
@@ -255,8 +400,13 @@ function centralForce(A: KernelArray[], P: Float64Array, ids: Int32Array | null,
  */
 function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const S = A[0] as Float64Array;
-  const px = A[1] as Float64Array, py = A[2] as Float64Array, pz = A[3] as Float64Array, m = A[4] as Float64Array;
-  const fx = A[5] as Float64Array, fy = A[6] as Float64Array, fz = A[7] as Float64Array;
+  const px = A[1] as Float64Array,
+    py = A[2] as Float64Array,
+    pz = A[3] as Float64Array,
+    m = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
   const ns = P[0]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
@@ -264,11 +414,15 @@ function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
     for (let s = 0; s < ns; s++) {
       const o = s * 6;
       if (b === S[o]) continue;
-      const dx = px[b]! - S[o + 1]!, dy = py[b]! - S[o + 2]!, dz = pz[b]! - S[o + 3]!;
+      const dx = px[b]! - S[o + 1]!,
+        dy = py[b]! - S[o + 2]!,
+        dz = pz[b]! - S[o + 3]!;
       const r2 = dx * dx + dy * dy + dz * dz + S[o + 5]!;
       if (r2 === 0) continue;
       const k = (-S[o + 4]! * m[b]!) / (r2 * Math.sqrt(r2));
-      fx[b] = fx[b]! + k * dx; fy[b] = fy[b]! + k * dy; fz[b] = fz[b]! + k * dz;
+      fx[b] = fx[b]! + k * dx;
+      fy[b] = fy[b]! + k * dy;
+      fz[b] = fz[b]! + k * dz;
     }
   }
   return 0;
@@ -291,10 +445,36 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
 
 /** Kernel numbers: the index of each kernel in `KERNELS`. */
 export const KERNEL = Object.freeze({
-  sieForced2: 0, sieForced3: 1, sieFree2: 2, sieFree3: 3, gravityScale: 4, linearDragCalm: 5, test: 6, finiteProbe: 7,
-  barnesHutWalk2: 8, barnesHutWalk3: 9, treeGather: 10, mortonKeysHist: 11, treeForces: 12,
-  quadraticDragCalm: 13, angularDampingScalar: 14, ballPairs: 15, ballContacts: 16, mortonBucketSort: 17, treeMoments: 18, mortonScatter: 19, centralForce: 20, attractors: 21, solveColored2D: 22, prepareContacts2D: 23,
-  gatherFill2D: 24, approach2D: 25, finishBodies2D: 26, restitutionColored2D: 27, stripCut2D: 28, warmStartTable: 29,
+  sieForced2: 0,
+  sieForced3: 1,
+  sieFree2: 2,
+  sieFree3: 3,
+  gravityScale: 4,
+  linearDragCalm: 5,
+  test: 6,
+  finiteProbe: 7,
+  barnesHutWalk2: 8,
+  barnesHutWalk3: 9,
+  treeGather: 10,
+  mortonKeysHist: 11,
+  treeForces: 12,
+  quadraticDragCalm: 13,
+  angularDampingScalar: 14,
+  ballPairs: 15,
+  ballContacts: 16,
+  mortonBucketSort: 17,
+  treeMoments: 18,
+  mortonScatter: 19,
+  centralForce: 20,
+  attractors: 21,
+  solveColored2D: 22,
+  prepareContacts2D: 23,
+  gatherFill2D: 24,
+  approach2D: 25,
+  finishBodies2D: 26,
+  restitutionColored2D: 27,
+  stripCut2D: 28,
+  warmStartTable: 29,
   stripPlan2D: 30,
 });
 
@@ -308,7 +488,7 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
   const bad = P[1]!;
   let sum = 0;
   for (let i = lo; i < hi; i++) {
-    if (i === bad) throw new Error('test kernel: index ' + i + ' is the bad index');
+    if (i === bad) throw new Error(`test kernel: index ${i} is the bad index`);
     out[i] = i * P[0]!;
     sum += i;
   }
@@ -327,13 +507,52 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
-  coloredPack2D, coloredUnpack2D, coloredBodies2D, coloredRows2D, finishBodyRows2D, containBodies2D, deepestRow2D,
-  restitutionTargets2D, restitutionRows2D, claimBlock, stripCut2D, stripLayout2D, approach2D,
+  coloredPack2D,
+  coloredUnpack2D,
+  coloredBodies2D,
+  coloredRows2D,
+  finishBodyRows2D,
+  containBodies2D,
+  deepestRow2D,
+  restitutionTargets2D,
+  restitutionRows2D,
+  claimBlock,
+  stripCut2D,
+  stripLayout2D,
+  approach2D,
 ]);
 
 /** Every kernel, indexed by `KERNEL`. */
 export const KERNELS: readonly Kernel[] = Object.freeze([
-  sieForced2, sieForced3, sieFree2, sieFree3, gravityScale, linearDragCalm, testKernel, finiteProbe, barnesHutWalk2, barnesHutWalk3,
-  treeGather, mortonKeysHist, treeForces, quadraticDragCalm, angularDampingScalar, ballPairs, ballContacts, mortonBucketSort, treeMoments, mortonScatter, centralForce, attractors, solveColored2D, prepareContacts2D,
-  gatherFill2D, approach2D, finishBodies2D, restitutionColored2D, stripCut2D, warmStartTable, stripPlan2D,
+  sieForced2,
+  sieForced3,
+  sieFree2,
+  sieFree3,
+  gravityScale,
+  linearDragCalm,
+  testKernel,
+  finiteProbe,
+  barnesHutWalk2,
+  barnesHutWalk3,
+  treeGather,
+  mortonKeysHist,
+  treeForces,
+  quadraticDragCalm,
+  angularDampingScalar,
+  ballPairs,
+  ballContacts,
+  mortonBucketSort,
+  treeMoments,
+  mortonScatter,
+  centralForce,
+  attractors,
+  solveColored2D,
+  prepareContacts2D,
+  gatherFill2D,
+  approach2D,
+  finishBodies2D,
+  restitutionColored2D,
+  stripCut2D,
+  warmStartTable,
+  stripPlan2D,
 ]);

@@ -9,10 +9,10 @@
  */
 
 import type { PhysicsWorld } from '../world.js';
-import { isShared, type ThreadPool } from './pool.js';
-import { KERNEL_HELPERS, KERNELS } from './kernels.js';
 import { nowMs } from './adaptive.js';
 import type { KernelArray } from './kernels.js';
+import { KERNEL_HELPERS, KERNELS } from './kernels.js';
+import { isShared, type ThreadPool } from './pool.js';
 
 /**
  * Fewest entities per thread for a loop to run on several threads. Waking a worker and waiting for
@@ -31,8 +31,13 @@ export const MIN_PARALLEL_PER_THREAD = 8192;
  * @throws Error naming `system` if a worker's range threw.
  */
 export function runParallel(
-  world: PhysicsWorld, system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>,
-  n: number, ids: ArrayLike<number> | null,
+  world: PhysicsWorld,
+  system: string,
+  kernel: number,
+  arrays: KernelArray[],
+  params: ArrayLike<number>,
+  n: number,
+  ids: ArrayLike<number> | null,
 ): number | null {
   return runOnPool(world.threadPool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
 }
@@ -44,8 +49,14 @@ export function runParallel(
  * @throws Error naming `system` if a worker's range threw.
  */
 export function runOnPool(
-  pool: ThreadPool | null, system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>,
-  n: number, ids: ArrayLike<number> | null, minPerThread: number,
+  pool: ThreadPool | null,
+  system: string,
+  kernel: number,
+  arrays: KernelArray[],
+  params: ArrayLike<number>,
+  n: number,
+  ids: ArrayLike<number> | null,
+  minPerThread: number,
 ): number | null {
   if (pool === null || pool.threads > MAX_POOL_PARTS || n < minPerThread * pool.threads) return null;
   for (let i = 0; i < arrays.length; i++) if (!isShared(arrays[i]!)) return null;
@@ -53,7 +64,7 @@ export function runOnPool(
   if (!pool.adaptive) return pool.run(system, kernel, arrays, params, n, ids);
   // Threads or this thread alone, whichever has been faster for this loop (threads/adaptive.ts); the
   // same kernel either way, so the result does not depend on the choice.
-  const site = system + '#' + kernel;
+  const site = `${system}#${kernel}`;
   const parallel = pool.chooser.choose(site);
   const t0 = nowMs();
   const result = parallel

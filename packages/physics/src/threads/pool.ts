@@ -11,11 +11,11 @@
  * `dispose` stops and terminates them.
  */
 
+import { LoopChooser } from './adaptive.js';
+import { epochMs, RangeBalance } from './balance.js';
 import { KERNEL_HELPERS, KERNELS, type KernelArray } from './kernels.js';
 import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
 import { workerSource } from './worker-source.js';
-import { LoopChooser } from './adaptive.js';
-import { epochMs, RangeBalance } from './balance.js';
 
 /** The least a worker must offer: Node's Worker and the browser's Worker both do. */
 interface AnyWorker {
@@ -91,7 +91,9 @@ function defaultWorkerFactory(): WorkerFactory | null {
     return (source) => new wt.Worker(source, { eval: true });
   }
   if (typeof g.Worker === 'function' && typeof g.Blob === 'function' && g.URL !== undefined) {
-    const W = g.Worker, B = g.Blob, U = g.URL;
+    const W = g.Worker,
+      B = g.Blob,
+      U = g.URL;
     let url: string | null = null;
     return (source) => {
       url ??= U.createObjectURL(new B([source], { type: 'text/javascript' }));
@@ -149,7 +151,8 @@ export class ThreadPool {
     return this.ctl[CONTROL.SPIN]!;
   }
   set idleSpin(us: number) {
-    if (!Number.isInteger(us) || us < 0 || us > 1e6) throw new RangeError(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${us}`);
+    if (!Number.isInteger(us) || us < 0 || us > 1e6)
+      throw new RangeError(`ThreadPool.idleSpin: microseconds must be an integer in [0, 1e6], got ${us}`);
     this.ctl[CONTROL.SPIN] = us;
   }
 
@@ -176,17 +179,28 @@ export class ThreadPool {
       };
       if (typeof w.on === 'function') w.on('error', died);
       else w.onerror = died;
-      const msg: PoolMessage = { type: 'init', index: i, ctl: this.ctl, params: this.params, results: this.results, finished: this.finished, errorText: this.errorText };
+      const msg: PoolMessage = {
+        type: 'init',
+        index: i,
+        ctl: this.ctl,
+        params: this.params,
+        results: this.results,
+        finished: this.finished,
+        errorText: this.errorText,
+      };
       w.postMessage(msg);
       this.workers.push(w);
     }
     // Each worker posts one 'ready' message once it has joined the control buffer (no timer: the
     // physics package uses none); dispose resolves the promise too.
-    const ctl = this.ctl, want = threads - 1;
-    started.push(new Promise<void>((resolve) => {
-      this.resolveReady = resolve;
-      if (Atomics.load(ctl, CONTROL.READY) >= want) resolve();
-    }));
+    const ctl = this.ctl,
+      want = threads - 1;
+    started.push(
+      new Promise<void>((resolve) => {
+        this.resolveReady = resolve;
+        if (Atomics.load(ctl, CONTROL.READY) >= want) resolve();
+      }),
+    );
     for (const w of this.workers) {
       const onReady = (m: unknown): void => {
         if ((m as { type?: unknown } | null)?.type !== 'ready') return;
@@ -255,7 +269,8 @@ export class ThreadPool {
     this.dispatch(COMMAND.RUN);
     this.runs++;
     const t = this.threads;
-    let own: number, t1 = t0;
+    let own: number,
+      t1 = t0;
     try {
       own = KERNELS[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
       t1 = epochMs();
@@ -276,7 +291,8 @@ export class ThreadPool {
    */
   private setUp(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, idsId: number): void {
     if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
-    if (params.length > MAX_PARAMS) throw new RangeError(`${system}: a kernel takes at most ${MAX_PARAMS} parameters, got ${params.length}`);
+    if (params.length > MAX_PARAMS)
+      throw new RangeError(`${system}: a kernel takes at most ${MAX_PARAMS} parameters, got ${params.length}`);
     const ctl = this.ctl;
     for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
     this.sync();
@@ -304,7 +320,8 @@ export class ThreadPool {
     if (this.workers.length === 0 || !this.usable()) throw new RangeError(`${system}: ThreadPool.start needs a usable worker`);
     this.setUp(system, kernel, arrays, params, -1);
     const ctl = this.ctl;
-    ctl[CONTROL.BOUNDS] = 0; ctl[CONTROL.BOUNDS + 1] = 0;
+    ctl[CONTROL.BOUNDS] = 0;
+    ctl[CONTROL.BOUNDS + 1] = 0;
     for (let i = 2; i <= this.threads; i++) ctl[CONTROL.BOUNDS + i] = n;
     this.started = system;
     this.dispatch(COMMAND.RUN);
@@ -389,7 +406,9 @@ export class ThreadPool {
     if (this.blocking) {
       while ((p = Atomics.load(ctl, CONTROL.PENDING)) !== 0) Atomics.wait(ctl, CONTROL.PENDING, p);
     } else {
-      while (Atomics.load(ctl, CONTROL.PENDING) !== 0) { /* a browser's main thread may not wait: spin */ }
+      while (Atomics.load(ctl, CONTROL.PENDING) !== 0) {
+        /* a browser's main thread may not wait: spin */
+      }
     }
   }
 }
@@ -401,9 +420,14 @@ export class ThreadPool {
  */
 export function createThreadPool(where: string, threads: number): ThreadPool {
   if (!sharedMemoryAvailable()) {
-    throw new Error(`${where}: threads > 1 needs SharedArrayBuffer (in a browser, serve the page cross-origin isolated: Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp)`);
+    throw new Error(
+      `${where}: threads > 1 needs SharedArrayBuffer (in a browser, serve the page cross-origin isolated: Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp)`,
+    );
   }
   const factory = defaultWorkerFactory();
-  if (factory === null) throw new Error(`${where}: threads > 1 needs worker threads (Node >= 20.16 worker_threads, or a browser Worker), and none is available here`);
+  if (factory === null)
+    throw new Error(
+      `${where}: threads > 1 needs worker threads (Node >= 20.16 worker_threads, or a browser Worker), and none is available here`,
+    );
   return new ThreadPool(threads, factory);
 }

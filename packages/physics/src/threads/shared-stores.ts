@@ -4,8 +4,8 @@
  * each lazily allocated store when it gets its arrays.
  */
 
-import { sharedCopy } from './pool.js';
 import type { KernelArray } from './kernels.js';
+import { sharedCopy } from './pool.js';
 
 /**
  * Replaces every per-entity typed array of `store` (a field of length `capacity + 1`) by a copy on a

@@ -19,7 +19,16 @@
 
 /** Slots of the control array shared by a pool and its workers. */
 export const CONTROL = Object.freeze({
-  GEN: 0, CMD: 1, KERNEL: 2, PENDING: 3, ERROR: 4, EXPECT: 5, READY: 6, IDS: 9, NARRAYS: 10, ARRAYS: 11,
+  GEN: 0,
+  CMD: 1,
+  KERNEL: 2,
+  PENDING: 3,
+  ERROR: 4,
+  EXPECT: 5,
+  READY: 6,
+  IDS: 9,
+  NARRAYS: 10,
+  ARRAYS: 11,
   /** Most arrays a kernel takes. */
   MAX_ARRAYS: 48,
   /** First slot of the ranges' bounds: thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
@@ -40,7 +49,15 @@ export interface WorkerPort {
 
 /** Message a pool posts to its workers. */
 export type PoolMessage =
-  | { type: 'init'; index: number; ctl: Int32Array; params: Float64Array; results: Float64Array; finished: Float64Array; errorText: Uint16Array }
+  | {
+      type: 'init';
+      index: number;
+      ctl: Int32Array;
+      params: Float64Array;
+      results: Float64Array;
+      finished: Float64Array;
+      errorText: Uint16Array;
+    }
   | { type: 'array'; id: number; array: ArrayBufferView };
 
 /**
