@@ -21,7 +21,7 @@
 
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
+import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '../shared/index';
 import { startPixiGame } from '../shared/pixi';
 import { canThrust, type LevelRun, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
@@ -58,7 +58,14 @@ let best = readBest();
 /** After each game step (live or replayed): keeps the best score. */
 function onGameStep(event: GameStepEvent): void {
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
+  // Sound (not while a replay plays the run back silently fast).
+  if (event === 'scored') sound.chime(880);
+  else if (event === 'cleared') sound.chime(1320, 0.6);
+  else if (event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : 0.6);
 }
+const sound = getSound();
+/** The ship's engine: hums while thrusting. */
+const engine = sound.engine('propeller');
 
 /** Keeps `score` as the best if it beats it. */
 function recordScore(score: number): void {
@@ -232,48 +239,30 @@ window.addEventListener('blur', () => {
 
 const style = document.createElement('style');
 style.textContent = `
-.bh-pad { display: grid; grid-template-columns: repeat(3, 48px); grid-template-rows: repeat(2, 44px); gap: 6px;
-  touch-action: none; user-select: none; }
-.bh-pad button { font: 22px system-ui, sans-serif; color: #e8ecf1; background: rgba(40, 48, 66, 0.7); border: 1px solid #5c677d;
-  border-radius: 10px; touch-action: none; }
-.bh-pad button.on { background: rgba(255, 150, 60, 0.7); }
 .bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
-.bh-status.over .bh-message { color: #ff6b6b; cursor: pointer; }
+.bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
+.bh-pad button { font-size: 22px; min-width: 56px; }
 `;
 document.head.append(style);
-const pad = document.createElement('div');
-pad.className = 'bh-pad';
-pad.setAttribute('aria-label', 'thrust buttons');
-const buttons: Partial<Record<Thrust, HTMLButtonElement>> = {};
-for (const [dir, label, col, row] of [
-  ['up', '↑', 2, 1],
-  ['left', '←', 1, 2],
-  ['down', '↓', 2, 2],
-  ['right', '→', 3, 2],
-] as const) {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.textContent = label;
-  b.dataset.dir = dir;
-  b.setAttribute('aria-label', `thrust ${dir}`);
-  b.style.gridColumn = String(col);
-  b.style.gridRow = String(row);
-  b.addEventListener('pointerdown', (e) => {
-    e.preventDefault();
-    b.setPointerCapture(e.pointerId);
-    press(dir);
-  });
-  const up = (): void => release(dir);
-  b.addEventListener('pointerup', up);
-  b.addEventListener('pointercancel', up);
-  b.addEventListener('lostpointercapture', up);
-  b.addEventListener('contextmenu', (e) => e.preventDefault());
-  buttons[dir] = b;
-  pad.append(b);
-}
-pageLayout().controls.append(pad);
+const DIRS = ['left', 'up', 'down', 'right'] as const;
+const pad = createButtonBar(
+  DIRS.map((dir) => ({
+    label: { left: '←', up: '↑', down: '↓', right: '→' }[dir],
+    name: `thrust ${dir}`,
+    onPress: () => press(dir),
+    onRelease: () => release(dir),
+  })),
+  { label: 'thrust buttons', touchOnly: false },
+);
+pad.element.classList.add('bh-pad');
+for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
+const touch = isTouchDevice();
+// On a touch screen, a tap on the scene after the game is over (or a level is cleared) goes on.
+app.canvas.addEventListener('pointerup', () => {
+  if (touch && (bh.over || run?.waiting)) advance();
+});
 
 // ---- Status: lives, score, holes, last message -----------------------------------------------
 
@@ -306,12 +295,15 @@ function updateStatus(force = false): void {
   }
   if (force || bh.message !== shownMessage) {
     shownMessage = bh.message;
-    message.textContent = bh.message;
+    // The rules speak of keys; on a touch screen a tap does the same.
+    message.textContent = touch
+      ? bh.message.replace('Press Enter or R to play again.', 'Tap to play again.').replace('Tap here or press Enter', 'Tap')
+      : bh.message;
   }
   status.classList.toggle('over', bh.over || (run?.waiting ?? false));
   if (force || bh.thrust !== shownThrust) {
     shownThrust = bh.thrust;
-    for (const [dir, b] of Object.entries(buttons)) b!.classList.toggle('on', dir === bh.thrust);
+    for (const [i, dir] of DIRS.entries()) pad.setActive(i, dir === bh.thrust);
   }
 }
 
@@ -375,6 +367,7 @@ function drawHoles(world: PhysicsWorld): void {
 }
 
 function drawFrame(alpha: number, world: PhysicsWorld): void {
+  engine.set(bh.thrust === 'none' || bh.over ? 0 : 0.7);
   drawBackdrop();
   drawHoles(world);
   const cam = renderer.camera;

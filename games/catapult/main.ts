@@ -4,12 +4,25 @@
  * fallen piece, 25 a broken weld; a few shots a level, four seeded levels.
  *
  * Input: drag from the cup and release. Keys: L next level, R reset the level, P pause, N step.
+ * A "Next level" button under the scene when the level is over (touch and mouse).
+ * Sound: a whoosh per throw; impacts as loud as their impulse, wood for posts and planks, stone for
+ * blocks, stones and the projectile.
  * URL: ?level=1..4, ?seed=S.
  */
 
-import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf } from '@bitphysics/physics';
+import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
+import {
+  createActionButton,
+  createPanel,
+  forEachImpact,
+  getSound,
+  isTouchDevice,
+  numberParam,
+  pointerOnCanvas,
+  type SoundMaterial,
+  seedParam,
+} from '../shared/index';
 import { createReadout } from '../shared/lab-kit';
 import { startPixiGame } from '../shared/pixi';
 import {
@@ -51,7 +64,22 @@ function createWorld(): PhysicsWorld {
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
   lastShotTime = 0;
+  materials.clear();
+  for (const p of lv.pieces) materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : 'stone');
   return world;
+}
+
+/** Sound material of each piece's body; the projectiles and the ground sound as stone. */
+const materials = new Map<number, SoundMaterial>();
+const sound = getSound();
+
+/** One step, then a sound for each impact (louder of the two bodies' materials: wood over stone). */
+function stepWorld(world: PhysicsWorld): void {
+  step(world);
+  forEachImpact(world, (a, b, impulse) => {
+    const m = materials.get(a) === 'wood' || materials.get(b) === 'wood' ? 'wood' : 'stone';
+    sound.impact(impulse, m, { threshold: 2, loud: 60 });
+  });
 }
 
 function nextLevel(): void {
@@ -62,6 +90,7 @@ function nextLevel(): void {
 const game = await startPixiGame({
   title: 'Catapult',
   createWorld,
+  step: stepWorld,
   bodies: () => lv.pieces.length + shots.length,
   controls: [
     { keys: 'Drag', action: 'pull back from the catapult, release to throw' },
@@ -153,8 +182,13 @@ function fire(dx: number, dy: number): number {
   shots.push(ball);
   shotsLeft--;
   lastShotTime = shell.world.time;
+  sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
   return ball;
 }
+
+/** The on-screen "Next level" button, shown when a level is over. */
+const showNext = createActionButton('Next level ▶', () => nextLevel());
+const touch = isTouchDevice();
 
 const overlay = new Graphics({ label: 'catapult' });
 const banner = new Text({
@@ -211,8 +245,13 @@ function draw(world: PhysicsWorld): void {
   if (levelOver(world, t)) {
     const share = t.fallen / Math.max(1, lv.pieces.length);
     const stars = share >= 0.9 ? '★★★' : share >= 0.6 ? '★★☆' : share >= 0.3 ? '★☆☆' : '☆☆☆';
-    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nscore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\nL: next level   R: try again`;
-  } else banner.text = `Score ${t.score}   shots ${shotsLeft}`;
+    const keys = touch ? 'Next level: the button below   ↺: try again' : 'L or the button below: next level   R: try again';
+    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nscore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\n${keys}`;
+    showNext(true, params.level === LEVEL_COUNT ? 'Play again from level 1 ▶' : `Level ${params.level + 1} ▶`);
+  } else {
+    banner.text = `Score ${t.score}   shots ${shotsLeft}`;
+    showNext(false);
+  }
 }
 
 // window.game: the shell (stats, pause, step, reset) plus what tests and the console need.

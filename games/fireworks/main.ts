@@ -18,11 +18,12 @@
  * 2 threads at every count measured, so today the threads do not speed this page up).
  *
  * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
+ * Sound (../shared/sound): a whoosh per launch, a bang per burst, a crackle when sparks burst again.
  */
 
 import { createPhysicsWorld, disposeWorld, type PhysicsWorld, Rng, slotOf, stateHash, threadsReady } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, flagParam, numberParam, plural, seedParam } from '../shared/index';
+import { choiceParam, createPanel, flagParam, getSound, numberParam, plural, seedParam } from '../shared/index';
 import { startPixiGame } from '../shared/pixi';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
@@ -254,7 +255,25 @@ let pressedAt = 0;
 let pointerX = 0,
   pointerY = 0;
 
+const sound = getSound();
+/** Launches and bursts already heard (the show counts them; a reset starts the counts again). */
+let heardLaunches = 0,
+  heardBursts = 0;
+
+/** A whoosh per new launch; a bang and, with generations >= 2, a crackle per new burst. */
+function playShowSounds(): void {
+  if (show.launched < heardLaunches || show.bursts < heardBursts) heardLaunches = heardBursts = 0;
+  if (show.launched > heardLaunches) sound.launch(0.5);
+  for (let n = Math.min(3, show.bursts - heardBursts); n > 0; n--) {
+    sound.explosion(0.5);
+    if (params.generations >= 2) sound.crackle(20, 1.4);
+  }
+  heardLaunches = show.launched;
+  heardBursts = show.bursts;
+}
+
 function drawFrame(alpha: number, world: PhysicsWorld): void {
+  playShowSounds();
   drawSkyAndGround();
   const cam = renderer.camera;
   overlay.clear();

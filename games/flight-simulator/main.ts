@@ -7,6 +7,8 @@
  * through the rings for points; do not fly into the hills.
  * Keys: arrows or W/S/A/D: pitch and roll; Q / E: rudder; Shift / Ctrl (or + / -): throttle;
  * C: camera (chase / cockpit); P pause, N step, R reset.
+ * Touch: a virtual stick under the scene (drag up to push the nose down, sideways to roll), hold
+ * buttons for throttle and rudder, a camera button. Sound: the engine's hum follows the throttle.
  * URL: ?seed=n, ?rings=n (1..30).
  */
 
@@ -44,7 +46,7 @@ import {
   Vector3,
 } from 'three';
 import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
-import { createPanel, numberParam, seedParam } from '../shared/index';
+import { createButtonBar, createPanel, createStick, getSound, numberParam, pageLayout, seedParam } from '../shared/index';
 import { startThreeGame } from '../shared/three';
 
 const params = {
@@ -89,6 +91,8 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
+/** The on-screen stick's deflection (x right, y up, in [-1, 1]). */
+const stickInput = { x: 0, y: 0 };
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
   if (e.key === 'Shift' || e.key === 'Control' || e.key.startsWith('Arrow')) e.preventDefault();
@@ -122,8 +126,10 @@ function axes(world: PhysicsWorld): void {
 function stepWorld(world: PhysicsWorld): void {
   if (state.crashed) return;
   const dt = world.dt;
-  const pitch = (held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0);
-  const roll = (held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0);
+  const clamp = (x: number): number => Math.max(-1, Math.min(1, x));
+  // Keys and the on-screen stick add up (stick up = push = nose down, as a real stick).
+  const pitch = clamp((held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0) - stickInput.y);
+  const roll = clamp((held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x);
   const yaw = (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0);
   // Stick inputs spring back to neutral; the throttle stays where it is put.
   state.elevator = approach(state.elevator, pitch, 3, dt);
@@ -151,13 +157,18 @@ function stepWorld(world: PhysicsWorld): void {
     if (Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z) < 45) {
       ring.passed = true;
       state.score++;
+      sound.chime(state.score === rings.length ? 1320 : 880);
       ringMeshes[rings.indexOf(ring)]!.material = passedMaterial;
     }
   }
   if (P.y[e]! < terrainHeight(handles.terrain, P.x[e]!, P.z[e]!) + 2) {
     state.crashed = true;
+    sound.explosion(1);
   }
 }
+
+const sound = getSound();
+const engine = sound.engine('propeller');
 
 const game = await startThreeGame({
   title: 'Flight simulator',
@@ -307,8 +318,15 @@ let smoothReady = false;
 const panelEl = document.createElement('div');
 panelEl.className = 'bp-hud';
 panelEl.dataset.hud = 'instruments';
-panelEl.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 250px; white-space: pre';
-document.body.append(panelEl);
+/** On small screens the instruments are a short block in the status row above the scene (the side column is a closed drawer there). */
+const compact = pageLayout().compact();
+if (compact) {
+  panelEl.style.cssText = 'padding: 4px 10px; white-space: pre; font-size: 12px';
+  pageLayout().status.append(panelEl);
+} else {
+  panelEl.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 250px; white-space: pre';
+  document.body.append(panelEl);
+}
 let readoutFrame = 0;
 
 function frame(): void {
@@ -337,6 +355,7 @@ function frame(): void {
     look.set(100, 0, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   }
+  engine.set(state.crashed ? 0 : state.throttle);
   if (readoutFrame++ % 6 === 0) updateInstruments(world);
 }
 
@@ -371,6 +390,14 @@ function instruments(world: PhysicsWorld): {
 function updateInstruments(world: PhysicsWorld): void {
   const i = instruments(world);
   state.stalled = Math.abs(i.aoa) > (AIRCRAFT.stallAngle * 180) / Math.PI;
+  const end = state.crashed ? '   CRASHED (reset to retry)' : state.score === rings.length ? '   ALL RINGS!' : '';
+  if (compact) {
+    panelEl.textContent = [
+      `${i.speed.toFixed(0)} m/s  alt ${i.altitude.toFixed(0)} m (ground ${i.agl.toFixed(0)} m)  climb ${i.climb.toFixed(1)}`,
+      `throttle ${(state.throttle * 100).toFixed(0)}%  AoA ${i.aoa.toFixed(1)}°${state.stalled ? ' STALL!' : ''}  rings ${state.score}/${rings.length}${end}`,
+    ].join('\n');
+    return;
+  }
   panelEl.textContent = [
     `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
     `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
@@ -379,9 +406,28 @@ function updateInstruments(world: PhysicsWorld): void {
     `heading   ${i.heading.toFixed(0).padStart(4)}°`,
     `AoA   ${i.aoa.toFixed(1).padStart(6)}°  ${state.stalled ? 'STALL!' : ''}`,
     `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
-    `rings     ${state.score}/${rings.length}${state.crashed ? '   CRASHED (R to retry)' : state.score === rings.length ? '   ALL RINGS!' : ''}`,
+    `rings     ${state.score}/${rings.length}${end}`,
   ].join('\n');
 }
+
+// Touch: a stick for pitch and roll, hold buttons for throttle and rudder, a camera switch.
+createStick({
+  label: 'stick: pitch and roll',
+  onChange: (x, y) => {
+    stickInput.x = x;
+    stickInput.y = y;
+  },
+});
+createButtonBar(
+  [
+    { label: 'Throttle +', name: 'throttle up', key: '+' },
+    { label: 'Throttle −', name: 'throttle down', key: '-' },
+    { label: '◀ Rudder', name: 'rudder left', key: 'q' },
+    { label: 'Rudder ▶', name: 'rudder right', key: 'e' },
+    { label: 'Camera', name: 'camera: chase / cockpit', key: 'c' },
+  ],
+  { label: 'throttle, rudder and camera' },
+).element.style.maxWidth = '240px';
 
 const panel = createPanel(
   params,

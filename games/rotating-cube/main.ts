@@ -30,7 +30,7 @@ import {
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
 import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
-import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
+import { choiceParam, createButtonBar, createPanel, numberParam, pageLayout } from '../shared/index';
 import type { Plot } from '../shared/plot';
 import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 import {
@@ -185,6 +185,22 @@ window.addEventListener('keydown', (event) => {
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
 window.addEventListener('blur', () => held.clear());
+
+// Touch: the torque keys as hold buttons, and stop, jump and mode (the same keys).
+createButtonBar(
+  [
+    { label: 'Pitch ▲', name: 'torque: pitch forward', key: 'w' },
+    { label: 'Pitch ▼', name: 'torque: pitch back', key: 's' },
+    { label: 'Yaw ◀', name: 'torque: yaw left', key: 'a' },
+    { label: 'Yaw ▶', name: 'torque: yaw right', key: 'd' },
+    { label: 'Roll ⟲', name: 'torque: roll left', key: 'q' },
+    { label: 'Roll ⟳', name: 'torque: roll right', key: 'e' },
+    { label: 'Stop', name: 'stop spinning', key: 'x' },
+    { label: 'Jump', name: 'jump (room mode)', key: ' ' },
+    { label: 'Mode', name: 'mode: room / pivot / flip', key: 'm' },
+  ],
+  { label: 'torques and modes' },
+);
 
 const right = new Vector3(),
   up = new Vector3(),

@@ -19,7 +19,7 @@ export function touchGesture(hint: ControlHint): string {
   if (hint.touch !== undefined) return hint.touch;
   const keys = hint.keys.trim();
   if (/^(click|tap)$/i.test(keys)) return 'Tap';
-  if (/^(drag|click or drag|touch|pinch|swipe)$/i.test(keys)) return keys.replace(/click/i, 'Tap');
+  if (/^(drag|click or drag|touch|pinch|swipe)\b/i.test(keys)) return keys.replace(/click/i, 'Tap');
   if (/click/i.test(keys) && !/right|shift|ctrl|alt/i.test(keys)) return keys.replace(/[A-Z] \/ /, '').replace(/click/i, 'Tap');
   return '';
 }

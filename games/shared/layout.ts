@@ -84,6 +84,12 @@ export const ICONS = Object.freeze({
     '<svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"><path d="M2 4h7M13 4h1M2 12h1M7 12h7" stroke="currentColor" stroke-width="1.6"/><circle cx="11" cy="4" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/><circle cx="5" cy="12" r="2" fill="none" stroke="currentColor" stroke-width="1.6"/></svg>',
 });
 
+/**
+ * The backing of every text region (toolbar, info, status, controls, side): dark and nearly opaque,
+ * so light text on it keeps a contrast of at least 4.5:1 (WCAG AA) over any page or scene colour.
+ */
+export const BACKING = 'rgba(12, 16, 24, 0.86)';
+
 const STYLE_ID = 'bp-layout-style';
 const CSS = `
 html, body { margin: 0; height: 100%; overflow: hidden; }
@@ -99,7 +105,9 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 .bp-toolbar button:hover { background: rgba(255, 255, 255, 0.14); }
 .bp-toolbar button[aria-pressed="true"] { background: rgba(255, 209, 102, 0.25); border-color: #ffd166; }
 .bp-toolbar .bp-drawer-button { display: none; }
+@media (pointer: coarse) { .bp-toolbar button { min-width: 44px; height: 44px; } }
 .bp-info { grid-area: info; display: flex; flex-direction: column; gap: 8px; padding: calc(var(--bp-toolbar-height, 68px) + 4px) 10px 10px; overflow-y: auto; min-height: 0; box-sizing: border-box; }
+.bp-info, .bp-side, .bp-status, .bp-controls { background: ${BACKING}; }
 .bp-info .bp-help { margin-top: auto; }
 .bp-status { grid-area: status; min-width: 0; }
 .bp-status:empty, .bp-controls:empty, .bp-side:empty { display: none; }
@@ -113,7 +121,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 @media (max-width: ${COMPACT_MAX_WIDTH - 0.02}px), (max-height: ${COMPACT_MAX_HEIGHT - 0.02}px) {
   .bp-app { grid-template-columns: minmax(0, 1fr); grid-template-rows: auto auto minmax(0, 1fr) auto;
     grid-template-areas: "toolbar" "status" "stage" "controls"; }
-  .bp-toolbar { grid-area: toolbar; align-self: auto; flex-wrap: nowrap; padding: 6px 8px; gap: 6px; }
+  .bp-toolbar { grid-area: toolbar; align-self: auto; flex-wrap: nowrap; padding: 6px 8px; gap: 6px; background: ${BACKING}; }
   .bp-toolbar h1 { flex: 1 1 auto; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; font-size: 14px; }
   .bp-toolbar .bp-buttons { flex-wrap: nowrap; }
   .bp-toolbar .bp-drawer-button { display: inline-flex; }

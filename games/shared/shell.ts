@@ -4,6 +4,7 @@ import { type ControlHint, createHud, type Hud } from './hud';
 import { bindKeys, type KeyBinding } from './keys';
 import { ICONS, pageLayout } from './layout';
 import { createGameLoop, type GameLoop } from './loop';
+import { addMuteButton } from './sound';
 
 /** Options of `createGameShell`. */
 export interface GameShellOptions {
@@ -211,6 +212,7 @@ export function createGameShell(options: GameShellOptions): GameShell {
     pauseButton = layout.addButton('pause', 'pause / resume (P)', () => shell.togglePause());
     layout.addButton('step', 'single step (N)', () => shell.step());
     layout.addButton('reset', 'reset (R)', () => shell.reset());
+    addMuteButton(layout.addButton);
   }
 
   exposeGame(shell);

@@ -5,7 +5,8 @@
  * proportion to how much of it is under water and bobs in the waves. Collect every beacon without
  * scraping the seabed three times.
  * Keys: W / S flood / blow (both tanks), Q / E trim nose down / up, A / D or arrows astern / ahead,
- * P pause, N step, R reset.
+ * P pause, N step, R reset. Touch: the same six controls as buttons under the scene (hold them).
+ * Sound: the screw's hum follows the throttle, a chime for each beacon, a thump on the seabed.
  */
 
 import {
@@ -20,8 +21,8 @@ import {
   step,
   submarine,
 } from '@bitphysics/physics';
-import { Graphics, Text } from 'pixi.js';
-import { createPanel, numberParam, seedParam } from '../shared/index';
+import { Graphics } from 'pixi.js';
+import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '../shared/index';
 import { startPixiGame } from '../shared/pixi';
 
 const params = {
@@ -99,6 +100,7 @@ function stepWorld(world: PhysicsWorld): void {
     c.Velocity.y[e] = Math.max(c.Velocity.y[e]!, 1.5);
     c.Velocity.x[e] = c.Velocity.x[e]! * 0.5;
     if (!state.touching) {
+      sound.impact(20, 'metal');
       state.hits++;
       if (state.hits >= 3) state.over = 'sunk';
     }
@@ -110,6 +112,7 @@ function stepWorld(world: PhysicsWorld): void {
       dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
     if (dx * dx + dy * dy < 7 * 7) {
       taken[i] = true;
+      sound.chime(state.collected === taken.length - 1 ? 1320 : 880);
       state.collected++;
       if (state.collected === taken.length) state.over = 'won';
     }
@@ -123,6 +126,9 @@ function applyControls(world: PhysicsWorld): void {
   setBallastTarget(world, handles.hull, fore, aft);
   setBodyThrust(world, handles.hull, [state.throttle * SUBMARINE.maxThrust, 0]);
 }
+
+const sound = getSound();
+const engine = sound.engine('screw');
 
 const game = await startPixiGame({
   title: 'Submarine',
@@ -144,8 +150,26 @@ const { shell, app } = game;
 
 const g = new Graphics();
 app.stage.addChild(g);
-const gauge = new Text({ text: '', style: { fill: 0xe8f4ff, fontFamily: 'monospace', fontSize: 13, lineHeight: 17 } });
-app.stage.addChild(gauge);
+// The gauges: a text block in the status row above the scene (on its dark backing, never cut off).
+const gauge = document.createElement('div');
+gauge.className = 'sub-gauges';
+gauge.dataset.hud = 'gauges';
+gauge.style.cssText = 'font: 12px/1.4 ui-monospace, Menlo, Consolas, monospace; color: #e8f4ff; padding: 4px 10px; white-space: pre-wrap;';
+pageLayout().status.append(gauge);
+let gaugeFrame = 0;
+
+// Touch: hold a button as a key (the same six controls as W S Q E A D).
+createButtonBar(
+  [
+    { label: 'Dive ▼', name: 'flood ballast (dive)', key: 'w' },
+    { label: 'Rise ▲', name: 'blow ballast (rise)', key: 's' },
+    { label: 'Nose ↘', name: 'trim nose down', key: 'q' },
+    { label: 'Nose ↗', name: 'trim nose up', key: 'e' },
+    { label: '◀ Astern', name: 'screw astern', key: 'a' },
+    { label: 'Ahead ▶', name: 'screw ahead', key: 'd' },
+  ],
+  { label: 'ballast, trim and screw' },
+);
 
 function draw(): void {
   const world = shell.world,
@@ -215,14 +239,23 @@ function draw(): void {
   const depth = -c.Position.y[e]!,
     speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
   const floor = seabedHeight(handles.seabed, cx);
-  gauge.text = [
-    `depth    ${depth.toFixed(1)} m   (seabed ${(-floor).toFixed(0)} m)`,
-    `speed    ${speed.toFixed(2)} m/s  climb ${c.Velocity.y[e]!.toFixed(2)} m/s`,
-    `ballast  fore ${(B.fore[e]! * 100).toFixed(0)}%  aft ${(B.aft[e]! * 100).toFixed(0)}%  (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
-    `trim     ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
-    `beacons  ${state.collected}/${taken.length}   hull ${3 - state.hits}/3   ${state.over === 'won' ? 'ALL COLLECTED!' : state.over === 'sunk' ? 'HULL BREACHED (R to retry)' : ''}`,
-  ].join('\n');
-  gauge.position.set(W - 430, 10);
+  engine.set(state.over ? 0 : Math.abs(state.throttle));
+  if (gaugeFrame++ % 6 !== 0) return;
+  const narrow = W < 520;
+  const end = state.over === 'won' ? '   ALL COLLECTED!' : state.over === 'sunk' ? '   HULL BREACHED (reset to retry)' : '';
+  gauge.textContent = (
+    narrow
+      ? [
+          `depth ${depth.toFixed(1)} m (bed ${(-floor).toFixed(0)} m)  speed ${speed.toFixed(1)} m/s`,
+          `ballast ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)  screw ${(state.throttle * 100).toFixed(0)}%`,
+          `beacons ${state.collected}/${taken.length}  hull ${3 - state.hits}/3${end}`,
+        ]
+      : [
+          `depth ${depth.toFixed(1)} m (seabed ${(-floor).toFixed(0)} m)   speed ${speed.toFixed(2)} m/s   climb ${c.Velocity.y[e]!.toFixed(2)} m/s`,
+          `ballast fore ${(B.fore[e]! * 100).toFixed(0)}% aft ${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)   trim ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
+          `beacons ${state.collected}/${taken.length}   hull ${3 - state.hits}/3${end}`,
+        ]
+  ).join('\n');
 }
 
 const panel = createPanel(

@@ -28,7 +28,18 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import { createPanel, flagParam, numberParam, pageLayout, seedParam } from '../shared/index';
+import {
+  createActionButton,
+  createButtonBar,
+  createPanel,
+  flagParam,
+  forEachImpact,
+  getSound,
+  isTouchDevice,
+  numberParam,
+  pageLayout,
+  seedParam,
+} from '../shared/index';
 import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
 import {
   buildWreckingBall,
@@ -86,6 +97,15 @@ function gameStep(world: PhysicsWorld): void {
   const t0 = performance.now();
   physicsStep(world);
   const ms = performance.now() - t0;
+  // Sound: the steel ball rings as metal; pieces knocking into each other or the ground as wood.
+  forEachImpact(
+    world,
+    (a, b, impulse) => {
+      const steel = a === handles.ball || b === handles.ball;
+      sound.impact(impulse, steel ? 'metal' : 'wood', steel ? { threshold: 20, loud: 4000 } : { threshold: 5, loud: 400 });
+    },
+    3,
+  );
   stepMs = stepMs === 0 ? ms : stepMs + (ms - stepMs) / 30;
   if (ms > worstMs || ++worstAge > 60) {
     worstMs = ms;
@@ -98,9 +118,12 @@ function gameStep(world: PhysicsWorld): void {
   }
   if (!cleared && fallenCount(handles.pieces) >= CLEAR_FRACTION * handles.pieces.length) {
     cleared = true;
+    sound.chime(1046, 0.6);
     levelScore += 500;
   }
 }
+
+const sound = getSound();
 
 const game = await startThreeGame({
   title: 'Wrecking ball',
@@ -210,6 +233,23 @@ window.addEventListener('keydown', (event) => {
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
 window.addEventListener('blur', () => held.clear());
+
+// Touch: the crane's six drives as hold buttons (the same keys), and "Next level" once cleared.
+createButtonBar(
+  [
+    { label: '⟲ Slew', name: 'slew the jib left', key: 'a' },
+    { label: 'Slew ⟳', name: 'slew the jib right', key: 'd' },
+    { label: 'Out', name: 'trolley out', key: 'w' },
+    { label: 'In', name: 'trolley in', key: 's' },
+    { label: 'Up ▲', name: 'hook up', key: 'q' },
+    { label: 'Down ▼', name: 'hook down', key: 'e' },
+  ],
+  { label: 'crane' },
+);
+const showNext = createActionButton('Next level ▶', () => {
+  if (cleared) nextLevel();
+});
+const touch = isTouchDevice();
 
 function updateControls(): void {
   const c = handles.controls;
@@ -334,8 +374,9 @@ function frame(): void {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
     status.textContent = cleared
-      ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · press L for level ${handles.level + 1}`
+      ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
       : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})`;
+    showNext(cleared, `Level ${handles.level + 1} ▶`);
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
 }
