@@ -84,6 +84,15 @@ function injectStyle(): void {
   document.head.append(style);
 }
 
+/** Keeps the pointer's events on `el` while it is down (a finger sliding off still releases there); synthetic pointers cannot be captured. */
+function capture(el: HTMLElement, pointerId: number): void {
+  try {
+    el.setPointerCapture(pointerId);
+  } catch {
+    /* not an active pointer (a synthetic event): no capture needed */
+  }
+}
+
 /** Sends a synthetic key event for `key` to window (what a held button stands for). */
 function sendKey(type: 'keydown' | 'keyup', key: string): void {
   window.dispatchEvent(new KeyboardEvent(type, { key, bubbles: true, cancelable: true }));
@@ -122,7 +131,7 @@ export function createButtonBar(buttons: readonly TouchButton[], options: Button
     if (spec.key || spec.onPress || spec.onRelease) {
       b.addEventListener('pointerdown', (e) => {
         e.preventDefault();
-        if (b.hasPointerCapture?.(e.pointerId) === false) b.setPointerCapture?.(e.pointerId);
+        capture(b, e.pointerId);
         if (down) return;
         down = true;
         b.classList.add('on');
@@ -235,7 +244,7 @@ export function createStick(options: StickOptions): Stick {
   base.addEventListener('pointerdown', (e) => {
     e.preventDefault();
     pointer = e.pointerId;
-    base.setPointerCapture?.(e.pointerId);
+    capture(base, e.pointerId);
     move(e);
   });
   base.addEventListener('pointermove', (e) => {

@@ -1,0 +1,178 @@
+/**
+ * The games on a phone (390 x 844, touch): each one's on-screen controls (games/shared/touch-controls)
+ * change the game. Fingers are real touch input (CDP touch events, so pointer capture and
+ * `pointer: coarse` behave as on a phone). Also: the toolbar's buttons are at least 44 x 44 CSS px
+ * and its mute button is remembered across pages.
+ */
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+
+const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
+
+/** Puts a finger down on the centre of the button named `name`, holds it `ms`, lifts it. */
+async function hold(page: Page, name: string, ms = 400): Promise<void> {
+  const box = (await page.getByRole('button', { name, exact: true }).boundingBox())!;
+  await touchPath(page, [[box.x + box.width / 2, box.y + box.height / 2]], ms);
+}
+
+/** A finger down at the first point, through the others, held `ms` at the last, then lifted. */
+async function touchPath(page: Page, points: Array<[number, number]>, ms: number, during?: () => Promise<void>): Promise<void> {
+  const cdp = await page.context().newCDPSession(page);
+  const at = ([x, y]: [number, number]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(points[0]!) });
+  for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
+  await page.waitForTimeout(ms);
+  await during?.();
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await cdp.detach();
+}
+
+/** A field of `window.game` read through a path of getters and calls ('state.fill', 'handles().crane.angle'). */
+function read(g: GamePage, expression: string): Promise<number> {
+  // biome-ignore lint/security/noGlobalEval: the expression is this file's own constant
+  return g.page.evaluate((e) => Number(eval(`window.game.${e}`)), expression);
+}
+
+describe('phone controls', () => {
+  let h: Harness;
+  beforeAll(async () => {
+    h = await Harness.start();
+  }, START_TIMEOUT_MS);
+  afterAll(async () => {
+    await h?.close();
+  });
+
+  it('submarine: holding Dive floods the tanks, Ahead drives the screw', async () => {
+    const g = await h.openGame('submarine', PHONE);
+    expect(await read(g, 'state.fill')).toBe(0);
+    await hold(g.page, 'flood ballast (dive)');
+    expect(await read(g, 'state.fill')).toBeGreaterThan(0.02);
+    await hold(g.page, 'screw ahead');
+    expect(await read(g, 'state.throttle')).toBeGreaterThan(0.05);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('flight simulator: the stick rolls and pitches, Throttle + opens the throttle', async () => {
+    const g = await h.openGame('flight-simulator', PHONE);
+    const stick = (await g.page.getByRole('slider', { name: 'stick: pitch and roll' }).boundingBox())!;
+    const cx = stick.x + stick.width / 2,
+      cy = stick.y + stick.height / 2;
+    let during = { aileron: 0, elevator: 0 };
+    // Drag the knob up and right: push (nose down, elevator < 0) and roll right (aileron > 0).
+    await touchPath(
+      g.page,
+      [
+        [cx, cy],
+        [cx + 20, cy - 20],
+        [cx + 40, cy - 40],
+      ],
+      400,
+      async () => {
+        during = await g.page.evaluate(() => {
+          const s = (window.game as unknown as { state: { aileron: number; elevator: number } }).state;
+          return { aileron: s.aileron, elevator: s.elevator };
+        });
+      },
+    );
+    expect(during.aileron).toBeGreaterThan(0.1);
+    expect(during.elevator).toBeLessThan(-0.1);
+    const t0 = await read(g, 'state.throttle');
+    await hold(g.page, 'throttle up');
+    expect(await read(g, 'state.throttle')).toBeGreaterThan(t0 + 0.02);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('rotating cube: holding Yaw ▶ spins the cube', async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
+    await hold(g.page, 'stop spinning', 100);
+    await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
+    await hold(g.page, 'torque: yaw right', 500);
+    const w = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
+    expect(Math.hypot(...w)).toBeGreaterThan(0.05);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('wrecking ball: holding Slew turns the jib; Next level shows once the level is cleared', async () => {
+    const g = await h.openGame('wrecking-ball', { ...PHONE, query: { shadows: 0 } });
+    const a0 = await read(g, 'handles().crane.angle');
+    await hold(g.page, 'slew the jib left', 500);
+    expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);
+    expect(await g.page.locator('.bp-big').count()).toBe(0);
+    // Count every piece as fallen: the level is cleared and the button appears; a tap goes on.
+    await g.page.evaluate(() => {
+      for (const p of (window.game as unknown as { handles(): { pieces: { fallen: boolean }[] } }).handles().pieces) p.fallen = true;
+    });
+    await g.waitFor(() => (window.game as unknown as { cleared(): boolean }).cleared(), null);
+    const next = g.page.getByRole('button', { name: 'Level 2 ▶' });
+    await next.waitFor({ state: 'visible', timeout: 5000 });
+    await next.tap();
+    await g.waitFor(() => (window.game as unknown as { handles(): { level: number } }).handles().level === 2, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('black hole: holding ↑ thrusts the ship up; after the game a tap on the scene plays again', async () => {
+    const g = await h.openGame('black-hole', PHONE);
+    await hold(g.page, 'thrust up', 400);
+    expect(await read(g, 'ship()[3]')).toBeGreaterThan(0.2);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as { bh: { over: boolean; message: string } };
+      game.bh.over = true;
+      game.bh.message = 'Swallowed! Game over with 0 points. Press Enter or R to play again.';
+    });
+    await g.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to play again'), null);
+    await g.clickCanvas(0.5, 0.5);
+    await g.waitFor(() => !(window.game as unknown as { bh: { over: boolean } }).bh.over, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('catapult: a drag from the cup throws; the Next level button goes on when the level is over', async () => {
+    const g = await h.openGame('catapult', PHONE);
+    const cup = await g.worldToPage(0, 1.5);
+    await touchPath(
+      g.page,
+      [
+        [cup.x, cup.y],
+        [cup.x - 30, cup.y + 15],
+        [cup.x - 60, cup.y + 30],
+      ],
+      50,
+    );
+    await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 1, null);
+    // Spend the remaining shots and let 4 s pass: the level is over.
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as { shotsLeft(): number; fire(dx: number, dy: number): number; advance(n: number): void };
+      while (game.shotsLeft() > 0) game.fire(-2, -1);
+      game.advance(260);
+    });
+    const next = g.page.getByRole('button', { name: 'Level 2 ▶' });
+    await next.waitFor({ state: 'visible', timeout: 5000 });
+    await next.tap();
+    await g.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('the toolbar buttons are 44 x 44 CSS px or more, and the mute button is remembered', async () => {
+    const g = await h.openGame('fireworks', PHONE);
+    const sizes = await g.page.$$eval('.bp-toolbar button', (bs) =>
+      bs.filter((b) => b.getClientRects().length > 0).map((b) => [b.getBoundingClientRect().width, b.getBoundingClientRect().height]),
+    );
+    expect(sizes.length).toBeGreaterThanOrEqual(4);
+    for (const [w, hgt] of sizes) {
+      expect(w).toBeGreaterThanOrEqual(44);
+      expect(hgt).toBeGreaterThanOrEqual(44);
+    }
+    const mute = g.page.getByRole('button', { name: 'sound on / off' });
+    await mute.tap();
+    expect(await g.page.evaluate(() => localStorage.getItem('bitphysics.muted'))).toBe('1');
+    expect(await mute.getAttribute('aria-pressed')).toBe('true');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+});
