@@ -8,7 +8,8 @@
  * (1280 x 800) with 'de-DE' (comma decimals): alternating down the registry by default, both with
  * BITPHYSICS_PAGES=all. Each time the layout is checked (./layout-check): the scene's box (the
  * renderer's view rectangle) is inside the canvas and the window (the world is framed, not cropped),
- * no text or panel covers it, nothing is cut off; a screenshot goes to
+ * no text or panel covers it, nothing is cut off, the page's text has WCAG AA contrast
+ * (./contrast-check); a screenshot goes to
  * dist/screenshots/<folder>-<phone|desktop>.png.
  * The pages are split over three test files (pages.test.ts, pages-2.test.ts, pages-3.test.ts, each
  * calling `describePages` with its shard); the gallery and the phone toolbar are checked by the first.
@@ -17,6 +18,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot } from './chromium.mjs';
+import { lowContrastText } from './contrast-check';
 import { Harness, readRegistry, START_TIMEOUT_MS } from './harness';
 import { checkLayout } from './layout-check';
 
@@ -135,6 +137,8 @@ export function describePages(shard: number, shards: number): void {
           writeFileSync(join(shots, `${entry.folder}-${run.name}.png`), await g.page.screenshot());
           expect(layout.overlays, `covering the scene ${JSON.stringify(layout.scene)}`).toEqual([]);
           expect(layout.clipped).toEqual([]);
+          // The page's text is legible: WCAG AA contrast against what is behind it (./contrast-check).
+          expect(await lowContrastText(g.page), 'text below 4.5:1 contrast').toEqual([]);
           // The world is framed to fit: it spans the canvas one way, less the camera's padding (a wide
           // world on a tall phone is letterboxed above and below), and the canvas is most of the window.
           expect(layout.sceneFill).toBeGreaterThan(0.8);
