@@ -1,4 +1,8 @@
-/** The gallery page: reads registry.json (written by the build from each game's game.json) and lists the games. */
+/**
+ * The gallery page: reads registry.json (written by the build from each game's game.json) and lists
+ * the games, the Games category first. A summary's first line says what a player does; a second
+ * line, if any (after a newline), names the physics and is shown smaller beneath it.
+ */
 
 interface Entry {
   folder: string;
@@ -37,9 +41,16 @@ async function main(): Promise<void> {
       text.className = 'text';
       const title = document.createElement('h3');
       title.textContent = e.title;
+      const [play, ...physics] = e.summary.split('\n');
       const summary = document.createElement('p');
-      summary.textContent = e.summary;
+      summary.textContent = play ?? '';
       text.append(title, summary);
+      if (physics.length > 0) {
+        const more = document.createElement('p');
+        more.className = 'physics';
+        more.textContent = physics.join(' ');
+        text.append(more);
+      }
       card.append(img, text);
       grid.append(card);
     }
