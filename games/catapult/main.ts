@@ -94,7 +94,7 @@ const game = await startPixiGame({
   bodies: () => lv.pieces.length + shots.length,
   controls: [
     { keys: 'Drag', action: 'pull back from the catapult, release to throw' },
-    { keys: 'L', action: 'next level' },
+    { keys: 'L', action: 'next level', touch: 'Next level' },
   ],
   keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
   renderer: { view: { minX: -4, minY: -1, maxX: 30, maxY: 14 } },

@@ -176,11 +176,11 @@ const game = await startThreeGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: '↑ ↓ / W S', action: 'pitch (↓ pulls up)' },
-    { keys: '← → / A D', action: 'roll' },
-    { keys: 'Q / E', action: 'rudder' },
-    { keys: 'Shift / Ctrl', action: 'throttle up / down' },
-    { keys: 'C', action: 'camera: chase / cockpit' },
+    { keys: '↑ ↓ / W S', action: 'pitch (↓ pulls up)', touch: 'stick ↑ ↓' },
+    { keys: '← → / A D', action: 'roll', touch: 'stick ← →' },
+    { keys: 'Q / E', action: 'rudder', touch: 'Rudder' },
+    { keys: 'Shift / Ctrl', action: 'throttle up / down', touch: 'Throttle + / −' },
+    { keys: 'C', action: 'camera: chase / cockpit', touch: 'Camera' },
   ],
   keys: [
     {

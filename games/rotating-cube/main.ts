@@ -92,12 +92,12 @@ const game = await startThreeGame({
   bodies: () => 1,
   controls: [
     { keys: 'Click', action: 'impulse at the point clicked' },
-    { keys: 'W S', action: 'torque: pitch' },
-    { keys: 'A D', action: 'torque: yaw' },
-    { keys: 'Q E', action: 'torque: roll' },
-    { keys: 'X', action: 'stop spinning' },
-    { keys: 'Space', action: 'jump (room mode)' },
-    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip' },
+    { keys: 'W S', action: 'torque: pitch', touch: 'Pitch' },
+    { keys: 'A D', action: 'torque: yaw', touch: 'Yaw' },
+    { keys: 'Q E', action: 'torque: roll', touch: 'Roll' },
+    { keys: 'X', action: 'stop spinning', touch: 'Stop' },
+    { keys: 'Space', action: 'jump (room mode)', touch: 'Jump' },
+    { keys: 'M', action: 'mode: room / cube on a pivot / Dzhanibekov flip', touch: 'Mode' },
     ...ORBIT_CONTROLS,
   ],
   keys: [

@@ -4,7 +4,7 @@ import { type ControlHint, createHud, type Hud } from './hud';
 import { bindKeys, type KeyBinding } from './keys';
 import { ICONS, pageLayout } from './layout';
 import { createGameLoop, type GameLoop } from './loop';
-import { addMuteButton } from './sound';
+import { addMuteButton, getSound, type Sound } from './sound';
 
 /** Options of `createGameShell`. */
 export interface GameShellOptions {
@@ -53,6 +53,8 @@ export interface GameShell extends GameHandle {
   readonly loop: GameLoop;
   /** The HUD. */
   readonly hud: Hud;
+  /** The page's sound (./sound: mute, and how many sounds played). */
+  readonly sound: Sound;
   /** Calls `listener` with each new world after a reset. @returns a function that removes the listener. */
   onWorldChange(listener: (world: PhysicsWorld) => void): () => void;
   /**
@@ -136,6 +138,7 @@ export function createGameShell(options: GameShellOptions): GameShell {
     'togglePause',
     'loop',
     'hud',
+    'sound',
     'onWorldChange',
     'expose',
     'start',
@@ -173,6 +176,7 @@ export function createGameShell(options: GameShellOptions): GameShell {
     },
     loop,
     hud,
+    sound: getSound(),
     onWorldChange(listener) {
       listeners.add(listener);
       return () => listeners.delete(listener);

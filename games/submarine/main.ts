@@ -136,9 +136,9 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: 'W / S', action: 'flood / blow ballast' },
-    { keys: 'Q / E', action: 'trim nose down / up' },
-    { keys: 'A / D', action: 'screw astern / ahead' },
+    { keys: 'W / S', action: 'flood / blow ballast', touch: 'Dive / Rise' },
+    { keys: 'Q / E', action: 'trim nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'A / D', action: 'screw astern / ahead', touch: 'Astern / Ahead' },
   ],
   app: { background: 0x0b2340, antialias: true },
   renderer: { pixelsPerMeter: params.pixelsPerMeter },

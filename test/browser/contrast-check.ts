@@ -1,7 +1,8 @@
 /**
  * Text legibility of a page's own text (toolbar, readouts, legends, status lines, panels): the WCAG
  * 2.x contrast ratio of every visible text element's colour against the colour behind it, found by
- * compositing the background colours of its ancestors over the page's (html and body, else white).
+ * compositing the background colours of the elements under its centre (`elementsFromPoint`) over
+ * the page's (html and body, else white); over a canvas, the worse of a white and a black scene.
  * Text drawn into a canvas is not seen. WCAG AA asks for 4.5:1, or 3:1 for large text (24 px, or
  * 18.66 px bold). (Relative luminance and contrast ratio: WCAG 2.1, definitions of the same names.)
  */
@@ -69,16 +70,44 @@ export function lowContrastText(page: Page): Promise<LowContrast[]> {
       if (rect.right <= 0 || rect.bottom <= 0 || rect.left >= innerWidth || rect.top >= innerHeight) continue;
       const fg = parse(style.color);
       if (!fg) continue;
-      // Backgrounds from the page up to the element, composited bottom-up.
+      // Everything under the text's centre, top to bottom (ancestors and boxes painted beneath it,
+      // as the layout's info column under the toolbar), down to the first opaque one or a canvas; composited bottom-up.
+      const r0 = el.getClientRects()[0]!;
+      const stack = document.elementsFromPoint(r0.left + r0.width / 2, r0.top + r0.height / 2);
+      const below = stack.slice(Math.max(0, stack.indexOf(el)));
       const layers: RGBA[] = [];
-      for (let a: Element | null = el; a && a !== document.body && a !== document.documentElement; a = a.parentElement) {
+      let overCanvas = false;
+      for (const a of below) {
+        if (a === document.body || a === document.documentElement) break;
         const c = parse(getComputedStyle(a).backgroundColor);
         if (c && c[3] > 0) layers.push(c);
+        if (c && c[3] >= 1) break;
+        if (a.tagName === 'CANVAS') {
+          overCanvas = true;
+          break;
+        }
       }
-      let bg = base;
-      for (let i = layers.length - 1; i >= 0; i--) bg = over(layers[i]!, bg);
-      const colour = over(fg, bg);
-      const r = ratio(colour, bg);
+      // Over a canvas the scene's colour is unknown: the worse of a white and a black scene under the backings.
+      const bases: RGBA[] = overCanvas
+        ? [
+            [255, 255, 255, 1],
+            [0, 0, 0, 1],
+          ]
+        : [base];
+      let r = Infinity,
+        bg = base,
+        colour = fg;
+      for (const under of bases) {
+        let b = under;
+        for (let i = layers.length - 1; i >= 0; i--) b = over(layers[i]!, b);
+        const c = over(fg, b);
+        const rb = ratio(c, b);
+        if (rb < r) {
+          r = rb;
+          bg = b;
+          colour = c;
+        }
+      }
       const size = Number.parseFloat(style.fontSize),
         bold = Number(style.fontWeight) >= 700;
       const bar = size >= 24 || (bold && size >= 18.66) ? 3 : 4.5;

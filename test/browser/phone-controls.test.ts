@@ -1,8 +1,8 @@
 /**
  * The games on a phone (390 x 844, touch): each one's on-screen controls (games/shared/touch-controls)
  * change the game. Fingers are real touch input (CDP touch events, so pointer capture and
- * `pointer: coarse` behave as on a phone). Also: the toolbar's buttons are at least 44 x 44 CSS px
- * and its mute button is remembered across pages.
+ * `pointer: coarse` behave as on a phone). Also: the first tap starts the sound (games/shared/sound),
+ * the toolbar's buttons are at least 44 x 44 CSS px and its mute button is remembered.
  */
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -158,8 +158,16 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('the toolbar buttons are 44 x 44 CSS px or more, and the mute button is remembered', async () => {
-    const g = await h.openGame('fireworks', PHONE);
+  it('fireworks: a tap starts the sound and launches a shell that whooshes and bangs; toolbar buttons are 44 x 44 px; mute is remembered', async () => {
+    const g = await h.openGame('fireworks', { ...PHONE, query: { auto: 0 } });
+    type Sounding = { sound: { running: boolean; played: number; muted: boolean } };
+    expect(await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played)).toBe(0);
+    await g.page.locator('canvas').tap({ position: { x: 200, y: 150 } });
+    // The first input starts the audio context; the launch and its burst (2 s later) make sounds.
+    await g.waitFor(
+      () => (window.game as unknown as Sounding).sound.running && (window.game as unknown as Sounding).sound.played >= 2,
+      null,
+    );
     const sizes = await g.page.$$eval('.bp-toolbar button', (bs) =>
       bs.filter((b) => b.getClientRects().length > 0).map((b) => [b.getBoundingClientRect().width, b.getBoundingClientRect().height]),
     );
@@ -172,6 +180,7 @@ describe('phone controls', () => {
     await mute.tap();
     expect(await g.page.evaluate(() => localStorage.getItem('bitphysics.muted'))).toBe('1');
     expect(await mute.getAttribute('aria-pressed')).toBe('true');
+    expect(await g.page.evaluate(() => (window.game as unknown as Sounding).sound.muted)).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });
