@@ -185,7 +185,9 @@ const labels = Object.fromEntries(
   SOLAR_SYSTEM_BODIES.map((name) => {
     const el = document.createElement('div');
     el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
-    el.style.cssText = 'position: absolute; transform: translate(6px, -50%); text-shadow: 0 0 3px #000; white-space: nowrap';
+    // A dark translucent backing keeps the name legible over a bright planet or trail.
+    el.style.cssText =
+      'position: absolute; transform: translate(6px, -50%); white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.72)';
     labelLayer.append(el);
     return [name, el];
   }),

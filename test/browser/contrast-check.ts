@@ -1,7 +1,7 @@
 /**
  * Text legibility of a page's own text (toolbar, readouts, legends, status lines, panels): the WCAG
  * 2.x contrast ratio of every visible text element's colour against the colour behind it, found by
- * compositing the background colours of the elements under its centre (`elementsFromPoint`) over
+ * compositing the background colours of its ancestors and the boxes under its centre (`elementsFromPoint`) over
  * the page's (html and body, else white); over a canvas, the worse of a white and a black scene.
  * Text drawn into a canvas is not seen. WCAG AA asks for 4.5:1, or 3:1 for large text (24 px, or
  * 18.66 px bold). (Relative luminance and contrast ratio: WCAG 2.1, definitions of the same names.)
@@ -63,30 +63,42 @@ export function lowContrastText(page: Page): Promise<LowContrast[]> {
       const el = n.parentElement;
       if (!el || seen.has(el) || !n.textContent?.trim()) continue;
       seen.add(el);
-      if (el.closest('script, style, canvas, [hidden]')) continue;
+      if (el.closest('script, style, canvas, select, [hidden]')) continue; // a select's options are not shown until opened
       const style = getComputedStyle(el);
       if (style.visibility !== 'visible' || el.getClientRects().length === 0) continue;
       const rect = el.getBoundingClientRect();
       if (rect.right <= 0 || rect.bottom <= 0 || rect.left >= innerWidth || rect.top >= innerHeight) continue;
       const fg = parse(style.color);
       if (!fg) continue;
-      // Everything under the text's centre, top to bottom (ancestors and boxes painted beneath it,
-      // as the layout's info column under the toolbar), down to the first opaque one or a canvas; composited bottom-up.
-      const r0 = el.getClientRects()[0]!;
-      const stack = document.elementsFromPoint(r0.left + r0.width / 2, r0.top + r0.height / 2);
-      const below = stack.slice(Math.max(0, stack.indexOf(el)));
+      // The backgrounds behind the text: its own and its ancestors', then, down to the first opaque one
+      // or a canvas, the other boxes painted under its centre (the layout's info column under the
+      // toolbar, the canvas under a label); composited bottom-up.
       const layers: RGBA[] = [];
-      let overCanvas = false;
-      for (const a of below) {
-        if (a === document.body || a === document.documentElement) break;
+      let opaque = false,
+        overCanvas = false;
+      const chain = new Set<Element>();
+      for (let a: Element | null = el; a && a !== document.body; a = a.parentElement) {
+        chain.add(a);
         const c = parse(getComputedStyle(a).backgroundColor);
         if (c && c[3] > 0) layers.push(c);
-        if (c && c[3] >= 1) break;
-        if (a.tagName === 'CANVAS') {
-          overCanvas = true;
+        if (c && c[3] >= 1) {
+          opaque = true;
           break;
         }
       }
+      const r0 = el.getClientRects()[0]!;
+      if (!opaque)
+        for (const a of document.elementsFromPoint(r0.left + r0.width / 2, r0.top + r0.height / 2)) {
+          if (a === document.body || a === document.documentElement) break;
+          if (chain.has(a) || el.contains(a)) continue;
+          if (a.tagName === 'CANVAS') {
+            overCanvas = true;
+            break;
+          }
+          const c = parse(getComputedStyle(a).backgroundColor);
+          if (c && c[3] > 0) layers.push(c);
+          if (c && c[3] >= 1) break;
+        }
       // Over a canvas the scene's colour is unknown: the worse of a white and a black scene under the backings.
       const bases: RGBA[] = overCanvas
         ? [
