@@ -193,7 +193,15 @@ const touch = isTouchDevice();
 const overlay = new Graphics({ label: 'catapult' });
 const banner = new Text({
   text: '',
-  style: { fill: 0xffffff, fontSize: 22, fontFamily: 'sans-serif', align: 'center', stroke: { color: 0x000000, width: 4 } },
+  style: {
+    fill: 0xffffff,
+    fontSize: 22,
+    fontFamily: 'sans-serif',
+    align: 'center',
+    stroke: { color: 0x000000, width: 4 },
+    wordWrap: true,
+    wordWrapWidth: 600,
+  },
 });
 banner.anchor.set(0.5, 0);
 renderer.root.addChild(overlay, banner);
@@ -242,11 +250,17 @@ function draw(world: PhysicsWorld): void {
   readout.set(4, `${t.broken} / ${lv.joints.length}`);
   banner.x = app.screen.width / 2;
   banner.y = 16;
+  // Narrow screens (phones): smaller type, wrapped inside the canvas.
+  const narrow = app.screen.width < 600;
+  if (banner.style.wordWrapWidth !== app.screen.width - 24) {
+    banner.style.wordWrapWidth = app.screen.width - 24;
+    banner.style.fontSize = narrow ? 17 : 22;
+  }
   if (levelOver(world, t)) {
     const share = t.fallen / Math.max(1, lv.pieces.length);
     const stars = share >= 0.9 ? '★★★' : share >= 0.6 ? '★★☆' : share >= 0.3 ? '★☆☆' : '☆☆☆';
-    const keys = touch ? 'Next level: the button below   ↺: try again' : 'L or the button below: next level   R: try again';
-    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nscore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\n${keys}`;
+    const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
+    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nScore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\n${keys}`;
     showNext(true, params.level === LEVEL_COUNT ? 'Play again from level 1 ▶' : `Level ${params.level + 1} ▶`);
   } else {
     banner.text = `Score ${t.score}   shots ${shotsLeft}`;
