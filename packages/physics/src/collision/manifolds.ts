@@ -350,8 +350,10 @@ export interface ShapeCollisionState {
   originX: Float64Array;
   /** Per entity: the reference point's offset from the centre of mass, y, m (`originX` its x). */
   originY: Float64Array;
-  /** Sleeping balls touched by moving shapes this step (woken after the step's collisions). */
+  /** Sleeping bodies leaning on resting ones this step (woken after the step's collisions, for the next step). */
   wake: number[];
+  /** Sleeping bodies reached by moving ones in this pass of the shape collision (woken within the step). */
+  wakeNow: number[];
   /** Rows the emptied buffer held before `rotateManifolds` (the step before's, for end events). */
   lastCount: number;
   /** Sensor overlaps found this step (swapped with `sensorPairs`). */
@@ -389,6 +391,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     originX: new Float64Array(0),
     originY: new Float64Array(0),
     wake: [],
+    wakeNow: [],
     lastCount: 0,
     sensorNow: new Set(),
     eventStep: -1,

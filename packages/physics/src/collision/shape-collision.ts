@@ -4,11 +4,14 @@ import { query } from '../query.js';
 import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geometry.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../shapes/store.js';
 import type { PhysicsWorld } from '../world.js';
+import { broadphaseSystem } from './broadphase.js';
 import { pushEvent } from './events.js';
 import { collideHalfPlane, collideShapes, createManifold, type Manifold } from './manifold.js';
 import { growManifoldBuffer, type ShapeCollisionState, type ShapeScratch } from './manifolds.js';
+import { narrowphaseSystem } from './narrowphase.js';
 import { wakeIsland } from './sleep.js';
 import { BodyType } from './state.js';
+import { wakeIslandForStep } from './step-wake.js';
 
 /**
  * Collide stage, shapes (2D): the broadphase and narrowphase of every shape (`Components.Shape`) and
@@ -48,18 +51,41 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
     ev.sensorBegin.count = 0;
     ev.sensorEnd.count = 0;
   }
-  st.manifolds.count = 0;
-  gatherColliders(world, st);
-  findPairs(st.scratch, st.anyMoving);
-  collidePairs(world, st);
+  // A sleeping island that a moving or kinematic body reaches wakes and joins this step's solve (so
+  // the hit's momentum goes into it); the pairs are then found again with it awake. Woken balls are
+  // classified by the ball broadphase, which runs again with them (their ball contacts too).
+  const c = world.components;
+  for (let pass = 0; ; pass++) {
+    st.manifolds.count = 0;
+    st.wake.length = 0;
+    st.wakeNow.length = 0;
+    gatherColliders(world, st);
+    findPairs(st.scratch, st.anyMoving);
+    collidePairs(world, st);
+    if (st.wakeNow.length === 0 || pass >= MAX_WAKE_PASSES) break;
+    let woken = 0,
+      balls = false;
+    for (const e of st.wakeNow) {
+      if (hasComponent(world, e, c.Ball)) balls = true;
+      woken += wakeIslandForStep(world, e);
+    }
+    if (woken === 0) break;
+    if (balls) {
+      broadphaseSystem(world);
+      narrowphaseSystem(world);
+    }
+  }
+  sensorEvents(world, st);
   collideStatic(world, st);
   if (st.wake.length > 0) {
-    // Balls asleep under a moving shape: wake them for the next step (this step they held still).
-    const c = world.components;
+    // Sleeping bodies leaning on a resting body: woken for the next step (this step they held still).
     for (const e of st.wake) if (hasComponent(world, e, c.Sleeping)) wakeIsland(world, e);
     st.wake.length = 0;
   }
 }
+
+/** Passes of the shape collision after which no more sleeping islands are woken within the step. */
+const MAX_WAKE_PASSES = 8;
 
 function ensureScratch(sc: ShapeScratch, n: number): void {
   if (sc.shape.length >= n) return;
@@ -442,12 +468,8 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
     if (ba === bb) continue;
     const ta = type[ba]!,
       tb = type[bb]!;
-    if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic) {
-      // A kinematic body reaching a sleeping one wakes it (for the next step).
-      if (ta === BodyType.Kinematic && tb === BodyType.Sleeping) st.wake.push(bb);
-      else if (tb === BodyType.Kinematic && ta === BodyType.Sleeping) st.wake.push(ba);
-      continue;
-    }
+    // Pairs without a dynamic body are skipped, but for a kinematic body reaching a sleeping one.
+    if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic && !kinematicMeetsSleeper(ta, tb)) continue;
     // Keep the lower shape id as A so a pair's key does not depend on the grid's order.
     if (ea > eb) {
       let t = i;
@@ -504,13 +526,26 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
       continue;
     }
     if (tA === BodyType.Sleeping || tB === BodyType.Sleeping) {
-      // A sleeping ball under a moving shape: hold it still this step, wake it for the next.
-      if (tA === BodyType.Sleeping) st.wake.push(ba);
-      else st.wake.push(bb);
+      // A sleeping body reached by a moving (kinematic, or dynamic and not resting) one wakes now and
+      // takes part in this step's solve (the pass is run again). Met by a resting body it holds still
+      // as immovable geometry this step, and wakes for the next.
+      const sleeper = tA === BodyType.Sleeping ? ba : bb,
+        other = sleeper === ba ? bb : ba,
+        tOther = sleeper === ba ? tB : tA;
+      if (tOther === BodyType.Kinematic || cs.sleep.restTime[other] === 0) {
+        st.wakeNow.push(sleeper);
+        continue;
+      }
+      st.wake.push(sleeper);
     }
     pushManifold(st, mf, ea, eb, ba, bb, sc.x[i]!, sc.y[i]!, sc.x[j]!, sc.y[j]!, vax, vay, wa, vbx, vby, wb, spec, h);
   }
-  // Sensor events: overlaps that began or ended this step.
+}
+
+/** Sensor events: the overlaps found this step (`sensorNow`) that began or ended since the last. */
+function sensorEvents(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const S = world.components.Shape,
+    sensorNow = st.sensorNow;
   const prev = st.sensorPairs,
     ev = st.events;
   for (const key of sensorNow) {
@@ -527,6 +562,11 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   }
   st.sensorPairs = sensorNow;
   st.sensorNow = prev;
+}
+
+/** Whether one of two body types is kinematic and the other sleeping (a pair met only to wake the sleeper). */
+function kinematicMeetsSleeper(ta: number, tb: number): boolean {
+  return (ta === BodyType.Kinematic && tb === BodyType.Sleeping) || (ta === BodyType.Sleeping && tb === BodyType.Kinematic);
 }
 
 function sensorBody(world: PhysicsWorld, e: number): number {

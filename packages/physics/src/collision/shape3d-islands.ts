@@ -1,9 +1,10 @@
-import { hasComponent, removeComponent } from 'bitecs';
+import { hasComponent } from 'bitecs';
 import { Not, query } from '../query.js';
 import { shapes3DOf } from '../shapes3d/store.js';
 import type { PhysicsWorld } from '../world.js';
 import { contact3DStateOf } from './manifolds3d-state.js';
 import { BodyType } from './state.js';
+import { wakeIslandForStep } from './step-wake.js';
 
 /**
  * Sleeping for 3D shape bodies (used by sleep.ts and shape3d-collision.ts), as for 2D shapes
@@ -97,31 +98,7 @@ export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, ga
  * many bodies woke.
  */
 export function wakeIsland3D(world: PhysicsWorld, e: number): number {
-  const c = world.components;
-  if (!hasComponent(world, e, c.Sleeping)) return 0;
-  const id = world.collision.sleep.island[e]!,
-    island = world.collision.sleep.island;
-  const asleep = query(world, [c.Sleeping]);
-  let list: number[] | null = null;
-  for (let i = 0; i < asleep.length; i++) if (island[asleep[i]!] === id) (list ??= []).push(asleep[i]!);
-  if (list === null) return 0;
-  const g = world.gravity,
-    h = world.h,
-    f = 0.5 * h * h;
-  for (const b of list) {
-    removeComponent(world, b, c.Sleeping);
-    world.collision.sleep.restTime[b] = 0;
-    c.Velocity.x[b] = g[0]! * h;
-    c.Velocity.y[b] = g[1]! * h;
-    c.Velocity.z[b] = g[2]! * h;
-    c.PreviousPosition.x[b] = c.Position.x[b]!;
-    c.PreviousPosition.y[b] = c.Position.y[b]!;
-    c.PreviousPosition.z[b] = c.Position.z[b]!;
-    c.Position.x[b] = c.Position.x[b]! + g[0]! * f;
-    c.Position.y[b] = c.Position.y[b]! + g[1]! * f;
-    c.Position.z[b] = c.Position.z[b]! + g[2]! * f;
-  }
-  return list.length;
+  return wakeIslandForStep(world, e);
 }
 
 /** Removal hook: wakes the sleeping islands that body `eid`'s 3D manifolds of the last step touched. */
