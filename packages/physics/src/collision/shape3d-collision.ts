@@ -44,9 +44,9 @@ function meets(ta: number, tb: number): boolean {
 
 /**
  * Collide stage, 3D shapes (shapes3d/): broadphase, filtering and narrowphase of every 3D shape, and
- * of ball bodies (as spheres) and planes against them, writing manifolds for the contact solver
- * (manifold3d-solver.ts solves them in the same substeps as the ball contacts). Ball-ball and
- * ball-plane contacts stay with broadphase.ts and narrowphase.ts.
+ * of ball bodies (as spheres), planes and the boundary box's six faces against them, writing manifolds
+ * for the contact solver (manifold3d-solver.ts solves them in the same substeps as the ball contacts).
+ * Ball-ball, ball-plane and ball-boundary contacts stay with broadphase.ts and narrowphase.ts.
  *
  * - Poses are those at the start of the step (PreviousPosition, and the orientation turned back by
  *   the step's rotation w h), as the solver measures displacement from there.
@@ -1101,51 +1101,90 @@ function planesAndMeshes(world: PhysicsWorld, s: Shape3DStore, st: Contact3DStat
   const h = world.h;
   const meshList = meshesOf(world);
   if (meshList.length > 0) for (let i = 0; i < n; i++) for (const m of meshList) collideMesh(world, s, st, m, i);
-  // Planes: static, A side.
+  // Planes and the boundary box's six faces: static, A side.
   const c = world.components;
   const planes = query(world, [c.Plane]);
-  if (planes.length === 0) return;
-  const P = c.Plane;
+  const box = world.collision.boundary;
+  if (planes.length === 0 && !box.enabled) return;
+  const P = c.Plane,
+    lo = box.min,
+    hi = box.max;
   for (let i = 0; i < n; i++) {
-    if (sc.ball[i]) continue; // balls against planes are the ball narrowphase's
+    if (sc.ball[i]) continue; // balls against planes and the boundary are the ball narrowphase's
     if (type[sc.body[i]!] !== BodyType.Dynamic) continue;
     const e = sc.shape[i]!;
     if (s.sensor[e]) continue;
-    const box = s.kind[e] === Shape3DKind.Box;
-    let posed = false;
+    posed = false;
     const margin = shapeSpec + sc.speed[i]! * h;
     for (let k = 0; k < planes.length; k++) {
       const p = planes[k]!;
-      const nx = P.nx[p]!,
-        ny = P.ny[p]!,
-        nz = P.nz[p]!,
-        d = P.d[p]!;
-      // Cheap reject: the bounding sphere above the plane by more than the margin.
-      if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) continue;
-      if (box) {
-        const g = planeArgs;
-        g[0] = nx;
-        g[1] = ny;
-        g[2] = nz;
-        g[3] = d;
-        g[4] = sc.px[i]!;
-        g[5] = sc.py[i]!;
-        g[6] = sc.pz[i]!;
-        g[7] = s.hx[e]!;
-        g[8] = s.hy[e]!;
-        g[9] = s.hz[e]!;
-        g[10] = margin;
-        planeBox3DAt(sc.R, 9 * i, manifold);
-      } else {
-        if (!posed) {
-          collider(world, s, i, colB);
-          posed = true;
-        }
-        collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
-      }
-      if (manifold.count > 0) emit(world, s, st, 0, sc.body[i]!, p, e, false, false, p);
+      if (collidePlaneAt(world, s, i, P.nx[p]!, P.ny[p]!, P.nz[p]!, P.d[p]!, margin))
+        emit(world, s, st, 0, sc.body[i]!, p, e, false, false, p);
+    }
+    if (!box.enabled) continue;
+    // The faces as planes n . x = d with n pointing into the box (solid outside it).
+    for (let f = 0; f < 6; f++) {
+      const axis = f >> 1,
+        sign = (f & 1) === 0 ? 1 : -1;
+      const d = sign > 0 ? lo[axis]! : -hi[axis]!;
+      const nx = axis === 0 ? sign : 0,
+        ny = axis === 1 ? sign : 0,
+        nz = axis === 2 ? sign : 0;
+      if (collidePlaneAt(world, s, i, nx, ny, nz, d, margin)) emit(world, s, st, 0, sc.body[i]!, 0, e, false, false, 0, BOUNDARY_SUB + f);
     }
   }
+}
+
+/**
+ * The row `sub` of a boundary face (0 to 5: -x, +x, -y, +y, -z, +z walls' faces, in the order of
+ * `planesAndMeshes`), with no shape on the A side: above every mesh triangle's (triangle index + 1,
+ * under 2^22 - 6), so a face's warm start never meets a triangle's.
+ */
+const BOUNDARY_SUB = 4194304 - 6;
+
+/** Whether collider i's pose has been written to `colB` in the current collider's pass over the planes. */
+let posed = false;
+
+/**
+ * The manifold (in `manifold`) of collider i against the plane n . x = d (solid below), within
+ * `margin`; false, without posing the collider, when its bounding sphere is farther than the margin.
+ */
+function collidePlaneAt(
+  world: PhysicsWorld,
+  s: Shape3DStore,
+  i: number,
+  nx: number,
+  ny: number,
+  nz: number,
+  d: number,
+  margin: number,
+): boolean {
+  const sc = scratch,
+    e = sc.shape[i]!;
+  // Cheap reject: the bounding sphere above the plane by more than the margin.
+  if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) return false;
+  if (s.kind[e] === Shape3DKind.Box) {
+    const g = planeArgs;
+    g[0] = nx;
+    g[1] = ny;
+    g[2] = nz;
+    g[3] = d;
+    g[4] = sc.px[i]!;
+    g[5] = sc.py[i]!;
+    g[6] = sc.pz[i]!;
+    g[7] = s.hx[e]!;
+    g[8] = s.hy[e]!;
+    g[9] = s.hz[e]!;
+    g[10] = margin;
+    planeBox3DAt(sc.R, 9 * i, manifold);
+  } else {
+    if (!posed) {
+      collider(world, s, i, colB);
+      posed = true;
+    }
+    collidePlane3D(nx, ny, nz, d, colB, margin, manifold);
+  }
+  return manifold.count > 0;
 }
 
 /** Writes the manifold into the buffer as solver rows with their anchors, material and warm start. */
@@ -1198,8 +1237,11 @@ function emit(
   buf.t1y[i] = ty / tl;
   buf.t1z[i] = tz / tl;
   // Materials: the bouncier surface wins, friction is the geometric mean (Box2D's mixing).
-  const fa = plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!,
-    ra = plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
+  // A side without body or shape: the boundary box (its walls' material).
+  const wall = bodyA === 0 && ea === 0,
+    bound = world.collision.boundary;
+  const fa = wall ? bound.friction : plane !== 0 || ballA ? c.Material.friction[ea]! : s.friction[ea]!,
+    ra = wall ? bound.restitution : plane !== 0 || ballA ? c.Material.restitution[ea]! : s.restitution[ea]!;
   const fb = ballB ? c.Material.friction[eb]! : s.friction[eb]!,
     rb = ballB ? c.Material.restitution[eb]! : s.restitution[eb]!;
   buf.friction[i] = Math.sqrt(fa * fb);
