@@ -558,7 +558,9 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
 /**
  * Restitution (Box2D v3 b2ApplyRestitution): every point that approached faster than the threshold at
  * the start of the step and carried an impulse gets the normal impulse that makes it leave with
- * v_n = -e v_n0 (the accumulated normal impulse stays >= 0).
+ * v_n = -e v_n0 (the accumulated normal impulse stays >= 0). The two points of a manifold with a valid
+ * block (see `prepareManifolds`) that both qualify are solved together, as the 2 x 2 complementarity
+ * problem of Box2D 2.x's block solver, so a face-on hit rebounds without spin.
  */
 export function applyManifoldRestitution(world: PhysicsWorld): void {
   const cs = world.collision,
@@ -582,7 +584,86 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       vbx = sb[b]!,
       vby = sb[b + 1]!,
       wb = sb[b + 2]!;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
+    const m = buf.pointCount[i]!;
+    if (m === 2 && buf.blockValid[i] === 1) {
+      // Both points at once (the linear complementarity problem of the block solve, with the target
+      // v_n,i = -e v_n0,i), so symmetric points get symmetric impulses: point after point, the first
+      // takes the whole rebound, turns the body and leaves the second less to do.
+      const q = 2 * i;
+      const v1 = buf.relativeVelocity[q]!,
+        v2 = buf.relativeVelocity[q + 1]!;
+      const on1 = v1 <= -threshold && buf.maxNormalImpulse[q]! > 0,
+        on2 = v2 <= -threshold && buf.maxNormalImpulse[q + 1]! > 0;
+      if (on1 && on2) {
+        const r1ax = buf.rAx[q]!,
+          r1ay = buf.rAy[q]!,
+          r1bx = buf.rBx[q]!,
+          r1by = buf.rBy[q]!,
+          r2ax = buf.rAx[q + 1]!,
+          r2ay = buf.rAy[q + 1]!,
+          r2bx = buf.rBx[q + 1]!,
+          r2by = buf.rBy[q + 1]!;
+        const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
+        const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
+        const o1 = buf.normalImpulse[q]!,
+          o2 = buf.normalImpulse[q + 1]!;
+        const B11 = buf.block11[i]!,
+          B12 = buf.block12[i]!,
+          B22 = buf.block22[i]!;
+        // K from its inverse B (K = B^-1).
+        const det = 1 / (B11 * B22 - B12 * B12);
+        const K11 = B22 * det,
+          K22 = B11 * det,
+          K12 = -B12 * det;
+        // K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i + e v_n0,i after the impulses x.
+        const c1 = vn1 + e * v1 - (K11 * o1 + K12 * o2),
+          c2 = vn2 + e * v2 - (K12 * o1 + K22 * o2);
+        let n1 = -(B11 * c1 + B12 * c2),
+          n2 = -(B12 * c1 + B22 * c2);
+        let ok = n1 >= 0 && n2 >= 0;
+        if (!ok) {
+          n1 = -c1 / K11;
+          n2 = 0;
+          ok = n1 >= 0 && K12 * n1 + c2 >= 0;
+        }
+        if (!ok) {
+          n1 = 0;
+          n2 = -c2 / K22;
+          ok = n2 >= 0 && K12 * n2 + c1 >= 0;
+        }
+        if (!ok) {
+          n1 = 0;
+          n2 = 0;
+          ok = c1 >= 0 && c2 >= 0;
+        }
+        if (ok) {
+          const d1 = n1 - o1,
+            d2 = n2 - o2;
+          buf.normalImpulse[q] = n1;
+          buf.normalImpulse[q + 1] = n2;
+          buf.totalNormalImpulse[q] = buf.totalNormalImpulse[q]! + d1;
+          buf.totalNormalImpulse[q + 1] = buf.totalNormalImpulse[q + 1]! + d2;
+          const P1x = d1 * nx,
+            P1y = d1 * ny,
+            P2x = d2 * nx,
+            P2y = d2 * ny;
+          vax -= mA * (P1x + P2x);
+          vay -= mA * (P1y + P2y);
+          wa -= iA * (r1ax * P1y - r1ay * P1x + r2ax * P2y - r2ay * P2x);
+          vbx += mB * (P1x + P2x);
+          vby += mB * (P1y + P2y);
+          wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
+          sb[a] = vax;
+          sb[a + 1] = vay;
+          sb[a + 2] = wa;
+          sb[b] = vbx;
+          sb[b + 1] = vby;
+          sb[b + 2] = wb;
+          continue;
+        }
+      }
+    }
+    for (let p = 0; p < m; p++) {
       const q = 2 * i + p;
       const v0 = buf.relativeVelocity[q]!;
       if (v0 > -threshold || buf.maxNormalImpulse[q]! === 0) continue;
