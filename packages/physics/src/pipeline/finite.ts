@@ -20,7 +20,8 @@ import type { StageName } from './stage-names.js';
  * only contacts) or check what they write themselves (the integrators' running sums over their
  * bodies' positions and velocities, the contact solver's over its bodies, emitters, sleeping) are
  * marked, so a stage made only of them is not checked again (after `integrate` only the turning
- * bodies are); a user system added with `addSystem` is always checked after.
+ * bodies are); a user system added with `addSystem` is always checked after, and at once when another system follows
+ * it in its stage (pipeline/step.ts), so a NaN it writes before the contact solver does not spread.
  * In 2D the z components of the linear state are not part of the motion and are not checked;
  * `clearForces` writes zeros and is never checked. In a substep that runs the fused force-and-integrate
  * pass (integrators/fused-gate.ts) the forces are written by the integrator, which checks them itself
@@ -59,11 +60,21 @@ export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: 
   if (stage === 'clearForces' || systems.length === 0) return 0;
   let need: 0 | 1 | 2 = 0;
   for (let i = 0; i < systems.length; i++) {
-    const t = trusted.get(systems[i]!);
-    if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
-    if (t.scope === 'linear') need = 1;
+    const level = systemNeedsCheck(world, systems[i]!);
+    if (level === 2) return 2;
+    if (level === 1) need = 1;
   }
   return need;
+}
+
+/**
+ * What must be checked after `system` alone: 2 the whole motion state (not trusted, or trusted only
+ * while idle and not idle now), 1 only the angular state (it checks its linear state itself), 0 nothing.
+ */
+export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
+  const t = trusted.get(system);
+  if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
+  return t.scope === 'linear' ? 1 : 0;
 }
 
 /*

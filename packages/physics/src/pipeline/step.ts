@@ -3,7 +3,7 @@ import { setFusedForces } from '../integrators/fused-state.js';
 import { query } from '../query.js';
 import { assertOptions, describe } from '../validate.js';
 import type { PhysicsWorld, System } from '../world.js';
-import { checkStageState, stageNeedsCheck } from './finite.js';
+import { checkStageState, systemNeedsCheck } from './finite.js';
 import { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
@@ -13,14 +13,25 @@ const now: () => number = typeof clock?.now === 'function' ? () => clock.now() :
 /**
  * Runs the systems of one stage, then checks the state it may have written (pipeline/finite.ts):
  * a NaN or infinity stops the step here with a NonFiniteStateError naming the stage, the entity
- * and the field.
+ * and the field. A system that does not check its own output (a user's, or a collision system for
+ * shapes) and is followed by others in the stage is checked as soon as it returns: a later system
+ * (the contact solver) would otherwise spread its NaN through the contacts to every body touching
+ * the one it wrote, before the end of the stage.
  */
 function runStage(world: PhysicsWorld, stage: StageName): void {
   const systems = world.stages[stage];
-  if (systems.length === 0) return;
+  const n = systems.length;
+  if (n === 0) return;
   const t0 = now();
-  for (let i = 0; i < systems.length; i++) systems[i]!(world);
-  const level = stageNeedsCheck(world, stage, systems);
+  let level: 0 | 1 | 2 = 0;
+  for (let i = 0; i < n; i++) {
+    const system = systems[i]!;
+    system(world);
+    if (stage === 'clearForces') continue;
+    const own = systemNeedsCheck(world, system);
+    if (own === 2 && i < n - 1) checkStageState(world, stage, 2);
+    else if (own > level) level = own;
+  }
   if (level !== 0 || stage === 'forces') checkStageState(world, stage, level);
   world.timings[stage] += now() - t0;
 }
@@ -35,7 +46,9 @@ function runStage(world: PhysicsWorld, stage: StageName): void {
  *   own `addEntity` bypass the check of `createEntity`; this catches them before their data is lost).
  * @throws NonFiniteStateError (a RangeError) if a body's state became NaN or infinite: its position,
  *   velocity, angle or orientation, angular velocity, or (after `forces`) force or torque. It is
- *   thrown at the end of the stage that wrote the value, before any later stage runs; `entity` is the
+ *   thrown at the end of the stage that wrote the value, before any later stage runs (or, for a
+ *   system that does not check its own output, as soon as it returns, before the next system of the
+ *   stage runs); `entity` is the
  *   body's handle, `field` e.g. 'Position.x', `stage` the stage (pipeline/finite.ts). The world is
  *   left as that stage left it. In a substep run by the fused force-and-integrate pass
  *   (integrators/fused-gate.ts) a non-finite force is found before its body moves, but bodies the pass
