@@ -105,8 +105,15 @@ const BODY_OPTIONS = [
  * const ball = addBody(world, { position: [0, 5], radius: 0.5, mass: 2, restitution: 0.8 });
  */
 export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number {
-  const where = 'addBody';
-  assertOptions(where, options, BODY_OPTIONS);
+  return addBodyAs(world, options, 'addBody', BODY_OPTIONS);
+}
+
+/**
+ * Internal: `addBody` for a function built on it (addBox, createRope, createCloth), whose errors name
+ * that function (`where`) and list the options it takes (`known`).
+ */
+export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: string, known: readonly string[]): number {
+  assertOptions(where, options, known);
   const d = world.dimensions;
   assertOptionalBoolean(where, 'static', options.static);
   assertOptionalBoolean(where, 'kinematic', options.kinematic);

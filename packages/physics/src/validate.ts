@@ -115,10 +115,17 @@ export function assertKnownKeys(where: string, options: unknown, known: readonly
  * optional give it a default (`options = {}`) before calling this, so a missing object means "all
  * defaults" there and is refused everywhere else with the same message as a wrong one.
  * @param param how the object is named in messages: 'options', or a nested option such as 'particle'.
+ * @param nullable keys whose documented meaning includes null (a joint's `a: null` is the world).
  * @throws TypeError `<where>: <param> must be an object, got <value>`; `<where>: unknown option "<key>"...`;
  *   `<where>: <key> must be a value (omit it for the default), got null`.
  */
-export function assertOptions(where: string, options: unknown, known: readonly string[], param = 'options'): void {
+export function assertOptions(
+  where: string,
+  options: unknown,
+  known: readonly string[],
+  param = 'options',
+  nullable: readonly string[] = [],
+): void {
   if (options === null || typeof options !== 'object' || Array.isArray(options) || ArrayBuffer.isView(options)) {
     throw new TypeError(`${where}: ${param} must be an object, got ${describe(options)}`);
   }
@@ -129,7 +136,7 @@ export function assertOptions(where: string, options: unknown, known: readonly s
         `${where}: unknown option ${JSON.stringify(prefix + key)}; known options${prefix ? ` of ${param}` : ''} are ${known.join(', ')}`,
       );
     }
-    if ((options as Record<string, unknown>)[key] === null) {
+    if ((options as Record<string, unknown>)[key] === null && !nullable.includes(key)) {
       throw new TypeError(`${where}: ${prefix}${key} must be a value (omit it for the default), got null`);
     }
   }

@@ -1,8 +1,8 @@
 import { addComponent } from 'bitecs';
-import { addBody, createSlot } from '../bodies.js';
-import { currentHandle, slotOf } from '../handles.js';
+import { addBodyAs, createSlot, removeBody } from '../bodies.js';
+import { currentHandle, isAlive, slotOf } from '../handles.js';
 import { ensureJointArrays } from '../joints/state.js';
-import { assertFinite, assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { assertFinite, assertInteger, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { ClothLinkKind } from './store.js';
 
@@ -34,10 +34,10 @@ export interface ClothOptions {
 
 /** What `createCloth` made. */
 export interface Cloth {
-  /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. */
-  readonly points: Int32Array;
+  /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. Float64Array: a handle needs up to 53 bits (handles.ts). */
+  readonly points: Float64Array;
   /** Link entities' handles: structural first, then shear, then bending. */
-  readonly links: Int32Array;
+  readonly links: Float64Array;
   readonly columns: number;
   readonly rows: number;
 }
@@ -71,7 +71,7 @@ const KEYS = [
 export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cloth {
   const where = 'createCloth';
   if (world.dimensions !== 2) throw new RangeError(`${where}: cloth needs a 2D world, this world has ${world.dimensions} dimensions`);
-  assertKnownKeys(where, options, KEYS);
+  assertOptions(where, options, KEYS, 'options', ['shearCompliance', 'bendCompliance']);
   const origin = options.origin ?? [0, 0];
   assertVector(where, 'origin', origin, 2);
   const width = options.width ?? 1,
@@ -124,15 +124,27 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   const dx = width / (cols - 1),
     dy = height / (rows - 1);
   const m = mass / n;
-  const points = new Int32Array(n);
-  for (let r = 0; r < rows; r++) {
-    for (let c = 0; c < cols; c++) {
-      const i = r * cols + c;
-      const position = [origin[0]! + c * dx, origin[1]! - r * dy];
-      points[i] = pinned[i] ? addBody(world, { position, static: true }) : addBody(world, { position, mass: m, linearDrag: drag });
+  const far = Math.max(Math.abs(origin[0]!) + width, Math.abs(origin[1]!) + height);
+  if (!Number.isFinite(far))
+    throw new RangeError(`${where}: origin, width and height must keep the cloth finite, got ${describe(origin)}, ${width} x ${height}`);
+  const points = new Float64Array(n);
+  let made = 0;
+  try {
+    for (let r = 0; r < rows; r++) {
+      for (let c = 0; c < cols; c++) {
+        const i = r * cols + c;
+        const position = [origin[0]! + c * dx, origin[1]! - r * dy];
+        points[i] = pinned[i]
+          ? addBodyAs(world, { position, static: true }, where, POINT_OPTIONS)
+          : addBodyAs(world, { position, mass: m, linearDrag: drag }, where, POINT_OPTIONS);
+        made++;
+      }
     }
+  } catch (err) {
+    for (let i = 0; i < made; i++) if (isAlive(world, points[i]!)) removeBody(world, points[i]!);
+    throw err;
   }
-  const links = new Int32Array(linkCount);
+  const links = new Float64Array(linkCount);
   let k = 0;
   const C = world.components;
   ensureJointArrays(world.joints, world.capacity);
@@ -181,6 +193,9 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   world.cloth.version++;
   return { points, links, columns: cols, rows };
 }
+
+/** The body options createCloth passes on (for addBodyAs' check). */
+const POINT_OPTIONS = ['position', 'static', 'mass', 'linearDrag'] as const;
 
 /** Index of point (row, column) in `Cloth.points`. @throws RangeError outside the grid. */
 export function clothPointIndex(cloth: Cloth, row: number, column: number): number {

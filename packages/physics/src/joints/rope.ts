@@ -1,5 +1,14 @@
-import { addBody } from '../bodies.js';
-import { assertInteger, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
+import { addBodyAs, removeBody } from '../bodies.js';
+import { isAlive } from '../handles.js';
+import {
+  assertInteger,
+  assertNonNegative,
+  assertOptionalBoolean,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { addDistanceJoint } from './api.js';
 
@@ -23,16 +32,16 @@ export interface RopeOptions {
   slack?: boolean;
   /** Linear drag of each body, N s/m, >= 0 (air resistance; wind acts through it). Default 0. */
   drag?: number;
-  /** Force past which a link breaks, N, > 0. Default Infinity. */
+  /** Force past which a link breaks, N, > 0 (Infinity: never). Default Infinity. */
   breakForce?: number;
 }
 
 /** What `createRope` made. */
 export interface Rope {
-  /** The bodies from the start to the end. */
-  readonly bodies: Int32Array;
-  /** The distance joints in order along the rope: the start pin (if pinned), the links between bodies, the end pin (if pinned). */
-  readonly joints: Int32Array;
+  /** The bodies' handles from the start to the end (Float64Array: a handle needs up to 53 bits, see handles.ts). */
+  readonly bodies: Float64Array;
+  /** The distance joints' handles in order along the rope: the start pin (if pinned), the links between bodies, the end pin (if pinned). */
+  readonly joints: Float64Array;
 }
 
 /**
@@ -40,14 +49,13 @@ export interface Rope {
  * distance joints of equal length (rope links that only pull, or rods), optionally pinned to the world
  * at either end (a pinned end is one segment from its body). The links are joints[0..] in order from the start. The bodies do not rotate (point masses; the joint solver's point links). A 2D world only.
  * @returns the bodies and joints.
- * @throws TypeError | RangeError on a 3D world, unknown options, bad ends or values, start equal to end.
+ * @throws TypeError | RangeError `createRope: <param> must be ...` on a 3D world, unknown or null options, bad
+ *   ends or values, start equal to end, or a world without room for the rope. A refused call adds nothing.
  */
 export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   const where = 'createRope';
   if (world.dimensions !== 2) throw new RangeError(`${where}: ropes need a 2D world, this world has ${world.dimensions} dimensions`);
-  if (options === undefined || options === null || typeof options !== 'object')
-    throw new TypeError(`${where}: options with start and end are required, got ${describe(options)}`);
-  assertKnownKeys(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
+  assertOptions(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
   assertVector(where, 'start', options.start, 2);
   assertVector(where, 'end', options.end, 2);
   const n = options.segments ?? 20;
@@ -58,13 +66,16 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   assertNonNegative(where, 'radius', radius);
   const drag = options.drag ?? 0;
   assertNonNegative(where, 'drag', drag);
-  if (options.breakForce !== undefined) assertPositive(where, 'breakForce', options.breakForce);
+  if (options.breakForce !== undefined && options.breakForce !== Infinity) assertPositive(where, 'breakForce', options.breakForce);
   const x0 = options.start[0]!,
     y0 = options.start[1]!,
     x1 = options.end[0]!,
     y1 = options.end[1]!;
   const length = Math.hypot(x1 - x0, y1 - y0);
   if (!(length > 0)) throw new RangeError(`${where}: start and end must differ, got ${describe(options.start)} twice`);
+  assertOptionalBoolean(where, 'pinStart', options.pinStart);
+  assertOptionalBoolean(where, 'pinEnd', options.pinEnd);
+  assertOptionalBoolean(where, 'slack', options.slack);
   const pinStart = options.pinStart ?? true,
     pinEnd = options.pinEnd ?? false;
   const slack = options.slack ?? true;
@@ -76,33 +87,50 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
     );
   }
   const seg = length / Math.max(spans, 1);
-  const bodies = new Int32Array(n);
+  const bodies = new Float64Array(n);
+  const joints = new Float64Array(spans);
   const m = mass / n;
-  for (let i = 0; i < n; i++) {
-    const t = spans > 0 ? (i + (pinStart ? 1 : 0)) / spans : 0;
-    bodies[i] = addBody(world, {
-      position: [x0 + t * (x1 - x0), y0 + t * (y1 - y0)],
-      mass: m,
-      rotates: false,
-      ...(radius > 0 ? { radius } : {}),
-      ...(drag > 0 ? { linearDrag: drag } : {}),
-    });
-  }
-  const joints: number[] = [];
-  const link = (a: number | null, b: number, anchorA?: [number, number]): void => {
-    joints.push(
-      addDistanceJoint(world, {
+  let made = 0,
+    linked = 0;
+  try {
+    for (let i = 0; i < n; i++) {
+      const t = spans > 0 ? (i + (pinStart ? 1 : 0)) / spans : 0;
+      bodies[i] = addBodyAs(
+        world,
+        {
+          position: [x0 + t * (x1 - x0), y0 + t * (y1 - y0)],
+          mass: m,
+          rotates: false,
+          ...(radius > 0 ? { radius } : {}),
+          ...(drag > 0 ? { linearDrag: drag } : {}),
+        },
+        where,
+        ROPE_BODY_OPTIONS,
+      );
+      made++;
+    }
+    const link = (a: number | null, b: number, anchorA?: [number, number]): void => {
+      joints[linked++] = addDistanceJoint(world, {
         a,
         b,
         ...(anchorA ? { anchorA } : {}),
         length: seg,
         ...(slack ? { minLength: 0 } : {}),
         ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}),
-      }),
-    );
-  };
-  if (pinStart) link(null, bodies[0]!, [x0, y0]);
-  for (let i = 1; i < n; i++) link(bodies[i - 1]!, bodies[i]!);
-  if (pinEnd) link(null, bodies[n - 1]!, [x1, y1]);
-  return { bodies, joints: Int32Array.from(joints) };
+      });
+    };
+    if (pinStart) link(null, bodies[0]!, [x0, y0]);
+    for (let i = 1; i < n; i++) link(bodies[i - 1]!, bodies[i]!);
+    if (pinEnd) link(null, bodies[n - 1]!, [x1, y1]);
+  } catch (err) {
+    // A refused rope leaves the world as it was: its bodies go, and their joints with them.
+    for (let i = 0; i < made; i++) if (isAlive(world, bodies[i]!)) removeBody(world, bodies[i]!);
+    throw err instanceof RangeError || err instanceof TypeError
+      ? new (err.constructor as typeof RangeError)(`${where}: ${err.message}`)
+      : err;
+  }
+  return { bodies, joints };
 }
+
+/** The body options createRope passes on (for addBodyAs' check). */
+const ROPE_BODY_OPTIONS = ['position', 'mass', 'rotates', 'radius', 'linearDrag'] as const;

@@ -1,13 +1,14 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import { addBody, type BodyOptions, createSlot } from '../bodies.js';
+import { addBodyAs, type BodyOptions, createSlot } from '../bodies.js';
 import { ensureShapeState } from '../collision/manifolds.js';
-import { slotOf } from '../handles.js';
+import { currentHandle, resolveEntity, resolveKind, slotOf } from '../handles.js';
 import {
   assertFinite,
   assertInRange,
   assertInteger,
-  assertKnownKeys,
   assertNonNegative,
+  assertOptionalBoolean,
+  assertOptions,
   assertPositive,
   assertVector,
   describe,
@@ -85,17 +86,9 @@ const SHAPE_OPTIONS = [
   'group',
 ] as const;
 
-function assertShapeBody(where: string, world: PhysicsWorld, body: number): void {
-  if (
-    typeof body !== 'number' ||
-    !Number.isInteger(body) ||
-    body < 1 ||
-    body > world.capacity ||
-    !entityExists(world, body) ||
-    !hasComponent(world, body, world.components.Position)
-  ) {
-    throw new RangeError(`${where}: body must be a body of this world, got ${describe(body)}`);
-  }
+/** The slot of the live 2D body `body` (a handle), for the shape functions. */
+function resolveShapeBody(where: string, world: PhysicsWorld, body: unknown): number {
+  return resolveKind(world, body, 'body', where, 'body');
 }
 
 /** Builds and checks the geometry of `options` in the shape's own frame. */
@@ -152,9 +145,30 @@ function geometryOf(where: string, o: ShapeOptions): ConvexGeometry {
 export function addShape(world: PhysicsWorld, body: number, options: ShapeOptions): number {
   const where = 'addShape';
   if (world.dimensions !== 2) throw new TypeError(`${where}: shapes are 2D; this world has 3 dimensions`);
-  assertShapeBody(where, world, body);
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  assertKnownKeys(where, options, SHAPE_OPTIONS);
+  const b = resolveShapeBody(where, world, body);
+  return currentHandle(world, addShapeToSlot(world, b, options, where));
+}
+
+/** Checks `addShape`'s options (everything but the body and the world's room). @throws as addShape. */
+function checkShapeOptions(where: string, options: ShapeOptions): void {
+  assertOptions(where, options, SHAPE_OPTIONS);
+  geometryOf(where, options);
+  if (options.offset !== undefined) assertVector(where, 'offset', options.offset, 2);
+  if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
+  if (options.density !== undefined) assertNonNegative(where, 'density', options.density);
+  if (options.friction !== undefined) assertNonNegative(where, 'friction', options.friction);
+  if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
+  if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
+  if (options.rollingResistance !== undefined) assertNonNegative(where, 'rollingResistance', options.rollingResistance);
+  assertOptionalBoolean(where, 'sensor', options.sensor);
+  if (options.category !== undefined) assertInteger(where, 'category', options.category, 0, 0xffffffff);
+  if (options.mask !== undefined) assertInteger(where, 'mask', options.mask, 0, 0xffffffff);
+  if (options.group !== undefined) assertInteger(where, 'group', options.group, -0x80000000, 0x7fffffff);
+}
+
+/** `addShape` on the body in slot `body` (already resolved); returns the shape's slot. */
+function addShapeToSlot(world: PhysicsWorld, body: number, options: ShapeOptions, where: string): number {
+  checkShapeOptions(where, options);
   const g = geometryOf(where, options);
   let ox = 0,
     oy = 0,
@@ -238,7 +252,7 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
       S.next[last] = e;
     }
   }
-  if (!hasComponent(world, body, c.Static) && !hasComponent(world, body, c.Kinematic)) updateMassFromShapes(world, body);
+  if (!hasComponent(world, body, c.Static) && !hasComponent(world, body, c.Kinematic)) massFromShapes(world, body);
   else {
     // Static and kinematic bodies still turn with their angle (and kinematic ones with their angular velocity).
     addComponentIfMissing(world, body, c.Angle);
@@ -257,8 +271,15 @@ function hasShapes(world: PhysicsWorld, body: number): boolean {
  * parallel-axis theorem). The body moves so that `Position` is the new centre of mass and its shapes
  * are re-expressed about it; its velocity becomes that of the new centre (v + w x d). Shapes of zero
  * total mass leave mass and inertia as they were. Called by `addShape`.
+ * @param body a 2D body's handle.
+ * @throws RangeError on a removed entity or one that is not a body.
  */
 export function updateMassFromShapes(world: PhysicsWorld, body: number): void {
+  massFromShapes(world, resolveShapeBody('updateMassFromShapes', world, body));
+}
+
+/** `updateMassFromShapes` on the body in slot `body`. */
+function massFromShapes(world: PhysicsWorld, body: number): void {
   const c = world.components,
     S = c.Shape,
     st = world.collision.shapes;
@@ -351,23 +372,47 @@ export function forEachShape(world: PhysicsWorld, body: number, fn: (shape: numb
   for (let e = st.firstShape[body]!; e !== 0; e = c.Shape.next[e]!) fn(e);
 }
 
-/** The shape entities of a body, in order (its own shape first). @throws RangeError on a missing body. */
+/**
+ * The handles of a 2D body's shapes, in order (its own shape first: the body's handle).
+ * @throws RangeError on a removed entity or one that is not a body.
+ */
 export function shapesOf(world: PhysicsWorld, body: number): number[] {
-  assertShapeBody('shapesOf', world, body);
+  const b = resolveShapeBody('shapesOf', world, body);
   const out: number[] = [];
-  forEachShape(world, body, (e) => out.push(e));
+  if (world.dimensions !== 2 || world.components.Shape.body.length === 0) return out;
+  forEachShape(world, b, (e) => out.push(currentHandle(world, e)));
   return out;
 }
 
-/** Removal hook: removing a body removes its extra shape entities. */
+/**
+ * Removal hook: removing a body removes its extra shape entities; removing an extra shape on its own
+ * (removeBody on the shape's handle) unlinks it from its body's list, so the body never reaches a slot
+ * that a later entity took.
+ */
 function removeShapesOf(world: PhysicsWorld, eid: number): void {
   const st = world.collision.shapes;
   if (st.firstShape.length === 0) return;
+  const S = world.components.Shape;
+  if (hasComponent(world, eid, S) && S.body[eid] !== eid) {
+    const b = S.body[eid]!;
+    if (st.firstShape[b] === eid) st.firstShape[b] = S.next[eid]!;
+    else
+      for (let e = st.firstShape[b]!; e !== 0; e = S.next[e]!)
+        if (S.next[e] === eid) {
+          S.next[e] = S.next[eid]!;
+          break;
+        }
+    S.next[eid] = 0;
+    // A dynamic body's mass follows its remaining shapes.
+    const c = world.components;
+    if (!hasComponent(world, b, c.Static) && !hasComponent(world, b, c.Kinematic)) massFromShapes(world, b);
+  }
   let e = st.firstShape[eid]!;
   st.firstShape[eid] = 0;
   while (e !== 0) {
-    const next = world.components.Shape.next[e]!;
-    if (entityExists(world, e)) removeEntity(world, e);
+    const next = S.next[e]!;
+    S.next[e] = 0;
+    if (entityExists(world, e) && hasComponent(world, e, S) && S.body[e] === eid) removeEntity(world, e);
     e = next;
   }
 }
@@ -377,28 +422,26 @@ function removeShapesOf(world: PhysicsWorld, eid: number): void {
  * (category_B & mask_A) != 0, unless they share a non-zero group: then they always collide if the
  * group is > 0 and never if it is < 0 (Box2D's rule; a ragdoll's limbs share a negative group).
  * Shapes of the same body never collide.
- * @throws RangeError on a missing shape or bits that are not integers in range.
+ * @param shape a shape's handle (addShape, addBox, shapesOf).
+ * @throws TypeError if `filter` is not an object or has unknown or null fields; RangeError on a removed
+ *   entity, one that is not a 2D shape, or bits that are not integers in range.
  */
 export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { category?: number; mask?: number; group?: number }): void {
   const where = 'setShapeFilter';
-  if (
-    typeof shape !== 'number' ||
-    !Number.isInteger(shape) ||
-    shape < 1 ||
-    shape > world.capacity ||
-    !entityExists(world, shape) ||
-    !hasComponent(world, shape, world.components.Shape)
-  ) {
-    throw new RangeError(`${where}: shape must be a shape of this world, got ${describe(shape)}`);
+  const e = resolveEntity(world, shape, where, 'shape');
+  if (world.dimensions !== 2 || !hasComponent(world, e, world.components.Shape)) {
+    throw new RangeError(
+      `${where}: shape must be a shape of a 2D body (a handle from addShape, addBox or shapesOf), got ${describe(shape)}`,
+    );
   }
-  assertKnownKeys(where, filter, ['category', 'mask', 'group']);
+  assertOptions(where, filter, ['category', 'mask', 'group'], 'filter');
   if (filter.category !== undefined) assertInteger(where, 'category', filter.category, 0, 0xffffffff);
   if (filter.mask !== undefined) assertInteger(where, 'mask', filter.mask, 0, 0xffffffff);
   if (filter.group !== undefined) assertInteger(where, 'group', filter.group, -0x80000000, 0x7fffffff);
   const S = world.components.Shape;
-  if (filter.category !== undefined) S.category[shape] = filter.category;
-  if (filter.mask !== undefined) S.mask[shape] = filter.mask;
-  if (filter.group !== undefined) S.group[shape] = filter.group;
+  if (filter.category !== undefined) S.category[e] = filter.category;
+  if (filter.mask !== undefined) S.mask[e] = filter.mask;
+  if (filter.group !== undefined) S.group[e] = filter.group;
 }
 
 /** Options of `addBox`: those of `addBody` (no `radius`, `mass` or `density`) plus the box's. */
@@ -425,22 +468,49 @@ export interface BoxOptions extends Omit<BodyOptions, 'radius' | 'mass' | 'densi
   sensor?: boolean;
 }
 
+/** The body options `addBox` takes (addBody's, less the ball's: radius, mass, density and the material, which are the box's). */
+const BOX_BODY_OPTIONS = [
+  'position',
+  'velocity',
+  'static',
+  'kinematic',
+  'linearDrag',
+  'quadraticDrag',
+  'rotates',
+  'angularVelocity',
+  'angle',
+  'inertia',
+] as const;
+
+/** Every option `addBox` takes. */
+const BOX_OPTIONS = [
+  ...BOX_BODY_OPTIONS,
+  'halfExtents',
+  'radius',
+  'density',
+  'friction',
+  'staticFriction',
+  'restitution',
+  'category',
+  'mask',
+  'group',
+  'sensor',
+] as const;
+
 /**
  * Adds a body with one box shape: `addBody` with the body options, then `addShape` with the box's.
  * Dynamic boxes turn (their inertia comes from the box: m (w^2 + h^2) / 12).
- * @returns the body (which is also its shape's entity).
- * @throws as `addBody` and `addShape`; nothing is added if either rejects its input.
+ * @returns the body's handle (which is also its shape's handle).
+ * @throws TypeError | RangeError `addBox: <param> must be ...` on options that are not an object, an
+ *   unknown option (a ball's `mass`, say: the list of valid ones is in the message), a null option, or
+ *   any value `addBody` or `addShape` refuses; nothing is added.
  */
 export function addBox(world: PhysicsWorld, options: BoxOptions): number {
   const where = 'addBox';
-  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
+  if (world.dimensions !== 2) throw new TypeError(`${where}: shapes are 2D; this world has 3 dimensions`);
+  assertOptions(where, options, BOX_OPTIONS);
   const { halfExtents, radius, density, friction, staticFriction, restitution, category, mask, group, sensor, ...bodyOptions } = options;
-  // Check the shape first so a bad box adds no body.
-  assertVector(where, 'halfExtents', halfExtents, 2);
-  makeBox(where, halfExtents[0]!, halfExtents[1]!, 0, 0, 0, radius ?? 0);
-  if (density !== undefined) assertNonNegative(where, 'density', density);
-  const dynamic = bodyOptions.static !== true && bodyOptions.kinematic !== true;
-  const body = slotOf(addBody(world, { ...bodyOptions, rotates: bodyOptions.rotates ?? dynamic }));
+  if (halfExtents === undefined) throw new TypeError(`${where}: halfExtents must be an array of 2 numbers, got undefined`);
   const shape: ShapeOptions = { type: 'box', halfExtents };
   if (radius !== undefined) shape.radius = radius;
   if (density !== undefined) shape.density = density;
@@ -451,11 +521,13 @@ export function addBox(world: PhysicsWorld, options: BoxOptions): number {
   if (mask !== undefined) shape.mask = mask;
   if (group !== undefined) shape.group = group;
   if (sensor !== undefined) shape.sensor = sensor;
-  try {
-    addShape(world, body, shape);
-  } catch (err) {
-    removeEntity(world, body);
-    throw err;
-  }
+  // Check the box first and the body next (addBodyAs checks everything before it creates), so a bad
+  // box adds nothing; the shape then goes on the body's own entity, which cannot fail.
+  checkShapeOptions(where, shape);
+  assertOptionalBoolean(where, 'static', bodyOptions.static);
+  assertOptionalBoolean(where, 'kinematic', bodyOptions.kinematic);
+  const dynamic = bodyOptions.static !== true && bodyOptions.kinematic !== true;
+  const body = addBodyAs(world, { ...bodyOptions, rotates: bodyOptions.rotates ?? dynamic }, where, BOX_BODY_OPTIONS);
+  addShapeToSlot(world, slotOf(body), shape, where);
   return body;
 }
