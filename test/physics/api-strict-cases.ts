@@ -29,6 +29,8 @@ export interface Fixture {
   /** A removed ball whose slot now holds `fresh` (bitecs recycles a removed id at once). */
   stale: number;
   fresh: number;
+  /** A box body (its own entity is its shape). */
+  box: number;
 }
 
 export function makeFixture(): Fixture {
@@ -46,11 +48,13 @@ export function makeFixture(): Fixture {
   const stale = api.addBody(world, { position: [7, 7], radius: 0.2 });
   api.removeBody(world, stale);
   const fresh = api.addBody(world, { position: [8, 8], radius: 0.3, mass: 3 });
-  return { world, ball, ball2, particle, segment, plane, electric, magnetic, fluid, spring, emitter, stale, fresh };
+  const addBox = fn('addBox') as ((w: World, o: object) => number) | undefined;
+  const box = addBox ? addBox(world, { position: [-3, 3], halfExtents: [0.5, 0.5] }) : 0;
+  return { world, ball, ball2, particle, segment, plane, electric, magnetic, fluid, spring, emitter, stale, fresh, box };
 }
 
 /** Which entities a function is for; the first is the one valid calls use. */
-type Kind = 'body' | 'emitter' | 'any' | 'electric' | 'magnetic' | 'fluid' | 'spring';
+type Kind = 'body' | 'emitter' | 'any' | 'electric' | 'magnetic' | 'fluid' | 'spring' | 'shape';
 
 const wrongKinds: Record<Kind, Array<keyof Fixture>> = {
   body: ['electric', 'segment', 'spring', 'emitter'],
@@ -60,6 +64,7 @@ const wrongKinds: Record<Kind, Array<keyof Fixture>> = {
   magnetic: ['ball', 'electric'],
   fluid: ['ball', 'electric'],
   spring: ['ball', 'segment'],
+  shape: ['ball', 'electric', 'spring'],
 };
 const validEntity: Record<Kind, keyof Fixture> = {
   body: 'ball',
@@ -69,6 +74,7 @@ const validEntity: Record<Kind, keyof Fixture> = {
   magnetic: 'magnetic',
   fluid: 'fluid',
   spring: 'spring',
+  shape: 'box',
 };
 
 /** One function taking (world, entity, arg). */
@@ -126,6 +132,17 @@ const entityFns: EntityFn[] = [
   { name: 'setMagneticField', kind: 'magnetic', arg: { field: -1 }, options: true },
   { name: 'setFluidRegion', kind: 'fluid', arg: { surface: 1 }, options: true },
   { name: 'setSpring', kind: 'spring', arg: { stiffness: 5 }, options: true, booleans: ['oneSided'] },
+  {
+    name: 'addShape',
+    kind: 'body',
+    arg: { type: 'circle', radius: 0.5 },
+    options: true,
+    booleans: ['sensor'],
+    wrong: ['electric', 'segment', 'spring', 'emitter'],
+  },
+  { name: 'shapesOf', kind: 'body', call: (f, w, e) => (f as never as (...a: unknown[]) => void)(w, e) },
+  { name: 'updateMassFromShapes', kind: 'body', call: (f, w, e) => (f as never as (...a: unknown[]) => void)(w, e) },
+  { name: 'setShapeFilter', kind: 'shape', arg: { category: 2 }, options: true },
 ];
 
 /** Functions taking (world, options) (or (options) for createPhysicsWorld). */
@@ -138,6 +155,8 @@ interface OptionsFn {
   booleans?: string[];
   /** Keys of the options that hold entities, with the kind they must be. */
   entities?: Array<[string, Kind]>;
+  /** Keys whose documented meaning includes null (a joint's `a: null` is the world). */
+  nullable?: string[];
   call?: (f: Fn, world: World, options: unknown) => unknown;
 }
 
@@ -177,6 +196,22 @@ const optionsFns: OptionsFn[] = [
     call: (f, _w, o) => (f as never as (o: unknown) => unknown)(o),
   },
   { name: 'createRecorder', valid: () => ({ quantities: { energy: api.kineticEnergy }, every: 1 }) },
+  { name: 'addBox', valid: () => ({ halfExtents: [0.5, 0.5], density: 2 }), booleans: ['static', 'kinematic', 'rotates', 'sensor'] },
+  { name: 'createRope', valid: () => ({ start: [0, 5], end: [1, 5], segments: 2 }), booleans: ['pinStart', 'pinEnd', 'slack'] },
+  { name: 'createCloth', valid: () => ({ columns: 2, rows: 2, mass: 1 }), optional: true },
+  ...(['addDistanceJoint', 'addRevoluteJoint', 'addWeldJoint', 'addPrismaticJoint', 'addWheelJoint'] as const).map(
+    (name): OptionsFn => ({
+      name,
+      valid: (fx) => ({ a: fx.ball, b: fx.ball2, breakForce: 100 }),
+      booleans: ['collideConnected'],
+      nullable: ['a'],
+      entities: [
+        ['a', 'body'],
+        ['b', 'body'],
+      ],
+    }),
+  ),
+  { name: 'addMouseJoint', valid: (fx) => ({ b: fx.ball2, hertz: 5 }), entities: [['b', 'body']] },
   {
     name: 'addSystem',
     valid: () => ({}),
@@ -305,6 +340,7 @@ export function buildCases(): Case[] {
     });
     const keys = Object.keys(d.valid(makeFixtureKeysOnly()));
     for (const key of keys) {
+      if (d.nullable?.includes(key)) continue;
       cases.push({
         label: `${d.name}: ${key} null`,
         expectFrom: d.name,

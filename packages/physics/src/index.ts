@@ -50,7 +50,7 @@ export { contactEvents3D } from './collision/manifold3d-solver.js';
 export type { ContactEvents, EventList, ManifoldBuffer, ShapeCollisionState } from './collision/manifolds.js';
 export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
 export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './collision/mesh3d.js';
-export { addHeightField3D, addTriangleMesh3D, meshesOf } from './collision/mesh3d.js';
+export { addHeightField3D, addTriangleMesh3D, MAX_HEIGHT_FIELD_POINTS, meshesOf } from './collision/mesh3d.js';
 export { currentSeparation, narrowphaseSystem } from './collision/narrowphase.js';
 export { shapeCollisionSystem } from './collision/shape-collision.js';
 export type { RayHit } from './collision/shape-queries.js';

@@ -93,20 +93,15 @@ export function assertVector(where: string, param: string, value: unknown, lengt
 }
 
 /**
- * Throws a TypeError naming the first key of `options` that is not in `known`.
- * Catches misspelt options (`restituion`) that would otherwise be silently ignored.
- * @throws TypeError if `options` is not a plain object or has an unknown key.
+ * Throws a TypeError naming the first key of `options` that is not in `known`, or whose value is null
+ * (an option is omitted, never null, to get its default; `nullable` lists the keys whose documented
+ * meaning includes null, such as a joint's `a: null` for the world). Catches misspelt options
+ * (`restituion`) that would otherwise be silently ignored. `options` undefined passes (all defaults).
+ * @throws TypeError if `options` is not a plain object, has an unknown key or a null value.
  */
-export function assertKnownKeys(where: string, options: unknown, known: readonly string[]): void {
+export function assertKnownKeys(where: string, options: unknown, known: readonly string[], nullable: readonly string[] = []): void {
   if (options === undefined) return;
-  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
-    throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
-  }
-  for (const key of Object.keys(options)) {
-    if (!known.includes(key)) {
-      throw new TypeError(`${where}: unknown option ${JSON.stringify(key)}; known options are ${known.join(', ')}`);
-    }
-  }
+  assertOptions(where, options, known, 'options', nullable);
 }
 
 /**

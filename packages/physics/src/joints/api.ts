@@ -64,15 +64,21 @@ function requireBody(where: string, param: string, world: PhysicsWorld, id: unkn
 function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions): Ends {
   if (world.dimensions !== 2) throw new RangeError(`${where}: joints need a 2D world, this world has ${world.dimensions} dimensions`);
   if (options === undefined || options === null || typeof options !== 'object') {
-    throw new TypeError(`${where}: options with body b are required, got ${describe(options)}`);
+    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
   }
   const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a);
   const b = requireBody(where, 'b', world, options.b);
   if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
-  if (options.breakForce !== undefined) assertPositive(where, 'breakForce', options.breakForce);
-  if (options.breakTorque !== undefined) assertPositive(where, 'breakTorque', options.breakTorque);
+  if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
+  if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
   assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
   return { a, b };
+}
+
+/** A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError */
+export function assertBreakLimit(where: string, param: string, value: unknown): void {
+  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
 }
 
 function optionalPoint(where: string, param: string, value: unknown, fallback: [number, number]): [number, number] {
@@ -216,17 +222,12 @@ export interface DistanceJointOptions extends JointBaseOptions {
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [
-    ...BASE_KEYS,
-    'anchorA',
-    'anchorB',
-    'length',
-    'minLength',
-    'maxLength',
-    'hertz',
-    'dampingRatio',
-    'breakStretch',
-  ]);
+  assertKnownKeys(
+    where,
+    options,
+    [...BASE_KEYS, 'anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio', 'breakStretch'],
+    ['a'],
+  );
   if (ends.a === 0 && options.anchorA === undefined)
     throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
   const pa = optionalPoint(where, 'anchorA', options.anchorA, ends.a === 0 ? [0, 0] : centre(world, ends.a));
@@ -243,7 +244,7 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
   if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
     throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
-  if (options.breakStretch !== undefined) assertPositive(where, 'breakStretch', options.breakStretch);
+  if (options.breakStretch !== undefined) assertBreakLimit(where, 'breakStretch', options.breakStretch);
   const j = makeJoint(world, JointType.Distance, ends, pa, pb, options);
   const J = world.components.Joint;
   J.length[j] = length;
@@ -330,16 +331,12 @@ export interface RevoluteJointOptions extends JointBaseOptions {
 export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
   const where = 'addRevoluteJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [
-    ...BASE_KEYS,
-    'anchor',
-    'lowerAngle',
-    'upperAngle',
-    'motorSpeed',
-    'maxMotorTorque',
-    'hertz',
-    'dampingRatio',
-  ]);
+  assertKnownKeys(
+    where,
+    options,
+    [...BASE_KEYS, 'anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio'],
+    ['a'],
+  );
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const limit = checkLimits(where, options.lowerAngle, options.upperAngle, 'lowerAngle', 'upperAngle', Math.PI);
   const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);
@@ -375,17 +372,12 @@ export interface PrismaticJointOptions extends JointBaseOptions {
 export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOptions): number {
   const where = 'addPrismaticJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [
-    ...BASE_KEYS,
-    'anchor',
-    'axis',
-    'lower',
-    'upper',
-    'motorSpeed',
-    'maxMotorForce',
-    'hertz',
-    'dampingRatio',
-  ]);
+  assertKnownKeys(
+    where,
+    options,
+    [...BASE_KEYS, 'anchor', 'axis', 'lower', 'upper', 'motorSpeed', 'maxMotorForce', 'hertz', 'dampingRatio'],
+    ['a'],
+  );
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [1, 0]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
@@ -427,7 +419,7 @@ export interface WeldJointOptions extends JointBaseOptions {
 export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): number {
   const where = 'addWeldJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio']);
+  assertKnownKeys(where, options, [...BASE_KEYS, 'anchor', 'hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'], ['a']);
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const vals = [options.hertz ?? 0, options.dampingRatio ?? 0, options.angularHertz ?? 0, options.angularDampingRatio ?? 0];
   ['hertz', 'dampingRatio', 'angularHertz', 'angularDampingRatio'].forEach((name, i) => {
@@ -470,17 +462,12 @@ export interface WheelJointOptions extends JointBaseOptions {
 export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): number {
   const where = 'addWheelJoint';
   const ends = checkEnds(where, world, options);
-  assertKnownKeys(where, options, [
-    ...BASE_KEYS,
-    'anchor',
-    'axis',
-    'hertz',
-    'dampingRatio',
-    'lower',
-    'upper',
-    'motorSpeed',
-    'maxMotorTorque',
-  ]);
+  assertKnownKeys(
+    where,
+    options,
+    [...BASE_KEYS, 'anchor', 'axis', 'hertz', 'dampingRatio', 'lower', 'upper', 'motorSpeed', 'maxMotorTorque'],
+    ['a'],
+  );
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const axis = unitAxis(where, options.axis, [0, 1]);
   const limit = checkLimits(where, options.lower, options.upper, 'lower', 'upper', Infinity);
@@ -526,8 +513,13 @@ export interface MouseJointOptions {
  */
 export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): number {
   const where = 'addMouseJoint';
-  const ends = checkEnds(where, world, { b: options?.b, breakForce: options?.breakForce });
+  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, ['b', 'anchor', 'target', 'hertz', 'dampingRatio', 'maxForce', 'breakForce']);
+  const ends = checkEnds(where, world, { b: options.b, ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}) });
+  const C = world.components;
+  if (hasComponent(world, ends.b, C.Static) || hasComponent(world, ends.b, C.Kinematic) || !(C.Mass.inv[ends.b]! > 0)) {
+    throw new RangeError(`${where}: b must be a dynamic body (a static or kinematic body cannot be dragged), got ${describe(options.b)}`);
+  }
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const target = optionalPoint(where, 'target', options.target, p);
   const hertz = options.hertz ?? 5;

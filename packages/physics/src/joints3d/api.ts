@@ -1,6 +1,7 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { wakeIsland } from '../collision/sleep.js';
 import { createSlot, currentHandle, resolveEntity } from '../handles.js';
+import { assertBreakLimit } from '../joints/api.js';
 import { addNoCollide, removeNoCollide } from '../joints/connected.js';
 import { ensureJointArrays } from '../joints/state.js';
 import {
@@ -62,13 +63,13 @@ function body(where: string, param: string, world: PhysicsWorld, id: unknown): n
 
 function ends(where: string, world: PhysicsWorld, o: Joint3DBaseOptions, keys: readonly string[]): { a: number; b: number } {
   if (world.dimensions !== 3) throw new RangeError(`${where}: 3D joints need a 3D world, this world has ${world.dimensions} dimensions`);
-  if (o === null || typeof o !== 'object') throw new TypeError(`${where}: options with body b are required, got ${describe(o)}`);
-  assertKnownKeys(where, o, [...BASE, ...keys]);
+  if (o === null || typeof o !== 'object') throw new TypeError(`${where}: options must be an object with body b, got ${describe(o)}`);
+  assertKnownKeys(where, o, [...BASE, ...keys], ['a']);
   const a = o.a === undefined || o.a === null ? 0 : body(where, 'a', world, o.a);
   const b = body(where, 'b', world, o.b);
   if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(o.a)} twice`);
-  if (o.breakForce !== undefined) assertPositive(where, 'breakForce', o.breakForce);
-  if (o.breakTorque !== undefined) assertPositive(where, 'breakTorque', o.breakTorque);
+  if (o.breakForce !== undefined) assertBreakLimit(where, 'breakForce', o.breakForce);
+  if (o.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', o.breakTorque);
   assertOptionalBoolean(where, 'collideConnected', o.collideConnected);
   return { a, b };
 }

@@ -152,6 +152,7 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
 /** Checks `addShape`'s options (everything but the body and the world's room). @throws as addShape. */
 function checkShapeOptions(where: string, options: ShapeOptions): void {
   assertOptions(where, options, SHAPE_OPTIONS);
+  assertOptionalBoolean(where, 'sensor', options.sensor);
   geometryOf(where, options);
   if (options.offset !== undefined) assertVector(where, 'offset', options.offset, 2);
   if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
@@ -160,7 +161,6 @@ function checkShapeOptions(where: string, options: ShapeOptions): void {
   if (options.staticFriction !== undefined) assertNonNegative(where, 'staticFriction', options.staticFriction);
   if (options.restitution !== undefined) assertInRange(where, 'restitution', options.restitution, 0, 1);
   if (options.rollingResistance !== undefined) assertNonNegative(where, 'rollingResistance', options.rollingResistance);
-  assertOptionalBoolean(where, 'sensor', options.sensor);
   if (options.category !== undefined) assertInteger(where, 'category', options.category, 0, 0xffffffff);
   if (options.mask !== undefined) assertInteger(where, 'mask', options.mask, 0, 0xffffffff);
   if (options.group !== undefined) assertInteger(where, 'group', options.group, -0x80000000, 0x7fffffff);

@@ -7,6 +7,7 @@ import {
   assertInteger,
   assertKnownKeys,
   assertNonNegative,
+  assertOptionalBoolean,
   assertPositive,
   assertVector,
   describe,
@@ -90,7 +91,7 @@ interface Geometry {
 
 function geometryOf(where: string, o: Shape3DOptions): Geometry {
   const t = o.type;
-  if (!(typeof t === 'string' && t in APPLIES))
+  if (!(typeof t === 'string' && Object.hasOwn(APPLIES, t)))
     throw new TypeError(`${where}: type must be one of 'sphere', 'box', 'capsule', 'cylinder', 'hull', got ${describe(t)}`);
   for (const k of GEOMETRY)
     if (o[k] !== undefined && !APPLIES[t].includes(k)) throw new TypeError(`${where}: ${k} does not apply to a ${t}`);
@@ -185,6 +186,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   }
   if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
   assertKnownKeys(where, options, OPTIONS);
+  assertOptionalBoolean(where, 'sensor', options.sensor);
   const g = geometryOf(where, options);
   let ox = 0,
     oy = 0,

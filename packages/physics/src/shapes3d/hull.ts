@@ -149,7 +149,11 @@ export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): 
   used[i1] = 1;
   used[i2] = 1;
   used[i3] = 1;
-  // Expand: the point farthest outside any face, until none is outside.
+  // Expand: the point farthest outside any face, until none is outside. That point is the cloud's
+  // extreme in the face's normal direction, so it is a vertex of the final hull: once more than
+  // MAX_HULL_VERTICES have been added the hull is too big, and the cloud is refused at once instead of
+  // after building a hull of up to MAX_HULL_INPUT vertices.
+  let added = 4;
   for (let guard = 0; guard < 4 * n + 16; guard++) {
     let far = -1,
       farD = eps * 10;
@@ -166,6 +170,10 @@ export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): 
     }
     if (far < 0) break;
     used[far] = 1;
+    if (++added > MAX_HULL_VERTICES)
+      throw new RangeError(
+        `${where}: vertices must have a convex hull of at most ${MAX_HULL_VERTICES} vertices, got more than ${MAX_HULL_VERTICES}`,
+      );
     const px = P[3 * far]!,
       py = P[3 * far + 1]!,
       pz = P[3 * far + 2]!;
@@ -185,6 +193,10 @@ export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): 
       }
     }
     for (const [a, b] of edges.values()) addFace(a, b, far);
+    // Drop the faces the point buried, so each round scans the live hull only.
+    let live = 0;
+    for (const f of faces) if (f.alive) faces[live++] = f;
+    faces.length = live;
   }
   return buildHull(
     where,
