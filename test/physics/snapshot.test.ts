@@ -285,6 +285,8 @@ describe('snapshot captures every piece of state', () => {
     // before each use) and its kernel's argument list.
     // collision/solver-stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
     // and one deepest-overlap slot a thread, all written before each parallel run.
+    // collision/contact-events.ts: the lists contactEvents returns, rewritten in full from the collision
+    // state's event lists (which snapshots carry) at every call.
     const scratch = new Set([
       'pipeline/step.ts',
       'forces/gravity.ts',
@@ -292,6 +294,7 @@ describe('snapshot captures every piece of state', () => {
       'snapshot/snapshot.ts',
       'collision/solver.ts',
       'collision/solver-stages-threads.ts',
+      'collision/contact-events.ts',
     ]);
     const root = join(__dirname, '../../packages/physics/src');
     const files: string[] = [];

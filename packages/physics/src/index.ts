@@ -39,6 +39,8 @@ export type { ClothState } from './cloth/state.js';
 export type { ClothLinkStore } from './cloth/store.js';
 export { ClothLinkKind } from './cloth/store.js';
 export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase.js';
+export type { ContactEventList, ContactEventLists } from './collision/contact-events.js';
+export { contactEvents, HIT_SPEED } from './collision/contact-events.js';
 export { CONTACT_LENGTH_UNIT, contactLength, MAX_AUTO_SUBSTEPS, solverSubstepsFor } from './collision/contact-scale.js';
 export type { ContactBuffer, ContactView } from './collision/contacts.js';
 export { ContactKind, forEachContact } from './collision/contacts.js';
