@@ -17,7 +17,7 @@ import {
   type PhysicsWorld,
   step,
 } from '@bitphysics/physics';
-import { Matrix4, PerspectiveCamera, Quaternion, Vector3 } from 'three';
+import { Color, Matrix4, PerspectiveCamera, Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { BodyDrag3D, type ShapeLayer3D, WorldRenderer3D } from '../../packages/render-three/src/index';
 
@@ -120,6 +120,48 @@ describe('render-three: 3D shapes', () => {
     expect(instance(r, 'shapes-capsule:3.00').count).toBe(2);
     expect(instance(r, 'shapes-capsule:1.00').count).toBe(1);
     expect(caps.length).toBe(3);
+    r.destroy();
+  });
+
+  it('fills shapes with the colour set on their body, or on the shape itself', () => {
+    const w = world3();
+    const r = new WorldRenderer3D(w, { lights: false });
+    const body = addBody(w, { position: [0, 0, 0] });
+    addShape3D(w, body, { type: 'box', halfExtents: [0.2, 0.2, 0.2] });
+    const second = addShape3D(w, body, { type: 'box', halfExtents: [0.2, 0.2, 0.2], offset: [1, 0, 0] });
+    // Instance colours are stored linear (three's colour management): pure red, green and blue stay
+    // pure, so each channel reads 0 or 1 (1e-6: float32 storage).
+    const colorAt = (x: number): [number, number, number] => {
+      const layer = (r as unknown as { shapes: ShapeLayer3D }).shapes;
+      const mesh = layer.object.children.find((o) => o.name.startsWith('shapes-box')) as import('three').InstancedMesh;
+      const m = new Matrix4(),
+        p = new Vector3(),
+        c = new Color();
+      for (let i = 0; i < mesh.count; i++) {
+        mesh.getMatrixAt(i, m);
+        p.setFromMatrixPosition(m);
+        if (Math.abs(p.x - x) > 1e-3) continue;
+        mesh.getColorAt(i, c);
+        return [c.r, c.g, c.b];
+      }
+      throw new Error(`no box instance at x = ${x}`);
+    };
+    const near = (got: [number, number, number], want: [number, number, number]): void => {
+      for (let k = 0; k < 3; k++) expect(got[k]).toBeCloseTo(want[k]!, 6);
+    };
+    const x0 = w.components.Position.x[body]! - 0.5; // the body's centre moved to the pair's middle
+    r.setColor(body, 0xff0000);
+    r.render(1);
+    near(colorAt(x0), [1, 0, 0]);
+    near(colorAt(x0 + 1), [1, 0, 0]);
+    r.setColor(second, 0x0000ff);
+    expect(r.colorOf(second)).toBe(0x0000ff);
+    r.render(1);
+    near(colorAt(x0), [1, 0, 0]);
+    near(colorAt(x0 + 1), [0, 0, 1]);
+    r.clearColor(second);
+    r.render(1);
+    near(colorAt(x0 + 1), [1, 0, 0]);
     r.destroy();
   });
 

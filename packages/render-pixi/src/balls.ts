@@ -183,6 +183,12 @@ export class BallLayer {
     if (s !== 0) this.applyColor(s - 1, eid, seededColor(this.colorSeed, eid, world.spawnStamp[eid]!, this.palette));
   }
 
+  /** The user colour (0xRRGGBB) of entity `eid` if one is set for its current life, else -1. */
+  userColorOf(world: PhysicsWorld, eid: number): number {
+    const st = world.spawnStamp[eid]!;
+    return this.userStamp[eid] === st && st !== 0 ? this.userColor[eid]! : -1;
+  }
+
   /** The colour (0xRRGGBB) entity `eid` has or would have when shown: its user colour or its seeded colour. */
   colorOf(world: PhysicsWorld, eid: number): number {
     const st = world.spawnStamp[eid]!;

@@ -145,7 +145,10 @@ function checkWorld(where: string, world: unknown): asserts world is PhysicsWorl
  * - Balls (entities with Position and Ball) gain a display object when they appear and lose it when
  *   they are removed; every frame they are placed at PreviousPosition + (Position -
  *   PreviousPosition) alpha, with alpha from the fixed-step loop, and turned by their Angle.
- * - Static segments and the boundary box are drawn as walls.
+ * - Shapes of 2D bodies (`addBox`, `addShape`: boxes, polygons, capsules, circles) are drawn filled
+ *   with their colour and outlined, at their bodies' interpolated poses; sensors as outlines only.
+ * - Static segments and the boundary box are drawn as walls; joints, springs and planes are drawn by
+ *   the debug layer (`debug: true`).
  * - Metres become CSS pixels through `camera` (scale `pixelsPerMeter`, y flipped); nothing else in
  *   the framework converts units.
  * - Optional trails and a debug overlay (velocities, contacts, wall outlines, springs, joints, planes,
@@ -176,6 +179,8 @@ export class WorldRenderer {
   private worldRef: PhysicsWorld;
   private readonly texture: Texture;
   private readonly balls: BallLayer;
+  /** An entity's user colour or -1 (the ball layer keeps the user colours of every entity), for the shape layer. */
+  private readonly userColorOf = (world: PhysicsWorld, slot: number): number => this.balls.userColorOf(world, slot);
   private readonly walls: WallLayer;
   private readonly shapes: ShapeLayer;
   private readonly trailHolder = new Container({ label: 'trail-holder' });
@@ -326,7 +331,7 @@ export class WorldRenderer {
     const stepped = world.steps !== this.lastSteps;
     this.lastSteps = world.steps;
     this.walls.update(world, this.camera);
-    this.shapes.update(world, this.camera, alpha);
+    this.shapes.update(world, this.camera, alpha, this.userColorOf);
     const trails = this.trails;
     if (trails) {
       if (stepped) trails.record(world, balls);
@@ -376,7 +381,9 @@ export class WorldRenderer {
 
   /**
    * Gives entity `eid` a colour of its own (it keeps it until removed; a recycled id starts with a
-   * seeded colour again). May be called before the entity is first drawn.
+   * seeded colour again). May be called before the entity is first drawn. `eid` may be a ball, a
+   * shape (as `addShape` returns it) or a body: a body's colour fills its shapes that have none of
+   * their own.
    * @param color 0xRRGGBB integer or '#rgb' / '#rrggbb'.
    * @throws RangeError if `eid` is not a live entity of the world or the colour is out of range;
    *   TypeError if the colour is neither a number nor a string.

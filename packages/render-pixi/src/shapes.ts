@@ -11,7 +11,8 @@ const ARC_STEPS = 4;
 
 /**
  * Shapes of 2D bodies (`Components.Shape`: boxes, polygons, capsules, circles, rounded polygons): one
- * pixi Graphics redrawn every frame, each shape filled with its body's seeded colour and outlined, at
+ * pixi Graphics redrawn every frame, each shape filled with its colour and outlined (the colour set on
+ * the shape with `WorldRenderer.setColor`, else the one set on its body, else the body's seeded one), at
  * its body's position interpolated between PreviousPosition and Position and its angle taken back by
  * (1 - alpha) of the step's turn. A rounded outline follows the shape exactly: its core's edges moved
  * out by the radius, joined by arcs at the vertices. Sensors are drawn as outlines only. Internal to
@@ -33,8 +34,11 @@ export class ShapeLayer {
     this.palette = palette;
   }
 
-  /** Redraws every shape for interpolation factor `alpha` in [0, 1]. */
-  update(world: PhysicsWorld, camera: Camera, alpha: number): void {
+  /**
+   * Redraws every shape for interpolation factor `alpha` in [0, 1]. `userColorOf(world, slot)` gives
+   * an entity's user colour (0xRRGGBB) or -1 for none.
+   */
+  update(world: PhysicsWorld, camera: Camera, alpha: number, userColorOf: (world: PhysicsWorld, slot: number) => number): void {
     const g = this.graphics;
     g.clear();
     this.drawn = 0;
@@ -62,7 +66,9 @@ export class ShapeLayer {
         r = S.radius[e]!,
         o = STRIDE * e;
       pts.length = 0;
-      const color = seededColor(this.colorSeed, b, world.spawnStamp[b]!, this.palette);
+      let color = userColorOf(world, e);
+      if (color < 0 && b !== e) color = userColorOf(world, b);
+      if (color < 0) color = seededColor(this.colorSeed, b, world.spawnStamp[b]!, this.palette);
       if (n === 1) {
         const cx = x + ca * S.vx[o]! - sa * S.vy[o]!,
           cy = y + sa * S.vx[o]! + ca * S.vy[o]!;
