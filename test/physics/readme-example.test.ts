@@ -1,7 +1,7 @@
 import { addBody, addMagneticField, addSegment, createPhysicsWorld, setBoundary, setCharge, slotOf, step } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
 
-/** The README's example, verbatim, so the front door cannot rot. */
+/** Drag, a charge in a magnetic field, a wall and the boundary composed on one ball (the README's first example until it became a guide): the ball stays in its box and moves. */
 test('the README example runs and the ball stays in its box', () => {
   const world = createPhysicsWorld({ dimensions: 2, capacity: 1000, gravity: [0, -9.81] });
   setBoundary(world, { min: [0, 0], max: [20, 12], restitution: 0.8 });
