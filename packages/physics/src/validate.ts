@@ -7,7 +7,7 @@
  * its valid range throws `RangeError`. Messages read `<where>: <param> must be <rule>, got <value>`.
  */
 
-/** Formats a value for an error message: numbers as written, strings quoted, objects as JSON. */
+/** Formats a value for an error message: numbers as written, strings quoted, arrays element by element, other objects as JSON. */
 export function describe(value: unknown): string {
   if (typeof value === 'number') return Object.is(value, -0) ? '-0' : String(value);
   if (typeof value === 'string') return JSON.stringify(value);
@@ -15,6 +15,22 @@ export function describe(value: unknown): string {
   if (value === undefined) return 'undefined';
   if (value === null) return 'null';
   if (typeof value === 'function') return 'a function';
+  if (Array.isArray(value)) {
+    // Element by element, so NaN, Infinity, -0 and undefined show as such (JSON writes null or 0).
+    let text = '[';
+    // A nested array is written as JSON (no recursion, so an array that holds itself cannot loop).
+    for (let i = 0; i < value.length && text.length <= 80; i++) {
+      const v: unknown = value[i];
+      text += (i > 0 ? ',' : '') + (Array.isArray(v) ? json(v) : describe(v));
+    }
+    text += ']';
+    return text.length > 80 ? `${text.slice(0, 77)}...` : text;
+  }
+  return json(value);
+}
+
+/** `value` as JSON cut to 80 characters, or its `Object.prototype.toString` if it has none. */
+function json(value: unknown): string {
   try {
     const text = JSON.stringify(value);
     if (text === undefined) return String(value); // a symbol, or an object whose toJSON gives undefined
