@@ -458,7 +458,7 @@ export class WorldRenderer3D {
       drawnPosition: this.drawnPos,
       drawnOrientation: this.drawnQuat,
       scale: unitsPerMeter,
-      colorOf: (b) => this.entityColor[b]!,
+      colorOf: (shape, b) => this.shapeColor(shape, b),
     };
     this.allocate(world.capacity);
     this.bindWorld(world);
@@ -722,7 +722,9 @@ export class WorldRenderer3D {
 
   /**
    * Gives entity `eid` a colour of its own (its instance tint unless its shape sets one, and its
-   * trail). It keeps it until removed. May be called before the entity is first drawn.
+   * trail). It keeps it until removed. May be called before the entity is first drawn. `eid` may be
+   * a body (its colour fills its 3D shapes that have none of their own) or a shape as `addShape3D`
+   * returns it (that shape alone).
    * @param color 0xRRGGBB integer or '#rgb' / '#rrggbb'.
    * @throws RangeError if `eid` is not a live entity or the colour is out of range; TypeError if the
    *   colour is neither a number nor a string.
@@ -1131,6 +1133,13 @@ export class WorldRenderer3D {
     const group = this.groups[g]!;
     hexToLinear(hex, group.colors, 3 * i);
     group.colorsChanged();
+  }
+
+  /** A shape's colour: the user colour set on the shape itself, else its body's colour (user or seeded). */
+  private shapeColor(shape: number, body: number): number {
+    const st = this.worldRef.spawnStamp[shape]!;
+    if (shape !== body && this.userStamp[shape] === st && st !== 0) return this.userColor[shape]!;
+    return this.entityColor[body]!;
   }
 
   private computeColor(e: number): number {

@@ -67,8 +67,8 @@ export interface ShapeFrame {
   drawnOrientation: Float64Array;
   /** Scene units per metre. */
   scale: number;
-  /** The body's colour, 0xRRGGBB. */
-  colorOf(body: number): number;
+  /** The colour of a shape (slot) on a body (slot), 0xRRGGBB: the shape's own user colour, else its body's colour. */
+  colorOf(shape: number, body: number): number;
 }
 
 /** Hull geometry: flat-shaded triangles fanned from each polygonal face, with the face's normal. */
@@ -280,7 +280,7 @@ export class ShapeLayer3D {
         composeInto(m, 16 * i, cx * k, cy * k, cz * k, ox, oy, oz, ow, scale[3 * e]! * k, scale[3 * e + 1]! * k, scale[3 * e + 2]! * k);
         if (written[e] !== version) {
           written[e] = version;
-          hexToLinear(frame.colorOf(b), group.colors, 3 * i);
+          hexToLinear(frame.colorOf(e, b), group.colors, 3 * i);
           recolored = true;
         }
       }
