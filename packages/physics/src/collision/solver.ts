@@ -53,7 +53,7 @@ import {
 } from './solver-stages-threads.js';
 import type { CollisionState } from './state.js';
 import { BodyType } from './state.js';
-import { downwardInto, holdsLower, SUPPORT_COS } from './support.js';
+import { downward3Into, downwardInto, heavierAbove, holdsLower, markFirstRelaxRows, SUPPORT_COS } from './support.js';
 
 /**
  * Collide stage, part 3: the contact solver, Box2D v3's "soft step" (Catto, "Solver2D", 2024; Box2D
@@ -146,8 +146,22 @@ function solveContacts(world: PhysicsWorld): void {
   makeSoftInto(sp, 7, 2 * hertz, st.contactDampingRatio, hs);
   prepareJoints(world, hs);
   prepareJoints3D(world, hs);
-  // Which way is down, for the support rows of the 2D relax sweep (support.ts).
+  // Which way is down, for the support rows of the relax sweep (support.ts).
   downwardInto(world.gravity, sp, 2);
+  if (!is2D) downward3Into(world.gravity, sp, 10);
+  relaxFirst = markFirstRelaxRows(
+    buf.ia,
+    buf.ib,
+    buf.nx,
+    buf.ny,
+    is2D ? null : buf.nz,
+    buf.count,
+    cs.solverBodyCount,
+    cs.bodyState,
+    stride(world),
+    sp,
+    is2D ? 2 : 10,
+  );
   const TOT = buf.totalNormalImpulse,
     LN = buf.normalImpulse;
   // The coloured solve takes the impacted rows out after it plans (contact-colors.ts), the others now.
@@ -202,11 +216,15 @@ function solveContacts(world: PhysicsWorld): void {
  * Scratch of one contact solve (solveContacts), read by solve2D and solve3D: [0] the substep hs (s),
  * [1] the push-out speed cap (m/s), [2, 3] the unit vector along gravity (2D support rows; (0, 0)
  * without gravity), [4, 5, 6] the soft coefficients of contacts between movable bodies (bias rate
- * 1/s, mass scale, impulse scale), [7, 8, 9] those of contacts against infinite mass. The doubles pass
+ * 1/s, mass scale, impulse scale), [7, 8, 9] those of contacts against infinite mass, [10, 11, 12]
+ * the unit vector along gravity in 3D ((0, 0, 0) without gravity). The doubles pass
  * through this, not as arguments or object fields: V8 boxed (allocated) every double passed to a
  * sweep it did not inline, and each step made two coefficient objects and a direction array. Not world state.
  */
-const solveParams = new Float64Array(10);
+const solveParams = new Float64Array(13);
+
+/** Per ball contact row of the step: 1 for the rows the relax sweep takes first (support.ts markFirstRelaxRows). Not world state. */
+let relaxFirst: Uint8Array = new Uint8Array(0);
 
 /**
  * Writes the coefficients of a soft constraint, a spring of frequency `hertz` (Hz, >= 0) and damping
@@ -1060,8 +1078,9 @@ function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
 
 /**
  * One Gauss-Seidel sweep over the 2D ball contacts: with soft bias if `useBias`, else the relax sweep,
- * which solves the frictionless support rows with the lower ball held when that only slows the upper
- * one (support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without). The substep,
+ * which takes the rows against static bodies first and last and solves the support rows (frictionless,
+ * or with the heavier ball above) with the lower ball held when that only slows the upper one
+ * (support.ts; (downX, downY) is the unit vector along gravity, (0, 0) without). The substep,
  * push-out cap, down vector and soft coefficients are read from `solveParams`.
  */
 function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void {
@@ -1094,7 +1113,16 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
     rMass = sp[8]!,
     rImp = sp[9]!;
 
-  for (let i = 0; i < n; i++) {
+  // The sweep with bias takes the rows in order. The relax sweep takes first the touching rows that
+  // hold a ball under a heavier one against a static body (support.ts markFirstRelaxRows), so that ball
+  // is at rest when the support row above it is relaxed and may hold it, taking the heavy ball's
+  // push-out speed away; then the rows between two balls; then the rows against static bodies (walls,
+  // floor, segments), which take out what the others pushed into them.
+  const first = relaxFirst;
+  const end = useBias ? n : 3 * n;
+  for (let k = 0; k < end; k++) {
+    const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
+    if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
     const a = IA[i]! * 8,
       b = IB[i]! * 8;
     const nx = NX[i]!,
@@ -1105,14 +1133,14 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
       vay = sb[a + 1]!,
       vbx = sb[b]!,
       vby = sb[b + 1]!;
-    // The normal impulse's inverse masses and effective mass: a frictionless support row of the relax
-    // sweep may hold its lower ball (support.ts).
+    // The normal impulse's inverse masses and effective mass: a support row of the relax sweep, one
+    // without friction or one whose upper ball is the heavier, may hold its lower ball (support.ts).
     let jmA = imA,
       jmB = imB,
       nm = NM[i]!;
-    if (!useBias && FB[i] === 0 && imA > 0 && imB > 0 && nm > 0) {
+    if (!useBias && imA > 0 && imB > 0 && nm > 0) {
       const up = -(downX * nx + downY * ny);
-      if (up > SUPPORT_COS || up < -SUPPORT_COS) {
+      if ((up > SUPPORT_COS || up < -SUPPORT_COS) && (FB[i] === 0 || (up > 0 ? heavierAbove(imA, imB) : heavierAbove(imB, imA)))) {
         const va = Math.abs(vax * nx + vay * ny),
           vb = Math.abs(vbx * nx + vby * ny);
         if (up > 0 ? holdsLower(va, vb) : holdsLower(vb, va)) {
@@ -1194,11 +1222,18 @@ function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
   }
 }
 
-/** One Gauss-Seidel sweep over the 3D ball contacts (with soft bias if `useBias`); parameters from `solveParams` as solve2D. */
+/**
+ * One Gauss-Seidel sweep over the 3D ball contacts (with soft bias if `useBias`); parameters from
+ * `solveParams` as solve2D, and its relax sweep as solve2D's: static rows first and last, support rows
+ * (frictionless or with the heavier ball above) holding their lower ball when that only slows the upper.
+ */
 function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void {
   const sp = solveParams;
   const hs = sp[0]!,
-    push = sp[1]!;
+    push = sp[1]!,
+    downX = sp[10]!,
+    downY = sp[11]!,
+    downZ = sp[12]!;
   const n = buf.count,
     sb = cs.bodyState;
   const invH = 1 / hs;
@@ -1222,7 +1257,12 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
     L2 = buf.tangentImpulse2,
     MAXN = buf.maxNormalImpulse;
 
-  for (let i = 0; i < n; i++) {
+  // Row order as in solve2D: the relax sweep takes the rows under heavier balls, the ball pairs, the static rows.
+  const first = relaxFirst;
+  const end = useBias ? n : 3 * n;
+  for (let k = 0; k < end; k++) {
+    const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
+    if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
     const a = IA[i]! * 12,
       b = IB[i]! * 12;
     const nx = NX[i]!,
@@ -1236,6 +1276,22 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
       vbx = sb[b]!,
       vby = sb[b + 1]!,
       vbz = sb[b + 2]!;
+    // A support row of the relax sweep may hold its lower ball (support.ts), as in solve2D.
+    let jmA = imA,
+      jmB = imB,
+      nm = NM[i]!;
+    if (!useBias && imA > 0 && imB > 0 && nm > 0) {
+      const up = -(downX * nx + downY * ny + downZ * nz);
+      if ((up > SUPPORT_COS || up < -SUPPORT_COS) && (FB[i] === 0 || (up > 0 ? heavierAbove(imA, imB) : heavierAbove(imB, imA)))) {
+        const va = Math.abs(vax * nx + vay * ny + vaz * nz),
+          vb = Math.abs(vbx * nx + vby * ny + vbz * nz);
+        if (up > 0 ? holdsLower(va, vb) : holdsLower(vb, va)) {
+          if (up > 0) jmA = 0;
+          else jmB = 0;
+          nm = 1 / (jmA + jmB);
+        }
+      }
+    }
 
     const s = S0[i]! + (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
     let bias = 0,
@@ -1252,17 +1308,17 @@ function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean): void
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz;
     const oldN = LN[i]!;
-    let newN = oldN - NM[i]! * massScale * (vn + bias) - impulseScale * oldN;
+    let newN = oldN - nm * massScale * (vn + bias) - impulseScale * oldN;
     if (newN < 0) newN = 0;
     const dl = newN - oldN;
     LN[i] = newN;
     if (dl > MAXN[i]!) MAXN[i] = dl;
-    vax -= imA * dl * nx;
-    vay -= imA * dl * ny;
-    vaz -= imA * dl * nz;
-    vbx += imB * dl * nx;
-    vby += imB * dl * ny;
-    vbz += imB * dl * nz;
+    vax -= jmA * dl * nx;
+    vay -= jmA * dl * ny;
+    vaz -= jmA * dl * nz;
+    vbx += jmB * dl * nx;
+    vby += jmB * dl * ny;
+    vbz += jmB * dl * nz;
 
     // Friction in the tangent plane, clamped to the Coulomb cone.
     const ra = RA[i]!,
