@@ -15,17 +15,17 @@
  * 0.5 m balls at 1 sqrt(g r), and 120 balls stacked straight up in a tube threw balls at 28 sqrt(g r);
  * the exact equilibrium of the zigzag column grew unstable above f h_s ~ 0.27 (the code before issue 13
  * ran at f h_s 0.25, seven times softer at 2 cm, and settled). Rows with friction settle at f h_s 0.6
- * (their tangent rows damp the column), and are left as they were, unless the upper ball is the
- * heavier: a relax update moves the upper ball by only m_lower / (m_lower + m_upper) of the relative
+ * (their tangent rows damp the column), and are left as they were, unless the upper ball is at least
+ * HEAVY_RATIO times heavier: a relax update moves the upper ball by only m_lower / (m_lower + m_upper) of the relative
  * speed, so a heavy ball resting on a light one kept the push-out speed of every substep. Resting 100,
  * 300 and 1,000 kg balls on a 1 kg ball (restitution 0, the defaults) rose 27, 320 and 37 mm above
- * where they started and kept bouncing; with these rows held (and the relax sweep taking the static
- * rows first, solver.ts solve2D, so the light ball is at rest when its row above is relaxed) they
+ * where they started and kept bouncing; with these rows held (and the relax sweep taking the floor and
+ * wall rows of such light balls first, `markFirstRelaxRows`, so the light ball is at rest when its row
+ * above is relaxed) they
  * settle and never rise, at mass ratios up to 3,000 (test/physics/heavy-on-light.test.ts).
  *
  * In the relax sweep, a row between two dynamic balls with no friction (bound 0) or whose upper ball is
- * the heavier, and whose normal is within
- * acos(SUPPORT_COS) of gravity (one ball rests on the other), is solved with the lower ball held
+ * at least HEAVY_RATIO times heavier, and whose normal is within acos(SUPPORT_COS) of gravity (one ball rests on the other), is solved with the lower ball held
  * (inverse mass 0, `holdsLower`) when that only slows the ball above: when the lower ball's speed along
  * the normal is at most the upper one's, so making the upper ball move with the lower one along the
  * normal cannot raise its kinetic energy, and the lower ball is not touched. One sweep then clears the
