@@ -213,7 +213,14 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
   return count;
 }
 
-/** Writes the soft-constraint coefficients of (hertz, zeta) over h at rows[o..o+2] (see collision/softness.ts). */
+/**
+ * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
+ * (>= 0) integrated implicitly over `h` (s) at rows[o..o+2]: bias rate omega / (2 zeta + h omega) (1/s),
+ * mass scale a / (1 + a) and impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
+ * Constraints", GDC 2011; Box2D v3 b2MakeSoft). hertz 0 gives the rigid 0, 1, 0. Written so every
+ * coefficient stays finite and in range at any hertz: a spring so soft that a rounds to 0 (a denormal
+ * hertz) gives 0, 0, 1, no impulse at all; one so stiff that a overflows gives 1 / h, 1, 0.
+ */
 function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: number): void {
   if (hertz === 0) {
     rows[o] = 0;
@@ -222,12 +229,17 @@ function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: num
     return;
   }
   const omega = 2 * Math.PI * hertz;
-  const a1 = 2 * zeta + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  rows[o] = omega / a1;
-  rows[o + 1] = a2 * a3;
-  rows[o + 2] = a3;
+  const hw = h * omega;
+  const a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    rows[o] = 0;
+    rows[o + 1] = 0;
+    rows[o + 2] = 1;
+    return;
+  }
+  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  rows[o + 1] = 1 / (1 + 1 / a);
+  rows[o + 2] = 1 / (1 + a);
 }
 
 /**
@@ -677,6 +689,105 @@ export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): 
   for (let i = 0; i < passes; i++) solveJointRows(world, hs, useBias);
 }
 
+/**
+ * One update of a weld whose linear and angular parts are both soft: the implicit (backward Euler)
+ * step of its three springs solved as one 3 x 3 system, so a long lever, which couples the anchor's
+ * motion to the rotation, cannot make the rows feed each other energy (solved one after the other,
+ * a 5 Hz weld with damping 0 on a 10 m lever spun up to 1e4 rad/s). With constraint
+ * C = (anchor separation x, y, relative angle), its rate Cdot, A = J M^-1 J^T and per part p
+ * (linear: hertz, dampingRatio; angular: angularHertz, angularDampingRatio) the stiffness
+ * omega_p^2 A_pp^-1 and damping 2 zeta_p omega_p A_pp^-1 (each part alone is Box2D's soft constraint),
+ * the impulse's change d solves (A + G) d = -(Cdot + beta C + G lambda), lambda the impulse so far this
+ * substep, beta_p the bias rate and G_p = A_pp impulseScale_p / massScale_p (one part alone: exactly
+ * the soft row's update). Reads the bodies' velocities from `sb` at oA, oB and writes them back with
+ * the pushed marks; returns false (nothing done) when a part has no spring (mass scale 0) or the
+ * system is singular, for the row-by-row update.
+ */
+function solveSoftWeld(
+  rows: Float64Array,
+  o: number,
+  sb: Float64Array,
+  oA: number,
+  oB: number,
+  rAx: number,
+  rAy: number,
+  rBx: number,
+  rBy: number,
+  dx: number,
+  dy: number,
+  relAngle: number,
+): boolean {
+  const msL = rows[o + JM]!,
+    msA = rows[o + AM]!;
+  if (!(msL > 0 && msA > 0)) return false;
+  const mA0 = sb[oA + 5]!,
+    iA0 = sb[oA + 6]!,
+    mB0 = sb[oB + 5]!,
+    iB0 = sb[oB + 6]!;
+  // The linear spring's reference: half the trace of its 2 x 2 block of A, which no rotation changes,
+  // so the spring has a potential (k |separation|^2 / 2 with k = omega^2 / aRef) and cannot do work
+  // around a closed path; the block itself turns with the anchors. impulseScale / massScale = 1 / a.
+  const aRef = mA0 + mB0 + 0.5 * (iA0 * (rAx * rAx + rAy * rAy) + iB0 * (rBx * rBx + rBy * rBy));
+  const gL = (aRef * rows[o + JI]!) / msL,
+    gA = ((iA0 + iB0) * rows[o + AI]!) / msA;
+  const mA = mA0,
+    iA = iA0,
+    mB = mB0,
+    iB = iB0;
+  const vAx = sb[oA]!,
+    vAy = sb[oA + 1]!,
+    wA = sb[oA + 2]!,
+    vBx = sb[oB]!,
+    vBy = sb[oB + 1]!,
+    wB = sb[oB + 2]!;
+  // A = J M^-1 J^T for the rows (x, y, angle); Box2D v2's weld matrix.
+  const a11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB,
+    a12 = -rAy * rAx * iA - rBy * rBx * iB,
+    a22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB,
+    a13 = -rAy * iA - rBy * iB,
+    a23 = rAx * iA + rBx * iB,
+    a33 = iA + iB;
+  const lx = rows[o + ILX]!,
+    ly = rows[o + ILY]!,
+    lt = rows[o + IANG]!;
+  const m11 = a11 + gL,
+    m12 = a12,
+    m22 = a22 + gL,
+    m33 = a33 + gA;
+  const bL = rows[o + JB]!,
+    bA = rows[o + AB]!;
+  const r1 = -(vBx - wB * rBy - vAx + wA * rAy + bL * dx + gL * lx),
+    r2 = -(vBy + wB * rBx - vAy - wA * rAx + bL * dy + gL * ly),
+    r3 = -(wB - wA + bA * relAngle + gA * lt);
+  // Cramer's rule on the symmetric 3 x 3 (m11 m12 a13; m12 m22 a23; a13 a23 m33).
+  const c11 = m22 * m33 - a23 * a23,
+    c12 = a13 * a23 - m12 * m33,
+    c13 = m12 * a23 - m22 * a13;
+  const det = m11 * c11 + m12 * c12 + a13 * c13;
+  if (!(det > 0) || !Number.isFinite(det)) return false;
+  const c22 = m11 * m33 - a13 * a13,
+    c23 = m12 * a13 - m11 * a23,
+    c33 = m11 * m22 - m12 * m12;
+  const inv = 1 / det;
+  const ix = inv * (c11 * r1 + c12 * r2 + c13 * r3),
+    iy = inv * (c12 * r1 + c22 * r2 + c23 * r3),
+    it = inv * (c13 * r1 + c23 * r2 + c33 * r3);
+  if (!(Number.isFinite(ix) && Number.isFinite(iy) && Number.isFinite(it))) return false;
+  rows[o + ILX] = lx + ix;
+  rows[o + ILY] = ly + iy;
+  rows[o + IANG] = lt + it;
+  sb[oA] = vAx - mA * ix;
+  sb[oA + 1] = vAy - mA * iy;
+  sb[oA + 2] = wA - iA * (rAx * iy - rAy * ix + it);
+  sb[oB] = vBx + mB * ix;
+  sb[oB + 1] = vBy + mB * iy;
+  sb[oB + 2] = wB + iB * (rBx * iy - rBy * ix + it);
+  // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
+  sb[oA + 7] = 1;
+  sb[oB + 7] = 1;
+  return true;
+}
+
 /** One pass over every joint row (see solveJoints). */
 function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const js = world.joints;
@@ -813,6 +924,10 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
     // Relative angle since the joint was made, minus the reference.
     const relAngle = rows[o + DANG]! + rot[ib * 3 + 2]! - rot[ia * 3 + 2]!;
 
+    if (type === JointType.Weld && flags & WELD_ANGULAR_SOFT && flags & JointFlag.Spring && !fixedRotation) {
+      // Both parts soft: the three rows solved together (solveSoftWeld), in both passes.
+      if (solveSoftWeld(rows, o, sb, oA, oB, rAx, rAy, rBx, rBy, dx, dy, relAngle)) continue;
+    }
     if (type === JointType.Revolute || type === JointType.Weld) {
       const kax = rows[o + KAX]!;
       if (type === JointType.Revolute && !fixedRotation) {

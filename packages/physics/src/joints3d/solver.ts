@@ -48,6 +48,14 @@ let ka = new Int32Array(16),
 const jsoft = new Float64Array(3),
   spring = new Float64Array(3);
 
+/**
+ * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
+ * (>= 0) integrated implicitly over `h` (s) into out[0..2]: bias rate omega / (2 zeta + h omega) (1/s),
+ * mass scale a / (1 + a), impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
+ * Constraints", GDC 2011; Box2D v3 b2MakeSoft); hertz 0 gives the rigid 0, 1, 0. Finite and in range
+ * at any hertz: a spring so soft that a rounds to 0 (a denormal hertz) gives 0, 0, 1 (no impulse), one
+ * so stiff that a overflows gives 1 / h, 1, 0 (as joints/solver.ts `soft`).
+ */
 function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): void {
   if (hertz === 0) {
     out[0] = 0;
@@ -56,12 +64,17 @@ function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): vo
     return;
   }
   const omega = 2 * Math.PI * hertz,
-    a1 = 2 * zeta + h * omega,
-    a2 = h * omega * a1,
-    a3 = 1 / (1 + a2);
-  out[0] = omega / a1;
-  out[1] = a2 * a3;
-  out[2] = a3;
+    hw = h * omega,
+    a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    out[0] = 0;
+    out[1] = 0;
+    out[2] = 1;
+    return;
+  }
+  out[0] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  out[1] = 1 / (1 + 1 / a);
+  out[2] = 1 / (1 + a);
 }
 
 /** Whether the world has 3D joints. */
