@@ -40,7 +40,19 @@ export default defineConfig({
     hookTimeout: 120_000,
     sequence: { sequencer: HeadlessFirst },
     projects: [
-      { extends: true, test: { name: 'node', include: ['test/**/*.test.ts'], exclude: ['test/browser/**', ...CHROMIUM_FILES] } },
+      {
+        extends: true,
+        test: {
+          name: 'node',
+          include: ['test/**/*.test.ts'],
+          exclude: ['test/browser/**', ...CHROMIUM_FILES],
+          // The headless files share their worker's modules (no new module graph per file): each file
+          // otherwise imported and evaluated the physics sources afresh, the largest single cost of
+          // the lane. No headless file mocks a module or stubs a global, and every test builds its own
+          // world, so a file sees the same library state it would alone.
+          isolate: false,
+        },
+      },
       {
         extends: true,
         test: {
