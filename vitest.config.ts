@@ -18,18 +18,15 @@ class HeadlessFirst extends BaseSequencer {
 // Workspace packages export their TypeScript sources under the 'bitphysics-source' condition, so
 // tests run against the sources without a build step.
 //
-// Two projects: `node` (the headless files) and `browser` (the files that drive Chromium:
-// test/browser's pages, and the two files that bundle a page and open it in a Chromium of their own,
-// CHROMIUM_FILES). The browser project's global setup builds and serves the site once and starts one
-// Chromium that test/browser's files share, one file at a time. `npm test` (scripts/test.mjs) runs the
-// two projects in two vitest processes at once, one file at a time each on two cores (vitest's
-// default: cores - 1 workers); a plain `npx vitest run` runs both in one, headless files first.
-/**
- * Files outside test/browser that open Chromium themselves: they run in the browser lane, which
- * finished about 150 s before the node lane in a full run on 2 cores (2026-11-23: node 470 s, browser
- * 318 s; these two took 49 s of the node lane's), so the two lanes end closer together.
- */
-const CHROMIUM_FILES = ['test/packaging/packages.test.ts', 'test/games/new-game.test.ts'];
+// Two projects: `node` (the headless files, and the two files outside test/browser that open a
+// Chromium of their own: test/packaging/packages.test.ts and test/games/new-game.test.ts) and
+// `browser` (test/browser's pages). The browser project's global setup builds and serves the site
+// once and starts one Chromium that test/browser's files share, one file at a time. `npm test`
+// (scripts/test.mjs) runs the two projects in two vitest processes at once, one file at a time each
+// on two cores (vitest's default: cores - 1 workers); a plain `npx vitest run` runs both in one,
+// headless files first. The two Chromium-opening files sit in the node lane because that lane ends
+// first since its files share their worker's modules (a full run on 2 cores, 2026-11-23: node 258 s,
+// browser 423 s with those two, about 56 s, in the browser lane).
 
 export default defineConfig({
   resolve: { conditions: ['bitphysics-source', ...defaultClientConditions] },
@@ -45,7 +42,7 @@ export default defineConfig({
         test: {
           name: 'node',
           include: ['test/**/*.test.ts'],
-          exclude: ['test/browser/**', ...CHROMIUM_FILES],
+          exclude: ['test/browser/**'],
           // The headless files share their worker's modules (no new module graph per file): each file
           // otherwise imported and evaluated the physics sources afresh, the largest single cost of
           // the lane. No headless file mocks a module or stubs a global, and every test builds its own
@@ -57,7 +54,7 @@ export default defineConfig({
         extends: true,
         test: {
           name: 'browser',
-          include: ['test/browser/**/*.test.ts', ...CHROMIUM_FILES],
+          include: ['test/browser/**/*.test.ts'],
           globalSetup: ['test/browser/global-setup.ts'],
           // A file's beforeAll may wait for the browser file before it (the lock in ./harness).
           hookTimeout: 600_000,
