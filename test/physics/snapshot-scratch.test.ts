@@ -1,5 +1,6 @@
 import { createPhysicsWorld, type PhysicsWorld, restore, SCENES, snapshot, stateHash, stepMany } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
+import { sealSnapshot } from '../../packages/physics/src/snapshot/snapshot.js';
 import { mixedScene } from './snapshot-scenes.js';
 
 // Per-step collision scratch (margins, the pair list, solver indices and rows) and the solver's marks
@@ -153,6 +154,7 @@ test("an Int32Array whose element i is i (the sleep stage's union-find parents b
   const bad = structuredClone(saved);
   (bad.header.state as { v: Record<string, { v: Record<string, { v: Record<string, Record<string, unknown>> }> }> }).v.collision!.v.sleep!.v
     .parent!.iota = parent.length + 5;
+  sealSnapshot(bad); // past the checksum, as a snapshot edited on purpose
   expect(() => restore(createPhysicsWorld(def300()), bad)).toThrow(/restore: snapshot's world\.collision\.sleep\.parent is damaged/);
   stepMany(world, 30);
   stepMany(other, 30);

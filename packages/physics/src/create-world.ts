@@ -4,7 +4,7 @@
  * (pipeline/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
  * systems above it, and this file on top: nothing below imports it.
  */
-import { createEntityIndex, createWorld, observe, onAdd } from 'bitecs';
+import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
 import { createClothState } from './cloth/state.js';
 import { wakeTouching } from './collision/sleep.js';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
@@ -253,6 +253,19 @@ function installDefaults(world: PhysicsWorld): void {
     c.Inertia.inv[eid] = 0;
   });
   observe(world, onAdd(c.InertiaTensor), (eid: number) => {
+    const T = c.InertiaTensor;
+    T.x[eid] = 0;
+    T.y[eid] = 0;
+    T.z[eid] = 0;
+    T.invX[eid] = 0;
+    T.invY[eid] = 0;
+    T.invZ[eid] = 0;
+  });
+  // Zeroed on removal too: the 3D contact solver and angular damping read a body's tensor wherever it
+  // is non-zero, so a ball body made later in the slot (which has none) must find zeros there, not the
+  // inverse moments of the shape body that held the slot before (a snapshot keeps no store that no live
+  // entity has, so a restored world would read zeros where the original read the stale tensor).
+  observe(world, onRemove(c.InertiaTensor), (eid: number) => {
     const T = c.InertiaTensor;
     T.x[eid] = 0;
     T.y[eid] = 0;

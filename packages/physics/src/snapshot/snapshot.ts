@@ -2,12 +2,15 @@ import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bit
 import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
 import { describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
+import { checkSnapshotValues } from './checks.js';
+import { snapshotChecksum } from './checksum.js';
 import { externalWorldStates } from './world-state.js';
 
 /**
  * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
  *
- * Layout (format version 2): a JSON-able header (the encoded state tree) and ONE ArrayBuffer holding the
+ * Layout (format version 3): a JSON-able header (the encoded state tree, and a checksum of the header and
+ * the buffer's data: snapshot/checksum.ts) and ONE ArrayBuffer holding the
  * contents of every typed array of the state, each at an 8-byte aligned offset. An array is stored up
  * to its last non-zero element only (for a per-entity store that is at most the highest live id; the
  * tail is all zeros and restore writes zeros there), a component store no live entity has is stored as
@@ -20,8 +23,7 @@ import { externalWorldStates } from './world-state.js';
  * stage's per-step arrays, see SCRATCH; the solver's marks, see STAMPED) are stored as their type and
  * length only, and the 2D contact buffers' columns up to their row count (CONTACT_BUFFERS), their 2D tangents
  * as a note plus the rows that differ from (-ny, nx) (TANGENT_2D); an Int32Array whose element i is i
- * (union-find parents) as its element 0 and count (`iota`, see Writer.arrayTo). A version 2 snapshot written before
- * them restores as it did. Restoring a snapshot object into the world it was taken from (or into
+ * (union-find parents) as its element 0 and count (`iota`, see Writer.arrayTo). Restoring a snapshot object into the world it was taken from (or into
  * one it was restored into before) leaves alone the query lists that have not changed since (their
  * versions say so), and the entity index when it is equal. `restore` writes into the world's own arrays
  * where their type and length match (systems and renderers keep them), so it allocates no big array
@@ -121,7 +123,7 @@ export type Encoded = number | boolean | string | null | Encoded[] | { [key: str
 export interface SnapshotHeader {
   /** 'bitphysics-snapshot'. */
   format: string;
-  /** Format version, 2. */
+  /** Format version, 3. */
   version: number;
   /** The world's dimensions and capacity (a snapshot restores only into a world with the same). */
   dimensions: number;
@@ -132,6 +134,10 @@ export interface SnapshotHeader {
   external: Record<string, Encoded>;
   /** bitecs: entity index (aliveCount, maxId, buffer of the dense id list), component bit layout, masks, queries. */
   ecs: Encoded;
+  /** Bytes of the buffer that hold data (the buffer may be longer: see `snapshot`'s `reuse`). */
+  bytes: number;
+  /** 16 hex digits: the hash of every other field (as JSON) and of the buffer's first `bytes` bytes (snapshot/checksum.ts). */
+  checksum: string;
 }
 
 type TypedArray =
@@ -382,6 +388,10 @@ class Writer {
     this.pending.push({ src: list, n, offset, type: 'Int32Array' });
     return { $t: 'Int32Array', o: offset, n, len: n };
   }
+  /** Bytes placed so far: the length of the data in the buffer `finish` returns. */
+  get length(): number {
+    return this.bytes;
+  }
   private place(byteLength: number): number {
     const offset = (this.bytes + 7) & ~7;
     this.bytes = offset + byteLength;
@@ -523,7 +533,29 @@ function isTagged(e: Encoded): e is { [key: string]: Encoded } {
   return typeof e === 'object' && e !== null && !Array.isArray(e);
 }
 
+/**
+ * The typed array constructor named by `type`, once `n` is checked as a length (an integer in
+ * [0, MAX_ELEMENTS]). @throws RangeError `restore: snapshot's <path> is damaged` otherwise.
+ */
+function allocatable(type: Encoded | undefined, n: Encoded | undefined, path: string): new (n: number) => TypedArray {
+  const Ctor = typeof type === 'string' && Object.hasOwn(TYPED, type) ? TYPED[type] : undefined;
+  if (Ctor === undefined || !(Number.isInteger(n) && (n as number) >= 0 && (n as number) <= MAX_ELEMENTS))
+    throw new RangeError(`restore: snapshot's ${path} is damaged`);
+  return Ctor as unknown as new (
+    n: number,
+  ) => TypedArray;
+}
+
+/** The most elements a snapshot's typed array may declare (2^28: 2 GB of Float64Array); more is damage. */
+const MAX_ELEMENTS = 2 ** 28;
+
 class Reader {
+  /**
+   * With `dry` set, `objectInto` writes nothing: it walks the encoding against the target as a restore
+   * would and throws where the restore would, or where a value is damaged (restore runs it first, so a
+   * refused snapshot leaves the world as it was).
+   */
+  dry = false;
   /**
    * @param buffer the snapshot's buffer.
    * @param capacity the world's capacity: arrays of k (capacity + 1) elements are per-entity stores.
@@ -537,7 +569,13 @@ class Reader {
   ) {}
   /** A view of an encoded array's stored elements (its first `n`; the rest, up to `len`, are zeros). */
   array(e: { [key: string]: Encoded }, path: string): TypedArray {
-    const Ctor = TYPED[e.$t as string] as unknown as (new (b: ArrayBuffer, o: number, n: number) => TypedArray) | undefined;
+    const Ctor = (Object.hasOwn(TYPED, e.$t as string) ? TYPED[e.$t as string] : undefined) as unknown as
+      | (new (
+          b: ArrayBuffer,
+          o: number,
+          n: number,
+        ) => TypedArray)
+      | undefined;
     const o = e.o as number,
       n = e.n as number,
       len = e.len as number;
@@ -546,7 +584,17 @@ class Reader {
     const upto = e.upto as number | undefined;
     if (
       Ctor === undefined ||
-      !(n >= 0 && n <= len && o >= 0 && o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength) ||
+      !(
+        Number.isInteger(n) &&
+        Number.isInteger(len) &&
+        Number.isInteger(o) &&
+        n >= 0 &&
+        n <= len &&
+        len <= MAX_ELEMENTS &&
+        o >= 0 &&
+        o % Ctor.prototype.BYTES_PER_ELEMENT === 0 &&
+        o + n * Ctor.prototype.BYTES_PER_ELEMENT <= this.buffer.byteLength
+      ) ||
       (rep !== undefined && !(n === 2 && rep >= 2 && rep <= len)) ||
       (iota !== undefined &&
         !(Ctor === Int32Array && rep === undefined && n === 1 && Number.isInteger(iota) && iota >= 2 && iota <= len)) ||
@@ -600,12 +648,20 @@ class Reader {
   fresh(e: Encoded, path: string): unknown {
     if (!isTagged(e)) return e;
     const t = e.$t as string;
-    if (t === 'n') return e.v === '-0' ? -0 : Number(e.v);
+    if (t === 'n') {
+      if (typeof e.v !== 'string') throw new RangeError(`restore: snapshot's ${path} is damaged`);
+      return e.v === '-0' ? -0 : Number(e.v);
+    }
     if (t === 'u') return undefined;
-    if (t in TYPED) return this.full(e, path);
-    if (t === 'unused') return new TYPED[e.type as string]!(e.n as number);
-    if (t === 'scratch') return new TYPED[e.type as string]!(typeof e.len === 'number' ? e.len : 0);
+    if (Object.hasOwn(TYPED, t)) return this.full(e, path);
+    if (t === 'unused') return new (allocatable(e.type, e.n, path))(e.n as number);
+    if (t === 'scratch') return new (allocatable(e.type, e.len ?? 0, path))(typeof e.len === 'number' ? e.len : 0);
     const v = e.v as Encoded;
+    if ((t === 'a' || t === 's' || t === 'm') && !Array.isArray(v)) throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    if (t === 'm' && !(v as Encoded[]).every((p) => Array.isArray(p) && p.length === 2))
+      throw new RangeError(`restore: snapshot's ${path} is damaged`);
+    if (t === 'o' && (typeof v !== 'object' || v === null || Array.isArray(v)))
+      throw new RangeError(`restore: snapshot's ${path} is damaged`);
     if (t === 'a') return (v as Encoded[]).map((x, i) => this.fresh(x, `${path}[${i}]`));
     if (t === 's') return new Set((v as Encoded[]).map((x) => this.fresh(x, path)));
     if (t === 'm') return new Map((v as Encoded[][]).map(([k, x]) => [this.fresh(k!, path), this.fresh(x!, path)]));
@@ -631,6 +687,10 @@ class Reader {
    */
   into(target: Record<string, unknown>, key: string, e: Encoded, path: string, keep?: ReadonlySet<string>): void {
     const cur = target[key];
+    if (this.dry) {
+      this.check(cur, e, path, keep);
+      return;
+    }
     if (isTagged(e)) {
       const t = e.$t as string;
       // Scratch (see SCRATCH, STAMPED): the target's own array stays if it is long enough (snapshots
@@ -661,7 +721,7 @@ class Reader {
         }
         return;
       }
-      if (t in TYPED) {
+      if (Object.hasOwn(TYPED, t)) {
         const src = this.array(e, path);
         if (
           cur !== null &&
@@ -711,6 +771,78 @@ class Reader {
     }
     target[key] = this.fresh(e, path);
   }
+  /**
+   * The dry run of `into` (see `dry`): throws where `into` would, or where the encoding is damaged;
+   * writes nothing. A scalar where the world holds a scalar of another type (a string where a number
+   * belongs) is damage.
+   */
+  private check(cur: unknown, e: Encoded, path: string, keep?: ReadonlySet<string>): void {
+    const damaged = () => new RangeError(`restore: snapshot's ${path} is damaged`);
+    if (!isTagged(e) || e.$t === 'n' || e.$t === 'u') {
+      if (Array.isArray(e)) throw damaged();
+      const v = this.fresh(e, path);
+      const kind = (x: unknown) => (x === null || x === undefined ? 'none' : typeof x);
+      if (['number', 'boolean', 'string'].includes(kind(cur)) && kind(v) !== 'none' && kind(v) !== kind(cur)) throw damaged();
+      return;
+    }
+    const t = e.$t as string;
+    if (t === 'scratch') {
+      allocatable(e.type, e.len ?? 0, path);
+      return;
+    }
+    if (t === 'unused') {
+      allocatable(e.type, e.n, path);
+      return;
+    }
+    if (Object.hasOwn(TYPED, t)) {
+      this.array(e, path);
+      return;
+    }
+    if (
+      t === 'o' &&
+      cur !== null &&
+      typeof cur === 'object' &&
+      !Array.isArray(cur) &&
+      !(cur instanceof Set) &&
+      !(cur instanceof Map) &&
+      !ArrayBuffer.isView(cur)
+    ) {
+      if (typeof e.v !== 'object' || e.v === null || Array.isArray(e.v)) throw damaged();
+      this.objectInto(cur as Record<string, unknown>, e.v as Record<string, Encoded>, path, keep);
+      return;
+    }
+    // Anything else replaces the world's value: decoding it checks it.
+    this.fresh(e, path);
+  }
+  /** The dry run of `tangent`: the note and its rows must be sound, and the normals it reads stored as Float64Arrays long enough. */
+  private checkTangent(enc: Record<string, Encoded>, key: string, e: { [key: string]: Encoded }, path: string): void {
+    const src = enc[e.axis === 'x' ? 'ny' : 'nx'];
+    const len = e.len as number,
+      upto = e.upto as number;
+    if (
+      !(
+        Number.isInteger(len) &&
+        Number.isInteger(upto) &&
+        upto >= 0 &&
+        upto <= len &&
+        len <= MAX_ELEMENTS &&
+        (e.axis === 'x' || e.axis === 'y') &&
+        isTagged(src) &&
+        src.$t === 'Float64Array' &&
+        (src.len as number) >= upto
+      )
+    )
+      throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
+    if (e.rows !== undefined) {
+      if (!isTagged(e.rows) || e.rows.$t !== 'Float64Array') throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
+      const pairs = this.full(e.rows, `${path}.${key}.rows`);
+      if (pairs.length % 2 !== 0) throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
+      for (let k = 0; k < pairs.length; k += 2) {
+        const row = pairs[k]!;
+        if (!(Number.isInteger(row) && row >= 0 && row < upto)) throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
+      }
+    }
+  }
   objectInto(target: Record<string, unknown>, enc: Record<string, Encoded>, path: string, keep?: ReadonlySet<string>): void {
     for (const key of Object.keys(target)) {
       if (keep?.has(key)) continue;
@@ -723,12 +855,13 @@ class Reader {
       if (keep?.has(key)) continue;
       if (isTagged(x) && x.$t === TANGENT_2D) {
         derived = true;
+        if (this.dry) this.checkTangent(enc, key, x, path);
         continue;
       }
       this.into(target, key, x, `${path}.${key}`);
     }
     // Derived columns after the rest: they are computed from the normals just restored.
-    if (derived) {
+    if (derived && !this.dry) {
       for (const [key, x] of Object.entries(enc)) {
         if (!keep?.has(key) && isTagged(x) && x.$t === TANGENT_2D) this.tangent(target, key, x, `${path}.${key}`);
       }
@@ -1436,10 +1569,39 @@ export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnaps
     external[ext.name] = s === undefined ? null : w.object(s as Record<string, unknown>, ext.name, new Set(ext.keep ?? []));
   }
   const ecs = captureEcs(world, w);
-  return {
-    header: { format: 'bitphysics-snapshot', version: 2, dimensions: world.dimensions, capacity: world.capacity, state, external, ecs },
-    buffers: [w.finish(old)],
+  const buffer = w.finish(old);
+  const fields = {
+    format: FORMAT,
+    version: VERSION,
+    dimensions: world.dimensions,
+    capacity: world.capacity,
+    bytes: w.length,
+    state,
+    external,
+    ecs,
   };
+  return { header: { ...fields, checksum: snapshotChecksum(fields, buffer, w.length) }, buffers: [buffer] };
+}
+
+/** The header's format name. */
+const FORMAT = 'bitphysics-snapshot';
+/** The format version `snapshot` writes and `restore` reads: 3 (version 2 had no checksum). */
+const VERSION = 3;
+
+/** A snapshot's header without its checksum, in the order `snapshot` wrote it (see snapshotChecksum). */
+function checksumFields(h: SnapshotHeader): object {
+  const { format, version, dimensions, capacity, bytes, state, external, ecs } = h;
+  return { format, version, dimensions, capacity, bytes, state, external, ecs };
+}
+
+/**
+ * Writes `snap`'s checksum again, for its header and buffer as they are now: for tools that edit a
+ * snapshot on purpose (and tests that check what restore makes of edited values). A snapshot taken
+ * by `snapshot` needs none of this. Not exported by the package.
+ */
+export function sealSnapshot(snap: WorldSnapshot): void {
+  const h = snap.header as { -readonly [K in keyof SnapshotHeader]: SnapshotHeader[K] };
+  h.checksum = snapshotChecksum(checksumFields(h), snap.buffers[0]!, h.bytes);
 }
 
 /**
@@ -1449,8 +1611,18 @@ export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnaps
  * code and are not in a snapshot); stage settings (gravity, dt, integrator, solver settings) come from
  * the snapshot. The snapshot is not changed and can be restored again.
  *
- * @throws RangeError `restore: snapshot must ...` if `snap` is not a snapshot, or was taken from a world
- *   of other dimensions or capacity, or by another version; the world is then left as it was.
+ * Restore is all or nothing: it checks the snapshot first (format and version, the world's
+ * dimensions and capacity, the checksum of the header and buffer, every encoded array's type, offset
+ * and length, every scalar against the rules of snapshot/checks.ts, the entity ids against the
+ * capacity) by a dry run of the whole restore, and writes only when all of it passed. A refused
+ * snapshot leaves the world exactly as it was.
+ *
+ * Threads: the world keeps its own thread count and worker pool (they are not state: see NOT_STATE),
+ * so a snapshot of a world with any number of threads restores into a world with any number.
+ *
+ * @throws RangeError `restore: snapshot ...` if `snap` is not a snapshot, was taken from a world of
+ *   other dimensions or capacity or by another version, is damaged (checksum), or holds a value out
+ *   of range; the world is then left as it was.
  */
 export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   const where = 'restore';
@@ -1464,24 +1636,34 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     throw new RangeError(`${where}: snapshot must be a value returned by snapshot(world), got ${describe(snap)}`);
   }
   const h = snap.header;
-  if (h.format !== 'bitphysics-snapshot' || h.version !== 2) {
+  if (h.format !== FORMAT || h.version !== VERSION) {
     throw new RangeError(
-      `${where}: snapshot must be a bitphysics snapshot of version 2, got format ${describe(h.format)} version ${describe(h.version)}`,
+      `${where}: snapshot must be a bitphysics snapshot of version ${VERSION}, got format ${describe(h.format)} version ${describe(h.version)}`,
     );
   }
   if (h.dimensions !== world.dimensions || h.capacity !== world.capacity) {
     throw new RangeError(
-      `${where}: snapshot must come from a world with the same options: it has dimensions ${h.dimensions} and capacity ${h.capacity}, this world ${world.dimensions} and ${world.capacity}`,
+      `${where}: snapshot must come from a world with the same options: it has dimensions ${describe(h.dimensions)} and capacity ${describe(h.capacity)}, this world ${world.dimensions} and ${world.capacity}`,
     );
   }
   const buffer = snap.buffers[0];
   if (snap.buffers.length !== 1 || !(buffer instanceof ArrayBuffer)) {
     throw new RangeError(`${where}: snapshot must hold one ArrayBuffer, got ${snap.buffers.length} buffers`);
   }
-  const oldMaxId = internals(world).entityIndex.maxId;
-  const r = new Reader(buffer, world.capacity, oldMaxId);
-  // Check the structure first so a mismatch leaves the world as it was.
-  const state = (h.state as Record<string, Encoded>).v as Record<string, Encoded>;
+  if (!(Number.isInteger(h.bytes) && h.bytes >= 0 && h.bytes <= buffer.byteLength)) {
+    throw new RangeError(
+      `${where}: snapshot is damaged: its header says ${describe(h.bytes)} bytes of data, its buffer holds ${buffer.byteLength}`,
+    );
+  }
+  const sum = snapshotChecksum(checksumFields(h), buffer, h.bytes);
+  if (sum !== h.checksum) {
+    throw new RangeError(`${where}: snapshot is damaged: its checksum is ${describe(h.checksum)}, its contents hash to '${sum}'`);
+  }
+  if (!isTagged(h.state) || h.state.$t !== 'o' || !isTagged(h.state.v) || !isTagged(h.external as Encoded) || !isTagged(h.ecs)) {
+    throw new RangeError(`${where}: snapshot is damaged: its header lacks the world's state`);
+  }
+  const state = h.state.v as Record<string, Encoded>;
+  checkSnapshotValues(h.state, h.external);
   for (const key of Object.keys(world)) {
     if (!NOT_STATE.has(key) && !(key in state))
       throw new RangeError(`${where}: snapshot has no world.${key} (it was made by another version of bitphysics)`);
@@ -1490,13 +1672,21 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     if (!(ext.name in h.external))
       throw new RangeError(`${where}: snapshot has no '${ext.name}' state (it was made by another version of bitphysics)`);
   }
-  // Id ranges (see IdLists) checked before anything is written.
-  const ecsLists = (h.ecs as Record<string, Encoded> | null)?.lists;
-  if (Array.isArray(ecsLists)) {
-    ecsLists.forEach((l, i) => {
-      if (isTagged(l) && l.$t === 'range') checkRange(l, i, world.capacity);
-    });
+  const oldMaxId = internals(world).entityIndex.maxId;
+  const r = new Reader(buffer, world.capacity, oldMaxId);
+  // The dry run: everything the restore below reads is checked, nothing is written.
+  r.dry = true;
+  r.objectInto(world as unknown as Record<string, unknown>, state, 'world', NOT_STATE);
+  for (const ext of externalWorldStates()) {
+    const enc = h.external[ext.name]!;
+    if (enc === null) continue;
+    if (!isTagged(enc) || enc.$t !== 'o') throw new RangeError(`${where}: snapshot's ${ext.name} is damaged`);
+    const target = ext.get(world, false);
+    if (target === undefined) r.fresh(enc, ext.name);
+    else r.objectInto(target as Record<string, unknown>, enc.v as Record<string, Encoded>, ext.name, new Set(ext.keep ?? []));
   }
+  checkEcs(world, h.ecs, r);
+  r.dry = false;
   // Stamp counters (see STAMPED): the world's own, before the snapshot's are written.
   const counters = [...STAMPED.values()].map(({ parent, counter }) => parent(world)[counter]);
   r.objectInto(world as unknown as Record<string, unknown>, state, 'world', NOT_STATE);
@@ -1521,4 +1711,80 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     );
   }
   restoreEcs(world, h.ecs as Record<string, Encoded>, r, oldMaxId);
+}
+
+/**
+ * Checks the ECS part of a snapshot before restoreEcs writes it: every id list sound and within the
+ * capacity, the entity index (alive count, highest id, its id list: each id from 1 to the highest
+ * once), the component layout (names of this world's components, generations and bits in range),
+ * the masks, and the queries (names of this world's components, id lists that exist).
+ * @throws RangeError `restore: snapshot's ecs... is damaged` (or names the component this world lacks).
+ */
+function checkEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader): void {
+  const capacity = world.capacity;
+  const damaged = (path: string, why: string) => new RangeError(`restore: snapshot's ecs.${path} is damaged: ${why}`);
+  const C = world.components as unknown as Record<string, object>;
+  const has = (n: unknown) => typeof n === 'string' && Object.hasOwn(C, n);
+  if (!Array.isArray(ecs.lists) || !Array.isArray(ecs.layout) || !Array.isArray(ecs.masks) || !Array.isArray(ecs.queries))
+    throw damaged('', 'lists, layout, masks or queries missing');
+  ecs.lists.forEach((l, i) => {
+    if (!isTagged(l)) throw damaged(`lists[${i}]`, 'not a list');
+    if (l.$t === 'range') {
+      checkRange(l, i, capacity);
+      return;
+    }
+    if (l.$t !== 'Int32Array') throw damaged(`lists[${i}]`, 'not a list of ids');
+    const ids = r.used(l, `ecs.lists[${i}]`);
+    for (let k = 0; k < ids.length; k++) {
+      const id = ids[k]!;
+      if (!(id >= 1 && id <= capacity)) throw damaged(`lists[${i}]`, `id ${id} is outside 1 .. ${capacity}`);
+    }
+  });
+  const lists = readIdLists(ecs.lists as Encoded[], r, capacity);
+  const aliveCount = ecs.aliveCount,
+    maxId = ecs.maxId;
+  if (!(Number.isInteger(maxId) && (maxId as number) >= 0 && (maxId as number) <= capacity))
+    throw damaged('maxId', `must be an integer in [0, ${capacity}], got ${describe(maxId)}`);
+  const dense = idList(ecs.dense!, lists, 'ecs.dense');
+  if (!(Number.isInteger(aliveCount) && (aliveCount as number) >= 0 && (aliveCount as number) <= dense.length))
+    throw damaged('aliveCount', `must be an integer in [0, ${dense.length}], got ${describe(aliveCount)}`);
+  const seen = new Uint8Array((maxId as number) + 1);
+  for (let i = 0; i < dense.length; i++) {
+    const id = dense[i]!;
+    if (!(id >= 1 && id <= (maxId as number)) || seen[id] !== 0) throw damaged('dense', `id ${id} is out of range or listed twice`);
+    seen[id] = 1;
+  }
+  const gens = (ecs.masks as Encoded[]).length;
+  (ecs.masks as Encoded[]).forEach((m, g) => {
+    if (!isTagged(m) || m.$t !== 'Int32Array') throw damaged(`masks[${g}]`, 'not a mask list');
+    r.array(m, `masks[${g}]`);
+  });
+  for (const entry of ecs.layout as Encoded[]) {
+    if (!Array.isArray(entry) || entry.length !== 3) throw damaged('layout', 'an entry is not [name, generation, bit]');
+    const [name, g, bit] = entry;
+    if (typeof name === 'string' && !has(name))
+      throw new RangeError(`restore: snapshot has component '${name}', which this world does not`);
+    if (
+      !(
+        has(name) &&
+        Number.isInteger(g) &&
+        (g as number) >= 0 &&
+        (g as number) < gens &&
+        Number.isInteger(bit) &&
+        (bit as number) >= 0 &&
+        (bit as number) <= 31
+      )
+    )
+      throw damaged('layout', `entry ${describe(entry)}`);
+  }
+  (ecs.queries as Encoded[]).forEach((enc, i) => {
+    const qd = isTagged(enc) && isTagged(enc.v) ? enc.v : undefined;
+    if (qd === undefined) throw damaged(`queries[${i}]`, 'not a query');
+    for (const part of ['and', 'not', 'or'] as const) {
+      const names = qd[part];
+      if (!Array.isArray(names) || !names.every(has)) throw damaged(`queries[${i}].${part}`, "not a list of this world's components");
+    }
+    idList(qd.dense!, lists, `ecs.queries[${i}].dense`);
+    idList(qd.toRemove!, lists, `ecs.queries[${i}].toRemove`);
+  });
 }

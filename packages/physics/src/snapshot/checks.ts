@@ -1,0 +1,146 @@
+import { MAX_AUTO_SUBSTEPS } from '../collision/contact-scale.js';
+import { MAX_WIND_MODES } from '../forces/settings.js';
+import { INTEGRATOR_NAMES } from '../integrators/names.js';
+import { describe } from '../validate.js';
+import { MAX_TIME_STEP } from '../world.js';
+
+/**
+ * The checks `restore` makes on the values a snapshot holds in its header (scalars: settings, clocks,
+ * counts), before it writes anything. A snapshot whose checksum is right holds what `snapshot` wrote,
+ * so these checks matter for snapshots edited on purpose (and sealed again): a value the API would
+ * refuse is refused here too, with the rule it breaks, so no restored world can hang or fill with
+ * NaN from a setting (dt <= 0 made `step` loop forever). Typed arrays are checked by the reader
+ * (offsets, lengths, encodings) and bitecs' id lists by the ECS part of restore (ids within the
+ * capacity, no id twice).
+ */
+
+/** A rule a value breaks: its text (`an integer in [1, 64]`), or null when the value keeps it. */
+type Rule = (v: unknown) => string | null;
+
+const isNumber = (v: unknown): v is number => typeof v === 'number';
+const nonNegative: Rule = (v) => (isNumber(v) && Number.isFinite(v) && v >= 0 ? null : 'a finite number >= 0');
+const positive: Rule = (v) => (isNumber(v) && Number.isFinite(v) && v > 0 ? null : 'a finite number > 0');
+const integer =
+  (min: number, max: number): Rule =>
+  (v) =>
+    Number.isInteger(v) && (v as number) >= min && (v as number) <= max ? null : `an integer in [${min}, ${max}]`;
+const int32: Rule = integer(-(2 ** 31), 2 ** 31 - 1);
+const count: Rule = integer(0, Number.MAX_SAFE_INTEGER);
+
+/** Rules by path in the world's state tree (external state by its registered name). */
+const RULES: ReadonlyMap<string, Rule> = new Map<string, Rule>([
+  ['world.dt', (v) => (isNumber(v) && v > 0 && v <= MAX_TIME_STEP ? null : `a number in (0, ${MAX_TIME_STEP}] s (MAX_TIME_STEP)`)],
+  ['world.substeps', integer(1, 64)],
+  ['world.h', positive],
+  ['world.integrator', (v) => ((INTEGRATOR_NAMES as readonly unknown[]).includes(v) ? null : 'an integrator name')],
+  ['world.steps', count],
+  ['world.rng.a', int32],
+  ['world.rng.b', int32],
+  ['world.rng.c', int32],
+  ['world.rng.d', int32],
+  ['world.laws.openingAngle', nonNegative],
+  ['world.laws.gravitySoftening', nonNegative],
+  ['world.laws.electricSoftening', nonNegative],
+  ['world.laws.wind.modes', integer(0, MAX_WIND_MODES)],
+  ['world.collision.settings.solverSubsteps', integer(1, Math.max(16, MAX_AUTO_SUBSTEPS))],
+  ['world.collision.settings.solverIterations', integer(1, 50)],
+  ['world.collision.settings.relaxIterations', integer(0, 50)],
+  ['world.collision.settings.impactIterations', integer(0, 64)],
+  ['world.collision.settings.restitutionIterations', integer(0, 64)],
+  ['world.collision.settings.coloredSolveMinRows', count],
+  [
+    'world.collision.grid.tableSize',
+    (v) => (Number.isInteger(v) && (v as number) >= 0 && (v as number) <= 2 ** 28 ? null : 'an integer in [0, 2^28]'),
+  ],
+  ['world.joints.settings.iterations', integer(0, 100)],
+  ['world.cloth.substeps', integer(0, 1000)],
+  ['world.cloth.tearQ', (v) => (isNumber(v) && v >= 0 ? null : 'a number >= 0 (Infinity: no tearing)')],
+]);
+
+/** Keys whose number is a count, a size, an index or a stamp: an integer >= 0 wherever it is. */
+const COUNT_KEY = /^(count|size|capacity|head|budget|stamp|epoch|version|built)$|Count$|Stamp$/;
+
+/**
+ * Checks every scalar of a snapshot's state tree (`state`, and each registered external state under
+ * its name): the rules above by path, counts (COUNT_KEY) as integers >= 0 and at most their object's
+ * `capacity`, every other number finite.
+ * @throws RangeError `restore: snapshot's <path> must be <rule>, got <value>`.
+ */
+export function checkSnapshotValues(state: unknown, external: Record<string, unknown>): void {
+  walk(state, 'world');
+  for (const [name, enc] of Object.entries(external)) walk(enc, name);
+}
+
+/** The number an encoded scalar stands for (see Writer.value: non-finite numbers and -0 are tagged). */
+function scalar(e: unknown): unknown {
+  if (typeof e === 'object' && e !== null && !Array.isArray(e) && (e as { $t?: unknown }).$t === 'n') {
+    const v = (e as { v?: unknown }).v;
+    return v === '-0' ? -0 : typeof v === 'string' ? Number(v) : undefined;
+  }
+  return e;
+}
+
+function fail(path: string, rule: string, v: unknown): never {
+  throw new RangeError(`restore: snapshot's ${path} must be ${rule}, got ${describe(v)}`);
+}
+
+function walk(e: unknown, path: string): void {
+  if (typeof e !== 'object' || e === null || Array.isArray(e) || (e as { $t?: unknown }).$t === 'n') {
+    check(scalar(e), path, path.slice(path.lastIndexOf('.') + 1));
+    return;
+  }
+  const t = (e as { $t?: unknown }).$t;
+  const v = (e as { v?: unknown }).v;
+  if (t === 'o') {
+    if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'an encoded object', v);
+    const o = v as Record<string, unknown>;
+    for (const [key, x] of Object.entries(o)) walk(x, `${path}.${key}`);
+    // A count of rows is at most the rows there is room for.
+    const cap = scalar(o.capacity);
+    if (typeof cap === 'number') {
+      for (const key of Object.keys(o)) {
+        const n = scalar(o[key]);
+        if (key !== 'capacity' && /^count$|Count$/.test(key) && typeof n === 'number' && n > cap)
+          fail(`${path}.${key}`, `at most ${path}.capacity (${cap})`, n);
+      }
+    }
+    return;
+  }
+  if (t === 'a' || t === 's' || t === 'm') {
+    if (!Array.isArray(v)) fail(path, 'an encoded list', v);
+    for (const x of v as unknown[]) {
+      if (t === 'm') {
+        if (!Array.isArray(x) || x.length !== 2) fail(path, 'a list of [key, value] pairs', x);
+        walk(x[0], `${path} (map key)`);
+        walk(x[1], `${path} (map value)`);
+      } else walk(x, `${path}[]`);
+    }
+  }
+  // Typed arrays and other tags: checked by the reader.
+}
+
+function check(v: unknown, path: string, key: string): void {
+  const rule = RULES.get(path);
+  if (rule !== undefined) {
+    const broken = rule(v);
+    if (broken !== null) fail(path, broken, v);
+    return;
+  }
+  if (typeof v !== 'number') return;
+  if (COUNT_KEY.test(key)) {
+    const broken = count(v);
+    if (broken !== null) fail(path, broken, v);
+    return;
+  }
+  if (FINITE.some((prefix) => path.startsWith(prefix)) && !Number.isFinite(v)) fail(path, 'a finite number', v);
+}
+
+/** Where every number is finite: the clocks, the force laws' constants, the solver's and sleep's settings. */
+const FINITE = [
+  'world.time',
+  'world.substepStart',
+  'world.laws.',
+  'world.collision.settings.',
+  'world.collision.sleep.',
+  'world.joints.settings.',
+];
