@@ -1,5 +1,6 @@
 import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
 import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
+import { shareStores } from '../threads/shared-stores.js';
 import { describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import { checkSnapshotValues } from './checks.js';
@@ -44,8 +45,12 @@ import { externalWorldStates } from './world-state.js';
  * world restored into must have the same ones), and stage timings.
  */
 
-/** Fields of the world object that are code or measurements, not state; everything else is captured. */
-const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex']);
+/**
+ * Fields of the world object that are code, measurements or the machine it runs on, not state;
+ * everything else is captured. `threads` and `threadPool` are the world's own: a snapshot of a world
+ * with any number of threads restores into a world with any number, which keeps its pool.
+ */
+const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool']);
 
 /**
  * Typed arrays of the world that are scratch: written in full before they are read, within the step
@@ -1618,7 +1623,10 @@ export function sealSnapshot(snap: WorldSnapshot): void {
  * snapshot leaves the world exactly as it was.
  *
  * Threads: the world keeps its own thread count and worker pool (they are not state: see NOT_STATE),
- * so a snapshot of a world with any number of threads restores into a world with any number.
+ * so a snapshot of a world with any number of threads restores into a world with any number. Stepping
+ * on is bit-identical for every pair of thread counts (each body's arithmetic does not depend on them),
+ * except across 1 and more threads in steps solved by colours (`collision.settings.coloredSolveMinRows`:
+ * that order is the same for every count above 1, not for 1).
  *
  * @throws RangeError `restore: snapshot ...` if `snap` is not a snapshot, was taken from a world of
  *   other dimensions or capacity or by another version, is damaged (checksum), or holds a value out
@@ -1711,6 +1719,9 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     );
   }
   restoreEcs(world, h.ecs as Record<string, Encoded>, r, oldMaxId);
+  // A store the restore gave a new array (one this world had not allocated) goes on shared memory,
+  // where the pool's workers can see it.
+  if (world.threadPool !== null) shareStores(world.components, world.capacity);
 }
 
 /**

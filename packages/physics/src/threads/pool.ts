@@ -9,6 +9,13 @@
  * Each array travels to the workers once, in a message, the first time a kernel uses it; nothing is
  * sent per step or per entity. Workers are unref'd in Node, so a pool never keeps the process alive;
  * `dispose` stops and terminates them.
+ *
+ * A worker that dies never finishes its range, so no wait here is unbounded: the calling thread
+ * waits in slices of WAIT_SLICE_MS and between them checks that every worker took the command (a
+ * live worker acknowledges it at once: worker-main.ts `ACK`; one that has not after ACK_LIMIT_MS is
+ * dead), that none wrote `DEAD` on its way out, that no `error` or `exit` event came, and that the
+ * run has not taken `runLimitMs`. A dead worker makes the run throw
+ * `<system>: worker thread <i> died ...`; the pool is then disposed and the world steps on one thread.
  */
 
 import { LoopChooser } from './adaptive.js';
@@ -23,7 +30,7 @@ interface AnyWorker {
   terminate(): unknown;
   unref?(): void;
   /** Node: error and message events. */
-  on?(event: 'error' | 'message', f: (e: unknown) => void): void;
+  on?(event: 'error' | 'message' | 'exit', f: (e: unknown) => void): void;
   /** Node: removes a listener (a message listener would keep an unref'd worker's process alive). */
   off?(event: 'message', f: (e: unknown) => void): void;
   /** Browser: error handler. */
@@ -40,6 +47,17 @@ const MAX_PARAMS = 64;
  * The loops of a step come a few hundred microseconds apart, with the caller's own work between them.
  */
 export const IDLE_SPIN_MICROSECONDS = 500;
+
+/** Milliseconds the calling thread blocks at a time while it waits for the workers (then it checks they live). */
+const WAIT_SLICE_MS = 25;
+
+/**
+ * Milliseconds within which a live worker acknowledges a command (it writes the generation as soon
+ * as it wakes, whatever the run's length); a worker that has not is taken for dead. Far above the
+ * wake-up latency of a loaded machine (microseconds to tens of milliseconds), and short enough that a
+ * dead worker is reported within a second.
+ */
+export const ACK_LIMIT_MS = 500;
 
 /** Characters of a worker's error message kept (longer messages are cut). */
 const ERROR_TEXT = 1024;
@@ -138,6 +156,17 @@ export class ThreadPool {
   private resolveReady: (() => void) | null = null;
   /** The first error a worker died of (it could not start), or null: the pool then runs on one thread. */
   failure: string | null = null;
+  /**
+   * How a worker that had started died (an `error` or `exit` event, seen between steps), or null. The
+   * next run throws it (then the pool is disposed and the world steps on one thread).
+   */
+  lost: string | null = null;
+  /**
+   * Most milliseconds one run (or start and join) may take before the calling thread gives up on the
+   * workers (a worker stuck in an endless kernel, or killed while it ran). Default 60,000: no loop of a
+   * step comes near it. The run then throws and the pool is disposed.
+   */
+  runLimitMs = 60_000;
   /** Loops this pool has run on its threads (a count for tests and the bench). */
   runs = 0;
 
@@ -173,12 +202,20 @@ export class ThreadPool {
     for (let i = 1; i < threads; i++) {
       const w = factory(source);
       w.unref?.();
-      // A worker that dies (cannot start) must not crash the process: the pool falls back to one thread.
+      // A worker that dies must not crash the process. One that could not start: the pool falls back
+      // to one thread. One that had started: the next run says so (see `lost`).
       const died = (e: unknown): void => {
-        this.failure ??= String((e as { message?: unknown })?.message ?? e);
+        if (this.disposed) return;
+        const text = String((e as { message?: unknown })?.message ?? e);
+        this.failure ??= text;
+        this.lost ??= `worker thread ${i} died (${text})`;
       };
-      if (typeof w.on === 'function') w.on('error', died);
-      else w.onerror = died;
+      if (typeof w.on === 'function') {
+        w.on('error', died);
+        w.on('exit', (code: unknown) => {
+          if (!this.disposed) this.lost ??= `worker thread ${i} exited (code ${String(code)})`;
+        });
+      } else w.onerror = died;
       const msg: PoolMessage = {
         type: 'init',
         index: i,
@@ -251,10 +288,12 @@ export class ThreadPool {
    * 64); `ids` (null: dense ids lo+1..hi) is copied to a shared buffer. Returns the sum of the ranges'
    * return values, in thread order.
    * @throws RangeError naming `system` if `arrays` or `params` is too long (nothing runs).
-   * @throws Error naming `system` if a worker's range threw (the message is the worker's).
+   * @throws Error naming `system` if a worker's range threw (the message is the worker's), or if a
+   *   worker died (`<system>: worker thread <i> died ...`; the pool is disposed, the world steps on one thread).
    */
   run(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
     this.join();
+    if (this.lost !== null) this.fail(system, this.lost);
     const ctl = this.ctl;
     let idsId = -1;
     if (ids !== null) {
@@ -275,7 +314,7 @@ export class ThreadPool {
       own = KERNELS[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
       t1 = epochMs();
     } finally {
-      this.await();
+      this.await(system);
     }
     if (ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
     this.balance.record(kernel, n, t0, t1, this.finished);
@@ -295,7 +334,7 @@ export class ThreadPool {
       throw new RangeError(`${system}: a kernel takes at most ${MAX_PARAMS} parameters, got ${params.length}`);
     const ctl = this.ctl;
     for (let i = 0; i < arrays.length; i++) ctl[CONTROL.ARRAYS + i] = this.idOf(arrays[i]!);
-    this.sync();
+    this.sync(system);
     const P = this.params;
     for (let i = 0; i < params.length; i++) P[i] = params[i]!;
     ctl[CONTROL.KERNEL] = kernel;
@@ -317,6 +356,7 @@ export class ThreadPool {
    */
   start(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
     this.join();
+    if (this.lost !== null) this.fail(system, this.lost);
     if (this.workers.length === 0 || !this.usable()) throw new RangeError(`${system}: ThreadPool.start needs a usable worker`);
     this.setUp(system, kernel, arrays, params, -1);
     const ctl = this.ctl;
@@ -336,7 +376,7 @@ export class ThreadPool {
     const system = this.started;
     if (system === null) return 0;
     this.started = null;
-    this.await();
+    this.await(system);
     if (this.ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
     return this.results[1]!;
   }
@@ -384,32 +424,81 @@ export class ThreadPool {
   private pendingSync = false;
 
   /** Makes every worker receive the arrays posted since the last sync (they leave their wait loop to read messages). */
-  private sync(): void {
+  private sync(system: string): void {
     if (!this.pendingSync) return;
     this.pendingSync = false;
     this.ctl[CONTROL.EXPECT] = this.ids.size;
     this.dispatch(COMMAND.SYNC);
-    this.await();
+    this.await(system);
   }
+
+  /** When the last command was dispatched (Date.now(), ms). */
+  private dispatchedAt = 0;
 
   private dispatch(cmd: number): void {
     const ctl = this.ctl;
     ctl[CONTROL.CMD] = cmd;
     Atomics.store(ctl, CONTROL.PENDING, this.workers.length);
+    this.dispatchedAt = Date.now();
     Atomics.add(ctl, CONTROL.GEN, 1);
     Atomics.notify(ctl, CONTROL.GEN);
   }
 
-  private await(): void {
+  /**
+   * Waits until every worker has finished the last command, in slices (see the file's header), and
+   * checks between slices that they all live.
+   * @throws Error `<system>: worker thread <i> died ...` (the pool is then disposed).
+   */
+  private await(system: string): void {
     const ctl = this.ctl;
     let p: number;
-    if (this.blocking) {
-      while ((p = Atomics.load(ctl, CONTROL.PENDING)) !== 0) Atomics.wait(ctl, CONTROL.PENDING, p);
-    } else {
-      while (Atomics.load(ctl, CONTROL.PENDING) !== 0) {
-        /* a browser's main thread may not wait: spin */
+    for (;;) {
+      if (this.blocking) {
+        // Woken at once by the last worker's notify; the timeout only bounds the wait.
+        if ((p = Atomics.load(ctl, CONTROL.PENDING)) === 0) return;
+        Atomics.wait(ctl, CONTROL.PENDING, p, WAIT_SLICE_MS);
+        if (Atomics.load(ctl, CONTROL.PENDING) === 0) return;
+      } else {
+        // A browser's main thread may not wait: it spins, reading the clock now and then.
+        const until = Date.now() + WAIT_SLICE_MS;
+        let k = 0;
+        while (Atomics.load(ctl, CONTROL.PENDING) !== 0) {
+          if ((++k & 1023) === 0 && Date.now() >= until) break;
+        }
+        if (Atomics.load(ctl, CONTROL.PENDING) === 0) return;
+      }
+      const dead = this.deadWorker();
+      if (dead !== null) this.fail(system, dead);
+    }
+  }
+
+  /** Why the last command cannot finish (a worker is dead, or the run took too long), or null while it may. */
+  private deadWorker(): string | null {
+    const ctl = this.ctl;
+    const who = Atomics.load(ctl, CONTROL.DEAD);
+    if (who !== 0) return `worker thread ${who} died (its thread ended)`;
+    if (this.lost !== null) return this.lost;
+    const waited = Date.now() - this.dispatchedAt;
+    if (waited >= ACK_LIMIT_MS) {
+      const gen = Atomics.load(ctl, CONTROL.GEN);
+      for (let i = 1; i <= this.workers.length; i++) {
+        if (Atomics.load(ctl, CONTROL.ACK + i) !== gen)
+          return `worker thread ${i} died (it did not take the command within ${ACK_LIMIT_MS} ms)`;
       }
     }
+    if (waited >= this.runLimitMs) return `the workers did not finish within runLimitMs (${this.runLimitMs} ms)`;
+    return null;
+  }
+
+  /**
+   * Gives up on the pool: records why, disposes it (the world's loops then run on the calling thread
+   * alone) and throws. @throws Error `<system>: <why>; ...`.
+   */
+  private fail(system: string, why: string): never {
+    this.failure ??= why;
+    this.lost ??= why;
+    this.dispose();
+    throw new Error(`${system}: ${why}; the thread pool is shut down and the world steps on the calling thread alone from now on`);
   }
 }
 

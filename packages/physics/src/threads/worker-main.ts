@@ -4,7 +4,8 @@
  *
  * Protocol (WORKER_MAIN_SOURCE below), over the control Int32Array `ctl` on a SharedArrayBuffer (slots in `CONTROL`):
  * - the worker waits for `GEN` to change: it watches it for `SPIN` microseconds, then blocks in
- *   Atomics.wait; then it reads `CMD`;
+ *   Atomics.wait; then it writes the generation it saw into `ACK + index` (the pool takes a worker
+ *   that has not done so soon after a command for dead) and reads `CMD`;
  * - RUN: it runs kernel `KERNEL` with the arrays whose ids are in `ARRAYS..`, over its range of the
  *   loop, from `BOUNDS + index` to `BOUNDS + index + 1` (thread `index`, passed to the kernel as
  *   `part`; the main thread is thread 0), stores its kernel's return value in
@@ -13,7 +14,9 @@
  * - SYNC: new shared arrays were posted as messages; the worker returns to its event loop to receive
  *   them, and reports done once it holds `EXPECT` arrays;
  * - QUIT: it leaves the loop (the pool then terminates it).
- * A kernel that throws sets `ERROR` and writes its message (char codes) into `errorText`.
+ * A kernel that throws sets `ERROR` and writes its message (char codes) into `errorText`. A Node
+ * worker whose thread ends (process.exit, an uncaught error) writes its index into `DEAD` on its way
+ * out and wakes the pool.
  * No message is sent per step or per entity: the arrays travel once, when first used.
  */
 
@@ -26,6 +29,8 @@ export const CONTROL = Object.freeze({
   ERROR: 4,
   EXPECT: 5,
   READY: 6,
+  /** Index of a worker whose thread ended (its exit hook wrote it), or 0. */
+  DEAD: 7,
   IDS: 9,
   NARRAYS: 10,
   ARRAYS: 11,
@@ -35,8 +40,10 @@ export const CONTROL = Object.freeze({
   BOUNDS: 59,
   /** Microseconds an idle worker watches `GEN` before it blocks in Atomics.wait (ThreadPool.idleSpin). */
   SPIN: 124,
-  /** Length of the control array. */
-  LENGTH: 125,
+  /** First slot of the workers' acknowledgements: worker i writes the generation it took into ACK + i. */
+  ACK: 125,
+  /** Length of the control array (room for the acknowledgements of 64 threads). */
+  LENGTH: 125 + 64,
 });
 
 /** Commands in `CONTROL.CMD`. */
@@ -71,7 +78,7 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124;
+  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, DEAD = 7, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124, ACK = 125;
   var RUN = 0, SYNC = 1, QUIT = 2;
   var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
   var clock = globalThis.performance;
@@ -103,6 +110,7 @@ function workerMain(kernels, helpers, nodePort) {
       var g = Atomics.load(ctl, GEN);
       if (g === seen) continue;
       seen = g;
+      Atomics.store(ctl, ACK + index, g);
       var cmd = ctl[CMD];
       if (cmd === QUIT) return;
       if (cmd === SYNC) {
@@ -130,6 +138,14 @@ function workerMain(kernels, helpers, nodePort) {
     if (m.type === 'init') {
       ctl = m.ctl; params = m.params; results = m.results; finished = m.finished; errorText = m.errorText; index = m.index;
       seen = Atomics.load(ctl, GEN);
+      Atomics.store(ctl, ACK + index, seen);
+      // A thread that ends says so (the pool would otherwise wait for its range forever).
+      if (nodePort !== null && typeof process === 'object' && typeof process.on === 'function') {
+        process.on('exit', function () {
+          Atomics.store(ctl, DEAD, index);
+          Atomics.notify(ctl, PENDING);
+        });
+      }
       Atomics.add(ctl, READY, 1);
       Atomics.notify(ctl, READY);
       // One message at start-up, so the pool's ready promise resolves without a timer.
