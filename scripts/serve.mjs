@@ -90,13 +90,49 @@ function writeCache(dir, files, metafile, startedAt) {
   }
 }
 
+/** Methods the server answers; any other gets 405 with an Allow header listing these. */
+const METHODS = ['GET', 'HEAD'];
+
+/**
+ * Whether a request's Host header names this server: localhost, 127.0.0.1, [::1] or the address it
+ * is bound to, with the port it listens on (no port: 80). Anything else is refused, so a page of
+ * another site cannot reach the server through a DNS name rebound to 127.0.0.1 (DNS rebinding).
+ * @param {string | undefined} header the Host header
+ * @param {string} boundHost the address the server listens on
+ * @param {number} port the port it listens on
+ */
+export function isOwnHost(header, boundHost, port) {
+  if (typeof header !== 'string') return false;
+  const match = /^(\[[0-9a-fA-F:.]+\]|[^:[\]]+)(?::(\d{1,5}))?$/.exec(header.trim());
+  if (match === null) return false;
+  const name = match[1].toLowerCase();
+  const given = match[2] === undefined ? 80 : Number(match[2]);
+  const bound = boundHost.includes(':') ? `[${boundHost.toLowerCase()}]` : boundHost.toLowerCase();
+  return given === port && ['localhost', '127.0.0.1', '[::1]', bound].includes(name);
+}
+
+/**
+ * Whether `file` (an absolute, normalised path) is inside directory `dir` (or is it): compared with a
+ * trailing separator, so a sibling whose name starts with the directory's ('docs-old' beside 'docs')
+ * is not inside.
+ */
+export function isInside(file, dir) {
+  const base = resolve(dir);
+  return file === base || file.startsWith(base.endsWith(sep) ? base : base + sep);
+}
+
 /**
  * Serves the site from memory: builds it once, then (with `watch`, the default) rebuilds on change.
- * @param {{ port?: number, host?: string, watch?: boolean, cache?: boolean, log?: (line: string) => void }} options
+ * Answers GET and HEAD only (405 with `Allow: GET, HEAD` otherwise), requests whose Host is this
+ * server only (421 otherwise: `isOwnHost`), 400 for a path with malformed %-encoding, and serves a
+ * static route (`staticRoutes`) only from inside its directory (403 otherwise: `isInside`).
+ * @param {{ port?: number, host?: string, watch?: boolean, cache?: boolean, log?: (line: string) => void, site?: Map<string, Uint8Array> }} options
  *   port 0 picks a free one; `log` receives build errors and rebuild notes (default console.error).
  *   `cache` (only without watch; default false): reuse the build in `cacheDir` when none of its
  *   inputs changed since, else build and store it there. Callers that share the cache must not
- *   run at the same time (the browser tests hold a lock, test/browser/chromium.mjs).
+ *   run at the same time (the browser tests hold a lock, test/browser/chromium.mjs). `site`: serve
+ *   these files (path relative to the site root -> contents) instead of building (tests of the HTTP
+ *   layer; `watch` and `cache` are then ignored).
  * @returns {Promise<{ url: string, stop: () => Promise<void>, builds: () => number }>} url ends with
  *   '/'; `builds()` counts finished builds (first included), for tests that wait for a rebuild.
  * @throws Error if the first build fails without `watch` (its esbuild errors), or the port cannot be bound.
@@ -107,7 +143,12 @@ export async function startServer({
   watch = true,
   cache = false,
   log = (line) => console.error(line),
+  site = undefined,
 } = {}) {
+  if (site !== undefined) {
+    watch = false;
+    cache = false;
+  }
   /** Built files: path relative to the site root ('lab-orbits/main.js') -> contents. */
   let files = new Map();
   let builds = 0;
@@ -160,7 +201,7 @@ export async function startServer({
     ctx = next;
     await old?.dispose();
   };
-  const cached = cache && !watch ? readCache(cacheDir) : null;
+  const cached = site ?? (cache && !watch ? readCache(cacheDir) : null);
   if (cached) {
     files = cached;
     builds = 1;
@@ -233,8 +274,24 @@ export async function startServer({
 
   const server = createServer((req, res) => {
     try {
+      if (!METHODS.includes(req.method ?? '')) {
+        res.writeHead(405, { allow: METHODS.join(', '), 'content-type': TYPES['.txt'] });
+        res.end(`method not allowed: ${req.method}`);
+        return;
+      }
+      const listening = server.address();
+      if (!isOwnHost(req.headers.host, host, typeof listening === 'object' && listening ? listening.port : port)) {
+        send(res, 421, TYPES['.txt'], 'misdirected request: this server answers only for its own address (localhost)');
+        return;
+      }
       const url = new URL(req.url ?? '/', 'http://localhost');
-      const pathname = decodeURIComponent(url.pathname);
+      let pathname;
+      try {
+        pathname = decodeURIComponent(url.pathname);
+      } catch {
+        send(res, 400, TYPES['.txt'], `bad request: malformed %-encoding in ${url.pathname}`);
+        return;
+      }
       for (const [prefix, dir] of Object.entries(staticRoutes)) {
         if (pathname === prefix.slice(0, -1)) {
           res.writeHead(301, { location: prefix + url.search });
@@ -243,7 +300,7 @@ export async function startServer({
         }
         if (!pathname.startsWith(prefix)) continue;
         const file = normalize(join(dir, pathname.slice(prefix.length)));
-        if (!file.startsWith(resolve(dir))) {
+        if (!isInside(file, dir)) {
           send(res, 403, TYPES['.txt'], 'forbidden');
           return;
         }
