@@ -34,16 +34,19 @@ export const CONTROL = Object.freeze({
   IDS: 9,
   NARRAYS: 10,
   ARRAYS: 11,
-  /** Most arrays a kernel takes. */
-  MAX_ARRAYS: 48,
-  /** First slot of the ranges' bounds: thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
-  BOUNDS: 59,
-  /** Microseconds an idle worker watches `GEN` before it blocks in Atomics.wait (ThreadPool.idleSpin). */
-  SPIN: 124,
+  /**
+   * Most arrays a kernel takes: room for the ball narrowphase on 16 threads (11 inputs, the buffer's
+   * 10 fields, and 10 more per thread after the first: 171).
+   */
+  MAX_ARRAYS: 176,
+  /** First slot of the ranges' bounds (ARRAYS + MAX_ARRAYS): thread i runs [ctl[BOUNDS + i], ctl[BOUNDS + i + 1]) (balance.ts). */
+  BOUNDS: 187,
+  /** Microseconds an idle worker watches `GEN` before it blocks in Atomics.wait (ThreadPool.idleSpin); after 65 bounds. */
+  SPIN: 252,
   /** First slot of the workers' acknowledgements: worker i writes the generation it took into ACK + i. */
-  ACK: 125,
+  ACK: 253,
   /** Length of the control array (room for the acknowledgements of 64 threads). */
-  LENGTH: 125 + 64,
+  LENGTH: 253 + 64,
 });
 
 /** Commands in `CONTROL.CMD`. */
@@ -78,7 +81,7 @@ export type PoolMessage =
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {
-  var GEN = 0, CMD = 1, KERNEL = 2, PENDING = 3, ERROR = 4, EXPECT = 5, READY = 6, DEAD = 7, IDS = 9, NARRAYS = 10, ARRAYS = 11, BOUNDS = 59, SPIN = 124, ACK = 125;
+  var GEN = ${CONTROL.GEN}, CMD = ${CONTROL.CMD}, KERNEL = ${CONTROL.KERNEL}, PENDING = ${CONTROL.PENDING}, ERROR = ${CONTROL.ERROR}, EXPECT = ${CONTROL.EXPECT}, READY = ${CONTROL.READY}, DEAD = ${CONTROL.DEAD}, IDS = ${CONTROL.IDS}, NARRAYS = ${CONTROL.NARRAYS}, ARRAYS = ${CONTROL.ARRAYS}, BOUNDS = ${CONTROL.BOUNDS}, SPIN = ${CONTROL.SPIN}, ACK = ${CONTROL.ACK};
   var RUN = 0, SYNC = 1, QUIT = 2;
   var arrays = [], have = 0, ctl = null, params = null, results = null, finished = null, errorText = null, index = 0, seen = 0, waiting = false, args = [];
   var clock = globalThis.performance;
