@@ -34,6 +34,8 @@ const RULES: ReadonlyMap<string, Rule> = new Map<string, Rule>([
   ['world.h', positive],
   ['world.integrator', (v) => ((INTEGRATOR_NAMES as readonly unknown[]).includes(v) ? null : 'an integrator name')],
   ['world.steps', count],
+  // The clock runs from 0 up: a negative time is no state a world reaches (and drives time-dependent forces).
+  ['world.time', nonNegative],
   ['world.rng.a', int32],
   ['world.rng.b', int32],
   ['world.rng.c', int32],
@@ -42,6 +44,7 @@ const RULES: ReadonlyMap<string, Rule> = new Map<string, Rule>([
   ['world.laws.gravitySoftening', nonNegative],
   ['world.laws.electricSoftening', nonNegative],
   ['world.laws.wind.modes', integer(0, MAX_WIND_MODES)],
+  ['world.laws.wind.gustOmega', nonNegative],
   ['world.collision.settings.solverSubsteps', integer(1, Math.max(16, MAX_AUTO_SUBSTEPS))],
   ['world.collision.settings.solverIterations', integer(1, 50)],
   ['world.collision.settings.relaxIterations', integer(0, 50)],
@@ -54,6 +57,8 @@ const RULES: ReadonlyMap<string, Rule> = new Map<string, Rule>([
   ],
   ['world.joints.settings.iterations', integer(0, 100)],
   ['world.cloth.substeps', integer(0, 1000)],
+  // The links' version the cloth solver last prepared for; -1 before its first preparation.
+  ['world.cloth.preparedVersion', integer(-1, Number.MAX_SAFE_INTEGER)],
   ['world.cloth.tearQ', (v) => (isNumber(v) && v >= 0 ? null : 'a number >= 0 (Infinity: no tearing)')],
 ]);
 
@@ -63,12 +68,22 @@ const COUNT_KEY = /^(count|size|capacity|head|budget|stamp|epoch|version|built)$
 /**
  * Checks every scalar of a snapshot's state tree (`state`, and each registered external state under
  * its name): the rules above by path, counts (COUNT_KEY) as integers >= 0 and at most their object's
- * `capacity`, every other number finite.
+ * `capacity`, every other number finite where FINITE says so, and each scalar of the type the target
+ * world holds at the same path (`world`: a number stays a number, a boolean a boolean, a string a
+ * string; null only where the world holds null), so an edited snapshot cannot put null or a string
+ * where the engine reads a number.
  * @throws RangeError `restore: snapshot's <path> must be <rule>, got <value>`.
  */
-export function checkSnapshotValues(state: unknown, external: Record<string, unknown>): void {
-  walk(state, 'world');
-  for (const [name, enc] of Object.entries(external)) walk(enc, name);
+export function checkSnapshotValues(state: unknown, external: Record<string, unknown>, world?: object): void {
+  walk(state, 'world', world);
+  for (const [name, enc] of Object.entries(external)) walk(enc, name, undefined);
+}
+
+/** The type a live value's encoding must have, or undefined where any is allowed (no live value, objects). */
+function liveType(live: unknown): string | undefined {
+  if (live === null) return 'null';
+  const t = typeof live;
+  return t === 'number' || t === 'boolean' || t === 'string' ? t : undefined;
 }
 
 /** The number an encoded scalar stands for (see Writer.value: non-finite numbers and -0 are tagged). */
@@ -84,9 +99,13 @@ function fail(path: string, rule: string, v: unknown): never {
   throw new RangeError(`restore: snapshot's ${path} must be ${rule}, got ${describe(v)}`);
 }
 
-function walk(e: unknown, path: string): void {
+function walk(e: unknown, path: string, live: unknown): void {
   if (typeof e !== 'object' || e === null || Array.isArray(e) || (e as { $t?: unknown }).$t === 'n') {
-    check(scalar(e), path, path.slice(path.lastIndexOf('.') + 1));
+    const v = scalar(e);
+    const want = liveType(live);
+    // null stands for a value the world keeps empty (a lazily made store): allowed where an object lives.
+    if (want !== undefined && want !== (v === null ? 'null' : typeof v)) fail(path, `a ${want} (as the world holds)`, v);
+    check(v, path, path.slice(path.lastIndexOf('.') + 1));
     return;
   }
   const t = (e as { $t?: unknown }).$t;
@@ -94,7 +113,8 @@ function walk(e: unknown, path: string): void {
   if (t === 'o') {
     if (typeof v !== 'object' || v === null || Array.isArray(v)) fail(path, 'an encoded object', v);
     const o = v as Record<string, unknown>;
-    for (const [key, x] of Object.entries(o)) walk(x, `${path}.${key}`);
+    const inner = typeof live === 'object' && live !== null && !ArrayBuffer.isView(live) ? (live as Record<string, unknown>) : undefined;
+    for (const [key, x] of Object.entries(o)) walk(x, `${path}.${key}`, inner === undefined ? undefined : inner[key]);
     // A count of rows is at most the rows there is room for.
     const cap = scalar(o.capacity);
     if (typeof cap === 'number') {
@@ -111,9 +131,9 @@ function walk(e: unknown, path: string): void {
     for (const x of v as unknown[]) {
       if (t === 'm') {
         if (!Array.isArray(x) || x.length !== 2) fail(path, 'a list of [key, value] pairs', x);
-        walk(x[0], `${path} (map key)`);
-        walk(x[1], `${path} (map value)`);
-      } else walk(x, `${path}[]`);
+        walk(x[0], `${path} (map key)`, undefined);
+        walk(x[1], `${path} (map value)`, undefined);
+      } else walk(x, `${path}[]`, undefined);
     }
   }
   // Typed arrays and other tags: checked by the reader.

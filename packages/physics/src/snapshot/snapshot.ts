@@ -1671,7 +1671,7 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     throw new RangeError(`${where}: snapshot is damaged: its header lacks the world's state`);
   }
   const state = h.state.v as Record<string, Encoded>;
-  checkSnapshotValues(h.state, h.external);
+  checkSnapshotValues(h.state, h.external, world);
   for (const key of Object.keys(world)) {
     if (!NOT_STATE.has(key) && !(key in state))
       throw new RangeError(`${where}: snapshot has no world.${key} (it was made by another version of bitphysics)`);
