@@ -60,7 +60,7 @@ export default defineConfig({
           hookTimeout: 600_000,
           // One more try for a failed browser test, kept as a safety net. Every page shares one
           // software-rendered GPU process (SwiftShader). The known causes of first-attempt failures
-          // are handled where they arise: pages pace their frames to the GPU (games/shared/frame-pacer.ts),
+          // are handled where they arise: pages pace their frames to the GPU (packages/game-kit/src/frame-pacer.ts),
           // a page stuck at its start is reopened (test/browser/harness.ts STUCK_MS), a page opened in
           // a test is closed when it ends, and input tests wait on the game's state, not the clock.
           // With those, five full browser lanes at load 3 to 20 (2026-11-22) needed no retry (a page

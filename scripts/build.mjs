@@ -74,7 +74,7 @@ export function siteOptions({ minify = false } = {}) {
     minify,
     loader: { '.html': 'copy', '.png': 'copy', '.jpg': 'copy', '.svg': 'copy' },
     // Runs first on every page: the locale guard and the error box for anything thrown (also at import time).
-    inject: [join(games, 'shared', 'page-errors.ts')],
+    inject: [join(root, 'packages', 'game-kit', 'src', 'page-errors.ts')],
     logLevel: 'warning',
   };
 }
@@ -110,12 +110,13 @@ export async function buildBench() {
 }
 
 /** The library packages whose ESM bundles `buildPackages` writes, dependencies before dependants. */
-export const libraryPackages = ['physics', 'render-common', 'render-pixi', 'render-three'];
+export const libraryPackages = ['physics', 'render-common', 'render-pixi', 'render-three', 'game-kit'];
 
 /**
  * Builds each library package into its dist/ (emptied first): the ESM bundles, one per entry of its
  * package.json `exports` map (the entry's `bitphysics-source` file bundled to its `default` file, e.g.
- * src/index.ts -> dist/index.js, src/validate.ts -> dist/validate.js, every package import external),
+ * src/index.ts -> dist/index.js, src/validate.ts -> dist/validate.js, every package import external;
+ * code shared by several entries in dist/chunks/),
  * and the declarations with their maps (each src/ file gets a dist/ .d.ts and .d.ts.map, by tsc with
  * the package's tsconfig.build.json). Declarations are compiled without the `bitphysics-source`
  * condition, so a package's imports of another resolve to that package's dist/ declarations, as
@@ -130,13 +131,22 @@ export async function buildPackages({ names = libraryPackages } = {}) {
     if (!existsSync(manifest)) continue;
     rmSync(join(dir, 'dist'), { recursive: true, force: true });
     const exportsMap = JSON.parse(readFileSync(manifest, 'utf8')).exports ?? {};
+    // Every entry in one build: with more than one, the code they share goes into chunks
+    // (dist/chunks/), so a module's state (a singleton, a registry) exists once whichever entries a
+    // user imports.
+    const entryPoints = {};
     for (const entry of Object.values(exportsMap)) {
       const source = entry?.['bitphysics-source'];
       const output = entry?.default;
       if (typeof source !== 'string' || typeof output !== 'string' || !existsSync(join(dir, source))) continue;
+      entryPoints[output.replace(/^\.\/dist\//, '').replace(/\.js$/, '')] = join(dir, source);
+    }
+    if (Object.keys(entryPoints).length > 0) {
       await esbuild.build({
-        entryPoints: [join(dir, source)],
-        outfile: join(dir, output),
+        entryPoints,
+        outdir: join(dir, 'dist'),
+        splitting: Object.keys(entryPoints).length > 1,
+        chunkNames: 'chunks/[name]-[hash]',
         bundle: true,
         format: 'esm',
         platform: 'neutral',

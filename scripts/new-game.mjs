@@ -1,3 +1,5 @@
+// `npm run new-game -- <folder> [--title "Title"]`: a path (with a slash, e.g. ../my-game or
+// /tmp/my-game) scaffolds a standalone project there, outside this repository (scripts/new-project.mjs).
 // `npm run new-game -- <name> [--title "Title"]`: scaffolds games/<name>/ from scripts/templates/game
 // (scene.ts: a pure seeded scene builder; main.ts: the page on the shared shell with a lil-gui panel,
 // pause, FPS, window.game and the ready flag; index.html; game.json; a placeholder thumbnail.png)
@@ -8,6 +10,7 @@ import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { deflateSync } from 'node:zlib';
 import { root } from './build.mjs';
+import { newProject } from './new-project.mjs';
 
 /** Where the template's files are. */
 export const templateDir = join(root, 'scripts', 'templates', 'game');
@@ -126,15 +129,24 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
   const title = titleAt >= 0 ? args[titleAt + 1] : undefined;
   const names = args.filter((a, i) => !a.startsWith('--') && (titleAt < 0 || i !== titleAt + 1));
   if (names.length !== 1) {
-    console.error('usage: npm run new-game -- <name> [--title "Title"]   (name: lower-case words joined by dashes)');
+    console.error(
+      'usage: npm run new-game -- <folder> [--title "Title"]   (a path outside this repository: a standalone project)\n' +
+        '       npm run new-game -- <name> [--title "Title"]     (lower-case words joined by dashes: games/<name>)',
+    );
     process.exit(2);
   }
+  const arg = names[0];
   try {
-    const { dir, test, files } = newGame(names[0], { title });
-    for (const f of files) console.log(`wrote ${f.slice(root.length + 1)}`);
-    console.log(
-      `\nnext: npm start, then open /${names[0]}/; edit ${dir.slice(root.length + 1)}/scene.ts and main.ts; npx vitest run ${test.slice(root.length + 1)}`,
-    );
+    if (/[\\/]/.test(arg)) {
+      const { dir } = await newProject(arg, { title });
+      console.log(`wrote a standalone game project in ${dir}\n\nnext:\n  cd ${dir}\n  npm install\n  npm start`);
+    } else {
+      const { dir, test, files } = newGame(arg, { title });
+      for (const f of files) console.log(`wrote ${f.slice(root.length + 1)}`);
+      console.log(
+        `\nnext: npm start, then open /${arg}/; edit ${dir.slice(root.length + 1)}/scene.ts and main.ts; npx vitest run ${test.slice(root.length + 1)}`,
+      );
+    }
   } catch (error) {
     console.error(error instanceof Error ? error.message : error);
     process.exit(1);

@@ -11,10 +11,10 @@
  * Every ball is one instance of a single InstancedMesh (one draw call, one more for the shadow map).
  */
 
+import { createPanel, flagParam, numberParam, seedParam } from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld } from '@bitphysics/physics';
 import { BufferAttribute, BufferGeometry, Line, LineDashedMaterial, Mesh, MeshBasicMaterial, SphereGeometry, Vector3 } from 'three';
-import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
-import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
 import {
   applyGravity,
   applyMaterial,

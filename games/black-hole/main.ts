@@ -19,10 +19,10 @@
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 
+import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '../shared/index';
-import { startPixiGame } from '../shared/pixi';
 import { canThrust, type LevelRun, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {

@@ -9,11 +9,11 @@
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 
+import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '@bitphysics/game-kit';
+import { enableMouseDrag } from '@bitphysics/game-kit/drag';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { addBox, createPhysicsWorld, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { enableMouseDrag } from '../shared/drag';
-import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '../shared/index';
-import { startPixiGame } from '../shared/pixi';
 import {
   applyDrag,
   applyGravity,

@@ -10,8 +10,6 @@
  * URL: ?level=1..4, ?seed=S.
  */
 
-import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf, step } from '@bitphysics/physics';
-import { Graphics, Text } from 'pixi.js';
 import {
   createActionButton,
   createPanel,
@@ -22,9 +20,11 @@ import {
   pointerOnCanvas,
   type SoundMaterial,
   seedParam,
-} from '../shared/index';
-import { createReadout } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
+} from '@bitphysics/game-kit';
+import { createReadout } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf, step } from '@bitphysics/physics';
+import { Graphics, Text } from 'pixi.js';
 import {
   buildLevel,
   hasFallen,

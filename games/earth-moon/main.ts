@@ -11,6 +11,8 @@
  * URL: ?timeScale=days-per-second (0..30), ?follow=barycentre|earth|moon, ?size=1..20, ?trails=0|1, ?texture=256..2048.
  */
 
+import { choiceParam, createPanel, flagParam, numberParam } from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, step, totalEnergy } from '@bitphysics/physics';
 import {
   AdditiveBlending,
@@ -27,8 +29,6 @@ import {
   SRGBColorSpace,
   Vector3,
 } from 'three';
-import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
-import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 import {
   buildEarthMoon,
   configureStep,

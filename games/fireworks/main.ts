@@ -18,13 +18,13 @@
  * 2 threads at every count measured, so today the threads do not speed this page up).
  *
  * The show itself (scene, launches, bursts, auto-show) is DOM-free in ./show.ts.
- * Sound (../shared/sound): a whoosh per launch, a bang per burst, a crackle when sparks burst again.
+ * Sound (@bitphysics/game-kit/sound): a whoosh per launch, a bang per burst, a crackle when sparks burst again.
  */
 
+import { choiceParam, createPanel, flagParam, getSound, numberParam, plural, seedParam } from '@bitphysics/game-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, disposeWorld, type PhysicsWorld, Rng, slotOf, stateHash, threadsReady } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, flagParam, getSound, numberParam, plural, seedParam } from '../shared/index';
-import { startPixiGame } from '../shared/pixi';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   buildFireworks,

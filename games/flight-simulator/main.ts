@@ -12,6 +12,8 @@
  * URL: ?seed=n, ?rings=n (1..30).
  */
 
+import { createButtonBar, createPanel, createStick, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import { startThreeGame } from '@bitphysics/game-kit/three';
 import {
   AIRCRAFT,
   AIRCRAFT_TRIM_SPEED,
@@ -46,8 +48,6 @@ import {
   Vector3,
 } from 'three';
 import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
-import { createButtonBar, createPanel, createStick, getSound, numberParam, pageLayout, seedParam } from '../shared/index';
-import { startThreeGame } from '../shared/three';
 
 const params = {
   seed: seedParam(),

@@ -10,13 +10,13 @@
  * ?strength (vortex, N), ?seed.
  */
 
+import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, exposeLive } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import { type Point2, PointLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, exposeLive } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   type AttractorField,
   addAttractor,

@@ -15,12 +15,12 @@
  * ?autoOpen= (m, 0..5000; 0 off), ?tethered.
  */
 
+import { choiceParam, createPanel, flagParam, numberParam, type Panel, type PanelControl } from '@bitphysics/game-kit';
+import { createPlotDock, createStatusLine, dashedLine, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import type { Plot } from '@bitphysics/game-kit/plot';
 import { createPhysicsWorld, type PhysicsWorld, setMass, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { choiceParam, createPanel, flagParam, numberParam, type Panel, type PanelControl } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import type { Plot } from '../shared/plot';
 import {
   airDensity,
   applyWind,

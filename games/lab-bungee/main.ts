@@ -11,13 +11,13 @@
  * ?mass (20-200 kg).
  */
 
+import { createPanel, numberParam } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import { createPhysicsWorld, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam } from '../shared/index';
-import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { equilibriumStretch, freeFallHeight, freeFallTime, lowestStretch } from './exact';
 import { BRIDGE_HEIGHT, BUNGEE_DEFAULTS, type BungeeHandles, buildBungee, bungeeWorldOptions, GRAVITY, JUMPER_RADIUS } from './scene';
 

@@ -8,6 +8,11 @@
  * past the tear strain break. Keys: P pause, N step, R reset. URL: ?size (4-64 points a side),
  * ?wind (0-20 m/s), ?tear (0.05-2).
  */
+
+import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   type Cloth,
   createCloth,
@@ -20,10 +25,6 @@ import {
   slotOf,
 } from '@bitphysics/physics';
 import { ClothLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 
 const USAGE = 'Accepted: size 4-64 points a side; wind 0-20 m/s; tear 0.05-2 (strain).';
 const url = readUrlParams(

@@ -10,11 +10,19 @@
  * ?speed= (m/s, 0.1..20), ?E= (V/m, -5..5), ?integrator=<name>, ?substeps= (1..64).
  */
 
+import { choiceParam, createPanel, numberParam } from '@bitphysics/game-kit';
+import {
+  createPlotDock,
+  createStatusLine,
+  dashedLine,
+  plotReserve,
+  readUrlParams,
+  scaleFloor,
+  scaleSeries,
+} from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, step } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   buildCyclotron,
   type CyclotronHandles,

@@ -11,6 +11,9 @@
  * ?integrator=<name>, ?substeps= (1..64), ?lines=0|1.
  */
 
+import { choiceParam, createPanel, flagParam, numberParam, plural, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   INTEGRATOR_NAMES,
@@ -22,9 +25,6 @@ import {
   step,
 } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { choiceParam, createPanel, flagParam, numberParam, plural, pointerOnCanvas } from '../shared/index';
-import { createPlotDock, createStatusLine, plotReserve, readUrlParams, scaleFloor, scaleSeries } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   addCharge,
   BOX,

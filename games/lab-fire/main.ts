@@ -8,13 +8,13 @@
  * URL: ?intensity (0-3), ?wind (-6..6 m/s), ?smoke=0|1, ?seed.
  */
 
+import { createPanel, flagParam, numberParam, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { ParticleLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, flagParam, numberParam, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   createFire,
   FIRE_LIFETIMES,

@@ -10,11 +10,11 @@
  * ?track=light|medium|heavy|box.
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, setPosition, setVelocity, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createPlotDock, createStatusLine, dashedLine, plotReserve, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   BALL_RADIUS,
   BODY_KINDS,

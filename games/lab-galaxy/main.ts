@@ -21,6 +21,10 @@
  * serves it; otherwise one thread is used and the readout says why).
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, createStepTimer, fmt } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   disposeWorld,
@@ -33,10 +37,6 @@ import {
 } from '@bitphysics/physics';
 import { type Point2, PointLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, createStepTimer, fmt } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 
 /** Real time a step stands for, s: the loop runs one step per 1/60 s; the world's dt is timeScale times it. */
 const REAL_STEP = 1 / 60;

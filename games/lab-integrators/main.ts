@@ -13,6 +13,10 @@
  * URL: ?dt (0.0005-0.2 s), ?e (0-0.95), ?speedup (1-20).
  */
 
+import { createPanel, numberParam } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   INTEGRATOR_NAMES,
   INTEGRATOR_ORDER,
@@ -24,10 +28,6 @@ import {
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
 import { conicRadius, type OrbitShape } from '../lab-orbits/exact';
-import { createPanel, numberParam } from '../shared/index';
-import { createLabDock, createReadout, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { createKeplerWorld, GM, type KeplerWorld, PERIOD, PLANET_RADIUS, SEMI_MAJOR_AXIS } from './scene';
 
 /** Colour of each scheme, in INTEGRATOR_NAMES order. */

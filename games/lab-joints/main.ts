@@ -9,14 +9,14 @@
  * R reset. URL: ?scene (pendulum, chain, bridge, car, ragdoll, windmill).
  */
 
+import { choiceParam, createPanel } from '@bitphysics/game-kit';
+import { enableMouseDrag } from '@bitphysics/game-kit/drag';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import { createPhysicsWorld, handleOf, jointAnchors, type PhysicsWorld, step as physicsStep, query, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { enableMouseDrag } from '../shared/drag';
-import { choiceParam, createPanel } from '../shared/index';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { buildScene, type JointScene, SCENE_NAMES, type SceneName } from './scenes';
 
 const USAGE = `Accepted: scene ${SCENE_NAMES.join(', ')}.`;

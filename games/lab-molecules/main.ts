@@ -9,13 +9,13 @@
  * N step, R reset. URL: ?count (10-2000), ?speed (0.1-10 m/s), ?radius (0.02-0.3 m).
  */
 
+import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import { createPhysicsWorld, kineticEnergy, type PhysicsWorld, step as physicsStep, slotOf } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { buildGas, GAS_DEFAULTS, type GasHandles, gasWorldOptions, MOLECULE_MASS, maxwellBoltzmann2D, measureSpeeds } from './scene';
 
 const USAGE = 'Accepted: count 10-2000; speed 0.1-10 m/s; radius 0.02-0.3 m.';

@@ -10,6 +10,10 @@
  * URL: ?count (2-8), ?lift (1-7), ?angle (5-80 deg).
  */
 
+import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   createPhysicsWorld,
   gravitationalPotentialEnergy,
@@ -20,10 +24,6 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { BALL_MASS, buildCradle, CRADLE_DEFAULTS, type CradleHandles, cradleWorldOptions, liftBalls } from './scene';
 
 const DEG = 180 / Math.PI;

@@ -11,6 +11,19 @@
  * URL: ?planets (1-8), ?gm (1-500 m^3/s^2), ?softening (0-3 m), ?integrator, ?seed.
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import {
+  createLabDock,
+  createReadout,
+  drawDashedLine,
+  drawnPosition,
+  fmt,
+  followView,
+  PathBuffer,
+  readUrlParams,
+} from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   createPhysicsWorld,
   INTEGRATOR_NAMES,
@@ -22,10 +35,6 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { conicRadius, keplerPeriod, type OrbitShape, orbitShape, semiMajorAxis, specificEnergy } from './exact';
 import {
   buildOrbits,

@@ -10,13 +10,13 @@
  * URL: ?length (0.2-20 m), ?amplitude (-179-179 deg), ?g (0.5-30 m/s^2), ?damping (0-5 N s/m).
  */
 
+import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import { createPhysicsWorld, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { largeAmplitudePeriod, smallAngle, smallAnglePeriod } from './exact';
 import { BOB_MASS, buildPendulum, PENDULUM_DEFAULTS, PENDULUM_RANGES, type PendulumHandles, pendulumWorldOptions } from './scene';
 

@@ -12,6 +12,19 @@
  * ?g, ?integrator. Bad values stop the page with a message naming the parameter.
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import {
+  createLabDock,
+  createReadout,
+  drawDashedLine,
+  drawnPosition,
+  fmt,
+  followView,
+  PathBuffer,
+  readUrlParams,
+} from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   contactCount,
   createPhysicsWorld,
@@ -22,10 +35,6 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, drawDashedLine, drawnPosition, fmt, followView, PathBuffer, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import { type KinematicState, type Launch, linearDragState, linearTerminalSpeed, noDragState, quadraticTerminalSpeed } from './exact';
 import {
   BALL_RADIUS,

@@ -8,10 +8,11 @@
  * Keys: 1-5 scene, Space act, G debug layer (contacts, joints, axes), P pause, N step, R reset.
  * URL: ?scene=tumble|stack|dominoes|top|ragdoll, ?dominoes=N, ?spin=rad/s, ?tip=the top's tip friction (0-1.2).
  */
+
+import { choiceParam, createPanel, numberParam, pageLayout } from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
 import { addBody, applyImpulse, createPhysicsWorld, type PhysicsWorld, step as physicsStep, spinKineticEnergy } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
-import { choiceParam, createPanel, numberParam, pageLayout } from '../shared/index';
-import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
 import {
   buildLab,
   DOMINO_SPACING,

@@ -7,10 +7,11 @@
  * Input: click drops a crate at the pointer; B drops one at the top. Keys: P pause, N single step,
  * R reset. URL: ?scene (incline, bouncing, colliding, torque, turbine), ?seed=S.
  */
+
+import { choiceParam, createPanel, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, fmt } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, setGravity, slotOf } from '@bitphysics/physics';
-import { choiceParam, createPanel, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, fmt } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
 import { buildScene, SCENE_NAMES, type SceneHandles, type SceneName, STAGE, spawnBox, worldOptions } from './scene';
 
 const params = {

@@ -11,11 +11,11 @@
  * ?mdot= (kg/s), ?drag=0|1, ?warp= (1..50).
  */
 
+import { choiceParam, createPanel, flagParam, numberParam } from '@bitphysics/game-kit';
+import { createPlotDock, createStatusLine, readUrlParams, trackHeldKeys } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, flagParam, numberParam } from '../shared/index';
-import { createPlotDock, createStatusLine, readUrlParams, trackHeldKeys } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   altitude,
   applyControls,

@@ -6,6 +6,12 @@
  * Input: drag the bob (or any rope point) to swing it (a mouse joint); click the rope to cut the link
  * there. Keys: P pause, N step, R reset. URL: ?segments (2-200), ?length (1-20 m), ?mass (0.1-20 kg).
  */
+
+import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { enableMouseDrag } from '@bitphysics/game-kit/drag';
+import { createLabDock, createReadout, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   addBody,
   addDistanceJoint,
@@ -19,11 +25,6 @@ import {
   slotOf,
 } from '@bitphysics/physics';
 import { RopeLayer, type WorldRect } from '@bitphysics/render-pixi';
-import { enableMouseDrag } from '../shared/drag';
-import { createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 
 const USAGE = 'Accepted: segments 2-200; length 1-20 m; mass 0.1-20 kg.';
 const url = readUrlParams(

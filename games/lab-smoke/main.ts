@@ -7,12 +7,12 @@
  * URL: ?rate (0-600 /s), ?wind (-10..10 m/s), ?turbulence (0-5 m/s), ?buoyancy (0-2), ?seed.
  */
 
+import { createPanel, numberParam, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, windAt } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, countParticles, exposeLive, fmt, followPointerWhileDown, particleCentroid } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   createSmoke,
   MAX_RATE,

@@ -8,13 +8,13 @@
  * URL: ?tool=grinder|welding, ?rate (0-1500 /s), ?angle (deg), ?spread (deg), ?speed (m/s), ?seed.
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, countParticles, exposeLive, hideBallLayer } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   configureSparks,
   createSparks,

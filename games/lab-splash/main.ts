@@ -9,13 +9,13 @@
  * URL: ?rain (0-40 drops/s), ?droplets (per m/s of impact, 0-20), ?restitution (0-1), ?seed.
  */
 
+import { createPanel, numberParam, plural, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, exposeLive, fmt, hideBallLayer } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Point2 } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, exposeLive, fmt, hideBallLayer } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   CLOUD_HEIGHT,
   createSplash,

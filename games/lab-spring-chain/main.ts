@@ -11,6 +11,10 @@
  * ?integrator.
  */
 
+import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createLabDock, createReadout, drawnPosition, drawSpring, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
+import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   addSpring,
   createPhysicsWorld,
@@ -27,10 +31,6 @@ import {
 } from '@bitphysics/physics';
 import type { Point2, WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { choiceParam, createPanel, numberParam, pointerOnCanvas } from '../shared/index';
-import { createLabDock, createReadout, drawnPosition, drawSpring, fmt, followView, readUrlParams } from '../shared/lab-kit';
-import { startPixiGame } from '../shared/pixi';
-import { createPlot } from '../shared/plot';
 import {
   BALL_RADIUS,
   buildChain,

@@ -10,13 +10,13 @@
  * URL: ?count (1-20000 stars), ?bh and ?wh (G M of the holes, m^3/s^2), ?horizon (m), ?drag (1/s), ?seed.
  */
 
+import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { createReadout, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { advanceSteps, exposeLive, fmt } from '@bitphysics/game-kit/particle-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { type Point2, PointLayer } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { createPanel, flagParam, numberParam, plural, pointerOnCanvas, seedParam } from '../shared/index';
-import { createReadout, readUrlParams } from '../shared/lab-kit';
-import { advanceSteps, exposeLive, fmt } from '../shared/particle-kit';
-import { startPixiGame } from '../shared/pixi';
 import {
   addStar,
   BLACK_HOLE_SOFTENING,

@@ -17,6 +17,9 @@
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip).
  */
 
+import { choiceParam, createButtonBar, createPanel, numberParam, pageLayout } from '@bitphysics/game-kit';
+import type { Plot } from '@bitphysics/game-kit/plot';
+import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import {
   addPlane,
   addSystem,
@@ -30,9 +33,6 @@ import {
 } from '@bitphysics/physics';
 import { VectorArrow } from '@bitphysics/render-three';
 import { BoxGeometry, Color, Float32BufferAttribute, MeshStandardMaterial, Vector3 } from 'three';
-import { choiceParam, createButtonBar, createPanel, numberParam, pageLayout } from '../shared/index';
-import type { Plot } from '../shared/plot';
-import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 import {
   buildRotatingCube,
   JUMP_IMPULSE,
@@ -324,7 +324,7 @@ pageLayout().side.append(box);
 // (headless Chromium under LANG=C.UTF-8 says 'en-US@posix'), so it is loaded lazily and skipped then.
 let plot: Plot | null = null;
 try {
-  const { createPlot } = await import('../shared/plot');
+  const { createPlot } = await import('@bitphysics/game-kit/plot');
   plot = createPlot({
     parent: box,
     title: 'ω in the body frame (rad/s)',

@@ -12,6 +12,8 @@
  * URL: ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name, ?date=ISO date.
  */
 
+import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import {
   createPhysicsWorld,
   INTEGRATOR_NAMES,
@@ -27,8 +29,6 @@ import {
   step,
 } from '@bitphysics/physics';
 import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
-import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '../shared/index';
-import { ORBIT_CONTROLS, startThreeGame } from '../shared/three';
 
 /** Scene units per AU. */
 const UNITS_PER_AU = 10;

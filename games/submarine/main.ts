@@ -9,6 +9,8 @@
  * Sound: the screw's hum follows the throttle, a chime for each beacon, a thump on the seabed.
  */
 
+import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   type PhysicsWorld,
@@ -22,8 +24,6 @@ import {
   submarine,
 } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
-import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '../shared/index';
-import { startPixiGame } from '../shared/pixi';
 
 const params = {
   seed: seedParam(),

@@ -11,6 +11,19 @@
  * URL: ?level=N, ?seed=S, ?debug.
  */
 
+import {
+  createActionButton,
+  createButtonBar,
+  createPanel,
+  flagParam,
+  forEachImpact,
+  getSound,
+  isTouchDevice,
+  numberParam,
+  pageLayout,
+  seedParam,
+} from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, isAlive, type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
 import { BodyDrag3D } from '@bitphysics/render-three';
 import {
@@ -28,19 +41,6 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import {
-  createActionButton,
-  createButtonBar,
-  createPanel,
-  flagParam,
-  forEachImpact,
-  getSound,
-  isTouchDevice,
-  numberParam,
-  pageLayout,
-  seedParam,
-} from '../shared/index';
-import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '../shared/three';
 import {
   buildWreckingBall,
   CLEAR_FRACTION,

@@ -1,9 +1,9 @@
 /**
- * games/shared createGameLoop in Node with a fake frame scheduler: steps per frame from real time,
+ * the game kit's createGameLoop in Node with a fake frame scheduler: steps per frame from real time,
  * alpha, pause (alpha 1, no steps), single steps, fps, error handling, bad options.
  */
 import { describe, expect, it } from 'vitest';
-import { createGameLoop } from '../../games/shared/loop';
+import { createGameLoop } from '../../packages/game-kit/src/loop';
 
 /** A fake requestAnimationFrame: `tick(ms)` runs the pending callback at time `now + ms`. */
 function fakeFrames() {

@@ -24,9 +24,10 @@
  *   expect(g.errors).toEqual([]);
  * });
  */
+
+import type { GameStats } from '@bitphysics/game-kit';
 import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { inject, onTestFinished } from 'vitest';
-import type { GameStats } from '../../games/shared/contract';
 import { acquireSiteLock, connectChromium, launchChromium, type RegistryEntry, readRegistry, startSite } from './chromium.mjs';
 import { decodePng, distinctColors } from './png';
 
@@ -433,7 +434,7 @@ export class GamePage {
    * Distinct colours (RGB) drawn on the first canvas matching `selector` (default 'canvas'): 1 for a
    * blank canvas, hundreds for a drawn scene. Reads the canvas in the page right after the game's
    * next animation frame (drawImage onto a 2D canvas: fast; for a game with a frame pacer, its next
-   * frame that drew, see games/shared/frame-pacer.ts); if that comes back blank (a canvas not
+   * frame that drew, see packages/game-kit/src/frame-pacer.ts); if that comes back blank (a canvas not
    * drawn from requestAnimationFrame, whose buffer was already presented) it falls back to an element
    * screenshot, decoded in Node, which always shows what is on screen.
    * @throws Error if there is no such canvas.
@@ -443,7 +444,7 @@ export class GamePage {
       async (sel: string) => {
         const canvas = document.querySelector(sel);
         if (!(canvas instanceof HTMLCanvasElement)) throw new Error(`no canvas matches ${sel}`);
-        // A game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame in which
+        // A game paces its frames to the GPU (packages/game-kit/src/frame-pacer.ts): an animation frame in which
         // it drew nothing leaves a presented, blank buffer to read. Its pacer counts drawn frames, so
         // wait (20 s at most) for an animation frame in which the count moved: the game's callback,
         // requested earlier, runs before this one in the same frame.

@@ -1,7 +1,7 @@
 /**
- * The games on a phone (390 x 844, touch): each one's on-screen controls (games/shared/touch-controls)
+ * The games on a phone (390 x 844, touch): each one's on-screen controls (packages/game-kit/src/touch-controls)
  * change the game. Fingers are real touch input (CDP touch events, so pointer capture and
- * `pointer: coarse` behave as on a phone). Also: the first tap starts the sound (games/shared/sound),
+ * `pointer: coarse` behave as on a phone). Also: the first tap starts the sound (packages/game-kit/src/sound),
  * the toolbar's buttons are at least 44 x 44 CSS px and its mute button is remembered.
  */
 import type { Page } from 'playwright-core';

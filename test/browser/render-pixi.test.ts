@@ -3,7 +3,7 @@
  * headless Chromium, hosted by the bouncing-balls page (window.game.renderer is a WorldRenderer).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { choiceParam, flagParam, numberParam } from '../../games/shared/params';
+import { choiceParam, flagParam, numberParam } from '../../packages/game-kit/src/params';
 import { parseColor, seededColor } from '../../packages/render-common/src/colors';
 import { Camera } from '../../packages/render-pixi/src/camera';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';

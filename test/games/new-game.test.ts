@@ -4,7 +4,8 @@
  * Chromium (ready flag, window.game, a drawn canvas, B drops a ball, no error). The README's "Build
  * your own game" blocks (```` ```ts file=game/... ````) are written into the new game and type-checked
  * with it. So that no other test sees a half-made game in games/, everything happens in a scratch
- * copy of the layout under dist/new-game-check/ (games/shared and test/browser's helpers linked in),
+ * copy of the layout under dist/new-game-check/ (test/browser's helpers linked in; the game kit comes
+ * from its workspace package, @bitphysics/game-kit),
  * removed afterwards; the generated test itself is type-checked there and runs unchanged in
  * test/browser/ when a user makes a game.
  */
@@ -37,7 +38,6 @@ beforeAll(async () => {
   rmSync(scratch, { recursive: true, force: true });
   mkdirSync(testDir, { recursive: true });
   mkdirSync(gamesDir, { recursive: true });
-  symlinkSync(join(repoRoot, 'games', 'shared'), join(gamesDir, 'shared'));
   for (const file of readdirSync(join(repoRoot, 'test', 'browser'))) {
     if (/\.(ts|mjs|d\.mts)$/.test(file) && !file.endsWith('.test.ts'))
       symlinkSync(join(repoRoot, 'test', 'browser', file), join(testDir, file));
@@ -78,7 +78,7 @@ describe('npm run new-game', () => {
       join(scratch, 'tsconfig.json'),
       JSON.stringify({
         extends: '../../tsconfig.base.json',
-        files: [`games/${NAME}/main.ts`, `test/browser/${NAME}.test.ts`, ...extra, '../../games/shared/assets.d.ts'],
+        files: [`games/${NAME}/main.ts`, `test/browser/${NAME}.test.ts`, ...extra, '../../packages/game-kit/src/assets.d.ts'],
       }),
     );
     const tsc = join(repoRoot, 'node_modules', 'typescript', 'bin', 'tsc');
@@ -99,7 +99,7 @@ describe('npm run new-game', () => {
       target: 'es2022',
       platform: 'browser',
       conditions: ['bitphysics-source'],
-      inject: [join(repoRoot, 'games', 'shared', 'page-errors.ts')],
+      inject: [join(repoRoot, 'packages', 'game-kit', 'src', 'page-errors.ts')],
       loader: { '.png': 'file' },
       logLevel: 'silent',
     });
@@ -127,7 +127,7 @@ describe('npm run new-game', () => {
       await page.waitForFunction(() => (window.game as unknown as Game).ballCount() === 6, null, { timeout: 10_000 });
       await page.waitForFunction(() => (window.game as unknown as Game).stats().steps > 2, null, { timeout: 10_000 });
       // Drawn: the canvas, read right after a frame the game drew, holds more than the background's
-      // colour. The game paces its frames to the GPU (games/shared/frame-pacer.ts): an animation frame
+      // colour. The game paces its frames to the GPU (packages/game-kit/src/frame-pacer.ts): an animation frame
       // in which it drew nothing leaves a blank buffer, so wait (20 s at most) for one in which its
       // pacer's count of drawn frames moved, as test/browser/harness.ts canvasColors does.
       const colors = await page.evaluate(async () => {

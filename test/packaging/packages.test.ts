@@ -17,7 +17,7 @@ import { pathToFileURL } from 'node:url';
 import { promisify } from 'node:util';
 import * as esbuild from 'esbuild';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchChromium, repoRoot } from '../browser/chromium.mjs';
+import { acquireSiteLock, launchChromium, repoRoot } from '../browser/chromium.mjs';
 import { readmeBlocks } from './readme-blocks';
 
 const run = promisify(execFile);
@@ -40,12 +40,15 @@ beforeAll(async () => {
   const { packPackages } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'pack.mjs')).href)) as {
     packPackages(options: { destination: string }): Promise<{ name: string; file: string }[]>;
   };
-  const tarballs = await packPackages({ destination: join(project, 'tarballs') });
+  // Packing rebuilds packages/*/dist: one test file at a time (new-project.test.ts packs too).
+  const release = await acquireSiteLock({ name: 'pack', timeoutMs: 170_000 });
+  const tarballs = await packPackages({ destination: join(project, 'tarballs') }).finally(release);
   expect(tarballs.map((t) => t.name)).toEqual([
     '@bitphysics/physics',
     '@bitphysics/render-common',
     '@bitphysics/render-pixi',
     '@bitphysics/render-three',
+    '@bitphysics/game-kit',
   ]);
   writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }, null, 2));
   await run(

@@ -4,9 +4,10 @@
  * Input: click drops a ball at the pointer; B drops one at the top. Keys: P pause, N single step,
  * R reset. URL: ?count=N (balls at the start, 0..500), ?seed=S.
  */
+
+import { createPanel, numberParam, pointerOnCanvas, seedParam } from '@bitphysics/game-kit';
+import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, setGravity } from '@bitphysics/physics';
-import { createPanel, numberParam, pointerOnCanvas, seedParam } from '../shared/index';
-import { startPixiGame } from '../shared/pixi';
 import { BOX, buildScene, type SceneHandles, spawnBall, worldOptions } from './scene';
 
 const params = {

@@ -29,7 +29,7 @@ export interface GameHandle {
 
 declare global {
   interface Window {
-    /** The running game, see `GameHandle` (games/shared/contract.ts). */
+    /** The running game, see `GameHandle` (contract.ts). */
     game?: GameHandle;
   }
 }

@@ -5,7 +5,7 @@
  */
 import { addMouseJoint, handleOf, isAlive, Not, type PhysicsWorld, query, removeJoint, setMouseTarget } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
-import { pointerOnCanvas } from './pointer';
+import { pointerOnCanvas } from './pointer.js';
 
 /** Options of `enableMouseDrag`. */
 export interface MouseDragOptions {

@@ -19,8 +19,8 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
 import type { Camera, Point2, WorldRect } from '@bitphysics/render-pixi';
 import type { Application, Graphics } from 'pixi.js';
-import { pageLayout } from './layout';
-import { createPlot, type Plot, type PlotOptions } from './plot';
+import { pageLayout } from './layout.js';
+import { createPlot, type Plot, type PlotOptions } from './plot.js';
 
 const STYLE_ID = 'bp-lab-style';
 const CSS = `
@@ -369,7 +369,7 @@ export interface PlotDock {
   /** The dock element. */
   readonly element: HTMLElement;
   /**
-   * Adds a live plot (see games/shared/plot.ts) sized to the side column: width up to 420 px
+   * Adds a live plot (see plot.ts) sized to the side column: width up to 420 px
    * (`PageLayout.sideWidth`), height split between `rows` plots in about 70% of the window's height;
    * 600 samples kept, redrawn every 10 (long dashed polylines are costly to draw under software WebGL).
    * @throws whatever createPlot throws (empty series, bad sizes).
@@ -478,7 +478,7 @@ export function createStatusLine(): { element: HTMLElement; set(text: string): v
 }
 
 /**
- * A plot series that keeps the y axis from zooming into rounding noise: games/shared/plot.ts has no
+ * A plot series that keeps the y axis from zooming into rounding noise: plot.ts has no
  * y-range option, and uPlot autoscales to the data, so a measured value that agrees with its exact
  * value to 1e-6 would fill the chart with noise. Push `scaleFloor(exact, fraction, sample)` into an
  * extra series drawn with `SCALE_SERIES` (invisible): it alternates between exact (1 + fraction) and

@@ -1,7 +1,7 @@
 /**
  * Particle-lab kit: the page pieces the seven particle labs of Ramtal and Dobre ch. 12 share
  * (lab-galaxy, lab-wormhole, lab-splash, lab-smoke, lab-fire, lab-sparks, lab-attractors), on top of
- * games/shared and the lab kit (./lab-kit), whose readout (`createReadout`),
+ * the game kit and the lab kit (./lab-kit), whose readout (`createReadout`),
  * number format (`fmt`) and URL-parameter error box (`readUrlParams`) they use as they are. Particle
  * counts, step timing, hiding the ball layer, click-or-drag input and test hooks only: no physics in here.
  */
@@ -9,8 +9,8 @@
 import { type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { WorldRenderer } from '@bitphysics/render-pixi';
 import { query } from 'bitecs';
-import { fmt as labFmt } from './lab-kit';
-import { pointerOnCanvas } from './pointer';
+import { fmt as labFmt } from './lab-kit.js';
+import { pointerOnCanvas } from './pointer.js';
 
 /** Formats `value` for the particle labs' readouts: the lab kit's `fmt`, at 3 significant digits by default. */
 export function fmt(value: number, digits = 3): string {

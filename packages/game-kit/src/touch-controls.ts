@@ -6,7 +6,7 @@
  * A button either holds a key (`key`: it sends the key's keydown when pressed and keyup when let go,
  * to `window`, so a game's own key handling runs unchanged) or calls `onPress` / `onRelease` / `onTap`.
  */
-import { pageLayout } from './layout';
+import { pageLayout } from './layout.js';
 
 /** Whether the device's main pointer is a finger (CSS `pointer: coarse`). */
 export function isTouchDevice(): boolean {

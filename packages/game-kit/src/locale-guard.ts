@@ -1,6 +1,6 @@
 /**
- * Import this module before anything that calls `Intl` with the browser's language: games/shared/plot.ts
- * imports it before uPlot, and every page gets it first through games/shared/page-errors.ts.
+ * Import this module before anything that calls `Intl` with the browser's language: ./plot.ts
+ * imports it before uPlot, and every page gets it first through ./page-errors.ts.
  *
  * uPlot builds `new Intl.NumberFormat(navigator.language)` when its module is evaluated. Chromium
  * started with a POSIX locale (LANG=C.UTF-8, as in headless containers) reports navigator.language

@@ -7,9 +7,9 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
 import { WorldRenderer, type WorldRendererOptions } from '@bitphysics/render-pixi';
 import { Application, type ColorSource } from 'pixi.js';
-import { createFramePacer, type FramePacer } from './frame-pacer';
-import { pageLayout } from './layout';
-import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
+import { createFramePacer, type FramePacer } from './frame-pacer.js';
+import { pageLayout } from './layout.js';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell.js';
 
 /** Options of `createPixiApp`. */
 export interface PixiAppOptions {

@@ -1,5 +1,5 @@
 // The locale guard must run before uPlot's module reads navigator.language (see ./locale-guard).
-import './locale-guard';
+import './locale-guard.js';
 import uPlot from 'uplot';
 import uplotCss from 'uplot/dist/uPlot.min.css' with { type: 'text' };
 

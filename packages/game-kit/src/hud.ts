@@ -1,4 +1,4 @@
-import { pageLayout } from './layout';
+import { pageLayout } from './layout.js';
 
 /** One line of the on-screen controls legend. */
 export interface ControlHint {

@@ -1,10 +1,10 @@
 import { type PhysicsWorld, step as physicsStep } from '@bitphysics/physics';
-import { exposeGame, type GameHandle, type GameStats, markReady } from './contract';
-import { type ControlHint, createHud, type Hud } from './hud';
-import { bindKeys, type KeyBinding } from './keys';
-import { ICONS, pageLayout } from './layout';
-import { createGameLoop, type GameLoop } from './loop';
-import { addMuteButton, getSound, type Sound } from './sound';
+import { exposeGame, type GameHandle, type GameStats, markReady } from './contract.js';
+import { type ControlHint, createHud, type Hud } from './hud.js';
+import { bindKeys, type KeyBinding } from './keys.js';
+import { ICONS, pageLayout } from './layout.js';
+import { createGameLoop, type GameLoop } from './loop.js';
+import { addMuteButton, getSound, type Sound } from './sound.js';
 
 /** Options of `createGameShell`. */
 export interface GameShellOptions {

@@ -1,5 +1,5 @@
 import GUI, { type Controller } from 'lil-gui';
-import { pageLayout } from './layout';
+import { pageLayout } from './layout.js';
 
 /** Keys of `P` whose values are numbers. */
 type NumberKey<P> = { [K in keyof P]: P[K] extends number ? K : never }[keyof P] & string;

@@ -11,10 +11,10 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { createOrbitControls, frameBox, type OrbitOptions, WorldRenderer3D, type WorldRenderer3DOptions } from '@bitphysics/render-three';
 import { ACESFilmicToneMapping, Color, PCFShadowMap, PerspectiveCamera, Scene, SRGBColorSpace, WebGLRenderer } from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { createFramePacer, type FramePacer } from './frame-pacer';
-import type { ControlHint } from './hud';
-import { pageLayout } from './layout';
-import { createRenderedShell, type GameShell, type GameShellOptions } from './shell';
+import { createFramePacer, type FramePacer } from './frame-pacer.js';
+import type { ControlHint } from './hud.js';
+import { pageLayout } from './layout.js';
+import { createRenderedShell, type GameShell, type GameShellOptions } from './shell.js';
 
 /** Options of `createThreeApp`. Every field optional; unknown fields are rejected. */
 export interface ThreeAppOptions {

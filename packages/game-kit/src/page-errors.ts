@@ -5,7 +5,7 @@
  * (an event handler), into a red box with the message, instead of a blank canvas.
  * The game loop catches its own errors and shows them in the HUD (./hud `showError`).
  */
-import './locale-guard';
+import './locale-guard.js';
 
 /** Messages the browser raises that are no failure of the page. */
 const BENIGN = [/ResizeObserver loop/];

@@ -1,0 +1,31 @@
+/**
+ * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
+ * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
+ * (fps, bodies, controls legend), the page layout (toolbar, info and side columns around the scene),
+ * lil-gui panels, URL parameters and pointer positions.
+ * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
+ */
+
+export type { GameHandle, GameStats } from './contract.js';
+export { exposeGame, markReady } from './contract.js';
+export type { ControlHint, Hud, HudOptions } from './hud.js';
+export { createHud, plural, touchGesture } from './hud.js';
+export type { ImpactListener } from './impacts.js';
+export { forEachImpact } from './impacts.js';
+export type { KeyBinding } from './keys.js';
+export { bindKeys } from './keys.js';
+export type { PageLayout } from './layout.js';
+export { COMPACT_MAX_HEIGHT, COMPACT_MAX_WIDTH, pageLayout } from './layout.js';
+export type { GameLoop, GameLoopOptions } from './loop.js';
+export { createGameLoop } from './loop.js';
+export type { ChoiceControl, Panel, PanelControl, PanelOptions, PlainControl, SliderControl } from './panel.js';
+export { createPanel } from './panel.js';
+export type { NumberParamOptions } from './params.js';
+export { choiceParam, flagParam, numberParam, seedParam } from './params.js';
+export { pointerOnCanvas } from './pointer.js';
+export type { GameShell, GameShellOptions } from './shell.js';
+export { createGameShell, SHELL_CONTROLS } from './shell.js';
+export type { EngineSound, Sound, SoundMaterial } from './sound.js';
+export { addMuteButton, getSound } from './sound.js';
+export type { ButtonBar, ButtonBarOptions, Stick, StickOptions, TouchButton } from './touch-controls.js';
+export { createActionButton, createButtonBar, createStick, isTouchDevice } from './touch-controls.js';

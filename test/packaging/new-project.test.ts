@@ -1,0 +1,106 @@
+/**
+ * `npm run new-game -- <folder outside the repository>` (scripts/new-project.mjs) as a user runs it:
+ * the standalone project is made in the system's temp folder, installed there with npm (the
+ * bitphysics packages from its vendor/ tarballs, everything else from the npm cache or registry:
+ * nothing resolves through this workspace), type-checked with its own tsconfig, built with its own
+ * `npm run build`, and served by its own `npm start`; the page must get ready in headless Chromium,
+ * draw, take a key (B drops a ball) and log no error.
+ */
+import { type ChildProcess, execFile, spawn } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { promisify } from 'node:util';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { acquireSiteLock, launchChromium, repoRoot } from '../browser/chromium.mjs';
+
+const run = promisify(execFile);
+let parent = '';
+let project = '';
+let server: ChildProcess | null = null;
+
+beforeAll(async () => {
+  parent = mkdtempSync(join(tmpdir(), 'bitphysics-new-project-'));
+  const { newProject } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'new-project.mjs')).href)) as {
+    newProject(dir: string, options?: { title?: string }): Promise<{ dir: string; files: string[] }>;
+  };
+  // Packing rebuilds packages/*/dist: one test file at a time (packages.test.ts packs too).
+  const release = await acquireSiteLock({ name: 'pack', timeoutMs: 170_000 });
+  project = (await newProject(join(parent, 'tower-game'), { title: 'Tower game' }).finally(release)).dir;
+  await run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--ignore-scripts', '--loglevel=error'], { cwd: project });
+}, 180_000);
+
+afterAll(() => {
+  server?.kill();
+  rmSync(parent, { recursive: true, force: true });
+});
+
+describe('a standalone game project from npm run new-game', () => {
+  it('refuses a folder inside the repository and a non-empty folder', async () => {
+    const { newProject } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'new-project.mjs')).href)) as {
+      newProject(dir: string): Promise<unknown>;
+    };
+    await expect(newProject(join(repoRoot, 'games', 'x'))).rejects.toThrow(/inside the bitphysics repository/);
+    await expect(newProject(project)).rejects.toThrow(/exists and is not empty/);
+  });
+
+  it('depends on the packed bitphysics packages, not on this workspace', () => {
+    const manifest = JSON.parse(readFileSync(join(project, 'package.json'), 'utf8')) as { dependencies: Record<string, string> };
+    for (const name of ['@bitphysics/physics', '@bitphysics/render-pixi', '@bitphysics/game-kit'])
+      expect(manifest.dependencies[name]).toMatch(/^file:vendor\/.+\.tgz$/);
+    // Installed as copies inside the project (npm extracts tarballs; a workspace link would be a symlink).
+    expect(existsSync(join(project, 'node_modules', '@bitphysics', 'game-kit', 'dist', 'pixi.js'))).toBe(true);
+  });
+
+  it('type-checks and builds with its own scripts', async () => {
+    await run('npm', ['run', 'typecheck', '--silent'], { cwd: project });
+    await run('npm', ['run', 'build', '--silent'], { cwd: project });
+    expect(existsSync(join(project, 'dist', 'main.js'))).toBe(true);
+    expect(existsSync(join(project, 'dist', 'index.html'))).toBe(true);
+  }, 120_000);
+
+  it('npm start serves the game: ready, drawn, B drops a ball, no error', async () => {
+    const started = spawn('npm', ['start', '--silent', '--', '--port', '0'], { cwd: project, stdio: ['ignore', 'pipe', 'pipe'] });
+    server = started;
+    const url = await new Promise<string>((resolveUrl, reject) => {
+      let out = '';
+      const timer = setTimeout(() => reject(new Error(`npm start printed no address: ${out}`)), 60_000);
+      const read = (chunk: Buffer) => {
+        out += chunk.toString();
+        const m = /http:\/\/[^\s]+/.exec(out);
+        if (m) {
+          clearTimeout(timer);
+          resolveUrl(m[0]);
+        }
+      };
+      started.stdout!.on('data', read);
+      started.stderr!.on('data', read);
+    });
+    const browser = await launchChromium();
+    try {
+      const page = await (await browser.newContext({ viewport: { width: 800, height: 500 }, locale: 'en-US' })).newPage();
+      const errors: string[] = [];
+      page.on('console', (m) => {
+        if (m.type() === 'error') errors.push(m.text());
+      });
+      page.on('pageerror', (e) => errors.push(e.message));
+      await page.goto(url);
+      await page
+        .waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 30_000 })
+        .catch((error: unknown) => {
+          throw new Error(`not ready; page errors: ${JSON.stringify(errors)}; ${String(error)}`);
+        });
+      type Game = { ballCount(): number; stats(): { steps: number } };
+      const before = await page.evaluate(() => (window as unknown as { game: Game }).game.ballCount());
+      await page.keyboard.press('b');
+      await page.waitForFunction((n) => (window as unknown as { game: Game }).game.ballCount() === n + 1, before, { timeout: 10_000 });
+      await page.waitForFunction(() => (window as unknown as { game: Game }).game.stats().steps > 2, null, { timeout: 10_000 });
+      expect(await page.locator('canvas').count()).toBe(1);
+      expect(errors).toEqual([]);
+    } finally {
+      await browser.close();
+      started.kill();
+    }
+  }, 120_000);
+});

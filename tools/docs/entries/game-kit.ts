@@ -1,0 +1,7 @@
+/**
+ * The game shell
+ *
+ * @packageDocumentation
+ * @module  fixed-step loop, keys, HUD, lil-gui panel, URL parameters, touch controls, sound and the error box, for game pages of your own.:@bitphysics/game-kit
+ */
+export * from '../../../packages/game-kit/src/index.js';
