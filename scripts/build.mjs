@@ -110,13 +110,12 @@ export async function buildBench() {
 }
 
 /** The library packages whose ESM bundles `buildPackages` writes, dependencies before dependants. */
-export const libraryPackages = ['physics', 'render-common', 'render-pixi', 'render-three', 'game-kit'];
+export const libraryPackages = ['physics', 'projects', 'render-common', 'render-pixi', 'render-three', 'game-kit'];
 
 /**
- * Builds each library package into its dist/ (emptied first): the ESM bundles, one per entry of its
- * package.json `exports` map (the entry's `bitphysics-source` file bundled to its `default` file, e.g.
- * src/index.ts -> dist/index.js, src/validate.ts -> dist/validate.js, every package import external;
- * code shared by several entries in dist/chunks/),
+ * Builds each library package into its dist/ (emptied first): one ES module a source file
+ * (src/a/b.ts -> dist/a/b.js, transpiled by esbuild, imports kept; the `exports` map's `default`
+ * files are among them),
  * and the declarations with their maps (each src/ file gets a dist/ .d.ts and .d.ts.map, by tsc with
  * the package's tsconfig.build.json). Declarations are compiled without the `bitphysics-source`
  * condition, so a package's imports of another resolve to that package's dist/ declarations, as
@@ -130,33 +129,25 @@ export async function buildPackages({ names = libraryPackages } = {}) {
     const manifest = join(dir, 'package.json');
     if (!existsSync(manifest)) continue;
     rmSync(join(dir, 'dist'), { recursive: true, force: true });
-    const exportsMap = JSON.parse(readFileSync(manifest, 'utf8')).exports ?? {};
-    // Every entry in one build: with more than one, the code they share goes into chunks
-    // (dist/chunks/), so a module's state (a singleton, a registry) exists once whichever entries a
-    // user imports.
-    const entryPoints = {};
-    for (const entry of Object.values(exportsMap)) {
-      const source = entry?.['bitphysics-source'];
-      const output = entry?.default;
-      if (typeof source !== 'string' || typeof output !== 'string' || !existsSync(join(dir, source))) continue;
-      entryPoints[output.replace(/^\.\/dist\//, '').replace(/\.js$/, '')] = join(dir, source);
-    }
-    if (Object.keys(entryPoints).length > 0) {
-      await esbuild.build({
-        entryPoints,
-        outdir: join(dir, 'dist'),
-        splitting: Object.keys(entryPoints).length > 1,
-        chunkNames: 'chunks/[name]-[hash]',
-        bundle: true,
-        format: 'esm',
-        platform: 'neutral',
-        target: 'es2022',
-        conditions,
-        packages: 'external',
-        sourcemap: true,
-        logLevel: 'warning',
-      });
-    }
+    // One JS module a source file (transpiled, not bundled): the package's module graph stays as
+    // written, so a user's bundler keeps only what the user's code reaches (tree shaking across
+    // files, with "sideEffects": false), and each module, with its state, exists once whichever
+    // entries of the `exports` map a page imports.
+    const sources = readdirSync(join(dir, 'src'), { recursive: true })
+      .map(String)
+      .filter((f) => f.endsWith('.ts') && !f.endsWith('.d.ts'))
+      .map((f) => join(dir, 'src', f));
+    await esbuild.build({
+      entryPoints: sources,
+      outdir: join(dir, 'dist'),
+      outbase: join(dir, 'src'),
+      bundle: false,
+      format: 'esm',
+      platform: 'neutral',
+      target: 'es2022',
+      sourcemap: true,
+      logLevel: 'warning',
+    });
     buildDeclarations(dir);
   }
 }

@@ -14,20 +14,8 @@
 
 import { createButtonBar, createPanel, createStick, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
-import {
-  AIRCRAFT,
-  AIRCRAFT_TRIM_SPEED,
-  type AircraftHandles,
-  aircraft,
-  aircraftLevelDrag,
-  createPhysicsWorld,
-  type PhysicsWorld,
-  Rng,
-  setBodyThrust,
-  setControlDeflection,
-  step,
-  terrainHeight,
-} from '@bitphysics/physics';
+import { createPhysicsWorld, type PhysicsWorld, Rng, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
+import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
   BoxGeometry,
   type BufferAttribute,

@@ -5,7 +5,7 @@
  * scheme at the chosen step (default RK4, 1 hour). A table compares each planet with the ephemeris
  * as the simulation runs: |r - r_ephemeris| / |r_ephemeris|, heliocentric.
  *
- * Units: AU, days, solar masses (the scene's; see packages/physics/src/scenes/solar-system.ts). One
+ * Units: AU, days, solar masses (the scene's; see packages/projects/src/solar-system.ts). One
  * scene unit is 0.1 AU. Time: the rate is simulated days per real second; each loop tick runs as many
  * steps of the chosen size as the rate needs.
  * Keys: P pause, N single step, R reset, [ ] slower / faster, T trails, E exaggerated sizes.
@@ -14,11 +14,8 @@
 
 import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
+import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, step } from '@bitphysics/physics';
 import {
-  createPhysicsWorld,
-  INTEGRATOR_NAMES,
-  type IntegratorName,
-  type PhysicsWorld,
   SOLAR_SYSTEM_BODIES,
   SOLAR_SYSTEM_EPOCH,
   SOLAR_SYSTEM_FLOOR,
@@ -26,8 +23,7 @@ import {
   type SolarSystemHandles,
   solarSystem,
   solarSystemErrors,
-  step,
-} from '@bitphysics/physics';
+} from '@bitphysics/projects';
 import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
 
 /** Scene units per AU. */

@@ -11,18 +11,8 @@
 
 import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import {
-  createPhysicsWorld,
-  type PhysicsWorld,
-  SUBMARINE,
-  SUBMARINE_NEUTRAL_FILL,
-  type SubmarineHandles,
-  seabedHeight,
-  setBallastTarget,
-  setBodyThrust,
-  step,
-  submarine,
-} from '@bitphysics/physics';
+import { createPhysicsWorld, type PhysicsWorld, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
+import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics } from 'pixi.js';
 
 const params = {

@@ -45,6 +45,7 @@ beforeAll(async () => {
   const tarballs = await packPackages({ destination: join(project, 'tarballs') }).finally(release);
   expect(tarballs.map((t) => t.name)).toEqual([
     '@bitphysics/physics',
+    '@bitphysics/projects',
     '@bitphysics/render-common',
     '@bitphysics/render-pixi',
     '@bitphysics/render-three',
@@ -138,6 +139,31 @@ describe('the packed packages in a fresh project', () => {
     expect(y).toBeGreaterThan(0);
     expect(y).toBeLessThan(3.3);
   }, 30_000);
+
+  it("the README's 2D example bundles small: the physics tree-shakes, no projects or astronomy-engine", async () => {
+    // The physics part of the 2D page, minified, as a user's esbuild makes it from the installed
+    // packages (pixi.js, bitecs and the renderer left out). The package ships one module a source
+    // file with "sideEffects": false, so only what the example reaches is kept. Bound: 400 KB
+    // (measured 370 KB when written; 466 KB while the package shipped one bundled file). The issue's
+    // goal is 200 KB: the step's stages reach every system (3D, joints, cloth, emitters) from any world.
+    const result = await esbuild.build({
+      absWorkingDir: project,
+      entryPoints: ['main.ts'],
+      bundle: true,
+      minify: true,
+      format: 'esm',
+      target: 'es2022',
+      write: false,
+      metafile: true,
+      external: ['pixi.js', 'bitecs', '@bitphysics/render-pixi'],
+      logLevel: 'silent',
+    });
+    const bytes = result.outputFiles[0]!.contents.byteLength;
+    const inputs = Object.keys(result.metafile.inputs);
+    console.log(`README 2D example, physics only, minified: ${(bytes / 1024).toFixed(1)} KB from ${inputs.length} modules`);
+    expect(inputs.filter((f) => /astronomy-engine|@bitphysics\/projects/.test(f))).toEqual([]);
+    expect(bytes).toBeLessThan(400 * 1024);
+  });
 
   it('bundle the pages with esbuild and run them in Chromium without an error', async () => {
     const out = join(project, 'site');

@@ -3,12 +3,8 @@
 // Euler's equation.
 
 import {
-  AIRCRAFT,
-  AIRCRAFT_TRIM_SPEED,
   addBody,
   addLiftingSurface,
-  aircraft,
-  aircraftLevelDrag,
   createPhysicsWorld,
   DEFAULT_LIFT_SLOPE,
   evaluateForces,
@@ -18,6 +14,7 @@ import {
   setTimeStep,
   step,
 } from '@bitphysics/physics';
+import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraft, aircraftLevelDrag } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 
 function run(world: PhysicsWorld, seconds: number): void {

@@ -2,18 +2,8 @@
 // project, graded by the goal (every planet within 1.5 times the point-mass floor after one
 // year from 2012-01-01 with RK4 at 1 h).
 
-import {
-  createPhysicsWorld,
-  type IntegratorName,
-  linearMomentum,
-  type PhysicsWorld,
-  SOLAR_SYSTEM_BODIES,
-  SOLAR_SYSTEM_PLANETS,
-  type SolarSystemHandles,
-  solarSystem,
-  solarSystemErrors,
-  step,
-} from '@bitphysics/physics';
+import { createPhysicsWorld, type IntegratorName, linearMomentum, type PhysicsWorld, step } from '@bitphysics/physics';
+import { SOLAR_SYSTEM_BODIES, SOLAR_SYSTEM_PLANETS, type SolarSystemHandles, solarSystem, solarSystemErrors } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 
 /**

@@ -1,19 +1,8 @@
 // The submarine scene and the ballast law against Archimedes' balance, the terminal speed of
 // quadratic drag (F = k v^2) and the hydrostatic trim balance.
 
-import {
-  addBody,
-  createPhysicsWorld,
-  type PhysicsWorld,
-  SUBMARINE,
-  SUBMARINE_NEUTRAL_FILL,
-  SUBMARINE_WATER_DENSITY,
-  setBallast,
-  setBallastTarget,
-  setBodyThrust,
-  step,
-  submarine,
-} from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, type PhysicsWorld, setBallast, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
+import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, submarine } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 
 /** A submerged hull 40 m down with both tanks at `fill`. */

@@ -1,12 +1,5 @@
-import {
-  createPhysicsWorld,
-  INTEGRATOR_NAMES,
-  type IntegratorName,
-  SOLAR_SYSTEM_PLANETS,
-  solarSystem,
-  solarSystemErrors,
-  step,
-} from '@bitphysics/physics';
+import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, step } from '@bitphysics/physics';
+import { SOLAR_SYSTEM_PLANETS, solarSystem, solarSystemErrors } from '@bitphysics/projects';
 import { sig } from '../scenes/format.js';
 import { medianStepMs, nsPerBodyStep } from './timing.js';
 import type { BenchStudy, StudyResult, StudyRunOptions } from './types.js';

@@ -26,8 +26,6 @@ export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; s
   [pyramid3D.name]: pyramid3D as SceneDefinition<{ count?: number; seed?: number }, unknown>,
 });
 
-export type { AircraftHandles, AircraftOptions } from './aircraft.js';
-export { AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraft, aircraftLevelDrag, terrainHeight } from './aircraft.js';
 export type { BallsInBoxHandles, BallsInBoxLayout, BallsInBoxOptions } from './balls-in-box.js';
 export { ballsInBox, ballsInBoxLayout } from './balls-in-box.js';
 export type { BoxPile3DHandles, BoxPile3DLayout, BoxPile3DOptions } from './box-pile-3d.js';
@@ -48,23 +46,6 @@ export type { PyramidHandles, PyramidLayout, PyramidOptions } from './pyramid.js
 export { pyramid, pyramidLayout } from './pyramid.js';
 export type { Pyramid3DHandles, Pyramid3DLayout, Pyramid3DOptions } from './pyramid-3d.js';
 export { pyramid3D, pyramid3DLayout } from './pyramid-3d.js';
-export type { SolarSystemBody, SolarSystemHandles, SolarSystemOptions, SolarSystemPlanet } from './solar-system.js';
-// The book's closing projects: exported builders, not in SCENES (the bench measures solar-system as a study).
-export {
-  AU,
-  DAY,
-  ephemerisHeliocentric,
-  ephemerisState,
-  SOLAR_SYSTEM_BODIES,
-  SOLAR_SYSTEM_EPOCH,
-  SOLAR_SYSTEM_FLOOR,
-  SOLAR_SYSTEM_PLANETS,
-  solarSystem,
-  solarSystemErrors,
-  solarSystemMass,
-} from './solar-system.js';
 export type { SpheresInBoxHandles, SpheresInBoxLayout, SpheresInBoxOptions } from './spheres-in-box.js';
 export { spheresInBox, spheresInBoxLayout } from './spheres-in-box.js';
-export type { SubmarineHandles, SubmarineOptions } from './submarine.js';
-export { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, seabedHeight, submarine } from './submarine.js';
 export type { SceneDefinition } from './types.js';

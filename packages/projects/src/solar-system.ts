@@ -1,4 +1,15 @@
 import {
+  addBody,
+  enableMutualGravity,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  type SceneDefinition,
+  setGravitation,
+  slotOf,
+} from '@bitphysics/physics';
+import { assertFinite, assertInRange, assertKnownKeys, assertPositive, describe } from '@bitphysics/physics/validate';
+import {
   type AstroTime,
   BaryState,
   Body,
@@ -8,14 +19,6 @@ import {
   Rotation_EQJ_ECL,
   type RotationMatrix,
 } from 'astronomy-engine';
-import { addBody } from '../bodies.js';
-import { enableMutualGravity } from '../forces/api.js';
-import { setGravitation } from '../forces/configure.js';
-import { slotOf } from '../handles.js';
-import { INTEGRATOR_NAMES, type IntegratorName } from '../integrators/names.js';
-import { assertFinite, assertInRange, assertKnownKeys, assertPositive, describe } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import type { SceneDefinition } from './types.js';
 
 /**
  * The solar system of the book's closing project (Ramtal and Dobre ch. 16), started from and checked

@@ -1,11 +1,16 @@
-import { addBody } from '../bodies.js';
-import { setBodyThrust } from '../forces/body-thrust.js';
-import { addLiftingSurface, DEFAULT_LIFT_SLOPE, dragCoefficient, liftCoefficient } from '../forces/lifting-surface.js';
-import { setInertia } from '../rigid.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertKnownKeys, assertPositive } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import type { SceneDefinition } from './types.js';
+import {
+  addBody,
+  addLiftingSurface,
+  DEFAULT_LIFT_SLOPE,
+  dragCoefficient,
+  liftCoefficient,
+  type PhysicsWorld,
+  Rng,
+  type SceneDefinition,
+  setBodyThrust,
+  setInertia,
+} from '@bitphysics/physics';
+import { assertFinite, assertKnownKeys, assertPositive } from '@bitphysics/physics/validate';
 
 /**
  * The book's flight simulator aircraft (Ramtal and Dobre ch. 16) in SI units, 3D, y up: a rigid body

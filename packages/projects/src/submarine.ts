@@ -1,12 +1,17 @@
-import { addBody } from '../bodies.js';
-import { addFluidRegion, setBuoyancy } from '../forces/api.js';
-import { setBallast } from '../forces/ballast.js';
-import { setBodyThrust } from '../forces/body-thrust.js';
-import { inertiaOfRectangle, setAngularDamping, setInertia } from '../rigid.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import type { SceneDefinition } from './types.js';
+import {
+  addBody,
+  addFluidRegion,
+  inertiaOfRectangle,
+  type PhysicsWorld,
+  Rng,
+  type SceneDefinition,
+  setAngularDamping,
+  setBallast,
+  setBodyThrust,
+  setBuoyancy,
+  setInertia,
+} from '@bitphysics/physics';
+import { assertFinite, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
 /**
  * The book's submarine (Ramtal and Dobre ch. 16) grown up, in SI units, 2D (x along the sea, y up,
