@@ -5,6 +5,7 @@
 // without a docstring fails the build (TypeDoc's notDocumented validation, warnings as errors).
 import { spawn } from 'node:child_process';
 import { existsSync } from 'node:fs';
+import { setPriority } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { root } from './build.mjs';
@@ -14,11 +15,12 @@ export const docsDir = join(root, 'dist', 'docs');
 
 /**
  * Runs TypeDoc once.
- * @param {{ quiet?: boolean }} options quiet: keep TypeDoc's output unless it fails.
+ * @param {{ quiet?: boolean, background?: boolean }} options quiet: keep TypeDoc's output unless it fails;
+ *   background: run TypeDoc at the lowest CPU priority (npm start builds the docs beside the gallery).
  * @returns {Promise<string>} docsDir.
  * @throws Error with TypeDoc's output if it fails (a type error, an undocumented export).
  */
-export function buildDocs({ quiet = false } = {}) {
+export function buildDocs({ quiet = false, background = false } = {}) {
   const tools = join(root, 'tools', 'docs');
   const typedoc = join(tools, 'node_modules', 'typedoc', 'bin', 'typedoc');
   if (!existsSync(typedoc)) return Promise.reject(new Error(`${typedoc} is missing: run npm install at the repository root`));
@@ -27,6 +29,13 @@ export function buildDocs({ quiet = false } = {}) {
       cwd: tools,
       stdio: quiet ? ['ignore', 'pipe', 'pipe'] : 'inherit',
     });
+    if (background && child.pid !== undefined) {
+      try {
+        setPriority(child.pid, 19); // lowest: the gallery's build and the games come first
+      } catch {
+        /* not permitted here: run at normal priority */
+      }
+    }
     let output = '';
     child.stdout?.on('data', (d) => {
       output += d;

@@ -37,6 +37,24 @@ const TYPES = {
  */
 export const staticRoutes = { '/docs/': docsDir };
 
+/**
+ * The API reference's build, while `npm start` makes it in the background: a page under /docs/ that
+ * is not there yet is answered with a page saying so (and reloading itself every 3 s) instead of a
+ * 404, and with the error if the build failed. `since` is the build's start (ms, Date.now()).
+ * @type {{ building: boolean, since: number, error: string | null }}
+ */
+export const docsBuild = { building: false, since: 0, error: null };
+
+/** The page /docs/ shows while its build runs (or after it failed). */
+function docsPendingPage() {
+  const seconds = Math.round((Date.now() - docsBuild.since) / 1000);
+  const body = docsBuild.error
+    ? `<h1>The API reference failed to build</h1><pre>${docsBuild.error.replace(/[<&]/g, (c) => (c === '<' ? '&lt;' : '&amp;'))}</pre><p>Run <code>npm run docs</code> to see the whole output.</p>`
+    : `<h1>The API reference is being built</h1><p>Started ${seconds} s ago (TypeDoc takes about 10 s on a quiet machine). This page reloads itself; the gallery is at <a href="/">/</a>.</p>`;
+  const refresh = docsBuild.error ? '' : '<meta http-equiv="refresh" content="3">';
+  return `<!doctype html><html lang="en"><head><meta charset="utf-8">${refresh}<title>bitphysics API reference</title><style>body{font:16px system-ui,sans-serif;margin:3em;background:#10141c;color:#e8ecf1}a{color:#8ecbff}pre{white-space:pre-wrap}</style></head><body>${body}</body></html>`;
+}
+
 /** Where `startServer({ watch: false, cache: true })` keeps its last build between runs (the browser tests). */
 export const cacheDir = join(root, 'dist', 'site-cache');
 
@@ -306,7 +324,9 @@ export async function startServer({
         }
         const target = existsSync(file) && statSync(file).isDirectory() ? join(file, 'index.html') : file;
         if (!existsSync(target)) {
-          send(res, 404, TYPES['.txt'], `not found: ${pathname}`);
+          if (prefix === '/docs/' && (docsBuild.building || docsBuild.error))
+            send(res, docsBuild.error ? 500 : 200, TYPES['.html'], docsPendingPage());
+          else send(res, 404, TYPES['.txt'], `not found: ${pathname}`);
           return;
         }
         send(res, 200, TYPES[extname(target)] ?? 'application/octet-stream', readFileSync(target));
@@ -359,16 +379,29 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
     console.error(`PORT must be an integer in [0, 65535], got ${process.env.PORT}`);
     process.exit(1);
   }
+  // The API reference (npm run docs) at /docs/: built once in the background if it is not there
+  // yet, started before the gallery's build so both run at once; /docs/ says so meanwhile.
+  const docsReady = existsSync(join(docsDir, 'index.html'));
+  let docs = Promise.resolve();
+  if (!docsReady) {
+    docsBuild.building = true;
+    docsBuild.since = Date.now();
+    docs = buildDocs({ quiet: true, background: true }).then(
+      () => undefined,
+      (error) => {
+        docsBuild.error = error instanceof Error ? error.message : String(error);
+      },
+    );
+  }
   const { url } = await startServer({ port });
   console.log(`bitphysics gallery: ${url}  (rebuilds on change; Ctrl+C to stop)`);
-  // The API reference (npm run docs) at /docs/: built once in the background if it is not there yet.
-  if (existsSync(join(docsDir, 'index.html'))) {
-    console.log(`API reference: ${url}docs/  (npm run docs rebuilds it)`);
-  } else {
-    console.log(`API reference: building for ${url}docs/ ...`);
-    buildDocs({ quiet: true }).then(
-      () => console.log(`API reference: ${url}docs/`),
-      (error) => console.error(`API reference failed: ${error instanceof Error ? error.message : error}`),
-    );
+  if (docsReady) console.log(`API reference: ${url}docs/  (npm run docs rebuilds it)`);
+  else {
+    console.log(`API reference: ${url}docs/ (being built; the page says when it is ready)`);
+    docs.then(() => {
+      docsBuild.building = false;
+      if (docsBuild.error) console.error(`API reference failed: ${docsBuild.error}`);
+      else console.log(`API reference: ${url}docs/ ready`);
+    });
   }
 }

@@ -19,6 +19,7 @@ interface DevServer {
 interface ServeModule {
   startServer(o: { port: number; site: Map<string, Uint8Array>; log: (line: string) => void }): Promise<DevServer>;
   staticRoutes: Record<string, string>;
+  docsBuild: { building: boolean; since: number; error: string | null };
 }
 
 const serve = (await import(pathToFileURL(join(__dirname, '../../scripts/serve.mjs')).href)) as ServeModule;
@@ -123,6 +124,29 @@ describe('dev server HTTP layer', () => {
       const res = await send(server.url, 'GET', path);
       expect(res.status, path).toBe(404);
       expect(res.body, path).not.toContain('docs-old page');
+    }
+  });
+
+  it('while npm start builds the API reference, /docs/ says so and reloads itself; a failed build shows its error', async () => {
+    expect((await send(server.url, 'GET', '/docs/index.html')).status).toBe(404); // no build running: missing is missing
+    serve.docsBuild.building = true;
+    serve.docsBuild.since = Date.now() - 4000;
+    try {
+      const pending = await send(server.url, 'GET', '/docs/index.html');
+      expect(pending.status).toBe(200);
+      expect(pending.body).toContain('The API reference is being built');
+      expect(pending.body).toContain('<meta http-equiv="refresh" content="3">');
+      // A page that is there is served as it is meanwhile.
+      expect((await send(server.url, 'GET', '/docs/page.txt')).body).toBe('docs page');
+      serve.docsBuild.building = false;
+      serve.docsBuild.error = 'typedoc exited with 1\nsrc/x.ts: <undocumented>';
+      const failed = await send(server.url, 'GET', '/docs/index.html');
+      expect(failed.status).toBe(500);
+      expect(failed.body).toContain('failed to build');
+      expect(failed.body).toContain('&lt;undocumented>');
+    } finally {
+      serve.docsBuild.building = false;
+      serve.docsBuild.error = null;
     }
   });
 });
