@@ -24,12 +24,16 @@ import {
  * a generational handle.
  * @returns the new entity's handle (>= 1; see handles.ts: index stores with `slotOf(handle)`).
  * @throws RangeError if the world already holds `capacity` entities.
+ * @category Bodies
  */
 export function createEntity(world: PhysicsWorld): number {
   return currentHandle(world, createSlot(world, 'createEntity'));
 }
 
-/** Options of `addBody`. Vectors have `world.dimensions` components. Unknown fields are rejected. */
+/**
+ * Options of `addBody`. Vectors have `world.dimensions` components. Unknown fields are rejected.
+ * @category Bodies
+ */
 export interface BodyOptions {
   /** Centre of mass, m. Default origin. */
   position?: ArrayLike<number>;
@@ -103,6 +107,7 @@ const BODY_OPTIONS = [
  *   drag, a bad inertia, both `static` and `kinematic`, both `mass` and `density`, or a full world.
  * @example
  * const ball = addBody(world, { position: [0, 5], radius: 0.5, mass: 2, restitution: 0.8 });
+ * @category Bodies
  */
 export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number {
   return addBodyAs(world, options, 'addBody', BODY_OPTIONS);
@@ -111,6 +116,7 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
 /**
  * Internal: `addBody` for a function built on it (addBox, createRope, createCloth), whose errors name
  * that function (`where`) and list the options it takes (`known`).
+ * @category Bodies
  */
 export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: string, known: readonly string[]): number {
   assertOptions(where, options, known);
@@ -248,7 +254,10 @@ function ballMeasure(d: 2 | 3, r: number): number {
   return d === 2 ? Math.PI * r * r : (4 / 3) * Math.PI * r * r * r;
 }
 
-/** Options of `addParticle`. */
+/**
+ * Options of `addParticle`.
+ * @category Bodies
+ */
 export interface ParticleOptions {
   /** Position, m. Default origin. */
   position?: ArrayLike<number>;
@@ -262,6 +271,7 @@ export interface ParticleOptions {
  * a 1 kg mass). The cheapest thing a world can move: use it for large particle counts.
  * @returns the particle's handle. Atomic: a refused call leaves the world as it was.
  * @throws TypeError | RangeError on options that are not an object, unknown or null options, bad vectors or a full world.
+ * @category Bodies
  */
 export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}): number {
   const where = 'addParticle';
@@ -291,7 +301,10 @@ export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}):
   return currentHandle(world, eid);
 }
 
-/** Options of `addSegment`. */
+/**
+ * Options of `addSegment`.
+ * @category Bodies
+ */
 export interface SegmentOptions {
   /** First end point, m. */
   a: ArrayLike<number>;
@@ -312,6 +325,7 @@ export interface SegmentOptions {
  * included. @returns its handle. Atomic: a refused call leaves the world as it was.
  * @throws TypeError | RangeError on missing options, unknown or null options, bad end points, negative
  * radius, restitution outside [0, 1], negative friction, or a full world.
+ * @category Bodies
  */
 export function addSegment(world: PhysicsWorld, options: SegmentOptions): number {
   const where = 'addSegment';
@@ -340,7 +354,10 @@ export function addSegment(world: PhysicsWorld, options: SegmentOptions): number
   return currentHandle(world, eid);
 }
 
-/** Options of `setBoundary`. */
+/**
+ * Options of `setBoundary`.
+ * @category Bodies
+ */
 export interface BoundaryOptions {
   /** Inner corner with the smallest coordinates, m. */
   min: ArrayLike<number>;
@@ -359,6 +376,7 @@ export interface BoundaryOptions {
  * ceiling; in 3D also front and back). Replaces any previous boundary.
  * @throws TypeError | RangeError on missing, unknown or null options, bad corners (max must exceed min on
  *   every axis) or material values.
+ * @category Bodies
  */
 export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void {
   const where = 'setBoundary';
@@ -385,7 +403,10 @@ export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void
   box.staticFriction = options.staticFriction ?? box.friction;
 }
 
-/** Removes the boundary box. */
+/**
+ * Removes the boundary box.
+ * @category Bodies
+ */
 export function clearBoundary(world: PhysicsWorld): void {
   world.collision.boundary.enabled = false;
 }
@@ -396,6 +417,7 @@ export function clearBoundary(world: PhysicsWorld): void {
  * handle is refused by every API function from then on, even after its slot is reused.
  * @param eid the entity's handle.
  * @throws RangeError if `eid` is not an entity of this world or was already removed.
+ * @category Bodies
  */
 export function removeBody(world: PhysicsWorld, eid: number): void {
   const slot = resolveEntity(world, eid, 'removeBody');
@@ -415,6 +437,7 @@ function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void 
  * @param mass kg, finite and > 0.
  * @throws RangeError on mass <= 0, NaN or infinite, on a static or kinematic body (infinite mass), on a
  *   removed entity or one that is not a body.
+ * @category Bodies
  */
 export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
   const slot = resolveKind(world, eid, 'body', 'setMass');
@@ -454,7 +477,10 @@ function setMaterialUnchecked(world: PhysicsWorld, eid: number, restitution?: nu
   if (staticFriction !== undefined) M.staticFriction[eid] = staticFriction;
 }
 
-/** Material fields for `setMaterial`; omitted fields keep their value. */
+/**
+ * Material fields for `setMaterial`; omitted fields keep their value.
+ * @category Bodies
+ */
 export interface MaterialOptions {
   /** Restitution in [0, 1]. */
   restitution?: number;
@@ -469,6 +495,7 @@ export interface MaterialOptions {
  * @param eid the handle of a body, segment or plane.
  * @throws TypeError on a missing or non-object `material`, unknown or null fields; RangeError on restitution
  *   outside [0, 1], negative friction, a removed entity or one that is not a body, segment or plane.
+ * @category Bodies
  */
 export function setMaterial(world: PhysicsWorld, eid: number, material: MaterialOptions): void {
   const where = 'setMaterial';
@@ -488,6 +515,7 @@ export function setMaterial(world: PhysicsWorld, eid: number, material: Material
  * @param eid a body's handle.
  * @throws RangeError on radius <= 0 or NaN, a removed entity, one that is not a body, or a 3D body with
  *   shapes (addShape3D). A call that throws changes nothing.
+ * @category Bodies
  */
 export function setRadius(world: PhysicsWorld, eid: number, radius: number): void {
   const slot = resolveKind(world, eid, 'body', 'setRadius');
@@ -515,6 +543,7 @@ export function setRadius(world: PhysicsWorld, eid: number, radius: number): voi
  * interpolate across it.
  * @param eid the handle of a body or an emitter.
  * @throws TypeError | RangeError on a bad vector, a removed entity, or one that has no position.
+ * @category Bodies
  */
 export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLike<number>): void {
   const where = 'setPosition';
@@ -537,6 +566,7 @@ export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLik
  * as a kinematic body (as if made with addEmitter's `velocity`).
  * @param eid the handle of a body or an emitter.
  * @throws TypeError | RangeError on a bad vector, a removed entity, or one that is neither a body nor an emitter.
+ * @category Bodies
  */
 export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLike<number>): void {
   const where = 'setVelocity';
@@ -559,6 +589,7 @@ export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLik
  * Applies an impulse J (N s) at the centre of mass: v += J / m. For throws, kicks and explosions.
  * @param eid a body's handle.
  * @throws TypeError | RangeError on a bad vector, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>): void {
   const slot = resolveKind(world, eid, 'body', 'applyImpulse');
@@ -574,6 +605,7 @@ export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLik
 /**
  * Sets the world's uniform gravitational acceleration, m/s^2 (`world.dimensions` numbers).
  * @throws TypeError | RangeError on a vector of the wrong length or with non-finite entries.
+ * @category Bodies
  */
 export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): void {
   assertVector('setGravity', 'gravity', gravity, world.dimensions);
@@ -584,6 +616,7 @@ export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): voi
  * Changes the world's fixed step (s, > 0 and at most MAX_TIME_STEP = 1e6) and optionally its
  * substeps (integer in [1, 64]).
  * @throws TypeError | RangeError on bad values.
+ * @category Bodies
  */
 export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number): void {
   assertTimeStep('setTimeStep', dt);
@@ -601,6 +634,7 @@ export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number):
  * Sets a body's angular velocity, rad/s: a number (about z) in 2D, a 3-vector (world frame) in 3D.
  * @param eid a body's handle.
  * @throws TypeError | RangeError on a bad value, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelocity: number | ArrayLike<number>): void {
   const where = 'setAngularVelocity';
@@ -624,6 +658,7 @@ export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelo
  * Sets a body's orientation: the angle (rad) in 2D, or a quaternion (x, y, z, w), normalised here, in 3D.
  * @param eid a body's handle.
  * @throws TypeError | RangeError on a bad value, a zero quaternion, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function setOrientation(world: PhysicsWorld, eid: number, orientation: number | ArrayLike<number>): void {
   const where = 'setOrientation';

@@ -42,7 +42,10 @@ import { createJointStore, type JointStore } from './joints/store.js';
 
 import { createEmptyShapeStore, type ShapeStore } from './shapes/store.js';
 
-/** A 3-vector store: one Float64Array a component. */
+/**
+ * A 3-vector store: one Float64Array a component.
+ * @category Bodies
+ */
 export interface Vec3Store {
   /** x component, per entity. */
   x: Float64Array;
@@ -56,7 +59,10 @@ function vec3(n: number): Vec3Store {
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n) };
 }
 
-/** The stores of one world; see each field for meaning, unit and default. */
+/**
+ * The stores of one world; see each field for meaning, unit and default.
+ * @category Bodies
+ */
 export interface Components {
   /** Position of the body's centre of mass, m. Default (0, 0, 0). */
   Position: Vec3Store;
@@ -429,6 +435,7 @@ export interface Components {
 /**
  * The body group: the stores of anything more than a bare particle (forces, mass, rotation, a round
  * shape, a material). Its first use also allocates the collision state's per-entity scratch.
+ * @category Bodies
  */
 export const BODY_STORES: ReadonlyArray<keyof Components> = [
   'Force',
@@ -447,6 +454,7 @@ export const BODY_STORES: ReadonlyArray<keyof Components> = [
  * holds the stores that code reads side by side for the same entities: a body's mass, inertia, spin,
  * orientation, shape radius and material; a particle's lifetime and look. Every other lazy store is a
  * group of its own.
+ * @category Bodies
  */
 export const LAZY_GROUPS: ReadonlyArray<ReadonlyArray<keyof Components>> = [
   BODY_STORES,
@@ -479,13 +487,17 @@ export const LAZY_GROUPS: ReadonlyArray<ReadonlyArray<keyof Components>> = [
   ['ClothLink'],
 ];
 
-/** Every lazily allocated component (the union of LAZY_GROUPS), in group order. */
+/**
+ * Every lazily allocated component (the union of LAZY_GROUPS), in group order.
+ * @category Bodies
+ */
 export const LAZY_COMPONENTS: ReadonlyArray<keyof Components> = LAZY_GROUPS.flat();
 
 /**
  * The stores a component's first use allocates: its own group, and for `Emitter` the particle group too
  * (an emitter's particles are written by bulk spawn paths that may bypass per-component hooks).
  * Empty for a component that is always allocated (Position, Velocity, PreviousPosition, tags, Shape).
+ * @category Bodies
  */
 export function storesAllocatedWith(name: keyof Components): ReadonlyArray<keyof Components> {
   const own = LAZY_GROUPS.find((g) => g.includes(name)) ?? [];
@@ -494,7 +506,10 @@ export function storesAllocatedWith(name: keyof Components): ReadonlyArray<keyof
 
 type TypedArray = Float64Array | Int32Array | Uint32Array | Uint8Array;
 
-/** Whether every array of `store` has room for `capacity` entities (a store that has no arrays counts as allocated). */
+/**
+ * Whether every array of `store` has room for `capacity` entities (a store that has no arrays counts as allocated).
+ * @category Bodies
+ */
 export function isStoreAllocated(store: object, capacity: number): boolean {
   for (const arr of Object.values(store)) if (ArrayBuffer.isView(arr) && (arr as TypedArray).length < capacity + 1) return false;
   return true;
@@ -504,6 +519,7 @@ export function isStoreAllocated(store: object, capacity: number): boolean {
  * Gives every array of `store` room for `capacity` entities if it has none yet (see LAZY_GROUPS): the
  * store object keeps its identity, only its empty arrays are replaced by zero-filled ones, on a
  * SharedArrayBuffer if `shared` (a world with threads > 1). @returns whether it allocated anything.
+ * @category Bodies
  */
 export function materializeStore(store: object, capacity: number, shared = false): boolean {
   const rec = store as Record<string, TypedArray>;
@@ -522,6 +538,7 @@ export function materializeStore(store: object, capacity: number, shared = false
 /**
  * Allocates the stores that the first use of component `name` needs (`storesAllocatedWith(name)`) in
  * `components` if they are still empty. @returns whether anything was allocated.
+ * @category Bodies
  */
 export function materializeGroup(components: Components, name: keyof Components, capacity: number, shared = false): boolean {
   let made = false;
@@ -537,6 +554,7 @@ export function materializeGroup(components: Components, name: keyof Components,
  * @param previousPosition false: PreviousPosition starts empty too (createPhysicsWorld passes it for a
  *   world made with `interpolation: false` and one thread, which allocates it with the body group; see
  *   the module docstring). Default true.
+ * @category Bodies
  */
 export function createComponents(capacity: number, previousPosition = true): Components {
   const n = capacity + 1;
@@ -671,8 +689,14 @@ export function createComponents(capacity: number, previousPosition = true): Com
   };
 }
 
-/** Default material values, documented on `Components.Material`. */
+/**
+ * Default material values, documented on `Components.Material`.
+ * @category Bodies
+ */
 export const DEFAULT_MATERIAL = Object.freeze({ restitution: 0, friction: 0.6 });
 
-/** Default ball radius in m, documented on `Components.Ball`. */
+/**
+ * Default ball radius in m, documented on `Components.Ball`.
+ * @category Bodies
+ */
 export const DEFAULT_RADIUS = 0.5;

@@ -56,6 +56,7 @@ const KNOWN_OPTIONS = [
  * @throws RangeError on a value out of range (dt <= 0, capacity < 1, substeps not an integer, ...).
  * @example
  * const world = createPhysicsWorld({ dimensions: 2, capacity: 1000, gravity: [0, -9.81] });
+ * @category World and step
  */
 export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWorld {
   const where = 'createPhysicsWorld';

@@ -5,6 +5,7 @@ import type { PhysicsWorld } from './world.js';
  * Thrown by `step` when a body's state becomes NaN or infinite. It is a RangeError so callers that
  * catch bad input catch it too. The step stops at the stage that found it, so the NaN does not reach
  * the collision solver or any other body. `entity`, `field` and `stage` say where.
+ * @category Utilities
  */
 export class NonFiniteStateError extends RangeError {
   /** The entity whose state is not finite: its handle (see handles.ts; equal to its slot on the slot's first life). */
@@ -30,6 +31,7 @@ export class NonFiniteStateError extends RangeError {
  * and throws a NonFiniteStateError naming it by its handle. Called by systems whose cheap running check (a sum that
  * turned NaN) failed; returns quietly if nothing is non-finite (the sum overflowed on huge but
  * finite values).
+ * @category Utilities
  */
 export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, stage: string): void {
   const c = world.components;

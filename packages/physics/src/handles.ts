@@ -23,7 +23,10 @@ import type { PhysicsWorld } from './world.js';
  * generation).
  */
 
-/** 2^25: a slot fits below it (capacity <= 2^24, slots start at 1). */
+/**
+ * 2^25: a slot fits below it (capacity <= 2^24, slots start at 1).
+ * @category Bodies
+ */
 export const SLOT_RANGE = 33_554_432;
 
 /** Generations wrap at 2^28 so slot + generation * 2^25 stays below 2^53 (an exact integer). */
@@ -34,6 +37,7 @@ const GENERATIONS = 268_435_456;
  * that the entity is alive (see `isAlive`).
  * @param handle an entity handle as returned by addBody, addParticle, createEntity, ...
  * @returns an integer in [0, 2^25).
+ * @category Bodies
  */
 export function slotOf(handle: number): number {
   return handle % SLOT_RANGE;
@@ -42,6 +46,7 @@ export function slotOf(handle: number): number {
 /**
  * The handle of the entity that lives in `slot` now (e.g. a slot from `query()`), for API calls.
  * @throws RangeError if no entity lives in that slot.
+ * @category Bodies
  */
 export function handleOf(world: PhysicsWorld, slot: number): number {
   if (typeof slot !== 'number' || !Number.isInteger(slot) || slot < 1 || slot > world.capacity || !entityExists(world, slot)) {
@@ -50,12 +55,18 @@ export function handleOf(world: PhysicsWorld, slot: number): number {
   return currentHandle(world, slot);
 }
 
-/** Handle of the live entity in `slot` (no checks). */
+/**
+ * Handle of the live entity in `slot` (no checks).
+ * @category Bodies
+ */
 export function currentHandle(world: PhysicsWorld, slot: number): number {
   return slot + ((world.spawnStamp[slot]! - 1) % GENERATIONS) * SLOT_RANGE;
 }
 
-/** Whether `handle` names an entity that is alive in `world` now (false for a removed entity, even if its slot was reused). */
+/**
+ * Whether `handle` names an entity that is alive in `world` now (false for a removed entity, even if its slot was reused).
+ * @category Bodies
+ */
 export function isAlive(world: PhysicsWorld, handle: number): boolean {
   if (typeof handle !== 'number' || !Number.isInteger(handle) || handle < 1) return false;
   const slot = handle % SLOT_RANGE;
@@ -70,6 +81,7 @@ export function isAlive(world: PhysicsWorld, handle: number): boolean {
  * @throws RangeError `<where>: <param> refers to a removed entity (id N, slot S now holds handle H)` when the
  *   entity was removed (its slot empty or reused), or `<where>: <param> must be an entity of this world, got V`
  *   when the value is not a handle at all.
+ * @category Bodies
  */
 export function resolveEntity(world: PhysicsWorld, handle: unknown, where: string, param = 'entity'): number {
   if (typeof handle !== 'number' || !Number.isInteger(handle) || handle < 1) {
@@ -99,6 +111,7 @@ export function resolveEntity(world: PhysicsWorld, handle: unknown, where: strin
  * What an API function needs of its entity. `body`: a moving thing (Position and Velocity: bodies,
  * particles, moving emitters); `emitter`, `electric-field`, `magnetic-field`, `fluid-region`, `spring`:
  * entities made by addEmitter, addElectricField, addMagneticField, addFluidRegion, addSpring.
+ * @category Bodies
  */
 export type EntityKind = 'body' | 'emitter' | 'electric-field' | 'magnetic-field' | 'fluid-region' | 'spring' | 'collider';
 
@@ -112,7 +125,10 @@ const KIND_NAMES: Record<EntityKind, string> = {
   collider: 'a body, segment or plane',
 };
 
-/** Short description of what the entity in `slot` is, for error messages. */
+/**
+ * Short description of what the entity in `slot` is, for error messages.
+ * @category Bodies
+ */
 export function kindOf(world: PhysicsWorld, slot: number): string {
   const c = world.components;
   const has = (x: object) => hasComponent(world, slot, x);
@@ -127,7 +143,10 @@ export function kindOf(world: PhysicsWorld, slot: number): string {
   return 'an entity with no physics components';
 }
 
-/** Whether the entity in `slot` is of `kind` (see EntityKind). */
+/**
+ * Whether the entity in `slot` is of `kind` (see EntityKind).
+ * @category Bodies
+ */
 export function isKind(world: PhysicsWorld, slot: number, kind: EntityKind): boolean {
   const c = world.components;
   switch (kind) {
@@ -156,6 +175,7 @@ export function isKind(world: PhysicsWorld, slot: number, kind: EntityKind): boo
  * `resolveEntity`, then checks the entity is of `kind`.
  * @returns the entity's slot.
  * @throws RangeError as resolveEntity, or `<where>: <param> must be <kind>, got <what it is> (id N)`.
+ * @category Bodies
  */
 export function resolveKind(world: PhysicsWorld, handle: unknown, kind: EntityKind, where: string, param = 'entity'): number {
   const slot = resolveEntity(world, handle, where, param);
@@ -170,6 +190,7 @@ export function resolveKind(world: PhysicsWorld, handle: unknown, kind: EntityKi
  * anything, so a full world leaves no trace of the refused call.
  * @param where the function the user called.
  * @throws RangeError `<where>: the world is full (capacity N entities); ...`.
+ * @category Bodies
  */
 export function assertRoom(world: PhysicsWorld, where: string): void {
   if (world.entityIndex.aliveCount >= world.capacity) {
@@ -183,6 +204,7 @@ export function assertRoom(world: PhysicsWorld, where: string): void {
  * Internal: adds an empty entity and returns its slot (store index), counting its life in
  * `world.spawnStamp`. The public functions return `currentHandle(world, slot)`.
  * @throws RangeError (naming `where`) if the world is full.
+ * @category Bodies
  */
 export function createSlot(world: PhysicsWorld, where: string): number {
   assertRoom(world, where);

@@ -127,6 +127,7 @@ const assigners = new WeakMap<object, (ids: ArrayLike<number>) => void>();
  * exactly `ids` in that order: its dense list written in place (it stays a packed JS array, the same
  * object) and its typed sparse array allocated if it was not yet. For restoring a snapshot.
  * @returns false (nothing done) for a set lean storage did not make.
+ * @category Bodies
  */
 export function assignSparseSet(set: object, ids: ArrayLike<number>): boolean {
   const assign = assigners.get(set);
@@ -139,6 +140,7 @@ export function assignSparseSet(set: object, ids: ArrayLike<number>): boolean {
  * Records a change to `set`'s members or order made by writing its `dense` array directly (bulk
  * births, defragmentation: particles/archetype.ts), so snapshots do not take it for unchanged. No-op
  * for a set lean storage did not make.
+ * @category Bodies
  */
 export function touchSparseSet(set: object): void {
   const s = set as { version?: number };
@@ -297,6 +299,7 @@ class MaskComponentSets {
  * components are registered (createPhysicsWorld does, after installing the component defaults).
  * @param capacity the world's capacity: the highest entity id.
  * @throws Error if the world already has entities.
+ * @category Bodies
  */
 export function useLeanEcsStorage(world: object, capacity: number): void {
   const ctx = (world as Record<symbol, EcsContext>)[$internal]!;
@@ -319,7 +322,10 @@ export function useLeanEcsStorage(world: object, capacity: number): void {
   ctx.queries = new LeanQuerySet(capacity, ctx.queries);
 }
 
-/** Whether `world`'s component sets are derived from its masks (`useLeanEcsStorage`): nothing to rebuild after its masks change. */
+/**
+ * Whether `world`'s component sets are derived from its masks (`useLeanEcsStorage`): nothing to rebuild after its masks change.
+ * @category Bodies
+ */
 export function hasMaskComponentSets(world: object): boolean {
   return (world as Record<symbol, EcsContext>)[$internal]!.entityComponents instanceof MaskComponentSets;
 }

@@ -25,7 +25,10 @@ function idOf(term: object): number {
 
 const nots = new WeakMap<object, object>();
 
-/** bitecs' Not(component), memoised per component so it can be a cache key. */
+/**
+ * bitecs' Not(component), memoised per component so it can be a cache key.
+ * @category Queries
+ */
 export function Not(component: object): Term {
   let term = nots.get(component);
   if (term === undefined) {
@@ -44,6 +47,7 @@ const caches = new WeakMap<object, Map<number, Entry[]>>();
 /**
  * The live array of entities having every component of `terms` (and none of the `Not` ones).
  * Same result and semantics as bitecs' query; cached per world by term identity.
+ * @category Queries
  */
 export function query(world: object, terms: Term[]): QueryResult {
   let cache = caches.get(world);

@@ -13,14 +13,20 @@ import { addComponentIfMissing } from './world.js';
  * Ramtal and Dobre ch. 13.
  */
 
-/** Moment of inertia of a solid sphere about any diameter: 2 m r^2 / 5, kg m^2. @throws RangeError on m or r <= 0. */
+/**
+ * Moment of inertia of a solid sphere about any diameter: 2 m r^2 / 5, kg m^2. @throws RangeError on m or r <= 0.
+ * @category Bodies
+ */
 export function inertiaOfSolidSphere(mass: number, radius: number): number {
   assertPositive('inertiaOfSolidSphere', 'mass', mass);
   assertPositive('inertiaOfSolidSphere', 'radius', radius);
   return 0.4 * mass * radius * radius;
 }
 
-/** Moment of inertia of a thin spherical shell: 2 m r^2 / 3, kg m^2. @throws RangeError on m or r <= 0. */
+/**
+ * Moment of inertia of a thin spherical shell: 2 m r^2 / 3, kg m^2. @throws RangeError on m or r <= 0.
+ * @category Bodies
+ */
 export function inertiaOfSphericalShell(mass: number, radius: number): number {
   assertPositive('inertiaOfSphericalShell', 'mass', mass);
   assertPositive('inertiaOfSphericalShell', 'radius', radius);
@@ -30,6 +36,7 @@ export function inertiaOfSphericalShell(mass: number, radius: number): number {
 /**
  * Principal moments of a solid box of edges (a, b, c) along x, y, z: m (b^2 + c^2) / 12, m (a^2 + c^2) / 12,
  * m (a^2 + b^2) / 12, kg m^2. @throws RangeError on non-positive mass or edges.
+ * @category Bodies
  */
 export function inertiaOfSolidBox(mass: number, size: ArrayLike<number>): [number, number, number] {
   assertPositive('inertiaOfSolidBox', 'mass', mass);
@@ -44,6 +51,7 @@ export function inertiaOfSolidBox(mass: number, size: ArrayLike<number>): [numbe
 /**
  * Principal moments of a solid cylinder of radius r and height h with its axis along y:
  * about y m r^2 / 2; about x and z m (3 r^2 + h^2) / 12, kg m^2. @throws RangeError on non-positive values.
+ * @category Bodies
  */
 export function inertiaOfSolidCylinder(mass: number, radius: number, height: number): [number, number, number] {
   assertPositive('inertiaOfSolidCylinder', 'mass', mass);
@@ -53,14 +61,20 @@ export function inertiaOfSolidCylinder(mass: number, radius: number, height: num
   return [side, 0.5 * mass * radius * radius, side];
 }
 
-/** 2D: moment of a solid disc about its centre, m r^2 / 2, kg m^2. @throws RangeError on m or r <= 0. */
+/**
+ * 2D: moment of a solid disc about its centre, m r^2 / 2, kg m^2. @throws RangeError on m or r <= 0.
+ * @category Bodies
+ */
 export function inertiaOfDisc(mass: number, radius: number): number {
   assertPositive('inertiaOfDisc', 'mass', mass);
   assertPositive('inertiaOfDisc', 'radius', radius);
   return 0.5 * mass * radius * radius;
 }
 
-/** 2D: moment of a solid rectangle w x h about its centre, m (w^2 + h^2) / 12, kg m^2. @throws RangeError. */
+/**
+ * 2D: moment of a solid rectangle w x h about its centre, m (w^2 + h^2) / 12, kg m^2. @throws RangeError.
+ * @category Bodies
+ */
 export function inertiaOfRectangle(mass: number, width: number, height: number): number {
   assertPositive('inertiaOfRectangle', 'mass', mass);
   assertPositive('inertiaOfRectangle', 'width', width);
@@ -73,6 +87,7 @@ export function inertiaOfRectangle(mass: number, width: number, height: number):
  * > 0 or three principal moments, each >= 0 and at least one > 0.
  * @param where the function the user called (addBody, setInertia).
  * @throws TypeError | RangeError naming `where` and the value.
+ * @category Bodies
  */
 export function checkInertia(where: string, dimensions: 2 | 3, inertia: unknown): void {
   if (typeof inertia === 'number') {
@@ -87,7 +102,10 @@ export function checkInertia(where: string, dimensions: 2 | 3, inertia: unknown)
     throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${describe(inertia)}`);
 }
 
-/** Internal: sets an inertia already checked with `checkInertia` on the body in `slot`. */
+/**
+ * Internal: sets an inertia already checked with `checkInertia` on the body in `slot`.
+ * @category Bodies
+ */
 export function setInertiaUnchecked(world: PhysicsWorld, slot: number, inertia: number | ArrayLike<number>): void {
   const c = world.components;
   addComponentIfMissing(world, slot, c.AngularVelocity);
@@ -115,6 +133,7 @@ export function setInertiaUnchecked(world: PhysicsWorld, slot: number, inertia: 
  * > 0; 0 locks that axis) along the body's axes. Adds angular velocity, torque and orientation.
  * @param eid a body's handle.
  * @throws TypeError | RangeError on bad values, principal moments in 2D, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function setInertia(world: PhysicsWorld, eid: number, inertia: number | ArrayLike<number>): void {
   const where = 'setInertia';
@@ -131,6 +150,7 @@ const tmp = new Float64Array(3);
  * are cleared at the start of each evaluation).
  * @param eid a body's handle.
  * @throws TypeError | RangeError on bad vectors, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyForceAtPoint';
@@ -162,6 +182,7 @@ export function applyForceAtPoint(world: PhysicsWorld, eid: number, force: Array
  * For clicks, kicks and hits between steps.
  * @param eid a body's handle.
  * @throws TypeError | RangeError on bad vectors, a removed entity or one that is not a body.
+ * @category Bodies
  */
 export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>, point: ArrayLike<number>): void {
   const where = 'applyImpulseAtPoint';
@@ -210,6 +231,7 @@ export function applyImpulseAtPoint(world: PhysicsWorld, eid: number, impulse: A
 /**
  * World-frame angular momentum of one body about its centre of mass, kg m^2/s: I_w w (scalar or tensor).
  * Written into out (length 3) and returned. @throws RangeError if the entity is not a body.
+ * @category Bodies
  */
 export function spinAngularMomentum(world: PhysicsWorld, eid: number, out: Float64Array = new Float64Array(3)): Float64Array {
   return spinMomentumOf(world, resolveKind(world, eid, 'body', 'spinAngularMomentum'), out);
@@ -243,6 +265,7 @@ const spinL = new Float64Array(3);
 
 /**
  * Rotational kinetic energy of one body, J: w . (I_w w) / 2. @throws RangeError if the entity is not a body.
+ * @category Bodies
  */
 export function spinKineticEnergy(world: PhysicsWorld, eid: number): number {
   const slot = resolveKind(world, eid, 'body', 'spinKineticEnergy');
@@ -251,7 +274,10 @@ export function spinKineticEnergy(world: PhysicsWorld, eid: number): number {
   return 0.5 * (L[0]! * c.AngularVelocity.x[slot]! + L[1]! * c.AngularVelocity.y[slot]! + L[2]! * c.AngularVelocity.z[slot]!);
 }
 
-/** Sets angular damping, torque -k w with k in N m s (>= 0). @throws RangeError on bad k or a missing body. */
+/**
+ * Sets angular damping, torque -k w with k in N m s (>= 0). @throws RangeError on bad k or a missing body.
+ * @category Bodies
+ */
 export function setAngularDamping(world: PhysicsWorld, eid: number, k: number): void {
   const slot = resolveKind(world, eid, 'body', 'setAngularDamping');
   assertNonNegative('setAngularDamping', 'k', k);
@@ -260,7 +286,10 @@ export function setAngularDamping(world: PhysicsWorld, eid: number, k: number): 
   c.AngularDamping.k[slot] = k;
 }
 
-/** Options of `addPlane`. */
+/**
+ * Options of `addPlane`.
+ * @category Bodies
+ */
 export interface PlaneOptions {
   /** Normal pointing out of the solid side (normalised here; 2 components in 2D, 3 in 3D). */
   normal: ArrayLike<number>;
@@ -279,6 +308,7 @@ export interface PlaneOptions {
  * @returns its handle. Atomic: a refused call leaves the world as it was.
  * @throws TypeError | RangeError on missing, unknown or null options, a zero or malformed normal, bad
  *   material values, or a full world.
+ * @category Bodies
  */
 export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const where = 'addPlane';

@@ -9,6 +9,7 @@ import { assertFinite, assertInteger } from './validate.js';
  * pseudorandom number generators", OOPSLA 2014) and warmed up by 12 outputs.
  *
  * The same seed gives the same sequence on every platform (only 32-bit integer arithmetic).
+ * @category Utilities
  */
 export class Rng {
   private a = 0;

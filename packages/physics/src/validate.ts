@@ -7,7 +7,10 @@
  * its valid range throws `RangeError`. Messages read `<where>: <param> must be <rule>, got <value>`.
  */
 
-/** Formats a value for an error message: numbers as written, strings quoted, arrays element by element, other objects as JSON. */
+/**
+ * Formats a value for an error message: numbers as written, strings quoted, arrays element by element, other objects as JSON.
+ * @category Utilities
+ */
 export function describe(value: unknown): string {
   if (typeof value === 'number') return Object.is(value, -0) ? '-0' : String(value);
   if (typeof value === 'string') return JSON.stringify(value);
@@ -43,6 +46,7 @@ function json(value: unknown): string {
 /**
  * Throws unless `value` is a finite number.
  * @throws TypeError if not a number; RangeError if NaN or infinite.
+ * @category Utilities
  */
 export function assertFinite(where: string, param: string, value: unknown): asserts value is number {
   if (typeof value !== 'number') {
@@ -53,19 +57,28 @@ export function assertFinite(where: string, param: string, value: unknown): asse
   }
 }
 
-/** Throws unless `value` is a finite number > 0. @throws TypeError | RangeError */
+/**
+ * Throws unless `value` is a finite number > 0. @throws TypeError | RangeError
+ * @category Utilities
+ */
 export function assertPositive(where: string, param: string, value: unknown): asserts value is number {
   assertFinite(where, param, value);
   if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0, got ${describe(value)}`);
 }
 
-/** Throws unless `value` is a finite number >= 0. @throws TypeError | RangeError */
+/**
+ * Throws unless `value` is a finite number >= 0. @throws TypeError | RangeError
+ * @category Utilities
+ */
 export function assertNonNegative(where: string, param: string, value: unknown): asserts value is number {
   assertFinite(where, param, value);
   if (!(value >= 0)) throw new RangeError(`${where}: ${param} must be >= 0, got ${describe(value)}`);
 }
 
-/** Throws unless `value` is a finite number in the closed interval [min, max]. @throws TypeError | RangeError */
+/**
+ * Throws unless `value` is a finite number in the closed interval [min, max]. @throws TypeError | RangeError
+ * @category Utilities
+ */
 export function assertInRange(where: string, param: string, value: unknown, min: number, max: number): asserts value is number {
   assertFinite(where, param, value);
   if (!(value >= min && value <= max)) {
@@ -73,7 +86,10 @@ export function assertInRange(where: string, param: string, value: unknown, min:
   }
 }
 
-/** Throws unless `value` is an integer in [min, max]. @throws TypeError | RangeError */
+/**
+ * Throws unless `value` is an integer in [min, max]. @throws TypeError | RangeError
+ * @category Utilities
+ */
 export function assertInteger(where: string, param: string, value: unknown, min: number, max: number): asserts value is number {
   assertFinite(where, param, value);
   if (!Number.isInteger(value)) throw new RangeError(`${where}: ${param} must be an integer, got ${describe(value)}`);
@@ -82,7 +98,10 @@ export function assertInteger(where: string, param: string, value: unknown, min:
   }
 }
 
-/** Throws unless `value` is a boolean (`true` or `false`, not truthy or falsy). @throws TypeError */
+/**
+ * Throws unless `value` is a boolean (`true` or `false`, not truthy or falsy). @throws TypeError
+ * @category Utilities
+ */
 export function assertBoolean(where: string, param: string, value: unknown): asserts value is boolean {
   if (typeof value !== 'boolean') throw new TypeError(`${where}: ${param} must be a boolean, got ${describe(value)}`);
 }
@@ -90,6 +109,7 @@ export function assertBoolean(where: string, param: string, value: unknown): ass
 /**
  * Throws unless `value` is an array (or typed array) of `length` finite numbers.
  * @throws TypeError if not array-like of numbers or of the wrong length; RangeError if an element is not finite.
+ * @category Utilities
  */
 export function assertVector(where: string, param: string, value: unknown, length: number): asserts value is ArrayLike<number> {
   const ok = Array.isArray(value) || ArrayBuffer.isView(value);
@@ -114,6 +134,7 @@ export function assertVector(where: string, param: string, value: unknown, lengt
  * meaning includes null, such as a joint's `a: null` for the world). Catches misspelt options
  * (`restituion`) that would otherwise be silently ignored. `options` undefined passes (all defaults).
  * @throws TypeError if `options` is not a plain object, has an unknown key or a null value.
+ * @category Utilities
  */
 export function assertKnownKeys(where: string, options: unknown, known: readonly string[], nullable: readonly string[] = []): void {
   if (options === undefined) return;
@@ -129,6 +150,7 @@ export function assertKnownKeys(where: string, options: unknown, known: readonly
  * @param nullable keys whose documented meaning includes null (a joint's `a: null` is the world).
  * @throws TypeError `<where>: <param> must be an object, got <value>`; `<where>: unknown option "<key>"...`;
  *   `<where>: <key> must be a value (omit it for the default), got null`.
+ * @category Utilities
  */
 export function assertOptions(
   where: string,
@@ -153,7 +175,10 @@ export function assertOptions(
   }
 }
 
-/** Throws unless `value` is undefined (omitted) or a boolean. @throws TypeError `<where>: <param> must be a boolean, got <value>` */
+/**
+ * Throws unless `value` is undefined (omitted) or a boolean. @throws TypeError `<where>: <param> must be a boolean, got <value>`
+ * @category Utilities
+ */
 export function assertOptionalBoolean(where: string, param: string, value: unknown): asserts value is boolean | undefined {
   if (value !== undefined) assertBoolean(where, param, value);
 }
@@ -161,6 +186,7 @@ export function assertOptionalBoolean(where: string, param: string, value: unkno
 /**
  * Throws unless `value` is one of the strings `choices` (own names only: 'toString' is not a choice).
  * @throws RangeError `<where>: <param> must be one of 'a', 'b', got <value>`.
+ * @category Utilities
  */
 export function assertOneOf<T extends string>(where: string, param: string, value: unknown, choices: readonly T[]): asserts value is T {
   if (typeof value !== 'string' || !(choices as readonly string[]).includes(value)) {

@@ -15,16 +15,23 @@ import { assertPositive } from './validate.js';
  * Largest fixed time step a world accepts, s: 1e6 (about 11.6 days, enough for orbits in SI units).
  * Bounding it keeps every per-step quantity finite: emitter spawns rate x dt < 2^53 with
  * MAX_EMITTER_RATE, lifetimes, drag rates.
+ * @category World and step
  */
 export const MAX_TIME_STEP = 1e6;
 
-/** Throws unless dt is a number in (0, MAX_TIME_STEP]; the message names `where`. @throws TypeError | RangeError */
+/**
+ * Throws unless dt is a number in (0, MAX_TIME_STEP]; the message names `where`. @throws TypeError | RangeError
+ * @category World and step
+ */
 export function assertTimeStep(where: string, dt: unknown): asserts dt is number {
   assertPositive(where, 'dt', dt);
   if (dt > MAX_TIME_STEP) throw new RangeError(`${where}: dt must be <= ${MAX_TIME_STEP} s (MAX_TIME_STEP), got ${dt}`);
 }
 
-/** Options of `createPhysicsWorld`; every field is optional (its default is given), units SI. */
+/**
+ * Options of `createPhysicsWorld`; every field is optional (its default is given), units SI.
+ * @category World and step
+ */
 export interface PhysicsWorldOptions {
   /** 2 for a planar world (x, y), 3 for a spatial one (x, y, z). Default 2. */
   dimensions?: 2 | 3;
@@ -83,13 +90,22 @@ export interface PhysicsWorldOptions {
   threads?: number;
 }
 
-/** The largest capacity a world accepts (2^24 entities). */
+/**
+ * The largest capacity a world accepts (2^24 entities).
+ * @category World and step
+ */
 export const MAX_CAPACITY = 16_777_216;
 
-/** Wall-clock milliseconds spent in each stage during the most recent step (all substeps summed). */
+/**
+ * Wall-clock milliseconds spent in each stage during the most recent step (all substeps summed).
+ * @category World and step
+ */
 export type StageTimings = Record<StageName, number>;
 
-/** The data a physics world carries besides bitecs' own bookkeeping. */
+/**
+ * The data a physics world carries besides bitecs' own bookkeeping.
+ * @category World and step
+ */
 export interface PhysicsWorldContext {
   /** 2 or 3. */
   readonly dimensions: 2 | 3;
@@ -145,15 +161,26 @@ export interface PhysicsWorldContext {
   readonly removeHooks: Array<(world: PhysicsWorld, eid: number) => void>;
 }
 
-/** A bitecs world carrying a physics context. */
+/**
+ * A physics world: a bitecs world (entities and their component stores) whose fields are those of
+ * {@link PhysicsWorldContext}: `components` (the stores, indexed by slot), `dimensions`, `capacity`,
+ * `dt` and `substeps`, `time` and `steps`, `gravity`, `collision` (settings, contacts, shapes,
+ * sleep), `joints`, `cloth`, `laws` (force-law settings), `threads`, and the rest listed there. Made by
+ * {@link createPhysicsWorld}; advanced by {@link step}; ended by {@link disposeWorld}.
+ * @category World and step
+ */
 export type PhysicsWorld = World<PhysicsWorldContext>;
 
-/** A system: a plain function of the world, run once per (sub)step in its stage. */
+/**
+ * A system: a plain function of the world, run once per (sub)step in its stage.
+ * @category World and step
+ */
 export type System = (world: PhysicsWorld) => void;
 
 /**
  * Declares `component` a force law: whenever it is added to an entity, the Force accumulator is
  * added too, so the law's system has somewhere to write. Use it for your own force-law components.
+ * @category World and step
  */
 export function registerForceLaw(world: PhysicsWorld, component: object): void {
   const force = world.components.Force;
@@ -162,7 +189,10 @@ export function registerForceLaw(world: PhysicsWorld, component: object): void {
   });
 }
 
-/** Adds `component` to `eid` unless it already has it (then its data is left untouched). */
+/**
+ * Adds `component` to `eid` unless it already has it (then its data is left untouched).
+ * @category World and step
+ */
 export function addComponentIfMissing(world: PhysicsWorld, eid: number, component: object): void {
   if (!hasComponent(world, eid, component)) addComponent(world, eid, component);
 }
@@ -170,6 +200,7 @@ export function addComponentIfMissing(world: PhysicsWorld, eid: number, componen
 /**
  * Ends a world's worker threads (a world made with threads > 1); the world still steps, on the
  * calling thread alone. Safe on any world and to call twice.
+ * @category World and step
  */
 export function disposeWorld(world: PhysicsWorld): void {
   const pool = world.threadPool;
@@ -182,6 +213,7 @@ export function disposeWorld(world: PhysicsWorld): void {
  * Resolves once the workers of a world with threads > 1 have started (at once for one thread). A
  * browser page's main thread cannot wait for them, so its loops run on one thread until then; Node
  * waits by itself at the first parallel loop.
+ * @category World and step
  */
 export function threadsReady(world: PhysicsWorld): Promise<void> {
   return world.threadPool === null ? Promise.resolve() : world.threadPool.ready;

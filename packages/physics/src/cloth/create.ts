@@ -6,7 +6,10 @@ import { assertFinite, assertInteger, assertNonNegative, assertOptions, assertPo
 import type { PhysicsWorld } from '../world.js';
 import { ClothLinkKind } from './store.js';
 
-/** Options of `createCloth`. Unknown fields are rejected. */
+/**
+ * Options of `createCloth`. Unknown fields are rejected.
+ * @category Cloth
+ */
 export interface ClothOptions {
   /** Top-left point of the cloth, m (x, y). Default (0, 0). */
   origin?: ArrayLike<number>;
@@ -32,7 +35,10 @@ export interface ClothOptions {
   drag?: number;
 }
 
-/** What `createCloth` made. */
+/**
+ * What `createCloth` made.
+ * @category Cloth
+ */
 export interface Cloth {
   /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. Float64Array: a handle needs up to 53 bits (handles.ts). */
   readonly points: Float64Array;
@@ -67,6 +73,7 @@ const KEYS = [
  * @returns the points and links.
  * @throws TypeError | RangeError on a 3D world, unknown options, bad sizes, counts, compliances or pins,
  *   or a world too small for the points and links.
+ * @category Cloth
  */
 export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cloth {
   const where = 'createCloth';
@@ -197,7 +204,10 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
 /** The body options createCloth passes on (for addBodyAs' check). */
 const POINT_OPTIONS = ['position', 'static', 'mass', 'linearDrag'] as const;
 
-/** Index of point (row, column) in `Cloth.points`. @throws RangeError outside the grid. */
+/**
+ * Index of point (row, column) in `Cloth.points`. @throws RangeError outside the grid.
+ * @category Cloth
+ */
 export function clothPointIndex(cloth: Cloth, row: number, column: number): number {
   assertInteger('clothPointIndex', 'row', row, 0, cloth.rows - 1);
   assertInteger('clothPointIndex', 'column', column, 0, cloth.columns - 1);

@@ -10,6 +10,7 @@ import type { PhysicsWorld } from '../world.js';
  * pointer's position to drag.
  * @param point a body's handle.
  * @throws RangeError if `point` is not a live body, or is static; TypeError | RangeError on a bad position.
+ * @category Cloth
  */
 export function pinClothPoint(world: PhysicsWorld, point: number, position: ArrayLike<number> | null): void {
   const where = 'pinClothPoint';

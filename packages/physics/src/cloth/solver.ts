@@ -32,6 +32,7 @@ import type { ClothState } from './state.js';
  * Small steps converge far better than iterations at the same cost: a 64 x 64 cloth in wind stretched
  * 43% at its corner with 12 iterations of one step, under 5% with 12 substeps of one pass. The
  * integrator's forces other than gravity act as one impulse at the start of the step.
+ * @category Cloth
  */
 export function clothSystem(world: PhysicsWorld): void {
   const cl = world.cloth;
@@ -438,7 +439,10 @@ function colourOrder(cl: ClothState, from: number, to: number, pointCount: numbe
   }
 }
 
-/** Bookkeeping of a cloth link's removal (the caller removes the entity): uncount it from its points, repack. */
+/**
+ * Bookkeeping of a cloth link's removal (the caller removes the entity): uncount it from its points, repack.
+ * @category Cloth
+ */
 export function detachClothLink(world: PhysicsWorld, e: number): void {
   const L = world.components.ClothLink,
     att = world.joints.attached;

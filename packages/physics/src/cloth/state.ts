@@ -1,6 +1,7 @@
 /**
  * The cloth solver's packed arrays, rebuilt from the `ClothLink` entities whenever links are added or
  * removed (`version` changes), not every step.
+ * @category Cloth
  */
 export interface ClothState {
   /** Small steps a (world sub)step, each one predict / project / update pass, integer >= 1. Default 11 (the bench's 64 x 64 cloth in 4 m/s wind with 1 m/s turbulence stretches 5.55% at most, as 12 did before links were solved colour by colour). */
@@ -43,7 +44,10 @@ export interface ClothState {
   scalars: Float64Array;
 }
 
-/** An empty cloth state. */
+/**
+ * An empty cloth state.
+ * @category Cloth
+ */
 export function createClothState(): ClothState {
   const state: ClothState = {
     substeps: 11,

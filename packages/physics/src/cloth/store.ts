@@ -5,10 +5,16 @@
  * remove them with `removeJoint` (or by removing a body they hold).
  */
 
-/** Kinds of cloth link, for renderers and users (the solver treats them alike). */
+/**
+ * Kinds of cloth link, for renderers and users (the solver treats them alike).
+ * @category Cloth
+ */
 export const ClothLinkKind = Object.freeze({ Structural: 0, Shear: 1, Bending: 2 } as const);
 
-/** Fields of a cloth link. Units SI. */
+/**
+ * Fields of a cloth link. Units SI.
+ * @category Cloth
+ */
 export interface ClothLinkStore {
   /** The two point bodies (entity slots). */
   a: Int32Array;
@@ -26,7 +32,10 @@ export interface ClothLinkStore {
   kind: Uint8Array;
 }
 
-/** The store with empty arrays (lazily allocated on first use; see LAZY_COMPONENTS). */
+/**
+ * The store with empty arrays (lazily allocated on first use; see LAZY_COMPONENTS).
+ * @category Cloth
+ */
 export function createClothLinkStore(): ClothLinkStore {
   return {
     a: new Int32Array(0),

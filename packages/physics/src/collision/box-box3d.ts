@@ -70,6 +70,7 @@ const kx = new Float64Array(16),
 /**
  * The manifold of box A (centre a, rotation RA[oa..oa+8] row-major shape-to-world, half extents ea*)
  * against box B, or count 0 when farther apart than `margin` (m).
+ * @category Collision
  */
 export function boxBox3D(
   ax: number,
@@ -112,10 +113,14 @@ export function boxBox3D(
  * `boxBox3D`'s numbers, for `boxBox3DAt`: A's centre (m) and half extents (m), B's centre and half
  * extents, then the margin (m). A hot caller writes them here instead of passing them: V8 boxes every
  * double passed to a call it does not inline (a heap number each, garbage every step).
+ * @category Collision
  */
 export const boxArgs = new Float64Array(13);
 
-/** `boxBox3D` with its numbers read from `boxArgs` (A's centre, half extents, B's centre, half extents, margin). */
+/**
+ * `boxBox3D` with its numbers read from `boxArgs` (A's centre, half extents, B's centre, half extents, margin).
+ * @category Collision
+ */
 export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: number, out: Manifold3D): void {
   const g = boxArgs;
   const ax = g[0]!,
@@ -518,6 +523,7 @@ function edgeContact(
 /**
  * A plane n . x = d (solid below, A) against box B (centre c, rotation R[o..o+8], half extents e*):
  * the corners below the margin, reduced to four; normal the plane's; ids the corner numbers.
+ * @category Collision
  */
 export function planeBox3D(
   nx: number,
@@ -550,10 +556,16 @@ export function planeBox3D(
   planeBox3DAt(R, o, out);
 }
 
-/** `planeBox3D`'s numbers for `planeBox3DAt` (see `boxArgs`): the plane's n and d, the box's centre and half extents, the margin. */
+/**
+ * `planeBox3D`'s numbers for `planeBox3DAt` (see `boxArgs`): the plane's n and d, the box's centre and half extents, the margin.
+ * @category Collision
+ */
 export const planeArgs = new Float64Array(11);
 
-/** `planeBox3D` with its numbers read from `planeArgs`. */
+/**
+ * `planeBox3D` with its numbers read from `planeArgs`.
+ * @category Collision
+ */
 export function planeBox3DAt(R: Float64Array, o: number, out: Manifold3D): void {
   const g = planeArgs;
   const nx = g[0]!,

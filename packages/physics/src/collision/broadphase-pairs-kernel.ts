@@ -21,6 +21,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * loop wakes a ball as it meets it; the pass is run again whenever any ball woke, and the set of balls
  * woken, and their order, is the same either way (a woken ball has rested, so it wakes nobody itself).
  * Returns 0.
+ * @category Collision
  */
 export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
   const sorted = A[0] as Int32Array,

@@ -22,7 +22,10 @@ import { BodyType, type CollisionState, PairKind } from './state.js';
 
 export { ballPairs } from './broadphase-pairs-kernel.js';
 
-/** Fewest grid bodies a thread for the cell pass to go parallel. */
+/**
+ * Fewest grid bodies a thread for the cell pass to go parallel.
+ * @category Collision
+ */
 export const PAIRS_MIN_PER_THREAD = 2048;
 
 /** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at 16 + p their wake counts (the kernel's layout). */
@@ -46,6 +49,7 @@ const buffersOf = new WeakMap<CollisionState, PairBuffers>();
  * the caller runs its own loop. `mask` is the grid's hash mask (unused by a dense grid, whose origin
  * and spans the kernel reads from `cs.grid`).
  * @throws Error naming broadphaseSystem if a worker thread failed.
+ * @category Collision
  */
 export function parallelBallPairs(
   world: PhysicsWorld,

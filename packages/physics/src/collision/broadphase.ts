@@ -30,10 +30,14 @@ const HALF_3D: readonly number[] = (() => {
  * near each other, where the hash's order jumps across the whole solver state, which a large world's
  * does not fit in a core's cache (balls-in-box: 22 % less CPU time a step at 5,000 and 20,000 balls,
  * 7 % at 2,000). A small world's state fits in the cache anyway, and keeps the hash's order.
+ * @category Collision
  */
 export const DENSE_CELLS_PER_BODY = 8;
 
-/** Fewest balls for the dense grid (see DENSE_CELLS_PER_BODY). */
+/**
+ * Fewest balls for the dense grid (see DENSE_CELLS_PER_BODY).
+ * @category Collision
+ */
 export const DENSE_MIN_BODIES = 1024;
 
 /** Scratch: the bucket offset of each neighbour cell of the half neighbourhood in a dense grid. */
@@ -45,6 +49,7 @@ const neighbourStep = new Float64Array(13);
  * cells) share the outermost cells of the grid. Clamping keeps neighbouring cells neighbours (it is
  * monotonic), so they are still collided correctly, only tested against more bodies; and it keeps
  * every cell loop finite (a float cell index beyond 2^53 could not be incremented).
+ * @category Collision
  */
 export const CELL_LIMIT = 268_435_456;
 
@@ -193,6 +198,7 @@ function ensureGrid(cs: CollisionState, bodies: number, tableSize: number): void
  *
  * Also fills the per-body scratch the solver reads: effective inverse mass and inertia (0 for static
  * and kinematic bodies), body type and margin.
+ * @category Collision
  */
 export function broadphaseSystem(world: PhysicsWorld): void {
   const c = world.components;

@@ -56,6 +56,7 @@ import type { approach2D } from './solver-stages-kernel.js';
  * that of solver.ts's one-thread loops, support rows of the relax passes included (support.ts: a
  * frictionless row with one ball resting on another holds the lower ball when that slows the upper one
  * less than the lower). Returns 0 (-1 if another thread failed and this one stopped).
+ * @category Collision
  */
 export function solveColored2D(
   A: KernelArray[],
@@ -243,6 +244,7 @@ export function solveColored2D(
  * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
  * filled), over `rows` buffer rows (its P[11]), measuring the approach speeds if `approach` (its P[21] = 1):
  * the size its claim array needs.
+ * @category Collision
  */
 export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: boolean): number {
   const substeps = plan[0]!,
@@ -269,6 +271,7 @@ export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: b
  * Packs the contact buffer's rows of packing range `blk` (of `parts`) into the pack, each at its group's
  * next slot (solveColored2D's A and P layout: A 0 pack, 6 groups, 7 offsets, 8 to 20 the buffer's
  * arrays, 26 pair; P 11 rows, 12 group slots a range).
+ * @category Collision
  */
 export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
   const pk = A[0] as Float64Array,
@@ -326,6 +329,7 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
  * Packs rows[0 .. count - 1] of the contact buffer again, each into the pack row coloredPack2D gave it
  * (A[30], slot), from the buffer's values now (A as coloredPack2D's): for rows whose values changed
  * after they were packed (impacts.ts impactChangedRows). Rows left out of the pack (group 255) stay out.
+ * @category Collision
  */
 export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
   const pk = A[0] as Float64Array,
@@ -361,7 +365,10 @@ export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: numbe
   }
 }
 
-/** Writes pack rows [k0, k1)'s impulses back to the contact buffer (normal, tangent, largest pass impulse, delivered total; A as coloredPack2D, 21 and 22 the last two). */
+/**
+ * Writes pack rows [k0, k1)'s impulses back to the contact buffer (normal, tangent, largest pass impulse, delivered total; A as coloredPack2D, 21 and 22 the last two).
+ * @category Collision
+ */
 export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
   const pk = A[0] as Float64Array,
     LN = A[18] as Float64Array,
@@ -384,6 +391,7 @@ export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void 
  * A body stage over solver bodies [q0, q1) (`ordered` 1: the bodies order[q0 .. q1 - 1], a strip pair's;
  * 0: the solver indices themselves): `stage` 1 gravity (dynamic bodies: v += g h_s, P 9-10), 2 positions
  * (x += v h_s, and the rotation owed, P 8).
+ * @category Collision
  */
 export function coloredBodies2D(
   sb: Float64Array,
@@ -422,6 +430,7 @@ export function coloredBodies2D(
  * Pack rows [r0, r1) of one block: `mode` 0 the warm start; else a pass, 1 relax or 3 biased, plus 4
  * on the substep's last pass (each row's impulse is added to what the substep delivered). P as
  * solveColored2D's.
+ * @category Collision
  */
 export function coloredRows2D(
   pk: Float64Array,

@@ -54,6 +54,7 @@ import { downwardInto, SUPPORT_COS } from './support.js';
 /**
  * Moves every typed array of a contact buffer that is not on a SharedArrayBuffer onto one (same
  * contents), so the pool's workers can read and write it (the solver and its threaded stages).
+ * @category Collision
  */
 export function shareContactBuffer(buf: ContactBuffer): void {
   const rec = buf as unknown as Record<string, unknown>;
@@ -64,25 +65,33 @@ export function shareContactBuffer(buf: ContactBuffer): void {
   }
 }
 
-/** Colours before the overflow colour (bits of a 32-bit mask a body). */
+/**
+ * Colours before the overflow colour (bits of a 32-bit mask a body).
+ * @category Collision
+ */
 export const MAX_COLORS = 32;
 
 /**
  * Strips the movable bodies are first cut into (even, at most MAX_COLORS: a strip is a packing group);
  * fewer (halved down to 4) when too many rows join bodies more than one strip apart.
+ * @category Collision
  */
 export const STRIPS = 32;
 
 /** Rows a block of a graph colour. */
 const BLOCK_ROWS = 256;
 
-/** Int32 slots of the plan before the colours' first blocks (see solveColored2D). */
+/**
+ * Int32 slots of the plan before the colours' first blocks (see solveColored2D).
+ * @category Collision
+ */
 export const PLAN_HEAD = 12;
 
 /**
  * Microseconds a thread of the coloured solve spins, waiting for the next colour, before it blocks in
  * Atomics.wait: waking a blocked thread takes some tens of microseconds, about what the threads' ends
  * of a colour differ by, so a short spin saves that wake-up without holding a core for long.
+ * @category Collision
  */
 export const SPIN_MICROSECONDS = 50;
 
@@ -192,6 +201,7 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
 /**
  * Whether the step's 2D ball contacts go through the coloured solve (see the file's header): a pool,
  * no joints or manifolds (`others` true when there are), shared solver state, enough rows.
+ * @category Collision
  */
 export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others: boolean): boolean {
   // A plan left by a step that stopped before its restitution stage is not this step's.
@@ -328,6 +338,7 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
 /**
  * Appends approach2D's arrays for `buf`'s rows (solver-stages-kernel.ts: ia, ib, a, b, the normal,
  * relativeVelocity, impactVelocity, separation, impulse, body types, solver state) to `A`; returns `A`.
+ * @category Collision
  */
 export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: KernelArray[]): KernelArray[] {
   A.push(
@@ -396,6 +407,7 @@ function planParameters(
  * So the plan and pack are the ones the calling thread would make after the stage. solveColoredSubsteps
  * joins it; when it did not plan (too many rows overflow at STRIPS strips) or did not start, the plan is
  * made there, on the calling thread.
+ * @category Collision
  */
 export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: boolean): void {
   const cs = world.collision;
@@ -434,7 +446,10 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
   return stripLayout2D(A, planParameters(cs, buf, s, used, parts, false, false), used, 0);
 }
 
-/** Colours used by the last coloured solve of `cs` (0: none ran), for tests and the bench. */
+/**
+ * Colours used by the last coloured solve of `cs` (0: none ran), for tests and the bench.
+ * @category Collision
+ */
 export function lastColorCount(cs: CollisionState): number {
   const s = scratchOf.get(cs);
   return s === undefined ? 0 : s.plan[4]!;
@@ -446,6 +461,7 @@ export function lastColorCount(cs: CollisionState): number {
  * of a colour run at once on different threads; the overflow colour is one block), the rows in the
  * overflow colour, the rows packed, and whether the rows were cut into strips. 0 conflicts is the
  * cut's promise.
+ * @category Collision
  */
 export function coloringConflicts(cs: CollisionState): { conflicts: number; overflow: number; rows: number; strips: boolean } {
   const s = scratchOf.get(cs);
@@ -495,6 +511,7 @@ function mayWait(): boolean {
  * back to `buf` (normal, tangent, largest pass impulse, delivered total), as the one-thread loop of
  * solver.ts leaves them. `soft`: dynamic bias rate, mass scale, impulse scale, then the rigid ones.
  * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
  */
 export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs: number, soft: readonly number[], push: number): void {
   const cs = world.collision,
@@ -562,7 +579,10 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   s.pending = true;
 }
 
-/** The colours of this step's coloured substeps, for the restitution stage (solver-stages-threads.ts). */
+/**
+ * The colours of this step's coloured substeps, for the restitution stage (solver-stages-threads.ts).
+ * @category Collision
+ */
 export interface ColoredPlan {
   /** The packed rows, colour by colour (contact-pack2d.ts), shared. */
   pack: Float64Array;
@@ -583,6 +603,7 @@ export interface ColoredPlan {
 /**
  * The plan of this step's coloured substeps, once (the next call returns null), or null when this
  * step's substeps did not run by colours.
+ * @category Collision
  */
 export function coloredPlan(cs: CollisionState): ColoredPlan | null {
   const s = scratchOf.get(cs);
@@ -591,7 +612,10 @@ export function coloredPlan(cs: CollisionState): ColoredPlan | null {
   return s;
 }
 
-/** Whether the calling thread may block in Atomics.wait (not a browser's main thread). */
+/**
+ * Whether the calling thread may block in Atomics.wait (not a browser's main thread).
+ * @category Collision
+ */
 export function callerMayWait(): boolean {
   return mayWait();
 }

@@ -14,6 +14,7 @@ import { contact3DStateOf, type EventList3D } from './manifolds3d-state.js';
 /**
  * Approach speed above which a begin event is also a hit event, m/s: Box2D v3's default
  * `hitEventThreshold` (1 m/s), so a box set down gently begins touching without a hit.
+ * @category Events
  */
 export const HIT_SPEED = 1;
 
@@ -21,6 +22,7 @@ export const HIT_SPEED = 1;
  * One list of contact events, structure of arrays; read rows 0..count-1. Entities are handles (as
  * the API takes them): 0 is the static world (the body of a plane, a segment or the boundary box), and
  * in 2D a boundary face is the shape -1 - face (faces 0 -x, 1 +x, 2 -y, 3 +y).
+ * @category Events
  */
 export interface ContactEventList {
   /** Events in the list (rows 0..count-1). */
@@ -57,6 +59,7 @@ export interface ContactEventList {
  * pair stopped touching (or one of its shapes or bodies was removed); `hit`: the begin events whose
  * approach speed was at least the hit speed; `sensorBegin` / `sensorEnd`: a shape started or stopped
  * overlapping a sensor (`shapeA` the sensor).
+ * @category Events
  */
 export interface ContactEventLists {
   begin: ContactEventList;
@@ -154,6 +157,7 @@ const views = new WeakMap<PhysicsWorld, ContactEventLists>();
  * @param world a 2D or 3D physics world.
  * @param hitSpeed approach speed at which a begin event is also a hit, m/s, >= 0 (default `HIT_SPEED`, 1 m/s).
  * @throws RangeError if `hitSpeed` is negative or not finite.
+ * @category Events
  */
 export function contactEvents(world: PhysicsWorld, hitSpeed: number = HIT_SPEED): ContactEventLists {
   assertNonNegative('contactEvents', 'hitSpeed', hitSpeed);

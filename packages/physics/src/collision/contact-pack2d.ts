@@ -16,5 +16,6 @@
  * Numbers a packed row: 0 nx, 1 ny, 2 ra, 3 rb (m), 4 start separation (m), 5 normal mass,
  * 6 tangent mass (kg), 7 friction bound, 8 normal impulse, 9 tangent impulse (N s), 10 1 if A has
  * infinite mass, 11 largest normal impulse of a solve pass (N s).
+ * @category Collision
  */
 export const PACK_STRIDE = 12;

@@ -36,7 +36,10 @@ import type { CollisionSettings } from './state.js';
  * ball comes and goes does not jolt the contacts of the others.
  */
 
-/** The length at which the world's contact tolerances apply as given, m. */
+/**
+ * The length at which the world's contact tolerances apply as given, m.
+ * @category Collision
+ */
 export const CONTACT_LENGTH_UNIT = 1;
 
 /**
@@ -45,12 +48,14 @@ export const CONTACT_LENGTH_UNIT = 1;
  * itself: a 300-ball bin of 2 cm balls overlaps 41 % of a radius at a quarter, 12 % at a half and 3 %
  * at one). Dense piles near the cap do not settle, though (see AUTO_HERTZ_FRACTION), which is why the
  * automatic substeps aim lower; the cap binds only with `autoSubsteps` false or past MAX_AUTO_SUBSTEPS.
+ * @category Collision
  */
 export const BALL_HERTZ_FRACTION = 1;
 
 /**
  * The smallest ball radius over the rows of `buf` (ball B of every row, and ball A of ball pairs), m;
  * Infinity if there are no rows.
+ * @category Collision
  */
 export function smallestBallRadius(buf: ContactBuffer): number {
   let r = Infinity;
@@ -72,6 +77,7 @@ const stepLength = new WeakMap<ContactBuffer, number>();
  * The length scale of the ball contacts in `buf`, m: the length the step that solved (or is solving)
  * them used, which `withScaledSubsteps` moves toward their smallest ball radius at most LENGTH_RAMP
  * times a step; for a buffer no step has used, their smallest ball radius (Infinity if no rows).
+ * @category Collision
  */
 export function contactLength(buf: ContactBuffer): number {
   return stepLength.get(buf) ?? smallestBallRadius(buf);
@@ -84,10 +90,14 @@ export function contactLength(buf: ContactBuffer): number {
  * sudden push-out threw the big balls up at 0.8 m/s (2.3 m/s at a fixed 12 substeps; 0.06 m/s at the
  * old 240 Hz cap); ramped over about 8 steps they move at most 0.09 m/s (a 2 cm ball resting there
  * from the start: 0.02 m/s).
+ * @category Collision
  */
 export const LENGTH_RAMP = 1.5;
 
-/** Most solver substeps the automatic choice takes in a step (the world option's own upper bound). */
+/**
+ * Most solver substeps the automatic choice takes in a step (the world option's own upper bound).
+ * @category Collision
+ */
 export const MAX_AUTO_SUBSTEPS = 16;
 
 /**
@@ -100,6 +110,7 @@ export const MAX_AUTO_SUBSTEPS = 16;
  * (the exact equilibrium of 120 balls of 2 cm zigzagging between walls 5 r apart grew unstable at 26
  * substeps, f h_s 0.27, and held at 28); at 0.6 the relax sweep's support rows (support.ts) bring
  * such columns to rest from a Galton-bin start, not from every start.
+ * @category Collision
  */
 export const AUTO_HERTZ_FRACTION = 0.6;
 
@@ -109,6 +120,7 @@ export const AUTO_HERTZ_FRACTION = 0.6;
  * f = contactHertz sqrt(CONTACT_LENGTH_UNIT / length) exceeds AUTO_HERTZ_FRACTION of that substep
  * rate: then ceil(h f / AUTO_HERTZ_FRACTION), at most MAX_AUTO_SUBSTEPS (never fewer than the
  * setting). A scene scaled by L in length and sqrt(L) in time step gets the same count.
+ * @category Collision
  */
 export function solverSubstepsFor(settings: CollisionSettings, length: number, h: number): number {
   const base = settings.solverSubsteps;
@@ -148,6 +160,7 @@ registerExternalWorldState({
  * The ball contacts' warm-start impulses are impulses per substep: when the count differs from the
  * last step's they are scaled by last / new. Shape manifolds and joints keep theirs, which their
  * first substep corrects.
+ * @category Collision
  */
 export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWorld) => void): void {
   const cs = world.collision,
@@ -203,18 +216,25 @@ function speedScale(length: number): number {
 /**
  * Ball contact frequency for contacts of `length` (m) at substep `hs` (s), Hz: contactHertz times
  * sqrt(CONTACT_LENGTH_UNIT / length), at most BALL_HERTZ_FRACTION / hs.
+ * @category Collision
  */
 export function ballContactHertz(settings: CollisionSettings, length: number, hs: number): number {
   const s = speedScale(length);
   return Math.min(settings.contactHertz / s, BALL_HERTZ_FRACTION / hs);
 }
 
-/** Push-out speed limit for contacts of `length` (m), m/s: contactPushSpeed times sqrt(length / CONTACT_LENGTH_UNIT). */
+/**
+ * Push-out speed limit for contacts of `length` (m), m/s: contactPushSpeed times sqrt(length / CONTACT_LENGTH_UNIT).
+ * @category Collision
+ */
 export function ballContactPushSpeed(settings: CollisionSettings, length: number): number {
   return settings.contactPushSpeed * speedScale(length);
 }
 
-/** Stick speed of friction for contacts of `length` (m), m/s: stickSpeed times sqrt(length / CONTACT_LENGTH_UNIT). */
+/**
+ * Stick speed of friction for contacts of `length` (m), m/s: stickSpeed times sqrt(length / CONTACT_LENGTH_UNIT).
+ * @category Collision
+ */
 export function ballStickSpeed(settings: CollisionSettings, length: number): number {
   return settings.stickSpeed * speedScale(length);
 }

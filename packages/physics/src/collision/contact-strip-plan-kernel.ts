@@ -37,6 +37,7 @@ import type { stripCut2D } from './contact-strips-kernel.js';
  * (P[14] + 1), 13 PLAN_HEAD (contact-colors.ts), 14 MAX_COLORS, 15 rows a block (graph colours; unused
  * here). `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
  * 11 stripLayout2D. Returns 1 when planned, -1 when too many rows overflow.
+ * @category Collision
  */
 export function stripPlan2D(
   A: KernelArray[],
@@ -145,6 +146,7 @@ export function stripPlan2D(
  * colour g, cut into blocks of P[15] rows. The plan (A[4]) gets colour c's first block at P[13] + c (the
  * overflow colour, after the others, one block), the colours at slot 4 and the rows to pack at slot 8.
  * A and P as stripPlan2D's (42 counts, 43 start, 44 next). Returns the rows to pack.
+ * @category Collision
  */
 export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number, half: number): number {
   const plan = A[4] as Int32Array,

@@ -25,6 +25,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * P: 0 solver bodies, 1 rows, 2 strips (2 .. 255), 3 bins (<= P[5]), 4 BodyType.Dynamic, 5 the "no bin"
  * mark, 6 b.
  * Returns 0.
+ * @category Collision
  */
 export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;

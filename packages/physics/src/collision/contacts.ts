@@ -22,10 +22,14 @@ import { warmStartTable } from './warm-start-kernel.js';
  * - `Segment` (2): ball B against the static segment entity `feature`;
  * - `StaticBall` (3): ball B against the static ball entity `feature`;
  * - `Plane` (4): ball B against the static plane entity `feature`.
+ * @category Collision
  */
 export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3, Plane: 4 } as const);
 
-/** The contact rows of one step. */
+/**
+ * The contact rows of one step.
+ * @category Collision
+ */
 export interface ContactBuffer {
   /** Rows in use. */
   count: number;
@@ -126,6 +130,7 @@ const UINT_FIELDS = ['stampA', 'stampB'] as const;
 /**
  * Allocates a contact buffer with room for `capacity` rows. Written as one object literal on purpose:
  * an object that gains many properties through computed keys drops into V8's slow dictionary mode.
+ * @category Collision
  */
 export function createContactBuffer(capacity = 1024): ContactBuffer {
   const f = (): Float64Array => new Float64Array(capacity);
@@ -166,7 +171,10 @@ export function createContactBuffer(capacity = 1024): ContactBuffer {
   };
 }
 
-/** Doubles the rows of `buf` until it holds at least `needed`, keeping rows 0..count-1. */
+/**
+ * Doubles the rows of `buf` until it holds at least `needed`, keeping rows 0..count-1.
+ * @category Collision
+ */
 export function growContactBuffer(buf: ContactBuffer, needed: number): void {
   if (needed <= buf.capacity) return;
   let cap = buf.capacity;
@@ -190,6 +198,7 @@ export function growContactBuffer(buf: ContactBuffer, needed: number): void {
  * (kind, a, b, feature) in an open-addressing hash table (linear probing). Starting the solver from
  * last step's impulses is what lets a few iterations hold a deep pile still (Catto, "Iterative
  * Dynamics with Temporal Coherence", GDC 2005).
+ * @category Collision
  */
 export interface WarmStartCache {
   /** Power-of-two slot count. */
@@ -200,7 +209,10 @@ export interface WarmStartCache {
   rows: ContactBuffer;
 }
 
-/** Makes an empty cache. */
+/**
+ * Makes an empty cache.
+ * @category Collision
+ */
 export function createWarmStartCache(): WarmStartCache {
   return { size: 0, slots: new Int32Array(0), rows: createContactBuffer(16) };
 }
@@ -218,6 +230,7 @@ function hashKey(kind: number, a: number, b: number, f: number): number {
  * least 16, that is at least 2n, kept when the present table is large enough; on a SharedArrayBuffer
  * when `shared` (a worker builds it) or when it is already there. Its contents are left to the build
  * (warm-start-kernel.ts warmStartTable zeroes them).
+ * @category Collision
  */
 export function reserveWarmStartTable(cache: WarmStartCache, n: number, shared: boolean): void {
   const fits = cache.size >= 2 * n && cache.size !== 0;
@@ -234,6 +247,7 @@ export function reserveWarmStartTable(cache: WarmStartCache, n: number, shared: 
 /**
  * Makes `current` the cache's rows (no copying) and returns the buffer the caller should fill next,
  * emptied (it holds stale rows, refilled from count 0).
+ * @category Collision
  */
 export function swapWarmStartRows(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
   const spare = cache.rows;
@@ -250,6 +264,7 @@ const tableParams = new Float64Array(2);
  * Stores this step's contacts as the cache for the next step: the rows by swapWarmStartRows, the
  * table (slot -> row + 1 by hashKey and linear probing) built here by warmStartTable.
  * Returns the buffer the caller should use as its next `current`.
+ * @category Collision
  */
 export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
   reserveWarmStartTable(cache, current.count, false);
@@ -264,6 +279,7 @@ export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): C
 /**
  * Finds the previous step's row of the contact (kind, a, b, feature) with matching spawn stamps,
  * or -1 if it is new.
+ * @category Collision
  */
 export function findWarmStart(
   cache: WarmStartCache,
@@ -290,7 +306,10 @@ export function findWarmStart(
   }
 }
 
-/** One contact of the last step, as `forEachContact` hands it out (the same object each call: copy what you keep). */
+/**
+ * One contact of the last step, as `forEachContact` hands it out (the same object each call: copy what you keep).
+ * @category Collision
+ */
 export interface ContactView {
   /** Body A's entity id, or the static feature's (static ball, segment or plane entity); 0 for the boundary box. */
   a: number;
@@ -322,6 +341,7 @@ const view: ContactView = { a: 0, b: 0, kind: 0, nx: 0, ny: 0, nz: 0, x: 0, y: 0
  * ball-static-ball, ball-plane), with a reused view object (see ContactView). The contact list is the
  * narrowphase's: it includes speculative contacts that did not touch (impulse 0).
  * @throws whatever `fn` throws (the world is not changed by reading).
+ * @category Collision
  */
 export function forEachContact(
   world: { collision: { cache: WarmStartCache }; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } },

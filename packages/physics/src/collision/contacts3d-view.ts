@@ -7,7 +7,10 @@ import { contact3DStateOf } from './manifolds3d-state.js';
  * (copy what you keep). Contacts of balls (`forEachContact`) are not listed here.
  */
 
-/** One 3D contact point of the last step. Bodies and shapes are slots (0: the static world or a plane or mesh). */
+/**
+ * One 3D contact point of the last step. Bodies and shapes are slots (0: the static world or a plane or mesh).
+ * @category Events
+ */
 export interface Contact3DView {
   /** Body slots A and B (A may be 0: the static world), and their shape slots (a plane or mesh entity for those). */
   bodyA: number;
@@ -47,6 +50,7 @@ const view: Contact3DView = {
  * Calls `fn` once per contact point of the last step's 3D shape manifolds (up to four a manifold),
  * in solver order, with a reused view. @returns the number of points visited. A world without 3D
  * shapes has none. `fn` must not step or change the world.
+ * @category Events
  */
 export function forEachContact3D(world: PhysicsWorld, fn: (contact: Readonly<Contact3DView>) => void): number {
   const st = contact3DStateOf(world);

@@ -23,6 +23,7 @@ import { BodyType } from './state.js';
  * earliest such time, still apart, with its velocity: in the next step the contact, now short, has the
  * right normal and stops it (Box2D does the same with its time of impact). Pairs that already touch at
  * the start of the step are the solver's; segments, planes and the boundary box are not swept.
+ * @category Collision
  */
 export function continuousCollisionSystem(world: PhysicsWorld): void {
   const st = world.collision.shapes;

@@ -11,6 +11,7 @@ function handle(world: PhysicsWorld, e: number): number {
 /**
  * Appends an event (entities as slots; stored as the handles of the lives they are in now, see
  * `currentHandle`; 0 and a boundary face's negative id stay as they are); returns its row.
+ * @category Events
  */
 export function pushEvent(world: PhysicsWorld, list: EventList, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
   const i = list.count;

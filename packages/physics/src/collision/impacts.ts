@@ -8,6 +8,7 @@ import { BodyType } from './state.js';
  * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the
  * body's latest impact this step, s (-1: the body carried a load and is left to the substeps); and
  * whether the soft substeps leave the body alone (1) or not (0), set by `separateImpactedBodies`.
+ * @category Collision
  */
 export const IMPACT_STRIDE = 5;
 
@@ -59,6 +60,7 @@ function markChanged(i: number): void {
  * impacted row, a start separation that took in corrections or a spare gap; the rows
  * `releaseImpactedRows` zeroes are among them): rows[0 .. count - 1], each once. A coloured solve whose
  * rows were packed while the stage ran packs these again (contact-colors.ts). Valid until the next call.
+ * @category Collision
  */
 export function impactChangedRows(): { rows: Int32Array; count: number } {
   return { rows: changedRows, count: changedCount };
@@ -70,6 +72,7 @@ export function impactChangedRows(): { rows: Int32Array; count: number } {
  * does nothing in a pass). Kept apart from `applyImpacts` so the coloured solve can plan its rows from
  * the values before it (contact-colors.ts: the plan runs on a worker beside the stage). Call it once,
  * after `applyImpacts` and before the substeps.
+ * @category Collision
  */
 export function releaseImpactedRows(buf: ContactBuffer): void {
   const NM = buf.normalMass,
@@ -127,6 +130,7 @@ let sortWork1 = new Int32Array(256),
  *
  * Then `separateImpactedBodies` sorts the bodies into those the soft substeps leave alone (they keep
  * their exact end positions) and the rest.
+ * @category Collision
  */
 export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
@@ -264,6 +268,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
  * even NaN keys come out in the same order. Without the closure and the boxed number each of its
  * calls returned (~250 kB a step at 20,000 balls) and the builtin's two work arrays. n >= 0 and
  * n <= order.length; order's entries index key. Exported for its test (impact-order.test.ts).
+ * @category Collision
  */
 export function sortByKey(order: Int32Array, key: Float64Array, n: number): void {
   if (n < 2) return;

@@ -61,6 +61,7 @@ function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number)
 /**
  * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
  * started, same stamp), writes the rows' indices, and returns the new solver body count.
+ * @category Collision
  */
 export function gatherManifoldBodies(world: PhysicsWorld, count: number): number {
   const cs = world.collision;
@@ -102,7 +103,10 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
   return count;
 }
 
-/** Material, effective masses, start-of-step velocities and warm start of every manifold. */
+/**
+ * Material, effective masses, start-of-step velocities and warm start of every manifold.
+ * @category Collision
+ */
 export function prepareManifolds(world: PhysicsWorld): void {
   const cs = world.collision,
     st = cs.shapes,
@@ -253,7 +257,10 @@ export function prepareManifolds(world: PhysicsWorld): void {
   }
 }
 
-/** Applies every manifold point's accumulated impulses (once per substep). */
+/**
+ * Applies every manifold point's accumulated impulses (once per substep).
+ * @category Collision
+ */
 export function warmStartManifolds(cs: CollisionState): void {
   const buf = cs.shapes.manifolds,
     sb = cs.bodyState;
@@ -318,6 +325,7 @@ function pushes(buf: CollisionState['shapes']['manifolds'], i: number): boolean 
 /**
  * One pass over the manifolds: normal rows (soft bias if `useBias`), friction, rolling resistance, with
  * the softness `prepareManifolds` chose.
+ * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
   const buf = cs.shapes.manifolds,
@@ -547,7 +555,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
   }
 }
 
-/** Adds each point's substep impulse to its step total (call once per substep, after relaxing). */
+/**
+ * Adds each point's substep impulse to its step total (call once per substep, after relaxing).
+ * @category Collision
+ */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
   const buf = cs.shapes.manifolds;
   const LN = buf.normalImpulse,
@@ -561,6 +572,7 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
  * v_n = -e v_n0 (the accumulated normal impulse stays >= 0). The two points of a manifold with a valid
  * block (see `prepareManifolds`) that both qualify are solved together, as the 2 x 2 complementarity
  * problem of Box2D 2.x's block solver, so a face-on hit rebounds without spin.
+ * @category Collision
  */
 export function applyManifoldRestitution(world: PhysicsWorld): void {
   const cs = world.collision,
@@ -699,6 +711,7 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
 /**
  * After the solve: marks the manifolds that touch, writes begin and end touch events against the
  * previous step's, and keeps this step's rows as the next step's warm-start cache.
+ * @category Collision
  */
 export function finishManifolds(world: PhysicsWorld): void {
   const st = world.collision.shapes;

@@ -24,6 +24,7 @@ import { type ConvexGeometry, createGeometry } from '../shapes/geometry.js';
  *   least separation.
  * A point is kept only if its separation is below `speculative` (m): speculative contacts, which
  * the solver lets close during the step (Catto, "Continuous Collision", GDC 2013).
+ * @category Collision
  */
 export interface Manifold {
   /** Points in use, 0 to 2. */
@@ -42,7 +43,10 @@ export interface Manifold {
   readonly id: Int32Array;
 }
 
-/** An empty manifold (reuse it across calls; the functions overwrite it). */
+/**
+ * An empty manifold (reuse it across calls; the functions overwrite it).
+ * @category Collision
+ */
 export function createManifold(): Manifold {
   return {
     count: 0,
@@ -73,6 +77,7 @@ const scratchB = createGeometry();
  * Dispatches on the vertex counts: 1 circle, 2 capsule or segment, 3 to 8 polygon.
  * @param out overwritten; its normal points from A to B.
  * @param speculative largest separation kept, m (>= 0).
+ * @category Collision
  */
 export function collideShapes(
   out: Manifold,
@@ -138,7 +143,10 @@ export function collideShapes(
   toWorld(out, xa, ya, ca, sa);
 }
 
-/** Circle (centre a, radius ra) against circle (b, rb), world frame. */
+/**
+ * Circle (centre a, radius ra) against circle (b, rb), world frame.
+ * @category Collision
+ */
 export function collideCircles(
   out: Manifold,
   ax: number,
@@ -315,6 +323,7 @@ const sepA = new Float64Array(2),
 
 /**
  * Two rounded polygons (2 to 8 vertices each) in A's frame; see the module comment. Public for tests.
+ * @category Collision
  */
 export function collidePolygonsLocal(out: Manifold, A: ConvexGeometry, B: ConvexGeometry, speculative: number): void {
   out.count = 0;
@@ -475,6 +484,7 @@ const fr = new Float64Array(2);
 /**
  * Fractions (s, t) in [0, 1] of the closest points p1 + s (q1 - p1) and p2 + t (q2 - p2) of two
  * segments (Ericson, Real-Time Collision Detection, 5.1.9), written to `res`.
+ * @category Collision
  */
 export function segmentFractions(
   p1x: number,
@@ -536,6 +546,7 @@ function clamp01(x: number): number {
  * Shape B (placed at (xb, yb), cos cb, sin sb) against the half-plane n . x <= d (its solid side),
  * with (nx, ny) the unit normal pointing out of the solid: up to two points at the vertices of least
  * separation, normal n (from the half-plane, A, to the shape, B). Feature ids are `idBase` + vertex.
+ * @category Collision
  */
 export function collideHalfPlane(
   out: Manifold,

@@ -76,13 +76,19 @@ const HIT_FRACTION = 0.25;
 const SWEEP_TOLERANCE = 1e-3;
 const SWEEP_SPEED = 1e-3;
 
-/** Whether the world has 3D shape rows to solve this step. */
+/**
+ * Whether the world has 3D shape rows to solve this step.
+ * @category Collision
+ */
 export function manifolds3DToSolve(world: PhysicsWorld): boolean {
   const st = contact3DStateOf(world);
   return st !== undefined && st.current.count > 0;
 }
 
-/** Gives every moving body of a 3D manifold a solver index (continuing the list), writes the rows' indices; returns the new count. */
+/**
+ * Gives every moving body of a 3D manifold a solver index (continuing the list), writes the rows' indices; returns the new count.
+ * @category Collision
+ */
 export function gatherManifold3DBodies(world: PhysicsWorld, count: number): number {
   const st = contact3DStateOf(world);
   if (st === undefined || st.current.count === 0) return count;
@@ -138,7 +144,10 @@ function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number)
   out[2] = a3;
 }
 
-/** World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds. */
+/**
+ * World inverse inertia tensors of the solver bodies, effective masses, separations corrected to the solver's base, approach speeds.
+ * @category Collision
+ */
 export function prepareManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world, true);
   prepareSolverBodies3D(world);
@@ -334,6 +343,7 @@ function isotropic(T: Float64Array, o: number): boolean {
  * The world inverse inertia tensor of every solver body (I^-1 = R diag(1 / I_k) R^T with R from its
  * orientation; isotropic for a ball) and its rotation owed at the start of the solve (rotations in the
  * substeps are measured from it). Shared by the 3D contact and joint rows.
+ * @category Collision
  */
 export function prepareSolverBodies3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world, true);
@@ -411,6 +421,7 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
 /**
  * Warm start: last step's impulses applied again. A manifold's normal impulses are summed over its points
  * (linear sum(ln) n, angular sum(ln I^-1 (r x n))), its friction impulses added, and each body written once.
+ * @category Collision
  */
 export function warmStartManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
@@ -514,7 +525,10 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   }
 }
 
-/** One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor). */
+/**
+ * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
+ * @category Collision
+ */
 export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
@@ -868,6 +882,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
 /**
  * Restitution after the substeps: points that approached faster than the threshold and carried impulse
  * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
+ * @category Collision
  */
 export function applyManifold3DRestitution(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
@@ -961,6 +976,7 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
  * After the solve: which pairs touch (a point carried a normal impulse, or overlapped at the start of
  * the step) against those of the last step gives the begin and end touch events. Called at the end of
  * the contact solver, also on steps without rows (so the last contacts end).
+ * @category Collision
  */
 export function finishManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
@@ -1014,7 +1030,10 @@ export function finishManifolds3D(world: PhysicsWorld): void {
   st.touchingNext = prev;
 }
 
-/** The 3D contact and sensor events of the last step (empty lists in a world without 3D shapes). Read rows 0..count-1 of each list; entities are handles. */
+/**
+ * The 3D contact and sensor events of the last step (empty lists in a world without 3D shapes). Read rows 0..count-1 of each list; entities are handles.
+ * @category Collision
+ */
 export function contactEvents3D(world: PhysicsWorld): import('./manifolds3d-state.js').ContactEvents3D {
   return contact3DStateOf(world, true).events;
 }

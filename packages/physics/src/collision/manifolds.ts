@@ -8,6 +8,7 @@
  * may be static or kinematic; a contact with a plane, a segment or the boundary box has body A = 0
  * (the static world) and `shapeA` the plane or segment entity, or -1 - face for a boundary face
  * (faces 0 -x, 1 +x, 2 -y, 3 +y).
+ * @category Collision
  */
 export interface ManifoldBuffer {
   /** Rows in use. */
@@ -125,7 +126,10 @@ const POINT_FLOAT = [
   'relativeVelocity',
 ] as const;
 
-/** A manifold buffer with room for `capacity` rows (written as one literal: see contacts.ts). */
+/**
+ * A manifold buffer with room for `capacity` rows (written as one literal: see contacts.ts).
+ * @category Collision
+ */
 export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
   const f = (): Float64Array => new Float64Array(capacity);
   const p = (): Float64Array => new Float64Array(2 * capacity);
@@ -173,7 +177,10 @@ export function createManifoldBuffer(capacity = 256): ManifoldBuffer {
   };
 }
 
-/** Grows `buf` (doubling) to hold at least `needed` rows, keeping rows 0..count-1. */
+/**
+ * Grows `buf` (doubling) to hold at least `needed` rows, keeping rows 0..count-1.
+ * @category Collision
+ */
 export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
   if (needed <= buf.capacity) return;
   let cap = buf.capacity;
@@ -207,6 +214,7 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
  *   the step (m/s, >= 0);
  * - end: a pair that touched at the end of the previous step no longer does (or one was removed);
  * - sensorBegin / sensorEnd: a shape started or stopped overlapping a sensor shape (`shapeA` the sensor).
+ * @category Collision
  */
 export interface ContactEvents {
   /** Pairs that started touching. */
@@ -219,7 +227,10 @@ export interface ContactEvents {
   sensorEnd: EventList;
 }
 
-/** One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1. */
+/**
+ * One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1.
+ * @category Collision
+ */
 export interface EventList {
   /** Events in the list (rows 0..count-1). */
   count: number;
@@ -258,7 +269,10 @@ function createEventList(n = 16): EventList {
   };
 }
 
-/** Per-step scratch of the shape broadphase (colliders: shape entities and ball bodies). */
+/**
+ * Per-step scratch of the shape broadphase (colliders: shape entities and ball bodies).
+ * @category Collision
+ */
 export interface ShapeScratch {
   /** Colliders this step: shape entity (a ball body counts as its own circle shape) and its body. */
   count: number;
@@ -322,7 +336,10 @@ function createShapeScratch(): ShapeScratch {
   };
 }
 
-/** Everything the shape collision keeps between and within steps; `world.collision.shapes`. */
+/**
+ * Everything the shape collision keeps between and within steps; `world.collision.shapes`.
+ * @category Collision
+ */
 export interface ShapeCollisionState {
   /** Whether any shape was ever added (until then the shape systems return at once). */
   active: boolean;
@@ -374,7 +391,10 @@ export interface ShapeCollisionState {
   bodyAngle0: Float64Array;
 }
 
-/** The state of a world without shapes (arrays are allocated with the first shape). */
+/**
+ * The state of a world without shapes (arrays are allocated with the first shape).
+ * @category Collision
+ */
 export function createShapeCollisionState(): ShapeCollisionState {
   return {
     active: false,
@@ -404,7 +424,10 @@ export function createShapeCollisionState(): ShapeCollisionState {
   };
 }
 
-/** Allocates the per-entity arrays of the shape state (with the world's first shape). */
+/**
+ * Allocates the per-entity arrays of the shape state (with the world's first shape).
+ * @category Collision
+ */
 export function ensureShapeState(st: ShapeCollisionState, capacity: number): void {
   if (st.firstShape.length > 0) return;
   const n = capacity + 1;
@@ -416,14 +439,20 @@ export function ensureShapeState(st: ShapeCollisionState, capacity: number): voi
   st.bodyAngle0 = new Float64Array(n);
 }
 
-/** Hash of a shape pair key (the boundary's negative shape ids included). */
+/**
+ * Hash of a shape pair key (the boundary's negative shape ids included).
+ * @category Collision
+ */
 export function pairHash(a: number, b: number): number {
   let h = Math.imul(a, 0x9e3779b1) ^ Math.imul(b, 0x85ebca77);
   h ^= h >>> 15;
   return Math.imul(h, 0x27d4eb2f) >>> 0;
 }
 
-/** Finds the row of `previous` for the pair (a, b), or -1. */
+/**
+ * Finds the row of `previous` for the pair (a, b), or -1.
+ * @category Collision
+ */
 export function findPrevious(st: ShapeCollisionState, a: number, b: number): number {
   const slots = st.slots;
   const size = slots.length;
@@ -443,6 +472,7 @@ export function findPrevious(st: ShapeCollisionState, a: number, b: number): num
 /**
  * Makes `manifolds` the previous step's (swapping buffers) and hashes it; the new current buffer is
  * empty (count 0) but keeps the rows of the step before until refilled (`lastCount` of them).
+ * @category Collision
  */
 export function rotateManifolds(st: ShapeCollisionState): void {
   const cur = st.manifolds;

@@ -6,6 +6,7 @@ import type { PhysicsWorld } from '../world.js';
  * point slots a manifold), last step's rows for warm starting (looked up by shape pair, then by
  * feature id), and the per-solver-body world inverse inertia tensors. Kept outside the world object
  * (registered for snapshots).
+ * @category Collision
  */
 export interface Manifold3DBuffer {
   count: number;
@@ -131,7 +132,10 @@ function createBuffer(n: number): Manifold3DBuffer {
   };
 }
 
-/** Doubles a buffer's room (again until it holds at least `rows` rows, if given), keeping its rows. */
+/**
+ * Doubles a buffer's room (again until it holds at least `rows` rows, if given), keeping its rows.
+ * @category Collision
+ */
 export function growManifold3DBuffer(b: Manifold3DBuffer, rows = 0): Manifold3DBuffer {
   let n = b.bodyA.length * 2;
   while (n < rows) n *= 2;
@@ -142,7 +146,10 @@ export function growManifold3DBuffer(b: Manifold3DBuffer, rows = 0): Manifold3DB
   return g as unknown as Manifold3DBuffer;
 }
 
-/** One list of 3D contact events; read rows 0..count-1. Entities are handles (0: the static world). */
+/**
+ * One list of 3D contact events; read rows 0..count-1. Entities are handles (0: the static world).
+ * @category Collision
+ */
 export interface EventList3D {
   count: number;
   /** Shape A (the sensor, for sensor events; a plane or mesh entity for those), shape B, and their bodies. */
@@ -165,6 +172,7 @@ export interface EventList3D {
  * The 3D contact events of the last step, as in 2D: `begin` (a pair started touching: a point carried
  * a normal impulse or overlapped), `end` (a pair that touched no longer does, or a shape was removed),
  * `sensorBegin` / `sensorEnd` (a shape started or stopped overlapping a sensor; `shapeA` the sensor).
+ * @category Collision
  */
 export interface ContactEvents3D {
   begin: EventList3D;
@@ -181,7 +189,10 @@ function createEventList(n = 16): EventList3D {
   return l as unknown as EventList3D;
 }
 
-/** Appends a row to an event list (growing it) and returns the row. */
+/**
+ * Appends a row to an event list (growing it) and returns the row.
+ * @category Collision
+ */
 export function pushEvent3D(list: EventList3D, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
   const i = list.count;
   if (i >= list.shapeA.length) {
@@ -207,7 +218,10 @@ export function pushEvent3D(list: EventList3D, shapeA: number, shapeB: number, b
   return i;
 }
 
-/** The world's 3D contact state. */
+/**
+ * The world's 3D contact state.
+ * @category Collision
+ */
 export interface Contact3DState {
   current: Manifold3DBuffer;
   previous: Manifold3DBuffer;
@@ -247,7 +261,10 @@ export interface Contact3DState {
   rotationBase: Float64Array;
 }
 
-/** Key of a row for warm starting: shapeA (capacity + 1) + shapeB, or for a mesh triangle -(shapeB 2^22 + triangle + 1). */
+/**
+ * Key of a row for warm starting: shapeA (capacity + 1) + shapeB, or for a mesh triangle -(shapeB 2^22 + triangle + 1).
+ * @category Collision
+ */
 export function rowKey(capacity: number, shapeA: number, shapeB: number, sub: number): number {
   return sub === 0 ? shapeA * (capacity + 1) + shapeB : -(shapeB * 4194304 + sub);
 }
@@ -255,6 +272,7 @@ export function rowKey(capacity: number, shapeA: number, shapeB: number, sub: nu
 /**
  * A hash table from row keys to rows (open addressing with linear probing, in typed arrays, so building
  * it each step allocates nothing once it has grown to the pile's size).
+ * @category Collision
  */
 export interface RowIndex {
   /** Keys (row keys; unused slots hold NaN) and rows, mask + 1 slots. */
@@ -269,7 +287,10 @@ function createRowIndex(): RowIndex {
   return { keys: new Float64Array(64).fill(NaN), rows: new Int32Array(64), mask: 63, count: 0 };
 }
 
-/** Empties the index and makes room for `count` keys (at most half full). */
+/**
+ * Empties the index and makes room for `count` keys (at most half full).
+ * @category Collision
+ */
 export function clearRowIndex(index: RowIndex, count: number): void {
   let size = index.mask + 1;
   if (size < 2 * count) {
@@ -288,7 +309,10 @@ function slotOfKey(key: number, mask: number): number {
   return (Math.imul(lo ^ (lo >>> 16), 0x45d9f3b) ^ Math.imul(hi, 0x27d4eb2d)) & mask;
 }
 
-/** Adds key -> row (the index must have room: clearRowIndex). */
+/**
+ * Adds key -> row (the index must have room: clearRowIndex).
+ * @category Collision
+ */
 export function insertRow(index: RowIndex, key: number, row: number): void {
   const K = index.keys,
     mask = index.mask;
@@ -299,7 +323,10 @@ export function insertRow(index: RowIndex, key: number, row: number): void {
   index.count++;
 }
 
-/** The row of `key`, or -1. */
+/**
+ * The row of `key`, or -1.
+ * @category Collision
+ */
 export function lookupRow(index: RowIndex, key: number): number {
   const K = index.keys,
     mask = index.mask;
@@ -312,7 +339,10 @@ export function lookupRow(index: RowIndex, key: number): number {
   }
 }
 
-/** Touching shape pairs: key (shapeA (capacity + 1) + shapeB), the shapes and their bodies (slots), indexed by key. */
+/**
+ * Touching shape pairs: key (shapeA (capacity + 1) + shapeB), the shapes and their bodies (slots), indexed by key.
+ * @category Collision
+ */
 export interface TouchList {
   count: number;
   keys: Float64Array;
@@ -335,7 +365,10 @@ function createTouchList(n = 64): TouchList {
   };
 }
 
-/** Appends a pair (growing the list; the caller indexes it). Returns its row. */
+/**
+ * Appends a pair (growing the list; the caller indexes it). Returns its row.
+ * @category Collision
+ */
 export function pushTouch(l: TouchList, key: number, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
   if (l.count >= l.keys.length) {
     const n = 2 * l.keys.length;
@@ -359,7 +392,10 @@ export function pushTouch(l: TouchList, key: number, shapeA: number, shapeB: num
 
 const states = new WeakMap<PhysicsWorld, Contact3DState>();
 
-/** The world's 3D contact state (made when `create` is true). */
+/**
+ * The world's 3D contact state (made when `create` is true).
+ * @category Collision
+ */
 export function contact3DStateOf(world: PhysicsWorld, create: true): Contact3DState;
 export function contact3DStateOf(world: PhysicsWorld, create?: boolean): Contact3DState | undefined;
 export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3DState | undefined {

@@ -24,7 +24,10 @@ import { boxBox3D, planeBox3D } from './box-box3d.js';
  * vertex), so the solver warm-starts a point from the previous step's point with the same id.
  */
 
-/** A shape posed in the world for the narrowphase. */
+/**
+ * A shape posed in the world for the narrowphase.
+ * @category Collision
+ */
 export interface Collider3D {
   /** 0 sphere, 1 capsule (segment along the shape's y with half length `hy`), 2 polyhedron (`hull`). */
   kind: number;
@@ -44,7 +47,10 @@ export interface Collider3D {
   hz: number;
 }
 
-/** A manifold: up to four points sharing a normal (unit, A to B). */
+/**
+ * A manifold: up to four points sharing a normal (unit, A to B).
+ * @category Collision
+ */
 export interface Manifold3D {
   count: number;
   nx: number;
@@ -60,7 +66,10 @@ export interface Manifold3D {
   id: Float64Array;
 }
 
-/** A manifold with room for four points. */
+/**
+ * A manifold with room for four points.
+ * @category Collision
+ */
 export function createManifold3D(): Manifold3D {
   return {
     count: 0,
@@ -163,7 +172,10 @@ function pose(c: Collider3D, out: Posed): Posed {
 // ---------------------------------------------------------------------------------------------------
 // Entry points.
 
-/** The manifold of A against B (normal A to B), or count 0 when they are farther apart than `margin`. */
+/**
+ * The manifold of A against B (normal A to B), or count 0 when they are farther apart than `margin`.
+ * @category Collision
+ */
 export function collide3D(A: Collider3D, B: Collider3D, margin: number, out: Manifold3D): void {
   out.count = 0;
   if (A.kind > B.kind) {
@@ -184,7 +196,10 @@ export function collide3D(A: Collider3D, B: Collider3D, margin: number, out: Man
   }
 }
 
-/** The manifold of a plane n . x = d (A, solid below) against shape B (normal = the plane's). */
+/**
+ * The manifold of a plane n . x = d (A, solid below) against shape B (normal = the plane's).
+ * @category Collision
+ */
 export function collidePlane3D(nx: number, ny: number, nz: number, d: number, B: Collider3D, margin: number, out: Manifold3D): void {
   out.count = 0;
   out.nx = nx;

@@ -13,7 +13,10 @@ import type { PhysicsWorld } from '../world.js';
  * a triangle by more than its own size is let go rather than pushed out the back.
  */
 
-/** A static triangle mesh (world coordinates). */
+/**
+ * A static triangle mesh (world coordinates).
+ * @category Collision
+ */
 export interface Mesh3D {
   /** The mesh's entity (slot). */
   entity: number;
@@ -28,7 +31,10 @@ export interface Mesh3D {
 
 const meshes = new WeakMap<PhysicsWorld, { list: Mesh3D[] }>();
 
-/** The world's meshes (live ones; removed entities are dropped). */
+/**
+ * The world's meshes (live ones; removed entities are dropped).
+ * @category Collision
+ */
 export function meshesOf(world: PhysicsWorld): Mesh3D[] {
   const m = meshes.get(world);
   if (m === undefined) return [];
@@ -51,7 +57,10 @@ registerExternalWorldState({
   },
 });
 
-/** Options of `addTriangleMesh3D`. */
+/**
+ * Options of `addTriangleMesh3D`.
+ * @category Collision
+ */
 export interface TriangleMeshOptions {
   /** Vertices [x, y, z], m; at least 3. */
   vertices: ArrayLike<ArrayLike<number>>;
@@ -68,6 +77,7 @@ export interface TriangleMeshOptions {
  * @throws TypeError | RangeError `addTriangleMesh3D: <param> must be ...` in a 2D world, on unknown
  *   options, fewer than 3 vertices or no triangles, non-finite coordinates, an index out of range or not
  *   an integer, a triangle of zero area, negative friction, restitution outside [0, 1], or a full world.
+ * @category Collision
  */
 export function addTriangleMesh3D(world: PhysicsWorld, options: TriangleMeshOptions): number {
   return addMesh('addTriangleMesh3D', world, options);
@@ -144,7 +154,10 @@ function addMesh(where: string, world: PhysicsWorld, options: TriangleMeshOption
   return currentHandle(world, e);
 }
 
-/** Options of `addHeightField3D`. */
+/**
+ * Options of `addHeightField3D`.
+ * @category Collision
+ */
 export interface HeightFieldOptions {
   /** Heights, m: rows along z, each a row of columns along x (at least 2 x 2, all rows the same length). */
   heights: ArrayLike<ArrayLike<number>>;
@@ -162,6 +175,7 @@ export interface HeightFieldOptions {
  * Most grid points a height field may have (rows x columns): 65,536, a 256 x 256 grid (130,050
  * triangles). Larger fields are refused before any work (a 1,000 x 1,000 field took 28 s and 570 MB);
  * split a larger terrain into tiles.
+ * @category Collision
  */
 export const MAX_HEIGHT_FIELD_POINTS = 65_536;
 
@@ -170,6 +184,7 @@ export const MAX_HEIGHT_FIELD_POINTS = 65_536;
  * its handle. @throws TypeError | RangeError `addHeightField3D: <param> must be ...` on a grid smaller
  * than 2 x 2 or of more than MAX_HEIGHT_FIELD_POINTS points, ragged rows, non-finite heights,
  * non-positive spacing, or the mesh's errors.
+ * @category Collision
  */
 export function addHeightField3D(world: PhysicsWorld, options: HeightFieldOptions): number {
   const where = 'addHeightField3D';

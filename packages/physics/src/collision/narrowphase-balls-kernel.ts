@@ -18,6 +18,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * distance (m), 2 the Static body type, 3 ContactKind.Ball, 4 ContactKind.StaticBall, 5 rows range
  * p > 0's arrays hold, 6 rows range 0's hold, 7 dimensions (2: z is not read; a 2D world's z stores
  * hold 0, so the arithmetic is the same). Returns 0.
+ * @category Collision
  */
 export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
   const pairA = A[0] as Int32Array,

@@ -18,7 +18,10 @@ import { shareContactBuffer } from './contact-colors.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from './contacts.js';
 import { BodyType, type CollisionState, PairKind } from './state.js';
 
-/** Fewest ball-ball pairs a thread for the contacts to be made in parallel. */
+/**
+ * Fewest ball-ball pairs a thread for the contacts to be made in parallel.
+ * @category Collision
+ */
 export const CONTACTS_MIN_PER_THREAD = 2048;
 
 /** The contact buffer's fields a range writes, in the kernel's order (narrowphase-balls-kernel.ts). */
@@ -39,6 +42,7 @@ const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
  * Makes the contacts of the leading ball-ball pairs of `cs` on the world's threads into `buf` (which
  * must be empty) and returns how many pairs it handled (0: none, the caller's loop makes them all).
  * @throws Error naming narrowphaseSystem if a worker thread failed.
+ * @category Collision
  */
 export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, buf: ContactBuffer): number {
   const pool = world.threadPool;

@@ -41,6 +41,7 @@ const segmentArgs = new Float64Array(12);
  * Earliest time t in (0, h] at which two spheres with centre offset r (B minus A) and relative
  * velocity w come to centre distance R, i.e. the smaller root of |r + w t|^2 = R^2; 0 if they
  * already touch or overlap, or do not meet within h. (Ericson, Real-Time Collision Detection, 5.5.7.)
+ * @category Collision
  */
 export function sweepSphere(rx: number, ry: number, rz: number, wx: number, wy: number, wz: number, R: number, h: number): number {
   const io = sphereArgs;
@@ -84,6 +85,7 @@ function sphereSweep(): void {
  * end point) and moving with velocity w comes within R of the segment from 0 to e: against the
  * segment's side (the infinite line, accepted if the touching point lies between the end points) or
  * against either end point. 0 if it already touches or does not reach the segment within h.
+ * @category Collision
  */
 export function sweepSegment(
   px: number,
@@ -190,6 +192,7 @@ function segmentSweep(): void {
  * (a swept test along their relative velocity), not where they were at the start: an oblique
  * impact then bounces about the true line of centres (Box2D takes the start-of-step normal, which
  * bends the bounce by up to the angle the bodies turn through in one step).
+ * @category Collision
  */
 export function narrowphaseSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -486,6 +489,7 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
  * Separation now (m, negative when overlapping) of row `i` of a contact buffer, measured at the bodies'
  * current positions along the current line of centres (or to the segment's closest point, or the
  * boundary face).
+ * @category Collision
  */
 export function currentSeparation(world: PhysicsWorld, buf: ContactBuffer, i: number): number {
   const c = world.components;

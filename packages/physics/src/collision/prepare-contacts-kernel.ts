@@ -21,6 +21,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * row + 1, contacts.ts). P: 0 stick speed (m/s), 1-3 the boundary's restitution, friction and static
  * friction, 4 last step's rows (0: no cache), 5 hash slots (a power of two), 6 ContactKind.Ball,
  * 7 ContactKind.Boundary. Returns 0.
+ * @category Collision
  */
 export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   const CA = A[0] as Int32Array,

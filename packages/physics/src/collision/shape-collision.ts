@@ -38,6 +38,7 @@ import { wakeIslandForStep } from './step-wake.js';
  * contacts, Catto GDC 2013); a body that moves farther than its own size is swept after the solver
  * (continuous.ts: the continuous collision of bullets). Sensor pairs report overlap events instead of
  * manifolds.
+ * @category Collision
  */
 export function shapeCollisionSystem(world: PhysicsWorld): void {
   const cs = world.collision;
@@ -253,7 +254,10 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
  */
 const SPECULATIVE_FRACTION = 0.04;
 
-/** Collider flags (ShapeScratch.flags). */
+/**
+ * Collider flags (ShapeScratch.flags).
+ * @category Collision
+ */
 export const MOVING = 1,
   BALL = 2;
 
@@ -402,7 +406,10 @@ function pushPair(sc: ShapeScratch, i: number, j: number): void {
   sc.pairCount = k + 1;
 }
 
-/** Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide. */
+/**
+ * Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide.
+ * @category Collision
+ */
 export function shouldCollide(S: ShapeStore, a: number, aBall: boolean, b: number, bBall: boolean): boolean {
   const ga = aBall ? 0 : S.group[a]!,
     gb = bBall ? 0 : S.group[b]!;
@@ -418,7 +425,10 @@ const gA = createGeometry(),
   gB = createGeometry();
 const mf = createManifold();
 
-/** Reads collider `e`'s geometry: a shape from the store, or a ball body as a circle. */
+/**
+ * Reads collider `e`'s geometry: a shape from the store, or a ball body as a circle.
+ * @category Collision
+ */
 export function colliderGeometry(world: PhysicsWorld, e: number, g: ConvexGeometry): boolean {
   const c = world.components,
     S = c.Shape;

@@ -12,6 +12,7 @@ import { BodyType } from './state.js';
  * The bodies that may fall asleep this step: `balls` (sleep.ts's query of awake dynamic balls) plus
  * the awake dynamic bodies carrying a shape. Returns `balls` itself when the world has no shapes;
  * otherwise a view of a reused array (valid until the next call).
+ * @category Collision
  */
 export function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLike<number> {
   const st = world.collision.shapes;
@@ -26,7 +27,10 @@ export function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): 
   return out.subarray(0, n);
 }
 
-/** Marks `supported[e] = stamp` for both bodies of every shape contact that carried a normal impulse this step. */
+/**
+ * Marks `supported[e] = stamp` for both bodies of every shape contact that carried a normal impulse this step.
+ * @category Collision
+ */
 export function markShapeSupport(world: PhysicsWorld, supported: Uint32Array, stamp: number): void {
   const st = world.collision.shapes;
   if (!st.active) return;
@@ -38,7 +42,10 @@ export function markShapeSupport(world: PhysicsWorld, supported: Uint32Array, st
   }
 }
 
-/** Unites, in the union-find `parent` (with its `find`), the two bodies of every shape contact between dynamic bodies that pushed. */
+/**
+ * Unites, in the union-find `parent` (with its `find`), the two bodies of every shape contact between dynamic bodies that pushed.
+ * @category Collision
+ */
 export function joinShapeIslands(world: PhysicsWorld, parent: Int32Array, find: (x: number) => number): void {
   const st = world.collision.shapes;
   if (!st.active) return;

@@ -19,7 +19,10 @@ import type { PhysicsWorld } from '../world.js';
  * against a circle, 5.3.8 against a convex polygon by clipping to its edge half-planes).
  */
 
-/** One ray hit. Entities are handles (as the API hands out). */
+/**
+ * One ray hit. Entities are handles (as the API hands out).
+ * @category Queries
+ */
 export interface RayHit {
   /** The shape hit (a ball body for a ball). */
   shape: number;
@@ -181,6 +184,7 @@ function checkRay(where: string, world: PhysicsWorld, origin: unknown, translati
  * Every shape the segment from `origin` to `origin + translation` (m) crosses, nearest first, with the
  * point, normal and fraction where it enters each. A ray that starts inside a shape does not hit it.
  * @throws TypeError on a 3D world or vectors that are not 2 finite numbers; RangeError on a zero translation.
+ * @category Queries
  */
 export function rayCastAll(world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): RayHit[] {
   checkRay('rayCastAll', world, origin, translation);
@@ -206,7 +210,10 @@ export function rayCastAll(world: PhysicsWorld, origin: ArrayLike<number>, trans
   return hits;
 }
 
-/** The nearest shape hit by the segment from `origin` to `origin + translation` (m), or null. @throws as `rayCastAll`. */
+/**
+ * The nearest shape hit by the segment from `origin` to `origin + translation` (m), or null. @throws as `rayCastAll`.
+ * @category Queries
+ */
 export function rayCast(world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): RayHit | null {
   checkRay('rayCast', world, origin, translation);
   const px = origin[0]!,
@@ -233,6 +240,7 @@ export function rayCast(world: PhysicsWorld, origin: ArrayLike<number>, translat
 /**
  * The shapes (handles) that contain `point` (m): within their radius of their core.
  * @throws TypeError on a 3D world or a point that is not 2 finite numbers.
+ * @category Queries
  */
 export function overlapPoint(world: PhysicsWorld, point: ArrayLike<number>): number[] {
   if (world.dimensions !== 2)
@@ -249,6 +257,7 @@ export function overlapPoint(world: PhysicsWorld, point: ArrayLike<number>): num
 /**
  * The shapes (handles) whose bounding boxes (where their bodies are now) meet the box [min, max] (m).
  * @throws TypeError on a 3D world or corners that are not 2 finite numbers; RangeError if min > max.
+ * @category Queries
  */
 export function overlapAABB(world: PhysicsWorld, min: ArrayLike<number>, max: ArrayLike<number>): number[] {
   const where = 'overlapAABB';

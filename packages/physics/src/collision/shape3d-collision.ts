@@ -66,6 +66,7 @@ function meets(ta: number, tb: number): boolean {
  *   it would cross within the step: the continuous collision of bullets.
  * - A spinning cylinder's speculative points off its meridian plane are moved onto it (`meridianPoints`):
  *   its round surface does not move under its spin, though the rim vertices the solver follows do.
+ * @category Collision
  */
 export function shape3DCollisionSystem(world: PhysicsWorld): void {
   if (world.dimensions !== 3) return;
@@ -240,6 +241,7 @@ function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBa
 /**
  * Writes a 3D body's solver class into the collision state (body type, inverse mass, and an inverse
  * inertia that is > 0 exactly when it turns: the largest principal one, or a ball's) and returns the type.
+ * @category Collision
  */
 export function classifyBody3D(world: PhysicsWorld, b: number): number {
   const c = world.components,

@@ -26,6 +26,7 @@ const sleepList = { list: new Uint32Array(0) };
  * The bodies that may fall asleep this step: `others` (sleep.ts's candidates) plus the awake dynamic
  * bodies that carry a 3D shape and are not balls (balls are among `others` already). Returns `others`
  * itself in a world without 3D shapes; otherwise a view of a reused array (valid until the next call).
+ * @category Collision
  */
 export function withShape3DBodies(world: PhysicsWorld, others: ArrayLike<number>): ArrayLike<number> {
   if (world.dimensions !== 3) return others;
@@ -48,7 +49,10 @@ function pushed(maxLn: Float64Array, points: Uint8Array, i: number): boolean {
   return false;
 }
 
-/** Marks `supported[e] = stamp` for both bodies of every 3D manifold that carried a normal impulse this step. */
+/**
+ * Marks `supported[e] = stamp` for both bodies of every 3D manifold that carried a normal impulse this step.
+ * @category Collision
+ */
 export function markShape3DSupport(world: PhysicsWorld, supported: Uint32Array, stamp: number): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
@@ -61,7 +65,10 @@ export function markShape3DSupport(world: PhysicsWorld, supported: Uint32Array, 
   }
 }
 
-/** Unites, in the union-find `parent` (with its `find`), the two bodies of every 3D manifold between dynamic bodies that pushed. */
+/**
+ * Unites, in the union-find `parent` (with its `find`), the two bodies of every 3D manifold between dynamic bodies that pushed.
+ * @category Collision
+ */
 export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find: (x: number) => number): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
@@ -86,6 +93,7 @@ export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find
  * as static geometry (a speculative row that cannot close), and the next step looks again. Waking on
  * mere proximity had a settling pile's sleeping islands woken by a rocking neighbour 0.1 m away about
  * every other step (each wake also re-runs the step's broadphase), and restarted their rest time.
+ * @category Collision
  */
 export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, gap = -Infinity, closing = 0): boolean {
   if (!(gap <= closing)) return false;
@@ -96,12 +104,16 @@ export function wakesSleeper3D(world: PhysicsWorld, other: number, t: number, ga
  * Wakes the island of sleeping body `e` for this step (see the module's note): every body asleep in
  * it loses the Sleeping tag and gets the skipped integration's v = g h, x += g h^2 / 2. Returns how
  * many bodies woke.
+ * @category Collision
  */
 export function wakeIsland3D(world: PhysicsWorld, e: number): number {
   return wakeIslandForStep(world, e);
 }
 
-/** Removal hook: wakes the sleeping islands that body `eid`'s 3D manifolds of the last step touched. */
+/**
+ * Removal hook: wakes the sleeping islands that body `eid`'s 3D manifolds of the last step touched.
+ * @category Collision
+ */
 export function wakeTouching3D(world: PhysicsWorld, eid: number): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);

@@ -27,7 +27,10 @@ import { meshesOf } from './mesh3d.js';
  * and of a cylinder by their extents along each world axis (4.2.6).
  */
 
-/** One 3D ray hit. Entities are handles. */
+/**
+ * One 3D ray hit. Entities are handles.
+ * @category Queries
+ */
 export interface RayHit3D {
   /** The shape hit (a ball body for a ball, the plane or mesh entity for those). */
   shape: number;
@@ -305,7 +308,10 @@ function poseShape(world: PhysicsWorld, s: Shape3DStore, e: number, b: number): 
 const fn = new Float64Array(3 * 256),
   fd = new Float64Array(256);
 
-/** Every hit of the segment from `origin` to `origin + translation` (m), nearest first. A ray that starts inside a shape does not hit it. @throws TypeError on a 2D world or vectors that are not 3 finite numbers; RangeError on a zero translation. */
+/**
+ * Every hit of the segment from `origin` to `origin + translation` (m), nearest first. A ray that starts inside a shape does not hit it. @throws TypeError on a 2D world or vectors that are not 3 finite numbers; RangeError on a zero translation.
+ * @category Queries
+ */
 export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): RayHit3D[] {
   checkRay('rayCastAll3D', world, origin, translation);
   const out: RayHit3D[] = [];
@@ -450,7 +456,10 @@ export function rayCastAll3D(world: PhysicsWorld, origin: ArrayLike<number>, tra
   return out;
 }
 
-/** The nearest hit of the segment from `origin` to `origin + translation` (m), or null. @throws as `rayCastAll3D`. */
+/**
+ * The nearest hit of the segment from `origin` to `origin + translation` (m), or null. @throws as `rayCastAll3D`.
+ * @category Queries
+ */
 export function rayCast3D(world: PhysicsWorld, origin: ArrayLike<number>, translation: ArrayLike<number>): RayHit3D | null {
   checkRay('rayCast3D', world, origin, translation);
   return rayCastAll3D(world, origin, translation)[0] ?? null;
@@ -568,6 +577,7 @@ function checkWorld3D(where: string, world: PhysicsWorld): void {
  * with no inside and are never returned; sensors are. Where the bodies are now (`Position`,
  * `Orientation`); time linear in the number of shapes. A fresh array each call, in no set order.
  * @throws TypeError on a 2D world or a point that is not 3 finite numbers.
+ * @category Queries
  */
 export function overlapPoint3D(world: PhysicsWorld, point: ArrayLike<number>): number[] {
   const where = 'overlapPoint3D';
@@ -607,6 +617,7 @@ const bounds = new Float64Array(6);
  * whose bounding box meets it. Sensors are returned too. Where the bodies are now; time linear in
  * the number of shapes and triangles. A fresh array each call, in no set order.
  * @throws TypeError on a 2D world or corners that are not 3 finite numbers; RangeError if min exceeds max on an axis.
+ * @category Queries
  */
 export function overlapAABB3D(world: PhysicsWorld, min: ArrayLike<number>, max: ArrayLike<number>): number[] {
   const where = 'overlapAABB3D';

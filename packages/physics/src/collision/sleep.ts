@@ -24,14 +24,20 @@ import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodi
  * thrust) or held by springs never sleep: their forces would be ignored while asleep.
  */
 
-/** Removes the Sleeping tag and resets the rest time (the body takes part again from the next system on). */
+/**
+ * Removes the Sleeping tag and resets the rest time (the body takes part again from the next system on).
+ * @category Collision
+ */
 export function wakeTag(world: PhysicsWorld, eid: number): void {
   const c = world.components;
   if (hasComponent(world, eid, c.Sleeping)) removeComponent(world, eid, c.Sleeping);
   world.collision.sleep.restTime[eid] = 0;
 }
 
-/** Wakes the whole island a sleeping body sleeps in (an awake body: just itself). */
+/**
+ * Wakes the whole island a sleeping body sleeps in (an awake body: just itself).
+ * @category Collision
+ */
 export function wakeIsland(world: PhysicsWorld, eid: number): void {
   const c = world.components;
   if (!hasComponent(world, eid, c.Sleeping)) {
@@ -47,6 +53,7 @@ export function wakeIsland(world: PhysicsWorld, eid: number): void {
 /**
  * Whether a body is asleep. @param body a body's handle.
  * @throws RangeError on a removed entity or one that is not a body.
+ * @category Collision
  */
 export function isSleeping(world: PhysicsWorld, body: number): boolean {
   return hasComponent(world, resolveKind(world, body, 'body', 'isSleeping'), world.components.Sleeping);
@@ -56,12 +63,16 @@ export function isSleeping(world: PhysicsWorld, body: number): boolean {
  * Wakes a body and the island it sleeps in (no-op if it is awake). Use it after changing a sleeping
  * body's forces or position by writing components directly. @param body a body's handle.
  * @throws RangeError on a removed entity or one that is not a body.
+ * @category Collision
  */
 export function wakeBody(world: PhysicsWorld, body: number): void {
   wakeIsland(world, resolveKind(world, body, 'body', 'wakeBody'));
 }
 
-/** Wakes every sleeping body. */
+/**
+ * Wakes every sleeping body.
+ * @category Collision
+ */
 export function wakeAll(world: PhysicsWorld): void {
   const asleep = query(world, [world.components.Sleeping]);
   const ids = Array.from(asleep);
@@ -71,6 +82,7 @@ export function wakeAll(world: PhysicsWorld): void {
 /**
  * Stage 1 (first): wakes sleeping bodies whose velocity has been written since they fell asleep, and
  * everything if gravity changed.
+ * @category Collision
  */
 export function wakeSystem(world: PhysicsWorld): void {
   const sl = world.collision.sleep;
@@ -111,6 +123,7 @@ function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
  * not join islands (a floor does not tie every pile together).
+ * @category Collision
  */
 export function sleepSystem(world: PhysicsWorld): void {
   const cs = world.collision;
@@ -251,6 +264,7 @@ export function sleepSystem(world: PhysicsWorld): void {
 /**
  * Removal hook: a body removed from a sleeping pile wakes its island; an awake one wakes the islands of
  * the sleeping bodies it touched in the last step.
+ * @category Collision
  */
 export function wakeTouching(world: PhysicsWorld, eid: number): void {
   const cs = world.collision;

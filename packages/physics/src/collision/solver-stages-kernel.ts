@@ -22,6 +22,7 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * of 6); of the components, x and y and the spin about z are read (slots 2 to 4 of the extra rows, z
  * and the turn about x and y, are 0 in 2D). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step,
  * every body counts as pushed), 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
+ * @category Collision
  */
 export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const px = A[0] as Float64Array,
@@ -81,6 +82,7 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
  * (Uint8), 12 solver state (rows of 8), each at A[b + j] for b = P[4] (0 when these are A's only
  * arrays; the coloured solve, contact-colors-kernel.ts, passes them after its own). P: 0-2 gravity
  * (m/s^2), 3 BodyType.Dynamic, 4 b. Returns 0.
+ * @category Collision
  */
 export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   const b0 = P[4]!;
@@ -139,6 +141,7 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * (1: the boundary box is on), 5-6 the box's min x, y, 7-8 max x, y (m), 9 its restitution, 10-11
  * gravity (m/s^2), 12 contact rows, 13 solver bodies - 1. Returns the sum of the positions and
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
+ * @category Collision
  */
 export function finishBodies2D(
   A: KernelArray[],
@@ -158,7 +161,10 @@ export function finishBodies2D(
   return check;
 }
 
-/** finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's. */
+/**
+ * finishBodies2D's first loop (velocities, positions and angles back to the components, bodies lo + 1 .. hi); returns the finiteness sum. A and P as finishBodies2D's.
+ * @category Collision
+ */
 export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
   const px = A[0] as Float64Array,
     py = A[1] as Float64Array,
@@ -197,7 +203,10 @@ export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32A
   return check;
 }
 
-/** finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's). */
+/**
+ * finishBodies2D's containInBoundary over bodies lo + 1 .. hi (A and P as finishBodies2D's).
+ * @category Collision
+ */
 export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
   const px = A[0] as Float64Array,
     py = A[1] as Float64Array,
@@ -243,7 +252,10 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
   }
 }
 
-/** finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m. */
+/**
+ * finishBodies2D's deepest overlap over its share of the contact rows (floor(m lo / nb) .. floor(m hi / nb) - 1): min(0, min s), m.
+ * @category Collision
+ */
 export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[7] as Float64Array;
   const IA = A[13] as Int32Array,
@@ -287,6 +299,7 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
  * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
  * this one stopped).
+ * @category Collision
  */
 export function restitutionColored2D(
   A: KernelArray[],
@@ -380,13 +393,19 @@ export function restitutionColored2D(
   return failed ? -1 : 0;
 }
 
-/** The blocks of every unit of restitutionColored2D over `n` rows with `plan` (the colours' layout) and `iterations` passes: the size its claim array needs. */
+/**
+ * The blocks of every unit of restitutionColored2D over `n` rows with `plan` (the colours' layout) and `iterations` passes: the size its claim array needs.
+ * @category Collision
+ */
 export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: number): number {
   const C = plan[4]!;
   return Math.ceil(n / 1024) + iterations * (plan[12 + C + 1]! - plan[12]!);
 }
 
-/** restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce. */
+/**
+ * restitutionColored2D's first unit over rows [lo, hi): each row's target and cap (A and P as the kernel's); returns how many rows bounce.
+ * @category Collision
+ */
 export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
   const sb = A[3] as Float64Array,
     IA = A[4] as Int32Array,
@@ -422,7 +441,10 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
   return bouncing;
 }
 
-/** One block of a restitution pass: pack rows [r0, r1) (A as restitutionColored2D's). */
+/**
+ * One block of a restitution pass: pack rows [r0, r1) (A as restitutionColored2D's).
+ * @category Collision
+ */
 export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
   const pk = A[0] as Float64Array,
     sb = A[3] as Float64Array,

@@ -48,6 +48,7 @@ import { BodyType, type CollisionState } from './state.js';
  * lower it to run the kernels on small worlds. `runs`: stages run by a kernel (on the threads, or on
  * one thread where the adaptive pool chose so), `bouncing`: rows the restitution kernel found bouncing,
  * both summed since the process started (for tests and the bench).
+ * @category Collision
  */
 export const stageThreading = { minPerThread: 8192, runs: 0, bouncing: 0 };
 
@@ -104,6 +105,7 @@ function allShared(arrays: readonly KernelArray[]): boolean {
  * same bits as the one-thread loop); `pushed` 1 when joints are in the step (every body counts as
  * pushed). False when the stage stays on one thread (the caller's loop then runs).
  * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
  */
 export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: number): boolean {
   const pool = poolFor(world, count - 1);
@@ -162,6 +164,7 @@ export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: 
  * measureApproach of a 2D world's contact rows on its threads (the same bits as the one-thread loop).
  * False when the stage stays on one thread.
  * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
  */
 export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const n = buf.count;
@@ -191,6 +194,7 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
  * pool joins, which its next run or start does, prepareContacts does before it reads the table, and
  * `step` does before it returns. Returns the buffer to fill next (as storeWarmStart), or null when the
  * stage stays on one thread (too few rows, no usable worker; the caller's storeWarmStart then runs).
+ * @category Collision
  */
 export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer): ContactBuffer | null {
   const n = buf.count;
@@ -221,6 +225,7 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
  * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite, as the
  *   one-thread loop (the bodies are then already put back in the box, unlike with one thread).
  * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
  */
 export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const cs = world.collision,
@@ -298,6 +303,7 @@ export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolea
 /**
  * Whether this step's finishOnThreads also kept the bodies in the boundary box (containInBoundary then
  * has nothing left to do); clears the answer, so it is true once a step at most.
+ * @category Collision
  */
 export function containedOnThreads(world: PhysicsWorld): boolean {
   const s = scratchOf.get(world);
@@ -312,6 +318,7 @@ export function containedOnThreads(world: PhysicsWorld): boolean {
  * it: the same results either way); see the file's header for the order. False when the step's
  * substeps did not run by colours (the caller's one-thread stage then runs).
  * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
  */
 export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
   const cs = world.collision,

@@ -93,6 +93,7 @@ import { downward3Into, downwardInto, heavierAbove, holdsLower, markFirstRelaxRo
  * `contactHertz` and `contactDampingRatio`, at most `contactPushSpeed`, both scaled to the balls'
  * size as contact-scale.ts describes). Soft constraints with
  * relaxation are what keeps a deep pile still with few iterations and without adding energy.
+ * @category Collision
  */
 export function contactSolverSystem(world: PhysicsWorld): void {
   // Small balls take more substeps (contact-scale.ts): the stages below read the count from the settings.
@@ -658,7 +659,10 @@ function containInBox2D(world: PhysicsWorld): void {
   }
 }
 
-/** Fewest contact rows a thread for a threaded 2D world to prepare its rows on its threads. */
+/**
+ * Fewest contact rows a thread for a threaded 2D world to prepare its rows on its threads.
+ * @category Collision
+ */
 export const PREPARE_MIN_PER_THREAD = 4096;
 
 /** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepareOnThreads). */

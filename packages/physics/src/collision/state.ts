@@ -4,10 +4,14 @@ import { createShapeCollisionState, type ShapeCollisionState } from './manifolds
 /**
  * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
  * body takes no part in contacts except to be woken by an awake or kinematic body that comes near.
+ * @category Collision
  */
 export const BodyType = Object.freeze({ Dynamic: 0, Kinematic: 1, Static: 2, Sleeping: 3 } as const);
 
-/** Pair kinds written by the broadphase into `CollisionState.pairKind`. */
+/**
+ * Pair kinds written by the broadphase into `CollisionState.pairKind`.
+ * @category Collision
+ */
 export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
 
 /**
@@ -20,6 +24,7 @@ export const PairKind = Object.freeze({ BallBall: 0, SegmentBall: 2 } as const);
  * piles still come to rest, and 0 for e = 1 contacts (`elasticRestitutionThreshold`) so a perfectly
  * elastic contact bounces at any speed; `autoSubsteps`, `impactIterations`, `restitutionIterations`,
  * `stickSpeed` and `coloredSolveMinRows` have no Box2D counterpart.
+ * @category Collision
  */
 export interface CollisionSettings {
   /** Solver substeps a (world) step, integer >= 1; the least a step takes when `autoSubsteps`. Default 4. */
@@ -96,6 +101,7 @@ export interface CollisionSettings {
 /**
  * The axis-aligned box that keeps bodies in (walls on all sides, floor and ceiling included).
  * `min` and `max` are its inner corners, m. Its surface has its own restitution and friction.
+ * @category Collision
  */
 export interface Boundary {
   /** Whether the box is active. */
@@ -116,6 +122,7 @@ export interface Boundary {
  * Sleeping (Box2D v3's idea: resting islands stop costing anything): a dynamic collider whose speed
  * stays below `linearSpeed` (m/s) and whose spin stays below `angularSpeed` (rad/s) accumulates rest
  * time; when every body of a contact island has rested `timeToSleep` (s), the island sleeps.
+ * @category Collision
  */
 export interface SleepState {
   /** Whether islands may sleep. World option `sleep`, default true. */
@@ -145,7 +152,10 @@ export interface SleepState {
   anyAsleep: boolean;
 }
 
-/** Everything the collide stage keeps between and within steps. */
+/**
+ * Everything the collide stage keeps between and within steps.
+ * @category Collision
+ */
 export interface CollisionState {
   /** Tuning, see CollisionSettings. */
   readonly settings: CollisionSettings;
@@ -222,7 +232,10 @@ export interface CollisionState {
   readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
 }
 
-/** Spatial-hash grid scratch, sized by the body count and grown by doubling. */
+/**
+ * Spatial-hash grid scratch, sized by the body count and grown by doubling.
+ * @category Collision
+ */
 export interface GridScratch {
   /** Cell edge, m, chosen each step from the body sizes and speeds. */
   cellSize: number;
@@ -263,6 +276,7 @@ export interface GridScratch {
 /**
  * Creates the collision state of a world with room for `capacity` entities; its per-entity arrays stay
  * empty until `allocateCollisionScratch`.
+ * @category Collision
  */
 export function createCollisionState(
   _capacity: number,
@@ -357,6 +371,7 @@ export function createCollisionState(
  * Gives the per-entity arrays of `cs` (inverse masses, margins, body types, solver marks, sleep state)
  * room for `capacity` entities if they are still empty, zero-filled. createPhysicsWorld calls it on the
  * first use of a body component (see components.ts).
+ * @category Collision
  */
 export function allocateCollisionScratch(cs: CollisionState, capacity: number): void {
   const n = capacity + 1;

@@ -8,6 +8,7 @@ import type { PhysicsWorld } from '../world.js';
  * skipped this step would have given it (v = g h, x += g h^2 / 2, the previous position where it
  * slept), so it takes part in this step's contact solve. Returns how many bodies woke (0 if `e` is
  * awake).
+ * @category Collision
  */
 export function wakeIslandForStep(world: PhysicsWorld, e: number): number {
   const c = world.components;

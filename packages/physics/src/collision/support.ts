@@ -48,6 +48,7 @@
  * Smallest |n . g| / |g| (dimensionless, 0..1) for which a frictionless row between two dynamic balls
  * is a support row: 0.3, rows within 72.5 degrees of vertical (a zigzag column's rows lean 41 degrees
  * from horizontal, |n . g| / |g| = 0.66; a row side by side, like a Newton's cradle's, is 0 and never one).
+ * @category Collision
  */
 export const SUPPORT_COS = 0.3;
 
@@ -57,12 +58,14 @@ export const SUPPORT_COS = 0.3;
  * the relative speed or less. Heavy balls from 30 times the lower one's mass gained energy without it;
  * below, the two-mass relax with friction settles as it did (a 2 kg ball rolling onto a column of
  * 1 kg balls, test/physics/collision-accuracy.test.ts's marble run, is left as it was).
+ * @category Collision
  */
 export const HEAVY_RATIO = 4;
 
 /**
  * Whether the upper ball of a support row, of inverse mass `imUpper` (1/kg, > 0), is at least
  * HEAVY_RATIO times as heavy as the lower one, of inverse mass `imLower` (1/kg, > 0).
+ * @category Collision
  */
 export function heavierAbove(imLower: number, imUpper: number): boolean {
   return imUpper * HEAVY_RATIO <= imLower;
@@ -72,6 +75,7 @@ export function heavierAbove(imLower: number, imUpper: number): boolean {
  * Whether the relax sweep holds the lower ball of a support row: its normal speed |v_lower . n| (m/s,
  * >= 0) is at most the upper ball's |v_upper . n| (m/s, >= 0), so moving the upper ball to the lower
  * one's normal velocity does not raise its kinetic energy.
+ * @category Collision
  */
 export function holdsLower(speedLower: number, speedUpper: number): boolean {
   return speedLower <= speedUpper;
@@ -80,6 +84,7 @@ export function holdsLower(speedLower: number, speedUpper: number): boolean {
 /**
  * Writes the unit vector along `g` (m/s^2, 2 or 3 components; the first two used), or (0, 0) for no
  * gravity, into out[at] and out[at + 1] (no array made: the solvers ask once a step).
+ * @category Collision
  */
 export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number): void {
   const gx = g[0]!,
@@ -97,6 +102,7 @@ export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number
 /**
  * Writes the unit vector along `g` (m/s^2, 3 components), or (0, 0, 0) for no gravity, into out[at],
  * out[at + 1] and out[at + 2] (the 3D solver's support rows).
+ * @category Collision
  */
 export function downward3Into(g: ArrayLike<number>, out: Float64Array, at: number): void {
   const gx = g[0]!,
@@ -121,6 +127,7 @@ let firstRelax = new Uint8Array(64);
  * it (`holdsLower`). Returns the per-row flags (valid for the first `buf.count` rows until the next call).
  * @param stride the solver state's row stride (8 in 2D, 12 in 3D); the inverse mass sits at 5 or 9.
  * @param down the unit vector along gravity (its first 2 or 3 components at `at`).
+ * @category Collision
  */
 export function markFirstRelaxRows(
   ia: Int32Array,

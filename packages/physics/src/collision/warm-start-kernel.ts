@@ -13,6 +13,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * findWarmStart and the preparation kernel read the table with). The whole table is built on the thread whose range is
  * not empty (lo < hi); other ranges do nothing. A: 0 slots (Int32, out; P[1] of them, a power of two
  * above twice the rows), 1 kind (Uint8), 2 a, 3 b, 4 feature (Int32). P: 0 rows, 1 slots. Returns 0.
+ * @category Collision
  */
 export function warmStartTable(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;

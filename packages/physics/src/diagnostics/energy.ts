@@ -20,6 +20,7 @@ function massive(world: PhysicsWorld) {
 
 /**
  * Kinetic energy, J: sum of m |v|^2 / 2 (translation) and I |w|^2 / 2 (rotation, scalar inertia).
+ * @category Diagnostics
  */
 export function kineticEnergy(world: PhysicsWorld): number {
   const c = world.components;
@@ -52,6 +53,7 @@ export function kineticEnergy(world: PhysicsWorld): number {
 /**
  * Potential energy of the world's uniform gravity, J: sum of -s m g . x, zero at the origin (so with
  * g = (0, -g) it is s m g y), s the body's GravityScale (1 without one).
+ * @category Diagnostics
  */
 export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
@@ -82,6 +84,7 @@ export function gravitationalPotentialEnergy(world: PhysicsWorld): number {
  * Newtonian potential energy, J: -G m_i m_j / sqrt(r^2 + eps^2) summed over mutual-gravity pairs
  * (the softened Plummer potential whose gradient the force law uses), plus -G M m / sqrt(r^2 + eps_a^2)
  * for every attractor and every dynamic body it pulls. Direct O(N^2) sum, whatever the force method.
+ * @category Diagnostics
  */
 export function newtonianPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
@@ -120,7 +123,10 @@ export function newtonianPotentialEnergy(world: PhysicsWorld): number {
   return sum;
 }
 
-/** Elastic energy of the springs, J: stiffness (L - restLength)^2 / 2 each (bungees only while stretched). */
+/**
+ * Elastic energy of the springs, J: stiffness (L - restLength)^2 / 2 each (bungees only while stretched).
+ * @category Diagnostics
+ */
 export function springPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const S = c.Spring;
@@ -149,6 +155,7 @@ const E = new Float64Array(3),
 /**
  * Electric potential energy, J: k q_i q_j / sqrt(r^2 + eps^2) over charged pairs, plus -q E . x in
  * the uniform electric field at the current time (conservative while the field is constant).
+ * @category Diagnostics
  */
 export function electricPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
@@ -178,7 +185,10 @@ export function electricPotentialEnergy(world: PhysicsWorld): number {
   return sum;
 }
 
-/** Potential energy of central forces, J: U(r) = -k r^n / n (n != 0), -k ln r (n = 0), so that F = -dU/dr = k r^(n-1). */
+/**
+ * Potential energy of central forces, J: U(r) = -k r^n / n (n != 0), -k ln r (n = 0), so that F = -dU/dr = k r^(n-1).
+ * @category Diagnostics
+ */
 export function centralPotentialEnergy(world: PhysicsWorld): number {
   const c = world.components;
   const C = c.CentralForce;
@@ -197,7 +207,10 @@ export function centralPotentialEnergy(world: PhysicsWorld): number {
   return sum;
 }
 
-/** Every potential energy the world knows, J: uniform and Newtonian gravity, springs, electric, central. */
+/**
+ * Every potential energy the world knows, J: uniform and Newtonian gravity, springs, electric, central.
+ * @category Diagnostics
+ */
 export function potentialEnergy(world: PhysicsWorld): number {
   return (
     gravitationalPotentialEnergy(world) +
@@ -215,6 +228,7 @@ export function potentialEnergy(world: PhysicsWorld): number {
  * infinite mass; f follows the balls' size, see `ballContactHertz`); a contact overlapping by d holds k d^2 / 2. This is the energy a pile compressed
  * by an impact gives back as it pushes itself apart. Measured at the current positions for the
  * contacts of the last step.
+ * @category Diagnostics
  */
 export function contactSpringEnergy(world: PhysicsWorld): number {
   const cs = world.collision;
@@ -237,6 +251,7 @@ export function contactSpringEnergy(world: PhysicsWorld): number {
 /**
  * Total mechanical energy, J: kinetic, every potential energy, and the elastic energy held in
  * overlapping contacts. Conserved by conservative systems up to the integrator's error.
+ * @category Diagnostics
  */
 export function totalEnergy(world: PhysicsWorld): number {
   return kineticEnergy(world) + potentialEnergy(world) + contactSpringEnergy(world);
@@ -246,6 +261,7 @@ export function totalEnergy(world: PhysicsWorld): number {
  * Total angular momentum about `about` (m; default the origin), kg m^2/s, into `out` (length 3):
  * sum of m (x - about) x v plus the spin I w of bodies with a scalar moment of inertia. In 2D only
  * out[2] (about z) is nonzero.
+ * @category Diagnostics
  */
 export function angularMomentum(
   world: PhysicsWorld,
@@ -305,6 +321,7 @@ export function angularMomentum(
 
 /**
  * Total linear momentum sum of m v, kg m/s, written into `out` (length 3) and returned.
+ * @category Diagnostics
  */
 export function linearMomentum(world: PhysicsWorld, out: Float64Array = new Float64Array(3)): Float64Array {
   const c = world.components;
@@ -329,12 +346,18 @@ export function linearMomentum(world: PhysicsWorld, out: Float64Array = new Floa
   return out;
 }
 
-/** Number of contacts the solver handled in the last (sub)step. */
+/**
+ * Number of contacts the solver handled in the last (sub)step.
+ * @category Diagnostics
+ */
 export function contactCount(world: PhysicsWorld): number {
   return world.collision.stats.contacts;
 }
 
-/** Milliseconds each stage took in the last step, as a fresh object. */
+/**
+ * Milliseconds each stage took in the last step, as a fresh object.
+ * @category Diagnostics
+ */
 export function stageTimings(world: PhysicsWorld): Record<string, number> {
   return { ...world.timings };
 }

@@ -1,10 +1,16 @@
 import { assertInteger, assertOptions, describe } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 
-/** A quantity to record: a function of the world returning a number (J, m, kg m/s, ...). */
+/**
+ * A quantity to record: a function of the world returning a number (J, m, kg m/s, ...).
+ * @category Diagnostics
+ */
 export type Quantity = (world: PhysicsWorld) => number;
 
-/** Options of `createRecorder`. */
+/**
+ * Options of `createRecorder`.
+ * @category Diagnostics
+ */
 export interface RecorderOptions {
   /** Named quantities to sample, e.g. { energy: totalEnergy, height: (w) => w.components.Position.y[ball] }. */
   quantities: Record<string, Quantity>;
@@ -14,7 +20,10 @@ export interface RecorderOptions {
   capacity?: number;
 }
 
-/** A sampler of quantities over simulated time, for plots (uPlot takes `columns()` directly) and tests. */
+/**
+ * A sampler of quantities over simulated time, for plots (uPlot takes `columns()` directly) and tests.
+ * @category Diagnostics
+ */
 export interface Recorder {
   /** Samples currently held. */
   readonly length: number;
@@ -35,6 +44,7 @@ export interface Recorder {
 /**
  * Creates a recorder of `quantities` over time, with bounded memory.
  * @throws TypeError on a missing options object, unknown or null options, or a quantity that is not a function; RangeError on bad counts.
+ * @category Diagnostics
  */
 export function createRecorder(world: PhysicsWorld, options: RecorderOptions): Recorder {
   const where = 'createRecorder';

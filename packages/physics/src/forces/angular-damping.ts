@@ -32,6 +32,7 @@ function largestInverseInertia(world: PhysicsWorld, e: number, is2D: boolean): n
  * nothing and `stiffAngularDampingSystem` applies the exact decay w <- w exp(-k h / I) after the
  * integrator, so the damping never reverses or amplifies the spin at any step size (see
  * forces/dissipation.ts).
+ * @category Forces
  */
 export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -88,6 +89,7 @@ const wb = new Float64Array(3),
  * body-frame component w_i <- w_i exp(-k h / I_i) (the exact solution of I_i w_i' = -k w_i; a locked
  * axis, 1/I_i = 0, keeps its spin). The orientation is then turned by h times the change of w, so the
  * body turns over the step with its damped angular velocity.
+ * @category Forces
  */
 export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);

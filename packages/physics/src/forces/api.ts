@@ -30,6 +30,7 @@ function vec3(world: PhysicsWorld, v: ArrayLike<number>): [number, number, numbe
 /**
  * Scales the uniform gravity this body feels (1 normal, 0 none, negative upward).
  * @throws RangeError on a non-finite scale, a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setGravityScale(world: PhysicsWorld, body: number, scale: number): void {
   const eid = resolveKind(world, body, 'body', 'setGravityScale');
@@ -41,6 +42,7 @@ export function setGravityScale(world: PhysicsWorld, body: number, scale: number
 /**
  * Makes the body take part in mutual Newtonian gravity (with every other body so marked), using its
  * mass. Constant and softening: `setGravitation`. @throws RangeError on a removed entity or one that is not a body.
+ * @category Forces
  */
 export function enableMutualGravity(world: PhysicsWorld, body: number): void {
   const eid = resolveKind(world, body, 'body', 'enableMutualGravity');
@@ -50,6 +52,7 @@ export function enableMutualGravity(world: PhysicsWorld, body: number): void {
 /**
  * Makes the body an attractor of `mass` kg (> 0) that pulls every dynamic body, with softening length
  * `softening` m (>= 0, default 0). @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setAttractor(world: PhysicsWorld, body: number, options: { mass: number; softening?: number }): void {
   const where = 'setAttractor';
@@ -63,7 +66,10 @@ export function setAttractor(world: PhysicsWorld, body: number, options: { mass:
   c.Attractor.softening[eid] = options.softening ?? 0;
 }
 
-/** Sets the body's electric charge, C (finite; 0 removes nothing but exerts nothing). @throws RangeError. */
+/**
+ * Sets the body's electric charge, C (finite; 0 removes nothing but exerts nothing). @throws RangeError.
+ * @category Forces
+ */
 export function setCharge(world: PhysicsWorld, body: number, charge: number): void {
   const eid = resolveKind(world, body, 'body', 'setCharge');
   assertFinite('setCharge', 'charge', charge);
@@ -75,6 +81,7 @@ export function setCharge(world: PhysicsWorld, body: number, charge: number): vo
  * Options of a uniform field entity: E(t) = E0 + A cos(omega t + phase) (or B(t) likewise), the same
  * at every point. `addElectricField` / `addMagneticField` start omitted fields at 0; `setElectricField`
  * / `setMagneticField` keep their current value.
+ * @category Forces
  */
 export interface FieldOptions {
   /** Constant part E0 or B0: V/m (electric) or T (magnetic), finite. In 2D a magnetic field is a number (B_z, out of the screen) or a 3-vector. */
@@ -155,6 +162,7 @@ function fieldEntity(
  * Adds a uniform (optionally oscillating) electric field, V/m, felt by every charged body as q E.
  * Change it later with `setElectricField`. @returns the field's handle. Atomic.
  * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a full world.
+ * @category Forces
  */
 export function addElectricField(world: PhysicsWorld, options: FieldOptions): number {
   return fieldEntity(world, 'addElectricField', world.components.ElectricField, options, false);
@@ -165,6 +173,7 @@ export function addElectricField(world: PhysicsWorld, options: FieldOptions): nu
  * In a 2D world give B_z as a number (out of the screen). Change it later with `setMagneticField`.
  * @returns the field's handle. Atomic.
  * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a full world.
+ * @category Forces
  */
 export function addMagneticField(world: PhysicsWorld, options: FieldOptions): number {
   return fieldEntity(world, 'addMagneticField', world.components.MagneticField, options, true);
@@ -176,6 +185,7 @@ export function addMagneticField(world: PhysicsWorld, options: FieldOptions): nu
  * @example setElectricField(world, e, { field: [0, -200] }) // point it down, 200 V/m
  * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a removed
  *   entity or one that is not an electric field. A refused call changes nothing.
+ * @category Forces
  */
 export function setElectricField(world: PhysicsWorld, field: number, options: FieldOptions): void {
   const where = 'setElectricField';
@@ -191,6 +201,7 @@ export function setElectricField(world: PhysicsWorld, field: number, options: Fi
  * @example setMagneticField(world, b, { field: -2 }) // in 2D: B_z = -2 T, the field flipped
  * @throws TypeError | RangeError on missing, unknown or null options, bad vectors or values, a removed
  *   entity or one that is not a magnetic field. A refused call changes nothing.
+ * @category Forces
  */
 export function setMagneticField(world: PhysicsWorld, field: number, options: FieldOptions): void {
   const where = 'setMagneticField';
@@ -202,6 +213,7 @@ export function setMagneticField(world: PhysicsWorld, field: number, options: Fi
 /**
  * Gives the body a central force F = k r^(n-1) r_hat about `centre`. k < 0 attracts.
  * @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setCentralForce(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n: number }): void {
   const where = 'setCentralForce';
@@ -223,6 +235,7 @@ export function setCentralForce(world: PhysicsWorld, body: number, options: { ce
 /**
  * Sets linear (N s/m) and/or quadratic (kg/m) drag coefficients, both >= 0, against the wind.
  * @throws RangeError on negative or non-finite coefficients, a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setDrag(world: PhysicsWorld, body: number, options: { linear?: number; quadratic?: number }): void {
   const where = 'setDrag';
@@ -244,6 +257,7 @@ export function setDrag(world: PhysicsWorld, body: number, options: { linear?: n
 /**
  * Gives the body lift k |v_rel| (axis x v_rel): `k` kg/m >= 0; `axis` a unit 3-vector (default z).
  * @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setLift(world: PhysicsWorld, body: number, options: { k: number; axis?: ArrayLike<number> }): void {
   const where = 'setLift';
@@ -269,7 +283,10 @@ export function setLift(world: PhysicsWorld, body: number, options: { k: number;
   c.Lift.axisZ[eid] = az;
 }
 
-/** Options of `setBuoyancy`: a ball of `radius`, or a box of `halfExtents` (x, y[, z]). */
+/**
+ * Options of `setBuoyancy`: a ball of `radius`, or a box of `halfExtents` (x, y[, z]).
+ * @category Forces
+ */
 export interface BuoyancyOptions {
   shape: 'ball' | 'box';
   /** Ball radius, m, > 0. */
@@ -283,6 +300,7 @@ export interface BuoyancyOptions {
 /**
  * Makes the body float: buoyancy and fluid drag in every FluidRegion it dips into.
  * @throws TypeError | RangeError on an unknown shape, missing or non-positive sizes, a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setBuoyancy(world: PhysicsWorld, body: number, options: BuoyancyOptions): void {
   const where = 'setBuoyancy';
@@ -315,6 +333,7 @@ export function setBuoyancy(world: PhysicsWorld, body: number, options: Buoyancy
 /**
  * Options of `addFluidRegion` and `setFluidRegion`: a fluid filling everything below the horizontal
  * surface y = `surface`, optionally only for x in `xRange` (and z in `zRange` in 3D).
+ * @category Forces
  */
 export interface FluidRegionOptions {
   /** Height of the free surface, m, finite. */
@@ -360,6 +379,7 @@ function writeFluid(world: PhysicsWorld, eid: number, options: FluidRegionOption
  * optionally limited to x in `xRange` and z in `zRange`. Bodies given `setBuoyancy` float in it.
  * Change it later with `setFluidRegion`. @returns the region's handle. Atomic.
  * @throws TypeError | RangeError on missing, unknown or null options, bad values, or a full world.
+ * @category Forces
  */
 export function addFluidRegion(world: PhysicsWorld, options: FluidRegionOptions & { surface: number; density: number }): number {
   const where = 'addFluidRegion';
@@ -377,6 +397,7 @@ export function addFluidRegion(world: PhysicsWorld, options: FluidRegionOptions 
  * `surface` (m), `density` (kg/m^3, > 0), `xRange`, `zRange` (m); omitted options keep their value.
  * @throws TypeError | RangeError on missing, unknown or null options, bad values, a removed entity or one
  *   that is not a fluid region. A refused call changes nothing.
+ * @category Forces
  */
 export function setFluidRegion(world: PhysicsWorld, region: number, options: FluidRegionOptions): void {
   const where = 'setFluidRegion';
@@ -385,7 +406,10 @@ export function setFluidRegion(world: PhysicsWorld, region: number, options: Flu
   writeFluid(world, eid, options);
 }
 
-/** Options of `addSpring`. Exactly one of `a` and `anchor` is given. */
+/**
+ * Options of `addSpring`. Exactly one of `a` and `anchor` is given.
+ * @category Forces
+ */
 export interface SpringOptions {
   /** First body (its handle). */
   a?: number;
@@ -411,6 +435,7 @@ export interface SpringOptions {
  * @throws TypeError on missing, unknown or null options, or a non-boolean oneSided; RangeError on a
  *   removed body, an entity that is not a body, both or neither of a and anchor, a = b, negative
  *   stiffness, damping or rest length, or a full world.
+ * @category Forces
  */
 export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
   const where = 'addSpring';
@@ -451,7 +476,10 @@ export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
   return currentHandle(world, s);
 }
 
-/** Options of `setSpring`; omitted options keep their value. */
+/**
+ * Options of `setSpring`; omitted options keep their value.
+ * @category Forces
+ */
 export interface SpringSettings {
   /** Stiffness, N/m, finite and >= 0. */
   stiffness?: number;
@@ -469,6 +497,7 @@ export interface SpringSettings {
  * Changes a spring made by `addSpring` at run time (stiffen it, shorten it, move its anchor).
  * @throws TypeError | RangeError on missing, unknown or null options, bad values, an anchor for a spring
  *   between two bodies, a removed entity or one that is not a spring. A refused call changes nothing.
+ * @category Forces
  */
 export function setSpring(world: PhysicsWorld, spring: number, options: SpringSettings): void {
   const where = 'setSpring';
@@ -497,6 +526,7 @@ export function setSpring(world: PhysicsWorld, spring: number, options: SpringSe
 
 /**
  * Periodic driving force F = F0 cos(omega t + phase). @throws TypeError | RangeError on bad values.
+ * @category Forces
  */
 export function setDrivingForce(
   world: PhysicsWorld,
@@ -524,6 +554,7 @@ export function setDrivingForce(
  * Seeded random driving force: components in [-magnitude, magnitude] N, smooth over
  * `correlationTime` s (> 0). `seed` an integer (default: the world's generator draws one).
  * @throws TypeError | RangeError on bad values.
+ * @category Forces
  */
 export function setRandomForce(
   world: PhysicsWorld,
@@ -548,6 +579,7 @@ export function setRandomForce(
  * the body's mass), direction (unit vector, world frame; normalised here). The body's mass includes
  * the fuel and drops as it burns. @throws TypeError | RangeError on bad values, fuel not less than the
  * mass, or a missing or massless body.
+ * @category Forces
  */
 export function setThrust(
   world: PhysicsWorld,
@@ -584,6 +616,7 @@ export function setThrust(
 /**
  * Gives the body a vortex force F = k r^(n-1) (axis x r_hat) about the axis through `centre`
  * (axis unit 3-vector, default z). @throws TypeError | RangeError on bad values a removed entity or one that is not a body.
+ * @category Forces
  */
 export function setVortex(
   world: PhysicsWorld,

@@ -25,7 +25,10 @@ function dynamicBody(where: string, world: PhysicsWorld, body: number): number {
   return eid;
 }
 
-/** Options of `setBallast`. Unknown fields are rejected. */
+/**
+ * Options of `setBallast`. Unknown fields are rejected.
+ * @category Forces
+ */
 export interface BallastOptions {
   /** Mass of the body with both tanks empty, kg, > 0. */
   dryMass: number;
@@ -61,6 +64,7 @@ function pair(where: string, param: string, v: number | readonly [number, number
  * moment of inertia: `setInertia`).
  * @throws TypeError on unknown options; RangeError on a missing, static or kinematic body, a
  *   non-positive dry mass, capacity or rate, fills outside [0, 1], or a negative arm or height.
+ * @category Forces
  */
 export function setBallast(world: PhysicsWorld, body: number, options: BallastOptions): void {
   const where = 'setBallast';
@@ -99,6 +103,7 @@ export function setBallast(world: PhysicsWorld, body: number, options: BallastOp
  * Sets the fill fractions the pumps move a body's tanks towards: `fore` and `aft` in [0, 1] (aft
  * defaults to fore). The tanks get there at the component's `rate`.
  * @throws RangeError on a body without ballast or a fraction outside [0, 1].
+ * @category Forces
  */
 export function setBallastTarget(world: PhysicsWorld, body: number, fore: number, aft: number = fore): void {
   const where = 'setBallastTarget';
@@ -118,6 +123,7 @@ export function setBallastTarget(world: PhysicsWorld, body: number, fore: number
  * moment of a hull whose centre of buoyancy is GM above its centre of mass, with the buoyancy taken
  * equal to the weight M g (a floating or neutrally buoyant hull), tau = M GM (sin(theta) g_y +
  * cos(theta) g_x): -M g GM sin(theta) for g = (0, -g). theta is the hull's `Angle`. Position-only.
+ * @category Forces
  */
 export const ballastTrimSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (world.dimensions !== 2) return;
@@ -148,6 +154,7 @@ ballastTrimSystem.velocityDependent = false;
  * rate h, then mass = dryMass + capacity (fore + aft) and the inverse mass follow (the moment of
  * inertia is left as set). Runs in the integrate stage right after the scheme, so the mass is
  * constant within a step and every scheme sees the same mass at all its stages.
+ * @category Forces
  */
 export function ballastFillSystem(world: PhysicsWorld): void {
   const c = world.components;

@@ -10,7 +10,10 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 
-/** Slots of the bounding box a range writes: min x, y, z, max x, y, z, non-finite flag, unused. */
+/**
+ * Slots of the bounding box a range writes: min x, y, z, max x, y, z, non-finite flag, unused.
+ * @category Forces
+ */
 export const BOX_STRIDE = 8;
 
 /**
@@ -18,6 +21,7 @@ export const BOX_STRIDE = 8;
  * A: px, py, pz, m (component stores), gx, gy, gz, gm (out, index i; gz only in 3D), box (out,
  * BOX_STRIDE slots a range, at `part`), ge (Int32, out: ge[i] = ids[i]). P: 0 dimensions (2 or 3).
  * Writes z = 0 bounds in 2D. Returns 0.
+ * @category Forces
  */
 export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
   const px = A[0] as Float64Array,
@@ -78,17 +82,27 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 /**
  * Most bits of the key sort's first (most significant) digit, and its most buckets. The sort takes
  * about log2(n / 8) bits (sortDigitBits), so that a bucket holds a few bodies on average.
+ * @category Forces
  */
 export const SORT_RADIX_BITS = 16,
   SORT_RADIX = 1 << SORT_RADIX_BITS;
 
-/** Bits of the key sort's first digit for n bodies: about log2(n / 8), within 1 .. SORT_RADIX_BITS. */
+/**
+ * Bits of the key sort's first digit for n bodies: about log2(n / 8), within 1 .. SORT_RADIX_BITS.
+ * @category Forces
+ */
 export function sortDigitBits(n: number): number {
   return Math.min(SORT_RADIX_BITS, Math.max(1, Math.ceil(Math.log2(Math.max(2, n / 8)))));
 }
-/** Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time). */
+/**
+ * Digits of the passes that sort a large bucket (the bits below the first digit, 8 at a time).
+ * @category Forces
+ */
 export const BUCKET_RADIX = 256;
-/** Buckets of at most this many keys are sorted by insertion, larger ones by radix passes. */
+/**
+ * Buckets of at most this many keys are sorted by insertion, larger ones by radix passes.
+ * @category Forces
+ */
 export const BUCKET_INSERTION_MAX = 48;
 
 /**
@@ -99,6 +113,7 @@ export const BUCKET_INSERTION_MAX = 48;
  * [lo, hi) is a range of parts; part p of the first two kernels holds bodies
  * floor(n p / parts) .. floor(n (p + 1) / parts) - 1 (the same in both, so the scatter sees the
  * histogram's bodies); the last kernel's parts are ranges of buckets.
+ * @category Forces
  */
 export const SORT_PARAMS = 10;
 
@@ -107,6 +122,7 @@ export const SORT_PARAMS = 10;
  * axis interleaved in 2D, 10 in 3D; barnes-hut.ts) and the part's histogram of their first digit
  * (key >>> P[8]). A: x, y, z (positions, input order), key (Uint32, out, input order), hist (Int32,
  * 2^P[9] counts a part, the part's at p * 2^P[9]). P: SORT_PARAMS. Returns 0.
+ * @category Forces
  */
 export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const x = A[0] as Float64Array,
@@ -180,6 +196,7 @@ export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Arra
  * Adds the tree's gravity to the bodies' forces: F_e += m g for e = ids[i], g the field at body i's
  * slot. A: fx, fy, fz (Force store), slot (Int32: slot of input body i), m, ax, ay, az (tree order:
  * mass, kg, and field, m/s^2). P unused. Returns 0.
+ * @category Forces
  */
 export function treeForces(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const fx = A[0] as Float64Array,
@@ -212,6 +229,7 @@ export function treeForces(A: KernelArray[], P: Float64Array, ids: Int32Array | 
  * with P[1] = 1 each listed node alone, in list order. A: x, y, z, m (tree order), node (moments,
  * stride 12), box (stride 6), start, end, skip (Int32), perm, slot (Int32), list, cut (Int32).
  * P: 0 dimensions, 1 mode. Range over parts. Returns 0.
+ * @category Forces
  */
 export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const x = A[0] as Float64Array,
@@ -567,6 +585,7 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
  * (Uint32, out), idx2 (Int32, out: the input index of each placed key), offset (Int32, 2^P[9]
  * first places a part, the part's at p * 2^P[9], advanced as it goes). P: SORT_PARAMS. The
  * parts must be those of mortonKeysHist. Returns 0.
+ * @category Forces
  */
 export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const key = A[0] as Uint32Array,
@@ -602,6 +621,7 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
  * group (Int32: part p sorts buckets group[p] .. group[p + 1] - 1), local (Int32, BUCKET_RADIX
  * counts a part), x, y, z, m (input order), tx, ty, tz, tm (out, tree order; tz only in 3D: in 2D
  * it stays 0). P: SORT_PARAMS. Returns 0.
+ * @category Forces
  */
 export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const key2 = A[0] as Uint32Array,

@@ -35,15 +35,24 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 
-/** Relative cost of one walk visit, one direct body pair and one cell-cell expansion (the `info` work units). */
+/**
+ * Relative cost of one walk visit, one direct body pair and one cell-cell expansion (the `info` work units).
+ * @category Forces
+ */
 export const WORK_VISIT = 1,
   WORK_BODY_PAIR = 1,
   WORK_CELL_PAIR = 8;
 
-/** Slots of `info` a part. */
+/**
+ * Slots of `info` a part.
+ * @category Forces
+ */
 export const INFO_STRIDE = 4;
 
-/** Dual-tree walk and downward pass, 2D (order 4); see the file's header and barnes-hut.ts. */
+/**
+ * Dual-tree walk and downward pass, 2D (order 4); see the file's header and barnes-hut.ts.
+ * @category Forces
+ */
 export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const X = A[0] as Float64Array,
     Y = A[1] as Float64Array,
@@ -430,7 +439,10 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
   return ids === null ? 0 : 0;
 }
 
-/** Dual-tree walk and downward pass, 3D (order 3); see the file's header and barnes-hut.ts. */
+/**
+ * Dual-tree walk and downward pass, 3D (order 3); see the file's header and barnes-hut.ts.
+ * @category Forces
+ */
 export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
   const X = A[0] as Float64Array,
     Y = A[1] as Float64Array,

@@ -100,7 +100,10 @@ import { INFO_STRIDE } from './barnes-hut-walk.js';
 
 /** Most parts (threads) an evaluation is cut into. */
 const MAX_PARTS = 32;
-/** Fewest bodies a thread for the evaluation to go parallel: below it one thread is faster. */
+/**
+ * Fewest bodies a thread for the evaluation to go parallel: below it one thread is faster.
+ * @category Forces
+ */
 export const BARNES_HUT_MIN_PER_THREAD = 2048;
 
 /** Most bodies a leaf holds before it splits. */
@@ -119,7 +122,10 @@ const NL2 = 14;
 /** 3D: [a0 x y z, J xx yy zz xy xz yz, K xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz]. */
 const NL3 = 19;
 
-/** The tree's arrays; one per world, reused between evaluations. */
+/**
+ * The tree's arrays; one per world, reused between evaluations.
+ * @category Forces
+ */
 export interface GravityTree {
   dims: 2 | 3;
   /** Bodies in the last build. */
@@ -283,6 +289,7 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
 /**
  * The tree of a world (created on first use, kept on the world); in a world with threads > 1 the
  * arrays the evaluation reads are on SharedArrayBuffers, so worker threads can walk it.
+ * @category Forces
  */
 export function worldTree(world: PhysicsWorld): GravityTree {
   const holder = world as { gravityTree?: GravityTree };
@@ -368,6 +375,7 @@ const KEY_BITS2 = 16,
  * 10 in 3D) by a stable least-significant-digit radix sort, so the quadtree's cells down to the key
  * resolution are contiguous key ranges; cells still holding more than LEAF_SIZE bodies below that
  * resolution are split further by a stable counting sort on the positions.
+ * @category Forces
  */
 export function buildTree(
   t: GravityTree,
@@ -839,6 +847,7 @@ function openFactor(theta: number): number {
  * pool keeps it on one thread while that has been faster); the fields are identical to the bit to
  * the one-thread evaluation (see the file's header).
  * @throws Error naming `system` if a worker thread failed.
+ * @category Forces
  */
 export function treeFieldsSorted(
   t: GravityTree,
@@ -1005,6 +1014,7 @@ function walkArrays(t: GravityTree, parts: number, forces: WalkForces | null): K
 /**
  * Field (m/s^2) at every body of the built tree, in input order: body i gets (ax[i], ay[i], az[i]).
  * Same method and arguments as treeFieldsSorted.
+ * @category Forces
  */
 export function treeFields(
   t: GravityTree,
@@ -1035,6 +1045,7 @@ export function treeFields(
  * opened; leaves are summed directly, excluding i itself. Written into out[0..2]. For a few bodies;
  * treeFields is much faster for all of them and more accurate at the same theta (on a clustered 2D
  * set at theta = 0.5: median error 0.4% here, 0.07% there).
+ * @category Forces
  */
 export function treeField(t: GravityTree, i: number, G: number, eps2: number, theta: number, out: Float64Array): void {
   if (t.nonFinite) {
@@ -1147,6 +1158,7 @@ function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Gathere
  * threads > 1, the gathering, the sort, the moments and the evaluation run on its threads (the
  * split into cells on one; see the file's header); the tree and the fields are the same as on one
  * thread, to the bit.
+ * @category Forces
  */
 export function worldTreeFields(world: PhysicsWorld, ents: ArrayLike<number>): GravityTree {
   return worldTreeFieldsWith(world, ents, false);
@@ -1204,6 +1216,7 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
  * Mutual gravity by the tree for the bodies `ents` (tagged MutualGravity): adds m_i g_i to each
  * body's force accumulator, g_i the tree field. Called by mutualGravitySystem when the world's method
  * is 'barnes-hut'.
+ * @category Forces
  */
 export function barnesHutGravity(world: PhysicsWorld, ents: ArrayLike<number>): void {
   // The walk's downward pass adds the forces as it writes the fields (no pass of its own).

@@ -11,6 +11,7 @@ import type { ForceLaw } from './law.js';
  * (along the body's own axes: x forward). It turns with the body; zero switches it off.
  * @throws TypeError | RangeError on a non-finite vector of the wrong length, or a missing, static or
  *   kinematic body.
+ * @category Forces
  */
 export function setBodyThrust(world: PhysicsWorld, body: number, force: ArrayLike<number>): void {
   const where = 'setBodyThrust';
@@ -31,6 +32,7 @@ export function setBodyThrust(world: PhysicsWorld, body: number, force: ArrayLik
  * rotated as q F q*, Shoemake 1985; 2D: the rotation by `Angle`, (x cos - y sin, x sin + y cos));
  * bodies without a rotation component take F as world-frame. Applied at the centre of mass (no
  * torque). Position-only (reads orientation, not velocity).
+ * @category Forces
  */
 export const bodyThrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

@@ -10,6 +10,7 @@ const NO_PARAMS: number[] = [];
  * General central force F = k r^(n-1) r_hat about each body's centre (cx, cy, cz): written as
  * k r^(n-2) (x - c). At r = 0 the force is 0 for n > 1 and undefined otherwise (skipped).
  * Position-only. Source: Ramtal and Dobre ch. 6, "central forces".
+ * @category Forces
  */
 export const centralForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

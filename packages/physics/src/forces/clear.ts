@@ -7,6 +7,7 @@ import type { PhysicsWorld } from '../world.js';
  * every body with `Torque`. In a substep that runs the fused force-and-integrate pass
  * (integrators/fused-gate.ts) the integrator writes every body's force itself, starting from this 0,
  * and only the torques are cleared here.
+ * @category Forces
  */
 export function clearForcesSystem(world: PhysicsWorld): void {
   const { Force, Torque } = world.components;

@@ -9,7 +9,10 @@ import { assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOpti
 import type { PhysicsWorld } from '../world.js';
 import { type GravityMethod, MAX_WIND_MODES } from './settings.js';
 
-/** Options of `setGravitation`. */
+/**
+ * Options of `setGravitation`.
+ * @category Forces
+ */
 export interface GravitationOptions {
   /** G, m^3 kg^-1 s^-2, finite and >= 0 (use 1 for game units). */
   constant?: number;
@@ -26,6 +29,7 @@ export interface GravitationOptions {
  * Omitted options keep their value; a refused call changes nothing.
  * @throws TypeError on a missing options object, unknown or null options; RangeError on G < 0, softening < 0,
  *   theta <= 0, an unknown method.
+ * @category Forces
  */
 export function setGravitation(world: PhysicsWorld, options: GravitationOptions): void {
   const where = 'setGravitation';
@@ -45,6 +49,7 @@ export function setGravitation(world: PhysicsWorld, options: GravitationOptions)
  * Sets the Coulomb constant (N m^2 C^-2, >= 0) and softening (m, >= 0) of the electric pair force.
  * Omitted options keep their value; a refused call changes nothing.
  * @throws TypeError on a missing options object, unknown or null options; RangeError on negative values.
+ * @category Forces
  */
 export function setElectrostatics(world: PhysicsWorld, options: { constant?: number; softening?: number }): void {
   const where = 'setElectrostatics';
@@ -55,7 +60,10 @@ export function setElectrostatics(world: PhysicsWorld, options: { constant?: num
   if (options.softening !== undefined) world.laws.electricSoftening = options.softening;
 }
 
-/** Options of `setWind`. Vectors have `world.dimensions` components. */
+/**
+ * Options of `setWind`. Vectors have `world.dimensions` components.
+ * @category Forces
+ */
 export interface WindOptions {
   /** Mean wind, m/s. */
   velocity?: ArrayLike<number>;
@@ -73,6 +81,7 @@ export interface WindOptions {
  * Sets the wind that drag and lift act against. Replaces the whole wind field; a refused call changes nothing.
  * @throws TypeError on a missing options object, unknown or null options, or bad vectors; RangeError on negative intensity, non-positive
  *   length or time scale, or a mode count outside [1, 32].
+ * @category Forces
  */
 export function setWind(world: PhysicsWorld, options: WindOptions): void {
   const where = 'setWind';
@@ -163,6 +172,7 @@ export function setWind(world: PhysicsWorld, options: WindOptions): void {
  * random unit direction puts 1/d of its square on each axis, so each component's RMS is `intensity`.
  * The cosines are math/cosine.ts's polynomial (within 5e-14 + 2.4e-16 |argument| of Math.cos, cheaper,
  * and the same in every engine).
+ * @category Forces
  */
 export function windAt(world: PhysicsWorld, x: number, y: number, z: number, t: number, out: Float64Array): void {
   const w = world.laws.wind;

@@ -45,10 +45,14 @@ import type { PhysicsWorld } from '../world.js';
  * another, the stages that applied the force did so at a rate below 1/4 with weights summing to 1,
  * which multiplies v_rel by a factor in [3/4, 1]; with the exact factor after it the product still
  * lies in [0, 1].
+ * @category Forces
  */
 export const STIFF_RATE = 0.25;
 
-/** Per-world bookkeeping of the stiff regime (see the module comment). */
+/**
+ * Per-world bookkeeping of the stiff regime (see the module comment).
+ * @category Forces
+ */
 export interface DissipationState {
   /** Increments at each new (sub)step seen by a law; decisions are stamped with it. */
   epoch: number;
@@ -84,6 +88,7 @@ registerExternalWorldState({
 /**
  * The world's dissipation state with its epoch advanced if a new (sub)step has begun (keyed on
  * `world.steps` and `world.substepStart`, which `step` sets before each substep's forces).
+ * @category Forces
  */
 export function dissipationState(world: PhysicsWorld): DissipationState {
   let s = states.get(world);
@@ -117,6 +122,7 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
  * Gives the per-entity stamp arrays of `st` room for the world's capacity if they are still empty
  * (every world asks for its dissipation state each step; only one with stiff drag or fluids needs
  * them: 32 bytes an entity). Call before stamping or before pulling them into locals.
+ * @category Forces
  */
 export function allocateStiffStamps(world: PhysicsWorld, st: DissipationState): void {
   const n = world.capacity + 1;
@@ -130,6 +136,7 @@ export function allocateStiffStamps(world: PhysicsWorld, st: DissipationState): 
 /**
  * Velocity factor of linear drag or damping at rate lambda = k h / m over one step: exp(-lambda),
  * the exact solution of v' = -(k / m) v. In [0, 1] for lambda >= 0.
+ * @category Forces
  */
 export function linearDecay(lambda: number): number {
   return Math.exp(-lambda);
@@ -139,6 +146,7 @@ export function linearDecay(lambda: number): number {
  * Velocity factor of quadratic drag at rate lambda = k |v| h / m over one step: 1 / (1 + lambda),
  * the exact solution v0 / (1 + k v0 t / m) of m v' = -k |v| v. In (0, 1] for lambda >= 0 (0 only
  * when lambda is infinite).
+ * @category Forces
  */
 export function quadraticDecay(lambda: number): number {
   return 1 / (1 + lambda);

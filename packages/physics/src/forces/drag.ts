@@ -10,7 +10,10 @@ import type { ForceLaw } from './law.js';
 
 const wind = new Float64Array(3);
 
-/** Whether the world's wind is still air everywhere (then drag uses the body's own velocity). */
+/**
+ * Whether the world's wind is still air everywhere (then drag uses the body's own velocity).
+ * @category Forces
+ */
 export function calmAir(world: PhysicsWorld): boolean {
   const w = world.laws.wind;
   return (
@@ -35,6 +38,7 @@ export function calmAir(world: PhysicsWorld): boolean {
  *
  * In a substep that runs the fused force-and-integrate pass (integrators/fused-gate.ts) the integrator
  * applies this law to every body that has it, with the same arithmetic, and this system does nothing.
+ * @category Forces
  */
 export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (fusedForcesOn(world)) return;
@@ -103,6 +107,7 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
  * nothing there and `stiffDragSystem` applies the exact update v - u <- (v - u) / (1 + k |v - u| h / m)
  * after the integrator (see forces/dissipation.ts). In a substep that runs the fused pass
  * (integrators/fused-gate.ts) the integrator applies it instead, with the same arithmetic.
+ * @category Forces
  */
 export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   if (fusedForcesOn(world)) return;
@@ -179,7 +184,10 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   }
 };
 
-/** Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law; the fused pass calls it too). */
+/**
+ * Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law; the fused pass calls it too).
+ * @category Forces
+ */
 export function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): void {
   const st = dissipationState(world);
   allocateStiffStamps(world, st);
@@ -196,6 +204,7 @@ export function markStiffQuadratic(world: PhysicsWorld, e: number, k: number): v
  * moved from where the (sub)step began with the damped velocity: x = x_start + h v. Both factors lie
  * in [0, 1], so the velocity relative to the air is never reversed or amplified.
  * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
+ * @category Forces
  */
 export const stiffDragSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);
@@ -272,6 +281,7 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
 /**
  * Lift F = k |v_rel| (axis x v_rel), perpendicular to the velocity relative to the wind; in 2D with
  * the default axis z it points 90 degrees to the left of the motion. Source: Ramtal and Dobre ch. 7.
+ * @category Forces
  */
 export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
   const { Lift, Velocity, Force, Position } = world.components;

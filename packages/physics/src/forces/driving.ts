@@ -2,7 +2,10 @@ import { query } from '../query.js';
 import type { PhysicsWorld } from '../world.js';
 import type { ForceLaw } from './law.js';
 
-/** Periodic driving force F = F0 cos(omega t + phase). Position-only (a function of time). Ramtal and Dobre ch. 8. */
+/**
+ * Periodic driving force F = F0 cos(omega t + phase). Position-only (a function of time). Ramtal and Dobre ch. 8.
+ * @category Forces
+ */
 export const drivingForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
   const ents = query(world, [c.DrivingForce, c.Force]);
@@ -36,6 +39,7 @@ function noiseValue(seed: number, knot: number, axis: number): number {
 /**
  * Smooth seeded value noise in [-1, 1): random values at knots t = k tau, joined by the smoothstep
  * 3 s^2 - 2 s^3 (continuous with a continuous derivative). A pure function of (seed, t, axis).
+ * @category Forces
  */
 export function valueNoise(seed: number, t: number, tau: number, axis: number): number {
   const x = t / tau;
@@ -51,6 +55,7 @@ export function valueNoise(seed: number, t: number, tau: number, axis: number): 
  * Seeded random driving force: each component magnitude x valueNoise(seed, t, correlationTime), so
  * it is in [-magnitude, magnitude] N and changes smoothly over about `correlationTime` s.
  * Position-only (a function of time).
+ * @category Forces
  */
 export const randomForceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

@@ -7,6 +7,7 @@ import { inverseSquarePairs } from './pairwise.js';
  * Coulomb's law between every pair of charged bodies: F on b = k q_a q_b (x_b - x_a) / (r^2 + eps^2)^(3/2)
  * (like charges repel), and the opposite on a. Softening eps from `setElectrostatics`. Position-only.
  * Source: Ramtal and Dobre ch. 10.
+ * @category Forces
  */
 export const coulombSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -24,6 +25,7 @@ const B = new Float64Array(3);
 /**
  * The total uniform electric and magnetic field at time t (sum over ElectricField and MagneticField
  * entities), written into e and b (V/m and T).
+ * @category Forces
  */
 export function fieldsAt(world: PhysicsWorld, t: number, e: Float64Array, b: Float64Array): void {
   const c = world.components;
@@ -47,6 +49,7 @@ export function fieldsAt(world: PhysicsWorld, t: number, e: Float64Array, b: Flo
  * charge. In a 2D world B is along z (out of the screen): v x B = (v_y B_z, -v_x B_z). Velocity-
  * dependent (the magnetic part). Source: Ramtal and Dobre ch. 10; Griffiths, Introduction to
  * Electrodynamics, eq. 5.1.
+ * @category Forces
  */
 export const lorentzSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

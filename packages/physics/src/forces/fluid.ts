@@ -4,7 +4,10 @@ import type { PhysicsWorld } from '../world.js';
 import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
-/** Shape codes of `Buoyancy.shape`. */
+/**
+ * Shape codes of `Buoyancy.shape`.
+ * @category Forces
+ */
 export const BuoyancyShape = Object.freeze({ Ball: 0, Box: 1 } as const);
 
 /**
@@ -14,6 +17,7 @@ export const BuoyancyShape = Object.freeze({ Ball: 0, Box: 1 } as const);
  * Ball in 3D: spherical cap pi h^2 (3 r - h) / 3; in 2D: circular segment r^2 acos((r - h) / r) - (r - h) sqrt(2 r h - h^2);
  * box: (2 halfX) h (2 halfZ) in 3D, (2 halfX) h in 2D. Source: Ramtal and Dobre ch. 7; CRC Standard
  * Mathematical Tables for the cap and segment.
+ * @category Forces
  */
 export function submergedMeasure(
   dimensions: 2 | 3,
@@ -56,6 +60,7 @@ const measure = new Float64Array(2);
  * adds nothing there and `stiffFluidDragSystem` applies the exact quadratic-drag update
  * v <- v / (1 + f k |v| h / m) after the integrator (see forces/dissipation.ts). Buoyancy itself is
  * always a force.
+ * @category Forces
  */
 export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -130,6 +135,7 @@ export const buoyancySystem: ForceLaw = (world: PhysicsWorld): void => {
  * divided by 1 + k |v| h / m, k the drag coefficient times the submerged fraction where it was
  * found stiff, and moves from where the (sub)step began with that velocity: x = x_start + h v.
  * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
+ * @category Forces
  */
 export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);

@@ -15,6 +15,7 @@ import { worldTreeFields } from './barnes-hut.js';
  * d = x_j - x_i, the same Plummer-softened pair law as the direct and tree methods (pairs with
  * d^2 + eps^2 = 0, coincident bodies without softening, are skipped as they are there). O(n) per target.
  * @returns out, with the field at targets[k] in out[3k..3k+2] (allocated when not given).
+ * @category Forces
  */
 export function directField(
   n: number,
@@ -54,7 +55,10 @@ export function directField(
   return out;
 }
 
-/** `count` indices spread evenly over 0..n-1 (floor(k n / count)); all of them if count >= n. */
+/**
+ * `count` indices spread evenly over 0..n-1 (floor(k n / count)); all of them if count >= n.
+ * @category Forces
+ */
 export function sampleIndices(n: number, count: number): Int32Array {
   const c = Math.min(n, Math.max(0, Math.floor(count)));
   const out = new Int32Array(c);
@@ -62,7 +66,10 @@ export function sampleIndices(n: number, count: number): Int32Array {
   return out;
 }
 
-/** Summary of relative errors |a - a_exact| / |a_exact| over a sample (fractions, not percent). */
+/**
+ * Summary of relative errors |a - a_exact| / |a_exact| over a sample (fractions, not percent).
+ * @category Forces
+ */
 export interface FieldErrorStats {
   /** Bodies compared. */
   sample: number;
@@ -76,6 +83,7 @@ export interface FieldErrorStats {
 /**
  * Relative errors of `approx` against `exact` (both 3 numbers a body, as from directField): for each
  * body |a - e| / |e|, or 0 when both are zero and Infinity when only e is. Summary of them.
+ * @category Forces
  */
 export function fieldErrorStats(approx: ArrayLike<number>, exact: ArrayLike<number>): FieldErrorStats {
   const k = Math.floor(exact.length / 3);
@@ -106,6 +114,7 @@ function mutualBodies(world: PhysicsWorld) {
  * evenly over the world's mutual-gravity bodies (default 1,000; all if fewer). Costs one tree
  * evaluation plus sample x N pair terms.
  * @throws RangeError if sample is not an integer >= 1.
+ * @category Forces
  */
 export function gravityFieldError(world: PhysicsWorld, sample = 1000): FieldErrorStats {
   assertInteger('gravityFieldError', 'sample', sample, 1, Number.MAX_SAFE_INTEGER);
@@ -141,12 +150,18 @@ export function gravityFieldError(world: PhysicsWorld, sample = 1000): FieldErro
   return fieldErrorStats(approx, exact);
 }
 
-/** Median relative error of the tree field against the direct sum over `sample` bodies (see gravityFieldError). */
+/**
+ * Median relative error of the tree field against the direct sum over `sample` bodies (see gravityFieldError).
+ * @category Forces
+ */
 export function forceErrorMedian(world: PhysicsWorld, sample = 1000): number {
   return gravityFieldError(world, sample).median;
 }
 
-/** Momentum bookkeeping of mutual gravity at the current positions. */
+/**
+ * Momentum bookkeeping of mutual gravity at the current positions.
+ * @category Forces
+ */
 export interface GravityMomentumRate {
   /** Net mutual-gravity force sum_i F_i, N (= kg m/s^2): the rate at which it changes total momentum. */
   rate: Float64Array;
@@ -163,6 +178,7 @@ export interface GravityMomentumRate {
  * method ('barnes-hut': the tree; 'direct': the pair sum), i.e. the drift rate of total momentum
  * that mutual gravity causes (Newton's third law makes it zero; any remainder is the method's
  * momentum drift). 'direct' costs O(N^2).
+ * @category Forces
  */
 export function gravityMomentumRate(world: PhysicsWorld): GravityMomentumRate {
   const ents = mutualBodies(world);

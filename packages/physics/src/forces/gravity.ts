@@ -23,6 +23,7 @@ function attractorSources(world: PhysicsWorld, n: number): Float64Array {
  * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator
  * applies as an acceleration) the body feels s m g. Position-only. Split over the world's threads
  * when it has several (threads/kernels.ts; the same arithmetic per body).
+ * @category Forces
  */
 export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -58,6 +59,7 @@ gravityScaleSystem.velocityDependent = false;
  * third law, so momentum is conserved to rounding). 'direct' sums all N(N-1)/2 pairs; 'barnes-hut'
  * approximates far groups by their centre of mass (see barnes-hut.ts). Position-only.
  * Source: Ramtal and Dobre ch. 6 and 12; Aarseth, Gravitational N-Body Simulations (2003), ch. 2.
+ * @category Forces
  */
 export const mutualGravitySystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -78,6 +80,7 @@ mutualGravitySystem.velocityDependent = false;
  * force accumulator: F = -G M m r / (r^2 + eps^2)^(3/2), r from the attractor to the body, eps the
  * attractor's softening. An attractor does not pull itself; attractors that are dynamic bodies are
  * pulled by the others. Position-only. Source: Ramtal and Dobre ch. 6.
+ * @category Forces
  */
 export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

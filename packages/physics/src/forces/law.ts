@@ -4,6 +4,7 @@ import type { PhysicsWorld } from '../world.js';
  * A force-law system: a System that may declare whether it reads velocities. The Verlet schemes
  * spend an extra force evaluation only when some law in the world is velocity-dependent; a law that
  * does not say is assumed to be.
+ * @category Forces
  */
 export interface ForceLaw {
   (world: PhysicsWorld): void;

@@ -29,7 +29,10 @@ import type { ForceLaw } from './law.js';
  * stall); Stevens and Lewis, Aircraft Control and Simulation (surfaces at points, damping).
  */
 
-/** Options of `addLiftingSurface`. Vectors are body-frame 3-vectors. Unknown fields are rejected. */
+/**
+ * Options of `addLiftingSurface`. Vectors are body-frame 3-vectors. Unknown fields are rejected.
+ * @category Forces
+ */
 export interface LiftingSurfaceOptions {
   /** The body (entity id) the surface belongs to: a dynamic 3D body. */
   body: number;
@@ -55,7 +58,10 @@ export interface LiftingSurfaceOptions {
 
 const KNOWN = ['body', 'offset', 'normal', 'area', 'liftSlope', 'stallAngle', 'dragZero', 'inducedDrag', 'controlPower', 'airDensity'];
 
-/** Default lift slope: 2 pi / (1 + 2 / AR) at aspect ratio 6, 1/rad. */
+/**
+ * Default lift slope: 2 pi / (1 + 2 / AR) at aspect ratio 6, 1/rad.
+ * @category Forces
+ */
 export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
 
 /**
@@ -63,6 +69,7 @@ export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
  * @returns the surface's handle (removing the body removes its surfaces).
  * @throws TypeError on unknown options or malformed vectors; RangeError on a 2D world, a missing,
  *   static or non-rotating body, a zero normal or one along the chord, or values out of range.
+ * @category Forces
  */
 export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOptions): number {
   const where = 'addLiftingSurface';
@@ -119,7 +126,10 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   return currentHandle(world, s);
 }
 
-/** Removal hook: removes the lifting surfaces of a removed body, so none acts on a recycled id. */
+/**
+ * Removal hook: removes the lifting surfaces of a removed body, so none acts on a recycled id.
+ * @category Forces
+ */
 export function removeSurfacesOf(world: PhysicsWorld, eid: number): void {
   const L = world.components.LiftingSurface;
   const surfaces = query(world, [L]);
@@ -132,6 +142,7 @@ export function removeSurfacesOf(world: PhysicsWorld, eid: number): void {
  * Sets a surface's control deflection, rad, in [-pi/4, pi/4] (positive: more lift along its normal,
  * a trailing edge turned down). @throws RangeError on an entity that is not a lifting surface or a
  * deflection out of range.
+ * @category Forces
  */
 export function setControlDeflection(world: PhysicsWorld, surface: number, deflection: number): void {
   const where = 'setControlDeflection';
@@ -147,12 +158,16 @@ export function setControlDeflection(world: PhysicsWorld, surface: number, defle
 /**
  * The lift coefficient of a surface at angle of attack `alpha` (rad) and control term `control`
  * (k delta): a alpha + control while |alpha| <= stall, sin(2 alpha) + control past it (see the header).
+ * @category Forces
  */
 export function liftCoefficient(alpha: number, slope: number, stall: number, control: number): number {
   return (alpha <= stall && alpha >= -stall ? slope * alpha : Math.sin(2 * alpha)) + control;
 }
 
-/** The drag coefficient at `alpha` with lift coefficient `cl`: C_D0 + K C_L^2 attached, C_D0 + 2 sin^2(alpha) stalled. */
+/**
+ * The drag coefficient at `alpha` with lift coefficient `cl`: C_D0 + K C_L^2 attached, C_D0 + 2 sin^2(alpha) stalled.
+ * @category Forces
+ */
 export function dragCoefficient(alpha: number, cl: number, stall: number, cd0: number, k: number): number {
   if (alpha <= stall && alpha >= -stall) return cd0 + k * cl * cl;
   const s = Math.sin(alpha);
@@ -164,6 +179,7 @@ const rot = new Float64Array(9);
 /**
  * Stage 3 law: the lift and drag of every lifting surface, at its point, on its body (header formulas).
  * Surfaces whose body was removed are skipped. Velocity-dependent.
+ * @category Forces
  */
 export const liftingSurfaceSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

@@ -10,6 +10,7 @@ import type { PhysicsWorld } from '../world.js';
  * Source: Aarseth, Gravitational N-Body Simulations (2003), ch. 2 (Plummer softening).
  * @param ents entity ids (a live query array); `s` the per-entity source strength (kg or C);
  *   `scale` the coupling constant with its sign; `eps2` the squared softening length, m^2 (>= 0).
+ * @category Forces
  */
 export function inverseSquarePairs(world: PhysicsWorld, ents: ArrayLike<number>, s: ArrayLike<number>, scale: number, eps2: number): void {
   const c = world.components;

@@ -1,12 +1,24 @@
-/** Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018). */
+/**
+ * Newtonian gravitational constant G, m^3 kg^-1 s^-2 (CODATA 2018).
+ * @category Forces
+ */
 export const G_SI = 6.6743e-11;
-/** Coulomb constant k = 1 / (4 pi eps0), N m^2 C^-2 (CODATA 2018). */
+/**
+ * Coulomb constant k = 1 / (4 pi eps0), N m^2 C^-2 (CODATA 2018).
+ * @category Forces
+ */
 export const COULOMB_SI = 8.9875517923e9;
 
-/** How mutual gravity is summed: every pair ('direct', O(N^2)) or by a Barnes-Hut tree ('barnes-hut'). */
+/**
+ * How mutual gravity is summed: every pair ('direct', O(N^2)) or by a Barnes-Hut tree ('barnes-hut').
+ * @category Forces
+ */
 export type GravityMethod = 'direct' | 'barnes-hut';
 
-/** World-wide constants and fields the force laws read. Change with the setters below. */
+/**
+ * World-wide constants and fields the force laws read. Change with the setters below.
+ * @category Forces
+ */
 export interface ForceLawSettings {
   /** G, m^3 kg^-1 s^-2; default the SI value. Games often use scaled units (see setGravitation). */
   gravitationalConstant: number;
@@ -34,6 +46,7 @@ export interface ForceLawSettings {
  * Fourier modes (Kraichnan, Phys. Fluids 13, 1970) with divergence-free directions, seeded, with
  * root-mean-square speed `intensity` (per component), wavelengths around `lengthScale` and
  * frequencies around 1 / `timeScale`. A pure function of position and time.
+ * @category Forces
  */
 export interface WindField {
   /** Mean wind u0, m/s. */
@@ -50,10 +63,16 @@ export interface WindField {
   intensity: number;
 }
 
-/** Turbulence modes the wind field can hold. */
+/**
+ * Turbulence modes the wind field can hold.
+ * @category Forces
+ */
 export const MAX_WIND_MODES = 32;
 
-/** Default settings: SI constants, direct gravity, no softening, no wind. */
+/**
+ * Default settings: SI constants, direct gravity, no softening, no wind.
+ * @category Forces
+ */
 export function createForceLawSettings(): ForceLawSettings {
   return {
     gravitationalConstant: G_SI,

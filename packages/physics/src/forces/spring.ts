@@ -14,6 +14,7 @@ import type { ForceLaw } from './law.js';
  * The damping is a force while damping h (1/m_a + 1/m_b) < STIFF_RATE; at or above it the spring
  * leaves it out and `stiffSpringDampingSystem` damps the pair's relative velocity along the spring
  * exactly after the integrator, so it never reverses or amplifies it (see forces/dissipation.ts).
+ * @category Forces
  */
 export const springSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -91,6 +92,7 @@ function movableInverse(world: PhysicsWorld, e: number): number {
  * keeps momentum, so the kinetic energy never grows. Moved bodies go from where the (sub)step began
  * with their new velocity: x = x_start + h v.
  * @throws NonFiniteStateError (stage 'integrate') if a position or velocity it writes is not finite.
+ * @category Forces
  */
 export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   const st = dissipationState(world);
@@ -162,7 +164,10 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   }
 };
 
-/** Removal hook: removes every spring attached to `eid` (so no spring ever pulls a recycled id). */
+/**
+ * Removal hook: removes every spring attached to `eid` (so no spring ever pulls a recycled id).
+ * @category Forces
+ */
 export function removeSpringsOf(world: PhysicsWorld, eid: number): void {
   const c = world.components;
   // Most removals (particle churn) meet no spring: return before allocating (the store is allocated with the first spring).

@@ -10,6 +10,7 @@ import type { ForceLaw } from './law.js';
  * every stage of every integrator, so integrating it reproduces Tsiolkovsky's dv = ve ln(m0 / m1)
  * to the scheme's order. Thrust stops when the fuel burnt since t_s exceeds the fuel left.
  * Position-only (a function of time). Source: Ramtal and Dobre ch. 6, "rockets".
+ * @category Forces
  */
 export const thrustSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;
@@ -42,6 +43,7 @@ thrustSystem.velocityDependent = false;
  * Burns fuel after each integration: the mass drops by mdot h (at most the fuel left), the fuel with
  * it, and the inverse mass is recomputed, so mass and inverse mass stay consistent. Runs in the
  * integrate stage right after the scheme.
+ * @category Forces
  */
 export function burnFuelSystem(world: PhysicsWorld): void {
   const c = world.components;

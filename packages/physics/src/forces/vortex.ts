@@ -6,6 +6,7 @@ import type { ForceLaw } from './law.js';
  * Vortex: a tangential force about an axis, F = k r^(n-1) (axis x r_hat), r the distance from the
  * axis line through (cx, cy, cz). n = 1 gives a constant swirl, n = 2 a solid-body-like one, n = 0 a
  * free-vortex-like 1/r fall-off (skipped at r = 0). Position-only.
+ * @category Forces
  */
 export const vortexSystem: ForceLaw = (world: PhysicsWorld): void => {
   const c = world.components;

@@ -12,6 +12,7 @@ const b = new Float64Array(3),
  * I dw/dt = tau - w x (I w), evaluated in the body frame (where I is diagonal) and rotated back:
  * alpha = R I^-1 (R^T tau - w_b x I w_b), w_b = R^T w. Writes into res[0..2] (rad/s^2).
  * Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5; Ramtal and Dobre ch. 15.
+ * @category Integrators
  */
 export function eulerAcceleration(
   world: PhysicsWorld,
@@ -34,6 +35,7 @@ export function eulerAcceleration(
  * body with principal moments (Ix, Iy, Iz) (rad/s^2, body axes; an axis with a zero moment gets 0).
  * The explicit schemes stage these bodies' angular velocity in the body frame (see
  * integrators/state.ts). Writes into res[0..2]. Source: Goldstein, Classical Mechanics (3rd ed.), sec. 5.5.
+ * @category Integrators
  */
 export function eulerBodyAcceleration(
   world: PhysicsWorld,
@@ -75,6 +77,7 @@ const wb = new Float64Array(3),
  * eventually blows up (an asymmetric top spun at 1 rad/s does within 10^5 steps at h = 1/60);
  * the implicit step is stable and slightly dissipative. Axes with a zero moment stay locked.
  * Source: Catto, "Numerical Methods", GDC 2015; Bullet's btRigidBody::computeGyroscopicImpulseImplicit_Body.
+ * @category Integrators
  */
 export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number, torqueX: number, torqueY: number, torqueZ: number): void {
   const c = world.components;
@@ -155,6 +158,7 @@ export function implicitGyroscopicStep(world: PhysicsWorld, e: number, h: number
  * locals: no double crosses a call, and the five turns are written out, not looped (node 20's
  * optimised loop kept one 16-byte number boxed a body, measured by heap use over repeated calls): no
  * allocation per body.
+ * @category Integrators
  */
 export function splitRigidRotations(world: PhysicsWorld, ents: ArrayLike<number>, h: number): void {
   const c = world.components;

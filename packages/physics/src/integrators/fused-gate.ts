@@ -107,12 +107,18 @@ function idleTerms(c: Components, law: System, build: (c: Components) => object[
 
 let integrator: System | null = null;
 
-/** Registers the integrate stage's integrator system (integrate.ts does, at load). */
+/**
+ * Registers the integrate stage's integrator system (integrate.ts does, at load).
+ * @category Integrators
+ */
 export function registerFusedIntegrator(system: System): void {
   integrator = system;
 }
 
-/** Whether the current substep of `world` may run the fused pass (the conditions of the module comment). */
+/**
+ * Whether the current substep of `world` may run the fused pass (the conditions of the module comment).
+ * @category Integrators
+ */
 export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   if (world.integrator !== 'semi-implicit-euler') return false;
   const stages = world.stages;
@@ -148,7 +154,10 @@ export function fusedForcesAllowed(world: PhysicsWorld): boolean {
   return fusedBareBodies(world).length + fusedQuadraticBodies(world).length + fusedLinearBodies(world).length === forced;
 }
 
-/** Called by `step` at the start of every substep: turns the fused pass on or off for it. */
+/**
+ * Called by `step` at the start of every substep: turns the fused pass on or off for it.
+ * @category Integrators
+ */
 export function armFusedForces(world: PhysicsWorld): void {
   beginFusedSubstep(world, fusedForcesAllowed(world));
 }

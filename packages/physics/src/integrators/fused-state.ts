@@ -18,12 +18,18 @@ import type { PhysicsWorld } from '../world.js';
  */
 let current: PhysicsWorld | null = null;
 
-/** Whether the fused pass is on for the current substep of `world`. */
+/**
+ * Whether the fused pass is on for the current substep of `world`.
+ * @category Integrators
+ */
 export function fusedForcesOn(world: PhysicsWorld): boolean {
   return current === world;
 }
 
-/** Turns the fused pass of `world` on or off (the integrator and `evaluateForces` call this). */
+/**
+ * Turns the fused pass of `world` on or off (the integrator and `evaluateForces` call this).
+ * @category Integrators
+ */
 export function setFusedForces(world: PhysicsWorld, value: boolean): void {
   if (value) current = world;
   else if (current === world) current = null;
@@ -32,6 +38,7 @@ export function setFusedForces(world: PhysicsWorld, value: boolean): void {
 /**
  * The start of a substep of `world` (`step`, through the gate): the pass on for it or off, and off for
  * any other world (one whose step threw before its integrator ran is not held on to).
+ * @category Integrators
  */
 export function beginFusedSubstep(world: PhysicsWorld, value: boolean): void {
   current = value ? world : null;

@@ -66,6 +66,7 @@ function work(world: PhysicsWorld, n: number): Work {
  *
  * @throws RangeError if Newton does not converge even at h / 64 (a force law that is not
  *   differentiable enough); the message gives the residual. Use a smaller dt.
+ * @category Integrators
  */
 export function implicitEuler(world: PhysicsWorld, h: number): void {
   const t = world.time;

@@ -5,10 +5,16 @@ import type { IntegratorName } from './names.js';
 import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
 import { semiImplicitEuler } from './semi-implicit-euler.js';
 
-/** An integration scheme: advances every moving body of the world by h seconds. */
+/**
+ * An integration scheme: advances every moving body of the world by h seconds.
+ * @category Integrators
+ */
 export type Integrator = (world: PhysicsWorld, h: number) => void;
 
-/** The scheme behind each name of `INTEGRATOR_NAMES`. */
+/**
+ * The scheme behind each name of `INTEGRATOR_NAMES`.
+ * @category Integrators
+ */
 export const INTEGRATORS: Readonly<Record<IntegratorName, Integrator>> = Object.freeze({
   'explicit-euler': explicitEuler,
   'semi-implicit-euler': semiImplicitEuler,
@@ -19,7 +25,10 @@ export const INTEGRATORS: Readonly<Record<IntegratorName, Integrator>> = Object.
   'velocity-verlet': velocityVerlet,
 });
 
-/** Stage 4: advances the world by `world.h` with the world's chosen scheme. */
+/**
+ * Stage 4: advances the world by `world.h` with the world's chosen scheme.
+ * @category Integrators
+ */
 export function integrateSystem(world: PhysicsWorld): void {
   INTEGRATORS[world.integrator](world, world.h);
 }

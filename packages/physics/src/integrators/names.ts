@@ -9,6 +9,7 @@
  * - `'rk4'`: classical Runge-Kutta. Order 4; four force evaluations a step.
  * - `'position-verlet'`: Stormer-Verlet, drift-kick-drift. Order 2; symplectic.
  * - `'velocity-verlet'`: kick-drift-kick. Order 2; symplectic.
+ * @category Integrators
  */
 export const INTEGRATOR_NAMES = [
   'explicit-euler',
@@ -20,10 +21,16 @@ export const INTEGRATOR_NAMES = [
   'velocity-verlet',
 ] as const;
 
-/** One of `INTEGRATOR_NAMES`. */
+/**
+ * One of `INTEGRATOR_NAMES`.
+ * @category Integrators
+ */
 export type IntegratorName = (typeof INTEGRATOR_NAMES)[number];
 
-/** Global order of accuracy of each scheme on smooth problems (checked by the convergence tests). */
+/**
+ * Global order of accuracy of each scheme on smooth problems (checked by the convergence tests).
+ * @category Integrators
+ */
 export const INTEGRATOR_ORDER: Readonly<Record<IntegratorName, number>> = Object.freeze({
   'explicit-euler': 1,
   'semi-implicit-euler': 1,

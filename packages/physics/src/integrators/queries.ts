@@ -5,37 +5,53 @@ import type { PhysicsWorld } from '../world.js';
 /**
  * Dynamic bodies with a force accumulator (and so a mass): they feel force laws and gravity.
  * Every integrator moves these with a = F / m + g.
+ * @category Integrators
  */
 export function forcedBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return query(world, [c.Position, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
-/** Dynamic bodies without a force accumulator (plain particles): they feel the world's gravity only, a = g. */
+/**
+ * Dynamic bodies without a force accumulator (plain particles): they feel the world's gravity only, a = g.
+ * @category Integrators
+ */
 export function freeBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return query(world, [c.Position, c.Velocity, Not(c.Force), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
-/** Kinematic bodies: x += v h, nothing changes their velocity. */
+/**
+ * Kinematic bodies: x += v h, nothing changes their velocity.
+ * @category Integrators
+ */
 export function kinematicBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return query(world, [c.Position, c.Velocity, c.Kinematic, Not(c.Static)]);
 }
 
-/** Bodies that turn under torque with a scalar moment of inertia: angular velocity, inertia, a torque accumulator. */
+/**
+ * Bodies that turn under torque with a scalar moment of inertia: angular velocity, inertia, a torque accumulator.
+ * @category Integrators
+ */
 export function torquedBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return query(world, [c.AngularVelocity, c.Inertia, c.Torque, Not(c.InertiaTensor), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
-/** 3D bodies with a principal inertia tensor: they turn by Euler's equations, torque or not. */
+/**
+ * 3D bodies with a principal inertia tensor: they turn by Euler's equations, torque or not.
+ * @category Integrators
+ */
 export function tensorBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return query(world, [c.AngularVelocity, c.InertiaTensor, c.Orientation, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
 }
 
-/** Bodies whose orientation follows their angular velocity: 2D `Angle` or 3D `Orientation`. */
+/**
+ * Bodies whose orientation follows their angular velocity: 2D `Angle` or 3D `Orientation`.
+ * @category Integrators
+ */
 export function spinningBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
   return world.dimensions === 2
@@ -46,6 +62,7 @@ export function spinningBodies(world: PhysicsWorld): QueryResult {
 /**
  * Spinning bodies whose orientation the semi-implicit scheme advances with w h: all of them but the
  * 3D inertia-tensor bodies (the rigid-body splitting turns those itself).
+ * @category Integrators
  */
 export function simpleSpinningBodies(world: PhysicsWorld): QueryResult {
   const c = world.components;
@@ -79,17 +96,26 @@ function fusedTermsOf(c: Components): readonly [object[], object[], object[]] {
   return t;
 }
 
-/** Forced bodies with no drag and no gravity scale: no built-in law writes their force (fused pass). */
+/**
+ * Forced bodies with no drag and no gravity scale: no built-in law writes their force (fused pass).
+ * @category Integrators
+ */
 export function fusedBareBodies(world: PhysicsWorld): QueryResult {
   return query(world, fusedTermsOf(world.components)[0]);
 }
 
-/** Forced bodies with quadratic drag only (no linear drag, no gravity scale): the fused pass. */
+/**
+ * Forced bodies with quadratic drag only (no linear drag, no gravity scale): the fused pass.
+ * @category Integrators
+ */
 export function fusedQuadraticBodies(world: PhysicsWorld): QueryResult {
   return query(world, fusedTermsOf(world.components)[1]);
 }
 
-/** Forced bodies with linear drag only (no quadratic drag, no gravity scale): the fused pass. */
+/**
+ * Forced bodies with linear drag only (no quadratic drag, no gravity scale): the fused pass.
+ * @category Integrators
+ */
 export function fusedLinearBodies(world: PhysicsWorld): QueryResult {
   return query(world, fusedTermsOf(world.components)[2]);
 }

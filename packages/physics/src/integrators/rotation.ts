@@ -9,6 +9,7 @@ import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js'
  * inertia (2D: the z component; 3D: isotropic bodies such as balls), Newton's second law for rotation
  * (Ramtal and Dobre ch. 13); for 3D bodies with a principal inertia tensor, a torque kick and the
  * symplectic splitting of the free rigid body (`splitRigidRotations`), which also turns the orientation.
+ * @category Integrators
  */
 export function applyTorques(world: PhysicsWorld, h: number): void {
   const c = world.components;
@@ -47,6 +48,7 @@ export function applyTorques(world: PhysicsWorld, h: number): void {
  * 2D: angle += w_z h. 3D: q <- exp(w h / 2) q, the exact rotation by |w| h about w (world frame)
  * for constant w, then renormalised so |q| stays 1 to rounding.
  * Source: Shoemake, "Animating rotation with quaternion curves" (SIGGRAPH 1985); Ramtal and Dobre ch. 15.
+ * @category Integrators
  */
 export function advanceOrientations(world: PhysicsWorld, h: number): void {
   const ents = simpleSpinningBodies(world);

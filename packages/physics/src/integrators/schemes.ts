@@ -43,6 +43,7 @@ function end(world: PhysicsWorld, s: IntegratorScratch, h: number): void {
  * symplectic: orbits spiral outward and undamped oscillators gain energy every step. The world's
  * constant gravity is integrated exactly (x gains g h^2 / 2 more, see `shiftByGravity`), so free
  * flight follows the exact parabola. Source: Ramtal and Dobre ch. 14.
+ * @category Integrators
  */
 export function explicitEuler(world: PhysicsWorld, h: number): void {
   const s = begin(world);
@@ -55,6 +56,7 @@ export function explicitEuler(world: PhysicsWorld, h: number): void {
 /**
  * Heun's method (explicit trapezoidal rule, the RK2 of Ramtal and Dobre ch. 14): an Euler predictor,
  * then the average of the slopes at the start and at the predicted end. Second order.
+ * @category Integrators
  */
 export function rk2(world: PhysicsWorld, h: number): void {
   const s = begin(world);
@@ -73,6 +75,7 @@ export function rk2(world: PhysicsWorld, h: number): void {
  * The classical fourth-order Runge-Kutta method: slopes at the start, twice at the midpoint and at
  * the end, weighted 1/6, 2/6, 2/6, 1/6. Fourth order; four force evaluations a step.
  * Source: Ramtal and Dobre ch. 14; Hairer, Norsett and Wanner, table II.1.1.
+ * @category Integrators
  */
 export function rk4(world: PhysicsWorld, h: number): void {
   const s = begin(world);
@@ -97,6 +100,7 @@ export function rk4(world: PhysicsWorld, h: number): void {
  * Whether any force law of the world may depend on velocity. A system declares itself
  * position-only with `system.velocityDependent = false`; anything undeclared is assumed to depend
  * on velocity.
+ * @category Integrators
  */
 export function hasVelocityDependentForces(world: PhysicsWorld): boolean {
   const list = world.stages.forces;
@@ -116,6 +120,7 @@ export function hasVelocityDependentForces(world: PhysicsWorld): boolean {
  * Velocity-dependent forces (drag, Lorentz, damping): the force at the half step needs v(t+h/2),
  * which is not known yet. The scheme evaluates a(x_{1/2}, v), predicts v(t+h/2) = v + a h/2 and
  * evaluates again there, which keeps second order (the error of the prediction enters a at O(h^2)).
+ * @category Integrators
  */
 export function positionVerlet(world: PhysicsWorld, h: number): void {
   const s = begin(world);
@@ -163,6 +168,7 @@ export function positionVerlet(world: PhysicsWorld, h: number): void {
  * Velocity-dependent forces: a(t+h) is evaluated with the predicted velocity v + a h (written into
  * the velocity array while the force laws run), the usual treatment for drag in molecular dynamics
  * (Allen and Tildesley, Computer Simulation of Liquids, 2nd ed., sec. 3.2); second order is kept.
+ * @category Integrators
  */
 export function velocityVerlet(world: PhysicsWorld, h: number): void {
   const s = begin(world);

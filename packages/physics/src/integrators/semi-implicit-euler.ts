@@ -39,6 +39,7 @@ import { advanceOrientations, applyTorques } from './rotation.js';
  * forced bodies' forces are written here, in the same pass that moves them (`fusedForced2`), and a
  * NaN or infinite force is reported (stage 'forces') before its body is moved: no body's position or
  * velocity is made non-finite by it, but the bodies the pass moved before it stay moved.
+ * @category Integrators
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
@@ -551,7 +552,10 @@ function nonFiniteForce(world: PhysicsWorld, e: number): never {
   throw new Error(`bitphysics: fusedForced: the force of entity ${e} failed the finiteness test yet every component is finite`);
 }
 
-/** Moves kinematic bodies with their own velocity (shared by every scheme: their velocity is given). */
+/**
+ * Moves kinematic bodies with their own velocity (shared by every scheme: their velocity is given).
+ * @category Integrators
+ */
 export function advanceKinematic(world: PhysicsWorld, h: number): void {
   const c = world.components;
   const px = c.Position.x,

@@ -21,6 +21,7 @@ import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
  * the world frame instead, the stages' w and q drift apart: a torque-free body (moments 1, 2, 3)
  * spun at 2 rad/s about its intermediate axis flipped with a period 10.9 % short under RK2 and 5.9 %
  * long under velocity Verlet at dt 1/60; in the body frame both are within 0.1 %.
+ * @category Integrators
  */
 export interface IntegratorScratch {
   /** Entities the scratch is sized for (capacity + 1 slots). */
@@ -58,7 +59,10 @@ export interface IntegratorScratch {
 
 const f = (n: number): Float64Array => new Float64Array(n);
 
-/** The world's integrator scratch, made on first use (only multi-stage schemes need it). */
+/**
+ * The world's integrator scratch, made on first use (only multi-stage schemes need it).
+ * @category Integrators
+ */
 export function getScratch(world: PhysicsWorld): IntegratorScratch {
   const existing = (world as { integratorScratch?: IntegratorScratch }).integratorScratch;
   if (existing) return existing;
@@ -86,7 +90,10 @@ export function getScratch(world: PhysicsWorld): IntegratorScratch {
   return s;
 }
 
-/** Fills the movers and spinners lists for this step. */
+/**
+ * Fills the movers and spinners lists for this step.
+ * @category Integrators
+ */
 export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
   const forced = forcedBodies(world);
   const free = freeBodies(world);
@@ -121,6 +128,7 @@ export function gather(world: PhysicsWorld, s: IntegratorScratch): void {
 /**
  * Copies the current state of every mover and spinner into x0 / q0 / w0, and (unless `setPrevious` is
  * false, for sub-steps within a step) records it as PreviousPosition.
+ * @category Integrators
  */
 export function saveState(world: PhysicsWorld, s: IntegratorScratch, setPrevious = true): void {
   const c = world.components;
@@ -186,6 +194,7 @@ const vec = new Float64Array(3);
 /**
  * Evaluates the force laws at the state now in the component arrays (at simulated time `time`) and
  * writes linear and angular accelerations into `acc` and `alpha`. The world's time is restored.
+ * @category Integrators
  */
 export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time: number): void {
   const saved = world.time;
@@ -195,7 +204,10 @@ export function accelerationsAt(world: PhysicsWorld, s: IntegratorScratch, time:
   accelerations(world, s);
 }
 
-/** Accelerations from the force and torque accumulators as they are (no force evaluation). */
+/**
+ * Accelerations from the force and torque accumulators as they are (no force evaluation).
+ * @category Integrators
+ */
 export function accelerations(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
   const fx = c.Force.x,
@@ -231,6 +243,7 @@ const euler = new Float64Array(3);
  * inertia (balls) alpha = tau I^-1 (the gyroscopic term w x I w vanishes for isotropic inertia); with
  * a principal inertia tensor, Euler's equations (see `eulerAcceleration`), in the body frame while
  * `s.bodyFrameSpin` (see `eulerBodyAcceleration`).
+ * @category Integrators
  */
 export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
@@ -269,6 +282,7 @@ export function angularAcceleration(world: PhysicsWorld, s: IntegratorScratch): 
  * Writes the trial state x = x0 + cx dx, v = v0 + cv dv for every mover, where (dx, dv) are the
  * given per-entity slope arrays (velocity and acceleration of an earlier stage), and likewise for
  * spinners (angle/orientation from w, w from alpha). Used by the Runge-Kutta schemes.
+ * @category Integrators
  */
 export function writeTrial(
   world: PhysicsWorld,
@@ -313,6 +327,7 @@ export function writeTrial(
  * velocity and acceleration slopes). 3D: q = q0 + cq dq with dq a quaternion slope (q' = w q / 2),
  * normalised; w = w0 + cw dw, or for a body with a principal inertia tensor while `s.bodyFrameSpin`,
  * w = R(q) (w_b0 + cw dw) with dw a body-frame slope.
+ * @category Integrators
  */
 export function writeAngularTrial(
   world: PhysicsWorld,
@@ -379,6 +394,7 @@ export function writeAngularTrial(
  * Orientation slope of every spinner at the current state, written into `out`: in 2D the angular
  * velocity w_z (into out[0]); in 3D the quaternion derivative q' = (w, 0) q / 2 (world-frame w)
  * into out[0..3].
+ * @category Integrators
  */
 export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out: Float64Array[]): void {
   const c = world.components;
@@ -417,6 +433,7 @@ export function orientationSlope(world: PhysicsWorld, s: IntegratorScratch, out:
  * (a copy of the velocity), acceleration acc, orientation slope kq, angular acceleration alpha.
  * `evaluate` false reuses the force accumulators as they are (the pipeline evaluated them at the
  * start of the step).
+ * @category Integrators
  */
 export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: number, evaluate: boolean): void {
   if (evaluate) accelerationsAt(world, s, time);
@@ -436,7 +453,10 @@ export function stageSlopes(world: PhysicsWorld, s: IntegratorScratch, time: num
   orientationSlope(world, s, s.kq);
 }
 
-/** sum = (reset ? 0 : sum) + weight * (current stage slopes), for every mover and spinner. */
+/**
+ * sum = (reset ? 0 : sum) + weight * (current stage slopes), for every mover and spinner.
+ * @category Integrators
+ */
 export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: number, reset: boolean): void {
   const S = s.sum;
   const lin = [s.kv[0]!, s.kv[1]!, s.kv[2]!, s.acc[0]!, s.acc[1]!, s.acc[2]!];
@@ -475,7 +495,10 @@ export function accumulate(world: PhysicsWorld, s: IntegratorScratch, weight: nu
   }
 }
 
-/** The sum arrays grouped as writeTrial expects: [x-slope], [v-slope], [q-slope], [w-slope]. */
+/**
+ * The sum arrays grouped as writeTrial expects: [x-slope], [v-slope], [q-slope], [w-slope].
+ * @category Integrators
+ */
 export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[], Float64Array[], Float64Array[]] {
   const S = s.sum;
   return [
@@ -493,6 +516,7 @@ export function sumGroups(s: IntegratorScratch): [Float64Array[], Float64Array[]
  * x += v h + g h^2 / 2. Only bodies no force acted on this step are shifted: a body under another
  * force keeps the scheme's plain drift, so a force-balanced body stays at rest (the trade-off is
  * documented on semiImplicitEuler).
+ * @category Integrators
  */
 export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: number): void {
   const g = world.gravity;
@@ -519,7 +543,10 @@ export function shiftByGravity(world: PhysicsWorld, s: IntegratorScratch, k: num
   }
 }
 
-/** Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first. */
+/**
+ * Checks the movers and spinners for non-finite state after a scheme; throws NonFiniteStateError naming the first.
+ * @category Integrators
+ */
 export function checkFinite(world: PhysicsWorld, s: IntegratorScratch): void {
   const c = world.components;
   const px = c.Position.x,

@@ -26,7 +26,10 @@ import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './st
  * it is removed and reported in `world.joints.breaks` after the step.
  */
 
-/** Options every joint shares. */
+/**
+ * Options every joint shares.
+ * @category Joints and ropes
+ */
 export interface JointBaseOptions {
   /** Body A, or omitted / null for the fixed world. */
   a?: number | null;
@@ -75,7 +78,10 @@ function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions
   return { a, b };
 }
 
-/** A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError */
+/**
+ * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
+ * @category Joints and ropes
+ */
 export function assertBreakLimit(where: string, param: string, value: unknown): void {
   if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
   if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
@@ -187,7 +193,10 @@ function handle(world: PhysicsWorld, slot: number): number {
   return currentHandle(world, slot);
 }
 
-/** Options of `addDistanceJoint`. */
+/**
+ * Options of `addDistanceJoint`.
+ * @category Joints and ropes
+ */
 export interface DistanceJointOptions extends JointBaseOptions {
   /** Anchor on A, world point, m. Default A's centre; required when A is the world. */
   anchorA?: ArrayLike<number>;
@@ -218,6 +227,7 @@ export interface DistanceJointOptions extends JointBaseOptions {
  *   breakStretch <= 0, or a full world.
  * @example
  * const rod = addDistanceJoint(world, { b: bob, anchorA: [0, 5] });   // bob swings on a 5 m rod... from [0, 5]
+ * @category Joints and ropes
  */
 export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOptions): number {
   const where = 'addDistanceJoint';
@@ -302,7 +312,10 @@ function storeDrive(world: PhysicsWorld, j: number, limit: boolean, lower: numbe
   J.flags[j] = (limit ? JointFlag.Limit : 0) | (d.maxMotor > 0 ? JointFlag.Motor : 0) | (d.hertz > 0 ? JointFlag.Spring : 0);
 }
 
-/** Options of `addRevoluteJoint`. */
+/**
+ * Options of `addRevoluteJoint`.
+ * @category Joints and ropes
+ */
 export interface RevoluteJointOptions extends JointBaseOptions {
   /** The pin, world point, m. Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -327,6 +340,7 @@ export interface RevoluteJointOptions extends JointBaseOptions {
  * @throws TypeError | RangeError on a missing or removed body, a == b, a 3D world, unknown options,
  *   only one limit, lowerAngle > upperAngle or outside [-pi, pi], negative maxMotorTorque, hertz or
  *   damping ratio, non-finite values, or a full world.
+ * @category Joints and ropes
  */
 export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
   const where = 'addRevoluteJoint';
@@ -345,7 +359,10 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
   return handle(world, j);
 }
 
-/** Options of `addPrismaticJoint`. */
+/**
+ * Options of `addPrismaticJoint`.
+ * @category Joints and ropes
+ */
 export interface PrismaticJointOptions extends JointBaseOptions {
   /** Anchor, world point, m (on both bodies). Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -368,6 +385,7 @@ export interface PrismaticJointOptions extends JointBaseOptions {
  * Adds a prismatic joint: B slides along `axis` (fixed in A) and does not turn relative to A;
  * optional limits, motor and spring along the axis. Box2D v3's prismatic joint.
  * @returns the joint entity. @throws TypeError | RangeError as `addRevoluteJoint`, and on a zero axis.
+ * @category Joints and ropes
  */
 export function addPrismaticJoint(world: PhysicsWorld, options: PrismaticJointOptions): number {
   const where = 'addPrismaticJoint';
@@ -397,7 +415,10 @@ function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number, numbe
   J.axisY[j] = -si * axis[0] + co * axis[1];
 }
 
-/** Options of `addWeldJoint`. */
+/**
+ * Options of `addWeldJoint`.
+ * @category Joints and ropes
+ */
 export interface WeldJointOptions extends JointBaseOptions {
   /** Weld point, world, m. Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -415,6 +436,7 @@ export interface WeldJointOptions extends JointBaseOptions {
  * Adds a weld joint: B is glued to A at `anchor` with their relative angle fixed; soft (a springy
  * beam) when given hertz. Box2D v3's weld joint.
  * @returns the joint entity. @throws TypeError | RangeError on bad bodies, options or values.
+ * @category Joints and ropes
  */
 export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): number {
   const where = 'addWeldJoint';
@@ -434,7 +456,10 @@ export function addWeldJoint(world: PhysicsWorld, options: WeldJointOptions): nu
   return handle(world, j);
 }
 
-/** Options of `addWheelJoint`. */
+/**
+ * Options of `addWheelJoint`.
+ * @category Joints and ropes
+ */
 export interface WheelJointOptions extends JointBaseOptions {
   /** Where the wheel is held, world point, m. Default B's (the wheel's) centre. */
   anchor?: ArrayLike<number>;
@@ -458,6 +483,7 @@ export interface WheelJointOptions extends JointBaseOptions {
  * suspension spring; B spins freely or driven by a motor (a car's wheel on its chassis A). Box2D v3's
  * wheel joint.
  * @returns the joint entity. @throws TypeError | RangeError on bad bodies, options or values.
+ * @category Joints and ropes
  */
 export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): number {
   const where = 'addWheelJoint';
@@ -487,7 +513,10 @@ export function addWheelJoint(world: PhysicsWorld, options: WheelJointOptions): 
   return handle(world, j);
 }
 
-/** Options of `addMouseJoint`. */
+/**
+ * Options of `addMouseJoint`.
+ * @category Joints and ropes
+ */
 export interface MouseJointOptions {
   /** The body dragged. */
   b: number;
@@ -510,6 +539,7 @@ export interface MouseJointOptions {
  * target that the game moves with the pointer (`setMouseTarget`); B's spin is damped softly. Box2D
  * v3's mouse joint. Remove it with `removeJoint` on release.
  * @returns the joint entity. @throws TypeError | RangeError on a bad body, options or values.
+ * @category Joints and ropes
  */
 export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): number {
   const where = 'addMouseJoint';
@@ -557,7 +587,10 @@ function wakeJoint(world: PhysicsWorld, j: number): void {
   wakeIsland(world, J.b[j]!);
 }
 
-/** Whether `id` is the handle of a live joint (or cloth link) of this world. */
+/**
+ * Whether `id` is the handle of a live joint (or cloth link) of this world.
+ * @category Joints and ropes
+ */
 export function isJoint(world: PhysicsWorld, id: number): boolean {
   if (world.dimensions !== 2 || typeof id !== 'number' || !Number.isInteger(id) || id < 1) return false;
   const slot = id % SLOT_RANGE;
@@ -568,6 +601,7 @@ export function isJoint(world: PhysicsWorld, id: number): boolean {
 /**
  * Removes a joint or a cloth link (the bodies of a joint wake).
  * @throws RangeError if `joint` is not the handle of a live joint or cloth link.
+ * @category Joints and ropes
  */
 export function removeJoint(world: PhysicsWorld, joint: number): void {
   const slot = resolveEntity(world, joint, 'removeJoint', 'joint');
@@ -582,6 +616,7 @@ export function removeJoint(world: PhysicsWorld, joint: number): void {
 /**
  * Moves a mouse joint's target, world point, m.
  * @throws RangeError if `joint` is not a live mouse joint; TypeError | RangeError on a bad point.
+ * @category Joints and ropes
  */
 export function setMouseTarget(world: PhysicsWorld, joint: number, target: ArrayLike<number>): void {
   const j = requireJoint('setMouseTarget', world, joint, [JointType.Mouse]);
@@ -596,6 +631,7 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
  * Sets a joint's motor: target `speed` (rad/s for revolute and wheel, m/s for prismatic) and largest
  * torque (N m) or force (N) `maxForce`, >= 0; 0 turns the motor off.
  * @throws RangeError if `joint` is not a live revolute, prismatic or wheel joint, or on bad values.
+ * @category Joints and ropes
  */
 export function setJointMotor(world: PhysicsWorld, joint: number, speed: number, maxForce: number): void {
   const where = 'setJointMotor';
@@ -614,6 +650,7 @@ export function setJointMotor(world: PhysicsWorld, joint: number, speed: number,
  * Sets (or with `lower` null, removes) a joint's limits: revolute angles, rad in [-pi, pi]; prismatic
  * and wheel translations, m; lower <= upper.
  * @throws RangeError if `joint` is not a live revolute, prismatic or wheel joint, or on bad limits.
+ * @category Joints and ropes
  */
 export function setJointLimits(world: PhysicsWorld, joint: number, lower: number | null, upper?: number): void {
   const where = 'setJointLimits';
@@ -638,6 +675,7 @@ export function setJointLimits(world: PhysicsWorld, joint: number, lower: number
  * Sets a joint's spring: natural frequency `hertz` (Hz, >= 0; 0 removes the spring, or makes a weld's
  * linear part or a distance joint rigid) and `dampingRatio` (>= 0). Mouse joints need hertz > 0.
  * @throws RangeError if `joint` is not a live joint, or on bad values.
+ * @category Joints and ropes
  */
 export function setJointSpring(world: PhysicsWorld, joint: number, hertz: number, dampingRatio: number): void {
   const where = 'setJointSpring';
@@ -658,6 +696,7 @@ export function setJointSpring(world: PhysicsWorld, joint: number, hertz: number
 /**
  * The current length of a distance joint (distance between its anchors), m.
  * @throws RangeError if `joint` is not a live distance joint.
+ * @category Joints and ropes
  */
 export function jointLength(world: PhysicsWorld, joint: number): number {
   const j = requireJoint('jointLength', world, joint, [JointType.Distance]);
@@ -669,6 +708,7 @@ export function jointLength(world: PhysicsWorld, joint: number): number {
  * The relative angle of a revolute or weld joint: angle of B minus angle of A minus the angle between
  * them when the joint was made, rad, wrapped into [-pi, pi].
  * @throws RangeError if `joint` is not a live revolute or weld joint.
+ * @category Joints and ropes
  */
 export function jointAngle(world: PhysicsWorld, joint: number): number {
   const j = requireJoint('jointAngle', world, joint, [JointType.Revolute, JointType.Weld]);
@@ -682,6 +722,7 @@ export function jointAngle(world: PhysicsWorld, joint: number): number {
 /**
  * The world positions of a joint's two anchors, m: [ax, ay, bx, by] (A's is the fixed point or the
  * mouse target when A is the world). @throws RangeError if `joint` is not a live joint.
+ * @category Joints and ropes
  */
 export function jointAnchors(world: PhysicsWorld, joint: number): [number, number, number, number] {
   return anchorsOf(world, requireJoint('jointAnchors', world, joint));

@@ -13,7 +13,10 @@ function pairKey(js: JointState, a: number, b: number): number {
   return a < b ? a * n + b : b * n + a;
 }
 
-/** Counts joint `j` between bodies a and b (0 = the world: not counted) as keeping them apart. */
+/**
+ * Counts joint `j` between bodies a and b (0 = the world: not counted) as keeping them apart.
+ * @category Joints and ropes
+ */
 export function addNoCollide(js: JointState, j: number, a: number, b: number): void {
   if (a === 0 || b === 0 || a === b) return;
   js.noCollideJoint[j] = 1;
@@ -23,7 +26,10 @@ export function addNoCollide(js: JointState, j: number, a: number, b: number): v
   js.noCollidePairs.set(k, (js.noCollidePairs.get(k) ?? 0) + 1);
 }
 
-/** Uncounts joint `j` between bodies a and b, if `addNoCollide` counted it. */
+/**
+ * Uncounts joint `j` between bodies a and b, if `addNoCollide` counted it.
+ * @category Joints and ropes
+ */
 export function removeNoCollide(js: JointState, j: number, a: number, b: number): void {
   if (js.noCollideJoint[j] !== 1) return;
   js.noCollideJoint[j] = 0;
@@ -35,7 +41,10 @@ export function removeNoCollide(js: JointState, j: number, a: number, b: number)
   else js.noCollidePairs.delete(k);
 }
 
-/** Whether a joint without `collideConnected` joins bodies a and b (so their contacts are skipped). */
+/**
+ * Whether a joint without `collideConnected` joins bodies a and b (so their contacts are skipped).
+ * @category Joints and ropes
+ */
 export function jointKeepsApart(js: JointState, a: number, b: number): boolean {
   const nc = js.noCollide;
   if (nc.length === 0 || nc[a] === 0 || nc[b] === 0) return false;

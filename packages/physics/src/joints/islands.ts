@@ -7,7 +7,10 @@ import { JointType } from './store.js';
  * together, as Box2D v3's islands join bodies through contacts and joints alike.
  */
 
-/** A joint that carried force in the last step supports its bodies (a pendulum at rest hangs on its pin). */
+/**
+ * A joint that carried force in the last step supports its bodies (a pendulum at rest hangs on its pin).
+ * @category Joints and ropes
+ */
 export function markJointSupport(world: PhysicsWorld, supported: Uint32Array, stamp: number): void {
   if (world.joints.attached.length === 0) return;
   const J = world.components.Joint;
@@ -24,6 +27,7 @@ export function markJointSupport(world: PhysicsWorld, supported: Uint32Array, st
  * Joins the islands of the sleep candidates `bodies` (whose union-find `parent` is initialised) that
  * a joint holds together. A body dragged by a mouse joint, or jointed to a moving body that cannot
  * sleep (one without a collider), keeps its island awake (its rest time is reset).
+ * @category Joints and ropes
  */
 export function joinJointIslands(world: PhysicsWorld, bodies: ArrayLike<number>, rest: Float64Array, parent: Int32Array): void {
   const js = world.joints;

@@ -8,6 +8,7 @@ import { removeNoCollide } from './connected.js';
 /**
  * Removes joint entity `j` (which must be a live joint): its bodies are woken (what held them is
  * gone) and no longer count it as attached.
+ * @category Joints and ropes
  */
 export function removeJointUnchecked(world: PhysicsWorld, j: number): void {
   detachJoint(world, j);
@@ -33,6 +34,7 @@ function detachJoint(world: PhysicsWorld, j: number): void {
  * Removal hook: removes every joint attached to body `eid` (so no joint ever holds a recycled id);
  * if `eid` is itself a joint, does its bookkeeping (the caller removes the entity). Costs nothing in a
  * world without joints or for a body that no joint holds.
+ * @category Joints and ropes
  */
 export function removeJointsOf(world: PhysicsWorld, eid: number): void {
   const att = world.joints.attached;

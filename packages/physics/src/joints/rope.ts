@@ -12,7 +12,10 @@ import {
 import type { PhysicsWorld } from '../world.js';
 import { addDistanceJoint } from './api.js';
 
-/** Options of `createRope`. Unknown fields are rejected. */
+/**
+ * Options of `createRope`. Unknown fields are rejected.
+ * @category Joints and ropes
+ */
 export interface RopeOptions {
   /** First end, m (x, y). */
   start: ArrayLike<number>;
@@ -36,7 +39,10 @@ export interface RopeOptions {
   breakForce?: number;
 }
 
-/** What `createRope` made. */
+/**
+ * What `createRope` made.
+ * @category Joints and ropes
+ */
 export interface Rope {
   /** The bodies' handles from the start to the end (Float64Array: a handle needs up to 53 bits, see handles.ts). */
   readonly bodies: Float64Array;
@@ -51,6 +57,7 @@ export interface Rope {
  * @returns the bodies and joints.
  * @throws TypeError | RangeError `createRope: <param> must be ...` on a 3D world, unknown or null options, bad
  *   ends or values, start equal to end, or a world without room for the rope. A refused call adds nothing.
+ * @category Joints and ropes
  */
 export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   const where = 'createRope';

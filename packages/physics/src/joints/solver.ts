@@ -91,6 +91,7 @@ const ROTATES = 4;
  * Whether the world has joints to solve (then the contact solver runs even without contacts). Called
  * by the contact solver at the start of every solve; it also clears the break events of the previous
  * step, so `world.joints.breaks` always holds the last step's.
+ * @category Joints and ropes
  */
 export function jointsToSolve(world: PhysicsWorld): boolean {
   const js = world.joints;
@@ -107,6 +108,7 @@ export function jointsToSolve(world: PhysicsWorld): boolean {
  * writes, for those bodies, the per-entity scratch the contact solver's gather reads (inverse mass and
  * inertia, body type), since bodies without colliders are not seen by the broadphase.
  * @returns the new solver body count.
+ * @category Joints and ropes
  */
 export function gatherJointBodies(world: PhysicsWorld, count: number): number {
   const js = world.joints;
@@ -246,6 +248,7 @@ function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: num
  * Fills every row from the joint components and the solver bodies (already gathered and filled by the
  * contact solver): start-of-step anchors (world frame, from each centre), centre difference, relative
  * angle, axis, effective masses, softness, and warm-start impulses. `hs` is the solver substep, s.
+ * @category Joints and ropes
  */
 export function prepareJoints(world: PhysicsWorld, hs: number): void {
   const js = world.joints;
@@ -508,6 +511,7 @@ function unwind(x: number): number {
  * Advances each solver body's rotation since the start of the step by w h_s (once per substep, after
  * the positions move): the angle exactly, its cos and sin as a normalised first-order update of the
  * unit complex number (Box2D v3 b2IntegrateRotation).
+ * @category Joints and ropes
  */
 export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
   if (world.joints.rowCount === 0) return;
@@ -531,7 +535,10 @@ export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
   }
 }
 
-/** Applies every joint's accumulated impulses to its bodies (warm start, once per substep, before the contacts'). */
+/**
+ * Applies every joint's accumulated impulses to its bodies (warm start, once per substep, before the contacts').
+ * @category Joints and ropes
+ */
 export function warmStartJoints(world: PhysicsWorld): void {
   const js = world.joints;
   const n = js.rowCount;
@@ -682,6 +689,7 @@ export function warmStartJoints(world: PhysicsWorld): void {
  * in which the rigid parts push out their position error as soft constraints; one without it (relax),
  * in which they only remove relative velocity. `hs` is the substep, s. Velocities of the static world
  * (solver index 0) stay zero: its inverse mass is 0.
+ * @category Joints and ropes
  */
 export function solveJoints(world: PhysicsWorld, hs: number, useBias: boolean): void {
   if (world.joints.rowCount === 0) return;
@@ -1367,6 +1375,7 @@ function solvePointLinks(world: PhysicsWorld, invH: number, useBias: boolean): v
  * of the last substep / h_s), the largest position error left, the impulses kept for the next step's
  * warm start, and breaking: a joint whose force exceeds `breakForce`, torque `breakTorque` or strain
  * `breakStretch` is removed and reported in `world.joints.breaks`.
+ * @category Joints and ropes
  */
 export function finishJoints(world: PhysicsWorld, hs: number): void {
   const js = world.joints;

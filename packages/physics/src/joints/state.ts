@@ -4,20 +4,38 @@
  * solver body's rotation within the step, and the break events of the last step.
  */
 
-/** Floats per solver row (see the offsets in joints/solver.ts). */
+/**
+ * Floats per solver row (see the offsets in joints/solver.ts).
+ * @category Joints and ropes
+ */
 export const ROW_FLOATS = 40;
-/** Floats and integers per point link (see JointState.links). */
+/**
+ * Floats and integers per point link (see JointState.links).
+ * @category Joints and ropes
+ */
 export const LINK_FLOATS = 6;
 export const LINK_INTS = 3;
-/** Floats and integers per pin (see JointState.pins). */
+/**
+ * Floats and integers per pin (see JointState.pins).
+ * @category Joints and ropes
+ */
 export const PIN_FLOATS = 8;
 export const PIN_INTS = 3;
-/** Integers per solver row: joint entity, solver index of A, of B, type. */
+/**
+ * Integers per solver row: joint entity, solver index of A, of B, type.
+ * @category Joints and ropes
+ */
 export const ROW_INTS = 4;
-/** Accumulated impulses kept per joint entity for warm starting (linear x, y, angular, spring, motor, lower, upper). */
+/**
+ * Accumulated impulses kept per joint entity for warm starting (linear x, y, angular, spring, motor, lower, upper).
+ * @category Joints and ropes
+ */
 export const IMPULSES = 7;
 
-/** Joints broken in the last step, in the order they broke (rows 0..count-1). Read after `step`. */
+/**
+ * Joints broken in the last step, in the order they broke (rows 0..count-1). Read after `step`.
+ * @category Joints and ropes
+ */
 export interface JointBreakEvents {
   /** Events in use. */
   count: number;
@@ -33,7 +51,10 @@ export interface JointBreakEvents {
   stretch: Float64Array;
 }
 
-/** Joint solver tuning; may be changed between steps. */
+/**
+ * Joint solver tuning; may be changed between steps.
+ * @category Joints and ropes
+ */
 export interface JointSettings {
   /**
    * Stiffness of the rigid joint constraints' softness, Hz, > 0, capped at a quarter of the solver
@@ -58,7 +79,10 @@ export interface JointSettings {
   warmStarting: boolean;
 }
 
-/** The joint solver's state (world.joints). */
+/**
+ * The joint solver's state (world.joints).
+ * @category Joints and ropes
+ */
 export interface JointState {
   readonly settings: JointSettings;
   /** Rows built this (sub)step. */
@@ -114,7 +138,10 @@ export interface JointState {
   readonly stats: { rows: number; maxError: number; maxErrorJoint: number };
 }
 
-/** Creates an empty joint state (arrays sized when the first joint appears). */
+/**
+ * Creates an empty joint state (arrays sized when the first joint appears).
+ * @category Joints and ropes
+ */
 export function createJointState(): JointState {
   return {
     settings: { hertz: 60, iterations: 2, dampingRatio: 2, warmStarting: true },
@@ -153,7 +180,10 @@ export function createJointState(): JointState {
   };
 }
 
-/** Allocates the per-entity arrays of `state` for a world of `capacity` entities (on the first joint). */
+/**
+ * Allocates the per-entity arrays of `state` for a world of `capacity` entities (on the first joint).
+ * @category Joints and ropes
+ */
 export function ensureJointArrays(state: JointState, capacity: number): void {
   if (state.impulses.length >= IMPULSES * (capacity + 1)) return;
   state.impulses = new Float64Array(IMPULSES * (capacity + 1));
@@ -165,7 +195,10 @@ export function ensureJointArrays(state: JointState, capacity: number): void {
   state.bodyClass = new Uint8Array(capacity + 1);
 }
 
-/** Grows the rows to hold `n`. */
+/**
+ * Grows the rows to hold `n`.
+ * @category Joints and ropes
+ */
 export function ensureRows(state: JointState, n: number): void {
   if (state.rows.length >= n * ROW_FLOATS) return;
   let cap = Math.max(16, state.rows.length / ROW_FLOATS);
@@ -178,7 +211,10 @@ export function ensureRows(state: JointState, n: number): void {
   state.pinInts = new Int32Array(cap * PIN_INTS);
 }
 
-/** Appends a break event, growing the buffer by doubling. */
+/**
+ * Appends a break event, growing the buffer by doubling.
+ * @category Joints and ropes
+ */
 export function pushBreak(ev: JointBreakEvents, joint: number, a: number, b: number, force: number, torque: number, stretch: number): void {
   if (ev.count >= ev.joint.length) {
     const n = ev.joint.length * 2;

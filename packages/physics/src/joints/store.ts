@@ -16,21 +16,32 @@
  *   spring along it; B spins freely, driven by an optional motor (a car wheel);
  * - `Mouse` (5): pulls B's anchor toward a moving world target with a soft spring of at most
  *   `maxForce` (dragging with the pointer).
+ * @category Joints and ropes
  */
 export const JointType = Object.freeze({ Distance: 0, Revolute: 1, Prismatic: 2, Weld: 3, Wheel: 4, Mouse: 5 } as const);
 
-/** One of the `JointType` codes. */
+/**
+ * One of the `JointType` codes.
+ * @category Joints and ropes
+ */
 export type JointTypeCode = (typeof JointType)[keyof typeof JointType];
 
-/** Names of the joint types, indexed by code (for messages). */
+/**
+ * Names of the joint types, indexed by code (for messages).
+ * @category Joints and ropes
+ */
 export const JOINT_TYPE_NAMES = ['distance', 'revolute', 'prismatic', 'weld', 'wheel', 'mouse'] as const;
 
-/** Bits of `Joint.flags`. */
+/**
+ * Bits of `Joint.flags`.
+ * @category Joints and ropes
+ */
 export const JointFlag = Object.freeze({ Spring: 1, Limit: 2, Motor: 4 } as const);
 
 /**
  * Parameters of a joint entity. Units SI: m, rad, s, N, N m. Written by the `add*Joint` and
  * `setJoint*` functions (joints/api.ts), which validate them; read by the joint solver.
+ * @category Joints and ropes
  */
 export interface JointStore {
   /** JointType code. */
@@ -87,7 +98,10 @@ export interface JointStore {
   torque: Float64Array;
 }
 
-/** The Joint store with empty arrays (it is lazily allocated: see LAZY_COMPONENTS). */
+/**
+ * The Joint store with empty arrays (it is lazily allocated: see LAZY_COMPONENTS).
+ * @category Joints and ropes
+ */
 export function createJointStore(): JointStore {
   const z = (): Float64Array => new Float64Array(0);
   return {

@@ -29,7 +29,10 @@ import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store
  * narrowphase and the ball narrowphase both consult.
  */
 
-/** Options every 3D joint shares. */
+/**
+ * Options every 3D joint shares.
+ * @category Joints and ropes
+ */
 export interface Joint3DBaseOptions {
   /** Body A, or omitted / null for the fixed world. */
   a?: number | null;
@@ -182,7 +185,10 @@ function make(
   return j;
 }
 
-/** Options of `addBallJoint3D`. */
+/**
+ * Options of `addBallJoint3D`.
+ * @category Joints and ropes
+ */
 export interface BallJoint3DOptions extends Joint3DBaseOptions {
   /** The joint's point (world, m). Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -198,6 +204,7 @@ export interface BallJoint3DOptions extends Joint3DBaseOptions {
  * @throws TypeError | RangeError `addBallJoint3D: <param> must be ...` in a 2D world, on missing or bad
  *   bodies (removed, not 3D bodies, the same twice), bad vectors, a cone angle outside (0, pi), a bad
  *   break threshold, or a full world.
+ * @category Joints and ropes
  */
 export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions): number {
   const where = 'addBallJoint3D';
@@ -274,7 +281,10 @@ function storeLimitAndMotor(s: Joint3DStore, j: number, lm: LimitAndMotor): void
   }
 }
 
-/** Options of `addHingeJoint3D`. */
+/**
+ * Options of `addHingeJoint3D`.
+ * @category Joints and ropes
+ */
 export interface HingeJoint3DOptions extends Joint3DBaseOptions {
   /** A point on the hinge's axis (world, m). Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -293,6 +303,7 @@ export interface HingeJoint3DOptions extends Joint3DBaseOptions {
  * about the axis only; optional angle limits and a motor. @returns the joint's handle.
  * @throws TypeError | RangeError `addHingeJoint3D: <param> must be ...` as addBallJoint3D, on a zero
  *   axis, lower > 0 or upper < 0, only one limit, a motor speed without a torque or a negative torque.
+ * @category Joints and ropes
  */
 export function addHingeJoint3D(world: PhysicsWorld, options: HingeJoint3DOptions): number {
   const where = 'addHingeJoint3D';
@@ -305,13 +316,19 @@ export function addHingeJoint3D(world: PhysicsWorld, options: HingeJoint3DOption
   return currentHandle(world, j);
 }
 
-/** Options of `addFixedJoint3D`. */
+/**
+ * Options of `addFixedJoint3D`.
+ * @category Joints and ropes
+ */
 export interface FixedJoint3DOptions extends Joint3DBaseOptions {
   /** The point the bodies are welded at (world, m). Default B's centre. */
   anchor?: ArrayLike<number>;
 }
 
-/** Fixed (weld): B keeps its position and orientation relative to A. @returns the joint's handle. @throws as addBallJoint3D. */
+/**
+ * Fixed (weld): B keeps its position and orientation relative to A. @returns the joint's handle. @throws as addBallJoint3D.
+ * @category Joints and ropes
+ */
 export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOptions): number {
   const where = 'addFixedJoint3D';
   const e = ends(where, world, options, ['anchor']);
@@ -319,7 +336,10 @@ export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOption
   return currentHandle(world, make(world, where, Joint3DType.Fixed, e, options, p, p, [0, 1, 0]));
 }
 
-/** Options of `addDistanceJoint3D`. */
+/**
+ * Options of `addDistanceJoint3D`.
+ * @category Joints and ropes
+ */
 export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
   /** Anchor on A (world, m); required when A is the world, else default A's centre. */
   anchorA?: ArrayLike<number>;
@@ -340,6 +360,7 @@ export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
  * [minLength, maxLength] (a rope: minLength 0). @returns the joint's handle.
  * @throws TypeError | RangeError `addDistanceJoint3D: <param> must be ...` as addBallJoint3D, on a missing
  *   anchorA with the world as A, a length <= 0, limits out of order, a negative spring value.
+ * @category Joints and ropes
  */
 export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3DOptions): number {
   const where = 'addDistanceJoint3D';
@@ -370,7 +391,10 @@ export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3D
   return currentHandle(world, j);
 }
 
-/** Options of `addSliderJoint3D`. */
+/**
+ * Options of `addSliderJoint3D`.
+ * @category Joints and ropes
+ */
 export interface SliderJoint3DOptions extends Joint3DBaseOptions {
   /** A point on the slide line (world, m), fixed in both bodies when made. Default B's centre. */
   anchor?: ArrayLike<number>;
@@ -393,6 +417,7 @@ export interface SliderJoint3DOptions extends Joint3DBaseOptions {
  * @returns the joint's handle.
  * @throws TypeError | RangeError `addSliderJoint3D: <param> must be ...` as addBallJoint3D, on a zero
  *   axis, lower > 0 or upper < 0, only one limit, a motor speed without a force or a negative force.
+ * @category Joints and ropes
  */
 export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOptions): number {
   const where = 'addSliderJoint3D';
@@ -440,6 +465,7 @@ function wakeJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
  * @throws RangeError `setBallJoint3DCone: joint must be ...` on a removed entity or a joint that is not
  *   a 3D ball joint; TypeError | RangeError `setBallJoint3DCone: coneAngle must be ...` naming the value.
  *   A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle: number | null): void {
   const where = 'setBallJoint3DCone';
@@ -483,6 +509,7 @@ function dropIdleDistanceImpulses(s: Joint3DStore, j: number): void {
  * @throws RangeError `setDistanceJoint3DLength: joint must be ...` on a removed entity or a joint that
  *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DLength: <param> must be ...`
  *   naming the parameter and value. A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, length: number, minLength?: number, maxLength?: number): void {
   const where = 'setDistanceJoint3DLength';
@@ -522,6 +549,7 @@ export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, len
  * @throws RangeError `setDistanceJoint3DSpring: joint must be ...` on a removed entity or a joint that
  *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DSpring: <param> must be ...`
  *   naming the parameter and value. A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, hertz: number, dampingRatio: number): void {
   const where = 'setDistanceJoint3DSpring';
@@ -546,6 +574,7 @@ export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, her
  * @throws RangeError `setJoint3DBreak: joint must be ...` on a removed entity or one that is not a 3D
  *   joint; TypeError | RangeError `setJoint3DBreak: <param> must be ...` naming the parameter and value
  *   (NaN, <= 0, not a number). A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setJoint3DBreak(world: PhysicsWorld, joint: number, breakForce: number, breakTorque?: number): void {
   const where = 'setJoint3DBreak';
@@ -570,6 +599,7 @@ export function setJoint3DBreak(world: PhysicsWorld, joint: number, breakForce: 
  *   3D hinge or slider; TypeError | RangeError `setJoint3DLimits: <param> must be ...` naming the
  *   parameter and value (upper missing, not finite, lower > upper, a hinge limit outside [-pi, pi]).
  *   A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setJoint3DLimits(world: PhysicsWorld, joint: number, lower: number | null, upper?: number): void {
   const where = 'setJoint3DLimits';
@@ -604,6 +634,7 @@ export function setJoint3DLimits(world: PhysicsWorld, joint: number, lower: numb
  * @throws RangeError `setJoint3DMotor: joint must be ...` on a removed entity or a joint that is not a
  *   3D hinge or slider; TypeError | RangeError `setJoint3DMotor: <param> must be ...` naming the
  *   parameter and value. A throwing call changes nothing.
+ * @category Joints and ropes
  */
 export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: number, maxForce: number): void {
   const where = 'setJoint3DMotor';
@@ -620,7 +651,10 @@ export function setJoint3DMotor(world: PhysicsWorld, joint: number, speed: numbe
   wakeJoint3D(world, s, j);
 }
 
-/** Removes a 3D joint and wakes its bodies. @throws RangeError on a removed entity or one that is not a 3D joint. */
+/**
+ * Removes a 3D joint and wakes its bodies. @throws RangeError on a removed entity or one that is not a 3D joint.
+ * @category Joints and ropes
+ */
 export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   const j = resolveEntity(world, joint, 'removeJoint3D', 'joint');
   const s = joints3DOf(world);
@@ -629,7 +663,10 @@ export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   removeJoint3DUnchecked(world, s, j);
 }
 
-/** Internal: unlists and removes joint slot j, and wakes its bodies (what held them is gone). */
+/**
+ * Internal: unlists and removes joint slot j, and wakes its bodies (what held them is gone).
+ * @category Joints and ropes
+ */
 export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
   unlistJoint3D(world, s, j);
   if (entityExists(world, j)) removeEntity(world, j);
@@ -666,6 +703,7 @@ function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
  * The 3D joints broken in the last step, as [joint, a, b, step] (handles; a 0: the world; the step count
  * when it broke, world.steps - 1 after that step). Empty when none broke in the last step: a list left
  * from an earlier step (the solver clears it only when it runs) is cleared here.
+ * @category Joints and ropes
  */
 export function joint3DBreaks(world: PhysicsWorld): number[][] {
   const s = joints3DOf(world);

@@ -5,6 +5,7 @@ import { joints3DOf } from './store.js';
 /**
  * A 3D joint that carried an impulse in the last step (any of its rows' accumulated impulses is not 0)
  * supports its bodies, as a 2D joint does (`markJointSupport`): a bob at rest on its string may sleep.
+ * @category Joints and ropes
  */
 export function markJoint3DSupport(world: PhysicsWorld, supported: Uint32Array, stamp: number): void {
   const s = joints3DOf(world);
@@ -40,6 +41,7 @@ export function markJoint3DSupport(world: PhysicsWorld, supported: Uint32Array, 
  * candidate's rest time, so it stays awake; the fixed world and static bodies hold nothing awake. A
  * sleeping body jointed to a candidate that moves (rest time 0) is returned, for the caller to wake
  * its island (it would otherwise hold the moving body like a fixed anchor); null when there is none.
+ * @category Joints and ropes
  */
 export function joinJoint3DIslands(
   world: PhysicsWorld,

@@ -77,13 +77,19 @@ function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): vo
   out[2] = 1 / (1 + a);
 }
 
-/** Whether the world has 3D joints. */
+/**
+ * Whether the world has 3D joints.
+ * @category Joints and ropes
+ */
 export function joints3DToSolve(world: PhysicsWorld): boolean {
   const s = joints3DOf(world);
   return world.dimensions === 3 && s !== undefined && s.list.length > 0;
 }
 
-/** Gives the joints' moving bodies solver indices (continuing the list); returns the new count. */
+/**
+ * Gives the joints' moving bodies solver indices (continuing the list); returns the new count.
+ * @category Joints and ropes
+ */
 export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return count;
@@ -127,7 +133,10 @@ export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number 
   return count;
 }
 
-/** Softness for this step, and marks the joint bodies as pushed. Every row's impulse is kept (warm start). */
+/**
+ * Softness for this step, and marks the joint bodies as pushed. Every row's impulse is kept (warm start).
+ * @category Joints and ropes
+ */
 export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
@@ -315,7 +324,10 @@ const K = new Float64Array(9),
   ax = new Float64Array(3),
   bx = new Float64Array(3);
 
-/** Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance). */
+/**
+ * Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance).
+ * @category Joints and ropes
+ */
 export function warmStartJoints3D(world: PhysicsWorld): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return;
@@ -478,7 +490,10 @@ function angularRow(
   return lam;
 }
 
-/** One pass over the joints: soft with `useBias`, else relaxing (no bias). */
+/**
+ * One pass over the joints: soft with `useBias`, else relaxing (no bias).
+ * @category Joints and ropes
+ */
 export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return;
@@ -841,7 +856,10 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
   }
 }
 
-/** After the substeps: joints past their breaking force or torque are removed and listed. */
+/**
+ * After the substeps: joints past their breaking force or torque are removed and listed.
+ * @category Joints and ropes
+ */
 export function finishJoints3D(world: PhysicsWorld, hs: number): void {
   const s = joints3DOf(world);
   if (s === undefined || world.dimensions !== 3) return;

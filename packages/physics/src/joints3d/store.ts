@@ -1,16 +1,23 @@
 import { registerExternalWorldState } from '../snapshot/world-state.js';
 import type { PhysicsWorld } from '../world.js';
 
-/** Kinds of 3D joints. */
+/**
+ * Kinds of 3D joints.
+ * @category Joints and ropes
+ */
 export const Joint3DType = Object.freeze({ Ball: 0, Hinge: 1, Fixed: 2, Distance: 3, Slider: 4 } as const);
 
-/** Flags of a 3D joint. */
+/**
+ * Flags of a 3D joint.
+ * @category Joints and ropes
+ */
 export const Joint3DFlag = Object.freeze({ Limit: 1, Motor: 2, Spring: 4, Cone: 8 } as const);
 
 /**
  * The 3D joints of a world, indexed by joint entity (slot), structure of arrays; kept outside the world
  * object (registered for snapshots). Anchors and axes are in the bodies' frames (about their centres
  * of mass); body A 0 is the fixed world, whose frame is the world's.
+ * @category Joints and ropes
  */
 export interface Joint3DStore {
   /** Joint slots in the order made (removed ones are taken out). */
@@ -117,7 +124,10 @@ function create(capacity: number): Joint3DStore {
   };
 }
 
-/** The world's 3D joint store (made when `create` is true). */
+/**
+ * The world's 3D joint store (made when `create` is true).
+ * @category Joints and ropes
+ */
 export function joints3DOf(world: PhysicsWorld, create_: true): Joint3DStore;
 export function joints3DOf(world: PhysicsWorld, create_?: boolean): Joint3DStore | undefined;
 export function joints3DOf(world: PhysicsWorld, create_ = false): Joint3DStore | undefined {

@@ -8,6 +8,7 @@
  * last bits are left to the engine), so a world stepped with it hashes alike everywhere.
  * @param x angle, rad, any finite number (the reduction loses about |x| * 2.4e-16 of absolute accuracy: 2.4e-13 at 1,000 rad).
  * @returns cos x, within 5e-14 + |x| * 2.4e-16 of the exact value (4.4e-14 truncation, the rest rounding); NaN for a NaN or infinite x.
+ * @category Utilities
  */
 export function cosine(x: number): number {
   const r = x - TWO_PI * Math.round(x * INV_TWO_PI);

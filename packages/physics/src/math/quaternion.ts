@@ -4,7 +4,10 @@
  * Rotation Sequences, 1999). Rotation of v by q: v' = v + w t + q_v x t with t = 2 q_v x v.
  */
 
-/** Rotates (vx, vy, vz) by the quaternion (qx, qy, qz, qw); writes into out[0..2]. */
+/**
+ * Rotates (vx, vy, vz) by the quaternion (qx, qy, qz, qw); writes into out[0..2].
+ * @category Utilities
+ */
 export function rotateVector(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number, out: Float64Array): void {
   const tx = 2 * (qy * vz - qz * vy),
     ty = 2 * (qz * vx - qx * vz),
@@ -14,7 +17,10 @@ export function rotateVector(qx: number, qy: number, qz: number, qw: number, vx:
   out[2] = vz + qw * tz + (qx * ty - qy * tx);
 }
 
-/** Rotates (vx, vy, vz) by the inverse (conjugate) of the unit quaternion: world to body frame. */
+/**
+ * Rotates (vx, vy, vz) by the inverse (conjugate) of the unit quaternion: world to body frame.
+ * @category Utilities
+ */
 export function rotateVectorInverse(
   qx: number,
   qy: number,
@@ -31,6 +37,7 @@ export function rotateVectorInverse(
 /**
  * q[e] = exp(r / 2) (x, y, z, w): the orientation (x, y, z, w) turned by the rotation vector r (angle
  * |r| about r, world frame), renormalised so it stays unit length to rounding.
+ * @category Utilities
  */
 export function rotateFrom(
   qx: Float64Array,
@@ -73,7 +80,10 @@ export function rotateFrom(
   qw[e] = nw;
 }
 
-/** q[e] = exp(r / 2) q[e]: turns the stored orientation of entity e by the rotation vector r. */
+/**
+ * q[e] = exp(r / 2) q[e]: turns the stored orientation of entity e by the rotation vector r.
+ * @category Utilities
+ */
 export function rotateInPlace(
   qx: Float64Array,
   qy: Float64Array,

@@ -78,12 +78,18 @@ interface EcsInternals {
   entitiesWithRelations: Set<unknown>;
 }
 
-/** bitecs' data of `world`. */
+/**
+ * bitecs' data of `world`.
+ * @category Particles
+ */
 export function ecsOf(world: PhysicsWorld): EcsInternals {
   return (world as unknown as Record<symbol, EcsInternals>)[$internal]!;
 }
 
-/** A fixed component set and the queries an entity with exactly that set belongs to. */
+/**
+ * A fixed component set and the queries an entity with exactly that set belongs to.
+ * @category Particles
+ */
 export interface Archetype {
   /** Index in the table's list, 0-based. */
   readonly id: number;
@@ -101,7 +107,10 @@ export interface Archetype {
   readonly table: ArchetypeTable;
 }
 
-/** Per-world archetype bookkeeping: a cache of bitecs' structure, and how stirred the query lists are. */
+/**
+ * Per-world archetype bookkeeping: a cache of bitecs' structure, and how stirred the query lists are.
+ * @category Particles
+ */
 export interface ArchetypeTable {
   /** Every archetype met, by id. */
   readonly list: Archetype[];
@@ -167,7 +176,10 @@ registerExternalWorldState({
   ],
 });
 
-/** The archetype table of `world`, made on first use (small until the first churn: see `capacity`). */
+/**
+ * The archetype table of `world`, made on first use (small until the first churn: see `capacity`).
+ * @category Particles
+ */
 export function archetypes(world: PhysicsWorld): ArchetypeTable {
   let t = tables.get(world);
   if (t === undefined) {
@@ -280,7 +292,10 @@ function masksOf(ecs: EcsInternals, slot: number): Int32Array {
   return masks;
 }
 
-/** id + 1 of the archetype of a death pending in `slot` (0: none): pass to `archetypeFromEntity` before bitecs creates an entity there. */
+/**
+ * id + 1 of the archetype of a death pending in `slot` (0: none): pass to `archetypeFromEntity` before bitecs creates an entity there.
+ * @category Particles
+ */
 export function pendingArchetype(table: ArchetypeTable, slot: number): number {
   return slot < table.pendingMark.length ? table.pendingMark[slot]! : 0;
 }
@@ -291,6 +306,7 @@ export function pendingArchetype(table: ArchetypeTable, slot: number): number {
  * from `pendingArchetype` before the entity was made): bitecs keeps the slot's place in the queries
  * its new components match; here it leaves the others, and the birth's disorder is counted, exactly
  * as `bornSlot` would, so the state does not depend on which path made the entity.
+ * @category Particles
  */
 export function archetypeFromEntity(world: PhysicsWorld, table: ArchetypeTable, key: number, slot: number, pending: number): Archetype {
   const ecs = ecsOf(world);
@@ -328,6 +344,7 @@ function leaveOthers(old: Archetype, a: Archetype, e: number): void {
  * `bornSlot` one birth at a time leaves them. Done one query at a time: the births of a step land in
  * slots scattered over the capacity, and taking each query's arrays in turn keeps the memory pages in
  * use few (see emitter.ts `flushBirths`).
+ * @category Particles
  */
 export function applyQueuedBirths(table: ArchetypeTable, slots: Int32Array, marks: Int32Array, pends: Int32Array, n: number): void {
   const list = table.list;
@@ -424,6 +441,7 @@ function sameMasks(a: Int32Array, b: Int32Array): boolean {
  * Before a batch of births into archetype `a`: its query list follows new queries.
  * @returns false if a store of the archetype has no arrays (never allocated, or put back so by a
  *   restore): the next particle must then be made through bitecs, whose observers allocate it.
+ * @category Particles
  */
 export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
   const ecs = ecsOf(world);
@@ -439,6 +457,7 @@ export function prepareArchetype(world: PhysicsWorld, a: Archetype): boolean {
  * Creates an entity of archetype `a` (call `prepareArchetype` first in the batch; the world must have
  * room) and counts its life in `world.spawnStamp`. Writes no component data: the caller writes every
  * field of every component of the set. @returns its slot.
+ * @category Particles
  */
 export function bornSlot(world: PhysicsWorld, a: Archetype): number {
   return born(world, a, false);
@@ -449,6 +468,7 @@ export function bornSlot(world: PhysicsWorld, a: Archetype): number {
  * component set, spawn stamp) and `queuedPending` holds the slot's pending mark (`pendingArchetype`)
  * from before the birth, which the caller keeps with the slot and passes to `applyQueuedBirths`
  * before anything reads the queries. @returns its slot.
+ * @category Particles
  */
 export function bornSlotQueued(world: PhysicsWorld, a: Archetype): number {
   return born(world, a, true);
@@ -529,6 +549,7 @@ function born(world: PhysicsWorld, a: Archetype, queued: boolean): number {
  * leaves it pending in its queries until the next `query()` (see `settle`). The caller has run the
  * removal hooks. @returns false (nothing done) for an entity with bitecs relations: remove
  * it with bitecs' removeEntity.
+ * @category Particles
  */
 export function killSlot(world: PhysicsWorld, ecs: EcsInternals, table: ArchetypeTable, e: number): boolean {
   if (ecs.entitiesWithRelations.size !== 0 && ecs.entitiesWithRelations.has(e)) return false;
@@ -573,6 +594,7 @@ function hasMasks(em: number[][], e: number, masks: Int32Array): boolean {
  * Commits the pending deaths: each slot no birth reused leaves the queries of its archetype (bitecs'
  * commitRemovals calls this through the sentinel, at the next `query()`; a snapshot or restore calls
  * it first).
+ * @category Particles
  */
 export function settle(world: PhysicsWorld, table: ArchetypeTable): void {
   if (table.pendingCount === 0) return;
@@ -599,6 +621,7 @@ export function settle(world: PhysicsWorld, table: ArchetypeTable): void {
  * a member, then one pass over the slots), or by sorting a copy when it is small. The order of a
  * query is part of the world's state (snapshots keep it), and this runs at a fixed point of the step,
  * so it is as deterministic as the rest.
+ * @category Particles
  */
 export function defragment(world: PhysicsWorld, table: ArchetypeTable): void {
   const alive = world.entityIndex.aliveCount;
@@ -658,6 +681,7 @@ function sortQuery(q: QueryData, marks: Uint8Array, maxId: number): void {
  * writing their slots into `out` in the
  * order bitecs would hand them out. `bornSlot` without the churn bookkeeping, for bulk creation, one
  * array at a time (entity index, each mask generation, each query). Writes no component data.
+ * @category Particles
  */
 export function bornSlots(world: PhysicsWorld, a: Archetype, count: number, out: Int32Array): void {
   const ecs = ecsOf(world);

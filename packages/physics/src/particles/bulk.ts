@@ -28,10 +28,14 @@ const COLORED_PARTICLE_SIZE = 0.1;
 /**
  * A per-particle property of `addParticles`: one number for every particle, or an array of `count`
  * numbers, one a particle in order.
+ * @category Particles
  */
 export type BulkValue = number | ArrayLike<number>;
 
-/** Options of `addParticles`. Arrays hold `world.dimensions` numbers a particle, in particle order. */
+/**
+ * Options of `addParticles`. Arrays hold `world.dimensions` numbers a particle, in particle order.
+ * @category Particles
+ */
 export interface BulkParticleOptions {
   /** Positions, m: x0, y0(, z0), x1, ... (count x dimensions finite numbers). Default: every particle at the origin. */
   positions?: ArrayLike<number>;
@@ -97,6 +101,7 @@ type PropertyKey = (typeof PROPERTIES)[number]['key'];
  * @example
  * const handles = addParticles(world, 1000, { positions, velocities }); // positions: Float64Array(2000) in 2D
  * addParticles(world, 200_000, { positions, linearDrag: 0.05, lifetime: 3, color: 0xffaa33 });
+ * @category Particles
  */
 export function addParticles(world: PhysicsWorld, count: number, options: BulkParticleOptions = {}): Float64Array {
   const where = 'addParticles';
@@ -422,7 +427,10 @@ function checkArray(where: string, name: string, a: ArrayLike<number> | undefine
   }
 }
 
-/** The slot bitecs hands out next (the slot freed last, else a new one). */
+/**
+ * The slot bitecs hands out next (the slot freed last, else a new one).
+ * @category Particles
+ */
 export function nextSlot(world: PhysicsWorld): number {
   const ix = world.entityIndex;
   return ix.aliveCount < ix.dense.length ? ix.dense[ix.aliveCount]! : ix.maxId + 1;

@@ -57,7 +57,10 @@ import { nextSlot } from './bulk.js';
  * Everything random comes from the world's seeded generator, so a scene replays identically.
  */
 
-/** Emitter shapes: where a particle starts relative to the emitter. */
+/**
+ * Emitter shapes: where a particle starts relative to the emitter.
+ * @category Particles
+ */
 export const EmitterShape = Object.freeze({
   /** At the emitter. */
   Point: 0,
@@ -71,10 +74,16 @@ export const EmitterShape = Object.freeze({
   Line: 4,
 } as const);
 
-/** What an emitter does when the world is full: drop the new particle, or remove the oldest. */
+/**
+ * What an emitter does when the world is full: drop the new particle, or remove the oldest.
+ * @category Particles
+ */
 export const CapacityPolicy = Object.freeze({ DropNew: 0, RecycleOldest: 1 } as const);
 
-/** Options of `addEmitter`. Vectors have `world.dimensions` components. Ranges are [min, max] or one number. */
+/**
+ * Options of `addEmitter`. Vectors have `world.dimensions` components. Ranges are [min, max] or one number.
+ * @category Particles
+ */
 export interface EmitterOptions {
   /**
    * Put the emitter on this existing body (a ship's exhaust, a firework shell): it emits from the
@@ -111,7 +120,10 @@ export interface EmitterOptions {
   enabled?: boolean;
 }
 
-/** Per-particle properties an emitter hands out. */
+/**
+ * Per-particle properties an emitter hands out.
+ * @category Particles
+ */
 export interface EmittedParticleOptions {
   /** Mass, kg, > 0. Needed for force laws (attractors, drag); default 0 = a bare particle that feels gravity only. */
   mass?: number;
@@ -137,6 +149,7 @@ export interface EmittedParticleOptions {
 /**
  * A hook run for every particle that expires, before it is removed. `eid` is the particle's slot (as
  * `query()` gives it: index stores with it directly; `handleOf(world, eid)` for API calls).
+ * @category Particles
  */
 export type ParticleDeathHook = (world: PhysicsWorld, eid: number) => void;
 
@@ -146,18 +159,21 @@ export type ParticleDeathHook = (world: PhysicsWorld, eid: number) => void;
  * it; `handleOf(world, eid)` for API calls). The place to give every particle a component of your
  * own (`addComponent(world, eid, world.components.Charge)` and its value): emitters make particles
  * without bitecs' onAdd observers.
+ * @category Particles
  */
 export type ParticleBirthHook = (world: PhysicsWorld, eid: number) => void;
 
 /**
  * Largest emitter rate the API accepts, particles/s: 1e9. With the largest time step (1e6 s) rate x dt
  * stays below 2^53, so the whole particles and the carried fraction of each step are exact.
+ * @category Particles
  */
 export const MAX_EMITTER_RATE = 1e9;
 
 /**
  * Most particles one step spawns over all emitters and death bursts: the world's capacity (more could
  * not all be alive at the end of the step). The excess is counted in `Emitter.dropped`.
+ * @category Particles
  */
 export function maxSpawnsPerStep(world: PhysicsWorld): number {
   return world.capacity;
@@ -197,7 +213,10 @@ registerExternalWorldState({
   keep: ['hooks', 'birthHooks'],
 });
 
-/** The particle book of `world`, made on first use. */
+/**
+ * The particle book of `world`, made on first use.
+ * @category Particles
+ */
 export function book(world: PhysicsWorld): ParticleBook {
   let b = books.get(world);
   if (!b) {
@@ -909,6 +928,7 @@ function spawnFrom(
  * `onParticleDeath` hooks, then the world's removal hooks) run before any of them is removed, and the
  * removals come after the pass over the live list (bitecs trap). Births of the bursts reuse the slots
  * just freed in place (see archetype.ts), so steady churn leaves the query lists in slot order.
+ * @category Particles
  */
 export function lifetimeSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -1034,6 +1054,7 @@ export function lifetimeSystem(world: PhysicsWorld): void {
  * nothing. Runs in O(spawned) time, at most O(capacity) a step.
  * @throws NonFiniteStateError (stage 'spawn') if a particle would start at a non-finite position or
  *   velocity; it names the emitter, and nothing is spawned for it.
+ * @category Particles
  */
 export function emitterSystem(world: PhysicsWorld): void {
   const c = world.components;
@@ -1265,6 +1286,7 @@ function writeSettings(world: PhysicsWorld, em: number, s: CheckedSettings): voi
  *   or malformed vectors; RangeError on negative rates, speeds or sizes, lifetimes <= 0, spread outside
  *   [0, pi], inherit outside [0, 1], an unknown shape or policy, an `attachTo` or `onDeath.emitter`
  *   that was removed or is of the wrong kind, or a full world.
+ * @category Particles
  */
 export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): number {
   const where = 'addEmitter';
@@ -1355,6 +1377,7 @@ function emitterSlot(where: string, world: PhysicsWorld, em: unknown): number {
  * Asks emitter `em` for `count` particles at the next spawn stage (e.g. a firework shell bursting,
  * a splash). @param em an emitter's handle.
  * @throws RangeError on a removed entity, one that is not an emitter, or a count that is not an integer in [0, 10^7].
+ * @category Particles
  */
 export function burst(world: PhysicsWorld, em: number, count: number): void {
   const slot = emitterSlot('burst', world, em);
@@ -1368,6 +1391,7 @@ export function burst(world: PhysicsWorld, em: number, count: number): void {
  * `velocity` passed on at the emitter's inherit fraction. Returns how many were spawned (fewer if the
  * world was full and the policy drops). @param em an emitter's handle.
  * @throws TypeError | RangeError on a removed entity, one that is not an emitter, or bad values.
+ * @category Particles
  */
 export function emitNow(
   world: PhysicsWorld,
@@ -1420,6 +1444,7 @@ export function emitNow(
 /**
  * Turns an emitter's continuous emission on or off. @param em an emitter's handle.
  * @throws TypeError if `enabled` is not a boolean; RangeError on a removed entity or one that is not an emitter.
+ * @category Particles
  */
 export function setEmitterEnabled(world: PhysicsWorld, em: number, enabled: boolean): void {
   const slot = emitterSlot('setEmitterEnabled', world, em);
@@ -1430,6 +1455,7 @@ export function setEmitterEnabled(world: PhysicsWorld, em: number, enabled: bool
 /**
  * Sets an emitter's rate, particles/s, in [0, MAX_EMITTER_RATE = 1e9]. @param em an emitter's handle.
  * @throws RangeError on a bad rate, a removed entity or one that is not an emitter.
+ * @category Particles
  */
 export function setEmitterRate(world: PhysicsWorld, em: number, rate: number): void {
   const slot = emitterSlot('setEmitterRate', world, em);
@@ -1440,6 +1466,7 @@ export function setEmitterRate(world: PhysicsWorld, em: number, rate: number): v
 /**
  * Registers a hook run for every particle that expires, just before it is removed (its components are
  * still readable). Returns a function that unregisters it. @throws TypeError if not a function.
+ * @category Particles
  */
 export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): () => void {
   if (typeof hook !== 'function') throw new TypeError(`onParticleDeath: hook must be a function, got ${describe(hook)}`);
@@ -1454,6 +1481,7 @@ export function onParticleDeath(world: PhysicsWorld, hook: ParticleDeathHook): (
 /**
  * Registers a hook run for every particle an emitter spawns (bursts, rates, `emitNow`), right after it
  * is made. Returns a function that unregisters it. @throws TypeError if not a function.
+ * @category Particles
  */
 export function onParticleBirth(world: PhysicsWorld, hook: ParticleBirthHook): () => void {
   if (typeof hook !== 'function') throw new TypeError(`onParticleBirth: hook must be a function, got ${describe(hook)}`);
@@ -1470,12 +1498,16 @@ export function onParticleBirth(world: PhysicsWorld, hook: ParticleBirthHook): (
  * removed on expiry (not those removed by the API or recycled by a full world's 'recycle-oldest'
  * policy). An exact count, kept in snapshots; with each emitter's `Emitter.spawned` it gives births
  * and deaths per step without a death hook.
+ * @category Particles
  */
 export function particlesExpired(world: PhysicsWorld): number {
   return books.get(world)?.expiredTotal ?? 0;
 }
 
-/** A particle's look now: colour 0xRRGGBB, size (m) and alpha, linear in age / duration. */
+/**
+ * A particle's look now: colour 0xRRGGBB, size (m) and alpha, linear in age / duration.
+ * @category Particles
+ */
 export interface ParticleLook {
   color: number;
   size: number;
@@ -1486,6 +1518,7 @@ export interface ParticleLook {
  * The look of particle `eid` at its current age (for renderers), written into `out`.
  * Colours interpolate per channel. `eid` is a slot, as `query()` gives it (renderers' loops call this
  * per particle; no checks).
+ * @category Particles
  */
 export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook): ParticleLook {
   const c = world.components;
@@ -1512,6 +1545,7 @@ export function particleLook(world: PhysicsWorld, eid: number, out: ParticleLook
  * is checked before any is written, so a refused call changes nothing.
  * @param em an emitter's handle.
  * @throws TypeError | RangeError as addEmitter does, on a missing options object, or if `em` was removed or is not an emitter.
+ * @category Particles
  */
 export function setEmitter(world: PhysicsWorld, em: number, options: Omit<EmitterOptions, 'attachTo' | 'position' | 'velocity'>): void {
   const where = 'setEmitter';

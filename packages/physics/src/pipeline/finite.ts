@@ -36,7 +36,10 @@ import type { StageName } from './stage-names.js';
  * per field, and a second pass to name the culprit only when the first finds one.
  */
 
-/** What a built-in system checks itself: 'all' it writes, or only its linear state (position, velocity). */
+/**
+ * What a built-in system checks itself: 'all' it writes, or only its linear state (position, velocity).
+ * @category World and step
+ */
 export type FiniteScope = 'all' | 'linear';
 
 const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
@@ -47,6 +50,7 @@ const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: Physics
  * writes but not the angular state (the integrators), so the stage still checks the turning bodies.
  * `idle`: the system is trusted only while idle(world) is true (it then writes nothing, e.g. a
  * collision system for a kind of shape the world has none of).
+ * @category World and step
  */
 export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
   for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
@@ -55,6 +59,7 @@ export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope
 /**
  * What `step` must check after a stage ran `systems`: 2 the whole motion state (some system is not
  * trusted), 1 only the angular state (some system checks only its linear state), 0 nothing.
+ * @category World and step
  */
 export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: readonly System[]): 0 | 1 | 2 {
   if (stage === 'clearForces' || systems.length === 0) return 0;
@@ -70,6 +75,7 @@ export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: 
 /**
  * What must be checked after `system` alone: 2 the whole motion state (not trusted, or trusted only
  * while idle and not idle now), 1 only the angular state (it checks its linear state itself), 0 nothing.
+ * @category World and step
  */
 export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
   const t = trusted.get(system);
@@ -185,6 +191,7 @@ const EMPTY_PARAMS: ArrayLike<number> = [];
  * Checks what `stage` may have written (see the module comment): the force and torque accumulators
  * after `forces`, the angular state if `level` >= 1 and the linear state if `level` is 2. Throws a NonFiniteStateError naming the first
  * entity (its handle) and field that is NaN or infinite, and the stage.
+ * @category World and step
  */
 export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
   const c = world.components;
@@ -332,6 +339,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
  * failed: throws the NonFiniteStateError this module's check of the forces stage would have thrown (the
  * first of `ents` whose force is NaN or infinite: Force.x, Force.y, and in 3D Force.z; stage 'forces');
  * returns if every force is finite (the caller then names the position or velocity).
+ * @category World and step
  */
 export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
   const F = world.components.Force;

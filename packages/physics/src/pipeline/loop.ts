@@ -1,6 +1,9 @@
 import { assertInteger, assertOptions, assertPositive } from '../validate.js';
 
-/** Options of `createFixedStepLoop`. */
+/**
+ * Options of `createFixedStepLoop`.
+ * @category World and step
+ */
 export interface FixedStepLoopOptions {
   /** The fixed step, s, > 0 (usually `world.dt`). */
   dt: number;
@@ -15,7 +18,10 @@ export interface FixedStepLoopOptions {
   maxStepsPerFrame?: number;
 }
 
-/** What one `advance` call did. */
+/**
+ * What one `advance` call did.
+ * @category World and step
+ */
 export interface FrameResult {
   /** Whole steps run. */
   steps: number;
@@ -25,7 +31,10 @@ export interface FrameResult {
   dropped: number;
 }
 
-/** A fixed-timestep loop: feed it real frame time, it runs whole steps. */
+/**
+ * A fixed-timestep loop: feed it real frame time, it runs whole steps.
+ * @category World and step
+ */
 export interface FixedStepLoop {
   /**
    * Adds `frameSeconds` of real time and runs as many whole steps as fit.
@@ -44,6 +53,7 @@ export interface FixedStepLoop {
  * the renderer an interpolation factor alpha = accumulator / dt. No timers inside: call `advance`
  * from requestAnimationFrame in a page, or from any loop in Node.
  * @throws TypeError on a missing options object, unknown or null options; RangeError on dt <= 0, maxFrameTime <= 0, maxStepsPerFrame < 1.
+ * @category World and step
  */
 export function createFixedStepLoop(options: FixedStepLoopOptions): FixedStepLoop {
   const where = 'createFixedStepLoop';

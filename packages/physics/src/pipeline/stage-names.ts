@@ -14,11 +14,18 @@
  * 6. `constraints`: position-based links (cloth);
  * 7. `finalize`: sleeping islands (once per step).
  * Stages 2 to 6 run once per substep.
+ * @category World and step
  */
 export const STAGES = ['spawn', 'clearForces', 'forces', 'integrate', 'collide', 'constraints', 'finalize'] as const;
 
-/** One of `STAGES`. */
+/**
+ * One of `STAGES`.
+ * @category World and step
+ */
 export type StageName = (typeof STAGES)[number];
 
-/** The stages that run once per substep, in order. */
+/**
+ * The stages that run once per substep, in order.
+ * @category World and step
+ */
 export const SUBSTEP_STAGES: readonly StageName[] = ['clearForces', 'forces', 'integrate', 'collide', 'constraints'];

@@ -34,6 +34,7 @@ export { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
 /**
  * The default pipeline: every stage with its built-in systems, in run order. A world starts with a
  * copy of it in `world.stages`; hook in with `addSystem`.
+ * @category World and step
  */
 export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
   { stage: 'spawn', systems: [wakeSystem, lifetimeSystem, emitterSystem] },
@@ -113,7 +114,10 @@ trustFiniteOutput([shapeCollisionSystem, continuousCollisionSystem], 'all', (wor
 trustFiniteOutput([shape3DCollisionSystem], 'all', (world) => world.dimensions !== 3 || shapes3DOf(world)?.active !== true);
 trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
 
-/** A fresh copy of the default systems of every stage. */
+/**
+ * A fresh copy of the default systems of every stage.
+ * @category World and step
+ */
 export function createStages(): Record<StageName, System[]> {
   const stages = {} as Record<StageName, System[]>;
   for (const { stage, systems } of PIPELINE) stages[stage] = [...systems];

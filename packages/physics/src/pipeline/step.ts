@@ -53,6 +53,7 @@ function runStage(world: PhysicsWorld, stage: StageName): void {
  *   left as that stage left it. In a substep run by the fused force-and-integrate pass
  *   (integrators/fused-gate.ts) a non-finite force is found before its body moves, but bodies the pass
  *   had already moved with finite forces in that substep stay moved (the separate stages would move none).
+ * @category World and step
  */
 export function step(world: PhysicsWorld): void {
   if (world.entityIndex.maxId > world.capacity) {
@@ -137,6 +138,7 @@ function restoreStepStart(world: PhysicsWorld, ents: ArrayLike<number>): void {
 
 /**
  * Runs `step` `count` times. @throws RangeError unless count is a non-negative integer.
+ * @category World and step
  */
 export function stepMany(world: PhysicsWorld, count: number): void {
   if (!Number.isInteger(count) || count < 0) {
@@ -149,6 +151,7 @@ export function stepMany(world: PhysicsWorld, count: number): void {
  * Evaluates every force law at the world's current state: clears the accumulators and runs the
  * `forces` stage. Multi-stage integrators call it at each trial state, which is why every force
  * law must be a pure function of the state arrays it reads.
+ * @category World and step
  */
 export function evaluateForces(world: PhysicsWorld): void {
   setFusedForces(world, false);
@@ -158,7 +161,10 @@ export function evaluateForces(world: PhysicsWorld): void {
   for (let i = 0; i < forces.length; i++) forces[i]!(world);
 }
 
-/** Where `addSystem` inserts a system within its stage. */
+/**
+ * Where `addSystem` inserts a system within its stage.
+ * @category World and step
+ */
 export interface AddSystemOptions {
   /** Insert just before this system (which must be in the stage). */
   before?: System;
@@ -171,6 +177,7 @@ export interface AddSystemOptions {
  * names a system already there. User force laws go in `'forces'`.
  * @throws RangeError on an unknown stage or a `before`/`after` system that is not in the stage.
  * @throws TypeError if `system` is not a function, or `options` is not an object of known, non-null options.
+ * @category World and step
  */
 export function addSystem(world: PhysicsWorld, stage: StageName, system: System, options: AddSystemOptions = {}): void {
   if (!(STAGES as readonly string[]).includes(stage)) {
@@ -189,7 +196,10 @@ export function addSystem(world: PhysicsWorld, stage: StageName, system: System,
   list.splice(options.before ? i : i + 1, 0, system);
 }
 
-/** Removes `system` from `stage`; returns whether it was there. */
+/**
+ * Removes `system` from `stage`; returns whether it was there.
+ * @category World and step
+ */
 export function removeSystem(world: PhysicsWorld, stage: StageName, system: System): boolean {
   const list = world.stages[stage];
   if (!list) throw new RangeError(`removeSystem: stage must be one of ${STAGES.join(', ')}, got ${describe(stage)}`);

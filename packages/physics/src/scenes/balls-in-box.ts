@@ -4,7 +4,10 @@ import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonN
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `balls-in-box` scene. */
+/**
+ * Options of the `balls-in-box` scene.
+ * @category Scenes
+ */
 export interface BallsInBoxOptions {
   /** Number of balls, integer in [1, 10_000_000]. Default 1000. */
   count?: number;
@@ -22,7 +25,10 @@ export interface BallsInBoxOptions {
   mass?: number;
 }
 
-/** The resolved layout of `balls-in-box`: what a peer engine needs to build the same scene. */
+/**
+ * The resolved layout of `balls-in-box`: what a peer engine needs to build the same scene.
+ * @category Scenes
+ */
 export interface BallsInBoxLayout {
   /** Number of balls. */
   count: number;
@@ -49,6 +55,7 @@ const OPTIONS = ['count', 'seed', 'radius', 'spacing', 'restitution', 'friction'
  * 40% of the free space between neighbours (so nothing overlaps), in a closed box ceil(2 sqrt(N))
  * cells wide and one cell taller than the rows of balls; gravity (0, -10) m/s^2.
  * @throws TypeError | RangeError on bad options.
+ * @category Scenes
  */
 export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLayout {
   const where = 'balls-in-box';
@@ -95,7 +102,10 @@ export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLay
   };
 }
 
-/** Handles returned by the `balls-in-box` builder. */
+/**
+ * Handles returned by the `balls-in-box` builder.
+ * @category Scenes
+ */
 export interface BallsInBoxHandles {
   /** Entity ids of the balls, in layout order. */
   balls: Uint32Array;
@@ -106,6 +116,7 @@ export interface BallsInBoxHandles {
 /**
  * `balls-in-box`: N balls of radius 0.5 m (restitution 0.5, friction 0.1) fall from a jittered 1.5 m
  * grid into a closed box; gravity -10 m/s^2. The benchmark scene compared against rapier2d and matter-js.
+ * @category Scenes
  */
 export const ballsInBox: SceneDefinition<BallsInBoxOptions, BallsInBoxHandles> = {
   name: 'balls-in-box',

@@ -7,7 +7,10 @@ import type { PhysicsWorld } from '../world.js';
 import { jitteredGrid3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `box-pile-3d` scene. */
+/**
+ * Options of the `box-pile-3d` scene.
+ * @category Scenes
+ */
 export interface BoxPile3DOptions {
   /** Number of boxes, integer in [1, 200_000]. Default 5000. */
   count?: number;
@@ -15,7 +18,10 @@ export interface BoxPile3DOptions {
   seed?: number;
 }
 
-/** The resolved layout of `box-pile-3d`, for peer engines (SI units). */
+/**
+ * The resolved layout of `box-pile-3d`, for peer engines (SI units).
+ * @category Scenes
+ */
 export interface BoxPile3DLayout {
   /** Number of boxes. */
   count: number;
@@ -43,6 +49,7 @@ export interface BoxPile3DLayout {
  * apart), about eight layers deep (a square footprint of ceil(sqrt(N / 8)) cells a side), in a closed
  * box one cell taller than the layers; gravity (0, -10, 0).
  * @throws TypeError | RangeError on bad options.
+ * @category Scenes
  */
 export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout {
   const where = 'box-pile-3d';
@@ -67,7 +74,10 @@ export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout
   };
 }
 
-/** Handles of `box-pile-3d`. */
+/**
+ * Handles of `box-pile-3d`.
+ * @category Scenes
+ */
 export interface BoxPile3DHandles {
   /** The boxes' body slots, in layout order. */
   boxes: Uint32Array;
@@ -78,6 +88,7 @@ export interface BoxPile3DHandles {
 /**
  * `box-pile-3d`: N unit cubes dropped into a closed box (its six faces are static planes), the 3D box
  * benchmark compared against rapier3d. World defaults otherwise (4 substeps, sleeping on).
+ * @category Scenes
  */
 export const boxPile3D: SceneDefinition<BoxPile3DOptions, BoxPile3DHandles> = {
   name: 'box-pile-3d',

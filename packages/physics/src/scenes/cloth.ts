@@ -4,7 +4,10 @@ import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `cloth` scene. */
+/**
+ * Options of the `cloth` scene.
+ * @category Scenes
+ */
 export interface ClothSceneOptions {
   /** Points along each side, integer in [2, 512]. Default 64 (4,096 points, 23,938 links). */
   count?: number;
@@ -17,6 +20,7 @@ export interface ClothSceneOptions {
  * structural, shear and bending links (createCloth's defaults), in a 4 m/s wind along +x with
  * turbulence of 1 m/s RMS over 2 m and 1 s (8 Fourier modes), under gravity (0, -9.81) m/s^2. Measures the cloth solver:
  * ms a step and the largest link stretch.
+ * @category Scenes
  */
 export const clothScene: SceneDefinition<ClothSceneOptions, Cloth> = {
   name: 'cloth',

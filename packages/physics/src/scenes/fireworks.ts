@@ -3,7 +3,10 @@ import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `fireworks` scene. */
+/**
+ * Options of the `fireworks` scene.
+ * @category Scenes
+ */
 export interface FireworksOptions {
   /** Target number of live sparks in steady state (sets the world's capacity and the shell rate). Default 50_000. */
   count?: number;
@@ -17,6 +20,7 @@ export interface FireworksOptions {
  * generation); the rate is set so about `count` sparks are alive, and the world's capacity is a
  * quarter above that with 'recycle-oldest', so spawn and expiry happen every step without the world
  * ever filling. Gravity (0, -9.81). 2D.
+ * @category Scenes
  */
 export const fireworks: SceneDefinition<FireworksOptions, { shells: number; sparks: number; embers: number }> = {
   name: 'fireworks',

@@ -3,7 +3,10 @@ import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `fountain` scene. */
+/**
+ * Options of the `fountain` scene.
+ * @category Scenes
+ */
 export interface FountainOptions {
   /** Live drops in steady state, integer in [100, 16_000_000] (sets the rate and the capacity). Default 1_000_000. */
   count?: number;
@@ -11,7 +14,10 @@ export interface FountainOptions {
   seed?: number;
 }
 
-/** Mean lifetime of a drop, s: lifetimes are uniform in [2/3, 1] s. */
+/**
+ * Mean lifetime of a drop, s: lifetimes are uniform in [2/3, 1] s.
+ * @category Scenes
+ */
 export const FOUNTAIN_MEAN_LIFETIME = 5 / 6;
 
 /**
@@ -21,6 +27,7 @@ export const FOUNTAIN_MEAN_LIFETIME = 5 / 6;
  * are alive and count / 50 are born and as many expire every step of 1/60 s (1,000,000 live: 20,000
  * births and 20,000 deaths a step). Capacity: count x 1.05 + 16, policy 'drop-new' (the margin is
  * never reached: the live count varies by a few hundred). Gravity (0, -9.81). 2D.
+ * @category Scenes
  */
 export const fountain: SceneDefinition<FountainOptions, { emitter: number }> = {
   name: 'fountain',

@@ -6,7 +6,10 @@ import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '..
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `galaxy` scene. */
+/**
+ * Options of the `galaxy` scene.
+ * @category Scenes
+ */
 export interface GalaxyOptions {
   /** Number of stars, integer in [1, 2_000_000]. Default 100_000. */
   count?: number;
@@ -24,6 +27,7 @@ export interface GalaxyOptions {
  * each on a circular orbit about the mass enclosed inside its radius (v = sqrt(G M(r) / r), the
  * disc counted as if spherically enclosed) plus a 5% random velocity; softening 0.3. Every body takes
  * part in mutual gravity, by Barnes-Hut unless asked otherwise. 2D.
+ * @category Scenes
  */
 export const galaxy: SceneDefinition<GalaxyOptions, { stars: Uint32Array; nucleus: number }> = {
   name: 'galaxy',

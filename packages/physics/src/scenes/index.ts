@@ -11,7 +11,10 @@ import { pyramid3D } from './pyramid-3d.js';
 import { spheresInBox } from './spheres-in-box.js';
 import type { SceneDefinition } from './types.js';
 
-/** Every registered scene by name: the bench's `--list` and the gallery read this. */
+/**
+ * Every registered scene by name: the bench's `--list` and the gallery read this.
+ * @category Scenes
+ */
 export const SCENES: Readonly<Record<string, SceneDefinition<{ count?: number; seed?: number }, unknown>>> = Object.freeze({
   [ballsInBox.name]: ballsInBox as SceneDefinition<{ count?: number; seed?: number }, unknown>,
   [particles.name]: particles as SceneDefinition<{ count?: number; seed?: number }, unknown>,

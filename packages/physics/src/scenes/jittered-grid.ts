@@ -1,6 +1,9 @@
 import { Rng } from '../rng.js';
 
-/** Bodies on a jittered cubic grid, from `jitteredGrid3D`. */
+/**
+ * Bodies on a jittered cubic grid, from `jitteredGrid3D`.
+ * @category Scenes
+ */
 export interface JitteredGrid3D {
   /** Centres, m: x0, y0, z0, x1, ... */
   positions: Float64Array;
@@ -15,6 +18,7 @@ export interface JitteredGrid3D {
  * ceil(sqrt(count / 8)) cells a side, filled x first, then z, then y (up), each centre jittered by up
  * to +-0.4 (spacing - size) along each axis with the seeded generator, so bodies of extent `size` (m)
  * start at least 0.2 (spacing - size) apart. Shared by the spheres-in-box and box-pile-3d scenes.
+ * @category Scenes
  */
 export function jitteredGrid3D(count: number, seed: number, spacing: number, size: number): JitteredGrid3D {
   const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));

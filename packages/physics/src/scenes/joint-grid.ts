@@ -4,7 +4,10 @@ import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `joint-grid` scene. */
+/**
+ * Options of the `joint-grid` scene.
+ * @category Scenes
+ */
 export interface JointGridOptions {
   /** Bodies along each side of the square grid, integer in [2, 400]. Default 100 (10,000 bodies, 19,800 joints). */
   count?: number;
@@ -12,7 +15,10 @@ export interface JointGridOptions {
   seed?: number;
 }
 
-/** Handles of the `joint-grid` scene. */
+/**
+ * Handles of the `joint-grid` scene.
+ * @category Scenes
+ */
 export interface JointGridHandles {
   /** Body handles, row-major from the top-left: (row i, column k) is bodies[i * side + k]. */
   bodies: Float64Array;
@@ -28,6 +34,7 @@ export interface JointGridHandles {
  * joints at the midpoints. The seven middle bodies of the top row are static (pinned); the rest of the
  * net falls and swings under gravity (0, -10) m/s^2. Measures the joint solver alone: ms a step and
  * the largest joint error (anchor separation, m).
+ * @category Scenes
  */
 export const jointGrid: SceneDefinition<JointGridOptions, JointGridHandles> = {
   name: 'joint-grid',

@@ -4,7 +4,10 @@ import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `particles` scene. */
+/**
+ * Options of the `particles` scene.
+ * @category Scenes
+ */
 export interface ParticlesOptions {
   /** Number of particles, integer in [1, 16_000_000]. Default 100_000. */
   count?: number;
@@ -12,7 +15,10 @@ export interface ParticlesOptions {
   seed?: number;
 }
 
-/** The resolved initial state of `particles`, for peers such as the plain-loop baseline. */
+/**
+ * The resolved initial state of `particles`, for peers such as the plain-loop baseline.
+ * @category Scenes
+ */
 export interface ParticlesLayout {
   count: number;
   /** x0, y0, x1, y1, ... m, uniform in [-50, 50] x [0, 100]. */
@@ -23,7 +29,10 @@ export interface ParticlesLayout {
   gravity: [number, number];
 }
 
-/** Computes the `particles` initial state. @throws TypeError | RangeError on bad options. */
+/**
+ * Computes the `particles` initial state. @throws TypeError | RangeError on bad options.
+ * @category Scenes
+ */
 export function particlesLayout(options: ParticlesOptions = {}): ParticlesLayout {
   const where = 'particles';
   assertKnownKeys(where, options, ['count', 'seed']);
@@ -43,7 +52,10 @@ export function particlesLayout(options: ParticlesOptions = {}): ParticlesLayout
   return { count, positions, velocities, gravity: [0, -10] };
 }
 
-/** Handles of the `particles` scene. */
+/**
+ * Handles of the `particles` scene.
+ * @category Scenes
+ */
 export interface ParticlesHandles {
   /** Entity ids in layout order. */
   particles: Uint32Array;
@@ -52,6 +64,7 @@ export interface ParticlesHandles {
 /**
  * `particles`: N free particles under gravity (0, -10) m/s^2, no collisions, no forces: the pure cost
  * of the framework's step, compared in the bench with the same integration as a bare loop.
+ * @category Scenes
  */
 export const particles: SceneDefinition<ParticlesOptions, ParticlesHandles> = {
   name: 'particles',

@@ -6,7 +6,10 @@ import { assertInteger, assertKnownKeys } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `pyramid-3d` scene. */
+/**
+ * Options of the `pyramid-3d` scene.
+ * @category Scenes
+ */
 export interface Pyramid3DOptions {
   /** Boxes along a side of the bottom layer, integer in [1, 60]; the pyramid has base (base + 1) (2 base + 1) / 6 boxes. Default 20 (2,870 boxes). */
   count?: number;
@@ -14,7 +17,10 @@ export interface Pyramid3DOptions {
   seed?: number;
 }
 
-/** The layout every engine builds for `pyramid-3d` (SI units). */
+/**
+ * The layout every engine builds for `pyramid-3d` (SI units).
+ * @category Scenes
+ */
 export interface Pyramid3DLayout {
   /** Boxes along a side of the bottom layer. */
   base: number;
@@ -41,6 +47,7 @@ export interface Pyramid3DLayout {
  * one below and centred on it (so a box rests on four), 1.05 m apart within a layer, every layer
  * resting exactly on the one below; the ground is the plane y = 0.
  * @throws RangeError if count is not an integer in [1, 60].
+ * @category Scenes
  */
 export function pyramid3DLayout(options: Pyramid3DOptions = {}): Pyramid3DLayout {
   assertKnownKeys('pyramid-3d', options, ['count', 'seed']);
@@ -64,7 +71,10 @@ export function pyramid3DLayout(options: Pyramid3DOptions = {}): Pyramid3DLayout
   return { base, count, half, pitch, friction: 0.6, restitution: 0, mass: 1, gravity: [0, -10, 0], positions };
 }
 
-/** What `pyramid-3d`'s build returns. */
+/**
+ * What `pyramid-3d`'s build returns.
+ * @category Scenes
+ */
 export interface Pyramid3DHandles {
   /** The boxes' body slots, in layout order (bottom layer first). */
   boxes: Uint32Array;
@@ -78,6 +88,7 @@ export interface Pyramid3DHandles {
  * `pyramid-3d`: the 3D counterpart of `pyramid`: `count` is the side of the bottom layer (20: 2,870
  * cubes of 1 m, friction 0.6, restitution 0) on a ground plane, each layer centred on the one below.
  * World defaults otherwise (4 substeps, sleeping on).
+ * @category Scenes
  */
 export const pyramid3D: SceneDefinition<Pyramid3DOptions, Pyramid3DHandles> = {
   name: 'pyramid-3d',

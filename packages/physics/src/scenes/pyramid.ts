@@ -4,7 +4,10 @@ import { assertInteger } from '../validate.js';
 import type { PhysicsWorld } from '../world.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `pyramid` scene. */
+/**
+ * Options of the `pyramid` scene.
+ * @category Scenes
+ */
 export interface PyramidOptions {
   /** Boxes in the bottom row (the base), integer in [1, 1000]; the pyramid has base (base + 1) / 2 boxes. Default 40 (820 boxes). */
   count?: number;
@@ -12,7 +15,10 @@ export interface PyramidOptions {
   seed?: number;
 }
 
-/** The layout every engine builds for `pyramid` (SI units). */
+/**
+ * The layout every engine builds for `pyramid` (SI units).
+ * @category Scenes
+ */
 export interface PyramidLayout {
   /** Boxes in the bottom row. */
   base: number;
@@ -41,6 +47,7 @@ export interface PyramidLayout {
  * row, every row resting exactly on the one below (no gap, no overlap), on a static ground whose top
  * is y = 0 and which reaches 10 m beyond the pyramid on each side.
  * @throws RangeError if count is not an integer in [1, 1000].
+ * @category Scenes
  */
 export function pyramidLayout(options: PyramidOptions = {}): PyramidLayout {
   const base = options.count ?? 40;
@@ -71,7 +78,10 @@ export function pyramidLayout(options: PyramidOptions = {}): PyramidLayout {
   };
 }
 
-/** What `pyramid`'s build returns. */
+/**
+ * What `pyramid`'s build returns.
+ * @category Scenes
+ */
 export interface PyramidHandles {
   /** The boxes' entity slots, in layout order (bottom row first). */
   boxes: Uint32Array;
@@ -87,6 +97,7 @@ export interface PyramidHandles {
  * pitch. The world takes 8 solver substeps (shape contacts are stiff enough to hold a 40-high
  * pyramid to a few centimetres only at 60 Hz, and are stable at 60 Hz with 8 substeps; see
  * collision/manifold-solver.ts); everything else is the world's default.
+ * @category Scenes
  */
 export const pyramid: SceneDefinition<PyramidOptions, PyramidHandles> = {
   name: 'pyramid',

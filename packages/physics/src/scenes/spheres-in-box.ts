@@ -4,7 +4,10 @@ import type { PhysicsWorld } from '../world.js';
 import { jitteredGrid3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
-/** Options of the `spheres-in-box` scene. */
+/**
+ * Options of the `spheres-in-box` scene.
+ * @category Scenes
+ */
 export interface SpheresInBoxOptions {
   /** Number of spheres, integer in [1, 2_000_000]. Default 5000. */
   count?: number;
@@ -12,7 +15,10 @@ export interface SpheresInBoxOptions {
   seed?: number;
 }
 
-/** The resolved layout of `spheres-in-box`, for peer engines. */
+/**
+ * The resolved layout of `spheres-in-box`, for peer engines.
+ * @category Scenes
+ */
 export interface SpheresInBoxLayout {
   count: number;
   /** Centres, m: x0, y0, z0, x1, ... */
@@ -32,6 +38,7 @@ export interface SpheresInBoxLayout {
  * jittered 1.5 m grid about eight layers deep (a square footprint of ceil(sqrt(N / 8)) cells a side),
  * in a closed box one cell taller than the layers; gravity (0, -10, 0).
  * @throws TypeError | RangeError on bad options.
+ * @category Scenes
  */
 export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresInBoxLayout {
   const where = 'spheres-in-box';
@@ -56,13 +63,19 @@ export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresIn
   };
 }
 
-/** Handles of `spheres-in-box`. */
+/**
+ * Handles of `spheres-in-box`.
+ * @category Scenes
+ */
 export interface SpheresInBoxHandles {
   spheres: Uint32Array;
   layout: SpheresInBoxLayout;
 }
 
-/** `spheres-in-box`: the 3D benchmark scene compared against rapier3d. */
+/**
+ * `spheres-in-box`: the 3D benchmark scene compared against rapier3d.
+ * @category Scenes
+ */
 export const spheresInBox: SceneDefinition<SpheresInBoxOptions, SpheresInBoxHandles> = {
   name: 'spheres-in-box',
   description: 'N spheres (r 0.5 m, e 0.5, mu 0.1) fall from a jittered grid about eight layers deep into a closed box; 3D',

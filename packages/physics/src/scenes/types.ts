@@ -3,6 +3,7 @@ import type { PhysicsWorld, PhysicsWorldOptions } from '../world.js';
 /**
  * A scene: a pure, seeded, deterministic builder shared by tests, the headless bench and the games.
  * `worldOptions` says what world the scene is designed for; `build` fills a world and returns handles.
+ * @category Scenes
  */
 export interface SceneDefinition<Options extends { count?: number; seed?: number }, Handles> {
   /** Name used on the command line (`--scene`). */

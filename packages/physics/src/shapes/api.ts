@@ -28,7 +28,10 @@ import { ensureShapeStore, SHAPE_STRIDE } from './store.js';
  * body's centre of mass, so the narrowphase needs only the body's position and angle.
  */
 
-/** Options of `addShape`. Exactly one of `radius` (circle), `halfExtents` (box), `vertices` (polygon) or `center1`/`center2` (capsule, with `radius`) describes the geometry. */
+/**
+ * Options of `addShape`. Exactly one of `radius` (circle), `halfExtents` (box), `vertices` (polygon) or `center1`/`center2` (capsule, with `radius`) describes the geometry.
+ * @category Shapes
+ */
 export interface ShapeOptions {
   /** 'circle', 'box', 'polygon' or 'capsule'. */
   type: 'circle' | 'box' | 'polygon' | 'capsule';
@@ -141,6 +144,7 @@ function geometryOf(where: string, o: ShapeOptions): ConvexGeometry {
  * @example
  * const crate = addBody(world, { position: [0, 3] });
  * addShape(world, crate, { type: 'box', halfExtents: [0.5, 0.5], density: 2 });
+ * @category Shapes
  */
 export function addShape(world: PhysicsWorld, body: number, options: ShapeOptions): number {
   const where = 'addShape';
@@ -273,6 +277,7 @@ function hasShapes(world: PhysicsWorld, body: number): boolean {
  * total mass leave mass and inertia as they were. Called by `addShape`.
  * @param body a 2D body's handle.
  * @throws RangeError on a removed entity or one that is not a body.
+ * @category Shapes
  */
 export function updateMassFromShapes(world: PhysicsWorld, body: number): void {
   massFromShapes(world, resolveShapeBody('updateMassFromShapes', world, body));
@@ -348,7 +353,10 @@ const scratchGeometry: ConvexGeometry = {
   ny: new Float64Array(8),
 };
 
-/** Copies shape entity `e`'s stored geometry (body frame) into `g`. */
+/**
+ * Copies shape entity `e`'s stored geometry (body frame) into `g`.
+ * @category Shapes
+ */
 export function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, g: ConvexGeometry): void {
   const n = S.count[e]!,
     o = SHAPE_STRIDE * e;
@@ -363,7 +371,10 @@ export function readGeometry(S: PhysicsWorld['components']['Shape'], e: number, 
   }
 }
 
-/** Calls `fn` with every shape entity of `body` (its own shape first, then the extra ones). */
+/**
+ * Calls `fn` with every shape entity of `body` (its own shape first, then the extra ones).
+ * @category Shapes
+ */
 export function forEachShape(world: PhysicsWorld, body: number, fn: (shape: number) => void): void {
   const c = world.components,
     st = world.collision.shapes;
@@ -375,6 +386,7 @@ export function forEachShape(world: PhysicsWorld, body: number, fn: (shape: numb
 /**
  * The handles of a 2D body's shapes, in order (its own shape first: the body's handle).
  * @throws RangeError on a removed entity or one that is not a body.
+ * @category Shapes
  */
 export function shapesOf(world: PhysicsWorld, body: number): number[] {
   const b = resolveShapeBody('shapesOf', world, body);
@@ -425,6 +437,7 @@ function removeShapesOf(world: PhysicsWorld, eid: number): void {
  * @param shape a shape's handle (addShape, addBox, shapesOf).
  * @throws TypeError if `filter` is not an object or has unknown or null fields; RangeError on a removed
  *   entity, one that is not a 2D shape, or bits that are not integers in range.
+ * @category Shapes
  */
 export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { category?: number; mask?: number; group?: number }): void {
   const where = 'setShapeFilter';
@@ -444,7 +457,10 @@ export function setShapeFilter(world: PhysicsWorld, shape: number, filter: { cat
   if (filter.group !== undefined) S.group[e] = filter.group;
 }
 
-/** Options of `addBox`: those of `addBody` (no `radius`, `mass` or `density`) plus the box's. */
+/**
+ * Options of `addBox`: those of `addBody` (no `radius`, `mass` or `density`) plus the box's.
+ * @category Shapes
+ */
 export interface BoxOptions extends Omit<BodyOptions, 'radius' | 'mass' | 'density' | 'restitution' | 'friction' | 'staticFriction'> {
   /** Half extents (hx, hy), m, each > 0. */
   halfExtents: ArrayLike<number>;
@@ -504,6 +520,7 @@ const BOX_OPTIONS = [
  * @throws TypeError | RangeError `addBox: <param> must be ...` on options that are not an object, an
  *   unknown option (a ball's `mass`, say: the list of valid ones is in the message), a null option, or
  *   any value `addBody` or `addShape` refuses; nothing is added.
+ * @category Shapes
  */
 export function addBox(world: PhysicsWorld, options: BoxOptions): number {
   const where = 'addBox';

@@ -13,15 +13,22 @@ import { describe } from '../validate.js';
  * Box2D v3 manifold.c), and one mass formula every kind (see mass.ts).
  */
 
-/** Shape kinds as stored in `Components.Shape.kind`. */
+/**
+ * Shape kinds as stored in `Components.Shape.kind`.
+ * @category Shapes
+ */
 export const ShapeKind = Object.freeze({ Circle: 0, Capsule: 1, Polygon: 2 } as const);
 
-/** Most vertices a polygon may have. */
+/**
+ * Most vertices a polygon may have.
+ * @category Shapes
+ */
 export const MAX_POLYGON_VERTICES = 8;
 
 /**
  * A convex shape in its own frame (m): `count` vertices (x, y), `count` outward unit edge normals
  * (none meaningful for a circle), and the rounding radius.
+ * @category Shapes
  */
 export interface ConvexGeometry {
   /** ShapeKind: 0 circle, 1 capsule, 2 polygon. */
@@ -40,7 +47,10 @@ export interface ConvexGeometry {
   ny: Float64Array;
 }
 
-/** An empty geometry with room for 8 vertices (reused scratch; no allocation per use). */
+/**
+ * An empty geometry with room for 8 vertices (reused scratch; no allocation per use).
+ * @category Shapes
+ */
 export function createGeometry(): ConvexGeometry {
   const n = MAX_POLYGON_VERTICES;
   return {
@@ -57,6 +67,7 @@ export function createGeometry(): ConvexGeometry {
 /**
  * Fills the outward unit normals of edges i -> i + 1 of a counter-clockwise vertex loop (count >= 2).
  * A 2-vertex loop gets the right-hand normal of a -> b and its opposite.
+ * @category Shapes
  */
 export function computeNormals(g: ConvexGeometry): void {
   const n = g.count;
@@ -75,7 +86,10 @@ export function computeNormals(g: ConvexGeometry): void {
   }
 }
 
-/** A circle of `radius` m centred at (cx, cy). @throws RangeError naming `where` if radius <= 0. */
+/**
+ * A circle of `radius` m centred at (cx, cy). @throws RangeError naming `where` if radius <= 0.
+ * @category Shapes
+ */
 export function makeCircle(where: string, radius: number, cx = 0, cy = 0): ConvexGeometry {
   if (!(radius > 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be > 0, got ${describe(radius)}`);
   const g = createGeometry();
@@ -92,6 +106,7 @@ export function makeCircle(where: string, radius: number, cx = 0, cy = 0): Conve
 /**
  * A capsule: the segment from (x1, y1) to (x2, y2) (the end-cap centres, m) inflated by `radius` m.
  * @throws RangeError naming `where` if radius <= 0 or the centres coincide (use a circle then).
+ * @category Shapes
  */
 export function makeCapsule(where: string, x1: number, y1: number, x2: number, y2: number, radius: number): ConvexGeometry {
   if (!(radius > 0) || !Number.isFinite(radius)) throw new RangeError(`${where}: radius must be > 0, got ${describe(radius)}`);
@@ -117,6 +132,7 @@ export function makeCapsule(where: string, x1: number, y1: number, x2: number, y
  * A box of half extents (hx, hy), m, centred at (cx, cy) and turned by `angle` rad, corners counter-
  * clockwise from the lower left, rounded by `radius` m (default 0).
  * @throws RangeError naming `where` if a half extent is not > 0 or radius < 0.
+ * @category Shapes
  */
 export function makeBox(where: string, hx: number, hy: number, cx = 0, cy = 0, angle = 0, radius = 0): ConvexGeometry {
   if (!(hx > 0) || !Number.isFinite(hx)) throw new RangeError(`${where}: halfExtents[0] must be > 0, got ${describe(hx)}`);
@@ -145,6 +161,7 @@ export function makeBox(where: string, hx: number, hy: number, cx = 0, cy = 0, a
  * @throws RangeError naming `where`, the parameter and the value on: fewer than 3 or more than 8
  *   vertices; a non-finite coordinate; two consecutive vertices closer than 1e-6 m (relative to the
  *   polygon's size); three collinear consecutive vertices or zero area; a reflex corner (not convex).
+ * @category Shapes
  */
 export function makePolygon(where: string, points: ArrayLike<ArrayLike<number>>, radius = 0): ConvexGeometry {
   const n = points.length;
@@ -210,7 +227,10 @@ export function makePolygon(where: string, points: ArrayLike<ArrayLike<number>>,
   return g;
 }
 
-/** Turns `g` by `angle` rad about the origin, then moves it by (dx, dy), in place (vertices and normals). */
+/**
+ * Turns `g` by `angle` rad about the origin, then moves it by (dx, dy), in place (vertices and normals).
+ * @category Shapes
+ */
 export function transformGeometry(g: ConvexGeometry, dx: number, dy: number, angle: number): void {
   const c = Math.cos(angle),
     s = Math.sin(angle);

@@ -22,6 +22,7 @@ import type { ConvexGeometry } from './geometry.js';
  * capsule (n = 2) is two rectangles of width r on either side of its segment (2r x L) and two
  * half discs; a box of w x h gives m (w^2 + h^2) / 12. The split is exact, so rounded boxes and
  * capsules need no approximation.
+ * @category Shapes
  */
 export interface MassProperties {
   /** Mass, kg. */
@@ -39,6 +40,7 @@ export interface MassProperties {
 /**
  * Mass, centroid and central moment of inertia of `g` at areal density `density` kg/m^2 (>= 0; 0
  * gives zero mass and inertia with the centroid of the area). Formulas in the module comment.
+ * @category Shapes
  */
 export function shapeMassProperties(g: ConvexGeometry, density: number): MassProperties {
   const n = g.count,

@@ -2,6 +2,7 @@
  * The `Shape` component's store (see `Components.Shape`). Its arrays are empty until the world's first
  * shape is added (`ensureShapeStore`), so worlds without shapes pay nothing; the vertex arrays hold
  * `MAX_POLYGON_VERTICES` entries an entity.
+ * @category Shapes
  */
 export interface ShapeStore {
   /** The body entity the shape belongs to (the shape's own id when the shape lives on its body). */
@@ -39,10 +40,16 @@ export interface ShapeStore {
   next: Int32Array;
 }
 
-/** Shape slots a vertex array holds per entity. */
+/**
+ * Shape slots a vertex array holds per entity.
+ * @category Shapes
+ */
 export const SHAPE_STRIDE = 8;
 
-/** An empty store (no arrays allocated). */
+/**
+ * An empty store (no arrays allocated).
+ * @category Shapes
+ */
 export function createEmptyShapeStore(): ShapeStore {
   const z = (): Float64Array => new Float64Array(0);
   return {
@@ -64,7 +71,10 @@ export function createEmptyShapeStore(): ShapeStore {
   };
 }
 
-/** Allocates the store's arrays for `capacity` entities if they are still empty. */
+/**
+ * Allocates the store's arrays for `capacity` entities if they are still empty.
+ * @category Shapes
+ */
 export function ensureShapeStore(store: ShapeStore, capacity: number): void {
   if (store.body.length > 0) return;
   const n = capacity + 1;

@@ -22,7 +22,10 @@ import { Shape3DKind, type Shape3DStore, shapes3DOf } from './store.js';
  * of mass and inertia tensor from them and their densities (kg/m^3; formulas in shapes3d/mass.ts).
  */
 
-/** Options of `addShape3D`. `type` says which of `radius`, `halfExtents`, `halfHeight` and `vertices` apply. */
+/**
+ * Options of `addShape3D`. `type` says which of `radius`, `halfExtents`, `halfHeight` and `vertices` apply.
+ * @category Shapes
+ */
 export interface Shape3DOptions {
   /** 'sphere' (radius), 'box' (halfExtents), 'capsule' and 'cylinder' (radius, halfHeight, along the shape's y axis), 'hull' (vertices). */
   type: 'sphere' | 'box' | 'capsule' | 'cylinder' | 'hull';
@@ -125,7 +128,10 @@ function geometryOf(where: string, o: Shape3DOptions): Geometry {
   }
 }
 
-/** Sides of the prism a cylinder collides as (its mass properties are the exact cylinder's). */
+/**
+ * Sides of the prism a cylinder collides as (its mass properties are the exact cylinder's).
+ * @category Shapes
+ */
 export const CYLINDER_SIDES = 16;
 
 /** The prism of CYLINDER_SIDES sides inscribed in a cylinder of radius r and half height hh along y. */
@@ -171,6 +177,7 @@ function shapeMass(s: Shape3DStore, e: number): MassProperties3D {
  * @example
  * const crate = addBody(world, { position: [0, 3, 0] });
  * addShape3D(world, crate, { type: 'box', halfExtents: [0.5, 0.5, 0.5], density: 500 });
+ * @category Shapes
  */
 export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOptions): number {
   const where = 'addShape3D';
@@ -302,6 +309,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
  * reference point later shapes are placed about. Shapes of zero total mass leave mass and inertia as
  * they were. Called by `addShape3D`.
  * @throws RangeError on a removed entity or one that is not a body.
+ * @category Shapes
  */
 export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void {
   const b = resolveKind(world, body, 'body', 'updateMassFromShapes3D', 'body');
@@ -395,7 +403,10 @@ export function updateMassFromShapes3D(world: PhysicsWorld, body: number): void 
   setInertiaUnchecked(world, b, [Math.max(values[0]!, floor), Math.max(values[1]!, floor), Math.max(values[2]!, floor)]);
 }
 
-/** The 3D shape handles of a body, in the order added. @throws RangeError on a removed entity or one that is not a body. */
+/**
+ * The 3D shape handles of a body, in the order added. @throws RangeError on a removed entity or one that is not a body.
+ * @category Shapes
+ */
 export function shapes3DOfBody(world: PhysicsWorld, body: number): number[] {
   const b = resolveKind(world, body, 'body', 'shapes3DOfBody', 'body');
   const s = shapes3DOf(world);
@@ -405,7 +416,10 @@ export function shapes3DOfBody(world: PhysicsWorld, body: number): number[] {
   return out;
 }
 
-/** The convex hull a hull shape keeps (vertices in the shape frame). @throws RangeError on a handle that is not a hull shape. */
+/**
+ * The convex hull a hull shape keeps (vertices in the shape frame). @throws RangeError on a handle that is not a hull shape.
+ * @category Shapes
+ */
 export function hullOfShape3D(world: PhysicsWorld, shape: number): Hull {
   const e = resolveEntity(world, shape, 'hullOfShape3D', 'shape');
   const s = shapes3DOf(world);
@@ -443,7 +457,10 @@ function removeShapes3DOf(world: PhysicsWorld, eid: number): void {
   }
 }
 
-/** v rotated by the unit quaternion q. */
+/**
+ * v rotated by the unit quaternion q.
+ * @category Shapes
+ */
 export function rotate(qx: number, qy: number, qz: number, qw: number, vx: number, vy: number, vz: number): [number, number, number] {
   const tx = 2 * (qy * vz - qz * vy),
     ty = 2 * (qz * vx - qx * vz),
@@ -451,7 +468,10 @@ export function rotate(qx: number, qy: number, qz: number, qw: number, vx: numbe
   return [vx + qw * tx + (qy * tz - qz * ty), vy + qw * ty + (qz * tx - qx * tz), vz + qw * tz + (qx * ty - qy * tx)];
 }
 
-/** The Hamilton product a b (rotate by b, then by a). */
+/**
+ * The Hamilton product a b (rotate by b, then by a).
+ * @category Shapes
+ */
 export function mul(
   ax: number,
   ay: number,
@@ -470,7 +490,10 @@ export function mul(
   ];
 }
 
-/** The rotation matrix (row-major) of a unit quaternion. */
+/**
+ * The rotation matrix (row-major) of a unit quaternion.
+ * @category Shapes
+ */
 export function matrixOf(x: number, y: number, z: number, w: number, R: Float64Array): void {
   R[0] = 1 - 2 * (y * y + z * z);
   R[1] = 2 * (x * y - z * w);
@@ -483,7 +506,10 @@ export function matrixOf(x: number, y: number, z: number, w: number, R: Float64A
   R[8] = 1 - 2 * (x * x + y * y);
 }
 
-/** The unit quaternion of a rotation matrix (row-major, det +1); Shepperd's method (J. Guidance and Control 1(3), 1978). */
+/**
+ * The unit quaternion of a rotation matrix (row-major, det +1); Shepperd's method (J. Guidance and Control 1(3), 1978).
+ * @category Shapes
+ */
 export function quaternionOf(R: Float64Array): [number, number, number, number] {
   const tr = R[0]! + R[4]! + R[8]!;
   let x: number, y: number, z: number, w: number;

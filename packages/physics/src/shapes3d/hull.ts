@@ -9,16 +9,23 @@ import { describe } from '../validate.js';
  * scans every point instead of keeping conflict lists.
  */
 
-/** Most vertices a hull may keep (the framework's limit on a convex shape). */
+/**
+ * Most vertices a hull may keep (the framework's limit on a convex shape).
+ * @category Shapes
+ */
 export const MAX_HULL_VERTICES = 64;
 
-/** Most points a point cloud given to `quickhull` may hold. */
+/**
+ * Most points a point cloud given to `quickhull` may hold.
+ * @category Shapes
+ */
 export const MAX_HULL_INPUT = 1024;
 
 /**
  * A convex hull: its vertices and its faces, triangles wound counter-clockwise seen from outside
  * (so (b - a) x (c - a) is the outward normal), and its polygonal faces (coplanar triangles merged)
  * for face clipping.
+ * @category Shapes
  */
 export interface Hull {
   /** Vertex coordinates, m, packed (x, y, z) per vertex; 4 to MAX_HULL_VERTICES vertices. */
@@ -52,6 +59,7 @@ interface Face {
  * @throws TypeError | RangeError `<where>: vertices must ...` on fewer than 4 or more than MAX_HULL_INPUT
  *   points, a non-finite coordinate, points that span no volume (all on one plane, line or point, to a
  *   tolerance of 1e-9 times the cloud's size), or a hull of more than MAX_HULL_VERTICES vertices.
+ * @category Shapes
  */
 export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): Hull {
   if (points === null || typeof points !== 'object' || typeof points.length !== 'number') {

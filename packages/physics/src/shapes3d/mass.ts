@@ -20,7 +20,10 @@ import type { Hull } from './hull.js';
  *   and Van Loan, Matrix Computations, section 8.5).
  */
 
-/** Mass properties of one shape: mass (kg), centre of mass (m, shape frame) and inertia tensor about it (kg m^2, symmetric, row-major 3 x 3). */
+/**
+ * Mass properties of one shape: mass (kg), centre of mass (m, shape frame) and inertia tensor about it (kg m^2, symmetric, row-major 3 x 3).
+ * @category Shapes
+ */
 export interface MassProperties3D {
   mass: number;
   center: [number, number, number];
@@ -35,20 +38,29 @@ function diagonal(m: number, a: number, b: number, c: number): MassProperties3D 
   return { mass: m, center: [0, 0, 0], inertia: I };
 }
 
-/** A solid sphere of radius r: m = rho 4 pi r^3 / 3, I = 2 m r^2 / 5 about every axis. */
+/**
+ * A solid sphere of radius r: m = rho 4 pi r^3 / 3, I = 2 m r^2 / 5 about every axis.
+ * @category Shapes
+ */
 export function sphereMass(density: number, r: number): MassProperties3D {
   const m = density * (4 / 3) * Math.PI * r * r * r;
   const i = 0.4 * m * r * r;
   return diagonal(m, i, i, i);
 }
 
-/** A solid box of half extents (hx, hy, hz): m = 8 rho hx hy hz, I_x = m (hy^2 + hz^2) / 3 (edges 2h: m (b^2 + c^2) / 12), and so on. */
+/**
+ * A solid box of half extents (hx, hy, hz): m = 8 rho hx hy hz, I_x = m (hy^2 + hz^2) / 3 (edges 2h: m (b^2 + c^2) / 12), and so on.
+ * @category Shapes
+ */
 export function boxMass(density: number, hx: number, hy: number, hz: number): MassProperties3D {
   const m = density * 8 * hx * hy * hz;
   return diagonal(m, (m * (hy * hy + hz * hz)) / 3, (m * (hx * hx + hz * hz)) / 3, (m * (hx * hx + hy * hy)) / 3);
 }
 
-/** A solid cylinder of radius r and half height hh along y: m = rho pi r^2 2 hh, I_y = m r^2 / 2, I_x = I_z = m (3 r^2 + (2 hh)^2) / 12. */
+/**
+ * A solid cylinder of radius r and half height hh along y: m = rho pi r^2 2 hh, I_y = m r^2 / 2, I_x = I_z = m (3 r^2 + (2 hh)^2) / 12.
+ * @category Shapes
+ */
 export function cylinderMass(density: number, r: number, hh: number): MassProperties3D {
   const m = density * Math.PI * r * r * 2 * hh;
   const side = (m * (3 * r * r + 4 * hh * hh)) / 12;
@@ -59,6 +71,7 @@ export function cylinderMass(density: number, r: number, hh: number): MassProper
  * A capsule along y: a cylinder of radius r and half height hh between two hemispheres of radius r.
  * I_y = m_c r^2 / 2 + 2 m_s r^2 / 5; I_x = I_z = m_c (3 r^2 + 4 hh^2) / 12 + m_s (2 r^2 / 5 + hh^2 + 3 hh r / 4),
  * with m_c the cylinder's mass and m_s the two hemispheres' (see the module's sources).
+ * @category Shapes
  */
 export function capsuleMass(density: number, r: number, hh: number): MassProperties3D {
   const mc = density * Math.PI * r * r * 2 * hh;
@@ -67,7 +80,10 @@ export function capsuleMass(density: number, r: number, hh: number): MassPropert
   return diagonal(mc + ms, side, 0.5 * mc * r * r + 0.4 * ms * r * r, side);
 }
 
-/** A convex hull by tetrahedral decomposition (see the module's sources). Its centre of mass is returned in the hull's frame. */
+/**
+ * A convex hull by tetrahedral decomposition (see the module's sources). Its centre of mass is returned in the hull's frame.
+ * @category Shapes
+ */
 export function hullMass(density: number, hull: Hull): MassProperties3D {
   const V = hull.vertices,
     T = hull.triangles;
@@ -136,7 +152,10 @@ export function hullMass(density: number, hull: Hull): MassProperties3D {
   return { mass: m, center: [gx + ox, gy + oy, gz + oz], inertia: I };
 }
 
-/** Volume of a hull, m^3 (the tetrahedral decomposition's sum). */
+/**
+ * Volume of a hull, m^3 (the tetrahedral decomposition's sum).
+ * @category Shapes
+ */
 export function hullVolume(hull: Hull): number {
   return hullMass(1, hull).mass;
 }
@@ -145,6 +164,7 @@ export function hullVolume(hull: Hull): number {
  * Adds to `acc` (inertia about the origin of the body's frame, row-major 3 x 3) the tensor of a shape
  * of mass m whose own tensor about its centre is I_local, turned by the rotation matrix R (row-major)
  * and centred at d: R I_local R^T + m (|d|^2 E - d d^T) (parallel-axis theorem).
+ * @category Shapes
  */
 export function addMovedInertia(
   acc: Float64Array,
@@ -170,6 +190,7 @@ export function addMovedInertia(
  * Principal moments and axes of a symmetric 3 x 3 tensor A (row-major) by cyclic Jacobi rotations:
  * writes the eigenvalues into `values` and the axes as the columns of `axes` (row-major, a proper
  * rotation: det = +1), so A = axes diag(values) axes^T. A diagonal A gives the identity.
+ * @category Shapes
  */
 export function principalAxes(A: Float64Array, values: Float64Array, axes: Float64Array): void {
   const a = Float64Array.from(A);

@@ -2,7 +2,10 @@ import { registerExternalWorldState } from '../snapshot/world-state.js';
 import type { PhysicsWorld } from '../world.js';
 import type { Hull } from './hull.js';
 
-/** Kinds of 3D shapes (the `kind` field of Shape3DStore). */
+/**
+ * Kinds of 3D shapes (the `kind` field of Shape3DStore).
+ * @category Shapes
+ */
 export const Shape3DKind = Object.freeze({ Sphere: 0, Box: 1, Capsule: 2, Cylinder: 3, Hull: 4 } as const);
 
 /**
@@ -11,6 +14,7 @@ export const Shape3DKind = Object.freeze({ Sphere: 0, Box: 1, Capsule: 2, Cylind
  * with its body. Placement is in the body frame, which is the principal frame of the body's inertia
  * about its centre of mass (`updateMassFromShapes3D` keeps it so), so a shape's world pose is the
  * body's `Position` and `Orientation` composed with it. Arrays are empty until the first shape.
+ * @category Shapes
  */
 export interface Shape3DStore {
   /** True once the world has a 3D shape. */
@@ -110,7 +114,10 @@ function createStore(capacity: number): Shape3DStore {
   };
 }
 
-/** The world's 3D shape store, made on first use when `create` is true (else undefined for a world without 3D shapes). */
+/**
+ * The world's 3D shape store, made on first use when `create` is true (else undefined for a world without 3D shapes).
+ * @category Shapes
+ */
 export function shapes3DOf(world: PhysicsWorld, create: true): Shape3DStore;
 export function shapes3DOf(world: PhysicsWorld, create?: boolean): Shape3DStore | undefined;
 export function shapes3DOf(world: PhysicsWorld, create = false): Shape3DStore | undefined {

@@ -73,6 +73,7 @@ const COUNT_KEY = /^(count|size|capacity|head|budget|stamp|epoch|version|built)$
  * string; null only where the world holds null), so an edited snapshot cannot put null or a string
  * where the engine reads a number.
  * @throws RangeError `restore: snapshot's <path> must be <rule>, got <value>`.
+ * @category Snapshots
  */
 export function checkSnapshotValues(state: unknown, external: Record<string, unknown>, world?: object): void {
   walk(state, 'world', world);

@@ -89,6 +89,7 @@ function feedString(s: Lanes, text: string): void {
  * The checksum of a snapshot's header `fields` (every field but the checksum, as `JSON.stringify`
  * writes them: the same after a trip through JSON, which keeps key order and numbers exactly) and
  * of `buffer`'s first `bytes` bytes. @returns 16 lower-case hex digits.
+ * @category Snapshots
  */
 export function snapshotChecksum(fields: object, buffer: ArrayBuffer, bytes: number): string {
   const s: Lanes = { h1: 0x9747b28c, h2: 0x5bd1e995, n: 0 };

@@ -12,6 +12,7 @@ const u32 = new Uint32Array(f64.buffer);
  * Use it to compare runs across processes and machines (determinism), or a replay with its recording.
  *
  * Hash: two 32-bit FNV-1a streams (Fowler, Noll and Vo) over the 32-bit words, with different offset bases.
+ * @category Snapshots
  */
 export function stateHash(world: PhysicsWorld): string {
   let h1 = 0x811c9dc5,

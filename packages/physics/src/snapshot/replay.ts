@@ -17,7 +17,10 @@ const cloneData = <T>(value: T): T => (globalThis as unknown as { structuredClon
  * games resimulate from a rollback point.
  */
 
-/** One input: handler `name` called with `args` before step `step` (0 = before the first recorded step). */
+/**
+ * One input: handler `name` called with `args` before step `step` (0 = before the first recorded step).
+ * @category Snapshots
+ */
 export interface InputEvent {
   /** Steps taken since the recording started when the input came. Integer >= 0. */
   readonly step: number;
@@ -27,7 +30,10 @@ export interface InputEvent {
   readonly args: readonly unknown[];
 }
 
-/** A recorded run: everything `playReplay` needs to reproduce it. */
+/**
+ * A recorded run: everything `playReplay` needs to reproduce it.
+ * @category Snapshots
+ */
 export interface Replay {
   /** The world's state when recording started. */
   readonly start: WorldSnapshot;
@@ -39,10 +45,16 @@ export interface Replay {
   steps: number;
 }
 
-/** Handlers: the physics calls a recording may hold, by name. */
+/**
+ * Handlers: the physics calls a recording may hold, by name.
+ * @category Snapshots
+ */
 export type InputHandlers = Readonly<Record<string, (...args: never[]) => void>>;
 
-/** Options of `createInputRecorder` and `playReplay`. */
+/**
+ * Options of `createInputRecorder` and `playReplay`.
+ * @category Snapshots
+ */
 export interface ReplayOptions {
   /** The inputs by name; each is called with the recorded arguments. */
   handlers: InputHandlers;
@@ -67,7 +79,10 @@ function checkOptions(where: string, options: ReplayOptions): void {
   if ((options.save === undefined) !== (options.load === undefined)) throw new TypeError(`${where}: save and load must be given together`);
 }
 
-/** Records the inputs of a run (see `createInputRecorder`). */
+/**
+ * Records the inputs of a run (see `createInputRecorder`).
+ * @category Snapshots
+ */
 export interface InputRecorder {
   /** The recording so far (its `steps` follows the world). */
   readonly replay: Replay;
@@ -87,6 +102,7 @@ export interface InputRecorder {
  * const rec = createInputRecorder(world, { handlers: { kick: (v: number) => setVelocity(world, ball, [v, 0]) } });
  * stepMany(world, 10); rec.input('kick', 3); stepMany(world, 50);
  * playReplay(world, rec.replay, { handlers }); // the same 60 steps again, bit for bit
+ * @category Snapshots
  */
 export function createInputRecorder(world: PhysicsWorld, options: ReplayOptions): InputRecorder {
   const where = 'createInputRecorder';
@@ -111,7 +127,10 @@ export function createInputRecorder(world: PhysicsWorld, options: ReplayOptions)
   };
 }
 
-/** Plays a replay one step at a time (see `createReplayPlayer`). */
+/**
+ * Plays a replay one step at a time (see `createReplayPlayer`).
+ * @category Snapshots
+ */
 export interface ReplayPlayer {
   /** Steps played so far. */
   readonly played: number;
@@ -126,6 +145,7 @@ export interface ReplayPlayer {
  * that steps through it: for frame-by-frame playback in a game. `world` must be the one recorded or one
  * made with the same options and systems.
  * @throws TypeError on bad options; RangeError as `restore`.
+ * @category Snapshots
  */
 export function createReplayPlayer(world: PhysicsWorld, replay: Replay, options: ReplayOptions): ReplayPlayer {
   const where = 'createReplayPlayer';
@@ -172,6 +192,7 @@ export function createReplayPlayer(world: PhysicsWorld, replay: Replay, options:
  * the step it was recorded at and steps `replay.steps` times. Afterwards `world` is in the state the
  * recorded run ended in, to the last bit.
  * @throws as createReplayPlayer, and whatever a handler or step throws.
+ * @category Snapshots
  */
 export function playReplay(world: PhysicsWorld, replay: Replay, options: ReplayOptions): void {
   const player = createReplayPlayer(world, replay, options);

@@ -113,7 +113,10 @@ const STAMPED: ReadonlyMap<string, { parent: (world: PhysicsWorld) => Record<str
   ],
 ]);
 
-/** A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk). */
+/**
+ * A snapshot: a small JSON-able header and the ArrayBuffers it points into (transferable to a Worker, or writable to disk).
+ * @category Snapshots
+ */
 export interface WorldSnapshot {
   /** Format, world shape and the encoded state tree (see `snapshot`); JSON-able. */
   readonly header: SnapshotHeader;
@@ -121,10 +124,16 @@ export interface WorldSnapshot {
   readonly buffers: ArrayBuffer[];
 }
 
-/** An encoded value: a JSON primitive, an array, an object of encoded values, or a tagged special value. */
+/**
+ * An encoded value: a JSON primitive, an array, an object of encoded values, or a tagged special value.
+ * @category Snapshots
+ */
 export type Encoded = number | boolean | string | null | Encoded[] | { [key: string]: Encoded };
 
-/** Header of a WorldSnapshot. */
+/**
+ * Header of a WorldSnapshot.
+ * @category Snapshots
+ */
 export interface SnapshotHeader {
   /** 'bitphysics-snapshot'. */
   format: string;
@@ -1556,6 +1565,7 @@ function unusedStores(world: PhysicsWorld): Set<object> {
  *   `world.components`.
  * @example
  * const saved = snapshot(world); stepMany(world, 100); restore(world, saved); // back 100 steps
+ * @category Snapshots
  */
 export function snapshot(world: PhysicsWorld, reuse?: WorldSnapshot): WorldSnapshot {
   const old = reuse?.buffers?.[0];
@@ -1603,6 +1613,7 @@ function checksumFields(h: SnapshotHeader): object {
  * Writes `snap`'s checksum again, for its header and buffer as they are now: for tools that edit a
  * snapshot on purpose (and tests that check what restore makes of edited values). A snapshot taken
  * by `snapshot` needs none of this. Not exported by the package.
+ * @category Snapshots
  */
 export function sealSnapshot(snap: WorldSnapshot): void {
   const h = snap.header as { -readonly [K in keyof SnapshotHeader]: SnapshotHeader[K] };
@@ -1631,6 +1642,7 @@ export function sealSnapshot(snap: WorldSnapshot): void {
  * @throws RangeError `restore: snapshot ...` if `snap` is not a snapshot, was taken from a world of
  *   other dimensions or capacity or by another version, is damaged (checksum), or holds a value out
  *   of range; the world is then left as it was.
+ * @category Snapshots
  */
 export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
   const where = 'restore';

@@ -4,6 +4,7 @@ import type { PhysicsWorld } from '../world.js';
  * Per-world state kept outside the world object (in a module's WeakMap keyed by the world), which
  * `snapshot` and `restore` must carry too. Every module that keeps such state registers it here once;
  * the snapshot test fails for a WeakMap keyed by a world that is neither registered nor declared scratch.
+ * @category Snapshots
  */
 export interface ExternalWorldState {
   /** Name in the snapshot header (unique). */
@@ -18,13 +19,19 @@ export interface ExternalWorldState {
 
 const registry = new Map<string, ExternalWorldState>();
 
-/** Registers per-world state held outside the world (see ExternalWorldState). @throws Error on a duplicate name. */
+/**
+ * Registers per-world state held outside the world (see ExternalWorldState). @throws Error on a duplicate name.
+ * @category Snapshots
+ */
 export function registerExternalWorldState(state: ExternalWorldState): void {
   if (registry.has(state.name)) throw new Error(`registerExternalWorldState: name '${state.name}' is already registered`);
   registry.set(state.name, state);
 }
 
-/** Every registered external state, in registration order. */
+/**
+ * Every registered external state, in registration order.
+ * @category Snapshots
+ */
 export function externalWorldStates(): readonly ExternalWorldState[] {
   return [...registry.values()];
 }

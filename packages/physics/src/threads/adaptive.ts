@@ -39,17 +39,27 @@
  * ms on the threads, after delays of 5 to 40 ms in single calls of the threads.
  */
 
-/** Calls between two probes right after a loop's preferred way changed (and at its start). */
+/**
+ * Calls between two probes right after a loop's preferred way changed (and at its start).
+ * @category Threads
+ */
 export const MIN_PROBE_PERIOD = 4;
-/** Most calls between two probes while the two ways' estimates are within CLEAR_RATIO of each other. */
+/**
+ * Most calls between two probes while the two ways' estimates are within CLEAR_RATIO of each other.
+ * @category Threads
+ */
 export const PROBE_EVERY = 16;
-/** Most calls between two probes once one way's estimate is more than CLEAR_RATIO times the other's. */
+/**
+ * Most calls between two probes once one way's estimate is more than CLEAR_RATIO times the other's.
+ * @category Threads
+ */
 export const CLEAR_PROBE_EVERY = 64;
 /**
  * Ratio of the two ways' estimates above which the choice is clear (probed at most every
  * CLEAR_PROBE_EVERY calls). A probe of the slower way costs the difference once: at 1.25 and
  * CLEAR_PROBE_EVERY that is under 0.4 % of the loop's time, where probing every PROBE_EVERY calls cost
  * 3 % of balls-in-box's coloured solve (20,000 balls, 2 threads, 6 ms a probe at a ratio of 1.48).
+ * @category Threads
  */
 export const CLEAR_RATIO = 1.25;
 
@@ -60,6 +70,7 @@ export const CLEAR_RATIO = 1.25;
  * slower way costs the most and tells the least: balls-in-box's coloured solve, 20,000 balls on 2
  * threads, paid 6 ms a probe at 4, 8, 16 and 32 calls, in the steps the bench's median falls in; four
  * times made a step 0.981, 0.989 and 0.984 of twice, in process); else twice `period`, at most PROBE_EVERY.
+ * @category Threads
  */
 export function nextProbePeriod(period: number, a: number, b: number): number {
   const clear = a > CLEAR_RATIO * b || b > CLEAR_RATIO * a;
@@ -73,13 +84,20 @@ export function nextProbePeriod(period: number, a: number, b: number): number {
  * lucky call (a worker that happened to be awake): balls-in-box's cell pass (20,000 balls, 2 threads)
  * ran at 0.7 to 1.0 of its one-thread time and changed ways 7 times in 40 steps. With the margin a
  * step took 0.979, 0.982, 0.997, 1.002 and 0.977 of before in process (0.93 in steps 150 to 180).
+ * @category Threads
  */
 export const SWITCH_RATIO = 0.9;
 
-/** Times a way's estimate is the least of (see the file's header). */
+/**
+ * Times a way's estimate is the least of (see the file's header).
+ * @category Threads
+ */
 export const WINDOW = 3;
 
-/** Calls after which a time no longer counts in its way's estimate, unless it is the way's newest (see the file's header). */
+/**
+ * Calls after which a time no longer counts in its way's estimate, unless it is the way's newest (see the file's header).
+ * @category Threads
+ */
 export const MAX_AGE = PROBE_EVERY;
 
 /** What is known of one loop. */
@@ -103,13 +121,19 @@ interface Site {
   serialCalls: Float64Array;
 }
 
-/** Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now. */
+/**
+ * Clock in milliseconds: performance.now where the host has it (Node, browsers, workers), else Date.now.
+ * @category Threads
+ */
 export function nowMs(): number {
   const p = (globalThis as { performance?: { now(): number } }).performance;
   return p !== undefined ? p.now() : Date.now();
 }
 
-/** The choices of one pool (see the file's header). */
+/**
+ * The choices of one pool (see the file's header).
+ * @category Threads
+ */
 export class LoopChooser {
   private readonly sites = new Map<string, Site>();
 

@@ -20,7 +20,10 @@
  * claimed dynamically) are cut equally, as before.
  */
 
-/** Fewest elements a thread for a loop's ranges to follow its learnt shares (else equal ranges). */
+/**
+ * Fewest elements a thread for a loop's ranges to follow its learnt shares (else equal ranges).
+ * @category Threads
+ */
 export const BALANCE_MIN_PER_THREAD = 256;
 
 /** Fraction of the way the shares move towards the measured balance after each run. */
@@ -36,13 +39,17 @@ const MAX_KERNELS = 64;
  * Milliseconds since the epoch with the resolution of performance.now(), on one clock across the
  * threads of a process (Node's worker_threads and a page's workers: their timeOrigin differs, the sum
  * does not); Date.now() where there is no performance.
+ * @category Threads
  */
 export function epochMs(): number {
   const p = (globalThis as { performance?: { now(): number; timeOrigin: number } }).performance;
   return p !== undefined ? p.timeOrigin + p.now() : Date.now();
 }
 
-/** The learnt shares of one pool's loops (see the file's header). */
+/**
+ * The learnt shares of one pool's loops (see the file's header).
+ * @category Threads
+ */
 export class RangeBalance {
   private readonly threads: number;
   /** Shares: kernel k's thread i at k * threads + i, summing to 1 per kernel. */

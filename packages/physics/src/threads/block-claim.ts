@@ -16,6 +16,7 @@
  * coloured solve's strips), and a late or slow thread holds up nothing the others can take.
  * `cursor` is the thread's own: [0] the share it is in (0: its own), [1] blocks of it tried; set both
  * to 0 before a unit's first call.
+ * @category Threads
  */
 export function claimBlock(claim: Int32Array, base: number, count: number, part: number, threads: number, cursor: Int32Array): number {
   let sh = cursor[0]!,

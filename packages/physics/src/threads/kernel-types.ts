@@ -3,7 +3,10 @@
  * their system (forces/barnes-hut-walk.ts) can name them without importing the kernel table.
  */
 
-/** A typed array a kernel reads or writes. */
+/**
+ * A typed array a kernel reads or writes.
+ * @category Threads
+ */
 export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint16Array | Uint8Array;
 
 /**
@@ -12,6 +15,7 @@ export type KernelArray = Float64Array | Int32Array | Uint32Array | Uint16Array 
  * that is not over entities), [lo, hi) the range this thread runs, `part` the index of that range
  * (the thread's index in the pool, 0 for the calling thread), for kernels that write one result a
  * range. Returns a number the caller sums over the ranges.
+ * @category Threads
  */
 export type Kernel = (
   A: KernelArray[],

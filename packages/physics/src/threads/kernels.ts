@@ -443,7 +443,10 @@ function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, 
   return s;
 }
 
-/** Kernel numbers: the index of each kernel in `KERNELS`. */
+/**
+ * Kernel numbers: the index of each kernel in `KERNELS`.
+ * @category Threads
+ */
 export const KERNEL = Object.freeze({
   sieForced2: 0,
   sieForced3: 1,
@@ -505,6 +508,7 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
  * contact-strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
  * (solver-stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
+ * @category Threads
  */
 export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   coloredPack2D,
@@ -522,7 +526,10 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = Object.freeze([
   approach2D,
 ]);
 
-/** Every kernel, indexed by `KERNEL`. */
+/**
+ * Every kernel, indexed by `KERNEL`.
+ * @category Threads
+ */
 export const KERNELS: readonly Kernel[] = Object.freeze([
   sieForced2,
   sieForced3,

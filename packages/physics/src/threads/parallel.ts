@@ -21,6 +21,7 @@ import { isShared, type ThreadPool } from './pool.js';
  * ranges follow each thread's speed (balance.ts), 8,192 a thread pays: balls-in-box at 20,000 balls
  * on 2 threads, whose integration then splits, ran 2.4 to 7 % faster a step than at 16,384
  * (alternate steps in one process); an adaptive pool still keeps a loop that does not pay to one thread.
+ * @category Threads
  */
 export const MIN_PARALLEL_PER_THREAD = 8192;
 
@@ -29,6 +30,7 @@ export const MIN_PARALLEL_PER_THREAD = 8192;
  * header) and returns the summed kernel result; returns null when the caller should run its own
  * single-threaded loop instead. `system` names the system in a worker's error.
  * @throws Error naming `system` if a worker's range threw.
+ * @category Threads
  */
 export function runParallel(
   world: PhysicsWorld,
@@ -47,6 +49,7 @@ export function runParallel(
  * at least `minPerThread` times the pool's threads, every array is shared and the workers have
  * started; returns null otherwise (the caller runs its own single-threaded loop).
  * @throws Error naming `system` if a worker's range threw.
+ * @category Threads
  */
 export function runOnPool(
   pool: ThreadPool | null,
@@ -74,5 +77,8 @@ export function runOnPool(
   return result;
 }
 
-/** Most threads a per-range result array (such as a bounding box a range) is sized for. */
+/**
+ * Most threads a per-range result array (such as a bounding box a range) is sized for.
+ * @category Threads
+ */
 export const MAX_POOL_PARTS = 64;

@@ -45,6 +45,7 @@ const MAX_PARAMS = 64;
 /**
  * Default microseconds an idle worker watches for the next run before it blocks (ThreadPool.idleSpin).
  * The loops of a step come a few hundred microseconds apart, with the caller's own work between them.
+ * @category Threads
  */
 export const IDLE_SPIN_MICROSECONDS = 500;
 
@@ -56,29 +57,42 @@ const WAIT_SLICE_MS = 25;
  * as it wakes, whatever the run's length); a worker that has not is taken for dead. Far above the
  * wake-up latency of a loaded machine (microseconds to tens of milliseconds), and short enough that a
  * dead worker is reported within a second.
+ * @category Threads
  */
 export const ACK_LIMIT_MS = 500;
 
 /** Characters of a worker's error message kept (longer messages are cut). */
 const ERROR_TEXT = 1024;
 
-/** Whether SharedArrayBuffer can be used here (a browser page must be cross-origin isolated). */
+/**
+ * Whether SharedArrayBuffer can be used here (a browser page must be cross-origin isolated).
+ * @category Threads
+ */
 export function sharedMemoryAvailable(): boolean {
   return typeof SharedArrayBuffer === 'function' && typeof Atomics === 'object';
 }
 
-/** A Float64Array of `n` elements on a new SharedArrayBuffer. */
+/**
+ * A Float64Array of `n` elements on a new SharedArrayBuffer.
+ * @category Threads
+ */
 export function sharedFloat64(n: number): Float64Array {
   return new Float64Array(new SharedArrayBuffer(n * 8));
 }
 
-/** A typed array of the same type as `like` and `n` elements, on a new SharedArrayBuffer. */
+/**
+ * A typed array of the same type as `like` and `n` elements, on a new SharedArrayBuffer.
+ * @category Threads
+ */
 export function sharedLike<T extends KernelArray>(like: T, n: number): T {
   const C = like.constructor as { new (b: SharedArrayBuffer): T; BYTES_PER_ELEMENT: number };
   return new C(new SharedArrayBuffer(n * C.BYTES_PER_ELEMENT));
 }
 
-/** `a` itself if it lives on a SharedArrayBuffer, else a copy of it there (same type and contents). */
+/**
+ * `a` itself if it lives on a SharedArrayBuffer, else a copy of it there (same type and contents).
+ * @category Threads
+ */
 export function sharedCopy<T extends KernelArray>(a: T): T {
   if (isShared(a)) return a;
   const copy = sharedLike(a, a.length);
@@ -86,7 +100,10 @@ export function sharedCopy<T extends KernelArray>(a: T): T {
   return copy;
 }
 
-/** Whether a typed array lives on a SharedArrayBuffer. */
+/**
+ * Whether a typed array lives on a SharedArrayBuffer.
+ * @category Threads
+ */
 export function isShared(a: ArrayBufferView): boolean {
   return typeof SharedArrayBuffer === 'function' && a.buffer instanceof SharedArrayBuffer;
 }
@@ -133,6 +150,7 @@ function canBlock(): boolean {
 
 /**
  * A pool of `threads - 1` workers plus the calling thread. Make it with `createThreadPool`.
+ * @category Threads
  */
 export class ThreadPool {
   /** Threads that share a loop: the calling thread and its workers. */
@@ -506,6 +524,7 @@ export class ThreadPool {
  * Makes a pool of `threads` threads (the caller and threads - 1 workers).
  * @throws Error if SharedArrayBuffer is missing (a page that is not cross-origin isolated) or no
  *   worker can be made here; the message starts with `where`.
+ * @category Threads
  */
 export function createThreadPool(where: string, threads: number): ThreadPool {
   if (!sharedMemoryAvailable()) {

@@ -10,6 +10,7 @@ import { sharedCopy } from './pool.js';
 /**
  * Replaces every per-entity typed array of `store` (a field of length `capacity + 1`) by a copy on a
  * SharedArrayBuffer; fields of other lengths (empty lazy arrays, packed stores) stay as they are.
+ * @category Threads
  */
 export function shareStore(store: object, capacity: number): void {
   const rec = store as Record<string, unknown>;
@@ -22,7 +23,10 @@ export function shareStore(store: object, capacity: number): void {
   }
 }
 
-/** `shareStore` on every store of `components`. */
+/**
+ * `shareStore` on every store of `components`.
+ * @category Threads
+ */
 export function shareStores(components: object, capacity: number): void {
   for (const store of Object.values(components as Record<string, unknown>)) {
     if (store !== null && typeof store === 'object' && !ArrayBuffer.isView(store)) shareStore(store, capacity);

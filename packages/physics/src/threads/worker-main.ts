@@ -20,7 +20,10 @@
  * No message is sent per step or per entity: the arrays travel once, when first used.
  */
 
-/** Slots of the control array shared by a pool and its workers. */
+/**
+ * Slots of the control array shared by a pool and its workers.
+ * @category Threads
+ */
 export const CONTROL = Object.freeze({
   GEN: 0,
   CMD: 1,
@@ -49,15 +52,24 @@ export const CONTROL = Object.freeze({
   LENGTH: 253 + 64,
 });
 
-/** Commands in `CONTROL.CMD`. */
+/**
+ * Commands in `CONTROL.CMD`.
+ * @category Threads
+ */
 export const COMMAND = Object.freeze({ RUN: 0, SYNC: 1, QUIT: 2 });
 
-/** Port of a worker: the browser's worker global or Node's parentPort. */
+/**
+ * Port of a worker: the browser's worker global or Node's parentPort.
+ * @category Threads
+ */
 export interface WorkerPort {
   postMessage(message: unknown): void;
 }
 
-/** Message a pool posts to its workers. */
+/**
+ * Message a pool posts to its workers.
+ * @category Threads
+ */
 export type PoolMessage =
   | {
       type: 'init';
@@ -78,6 +90,7 @@ export type PoolMessage =
  * bundlers rewrite inner functions (a minifier keeping names wraps them in a helper of its own
  * naming), which would leave the worker calling a helper it does not have. The control slots below
  * are those of `CONTROL`; commands those of `COMMAND`.
+ * @category Threads
  */
 export const WORKER_MAIN_SOURCE = `
 function workerMain(kernels, helpers, nodePort) {

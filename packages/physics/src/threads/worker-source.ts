@@ -10,7 +10,10 @@ import { WORKER_MAIN_SOURCE } from './worker-main.js';
 
 let cached: string | null = null;
 
-/** The worker's source text (built once). */
+/**
+ * The worker's source text (built once).
+ * @category Threads
+ */
 export function workerSource(): string {
   if (cached !== null) return cached;
   cached = [
