@@ -283,6 +283,11 @@ let shownNumbers = '',
   shownThrust: Thrust | '' = '';
 
 function updateStatus(force = false): void {
+  // The panel's hole count follows the field: a level lays out its own number of holes.
+  if (params.holes !== bh.holes.length && bh.holes.length > 0) {
+    params.holes = bh.holes.length;
+    panel.refresh();
+  }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   const n = run
     ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
