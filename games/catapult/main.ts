@@ -64,6 +64,7 @@ function createWorld(): PhysicsWorld {
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
   lastShotTime = 0;
+  levelEnded = false;
   materials.clear();
   for (const p of lv.pieces) materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : 'stone');
   return world;
@@ -82,10 +83,35 @@ function stepWorld(world: PhysicsWorld): void {
   });
 }
 
+/**
+ * The campaign: each level's best score and stars once it is over, and the total. A level is cleared
+ * when at least PASS_SHARE of its pieces fell (one star; two from 75 %, three from 95 %); a level not
+ * cleared is played again, and after the last level the end screen shows the total.
+ */
+const PASS_SHARE = 0.5;
+const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
+const starsOf = (share: number): number => (share >= 0.95 ? 3 : share >= 0.75 ? 2 : share >= PASS_SHARE ? 1 : 0);
+const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
+
+/** The next level after a clear, the same one again after a miss, level 1 (a new campaign) after the end. */
 function nextLevel(): void {
+  const finished = levelEnded;
+  const cleared = finished && campaign.stars[params.level - 1]! > 0;
+  if (finished && !cleared) {
+    game.shell.reset();
+    return;
+  }
+  if (params.level === LEVEL_COUNT) {
+    campaign.scores.fill(0);
+    campaign.stars.fill(0);
+  }
   params.level = (params.level % LEVEL_COUNT) + 1;
+  panel.refresh();
   game.shell.reset();
 }
+
+/** Whether the level on screen is over (its score is in the campaign). */
+let levelEnded = false;
 
 const game = await startPixiGame({
   title: 'Catapult',
@@ -258,12 +284,31 @@ function draw(world: PhysicsWorld): void {
   }
   if (levelOver(world, t)) {
     const share = t.fallen / Math.max(1, lv.pieces.length);
-    const stars = share >= 0.9 ? '★★★' : share >= 0.6 ? '★★☆' : share >= 0.3 ? '★☆☆' : '☆☆☆';
-    const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
-    banner.text = `Level ${params.level} ${share >= 0.3 ? 'cleared' : 'over'}  ${stars}\nScore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke\n${keys}`;
-    showNext(true, params.level === LEVEL_COUNT ? 'Play again from level 1 ▶' : `Level ${params.level + 1} ▶`);
+    const earned = starsOf(share);
+    const i = params.level - 1;
+    if (!levelEnded) {
+      // A level's score and stars count once, and only its best try.
+      levelEnded = true;
+      if (t.score > campaign.scores[i]!) campaign.scores[i] = t.score;
+      if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
+    }
+    const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
+    const last = params.level === LEVEL_COUNT;
+    const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
+    if (earned === 0) {
+      const keys = touch ? 'Tap the button below to try again' : 'L or the button below: try again';
+      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${keys}`;
+      showNext(true, 'Try again ↺');
+    } else if (last) {
+      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
+      showNext(true, 'Play again from level 1 ▶');
+    } else {
+      const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
+      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke   Total ${total()}\n${keys}`;
+      showNext(true, `Level ${params.level + 1} ▶`);
+    }
   } else {
-    banner.text = `Score ${t.score}   shots ${shotsLeft}`;
+    banner.text = `Score ${t.score}   Total ${total()}   shots ${shotsLeft}`;
     showNext(false);
   }
 }
@@ -272,6 +317,10 @@ function draw(world: PhysicsWorld): void {
 shell.expose({
   params,
   panel,
+  /** The campaign: each level's best score and stars (0 to 3) once it was over. */
+  campaign,
+  /** Whether the level on screen is over. */
+  levelEnded: (): boolean => levelEnded,
   /** The level's tally now. */
   tally: (): Tally => tally(shell.world, lv),
   /** Shots left, and the thrown projectiles' handles. */

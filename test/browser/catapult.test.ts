@@ -18,6 +18,10 @@ interface CatapultGame {
   fire(dx: number, dy: number): number;
   tally(): { fallen: number; broken: number; score: number };
   level(): { castleMinX: number };
+  params: { level: number };
+  campaign: { scores: number[]; stars: number[] };
+  levelEnded(): boolean;
+  panel: { gui: { controllersRecursive(): { property: string; $input?: HTMLInputElement }[] } };
   renderer: { camera: Cam };
   world: { steps: number; components: { Position: { x: Float64Array; y: Float64Array } } };
 }
@@ -89,6 +93,38 @@ describe('catapult', () => {
     });
     expect(t.before).toBe(0);
     expect(t.after).toBeGreaterThan(0);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('a level where under half the pieces fell is not cleared: the button plays it again; L moves the level slider', async () => {
+    // Every shot thrown straight up, away from the castle: nothing falls, so the level is over once
+    // the shots are spent and 4 s passed, not cleared (the pass mark is half the pieces).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = true;
+      w.reset();
+      w.advance(10);
+      while (w.shotsLeft() > 0) w.fire(0, -1.5);
+      w.advance(60 * 9);
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as CatapultGame).levelEnded(), null);
+    const state = await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      return { fallen: w.tally().fallen, stars: w.campaign.stars[0], level: w.params.level };
+    });
+    expect(state).toEqual({ fallen: 0, stars: 0, level: 1 });
+    const again = g.page.getByRole('button', { name: /Try again/ });
+    await again.click();
+    await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
+    expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).params.level)).toBe(1);
+    // L: the next level, and the panel's level slider shows it (it stayed at 1).
+    await g.page.keyboard.press('l');
+    await g.waitFor(() => (window.game as unknown as CatapultGame).params.level === 2, null);
+    const shown = await g.page.evaluate(
+      () => (window.game as unknown as CatapultGame).panel.gui.controllersRecursive().find((c) => c.property === 'level')?.$input?.value,
+    );
+    expect(shown).toBe('2');
     expect(g.errors).toEqual([]);
   });
 });
