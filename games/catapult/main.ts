@@ -50,7 +50,7 @@ const params = {
   next: () => nextLevel(),
 };
 
-let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0 };
+let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0, castleTop: 0, ground: 0, mound: 0 };
 let shotsLeft = 0;
 let shots: number[] = [];
 let best: Tally = { fallen: 0, broken: 0, score: 0 };
@@ -113,6 +113,11 @@ function nextLevel(): void {
 /** Whether the level on screen is over (its score is in the campaign). */
 let levelEnded = false;
 
+/** Sky, grass (the ground slab) and earth (below it). */
+const SKY = 0x9fd0f5,
+  GRASS = 0x4f8f3a,
+  EARTH = 0x6b4a2e;
+
 const game = await startPixiGame({
   title: 'Catapult',
   createWorld,
@@ -124,9 +129,86 @@ const game = await startPixiGame({
   ],
   keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
   renderer: { view: { minX: -4, minY: -1, maxX: 30, maxY: 14 } },
+  app: { background: SKY },
   onFrame: (_alpha, world) => draw(world),
 });
 const { shell, renderer, app } = game;
+
+/** Colours of the castle's materials (wood posts and planks, glass blocks, stone), the ground and the mound. */
+const MATERIAL_COLORS: Record<Level['pieces'][number]['kind'], number> = {
+  post: 0x9a6232,
+  plank: 0xc08a4e,
+  block: 0xa8dcef,
+  stone: 0x8b929c,
+};
+/** Gives the level's bodies the colours of what they are made of. */
+function paint(): void {
+  for (const p of lv.pieces) if (isAlive(shell.world, p.body)) renderer.setColor(p.body, MATERIAL_COLORS[p.kind]);
+  if (lv.ground) renderer.setColor(lv.ground, GRASS);
+  if (lv.mound) renderer.setColor(lv.mound, 0x7a5533);
+}
+paint();
+shell.onWorldChange(() => {
+  paint();
+  framedFor = '';
+});
+
+/**
+ * The camera: the view of the play area that fits the screen. A wide screen sees everything from the
+ * catapult to the castle; a narrow one (a phone upright) sees a window as tall as the castle needs,
+ * over the castle as a level opens, over the catapult while aiming, following a shot in flight, over
+ * the castle while it falls, and back. The view moves smoothly (a tenth of the way each frame).
+ */
+const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
+/** Screen size the view was framed for; the view jumps (no easing) when it changes and on a new level. */
+let framedFor = '';
+function frameCamera(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  const height = Math.max(8, lv.castleTop + 5);
+  const playMinX = LAUNCH.x - 4,
+    playMaxX = lv.castleMaxX + 3;
+  let width = (height * cam.width) / Math.max(1, cam.height);
+  let top = height - 1;
+  let minX: number;
+  // Everything at once where that still leaves 20 px a metre (a desktop or a phone on its side).
+  if (cam.width / (playMaxX - playMinX) >= 20) {
+    width = playMaxX - playMinX;
+    minX = playMinX;
+    top = Math.max(top, -1 + (width * cam.height) / Math.max(1, cam.width));
+  } else {
+    // Follow the newest shot while it flies; look at the castle for a while after it lands; else the catapult.
+    let focus = playMinX + width / 2;
+    // A new level opens on the castle, then pans back to the catapult (2 s in).
+    if (shots.length === 0 && world.time < 2) focus = (lv.castleMinX + lv.castleMaxX) / 2;
+    const last = shots[shots.length - 1];
+    if (last !== undefined && isAlive(world, last)) {
+      const e = slotOf(last),
+        c = world.components;
+      const flying = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!) > 2 && c.Position.x[e]! > LAUNCH.x + 1;
+      if (flying) focus = c.Position.x[e]!;
+      else if (world.time - lastShotTime < 6) focus = (lv.castleMinX + lv.castleMaxX) / 2;
+    }
+    minX = Math.min(Math.max(focus - width / 2, playMinX), playMaxX - width);
+  }
+  const target = { minX, minY: -1, maxX: minX + width, maxY: top };
+  const size = `${cam.width}x${cam.height}`;
+  const k = size === framedFor ? 0.1 : 1;
+  framedFor = size;
+  cameraView.minX += k * (target.minX - cameraView.minX);
+  cameraView.maxX += k * (target.maxX - cameraView.maxX);
+  cameraView.minY += k * (target.minY - cameraView.minY);
+  cameraView.maxY += k * (target.maxY - cameraView.maxY);
+  cam.fit(cameraView, 0);
+  const off = Math.max(
+    Math.abs(target.minX - cameraView.minX),
+    Math.abs(target.maxX - cameraView.maxX),
+    Math.abs(target.minY - cameraView.minY),
+    Math.abs(target.maxY - cameraView.maxY),
+  );
+  cameraSettled = off < 0.01 && (shots.length > 0 || world.time >= 2);
+}
+/** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
+let cameraSettled = false;
 
 const panel = createPanel(
   params,
@@ -205,6 +287,7 @@ function fire(dx: number, dy: number): number {
   if (shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
   const ball = launch(shell.world, vx, vy, params.projectileMass);
+  renderer.setColor(ball, 0x3d434d);
   shots.push(ball);
   shotsLeft--;
   lastShotTime = shell.world.time;
@@ -238,10 +321,13 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
 }
 
 function draw(world: PhysicsWorld): void {
+  frameCamera(world);
   const cam = renderer.camera,
     sx = (x: number) => cam.toScreenX(x),
     sy = (y: number) => cam.toScreenY(y);
   overlay.clear();
+  // Earth under the ground slab, to the bottom of the screen.
+  overlay.rect(0, sy(-1), cam.width, Math.max(0, cam.height - sy(-1))).fill(EARTH);
   // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
   overlay
     .moveTo(sx(LAUNCH.x - 0.6), sy(0.9))
@@ -321,6 +407,8 @@ shell.expose({
   campaign,
   /** Whether the level on screen is over. */
   levelEnded: (): boolean => levelEnded,
+  /** Whether the camera is at rest (tests aim at the cup once it is). */
+  cameraSettled: (): boolean => cameraSettled,
   /** The level's tally now. */
   tally: (): Tally => tally(shell.world, lv),
   /** Shots left, and the thrown projectiles' handles. */

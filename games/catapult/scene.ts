@@ -57,6 +57,11 @@ export interface Level {
   /** Left and right end of the castle, m (for aiming and framing). */
   castleMinX: number;
   castleMaxX: number;
+  /** Height of the castle's top, m (for framing). */
+  castleTop: number;
+  /** The ground's and the catapult mound's handles (0 before a level is built). */
+  ground: number;
+  mound: number;
 }
 
 /** The world options: 2D, 4 contact substeps, room for the castle and shots. */
@@ -74,16 +79,25 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
   if (!Number.isInteger(o.level) || o.level < 0 || o.level >= LEVEL_COUNT) {
     throw new RangeError(`buildLevel: level must be an integer in [0, ${LEVEL_COUNT}), got ${o.level}`);
   }
-  addBox(world, {
+  const ground = addBox(world, {
     position: [(GROUND.minX + GROUND.maxX) / 2, -0.5],
     halfExtents: [(GROUND.maxX - GROUND.minX) / 2, 0.5],
     static: true,
     friction: 0.9,
   });
   // The catapult's mound (static, under the cup).
-  addBox(world, { position: [LAUNCH.x - 0.4, 0.45], halfExtents: [0.5, 0.45], static: true, friction: 0.9 });
+  const mound = addBox(world, { position: [LAUNCH.x - 0.4, 0.45], halfExtents: [0.5, 0.45], static: true, friction: 0.9 });
   const rng = new Rng(o.seed * 7919 + o.level);
-  const lv: Level = { pieces: [], joints: [], shots: [3, 3, 4, 5][o.level]!, castleMinX: Infinity, castleMaxX: -Infinity };
+  const lv: Level = {
+    pieces: [],
+    joints: [],
+    shots: [3, 3, 4, 5][o.level]!,
+    castleMinX: Infinity,
+    castleMaxX: -Infinity,
+    castleTop: 0,
+    ground,
+    mound,
+  };
   const towers = [1, 2, 3, 4][o.level]!,
     storeys = [2, 2, 3, 4][o.level]!;
   const x0 = [18, 17, 16, 15][o.level]! + rng.range(-1, 1);
@@ -145,6 +159,7 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
     }
     lv.castleMinX = Math.min(lv.castleMinX, cx - span / 2 - 0.2);
     lv.castleMaxX = Math.max(lv.castleMaxX, cx + span / 2 + 0.2);
+    lv.castleTop = Math.max(lv.castleTop, y + 0.6);
     // A bridge plank between neighbouring towers' roofs, welded to both.
     if (t > 0) {
       const prevRoof = lv.pieces.filter((p) => p.kind === 'plank' && Math.abs(p.startY - (y - PLANK.hy)) < 1e-6);

@@ -56,6 +56,8 @@ describe('catapult', () => {
   });
 
   it('a drag back from the cup and release throws a projectile that flies', async () => {
+    // The camera opens on the castle and pans back to the catapult: aim once it is at rest.
+    await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
     const from = await screen(0, 1.5),
       to = await screen(-2, 0.2);
     const before = await g.page.evaluate(() => (window.game as unknown as CatapultGame).shotsLeft());

@@ -133,6 +133,8 @@ describe('phone controls', () => {
 
   it('catapult: a drag from the cup throws; the Next level button goes on when the level is over', async () => {
     const g = await h.openGame('catapult', PHONE);
+    // The camera opens on the castle and pans back to the catapult: aim once it is at rest.
+    await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
     const cup = await g.worldToPage(0, 1.5);
     await touchPath(
       g.page,
