@@ -45,10 +45,11 @@ export interface LevelSpec {
 }
 
 /**
- * The spec of level `level`: level 1 one small hole well away from the straight path up, level 2 two
- * holes with a narrower corridor, level 3 three holes anywhere, from level 4 they drift, from level 5
- * the fuel is limited, and every later level adds a hole (up to MAX_HOLES), makes them bigger (radius
- * up to 2 m), faster (up to 3 m/s) and the tank smaller (down to 4 s).
+ * The spec of level `level`, one new difficulty at a time: level 1 one small hole well away from the
+ * straight path up; levels 2 and 3 two holes with a corridor that narrows (6 m, 3 m); level 4 three
+ * holes anywhere; from level 5 they drift (0.6, then 0.9, 1.2 m/s); level 6 a fourth hole; from level
+ * 7 the fuel is limited (16 s, then 14 s down to 5 s); from level 8 a hole more every second level
+ * (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
  */
 export function levelSpec(level: number): LevelSpec {
@@ -59,14 +60,26 @@ export function levelSpec(level: number): LevelSpec {
     case 1:
       return spec(1, [0.45, 0.6], 9, 0, Infinity);
     case 2:
-      return spec(2, [0.5, 0.9], 5, 0, Infinity);
+      return spec(2, [0.5, 0.8], 6, 0, Infinity);
     case 3:
-      return spec(3, [0.5, 1.2], 0, 0, Infinity);
+      return spec(2, [0.5, 1.0], 3, 0, Infinity);
     case 4:
-      return spec(3, [0.6, 1.3], 0, 1, Infinity);
+      return spec(3, [0.5, 1.1], 0, 0, Infinity);
+    case 5:
+      return spec(3, [0.6, 1.2], 0, 0.6, Infinity);
+    case 6:
+      return spec(4, [0.6, 1.3], 0, 0.9, Infinity);
+    case 7:
+      return spec(4, [0.6, 1.3], 0, 1.2, 16);
     default: {
-      const k = level - 5;
-      return spec(Math.min(MAX_HOLES, 4 + k), [0.6, Math.min(2, 1.4 + 0.1 * k)], 0, Math.min(3, 1.5 + 0.25 * k), Math.max(4, 10 - k));
+      const k = level - 8;
+      return spec(
+        Math.min(MAX_HOLES, 5 + Math.floor(k / 2)),
+        [0.6, Math.min(2, 1.4 + 0.08 * k)],
+        0,
+        Math.min(3, 1.4 + 0.2 * k),
+        Math.max(5, 14 - k),
+      );
     }
   }
 }
