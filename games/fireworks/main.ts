@@ -234,20 +234,30 @@ function drawSkyAndGround(): void {
   if (cam.version === skyVersion) return;
   skyVersion = cam.version;
   sky.clear();
-  // Bands of a night sky, darker upwards.
+  // Bands of a night sky, darker upwards, across the whole canvas (no letterbox: the view's aspect
+  // is the world's, the canvas's is the window's); above the world the darkest band goes on.
   const bands = 12;
+  const bandColor = (i: number): number => {
+    const f = 1 - i / bands;
+    return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
+  };
+  sky.rect(0, 0, cam.width, cam.height).fill(bandColor(bands - 1));
   for (let i = 0; i < bands; i++) {
     const y0 = (SKY.height * i) / bands,
       y1 = (SKY.height * (i + 1)) / bands;
-    const f = 1 - i / bands;
-    const color = (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
-    sky.rect(cam.toScreenX(0), cam.toScreenY(y1), cam.toScreenLength(SKY.width), cam.toScreenLength(y1 - y0) + 1).fill(color);
+    const top = i === bands - 1 ? 0 : cam.toScreenY(y1);
+    sky.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(bandColor(i));
   }
   for (const [x, y, a] of STARS) sky.circle(cam.toScreenX(x), cam.toScreenY(y), 0.8).fill({ color: 0xdfe8ff, alpha: a });
+  // The skyline, held level past the world's ends, and the ground to the canvas's bottom.
   ground.clear();
-  ground.moveTo(cam.toScreenX(0), cam.toScreenY(-20));
+  ground.moveTo(0, cam.height).lineTo(0, cam.toScreenY(SKYLINE[0]!));
   for (let i = 0; i < SKYLINE.length; i++) ground.lineTo(cam.toScreenX((i * SKY.width) / (SKYLINE.length - 1)), cam.toScreenY(SKYLINE[i]!));
-  ground.lineTo(cam.toScreenX(SKY.width), cam.toScreenY(-20)).closePath().fill(0x020306);
+  ground
+    .lineTo(cam.width, cam.toScreenY(SKYLINE[SKYLINE.length - 1]!))
+    .lineTo(cam.width, cam.height)
+    .closePath()
+    .fill(0x020306);
 }
 
 let pointerId = -1;
