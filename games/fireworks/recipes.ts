@@ -110,7 +110,7 @@ export const RECIPES = Object.freeze({
   },
   crossette: {
     name: 'crossette',
-    stars: 0.08,
+    stars: 0.2,
     speed: [0.7, 0.85],
     lifetime: [0.6, 0.8],
     drag: 0.5,
@@ -121,7 +121,7 @@ export const RECIPES = Object.freeze({
   },
   ring: {
     name: 'ring',
-    stars: 0.6,
+    stars: 1,
     speed: [1, 1],
     lifetime: [1.5, 1.9],
     drag: 1,
@@ -132,7 +132,7 @@ export const RECIPES = Object.freeze({
   },
   strobe: {
     name: 'strobe',
-    stars: 0.35,
+    stars: 0.8,
     speed: [0.15, 0.6],
     lifetime: [0.15, 0.3],
     drag: 2,
