@@ -1,6 +1,6 @@
-// The packages' modules form no import cycle, type-only imports included: data (world.ts, components,
+// The packages' modules form no import cycle, type-only imports included: data (world/options.ts, components,
 // the collision, joint and cloth states, stage names) at the bottom, systems above it, and the
-// assembly (create-world.ts, pipeline/stages.ts, index.ts) on top (docs/architecture.md). A cycle
+// assembly (create-world.ts, step/stages.ts, index.ts) on top (docs/architecture.md). A cycle
 // makes every file of it depend on every other, which is what this test refuses.
 
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
@@ -88,8 +88,8 @@ describe('module layering', () => {
     expect(cycles(graph)).toEqual([['a.ts', 'b.ts']]);
   });
 
-  it("the world's data (world.ts) imports no system and no assembly: only types, bitecs and validation", () => {
-    const text = readFileSync(join(root, 'packages/physics/src/world.ts'), 'utf8');
+  it("the world's data (world/options.ts) imports no system and no assembly: only types, bitecs and validation", () => {
+    const text = readFileSync(join(root, 'packages/physics/src/world/options.ts'), 'utf8');
     const valueImports = [...text.matchAll(/^import\s+(?!type\b)[^;]*?from\s+['"]([^'"]+)['"]/gms)].map((m) => m[1]);
     expect(valueImports.sort()).toEqual(['./validate.js', 'bitecs']);
   });

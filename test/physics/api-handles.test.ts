@@ -20,7 +20,7 @@ import { describe, expect, test } from 'vitest';
 
 /**
  * Generational handles in the 2D shape API, compounds, ropes and cloth (issue 33). The reference is the
- * handle contract of handles.ts: a live entity's handle is accepted whatever its slot's history, a removed
+ * handle contract of world/handles.ts: a live entity's handle is accepted whatever its slot's history, a removed
  * entity's handle is refused with "refers to a removed entity", and every entity the API reports is alive.
  */
 

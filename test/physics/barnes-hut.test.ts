@@ -24,7 +24,7 @@ import {
 import { describe, expect, test } from 'vitest';
 
 /**
- * Barnes-Hut mutual gravity (packages/physics/src/forces/barnes-hut.ts) against the direct sum.
+ * Barnes-Hut mutual gravity (packages/physics/src/forces/barnes-hut/tree.ts) against the direct sum.
  * Errors are relative field errors |a_tree - a_direct| / |a_direct| per body, summarised over an
  * evenly spaced sample of bodies (fractions: 0.01 = 1%).
  */

@@ -1,9 +1,9 @@
 import { addBody, addSegment, createPhysicsWorld, disposeWorld, type PhysicsWorld, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { broadphaseSystem, DENSE_MIN_BODIES, PairKind } from '../../packages/physics/src/collision/broadphase.js';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { broadphaseSystem, DENSE_MIN_BODIES, PairKind } from '../../packages/physics/src/collision/broadphase/grid.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 
-// The broadphase's two grids (collision/broadphase.ts): a dense grid in space order for a large,
+// The broadphase's two grids (collision/broadphase/grid.ts): a dense grid in space order for a large,
 // compact world, the spatial hash otherwise. Whichever runs, the pairs must be exactly those a brute-
 // force test of every pair of balls finds (within reach: radius + margin each, at the start-of-step
 // positions; tolerance zero, the same comparison), each once; oversized balls (found by range

@@ -4,7 +4,7 @@ import { describe, expect, test } from 'vitest';
 
 /**
  * Lengths that scale (issue 13): small balls squash no more than big ones, because the solver takes
- * the substeps their contact stiffness needs (collision/contact-scale.ts).
+ * the substeps their contact stiffness needs (solver/contact-scale.ts).
  */
 describe('contact scale', () => {
   /**

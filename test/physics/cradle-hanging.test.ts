@@ -15,7 +15,7 @@ import { buildCradle, cradleWorldOptions, liftBalls } from '../../games/lab-newt
  * period T/4 = K(sin(a/2)) sqrt(L/g) (K the complete elliptic integral of the first kind), so the first
  * touch falls at a different phase of the 1/120 s substep for each angle; the test checks that these
  * phases cover the substep (no gap wider than 0.1 of it), so a fix that works only when the touch
- * falls at a step's start cannot pass. Before the fix (packages/physics/src/collision/impacts.ts:
+ * falls at a step's start cannot pass. Before the fix (packages/physics/src/solver/impacts.ts:
  * carriesLoad, ballsMeet, and the spare gap in worlds with joints) the impact stage took the touching
  * balls for resting (a rounding-level contact load, a rounding-level approach of the lifted balls) at
  * some angles and left the chain to the soft substeps: with two or three lifted, 3 and 2 of these 41

@@ -19,8 +19,8 @@ import {
 import { addEntity, query, removeEntity } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 
-// Stores a world never uses are never allocated (components.ts), and bitecs' bookkeeping is kept in
-// typed arrays (lean-ecs.ts). The references here are independent of that code: the documented
+// Stores a world never uses are never allocated (world/components.ts), and bitecs' bookkeeping is kept in
+// typed arrays (world/lean-ecs.ts). The references here are independent of that code: the documented
 // defaults, a brute-force membership check over every entity, and a world that never took the lazy path.
 
 const allocated = (store: object, capacity: number): boolean[] =>

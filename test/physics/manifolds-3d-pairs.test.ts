@@ -1,11 +1,11 @@
 import { addBody, addShape3D, createPhysicsWorld, forEachContact3D, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
+import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds-3d.js';
 import { pairContacts } from './helpers.js';
 
 /**
  * Resting contact and head-on hits of the 3D pairs that go through their own manifold code
- * (packages/physics/src/collision/manifolds3d.ts): capsule-capsule (segment-segment), capsule-box
+ * (packages/physics/src/collision/narrowphase/manifold-3d.ts): capsule-capsule (segment-segment), capsule-box
  * (capsule-polyhedron) and hull-hull (separating axes and face clipping). Each resting case is checked
  * against its geometry (the rest height of the touching surfaces and the manifold's point count), each
  * hit against conservation of linear momentum.

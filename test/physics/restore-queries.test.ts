@@ -17,7 +17,7 @@ import {
   stepMany,
 } from '@bitphysics/physics';
 import { expect, test } from 'vitest';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 
 // A query made right after `restore`, before any step, must see the restored world: the same answers,
 // to the bit, as the same queries made on the world when the snapshot was taken. Between the two the

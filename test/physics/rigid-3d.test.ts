@@ -1,6 +1,6 @@
 import { addBody, addPlane, addShape3D, createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds3d-state.js';
+import { contact3DStateOf } from '../../packages/physics/src/collision/manifolds-3d.js';
 
 const G = 9.81;
 

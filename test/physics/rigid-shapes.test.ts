@@ -1,5 +1,4 @@
 import { describe, expect, it } from 'vitest';
-import { slotOf } from '../../packages/physics/src/handles.js';
 import {
   addBody,
   addBox,
@@ -11,6 +10,7 @@ import {
   shapesOf,
   step,
 } from '../../packages/physics/src/index.js';
+import { slotOf } from '../../packages/physics/src/world/handles.js';
 
 const G = 9.81;
 

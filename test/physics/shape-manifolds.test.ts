@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { collideHalfPlane, collideShapes, createManifold } from '../../packages/physics/src/collision/manifold.js';
-import { makeBox, makeCapsule, makeCircle, makePolygon } from '../../packages/physics/src/shapes/geometry.js';
-import { shapeMassProperties } from '../../packages/physics/src/shapes/mass.js';
+import { collideHalfPlane, collideShapes, createManifold } from '../../packages/physics/src/collision/narrowphase/manifold-2d.js';
+import { makeBox, makeCapsule, makeCircle, makePolygon } from '../../packages/physics/src/shapes/geometry-2d.js';
+import { shapeMassProperties } from '../../packages/physics/src/shapes/mass-2d.js';
 
 // Hand-computed cases. Positions and separations are exact sums of the inputs, so 1e-12 allows
 // only rounding.

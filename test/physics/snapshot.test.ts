@@ -91,7 +91,7 @@ describe('snapshot and restore', () => {
 
   test('query lists changed between two snapshots (same lengths, new order) are captured as they are now', () => {
     // The second snapshot may reuse the first one's finding that two lists are equal only if neither
-    // changed (lean-ecs.ts versions): here one list is reordered without changing its length, and
+    // changed (world/lean-ecs.ts versions): here one list is reordered without changing its length, and
     // another gains and loses members, so a stale finding would restore the old order.
     const world = createPhysicsWorld({ capacity: 16 });
     const C = world.components;
@@ -281,19 +281,19 @@ describe('snapshot captures every piece of state', () => {
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
     // integrators/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
     // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
-    // collision/solver.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
+    // solver/contact-solver.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
     // before each use) and its kernel's argument list.
-    // collision/solver-stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
+    // solver/stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
     // and one deepest-overlap slot a thread, all written before each parallel run.
     // collision/contact-events.ts: the lists contactEvents returns, rewritten in full from the collision
     // state's event lists (which snapshots carry) at every call.
     const scratch = new Set([
-      'pipeline/step.ts',
+      'step/step.ts',
       'forces/gravity.ts',
       'integrators/fused-state.ts',
       'snapshot/snapshot.ts',
-      'collision/solver.ts',
-      'collision/solver-stages-threads.ts',
+      'solver/contact-solver.ts',
+      'solver/stages-threads.ts',
       'collision/contact-events.ts',
     ]);
     const root = join(__dirname, '../../packages/physics/src');

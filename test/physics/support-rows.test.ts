@@ -7,7 +7,7 @@ import { describe, expect, test } from 'vitest';
  * A frictionless stack between walls is in static equilibrium, so after settling its balls must stand
  * still: every ball slower than a small fraction of sqrt(g r), the speed a ball gains falling half a
  * radius. With the stiff contacts of issue 13 such columns boiled (their relax sweep could not take the
- * push-out speed out of a tall chain); the relax sweep's support rows (collision/support.ts) fix that.
+ * push-out speed out of a tall chain); the relax sweep's support rows (solver/support.ts) fix that.
  * Sleep is off, so the speeds are the solver's own, not a sleeping pile's zeros.
  *
  * Reference figures, fastest ball over the last 100 steps in sqrt(g r) (sleep off, this file's scenes):

@@ -1,8 +1,8 @@
 import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
-import { stageThreading } from '../../packages/physics/src/collision/solver-stages-threads.js';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
+import { lastColorCount } from '../../packages/physics/src/solver/coloring.js';
+import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { BALANCE_MIN_PER_THREAD, RangeBalance } from '../../packages/physics/src/threads/balance.js';
 
 // A pool cuts a loop into ranges by shares it learns from when each thread finished (threads/balance.ts).

@@ -1,10 +1,10 @@
 import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase.js';
-import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase-pairs.js';
-import { query } from '../../packages/physics/src/query.js';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase/grid.js';
+import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase/grid-pairs.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { query } from '../../packages/physics/src/world/query.js';
 
 // The broadphase's cell pass and the narrowphase's ball-ball contacts on the world's threads: each
 // thread handles a range (of the grid, of the pairs), and the ranges are appended in order, so the

@@ -1,13 +1,13 @@
 import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { coloringConflicts, lastColorCount } from '../../packages/physics/src/collision/contact-colors.js';
-import { stripCut2D } from '../../packages/physics/src/collision/contact-strips-kernel.js';
-import { impactChangedRows } from '../../packages/physics/src/collision/impacts.js';
-import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/collision/solver.js';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
+import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
+import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/contact-solver.js';
+import { impactChangedRows } from '../../packages/physics/src/solver/impacts.js';
+import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
-// The 2D ball contacts solved by graph colouring on the world's threads (collision/contact-colors.ts).
+// The 2D ball contacts solved by graph colouring on the world's threads (solver/coloring.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a
 // result: the state must be identical to the bit (stateHash, tolerance zero) run after run, on 2 and 3
 // threads, and on an adaptive pool that runs some steps on one thread. The impulse order is not the

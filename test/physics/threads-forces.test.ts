@@ -22,9 +22,9 @@ import {
   worldTree,
 } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut.js';
-import { stageNeedsCheck } from '../../packages/physics/src/pipeline/finite.js';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut/tree.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
+import { stageNeedsCheck } from '../../packages/physics/src/step/finite.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
 

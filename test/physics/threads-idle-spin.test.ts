@@ -1,6 +1,6 @@
 import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.js';
 
 // An idle worker watches for the next run for `idleSpin` microseconds before it blocks (threads/pool.ts,

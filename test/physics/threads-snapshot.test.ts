@@ -18,7 +18,7 @@ import {
 } from '@bitphysics/physics';
 import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 
 // The reference for snapshots across thread counts is the world the snapshot was taken from: the
 // engine runs each body's arithmetic the same on any thread count (threads.test.ts), so a restored

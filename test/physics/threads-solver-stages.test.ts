@@ -1,10 +1,10 @@
 import { createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
-import { stageThreading } from '../../packages/physics/src/collision/solver-stages-threads.js';
+import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // The contact solver's stages beside the coloured substeps on the world's threads
-// (collision/solver-stages-threads.ts): the solver rows' fill, measureApproach and finishBodies do each
+// (solver/stages-threads.ts): the solver rows' fill, measureApproach and finishBodies do each
 // body's or row's one-thread arithmetic, so the state must equal threads: 1 to the bit (stateHash,
 // tolerance zero); the restitution stage after a coloured solve goes colour by colour, so its state
 // must be the same on 2 threads run twice, on 3 threads and on an adaptive pool (tolerance zero), and,

@@ -17,7 +17,7 @@ import {
 import { addComponent, removeEntity } from 'bitecs';
 import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
-import { Rng } from '../../packages/physics/src/rng.js';
+import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
 

@@ -1,25 +1,24 @@
 /**
- * Assembly, the top of the physics package: `createPhysicsWorld` builds a world's data (world.ts,
- * components.ts, the collision, joint and cloth states) and installs the default pipeline
- * (pipeline/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
+ * Assembly, the top of the physics package: `createPhysicsWorld` builds a world's data (world/options.ts,
+ * world/components.ts, the collision, joint and cloth states) and installs the default pipeline
+ * (step/stages.ts), the removal hooks and the component defaults. Data sits at the bottom,
  * systems above it, and this file on top: nothing below imports it.
  */
 import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
 import { createClothState } from './cloth/state.js';
-import { wakeTouching } from './collision/sleep.js';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
-import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './components.js';
 import { createForceLawSettings } from './forces/settings.js';
 import { removeSpringsOf } from './forces/spring.js';
 import { INTEGRATOR_NAMES } from './integrators/names.js';
+import { wakeTouching } from './islands/sleep.js';
 import { removeJointsOf } from './joints/remove.js';
-import { createJointState } from './joints/state.js';
-import { useLeanEcsStorage } from './lean-ecs.js';
-import { createStages, STAGES } from './pipeline/stages.js';
-import { Rng } from './rng.js';
+import { createJointState } from './joints/state-2d.js';
+import { Rng } from './math/rng.js';
+import { createStages, STAGES } from './step/stages.js';
 import { createThreadPool } from './threads/pool.js';
 import { shareStores } from './threads/shared-stores.js';
-import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './validate.js';
+import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
+import { useLeanEcsStorage } from './world/lean-ecs.js';
 import {
   addComponentIfMissing,
   assertTimeStep,
@@ -29,7 +28,8 @@ import {
   type PhysicsWorldOptions,
   registerForceLaw,
   type StageTimings,
-} from './world.js';
+} from './world/options.js';
+import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './world/validate.js';
 
 const KNOWN_OPTIONS = [
   'dimensions',

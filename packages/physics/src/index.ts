@@ -11,7 +11,7 @@
  * bitecs is a peer dependency: the project and every bitphysics package share one copy.
  */
 export { addComponent, entityExists, getEntityComponents, hasComponent, removeComponent } from 'bitecs';
-export type { BodyOptions, BoundaryOptions, MaterialOptions, ParticleOptions, SegmentOptions } from './bodies.js';
+export type { BodyOptions, BoundaryOptions, MaterialOptions, ParticleOptions, SegmentOptions } from './bodies/api.js';
 export {
   addBody,
   addParticle,
@@ -30,7 +30,23 @@ export {
   setRadius,
   setTimeStep,
   setVelocity,
-} from './bodies.js';
+} from './bodies/api.js';
+export type { PlaneOptions } from './bodies/rigid.js';
+export {
+  addPlane,
+  applyForceAtPoint,
+  applyImpulseAtPoint,
+  inertiaOfDisc,
+  inertiaOfRectangle,
+  inertiaOfSolidBox,
+  inertiaOfSolidCylinder,
+  inertiaOfSolidSphere,
+  inertiaOfSphericalShell,
+  setAngularDamping,
+  setInertia,
+  spinAngularMomentum,
+  spinKineticEnergy,
+} from './bodies/rigid.js';
 export type { Cloth, ClothOptions } from './cloth/create.js';
 export { clothPointIndex, createCloth } from './cloth/create.js';
 export { pinClothPoint } from './cloth/pin.js';
@@ -38,41 +54,24 @@ export { clothSystem } from './cloth/solver.js';
 export type { ClothState } from './cloth/state.js';
 export type { ClothLinkStore } from './cloth/store.js';
 export { ClothLinkKind } from './cloth/store.js';
-export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase.js';
+export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase/grid.js';
 export type { ContactEventList, ContactEventLists } from './collision/contact-events.js';
 export { contactEvents, HIT_SPEED } from './collision/contact-events.js';
-export { CONTACT_LENGTH_UNIT, contactLength, MAX_AUTO_SUBSTEPS, solverSubstepsFor } from './collision/contact-scale.js';
 export type { ContactBuffer, ContactView } from './collision/contacts.js';
 export { ContactKind, forEachContact } from './collision/contacts.js';
-export type { Contact3DView } from './collision/contacts3d-view.js';
-export { forEachContact3D } from './collision/contacts3d-view.js';
-export type { Manifold } from './collision/manifold.js';
-export { collideCircles, collideHalfPlane, collideShapes, createManifold, segmentFractions } from './collision/manifold.js';
-export { contactEvents3D } from './collision/manifold3d-solver.js';
-export type { ContactEvents, EventList, ManifoldBuffer, ShapeCollisionState } from './collision/manifolds.js';
-export type { ContactEvents3D, EventList3D } from './collision/manifolds3d-state.js';
-export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './collision/mesh3d.js';
-export { addHeightField3D, addTriangleMesh3D, MAX_HEIGHT_FIELD_POINTS, meshesOf } from './collision/mesh3d.js';
-export { currentSeparation, narrowphaseSystem } from './collision/narrowphase.js';
-export { shapeCollisionSystem } from './collision/shape-collision.js';
-export type { RayHit } from './collision/shape-queries.js';
-export { overlapAABB, overlapPoint, rayCast, rayCastAll } from './collision/shape-queries.js';
-export type { RayHit3D } from './collision/shape3d-queries.js';
-export { overlapAABB3D, overlapPoint3D, rayCast3D, rayCastAll3D } from './collision/shape3d-queries.js';
-export { isSleeping, sleepSystem, wakeAll, wakeBody, wakeSystem } from './collision/sleep.js';
-export { contactSolverSystem } from './collision/solver.js';
+export type { Contact3DView } from './collision/contacts-3d-view.js';
+export { forEachContact3D } from './collision/contacts-3d-view.js';
+export type { ContactEvents, EventList, ManifoldBuffer, ShapeCollisionState } from './collision/manifolds-2d.js';
+export type { ContactEvents3D, EventList3D } from './collision/manifolds-3d.js';
+export { currentSeparation, narrowphaseSystem } from './collision/narrowphase/balls.js';
+export type { Manifold } from './collision/narrowphase/manifold-2d.js';
+export { collideCircles, collideHalfPlane, collideShapes, createManifold, segmentFractions } from './collision/narrowphase/manifold-2d.js';
+export type { RayHit } from './collision/queries-2d.js';
+export { overlapAABB, overlapPoint, rayCast, rayCastAll } from './collision/queries-2d.js';
+export type { RayHit3D } from './collision/queries-3d.js';
+export { overlapAABB3D, overlapPoint3D, rayCast3D, rayCastAll3D } from './collision/queries-3d.js';
+export { shapeCollisionSystem } from './collision/shapes-2d.js';
 export type { Boundary, CollisionSettings, CollisionState, SleepState } from './collision/state.js';
-export type { Components, Vec3Store } from './components.js';
-export {
-  createComponents,
-  DEFAULT_MATERIAL,
-  DEFAULT_RADIUS,
-  LAZY_COMPONENTS,
-  LAZY_GROUPS,
-  materializeGroup,
-  materializeStore,
-  storesAllocatedWith,
-} from './components.js';
 export { createPhysicsWorld } from './create-world.js';
 export {
   angularMomentum,
@@ -91,7 +90,6 @@ export {
 } from './diagnostics/energy.js';
 export type { Quantity, Recorder, RecorderOptions } from './diagnostics/recorder.js';
 export { createRecorder } from './diagnostics/recorder.js';
-export { NonFiniteStateError } from './errors.js';
 export { angularDampingSystem } from './forces/angular-damping.js';
 export type { BuoyancyOptions, FieldOptions, FluidRegionOptions, SpringOptions, SpringSettings } from './forces/api.js';
 export {
@@ -118,7 +116,7 @@ export {
 } from './forces/api.js';
 export type { BallastOptions } from './forces/ballast.js';
 export { ballastFillSystem, ballastTrimSystem, setBallast, setBallastTarget } from './forces/ballast.js';
-export type { GravityTree } from './forces/barnes-hut.js';
+export type { GravityTree } from './forces/barnes-hut/tree.js';
 export {
   barnesHutGravity,
   buildTree,
@@ -127,7 +125,7 @@ export {
   treeFieldsSorted,
   worldTree,
   worldTreeFields,
-} from './forces/barnes-hut.js';
+} from './forces/barnes-hut/tree.js';
 export { bodyThrustSystem, setBodyThrust } from './forces/body-thrust.js';
 export { centralForceSystem } from './forces/central.js';
 export { clearForcesSystem } from './forces/clear.js';
@@ -163,17 +161,12 @@ export { COULOMB_SI, G_SI, MAX_WIND_MODES } from './forces/settings.js';
 export { springSystem } from './forces/spring.js';
 export { burnFuelSystem, thrustSystem } from './forces/thrust.js';
 export { vortexSystem } from './forces/vortex.js';
-export type { EntityKind } from './handles.js';
-/**
- * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
- * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
- */
-export { handleOf, isAlive, resolveEntity, SLOT_RANGE, slotOf } from './handles.js';
 export { eulerAcceleration } from './integrators/euler-equations.js';
 export type { Integrator } from './integrators/integrate.js';
 export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
 export type { IntegratorName } from './integrators/names.js';
 export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names.js';
+export { isSleeping, sleepSystem, wakeAll, wakeBody, wakeSystem } from './islands/sleep.js';
 export type {
   DistanceJointOptions,
   JointBaseOptions,
@@ -182,7 +175,7 @@ export type {
   RevoluteJointOptions,
   WeldJointOptions,
   WheelJointOptions,
-} from './joints/api.js';
+} from './joints/api-2d.js';
 export {
   addDistanceJoint,
   addMouseJoint,
@@ -199,12 +192,7 @@ export {
   setJointMotor,
   setJointSpring,
   setMouseTarget,
-} from './joints/api.js';
-export type { Rope, RopeOptions } from './joints/rope.js';
-export { createRope } from './joints/rope.js';
-export type { JointBreakEvents, JointSettings, JointState } from './joints/state.js';
-export type { JointStore, JointTypeCode } from './joints/store.js';
-export { JOINT_TYPE_NAMES, JointFlag, JointType } from './joints/store.js';
+} from './joints/api-2d.js';
 export type {
   BallJoint3DOptions,
   DistanceJoint3DOptions,
@@ -212,7 +200,7 @@ export type {
   HingeJoint3DOptions,
   Joint3DBaseOptions,
   SliderJoint3DOptions,
-} from './joints3d/api.js';
+} from './joints/api-3d.js';
 export {
   addBallJoint3D,
   addDistanceJoint3D,
@@ -227,10 +215,16 @@ export {
   setJoint3DBreak,
   setJoint3DLimits,
   setJoint3DMotor,
-} from './joints3d/api.js';
-export type { Joint3DStore } from './joints3d/store.js';
-export { Joint3DFlag, Joint3DType, joints3DOf } from './joints3d/store.js';
+} from './joints/api-3d.js';
+export type { Rope, RopeOptions } from './joints/rope.js';
+export { createRope } from './joints/rope.js';
+export type { JointBreakEvents, JointSettings, JointState } from './joints/state-2d.js';
+export type { JointStore, JointTypeCode } from './joints/store-2d.js';
+export { JOINT_TYPE_NAMES, JointFlag, JointType } from './joints/store-2d.js';
+export type { Joint3DStore } from './joints/store-3d.js';
+export { Joint3DFlag, Joint3DType, joints3DOf } from './joints/store-3d.js';
 export { rotateFrom, rotateInPlace, rotateVector, rotateVectorInverse } from './math/quaternion.js';
+export { Rng } from './math/rng.js';
 export type { BulkParticleOptions } from './particles/bulk.js';
 export { addParticles } from './particles/bulk.js';
 export type { EmittedParticleOptions, EmitterOptions, ParticleBirthHook, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
@@ -252,52 +246,58 @@ export {
   setEmitterEnabled,
   setEmitterRate,
 } from './particles/emitter.js';
-export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './pipeline/loop.js';
-export { createFixedStepLoop } from './pipeline/loop.js';
-export type { StageName, System } from './pipeline/stages.js';
-export { PIPELINE, STAGES, SUBSTEP_STAGES } from './pipeline/stages.js';
-export type { AddSystemOptions } from './pipeline/step.js';
-export { addSystem, evaluateForces, removeSystem, step, stepMany } from './pipeline/step.js';
-export { Not, query } from './query.js';
-export type { PlaneOptions } from './rigid.js';
-export {
-  addPlane,
-  applyForceAtPoint,
-  applyImpulseAtPoint,
-  inertiaOfDisc,
-  inertiaOfRectangle,
-  inertiaOfSolidBox,
-  inertiaOfSolidCylinder,
-  inertiaOfSolidSphere,
-  inertiaOfSphericalShell,
-  setAngularDamping,
-  setInertia,
-  spinAngularMomentum,
-  spinKineticEnergy,
-} from './rigid.js';
-export { Rng } from './rng.js';
 export * from './scenes/index.js';
-export type { BoxOptions, ShapeOptions } from './shapes/api.js';
-export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api.js';
-export type { ConvexGeometry } from './shapes/geometry.js';
-export { MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon, ShapeKind } from './shapes/geometry.js';
-export type { MassProperties } from './shapes/mass.js';
-export { shapeMassProperties } from './shapes/mass.js';
-export type { ShapeStore } from './shapes/store.js';
-export type { Shape3DOptions } from './shapes3d/api.js';
-export { addShape3D, hullOfShape3D, shapes3DOfBody, updateMassFromShapes3D } from './shapes3d/api.js';
-export type { Hull } from './shapes3d/hull.js';
-export { MAX_HULL_INPUT, MAX_HULL_VERTICES, quickhull } from './shapes3d/hull.js';
-export type { MassProperties3D } from './shapes3d/mass.js';
-export { boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, principalAxes, sphereMass } from './shapes3d/mass.js';
-export type { Shape3DStore } from './shapes3d/store.js';
-export { Shape3DKind, shapes3DOf } from './shapes3d/store.js';
+export type { BoxOptions, ShapeOptions } from './shapes/api-2d.js';
+export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api-2d.js';
+export type { Shape3DOptions } from './shapes/api-3d.js';
+export { addShape3D, hullOfShape3D, shapes3DOfBody, updateMassFromShapes3D } from './shapes/api-3d.js';
+export type { ConvexGeometry } from './shapes/geometry-2d.js';
+export { MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon, ShapeKind } from './shapes/geometry-2d.js';
+export type { Hull } from './shapes/hull-3d.js';
+export { MAX_HULL_INPUT, MAX_HULL_VERTICES, quickhull } from './shapes/hull-3d.js';
+export type { MassProperties } from './shapes/mass-2d.js';
+export { shapeMassProperties } from './shapes/mass-2d.js';
+export type { MassProperties3D } from './shapes/mass-3d.js';
+export { boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, principalAxes, sphereMass } from './shapes/mass-3d.js';
+export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './shapes/mesh-3d.js';
+export { addHeightField3D, addTriangleMesh3D, MAX_HEIGHT_FIELD_POINTS, meshesOf } from './shapes/mesh-3d.js';
+export type { ShapeStore } from './shapes/store-2d.js';
+export type { Shape3DStore } from './shapes/store-3d.js';
+export { Shape3DKind, shapes3DOf } from './shapes/store-3d.js';
 export { stateHash } from './snapshot/hash.js';
 export type { InputEvent, InputHandlers, InputRecorder, Replay, ReplayOptions, ReplayPlayer } from './snapshot/replay.js';
 export { createInputRecorder, createReplayPlayer, playReplay } from './snapshot/replay.js';
 export type { Encoded, SnapshotHeader, WorldSnapshot } from './snapshot/snapshot.js';
 /** Snapshots (save, load, rewind, rollback) and a state fingerprint for determinism checks. */
 export { restore, snapshot } from './snapshot/snapshot.js';
+export { CONTACT_LENGTH_UNIT, contactLength, MAX_AUTO_SUBSTEPS, solverSubstepsFor } from './solver/contact-scale.js';
+export { contactSolverSystem } from './solver/contact-solver.js';
+export { contactEvents3D } from './solver/manifold-rows-3d.js';
+export type { FixedStepLoop, FixedStepLoopOptions, FrameResult } from './step/loop.js';
+export { createFixedStepLoop } from './step/loop.js';
+export type { StageName, System } from './step/stages.js';
+export { PIPELINE, STAGES, SUBSTEP_STAGES } from './step/stages.js';
+export type { AddSystemOptions } from './step/step.js';
+export { addSystem, evaluateForces, removeSystem, step, stepMany } from './step/step.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
-export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world.js';
-export { addComponentIfMissing, disposeWorld, MAX_CAPACITY, MAX_TIME_STEP, registerForceLaw, threadsReady } from './world.js';
+export type { Components, Vec3Store } from './world/components.js';
+export {
+  createComponents,
+  DEFAULT_MATERIAL,
+  DEFAULT_RADIUS,
+  LAZY_COMPONENTS,
+  LAZY_GROUPS,
+  materializeGroup,
+  materializeStore,
+  storesAllocatedWith,
+} from './world/components.js';
+export { NonFiniteStateError } from './world/errors.js';
+export type { EntityKind } from './world/handles.js';
+/**
+ * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
+ * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
+ */
+export { handleOf, isAlive, resolveEntity, SLOT_RANGE, slotOf } from './world/handles.js';
+export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world/options.js';
+export { addComponentIfMissing, disposeWorld, MAX_CAPACITY, MAX_TIME_STEP, registerForceLaw, threadsReady } from './world/options.js';
+export { Not, query } from './world/query.js';

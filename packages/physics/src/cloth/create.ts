@@ -1,9 +1,17 @@
 import { addComponent } from 'bitecs';
-import { addBodyAs, createSlot, removeBody } from '../bodies.js';
-import { currentHandle, isAlive, slotOf } from '../handles.js';
-import { ensureJointArrays } from '../joints/state.js';
-import { assertFinite, assertInteger, assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
+import { ensureJointArrays } from '../joints/state-2d.js';
+import { currentHandle, isAlive, slotOf } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import {
+  assertFinite,
+  assertInteger,
+  assertNonNegative,
+  assertOptions,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../world/validate.js';
 import { ClothLinkKind } from './store.js';
 
 /**
@@ -40,7 +48,7 @@ export interface ClothOptions {
  * @category Cloth
  */
 export interface Cloth {
-  /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. Float64Array: a handle needs up to 53 bits (handles.ts). */
+  /** Point bodies' handles, row-major from the top-left: point (row, column) is points[row * columns + column]. Float64Array: a handle needs up to 53 bits (world/handles.ts). */
   readonly points: Float64Array;
   /** Link entities' handles: structural first, then shear, then bending. */
   readonly links: Float64Array;

@@ -1,7 +1,7 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
-import { resolveKind } from '../handles.js';
-import { assertVector } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertVector } from '../world/validate.js';
 
 /**
  * Holds a cloth point (or any dynamic body) fixed at `position` (m), or with `position` null lets it go

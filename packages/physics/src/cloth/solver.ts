@@ -1,9 +1,9 @@
 import { removeEntity } from 'bitecs';
-import type { Components } from '../components.js';
-import { currentHandle } from '../handles.js';
-import { pushBreak } from '../joints/state.js';
-import { query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import { pushBreak } from '../joints/state-2d.js';
+import type { Components } from '../world/components.js';
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import type { ClothState } from './state.js';
 
 /**

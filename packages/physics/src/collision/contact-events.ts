@@ -1,15 +1,15 @@
 /**
  * `contactEvents(world)`: the contact and sensor events of the last step, 2D or 3D, in one shape of
  * list, with the normal impulse each new contact carried. A view built from the collision state's own
- * lists (manifolds.ts in 2D, manifolds3d-state.ts in 3D) and the step's manifolds.
+ * lists (collision/manifolds-2d.ts in 2D, collision/manifolds-3d.ts in 3D) and the step's manifolds.
  */
 
-import { slotOf } from '../handles.js';
-import { assertNonNegative } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import type { EventList } from './manifolds.js';
-import { findPrevious } from './manifolds.js';
-import { contact3DStateOf, type EventList3D } from './manifolds3d-state.js';
+import { slotOf } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertNonNegative } from '../world/validate.js';
+import type { EventList } from './manifolds-2d.js';
+import { findPrevious } from './manifolds-2d.js';
+import { contact3DStateOf, type EventList3D } from './manifolds-3d.js';
 
 /**
  * Approach speed above which a begin event is also a hit event, m/s: Box2D v3's default

@@ -11,8 +11,8 @@
  * contacts with the boundary box, static segments and static balls.
  */
 
+import { warmStartTable } from '../solver/warm-start-kernel.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { warmStartTable } from './warm-start-kernel.js';
 
 /**
  * What body A of a contact is:
@@ -229,7 +229,7 @@ function hashKey(kind: number, a: number, b: number, f: number): number {
  * Makes `cache.slots` hold a warm-start table for `n` rows (>= 0): the least power of two slots, at
  * least 16, that is at least 2n, kept when the present table is large enough; on a SharedArrayBuffer
  * when `shared` (a worker builds it) or when it is already there. Its contents are left to the build
- * (warm-start-kernel.ts warmStartTable zeroes them).
+ * (solver/warm-start-kernel.ts warmStartTable zeroes them).
  * @category Collision
  */
 export function reserveWarmStartTable(cache: WarmStartCache, n: number, shared: boolean): void {
@@ -329,7 +329,7 @@ export interface ContactView {
   impulse: number;
   /**
    * Separation along the normal at the start of the step, m (negative: overlap); for a body the impact
-   * stage moved, from where its end-position correction puts its start (see impacts.ts).
+   * stage moved, from where its end-position correction puts its start (see solver/impacts.ts).
    */
   separation: number;
 }

@@ -1,8 +1,8 @@
 /** Contact and sensor events: appending a begin/end touch event with the entities' current handles. */
 
-import { currentHandle } from '../handles.js';
-import type { PhysicsWorld } from '../world.js';
-import type { EventList } from './manifolds.js';
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import type { EventList } from './manifolds-2d.js';
 
 function handle(world: PhysicsWorld, e: number): number {
   return e > 0 ? currentHandle(world, e) : e;

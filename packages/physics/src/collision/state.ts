@@ -1,5 +1,5 @@
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
-import { createShapeCollisionState, type ShapeCollisionState } from './manifolds.js';
+import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
 
 /**
  * Body type codes kept in `CollisionState.bodyType` for the bodies of the current step. A sleeping
@@ -33,7 +33,7 @@ export interface CollisionSettings {
    * Whether a step whose ball contacts are small takes more solver substeps than `solverSubsteps`, so
    * their stiffness f = contactHertz sqrt(1 m / r) fits the substep rate: ceil(dt f / 0.6) substeps
    * (2 cm balls at dt 1/60: f = 424 Hz, 11.8 -> 12; 10 cm: 6; 17.4 cm and up: the 4 set; see
-   * contact-scale.ts `solverSubstepsFor`, at most 16). false: exactly `solverSubsteps`. Default true.
+   * solver/contact-scale.ts `solverSubstepsFor`, at most 16). false: exactly `solverSubsteps`. Default true.
    */
   autoSubsteps: boolean;
   /** Sequential-impulse passes with soft bias per solver substep, integer >= 1. Default 1. */
@@ -54,7 +54,7 @@ export interface CollisionSettings {
    */
   elasticRestitutionThreshold: number;
   /**
-   * Passes of the impact stage over the bouncing contacts (see impacts.ts), integer >= 1. Default 8.
+   * Passes of the impact stage over the bouncing contacts (see solver/impacts.ts), integer >= 1. Default 8.
    * A chain of impacts in the order of their times needs one pass; more resolve impacts that come
    * back around within one step (balls packed close together).
    */
@@ -65,19 +65,19 @@ export interface CollisionSettings {
    * Stiffness of contact softness, Hz, > 0, for balls of radius 1 m (`CONTACT_LENGTH_UNIT`); a step's
    * ball contacts use contactHertz sqrt(1 m / r) for the smallest radius r among them, capped at the
    * substep rate (which `autoSubsteps` raises to fit it), so small balls squash no more than big ones
-   * (see contact-scale.ts). Default 60 Hz (Box2D v3 uses 30 Hz for every size).
+   * (see solver/contact-scale.ts). Default 60 Hz (Box2D v3 uses 30 Hz for every size).
    */
   contactHertz: number;
   /** Damping ratio of contact softness, dimensionless. Default 10 (heavily overdamped: no bounce from push-out). */
   contactDampingRatio: number;
   /**
    * Fastest speed at which overlapping bodies are pushed apart, m/s, for balls of radius 1 m; ball
-   * contacts scale it by sqrt(r / 1 m) (see contact-scale.ts). Default 3 m/s.
+   * contacts scale it by sqrt(r / 1 m) (see solver/contact-scale.ts). Default 3 m/s.
    */
   contactPushSpeed: number;
   /**
    * Fewest ball contact rows for a 2D world with threads (`threads: n > 1`) to solve its contacts by
-   * graph colouring on the threads (collision/contact-colors.ts), integer >= 0. Default 16384. The
+   * graph colouring on the threads (solver/coloring.ts), integer >= 0. Default 16384. The
    * coloured solve applies impulses colour by colour instead of in the one-thread order, so such a
    * world's trajectory differs from the one-thread world's; it is the same for every n > 1.
    * Infinity keeps the one-thread order (and its results to the bit) at any size.
@@ -87,13 +87,13 @@ export interface CollisionSettings {
    * Gap within which contacts are kept even without approach speed, m. Default 0.1 m (Box2D v3 pads its
    * bounding boxes by the same margin), so a body knocked sideways during a step still meets the contacts
    * it runs into. Balls use it as it is; shapes take at most this: 2D shapes 4 % of half their smallest
-   * extent (0.02 m for a 1 m box, shape-collision.ts), 3D shapes 0.02 m (shape3d-collision.ts), so
+   * extent (0.02 m for a 1 m box, collision/shapes-2d.ts), 3D shapes 0.02 m (collision/shapes-3d.ts), so
    * neighbours standing a few centimetres apart are no contacts.
    */
   speculativeDistance: number;
   /**
    * Tangential speed below which a contact sticks and static friction applies, m/s, for balls of
-   * radius 1 m; ball contacts scale it by sqrt(r / 1 m) (see contact-scale.ts). Default 0.01 m/s.
+   * radius 1 m; ball contacts scale it by sqrt(r / 1 m) (see solver/contact-scale.ts). Default 0.01 m/s.
    */
   stickSpeed: number;
 }
@@ -205,13 +205,13 @@ export interface CollisionState {
    * Packed solver state, one row per solver body (Box2D v3's b2BodyState, kept apart from the
    * components users touch): 2D rows of 8 (vx, vy, w, dx, dy, 1/m, 1/I, pushed), 3D rows of 12 (vx, vy,
    * vz, wx, wy, wz, dx, dy, dz, 1/m, 1/I, pushed); d is the displacement within the step, m; pushed is
-   * 1 once a solver row has applied an impulse to the body this step (0: free flight, see solver.ts).
+   * 1 once a solver row has applied an impulse to the body this step (0: free flight, see solver/contact-solver.ts).
    */
   bodyState: Float64Array;
   /** Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply (x, y, z), rad. */
   bodyExtra: Float64Array;
   /**
-   * Per solver body, rows of 5 (impact stage, see `IMPACT_STRIDE` in impacts.ts): the end-position
+   * Per solver body, rows of 5 (impact stage, see `IMPACT_STRIDE` in solver/impacts.ts): the end-position
    * correction of this step's impacts (x, y, z), m (-dv t* summed over impacts), the time of its
    * latest impact in the step, s, and whether the soft substeps leave the body alone (1) or not (0).
    */
@@ -219,14 +219,14 @@ export interface CollisionState {
   /** Impact stage scratch: the bouncing contacts in order of impact, and their sort keys (s). */
   impactOrder: Int32Array;
   impactKey: Float64Array;
-  /** Broadphase grid scratch, see broadphase.ts. */
+  /** Broadphase grid scratch, see collision/broadphase/grid.ts. */
   readonly grid: GridScratch;
   /** Bodies woken during this step's broadphase (their Sleeping tags are removed after the pass). */
   wakeList: Int32Array;
   wakeCount: number;
-  /** Sleep: whether resting islands go to sleep, and the per-entity scratch it keeps; see sleep.ts. */
+  /** Sleep: whether resting islands go to sleep, and the per-entity scratch it keeps; see islands/sleep.ts. */
   readonly sleep: SleepState;
-  /** Contacts of 2D shapes (boxes, polygons, capsules, circles): manifolds, warm start, events; see manifolds.ts. */
+  /** Contacts of 2D shapes (boxes, polygons, capsules, circles): manifolds, warm start, events; see collision/manifolds-2d.ts. */
   readonly shapes: ShapeCollisionState;
   /** Statistics of the last step: candidate pairs, contacts, the deepest overlap left at its end (m), bodies asleep. */
   readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
@@ -246,7 +246,7 @@ export interface GridScratch {
   tableSize: number;
   /**
    * Dense grid, used when the cells around the bodies number at most DENSE_CELLS_PER_BODY per body (see
-   * broadphase.ts): cell (cx, cy, cz) is bucket (cx - originX) + (cz - originZ) spanX + (originY - cy)
+   * collision/broadphase/grid.ts): cell (cx, cy, cz) is bucket (cx - originX) + (cz - originZ) spanX + (originY - cy)
    * spanXZ, so the buckets, and the pairs, contacts and solver bodies that follow them, run through
    * space row by row from the top (y descending; in 3D each row of cells along x, the z rows, then y).
    * The range covers the bodies' cells and one more on every side, so every neighbour the pass looks at
@@ -370,7 +370,7 @@ export function createCollisionState(
 /**
  * Gives the per-entity arrays of `cs` (inverse masses, margins, body types, solver marks, sleep state)
  * room for `capacity` entities if they are still empty, zero-filled. createPhysicsWorld calls it on the
- * first use of a body component (see components.ts).
+ * first use of a body component (see world/components.ts).
  * @category Collision
  */
 export function allocateCollisionScratch(cs: CollisionState, capacity: number): void {

@@ -1,9 +1,9 @@
-import { ballContactHertz, contactLength, solverSubstepsFor } from '../collision/contact-scale.js';
-import { currentSeparation } from '../collision/narrowphase.js';
+import { spinAngularMomentum, spinKineticEnergy } from '../bodies/rigid.js';
+import { currentSeparation } from '../collision/narrowphase/balls.js';
 import { fieldsAt } from '../forces/electromagnetism.js';
-import { Not, query } from '../query.js';
-import { spinAngularMomentum, spinKineticEnergy } from '../rigid.js';
-import type { PhysicsWorld } from '../world.js';
+import { ballContactHertz, contactLength, solverSubstepsFor } from '../solver/contact-scale.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
 
 const spin = new Float64Array(3);
 

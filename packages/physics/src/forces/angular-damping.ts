@@ -1,9 +1,9 @@
 import { hasComponent } from 'bitecs';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { Not, query } from '../query.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 

@@ -1,5 +1,7 @@
 import { addComponent, hasComponent } from 'bitecs';
-import { createSlot, currentHandle, resolveKind } from '../handles.js';
+import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
 import {
   assertFinite,
   assertInteger,
@@ -10,16 +12,14 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import { addComponentIfMissing } from '../world.js';
+} from '../world/validate.js';
 import { BuoyancyShape } from './fluid.js';
 
 /**
  * Validated helpers that give bodies force laws and add field and spring entities. Each writes the
- * components documented in components.ts; the force-law systems of the `forces` stage do the rest.
+ * components documented in world/components.ts; the force-law systems of the `forces` stage do the rest.
  * Vectors have `world.dimensions` components unless said otherwise. Functions take entity handles
- * (see handles.ts) and refuse a removed entity or one of the wrong kind; options objects are required
+ * (see world/handles.ts) and refuse a removed entity or one of the wrong kind; options objects are required
  * unless said otherwise, and unknown or null options are refused.
  */
 

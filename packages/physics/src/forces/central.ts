@@ -1,7 +1,7 @@
-import { query } from '../query.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import type { ForceLaw } from './law.js';
 
 const NO_PARAMS: number[] = [];

@@ -1,6 +1,6 @@
 import { fusedForcesOn } from '../integrators/fused-state.js';
-import { query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 
 /**
  * Stage 2: zeroes the force accumulator of every body with `Force`, and the torque accumulator of

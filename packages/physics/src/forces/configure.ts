@@ -4,9 +4,17 @@
  */
 
 import { cosine } from '../math/cosine.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertInteger, assertNonNegative, assertOneOf, assertOptions, assertPositive, assertVector } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { Rng } from '../math/rng.js';
+import type { PhysicsWorld } from '../world/options.js';
+import {
+  assertFinite,
+  assertInteger,
+  assertNonNegative,
+  assertOneOf,
+  assertOptions,
+  assertPositive,
+  assertVector,
+} from '../world/validate.js';
 import { type GravityMethod, MAX_WIND_MODES } from './settings.js';
 
 /**

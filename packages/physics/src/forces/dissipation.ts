@@ -1,5 +1,5 @@
 import { registerExternalWorldState } from '../snapshot/world-state.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * Stiff dissipation: how drag and damping stay stable at every step size.

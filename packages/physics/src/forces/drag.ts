@@ -1,9 +1,9 @@
-import { reportNonFinite } from '../errors.js';
 import { fusedForcesOn } from '../integrators/fused-state.js';
-import { Not, query } from '../query.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
-import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
 import { windAt } from './configure.js';
 import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';

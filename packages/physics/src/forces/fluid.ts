@@ -1,6 +1,6 @@
-import { reportNonFinite } from '../errors.js';
-import { Not, query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
 import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 

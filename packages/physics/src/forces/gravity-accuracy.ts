@@ -1,7 +1,7 @@
 import { query } from 'bitecs';
-import { assertInteger } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import { worldTreeFields } from './barnes-hut.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertInteger } from '../world/validate.js';
+import { worldTreeFields } from './barnes-hut/tree.js';
 
 /**
  * Accuracy diagnostics of mutual gravity: the direct-sum field at a sample of bodies, the relative

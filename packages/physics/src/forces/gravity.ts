@@ -1,9 +1,9 @@
-import { Not, query } from '../query.js';
 import { KERNEL } from '../threads/kernels.js';
 import { MIN_PARALLEL_PER_THREAD, runParallel } from '../threads/parallel.js';
 import { sharedFloat64 } from '../threads/pool.js';
-import type { PhysicsWorld } from '../world.js';
-import { barnesHutGravity } from './barnes-hut.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
+import { barnesHutGravity } from './barnes-hut/tree.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
@@ -57,7 +57,7 @@ gravityScaleSystem.velocityDependent = false;
  * Mutual Newtonian gravity between every pair of bodies tagged MutualGravity, with Plummer softening:
  * F_ij = G m_i m_j (x_j - x_i) / (|x_j - x_i|^2 + eps^2)^(3/2) on i, and the opposite on j (Newton's
  * third law, so momentum is conserved to rounding). 'direct' sums all N(N-1)/2 pairs; 'barnes-hut'
- * approximates far groups by their centre of mass (see barnes-hut.ts). Position-only.
+ * approximates far groups by their centre of mass (see forces/barnes-hut/tree.ts). Position-only.
  * Source: Ramtal and Dobre ch. 6 and 12; Aarseth, Gravitational N-Body Simulations (2003), ch. 2.
  * @category Forces
  */

@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * A force-law system: a System that may declare whether it reads velocities. The Verlet schemes

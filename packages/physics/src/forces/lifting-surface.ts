@@ -1,9 +1,17 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import { createSlot, currentHandle, resolveEntity, resolveKind } from '../handles.js';
-import { query } from '../query.js';
-import { assertFinite, assertInRange, assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import { addComponentIfMissing } from '../world.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
+import { query } from '../world/query.js';
+import {
+  assertFinite,
+  assertInRange,
+  assertKnownKeys,
+  assertNonNegative,
+  assertPositive,
+  assertVector,
+  describe,
+} from '../world/validate.js';
 import type { ForceLaw } from './law.js';
 
 /**

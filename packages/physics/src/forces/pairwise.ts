@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * The softened inverse-square pair sum shared by mutual gravity and Coulomb's law: for every pair

@@ -29,7 +29,7 @@ export interface ForceLawSettings {
   /**
    * Barnes-Hut opening angle theta (> 0): two cells of radii r_A, r_B whose centres of mass are R apart
    * interact as wholes (by their multipole expansions) when (r_A + r_B) / R < min(theta, 1); smaller is
-   * more accurate and slower (see forces/barnes-hut.ts).
+   * more accurate and slower (see forces/barnes-hut/tree.ts).
    */
   openingAngle: number;
   /** Coulomb constant, N m^2 C^-2. */

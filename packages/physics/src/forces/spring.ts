@@ -1,7 +1,7 @@
 import { hasComponent, removeEntity } from 'bitecs';
-import { reportNonFinite } from '../errors.js';
-import { query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 

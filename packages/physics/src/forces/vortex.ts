@@ -1,5 +1,5 @@
-import { query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import type { ForceLaw } from './law.js';
 
 /**

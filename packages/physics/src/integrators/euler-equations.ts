@@ -1,6 +1,6 @@
 import { hasComponent } from 'bitecs';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 const b = new Float64Array(3),
   t = new Float64Array(3),

@@ -1,5 +1,5 @@
 import { rotateFrom } from '../math/quaternion.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
 import {
   accelerationsAt,

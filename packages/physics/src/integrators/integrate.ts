@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { registerFusedIntegrator } from './fused-gate.js';
 import { implicitEuler } from './implicit-euler.js';
 import type { IntegratorName } from './names.js';

@@ -1,6 +1,6 @@
 import type { QueryResult } from 'bitecs';
-import { Not, query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
 
 /**
  * Dynamic bodies with a force accumulator (and so a mass): they feel force laws and gravity.

@@ -1,6 +1,6 @@
-import { reportNonFinite } from '../errors.js';
 import { rotateInPlace } from '../math/quaternion.js';
-import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { splitRigidRotations } from './euler-equations.js';
 import { simpleSpinningBodies, tensorBodies, torquedBodies } from './queries.js';
 

@@ -1,5 +1,5 @@
 import { rotateFrom, rotateVector } from '../math/quaternion.js';
-import type { PhysicsWorld, System } from '../world.js';
+import type { PhysicsWorld, System } from '../world/options.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
 import {
   accelerationsAt,

@@ -1,10 +1,10 @@
-import { reportNonFinite } from '../errors.js';
 import { dissipationState, STIFF_RATE } from '../forces/dissipation.js';
 import { markStiffQuadratic } from '../forces/drag.js';
-import { reportNonFiniteForces } from '../pipeline/finite.js';
+import { reportNonFiniteForces } from '../step/finite.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
-import type { PhysicsWorld } from '../world.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { fusedForcesOn, setFusedForces } from './fused-state.js';
 import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
@@ -306,7 +306,7 @@ function fusedBare2(world: PhysicsWorld, ents: ArrayLike<number>, h: number): nu
  *   before it were moved with finite forces and stay moved: every forced body without drag (that list
  *   runs first), then those of its own list (quadratic drag, then linear) that precede it. The separate
  *   stages would have moved none (the forces stage throws before the integrator runs); moving them
- *   back would not be exact ((v + a h) - a h need not be v), so they are left, as pipeline/finite.ts
+ *   back would not be exact ((v + a h) - a h need not be v), so they are left, as step/finite.ts
  *   and fused-gate.ts state. A non-finite velocity or position (stage 'integrate') is found by the running sum after
  *   its list has been moved, as in the separate integrator.
  */
@@ -542,7 +542,7 @@ function stampLinear(world: PhysicsWorld): void {
 
 /**
  * The fused pass found body `e`'s force NaN or infinite, before moving it: throws what the forces
- * stage's check would (pipeline/finite.ts `reportNonFiniteForces`: Force.x, Force.y or Force.z, stage
+ * stage's check would (step/finite.ts `reportNonFiniteForces`: Force.x, Force.y or Force.z, stage
  * 'forces', this body). Called after the loop has stopped at the body, so the loop's only cost is
  * one well-predicted branch a body (fireworks: no measurable change, see the commit).
  * @throws NonFiniteStateError always.

@@ -1,8 +1,8 @@
 import { hasComponent } from 'bitecs';
-import { reportNonFinite } from '../errors.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { evaluateForces } from '../pipeline/step.js';
-import type { PhysicsWorld } from '../world.js';
+import { evaluateForces } from '../step/step.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';
 import { forcedBodies, freeBodies, spinningBodies } from './queries.js';
 

@@ -1,8 +1,8 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
-import { wakeIsland } from '../collision/sleep.js';
-import { query } from '../query.js';
-import type { PhysicsWorld } from '../world.js';
+import { wakeIsland } from '../islands/sleep.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import { removeNoCollide } from './connected.js';
 
 /**

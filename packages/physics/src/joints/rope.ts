@@ -1,5 +1,6 @@
-import { addBodyAs, removeBody } from '../bodies.js';
-import { isAlive } from '../handles.js';
+import { addBodyAs, removeBody } from '../bodies/api.js';
+import { isAlive } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
 import {
   assertInteger,
   assertNonNegative,
@@ -8,9 +9,8 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
-import { addDistanceJoint } from './api.js';
+} from '../world/validate.js';
+import { addDistanceJoint } from './api-2d.js';
 
 /**
  * Options of `createRope`. Unknown fields are rejected.
@@ -44,7 +44,7 @@ export interface RopeOptions {
  * @category Joints and ropes
  */
 export interface Rope {
-  /** The bodies' handles from the start to the end (Float64Array: a handle needs up to 53 bits, see handles.ts). */
+  /** The bodies' handles from the start to the end (Float64Array: a handle needs up to 53 bits, see world/handles.ts). */
   readonly bodies: Float64Array;
   /** The distance joints' handles in order along the rope: the start pin (if pinned), the links between bodies, the end pin (if pinned). */
   readonly joints: Float64Array;

@@ -1,7 +1,7 @@
 import { $internal, commitRemovals } from 'bitecs';
-import { touchSparseSet } from '../lean-ecs.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
-import type { PhysicsWorld } from '../world.js';
+import { touchSparseSet } from '../world/lean-ecs.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * Particle archetypes: creating and removing many entities of one fixed component set without
@@ -210,7 +210,7 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
 
 /**
  * Where the world keeps its first generation of component masks in an Int32Array (lean storage,
- * lean-ecs.ts), the other generations get one too: bitecs grows them as JS arrays written at scattered
+ * world/lean-ecs.ts), the other generations get one too: bitecs grows them as JS arrays written at scattered
  * slots, which V8 may keep as a dictionary, and a particle's own components can sit in any
  * generation (bits follow registration order). Same values; every reader (bitecs, snapshots) indexes them.
  */

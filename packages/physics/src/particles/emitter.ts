@@ -1,9 +1,10 @@
 import { addComponent, query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
-import { DEFAULT_MATERIAL } from '../components.js';
-import { NonFiniteStateError } from '../errors.js';
-import { createSlot, currentHandle, resolveKind } from '../handles.js';
-import { query } from '../query.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { DEFAULT_MATERIAL } from '../world/components.js';
+import { NonFiniteStateError } from '../world/errors.js';
+import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import {
   assertBoolean,
   assertFinite,
@@ -16,8 +17,7 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+} from '../world/validate.js';
 import {
   type Archetype,
   applyQueuedBirths,

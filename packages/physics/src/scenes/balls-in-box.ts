@@ -1,7 +1,7 @@
-import { addBody, setBoundary } from '../bodies.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { addBody, setBoundary } from '../bodies/api.js';
+import { Rng } from '../math/rng.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

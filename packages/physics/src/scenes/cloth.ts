@@ -1,7 +1,7 @@
 import { type Cloth, createCloth } from '../cloth/create.js';
 import { setWind } from '../forces/configure.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,6 +1,6 @@
 import { addEmitter } from '../particles/emitter.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,9 +1,9 @@
-import { addBody } from '../bodies.js';
+import { addBody } from '../bodies/api.js';
 import { enableMutualGravity } from '../forces/api.js';
 import { setGravitation } from '../forces/configure.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { Rng } from '../math/rng.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

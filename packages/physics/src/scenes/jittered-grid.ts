@@ -1,4 +1,4 @@
-import { Rng } from '../rng.js';
+import { Rng } from '../math/rng.js';
 
 /**
  * Bodies on a jittered cubic grid, from `jitteredGrid3D`.

@@ -1,7 +1,7 @@
-import { addBody } from '../bodies.js';
-import { addRevoluteJoint } from '../joints/api.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { addBody } from '../bodies/api.js';
+import { addRevoluteJoint } from '../joints/api-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,7 +1,7 @@
+import { Rng } from '../math/rng.js';
 import { addParticles } from '../particles/bulk.js';
-import { Rng } from '../rng.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,9 +1,9 @@
-import { addBody } from '../bodies.js';
-import { slotOf } from '../handles.js';
-import { addPlane } from '../rigid.js';
-import { addShape3D } from '../shapes3d/api.js';
-import { assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { addBody } from '../bodies/api.js';
+import { addPlane } from '../bodies/rigid.js';
+import { addShape3D } from '../shapes/api-3d.js';
+import { slotOf } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,6 +1,6 @@
-import { addBody, setBoundary } from '../bodies.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { addBody, setBoundary } from '../bodies/api.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import { jitteredGrid3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 

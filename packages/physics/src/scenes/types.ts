@@ -1,4 +1,4 @@
-import type { PhysicsWorld, PhysicsWorldOptions } from '../world.js';
+import type { PhysicsWorld, PhysicsWorldOptions } from '../world/options.js';
 
 /**
  * A scene: a pure, seeded, deterministic builder shared by tests, the headless bench and the games.

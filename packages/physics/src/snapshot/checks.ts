@@ -1,8 +1,8 @@
-import { MAX_AUTO_SUBSTEPS } from '../collision/contact-scale.js';
 import { MAX_WIND_MODES } from '../forces/settings.js';
 import { INTEGRATOR_NAMES } from '../integrators/names.js';
-import { describe } from '../validate.js';
-import { MAX_TIME_STEP } from '../world.js';
+import { MAX_AUTO_SUBSTEPS } from '../solver/contact-scale.js';
+import { MAX_TIME_STEP } from '../world/options.js';
+import { describe } from '../world/validate.js';
 
 /**
  * The checks `restore` makes on the values a snapshot holds in its header (scalars: settings, clocks,

@@ -1,5 +1,5 @@
 import { $internal, hasComponent } from 'bitecs';
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 const f64 = new Float64Array(1);
 const u32 = new Uint32Array(f64.buffer);

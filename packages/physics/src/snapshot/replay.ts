@@ -1,6 +1,6 @@
-import { step } from '../pipeline/step.js';
-import { assertOptions, describe } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { step } from '../step/step.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertOptions, describe } from '../world/validate.js';
 import { restore, snapshot, type WorldSnapshot } from './snapshot.js';
 
 /**

@@ -1,8 +1,8 @@
 import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
-import { assignSparseSet, hasMaskComponentSets } from '../lean-ecs.js';
 import { shareStores } from '../threads/shared-stores.js';
-import { describe } from '../validate.js';
-import type { PhysicsWorld } from '../world.js';
+import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { describe } from '../world/validate.js';
 import { checkSnapshotValues } from './checks.js';
 import { snapshotChecksum } from './checksum.js';
 import { externalWorldStates } from './world-state.js';
@@ -18,7 +18,7 @@ import { externalWorldStates } from './world-state.js';
  * its type and length only, and bitecs' query lists that equal an earlier list (most queries hold the
  * same entities in the same order) as a reference to it, a list of consecutive ids (1 .. N) as its first
  * id and length (a query list neither of whose sets changed
- * since the world's last snapshot found them equal is not compared again: lean-ecs.ts counts each
+ * since the world's last snapshot found them equal is not compared again: world/lean-ecs.ts counts each
  * set's changes). Component stores are scanned for their last non-zero element from the highest entity
  * id down (their entries above it are zero). Scratch arrays (the broadphase grid and the collision
  * stage's per-step arrays, see SCRATCH; the solver's marks, see STAMPED) are stored as their type and
@@ -55,7 +55,7 @@ const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex', 't
 /**
  * Typed arrays of the world that are scratch: written in full before they are read, within the step
  * that reads them, so they carry nothing from one step to the next (the broadphase's spatial-hash
- * grid, rebuilt by every broadphaseSystem before its pair search: collision/broadphase.ts). A snapshot
+ * grid, rebuilt by every broadphaseSystem before its pair search: collision/broadphase/grid.ts). A snapshot
  * keeps their type only and restore leaves the target world's own arrays as they are (the
  * broadphase grows them when too small). About 4 MB of a 100,000-ball world's 10.4 MB.
  */
@@ -69,14 +69,14 @@ const SCRATCH = new Set([
  * as type and length only: the restored world keeps its own array when it has one of that type and
  * at least that length, and gets a zeroed one otherwise.
  * - `margin`: every ball's speculative margin, written for all balls (static ones after) at the top of
- *   broadphaseSystem, read only by the broadphase (collision/broadphase.ts, broadphase-pairs*.ts).
+ *   broadphaseSystem, read only by the broadphase (collision/broadphase/grid.ts, broadphase-pairs*.ts).
  * - `pairA`, `pairB`, `pairKind`: the broadphase's pair list; broadphaseSystem sets `pairCount` to 0
  *   first, the narrowphase reads the first `pairCount` pairs of this step.
  * - `solverIndex`: read only for bodies whose `solverMark` equals this step's `solverStamp`, which
- *   gatherBodies (collision/solver.ts) raises by one before giving indices (see STAMPED for `solverMark`).
+ *   gatherBodies (solver/contact-solver.ts) raises by one before giving indices (see STAMPED for `solverMark`).
  * - `bodyState`, `bodyExtra`: packed rows of this step's solver bodies, filled by gatherBodies for rows
  *   1 .. solverBodyCount - 1 (row 0, the static world, is zeroed there or never written) before any
- *   solver stage reads them; `bodyImpact`: zeroed up to solverBodyCount by applyImpacts (impacts.ts),
+ *   solver stage reads them; `bodyImpact`: zeroed up to solverBodyCount by applyImpacts (solver/impacts.ts),
  *   which runs before anything reads it.
  * About 3 MB of a settled 100,000-ball world's 9 to 13 MB.
  */
@@ -100,7 +100,7 @@ const CONTACT_BUFFERS = new Set(['world.collision.contacts', 'world.collision.ca
 /**
  * Stamp-marked scratch: an array of marks and the counter they are compared with. A mark counts only
  * while it equals the counter, which its user raises by one before it marks (gatherBodies,
- * collision/solver.ts: `solverMark[e] === ++solverStamp`), so every mark is at most the counter and
+ * solver/contact-solver.ts: `solverMark[e] === ++solverStamp`), so every mark is at most the counter and
  * the marks' values carry nothing else. A snapshot keeps the mark array's type and length only;
  * restore keeps the world's own marks (or gives it zeroed ones) and sets the counter to the larger
  * of the snapshot's and the world's own, so no kept mark can equal a future counter value. Only the
@@ -514,7 +514,7 @@ class Writer {
 
 /**
  * Tag of a 2D contact tangent column stored as a note: tangent 1 of a 2D contact is (-ny, nx) as
- * prepareContacts (collision/solver.ts, and its kernel) computes it, so `t1x` and `t1y` are stored as
+ * prepareContacts (solver/contact-solver.ts, and its kernel) computes it, so `t1x` and `t1y` are stored as
  * a note, `{ $t: 'tangent2d', axis, len, upto, rows? }`, plus the rows that differ (a normal the
  * impact stage or the relax pass turned after the tangent was set: ~2 % of a 100,000-ball box's rows)
  * as (row, value) pairs in `rows`, a Float64Array. Restore writes -ny (axis x) or nx (axis y) into rows
@@ -1044,7 +1044,7 @@ function sameAsStored(a: readonly number[], b: Int32Array): boolean {
 
 /**
  * What the last snapshot of a world found about one of its query sets (lean storage: sets with a
- * `version`, see lean-ecs.ts): its version and length then, and the earlier set of that snapshot it
+ * `version`, see world/lean-ecs.ts): its version and length then, and the earlier set of that snapshot it
  * was equal to (null: none) with that set's version and length then.
  */
 interface ListMemo {
@@ -1060,7 +1060,7 @@ const listMemos = new WeakMap<PhysicsWorld, Map<object, ListMemo>>();
  * Encodes bitecs id lists, each once: a list equal to one encoded before (most queries hold the same
  * entities in the same order) becomes a reference `{ $t: 'same', i }` to that one's position in `lists`.
  * Finding that costs a comparison of the two lists, except where neither set has changed (same
- * version and length, lean-ecs.ts) since the world's last snapshot found them equal.
+ * version and length, world/lean-ecs.ts) since the world's last snapshot found them equal.
  */
 class IdLists {
   private readonly done: Array<{ ids: readonly number[]; index: number; set: object | null }> = [];
@@ -1226,7 +1226,7 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
       while (((src[e] ?? 0) & unknown) === 0) e++;
       throw new Error(`snapshot: entity ${e} has a component that is not one of world.components; only those can be captured`);
     }
-    // Typed masks (lean-ecs.ts) are stored as they are, up to their last set entry (ids above maxId
+    // Typed masks (world/lean-ecs.ts) are stored as they are, up to their last set entry (ids above maxId
     // have none); JS ones as Int32Array.
     if (src instanceof Int32Array) {
       masks.push(w.arrayTo(src, n));
@@ -1268,7 +1268,7 @@ function captureEcs(world: PhysicsWorld, w: Writer): Encoded {
 
 /**
  * For the ECS part of a snapshot (by object identity, so a cloned or parsed snapshot has none): the
- * version (lean-ecs.ts) each query set of a world had when its members were known to equal the
+ * version (world/lean-ecs.ts) each query set of a world had when its members were known to equal the
  * snapshot's list for it, recorded when the snapshot was taken and when a restore wrote the list.
  * A set whose version is still that one has not changed since: restoring the snapshot again (a
  * rewind, a rollback) need not compare or write it.
@@ -1484,7 +1484,7 @@ function writeInPlace(arr: number[], src: ArrayLike<number>, n: number): void {
 function setContent(set: SparseSetLike, ids: Int32Array, compare: boolean): boolean {
   const dense = set.dense;
   if (compare && Array.isArray(dense) && sameAsStored(dense as number[], ids)) return false;
-  // Lean storage (lean-ecs.ts): written in bulk, its typed sparse array allocated if it was not yet.
+  // Lean storage (world/lean-ecs.ts): written in bulk, its typed sparse array allocated if it was not yet.
   if (assignSparseSet(set, ids)) return true;
   const sparse = (set as unknown as { sparse: ArrayLike<number> & { [i: number]: number } }).sparse;
   if (Array.isArray(dense)) {

@@ -1,6 +1,6 @@
 /**
  * The types of a thread kernel (kernels.ts), in a module of their own so that kernels kept beside
- * their system (forces/barnes-hut-walk.ts) can name them without importing the kernel table.
+ * their system (forces/barnes-hut/walk.ts) can name them without importing the kernel table.
  */
 
 /**

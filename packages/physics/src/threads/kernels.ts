@@ -14,12 +14,12 @@
  *   these same rules.
  */
 
-import { ballPairs } from '../collision/broadphase-pairs-kernel.js';
-import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../collision/contact-colors-kernel.js';
-import { stripLayout2D, stripPlan2D } from '../collision/contact-strip-plan-kernel.js';
-import { stripCut2D } from '../collision/contact-strips-kernel.js';
-import { ballContacts } from '../collision/narrowphase-balls-kernel.js';
-import { prepareContacts2D } from '../collision/prepare-contacts-kernel.js';
+import { ballPairs } from '../collision/broadphase/grid-pairs-kernel.js';
+import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut/gather.js';
+import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut/walk.js';
+import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D, solveColored2D } from '../solver/coloring-kernel.js';
+import { prepareContacts2D } from '../solver/prepare-contacts-kernel.js';
 import {
   approach2D,
   containBodies2D,
@@ -30,10 +30,10 @@ import {
   restitutionColored2D,
   restitutionRows2D,
   restitutionTargets2D,
-} from '../collision/solver-stages-kernel.js';
-import { warmStartTable } from '../collision/warm-start-kernel.js';
-import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut-gather.js';
-import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut-walk.js';
+} from '../solver/stages-kernel.js';
+import { stripLayout2D, stripPlan2D } from '../solver/strip-plan-kernel.js';
+import { stripCut2D } from '../solver/strips-kernel.js';
+import { warmStartTable } from '../solver/warm-start-kernel.js';
 import { claimBlock } from './block-claim.js';
 import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
@@ -429,7 +429,7 @@ function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 }
 
 /**
- * Finiteness probe of the step's stage checks (pipeline/finite.ts): the sum of a[e] * 0 over every
+ * Finiteness probe of the step's stage checks (step/finite.ts): the sum of a[e] * 0 over every
  * array of A and every entity of the range; 0 when all are finite, NaN as soon as one is not (the
  * order of the sum cannot change that). P unused.
  */
@@ -501,12 +501,12 @@ function testKernel(A: KernelArray[], P: Float64Array, ids: Int32Array | null, l
 /**
  * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
  * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
- * (contact-colors-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
- * (solver-stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
+ * (solver/coloring-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
+ * (solver/stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
  * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
- * those kernels); 10 stripCut2D and 11 stripLayout2D (contact-strips-kernel.ts and
- * contact-strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
- * (solver-stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
+ * those kernels); 10 stripCut2D and 11 stripLayout2D (solver/strips-kernel.ts and
+ * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
+ * (solver/stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  * @category Threads
  */

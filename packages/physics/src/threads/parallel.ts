@@ -8,7 +8,7 @@
  * costs at most the occasional probe.
  */
 
-import type { PhysicsWorld } from '../world.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { nowMs } from './adaptive.js';
 import type { KernelArray } from './kernels.js';
 import { KERNEL_HELPERS, KERNELS } from './kernels.js';

@@ -1,0 +1,433 @@
+import { registerExternalWorldState } from '../snapshot/world-state.js';
+import type { PhysicsWorld } from '../world/options.js';
+
+/**
+ * The 3D shape contacts of a world: this step's manifolds as solver rows (structure of arrays, four
+ * point slots a manifold), last step's rows for warm starting (looked up by shape pair, then by
+ * feature id), and the per-solver-body world inverse inertia tensors. Kept outside the world object
+ * (registered for snapshots).
+ * @category Collision
+ */
+export interface Manifold3DBuffer {
+  count: number;
+  /** Body slots (0: the static world, e.g. a plane) and shape slots (a plane's own slot for a plane). */
+  bodyA: Int32Array;
+  bodyB: Int32Array;
+  shapeA: Int32Array;
+  shapeB: Int32Array;
+  /** 0, or for a row against a triangle mesh the triangle's index + 1 (a mesh pair has a row per triangle). */
+  sub: Int32Array;
+  /** Solver indices of the bodies (0: static). */
+  ia: Int32Array;
+  ib: Int32Array;
+  /** Points in use (1 to 4), unit normal A to B, tangents (t1, t2 = n x t1), friction and restitution. */
+  points: Uint8Array;
+  /** 1 when both bodies' world inverse inertia is isotropic (i 1) this step (solver/manifold-rows-3d.ts reads fewer numbers), else 0. */
+  iso: Uint8Array;
+  /** Per row, set by the solver's prepare: the least start separation of its points (m) and the longest anchor on A and on B (m, slightly padded). */
+  minSep: Float64Array;
+  reachA: Float64Array;
+  reachB: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+  nz: Float64Array;
+  t1x: Float64Array;
+  t1y: Float64Array;
+  t1z: Float64Array;
+  friction: Float64Array;
+  restitution: Float64Array;
+  /** Per point (4 i + k): anchors from the centres of mass (m, world), separation at the step's start (m), feature id. */
+  rax: Float64Array;
+  ray: Float64Array;
+  raz: Float64Array;
+  rbx: Float64Array;
+  rby: Float64Array;
+  rbz: Float64Array;
+  sep: Float64Array;
+  id: Float64Array;
+  /**
+   * Per point: accumulated normal impulse (N s); effective mass along n (kg; rebuilt every step by the
+   * solver's prepare, single precision: 1e-7 relative, less memory streamed each pass); approach speed
+   * at the start (m/s); largest normal impulse.
+   */
+  ln: Float64Array;
+  mn: Float32Array;
+  vn0: Float64Array;
+  maxLn: Float64Array;
+  /**
+   * Per row, the manifold's friction (solver/manifold-rows-3d.ts: one anchor a manifold): accumulated impulses
+   * along t1 and t2 (N s) and about n (twist, N m s); their effective masses (kg, kg m^2; rebuilt by the
+   * prepare); the twist arm (m: the points' mean distance from the anchor, the twist limit mu arm sum(ln)).
+   */
+  ft1: Float64Array;
+  ft2: Float64Array;
+  ftw: Float64Array;
+  mt1: Float32Array;
+  mt2: Float32Array;
+  mtw: Float32Array;
+  arm: Float64Array;
+  /**
+   * Box-box rows (collision/shapes-3d.ts reuses them while the pair's relative pose barely changes): 1 when
+   * the row carries the fields below, else 0. `relPose` (12 a row): B's centre in A's frame, m, then
+   * R_A^T R_B row-major, when the manifold was last computed; `localNormal` (3 a row): the normal in A's
+   * frame; `localA`, `localB` (3 a point, 12 a row): each point's ends on A's and B's surfaces in their frames, m.
+   */
+  local: Uint8Array;
+  relPose: Float64Array;
+  localNormal: Float64Array;
+  localA: Float64Array;
+  localB: Float64Array;
+}
+
+function createBuffer(n: number): Manifold3DBuffer {
+  const i = (k: number): Int32Array => new Int32Array(k),
+    f = (k: number): Float64Array => new Float64Array(k);
+  const p = 4 * n;
+  return {
+    count: 0,
+    bodyA: i(n),
+    bodyB: i(n),
+    shapeA: i(n),
+    shapeB: i(n),
+    sub: i(n),
+    ia: i(n),
+    ib: i(n),
+    points: new Uint8Array(n),
+    iso: new Uint8Array(n),
+    minSep: f(n),
+    reachA: f(n),
+    reachB: f(n),
+    nx: f(n),
+    ny: f(n),
+    nz: f(n),
+    t1x: f(n),
+    t1y: f(n),
+    t1z: f(n),
+    friction: f(n),
+    restitution: f(n),
+    rax: f(p),
+    ray: f(p),
+    raz: f(p),
+    rbx: f(p),
+    rby: f(p),
+    rbz: f(p),
+    sep: f(p),
+    id: f(p),
+    ln: f(p),
+    mn: new Float32Array(p),
+    vn0: f(p),
+    maxLn: f(p),
+    ft1: f(n),
+    ft2: f(n),
+    ftw: f(n),
+    mt1: new Float32Array(n),
+    mt2: new Float32Array(n),
+    mtw: new Float32Array(n),
+    arm: f(n),
+    local: new Uint8Array(n),
+    relPose: f(12 * n),
+    localNormal: f(3 * n),
+    localA: f(3 * p),
+    localB: f(3 * p),
+  };
+}
+
+/**
+ * Doubles a buffer's room (again until it holds at least `rows` rows, if given), keeping its rows.
+ * @category Collision
+ */
+export function growManifold3DBuffer(b: Manifold3DBuffer, rows = 0): Manifold3DBuffer {
+  let n = b.bodyA.length * 2;
+  while (n < rows) n *= 2;
+  const g = createBuffer(n) as unknown as Record<string, unknown>;
+  for (const [k, v] of Object.entries(b))
+    if (ArrayBuffer.isView(v)) (g[k] as { set(a: ArrayLike<number>): void }).set(v as unknown as ArrayLike<number>);
+  g.count = b.count;
+  return g as unknown as Manifold3DBuffer;
+}
+
+/**
+ * One list of 3D contact events; read rows 0..count-1. Entities are handles (0: the static world).
+ * @category Collision
+ */
+export interface EventList3D {
+  count: number;
+  /** Shape A (the sensor, for sensor events; a plane or mesh entity for those), shape B, and their bodies. */
+  shapeA: Float64Array;
+  shapeB: Float64Array;
+  bodyA: Float64Array;
+  bodyB: Float64Array;
+  /** A contact point, m, and the normal from A to B (`begin` only). */
+  px: Float64Array;
+  py: Float64Array;
+  pz: Float64Array;
+  nx: Float64Array;
+  ny: Float64Array;
+  nz: Float64Array;
+  /** Approach speed along the normal at the start of the step, m/s, >= 0 (`begin` only). */
+  approachSpeed: Float64Array;
+}
+
+/**
+ * The 3D contact events of the last step, as in 2D: `begin` (a pair started touching: a point carried
+ * a normal impulse or overlapped), `end` (a pair that touched no longer does, or a shape was removed),
+ * `sensorBegin` / `sensorEnd` (a shape started or stopped overlapping a sensor; `shapeA` the sensor).
+ * @category Collision
+ */
+export interface ContactEvents3D {
+  begin: EventList3D;
+  end: EventList3D;
+  sensorBegin: EventList3D;
+  sensorEnd: EventList3D;
+}
+
+const EVENT_FIELDS = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'px', 'py', 'pz', 'nx', 'ny', 'nz', 'approachSpeed'] as const;
+
+function createEventList(n = 16): EventList3D {
+  const l = { count: 0 } as Record<string, unknown>;
+  for (const k of EVENT_FIELDS) l[k] = new Float64Array(n);
+  return l as unknown as EventList3D;
+}
+
+/**
+ * Appends a row to an event list (growing it) and returns the row.
+ * @category Collision
+ */
+export function pushEvent3D(list: EventList3D, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+  const i = list.count;
+  if (i >= list.shapeA.length) {
+    const rec = list as unknown as Record<string, Float64Array>;
+    for (const k of EVENT_FIELDS) {
+      const next = new Float64Array(rec[k]!.length * 2);
+      next.set(rec[k]!);
+      rec[k] = next;
+    }
+  }
+  list.shapeA[i] = shapeA;
+  list.shapeB[i] = shapeB;
+  list.bodyA[i] = bodyA;
+  list.bodyB[i] = bodyB;
+  list.px[i] = 0;
+  list.py[i] = 0;
+  list.pz[i] = 0;
+  list.nx[i] = 0;
+  list.ny[i] = 0;
+  list.nz[i] = 0;
+  list.approachSpeed[i] = 0;
+  list.count++;
+  return i;
+}
+
+/**
+ * The world's 3D contact state.
+ * @category Collision
+ */
+export interface Contact3DState {
+  current: Manifold3DBuffer;
+  previous: Manifold3DBuffer;
+  /** Row key (`rowKey`) -> row in `previous`. */
+  previousIndex: RowIndex;
+  /** World inverse inertia tensor per solver body index (6 a body: xx, yy, zz, xy, xz, yz), 1 / (kg m^2). */
+  invInertia: Float64Array;
+  /** The step whose events the lists hold (they are cleared once a step, not once a substep). */
+  eventStep: number;
+  /** Events of the last step. */
+  events: ContactEvents3D;
+  /** Pairs touching at the end of the last step (for begin and end events). */
+  touching: TouchList;
+  /** The list the next step's touching pairs are written into (swapped with `touching`). */
+  touchingNext: TouchList;
+  /** Sensor overlaps of the last step, as `touching`. */
+  sensing: Map<number, number[]>;
+  /** Sensor overlaps found this step (moved into `sensing` when the step's events are made). */
+  sensingNow: Map<number, number[]>;
+  /**
+   * Per point of `current` (6 numbers each, solver/manifold-rows-3d.ts): r x n of both bodies; `jacobiansInv`
+   * the same place: I^-1 (r x n) of both (written only for rows whose bodies are not isotropic, so a pile
+   * of cubes streams only the crosses). Rebuilt every step; single precision (half the memory).
+   */
+  jacobians: Float32Array;
+  jacobiansInv: Float32Array;
+  /**
+   * Per row of `current` (12 numbers each, solver/manifold-rows-3d.ts): the friction anchor's r x u of both
+   * bodies for u = t1, t2; `frictionInv` (18 a row, not isotropic rows only): I^-1 (r x u) of both for
+   * t1, t2, then I^-1 n of both (twist). Rebuilt every step; single precision.
+   */
+  frictionJacobians: Float32Array;
+  frictionInv: Float32Array;
+  /** 0 or 1, flipped at every biased solve pass: the order the points of a manifold are solved in (solver/manifold-rows-3d.ts). */
+  solveParity: number;
+  /** Per solver body: its rotation owed at the start of the solve (the linearised rotation is measured from it). */
+  rotationBase: Float64Array;
+}
+
+/**
+ * Key of a row for warm starting: shapeA (capacity + 1) + shapeB, or for a mesh triangle -(shapeB 2^22 + triangle + 1).
+ * @category Collision
+ */
+export function rowKey(capacity: number, shapeA: number, shapeB: number, sub: number): number {
+  return sub === 0 ? shapeA * (capacity + 1) + shapeB : -(shapeB * 4194304 + sub);
+}
+
+/**
+ * A hash table from row keys to rows (open addressing with linear probing, in typed arrays, so building
+ * it each step allocates nothing once it has grown to the pile's size).
+ * @category Collision
+ */
+export interface RowIndex {
+  /** Keys (row keys; unused slots hold NaN) and rows, mask + 1 slots. */
+  keys: Float64Array;
+  rows: Int32Array;
+  mask: number;
+  /** Keys inserted since the last clear (a clear of an empty index costs nothing). */
+  count: number;
+}
+
+function createRowIndex(): RowIndex {
+  return { keys: new Float64Array(64).fill(NaN), rows: new Int32Array(64), mask: 63, count: 0 };
+}
+
+/**
+ * Empties the index and makes room for `count` keys (at most half full).
+ * @category Collision
+ */
+export function clearRowIndex(index: RowIndex, count: number): void {
+  let size = index.mask + 1;
+  if (size < 2 * count) {
+    while (size < 2 * count) size *= 2;
+    index.keys = new Float64Array(size).fill(NaN);
+    index.rows = new Int32Array(size);
+    index.mask = size - 1;
+  } else if (index.count > 0) index.keys.fill(NaN);
+  index.count = 0;
+}
+
+function slotOfKey(key: number, mask: number): number {
+  // Mix the key's low and high 32 bits (keys are non-negative integers below 2^53, or their negatives).
+  const lo = (key % 4294967296) | 0,
+    hi = (key / 4294967296) | 0;
+  return (Math.imul(lo ^ (lo >>> 16), 0x45d9f3b) ^ Math.imul(hi, 0x27d4eb2d)) & mask;
+}
+
+/**
+ * Adds key -> row (the index must have room: clearRowIndex).
+ * @category Collision
+ */
+export function insertRow(index: RowIndex, key: number, row: number): void {
+  const K = index.keys,
+    mask = index.mask;
+  let h = slotOfKey(key, mask);
+  while (K[h] === K[h] && K[h] !== key) h = (h + 1) & mask;
+  K[h] = key;
+  index.rows[h] = row;
+  index.count++;
+}
+
+/**
+ * The row of `key`, or -1.
+ * @category Collision
+ */
+export function lookupRow(index: RowIndex, key: number): number {
+  const K = index.keys,
+    mask = index.mask;
+  let h = slotOfKey(key, mask);
+  for (;;) {
+    const k = K[h]!;
+    if (k === key) return index.rows[h]!;
+    if (k !== k) return -1;
+    h = (h + 1) & mask;
+  }
+}
+
+/**
+ * Touching shape pairs: key (shapeA (capacity + 1) + shapeB), the shapes and their bodies (slots), indexed by key.
+ * @category Collision
+ */
+export interface TouchList {
+  count: number;
+  keys: Float64Array;
+  shapeA: Int32Array;
+  shapeB: Int32Array;
+  bodyA: Int32Array;
+  bodyB: Int32Array;
+  index: RowIndex;
+}
+
+function createTouchList(n = 64): TouchList {
+  return {
+    count: 0,
+    keys: new Float64Array(n),
+    shapeA: new Int32Array(n),
+    shapeB: new Int32Array(n),
+    bodyA: new Int32Array(n),
+    bodyB: new Int32Array(n),
+    index: createRowIndex(),
+  };
+}
+
+/**
+ * Appends a pair (growing the list; the caller indexes it). Returns its row.
+ * @category Collision
+ */
+export function pushTouch(l: TouchList, key: number, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
+  if (l.count >= l.keys.length) {
+    const n = 2 * l.keys.length;
+    const f = new Float64Array(n);
+    f.set(l.keys);
+    l.keys = f;
+    for (const k of ['shapeA', 'shapeB', 'bodyA', 'bodyB'] as const) {
+      const a = new Int32Array(n);
+      a.set(l[k]);
+      l[k] = a;
+    }
+  }
+  const i = l.count++;
+  l.keys[i] = key;
+  l.shapeA[i] = shapeA;
+  l.shapeB[i] = shapeB;
+  l.bodyA[i] = bodyA;
+  l.bodyB[i] = bodyB;
+  return i;
+}
+
+const states = new WeakMap<PhysicsWorld, Contact3DState>();
+
+/**
+ * The world's 3D contact state (made when `create` is true).
+ * @category Collision
+ */
+export function contact3DStateOf(world: PhysicsWorld, create: true): Contact3DState;
+export function contact3DStateOf(world: PhysicsWorld, create?: boolean): Contact3DState | undefined;
+export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3DState | undefined {
+  let s = states.get(world);
+  if (s === undefined && create) {
+    s = {
+      current: createBuffer(64),
+      previous: createBuffer(64),
+      previousIndex: createRowIndex(),
+      invInertia: new Float64Array(6 * 64),
+      rotationBase: new Float64Array(3 * 64),
+      events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
+      touching: createTouchList(),
+      touchingNext: createTouchList(),
+      sensing: new Map(),
+      sensingNow: new Map(),
+      eventStep: -1,
+      solveParity: 0,
+      jacobians: new Float32Array(0),
+      jacobiansInv: new Float32Array(0),
+      frictionJacobians: new Float32Array(0),
+      frictionInv: new Float32Array(0),
+    };
+    states.set(world, s);
+  }
+  return s;
+}
+
+registerExternalWorldState({
+  name: 'contacts3d',
+  get: (world, create) => contact3DStateOf(world, create),
+  clear: (world) => {
+    states.delete(world);
+  },
+});

@@ -1,0 +1,549 @@
+import { jointKeepsApart } from '../../joints/connected.js';
+import type { PhysicsWorld } from '../../world/options.js';
+import { query } from '../../world/query.js';
+import { BodyType, PairKind } from '../broadphase/grid.js';
+import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
+import { parallelBallContacts } from './balls-threads.js';
+
+function pushContact(buf: ContactBuffer, kind: number, a: number, b: number, feature: number): void {
+  const i = buf.count;
+  if (i >= buf.capacity) growContactBuffer(buf, i + 1);
+  const r = rowArgs;
+  buf.kind[i] = kind;
+  buf.a[i] = a;
+  buf.b[i] = b;
+  buf.feature[i] = feature;
+  buf.nx[i] = r[0]!;
+  buf.ny[i] = r[1]!;
+  buf.nz[i] = r[2]!;
+  buf.separation[i] = r[3]!;
+  buf.ra[i] = r[4]!;
+  buf.rb[i] = r[5]!;
+  buf.count = i + 1;
+}
+
+/**
+ * Scratch of the narrowphase's calls: the doubles of a contact row for pushContact ([0..2] normal,
+ * [3] separation m, [4] ra m, [5] rb m). The narrowphase's doubles reach its helpers through this,
+ * `sphereArgs` and `segmentArgs`, not as arguments or returns: V8 boxes (allocates) each double
+ * passed to or returned from a call it does not inline, and in a big narrowphase (a Galton board's
+ * segments and pegs) it inlined neither the sweeps nor every pushContact (~0.4 MB a step). Not world state.
+ */
+const rowArgs = new Float64Array(6);
+
+/** Scratch of sphereSweep: [0..2] r, [3..5] w, [6] R, [7] h (see sweepSphere), then [8] its result t. Not world state. */
+const sphereArgs = new Float64Array(9);
+
+/** Scratch of segmentSweep: [0..2] p, [3..5] e, [6..8] w, [9] R, [10] h (see sweepSegment), then [11] its result t. Not world state. */
+const segmentArgs = new Float64Array(12);
+
+/**
+ * Earliest time t in (0, h] at which two spheres with centre offset r (B minus A) and relative
+ * velocity w come to centre distance R, i.e. the smaller root of |r + w t|^2 = R^2; 0 if they
+ * already touch or overlap, or do not meet within h. (Ericson, Real-Time Collision Detection, 5.5.7.)
+ * @category Collision
+ */
+export function sweepSphere(rx: number, ry: number, rz: number, wx: number, wy: number, wz: number, R: number, h: number): number {
+  const io = sphereArgs;
+  io[0] = rx;
+  io[1] = ry;
+  io[2] = rz;
+  io[3] = wx;
+  io[4] = wy;
+  io[5] = wz;
+  io[6] = R;
+  io[7] = h;
+  sphereSweep();
+  return io[8]!;
+}
+
+/** sweepSphere on `sphereArgs` (r, w, R, h in slots 0-7), its t written to slot 8 (no doubles cross the call). */
+function sphereSweep(): void {
+  const io = sphereArgs;
+  const rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    wx = io[3]!,
+    wy = io[4]!,
+    wz = io[5]!,
+    R = io[6]!,
+    h = io[7]!;
+  io[8] = 0;
+  const c = rx * rx + ry * ry + rz * rz - R * R;
+  if (c <= 0) return;
+  const b = rx * wx + ry * wy + rz * wz;
+  if (b >= 0) return;
+  const a = wx * wx + wy * wy + wz * wz;
+  const disc = b * b - a * c;
+  if (disc < 0) return;
+  const t = (-b - Math.sqrt(disc)) / a;
+  io[8] = t > 0 && t <= h ? t : 0;
+}
+
+/**
+ * Earliest time t in (0, h] at which a sphere centre starting at p (relative to the segment's first
+ * end point) and moving with velocity w comes within R of the segment from 0 to e: against the
+ * segment's side (the infinite line, accepted if the touching point lies between the end points) or
+ * against either end point. 0 if it already touches or does not reach the segment within h.
+ * @category Collision
+ */
+export function sweepSegment(
+  px: number,
+  py: number,
+  pz: number,
+  ex: number,
+  ey: number,
+  ez: number,
+  wx: number,
+  wy: number,
+  wz: number,
+  R: number,
+  h: number,
+): number {
+  const io = segmentArgs;
+  io[0] = px;
+  io[1] = py;
+  io[2] = pz;
+  io[3] = ex;
+  io[4] = ey;
+  io[5] = ez;
+  io[6] = wx;
+  io[7] = wy;
+  io[8] = wz;
+  io[9] = R;
+  io[10] = h;
+  segmentSweep();
+  return io[11]!;
+}
+
+/** sweepSegment on `segmentArgs` (p, e, w, R, h in slots 0-10), its t written to slot 11 (no doubles cross the call). */
+function segmentSweep(): void {
+  const io = segmentArgs,
+    sp = sphereArgs;
+  const px = io[0]!,
+    py = io[1]!,
+    pz = io[2]!,
+    ex = io[3]!,
+    ey = io[4]!,
+    ez = io[5]!,
+    wx = io[6]!,
+    wy = io[7]!,
+    wz = io[8]!,
+    R = io[9]!,
+    h = io[10]!;
+  const len2 = ex * ex + ey * ey + ez * ez;
+  let best = 0;
+  if (len2 > 0) {
+    // Side: remove the components along the segment and sweep against the line.
+    const pe = (px * ex + py * ey + pz * ez) / len2,
+      we = (wx * ex + wy * ey + wz * ez) / len2;
+    sp[0] = px - pe * ex;
+    sp[1] = py - pe * ey;
+    sp[2] = pz - pe * ez;
+    sp[3] = wx - we * ex;
+    sp[4] = wy - we * ey;
+    sp[5] = wz - we * ez;
+    sp[6] = R;
+    sp[7] = h;
+    sphereSweep();
+    const t = sp[8]!;
+    if (t > 0) {
+      const u = pe + we * t;
+      if (u >= 0 && u <= 1) {
+        io[11] = t;
+        return;
+      }
+    }
+  }
+  sp[0] = px;
+  sp[1] = py;
+  sp[2] = pz;
+  sp[3] = wx;
+  sp[4] = wy;
+  sp[5] = wz;
+  sp[6] = R;
+  sp[7] = h;
+  sphereSweep();
+  const t0 = sp[8]!;
+  if (t0 > 0) best = t0;
+  sp[0] = px - ex;
+  sp[1] = py - ey;
+  sp[2] = pz - ez;
+  sphereSweep();
+  const t1 = sp[8]!;
+  if (t1 > 0 && (best === 0 || t1 < best)) best = t1;
+  io[11] = best;
+}
+
+/**
+ * Collide stage, part 2: turns candidate pairs into contacts, one point a pair, with normal and
+ * separation measured where the bodies were at the start of the step. A contact is kept if the gap
+ * could close this step: separation < max(0, -v_n) h + d, with v_n the normal relative velocity
+ * after integration and d the speculative distance, at most a quarter of the pair's radii (half the
+ * ball's against static geometry) so small balls do not collect distant neighbours (speculative
+ * contact, Catto GDC 2013; the same test Box2D v3 applies).
+ *
+ * Shapes: ball-ball (circle-circle in 2D, sphere-sphere in 3D: centre distance minus radii);
+ * ball-segment (distance to the closest point of the segment, so end points act as round corners;
+ * Ericson, Real-Time Collision Detection, 5.1.2); ball-boundary (distance to each face of the box);
+ * ball-plane (signed distance n . x - d minus the radius).
+ *
+ * The normal of a contact that will close during the step is taken where the bodies first touch
+ * (a swept test along their relative velocity), not where they were at the start: an oblique
+ * impact then bounces about the true line of centres (Box2D takes the start-of-step normal, which
+ * bends the bounce by up to the angle the bodies turn through in one step).
+ * @category Collision
+ */
+export function narrowphaseSystem(world: PhysicsWorld): void {
+  const c = world.components;
+  const cs = world.collision;
+  const buf = cs.contacts;
+  buf.count = 0;
+  const h = world.h;
+  const spec = cs.settings.speculativeDistance;
+  const spec0 = spec;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const radius = c.Ball.radius;
+  const type = cs.bodyType;
+
+  const pairA = cs.pairA,
+    pairB = cs.pairB,
+    pairKind = cs.pairKind;
+  const S = c.Segment;
+  // A 2D world's z stores hold 0 (bodies/api.ts writes them so; nothing integrates them): not read.
+  const is3D = world.dimensions === 3;
+  const W = rowArgs,
+    SA = sphereArgs,
+    GA = segmentArgs;
+  // The leading ball-ball pairs on the world's threads when it has them (collision/narrowphase/balls-threads.ts: the same contacts in the same order).
+  for (let i = parallelBallContacts(world, cs, buf), n = cs.pairCount; i < n; i++) {
+    const kind = pairKind[i]!;
+    const b = pairB[i]!;
+    if (kind === PairKind.BallBall) {
+      const a = pairA[i]!;
+      if (jointKeepsApart(world.joints, a, b)) continue; // jointed without collideConnected
+      const rx = ox[b]! - ox[a]!,
+        ry = oy[b]! - oy[a]!,
+        rz = is3D ? oz[b]! - oz[a]! : 0;
+      const ra = radius[a]!,
+        rb = radius[b]!;
+      const R = ra + rb;
+      const ta = type[a]!,
+        tb = type[b]!;
+      // Velocity of a static body is 0 by definition (its store is not read).
+      const wx = (tb === BodyType.Static ? 0 : vx[b]!) - (ta === BodyType.Static ? 0 : vx[a]!);
+      const wy = (tb === BodyType.Static ? 0 : vy[b]!) - (ta === BodyType.Static ? 0 : vy[a]!);
+      const wz = is3D ? (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!) : 0;
+      let dx = rx,
+        dy = ry,
+        dz = rz;
+      // Normal where the balls first touch during the step, if they do (see sweepNormal).
+      SA[0] = rx;
+      SA[1] = ry;
+      SA[2] = rz;
+      SA[3] = wx;
+      SA[4] = wy;
+      SA[5] = wz;
+      SA[6] = R;
+      SA[7] = h;
+      sphereSweep();
+      const t = SA[8]!;
+      if (t > 0) {
+        dx += wx * t;
+        dy += wy * t;
+        dz += wz * t;
+      }
+      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      if (d > 1e-12) {
+        const inv = 1 / d;
+        dx *= inv;
+        dy *= inv;
+        dz *= inv;
+      } else {
+        dx = 0;
+        dy = 1;
+        dz = 0;
+      }
+      // Gap along that normal where the balls were at the start of the step.
+      const sep = rx * dx + ry * dy + rz * dz - R;
+      const vn = wx * dx + wy * dy + wz * dz;
+      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.25 * R ? spec : 0.25 * R)) continue;
+      if (ta === BodyType.Static) {
+        W[0] = dx;
+        W[1] = dy;
+        W[2] = dz;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = rb;
+        pushContact(buf, ContactKind.StaticBall, 0, b, a);
+      } else if (tb === BodyType.Static) {
+        W[0] = -dx;
+        W[1] = -dy;
+        W[2] = -dz;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = ra;
+        pushContact(buf, ContactKind.StaticBall, 0, a, b);
+      } else {
+        W[0] = dx;
+        W[1] = dy;
+        W[2] = dz;
+        W[3] = sep;
+        W[4] = ra;
+        W[5] = rb;
+        pushContact(buf, ContactKind.Ball, a, b, 0);
+      }
+    } else {
+      const s = pairA[i]!;
+      const ax = S.ax[s]!,
+        ay = S.ay[s]!,
+        az = S.az[s]!;
+      const ex = S.bx[s]! - ax,
+        ey = S.by[s]! - ay,
+        ez = S.bz[s]! - az;
+      const wx = vx[b]!,
+        wy = vy[b]!,
+        wz = vz[b]!;
+      const R = S.radius[s]! + radius[b]!;
+      // Where the ball's centre is when it first touches the segment this step (or at the start).
+      GA[0] = ox[b]! - ax;
+      GA[1] = oy[b]! - ay;
+      GA[2] = oz[b]! - az;
+      GA[3] = ex;
+      GA[4] = ey;
+      GA[5] = ez;
+      GA[6] = wx;
+      GA[7] = wy;
+      GA[8] = wz;
+      GA[9] = R;
+      GA[10] = h;
+      segmentSweep();
+      const t = GA[11]!;
+      const px = ox[b]! + wx * t,
+        py = oy[b]! + wy * t,
+        pz = oz[b]! + wz * t;
+      const len2 = ex * ex + ey * ey + ez * ez;
+      let u = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
+      u = u < 0 ? 0 : u > 1 ? 1 : u;
+      const qx = ax + u * ex,
+        qy = ay + u * ey,
+        qz = az + u * ez;
+      let dx = px - qx,
+        dy = py - qy,
+        dz = pz - qz;
+      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      if (d > 1e-12) {
+        const inv = 1 / d;
+        dx *= inv;
+        dy *= inv;
+        dz *= inv;
+      } else {
+        // Centre exactly on the segment: push out along the segment's left normal (2D) or +y.
+        const el = Math.sqrt(len2);
+        if (el > 0 && world.dimensions === 2) {
+          dx = -ey / el;
+          dy = ex / el;
+          dz = 0;
+        } else {
+          dx = 0;
+          dy = 1;
+          dz = 0;
+        }
+      }
+      // Gap along that normal from the same feature point, where the ball was at the start of the step.
+      const sep = (ox[b]! - qx) * dx + (oy[b]! - qy) * dy + (oz[b]! - qz) * dz - R;
+      const vn = wx * dx + wy * dy + wz * dz;
+      const rb = radius[b]!;
+      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.5 * rb ? spec : 0.5 * rb)) continue;
+      W[0] = dx;
+      W[1] = dy;
+      W[2] = dz;
+      W[3] = sep;
+      W[4] = 0;
+      W[5] = radius[b]!;
+      pushContact(buf, ContactKind.Segment, 0, b, s);
+    }
+  }
+
+  const box = cs.boundary;
+  if (box.enabled) {
+    const balls = query(world, [c.Position, c.Ball]);
+    const minX = box.min[0]!,
+      minY = box.min[1]!,
+      minZ = box.min[2]!;
+    const maxX = box.max[0]!,
+      maxY = box.max[1]!,
+      maxZ = box.max[2]!;
+    for (let i = 0; i < balls.length; i++) {
+      const b = balls[i]!;
+      if (type[b] >= BodyType.Static) continue;
+      const r = radius[b]!;
+      const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
+      const x = ox[b]!,
+        y = oy[b]!;
+      const sx = vx[b]!,
+        sy = vy[b]!;
+      let sep = x - r - minX;
+      if (sep < (sx < 0 ? -sx * h : 0) + spec) {
+        W[0] = 1;
+        W[1] = 0;
+        W[2] = 0;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 0);
+      }
+      sep = maxX - x - r;
+      if (sep < (sx > 0 ? sx * h : 0) + spec) {
+        W[0] = -1;
+        W[1] = 0;
+        W[2] = 0;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 1);
+      }
+      sep = y - r - minY;
+      if (sep < (sy < 0 ? -sy * h : 0) + spec) {
+        W[0] = 0;
+        W[1] = 1;
+        W[2] = 0;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 2);
+      }
+      sep = maxY - y - r;
+      if (sep < (sy > 0 ? sy * h : 0) + spec) {
+        W[0] = 0;
+        W[1] = -1;
+        W[2] = 0;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 3);
+      }
+      if (is3D) {
+        const z = oz[b]!,
+          sz = vz[b]!;
+        sep = z - r - minZ;
+        if (sep < (sz < 0 ? -sz * h : 0) + spec) {
+          W[0] = 0;
+          W[1] = 0;
+          W[2] = 1;
+          W[3] = sep;
+          W[4] = 0;
+          W[5] = r;
+          pushContact(buf, ContactKind.Boundary, 0, b, 4);
+        }
+        sep = maxZ - z - r;
+        if (sep < (sz > 0 ? sz * h : 0) + spec) {
+          W[0] = 0;
+          W[1] = 0;
+          W[2] = -1;
+          W[3] = sep;
+          W[4] = 0;
+          W[5] = r;
+          pushContact(buf, ContactKind.Boundary, 0, b, 5);
+        }
+      }
+    }
+  }
+  const planes = query(world, [c.Plane]);
+  if (planes.length > 0) {
+    const balls = query(world, [c.Position, c.Ball]);
+    const Pl = c.Plane;
+    for (let j = 0; j < planes.length; j++) {
+      const p = planes[j]!;
+      const nx = Pl.nx[p]!,
+        ny = Pl.ny[p]!,
+        nz = Pl.nz[p]!,
+        d = Pl.d[p]!;
+      for (let i = 0; i < balls.length; i++) {
+        const b = balls[i]!;
+        if (type[b] >= BodyType.Static) continue;
+        const r = radius[b]!;
+        const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
+        const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;
+        if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) {
+          W[0] = nx;
+          W[1] = ny;
+          W[2] = nz;
+          W[3] = sep;
+          W[4] = 0;
+          W[5] = r;
+          pushContact(buf, ContactKind.Plane, 0, b, p);
+        }
+      }
+    }
+  }
+  cs.stats.contacts = buf.count;
+}
+
+/**
+ * Separation now (m, negative when overlapping) of row `i` of a contact buffer, measured at the bodies'
+ * current positions along the current line of centres (or to the segment's closest point, or the
+ * boundary face).
+ * @category Collision
+ */
+export function currentSeparation(world: PhysicsWorld, buf: ContactBuffer, i: number): number {
+  const c = world.components;
+  const px = c.Position.x,
+    py = c.Position.y,
+    pz = c.Position.z;
+  const radius = c.Ball.radius;
+  const kind = buf.kind[i]!,
+    b = buf.b[i]!,
+    f = buf.feature[i]!;
+  if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
+    const a = kind === ContactKind.Ball ? buf.a[i]! : f;
+    const dx = px[b]! - px[a]!,
+      dy = py[b]! - py[a]!,
+      dz = pz[b]! - pz[a]!;
+    return Math.sqrt(dx * dx + dy * dy + dz * dz) - radius[a]! - radius[b]!;
+  }
+  if (kind === ContactKind.Boundary) {
+    const box = world.collision.boundary;
+    const r = radius[b]!;
+    switch (f) {
+      case 0:
+        return px[b]! - r - box.min[0]!;
+      case 1:
+        return box.max[0]! - px[b]! - r;
+      case 2:
+        return py[b]! - r - box.min[1]!;
+      case 3:
+        return box.max[1]! - py[b]! - r;
+      case 4:
+        return pz[b]! - r - box.min[2]!;
+      default:
+        return box.max[2]! - pz[b]! - r;
+    }
+  }
+  if (kind === ContactKind.Plane) {
+    const Pl = c.Plane;
+    return px[b]! * Pl.nx[f]! + py[b]! * Pl.ny[f]! + pz[b]! * Pl.nz[f]! - Pl.d[f]! - radius[b]!;
+  }
+  const S = c.Segment;
+  const ax = S.ax[f]!,
+    ay = S.ay[f]!,
+    az = S.az[f]!;
+  const ex = S.bx[f]! - ax,
+    ey = S.by[f]! - ay,
+    ez = S.bz[f]! - az;
+  const len2 = ex * ex + ey * ey + ez * ez;
+  const qx = px[b]!,
+    qy = py[b]!,
+    qz = pz[b]!;
+  let t = len2 > 0 ? ((qx - ax) * ex + (qy - ay) * ey + (qz - az) * ez) / len2 : 0;
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  const dx = qx - (ax + t * ex),
+    dy = qy - (ay + t * ey),
+    dz = qz - (az + t * ez);
+  return Math.sqrt(dx * dx + dy * dy + dz * dz) - S.radius[f]! - radius[b]!;
+}

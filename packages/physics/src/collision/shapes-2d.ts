@@ -1,0 +1,763 @@
+import { hasComponent } from 'bitecs';
+import { wakeIsland } from '../islands/sleep.js';
+import { wakeIslandForStep } from '../islands/step-wake.js';
+import { jointKeepsApart } from '../joints/connected.js';
+import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geometry-2d.js';
+import { SHAPE_STRIDE, type ShapeStore } from '../shapes/store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
+import { broadphaseSystem } from './broadphase/grid.js';
+import { pushEvent } from './events.js';
+import { growManifoldBuffer, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
+import { narrowphaseSystem } from './narrowphase/balls.js';
+import { collideHalfPlane, collideShapes, createManifold, type Manifold } from './narrowphase/manifold-2d.js';
+import { BodyType } from './state.js';
+
+/**
+ * Collide stage, shapes (2D): the broadphase and narrowphase of every shape (`Components.Shape`) and
+ * of balls against shapes, writing manifolds for the contact solver (solver/contact-solver.ts solves them in the same
+ * substeps as the ball contacts; solver/manifold-rows-2d.ts). Ball-ball, ball-segment, ball-plane and
+ * ball-boundary contacts stay with collision/broadphase/grid.ts and collision/narrowphase/balls.ts.
+ *
+ * Broadphase: each collider's bounding box where its body was at the start of the step, fattened by a
+ * speculative margin (|v| h, plus |w| h times its reach, plus the speculative distance), goes into a
+ * uniform grid whose cell is the largest box of the ordinary colliders; a box is filed under the cell
+ * of its lower corner, so two ordinary boxes can overlap only if their cells are neighbours, and each
+ * pair is met once through half the neighbourhood. Colliders much larger than the mean (a 100 m
+ * ground beside half-metre boxes) stay out of the grid and visit the cells their box covers, so mixed
+ * sizes keep the cost linear in the number of colliders.
+ *
+ * Filtering: shapes of one body never collide; a pair collides when each one's category meets the
+ * other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which neither
+ * body is dynamic are skipped, and so are bodies joined by a joint without `collideConnected`
+ * (joints/connected.ts).
+ *
+ * Narrowphase (collision/narrowphase/manifold-2d.ts): each candidate pair's manifold at the start-of-step transforms, keeping a
+ * point if its separation is below the speculative distance plus what the point's approach speed
+ * closes in one step, at most the two shapes' thickness between dynamic and static shapes (speculative
+ * contacts, Catto GDC 2013); a body that moves farther than its own size is swept after the solver
+ * (collision/continuous-2d.ts: the continuous collision of bullets). Sensor pairs report overlap events instead of
+ * manifolds.
+ * @category Collision
+ */
+export function shapeCollisionSystem(world: PhysicsWorld): void {
+  const cs = world.collision;
+  const st = cs.shapes;
+  if (!st.active || world.dimensions !== 2) return;
+  if (st.eventStep !== world.steps) {
+    st.eventStep = world.steps;
+    const ev = st.events;
+    ev.begin.count = 0;
+    ev.end.count = 0;
+    ev.sensorBegin.count = 0;
+    ev.sensorEnd.count = 0;
+  }
+  // A sleeping island that a moving or kinematic body reaches wakes and joins this step's solve (so
+  // the hit's momentum goes into it); the pairs are then found again with it awake. Woken balls are
+  // classified by the ball broadphase, which runs again with them (their ball contacts too).
+  const c = world.components;
+  for (let pass = 0; ; pass++) {
+    st.manifolds.count = 0;
+    st.wake.length = 0;
+    st.wakeNow.length = 0;
+    gatherColliders(world, st);
+    findPairs(st.scratch, st.anyMoving);
+    collidePairs(world, st);
+    if (st.wakeNow.length === 0 || pass >= MAX_WAKE_PASSES) break;
+    let woken = 0,
+      balls = false;
+    for (const e of st.wakeNow) {
+      if (hasComponent(world, e, c.Ball)) balls = true;
+      woken += wakeIslandForStep(world, e);
+    }
+    if (woken === 0) break;
+    if (balls) {
+      broadphaseSystem(world);
+      narrowphaseSystem(world);
+    }
+  }
+  sensorEvents(world, st);
+  collideStatic(world, st);
+  if (st.wake.length > 0) {
+    // Sleeping bodies leaning on a resting body: woken for the next step (this step they held still).
+    for (const e of st.wake) if (hasComponent(world, e, c.Sleeping)) wakeIsland(world, e);
+    st.wake.length = 0;
+  }
+}
+
+/** Passes of the shape collision after which no more sleeping islands are woken within the step. */
+const MAX_WAKE_PASSES = 8;
+
+function ensureScratch(sc: ShapeScratch, n: number): void {
+  if (sc.shape.length >= n) return;
+  let m = Math.max(64, sc.shape.length);
+  while (m < n) m *= 2;
+  const f = (): Float64Array => new Float64Array(m);
+  const i = (): Int32Array => new Int32Array(m);
+  sc.shape = i();
+  sc.body = i();
+  sc.x = f();
+  sc.y = f();
+  sc.c = f();
+  sc.s = f();
+  sc.minX = f();
+  sc.minY = f();
+  sc.maxX = f();
+  sc.maxY = f();
+  sc.spec = f();
+  sc.size = f();
+  sc.flags = new Uint8Array(m);
+  sc.cellX = i();
+  sc.cellY = i();
+  sc.bucket = i();
+  sc.sorted = i();
+  sc.oversized = i();
+}
+
+/**
+ * Lists this step's colliders (shape entities, and ball bodies as circles), fills the per-body solver
+ * scratch of shape bodies (body type, inverse mass and inertia) and each collider's start-of-step
+ * transform and fattened box.
+ */
+function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const c = world.components,
+    cs = world.collision,
+    sc = st.scratch;
+  const shapes = query(world, [c.Shape]);
+  const balls = query(world, [c.Position, c.Ball]);
+  const n = shapes.length + balls.length;
+  ensureScratch(sc, n);
+  sc.count = n;
+  const S = c.Shape;
+  const type = cs.bodyType,
+    invMass = cs.invMass,
+    invInertia = cs.invInertia;
+  const px = c.Position.x,
+    py = c.Position.y,
+    ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    wz = c.AngularVelocity.z,
+    ang = c.Angle.value;
+  const h = world.h,
+    spec0 = cs.settings.speculativeDistance;
+  const halfSpec = 0.5 * spec0;
+  const SX = S.vx,
+    SY = S.vy,
+    R = S.radius,
+    CNT = S.count,
+    BODY = S.body;
+  const mark = ++st.bodyMark;
+  st.anyMoving = false;
+  const bodyMarks = st.bodyMarks;
+  for (let i = 0; i < n; i++) {
+    const isBall = i >= shapes.length;
+    const e = isBall ? balls[i - shapes.length]! : shapes[i]!;
+    const b = isBall ? e : BODY[e]!;
+    sc.shape[i] = e;
+    sc.body[i] = b;
+    let t: number;
+    if (!isBall && bodyMarks[b] !== mark) {
+      // Shape bodies: classify once a step (balls were classified by the ball broadphase).
+      bodyMarks[b] = mark;
+      if (hasComponent(world, b, c.Static)) {
+        t = BodyType.Static;
+        invMass[b] = 0;
+        invInertia[b] = 0;
+        ox[b] = px[b]!;
+        oy[b] = py[b]!;
+      } else if (hasComponent(world, b, c.Kinematic)) {
+        t = BodyType.Kinematic;
+        invMass[b] = 0;
+        invInertia[b] = 0;
+      } else if (hasComponent(world, b, c.Sleeping)) {
+        t = BodyType.Sleeping;
+        invMass[b] = 0;
+        invInertia[b] = 0;
+      } else {
+        t = BodyType.Dynamic;
+        invMass[b] = c.Mass.inv[b]!;
+        invInertia[b] = hasComponent(world, b, c.Inertia) && hasComponent(world, b, c.AngularVelocity) ? c.Inertia.inv[b]! : 0;
+      }
+      type[b] = t;
+      const turns = (t === BodyType.Dynamic || t === BodyType.Kinematic) && hasComponent(world, b, c.AngularVelocity);
+      st.bodyW[b] = turns ? wz[b]! : 0;
+      st.bodyAngle0[b] = (hasComponent(world, b, c.Angle) ? ang[b]! : 0) - st.bodyW[b]! * h;
+    } else if (isBall) {
+      st.bodyW[b] = type[b] === BodyType.Dynamic && hasComponent(world, b, c.AngularVelocity) ? wz[b]! : 0;
+      st.bodyAngle0[b] = 0;
+    }
+    t = type[b]!;
+    const moving = t === BodyType.Dynamic || t === BodyType.Kinematic;
+    sc.flags[i] = (moving ? MOVING : 0) | (isBall && !hasComponent(world, b, c.Shape) ? BALL : 0);
+    if (moving) st.anyMoving = true;
+    const x = ox[b]!,
+      y = oy[b]!,
+      a0 = st.bodyAngle0[b]!;
+    const co = Math.cos(a0),
+      si = Math.sin(a0);
+    sc.x[i] = x;
+    sc.y[i] = y;
+    sc.c[i] = co;
+    sc.s[i] = si;
+    let x0 = Infinity,
+      y0 = Infinity,
+      x1 = -Infinity,
+      y1 = -Infinity,
+      reach = 0,
+      r: number;
+    if (isBall) {
+      r = c.Ball.radius[b]!;
+      x0 = x;
+      x1 = x;
+      y0 = y;
+      y1 = y;
+    } else {
+      r = R[e]!;
+      const o = SHAPE_STRIDE * e;
+      for (let k = 0, m = CNT[e]!; k < m; k++) {
+        const lx = SX[o + k]!,
+          ly = SY[o + k]!;
+        const wx = x + co * lx - si * ly,
+          wy = y + si * lx + co * ly;
+        if (wx < x0) x0 = wx;
+        if (wx > x1) x1 = wx;
+        if (wy < y0) y0 = wy;
+        if (wy > y1) y1 = wy;
+        const d2 = lx * lx + ly * ly;
+        if (d2 > reach) reach = d2;
+      }
+    }
+    reach = Math.sqrt(reach) + r;
+    const size = 0.5 * Math.min(x1 - x0, y1 - y0) + r;
+    const spec = spec0 < SPECULATIVE_FRACTION * size ? spec0 : SPECULATIVE_FRACTION * size;
+    sc.spec[i] = spec;
+    sc.size[i] = size;
+    let pad = r + (spec < halfSpec ? spec : halfSpec);
+    if (moving) {
+      const sx = vx[b]!,
+        sy = vy[b]!;
+      pad += Math.sqrt(sx * sx + sy * sy) * h + Math.abs(st.bodyW[b]!) * h * reach;
+    }
+    sc.minX[i] = x0 - pad;
+    sc.minY[i] = y0 - pad;
+    sc.maxX[i] = x1 + pad;
+    sc.maxY[i] = y1 + pad;
+  }
+}
+
+/**
+ * Speculative distance of a shape as a fraction of its size (half its smaller extent), at most the
+ * world's `speculativeDistance`: 0.02 m for a 1 m box, Box2D's 4 linear slops, so neighbours standing
+ * 5 cm apart in a row do not become contacts; smaller shapes get proportionally less.
+ */
+const SPECULATIVE_FRACTION = 0.04;
+
+/**
+ * Collider flags (ShapeScratch.flags).
+ * @category Collision
+ */
+export const MOVING = 1,
+  BALL = 2;
+
+/** Colliders wider than this many times the mean box width skip the grid. */
+const OVERSIZED_FACTOR = 4;
+
+function hashCell(cx: number, cy: number): number {
+  return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663)) >>> 0;
+}
+
+/** Half neighbourhood of the lower-corner grid (see the module comment). */
+const HALF = [1, 0, 1, 1, 0, 1, -1, 1];
+
+/** Fills the candidate pairs of colliders whose fattened boxes overlap (before filtering). */
+function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
+  const n = sc.count;
+  sc.pairCount = 0;
+  if (n < 2 || !anyMoving) return;
+  const fl = sc.flags;
+  const minX = sc.minX,
+    minY = sc.minY,
+    maxX = sc.maxX,
+    maxY = sc.maxY;
+  let mean = 0;
+  for (let i = 0; i < n; i++) mean += Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
+  mean /= n;
+  const limit = OVERSIZED_FACTOR * mean;
+  let cell = 0;
+  for (let i = 0; i < n; i++) {
+    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
+    if (w <= limit && w > cell) cell = w;
+  }
+  const inv = 1 / cell;
+  let table = 16;
+  while (table < 2 * n) table *= 2;
+  if (sc.bucketStart.length < table + 1) sc.bucketStart = new Int32Array(table + 1);
+  const start = sc.bucketStart,
+    mask = table - 1;
+  start.fill(0, 0, table + 1);
+  const cellX = sc.cellX,
+    cellY = sc.cellY,
+    bucket = sc.bucket,
+    sorted = sc.sorted,
+    over = sc.oversized;
+  let overCount = 0;
+  for (let i = 0; i < n; i++) {
+    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
+    if (w > limit) {
+      bucket[i] = -1;
+      over[overCount++] = i;
+      continue;
+    }
+    const cx = Math.floor(minX[i]! * inv),
+      cy = Math.floor(minY[i]! * inv);
+    cellX[i] = cx;
+    cellY[i] = cy;
+    const b = hashCell(cx, cy) & mask;
+    bucket[i] = b;
+    start[b + 1]!++;
+  }
+  for (let b = 0; b < table; b++) start[b + 1]! += start[b]!;
+  for (let i = 0; i < n; i++) {
+    const b = bucket[i]!;
+    if (b >= 0) sorted[start[b]!++] = i;
+  }
+  for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
+  start[0] = 0;
+  const small = n - overCount;
+
+  for (let p = 0; p < small; p++) {
+    const i = sorted[p]!;
+    const mi = fl[i]! & MOVING;
+    const cx = cellX[i]!,
+      cy = cellY[i]!;
+    const ax0 = minX[i]!,
+      ay0 = minY[i]!,
+      ax1 = maxX[i]!,
+      ay1 = maxY[i]!;
+    const own = bucket[i]!;
+    for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
+      const j = sorted[q]!;
+      if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
+      if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
+    }
+    for (let k = 0; k < 8; k += 2) {
+      const nx = cx + HALF[k]!,
+        ny = cy + HALF[k + 1]!;
+      const bk = hashCell(nx, ny) & mask;
+      for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
+        const j = sorted[q]!;
+        if (cellX[j] !== nx || cellY[j] !== ny || (mi | (fl[j]! & MOVING)) === 0) continue;
+        if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
+      }
+    }
+  }
+  for (let a = 0; a < overCount; a++) {
+    const i = over[a]!;
+    const mi = fl[i]! & MOVING;
+    const ax0 = minX[i]!,
+      ay0 = minY[i]!,
+      ax1 = maxX[i]!,
+      ay1 = maxY[i]!;
+    for (let b2 = a + 1; b2 < overCount; b2++) {
+      const j = over[b2]!;
+      if ((mi | (fl[j]! & MOVING)) === 0) continue;
+      if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
+    }
+    // Ordinary boxes overlapping this one have their lower corner in [min - cell, max].
+    const cx0 = Math.floor((ax0 - cell) * inv),
+      cx1 = Math.floor(ax1 * inv);
+    const cy0 = Math.floor((ay0 - cell) * inv),
+      cy1 = Math.floor(ay1 * inv);
+    if ((cx1 - cx0 + 1) * (cy1 - cy0 + 1) > small) {
+      for (let p = 0; p < small; p++) {
+        const j = sorted[p]!;
+        if ((mi | (fl[j]! & MOVING)) === 0) continue;
+        if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
+      }
+      continue;
+    }
+    for (let cy = cy0; cy <= cy1; cy++) {
+      for (let cx = cx0; cx <= cx1; cx++) {
+        const bk = hashCell(cx, cy) & mask;
+        for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
+          const j = sorted[q]!;
+          if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
+          if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
+        }
+      }
+    }
+  }
+}
+
+function pushPair(sc: ShapeScratch, i: number, j: number): void {
+  const k = sc.pairCount;
+  if (k >= sc.pairI.length) {
+    const a = new Int32Array(k * 2),
+      b = new Int32Array(k * 2);
+    a.set(sc.pairI);
+    b.set(sc.pairJ);
+    sc.pairI = a;
+    sc.pairJ = b;
+  }
+  sc.pairI[k] = i;
+  sc.pairJ[k] = j;
+  sc.pairCount = k + 1;
+}
+
+/**
+ * Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide.
+ * @category Collision
+ */
+export function shouldCollide(S: ShapeStore, a: number, aBall: boolean, b: number, bBall: boolean): boolean {
+  const ga = aBall ? 0 : S.group[a]!,
+    gb = bBall ? 0 : S.group[b]!;
+  if (ga === gb && ga !== 0) return ga > 0;
+  const ca = aBall ? 1 : S.category[a]!,
+    ma = aBall ? 0xffffffff : S.mask[a]!;
+  const cb = bBall ? 1 : S.category[b]!,
+    mb = bBall ? 0xffffffff : S.mask[b]!;
+  return (ca & mb) !== 0 && (cb & ma) !== 0;
+}
+
+const gA = createGeometry(),
+  gB = createGeometry();
+const mf = createManifold();
+
+/**
+ * Reads collider `e`'s geometry: a shape from the store, or a ball body as a circle.
+ * @category Collision
+ */
+export function colliderGeometry(world: PhysicsWorld, e: number, g: ConvexGeometry): boolean {
+  const c = world.components,
+    S = c.Shape;
+  if (S.body.length > e && hasComponent(world, e, c.Shape)) {
+    const n = S.count[e]!,
+      o = SHAPE_STRIDE * e;
+    g.kind = S.kind[e]!;
+    g.count = n;
+    g.radius = S.radius[e]!;
+    for (let i = 0; i < n; i++) {
+      g.vx[i] = S.vx[o + i]!;
+      g.vy[i] = S.vy[o + i]!;
+      g.nx[i] = S.nx[o + i]!;
+      g.ny[i] = S.ny[o + i]!;
+    }
+    return false;
+  }
+  g.kind = ShapeKind.Circle;
+  g.count = 1;
+  g.radius = c.Ball.radius[e]!;
+  g.vx[0] = 0;
+  g.vy[0] = 0;
+  g.nx[0] = 0;
+  g.ny[0] = 1;
+  return true;
+}
+
+/** Narrowphase of the candidate pairs: manifolds for the solver, overlaps for sensors. */
+function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const c = world.components,
+    cs = world.collision,
+    sc = st.scratch,
+    S = c.Shape;
+  const type = cs.bodyType;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y;
+  const h = world.h;
+  const sensorNow = st.sensorNow;
+  sensorNow.clear();
+  for (let k = 0, n = sc.pairCount; k < n; k++) {
+    let i = sc.pairI[k]!,
+      j = sc.pairJ[k]!;
+    let ea = sc.shape[i]!,
+      eb = sc.shape[j]!;
+    let ba = sc.body[i]!,
+      bb = sc.body[j]!;
+    if (ba === bb) continue;
+    const ta = type[ba]!,
+      tb = type[bb]!;
+    // Pairs without a dynamic body are skipped, but for a kinematic body reaching a sleeping one.
+    if (ta !== BodyType.Dynamic && tb !== BodyType.Dynamic && !kinematicMeetsSleeper(ta, tb)) continue;
+    // Keep the lower shape id as A so a pair's key does not depend on the grid's order.
+    if (ea > eb) {
+      let t = i;
+      i = j;
+      j = t;
+      t = ea;
+      ea = eb;
+      eb = t;
+      t = ba;
+      ba = bb;
+      bb = t;
+    }
+    const aBall = (sc.flags[i]! & BALL) !== 0,
+      bBall = (sc.flags[j]! & BALL) !== 0;
+    if (aBall && bBall) continue; // ball-ball: collision/narrowphase/balls.ts
+    if (!shouldCollide(S, ea, aBall, eb, bBall)) continue;
+    if (jointKeepsApart(world.joints, ba, bb)) continue;
+    colliderGeometry(world, ea, gA);
+    colliderGeometry(world, eb, gB);
+    const sensor = (!aBall && S.sensor[ea] === 1) || (!bBall && S.sensor[eb] === 1);
+    const tA = type[ba]!,
+      tB = type[bb]!;
+    const mA = tA === BodyType.Dynamic || tA === BodyType.Kinematic,
+      mB = tB === BodyType.Dynamic || tB === BodyType.Kinematic;
+    const vax = mA ? vx[ba]! : 0,
+      vay = mA ? vy[ba]! : 0,
+      vbx = mB ? vx[bb]! : 0,
+      vby = mB ? vy[bb]! : 0;
+    const wa = st.bodyW[ba]!,
+      wb = st.bodyW[bb]!;
+    const spec = sc.spec[i]! < sc.spec[j]! ? sc.spec[i]! : sc.spec[j]!;
+    const dvx = vbx - vax,
+      dvy = vby - vay;
+    const reachA = 0.5 * (sc.maxX[i]! - sc.minX[i]! + sc.maxY[i]! - sc.minY[i]!),
+      reachB = 0.5 * (sc.maxX[j]! - sc.minX[j]! + sc.maxY[j]! - sc.minY[j]!);
+    let closing = (Math.sqrt(dvx * dvx + dvy * dvy) + Math.abs(wa) * reachA + Math.abs(wb) * reachB) * h;
+    // Speculation reaches as far as the two shapes are thick; a faster approach between dynamic (or
+    // static) shapes is the continuous sweep's (collision/continuous-2d.ts): a normal chosen this far apart is often
+    // the wrong face's (a ghost contact that deflects a bullet over a wall's end). Balls and kinematic
+    // bodies are not swept, so they keep the whole margin.
+    if (!aBall && !bBall && tA !== BodyType.Kinematic && tB !== BodyType.Kinematic) {
+      const thick = sc.size[i]! + sc.size[j]!;
+      if (closing > thick) closing = thick;
+    }
+    collideShapes(mf, gA, sc.x[i]!, sc.y[i]!, sc.c[i]!, sc.s[i]!, gB, sc.x[j]!, sc.y[j]!, sc.c[j]!, sc.s[j]!, spec + closing);
+    if (mf.count === 0) continue;
+    if (sensor) {
+      let overlap = false;
+      for (let p = 0; p < mf.count; p++) if (mf.separation[p]! < 0) overlap = true;
+      if (overlap) {
+        const sensorFirst = !aBall && S.sensor[ea] === 1;
+        sensorNow.add(sensorFirst ? ea * 33554432 + eb : eb * 33554432 + ea);
+      }
+      continue;
+    }
+    if (tA === BodyType.Sleeping || tB === BodyType.Sleeping) {
+      // A sleeping body reached by a moving (kinematic, or dynamic and not resting) one wakes now and
+      // takes part in this step's solve (the pass is run again). Met by a resting body it holds still
+      // as immovable geometry this step, and wakes for the next.
+      const sleeper = tA === BodyType.Sleeping ? ba : bb,
+        other = sleeper === ba ? bb : ba,
+        tOther = sleeper === ba ? tB : tA;
+      if (tOther === BodyType.Kinematic || cs.sleep.restTime[other] === 0) {
+        st.wakeNow.push(sleeper);
+        continue;
+      }
+      st.wake.push(sleeper);
+    }
+    pushManifold(st, mf, ea, eb, ba, bb, sc.x[i]!, sc.y[i]!, sc.x[j]!, sc.y[j]!, vax, vay, wa, vbx, vby, wb, spec, h);
+  }
+}
+
+/** Sensor events: the overlaps found this step (`sensorNow`) that began or ended since the last. */
+function sensorEvents(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const S = world.components.Shape,
+    sensorNow = st.sensorNow;
+  const prev = st.sensorPairs,
+    ev = st.events;
+  for (const key of sensorNow) {
+    if (prev.has(key)) continue;
+    const a = Math.floor(key / 33554432),
+      b = key - a * 33554432;
+    pushEvent(world, ev.sensorBegin, a, b, S.body[a]!, sensorBody(world, b));
+  }
+  for (const key of prev) {
+    if (sensorNow.has(key)) continue;
+    const a = Math.floor(key / 33554432),
+      b = key - a * 33554432;
+    pushEvent(world, ev.sensorEnd, a, b, S.body[a]!, sensorBody(world, b));
+  }
+  st.sensorPairs = sensorNow;
+  st.sensorNow = prev;
+}
+
+/** Whether one of two body types is kinematic and the other sleeping (a pair met only to wake the sleeper). */
+function kinematicMeetsSleeper(ta: number, tb: number): boolean {
+  return (ta === BodyType.Kinematic && tb === BodyType.Sleeping) || (ta === BodyType.Sleeping && tb === BodyType.Kinematic);
+}
+
+function sensorBody(world: PhysicsWorld, e: number): number {
+  const c = world.components;
+  return c.Shape.body.length > e && hasComponent(world, e, c.Shape) ? c.Shape.body[e]! : e;
+}
+
+/**
+ * Appends manifold `m` (A's body at (xa, ya), B's at (xb, yb), start of step) as a solver row, keeping
+ * the points whose separation the step can close (speculative test with each point's own approach speed).
+ */
+function pushManifold(
+  st: ShapeCollisionState,
+  m: Manifold,
+  ea: number,
+  eb: number,
+  ba: number,
+  bb: number,
+  xa: number,
+  ya: number,
+  xb: number,
+  yb: number,
+  vax: number,
+  vay: number,
+  wa: number,
+  vbx: number,
+  vby: number,
+  wb: number,
+  spec: number,
+  h: number,
+): void {
+  const buf = st.manifolds;
+  const nx = m.nx,
+    ny = m.ny;
+  let row = buf.count;
+  if (row >= buf.capacity) growManifoldBuffer(buf, row + 1);
+  let count = 0;
+  for (let p = 0; p < m.count; p++) {
+    const x = m.px[p]!,
+      y = m.py[p]!;
+    const rax = x - xa,
+      ray = y - ya,
+      rbx = x - xb,
+      rby = y - yb;
+    const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
+    const sep = m.separation[p]!;
+    if (sep >= (vn < 0 ? -vn * h : 0) + spec) continue;
+    const q = 2 * row + count;
+    buf.px[q] = x;
+    buf.py[q] = y;
+    buf.rAx[q] = rax;
+    buf.rAy[q] = ray;
+    buf.rBx[q] = rbx;
+    buf.rBy[q] = rby;
+    buf.separation[q] = sep;
+    buf.id[q] = m.id[p]!;
+    buf.relativeVelocity[q] = vn;
+    count++;
+  }
+  if (count === 0) return;
+  buf.shapeA[row] = ea;
+  buf.shapeB[row] = eb;
+  buf.bodyA[row] = ba;
+  buf.bodyB[row] = bb;
+  buf.nx[row] = nx;
+  buf.ny[row] = ny;
+  buf.pointCount[row] = count;
+  buf.count = row + 1;
+  row++;
+}
+
+/** Every non-ball shape of a dynamic body against planes, static segments and the boundary box. */
+function collideStatic(world: PhysicsWorld, st: ShapeCollisionState): void {
+  const c = world.components,
+    cs = world.collision,
+    sc = st.scratch,
+    S = c.Shape;
+  const type = cs.bodyType,
+    h = world.h;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y;
+  const planes = query(world, [c.Plane]);
+  const segs = query(world, [c.Segment]);
+  const box = cs.boundary;
+  if (planes.length === 0 && segs.length === 0 && !box.enabled) return;
+  const Pl = c.Plane,
+    Sg = c.Segment;
+  for (let i = 0; i < sc.count; i++) {
+    const e = sc.shape[i]!,
+      b = sc.body[i]!;
+    if (type[b] !== BodyType.Dynamic) continue;
+    if (!(S.body.length > e && hasComponent(world, e, c.Shape)) || S.sensor[e] === 1) continue;
+    colliderGeometry(world, e, gB);
+    const x = sc.x[i]!,
+      y = sc.y[i]!,
+      co = sc.c[i]!,
+      si = sc.s[i]!;
+    const w = st.bodyW[b]!,
+      vbx = vx[b]!,
+      vby = vy[b]!;
+    const spec = sc.spec[i]!;
+    const reach = 0.5 * (sc.maxX[i]! - sc.minX[i]! + sc.maxY[i]! - sc.minY[i]!);
+    const closing = (Math.sqrt(vbx * vbx + vby * vby) + Math.abs(w) * reach) * h;
+    const x0 = sc.minX[i]!,
+      y0 = sc.minY[i]!,
+      x1 = sc.maxX[i]!,
+      y1 = sc.maxY[i]!;
+    if (box.enabled) {
+      const bx0 = box.min[0]!,
+        by0 = box.min[1]!,
+        bx1 = box.max[0]!,
+        by1 = box.max[1]!;
+      if (x0 < bx0) {
+        collideHalfPlane(mf, 1, 0, bx0, gB, x, y, co, si, spec + closing, 0);
+        pushStatic(st, mf, -1, e, b, x, y, vbx, vby, w, spec, h);
+      }
+      if (x1 > bx1) {
+        collideHalfPlane(mf, -1, 0, -bx1, gB, x, y, co, si, spec + closing, 0);
+        pushStatic(st, mf, -2, e, b, x, y, vbx, vby, w, spec, h);
+      }
+      if (y0 < by0) {
+        collideHalfPlane(mf, 0, 1, by0, gB, x, y, co, si, spec + closing, 0);
+        pushStatic(st, mf, -3, e, b, x, y, vbx, vby, w, spec, h);
+      }
+      if (y1 > by1) {
+        collideHalfPlane(mf, 0, -1, -by1, gB, x, y, co, si, spec + closing, 0);
+        pushStatic(st, mf, -4, e, b, x, y, vbx, vby, w, spec, h);
+      }
+    }
+    for (let k = 0; k < planes.length; k++) {
+      const p = planes[k]!;
+      const pnx = Pl.nx[p]!,
+        pny = Pl.ny[p]!,
+        d = Pl.d[p]!;
+      // Reject by the box's corner nearest the plane.
+      const near = (pnx > 0 ? x0 : x1) * pnx + (pny > 0 ? y0 : y1) * pny - d;
+      if (near > 0) continue;
+      collideHalfPlane(mf, pnx, pny, d, gB, x, y, co, si, spec + closing, 0);
+      pushStatic(st, mf, p, e, b, x, y, vbx, vby, w, spec, h);
+    }
+    for (let k = 0; k < segs.length; k++) {
+      const s = segs[k]!;
+      const r = Sg.radius[s]!;
+      const ax = Sg.ax[s]!,
+        ay = Sg.ay[s]!,
+        bx = Sg.bx[s]!,
+        by = Sg.by[s]!;
+      if (Math.min(ax, bx) - r > x1 || Math.max(ax, bx) + r < x0 || Math.min(ay, by) - r > y1 || Math.max(ay, by) + r < y0) continue;
+      const len = Math.hypot(bx - ax, by - ay);
+      if (!(len > 0)) continue;
+      gA.kind = ShapeKind.Capsule;
+      gA.count = 2;
+      gA.radius = r;
+      gA.vx[0] = ax;
+      gA.vy[0] = ay;
+      gA.vx[1] = bx;
+      gA.vy[1] = by;
+      gA.nx[0] = (by - ay) / len;
+      gA.ny[0] = -(bx - ax) / len;
+      gA.nx[1] = -gA.nx[0]!;
+      gA.ny[1] = -gA.ny[0]!;
+      collideShapes(mf, gA, 0, 0, 1, 0, gB, x, y, co, si, spec + closing);
+      pushStatic(st, mf, s, e, b, x, y, vbx, vby, w, spec, h);
+    }
+  }
+}
+
+function pushStatic(
+  st: ShapeCollisionState,
+  m: Manifold,
+  feature: number,
+  e: number,
+  b: number,
+  x: number,
+  y: number,
+  vbx: number,
+  vby: number,
+  w: number,
+  spec: number,
+  h: number,
+): void {
+  if (m.count === 0) return;
+  pushManifold(st, m, feature, e, 0, b, 0, 0, x, y, 0, 0, 0, vbx, vby, w, spec, h);
+}

@@ -1,0 +1,289 @@
+import { addComponent, hasComponent, removeComponent } from 'bitecs';
+import { ecsOf } from '../particles/archetype.js';
+import { resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { Not, query } from '../world/query.js';
+import { joinJointIslands, markJointSupport } from './joints-2d.js';
+import { joinJoint3DIslands, markJoint3DSupport } from './joints-3d.js';
+import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shapes-2d.js';
+import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shapes-3d.js';
+
+/**
+ * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
+ * costing anything. A dynamic collider whose speed stays below `linearSpeed` and spin below
+ * `angularSpeed` accumulates rest time; islands are the bodies joined by contacts that carried an
+ * impulse this step (union-find); when every body of an island has rested `timeToSleep`, the island
+ * sleeps: velocities zeroed, the `Sleeping` tag added, and integration and the contact solver skip it.
+ * Only a supported body rests: one that carried a contact impulse this step. A body in free flight
+ * (a balloon creeping to its equilibrium height, a projectile at its apex) never sleeps, however slow.
+ *
+ * A sleeping body wakes when an awake or kinematic body comes into contact range (the broadphase
+ * wakes it for that step), when its velocity is written (`setVelocity`, `applyImpulse`, or a direct
+ * write to the store, noticed at the next step), when `wakeBody` is called, when gravity changes, or
+ * when a body it touched is removed. Bodies driven by time-varying forces (driving or random forces,
+ * thrust) or held by springs never sleep: their forces would be ignored while asleep.
+ */
+
+/**
+ * Removes the Sleeping tag and resets the rest time (the body takes part again from the next system on).
+ * @category Collision
+ */
+export function wakeTag(world: PhysicsWorld, eid: number): void {
+  const c = world.components;
+  if (hasComponent(world, eid, c.Sleeping)) removeComponent(world, eid, c.Sleeping);
+  world.collision.sleep.restTime[eid] = 0;
+}
+
+/**
+ * Wakes the whole island a sleeping body sleeps in (an awake body: just itself).
+ * @category Collision
+ */
+export function wakeIsland(world: PhysicsWorld, eid: number): void {
+  const c = world.components;
+  if (!hasComponent(world, eid, c.Sleeping)) {
+    world.collision.sleep.restTime[eid] = 0;
+    return;
+  }
+  const id = world.collision.sleep.island[eid]!;
+  const asleep = Array.from(query(world, [c.Sleeping]));
+  const island = world.collision.sleep.island;
+  for (const e of asleep) if (island[e] === id) wakeTag(world, e);
+}
+
+/**
+ * Whether a body is asleep. @param body a body's handle.
+ * @throws RangeError on a removed entity or one that is not a body.
+ * @category Collision
+ */
+export function isSleeping(world: PhysicsWorld, body: number): boolean {
+  return hasComponent(world, resolveKind(world, body, 'body', 'isSleeping'), world.components.Sleeping);
+}
+
+/**
+ * Wakes a body and the island it sleeps in (no-op if it is awake). Use it after changing a sleeping
+ * body's forces or position by writing components directly. @param body a body's handle.
+ * @throws RangeError on a removed entity or one that is not a body.
+ * @category Collision
+ */
+export function wakeBody(world: PhysicsWorld, body: number): void {
+  wakeIsland(world, resolveKind(world, body, 'body', 'wakeBody'));
+}
+
+/**
+ * Wakes every sleeping body.
+ * @category Collision
+ */
+export function wakeAll(world: PhysicsWorld): void {
+  const asleep = query(world, [world.components.Sleeping]);
+  const ids = Array.from(asleep);
+  for (const e of ids) wakeTag(world, e);
+}
+
+/**
+ * Stage 1 (first): wakes sleeping bodies whose velocity has been written since they fell asleep, and
+ * everything if gravity changed.
+ * @category Collision
+ */
+export function wakeSystem(world: PhysicsWorld): void {
+  const sl = world.collision.sleep;
+  const g = world.gravity,
+    last = sl.lastGravity;
+  const gravityChanged = g[0] !== last[0] || g[1] !== last[1] || g[2] !== last[2];
+  last[0] = g[0]!;
+  last[1] = g[1]!;
+  last[2] = g[2]!;
+  if (!sl.anyAsleep) return;
+  if (gravityChanged) {
+    wakeAll(world);
+    return;
+  }
+  const c = world.components;
+  const asleep = query(world, [c.Sleeping, c.Velocity]);
+  if (asleep.length === 0) {
+    sl.anyAsleep = false;
+    return;
+  }
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  let woken: number[] | null = null;
+  for (let i = 0; i < asleep.length; i++) {
+    const e = asleep[i]!;
+    if (vx[e] !== 0 || vy[e] !== 0 || vz[e] !== 0) (woken ??= []).push(e);
+  }
+  if (woken) for (const e of woken) wakeIsland(world, e);
+}
+
+/** Wakes the island of every body in `list` (none when null). */
+function wakeIslandsOf(world: PhysicsWorld, list: number[] | null): void {
+  if (list !== null) for (const e of list) wakeIsland(world, e);
+}
+
+/**
+ * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
+ * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
+ * not join islands (a floor does not tie every pile together).
+ * @category Collision
+ */
+export function sleepSystem(world: PhysicsWorld): void {
+  const cs = world.collision;
+  const sl = cs.sleep;
+  const c = world.components;
+  if (!sl.enabled) {
+    cs.stats.sleeping = 0;
+    return;
+  }
+  const bodies = withShape3DBodies(
+    world,
+    withShapeBodies(world, query(world, [c.Position, c.Velocity, c.Ball, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)])),
+  );
+  const n = bodies.length;
+  const rest = sl.restTime,
+    parent = sl.parent,
+    islandRest = sl.islandRest;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const wx = c.AngularVelocity.x,
+    wy = c.AngularVelocity.y,
+    wz = c.AngularVelocity.z;
+  const lin2 = sl.linearSpeed * sl.linearSpeed,
+    ang2 = sl.angularSpeed * sl.angularSpeed;
+  const dt = world.dt;
+  const rows = cs.cache.rows;
+  // Support: a body rests only while some contact pushed it this step.
+  const stamp = ++sl.stamp,
+    supported = sl.supported;
+  for (let i = 0; i < rows.count; i++) {
+    if (rows.normalImpulse[i]! <= 0) continue;
+    supported[rows.a[i]!] = stamp;
+    supported[rows.b[i]!] = stamp;
+  }
+  markJointSupport(world, supported, stamp);
+  markJoint3DSupport(world, supported, stamp);
+  markShapeSupport(world, supported, stamp);
+  markShape3DSupport(world, supported, stamp);
+  // Whether a body has AngularVelocity, from bitecs' component masks (what hasComponent reads, without
+  // its lookups per body): no entry, no body has it.
+  const ecs = ecsOf(world);
+  const spin = ecs.componentMap.get(c.AngularVelocity);
+  const spinMasks = spin === undefined ? null : ecs.entityMasks[spin.generationId]!,
+    spinBit = spin === undefined ? 0 : spin.bitflag;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
+    const w2 = spinMasks !== null && ((spinMasks[e] ?? 0) & spinBit) === spinBit ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
+    rest[e] = v2 < lin2 && w2 < ang2 && supported[e] === stamp ? rest[e]! + dt : 0;
+    parent[e] = e;
+  }
+  // Bodies that must stay awake: time-varying forces, springs.
+  for (const comp of [c.DrivingForce, c.RandomForce, c.Thrust]) {
+    const ents = query(world, [comp]);
+    for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
+  }
+  const springs = query(world, [c.Spring]);
+  for (let i = 0; i < springs.length; i++) {
+    const s = springs[i]!;
+    rest[c.Spring.a[s]!] = 0;
+    rest[c.Spring.b[s]!] = 0;
+  }
+  // An island sleeps only when every body in it has rested timeToSleep (its least rest time, below):
+  // with no such body there are no sleepers, and the islands need not be found (a pile still settling
+  // pays for no union-find). The joints still zero the rest time of the bodies they hold awake.
+  const T = sl.timeToSleep;
+  let candidates = 0;
+  for (let i = 0; i < n; i++)
+    if (rest[bodies[i]!]! >= T) {
+      candidates++;
+      break;
+    }
+  if (candidates === 0) {
+    joinJointIslands(world, bodies, rest, parent);
+    wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
+    cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+    return;
+  }
+  // Islands over contacts between dynamic awake bodies that pushed.
+  const find = (x: number): number => {
+    while (parent[x] !== x) {
+      parent[x] = parent[parent[x]!]!;
+      x = parent[x]!;
+    }
+    return x;
+  };
+  for (let i = 0; i < rows.count; i++) {
+    if (rows.kind[i] !== 0 || rows.normalImpulse[i]! <= 0) continue;
+    const a = rows.a[i]!,
+      b = rows.b[i]!;
+    if (cs.bodyType[a] !== 0 || cs.bodyType[b] !== 0) continue;
+    const ra = find(a),
+      rb = find(b);
+    if (ra !== rb) parent[ra] = rb;
+  }
+  // ... over shape contacts ...
+  joinShapeIslands(world, parent, find);
+  joinShape3DIslands(world, parent, find);
+  // ... and over joints (2D and 3D; `supported` is read no more this step, and marks the candidates).
+  joinJointIslands(world, bodies, rest, parent);
+  wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
+  for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    const r = find(e);
+    if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
+  }
+  let sleepers: number[] | null = null;
+  for (let i = 0; i < n; i++) {
+    const e = bodies[i]!;
+    if (islandRest[find(e)]! >= T) (sleepers ??= []).push(e);
+  }
+  if (sleepers) {
+    const O = c.PreviousPosition,
+      P = c.Position;
+    const island = sl.island;
+    for (const e of sleepers) {
+      island[e] = find(e);
+      vx[e] = 0;
+      vy[e] = 0;
+      vz[e] = 0;
+      if (hasComponent(world, e, c.AngularVelocity)) {
+        wx[e] = 0;
+        wy[e] = 0;
+        wz[e] = 0;
+      }
+      O.x[e] = P.x[e]!;
+      O.y[e] = P.y[e]!;
+      O.z[e] = P.z[e]!;
+      addComponent(world, e, c.Sleeping);
+    }
+    sl.anyAsleep = true;
+  }
+  cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+}
+
+/**
+ * Removal hook: a body removed from a sleeping pile wakes its island; an awake one wakes the islands of
+ * the sleeping bodies it touched in the last step.
+ * @category Collision
+ */
+export function wakeTouching(world: PhysicsWorld, eid: number): void {
+  const cs = world.collision;
+  if (!cs.sleep.anyAsleep) return;
+  const c = world.components;
+  if (hasComponent(world, eid, c.Sleeping)) {
+    wakeIsland(world, eid);
+    return;
+  }
+  wakeTouching3D(world, eid);
+  const rows = cs.cache.rows;
+  for (let i = 0; i < rows.count; i++) {
+    const a = rows.a[i]!,
+      b = rows.b[i]!,
+      f = rows.feature[i]!;
+    const touches = a === eid || b === eid || (rows.kind[i] !== 0 && rows.kind[i] !== 1 && f === eid);
+    if (!touches) continue;
+    for (const other of [a, b]) {
+      if (other !== 0 && other !== eid && hasComponent(world, other, c.Sleeping)) wakeIsland(world, other);
+    }
+  }
+}

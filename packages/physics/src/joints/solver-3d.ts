@@ -1,0 +1,883 @@
+import { BodyType } from '../collision/broadphase/grid.js';
+import { contact3DStateOf } from '../collision/manifolds-3d.js';
+import { classifyBody3D } from '../collision/shapes-3d.js';
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { removeJoint3DUnchecked } from './api-3d.js';
+import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
+
+/**
+ * The 3D joints' rows of the contact solver (joints/solver-3d.ts calls these next to the contacts', in the same
+ * soft substeps, on the same packed body state): Box2D v3's joints (joint.c, revolute_joint.c,
+ * weld_joint.c, distance_joint.c) carried to 3D, with the world inverse inertia tensors of
+ * solver/manifold-rows-3d.ts.
+ *
+ * - Each body's pose during the substeps: position = base + displacement, orientation = exp(theta) q
+ *   with theta the rotation owed so far (exact rotation of the component orientation).
+ * - Point rows (ball, hinge, fixed): C = p_B + r_B - p_A - r_A = 0 as one 3 x 3 block, K P = sum over
+ *   bodies of (P / m + (I^-1 (r x P)) x r); soft (Box2D's joint softness: 60 Hz capped at a quarter of
+ *   the substep rate, damping ratio 2, i.e. 2 zeta) with bias, rigid in the relax passes.
+ * - Angular lock: the error rotation E = conj(q_A) q_B conj(q_rest) as the small-angle vector 2 vec(E)
+ *   (A's frame, turned to the world); fixed: three rows with K = I_A^-1 + I_B^-1; hinge: the two rows
+ *   perpendicular to the axis. The hinge angle is 2 atan2(vec(E) . axis, w(E)); its limits are one-sided
+ *   rows (speculative when apart), its motor a row bounded by the largest torque times h_s.
+ * - Cone: the angle between A's axis and B's (phi) stays <= the half angle: a one-sided row about
+ *   n = a_A x a_B / |a_A x a_B|, with d phi / dt = (w_B - w_A) . n.
+ * - Slider: the fixed joint's three angular rows, the point block restricted to the plane
+ *   perpendicular to A's axis u (K' = P K P + u u^T, P = 1 - u u^T), and along u, at the point of A
+ *   under B's anchor, a translation limit (one-sided rows, speculative when apart) and a motor bounded
+ *   by the largest force times h_s (Box2D v3 prismatic_joint.c).
+ * - Distance: a row along the anchors' line, equality (rod), spring (Box2D's soft spring of `hertz`
+ *   and `dampingRatio`) and one-sided limits.
+ * - Warm start (every row, Box2D v3's joints): the point and angular-lock impulses (world vectors), the
+ *   hinge's and slider's limit and motor impulses (signed along the axis; a limit's impulse from the
+ *   other side is taken back when the near side changes), the cone's (>= 0 about the current n; reset
+ *   when n is undefined, the axes parallel) and the distance joint's rod or spring impulse (`lx`) and
+ *   lower and upper limit impulses (`limit`, `ly`, each >= 0, along the current anchor line; reset when
+ *   the anchors meet) are applied again, unscaled, at the start of each substep. After the substeps a
+ *   joint whose force (impulse / h_s) or torque passes its threshold breaks: it is removed and listed
+ *   in `joint3DBreaks`.
+ */
+
+/** Joint stiffness (Box2D v3 defaults: joint hertz 60, damping ratio 2), capped at a quarter of the substep rate. */
+const JOINT_HERTZ = 60,
+  JOINT_DAMPING = 2;
+
+let ka = new Int32Array(16),
+  kb = new Int32Array(16);
+const jsoft = new Float64Array(3),
+  spring = new Float64Array(3);
+
+/**
+ * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
+ * (>= 0) integrated implicitly over `h` (s) into out[0..2]: bias rate omega / (2 zeta + h omega) (1/s),
+ * mass scale a / (1 + a), impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
+ * Constraints", GDC 2011; Box2D v3 b2MakeSoft); hertz 0 gives the rigid 0, 1, 0. Finite and in range
+ * at any hertz: a spring so soft that a rounds to 0 (a denormal hertz) gives 0, 0, 1 (no impulse), one
+ * so stiff that a overflows gives 1 / h, 1, 0 (as joints/solver-2d.ts `soft`).
+ */
+function makeSoft(out: Float64Array, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    out[0] = 0;
+    out[1] = 1;
+    out[2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz,
+    hw = h * omega,
+    a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    out[0] = 0;
+    out[1] = 0;
+    out[2] = 1;
+    return;
+  }
+  out[0] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  out[1] = 1 / (1 + 1 / a);
+  out[2] = 1 / (1 + a);
+}
+
+/**
+ * Whether the world has 3D joints.
+ * @category Joints and ropes
+ */
+export function joints3DToSolve(world: PhysicsWorld): boolean {
+  const s = joints3DOf(world);
+  return world.dimensions === 3 && s !== undefined && s.list.length > 0;
+}
+
+/**
+ * Gives the joints' moving bodies solver indices (continuing the list); returns the new count.
+ * @category Joints and ropes
+ */
+export function gatherJoint3DBodies(world: PhysicsWorld, count: number): number {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return count;
+  if (s.breaks.length > 0 && s.breaks[0]![3] !== world.steps) s.breaks.length = 0;
+  const n = s.list.length;
+  if (ka.length < n) {
+    ka = new Int32Array(2 * n);
+    kb = new Int32Array(2 * n);
+  }
+  const cs = world.collision,
+    mark = cs.solverMark,
+    index = cs.solverIndex,
+    stamp = cs.solverStamp;
+  let list = cs.solverBodies;
+  for (let i = 0; i < n; i++) {
+    const j: number = s.list[i]!;
+    for (let side = 0; side < 2; side++) {
+      const e = side === 0 ? s.a[j]! : s.b[j]!;
+      let k = 0;
+      if (e !== 0) {
+        const t = classifyBody3D(world, e);
+        if (t === BodyType.Dynamic || t === BodyType.Kinematic) {
+          if (mark[e] !== stamp) {
+            mark[e] = stamp;
+            if (count >= list.length) {
+              const l = new Int32Array(list.length * 2);
+              l.set(list);
+              list = l;
+            }
+            index[e] = count;
+            list[count++] = e;
+          }
+          k = index[e]!;
+        }
+      }
+      if (side === 0) ka[i] = k;
+      else kb[i] = k;
+    }
+  }
+  cs.solverBodies = list;
+  return count;
+}
+
+/**
+ * Softness for this step, and marks the joint bodies as pushed. Every row's impulse is kept (warm start).
+ * @category Joints and ropes
+ */
+export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3 || s.list.length === 0) return;
+  contact3DStateOf(world, true);
+  makeSoft(jsoft, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
+  const sb = world.collision.bodyState;
+  for (let i = 0; i < s.list.length; i++) {
+    if (ka[i]! > 0) sb[12 * ka[i]! + 11] = 1;
+    if (kb[i]! > 0) sb[12 * kb[i]! + 11] = 1;
+  }
+}
+
+// Per-call scratch: pose of the two ends.
+const qa = new Float64Array(4),
+  qb = new Float64Array(4),
+  pa = new Float64Array(3),
+  pb = new Float64Array(3),
+  ra = new Float64Array(3),
+  rb = new Float64Array(3);
+
+/** Current orientation and position of joint end e (solver index k) into q and p. */
+function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array, p: Float64Array): void {
+  if (e === 0) {
+    q[0] = 0;
+    q[1] = 0;
+    q[2] = 0;
+    q[3] = 1;
+    p[0] = 0;
+    p[1] = 0;
+    p[2] = 0;
+    return;
+  }
+  const c = world.components,
+    Q = c.Orientation;
+  let x = Q.x[e]!,
+    y = Q.y[e]!,
+    z = Q.z[e]!,
+    w = Q.w[e]!;
+  if (k === 0) {
+    q[0] = x;
+    q[1] = y;
+    q[2] = z;
+    q[3] = w;
+    p[0] = c.Position.x[e]!;
+    p[1] = c.Position.y[e]!;
+    p[2] = c.Position.z[e]!;
+    return;
+  }
+  const ex = world.collision.bodyExtra,
+    sb = world.collision.bodyState;
+  const rx = ex[6 * k + 3]!,
+    ry = ex[6 * k + 4]!,
+    rz = ex[6 * k + 5]!,
+    a = Math.hypot(rx, ry, rz);
+  if (a > 0) {
+    const f = Math.sin(a / 2) / a,
+      dx = rx * f,
+      dy = ry * f,
+      dz = rz * f,
+      dw = Math.cos(a / 2);
+    const nx = dw * x + dx * w + dy * z - dz * y,
+      ny = dw * y - dx * z + dy * w + dz * x,
+      nz = dw * z + dx * y - dy * x + dz * w,
+      nw = dw * w - dx * x - dy * y - dz * z;
+    x = nx;
+    y = ny;
+    z = nz;
+    w = nw;
+  }
+  q[0] = x;
+  q[1] = y;
+  q[2] = z;
+  q[3] = w;
+  p[0] = ex[6 * k]! + sb[12 * k + 6]!;
+  p[1] = ex[6 * k + 1]! + sb[12 * k + 7]!;
+  p[2] = ex[6 * k + 2]! + sb[12 * k + 8]!;
+}
+
+function rot(q: Float64Array, vx: number, vy: number, vz: number, out: Float64Array): void {
+  const x = q[0]!,
+    y = q[1]!,
+    z = q[2]!,
+    w = q[3]!;
+  const tx = 2 * (y * vz - z * vy),
+    ty = 2 * (z * vx - x * vz),
+    tz = 2 * (x * vy - y * vx);
+  out[0] = vx + w * tx + (y * tz - z * ty);
+  out[1] = vy + w * ty + (z * tx - x * tz);
+  out[2] = vz + w * tz + (x * ty - y * tx);
+}
+
+/** I^-1 v for solver body k (0: zero) into out. */
+function invI(T: Float64Array, k: number, vx: number, vy: number, vz: number, out: Float64Array, o: number): void {
+  const t = 6 * k;
+  out[o] = T[t]! * vx + T[t + 3]! * vy + T[t + 4]! * vz;
+  out[o + 1] = T[t + 3]! * vx + T[t + 1]! * vy + T[t + 5]! * vz;
+  out[o + 2] = T[t + 4]! * vx + T[t + 5]! * vy + T[t + 2]! * vz;
+}
+
+const tmp = new Float64Array(6);
+
+/** Linear impulse P at the anchors: -P to A, +P to B. */
+function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: number, px: number, py: number, pz: number): void {
+  if (a > 0) {
+    const o = 12 * a,
+      m = sb[o + 9]!;
+    sb[o] = sb[o]! - m * px;
+    sb[o + 1] = sb[o + 1]! - m * py;
+    sb[o + 2] = sb[o + 2]! - m * pz;
+    invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
+    sb[o + 3] = sb[o + 3]! - tmp[0]!;
+    sb[o + 4] = sb[o + 4]! - tmp[1]!;
+    sb[o + 5] = sb[o + 5]! - tmp[2]!;
+  }
+  if (b > 0) {
+    const o = 12 * b,
+      m = sb[o + 9]!;
+    sb[o] = sb[o]! + m * px;
+    sb[o + 1] = sb[o + 1]! + m * py;
+    sb[o + 2] = sb[o + 2]! + m * pz;
+    invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
+    sb[o + 3] = sb[o + 3]! + tmp[0]!;
+    sb[o + 4] = sb[o + 4]! + tmp[1]!;
+    sb[o + 5] = sb[o + 5]! + tmp[2]!;
+  }
+}
+
+/** Angular impulse L: -L to A, +L to B. */
+function applyAngular(sb: Float64Array, T: Float64Array, a: number, b: number, lx: number, ly: number, lz: number): void {
+  if (a > 0) {
+    invI(T, a, lx, ly, lz, tmp, 0);
+    const o = 12 * a;
+    sb[o + 3] = sb[o + 3]! - tmp[0]!;
+    sb[o + 4] = sb[o + 4]! - tmp[1]!;
+    sb[o + 5] = sb[o + 5]! - tmp[2]!;
+  }
+  if (b > 0) {
+    invI(T, b, lx, ly, lz, tmp, 0);
+    const o = 12 * b;
+    sb[o + 3] = sb[o + 3]! + tmp[0]!;
+    sb[o + 4] = sb[o + 4]! + tmp[1]!;
+    sb[o + 5] = sb[o + 5]! + tmp[2]!;
+  }
+}
+
+/** Relative velocity of the anchors, vB + wB x rB - vA - wA x rA, into out[0..2]. */
+function anchorVelocity(sb: Float64Array, a: number, b: number, out: Float64Array): void {
+  const oa = 12 * a,
+    ob = 12 * b;
+  out[0] = sb[ob]! + sb[ob + 4]! * rb[2]! - sb[ob + 5]! * rb[1]! - sb[oa]! - (sb[oa + 4]! * ra[2]! - sb[oa + 5]! * ra[1]!);
+  out[1] = sb[ob + 1]! + sb[ob + 5]! * rb[0]! - sb[ob + 3]! * rb[2]! - sb[oa + 1]! - (sb[oa + 5]! * ra[0]! - sb[oa + 3]! * ra[2]!);
+  out[2] = sb[ob + 2]! + sb[ob + 3]! * rb[1]! - sb[ob + 4]! * rb[0]! - sb[oa + 2]! - (sb[oa + 3]! * ra[1]! - sb[oa + 4]! * ra[0]!);
+}
+
+/** Solves the 3 x 3 system M x = r (M row-major) in place into x by Cramer's rule; a singular M gives 0. */
+function solve3(M: Float64Array, r0: number, r1: number, r2: number, x: Float64Array): void {
+  const a = M[0]!,
+    b = M[1]!,
+    c = M[2]!,
+    d = M[3]!,
+    e = M[4]!,
+    f = M[5]!,
+    g = M[6]!,
+    h = M[7]!,
+    i = M[8]!;
+  const A = e * i - f * h,
+    B = -(d * i - f * g),
+    C = d * h - e * g;
+  const det = a * A + b * B + c * C;
+  if (!(Math.abs(det) > 0)) {
+    x[0] = 0;
+    x[1] = 0;
+    x[2] = 0;
+    return;
+  }
+  const inv = 1 / det;
+  x[0] = inv * (A * r0 + (c * h - b * i) * r1 + (b * f - c * e) * r2);
+  x[1] = inv * (B * r0 + (a * i - c * g) * r1 + (c * d - a * f) * r2);
+  x[2] = inv * (C * r0 + (b * g - a * h) * r1 + (a * e - b * d) * r2);
+}
+
+const K = new Float64Array(9),
+  x3 = new Float64Array(3),
+  v3 = new Float64Array(3),
+  ax = new Float64Array(3),
+  bx = new Float64Array(3);
+
+/**
+ * Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance).
+ * @category Joints and ropes
+ */
+export function warmStartJoints3D(world: PhysicsWorld): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const sb = world.collision.bodyState,
+    T = contact3DStateOf(world, true).invInertia;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!;
+    pose(world, s.a[j]!, ka[i]!, qa, pa);
+    pose(world, s.b[j]!, kb[i]!, qb, pb);
+    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
+    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    if (s.type[j] === Joint3DType.Distance) {
+      // Rod or spring (lx) and lower limit (limit) push B along u = (anchor B - anchor A) / len, the upper limit (ly) against it.
+      const dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
+        dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
+        dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+      const len = Math.hypot(dx, dy, dz),
+        P = s.lx[j]! + s.limit[j]! - s.ly[j]!;
+      if (len > 1e-12 && P !== 0) applyLinear(sb, T, ka[i]!, kb[i]!, (P * dx) / len, (P * dy) / len, (P * dz) / len);
+      continue;
+    }
+    applyLinear(sb, T, ka[i]!, kb[i]!, s.lx[j]!, s.ly[j]!, s.lz[j]!);
+    applyAngular(sb, T, ka[i]!, kb[i]!, s.wx[j]!, s.wy[j]!, s.wz[j]!);
+    const axial = s.limit[j]! + s.motor[j]!;
+    if (axial !== 0 && (s.type[j] === Joint3DType.Hinge || s.type[j] === Joint3DType.Slider)) {
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+      if (s.type[j] === Joint3DType.Hinge) applyAngular(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+      else {
+        sliderAnchor();
+        applyLinear(sb, T, ka[i]!, kb[i]!, axial * ax[0]!, axial * ax[1]!, axial * ax[2]!);
+      }
+    }
+    if (s.type[j] === Joint3DType.Ball && s.limit[j]! !== 0) {
+      // Cone: the impulse acts about -n, n = a_A x a_B / |a_A x a_B| (as in the solve).
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+      rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+      const nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
+        ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
+        nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+      const sn = Math.hypot(nx, ny, nz),
+        l = -s.limit[j]! / sn;
+      if (sn > 1e-9) applyAngular(sb, T, ka[i]!, kb[i]!, l * nx, l * ny, l * nz);
+    }
+  }
+}
+
+/** Slider: moves A's anchor (ra) to the point of A under B's anchor (ra + C), where the axial rows act. */
+function sliderAnchor(): void {
+  ra[0] = pb[0]! + rb[0]! - pa[0]!;
+  ra[1] = pb[1]! + rb[1]! - pa[1]!;
+  ra[2] = pb[2]! + rb[2]! - pa[2]!;
+}
+
+/** Effective mass denominator of a linear row along unit u at the anchors ra, rb: 1/m_A + 1/m_B + (r x u) . I^-1 (r x u) for both. */
+function linearK(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
+  const cax = ra[1]! * uz - ra[2]! * uy,
+    cay = ra[2]! * ux - ra[0]! * uz,
+    caz = ra[0]! * uy - ra[1]! * ux;
+  const cbx = rb[1]! * uz - rb[2]! * uy,
+    cby = rb[2]! * ux - rb[0]! * uz,
+    cbz = rb[0]! * uy - rb[1]! * ux;
+  invI(T, a, cax, cay, caz, tmp, 0);
+  invI(T, b, cbx, cby, cbz, tmp, 3);
+  return sb[12 * a + 9]! + sb[12 * b + 9]! + cax * tmp[0]! + cay * tmp[1]! + caz * tmp[2]! + cbx * tmp[3]! + cby * tmp[4]! + cbz * tmp[5]!;
+}
+
+/**
+ * A linear row along unit u at the anchors (impulse +lambda u to B), with effective mass 1 / k:
+ * lambda = clamp(acc - ms (cdot + bias) / k - is acc, lo, hi); applies the change, returns the new lambda.
+ */
+function linearRow(
+  sb: Float64Array,
+  T: Float64Array,
+  a: number,
+  b: number,
+  ux: number,
+  uy: number,
+  uz: number,
+  k: number,
+  cdot: number,
+  bias: number,
+  ms: number,
+  is: number,
+  acc: number,
+  lo: number,
+  hi: number,
+): number {
+  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
+  lam = lam < lo ? lo : lam > hi ? hi : lam;
+  const d = lam - acc;
+  if (d !== 0) applyLinear(sb, T, a, b, d * ux, d * uy, d * uz);
+  return lam;
+}
+
+/** Relative velocity of the anchors along unit u. */
+function anchorSpeed(sb: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
+  anchorVelocity(sb, a, b, v3);
+  return v3[0]! * ux + v3[1]! * uy + v3[2]! * uz;
+}
+
+/** K := P K P + u u^T with P = 1 - u u^T: the 3 x 3 block restricted to the plane perpendicular to unit u (invertible, the same on the plane). */
+function restrictToPlane(ux: number, uy: number, uz: number): void {
+  P9[0] = 1 - ux * ux;
+  P9[1] = -ux * uy;
+  P9[2] = -ux * uz;
+  P9[3] = -uy * ux;
+  P9[4] = 1 - uy * uy;
+  P9[5] = -uy * uz;
+  P9[6] = -uz * ux;
+  P9[7] = -uz * uy;
+  P9[8] = 1 - uz * uz;
+  for (let r = 0; r < 3; r++)
+    for (let c = 0; c < 3; c++) {
+      let v = 0;
+      for (let m = 0; m < 3; m++) for (let n = 0; n < 3; n++) v += P9[3 * r + m]! * K[3 * m + n]! * P9[3 * n + c]!;
+      KP[3 * r + c] = v;
+    }
+  const u0 = ux,
+    u1 = uy,
+    u2 = uz;
+  K[0] = KP[0]! + u0 * u0;
+  K[1] = KP[1]! + u0 * u1;
+  K[2] = KP[2]! + u0 * u2;
+  K[3] = KP[3]! + u1 * u0;
+  K[4] = KP[4]! + u1 * u1;
+  K[5] = KP[5]! + u1 * u2;
+  K[6] = KP[6]! + u2 * u0;
+  K[7] = KP[7]! + u2 * u1;
+  K[8] = KP[8]! + u2 * u2;
+}
+
+const P9 = new Float64Array(9),
+  KP = new Float64Array(9);
+
+/** A one-sided or bounded angular row along unit u (impulse +lambda u to B): returns the new accumulated impulse. */
+function angularRow(
+  sb: Float64Array,
+  T: Float64Array,
+  a: number,
+  b: number,
+  ux: number,
+  uy: number,
+  uz: number,
+  cdot: number,
+  bias: number,
+  ms: number,
+  is: number,
+  acc: number,
+  lo: number,
+  hi: number,
+): number {
+  invI(T, a, ux, uy, uz, tmp, 0);
+  invI(T, b, ux, uy, uz, tmp, 3);
+  const k = ux * (tmp[0]! + tmp[3]!) + uy * (tmp[1]! + tmp[4]!) + uz * (tmp[2]! + tmp[5]!);
+  if (!(k > 0)) return acc;
+  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
+  lam = lam < lo ? lo : lam > hi ? hi : lam;
+  const d = lam - acc;
+  if (d !== 0) applyAngular(sb, T, a, b, d * ux, d * uy, d * uz);
+  return lam;
+}
+
+/**
+ * One pass over the joints: soft with `useBias`, else relaxing (no bias).
+ * @category Joints and ropes
+ */
+export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const sb = world.collision.bodyState,
+    T = contact3DStateOf(world, true).invInertia;
+  const bRate = useBias ? jsoft[0]! : 0,
+    ms = useBias ? jsoft[1]! : 1,
+    is = useBias ? jsoft[2]! : 0;
+  for (let i = 0; i < s.list.length; i++) {
+    const j = s.list[i]!,
+      a = ka[i]!,
+      b = kb[i]!,
+      type = s.type[j]!,
+      flags = s.flags[j]!;
+    const oa = 12 * a,
+      ob = 12 * b;
+    pose(world, s.a[j]!, a, qa, pa);
+    pose(world, s.b[j]!, b, qb, pb);
+    rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
+    rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
+    const wx = sb[ob + 3]! - sb[oa + 3]!,
+      wy = sb[ob + 4]! - sb[oa + 4]!,
+      wz = sb[ob + 5]! - sb[oa + 5]!;
+    if (type === Joint3DType.Distance) {
+      let dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
+        dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
+        dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+      const len = Math.hypot(dx, dy, dz);
+      // No direction: nothing was warm-started; the rows start again from zero.
+      if (!(len > 1e-12)) {
+        s.lx[j] = 0;
+        s.limit[j] = 0;
+        s.ly[j] = 0;
+        continue;
+      }
+      dx /= len;
+      dy /= len;
+      dz /= len;
+      const k = linearK(sb, T, a, b, dx, dy, dz);
+      if (!(k > 0)) continue;
+      const L = s.length[j]!;
+      if (flags & Joint3DFlag.Spring) {
+        if (useBias) {
+          makeSoft(spring, s.hertz[j]!, s.dampingRatio[j]!, hs);
+          s.lx[j] = linearRow(
+            sb,
+            T,
+            a,
+            b,
+            dx,
+            dy,
+            dz,
+            k,
+            anchorSpeed(sb, a, b, dx, dy, dz),
+            spring[0]! * (len - L),
+            spring[1]!,
+            spring[2]!,
+            s.lx[j]!,
+            -Infinity,
+            Infinity,
+          );
+        }
+      } else if (!(flags & Joint3DFlag.Limit)) {
+        s.lx[j] = linearRow(
+          sb,
+          T,
+          a,
+          b,
+          dx,
+          dy,
+          dz,
+          k,
+          anchorSpeed(sb, a, b, dx, dy, dz),
+          bRate * (len - L),
+          ms,
+          is,
+          s.lx[j]!,
+          -Infinity,
+          Infinity,
+        );
+      }
+      if (flags & Joint3DFlag.Limit) {
+        // One-sided rows: len >= lower (impulse along +u) and len <= upper (along -u); speculative when apart.
+        if (s.lower[j]! > 0 || !(flags & Joint3DFlag.Spring)) {
+          const C = len - s.lower[j]!;
+          const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
+            m = C > 0 || !useBias ? 1 : ms,
+            im = C > 0 || !useBias ? 0 : is;
+          s.limit[j] = linearRow(sb, T, a, b, dx, dy, dz, k, anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.limit[j]!, 0, Infinity);
+        }
+        if (Number.isFinite(s.upper[j]!)) {
+          const C = s.upper[j]! - len;
+          const bias = C > 0 ? C / hs : useBias ? bRate * C : 0,
+            m = C > 0 || !useBias ? 1 : ms,
+            im = C > 0 || !useBias ? 0 : is;
+          s.ly[j] = linearRow(sb, T, a, b, -dx, -dy, -dz, k, -anchorSpeed(sb, a, b, dx, dy, dz), bias, m, im, s.ly[j]!, 0, Infinity);
+        }
+      }
+      continue;
+    }
+    // Error rotation E = conj(qA) qB conj(q_rest) (A's frame).
+    const x1 = -qa[0]!,
+      y1 = -qa[1]!,
+      z1 = -qa[2]!,
+      w1 = qa[3]!,
+      x2 = qb[0]!,
+      y2 = qb[1]!,
+      z2 = qb[2]!,
+      w2 = qb[3]!;
+    const rx = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+      ry = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+      rz = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+      rw = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+    const cx = -s.rx[j]!,
+      cy = -s.ry[j]!,
+      cz = -s.rz[j]!,
+      cw = s.rw[j]!;
+    let ex = rw * cx + rx * cw + ry * cz - rz * cy,
+      ey = rw * cy - rx * cz + ry * cw + rz * cx,
+      ez = rw * cz + rx * cy - ry * cx + rz * cw;
+    let ew = rw * cw - rx * cx - ry * cy - rz * cz;
+    if (ew < 0) {
+      ex = -ex;
+      ey = -ey;
+      ez = -ez;
+      ew = -ew;
+    }
+    if (type === Joint3DType.Fixed || type === Joint3DType.Hinge || type === Joint3DType.Slider) {
+      rot(qa, 2 * ex, 2 * ey, 2 * ez, ax); // the error as a world rotation vector
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx); // hinge axis, world
+      // Angular lock (fixed: 3 rows; hinge: the 2 perpendicular to the axis), K = I_A^-1 + I_B^-1.
+      for (let c = 0; c < 3; c++) {
+        const ux = c === 0 ? 1 : 0,
+          uy = c === 1 ? 1 : 0,
+          uz = c === 2 ? 1 : 0;
+        invI(T, a, ux, uy, uz, tmp, 0);
+        invI(T, b, ux, uy, uz, tmp, 3);
+        K[c] = tmp[0]! + tmp[3]!;
+        K[3 + c] = tmp[1]! + tmp[4]!;
+        K[6 + c] = tmp[2]! + tmp[5]!;
+      }
+      let r0 = wx + bRate * ax[0]!,
+        r1 = wy + bRate * ax[1]!,
+        r2 = wz + bRate * ax[2]!;
+      if (type === Joint3DType.Hinge) {
+        // Remove the axial part: project the residual and the system onto the plane perpendicular to the axis.
+        const hx = bx[0]!,
+          hy = bx[1]!,
+          hz = bx[2]!;
+        const d = r0 * hx + r1 * hy + r2 * hz;
+        r0 -= d * hx;
+        r1 -= d * hy;
+        r2 -= d * hz;
+        restrictToPlane(hx, hy, hz);
+      }
+      solve3(K, r0, r1, r2, x3);
+      let lx = -ms * x3[0]! - is * s.wx[j]!,
+        ly = -ms * x3[1]! - is * s.wy[j]!,
+        lz = -ms * x3[2]! - is * s.wz[j]!;
+      if (type === Joint3DType.Hinge) {
+        const d = lx * bx[0]! + ly * bx[1]! + lz * bx[2]!;
+        lx -= d * bx[0]!;
+        ly -= d * bx[1]!;
+        lz -= d * bx[2]!;
+      }
+      s.wx[j] = s.wx[j]! + lx;
+      s.wy[j] = s.wy[j]! + ly;
+      s.wz[j] = s.wz[j]! + lz;
+      applyAngular(sb, T, a, b, lx, ly, lz);
+      if (type === Joint3DType.Hinge && flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
+        const hx = bx[0]!,
+          hy = bx[1]!,
+          hz = bx[2]!;
+        const angle = 2 * Math.atan2(ex * s.uax[j]! + ey * s.uay[j]! + ez * s.uaz[j]!, ew);
+        if (flags & Joint3DFlag.Motor) {
+          const maxL = s.maxMotorTorque[j]! * hs;
+          const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+          s.motor[j] = angularRow(sb, T, a, b, hx, hy, hz, rel, -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxL, maxL);
+        }
+        if (flags & Joint3DFlag.Limit) {
+          const lo = s.lower[j]!,
+            hi = s.upper[j]!;
+          const nearLower = angle - lo < hi - angle;
+          const C = nearLower ? angle - lo : hi - angle,
+            sg = nearLower ? 1 : -1;
+          let bias = 0,
+            m = 1,
+            im = 0;
+          if (C > 0) bias = C / hs;
+          else if (useBias) {
+            bias = bRate * C;
+            m = ms;
+            im = is;
+          }
+          // A warm-started impulse from the other limit is taken back first.
+          if (sg * s.limit[j]! < 0) {
+            const l = -s.limit[j]!;
+            applyAngular(sb, T, a, b, l * hx, l * hy, l * hz);
+            s.limit[j] = 0;
+          }
+          const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+          const lam = angularRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, sg * rel, bias, m, im, sg * s.limit[j]!, 0, Infinity);
+          s.limit[j] = sg * lam;
+        }
+      }
+    }
+    // Point rows (ball, hinge, fixed).
+    const Cx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
+      Cy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
+      Cz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
+    anchorVelocity(sb, a, b, v3);
+    const ma = sb[oa + 9]!,
+      mb = sb[ob + 9]!;
+    for (let c = 0; c < 3; c++) {
+      const px = c === 0 ? 1 : 0,
+        py = c === 1 ? 1 : 0,
+        pz = c === 2 ? 1 : 0;
+      let kx = (ma + mb) * px,
+        ky = (ma + mb) * py,
+        kz = (ma + mb) * pz;
+      invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
+      kx += tmp[1]! * ra[2]! - tmp[2]! * ra[1]!;
+      ky += tmp[2]! * ra[0]! - tmp[0]! * ra[2]!;
+      kz += tmp[0]! * ra[1]! - tmp[1]! * ra[0]!;
+      invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
+      kx += tmp[1]! * rb[2]! - tmp[2]! * rb[1]!;
+      ky += tmp[2]! * rb[0]! - tmp[0]! * rb[2]!;
+      kz += tmp[0]! * rb[1]! - tmp[1]! * rb[0]!;
+      K[c] = kx;
+      K[3 + c] = ky;
+      K[6 + c] = kz;
+    }
+    if (type === Joint3DType.Slider) {
+      // Only the part perpendicular to the axis (A's, in the world) is held.
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
+      const hx = bx[0]!,
+        hy = bx[1]!,
+        hz = bx[2]!;
+      const t = Cx * hx + Cy * hy + Cz * hz,
+        dv = v3[0]! * hx + v3[1]! * hy + v3[2]! * hz;
+      restrictToPlane(hx, hy, hz);
+      solve3(
+        K,
+        v3[0]! - dv * hx + bRate * (Cx - t * hx),
+        v3[1]! - dv * hy + bRate * (Cy - t * hy),
+        v3[2]! - dv * hz + bRate * (Cz - t * hz),
+        x3,
+      );
+      let px = -ms * x3[0]! - is * s.lx[j]!,
+        py = -ms * x3[1]! - is * s.ly[j]!,
+        pz = -ms * x3[2]! - is * s.lz[j]!;
+      const d = px * hx + py * hy + pz * hz;
+      px -= d * hx;
+      py -= d * hy;
+      pz -= d * hz;
+      s.lx[j] = s.lx[j]! + px;
+      s.ly[j] = s.ly[j]! + py;
+      s.lz[j] = s.lz[j]! + pz;
+      applyLinear(sb, T, a, b, px, py, pz);
+      if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
+        // Axial rows act at the point of A under B's anchor.
+        sliderAnchor();
+        const k = linearK(sb, T, a, b, hx, hy, hz);
+        if (k > 0 && flags & Joint3DFlag.Motor) {
+          const maxP = s.maxMotorTorque[j]! * hs;
+          s.motor[j] = linearRow(
+            sb,
+            T,
+            a,
+            b,
+            hx,
+            hy,
+            hz,
+            k,
+            anchorSpeed(sb, a, b, hx, hy, hz),
+            -s.motorSpeed[j]!,
+            1,
+            0,
+            s.motor[j]!,
+            -maxP,
+            maxP,
+          );
+        }
+        if (k > 0 && flags & Joint3DFlag.Limit) {
+          const lo = s.lower[j]!,
+            hi = s.upper[j]!;
+          const nearLower = t - lo < hi - t;
+          const C = nearLower ? t - lo : hi - t,
+            sg = nearLower ? 1 : -1;
+          let bias = 0,
+            m = 1,
+            im = 0;
+          if (C > 0) bias = C / hs;
+          else if (useBias) {
+            bias = bRate * C;
+            m = ms;
+            im = is;
+          }
+          if (sg * s.limit[j]! < 0) {
+            const l = -s.limit[j]!;
+            applyLinear(sb, T, a, b, l * hx, l * hy, l * hz);
+            s.limit[j] = 0;
+          }
+          const lam = linearRow(
+            sb,
+            T,
+            a,
+            b,
+            sg * hx,
+            sg * hy,
+            sg * hz,
+            k,
+            sg * anchorSpeed(sb, a, b, hx, hy, hz),
+            bias,
+            m,
+            im,
+            sg * s.limit[j]!,
+            0,
+            Infinity,
+          );
+          s.limit[j] = sg * lam;
+        }
+      }
+      continue;
+    }
+    solve3(K, v3[0]! + bRate * Cx, v3[1]! + bRate * Cy, v3[2]! + bRate * Cz, x3);
+    const px = -ms * x3[0]! - is * s.lx[j]!,
+      py = -ms * x3[1]! - is * s.ly[j]!,
+      pz = -ms * x3[2]! - is * s.lz[j]!;
+    s.lx[j] = s.lx[j]! + px;
+    s.ly[j] = s.ly[j]! + py;
+    s.lz[j] = s.lz[j]! + pz;
+    applyLinear(sb, T, a, b, px, py, pz);
+    if (type === Joint3DType.Ball && flags & Joint3DFlag.Cone) {
+      rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
+      rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
+      let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
+        ny = ax[2]! * bx[0]! - ax[0]! * bx[2]!,
+        nz = ax[0]! * bx[1]! - ax[1]! * bx[0]!;
+      const sn = Math.hypot(nx, ny, nz);
+      if (sn > 1e-9) {
+        nx /= sn;
+        ny /= sn;
+        nz /= sn;
+        const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
+        const C = s.upper[j]! - phi;
+        let bias = 0,
+          m = 1,
+          im = 0;
+        if (C > 0) bias = C / hs;
+        else if (useBias) {
+          bias = bRate * C;
+          m = ms;
+          im = is;
+        }
+        const cdot = -((sb[ob + 3]! - sb[oa + 3]!) * nx + (sb[ob + 4]! - sb[oa + 4]!) * ny + (sb[ob + 5]! - sb[oa + 5]!) * nz);
+        s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
+      } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
+    }
+  }
+}
+
+/**
+ * After the substeps: joints past their breaking force or torque are removed and listed.
+ * @category Joints and ropes
+ */
+export function finishJoints3D(world: PhysicsWorld, hs: number): void {
+  const s = joints3DOf(world);
+  if (s === undefined || world.dimensions !== 3) return;
+  const broken: number[] = [];
+  for (const j of s.list) {
+    // The limit and motor rows are torques about the axis (hinge, cone) or forces along it (slider).
+    // A distance joint's rows are all forces along the anchor line: rod or spring (lx), lower limit (limit), upper limit (-ly).
+    const axial = Math.abs(s.limit[j]!) + Math.abs(s.motor[j]!),
+      slider = s.type[j] === Joint3DType.Slider,
+      distance = s.type[j] === Joint3DType.Distance;
+    const force =
+      (distance ? Math.abs(s.lx[j]! + s.limit[j]! - s.ly[j]!) : Math.hypot(s.lx[j]!, s.ly[j]!, s.lz[j]!) + (slider ? axial : 0)) / hs;
+    const torque = distance ? 0 : (Math.hypot(s.wx[j]!, s.wy[j]!, s.wz[j]!) + (slider ? 0 : axial)) / hs;
+    if (force > s.breakForce[j]! || torque > s.breakTorque[j]!) broken.push(j);
+  }
+  for (const j of broken) {
+    const h = (e: number): number => (e === 0 ? 0 : currentHandle(world, e));
+    s.breaks.push([h(j), h(s.a[j]!), h(s.b[j]!), world.steps]);
+    removeJoint3DUnchecked(world, s, j);
+  }
+}

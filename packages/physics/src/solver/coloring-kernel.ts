@@ -1,0 +1,579 @@
+/**
+ * The coloured 2D contact substeps (solver/coloring.ts) as a thread kernel (threads/kernels.ts: a
+ * self-contained function the worker threads also run as source text); solver/coloring.ts runs it and
+ * says when.
+ */
+
+import type { claimBlock } from '../threads/block-claim.js';
+import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
+import type { approach2D } from './stages-kernel.js';
+
+/**
+ * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
+ * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
+ * the contact buffer's rows (solver/contact-pack-2d.ts layout) group by group into the pack (one block a
+ * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
+ * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[21] = 1), then each
+ * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
+ * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
+ * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
+ * claim a unit's blocks one by one (a flag each, Atomics.compareExchange), each from its own share of
+ * the unit first, and start a unit only once every block of the earlier units is done, so a thread
+ * the system has not scheduled holds nothing up unless it holds a block (work sharing, as Box2D v3's
+ * solver stages), a thread keeps the same strips pass after pass, and which thread runs a block
+ * never changes a result: blocks of a colour touch disjoint movable bodies, a block's rows run in pack
+ * order. With strips (plan[9] = 1, solver/coloring.ts) the body stages run inside colour 0's blocks
+ * instead of as units of their own: gravity before a block's warm start, positions before its first
+ * relax pass (when there is one), each block for its strip pair's bodies (`bodyOrder` from
+ * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
+ * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
+ * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
+ * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver extra
+ * (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
+ * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours C, 5
+ * solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are
+ * packed already, solver/strip-plan-kernel.ts), 8 rows packed, 9 strips (1: fused body stages), 10
+ * even blocks, 11 1 when the strip plan packed the rows, 12 + c colour c's first block (c = 0 .. C;
+ * colour C the overflow colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks
+ * done, 2 abort), 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255
+ * not packed), 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as
+ * it packs), the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15
+ * normalMass, 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner
+ * (Uint8), 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j]
+ * .. bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32), 26 pair (Int32,
+ * two a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
+ * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
+ * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a pack
+ * row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry, a flag
+ * a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
+ * (Int32, a buffer row: its pack row, written by the packing), 31 to 43 approach2D's arrays
+ * (solver/stages-kernel.ts: measureApproach of the buffer's rows, run as the unit after the packing,
+ * when P[21] > 0); the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3 dynamic softness, 4-6
+ * rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the buffer's rows, 12 group slots
+ * a thread in offsets, 13 spin before blocking (microseconds), 14-15 the unit vector along gravity (0,
+ * 0 without gravity), 16 solver/support.ts's SUPPORT_COS, 17-19 gravity (m/s^2), 20 BodyType.Dynamic, 21 1 to
+ * measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic of each row and body is
+ * that of solver/contact-solver.ts's one-thread loops, support rows of the relax passes included (solver/support.ts: a
+ * frictionless row with one ball resting on another holds the lower ball when that slows the upper one
+ * less than the lower). Returns 0 (-1 if another thread failed and this one stopped).
+ * @category Collision
+ */
+export function solveColored2D(
+  A: KernelArray[],
+  P: Float64Array,
+  _ids: Int32Array | null,
+  _lo: number,
+  _hi: number,
+  part: number,
+  H: readonly KernelHelper[],
+): number {
+  const pk = A[0] as Float64Array,
+    sb = A[1] as Float64Array,
+    ex = A[2] as Float64Array,
+    dyn = A[3] as Uint8Array;
+  const plan = A[4] as Int32Array,
+    bar = A[5] as Int32Array;
+  const substeps = plan[0]!,
+    iters = plan[1]!,
+    relax = plan[2]!,
+    C = plan[4]!,
+    nb = plan[5]!,
+    parts = plan[7]!;
+  const np = plan[8]!,
+    fused = plan[9] === 1;
+  const wait = part !== 0 || plan[6] === 1;
+  const bounds = A[23] as Int32Array,
+    order = A[24] as Int32Array,
+    bodyBounds = A[25] as Int32Array,
+    pair = A[26] as Int32Array;
+  const tot = A[27] as Float64Array;
+  const spinMs = P[13]! / 1000;
+  const clock = (globalThis as { performance?: { now(): number } }).performance;
+  // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
+  // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
+  // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
+  // call, which every branch first reached later threw away: 14 recompiles of ~50 ms each in 100
+  // steps of balls-in-box 20,000 on 2 threads, on the cores the threads need.
+  // (Indices of KERNEL_HELPERS, threads/kernels.ts; the kernel may name nothing outside itself.)
+  const packRows = H[0] as typeof coloredPack2D,
+    unpackRows = H[1] as typeof coloredUnpack2D;
+  const bodyStage = H[2] as typeof coloredBodies2D,
+    rowPass = H[3] as typeof coloredRows2D;
+  const approachRows = H[12] as typeof approach2D;
+  // The approach speeds' blocks (when P[21] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
+  // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
+  const APPROACH_ROWS = 2048,
+    rows = P[11]!,
+    approachBlocks = P[21] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
+  const approachParams = new Float64Array(5);
+  approachParams[0] = P[17]!;
+  approachParams[1] = P[18]!;
+  approachParams[2] = P[19]!;
+  approachParams[3] = P[20]!;
+  approachParams[4] = 31;
+  // Rows a block of the unpacking, bodies a block of a body stage.
+  const RB_ = 256,
+    BB = 1024;
+  // Stages of a substep: 0 gravity (bodies), 1 warm start, 2 .. 1 + iters biased passes, 2 + iters
+  // positions (bodies), then the relax passes.
+  const stages = 3 + iters + relax;
+  // With strips, gravity always and positions when a relax pass follows run inside colour 0's blocks.
+  const bodyUnits = Math.ceil((nb - 1) / BB);
+  const gravityUnits = fused ? 0 : bodyUnits,
+    positionUnits = fused && relax > 0 ? 0 : bodyUnits;
+  // The units in order: the packing (one block a range of `parts`), the approach speeds, then every substep's stages (a
+  // body stage one unit, a pass C + 1 units, one a colour, the overflow colour one block), then the
+  // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
+  // counts finished blocks, so a unit starts once bar[1] reaches its first block.
+  const units = 2 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
+  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[3])
+  // from its own share of a unit first: with strips, block j of either colour is strip pair j's, so a
+  // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
+  const claim = A[29] as Int32Array,
+    threads = plan[3]! > 0 ? plan[3]! : 1;
+  const claimNext = H[9] as typeof claimBlock,
+    cursor = new Int32Array(2);
+  let base = 0,
+    failed = false;
+  let stage = 0,
+    u = 0;
+  for (let g = 0; g < units; g++) {
+    // Which unit g is: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
+    let kind: number,
+      first = 0,
+      count: number;
+    if (g === 0) {
+      kind = 0;
+      count = parts;
+    } else if (g === 1) {
+      kind = 5;
+      count = approachBlocks;
+    } else if (g === units - 1) {
+      kind = 4;
+      count = Math.ceil(np / RB_);
+    } else {
+      if (stage === 0 || stage === 2 + iters) {
+        kind = stage === 0 ? 1 : 2;
+        count = stage === 0 ? gravityUnits : positionUnits;
+      } else {
+        kind = 3;
+        first = plan[12 + u]!;
+        count = plan[13 + u]! - first;
+      }
+    }
+    const end = base + count;
+    if (count > 0) {
+      // Wait until every block of the earlier units is done: spin a while, then block.
+      if (Atomics.load(bar, 1) < base) {
+        let t0 = -1,
+          spins = 0;
+        for (;;) {
+          const done = Atomics.load(bar, 1);
+          if (done >= base) break;
+          if (Atomics.load(bar, 2) !== 0) {
+            failed = true;
+            break;
+          }
+          if (!wait || (++spins & 255) !== 0) continue;
+          const t = clock !== undefined ? clock.now() : 0;
+          if (t0 < 0) t0 = t;
+          if (clock === undefined || t - t0 >= spinMs) Atomics.wait(bar, 1, done, 50);
+        }
+      }
+      if (failed) break;
+      cursor[0] = 0;
+      cursor[1] = 0;
+      for (
+        let blk = claimNext(claim, base, count, part, threads, cursor);
+        blk >= 0;
+        blk = claimNext(claim, base, count, part, threads, cursor)
+      ) {
+        try {
+          if (kind === 0) packRows(A, P, blk, parts);
+          else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
+          else if (kind === 1 || kind === 2) {
+            const k0 = 1 + blk * BB,
+              k1 = Math.min(nb, k0 + BB);
+            bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
+          } else if (kind === 4) {
+            const k0 = blk * RB_,
+              k1 = Math.min(np, k0 + RB_);
+            unpackRows(A, k0, k1);
+          } else {
+            // A block of colour u's rows.
+            const r0 = bounds[first + blk]!,
+              r1 = bounds[first + blk + 1]!;
+            // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+            // positions before the first relax pass).
+            if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+              bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
+            }
+            // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+            // adds each row's impulse to what the substep delivered).
+            const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+            const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+            rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+          }
+        } catch (e) {
+          // Let the other threads out of their waits, then report this one's error.
+          Atomics.store(bar, 2, 1);
+          Atomics.notify(bar, 1);
+          throw e;
+        }
+        // Done: the last block of a unit wakes the threads waiting to start the next.
+        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+      }
+    }
+    base = end;
+    // Next unit: advance (stage, colour, substep) past the packing and the approach speeds.
+    if (g > 1 && g < units - 1) {
+      if (stage === 0 || stage === 2 + iters) {
+        stage++;
+        u = 0;
+      } else if (++u > C) {
+        u = 0;
+        stage++;
+      }
+      if (stage === stages) stage = 0;
+    }
+  }
+  return failed ? -1 : 0;
+}
+
+/**
+ * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
+ * filled), over `rows` buffer rows (its P[11]), measuring the approach speeds if `approach` (its P[21] = 1):
+ * the size its claim array needs.
+ * @category Collision
+ */
+export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: boolean): number {
+  const substeps = plan[0]!,
+    iters = plan[1]!,
+    relax = plan[2]!,
+    C = plan[4]!,
+    nb = plan[5]!,
+    parts = plan[7]!;
+  const np = plan[8]!,
+    fused = plan[9] === 1;
+  const bodyUnits = Math.ceil((nb - 1) / 1024);
+  const bodies = (fused ? 0 : bodyUnits) + (fused && relax > 0 ? 0 : bodyUnits);
+  const colorBlocks = plan[12 + C + 1]! - plan[12]!;
+  const approachBlocks = approach ? Math.ceil(rows / 2048) : 0;
+  return parts + approachBlocks + substeps * (bodies + (1 + iters + relax) * colorBlocks) + Math.ceil(np / 256);
+}
+
+/*
+ * The coloured kernel's block loops (KERNEL_HELPERS 0 to 3, threads/kernels.ts), self-contained like a
+ * kernel; the arithmetic of each row and body is the one the kernel had inline.
+ */
+
+/**
+ * Packs the contact buffer's rows of packing range `blk` (of `parts`) into the pack, each at its group's
+ * next slot (solveColored2D's A and P layout: A 0 pack, 6 groups, 7 offsets, 8 to 20 the buffer's
+ * arrays, 26 pair; P 11 rows, 12 group slots a range).
+ * @category Collision
+ */
+export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
+  const pk = A[0] as Float64Array,
+    color = A[6] as Uint8Array,
+    offsets = A[7] as Int32Array;
+  const IA = A[8] as Int32Array,
+    IB = A[9] as Int32Array,
+    NX = A[10] as Float64Array,
+    NY = A[11] as Float64Array;
+  const RA = A[12] as Float64Array,
+    RB = A[13] as Float64Array,
+    S0 = A[14] as Float64Array,
+    NM = A[15] as Float64Array;
+  const TM = A[16] as Float64Array,
+    FB = A[17] as Float64Array,
+    LN = A[18] as Float64Array,
+    LT = A[19] as Float64Array;
+  const RP = A[20] as Uint8Array,
+    pair = A[26] as Int32Array,
+    tot = A[27] as Float64Array,
+    row = A[28] as Int32Array;
+  const slot = A[30] as Int32Array;
+  const rows = P[11]!,
+    W = P[12]!;
+  const lo = Math.floor((rows * blk) / parts),
+    hi = Math.floor((rows * (blk + 1)) / parts),
+    o0 = blk * W;
+  for (let i = lo; i < hi; i++) {
+    const c = color[i]!;
+    if (c === 255) continue;
+    const k = offsets[o0 + c]!;
+    offsets[o0 + c] = k + 1;
+    const o = k * 12;
+    pair[2 * k] = IA[i]! * 8;
+    pair[2 * k + 1] = IB[i]! * 8;
+    pk[o] = NX[i]!;
+    pk[o + 1] = NY[i]!;
+    pk[o + 2] = RA[i]!;
+    pk[o + 3] = RB[i]!;
+    pk[o + 4] = S0[i]!;
+    pk[o + 5] = NM[i]!;
+    pk[o + 6] = TM[i]!;
+    pk[o + 7] = FB[i]!;
+    pk[o + 8] = LN[i]!;
+    pk[o + 9] = LT[i]!;
+    pk[o + 10] = RP[i]!;
+    pk[o + 11] = 0;
+    tot[k] = 0;
+    row[k] = i;
+    slot[i] = k;
+  }
+}
+
+/**
+ * Packs rows[0 .. count - 1] of the contact buffer again, each into the pack row coloredPack2D gave it
+ * (A[30], slot), from the buffer's values now (A as coloredPack2D's): for rows whose values changed
+ * after they were packed (solver/impacts.ts impactChangedRows). Rows left out of the pack (group 255) stay out.
+ * @category Collision
+ */
+export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
+  const pk = A[0] as Float64Array,
+    color = A[6] as Uint8Array,
+    slot = A[30] as Int32Array;
+  const NX = A[10] as Float64Array,
+    NY = A[11] as Float64Array,
+    RA = A[12] as Float64Array,
+    RB = A[13] as Float64Array;
+  const S0 = A[14] as Float64Array,
+    NM = A[15] as Float64Array,
+    TM = A[16] as Float64Array,
+    FB = A[17] as Float64Array;
+  const LN = A[18] as Float64Array,
+    LT = A[19] as Float64Array,
+    RP = A[20] as Uint8Array;
+  for (let j = 0; j < count; j++) {
+    const i = rows[j]!;
+    if (color[i] === 255) continue;
+    const o = slot[i]! * 12;
+    pk[o] = NX[i]!;
+    pk[o + 1] = NY[i]!;
+    pk[o + 2] = RA[i]!;
+    pk[o + 3] = RB[i]!;
+    pk[o + 4] = S0[i]!;
+    pk[o + 5] = NM[i]!;
+    pk[o + 6] = TM[i]!;
+    pk[o + 7] = FB[i]!;
+    pk[o + 8] = LN[i]!;
+    pk[o + 9] = LT[i]!;
+    pk[o + 10] = RP[i]!;
+    pk[o + 11] = 0;
+  }
+}
+
+/**
+ * Writes pack rows [k0, k1)'s impulses back to the contact buffer (normal, tangent, largest pass impulse, delivered total; A as coloredPack2D, 21 and 22 the last two).
+ * @category Collision
+ */
+export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
+  const pk = A[0] as Float64Array,
+    LN = A[18] as Float64Array,
+    LT = A[19] as Float64Array,
+    MAXN = A[21] as Float64Array,
+    TOT = A[22] as Float64Array;
+  const tot = A[27] as Float64Array,
+    row = A[28] as Int32Array;
+  for (let k = k0; k < k1; k++) {
+    const o = k * 12,
+      i = row[k]!;
+    LN[i] = pk[o + 8]!;
+    LT[i] = pk[o + 9]!;
+    MAXN[i] = pk[o + 11]!;
+    TOT[i] = tot[k]!;
+  }
+}
+
+/**
+ * A body stage over solver bodies [q0, q1) (`ordered` 1: the bodies order[q0 .. q1 - 1], a strip pair's;
+ * 0: the solver indices themselves): `stage` 1 gravity (dynamic bodies: v += g h_s, P 9-10), 2 positions
+ * (x += v h_s, and the rotation owed, P 8).
+ * @category Collision
+ */
+export function coloredBodies2D(
+  sb: Float64Array,
+  ex: Float64Array,
+  dyn: Uint8Array,
+  order: Int32Array,
+  ordered: number,
+  q0: number,
+  q1: number,
+  stage: number,
+  P: Float64Array,
+): void {
+  if (stage === 1) {
+    const gx = P[9]!,
+      gy = P[10]!;
+    for (let q = q0; q < q1; q++) {
+      const k = ordered === 1 ? order[q]! : q;
+      if (dyn[k] !== 1) continue;
+      const o = k * 8;
+      sb[o] = sb[o]! + gx;
+      sb[o + 1] = sb[o + 1]! + gy;
+    }
+  } else {
+    const hs = P[8]!;
+    for (let q = q0; q < q1; q++) {
+      const k = ordered === 1 ? order[q]! : q,
+        o = k * 8;
+      sb[o + 3] = sb[o + 3]! + sb[o]! * hs;
+      sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
+      if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+    }
+  }
+}
+
+/**
+ * Pack rows [r0, r1) of one block: `mode` 0 the warm start; else a pass, 1 relax or 3 biased, plus 4
+ * on the substep's last pass (each row's impulse is added to what the substep delivered). P as
+ * solveColored2D's.
+ * @category Collision
+ */
+export function coloredRows2D(
+  pk: Float64Array,
+  sb: Float64Array,
+  pair: Int32Array,
+  tot: Float64Array,
+  P: Float64Array,
+  r0: number,
+  r1: number,
+  mode: number,
+): void {
+  if (mode === 0) {
+    for (let k = r0; k < r1; k++) {
+      const o = k * 12;
+      const ln = pk[o + 8]!,
+        lt = pk[o + 9]!;
+      if (ln === 0 && lt === 0) continue;
+      const a = pair[2 * k]!,
+        bb = pair[2 * k + 1]!;
+      sb[a + 7] = 1;
+      sb[bb + 7] = 1;
+      const nx = pk[o]!,
+        ny = pk[o + 1]!;
+      const Px = ln * nx - lt * ny,
+        Py = ln * ny + lt * nx;
+      const imA = sb[a + 5]!,
+        imB = sb[bb + 5]!;
+      sb[a] = sb[a]! - imA * Px;
+      sb[a + 1] = sb[a + 1]! - imA * Py;
+      sb[bb] = sb[bb]! + imB * Px;
+      sb[bb + 1] = sb[bb + 1]! + imB * Py;
+      sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 2]! * lt;
+      sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 3]! * lt;
+    }
+    return;
+  }
+  const invH = P[0]!,
+    dBias = P[1]!,
+    dMass = P[2]!,
+    dImp = P[3]!,
+    rBias = P[4]!,
+    rMass = P[5]!,
+    rImp = P[6]!,
+    push = P[7]!;
+  const downX = P[14]!,
+    downY = P[15]!,
+    supportCos = P[16]!;
+  const useBias = (mode & 2) !== 0,
+    total = (mode & 4) !== 0;
+  for (let k = r0; k < r1; k++) {
+    const o = k * 12;
+    const a = pair[2 * k]!,
+      bb = pair[2 * k + 1]!;
+    const nx = pk[o]!,
+      ny = pk[o + 1]!;
+    const imA = sb[a + 5]!,
+      imB = sb[bb + 5]!;
+    let vax = sb[a]!,
+      vay = sb[a + 1]!,
+      vbx = sb[bb]!,
+      vby = sb[bb + 1]!;
+    // The normal impulse's inverse masses and effective mass: a frictionless support row of
+    // a relax pass may hold its lower ball (solver/support.ts's holdsLower: lower speed <= upper).
+    let jmA = imA,
+      jmB = imB,
+      nm = pk[o + 5]!;
+    if (!useBias && pk[o + 7] === 0 && imA > 0 && imB > 0 && nm > 0) {
+      const up = -(downX * nx + downY * ny);
+      if (up > supportCos || up < -supportCos) {
+        const va = Math.abs(vax * nx + vay * ny),
+          vb = Math.abs(vbx * nx + vby * ny);
+        if (up > 0 ? va <= vb : vb <= va) {
+          if (up > 0) jmA = 0;
+          else jmB = 0;
+          nm = 1 / (jmA + jmB);
+        }
+      }
+    }
+    const sep = pk[o + 4]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
+    let bias = 0,
+      massScale = 1,
+      impulseScale = 0;
+    if (sep > 0) {
+      bias = sep * invH;
+    } else if (useBias) {
+      if (pk[o + 10] === 1) {
+        bias = rBias * sep;
+        massScale = rMass;
+        impulseScale = rImp;
+      } else {
+        bias = dBias * sep;
+        massScale = dMass;
+        impulseScale = dImp;
+      }
+      if (bias < -push) bias = -push;
+    }
+    const vn = (vbx - vax) * nx + (vby - vay) * ny;
+    const oldN = pk[o + 8]!;
+    // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse
+    // below is 0), as in solver/contact-solver.ts's solve2D: a fifth of the pass's time in a settled pile.
+    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + 9] === 0) continue;
+    let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
+    let newN = oldN + lambda;
+    if (newN < 0) newN = 0;
+    lambda = newN - oldN;
+    pk[o + 8] = newN;
+    if (lambda > pk[o + 11]!) pk[o + 11] = lambda;
+    if (total) tot[k] = tot[k]! + newN;
+    let Px = lambda * nx,
+      Py = lambda * ny;
+    vax -= jmA * Px;
+    vay -= jmA * Py;
+    vbx += jmB * Px;
+    vby += jmB * Py;
+    const ra = pk[o + 2]!,
+      rb = pk[o + 3]!;
+    let wa = sb[a + 2]!,
+      wb = sb[bb + 2]!;
+    const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
+    lambda = -pk[o + 6]! * vt;
+    const maxF = pk[o + 7]! * newN;
+    const oldT = pk[o + 9]!;
+    let newT = oldT + lambda;
+    newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
+    lambda = newT - oldT;
+    pk[o + 9] = newT;
+    Px = -lambda * ny;
+    Py = lambda * nx;
+    vax -= imA * Px;
+    vay -= imA * Py;
+    vbx += imB * Px;
+    vby += imB * Py;
+    wa -= sb[a + 6]! * ra * lambda;
+    wb -= sb[bb + 6]! * rb * lambda;
+    sb[a] = vax;
+    sb[a + 1] = vay;
+    sb[a + 2] = wa;
+    sb[bb] = vbx;
+    sb[bb + 1] = vby;
+    sb[bb + 2] = wb;
+    if (newN !== 0 || newT !== 0) {
+      sb[a + 7] = 1;
+      sb[bb + 7] = 1;
+    }
+  }
+}

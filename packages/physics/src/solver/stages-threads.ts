@@ -1,0 +1,384 @@
+/**
+ * The 2D contact solver's stages that were left on one thread beside the coloured substeps
+ * (solver/coloring.ts) and the rows' preparation, on the world's threads (issue 12):
+ *
+ * - `gatherFillOnThreads`: the solver rows of the step's bodies (gatherBodies' fill, solver/contact-solver.ts), a range
+ *   of bodies a thread;
+ * - `approachOnThreads`: measureApproach, a range of rows a thread;
+ * - `finishOnThreads`: finishBodies (velocities, positions and angles back to the components; the
+ *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
+ * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
+ * - `storeWarmStartOnThreads`: the warm-start table of the step's contacts, built on a worker while
+ *   the calling thread finishes the step (the same table).
+ *
+ * The first three do each body's or row's arithmetic of the one-thread loop unchanged (kernels in
+ * solver/stages-kernel.ts), so the state after a step is the same to the bit as with `threads: 1`. The
+ * restitution stage runs on the threads only in a step whose substeps ran by colours: its passes then
+ * visit the rows colour by colour (rows of one colour share no movable body, so a colour is split over
+ * the threads without changing any result) instead of in buffer order, like the coloured substeps.
+ * Such a step is deterministic and the same on 2, 3 or n threads and on an adaptive pool that runs the
+ * stage on one thread, but not the one-thread world's trajectory (solver/coloring.ts says when a step
+ * takes that path; `settings.coloredSolveMinRows = Infinity` keeps the one-thread order).
+ *
+ * Each goes to the threads only in a 2D world with a thread pool, with at least
+ * `stageThreading.minPerThread` bodies or rows a thread, every array it touches on shared memory (the
+ * collision state's inverse masses, body types and impact corrections, and the contact buffers, are
+ * moved there the first time), and when the adaptive pool finds the threads faster (threads/adaptive.ts).
+ * Otherwise each returns false and solver/contact-solver.ts runs its own loop.
+ */
+
+import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from '../collision/contacts.js';
+import { BodyType, type CollisionState } from '../collision/state.js';
+import { nowMs } from '../threads/adaptive.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
+import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
+import { isShared, sharedCopy, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
+import { reportNonFinite } from '../world/errors.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { approachArguments, callerMayWait, coloredPlan, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
+import { IMPACT_STRIDE } from './impacts.js';
+import { restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+
+/**
+ * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
+ * fewest bodies or contact rows a thread for a stage to go to the threads (integer >= 1; default 8192:
+ * these stages do little a body or row, and balls-in-box 5,000 (14,000 rows) measured no faster with
+ * them on 2 threads; 20,000 balls have 20,000 bodies and 55,000 rows); tests
+ * lower it to run the kernels on small worlds. `runs`: stages run by a kernel (on the threads, or on
+ * one thread where the adaptive pool chose so), `bouncing`: rows the restitution kernel found bouncing,
+ * both summed since the process started (for tests and the bench).
+ * @category Collision
+ */
+export const stageThreading = { minPerThread: 8192, runs: 0, bouncing: 0 };
+
+/** Per world: the kernels' argument lists and parameters, the deepest-overlap slots. */
+interface StageScratch {
+  arrays: KernelArray[];
+  params: Float64Array;
+  deepest: Float64Array;
+  /** Whether the last finishOnThreads kept the bodies in the boundary box (containedOnThreads). */
+  contained: boolean;
+}
+const scratchOf = new WeakMap<PhysicsWorld, StageScratch>();
+
+function scratch(world: PhysicsWorld): StageScratch {
+  let s = scratchOf.get(world);
+  if (s === undefined) {
+    s = { arrays: [], params: new Float64Array(16), deepest: sharedFloat64(MAX_POOL_PARTS), contained: false };
+    scratchOf.set(world, s);
+  }
+  return s;
+}
+
+/** Moves the collision state's per-entity arrays the kernels read onto shared memory. */
+function shareState(cs: CollisionState): void {
+  cs.bodyType = sharedCopy(cs.bodyType);
+  cs.invMass = sharedCopy(cs.invMass);
+  cs.invInertia = sharedCopy(cs.invInertia);
+  cs.bodyImpact = sharedCopy(cs.bodyImpact);
+}
+
+/** The world's pool if a 2D stage of `n` elements may go to its threads (see the file's header), else null. */
+function poolFor(world: PhysicsWorld, n: number): ThreadPool | null {
+  const pool = world.threadPool;
+  if (pool === null || world.dimensions !== 2 || n < stageThreading.minPerThread * pool.threads) return null;
+  if (!isShared(world.collision.bodyState) || !isShared(world.collision.bodyExtra)) return null;
+  return pool;
+}
+
+/** Whether a runOnPool call ran its kernel (not null); counts it. */
+function ran(result: number | null): result is number {
+  if (result === null) return false;
+  stageThreading.runs++;
+  return true;
+}
+
+/** Whether every array of `arrays` is on shared memory (a component store may not be, e.g. not allocated yet). */
+function allShared(arrays: readonly KernelArray[]): boolean {
+  for (let i = 0; i < arrays.length; i++) if (!isShared(arrays[i]!)) return false;
+  return true;
+}
+
+/**
+ * gatherBodies' fill of the 2D solver rows of solver bodies 1 .. count - 1 on the world's threads (the
+ * same bits as the one-thread loop); `pushed` 1 when joints are in the step (every body counts as
+ * pushed). False when the stage stays on one thread (the caller's loop then runs).
+ * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
+ */
+export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: number): boolean {
+  const pool = poolFor(world, count - 1);
+  if (pool === null) return false;
+  const cs = world.collision,
+    c = world.components;
+  shareState(cs);
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
+  A.length = 0;
+  A.push(
+    c.Position.x,
+    c.Position.y,
+    c.Position.z,
+    c.Velocity.x,
+    c.Velocity.y,
+    c.Velocity.z,
+    c.AngularVelocity.x,
+    c.AngularVelocity.y,
+    c.AngularVelocity.z,
+    c.Force.x,
+    c.Force.y,
+    c.Force.z,
+    cs.bodyType,
+    cs.invMass,
+    cs.invInertia,
+    cs.bodyState,
+    cs.bodyExtra,
+  );
+  if (!allShared(A)) return false;
+  const h = world.h,
+    g = world.gravity;
+  P[0] = h;
+  P[1] = g[0]! * h;
+  P[2] = g[1]! * h;
+  P[3] = g[2]! * h;
+  P[4] = pushed;
+  P[5] = BodyType.Dynamic;
+  P[6] = BodyType.Kinematic;
+  return ran(
+    runOnPool(
+      pool,
+      'contactSolverSystem',
+      KERNEL.gatherFill2D,
+      A,
+      P,
+      count - 1,
+      cs.solverBodies.subarray(1, count),
+      stageThreading.minPerThread,
+    ),
+  );
+}
+
+/**
+ * measureApproach of a 2D world's contact rows on its threads (the same bits as the one-thread loop).
+ * False when the stage stays on one thread.
+ * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
+ */
+export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+  const n = buf.count;
+  const pool = poolFor(world, n);
+  if (pool === null) return false;
+  const cs = world.collision;
+  shareContactBuffer(buf);
+  shareState(cs);
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
+  A.length = 0;
+  approachArguments(cs, buf, A);
+  const g = world.gravity;
+  P[0] = g[0]!;
+  P[1] = g[1]!;
+  P[2] = g[2]!;
+  P[3] = BodyType.Dynamic;
+  P[4] = 0;
+  return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));
+}
+
+/**
+ * storeWarmStart (contacts.ts) of a 2D world's contact rows with the hash table built on a worker
+ * (ThreadPool.start, kernel warmStartTable: the same table to the slot) while the calling thread
+ * finishes the step: the rows are swapped into the cache at once, and the table is complete once the
+ * pool joins, which its next run or start does, prepareContacts does before it reads the table, and
+ * `step` does before it returns. Returns the buffer to fill next (as storeWarmStart), or null when the
+ * stage stays on one thread (too few rows, no usable worker; the caller's storeWarmStart then runs).
+ * @category Collision
+ */
+export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer): ContactBuffer | null {
+  const n = buf.count;
+  const pool = poolFor(world, n);
+  if (pool === null || pool.threads < 2 || !pool.usable()) return null;
+  const cache = world.collision.cache;
+  shareContactBuffer(buf);
+  pool.join(); // nothing may still be writing the table it replaces
+  reserveWarmStartTable(cache, n, true);
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
+  A.length = 0;
+  A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
+  P[0] = n;
+  P[1] = cache.size;
+  pool.start('contactSolverSystem', KERNEL.warmStartTable, A, P, 1);
+  stageThreading.runs++;
+  return swapWarmStartRows(cache, buf);
+}
+
+/**
+ * finishBodies of a 2D world on its threads, with containInBoundary when the boundary box is on: the
+ * solver bodies' velocities, positions and angles back to the components and the bodies put back in
+ * the box, a range of bodies a thread, and the deepest overlap left into `cs.stats.maxOverlap`, a range
+ * of rows a thread (the same bits as the one-thread loops). False when the stage stays on one thread.
+ * When it returns true, the next `containedOnThreads` call returns whether the box was done here.
+ * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite, as the
+ *   one-thread loop (the bodies are then already put back in the box, unlike with one thread).
+ * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
+ */
+export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+  const cs = world.collision,
+    count = cs.solverBodyCount;
+  const pool = poolFor(world, count - 1);
+  if (pool === null) return false;
+  const c = world.components;
+  shareState(cs);
+  shareContactBuffer(buf);
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params,
+    out = s.deepest;
+  out.fill(0);
+  A.length = 0;
+  A.push(
+    c.Position.x,
+    c.Position.y,
+    c.Velocity.x,
+    c.Velocity.y,
+    c.AngularVelocity.z,
+    c.Angle.value,
+    cs.bodyType,
+    cs.bodyState,
+    cs.bodyExtra,
+    cs.bodyImpact,
+    c.Ball.radius,
+    c.Material.restitution,
+    out,
+    buf.ia,
+    buf.ib,
+    buf.separation,
+    buf.nx,
+    buf.ny,
+  );
+  if (!allShared(A)) return false;
+  const list = cs.solverBodies,
+    box = cs.boundary;
+  const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
+    g = world.gravity;
+  P[0] = g[0]! * fh;
+  P[1] = g[1]! * fh;
+  P[2] = BodyType.Dynamic;
+  P[3] = IMPACT_STRIDE;
+  P[4] = box.enabled ? 1 : 0;
+  P[5] = box.min[0]!;
+  P[6] = box.min[1]!;
+  P[7] = box.max[0]!;
+  P[8] = box.max[1]!;
+  P[9] = box.restitution;
+  P[10] = g[0]!;
+  P[11] = g[1]!;
+  P[12] = buf.count;
+  P[13] = count - 1;
+  const check = runOnPool(
+    pool,
+    'contactSolverSystem',
+    KERNEL.finishBodies2D,
+    A,
+    P,
+    count - 1,
+    list.subarray(1, count),
+    stageThreading.minPerThread,
+  );
+  if (!ran(check)) return false;
+  s.contained = box.enabled;
+  if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
+  // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
+  let deepest = 0;
+  for (let k = 0; k < out.length; k++) if (out[k]! < deepest) deepest = out[k]!;
+  cs.stats.maxOverlap = -deepest;
+  return true;
+}
+
+/**
+ * Whether this step's finishOnThreads also kept the bodies in the boundary box (containInBoundary then
+ * has nothing left to do); clears the answer, so it is true once a step at most.
+ * @category Collision
+ */
+export function containedOnThreads(world: PhysicsWorld): boolean {
+  const s = scratchOf.get(world);
+  if (s === undefined || !s.contained) return false;
+  s.contained = false;
+  return true;
+}
+
+/**
+ * The restitution stage of a 2D world whose substeps of this step ran by colours (solver/coloring.ts),
+ * its passes colour by colour on the world's threads (or on one thread when the adaptive pool prefers
+ * it: the same results either way); see the file's header for the order. False when the step's
+ * substeps did not run by colours (the caller's one-thread stage then runs).
+ * @throws Error naming contactSolverSystem if a worker thread failed.
+ * @category Collision
+ */
+export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+  const cs = world.collision,
+    pool = world.threadPool;
+  const colored = coloredPlan(cs);
+  if (pool === null || colored === null || world.dimensions !== 2) return false;
+  shareContactBuffer(buf);
+  const st = cs.settings;
+  const s = scratch(world),
+    A = s.arrays,
+    P = s.params;
+  const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
+  if (colored.claim.length < blocks) colored.claim = sharedLike(colored.claim, Math.max(blocks, 2 * colored.claim.length));
+  A.length = 0;
+  A.push(
+    colored.pack,
+    colored.plan,
+    colored.bar,
+    cs.bodyState,
+    buf.ia,
+    buf.ib,
+    buf.nx,
+    buf.ny,
+    buf.normalMass,
+    buf.restitution,
+    buf.relativeVelocity,
+    buf.impactVelocity,
+    buf.maxNormalImpulse,
+    buf.totalNormalImpulse,
+    buf.impulse,
+    colored.bounds,
+    colored.pair,
+    colored.row,
+    colored.claim,
+  );
+  P[0] = buf.count;
+  P[1] = st.restitutionThreshold;
+  P[2] = st.elasticRestitutionThreshold;
+  P[3] = st.restitutionIterations;
+  P[4] = callerMayWait() ? 1 : 0;
+  P[5] = SPIN_MICROSECONDS;
+  const bar = colored.bar,
+    plan = colored.plan;
+  const site = 'contactSolverSystem#restitution';
+  const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
+  const t0 = nowMs();
+  bar[0] = 0;
+  bar[1] = 0;
+  bar[2] = 0;
+  bar[3] = 0;
+  colored.claim.fill(0, 0, blocks);
+  if (parallel) {
+    plan[3] = pool.threads;
+    pool.run('contactSolverSystem', KERNEL.restitutionColored2D, A, P, pool.threads, null);
+  } else {
+    plan[3] = 1;
+    restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
+  }
+  if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);
+  stageThreading.runs++;
+  stageThreading.bouncing += bar[3]!;
+  return true;
+}

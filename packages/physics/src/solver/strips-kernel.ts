@@ -1,0 +1,104 @@
+/**
+ * The strip cut of the coloured solve's plan (solver/coloring.ts) as a thread kernel (threads/kernels.ts
+ * rules: self-contained, the worker threads run its source text), and a helper of the strip plan
+ * (solver/strip-plan-kernel.ts), which a worker makes while the calling thread runs the impact stage
+ * (solver/coloring.ts startStripPlan, ThreadPool.start). The same function cuts inline on the calling
+ * thread, so the cut is the same either way.
+ */
+
+import type { KernelArray } from '../threads/kernel-types.js';
+
+/**
+ * Cuts a step's movable solver bodies into `P[2]` strips across the longer axis of their spread, each
+ * with about as many contact rows as the others: which solver bodies take gravity (dyn: dynamic
+ * bodies), the movable bodies' spread (a body is movable unless nothing can change it: no inverse mass
+ * or inertia, not dynamic, no velocity), each movable body's bin of `P[3]` along the axis, the rows a
+ * bin (by the row's first movable body), each bin's strip at the rows' quantiles (the strip of the
+ * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
+ * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
+ * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
+ * solver/strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state
+ * (rows of 8), 1 solver extra (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity),
+ * 3 the solver bodies' entity ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out;
+ * 255: not movable), 6 bin (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's
+ * strip (Uint8, out), 9 ia, 10 ib (Int32, the rows' solver bodies).
+ * P: 0 solver bodies, 1 rows, 2 strips (2 .. 255), 3 bins (<= P[5]), 4 BodyType.Dynamic, 5 the "no bin"
+ * mark, 6 b.
+ * Returns 0.
+ * @category Collision
+ */
+export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
+  if (lo >= hi) return 0;
+  const b = P[6]!;
+  const sb = A[b] as Float64Array,
+    ex = A[b + 1] as Float64Array,
+    type = A[b + 2] as Uint8Array,
+    list = A[b + 3] as Int32Array;
+  const dyn = A[b + 4] as Uint8Array,
+    strip = A[b + 5] as Uint8Array,
+    binOf = A[b + 6] as Uint16Array;
+  const hist = A[b + 7] as Int32Array,
+    binStrip = A[b + 8] as Uint8Array;
+  const IA = A[b + 9] as Int32Array,
+    IB = A[b + 10] as Int32Array;
+  const bodies = P[0]!,
+    n = P[1]!,
+    strips = P[2]!,
+    BINS = P[3]!,
+    DYNAMIC = P[4]!,
+    NO_BIN = P[5]!;
+  // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver/contact-solver.ts).
+  dyn[0] = 0;
+  for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === DYNAMIC ? 1 : 0;
+  // The longer axis of the movable bodies' spread.
+  let x0 = Infinity,
+    x1 = -Infinity,
+    y0 = Infinity,
+    y1 = -Infinity;
+  strip[0] = 255;
+  for (let k = 1; k < bodies; k++) {
+    const o = k * 8;
+    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) {
+      strip[k] = 255;
+      continue;
+    }
+    strip[k] = 0;
+    const x = ex[k * 6]!,
+      y = ex[k * 6 + 1]!;
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  }
+  const axis = x1 - x0 >= y1 - y0 ? 0 : 1;
+  const low = axis === 0 ? x0 : y0,
+    span = axis === 0 ? x1 - x0 : y1 - y0;
+  const scale = span > 0 && Number.isFinite(span) ? (BINS - 1) / span : 0;
+  // Each movable body's bin along the axis, then rows a bin (by the row's first movable body), then
+  // the bins' strips at the rows' quantiles.
+  binOf[0] = NO_BIN;
+  for (let k = 1; k < bodies; k++) {
+    if (strip[k] === 255) {
+      binOf[k] = NO_BIN;
+      continue;
+    }
+    const bin = Math.floor((ex[k * 6 + axis]! - low) * scale);
+    binOf[k] = bin >= 0 && bin < BINS ? bin : 0;
+  }
+  hist.fill(0, 0, BINS);
+  for (let i = 0; i < n; i++) {
+    const ba = binOf[IA[i]!]!;
+    const bin = ba !== NO_BIN ? ba : binOf[IB[i]!]!;
+    if (bin !== NO_BIN) hist[bin]++;
+  }
+  let total = 0;
+  for (let j = 0; j < BINS; j++) total += hist[j]!;
+  let acc = 0;
+  for (let j = 0; j < BINS; j++) {
+    const mid = acc + hist[j]! / 2;
+    binStrip[j] = total > 0 ? Math.min(strips - 1, Math.floor((strips * mid) / total)) : 0;
+    acc += hist[j]!;
+  }
+  for (let k = 1; k < bodies; k++) if (strip[k] !== 255) strip[k] = binStrip[binOf[k]!]!;
+  return 0;
+}

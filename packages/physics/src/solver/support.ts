@@ -1,0 +1,173 @@
+/**
+ * Support rows of the ball contacts' relax sweep (solver/contact-solver.ts, solve2D and solve3D, and the coloured solve
+ * of a threaded 2D world, solver/coloring-kernel.ts, which repeats the test inline for frictionless rows
+ * only): shock propagation (Guendelman, Bridson and Fedkiw, "Nonconvex rigid bodies with stacking",
+ * SIGGRAPH 2003), limited to the relax sweep of frictionless rows and rows with the heavier ball above,
+ * and to row updates that take energy out.
+ *
+ * Each soft substep solves the contacts with one Gauss-Seidel sweep with bias (which pushes overlaps
+ * out), then one relax sweep without bias that should take the push-out velocity away again. Along a
+ * tall chain of contacts one relax sweep cannot: relaxing the row under a ball only moves that ball's
+ * velocity into the ball below, so the push-out of a 60-layer column stays in it as kinetic energy.
+ * With the stiff contacts of issue 13 (frequency f up to 0.6 of the substep rate, solver/contact-scale.ts)
+ * a column whose rows have no friction to damp them boiled: 120 frictionless balls of 2 cm zigzagging
+ * between walls 5 radii apart kept their fastest ball at 5 to 11 sqrt(g r) for as long as they ran,
+ * 0.5 m balls at 1 sqrt(g r), and 120 balls stacked straight up in a tube threw balls at 28 sqrt(g r);
+ * the exact equilibrium of the zigzag column grew unstable above f h_s ~ 0.27 (the code before issue 13
+ * ran at f h_s 0.25, seven times softer at 2 cm, and settled). Rows with friction settle at f h_s 0.6
+ * (their tangent rows damp the column), and are left as they were, unless the upper ball is at least
+ * HEAVY_RATIO times heavier: a relax update moves the upper ball by only m_lower / (m_lower + m_upper) of the relative
+ * speed, so a heavy ball resting on a light one kept the push-out speed of every substep. Resting 100,
+ * 300 and 1,000 kg balls on a 1 kg ball (restitution 0, the defaults) rose 27, 320 and 37 mm above
+ * where they started and kept bouncing; with these rows held (and the relax sweep taking the floor and
+ * wall rows of such light balls first, `markFirstRelaxRows`, so the light ball is at rest when its row
+ * above is relaxed) they
+ * settle and never rise, at mass ratios up to 3,000 (test/physics/heavy-on-light.test.ts).
+ *
+ * In the relax sweep, a row between two dynamic balls with no friction (bound 0) or whose upper ball is
+ * at least HEAVY_RATIO times heavier, and whose normal is within acos(SUPPORT_COS) of gravity (one ball rests on the other), is solved with the lower ball held
+ * (inverse mass 0, `holdsLower`) when that only slows the ball above: when the lower ball's speed along
+ * the normal is at most the upper one's, so making the upper ball move with the lower one along the
+ * normal cannot raise its kinetic energy, and the lower ball is not touched. One sweep then clears the
+ * push-out speed of a whole column. Otherwise (and always in the sweep with bias, and for the impact
+ * stage and restitution) both masses count, so momentum is exchanged as it should be.
+ * Measured (fastest ball over the last 100 of 400 steps, sqrt(g r), sleep off): 120 balls zigzagging,
+ * 2 cm 3.89 -> 0.0024, 0.5 m 1.10 -> 0.0034 (the code before issue 13: 0.038 and 0.127); 60 balls of
+ * 2 cm in a tube, 300 steps: 4.04 -> 0.0001 (test/physics/support-rows.test.ts); on 2 threads with
+ * the coloured solve, 6.88 -> 0.0022 and 3.30 -> 0.0002. Not everything: the
+ * same 120 balls put exactly touching in their ideal lattice (pairs on the walls, one ball between)
+ * came to rest from one start (0.007) but kept swaying at 0.2 to 0.46 sqrt(g r) in place from another
+ * (the rows with the walls are horizontal, not support rows; the code before issue 13: at rest).
+ *
+ * The trade-off: in such a row the relax sweep does not conserve momentum (the ball above is stopped
+ * against the ball below as if that one were immovable). The relax sweep exists to remove speed the
+ * bias added, so this changes only how that speed is removed, never adds energy.
+ */
+
+/**
+ * Smallest |n . g| / |g| (dimensionless, 0..1) for which a frictionless row between two dynamic balls
+ * is a support row: 0.3, rows within 72.5 degrees of vertical (a zigzag column's rows lean 41 degrees
+ * from horizontal, |n . g| / |g| = 0.66; a row side by side, like a Newton's cradle's, is 0 and never one).
+ * @category Collision
+ */
+export const SUPPORT_COS = 0.3;
+
+/**
+ * Least mass ratio, upper ball over lower ball (dimensionless), for which a support row with friction
+ * holds its lower ball in the relax sweep: 4, where a relax update moves the upper ball by a fifth of
+ * the relative speed or less. Heavy balls from 30 times the lower one's mass gained energy without it;
+ * below, the two-mass relax with friction settles as it did (a 2 kg ball rolling onto a column of
+ * 1 kg balls, test/physics/collision-accuracy.test.ts's marble run, is left as it was).
+ * @category Collision
+ */
+export const HEAVY_RATIO = 4;
+
+/**
+ * Whether the upper ball of a support row, of inverse mass `imUpper` (1/kg, > 0), is at least
+ * HEAVY_RATIO times as heavy as the lower one, of inverse mass `imLower` (1/kg, > 0).
+ * @category Collision
+ */
+export function heavierAbove(imLower: number, imUpper: number): boolean {
+  return imUpper * HEAVY_RATIO <= imLower;
+}
+
+/**
+ * Whether the relax sweep holds the lower ball of a support row: its normal speed |v_lower . n| (m/s,
+ * >= 0) is at most the upper ball's |v_upper . n| (m/s, >= 0), so moving the upper ball to the lower
+ * one's normal velocity does not raise its kinetic energy.
+ * @category Collision
+ */
+export function holdsLower(speedLower: number, speedUpper: number): boolean {
+  return speedLower <= speedUpper;
+}
+
+/**
+ * Writes the unit vector along `g` (m/s^2, 2 or 3 components; the first two used), or (0, 0) for no
+ * gravity, into out[at] and out[at + 1] (no array made: the solvers ask once a step).
+ * @category Collision
+ */
+export function downwardInto(g: ArrayLike<number>, out: Float64Array, at: number): void {
+  const gx = g[0]!,
+    gy = g[1]!;
+  const l = Math.sqrt(gx * gx + gy * gy);
+  if (l > 0) {
+    out[at] = gx / l;
+    out[at + 1] = gy / l;
+  } else {
+    out[at] = 0;
+    out[at + 1] = 0;
+  }
+}
+
+/**
+ * Writes the unit vector along `g` (m/s^2, 3 components), or (0, 0, 0) for no gravity, into out[at],
+ * out[at + 1] and out[at + 2] (the 3D solver's support rows).
+ * @category Collision
+ */
+export function downward3Into(g: ArrayLike<number>, out: Float64Array, at: number): void {
+  const gx = g[0]!,
+    gy = g[1]!,
+    gz = g[2] ?? 0;
+  const l = Math.sqrt(gx * gx + gy * gy + gz * gz);
+  const k = l > 0 ? 1 / l : 0;
+  out[at] = gx * k;
+  out[at + 1] = gy * k;
+  out[at + 2] = gz * k;
+}
+
+/** Per solver body: whether it is the lower ball of a support row with a heavier ball above (scratch, not world state). */
+let underHeavier = new Uint8Array(64);
+/** Per row: 1 if the row holds a ball that is under a heavier ball against a static body (scratch, not world state). */
+let firstRelax = new Uint8Array(64);
+
+/**
+ * Marks the rows the relax sweep solves first (solver/contact-solver.ts solve2D and solve3D): rows against a static
+ * body (solver index 0 on side A) whose ball is the lower ball of a support row with a heavier ball
+ * above. Relaxed first, such a ball is at rest when the row above it is relaxed, so that row may hold
+ * it (`holdsLower`). Returns the per-row flags (valid for the first `buf.count` rows until the next call).
+ * @param stride the solver state's row stride (8 in 2D, 12 in 3D); the inverse mass sits at 5 or 9.
+ * @param down the unit vector along gravity (its first 2 or 3 components at `at`).
+ * @category Collision
+ */
+export function markFirstRelaxRows(
+  ia: Int32Array,
+  ib: Int32Array,
+  nx: Float64Array,
+  ny: Float64Array,
+  nz: Float64Array | null,
+  count: number,
+  bodyCount: number,
+  state: Float64Array,
+  stride: number,
+  down: Float64Array,
+  at: number,
+): Uint8Array {
+  if (underHeavier.length < bodyCount) underHeavier = new Uint8Array(Math.max(bodyCount, 2 * underHeavier.length));
+  if (firstRelax.length < count) firstRelax = new Uint8Array(Math.max(count, 2 * firstRelax.length));
+  const under = underHeavier,
+    flags = firstRelax;
+  under.fill(0, 0, bodyCount);
+  const im = stride === 8 ? 5 : 9;
+  const dx = down[at]!,
+    dy = down[at + 1]!,
+    dz = nz === null ? 0 : down[at + 2]!;
+  let any = false;
+  for (let i = 0; i < count; i++) {
+    const a = ia[i]!;
+    if (a === 0) continue;
+    const b = ib[i]!;
+    const imA = state[a * stride + im]!,
+      imB = state[b * stride + im]!;
+    if (!(imA > 0 && imB > 0)) continue;
+    const up = -(dx * nx[i]! + dy * ny[i]! + (nz === null ? 0 : dz * nz[i]!));
+    if (up > SUPPORT_COS && heavierAbove(imA, imB)) {
+      under[a] = 1;
+      any = true;
+    } else if (up < -SUPPORT_COS && heavierAbove(imB, imA)) {
+      under[b] = 1;
+      any = true;
+    }
+  }
+  for (let i = 0; i < count; i++) flags[i] = any && ia[i] === 0 && under[ib[i]!] === 1 ? 1 : 0;
+  return flags;
+}

@@ -1,0 +1,39 @@
+/**
+ * The warm-start cache's hash table (contacts.ts) built by a thread kernel (threads/kernels.ts rules:
+ * self-contained, the worker threads run its source text): storeWarmStart runs it on the calling
+ * thread, and a threaded world on a worker while the calling thread finishes the step
+ * (solver/stages-threads.ts storeWarmStartOnThreads), so the table is the same either way.
+ */
+
+import type { KernelArray } from '../threads/kernel-types.js';
+
+/**
+ * Fills the warm-start table of P[0] contact rows: slots zeroed, then each row i stored as i + 1 at
+ * the first free slot from hashKey(kind, a, b, feature) (contacts.ts: the hash and linear probing that
+ * findWarmStart and the preparation kernel read the table with). The whole table is built on the thread whose range is
+ * not empty (lo < hi); other ranges do nothing. A: 0 slots (Int32, out; P[1] of them, a power of two
+ * above twice the rows), 1 kind (Uint8), 2 a, 3 b, 4 feature (Int32). P: 0 rows, 1 slots. Returns 0.
+ * @category Collision
+ */
+export function warmStartTable(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
+  if (lo >= hi) return 0;
+  const slots = A[0] as Int32Array,
+    kind = A[1] as Uint8Array,
+    CA = A[2] as Int32Array,
+    CB = A[3] as Int32Array,
+    F = A[4] as Int32Array;
+  const n = P[0]!,
+    size = P[1]!,
+    mask = size - 1;
+  slots.fill(0, 0, size);
+  for (let i = 0; i < n; i++) {
+    let h = Math.imul(CA[i]! ^ (kind[i]! << 28), 0x9e3779b1);
+    h ^= Math.imul(CB[i]!, 0x85ebca77);
+    h ^= Math.imul(F[i]!, 0xc2b2ae3d);
+    h ^= h >>> 15;
+    let s = (Math.imul(h, 0x27d4eb2f) >>> 0) & mask;
+    while (slots[s] !== 0) s = (s + 1) & mask;
+    slots[s] = i + 1;
+  }
+  return 0;
+}

@@ -1,0 +1,382 @@
+import { fusedForcesOn } from '../integrators/fused-state.js';
+import { KERNEL } from '../threads/kernels.js';
+import { runParallel } from '../threads/parallel.js';
+import { NonFiniteStateError } from '../world/errors.js';
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld, System } from '../world/options.js';
+import { query } from '../world/query.js';
+import type { StageName } from './stage-names.js';
+
+/**
+ * The finiteness check `step` runs at the end of each stage: a NaN or infinity in a body's state is
+ * reported by the stage that wrote it, naming the entity and the field, before the next stage can
+ * spread it to another body (the collision solver couples bodies; a force law reads other bodies).
+ *
+ * After `forces`: the force and torque accumulators. After every stage (`forces` included) that ran
+ * a system not marked `trustFiniteOutput`: Velocity and Position of every entity that has both, and
+ * the angular state of every entity that turns (2D: AngularVelocity.z and Angle.value; 3D: the three
+ * components of AngularVelocity and the four of Orientation).
+ * Built-in systems that write no body state (force laws write only forces; broadphase and narrowphase
+ * only contacts) or check what they write themselves (the integrators' running sums over their
+ * bodies' positions and velocities, the contact solver's over its bodies, emitters, sleeping) are
+ * marked, so a stage made only of them is not checked again (after `integrate` only the turning
+ * bodies are); a user system added with `addSystem` is always checked after, and at once when another system follows
+ * it in its stage (step/step.ts), so a NaN it writes before the contact solver does not spread.
+ * In 2D the z components of the linear state are not part of the motion and are not checked;
+ * `clearForces` writes zeros and is never checked. In a substep that runs the fused force-and-integrate
+ * pass (integrators/fused-gate.ts) the forces are written by the integrator, which checks them itself
+ * and reports a non-finite one as this check would (field 'Force.x', 'Force.y' or 'Force.z', stage 'forces').
+ * It tests each body's force before it writes that body's velocity and position, so the body named and
+ * every body after it in the pass keep their motion state from before the substep, and no position or
+ * velocity is made non-finite by the force. One difference from the separate stages remains: the bodies
+ * the pass moved before it (with finite forces) stay moved, where the forces stage would have thrown
+ * before any body moved; integrators/semi-implicit-euler.ts (`fusedForced2`) lists which.
+ *
+ * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
+ * per field, and a second pass to name the culprit only when the first finds one.
+ */
+
+/**
+ * What a built-in system checks itself: 'all' it writes, or only its linear state (position, velocity).
+ * @category World and step
+ */
+export type FiniteScope = 'all' | 'linear';
+
+const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
+
+/**
+ * Marks built-in systems that write no body state, or check what they write and throw
+ * NonFiniteStateError themselves. `scope` 'linear': the system checks the positions and velocities it
+ * writes but not the angular state (the integrators), so the stage still checks the turning bodies.
+ * `idle`: the system is trusted only while idle(world) is true (it then writes nothing, e.g. a
+ * collision system for a kind of shape the world has none of).
+ * @category World and step
+ */
+export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
+  for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
+}
+
+/**
+ * What `step` must check after a stage ran `systems`: 2 the whole motion state (some system is not
+ * trusted), 1 only the angular state (some system checks only its linear state), 0 nothing.
+ * @category World and step
+ */
+export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: readonly System[]): 0 | 1 | 2 {
+  if (stage === 'clearForces' || systems.length === 0) return 0;
+  let need: 0 | 1 | 2 = 0;
+  for (let i = 0; i < systems.length; i++) {
+    const level = systemNeedsCheck(world, systems[i]!);
+    if (level === 2) return 2;
+    if (level === 1) need = 1;
+  }
+  return need;
+}
+
+/**
+ * What must be checked after `system` alone: 2 the whole motion state (not trusted, or trusted only
+ * while idle and not idle now), 1 only the angular state (it checks its linear state itself), 0 nothing.
+ * @category World and step
+ */
+export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
+  const t = trusted.get(system);
+  if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
+  return t.scope === 'linear' ? 1 : 0;
+}
+
+/*
+ * The fast passes: one fused loop per group of fields, each written out for its number of arrays so
+ * the loop stays monomorphic. x * 0 is 0 for every finite x and NaN for NaN and both infinities, so
+ * the sum is 0 exactly when every value is finite (a plain sum of huge finite values could overflow).
+ * When the query holds every live id (a world of particles), its ids are 1..maxId and the loop runs
+ * over that range directly, in memory order.
+ */
+
+function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array): number {
+  let s = 0;
+  const n = ents.length;
+  if (dense) {
+    // The last id first, then the ids in pairs (id n twice when n is even: a check, not a sum). Nothing
+    // follows the loops but the return: a function run once a step has its loop compiled on the
+    // stack (OSR) in its first call, and an operation after the loop that had not run by then threw
+    // that code away at every later call (140 times in 100 steps of a threaded balls-in-box).
+    if (n > 0) s = a[n]! * 0 + b[n]! * 0;
+    for (let e = 1; e < n; e += 2) s += a[e]! * 0 + b[e]! * 0 + (a[e + 1]! * 0 + b[e + 1]! * 0);
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0;
+    }
+  return s;
+}
+
+function sum3(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array): number {
+  let s = 0;
+  const n = ents.length;
+  if (dense) {
+    if (n > 0) s = a[n]! * 0 + b[n]! * 0 + c[n]! * 0;
+    for (let e = 1; e < n; e += 2) s += a[e]! * 0 + b[e]! * 0 + c[e]! * 0 + (a[e + 1]! * 0 + b[e + 1]! * 0 + c[e + 1]! * 0);
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0 + c[e]! * 0;
+    }
+  return s;
+}
+
+function sum4(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array, c: Float64Array, d: Float64Array): number {
+  let s = 0;
+  const n = ents.length;
+  if (dense) {
+    if (n > 0) s = a[n]! * 0 + b[n]! * 0 + (c[n]! * 0 + d[n]! * 0);
+    for (let e = 1; e < n; e += 2) {
+      s += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (a[e + 1]! * 0 + b[e + 1]! * 0 + (c[e + 1]! * 0 + d[e + 1]! * 0));
+    }
+  } else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0);
+    }
+  return s;
+}
+
+function sum6(
+  ents: ArrayLike<number>,
+  dense: boolean,
+  a: Float64Array,
+  b: Float64Array,
+  c: Float64Array,
+  d: Float64Array,
+  f: Float64Array,
+  g: Float64Array,
+): number {
+  let s0 = 0;
+  const n = ents.length;
+  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0);
+    }
+  return s0;
+}
+
+function sum7(
+  ents: ArrayLike<number>,
+  dense: boolean,
+  a: Float64Array,
+  b: Float64Array,
+  c: Float64Array,
+  d: Float64Array,
+  f: Float64Array,
+  g: Float64Array,
+  h: Float64Array,
+): number {
+  let s0 = 0;
+  const n = ents.length;
+  if (dense) for (let e = 1; e <= n; e++) s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
+  else
+    for (let i = 0; i < n; i++) {
+      const e = ents[i]!;
+      s0 += a[e]! * 0 + b[e]! * 0 + (c[e]! * 0 + d[e]! * 0) + (f[e]! * 0 + g[e]! * 0 + h[e]! * 0);
+    }
+  return s0;
+}
+
+type Field = readonly [name: string, values: Float64Array];
+
+const EMPTY: ArrayLike<number> = new Int32Array(0);
+const EMPTY_PARAMS: ArrayLike<number> = [];
+
+/**
+ * Checks what `stage` may have written (see the module comment): the force and torque accumulators
+ * after `forces`, the angular state if `level` >= 1 and the linear state if `level` is 2. Throws a NonFiniteStateError naming the first
+ * entity (its handle) and field that is NaN or infinite, and the stage.
+ * @category World and step
+ */
+export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 | 1 | 2): void {
+  const c = world.components;
+  const is2D = world.dimensions === 2;
+  const maxId = world.entityIndex.maxId;
+  if (stage === 'forces') {
+    const F = c.Force,
+      T = c.Torque;
+    let ents = query(world, [F]);
+    if (ents.length > 0 && !fusedForcesOn(world)) {
+      const dense = ents.length === maxId;
+      const par =
+        world.threadPool === null
+          ? null
+          : runParallel(
+              world,
+              'forces stage finiteness check',
+              KERNEL.finiteProbe,
+              is2D ? [F.x, F.y] : [F.x, F.y, F.z],
+              EMPTY_PARAMS,
+              ents.length,
+              dense ? null : ents,
+            );
+      if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
+        name(
+          world,
+          stage,
+          ents,
+          is2D
+            ? [
+                ['Force.x', F.x],
+                ['Force.y', F.y],
+              ]
+            : [
+                ['Force.x', F.x],
+                ['Force.y', F.y],
+                ['Force.z', F.z],
+              ],
+        );
+      }
+    }
+    ents = query(world, [T]);
+    if (ents.length > 0) {
+      const dense = ents.length === maxId;
+      const par =
+        world.threadPool === null
+          ? null
+          : runParallel(
+              world,
+              'forces stage finiteness check',
+              KERNEL.finiteProbe,
+              is2D ? [T.z] : [T.x, T.y, T.z],
+              EMPTY_PARAMS,
+              ents.length,
+              dense ? null : ents,
+            );
+      if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
+        name(
+          world,
+          stage,
+          ents,
+          is2D
+            ? [['Torque.z', T.z]]
+            : [
+                ['Torque.x', T.x],
+                ['Torque.y', T.y],
+                ['Torque.z', T.z],
+              ],
+        );
+      }
+    }
+  }
+  if (level === 0) return;
+  const P = c.Position,
+    V = c.Velocity,
+    W = c.AngularVelocity;
+  // Velocities first: a NaN velocity makes the position NaN in the same stage, and it is the cause.
+  let ents = level === 2 ? query(world, [P, V]) : EMPTY;
+  if (ents.length > 0) {
+    const dense = ents.length === maxId;
+    // A world with threads splits the probe over them (threads/kernels.ts finiteProbe: the same test).
+    const par =
+      world.threadPool === null
+        ? null
+        : runParallel(
+            world,
+            `${stage} stage finiteness check`,
+            KERNEL.finiteProbe,
+            is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z],
+            EMPTY_PARAMS,
+            ents.length,
+            dense ? null : ents,
+          );
+    if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
+      name(
+        world,
+        stage,
+        ents,
+        is2D
+          ? [
+              ['Velocity.x', V.x],
+              ['Velocity.y', V.y],
+              ['Position.x', P.x],
+              ['Position.y', P.y],
+            ]
+          : [
+              ['Velocity.x', V.x],
+              ['Velocity.y', V.y],
+              ['Velocity.z', V.z],
+              ['Position.x', P.x],
+              ['Position.y', P.y],
+              ['Position.z', P.z],
+            ],
+      );
+    }
+  }
+  if (is2D) {
+    const A = c.Angle.value;
+    ents = query(world, [W, c.Angle]);
+    if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
+      name(world, stage, ents, [
+        ['AngularVelocity.z', W.z],
+        ['Angle.value', A],
+      ]);
+    }
+  } else {
+    const Q = c.Orientation;
+    ents = query(world, [W, Q]);
+    if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
+      name(world, stage, ents, [
+        ['AngularVelocity.x', W.x],
+        ['AngularVelocity.y', W.y],
+        ['AngularVelocity.z', W.z],
+        ['Orientation.x', Q.x],
+        ['Orientation.y', Q.y],
+        ['Orientation.z', Q.z],
+        ['Orientation.w', Q.w],
+      ]);
+    }
+  }
+}
+
+/**
+ * For the fused force-and-integrate pass (integrators/semi-implicit-euler.ts), after its running check
+ * failed: throws the NonFiniteStateError this module's check of the forces stage would have thrown (the
+ * first of `ents` whose force is NaN or infinite: Force.x, Force.y, and in 3D Force.z; stage 'forces');
+ * returns if every force is finite (the caller then names the position or velocity).
+ * @category World and step
+ */
+export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<number>): void {
+  const F = world.components.Force;
+  if (world.dimensions === 2) {
+    if (sum2(ents, false, F.x, F.y) !== 0)
+      name(world, 'forces', ents, [
+        ['Force.x', F.x],
+        ['Force.y', F.y],
+      ]);
+  } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
+    name(world, 'forces', ents, [
+      ['Force.x', F.x],
+      ['Force.y', F.y],
+      ['Force.z', F.z],
+    ]);
+  }
+}
+
+/** The slow pass, run once a fast pass found a non-finite value: throws naming the first culprit. */
+function name(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fields: Field[]): never {
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    for (const [field, values] of fields) {
+      const v = values[e]!;
+      if (Number.isFinite(v)) continue;
+      const c = world.components;
+      const at = (a: Float64Array) => a[e];
+      throw new NonFiniteStateError(
+        currentHandle(world, e),
+        field,
+        v,
+        stage,
+        `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
+          `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
+          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`,
+      );
+    }
+  }
+  throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);
+}
