@@ -142,7 +142,7 @@ describe('bench CLI', () => {
   it('--list lists the scenes and the engines that support each', async () => {
     const [human, json] = await Promise.all([runCli(['--list']), runCli(['--list', '--json'])]);
     expect(human.code).toBe(0);
-    expect(human.stdout).toMatch(/^balls-in-box\s+bitphysics, rapier2d, matter\s/m);
+    expect(human.stdout).toMatch(/^balls-in-box\s+bitphysics, rapier2d, rapier2d-simd, matter\s/m);
     expect(human.stdout).toMatch(/^particles\s+bitphysics, plain-loop\s/m);
     const scenes = jsonLines(json.stdout);
     expect(scenes.map((s) => s.scene)).toEqual(expect.arrayContaining(['balls-in-box', 'particles']));
@@ -323,6 +323,31 @@ describe.concurrent('bench CLI scene parameters, studies and newer scenes', () =
       expect(line.fallen).toBe(0);
       expect(typeof line.maxDrift).toBe('number');
     }
+  });
+
+  /**
+   * The peers users pick for speed (issue 36): the WASM SIMD builds of Rapier and Jolt's WASM build. A
+   * pyramid standing on its exact start barely moves in 30 steps in any engine that stacks boxes
+   * (top drop well under the 0.05 m goal; none fall), in 2D (base 3: 6 boxes) and 3D (base 3: 14
+   * boxes); a few spheres dropped into the closed box never overlap by half their radius.
+   */
+  it('--vs rapier2d-simd, rapier3d-simd and jolt run the pyramids and spheres with the quality fields', async () => {
+    const [flat, solid, spheres] = await Promise.all([
+      runCli(['--scene', 'pyramid', '--count', '3', '--steps', '30', '--vs', 'rapier2d-simd', '--json']),
+      runCli(['--scene', 'pyramid-3d', '--count', '3', '--steps', '30', '--vs', 'rapier3d-simd,jolt', '--json']),
+      runCli(['--scene', 'spheres-in-box', '--count', '64', '--steps', '20', '--warmup', '0', '--vs', 'jolt', '--json']),
+    ]);
+    for (const run of [flat, solid, spheres]) expect(run.code).toBe(0);
+    expect(jsonLines(flat.stdout).map((l) => l.engine)).toEqual(['bitphysics', 'rapier2d-simd']);
+    expect(jsonLines(solid.stdout).map((l) => l.engine)).toEqual(['bitphysics', 'rapier3d-simd', 'jolt']);
+    for (const line of [...jsonLines(flat.stdout), ...jsonLines(solid.stdout)]) {
+      expect(line.topDrop as number).toBeLessThan(0.05);
+      expect(line.fallen).toBe(0);
+    }
+    const [, jolt] = jsonLines(spheres.stdout);
+    expectEngineLine(jolt!, 'jolt', 'spheres-in-box', 64, 20);
+    expect(jolt!.ratioOf).toBe('bitphysics/jolt');
+    expect(jolt!.maxOverlapPercent as number).toBeLessThan(50);
   });
 
   /**

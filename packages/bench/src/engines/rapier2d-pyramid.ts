@@ -7,8 +7,9 @@ type Rapier = typeof import('@dimforge/rapier2d-compat').default;
  * Rapier 2D's `pyramid`: the layout of `pyramidLayout`, every box a dynamic body with a 0.5 x 0.5
  * cuboid collider (density 1, friction 0.6, restitution 0), the ground one fixed cuboid, gravity from
  * the layout, timestep 1/60 s, every integration parameter at Rapier's default (sleeping allowed).
+ * `name` is the engine's name in the results (rapier2d or rapier2d-simd: the same API).
  */
-export function createRapierPyramid(R: Rapier, options: SceneRunOptions): EngineInstance {
+export function createRapierPyramid(R: Rapier, options: SceneRunOptions, name = 'rapier2d'): EngineInstance {
   const layout = pyramidLayout({ count: options.count });
   let world: InstanceType<Rapier['World']> | undefined = new R.World({ x: layout.gravity[0], y: layout.gravity[1] });
   const w = world;
@@ -34,9 +35,9 @@ export function createRapierPyramid(R: Rapier, options: SceneRunOptions): Engine
   }
   const ip = w.integrationParameters;
   return {
-    engine: 'rapier2d',
+    engine: name,
     notes: [
-      `rapier2d ${R.version()}: pyramid, dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, sleeping allowed (defaults); WASM compiled optimized up front`,
+      `${name} ${R.version()}: pyramid, dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, sleeping allowed (defaults); WASM compiled optimized up front`,
     ],
     step(): void {
       w.step();

@@ -6,28 +6,39 @@ import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } fro
 
 type Rapier = typeof import('@dimforge/rapier3d-compat').default;
 
-let rapier: Promise<Rapier> | undefined;
+/**
+ * A loader of one Rapier 3D build (`importer` imports the package): it loads and initialises the
+ * module once (it instantiates its inlined WASM module), with V8's baseline WASM compiler turned off
+ * first (`optimizedWasm`, see rapier2d.ts for why), and runs one tiny world so the optimizing compiler
+ * has compiled what a step runs before any timing.
+ */
+function rapier3dLoader(importer: () => Promise<{ default: Rapier }>): () => Promise<Rapier> {
+  let rapier: Promise<Rapier> | undefined;
+  return () => {
+    rapier ??= (async () => {
+      optimizedWasm();
+      const mod = (await importer()).default;
+      await mod.init();
+      const w = new mod.World({ x: 0, y: -10, z: 0 });
+      const b = w.createRigidBody(mod.RigidBodyDesc.dynamic());
+      w.createCollider(mod.ColliderDesc.ball(0.5), b);
+      w.createCollider(mod.ColliderDesc.cuboid(1, 1, 1).setTranslation(0, -1.5, 0), w.createRigidBody(mod.RigidBodyDesc.fixed()));
+      w.step();
+      w.free();
+      return mod;
+    })();
+    return rapier;
+  };
+}
+
+/** Loads @dimforge/rapier3d-compat once (see rapier3dLoader). */
+export const loadRapier3d = rapier3dLoader(() => import('@dimforge/rapier3d-compat'));
 
 /**
- * Loads and initialises @dimforge/rapier3d-compat once (it instantiates its inlined WASM module),
- * with V8's baseline WASM compiler turned off first (`optimizedWasm`, see `loadRapier2d` for why), and
- * runs one tiny world so the optimizing compiler has compiled what a step runs before any timing.
+ * Loads @dimforge/rapier3d-simd-compat once (see rapier3dLoader): the same API built with WASM SIMD,
+ * published separately (0.20.0 here against the plain build's 0.21.0); the notes print the version.
  */
-export function loadRapier3d(): Promise<Rapier> {
-  rapier ??= (async () => {
-    optimizedWasm();
-    const mod = (await import('@dimforge/rapier3d-compat')).default;
-    await mod.init();
-    const w = new mod.World({ x: 0, y: -10, z: 0 });
-    const b = w.createRigidBody(mod.RigidBodyDesc.dynamic());
-    w.createCollider(mod.ColliderDesc.ball(0.5), b);
-    w.createCollider(mod.ColliderDesc.cuboid(1, 1, 1).setTranslation(0, -1.5, 0), w.createRigidBody(mod.RigidBodyDesc.fixed()));
-    w.step();
-    w.free();
-    return mod;
-  })();
-  return rapier;
-}
+export const loadRapier3dSimd = rapier3dLoader(() => import('@dimforge/rapier3d-simd-compat') as unknown as Promise<{ default: Rapier }>);
 
 /**
  * Rapier 3D (@dimforge/rapier3d-compat, WASM): `spheres-in-box` with the layout of
@@ -38,97 +49,105 @@ export function loadRapier3d(): Promise<Rapier> {
  * with Rapier's default thresholds). Restitution and friction combine by Rapier's default rule
  * (average). SI units.
  */
-export const rapier3dEngine: EngineAdapter = {
-  name: 'rapier3d',
-  description: 'Rapier 3D (@dimforge/rapier3d-compat, Rust compiled to WASM), default integration parameters',
-  async prepare(): Promise<void> {
-    await loadRapier3d();
-  },
-  supports(scene: string): boolean {
-    return scene === 'spheres-in-box' || scene === 'box-pile-3d' || scene === 'pyramid-3d';
-  },
-  async create(options: SceneRunOptions): Promise<EngineInstance> {
-    if (options.scene === 'box-pile-3d' || options.scene === 'pyramid-3d') return createBoxes(options);
-    if (options.scene !== 'spheres-in-box') throw new RangeError(`rapier3d: does not support scene "${options.scene}"`);
-    const R = await loadRapier3d();
-    const layout = spheresInBoxLayout({ count: options.count, seed: options.seed });
-    let world: InstanceType<Rapier['World']> | undefined = new R.World({
-      x: layout.gravity[0],
-      y: layout.gravity[1],
-      z: layout.gravity[2],
-    });
-    const w = world;
-    w.timestep = 1 / 60;
-    const ground = w.createRigidBody(R.RigidBodyDesc.fixed());
-    const walls = new Set<number>();
-    for (const b of boxWalls3d(layout.min, layout.max)) {
-      const collider = w.createCollider(
-        R.ColliderDesc.cuboid(b.hx, b.hy, b.hz)
-          .setTranslation(b.cx, b.cy, b.cz)
-          .setRestitution(layout.restitution)
-          .setFriction(layout.friction),
-        ground,
-      );
-      walls.add(collider.handle);
-    }
-    const n = layout.count;
-    const bodies: Array<InstanceType<Rapier['RigidBody']>> = new Array(n);
-    const colliders: Array<InstanceType<Rapier['Collider']>> = new Array(n);
-    const p = layout.positions;
-    for (let i = 0; i < n; i++) {
-      const body = w.createRigidBody(R.RigidBodyDesc.dynamic().setTranslation(p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!));
-      colliders[i] = w.createCollider(
-        R.ColliderDesc.ball(layout.radius).setRestitution(layout.restitution).setFriction(layout.friction).setMass(layout.mass),
-        body,
-      );
-      bodies[i] = body;
-    }
-    const ip = w.integrationParameters;
-    const notes = [
-      `rapier3d ${R.version()}: dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, ` +
-        `${ip.numInternalPgsIterations} internal PGS iteration, sleeping allowed with Rapier's default thresholds (defaults); ` +
-        'six static cuboid walls; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
-    ];
-    return {
-      engine: 'rapier3d',
-      notes,
-      step(): void {
-        w.step();
-      },
-      stats() {
-        let contacts = 0;
-        let sleeping = 0;
-        for (let i = 0; i < n; i++) {
-          if (bodies[i]!.isSleeping()) sleeping++;
-          const c = colliders[i]!;
-          const h = c.handle;
-          w.contactPairsWith(c, (other) => {
-            // Each sphere-sphere pair once (from its lower handle); sphere-wall pairs from the sphere.
-            if (!walls.has(other.handle) && other.handle < h) return;
-            w.contactPair(c, other, (manifold) => {
-              contacts += manifold.numContacts();
+function rapier3dAdapter(name: string, pkg: string, load: () => Promise<Rapier>): EngineAdapter {
+  return {
+    name,
+    description: `Rapier 3D (${pkg}, Rust compiled to WASM), default integration parameters`,
+    async prepare(): Promise<void> {
+      await load();
+    },
+    supports(scene: string): boolean {
+      return scene === 'spheres-in-box' || scene === 'box-pile-3d' || scene === 'pyramid-3d';
+    },
+    async create(options: SceneRunOptions): Promise<EngineInstance> {
+      if (options.scene === 'box-pile-3d' || options.scene === 'pyramid-3d') return createBoxes(await load(), options, name);
+      if (options.scene !== 'spheres-in-box') throw new RangeError(`${name}: does not support scene "${options.scene}"`);
+      const R = await load();
+      const layout = spheresInBoxLayout({ count: options.count, seed: options.seed });
+      let world: InstanceType<Rapier['World']> | undefined = new R.World({
+        x: layout.gravity[0],
+        y: layout.gravity[1],
+        z: layout.gravity[2],
+      });
+      const w = world;
+      w.timestep = 1 / 60;
+      const ground = w.createRigidBody(R.RigidBodyDesc.fixed());
+      const walls = new Set<number>();
+      for (const b of boxWalls3d(layout.min, layout.max)) {
+        const collider = w.createCollider(
+          R.ColliderDesc.cuboid(b.hx, b.hy, b.hz)
+            .setTranslation(b.cx, b.cy, b.cz)
+            .setRestitution(layout.restitution)
+            .setFriction(layout.friction),
+          ground,
+        );
+        walls.add(collider.handle);
+      }
+      const n = layout.count;
+      const bodies: Array<InstanceType<Rapier['RigidBody']>> = new Array(n);
+      const colliders: Array<InstanceType<Rapier['Collider']>> = new Array(n);
+      const p = layout.positions;
+      for (let i = 0; i < n; i++) {
+        const body = w.createRigidBody(R.RigidBodyDesc.dynamic().setTranslation(p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!));
+        colliders[i] = w.createCollider(
+          R.ColliderDesc.ball(layout.radius).setRestitution(layout.restitution).setFriction(layout.friction).setMass(layout.mass),
+          body,
+        );
+        bodies[i] = body;
+      }
+      const ip = w.integrationParameters;
+      const notes = [
+        `${name} ${R.version()}: dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, ` +
+          `${ip.numInternalPgsIterations} internal PGS iteration, sleeping allowed with Rapier's default thresholds (defaults); ` +
+          'six static cuboid walls; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
+      ];
+      return {
+        engine: name,
+        notes,
+        step(): void {
+          w.step();
+        },
+        stats() {
+          let contacts = 0;
+          let sleeping = 0;
+          for (let i = 0; i < n; i++) {
+            if (bodies[i]!.isSleeping()) sleeping++;
+            const c = colliders[i]!;
+            const h = c.handle;
+            w.contactPairsWith(c, (other) => {
+              // Each sphere-sphere pair once (from its lower handle); sphere-wall pairs from the sphere.
+              if (!walls.has(other.handle) && other.handle < h) return;
+              w.contactPair(c, other, (manifold) => {
+                contacts += manifold.numContacts();
+              });
             });
-          });
-        }
-        return { bodies: n, contacts, extra: { sleeping } };
-      },
-      snapshot(): BodySnapshot {
-        const positions = new Float64Array(3 * n);
-        for (let i = 0; i < n; i++) {
-          const t = bodies[i]!.translation();
-          positions[3 * i] = t.x;
-          positions[3 * i + 1] = t.y;
-          positions[3 * i + 2] = t.z;
-        }
-        return { dimensions: 3, count: n, positions, radius: layout.radius };
-      },
-      dispose(): void {
-        world?.free();
-        world = undefined;
-      },
-    };
-  },
-};
+          }
+          return { bodies: n, contacts, extra: { sleeping } };
+        },
+        snapshot(): BodySnapshot {
+          const positions = new Float64Array(3 * n);
+          for (let i = 0; i < n; i++) {
+            const t = bodies[i]!.translation();
+            positions[3 * i] = t.x;
+            positions[3 * i + 1] = t.y;
+            positions[3 * i + 2] = t.z;
+          }
+          return { dimensions: 3, count: n, positions, radius: layout.radius };
+        },
+        dispose(): void {
+          world?.free();
+          world = undefined;
+        },
+      };
+    },
+  };
+}
+
+/** Rapier 3D, the plain WASM build (@dimforge/rapier3d-compat). */
+export const rapier3dEngine = rapier3dAdapter('rapier3d', '@dimforge/rapier3d-compat', loadRapier3d);
+
+/** Rapier 3D built with WASM SIMD (@dimforge/rapier3d-simd-compat): `--vs rapier3d-simd`. */
+export const rapier3dSimdEngine = rapier3dAdapter('rapier3d-simd', '@dimforge/rapier3d-simd-compat', loadRapier3dSimd);
 
 /**
  * The box scenes with the layouts of `boxPile3DLayout` and `pyramid3DLayout`: one dynamic body a cube
@@ -139,8 +158,7 @@ export const rapier3dEngine: EngineAdapter = {
  * timed step (outside its time) the bodies asleep are counted, for `halfAsleepStep` and
  * `allAsleepStep` (`asleepSteps`), counted like ours.
  */
-async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
-  const R = await loadRapier3d();
+function createBoxes(R: Rapier, options: SceneRunOptions, name: string): EngineInstance {
   const pile = options.scene === 'box-pile-3d';
   const layout = pile ? boxPile3DLayout({ count: options.count, seed: options.seed }) : pyramid3DLayout({ count: options.count });
   let world: InstanceType<Rapier['World']> | undefined = new R.World({ x: layout.gravity[0], y: layout.gravity[1], z: layout.gravity[2] });
@@ -177,7 +195,7 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
   }
   const ip = w.integrationParameters;
   const notes = [
-    `rapier3d ${R.version()}: dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, ` +
+    `${name} ${R.version()}: dt ${w.timestep.toFixed(6)} s, ${ip.numSolverIterations} solver iterations, ` +
       `${ip.numInternalPgsIterations} internal PGS iteration, sleeping allowed with Rapier's default thresholds (defaults); ` +
       (pile ? 'six static cuboid walls' : 'a static cuboid ground') +
       '; restitution/friction combine: average; WASM compiled optimized up front (V8 --no-liftoff)',
@@ -185,7 +203,7 @@ async function createBoxes(options: SceneRunOptions): Promise<EngineInstance> {
   const sleep = asleepSteps(n);
   let steps = 0;
   return {
-    engine: 'rapier3d',
+    engine: name,
     notes,
     step(): void {
       w.step();
