@@ -154,30 +154,39 @@ shell.onWorldChange(() => {
 });
 
 /**
- * The camera: the view of the play area that fits the screen. A wide screen sees everything from the
- * catapult to the castle; a narrow one (a phone upright) sees a window as tall as the castle needs,
- * over the castle as a level opens, over the catapult while aiming, following a shot in flight, over
- * the castle while it falls, and back. The view moves smoothly (a tenth of the way each frame).
+ * The camera: the view of the play area that fits the screen. A screen that shows everything from the
+ * catapult to the castle at ZOOM pixels a metre or more (a desktop, a phone on its side) sees it all
+ * at once, so the player aims at a castle in view; a narrower one (a phone upright) sees a window
+ * MIN_WIDTH metres wide (wider if the castle would not fit its height): over the castle as a level
+ * opens, over the catapult while aiming (the cup a third of the way in, so the pull and the start of
+ * the throw are on screen), following a shot in flight, over the castle while it falls, and back. The
+ * view moves smoothly (a tenth of the way each frame).
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
+/** Least pixels a metre at which the whole play area is shown at once (a 1 m block 20 px wide). */
+const ZOOM = 20;
+/** Width of the following view, m: a phone upright sees the catapult at about 50 px a metre and the first metres of a throw. */
+const MIN_WIDTH = 8;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes and on a new level. */
 let framedFor = '';
 function frameCamera(world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const height = Math.max(8, lv.castleTop + 5);
+  const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
   const playMinX = LAUNCH.x - 4,
     playMaxX = lv.castleMaxX + 3;
-  let width = (height * cam.width) / Math.max(1, cam.height);
-  let top = height - 1;
+  const play = playMaxX - playMinX;
+  let width: number;
   let minX: number;
-  // Everything at once where that still leaves 20 px a metre (a desktop or a phone on its side).
-  if (cam.width / (playMaxX - playMinX) >= 20) {
-    width = playMaxX - playMinX;
+  if (cam.width / play >= ZOOM) {
+    // Everything at once (a wide desktop, a phone on its side).
+    width = play;
     minX = playMinX;
-    top = Math.max(top, -1 + (width * cam.height) / Math.max(1, cam.width));
   } else {
+    width = MIN_WIDTH;
+    // As tall as the castle needs (a short, wide window): widen to keep the aspect.
+    width = Math.min(play, Math.max(width, (lv.castleTop + 5) / aspect));
     // Follow the newest shot while it flies; look at the castle for a while after it lands; else the catapult.
-    let focus = playMinX + width / 2;
+    let focus = LAUNCH.x + width * (0.5 - 0.35);
     // A new level opens on the castle, then pans back to the catapult (2 s in).
     if (shots.length === 0 && world.time < 2) focus = (lv.castleMinX + lv.castleMaxX) / 2;
     const last = shots[shots.length - 1];
@@ -190,6 +199,7 @@ function frameCamera(world: PhysicsWorld): void {
     }
     minX = Math.min(Math.max(focus - width / 2, playMinX), playMaxX - width);
   }
+  const top = Math.max(lv.castleTop + 4, -1 + width * aspect);
   const target = { minX, minY: -1, maxX: minX + width, maxY: top };
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
@@ -313,7 +323,13 @@ const banner = new Text({
   },
 });
 banner.anchor.set(0.5, 0);
-renderer.root.addChild(overlay, banner);
+/** Where the castle is while it is off screen (a phone upright aims with the catapult in view). */
+const castleHint = new Text({
+  text: '',
+  style: { fill: 0x1d3557, fontSize: 15, fontWeight: '700', fontFamily: 'system-ui, sans-serif' },
+});
+castleHint.anchor.set(1, 0.5);
+renderer.root.addChild(overlay, banner, castleHint);
 
 /** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
 function levelOver(world: PhysicsWorld, t: Tally): boolean {
@@ -345,6 +361,16 @@ function draw(world: PhysicsWorld): void {
     const [vx, vy] = launchVelocity(aim.dx, aim.dy);
     const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
     for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 2.5).fill({ color: 0xffffff, alpha: 0.8 });
+  }
+  // The castle off the right edge: an arrow at its height with its distance from the catapult.
+  const castleX = (lv.castleMinX + lv.castleMaxX) / 2;
+  castleHint.visible = sx(lv.castleMinX) > cam.width;
+  if (castleHint.visible) {
+    const y = Math.min(Math.max(sy(lv.castleTop / 2), 60), cam.height - 40);
+    overlay.poly([cam.width - 6, y, cam.width - 22, y - 10, cam.width - 22, y + 10]).fill({ color: 0x1d3557 });
+    castleHint.text = `castle ${Math.round(castleX - LAUNCH.x)} m`;
+    castleHint.x = cam.width - 28;
+    castleHint.y = y;
   }
   const t = tally(world, lv);
   if (t.score > best.score) best = t;
@@ -407,6 +433,8 @@ shell.expose({
   campaign,
   /** Whether the level on screen is over. */
   levelEnded: (): boolean => levelEnded,
+  /** The text pointing at the castle while it is off screen ('' when it is in view). */
+  castleHint: (): string => (castleHint.visible ? castleHint.text : ''),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
   cameraSettled: (): boolean => cameraSettled,
   /** The level's tally now. */

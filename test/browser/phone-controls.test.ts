@@ -136,6 +136,12 @@ describe('phone controls', () => {
     // The camera opens on the castle and pans back to the catapult: aim once it is at rest.
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
     const cup = await g.worldToPage(0, 1.5);
+    // The cup sits a third of the way in (room for the pull on its left, the throw on its right), not
+    // at an edge (it was at the right edge, half off screen); the castle off screen is pointed at.
+    const width = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().width);
+    expect(cup.x / width).toBeGreaterThan(0.2);
+    expect(cup.x / width).toBeLessThan(0.5);
+    expect(await g.page.evaluate(() => (window.game as unknown as { castleHint(): string }).castleHint())).toMatch(/^castle \d+ m$/);
     await touchPath(
       g.page,
       [
