@@ -208,7 +208,10 @@ export interface DistanceJointOptions extends JointBaseOptions {
   minLength?: number;
   /** Longest allowed length, m, >= length (Infinity allowed). Default `length` for a rod, Infinity for a spring. */
   maxLength?: number;
-  /** Spring stiffness as a natural frequency, Hz, >= 0; 0 = no spring. Default 0. */
+  /**
+   * Spring stiffness as a natural frequency, Hz, >= 0; 0 = no spring. Default 0. A spring of fixed stiffness:
+   * its stiffness k = (2 pi hertz)^2 / K_ref is fixed, K_ref = mA + mB + (iA |rA|^2 + iB |rB|^2) / 2 (the anchors' levers rA, rB from the centres), so the spring stores 1/2 k C^2 and a lever's swing does no work on it (with both anchors at the centres it is the frequency of the bodies' relative motion).
+   */
   hertz?: number;
   /** Spring damping ratio, >= 0 (1 = critical). Default 0. */
   dampingRatio?: number;
@@ -375,7 +378,7 @@ export interface PrismaticJointOptions extends JointBaseOptions {
   motorSpeed?: number;
   /** Motor's largest force, N, >= 0; on when > 0. Default 0. */
   maxMotorForce?: number;
-  /** Spring along the axis toward translation 0, Hz, >= 0. Default 0 (none). */
+  /** Spring along the axis toward translation 0, Hz, >= 0. Default 0 (none). Fixed stiffness, as the distance joint's `hertz`. */
   hertz?: number;
   /** Its damping ratio, >= 0. Default 0. */
   dampingRatio?: number;
@@ -465,7 +468,7 @@ export interface WheelJointOptions extends JointBaseOptions {
   anchor?: ArrayLike<number>;
   /** Suspension direction in the world now (fixed in A), normalised here. Default (0, 1). */
   axis?: ArrayLike<number>;
-  /** Suspension spring, Hz, >= 0 (0 = rigid axle). Default 4 Hz. */
+  /** Suspension spring, Hz, >= 0 (0 = rigid axle). Default 4 Hz. Fixed stiffness, as the distance joint's `hertz`. */
   hertz?: number;
   /** Suspension damping ratio, >= 0. Default 0.7. */
   dampingRatio?: number;

@@ -350,7 +350,11 @@ export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
   /** Limits, m: 0 <= minLength <= length <= maxLength. Defaults: both `length` (a rigid rod), or 0 and Infinity with a spring. A rope: minLength 0. */
   minLength?: number;
   maxLength?: number;
-  /** Spring frequency, Hz (>= 0; 0 rigid), and damping ratio (>= 0). Default 0, 0. */
+  /**
+   * Spring frequency, Hz (>= 0; 0 rigid), and damping ratio (>= 0). Default 0, 0. A spring of fixed stiffness
+   * k = (2 pi hertz)^2 / K_ref, K_ref = mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3 (the
+   * anchors' levers from the centres; no rotation changes it), so a lever's swing does no work on it.
+   */
   hertz?: number;
   dampingRatio?: number;
 }

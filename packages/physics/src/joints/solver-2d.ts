@@ -245,6 +245,44 @@ function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: num
 }
 
 /**
+ * The coefficients of a linear spring of fixed stiffness (distance, prismatic and wheel joints) at
+ * rows[o..o+1]: the bias rate omega / (2 zeta + h omega) (1/s, as `soft`) and the softness
+ * gamma = kRef / a (a = h omega (2 zeta + h omega)), so a row solves
+ * impulse = -(Cdot + bias C + gamma lambda) / (K + gamma) with K the inverse effective mass of the
+ * moment (Catto, "Soft Constraints", GDC 2011: gamma = 1 / (h (c + h k))). The stiffness
+ * k = omega^2 / kRef and damping c = 2 zeta omega / kRef come from `kRef`, a mass that no motion
+ * changes (mA + mB + (iA |rA|^2 + iB |rB|^2) / 2, half the trace of the point block), so the spring has
+ * a potential 1/2 k C^2 and does no work around a swing. Box2D takes the stiffness from the effective
+ * mass along the row, which a lever's rotation changes: a distance spring on a 5 m lever gained
+ * 6.4e5 J. With no lever (kRef = K) the update is Box2D's soft row. A spring so soft that a rounds to
+ * 0 gives gamma = Infinity (the row only lets go of its impulse); one so stiff that a overflows gives
+ * the rigid 1 / h, 0.
+ */
+function fixedSpring(rows: Float64Array, o: number, hertz: number, zeta: number, h: number, kRef: number): void {
+  const omega = 2 * Math.PI * hertz;
+  const hw = h * omega;
+  const a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    rows[o] = 0;
+    rows[o + 1] = Infinity;
+    return;
+  }
+  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  rows[o + 1] = kRef / a;
+}
+
+/**
+ * The impulse of a fixed-stiffness spring row (see `fixedSpring`): `cdot` the velocity along the
+ * row, `c` its position error, `k` the inverse effective mass of the moment, `lambda` the impulse the
+ * row holds, `bias` and `gamma` from `fixedSpring`.
+ */
+function springImpulse(cdot: number, c: number, k: number, lambda: number, bias: number, gamma: number): number {
+  if (!(gamma < Infinity)) return -lambda;
+  const den = k + gamma;
+  return den > 0 ? -(cdot + bias * c + gamma * lambda) / den : 0;
+}
+
+/**
  * Fills every row from the joint components and the solver bodies (already gathered and filled by the
  * contact solver): start-of-step anchors (world frame, from each centre), centre difference, relative
  * angle, axis, effective masses, softness, and warm-start impulses. `hs` is the solver substep, s.
@@ -395,6 +433,9 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     const hertz = J.hertz[j]!,
       zeta = J.dampingRatio[j]!;
     soft(rows, o + SB, hertz, zeta, hs);
+    if (hertz > 0 && (type === JointType.Distance || type === JointType.Prismatic || type === JointType.Wheel)) {
+      fixedSpring(rows, o + SB, hertz, zeta, hs, mA + mB + 0.5 * (iA * (lax * lax + lay * lay) + iB * (lbx * lbx + lby * lby)));
+    }
     rows[o + LOW] = J.lower[j]!;
     rows[o + UP] = J.upper[j]!;
     rows[o + MSPD] = J.motorSpeed[j]!;
@@ -856,7 +897,7 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
       if (minL < maxL) {
         if (flags & JointFlag.Spring) {
           const C = L - rows[o + LEN]!;
-          const impulse = -rows[o + SM]! * k * (vr + rows[o + SB]! * C) - rows[o + SI]! * rows[o + ISPR]!;
+          const impulse = springImpulse(vr, C, mA + mB + iA * crA * crA + iB * crB * crB, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
           rows[o + ISPR] = rows[o + ISPR]! + impulse;
           total += impulse;
           vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
@@ -1060,7 +1101,7 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
       }
       if (flags & JointFlag.Spring) {
         const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse = -rows[o + SM]! * kax * (cdot + rows[o + SB]! * translation) - rows[o + SI]! * rows[o + ISPR]!;
+        const impulse = springImpulse(cdot, translation, mA + mB + kA * a1 + kB * a2, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
         rows[o + ISPR] = rows[o + ISPR]! + impulse;
         vAx -= mA * impulse * axx;
         vAy -= mA * impulse * axy;
