@@ -23,7 +23,16 @@
 
 import { choiceParam, createPanel, flagParam, getSound, numberParam, plural, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { createPhysicsWorld, disposeWorld, type PhysicsWorld, Rng, slotOf, stateHash, threadsReady } from '@bitphysics/physics';
+import {
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  Rng,
+  slotOf,
+  stateHash,
+  threadsReady,
+} from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
@@ -92,6 +101,8 @@ function createWorld(): PhysicsWorld {
     opening: params.opening,
     capacity: params.capacity,
   };
+  // ?threads above 1 needs the thread pool, loaded only when asked for.
+  if (ISOLATED && params.threads > 1) enableThreads();
   const world = createPhysicsWorld({ ...fireworksWorldOptions(options), threads: ISOLATED ? params.threads : 1 });
   show = buildFireworks(world, options);
   previous = world;

@@ -28,6 +28,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
   disposeWorld,
+  enableThreads,
   galaxy,
   type PhysicsWorld,
   step as physicsStep,
@@ -93,6 +94,8 @@ function createWorld(): PhysicsWorld {
   // The old world's workers stop with it.
   if (previous !== null) disposeWorld(previous);
   const threads = ISOLATED ? params.threads : 1;
+  // More than one thread needs the thread pool, loaded only when asked for.
+  if (threads > 1) enableThreads();
   const world = createPhysicsWorld({ ...galaxy.worldOptions({ count: params.count }), dt: params.timeScale * REAL_STEP, threads });
   previous = world;
   const handles = galaxy.build(world, { count: params.count, seed: params.seed, openingAngle: params.openingAngle, method: params.method });

@@ -5,6 +5,7 @@ import {
   addSystem,
   createPhysicsWorld,
   disposeWorld,
+  enableThreads,
   NonFiniteStateError,
   type PhysicsWorld,
   SCENES,
@@ -16,6 +17,9 @@ import {
 import { hasComponent, query } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import { fusedForcesAllowed } from '../../packages/physics/src/integrators/fused-gate.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // The fused force-and-integrate pass (integrators/fused-gate.ts, semi-implicit-euler.ts fusedForced2)
 // must leave exactly the state the separate stages leave (clear, drag laws, forces check, integrator).

@@ -3,6 +3,9 @@ import fc from 'fast-check';
 import { afterAll, describe, expect, test } from 'vitest';
 import { sealSnapshot } from '../../packages/physics/src/snapshot/snapshot.js';
 
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+api.enableThreads();
+
 /**
  * Property test of restore across damaged snapshots and thread counts (issue 33).
  *

@@ -4,6 +4,7 @@ import {
   addBody,
   addComponent,
   createPhysicsWorld,
+  enableThreads,
   type PhysicsWorld,
   restore,
   setGravity,
@@ -16,6 +17,9 @@ import {
 import { query, removeComponent } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // Independent reference for every check here: the original world itself. A restored world must step to
 // the same state to the last bit (stateHash covers every field of every component of every live entity,

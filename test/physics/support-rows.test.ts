@@ -1,6 +1,9 @@
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { addBody, createPhysicsWorld, disposeWorld, setBoundary, step } from '@bitphysics/physics';
+import { addBody, createPhysicsWorld, disposeWorld, enableThreads, setBoundary, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 /**
  * Frictionless columns come to rest (issue 13: "keep piles and stacks as stable as they are now").

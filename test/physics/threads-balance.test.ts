@@ -1,9 +1,21 @@
-import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
+import {
+  addBody,
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  setBoundary,
+  stateHash,
+  stepMany,
+} from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { lastColorCount } from '../../packages/physics/src/solver/coloring.js';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { BALANCE_MIN_PER_THREAD, RangeBalance } from '../../packages/physics/src/threads/balance.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // A pool cuts a loop into ranges by shares it learns from when each thread finished (threads/balance.ts).
 // Two promises: the shares settle where every thread finishes at once (checked against a model of

@@ -1,10 +1,23 @@
-import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, step, stepMany } from '@bitphysics/physics';
+import {
+  addBody,
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  setBoundary,
+  stateHash,
+  step,
+  stepMany,
+} from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase/grid.js';
 import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase/grid-pairs.js';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { query } from '../../packages/physics/src/world/query.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // The broadphase's cell pass and the narrowphase's ball-ball contacts on the world's threads: each
 // thread handles a range (of the grid, of the pairs), and the ranges are appended in order, so the

@@ -1,4 +1,13 @@
-import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';
+import {
+  addBody,
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  SCENES,
+  stateHash,
+  stepMany,
+} from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
@@ -6,6 +15,9 @@ import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/contac
 import { impactChangedRows } from '../../packages/physics/src/solver/impacts.js';
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // The 2D ball contacts solved by graph colouring on the world's threads (solver/coloring.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a

@@ -5,6 +5,7 @@ import {
   createPhysicsWorld,
   disposeWorld,
   enableMutualGravity,
+  enableThreads,
   evaluateForces,
   galaxy,
   gravityFieldError,
@@ -27,6 +28,9 @@ import { Rng } from '../../packages/physics/src/math/rng.js';
 import { stageNeedsCheck } from '../../packages/physics/src/step/finite.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // Force laws on the world's threads: Barnes-Hut's walk (each thread replays the walk for its own
 // bodies, in the one-thread order), drag and angular damping (one body's arithmetic a thread). The

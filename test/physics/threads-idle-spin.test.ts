@@ -1,7 +1,19 @@
-import { addBody, createPhysicsWorld, disposeWorld, type PhysicsWorld, setBoundary, stateHash, stepMany } from '@bitphysics/physics';
+import {
+  addBody,
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  setBoundary,
+  stateHash,
+  stepMany,
+} from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // An idle worker watches for the next run for `idleSpin` microseconds before it blocks (threads/pool.ts,
 // worker-main.ts). The promises: the spin changes no result (stateHash, every bit), it is bounded (an

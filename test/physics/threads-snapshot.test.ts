@@ -8,6 +8,7 @@ import {
   addParticle,
   createPhysicsWorld,
   disposeWorld,
+  enableThreads,
   MIN_PARALLEL_PER_THREAD,
   type PhysicsWorld,
   restore,
@@ -19,6 +20,9 @@ import {
 import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // The reference for snapshots across thread counts is the world the snapshot was taken from: the
 // engine runs each body's arithmetic the same on any thread count (threads.test.ts), so a restored
@@ -90,9 +94,10 @@ test('a worker that dies gives a clear error within a second, the pool is shut d
   writeFileSync(
     entry,
     `
-import { addParticle, createPhysicsWorld, stepMany } from '@bitphysics/physics';
+import { addParticle, createPhysicsWorld, enableThreads, stepMany } from '@bitphysics/physics';
 import { KERNEL } from '${src}/threads/kernels.ts';
 import { sharedFloat64 } from '${src}/threads/pool.ts';
+enableThreads();
 const results: unknown[] = [];
 const pause = (ms: number) => Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 0, ms);
 function timed(f: () => unknown) {

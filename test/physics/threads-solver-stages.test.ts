@@ -1,7 +1,10 @@
-import { createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
+import { createPhysicsWorld, disposeWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // The contact solver's stages beside the coloured substeps on the world's threads
 // (solver/stages-threads.ts): the solver rows' fill, measureApproach and finishBodies do each

@@ -8,6 +8,7 @@ import {
   addParticle,
   createPhysicsWorld,
   disposeWorld,
+  enableThreads,
   MIN_PARALLEL_PER_THREAD,
   type PhysicsWorld,
   type PhysicsWorldOptions,
@@ -20,6 +21,9 @@ import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
+
+// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+enableThreads();
 
 // Worker threads split the integration and per-body force loops over shared component arrays; each
 // body's arithmetic is the single-threaded one, so the promise is equality to the last bit: the
@@ -193,7 +197,8 @@ test('a Node process with a threaded world exits by itself when its script ends,
   writeFileSync(
     entry,
     [
-      `import { addParticle, createPhysicsWorld, disposeWorld, stepMany } from '@bitphysics/physics';`,
+      `import { addParticle, createPhysicsWorld, disposeWorld, enableThreads, stepMany } from '@bitphysics/physics';`,
+      `enableThreads();`,
       `for (const dispose of [false, true]) {`,
       `  const world = createPhysicsWorld({ capacity: 70000, threads: 2, interpolation: false });`,
       `  for (let i = 0; i < 70000; i++) addParticle(world, { position: [i, 0] });`,

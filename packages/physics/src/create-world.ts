@@ -15,7 +15,7 @@ import { removeJointsOf } from './joints/remove.js';
 import { createJointState } from './joints/state-2d.js';
 import { Rng } from './math/rng.js';
 import { createStages, STAGES } from './step/stages.js';
-import { createThreadPool } from './threads/pool.js';
+import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
 import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
 import { useLeanEcsStorage } from './world/lean-ecs.js';
@@ -28,6 +28,7 @@ import {
   type PhysicsWorldOptions,
   registerForceLaw,
   type StageTimings,
+  type System,
 } from './world/options.js';
 import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './world/validate.js';
 
@@ -99,13 +100,14 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   const threads = options.threads ?? 1;
   assertInteger(where, 'threads', threads, 1, 64);
   // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
-  const threadPool = threads > 1 ? createThreadPool(where, threads) : null;
+  const threadPool = threads > 1 ? makeThreadPool(where, threads) : null;
 
   const entityIndex = createEntityIndex();
   // Without interpolation bare particles never write PreviousPosition: it waits for the first body
   // (threads keep it: the parallel loops take only shared arrays).
   const components = createComponents(capacity, interpolation || threadPool !== null);
   if (threadPool !== null) shareStores(components, capacity);
+  const builtins = new Map<string, System>();
   const timings = {} as StageTimings;
   for (const s of STAGES) timings[s] = 0;
   const context: PhysicsWorldContext = {
@@ -122,7 +124,8 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
     steps: 0,
     rng: new Rng(seed),
     components,
-    stages: createStages(),
+    stages: createStages(builtins),
+    builtins,
     // Given: it applies to every contact; not given: e = 1 contacts bounce at any speed (CollisionSettings).
     collision: createCollisionState(capacity, {
       solverSubsteps,

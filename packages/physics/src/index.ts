@@ -279,6 +279,7 @@ export type { StageName, System } from './step/stages.js';
 export { PIPELINE, STAGES, SUBSTEP_STAGES } from './step/stages.js';
 export type { AddSystemOptions } from './step/step.js';
 export { addSystem, evaluateForces, removeSystem, step, stepMany } from './step/step.js';
+export { enableThreads } from './threads/enable.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
 export type { Components, Vec3Store } from './world/components.js';
 export {

@@ -1,4 +1,13 @@
-import { contactCount, createPhysicsWorld, disposeWorld, type PhysicsWorld, SCENES, stateHash, step } from '@bitphysics/physics';
+import {
+  contactCount,
+  createPhysicsWorld,
+  disposeWorld,
+  enableThreads,
+  type PhysicsWorld,
+  SCENES,
+  stateHash,
+  step,
+} from '@bitphysics/physics';
 import { query } from 'bitecs';
 import { resolveScene } from '../scenes/index.js';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
@@ -37,6 +46,7 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
       if (!resolved) throw new RangeError(`bitphysics: unknown scene "${options.scene}"`);
       const { definition, bench } = resolved;
       const sceneOptions = { ...(bench.sceneOptions?.(options) ?? {}), count: options.count, seed: options.seed };
+      if (threads > 1) enableThreads();
       const w: PhysicsWorld = createPhysicsWorld({
         ...definition.worldOptions(sceneOptions),
         seed: options.seed,

@@ -1,8 +1,11 @@
 import { addComponent } from 'bitecs';
 import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
 import { ensureJointArrays } from '../joints/state-2d.js';
+import { trustFiniteOutput } from '../step/finite.js';
+import { installSystem } from '../step/install.js';
 import { currentHandle, isAlive, slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
 import {
   assertFinite,
   assertInteger,
@@ -12,6 +15,7 @@ import {
   assertVector,
   describe,
 } from '../world/validate.js';
+import { clothSystem } from './solver.js';
 import { ClothLinkKind } from './store.js';
 
 /**
@@ -70,6 +74,23 @@ const KEYS = [
   'tearStretch',
   'drag',
 ] as const;
+
+let clothTrusted = false;
+
+/**
+ * Installs the cloth's system into `world`'s constraints stage at its place (step/install.ts;
+ * idempotent), as `createCloth` does for the first cloth and a snapshot restore does: a program that
+ * never makes a cloth does not bundle its solver.
+ * @category Cloth
+ */
+export function installCloth(world: PhysicsWorld): void {
+  if (!clothTrusted) {
+    clothTrusted = true;
+    // Trusted (step/finite.ts) only while the world has no cloth link, when it writes nothing.
+    trustFiniteOutput([clothSystem], 'all', (w) => query(w, [w.components.ClothLink]).length === 0);
+  }
+  installSystem(world, 'constraints', 'cloth', clothSystem);
+}
 
 /**
  * Builds a cloth (Ramtal and Dobre ch. 13; the mass-spring cloth of Provot, "Deformation constraints in
@@ -159,6 +180,7 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
     for (let i = 0; i < made; i++) if (isAlive(world, points[i]!)) removeBody(world, points[i]!);
     throw err;
   }
+  installCloth(world);
   const links = new Float64Array(linkCount);
   let k = 0;
   const C = world.components;

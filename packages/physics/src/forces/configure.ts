@@ -15,6 +15,8 @@ import {
   assertPositive,
   assertVector,
 } from '../world/validate.js';
+import { barnesHutGravity } from './barnes-hut/tree.js';
+import { setBarnesHutGravity } from './gravity.js';
 import { type GravityMethod, MAX_WIND_MODES } from './settings.js';
 
 /**
@@ -49,6 +51,7 @@ export function setGravitation(world: PhysicsWorld, options: GravitationOptions)
   const L = world.laws;
   if (options.constant !== undefined) L.gravitationalConstant = options.constant;
   if (options.softening !== undefined) L.gravitySoftening = options.softening;
+  if (options.method === 'barnes-hut') setBarnesHutGravity(barnesHutGravity);
   if (options.method !== undefined) L.gravityMethod = options.method;
   if (options.openingAngle !== undefined) L.openingAngle = options.openingAngle;
 }

@@ -3,7 +3,6 @@ import { MIN_PARALLEL_PER_THREAD, runParallel } from '../threads/parallel.js';
 import { sharedFloat64 } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
-import { barnesHutGravity } from './barnes-hut/tree.js';
 import type { ForceLaw } from './law.js';
 import { inverseSquarePairs } from './pairwise.js';
 
@@ -68,12 +67,29 @@ export const mutualGravitySystem: ForceLaw = (world: PhysicsWorld): void => {
   if (n < 2) return;
   const L = world.laws;
   if (L.gravityMethod === 'barnes-hut') {
-    barnesHutGravity(world, ents);
+    if (barnesHut === null) {
+      throw new Error(
+        "mutualGravitySystem: world.laws.gravityMethod is 'barnes-hut' but the Barnes-Hut tree is not loaded; choose the method with setGravitation(world, { method: 'barnes-hut' })",
+      );
+    }
+    barnesHut(world, ents);
     return;
   }
   inverseSquarePairs(world, ents, c.Mass.value, L.gravitationalConstant, L.gravitySoftening * L.gravitySoftening);
 };
 mutualGravitySystem.velocityDependent = false;
+
+let barnesHut: ((world: PhysicsWorld, ents: ArrayLike<number>) => void) | null = null;
+
+/**
+ * Hands mutual gravity its Barnes-Hut sum (forces/barnes-hut/tree.ts barnesHutGravity), which
+ * `setGravitation` loads when it chooses the method 'barnes-hut' (or a snapshot restore does): a
+ * program that never chooses it does not bundle the tree.
+ * @category Forces
+ */
+export function setBarnesHutGravity(sum: (world: PhysicsWorld, ents: ArrayLike<number>) => void): void {
+  barnesHut = sum;
+}
 
 /**
  * Attractors (fixed or moving masses, e.g. a sun or a black hole) pull every dynamic body with a

@@ -3,10 +3,16 @@ import { ecsOf } from '../particles/archetype.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import {
+  joinJoint3DIslands,
+  joinShape3DIslands,
+  markJoint3DSupport,
+  markShape3DSupport,
+  wakeTouching3D,
+  withShape3DBodies,
+} from './hooks-3d.js';
 import { joinJointIslands, markJointSupport } from './joints-2d.js';
-import { joinJoint3DIslands, markJoint3DSupport } from './joints-3d.js';
 import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shapes-2d.js';
-import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from './shapes-3d.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops

@@ -1,4 +1,5 @@
-import { entityExists, hasComponent, removeEntity } from 'bitecs';
+import { hasComponent } from 'bitecs';
+import { install3D } from '../collision/install-3d.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -12,7 +13,11 @@ import {
   describe,
 } from '../world/validate.js';
 import { assertBreakLimit } from './api-2d.js';
-import { addNoCollide, removeNoCollide } from './connected.js';
+import { addNoCollide } from './connected.js';
+import { removeJoint3DUnchecked, removeJoints3DOf } from './remove-3d.js';
+
+export { removeJoint3DUnchecked } from './remove-3d.js';
+
 import { ensureJointArrays } from './state-2d.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -125,6 +130,7 @@ function make(
   axis: [number, number, number],
 ): number {
   const j = createSlot(world, where);
+  install3D(world);
   const s = joints3DOf(world, true);
   if (s.list.length === 0 && !world.removeHooks.includes(removeJoints3DOf)) world.removeHooks.push(removeJoints3DOf);
   const qa = quat(world, e.a),
@@ -665,42 +671,6 @@ export function removeJoint3D(world: PhysicsWorld, joint: number): void {
   if (s === undefined || !s.list.includes(j))
     throw new RangeError(`removeJoint3D: joint must be a 3D joint, got entity ${describe(joint)}`);
   removeJoint3DUnchecked(world, s, j);
-}
-
-/**
- * Internal: unlists and removes joint slot j, and wakes its bodies (what held them is gone).
- * @category Joints and ropes
- */
-export function removeJoint3DUnchecked(world: PhysicsWorld, s: Joint3DStore, j: number): void {
-  unlistJoint3D(world, s, j);
-  if (entityExists(world, j)) removeEntity(world, j);
-}
-
-/**
- * Takes joint slot j out of the list and the no-collide pairs, and wakes the islands of its bodies
- * that still exist: a sleeping body the joint held up (a bob at rest on its string) must fall.
- */
-function unlistJoint3D(world: PhysicsWorld, s: Joint3DStore, j: number): void {
-  const i = s.list.indexOf(j);
-  if (i >= 0) s.list.splice(i, 1);
-  const a = s.a[j]!,
-    b = s.b[j]!;
-  removeNoCollide(world.joints, j, a, b);
-  s.a[j] = 0;
-  s.b[j] = 0;
-  if (a !== 0 && entityExists(world, a)) wakeIsland(world, a);
-  if (b !== 0 && entityExists(world, b)) wakeIsland(world, b);
-}
-
-/** Removal hook: removing a body removes its 3D joints (and removing a joint entity unlists it). */
-function removeJoints3DOf(world: PhysicsWorld, eid: number): void {
-  const s = joints3DOf(world);
-  if (s === undefined || s.list.length === 0) return;
-  if (s.list.includes(eid)) {
-    unlistJoint3D(world, s, eid);
-    return;
-  }
-  for (const j of s.list.filter((k) => s.a[k] === eid || s.b[k] === eid)) removeJoint3DUnchecked(world, s, j);
 }
 
 /**

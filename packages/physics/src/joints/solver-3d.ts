@@ -3,7 +3,7 @@ import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { classifyBody3D } from '../collision/shapes-3d.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { removeJoint3DUnchecked } from './api-3d.js';
+import { removeJoint3DUnchecked } from './remove-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**

@@ -1,5 +1,7 @@
 import { addComponent, query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { trustFiniteOutput } from '../step/finite.js';
+import { installSystem } from '../step/install.js';
 import { DEFAULT_MATERIAL } from '../world/components.js';
 import { NonFiniteStateError } from '../world/errors.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
@@ -1038,12 +1040,42 @@ export function lifetimeSystem(world: PhysicsWorld): void {
     if (!killSlot(world, ecs, table, e)) removeEntity(world, e);
     b.expiredTotal++;
   }
+  // Death bursts need emitters, whose code installEmitters brings (none made, no burst: b.burstCount is 0).
+  if (spawnBursts !== null) spawnBursts(world, b);
+}
+
+/**
+ * The death bursts of the expired particles (b.bursts, b.burstCount) born into the freed slots, and
+ * every queued birth flushed: set by installEmitters, so lifetimes alone do not bring the spawning code.
+ */
+let spawnBursts: ((world: PhysicsWorld, b: ParticleBook) => void) | null = null;
+
+/** The bursts of lifetimeSystem's expired particles (see spawnBursts). */
+function spawnDeathBursts(world: PhysicsWorld, b: ParticleBook): void {
   const B = b.bursts;
   for (let k = 0; k < b.burstCount; k++) {
     const o = k * 9;
     spawnFrom(world, b, B[o + 6]!, B[o + 7]!, B[o]!, B[o + 1]!, B[o + 2]!, B[o + 3]!, B[o + 4]!, B[o + 5]!, B[o + 8]!);
   }
   flushBirths(world);
+}
+
+let emittersTrusted = false;
+
+/**
+ * Installs the emitters' system into `world`'s spawn stage at its place (step/install.ts; idempotent),
+ * as `addEmitter` does for the first emitter and a snapshot restore does: a program that never makes
+ * an emitter does not bundle it (nor the death bursts of lifetimeSystem, which need emitters). The
+ * system checks the particles it spawns itself (step/finite.ts).
+ * @category Particles
+ */
+export function installEmitters(world: PhysicsWorld): void {
+  if (!emittersTrusted) {
+    emittersTrusted = true;
+    trustFiniteOutput([emitterSystem]);
+    spawnBursts = spawnDeathBursts;
+  }
+  installSystem(world, 'spawn', 'emitter', emitterSystem);
 }
 
 /**
@@ -1326,6 +1358,7 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
       c.Velocity.z[em] = d === 3 ? options.velocity[2]! : 0;
     }
   }
+  installEmitters(world);
   addComponent(world, em, c.Emitter);
   const E = c.Emitter;
   // Defaults (documented on EmitterOptions and EmittedParticleOptions), then the options given.

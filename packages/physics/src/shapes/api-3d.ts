@@ -1,5 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { setInertiaUnchecked } from '../bodies/rigid.js';
+import { install3D } from '../collision/install-3d.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -246,6 +247,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   const e = createSlot(world, where); // throws on a full world before anything changed
   const s = shapes3DOf(world, true);
   if (!s.active) {
+    install3D(world);
     s.active = true;
     world.removeHooks.push(removeShapes3DOf);
   }

@@ -1,4 +1,9 @@
 import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
+import { installCloth } from '../cloth/create.js';
+import { install3D } from '../collision/install-3d.js';
+import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
+import { setBarnesHutGravity } from '../forces/gravity.js';
+import { installEmitters } from '../particles/emitter.js';
 import { shareStores } from '../threads/shared-stores.js';
 import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -50,7 +55,7 @@ import { externalWorldStates } from './world-state.js';
  * everything else is captured. `threads` and `threadPool` are the world's own: a snapshot of a world
  * with any number of threads restores into a world with any number, which keeps its pool.
  */
-const NOT_STATE = new Set(['stages', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool']);
+const NOT_STATE = new Set(['stages', 'builtins', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool']);
 
 /**
  * Typed arrays of the world that are scratch: written in full before they are read, within the step
@@ -1731,9 +1736,22 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
     );
   }
   restoreEcs(world, h.ecs as Record<string, Encoded>, r, oldMaxId);
+  installEveryFeature(world);
   // A store the restore gave a new array (one this world had not allocated) goes on shared memory,
   // where the pool's workers can see it.
   if (world.threadPool !== null) shareStores(world.components, world.capacity);
+}
+
+/**
+ * Installs every feature's systems into a restored world (step/install.ts): the emitters', the 3D
+ * shapes' and joints', the cloth's and the Barnes-Hut sum, so the world runs whatever the snapshot's
+ * world ran. A feature the snapshot's world never used has nothing to act on and writes nothing.
+ */
+function installEveryFeature(world: PhysicsWorld): void {
+  installEmitters(world);
+  install3D(world);
+  installCloth(world);
+  setBarnesHutGravity(barnesHutGravity);
 }
 
 /**

@@ -10,14 +10,6 @@ import {
   solveJoints,
   warmStartJoints,
 } from '../joints/solver-2d.js';
-import {
-  finishJoints3D,
-  gatherJoint3DBodies,
-  joints3DToSolve,
-  prepareJoints3D,
-  solveJoints3D,
-  warmStartJoints3D,
-} from '../joints/solver-3d.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
@@ -36,15 +28,18 @@ import {
   solveManifolds,
   warmStartManifolds,
 } from './manifold-rows-2d.js';
+import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D } from './manifold-rows-3d.js';
 import {
   applyManifold3DRestitution,
-  finishManifolds3D,
-  gatherManifold3DBodies,
-  manifolds3DToSolve,
-  prepareManifolds3D,
+  finishJoints3D,
+  gatherJoint3DBodies,
+  joints3DToSolve,
+  prepareJoints3D,
+  solveJoints3D,
   solveManifolds3D,
+  warmStartJoints3D,
   warmStartManifolds3D,
-} from './manifold-rows-3d.js';
+} from './rows-3d.js';
 import {
   approachOnThreads,
   containedOnThreads,

@@ -1,8 +1,8 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
 import { jointsToSolve } from '../joints/solver-2d.js';
-import { joints3DToSolve } from '../joints/solver-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { joints3DToSolve } from './rows-3d.js';
 
 /**
  * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the

@@ -21,22 +21,63 @@ import { vortexSystem } from '../forces/vortex.js';
 import { integrateSystem } from '../integrators/integrate.js';
 import { sleepSystem, wakeSystem } from '../islands/sleep.js';
 import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
-import { shapes3DOf } from '../shapes/store-3d.js';
 import { contactSolverSystem } from '../solver/contact-solver.js';
 import type { System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { trustFiniteOutput } from './finite.js';
-import type { StageName } from './stage-names.js';
+import { PIPELINE_ORDER } from './install.js';
+import { STAGES, type StageName } from './stage-names.js';
 
 export type { System } from '../world/options.js';
 export { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
 
+/** The core's built-in systems by name (step/install.ts PIPELINE_ORDER): every world starts with these. */
+const CORE: Readonly<Record<string, System>> = {
+  wake: wakeSystem,
+  lifetime: lifetimeSystem,
+  clearForces: clearForcesSystem,
+  gravityScale: gravityScaleSystem,
+  mutualGravity: mutualGravitySystem,
+  attractor: attractorSystem,
+  coulomb: coulombSystem,
+  lorentz: lorentzSystem,
+  centralForce: centralForceSystem,
+  linearDrag: linearDragSystem,
+  quadraticDrag: quadraticDragSystem,
+  lift: liftSystem,
+  buoyancy: buoyancySystem,
+  spring: springSystem,
+  drivingForce: drivingForceSystem,
+  randomForce: randomForceSystem,
+  thrust: thrustSystem,
+  angularDamping: angularDampingSystem,
+  vortex: vortexSystem,
+  bodyThrust: bodyThrustSystem,
+  liftingSurface: liftingSurfaceSystem,
+  ballastTrim: ballastTrimSystem,
+  integrate: integrateSystem,
+  stiffDrag: stiffDragSystem,
+  stiffFluidDrag: stiffFluidDragSystem,
+  stiffAngularDamping: stiffAngularDampingSystem,
+  stiffSpringDamping: stiffSpringDampingSystem,
+  burnFuel: burnFuelSystem,
+  ballastFill: ballastFillSystem,
+  broadphase: broadphaseSystem,
+  narrowphase: narrowphaseSystem,
+  shapes2D: shapeCollisionSystem,
+  contactSolver: contactSolverSystem,
+  continuous: continuousCollisionSystem,
+  sleep: sleepSystem,
+};
+
 /**
- * The default pipeline: every stage with its built-in systems, in run order. A world starts with a
- * copy of it in `world.stages`; hook in with `addSystem`.
+ * The default pipeline: every stage with all its built-in systems, in run order (step/install.ts
+ * PIPELINE_ORDER). A world starts with the core ones in `world.stages` and installs the others (the
+ * emitters', 3D shapes' and cloth's systems) at their place here when the feature is first used;
+ * hook in with `addSystem`. Referencing this list brings every built-in system into a bundle.
  * @category World and step
  */
-export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = Object.freeze([
+export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly systems: readonly System[] }> = /* @__PURE__ */ Object.freeze([
   { stage: 'spawn', systems: [wakeSystem, lifetimeSystem, emitterSystem] },
   { stage: 'clearForces', systems: [clearForcesSystem] },
   {
@@ -90,36 +131,60 @@ export const PIPELINE: ReadonlyArray<{ readonly stage: StageName; readonly syste
   { stage: 'finalize', systems: [sleepSystem] },
 ]);
 
-// Built-in systems that write no body state (force laws write forces, which `step` checks after the
-// forces stage; broadphase and narrowphase write contacts; fuel and ballast write masses), or check
-// what they write (spawned particles, zeroed velocities of sleeping bodies, the contact solver's
-// bodies; the integrators and the stiff drag updates their positions and velocities, so after
-// `integrate` only the turning bodies are checked). Shape collisions (2D and 3D) and cloth are trusted
-// only in a world without such shapes or cloth links, where they write nothing (step/finite.ts), so a
-// world with nothing to collide pays nothing for its collide stage.
-trustFiniteOutput([
-  wakeSystem,
-  lifetimeSystem,
-  emitterSystem,
-  broadphaseSystem,
-  narrowphaseSystem,
-  contactSolverSystem,
-  sleepSystem,
-  burnFuelSystem,
-  ballastFillSystem,
-  ...PIPELINE.find((p) => p.stage === 'forces')!.systems,
-]);
-trustFiniteOutput([integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem], 'linear');
-trustFiniteOutput([shapeCollisionSystem, continuousCollisionSystem], 'all', (world) => query(world, [world.components.Shape]).length === 0);
-trustFiniteOutput([shape3DCollisionSystem], 'all', (world) => world.dimensions !== 3 || shapes3DOf(world)?.active !== true);
-trustFiniteOutput([clothSystem], 'all', (world) => query(world, [world.components.ClothLink]).length === 0);
+let coreTrusted = false;
 
 /**
- * A fresh copy of the default systems of every stage.
+ * Marks the core's systems whose output `step` need not check for NaN (step/finite.ts), once.
+ * Built-in systems that write no body state (force laws write forces, which `step` checks after the
+ * forces stage; broadphase and narrowphase write contacts; fuel and ballast write masses), or check
+ * what they write (zeroed velocities of sleeping bodies, the contact solver's bodies; the integrators
+ * and the stiff drag updates their positions and velocities, so after `integrate` only the turning
+ * bodies are checked). Shape collisions are trusted only in a world without shapes, where they write
+ * nothing, so a world with nothing to collide pays nothing for its collide stage. The installed
+ * features mark their own (installEmitters, install3D, installCloth).
+ */
+function trustCore(): void {
+  if (coreTrusted) return;
+  coreTrusted = true;
+  const forces = PIPELINE_ORDER.forces.map((name) => CORE[name]!);
+  trustFiniteOutput([
+    wakeSystem,
+    lifetimeSystem,
+    broadphaseSystem,
+    narrowphaseSystem,
+    contactSolverSystem,
+    sleepSystem,
+    burnFuelSystem,
+    ballastFillSystem,
+    ...forces,
+  ]);
+  trustFiniteOutput(
+    [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem],
+    'linear',
+  );
+  trustFiniteOutput(
+    [shapeCollisionSystem, continuousCollisionSystem],
+    'all',
+    (world) => query(world, [world.components.Shape]).length === 0,
+  );
+}
+
+/**
+ * A new world's stages: the core's built-in systems of every stage, in run order, each recorded by
+ * name in `builtins` (the world's map of installed built-ins, see step/install.ts).
  * @category World and step
  */
-export function createStages(): Record<StageName, System[]> {
+export function createStages(builtins: Map<string, System>): Record<StageName, System[]> {
+  trustCore();
   const stages = {} as Record<StageName, System[]>;
-  for (const { stage, systems } of PIPELINE) stages[stage] = [...systems];
+  for (const stage of STAGES) {
+    stages[stage] = [];
+    for (const name of PIPELINE_ORDER[stage]) {
+      const system = CORE[name];
+      if (system === undefined) continue;
+      stages[stage].push(system);
+      builtins.set(name, system);
+    }
+  }
   return stages;
 }

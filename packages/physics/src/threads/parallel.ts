@@ -11,7 +11,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { nowMs } from './adaptive.js';
 import type { KernelArray } from './kernels.js';
-import { KERNEL_HELPERS, KERNELS } from './kernels.js';
 import { isShared, type ThreadPool } from './pool.js';
 
 /**
@@ -72,7 +71,7 @@ export function runOnPool(
   const t0 = nowMs();
   const result = parallel
     ? pool.run(system, kernel, arrays, params, n, ids)
-    : KERNELS[kernel]!(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, KERNEL_HELPERS);
+    : pool.kernels[kernel]!(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, pool.helpers);
   pool.chooser.record(site, parallel, nowMs() - t0, n);
   return result;
 }

@@ -20,7 +20,7 @@
 
 import { LoopChooser } from './adaptive.js';
 import { epochMs, RangeBalance } from './balance.js';
-import { KERNEL_HELPERS, KERNELS, type KernelArray } from './kernels.js';
+import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 import { COMMAND, CONTROL, type PoolMessage } from './worker-main.js';
 import { workerSource } from './worker-source.js';
 
@@ -155,6 +155,10 @@ function canBlock(): boolean {
 export class ThreadPool {
   /** Threads that share a loop: the calling thread and its workers. */
   readonly threads: number;
+  /** The kernel table the pool runs, indexed by kernel number (threads/kernels.ts KERNEL); the workers get its source text. */
+  readonly kernels: readonly Kernel[];
+  /** The functions the kernels call, by index (threads/kernel-helpers.ts), passed to every kernel as its last argument. */
+  readonly helpers: readonly KernelHelper[];
   /** Resolves once every worker has started and can take work (a browser page may await it; Node waits by itself). */
   readonly ready: Promise<void>;
   private readonly workers: AnyWorker[];
@@ -203,8 +207,10 @@ export class ThreadPool {
     this.ctl[CONTROL.SPIN] = us;
   }
 
-  constructor(threads: number, factory: WorkerFactory) {
+  constructor(threads: number, factory: WorkerFactory, kernels: readonly Kernel[], helpers: readonly KernelHelper[]) {
     this.threads = threads;
+    this.kernels = kernels;
+    this.helpers = helpers;
     this.ctl = new Int32Array(new SharedArrayBuffer(CONTROL.LENGTH * 4));
     this.ctl[CONTROL.SPIN] = IDLE_SPIN_MICROSECONDS;
     this.params = sharedFloat64(MAX_PARAMS);
@@ -214,7 +220,7 @@ export class ThreadPool {
     this.errorText = new Uint16Array(new SharedArrayBuffer(ERROR_TEXT * 2));
     this.idBuffer = new Int32Array(new SharedArrayBuffer(4));
     this.blocking = canBlock();
-    const source = workerSource();
+    const source = workerSource(kernels, helpers);
     this.workers = [];
     const started: Array<Promise<void>> = [];
     for (let i = 1; i < threads; i++) {
@@ -329,7 +335,7 @@ export class ThreadPool {
     let own: number,
       t1 = t0;
     try {
-      own = KERNELS[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, KERNEL_HELPERS);
+      own = this.kernels[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, this.helpers);
       t1 = epochMs();
     } finally {
       this.await(system);
@@ -521,12 +527,14 @@ export class ThreadPool {
 }
 
 /**
- * Makes a pool of `threads` threads (the caller and threads - 1 workers).
+ * Makes a pool of `threads` threads (the caller and threads - 1 workers) that runs the kernels of
+ * `kernels` (indexed by kernel number) with `helpers` as their last argument. The pool knows no
+ * physics: a world's pool gets the physics kernel table (threads/kernel-table.ts) from `enableThreads`.
  * @throws Error if SharedArrayBuffer is missing (a page that is not cross-origin isolated) or no
  *   worker can be made here; the message starts with `where`.
  * @category Threads
  */
-export function createThreadPool(where: string, threads: number): ThreadPool {
+export function createThreadPool(where: string, threads: number, kernels: readonly Kernel[], helpers: readonly KernelHelper[]): ThreadPool {
   if (!sharedMemoryAvailable()) {
     throw new Error(
       `${where}: threads > 1 needs SharedArrayBuffer (in a browser, serve the page cross-origin isolated: Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp)`,
@@ -537,5 +545,5 @@ export function createThreadPool(where: string, threads: number): ThreadPool {
     throw new Error(
       `${where}: threads > 1 needs worker threads (Node >= 20.16 worker_threads, or a browser Worker), and none is available here`,
     );
-  return new ThreadPool(threads, factory);
+  return new ThreadPool(threads, factory, kernels, helpers);
 }

@@ -5,26 +5,28 @@
  * URL, which a cross-origin isolated page may start).
  */
 
-import { KERNEL_HELPERS, KERNELS } from './kernels.js';
+import type { Kernel, KernelHelper } from './kernel-types.js';
 import { WORKER_MAIN_SOURCE } from './worker-main.js';
 
-let cached: string | null = null;
+/** The last source built, with the table and helpers it was built from. */
+let cached: { kernels: readonly Kernel[]; helpers: readonly KernelHelper[]; source: string } | null = null;
 
 /**
- * The worker's source text (built once).
+ * The worker's source text for a kernel table and its helpers (kept for the next pool of the same ones).
  * @category Threads
  */
-export function workerSource(): string {
-  if (cached !== null) return cached;
-  cached = [
+export function workerSource(kernels: readonly Kernel[], helpers: readonly KernelHelper[]): string {
+  if (cached !== null && cached.kernels === kernels && cached.helpers === helpers) return cached.source;
+  const source = [
     "'use strict';",
     // A bundler keeping names may wrap the kernels' names in a __name helper; the worker has none.
     'var __name = function (f) { return f; };',
-    `var KERNELS = [${KERNELS.map((k) => k.toString()).join(',\n')}];`,
+    `var KERNELS = [${kernels.map((k) => k.toString()).join(',\n')}];`,
     // The kernels' helpers, reached by index (kernels.ts KERNEL_HELPERS), so no name a bundler chose matters.
-    `var KERNEL_HELPERS = [${KERNEL_HELPERS.map((k) => k.toString()).join(',\n')}];`,
+    `var KERNEL_HELPERS = [${helpers.map((k) => k.toString()).join(',\n')}];`,
     WORKER_MAIN_SOURCE,
     "workerMain(KERNELS, KERNEL_HELPERS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",
   ].join('\n');
-  return cached;
+  cached = { kernels, helpers, source };
+  return source;
 }

@@ -85,7 +85,9 @@ export interface PhysicsWorldOptions {
    * `disposeWorld` (its workers never keep Node alive, but they hold memory until disposed). Loops
    * shorter than MIN_PARALLEL_PER_THREAD entities a thread run on the calling thread alone. In a
    * browser the page must be cross-origin isolated, and the loops run on one thread until the
-   * workers have started (`threadsReady`).
+   * workers have started (`threadsReady`). More than 1 needs `enableThreads()` called once before
+   * (it loads the pool and its kernels; a program without it does not bundle them): without it
+   * `createPhysicsWorld` throws an Error that names it.
    */
   threads?: number;
 }
@@ -133,8 +135,17 @@ export interface PhysicsWorldContext {
   readonly rng: Rng;
   /** Component stores, see `Components`. */
   readonly components: Components;
-  /** The systems of each stage, run in the order of `STAGES`. Add your own with `addSystem`. */
+  /**
+   * The systems of each stage, run in the order of `STAGES`. Add your own with `addSystem`. A new world
+   * holds the core's built-in systems; a feature's (emitters, 3D shapes and joints, cloth) are put in at
+   * their place in `PIPELINE` when the feature is first used (step/install.ts).
+   */
   readonly stages: Record<StageName, System[]>;
+  /**
+   * Internal: the built-in systems ever installed in `stages`, by name (step/install.ts PIPELINE_ORDER).
+   * A name stays once installed, so a built-in taken out with `removeSystem` is not put back.
+   */
+  readonly builtins: Map<string, System>;
   /** Collision configuration, broadphase grid, contacts and solver scratch; see `CollisionState`. */
   readonly collision: CollisionState;
   /** Joint solver state: packed rows, warm-start impulses, break events of the last step (`joints.breaks`); see joints/state-2d.ts. */

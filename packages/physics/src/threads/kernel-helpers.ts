@@ -1,0 +1,45 @@
+/**
+ * The functions kernels call, by index (threads/kernels.ts): a module of its own so a program that
+ * runs the block loops of the coloured solve on one thread does not bring in the whole kernel table.
+ */
+import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from '../solver/coloring-kernel.js';
+import {
+  approach2D,
+  containBodies2D,
+  deepestRow2D,
+  finishBodyRows2D,
+  restitutionRows2D,
+  restitutionTargets2D,
+} from '../solver/stages-kernel.js';
+import { stripLayout2D } from '../solver/strip-plan-kernel.js';
+import { stripCut2D } from '../solver/strips-kernel.js';
+import { claimBlock } from './block-claim.js';
+import type { KernelHelper } from './kernel-types.js';
+
+/**
+ * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
+ * their source text, like the kernels'): 0 to 3 the coloured contact solve's block loops
+ * (solver/coloring-kernel.ts: pack, unpack, body stage, rows); 4 to 6 finishBodies2D's loops
+ * (solver/stages-kernel.ts: bodies, boundary, deepest row); 7 and 8 restitutionColored2D's (targets,
+ * a pass's block); 9 claimBlock (block-claim.ts: the next block a thread takes of a unit, for both of
+ * those kernels); 10 stripCut2D and 11 stripLayout2D (solver/strips-kernel.ts and
+ * solver/strip-plan-kernel.ts: the strip cut and the pack layout, for stripPlan2D); 12 approach2D
+ * (solver/stages-kernel.ts, for solveColored2D). A kernel's hot loops live here when the kernel runs
+ * once a step: V8 then compiles the loops as whole functions with full type feedback.
+ * @category Threads
+ */
+export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.freeze([
+  coloredPack2D,
+  coloredUnpack2D,
+  coloredBodies2D,
+  coloredRows2D,
+  finishBodyRows2D,
+  containBodies2D,
+  deepestRow2D,
+  restitutionTargets2D,
+  restitutionRows2D,
+  claimBlock,
+  stripCut2D,
+  stripLayout2D,
+  approach2D,
+]);
