@@ -17,7 +17,15 @@ import {
   warmStartJoints3D,
 } from '../joints/solver-3d.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
-import { applyManifold3DRestitution, solveManifolds3D, warmStartManifolds3D } from '../solver/manifold-rows-3d.js';
+import {
+  applyManifold3DRestitution,
+  finishManifolds3D,
+  gatherManifold3DBodies,
+  manifolds3DToSolve,
+  prepareManifolds3D,
+  solveManifolds3D,
+  warmStartManifolds3D,
+} from '../solver/manifold-rows-3d.js';
 import { setRows3D } from '../solver/rows-3d.js';
 import { trustFiniteOutput } from '../step/finite.js';
 import { installSystem } from '../step/install.js';
@@ -42,6 +50,10 @@ export function install3D(world: PhysicsWorld): void {
       warmStartJoints3D,
       solveJoints3D,
       finishJoints3D,
+      manifolds3DToSolve,
+      gatherManifold3DBodies,
+      prepareManifolds3D,
+      finishManifolds3D,
       warmStartManifolds3D,
       solveManifolds3D,
       applyManifold3DRestitution,

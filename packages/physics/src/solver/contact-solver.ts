@@ -28,13 +28,16 @@ import {
   solveManifolds,
   warmStartManifolds,
 } from './manifold-rows-2d.js';
-import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve, prepareManifolds3D } from './manifold-rows-3d.js';
 import {
   applyManifold3DRestitution,
   finishJoints3D,
+  finishManifolds3D,
   gatherJoint3DBodies,
+  gatherManifold3DBodies,
   joints3DToSolve,
+  manifolds3DToSolve,
   prepareJoints3D,
+  prepareManifolds3D,
   solveJoints3D,
   solveManifolds3D,
   warmStartJoints3D,

@@ -1,11 +1,13 @@
 /**
  * The contact solver's entry points into the 3D joint and shape-contact rows (joints/solver-3d.ts,
  * solver/manifold-rows-3d.ts), through a table that `install3D` (collision/install-3d.ts) fills when a
- * program first makes a 3D shape or joint. Until then each entry does exactly what the real function
- * does in a world without 3D shapes or joints (mostly nothing), so the contact solver does not bring
- * the 3D rows into a program that never makes them.
+ * program first makes a 3D shape or joint. Until then no world has a 3D joint, a 3D shape or the 3D
+ * contact state (collision/manifolds-3d.ts contact3DStateOf, made only by those rows, the 3D shapes'
+ * collision and restore, which installs them), and each entry does what the real function does then:
+ * nothing (the 3D contact state, which prepareManifolds3D would make in a 3D world of balls, holds
+ * nothing the balls' solve reads). So the contact solver does not bring the 3D rows into a program that
+ * never makes them.
  */
-import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -19,6 +21,10 @@ export interface Rows3D {
   warmStartJoints3D(world: PhysicsWorld): void;
   solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean): void;
   finishJoints3D(world: PhysicsWorld, hs: number): void;
+  manifolds3DToSolve(world: PhysicsWorld): boolean;
+  gatherManifold3DBodies(world: PhysicsWorld, count: number): number;
+  prepareManifolds3D(world: PhysicsWorld): void;
+  finishManifolds3D(world: PhysicsWorld): void;
   warmStartManifolds3D(world: PhysicsWorld): void;
   solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void;
   applyManifold3DRestitution(world: PhysicsWorld): void;
@@ -70,17 +76,29 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
   if (rows !== null) rows.warmStartManifolds3D(world);
 }
 
-/**
- * solver/manifold-rows-3d.ts solveManifolds3D; before install3D only its alternation of the point
- * order (st.solveParity, part of a snapshot), with no manifold to solve.
- */
+/** solver/manifold-rows-3d.ts solveManifolds3D; nothing before install3D. */
 export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
-  if (rows !== null) {
-    rows.solveManifolds3D(world, hs, useBias);
-    return;
-  }
-  const st = contact3DStateOf(world);
-  if (st !== undefined) st.solveParity ^= useBias ? 1 : 0;
+  if (rows !== null) rows.solveManifolds3D(world, hs, useBias);
+}
+
+/** solver/manifold-rows-3d.ts manifolds3DToSolve; false before install3D. */
+export function manifolds3DToSolve(world: PhysicsWorld): boolean {
+  return rows?.manifolds3DToSolve(world) === true;
+}
+
+/** solver/manifold-rows-3d.ts gatherManifold3DBodies; `count` unchanged before install3D. */
+export function gatherManifold3DBodies(world: PhysicsWorld, count: number): number {
+  return rows === null ? count : rows.gatherManifold3DBodies(world, count);
+}
+
+/** solver/manifold-rows-3d.ts prepareManifolds3D; nothing before install3D. */
+export function prepareManifolds3D(world: PhysicsWorld): void {
+  if (rows !== null) rows.prepareManifolds3D(world);
+}
+
+/** solver/manifold-rows-3d.ts finishManifolds3D; nothing before install3D. */
+export function finishManifolds3D(world: PhysicsWorld): void {
+  if (rows !== null) rows.finishManifolds3D(world);
 }
 
 /** solver/manifold-rows-3d.ts applyManifold3DRestitution; nothing before install3D. */
