@@ -95,6 +95,8 @@ try {
     const scene = M.SCENES[values.scene];
     if (!scene) throw new UsageError(`unknown scene ${values.scene} (scenes: ${Object.keys(M.SCENES).join(', ')})`);
     const options = count === undefined ? { seed } : { count, seed };
+    // Revisions since enableThreads need it for threads > 1; older ones have none.
+    if (threads > 1) M.enableThreads?.();
     const w = M.createPhysicsWorld({ ...scene.worldOptions(options), seed, ...(threads > 1 ? { threads } : {}) });
     scene.build(w, options);
     return w;
