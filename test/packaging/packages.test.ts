@@ -146,7 +146,7 @@ describe('the packed packages in a fresh project', () => {
     // file with "sideEffects": false, so only what the example reaches is kept, and a world installs
     // a feature's systems when the feature is first used (step/install.ts), so the example does not
     // reach emitters, 3D shapes and joints, cloth, Barnes-Hut or the thread pool. Bound: 240 KB
-    // (measured 231.7 KB; 362 KB while every world held every system, 466 KB while the package
+    // (measured 232 KB; 362 KB while every world held every system, 466 KB while the package
     // shipped one bundled file). The goal is 200 KB: the rest is the core the example uses
     // (2D shapes, contacts and joints: about 100 KB) and what every world reaches whatever it uses:
     // every force law (a law is a component users add themselves), every integration scheme (chosen

@@ -15,7 +15,7 @@ import type { StageName } from './stage-names.js';
  * and before those that come after it.
  * @category World and step
  */
-export const PIPELINE_ORDER: Readonly<Record<StageName, readonly string[]>> = Object.freeze({
+export const PIPELINE_ORDER: Readonly<Record<StageName, readonly string[]>> = /* @__PURE__ */ Object.freeze({
   spawn: ['wake', 'lifetime', 'emitter'],
   clearForces: ['clearForces'],
   forces: [
