@@ -195,7 +195,7 @@ let layerWorld: PhysicsWorld | null = null;
 function draw(alpha: number, world: PhysicsWorld): void {
   if (layerWorld !== world) {
     layer.destroy();
-    layer = new RopeLayer(world, [...rope.bodies, bob], { start: PIN, width: 0.06 });
+    layer = new RopeLayer(world, [...rope.bodies, bob], { start: PIN, width: 0.06, links: [...rope.joints, bobLink] });
     renderer.root.addChildAt(layer.graphics, 0);
     layerWorld = world;
   }
@@ -220,6 +220,8 @@ shell.expose({
   /** Live links of the rope (joints still alive). */
   links: () => [...rope.joints, bobLink].filter((h) => isAlive(shell.world, h)).length,
   cuts: () => cuts,
+  /** Pieces the rope was drawn in at the last frame (1 whole, 2 after a cut). */
+  ropePieces: () => layer.pieces,
   /** Runs the lab's step n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) labStep(shell.world);

@@ -153,6 +153,9 @@ describe('lab-rope', () => {
       return w.world.components.Position.y[w.ids().bob]!;
     });
     expect(y).toBeLessThan(mid.y - 2);
+    // Drawn as two ropes: no line joins the piece that hangs from the pin to the piece that fell (it
+    // was drawn through the cut, a straight segment about 430 px long).
+    await g.waitFor(() => (window.game as unknown as { ropePieces(): number }).ropePieces() === 2, null);
     expect(g.errors).toEqual([]);
   });
 });

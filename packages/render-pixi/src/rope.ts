@@ -13,16 +13,26 @@ export interface RopeLayerOptions {
   end?: readonly [number, number] | null;
   /** Segments of the smooth curve between two bodies, integer >= 1. Default 6. */
   smoothing?: number;
+  /**
+   * The links between consecutive drawn points (joint handles, e.g. `createRope`'s `joints` and a bob's
+   * link): links[k] joins point k and point k + 1 of the drawn sequence (`start`, the bodies, `end`).
+   * Where a link has been removed (a cut rope) the line breaks there, so the two pieces are drawn as
+   * two ropes. Absent: only removed bodies break the line.
+   */
+  links?: ArrayLike<number>;
 }
 
 /**
  * Draws a rope (a chain of bodies, e.g. from `createRope`) as one smooth line: a centripetal-free
  * uniform Catmull-Rom spline through the bodies' interpolated positions (and its pins). Where a body
- * has been removed (a cut) the line breaks in two. Reads only Position and PreviousPosition.
+ * has been removed, or a link given in `options.links` (a cut), the line breaks in two. Reads only
+ * Position and PreviousPosition (and whether the bodies and links are alive).
  */
 export class RopeLayer {
   /** The pixi object to add to a container (e.g. the world renderer's root). */
   readonly graphics = new Graphics({ label: 'rope' });
+  /** Pieces drawn by the last `update`: 1 for a whole rope, 2 after one cut (pieces of fewer than 2 points are not drawn). */
+  pieces = 0;
   private readonly xs: number[] = [];
   private readonly ys: number[] = [];
 
@@ -50,28 +60,36 @@ export class RopeLayer {
     const { xs, ys } = this;
     xs.length = 0;
     ys.length = 0;
+    this.pieces = 0;
     const flush = (): void => {
       this.stroke(camera, xs, ys);
       xs.length = 0;
       ys.length = 0;
     };
     const start = this.options.start,
-      end = this.options.end;
+      end = this.options.end,
+      links = this.options.links;
+    // Point k of the drawn sequence (start, bodies, end); a dead body or a dead link before it breaks the line.
+    let k = 0;
+    const linked = (): boolean => links === undefined || k === 0 || k - 1 >= links.length || isAlive(this.world, links[k - 1]!);
     if (start) {
       xs.push(start[0]);
       ys.push(start[1]);
+      k++;
     }
-    for (let i = 0; i < this.bodies.length; i++) {
+    for (let i = 0; i < this.bodies.length; i++, k++) {
       const h = this.bodies[i]!;
       if (!isAlive(this.world, h)) {
         flush();
         continue;
       }
+      if (!linked()) flush();
       const e = slotOf(h);
       xs.push(O.x[e]! + (P.x[e]! - O.x[e]!) * alpha);
       ys.push(O.y[e]! + (P.y[e]! - O.y[e]!) * alpha);
     }
     if (end && (this.bodies.length === 0 || isAlive(this.world, this.bodies[this.bodies.length - 1]!))) {
+      if (!linked()) flush();
       xs.push(end[0]);
       ys.push(end[1]);
     }
@@ -81,6 +99,7 @@ export class RopeLayer {
   private stroke(camera: Camera, xs: number[], ys: number[]): void {
     const n = xs.length;
     if (n < 2) return;
+    this.pieces++;
     const g = this.graphics;
     const s = this.options.smoothing ?? 6;
     const sx = (x: number) => camera.toScreenX(x),
