@@ -22,9 +22,9 @@ enableThreads();
 // The 2D ball contacts solved by graph colouring on the world's threads (solver/coloring.ts).
 // Rows of one colour share no movable body, so how a colour is split over threads cannot change a
 // result: the state must be identical to the bit (stateHash, tolerance zero) run after run, on 2 and 3
-// threads, and on an adaptive pool that runs some steps on one thread. The impulse order is not the
-// one-thread world's, so against threads: 1 the checks are physical: the pile settles as well (overlap
-// under 5 % of a radius, well under the pile test's 5 % bound: 0.3 % and 0.4 % measured, both settled below 0.02 m/s) and no ball leaves the box.
+// threads, and on an adaptive pool that runs some steps on one thread (threads-same-trajectory.test.ts
+// checks 1 thread against 2, 3 and 4). The physical checks: the pile settles (overlap under 2 % of a
+// radius, every ball settled below 0.1 m/s) and no ball leaves the box.
 
 const worlds: PhysicsWorld[] = [];
 afterEach(() => {

@@ -9,8 +9,8 @@ enableThreads();
 // The contact solver's stages beside the coloured substeps on the world's threads
 // (solver/stages-threads.ts): the solver rows' fill, measureApproach and finishBodies do each
 // body's or row's one-thread arithmetic, so the state must equal threads: 1 to the bit (stateHash,
-// tolerance zero); the restitution stage after a coloured solve goes colour by colour, so its state
-// must be the same on 2 threads run twice, on 3 threads and on an adaptive pool (tolerance zero), and,
+// tolerance zero); the restitution stage after a coloured solve goes colour by colour (on one thread
+// too), so its state must be the same on 2 threads run twice, on 3 threads and on an adaptive pool (tolerance zero), and,
 // checked against the conservation law rather than another run, a pile falling from rest never holds
 // more mechanical energy than it started with (tolerance 1e-9 of it: rounding).
 

@@ -76,11 +76,11 @@ export interface CollisionSettings {
    */
   contactPushSpeed: number;
   /**
-   * Fewest ball contact rows for a 2D world with threads (`threads: n > 1`) to solve its contacts by
-   * graph colouring on the threads (solver/coloring.ts), integer >= 0. Default 16384. The
-   * coloured solve applies impulses colour by colour instead of in the one-thread order, so such a
-   * world's trajectory differs from the one-thread world's; it is the same for every n > 1.
-   * Infinity keeps the one-thread order (and its results to the bit) at any size.
+   * Fewest ball contact rows for a 2D world's step (no joints or shapes in it) to solve its contacts
+   * by graph colouring (solver/coloring.ts), on the world's threads or inline on one thread, integer
+   * >= 0. Default 16384. The coloured solve applies impulses colour by colour instead of in buffer
+   * order, and takes the same colours on every thread count, so the trajectory is the same for
+   * `threads: 1` and `threads: n`. Infinity keeps buffer order at any size.
    */
   coloredSolveMinRows: number;
   /**

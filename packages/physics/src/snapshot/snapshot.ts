@@ -1640,9 +1640,8 @@ export function sealSnapshot(snap: WorldSnapshot): void {
  *
  * Threads: the world keeps its own thread count and worker pool (they are not state: see NOT_STATE),
  * so a snapshot of a world with any number of threads restores into a world with any number. Stepping
- * on is bit-identical for every pair of thread counts (each body's arithmetic does not depend on them),
- * except across 1 and more threads in steps solved by colours (`collision.settings.coloredSolveMinRows`:
- * that order is the same for every count above 1, not for 1).
+ * on is bit-identical for every pair of thread counts (each body's arithmetic and every stage's order
+ * do not depend on them; steps solved by colours take the same colours on one thread).
  *
  * @throws RangeError `restore: snapshot ...` if `snap` is not a snapshot, was taken from a world of
  *   other dimensions or capacity or by another version, is damaged (checksum), or holds a value out

@@ -27,15 +27,15 @@
  * resolves in the pack with nothing to do and the rows whose values it changes to be packed again.
  *
  * Blocks of one colour touch disjoint movable bodies, and the cut depends on the state alone (not on
- * the number of threads), so which thread runs a block does not change any result: the solve gives
- * the same bits on 1, 2 or n threads, and the adaptive pool may run it on one thread when the threads
- * do not pay (threads/adaptive.ts) without changing the state. Its impulse order (block by block)
- * differs from the one-thread world's (buffer order), so a world made with `threads: n > 1` whose step
- * takes this path follows a slightly different trajectory than the same world with `threads: 1`: both
- * are deterministic, and equal for any thread count above one.
+ * the number of threads), so which thread runs a block does not change any result. A world without a
+ * pool (`threads: 1`), or whose adaptive pool finds the threads slower (threads/adaptive.ts), runs the
+ * same kernel inline on the calling thread, over every block: a step gives the same bits on 1, 2 or n
+ * threads.
  *
- * Taken only in 2D worlds with a thread pool, no joints and no shape manifolds in the step (they
- * solve between the contacts within each pass), and at least `CollisionSettings.coloredSolveMinRows` rows (default 16384).
+ * Taken in 2D worlds with no joints and no shape manifolds in the step (they solve between the contacts
+ * within each pass) and at least `CollisionSettings.coloredSolveMinRows` rows (default 16384), on any
+ * thread count; smaller or mixed steps run the one-thread loops of solver/contact-solver.ts on every
+ * thread count.
  */
 
 import type { ContactBuffer } from '../collision/contacts.js';
@@ -43,7 +43,7 @@ import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
-import { isShared, sharedCopy, sharedLike, type ThreadPool } from '../threads/pool.js';
+import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
@@ -147,34 +147,54 @@ interface ColorScratch {
 
 const scratchOf = new WeakMap<CollisionState, ColorScratch>();
 
+/**
+ * A buffer of `bytes` bytes for the coloured solve's scratch: shared memory where there is any (the
+ * pool's workers read it), else a plain ArrayBuffer (a one-thread world in a page that is not
+ * cross-origin isolated runs the kernel inline).
+ */
+function buffer(bytes: number): ArrayBufferLike {
+  return sharedMemoryAvailable() ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes);
+}
+
+/**
+ * A typed array of the same type as `like` and `n` elements, on shared memory where there is any (a
+ * plain one otherwise, for a one-thread world whose page is not cross-origin isolated).
+ * @category Collision
+ */
+export function grown<T extends KernelArray>(like: T, n: number): T {
+  if (sharedMemoryAvailable()) return sharedLike(like, n);
+  const C = like.constructor as { new (n: number): T };
+  return new C(n);
+}
+
 function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch {
   let s = scratchOf.get(cs);
   if (s === undefined) {
     s = {
-      pack: new Float64Array(new SharedArrayBuffer(8 * PACK_STRIDE * 1024)),
-      pair: new Int32Array(new SharedArrayBuffer(4 * 2 * 1024)),
-      tot: new Float64Array(new SharedArrayBuffer(8 * 1024)),
-      row: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      dyn: new Uint8Array(new SharedArrayBuffer(1024)),
-      plan: new Int32Array(new SharedArrayBuffer(4 * (PLAN_HEAD + MAX_COLORS + 2))),
-      bar: new Int32Array(new SharedArrayBuffer(4 * 4)),
+      pack: new Float64Array(buffer(8 * PACK_STRIDE * 1024)),
+      pair: new Int32Array(buffer(4 * 2 * 1024)),
+      tot: new Float64Array(buffer(8 * 1024)),
+      row: new Int32Array(buffer(4 * 1024)),
+      dyn: new Uint8Array(buffer(1024)),
+      plan: new Int32Array(buffer(4 * (PLAN_HEAD + MAX_COLORS + 2))),
+      bar: new Int32Array(buffer(4 * 4)),
       params: new Float64Array(24),
-      claim: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      color: new Uint8Array(new SharedArrayBuffer(1024)),
+      claim: new Int32Array(buffer(4 * 1024)),
+      color: new Uint8Array(buffer(1024)),
       mask: new Uint32Array(1024),
       arrays: [],
-      offsets: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 1) * 16)),
-      counts: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      start: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      next: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      slot: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      bounds: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      bodyOrder: new Int32Array(new SharedArrayBuffer(4 * 1024)),
-      bodyBounds: new Int32Array(new SharedArrayBuffer(4 * (MAX_COLORS + 2))),
-      strip: new Uint8Array(new SharedArrayBuffer(1024)),
-      bin: new Uint16Array(new SharedArrayBuffer(2 * 1024)),
-      hist: new Int32Array(new SharedArrayBuffer(4 * BINS)),
-      binStrip: new Uint8Array(new SharedArrayBuffer(BINS)),
+      offsets: new Int32Array(buffer(4 * (MAX_COLORS + 1) * 16)),
+      counts: new Int32Array(buffer(4 * (MAX_COLORS + 2))),
+      start: new Int32Array(buffer(4 * (MAX_COLORS + 2))),
+      next: new Int32Array(buffer(4 * (MAX_COLORS + 2))),
+      slot: new Int32Array(buffer(4 * 1024)),
+      bounds: new Int32Array(buffer(4 * 1024)),
+      bodyOrder: new Int32Array(buffer(4 * 1024)),
+      bodyBounds: new Int32Array(buffer(4 * (MAX_COLORS + 2))),
+      strip: new Uint8Array(buffer(1024)),
+      bin: new Uint16Array(buffer(2 * 1024)),
+      hist: new Int32Array(buffer(4 * BINS)),
+      binStrip: new Uint8Array(buffer(BINS)),
       pending: false,
       cut: 0,
       planArrays: [],
@@ -182,42 +202,49 @@ function scratch(cs: CollisionState, rows: number, bodies: number): ColorScratch
     };
     scratchOf.set(cs, s);
   }
-  if (s.pack.length < rows * PACK_STRIDE) s.pack = sharedLike(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
-  if (s.pair.length < 2 * rows) s.pair = sharedLike(s.pair, Math.max(2 * rows, 2 * s.pair.length));
-  if (s.tot.length < rows) s.tot = sharedLike(s.tot, Math.max(rows, 2 * s.tot.length));
-  if (s.row.length < rows) s.row = sharedLike(s.row, Math.max(rows, 2 * s.row.length));
-  if (s.color.length < rows) s.color = sharedLike(s.color, Math.max(rows, 2 * s.color.length));
-  if (s.slot.length < rows) s.slot = sharedLike(s.slot, Math.max(rows, 2 * s.slot.length));
+  if (s.pack.length < rows * PACK_STRIDE) s.pack = grown(s.pack, Math.max(rows * PACK_STRIDE, 2 * s.pack.length));
+  if (s.pair.length < 2 * rows) s.pair = grown(s.pair, Math.max(2 * rows, 2 * s.pair.length));
+  if (s.tot.length < rows) s.tot = grown(s.tot, Math.max(rows, 2 * s.tot.length));
+  if (s.row.length < rows) s.row = grown(s.row, Math.max(rows, 2 * s.row.length));
+  if (s.color.length < rows) s.color = grown(s.color, Math.max(rows, 2 * s.color.length));
+  if (s.slot.length < rows) s.slot = grown(s.slot, Math.max(rows, 2 * s.slot.length));
   const blocks = Math.ceil(rows / BLOCK_ROWS) + MAX_COLORS + 2;
-  if (s.bounds.length < blocks) s.bounds = sharedLike(s.bounds, Math.max(blocks, 2 * s.bounds.length));
-  if (s.dyn.length < bodies) s.dyn = sharedLike(s.dyn, Math.max(bodies, 2 * s.dyn.length));
-  if (s.bodyOrder.length < bodies) s.bodyOrder = sharedLike(s.bodyOrder, Math.max(bodies, 2 * s.bodyOrder.length));
+  if (s.bounds.length < blocks) s.bounds = grown(s.bounds, Math.max(blocks, 2 * s.bounds.length));
+  if (s.dyn.length < bodies) s.dyn = grown(s.dyn, Math.max(bodies, 2 * s.dyn.length));
+  if (s.bodyOrder.length < bodies) s.bodyOrder = grown(s.bodyOrder, Math.max(bodies, 2 * s.bodyOrder.length));
   if (s.mask.length < bodies) s.mask = new Uint32Array(Math.max(bodies, 2 * s.mask.length));
-  if (s.strip.length < bodies) s.strip = sharedLike(s.strip, Math.max(bodies, 2 * s.strip.length));
-  if (s.bin.length < bodies) s.bin = sharedLike(s.bin, Math.max(bodies, 2 * s.bin.length));
+  if (s.strip.length < bodies) s.strip = grown(s.strip, Math.max(bodies, 2 * s.strip.length));
+  if (s.bin.length < bodies) s.bin = grown(s.bin, Math.max(bodies, 2 * s.bin.length));
   return s;
 }
 
 /**
- * Whether the step's 2D ball contacts go through the coloured solve (see the file's header): a pool,
- * no joints or manifolds (`others` true when there are), shared solver state, enough rows.
+ * Whether the step's 2D ball contacts go through the coloured solve (see the file's header): a 2D
+ * world, no joints or manifolds (`others` true when there are), enough rows. The same answer for
+ * every thread count (a world without a pool runs the kernel inline), so worlds on 1, 2 or n threads
+ * take the same path each step and end in the same state.
  * @category Collision
  */
 export function useColoredSolve(world: PhysicsWorld, buf: ContactBuffer, others: boolean): boolean {
   // A plan left by a step that stopped before its restitution stage is not this step's.
   const old = scratchOf.get(world.collision);
   if (old !== undefined) old.pending = false;
-  return coloredPool(world, buf, others) !== null;
+  return colored(world, buf, others);
 }
 
-/** The world's pool if its step's 2D ball contacts go through the coloured solve (useColoredSolve), else null. */
-function coloredPool(world: PhysicsWorld, buf: ContactBuffer, others: boolean): ThreadPool | null {
-  const pool = world.threadPool;
-  if (pool === null || others || world.dimensions !== 2 || pool.threads > 16) return null;
-  const cs = world.collision;
-  // The same threshold for every thread count, so worlds with 2, 3 or n threads take the same path
-  // each step and end in the same state.
-  if (!(buf.count >= cs.settings.coloredSolveMinRows)) return null;
+/** Whether the step's 2D ball contacts go through the coloured solve (useColoredSolve). */
+function colored(world: PhysicsWorld, buf: ContactBuffer, others: boolean): boolean {
+  return !others && world.dimensions === 2 && buf.count >= world.collision.settings.coloredSolveMinRows;
+}
+
+/**
+ * The world's pool if the coloured solve's kernels may run on its workers (at most 16 threads, the
+ * solver state on shared memory), else null (they run inline on the calling thread).
+ */
+function coloredPool(world: PhysicsWorld): ThreadPool | null {
+  const pool = world.threadPool,
+    cs = world.collision;
+  if (pool === null || pool.threads > 16) return null;
   return isShared(cs.bodyState) && isShared(cs.bodyExtra) ? pool : null;
 }
 
@@ -416,7 +443,7 @@ export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: 
     old.cut = 0;
     old.plan[11] = 0;
   }
-  const pool = coloredPool(world, buf, others);
+  const pool = colored(world, buf, others) ? coloredPool(world) : null;
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
   // The body types go to shared memory here if no threaded stage has moved them yet (the same values).
   cs.bodyType = sharedCopy(cs.bodyType);
@@ -495,6 +522,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
 let mainMayWait: boolean | null = null;
 function mayWait(): boolean {
   if (mainMayWait === null) {
+    if (!sharedMemoryAvailable()) return false; // no workers to wait for
     try {
       Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
       mainMayWait = true;
@@ -507,7 +535,8 @@ function mayWait(): boolean {
 
 /**
  * Runs the step's substeps for the 2D ball contacts of `buf` by colours on the world's threads (or on
- * one thread when the adaptive pool prefers it; the same results either way), then writes the impulses
+ * the calling thread alone without a pool, or when the adaptive pool prefers it: the same results
+ * either way), then writes the impulses
  * back to `buf` (normal, tangent, largest pass impulse, delivered total), as the one-thread loop of
  * solver/contact-solver.ts leaves them. `soft`: dynamic bias rate, mass scale, impulse scale, then the rigid ones.
  * @throws Error naming contactSolverSystem if a worker thread failed.
@@ -515,14 +544,17 @@ function mayWait(): boolean {
  */
 export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs: number, soft: readonly number[], push: number): void {
   const cs = world.collision,
-    pool = world.threadPool!;
+    pool = coloredPool(world);
   const st = cs.settings;
   const s = scratch(cs, buf.count, cs.solverBodyCount);
-  shareContactBuffer(buf);
-  pool.join(); // the strip plan startStripPlan left on a worker
+  if (pool !== null) {
+    shareContactBuffer(buf);
+    pool.join(); // the strip plan startStripPlan left on a worker
+  }
   const plan = s.plan;
   const packed = plan[11] === 1;
-  const np = packed ? plan[8]! : planRows(cs, buf, s, pool.threads);
+  const parts = pool === null ? 1 : pool.threads;
+  const np = packed ? plan[8]! : planRows(cs, buf, s, parts);
   // Planned from the masses and impulses before the impact stage took its resolved rows out: they stay
   // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
   releaseImpactedRows(buf);
@@ -540,7 +572,7 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   plan[2] = st.relaxIterations;
   plan[5] = cs.solverBodyCount;
   plan[6] = mayWait() ? 1 : 0;
-  plan[7] = packed ? 0 : pool.threads;
+  plan[7] = packed ? 0 : parts;
   P[0] = 1 / hs;
   for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
   P[7] = push;
@@ -559,10 +591,10 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   P[20] = BodyType.Dynamic;
   P[21] = 1;
   const blocks = solveColoredBlocks2D(plan, buf.count, true);
-  if (s.claim.length < blocks) s.claim = sharedLike(s.claim, Math.max(blocks, 2 * s.claim.length));
+  if (s.claim.length < blocks) s.claim = grown(s.claim, Math.max(blocks, 2 * s.claim.length));
   A[29] = s.claim;
   const site = 'contactSolverSystem#colors';
-  const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
+  const parallel = pool?.usable() === true && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
   s.bar[0] = 0;
   s.bar[1] = 0;
@@ -575,7 +607,7 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
     plan[3] = 1;
     solveColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
-  if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, np);
+  if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, np);
   s.pending = true;
 }
 

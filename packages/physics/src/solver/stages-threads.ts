@@ -13,12 +13,12 @@
  *
  * The first three do each body's or row's arithmetic of the one-thread loop unchanged (kernels in
  * solver/stages-kernel.ts), so the state after a step is the same to the bit as with `threads: 1`. The
- * restitution stage runs on the threads only in a step whose substeps ran by colours: its passes then
- * visit the rows colour by colour (rows of one colour share no movable body, so a colour is split over
- * the threads without changing any result) instead of in buffer order, like the coloured substeps.
- * Such a step is deterministic and the same on 2, 3 or n threads and on an adaptive pool that runs the
- * stage on one thread, but not the one-thread world's trajectory (solver/coloring.ts says when a step
- * takes that path; `settings.coloredSolveMinRows = Infinity` keeps the one-thread order).
+ * restitution stage takes its coloured path in every step whose substeps ran by colours (on the
+ * threads, or inline on one thread without a pool or when the adaptive pool prefers it): its passes
+ * then visit the rows colour by colour (rows of one colour share no movable body, so a colour is
+ * split over the threads without changing any result) instead of in buffer order, like the coloured
+ * substeps. Such a step gives the same bits on 1, 2 or n threads (solver/coloring.ts says when a step
+ * takes that path).
  *
  * Each goes to the threads only in a 2D world with a thread pool, with at least
  * `stageThreading.minPerThread` bodies or rows a thread, every array it touches on shared memory (the
@@ -33,10 +33,10 @@ import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
-import { isShared, sharedCopy, sharedFloat64, sharedLike, type ThreadPool } from '../threads/pool.js';
+import { isShared, sharedCopy, sharedFloat64, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { approachArguments, callerMayWait, coloredPlan, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
+import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { IMPACT_STRIDE } from './impacts.js';
 import { restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 
@@ -314,9 +314,9 @@ export function containedOnThreads(world: PhysicsWorld): boolean {
 
 /**
  * The restitution stage of a 2D world whose substeps of this step ran by colours (solver/coloring.ts),
- * its passes colour by colour on the world's threads (or on one thread when the adaptive pool prefers
- * it: the same results either way); see the file's header for the order. False when the step's
- * substeps did not run by colours (the caller's one-thread stage then runs).
+ * its passes colour by colour on the world's threads (or inline on the calling thread without a pool,
+ * or when the adaptive pool prefers it: the same results either way); see the file's header for the
+ * order. False when the step's substeps did not run by colours (the caller's one-thread stage then runs).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
@@ -324,14 +324,14 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const cs = world.collision,
     pool = world.threadPool;
   const colored = coloredPlan(cs);
-  if (pool === null || colored === null || world.dimensions !== 2) return false;
-  shareContactBuffer(buf);
+  if (colored === null || world.dimensions !== 2) return false;
+  if (pool !== null) shareContactBuffer(buf);
   const st = cs.settings;
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
   const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
-  if (colored.claim.length < blocks) colored.claim = sharedLike(colored.claim, Math.max(blocks, 2 * colored.claim.length));
+  if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
   A.push(
     colored.pack,
@@ -363,7 +363,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
-  const parallel = pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
+  const parallel = pool !== null && pool.threads <= 16 && pool.usable() && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
   bar[0] = 0;
   bar[1] = 0;
@@ -377,7 +377,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
     plan[3] = 1;
     restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
-  if (pool.adaptive) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);
+  if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);
   stageThreading.runs++;
   stageThreading.bouncing += bar[3]!;
   return true;
