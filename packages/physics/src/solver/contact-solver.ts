@@ -43,14 +43,7 @@ import {
   warmStartJoints3D,
   warmStartManifolds3D,
 } from './rows-3d.js';
-import {
-  approachOnThreads,
-  containedOnThreads,
-  finishOnThreads,
-  gatherFillOnThreads,
-  restitutionOnThreads,
-  storeWarmStartOnThreads,
-} from './stages-threads.js';
+import { approach2DStage, finish2DStage, gatherFill2DStage, restitutionOnThreads, storeWarmStartOnThreads } from './stages-threads.js';
 import { downward3Into, downwardInto, heavierAbove, holdsLower, markFirstRelaxRows, SUPPORT_COS } from './support.js';
 
 /**
@@ -341,13 +334,16 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const fx = c.Force.x,
     fy = c.Force.y,
     fz = c.Force.z;
-  const is2D = S === 8;
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
-  if (is2D && gatherFillOnThreads(world, count, pushed)) return; // the same fill on the threads (solver/stages-threads.ts)
+  // 2D: the fill is a range kernel, run on the threads or inline (solver/stages-threads.ts).
+  if (S === 8) {
+    gatherFill2DStage(world, count, pushed);
+    return;
+  }
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
-    const o = k * S,
+    const o = k * 12,
       q = k * 6;
     const ii = invInertia[e]!;
     const dynamic = type[e] === BodyType.Dynamic;
@@ -363,38 +359,23 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const held = forced ? 1 : pushed;
     ex[q] = px[e]! - vx[e]! * h + gx * gb;
     ex[q + 1] = py[e]! - vy[e]! * h + gy * gb;
+    ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
+    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0;
+    ex[q + 4] = ii > 0 ? -wy[e]! * h : 0;
     ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
-    if (is2D) {
-      // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D: their stores are not read either.
-      ex[q + 2] = 0;
-      ex[q + 3] = 0;
-      ex[q + 4] = 0;
-      sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
-      sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
-      sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
-      sb[o + 3] = 0;
-      sb[o + 4] = 0;
-      sb[o + 5] = invMass[e]!;
-      sb[o + 6] = ii;
-      sb[o + 7] = held;
-    } else {
-      ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
-      ex[q + 3] = ii > 0 ? -wx[e]! * h : 0;
-      ex[q + 4] = ii > 0 ? -wy[e]! * h : 0;
-      sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
-      sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
-      sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
-      sb[o + 3] = ii > 0 || spins ? wx[e]! : 0;
-      sb[o + 4] = ii > 0 || spins ? wy[e]! : 0;
-      sb[o + 5] = ii > 0 || spins ? wz[e]! : 0;
-      sb[o + 6] = 0;
-      sb[o + 7] = 0;
-      sb[o + 8] = 0;
-      sb[o + 9] = invMass[e]!;
-      sb[o + 10] = ii;
-      sb[o + 11] = held;
-    }
+    sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
+    sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
+    sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
+    sb[o + 3] = ii > 0 || spins ? wx[e]! : 0;
+    sb[o + 4] = ii > 0 || spins ? wy[e]! : 0;
+    sb[o + 5] = ii > 0 || spins ? wz[e]! : 0;
+    sb[o + 6] = 0;
+    sb[o + 7] = 0;
+    sb[o + 8] = 0;
+    sb[o + 9] = invMass[e]!;
+    sb[o + 10] = ii;
+    sb[o + 11] = held;
   }
 }
 
@@ -454,7 +435,11 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
  * the solve.
  */
 function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
-  if (finishOnThreads(world, buf)) return; // the same bodies and rows on the threads (solver/stages-threads.ts)
+  // 2D: a range kernel with the boundary box, run on the threads or inline (solver/stages-threads.ts).
+  if (world.dimensions === 2) {
+    finish2DStage(world, buf);
+    return;
+  }
   const cs = world.collision;
   const c = world.components;
   const list = cs.solverBodies,
@@ -472,10 +457,7 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const wx = c.AngularVelocity.x,
     wy = c.AngularVelocity.y,
     wz = c.AngularVelocity.z;
-  const angle = c.Angle.value;
   const q = c.Orientation;
-  const is2D = world.dimensions === 2;
-  const S = stride(world);
   const g = world.gravity,
     fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps;
   const fx = g[0]! * fh,
@@ -485,38 +467,24 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
-    const o = k * S,
+    const o = k * 12,
       r = k * 6;
-    const free = sb[o + S - 1] === 0 ? 1 : 0;
-    if (is2D) {
-      vx[e] = sb[o]!;
-      vy[e] = sb[o + 1]!;
-      const x = ex[r]! + sb[o + 3]! + imp[k * IMPACT_STRIDE]! + free * fx,
-        y = ex[r + 1]! + sb[o + 4]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
-      px[e] = x;
-      py[e] = y;
-      check += x + y + sb[o]! + sb[o + 1]!;
-      if (sb[o + 6]! > 0) {
-        wz[e] = sb[o + 2]!;
-        angle[e] = angle[e]! + ex[r + 5]!;
-      }
-    } else {
-      vx[e] = sb[o]!;
-      vy[e] = sb[o + 1]!;
-      vz[e] = sb[o + 2]!;
-      const x = ex[r]! + sb[o + 6]! + imp[k * IMPACT_STRIDE]! + free * fx,
-        y = ex[r + 1]! + sb[o + 7]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
-      const z = ex[r + 2]! + sb[o + 8]! + imp[k * IMPACT_STRIDE + 2]! + free * fz;
-      px[e] = x;
-      py[e] = y;
-      pz[e] = z;
-      check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
-      if (sb[o + 10]! > 0) {
-        wx[e] = sb[o + 3]!;
-        wy[e] = sb[o + 4]!;
-        wz[e] = sb[o + 5]!;
-        rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + 3]!, ex[r + 4]!, ex[r + 5]!);
-      }
+    const free = sb[o + 11] === 0 ? 1 : 0;
+    vx[e] = sb[o]!;
+    vy[e] = sb[o + 1]!;
+    vz[e] = sb[o + 2]!;
+    const x = ex[r]! + sb[o + 6]! + imp[k * IMPACT_STRIDE]! + free * fx,
+      y = ex[r + 1]! + sb[o + 7]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
+    const z = ex[r + 2]! + sb[o + 8]! + imp[k * IMPACT_STRIDE + 2]! + free * fz;
+    px[e] = x;
+    py[e] = y;
+    pz[e] = z;
+    check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
+    if (sb[o + 10]! > 0) {
+      wx[e] = sb[o + 3]!;
+      wy[e] = sb[o + 4]!;
+      wz[e] = sb[o + 5]!;
+      rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + 3]!, ex[r + 4]!, ex[r + 5]!);
     }
   }
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
@@ -527,13 +495,11 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     NX = buf.nx,
     NY = buf.ny,
     NZ = buf.nz;
-  const dOff = is2D ? 3 : 6;
   // The start separations already hold the impact corrections (solver/impacts.ts).
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * S + dOff,
-      b = IB[i]! * S + dOff;
-    let s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
-    if (!is2D) s += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
+    const a = IA[i]! * 12 + 6,
+      b = IB[i]! * 12 + 6;
+    const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]! + (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   cs.stats.maxOverlap = -deepest;
@@ -543,7 +509,8 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
 function containInBoundary(world: PhysicsWorld): void {
   const cs = world.collision;
   const box = cs.boundary;
-  if (!box.enabled || containedOnThreads(world)) return; // done with finishBodies on the threads (solver/stages-threads.ts)
+  // 2D: done with finishBodies (finish2DStage, solver/stages-threads.ts).
+  if (!box.enabled || world.dimensions === 2) return;
   const c = world.components;
   const P = c.Position,
     V = c.Velocity,
@@ -554,10 +521,6 @@ function containInBoundary(world: PhysicsWorld): void {
     type = cs.bodyType;
   const dims = world.dimensions;
   const g = world.gravity;
-  if (dims === 2) {
-    containInBox2D(world);
-    return;
-  }
   const pos = [P.x, P.y, P.z],
     vel = [V.x, V.y, V.z];
   for (let k = 1; k < count; k++) {
@@ -589,70 +552,6 @@ function containInBoundary(world: PhysicsWorld): void {
       for (let d = 0; d < dims; d++) v2 += vel[d]![e]! * vel[d]![e]!;
       const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
       for (let d = 0; d < dims; d++) vel[d]![e] = vel[d]![e]! * f;
-    }
-  }
-}
-
-/**
- * containInBoundary of a 2D world: the same arithmetic in the same order (x then y, then the kinetic
- * energy that pays for the potential energy gained), without the per-dimension arrays.
- */
-function containInBox2D(world: PhysicsWorld): void {
-  const cs = world.collision;
-  const box = cs.boundary;
-  const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    vx = c.Velocity.x,
-    vy = c.Velocity.y;
-  const radius = c.Ball.radius,
-    eM = c.Material.restitution;
-  const list = cs.solverBodies,
-    count = cs.solverBodyCount,
-    type = cs.bodyType;
-  const gx = world.gravity[0]!,
-    gy = world.gravity[1]!;
-  const x0 = box.min[0]!,
-    x1 = box.max[0]!,
-    y0 = box.min[1]!,
-    y1 = box.max[1]!,
-    eBox = box.restitution;
-  for (let k = 1; k < count; k++) {
-    const e = list[k]!;
-    if (type[e] !== BodyType.Dynamic) continue;
-    const r = radius[e]!;
-    const xlo = x0 + r,
-      xhi = x1 - r,
-      ylo = y0 + r,
-      yhi = y1 - r;
-    const x = px[e]!,
-      y = py[e]!;
-    // Most bodies are inside: nothing to do.
-    if (x >= xlo && x <= xhi && y >= ylo && y <= yhi) continue;
-    let gain = 0;
-    if (x < xlo && xlo <= xhi) {
-      px[e] = xlo;
-      gain -= gx * (xlo - x);
-      if (vx[e]! < 0) vx[e] = -Math.max(eBox, eM[e]!) * vx[e]!;
-    } else if (x > xhi && xlo <= xhi) {
-      px[e] = xhi;
-      gain -= gx * (xhi - x);
-      if (vx[e]! > 0) vx[e] = -Math.max(eBox, eM[e]!) * vx[e]!;
-    }
-    if (y < ylo && ylo <= yhi) {
-      py[e] = ylo;
-      gain -= gy * (ylo - y);
-      if (vy[e]! < 0) vy[e] = -Math.max(eBox, eM[e]!) * vy[e]!;
-    } else if (y > yhi && ylo <= yhi) {
-      py[e] = yhi;
-      gain -= gy * (yhi - y);
-      if (vy[e]! > 0) vy[e] = -Math.max(eBox, eM[e]!) * vy[e]!;
-    }
-    if (gain > 0) {
-      const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]!;
-      const f = v2 > 2 * gain ? Math.sqrt(1 - (2 * gain) / v2) : 0;
-      vx[e] = vx[e]! * f;
-      vy[e] = vy[e]! * f;
     }
   }
 }
@@ -938,12 +837,14 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
  * recorded at its time of impact (restitution leaves separating rows alone).
  */
 function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
-  if (approachOnThreads(world, buf)) return; // the same rows on the threads (solver/stages-threads.ts)
+  // 2D: a range kernel, run on the threads or inline (solver/stages-threads.ts).
+  if (world.dimensions === 2) {
+    approach2DStage(world, buf);
+    return;
+  }
   const cs = world.collision;
   const sb = cs.bodyState,
     type = cs.bodyType;
-  const is2D = world.dimensions === 2;
-  const S = stride(world);
   const g = world.gravity;
   const gx = g[0]!,
     gy = g[1]!,
@@ -960,13 +861,12 @@ function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
     S0 = buf.separation,
     IMP = buf.impulse;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const oa = IA[i]! * S,
-      ob = IB[i]! * S;
+    const oa = IA[i]! * 12,
+      ob = IB[i]! * 12;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    let rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-    if (!is2D) rv += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    const rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (sb[ob + 2]! - sb[oa + 2]!) * nz;
     RV[i] = rv;
     // A row the impact stage bounced and that now separates keeps the approach speed of its impact.
     if (IMP[i]! > 0 && rv >= 0) continue;

@@ -2,13 +2,13 @@
  * The 2D contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill, measureApproach,
  * finishBodies) and its restitution stage by colours, as thread kernels (threads/kernels.ts rules:
  * self-contained functions the worker threads also run as source text). solver/stages-threads.ts
- * runs them and says when.
+ * runs them, on the threads or inline on one thread, and says when.
  *
- * The per-body and per-row kernels do each body's or row's arithmetic of solver/contact-solver.ts's one-thread loop,
- * unchanged, so their results are the same to the bit whichever thread runs a body or row. The
- * restitution kernel visits the rows colour by colour (the coloured solve's colours,
- * solver/coloring.ts), not in buffer order: deterministic, the same on any number of threads, but not
- * the one-thread world's order (see solver/stages-threads.ts).
+ * The per-body and per-row kernels do each body's or row's arithmetic on its own (these are the 2D
+ * stages' only code: solver/contact-solver.ts keeps the 3D loops), so their results are the same to the
+ * bit whichever thread runs a body or row. The restitution kernel visits the rows colour by colour (the
+ * coloured solve's colours, solver/coloring.ts), not in buffer order: deterministic, and the same on
+ * any number of threads (see solver/stages-threads.ts).
  */
 
 import type { claimBlock } from '../threads/block-claim.js';

@@ -1,39 +1,39 @@
 /**
- * The 2D contact solver's stages that were left on one thread beside the coloured substeps
- * (solver/coloring.ts) and the rows' preparation, on the world's threads (issue 12):
+ * The 2D contact solver's per-body and per-row stages beside the coloured substeps (solver/coloring.ts)
+ * and the rows' preparation, each one range kernel (solver/stages-kernel.ts) run on the world's threads
+ * when that pays and inline on the calling thread otherwise (one code path; issue 32):
  *
- * - `gatherFillOnThreads`: the solver rows of the step's bodies (gatherBodies' fill, solver/contact-solver.ts), a range
- *   of bodies a thread;
- * - `approachOnThreads`: measureApproach, a range of rows a thread;
- * - `finishOnThreads`: finishBodies (velocities, positions and angles back to the components; the
+ * - `gatherFill2DStage`: the solver rows of the step's bodies (gatherBodies' fill,
+ *   solver/contact-solver.ts), a range of bodies a thread;
+ * - `approach2DStage`: measureApproach, a range of rows a thread;
+ * - `finish2DStage`: finishBodies (velocities, positions and angles back to the components; the
  *   deepest overlap left) and containInBoundary, a range of bodies and of rows a thread;
  * - `restitutionOnThreads`: the restitution stage after a coloured solve, its passes colour by colour;
  * - `storeWarmStartOnThreads`: the warm-start table of the step's contacts, built on a worker while
  *   the calling thread finishes the step (the same table).
  *
- * The first three do each body's or row's arithmetic of the one-thread loop unchanged (kernels in
- * solver/stages-kernel.ts), so the state after a step is the same to the bit as with `threads: 1`. The
- * restitution stage takes its coloured path in every step whose substeps ran by colours (on the
- * threads, or inline on one thread without a pool or when the adaptive pool prefers it): its passes
- * then visit the rows colour by colour (rows of one colour share no movable body, so a colour is
- * split over the threads without changing any result) instead of in buffer order, like the coloured
- * substeps. Such a step gives the same bits on 1, 2 or n threads (solver/coloring.ts says when a step
- * takes that path).
+ * The first three do each body's or row's arithmetic on its own, so the state after a step is the same
+ * to the bit whichever thread runs a body or row. The restitution stage takes its coloured path in
+ * every step whose substeps ran by colours (on the threads, or inline on one thread without a pool or
+ * when the adaptive pool prefers it): its passes then visit the rows colour by colour (rows of one
+ * colour share no movable body, so a colour is split over the threads without changing any result)
+ * instead of in buffer order, like the coloured substeps. Such a step gives the same bits on 1, 2 or n
+ * threads (solver/coloring.ts says when a step takes that path).
  *
- * Each goes to the threads only in a 2D world with a thread pool, with at least
+ * A stage goes to the threads only in a 2D world with a thread pool, with at least
  * `stageThreading.minPerThread` bodies or rows a thread, every array it touches on shared memory (the
  * collision state's inverse masses, body types and impact corrections, and the contact buffers, are
- * moved there the first time), and when the adaptive pool finds the threads faster (threads/adaptive.ts).
- * Otherwise each returns false and solver/contact-solver.ts runs its own loop.
+ * moved there the first time), and when the adaptive pool finds the threads faster (threads/adaptive.ts);
+ * otherwise its kernel runs inline over every body or row.
  */
 
 import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from '../collision/contacts.js';
 import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
+import { KERNEL, KERNEL_HELPERS, KERNELS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
-import { isShared, sharedCopy, sharedFloat64, type ThreadPool } from '../threads/pool.js';
+import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
@@ -57,15 +57,14 @@ interface StageScratch {
   arrays: KernelArray[];
   params: Float64Array;
   deepest: Float64Array;
-  /** Whether the last finishOnThreads kept the bodies in the boundary box (containedOnThreads). */
-  contained: boolean;
 }
 const scratchOf = new WeakMap<PhysicsWorld, StageScratch>();
 
 function scratch(world: PhysicsWorld): StageScratch {
   let s = scratchOf.get(world);
   if (s === undefined) {
-    s = { arrays: [], params: new Float64Array(16), deepest: sharedFloat64(MAX_POOL_PARTS), contained: false };
+    const deepest = sharedMemoryAvailable() ? sharedFloat64(MAX_POOL_PARTS) : new Float64Array(MAX_POOL_PARTS);
+    s = { arrays: [], params: new Float64Array(16), deepest };
     scratchOf.set(world, s);
   }
   return s;
@@ -101,18 +100,30 @@ function allShared(arrays: readonly KernelArray[]): boolean {
 }
 
 /**
- * gatherBodies' fill of the 2D solver rows of solver bodies 1 .. count - 1 on the world's threads (the
- * same bits as the one-thread loop); `pushed` 1 when joints are in the step (every body counts as
- * pushed). False when the stage stays on one thread (the caller's loop then runs).
+ * Runs kernel `kernel` over `n` elements on `pool`'s threads when the pool takes it (runOnPool: enough
+ * elements a thread, every array shared, the adaptive choice), else inline on the calling thread over
+ * all of them (range 0 .. n, part 0): the same kernel either way. Returns its result.
+ */
+function runStage(pool: ThreadPool | null, kernel: number, A: KernelArray[], P: Float64Array, n: number, ids: Int32Array | null): number {
+  if (pool !== null && allShared(A)) {
+    const result = runOnPool(pool, 'contactSolverSystem', kernel, A, P, n, ids, stageThreading.minPerThread);
+    if (ran(result)) return result;
+  }
+  return KERNELS[kernel]!(A, P, ids, 0, n, 0, KERNEL_HELPERS);
+}
+
+/**
+ * gatherBodies' fill of the 2D solver rows of solver bodies 1 .. count - 1 (solver/contact-solver.ts;
+ * kernel gatherFill2D), on the world's threads when it pays, else on the calling thread; `pushed` 1
+ * when joints are in the step (every body counts as pushed).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: number): boolean {
+export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: number): void {
   const pool = poolFor(world, count - 1);
-  if (pool === null) return false;
   const cs = world.collision,
     c = world.components;
-  shareState(cs);
+  if (pool !== null) shareState(cs);
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
@@ -136,7 +147,6 @@ export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: 
     cs.bodyState,
     cs.bodyExtra,
   );
-  if (!allShared(A)) return false;
   const h = world.h,
     g = world.gravity;
   P[0] = h;
@@ -146,33 +156,23 @@ export function gatherFillOnThreads(world: PhysicsWorld, count: number, pushed: 
   P[4] = pushed;
   P[5] = BodyType.Dynamic;
   P[6] = BodyType.Kinematic;
-  return ran(
-    runOnPool(
-      pool,
-      'contactSolverSystem',
-      KERNEL.gatherFill2D,
-      A,
-      P,
-      count - 1,
-      cs.solverBodies.subarray(1, count),
-      stageThreading.minPerThread,
-    ),
-  );
+  runStage(pool, KERNEL.gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
 /**
- * measureApproach of a 2D world's contact rows on its threads (the same bits as the one-thread loop).
- * False when the stage stays on one thread.
+ * measureApproach of a 2D world's contact rows (solver/contact-solver.ts; kernel approach2D), on the
+ * world's threads when it pays, else on the calling thread.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const n = buf.count;
   const pool = poolFor(world, n);
-  if (pool === null) return false;
   const cs = world.collision;
-  shareContactBuffer(buf);
-  shareState(cs);
+  if (pool !== null) {
+    shareContactBuffer(buf);
+    shareState(cs);
+  }
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
@@ -184,7 +184,7 @@ export function approachOnThreads(world: PhysicsWorld, buf: ContactBuffer): bool
   P[2] = g[2]!;
   P[3] = BodyType.Dynamic;
   P[4] = 0;
-  return ran(runOnPool(pool, 'contactSolverSystem', KERNEL.approach2D, A, P, n, null, stageThreading.minPerThread));
+  runStage(pool, KERNEL.approach2D, A, P, n, null);
 }
 
 /**
@@ -217,24 +217,25 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
 }
 
 /**
- * finishBodies of a 2D world on its threads, with containInBoundary when the boundary box is on: the
- * solver bodies' velocities, positions and angles back to the components and the bodies put back in
- * the box, a range of bodies a thread, and the deepest overlap left into `cs.stats.maxOverlap`, a range
- * of rows a thread (the same bits as the one-thread loops). False when the stage stays on one thread.
- * When it returns true, the next `containedOnThreads` call returns whether the box was done here.
- * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite, as the
- *   one-thread loop (the bodies are then already put back in the box, unlike with one thread).
+ * finishBodies of a 2D world (solver/contact-solver.ts; kernel finishBodies2D) with containInBoundary
+ * when the boundary box is on: the solver bodies' velocities, positions and angles back to the
+ * components and the bodies put back in the box, a range of bodies a thread, and the deepest overlap
+ * left into `cs.stats.maxOverlap`, a range of rows a thread; on the world's threads when it pays, else
+ * on the calling thread.
+ * @throws NonFiniteStateError (stage 'collide') if a written position or velocity is not finite (the
+ *   bodies are then already put back in the box).
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
-export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolean {
+export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision,
     count = cs.solverBodyCount;
   const pool = poolFor(world, count - 1);
-  if (pool === null) return false;
   const c = world.components;
-  shareState(cs);
-  shareContactBuffer(buf);
+  if (pool !== null) {
+    shareState(cs);
+    shareContactBuffer(buf);
+  }
   const s = scratch(world),
     A = s.arrays,
     P = s.params,
@@ -261,7 +262,6 @@ export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolea
     buf.nx,
     buf.ny,
   );
-  if (!allShared(A)) return false;
   const list = cs.solverBodies,
     box = cs.boundary;
   const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
@@ -280,36 +280,12 @@ export function finishOnThreads(world: PhysicsWorld, buf: ContactBuffer): boolea
   P[11] = g[1]!;
   P[12] = buf.count;
   P[13] = count - 1;
-  const check = runOnPool(
-    pool,
-    'contactSolverSystem',
-    KERNEL.finishBodies2D,
-    A,
-    P,
-    count - 1,
-    list.subarray(1, count),
-    stageThreading.minPerThread,
-  );
-  if (!ran(check)) return false;
-  s.contained = box.enabled;
+  const check = runStage(pool, KERNEL.finishBodies2D, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
   let deepest = 0;
   for (let k = 0; k < out.length; k++) if (out[k]! < deepest) deepest = out[k]!;
   cs.stats.maxOverlap = -deepest;
-  return true;
-}
-
-/**
- * Whether this step's finishOnThreads also kept the bodies in the boundary box (containInBoundary then
- * has nothing left to do); clears the answer, so it is true once a step at most.
- * @category Collision
- */
-export function containedOnThreads(world: PhysicsWorld): boolean {
-  const s = scratchOf.get(world);
-  if (s === undefined || !s.contained) return false;
-  s.contained = false;
-  return true;
 }
 
 /**
