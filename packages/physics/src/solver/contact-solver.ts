@@ -28,6 +28,7 @@ import {
   solveManifolds,
   warmStartManifolds,
 } from './manifold-rows-2d.js';
+import { prepareContacts2D } from './prepare-contacts-kernel.js';
 import {
   applyManifold3DRestitution,
   finishJoints3D,
@@ -562,37 +563,44 @@ function containInBoundary(world: PhysicsWorld): void {
  */
 export const PREPARE_MIN_PER_THREAD = 4096;
 
-/** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepareOnThreads). */
+/** Per world: the shared copy of the spawn stamps, the kernel's arrays and parameters (prepare2DStage). */
 const prepareScratch = new WeakMap<PhysicsWorld, { stamp: Uint32Array; arrays: KernelArray[]; params: Float64Array }>();
 
 /**
- * prepareContacts of a 2D world on its threads (kernel prepareContacts2D: each row on its own, the
- * same arithmetic, so the rows are identical to the bit); false when the world has no threads, too few
- * rows, or the pool declines (the caller's loop then runs).
+ * prepareContacts of a 2D world (kernel prepareContacts2D: each row on its own), on its threads when it
+ * has them and has at least PREPARE_MIN_PER_THREAD rows a thread (and the pool takes it), else inline
+ * over every row: one code path, the same rows to the bit either way.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  */
-function prepareOnThreads(world: PhysicsWorld, buf: ContactBuffer, stick: number): boolean {
-  const pool = world.threadPool;
+function prepare2DStage(world: PhysicsWorld, buf: ContactBuffer, stick: number): void {
+  let pool = world.threadPool;
   const n = buf.count;
-  if (pool === null || world.dimensions !== 2 || n < PREPARE_MIN_PER_THREAD * pool.threads) return false;
   const cs = world.collision,
     c = world.components,
     cache = cs.cache;
   const M = c.Material;
-  if (!isShared(M.restitution) || !isShared(M.friction) || !isShared(M.staticFriction) || !isShared(cs.bodyState)) return false;
-  shareContactBuffer(buf);
-  shareContactBuffer(cache.rows);
-  if (!isShared(cache.slots)) {
-    const s = sharedLike(cache.slots, cache.slots.length);
-    s.set(cache.slots);
-    cache.slots = s;
-  }
+  if (pool !== null && n < PREPARE_MIN_PER_THREAD * pool.threads) pool = null;
+  if (pool !== null && (!isShared(M.restitution) || !isShared(M.friction) || !isShared(M.staticFriction) || !isShared(cs.bodyState)))
+    pool = null;
   let S = prepareScratch.get(world);
-  if (S === undefined || S.stamp.length < world.spawnStamp.length) {
-    S = { stamp: sharedLike(world.spawnStamp, world.spawnStamp.length), arrays: [], params: new Float64Array(8) };
+  if (S === undefined) {
+    S = { stamp: new Uint32Array(0), arrays: [], params: new Float64Array(8) };
     prepareScratch.set(world, S);
   }
-  S.stamp.set(world.spawnStamp);
+  let stamp = world.spawnStamp;
+  if (pool !== null) {
+    shareContactBuffer(buf);
+    shareContactBuffer(cache.rows);
+    if (!isShared(cache.slots)) {
+      const slots = sharedLike(cache.slots, cache.slots.length);
+      slots.set(cache.slots);
+      cache.slots = slots;
+    }
+    // The workers read a shared copy of the spawn stamps.
+    if (S.stamp.length < stamp.length) S.stamp = sharedLike(stamp, stamp.length);
+    S.stamp.set(stamp);
+    stamp = S.stamp;
+  }
   const prev = cache.rows,
     box = cs.boundary;
   const A = S.arrays;
@@ -612,7 +620,7 @@ function prepareOnThreads(world: PhysicsWorld, buf: ContactBuffer, stick: number
     M.restitution,
     M.friction,
     M.staticFriction,
-    S.stamp,
+    stamp,
     buf.normalMass,
     buf.tangentMass,
     buf.rigidPartner,
@@ -651,18 +659,26 @@ function prepareOnThreads(world: PhysicsWorld, buf: ContactBuffer, stick: number
   P[5] = cache.size;
   P[6] = ContactKind.Ball;
   P[7] = ContactKind.Boundary;
-  return runOnPool(pool, 'contactSolverSystem', KERNEL.prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null;
+  if (pool !== null && runOnPool(pool, 'contactSolverSystem', KERNEL.prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null)
+    return;
+  prepareContacts2D(A, P, null, 0, n);
 }
 
+/**
+ * Prepares the step's ball contact rows: effective masses, tangent basis, combined material, stick or
+ * slip, the predicted approach, and last step's impulses of the same pair (warm start). 2D: a range
+ * kernel (prepare2DStage); the loop here is 3D.
+ */
 function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number): void {
   // The warm-start table may still be building on a worker (storeWarmStartOnThreads).
   world.threadPool?.join();
-  if (prepareOnThreads(world, buf, stick)) return;
+  if (world.dimensions === 2) {
+    prepare2DStage(world, buf, stick);
+    return;
+  }
   const c = world.components;
   const cs = world.collision;
   const n = buf.count;
-  const is2D = world.dimensions === 2;
-  const S = stride(world);
   const sb = cs.bodyState;
   const eM = c.Material.restitution,
     fM = c.Material.friction,
@@ -711,23 +727,21 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
     pSB = prev.stampB;
   const prevCount = cache.size === 0 ? 0 : prev.count;
   let next = 0;
-  const im = is2D ? 5 : 9,
-    iI = is2D ? 6 : 10;
 
   for (let i = 0; i < n; i++) {
     const a = A[i]!,
       b = B[i]!,
       kind = K[i]!,
       f = F[i]!;
-    const oa = IA[i]! * S,
-      ob = IB[i]! * S;
+    const oa = IA[i]! * 12,
+      ob = IB[i]! * 12;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const imA = sb[oa + im]!,
-      imB = sb[ob + im]!;
-    const iiA = sb[oa + iI]!,
-      iiB = sb[ob + iI]!;
+    const imA = sb[oa + 9]!,
+      imB = sb[ob + 9]!;
+    const iiA = sb[oa + 10]!,
+      iiB = sb[ob + 10]!;
     const ra = RA[i]!,
       rb = RB[i]!;
     const k = imA + imB;
@@ -736,13 +750,9 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
     TM[i] = kt > 0 ? 1 / kt : 0;
     RP[i] = imA === 0 || imB === 0 ? 1 : 0;
 
-    // Tangent basis (3D: t1 stored, t2 = n x t1 recomputed where needed).
+    // Tangent basis: t1 stored, t2 = n x t1 recomputed where needed.
     let t1x: number, t1y: number, t1z: number;
-    if (is2D) {
-      t1x = -ny;
-      t1y = nx;
-      t1z = 0;
-    } else if (Math.abs(nx) < 0.57735) {
+    if (Math.abs(nx) < 0.57735) {
       const inv = 1 / Math.sqrt(ny * ny + nz * nz);
       t1x = 0;
       t1y = nz * inv;
@@ -776,31 +786,24 @@ function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: number)
     MU[i] = mu;
 
     // Tangential speed at the start of the step (gravity rewound): stick or slip.
-    let vt: number;
-    if (is2D) {
-      const dvx = sb[ob]! - sb[oa]!,
-        dvy = sb[ob + 1]! - sb[oa + 1]!;
-      vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + 2]! * rb - sb[oa + 2]! * ra);
-    } else {
-      const dvx = sb[ob]! - sb[oa]!,
-        dvy = sb[ob + 1]! - sb[oa + 1]!,
-        dvz = sb[ob + 2]! - sb[oa + 2]!;
-      // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
-      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
-        sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
-        sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
-      const cx = dvx + sy * nz - sz * ny,
-        cy = dvy + sz * nx - sx * nz,
-        cz = dvz + sx * ny - sy * nx;
-      const t2x = ny * t1z - nz * t1y,
-        t2y = nz * t1x - nx * t1z,
-        t2z = nx * t1y - ny * t1x;
-      const u1 = cx * t1x + cy * t1y + cz * t1z,
-        u2 = cx * t2x + cy * t2y + cz * t2z;
-      vt = Math.sqrt(u1 * u1 + u2 * u2);
-    }
+    const dvx = sb[ob]! - sb[oa]!,
+      dvy = sb[ob + 1]! - sb[oa + 1]!,
+      dvz = sb[ob + 2]! - sb[oa + 2]!;
+    // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
+    const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
+      sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
+      sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
+    const cx = dvx + sy * nz - sz * ny,
+      cy = dvy + sz * nx - sx * nz,
+      cz = dvz + sx * ny - sy * nx;
+    const t2x = ny * t1z - nz * t1y,
+      t2y = nz * t1x - nx * t1z,
+      t2z = nx * t1y - ny * t1x;
+    const u1 = cx * t1x + cy * t1y + cz * t1z,
+      u2 = cx * t2x + cy * t2y + cz * t2z;
+    const vt = Math.sqrt(u1 * u1 + u2 * u2);
     // Predicted approach for the impact stage's ordering (measureApproach recomputes it after).
-    RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (is2D ? 0 : (sb[ob + 2]! - sb[oa + 2]!) * nz);
+    RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (sb[ob + 2]! - sb[oa + 2]!) * nz;
     TOT[i] = 0;
     IMP[i] = 0;
     FB[i] = vt < stick ? Math.max(mus, mu) : mu;

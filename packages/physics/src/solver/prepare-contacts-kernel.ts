@@ -2,8 +2,9 @@
  * The contact solver's preparation of 2D contact rows (solver/contact-solver.ts prepareContacts) as a thread kernel
  * (threads/kernels.ts: self-contained, also run by the workers as source text). Each row is prepared
  * on its own (effective masses, tangent, combined material, stick or slip, the predicted approach, the
- * warm start found in last step's rows), with the arithmetic of solver/contact-solver.ts's loop, so the rows are
- * identical to the bit whichever thread prepares them. solver/contact-solver.ts runs it and says when.
+ * warm start found in last step's rows), so the rows are identical to the bit whichever thread prepares
+ * them. It is the 2D preparation's only code: solver/contact-solver.ts (prepare2DStage) runs it on the
+ * threads or inline, and keeps the 3D loop.
  */
 
 import type { KernelArray } from '../threads/kernel-types.js';
