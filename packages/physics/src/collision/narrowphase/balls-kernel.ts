@@ -1,23 +1,24 @@
 /**
  * The narrowphase's ball-ball contacts (collision/narrowphase/balls.ts) as a thread kernel (threads/kernels.ts: a
- * self-contained function the worker threads also run as source text); collision/narrowphase/balls-threads.ts runs it
- * and says when.
+ * self-contained function the worker threads also run as source text), their only code: collision/narrowphase/balls-threads.ts
+ * runs it on the threads or inline and says when.
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
 
 /**
- * Ball-ball contacts of pairs lo .. hi - 1 (all BallBall pairs of bodies no joint keeps apart), with
- * the arithmetic of collision/narrowphase/balls.ts's loop: the normal where the balls first touch this step (swept
- * test, Ericson 5.5.7), the separation where they were at the start of the step, kept when the gap
- * can close this step. A: 0 pairA, 1 pairB, 2 ox, 3 oy, 4 oz, 5 vx, 6 vy, 7 vz, 8 radius, 9 bodyType
+ * Ball-ball contacts of pairs lo .. hi - 1 (all BallBall pairs): the normal where the balls first
+ * touch this step (swept test, Ericson 5.5.7), the separation where they were at the start of the
+ * step, kept when the gap can close this step; pairs whose skip flag is set (a joint keeps the bodies
+ * apart) make none. A: 0 pairA, 1 pairB, 2 ox, 3 oy, 4 oz, 5 vx, 6 vy, 7 vz, 8 radius, 9 bodyType
  * (Uint8), 10 counts (Int32, the contacts of each range at `part`; -1: its arrays were too small),
- * then per range p the 10 arrays it writes its contacts to, from row 0, at 11 + 10 p: kind (Uint8),
- * nx, ny, nz, separation, ra, rb (Float64), a, b, feature (Int32)
- * (range 0's are the contact buffer's own, so its rows need no copy). P: 0 h (s), 1 speculative
- * distance (m), 2 the Static body type, 3 ContactKind.Ball, 4 ContactKind.StaticBall, 5 rows range
- * p > 0's arrays hold, 6 rows range 0's hold, 7 dimensions (2: z is not read; a 2D world's z stores
- * hold 0, so the arithmetic is the same). Returns 0.
+ * then per range p the 10 arrays it writes its contacts to at 11 + 10 p: kind (Uint8), nx, ny, nz,
+ * separation, ra, rb (Float64), a, b, feature (Int32), range 0 from row P[8], the others from row 0
+ * (range 0's are the contact buffer's own, so its rows need no copy); at A[P[9]] (when P[9] >= 0) the
+ * skip flags (Uint8, one a pair). P: 0 h (s), 1 speculative distance (m), 2 the Static body type, 3
+ * ContactKind.Ball, 4 ContactKind.StaticBall, 5 rows range p > 0's arrays hold, 6 rows range 0's hold,
+ * 7 dimensions (2: z is not read; a 2D world's z stores hold 0, so the arithmetic is the same), 8 range
+ * 0's first row, 9 the skip flags' index in A (-1: none). Returns 0.
  * @category Collision
  */
 export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
@@ -50,8 +51,11 @@ export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array 
     STATIC_BALL = P[4]!,
     cap = part === 0 ? P[6]! : P[5]!;
   const is3D = P[7] === 3;
+  const base = part === 0 ? P[8]! : 0,
+    skip = P[9]! >= 0 ? (A[P[9]!] as Uint8Array) : null;
   let count = 0;
   for (let i = lo; i < hi; i++) {
+    if (skip !== null && skip[i] === 1) continue;
     const a = pairA[i]!,
       b = pairB[i]!;
     const rx = ox[b]! - ox[a]!,
@@ -101,11 +105,11 @@ export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array 
     const sep = rx * dx + ry * dy + rz * dz - R;
     const vn = wx * dx + wy * dy + wz * dz;
     if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.25 * R ? spec : 0.25 * R)) continue;
-    if (count >= cap) {
+    if (base + count >= cap) {
       count = -1;
       break;
     }
-    const r = count;
+    const r = base + count;
     if (ta === STATIC) {
       K[r] = STATIC_BALL;
       NX[r] = dx;

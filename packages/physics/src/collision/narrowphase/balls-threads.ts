@@ -1,22 +1,24 @@
 /**
- * The narrowphase's ball-ball contacts (collision/narrowphase/balls.ts) on the world's threads. Each thread turns a
- * contiguous range of the step's ball-ball pairs into contacts; the first range (the calling
- * thread's) writes them straight into the contact buffer, the others into arrays of their own, which
- * are then appended after it in range order (typed-array copies), the order one thread makes them in,
- * so the contacts, and everything after them, are identical to the bit to the one-thread narrowphase.
- *
- * Only for the leading run of ball-ball pairs (the broadphase lists segment pairs after them) and
- * while no joint keeps bodies apart (that test looks pairs up in a map the workers do not have).
+ * The narrowphase's ball-ball contacts (collision/narrowphase/balls.ts), one range kernel
+ * (collision/narrowphase/balls-kernel.ts) run on the world's threads when that pays and inline on the
+ * calling thread otherwise. On the threads, each turns a contiguous range of a run of ball-ball pairs
+ * into contacts; the first range (the calling thread's) writes them straight into the contact buffer,
+ * the others into arrays of their own, which are then appended after it in range order (typed-array
+ * copies), the order one thread makes them in, so the contacts, and everything after them, are
+ * identical to the bit on any thread count. Pairs of bodies a joint keeps apart are flagged first (the
+ * lookup needs the joints' map, which the workers do not have) and make no contact.
  */
 
+import { jointKeepsApart } from '../../joints/connected.js';
 import { shareContactBuffer } from '../../solver/coloring.js';
 import type { KernelArray } from '../../threads/kernel-types.js';
 import { KERNEL } from '../../threads/kernels.js';
 import { runOnPool } from '../../threads/parallel.js';
-import { sharedCopy, sharedLike } from '../../threads/pool.js';
+import { sharedCopy, sharedLike, type ThreadPool } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
-import { BodyType, type CollisionState, PairKind } from '../state.js';
+import { BodyType, type CollisionState } from '../state.js';
+import { ballContacts } from './balls-kernel.js';
 
 /**
  * Fewest ball-ball pairs a thread for the contacts to be made in parallel.
@@ -30,46 +32,84 @@ const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'f
 /** Each range after the first: its arrays (FIELDS', typed as the buffer's), `cap` rows each; the ranges' counts. */
 interface ContactBuffers {
   out: KernelArray[][];
-  counts: Int32Array;
-  arrays: KernelArray[];
-  params: Float64Array;
   cap: number;
 }
 
-const buffersOf = new WeakMap<CollisionState, ContactBuffers>();
+/** Per collision state: the threads' buffers, the ranges' counts, the skip flags and the kernel's arguments. */
+interface ContactScratch {
+  threads: ContactBuffers | null;
+  counts: Int32Array;
+  skip: Uint8Array;
+  arrays: KernelArray[];
+  params: Float64Array;
+}
+
+const scratchOf = new WeakMap<CollisionState, ContactScratch>();
+
+function scratch(cs: CollisionState): ContactScratch {
+  let s = scratchOf.get(cs);
+  if (s === undefined) {
+    s = { threads: null, counts: new Int32Array(16), skip: new Uint8Array(0), arrays: [], params: new Float64Array(10) };
+    scratchOf.set(cs, s);
+  }
+  return s;
+}
+
+/** The world's pool if `n` ball-ball pairs may go to its threads, else null. */
+function poolFor(world: PhysicsWorld, n: number): ThreadPool | null {
+  const pool = world.threadPool;
+  if (pool === null || n < CONTACTS_MIN_PER_THREAD * pool.threads || pool.threads > 16) return null;
+  return pool;
+}
 
 /**
- * Makes the contacts of the leading ball-ball pairs of `cs` on the world's threads into `buf` (which
- * must be empty) and returns how many pairs it handled (0: none, the caller's loop makes them all).
+ * Appends to `buf` the contacts of `cs`'s ball-ball pairs lo .. hi - 1 (all of kind BallBall), in
+ * pair order, skipping pairs of bodies a joint keeps apart: on the world's threads when the run is long
+ * enough and the pool takes it, else on the calling thread.
  * @throws Error naming narrowphaseSystem if a worker thread failed.
  * @category Collision
  */
-export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, buf: ContactBuffer): number {
-  const pool = world.threadPool;
-  const n = cs.pairCount;
-  if (pool === null || n < CONTACTS_MIN_PER_THREAD * pool.threads || pool.threads > 16 || buf.count !== 0) return 0;
-  if (world.joints.noCollidePairs.size > 0) return 0;
-  let m = 0;
-  const kind = cs.pairKind;
-  while (m < n && kind[m] === PairKind.BallBall) m++;
-  if (m < CONTACTS_MIN_PER_THREAD * pool.threads) return 0;
-  cs.pairA = sharedCopy(cs.pairA);
-  cs.pairB = sharedCopy(cs.pairB);
-  cs.bodyType = sharedCopy(cs.bodyType);
-  // The first range writes into the buffer itself: room for every pair, on shared memory.
-  if (buf.capacity < m) growContactBuffer(buf, m);
-  shareContactBuffer(buf);
-  let B = buffersOf.get(cs);
-  const want = m + 1024;
-  if (B === undefined || B.out.length < pool.threads - 1 || B.cap < want) {
-    const cap = Math.max(want, 2 * (B?.cap ?? 0));
-    const out: KernelArray[][] = [];
-    for (let p = 1; p < pool.threads; p++) out.push(FIELDS.map((f) => sharedLike(buf[f] as KernelArray, cap)));
-    B = { out, counts: new Int32Array(new SharedArrayBuffer(4 * 16)), arrays: [], params: new Float64Array(8), cap };
-    buffersOf.set(cs, B);
+export function ballContactsStage(world: PhysicsWorld, cs: CollisionState, buf: ContactBuffer, lo: number, hi: number): void {
+  const m = hi - lo;
+  if (m <= 0) return;
+  const s = scratch(cs);
+  let pool = poolFor(world, m);
+  if (pool !== null) {
+    cs.pairA = sharedCopy(cs.pairA);
+    cs.pairB = sharedCopy(cs.pairB);
+    cs.bodyType = sharedCopy(cs.bodyType);
+    if (!(s.counts.buffer instanceof SharedArrayBuffer)) s.counts = sharedCopy(s.counts);
+  }
+  // Room for every pair in the buffer (range 0 writes there), on shared memory for the threads.
+  if (buf.capacity < buf.count + m) growContactBuffer(buf, buf.count + m);
+  if (pool !== null) shareContactBuffer(buf);
+  // Pairs a joint keeps apart: flagged here, skipped by the kernel.
+  const joints = world.joints;
+  let skipAt = -1;
+  if (joints.noCollidePairs.size > 0) {
+    if (s.skip.length < hi || (pool !== null && !(s.skip.buffer instanceof SharedArrayBuffer))) {
+      const size = Math.max(hi, 2 * s.skip.length);
+      s.skip = pool !== null ? sharedLike(s.skip, size) : new Uint8Array(size);
+    }
+    const skip = s.skip,
+      pairA = cs.pairA,
+      pairB = cs.pairB;
+    for (let i = lo; i < hi; i++) skip[i] = jointKeepsApart(joints, pairA[i]!, pairB[i]!) ? 1 : 0;
+  }
+  const threads = pool === null ? 1 : pool.threads;
+  let B = s.threads;
+  if (pool !== null) {
+    const want = m + 1024;
+    if (B === null || B.out.length < threads - 1 || B.cap < want) {
+      const cap = Math.max(want, 2 * (B?.cap ?? 0));
+      const out: KernelArray[][] = [];
+      for (let p = 1; p < threads; p++) out.push(FIELDS.map((f) => sharedLike(buf[f] as KernelArray, cap)));
+      B = { out, cap };
+      s.threads = B;
+    }
   }
   const c = world.components;
-  const A = B.arrays;
+  const A = s.arrays;
   A.length = 0;
   A.push(
     cs.pairA,
@@ -82,40 +122,56 @@ export function parallelBallContacts(world: PhysicsWorld, cs: CollisionState, bu
     c.Velocity.z,
     c.Ball.radius,
     cs.bodyType,
-    B.counts,
+    s.counts,
   );
   for (const f of FIELDS) A.push(buf[f]);
-  for (let p = 1; p < pool.threads; p++) for (const a of B.out[p - 1]!) A.push(a);
-  const P = B.params;
+  if (pool !== null) for (let p = 1; p < threads; p++) for (const a of B!.out[p - 1]!) A.push(a);
+  if (joints.noCollidePairs.size > 0) {
+    skipAt = A.length;
+    A.push(s.skip);
+  }
+  const P = s.params;
   P[0] = world.h;
   P[1] = cs.settings.speculativeDistance;
   P[2] = BodyType.Static;
   P[3] = ContactKind.Ball;
   P[4] = ContactKind.StaticBall;
-  P[5] = B.cap;
+  P[5] = B === null ? 0 : B.cap;
   P[6] = buf.capacity;
   P[7] = world.dimensions;
-  B.counts.fill(0);
-  if (runOnPool(pool, 'narrowphaseSystem', KERNEL.ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) === null) return 0;
-  let total = 0;
-  for (let p = 0; p < pool.threads; p++) {
-    if (B.counts[p]! < 0) {
-      buffersOf.delete(cs);
-      return 0;
-    } // too small a buffer: the caller's loop this step
-    total += B.counts[p]!;
+  P[8] = buf.count;
+  P[9] = skipAt;
+  const counts = s.counts;
+  counts.fill(0);
+  // The kernel's ranges cover lo .. hi - 1: the pool splits 0 .. m, so the pair arrays are offset views.
+  if (pool !== null && lo !== 0) pool = null;
+  if (pool !== null && runOnPool(pool, 'narrowphaseSystem', KERNEL.ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) !== null) {
+    let total = 0,
+      overflow = false;
+    for (let p = 0; p < threads; p++) {
+      if (counts[p]! < 0) overflow = true;
+      total += counts[p]!;
+    }
+    if (!overflow) {
+      // The first range's rows are in place; the others follow in range order (the one-thread order).
+      const end = buf.count + total;
+      buf.count += counts[0]!;
+      if (end > buf.capacity) growContactBuffer(buf, end);
+      let r = buf.count;
+      for (let p = 1; p < threads; p++) {
+        const k = counts[p]!;
+        if (k === 0) continue;
+        const out = B!.out[p - 1]!;
+        for (let j = 0; j < FIELDS.length; j++) (buf[FIELDS[j]!] as KernelArray).set(out[j]!.subarray(0, k) as never, r);
+        r += k;
+      }
+      buf.count = end;
+      return;
+    }
+    // A thread's buffer was too small: larger ones next step, and this run on the calling thread.
+    s.threads = null;
+    counts.fill(0);
   }
-  // The first range's rows are in place; the others follow in range order (the one-thread order).
-  buf.count = B.counts[0]!;
-  if (total > buf.capacity) growContactBuffer(buf, total);
-  let r = buf.count;
-  for (let p = 1; p < pool.threads; p++) {
-    const k = B.counts[p]!;
-    if (k === 0) continue;
-    const out = B.out[p - 1]!;
-    for (let j = 0; j < FIELDS.length; j++) (buf[FIELDS[j]!] as KernelArray).set(out[j]!.subarray(0, k) as never, r);
-    r += k;
-  }
-  buf.count = total;
-  return m;
+  ballContacts(A, P, null, lo, hi, 0);
+  buf.count += counts[0]!;
 }

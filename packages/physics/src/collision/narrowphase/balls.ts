@@ -1,9 +1,8 @@
-import { jointKeepsApart } from '../../joints/connected.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { query } from '../../world/query.js';
 import { BodyType, PairKind } from '../broadphase/grid.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
-import { parallelBallContacts } from './balls-threads.js';
+import { ballContactsStage } from './balls-threads.js';
 
 function pushContact(buf: ContactBuffer, kind: number, a: number, b: number, feature: number): void {
   const i = buf.count;
@@ -218,86 +217,17 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
   // A 2D world's z stores hold 0 (bodies/api.ts writes them so; nothing integrates them): not read.
   const is3D = world.dimensions === 3;
   const W = rowArgs,
-    SA = sphereArgs,
     GA = segmentArgs;
-  // The leading ball-ball pairs on the world's threads when it has them (collision/narrowphase/balls-threads.ts: the same contacts in the same order).
-  for (let i = parallelBallContacts(world, cs, buf), n = cs.pairCount; i < n; i++) {
+  for (let i = 0, n = cs.pairCount; i < n; i++) {
     const kind = pairKind[i]!;
     const b = pairB[i]!;
     if (kind === PairKind.BallBall) {
-      const a = pairA[i]!;
-      if (jointKeepsApart(world.joints, a, b)) continue; // jointed without collideConnected
-      const rx = ox[b]! - ox[a]!,
-        ry = oy[b]! - oy[a]!,
-        rz = is3D ? oz[b]! - oz[a]! : 0;
-      const ra = radius[a]!,
-        rb = radius[b]!;
-      const R = ra + rb;
-      const ta = type[a]!,
-        tb = type[b]!;
-      // Velocity of a static body is 0 by definition (its store is not read).
-      const wx = (tb === BodyType.Static ? 0 : vx[b]!) - (ta === BodyType.Static ? 0 : vx[a]!);
-      const wy = (tb === BodyType.Static ? 0 : vy[b]!) - (ta === BodyType.Static ? 0 : vy[a]!);
-      const wz = is3D ? (tb === BodyType.Static ? 0 : vz[b]!) - (ta === BodyType.Static ? 0 : vz[a]!) : 0;
-      let dx = rx,
-        dy = ry,
-        dz = rz;
-      // Normal where the balls first touch during the step, if they do (see sweepNormal).
-      SA[0] = rx;
-      SA[1] = ry;
-      SA[2] = rz;
-      SA[3] = wx;
-      SA[4] = wy;
-      SA[5] = wz;
-      SA[6] = R;
-      SA[7] = h;
-      sphereSweep();
-      const t = SA[8]!;
-      if (t > 0) {
-        dx += wx * t;
-        dy += wy * t;
-        dz += wz * t;
-      }
-      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (d > 1e-12) {
-        const inv = 1 / d;
-        dx *= inv;
-        dy *= inv;
-        dz *= inv;
-      } else {
-        dx = 0;
-        dy = 1;
-        dz = 0;
-      }
-      // Gap along that normal where the balls were at the start of the step.
-      const sep = rx * dx + ry * dy + rz * dz - R;
-      const vn = wx * dx + wy * dy + wz * dz;
-      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.25 * R ? spec : 0.25 * R)) continue;
-      if (ta === BodyType.Static) {
-        W[0] = dx;
-        W[1] = dy;
-        W[2] = dz;
-        W[3] = sep;
-        W[4] = 0;
-        W[5] = rb;
-        pushContact(buf, ContactKind.StaticBall, 0, b, a);
-      } else if (tb === BodyType.Static) {
-        W[0] = -dx;
-        W[1] = -dy;
-        W[2] = -dz;
-        W[3] = sep;
-        W[4] = 0;
-        W[5] = ra;
-        pushContact(buf, ContactKind.StaticBall, 0, a, b);
-      } else {
-        W[0] = dx;
-        W[1] = dy;
-        W[2] = dz;
-        W[3] = sep;
-        W[4] = ra;
-        W[5] = rb;
-        pushContact(buf, ContactKind.Ball, a, b, 0);
-      }
+      // A run of ball-ball pairs: one range kernel, on the world's threads or here
+      // (collision/narrowphase/balls-threads.ts: the same contacts in the same order).
+      let j = i + 1;
+      while (j < n && pairKind[j] === PairKind.BallBall) j++;
+      ballContactsStage(world, cs, buf, i, j);
+      i = j - 1;
     } else {
       const s = pairA[i]!;
       const ax = S.ax[s]!,
