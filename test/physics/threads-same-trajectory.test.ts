@@ -105,3 +105,29 @@ test('a lattice of balls, some pairs joined by joints that keep them apart: the 
   expect(run(2).hash).toBe(one.hash);
   expect(run(3).hash).toBe(one.hash);
 }, 120_000);
+
+test('a one-thread world without SharedArrayBuffer (a page that is not cross-origin isolated) solves by colours to the same state', () => {
+  const g = globalThis as { SharedArrayBuffer?: unknown };
+  const saved = g.SharedArrayBuffer;
+  const make = (): PhysicsWorld => {
+    const sc = SCENES['balls-in-box']!;
+    const world = createPhysicsWorld({ ...sc.worldOptions({ count: 400 }), seed: 1 });
+    worlds.push(world);
+    world.collision.settings.coloredSolveMinRows = 0;
+    sc.build(world, { count: 400 });
+    return world;
+  };
+  const withShared = make();
+  stepMany(withShared, 60);
+  let hash: string;
+  try {
+    g.SharedArrayBuffer = undefined;
+    const without = make();
+    stepMany(without, 60);
+    hash = stateHash(without);
+    expect(lastColorCount(without.collision)).toBeGreaterThan(1);
+  } finally {
+    g.SharedArrayBuffer = saved;
+  }
+  expect(hash).toBe(stateHash(withShared));
+}, 60_000);

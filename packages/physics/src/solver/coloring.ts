@@ -521,8 +521,8 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
 /** Whether this thread may block in Atomics.wait (not a browser's main thread); cached. */
 let mainMayWait: boolean | null = null;
 function mayWait(): boolean {
+  if (!sharedMemoryAvailable()) return false; // no workers to wait for
   if (mainMayWait === null) {
-    if (!sharedMemoryAvailable()) return false; // no workers to wait for
     try {
       Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
       mainMayWait = true;
