@@ -1,13 +1,14 @@
 /**
  * The broadphase's cell pass as a thread kernel (threads/kernels.ts: a self-contained function the
- * worker threads also run as source text); collision/broadphase/grid-pairs.ts runs it and says when.
+ * worker threads also run as source text), its only code: collision/broadphase/grid-pairs.ts runs it,
+ * on the threads or inline, and says when.
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
 
 /**
- * The cell pass over grid bodies lo .. hi - 1 (see collision/broadphase/grid.ts, whose loop this is, with the body
- * types as they were when the pass began). A: 0 sorted (grid order), 1 cellX, 2 cellY, 3 cellZ,
+ * The cell pass over grid bodies lo .. hi - 1 (collision/broadphase/grid.ts's grid bodies, with the body types as
+ * they were when the pass began). A: 0 sorted (grid order), 1 cellX, 2 cellY, 3 cellZ,
  * 4 bucketStart, 5 ox, 6 oy, 7 oz (PreviousPosition), 8 radius, 9 margin, 10 bodyType (Uint8:
  * BodyType's 0 dynamic, 1 kinematic, 2 static, 3 sleeping), 11 counts (Int32: at `part` the pairs the
  * range found, at 16 + `part` its wake requests; -1 when a buffer was too small), 12 restTime (s, 0:
@@ -49,7 +50,8 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
     gy0 = P[6]!,
     gz0 = P[7]!,
     dense = sX > 0;
-  // The half neighbourhood (collision/broadphase/grid.ts HALF_2D, HALF_3D), as (dx, dy, dz) triples.
+  // The half neighbourhood, as (dx, dy, dz) triples: each unordered pair of neighbouring cells once
+  // (2D: 4 of the 8 neighbours; 3D: 13 of the 26).
   const off = is3D
     ? [1, 0, 0, -1, 1, 0, 0, 1, 0, 1, 1, 0, -1, -1, 1, 0, -1, 1, 1, -1, 1, -1, 0, 1, 0, 0, 1, 1, 0, 1, -1, 1, 1, 0, 1, 1, 1, 1, 1]
     : [1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0];

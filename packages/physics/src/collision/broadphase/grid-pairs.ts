@@ -1,24 +1,25 @@
 /**
  * The broadphase's cell pass (collision/broadphase/grid.ts: every grid body against its own cell and half of its
- * neighbours) on the world's threads. Each thread takes a contiguous range of the grid's bodies, in
- * the grid's order, and writes the pairs it finds into its own buffer; the buffers are then appended
- * to the step's pair list in range order, which is exactly the order one thread finds them in, so
- * the pair list, and everything after it, is identical to the bit to the one-thread broadphase.
+ * neighbours), one range kernel (collision/broadphase/grid-pairs-kernel.ts) run on the world's threads
+ * when that pays and inline on the calling thread otherwise. Each thread takes a contiguous range of
+ * the grid's bodies, in the grid's order, and writes the pairs it finds into its own buffer; the
+ * buffers are then appended to the step's pair list in range order, which is the order one range
+ * finds them in, so the pair list, and everything after it, is identical to the bit on any thread count.
  *
- * Sleeping balls: the threads read the body types as they were when the pass began and list the
- * sleeping balls they meet that a moving or kinematic ball wakes; the caller then wakes them in range
- * order, skipping those already woken. The one-thread loop wakes each as it meets it, but the woken
- * ball has rested (so it wakes nobody) and is met where it slept (waking leaves its start-of-step
- * position), so the same balls wake in the same order; a pass that woke any ball is run again in
- * full either way (collision/broadphase/grid.ts), so the pairs are the one-thread ones too.
+ * Sleeping balls: the kernel reads the body types as they were when the pass began and lists the
+ * sleeping balls it meets that a kinematic ball, or a moving one (no rest time), wakes; the caller
+ * then wakes them in range order, skipping those already woken. A ball woken in a pass meets its
+ * sleeping neighbours only in the next one: a pass that woke any ball is run again in full
+ * (collision/broadphase/grid.ts).
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
 import { KERNEL } from '../../threads/kernels.js';
 import { runOnPool } from '../../threads/parallel.js';
-import { sharedCopy } from '../../threads/pool.js';
+import { sharedCopy, sharedMemoryAvailable, type ThreadPool } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { BodyType, type CollisionState, PairKind } from '../state.js';
+import { ballPairs } from './grid-pairs-kernel.js';
 
 export { ballPairs } from './grid-pairs-kernel.js';
 
@@ -42,92 +43,124 @@ interface PairBuffers {
 
 const buffersOf = new WeakMap<CollisionState, PairBuffers>();
 
+/** The world's pool if the cell pass over `small` grid bodies may go to its threads, else null. */
+function poolFor(world: PhysicsWorld, small: number): ThreadPool | null {
+  const pool = world.threadPool;
+  if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > MAX_PARTS) return null;
+  return pool;
+}
+
+/** Int32 buffers of `size` entries, `parts` of each kind, on shared memory for a pool. */
+function makeBuffers(parts: number, size: number, shared: boolean): PairBuffers {
+  const make = (n: number): Int32Array => (shared ? new Int32Array(new SharedArrayBuffer(4 * n)) : new Int32Array(n));
+  const a: Int32Array[] = [],
+    b: Int32Array[] = [],
+    w: Int32Array[] = [];
+  for (let p = 0; p < parts; p++) {
+    a.push(make(size));
+    b.push(make(size));
+    w.push(make(size));
+  }
+  return { a, b, w, counts: make(2 * MAX_PARTS), arrays: [], params: new Float64Array(8) };
+}
+
 /**
- * Runs the cell pass for the `small` grid bodies on the world's threads, appends the pairs to `cs`'s
- * pair list and calls `wake(world, cs, e)` for each sleeping ball to wake (in the one-thread order),
- * when the world has threads and the grid is large enough; returns false (nothing done) otherwise, and
- * the caller runs its own loop. `mask` is the grid's hash mask (unused by a dense grid, whose origin
- * and spans the kernel reads from `cs.grid`).
+ * Runs the cell pass for the `small` grid bodies (on the world's threads when it has them and the grid
+ * is large enough, else on the calling thread), appends the pairs to `cs`'s pair list and calls
+ * `wake(world, cs, e)` for each sleeping ball to wake, in range order. `mask` is the grid's hash mask
+ * (unused by a dense grid, whose origin and spans the kernel reads from `cs.grid`).
  * @throws Error naming broadphaseSystem if a worker thread failed.
  * @category Collision
  */
-export function parallelBallPairs(
+export function ballPairsStage(
   world: PhysicsWorld,
   cs: CollisionState,
   small: number,
   mask: number,
   wake: (world: PhysicsWorld, cs: CollisionState, e: number) => void,
-): boolean {
-  const pool = world.threadPool;
-  if (pool === null || small < PAIRS_MIN_PER_THREAD * pool.threads || pool.threads > MAX_PARTS) return false;
-  // Sleepers have rested at least timeToSleep: with 0 a sleeper may not have, and then a ball the
-  // one-thread loop wakes may wake others in the same pass (see the file's header).
-  if (!(cs.sleep.timeToSleep > 0)) return false;
+): void {
+  if (small <= 0) return;
+  let pool = poolFor(world, small);
   const c = world.components;
   const g = cs.grid;
-  // The scratch arrays the pass reads move to shared memory once (and again after they grow).
-  g.sorted = sharedCopy(g.sorted);
-  g.cellX = sharedCopy(g.cellX);
-  g.cellY = sharedCopy(g.cellY);
-  g.cellZ = sharedCopy(g.cellZ);
-  g.bucketStart = sharedCopy(g.bucketStart);
-  cs.margin = sharedCopy(cs.margin);
-  cs.bodyType = sharedCopy(cs.bodyType);
-  cs.sleep.restTime = sharedCopy(cs.sleep.restTime);
+  if (pool !== null) {
+    // The scratch arrays the pass reads move to shared memory once (and again after they grow).
+    g.sorted = sharedCopy(g.sorted);
+    g.cellX = sharedCopy(g.cellX);
+    g.cellY = sharedCopy(g.cellY);
+    g.cellZ = sharedCopy(g.cellZ);
+    g.bucketStart = sharedCopy(g.bucketStart);
+    cs.margin = sharedCopy(cs.margin);
+    cs.bodyType = sharedCopy(cs.bodyType);
+    cs.sleep.restTime = sharedCopy(cs.sleep.restTime);
+  }
+  const parts = pool === null ? 1 : pool.threads;
+  const shared = pool !== null || sharedMemoryAvailable();
   let buf = buffersOf.get(cs);
-  const cap = 4 * small + 1024;
-  if (buf === undefined || buf.a.length < pool.threads || buf.a[0]!.length < cap) {
-    const size = Math.max(cap, 2 * (buf === undefined ? 0 : buf.a[0]!.length));
-    const a: Int32Array[] = [],
-      b: Int32Array[] = [],
-      w: Int32Array[] = [];
-    for (let p = 0; p < pool.threads; p++) {
-      a.push(new Int32Array(new SharedArrayBuffer(4 * size)));
-      b.push(new Int32Array(new SharedArrayBuffer(4 * size)));
-      w.push(new Int32Array(new SharedArrayBuffer(4 * size)));
+  let cap = 4 * small + 1024;
+  for (;;) {
+    if (buf === undefined || buf.a.length < parts || buf.a[0]!.length < cap) {
+      const size = Math.max(cap, 2 * (buf === undefined ? 0 : buf.a[0]!.length));
+      buf = makeBuffers(Math.max(parts, buf?.a.length ?? 0), size, shared);
+      buffersOf.set(cs, buf);
     }
-    buf = { a, b, w, counts: new Int32Array(new SharedArrayBuffer(4 * 2 * MAX_PARTS)), arrays: [], params: new Float64Array(8) };
-    buffersOf.set(cs, buf);
+    const A = buf.arrays;
+    A.length = 0;
+    A.push(
+      g.sorted,
+      g.cellX,
+      g.cellY,
+      g.cellZ,
+      g.bucketStart,
+      c.PreviousPosition.x,
+      c.PreviousPosition.y,
+      c.PreviousPosition.z,
+      c.Ball.radius,
+      cs.margin,
+      cs.bodyType,
+      buf.counts,
+      cs.sleep.restTime,
+    );
+    for (let p = 0; p < parts; p++) A.push(buf.a[p]!, buf.b[p]!, buf.w[p]!);
+    const P = buf.params;
+    P[0] = mask;
+    P[1] = world.dimensions;
+    P[2] = buf.a[0]!.length;
+    P[3] = g.spanX;
+    P[4] = g.spanXZ;
+    P[5] = g.originX;
+    P[6] = g.originY;
+    P[7] = g.originZ;
+    buf.counts.fill(0);
+    let threads = 1;
+    if (pool !== null && runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) !== null) {
+      threads = pool.threads;
+    } else {
+      pool = null;
+      ballPairs(A, P, null, 0, small, 0);
+    }
+    let overflow = false;
+    for (let p = 0; p < threads; p++) if (buf.counts[p]! < 0 || buf.counts[MAX_PARTS + p]! < 0) overflow = true;
+    if (!overflow) {
+      appendPairs(world, cs, buf, threads, wake);
+      return;
+    }
+    // A buffer overflowed: larger ones, and the pass again (on the calling thread).
+    cap = 2 * buf.a[0]!.length;
+    pool = null;
   }
-  const A = buf.arrays;
-  A.length = 0;
-  A.push(
-    g.sorted,
-    g.cellX,
-    g.cellY,
-    g.cellZ,
-    g.bucketStart,
-    c.PreviousPosition.x,
-    c.PreviousPosition.y,
-    c.PreviousPosition.z,
-    c.Ball.radius,
-    cs.margin,
-    cs.bodyType,
-    buf.counts,
-    cs.sleep.restTime,
-  );
-  for (let p = 0; p < pool.threads; p++) A.push(buf.a[p]!, buf.b[p]!, buf.w[p]!);
-  const P = buf.params;
-  P[0] = mask;
-  P[1] = world.dimensions;
-  P[2] = buf.a[0]!.length;
-  P[3] = g.spanX;
-  P[4] = g.spanXZ;
-  P[5] = g.originX;
-  P[6] = g.originY;
-  P[7] = g.originZ;
-  buf.counts.fill(0);
-  if (runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) === null) return false;
+}
+
+/** Appends the `threads` ranges' pairs of `buf` to `cs`'s pair list and wakes their sleepers, in range order. */
+function appendPairs(
+  world: PhysicsWorld,
+  cs: CollisionState,
+  buf: PairBuffers,
+  threads: number,
+  wake: (world: PhysicsWorld, cs: CollisionState, e: number) => void,
+): void {
   let total = 0;
-  for (let p = 0; p < pool.threads; p++) {
-    const k = buf.counts[p]!;
-    if (k < 0 || buf.counts[MAX_PARTS + p]! < 0) {
-      buffersOf.delete(cs);
-      return false;
-    } // a buffer overflowed: the caller's loop this step, larger buffers next
-    total += k;
-  }
-  // Append in range order: the one-thread order.
+  for (let p = 0; p < threads; p++) total += buf.counts[p]!;
   let n = cs.pairCount;
   if (cs.pairA.length < n + total) {
     let size = Math.max(16, cs.pairA.length);
@@ -142,7 +175,7 @@ export function parallelBallPairs(
     cs.pairB = b;
     cs.pairKind = k;
   }
-  for (let p = 0; p < pool.threads; p++) {
+  for (let p = 0; p < threads; p++) {
     const k = buf.counts[p]!;
     if (k === 0) continue;
     cs.pairA.set(buf.a[p]!.subarray(0, k), n);
@@ -151,14 +184,13 @@ export function parallelBallPairs(
     n += k;
   }
   cs.pairCount = n;
-  // Wake in range order, each ball once (the first time it was met, as the one-thread loop does).
+  // Wake in range order, each ball once (the first time it was met).
   const type = cs.bodyType;
-  for (let p = 0; p < pool.threads; p++) {
+  for (let p = 0; p < threads; p++) {
     const W: Int32Array = buf.w[p]!;
     for (let j = 0, k = buf.counts[MAX_PARTS + p]!; j < k; j++) {
       const e = W[j]!;
       if (type[e] === BodyType.Sleeping) wake(world, cs, e);
     }
   }
-  return true;
 }

@@ -5,21 +5,10 @@ import { BodyType, type CollisionState, PairKind } from '../state.js';
 export { BodyType, PairKind } from '../state.js';
 
 import { wakeTag } from '../../islands/sleep.js';
-import { parallelBallPairs } from './grid-pairs.js';
+import { ballPairsStage } from './grid-pairs.js';
 
 /** Bodies whose reach (radius + speculative margin) exceeds this many times the mean reach skip the grid. */
 const OVERSIZED_FACTOR = 2.5;
-
-/** The 2D half neighbourhood: each unordered pair of neighbouring cells is visited once. */
-const HALF_2D: readonly number[] = [1, 0, 1, 1, 0, 1, -1, 1];
-/** The 3D half neighbourhood: 13 of the 26 neighbours. */
-const HALF_3D: readonly number[] = (() => {
-  const out: number[] = [];
-  for (let dz = -1; dz <= 1; dz++)
-    for (let dy = -1; dy <= 1; dy++)
-      for (let dx = -1; dx <= 1; dx++) if (dz > 0 || (dz === 0 && dy > 0) || (dz === 0 && dy === 0 && dx > 0)) out.push(dx, dy, dz);
-  return out;
-})();
 
 /**
  * The broadphase uses a dense grid (one bucket per cell, in space order) when there are at least
@@ -39,9 +28,6 @@ export const DENSE_CELLS_PER_BODY = 8;
  * @category Collision
  */
 export const DENSE_MIN_BODIES = 1024;
-
-/** Scratch: the bucket offset of each neighbour cell of the half neighbourhood in a dense grid. */
-const neighbourStep = new Float64Array(13);
 
 /**
  * Largest cell coordinate, in cells either side of the origin (2^28). Cell coordinates are clamped to
@@ -407,52 +393,9 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     const woken = cs.wakeCount;
     // Pairs among grid bodies: own cell (later entries only) and half the neighbours. A dense grid's
     // buckets hold one cell each (no coordinates to compare), its neighbours a fixed bucket offset away.
-    const offsets = is3D ? HALF_3D : HALF_2D;
-    const stride = is3D ? 3 : 2;
-    const nOffsets = offsets.length / stride;
-    for (let k = 0; k < nOffsets; k++)
-      neighbourStep[k] = offsets[k * stride]! - offsets[k * stride + 1]! * sXZ + (is3D ? offsets[k * stride + 2]! * sX : 0);
-    // On the world's threads when it has them (collision/broadphase/grid-pairs.ts: the same pairs and wakes in the same order).
-    if (!parallelBallPairs(world, cs, small, mask, wakeForContact))
-      for (let p = 0; p < small; p++) {
-        const e = sorted[p]!;
-        const cx = cellX[p]!,
-          cy = cellY[p]!,
-          cz = cellZ[p]!;
-        const x = ox[e]!,
-          y = oy[e]!,
-          z = is3D ? oz[e]! : 0;
-        const reach = radius[e]! + margin[e]!;
-        const te = type[e]!;
-        // Own cell.
-        const own = dense ? cx - gx0 + (cz - gz0) * sX + (gy0 - cy) * sXZ : hashCell(cx, cy, cz) & mask;
-        for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
-          if (!dense && (cellX[q] !== cx || cellY[q] !== cy || cellZ[q] !== cz)) continue;
-          const f = sorted[q]!;
-          if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-          const dx = ox[f]! - x,
-            dy = oy[f]! - y,
-            dz = is3D ? oz[f]! - z : 0;
-          const rr = reach + radius[f]! + margin[f]!;
-          if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-        }
-        for (let k = 0; k < nOffsets; k++) {
-          const nx = cx + offsets[k * stride]!,
-            ny = cy + offsets[k * stride + 1]!,
-            nz = is3D ? cz + offsets[k * stride + 2]! : 0;
-          const bucket = dense ? own + neighbourStep[k]! : hashCell(nx, ny, nz) & mask;
-          for (let q = start[bucket]!, end = start[bucket + 1]!; q < end; q++) {
-            if (!dense && (cellX[q] !== nx || cellY[q] !== ny || cellZ[q] !== nz)) continue;
-            const f = sorted[q]!;
-            if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-            const dx = ox[f]! - x,
-              dy = oy[f]! - y,
-              dz = is3D ? oz[f]! - z : 0;
-            const rr = reach + radius[f]! + margin[f]!;
-            if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-          }
-        }
-      }
+    // One range kernel, on the world's threads or here (collision/broadphase/grid-pairs.ts: the same
+    // pairs and wakes in the same order on any thread count).
+    ballPairsStage(world, cs, small, mask, wakeForContact);
 
     // Oversized bodies: against each other directly, against grid bodies by a range query.
     for (let i = 0; i < overCount; i++) {
