@@ -3,6 +3,7 @@ import {
   addDistanceJoint,
   createPhysicsWorld,
   disposeWorld,
+  enableThreads,
   type PhysicsWorld,
   SCENES,
   stateHash,
@@ -23,6 +24,8 @@ import { stageThreading } from '../../packages/physics/src/solver/stages-threads
 // first row. Each threaded count runs twice: with a fixed pool (every stage on the threads) and an
 // adaptive one (threads/adaptive.ts: one thread or the threads by timing, so which stages run where
 // varies from run to run); the state must not depend on that choice either.
+
+enableThreads();
 
 const worlds: PhysicsWorld[] = [];
 const saved = stageThreading.minPerThread;
