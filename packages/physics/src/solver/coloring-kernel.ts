@@ -53,9 +53,11 @@ import type { approach2D } from './stages-kernel.js';
  * a thread in offsets, 13 spin before blocking (microseconds), 14-15 the unit vector along gravity (0,
  * 0 without gravity), 16 solver/support.ts's SUPPORT_COS, 17-19 gravity (m/s^2), 20 BodyType.Dynamic, 21 1 to
  * measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic of each row and body is
- * that of solver/contact-solver.ts's one-thread loops, support rows of the relax passes included (solver/support.ts: a
- * frictionless row with one ball resting on another holds the lower ball when that slows the upper one
- * less than the lower). Returns 0 (-1 if another thread failed and this one stopped).
+ * that of solver/contact-solver.ts's buffer-order loops (solve2D, warmStart2D, the body stages), with
+ * the support rows of the relax passes for frictionless rows only (solver/support.ts: a frictionless
+ * row with one ball resting on another holds the lower ball when that slows the upper one less than
+ * the lower); solve2D also holds rows whose upper ball is the heavier and takes some rows first.
+ * Returns 0 (-1 if another thread failed and this one stopped).
  * @category Collision
  */
 export function solveColored2D(

@@ -34,7 +34,7 @@
  *
  * Taken in 2D worlds with no joints and no shape manifolds in the step (they solve between the contacts
  * within each pass) and at least `CollisionSettings.coloredSolveMinRows` rows (default 16384), on any
- * thread count; smaller or mixed steps run the one-thread loops of solver/contact-solver.ts on every
+ * thread count; smaller or mixed steps run the buffer-order loops of solver/contact-solver.ts on every
  * thread count.
  */
 
@@ -536,9 +536,8 @@ function mayWait(): boolean {
 /**
  * Runs the step's substeps for the 2D ball contacts of `buf` by colours on the world's threads (or on
  * the calling thread alone without a pool, or when the adaptive pool prefers it: the same results
- * either way), then writes the impulses
- * back to `buf` (normal, tangent, largest pass impulse, delivered total), as the one-thread loop of
- * solver/contact-solver.ts leaves them. `soft`: dynamic bias rate, mass scale, impulse scale, then the rigid ones.
+ * either way), then writes the impulses back to `buf` (normal, tangent, largest pass impulse,
+ * delivered total), as the buffer-order loop of solver/contact-solver.ts leaves them. `soft`: dynamic bias rate, mass scale, impulse scale, then the rigid ones.
  * @throws Error naming contactSolverSystem if a worker thread failed.
  * @category Collision
  */
