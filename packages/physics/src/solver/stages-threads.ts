@@ -30,15 +30,15 @@
 import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from '../collision/contacts.js';
 import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
-import type { KernelArray } from '../threads/kernel-types.js';
-import { KERNEL, KERNEL_HELPERS, KERNELS } from '../threads/kernels.js';
+import type { Kernel, KernelArray } from '../threads/kernel-types.js';
+import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { IMPACT_STRIDE } from './impacts.js';
-import { restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
@@ -101,15 +101,25 @@ function allShared(arrays: readonly KernelArray[]): boolean {
 
 /**
  * Runs kernel `kernel` over `n` elements on `pool`'s threads when the pool takes it (runOnPool: enough
- * elements a thread, every array shared, the adaptive choice), else inline on the calling thread over
- * all of them (range 0 .. n, part 0): the same kernel either way. Returns its result.
+ * elements a thread, every array shared, the adaptive choice), else `fn` (the function registered as
+ * `kernel`) inline on the calling thread over all of them (range 0 .. n, part 0): the same kernel either
+ * way. Returns its result. The function is passed, not looked up in the kernel table, so a one-thread
+ * program does not bundle the table and every kernel in it.
  */
-function runStage(pool: ThreadPool | null, kernel: number, A: KernelArray[], P: Float64Array, n: number, ids: Int32Array | null): number {
+function runStage(
+  pool: ThreadPool | null,
+  kernel: number,
+  fn: Kernel,
+  A: KernelArray[],
+  P: Float64Array,
+  n: number,
+  ids: Int32Array | null,
+): number {
   if (pool !== null && allShared(A)) {
     const result = runOnPool(pool, 'contactSolverSystem', kernel, A, P, n, ids, stageThreading.minPerThread);
     if (ran(result)) return result;
   }
-  return KERNELS[kernel]!(A, P, ids, 0, n, 0, KERNEL_HELPERS);
+  return fn(A, P, ids, 0, n, 0, KERNEL_HELPERS);
 }
 
 /**
@@ -156,7 +166,7 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
   P[4] = pushed;
   P[5] = BodyType.Dynamic;
   P[6] = BodyType.Kinematic;
-  runStage(pool, KERNEL.gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
+  runStage(pool, KERNEL.gatherFill2D, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
 /**
@@ -184,7 +194,7 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[2] = g[2]!;
   P[3] = BodyType.Dynamic;
   P[4] = 0;
-  runStage(pool, KERNEL.approach2D, A, P, n, null);
+  runStage(pool, KERNEL.approach2D, approach2D, A, P, n, null);
 }
 
 /**
@@ -280,7 +290,7 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[11] = g[1]!;
   P[12] = buf.count;
   P[13] = count - 1;
-  const check = runStage(pool, KERNEL.finishBodies2D, A, P, count - 1, list.subarray(1, count));
+  const check = runStage(pool, KERNEL.finishBodies2D, finishBodies2D, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
   let deepest = 0;
