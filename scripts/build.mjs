@@ -51,8 +51,13 @@ export function writeRegistry() {
   writeFileSync(join(siteDir, 'registry.json'), JSON.stringify(readRegistry(), null, 2));
 }
 
-/** esbuild options for the site: every game's main.ts bundled, every page and picture copied. */
-export function siteOptions({ minify = false } = {}) {
+/**
+ * esbuild options for the site: every game's main.ts bundled, every page and picture copied. The
+ * pages' scripts are minified and split (`splitting`): code two pages share (pixi.js, three, bitecs,
+ * the physics, the game kit) goes into chunks under chunks/ that the browser loads once and caches for
+ * every page, so a page's own script is small. Source maps keep stack traces readable.
+ */
+export function siteOptions({ minify = true } = {}) {
   const games = join(root, 'games');
   const entryPoints = [join(games, 'index.html'), join(games, 'gallery.ts'), join(games, 'gallery.css')];
   for (const name of gameFolders()) {
@@ -72,6 +77,8 @@ export function siteOptions({ minify = false } = {}) {
     conditions,
     sourcemap: true,
     minify,
+    splitting: true,
+    chunkNames: 'chunks/[name]-[hash]',
     loader: { '.html': 'copy', '.png': 'copy', '.jpg': 'copy', '.svg': 'copy' },
     // Runs first on every page: the locale guard and the error box for anything thrown (also at import time).
     inject: [join(root, 'packages', 'game-kit', 'src', 'page-errors.ts')],

@@ -86,6 +86,12 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
+// Read by frame(), which the shell may call before this module's code after the await below has run.
+const L = new Float64Array(3),
+  wb = new Float64Array(3);
+let lastPlotted = -1,
+  frames = 0;
+
 const game = await startThreeGame({
   title: 'Rotating cube',
   createWorld,
@@ -342,11 +348,6 @@ try {
 } catch (error) {
   console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
 }
-
-const L = new Float64Array(3),
-  wb = new Float64Array(3);
-let lastPlotted = -1,
-  frames = 0;
 
 /** Per frame: key torque, arrows, readout, plot. */
 function frame(): void {
