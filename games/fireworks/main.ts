@@ -39,6 +39,7 @@ import {
   buildFireworks,
   burstScale,
   type FireworksShow,
+  FLASHES,
   fireworksWorldOptions,
   launchShell,
   MAX_HOLD,
@@ -76,6 +77,10 @@ const params = {
 
 /** Streaks behind the stars: long and bright enough to read as trails on a phone too. */
 const TRAILS = { duration: 0.14, width: 0.6, alpha: 0.75 };
+/** How long a burst's flash lasts, s. */
+const FLASH_SECONDS = 0.25;
+/** Bursts whose flash the last frame drew. */
+let flashing = 0;
 
 /** The recipe of the next click or Space launch. */
 function nextRecipe(): RecipeName {
@@ -309,6 +314,23 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!))))
       .fill({ color: 0xfff3d0 });
   }
+  // The flash of a burst: a white core and a warm halo at the shell's last place that fade in
+  // FLASH_SECONDS, so a burst opens from a bright centre (its first frame was a ring of sparks, all at
+  // one radius, with nothing inside).
+  flashing = 0;
+  for (let k = Math.max(0, show.flashCount - FLASHES); k < show.flashCount; k++) {
+    const f = 4 * (k % FLASHES),
+      age = world.time - show.flashes[f + 2]!;
+    if (age < 0 || age >= FLASH_SECONDS) continue;
+    flashing++;
+    const fade = 1 - age / FLASH_SECONDS,
+      x = cam.toScreenX(show.flashes[f]!),
+      y = cam.toScreenY(show.flashes[f + 1]!),
+      r = cam.toScreenLength(1.6 * Math.sqrt(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
+    overlay.circle(x, y, 2.4 * r).fill({ color: 0xffb347, alpha: 0.18 * fade });
+    overlay.circle(x, y, 1.4 * r).fill({ color: 0xffe2a8, alpha: 0.35 * fade });
+    overlay.circle(x, y, 0.6 * r).fill({ color: 0xffffff, alpha: 0.9 * fade });
+  }
   // Charging ring: its radius grows with the burst the hold would make.
   if (pointerId !== -1) {
     const hold = (performance.now() - pressedAt) / 1000;
@@ -371,6 +393,8 @@ shell.expose({
   threadsReady: (): Promise<void> => threadsReady(shell.world),
   /** Fingerprint of the world's state (stateHash). */
   stateHash: (): string => stateHash(shell.world),
+  /** Bursts whose flash the last frame drew (younger than FLASH_SECONDS). */
+  flashing: (): number => flashing,
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });

@@ -56,6 +56,9 @@ export const SPEED_MIN = 0.3;
 /** Crackles per dying spark (generation 2), and per dying crackle (generation 3). */
 export const CRACKLES = Object.freeze({ first: 4, second: 3 });
 
+/** Bursts remembered for the page's flash (show.flashes). */
+export const FLASHES = 16;
+
 /** Most shells in flight at once; further launches are refused until one bursts. */
 export const MAX_SHELLS = 64;
 
@@ -133,6 +136,12 @@ export interface FireworksShow {
   /** Shells launched and burst since the start. */
   launched: number;
   bursts: number;
+  /**
+   * The newest bursts, for the page's flash: x, y (m), the world time of the burst (s) and its scale,
+   * four numbers each, at most FLASHES of them (oldest overwritten); `flashCount` counts all ever made.
+   */
+  readonly flashes: Float64Array;
+  flashCount: number;
   /** Placeholder entities holding room for shells not in flight (MAX_SHELLS - shellCount of them). */
   readonly placeholders: number[];
   /**
@@ -343,6 +352,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     autoTimer: 0.5,
     launched: 0,
     bursts: 0,
+    flashes: new Float64Array(4 * FLASHES),
+    flashCount: 0,
     placeholders,
     pending: new Float64Array(PEND * MAX_SHELLS),
     pendingCount: 0,
@@ -550,6 +561,11 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
       Q[o + 6] = (crackle ? SPEED_MIN : recipe.speed[0]) * BURST_SPEED * s;
       Q[o + 7] = (crackle ? 1 : recipe.speed[1]) * BURST_SPEED * s;
     }
+    const f = 4 * (show.flashCount++ % FLASHES);
+    show.flashes[f] = c.Position.x[slotOf(e)]!;
+    show.flashes[f + 1] = c.Position.y[slotOf(e)]!;
+    show.flashes[f + 2] = world.time;
+    show.flashes[f + 3] = scale;
     removeBody(world, e);
     dropShell(show, i);
     show.placeholders.push(createEntity(world));

@@ -89,6 +89,8 @@ describe('fireworks', () => {
     expect(burstAfter).toBeLessThan(1200);
     await g.frames(2);
     const peak = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
+    // The burst's first frames draw its flash at the centre (they were a ring of sparks with nothing inside).
+    expect(await g.page.evaluate(() => (window.game as unknown as { flashing(): number }).flashing())).toBe(1);
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });
