@@ -14,7 +14,7 @@
 
 import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
-import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, step } from '@bitphysics/physics';
+import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import {
   SOLAR_SYSTEM_BODIES,
   SOLAR_SYSTEM_EPOCH,
@@ -24,7 +24,20 @@ import {
   solarSystem,
   solarSystemErrors,
 } from '@bitphysics/projects';
-import { Mesh, MeshBasicMaterial, MeshStandardMaterial, PointLight, SphereGeometry, Vector3 } from 'three';
+import {
+  BufferGeometry,
+  Float32BufferAttribute,
+  Group,
+  type Line,
+  LineBasicMaterial,
+  LineLoop,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  PointLight,
+  SphereGeometry,
+  Vector3,
+} from 'three';
 
 /** Scene units per AU. */
 const UNITS_PER_AU = 10;
@@ -61,7 +74,15 @@ const params = {
   exaggerate: new URLSearchParams(location.search).has('exaggerate') ? flagParam('exaggerate') : true,
   trails: new URLSearchParams(location.search).has('trails') ? flagParam('trails') : true,
   reset: () => game.shell.reset(),
+  /** Frames Mercury to Mars (key 1). */
+  inner: () => frameView(INNER_VIEW),
+  /** Frames all eight planets (key 2). */
+  all: () => frameView(ALL_VIEW),
 };
+
+/** Half-widths of the two framings, AU: Mars' orbit (1.67 AU at aphelion) and Neptune's (30.3 AU) with a margin. */
+const INNER_VIEW = 1.8;
+const ALL_VIEW = 34;
 
 let handles: SolarSystemHandles;
 let carry = 0;
@@ -88,6 +109,11 @@ function stepWorld(world: PhysicsWorld): void {
 
 const TRAILS = { length: 600, maxEntities: 9, spacing: 0.02, alpha: 0.7 };
 
+/** Labels placed this frame: left, centre y, right (px) and a spare, four numbers each. */
+const placed: number[] = [];
+/** Labels the last frame showed. */
+let shownLabels = 0;
+
 const game = await startThreeGame({
   title: 'Solar system',
   createWorld,
@@ -98,11 +124,14 @@ const game = await startThreeGame({
     { keys: '[ ]', action: 'slower / faster' },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'E', action: 'exaggerated sizes on / off' },
+    { keys: '1 2', action: 'inner planets / all eight' },
   ],
   keys: [
     { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
     { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
     { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
+    { key: '1', label: 'inner', action: () => frameView(INNER_VIEW) },
+    { key: '2', label: 'all', action: () => frameView(ALL_VIEW) },
     {
       key: 'e',
       label: 'sizes',
@@ -121,8 +150,9 @@ const game = await startThreeGame({
     lights: { direction: [0, 1, 0], intensity: 0.2, hemisphereIntensity: 0.25, ambientIntensity: 0.25, shadows: false },
     trails: params.trails ? TRAILS : false,
   },
-  // The inner planets at start (Mars' orbit fits); zoom out for the giants.
-  view: { min: [-1.8, -0.2, -1.8], max: [1.8, 0.2, 1.8] },
+  // All eight planets at start (Neptune's orbit fits; the orbit lines show where each goes); 1 zooms
+  // to the inner planets.
+  view: { min: [-ALL_VIEW, -0.2, -ALL_VIEW], max: [ALL_VIEW, 0.2, ALL_VIEW] },
   viewDirection: [0.2, 0.8, 1],
   onFrame: () => frame(),
 });
@@ -168,6 +198,74 @@ shell.onWorldChange(() => dress());
 // Saturn's rings: a flat disc that follows Saturn.
 const rings = new Mesh(new SphereGeometry(1, 32, 4), new MeshBasicMaterial({ color: 0xcdb98a, transparent: true, opacity: 0.5 }));
 app.scene.add(rings);
+
+/** Frames the Sun and the orbits out to `half` AU, from the start's direction. */
+function frameView(half: number): void {
+  const k = UNITS_PER_AU;
+  app.frame([-half * k, -0.2 * k, -half * k], [half * k, 0.2 * k, half * k], [0.2, 0.8, 1]);
+}
+
+// ---- Orbit lines: each planet's Kepler ellipse about the Sun from its state at the start ----------
+
+const orbitLines = new Group();
+app.scene.add(orbitLines);
+/** Points a drawn orbit. */
+const ORBIT_POINTS = 256;
+
+/**
+ * Redraws every planet's orbit: the two-body (Sun and planet) Kepler ellipse through its position and
+ * velocity now, mu = G (M_sun + m) (AU^3/day^2), from the eccentricity vector e = (v x h) / mu - r / |r|
+ * and the semi-major axis a = 1 / (2 / |r| - |v|^2 / mu) (vis-viva): r(f) = a (1 - e^2) / (1 + e cos f)
+ * around the focus at the Sun, in the orbit's plane. The giants' pull makes the real paths wander a
+ * little from these ellipses over the years.
+ */
+function drawOrbits(world: PhysicsWorld): void {
+  for (const line of orbitLines.children) (line as Line).geometry.dispose();
+  orbitLines.clear();
+  const c = world.components,
+    G = world.laws.gravitationalConstant,
+    sun = slotOf(handles.bodies.Sun),
+    k = UNITS_PER_AU;
+  for (const name of SOLAR_SYSTEM_PLANETS) {
+    const e = slotOf(handles.bodies[name]);
+    const r = new Vector3(
+      c.Position.x[e]! - c.Position.x[sun]!,
+      c.Position.y[e]! - c.Position.y[sun]!,
+      c.Position.z[e]! - c.Position.z[sun]!,
+    );
+    const u = new Vector3(
+      c.Velocity.x[e]! - c.Velocity.x[sun]!,
+      c.Velocity.y[e]! - c.Velocity.y[sun]!,
+      c.Velocity.z[e]! - c.Velocity.z[sun]!,
+    );
+    const mu = G * (c.Mass.value[sun]! + c.Mass.value[e]!);
+    const h = new Vector3().crossVectors(r, u);
+    const ecc = new Vector3().crossVectors(u, h).divideScalar(mu).sub(r.clone().divideScalar(r.length()));
+    const a = 1 / (2 / r.length() - u.lengthSq() / mu);
+    const en = ecc.length();
+    if (!(a > 0) || !(en < 1)) continue;
+    // Orbit frame: p toward the perihelion (or along r for a circle), q = h x p.
+    const p = en > 1e-9 ? ecc.clone().normalize() : r.clone().normalize();
+    const q = new Vector3().crossVectors(h, p).normalize();
+    const pts: number[] = [];
+    for (let i = 0; i < ORBIT_POINTS; i++) {
+      const f = (2 * Math.PI * i) / ORBIT_POINTS;
+      const rr = (a * (1 - en * en)) / (1 + en * Math.cos(f));
+      const x = rr * Math.cos(f),
+        y = rr * Math.sin(f);
+      pts.push(
+        (c.Position.x[sun]! + x * p.x + y * q.x) * k,
+        (c.Position.y[sun]! + x * p.y + y * q.y) * k,
+        (c.Position.z[sun]! + x * p.z + y * q.z) * k,
+      );
+    }
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(pts, 3));
+    orbitLines.add(new LineLoop(geometry, new LineBasicMaterial({ color: COLOR[name], transparent: true, opacity: 0.45 })));
+  }
+}
+drawOrbits(shell.world);
+shell.onWorldChange((world) => drawOrbits(world));
 
 // ---- Labels, date and the error table ---------------------------------------------------------
 
@@ -220,12 +318,24 @@ function frame(): void {
     }
     v.project(app.camera);
     const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
-    el.style.display = visible ? 'block' : 'none';
-    if (visible) {
-      el.style.left = `${((v.x + 1) / 2) * w}px`;
-      el.style.top = `${((1 - v.y) / 2) * h}px`;
+    // A label that would cover one placed before it (the Sun first, then outwards) waits until
+    // the view separates them: zoomed out, the inner planets' names do not pile up on the Sun's.
+    const x = ((v.x + 1) / 2) * w,
+      y = ((1 - v.y) / 2) * h;
+    const width = 7.5 * (el.textContent?.length ?? 4) + 14;
+    let free = visible;
+    for (let i = 0; free && i < placed.length; i += 4) {
+      if (x < placed[i + 2]! && x + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) free = false;
+    }
+    el.style.display = free ? 'block' : 'none';
+    if (free) {
+      el.style.left = `${x}px`;
+      el.style.top = `${y}px`;
+      placed.push(x, y, x + width, 0);
     }
   }
+  shownLabels = placed.length / 4;
+  placed.length = 0;
   if (tableFrame++ % 15 === 0) updateTable();
 }
 
@@ -270,6 +380,8 @@ const panel = createPanel(
     },
     { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes', onChange: () => dress() },
     { type: 'checkbox', key: 'trails', label: 'trails', onChange: (x) => setTrails(x === true) },
+    { type: 'button', key: 'inner', label: 'inner planets (1)' },
+    { type: 'button', key: 'all', label: 'all eight planets (2)' },
     { type: 'button', key: 'reset', label: 'reset (R)' },
   ],
   { title: 'Solar system' },
@@ -287,4 +399,17 @@ shell.expose({
   },
   /** Sets the rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
+  /** Orbit lines drawn (one a planet). */
+  orbitCount: (): number => orbitLines.children.length,
+  /** Labels the last frame showed (overlapping ones hidden). */
+  shownLabels: (): number => shownLabels,
+  /** The planets whose centre the camera sees now (projected inside the canvas). */
+  planetsInView: (): string[] => {
+    const k = UNITS_PER_AU;
+    return SOLAR_SYSTEM_PLANETS.filter((name) => {
+      if (!renderer.drawnPosition(handles.bodies[name], p3)) return false;
+      v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k).project(app.camera);
+      return v.z < 1 && Math.abs(v.x) <= 1 && Math.abs(v.y) <= 1;
+    });
+  },
 });

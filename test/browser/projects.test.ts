@@ -35,6 +35,38 @@ describe('projects', () => {
     await g.close();
   });
 
+  it('solar-system: all eight planets in view at start with their orbits; 1 frames the inner four; labels never overlap', async () => {
+    const g = await h.openGame('solar-system');
+    type Solar = { orbitCount(): number; planetsInView(): string[]; shownLabels(): number };
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).orbitCount())).toBe(8);
+    // At the start only Mercury to Mars were on screen; now Neptune's orbit fits.
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).planetsInView().length)).toBe(8);
+    // The shown labels' boxes do not intersect (each label is a div over the canvas).
+    const overlaps = await g.page.evaluate(() => {
+      const boxes = [...document.querySelectorAll<HTMLElement>('[data-scene-overlay] > div')]
+        .filter((el) => el.style.display !== 'none')
+        .map((el) => el.getBoundingClientRect());
+      let n = 0;
+      for (let i = 0; i < boxes.length; i++)
+        for (let j = i + 1; j < boxes.length; j++) {
+          const a = boxes[i]!,
+            b = boxes[j]!;
+          if (a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom) n++;
+        }
+      return { n, shown: boxes.length };
+    });
+    expect(overlaps.n).toBe(0);
+    expect(overlaps.shown).toBeGreaterThanOrEqual(3);
+    await g.press('1');
+    await g.waitFor(() => !(window.game as unknown as Solar).planetsInView().includes('Neptune'), null);
+    const inner = await g.page.evaluate(() => (window.game as unknown as Solar).planetsInView());
+    for (const p of ['Mercury', 'Venus', 'Earth', 'Mars']) expect(inner).toContain(p);
+    await g.press('2');
+    await g.waitFor(() => (window.game as unknown as Solar).planetsInView().length === 8, null);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('submarine: D drives the screw ahead, W floods the tanks', async () => {
     const g = await h.openGame('submarine');
     const x0 = await g.page.evaluate(() => {
