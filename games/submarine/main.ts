@@ -13,7 +13,7 @@ import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedPa
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
-import { Graphics } from 'pixi.js';
+import { Graphics, Text } from 'pixi.js';
 
 const params = {
   seed: seedParam(),
@@ -140,6 +140,15 @@ const { shell, app } = game;
 
 const g = new Graphics();
 app.stage.addChild(g);
+/** The pointer to the nearest beacon left: its distance, beside an arrow at the screen's edge (or over the beacon in view). */
+const pointer = new Text({
+  text: '',
+  style: { fill: 0xffe066, fontSize: 14, fontWeight: '700', fontFamily: 'system-ui, sans-serif', stroke: { color: 0x06213a, width: 3 } },
+});
+pointer.anchor.set(0.5);
+app.stage.addChild(pointer);
+/** What the pointer shows: the nearest beacon's index (-1: none left), its distance (m) and whether it is on screen. */
+const aim = { index: -1, distance: 0, onScreen: false };
 // The gauges: a text block in the status row above the scene (on its dark backing, never cut off).
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
@@ -194,6 +203,53 @@ function draw(): void {
       by = sy(handles.beacons[2 * i + 1]!);
     g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
     g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+  }
+  // The nearest beacon left: an arrow at the screen's edge pointing to it while it is off screen,
+  // with its distance (there was nothing to say where the beacons are).
+  aim.index = -1;
+  let best = Infinity;
+  for (let i = 0; i < taken.length; i++) {
+    if (taken[i]) continue;
+    const d = Math.hypot(handles.beacons[2 * i]! - c.Position.x[e]!, handles.beacons[2 * i + 1]! - c.Position.y[e]!);
+    if (d < best) {
+      best = d;
+      aim.index = i;
+    }
+  }
+  pointer.visible = aim.index >= 0;
+  if (aim.index >= 0) {
+    const bx = sx(handles.beacons[2 * aim.index]!),
+      by = sy(handles.beacons[2 * aim.index + 1]!);
+    const m = 34;
+    aim.distance = best;
+    aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
+    // From the hull's place on screen toward the beacon, stopped at the margin.
+    const hx = sx(c.Position.x[e]!),
+      hy = sy(c.Position.y[e]!);
+    let px = bx,
+      py = by;
+    if (!aim.onScreen) {
+      const dx = bx - hx,
+        dy = by - hy;
+      const t = Math.min(
+        dx > 0 ? (W - m - hx) / dx : dx < 0 ? (m - hx) / dx : Infinity,
+        dy > 0 ? (H - m - hy) / dy : dy < 0 ? (m - hy) / dy : Infinity,
+      );
+      px = hx + dx * t;
+      py = hy + dy * t;
+      const ang = Math.atan2(dy, dx),
+        ca = Math.cos(ang),
+        sa = Math.sin(ang);
+      g.poly([px + 14 * ca, py + 14 * sa, px - 8 * ca - 8 * sa, py - 8 * sa + 8 * ca, px - 8 * ca + 8 * sa, py - 8 * sa - 8 * ca]).fill(
+        0xffe066,
+      );
+      pointer.x = px - 26 * ca;
+      pointer.y = py - 26 * sa;
+    } else {
+      pointer.x = bx;
+      pointer.y = by - 2.4 * k - 12;
+    }
+    pointer.text = `${best.toFixed(0)} m`;
   }
   // Hull: a rounded rectangle with a sail, rotated by the hull's angle.
   const a = c.Angle.value[e]!,
@@ -261,6 +317,8 @@ const panel = createPanel(
 );
 
 shell.expose({
+  /** The pointer to the nearest beacon left: its index (-1: none), distance (m) and whether it is on screen. */
+  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text }),
   params,
   panel,
   state,

@@ -69,6 +69,18 @@ describe('projects', () => {
 
   it('submarine: D drives the screw ahead, W floods the tanks', async () => {
     const g = await h.openGame('submarine');
+    // At the start no beacon is on screen; an arrow at the edge points to the nearest with its distance.
+    const aim = await g.page.evaluate(() =>
+      (
+        window.game as unknown as {
+          beaconPointer(): { index: number; distance: number; onScreen: boolean; visible: boolean; text: string };
+        }
+      ).beaconPointer(),
+    );
+    expect(aim.index).toBeGreaterThanOrEqual(0);
+    expect(aim.visible).toBe(true);
+    expect(aim.onScreen).toBe(false);
+    expect(aim.text).toBe(`${aim.distance.toFixed(0)} m`);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;
