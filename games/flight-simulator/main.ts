@@ -317,6 +317,100 @@ if (compact) {
 }
 let readoutFrame = 0;
 
+// The attitude indicator (artificial horizon), drawn in the cockpit view at the top of the scene (clear of the touch stick):
+// sky over ground split by the horizon, turned by the roll and moved by the pitch (PITCH_PX a
+// degree), a pitch ladder every 10 degrees, the bank scale, and the fixed aircraft symbol.
+const HORIZON_SIZE = 150;
+const PITCH_PX = 2.2;
+const horizon = document.createElement('canvas');
+horizon.width = HORIZON_SIZE * devicePixelRatio;
+horizon.height = HORIZON_SIZE * devicePixelRatio;
+horizon.dataset.sceneOverlay = '';
+horizon.setAttribute('aria-label', 'attitude indicator');
+horizon.style.cssText = `position: absolute; left: 50%; top: 8px; width: ${HORIZON_SIZE}px; height: ${HORIZON_SIZE}px; transform: translateX(-50%); pointer-events: none; z-index: 5; display: none`;
+pageLayout().stage.append(horizon);
+/** What the indicator showed last: pitch and roll, degrees (tests read them). */
+const shownAttitude = { pitch: 0, roll: 0, visible: false };
+
+function drawHorizon(pitch: number, roll: number): void {
+  const g = horizon.getContext('2d');
+  if (!g) return;
+  const S = HORIZON_SIZE,
+    c = S / 2;
+  g.setTransform(devicePixelRatio, 0, 0, devicePixelRatio, 0, 0);
+  g.clearRect(0, 0, S, S);
+  g.save();
+  g.beginPath();
+  g.arc(c, c, c - 2, 0, 2 * Math.PI);
+  g.clip();
+  g.translate(c, c);
+  g.rotate((-roll * Math.PI) / 180);
+  const dy = pitch * PITCH_PX;
+  g.fillStyle = '#3d8fd6';
+  g.fillRect(-S, -2 * S + dy, 2 * S, 2 * S);
+  g.fillStyle = '#7a5230';
+  g.fillRect(-S, dy, 2 * S, 2 * S);
+  g.strokeStyle = '#ffffff';
+  g.lineWidth = 2;
+  g.beginPath();
+  g.moveTo(-S, dy);
+  g.lineTo(S, dy);
+  g.stroke();
+  g.lineWidth = 1;
+  g.font = '9px system-ui, sans-serif';
+  g.fillStyle = '#ffffff';
+  for (let p = -30; p <= 30; p += 10) {
+    if (p === 0) continue;
+    const y = dy - p * PITCH_PX,
+      half = p % 20 === 0 ? 22 : 14;
+    g.beginPath();
+    g.moveTo(-half, y);
+    g.lineTo(half, y);
+    g.stroke();
+    g.fillText(String(Math.abs(p)), half + 3, y + 3);
+  }
+  g.restore();
+  // Bank marks at 0, 10, 20, 30, 60 degrees each side, and the bank pointer.
+  g.strokeStyle = '#ffffff';
+  g.lineWidth = 2;
+  for (const b of [-60, -30, -20, -10, 0, 10, 20, 30, 60]) {
+    const a = ((b - 90) * Math.PI) / 180,
+      r1 = c - 4,
+      r2 = c - (b % 30 === 0 ? 14 : 9);
+    g.beginPath();
+    g.moveTo(c + r1 * Math.cos(a), c + r1 * Math.sin(a));
+    g.lineTo(c + r2 * Math.cos(a), c + r2 * Math.sin(a));
+    g.stroke();
+  }
+  const pa = ((-roll - 90) * Math.PI) / 180;
+  g.fillStyle = '#ffd166';
+  g.beginPath();
+  g.moveTo(c + (c - 16) * Math.cos(pa), c + (c - 16) * Math.sin(pa));
+  g.lineTo(c + (c - 26) * Math.cos(pa + 0.09), c + (c - 26) * Math.sin(pa + 0.09));
+  g.lineTo(c + (c - 26) * Math.cos(pa - 0.09), c + (c - 26) * Math.sin(pa - 0.09));
+  g.fill();
+  // The aircraft symbol: wings and a centre dot, fixed.
+  g.strokeStyle = '#ffd166';
+  g.lineWidth = 4;
+  g.beginPath();
+  g.moveTo(c - 42, c);
+  g.lineTo(c - 14, c);
+  g.lineTo(c - 8, c + 7);
+  g.moveTo(c + 42, c);
+  g.lineTo(c + 14, c);
+  g.lineTo(c + 8, c + 7);
+  g.stroke();
+  g.fillStyle = '#ffd166';
+  g.beginPath();
+  g.arc(c, c, 3, 0, 2 * Math.PI);
+  g.fill();
+  g.strokeStyle = '#0b0f14';
+  g.lineWidth = 3;
+  g.beginPath();
+  g.arc(c, c, c - 2, 0, 2 * Math.PI);
+  g.stroke();
+}
+
 function frame(): void {
   const world = shell.world;
   if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
@@ -344,6 +438,15 @@ function frame(): void {
     app.camera.lookAt(look);
   }
   engine.set(state.crashed ? 0 : state.throttle);
+  const cockpit = state.camera === 'cockpit';
+  horizon.style.display = cockpit ? 'block' : 'none';
+  shownAttitude.visible = cockpit;
+  if (cockpit) {
+    const i = instruments(world);
+    shownAttitude.pitch = i.pitch;
+    shownAttitude.roll = i.roll;
+    drawHorizon(i.pitch, i.roll);
+  }
   if (readoutFrame++ % 6 === 0) updateInstruments(world);
 }
 
@@ -429,6 +532,8 @@ const panel = createPanel(
 );
 
 shell.expose({
+  /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */
+  attitude: () => ({ ...shownAttitude }),
   params,
   panel,
   state,

@@ -107,6 +107,21 @@ describe('projects', () => {
     await g.close();
   });
 
+  it('flight-simulator: the cockpit view shows an attitude indicator that follows the roll', async () => {
+    const g = await h.openGame('flight-simulator');
+    type Att = { attitude(): { pitch: number; roll: number; visible: boolean } };
+    expect(await g.page.evaluate(() => (window.game as unknown as Att).attitude().visible)).toBe(false);
+    await g.press('c');
+    await g.waitFor(() => (window.game as unknown as Att).attitude().visible, null);
+    expect(await g.page.locator('canvas[aria-label="attitude indicator"]').isVisible()).toBe(true);
+    // Rolling left: the indicator's roll goes negative (the instruments' sign), by more than 5 degrees.
+    await g.page.keyboard.down('ArrowLeft');
+    await g.waitFor(() => (window.game as unknown as Att).attitude().roll < -5, null, 30_000);
+    await g.page.keyboard.up('ArrowLeft');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('flight-simulator: Shift opens the throttle, the down arrow pitches the nose up', async () => {
     const g = await h.openGame('flight-simulator');
     type Flight = Game & { state: { throttle: number; elevator: number }; instruments(): { pitch: number; speed: number } };
