@@ -30,6 +30,7 @@ import {
   BoxGeometry,
   BufferAttribute,
   BufferGeometry,
+  CylinderGeometry,
   Line,
   LineBasicMaterial,
   Mesh,
@@ -42,11 +43,14 @@ import {
   Vector3,
 } from 'three';
 import {
+  BALL_RADIUS,
   buildWreckingBall,
+  CHAIN_LINKS,
   CLEAR_FRACTION,
   fallenCount,
   hookPosition,
   JIB_HEIGHT,
+  LINK_RADIUS,
   RADIUS_RANGE,
   scorePieces,
   type WreckingBallHandles,
@@ -174,12 +178,16 @@ function setDebug(on: boolean): void {
   panel.refresh();
 }
 
+/** The drawn chain's unit cylinder (see drawChain), also the links' own, hidden, shape. */
+const chainGeometry = new CylinderGeometry(1, 1, 1, 10);
+
 /** Colours every body of the level (after each reset). */
 function dress(): void {
   const h = handles;
   for (const p of h.pieces) renderer.setColor(p.body, COLORS[p.kind]);
   renderer.setColor(h.ball, COLORS.ball);
-  for (const l of h.links) renderer.setColor(l, COLORS.link);
+  // The capsule links are drawn by the chain rod (drawChain), not one by one.
+  for (const l of h.links) renderer.setShape(l, { geometry: chainGeometry, scale: 1e-4 });
   renderer.setColor(h.mast, COLORS.mast);
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
 }
@@ -210,6 +218,53 @@ cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
 const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b }));
 cable.frustumCulled = false;
 app.scene.add(cable);
+// The chain, drawn as one: a steel rod from the hook through every link's centre to the top of the
+// ball, so it reads as a chain whatever the links' joints give (the capsule links themselves were
+// drawn apart, with gaps between them, whenever a joint stretched under the swing).
+const chainMaterial = new MeshStandardMaterial({ color: COLORS.link, roughness: 0.45, metalness: 0.7 });
+const chainSegments = Array.from({ length: CHAIN_LINKS + 1 }, () => {
+  const m = new Mesh(chainGeometry, chainMaterial);
+  m.castShadow = true;
+  m.frustumCulled = false;
+  app.scene.add(m);
+  return m;
+});
+const chainFrom = new Vector3(),
+  chainTo = new Vector3(),
+  chainDir = new Vector3(),
+  chainUp = new Vector3(0, 1, 0),
+  chainAt = [0, 0, 0],
+  ballAt = [0, 0, 0];
+/** Places segment `i` of the drawn chain from chainFrom to chainTo (radius a link's, a little thicker). */
+function placeSegment(i: number): void {
+  const m = chainSegments[i]!;
+  chainDir.subVectors(chainTo, chainFrom);
+  const length = chainDir.length();
+  m.visible = length > 1e-6;
+  if (!m.visible) return;
+  m.position.addVectors(chainFrom, chainTo).multiplyScalar(0.5);
+  m.quaternion.setFromUnitVectors(chainUp, chainDir.divideScalar(length));
+  m.scale.set(1.3 * LINK_RADIUS, length, 1.3 * LINK_RADIUS);
+}
+/** Draws the chain: hook, link centres, the ball's top (toward the last link). */
+function drawChain(hook: ArrayLike<number>): void {
+  chainFrom.set(hook[0]!, hook[1]!, hook[2]!);
+  const links = handles.links;
+  for (let i = 0; i < links.length; i++) {
+    if (!renderer.drawnPosition(links[i]!, chainAt)) continue;
+    chainTo.set(chainAt[0]!, chainAt[1]!, chainAt[2]!);
+    placeSegment(i);
+    chainFrom.copy(chainTo);
+  }
+  if (renderer.drawnPosition(handles.ball, ballAt)) {
+    chainTo.set(ballAt[0]!, ballAt[1]!, ballAt[2]!);
+    chainDir.subVectors(chainFrom, chainTo);
+    const d = chainDir.length();
+    if (d > BALL_RADIUS) chainTo.addScaledVector(chainDir, BALL_RADIUS / d);
+    placeSegment(links.length);
+  }
+}
+
 // Where a click sent the hook: a ring on the ground until the hook is there.
 const goalMarker = new Mesh(new RingGeometry(0.35, 0.5, 32), new MeshBasicMaterial({ color: 0xffd166, transparent: true, opacity: 0.8 }));
 goalMarker.rotation.x = -Math.PI / 2;
@@ -360,6 +415,7 @@ function frame(): void {
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
+  drawChain(hp);
   cablePositions[0] = hp[0]!;
   cablePositions[1] = JIB_HEIGHT;
   cablePositions[2] = hp[2]!;
@@ -384,6 +440,15 @@ function frame(): void {
 // ---- window.game ---------------------------------------------------------------------------
 
 shell.expose({
+  /** The drawn chain: its visible segments and the gap, m, between its end and the ball's surface (0 when whole). */
+  chain: () => {
+    const end = chainSegments[chainSegments.length - 1]!;
+    const tip = new Vector3(0, 0.5, 0).applyQuaternion(end.quaternion).multiplyScalar(end.scale.y);
+    const low = end.position.clone().add(tip);
+    renderer.drawnPosition(handles.ball, ballAt);
+    const gap = Math.abs(Math.hypot(low.x - ballAt[0]!, low.y - ballAt[1]!, low.z - ballAt[2]!) - BALL_RADIUS);
+    return { segments: chainSegments.filter((m) => m.visible).length, gap };
+  },
   params,
   panel,
   drag,
