@@ -265,6 +265,23 @@ function drawChain(hook: ArrayLike<number>): void {
   }
 }
 
+// The camera follows the action: the orbit's target eases toward a point between the mast and the
+// ball (FOLLOW of the way a frame), and the camera moves with it, so a player's own orbit and zoom
+// are kept while the ball swings out to the far side of the crane.
+const FOLLOW = 0.04;
+const followGoal = new Vector3(),
+  followStep = new Vector3(),
+  followBall = [0, 0, 0];
+/** Eases the camera and its orbit target toward the action (see FOLLOW). */
+function followAction(): void {
+  const controls = app.controls;
+  if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
+  followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
+  followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
+  controls.target.add(followStep);
+  app.camera.position.add(followStep);
+}
+
 // Where a click sent the hook: a ring on the ground until the hook is there.
 const goalMarker = new Mesh(new RingGeometry(0.35, 0.5, 32), new MeshBasicMaterial({ color: 0xffd166, transparent: true, opacity: 0.8 }));
 goalMarker.rotation.x = -Math.PI / 2;
@@ -416,6 +433,7 @@ function frame(): void {
   jib.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
+  followAction();
   cablePositions[0] = hp[0]!;
   cablePositions[1] = JIB_HEIGHT;
   cablePositions[2] = hp[2]!;
@@ -440,6 +458,8 @@ function frame(): void {
 // ---- window.game ---------------------------------------------------------------------------
 
 shell.expose({
+  /** The camera's orbit target, m (it follows the ball; see followAction). */
+  cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The drawn chain: its visible segments and the gap, m, between its end and the ball's surface (0 when whole). */
   chain: () => {
     const end = chainSegments[chainSegments.length - 1]!;

@@ -54,8 +54,18 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(drawn.capsules).toBe(0); // the chain's links: drawn as the rod (drawChain), their own meshes hidden
     expect(drawn.spheres).toBe(1); // the ball
     const a0 = await g.page.evaluate(() => (window.game as unknown as WB).handles().crane.angle);
+    const t0 = await g.page.evaluate(() => (window.game as unknown as { cameraTarget(): number[] }).cameraTarget());
     await g.page.keyboard.down('a');
     await g.waitFor((a) => (window.game as unknown as WB).handles().crane.angle > a + 0.05, a0, 20_000);
+    // The camera follows the ball as the jib slews (its orbit target moves; it was fixed).
+    await g.waitFor(
+      (t) => {
+        const now = (window.game as unknown as { cameraTarget(): number[] }).cameraTarget();
+        return Math.hypot(now[0]! - t[0]!, now[2]! - t[2]!) > 0.2;
+      },
+      t0,
+      20_000,
+    );
     await g.page.keyboard.up('a');
     // A click on the ground in front of the crane sends the hook there (the goal is set at once).
     await g.press('p');
