@@ -21,6 +21,7 @@ import {
   step as physicsStep,
   pinClothPoint,
   query,
+  removeBody,
   setWind,
   slotOf,
 } from '@bitphysics/physics';
@@ -211,6 +212,10 @@ shell.expose({
   /** Links left, and links torn since the reset. */
   links: () => query(shell.world, [shell.world.components.ClothLink]).length,
   torn: () => torn,
+  /** Triangles the cloth layer draws (see ClothLayer.triangles). */
+  triangles: () => layer?.triangles ?? 0,
+  /** Tears one link (a link handle of `cloth().links`) as a strain past the tear would (tests). */
+  removeLink: (h: number) => removeBody(shell.world, h),
   /** Runs the lab's step n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) labStep(shell.world);

@@ -191,6 +191,32 @@ describe('lab-cloth', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('a torn link takes out the two triangles beside it, not the two cells', async () => {
+    // A fresh 16-point cloth, paused: 2 x 15 x 15 = 450 triangles. Removing one interior structural
+    // link (createCloth's order: each point's right link, then its down link) leaves 448 (the two
+    // triangles that have it as an edge); dropping whole cells left 446.
+    const w = await open('lab-cloth', { size: 16, wind: 0 }, ['Drag']);
+    const counts = await w.page.evaluate(async () => {
+      const game = window.game as unknown as LabWindow & {
+        cloth(): { links: ArrayLike<number> };
+        triangles(): number;
+        removeLink(h: number): void;
+      };
+      game.paused = true;
+      const before = game.triangles();
+      // Point (row 5, column 5) is the 86th point; links before it: 2 a point, minus the last
+      // column's missing right links (5 rows) and none missing down yet: its right link is 2 * 85 - 5.
+      game.removeLink(game.cloth().links[2 * 85 - 5]!);
+      return { before };
+    });
+    await w.frames(2);
+    const after = await w.page.evaluate(() => (window.game as unknown as { triangles(): number }).triangles());
+    expect(counts.before).toBe(450);
+    expect(after).toBe(448);
+    expect(w.errors).toEqual([]);
+    await w.close();
+  });
+
   it('the default wind visibly sways the cloth', async () => {
     // A new page at the default wind (7 m/s): after 3 s the hem's middle point has moved downwind by
     // more than 0.3 m (measured headless at 32 points a side: 0.7 m; the old drag moved it 3 cm).

@@ -18,7 +18,8 @@ export interface ClothLayerOptions {
 
 /**
  * Draws a cloth (from `createCloth`) as a textured mesh whose vertices follow the points
- * (interpolated), two triangles a grid cell. A cell disappears once any of its four edge links has
+ * (interpolated), two triangles a grid cell. A triangle disappears once one of its two edge links
+ * (structural: top and left for the upper-left one, right and bottom for the lower-right one) has
  * torn (been removed). Reads Position, PreviousPosition and which link handles are still alive.
  */
 export class ClothLayer {
@@ -28,6 +29,8 @@ export class ClothLayer {
   /** Per cell: the handles of its top, left, bottom and right structural links. */
   private readonly cellLinks: Float64Array;
   private builtVersion = -1;
+  /** Triangles drawn since the last tear (two a whole cell, one a cell torn on one side). */
+  triangles = 0;
 
   constructor(
     private readonly world: PhysicsWorld,
@@ -98,22 +101,24 @@ export class ClothLayer {
     for (let r = 0; r + 1 < R; r++)
       for (let c = 0; c + 1 < C; c++) {
         const q = 4 * (r * (C - 1) + c);
-        let whole = true;
-        for (let s = 0; s < 4; s++)
-          if (!isAlive(this.world, this.cellLinks[q + s]!)) {
-            whole = false;
-            break;
-          }
-        if (!whole) continue;
         const i = r * C + c;
-        idx[n++] = i;
-        idx[n++] = i + 1;
-        idx[n++] = i + C;
-        idx[n++] = i + 1;
-        idx[n++] = i + C + 1;
-        idx[n++] = i + C;
+        const L = this.cellLinks;
+        // Each of the cell's two triangles stays while its own two edges hold: the upper-left one
+        // (top and left links), the lower-right one (right and bottom). A tear through a cell takes out
+        // one triangle, so a rip reads as a cut, not a row of square holes.
+        if (isAlive(this.world, L[q]!) && isAlive(this.world, L[q + 1]!)) {
+          idx[n++] = i;
+          idx[n++] = i + 1;
+          idx[n++] = i + C;
+        }
+        if (isAlive(this.world, L[q + 3]!) && isAlive(this.world, L[q + 2]!)) {
+          idx[n++] = i + 1;
+          idx[n++] = i + C + 1;
+          idx[n++] = i + C;
+        }
       }
     this.mesh.geometry.indices = idx.subarray(0, n);
+    this.triangles = n / 3;
     this.builtVersion = this.world.cloth.version;
   }
 
