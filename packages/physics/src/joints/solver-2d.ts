@@ -3,6 +3,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { removeJointUnchecked } from './remove.js';
+import { fixedSpring } from './spring.js';
 import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state-2d.js';
 import { JointFlag, JointType } from './store-2d.js';
 
@@ -242,33 +243,6 @@ function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: num
   rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
   rows[o + 1] = 1 / (1 + 1 / a);
   rows[o + 2] = 1 / (1 + a);
-}
-
-/**
- * The coefficients of a linear spring of fixed stiffness (distance, prismatic and wheel joints) at
- * rows[o..o+1]: the bias rate omega / (2 zeta + h omega) (1/s, as `soft`) and the softness
- * gamma = kRef / a (a = h omega (2 zeta + h omega)), so a row solves
- * impulse = -(Cdot + bias C + gamma lambda) / (K + gamma) with K the inverse effective mass of the
- * moment (Catto, "Soft Constraints", GDC 2011: gamma = 1 / (h (c + h k))). The stiffness
- * k = omega^2 / kRef and damping c = 2 zeta omega / kRef come from `kRef`, a mass that no motion
- * changes (mA + mB + (iA |rA|^2 + iB |rB|^2) / 2, half the trace of the point block), so the spring has
- * a potential 1/2 k C^2 and does no work around a swing. Box2D takes the stiffness from the effective
- * mass along the row, which a lever's rotation changes: a distance spring on a 5 m lever gained
- * 6.4e5 J. With no lever (kRef = K) the update is Box2D's soft row. A spring so soft that a rounds to
- * 0 gives gamma = Infinity (the row only lets go of its impulse); one so stiff that a overflows gives
- * the rigid 1 / h, 0.
- */
-function fixedSpring(rows: Float64Array, o: number, hertz: number, zeta: number, h: number, kRef: number): void {
-  const omega = 2 * Math.PI * hertz;
-  const hw = h * omega;
-  const a = hw * (2 * zeta + hw);
-  if (!(a > 0)) {
-    rows[o] = 0;
-    rows[o + 1] = Infinity;
-    return;
-  }
-  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
-  rows[o + 1] = kRef / a;
 }
 
 /**

@@ -4,6 +4,7 @@ import { classifyBody3D } from '../collision/shapes-3d.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
+import { fixedSpring } from './spring.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
@@ -395,30 +396,6 @@ function linearK(sb: Float64Array, T: Float64Array, a: number, b: number, ux: nu
 }
 
 /**
- * The bias rate (out[0], 1/s, as `makeSoft`) and softness gamma = kRef / a (out[1]) of a linear spring
- * of fixed stiffness k = omega^2 / kRef and damping c = 2 zeta omega / kRef, a = h omega (2 zeta + h
- * omega) (Catto, "Soft Constraints", GDC 2011: gamma = 1 / (h (c + h k))). A row then moves its
- * impulse by -(cdot + bias C + gamma lambda) / (K + gamma), K the inverse effective mass of the moment.
- * `kRef` is a mass no motion changes (`referenceK`), so the spring has a potential 1/2 k C^2 and does
- * no work around a swing (Box2D takes the stiffness from K, which a lever's rotation changes: a 20 Hz
- * distance spring on a 25 m lever gained 1.7e24 J). With no lever the update is Box2D's soft row. A
- * spring so soft that a rounds to 0 gives gamma = Infinity (the row lets go of its impulse); one so
- * stiff that a overflows gives the rigid 1 / h, 0.
- */
-function fixedSpring(out: Float64Array, hertz: number, zeta: number, h: number, kRef: number): void {
-  const omega = 2 * Math.PI * hertz,
-    hw = h * omega,
-    a = hw * (2 * zeta + hw);
-  if (!(a > 0)) {
-    out[0] = 0;
-    out[1] = Infinity;
-    return;
-  }
-  out[0] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
-  out[1] = kRef / a;
-}
-
-/**
  * The inverse mass of a point joint averaged over directions, a third of the trace of its 3 x 3 block:
  * mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3, kg^-1, with the world anchors ra,
  * rb of this moment. Rotating a body turns its anchor and its inverse inertia together, so no motion
@@ -583,7 +560,7 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
         if (useBias) {
           // A spring of fixed stiffness (see fixedSpring): its softness gamma from the reference mass,
           // the row's mass from the effective mass k of the moment.
-          fixedSpring(spring, s.hertz[j]!, s.dampingRatio[j]!, hs, referenceK(sb, T, a, b));
+          fixedSpring(spring, 0, s.hertz[j]!, s.dampingRatio[j]!, hs, referenceK(sb, T, a, b));
           const gamma = spring[1]!,
             soft = gamma < Infinity;
           spring[1] = soft ? k / (k + gamma) : 0;
