@@ -5,19 +5,19 @@
  * systems above it, and this file on top: nothing below imports it.
  */
 import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs';
-import { createClothState } from './cloth/state.js';
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
-import { createForceLawSettings } from './forces/settings.js';
 import { removeSpringsOf } from './forces/spring.js';
-import { INTEGRATOR_NAMES } from './integrators/names.js';
 import { wakeTouching } from './islands/sleep.js';
 import { removeJointsOf } from './joints/remove.js';
-import { createJointState } from './joints/state-2d.js';
 import { Rng } from './math/rng.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
+import { createClothState } from './world/cloth-state.js';
 import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
+import { createForceLawSettings } from './world/force-settings.js';
+import { INTEGRATOR_NAMES } from './world/integrator-names.js';
+import { createJointState } from './world/joint-state-2d.js';
 import { useLeanEcsStorage } from './world/lean-ecs.js';
 import {
   addComponentIfMissing,

@@ -51,9 +51,6 @@ export type { Cloth, ClothOptions } from './cloth/create.js';
 export { clothPointIndex, createCloth } from './cloth/create.js';
 export { pinClothPoint } from './cloth/pin.js';
 export { clothSystem } from './cloth/solver.js';
-export type { ClothState } from './cloth/state.js';
-export type { ClothLinkStore } from './cloth/store.js';
-export { ClothLinkKind } from './cloth/store.js';
 export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase/grid.js';
 export type { ContactEventList, ContactEventLists } from './collision/contact-events.js';
 export { contactEvents, HIT_SPEED } from './collision/contact-events.js';
@@ -156,16 +153,12 @@ export {
   removeSurfacesOf,
   setControlDeflection,
 } from './forces/lifting-surface.js';
-export type { ForceLawSettings, GravityMethod, WindField } from './forces/settings.js';
-export { COULOMB_SI, G_SI, MAX_WIND_MODES } from './forces/settings.js';
 export { springSystem } from './forces/spring.js';
 export { burnFuelSystem, thrustSystem } from './forces/thrust.js';
 export { vortexSystem } from './forces/vortex.js';
 export { eulerAcceleration } from './integrators/euler-equations.js';
 export type { Integrator } from './integrators/integrate.js';
 export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
-export type { IntegratorName } from './integrators/names.js';
-export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './integrators/names.js';
 export { isSleeping, sleepSystem, wakeAll, wakeBody, wakeSystem } from './islands/sleep.js';
 export type {
   DistanceJointOptions,
@@ -218,9 +211,6 @@ export {
 } from './joints/api-3d.js';
 export type { Rope, RopeOptions } from './joints/rope.js';
 export { createRope } from './joints/rope.js';
-export type { JointBreakEvents, JointSettings, JointState } from './joints/state-2d.js';
-export type { JointStore, JointTypeCode } from './joints/store-2d.js';
-export { JOINT_TYPE_NAMES, JointFlag, JointType } from './joints/store-2d.js';
 export type { Joint3DStore } from './joints/store-3d.js';
 export { Joint3DFlag, Joint3DType, joints3DOf } from './joints/store-3d.js';
 export { rotateFrom, rotateInPlace, rotateVector, rotateVectorInverse } from './math/quaternion.js';
@@ -261,7 +251,6 @@ export type { MassProperties3D } from './shapes/mass-3d.js';
 export { boxMass, capsuleMass, cylinderMass, hullMass, hullVolume, principalAxes, sphereMass } from './shapes/mass-3d.js';
 export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './shapes/mesh-3d.js';
 export { addHeightField3D, addTriangleMesh3D, MAX_HEIGHT_FIELD_POINTS, meshesOf } from './shapes/mesh-3d.js';
-export type { ShapeStore } from './shapes/store-2d.js';
 export type { Shape3DStore } from './shapes/store-3d.js';
 export { Shape3DKind, shapes3DOf } from './shapes/store-3d.js';
 export { stateHash } from './snapshot/hash.js';
@@ -281,6 +270,9 @@ export type { AddSystemOptions } from './step/step.js';
 export { addSystem, evaluateForces, removeSystem, step, stepMany } from './step/step.js';
 export { enableThreads } from './threads/enable.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
+export type { ClothState } from './world/cloth-state.js';
+export type { ClothLinkStore } from './world/cloth-store.js';
+export { ClothLinkKind } from './world/cloth-store.js';
 export type { Components, Vec3Store } from './world/components.js';
 export {
   createComponents,
@@ -293,12 +285,20 @@ export {
   storesAllocatedWith,
 } from './world/components.js';
 export { NonFiniteStateError } from './world/errors.js';
+export type { ForceLawSettings, GravityMethod, WindField } from './world/force-settings.js';
+export { COULOMB_SI, G_SI, MAX_WIND_MODES } from './world/force-settings.js';
 export type { EntityKind } from './world/handles.js';
 /**
  * Entity handles: the API hands out and accepts handles (slot + generation * 2^25); stores are indexed
  * by slot. Index stores with slotOf(e); query() gives slots; handleOf turns a slot into a handle.
  */
 export { handleOf, isAlive, resolveEntity, SLOT_RANGE, slotOf } from './world/handles.js';
+export type { IntegratorName } from './world/integrator-names.js';
+export { INTEGRATOR_NAMES, INTEGRATOR_ORDER } from './world/integrator-names.js';
+export type { JointBreakEvents, JointSettings, JointState } from './world/joint-state-2d.js';
+export type { JointStore, JointTypeCode } from './world/joint-store-2d.js';
+export { JOINT_TYPE_NAMES, JointFlag, JointType } from './world/joint-store-2d.js';
 export type { PhysicsWorld, PhysicsWorldContext, PhysicsWorldOptions, StageTimings } from './world/options.js';
 export { addComponentIfMissing, disposeWorld, MAX_CAPACITY, MAX_TIME_STEP, registerForceLaw, threadsReady } from './world/options.js';
 export { Not, query } from './world/query.js';
+export type { ShapeStore } from './world/shape-store-2d.js';

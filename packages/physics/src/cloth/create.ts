@@ -1,9 +1,10 @@
 import { addComponent } from 'bitecs';
 import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
-import { ensureJointArrays } from '../joints/state-2d.js';
 import { trustFiniteOutput } from '../step/finite.js';
 import { installSystem } from '../step/install.js';
+import { ClothLinkKind } from '../world/cloth-store.js';
 import { currentHandle, isAlive, slotOf } from '../world/handles.js';
+import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import {
@@ -16,7 +17,6 @@ import {
   describe,
 } from '../world/validate.js';
 import { clothSystem } from './solver.js';
-import { ClothLinkKind } from './store.js';
 
 /**
  * Options of `createCloth`. Unknown fields are rejected.

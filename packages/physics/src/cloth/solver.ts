@@ -1,10 +1,10 @@
 import { removeEntity } from 'bitecs';
-import { pushBreak } from '../joints/state-2d.js';
+import type { ClothState } from '../world/cloth-state.js';
 import type { Components } from '../world/components.js';
 import { currentHandle } from '../world/handles.js';
+import { pushBreak } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import type { ClothState } from './state.js';
 
 /**
  * The cloth solver (stage 6, `constraints`): every `ClothLink` is a distance constraint solved on

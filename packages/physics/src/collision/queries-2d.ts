@@ -1,9 +1,9 @@
 import { hasComponent } from 'bitecs';
 import { type ConvexGeometry, createGeometry } from '../shapes/geometry-2d.js';
-import { SHAPE_STRIDE } from '../shapes/store-2d.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import { assertVector, describe } from '../world/validate.js';
 
 /**

@@ -1,10 +1,11 @@
 /**
  * The functions that change a world's force-law settings (gravitation, electrostatics, wind) and
- * evaluate the wind; the settings themselves are data in settings.ts.
+ * evaluate the wind; the settings themselves are data in world/force-settings.ts.
  */
 
 import { cosine } from '../math/cosine.js';
 import { Rng } from '../math/rng.js';
+import { type GravityMethod, MAX_WIND_MODES } from '../world/force-settings.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
@@ -17,7 +18,6 @@ import {
 } from '../world/validate.js';
 import { barnesHutGravity } from './barnes-hut/tree.js';
 import { setBarnesHutGravity } from './gravity.js';
-import { type GravityMethod, MAX_WIND_MODES } from './settings.js';
 
 /**
  * Options of `setGravitation`.

@@ -1,7 +1,7 @@
+import type { IntegratorName } from '../world/integrator-names.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { registerFusedIntegrator } from './fused-gate.js';
 import { implicitEuler } from './implicit-euler.js';
-import type { IntegratorName } from './names.js';
 import { explicitEuler, positionVerlet, rk2, rk4, velocityVerlet } from './schemes.js';
 import { semiImplicitEuler } from './semi-implicit-euler.js';
 

@@ -1,4 +1,4 @@
-import { JointType } from '../joints/store-2d.js';
+import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 

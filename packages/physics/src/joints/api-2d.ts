@@ -2,6 +2,8 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { createSlot, currentHandle, resolveEntity, SLOT_RANGE } from '../world/handles.js';
+import { ensureJointArrays, IMPULSES } from '../world/joint-state-2d.js';
+import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
@@ -14,8 +16,6 @@ import {
 } from '../world/validate.js';
 import { addNoCollide } from './connected.js';
 import { removeJointUnchecked } from './remove.js';
-import { ensureJointArrays, IMPULSES } from './state-2d.js';
-import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from './store-2d.js';
 
 /**
  * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see

@@ -18,7 +18,7 @@ import { removeJoint3DUnchecked, removeJoints3DOf } from './remove-3d.js';
 
 export { removeJoint3DUnchecked } from './remove-3d.js';
 
-import { ensureJointArrays } from './state-2d.js';
+import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**

@@ -1,11 +1,21 @@
 import { BodyType } from '../collision/broadphase/grid.js';
 import { currentHandle } from '../world/handles.js';
+import {
+  ensureRows,
+  IMPULSES,
+  LINK_FLOATS,
+  LINK_INTS,
+  PIN_FLOATS,
+  PIN_INTS,
+  pushBreak,
+  ROW_FLOATS,
+  ROW_INTS,
+} from '../world/joint-state-2d.js';
+import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { removeJointUnchecked } from './remove.js';
 import { fixedSpring } from './spring.js';
-import { ensureRows, IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from './state-2d.js';
-import { JointFlag, JointType } from './store-2d.js';
 
 /**
  * The joint solver: Box2D v3's soft-step joints (Catto, "Solver2D", 2024, and "Soft Constraints",

@@ -4,6 +4,7 @@ import { ensureShapeState } from '../collision/manifolds-2d.js';
 import { currentHandle, resolveEntity, resolveKind, slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
+import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import {
   assertFinite,
   assertInRange,
@@ -17,7 +18,6 @@ import {
 } from '../world/validate.js';
 import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from './geometry-2d.js';
 import { shapeMassProperties } from './mass-2d.js';
-import { ensureShapeStore, SHAPE_STRIDE } from './store-2d.js';
 
 /**
  * Shapes of 2D bodies: adding them, their filter, and the body's mass from them.

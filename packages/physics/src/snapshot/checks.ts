@@ -1,6 +1,6 @@
-import { MAX_WIND_MODES } from '../forces/settings.js';
-import { INTEGRATOR_NAMES } from '../integrators/names.js';
 import { MAX_AUTO_SUBSTEPS } from '../solver/contact-scale.js';
+import { MAX_WIND_MODES } from '../world/force-settings.js';
+import { INTEGRATOR_NAMES } from '../world/integrator-names.js';
 import { MAX_TIME_STEP } from '../world/options.js';
 import { describe } from '../world/validate.js';
 

@@ -5,7 +5,7 @@ import { NonFiniteStateError } from '../world/errors.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
-import type { StageName } from './stage-names.js';
+import type { StageName } from '../world/stage-names.js';
 
 /**
  * The finiteness check `step` runs at the end of each stage: a NaN or infinity in a body's state is

@@ -7,7 +7,7 @@
  * world runs the same systems in the same order as one made with every system installed.
  */
 import type { PhysicsWorld, System } from '../world/options.js';
-import type { StageName } from './stage-names.js';
+import type { StageName } from '../world/stage-names.js';
 
 /**
  * Every built-in system's name, stage by stage, in run order: the order of the default pipeline

@@ -24,12 +24,12 @@ import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
 import { contactSolverSystem } from '../solver/contact-solver.js';
 import type { System } from '../world/options.js';
 import { query } from '../world/query.js';
+import { STAGES, type StageName } from '../world/stage-names.js';
 import { trustFiniteOutput } from './finite.js';
 import { PIPELINE_ORDER } from './install.js';
-import { STAGES, type StageName } from './stage-names.js';
 
 export type { System } from '../world/options.js';
-export { STAGES, type StageName, SUBSTEP_STAGES } from './stage-names.js';
+export { STAGES, type StageName, SUBSTEP_STAGES } from '../world/stage-names.js';
 
 /** The core's built-in systems by name (step/install.ts PIPELINE_ORDER): every world starts with these. */
 const CORE: Readonly<Record<string, System>> = {

@@ -37,10 +37,10 @@
  *   they are made on SharedArrayBuffer.
  */
 
-import { type ClothLinkStore, createClothLinkStore } from '../cloth/store.js';
-import { createJointStore, type JointStore } from '../joints/store-2d.js';
+import { type ClothLinkStore, createClothLinkStore } from './cloth-store.js';
+import { createJointStore, type JointStore } from './joint-store-2d.js';
 
-import { createEmptyShapeStore, type ShapeStore } from '../shapes/store-2d.js';
+import { createEmptyShapeStore, type ShapeStore } from './shape-store-2d.js';
 
 /**
  * A 3-vector store: one Float64Array a component.
@@ -424,11 +424,11 @@ export interface Components {
     airDensity: Float64Array;
   };
   /**
-   * A joint between two 2D bodies (its own entity: see joints/store-2d.ts for every field and
+   * A joint between two 2D bodies (its own entity: see world/joint-store-2d.ts for every field and
    * joints/api-2d.ts for addDistanceJoint, addRevoluteJoint, ...). Removing either body removes it.
    */
   Joint: JointStore;
-  /** A link of a cloth between two point bodies (its own entity: see cloth/store.ts; `createCloth` makes them). */
+  /** A link of a cloth between two point bodies (its own entity: see world/cloth-store.ts; `createCloth` makes them). */
   ClothLink: ClothLinkStore;
 }
 

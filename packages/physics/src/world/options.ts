@@ -1,13 +1,13 @@
 import { addComponent, type createEntityIndex, hasComponent, observe, onAdd, type World } from 'bitecs';
-import type { ClothState } from '../cloth/state.js';
 import type { CollisionState } from '../collision/state.js';
-import type { ForceLawSettings } from '../forces/settings.js';
-import type { IntegratorName } from '../integrators/names.js';
-import type { JointState } from '../joints/state-2d.js';
 import type { Rng } from '../math/rng.js';
-import type { StageName } from '../step/stage-names.js';
 import type { ThreadPool } from '../threads/pool.js';
+import type { ClothState } from './cloth-state.js';
 import type { Components } from './components.js';
+import type { ForceLawSettings } from './force-settings.js';
+import type { IntegratorName } from './integrator-names.js';
+import type { JointState } from './joint-state-2d.js';
+import type { StageName } from './stage-names.js';
 import { assertPositive } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
@@ -127,7 +127,7 @@ export interface PhysicsWorldContext {
   time: number;
   /** Simulated time at the start of the current (sub)step, s (set by `step`; the rocket law reads it). */
   substepStart: number;
-  /** Constants and fields the force laws read (G, softening, Coulomb constant, wind); see forces/settings.ts. */
+  /** Constants and fields the force laws read (G, softening, Coulomb constant, wind); see world/force-settings.ts. */
   readonly laws: ForceLawSettings;
   /** Whole steps taken since creation. */
   steps: number;
@@ -148,9 +148,9 @@ export interface PhysicsWorldContext {
   readonly builtins: Map<string, System>;
   /** Collision configuration, broadphase grid, contacts and solver scratch; see `CollisionState`. */
   readonly collision: CollisionState;
-  /** Joint solver state: packed rows, warm-start impulses, break events of the last step (`joints.breaks`); see joints/state-2d.ts. */
+  /** Joint solver state: packed rows, warm-start impulses, break events of the last step (`joints.breaks`); see world/joint-state-2d.ts. */
   readonly joints: JointState;
-  /** Cloth solver state (packed links, iterations, largest stretch); see cloth/state.ts. */
+  /** Cloth solver state (packed links, iterations, largest stretch); see world/cloth-state.ts. */
   readonly cloth: ClothState;
   /** Milliseconds spent in each stage in the last step. */
   readonly timings: StageTimings;
