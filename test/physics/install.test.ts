@@ -8,10 +8,14 @@ import {
   addBody,
   addBox,
   addEmitter,
+  addParticle,
   addShape3D,
   addSystem,
   createCloth,
   createPhysicsWorld,
+  createRope,
+  installBalls,
+  isAlive,
   type PhysicsWorld,
   PIPELINE,
   removeSystem,
@@ -19,10 +23,13 @@ import {
   SCENES,
   STAGES,
   type System,
+  setRadius,
   snapshot,
   stateHash,
+  step,
   stepMany,
 } from '@bitphysics/physics';
+import { addComponent } from 'bitecs';
 import { build } from 'esbuild';
 import { expect, test } from 'vitest';
 import { PIPELINE_ORDER } from '../../packages/physics/src/step/install.js';
@@ -45,6 +52,7 @@ function pipelineWithout(out: readonly System[]): Record<string, System[]> {
 const emitterSystem = FULL.spawn![PIPELINE_ORDER.spawn.indexOf('emitter')]!;
 const shapes3DSystem = FULL.collide![PIPELINE_ORDER.collide.indexOf('shapes3D')]!;
 const clothSystem = FULL.constraints![PIPELINE_ORDER.constraints.indexOf('cloth')]!;
+const BALLS = [FULL.collide![PIPELINE_ORDER.collide.indexOf('broadphase')]!, FULL.collide![PIPELINE_ORDER.collide.indexOf('narrowphase')]!];
 
 test('PIPELINE and PIPELINE_ORDER list the same stages with as many systems', () => {
   expect(PIPELINE.map((p) => p.stage)).toEqual([...STAGES]);
@@ -53,24 +61,57 @@ test('PIPELINE and PIPELINE_ORDER list the same stages with as many systems', ()
 
 test("a new world holds the core's systems; each feature's first use puts its systems at PIPELINE's place", () => {
   const world = createPhysicsWorld({ dimensions: 3, capacity: 100 });
-  expect(world.stages).toEqual(pipelineWithout([emitterSystem, shapes3DSystem, clothSystem]));
+  expect(world.stages).toEqual(pipelineWithout([emitterSystem, shapes3DSystem, clothSystem, ...BALLS]));
   addEmitter(world, { position: [0, 0, 0] });
-  expect(world.stages).toEqual(pipelineWithout([shapes3DSystem, clothSystem]));
+  expect(world.stages).toEqual(pipelineWithout([shapes3DSystem, clothSystem, ...BALLS]));
   const body = addBody(world, { position: [0, 1, 0] });
   addShape3D(world, body, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+  expect(world.stages).toEqual(pipelineWithout([clothSystem, ...BALLS]));
+  // A body with a radius is a ball: the balls' broadphase and narrowphase come with it.
+  addBody(world, { position: [3, 1, 0], radius: 0.5 });
   expect(world.stages).toEqual(pipelineWithout([clothSystem]));
   // Again: nothing more.
   addEmitter(world, { position: [1, 0, 0] });
+  addBody(world, { position: [5, 1, 0], radius: 0.5 });
   expect(world.stages).toEqual(pipelineWithout([clothSystem]));
   // A 3D joint alone brings the 3D systems too; cloth (2D only) comes with the first cloth.
   const jointed = createPhysicsWorld({ dimensions: 3, capacity: 100 });
   const a = addBody(jointed, { position: [0, 1, 0] }),
     b = addBody(jointed, { position: [1, 1, 0] });
   addBallJoint3D(jointed, { a, b, anchor: [0.5, 1, 0] });
-  expect(jointed.stages).toEqual(pipelineWithout([emitterSystem, clothSystem]));
+  expect(jointed.stages).toEqual(pipelineWithout([emitterSystem, clothSystem, ...BALLS]));
   const flat = createPhysicsWorld({ capacity: 100 });
   createCloth(flat, { rows: 2, columns: 2, origin: [0, 5] });
-  expect(flat.stages).toEqual(pipelineWithout([emitterSystem, shapes3DSystem]));
+  expect(flat.stages).toEqual(pipelineWithout([emitterSystem, shapes3DSystem, ...BALLS]));
+  // Each ball maker installs them: setRadius, an emitter whose particles have a radius, a rope with a radius.
+  const viaRadius = createPhysicsWorld({ capacity: 100 });
+  setRadius(viaRadius, addParticle(viaRadius, { position: [0, 1] }), 0.2);
+  const viaEmitter = createPhysicsWorld({ capacity: 100 });
+  addEmitter(viaEmitter, { position: [0, 0], particle: { radius: 0.05 } });
+  const viaRope = createPhysicsWorld({ capacity: 100 });
+  createRope(viaRope, { start: [0, 5], end: [2, 5], segments: 4, radius: 0.05 });
+  for (const w of [viaRadius, viaEmitter, viaRope]) expect(w.stages.collide).toEqual(expect.arrayContaining(BALLS));
+});
+
+test('a Ball given with addComponent alone: step refuses, naming installBalls, and runs once it is called', () => {
+  // A ball dropped 1.2 m onto a static ball of radius 1 (top at y = 0): once installed it rests on it
+  // (its centre near y = 0.2), where without the ball collisions it would fall through (y < -5 after 2 s).
+  const world = createPhysicsWorld({ capacity: 100, gravity: [0, -9.81] });
+  const slot = addParticle(world, { position: [0, 1.4] });
+  addComponent(world, slot, world.components.Ball);
+  world.components.Ball.radius[slot] = 0.2;
+  const before = stateHash(world);
+  expect(() => step(world)).toThrow(
+    /^step: entity \d+ has the Ball component but this world's ball collisions are not installed; .*installBalls\(world\)/,
+  );
+  expect(stateHash(world)).toBe(before);
+  installBalls(world);
+  const rest = world.components.Position;
+  // The static ball below (made after installBalls: either order works).
+  const post = addBody(world, { position: [0, -1], radius: 1, static: true });
+  expect(isAlive(world, post)).toBe(true);
+  stepMany(world, 120);
+  expect(Math.abs(rest.y[slot]! - 0.2)).toBeLessThan(0.05);
 });
 
 test('user systems keep their place around an installed built-in; a built-in a user removed stays out', () => {
@@ -121,9 +162,10 @@ test.each(Object.keys(SCENES))('scene %s: the same state to the bit as with ever
   expect(stateHash(lazy)).toBe(stateHash(full));
 });
 
-test('in a fresh process: threads > 1 without enableThreads() throws an Error that names it, and bundles no pool; a 3D ball world steps as with the 3D rows installed', async () => {
-  // A fresh process, since the 3D rows' table (solver/rows-3d.ts) and the pool maker are set for the
-  // whole process once installed. spheres-in-box (3D balls, no 3D shape or joint) runs first on the
+test('in a fresh process: threads > 1 without enableThreads() throws an Error that names it, and bundles no pool; boxes and joints step as with the ball rows installed, a 3D ball world as with the 3D rows', async () => {
+  // A fresh process, since the 3D rows' and the ball rows' tables (solver/rows-3d.ts, rows-balls.ts)
+  // and the pool maker are set for the whole process once installed. pyramid and joint-grid (no
+  // ball) run before the ball rows exist, then with them installed: the same state to the bit. spheres-in-box (3D balls, no 3D shape or joint) runs first on the
   // rows' stand-ins, then again with install3D: the same state to the bit (stateHash).
   const dir = mkdtempSync(join(tmpdir(), 'bitphysics-no-threads-'));
   const src = resolve(__dirname, '../../packages/physics/src');
@@ -132,8 +174,21 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
     entry,
     [
       `import { createPhysicsWorld, SCENES, stateHash, stepMany } from '@bitphysics/physics';`,
+      `import { installBalls } from '${src}/collision/install-balls.ts';`,
       `import { install3D } from '${src}/collision/install-3d.ts';`,
+      `import { ballRows } from '${src}/solver/rows-balls.ts';`,
       `try { createPhysicsWorld({ threads: 2 }); console.log('made'); } catch (e) { console.log((e as Error).message); }`,
+      // Boxes and joints before any ball exists (the solver skips its ball rows), then with them installed.
+      `const runWithout = (name: string, installed: boolean) => {`,
+      `  const world = createPhysicsWorld(SCENES[name]!.worldOptions({ count: 120, seed: 3 }));`,
+      `  if (installed) installBalls(world);`,
+      `  SCENES[name]!.build(world, { count: 120, seed: 3 });`,
+      `  stepMany(world, 120);`,
+      `  return stateHash(world);`,
+      `};`,
+      `const boxes = [runWithout('pyramid', false), runWithout('joint-grid', false), ballRows() === null];`,
+      `const boxesAfter = [runWithout('pyramid', true), runWithout('joint-grid', true)];`,
+      `console.log(boxes[2] && boxes[0] === boxesAfter[0] && boxes[1] === boxesAfter[1] ? 'same' : 'differ ' + boxes + ' ' + boxesAfter);`,
       `const scene = SCENES['spheres-in-box']!;`,
       `const run = (installed: boolean) => {`,
       `  const world = createPhysicsWorld(scene.worldOptions({ count: 300, seed: 3 }));`,
@@ -161,6 +216,7 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
   const { stdout } = await promisify(execFile)(process.execPath, [out], { timeout: 60_000 });
   expect(stdout.trim().split('\n')).toEqual([
     "createPhysicsWorld: threads: 2 needs the thread pool, which a program loads by calling enableThreads() once before making the world (import { enableThreads } from '@bitphysics/physics')",
+    'same',
     'same',
   ]);
   // A program that makes a world and never calls enableThreads bundles neither the workers' source nor

@@ -10,8 +10,8 @@ import {
 } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
+import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/ball-rows.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
-import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/contact-solver.js';
 import { impactChangedRows } from '../../packages/physics/src/solver/impacts.js';
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';

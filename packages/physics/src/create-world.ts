@@ -417,6 +417,8 @@ function installDefaults(world: PhysicsWorld): void {
   // A collider is always a body with a force accumulator: contacts need its start-of-step position,
   // which only bare particles may skip saving (see the `interpolation` option).
   observe(world, onAdd(c.Ball), (eid: number) => {
+    // A ball made without the package's ball makers: its collisions are not installed (step refuses).
+    if (!world.builtins.has('narrowphase')) world.collision.looseBall = eid;
     addComponentIfMissing(world, eid, c.Mass);
     addComponentIfMissing(world, eid, c.Material);
     addComponentIfMissing(world, eid, c.Force);

@@ -58,6 +58,7 @@ export type { ContactBuffer, ContactView } from './collision/contacts.js';
 export { ContactKind, forEachContact } from './collision/contacts.js';
 export type { Contact3DView } from './collision/contacts-3d-view.js';
 export { forEachContact3D } from './collision/contacts-3d-view.js';
+export { installBalls } from './collision/install-balls.js';
 export type { ContactEvents, EventList, ManifoldBuffer, ShapeCollisionState } from './collision/manifolds-2d.js';
 export type { ContactEvents3D, EventList3D } from './collision/manifolds-3d.js';
 export { currentSeparation, narrowphaseSystem } from './collision/narrowphase/balls.js';

@@ -1,4 +1,5 @@
 import { addComponent, hasComponent, removeEntity } from 'bitecs';
+import { installBalls } from '../collision/install-balls.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
@@ -110,7 +111,10 @@ const BODY_OPTIONS = [
  * @category Bodies
  */
 export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number {
-  return addBodyAs(world, options, 'addBody', BODY_OPTIONS);
+  const eid = addBodyAs(world, options, 'addBody', BODY_OPTIONS);
+  // A body with a radius is a ball: its collisions install with the first (collision/install-balls.ts).
+  if (options.radius !== undefined) installBalls(world);
+  return eid;
 }
 
 /**
@@ -528,6 +532,7 @@ export function setRadius(world: PhysicsWorld, eid: number, radius: number): voi
   }
   const c = world.components;
   if (!hasComponent(world, slot, c.Ball)) addComponent(world, slot, c.Ball);
+  installBalls(world);
   const old = c.Ball.radius[slot]!;
   c.Ball.radius[slot] = radius;
   if (hasComponent(world, slot, c.Inertia) && c.Inertia.value[slot]! > 0 && old > 0) {

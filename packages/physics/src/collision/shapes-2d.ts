@@ -6,10 +6,8 @@ import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geomet
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
-import { broadphaseSystem } from './broadphase/grid.js';
 import { pushEvent } from './events.js';
 import { growManifoldBuffer, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
-import { narrowphaseSystem } from './narrowphase/balls.js';
 import { collideHalfPlane, collideShapes, createManifold, type Manifold } from './narrowphase/manifold-2d.js';
 import { BodyType } from './state.js';
 
@@ -71,9 +69,10 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
       woken += wakeIslandForStep(world, e);
     }
     if (woken === 0) break;
+    // The balls' broadphase and narrowphase (installed with the first ball: collision/install-balls.ts).
     if (balls) {
-      broadphaseSystem(world);
-      narrowphaseSystem(world);
+      world.builtins.get('broadphase')?.(world);
+      world.builtins.get('narrowphase')?.(world);
     }
   }
   sensorEvents(world, st);

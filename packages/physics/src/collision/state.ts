@@ -216,6 +216,12 @@ export interface CollisionState {
    * latest impact in the step, s, and whether the soft substeps leave the body alone (1) or not (0).
    */
   bodyImpact: Float64Array;
+  /**
+   * An entity given the `Ball` component while the world's ball collisions were not installed
+   * (collision/install-balls.ts: the package's ball makers install them; `addComponent` alone does
+   * not), else 0. `step` refuses to run while it is set; `installBalls` clears it.
+   */
+  looseBall: number;
   /** Impact stage scratch: the bouncing contacts in order of impact, and their sort keys (s). */
   impactOrder: Int32Array;
   impactKey: Float64Array;
@@ -326,6 +332,7 @@ export function createCollisionState(
     bodyState: new Float64Array(12 * 256),
     bodyExtra: new Float64Array(6 * 256),
     bodyImpact: new Float64Array(5 * 256),
+    looseBall: 0,
     impactOrder: new Int32Array(256),
     impactKey: new Float64Array(256),
     grid: {

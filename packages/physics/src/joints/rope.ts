@@ -1,4 +1,5 @@
 import { addBodyAs, removeBody } from '../bodies/api.js';
+import { installBalls } from '../collision/install-balls.js';
 import { isAlive } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -136,6 +137,8 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
       ? new (err.constructor as typeof RangeError)(`${where}: ${err.message}`)
       : err;
   }
+  // Links with a radius collide as balls (collision/install-balls.ts).
+  if (radius > 0) installBalls(world);
   return { bodies, joints };
 }
 

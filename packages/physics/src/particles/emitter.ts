@@ -1,4 +1,5 @@
 import { addComponent, query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
+import { installBalls } from '../collision/install-balls.js';
 import { registerExternalWorldState } from '../snapshot/world-state.js';
 import { trustFiniteOutput } from '../step/finite.js';
 import { installSystem } from '../step/install.js';
@@ -1300,6 +1301,8 @@ function writeSettings(world: PhysicsWorld, em: number, s: CheckedSettings): voi
     if (p.quadraticDrag !== undefined) E.quadraticDrag[em] = p.quadraticDrag;
     if (p.gravityScale !== undefined) E.gravityScale[em] = p.gravityScale;
     if (p.radius !== undefined) E.radius[em] = p.radius;
+    // Particles with a radius collide as balls (collision/install-balls.ts).
+    if (p.radius !== undefined && p.radius > 0) installBalls(world);
     for (const k of ['colorStart', 'colorEnd', 'sizeStart', 'sizeEnd', 'alphaStart', 'alphaEnd'] as const)
       if (p[k] !== undefined) E[k][em] = p[k];
   }

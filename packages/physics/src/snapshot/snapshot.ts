@@ -1,6 +1,7 @@
 import { $internal, query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
 import { installCloth } from '../cloth/create.js';
 import { install3D } from '../collision/install-3d.js';
+import { installBalls } from '../collision/install-balls.js';
 import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
 import { setBarnesHutGravity } from '../forces/gravity.js';
 import { installEmitters } from '../particles/emitter.js';
@@ -1742,12 +1743,13 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
 }
 
 /**
- * Installs every feature's systems into a restored world (step/install.ts): the emitters', the 3D
+ * Installs every feature's systems into a restored world (step/install.ts): the emitters', the balls', the 3D
  * shapes' and joints', the cloth's and the Barnes-Hut sum, so the world runs whatever the snapshot's
  * world ran. A feature the snapshot's world never used has nothing to act on and writes nothing.
  */
 function installEveryFeature(world: PhysicsWorld): void {
   installEmitters(world);
+  installBalls(world);
   install3D(world);
   installCloth(world);
   setBarnesHutGravity(barnesHutGravity);

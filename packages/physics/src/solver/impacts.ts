@@ -156,9 +156,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
   const S = world.dimensions === 2 ? 8 : 12;
-  if (cs.bodyImpact.length < count * IMPACT_STRIDE)
-    cs.bodyImpact = new Float64Array(Math.max(count * IMPACT_STRIDE, cs.bodyImpact.length * 2));
-  cs.bodyImpact.fill(0, 0, count * IMPACT_STRIDE);
+  // cs.bodyImpact holds a zeroed row for each solver body (solver/contact-solver.ts clearBodyImpacts).
   // Bodies that carried a load last step (a warm-started contact: resting in a pile, on the floor)
   // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
   // marks them -1 until the passes are done.

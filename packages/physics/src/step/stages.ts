@@ -62,8 +62,6 @@ const CORE: Readonly<Record<string, System>> = {
   stiffSpringDamping: stiffSpringDampingSystem,
   burnFuel: burnFuelSystem,
   ballastFill: ballastFillSystem,
-  broadphase: broadphaseSystem,
-  narrowphase: narrowphaseSystem,
   shapes2D: shapeCollisionSystem,
   contactSolver: contactSolverSystem,
   continuous: continuousCollisionSystem,
@@ -147,17 +145,7 @@ function trustCore(): void {
   if (coreTrusted) return;
   coreTrusted = true;
   const forces = PIPELINE_ORDER.forces.map((name) => CORE[name]!);
-  trustFiniteOutput([
-    wakeSystem,
-    lifetimeSystem,
-    broadphaseSystem,
-    narrowphaseSystem,
-    contactSolverSystem,
-    sleepSystem,
-    burnFuelSystem,
-    ballastFillSystem,
-    ...forces,
-  ]);
+  trustFiniteOutput([wakeSystem, lifetimeSystem, contactSolverSystem, sleepSystem, burnFuelSystem, ballastFillSystem, ...forces]);
   trustFiniteOutput(
     [integrateSystem, stiffDragSystem, stiffFluidDragSystem, stiffAngularDampingSystem, stiffSpringDampingSystem],
     'linear',

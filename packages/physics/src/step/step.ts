@@ -62,6 +62,13 @@ export function step(world: PhysicsWorld): void {
         'create entities with createEntity/addBody, or make the world with a larger capacity',
     );
   }
+  const loose = world.collision.looseBall;
+  if (loose !== 0) {
+    throw new Error(
+      `step: entity ${loose} has the Ball component but this world's ball collisions are not installed; ` +
+        'make balls with addBody({ radius }), addParticle then setRadius, or an emitter, or call installBalls(world) after addComponent',
+    );
+  }
   const timings = world.timings;
   for (const s of STAGES) timings[s] = 0;
   try {

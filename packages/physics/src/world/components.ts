@@ -88,7 +88,10 @@ export interface Components {
   Mass: { value: Float64Array; inv: Float64Array };
   /**
    * Round collision shape: a circle in a 2D world, a sphere in a 3D world (Rapier's "ball").
-   * `radius` in m, > 0. Default 0.5 m.
+   * `radius` in m, > 0. Default 0.5 m. Make balls with `addBody({ radius })`, `setRadius`, an emitter's
+   * `particle.radius` or a rope's `radius`: these install the balls' collisions in the world the first
+   * time (collision/install-balls.ts). An entity given this component with `addComponent` alone needs
+   * `installBalls(world)`; `step` throws until it is called.
    */
   Ball: { radius: Float64Array };
   /**

@@ -1,0 +1,54 @@
+/**
+ * The balls' collision feature: the ball broadphase and narrowphase (collide stage) and the contact
+ * solver's ball rows (solver/ball-rows.ts), installed into a world when it gets its first ball
+ * (`addBody` or `addParticle` with a radius, `setRadius`, an emitter whose particles collide) or
+ * restores a snapshot. A program that never makes a ball never reaches this module, so a bundler
+ * leaves the ball contacts, the impact stage and the coloured solve out of a game of shapes and joints.
+ */
+import {
+  approachBallRows,
+  ballRestitution,
+  endBallSubstep,
+  planBallRows,
+  prepareBallRows,
+  solveBallRows,
+  storeBallRows,
+  warmStartBallRows,
+} from '../solver/ball-rows.js';
+import { setBallRows } from '../solver/rows-balls.js';
+import { trustFiniteOutput } from '../step/finite.js';
+import { installSystem } from '../step/install.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { broadphaseSystem } from './broadphase/grid.js';
+import { narrowphaseSystem } from './narrowphase/balls.js';
+
+let loaded = false;
+
+/**
+ * Installs the balls' collision into `world` (idempotent): `broadphaseSystem` and `narrowphaseSystem`
+ * in the collide stage at their places (step/install.ts), and, once for the program, the contact
+ * solver's ball rows. The package's functions that make a ball call it; call it yourself only if you
+ * give an entity the `Ball` component with `addComponent` (`step` throws until you do).
+ * @param world - The world to install into; it is left unchanged if the balls' systems are in it already.
+ * @category Collision
+ */
+export function installBalls(world: PhysicsWorld): void {
+  if (!loaded) {
+    loaded = true;
+    setBallRows({
+      prepare: prepareBallRows,
+      approach: approachBallRows,
+      plan: planBallRows,
+      warmStart: warmStartBallRows,
+      solve: solveBallRows,
+      endSubstep: endBallSubstep,
+      restitution: ballRestitution,
+      store: storeBallRows,
+    });
+    // The broadphase and narrowphase write only pairs and contacts (step/finite.ts).
+    trustFiniteOutput([broadphaseSystem, narrowphaseSystem]);
+  }
+  world.collision.looseBall = 0;
+  installSystem(world, 'collide', 'broadphase', broadphaseSystem);
+  installSystem(world, 'collide', 'narrowphase', narrowphaseSystem);
+}
