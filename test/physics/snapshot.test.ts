@@ -285,7 +285,7 @@ describe('snapshot captures every piece of state', () => {
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
     // integrators/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
     // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
-    // solver/ball-rows.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
+    // solver/ball-prepare.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
     // before each use) and its kernel's argument list.
     // solver/stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
     // and one deepest-overlap slot a thread, all written before each parallel run.
@@ -296,7 +296,7 @@ describe('snapshot captures every piece of state', () => {
       'forces/gravity.ts',
       'integrators/fused-state.ts',
       'snapshot/snapshot.ts',
-      'solver/ball-rows.ts',
+      'solver/ball-prepare.ts',
       'solver/stages-threads.ts',
       'collision/contact-events.ts',
     ]);

@@ -10,7 +10,7 @@ import {
 } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
-import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/ball-rows.js';
+import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/ball-prepare.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
 import { impactChangedRows } from '../../packages/physics/src/solver/impacts.js';
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
