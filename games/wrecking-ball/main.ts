@@ -30,6 +30,7 @@ import {
   BoxGeometry,
   BufferAttribute,
   BufferGeometry,
+  CanvasTexture,
   CylinderGeometry,
   Line,
   LineBasicMaterial,
@@ -39,6 +40,7 @@ import {
   Plane,
   Raycaster,
   RingGeometry,
+  SRGBColorSpace,
   Vector2,
   Vector3,
 } from 'three';
@@ -56,6 +58,11 @@ import {
   type WreckingBallHandles,
   wreckingBallWorldOptions,
 } from './scene';
+
+/** Whether the page is taller than wide (a phone held upright): the camera frames a nearer view. */
+const PORTRAIT = window.innerHeight > window.innerWidth;
+/** Sky gradient, top to horizon. */
+const SKY = ['#0f1c30', '#22406a', '#5b7ea6', '#b69a82'];
 
 const params = {
   level: numberParam('level', { default: 1, min: 1, max: 20, integer: true }),
@@ -158,15 +165,38 @@ const game = await startThreeGame({
   renderer: {
     boundary: 'none',
     planeSize: 50,
+    // A building site: packed earth under a dusk sky (see SKY).
+    floorColor: 0x6b5d48,
     debug: params.debug ? debugOptions() : false,
     initialInstances: 128,
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
-  view: { min: [-9, 0, -9], max: [9, 5, 9] },
-  viewDirection: [0.8, 0.75, 1],
+  // A tall phone screen frames the crane and the near targets from lower down, so they fill its
+  // width and the sky its height; a wide screen frames the whole reach of the jib.
+  view: PORTRAIT ? { min: [-6.5, 0, -6.5], max: [6.5, 6, 6.5] } : { min: [-9, 0, -9], max: [9, 5, 9] },
+  viewDirection: PORTRAIT ? [0.8, 0.5, 1] : [0.8, 0.75, 1],
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+app.scene.background = skyTexture();
+
+/**
+ * The sky: a vertical gradient from deep blue overhead to a hazy dusk at the horizon, drawn once
+ * into a small canvas (SKY colours, top to bottom). Dark enough at the top for the HUD's light text.
+ */
+function skyTexture(): CanvasTexture {
+  const canvas = document.createElement('canvas');
+  canvas.width = 2;
+  canvas.height = 256;
+  const g = canvas.getContext('2d')!;
+  const grad = g.createLinearGradient(0, 0, 0, 256);
+  for (const [i, c] of SKY.entries()) grad.addColorStop(i / (SKY.length - 1), c);
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 2, 256);
+  const texture = new CanvasTexture(canvas);
+  texture.colorSpace = SRGBColorSpace;
+  return texture;
+}
 
 function debugOptions() {
   return { axes: false, velocities: false, contacts: true, joints: true, normalLength: 0.3 };

@@ -71,8 +71,11 @@ const scratch = new Vector3();
 /**
  * Places a perspective camera so the whole box (min, max) (scene units) is in view, looking at its
  * centre from `direction`; sets the orbit target there and near/far planes to suit the distance.
- * The fitted distance keeps the box's bounding sphere inside the narrower of the vertical and
- * horizontal fields of view: d = r / sin(fov / 2).
+ * The fitted distance is the least that keeps every corner of the box inside both the vertical and
+ * the horizontal field of view (a corner at (x, y) across the view and z along it, from the centre,
+ * needs d >= |x| / tan(hfov / 2) - z and d >= |y| / tan(vfov / 2) - z), times `margin`: a tall
+ * phone screen frames the box by its width, a wide one by its height, with no room left for the
+ * empty corners of the box's bounding sphere.
  * @throws TypeError | RangeError on bad corners (max must exceed min on every axis) or options.
  */
 export function frameBox(
@@ -97,14 +100,10 @@ export function frameBox(
   const cx = 0.5 * (min[0]! + max[0]!),
     cy = 0.5 * (min[1]! + max[1]!),
     cz = 0.5 * (min[2]! + max[2]!);
-  const r = Math.max(1e-6, 0.5 * Math.hypot(max[0]! - min[0]!, max[1]! - min[1]!, max[2]! - min[2]!));
-  const vfov = (camera.fov * Math.PI) / 180;
-  const hfov = 2 * Math.atan(Math.tan(vfov / 2) * camera.aspect);
-  const fov = Math.min(vfov, hfov);
-  const dist = (r / Math.sin(fov / 2)) * margin;
   scratch.set(d[0]!, d[1]!, d[2]!);
   if (!(scratch.lengthSq() > 0)) throw new RangeError(`${where}: direction must not be zero`);
   scratch.normalize();
+  const dist = Math.max(1e-6, fitDistance(camera, scratch, min, max)) * margin;
   camera.position.set(cx + scratch.x * dist, cy + scratch.y * dist, cz + scratch.z * dist);
   camera.near = Math.max(1e-4, dist / 200);
   camera.far = dist * 200;
@@ -114,4 +113,33 @@ export function frameBox(
     controls.target.set(cx, cy, cz);
     controls.update();
   }
+}
+
+/**
+ * The least distance from the box's centre along `toCamera` (a unit vector) at which every corner of
+ * the box (min, max) is inside the camera's vertical and horizontal fields of view (see frameBox),
+ * measured in the axes three.js' `lookAt` gives the camera from there (its right and up columns).
+ */
+function fitDistance(camera: PerspectiveCamera, toCamera: Vector3, min: ArrayLike<number>, max: ArrayLike<number>): number {
+  const cx = 0.5 * (min[0]! + max[0]!),
+    cy = 0.5 * (min[1]! + max[1]!),
+    cz = 0.5 * (min[2]! + max[2]!);
+  camera.position.set(cx + toCamera.x, cy + toCamera.y, cz + toCamera.z);
+  camera.lookAt(cx, cy, cz);
+  camera.updateMatrixWorld();
+  const right = new Vector3().setFromMatrixColumn(camera.matrixWorld, 0);
+  const up = new Vector3().setFromMatrixColumn(camera.matrixWorld, 1);
+  const tanV = Math.tan((camera.fov * Math.PI) / 360);
+  const tanH = tanV * camera.aspect;
+  let dist = 0;
+  for (let corner = 0; corner < 8; corner++) {
+    const qx = (corner & 1 ? max[0]! : min[0]!) - cx,
+      qy = (corner & 2 ? max[1]! : min[1]!) - cy,
+      qz = (corner & 4 ? max[2]! : min[2]!) - cz;
+    const x = qx * right.x + qy * right.y + qz * right.z,
+      y = qx * up.x + qy * up.y + qz * up.z,
+      z = -(qx * toCamera.x + qy * toCamera.y + qz * toCamera.z);
+    dist = Math.max(dist, Math.abs(x) / tanH - z, Math.abs(y) / tanV - z);
+  }
+  return dist;
 }
