@@ -199,10 +199,15 @@ shell.onWorldChange(() => dress());
 const rings = new Mesh(new SphereGeometry(1, 32, 4), new MeshBasicMaterial({ color: 0xcdb98a, transparent: true, opacity: 0.5 }));
 app.scene.add(rings);
 
-/** Frames the Sun and the orbits out to `half` AU, from the start's direction. */
+/**
+ * Frames the Sun and the orbits out to `half` AU, from the start's direction. The box is 5 % of
+ * `half` thick either side of the ecliptic: the planets' inclinations lift them up to 0.93 AU
+ * (Neptune: 1.77 deg at 30 AU) above it, and the camera fits the box's corners.
+ */
 function frameView(half: number): void {
   const k = UNITS_PER_AU;
-  app.frame([-half * k, -0.2 * k, -half * k], [half * k, 0.2 * k, half * k], [0.2, 0.8, 1]);
+  const thick = 0.05 * half;
+  app.frame([-half * k, -thick * k, -half * k], [half * k, thick * k, half * k], [0.2, 0.8, 1]);
 }
 
 // ---- Orbit lines: each planet's Kepler ellipse about the Sun from its state at the start ----------

@@ -180,9 +180,9 @@ test('in a fresh process: threads > 1 without enableThreads() throws an Error th
       `try { createPhysicsWorld({ threads: 2 }); console.log('made'); } catch (e) { console.log((e as Error).message); }`,
       // Boxes and joints before any ball exists (the solver skips its ball rows), then with them installed.
       `const runWithout = (name: string, installed: boolean) => {`,
-      `  const world = createPhysicsWorld(SCENES[name]!.worldOptions({ count: 120, seed: 3 }));`,
+      `  const world = createPhysicsWorld(SCENES[name]!.worldOptions({ count: 12, seed: 3 }));`,
       `  if (installed) installBalls(world);`,
-      `  SCENES[name]!.build(world, { count: 120, seed: 3 });`,
+      `  SCENES[name]!.build(world, { count: 12, seed: 3 });`,
       `  stepMany(world, 120);`,
       `  return stateHash(world);`,
       `};`,

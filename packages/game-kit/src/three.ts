@@ -131,7 +131,11 @@ export interface ThreeApp {
    * (-1..1, y up) of the canvas, written into `out` (allocated if omitted).
    */
   toNdc(clientX: number, clientY: number, out?: [number, number]): [number, number];
-  /** Frames the camera on the box (min, max), scene units (see render-three's `frameBox`). */
+  /**
+   * Frames the camera on the box (min, max), scene units (see render-three's `frameBox`), and frames
+   * it again whenever the canvas changes size (a phone turned, the layout settling), until the
+   * player moves the camera with the orbit controls.
+   */
   frame(min: ArrayLike<number>, max: ArrayLike<number>, direction?: ArrayLike<number>): void;
   /** Stops following resizes, disposes the controls and the renderer, removes the canvas. */
   destroy(): void;
@@ -180,6 +184,11 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
   camera.position.set(cameraPosition[0]!, cameraPosition[1]!, cameraPosition[2]!);
   const controls = options.controls === false ? null : createOrbitControls(camera, canvas, options.controls ?? {});
   const pacer = createFramePacer(renderer.getContext(), maxInFlight);
+  // The box `frame` last fitted, kept while the player has not moved the camera: a new aspect fits it again.
+  let framed: { min: number[]; max: number[]; options: { direction?: number[] } } | null = null;
+  controls?.addEventListener('start', () => {
+    framed = null;
+  });
 
   const resize = (): void => {
     const w = Math.max(1, parent === document.body ? window.innerWidth : parent.clientWidth);
@@ -187,6 +196,7 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
     renderer.setSize(w, h, true);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
+    if (framed !== null) frameBox(camera, controls, framed.min, framed.max, framed.options);
   };
   resize();
   window.addEventListener('resize', resize);
@@ -228,7 +238,9 @@ export function createThreeApp(options: ThreeAppOptions = {}): ThreeApp {
       return out;
     },
     frame(min, max, direction) {
-      frameBox(camera, controls, min, max, direction ? { direction } : {});
+      const options = direction ? { direction: Array.from(direction) } : {};
+      frameBox(camera, controls, min, max, options);
+      framed = { min: Array.from(min), max: Array.from(max), options };
     },
     destroy() {
       pacer.clear();
