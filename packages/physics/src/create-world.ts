@@ -101,7 +101,49 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   assertInteger(where, 'threads', threads, 1, 64);
   // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
   const threadPool = threads > 1 ? makeThreadPool(where, threads) : null;
+  const restitution = options.restitutionThreshold === undefined ? {} : { restitutionThreshold };
+  const settings = { dimensions, gravity, dt, substeps, integrator, seed, solverSubsteps, solverIterations, sleep, interpolation };
+  if (!literalsPrimed) {
+    // The first world of the program is made twice, once with room for one entity and thrown away:
+    // see literalsPrimed.
+    literalsPrimed = true;
+    assemble({ ...settings, gravity: new Float64Array(gravity), capacity: 1, threads: 1, threadPool: null, restitution });
+  }
+  return assemble({ ...settings, capacity, threads, threadPool, restitution });
+}
 
+/**
+ * Whether this program has made a world. V8 (Node, Chrome) makes an object literal's boilerplate the
+ * second time the literal runs and then widens the field types of the literal's map, which throws
+ * away every optimised function that relied on them: the second world a program made used to stop
+ * the physics code's optimised code at once (40 functions of a pyramid's step; its first step took
+ * 120 to 195 ms instead of 20). Making the first world twice runs every literal of a world's
+ * creation twice before any physics code is optimised.
+ */
+let literalsPrimed = false;
+
+/** What `assemble` builds a world from: createPhysicsWorld's checked options. */
+interface WorldSettings {
+  dimensions: 2 | 3;
+  capacity: number;
+  gravity: Float64Array;
+  dt: number;
+  substeps: number;
+  integrator: PhysicsWorldContext['integrator'];
+  seed: number;
+  solverSubsteps: number;
+  solverIterations: number;
+  sleep: boolean;
+  interpolation: boolean;
+  threads: number;
+  threadPool: PhysicsWorldContext['threadPool'];
+  restitution: { restitutionThreshold?: number };
+}
+
+/** Builds a world from checked settings (see createPhysicsWorld). */
+function assemble(o: WorldSettings): PhysicsWorld {
+  const { dimensions, capacity, gravity, dt, substeps, integrator, seed, solverSubsteps, solverIterations, sleep } = o;
+  const { interpolation, threads, threadPool } = o;
   const entityIndex = createEntityIndex();
   // Without interpolation bare particles never write PreviousPosition: it waits for the first body
   // (threads keep it: the parallel loops take only shared arrays).
@@ -132,7 +174,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
       solverIterations,
       sleep,
       dimensions,
-      ...(options.restitutionThreshold === undefined ? {} : { restitutionThreshold }),
+      ...o.restitution,
     }),
     joints: createJointState(),
     cloth: createClothState(),
