@@ -20,6 +20,16 @@ let parent = '';
 let project = '';
 let server: ChildProcess | null = null;
 
+/** Ends `npm start` and the server it runs: the whole process group (spawned detached). */
+function stopServer(child: ChildProcess | null): void {
+  if (child?.pid === undefined || child.exitCode !== null) return;
+  try {
+    process.kill(-child.pid, 'SIGTERM');
+  } catch {
+    child.kill();
+  }
+}
+
 beforeAll(async () => {
   parent = mkdtempSync(join(tmpdir(), 'bitphysics-new-project-'));
   const { newProject } = (await import(pathToFileURL(join(repoRoot, 'scripts', 'new-project.mjs')).href)) as {
@@ -32,7 +42,7 @@ beforeAll(async () => {
 }, 180_000);
 
 afterAll(() => {
-  server?.kill();
+  stopServer(server);
   rmSync(parent, { recursive: true, force: true });
 });
 
@@ -61,7 +71,12 @@ describe('a standalone game project from npm run new-game', () => {
   }, 120_000);
 
   it('npm start serves the game: ready, drawn, B drops a ball, no error', async () => {
-    const started = spawn('npm', ['start', '--silent', '--', '--port', '0'], { cwd: project, stdio: ['ignore', 'pipe', 'pipe'] });
+    // In a process group of its own: npm runs the server as its child, which killing npm alone leaves running.
+    const started = spawn('npm', ['start', '--silent', '--', '--port', '0'], {
+      cwd: project,
+      stdio: ['ignore', 'pipe', 'pipe'],
+      detached: true,
+    });
     server = started;
     const url = await new Promise<string>((resolveUrl, reject) => {
       let out = '';
@@ -100,7 +115,7 @@ describe('a standalone game project from npm run new-game', () => {
       expect(errors).toEqual([]);
     } finally {
       await browser.close();
-      started.kill();
+      stopServer(started);
     }
   }, 120_000);
 });
