@@ -66,8 +66,8 @@ function hullPoints(world: PhysicsWorld): number[][] {
 function stepWorld(world: PhysicsWorld): void {
   const dt = world.dt;
   // Input: held keys move the controls smoothly.
-  if (held.has('w')) state.fill = Math.min(1, state.fill + 0.25 * dt);
-  if (held.has('s')) state.fill = Math.max(0, state.fill - 0.25 * dt);
+  if (held.has('w')) state.fill = Math.min(1, state.fill + 0.5 * dt);
+  if (held.has('s')) state.fill = Math.max(0, state.fill - 0.5 * dt);
   if (held.has('q')) state.trim = Math.min(0.3, state.trim + 0.2 * dt);
   if (held.has('e')) state.trim = Math.max(-0.3, state.trim - 0.2 * dt);
   const ahead = held.has('d') || held.has('arrowright'),

@@ -48,10 +48,31 @@ describe('ballast and buoyancy (Archimedes)', () => {
   test('the tanks fill at their rate and the mass follows', () => {
     const { world, hull } = submerged(0);
     setBallastTarget(world, hull, 1);
-    run(world, 5); // 0.08 / s for 5 s: 0.4 full
-    expect(world.components.Ballast.fore[hull]).toBeCloseTo(0.4, 9);
-    expect(world.components.Mass.value[hull]).toBeCloseTo(SUBMARINE.dryMass + 2 * SUBMARINE.tankCapacity * 0.4, 6);
+    run(world, 2); // fillRate (0.25 / s) for 2 s: half full
+    const fill = SUBMARINE.fillRate * 2;
+    expect(world.components.Ballast.fore[hull]).toBeCloseTo(fill, 9);
+    expect(world.components.Mass.value[hull]).toBeCloseTo(SUBMARINE.dryMass + 2 * SUBMARINE.tankCapacity * fill, 6);
     expect(world.components.Mass.inv[hull]).toBeCloseTo(1 / world.components.Mass.value[hull]!, 15);
+  });
+
+  test('a held dive takes the surfaced boat 2 m under within 6 s', () => {
+    // The game's Dive key raises the tanks' target by 0.5 a second; the tanks follow at fillRate. From
+    // floating empty on a calm sea (the scene's start), the boat must be 2 m lower within 6 s: a player
+    // sees it respond. At the old fillRate of 0.08 it took 12.5 s (measured with this test's loop).
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const { hull } = submarine.build(world, { seed: 1, count: 0 });
+    world.components.FluidRegion.surface.fill(0);
+    run(world, 2);
+    const y0 = world.components.Position.y[hull]!;
+    let target = 0,
+      under = Infinity;
+    for (let i = 1; i <= 6 * 60 && under === Infinity; i++) {
+      target = Math.min(1, target + 0.5 / 60);
+      setBallastTarget(world, hull, target, target);
+      step(world);
+      if (world.components.Position.y[hull]! < y0 - 2) under = i / 60;
+    }
+    expect(under).toBeLessThan(6);
   });
 
   test('thrust along the hull: v(t) = v_t tanh(a0 t / v_t) towards v_t = sqrt(F / k)', () => {
