@@ -396,7 +396,7 @@ export interface ShapeCollisionState {
  * @category Collision
  */
 export function createShapeCollisionState(): ShapeCollisionState {
-  return {
+  const st: ShapeCollisionState = {
     active: false,
     manifolds: createManifoldBuffer(),
     previous: createManifoldBuffer(),
@@ -422,6 +422,12 @@ export function createShapeCollisionState(): ShapeCollisionState {
     sleepList: new Uint32Array(0),
     anyMoving: false,
   };
+  // rotateManifolds swaps these two every step. V8 treats a field written only when its object was
+  // made as constant, and at the first other write drops the optimised code that relied on that:
+  // every shape stage's, after the first step. Swapped twice here (back as they were), the fields are
+  // writable before any code is optimised.
+  for (let k = 0; k < 2; k++) [st.manifolds, st.previous] = [st.previous, st.manifolds];
+  return st;
 }
 
 /**

@@ -419,6 +419,9 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
       frictionJacobians: new Float32Array(0),
       frictionInv: new Float32Array(0),
     };
+    // Swapped every step (collision/shapes-3d.ts): swapped twice here so V8 does not treat them as
+    // constant and drop the optimised code at the first swap (see createShapeCollisionState).
+    for (let k = 0; k < 2; k++) [s.current, s.previous] = [s.previous, s.current];
     states.set(world, s);
   }
   return s;

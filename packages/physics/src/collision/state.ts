@@ -289,7 +289,7 @@ export function createCollisionState(
   options: { solverSubsteps: number; solverIterations: number; restitutionThreshold?: number; sleep: boolean; dimensions?: 2 | 3 },
 ): CollisionState {
   const n = 0;
-  return {
+  const cs: CollisionState = {
     settings: {
       solverSubsteps: options.solverSubsteps,
       autoSubsteps: true,
@@ -372,6 +372,19 @@ export function createCollisionState(
     shapes: createShapeCollisionState(),
     stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
   };
+  // The ball contacts' buffer and the warm-start cache's rows trade places every step
+  // (collision/contacts.ts swapWarmStartRows): traded twice here so V8 does not treat the fields as
+  // constant and drop the optimised code at the first trade (see createShapeCollisionState).
+  for (let k = 0; k < 2; k++) [cs.contacts, cs.cache.rows] = [cs.cache.rows, cs.contacts];
+  // The solver's packed arrays are replaced by larger ones in the first step of a big scene: each is
+  // written once more here, with a fresh array of its type and length, for the same reason.
+  cs.solverBodies = new Int32Array(cs.solverBodies.length);
+  cs.bodyState = new Float64Array(cs.bodyState.length);
+  cs.bodyExtra = new Float64Array(cs.bodyExtra.length);
+  cs.bodyImpact = new Float64Array(cs.bodyImpact.length);
+  cs.impactOrder = new Int32Array(cs.impactOrder.length);
+  cs.impactKey = new Float64Array(cs.impactKey.length);
+  return cs;
 }
 
 /**
