@@ -1,8 +1,9 @@
 // The submarine scene and the ballast law against Archimedes' balance, the terminal speed of
-// quadratic drag (F = k v^2) and the hydrostatic trim balance.
+// quadratic drag (F = k v^2) and the hydrostatic trim balance; its vertical thrusters against the
+// same speed law and the righting moment.
 
 import { addBody, createPhysicsWorld, type PhysicsWorld, setBallast, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
-import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, submarine } from '@bitphysics/projects';
+import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, setSubmarineThrusters, submarine } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 
 /** A submerged hull 40 m down with both tanks at `fill`. */
@@ -48,8 +49,8 @@ describe('ballast and buoyancy (Archimedes)', () => {
   test('the tanks fill at their rate and the mass follows', () => {
     const { world, hull } = submerged(0);
     setBallastTarget(world, hull, 1);
-    run(world, 2); // fillRate (0.25 / s) for 2 s: half full
-    const fill = SUBMARINE.fillRate * 2;
+    run(world, 1); // fillRate (0.5 / s) for 1 s: half full
+    const fill = SUBMARINE.fillRate * 1;
     expect(world.components.Ballast.fore[hull]).toBeCloseTo(fill, 9);
     expect(world.components.Mass.value[hull]).toBeCloseTo(SUBMARINE.dryMass + 2 * SUBMARINE.tankCapacity * fill, 6);
     expect(world.components.Mass.inv[hull]).toBeCloseTo(1 / world.components.Mass.value[hull]!, 15);
@@ -73,6 +74,54 @@ describe('ballast and buoyancy (Archimedes)', () => {
       if (world.components.Position.y[hull]! < y0 - 2) under = i / 60;
     }
     expect(under).toBeLessThan(6);
+  });
+
+  test('vents open on the surface: 2 m under within 3 s, the tanks flooding at 0.5 a second', () => {
+    // Both tanks' target set to full at once (vents open) on the boat floating empty on a calm sea.
+    // Measured with this loop: 2.52 s at fillRate 0.5; at the old 0.25 it took 5.12 s.
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const { hull } = submarine.build(world, { seed: 1, count: 0 });
+    world.components.FluidRegion.surface.fill(0);
+    run(world, 2);
+    const y0 = world.components.Position.y[hull]!;
+    setBallastTarget(world, hull, 1);
+    let under = Infinity;
+    for (let i = 1; i <= 6 * 60 && under === Infinity; i++) {
+      step(world);
+      if (world.components.Position.y[hull]! < y0 - 2) under = i / 60;
+    }
+    expect(under).toBeLessThan(3);
+  });
+
+  test('equal vertical thrusters heave the hull: v(t) = v_t tanh(a0 t / v_t), v_t = sqrt(2 T / k)', () => {
+    // Neutral tanks 400 m down, both thrusters at +30 kN: m dv/dt = 2 T - k v^2 (no torque: the
+    // pushes are equal and opposite about the centre), the same exact solution as the screw's.
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { fill: SUBMARINE_NEUTRAL_FILL, position: [0, -400], count: 0 });
+    const T = SUBMARINE.thrusterForce;
+    setSubmarineThrusters(h, T, T);
+    run(world, 10);
+    const m = world.components.Mass.value[h.hull]!;
+    const vt = Math.sqrt((2 * T) / SUBMARINE.dragCoefficient),
+      a0 = (2 * T) / m;
+    const expected = vt * Math.tanh((a0 * world.time) / vt);
+    expect(Math.abs(world.components.Velocity.y[h.hull]! - expected) / expected).toBeLessThan(1e-3);
+    expect(Math.abs(world.components.Angle.value[h.hull]!)).toBeLessThan(1e-9);
+    expect(Math.abs(world.components.Velocity.x[h.hull]!)).toBeLessThan(1e-9);
+  });
+
+  test('opposite vertical thrusters pitch the hull to sin(theta) = arm (F_fore - F_aft) / (M g GM)', () => {
+    // Fore up 15 kN, aft down 15 kN: no net force, torque arm (F_fore - F_aft) = 4.5 m x 30 kN, nose
+    // up, balanced by the righting moment M g GM sin(theta) (forces/ballast.ts): 4.76 degrees.
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { fill: SUBMARINE_NEUTRAL_FILL, position: [0, -400], count: 0 });
+    const F = SUBMARINE.thrusterForce / 2;
+    setSubmarineThrusters(h, F, -F);
+    run(world, 40);
+    const M = world.components.Mass.value[h.hull]!;
+    const expected = Math.asin((SUBMARINE.thrusterArm * 2 * F) / (M * 9.81 * SUBMARINE.metacentricHeight));
+    expect(world.components.Angle.value[h.hull]).toBeCloseTo(expected, 4);
+    expect(Math.abs(world.components.Velocity.y[h.hull]!)).toBeLessThan(1e-6);
   });
 
   test('thrust along the hull: v(t) = v_t tanh(a0 t / v_t) towards v_t = sqrt(F / k)', () => {
@@ -123,6 +172,11 @@ describe('ballast and buoyancy (Archimedes)', () => {
     expect(() => setBallast(world, b, { dryMass: 1, capacity: 1, fill: 2 })).toThrow(/setBallast: fill must be/);
     expect(() => setBallastTarget(world, b, 0.5)).toThrow(/setBallastTarget: entity \d+ has no ballast/);
     expect(() => setBodyThrust(world, b, [1, Number.NaN])).toThrow(/setBodyThrust: force/);
+    const sea = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(sea, { count: 0 });
+    expect(() => setSubmarineThrusters(h, 1.01 * SUBMARINE.thrusterForce, 0)).toThrow(/setSubmarineThrusters: fore and aft must be within/);
+    expect(() => setSubmarineThrusters(h, 0, Number.NaN)).toThrow(/setSubmarineThrusters: aft/);
+    expect([...h.thrusters]).toEqual([0, 0]);
     expect(world.components.Mass.value[b]).toBe(3);
   });
 });

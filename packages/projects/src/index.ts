@@ -24,4 +24,11 @@ export {
   solarSystemMass,
 } from './solar-system.js';
 export type { SubmarineHandles, SubmarineOptions } from './submarine.js';
-export { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, seabedHeight, submarine } from './submarine.js';
+export {
+  SUBMARINE,
+  SUBMARINE_NEUTRAL_FILL,
+  SUBMARINE_WATER_DENSITY,
+  seabedHeight,
+  setSubmarineThrusters,
+  submarine,
+} from './submarine.js';

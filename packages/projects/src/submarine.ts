@@ -1,6 +1,7 @@
 import {
   addBody,
   addFluidRegion,
+  addSystem,
   inertiaOfRectangle,
   type PhysicsWorld,
   Rng,
@@ -10,6 +11,7 @@ import {
   setBodyThrust,
   setBuoyancy,
   setInertia,
+  slotOf,
 } from '@bitphysics/physics';
 import { assertFinite, assertInteger, assertKnownKeys } from '@bitphysics/physics/validate';
 
@@ -18,8 +20,9 @@ import { assertFinite, assertInteger, assertKnownKeys } from '@bitphysics/physic
  * the water's surface at y = 0): a 12 m x 3 m hull of 3 m beam, so the water is 2D with the density
  * of sea water times the beam (1025 kg/m^3 x 3 m). Its buoyancy is Archimedes' (the `Buoyancy` law
  * on a box), its drag quadratic and scaled by the submerged fraction, two ballast tanks flood and
- * blow (the `Ballast` law: mass, trim), a screw pushes along the hull (`BodyThrust`), and the hull
- * turns with angular damping. A seeded seabed and beacons to collect make it a game.
+ * blow (the `Ballast` law: mass, trim), a screw pushes along the hull (`BodyThrust`), two vertical
+ * thrusters fore and aft push across it (`setSubmarineThrusters`), and the hull turns with angular
+ * damping. A seeded seabed and beacons to collect make it a game.
  */
 export const SUBMARINE = Object.freeze({
   /** Hull length and height, m. */
@@ -34,11 +37,17 @@ export const SUBMARINE = Object.freeze({
   /** Water each of the two tanks holds, kg. */
   tankCapacity: 20_000,
   /**
-   * Tank fill rate, fraction per second: 4 s from empty to full. A real boat's main ballast takes tens
-   * of seconds; this one is quick enough that a held dive takes the surfaced boat 2 m under in about
-   * 5 s of play (it took 12.5 s at 0.08).
+   * Tank fill rate, fraction per second: 2 s from empty to full, flooding or blowing. The tanks are
+   * open to the sea at the bottom and vented at the top, so flooding is as fast as the air leaves:
+   * through a vent of area A it escapes at v = sqrt(2 dp / rho_air) (Bernoulli) with dp = rho g h
+   * the head of water over the tank's air, Q = C_d A v. With h = 1.5 m (dp = 15 kPa, v = 158 m/s),
+   * C_d = 0.6 and A = 0.1 m^2 (one 36 cm vent a tank) Q = 9.5 m^3/s: a 19.5 m^3 tank (20 t of sea
+   * water) in about 2 s. Blowing at 150 m (16 bar) needs 9.75 m^3/s of air at 16 bar, 190 kg/s,
+   * which a 200 bar bank passes through 40 cm^2 of pipe at choked flow (m' = 0.0404 A p0 / sqrt(T0),
+   * Anderson, Modern Compressible Flow, ch. 5). Real boats are slower (a WWII fleet boat got under in
+   * 30 to 60 s) because their tanks hold hundreds of tonnes and their vents are sized for that.
    */
-  fillRate: 0.25,
+  fillRate: 0.5,
   /** Distance of each tank from the centre along the hull, m. */
   tankArm: 4,
   /** Height of the centre of buoyancy above the centre of mass, m. */
@@ -49,6 +58,16 @@ export const SUBMARINE = Object.freeze({
   maxThrust: 120_000,
   /** Rotational damping of the hull in water, N m s. */
   angularDamping: 1.5e6,
+  /**
+   * Largest push of each of the two vertical thrusters, N (up or down, across the hull). A ducted
+   * thruster of diameter D (m) and power P (kW) gives T (kN) = (D P)^(2/3) at zero speed (Wartsila,
+   * Encyclopedia of Ship Technology, "bollard pull"): 30 kN is a 1 m thruster of 165 kW. Nordenfelt
+   * dived his boats of 1885-7 with such vertical "sinking screws" (BR 3043, The Development of HM
+   * Submarines, ch. 18); small submersibles hover and change depth with them today.
+   */
+  thrusterForce: 30_000,
+  /** Distance of each vertical thruster from the centre along the hull, m (fore at +, aft at -). */
+  thrusterArm: 4.5,
 });
 
 /** Sea water per unit depth of the 2D world, kg/m^2. */
@@ -83,6 +102,50 @@ export interface SubmarineHandles {
   readonly seabed: { readonly x0: number; readonly dx: number; readonly y: Float64Array };
   /** Beacons to collect: (x, y) pairs, m. */
   readonly beacons: Float64Array;
+  /**
+   * Push of the vertical thrusters now, N: [fore, aft], each across the hull (along its own y axis,
+   * positive up when level) at +-`SUBMARINE.thrusterArm`. Set it with `setSubmarineThrusters`.
+   */
+  readonly thrusters: Float64Array;
+}
+
+/**
+ * Sets the push of the submarine's vertical thrusters, N: `fore` and `aft` each in
+ * [-SUBMARINE.thrusterForce, SUBMARINE.thrusterForce], positive up across the hull. Equal pushes
+ * heave the hull; unequal ones also pitch it (torque arm (fore - aft)).
+ * @throws RangeError on a value that is not finite or is past the thrusters' limit.
+ */
+export function setSubmarineThrusters(handles: SubmarineHandles, fore: number, aft: number): void {
+  const where = 'setSubmarineThrusters';
+  const T = SUBMARINE.thrusterForce;
+  assertFinite(where, 'fore', fore);
+  assertFinite(where, 'aft', aft);
+  if (Math.abs(fore) > T || Math.abs(aft) > T)
+    throw new RangeError(`${where}: fore and aft must be within +-${T} N, got ${fore} and ${aft}`);
+  handles.thrusters[0] = fore;
+  handles.thrusters[1] = aft;
+}
+
+/**
+ * The force law of the vertical thrusters of `hull` (a 2D body with an angle): each pushes along the
+ * hull's own y axis, n = (-sin(theta), cos(theta)), at its point +-arm along the hull, so the hull
+ * gets F = (fore + aft) n and the torque tau = arm (fore - aft) (r x n with r = +-arm (cos, sin)).
+ * Position-only: it reads the angle, so every integrator stage sees the thrust of its own state.
+ */
+function thrusterLaw(hull: number, thrusters: Float64Array): (world: PhysicsWorld) => void {
+  const law = (world: PhysicsWorld): void => {
+    const fore = thrusters[0]!,
+      aft = thrusters[1]!;
+    if (fore === 0 && aft === 0) return;
+    const c = world.components,
+      e = slotOf(hull);
+    const a = c.Angle.value[e]!,
+      f = fore + aft;
+    c.Force.x[e] = c.Force.x[e]! - f * Math.sin(a);
+    c.Force.y[e] = c.Force.y[e]! + f * Math.cos(a);
+    c.Torque.z[e] = c.Torque.z[e]! + SUBMARINE.thrusterArm * (fore - aft);
+  };
+  return law;
 }
 
 /** Seabed height at x, m, by linear interpolation of `seabed` (clamped at its ends). */
@@ -143,6 +206,8 @@ export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
     });
     setBodyThrust(world, hull, [0, 0]);
     setAngularDamping(world, hull, S.angularDamping);
+    const thrusters = new Float64Array(2);
+    addSystem(world, 'forces', thrusterLaw(hull, thrusters));
 
     const rng = new Rng(seed);
     const x0 = -100,
@@ -166,6 +231,6 @@ export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
       beacons[2 * i] = bx;
       beacons[2 * i + 1] = rng.range(floor + 8, -10);
     }
-    return { hull, sea, seabed, beacons };
+    return { hull, sea, seabed, beacons, thrusters };
   },
 };
