@@ -1,19 +1,22 @@
 /**
- * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Flood the ballast tanks to
- * dive, blow them to rise, move water fore or aft to trim the nose down or up, and drive the screw
- * ahead or astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in
- * proportion to how much of it is under water and bobs in the waves. Collect every beacon without
- * scraping the seabed three times.
- * Keys: W / S flood / blow (both tanks), Q / E trim nose down / up, A / D or arrows astern / ahead,
- * P pause, N step, R reset. Touch: the same six controls as buttons under the scene (hold them).
- * Sound: the screw's hum follows the throttle, a chime for each beacon, a thump on the seabed.
+ * Submarine: the book's submarine (Ramtal and Dobre ch. 16) as a game. Hold Dive or Rise: the vents
+ * flood or blow the ballast tanks and the vertical thrusters push at once; let go under water and the
+ * helm holds the depth (./helm.ts). Hold Nose down or up to pitch, and drive the screw ahead or
+ * astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
+ * to how much of it is under water and bobs in the waves. Collect every beacon without scraping the
+ * seabed three times.
+ * Keys: W / S or up / down arrows dive / rise, Q / E nose down / up, A / D or left / right arrows
+ * astern / ahead, P pause, N step, R reset. Touch: the same controls as buttons under the scene
+ * (hold them). Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks
+ * blow, a chime for each beacon, a thump on the seabed.
  */
 
 import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { createPhysicsWorld, type PhysicsWorld, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
+import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
+import { createHelmState, type HelmInput, steer } from './helm';
 
 const params = {
   seed: seedParam(),
@@ -23,15 +26,18 @@ const params = {
   reset: () => shell.reset(),
 };
 
-/** Game state beside the physics: controls, collected beacons, hull damage. */
-const state = { throttle: 0, fill: 0, trim: 0, collected: 0, hits: 0, touching: false, over: '' as '' | 'won' | 'sunk', time: 0 };
+/**
+ * Game state beside the physics: the helm's (./helm.ts: throttle, tank targets, depth held),
+ * collected beacons, hull damage (hits, and the game time until which a bump counts as the last hit).
+ */
+const state = { ...createHelmState(), collected: 0, hits: 0, spared: 0, touching: false, over: '' as '' | 'won' | 'sunk', time: 0 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
   handles = submarine.build(world, { seed: params.seed, count: params.beacons });
-  Object.assign(state, { throttle: 0, fill: 0, trim: 0, collected: 0, hits: 0, touching: false, over: '', time: 0 });
+  Object.assign(state, createHelmState(), { collected: 0, hits: 0, spared: 0, touching: false, over: '', time: 0 });
   taken = new Array(params.beacons).fill(false);
   return world;
 }
@@ -63,18 +69,27 @@ function hullPoints(world: PhysicsWorld): number[][] {
   ];
 }
 
+/** The controls held now (keys and on-screen buttons, which send the same keys). */
+function heldInput(): HelmInput {
+  return {
+    dive: held.has('w') || held.has('arrowdown'),
+    rise: held.has('s') || held.has('arrowup'),
+    noseDown: held.has('q'),
+    noseUp: held.has('e'),
+    ahead: held.has('d') || held.has('arrowright'),
+    astern: held.has('a') || held.has('arrowleft'),
+  };
+}
+
+/** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
+let lastVertical = 0;
+
 function stepWorld(world: PhysicsWorld): void {
-  const dt = world.dt;
-  // Input: held keys move the controls smoothly.
-  if (held.has('w')) state.fill = Math.min(1, state.fill + 0.5 * dt);
-  if (held.has('s')) state.fill = Math.max(0, state.fill - 0.5 * dt);
-  if (held.has('q')) state.trim = Math.min(0.3, state.trim + 0.2 * dt);
-  if (held.has('e')) state.trim = Math.max(-0.3, state.trim - 0.2 * dt);
-  const ahead = held.has('d') || held.has('arrowright'),
-    astern = held.has('a') || held.has('arrowleft');
-  if (ahead) state.throttle = Math.min(1, state.throttle + 0.6 * dt);
-  if (astern) state.throttle = Math.max(-0.5, state.throttle - 0.6 * dt);
-  applyControls(world);
+  const input = heldInput();
+  const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
+  if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
+  lastVertical = vertical;
+  steer(world, handles, input, state);
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
@@ -89,9 +104,16 @@ function stepWorld(world: PhysicsWorld): void {
   if (hit) {
     c.Velocity.y[e] = Math.max(c.Velocity.y[e]!, 1.5);
     c.Velocity.x[e] = c.Velocity.x[e]! * 0.5;
+    // The bounce: the helm brakes and holds the depth it stops at, above the scrape.
+    state.holdY = Number.NaN;
     if (!state.touching) {
       sound.impact(20, 'metal');
-      state.hits++;
+      // One scrape costs one hit: bumps within 2 s of it (the boat bouncing along the bed while Dive
+      // is still held) are the same scrape.
+      if (world.time >= state.spared) {
+        state.hits++;
+        state.spared = world.time + 2;
+      }
       if (state.hits >= 3) state.over = 'sunk';
     }
   }
@@ -109,14 +131,6 @@ function stepWorld(world: PhysicsWorld): void {
   }
 }
 
-/** Writes the controls into the world: ballast targets (fill +- trim) and screw thrust. */
-function applyControls(world: PhysicsWorld): void {
-  const fore = Math.min(1, Math.max(0, state.fill + state.trim)),
-    aft = Math.min(1, Math.max(0, state.fill - state.trim));
-  setBallastTarget(world, handles.hull, fore, aft);
-  setBodyThrust(world, handles.hull, [state.throttle * SUBMARINE.maxThrust, 0]);
-}
-
 const sound = getSound();
 const engine = sound.engine('screw');
 
@@ -126,8 +140,8 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: 'W / S', action: 'flood / blow ballast', touch: 'Dive / Rise' },
-    { keys: 'Q / E', action: 'trim nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'W / S', action: 'dive / rise (let go: hold depth)', touch: 'Dive / Rise' },
+    { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
     { keys: 'A / D', action: 'screw astern / ahead', touch: 'Astern / Ahead' },
   ],
   app: { background: 0x0b2340, antialias: true },
@@ -162,13 +176,73 @@ createButtonBar(
   [
     { label: 'Dive ▼', name: 'flood ballast (dive)', key: 'w' },
     { label: 'Rise ▲', name: 'blow ballast (rise)', key: 's' },
-    { label: 'Nose ↘', name: 'trim nose down', key: 'q' },
-    { label: 'Nose ↗', name: 'trim nose up', key: 'e' },
+    { label: 'Nose ↘', name: 'nose down', key: 'q' },
+    { label: 'Nose ↗', name: 'nose up', key: 'e' },
     { label: '◀ Astern', name: 'screw astern', key: 'a' },
     { label: 'Ahead ▶', name: 'screw ahead', key: 'd' },
   ],
   { label: 'ballast, trim and screw' },
 );
+
+/** Bubbles and spray (drawing only): world position (m), age and life (s), radius (m). */
+const bubbles: { x: number; y: number; age: number; life: number; r: number }[] = [];
+let bubbleTime = 0;
+let lastFill = [0, 0];
+
+/**
+ * Moves the bubbles on (they rise at 1.2 m/s; spray above the water falls back) and adds new ones
+ * where the vents or the thrusters work: air out of a tank's top while it floods, out of its bottom
+ * while it blows, and at each thruster in proportion to its push. `angle` is the hull's, rad.
+ * Bubbles keep world coordinates so the camera does not drag them along.
+ */
+function spawnBubbles(world: PhysicsWorld, angle: number): void {
+  const c = world.components,
+    e = handles.hull;
+  const dt = Math.max(0, Math.min(0.1, world.time - bubbleTime));
+  bubbleTime = world.time;
+  const surface = c.FluidRegion.surface[handles.sea]!;
+  for (let i = bubbles.length - 1; i >= 0; i--) {
+    const b = bubbles[i]!;
+    b.age += dt;
+    b.y += (b.y < surface ? 1.2 : -2) * dt;
+    if (b.age >= b.life) bubbles.splice(i, 1);
+  }
+  if (dt === 0) return;
+  const x = c.Position.x[e]!,
+    y = c.Position.y[e]!,
+    co = Math.cos(angle),
+    s = Math.sin(angle);
+  const at = (u: number, v: number): [number, number] => [x + u * co - v * s, y + u * s + v * co];
+  const B = c.Ballast;
+  const tanks = [B.fore[e]!, B.aft[e]!];
+  for (let i = 0; i < 2; i++) {
+    const change = (tanks[i]! - lastFill[i]!) / dt; // fill per second: + flooding, - blowing
+    const u = (i === 0 ? 1 : -1) * SUBMARINE.tankArm;
+    const count = Math.abs(change) * dt * 40;
+    for (let j = 0, m = Math.floor(count + Math.random()); j < m; j++) {
+      const [bx, by] = at(u + (Math.random() - 0.5) * 2.5, change > 0 ? SUBMARINE.height / 2 : -SUBMARINE.height / 2);
+      bubbles.push({ x: bx, y: by, age: 0, life: 0.8 + Math.random(), r: 0.15 + 0.2 * Math.random() });
+    }
+  }
+  lastFill = tanks;
+  for (const [u, f] of [
+    [SUBMARINE.thrusterArm, state.fore],
+    [-SUBMARINE.thrusterArm, state.aft],
+  ] as const) {
+    const count = (Math.abs(f) / SUBMARINE.thrusterForce) * dt * 12;
+    for (let j = 0, m = Math.floor(count + Math.random()); j < m; j++) {
+      const [bx, by] = at(u + (Math.random() - 0.5), -Math.sign(f) * (SUBMARINE.height / 2 + 1 + 2 * Math.random()));
+      bubbles.push({ x: bx, y: by, age: 0, life: 0.6 + 0.6 * Math.random(), r: 0.1 + 0.15 * Math.random() });
+    }
+  }
+  // The screw's wash behind the stern (ahead) or before it (astern).
+  const wash = Math.abs(state.throttle) * dt * 14;
+  for (let j = 0, m = Math.floor(wash + Math.random()); j < m; j++) {
+    const [bx, by] = at(-SUBMARINE.length / 2 - (state.throttle > 0 ? 0.5 + 3 * Math.random() : -1), (Math.random() - 0.5) * 1.2);
+    bubbles.push({ x: bx, y: by, age: 0, life: 0.5 + 0.8 * Math.random(), r: 0.1 + 0.2 * Math.random() });
+  }
+  if (bubbles.length > 400) bubbles.splice(0, bubbles.length - 400);
+}
 
 function draw(): void {
   const world = shell.world,
@@ -281,6 +355,27 @@ function draw(): void {
       [pt(u - 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8 + 1.6 * Hh * f), pt(u - 1.5, -Hh * 0.8 + 1.6 * Hh * f)].flat(),
     ).fill({ color: 0x4fa3ff, alpha: 0.8 });
   }
+  // The vertical thrusters' wash: water thrown opposite to each one's push, as long as it is strong.
+  const n = SUBMARINE.thrusterForce;
+  for (const [u, f] of [
+    [SUBMARINE.thrusterArm, state.fore],
+    [-SUBMARINE.thrusterArm, state.aft],
+  ] as const) {
+    if (Math.abs(f) < 0.05 * n) continue;
+    const dir = -Math.sign(f),
+      len = 1.2 + 3 * (Math.abs(f) / n);
+    const v0 = dir * Hh,
+      v1 = dir * (Hh + len);
+    g.poly([pt(u - 0.45, v0), pt(u + 0.45, v0), pt(u + 0.9, v1), pt(u - 0.9, v1)].flat()).fill({
+      color: 0xd8f0ff,
+      alpha: 0.25 + 0.35 * (Math.abs(f) / n),
+    });
+  }
+  spawnBubbles(world, a);
+  for (const b of bubbles) {
+    const life = 1 - b.age / b.life;
+    g.circle(sx(b.x), sy(b.y), Math.max(1.5, b.r * k)).stroke({ color: 0xe8f6ff, alpha: 0.7 * life, width: 1.2 });
+  }
   // Gauges.
   const depth = -c.Position.y[e]!,
     speed = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!);
@@ -288,18 +383,19 @@ function draw(): void {
   engine.set(state.over ? 0 : Math.abs(state.throttle));
   if (gaugeFrame++ % 6 !== 0) return;
   const narrow = W < 520;
-  const end = state.over === 'won' ? '   ALL COLLECTED!' : state.over === 'sunk' ? '   HULL BREACHED (reset to retry)' : '';
+  const end = state.over === 'won' ? 'ALL COLLECTED!' : state.over === 'sunk' ? 'HULL BREACHED (reset to retry)' : '';
+  const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
   gauge.textContent = (
     narrow
       ? [
           `depth ${depth.toFixed(1)} m (bed ${(-floor).toFixed(0)} m)  speed ${speed.toFixed(1)} m/s`,
           `ballast ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)  screw ${(state.throttle * 100).toFixed(0)}%`,
-          `beacons ${state.collected}/${taken.length}  hull ${3 - state.hits}/3${end}`,
+          `beacons ${state.collected}/${taken.length}  hull ${3 - state.hits}/3  ${end || helm}`,
         ]
       : [
           `depth ${depth.toFixed(1)} m (seabed ${(-floor).toFixed(0)} m)   speed ${speed.toFixed(2)} m/s   climb ${c.Velocity.y[e]!.toFixed(2)} m/s`,
-          `ballast fore ${(B.fore[e]! * 100).toFixed(0)}% aft ${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)   trim ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
-          `beacons ${state.collected}/${taken.length}   hull ${3 - state.hits}/3${end}`,
+          `ballast fore ${(B.fore[e]! * 100).toFixed(0)}% aft ${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)   pitch ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
+          `beacons ${state.collected}/${taken.length}   hull ${3 - state.hits}/3   helm: ${helm}${end ? `   ${end}` : ''}`,
         ]
   ).join('\n');
 }
@@ -324,10 +420,10 @@ shell.expose({
   state,
   /** The hull entity. */
   hull: () => handles.hull,
-  /** Sets the controls directly: fill and trim in [0, 1] and [-0.3, 0.3], throttle in [-0.5, 1]. */
-  setControls: (controls: { fill?: number; trim?: number; throttle?: number }): void => {
-    if (controls.fill !== undefined) state.fill = Math.min(1, Math.max(0, controls.fill));
-    if (controls.trim !== undefined) state.trim = Math.min(0.3, Math.max(-0.3, controls.trim));
+  /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */
+  handles: () => handles,
+  /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */
+  setControls: (controls: { throttle?: number }): void => {
     if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-0.5, controls.throttle));
   },
 });

@@ -7,6 +7,7 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
+import { checkLayout } from './layout-check';
 
 const PHONE = { viewport: { width: 390, height: 844 }, touch: true } as const;
 
@@ -46,10 +47,85 @@ describe('phone controls', () => {
   it('submarine: holding Dive floods the tanks, Ahead drives the screw', async () => {
     const g = await h.openGame('submarine', PHONE);
     expect(await read(g, 'state.fill')).toBe(0);
-    await hold(g.page, 'flood ballast (dive)');
-    expect(await read(g, 'state.fill')).toBeGreaterThan(0.02);
+    // Read while the finger is down: let go on the surface, the helm blows the tanks again.
+    const box = (await g.page.getByRole('button', { name: 'flood ballast (dive)', exact: true }).boundingBox())!;
+    let fill = 0;
+    await touchPath(g.page, [[box.x + box.width / 2, box.y + box.height / 2]], 400, async () => {
+      fill = await read(g, 'state.fill');
+    });
+    expect(fill).toBeGreaterThan(0.02);
     await hold(g.page, 'screw ahead');
     expect(await read(g, 'state.throttle')).toBeGreaterThan(0.05);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
+  it('submarine: a touch on Dive starts the boat down within 0.5 s of game time; gauges and beacon arrow fit', async () => {
+    // A calm sea (waves=0), so the heave measured is the boat's own. The page records, every frame,
+    // the game time and the hull's height and climb from the moment the finger goes down; the helm
+    // (games/submarine/helm.ts) must have it sinking at 0.2 m/s within 0.5 s and 2 m down within 3 s
+    // of game time (the old controls: 0.65 s and 5.1 s, test/games/submarine-helm.test.ts).
+    const g = await h.openGame('submarine', { ...PHONE, query: { waves: 0 } });
+    type Sub = {
+      world: { time: number; components: { Position: { y: Float64Array }; Velocity: { y: Float64Array } } };
+      hull(): number;
+    };
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const trace: { t: number; y: number; vy: number }[] = [];
+      (window as unknown as { subTrace: typeof trace }).subTrace = trace;
+      const frame = () => {
+        const c = w.world.components,
+          e = w.hull();
+        trace.push({ t: w.world.time, y: c.Position.y[e]!, vy: c.Velocity.y[e]! });
+        if (trace.length < 100_000) requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+    });
+    const box = (await g.page.getByRole('button', { name: 'flood ballast (dive)', exact: true }).boundingBox())!;
+    const cdp = await g.page.context().newCDPSession(g.page);
+    const t0 = await read(g, 'world.time');
+    await cdp.send('Input.dispatchTouchEvent', {
+      type: 'touchStart',
+      touchPoints: [{ x: box.x + box.width / 2, y: box.y + box.height / 2, id: 1 }],
+    });
+    // Held until 3.5 s of game time have passed (a slow machine runs fewer frames, not less game time).
+    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 3.5, t0, 60_000);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await cdp.detach();
+    const r = await g.page.evaluate((start) => {
+      const trace = (window as unknown as { subTrace: { t: number; y: number; vy: number }[] }).subTrace;
+      const before = trace.filter((p) => p.t <= start);
+      const y0 = before.length > 0 ? before[before.length - 1]!.y : trace[0]!.y;
+      const after = trace.filter((p) => p.t > start);
+      const speed = after.find((p) => p.vy <= -0.2),
+        deep = after.find((p) => p.y <= y0 - 2);
+      return { speed: speed ? speed.t - start : Number.NaN, deep: deep ? deep.t - start : Number.NaN, frames: after.length };
+    }, t0);
+    // The touch reaches the game within a frame or two of game time (1/60 s each) after t0 is read.
+    expect(r.speed).toBeLessThan(0.5 + 2 / 60);
+    expect(r.deep).toBeLessThan(3);
+    // The gauges in the status row: their longest lines (a deep, fast, wrecked boat) still fit the
+    // 390 px width, nothing is cut off, and the beacon arrow is drawn.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as { state: { hits: number; over: string; collected: number } };
+      Object.assign(w.state, { hits: 3, over: 'sunk', collected: 12 });
+    });
+    await g.frames(8);
+    const gauge = await g.page.evaluate(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
+      const b = el.getBoundingClientRect();
+      return { text: el.textContent ?? '', right: b.right, bottom: b.bottom, scroll: el.scrollWidth, client: el.clientWidth };
+    });
+    expect(gauge.text).toContain('HULL BREACHED');
+    expect(gauge.right).toBeLessThanOrEqual(390);
+    expect(gauge.scroll).toBeLessThanOrEqual(gauge.client);
+    expect((await checkLayout(g.page)).clipped).toEqual([]);
+    const aim = await g.page.evaluate(() =>
+      (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
+    );
+    expect(aim.visible).toBe(true);
+    expect(aim.text).toMatch(/^\d+ m$/);
     expect(g.errors).toEqual([]);
     await g.close();
   });
