@@ -22,7 +22,7 @@ const params = {
   seed: seedParam(),
   beacons: numberParam('beacons', { default: 6, min: 1, max: 20, integer: true }),
   waveHeight: numberParam('waves', { default: 1, min: 0, max: 3 }),
-  pixelsPerMeter: numberParam('zoom', { default: 6, min: 2, max: 20 }),
+  pixelsPerMeter: numberParam('zoom', { default: 8, min: 2, max: 20 }),
   reset: () => shell.reset(),
 };
 
@@ -184,6 +184,14 @@ createButtonBar(
   { label: 'ballast, trim and screw' },
 );
 
+/** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
+function speckHash(i: number, j: number): number {
+  let h = Math.imul(i, 0x27d4eb2d) ^ Math.imul(j, 0x165667b1);
+  h = Math.imul(h ^ (h >>> 15), 0x85ebca6b);
+  h = Math.imul(h ^ (h >>> 13), 0xc2b2ae35);
+  return (h ^ (h >>> 16)) >>> 0;
+}
+
 /** Bubbles and spray (drawing only): world position (m), age and life (s), radius (m). */
 const bubbles: { x: number; y: number; age: number; life: number; r: number }[] = [];
 let bubbleTime = 0;
@@ -251,8 +259,9 @@ function draw(): void {
   const k = params.pixelsPerMeter,
     W = app.screen.width,
     H = app.screen.height;
+  // The camera follows the hull, but never shows more sky than the top 15% of the view.
   const cx = c.Position.x[e]!,
-    cy = Math.min(-H / k / 2 + 25, c.Position.y[e]!);
+    cy = Math.min(-H / k / 2 + (0.15 * H) / k, c.Position.y[e]!);
   const sx = (x: number) => W / 2 + (x - cx) * k,
     sy = (y: number) => H / 2 - (y - cy) * k;
   g.clear();
@@ -260,15 +269,40 @@ function draw(): void {
   // Sea surface with waves.
   const t = world.time,
     surface = c.FluidRegion.surface[handles.sea]!;
+  // Each outline runs to the right edge itself (px = W), so no strip is left unfilled there.
   g.moveTo(0, H);
-  for (let px = 0; px <= W; px += 8) {
+  for (let px = 0; ; px = Math.min(W, px + 8)) {
     const x = cx + (px - W / 2) / k;
     g.lineTo(px, sy(surface + params.waveHeight * 0.3 * Math.sin(0.15 * x - 1.3 * t)));
+    if (px >= W) break;
   }
   g.lineTo(W, H).closePath().fill({ color: 0x0e4a7a, alpha: 0.95 });
+  // The deep is darker: a band every 5 m, each a little darker, to 0.65 black at 150 m.
+  for (let d = 5; d < 160; d += 5) {
+    const top = Math.max(0, sy(surface - d)),
+      bottom = Math.min(H, sy(surface - d - 5));
+    if (bottom > top) g.rect(0, top, W, bottom - top).fill({ color: 0x020a14, alpha: Math.min(0.65, (0.65 * d) / 150) });
+  }
+  // Marine snow: specks fixed in the water, one to each 6 m cell, so the boat is seen to move past them.
+  const cell = 6;
+  const x0 = Math.floor((cx - W / 2 / k) / cell),
+    x1 = Math.ceil((cx + W / 2 / k) / cell),
+    y0 = Math.floor((cy - H / 2 / k) / cell),
+    y1 = Math.min(-1, Math.ceil((cy + H / 2 / k) / cell));
+  for (let i = x0; i <= x1; i++)
+    for (let j = y0; j <= y1; j++) {
+      const h = speckHash(i, j);
+      const wx = (i + (h & 0xff) / 256) * cell + 0.3 * Math.sin(0.4 * t + h),
+        wy = (j + ((h >>> 8) & 0xff) / 256) * cell;
+      if (wy > surface - 0.5) continue;
+      g.circle(sx(wx), sy(wy), 0.8 + ((h >>> 16) & 3) * 0.35).fill({ color: 0xcfe6ff, alpha: 0.25 + ((h >>> 20) & 7) * 0.04 });
+    }
   // Seabed.
   g.moveTo(0, H);
-  for (let px = 0; px <= W; px += 6) g.lineTo(px, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)));
+  for (let px = 0; ; px = Math.min(W, px + 6)) {
+    g.lineTo(px, sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)));
+    if (px >= W) break;
+  }
   g.lineTo(W, H).closePath().fill(0x5b4a32);
   // Beacons.
   for (let i = 0; i < taken.length; i++) {
