@@ -1,4 +1,15 @@
-import { createCloth, createPhysicsWorld, pinClothPoint, setTimeStep, setWind, slotOf, step, windAt } from '@bitphysics/physics';
+import {
+  createCloth,
+  createPhysicsWorld,
+  pinClothPoint,
+  restore,
+  setTimeStep,
+  setWind,
+  slotOf,
+  snapshot,
+  step,
+  windAt,
+} from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import { cosine } from '../../packages/physics/src/math/cosine.js';
 
@@ -67,6 +78,119 @@ describe('cloth solver', () => {
     // The hold changed the motion (by more than 1 cm somewhere), so the comparison covers it.
     const free = run(false, false);
     expect(Math.max(...kept.map((v, i) => Math.abs(v - free[i]!)))).toBeGreaterThan(0.01);
+  });
+});
+
+describe('soft pins (pinClothPoint with options)', () => {
+  /** A rigid free 2 x 2 cloth (structural links only) of four points of mass m, each soft-pinned where it starts. */
+  const square = (m: number, pin: { compliance?: number; maxForce?: number }, drag: number) => {
+    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 32 });
+    const cloth = createCloth(world, {
+      columns: 2,
+      rows: 2,
+      width: 1,
+      height: 1,
+      origin: [0, 2],
+      mass: 4 * m,
+      pinned: 'none',
+      shearCompliance: null,
+      bendCompliance: null,
+      drag,
+    });
+    const P = world.components.Position;
+    const start = Array.from(cloth.points, (h) => [P.x[slotOf(h)]!, P.y[slotOf(h)]!] as const);
+    cloth.points.forEach((h, i) => {
+      pinClothPoint(world, h, start[i]!, pin);
+    });
+    return { world, cloth, start };
+  };
+
+  test("a soft pin holds its point by Hooke's law: sag = compliance x weight", () => {
+    // Each point hangs on its own zero-length spring of compliance alpha; the links between the points
+    // carry no load. In small-step XPBD the rest state is exactly alpha m g below the target (as for a
+    // compliant link, Macklin et al. 2019). Chosen for a 5 cm sag; tolerance 1e-4 m, with the oscillation
+    // damped by drag.
+    const g = 9.81,
+      m = 0.25,
+      alpha = 0.05 / (m * g);
+    const { world, cloth, start } = square(m, { compliance: alpha }, 3);
+    for (let i = 0; i < 240; i++) step(world);
+    const P = world.components.Position;
+    cloth.points.forEach((h, i) => {
+      expect(Math.abs(P.x[slotOf(h)]! - start[i]![0])).toBeLessThan(1e-4);
+      expect(Math.abs(start[i]![1] - P.y[slotOf(h)]! - alpha * m * g)).toBeLessThan(1e-4);
+    });
+    // Each pin holds its point's weight.
+    for (let i = 0; i < 4; i++) expect(Math.abs(world.cloth.softPinForce[i]! - m * g)).toBeLessThan(1e-6);
+  });
+
+  test('a soft pin pulls with at most maxForce: a point it cannot hold falls at g - maxForce / m', () => {
+    // A pin of no compliance and a largest force F below the weight m g slips from the first substep on,
+    // pulling up with exactly F: without drag the point falls from rest as 0.5 (g - F / m) t^2 (the
+    // small steps' semi-implicit Euler adds a factor 1 + 1 / N for N substeps, 0.15% here). Tolerance 0.5%.
+    const g = 9.81,
+      m = 0.25,
+      F = 0.6 * m * g;
+    const { world, cloth, start } = square(m, { maxForce: F }, 0);
+    for (let i = 0; i < 60; i++) step(world);
+    const fall = 0.5 * (g - F / m) * 1 ** 2;
+    const y = world.components.Position.y;
+    cloth.points.forEach((h, i) => {
+      expect(Math.abs((start[i]![1] - y[slotOf(h)]!) / fall - 1)).toBeLessThan(5e-3);
+    });
+    for (let i = 0; i < 4; i++) expect(world.cloth.softPinForce[i]).toBeCloseTo(F, 9);
+  });
+
+  test('hard and soft pins replace each other, null lets go of both, and bad options throw', () => {
+    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 64 });
+    const cloth = createCloth(world, { columns: 3, rows: 3, width: 1, height: 1, origin: [0, 2], mass: 0.9 });
+    const h = cloth.points[7]!,
+      e = slotOf(h),
+      inv = world.components.Mass.inv;
+    pinClothPoint(world, h, [0.5, 1]);
+    expect(inv[e]).toBe(0);
+    pinClothPoint(world, h, [0.5, 1], { compliance: 0.01, maxForce: 5 });
+    expect(inv[e]).toBeCloseTo(10, 12);
+    expect(world.cloth.softPinCount).toBe(1);
+    pinClothPoint(world, h, [0.6, 1], { compliance: 0.02 });
+    expect(world.cloth.softPinCount).toBe(1);
+    expect(Array.from(world.cloth.softPinTarget.subarray(0, 2))).toEqual([0.6, 1]);
+    expect(world.cloth.softPinCompliance[0]).toBe(0.02);
+    expect(world.cloth.softPinMaxForce[0]).toBe(Infinity);
+    pinClothPoint(world, h, [0.5, 1]);
+    expect(world.cloth.softPinCount).toBe(0);
+    expect(inv[e]).toBe(0);
+    pinClothPoint(world, h, [0.5, 1], {});
+    pinClothPoint(world, h, null);
+    expect(world.cloth.softPinCount).toBe(0);
+    expect(inv[e]).toBeCloseTo(10, 12);
+    expect(() => pinClothPoint(world, h, [0, 0], { compliance: -1 })).toThrow(/compliance must be >= 0, got -1/);
+    expect(() => pinClothPoint(world, h, [0, 0], { maxForce: 0 })).toThrow(/maxForce must be > 0, got 0/);
+    expect(() => pinClothPoint(world, h, [0, 0], { stiffness: 1 } as never)).toThrow(/unknown option "stiffness"/);
+    expect(world.cloth.softPinCount).toBe(0);
+  });
+
+  test('a world restored from a snapshot taken mid-pull steps on bit-identically', () => {
+    // Reference: the original world. The soft pins live in world.cloth, which the snapshot carries.
+    const build = () => {
+      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 512 });
+      const cloth = createCloth(world, { columns: 8, rows: 8, width: 1, height: 1, origin: [0, 2], tearStretch: 0.3 });
+      return { world, cloth };
+    };
+    const { world, cloth } = build();
+    for (let i = 0; i < 10; i++) {
+      for (const k of [58, 59, 60])
+        pinClothPoint(world, cloth.points[k]!, [0.4 + 0.1 * (k - 58) + 0.05 * i, 1 - 0.05 * i], { compliance: 0.002, maxForce: 3 });
+      step(world);
+    }
+    const saved = snapshot(world);
+    for (let i = 0; i < 30; i++) step(world);
+    const copy = build().world;
+    restore(copy, saved);
+    for (let i = 0; i < 30; i++) step(copy);
+    expect(copy.cloth.softPinCount).toBe(3);
+    expect(Array.from(copy.components.Position.x)).toEqual(Array.from(world.components.Position.x));
+    expect(Array.from(copy.components.Position.y)).toEqual(Array.from(world.components.Position.y));
   });
 });
 

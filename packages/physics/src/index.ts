@@ -49,6 +49,7 @@ export {
 } from './bodies/rigid.js';
 export type { Cloth, ClothOptions } from './cloth/create.js';
 export { clothPointIndex, createCloth } from './cloth/create.js';
+export type { ClothPinOptions } from './cloth/pin.js';
 export { pinClothPoint } from './cloth/pin.js';
 export { clothSystem } from './cloth/solver.js';
 export { BodyType, broadphaseSystem, PairKind } from './collision/broadphase/grid.js';

@@ -1,7 +1,7 @@
 import { removeEntity } from 'bitecs';
 import type { ClothState } from '../world/cloth-state.js';
 import type { Components } from '../world/components.js';
-import { currentHandle } from '../world/handles.js';
+import { currentHandle, isAlive, slotOf } from '../world/handles.js';
 import { pushBreak } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -26,6 +26,8 @@ import { query } from '../world/query.js';
  *    square root and a division cost about 20% more a step on the bench's cloth. (Jakobsen's
  *    (r^2 - L^2) / (r^2 + L^2), "Advanced Character Physics", 2001, costs the same but is only
  *    first-order right: 2.5% off at 5% strain.)
+ *    Before the links, each soft pin (pinClothPoint with options) pulls its point toward its target: for
+ *    C = |x - target|, dlambda = min(C / (w + alpha~), maxForce h_s^2), x moves w dlambda toward it;
  * 3. positions and velocities written back;
  * 4. links stretched past their `tearStretch` tear: removed, each reported in `world.joints.breaks`.
  *
@@ -66,8 +68,10 @@ export function clothSystem(world: PhysicsWorld): void {
     cl.preparedVersion = cl.built;
     cl.preparedStep = hs;
   }
+  const pins = cl.softPinCount;
   for (let sub = 0; sub < S; sub++) {
     for (let i = 0; i < np; i += CHUNK) predictPoints(cl, sub > 0, i, Math.min(np, i + CHUNK));
+    if (pins > 0) projectSoftPins(world, cl);
     // Project: inextensible links, then the compliant ones (one pass; their multipliers restart each substep).
     for (let l = 0; l < rigid; l += CHUNK) projectLinks(cl, l, Math.min(rigid, l + CHUNK));
     if (sub < S - 1) for (let l = rigid; l < n; l += CHUNK) projectLinks(cl, l, Math.min(n, l + CHUNK));
@@ -190,6 +194,38 @@ function predictPoints(cl: ClothState, after: boolean, from: number, to: number)
     xb[Q + v + 1] = y;
     xb[o] = x + v1 * hs;
     xb[o + 1] = y + v2 * hs;
+  }
+}
+
+/**
+ * The soft pins' pass of a substep (see pinClothPoint): each pin of a live, moving, packed point moves it
+ * toward its target by w dlambda, dlambda = min(C / (w + alpha / h_s^2), maxForce h_s^2), C its distance
+ * from the target, and records the force dlambda / h_s^2 (N); other pins record 0.
+ */
+function projectSoftPins(world: PhysicsWorld, cl: ClothState): void {
+  const xb = cl.buffer,
+    hs = cl.scalars[0]!,
+    ihs2 = cl.scalars[6]!,
+    T = cl.softPinTarget,
+    F = cl.softPinForce;
+  for (let i = 0; i < cl.softPinCount; i++) {
+    F[i] = 0;
+    const h = cl.softPinHandle[i]!;
+    if (!isAlive(world, h)) continue;
+    const e = slotOf(h);
+    if (cl.seen[e] !== cl.seenStamp) continue;
+    const o = 3 * cl.compact[e]!,
+      w = xb[o + 2]!;
+    if (w === 0) continue;
+    const dx = xb[o]! - T[2 * i]!,
+      dy = xb[o + 1]! - T[2 * i + 1]!,
+      C = Math.sqrt(dx * dx + dy * dy);
+    if (C === 0) continue;
+    const dl = Math.min(C / (w + cl.softPinCompliance[i]! * ihs2), cl.softPinMaxForce[i]! * hs * hs),
+      s = (w * dl) / C;
+    xb[o] = xb[o]! - s * dx;
+    xb[o + 1] = xb[o + 1]! - s * dy;
+    F[i] = dl * ihs2;
   }
 }
 

@@ -42,6 +42,18 @@ export interface ClothState {
   tearQ: number;
   /** This step's scalars for the solver's passes: h_s (s), 1 / h_s (1/s), g_x h_s, g_y h_s (m/s), g_x h, g_y h (m/s), 1 / h_s^2 (1/s^2). */
   scalars: Float64Array;
+  /** Soft pins (pinClothPoint with options) in the `softPin*` arrays, rows [0, softPinCount), in the order they were made; the arrays grow by doubling. */
+  softPinCount: number;
+  /** Per soft pin: the handle of its point. */
+  softPinHandle: Float64Array;
+  /** Per soft pin (2 each): the position it pulls its point toward, x and y, m. */
+  softPinTarget: Float64Array;
+  /** Per soft pin: its compliance, m/N, >= 0 (1 / stiffness). */
+  softPinCompliance: Float64Array;
+  /** Per soft pin: the largest force it pulls with, N, > 0 (Infinity: no bound). */
+  softPinMaxForce: Float64Array;
+  /** Per soft pin: the force it pulled with in the last substep, N (0 when its point was not moved). */
+  softPinForce: Float64Array;
 }
 
 /**
@@ -73,6 +85,12 @@ export function createClothState(): ClothState {
     scalars: new Float64Array(7),
     preparedVersion: -1,
     preparedStep: 0,
+    softPinCount: 0,
+    softPinHandle: new Float64Array(0),
+    softPinTarget: new Float64Array(0),
+    softPinCompliance: new Float64Array(0),
+    softPinMaxForce: new Float64Array(0),
+    softPinForce: new Float64Array(0),
   };
   // maxStretch and preparedStep hold fractions: V8 gives a field first written with 0 small-integer storage
   // and changes the object's hidden class when the first fraction arrives, which threw the solver's
