@@ -17,14 +17,8 @@ import {
   rowKey,
 } from './manifolds-3d.js';
 import { boxArgs, boxBox3DAt, planeArgs, planeBox3DAt } from './narrowphase/box-box-3d.js';
-import {
-  type Collider3D,
-  ColliderKind3D,
-  collide3D,
-  collidePlane3D,
-  createManifold3D,
-  type Manifold3D,
-} from './narrowphase/manifold-3d.js';
+import { collide3D, collidePlane3D } from './narrowphase/collide-3d.js';
+import { type Collider3D, ColliderKind3D, createManifold3D, type Manifold3D } from './narrowphase/manifold-3d.js';
 import { BodyType } from './state.js';
 
 /** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */

@@ -26,7 +26,7 @@ interface Manifold3D {
  *   does not flicker between steps.
  * - Face contact: the incident face (B's face most opposed to the reference normal) clipped against
  *   the reference face's four side planes in the reference face's own 2D coordinates (Sutherland and
- *   Hodgman, 1974); up to eight points, reduced to four (collision/narrowphase/manifold-3d.ts's rule: the deepest, the
+ *   Hodgman, 1974); up to eight points, reduced to four (collision/narrowphase/candidates-3d.ts's rule: the deepest, the
  *   farthest from it, the largest areas on either side). Edge contact: one point midway between the
  *   closest points of the two edges (Ericson 5.1.9).
  * - Feature ids: the reference face (box, axis, side), the incident face (axis, side), and the incident
