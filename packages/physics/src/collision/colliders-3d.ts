@@ -1,0 +1,189 @@
+import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { type Collider3D, ColliderKind3D, createManifold3D, type Manifold3D } from './narrowphase/manifold-3d.js';
+import { BodyType } from './state.js';
+
+/**
+ * The colliders of a 3D shape pass (collision/shapes-3d.ts): each shape and ball of a moving or
+ * touchable body with its start-of-step pose, fattened box and speed, in reused scratch arrays, and the
+ * sleeping bodies the pass met (woken with their islands after it).
+ */
+
+/** Sleeping bodies met this pass by a moving or kinematic one (woken with their islands after the pass). */
+export const wakes = { list: new Int32Array(16), count: 0 };
+
+/** Queues sleeping body `e` to be woken with its island after the pass. */
+export function queueWake(e: number): void {
+  if (wakes.count >= wakes.list.length) {
+    const l = new Int32Array(2 * wakes.list.length);
+    l.set(wakes.list);
+    wakes.list = l;
+  }
+  wakes.list[wakes.count++] = e;
+}
+
+/** Whether a pair of body types is collided: one is dynamic, or a kinematic body meets a sleeping one (to wake it). */
+export function meets(ta: number, tb: number): boolean {
+  return (
+    ta === BodyType.Dynamic ||
+    tb === BodyType.Dynamic ||
+    (ta === BodyType.Kinematic && tb === BodyType.Sleeping) ||
+    (ta === BodyType.Sleeping && tb === BodyType.Kinematic)
+  );
+}
+
+/** Per-step collider scratch (module-level, reused; the step rebuilds it). */
+interface Scratch {
+  n: number;
+  shape: Int32Array;
+  body: Int32Array;
+  minX: Float64Array;
+  maxX: Float64Array;
+  minY: Float64Array;
+  maxY: Float64Array;
+  minZ: Float64Array;
+  maxZ: Float64Array;
+  px: Float64Array;
+  py: Float64Array;
+  pz: Float64Array;
+  R: Float64Array;
+  speed: Float64Array;
+  order: Int32Array;
+  ball: Uint8Array;
+  /** Per shape slot (a ball's body slot): its collider index this pass, valid where colliderStamp holds colliderPass. */
+  colliderOf: Int32Array;
+  colliderStamp: Int32Array;
+  colliderPass: number;
+  /** This pass's speculative distance of the 3D shapes, m (SHAPE_SPECULATIVE_DISTANCE capped by the world's). */
+  spec: number;
+  /** Whether a sensor shape took part in this pass (resting colliders then search every step: sensor events need it). */
+  anySensor: boolean;
+  /** Rows written minus the previous step's row of the last box pair found (the guess for the next pair's row). */
+  rowShift: number;
+}
+export const scratch: Scratch = {
+  n: 0,
+  shape: new Int32Array(0),
+  body: new Int32Array(0),
+  minX: new Float64Array(0),
+  maxX: new Float64Array(0),
+  minY: new Float64Array(0),
+  maxY: new Float64Array(0),
+  minZ: new Float64Array(0),
+  maxZ: new Float64Array(0),
+  px: new Float64Array(0),
+  py: new Float64Array(0),
+  pz: new Float64Array(0),
+  R: new Float64Array(0),
+  speed: new Float64Array(0),
+  order: new Int32Array(0),
+  ball: new Uint8Array(0),
+  colliderOf: new Int32Array(0),
+  colliderStamp: new Int32Array(0),
+  colliderPass: 0,
+  spec: 0.02,
+  anySensor: false,
+  rowShift: 0,
+};
+
+export function ensure(n: number): void {
+  if (scratch.shape.length >= n) return;
+  let m = Math.max(64, scratch.shape.length);
+  while (m < n) m *= 2;
+  // Grown arrays keep what the pass wrote so far (gather grows them while it fills them).
+  const grow = <T extends Float64Array | Int32Array | Uint8Array>(a: T, k: number): T => {
+    const b = new (a.constructor as new (k: number) => T)(k);
+    b.set(a as never);
+    return b;
+  };
+  const sc = scratch;
+  sc.shape = grow(sc.shape, m);
+  sc.body = grow(sc.body, m);
+  sc.order = grow(sc.order, m);
+  sc.ball = grow(sc.ball, m);
+  sc.minX = grow(sc.minX, m);
+  sc.maxX = grow(sc.maxX, m);
+  sc.minY = grow(sc.minY, m);
+  sc.maxY = grow(sc.maxY, m);
+  sc.minZ = grow(sc.minZ, m);
+  sc.maxZ = grow(sc.maxZ, m);
+  sc.px = grow(sc.px, m);
+  sc.py = grow(sc.py, m);
+  sc.pz = grow(sc.pz, m);
+  sc.R = grow(sc.R, 9 * m);
+  sc.speed = grow(sc.speed, m);
+}
+
+/**
+ * Speculative distance of the 3D shapes, m: Box2D v3's (b2_speculativeDistance, 4 linear slops of 5 mm),
+ * at most the world's `speculativeDistance` (0.1 m by default, which the ball contacts keep). A pair's
+ * margin is this plus what the two bodies' speeds close in the step (speculative contacts), so boxes
+ * standing 5 cm apart (a pyramid's side neighbours) are no contacts: with 0.1 m they were manifolds that
+ * never pushed, a third of a pyramid's. As a fraction of the shape's size (2D's rule) it was too small
+ * for thin capsules: a ragdoll's joints stretched 2.6 cm in its landing, against 1.2 cm.
+ */
+export const SHAPE_SPECULATIVE_DISTANCE = 0.02;
+
+export const colA: Collider3D = {
+  kind: 0,
+  px: 0,
+  py: 0,
+  pz: 0,
+  R: new Float64Array(9),
+  radius: 0,
+  hy: 0,
+  hull: null,
+  box: 0,
+  hx: 0,
+  hz: 0,
+};
+export const colB: Collider3D = {
+  kind: 0,
+  px: 0,
+  py: 0,
+  pz: 0,
+  R: new Float64Array(9),
+  radius: 0,
+  hy: 0,
+  hull: null,
+  box: 0,
+  hx: 0,
+  hz: 0,
+};
+export const manifold: Manifold3D = createManifold3D();
+
+export function collider(world: PhysicsWorld, s: Shape3DStore, i: number, out: Collider3D): void {
+  const sc = scratch,
+    e = sc.shape[i]!;
+  out.px = sc.px[i]!;
+  out.py = sc.py[i]!;
+  out.pz = sc.pz[i]!;
+  for (let k = 0; k < 9; k++) out.R[k] = sc.R[9 * i + k]!;
+  out.box = 0;
+  if (sc.ball[i]) {
+    out.kind = ColliderKind3D.Sphere;
+    out.radius = world.components.Ball.radius[e]!;
+    out.hy = 0;
+    out.hull = null;
+    return;
+  }
+  const kind = s.kind[e]!;
+  out.radius = s.radius[e]!;
+  out.hy = s.hy[e]!;
+  if (kind === Shape3DKind.Box) {
+    out.box = 1;
+    out.hx = s.hx[e]!;
+    out.hz = s.hz[e]!;
+  }
+  if (kind === Shape3DKind.Sphere) {
+    out.kind = ColliderKind3D.Sphere;
+    out.hull = null;
+  } else if (kind === Shape3DKind.Capsule) {
+    out.kind = ColliderKind3D.Capsule;
+    out.hull = null;
+  } else {
+    out.kind = ColliderKind3D.Polyhedron;
+    out.hull = s.hulls[s.hull[e]!]!;
+    out.radius = 0;
+  }
+}
