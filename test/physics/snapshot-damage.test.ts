@@ -138,6 +138,9 @@ describe('restore of a damaged snapshot: refused with a clear error and the worl
       [['joints'], 'rowCount', -1, /world\.joints\.rowCount must be an integer in \[0, /],
       [['cloth'], 'substeps', 1e9, /world\.cloth\.substeps must be an integer in \[0, 1000\]/],
       [[], 'time', { $t: 'n', v: 'Infinity' }, /world\.time must be a finite number/],
+      // The world's options: the header's copy is checked first; the state's must agree with the world.
+      [[], 'dimensions', { $t: 'n', v: 'NaN' }, /world\.dimensions must be 2, as in the world it restores into .* got NaN$/],
+      [[], 'capacity', 65, /world\.capacity must be \d+, as in the world it restores into .* got 65$/],
     ];
     for (const [path, key, value, message] of cases) {
       const bad = copyOf(saved);

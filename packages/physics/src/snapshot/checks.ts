@@ -62,6 +62,13 @@ const RULES: ReadonlyMap<string, Rule> = new Map<string, Rule>([
   ['world.cloth.tearQ', (v) => (isNumber(v) && v >= 0 ? null : 'a number >= 0 (Infinity: no tearing)')],
 ]);
 
+/**
+ * The world's fields fixed when it is made (its options): a snapshot restores only into a world with
+ * the same, which the header's copy checks; the state's copy must agree, or restore would write
+ * another value (a NaN dimension) over the world's own.
+ */
+const FIXED: ReadonlySet<string> = new Set(['world.dimensions', 'world.capacity']);
+
 /** Keys whose number is a count, a size, an index or a stamp: an integer >= 0 wherever it is. */
 const COUNT_KEY = /^(count|size|capacity|head|budget|stamp|epoch|version|built)$|Count$|Stamp$/;
 
@@ -106,6 +113,8 @@ function walk(e: unknown, path: string, live: unknown): void {
     const want = liveType(live);
     // null stands for a value the world keeps empty (a lazily made store): allowed where an object lives.
     if (want !== undefined && want !== (v === null ? 'null' : typeof v)) fail(path, `a ${want} (as the world holds)`, v);
+    if (FIXED.has(path) && live !== undefined && v !== live)
+      fail(path, `${describe(live)}, as in the world it restores into (fixed when a world is made)`, v);
     check(v, path, path.slice(path.lastIndexOf('.') + 1));
     return;
   }
