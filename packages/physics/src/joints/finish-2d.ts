@@ -1,0 +1,161 @@
+import { currentHandle } from '../world/handles.js';
+import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
+import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import {
+  AXX,
+  AXY,
+  DCX,
+  DCY,
+  EID,
+  IA,
+  IANG,
+  IB,
+  ILOW,
+  ILX,
+  ILY,
+  IMOT,
+  ISPR,
+  IUP,
+  LEN,
+  MAXL,
+  MINL,
+  PIN,
+  POINT_LINK,
+  RAX,
+  RAY,
+  RBX,
+  RBY,
+  TF,
+} from './layout-2d.js';
+import { removeJointUnchecked } from './remove.js';
+
+/** The end of a step's 2D joint solve (stage 4 of joints/solver-2d.ts): forces and torques, the largest position error, impulses kept for warm starting, and joints past their break threshold removed. */
+
+/**
+ * After the bodies are written back: each joint's constraint force and torque (accumulated impulse
+ * of the last substep / h_s), the largest position error left, the impulses kept for the next step's
+ * warm start, and breaking: a joint whose force exceeds `breakForce`, torque `breakTorque` or strain
+ * `breakStretch` is removed and reported in `world.joints.breaks`.
+ * @category Joints and ropes
+ */
+export function finishJoints(world: PhysicsWorld, hs: number): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  js.stats.maxError = 0;
+  js.stats.maxErrorJoint = 0;
+  if (n === 0) return;
+  const J = world.components.Joint;
+  const sb = world.collision.bodyState,
+    rot = js.rotation,
+    rows = js.rows,
+    ri = js.rowInts,
+    imp = js.impulses;
+  const invH = 1 / hs;
+  let maxError = 0,
+    maxJoint = 0;
+  let doomed: number[] | null = null;
+  const lf = js.links,
+    lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS,
+      o = lint[l * LINK_INTS + 2]! * ROW_FLOATS;
+    if (lf[f + 5] === 0) rows[o + ISPR] = lf[f + 4]!;
+    else rows[o + IUP] = -lf[f + 4]!;
+  }
+  const pf = js.pins,
+    pint = js.pinInts;
+  for (let l = 0, m = js.pinCount; l < m; l++) {
+    const f = l * PIN_FLOATS,
+      o = pint[l * PIN_INTS + 2]! * ROW_FLOATS;
+    rows[o + ILX] = pf[f + 6]!;
+    rows[o + ILY] = pf[f + 7]!;
+  }
+  for (let r = 0; r < n; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const j = ri[q + EID]!,
+      ia = ri[q + IA]!,
+      ib = ri[q + IB]!,
+      tf = ri[q + TF]!;
+    const type = tf === POINT_LINK ? JointType.Distance : tf === PIN ? JointType.Revolute : tf & 255,
+      flags = tf >> 8;
+    const oA = ia * 8,
+      oB = ib * 8;
+    const cA = rot[ia * 3]!,
+      sA = rot[ia * 3 + 1]!,
+      cB = rot[ib * 3]!,
+      sB = rot[ib * 3 + 1]!;
+    const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!,
+      rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
+    const rBx = cB * rows[o + RBX]! - sB * rows[o + RBY]!,
+      rBy = sB * rows[o + RBX]! + cB * rows[o + RBY]!;
+    const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx;
+    const dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+    let force = 0,
+      torque = 0,
+      error = 0,
+      stretch = 0;
+    switch (type) {
+      case JointType.Distance: {
+        const L = Math.sqrt(dx * dx + dy * dy);
+        force = Math.abs(rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]!) * invH;
+        const minL = rows[o + MINL]!,
+          maxL = rows[o + MAXL]!,
+          rest = rows[o + LEN]!;
+        if (minL < maxL) error = Math.max(0, minL - L, L - maxL);
+        else error = Math.abs(L - rest);
+        stretch = rest > 0 ? (L - rest) / rest : 0;
+        break;
+      }
+      case JointType.Revolute:
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
+        torque = Math.abs(rows[o + ISPR]! + rows[o + IMOT]! + rows[o + ILOW]! - rows[o + IUP]!) * invH;
+        error = Math.sqrt(dx * dx + dy * dy);
+        break;
+      case JointType.Weld:
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
+        torque = Math.abs(rows[o + IANG]!) * invH;
+        if (!(flags & JointFlag.Spring)) error = Math.sqrt(dx * dx + dy * dy);
+        break;
+      case JointType.Prismatic:
+      case JointType.Wheel: {
+        const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
+          axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
+        const axial = rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]! + (type === JointType.Prismatic ? rows[o + IMOT]! : 0);
+        force = Math.hypot(axial, rows[o + ILX]!) * invH;
+        torque = Math.abs(type === JointType.Prismatic ? rows[o + IANG]! : rows[o + IMOT]!) * invH;
+        error = Math.abs(-axy * dx + axx * dy);
+        break;
+      }
+      case JointType.Mouse:
+        force = Math.sqrt(rows[o + ILX]! * rows[o + ILX]! + rows[o + ILY]! * rows[o + ILY]!) * invH;
+        torque = Math.abs(rows[o + IANG]!) * invH;
+        break;
+    }
+    J.force[j] = force;
+    J.torque[j] = torque;
+    if (error > maxError) {
+      maxError = error;
+      maxJoint = j;
+    }
+    const base = j * IMPULSES;
+    for (let s = 0; s < IMPULSES; s++) imp[base + s] = rows[o + ILX + s]!;
+    if (force > J.breakForce[j]! || torque > J.breakTorque[j]! || stretch > J.breakStretch[j]!) {
+      (doomed ??= []).push(j);
+      const a = J.a[j]!;
+      pushBreak(
+        js.breaks,
+        currentHandle(world, j),
+        a === 0 ? 0 : currentHandle(world, a),
+        currentHandle(world, J.b[j]!),
+        force,
+        torque,
+        stretch,
+      );
+    }
+  }
+  js.stats.maxError = maxError;
+  js.stats.maxErrorJoint = maxJoint;
+  if (doomed) for (const j of doomed) removeJointUnchecked(world, j);
+}

@@ -1,0 +1,340 @@
+import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
+import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import {
+  AB,
+  AI,
+  AM,
+  AXX,
+  AXY,
+  DANG,
+  DCX,
+  DCY,
+  EID,
+  FMAX,
+  IA,
+  IB,
+  ILX,
+  ILY,
+  JB,
+  JI,
+  JM,
+  KAX,
+  KMOT,
+  LEN,
+  LOW,
+  MAXL,
+  MINL,
+  MMAX,
+  MSPD,
+  PIN,
+  POINT_LINK,
+  RAX,
+  RAY,
+  RBX,
+  RBY,
+  SB,
+  SI,
+  SM,
+  TF,
+  UP,
+  WELD_ANGULAR_SOFT,
+} from './layout-2d.js';
+import { fixedSpring } from './spring.js';
+
+/** Preparation of the 2D joint rows at the start of a step (stage 2 of joints/solver-2d.ts): anchors, axes and centres, effective masses, spring and rigid softness, and last step's impulses. */
+
+/**
+ * Writes the soft-constraint coefficients of a spring of `hertz` (Hz, >= 0) and damping ratio `zeta`
+ * (>= 0) integrated implicitly over `h` (s) at rows[o..o+2]: bias rate omega / (2 zeta + h omega) (1/s),
+ * mass scale a / (1 + a) and impulse scale 1 / (1 + a), a = h omega (2 zeta + h omega) (Catto, "Soft
+ * Constraints", GDC 2011; Box2D v3 b2MakeSoft). hertz 0 gives the rigid 0, 1, 0. Written so every
+ * coefficient stays finite and in range at any hertz: a spring so soft that a rounds to 0 (a denormal
+ * hertz) gives 0, 0, 1, no impulse at all; one so stiff that a overflows gives 1 / h, 1, 0.
+ */
+function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    rows[o] = 0;
+    rows[o + 1] = 1;
+    rows[o + 2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz;
+  const hw = h * omega;
+  const a = hw * (2 * zeta + hw);
+  if (!(a > 0)) {
+    rows[o] = 0;
+    rows[o + 1] = 0;
+    rows[o + 2] = 1;
+    return;
+  }
+  rows[o] = zeta === 0 ? 1 / h : 1 / (h + (2 * zeta) / omega);
+  rows[o + 1] = 1 / (1 + 1 / a);
+  rows[o + 2] = 1 / (1 + a);
+}
+
+/**
+ * Fills every row from the joint components and the solver bodies (already gathered and filled by the
+ * contact solver): start-of-step anchors (world frame, from each centre), centre difference, relative
+ * angle, axis, effective masses, softness, and warm-start impulses. `hs` is the solver substep, s.
+ * @category Joints and ropes
+ */
+export function prepareJoints(world: PhysicsWorld, hs: number): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  js.stats.rows = n;
+  if (n === 0) return;
+  const cs = world.collision;
+  const c = world.components;
+  const J = c.Joint;
+  const sb = cs.bodyState,
+    ex = cs.bodyExtra;
+  const count = cs.solverBodyCount;
+  if (js.rotation.length < count * 3) js.rotation = new Float64Array(Math.max(count * 3, js.rotation.length * 2));
+  const rot = js.rotation;
+  for (let k = 0; k < count; k++) {
+    rot[k * 3] = 1;
+    rot[k * 3 + 1] = 0;
+    rot[k * 3 + 2] = 0;
+  }
+  // Each solver body's angle at the start of the step (its angle less the rotation still owed), with
+  // its cos and sin, once per body rather than once per joint.
+  if (js.startPose.length < count * 3) js.startPose = new Float64Array(Math.max(count * 3, js.startPose.length * 2));
+  const pose = js.startPose,
+    list = cs.solverBodies,
+    angle = c.Angle.value;
+  for (let k = 1; k < count; k++) {
+    const t = angle[list[k]!]! + ex[k * 6 + 5]!;
+    pose[k * 3] = Math.cos(t);
+    pose[k * 3 + 1] = Math.sin(t);
+    pose[k * 3 + 2] = t;
+  }
+  const rows = js.rows,
+    ri = js.rowInts,
+    imp = js.impulses;
+  const lf = js.links,
+    lint = js.linkInts,
+    pf = js.pins,
+    pint = js.pinInts;
+  let links = 0,
+    pins = 0;
+  const px = c.Position.x,
+    py = c.Position.y,
+    ang = c.Angle.value;
+  const jointHertz = Math.min(js.settings.hertz, 0.25 / hs),
+    jointZeta = js.settings.dampingRatio;
+  const warm = js.settings.warmStarting;
+  const omega = 2 * Math.PI * jointHertz;
+  const ja1 = 2 * jointZeta + hs * omega,
+    ja2 = hs * omega * ja1,
+    ja3 = 1 / (1 + ja2);
+  const jBias = omega / ja1,
+    jMass = ja2 * ja3,
+    jImp = ja3;
+  js.softness[0] = jBias;
+  js.softness[1] = jMass;
+  js.softness[2] = jImp;
+  for (let r = 0; r < n; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const j = ri[q + EID]!,
+      ia = ri[q + IA]!,
+      ib = ri[q + IB]!;
+    const type = ri[q + TF]! & 255;
+    let flags = ri[q + TF]! >> 8;
+    const a = J.a[j]!,
+      b = J.b[j]!;
+    const oA = ia * 8,
+      oB = ib * 8;
+    const mA = sb[oA + 5]!,
+      iA = sb[oA + 6]!,
+      mB = sb[oB + 5]!,
+      iB = sb[oB + 6]!;
+    // Start-of-step pose of A and B: solver bodies from their base and owed rotation; fixed bodies where they are.
+    let cAx = 0,
+      cAy = 0,
+      tA = 0,
+      cBx = 0,
+      cBy = 0,
+      tB = 0;
+    let rAx: number, rAy: number;
+    const lax = J.localAx[j]!,
+      lay = J.localAy[j]!,
+      lbx = J.localBx[j]!,
+      lby = J.localBy[j]!;
+    let cA = 1,
+      sA = 0;
+    if (ia !== 0) {
+      cAx = ex[ia * 6]!;
+      cAy = ex[ia * 6 + 1]!;
+      tA = pose[ia * 3 + 2]!;
+      cA = pose[ia * 3]!;
+      sA = pose[ia * 3 + 1]!;
+      rAx = cA * lax - sA * lay;
+      rAy = sA * lax + cA * lay;
+    } else if (a !== 0) {
+      tA = ang[a]!;
+      cA = Math.cos(tA);
+      sA = Math.sin(tA);
+      rAx = px[a]! + cA * lax - sA * lay;
+      rAy = py[a]! + sA * lax + cA * lay;
+    } else {
+      rAx = lax;
+      rAy = lay;
+    }
+    let rBx: number, rBy: number;
+    {
+      let cb: number, sbn: number;
+      if (ib !== 0) {
+        cBx = ex[ib * 6]!;
+        cBy = ex[ib * 6 + 1]!;
+        tB = pose[ib * 3 + 2]!;
+        cb = pose[ib * 3]!;
+        sbn = pose[ib * 3 + 1]!;
+      } else {
+        tB = ang[b]!;
+        cb = Math.cos(tB);
+        sbn = Math.sin(tB);
+      }
+      rBx = cb * lbx - sbn * lby;
+      rBy = sbn * lbx + cb * lby;
+      if (ib === 0) {
+        rBx += px[b]!;
+        rBy += py[b]!;
+      }
+    }
+    rows[o + RAX] = rAx;
+    rows[o + RAY] = rAy;
+    rows[o + RBX] = rBx;
+    rows[o + RBY] = rBy;
+    const dcx = cBx - cAx,
+      dcy = cBy - cAy;
+    rows[o + DCX] = dcx;
+    rows[o + DCY] = dcy;
+    let dAng = tB - tA - J.referenceAngle[j]!;
+    dAng = unwind(dAng);
+    rows[o + DANG] = dAng;
+    const axx = cA * J.axisX[j]! - sA * J.axisY[j]!,
+      axy = sA * J.axisX[j]! + cA * J.axisY[j]!;
+    rows[o + AXX] = axx;
+    rows[o + AXY] = axy;
+    rows[o + JB] = jBias;
+    rows[o + JM] = jMass;
+    rows[o + JI] = jImp;
+    const hertz = J.hertz[j]!,
+      zeta = J.dampingRatio[j]!;
+    soft(rows, o + SB, hertz, zeta, hs);
+    if (hertz > 0 && (type === JointType.Distance || type === JointType.Prismatic || type === JointType.Wheel)) {
+      fixedSpring(rows, o + SB, hertz, zeta, hs, mA + mB + 0.5 * (iA * (lax * lax + lay * lay) + iB * (lbx * lbx + lby * lby)));
+    }
+    rows[o + LOW] = J.lower[j]!;
+    rows[o + UP] = J.upper[j]!;
+    rows[o + MSPD] = J.motorSpeed[j]!;
+    rows[o + MMAX] = J.maxMotorForce[j]! * hs;
+    const angularMass = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    const dx = dcx + rBx - rAx,
+      dy = dcy + rBy - rAy;
+    switch (type) {
+      case JointType.Distance: {
+        const L = Math.sqrt(dx * dx + dy * dy);
+        const ux = L > 1e-12 ? dx / L : 1,
+          uy = L > 1e-12 ? dy / L : 0;
+        const crA = rAx * uy - rAy * ux,
+          crB = rBx * uy - rBy * ux;
+        const k = mA + mB + iA * crA * crA + iB * crB * crB;
+        rows[o + KAX] = k > 0 ? 1 / k : 0;
+        const minL = J.minLength[j]!,
+          maxL = J.maxLength[j]!,
+          rest = J.length[j]!;
+        rows[o + LEN] = rest;
+        rows[o + MINL] = minL;
+        rows[o + MAXL] = maxL;
+        // Neither body turns and no spring: a point link (anchors are fixed offsets within the step).
+        if (iA === 0 && iB === 0 && !(flags & JointFlag.Spring) && (minL === maxL || (minL === 0 && maxL < Infinity))) {
+          const l = links * LINK_FLOATS,
+            li = links * LINK_INTS;
+          lf[l] = dx;
+          lf[l + 1] = dy;
+          lf[l + 2] = rows[o + KAX]!;
+          const rope = minL < maxL;
+          lf[l + 3] = rope ? maxL : rest;
+          lf[l + 4] = warm ? (rope ? -imp[j * IMPULSES + 6]! : imp[j * IMPULSES + 3]!) : 0;
+          lf[l + 5] = rope ? 1 : 0;
+          lint[li] = oA;
+          lint[li + 1] = oB;
+          lint[li + 2] = r;
+          links++;
+          ri[q + TF] = POINT_LINK;
+        }
+        break;
+      }
+      case JointType.Revolute:
+        rows[o + KAX] = angularMass;
+        if ((flags & (JointFlag.Spring | JointFlag.Motor | JointFlag.Limit)) === 0) ri[q + TF] = PIN;
+        break;
+      case JointType.Prismatic:
+      case JointType.Wheel: {
+        const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
+          a2 = rBx * axy - rBy * axx;
+        const k = mA + mB + iA * a1 * a1 + iB * a2 * a2;
+        rows[o + KAX] = k > 0 ? 1 / k : 0;
+        rows[o + KMOT] = angularMass;
+        break;
+      }
+      case JointType.Weld: {
+        rows[o + KAX] = angularMass;
+        // The linear part: its own softness if softened, else the rigid joint softness.
+        if (hertz > 0) {
+          rows[o + JB] = rows[o + SB]!;
+          rows[o + JM] = rows[o + SM]!;
+          rows[o + JI] = rows[o + SI]!;
+          flags |= JointFlag.Spring;
+        } else flags &= ~JointFlag.Spring;
+        const ah = J.angularHertz[j]!;
+        if (ah > 0) {
+          soft(rows, o + AB, ah, J.angularDampingRatio[j]!, hs);
+          flags |= WELD_ANGULAR_SOFT;
+        } else {
+          rows[o + AB] = jBias;
+          rows[o + AM] = jMass;
+          rows[o + AI] = jImp;
+        }
+        ri[q + TF] = type | (flags << 8);
+        break;
+      }
+      case JointType.Mouse:
+        rows[o + KAX] = iB > 0 ? 1 / iB : 0;
+        rows[o + FMAX] = J.maxForce[j]! * hs;
+        soft(rows, o + AB, hertz, zeta, hs);
+        break;
+    }
+    const base = j * IMPULSES;
+    for (let s = 0; s < IMPULSES; s++) rows[o + ILX + s] = warm ? imp[base + s]! : 0;
+    if (ri[q + TF] === PIN) {
+      const f = pins * PIN_FLOATS,
+        i = pins * PIN_INTS;
+      pf[f] = rAx;
+      pf[f + 1] = rAy;
+      pf[f + 2] = rBx;
+      pf[f + 3] = rBy;
+      pf[f + 4] = dcx;
+      pf[f + 5] = dcy;
+      pf[f + 6] = rows[o + ILX]!;
+      pf[f + 7] = rows[o + ILY]!;
+      pint[i] = ia;
+      pint[i + 1] = ib;
+      pint[i + 2] = r;
+      pins++;
+    }
+  }
+  js.linkCount = links;
+  js.pinCount = pins;
+  js.generalCount = n - links - pins;
+}
+
+/** Wraps an angle into [-pi, pi]. */
+export function unwind(x: number): number {
+  if (x > Math.PI) return x - 2 * Math.PI * Math.floor((x + Math.PI) / (2 * Math.PI));
+  if (x < -Math.PI) return x + 2 * Math.PI * Math.floor((Math.PI - x) / (2 * Math.PI));
+  return x;
+}

@@ -1,0 +1,183 @@
+import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
+import { JointType } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { AXX, AXY, DCX, DCY, IA, IANG, IB, ILOW, ILX, ILY, IMOT, ISPR, IUP, PIN, POINT_LINK, RAX, RAY, RBX, RBY, TF } from './layout-2d.js';
+
+/** Per substep, 2D joints (stage 3 of joints/solver-2d.ts): the joints' rotations integrated after the positions move, and last step's impulses applied again (warm start) before the solve. */
+
+/**
+ * Advances each solver body's rotation since the start of the step by w h_s (once per substep, after
+ * the positions move): the angle exactly, its cos and sin as a normalised first-order update of the
+ * unit complex number (Box2D v3 b2IntegrateRotation).
+ * @category Joints and ropes
+ */
+export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
+  if (world.joints.rowCount === 0) return;
+  const cs = world.collision;
+  const sb = cs.bodyState,
+    rot = world.joints.rotation;
+  for (let k = 1, n = cs.solverBodyCount; k < n; k++) {
+    const o = k * 8;
+    if (sb[o + 6]! === 0) continue;
+    const w = sb[o + 2]! * hs;
+    if (w === 0) continue;
+    const r = k * 3;
+    const c0 = rot[r]!,
+      s0 = rot[r + 1]!;
+    const c1 = c0 - w * s0,
+      s1 = s0 + w * c0;
+    const inv = 1 / Math.sqrt(c1 * c1 + s1 * s1);
+    rot[r] = c1 * inv;
+    rot[r + 1] = s1 * inv;
+    rot[r + 2] = rot[r + 2]! + w;
+  }
+}
+
+/**
+ * Applies every joint's accumulated impulses to its bodies (warm start, once per substep, before the contacts').
+ * @category Joints and ropes
+ */
+export function warmStartJoints(world: PhysicsWorld): void {
+  const js = world.joints;
+  const n = js.rowCount;
+  if (n === 0) return;
+  const sb = world.collision.bodyState,
+    rot = js.rotation,
+    rows = js.rows,
+    ri = js.rowInts;
+  const lf = js.links,
+    lint = js.linkInts;
+  for (let l = 0, m = js.linkCount; l < m; l++) {
+    const f = l * LINK_FLOATS,
+      i = l * LINK_INTS;
+    const acc = lf[f + 4]!;
+    if (acc === 0) continue;
+    const oA = lint[i]!,
+      oB = lint[i + 1]!;
+    const dx = sb[oB + 3]! - sb[oA + 3]! + lf[f]!,
+      dy = sb[oB + 4]! - sb[oA + 4]! + lf[f + 1]!;
+    const L = Math.sqrt(dx * dx + dy * dy);
+    if (L < 1e-12) continue;
+    const s = acc / L,
+      Px = s * dx,
+      Py = s * dy,
+      mA = sb[oA + 5]!,
+      mB = sb[oB + 5]!;
+    sb[oA] = sb[oA]! - mA * Px;
+    sb[oA + 1] = sb[oA + 1]! - mA * Py;
+    sb[oB] = sb[oB]! + mB * Px;
+    sb[oB + 1] = sb[oB + 1]! + mB * Py;
+  }
+  const pf = js.pins,
+    pint = js.pinInts;
+  for (let l = 0, m = js.pinCount; l < m; l++) {
+    const f = l * PIN_FLOATS,
+      i = l * PIN_INTS;
+    const Px = pf[f + 6]!,
+      Py = pf[f + 7]!;
+    if (Px === 0 && Py === 0) continue;
+    const ia = pint[i]!,
+      ib = pint[i + 1]!,
+      oA = ia * 8,
+      oB = ib * 8;
+    const cA = rot[ia * 3]!,
+      sA = rot[ia * 3 + 1]!,
+      cB = rot[ib * 3]!,
+      sB = rot[ib * 3 + 1]!;
+    const rAx = cA * pf[f]! - sA * pf[f + 1]!,
+      rAy = sA * pf[f]! + cA * pf[f + 1]!;
+    const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
+      rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
+    const mA = sb[oA + 5]!,
+      iA = sb[oA + 6]!,
+      mB = sb[oB + 5]!,
+      iB = sb[oB + 6]!;
+    sb[oA] = sb[oA]! - mA * Px;
+    sb[oA + 1] = sb[oA + 1]! - mA * Py;
+    sb[oA + 2] = sb[oA + 2]! - iA * (rAx * Py - rAy * Px);
+    sb[oB] = sb[oB]! + mB * Px;
+    sb[oB + 1] = sb[oB + 1]! + mB * Py;
+    sb[oB + 2] = sb[oB + 2]! + iB * (rBx * Py - rBy * Px);
+  }
+  for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
+    const o = r * ROW_FLOATS,
+      q = r * ROW_INTS;
+    const ia = ri[q + IA]!,
+      ib = ri[q + IB]!,
+      type = ri[q + TF]! & 255;
+    if (type === POINT_LINK || type === PIN) continue;
+    const oA = ia * 8,
+      oB = ib * 8;
+    const mA = sb[oA + 5]!,
+      iA = sb[oA + 6]!,
+      mB = sb[oB + 5]!,
+      iB = sb[oB + 6]!;
+    const cA = rot[ia * 3]!,
+      sA = rot[ia * 3 + 1]!,
+      cB = rot[ib * 3]!,
+      sB = rot[ib * 3 + 1]!;
+    const rAx = cA * rows[o + RAX]! - sA * rows[o + RAY]!,
+      rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
+    const rBx = cB * rows[o + RBX]! - sB * rows[o + RBY]!,
+      rBy = sB * rows[o + RBX]! + cB * rows[o + RBY]!;
+    let Px = 0,
+      Py = 0,
+      LA = 0,
+      LB = 0;
+    switch (type) {
+      case JointType.Distance: {
+        const axial = rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]!;
+        if (axial === 0) continue;
+        const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx,
+          dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+        const L = Math.sqrt(dx * dx + dy * dy);
+        if (L < 1e-12) continue;
+        Px = (axial * dx) / L;
+        Py = (axial * dy) / L;
+        LA = rAx * Py - rAy * Px;
+        LB = rBx * Py - rBy * Px;
+        break;
+      }
+      case JointType.Revolute:
+      case JointType.Weld:
+      case JointType.Mouse: {
+        Px = rows[o + ILX]!;
+        Py = rows[o + ILY]!;
+        const axial = type === JointType.Revolute ? rows[o + ISPR]! + rows[o + IMOT]! + rows[o + ILOW]! - rows[o + IUP]! : rows[o + IANG]!;
+        LA = rAx * Py - rAy * Px + axial;
+        LB = rBx * Py - rBy * Px + axial;
+        break;
+      }
+      case JointType.Prismatic:
+      case JointType.Wheel: {
+        const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx,
+          dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+        const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
+          axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
+        const px = -axy,
+          py = axx;
+        const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
+          a2 = rBx * axy - rBy * axx;
+        const s1 = (dx + rAx) * py - (dy + rAy) * px,
+          s2 = rBx * py - rBy * px;
+        const axial =
+          type === JointType.Prismatic
+            ? rows[o + ISPR]! + rows[o + IMOT]! + rows[o + ILOW]! - rows[o + IUP]!
+            : rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]!;
+        const perp = rows[o + ILX]!;
+        const angular = type === JointType.Prismatic ? rows[o + IANG]! : rows[o + IMOT]!;
+        Px = axial * axx + perp * px;
+        Py = axial * axy + perp * py;
+        LA = axial * a1 + perp * s1 + angular;
+        LB = axial * a2 + perp * s2 + angular;
+        break;
+      }
+    }
+    sb[oA] = sb[oA]! - mA * Px;
+    sb[oA + 1] = sb[oA + 1]! - mA * Py;
+    sb[oA + 2] = sb[oA + 2]! - iA * LA;
+    sb[oB] = sb[oB]! + mB * Px;
+    sb[oB + 1] = sb[oB + 1]! + mB * Py;
+    sb[oB + 2] = sb[oB + 2]! + iB * LB;
+  }
+}
