@@ -1,6 +1,6 @@
 import { Rng } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { sortByKey } from '../../packages/physics/src/solver/impacts.js';
+import { sortByKey } from '../../packages/physics/src/solver/sort-by-key.js';
 
 /**
  * The impact stage orders its seeds with sortByKey, which replaced

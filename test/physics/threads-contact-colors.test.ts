@@ -12,7 +12,7 @@ import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/ball-prepare.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
-import { impactChangedRows } from '../../packages/physics/src/solver/impacts.js';
+import { impactChangedRows } from '../../packages/physics/src/solver/impact-state.js';
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 

@@ -47,7 +47,8 @@ import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPoo
 import type { PhysicsWorld } from '../world/options.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
-import { impactChangedRows, releaseImpactedRows } from './impacts.js';
+import { impactChangedRows } from './impact-state.js';
+import { releaseImpactedRows } from './impacts.js';
 import { stripLayout2D, stripPlan2D } from './strip-plan-kernel.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 

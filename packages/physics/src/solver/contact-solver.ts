@@ -10,7 +10,7 @@ import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { withScaledSubsteps } from './contact-scale.js';
-import { IMPACT_STRIDE } from './impacts.js';
+import { IMPACT_STRIDE } from './impact-state.js';
 import {
   accumulateManifoldImpulses,
   applyManifoldRestitution,

@@ -37,7 +37,7 @@ import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type Thread
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
-import { IMPACT_STRIDE } from './impacts.js';
+import { IMPACT_STRIDE } from './impact-state.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 
 /**

@@ -1,0 +1,344 @@
+import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
+import { BodyType } from '../collision/state.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { IMPACT_STRIDE, impactScalars, markChanged, sweepIO } from './impact-state.js';
+
+/** One impact of the impact stage (solver/impacts.ts): a contact's state at its time of impact (swept), and the impulse that stops or bounces it. */
+
+/**
+ * Cheap test before the sweep: whether the bodies of contact i move apart fast enough, relative to
+ * each other, that they could hit at more than the resting speed floor (`impactScalars[0]`, m/s)
+ * within the step (|w| + g h > floor, g h = `impactScalars[1]`).
+ */
+export function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: number): boolean {
+  const floor = impactScalars[0]!,
+    gh = impactScalars[1]!;
+  if (floor === 0) return true;
+  const oa = buf.ia[i]! * S,
+    ob = buf.ib[i]! * S;
+  const wx = sb[ob]! - sb[oa]!,
+    wy = sb[ob + 1]! - sb[oa + 1]!,
+    wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const lim = floor - gh;
+  return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
+}
+
+/** Scratch of `contactState`: time of impact, normal, relative normal velocity at t*. */
+const hit = new Float64Array(5);
+
+/**
+ * Time of impact of contact i at the bodies' current solver state: writes [t*, nx, ny, nz, v_n(t*)]
+ * into `hit` and returns true if the bodies touch within the step while approaching.
+ */
+export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+  const cs = world.collision;
+  const c = world.components;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    type = cs.bodyType;
+  const h = world.h;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S,
+    qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const a = buf.a[i]!,
+    b = buf.b[i]!,
+    kind = buf.kind[i]!;
+  const is2D = S === 8;
+  const g = world.gravity;
+  const dynA = a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0,
+    dynB = type[b] === BodyType.Dynamic ? 1 : 0;
+  const gr = dynB - dynA;
+  const ax = gr * g[0]!,
+    ay = gr * g[1]!,
+    az = is2D ? 0 : gr * g[2]!;
+  const wx = sb[ob]! - sb[oa]!,
+    wy = sb[ob + 1]! - sb[oa + 1]!,
+    wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const t0 = Math.max(imp[qa + 3]!, imp[qb + 3]!);
+  if (t0 > h) return false;
+  if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
+    const P = c.PreviousPosition,
+      radius = c.Ball.radius;
+    const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
+    const pa = kind === ContactKind.Ball ? P : c.Position;
+    const R = radius[f]! + radius[b]!;
+    // Relative position at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2.
+    let rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + wx * t0 + 0.5 * ax * t0 * t0;
+    let ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + wy * t0 + 0.5 * ay * t0 * t0;
+    let rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + wz * t0 + 0.5 * az * t0 * t0;
+    let ux = wx + ax * t0,
+      uy = wy + ay * t0,
+      uz = wz + az * t0;
+    const c0 = rx * rx + ry * ry + rz * rz - R * R;
+    let t = 0;
+    if (c0 > 0) {
+      const span = h - t0;
+      const io = sweepIO;
+      io[0] = rx;
+      io[1] = ry;
+      io[2] = rz;
+      io[6] = R;
+      io[7] = span;
+      io[3] = ux;
+      io[4] = uy;
+      io[5] = uz;
+      sweep();
+      t = io[8]!;
+      if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+        // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
+        io[3] = ux + 0.5 * ax * span;
+        io[4] = uy + 0.5 * ay * span;
+        io[5] = uz + 0.5 * az * span;
+        sweep();
+        t = io[8]!;
+      } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+        // Refine with the mean velocity over [0, t].
+        io[3] = ux + 0.5 * ax * t;
+        io[4] = uy + 0.5 * ay * t;
+        io[5] = uz + 0.5 * az * t;
+        sweep();
+        const t2 = io[8]!;
+        if (t2 >= 0) t = t2;
+      }
+      if (t < 0) return false;
+      rx += ux * t + 0.5 * ax * t * t;
+      ry += uy * t + 0.5 * ay * t * t;
+      rz += uz * t + 0.5 * az * t * t;
+      ux += ax * t;
+      uy += ay * t;
+      uz += az * t;
+    }
+    const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
+    if (!(d > 1e-12 * R)) return false;
+    const nx = rx / d,
+      ny = ry / d,
+      nz = rz / d;
+    const vn = ux * nx + uy * ny + uz * nz;
+    if (!(vn < 0)) return false;
+    hit[0] = t0 + t;
+    hit[1] = nx;
+    hit[2] = ny;
+    hit[3] = nz;
+    hit[4] = vn;
+    return true;
+  }
+  // Fixed normal: boundary face, plane, segment.
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = buf.nz[i]!;
+  const an = ax * nx + ay * ny + az * nz;
+  const vn0 = wx * nx + wy * ny + wz * nz;
+  const s0 = buf.separation[i]! + (imp[qb]! - imp[qa]!) * nx + (imp[qb + 1]! - imp[qa + 1]!) * ny + (imp[qb + 2]! - imp[qa + 2]!) * nz;
+  const s = s0 + vn0 * t0 + 0.5 * an * t0 * t0;
+  const v = vn0 + an * t0;
+  let t = 0;
+  if (s > 0) {
+    const disc = v * v - 2 * an * s;
+    if (disc < 0) return false;
+    const den = -v + Math.sqrt(disc);
+    if (!(den > 0)) return false;
+    t = (2 * s) / den;
+    if (t0 + t > h) return false;
+  }
+  const vn = v + an * t;
+  if (!(vn < 0)) return false;
+  hit[0] = t0 + t;
+  hit[1] = nx;
+  hit[2] = ny;
+  hit[3] = nz;
+  hit[4] = vn;
+  return true;
+}
+
+/**
+ * Smallest t in [0, span] with |r + u t| = R for r outside the sphere, or -1: r, u, R and span read
+ * from `sweepIO` (slots 0-7), t written to its slot 8; returns whether t >= 0.
+ */
+export function sweep(): boolean {
+  const io = sweepIO;
+  const rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    ux = io[3]!,
+    uy = io[4]!,
+    uz = io[5]!,
+    R = io[6]!,
+    span = io[7]!;
+  io[8] = -1;
+  const cc = rx * rx + ry * ry + rz * rz - R * R;
+  const bb = rx * ux + ry * uy + rz * uz;
+  if (bb >= 0) return false;
+  const aa = ux * ux + uy * uy + uz * uz;
+  const disc = bb * bb - aa * cc;
+  if (disc < 0) return false;
+  // Stable root: t = c / (-b + sqrt(disc)).
+  const t = cc / (-bb + Math.sqrt(disc));
+  if (!(t <= span)) return false;
+  io[8] = t;
+  return t >= 0;
+}
+
+/**
+ * Applies contact i's impact if it happens this step above its threshold (at least the resting speed,
+ * `impactScalars[0]`); returns whether it did.
+ */
+export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
+  if (!contactState(world, buf, i, S)) return false;
+  const resting = impactScalars[0]!;
+  const cs = world.collision;
+  const st = cs.settings;
+  const e = buf.restitution[i]!;
+  const vn = hit[4]!;
+  const threshold = Math.max(e >= 1 ? st.elasticRestitutionThreshold : st.restitutionThreshold, resting);
+  if (!(vn < -threshold)) return false;
+  const nm = buf.normalMass[i]!;
+  if (!(nm > 0)) return false;
+  const t = hit[0]!,
+    nx = hit[1]!,
+    ny = hit[2]!,
+    nz = hit[3]!;
+  const sb = cs.bodyState,
+    imp = cs.bodyImpact,
+    ex = cs.bodyExtra;
+  const ia = buf.ia[i]!,
+    ib = buf.ib[i]!;
+  const oa = ia * S,
+    ob = ib * S;
+  const is2D = S === 8;
+  const im = is2D ? 5 : 9,
+    iI = is2D ? 6 : 10;
+  const imA = sb[oa + im]!,
+    imB = sb[ob + im]!,
+    iiA = sb[oa + iI]!,
+    iiB = sb[ob + iI]!;
+  const ra = buf.ra[i]!,
+    rb = buf.rb[i]!;
+  const J = -(1 + e) * vn * nm;
+  // The row's first impact this step records its approach speed (measureApproach keeps it for a row
+  // that separates afterwards, so `impactVelocity` reports the hit, not the rebound).
+  if (buf.impulse[i] === 0) buf.impactVelocity[i] = vn;
+  let Px = J * nx,
+    Py = J * ny,
+    Pz = J * nz;
+  // Coulomb friction at the contact point, bounded by mu J (contact-point velocity v + w x r, r_A = ra n, r_B = -rb n).
+  const mu = buf.frictionBound[i]!;
+  let dwa0 = 0,
+    dwa1 = 0,
+    dwa2 = 0,
+    dwb0 = 0,
+    dwb1 = 0,
+    dwb2 = 0;
+  if (mu > 0 && buf.tangentMass[i]! > 0) {
+    const tm = buf.tangentMass[i]!;
+    const maxF = mu * J;
+    if (is2D) {
+      const vt = (sb[ob]! - sb[oa]!) * -ny + (sb[ob + 1]! - sb[oa + 1]!) * nx - sb[ob + 2]! * rb - sb[oa + 2]! * ra;
+      let lt = -tm * vt;
+      lt = lt < -maxF ? -maxF : lt > maxF ? maxF : lt;
+      Px += -lt * ny;
+      Py += lt * nx;
+      dwa2 = -iiA * ra * lt;
+      dwb2 = -iiB * rb * lt;
+    } else {
+      let t1x: number, t1y: number, t1z: number;
+      if (Math.abs(nx) < 0.57735) {
+        const inv = 1 / Math.sqrt(ny * ny + nz * nz);
+        t1x = 0;
+        t1y = nz * inv;
+        t1z = -ny * inv;
+      } else {
+        const inv = 1 / Math.sqrt(nx * nx + ny * ny);
+        t1x = ny * inv;
+        t1y = -nx * inv;
+        t1z = 0;
+      }
+      const t2x = ny * t1z - nz * t1y,
+        t2y = nz * t1x - nx * t1z,
+        t2z = nx * t1y - ny * t1x;
+      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
+        sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
+        sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
+      const ux = sb[ob]! - sb[oa]! + sy * nz - sz * ny,
+        uy = sb[ob + 1]! - sb[oa + 1]! + sz * nx - sx * nz,
+        uz = sb[ob + 2]! - sb[oa + 2]! + sx * ny - sy * nx;
+      let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z),
+        l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
+      const mag2 = l1 * l1 + l2 * l2;
+      if (mag2 > maxF * maxF) {
+        const q = maxF / Math.sqrt(mag2);
+        l1 *= q;
+        l2 *= q;
+      }
+      const Tx = l1 * t1x + l2 * t2x,
+        Ty = l1 * t1y + l2 * t2y,
+        Tz = l1 * t1z + l2 * t2z;
+      Px += Tx;
+      Py += Ty;
+      Pz += Tz;
+      const cx = ny * Tz - nz * Ty,
+        cy = nz * Tx - nx * Tz,
+        cz = nx * Ty - ny * Tx;
+      dwa0 = -iiA * ra * cx;
+      dwa1 = -iiA * ra * cy;
+      dwa2 = -iiA * ra * cz;
+      dwb0 = -iiB * rb * cx;
+      dwb1 = -iiB * rb * cy;
+      dwb2 = -iiB * rb * cz;
+    }
+  }
+  const qa = ia * IMPACT_STRIDE,
+    qb = ib * IMPACT_STRIDE;
+  const xa = ia * 6,
+    xb = ib * 6;
+  // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
+  sb[oa] = sb[oa]! - imA * Px;
+  sb[oa + 1] = sb[oa + 1]! - imA * Py;
+  sb[ob] = sb[ob]! + imB * Px;
+  sb[ob + 1] = sb[ob + 1]! + imB * Py;
+  imp[qa] = imp[qa]! + imA * Px * t;
+  imp[qa + 1] = imp[qa + 1]! + imA * Py * t;
+  imp[qb] = imp[qb]! - imB * Px * t;
+  imp[qb + 1] = imp[qb + 1]! - imB * Py * t;
+  if (is2D) {
+    if (iiA > 0) {
+      sb[oa + 2] = sb[oa + 2]! + dwa2;
+      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+    }
+    if (iiB > 0) {
+      sb[ob + 2] = sb[ob + 2]! + dwb2;
+      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+    }
+  } else {
+    sb[oa + 2] = sb[oa + 2]! - imA * Pz;
+    sb[ob + 2] = sb[ob + 2]! + imB * Pz;
+    imp[qa + 2] = imp[qa + 2]! + imA * Pz * t;
+    imp[qb + 2] = imp[qb + 2]! - imB * Pz * t;
+    if (iiA > 0) {
+      sb[oa + 3] = sb[oa + 3]! + dwa0;
+      sb[oa + 4] = sb[oa + 4]! + dwa1;
+      sb[oa + 5] = sb[oa + 5]! + dwa2;
+      ex[xa + 3] = ex[xa + 3]! - dwa0 * t;
+      ex[xa + 4] = ex[xa + 4]! - dwa1 * t;
+      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+    }
+    if (iiB > 0) {
+      sb[ob + 3] = sb[ob + 3]! + dwb0;
+      sb[ob + 4] = sb[ob + 4]! + dwb1;
+      sb[ob + 5] = sb[ob + 5]! + dwb2;
+      ex[xb + 3] = ex[xb + 3]! - dwb0 * t;
+      ex[xb + 4] = ex[xb + 4]! - dwb1 * t;
+      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+    }
+  }
+  if (ia !== 0 && imA > 0) imp[qa + 3] = t;
+  if (imB > 0) imp[qb + 3] = t;
+  buf.nx[i] = nx;
+  buf.ny[i] = ny;
+  buf.nz[i] = nz;
+  markChanged(i);
+  buf.impulse[i] = buf.impulse[i]! + J;
+  return true;
+}
