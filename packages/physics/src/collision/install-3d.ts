@@ -17,15 +17,9 @@ import {
   warmStartJoints3D,
 } from '../joints/solver-3d.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
-import {
-  applyManifold3DRestitution,
-  finishManifolds3D,
-  gatherManifold3DBodies,
-  manifolds3DToSolve,
-  prepareManifolds3D,
-  solveManifolds3D,
-  warmStartManifolds3D,
-} from '../solver/manifold-rows-3d.js';
+import { prepareManifolds3D } from '../solver/manifold-prepare-3d.js';
+import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve } from '../solver/manifold-rows-3d.js';
+import { applyManifold3DRestitution, solveManifolds3D, warmStartManifolds3D } from '../solver/manifold-solve-3d.js';
 import { setRows3D } from '../solver/rows-3d.js';
 import { trustFiniteOutput } from '../step/finite.js';
 import { installSystem } from '../step/install.js';

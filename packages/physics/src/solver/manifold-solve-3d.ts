@@ -1,0 +1,582 @@
+import { contact3DStateOf } from '../collision/manifolds-3d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
+
+/** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
+
+/**
+ * A manifold's normal rows are swept again (alternating order, at most NORMAL_SWEEPS sweeps) while every
+ * row it met was rigid: a speculative row (s > 0) in any pass, or any row in a relax pass; the soft rows
+ * of a biased pass take one sweep, as Box2D's soft step is made for. Only a hit sweeps again: the first
+ * sweep changed the manifold's impulse by more than HIT_FRACTION of it (a resting contact's warm-started
+ * impulse changes by a few per cent, and keeps its one sweep and its cost). The sweeps stop once a
+ * sweep's change of impulse (sum of |delta lambda|) is below SWEEP_TOLERANCE of the manifold's impulse,
+ * or moves the bodies apart by less than SWEEP_SPEED m/s ((1/m_A + 1/m_B) sum |delta lambda|).
+ *
+ * Why: one Gauss-Seidel sweep over the four points of a face that meets another flat gives the whole
+ * approach to the first point visited, which stops it by turning the box, and the others then push
+ * back on the spin. Two 1 m cubes meeting face to face at 1 m/s with zero restitution parted at
+ * 0.033 m/s spinning at 0.13 rad/s; a cube dropped flat at 10 m/s onto a static box floor left at
+ * 0.16 m/s sideways, 0.13 m/s back up and 0.23 rad/s. The sweeps converge (a manifold's rigid rows form
+ * a symmetric positive semi-definite system: projected Gauss-Seidel) to the exact shares: now both stop
+ * (below 1e-3 m/s and rad/s).
+ */
+const NORMAL_SWEEPS = 8;
+/** A second sweep only follows a first that changed the impulse by more than this fraction of it (a hit, not a resting contact's correction). */
+const HIT_FRACTION = 0.25;
+const SWEEP_TOLERANCE = 1e-3;
+const SWEEP_SPEED = 1e-3;
+
+/**
+ * Warm start: last step's impulses applied again. A manifold's normal impulses are summed over its points
+ * (linear sum(ln) n, angular sum(ln I^-1 (r x n))), its friction impulses added, and each body written once.
+ * @category Collision
+ */
+export function warmStartManifolds3D(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const buf = st.current,
+    sb = world.collision.bodyState,
+    T = st.invInertia;
+  const LN = buf.ln;
+  for (let i = 0; i < buf.count; i++) {
+    const f1 = buf.ft1[i]!,
+      f2 = buf.ft2[i]!,
+      fw = buf.ftw[i]!;
+    // Sum of the normal impulses and their angular parts on A and B.
+    let sn = 0,
+      ax = 0,
+      ay = 0,
+      az = 0,
+      bx = 0,
+      by = 0,
+      bz = 0;
+    const iso = buf.iso[i] === 1,
+      J = iso ? st.jacobians : st.jacobiansInv;
+    for (let k = 0, m = buf.points[i]!; k < m; k++) {
+      const q = 4 * i + k,
+        ln = LN[q]!;
+      if (ln === 0) continue;
+      // Isotropic: i sum(ln r x n) from the crosses (scaled by i below); else the stored products.
+      const o = JAC * q;
+      sn += ln;
+      ax += ln * J[o]!;
+      ay += ln * J[o + 1]!;
+      az += ln * J[o + 2]!;
+      bx += ln * J[o + 3]!;
+      by += ln * J[o + 4]!;
+      bz += ln * J[o + 5]!;
+    }
+    if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!,
+      nz = buf.nz[i]!,
+      t1x = buf.t1x[i]!,
+      t1y = buf.t1y[i]!,
+      t1z = buf.t1z[i]!;
+    const t2x = ny * t1z - nz * t1y,
+      t2y = nz * t1x - nx * t1z,
+      t2z = nx * t1y - ny * t1x;
+    const px = sn * nx + f1 * t1x + f2 * t2x,
+      py = sn * ny + f1 * t1y + f2 * t2y,
+      pz = sn * nz + f1 * t1z + f2 * t2z;
+    // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
+    const F = iso ? st.frictionJacobians : st.frictionInv,
+      o = (iso ? FJ : FI) * i;
+    ax += f1 * F[o]! + f2 * F[o + 6]!;
+    ay += f1 * F[o + 1]! + f2 * F[o + 7]!;
+    az += f1 * F[o + 2]! + f2 * F[o + 8]!;
+    bx += f1 * F[o + 3]! + f2 * F[o + 9]!;
+    by += f1 * F[o + 4]! + f2 * F[o + 10]!;
+    bz += f1 * F[o + 5]! + f2 * F[o + 11]!;
+    if (iso) {
+      ax += fw * nx;
+      ay += fw * ny;
+      az += fw * nz;
+      bx += fw * nx;
+      by += fw * ny;
+      bz += fw * nz;
+    } else {
+      const w = o + TWIST;
+      ax += fw * F[w]!;
+      ay += fw * F[w + 1]!;
+      az += fw * F[w + 2]!;
+      bx += fw * F[w + 3]!;
+      by += fw * F[w + 4]!;
+      bz += fw * F[w + 5]!;
+    }
+    const ka = buf.ia[i]!,
+      kb = buf.ib[i]!,
+      a = 12 * ka,
+      b = 12 * kb;
+    if (ka > 0) {
+      const mA = sb[a + 9]!,
+        gA = iso ? T[6 * ka]! : 1;
+      sb[a] = sb[a]! - mA * px;
+      sb[a + 1] = sb[a + 1]! - mA * py;
+      sb[a + 2] = sb[a + 2]! - mA * pz;
+      sb[a + 3] = sb[a + 3]! - gA * ax;
+      sb[a + 4] = sb[a + 4]! - gA * ay;
+      sb[a + 5] = sb[a + 5]! - gA * az;
+      sb[a + 11] = 1;
+    }
+    if (kb > 0) {
+      const mB = sb[b + 9]!,
+        gB = iso ? T[6 * kb]! : 1;
+      sb[b] = sb[b]! + mB * px;
+      sb[b + 1] = sb[b + 1]! + mB * py;
+      sb[b + 2] = sb[b + 2]! + mB * pz;
+      sb[b + 3] = sb[b + 3]! + gB * bx;
+      sb[b + 4] = sb[b + 4]! + gB * by;
+      sb[b + 5] = sb[b + 5]! + gB * bz;
+      sb[b + 11] = 1;
+    }
+  }
+}
+
+/**
+ * One pass over the rows: normal (soft with `useBias`, else relaxing), then the manifold's friction (t1, t2 and twist at its anchor).
+ * @category Collision
+ */
+export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boolean): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const cs = world.collision,
+    buf = st.current,
+    sb = cs.bodyState,
+    ex = cs.bodyExtra,
+    base = st.rotationBase,
+    J = st.jacobians,
+    JI = st.jacobiansInv;
+  const push = cs.settings.contactPushSpeed;
+  // Points in alternating order from substep to substep (symmetric Gauss-Seidel; the relax pass keeps
+  // its substep's order), so the order a manifold's points are solved in leaves no systematic torque.
+  st.solveParity ^= useBias ? 1 : 0;
+  const backward = st.solveParity === 1;
+  const sBias = soft[0]!,
+    sMass = soft[1]!,
+    sImp = soft[2]!,
+    rBias = rigid[0]!,
+    rMass = rigid[1]!,
+    rImp = rigid[2]!;
+  const sep = buf.sep,
+    LN = buf.ln,
+    MN = buf.mn,
+    MAX = buf.maxLn,
+    F = st.frictionJacobians,
+    FV = st.frictionInv;
+  const FT1 = buf.ft1,
+    FT2 = buf.ft2,
+    FTW = buf.ftw,
+    MT1 = buf.mt1,
+    MT2 = buf.mt2,
+    MTW = buf.mtw,
+    ARM = buf.arm;
+  const IA = buf.ia,
+    IB = buf.ib,
+    NX = buf.nx,
+    NY = buf.ny,
+    NZ = buf.nz,
+    T1X = buf.t1x,
+    T1Y = buf.t1y,
+    T1Z = buf.t1z,
+    PTS = buf.points,
+    MU = buf.friction;
+  const ISO = buf.iso,
+    T = st.invInertia,
+    MINSEP = buf.minSep,
+    RA = buf.reachA,
+    RB = buf.reachB;
+  const invHs = 1 / hs,
+    negPush = -push;
+  for (let i = 0, count = buf.count; i < count; i++) {
+    const ka = IA[i]!,
+      kb = IB[i]!,
+      a = 12 * ka,
+      b = 12 * kb;
+    const nx = NX[i]!,
+      ny = NY[i]!,
+      nz = NZ[i]!;
+    const isRigid = ka === 0 || kb === 0;
+    const biasRate = isRigid ? rBias : sBias,
+      massScale = isRigid ? rMass : sMass,
+      impScale = isRigid ? rImp : sImp;
+    // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
+    let vax = sb[a]!,
+      vay = sb[a + 1]!,
+      vaz = sb[a + 2]!,
+      wax = sb[a + 3]!,
+      way = sb[a + 4]!,
+      waz = sb[a + 5]!;
+    let vbx = sb[b]!,
+      vby = sb[b + 1]!,
+      vbz = sb[b + 2]!,
+      wbx = sb[b + 3]!,
+      wby = sb[b + 4]!,
+      wbz = sb[b + 5]!;
+    const mA = sb[a + 9]!,
+      mB = sb[b + 9]!;
+    // Displacement along n and rotation of each body so far this step.
+    const dn = (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
+    let hax = 0,
+      hay = 0,
+      haz = 0,
+      hbx = 0,
+      hby = 0,
+      hbz = 0;
+    if (ka > 0) {
+      const e = 6 * ka,
+        r = 3 * ka;
+      hax = ex[e + 3]! - base[r]!;
+      hay = ex[e + 4]! - base[r + 1]!;
+      haz = ex[e + 5]! - base[r + 2]!;
+    }
+    if (kb > 0) {
+      const e = 6 * kb,
+        r = 3 * kb;
+      hbx = ex[e + 3]! - base[r]!;
+      hby = ex[e + 4]! - base[r + 1]!;
+      hbz = ex[e + 5]! - base[r + 2]!;
+    }
+    const m = PTS[i]!;
+    // A speculative manifold that cannot close this substep is skipped, exactly: no impulse yet, and every
+    // point's s >= minSep + dn - |theta_A| reach_A - |theta_B| reach_B > 0 with
+    // v_n + s / h_s >= (v_B - v_A) . n - |w_A| reach_A - |w_B| reach_B + s_low / h_s >= 0, so each row would
+    // compute lambda = max(0 - m (v_n + s / h_s), 0) = 0 and change nothing (friction has no limit then).
+    if (MINSEP[i]! > 0 && FT1[i] === 0 && FT2[i] === 0 && FTW[i] === 0) {
+      let idle = true;
+      for (let k = 0; k < m; k++) {
+        if (LN[4 * i + k] !== 0) {
+          idle = false;
+          break;
+        }
+      }
+      if (idle) {
+        const rA = RA[i]!,
+          rB = RB[i]!;
+        const sLow =
+          MINSEP[i]! + dn - Math.sqrt(hax * hax + hay * hay + haz * haz) * rA - Math.sqrt(hbx * hbx + hby * hby + hbz * hbz) * rB;
+        if (sLow > 0) {
+          const vLow =
+            (vbx - vax) * nx +
+            (vby - vay) * ny +
+            (vbz - vaz) * nz -
+            Math.sqrt(wax * wax + way * way + waz * waz) * rA -
+            Math.sqrt(wbx * wbx + wby * wby + wbz * wbz) * rB;
+          if (vLow + sLow * invHs >= 0) continue;
+        }
+      }
+    }
+    // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
+    const iso = ISO[i] === 1,
+      iA = iso ? T[6 * ka]! : 0,
+      iB = iso ? T[6 * kb]! : 0;
+    let pushed = false;
+    // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
+    // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
+    const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
+    let softMet = false;
+    // The sweep count goes up at the top of a sweep, not in a loop update the first sweep never reaches
+    // (optimised code compiled before any second sweep was thrown away at the first hit).
+    for (let sw = 0; ; ) {
+      const odd = (sw & 1) === 1,
+        first = sw === 0;
+      sw++;
+      // -0, a heap number: V8 types both sums as doubles from their first use (from a small-integer 0 it
+      // typed them as integers while the first rows added zeros, and deoptimised at the first fraction).
+      let change = -0,
+        total = -0;
+      for (let kk = 0; kk < m; kk++) {
+        const k = backward !== odd ? m - 1 - kk : kk;
+        const q = 4 * i + k,
+          o = JAC * q;
+        const ra0 = J[o]!,
+          ra1 = J[o + 1]!,
+          ra2 = J[o + 2]!,
+          rb0 = J[o + 3]!,
+          rb1 = J[o + 4]!,
+          rb2 = J[o + 5]!;
+        // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
+        const s = sep[q]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
+        // Both biases are worked out on every row (branches first taken after V8 optimised the loop
+        // threw the optimised code away: 'insufficient type feedback'; the same numbers either way).
+        const speculative = s * invHs,
+          softBias = Math.max(biasRate * s, negPush);
+        let bias = 0,
+          ms = 1,
+          is = 0;
+        if (s > 0) bias = speculative;
+        else if (useBias) {
+          bias = softBias;
+          ms = massScale;
+          is = impScale;
+          softMet = true;
+        }
+        const vn =
+          (vbx - vax) * nx +
+          (vby - vay) * ny +
+          (vbz - vaz) * nz +
+          (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
+        const old = LN[q]!;
+        const lam = Math.max(old - MN[q]! * ms * (vn + bias) - is * old, 0);
+        const dl = lam - old;
+        LN[q] = lam;
+        const mx = MAX[q]!;
+        MAX[q] = lam > mx ? lam : mx;
+        // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
+        // never entered was compiled without type feedback, and its first push threw the code away.
+        // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
+        const fa = mA * dl,
+          fb = mB * dl;
+        vax -= fa * nx;
+        vay -= fa * ny;
+        vaz -= fa * nz;
+        vbx += fb * nx;
+        vby += fb * ny;
+        vbz += fb * nz;
+        if (iso) {
+          const ga = iA * dl,
+            gb = iB * dl;
+          wax -= ga * ra0;
+          way -= ga * ra1;
+          waz -= ga * ra2;
+          wbx += gb * rb0;
+          wby += gb * rb1;
+          wbz += gb * rb2;
+        } else {
+          wax -= dl * JI[o]!;
+          way -= dl * JI[o + 1]!;
+          waz -= dl * JI[o + 2]!;
+          wbx += dl * JI[o + 3]!;
+          wby += dl * JI[o + 4]!;
+          wbz += dl * JI[o + 5]!;
+        }
+        pushed = pushed || dl !== 0;
+        change += Math.abs(dl);
+        total += lam;
+      }
+      const settled = change <= (first ? HIT_FRACTION : SWEEP_TOLERANCE) * total,
+        slow = change * (mA + mB) <= SWEEP_SPEED,
+        last = sw >= sweeps;
+      if (softMet || settled || slow || last) break;
+    }
+    // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
+    let sumLn = 0;
+    for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
+    const limit = MU[i]! * sumLn;
+    const o1 = FT1[i]!,
+      o2 = FT2[i]!,
+      ow = FTW[i]!;
+    // A manifold that pushes nothing (a speculative one) has no friction to solve.
+    if (limit !== 0 || o1 !== 0 || o2 !== 0 || ow !== 0) {
+      const t1x = T1X[i]!,
+        t1y = T1Y[i]!,
+        t1z = T1Z[i]!;
+      const t2x = ny * t1z - nz * t1y,
+        t2y = nz * t1x - nx * t1z,
+        t2z = nx * t1y - ny * t1x;
+      // t1 (crosses at f, inverse products at FI i) and t2 (6 further on in both), both from the same
+      // velocities, the impulse (l1, l2) then held within the circle of radius mu sum(lambda_n): the same
+      // limit in every direction of sliding (clamping each separately let a diagonal slide take sqrt 2 of it).
+      const f = FJ * i;
+      const a10 = F[f]!,
+        a11 = F[f + 1]!,
+        a12 = F[f + 2]!,
+        b10 = F[f + 3]!,
+        b11 = F[f + 4]!,
+        b12 = F[f + 5]!;
+      const a20 = F[f + 6]!,
+        a21 = F[f + 7]!,
+        a22 = F[f + 8]!,
+        b20 = F[f + 9]!,
+        b21 = F[f + 10]!,
+        b22 = F[f + 11]!;
+      const dvx = vbx - vax,
+        dvy = vby - vay,
+        dvz = vbz - vaz;
+      const vt1 = dvx * t1x + dvy * t1y + dvz * t1z + (wbx * b10 + wby * b11 + wbz * b12 - (wax * a10 + way * a11 + waz * a12));
+      const vt2 = dvx * t2x + dvy * t2y + dvz * t2z + (wbx * b20 + wby * b21 + wbz * b22 - (wax * a20 + way * a21 + waz * a22));
+      let l1 = o1 - MT1[i]! * vt1,
+        l2 = o2 - MT2[i]! * vt2;
+      const l2sum = l1 * l1 + l2 * l2;
+      if (l2sum > limit * limit) {
+        const k = limit / Math.sqrt(l2sum);
+        l1 *= k;
+        l2 *= k;
+      }
+      FT1[i] = l1;
+      FT2[i] = l2;
+      const d1 = l1 - o1,
+        d2 = l2 - o2;
+      if (d1 !== 0 || d2 !== 0) {
+        const px = d1 * t1x + d2 * t2x,
+          py = d1 * t1y + d2 * t2y,
+          pz = d1 * t1z + d2 * t2z;
+        vax -= mA * px;
+        vay -= mA * py;
+        vaz -= mA * pz;
+        vbx += mB * px;
+        vby += mB * py;
+        vbz += mB * pz;
+        if (iso) {
+          wax -= iA * (d1 * a10 + d2 * a20);
+          way -= iA * (d1 * a11 + d2 * a21);
+          waz -= iA * (d1 * a12 + d2 * a22);
+          wbx += iB * (d1 * b10 + d2 * b20);
+          wby += iB * (d1 * b11 + d2 * b21);
+          wbz += iB * (d1 * b12 + d2 * b22);
+        } else {
+          const p = FI * i;
+          wax -= d1 * FV[p]! + d2 * FV[p + 6]!;
+          way -= d1 * FV[p + 1]! + d2 * FV[p + 7]!;
+          waz -= d1 * FV[p + 2]! + d2 * FV[p + 8]!;
+          wbx += d1 * FV[p + 3]! + d2 * FV[p + 9]!;
+          wby += d1 * FV[p + 4]! + d2 * FV[p + 10]!;
+          wbz += d1 * FV[p + 5]! + d2 * FV[p + 11]!;
+        }
+        pushed = true;
+      }
+      // Twist: relative spin about n, limited by mu arm sum(lambda_n).
+      const tl = limit * ARM[i]!,
+        ntl = -tl;
+      let lw = ow - MTW[i]! * ((wbx - wax) * nx + (wby - way) * ny + (wbz - waz) * nz);
+      lw = lw > tl ? tl : lw < ntl ? ntl : lw;
+      FTW[i] = lw;
+      const dw = lw - ow;
+      if (dw !== 0) {
+        if (iso) {
+          const ga = iA * dw,
+            gb = iB * dw;
+          wax -= ga * nx;
+          way -= ga * ny;
+          waz -= ga * nz;
+          wbx += gb * nx;
+          wby += gb * ny;
+          wbz += gb * nz;
+        } else {
+          const p = FI * i + TWIST;
+          wax -= dw * FV[p]!;
+          way -= dw * FV[p + 1]!;
+          waz -= dw * FV[p + 2]!;
+          wbx += dw * FV[p + 3]!;
+          wby += dw * FV[p + 4]!;
+          wbz += dw * FV[p + 5]!;
+        }
+        pushed = true;
+      }
+    }
+    if (pushed) {
+      if (ka > 0) {
+        sb[a] = vax;
+        sb[a + 1] = vay;
+        sb[a + 2] = vaz;
+        sb[a + 3] = wax;
+        sb[a + 4] = way;
+        sb[a + 5] = waz;
+        sb[a + 11] = 1;
+      }
+      if (kb > 0) {
+        sb[b] = vbx;
+        sb[b + 1] = vby;
+        sb[b + 2] = vbz;
+        sb[b + 3] = wbx;
+        sb[b + 4] = wby;
+        sb[b + 5] = wbz;
+        sb[b + 11] = 1;
+      }
+    }
+  }
+}
+
+/**
+ * Restitution after the substeps: points that approached faster than the threshold and carried impulse
+ * leave at >= e times that speed. (Written out in place: a call passing or returning doubles boxes each one.)
+ * @category Collision
+ */
+export function applyManifold3DRestitution(world: PhysicsWorld): void {
+  const st = contact3DStateOf(world);
+  if (st === undefined) return;
+  const cs = world.collision,
+    buf = st.current,
+    sb = cs.bodyState,
+    J = st.jacobians,
+    JI = st.jacobiansInv,
+    T = st.invInertia;
+  const threshold = cs.settings.restitutionThreshold;
+  const VN0 = buf.vn0,
+    MAX = buf.maxLn,
+    LN = buf.ln,
+    MN = buf.mn;
+  for (let pass = 0; pass < 4; pass++) {
+    for (let i = 0; i < buf.count; i++) {
+      const e = buf.restitution[i]!;
+      if (e === 0) continue;
+      const ka = buf.ia[i]!,
+        kb = buf.ib[i]!,
+        a = 12 * ka,
+        b = 12 * kb;
+      // Isotropic: I^-1 (r x n) = i (r x n), from the crosses; else the stored products.
+      const iso = buf.iso[i] === 1,
+        iA = iso ? T[6 * ka]! : 0,
+        iB = iso ? T[6 * kb]! : 0;
+      const nx = buf.nx[i]!,
+        ny = buf.ny[i]!,
+        nz = buf.nz[i]!;
+      for (let k = 0, m = buf.points[i]!; k < m; k++) {
+        const q = 4 * i + k;
+        if (VN0[q]! > -threshold || MAX[q] === 0) continue;
+        const o = JAC * q;
+        const vn =
+          (sb[b]! - sb[a]!) * nx +
+          (sb[b + 1]! - sb[a + 1]!) * ny +
+          (sb[b + 2]! - sb[a + 2]!) * nz +
+          sb[b + 3]! * J[o + 3]! +
+          sb[b + 4]! * J[o + 4]! +
+          sb[b + 5]! * J[o + 5]! -
+          sb[a + 3]! * J[o]! -
+          sb[a + 4]! * J[o + 1]! -
+          sb[a + 5]! * J[o + 2]!;
+        const old = LN[q]!;
+        const lam = Math.max(old - MN[q]! * (vn + e * VN0[q]!), 0);
+        const dl = lam - old;
+        LN[q] = lam;
+        if (dl === 0) continue;
+        // Body row 0 (the static world) is never written.
+        if (ka > 0) {
+          const f = sb[a + 9]! * dl;
+          sb[a] = sb[a]! - f * nx;
+          sb[a + 1] = sb[a + 1]! - f * ny;
+          sb[a + 2] = sb[a + 2]! - f * nz;
+          if (iso) {
+            const g = iA * dl;
+            sb[a + 3] = sb[a + 3]! - g * J[o]!;
+            sb[a + 4] = sb[a + 4]! - g * J[o + 1]!;
+            sb[a + 5] = sb[a + 5]! - g * J[o + 2]!;
+          } else {
+            sb[a + 3] = sb[a + 3]! - dl * JI[o]!;
+            sb[a + 4] = sb[a + 4]! - dl * JI[o + 1]!;
+            sb[a + 5] = sb[a + 5]! - dl * JI[o + 2]!;
+          }
+          sb[a + 11] = 1;
+        }
+        if (kb > 0) {
+          const f = sb[b + 9]! * dl;
+          sb[b] = sb[b]! + f * nx;
+          sb[b + 1] = sb[b + 1]! + f * ny;
+          sb[b + 2] = sb[b + 2]! + f * nz;
+          if (iso) {
+            const g = iB * dl;
+            sb[b + 3] = sb[b + 3]! + g * J[o + 3]!;
+            sb[b + 4] = sb[b + 4]! + g * J[o + 4]!;
+            sb[b + 5] = sb[b + 5]! + g * J[o + 5]!;
+          } else {
+            sb[b + 3] = sb[b + 3]! + dl * JI[o + 3]!;
+            sb[b + 4] = sb[b + 4]! + dl * JI[o + 4]!;
+            sb[b + 5] = sb[b + 5]! + dl * JI[o + 5]!;
+          }
+          sb[b + 11] = 1;
+        }
+      }
+    }
+  }
+}
