@@ -4,6 +4,34 @@ import { classifyBody3D } from '../collision/shapes-3d.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
+import {
+  anchorSpeed,
+  anchorVelocity,
+  angularRow,
+  applyAngular,
+  applyLinear,
+  ax,
+  bx,
+  invI,
+  K,
+  linearK,
+  linearRow,
+  pa,
+  pb,
+  pose,
+  qa,
+  qb,
+  ra,
+  rb,
+  referenceK,
+  restrictToPlane,
+  rot,
+  sliderAnchor,
+  solve3,
+  tmp,
+  v3,
+  x3,
+} from './rows-3d-math.js';
 import { fixedSpring } from './spring.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -150,181 +178,6 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   }
 }
 
-// Per-call scratch: pose of the two ends.
-const qa = new Float64Array(4),
-  qb = new Float64Array(4),
-  pa = new Float64Array(3),
-  pb = new Float64Array(3),
-  ra = new Float64Array(3),
-  rb = new Float64Array(3);
-
-/** Current orientation and position of joint end e (solver index k) into q and p. */
-function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array, p: Float64Array): void {
-  if (e === 0) {
-    q[0] = 0;
-    q[1] = 0;
-    q[2] = 0;
-    q[3] = 1;
-    p[0] = 0;
-    p[1] = 0;
-    p[2] = 0;
-    return;
-  }
-  const c = world.components,
-    Q = c.Orientation;
-  let x = Q.x[e]!,
-    y = Q.y[e]!,
-    z = Q.z[e]!,
-    w = Q.w[e]!;
-  if (k === 0) {
-    q[0] = x;
-    q[1] = y;
-    q[2] = z;
-    q[3] = w;
-    p[0] = c.Position.x[e]!;
-    p[1] = c.Position.y[e]!;
-    p[2] = c.Position.z[e]!;
-    return;
-  }
-  const ex = world.collision.bodyExtra,
-    sb = world.collision.bodyState;
-  const rx = ex[6 * k + 3]!,
-    ry = ex[6 * k + 4]!,
-    rz = ex[6 * k + 5]!,
-    a = Math.hypot(rx, ry, rz);
-  if (a > 0) {
-    const f = Math.sin(a / 2) / a,
-      dx = rx * f,
-      dy = ry * f,
-      dz = rz * f,
-      dw = Math.cos(a / 2);
-    const nx = dw * x + dx * w + dy * z - dz * y,
-      ny = dw * y - dx * z + dy * w + dz * x,
-      nz = dw * z + dx * y - dy * x + dz * w,
-      nw = dw * w - dx * x - dy * y - dz * z;
-    x = nx;
-    y = ny;
-    z = nz;
-    w = nw;
-  }
-  q[0] = x;
-  q[1] = y;
-  q[2] = z;
-  q[3] = w;
-  p[0] = ex[6 * k]! + sb[12 * k + 6]!;
-  p[1] = ex[6 * k + 1]! + sb[12 * k + 7]!;
-  p[2] = ex[6 * k + 2]! + sb[12 * k + 8]!;
-}
-
-function rot(q: Float64Array, vx: number, vy: number, vz: number, out: Float64Array): void {
-  const x = q[0]!,
-    y = q[1]!,
-    z = q[2]!,
-    w = q[3]!;
-  const tx = 2 * (y * vz - z * vy),
-    ty = 2 * (z * vx - x * vz),
-    tz = 2 * (x * vy - y * vx);
-  out[0] = vx + w * tx + (y * tz - z * ty);
-  out[1] = vy + w * ty + (z * tx - x * tz);
-  out[2] = vz + w * tz + (x * ty - y * tx);
-}
-
-/** I^-1 v for solver body k (0: zero) into out. */
-function invI(T: Float64Array, k: number, vx: number, vy: number, vz: number, out: Float64Array, o: number): void {
-  const t = 6 * k;
-  out[o] = T[t]! * vx + T[t + 3]! * vy + T[t + 4]! * vz;
-  out[o + 1] = T[t + 3]! * vx + T[t + 1]! * vy + T[t + 5]! * vz;
-  out[o + 2] = T[t + 4]! * vx + T[t + 5]! * vy + T[t + 2]! * vz;
-}
-
-const tmp = new Float64Array(6);
-
-/** Linear impulse P at the anchors: -P to A, +P to B. */
-function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: number, px: number, py: number, pz: number): void {
-  if (a > 0) {
-    const o = 12 * a,
-      m = sb[o + 9]!;
-    sb[o] = sb[o]! - m * px;
-    sb[o + 1] = sb[o + 1]! - m * py;
-    sb[o + 2] = sb[o + 2]! - m * pz;
-    invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
-    sb[o + 3] = sb[o + 3]! - tmp[0]!;
-    sb[o + 4] = sb[o + 4]! - tmp[1]!;
-    sb[o + 5] = sb[o + 5]! - tmp[2]!;
-  }
-  if (b > 0) {
-    const o = 12 * b,
-      m = sb[o + 9]!;
-    sb[o] = sb[o]! + m * px;
-    sb[o + 1] = sb[o + 1]! + m * py;
-    sb[o + 2] = sb[o + 2]! + m * pz;
-    invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
-    sb[o + 3] = sb[o + 3]! + tmp[0]!;
-    sb[o + 4] = sb[o + 4]! + tmp[1]!;
-    sb[o + 5] = sb[o + 5]! + tmp[2]!;
-  }
-}
-
-/** Angular impulse L: -L to A, +L to B. */
-function applyAngular(sb: Float64Array, T: Float64Array, a: number, b: number, lx: number, ly: number, lz: number): void {
-  if (a > 0) {
-    invI(T, a, lx, ly, lz, tmp, 0);
-    const o = 12 * a;
-    sb[o + 3] = sb[o + 3]! - tmp[0]!;
-    sb[o + 4] = sb[o + 4]! - tmp[1]!;
-    sb[o + 5] = sb[o + 5]! - tmp[2]!;
-  }
-  if (b > 0) {
-    invI(T, b, lx, ly, lz, tmp, 0);
-    const o = 12 * b;
-    sb[o + 3] = sb[o + 3]! + tmp[0]!;
-    sb[o + 4] = sb[o + 4]! + tmp[1]!;
-    sb[o + 5] = sb[o + 5]! + tmp[2]!;
-  }
-}
-
-/** Relative velocity of the anchors, vB + wB x rB - vA - wA x rA, into out[0..2]. */
-function anchorVelocity(sb: Float64Array, a: number, b: number, out: Float64Array): void {
-  const oa = 12 * a,
-    ob = 12 * b;
-  out[0] = sb[ob]! + sb[ob + 4]! * rb[2]! - sb[ob + 5]! * rb[1]! - sb[oa]! - (sb[oa + 4]! * ra[2]! - sb[oa + 5]! * ra[1]!);
-  out[1] = sb[ob + 1]! + sb[ob + 5]! * rb[0]! - sb[ob + 3]! * rb[2]! - sb[oa + 1]! - (sb[oa + 5]! * ra[0]! - sb[oa + 3]! * ra[2]!);
-  out[2] = sb[ob + 2]! + sb[ob + 3]! * rb[1]! - sb[ob + 4]! * rb[0]! - sb[oa + 2]! - (sb[oa + 3]! * ra[1]! - sb[oa + 4]! * ra[0]!);
-}
-
-/** Solves the 3 x 3 system M x = r (M row-major) in place into x by Cramer's rule; a singular M gives 0. */
-function solve3(M: Float64Array, r0: number, r1: number, r2: number, x: Float64Array): void {
-  const a = M[0]!,
-    b = M[1]!,
-    c = M[2]!,
-    d = M[3]!,
-    e = M[4]!,
-    f = M[5]!,
-    g = M[6]!,
-    h = M[7]!,
-    i = M[8]!;
-  const A = e * i - f * h,
-    B = -(d * i - f * g),
-    C = d * h - e * g;
-  const det = a * A + b * B + c * C;
-  if (!(Math.abs(det) > 0)) {
-    x[0] = 0;
-    x[1] = 0;
-    x[2] = 0;
-    return;
-  }
-  const inv = 1 / det;
-  x[0] = inv * (A * r0 + (c * h - b * i) * r1 + (b * f - c * e) * r2);
-  x[1] = inv * (B * r0 + (a * i - c * g) * r1 + (c * d - a * f) * r2);
-  x[2] = inv * (C * r0 + (b * g - a * h) * r1 + (a * e - b * d) * r2);
-}
-
-const K = new Float64Array(9),
-  x3 = new Float64Array(3),
-  v3 = new Float64Array(3),
-  ax = new Float64Array(3),
-  bx = new Float64Array(3);
-
 /**
  * Warm start: last substep's impulses of every row applied again (point, angular lock, limits, motors, cone, distance).
  * @category Joints and ropes
@@ -373,142 +226,6 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
       if (sn > 1e-9) applyAngular(sb, T, ka[i]!, kb[i]!, l * nx, l * ny, l * nz);
     }
   }
-}
-
-/** Slider: moves A's anchor (ra) to the point of A under B's anchor (ra + C), where the axial rows act. */
-function sliderAnchor(): void {
-  ra[0] = pb[0]! + rb[0]! - pa[0]!;
-  ra[1] = pb[1]! + rb[1]! - pa[1]!;
-  ra[2] = pb[2]! + rb[2]! - pa[2]!;
-}
-
-/** Effective mass denominator of a linear row along unit u at the anchors ra, rb: 1/m_A + 1/m_B + (r x u) . I^-1 (r x u) for both. */
-function linearK(sb: Float64Array, T: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
-  const cax = ra[1]! * uz - ra[2]! * uy,
-    cay = ra[2]! * ux - ra[0]! * uz,
-    caz = ra[0]! * uy - ra[1]! * ux;
-  const cbx = rb[1]! * uz - rb[2]! * uy,
-    cby = rb[2]! * ux - rb[0]! * uz,
-    cbz = rb[0]! * uy - rb[1]! * ux;
-  invI(T, a, cax, cay, caz, tmp, 0);
-  invI(T, b, cbx, cby, cbz, tmp, 3);
-  return sb[12 * a + 9]! + sb[12 * b + 9]! + cax * tmp[0]! + cay * tmp[1]! + caz * tmp[2]! + cbx * tmp[3]! + cby * tmp[4]! + cbz * tmp[5]!;
-}
-
-/**
- * The inverse mass of a point joint averaged over directions, a third of the trace of its 3 x 3 block:
- * mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3, kg^-1, with the world anchors ra,
- * rb of this moment. Rotating a body turns its anchor and its inverse inertia together, so no motion
- * changes it.
- */
-function referenceK(sb: Float64Array, T: Float64Array, a: number, b: number): number {
-  invI(T, a, ra[0]!, ra[1]!, ra[2]!, tmp, 0);
-  invI(T, b, rb[0]!, rb[1]!, rb[2]!, tmp, 3);
-  const ta = 6 * a,
-    tb = 6 * b;
-  const ka =
-    (T[ta]! + T[ta + 1]! + T[ta + 2]!) * (ra[0]! ** 2 + ra[1]! ** 2 + ra[2]! ** 2) -
-    (ra[0]! * tmp[0]! + ra[1]! * tmp[1]! + ra[2]! * tmp[2]!);
-  const kb =
-    (T[tb]! + T[tb + 1]! + T[tb + 2]!) * (rb[0]! ** 2 + rb[1]! ** 2 + rb[2]! ** 2) -
-    (rb[0]! * tmp[3]! + rb[1]! * tmp[4]! + rb[2]! * tmp[5]!);
-  return sb[12 * a + 9]! + sb[12 * b + 9]! + (ka + kb) / 3;
-}
-
-/**
- * A linear row along unit u at the anchors (impulse +lambda u to B), with effective mass 1 / k:
- * lambda = clamp(acc - ms (cdot + bias) / k - is acc, lo, hi); applies the change, returns the new lambda.
- */
-function linearRow(
-  sb: Float64Array,
-  T: Float64Array,
-  a: number,
-  b: number,
-  ux: number,
-  uy: number,
-  uz: number,
-  k: number,
-  cdot: number,
-  bias: number,
-  ms: number,
-  is: number,
-  acc: number,
-  lo: number,
-  hi: number,
-): number {
-  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
-  lam = lam < lo ? lo : lam > hi ? hi : lam;
-  const d = lam - acc;
-  if (d !== 0) applyLinear(sb, T, a, b, d * ux, d * uy, d * uz);
-  return lam;
-}
-
-/** Relative velocity of the anchors along unit u. */
-function anchorSpeed(sb: Float64Array, a: number, b: number, ux: number, uy: number, uz: number): number {
-  anchorVelocity(sb, a, b, v3);
-  return v3[0]! * ux + v3[1]! * uy + v3[2]! * uz;
-}
-
-/** K := P K P + u u^T with P = 1 - u u^T: the 3 x 3 block restricted to the plane perpendicular to unit u (invertible, the same on the plane). */
-function restrictToPlane(ux: number, uy: number, uz: number): void {
-  P9[0] = 1 - ux * ux;
-  P9[1] = -ux * uy;
-  P9[2] = -ux * uz;
-  P9[3] = -uy * ux;
-  P9[4] = 1 - uy * uy;
-  P9[5] = -uy * uz;
-  P9[6] = -uz * ux;
-  P9[7] = -uz * uy;
-  P9[8] = 1 - uz * uz;
-  for (let r = 0; r < 3; r++)
-    for (let c = 0; c < 3; c++) {
-      let v = 0;
-      for (let m = 0; m < 3; m++) for (let n = 0; n < 3; n++) v += P9[3 * r + m]! * K[3 * m + n]! * P9[3 * n + c]!;
-      KP[3 * r + c] = v;
-    }
-  const u0 = ux,
-    u1 = uy,
-    u2 = uz;
-  K[0] = KP[0]! + u0 * u0;
-  K[1] = KP[1]! + u0 * u1;
-  K[2] = KP[2]! + u0 * u2;
-  K[3] = KP[3]! + u1 * u0;
-  K[4] = KP[4]! + u1 * u1;
-  K[5] = KP[5]! + u1 * u2;
-  K[6] = KP[6]! + u2 * u0;
-  K[7] = KP[7]! + u2 * u1;
-  K[8] = KP[8]! + u2 * u2;
-}
-
-const P9 = new Float64Array(9),
-  KP = new Float64Array(9);
-
-/** A one-sided or bounded angular row along unit u (impulse +lambda u to B): returns the new accumulated impulse. */
-function angularRow(
-  sb: Float64Array,
-  T: Float64Array,
-  a: number,
-  b: number,
-  ux: number,
-  uy: number,
-  uz: number,
-  cdot: number,
-  bias: number,
-  ms: number,
-  is: number,
-  acc: number,
-  lo: number,
-  hi: number,
-): number {
-  invI(T, a, ux, uy, uz, tmp, 0);
-  invI(T, b, ux, uy, uz, tmp, 3);
-  const k = ux * (tmp[0]! + tmp[3]!) + uy * (tmp[1]! + tmp[4]!) + uz * (tmp[2]! + tmp[5]!);
-  if (!(k > 0)) return acc;
-  let lam = acc - (ms * (cdot + bias)) / k - is * acc;
-  lam = lam < lo ? lo : lam > hi ? hi : lam;
-  const d = lam - acc;
-  if (d !== 0) applyAngular(sb, T, a, b, d * ux, d * uy, d * uz);
-  return lam;
 }
 
 /**
