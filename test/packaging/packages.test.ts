@@ -144,7 +144,7 @@ describe('the packed packages in a fresh project', () => {
     // The physics part of the 2D page, minified, as a user's esbuild makes it from the installed
     // packages (pixi.js, bitecs and the renderer left out). The package ships one module a source
     // file with "sideEffects": false, so only what the example reaches is kept, and a world installs
-    // a feature's systems when the feature is first used (step/install.ts): the example, boxes and a
+    // a feature's systems when the feature is first used (world/install.ts): the example, boxes and a
     // joint, does not reach the balls' broadphase, narrowphase and contact rows (collision/install-balls.ts),
     // emitters, 3D shapes and joints, cloth, Barnes-Hut or the thread pool. Bound: the issue's goal,
     // 200 KB (measured 181 KB; 234 KB while every world held the ball contacts, 362 KB while it held

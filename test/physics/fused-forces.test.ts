@@ -18,7 +18,7 @@ import { hasComponent, query } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import { fusedForcesAllowed } from '../../packages/physics/src/integrators/fused-gate.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // The fused force-and-integrate pass (integrators/fused-gate.ts, semi-implicit-euler.ts fusedForced2)

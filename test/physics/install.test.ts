@@ -32,11 +32,11 @@ import {
 import { addComponent } from 'bitecs';
 import { build } from 'esbuild';
 import { expect, test } from 'vitest';
-import { PIPELINE_ORDER } from '../../packages/physics/src/step/install.js';
+import { PIPELINE_ORDER } from '../../packages/physics/src/world/install.js';
 
 // A world starts with the core's systems and installs a feature's systems (emitters, 3D shapes and
 // joints, cloth) when the feature is first used, at their place in the default pipeline, so a bundler
-// drops the features a program never calls (step/install.ts). The reference is PIPELINE, the list
+// drops the features a program never calls (world/install.ts). The reference is PIPELINE, the list
 // of every built-in system in run order that every world ran before.
 
 const FULL: Record<string, System[]> = {};

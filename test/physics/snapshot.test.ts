@@ -18,7 +18,7 @@ import { query, removeComponent } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // Independent reference for every check here: the original world itself. A restored world must step to
@@ -283,7 +283,7 @@ describe('snapshot captures every piece of state', () => {
   test('every per-world state kept outside the world (a WeakMap keyed by the world) is registered for snapshots or is scratch', () => {
     // Scratch: rewritten before it is read in every step, so it carries nothing between steps.
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
-    // integrators/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
+    // world/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
     // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
     // solver/ball-prepare.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
     // before each use) and its kernel's argument list.
@@ -294,7 +294,7 @@ describe('snapshot captures every piece of state', () => {
     const scratch = new Set([
       'step/step.ts',
       'forces/gravity.ts',
-      'integrators/fused-state.ts',
+      'world/fused-state.ts',
       'snapshot/snapshot.ts',
       'solver/ball-prepare.ts',
       'solver/stages-threads.ts',

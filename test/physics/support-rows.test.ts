@@ -2,7 +2,7 @@ import type { PhysicsWorld } from '@bitphysics/physics';
 import { addBody, createPhysicsWorld, disposeWorld, enableThreads, setBoundary, step } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 /**

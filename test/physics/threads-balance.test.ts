@@ -14,7 +14,7 @@ import { lastColorCount } from '../../packages/physics/src/solver/coloring.js';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { BALANCE_MIN_PER_THREAD, RangeBalance } from '../../packages/physics/src/threads/balance.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // A pool cuts a loop into ranges by shares it learns from when each thread finished (threads/balance.ts).

@@ -16,7 +16,7 @@ import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { query } from '../../packages/physics/src/world/query.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // The broadphase's cell pass and the narrowphase's ball-ball contacts on the world's threads: each

@@ -16,7 +16,7 @@ import { impactChangedRows } from '../../packages/physics/src/solver/impact-stat
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // The 2D ball contacts solved by graph colouring on the world's threads (solver/coloring.ts).

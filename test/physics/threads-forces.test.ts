@@ -25,11 +25,11 @@ import {
 import { afterEach, expect, test } from 'vitest';
 import { BARNES_HUT_MIN_PER_THREAD } from '../../packages/physics/src/forces/barnes-hut/tree.js';
 import { Rng } from '../../packages/physics/src/math/rng.js';
-import { stageNeedsCheck } from '../../packages/physics/src/step/finite.js';
 import { LoopChooser } from '../../packages/physics/src/threads/adaptive.js';
 import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../packages/physics/src/threads/kernels.js';
+import { stageNeedsCheck } from '../../packages/physics/src/world/trusted-systems.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // Force laws on the world's threads: Barnes-Hut's walk (each thread replays the walk for its own

@@ -12,7 +12,7 @@ import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 import { IDLE_SPIN_MICROSECONDS } from '../../packages/physics/src/threads/pool.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // An idle worker watches for the next run for `idleSpin` microseconds before it blocks (threads/pool.ts,

@@ -21,7 +21,7 @@ import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // The reference for snapshots across thread counts is the world the snapshot was taken from: the

@@ -3,7 +3,7 @@ import { afterEach, expect, test } from 'vitest';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // The contact solver's stages beside the coloured substeps on the world's threads

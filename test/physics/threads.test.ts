@@ -22,7 +22,7 @@ import { Rng } from '../../packages/physics/src/math/rng.js';
 import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
 
-// Worlds with threads > 1 need the thread pool (threads/enable.ts).
+// Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
 
 // Worker threads split the integration and per-body force loops over shared component arrays; each

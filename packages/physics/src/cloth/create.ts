@@ -1,12 +1,12 @@
 import { addComponent } from 'bitecs';
 import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
-import { trustFiniteOutput } from '../step/finite.js';
-import { installSystem } from '../step/install.js';
 import { ClothLinkKind } from '../world/cloth-store.js';
 import { currentHandle, isAlive, slotOf } from '../world/handles.js';
+import { installSystem } from '../world/install.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 import {
   assertFinite,
   assertInteger,
@@ -78,7 +78,7 @@ const KEYS = [
 let clothTrusted = false;
 
 /**
- * Installs the cloth's system into `world`'s constraints stage at its place (step/install.ts;
+ * Installs the cloth's system into `world`'s constraints stage at its place (world/install.ts;
  * idempotent), as `createCloth` does for the first cloth and a snapshot restore does: a program that
  * never makes a cloth does not bundle its solver.
  * @category Cloth

@@ -1,5 +1,5 @@
-import { jointKeepsApart } from '../joints/connected.js';
 import { type ConvexGeometry, createGeometry } from '../shapes/geometry-2d.js';
+import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { collideShapes, createManifold } from './narrowphase/manifold-2d.js';
 import { BALL, colliderGeometry, shouldCollide } from './shapes-2d.js';

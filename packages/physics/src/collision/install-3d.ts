@@ -21,16 +21,16 @@ import { prepareManifolds3D } from '../solver/manifold-prepare-3d.js';
 import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve } from '../solver/manifold-rows-3d.js';
 import { applyManifold3DRestitution, solveManifolds3D, warmStartManifolds3D } from '../solver/manifold-solve-3d.js';
 import { setRows3D } from '../solver/rows-3d.js';
-import { trustFiniteOutput } from '../step/finite.js';
-import { installSystem } from '../step/install.js';
+import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 import { shape3DCollisionSystem } from './shapes-3d.js';
 
 let loaded = false;
 
 /**
  * Installs the 3D shapes' and joints' systems into `world` (idempotent): `shape3DCollisionSystem` in
- * the collide stage at its place (step/install.ts), and, once for the program, the contact solver's 3D
+ * the collide stage at its place (world/install.ts), and, once for the program, the contact solver's 3D
  * rows and the sleep system's 3D islands.
  * @category Collision
  */

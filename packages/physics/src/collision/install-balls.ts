@@ -5,6 +5,7 @@
  * restores a snapshot. A program that never makes a ball never reaches this module, so a bundler
  * leaves the ball contacts, the impact stage and the coloured solve out of a game of shapes and joints.
  */
+
 import {
   approachBallRows,
   ballRestitution,
@@ -16,9 +17,9 @@ import {
   warmStartBallRows,
 } from '../solver/ball-rows.js';
 import { setBallRows } from '../solver/rows-balls.js';
-import { trustFiniteOutput } from '../step/finite.js';
-import { installSystem } from '../step/install.js';
+import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 import { broadphaseSystem } from './broadphase/grid.js';
 import { narrowphaseSystem } from './narrowphase/balls.js';
 
@@ -26,7 +27,7 @@ let loaded = false;
 
 /**
  * Installs the balls' collision into `world` (idempotent): `broadphaseSystem` and `narrowphaseSystem`
- * in the collide stage at their places (step/install.ts), and, once for the program, the contact
+ * in the collide stage at their places (world/install.ts), and, once for the program, the contact
  * solver's ball rows. The package's functions that make a ball call it; call it yourself only if you
  * give an entity the `Ball` component with `addComponent` (`step` throws until you do).
  * @param world - The world to install into; it is left unchanged if the balls' systems are in it already.

@@ -1,6 +1,6 @@
 import { wakesSleeper3D } from '../islands/shapes-3d.js';
-import { jointKeepsApart } from '../joints/connected.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
+import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { colA, colB, collider, manifold, queueWake, scratch } from './colliders-3d.js';
 import { type Contact3DState, growManifold3DBuffer, lookupRow, rowKey } from './manifolds-3d.js';

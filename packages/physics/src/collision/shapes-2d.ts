@@ -1,8 +1,8 @@
 import { hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { wakeIslandForStep } from '../islands/step-wake.js';
-import { jointKeepsApart } from '../joints/connected.js';
 import { type ConvexGeometry, createGeometry, ShapeKind } from '../shapes/geometry-2d.js';
+import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
@@ -28,7 +28,7 @@ import { BodyType } from './state.js';
  * Filtering: shapes of one body never collide; a pair collides when each one's category meets the
  * other's mask, unless both share a non-zero group (> 0 always, < 0 never); pairs of which neither
  * body is dynamic are skipped, and so are bodies joined by a joint without `collideConnected`
- * (joints/connected.ts).
+ * (world/joint-no-collide.ts).
  *
  * Narrowphase (collision/narrowphase/manifold-2d.ts): each candidate pair's manifold at the start-of-step transforms, keeping a
  * point if its separation is below the speculative distance plus what the point's approach speed

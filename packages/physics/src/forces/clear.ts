@@ -1,4 +1,4 @@
-import { fusedForcesOn } from '../integrators/fused-state.js';
+import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 

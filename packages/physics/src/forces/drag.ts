@@ -1,7 +1,7 @@
-import { fusedForcesOn } from '../integrators/fused-state.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
 import { reportNonFinite } from '../world/errors.js';
+import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import { windAt } from './configure.js';

@@ -12,9 +12,9 @@ import { liftingSurfaceSystem } from '../forces/lifting-surface.js';
 import { springSystem } from '../forces/spring.js';
 import { thrustSystem } from '../forces/thrust.js';
 import { vortexSystem } from '../forces/vortex.js';
+import { beginFusedSubstep } from '../world/fused-state.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
-import { beginFusedSubstep } from './fused-state.js';
 import { forcedBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies } from './queries.js';
 
 /**

@@ -4,8 +4,8 @@ import { reportNonFiniteForces } from '../step/finite.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
 import { reportNonFinite } from '../world/errors.js';
+import { fusedForcesOn, setFusedForces } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { fusedForcesOn, setFusedForces } from './fused-state.js';
 import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
 

@@ -2,6 +2,7 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { createSlot, currentHandle, resolveEntity, SLOT_RANGE } from '../world/handles.js';
+import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays, IMPULSES } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, JointType, type JointTypeCode } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -14,7 +15,6 @@ import {
   assertVector,
   describe,
 } from '../world/validate.js';
-import { addNoCollide } from './connected.js';
 import { removeJointUnchecked } from './remove.js';
 
 /**

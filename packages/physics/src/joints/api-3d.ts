@@ -2,6 +2,7 @@ import { hasComponent } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
 import { wakeIsland } from '../islands/sleep.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
+import { addNoCollide } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
@@ -13,7 +14,6 @@ import {
   describe,
 } from '../world/validate.js';
 import { assertBreakLimit } from './api-2d.js';
-import { addNoCollide } from './connected.js';
 import { removeJoint3DUnchecked, removeJoints3DOf } from './remove-3d.js';
 
 export { removeJoint3DUnchecked } from './remove-3d.js';
@@ -30,7 +30,7 @@ import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store
  * frames. Removing either body removes the joint. Past `breakForce` (N) or `breakTorque` (N m) a
  * joint breaks: it is removed and listed in `joint3DBreaks(world)` after the step. The two bodies of a
  * joint do not collide with each other unless `collideConnected` is true (as 2D joints, Box2D's
- * default): the pairs are counted in the world's joint state (joints/connected.ts), which the 3D shape
+ * default): the pairs are counted in the world's joint state (world/joint-no-collide.ts), which the 3D shape
  * narrowphase and the ball narrowphase both consult.
  */
 

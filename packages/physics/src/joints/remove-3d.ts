@@ -4,8 +4,8 @@
  */
 import { entityExists, removeEntity } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
+import { removeNoCollide } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { removeNoCollide } from './connected.js';
 import { type Joint3DStore, joints3DOf } from './store-3d.js';
 
 /**

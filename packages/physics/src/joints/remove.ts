@@ -1,9 +1,9 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import { wakeIsland } from '../islands/sleep.js';
+import { removeNoCollide } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { removeNoCollide } from './connected.js';
 
 /**
  * Removes joint entity `j` (which must be a live joint): its bodies are woken (what held them is

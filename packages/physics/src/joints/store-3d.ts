@@ -1,4 +1,4 @@
-import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**

@@ -1,5 +1,5 @@
 import { $internal, commitRemovals } from 'bitecs';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { registerExternalWorldState } from '../world/external-state.js';
 import { touchSparseSet } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
 

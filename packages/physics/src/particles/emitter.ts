@@ -1,13 +1,13 @@
 import { addComponent, query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
 import { installBalls } from '../collision/install-balls.js';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
-import { trustFiniteOutput } from '../step/finite.js';
-import { installSystem } from '../step/install.js';
 import { DEFAULT_MATERIAL } from '../world/components.js';
 import { NonFiniteStateError } from '../world/errors.js';
+import { registerExternalWorldState } from '../world/external-state.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
+import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 import {
   assertBoolean,
   assertFinite,
@@ -1064,7 +1064,7 @@ function spawnDeathBursts(world: PhysicsWorld, b: ParticleBook): void {
 let emittersTrusted = false;
 
 /**
- * Installs the emitters' system into `world`'s spawn stage at its place (step/install.ts; idempotent),
+ * Installs the emitters' system into `world`'s spawn stage at its place (world/install.ts; idempotent),
  * as `addEmitter` does for the first emitter and a snapshot restore does: a program that never makes
  * an emitter does not bundle it (nor the death bursts of lifetimeSystem, which need emitters). The
  * system checks the particles it spawns itself (step/finite.ts).

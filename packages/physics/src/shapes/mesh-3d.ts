@@ -1,5 +1,5 @@
 import { addComponent, entityExists } from 'bitecs';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { registerExternalWorldState } from '../world/external-state.js';
 import { createSlot, currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {

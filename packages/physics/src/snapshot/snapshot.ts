@@ -6,12 +6,12 @@ import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
 import { setBarnesHutGravity } from '../forces/gravity.js';
 import { installEmitters } from '../particles/emitter.js';
 import { shareStores } from '../threads/shared-stores.js';
+import { externalWorldStates } from '../world/external-state.js';
 import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { describe } from '../world/validate.js';
 import { checkSnapshotValues } from './checks.js';
 import { snapshotChecksum } from './checksum.js';
-import { externalWorldStates } from './world-state.js';
 
 /**
  * Snapshots: the complete state of a world as transferable data, and `restore`, which puts it back.
@@ -1743,7 +1743,7 @@ export function restore(world: PhysicsWorld, snap: WorldSnapshot): void {
 }
 
 /**
- * Installs every feature's systems into a restored world (step/install.ts): the emitters', the balls', the 3D
+ * Installs every feature's systems into a restored world (world/install.ts): the emitters', the balls', the 3D
  * shapes' and joints', the cloth's and the Barnes-Hut sum, so the world runs whatever the snapshot's
  * world ran. A feature the snapshot's world never used has nothing to act on and writes nothing.
  */

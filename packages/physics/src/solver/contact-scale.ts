@@ -1,6 +1,6 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { CollisionSettings } from '../collision/state.js';
-import { registerExternalWorldState } from '../snapshot/world-state.js';
+import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**

@@ -1,9 +1,9 @@
-import { fusedForcesOn } from '../integrators/fused-state.js';
 import { KERNEL } from '../threads/kernels.js';
 import { runParallel } from '../threads/parallel.js';
 import { NonFiniteStateError } from '../world/errors.js';
+import { fusedForcesOn } from '../world/fused-state.js';
 import { currentHandle } from '../world/handles.js';
-import type { PhysicsWorld, System } from '../world/options.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import type { StageName } from '../world/stage-names.js';
 
@@ -34,61 +34,6 @@ import type { StageName } from '../world/stage-names.js';
  *
  * Cost: one fused pass over the moving bodies (and one over the turning ones), a multiply and an add
  * per field, and a second pass to name the culprit only when the first finds one.
- */
-
-/**
- * What a built-in system checks itself: 'all' it writes, or only its linear state (position, velocity).
- * @category World and step
- */
-export type FiniteScope = 'all' | 'linear';
-
-const trusted = new WeakMap<System, { scope: FiniteScope; idle?: (world: PhysicsWorld) => boolean }>();
-
-/**
- * Marks built-in systems that write no body state, or check what they write and throw
- * NonFiniteStateError themselves. `scope` 'linear': the system checks the positions and velocities it
- * writes but not the angular state (the integrators), so the stage still checks the turning bodies.
- * `idle`: the system is trusted only while idle(world) is true (it then writes nothing, e.g. a
- * collision system for a kind of shape the world has none of).
- * @category World and step
- */
-export function trustFiniteOutput(systems: readonly System[], scope: FiniteScope = 'all', idle?: (world: PhysicsWorld) => boolean): void {
-  for (const s of systems) trusted.set(s, idle ? { scope, idle } : { scope });
-}
-
-/**
- * What `step` must check after a stage ran `systems`: 2 the whole motion state (some system is not
- * trusted), 1 only the angular state (some system checks only its linear state), 0 nothing.
- * @category World and step
- */
-export function stageNeedsCheck(world: PhysicsWorld, stage: StageName, systems: readonly System[]): 0 | 1 | 2 {
-  if (stage === 'clearForces' || systems.length === 0) return 0;
-  let need: 0 | 1 | 2 = 0;
-  for (let i = 0; i < systems.length; i++) {
-    const level = systemNeedsCheck(world, systems[i]!);
-    if (level === 2) return 2;
-    if (level === 1) need = 1;
-  }
-  return need;
-}
-
-/**
- * What must be checked after `system` alone: 2 the whole motion state (not trusted, or trusted only
- * while idle and not idle now), 1 only the angular state (it checks its linear state itself), 0 nothing.
- * @category World and step
- */
-export function systemNeedsCheck(world: PhysicsWorld, system: System): 0 | 1 | 2 {
-  const t = trusted.get(system);
-  if (t === undefined || (t.idle !== undefined && !t.idle(world))) return 2;
-  return t.scope === 'linear' ? 1 : 0;
-}
-
-/*
- * The fast passes: one fused loop per group of fields, each written out for its number of arrays so
- * the loop stays monomorphic. x * 0 is 0 for every finite x and NaN for NaN and both infinities, so
- * the sum is 0 exactly when every value is finite (a plain sum of huge finite values could overflow).
- * When the query holds every live id (a world of particles), its ids are 1..maxId and the loop runs
- * over that range directly, in memory order.
  */
 
 function sum2(ents: ArrayLike<number>, dense: boolean, a: Float64Array, b: Float64Array): number {

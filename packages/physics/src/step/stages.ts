@@ -22,16 +22,16 @@ import { integrateSystem } from '../integrators/integrate.js';
 import { sleepSystem, wakeSystem } from '../islands/sleep.js';
 import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
 import { contactSolverSystem } from '../solver/contact-solver.js';
+import { PIPELINE_ORDER } from '../world/install.js';
 import type { System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { STAGES, type StageName } from '../world/stage-names.js';
-import { trustFiniteOutput } from './finite.js';
-import { PIPELINE_ORDER } from './install.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 
 export type { System } from '../world/options.js';
 export { STAGES, type StageName, SUBSTEP_STAGES } from '../world/stage-names.js';
 
-/** The core's built-in systems by name (step/install.ts PIPELINE_ORDER): every world starts with these. */
+/** The core's built-in systems by name (world/install.ts PIPELINE_ORDER): every world starts with these. */
 const CORE: Readonly<Record<string, System>> = {
   wake: wakeSystem,
   lifetime: lifetimeSystem,
@@ -69,7 +69,7 @@ const CORE: Readonly<Record<string, System>> = {
 };
 
 /**
- * The default pipeline: every stage with all its built-in systems, in run order (step/install.ts
+ * The default pipeline: every stage with all its built-in systems, in run order (world/install.ts
  * PIPELINE_ORDER). A world starts with the core ones in `world.stages` and installs the others (the
  * emitters', 3D shapes' and cloth's systems) at their place here when the feature is first used;
  * hook in with `addSystem`. Referencing this list brings every built-in system into a bundle.
@@ -159,7 +159,7 @@ function trustCore(): void {
 
 /**
  * A new world's stages: the core's built-in systems of every stage, in run order, each recorded by
- * name in `builtins` (the world's map of installed built-ins, see step/install.ts).
+ * name in `builtins` (the world's map of installed built-ins, see world/install.ts).
  * @category World and step
  */
 export function createStages(builtins: Map<string, System>): Record<StageName, System[]> {

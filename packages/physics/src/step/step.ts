@@ -1,10 +1,11 @@
 import { armFusedForces } from '../integrators/fused-gate.js';
-import { setFusedForces } from '../integrators/fused-state.js';
+import { setFusedForces } from '../world/fused-state.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { STAGES, type StageName, SUBSTEP_STAGES } from '../world/stage-names.js';
+import { systemNeedsCheck } from '../world/trusted-systems.js';
 import { assertOptions, describe } from '../world/validate.js';
-import { checkStageState, systemNeedsCheck } from './finite.js';
+import { checkStageState } from './finite.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
 const clock = (globalThis as { performance?: { now(): number } }).performance;

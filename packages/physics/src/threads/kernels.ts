@@ -1,12 +1,12 @@
 /**
- * Kernel numbers (`KERNEL`), the index of each loop kernel in the kernel table (threads/kernel-table.ts,
+ * Kernel numbers (`KERNEL`), the index of each loop kernel in the kernel table (step/kernel-table.ts,
  * which says what a kernel is and the rules it follows). Systems name their kernels by these numbers;
- * the table itself is handed to a world's thread pool when the pool is made (threads/enable.ts), so a
+ * the table itself is handed to a world's thread pool when the pool is made (step/enable-threads.ts), so a
  * program without threads does not bring the kernels in.
  */
 
-export { KERNEL_HELPERS } from './kernel-helpers.js';
-export { KERNELS } from './kernel-table.js';
+export { KERNEL_HELPERS } from '../step/kernel-helpers.js';
+export { KERNELS } from '../step/kernel-table.js';
 export type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 
 /**

@@ -1,6 +1,6 @@
 /**
  * The hook through which `createPhysicsWorld` makes a thread pool: empty until `enableThreads`
- * (threads/enable.ts) fills it, so the world's assembly does not import the pool and its kernels.
+ * (step/enable-threads.ts) fills it, so the world's assembly does not import the pool and its kernels.
  */
 import type { ThreadPool } from './pool.js';
 

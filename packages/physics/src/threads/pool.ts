@@ -157,7 +157,7 @@ export class ThreadPool {
   readonly threads: number;
   /** The kernel table the pool runs, indexed by kernel number (threads/kernels.ts KERNEL); the workers get its source text. */
   readonly kernels: readonly Kernel[];
-  /** The functions the kernels call, by index (threads/kernel-helpers.ts), passed to every kernel as its last argument. */
+  /** The functions the kernels call, by index (step/kernel-helpers.ts), passed to every kernel as its last argument. */
   readonly helpers: readonly KernelHelper[];
   /** Resolves once every worker has started and can take work (a browser page may await it; Node waits by itself). */
   readonly ready: Promise<void>;
@@ -529,7 +529,7 @@ export class ThreadPool {
 /**
  * Makes a pool of `threads` threads (the caller and threads - 1 workers) that runs the kernels of
  * `kernels` (indexed by kernel number) with `helpers` as their last argument. The pool knows no
- * physics: a world's pool gets the physics kernel table (threads/kernel-table.ts) from `enableThreads`.
+ * physics: a world's pool gets the physics kernel table (step/kernel-table.ts) from `enableThreads`.
  * @throws Error if SharedArrayBuffer is missing (a page that is not cross-origin isolated) or no
  *   worker can be made here; the message starts with `where`.
  * @category Threads

@@ -138,11 +138,11 @@ export interface PhysicsWorldContext {
   /**
    * The systems of each stage, run in the order of `STAGES`. Add your own with `addSystem`. A new world
    * holds the core's built-in systems; a feature's (emitters, 3D shapes and joints, cloth) are put in at
-   * their place in `PIPELINE` when the feature is first used (step/install.ts).
+   * their place in `PIPELINE` when the feature is first used (world/install.ts).
    */
   readonly stages: Record<StageName, System[]>;
   /**
-   * Internal: the built-in systems ever installed in `stages`, by name (step/install.ts PIPELINE_ORDER).
+   * Internal: the built-in systems ever installed in `stages`, by name (world/install.ts PIPELINE_ORDER).
    * A name stays once installed, so a built-in taken out with `removeSystem` is not put back.
    */
   readonly builtins: Map<string, System>;

@@ -9,12 +9,12 @@
  * lookup needs the joints' map, which the workers do not have) and make no contact.
  */
 
-import { jointKeepsApart } from '../../joints/connected.js';
 import { shareContactBuffer } from '../../solver/coloring.js';
 import type { KernelArray } from '../../threads/kernel-types.js';
 import { KERNEL } from '../../threads/kernels.js';
 import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedLike, type ThreadPool } from '../../threads/pool.js';
+import { jointKeepsApart } from '../../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
 import { BodyType, type CollisionState } from '../state.js';

@@ -6,8 +6,8 @@
  * never reaches its code, and a bundler leaves it out. The order is the default pipeline's, so a
  * world runs the same systems in the same order as one made with every system installed.
  */
-import type { PhysicsWorld, System } from '../world/options.js';
-import type { StageName } from '../world/stage-names.js';
+import type { PhysicsWorld, System } from './options.js';
+import type { StageName } from './stage-names.js';
 
 /**
  * Every built-in system's name, stage by stage, in run order: the order of the default pipeline

@@ -1,4 +1,4 @@
-import type { JointState } from '../world/joint-state-2d.js';
+import type { JointState } from './joint-state-2d.js';
 
 /**
  * Which jointed pairs of bodies do not collide (Box2D's `collideConnected = false`, the default): per

@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world/options.js';
+import type { PhysicsWorld } from './options.js';
 
 /**
  * Which world's current substep runs the fused force-and-integrate pass (see integrators/fused-gate.ts

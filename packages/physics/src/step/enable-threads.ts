@@ -1,12 +1,13 @@
 /**
  * Turning threads on: `enableThreads` hands `createPhysicsWorld` the thread pool and the physics
- * kernel table (threads/kernel-table.ts), so a world made with `threads` > 1 gets a pool of workers. A
+ * kernel table (step/kernel-table.ts), so a world made with `threads` > 1 gets a pool of workers. A
  * program that never calls it does not bundle the pool, the workers' source or the kernels.
  */
+
+import { createThreadPool } from '../threads/pool.js';
+import { setThreadPoolMaker } from '../threads/pool-maker.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
 import { KERNELS } from './kernel-table.js';
-import { createThreadPool } from './pool.js';
-import { setThreadPoolMaker } from './pool-maker.js';
 
 /**
  * Lets worlds run on several threads: after this call, `createPhysicsWorld({ threads: n })` with n > 1

@@ -24,7 +24,7 @@ import { approach2D, finishBodies2D, gatherFill2D, restitutionColored2D } from '
 import { stripPlan2D } from '../solver/strip-plan-kernel.js';
 import { stripCut2D } from '../solver/strips-kernel.js';
 import { warmStartTable } from '../solver/warm-start-kernel.js';
-import type { Kernel, KernelArray } from './kernel-types.js';
+import type { Kernel, KernelArray } from '../threads/kernel-types.js';
 
 /**
  * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).

@@ -13,8 +13,8 @@ import {
 } from '../solver/stages-kernel.js';
 import { stripLayout2D } from '../solver/strip-plan-kernel.js';
 import { stripCut2D } from '../solver/strips-kernel.js';
-import { claimBlock } from './block-claim.js';
-import type { KernelHelper } from './kernel-types.js';
+import { claimBlock } from '../threads/block-claim.js';
+import type { KernelHelper } from '../threads/kernel-types.js';
 
 /**
  * Functions kernels call, by index (passed to every kernel as its last argument; the workers get

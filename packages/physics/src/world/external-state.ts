@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '../world/options.js';
+import type { PhysicsWorld } from './options.js';
 
 /**
  * Per-world state kept outside the world object (in a module's WeakMap keyed by the world), which
