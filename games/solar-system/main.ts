@@ -328,15 +328,19 @@ function frame(): void {
     const x = ((v.x + 1) / 2) * w,
       y = ((1 - v.y) / 2) * h;
     const width = 7.5 * (el.textContent?.length ?? 4) + 14;
+    // Right of the planet, or left of it where the name would run off the view's right edge.
+    const left = x + width > w;
+    const x0 = left ? x - width : x;
     let free = visible;
     for (let i = 0; free && i < placed.length; i += 4) {
-      if (x < placed[i + 2]! && x + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) free = false;
+      if (x0 < placed[i + 2]! && x0 + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) free = false;
     }
     el.style.display = free ? 'block' : 'none';
     if (free) {
       el.style.left = `${x}px`;
       el.style.top = `${y}px`;
-      placed.push(x, y, x + width, 0);
+      el.style.transform = left ? 'translate(calc(-100% - 6px), -50%)' : 'translate(6px, -50%)';
+      placed.push(x0, y, x0 + width, 0);
     }
   }
   shownLabels = placed.length / 4;
