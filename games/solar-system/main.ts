@@ -306,6 +306,14 @@ const p3 = [0, 0, 0];
 const v = new Vector3();
 let tableFrame = 0;
 
+/** Whether a label box from `x0` to `x0 + width` at height `y` (px) clears every label placed this frame. */
+function labelFree(x0: number, y: number, width: number): boolean {
+  for (let i = 0; i < placed.length; i += 4) {
+    if (x0 < placed[i + 2]! && x0 + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) return false;
+  }
+  return true;
+}
+
 function frame(): void {
   const k = UNITS_PER_AU;
   const w = app.canvas.clientWidth,
@@ -328,18 +336,20 @@ function frame(): void {
     const x = ((v.x + 1) / 2) * w,
       y = ((1 - v.y) / 2) * h;
     const width = 7.5 * (el.textContent?.length ?? 4) + 14;
-    // Right of the planet, or left of it where the name would run off the view's right edge.
-    const left = x + width > w;
-    const x0 = left ? x - width : x;
-    let free = visible;
-    for (let i = 0; free && i < placed.length; i += 4) {
-      if (x0 < placed[i + 2]! && x0 + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) free = false;
+    // Right of the planet where the name fits in the view, else left of it; the other side when
+    // the first would cover a label placed before.
+    const fitsRight = x + width <= w;
+    let x0 = fitsRight ? x : x - width;
+    let free = visible && labelFree(x0, y, width);
+    if (visible && !free) {
+      x0 = fitsRight ? x - width : x;
+      free = labelFree(x0, y, width);
     }
     el.style.display = free ? 'block' : 'none';
     if (free) {
       el.style.left = `${x}px`;
       el.style.top = `${y}px`;
-      el.style.transform = left ? 'translate(calc(-100% - 6px), -50%)' : 'translate(6px, -50%)';
+      el.style.transform = x0 < x ? 'translate(calc(-100% - 6px), -50%)' : 'translate(6px, -50%)';
       placed.push(x0, y, x0 + width, 0);
     }
   }
