@@ -52,7 +52,10 @@ export function continuousCollisionSystem(world: PhysicsWorld): void {
       da = (ang.length > b ? ang[b]! : 0) - a0;
     // Moved farther than its size (the broadphase's, which also caps its speculative contacts; the
     // fattened box's half diagonal stands in for its reach)?
-    const boxReach = 0.5 * Math.hypot(sc.maxX[i]! - sc.minX[i]!, sc.maxY[i]! - sc.minY[i]!);
+    // (Math.sqrt, not Math.hypot: V8 does not inline hypot, and its call boxes both arguments.)
+    const bw = sc.maxX[i]! - sc.minX[i]!,
+      bh = sc.maxY[i]! - sc.minY[i]!;
+    const boxReach = 0.5 * Math.sqrt(bw * bw + bh * bh);
     if (Math.sqrt(dx * dx + dy * dy) + Math.abs(da) * boxReach <= sc.size[i]!) continue;
     colliderGeometry(world, e, gI);
     const sizeI = innerSize(gI),
