@@ -1,6 +1,7 @@
 import { setFlagsFromString } from 'node:v8';
 import { ballsInBoxLayout } from '@bitphysics/physics';
 import { boxWalls } from './box-walls.js';
+import { createRapierJointGrid } from './rapier2d-joint-grid.js';
 import { createRapierPyramid } from './rapier2d-pyramid.js';
 import type { BodySnapshot, EngineAdapter, EngineInstance, SceneRunOptions } from './types.js';
 
@@ -71,10 +72,11 @@ function rapier2dAdapter(name: string, pkg: string, load: () => Promise<Rapier>)
       await load();
     },
     supports(scene: string): boolean {
-      return scene === 'balls-in-box' || scene === 'pyramid';
+      return scene === 'balls-in-box' || scene === 'pyramid' || scene === 'joint-grid';
     },
     async create(options: SceneRunOptions): Promise<EngineInstance> {
       if (options.scene === 'pyramid') return createRapierPyramid(await load(), options, name);
+      if (options.scene === 'joint-grid') return createRapierJointGrid(await load(), options, name);
       if (options.scene !== 'balls-in-box') throw new RangeError(`${name}: does not support scene "${options.scene}"`);
       const R = await load();
       const layout = ballsInBoxLayout({ count: options.count, seed: options.seed, restitution: options.params?.restitution ?? 0.5 });

@@ -4,7 +4,7 @@ import type { BenchScene, ExtraValue } from './types.js';
 const metres = (v: ExtraValue): string => (typeof v === 'number' ? v.toExponential(2) : String(v));
 
 /**
- * Bench side of `joint-grid` (Box2D v3's joint benchmark; ours only, no peer adapter): `--count` is
+ * Bench side of `joint-grid` (Box2D v3's joint benchmark; peers rapier2d and rapier2d-simd): `--count` is
  * the grid's side; the probe records the largest joint error (anchor separation after each step, m)
  * over the timed steps and at the last one, and the number of joints solved.
  */
