@@ -73,6 +73,11 @@ function soft(rows: Float64Array, o: number, hertz: number, zeta: number, h: num
   rows[o + 2] = 1 / (1 + a);
 }
 
+/** `a` if it holds `n` numbers, else a new array of at least n (twice a's length): its contents are not kept. */
+function atLeast(a: Float64Array, n: number): Float64Array {
+  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
+}
+
 /**
  * Fills every row from the joint components and the solver bodies (already gathered and filled by the
  * contact solver): start-of-step anchors (world frame, from each centre), centre difference, relative
@@ -90,7 +95,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   const sb = cs.bodyState,
     ex = cs.bodyExtra;
   const count = cs.solverBodyCount;
-  if (js.rotation.length < count * 3) js.rotation = new Float64Array(Math.max(count * 3, js.rotation.length * 2));
+  js.rotation = atLeast(js.rotation, count * 3);
   const rot = js.rotation;
   for (let k = 0; k < count; k++) {
     rot[k * 3] = 1;
@@ -99,7 +104,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
   }
   // Each solver body's angle at the start of the step (its angle less the rotation still owed), with
   // its cos and sin, once per body rather than once per joint.
-  if (js.startPose.length < count * 3) js.startPose = new Float64Array(Math.max(count * 3, js.startPose.length * 2));
+  js.startPose = atLeast(js.startPose, count * 3);
   const pose = js.startPose,
     list = cs.solverBodies,
     angle = c.Angle.value;

@@ -52,6 +52,14 @@ export function jointsToSolve(world: PhysicsWorld): boolean {
   return world.dimensions === 2 && js.attached.length > 0 && query(world, [world.components.Joint]).length > 0;
 }
 
+/** `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). */
+function withRoom(list: Int32Array, n: number): Int32Array {
+  if (list.length >= n) return list;
+  const grown = new Int32Array(Math.max(n, 2 * list.length));
+  grown.set(list);
+  return grown;
+}
+
 /**
  * Builds this step's joint rows and gives the moving bodies of every joint a solver index (after the
  * contacts' bodies, in `world.collision.solverBodies`, marked with the current `solverStamp`). Also
@@ -104,7 +112,9 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
 
   ensureRows(js, n);
   const ri = js.rowInts;
-  let list = cs.solverBodies;
+  // Room for both bodies of every joint, grown before the loop (a branch that runs only in a
+  // world's first step is compiled as a deoptimisation of the whole loop).
+  const list = withRoom(cs.solverBodies, count + 2 * n);
   const mark = cs.solverMark,
     index = cs.solverIndex,
     sstamp = cs.solverStamp;
@@ -132,11 +142,6 @@ export function gatherJointBodies(world: PhysicsWorld, count: number): number {
       if (side === 0 ? fixedA : fixedB) continue;
       if (mark[e] !== sstamp) {
         mark[e] = sstamp;
-        if (count >= list.length) {
-          const l = new Int32Array(list.length * 2);
-          l.set(list);
-          list = l;
-        }
         index[e] = count;
         list[count++] = e;
       }

@@ -75,7 +75,9 @@ export function warmStartJoints(world: PhysicsWorld): void {
       i = l * PIN_INTS;
     const Px = pf[f + 6]!,
       Py = pf[f + 7]!;
-    if (Px === 0 && Py === 0) continue;
+    // One comparison that always runs (|Px| + |Py| is 0 only when both are): the second half of
+    // `Px === 0 && Py === 0` runs only in a world's first steps, which V8 compiles as a deoptimisation.
+    if (Math.abs(Px) + Math.abs(Py) === 0) continue;
     const ia = pint[i]!,
       ib = pint[i + 1]!,
       oA = ia * 8,

@@ -176,8 +176,19 @@ export function createJointState(): JointState {
       stretch: new Float64Array(16),
     },
     breaksStep: -1,
-    stats: { rows: 0, maxError: 0, maxErrorJoint: 0 },
+    stats: new JointSolveStats(),
   };
+}
+
+/**
+ * The joint solver's statistics (JointState.stats), a class so that every world's object has one map:
+ * a literal made again in a later world can get another map, which makes V8 drop the optimised code
+ * that reads the field.
+ */
+class JointSolveStats {
+  rows = 0;
+  maxError = 0;
+  maxErrorJoint = 0;
 }
 
 /**
