@@ -115,16 +115,10 @@ export {
 } from './forces/api.js';
 export type { BallastOptions } from './forces/ballast.js';
 export { ballastFillSystem, ballastTrimSystem, setBallast, setBallastTarget } from './forces/ballast.js';
-export type { GravityTree } from './forces/barnes-hut/tree.js';
-export {
-  barnesHutGravity,
-  buildTree,
-  treeField,
-  treeFields,
-  treeFieldsSorted,
-  worldTree,
-  worldTreeFields,
-} from './forces/barnes-hut/tree.js';
+export { barnesHutGravity, treeField, treeFields, treeFieldsSorted, worldTreeFields } from './forces/barnes-hut/tree.js';
+export { buildTree } from './forces/barnes-hut/tree-build.js';
+export type { GravityTree } from './forces/barnes-hut/tree-store.js';
+export { worldTree } from './forces/barnes-hut/tree-store.js';
 export { bodyThrustSystem, setBodyThrust } from './forces/body-thrust.js';
 export { centralForceSystem } from './forces/central.js';
 export { clearForcesSystem } from './forces/clear.js';

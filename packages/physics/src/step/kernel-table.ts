@@ -17,7 +17,8 @@
 import { ballPairs } from '../collision/broadphase/grid-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
 import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut/gather.js';
-import { barnesHutWalk2, barnesHutWalk3 } from '../forces/barnes-hut/walk.js';
+import { barnesHutWalk2 } from '../forces/barnes-hut/walk-2d.js';
+import { barnesHutWalk3 } from '../forces/barnes-hut/walk-3d.js';
 import { solveColored2D } from '../solver/coloring-kernel.js';
 import { prepareContacts2D } from '../solver/prepare-contacts-kernel.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionColored2D } from '../solver/stages-kernel.js';

@@ -1,0 +1,268 @@
+import type { KernelArray } from '../../threads/kernel-types.js';
+import { sharedFloat64, sharedMemoryAvailable } from '../../threads/pool.js';
+import type { PhysicsWorld } from '../../world/options.js';
+import { SORT_PARAMS } from './gather.js';
+import { INFO_STRIDE } from './walk.js';
+
+/**
+ * The Barnes-Hut tree's storage (see tree.ts for the method): its layout constants, the GravityTree
+ * arrays of one world, and their growth by doubling.
+ */
+
+/** Most parts (threads) an evaluation is cut into. */
+export const MAX_PARTS = 32;
+
+/** Most bodies a leaf holds before it splits. */
+export const LEAF_SIZE = 8;
+/** Cells smaller than this fraction of the root never split (so at most ~31 levels). */
+export const MIN_CELL_FRACTION = 1e-9;
+/** Depth bound: MIN_CELL_FRACTION > 2^-31, with margin. */
+export const MAX_DEPTH = 64;
+
+/** Float64 slots per node, 2D: [cx, cy, M, Sxx, Sxy, Syy, r, Txxx, Txxy, Txyy, Tyyy, -] (T: third moment). */
+export const NF2 = 12;
+/** 3D: [cx, cy, cz, M, Sxx, Syy, Szz, Sxy, Sxz, Syz, r, -]. */
+export const NF3 = 12;
+/** Local field polynomial per node, 2D: [a0x, a0y, Jxx, Jxy, Jyy, Kxxx, Kxxy, Kxyy, Kyyy, Hxxxx, Hxxxy, Hxxyy, Hxyyy, Hyyyy]. */
+export const NL2 = 14;
+/** 3D: [a0 x y z, J xx yy zz xy xz yz, K xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz]. */
+export const NL3 = 19;
+
+/**
+ * The tree's arrays; one per world, reused between evaluations.
+ * @category Forces
+ */
+export interface GravityTree {
+  dims: 2 | 3;
+  /** Bodies in the last build. */
+  n: number;
+  /** Nodes in the last build (depth-first preorder, root 0). */
+  nodeCount: number;
+  /** Bodies in tree order (slot s): position, m, and mass, kg. Length >= n. */
+  x: Float64Array;
+  y: Float64Array;
+  z: Float64Array;
+  m: Float64Array;
+  /** perm[s]: input index of the body in slot s; slot[i]: slot of input body i. */
+  perm: Int32Array;
+  slot: Int32Array;
+  /** Second buffer of the partition (ping-pong) and the quadrant of each slot. */
+  x2: Float64Array;
+  y2: Float64Array;
+  z2: Float64Array;
+  m2: Float64Array;
+  perm2: Int32Array;
+  code: Uint8Array;
+  /** Per node, stride 12 (layouts at NF2, NF3): centre of mass (m), mass (kg), second moment S (kg m^2), r = b_max (m), 2D third moment T (kg m^3). */
+  node: Float64Array;
+  /** Per node, stride 6: tight bounding box min x, y, z, max x, y, z, m. */
+  box: Float64Array;
+  /** Per node: first slot, end slot (exclusive), and the node after its subtree (k + 1 for a leaf). */
+  start: Int32Array;
+  end: Int32Array;
+  skip: Int32Array;
+  /**
+   * The evaluation's scratch, one array a part (forces/barnes-hut/walk.ts): per node, stride 14 (2D) or 19
+   * (3D), the field polynomial about the centre of mass (without G; layouts at NL2, NL3), then the
+   * direct sums x, y, z of every slot (without G) from the offsets `accOffset`.
+   */
+  scratch: Float64Array[];
+  /** Offset of the direct sums in each scratch array: node capacity times the polynomial stride. */
+  accOffset: number;
+  /** Slot boundaries of the parts of the last evaluation (part p: cut[p] .. cut[p + 1] - 1), at leaf starts. */
+  cut: Int32Array;
+  /** Per part, stride 4: counts and work of the last evaluation (see forces/barnes-hut/walk.ts). */
+  info: Float64Array;
+  /** Parts of the last evaluation (1 on one thread). */
+  parts: number;
+  /** Whether the arrays the evaluation reads live on SharedArrayBuffers (a world with threads > 1). */
+  shared: boolean;
+  /** Scratch of the cuts, the kernel's array list and its parameters (reused). */
+  cutWant: Int32Array;
+  walkList: KernelArray[];
+  walkParams: Float64Array;
+  keyParams: Float64Array;
+  momentParams: Float64Array;
+  /**
+   * The Morton sort's scratch (mortonSort): per part, the first digit's histogram and first places
+   * (2^keyParams[9] each, at most SORT_RADIX) and a bucket sort's counts (BUCKET_RADIX); each bucket's
+   * first slot (2^keyParams[9] + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
+   */
+  sortHist: Int32Array;
+  sortOffset: Int32Array;
+  sortLocal: Int32Array;
+  sortBucket: Int32Array;
+  sortGroup: Int32Array;
+  sortLists: KernelArray[][];
+  /**
+   * The moments' scratch (treeMomentsAll): the subtree roots (parts' runs cut at momentCut), the
+   * nodes above them (momentTop, preorder; momentDown, reversed, with its one-part cut momentCut1),
+   * and the kernel's array lists.
+   */
+  momentList: Int32Array;
+  momentCut: Int32Array;
+  momentTop: Int32Array;
+  momentDown: Int32Array;
+  momentCut1: Int32Array;
+  momentLists: KernelArray[][];
+  /** Quadrant counts and offsets of a split. */
+  counts: Int32Array;
+  /** Morton keys in sorted order (their input indices are `perm`), and the sort's second buffers (keys, input indices). */
+  key: Uint32Array;
+  key2: Uint32Array;
+  idx2: Int32Array;
+  /** Task stack of the build: per task [lo, hi, inA, depth, parent] and [cx, cy, cz, half]. */
+  taskI: Int32Array;
+  taskF: Float64Array;
+  /** Parent of each node (-1 for the root). */
+  parent: Int32Array;
+  /** Field at each slot, m/s^2 (tree order), from the last treeFieldsSorted call. */
+  ax: Float64Array;
+  ay: Float64Array;
+  az: Float64Array;
+  /** Smallest half edge that still splits, m. */
+  minHalf: number;
+  /** The last build met a non-finite position: no tree was built and every field is NaN. */
+  nonFinite: boolean;
+  /** Work of the last evaluation: cell-cell expansions, direct body pairs, and cell pairs visited by the walk. */
+  stats: { cellPairs: number; bodyPairs: number; visits: number };
+}
+
+function createTree(dims: 2 | 3, shared: boolean): GravityTree {
+  const nodes = 1024;
+  const F64 = (n: number): Float64Array => (shared ? sharedFloat64(n) : new Float64Array(n));
+  const I32 = (n: number): Int32Array => (shared ? new Int32Array(new SharedArrayBuffer(4 * n)) : new Int32Array(n));
+  return {
+    dims,
+    n: 0,
+    nodeCount: 0,
+    x: new Float64Array(0),
+    y: new Float64Array(0),
+    z: new Float64Array(0),
+    m: new Float64Array(0),
+    perm: new Int32Array(0),
+    slot: new Int32Array(0),
+    x2: new Float64Array(0),
+    y2: new Float64Array(0),
+    z2: new Float64Array(0),
+    m2: new Float64Array(0),
+    perm2: new Int32Array(0),
+    code: new Uint8Array(0),
+    node: F64(nodes * (dims === 3 ? NF3 : NF2)),
+    box: F64(nodes * 6),
+    start: I32(nodes),
+    end: I32(nodes),
+    skip: I32(nodes),
+    scratch: [],
+    accOffset: 0,
+    cut: I32(MAX_PARTS + 1),
+    info: F64(MAX_PARTS * INFO_STRIDE),
+    parts: 1,
+    shared,
+    cutWant: new Int32Array(MAX_PARTS + 1),
+    walkList: [],
+    walkParams: new Float64Array(10),
+    keyParams: new Float64Array(SORT_PARAMS),
+    momentParams: new Float64Array(2),
+    sortHist: new Int32Array(0),
+    sortOffset: new Int32Array(0),
+    sortLocal: new Int32Array(0),
+    sortBucket: I32(0),
+    sortGroup: I32(MAX_PARTS + 1),
+    sortLists: [[], [], []],
+    momentList: I32(0),
+    momentCut: I32(MAX_PARTS + 1),
+    momentTop: new Int32Array(256),
+    momentDown: new Int32Array(256),
+    momentCut1: new Int32Array(2),
+    momentLists: [[], []],
+    counts: new Int32Array(16),
+    key: new Uint32Array(0),
+    key2: new Uint32Array(0),
+    idx2: new Int32Array(0),
+    taskI: new Int32Array(MAX_DEPTH * 8 * 5),
+    taskF: new Float64Array(MAX_DEPTH * 8 * 4),
+    parent: I32(nodes),
+    ax: new Float64Array(0),
+    ay: new Float64Array(0),
+    az: new Float64Array(0),
+    minHalf: 0,
+    nonFinite: false,
+    stats: { cellPairs: 0, bodyPairs: 0, visits: 0 },
+  };
+}
+
+/**
+ * The tree of a world (created on first use, kept on the world); in a world with threads > 1 the
+ * arrays the evaluation reads are on SharedArrayBuffers, so worker threads can walk it.
+ * @category Forces
+ */
+export function worldTree(world: PhysicsWorld): GravityTree {
+  const holder = world as { gravityTree?: GravityTree };
+  if (!holder.gravityTree || holder.gravityTree.dims !== world.dimensions) {
+    holder.gravityTree = createTree(world.dimensions, world.threads > 1 && sharedMemoryAvailable());
+  }
+  return holder.gravityTree;
+}
+
+/** A Float64Array of n elements, on a SharedArrayBuffer when the tree is shared. */
+export function f64(t: GravityTree, n: number): Float64Array {
+  return t.shared ? sharedFloat64(n) : new Float64Array(n);
+}
+
+/** An Int32Array of n elements, on a SharedArrayBuffer when the tree is shared. */
+export function i32(t: GravityTree, n: number): Int32Array {
+  return t.shared ? new Int32Array(new SharedArrayBuffer(4 * n)) : new Int32Array(n);
+}
+
+export function growBodies(t: GravityTree, n: number): void {
+  if (t.x.length >= n) return;
+  const size = Math.max(n, 2 * t.x.length, 64);
+  t.x = f64(t, size);
+  t.y = f64(t, size);
+  t.z = f64(t, size);
+  t.m = f64(t, size);
+  t.x2 = new Float64Array(size);
+  t.y2 = new Float64Array(size);
+  t.z2 = new Float64Array(size);
+  t.m2 = new Float64Array(size);
+  t.perm = i32(t, size);
+  t.perm2 = new Int32Array(size);
+  t.slot = i32(t, size);
+  t.code = new Uint8Array(size);
+  t.ax = f64(t, size);
+  t.ay = f64(t, size);
+  t.az = f64(t, size);
+  t.scratch.length = 0;
+  const u32 = (k: number): Uint32Array => (t.shared ? new Uint32Array(new SharedArrayBuffer(4 * k)) : new Uint32Array(k));
+  t.key = u32(size);
+  t.key2 = u32(size);
+  t.idx2 = i32(t, size);
+}
+
+export function growNodes(t: GravityTree, needed: number): void {
+  const cap = t.start.length;
+  if (needed <= cap) return;
+  let n = cap;
+  while (n < needed) n *= 2;
+  const nf = t.dims === 3 ? NF3 : NF2;
+  const node = f64(t, n * nf);
+  node.set(t.node);
+  t.node = node;
+  const box = f64(t, n * 6);
+  box.set(t.box);
+  t.box = box;
+  const s = i32(t, n);
+  s.set(t.start);
+  t.start = s;
+  const e = i32(t, n);
+  e.set(t.end);
+  t.end = e;
+  const k = i32(t, n);
+  k.set(t.skip);
+  t.skip = k;
+  const p = i32(t, n);
+  p.set(t.parent);
+  t.parent = p;
+  t.scratch.length = 0;
+}
