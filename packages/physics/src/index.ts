@@ -213,17 +213,11 @@ export { rotateFrom, rotateInPlace, rotateVector, rotateVectorInverse } from './
 export { Rng } from './math/rng.js';
 export type { BulkParticleOptions } from './particles/bulk.js';
 export { addParticles } from './particles/bulk.js';
-export type { EmittedParticleOptions, EmitterOptions, ParticleBirthHook, ParticleDeathHook, ParticleLook } from './particles/emitter.js';
+export type { ParticleLook } from './particles/emitter.js';
 export {
   addEmitter,
   burst,
-  CapacityPolicy,
-  EmitterShape,
   emitNow,
-  emitterSystem,
-  lifetimeSystem,
-  MAX_EMITTER_RATE,
-  maxSpawnsPerStep,
   onParticleBirth,
   onParticleDeath,
   particleLook,
@@ -232,6 +226,9 @@ export {
   setEmitterEnabled,
   setEmitterRate,
 } from './particles/emitter.js';
+export type { EmittedParticleOptions, EmitterOptions, ParticleBirthHook, ParticleDeathHook } from './particles/emitter-options.js';
+export { CapacityPolicy, EmitterShape, MAX_EMITTER_RATE, maxSpawnsPerStep } from './particles/emitter-options.js';
+export { emitterSystem, lifetimeSystem } from './particles/emitter-systems.js';
 export * from './scenes/index.js';
 export type { BoxOptions, ShapeOptions } from './shapes/api-2d.js';
 export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api-2d.js';

@@ -4,7 +4,7 @@ import { install3D } from '../collision/install-3d.js';
 import { installBalls } from '../collision/install-balls.js';
 import { barnesHutGravity } from '../forces/barnes-hut/tree.js';
 import { setBarnesHutGravity } from '../forces/gravity.js';
-import { installEmitters } from '../particles/emitter.js';
+import { installEmitters } from '../particles/emitter-systems.js';
 import { shareStores } from '../threads/shared-stores.js';
 import { externalWorldStates } from '../world/external-state.js';
 import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';

@@ -20,7 +20,7 @@ import { burnFuelSystem, thrustSystem } from '../forces/thrust.js';
 import { vortexSystem } from '../forces/vortex.js';
 import { integrateSystem } from '../integrators/integrate.js';
 import { sleepSystem, wakeSystem } from '../islands/sleep.js';
-import { emitterSystem, lifetimeSystem } from '../particles/emitter.js';
+import { emitterSystem, lifetimeSystem } from '../particles/emitter-systems.js';
 import { contactSolverSystem } from '../solver/contact-solver.js';
 import { PIPELINE_ORDER } from '../world/install.js';
 import type { System } from '../world/options.js';
