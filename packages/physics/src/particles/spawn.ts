@@ -1,11 +1,18 @@
+import { addComponent } from 'bitecs';
 import { DEFAULT_MATERIAL } from '../world/components.js';
+import { NonFiniteStateError } from '../world/errors.js';
+import { createSlot, currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { type Archetype, archetypes, bornSlot, prepareArchetype } from './archetype.js';
-import { nonFiniteSpawn, spawnThroughBitecs } from './birth-queue.js';
+import { type Archetype, archetypeFromEntity, archetypes, bornSlot, pendingArchetype, prepareArchetype } from './archetype.js';
+import { nextSlot } from './bulk.js';
 import { CapacityPolicy, EmitterShape } from './emitter-options.js';
 import { type ParticleBook, pushParticle, recycleOldest } from './particle-book.js';
 
-/** Drawing one particle from an emitter: where it starts (the emitter's shape), its heading, speed, lifetime and look, and its archetype. */
+/**
+ * One particle: drawn from its emitter (where it starts in the emitter's shape, its heading, speed,
+ * lifetime and look, its archetype) and spawned, in bulk through the archetype tables (spawnOne) or
+ * one by one through bitecs (spawnThroughBitecs).
+ */
 
 export const sample = new Float64Array(6);
 
@@ -258,4 +265,83 @@ export function spawnOne(
   const hooks = b.birthHooks;
   for (let h = 0; h < hooks.length; h++) hooks[h]!(world, e);
   return e;
+}
+
+/**
+ * The first particle of a kind: made through bitecs (observers write the defaults, allocate lazy
+ * stores and add dependent components), and its component set registered as the kind's archetype.
+ * Returns its slot; the caller writes position, velocity, lifetime and look.
+ */
+export function spawnThroughBitecs(world: PhysicsWorld, em: number): number {
+  const pending = pendingArchetype(archetypes(world), nextSlot(world));
+  const c = world.components;
+  const E = c.Emitter;
+  const e = createSlot(world, 'emitter');
+  addComponent(world, e, c.Position);
+  addComponent(world, e, c.Velocity);
+  addComponent(world, e, c.Lifetime);
+  addComponent(world, e, c.Particle);
+  const mass = E.mass[em]!,
+    ld = E.linearDrag[em]!,
+    qd = E.quadraticDrag[em]!,
+    gs = E.gravityScale[em]!,
+    r = E.radius[em]!;
+  if (mass > 0 || ld > 0 || qd > 0 || gs !== 1 || r > 0) {
+    addComponent(world, e, c.Mass);
+    const m = mass > 0 ? mass : 1;
+    c.Mass.value[e] = m;
+    c.Mass.inv[e] = 1 / m;
+    addComponent(world, e, c.Force);
+    if (ld > 0) {
+      addComponent(world, e, c.LinearDrag);
+      c.LinearDrag.k[e] = ld;
+    }
+    if (qd > 0) {
+      addComponent(world, e, c.QuadraticDrag);
+      c.QuadraticDrag.k[e] = qd;
+    }
+    if (gs !== 1) {
+      addComponent(world, e, c.GravityScale);
+      c.GravityScale.value[e] = gs;
+    }
+    if (r > 0) {
+      addComponent(world, e, c.Ball);
+      c.Ball.radius[e] = r;
+    }
+  }
+  archetypeFromEntity(world, archetypes(world), particleKind(world, em), e, pending);
+  return e;
+}
+
+/**
+ * Throws the NonFiniteStateError of a particle emitter `em` would spawn at a non-finite position or
+ * velocity (an emitter placed or moving near the largest double), naming the emitter.
+ */
+export function nonFiniteSpawn(
+  world: PhysicsWorld,
+  em: number,
+  px: number,
+  py: number,
+  pz: number,
+  vx: number,
+  vy: number,
+  vz: number,
+): never {
+  const values: Array<[string, number]> = [
+    ['Position.x', px],
+    ['Position.y', py],
+    ['Position.z', pz],
+    ['Velocity.x', vx],
+    ['Velocity.y', vy],
+    ['Velocity.z', vz],
+  ];
+  const [field, value] = values.find(([, v]) => !Number.isFinite(v))!;
+  const P = world.components.Position;
+  throw new NonFiniteStateError(
+    currentHandle(world, em),
+    field,
+    value,
+    'spawn',
+    `It is emitter ${currentHandle(world, em)} at (${P.x[em]}, ${P.y[em]}, ${P.z[em]}) m, and a particle it would spawn there has that ${field}; nothing was spawned.`,
+  );
 }
