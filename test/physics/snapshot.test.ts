@@ -284,7 +284,7 @@ describe('snapshot captures every piece of state', () => {
     // Scratch: rewritten before it is read in every step, so it carries nothing between steps.
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
     // world/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
-    // snapshot/snapshot.ts: which query lists the last snapshot found equal (a cache checked by versions).
+    // snapshot/ecs-capture.ts: which query lists the last snapshot found equal (a cache checked by versions).
     // solver/ball-prepare.ts: the threaded row preparation's shared copy of the spawn stamps (copied in full
     // before each use) and its kernel's argument list.
     // solver/stages-threads.ts: the threaded solver stages' kernel argument lists, parameters
@@ -295,7 +295,7 @@ describe('snapshot captures every piece of state', () => {
       'step/step.ts',
       'forces/gravity.ts',
       'world/fused-state.ts',
-      'snapshot/snapshot.ts',
+      'snapshot/ecs-capture.ts',
       'solver/ball-prepare.ts',
       'solver/stages-threads.ts',
       'collision/contact-events.ts',

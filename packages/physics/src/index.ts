@@ -246,10 +246,10 @@ export type { HeightFieldOptions, Mesh3D, TriangleMeshOptions } from './shapes/m
 export { addHeightField3D, addTriangleMesh3D, MAX_HEIGHT_FIELD_POINTS, meshesOf } from './shapes/mesh-3d.js';
 export type { Shape3DStore } from './shapes/store-3d.js';
 export { Shape3DKind, shapes3DOf } from './shapes/store-3d.js';
+export type { Encoded, SnapshotHeader, WorldSnapshot } from './snapshot/format.js';
 export { stateHash } from './snapshot/hash.js';
 export type { InputEvent, InputHandlers, InputRecorder, Replay, ReplayOptions, ReplayPlayer } from './snapshot/replay.js';
 export { createInputRecorder, createReplayPlayer, playReplay } from './snapshot/replay.js';
-export type { Encoded, SnapshotHeader, WorldSnapshot } from './snapshot/snapshot.js';
 /** Snapshots (save, load, rewind, rollback) and a state fingerprint for determinism checks. */
 export { restore, snapshot } from './snapshot/snapshot.js';
 export { CONTACT_LENGTH_UNIT, contactLength, MAX_AUTO_SUBSTEPS, solverSubstepsFor } from './solver/contact-scale.js';

@@ -1,7 +1,8 @@
 import { step } from '../step/step.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertOptions, describe } from '../world/validate.js';
-import { restore, snapshot, type WorldSnapshot } from './snapshot.js';
+import type { WorldSnapshot } from './format.js';
+import { restore, snapshot } from './snapshot.js';
 
 /**
  * The host's structured clone (Node >= 17, every browser and worker). Typed here because the physics
