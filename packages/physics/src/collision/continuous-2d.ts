@@ -1,8 +1,9 @@
 import { type ConvexGeometry, createGeometry } from '../shapes/geometry-2d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { BALL } from './manifolds-2d.js';
 import { collideShapes, createManifold } from './narrowphase/manifold-2d.js';
-import { BALL, colliderGeometry, shouldCollide } from './shapes-2d.js';
+import { colliderGeometry, shouldCollide } from './shapes-2d.js';
 import { BodyType } from './state.js';
 
 /**

@@ -270,6 +270,13 @@ function createEventList(n = 16): EventList {
 }
 
 /**
+ * Collider flags (ShapeScratch.flags).
+ * @category Collision
+ */
+export const MOVING = 1,
+  BALL = 2;
+
+/**
  * Per-step scratch of the shape broadphase (colliders: shape entities and ball bodies).
  * @category Collision
  */

@@ -6,8 +6,9 @@ import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE, type ShapeStore } from '../world/shape-store-2d.js';
+import { findPairs } from './broadphase/pairs-2d.js';
 import { pushEvent } from './events.js';
-import { growManifoldBuffer, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
+import { BALL, growManifoldBuffer, MOVING, type ShapeCollisionState, type ShapeScratch } from './manifolds-2d.js';
 import { collideHalfPlane, collideShapes, collideShapesAt, createManifold, type Manifold, PairPose } from './narrowphase/manifold-2d.js';
 import { BodyType } from './state.js';
 
@@ -252,158 +253,6 @@ function gatherColliders(world: PhysicsWorld, st: ShapeCollisionState): void {
  * 5 cm apart in a row do not become contacts; smaller shapes get proportionally less.
  */
 const SPECULATIVE_FRACTION = 0.04;
-
-/**
- * Collider flags (ShapeScratch.flags).
- * @category Collision
- */
-export const MOVING = 1,
-  BALL = 2;
-
-/** Colliders wider than this many times the mean box width skip the grid. */
-const OVERSIZED_FACTOR = 4;
-
-function hashCell(cx: number, cy: number): number {
-  return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663)) >>> 0;
-}
-
-/** Half neighbourhood of the lower-corner grid (see the module comment). */
-const HALF = [1, 0, 1, 1, 0, 1, -1, 1];
-
-/** Fills the candidate pairs of colliders whose fattened boxes overlap (before filtering). */
-function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
-  const n = sc.count;
-  sc.pairCount = 0;
-  if (n < 2 || !anyMoving) return;
-  const fl = sc.flags;
-  const minX = sc.minX,
-    minY = sc.minY,
-    maxX = sc.maxX,
-    maxY = sc.maxY;
-  let mean = 0;
-  for (let i = 0; i < n; i++) mean += Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
-  mean /= n;
-  const limit = OVERSIZED_FACTOR * mean;
-  let cell = 0;
-  for (let i = 0; i < n; i++) {
-    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
-    if (w <= limit && w > cell) cell = w;
-  }
-  const inv = 1 / cell;
-  let table = 16;
-  while (table < 2 * n) table *= 2;
-  if (sc.bucketStart.length < table + 1) sc.bucketStart = new Int32Array(table + 1);
-  const start = sc.bucketStart,
-    mask = table - 1;
-  start.fill(0, 0, table + 1);
-  const cellX = sc.cellX,
-    cellY = sc.cellY,
-    bucket = sc.bucket,
-    sorted = sc.sorted,
-    over = sc.oversized;
-  let overCount = 0;
-  for (let i = 0; i < n; i++) {
-    const w = Math.max(maxX[i]! - minX[i]!, maxY[i]! - minY[i]!);
-    if (w > limit) {
-      bucket[i] = -1;
-      over[overCount++] = i;
-      continue;
-    }
-    const cx = Math.floor(minX[i]! * inv),
-      cy = Math.floor(minY[i]! * inv);
-    cellX[i] = cx;
-    cellY[i] = cy;
-    const b = hashCell(cx, cy) & mask;
-    bucket[i] = b;
-    start[b + 1]!++;
-  }
-  for (let b = 0; b < table; b++) start[b + 1]! += start[b]!;
-  for (let i = 0; i < n; i++) {
-    const b = bucket[i]!;
-    if (b >= 0) sorted[start[b]!++] = i;
-  }
-  for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
-  start[0] = 0;
-  const small = n - overCount;
-
-  for (let p = 0; p < small; p++) {
-    const i = sorted[p]!;
-    const mi = fl[i]! & MOVING;
-    const cx = cellX[i]!,
-      cy = cellY[i]!;
-    const ax0 = minX[i]!,
-      ay0 = minY[i]!,
-      ax1 = maxX[i]!,
-      ay1 = maxY[i]!;
-    const own = bucket[i]!;
-    for (let q = p + 1, end = start[own + 1]!; q < end; q++) {
-      const j = sorted[q]!;
-      if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
-      if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
-    }
-    for (let k = 0; k < 8; k += 2) {
-      const nx = cx + HALF[k]!,
-        ny = cy + HALF[k + 1]!;
-      const bk = hashCell(nx, ny) & mask;
-      for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
-        const j = sorted[q]!;
-        if (cellX[j] !== nx || cellY[j] !== ny || (mi | (fl[j]! & MOVING)) === 0) continue;
-        if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
-      }
-    }
-  }
-  for (let a = 0; a < overCount; a++) {
-    const i = over[a]!;
-    const mi = fl[i]! & MOVING;
-    const ax0 = minX[i]!,
-      ay0 = minY[i]!,
-      ax1 = maxX[i]!,
-      ay1 = maxY[i]!;
-    for (let b2 = a + 1; b2 < overCount; b2++) {
-      const j = over[b2]!;
-      if ((mi | (fl[j]! & MOVING)) === 0) continue;
-      if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
-    }
-    // Ordinary boxes overlapping this one have their lower corner in [min - cell, max].
-    const cx0 = Math.floor((ax0 - cell) * inv),
-      cx1 = Math.floor(ax1 * inv);
-    const cy0 = Math.floor((ay0 - cell) * inv),
-      cy1 = Math.floor(ay1 * inv);
-    if ((cx1 - cx0 + 1) * (cy1 - cy0 + 1) > small) {
-      for (let p = 0; p < small; p++) {
-        const j = sorted[p]!;
-        if ((mi | (fl[j]! & MOVING)) === 0) continue;
-        if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
-      }
-      continue;
-    }
-    for (let cy = cy0; cy <= cy1; cy++) {
-      for (let cx = cx0; cx <= cx1; cx++) {
-        const bk = hashCell(cx, cy) & mask;
-        for (let q = start[bk]!, end = start[bk + 1]!; q < end; q++) {
-          const j = sorted[q]!;
-          if (cellX[j] !== cx || cellY[j] !== cy || (mi | (fl[j]! & MOVING)) === 0) continue;
-          if (minX[j]! <= ax1 && maxX[j]! >= ax0 && minY[j]! <= ay1 && maxY[j]! >= ay0) pushPair(sc, i, j);
-        }
-      }
-    }
-  }
-}
-
-function pushPair(sc: ShapeScratch, i: number, j: number): void {
-  const k = sc.pairCount;
-  if (k >= sc.pairI.length) {
-    const a = new Int32Array(k * 2),
-      b = new Int32Array(k * 2);
-    a.set(sc.pairI);
-    b.set(sc.pairJ);
-    sc.pairI = a;
-    sc.pairJ = b;
-  }
-  sc.pairI[k] = i;
-  sc.pairJ[k] = j;
-  sc.pairCount = k + 1;
-}
 
 /**
  * Whether the filters of shapes a and b (ball bodies count as category 1, mask all, group 0) let them collide.

@@ -3,7 +3,7 @@ import type { KernelArray } from '../../threads/kernel-types.js';
 /** The 2D dual-tree walk and downward pass of the Barnes-Hut evaluation (see walk.ts), a thread kernel. */
 
 /**
- * Dual-tree walk and downward pass, 2D (order 4); see the file's header and forces/barnes-hut/tree.ts.
+ * Dual-tree walk and downward pass, 2D (order 4); see walk.ts's header and forces/barnes-hut/tree.ts.
  * @category Forces
  */
 export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {

@@ -3,7 +3,7 @@ import type { KernelArray } from '../../threads/kernel-types.js';
 /** The 3D dual-tree walk and downward pass of the Barnes-Hut evaluation (see walk.ts), a thread kernel. */
 
 /**
- * Dual-tree walk and downward pass, 3D (order 3); see the file's header and forces/barnes-hut/tree.ts.
+ * Dual-tree walk and downward pass, 3D (order 3); see walk.ts's header and forces/barnes-hut/tree.ts.
  * @category Forces
  */
 export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {

@@ -15,7 +15,7 @@
  * The downward pass of a part visits only the nodes that hold some of its slots and writes the
  * fields of its own slots to the output arrays.
  *
- * Arrays `A` (all indexed as in forces/barnes-hut/tree.ts's GravityTree):
+ * Arrays `A` (all indexed as in forces/barnes-hut/tree-store.ts's GravityTree):
  *   0 x, 1 y, 2 z, 3 m (bodies in tree order; z unused in 2D), 4 node (moments, stride 12),
  *   5 start, 6 end, 7 skip (Int32), 8 ax, 9 ay, 10 az (output field, m/s^2, tree order; az = 0 in 2D),
  *   11 cut (Int32: part p holds slots cut[p] .. cut[p + 1] - 1), 12 info (Float64, stride 4 a part:
