@@ -376,8 +376,9 @@ export interface BoundaryOptions {
 }
 
 /**
- * Encloses the world in an axis-aligned box: balls collide with its inside faces (walls, floor and
- * ceiling; in 3D also front and back). Replaces any previous boundary.
+ * Encloses the world in an axis-aligned box: balls and 2D shapes collide with its inside faces (walls,
+ * floor and ceiling; in 3D also front and back), and 2D cloth points are kept inside it (inelastically,
+ * with its friction: see cloth/solver.ts). Replaces any previous boundary.
  * @throws TypeError | RangeError on missing, unknown or null options, bad corners (max must exceed min on
  *   every axis) or material values.
  * @category Bodies

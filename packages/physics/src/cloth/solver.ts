@@ -1,4 +1,5 @@
 import { removeEntity } from 'bitecs';
+import type { Boundary } from '../collision/state.js';
 import type { ClothState } from '../world/cloth-state.js';
 import type { Components } from '../world/components.js';
 import { currentHandle, isAlive, slotOf } from '../world/handles.js';
@@ -28,6 +29,9 @@ import { query } from '../world/query.js';
  *    first-order right: 2.5% off at 5% strain.)
  *    Before the links, each soft pin (pinClothPoint with options) pulls its point toward its target: for
  *    C = |x - target|, dlambda = min(C / (w + alpha~), maxForce h_s^2), x moves w dlambda toward it;
+ *    After the links, with the world's boundary box on (setBoundary), each point past a wall is put
+ *    back on it and its move along the wall in the substep is cut by the box's friction (see
+ *    `projectBoundary`);
  * 3. positions and velocities written back;
  * 4. links stretched past their `tearStretch` tear: removed, each reported in `world.joints.breaks`.
  *
@@ -69,6 +73,7 @@ export function clothSystem(world: PhysicsWorld): void {
     cl.preparedStep = hs;
   }
   const pins = cl.softPinCount;
+  const box = world.collision.boundary;
   for (let sub = 0; sub < S; sub++) {
     for (let i = 0; i < np; i += CHUNK) predictPoints(cl, sub > 0, i, Math.min(np, i + CHUNK));
     if (pins > 0) projectSoftPins(world, cl);
@@ -76,6 +81,7 @@ export function clothSystem(world: PhysicsWorld): void {
     for (let l = 0; l < rigid; l += CHUNK) projectLinks(cl, l, Math.min(rigid, l + CHUNK));
     if (sub < S - 1) for (let l = rigid; l < n; l += CHUNK) projectLinks(cl, l, Math.min(n, l + CHUNK));
     else for (let l = rigid; l < n; l += CHUNK) projectLinksRecording(cl, l, Math.min(n, l + CHUNK));
+    if (box.enabled) for (let i = 0; i < np; i += CHUNK) projectBoundary(cl, box, i, Math.min(np, i + CHUNK));
   }
   for (let i = 0; i < np; i += CHUNK) scatterPoints(cl, c, i, Math.min(np, i + CHUNK));
   // Strains from squared lengths: q = (L / r)^2, so strain = sqrt(q) - 1 and a link tears when q > (1 + tear)^2.
@@ -227,6 +233,54 @@ function projectSoftPins(world: PhysicsWorld, cl: ClothState): void {
     xb[o + 1] = xb[o + 1]! - s * dy;
     F[i] = dl * ihs2;
   }
+}
+
+/**
+ * Points [from, to) against the world's boundary box (setBoundary), after a substep's links: a moving
+ * point past a wall is put back on it, which takes the normal part out of its velocity (the velocity is
+ * the substep's move over h_s: the box's restitution does not apply to cloth), and its move along that
+ * wall in the substep is cut by friction against the depth d it was pushed back: cancelled when
+ * under staticFriction d, else shortened by friction d (position-based friction: Macklin, Mueller,
+ * Chentanez and Kim, "Unified Particle Physics for Real-Time Applications", SIGGRAPH 2014, sec. 6.1).
+ */
+function projectBoundary(cl: ClothState, box: Boundary, from: number, to: number): void {
+  const xb = cl.buffer,
+    Q = 3 * cl.pointCount;
+  const x0 = box.min[0]!,
+    y0 = box.min[1]!,
+    x1 = box.max[0]!,
+    y1 = box.max[1]!,
+    mu = box.friction,
+    mus = box.staticFriction;
+  for (let i = from; i < to; i++) {
+    const o = 3 * i;
+    if (xb[o + 2] === 0) continue;
+    let x = xb[o]!,
+      y = xb[o + 1]!;
+    if (x >= x0 && x <= x1 && y >= y0 && y <= y1) continue;
+    const px = xb[Q + 2 * i]!,
+      py = xb[Q + 2 * i + 1]!;
+    if (y < y0 || y > y1) {
+      const wall = y < y0 ? y0 : y1;
+      x = alongWall(x, px, Math.abs(wall - y), mu, mus);
+      y = wall;
+    }
+    if (x < x0 || x > x1) {
+      const wall = x < x0 ? x0 : x1;
+      y = alongWall(y, py, Math.abs(wall - x), mu, mus);
+      x = wall;
+    }
+    xb[o] = x;
+    xb[o + 1] = y;
+  }
+}
+
+/** A coordinate along a wall after friction: `at` moved from `from` this substep, pushed back from the wall by `depth` (see projectBoundary). */
+function alongWall(at: number, from: number, depth: number, mu: number, mus: number): number {
+  const move = at - from,
+    size = Math.abs(move);
+  if (size <= mus * depth) return from;
+  return at - (Math.min(size, mu * depth) * move) / size;
 }
 
 /** One Gauss-Seidel pass over the packed links [from, to). */
