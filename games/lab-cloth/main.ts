@@ -2,7 +2,8 @@
  * Lab: cloth (Ramtal and Dobre ch. 13). A grid of point masses joined by structural, shear and
  * bending links (createCloth; the XPBD cloth solver in small steps), pinned along its top edge, in
  * the world's wind with turbulence (drag on each point against the wind). Drawn as a textured mesh
- * (ClothLayer); torn cells disappear.
+ * (ClothLayer); torn cells disappear, and torn pieces fall to the floor of the room (the world's
+ * boundary box), where the wind drives them to the right wall.
  *
  * Input: press on the cloth and drag: the hand grips the patch under the pointer softly (scene.ts'
  * ClothGrab: a spring of bounded force on each point within 0.35 m), so a gentle pull stretches and
@@ -17,7 +18,7 @@ import { createPlot } from '@bitphysics/game-kit/plot';
 import { type Cloth, type PhysicsWorld, step as physicsStep, query, removeBody, slotOf } from '@bitphysics/physics';
 import { ClothLayer, type WorldRect } from '@bitphysics/render-pixi';
 import { Graphics } from 'pixi.js';
-import { applyWind as applySceneWind, ClothGrab, createClothScene, gripFor, SIDE } from './scene';
+import { applyWind as applySceneWind, ClothGrab, createClothScene, gripFor, ROOM, SIDE } from './scene';
 
 const USAGE = 'Accepted: size 4-64 points a side; wind 0-20 m/s; tear 0.05-2 (strain).';
 const url = readUrlParams(
@@ -32,7 +33,7 @@ const url = readUrlParams(
 );
 const params = { ...url, turbulence: 1.5, substeps: 12, reset: () => shell.reset() };
 
-const view: WorldRect = { minX: -1, minY: -1.5, maxX: SIDE + 3, maxY: SIDE + 0.6 };
+const view: WorldRect = { minX: ROOM.minX, minY: ROOM.minY - 0.3, maxX: ROOM.maxX, maxY: SIDE + 0.6 };
 let cloth: Cloth;
 /** The hand's grip while the pointer holds the cloth. */
 let grab: ClothGrab | null = null;
@@ -171,6 +172,24 @@ function drawHand(world: PhysicsWorld): void {
   hand.circle(hx, hy, 9).stroke({ width: 2, color: 0xffd166, alpha: 0.9 });
 }
 
+/** The floor the torn pieces land on (the boundary box's, scene.ts ROOM) and the rod the sheet is pinned to, drawn below the sheet. */
+const floor = new Graphics({ label: 'floor' });
+function drawFloor(): void {
+  const cam = renderer.camera;
+  const x0 = cam.toScreenX(ROOM.minX - 50),
+    x1 = cam.toScreenX(ROOM.maxX + 50),
+    top = cam.toScreenY(ROOM.minY),
+    bottom = cam.toScreenY(ROOM.minY - 50);
+  floor.clear();
+  floor.rect(x0, top, x1 - x0, bottom - top).fill({ color: 0x2b2f36 });
+  floor.moveTo(x0, top).lineTo(x1, top).stroke({ width: 2, color: 0x5c6370 });
+  const rodY = cam.toScreenY(SIDE);
+  floor
+    .moveTo(cam.toScreenX(-0.25), rodY)
+    .lineTo(cam.toScreenX(SIDE + 0.25), rodY)
+    .stroke({ width: 6, color: 0x8a8f98, cap: 'round' });
+}
+
 let layer: ClothLayer | null = null;
 let layerWorld: PhysicsWorld | null = null;
 function draw(alpha: number, world: PhysicsWorld): void {
@@ -178,10 +197,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
     layer?.destroy();
     layer = new ClothLayer(world, cloth);
     renderer.root.addChildAt(layer.mesh, 0);
+    if (!floor.parent) renderer.root.addChildAt(floor, 0);
     if (!hand.parent) renderer.root.addChild(hand);
     layerWorld = world;
   }
   layer!.update(renderer.camera, alpha);
+  drawFloor();
   drawHand(world);
   readout.set(0, String(cloth.points.length));
   readout.set(1, String(query(world, [world.components.ClothLink]).length));

@@ -18,6 +18,7 @@ import {
   isAlive,
   type PhysicsWorld,
   pinClothPoint,
+  setBoundary,
   setWind,
   slotOf,
 } from '@bitphysics/physics';
@@ -26,6 +27,12 @@ import {
 export const SIDE = 4;
 /** Total mass of the sheet, kg. */
 export const CLOTH_MASS = 0.6;
+/**
+ * The room the sheet hangs in, m: floor, walls and ceiling of the world's boundary box, which keeps the
+ * cloth's points inside (a torn piece lands on the floor and the wind piles it against the right wall).
+ * The floor is 1.3 m below the hem, which the default wind and the sheet's own stretch keep above it.
+ */
+export const ROOM = Object.freeze({ minX: -1, minY: -1.3, maxX: SIDE + 3, maxY: SIDE + 10 });
 
 /** The lab's settings that shape its world. */
 export interface ClothSceneParams {
@@ -46,7 +53,7 @@ export function applyWind(world: PhysicsWorld, p: Pick<ClothSceneParams, 'wind' 
   setWind(world, { velocity: [p.wind, 0], turbulence: { intensity: p.turbulence, lengthScale: 1.5, timeScale: 0.8, seed: 3 } });
 }
 
-/** Builds the lab's world: a SIDE x SIDE sheet of `size` x `size` points pinned along its top edge at y = SIDE. */
+/** Builds the lab's world: a SIDE x SIDE sheet of `size` x `size` points pinned along its top edge at y = SIDE, in the ROOM box. */
 export function createClothScene(p: ClothSceneParams): { world: PhysicsWorld; cloth: Cloth } {
   const n = p.size;
   const world = createPhysicsWorld({ gravity: [0, -9.81], capacity: 7 * n * n + 64 });
@@ -63,6 +70,7 @@ export function createClothScene(p: ClothSceneParams): { world: PhysicsWorld; cl
     drag: 20 / (n * n),
   });
   world.cloth.substeps = p.substeps;
+  setBoundary(world, { min: [ROOM.minX, ROOM.minY], max: [ROOM.maxX, ROOM.maxY], friction: 0.8 });
   applyWind(world, p);
   return { world, cloth };
 }

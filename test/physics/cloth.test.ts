@@ -142,75 +142,6 @@ describe('soft pins (pinClothPoint with options)', () => {
     for (let i = 0; i < 4; i++) expect(world.cloth.softPinForce[i]).toBeCloseTo(F, 9);
   });
 
-  test('a sheet dropped into the boundary box lands on its floor and stays inside every wall', () => {
-    // A free 6 x 6 sheet falls 2 m onto the floor of the box (setBoundary) and drifts toward a wall.
-    // Every point must stay inside the box at every step (to rounding, 1e-12 m), and after 5 s (it hits
-    // the wall and tumbles; measured at rest from 4 s) the sheet rests on the floor: its lowest points on it (1e-9 m: the floor is where they are put back) and no
-    // point faster than 1 cm/s (its fall energy gone into the inelastic landing and the floor's friction).
-    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 256 });
-    setBoundary(world, { min: [-2, 0], max: [2, 6], friction: 0.6 });
-    const cloth = createCloth(world, { columns: 6, rows: 6, width: 1, height: 1, origin: [0.5, 3], pinned: 'none', mass: 0.5, drag: 0 });
-    const P = world.components.Position,
-      V = world.components.Velocity;
-    for (const h of cloth.points) V.x[slotOf(h)] = 3;
-    let lowest = Infinity;
-    for (let i = 0; i < 300; i++) {
-      step(world);
-      for (const h of cloth.points) {
-        const e = slotOf(h);
-        expect(P.y[e]!).toBeGreaterThanOrEqual(-1e-12);
-        expect(P.x[e]!).toBeLessThanOrEqual(2 + 1e-12);
-        expect(P.x[e]!).toBeGreaterThanOrEqual(-2 - 1e-12);
-      }
-    }
-    for (const h of cloth.points) {
-      const e = slotOf(h);
-      lowest = Math.min(lowest, P.y[e]!);
-      expect(Math.hypot(V.x[e]!, V.y[e]!)).toBeLessThan(0.01);
-    }
-    expect(lowest).toBeLessThan(1e-9);
-  });
-
-  test("a sheet sliding on the box's floor stops after v^2 / (2 mu g), and slides on without friction", () => {
-    // Coulomb friction on the whole sheet: from v0 a body decelerates at mu g and stops after
-    // v0^2 / (2 mu g). A 5 x 2 sheet stands on the floor (its lower row on it); position-based friction
-    // acts on the lower row by the depth each substep pushes it back, which carries the upper row's
-    // weight through the links. Measured 0.998, 0.996 and 0.990 of v0^2 / (2 mu g) at mu 0.2, 0.5 and 1;
-    // tolerance 3%. Without friction the sheet keeps its speed (0.1%).
-    const g = 9.81,
-      v0 = 2,
-      mu = 0.5;
-    const slide = (friction: number) => {
-      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -g], capacity: 64 });
-      setBoundary(world, { min: [-1, 0], max: [100, 10], friction });
-      const cloth = createCloth(world, {
-        columns: 5,
-        rows: 2,
-        width: 0.4,
-        height: 0.1,
-        origin: [0, 0.1],
-        pinned: 'none',
-        mass: 1,
-        drag: 0,
-      });
-      const P = world.components.Position,
-        V = world.components.Velocity;
-      const centre = () => cloth.points.reduce((sum, h) => sum + P.x[slotOf(h)]!, 0) / cloth.points.length;
-      for (let i = 0; i < 30; i++) step(world); // settle on the floor
-      const x0 = centre();
-      for (const h of cloth.points) V.x[slotOf(h)] = v0;
-      for (let i = 0; i < 90; i++) step(world);
-      return { distance: centre() - x0, speed: cloth.points.reduce((sum, h) => sum + V.x[slotOf(h)]!, 0) / cloth.points.length };
-    };
-    const rough = slide(mu);
-    const expected = (v0 * v0) / (2 * mu * g);
-    expect(Math.abs(rough.distance / expected - 1)).toBeLessThan(0.03);
-    expect(Math.abs(rough.speed)).toBeLessThan(0.01);
-    const smooth = slide(0);
-    expect(Math.abs(smooth.speed / v0 - 1)).toBeLessThan(1e-3);
-    expect(smooth.distance).toBeGreaterThan(0.99 * v0 * 1.5);
-  });
-
   test('hard and soft pins replace each other, null lets go of both, and bad options throw', () => {
     const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 64 });
     const cloth = createCloth(world, { columns: 3, rows: 3, width: 1, height: 1, origin: [0, 2], mass: 0.9 });
@@ -303,5 +234,76 @@ describe("cosine (the wind's turbulence)", () => {
       expect(Math.abs(out[0]! - u)).toBeLessThan(1e-10);
       expect(Math.abs(out[1]! - v)).toBeLessThan(1e-10);
     }
+  });
+});
+
+describe('cloth in the boundary box (setBoundary)', () => {
+  test('a sheet dropped into the boundary box lands on its floor and stays inside every wall', () => {
+    // A free 6 x 6 sheet falls 2 m onto the floor of the box (setBoundary) and drifts toward a wall.
+    // Every point must stay inside the box at every step (to rounding, 1e-12 m), and after 5 s (it hits
+    // the wall and tumbles; measured at rest from 4 s) the sheet rests on the floor: its lowest points on it (1e-9 m: the floor is where they are put back) and no
+    // point faster than 1 cm/s (its fall energy gone into the inelastic landing and the floor's friction).
+    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 256 });
+    setBoundary(world, { min: [-2, 0], max: [2, 6], friction: 0.6 });
+    const cloth = createCloth(world, { columns: 6, rows: 6, width: 1, height: 1, origin: [0.5, 3], pinned: 'none', mass: 0.5, drag: 0 });
+    const P = world.components.Position,
+      V = world.components.Velocity;
+    for (const h of cloth.points) V.x[slotOf(h)] = 3;
+    let lowest = Infinity;
+    for (let i = 0; i < 300; i++) {
+      step(world);
+      for (const h of cloth.points) {
+        const e = slotOf(h);
+        expect(P.y[e]!).toBeGreaterThanOrEqual(-1e-12);
+        expect(P.x[e]!).toBeLessThanOrEqual(2 + 1e-12);
+        expect(P.x[e]!).toBeGreaterThanOrEqual(-2 - 1e-12);
+      }
+    }
+    for (const h of cloth.points) {
+      const e = slotOf(h);
+      lowest = Math.min(lowest, P.y[e]!);
+      expect(Math.hypot(V.x[e]!, V.y[e]!)).toBeLessThan(0.01);
+    }
+    expect(lowest).toBeLessThan(1e-9);
+  });
+
+  test("a sheet sliding on the box's floor stops after v^2 / (2 mu g), and slides on without friction", () => {
+    // Coulomb friction on the whole sheet: from v0 a body decelerates at mu g and stops after
+    // v0^2 / (2 mu g). A 5 x 2 sheet stands on the floor (its lower row on it); position-based friction
+    // acts on the lower row by the depth each substep pushes it back, which carries the upper row's
+    // weight through the links. Measured 0.998, 0.996 and 0.990 of v0^2 / (2 mu g) at mu 0.2, 0.5 and 1;
+    // tolerance 3%. Without friction the sheet keeps its speed (0.1%).
+    const g = 9.81,
+      v0 = 2,
+      mu = 0.5;
+    const slide = (friction: number) => {
+      const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -g], capacity: 64 });
+      setBoundary(world, { min: [-1, 0], max: [100, 10], friction });
+      const cloth = createCloth(world, {
+        columns: 5,
+        rows: 2,
+        width: 0.4,
+        height: 0.1,
+        origin: [0, 0.1],
+        pinned: 'none',
+        mass: 1,
+        drag: 0,
+      });
+      const P = world.components.Position,
+        V = world.components.Velocity;
+      const centre = () => cloth.points.reduce((sum, h) => sum + P.x[slotOf(h)]!, 0) / cloth.points.length;
+      for (let i = 0; i < 30; i++) step(world); // settle on the floor
+      const x0 = centre();
+      for (const h of cloth.points) V.x[slotOf(h)] = v0;
+      for (let i = 0; i < 90; i++) step(world);
+      return { distance: centre() - x0, speed: cloth.points.reduce((sum, h) => sum + V.x[slotOf(h)]!, 0) / cloth.points.length };
+    };
+    const rough = slide(mu);
+    const expected = (v0 * v0) / (2 * mu * g);
+    expect(Math.abs(rough.distance / expected - 1)).toBeLessThan(0.03);
+    expect(Math.abs(rough.speed)).toBeLessThan(0.01);
+    const smooth = slide(0);
+    expect(Math.abs(smooth.speed / v0 - 1)).toBeLessThan(1e-3);
+    expect(smooth.distance).toBeGreaterThan(0.99 * v0 * 1.5);
   });
 });
