@@ -2,6 +2,7 @@ import {
   createCloth,
   createPhysicsWorld,
   pinClothPoint,
+  removeBody,
   restore,
   setBoundary,
   setTimeStep,
@@ -305,5 +306,35 @@ describe('cloth in the boundary box (setBoundary)', () => {
     const smooth = slide(0);
     expect(Math.abs(smooth.speed / v0 - 1)).toBeLessThan(1e-3);
     expect(smooth.distance).toBeGreaterThan(0.99 * v0 * 1.5);
+  });
+
+  test('a point that lost every link stays a cloth point: the box holds it too', () => {
+    // Torn free (here: its links removed), a point has no link left to pack it by; it must still be
+    // moved by the cloth solver, or nothing keeps it in the box: thrown at 50 m/s into a wall, it would
+    // leave the world (it did: 100 m out in 2 s). Every point inside the box to rounding, 1e-12 m.
+    const world = createPhysicsWorld({ dimensions: 2, gravity: [0, -9.81], capacity: 64 });
+    setBoundary(world, { min: [-2, 0], max: [2, 6], friction: 0.6 });
+    const cloth = createCloth(world, { columns: 3, rows: 3, width: 1, height: 1, origin: [-0.5, 3], pinned: 'none', mass: 0.9, drag: 0 });
+    step(world);
+    const L = world.components.ClothLink;
+    const corner = slotOf(cloth.points[0]!);
+    for (const h of cloth.links) {
+      const e = slotOf(h);
+      if (L.a[e] === corner || L.b[e] === corner) removeBody(world, h);
+    }
+    const P = world.components.Position,
+      V = world.components.Velocity;
+    V.x[corner] = 50;
+    V.y[corner] = 20;
+    for (let i = 0; i < 120; i++) {
+      step(world);
+      for (const h of cloth.points) {
+        const e = slotOf(h);
+        expect(P.x[e]!).toBeLessThanOrEqual(2 + 1e-12);
+        expect(P.x[e]!).toBeGreaterThanOrEqual(-2 - 1e-12);
+        expect(P.y[e]!).toBeGreaterThanOrEqual(-1e-12);
+        expect(P.y[e]!).toBeLessThanOrEqual(6 + 1e-12);
+      }
+    }
   });
 });

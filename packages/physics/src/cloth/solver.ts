@@ -468,13 +468,19 @@ function pack(world: PhysicsWorld): void {
     const t1 = 1 + L.tearStretch[e]!;
     if (t1 * t1 < tearQ) tearQ = t1 * t1;
   }
-  colourOrder(cl, 0, front, points.length);
-  colourOrder(cl, front, n, points.length);
+  // Points that lost every link (torn free, or their links removed) stay cloth points while they live:
+  // the solver still moves them, so the boundary box holds them like the rest of the sheet.
+  const linked = points.length;
+  const old = cl.pointHandles;
+  for (let i = 0; i < old.length; i++) if (isAlive(world, old[i]!)) index(slotOf(old[i]!));
+  colourOrder(cl, 0, front, linked);
+  colourOrder(cl, front, n, linked);
   cl.rigidCount = front;
   cl.tearQ = tearQ;
   cl.count = n;
   cl.points = Int32Array.from(points);
   cl.pointCount = points.length;
+  cl.pointHandles = Float64Array.from(points, (e) => currentHandle(world, e));
   if (cl.buffer.length < 7 * points.length) cl.buffer = new Float64Array(7 * points.length);
   cl.built = cl.version;
 }

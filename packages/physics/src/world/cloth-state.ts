@@ -19,9 +19,14 @@ export interface ClothState {
   rest: Float64Array;
   compliance: Float64Array;
   tear: Float64Array;
-  /** Distinct points of the links (entity slots; the moving ones get their velocities from their moves). */
+  /**
+   * Distinct points of the links, then the points that lost every link since they were packed (entity
+   * slots; the moving ones get their velocities from their moves).
+   */
   pointCount: number;
   points: Int32Array;
+  /** Generational handles of `points` (see world/handles.ts), so a point that lost every link stays a cloth point while it lives. */
+  pointHandles: Float64Array;
   /** Per point, in sections of the point count n: x, y (m) and inverse mass (1/kg), 3 a point, at [0, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n). */
   buffer: Float64Array;
   /** Per link (2 each): r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
@@ -77,6 +82,7 @@ export function createClothState(): ClothState {
     tear: new Float64Array(0),
     pointCount: 0,
     points: new Int32Array(0),
+    pointHandles: new Float64Array(0),
     lambda: new Float64Array(0),
     seen: new Uint32Array(0),
     seenStamp: 0,
