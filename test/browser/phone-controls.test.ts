@@ -207,7 +207,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('catapult: a drag from the cup throws; the Next level button goes on when the level is over', async () => {
+  it('catapult: a drag from the cup throws; the next-level (or try-again) button goes on when the level is over', async () => {
     const g = await h.openGame('catapult', PHONE);
     // The camera opens on the castle and pans back to the catapult: aim once it is at rest.
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
@@ -234,10 +234,14 @@ describe('phone controls', () => {
       while (game.shotsLeft() > 0) game.fire(-2, -1);
       game.advance(260);
     });
-    const next = g.page.getByRole('button', { name: 'Level 2 ▶' });
+    // The button reads 'Level 2 ▶' when the shots brought down half the castle and 'Try again ↺' when
+    // not: the first shot is a real touch drag, whose throw depends on the frame timing.
+    const next = g.page.getByRole('button', { name: /^(Level 2 ▶|Try again ↺)$/ });
     await next.waitFor({ state: 'visible', timeout: 5000 });
+    const cleared = (await next.textContent())?.startsWith('Level 2') === true;
     await next.tap();
-    await g.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
+    if (cleared) await g.waitFor(() => (window.game as unknown as { params: { level: number } }).params.level === 2, null);
+    else await g.waitFor(() => (window.game as unknown as { shotsLeft(): number }).shotsLeft() === 3, null);
     expect(g.errors).toEqual([]);
     await g.close();
   });
