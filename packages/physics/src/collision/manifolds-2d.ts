@@ -487,6 +487,18 @@ export function findPrevious(st: ShapeCollisionState, a: number, b: number): num
  * empty (count 0) but keeps the rows of the step before until refilled (`lastCount` of them).
  * @category Collision
  */
+/**
+ * A zeroed open-addressing table of at least `n` slots (a power of two, at least 16). Its own function:
+ * code that runs only in a world's first steps, before V8 records type feedback, is compiled as a
+ * deoptimisation, and inside rotateManifolds it would throw the whole function back to the
+ * interpreter in a later world's first step.
+ */
+function slotTable(n: number): Int32Array {
+  let size = 16;
+  while (size < n) size *= 2;
+  return new Int32Array(size);
+}
+
 export function rotateManifolds(st: ShapeCollisionState): void {
   const cur = st.manifolds;
   st.manifolds = st.previous;
@@ -494,14 +506,9 @@ export function rotateManifolds(st: ShapeCollisionState): void {
   st.manifolds.count = 0;
   st.previous = cur;
   const n = cur.count;
-  let size = st.slots.length;
-  if (size < 2 * n || size === 0) {
-    size = 16;
-    while (size < 2 * n) size *= 2;
-    st.slots = new Int32Array(size);
-  } else st.slots.fill(0);
-  const mask = size - 1,
-    slots = st.slots;
+  // The table's growth runs only in a world's first steps: kept out of this function (see slotTable).
+  const slots = st.slots.length >= 2 * n && st.slots.length > 0 ? st.slots.fill(0) : (st.slots = slotTable(2 * n));
+  const mask = slots.length - 1;
   for (let i = 0; i < n; i++) {
     let s = pairHash(cur.shapeA[i]!, cur.shapeB[i]!) & mask;
     while (slots[s] !== 0) s = (s + 1) & mask;

@@ -370,7 +370,7 @@ export function createCollisionState(
       anyAsleep: false,
     },
     shapes: createShapeCollisionState(),
-    stats: { pairs: 0, contacts: 0, maxOverlap: 0, sleeping: 0 },
+    stats: new CollisionStats(),
   };
   // The ball contacts' buffer and the warm-start cache's rows trade places every step
   // (collision/contacts.ts swapWarmStartRows): traded twice here so V8 does not treat the fields as
@@ -410,4 +410,16 @@ export function allocateCollisionScratch(cs: CollisionState, capacity: number): 
   sl.parent = make(sl.parent);
   sl.islandRest = make(sl.islandRest);
   sl.supported = make(sl.supported);
+}
+
+/**
+ * The collide stage's statistics (CollisionState.stats), a class so that every world's object has one
+ * map: a literal made again in a later world can get another, which makes V8 drop the optimised code
+ * compiled against the field.
+ */
+class CollisionStats {
+  pairs = 0;
+  contacts = 0;
+  maxOverlap = 0;
+  sleeping = 0;
 }

@@ -59,6 +59,23 @@ function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number)
 }
 
 /**
+ * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). Growth runs
+ * only in a world's first steps, before V8 records type feedback: inside the callers' loops it would
+ * be compiled as a deoptimisation that throws the whole loop back to the interpreter in a later world.
+ */
+function withRoom(list: Int32Array, n: number): Int32Array {
+  if (list.length >= n) return list;
+  const grown = new Int32Array(Math.max(n, 2 * list.length));
+  grown.set(list);
+  return grown;
+}
+
+/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length); see withRoom. */
+function atLeast(a: Float64Array, n: number): Float64Array {
+  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
+}
+
+/**
  * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
  * started, same stamp), writes the rows' indices, and returns the new solver body count.
  * @category Collision
@@ -72,7 +89,8 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
     index = cs.solverIndex,
     stamp = cs.solverStamp,
     type = cs.bodyType;
-  let list = cs.solverBodies;
+  // Room for both bodies of every row, made before the loop (see withRoom).
+  const list = withRoom(cs.solverBodies, count + 2 * n);
   const A = buf.bodyA,
     B = buf.bodyB,
     IA = buf.ia,
@@ -85,11 +103,6 @@ export function gatherManifoldBodies(world: PhysicsWorld, count: number): number
       if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
         if (mark[e] !== stamp) {
           mark[e] = stamp;
-          if (count >= list.length) {
-            const l = new Int32Array(list.length * 2);
-            l.set(list);
-            list = l;
-          }
           index[e] = count;
           list[count++] = e;
         }
@@ -113,7 +126,7 @@ export function prepareManifolds(world: PhysicsWorld): void {
     buf = st.manifolds;
   const n = buf.count;
   const count = cs.solverBodyCount;
-  if (st.angleBase.length < count) st.angleBase = new Float64Array(Math.max(count, 2 * st.angleBase.length));
+  st.angleBase = atLeast(st.angleBase, count);
   const ex = cs.bodyExtra,
     base = st.angleBase;
   for (let k = 1; k < count; k++) base[k] = ex[k * 6 + 5]!;
