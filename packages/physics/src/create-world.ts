@@ -212,6 +212,16 @@ function allocatePreviousPosition(world: PhysicsWorld): void {
  * bitecs leaves old data behind), and makes every force-law component bring the Force accumulator.
  */
 function installDefaults(world: PhysicsWorld): void {
+  // In this order: a lazily allocated store gets its arrays before any other observer writes defaults.
+  allocateOnAdd(world);
+  resetMotionOnAdd(world);
+  resetRigidBodyOnAdd(world);
+  resetForceLawsOnAdd(world);
+  completeBodiesOnAdd(world);
+}
+
+/** installDefaults, first: a lazily allocated store (and a body's collision scratch) gets its arrays when its component is first added. */
+function allocateOnAdd(world: PhysicsWorld): void {
   const c = world.components;
   // First: lazily allocated stores get their arrays before any other observer writes defaults.
   // The check reads one array of the component's own store: empty until its group is allocated (and
@@ -229,6 +239,11 @@ function installDefaults(world: PhysicsWorld): void {
       }
     });
   }
+}
+
+/** installDefaults: position, motion, mass, ball, material and segment fields reset when their components are added. */
+function resetMotionOnAdd(world: PhysicsWorld): void {
+  const c = world.components;
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
     s.x[eid] = 0;
     s.y[eid] = 0;
@@ -285,6 +300,11 @@ function installDefaults(world: PhysicsWorld): void {
     s.bz[eid] = 0;
     s.radius[eid] = 0;
   });
+}
+
+/** installDefaults: angle, orientation, inertia, angular damping and plane fields reset when added (the inertia tensor also when removed). */
+function resetRigidBodyOnAdd(world: PhysicsWorld): void {
+  const c = world.components;
   observe(world, onAdd(c.Angle), (eid: number) => {
     c.Angle.value[eid] = 0;
   });
@@ -330,6 +350,11 @@ function installDefaults(world: PhysicsWorld): void {
     c.Plane.nz[eid] = 0;
     c.Plane.d[eid] = 0;
   });
+}
+
+/** installDefaults: every force law's fields reset to their documented defaults when its component is added. */
+function resetForceLawsOnAdd(world: PhysicsWorld): void {
+  const c = world.components;
   observe(world, onAdd(c.LinearDrag), (eid: number) => {
     c.LinearDrag.k[eid] = 0;
   });
@@ -439,6 +464,11 @@ function installDefaults(world: PhysicsWorld): void {
     c.Lifetime.age[eid] = 0;
     c.Lifetime.duration[eid] = 1;
   });
+}
+
+/** installDefaults, last: force laws bring the Force accumulator, a Force brings a Mass, and a ball brings a Mass, a Material and a Force. */
+function completeBodiesOnAdd(world: PhysicsWorld): void {
+  const c = world.components;
   for (const law of [
     c.LinearDrag,
     c.Vortex,
