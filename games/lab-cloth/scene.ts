@@ -8,8 +8,8 @@
  * over the patch and from it into the sheet, which stretches, swings and lags behind the hand; links
  * tear only where a pull far past where the cloth can follow, or a fast yank, strains them past the tear
  * strain. A hard pin on the one point under the pointer (pinClothPoint without options) puts all the
- * strain in the few links at that point: the slow 0.5 m pulls measured for GRAB tear up to 28 links
- * with it (17 of 20 pulls tear some).
+ * strain in the few links at that point: the slow 0.5 m pulls measured for GRAB tear 1 to 21 links
+ * with it (every one of 40 pulls tears some).
  */
 import {
   type Cloth,
@@ -33,6 +33,14 @@ export const CLOTH_MASS = 0.6;
  * The floor is 1.3 m below the hem, which the default wind and the sheet's own stretch keep above it.
  */
 export const ROOM = Object.freeze({ minX: -1, minY: -1.3, maxX: SIDE + 3, maxY: SIDE + 10 });
+
+/**
+ * The lab's cloth solver substeps a step. The links are inextensible (compliance 0), so a link's strain
+ * is the small steps' leftover error, which falls as the substeps rise: at 24 the default 7 m/s wind
+ * stretches the sheet's upwind top corner 9% (12: 24%, 16: 15%, 32: 6%), at about the same step time
+ * as 12 (1.26 ms against 1.20 ms for 32 points a side, measured headless).
+ */
+export const CLOTH_SUBSTEPS = 24;
 
 /** The lab's settings that shape its world. */
 export interface ClothSceneParams {
@@ -86,21 +94,23 @@ export interface GrabOptions {
 }
 
 /**
- * The lab's grip at 32 points a side: a 0.35 m hand, 200 N/m, at most 400 N. Measured headless (grabs at
- * four places, 2 s after the start, in the default 7 m/s wind and in still air, tear strain 0.4): a 0.5 m
- * pull over 1 s in any of five directions tears no link and stretches the sheet to 8-35% (the held point
- * follows the hand 0.08-0.34 m); a 2 m yank in 0.1-0.15 s tears 14-349 links.
+ * The lab's grip at 32 points a side: a 0.35 m hand, 400 N/m, at most 800 N. Measured headless at
+ * CLOTH_SUBSTEPS and tear strain 0.2 (grabs at four places, 2 s after the start, in the default 7 m/s
+ * wind and in still air): a 0.5 m pull over 1 s in any of five directions tears no link (40 of 40
+ * pulls), the most stretched link reaches 5-18% and the held point follows the hand 0.09-0.32 m; a 2 m
+ * yank in 0.12 s tears 105-569 links.
  */
-export const GRAB: GrabOptions = { radius: 0.35, stiffness: 200, maxForce: 400 };
+export const GRAB: GrabOptions = { radius: 0.35, stiffness: 400, maxForce: 800 };
 
 /**
  * The lab's grip for a sheet of `size` points a side: GRAB with its stiffness and force scaled by
  * (31 / (size - 1))^2 and its radius at least 1.5 link spacings. The solver's sheet is stiffer the
  * coarser it is (a link's strain is the small steps' leftover error, which grows with the links in a
- * chain): with this scaling a slow 0.5 m pull (as for GRAB) tears nothing and stretches the sheet 4-22%
- * at 8, 16, 48 and 64 points a side too; a 2 m yank tears 42-619 links at 48 and 64 points, but only
- * 0-28 at 8 and 16 (a coarse sheet is hard to tear: lower the tear strain). Measured in the default
- * wind at 8 and 16 points and in still air at 48 and 64, where the default wind tears the sheet by itself.
+ * chain). Measured at CLOTH_SUBSTEPS and tear strain 0.2, pulling the middle point: a slow 0.5 m pull
+ * tears nothing and stretches the sheet 8-16% at 8 and 16 points a side (in the default wind and in
+ * still air) and at 48 and 64 in still air, and a 2 m yank in 0.15 s tears 46-80 links at 8 and 16 and
+ * 484-800 at 48 and 64. In the default wind a 48-point sheet already stretches 17% and a slow pull
+ * tears a few links; a 64-point sheet stretches past the tear strain by itself (lower the wind).
  */
 export function gripFor(size: number): GrabOptions {
   const s = (31 / (size - 1)) ** 2;

@@ -192,9 +192,9 @@ describe('lab-cloth', () => {
   });
 
   it('a slow drag at the defaults pulls the cloth along without tearing it', async () => {
-    // The default sheet (32 points, 7 m/s wind, tear strain 0.4) after 1 s: press on its middle point
+    // The default sheet (32 points, 7 m/s wind, tear strain 0.2) after 1 s: press on its middle point
     // and move 0.5 m downwind over 20 pointer moves, then hold 30 frames. Headless (test/games/lab-cloth)
-    // the soft grip tears nothing here and the point follows 0.2 m; a hard pin on it tore 12 links.
+    // the soft grip tears nothing here and the point follows 0.18 m; a hard pin on it tore 15 links.
     const w = await open('lab-cloth', {}, ['Drag']);
     await w.page.evaluate(() => {
       (window.game as unknown as LabWindow).paused = false;
@@ -255,7 +255,8 @@ describe('lab-cloth', () => {
 
   it('the default wind visibly sways the cloth', async () => {
     // A new page at the default wind (7 m/s): after 3 s the hem's middle point has moved downwind by
-    // more than 0.3 m (measured headless at 32 points a side: 0.7 m; the old drag moved it 3 cm).
+    // more than 0.15 m (measured headless at 32 points a side and 24 substeps: 0.24 m; the old drag
+    // moved it 3 cm). At 12 substeps it leaned 0.6 m, most of it the links' stretch (24%), not shear.
     const w = await open('lab-cloth', { size: 32 }, ['Drag']);
     const shift = await w.page.evaluate(() => {
       const game = window.game as unknown as LabWindow & { cloth(): { points: ArrayLike<number>; columns: number } };
@@ -267,7 +268,7 @@ describe('lab-cloth', () => {
       (game as unknown as { advance(n: number): void }).advance(180);
       return P.x[hem]! - x0;
     });
-    expect(shift).toBeGreaterThan(0.3);
+    expect(shift).toBeGreaterThan(0.15);
     expect(w.errors).toEqual([]);
     await w.close();
   });
