@@ -362,12 +362,17 @@ export interface ShapeCollisionState {
   readonly events: ContactEvents;
   /** Broadphase scratch. */
   readonly scratch: ShapeScratch;
-  /** Soft-constraint coefficients of this step's shape contacts between dynamic bodies (bias rate 1/s, mass scale, impulse scale); see solver/manifold-rows-2d.ts. */
+  /** Soft-constraint coefficients of this step's shape contacts between dynamic bodies (bias rate 1/s, mass scale, impulse scale); see solver/manifold-prepare-2d.ts. */
   readonly softness: Float64Array;
   /** The same coefficients against an infinite-mass partner (twice the stiffness). */
   readonly rigidSoftness: Float64Array;
   /** Per solver body: the rotation still owed at the start of the solve (its rotation within the step is measured from it). */
   angleBase: Float64Array;
+  /**
+   * This step's manifolds as the solver's packed rows (solver/manifold-rows-2d.ts, Row and Point: 41
+   * numbers a manifold), filled by prepareManifolds before the substeps read them.
+   */
+  solverRows: Float64Array;
   /** Per entity (capacity + 1), allocated with the first shape: the body's first extra shape entity (0 none). */
   firstShape: Int32Array;
   /** Per entity: where the body's reference point (its position when created) lies from its centre of mass, body frame, x, m. */
@@ -414,6 +419,7 @@ export function createShapeCollisionState(): ShapeCollisionState {
     softness: new Float64Array(3),
     rigidSoftness: new Float64Array(3),
     angleBase: new Float64Array(256),
+    solverRows: new Float64Array(0),
     firstShape: new Int32Array(0),
     originX: new Float64Array(0),
     originY: new Float64Array(0),

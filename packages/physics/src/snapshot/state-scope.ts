@@ -35,12 +35,24 @@ export const SCRATCH = new Set([
  *   1 .. solverBodyCount - 1 (row 0, the static world, is zeroed there or never written) before any
  *   solver stage reads them; `bodyImpact`: zeroed up to solverBodyCount by applyImpacts (solver/impacts.ts),
  *   which runs before anything reads it.
+ * - `shapes.solverRows`: the 2D manifolds' packed solver rows, filled for every manifold of the step by
+ *   prepareManifolds (solver/manifold-prepare-2d.ts) before the substeps read them.
  * About 3 MB of a settled 100,000-ball world's 9 to 13 MB.
  */
 function PER_STEP_SCRATCH(): string[] {
-  return ['margin', 'pairA', 'pairB', 'pairKind', 'solverIndex', 'bodyState', 'bodyExtra', 'bodyImpact', 'impactOrder', 'impactKey'].map(
-    (k) => `world.collision.${k}`,
-  );
+  return [
+    'margin',
+    'pairA',
+    'pairB',
+    'pairKind',
+    'solverIndex',
+    'bodyState',
+    'bodyExtra',
+    'bodyImpact',
+    'impactOrder',
+    'impactKey',
+    'shapes.solverRows',
+  ].map((k) => `world.collision.${k}`);
 }
 
 /**

@@ -11,13 +11,12 @@ import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { withScaledSubsteps } from './contact-scale.js';
 import { IMPACT_STRIDE } from './impact-state.js';
+import { finishManifolds, gatherManifoldBodies, prepareManifolds } from './manifold-prepare-2d.js';
 import {
   accumulateManifoldImpulses,
   applyManifoldRestitution,
-  finishManifolds,
-  gatherManifoldBodies,
-  prepareManifolds,
   solveManifolds,
+  storeManifoldImpulses,
   warmStartManifolds,
 } from './manifold-rows-2d.js';
 import {
@@ -145,8 +144,10 @@ function solveContacts(world: PhysicsWorld): void {
     balls?.endSubstep(buf);
   }
   balls?.restitution(world, buf);
-  if (is2D) applyManifoldRestitution(world);
-  else applyManifold3DRestitution(world);
+  if (is2D) {
+    applyManifoldRestitution(world);
+    storeManifoldImpulses(cs);
+  } else applyManifold3DRestitution(world);
   finishBodies(world, buf);
   containInBoundary(world);
   finishManifolds(world);
@@ -225,7 +226,7 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     IB[i] = index[b]!;
   }
   cs.solverBodies = list;
-  count = gatherManifoldBodies(world, count); // the shapes' manifolds join (solver/manifold-rows-2d.ts)
+  count = gatherManifoldBodies(world, count); // the shapes' manifolds join (solver/manifold-prepare-2d.ts)
   if (world.dimensions === 3) count = gatherManifold3DBodies(world, count); // and the 3D shapes' (solver/manifold-rows-3d.ts)
   if (world.dimensions === 3) count = gatherJoint3DBodies(world, count); // and the 3D joints' (joints/solver-3d.ts)
   list = cs.solverBodies;

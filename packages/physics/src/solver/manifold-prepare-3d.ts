@@ -4,7 +4,7 @@ import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
 
 /** Preparation of the 3D manifold rows at the start of a step (solver/manifold-rows-3d.ts): world inverse inertia tensors of the solver bodies, Jacobians, effective masses, softness and separations on the solver's base. */
 
-/** Stiffness as a fraction of the substep rate (as the 2D shape contacts: solver/manifold-rows-2d.ts). */
+/** Stiffness as a fraction of the substep rate (as the 2D shape contacts: solver/manifold-prepare-2d.ts). */
 const HERTZ_FRACTION = 0.125;
 
 function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {

@@ -1,7 +1,4 @@
-import { pushEvent } from '../collision/events.js';
-import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
 import type { CollisionState } from '../collision/state.js';
-import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -30,242 +27,158 @@ import type { PhysicsWorld } from '../world/options.js';
  * - finally, which pairs touch (a point carried a normal impulse, or overlapped) gives the begin and
  *   end touch events, and the rows become the warm-start cache of the next step.
  */
-
 /**
- * Stiffness of shape contacts, as a fraction of the solver substep rate: the world's `contactHertz`
- * is capped at this fraction (contacts against infinite mass get twice it). Box2D caps contact
- * stiffness at a quarter of the substep rate; with flat, two-point manifolds that is unstable in tall
- * pyramids here (sequential impulses ring and the pile shears), and an eighth is stable: 30 Hz at 4
- * substeps of 1/60 s (Box2D's default contact stiffness), 60 Hz at 8. Measured on the `pyramid`
- * scene, base 40: kinetic energy decays at an eighth and persists at 0.19 and 0.25.
+ * The fields of one manifold point in its packed solver row (see Row): offsets from the point's start,
+ * `Row.Point0 + p * Point.Stride` into the row for point p (0 or 1).
  */
-const SHAPE_HERTZ_FRACTION = 0.125;
-
-/** Writes Box2D's soft-constraint coefficients (b2MakeSoft) for `hertz` and damping ratio `zeta` over step `h` into out[0..2]: bias rate, mass scale, impulse scale. */
-function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
-  if (hertz === 0) {
-    out[0] = 0;
-    out[1] = 1;
-    out[2] = 0;
-    return;
-  }
-  const omega = 2 * Math.PI * hertz;
-  const a1 = 2 * zeta + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  out[0] = omega / a1;
-  out[1] = a2 * a3;
-  out[2] = a3;
+enum Point {
+  /** Anchor on body A from its centre of mass at the start of the step, x, m; y next. */
+  RAx = 0,
+  RAy = 1,
+  /** Anchor on body B, x, m; y next. */
+  RBx = 2,
+  RBy = 3,
+  /** Separation at the start of the step, relative to where the solver starts the bodies, m (< 0: overlap). */
+  Separation = 4,
+  /** Effective mass of the normal row, kg. */
+  NormalMass = 5,
+  /** Effective mass of the friction row, kg. */
+  TangentMass = 6,
+  /** Accumulated normal impulse of this substep, N s, >= 0. */
+  NormalImpulse = 7,
+  /** Accumulated friction impulse of this substep, N s. */
+  TangentImpulse = 8,
+  /** Largest normal impulse a single pass added this step, N s (restitution applies only where it is > 0). */
+  MaxNormalImpulse = 9,
+  /** Sum of the substeps' normal impulses, N s (touch events). */
+  TotalNormalImpulse = 10,
+  /** Normal velocity at the start of the step, m/s (< 0: approaching). */
+  RelativeVelocity = 11,
+  /** Numbers a point. */
+  Stride = 12,
 }
 
 /**
- * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). Growth runs
- * only in a world's first steps, before V8 records type feedback: inside the callers' loops it would
- * be compiled as a deoptimisation that throws the whole loop back to the interpreter in a later world.
+ * The packed solver row of one manifold, `ShapeCollisionState.solverRows` (Box2D v3's b2ContactConstraint):
+ * prepareManifolds fills it from the manifold buffer once a step, the substeps' stages read and write
+ * only the rows (one array, the fields of a manifold next to each other), and storeManifoldImpulses
+ * writes the impulses back to the buffer for the touch events and the next step's warm start.
  */
-function withRoom(list: Int32Array, n: number): Int32Array {
-  if (list.length >= n) return list;
-  const grown = new Int32Array(Math.max(n, 2 * list.length));
-  grown.set(list);
-  return grown;
+enum Row {
+  /** Solver index of body A (0: the static world); its packed body state starts at 8 times it. */
+  BodyA = 0,
+  /** Solver index of body B. */
+  BodyB = 1,
+  /** Unit normal from A to B, x; y next. */
+  Nx = 2,
+  Ny = 3,
+  /** Points, 1 or 2. */
+  PointCount = 4,
+  /** 1 when the two points' normal rows are solved as one block (K well conditioned), else 0. */
+  BlockValid = 5,
+  /** The block's inverse effective mass K^-1, entries 11, 12, 22, kg. */
+  B11 = 6,
+  B12 = 7,
+  B22 = 8,
+  /** The block's K = J M^-1 J^T itself, entries 11, 12, 22, 1/kg. */
+  K11 = 9,
+  K12 = 10,
+  K22 = 11,
+  /** Friction coefficient bounding |lambda_t| by mu lambda_n (the static one while sticking). */
+  FrictionBound = 12,
+  /** Rolling resistance times the rolling radius, m (0: none). */
+  Rolling = 13,
+  /** Effective mass of the rolling row, kg m^2. */
+  RollingMass = 14,
+  /** Accumulated rolling impulse, N m s. */
+  RollingImpulse = 15,
+  /** Mixed restitution coefficient. */
+  Restitution = 16,
+  /** Where the first point's fields start (Point); the second's is Point.Stride further. */
+  Point0 = 17,
+  /** Numbers a manifold: 17 + 2 * Point.Stride. */
+  Stride = 41,
 }
 
-/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length); see withRoom. */
+/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length). */
 function atLeast(a: Float64Array, n: number): Float64Array {
   return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
 }
 
 /**
- * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
- * started, same stamp), writes the rows' indices, and returns the new solver body count.
+ * Copies this step's manifolds into the solver's packed rows (Row, Point), with each valid block's K
+ * next to its inverse (prepareManifolds, solver/manifold-prepare-2d.ts, calls it last).
  * @category Collision
  */
-export function gatherManifoldBodies(world: PhysicsWorld, count: number): number {
-  const cs = world.collision;
-  const buf = cs.shapes.manifolds;
-  const n = buf.count;
-  if (n === 0) return count;
-  const mark = cs.solverMark,
-    index = cs.solverIndex,
-    stamp = cs.solverStamp,
-    type = cs.bodyType;
-  // Room for both bodies of every row, made before the loop (see withRoom).
-  const list = withRoom(cs.solverBodies, count + 2 * n);
-  const A = buf.bodyA,
-    B = buf.bodyB,
-    IA = buf.ia,
-    IB = buf.ib;
+export function packManifoldRows(st: CollisionState['shapes'], n: number): void {
+  const buf = st.manifolds;
+  const R = atLeast(st.solverRows, n * Row.Stride);
+  st.solverRows = R;
   for (let i = 0; i < n; i++) {
-    for (let side = 0; side < 2; side++) {
-      const e = side === 0 ? A[i]! : B[i]!;
-      const t = type[e]!;
-      let k = 0;
-      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
-        if (mark[e] !== stamp) {
-          mark[e] = stamp;
-          index[e] = count;
-          list[count++] = e;
-        }
-        k = index[e]!;
-      }
-      if (side === 0) IA[i] = k;
-      else IB[i] = k;
+    const r = i * Row.Stride;
+    const m = buf.pointCount[i]!;
+    R[r + Row.BodyA] = buf.ia[i]!;
+    R[r + Row.BodyB] = buf.ib[i]!;
+    R[r + Row.Nx] = buf.nx[i]!;
+    R[r + Row.Ny] = buf.ny[i]!;
+    R[r + Row.PointCount] = m;
+    const valid = buf.blockValid[i]!;
+    R[r + Row.BlockValid] = valid;
+    if (valid === 1) {
+      const b11 = buf.block11[i]!,
+        b12 = buf.block12[i]!,
+        b22 = buf.block22[i]!;
+      const det = 1 / (b11 * b22 - b12 * b12);
+      R[r + Row.B11] = b11;
+      R[r + Row.B12] = b12;
+      R[r + Row.B22] = b22;
+      R[r + Row.K11] = b22 * det;
+      R[r + Row.K12] = -b12 * det;
+      R[r + Row.K22] = b11 * det;
+    }
+    R[r + Row.FrictionBound] = buf.frictionBound[i]!;
+    R[r + Row.Rolling] = buf.rolling[i]!;
+    R[r + Row.RollingMass] = buf.rollingMass[i]!;
+    R[r + Row.RollingImpulse] = buf.rollingImpulse[i]!;
+    R[r + Row.Restitution] = buf.restitution[i]!;
+    for (let p = 0; p < m; p++) {
+      const q = 2 * i + p,
+        o = r + Row.Point0 + p * Point.Stride;
+      R[o + Point.RAx] = buf.rAx[q]!;
+      R[o + Point.RAy] = buf.rAy[q]!;
+      R[o + Point.RBx] = buf.rBx[q]!;
+      R[o + Point.RBy] = buf.rBy[q]!;
+      R[o + Point.Separation] = buf.separation[q]!;
+      R[o + Point.NormalMass] = buf.normalMass[q]!;
+      R[o + Point.TangentMass] = buf.tangentMass[q]!;
+      R[o + Point.NormalImpulse] = buf.normalImpulse[q]!;
+      R[o + Point.TangentImpulse] = buf.tangentImpulse[q]!;
+      R[o + Point.MaxNormalImpulse] = 0;
+      R[o + Point.TotalNormalImpulse] = 0;
+      R[o + Point.RelativeVelocity] = buf.relativeVelocity[q]!;
     }
   }
-  cs.solverBodies = list;
-  return count;
 }
 
 /**
- * Material, effective masses, start-of-step velocities and warm start of every manifold.
+ * Writes the packed rows' impulses back to the manifold buffer (after the substeps and restitution):
+ * the touch events read the step's total normal impulses, and the buffer becomes the next step's
+ * warm-start cache.
  * @category Collision
  */
-export function prepareManifolds(world: PhysicsWorld): void {
-  const cs = world.collision,
-    st = cs.shapes,
-    buf = st.manifolds;
-  const n = buf.count;
-  const count = cs.solverBodyCount;
-  st.angleBase = atLeast(st.angleBase, count);
-  const ex = cs.bodyExtra,
-    base = st.angleBase;
-  for (let k = 1; k < count; k++) base[k] = ex[k * 6 + 5]!;
-  base[0] = 0;
-  if (n === 0) return;
-  const set = cs.settings;
-  const hs = world.h / set.solverSubsteps;
-  const hertz = Math.min(set.contactHertz, SHAPE_HERTZ_FRACTION / hs);
-  makeSoftInto(st.softness, hertz, set.contactDampingRatio, hs);
-  makeSoftInto(st.rigidSoftness, 2 * hertz, set.contactDampingRatio, hs);
-  const c = world.components,
-    sb = cs.bodyState;
-  // Where the solver starts each body (its displacement 0) relative to where the narrowphase measured
-  // it (PreviousPosition): separations are corrected by the difference, so the rows agree with
-  // whatever base the solver chooses.
-  const list = cs.solverBodies,
-    ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y;
-  const eM = c.Material.restitution,
-    fM = c.Material.friction,
-    sM = c.Material.staticFriction;
-  const S = c.Shape;
-  const box = cs.boundary;
-  const stamp = world.spawnStamp;
-  const stick = cs.settings.stickSpeed;
-  const prev = st.previous;
-  for (let i = 0; i < n; i++) {
-    const ea = buf.shapeA[i]!,
-      eb = buf.shapeB[i]!;
-    const oa = buf.ia[i]! * 8,
-      ob = buf.ib[i]! * 8;
-    const mA = sb[oa + 5]!,
-      iA = sb[oa + 6]!,
-      mB = sb[ob + 5]!,
-      iB = sb[ob + 6]!;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!;
-    // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
-    let ra: number, fa: number, sa: number;
-    if (ea < 0) {
-      ra = box.restitution;
-      fa = box.friction;
-      sa = box.staticFriction;
-    } else {
-      ra = eM[ea]!;
-      fa = fM[ea]!;
-      sa = sM[ea]!;
-    }
-    const mu = Math.sqrt(fa * fM[eb]!),
-      mus = Math.sqrt(sa * sM[eb]!);
-    buf.friction[i] = mu;
-    buf.restitution[i] = Math.max(ra, eM[eb]!);
-    // Rolling resistance of round shapes: coefficient times the rolling radius.
-    let roll = 0;
-    if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
-      roll = S.rollingResistance[ea]! * S.radius[ea]!;
-    if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
-      roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
-    buf.rolling[i] = roll;
-    buf.rollingMass[i] = iA + iB > 0 ? 1 / (iA + iB) : 0;
-    buf.rollingImpulse[i] = 0;
-    buf.stampA[i] = ea > 0 ? stamp[ea]! : 0;
-    buf.stampB[i] = stamp[eb]!;
-    let j = findPrevious(st, ea, eb);
-    if (j >= 0 && (prev.stampA[j] !== buf.stampA[i] || prev.stampB[j] !== buf.stampB[i])) j = -1;
-    if (j >= 0) buf.rollingImpulse[i] = prev.rollingImpulse[j]!;
-    const vax = sb[oa]!,
-      vay = sb[oa + 1]!,
-      wa = sb[oa + 2]!,
-      vbx = sb[ob]!,
-      vby = sb[ob + 1]!,
-      wb = sb[ob + 2]!;
-    const ka = buf.ia[i]!,
-      kb = buf.ib[i]!;
-    const ea6 = ka * 6,
-      eb6 = kb * 6;
-    const offAx = ka === 0 ? 0 : ex[ea6]! - ox[list[ka]!]!,
-      offAy = ka === 0 ? 0 : ex[ea6 + 1]! - oy[list[ka]!]!;
-    const offBx = kb === 0 ? 0 : ex[eb6]! - ox[list[kb]!]!,
-      offBy = kb === 0 ? 0 : ex[eb6 + 1]! - oy[list[kb]!]!;
-    let vtMax = 0;
+export function storeManifoldImpulses(cs: CollisionState): void {
+  const buf = cs.shapes.manifolds,
+    R = cs.shapes.solverRows;
+  for (let i = 0, n = buf.count; i < n; i++) {
+    const r = i * Row.Stride;
+    buf.rollingImpulse[i] = R[r + Row.RollingImpulse]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-      const q = 2 * i + p;
-      const rax = buf.rAx[q]!,
-        ray = buf.rAy[q]!,
-        rbx = buf.rBx[q]!,
-        rby = buf.rBy[q]!;
-      buf.separation[q] = buf.separation[q]! + (offBx - offAx) * nx + (offBy - offAy) * ny;
-      const rnA = rax * ny - ray * nx,
-        rnB = rbx * ny - rby * nx;
-      const kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      buf.normalMass[q] = kn > 0 ? 1 / kn : 0;
-      const rtA = rax * nx + ray * ny,
-        rtB = rbx * nx + rby * ny; // r x t with t = (-n_y, n_x)
-      const kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-      buf.tangentMass[q] = kt > 0 ? 1 / kt : 0;
-      const dvx = vbx - wb * rby - vax + wa * ray,
-        dvy = vby + wb * rbx - vay - wa * rax;
-      buf.relativeVelocity[q] = dvx * nx + dvy * ny;
-      const vt = Math.abs(-dvx * ny + dvy * nx);
-      if (vt > vtMax) vtMax = vt;
-      buf.maxNormalImpulse[q] = 0;
-      buf.totalNormalImpulse[q] = 0;
-      let ln = 0,
-        lt = 0;
-      if (j >= 0) {
-        const id = buf.id[q]!;
-        for (let r = 0, pm = prev.pointCount[j]!; r < pm; r++) {
-          if (prev.id[2 * j + r] === id) {
-            ln = prev.normalImpulse[2 * j + r]!;
-            lt = prev.tangentImpulse[2 * j + r]!;
-            break;
-          }
-        }
-      }
-      buf.normalImpulse[q] = ln;
-      buf.tangentImpulse[q] = lt;
-    }
-    buf.frictionBound[i] = vtMax < stick ? Math.max(mus, mu) : mu;
-    // Block solve of two-point manifolds (Catto's block solver of Box2D 2.x): K = J M^-1 J^T over the two normal rows.
-    buf.blockValid[i] = 0;
-    if (buf.pointCount[i] === 2) {
-      const q = 2 * i;
-      const rn1A = buf.rAx[q]! * ny - buf.rAy[q]! * nx,
-        rn1B = buf.rBx[q]! * ny - buf.rBy[q]! * nx;
-      const rn2A = buf.rAx[q + 1]! * ny - buf.rAy[q + 1]! * nx,
-        rn2B = buf.rBx[q + 1]! * ny - buf.rBy[q + 1]! * nx;
-      const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-      const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-      const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-      const det = k11 * k22 - k12 * k12;
-      // Box2D's condition-number guard: the rows must not be nearly parallel.
-      if (k11 * k11 < 1000 * det && det > 0) {
-        const inv = 1 / det;
-        buf.block11[i] = k22 * inv;
-        buf.block12[i] = -k12 * inv;
-        buf.block22[i] = k11 * inv;
-        buf.blockValid[i] = 1;
-      }
+      const q = 2 * i + p,
+        o = r + Row.Point0 + p * Point.Stride;
+      buf.normalImpulse[q] = R[o + Point.NormalImpulse]!;
+      buf.tangentImpulse[q] = R[o + Point.TangentImpulse]!;
+      buf.maxNormalImpulse[q] = R[o + Point.MaxNormalImpulse]!;
+      buf.totalNormalImpulse[q] = R[o + Point.TotalNormalImpulse]!;
     }
   }
 }
@@ -275,37 +188,38 @@ export function prepareManifolds(world: PhysicsWorld): void {
  * @category Collision
  */
 export function warmStartManifolds(cs: CollisionState): void {
-  const buf = cs.shapes.manifolds,
+  const R = cs.shapes.solverRows,
     sb = cs.bodyState;
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const a = buf.ia[i]! * 8,
-      b = buf.ib[i]! * 8;
+  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+    const r = i * Row.Stride;
+    const a = R[r + Row.BodyA]! * 8,
+      b = R[r + Row.BodyB]! * 8;
     const mA = sb[a + 5]!,
       iA = sb[a + 6]!,
       mB = sb[b + 5]!,
       iB = sb[b + 6]!;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!;
+    const nx = R[r + Row.Nx]!,
+      ny = R[r + Row.Ny]!;
     let vax = sb[a]!,
       vay = sb[a + 1]!,
       wa = sb[a + 2]!,
       vbx = sb[b]!,
       vby = sb[b + 1]!,
       wb = sb[b + 2]!;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-      const q = 2 * i + p;
-      const ln = buf.normalImpulse[q]!,
-        lt = buf.tangentImpulse[q]!;
+    for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
+      const o = r + Row.Point0 + p * Point.Stride;
+      const ln = R[o + Point.NormalImpulse]!,
+        lt = R[o + Point.TangentImpulse]!;
       const Px = ln * nx - lt * ny,
         Py = ln * ny + lt * nx;
-      wa -= iA * (buf.rAx[q]! * Py - buf.rAy[q]! * Px);
+      wa -= iA * (R[o + Point.RAx]! * Py - R[o + Point.RAy]! * Px);
       vax -= mA * Px;
       vay -= mA * Py;
-      wb += iB * (buf.rBx[q]! * Py - buf.rBy[q]! * Px);
+      wb += iB * (R[o + Point.RBx]! * Py - R[o + Point.RBy]! * Px);
       vbx += mB * Px;
       vby += mB * Py;
     }
-    const lr = buf.rollingImpulse[i]!;
+    const lr = R[r + Row.RollingImpulse]!;
     wa -= iA * lr;
     wb += iB * lr;
     sb[a] = vax;
@@ -314,7 +228,7 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb[b] = vbx;
     sb[b + 1] = vby;
     sb[b + 2] = wb;
-    if (pushes(buf, i)) {
+    if (pushes(R, r)) {
       sb[a + 7] = 1;
       sb[b + 7] = 1;
     }
@@ -322,17 +236,18 @@ export function warmStartManifolds(cs: CollisionState): void {
 }
 
 /**
- * Whether row i carries an impulse: then its bodies were not in free flight this step, and the contact
- * solver's `pushed` slot (index 7 of a packed body) keeps finishBodies from giving them the free-flight
- * position correction (-g h h_s / 2), which on a resting box is a drop of 0.34 mm a step at 4 substeps
- * of 1/60 s that the contact then pushes back: on a slope, a creep of mm a second.
+ * Whether the manifold whose packed row starts at `r` carries an impulse: then its bodies were not in
+ * free flight this step, and the contact solver's `pushed` slot (index 7 of a packed body) keeps
+ * finishBodies from giving them the free-flight position correction (-g h h_s / 2), which on a resting
+ * box is a drop of 0.34 mm a step at 4 substeps of 1/60 s that the contact then pushes back: on a
+ * slope, a creep of mm a second.
  */
-function pushes(buf: CollisionState['shapes']['manifolds'], i: number): boolean {
-  for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-    const q = 2 * i + p;
-    if (buf.normalImpulse[q] !== 0 || buf.tangentImpulse[q] !== 0) return true;
+function pushes(R: Float64Array, r: number): boolean {
+  for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
+    const o = r + Row.Point0 + p * Point.Stride;
+    if (R[o + Point.NormalImpulse] !== 0 || R[o + Point.TangentImpulse] !== 0) return true;
   }
-  return buf.rollingImpulse[i] !== 0;
+  return R[r + Row.RollingImpulse] !== 0;
 }
 
 /**
@@ -341,7 +256,7 @@ function pushes(buf: CollisionState['shapes']['manifolds'], i: number): boolean 
  * @category Collision
  */
 export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean): void {
-  const buf = cs.shapes.manifolds,
+  const R = cs.shapes.solverRows,
     sb = cs.bodyState,
     ex = cs.bodyExtra,
     base = cs.shapes.angleBase;
@@ -349,21 +264,10 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     sr = cs.shapes.rigidSoftness;
   const invH = 1 / hs,
     push = cs.settings.contactPushSpeed;
-  const NX = buf.nx,
-    NY = buf.ny,
-    RAX = buf.rAx,
-    RAY = buf.rAy,
-    RBX = buf.rBx,
-    RBY = buf.rBy,
-    S0 = buf.separation;
-  const NM = buf.normalMass,
-    TM = buf.tangentMass,
-    LN = buf.normalImpulse,
-    LT = buf.tangentImpulse,
-    MAXN = buf.maxNormalImpulse;
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const ia = buf.ia[i]!,
-      ib = buf.ib[i]!;
+  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+    const r = i * Row.Stride;
+    const ia = R[r + Row.BodyA]!,
+      ib = R[r + Row.BodyB]!;
     const a = ia * 8,
       b = ib * 8;
     const mA = sb[a + 5]!,
@@ -382,31 +286,32 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       dby = sb[b + 4]!;
     const ta = ia === 0 ? 0 : ex[ia * 6 + 5]! - base[ia]!,
       tb = ib === 0 ? 0 : ex[ib * 6 + 5]! - base[ib]!;
-    const nx = NX[i]!,
-      ny = NY[i]!;
+    const nx = R[r + Row.Nx]!,
+      ny = R[r + Row.Ny]!;
     const rigidPartner = mA === 0 || mB === 0;
     const biasRate = rigidPartner ? sr[0]! : sd[0]!,
       softMass = rigidPartner ? sr[1]! : sd[1]!,
       softImpulse = rigidPartner ? sr[2]! : sd[2]!;
-    const m = buf.pointCount[i]!;
+    const m = R[r + Row.PointCount]!;
+    const o1 = r + Row.Point0,
+      o2 = o1 + Point.Stride;
     let total = 0;
     let solved = false;
-    if (buf.blockValid[i] === 1) {
+    if (R[r + Row.BlockValid] === 1) {
       // Both points at once, as the linear complementarity problem K x + c = w, x >= 0, w >= 0,
       // x . w = 0 (Box2D 2.x's block solver, its four cases tried in turn), with x the new accumulated
       // impulses and c from each row's own regime: c_i = s_m (v_n,i + bias_i) - (1 - s_i) (K x_old)_i,
       // which is the soft row's update written for both rows (s_m, s_i its mass and impulse scales).
-      const q = 2 * i;
-      const r1ax = RAX[q]!,
-        r1ay = RAY[q]!,
-        r1bx = RBX[q]!,
-        r1by = RBY[q]!;
-      const r2ax = RAX[q + 1]!,
-        r2ay = RAY[q + 1]!,
-        r2bx = RBX[q + 1]!,
-        r2by = RBY[q + 1]!;
-      const s1 = S0[q]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
-      const s2 = S0[q + 1]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
+      const r1ax = R[o1 + Point.RAx]!,
+        r1ay = R[o1 + Point.RAy]!,
+        r1bx = R[o1 + Point.RBx]!,
+        r1by = R[o1 + Point.RBy]!;
+      const r2ax = R[o2 + Point.RAx]!,
+        r2ay = R[o2 + Point.RAy]!,
+        r2bx = R[o2 + Point.RBx]!,
+        r2by = R[o2 + Point.RBy]!;
+      const s1 = R[o1 + Point.Separation]! + (dbx - tb * r1by - dax + ta * r1ay) * nx + (dby + tb * r1bx - day - ta * r1ax) * ny;
+      const s2 = R[o2 + Point.Separation]! + (dbx - tb * r2by - dax + ta * r2ay) * nx + (dby + tb * r2bx - day - ta * r2ax) * ny;
       let b1 = 0,
         m1 = 1,
         i1 = 0,
@@ -433,19 +338,18 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       // impulses symmetric, and the column stands.
       const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
       const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-      const o1 = LN[q]!,
-        o2 = LN[q + 1]!;
-      const k11 = buf.block22[i]!,
-        k22 = buf.block11[i]!,
-        k12 = -buf.block12[i]!; // K from its inverse (scaled by det)
-      const det = 1 / (buf.block11[i]! * buf.block22[i]! - buf.block12[i]! * buf.block12[i]!);
-      const K11 = k11 * det,
-        K22 = k22 * det,
-        K12 = k12 * det;
-      const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * o1 + K12 * o2);
-      const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * o1 + K22 * o2);
-      let n1 = -(buf.block11[i]! * c1 + buf.block12[i]! * c2),
-        n2 = -(buf.block12[i]! * c1 + buf.block22[i]! * c2);
+      const l1 = R[o1 + Point.NormalImpulse]!,
+        l2 = R[o2 + Point.NormalImpulse]!;
+      const K11 = R[r + Row.K11]!,
+        K22 = R[r + Row.K22]!,
+        K12 = R[r + Row.K12]!;
+      const B11 = R[r + Row.B11]!,
+        B12 = R[r + Row.B12]!,
+        B22 = R[r + Row.B22]!;
+      const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
+      const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
+      let n1 = -(B11 * c1 + B12 * c2),
+        n2 = -(B12 * c1 + B22 * c2);
       const both = n1 >= 0 && n2 >= 0;
       let ok = both;
       // A point that lets go (one or both impulses 0: an impact undone, a box lifting off an edge).
@@ -465,12 +369,12 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         ok = c1 >= 0 && c2 >= 0;
       }
       if (ok) {
-        const d1 = n1 - o1,
-          d2 = n2 - o2;
-        LN[q] = n1;
-        LN[q + 1] = n2;
-        if (d1 > MAXN[q]!) MAXN[q] = d1;
-        if (d2 > MAXN[q + 1]!) MAXN[q + 1] = d2;
+        const d1 = n1 - l1,
+          d2 = n2 - l2;
+        R[o1 + Point.NormalImpulse] = n1;
+        R[o2 + Point.NormalImpulse] = n2;
+        if (d1 > R[o1 + Point.MaxNormalImpulse]!) R[o1 + Point.MaxNormalImpulse] = d1;
+        if (d2 > R[o2 + Point.MaxNormalImpulse]!) R[o2 + Point.MaxNormalImpulse] = d2;
         total = n1 + n2;
         const P1x = d1 * nx,
           P1y = d1 * ny,
@@ -486,12 +390,12 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       }
     }
     for (let p = 0; p < m && !solved; p++) {
-      const q = 2 * i + p;
-      const rax = RAX[q]!,
-        ray = RAY[q]!,
-        rbx = RBX[q]!,
-        rby = RBY[q]!;
-      const s = S0[q]! + (dbx - tb * rby - dax + ta * ray) * nx + (dby + tb * rbx - day - ta * rax) * ny;
+      const o = o1 + p * Point.Stride;
+      const rax = R[o + Point.RAx]!,
+        ray = R[o + Point.RAy]!,
+        rbx = R[o + Point.RBx]!,
+        rby = R[o + Point.RBy]!;
+      const s = R[o + Point.Separation]! + (dbx - tb * rby - dax + ta * ray) * nx + (dby + tb * rbx - day - ta * rax) * ny;
       let bias = 0,
         massScale = 1,
         impulseScale = 0;
@@ -503,13 +407,13 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
         if (bias < -push) bias = -push;
       }
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = LN[q]!;
-      let next = old - NM[q]! * massScale * (vn + bias) - impulseScale * old;
+      const old = R[o + Point.NormalImpulse]!;
+      let next = old - R[o + Point.NormalMass]! * massScale * (vn + bias) - impulseScale * old;
       if (next < 0) next = 0;
       const dl = next - old;
-      LN[q] = next;
+      R[o + Point.NormalImpulse] = next;
       total += next;
-      if (dl > MAXN[q]!) MAXN[q] = dl;
+      if (dl > R[o + Point.MaxNormalImpulse]!) R[o + Point.MaxNormalImpulse] = dl;
       const Px = dl * nx,
         Py = dl * ny;
       vax -= mA * Px;
@@ -519,22 +423,22 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    const bound = buf.frictionBound[i]!;
+    const bound = R[r + Row.FrictionBound]!;
     for (let p = 0; p < m; p++) {
-      const q = 2 * i + p;
-      const rax = RAX[q]!,
-        ray = RAY[q]!,
-        rbx = RBX[q]!,
-        rby = RBY[q]!;
+      const o = o1 + p * Point.Stride;
+      const rax = R[o + Point.RAx]!,
+        ray = R[o + Point.RAy]!,
+        rbx = R[o + Point.RBx]!,
+        rby = R[o + Point.RBy]!;
       const dvx = vbx - wb * rby - vax + wa * ray,
         dvy = vby + wb * rbx - vay - wa * rax;
       const vt = -dvx * ny + dvy * nx;
-      const old = LT[q]!,
-        maxF = bound * LN[q]!;
-      let next = old - TM[q]! * vt;
+      const old = R[o + Point.TangentImpulse]!,
+        maxF = bound * R[o + Point.NormalImpulse]!;
+      let next = old - R[o + Point.TangentMass]! * vt;
       next = next < -maxF ? -maxF : next > maxF ? maxF : next;
       const dl = next - old;
-      LT[q] = next;
+      R[o + Point.TangentImpulse] = next;
       const Px = -dl * ny,
         Py = dl * nx;
       vax -= mA * Px;
@@ -544,14 +448,14 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    const roll = buf.rolling[i]!;
+    const roll = R[r + Row.Rolling]!;
     if (roll > 0) {
-      const old = buf.rollingImpulse[i]!,
+      const old = R[r + Row.RollingImpulse]!,
         maxR = roll * total;
-      let next = old - buf.rollingMass[i]! * (wb - wa);
+      let next = old - R[r + Row.RollingMass]! * (wb - wa);
       next = next < -maxR ? -maxR : next > maxR ? maxR : next;
       const dl = next - old;
-      buf.rollingImpulse[i] = next;
+      R[r + Row.RollingImpulse] = next;
       wa -= iA * dl;
       wb += iB * dl;
     }
@@ -561,7 +465,7 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     sb[b] = vbx;
     sb[b + 1] = vby;
     sb[b + 2] = wb;
-    if (total > 0 || pushes(buf, i)) {
+    if (total > 0 || pushes(R, r)) {
       sb[a + 7] = 1;
       sb[b + 7] = 1;
     }
@@ -573,10 +477,14 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
  * @category Collision
  */
 export function accumulateManifoldImpulses(cs: CollisionState): void {
-  const buf = cs.shapes.manifolds;
-  const LN = buf.normalImpulse,
-    TOT = buf.totalNormalImpulse;
-  for (let q = 0, n = 2 * buf.count; q < n; q++) TOT[q] = TOT[q]! + LN[q]!;
+  const R = cs.shapes.solverRows;
+  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+    const r = i * Row.Stride;
+    for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
+      const o = r + Row.Point0 + p * Point.Stride;
+      R[o + Point.TotalNormalImpulse] = R[o + Point.TotalNormalImpulse]! + R[o + Point.NormalImpulse]!;
+    }
+  }
 }
 
 /**
@@ -589,60 +497,60 @@ export function accumulateManifoldImpulses(cs: CollisionState): void {
  */
 export function applyManifoldRestitution(world: PhysicsWorld): void {
   const cs = world.collision,
-    buf = cs.shapes.manifolds,
+    R = cs.shapes.solverRows,
     sb = cs.bodyState;
   const threshold = cs.settings.restitutionThreshold;
-  for (let i = 0, n = buf.count; i < n; i++) {
-    const e = buf.restitution[i]!;
+  for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
+    const r = i * Row.Stride;
+    const e = R[r + Row.Restitution]!;
     if (e === 0) continue;
-    const a = buf.ia[i]! * 8,
-      b = buf.ib[i]! * 8;
+    const a = R[r + Row.BodyA]! * 8,
+      b = R[r + Row.BodyB]! * 8;
     const mA = sb[a + 5]!,
       iA = sb[a + 6]!,
       mB = sb[b + 5]!,
       iB = sb[b + 6]!;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!;
+    const nx = R[r + Row.Nx]!,
+      ny = R[r + Row.Ny]!;
     let vax = sb[a]!,
       vay = sb[a + 1]!,
       wa = sb[a + 2]!,
       vbx = sb[b]!,
       vby = sb[b + 1]!,
       wb = sb[b + 2]!;
-    const m = buf.pointCount[i]!;
-    if (m === 2 && buf.blockValid[i] === 1) {
+    const m = R[r + Row.PointCount]!;
+    const o1 = r + Row.Point0,
+      o2 = o1 + Point.Stride;
+    if (m === 2 && R[r + Row.BlockValid] === 1) {
       // Both points at once (the linear complementarity problem of the block solve, with the target
       // v_n,i = -e v_n0,i), so symmetric points get symmetric impulses: point after point, the first
       // takes the whole rebound, turns the body and leaves the second less to do.
-      const q = 2 * i;
-      const v1 = buf.relativeVelocity[q]!,
-        v2 = buf.relativeVelocity[q + 1]!;
-      const on1 = v1 <= -threshold && buf.maxNormalImpulse[q]! > 0,
-        on2 = v2 <= -threshold && buf.maxNormalImpulse[q + 1]! > 0;
+      const v1 = R[o1 + Point.RelativeVelocity]!,
+        v2 = R[o2 + Point.RelativeVelocity]!;
+      const on1 = v1 <= -threshold && R[o1 + Point.MaxNormalImpulse]! > 0,
+        on2 = v2 <= -threshold && R[o2 + Point.MaxNormalImpulse]! > 0;
       if (on1 && on2) {
-        const r1ax = buf.rAx[q]!,
-          r1ay = buf.rAy[q]!,
-          r1bx = buf.rBx[q]!,
-          r1by = buf.rBy[q]!,
-          r2ax = buf.rAx[q + 1]!,
-          r2ay = buf.rAy[q + 1]!,
-          r2bx = buf.rBx[q + 1]!,
-          r2by = buf.rBy[q + 1]!;
+        const r1ax = R[o1 + Point.RAx]!,
+          r1ay = R[o1 + Point.RAy]!,
+          r1bx = R[o1 + Point.RBx]!,
+          r1by = R[o1 + Point.RBy]!,
+          r2ax = R[o2 + Point.RAx]!,
+          r2ay = R[o2 + Point.RAy]!,
+          r2bx = R[o2 + Point.RBx]!,
+          r2by = R[o2 + Point.RBy]!;
         const vn1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny;
         const vn2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny;
-        const o1 = buf.normalImpulse[q]!,
-          o2 = buf.normalImpulse[q + 1]!;
-        const B11 = buf.block11[i]!,
-          B12 = buf.block12[i]!,
-          B22 = buf.block22[i]!;
-        // K from its inverse B (K = B^-1).
-        const det = 1 / (B11 * B22 - B12 * B12);
-        const K11 = B22 * det,
-          K22 = B11 * det,
-          K12 = -B12 * det;
+        const l1 = R[o1 + Point.NormalImpulse]!,
+          l2 = R[o2 + Point.NormalImpulse]!;
+        const B11 = R[r + Row.B11]!,
+          B12 = R[r + Row.B12]!,
+          B22 = R[r + Row.B22]!;
+        const K11 = R[r + Row.K11]!,
+          K22 = R[r + Row.K22]!,
+          K12 = R[r + Row.K12]!;
         // K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i + e v_n0,i after the impulses x.
-        const c1 = vn1 + e * v1 - (K11 * o1 + K12 * o2),
-          c2 = vn2 + e * v2 - (K12 * o1 + K22 * o2);
+        const c1 = vn1 + e * v1 - (K11 * l1 + K12 * l2),
+          c2 = vn2 + e * v2 - (K12 * l1 + K22 * l2);
         let n1 = -(B11 * c1 + B12 * c2),
           n2 = -(B12 * c1 + B22 * c2);
         let ok = n1 >= 0 && n2 >= 0;
@@ -662,12 +570,12 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
           ok = c1 >= 0 && c2 >= 0;
         }
         if (ok) {
-          const d1 = n1 - o1,
-            d2 = n2 - o2;
-          buf.normalImpulse[q] = n1;
-          buf.normalImpulse[q + 1] = n2;
-          buf.totalNormalImpulse[q] = buf.totalNormalImpulse[q]! + d1;
-          buf.totalNormalImpulse[q + 1] = buf.totalNormalImpulse[q + 1]! + d2;
+          const d1 = n1 - l1,
+            d2 = n2 - l2;
+          R[o1 + Point.NormalImpulse] = n1;
+          R[o2 + Point.NormalImpulse] = n2;
+          R[o1 + Point.TotalNormalImpulse] = R[o1 + Point.TotalNormalImpulse]! + d1;
+          R[o2 + Point.TotalNormalImpulse] = R[o2 + Point.TotalNormalImpulse]! + d2;
           const P1x = d1 * nx,
             P1y = d1 * ny,
             P2x = d2 * nx,
@@ -689,20 +597,20 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       }
     }
     for (let p = 0; p < m; p++) {
-      const q = 2 * i + p;
-      const v0 = buf.relativeVelocity[q]!;
-      if (v0 > -threshold || buf.maxNormalImpulse[q]! === 0) continue;
-      const rax = buf.rAx[q]!,
-        ray = buf.rAy[q]!,
-        rbx = buf.rBx[q]!,
-        rby = buf.rBy[q]!;
+      const o = o1 + p * Point.Stride;
+      const v0 = R[o + Point.RelativeVelocity]!;
+      if (v0 > -threshold || R[o + Point.MaxNormalImpulse]! === 0) continue;
+      const rax = R[o + Point.RAx]!,
+        ray = R[o + Point.RAy]!,
+        rbx = R[o + Point.RBx]!,
+        rby = R[o + Point.RBy]!;
       const vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-      const old = buf.normalImpulse[q]!;
-      let next = old - buf.normalMass[q]! * (vn + e * v0);
+      const old = R[o + Point.NormalImpulse]!;
+      let next = old - R[o + Point.NormalMass]! * (vn + e * v0);
       if (next < 0) next = 0;
       const dl = next - old;
-      buf.normalImpulse[q] = next;
-      buf.totalNormalImpulse[q] = buf.totalNormalImpulse[q]! + dl;
+      R[o + Point.NormalImpulse] = next;
+      R[o + Point.TotalNormalImpulse] = R[o + Point.TotalNormalImpulse]! + dl;
       const Px = dl * nx,
         Py = dl * ny;
       vax -= mA * Px;
@@ -718,54 +626,5 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     sb[b] = vbx;
     sb[b + 1] = vby;
     sb[b + 2] = wb;
-  }
-}
-
-/**
- * After the solve: marks the manifolds that touch, writes begin and end touch events against the
- * previous step's, and keeps this step's rows as the next step's warm-start cache.
- * @category Collision
- */
-export function finishManifolds(world: PhysicsWorld): void {
-  const st = world.collision.shapes;
-  if (!st.active) return;
-  const buf = st.manifolds,
-    prev = st.previous,
-    ev = st.events;
-  if (st.eventStep !== world.steps) {
-    st.eventStep = world.steps;
-    ev.begin.count = 0;
-    ev.end.count = 0;
-    ev.sensorBegin.count = 0;
-    ev.sensorEnd.count = 0;
-  }
-  for (let i = 0, n = buf.count; i < n; i++) {
-    let touching = 0;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
-      const q = 2 * i + p;
-      if (buf.totalNormalImpulse[q]! > 0 || buf.separation[q]! < 0) touching = 1;
-    }
-    buf.touching[i] = touching;
-    if (touching === 0) continue;
-    const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
-    if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
-    const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
-    ev.begin.px[k] = buf.px[2 * i]!;
-    ev.begin.py[k] = buf.py[2 * i]!;
-    ev.begin.nx[k] = buf.nx[i]!;
-    ev.begin.ny[k] = buf.ny[i]!;
-    let approach = 0;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
-    ev.begin.approachSpeed[k] = approach;
-  }
-  rotateManifolds(st);
-  // End events: pairs that touched last step and do not now (`previous` is now this step's rows).
-  const now = st.previous,
-    old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
-  for (let i = 0, n = st.lastCount; i < n; i++) {
-    if (old.touching[i] !== 1) continue;
-    const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);
-    if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
-    pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
   }
 }

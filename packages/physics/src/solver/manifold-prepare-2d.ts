@@ -1,0 +1,300 @@
+import { pushEvent } from '../collision/events.js';
+import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
+import { BodyType } from '../collision/state.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { packManifoldRows } from './manifold-rows-2d.js';
+
+/**
+ * The shape contacts' rows before and after the substeps (solver/manifold-rows-2d.ts describes the rows
+ * and runs the substeps' stages): each manifold's bodies join the solver's packed body list, its
+ * material, effective masses, start-of-step velocities and warm-start impulses are worked out and
+ * packed into the solver rows, and after the solve its touch events are written and it becomes the
+ * next step's warm-start cache.
+ */
+
+/**
+ * Stiffness of shape contacts, as a fraction of the solver substep rate: the world's `contactHertz`
+ * is capped at this fraction (contacts against infinite mass get twice it). Box2D caps contact
+ * stiffness at a quarter of the substep rate; with flat, two-point manifolds that is unstable in tall
+ * pyramids here (sequential impulses ring and the pile shears), and an eighth is stable: 30 Hz at 4
+ * substeps of 1/60 s (Box2D's default contact stiffness), 60 Hz at 8. Measured on the `pyramid`
+ * scene, base 40: kinetic energy decays at an eighth and persists at 0.19 and 0.25.
+ */
+const SHAPE_HERTZ_FRACTION = 0.125;
+
+/** Writes Box2D's soft-constraint coefficients (b2MakeSoft) for `hertz` and damping ratio `zeta` over step `h` into out[0..2]: bias rate, mass scale, impulse scale. */
+function makeSoftInto(out: Float64Array, hertz: number, zeta: number, h: number): void {
+  if (hertz === 0) {
+    out[0] = 0;
+    out[1] = 1;
+    out[2] = 0;
+    return;
+  }
+  const omega = 2 * Math.PI * hertz;
+  const a1 = 2 * zeta + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  out[0] = omega / a1;
+  out[1] = a2 * a3;
+  out[2] = a3;
+}
+
+/**
+ * `list` if it holds `n` entries, else a copy in an array of at least n (twice its length). Growth runs
+ * only in a world's first steps, before V8 records type feedback: inside the callers' loops it would
+ * be compiled as a deoptimisation that throws the whole loop back to the interpreter in a later world.
+ */
+function withRoom(list: Int32Array, n: number): Int32Array {
+  if (list.length >= n) return list;
+  const grown = new Int32Array(Math.max(n, 2 * list.length));
+  grown.set(list);
+  return grown;
+}
+
+/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length); see withRoom. */
+function atLeast(a: Float64Array, n: number): Float64Array {
+  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
+}
+/**
+ * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
+ * started, same stamp), writes the rows' indices, and returns the new solver body count.
+ * @category Collision
+ */
+export function gatherManifoldBodies(world: PhysicsWorld, count: number): number {
+  const cs = world.collision;
+  const buf = cs.shapes.manifolds;
+  const n = buf.count;
+  if (n === 0) return count;
+  const mark = cs.solverMark,
+    index = cs.solverIndex,
+    stamp = cs.solverStamp,
+    type = cs.bodyType;
+  // Room for both bodies of every row, made before the loop (see withRoom).
+  const list = withRoom(cs.solverBodies, count + 2 * n);
+  const A = buf.bodyA,
+    B = buf.bodyB,
+    IA = buf.ia,
+    IB = buf.ib;
+  for (let i = 0; i < n; i++) {
+    for (let side = 0; side < 2; side++) {
+      const e = side === 0 ? A[i]! : B[i]!;
+      const t = type[e]!;
+      let k = 0;
+      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
+        if (mark[e] !== stamp) {
+          mark[e] = stamp;
+          index[e] = count;
+          list[count++] = e;
+        }
+        k = index[e]!;
+      }
+      if (side === 0) IA[i] = k;
+      else IB[i] = k;
+    }
+  }
+  cs.solverBodies = list;
+  return count;
+}
+
+/**
+ * Material, effective masses, start-of-step velocities and warm start of every manifold.
+ * @category Collision
+ */
+export function prepareManifolds(world: PhysicsWorld): void {
+  const cs = world.collision,
+    st = cs.shapes,
+    buf = st.manifolds;
+  const n = buf.count;
+  const count = cs.solverBodyCount;
+  st.angleBase = atLeast(st.angleBase, count);
+  const ex = cs.bodyExtra,
+    base = st.angleBase;
+  for (let k = 1; k < count; k++) base[k] = ex[k * 6 + 5]!;
+  base[0] = 0;
+  if (n === 0) return;
+  const set = cs.settings;
+  const hs = world.h / set.solverSubsteps;
+  const hertz = Math.min(set.contactHertz, SHAPE_HERTZ_FRACTION / hs);
+  makeSoftInto(st.softness, hertz, set.contactDampingRatio, hs);
+  makeSoftInto(st.rigidSoftness, 2 * hertz, set.contactDampingRatio, hs);
+  const c = world.components,
+    sb = cs.bodyState;
+  // Where the solver starts each body (its displacement 0) relative to where the narrowphase measured
+  // it (PreviousPosition): separations are corrected by the difference, so the rows agree with
+  // whatever base the solver chooses.
+  const list = cs.solverBodies,
+    ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y;
+  const eM = c.Material.restitution,
+    fM = c.Material.friction,
+    sM = c.Material.staticFriction;
+  const S = c.Shape;
+  const box = cs.boundary;
+  const stamp = world.spawnStamp;
+  const stick = cs.settings.stickSpeed;
+  const prev = st.previous;
+  for (let i = 0; i < n; i++) {
+    const ea = buf.shapeA[i]!,
+      eb = buf.shapeB[i]!;
+    const oa = buf.ia[i]! * 8,
+      ob = buf.ib[i]! * 8;
+    const mA = sb[oa + 5]!,
+      iA = sb[oa + 6]!,
+      mB = sb[ob + 5]!,
+      iB = sb[ob + 6]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!;
+    // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
+    let ra: number, fa: number, sa: number;
+    if (ea < 0) {
+      ra = box.restitution;
+      fa = box.friction;
+      sa = box.staticFriction;
+    } else {
+      ra = eM[ea]!;
+      fa = fM[ea]!;
+      sa = sM[ea]!;
+    }
+    const mu = Math.sqrt(fa * fM[eb]!),
+      mus = Math.sqrt(sa * sM[eb]!);
+    buf.friction[i] = mu;
+    buf.restitution[i] = Math.max(ra, eM[eb]!);
+    // Rolling resistance of round shapes: coefficient times the rolling radius.
+    let roll = 0;
+    if (ea > 0 && S.body.length > ea && S.body[ea] === buf.bodyA[i] && S.count[ea]! <= 2 && S.count[ea]! > 0)
+      roll = S.rollingResistance[ea]! * S.radius[ea]!;
+    if (S.body.length > eb && S.body[eb] === buf.bodyB[i] && S.count[eb]! <= 2 && S.count[eb]! > 0)
+      roll = Math.max(roll, S.rollingResistance[eb]! * S.radius[eb]!);
+    buf.rolling[i] = roll;
+    buf.rollingMass[i] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    buf.rollingImpulse[i] = 0;
+    buf.stampA[i] = ea > 0 ? stamp[ea]! : 0;
+    buf.stampB[i] = stamp[eb]!;
+    let j = findPrevious(st, ea, eb);
+    if (j >= 0 && (prev.stampA[j] !== buf.stampA[i] || prev.stampB[j] !== buf.stampB[i])) j = -1;
+    if (j >= 0) buf.rollingImpulse[i] = prev.rollingImpulse[j]!;
+    const vax = sb[oa]!,
+      vay = sb[oa + 1]!,
+      wa = sb[oa + 2]!,
+      vbx = sb[ob]!,
+      vby = sb[ob + 1]!,
+      wb = sb[ob + 2]!;
+    const ka = buf.ia[i]!,
+      kb = buf.ib[i]!;
+    const ea6 = ka * 6,
+      eb6 = kb * 6;
+    const offAx = ka === 0 ? 0 : ex[ea6]! - ox[list[ka]!]!,
+      offAy = ka === 0 ? 0 : ex[ea6 + 1]! - oy[list[ka]!]!;
+    const offBx = kb === 0 ? 0 : ex[eb6]! - ox[list[kb]!]!,
+      offBy = kb === 0 ? 0 : ex[eb6 + 1]! - oy[list[kb]!]!;
+    let vtMax = 0;
+    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
+      const q = 2 * i + p;
+      const rax = buf.rAx[q]!,
+        ray = buf.rAy[q]!,
+        rbx = buf.rBx[q]!,
+        rby = buf.rBy[q]!;
+      buf.separation[q] = buf.separation[q]! + (offBx - offAx) * nx + (offBy - offAy) * ny;
+      const rnA = rax * ny - ray * nx,
+        rnB = rbx * ny - rby * nx;
+      const kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+      buf.normalMass[q] = kn > 0 ? 1 / kn : 0;
+      const rtA = rax * nx + ray * ny,
+        rtB = rbx * nx + rby * ny; // r x t with t = (-n_y, n_x)
+      const kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+      buf.tangentMass[q] = kt > 0 ? 1 / kt : 0;
+      const dvx = vbx - wb * rby - vax + wa * ray,
+        dvy = vby + wb * rbx - vay - wa * rax;
+      buf.relativeVelocity[q] = dvx * nx + dvy * ny;
+      const vt = Math.abs(-dvx * ny + dvy * nx);
+      if (vt > vtMax) vtMax = vt;
+      buf.maxNormalImpulse[q] = 0;
+      buf.totalNormalImpulse[q] = 0;
+      let ln = 0,
+        lt = 0;
+      if (j >= 0) {
+        const id = buf.id[q]!;
+        for (let r = 0, pm = prev.pointCount[j]!; r < pm; r++) {
+          if (prev.id[2 * j + r] === id) {
+            ln = prev.normalImpulse[2 * j + r]!;
+            lt = prev.tangentImpulse[2 * j + r]!;
+            break;
+          }
+        }
+      }
+      buf.normalImpulse[q] = ln;
+      buf.tangentImpulse[q] = lt;
+    }
+    buf.frictionBound[i] = vtMax < stick ? Math.max(mus, mu) : mu;
+    // Block solve of two-point manifolds (Catto's block solver of Box2D 2.x): K = J M^-1 J^T over the two normal rows.
+    buf.blockValid[i] = 0;
+    if (buf.pointCount[i] === 2) {
+      const q = 2 * i;
+      const rn1A = buf.rAx[q]! * ny - buf.rAy[q]! * nx,
+        rn1B = buf.rBx[q]! * ny - buf.rBy[q]! * nx;
+      const rn2A = buf.rAx[q + 1]! * ny - buf.rAy[q + 1]! * nx,
+        rn2B = buf.rBx[q + 1]! * ny - buf.rBy[q + 1]! * nx;
+      const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+      const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+      const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+      const det = k11 * k22 - k12 * k12;
+      // Box2D's condition-number guard: the rows must not be nearly parallel.
+      if (k11 * k11 < 1000 * det && det > 0) {
+        const inv = 1 / det;
+        buf.block11[i] = k22 * inv;
+        buf.block12[i] = -k12 * inv;
+        buf.block22[i] = k11 * inv;
+        buf.blockValid[i] = 1;
+      }
+    }
+  }
+  packManifoldRows(st, n);
+}
+/**
+ * After the solve: marks the manifolds that touch, writes begin and end touch events against the
+ * previous step's, and keeps this step's rows as the next step's warm-start cache.
+ * @category Collision
+ */
+export function finishManifolds(world: PhysicsWorld): void {
+  const st = world.collision.shapes;
+  if (!st.active) return;
+  const buf = st.manifolds,
+    prev = st.previous,
+    ev = st.events;
+  if (st.eventStep !== world.steps) {
+    st.eventStep = world.steps;
+    ev.begin.count = 0;
+    ev.end.count = 0;
+    ev.sensorBegin.count = 0;
+    ev.sensorEnd.count = 0;
+  }
+  for (let i = 0, n = buf.count; i < n; i++) {
+    let touching = 0;
+    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
+      const q = 2 * i + p;
+      if (buf.totalNormalImpulse[q]! > 0 || buf.separation[q]! < 0) touching = 1;
+    }
+    buf.touching[i] = touching;
+    if (touching === 0) continue;
+    const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
+    if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
+    const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
+    ev.begin.px[k] = buf.px[2 * i]!;
+    ev.begin.py[k] = buf.py[2 * i]!;
+    ev.begin.nx[k] = buf.nx[i]!;
+    ev.begin.ny[k] = buf.ny[i]!;
+    let approach = 0;
+    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
+    ev.begin.approachSpeed[k] = approach;
+  }
+  rotateManifolds(st);
+  // End events: pairs that touched last step and do not now (`previous` is now this step's rows).
+  const now = st.previous,
+    old = st.manifolds; // old: the buffer just emptied, still holding last step's rows
+  for (let i = 0, n = st.lastCount; i < n; i++) {
+    if (old.touching[i] !== 1) continue;
+    const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);
+    if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
+    pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
+  }
+}
