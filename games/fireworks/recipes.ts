@@ -10,12 +10,13 @@
  * show's quadratic drag (heavier drag: the stars slow sooner and droop, as willow stars do). The
  * names are the pyrotechnic ones; what they look like in the sky:
  *
- * - peony: a sphere (a disc seen from the side) of coloured stars that fade;
+ * - peony: a sphere of coloured stars that fade, seen from the side (a disc brightest at its rim:
+ *   `sphere`);
  * - chrysanthemum: the same with longer-lived stars whose fading tails turn gold (its "petals");
  * - willow: slow, long-burning gold stars under heavy drag that droop like branches;
  * - palm: a few big, fast comets, each shedding glitter as it dies;
  * - crossette: a few stars that each split into four after half a second;
- * - ring: every star at the same speed, so the burst is a ring;
+ * - ring: every star at the same speed in the sky's plane, so the burst is a flat ring;
  * - strobe: short white flashes that flash again where they die, for a while (a chain of onDeath);
  * - crackle: the book's rule (Ramtal and Dobre ch. 12): every star bursts into smaller stars when it
  *   dies, up to the show's `generations`.
@@ -43,8 +44,15 @@ export interface ShellRecipe {
   readonly name: string;
   /** Stars of a normal burst as a fraction of the show's `sparks`, in (0, 2]. */
   readonly stars: number;
-  /** Launch speed range as fractions of the burst speed; min = max makes a ring. */
+  /** Launch speed range as fractions of the burst speed; min = max makes a ring (unless `sphere`). */
   readonly speed: readonly [number, number];
+  /**
+   * Whether the stars leave as a spherical shell seen from the side (addEmitter's projectSphere):
+   * only the part of each star's speed across the line of sight shows, so a burst fills a disc that
+   * is brightest at its rim, as a real shell looks; false keeps a flat ring. (Crackle's stars come
+   * from the show's spark emitters, which are spheres: its flag says so, the show does not read it.)
+   */
+  readonly sphere: boolean;
   /** Star lifetime range, s. */
   readonly lifetime: readonly [number, number];
   /** Factor on the show's quadratic drag, >= 0. */
@@ -67,7 +75,8 @@ export const RECIPES = Object.freeze({
   peony: {
     name: 'peony',
     stars: 1,
-    speed: [0.3, 1],
+    speed: [0.8, 1],
+    sphere: true,
     lifetime: [1.4, 2.2],
     drag: 1,
     size: [1.3, 0.35],
@@ -78,7 +87,8 @@ export const RECIPES = Object.freeze({
   chrysanthemum: {
     name: 'chrysanthemum',
     stars: 1,
-    speed: [0.55, 1],
+    speed: [0.85, 1],
+    sphere: true,
     lifetime: [2.2, 3],
     drag: 1.2,
     size: [1.1, 0.3],
@@ -89,7 +99,8 @@ export const RECIPES = Object.freeze({
   willow: {
     name: 'willow',
     stars: 0.8,
-    speed: [0.25, 0.6],
+    speed: [0.5, 0.6],
+    sphere: true,
     lifetime: [3.5, 5],
     drag: 8,
     size: [1.2, 0.45],
@@ -101,6 +112,7 @@ export const RECIPES = Object.freeze({
     name: 'palm',
     stars: 0.12,
     speed: [0.85, 1.1],
+    sphere: true,
     lifetime: [1.6, 2.2],
     drag: 0.4,
     size: [2.4, 0.9],
@@ -112,6 +124,7 @@ export const RECIPES = Object.freeze({
     name: 'crossette',
     stars: 0.2,
     speed: [0.7, 0.85],
+    sphere: true,
     lifetime: [0.6, 0.8],
     drag: 0.5,
     size: [1.6, 1.2],
@@ -123,6 +136,7 @@ export const RECIPES = Object.freeze({
     name: 'ring',
     stars: 1,
     speed: [1, 1],
+    sphere: false,
     lifetime: [1.5, 1.9],
     drag: 1,
     size: [1.3, 0.4],
@@ -133,7 +147,8 @@ export const RECIPES = Object.freeze({
   strobe: {
     name: 'strobe',
     stars: 0.8,
-    speed: [0.15, 0.6],
+    speed: [0.45, 0.6],
+    sphere: true,
     lifetime: [0.15, 0.3],
     drag: 2,
     size: [1.1, 0.2],
@@ -145,6 +160,7 @@ export const RECIPES = Object.freeze({
     name: 'crackle',
     stars: 1,
     speed: [0.3, 1],
+    sphere: true,
     lifetime: [1.4, 2.4],
     drag: 1,
     size: [1.3, 0.35],

@@ -318,6 +318,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
   const sparks = PALETTE.map((color, i) =>
     addEmitter(world, {
       speed: [SPEED_MIN * BURST_SPEED, BURST_SPEED],
+      // A spherical shell seen from the side (RECIPES.crackle.sphere).
+      projectSphere: true,
       lifetime: [1.4, 2.4],
       inheritVelocity: 1,
       policy,
@@ -509,6 +511,7 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
   }
   const em = addEmitter(world, {
     speed: [recipe.speed[0] * BURST_SPEED, recipe.speed[1] * BURST_SPEED],
+    projectSphere: recipe.sphere,
     lifetime: [recipe.lifetime[0], recipe.lifetime[1]],
     inheritVelocity: 1,
     policy,

@@ -1,7 +1,7 @@
 /**
  * The shell recipes of the fireworks show (games/fireworks/recipes.ts) burst as their names say,
  * checked on the physics state right after the burst and over the stars' lives: a ring's stars all
- * leave at one speed, a peony's spread over [0.3, 1] of it; crossette stars split into four; willow
+ * leave at one speed, a peony's (a sphere seen from the side) from 0 to its largest; crossette stars split into four; willow
  * stars, under eight times the drag, fall at a terminal speed sqrt(8) times lower; strobes flash
  * again where they die; the auto-show plays PROGRAMME in order.
  */
@@ -54,7 +54,7 @@ function recipeEmitterOf(world: PhysicsWorld, show: FireworksShow, recipe: Recip
 }
 
 describe('shell recipes', () => {
-  test('ring: every star leaves at the same speed relative to the shell (to 1e-9); peony: speeds spread over [0.3, 1] x 16 m/s', () => {
+  test('ring: every star leaves at the same speed relative to the shell (to 1e-9); peony: a sphere seen side-on, speeds from near 0 to 16 m/s', () => {
     const ring = burstOne('ring');
     const V = ring.world.components.Velocity;
     const speeds = starsOf(ring.world, ring.em).map((e) => Math.hypot(V.x[e]! - ring.shellVelocity[0], V.y[e]! - ring.shellVelocity[1]));
@@ -64,6 +64,10 @@ describe('shell recipes', () => {
     const P = peony.world.components.Velocity;
     const ps = starsOf(peony.world, peony.em).map((e) => Math.hypot(P.x[e]! - peony.shellVelocity[0], P.y[e]! - peony.shellVelocity[1]));
     expect(Math.max(...ps) - Math.min(...ps)).toBeGreaterThan(0.5 * BURST_SPEED);
+    // Its stars leave at 0.8 to 1 of the burst speed in 3D; seen side-on, a star moving near the line
+    // of sight shows a small speed: P(v sin(theta) < 0.3 v_max) is about 6%, some 23 of 400 stars (a flat
+    // burst would have none below 0.8).
+    expect(Math.min(...ps)).toBeLessThan(0.3 * BURST_SPEED);
   });
 
   test('crossette: every star that dies splits into four', () => {

@@ -27,6 +27,39 @@ describe('emitters', () => {
     expect(particlesOf(world)).toBe(75);
   });
 
+  test('projectSphere: a burst of one speed fills a disc as a spherical shell seen from the side', () => {
+    // Directions uniform on the sphere, seen side-on: the in-plane speed is s = v sin(theta) with
+    // cos(theta) uniform in [-1, 1], so P(s <= x v) = 1 - sqrt(1 - x^2) (the shell's projected
+    // fraction inside radius x). Against that law at x = 0.5, 0.8 and 0.95 (0.134, 0.4, 0.688) with
+    // 20,000 particles: the binomial standard error is at most 0.0035, tolerance 0.015 (over 4 of them).
+    // Without the option every particle has s = v (a ring): the fractions would be 0, 0 and 0.
+    const world = createPhysicsWorld({ gravity: [0, 0], capacity: 20_100 });
+    const em = addEmitter(world, { position: [0, 0], speed: 3, lifetime: 100, projectSphere: true });
+    emitNow(world, em, 20_000, [0, 0], [0, 0]);
+    const V = world.components.Velocity;
+    const speeds = Array.from(query(world, [world.components.Particle]), (e) => Math.hypot(V.x[e]!, V.y[e]!) / 3);
+    expect(speeds.length).toBe(20_000);
+    expect(Math.max(...speeds)).toBeLessThanOrEqual(1 + 1e-12);
+    for (const x of [0.5, 0.8, 0.95]) {
+      const inside = speeds.filter((s) => s <= x).length / speeds.length;
+      expect(Math.abs(inside - (1 - Math.sqrt(1 - x * x)))).toBeLessThan(0.015);
+    }
+    // The directions in the plane stay uniform: a quarter of them in each quadrant (same tolerance).
+    const up = Array.from(query(world, [world.components.Particle])).filter((e) => V.x[e]! > 0 && V.y[e]! > 0).length;
+    expect(Math.abs(up / 20_000 - 0.25)).toBeLessThan(0.015);
+  });
+
+  test('projectSphere is refused in a 3D world and when not a boolean, and changes nothing then', () => {
+    const w3 = createPhysicsWorld({ dimensions: 3, capacity: 10 });
+    expect(() => addEmitter(w3, { projectSphere: true })).toThrow(/addEmitter: projectSphere is for 2D worlds/);
+    const w2 = createPhysicsWorld({ capacity: 10 });
+    const em = addEmitter(w2, {});
+    expect(() => setEmitter(w2, em, { projectSphere: 1 as unknown as boolean })).toThrow(/setEmitter.*projectSphere/);
+    expect(w2.components.Emitter.projectSphere[slotOf(em)]).toBe(0);
+    setEmitter(w2, em, { projectSphere: true });
+    expect(w2.components.Emitter.projectSphere[slotOf(em)]).toBe(1);
+  });
+
   test('particles expire after their lifetime; the live count settles at rate x lifetime', () => {
     const world = createPhysicsWorld({ gravity: [0, 0], capacity: 2000 });
     addEmitter(world, { rate: 60, lifetime: 0.5 });

@@ -63,6 +63,16 @@ export interface EmitterOptions {
   direction?: ArrayLike<number>;
   /** Half-angle of the emission cone (2D: fan), rad, in [0, pi]. Default pi (every direction). */
   spread?: number;
+  /**
+   * 2D worlds only: emit as a 3D burst seen from the side. Each particle also draws a polar angle
+   * theta with cos(theta) uniform in [-1, 1] (a direction uniform on the sphere) and keeps only the
+   * part of its velocity in the world's plane: in-plane speed = speed * sin(theta), direction from the
+   * fan as usual. A burst of equal speeds then fills a disc densest at its rim, as a spherical shell
+   * of stars looks in projection, instead of a ring. Only the launch is projected: drag and gravity
+   * then act on the in-plane velocity, so under quadratic drag (which slows the fast particles most)
+   * the disc's middle thins as it spreads. Default false. @throws RangeError in a 3D world.
+   */
+  projectSphere?: boolean;
   /** Launch speed range, m/s, >= 0. Default [1, 2]. */
   speed?: number | [number, number];
   /** Lifetime range, s, > 0. Default [1, 2]. */
@@ -158,6 +168,7 @@ export const SETTINGS = [
   'size',
   'direction',
   'spread',
+  'projectSphere',
   'speed',
   'lifetime',
   'inheritVelocity',
@@ -187,6 +198,7 @@ interface CheckedSettings {
   size?: [number, number, number];
   dir?: [number, number, number];
   spread?: number;
+  projectSphere?: boolean;
   speed?: [number, number];
   life?: [number, number];
   inherit?: number;
@@ -237,6 +249,14 @@ export function checkSettings(
   if (options.spread !== undefined) {
     assertInRange(where, 'spread', options.spread, 0, Math.PI);
     out.spread = options.spread;
+  }
+  assertOptionalBoolean(where, 'projectSphere', options.projectSphere);
+  if (options.projectSphere !== undefined) {
+    if (options.projectSphere && d === 3)
+      throw new RangeError(
+        `${where}: projectSphere is for 2D worlds (a 3D emitter's directions are already on the sphere), got true in a 3D world`,
+      );
+    out.projectSphere = options.projectSphere;
   }
   if (options.speed !== undefined) out.speed = range(where, 'speed', options.speed, false);
   if (options.lifetime !== undefined) out.life = range(where, 'lifetime', options.lifetime, true);
@@ -291,6 +311,7 @@ export function writeSettings(world: PhysicsWorld, em: number, s: CheckedSetting
     E.dirZ[em] = s.dir[2];
   }
   if (s.spread !== undefined) E.spread[em] = s.spread;
+  if (s.projectSphere !== undefined) E.projectSphere[em] = s.projectSphere ? 1 : 0;
   if (s.speed) {
     E.speedMin[em] = s.speed[0];
     E.speedMax[em] = s.speed[1];

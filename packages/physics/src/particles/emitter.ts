@@ -46,9 +46,10 @@ import { archetypeFor, headingOf, particleKind, setOrigin, spawnOne } from './sp
  * checked, and room for the emitter made sure of, before anything changes.
  * @returns the emitter's handle (the body's handle when attached).
  * @throws TypeError on options that are not an object, unknown or null options, a non-boolean `enabled`
- *   or malformed vectors; RangeError on negative rates, speeds or sizes, lifetimes <= 0, spread outside
- *   [0, pi], inherit outside [0, 1], an unknown shape or policy, an `attachTo` or `onDeath.emitter`
- *   that was removed or is of the wrong kind, or a full world.
+ *   or `projectSphere`, or malformed vectors; RangeError on negative rates, speeds or sizes, lifetimes
+ *   <= 0, spread outside [0, pi], inherit outside [0, 1], an unknown shape or policy, `projectSphere`
+ *   in a 3D world, an `attachTo` or `onDeath.emitter` that was removed or is of the wrong kind, or a
+ *   full world.
  * @category Particles
  */
 export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): number {
@@ -105,6 +106,7 @@ export function addEmitter(world: PhysicsWorld, options: EmitterOptions = {}): n
   E.dirY[em] = 1;
   E.dirZ[em] = 0;
   E.spread[em] = Math.PI;
+  E.projectSphere[em] = 0;
   E.speedMin[em] = 1;
   E.speedMax[em] = 2;
   E.lifeMin[em] = 1;

@@ -89,8 +89,14 @@ export function draw(world: PhysicsWorld, em: number): void {
   let vx: number, vy: number, vz: number;
   if (!is3D) {
     const a = origin[6]! + rng.range(-spread, spread);
-    vx = Math.cos(a);
-    vy = Math.sin(a);
+    // A 3D burst seen from the side (projectSphere): cos(theta) uniform in [-1, 1], in-plane part sin(theta).
+    let f = 1;
+    if (E.projectSphere[em] === 1) {
+      const c = rng.range(-1, 1);
+      f = Math.sqrt(1 - c * c);
+    }
+    vx = Math.cos(a) * f;
+    vy = Math.sin(a) * f;
     vz = 0;
   } else {
     // Uniform in the cone of half-angle `spread` about d: cos(theta) uniform in [cos spread, 1].

@@ -292,6 +292,7 @@ export interface Components {
     dirY: Float64Array;
     dirZ: Float64Array;
     spread: Float64Array;
+    projectSphere: Uint8Array;
     speedMin: Float64Array;
     speedMax: Float64Array;
     lifeMin: Float64Array;
@@ -614,6 +615,7 @@ export function createComponents(capacity: number, previousPosition = true): Com
       dirY: z(),
       dirZ: z(),
       spread: z(),
+      projectSphere: new Uint8Array(0),
       speedMin: z(),
       speedMax: z(),
       lifeMin: z(),
