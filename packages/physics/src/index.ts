@@ -156,22 +156,7 @@ export { eulerAcceleration } from './integrators/euler-equations.js';
 export type { Integrator } from './integrators/integrate.js';
 export { INTEGRATORS, integrateSystem } from './integrators/integrate.js';
 export { isSleeping, sleepSystem, wakeAll, wakeBody, wakeSystem } from './islands/sleep.js';
-export type {
-  DistanceJointOptions,
-  JointBaseOptions,
-  MouseJointOptions,
-  PrismaticJointOptions,
-  RevoluteJointOptions,
-  WeldJointOptions,
-  WheelJointOptions,
-} from './joints/api-2d.js';
 export {
-  addDistanceJoint,
-  addMouseJoint,
-  addPrismaticJoint,
-  addRevoluteJoint,
-  addWeldJoint,
-  addWheelJoint,
   isJoint,
   jointAnchors,
   jointAngle,
@@ -180,35 +165,36 @@ export {
   setJointLimits,
   setJointMotor,
   setJointSpring,
-  setMouseTarget,
 } from './joints/api-2d.js';
-export type {
-  BallJoint3DOptions,
-  DistanceJoint3DOptions,
-  FixedJoint3DOptions,
-  HingeJoint3DOptions,
-  Joint3DBaseOptions,
-  SliderJoint3DOptions,
-} from './joints/api-3d.js';
-export {
-  addBallJoint3D,
-  addDistanceJoint3D,
-  addFixedJoint3D,
-  addHingeJoint3D,
-  addSliderJoint3D,
-  joint3DBreaks,
-  removeJoint3D,
-  setBallJoint3DCone,
-  setDistanceJoint3DLength,
-  setDistanceJoint3DSpring,
-  setJoint3DBreak,
-  setJoint3DLimits,
-  setJoint3DMotor,
-} from './joints/api-3d.js';
+export { joint3DBreaks, removeJoint3D, setJoint3DBreak, setJoint3DLimits, setJoint3DMotor } from './joints/api-3d.js';
+export type { BallJoint3DOptions } from './joints/ball-joint-3d.js';
+export { addBallJoint3D, setBallJoint3DCone } from './joints/ball-joint-3d.js';
+export type { DistanceJointOptions } from './joints/distance-joint.js';
+export { addDistanceJoint } from './joints/distance-joint.js';
+export type { DistanceJoint3DOptions } from './joints/distance-joint-3d.js';
+export { addDistanceJoint3D, setDistanceJoint3DLength, setDistanceJoint3DSpring } from './joints/distance-joint-3d.js';
+export type { FixedJoint3DOptions } from './joints/fixed-joint-3d.js';
+export { addFixedJoint3D } from './joints/fixed-joint-3d.js';
+export type { HingeJoint3DOptions } from './joints/hinge-joint-3d.js';
+export { addHingeJoint3D } from './joints/hinge-joint-3d.js';
+export type { JointBaseOptions } from './joints/joint-2d.js';
+export type { Joint3DBaseOptions } from './joints/joint-3d.js';
+export type { MouseJointOptions } from './joints/mouse-joint.js';
+export { addMouseJoint, setMouseTarget } from './joints/mouse-joint.js';
+export type { PrismaticJointOptions } from './joints/prismatic-joint.js';
+export { addPrismaticJoint } from './joints/prismatic-joint.js';
+export type { RevoluteJointOptions } from './joints/revolute-joint.js';
+export { addRevoluteJoint } from './joints/revolute-joint.js';
 export type { Rope, RopeOptions } from './joints/rope.js';
 export { createRope } from './joints/rope.js';
+export type { SliderJoint3DOptions } from './joints/slider-joint-3d.js';
+export { addSliderJoint3D } from './joints/slider-joint-3d.js';
 export type { Joint3DStore } from './joints/store-3d.js';
 export { Joint3DFlag, Joint3DType, joints3DOf } from './joints/store-3d.js';
+export type { WeldJointOptions } from './joints/weld-joint.js';
+export { addWeldJoint } from './joints/weld-joint.js';
+export type { WheelJointOptions } from './joints/wheel-joint.js';
+export { addWheelJoint } from './joints/wheel-joint.js';
 export { rotateFrom, rotateInPlace, rotateVector, rotateVectorInverse } from './math/quaternion.js';
 export { Rng } from './math/rng.js';
 export type { BulkParticleOptions } from './particles/bulk.js';

@@ -31,7 +31,7 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
   const bi = sc.body[i]!,
     bj = sc.body[j]!;
   if (bi === bj) return;
-  if (jointKeepsApart(world.joints, bi, bj)) return; // jointed without collideConnected (joints/api-3d.ts)
+  if (jointKeepsApart(world.joints, bi, bj)) return; // jointed without collideConnected (joints/joint-3d.ts)
   // A moving body reaching a sleeping one: the sleeper takes part as static this step, and the sleep system wakes it.
   // Balls against balls are the ball narrowphase's.
   if (sc.ball[i] && sc.ball[j]) return;

@@ -11,7 +11,7 @@ import {
   assertVector,
   describe,
 } from '../world/validate.js';
-import { addDistanceJoint } from './api-2d.js';
+import { addDistanceJoint } from './distance-joint.js';
 
 /**
  * Options of `createRope`. Unknown fields are rejected.

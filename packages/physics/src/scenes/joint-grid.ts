@@ -1,5 +1,5 @@
 import { addBody } from '../bodies/api.js';
-import { addRevoluteJoint } from '../joints/api-2d.js';
+import { addRevoluteJoint } from '../joints/revolute-joint.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';

@@ -429,7 +429,7 @@ export interface Components {
   };
   /**
    * A joint between two 2D bodies (its own entity: see world/joint-store-2d.ts for every field and
-   * joints/api-2d.ts for addDistanceJoint, addRevoluteJoint, ...). Removing either body removes it.
+   * joints/distance-joint.ts for addDistanceJoint, revolute-joint.ts for addRevoluteJoint, ...). Removing either body removes it.
    */
   Joint: JointStore;
   /** A link of a cloth between two point bodies (its own entity: see world/cloth-store.ts; `createCloth` makes them). */

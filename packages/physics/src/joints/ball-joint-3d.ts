@@ -1,0 +1,77 @@
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, describe } from '../world/validate.js';
+import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
+import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
+
+/**
+ * The 3D ball-and-socket joint (a shared point, with an optional cone limit on B's axis): its options,
+ * addBallJoint3D and setBallJoint3DCone. Its rows are solved with the other 3D joints'
+ * (joints/solver-3d.ts).
+ */
+
+/**
+ * Options of `addBallJoint3D`.
+ * @category Joints and ropes
+ */
+export interface BallJoint3DOptions extends Joint3DBaseOptions {
+  /** The joint's point (world, m). Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** Cone limit: the axis (world, when made) that B's copy of it may swing away from A's by at most `coneAngle`. Default (0, 1, 0). */
+  axis?: ArrayLike<number>;
+  /** Cone half angle, rad, in (0, pi). Default none (free swing). */
+  coneAngle?: number;
+}
+
+/**
+ * Ball and socket: the anchor points of A and B coincide (three soft rows); with `coneAngle`, B's axis
+ * stays within that angle of A's (a swing cone). @returns the joint's handle.
+ * @throws TypeError | RangeError `addBallJoint3D: <param> must be ...` in a 2D world, on missing or bad
+ *   bodies (removed, not 3D bodies, the same twice), bad vectors, a cone angle outside (0, pi), a bad
+ *   break threshold, or a full world.
+ * @category Joints and ropes
+ */
+export function addBallJoint3D(world: PhysicsWorld, options: BallJoint3DOptions): number {
+  const where = 'addBallJoint3D';
+  const e = ends(where, world, options, ['anchor', 'axis', 'coneAngle']);
+  const p = options.anchor === undefined ? centre(world, e.b) : point(where, 'anchor', options.anchor);
+  const axis = options.axis === undefined ? ([0, 1, 0] as [number, number, number]) : unit(where, 'axis', options.axis);
+  if (options.coneAngle !== undefined) {
+    assertFinite(where, 'coneAngle', options.coneAngle);
+    if (!(options.coneAngle > 0 && options.coneAngle < Math.PI))
+      throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(options.coneAngle)}`);
+  }
+  const j = make(world, where, Joint3DType.Ball, e, options, p, p, axis);
+  const s = joints3DOf(world, true);
+  if (options.coneAngle !== undefined) {
+    s.flags[j] = Joint3DFlag.Cone;
+    s.upper[j] = options.coneAngle;
+  }
+  return currentHandle(world, j);
+}
+
+/**
+ * Sets (or with `coneAngle` null removes) a ball-and-socket joint's cone limit: B's copy of the cone
+ * axis (the `axis` given to addBallJoint3D, default (0, 1, 0), as the bodies were when the joint was
+ * made) may swing at most `coneAngle` away from A's. A joint made without a cone gets one about that
+ * axis. The cone's warm-start impulse starts again from zero; the bodies wake. Bodies already outside
+ * a narrower cone are brought back at the joints' soft rate (60 Hz, capped at a quarter of the
+ * substep rate), not in one step.
+ * @param coneAngle half angle, rad, in (0, pi); null removes the limit.
+ * @throws RangeError `setBallJoint3DCone: joint must be ...` on a removed entity or a joint that is not
+ *   a 3D ball joint; TypeError | RangeError `setBallJoint3DCone: coneAngle must be ...` naming the value.
+ *   A throwing call changes nothing.
+ * @category Joints and ropes
+ */
+export function setBallJoint3DCone(world: PhysicsWorld, joint: number, coneAngle: number | null): void {
+  const where = 'setBallJoint3DCone';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Ball]);
+  if (coneAngle !== null) {
+    assertFinite(where, 'coneAngle', coneAngle);
+    if (!(coneAngle > 0 && coneAngle < Math.PI)) throw new RangeError(`${where}: coneAngle must be in (0, pi), got ${describe(coneAngle)}`);
+    s.flags[j] = s.flags[j]! | Joint3DFlag.Cone;
+    s.upper[j] = coneAngle;
+  } else s.flags[j] = s.flags[j]! & ~Joint3DFlag.Cone;
+  s.limit[j] = 0;
+  wakeJoint3D(world, s, j);
+}

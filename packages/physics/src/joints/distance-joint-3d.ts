@@ -1,0 +1,153 @@
+import { currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertNonNegative, assertPositive, describe } from '../world/validate.js';
+import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
+import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
+
+/**
+ * The 3D distance joint (a rod, a spring, or a rope through its length limits): its options,
+ * addDistanceJoint3D, setDistanceJoint3DLength and setDistanceJoint3DSpring. Its rows are solved with the
+ * other 3D joints' (joints/solver-3d.ts).
+ */
+
+/**
+ * Options of `addDistanceJoint3D`.
+ * @category Joints and ropes
+ */
+export interface DistanceJoint3DOptions extends Joint3DBaseOptions {
+  /** Anchor on A (world, m); required when A is the world, else default A's centre. */
+  anchorA?: ArrayLike<number>;
+  /** Anchor on B (world, m). Default B's centre. */
+  anchorB?: ArrayLike<number>;
+  /** Rest length, m, > 0. Default the anchors' distance when made. */
+  length?: number;
+  /** Limits, m: 0 <= minLength <= length <= maxLength. Defaults: both `length` (a rigid rod), or 0 and Infinity with a spring. A rope: minLength 0. */
+  minLength?: number;
+  maxLength?: number;
+  /**
+   * Spring frequency, Hz (>= 0; 0 rigid), and damping ratio (>= 0). Default 0, 0. A spring of fixed stiffness
+   * k = (2 pi hertz)^2 / K_ref, K_ref = mA + mB + (tr(IA^-1) |rA|^2 - rA . IA^-1 rA + the same for B) / 3 (the
+   * anchors' levers from the centres; no rotation changes it), so a lever's swing does no work on it.
+   */
+  hertz?: number;
+  dampingRatio?: number;
+}
+
+/**
+ * Distance: the anchors stay `length` apart (a rod), spring toward it (`hertz` > 0), or stay within
+ * [minLength, maxLength] (a rope: minLength 0). @returns the joint's handle.
+ * @throws TypeError | RangeError `addDistanceJoint3D: <param> must be ...` as addBallJoint3D, on a missing
+ *   anchorA with the world as A, a length <= 0, limits out of order, a negative spring value.
+ * @category Joints and ropes
+ */
+export function addDistanceJoint3D(world: PhysicsWorld, options: DistanceJoint3DOptions): number {
+  const where = 'addDistanceJoint3D';
+  const e = ends(where, world, options, ['anchorA', 'anchorB', 'length', 'minLength', 'maxLength', 'hertz', 'dampingRatio']);
+  if (e.a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
+  const pa = options.anchorA === undefined ? centre(world, e.a) : point(where, 'anchorA', options.anchorA);
+  const pb = options.anchorB === undefined ? centre(world, e.b) : point(where, 'anchorB', options.anchorB);
+  const length = options.length ?? Math.hypot(pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
+  assertPositive(where, 'length', length);
+  const hertz = options.hertz ?? 0,
+    zeta = options.dampingRatio ?? 0;
+  assertNonNegative(where, 'hertz', hertz);
+  assertNonNegative(where, 'dampingRatio', zeta);
+  const minL = options.minLength ?? (hertz > 0 ? 0 : length),
+    maxL = options.maxLength ?? (hertz > 0 ? Infinity : length);
+  assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const j = make(world, where, Joint3DType.Distance, e, options, pa, pb, [0, 1, 0]);
+  const s = joints3DOf(world, true);
+  s.length[j] = length;
+  s.lower[j] = minL;
+  s.upper[j] = maxL;
+  s.hertz[j] = hertz;
+  s.dampingRatio[j] = zeta;
+  s.flags[j] = (hertz > 0 ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  return currentHandle(world, j);
+}
+
+/**
+ * A distance joint's rows after a change (joints/solver-3d.ts): the rod row runs without spring and
+ * limits, the spring row with a spring, the lower limit's with limits when lower > 0 or without a
+ * spring, the upper's with limits when upper is finite. A row that no longer runs would still be warm
+ * started from its last impulse, so that impulse is dropped; rows that still run keep theirs.
+ */
+function dropIdleDistanceImpulses(s: Joint3DStore, j: number): void {
+  const f = s.flags[j]!,
+    spring = (f & Joint3DFlag.Spring) !== 0,
+    limit = (f & Joint3DFlag.Limit) !== 0;
+  if (!spring && limit) s.lx[j] = 0;
+  if (!limit || !(s.lower[j]! > 0 || !spring)) s.limit[j] = 0;
+  if (!limit || !Number.isFinite(s.upper[j]!)) s.ly[j] = 0;
+}
+
+/**
+ * Sets a distance joint's rest length and limits, as addDistanceJoint3D's `length`, `minLength` and
+ * `maxLength`: 0 <= minLength <= length <= maxLength, m. Omitted limits default as there, from the
+ * joint's current spring: both `length` without a spring (a rigid rod), 0 and Infinity with one. A
+ * rope of length L: `(L, 0)`. The spring, damping and break thresholds are kept. Limit impulses start
+ * again from zero when the limits change; the rod's or spring's is kept while that row still runs; the
+ * bodies wake. A body away from the new length is brought there at the rod's soft rate (60 Hz, capped
+ * at a quarter of the substep rate), at the spring's own rate, or not at all inside a rope's slack.
+ * @param length rest length, m, finite and > 0.
+ * @param minLength shortest the anchors may get, m, in [0, length].
+ * @param maxLength longest, m, >= length (Infinity allowed).
+ * @throws RangeError `setDistanceJoint3DLength: joint must be ...` on a removed entity or a joint that
+ *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DLength: <param> must be ...`
+ *   naming the parameter and value. A throwing call changes nothing.
+ * @category Joints and ropes
+ */
+export function setDistanceJoint3DLength(world: PhysicsWorld, joint: number, length: number, minLength?: number, maxLength?: number): void {
+  const where = 'setDistanceJoint3DLength';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
+  assertPositive(where, 'length', length);
+  const spring = (s.flags[j]! & Joint3DFlag.Spring) !== 0;
+  const minL = minLength ?? (spring ? 0 : length),
+    maxL = maxLength ?? (spring ? Infinity : length);
+  assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+  const limitsChanged = s.lower[j] !== minL || s.upper[j] !== maxL;
+  s.length[j] = length;
+  s.lower[j] = minL;
+  s.upper[j] = maxL;
+  s.flags[j] = (spring ? Joint3DFlag.Spring : 0) | (minL < maxL ? Joint3DFlag.Limit : 0);
+  if (limitsChanged) {
+    s.limit[j] = 0;
+    s.ly[j] = 0;
+  }
+  dropIdleDistanceImpulses(s, j);
+  wakeJoint3D(world, s, j);
+}
+
+/**
+ * Sets a distance joint's spring: the anchors are pulled toward the rest length by Box2D's soft spring
+ * of natural frequency `hertz` and damping ratio `dampingRatio` (joints/solver-3d.ts). For a body of mass
+ * m on the fixed world, anchored at its centre of mass, that is a spring of stiffness
+ * k = m (2 pi hertz)^2 with a damper of c = 2 m dampingRatio (2 pi hertz): it swings with the period
+ * 2 pi sqrt(m / k) = 1 / hertz (undamped). `hertz` 0 removes the spring: the joint is then rigid between
+ * its limits (a rod when minLength = maxLength; a joint made with a spring and default limits, 0 and
+ * Infinity, then holds nothing: give limits with setDistanceJoint3DLength). Limits are kept; the rod's
+ * or spring's warm-start impulse carries over to the row that replaces it; the bodies wake.
+ * @param hertz natural frequency, Hz, finite and >= 0 (0: no spring).
+ * @param dampingRatio >= 0 (1: critically damped), finite.
+ * @throws RangeError `setDistanceJoint3DSpring: joint must be ...` on a removed entity or a joint that
+ *   is not a 3D distance joint; TypeError | RangeError `setDistanceJoint3DSpring: <param> must be ...`
+ *   naming the parameter and value. A throwing call changes nothing.
+ * @category Joints and ropes
+ */
+export function setDistanceJoint3DSpring(world: PhysicsWorld, joint: number, hertz: number, dampingRatio: number): void {
+  const where = 'setDistanceJoint3DSpring';
+  const { s, j } = requireJoint3D(where, world, joint, [Joint3DType.Distance]);
+  assertNonNegative(where, 'hertz', hertz);
+  assertNonNegative(where, 'dampingRatio', dampingRatio);
+  s.hertz[j] = hertz;
+  s.dampingRatio[j] = dampingRatio;
+  s.flags[j] = hertz > 0 ? s.flags[j]! | Joint3DFlag.Spring : s.flags[j]! & ~Joint3DFlag.Spring;
+  dropIdleDistanceImpulses(s, j);
+  wakeJoint3D(world, s, j);
+}

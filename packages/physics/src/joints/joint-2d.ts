@@ -1,0 +1,278 @@
+import { addComponent, hasComponent } from 'bitecs';
+import { wakeIsland } from '../islands/sleep.js';
+import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
+import { addNoCollide } from '../world/joint-no-collide.js';
+import { ensureJointArrays, IMPULSES } from '../world/joint-state-2d.js';
+import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertFinite, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../world/validate.js';
+
+/**
+ * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see
+ * joints/solver-2d.ts). Every joint is an entity with a `Joint` component holding its two bodies: A (a
+ * body, or the fixed world when omitted or null) and B (a body). Anchors are given in world
+ * coordinates where the bodies are when the joint is made; the joint keeps them in the bodies' frames.
+ * Removing a body removes its joints. A joint may break: past `breakForce` (N) or `breakTorque` (N m)
+ * it is removed and reported in `world.joints.breaks` after the step.
+ */
+
+/**
+ * Options every joint shares.
+ * @category Joints and ropes
+ */
+export interface JointBaseOptions {
+  /** Body A, or omitted / null for the fixed world. */
+  a?: number | null;
+  /** Body B. */
+  b: number;
+  /** Force above which the joint breaks, N, > 0. Default Infinity (never). */
+  breakForce?: number;
+  /** Torque above which the joint breaks, N m, > 0. Default Infinity (never). */
+  breakTorque?: number;
+  /**
+   * Whether bodies A and B still collide with each other (Box2D's collideConnected). Default false: the
+   * contacts between two jointed bodies are skipped (both ball and shape colliders), so a hinge's parts
+   * may overlap at the hinge; true keeps them colliding. Has no effect when A is the world.
+   */
+  collideConnected?: boolean;
+}
+
+/** The option keys every 2D joint takes (JointBaseOptions), for each add*Joint's check of unknown keys. */
+export const BASE_KEYS = ['a', 'b', 'breakForce', 'breakTorque', 'collideConnected'] as const;
+
+/** Where a joint's bodies are: slots and poses read for anchors. */
+interface Ends {
+  a: number;
+  b: number;
+}
+
+/** The slot of body `id` (param `param` of `where`): an entity with position, mass and angle (made by addBody). @throws RangeError otherwise. */
+function requireBody(where: string, param: string, world: PhysicsWorld, id: unknown): number {
+  const slot = resolveEntity(world, id, where, param);
+  const c = world.components;
+  if (!hasComponent(world, slot, c.Position) || !hasComponent(world, slot, c.Mass) || !hasComponent(world, slot, c.Angle)) {
+    throw new RangeError(`${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`);
+  }
+  return slot;
+}
+
+/** Checks a joint's `a` and `b` (a may be omitted or null: the world) and returns their slots. @throws TypeError | RangeError naming `where`. */
+export function checkEnds(where: string, world: PhysicsWorld, options: JointBaseOptions): Ends {
+  if (world.dimensions !== 2) throw new RangeError(`${where}: joints need a 2D world, this world has ${world.dimensions} dimensions`);
+  if (options === undefined || options === null || typeof options !== 'object') {
+    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
+  }
+  const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a);
+  const b = requireBody(where, 'b', world, options.b);
+  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
+  if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
+  if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
+  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
+  return { a, b };
+}
+
+/**
+ * A break limit: a number > 0, Infinity (the default: never breaks) included. @throws TypeError | RangeError
+ * @category Joints and ropes
+ */
+export function assertBreakLimit(where: string, param: string, value: unknown): void {
+  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: never breaks), got ${describe(value)}`);
+}
+
+/** `value` as a 2D point, m, or `fallback` when undefined. @throws TypeError | RangeError on a malformed vector. */
+export function optionalPoint(where: string, param: string, value: unknown, fallback: [number, number]): [number, number] {
+  if (value === undefined) return fallback;
+  assertVector(where, param, value, 2);
+  return [value[0]!, value[1]!];
+}
+
+/** The position of body slot `e`, m (its centre of mass). */
+export function centre(world: PhysicsWorld, e: number): [number, number] {
+  return [world.components.Position.x[e]!, world.components.Position.y[e]!];
+}
+
+/** `value` (an axis, 2 numbers, not zero) normalised, or `fallback` when undefined. @throws TypeError | RangeError naming `where`. */
+export function unitAxis(where: string, value: unknown, fallback: [number, number]): [number, number] {
+  const v = optionalPoint(where, 'axis', value, fallback);
+  const n = Math.hypot(v[0], v[1]);
+  if (!(n > 0)) throw new RangeError(`${where}: axis must not be zero, got ${describe(value)}`);
+  return [v[0] / n, v[1] / n];
+}
+
+/**
+ * Checks an optional pair of limits: both or neither, finite, lower <= upper, inside [-range, range].
+ * @returns whether limits were given. @throws RangeError naming `where` and the parameters.
+ */
+export function checkLimits(where: string, lower: unknown, upper: unknown, lowerName: string, upperName: string, range: number): boolean {
+  if (lower === undefined && upper === undefined) return false;
+  if (lower === undefined || upper === undefined) throw new RangeError(`${where}: give both ${lowerName} and ${upperName}, or neither`);
+  assertFinite(where, lowerName, lower);
+  assertFinite(where, upperName, upper);
+  if (!(lower <= upper)) throw new RangeError(`${where}: ${lowerName} must be <= ${upperName}, got ${lower} > ${upper}`);
+  if (range < Infinity && (lower < -range || upper > range)) {
+    throw new RangeError(`${where}: ${lowerName} and ${upperName} must be in [-${range}, ${range}], got [${lower}, ${upper}]`);
+  }
+  return true;
+}
+
+/**
+ * Makes the joint entity with every field at its default, and the anchors: `anchorA`, `anchorB` are
+ * world points, stored in A's and B's body frames (A's stays a world point if A is the world).
+ */
+export function makeJoint(
+  world: PhysicsWorld,
+  type: JointTypeCode,
+  ends: Ends,
+  anchorA: [number, number],
+  anchorB: [number, number],
+  options: JointBaseOptions,
+): number {
+  const c = world.components;
+  ensureJointArrays(world.joints, world.capacity);
+  const j = createSlot(world, 'addJoint');
+  addComponent(world, j, c.Joint);
+  const J = c.Joint;
+  const { a, b } = ends;
+  J.type[j] = type;
+  J.a[j] = a;
+  J.b[j] = b;
+  const toLocal = (e: number, p: [number, number]): [number, number] => {
+    if (e === 0) return p;
+    const t = c.Angle.value[e]!,
+      co = Math.cos(t),
+      si = Math.sin(t);
+    const dx = p[0] - c.Position.x[e]!,
+      dy = p[1] - c.Position.y[e]!;
+    return [co * dx + si * dy, -si * dx + co * dy];
+  };
+  const la = toLocal(a, anchorA),
+    lb = toLocal(b, anchorB);
+  J.localAx[j] = la[0];
+  J.localAy[j] = la[1];
+  J.localBx[j] = lb[0];
+  J.localBy[j] = lb[1];
+  J.referenceAngle[j] = (b === 0 ? 0 : c.Angle.value[b]!) - (a === 0 ? 0 : c.Angle.value[a]!);
+  J.axisX[j] = 1;
+  J.axisY[j] = 0;
+  J.length[j] = 0;
+  J.minLength[j] = 0;
+  J.maxLength[j] = Infinity;
+  J.hertz[j] = 0;
+  J.dampingRatio[j] = 0;
+  J.angularHertz[j] = 0;
+  J.angularDampingRatio[j] = 0;
+  J.flags[j] = 0;
+  J.lower[j] = 0;
+  J.upper[j] = 0;
+  J.motorSpeed[j] = 0;
+  J.maxMotorForce[j] = 0;
+  J.maxForce[j] = 0;
+  J.breakForce[j] = options.breakForce ?? Infinity;
+  J.breakTorque[j] = options.breakTorque ?? Infinity;
+  J.breakStretch[j] = Infinity;
+  J.force[j] = 0;
+  J.torque[j] = 0;
+  world.joints.impulses.fill(0, j * IMPULSES, (j + 1) * IMPULSES);
+  const att = world.joints.attached;
+  if (a !== 0) {
+    att[a] = att[a]! + 1;
+    wakeIsland(world, a);
+  }
+  if (b !== 0) {
+    att[b] = att[b]! + 1;
+    wakeIsland(world, b);
+  }
+  world.joints.noCollideJoint[j] = 0;
+  if (options.collideConnected !== true) addNoCollide(world.joints, j, a, b);
+  return j;
+}
+
+/** The handle of the joint in `slot` (what the add functions return). */
+export function handle(world: PhysicsWorld, slot: number): number {
+  return currentHandle(world, slot);
+}
+
+/** A revolute, prismatic or wheel joint's checked motor and spring (`checkDrive`). */
+interface Drive {
+  speed: number;
+  maxMotor: number;
+  hertz: number;
+  zeta: number;
+}
+
+/**
+ * Checks a joint's motor (finite `motorSpeed`, `maxName` >= 0, the motor on when > 0) and spring
+ * (`hertz` and `dampingRatio` >= 0) before anything is made, filling in the given defaults.
+ * @throws RangeError `<where>: <param> must be ...` naming the parameter and value.
+ */
+export function checkDrive(
+  where: string,
+  motorSpeed: number | undefined,
+  maxMotor: number | undefined,
+  maxName: string,
+  hertz: number | undefined,
+  zeta: number | undefined,
+  defaultHertz = 0,
+  defaultZeta = 0,
+): Drive {
+  const d: Drive = { speed: motorSpeed ?? 0, maxMotor: maxMotor ?? 0, hertz: hertz ?? defaultHertz, zeta: zeta ?? defaultZeta };
+  assertFinite(where, 'motorSpeed', d.speed);
+  assertNonNegative(where, maxName, d.maxMotor);
+  assertNonNegative(where, 'hertz', d.hertz);
+  assertNonNegative(where, 'dampingRatio', d.zeta);
+  return d;
+}
+
+/** Writes joint j's limits (when `limit`), motor and spring, and sets its Limit, Motor and Spring flags from them. */
+export function storeDrive(
+  world: PhysicsWorld,
+  j: number,
+  limit: boolean,
+  lower: number | undefined,
+  upper: number | undefined,
+  d: Drive,
+): void {
+  const J = world.components.Joint;
+  if (limit) {
+    J.lower[j] = lower!;
+    J.upper[j] = upper!;
+  }
+  J.motorSpeed[j] = d.speed;
+  J.maxMotorForce[j] = d.maxMotor;
+  J.hertz[j] = d.hertz;
+  J.dampingRatio[j] = d.zeta;
+  J.flags[j] = (limit ? JointFlag.Limit : 0) | (d.maxMotor > 0 ? JointFlag.Motor : 0) | (d.hertz > 0 ? JointFlag.Spring : 0);
+}
+
+/** Stores `axis` (a world unit vector) in body A's frame at its current angle (the world's frame when `a` is 0). */
+export function setAxis(world: PhysicsWorld, j: number, a: number, axis: [number, number]): void {
+  const J = world.components.Joint;
+  const t = a === 0 ? 0 : world.components.Angle.value[a]!;
+  const co = Math.cos(t),
+    si = Math.sin(t);
+  J.axisX[j] = co * axis[0] + si * axis[1];
+  J.axisY[j] = -si * axis[0] + co * axis[1];
+}
+
+/** The slot of 2D joint `joint`, of one of `types` if given. @throws RangeError naming `where` otherwise. */
+export function requireJoint(where: string, world: PhysicsWorld, joint: unknown, types?: readonly JointTypeCode[]): number {
+  const J = world.components.Joint;
+  const slot = resolveEntity(world, joint, where, 'joint');
+  if (world.dimensions !== 2 || !hasComponent(world, slot, J)) {
+    throw new RangeError(`${where}: joint must be a joint of this world, got ${describe(joint)} (not a joint)`);
+  }
+  if (types && !types.includes(J.type[slot] as JointTypeCode)) {
+    throw new RangeError(
+      `${where}: joint must be a ${types.map((t) => JOINT_TYPE_NAMES[t]).join(' or ')} joint, got a ${JOINT_TYPE_NAMES[J.type[slot]!]} joint`,
+    );
+  }
+  return slot;
+}
+
+/** Wakes the islands of a joint's bodies. */
+export function wakeJoint(world: PhysicsWorld, j: number): void {
+  const J = world.components.Joint;
+  if (J.a[j] !== 0) wakeIsland(world, J.a[j]!);
+  wakeIsland(world, J.b[j]!);
+}

@@ -1,0 +1,79 @@
+import { hasComponent } from 'bitecs';
+import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../world/validate.js';
+import { centre, checkEnds, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
+
+/**
+ * The 2D mouse joint (a soft, force-capped spring pulling a body's point toward a target, for dragging):
+ * its options, addMouseJoint and setMouseTarget. Its rows are prepared and solved with the other 2D joints'
+ * (joints/prepare-2d.ts, solve-2d.ts).
+ */
+
+/**
+ * Options of `addMouseJoint`.
+ * @category Joints and ropes
+ */
+export interface MouseJointOptions {
+  /** The body dragged. */
+  b: number;
+  /** The point of B grabbed, world, m. Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** Where it is pulled, world, m. Default the anchor. Move it with `setMouseTarget`. */
+  target?: ArrayLike<number>;
+  /** Stiffness of the pull, Hz, > 0. Default 5 Hz. */
+  hertz?: number;
+  /** Its damping ratio, >= 0. Default 0.7. */
+  dampingRatio?: number;
+  /** Largest pulling force, N, > 0. Default 1000 times B's mass in kg (Box2D's samples), N. */
+  maxForce?: number;
+  /** Force above which the joint breaks, N. Default Infinity. */
+  breakForce?: number;
+}
+
+/**
+ * Adds a mouse joint: a soft spring of at most `maxForce` pulling the grabbed point of B toward a
+ * target that the game moves with the pointer (`setMouseTarget`); B's spin is damped softly. Box2D
+ * v3's mouse joint. Remove it with `removeJoint` on release.
+ * @returns the joint entity. @throws TypeError | RangeError on a bad body, options or values.
+ * @category Joints and ropes
+ */
+export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): number {
+  const where = 'addMouseJoint';
+  if (options === null || typeof options !== 'object') throw new TypeError(`${where}: options must be an object, got ${describe(options)}`);
+  assertKnownKeys(where, options, ['b', 'anchor', 'target', 'hertz', 'dampingRatio', 'maxForce', 'breakForce']);
+  const ends = checkEnds(where, world, { b: options.b, ...(options.breakForce !== undefined ? { breakForce: options.breakForce } : {}) });
+  const C = world.components;
+  if (hasComponent(world, ends.b, C.Static) || hasComponent(world, ends.b, C.Kinematic) || !(C.Mass.inv[ends.b]! > 0)) {
+    throw new RangeError(`${where}: b must be a dynamic body (a static or kinematic body cannot be dragged), got ${describe(options.b)}`);
+  }
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
+  const target = optionalPoint(where, 'target', options.target, p);
+  const hertz = options.hertz ?? 5;
+  assertPositive(where, 'hertz', hertz);
+  const zeta = options.dampingRatio ?? 0.7;
+  assertNonNegative(where, 'dampingRatio', zeta);
+  const maxForce = options.maxForce ?? 1000 * world.components.Mass.value[ends.b]!;
+  assertPositive(where, 'maxForce', maxForce);
+  const j = makeJoint(world, JointType.Mouse, ends, target, p, { b: ends.b, breakForce: options.breakForce });
+  const J = world.components.Joint;
+  J.hertz[j] = hertz;
+  J.dampingRatio[j] = zeta;
+  J.maxForce[j] = maxForce;
+  J.flags[j] = JointFlag.Spring;
+  return handle(world, j);
+}
+
+/**
+ * Moves a mouse joint's target, world point, m.
+ * @throws RangeError if `joint` is not a live mouse joint; TypeError | RangeError on a bad point.
+ * @category Joints and ropes
+ */
+export function setMouseTarget(world: PhysicsWorld, joint: number, target: ArrayLike<number>): void {
+  const j = requireJoint('setMouseTarget', world, joint, [JointType.Mouse]);
+  assertVector('setMouseTarget', 'target', target, 2);
+  const J = world.components.Joint;
+  J.localAx[j] = target[0]!;
+  J.localAy[j] = target[1]!;
+  wakeJoint(world, j);
+}

@@ -1,0 +1,68 @@
+import { JointType } from '../world/joint-store-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { assertKnownKeys } from '../world/validate.js';
+import {
+  BASE_KEYS,
+  centre,
+  checkDrive,
+  checkEnds,
+  checkLimits,
+  handle,
+  type JointBaseOptions,
+  makeJoint,
+  optionalPoint,
+  storeDrive,
+} from './joint-2d.js';
+
+/**
+ * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options and
+ * addRevoluteJoint. Its rows are prepared, solved and finished with the other 2D joints'
+ * (joints/prepare-2d.ts, solve-2d.ts, finish-2d.ts).
+ */
+
+/**
+ * Options of `addRevoluteJoint`.
+ * @category Joints and ropes
+ */
+export interface RevoluteJointOptions extends JointBaseOptions {
+  /** The pin, world point, m. Default B's centre. */
+  anchor?: ArrayLike<number>;
+  /** Lower and upper limit of the relative angle (B minus A, from now), rad, in [-pi, pi], lower <= upper. Both or neither. */
+  lowerAngle?: number;
+  upperAngle?: number;
+  /** Motor target speed of B relative to A, rad/s, counter-clockwise. Default 0. */
+  motorSpeed?: number;
+  /** Motor's largest torque, N m, >= 0; the motor is on when > 0. Default 0 (off). */
+  maxMotorTorque?: number;
+  /** Angular spring toward the angle at creation, Hz, >= 0 (0 = none). Default 0. */
+  hertz?: number;
+  /** Damping ratio of the angular spring, >= 0. Default 0. */
+  dampingRatio?: number;
+}
+
+/**
+ * Adds a revolute joint (a pin): B turns about `anchor` relative to A, optionally within angle limits,
+ * driven by a motor of at most `maxMotorTorque` toward `motorSpeed`, or held by an angular spring.
+ * Box2D v3's revolute joint.
+ * @returns the joint entity.
+ * @throws TypeError | RangeError on a missing or removed body, a == b, a 3D world, unknown options,
+ *   only one limit, lowerAngle > upperAngle or outside [-pi, pi], negative maxMotorTorque, hertz or
+ *   damping ratio, non-finite values, or a full world.
+ * @category Joints and ropes
+ */
+export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOptions): number {
+  const where = 'addRevoluteJoint';
+  const ends = checkEnds(where, world, options);
+  assertKnownKeys(
+    where,
+    options,
+    [...BASE_KEYS, 'anchor', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', 'hertz', 'dampingRatio'],
+    ['a'],
+  );
+  const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
+  const limit = checkLimits(where, options.lowerAngle, options.upperAngle, 'lowerAngle', 'upperAngle', Math.PI);
+  const drive = checkDrive(where, options.motorSpeed, options.maxMotorTorque, 'maxMotorTorque', options.hertz, options.dampingRatio);
+  const j = makeJoint(world, JointType.Revolute, ends, p, p, options);
+  storeDrive(world, j, limit, options.lowerAngle, options.upperAngle, drive);
+  return handle(world, j);
+}
