@@ -2,11 +2,46 @@ import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, describe } from '../world/validate.js';
 import { assertBreakLimit, BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
+import {
+  F_DX,
+  F_DY,
+  F_IA,
+  F_IB,
+  F_INVH,
+  F_MA,
+  F_MB,
+  F_RAX,
+  F_RAY,
+  F_RBX,
+  F_RBY,
+  F_VAX,
+  F_VAY,
+  F_VBX,
+  F_VBY,
+  F_WA,
+  F_WB,
+  ILOW,
+  ISPR,
+  IUP,
+  JB,
+  JI,
+  JM,
+  KAX,
+  LEN,
+  MAXL,
+  MINL,
+  ROW_MOVED,
+  ROW_PUSHED,
+  ROW_SKIPPED,
+  SB,
+  SM,
+} from './layout-2d.js';
+import { springImpulse } from './rows-2d.js';
 
 /**
- * The 2D distance joint (a rod, a rope or a spring between two anchors): its options and addDistanceJoint.
- * Its rows are prepared, solved and finished with the other 2D joints' (joints/prepare-2d.ts, solve-2d.ts,
- * finish-2d.ts).
+ * The 2D distance joint (a rod, a rope or a spring between two anchors): its options, addDistanceJoint
+ * and its row solve. Its rows are prepared and finished with the other 2D joints' (joints/prepare-2d.ts,
+ * finish-2d.ts) and solved in their loop (joints/solve-2d.ts).
  */
 
 /**
@@ -84,4 +119,111 @@ export function addDistanceJoint(world: PhysicsWorld, options: DistanceJointOpti
   J.flags[j] = (hertz > 0 ? JointFlag.Spring : 0) | (minL < maxL ? JointFlag.Limit : 0);
   J.breakStretch[j] = options.breakStretch ?? Infinity;
   return handle(world, j);
+}
+
+/**
+ * One pass of a distance joint's row (Box2D v3's b2SolveDistanceJoint) on the frame `f` of
+ * layout-2d.ts: the spring, then the lower and upper length limits (a rope link: only the upper), or
+ * the rigid rod. @returns ROW_SKIPPED when the anchors coincide (no direction), ROW_PUSHED when the
+ * link holds an impulse, else ROW_MOVED (a slack rope leaves its bodies in free flight).
+ */
+export function solveDistanceRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
+  const dx = f[F_DX]!,
+    dy = f[F_DY]!;
+  const L = Math.sqrt(dx * dx + dy * dy);
+  if (L < 1e-12) return ROW_SKIPPED;
+  const mA = f[F_MA]!,
+    iA = f[F_IA]!,
+    mB = f[F_MB]!,
+    iB = f[F_IB]!;
+  const rAx = f[F_RAX]!,
+    rAy = f[F_RAY]!,
+    rBx = f[F_RBX]!,
+    rBy = f[F_RBY]!;
+  const vAx = f[F_VAX]!,
+    vAy = f[F_VAY]!,
+    wA = f[F_WA]!,
+    vBx = f[F_VBX]!,
+    vBy = f[F_VBY]!,
+    wB = f[F_WB]!;
+  const invH = f[F_INVH]!;
+  const ux = dx / L,
+    uy = dy / L;
+  const crA = rAx * uy - rAy * ux,
+    crB = rBx * uy - rBy * ux;
+  const k = rows[o + KAX]!;
+  const minL = rows[o + MINL]!,
+    maxL = rows[o + MAXL]!;
+  let total = 0;
+  // Relative velocity of the anchors along u.
+  let vr = (vBx - wB * rBy - vAx + wA * rAy) * ux + (vBy + wB * rBx - vAy - wA * rAx) * uy;
+  if (minL < maxL) {
+    if (flags & JointFlag.Spring) {
+      const C = L - rows[o + LEN]!;
+      const impulse = springImpulse(vr, C, mA + mB + iA * crA * crA + iB * crB * crB, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
+      rows[o + ISPR] = rows[o + ISPR]! + impulse;
+      total += impulse;
+      vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
+    }
+    if (minL > 0) {
+      const C = L - minL;
+      let bias = 0,
+        ms = 1,
+        is = 0;
+      if (C > 0) bias = C * invH;
+      else if (useBias) {
+        bias = rows[o + JB]! * C;
+        ms = rows[o + JM]!;
+        is = rows[o + JI]!;
+      }
+      const old = rows[o + ILOW]!;
+      let next = old - ms * k * (vr + bias) - is * old;
+      if (next < 0) next = 0;
+      const impulse = next - old;
+      rows[o + ILOW] = next;
+      total += impulse;
+      vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
+    }
+    if (maxL < Infinity) {
+      const C = maxL - L;
+      let bias = 0,
+        ms = 1,
+        is = 0;
+      if (C > 0) bias = C * invH;
+      else if (useBias) {
+        bias = rows[o + JB]! * C;
+        ms = rows[o + JM]!;
+        is = rows[o + JI]!;
+      }
+      const old = rows[o + IUP]!;
+      let next = old - ms * k * (-vr + bias) - is * old;
+      if (next < 0) next = 0;
+      const impulse = next - old;
+      rows[o + IUP] = next;
+      total -= impulse;
+    }
+  } else {
+    const C = L - rows[o + LEN]!;
+    let bias = 0,
+      ms = 1,
+      is = 0;
+    if (useBias) {
+      bias = rows[o + JB]! * C;
+      ms = rows[o + JM]!;
+      is = rows[o + JI]!;
+    }
+    const impulse = -ms * k * (vr + bias) - is * rows[o + ISPR]!;
+    rows[o + ISPR] = rows[o + ISPR]! + impulse;
+    total = impulse;
+  }
+  const Px = total * ux,
+    Py = total * uy;
+  f[F_VAX] = vAx - mA * Px;
+  f[F_VAY] = vAy - mA * Py;
+  f[F_WA] = wA - iA * (rAx * Py - rAy * Px);
+  f[F_VBX] = vBx + mB * Px;
+  f[F_VBY] = vBy + mB * Py;
+  f[F_WB] = wB + iB * (rBx * Py - rBy * Px);
+  // A taut (or sprung) link pushes its bodies; a slack rope leaves them in free flight.
+  return rows[o + ISPR] !== 0 || rows[o + ILOW] !== 0 || rows[o + IUP] !== 0 ? ROW_PUSHED : ROW_MOVED;
 }

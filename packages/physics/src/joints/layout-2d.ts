@@ -62,3 +62,36 @@ export const WELD_ANGULAR_SOFT = 8;
 export const POINT_LINK = 255;
 /** Row type of a revolute joint moved to the pins (no spring, motor or limit; the general loops skip it). */
 export const PIN = 254;
+
+// The frame of the row being solved (FRAME_SIZE numbers; joints/solve-2d.ts fills it, each type's row
+// solve reads it and writes its bodies' new velocities back): the velocities of A and B (m/s, rad/s),
+// their inverse masses (1/kg) and inverse inertias (1/(kg m^2)), the anchors from the centres in the
+// world frame (m), the anchors' separation B - A (m), body A's rotation (cos, sin), the relative angle
+// since the joint was made minus its reference (rad) and the inverse substep (1/s).
+export const F_VAX = 0,
+  F_VAY = 1,
+  F_WA = 2,
+  F_VBX = 3,
+  F_VBY = 4,
+  F_WB = 5,
+  F_MA = 6,
+  F_IA = 7,
+  F_MB = 8,
+  F_IB = 9,
+  F_RAX = 10,
+  F_RAY = 11,
+  F_RBX = 12,
+  F_RBY = 13,
+  F_DX = 14,
+  F_DY = 15,
+  F_CA = 16,
+  F_SA = 17,
+  F_REL = 18,
+  F_INVH = 19,
+  FRAME_SIZE = 20;
+/** What a type's row solve did: nothing to write back (a distance joint of zero length). */
+export const ROW_SKIPPED = 0;
+/** What a type's row solve did: new velocities in the frame; the bodies stay in free flight (a slack rope). */
+export const ROW_MOVED = 1;
+/** What a type's row solve did: new velocities in the frame, and the joint pushes its bodies (the contact solver's `pushed` slot). */
+export const ROW_PUSHED = 2;

@@ -3,11 +3,33 @@ import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../world/validate.js';
 import { centre, checkEnds, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
+import {
+  AI,
+  AM,
+  F_DX,
+  F_DY,
+  F_IB,
+  F_MB,
+  F_RBX,
+  F_RBY,
+  F_VBX,
+  F_VBY,
+  F_WB,
+  FMAX,
+  IANG,
+  ILX,
+  ILY,
+  KAX,
+  ROW_PUSHED,
+  SB,
+  SI,
+  SM,
+} from './layout-2d.js';
 
 /**
  * The 2D mouse joint (a soft, force-capped spring pulling a body's point toward a target, for dragging):
- * its options, addMouseJoint and setMouseTarget. Its rows are prepared and solved with the other 2D joints'
- * (joints/prepare-2d.ts, solve-2d.ts).
+ * its options, addMouseJoint, setMouseTarget and its row solve. Its rows are prepared with the other 2D
+ * joints' (joints/prepare-2d.ts) and solved in their loop (joints/solve-2d.ts).
  */
 
 /**
@@ -76,4 +98,63 @@ export function setMouseTarget(world: PhysicsWorld, joint: number, target: Array
   J.localAx[j] = target[0]!;
   J.localAy[j] = target[1]!;
   wakeJoint(world, j);
+}
+
+/**
+ * One pass of a mouse joint's rows (Box2D v3's b2SolveMouseJoint) on the frame `f` of layout-2d.ts:
+ * B's spin damped softly, then its anchor pulled toward the target by a soft point row whose
+ * accumulated impulse is capped at the largest a substep (maxForce). @returns ROW_PUSHED.
+ */
+export function solveMouseRow(rows: Float64Array, o: number, _flags: number, _useBias: boolean, f: Float64Array): number {
+  const mB = f[F_MB]!,
+    iB = f[F_IB]!;
+  const rBx = f[F_RBX]!,
+    rBy = f[F_RBY]!;
+  let vBx = f[F_VBX]!,
+    vBy = f[F_VBY]!,
+    wB = f[F_WB]!;
+  // Damp B's spin softly, then pull its anchor toward the target with at most maxForce.
+  const kax = rows[o + KAX]!;
+  {
+    const impulse = -rows[o + AM]! * kax * wB - rows[o + AI]! * rows[o + IANG]!;
+    rows[o + IANG] = rows[o + IANG]! + impulse;
+    wB += iB * impulse;
+  }
+  const cdx = vBx - wB * rBy,
+    cdy = vBy + wB * rBx;
+  const bx = rows[o + SB]! * f[F_DX]!,
+    by = rows[o + SB]! * f[F_DY]!,
+    ms = rows[o + SM]!,
+    is = rows[o + SI]!;
+  const k11 = mB + rBy * rBy * iB,
+    k12 = -rBy * rBx * iB,
+    k22 = mB + rBx * rBx * iB;
+  let det = k11 * k22 - k12 * k12;
+  if (det !== 0) det = 1 / det;
+  const ex = cdx + bx,
+    ey = cdy + by;
+  const sx = det * (k22 * ex - k12 * ey),
+    sy = det * (k11 * ey - k12 * ex);
+  const oldX = rows[o + ILX]!,
+    oldY = rows[o + ILY]!;
+  let nx = oldX - ms * sx - is * oldX,
+    ny = oldY - ms * sy - is * oldY;
+  const max = rows[o + FMAX]!;
+  const mag2 = nx * nx + ny * ny;
+  if (mag2 > max * max) {
+    const s = max / Math.sqrt(mag2);
+    nx *= s;
+    ny *= s;
+  }
+  rows[o + ILX] = nx;
+  rows[o + ILY] = ny;
+  const ix = nx - oldX,
+    iy = ny - oldY;
+  vBx += mB * ix;
+  vBy += mB * iy;
+  wB += iB * (rBx * iy - rBy * ix);
+  f[F_VBX] = vBx;
+  f[F_VBY] = vBy;
+  f[F_WB] = wB;
+  return ROW_PUSHED;
 }

@@ -1,4 +1,4 @@
-import { JointType } from '../world/joint-store-2d.js';
+import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertKnownKeys } from '../world/validate.js';
 import {
@@ -13,6 +13,32 @@ import {
   optionalPoint,
   storeDrive,
 } from './joint-2d.js';
+import {
+  F_IA,
+  F_IB,
+  F_INVH,
+  F_REL,
+  F_WA,
+  F_WB,
+  ILOW,
+  IMOT,
+  ISPR,
+  IUP,
+  JB,
+  JI,
+  JM,
+  KAX,
+  LOW,
+  MMAX,
+  MSPD,
+  ROW_PUSHED,
+  SB,
+  SI,
+  SM,
+  UP,
+} from './layout-2d.js';
+import { unwind } from './prepare-2d.js';
+import { solvePointBlock } from './rows-2d.js';
 
 /**
  * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options and
@@ -65,4 +91,80 @@ export function addRevoluteJoint(world: PhysicsWorld, options: RevoluteJointOpti
   const j = makeJoint(world, JointType.Revolute, ends, p, p, options);
   storeDrive(world, j, limit, options.lowerAngle, options.upperAngle, drive);
   return handle(world, j);
+}
+
+/**
+ * One pass of a revolute joint's rows (Box2D v3's b2SolveRevoluteJoint) on the frame `f` of
+ * layout-2d.ts: unless neither body can turn, the angular spring, the motor (its impulse capped at
+ * the largest a substep) and the angle limits; then the anchors' point-to-point block, soft while
+ * `useBias`. @returns ROW_PUSHED.
+ */
+export function solveRevoluteRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array): number {
+  const iA = f[F_IA]!,
+    iB = f[F_IB]!;
+  if (iA + iB !== 0) {
+    const invH = f[F_INVH]!,
+      relAngle = f[F_REL]!;
+    let wA = f[F_WA]!,
+      wB = f[F_WB]!;
+    const kax = rows[o + KAX]!;
+    if (flags & JointFlag.Spring) {
+      const impulse = -rows[o + SM]! * kax * (wB - wA + rows[o + SB]! * relAngle) - rows[o + SI]! * rows[o + ISPR]!;
+      rows[o + ISPR] = rows[o + ISPR]! + impulse;
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+    if (flags & JointFlag.Motor) {
+      const max = rows[o + MMAX]!;
+      const old = rows[o + IMOT]!;
+      let next = old - kax * (wB - wA - rows[o + MSPD]!);
+      next = next < -max ? -max : next > max ? max : next;
+      rows[o + IMOT] = next;
+      wA -= iA * (next - old);
+      wB += iB * (next - old);
+    }
+    if (flags & JointFlag.Limit) {
+      const angle = unwind(relAngle);
+      {
+        const C = angle - rows[o + LOW]!;
+        let bias = 0,
+          ms = 1,
+          is = 0;
+        if (C > 0) bias = C * invH;
+        else if (useBias) {
+          bias = rows[o + JB]! * C;
+          ms = rows[o + JM]!;
+          is = rows[o + JI]!;
+        }
+        const old = rows[o + ILOW]!;
+        let next = old - ms * kax * (wB - wA + bias) - is * old;
+        if (next < 0) next = 0;
+        rows[o + ILOW] = next;
+        wA -= iA * (next - old);
+        wB += iB * (next - old);
+      }
+      {
+        const C = rows[o + UP]! - angle;
+        let bias = 0,
+          ms = 1,
+          is = 0;
+        if (C > 0) bias = C * invH;
+        else if (useBias) {
+          bias = rows[o + JB]! * C;
+          ms = rows[o + JM]!;
+          is = rows[o + JI]!;
+        }
+        const old = rows[o + IUP]!;
+        let next = old - ms * kax * (wA - wB + bias) - is * old;
+        if (next < 0) next = 0;
+        rows[o + IUP] = next;
+        wA += iA * (next - old);
+        wB -= iB * (next - old);
+      }
+    }
+    f[F_WA] = wA;
+    f[F_WB] = wB;
+  }
+  solvePointBlock(rows, o, f, useBias);
+  return ROW_PUSHED;
 }

@@ -1,0 +1,282 @@
+import { JointFlag } from '../world/joint-store-2d.js';
+import {
+  AXX,
+  AXY,
+  F_CA,
+  F_DX,
+  F_DY,
+  F_IA,
+  F_IB,
+  F_INVH,
+  F_MA,
+  F_MB,
+  F_RAX,
+  F_RAY,
+  F_RBX,
+  F_RBY,
+  F_REL,
+  F_SA,
+  F_VAX,
+  F_VAY,
+  F_VBX,
+  F_VBY,
+  F_WA,
+  F_WB,
+  IANG,
+  ILOW,
+  ILX,
+  ILY,
+  IMOT,
+  ISPR,
+  IUP,
+  JB,
+  JI,
+  JM,
+  KAX,
+  KMOT,
+  LOW,
+  MMAX,
+  MSPD,
+  ROW_PUSHED,
+  SB,
+  SM,
+  UP,
+} from './layout-2d.js';
+
+/**
+ * The row code the 2D joint types share, on the frame of the row being solved (layout-2d.ts F_*): the
+ * fixed-stiffness spring's impulse, the point-to-point block of the revolute and weld joints, and the
+ * axis rows of the prismatic and wheel joints. Each type's own row solve is in its file
+ * (distance-joint.ts, revolute-joint.ts, weld-joint.ts, mouse-joint.ts); joints/solve-2d.ts runs them.
+ */
+
+/**
+ * The impulse of a fixed-stiffness spring row (see `fixedSpring`): `cdot` the velocity along the
+ * row, `c` its position error, `k` the inverse effective mass of the moment, `lambda` the impulse the
+ * row holds, `bias` and `gamma` from `fixedSpring`.
+ */
+export function springImpulse(cdot: number, c: number, k: number, lambda: number, bias: number, gamma: number): number {
+  if (!(gamma < Infinity)) return -lambda;
+  const den = k + gamma;
+  return den > 0 ? -(cdot + bias * c + gamma * lambda) / den : 0;
+}
+
+/**
+ * Point-to-point: the anchors coincide, as one 2 x 2 block (the revolute and weld joints' linear
+ * rows). `soft`: the rows push out the anchors' separation as a soft constraint (JB, JM, JI); else
+ * they only remove relative velocity. Reads and writes the frame's velocities.
+ */
+export function solvePointBlock(rows: Float64Array, o: number, f: Float64Array, soft: boolean): void {
+  const mA = f[F_MA]!,
+    iA = f[F_IA]!,
+    mB = f[F_MB]!,
+    iB = f[F_IB]!;
+  const rAx = f[F_RAX]!,
+    rAy = f[F_RAY]!,
+    rBx = f[F_RBX]!,
+    rBy = f[F_RBY]!;
+  let vAx = f[F_VAX]!,
+    vAy = f[F_VAY]!,
+    wA = f[F_WA]!,
+    vBx = f[F_VBX]!,
+    vBy = f[F_VBY]!,
+    wB = f[F_WB]!;
+  const cdx = vBx - wB * rBy - vAx + wA * rAy,
+    cdy = vBy + wB * rBx - vAy - wA * rAx;
+  let bx = 0,
+    by = 0,
+    ms = 1,
+    is = 0;
+  if (soft) {
+    bx = rows[o + JB]! * f[F_DX]!;
+    by = rows[o + JB]! * f[F_DY]!;
+    ms = rows[o + JM]!;
+    is = rows[o + JI]!;
+  }
+  const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+  const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+  const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+  let det = k11 * k22 - k12 * k12;
+  if (det !== 0) det = 1 / det;
+  const ex = cdx + bx,
+    ey = cdy + by;
+  const sx = det * (k22 * ex - k12 * ey),
+    sy = det * (k11 * ey - k12 * ex);
+  const ix = -ms * sx - is * rows[o + ILX]!,
+    iy = -ms * sy - is * rows[o + ILY]!;
+  rows[o + ILX] = rows[o + ILX]! + ix;
+  rows[o + ILY] = rows[o + ILY]! + iy;
+  vAx -= mA * ix;
+  vAy -= mA * iy;
+  wA -= iA * (rAx * iy - rAy * ix);
+  vBx += mB * ix;
+  vBy += mB * iy;
+  wB += iB * (rBx * iy - rBy * ix);
+  f[F_VAX] = vAx;
+  f[F_VAY] = vAy;
+  f[F_WA] = wA;
+  f[F_VBX] = vBx;
+  f[F_VBY] = vBy;
+  f[F_WB] = wB;
+}
+
+/**
+ * The rows of a prismatic (`prismatic` true) or wheel joint along and across its axis (Box2D v3's
+ * prismatic_joint.c and wheel_joint.c): the wheel's rotation motor, the axial spring, the prismatic's
+ * axial motor, the translation limits, then across the axis one row (wheel) or, with the relative
+ * angle, a 2 x 2 block (prismatic). Reads and writes the frame's velocities. @returns ROW_PUSHED.
+ */
+export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBias: boolean, f: Float64Array, prismatic: boolean): number {
+  const mA = f[F_MA]!,
+    iA = f[F_IA]!,
+    mB = f[F_MB]!,
+    iB = f[F_IB]!;
+  const rAx = f[F_RAX]!,
+    rAy = f[F_RAY]!,
+    rBx = f[F_RBX]!,
+    rBy = f[F_RBY]!;
+  const dx = f[F_DX]!,
+    dy = f[F_DY]!;
+  const cA = f[F_CA]!,
+    sA = f[F_SA]!;
+  const invH = f[F_INVH]!;
+  let vAx = f[F_VAX]!,
+    vAy = f[F_VAY]!,
+    wA = f[F_WA]!,
+    vBx = f[F_VBX]!,
+    vBy = f[F_VBY]!,
+    wB = f[F_WB]!;
+  const fixedRotation = iA + iB === 0;
+  const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
+    axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
+  const translation = axx * dx + axy * dy;
+  const a1 = (dx + rAx) * axy - (dy + rAy) * axx,
+    a2 = rBx * axy - rBy * axx;
+  const kax = rows[o + KAX]!;
+  const kA = iA * a1,
+    kB = iB * a2;
+  // Axial impulses: P = lambda axis on B (minus on A), angular lambda a1 on A and lambda a2 on B.
+  if (!prismatic && flags & JointFlag.Motor && !fixedRotation) {
+    const max = rows[o + MMAX]!;
+    const old = rows[o + IMOT]!;
+    let next = old - rows[o + KMOT]! * (wB - wA - rows[o + MSPD]!);
+    next = next < -max ? -max : next > max ? max : next;
+    rows[o + IMOT] = next;
+    wA -= iA * (next - old);
+    wB += iB * (next - old);
+  }
+  if (flags & JointFlag.Spring) {
+    const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
+    const impulse = springImpulse(cdot, translation, mA + mB + kA * a1 + kB * a2, rows[o + ISPR]!, rows[o + SB]!, rows[o + SM]!);
+    rows[o + ISPR] = rows[o + ISPR]! + impulse;
+    vAx -= mA * impulse * axx;
+    vAy -= mA * impulse * axy;
+    wA -= kA * impulse;
+    vBx += mB * impulse * axx;
+    vBy += mB * impulse * axy;
+    wB += kB * impulse;
+  }
+  if (prismatic && flags & JointFlag.Motor) {
+    const cdot = axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA;
+    const max = rows[o + MMAX]!;
+    const old = rows[o + IMOT]!;
+    let next = old + kax * (rows[o + MSPD]! - cdot);
+    next = next < -max ? -max : next > max ? max : next;
+    rows[o + IMOT] = next;
+    const impulse = next - old;
+    vAx -= mA * impulse * axx;
+    vAy -= mA * impulse * axy;
+    wA -= kA * impulse;
+    vBx += mB * impulse * axx;
+    vBy += mB * impulse * axy;
+    wB += kB * impulse;
+  }
+  if (flags & JointFlag.Limit) {
+    for (let side = 0; side < 2; side++) {
+      // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.
+      const sign = side === 0 ? 1 : -1;
+      const C = side === 0 ? translation - rows[o + LOW]! : rows[o + UP]! - translation;
+      let bias = 0,
+        ms = 1,
+        is = 0;
+      if (C > 0) bias = C * invH;
+      else if (useBias) {
+        bias = rows[o + JB]! * C;
+        ms = rows[o + JM]!;
+        is = rows[o + JI]!;
+      }
+      const cdot = sign * (axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA);
+      const slot = side === 0 ? ILOW : IUP;
+      const old = rows[o + slot]!;
+      let next = old - ms * kax * (cdot + bias) - is * old;
+      if (next < 0) next = 0;
+      rows[o + slot] = next;
+      const impulse = sign * (next - old);
+      vAx -= mA * impulse * axx;
+      vAy -= mA * impulse * axy;
+      wA -= kA * impulse;
+      vBx += mB * impulse * axx;
+      vBy += mB * impulse * axy;
+      wB += kB * impulse;
+    }
+  }
+  // Perpendicular to the axis (and, for prismatic, the relative angle).
+  const pxx = -axy,
+    pxy = axx;
+  const s1 = (dx + rAx) * pxy - (dy + rAy) * pxx,
+    s2 = rBx * pxy - rBy * pxx;
+  const cd1 = pxx * (vBx - vAx) + pxy * (vBy - vAy) + s2 * wB - s1 * wA;
+  let ms = 1,
+    is = 0,
+    b1 = 0,
+    b2 = 0;
+  if (useBias) {
+    ms = rows[o + JM]!;
+    is = rows[o + JI]!;
+    b1 = rows[o + JB]! * (pxx * dx + pxy * dy);
+    b2 = rows[o + JB]! * f[F_REL]!;
+  }
+  const k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
+  if (prismatic) {
+    const k12 = iA * s1 + iB * s2;
+    let k22 = iA + iB;
+    if (k22 === 0) k22 = 1;
+    let det = k11 * k22 - k12 * k12;
+    if (det !== 0) det = 1 / det;
+    const e1 = cd1 + b1,
+      e2 = wB - wA + b2;
+    const x1 = det * (k22 * e1 - k12 * e2),
+      x2 = det * (k11 * e2 - k12 * e1);
+    const i1 = -ms * x1 - is * rows[o + ILX]!,
+      i2 = -ms * x2 - is * rows[o + IANG]!;
+    rows[o + ILX] = rows[o + ILX]! + i1;
+    rows[o + IANG] = rows[o + IANG]! + i2;
+    const Px = i1 * pxx,
+      Py = i1 * pxy;
+    vAx -= mA * Px;
+    vAy -= mA * Py;
+    wA -= iA * (i1 * s1 + i2);
+    vBx += mB * Px;
+    vBy += mB * Py;
+    wB += iB * (i1 * s2 + i2);
+  } else {
+    const mass = k11 > 0 ? 1 / k11 : 0;
+    const i1 = -ms * mass * (cd1 + b1) - is * rows[o + ILX]!;
+    rows[o + ILX] = rows[o + ILX]! + i1;
+    const Px = i1 * pxx,
+      Py = i1 * pxy;
+    vAx -= mA * Px;
+    vAy -= mA * Py;
+    wA -= iA * i1 * s1;
+    vBx += mB * Px;
+    vBy += mB * Py;
+    wB += iB * i1 * s2;
+  }
+  f[F_VAX] = vAx;
+  f[F_VAY] = vAy;
+  f[F_WA] = wA;
+  f[F_VBX] = vBx;
+  f[F_VBY] = vBy;
+  f[F_WB] = wB;
+  return ROW_PUSHED;
+}
