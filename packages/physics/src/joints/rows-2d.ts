@@ -220,6 +220,46 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
       wB += kB * impulse;
     }
   }
+  f[F_VAX] = vAx;
+  f[F_VAY] = vAy;
+  f[F_WA] = wA;
+  f[F_VBX] = vBx;
+  f[F_VBY] = vBy;
+  f[F_WB] = wB;
+  solveAcrossAxis(rows, o, useBias, f, prismatic, axx, axy);
+  return ROW_PUSHED;
+}
+
+/**
+ * The rows across a prismatic or wheel joint's axis (world direction (axx, axy)): one row against
+ * sideways motion (wheel), or with the relative angle a 2 x 2 block (prismatic). Reads and writes the
+ * frame's velocities.
+ */
+function solveAcrossAxis(
+  rows: Float64Array,
+  o: number,
+  useBias: boolean,
+  f: Float64Array,
+  prismatic: boolean,
+  axx: number,
+  axy: number,
+): void {
+  const mA = f[F_MA]!,
+    iA = f[F_IA]!,
+    mB = f[F_MB]!,
+    iB = f[F_IB]!;
+  const rAx = f[F_RAX]!,
+    rAy = f[F_RAY]!,
+    rBx = f[F_RBX]!,
+    rBy = f[F_RBY]!;
+  const dx = f[F_DX]!,
+    dy = f[F_DY]!;
+  let vAx = f[F_VAX]!,
+    vAy = f[F_VAY]!,
+    wA = f[F_WA]!,
+    vBx = f[F_VBX]!,
+    vBy = f[F_VBY]!,
+    wB = f[F_WB]!;
   // Perpendicular to the axis (and, for prismatic, the relative angle).
   const pxx = -axy,
     pxy = axx;
@@ -278,5 +318,4 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
   f[F_VBX] = vBx;
   f[F_VBY] = vBy;
   f[F_WB] = wB;
-  return ROW_PUSHED;
 }
