@@ -331,6 +331,81 @@ const castleHint = new Text({
 castleHint.anchor.set(1, 0.5);
 renderer.root.addChild(overlay, banner, castleHint);
 
+/**
+ * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
+ * two ranges of hills and drifting clouds. The hills and clouds are scenery at a distance: they move
+ * by a fraction of the camera's pan (parallax: far hills 0.3, near 0.6, clouds 0.15), so a pan to the
+ * castle and back reads as depth.
+ */
+const backdrop = new Graphics({ label: 'backdrop' });
+renderer.root.addChildAt(backdrop, 0);
+const SKY_TOP = 0x3d7ccc,
+  SKY_HORIZON = 0xd8eefb;
+/** Clouds: x (m along their band, which repeats every CLOUD_SPAN), height (m), size (m). */
+const CLOUDS: ReadonlyArray<readonly [number, number, number]> = [
+  [2, 11, 1.6],
+  [11, 14, 2.2],
+  [19, 9.5, 1.3],
+  [27, 13, 1.9],
+  [36, 10.5, 2.4],
+  [45, 15, 1.5],
+];
+const CLOUD_SPAN = 54;
+
+/** The colour a fraction t of the way from a to b (0xRRGGBB). */
+function mixColor(a: number, b: number, t: number): number {
+  const c = (s: number) => Math.round(((a >> s) & 255) * (1 - t) + ((b >> s) & 255) * t) << s;
+  return c(16) | c(8) | c(0);
+}
+
+/** A range of hills at parallax `p` (0 far, 1 near): height `amp` m above the ground, in `color`. */
+function hills(p: number, amp: number, seed: number, color: number): void {
+  const cam = renderer.camera;
+  const scale = cam.toScreenLength(1),
+    left = cam.toWorldX(0);
+  const ground = cam.toScreenY(0);
+  backdrop.moveTo(0, ground);
+  for (let px = 0; px <= cam.width + 8; px += 8) {
+    const u = px / scale + p * left;
+    const h = amp * (0.55 + 0.25 * Math.sin(0.21 * u + seed) + 0.2 * Math.sin(0.53 * u + 2 * seed));
+    backdrop.lineTo(px, ground - h * scale);
+  }
+  backdrop
+    .lineTo(cam.width + 8, ground)
+    .closePath()
+    .fill(color);
+}
+
+function drawBackdrop(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  const W = cam.width,
+    horizon = Math.min(cam.height, cam.toScreenY(0));
+  backdrop.clear();
+  const bands = 40;
+  for (let i = 0; i < bands; i++) {
+    const y0 = (horizon * i) / bands;
+    backdrop.rect(0, y0, W, horizon / bands + 1).fill(mixColor(SKY_TOP, SKY_HORIZON, (i + 0.5) / bands));
+  }
+  const sunX = W * 0.82,
+    sunY = Math.max(70, horizon * 0.2);
+  for (let r = 84; r > 34; r -= 10) backdrop.circle(sunX, sunY, r).fill({ color: 0xfff4cc, alpha: 0.07 });
+  backdrop.circle(sunX, sunY, 30).fill(0xfff6d8);
+  const scale = cam.toScreenLength(1),
+    left = cam.toWorldX(0);
+  for (const [x, y, r] of CLOUDS) {
+    const u = (((x + 0.35 * world.time - 0.15 * left) % CLOUD_SPAN) + CLOUD_SPAN) % CLOUD_SPAN;
+    const cx = (u - 6) * scale,
+      cy = cam.toScreenY(y),
+      k = r * scale;
+    if (cx < -4 * k || cx > W + 4 * k) continue;
+    backdrop.ellipse(cx, cy, 1.6 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.85 });
+    backdrop.circle(cx - 0.55 * k, cy - 0.25 * k, 0.55 * k).fill({ color: 0xffffff, alpha: 0.9 });
+    backdrop.circle(cx + 0.25 * k, cy - 0.45 * k, 0.7 * k).fill({ color: 0xffffff, alpha: 0.9 });
+  }
+  hills(0.3, 3.4, 0.7, 0x9cc3d2);
+  hills(0.6, 1.9, 2.1, 0x79ad73);
+}
+
 /** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
 function levelOver(world: PhysicsWorld, t: Tally): boolean {
   return t.fallen === lv.pieces.length || (shotsLeft === 0 && world.time - lastShotTime > 4);
@@ -338,6 +413,7 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
 
 function draw(world: PhysicsWorld): void {
   frameCamera(world);
+  drawBackdrop(world);
   const cam = renderer.camera,
     sx = (x: number) => cam.toScreenX(x),
     sy = (y: number) => cam.toScreenY(y);
