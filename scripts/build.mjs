@@ -110,6 +110,10 @@ export async function buildBench() {
     target: 'node20',
     conditions,
     external: ['@dimforge/*', 'matter-js', 'cli-progress', 'bitecs'],
+    // As a page or a user's bundler ships the engine (minified): constants folded into the code that
+    // uses them. V8 does not fold a module-level constant (a row offset imported from a layout file)
+    // into optimised code; inlined, the 2D joint rows run about 20% faster. Names are kept.
+    minifySyntax: true,
     sourcemap: true,
     banner: { js: '#!/usr/bin/env node' },
     logLevel: 'warning',
