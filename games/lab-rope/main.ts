@@ -25,6 +25,7 @@ import {
   slotOf,
 } from '@bitphysics/physics';
 import { RopeLayer, type WorldRect } from '@bitphysics/render-pixi';
+import { Graphics } from 'pixi.js';
 
 const USAGE = 'Accepted: segments 2-200; length 1-20 m; mass 0.1-20 kg.';
 const url = readUrlParams(
@@ -189,6 +190,22 @@ function segmentDistance(px: number, py: number, ax: number, ay: number, bx: num
   return Math.hypot(px - ax - t * dx, py - ay - t * dy);
 }
 
+/** The support the rope hangs from: a short beam at PIN, hatched on top as a fixed support is drawn. */
+const support = new Graphics({ label: 'support' });
+renderer.root.addChild(support);
+function drawSupport(): void {
+  const cam = renderer.camera;
+  const x = cam.toScreenX(PIN[0]),
+    y = cam.toScreenY(PIN[1]),
+    half = Math.max(18, cam.toScreenLength(0.45)),
+    h = Math.max(6, cam.toScreenLength(0.12));
+  support.clear();
+  support.rect(x - half, y - h, 2 * half, h).fill(0x8a94a6);
+  for (let i = -half; i < half; i += 8) support.moveTo(x + i, y - h).lineTo(x + i + 8, y - h - 8);
+  support.stroke({ width: 2, color: 0x8a94a6 });
+  support.circle(x, y, Math.max(3, cam.toScreenLength(0.06))).fill(0xe8ecf1);
+}
+
 const line = new RopeLayer(shell.world, [], { width: 0.06 });
 let layer = line;
 let layerWorld: PhysicsWorld | null = null;
@@ -200,6 +217,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
     layerWorld = world;
   }
   layer.update(renderer.camera, alpha);
+  drawSupport();
   const links = [...rope.joints, bobLink].filter((h) => isAlive(world, h)).length;
   const V = world.components.Velocity,
     b = slotOf(bob);
