@@ -185,6 +185,7 @@ function assemble(o: WorldSettings): PhysicsWorld {
     interpolation,
     threads,
     threadPool,
+    features: {},
   };
   const world = createWorld(context, entityIndex) as PhysicsWorld;
   installDefaults(world);

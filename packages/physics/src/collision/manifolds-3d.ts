@@ -390,8 +390,6 @@ export function pushTouch(l: TouchList, key: number, shapeA: number, shapeB: num
   return i;
 }
 
-const states = new WeakMap<PhysicsWorld, Contact3DState>();
-
 /**
  * The world's 3D contact state (made when `create` is true).
  * @category Collision
@@ -399,7 +397,7 @@ const states = new WeakMap<PhysicsWorld, Contact3DState>();
 export function contact3DStateOf(world: PhysicsWorld, create: true): Contact3DState;
 export function contact3DStateOf(world: PhysicsWorld, create?: boolean): Contact3DState | undefined;
 export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3DState | undefined {
-  let s = states.get(world);
+  let s = world.features.contacts3d as Contact3DState | undefined;
   if (s === undefined && create) {
     s = {
       current: createBuffer(64),
@@ -422,7 +420,7 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
     // Swapped every step (collision/shapes-3d.ts): swapped twice here so V8 does not treat them as
     // constant and drop the optimised code at the first swap (see createShapeCollisionState).
     for (let k = 0; k < 2; k++) [s.current, s.previous] = [s.previous, s.current];
-    states.set(world, s);
+    world.features.contacts3d = s;
   }
   return s;
 }
@@ -431,6 +429,6 @@ registerExternalWorldState({
   name: 'contacts3d',
   get: (world, create) => contact3DStateOf(world, create),
   clear: (world) => {
-    states.delete(world);
+    world.features.contacts3d = undefined;
   },
 });

@@ -76,12 +76,11 @@ export interface DissipationState {
   springSeen: number;
 }
 
-const states = new WeakMap<PhysicsWorld, DissipationState>();
 registerExternalWorldState({
   name: 'dissipation',
-  get: (world, create) => states.get(world) ?? (create ? dissipationState(world) : undefined),
+  get: (world, create) => (world.features.dissipation as DissipationState | undefined) ?? (create ? dissipationState(world) : undefined),
   clear: (world) => {
-    states.delete(world);
+    world.features.dissipation = undefined;
   },
 });
 
@@ -91,7 +90,7 @@ registerExternalWorldState({
  * @category Forces
  */
 export function dissipationState(world: PhysicsWorld): DissipationState {
-  let s = states.get(world);
+  let s = world.features.dissipation as DissipationState | undefined;
   if (!s) {
     s = {
       epoch: 1,
@@ -107,7 +106,7 @@ export function dissipationState(world: PhysicsWorld): DissipationState {
       angularSeen: 0,
       springSeen: 0,
     };
-    states.set(world, s);
+    world.features.dissipation = s;
     return s;
   }
   if (s.keyStep !== world.steps || s.keyTime !== world.substepStart) {

@@ -76,8 +76,6 @@ export interface Joint3DStore {
   breaks: number[][];
 }
 
-const stores = new WeakMap<PhysicsWorld, Joint3DStore>();
-
 function create(capacity: number): Joint3DStore {
   const n = capacity + 1,
     f = (): Float64Array => new Float64Array(n);
@@ -131,10 +129,10 @@ function create(capacity: number): Joint3DStore {
 export function joints3DOf(world: PhysicsWorld, create_: true): Joint3DStore;
 export function joints3DOf(world: PhysicsWorld, create_?: boolean): Joint3DStore | undefined;
 export function joints3DOf(world: PhysicsWorld, create_ = false): Joint3DStore | undefined {
-  let s = stores.get(world);
+  let s = world.features.joints3d as Joint3DStore | undefined;
   if (s === undefined && create_) {
     s = create(world.capacity);
-    stores.set(world, s);
+    world.features.joints3d = s;
   }
   return s;
 }
@@ -143,6 +141,6 @@ registerExternalWorldState({
   name: 'joints3d',
   get: (world, c) => joints3DOf(world, c),
   clear: (world) => {
-    stores.delete(world);
+    world.features.joints3d = undefined;
   },
 });

@@ -145,18 +145,17 @@ export interface ArchetypeTable {
   readonly sentinel: { toRemove: { dense: number[]; reset(): void }; remove(e: number): void };
 }
 
-const tables = new WeakMap<PhysicsWorld, ArchetypeTable>();
 // Only `order` is state; the rest is a cache of bitecs' structure that a restored world rebuilds.
 registerExternalWorldState({
   name: 'particle-archetypes',
   // A snapshot or restore first commits the pending deaths, as the next query() would.
   get: (world, create) => {
-    const t = create ? archetypes(world) : tables.get(world);
+    const t = create ? archetypes(world) : (world.features['particle-archetypes'] as ArchetypeTable | undefined);
     if (t !== undefined) settle(world, t);
     return t;
   },
   clear: (world) => {
-    tables.delete(world);
+    world.features['particle-archetypes'] = undefined;
   },
   keep: [
     'list',
@@ -181,7 +180,7 @@ registerExternalWorldState({
  * @category Particles
  */
 export function archetypes(world: PhysicsWorld): ArchetypeTable {
-  let t = tables.get(world);
+  let t = world.features['particle-archetypes'] as ArchetypeTable | undefined;
   if (t === undefined) {
     typedMasks(world);
     const none = new Int32Array(0);
@@ -203,7 +202,7 @@ export function archetypes(world: PhysicsWorld): ArchetypeTable {
       sentinel: { toRemove: { dense: [], reset: () => settle(world, table) }, remove: () => {} },
     };
     t = table;
-    tables.set(world, t);
+    world.features['particle-archetypes'] = t;
   }
   return t;
 }

@@ -15,7 +15,7 @@ import {
   writeSettings,
 } from './emitter-options.js';
 import { installEmitters } from './emitter-systems.js';
-import { book, books } from './particle-book.js';
+import { book, bookOf } from './particle-book.js';
 import { archetypeFor, headingOf, particleKind, setOrigin, spawnOne } from './spawn.js';
 
 /**
@@ -267,7 +267,7 @@ export function onParticleBirth(world: PhysicsWorld, hook: ParticleBirthHook): (
  * @category Particles
  */
 export function particlesExpired(world: PhysicsWorld): number {
-  return books.get(world)?.expiredTotal ?? 0;
+  return bookOf(world)?.expiredTotal ?? 0;
 }
 
 /**

@@ -30,14 +30,20 @@ export interface ParticleBook {
   expiredTotal: number;
 }
 
-export const books = new WeakMap<PhysicsWorld, ParticleBook>();
+/**
+ * The particle book of `world` if it has one (`world.features.particles`).
+ * @category Particles
+ */
+export function bookOf(world: PhysicsWorld): ParticleBook | undefined {
+  return world.features.particles as ParticleBook | undefined;
+}
 
 /**
  * The particle book of `world`, made on first use.
  * @category Particles
  */
 export function book(world: PhysicsWorld): ParticleBook {
-  let b = books.get(world);
+  let b = bookOf(world);
   if (!b) {
     const n = world.capacity + 1;
     b = {
@@ -56,7 +62,7 @@ export function book(world: PhysicsWorld): ParticleBook {
       budgetStep: world.steps,
       expiredTotal: 0,
     };
-    books.set(world, b);
+    world.features.particles = b;
   }
   return b;
 }
@@ -143,9 +149,9 @@ function removeParticle(world: PhysicsWorld, e: number): void {
 
 registerExternalWorldState({
   name: 'particles',
-  get: (world, create) => (create ? book(world) : books.get(world)),
+  get: (world, create) => (create ? book(world) : bookOf(world)),
   clear: (world) => {
-    books.delete(world);
+    world.features.particles = undefined;
   },
   keep: ['hooks', 'birthHooks'],
 });

@@ -37,14 +37,22 @@ export interface Mesh3D {
   bounds: Float64Array;
 }
 
-const meshes = new WeakMap<PhysicsWorld, { list: Mesh3D[] }>();
+/** The world's mesh list (`world.features.meshes3d`), made on first use when `create` is true. */
+function meshListOf(world: PhysicsWorld, create: boolean): { list: Mesh3D[] } | undefined {
+  let m = world.features.meshes3d as { list: Mesh3D[] } | undefined;
+  if (m === undefined && create) {
+    m = { list: [] };
+    world.features.meshes3d = m;
+  }
+  return m;
+}
 
 /**
  * The world's meshes (live ones; removed entities are dropped).
  * @category Collision
  */
 export function meshesOf(world: PhysicsWorld): Mesh3D[] {
-  const m = meshes.get(world);
+  const m = meshListOf(world, false);
   if (m === undefined) return [];
   if (m.list.some((x) => !entityExists(world, x.entity))) m.list = m.list.filter((x) => entityExists(world, x.entity));
   return m.list;
@@ -52,16 +60,9 @@ export function meshesOf(world: PhysicsWorld): Mesh3D[] {
 
 registerExternalWorldState({
   name: 'meshes3d',
-  get: (world, create) => {
-    let m = meshes.get(world);
-    if (m === undefined && create) {
-      m = { list: [] };
-      meshes.set(world, m);
-    }
-    return m;
-  },
+  get: (world, create) => meshListOf(world, create),
   clear: (world) => {
-    meshes.delete(world);
+    world.features.meshes3d = undefined;
   },
 });
 
@@ -153,12 +154,7 @@ function addMesh(where: string, world: PhysicsWorld, options: TriangleMeshOption
   c.Material.friction[e] = friction;
   c.Material.staticFriction[e] = friction;
   c.Material.restitution[e] = restitution;
-  let m = meshes.get(world);
-  if (m === undefined) {
-    m = { list: [] };
-    meshes.set(world, m);
-  }
-  m.list.push({ entity: e, vertices: verts, triangles: tris, normals, bounds });
+  meshListOf(world, true)!.list.push({ entity: e, vertices: verts, triangles: tris, normals, bounds });
   return currentHandle(world, e);
 }
 

@@ -71,8 +71,6 @@ export interface Shape3DStore {
   refW: Float64Array;
 }
 
-const stores = new WeakMap<PhysicsWorld, Shape3DStore>();
-
 function createStore(capacity: number): Shape3DStore {
   const n = capacity + 1;
   const f = (): Float64Array => new Float64Array(n);
@@ -121,10 +119,10 @@ function createStore(capacity: number): Shape3DStore {
 export function shapes3DOf(world: PhysicsWorld, create: true): Shape3DStore;
 export function shapes3DOf(world: PhysicsWorld, create?: boolean): Shape3DStore | undefined;
 export function shapes3DOf(world: PhysicsWorld, create = false): Shape3DStore | undefined {
-  let s = stores.get(world);
+  let s = world.features.shapes3d as Shape3DStore | undefined;
   if (s === undefined && create) {
     s = createStore(world.capacity);
-    stores.set(world, s);
+    world.features.shapes3d = s;
   }
   return s;
 }
@@ -133,6 +131,6 @@ registerExternalWorldState({
   name: 'shapes3d',
   get: (world, create) => shapes3DOf(world, create),
   clear: (world) => {
-    stores.delete(world);
+    world.features.shapes3d = undefined;
   },
 });

@@ -28,8 +28,8 @@
  *   store allocated, the collision, joint and cloth state with their warm-start caches and sleeping
  *   islands, spawn stamps), walked recursively: typed arrays are copied into ArrayBuffers, numbers,
  *   booleans and strings go into the JSON header, Sets and Maps as lists;
- * - per-world state that modules keep outside the world (the emitters' particle books, the dissipation
- *   stamps), registered in world-state.ts;
+ * - the state features keep in `world.features` (3D shapes, joints and contacts, the emitters'
+ *   particle books, the dissipation stamps), each by its registration in world/external-state.ts;
  * - bitecs' entity index (the order in which removed ids are reused), each entity's component set, and
  *   the order of every query's entities and pending removals (iteration order decides the order of
  *   floating-point sums, so restoring it is what makes stepping after `restore` bit-identical).

@@ -6,8 +6,10 @@ import type { PhysicsWorld } from '../world/options.js';
  * Fields of the world object that are code, measurements or the machine it runs on, not state;
  * everything else is captured. `threads` and `threadPool` are the world's own: a snapshot of a world
  * with any number of threads restores into a world with any number, which keeps its pool.
+ * `features` is state, but each entry is carried by the registration of the feature that made it
+ * (world/external-state.ts: its name in the header's `external`, the keys kept as code).
  */
-export const NOT_STATE = new Set(['stages', 'builtins', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool']);
+export const NOT_STATE = new Set(['stages', 'builtins', 'removeHooks', 'timings', 'entityIndex', 'threads', 'threadPool', 'features']);
 
 /**
  * Typed arrays of the world that are scratch: written in full before they are read, within the step

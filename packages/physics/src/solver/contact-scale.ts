@@ -130,21 +130,21 @@ export function solverSubstepsFor(settings: CollisionSettings, length: number, h
   return need > base ? Math.min(need, Math.max(base, MAX_AUTO_SUBSTEPS)) : base;
 }
 
-/** Per world: the solver substeps its last step took (0 before the first) and its contact length, m (Infinity before the first). */
-const scaleState = new WeakMap<PhysicsWorld, { substeps: number; length: number }>();
+/** A world's contact scale state (`world.features['contact-scale']`): the solver substeps its last step took (0 before the first) and its contact length, m (Infinity before the first); made when `create` is true. */
+function scaleStateOf(world: PhysicsWorld, create: boolean): { substeps: number; length: number } | undefined {
+  let state = world.features['contact-scale'] as { substeps: number; length: number } | undefined;
+  if (state === undefined && create) {
+    state = { substeps: 0, length: Infinity };
+    world.features['contact-scale'] = state;
+  }
+  return state;
+}
 
 registerExternalWorldState({
   name: 'contact-scale',
-  get: (world, create) => {
-    let state = scaleState.get(world);
-    if (state === undefined && create) {
-      state = { substeps: 0, length: Infinity };
-      scaleState.set(world, state);
-    }
-    return state;
-  },
+  get: (world, create) => scaleStateOf(world, create),
   clear: (world) => {
-    scaleState.delete(world);
+    world.features['contact-scale'] = undefined;
   },
 });
 
@@ -167,11 +167,7 @@ export function withScaledSubsteps(world: PhysicsWorld, solve: (world: PhysicsWo
     settings = cs.settings,
     base = settings.solverSubsteps,
     buf = cs.contacts;
-  let state = scaleState.get(world);
-  if (state === undefined) {
-    state = { substeps: 0, length: Infinity };
-    scaleState.set(world, state);
-  }
+  const state = scaleStateOf(world, true)!;
   const target = smallestBallRadius(buf);
   if (target < Infinity) {
     const last = state.length;

@@ -1,9 +1,12 @@
 import type { PhysicsWorld } from './options.js';
 
 /**
- * Per-world state kept outside the world object (in a module's WeakMap keyed by the world), which
- * `snapshot` and `restore` must carry too. Every module that keeps such state registers it here once;
- * the snapshot test fails for a WeakMap keyed by a world that is neither registered nor declared scratch.
+ * Per-world state a feature makes on its first use and keeps in `world.features` under its name (3D
+ * shapes, joints and contacts, meshes, the emitters' particle book and archetype tables, dissipation,
+ * contact scale), which `snapshot` and `restore` carry by this registration: its name in the
+ * snapshot's header, how to make it in a world that has none, and which of its keys are code. Every
+ * module that keeps such state registers it here once; the snapshot test fails for a WeakMap keyed by
+ * a world that is neither registered nor declared scratch.
  * @category Snapshots
  */
 export interface ExternalWorldState {

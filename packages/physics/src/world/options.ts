@@ -170,6 +170,13 @@ export interface PhysicsWorldContext {
   threadPool: ThreadPool | null;
   /** Internal: removal hooks (springs, joints and caches that reference a removed entity). */
   readonly removeHooks: Array<(world: PhysicsWorld, eid: number) => void>;
+  /**
+   * Internal: the state a feature makes on its first use, by the name it registers for snapshots
+   * (world/external-state.ts): `shapes3d`, `joints3d`, `contacts3d`, `meshes3d`, `particles` (the
+   * emitters' particle book), `particle-archetypes`, `dissipation`, `contact-scale`. Undefined until
+   * the feature is used. Snapshots carry each entry through its registration, not as world state.
+   */
+  readonly features: Record<string, object | undefined>;
 }
 
 /**
