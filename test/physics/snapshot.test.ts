@@ -16,6 +16,7 @@ import {
 } from '@bitphysics/physics';
 import { query, removeComponent } from 'bitecs';
 import { describe, expect, test } from 'vitest';
+import { externalWorldStates } from '../../packages/physics/src/world/external-state.js';
 import { mixedScene, SNAPSHOT_SCENES } from './snapshot-scenes.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
@@ -280,7 +281,26 @@ describe('snapshot captures every piece of state', () => {
     expect(() => snapshot(world)).toThrow(/snapshot: cannot capture world\.futureHook \(a function\)/);
   });
 
-  test('every per-world state kept outside the world (a WeakMap keyed by the world) is registered for snapshots or is scratch', () => {
+  test('feature state lives on the world: each registered state is world.features[name], made and cleared there', () => {
+    // The design: a feature's per-world state is a field of world.features under the name it registers
+    // for snapshots (world/external-state.ts), not a module's WeakMap. For every registration, in a 2D
+    // and a 3D world: get(world, true) makes the state on the world, clear removes it from there.
+    for (const dimensions of [2, 3] as const) {
+      const world = createPhysicsWorld({ dimensions, capacity: 16 });
+      const names = externalWorldStates().map((e) => e.name);
+      expect(names.length).toBeGreaterThanOrEqual(8);
+      for (const ext of externalWorldStates()) {
+        const state = ext.get(world, true);
+        expect(state, ext.name).toBeDefined();
+        expect(world.features[ext.name], ext.name).toBe(state);
+        ext.clear(world);
+        expect(world.features[ext.name], ext.name).toBeUndefined();
+        expect(ext.get(world, false), ext.name).toBeUndefined();
+      }
+    }
+  });
+
+  test('a WeakMap keyed by the world holds only scratch (state goes in world.features)', () => {
     // Scratch: rewritten before it is read in every step, so it carries nothing between steps.
     // forces/gravity.ts: the attractors packed for the threads, written in full before each parallel run.
     // world/fused-state.ts: whether the fused pass is on, set by step at each substep's start.
@@ -316,8 +336,10 @@ describe('snapshot captures every piece of state', () => {
       if (!/new WeakMap<PhysicsWorld/.test(src)) continue;
       const rel = f.slice(root.length + 1);
       found.push(rel);
-      if (scratch.has(rel)) continue;
-      expect(src, `${rel} keeps per-world state: register it with registerExternalWorldState`).toMatch(/registerExternalWorldState\(/);
+      expect(
+        scratch.has(rel),
+        `${rel} keeps per-world state in a WeakMap: keep it in world.features and register it with registerExternalWorldState`,
+      ).toBe(true);
     }
     expect(found.length).toBeGreaterThanOrEqual(3);
   });
