@@ -1,8 +1,8 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
 import { currentHandle, resolveEntity, SLOT_RANGE } from '../world/handles.js';
-import { IMPULSES } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertFinite, assertNonNegative, assertPositive } from '../world/validate.js';
 import { checkLimits, requireJoint, wakeJoint } from './joint-2d.js';

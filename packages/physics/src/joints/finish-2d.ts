@@ -1,6 +1,7 @@
 import { currentHandle } from '../world/handles.js';
-import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, pushBreak, ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
+import { pushBreak } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
+import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   AXX,

@@ -2,8 +2,9 @@ import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
-import { ensureJointArrays, IMPULSES } from '../world/joint-state-2d.js';
+import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
+import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertFinite, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../world/validate.js';
 

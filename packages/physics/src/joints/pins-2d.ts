@@ -1,4 +1,4 @@
-import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS } from '../world/joint-state-2d.js';
+import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /** The 2D joints' fast rows: pins (revolute joints with no spring, motor or limit) and point links (rigid distance joints between centres), solved as packed point constraints. */

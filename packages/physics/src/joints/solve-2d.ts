@@ -1,5 +1,5 @@
-import { ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
 import { JointType } from '../world/joint-store-2d.js';
+import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { solveDistanceRow } from './distance-joint.js';
 import {

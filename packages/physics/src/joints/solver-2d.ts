@@ -1,5 +1,6 @@
 import { BodyType } from '../collision/broadphase/grid.js';
-import { ensureRows, ROW_INTS } from '../world/joint-state-2d.js';
+import { ensureRows } from '../world/joint-state-2d.js';
+import { ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { EID, IA, IB, TF } from './layout-2d.js';

@@ -1,5 +1,5 @@
-import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-state-2d.js';
 import { JointType } from '../world/joint-store-2d.js';
+import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { AXX, AXY, DCX, DCY, IA, IANG, IB, ILOW, ILX, ILY, IMOT, ISPR, IUP, PIN, POINT_LINK, RAX, RAY, RBX, RBY, TF } from './layout-2d.js';
 

@@ -4,33 +4,7 @@
  * solver body's rotation within the step, and the break events of the last step.
  */
 
-/**
- * Floats per solver row (see the offsets in joints/solver-2d.ts).
- * @category Joints and ropes
- */
-export const ROW_FLOATS = 40;
-/**
- * Floats and integers per point link (see JointState.links).
- * @category Joints and ropes
- */
-export const LINK_FLOATS = 6;
-export const LINK_INTS = 3;
-/**
- * Floats and integers per pin (see JointState.pins).
- * @category Joints and ropes
- */
-export const PIN_FLOATS = 8;
-export const PIN_INTS = 3;
-/**
- * Integers per solver row: joint entity, solver index of A, of B, type.
- * @category Joints and ropes
- */
-export const ROW_INTS = 4;
-/**
- * Accumulated impulses kept per joint entity for warm starting (linear x, y, angular, spring, motor, lower, upper).
- * @category Joints and ropes
- */
-export const IMPULSES = 7;
+import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from './joint-strides-2d.js';
 
 /**
  * Joints broken in the last step, in the order they broke (rows 0..count-1). Read after `step`.
