@@ -33,10 +33,25 @@ import { Joint3DFlag, type Joint3DStore } from './store-3d.js';
  * joints/solver-3d.ts on the poses it leaves in the scratch of rows-3d-math.ts (qa, pa, ra for body A,
  * qb, pb, rb for B), and the pieces they share: the error rotation, the angular lock (fixed, hinge,
  * slider) and the point block (ball, hinge, fixed; the slider's restricted to a plane). The rows are
- * those joints/solver-3d.ts's header describes. Arguments every one takes: the joint's store and slot,
- * its bodies' solver indices, its flags, the packed body state and the world inverse inertias, the
- * substep (s), and the softness of the rigid rows (bias rate 1/s, mass and impulse scale).
+ * those joints/solver-3d.ts's header describes. Each takes the pass (JointPass3D), the joint's slot,
+ * its bodies' solver indices and its flags.
  */
+
+/**
+ * What every row solve of a pass reads (joints/solver-3d.ts fills it once a pass): the joint store,
+ * the packed body state and world inverse inertias, the substep (s), whether the rigid rows push out
+ * their error (`useBias`) and their softness (bias rate 1/s, mass and impulse scale).
+ */
+export interface JointPass3D {
+  s: Joint3DStore;
+  sb: Float64Array;
+  T: Float64Array;
+  hs: number;
+  useBias: boolean;
+  bRate: number;
+  ms: number;
+  is: number;
+}
 
 /** The error rotation of the joint being solved (x, y, z, w with w >= 0; errorRotation). */
 const E = new Float64Array(4);
@@ -49,20 +64,8 @@ const spring = new Float64Array(3);
  * A distance joint's rows along the anchors' line: the spring (soft, fixed stiffness), the rod, and the
  * one-sided length limits (speculative when apart). Anchors that meet reset its impulses.
  */
-export function solveDistanceRow3D(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+export function solveDistanceRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
   let dx = pb[0]! + rb[0]! - pa[0]! - ra[0]!,
     dy = pb[1]! + rb[1]! - pa[1]! - ra[1]!,
     dz = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
@@ -146,7 +149,8 @@ export function solveDistanceRow3D(
 }
 
 /** The error rotation E = conj(q_A) q_B conj(q_rest) (A's frame) into E, w >= 0. */
-function errorRotation(s: Joint3DStore, j: number): void {
+function errorRotation(p: JointPass3D, j: number): void {
+  const { s } = p;
   const x1 = -qa[0]!,
     y1 = -qa[1]!,
     z1 = -qa[2]!,
@@ -183,18 +187,8 @@ function errorRotation(s: Joint3DStore, j: number): void {
  * The angular lock (fixed and slider: 3 rows; `hinge`: the 2 perpendicular to the axis), K = I_A^-1 +
  * I_B^-1, on the error rotation in E. Leaves the hinge axis (world) in bx.
  */
-function solveAngularLock(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  hinge: boolean,
-  sb: Float64Array,
-  T: Float64Array,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+function solveAngularLock(p: JointPass3D, j: number, a: number, b: number, hinge: boolean): void {
+  const { s, sb, T, bRate, ms, is } = p;
   const oa = 12 * a,
     ob = 12 * b;
   const wx = sb[ob + 3]! - sb[oa + 3]!,
@@ -247,20 +241,8 @@ function solveAngularLock(
 }
 
 /** A hinge's motor and angle limit about its axis (bx, from solveAngularLock), on the angle of E. */
-function solveHingeAxial(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+function solveHingeAxial(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
   const oa = 12 * a,
     ob = 12 * b;
   const ex = E[0]!,
@@ -304,7 +286,8 @@ function solveHingeAxial(
 }
 
 /** The point block: its error in C3, the anchors' relative velocity in v3 and K (3 x 3). */
-function preparePointBlock(sb: Float64Array, T: Float64Array, a: number, b: number): void {
+function preparePointBlock(p: JointPass3D, a: number, b: number): void {
+  const { sb, T } = p;
   const oa = 12 * a,
     ob = 12 * b;
   C3[0] = pb[0]! + rb[0]! - pa[0]! - ra[0]!;
@@ -335,17 +318,8 @@ function preparePointBlock(sb: Float64Array, T: Float64Array, a: number, b: numb
 }
 
 /** The point rows as one 3 x 3 block (ball, hinge, fixed), on preparePointBlock's C3, v3 and K. */
-function solvePointRows(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  sb: Float64Array,
-  T: Float64Array,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+function solvePointRows(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T, bRate, ms, is } = p;
   solve3(K, v3[0]! + bRate * C3[0]!, v3[1]! + bRate * C3[1]!, v3[2]! + bRate * C3[2]!, x3);
   const px = -ms * x3[0]! - is * s.lx[j]!,
     py = -ms * x3[1]! - is * s.ly[j]!,
@@ -360,20 +334,8 @@ function solvePointRows(
  * A slider's point block restricted to the plane across A's axis, then along the axis (at the point
  * of A under B's anchor) its motor and translation limit.
  */
-function solveSliderAxis(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
   // Only the part perpendicular to the axis (A's, in the world) is held.
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
   const hx = bx[0]!,
@@ -470,20 +432,8 @@ function solveSliderAxis(
 }
 
 /** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
-function solveCone(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  _flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
+function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
+  const { s, sb, T, hs, useBias, bRate, ms, is } = p;
   const oa = 12 * a,
     ob = 12 * b;
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
@@ -513,85 +463,33 @@ function solveCone(
 }
 
 /** A ball-and-socket joint: the point block, then its cone limit if it has one. */
-export function solveBallRow3D(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
-  preparePointBlock(sb, T, a, b);
-  solvePointRows(s, j, a, b, sb, T, bRate, ms, is);
-  if (flags & Joint3DFlag.Cone) solveCone(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
+export function solveBallRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  preparePointBlock(p, a, b);
+  solvePointRows(p, j, a, b);
+  if (flags & Joint3DFlag.Cone) solveCone(p, j, a, b);
 }
 
 /** A hinge: the two angular rows across its axis, its motor and limit, then the point block. */
-export function solveHingeRow3D(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
-  errorRotation(s, j);
-  solveAngularLock(s, j, a, b, true, sb, T, bRate, ms, is);
-  if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) solveHingeAxial(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
-  preparePointBlock(sb, T, a, b);
-  solvePointRows(s, j, a, b, sb, T, bRate, ms, is);
+export function solveHingeRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  errorRotation(p, j);
+  solveAngularLock(p, j, a, b, true);
+  if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) solveHingeAxial(p, j, a, b, flags);
+  preparePointBlock(p, a, b);
+  solvePointRows(p, j, a, b);
 }
 
 /** A fixed joint: the three angular rows, then the point block. */
-export function solveFixedRow3D(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  _flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  _hs: number,
-  _useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
-  errorRotation(s, j);
-  solveAngularLock(s, j, a, b, false, sb, T, bRate, ms, is);
-  preparePointBlock(sb, T, a, b);
-  solvePointRows(s, j, a, b, sb, T, bRate, ms, is);
+export function solveFixedRow3D(p: JointPass3D, j: number, a: number, b: number, _flags: number): void {
+  errorRotation(p, j);
+  solveAngularLock(p, j, a, b, false);
+  preparePointBlock(p, a, b);
+  solvePointRows(p, j, a, b);
 }
 
 /** A slider: the three angular rows, the point block across its axis, then its motor and limit along it. */
-export function solveSliderRow3D(
-  s: Joint3DStore,
-  j: number,
-  a: number,
-  b: number,
-  flags: number,
-  sb: Float64Array,
-  T: Float64Array,
-  hs: number,
-  useBias: boolean,
-  bRate: number,
-  ms: number,
-  is: number,
-): void {
-  errorRotation(s, j);
-  solveAngularLock(s, j, a, b, false, sb, T, bRate, ms, is);
-  preparePointBlock(sb, T, a, b);
-  solveSliderAxis(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
+export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+  errorRotation(p, j);
+  solveAngularLock(p, j, a, b, false);
+  preparePointBlock(p, a, b);
+  solveSliderAxis(p, j, a, b, flags);
 }

@@ -3,10 +3,17 @@ import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { classifyBody3D } from '../collision/shapes-3d.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { solveBallRow3D, solveDistanceRow3D, solveFixedRow3D, solveHingeRow3D, solveSliderRow3D } from './joint-rows-3d.js';
+import {
+  type JointPass3D,
+  solveBallRow3D,
+  solveDistanceRow3D,
+  solveFixedRow3D,
+  solveHingeRow3D,
+  solveSliderRow3D,
+} from './joint-rows-3d.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
 import { applyAngular, applyLinear, ax, bx, pa, pb, pose, qa, qb, ra, rb, rot, sliderAnchor } from './rows-3d-math.js';
-import { Joint3DType, joints3DOf } from './store-3d.js';
+import { type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 
 /**
  * The 3D joints' rows of the contact solver (joints/solver-3d.ts calls these next to the contacts', in the same
@@ -200,6 +207,18 @@ export function warmStartJoints3D(world: PhysicsWorld): void {
   }
 }
 
+/** The pass the row solves read (joint-rows-3d.ts JointPass3D), filled by each solveJoints3D. */
+const pass: JointPass3D = {
+  s: undefined as unknown as Joint3DStore,
+  sb: new Float64Array(0),
+  T: new Float64Array(0),
+  hs: 0,
+  useBias: false,
+  bRate: 0,
+  ms: 1,
+  is: 0,
+};
+
 /**
  * One pass over the joints: soft with `useBias`, else relaxing (no bias).
  * @category Joints and ropes
@@ -209,9 +228,15 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
   if (s === undefined || world.dimensions !== 3) return;
   const sb = world.collision.bodyState,
     T = contact3DStateOf(world, true).invInertia;
-  const bRate = useBias ? jsoft[0]! : 0,
-    ms = useBias ? jsoft[1]! : 1,
-    is = useBias ? jsoft[2]! : 0;
+  const p = pass;
+  p.s = s;
+  p.sb = sb;
+  p.T = T;
+  p.hs = hs;
+  p.useBias = useBias;
+  p.bRate = useBias ? jsoft[0]! : 0;
+  p.ms = useBias ? jsoft[1]! : 1;
+  p.is = useBias ? jsoft[2]! : 0;
   for (let i = 0; i < s.list.length; i++) {
     const j = s.list[i]!,
       a = ka[i]!,
@@ -222,11 +247,11 @@ export function solveJoints3D(world: PhysicsWorld, hs: number, useBias: boolean)
     pose(world, s.b[j]!, b, qb, pb);
     rot(qa, s.ax[j]!, s.ay[j]!, s.az[j]!, ra);
     rot(qb, s.bx[j]!, s.by[j]!, s.bz[j]!, rb);
-    if (type === Joint3DType.Distance) solveDistanceRow3D(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
-    else if (type === Joint3DType.Ball) solveBallRow3D(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
-    else if (type === Joint3DType.Hinge) solveHingeRow3D(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
-    else if (type === Joint3DType.Fixed) solveFixedRow3D(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
-    else if (type === Joint3DType.Slider) solveSliderRow3D(s, j, a, b, flags, sb, T, hs, useBias, bRate, ms, is);
+    if (type === Joint3DType.Distance) solveDistanceRow3D(p, j, a, b, flags);
+    else if (type === Joint3DType.Ball) solveBallRow3D(p, j, a, b, flags);
+    else if (type === Joint3DType.Hinge) solveHingeRow3D(p, j, a, b, flags);
+    else if (type === Joint3DType.Fixed) solveFixedRow3D(p, j, a, b, flags);
+    else if (type === Joint3DType.Slider) solveSliderRow3D(p, j, a, b, flags);
   }
 }
 
