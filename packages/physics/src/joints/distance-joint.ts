@@ -36,7 +36,7 @@ import {
   SB,
   SM,
 } from './layout-2d.js';
-import { springImpulse } from './rows-2d.js';
+import { limitRow, springImpulse } from './rows-2d.js';
 
 /**
  * The 2D distance joint (a rod, a rope or a spring between two anchors): its options, addDistanceJoint
@@ -166,41 +166,12 @@ export function solveDistanceRow(rows: Float64Array, o: number, flags: number, u
       vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
     }
     if (minL > 0) {
-      const C = L - minL;
-      let bias = 0,
-        ms = 1,
-        is = 0;
-      if (C > 0) bias = C * invH;
-      else if (useBias) {
-        bias = rows[o + JB]! * C;
-        ms = rows[o + JM]!;
-        is = rows[o + JI]!;
-      }
-      const old = rows[o + ILOW]!;
-      let next = old - ms * k * (vr + bias) - is * old;
-      if (next < 0) next = 0;
-      const impulse = next - old;
-      rows[o + ILOW] = next;
+      const impulse = limitRow(rows, o, ILOW, L - minL, k, vr, invH, useBias);
       total += impulse;
       vr += impulse * (mA + mB + iA * crA * crA + iB * crB * crB);
     }
     if (maxL < Infinity) {
-      const C = maxL - L;
-      let bias = 0,
-        ms = 1,
-        is = 0;
-      if (C > 0) bias = C * invH;
-      else if (useBias) {
-        bias = rows[o + JB]! * C;
-        ms = rows[o + JM]!;
-        is = rows[o + JI]!;
-      }
-      const old = rows[o + IUP]!;
-      let next = old - ms * k * (-vr + bias) - is * old;
-      if (next < 0) next = 0;
-      const impulse = next - old;
-      rows[o + IUP] = next;
-      total -= impulse;
+      total -= limitRow(rows, o, IUP, maxL - L, k, -vr, invH, useBias);
     }
   } else {
     const C = L - rows[o + LEN]!;

@@ -24,9 +24,6 @@ import {
   IMOT,
   ISPR,
   IUP,
-  JB,
-  JI,
-  JM,
   KAX,
   LOW,
   MMAX,
@@ -38,7 +35,7 @@ import {
   UP,
 } from './layout-2d.js';
 import { unwind } from './prepare-2d.js';
-import { solvePointBlock } from './rows-2d.js';
+import { limitRow, solvePointBlock } from './rows-2d.js';
 
 /**
  * The 2D revolute joint (a hinge, with an optional angle limit, motor and spring): its options and
@@ -125,42 +122,12 @@ export function solveRevoluteRow(rows: Float64Array, o: number, flags: number, u
     }
     if (flags & JointFlag.Limit) {
       const angle = unwind(relAngle);
-      {
-        const C = angle - rows[o + LOW]!;
-        let bias = 0,
-          ms = 1,
-          is = 0;
-        if (C > 0) bias = C * invH;
-        else if (useBias) {
-          bias = rows[o + JB]! * C;
-          ms = rows[o + JM]!;
-          is = rows[o + JI]!;
-        }
-        const old = rows[o + ILOW]!;
-        let next = old - ms * kax * (wB - wA + bias) - is * old;
-        if (next < 0) next = 0;
-        rows[o + ILOW] = next;
-        wA -= iA * (next - old);
-        wB += iB * (next - old);
-      }
-      {
-        const C = rows[o + UP]! - angle;
-        let bias = 0,
-          ms = 1,
-          is = 0;
-        if (C > 0) bias = C * invH;
-        else if (useBias) {
-          bias = rows[o + JB]! * C;
-          ms = rows[o + JM]!;
-          is = rows[o + JI]!;
-        }
-        const old = rows[o + IUP]!;
-        let next = old - ms * kax * (wA - wB + bias) - is * old;
-        if (next < 0) next = 0;
-        rows[o + IUP] = next;
-        wA += iA * (next - old);
-        wB -= iB * (next - old);
-      }
+      const lower = limitRow(rows, o, ILOW, angle - rows[o + LOW]!, kax, wB - wA, invH, useBias);
+      wA -= iA * lower;
+      wB += iB * lower;
+      const upper = limitRow(rows, o, IUP, rows[o + UP]! - angle, kax, wA - wB, invH, useBias);
+      wA += iA * upper;
+      wB -= iB * upper;
     }
     f[F_WA] = wA;
     f[F_WB] = wB;

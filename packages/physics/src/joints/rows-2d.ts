@@ -62,6 +62,39 @@ export function springImpulse(cdot: number, c: number, k: number, lambda: number
 }
 
 /**
+ * One pass of a one-sided limit row (its accumulated impulse at `slot` stays >= 0), with position
+ * error C (>= 0 inside the limit), velocity `cdot` along the row and effective mass `k`: speculative
+ * while C > 0 (bias C / h_s, `invH` = 1 / h_s), soft with the row's JB, JM, JI while `useBias`, else
+ * rigid (Catto, "Soft Constraints", GDC 2011; Box2D v3's joint limits).
+ * @returns the change of the accumulated impulse.
+ */
+export function limitRow(
+  rows: Float64Array,
+  o: number,
+  slot: number,
+  C: number,
+  k: number,
+  cdot: number,
+  invH: number,
+  useBias: boolean,
+): number {
+  let bias = 0,
+    ms = 1,
+    is = 0;
+  if (C > 0) bias = C * invH;
+  else if (useBias) {
+    bias = rows[o + JB]! * C;
+    ms = rows[o + JM]!;
+    is = rows[o + JI]!;
+  }
+  const old = rows[o + slot]!;
+  let next = old - ms * k * (cdot + bias) - is * old;
+  if (next < 0) next = 0;
+  rows[o + slot] = next;
+  return next - old;
+}
+
+/**
  * Point-to-point: the anchors coincide, as one 2 x 2 block (the revolute and weld joints' linear
  * rows). `soft`: the rows push out the anchors' separation as a soft constraint (JB, JM, JI); else
  * they only remove relative velocity. Reads and writes the frame's velocities.
@@ -196,22 +229,8 @@ export function solveAxisRow(rows: Float64Array, o: number, flags: number, useBi
       // Lower: C = translation - lower >= 0. Upper (signs flipped): C = upper - translation >= 0.
       const sign = side === 0 ? 1 : -1;
       const C = side === 0 ? translation - rows[o + LOW]! : rows[o + UP]! - translation;
-      let bias = 0,
-        ms = 1,
-        is = 0;
-      if (C > 0) bias = C * invH;
-      else if (useBias) {
-        bias = rows[o + JB]! * C;
-        ms = rows[o + JM]!;
-        is = rows[o + JI]!;
-      }
       const cdot = sign * (axx * (vBx - vAx) + axy * (vBy - vAy) + a2 * wB - a1 * wA);
-      const slot = side === 0 ? ILOW : IUP;
-      const old = rows[o + slot]!;
-      let next = old - ms * kax * (cdot + bias) - is * old;
-      if (next < 0) next = 0;
-      rows[o + slot] = next;
-      const impulse = sign * (next - old);
+      const impulse = sign * limitRow(rows, o, side === 0 ? ILOW : IUP, C, kax, cdot, invH, useBias);
       vAx -= mA * impulse * axx;
       vAy -= mA * impulse * axy;
       wA -= kA * impulse;
