@@ -2,7 +2,7 @@ import { pushEvent } from '../collision/events.js';
 import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { packManifoldRows } from './manifold-rows-2d.js';
+import { atLeast, packManifoldRows } from './manifold-rows-2d.js';
 
 /**
  * The shape contacts' rows before and after the substeps (solver/manifold-rows-2d.ts describes the rows
@@ -51,10 +51,6 @@ function withRoom(list: Int32Array, n: number): Int32Array {
   return grown;
 }
 
-/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length); see withRoom. */
-function atLeast(a: Float64Array, n: number): Float64Array {
-  return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
-}
 /**
  * Gives every moving body of a shape manifold a solver index (continuing the list the ball contacts
  * started, same stamp), writes the rows' indices, and returns the new solver body count.

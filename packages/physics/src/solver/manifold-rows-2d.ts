@@ -100,8 +100,11 @@ enum Row {
   Stride = 41,
 }
 
-/** `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length). */
-function atLeast(a: Float64Array, n: number): Float64Array {
+/**
+ * `a` if it holds `n` numbers, else a new zeroed array of at least n (twice a's length). Growth runs
+ * only in a world's first steps: called before the loops that fill the array (solver/manifold-prepare-2d.ts withRoom).
+ */
+export function atLeast(a: Float64Array, n: number): Float64Array {
   return a.length >= n ? a : new Float64Array(Math.max(n, 2 * a.length));
 }
 
