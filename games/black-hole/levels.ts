@@ -1,6 +1,7 @@
 /**
- * Levels for black hole, DOM-free (Node tests run them): a first level a newcomer wins, then more and
- * bigger holes, holes that drift, and a fuel limit. The page (main.ts) shows the level, the fuel, an
+ * Levels for black hole, DOM-free (Node tests run them): a first level a newcomer wins, then holes
+ * across the straight path up (the player must steer), more and bigger holes, holes that drift, and
+ * a fuel limit. The ship waits at the start until the player thrusts. The page (main.ts) shows the level, the fuel, an
  * end-of-level summary and the best score.
  *
  * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
@@ -13,7 +14,7 @@
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
  * between steps (kinematic), so their pull follows them.
  */
-import { addBody, removeBody, setAttractor, setPosition, slotOf } from '@bitphysics/physics';
+import { addBody, removeBody, setAttractor, setPosition, setVelocity, slotOf } from '@bitphysics/physics';
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
@@ -36,8 +37,13 @@ export interface LevelSpec {
   readonly holes: number;
   /** Range of the holes' horizon radii, m. */
   readonly radius: readonly [number, number];
-  /** Half-width, m, of a corridor around the start's x (x = 16 m) that no hole's centre enters (0: none). */
+  /** Half-width, m, of a corridor around the start's x (x = 16 m) that no hole's centre enters (0: none). Blockers excepted. */
   readonly corridor: number;
+  /**
+   * Holes laid across the straight path up (integer in [0, 2], at most `holes`): each one's centre is
+   * within half its radius of the start's x, at a height of its own, so holding thrust up falls in.
+   */
+  readonly blockers: number;
   /** Sideways speed of the holes, m/s (0: they stay put). */
   readonly drift: number;
   /** Seconds of thrust the tank holds (Infinity: no limit). */
@@ -46,37 +52,39 @@ export interface LevelSpec {
 
 /**
  * The spec of level `level`, one new difficulty at a time: level 1 one small hole well away from the
- * straight path up; levels 2 and 3 two holes with a corridor that narrows (6 m, 3 m); level 4 three
- * holes anywhere; from level 5 they drift (0.6, then 0.9, 1.2 m/s); level 6 a fourth hole; from level
- * 7 the fuel is limited (16 s, then 14 s down to 5 s); from level 8 a hole more every second level
- * (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
+ * straight path up (holding thrust up wins); level 2 a second hole across that path, so the player
+ * must steer round it; level 3 a third hole; level 4 two holes across the path, one above the other;
+ * from level 5 the holes drift (0.6, then 0.9, 1.2 m/s); level 6 a fourth hole; from level 7 the fuel
+ * is limited (16 s, then 14 s down to 5 s); from level 8 a hole more every second level (up to
+ * MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
  */
 export function levelSpec(level: number): LevelSpec {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`levelSpec: level must be an integer >= 1, got ${level}`);
-  const spec = (holes: number, radius: [number, number], corridor: number, drift: number, fuel: number): LevelSpec =>
-    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, drift, fuel });
+  const spec = (holes: number, radius: [number, number], corridor: number, blockers: number, drift: number, fuel: number): LevelSpec =>
+    Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel });
   switch (level) {
     case 1:
-      return spec(1, [0.45, 0.6], 9, 0, Infinity);
+      return spec(1, [0.45, 0.6], 9, 0, 0, Infinity);
     case 2:
-      return spec(2, [0.5, 0.8], 6, 0, Infinity);
+      return spec(2, [0.5, 0.8], 6, 1, 0, Infinity);
     case 3:
-      return spec(2, [0.5, 1.0], 3, 0, Infinity);
+      return spec(3, [0.5, 1.0], 3, 1, 0, Infinity);
     case 4:
-      return spec(3, [0.5, 1.1], 0, 0, Infinity);
+      return spec(3, [0.5, 1.1], 0, 2, 0, Infinity);
     case 5:
-      return spec(3, [0.6, 1.2], 0, 0.6, Infinity);
+      return spec(3, [0.6, 1.2], 0, 2, 0.6, Infinity);
     case 6:
-      return spec(4, [0.6, 1.3], 0, 0.9, Infinity);
+      return spec(4, [0.6, 1.3], 0, 2, 0.9, Infinity);
     case 7:
-      return spec(4, [0.6, 1.3], 0, 1.2, 16);
+      return spec(4, [0.6, 1.3], 0, 2, 1.2, 16);
     default: {
       const k = level - 8;
       return spec(
         Math.min(MAX_HOLES, 5 + Math.floor(k / 2)),
         [0.6, Math.min(2, 1.4 + 0.08 * k)],
         0,
+        2,
         Math.min(3, 1.4 + 0.2 * k),
         Math.max(5, 14 - k),
       );
@@ -116,6 +124,12 @@ export interface LevelRun {
   summary: LevelSummary | null;
   /** Falls counted at the level's start (to report the level's own). */
   fallsAtStart: number;
+  /**
+   * The ship waits at the start, held at rest, until the player thrusts: set when a level begins and
+   * after each fall or exit, so a hole's pull (or a hole drifting near) cannot take a life before the
+   * player has moved.
+   */
+  parked: boolean;
 }
 
 /**
@@ -124,7 +138,16 @@ export interface LevelRun {
  * @throws RangeError on a bad level.
  */
 export function startLevel(game: BlackHoleGame, level: number): LevelRun {
-  const run: LevelRun = { spec: levelSpec(level), time: 0, fuelLeft: 0, holeVx: [], waiting: false, summary: null, fallsAtStart: 0 };
+  const run: LevelRun = {
+    spec: levelSpec(level),
+    time: 0,
+    fuelLeft: 0,
+    holeVx: [],
+    waiting: false,
+    summary: null,
+    fallsAtStart: 0,
+    parked: true,
+  };
   layLevel(game, run, level);
   return run;
 }
@@ -133,6 +156,7 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
 export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
   if (!run.waiting) return;
   run.waiting = false;
+  run.parked = true;
   run.time = 0;
   run.fuelLeft = run.spec.fuel;
   run.fallsAtStart = game.falls;
@@ -171,16 +195,24 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
       bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(r0, r1);
-      let x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
-      if (spec.corridor > 0) {
-        // Outside the corridor: on the side the draw fell on.
-        const side = x < START[0] ? -1 : 1;
-        const lo = START[0] + spec.corridor,
-          hi = FIELD.width - 1.5 - r;
-        x = side > 0 ? Math.max(x, lo) : Math.min(x, FIELD.width - lo);
-        if (lo > hi) x = side > 0 ? hi : FIELD.width - hi;
+      let x: number, y: number;
+      if (k < spec.blockers) {
+        // Across the straight path up, one blocker in each band of heights (lower band first).
+        x = START[0] + rng.range(-0.5, 0.5) * r;
+        const [lo, hi] = spec.blockers === 1 ? [9, 15] : k === 0 ? [7.5, 10.5] : [14, 17];
+        y = rng.range(lo, hi);
+      } else {
+        x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
+        if (spec.corridor > 0) {
+          // Outside the corridor: on the side the draw fell on.
+          const side = x < START[0] ? -1 : 1;
+          const lo = START[0] + spec.corridor,
+            hi = FIELD.width - 1.5 - r;
+          x = side > 0 ? Math.max(x, lo) : Math.min(x, FIELD.width - lo);
+          if (lo > hi) x = side > 0 ? hi : FIELD.width - hi;
+        }
+        y = rng.range(5 + r, LINE_Y - 3 - r);
       }
-      const y = rng.range(5 + r, LINE_Y - 3 - r);
       let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
       for (let j = 0; j < game.holes.length; j++) {
         const h = game.holes[j]!;
@@ -205,6 +237,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   }
   game.version++;
   game.message = levelMessage(spec);
+  run.parked = true;
   resetShip(game);
 }
 
@@ -239,7 +272,8 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
 
 /**
  * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
- * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`). A crossing of
+ * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
+ * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
  * the line becomes 'cleared': the summary is kept, the next level is laid out and the run waits.
  * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
  */
@@ -251,9 +285,15 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     run.fuelLeft = Math.max(0, run.fuelLeft - dt);
     if (run.fuelLeft === 0) setThrust(game, 'none');
   }
+  if (game.thrust !== 'none') run.parked = false;
   const time = run.time + dt;
   run.time = time;
   const event = stepBlackHole(game);
+  if (event === 'fell' || event === 'lost') run.parked = true;
+  else if (event === 'none' && run.parked) {
+    setPosition(game.world, game.ship, START);
+    setVelocity(game.world, game.ship, REST);
+  }
   if (event !== 'scored') return event;
   run.summary = Object.freeze({
     level: run.spec.level,
@@ -273,6 +313,8 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     `Tap here or press Enter for level ${run.spec.level}.`;
   return 'cleared';
 }
+
+const REST: readonly [number, number] = [0, 0];
 
 /** Whether thrust is possible now (fuel left, not waiting, not over). */
 export function canThrust(game: BlackHoleGame, run: LevelRun): boolean {

@@ -243,6 +243,7 @@ style.textContent = `
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; }
 .bh-status .bh-message { color: #ffd166; }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
+.bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
 `;
 document.head.append(style);
@@ -305,7 +306,8 @@ function updateStatus(force = false): void {
       ? bh.message.replace('Press Enter or R to play again.', 'Tap to play again.').replace('Tap here or press Enter', 'Tap')
       : bh.message;
   }
-  status.classList.toggle('over', bh.over || (run?.waiting ?? false));
+  status.classList.toggle('over', bh.over);
+  status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
   if (force || bh.thrust !== shownThrust) {
     shownThrust = bh.thrust;
     for (const [i, dir] of DIRS.entries()) pad.setActive(i, dir === bh.thrust);

@@ -11,11 +11,14 @@ import { beginLevel, canThrust, type LevelRun, levelSpec, startLevel, stepLevel 
 import {
   type BlackHoleGame,
   createBlackHoleGame,
+  createPredictor,
   FIELD,
   gravitationalConstant,
   LINE_Y,
+  predictPath,
   START,
   setThrust,
+  type Thrust,
 } from '../../games/black-hole/rules';
 
 const shipY = (g: BlackHoleGame) => g.world.components.Position.y[slotOf(g.ship)]!;
@@ -28,6 +31,39 @@ function play(g: BlackHoleGame, run: LevelRun, thrustAt: (k: number) => boolean,
   const steps = Math.round(seconds / g.world.dt);
   for (let k = 0; k < steps; k++) {
     const want = thrustAt(k) && canThrust(g, run) ? 'up' : 'none';
+    if (g.thrust !== want) setThrust(g, want);
+    const e = stepLevel(g, run);
+    if (e === 'cleared' || e === 'over') return { steps: k + 1, event: e };
+  }
+  return { steps, event: 'timeout' as const };
+}
+
+/**
+ * A simple pilot: every 0.1 s it tries thrust up, left, right, down and none in that order and keeps
+ * the first whose predicted path (1.5 s, ./rules `predictPath`) neither enters a horizon nor leaves
+ * the field by a side or the bottom. Plays at most `seconds`; stops at a clear or game over.
+ */
+function pilot(g: BlackHoleGame, run: LevelRun, seconds: number) {
+  const pred = createPredictor(g);
+  const path = new Float64Array(2 * 91);
+  const steps = Math.round(seconds / g.world.dt);
+  for (let k = 0; k < steps; k++) {
+    let want: Thrust = g.thrust;
+    if (k % 6 === 0 && canThrust(g, run)) {
+      want = 'none';
+      for (const t of ['up', 'left', 'right', 'down', 'none'] as const) {
+        setThrust(g, t);
+        const n = predictPath(g, pred, path, 90);
+        const x = path[2 * n - 2]!,
+          y = path[2 * n - 1]!;
+        if (x < 0 || x > FIELD.width || y < 0) continue;
+        if (n === 91 || y > FIELD.height) {
+          want = t;
+          break;
+        }
+      }
+    }
+    if (!canThrust(g, run)) want = 'none';
     if (g.thrust !== want) setThrust(g, want);
     const e = stepLevel(g, run);
     if (e === 'cleared' || e === 'over') return { steps: k + 1, event: e };
@@ -60,15 +96,57 @@ describe('levels', () => {
       expect(hold.event).toBe('cleared');
       expect(hold.steps).toBeLessThan(tap.steps);
     }
-    // The same taps on level 4 (three holes up to 1.1 m, anywhere) fall in for some seeds: the
-    // check above can fail, and the levels do grow harder.
-    let fell = 0;
-    for (let seed = 1; seed <= 12; seed++) {
-      const g = createBlackHoleGame({ seed });
-      play(g, startLevel(g, 4), (k) => k % 36 < 15, 60);
-      if (g.falls > 0) fell++;
+  });
+
+  test('from level 2 holding thrust up falls in: holes lie across the straight path, and a steering pilot clears every level', () => {
+    // The issue this answers: a player cleared levels 1 to 5 by holding the up key. From level 2 one or
+    // two holes sit within half a radius of the start's x; a ship climbing straight passes inside
+    // their horizon unless it steers. Drifting holes (level 5 on) move off the path at times, so there
+    // a straight climb may slip through for some seeds: the bound there is a majority.
+    for (let level = 2; level <= 8; level++) {
+      let fell = 0;
+      for (let seed = 1; seed <= 12; seed++) {
+        const g = createBlackHoleGame({ seed });
+        const run = startLevel(g, level);
+        expect(Math.min(...g.holes.map((h) => Math.abs(g.world.components.Position.x[slotOf(h)]! - START[0])))).toBeLessThan(1);
+        play(g, run, () => true, 10);
+        if (g.falls > 0) fell++;
+      }
+      expect(fell, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 11 : 7);
     }
-    expect(fell).toBeGreaterThan(0);
+    // The levels can be won: the pilot above clears the static levels 2 to 4 without a fall for every
+    // seed tried. Its prediction takes the holes as still, so drifting holes (levels 5 to 7) catch it
+    // at times; it still clears most of them.
+    for (let level = 2; level <= 7; level++) {
+      let cleared = 0;
+      for (let seed = 1; seed <= 6; seed++) {
+        const g = createBlackHoleGame({ seed });
+        const run = startLevel(g, level);
+        if (pilot(g, run, 30).event === 'cleared') cleared++;
+        if (level < 5) expect(g.falls, `level ${level} seed ${seed}`).toBe(0);
+      }
+      expect(cleared, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 6 : 4);
+    }
+  });
+
+  test('the ship waits at the start until the player thrusts, at the level start and after a fall', () => {
+    // The issue this answers: on level 6 a drifting hole reached the respawned ship and took a life
+    // with no input. A parked ship stays at the start at rest however long the player waits.
+    const g = createBlackHoleGame({ seed: 2 });
+    const run = startLevel(g, 6);
+    const P = g.world.components.Position;
+    for (let k = 0; k < 1200; k++) expect(stepLevel(g, run)).toBe('none');
+    expect([P.x[slotOf(g.ship)], P.y[slotOf(g.ship)], g.falls]).toEqual([START[0], START[1], 0]);
+    // Level 4: thrust up into the lower blocker until it falls in; then the ship waits again.
+    const g4 = createBlackHoleGame({ seed: 2 });
+    const run4 = startLevel(g4, 4);
+    setThrust(g4, 'up');
+    for (let k = 0; k < 600 && g4.falls === 0; k++) stepLevel(g4, run4);
+    expect(g4.falls).toBe(1);
+    setThrust(g4, 'none');
+    for (let k = 0; k < 600; k++) stepLevel(g4, run4);
+    const P4 = g4.world.components.Position;
+    expect([P4.x[slotOf(g4.ship)], P4.y[slotOf(g4.ship)], g4.falls]).toEqual([START[0], START[1], 1]);
   });
 
   test('difficulty grows: holes and radius never fall, drift starts at level 5, fuel is limited from level 7 and never grows', () => {
@@ -133,7 +211,7 @@ describe('levels', () => {
   test('clearing a level: a summary, one point per hole, the next level laid out, and no steps until it begins', () => {
     const g = createBlackHoleGame({ seed: 3 });
     const run = startLevel(g, 2);
-    const r = play(g, run, () => true, 60);
+    const r = pilot(g, run, 60);
     expect(r.event).toBe('cleared');
     expect(run.summary).toMatchObject({ level: 2, points: 2, lives: 3 - g.falls });
     expect(g.score).toBe(2);
