@@ -80,9 +80,11 @@ const params = {
   all: () => frameView(ALL_VIEW),
 };
 
-/** Half-widths of the two framings, AU: Mars' orbit (1.67 AU at aphelion) and Neptune's (30.3 AU) with a margin. */
+/** Half-widths of the two framings, AU: Mars' orbit (1.67 AU at aphelion) and Neptune's (30.3 AU) with a small margin. */
 const INNER_VIEW = 1.8;
-const ALL_VIEW = 34;
+/** The camera looks along this, steep enough that the orbits read as near circles. */
+const VIEW_DIRECTION: [number, number, number] = [0.15, 1, 0.7];
+const ALL_VIEW = 31;
 
 let handles: SolarSystemHandles;
 let carry = 0;
@@ -153,7 +155,7 @@ const game = await startThreeGame({
   // All eight planets at start (Neptune's orbit fits; the orbit lines show where each goes); 1 zooms
   // to the inner planets.
   view: { min: [-ALL_VIEW, -0.2, -ALL_VIEW], max: [ALL_VIEW, 0.2, ALL_VIEW] },
-  viewDirection: [0.2, 0.8, 1],
+  viewDirection: VIEW_DIRECTION,
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
@@ -207,7 +209,7 @@ app.scene.add(rings);
 function frameView(half: number): void {
   const k = UNITS_PER_AU;
   const thick = 0.05 * half;
-  app.frame([-half * k, -thick * k, -half * k], [half * k, thick * k, half * k], [0.2, 0.8, 1]);
+  app.frame([-half * k, -thick * k, -half * k], [half * k, thick * k, half * k], VIEW_DIRECTION);
 }
 
 // ---- Orbit lines: each planet's Kepler ellipse about the Sun from its state at the start ----------
@@ -284,9 +286,26 @@ const labels = Object.fromEntries(
   SOLAR_SYSTEM_BODIES.map((name) => {
     const el = document.createElement('div');
     el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
+    el.dataset.label = name;
     // A dark translucent backing keeps the name legible over a bright planet or trail.
     el.style.cssText =
       'position: absolute; transform: translate(6px, -50%); white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.72)';
+    labelLayer.append(el);
+    return [name, el];
+  }),
+);
+
+// A dot of the body's colour at its place, kept at least a few pixels wide: at the scale of
+// Neptune's orbit (60 AU across a few hundred pixels) even the exaggerated planets are under a
+// pixel, and a player could not find them. The dot hides once the body itself is drawn larger.
+const dots = Object.fromEntries(
+  SOLAR_SYSTEM_BODIES.map((name) => {
+    const el = document.createElement('div');
+    const size = name === 'Sun' ? 12 : name === 'Jupiter' || name === 'Saturn' ? 8 : 6;
+    const colour = `#${COLOR[name]!.toString(16).padStart(6, '0')}`;
+    el.style.cssText = `position: absolute; width: ${size}px; height: ${size}px; margin: ${-size / 2}px 0 0 ${-size / 2}px; border-radius: 50%; background: ${colour}; box-shadow: 0 0 6px ${colour}`;
+    el.dataset.size = String(size);
+    el.dataset.dot = name;
     labelLayer.append(el);
     return [name, el];
   }),
@@ -297,6 +316,7 @@ table.className = 'bp-hud';
 table.dataset.hud = 'ephemeris';
 pageLayout().side.append(table);
 const dateLine = table.appendChild(document.createElement('div'));
+dateLine.style.whiteSpace = 'pre-line';
 const head = table.appendChild(document.createElement('div'));
 head.textContent = 'error vs ephemeris (floor)';
 const rows = Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p) => [p, table.appendChild(document.createElement('div'))]));
@@ -305,6 +325,9 @@ const errors = new Float64Array(SOLAR_SYSTEM_PLANETS.length);
 const p3 = [0, 0, 0];
 const v = new Vector3();
 let tableFrame = 0;
+
+/** Places a name may take, as (side, rows) pairs: side +1 right of the body, -1 left; rows of 17 px down. */
+const LABEL_PLACES = [1, 0, -1, 0, 1, -1, -1, -1, 1, 1, -1, 1, 1, -2, -1, -2, 1, 2, -1, 2];
 
 /** Whether a label box from `x0` to `x0 + width` at height `y` (px) clears every label placed this frame. */
 function labelFree(x0: number, y: number, width: number): boolean {
@@ -329,28 +352,42 @@ function frame(): void {
       rings.position.copy(v);
       rings.scale.set(1, 0.01, 1).multiplyScalar(drawnRadius('Saturn') * k * 2.2);
     }
+    const distance = v.distanceTo(app.camera.position);
     v.project(app.camera);
     const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
-    // A label that would cover one placed before it (the Sun first, then outwards) waits until
-    // the view separates them: zoomed out, the inner planets' names do not pile up on the Sun's.
     const x = ((v.x + 1) / 2) * w,
       y = ((1 - v.y) / 2) * h;
+    // Radius the body is drawn with, px (perspective: h / 2 px span tan(fov / 2) x distance).
+    const drawnPx = (drawnRadius(name) * k * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
+    const dot = dots[name]!;
+    const dotSize = Number(dot.dataset.size);
+    const showDot = visible && drawnPx < dotSize / 2;
+    dot.style.display = showDot ? 'block' : 'none';
+    if (showDot) {
+      dot.style.left = `${x}px`;
+      dot.style.top = `${y}px`;
+    }
+    // The name goes right of the body, else left, else above or below either side: the first place
+    // that covers no name placed before (the Sun first, then outwards) and stays in the view. With
+    // none free it waits until the view separates them.
     const width = 7.5 * (el.textContent?.length ?? 4) + 14;
-    // Right of the planet where the name fits in the view, else left of it; the other side when
-    // the first would cover a label placed before.
-    const fitsRight = x + width <= w;
-    let x0 = fitsRight ? x : x - width;
-    let free = visible && labelFree(x0, y, width);
-    if (visible && !free) {
-      x0 = fitsRight ? x - width : x;
-      free = labelFree(x0, y, width);
+    const gap = Math.max(6, drawnPx + 3);
+    let free = false,
+      x0 = 0,
+      y0 = y;
+    if (visible) {
+      for (let c = 0; c < LABEL_PLACES.length && !free; c += 2) {
+        x0 = LABEL_PLACES[c]! > 0 ? x + gap : x - gap - width;
+        y0 = y + LABEL_PLACES[c + 1]! * 17;
+        free = x0 >= 0 && x0 + width <= w && labelFree(x0, y0, width);
+      }
     }
     el.style.display = free ? 'block' : 'none';
     if (free) {
-      el.style.left = `${x}px`;
-      el.style.top = `${y}px`;
-      el.style.transform = x0 < x ? 'translate(calc(-100% - 6px), -50%)' : 'translate(6px, -50%)';
-      placed.push(x0, y, x0 + width, 0);
+      el.style.left = `${x0}px`;
+      el.style.top = `${y0}px`;
+      el.style.transform = 'translate(0, -50%)';
+      placed.push(x0, y0, x0 + width, 0);
     }
   }
   shownLabels = placed.length / 4;
@@ -361,7 +398,8 @@ function frame(): void {
 function updateTable(): void {
   const world = shell.world;
   const date = new Date(handles.epoch + world.time * 86_400_000);
-  dateLine.textContent = `${date.toISOString().slice(0, 16).replace('T', ' ')} UTC · day ${world.time.toFixed(1)} · ${params.integrator} ${params.step} h · ${params.rate.toFixed(1)} d/s`;
+  // Two short lines: the side column's width must not follow the date's length.
+  dateLine.textContent = `${date.toISOString().slice(0, 16).replace('T', ' ')} UTC · day ${world.time.toFixed(1)}\n${params.integrator} ${params.step} h · ${params.rate.toFixed(1)} d/s`;
   solarSystemErrors(world, handles, errors);
   SOLAR_SYSTEM_PLANETS.forEach((p, i) => {
     rows[p]!.textContent = `${p.padEnd(8)} ${errors[i]!.toExponential(2)}  (${SOLAR_SYSTEM_FLOOR[p].toExponential(1)} at 1 yr)`;
