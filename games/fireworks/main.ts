@@ -21,7 +21,7 @@
  * Sound (@bitphysics/game-kit/sound): a whoosh per launch, a bang per burst, a crackle when sparks burst again.
  */
 
-import { choiceParam, createPanel, flagParam, getSound, numberParam, plural, seedParam } from '@bitphysics/game-kit';
+import { choiceParam, createPanel, flagParam, getSound, numberParam, pageLayout, plural, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import {
   createPhysicsWorld,
@@ -33,7 +33,7 @@ import {
   stateHash,
   threadsReady,
 } from '@bitphysics/physics';
-import { Graphics } from 'pixi.js';
+import { Container, Graphics, Sprite, Texture } from 'pixi.js';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
   buildFireworks,
@@ -88,7 +88,21 @@ function nextRecipe(): RecipeName {
   return RECIPE_NAMES[Math.floor(Math.random() * RECIPE_NAMES.length)]!;
 }
 
-let show: FireworksShow;
+let show!: FireworksShow;
+
+/**
+ * The sky for this screen, m, shaped like the stage so no band of it is left black: about 6.2 px a
+ * metre across, within [64, 120] m (a phone held upright gets 64 m, so bursts stay large enough to
+ * aim at), and as tall as the stage's shape allows within [70, 160] m. Taps land where they aim.
+ */
+function skyForStage(): { width: number; height: number } {
+  const stage = pageLayout().stage;
+  const w = stage.clientWidth || innerWidth,
+    h = stage.clientHeight || innerHeight;
+  if (!(w > 0 && h > 0)) return SKY;
+  const width = Math.min(SKY.width, Math.max(64, w / 6.2));
+  return { width, height: Math.min(160, Math.max(SKY.height, Math.round(((width * h) / w) * 0.97))) };
+}
 /** Whether this page may share memory with workers (SharedArrayBuffer needs cross-origin isolation). */
 const ISOLATED = (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
 let previous: PhysicsWorld | null = null;
@@ -105,6 +119,7 @@ function createWorld(): PhysicsWorld {
     autoShow: params.autoShow,
     opening: params.opening,
     capacity: params.capacity,
+    sky: skyForStage(),
   };
   // ?threads above 1 needs the thread pool, loaded only when asked for.
   if (ISOLATED && params.threads > 1) enableThreads();
@@ -160,8 +175,8 @@ function randomLaunch(): number {
   return launchShell(
     shell.world,
     show,
-    r.range(0.15, 0.85) * SKY.width,
-    r.range(0.45, 0.85) * SKY.height,
+    r.range(0.15, 0.85) * show.params.sky.width,
+    r.range(0.45, 0.85) * show.params.sky.height,
     r.range(0, MAX_HOLD),
     nextRecipe(),
   );
@@ -227,20 +242,57 @@ let sparkShown = -1;
 
 // ---- Drawing: sky, ground, shells, the charging ring -------------------------------------------
 
-const sky = new Graphics({ label: 'sky' });
-app.stage.addChildAt(sky, 0);
+const skyLayer = new Graphics({ label: 'sky' });
+app.stage.addChildAt(skyLayer, 0);
 const ground = new Graphics({ label: 'ground' });
 const overlay = new Graphics({ label: 'shells-and-pointer' });
 app.stage.addChild(ground, overlay);
+
+/** A soft round glow, white at the centre through warm gold to clear at the rim (a 128 px canvas). */
+function glowTexture(): Texture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 128;
+  const g = c.getContext('2d')!;
+  const grad = g.createRadialGradient(64, 64, 0, 64, 64, 64);
+  grad.addColorStop(0, 'rgba(255, 255, 255, 1)');
+  grad.addColorStop(0.2, 'rgba(255, 240, 200, 0.85)');
+  grad.addColorStop(0.5, 'rgba(255, 190, 90, 0.3)');
+  grad.addColorStop(1, 'rgba(255, 160, 60, 0)');
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 128, 128);
+  return Texture.from(c);
+}
+// The flashes add light to what is under them, one glow sprite per remembered burst.
+const flashLayer = new Container({ label: 'flashes' });
+const glow = glowTexture();
+const flashSprites = Array.from({ length: FLASHES }, () => {
+  const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', visible: false });
+  flashLayer.addChild(sprite);
+  return sprite;
+});
+app.stage.addChild(flashLayer);
 let skyVersion = -1;
 
-/** Faint stars: x, y (m) and alpha. */
+/** Faint stars: x, y (fractions of the sky's width and height) and alpha. */
 const STARS: [number, number, number][] = (() => {
   const r = new Rng(3);
   const out: [number, number, number][] = [];
-  for (let i = 0; i < 160; i++) out.push([r.range(0, SKY.width), r.range(0.25, 1) * SKY.height, r.range(0.15, 0.6)]);
+  for (let i = 0; i < 160; i++) out.push([r.range(0, 1), r.range(0.25, 1), r.range(0.15, 0.6)]);
   return out;
 })();
+
+/** Fits the camera to the show's sky (at the start and after a reset, which may pick a new sky). */
+function frameSky(): void {
+  const sky = show.params.sky;
+  const view = renderer.camera.view;
+  if (view && view.maxX === sky.width && view.maxY === sky.height) return;
+  renderer.camera.fit({ minX: 0, minY: 0, maxX: sky.width, maxY: sky.height });
+}
+shell.onWorldChange(() => frameSky());
+// The first world was made before the stage had its size: make it again for the stage's shape.
+const wanted = skyForStage();
+if (wanted.width !== show.params.sky.width || wanted.height !== show.params.sky.height) shell.reset();
+frameSky();
 
 /** The horizon's skyline: heights (m) of the ground at x = 0, 8, 16, ... m. */
 const SKYLINE = [2.2, 2.6, 3.4, 2.8, 2.4, 4.6, 5.2, 3.1, 2.5, 2.2, 3.8, 4.4, 3.0, 2.4, 2.7, 3.6];
@@ -249,7 +301,8 @@ function drawSkyAndGround(): void {
   const cam = renderer.camera;
   if (cam.version === skyVersion) return;
   skyVersion = cam.version;
-  sky.clear();
+  const sky = show.params.sky;
+  skyLayer.clear();
   // Bands of a night sky, darker upwards, across the whole canvas (no letterbox: the view's aspect
   // is the world's, the canvas's is the window's); above the world the darkest band goes on.
   const bands = 12;
@@ -257,18 +310,19 @@ function drawSkyAndGround(): void {
     const f = 1 - i / bands;
     return (Math.round(6 + 14 * f * f) << 16) | (Math.round(9 + 16 * f * f) << 8) | Math.round(24 + 30 * f * f);
   };
-  sky.rect(0, 0, cam.width, cam.height).fill(bandColor(bands - 1));
+  skyLayer.rect(0, 0, cam.width, cam.height).fill(bandColor(bands - 1));
   for (let i = 0; i < bands; i++) {
-    const y0 = (SKY.height * i) / bands,
-      y1 = (SKY.height * (i + 1)) / bands;
+    const y0 = (sky.height * i) / bands,
+      y1 = (sky.height * (i + 1)) / bands;
     const top = i === bands - 1 ? 0 : cam.toScreenY(y1);
-    sky.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(bandColor(i));
+    skyLayer.rect(0, top, cam.width, cam.toScreenY(y0) - top + 1).fill(bandColor(i));
   }
-  for (const [x, y, a] of STARS) sky.circle(cam.toScreenX(x), cam.toScreenY(y), 0.8).fill({ color: 0xdfe8ff, alpha: a });
+  for (const [x, y, a] of STARS)
+    skyLayer.circle(cam.toScreenX(x * sky.width), cam.toScreenY(y * sky.height), 0.8).fill({ color: 0xdfe8ff, alpha: a });
   // The skyline, held level past the world's ends, and the ground to the canvas's bottom.
   ground.clear();
   ground.moveTo(0, cam.height).lineTo(0, cam.toScreenY(SKYLINE[0]!));
-  for (let i = 0; i < SKYLINE.length; i++) ground.lineTo(cam.toScreenX((i * SKY.width) / (SKYLINE.length - 1)), cam.toScreenY(SKYLINE[i]!));
+  for (let i = 0; i < SKYLINE.length; i++) ground.lineTo(cam.toScreenX((i * sky.width) / (SKYLINE.length - 1)), cam.toScreenY(SKYLINE[i]!));
   ground
     .lineTo(cam.width, cam.toScreenY(SKYLINE[SKYLINE.length - 1]!))
     .lineTo(cam.width, cam.height)
@@ -314,10 +368,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!))))
       .fill({ color: 0xfff3d0 });
   }
-  // The flash of a burst: a white core and a warm halo at the shell's last place that fade in
+  // The flash of a burst: a glow, white at its core and warm at its rim, at the shell's last place that fades in
   // FLASH_SECONDS, so a burst opens from a bright centre (its first frame was a ring of sparks, all at
   // one radius, with nothing inside).
   flashing = 0;
+  for (const sprite of flashSprites) sprite.visible = false;
   for (let k = Math.max(0, show.flashCount - FLASHES); k < show.flashCount; k++) {
     const f = 4 * (k % FLASHES),
       age = world.time - show.flashes[f + 2]!;
@@ -327,9 +382,11 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       x = cam.toScreenX(show.flashes[f]!),
       y = cam.toScreenY(show.flashes[f + 1]!),
       r = cam.toScreenLength(1.6 * Math.sqrt(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
-    overlay.circle(x, y, 2.4 * r).fill({ color: 0xffb347, alpha: 0.18 * fade });
-    overlay.circle(x, y, 1.4 * r).fill({ color: 0xffe2a8, alpha: 0.35 * fade });
-    overlay.circle(x, y, 0.6 * r).fill({ color: 0xffffff, alpha: 0.9 * fade });
+    const sprite = flashSprites[k % FLASHES]!;
+    sprite.visible = true;
+    sprite.position.set(x, y);
+    sprite.width = sprite.height = 5 * r;
+    sprite.alpha = fade;
   }
   // Charging ring: its radius grows with the burst the hold would make.
   if (pointerId !== -1) {

@@ -95,10 +95,17 @@ export interface FireworksOptions {
   opening?: number;
   /** Most entities alive at once, integer in [1000, 2_000_000]. Default 60_000 (50,000 live sparks). */
   capacity?: number;
+  /**
+   * Width and height of the sky, m, each in [30, 400]: where shells are aimed and launched from (a
+   * portrait screen takes a narrower, taller sky). Default `SKY` (120 x 70).
+   */
+  sky?: { readonly width: number; readonly height: number };
 }
 
 /** Resolved options. */
-export type FireworksParams = Required<FireworksOptions>;
+export type FireworksParams = Required<Omit<FireworksOptions, 'sky'>> & {
+  readonly sky: { readonly width: number; readonly height: number };
+};
 
 /** The emitters of the show (entity ids). */
 export interface FireworksEmitters {
@@ -199,7 +206,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveFireworksOptions(options: FireworksOptions = {}): FireworksParams {
-  const known = ['seed', 'gravity', 'drag', 'sparks', 'generations', 'autoShow', 'opening', 'capacity'];
+  const known = ['seed', 'gravity', 'drag', 'sparks', 'generations', 'autoShow', 'opening', 'capacity', 'sky'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`fireworks: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -212,6 +219,7 @@ export function resolveFireworksOptions(options: FireworksOptions = {}): Firewor
     autoShow: options.autoShow ?? false,
     opening: options.opening ?? 3,
     capacity: options.capacity ?? 60_000,
+    sky: Object.freeze({ width: options.sky?.width ?? SKY.width, height: options.sky?.height ?? SKY.height }),
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
   checkGravity(p.gravity);
@@ -224,6 +232,10 @@ export function resolveFireworksOptions(options: FireworksOptions = {}): Firewor
     Number.isInteger(p.capacity) && p.capacity >= 1000 && p.capacity <= 2_000_000,
     `capacity must be an integer in [1000, 2000000], got ${p.capacity}`,
   );
+  for (const side of ['width', 'height'] as const) {
+    const v = p.sky[side];
+    check(typeof v === 'number' && v >= 30 && v <= 400, `sky.${side} must be in [30, 400] m, got ${String(v)}`);
+  }
   return p;
 }
 
@@ -365,8 +377,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     for (let c = 0; c < PALETTE.length; c++) recipeEmitter(world, show, RECIPES[name], c);
   }
   for (let i = 0; i < p.opening; i++) {
-    const x = SKY.width * (0.25 + 0.5 * (p.opening === 1 ? 0.5 : i / (p.opening - 1)));
-    launchShell(world, show, x, show.rng.range(0.55, 0.8) * SKY.height, show.rng.range(0, MAX_HOLD));
+    const x = p.sky.width * (0.25 + 0.5 * (p.opening === 1 ? 0.5 : i / (p.opening - 1)));
+    launchShell(world, show, x, show.rng.range(0.55, 0.8) * p.sky.height, show.rng.range(0, MAX_HOLD));
   }
   return show;
 }
@@ -382,7 +394,7 @@ export function createFireworks(options: FireworksOptions = {}): { world: Physic
 
 /**
  * Launches a shell from the ground towards (targetX, targetY), m, where it bursts at the apex (the
- * target is clamped into the sky: x in [4, width - 4], y in [12, height - 3]). The launch point is on
+ * target is clamped into the show's sky, `params.sky`: x in [4, width - 4], y in [12, height - 3]). The launch point is on
  * the ground between the middle of the sky and the target, jittered. The burst's size follows
  * `burstScale(holdSeconds)`; its colour is drawn from the palette; what it does is `recipe`
  * (./recipes.ts; default 'crackle', the book's stars that burst into stars).
@@ -403,9 +415,10 @@ export function launchShell(
   const scale = burstScale(holdSeconds);
   if (show.shellCount >= MAX_SHELLS) return 0;
   const rng = show.rng;
-  const tx = Math.min(SKY.width - 4, Math.max(4, targetX));
-  const ty = Math.min(SKY.height - 3, Math.max(12, targetY));
-  const x0 = Math.min(SKY.width - 2, Math.max(2, 0.5 * SKY.width + 0.5 * (tx - 0.5 * SKY.width) + rng.range(-4, 4)));
+  const sky = show.params.sky;
+  const tx = Math.min(sky.width - 4, Math.max(4, targetX));
+  const ty = Math.min(sky.height - 3, Math.max(12, targetY));
+  const x0 = Math.min(sky.width - 2, Math.max(2, 0.5 * sky.width + 0.5 * (tx - 0.5 * sky.width) + rng.range(-4, 4)));
   const y0 = 0.5;
   const g = -world.gravity[1]!;
   const h = ty - y0;
@@ -615,7 +628,8 @@ export function autoShow(world: PhysicsWorld, show: FireworksShow): void {
   show.act++;
   for (let k = 0; k < act.count; k++) {
     const lane = act.count === 1 ? rng.range(0.2, 0.8) : ((k + 0.5) / act.count) * 0.76 + 0.12 + rng.range(-0.04, 0.04);
-    launchShell(world, show, lane * SKY.width, rng.range(0.5, 0.88) * SKY.height, rng.range(0, MAX_HOLD), act.recipe);
+    const sky = show.params.sky;
+    launchShell(world, show, lane * sky.width, rng.range(0.5, 0.88) * sky.height, rng.range(0, MAX_HOLD), act.recipe);
   }
   show.autoTimer = act.pause;
 }

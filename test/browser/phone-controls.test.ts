@@ -246,16 +246,33 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('fireworks: a tap starts the sound and launches a shell that whooshes and bangs; toolbar buttons are 44 x 44 px; mute is remembered', async () => {
-    const g = await h.openGame('fireworks', { ...PHONE, query: { auto: 0 } });
+  it('fireworks: a tap starts the sound and launches a shell that bursts where tapped and whooshes and bangs; toolbar buttons are 44 x 44 px; mute is remembered', async () => {
+    const g = await h.openGame('fireworks', { ...PHONE, query: { auto: 0, opening: 0 } });
     type Sounding = { sound: { running: boolean; played: number; muted: boolean } };
+    type Shown = {
+      show: { flashCount: number; flashes: Float64Array; params: { sky: { width: number; height: number } } };
+      renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; height: number } };
+    };
     expect(await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played)).toBe(0);
+    // High in the canvas: on the old wide sky fitted into a tall screen, taps above the sky's band
+    // burst about 145 px below the finger.
     await g.page.locator('canvas').tap({ position: { x: 200, y: 150 } });
     // The first input starts the audio context; the launch and its burst (2 s later) make sounds.
     await g.waitFor(
       () => (window.game as unknown as Sounding).sound.running && (window.game as unknown as Sounding).sound.played >= 2,
       null,
     );
+    await g.waitFor(() => (window.game as unknown as Shown).show.flashCount >= 1, null);
+    const burst = await g.page.evaluate(() => {
+      const { show, renderer } = window.game as unknown as Shown;
+      const cam = renderer.camera;
+      return { x: cam.toScreenX(show.flashes[0]!), y: cam.toScreenY(show.flashes[1]!), sky: show.params.sky, ground: cam.toScreenY(0), height: cam.height };
+    });
+    // The shell aims at the tap and bursts at its apex; 4 px allows for the launch jitter's rounding.
+    expect(Math.hypot(burst.x - 200, burst.y - 150)).toBeLessThan(4);
+    // A tall sky for a tall screen: the ground is near the canvas's bottom, not a third of the way up.
+    expect(burst.sky.height).toBeGreaterThan(burst.sky.width);
+    expect(burst.height - burst.ground).toBeLessThan(0.1 * burst.height);
     const sizes = await g.page.$$eval('.bp-toolbar button', (bs) =>
       bs.filter((b) => b.getClientRects().length > 0).map((b) => [b.getBoundingClientRect().width, b.getBoundingClientRect().height]),
     );

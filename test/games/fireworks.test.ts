@@ -189,6 +189,19 @@ describe('a launch', () => {
     }
     expect(top).toBeGreaterThan(SKY.height - 3 - 0.7);
     expect(top).toBeLessThan(SKY.height - 3 + 0.1);
+    // A taller sky (a phone held upright) clamps to its own top: a shell aimed at 150 m peaks near
+    // 147 m in a 64 x 150 m sky, and its launch point stays inside the narrower sky.
+    const tall = createFireworks({ opening: 0, seed: 7, generations: 1, sky: { width: 64, height: 150 } });
+    const t = slotOf(launchShell(tall.world, tall.show, 200, 150));
+    expect(tall.world.components.Position.x[t]).toBeLessThanOrEqual(62);
+    let peak = 0;
+    while (tall.show.bursts === 0) {
+      stepFireworks(tall.world, tall.show);
+      if (tall.show.shellCount) peak = Math.max(peak, tall.world.components.Position.y[t]!);
+    }
+    expect(peak).toBeGreaterThan(147 - 0.7);
+    expect(peak).toBeLessThan(147 + 0.1);
+    expect(() => resolveFireworksOptions({ sky: { width: 10, height: 70 } })).toThrow(/sky.width must be in \[30, 400\] m, got 10/);
   });
 });
 
