@@ -23,7 +23,7 @@ import {
 } from '@bitphysics/game-kit';
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { createPhysicsWorld, isAlive, type PhysicsWorld, setGravity, slotOf, step } from '@bitphysics/physics';
+import { createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
 import {
   buildLevel,
@@ -124,7 +124,7 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => lv.pieces.length + shots.length,
   controls: [
-    { keys: 'Drag', action: 'pull back from the catapult, release to throw' },
+    { keys: 'Drag', action: 'pull back (anywhere), release to throw' },
     { keys: 'L', action: 'next level', touch: 'Next level' },
   ],
   keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
@@ -154,53 +154,27 @@ shell.onWorldChange(() => {
 });
 
 /**
- * The camera: the view of the play area that fits the screen. A screen that shows everything from the
- * catapult to the castle at ZOOM pixels a metre or more (a desktop, a phone on its side) sees it all
- * at once, so the player aims at a castle in view; a narrower one (a phone upright) sees a window
- * MIN_WIDTH metres wide (wider if the castle would not fit its height): over the castle as a level
- * opens, over the catapult while aiming (the cup a third of the way in, so the pull and the start of
- * the throw are on screen), following a shot in flight, over the castle while it falls, and back. The
- * view moves smoothly (a tenth of the way each frame).
+ * The camera: the whole play area, from just behind the catapult to just past the castle, fitted to
+ * the screen's width, so the player always sees both the catapult and the castle and never waits on
+ * a pan. On a wide screen the view is as tall as the castle needs; on a tall one (a phone upright)
+ * the ground sits GROUND_AT of the way up the screen, earth below it and sky above, and the scene
+ * fills the middle. The view eases (a tenth of the way each frame) when a level changes its width.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
-/** Least pixels a metre at which the whole play area is shown at once (a 1 m block 20 px wide). */
-const ZOOM = 20;
-/** Width of the following view, m: a phone upright sees the catapult at about 50 px a metre and the first metres of a throw. */
-const MIN_WIDTH = 8;
-/** Screen size the view was framed for; the view jumps (no easing) when it changes and on a new level. */
+/** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
+const GROUND_AT = 0.26;
+/** Screen size the view was framed for; the view jumps (no easing) when it changes. */
 let framedFor = '';
-function frameCamera(world: PhysicsWorld): void {
+function frameCamera(): void {
   const cam = renderer.camera;
   const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
-  const playMinX = LAUNCH.x - 4,
-    playMaxX = lv.castleMaxX + 3;
-  const play = playMaxX - playMinX;
-  let width: number;
-  let minX: number;
-  if (cam.width / play >= ZOOM) {
-    // Everything at once (a wide desktop, a phone on its side).
-    width = play;
-    minX = playMinX;
-  } else {
-    width = MIN_WIDTH;
-    // As tall as the castle needs (a short, wide window): widen to keep the aspect.
-    width = Math.min(play, Math.max(width, (lv.castleTop + 5) / aspect));
-    // Follow the newest shot while it flies; look at the castle for a while after it lands; else the catapult.
-    let focus = LAUNCH.x + width * (0.5 - 0.35);
-    // A new level opens on the castle, then pans back to the catapult (2 s in).
-    if (shots.length === 0 && world.time < 2) focus = (lv.castleMinX + lv.castleMaxX) / 2;
-    const last = shots[shots.length - 1];
-    if (last !== undefined && isAlive(world, last)) {
-      const e = slotOf(last),
-        c = world.components;
-      const flying = Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!) > 2 && c.Position.x[e]! > LAUNCH.x + 1;
-      if (flying) focus = c.Position.x[e]!;
-      else if (world.time - lastShotTime < 6) focus = (lv.castleMinX + lv.castleMaxX) / 2;
-    }
-    minX = Math.min(Math.max(focus - width / 2, playMinX), playMaxX - width);
-  }
-  const top = Math.max(lv.castleTop + 4, -1 + width * aspect);
-  const target = { minX, minY: -1, maxX: minX + width, maxY: top };
+  const minX = LAUNCH.x - 2.5,
+    maxX = lv.castleMaxX + 2;
+  const width = maxX - minX;
+  const height = width * aspect;
+  // Wide: from just under the ground up, taller than the castle. Tall: the ground GROUND_AT up.
+  const minY = height > 3 * (lv.castleTop + 4) ? -GROUND_AT * height : -1;
+  const target = { minX, minY, maxX, maxY: Math.max(minY + height, lv.castleTop + 4) };
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   framedFor = size;
@@ -215,7 +189,7 @@ function frameCamera(world: PhysicsWorld): void {
     Math.abs(target.minY - cameraView.minY),
     Math.abs(target.maxY - cameraView.maxY),
   );
-  cameraSettled = off < 0.01 && (shots.length > 0 || world.time >= 2);
+  cameraSettled = off < 0.01;
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
@@ -261,26 +235,29 @@ const panel = createPanel(
 
 const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
 
-// Aiming: press near the cup, drag back, release.
-const aim = { active: false, dx: 0, dy: 0 };
+// Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen at no
+// fewer than AIM_PX_PER_M pixels a metre of pull. On a phone, where the whole play area is 12-16 px
+// a metre and the catapult is near the left edge, a full pull (PULL.max) is a drag of 120 px that
+// starts wherever the thumb is.
+const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const pointer = { x: 0, y: 0 };
-const toWorld = (e: PointerEvent): [number, number] => {
-  pointerOnCanvas(app.canvas, e, pointer);
-  return [renderer.camera.toWorldX(pointer.x), renderer.camera.toWorldY(pointer.y)];
-};
+/** Least screen pixels per metre of pull. */
+const AIM_PX_PER_M = 40;
+const aimScale = (): number => Math.max(renderer.camera.toScreenLength(1), AIM_PX_PER_M);
 app.canvas.addEventListener('pointerdown', (e) => {
-  const [x, y] = toWorld(e);
-  if (shotsLeft <= 0 || Math.hypot(x - LAUNCH.x, y - LAUNCH.y) > 2.5) return;
+  if (shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
+  pointerOnCanvas(app.canvas, e, pointer);
   aim.active = true;
-  aim.dx = x - LAUNCH.x;
-  aim.dy = y - LAUNCH.y;
+  aim.x0 = pointer.x;
+  aim.y0 = pointer.y;
+  aim.dx = aim.dy = 0;
   app.canvas.setPointerCapture(e.pointerId);
 });
 app.canvas.addEventListener('pointermove', (e) => {
   if (!aim.active) return;
-  const [x, y] = toWorld(e);
-  aim.dx = x - LAUNCH.x;
-  aim.dy = y - LAUNCH.y;
+  pointerOnCanvas(app.canvas, e, pointer);
+  aim.dx = (pointer.x - aim.x0) / aimScale();
+  aim.dy = -(pointer.y - aim.y0) / aimScale();
 });
 const release = (): void => {
   if (!aim.active) return;
@@ -323,13 +300,7 @@ const banner = new Text({
   },
 });
 banner.anchor.set(0.5, 0);
-/** Where the castle is while it is off screen (a phone upright aims with the catapult in view). */
-const castleHint = new Text({
-  text: '',
-  style: { fill: 0x1d3557, fontSize: 15, fontWeight: '700', fontFamily: 'system-ui, sans-serif' },
-});
-castleHint.anchor.set(1, 0.5);
-renderer.root.addChild(overlay, banner, castleHint);
+renderer.root.addChild(overlay, banner);
 
 /**
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
@@ -411,8 +382,16 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
   return t.fallen === lv.pieces.length || (shotsLeft === 0 && world.time - lastShotTime > 4);
 }
 
+/** Pebbles in the earth under the ground: x, y and radius, m (fixed, from a seeded generator). */
+const PEBBLES: number[] = (() => {
+  const r = new Rng(11);
+  const out: number[] = [];
+  for (let i = 0; i < 70; i++) out.push(r.range(-6, 40), r.range(-14, -1.3), r.range(0.08, 0.22));
+  return out;
+})();
+
 function draw(world: PhysicsWorld): void {
-  frameCamera(world);
+  frameCamera();
   drawBackdrop(world);
   const cam = renderer.camera,
     sx = (x: number) => cam.toScreenX(x),
@@ -420,6 +399,19 @@ function draw(world: PhysicsWorld): void {
   overlay.clear();
   // Earth under the ground slab, to the bottom of the screen.
   overlay.rect(0, sy(-1), cam.width, Math.max(0, cam.height - sy(-1))).fill(EARTH);
+  // Strata, darker with depth, and pebbles: earth, not a flat brown panel.
+  for (let k = 1; k <= 3; k++) {
+    const top = sy(-1 - 1.6 * k);
+    if (top < cam.height) overlay.rect(0, top, cam.width, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
+  }
+  for (let i = 0; i < PEBBLES.length; i += 3) {
+    const x = sx(PEBBLES[i]!),
+      y = sy(PEBBLES[i + 1]!);
+    if (y < cam.height + 10)
+      overlay
+        .ellipse(x, y, cam.toScreenLength(PEBBLES[i + 2]!), cam.toScreenLength(0.6 * PEBBLES[i + 2]!))
+        .fill({ color: 0x9a8468, alpha: 0.55 });
+  }
   // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
   overlay
     .moveTo(sx(LAUNCH.x - 0.6), sy(0.9))
@@ -437,16 +429,6 @@ function draw(world: PhysicsWorld): void {
     const [vx, vy] = launchVelocity(aim.dx, aim.dy);
     const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
     for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 2.5).fill({ color: 0xffffff, alpha: 0.8 });
-  }
-  // The castle off the right edge: an arrow at its height with its distance from the catapult.
-  const castleX = (lv.castleMinX + lv.castleMaxX) / 2;
-  castleHint.visible = sx(lv.castleMinX) > cam.width;
-  if (castleHint.visible) {
-    const y = Math.min(Math.max(sy(lv.castleTop / 2), 60), cam.height - 40);
-    overlay.poly([cam.width - 6, y, cam.width - 22, y - 10, cam.width - 22, y + 10]).fill({ color: 0x1d3557 });
-    castleHint.text = `castle ${Math.round(castleX - LAUNCH.x)} m`;
-    castleHint.x = cam.width - 28;
-    castleHint.y = y;
   }
   const t = tally(world, lv);
   if (t.score > best.score) best = t;
@@ -496,7 +478,9 @@ function draw(world: PhysicsWorld): void {
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
-    banner.text = `Score ${t.score}   Total ${total()}   shots ${shotsLeft}`;
+    // The total counts this level's score as it grows (its best try, once the level is over).
+    const i = params.level - 1;
+    banner.text = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}`;
     showNext(false);
   }
 }
@@ -510,7 +494,6 @@ shell.expose({
   /** Whether the level on screen is over. */
   levelEnded: (): boolean => levelEnded,
   /** The text pointing at the castle while it is off screen ('' when it is in view). */
-  castleHint: (): string => (castleHint.visible ? castleHint.text : ''),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
   cameraSettled: (): boolean => cameraSettled,
   /** The level's tally now. */

@@ -207,23 +207,31 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('catapult: a drag from the cup throws; the next-level (or try-again) button goes on when the level is over', async () => {
+  it('catapult: the catapult and the castle both in view; a drag from anywhere throws; the next-level (or try-again) button goes on when the level is over', async () => {
     const g = await h.openGame('catapult', PHONE);
-    // The camera opens on the castle and pans back to the catapult: aim once it is at rest.
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);
+    // The whole play area fits the screen's width (it was an 8 m window that panned: the castle was
+    // off screen while aiming, and a drag during the pan threw nothing).
+    const box = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().toJSON() as DOMRect);
     const cup = await g.worldToPage(0, 1.5);
-    // The cup sits a third of the way in (room for the pull on its left, the throw on its right), not
-    // at an edge (it was at the right edge, half off screen); the castle off screen is pointed at.
-    const width = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().width);
-    expect(cup.x / width).toBeGreaterThan(0.2);
-    expect(cup.x / width).toBeLessThan(0.5);
-    expect(await g.page.evaluate(() => (window.game as unknown as { castleHint(): string }).castleHint())).toMatch(/^castle \d+ m$/);
+    const castle = await g.page.evaluate(() => (window.game as unknown as { level(): { castleMinX: number; castleMaxX: number } }).level());
+    const castleLeft = await g.worldToPage(castle.castleMinX, 0);
+    const castleRight = await g.worldToPage(castle.castleMaxX, 0);
+    for (const p of [cup, castleLeft, castleRight]) {
+      expect(p.x).toBeGreaterThan(box.left);
+      expect(p.x).toBeLessThan(box.right);
+      expect(p.y).toBeLessThan(box.bottom);
+    }
+    // The ground is above the bottom quarter (earth below it), not at the canvas's bottom edge.
+    expect((box.bottom - castleLeft.y) / box.height).toBeGreaterThan(0.2);
+    // The drag starts mid-screen, far from the cup (at the left edge, there is no room to pull back).
+    const start = { x: box.left + box.width / 2, y: box.top + box.height / 2 };
     await touchPath(
       g.page,
       [
-        [cup.x, cup.y],
-        [cup.x - 30, cup.y + 15],
-        [cup.x - 60, cup.y + 30],
+        [start.x, start.y],
+        [start.x - 40, start.y + 20],
+        [start.x - 80, start.y + 40],
       ],
       50,
     );

@@ -66,6 +66,8 @@ const CSS = `
 .bp-touchbar button.on { background: var(--bp-accent, #c77d12); border-color: #ffd166; color: #111; }
 .bp-touchbar button[hidden] { display: none; }
 .bp-touchbar button.bp-big { font-size: 17px; padding: 0 18px; background: #1f7a3a; border-color: #7ee2a0; }
+.bp-touchbar.bp-action { position: absolute; left: 0; right: 0; bottom: 14px; z-index: 6; pointer-events: none; }
+.bp-touchbar.bp-action button { pointer-events: auto; min-height: 52px; box-shadow: 0 4px 14px rgba(0, 0, 0, 0.45); }
 .bp-stick { position: relative; width: 112px; height: 112px; border-radius: 50%; background: rgba(24, 30, 44, 0.9);
   border: 1px solid #6b7891; touch-action: none; user-select: none; flex: none; cursor: grab; }
 .bp-stick::before, .bp-stick::after { content: ''; position: absolute; background: #3a465c; }
@@ -276,21 +278,23 @@ export function createStick(options: StickOptions): Stick {
 }
 
 /**
- * Shows a big on-screen action button (a "Next level" or "Play again") in the controls row while
- * `visible`, on every device; a tap runs `onTap`. @returns a function that sets its visibility and label.
+ * Shows a big on-screen action button (a "Next level" or "Play again") while `visible`, on every
+ * device, floating over the bottom of the stage (so the scene does not move when it appears); a tap
+ * runs `onTap`. @returns a function that sets its visibility and label.
  */
 export function createActionButton(label: string, onTap: () => void): (visible: boolean, text?: string) => void {
   const bar = createButtonBar([{ label, onTap }], { label, touchOnly: false, parent: document.createElement('div') });
   const b = bar.buttons[0]!;
   b.classList.add('bp-big');
+  bar.element.classList.add('bp-action');
   bar.element.remove();
   return (visible, text) => {
     if (text !== undefined && b.textContent !== text) {
       b.textContent = text;
       b.setAttribute('aria-label', text);
     }
-    // Out of the row while hidden, so an empty controls row takes no room.
-    if (visible && !bar.element.isConnected) pageLayout().controls.prepend(bar.element);
+    // Out of the page while hidden.
+    if (visible && !bar.element.isConnected) pageLayout().stage.append(bar.element);
     else if (!visible && bar.element.isConnected) bar.element.remove();
   };
 }
