@@ -224,6 +224,10 @@ describe('phone controls', () => {
     }
     // The ground is above the bottom quarter (earth below it), not at the canvas's bottom edge.
     expect((box.bottom - castleLeft.y) / box.height).toBeGreaterThan(0.2);
+    // The legend is behind the menu button on a phone: a card over the scene says how to play until
+    // the first touch.
+    const hint = g.page.locator('[data-hud="touch-hint"]');
+    expect(await hint.textContent()).toMatch(/^Drag\s*pull back/);
     // The drag starts mid-screen, far from the cup (at the left edge, there is no room to pull back).
     const start = { x: box.left + box.width / 2, y: box.top + box.height / 2 };
     await touchPath(
@@ -236,6 +240,7 @@ describe('phone controls', () => {
       50,
     );
     await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 1, null);
+    await hint.waitFor({ state: 'detached', timeout: 3000 });
     // Spend the remaining shots and let 4 s pass: the level is over.
     await g.page.evaluate(() => {
       const game = window.game as unknown as { shotsLeft(): number; fire(dx: number, dy: number): number; advance(n: number): void };

@@ -65,6 +65,12 @@ const CSS = `
 .bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
 .bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
   border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
+.bp-touch-hint { position: absolute; z-index: 5; left: 50%; top: 56px; transform: translateX(-50%); width: max-content; max-width: calc(100% - 24px);
+  padding: 8px 12px; background: rgba(12, 16, 26, 0.82); border: 1px solid #6b7891; border-radius: 10px; pointer-events: none;
+  font: 14px/1.45 system-ui, sans-serif; color: #f2f5f9; transition: opacity 0.6s; }
+.bp-touch-hint.bp-gone { opacity: 0; }
+.bp-touch-hint div { display: flex; gap: 8px; align-items: baseline; }
+.bp-touch-hint b { flex: none; color: #ffd166; }
 .bp-error { position: fixed; z-index: 40; top: 10px; left: 50%; transform: translateX(-50%); padding: 8px 10px;
   background: rgba(160, 20, 40, 0.92); max-width: 80vw; white-space: pre-wrap; font-family: system-ui, sans-serif; }
 `;
@@ -75,6 +81,47 @@ function injectStyle(): void {
   style.id = STYLE_ID;
   style.textContent = CSS;
   document.head.append(style);
+}
+
+/** How long the touch hint stays up without input, ms. */
+const TOUCH_HINT_MS = 9000;
+
+/**
+ * On a phone the legend sits in a drawer behind the toolbar's menu button, so a first-time player
+ * would not see how to play. This shows the game's touch gestures (up to four; not the toolbar's
+ * buttons, which are in view) in a card over the top of
+ * the stage that lets touches through and fades at the first touch on the stage or after
+ * TOUCH_HINT_MS. Marked `data-scene-overlay`: it is transient, not page furniture covering the scene.
+ */
+function showTouchHint(stage: HTMLElement, controls: readonly ControlHint[]): void {
+  stage.querySelector('.bp-touch-hint')?.remove();
+  const lines: HTMLElement[] = [];
+  for (const c of controls) {
+    const gesture = touchGesture(c);
+    // The toolbar's own buttons (pause, step, reset) are in view already.
+    if (gesture === '' || /\bbutton$/i.test(gesture) || gesture.toLowerCase() === c.action.toLowerCase() || lines.length === 4) continue;
+    const line = document.createElement('div');
+    const b = document.createElement('b');
+    b.textContent = gesture;
+    const action = document.createElement('span');
+    action.textContent = c.action;
+    line.append(b, action);
+    lines.push(line);
+  }
+  if (lines.length === 0) return;
+  const hint = document.createElement('div');
+  hint.className = 'bp-touch-hint';
+  hint.dataset.sceneOverlay = '';
+  hint.dataset.hud = 'touch-hint';
+  hint.append(...lines);
+  stage.append(hint);
+  const hide = (): void => {
+    hint.classList.add('bp-gone');
+    setTimeout(() => hint.remove(), 700);
+    stage.removeEventListener('pointerdown', hide, true);
+  };
+  stage.addEventListener('pointerdown', hide, true);
+  setTimeout(hide, TOUCH_HINT_MS);
 }
 
 /** `n` and the noun in singular or plural: `plural(1, 'body', 'bodies')` is '1 body'. */
@@ -164,6 +211,7 @@ export function createHud(options: HudOptions): Hud {
         lines.push(line);
       }
       legend.replaceChildren(...lines);
+      if (layout && touch && layout.compact()) showTouchHint(layout.stage, controls);
     },
     showError(message) {
       if (!error) {
