@@ -4,7 +4,7 @@
  * solver's soft substeps; the rope is drawn as one smooth line (RopeLayer).
  *
  * Input: drag the bob (or any rope point) to swing it (a mouse joint); click the rope to cut the link
- * there. Keys: P pause, N step, R reset. URL: ?segments (2-200), ?length (1-20 m), ?mass (0.1-20 kg).
+ * there; the pieces fall to the floor. Keys: P pause, N step, R reset. URL: ?segments (2-200), ?length (1-20 m), ?mass (0.1-20 kg).
  */
 
 import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
@@ -14,6 +14,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
 import {
   addBody,
+  addBox,
   addDistanceJoint,
   createPhysicsWorld,
   createRope,
@@ -39,7 +40,14 @@ const url = readUrlParams(
 const params = { ...url, bobMass: 2, slack: true, gravity: 9.81, reset: () => shell.reset() };
 
 const PIN: [number, number] = [0, 3];
-const view: WorldRect = { minX: -6, minY: -3, maxX: 6, maxY: 3.6 };
+/** The floor's top, m: a cut rope and its bob land on it (they fell for ever). */
+const FLOOR_Y = -2.9;
+/** What the camera shows: 12 m wide, or 10 m on a tall screen (a phone upright), where the rope is then drawn larger. */
+const WIDE_VIEW: WorldRect = { minX: -6, minY: -3.2, maxX: 6, maxY: 3.6 };
+const TALL_VIEW: WorldRect = { minX: -5, minY: -3.2, maxX: 5, maxY: 3.6 };
+const view = (): WorldRect => (app.canvas.clientHeight > app.canvas.clientWidth ? TALL_VIEW : WIDE_VIEW);
+/** The rope's colour (RopeLayer's default). */
+const ROPE_COLOR = 0xd9b38c;
 let rope: Rope;
 let bob = 0;
 let bobLink = 0;
@@ -51,7 +59,9 @@ function createWorld(): PhysicsWorld {
   const L = params.length,
     a = Math.PI / 3;
   const end: [number, number] = [PIN[0] + L * Math.sin(a), PIN[1] - L * Math.cos(a)];
-  rope = createRope(world, { start: PIN, end, segments: params.segments, mass: params.mass, slack: params.slack, drag: 0.01 });
+  // The links have a radius so the rope lies on the floor; a rope 8 m long reaches it.
+  rope = createRope(world, { start: PIN, end, segments: params.segments, mass: params.mass, slack: params.slack, drag: 0.01, radius: 0.03 });
+  addBox(world, { position: [0, FLOOR_Y - 0.2], halfExtents: [30, 0.2], static: true, friction: 0.6 });
   const last = rope.bodies[rope.bodies.length - 1]!;
   bob = addBody(world, {
     position: [end[0] + 0.3 * Math.sin(a), end[1] - 0.3 * Math.cos(a)],
@@ -81,12 +91,12 @@ const game = await startPixiGame({
     { keys: 'Drag', action: 'swing the bob or rope' },
     { keys: 'Click', action: 'cut the rope there' },
   ],
-  renderer: { view, balls: 'sprites' },
+  renderer: { view: WIDE_VIEW, balls: 'sprites' },
   onFrame: (alpha, world) => draw(alpha, world),
 });
 const { shell, renderer, app } = game;
 const dock = createLabDock();
-followView(app, renderer.camera, dock, () => view);
+followView(app, renderer.camera, dock, view);
 
 createPanel(
   params,
@@ -212,7 +222,9 @@ let layerWorld: PhysicsWorld | null = null;
 function draw(alpha: number, world: PhysicsWorld): void {
   if (layerWorld !== world) {
     layer.destroy();
-    layer = new RopeLayer(world, [...rope.bodies, bob], { start: PIN, width: 0.06, links: [...rope.joints, bobLink] });
+    layer = new RopeLayer(world, [...rope.bodies, bob], { start: PIN, width: 0.06, links: [...rope.joints, bobLink], color: ROPE_COLOR });
+    // The links' colliders are drawn in the rope's colour, so the rope reads as one line.
+    for (const b of rope.bodies) renderer.setColor(b, ROPE_COLOR);
     renderer.root.addChildAt(layer.graphics, 0);
     layerWorld = world;
   }

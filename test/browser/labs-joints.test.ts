@@ -156,6 +156,17 @@ describe('lab-rope', () => {
     // Drawn as two ropes: no line joins the piece that hangs from the pin to the piece that fell (it
     // was drawn through the cut, a straight segment about 430 px long).
     await g.waitFor(() => (window.game as unknown as { ropePieces(): number }).ropePieces() === 2, null);
+    // The piece that fell lands on the floor (top at y = -2.9 m) and comes to rest there: it fell
+    // for ever, the bob reaching 35 m/s. Bob radius 0.25 m; 5 cm allows for contact softness.
+    const landed = await g.page.evaluate(() => {
+      const w = window.game as unknown as LabWindow & { ids(): { bob: number } };
+      w.advance(600);
+      const c = w.world.components,
+        b = w.ids().bob;
+      return { y: c.Position.y[b]!, speed: Math.hypot(c.Velocity.x[b]!, c.Velocity.y[b]!) };
+    });
+    expect(Math.abs(landed.y - (-2.9 + 0.25))).toBeLessThan(0.05);
+    expect(landed.speed).toBeLessThan(0.5);
     expect(g.errors).toEqual([]);
   });
 });
