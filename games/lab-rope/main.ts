@@ -60,7 +60,15 @@ function createWorld(): PhysicsWorld {
     a = Math.PI / 3;
   const end: [number, number] = [PIN[0] + L * Math.sin(a), PIN[1] - L * Math.cos(a)];
   // The links have a radius so the rope lies on the floor; a rope 8 m long reaches it.
-  rope = createRope(world, { start: PIN, end, segments: params.segments, mass: params.mass, slack: params.slack, drag: 0.01, radius: 0.03 });
+  rope = createRope(world, {
+    start: PIN,
+    end,
+    segments: params.segments,
+    mass: params.mass,
+    slack: params.slack,
+    drag: 0.01,
+    radius: 0.03,
+  });
   addBox(world, { position: [0, FLOOR_Y - 0.2], halfExtents: [30, 0.2], static: true, friction: 0.6 });
   const last = rope.bodies[rope.bodies.length - 1]!;
   bob = addBody(world, {

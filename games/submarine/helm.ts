@@ -5,7 +5,7 @@
  * the pumps, vents and thrusters do.
  *
  * - Dive / Rise (held): the tanks go heavier / lighter than neutral (enough to carry the boat at
- *   `HELM.climbSpeed` against drag, more while it is slower than that) and the vertical thrusters
+ *   `HELM.diveSpeed` (`HELM.climbSpeed` rising) against drag, more while it is slower than that) and the vertical thrusters
  *   push at once, so the boat starts to move before the water has moved; the bow dips (rises) by
  *   `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the fore tank first. Rise
  *   slows the climb near the surface and blows the tanks dry once the deck is out.
@@ -15,7 +15,9 @@
  * - Nose down / up (held): pitch to `HELM.noseAngle` by the thrusters at once and by moving water
  *   between the tanks; meanwhile the thrusters stop the hull sliding across its axis, so with the
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
- * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`; it stays where it was left.
+ * - Ahead / astern (held): the throttle moves at `HELM.throttleRate`. Released, it winds back to
+ *   stop at `HELM.throttleRelease`, so the screw turns while the player holds the key, as a player
+ *   expects (a telegraph that stayed at full ahead read as a stuck key).
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';
@@ -74,8 +76,10 @@ const DEG = Math.PI / 180;
 
 /** The helm's settings. */
 export const HELM = Object.freeze({
-  /** Vertical speed asked for while Dive or Rise is held, m/s. */
-  climbSpeed: 3,
+  /** Vertical speed asked for while Dive is held, m/s (the boat cruises at about 10 m/s ahead). */
+  diveSpeed: 5,
+  /** Vertical speed asked for while Rise is held, m/s (less than diving: the boat must slow before the surface). */
+  climbSpeed: 4,
   /** Most tank fill the helm adds or takes away (each tank) to speed the boat up or slow it down. */
   ballastExcess: 0.2,
   /** Tank fill added per m/s that the boat sinks slower (or rises faster) than asked, s/m. */
@@ -100,6 +104,8 @@ export const HELM = Object.freeze({
   surfaceBand: 1.5,
   /** Throttle change per second while Ahead or Astern is held. */
   throttleRate: 0.8,
+  /** Throttle change per second towards stop while neither is held. */
+  throttleRelease: 0.5,
 });
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
@@ -116,6 +122,10 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     S = SUBMARINE;
   if (input.ahead && !input.astern) state.throttle = Math.min(1, state.throttle + HELM.throttleRate * dt);
   if (input.astern && !input.ahead) state.throttle = Math.max(-0.5, state.throttle - HELM.throttleRate * dt);
+  if (input.ahead === input.astern) {
+    const ease = HELM.throttleRelease * dt;
+    state.throttle = state.throttle > ease ? state.throttle - ease : state.throttle < -ease ? state.throttle + ease : 0;
+  }
 
   const y = c.Position.y[e]!,
     vy = c.Velocity.y[e]!,
@@ -132,7 +142,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   let vCmd = Number.NaN;
   if (dive) {
     state.mode = 'diving';
-    vCmd = -HELM.climbSpeed;
+    vCmd = -HELM.diveSpeed;
   } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
     // It stays surfaced while it bobs within surfaceBand of the surface.

@@ -157,7 +157,7 @@ app.stage.addChild(g);
 /** The pointer to the nearest beacon left: its distance, beside an arrow at the screen's edge (or over the beacon in view). */
 const pointer = new Text({
   text: '',
-  style: { fill: 0xffe066, fontSize: 14, fontWeight: '700', fontFamily: 'system-ui, sans-serif', stroke: { color: 0x06213a, width: 3 } },
+  style: { fill: 0xffe066, fontSize: 15, fontWeight: '700', fontFamily: 'system-ui, sans-serif' },
 });
 pointer.anchor.set(0.5);
 app.stage.addChild(pointer);
@@ -348,16 +348,22 @@ function draw(): void {
       const ang = Math.atan2(dy, dx),
         ca = Math.cos(ang),
         sa = Math.sin(ang);
-      g.poly([px + 14 * ca, py + 14 * sa, px - 8 * ca - 8 * sa, py - 8 * sa + 8 * ca, px - 8 * ca + 8 * sa, py - 8 * sa - 8 * ca]).fill(
+      // A badge: a dark disc ringed in the beacons' yellow with a large arrow in it.
+      g.circle(px, py, 20).fill({ color: 0x06213a, alpha: 0.85 }).stroke({ color: 0xffe066, width: 2 });
+      g.poly([px + 13 * ca, py + 13 * sa, px - 8 * ca - 9 * sa, py - 8 * sa + 9 * ca, px - 8 * ca + 9 * sa, py - 8 * sa - 9 * ca]).fill(
         0xffe066,
       );
-      pointer.x = px - 26 * ca;
-      pointer.y = py - 26 * sa;
+      pointer.x = px - 52 * ca;
+      pointer.y = py - 34 * sa;
     } else {
       pointer.x = bx;
-      pointer.y = by - 2.4 * k - 12;
+      pointer.y = by - 2.4 * k - 16;
     }
-    pointer.text = `${best.toFixed(0)} m`;
+    pointer.text = `beacon ${best.toFixed(0)} m`;
+    // The label on a dark pill, readable over the bright surface water and the sky.
+    const pw = pointer.width + 14,
+      ph = pointer.height + 4;
+    g.roundRect(pointer.x - pw / 2, pointer.y - ph / 2, pw, ph, ph / 2).fill({ color: 0x06213a, alpha: 0.85 });
   }
   // Hull: a rounded rectangle with a sail, rotated by the hull's angle.
   const a = c.Angle.value[e]!,

@@ -15,7 +15,7 @@ interface LabWindow {
   reset(): void;
   advance(n: number): void;
   renderer: { camera: Cam };
-  world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+  world: { components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
 }
 
 let h: Harness;

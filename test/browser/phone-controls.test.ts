@@ -125,7 +125,7 @@ describe('phone controls', () => {
       (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
     );
     expect(aim.visible).toBe(true);
-    expect(aim.text).toMatch(/^\d+ m$/);
+    expect(aim.text).toMatch(/^beacon \d+ m$/);
     expect(g.errors).toEqual([]);
     await g.close();
   });
@@ -279,7 +279,13 @@ describe('phone controls', () => {
     const burst = await g.page.evaluate(() => {
       const { show, renderer } = window.game as unknown as Shown;
       const cam = renderer.camera;
-      return { x: cam.toScreenX(show.flashes[0]!), y: cam.toScreenY(show.flashes[1]!), sky: show.params.sky, ground: cam.toScreenY(0), height: cam.height };
+      return {
+        x: cam.toScreenX(show.flashes[0]!),
+        y: cam.toScreenY(show.flashes[1]!),
+        sky: show.params.sky,
+        ground: cam.toScreenY(0),
+        height: cam.height,
+      };
     });
     // The shell aims at the tap and bursts at its apex; 4 px allows for the launch jitter's rounding.
     expect(Math.hypot(burst.x - 200, burst.y - 150)).toBeLessThan(4);

@@ -86,7 +86,7 @@ describe('projects', () => {
     expect(aim.index).toBeGreaterThanOrEqual(0);
     expect(aim.visible).toBe(true);
     expect(aim.onScreen).toBe(false);
-    expect(aim.text).toBe(`${aim.distance.toFixed(0)} m`);
+    expect(aim.text).toBe(`beacon ${aim.distance.toFixed(0)} m`);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;
@@ -109,6 +109,8 @@ describe('projects', () => {
     expect(s.throttle).toBeGreaterThan(0.3);
     expect(s.fill).toBeGreaterThan(0.1);
     expect(s.x).toBeGreaterThan(x0);
+    // Let go, the screw winds back to stop (it stayed at full ahead, which read as a stuck key).
+    await g.waitFor(() => (window.game as unknown as { state: { throttle: number } }).state.throttle === 0, null, 30_000);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -82,14 +82,15 @@ describe('submarine helm', () => {
     }
   });
 
-  it('Rise while diving at full speed turns the boat up within 3 s (was 3.3 s from a slower dive)', () => {
-    const b = boat(-60);
-    run(b, { dive: true }, 4);
-    expect(vy(b)).toBeLessThan(-0.9 * HELM.climbSpeed); // at speed: -3 m/s
+  it('Rise while diving at full speed turns the boat up within 4.5 s (was 3.3 s from a dive at 3 m/s)', () => {
+    const b = boat(-80);
+    run(b, { dive: true }, 7);
+    expect(vy(b)).toBeLessThan(-0.9 * HELM.diveSpeed); // at speed: -5 m/s
     const r = response(b, { rise: true }, 1);
-    // Measured: 2.8 s (the bow comes up 1 degree in 0.65 s). The momentum of 110 t at 3 m/s against 60 kN of thrusters and 8 t of blown
-    // water: a = (60 kN + 78 kN + k v^2) / 110.7 t, about 1.3 m/s^2 (honest: no instant stop).
-    expect(r.speed).toBeLessThan(3);
+    // The momentum of 110 t at 5 m/s against 60 kN of thrusters and 8 t of blown water:
+    // a = (60 kN + 78 kN + k v^2) / 110.7 t, about 1.3 m/s^2, so about 4 s to turn (honest: no
+    // instant stop). The bow comes up 1 degree within a second.
+    expect(r.speed).toBeLessThan(4.5);
     expect(r.pitch1deg).toBeLessThan(1);
   });
 

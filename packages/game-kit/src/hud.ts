@@ -65,7 +65,7 @@ const CSS = `
 .bp-legend div { display: flex; gap: 6px; align-items: baseline; margin-bottom: 2px; }
 .bp-legend kbd { flex: none; display: inline-block; min-width: 1.4em; text-align: center; padding: 0 5px; border: 1px solid #8a94a6;
   border-radius: 4px; background: rgba(255, 255, 255, 0.08); font: inherit; white-space: nowrap; }
-.bp-touch-hint { position: absolute; z-index: 5; left: 50%; top: 56px; transform: translateX(-50%); width: max-content; max-width: calc(100% - 24px);
+.bp-touch-hint { position: absolute; z-index: 5; left: 50%; bottom: 16px; transform: translateX(-50%); width: max-content; max-width: calc(100% - 24px);
   padding: 8px 12px; background: rgba(12, 16, 26, 0.82); border: 1px solid #6b7891; border-radius: 10px; pointer-events: none;
   font: 14px/1.45 system-ui, sans-serif; color: #f2f5f9; transition: opacity 0.6s; }
 .bp-touch-hint.bp-gone { opacity: 0; }
@@ -89,7 +89,7 @@ const TOUCH_HINT_MS = 9000;
 /**
  * On a phone the legend sits in a drawer behind the toolbar's menu button, so a first-time player
  * would not see how to play. This shows the game's touch gestures (up to four; not the toolbar's
- * buttons, which are in view) in a card over the top of
+ * buttons, which are in view) in a card over the bottom of
  * the stage that lets touches through and fades at the first touch on the stage or after
  * TOUCH_HINT_MS. Marked `data-scene-overlay`: it is transient, not page furniture covering the scene.
  */
