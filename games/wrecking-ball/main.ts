@@ -6,8 +6,9 @@
  * (more for pieces that stood high); knock down 70 % of a level to clear it; levels are seeded.
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
- * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click the ground to send the hook
- * there; drag the ball to pull it; right-drag orbits, wheel zooms.
+ * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
+ * at it (the crane winds up and runs through); click the ground to send the hook there; drag the
+ * ball to pull it; right-drag orbits, wheel zooms.
  * URL: ?level=N, ?seed=S, ?debug.
  */
 
@@ -32,6 +33,7 @@ import {
   BufferGeometry,
   CanvasTexture,
   CylinderGeometry,
+  DoubleSide,
   Line,
   LineBasicMaterial,
   Mesh,
@@ -39,12 +41,14 @@ import {
   MeshStandardMaterial,
   Plane,
   Raycaster,
+  RepeatWrapping,
   RingGeometry,
   SRGBColorSpace,
   Vector2,
   Vector3,
 } from 'three';
 import {
+  aimAt,
   BALL_RADIUS,
   buildWreckingBall,
   CHAIN_LINKS,
@@ -88,12 +92,16 @@ const COLORS = {
   tower: 0xd1495b,
   wall: 0xc8763c,
   planks: 0xe0b872,
-  fallen: 0x59606c,
   ball: 0xb8c2d0,
   link: 0x9aa3ad,
   mast: 0xf2b705,
   hook: 0xf2b705,
 };
+
+/** `color` (0xRRGGBB) with each channel times `f` in [0, 1]. */
+function darken(color: number, f: number): number {
+  return (Math.round(((color >> 16) & 255) * f) << 16) | (Math.round(((color >> 8) & 255) * f) << 8) | Math.round((color & 255) * f);
+}
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(wreckingBallWorldOptions());
@@ -125,7 +133,8 @@ function gameStep(world: PhysicsWorld): void {
   const gained = scorePieces(world, handles.pieces);
   if (gained > 0) {
     levelScore += gained;
-    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body)) renderer.setColor(p.body, COLORS.fallen);
+    // A fallen piece keeps its material, darkened (grey read as a different material).
+    for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body)) renderer.setColor(p.body, darken(COLORS[p.kind], 0.62));
   }
   if (!cleared && fallenCount(handles.pieces) >= CLEAR_FRACTION * handles.pieces.length) {
     cleared = true;
@@ -145,6 +154,7 @@ const game = await startThreeGame({
     { keys: 'A D / ← →', action: 'slew the jib', touch: 'Slew' },
     { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
     { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
+    { keys: 'Click a target', action: 'swing the ball at it', touch: 'Tap a target' },
     { keys: 'Click ground', action: 'send the hook there' },
     { keys: 'Drag ball', action: 'pull the ball, release to swing' },
     { keys: 'L', action: 'next level (once cleared)', touch: 'Next level' },
@@ -218,7 +228,8 @@ function dress(): void {
   renderer.setColor(h.ball, COLORS.ball);
   // The capsule links are drawn by the chain rod (drawChain), not one by one.
   for (const l of h.links) renderer.setShape(l, { geometry: chainGeometry, scale: 1e-4 });
-  renderer.setColor(h.mast, COLORS.mast);
+  // The mast's box is drawn as a lattice (mastLattice below), not as the solid box.
+  renderer.setShape(h.mast, { geometry: hookGeometry, scale: 1e-4 });
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
 }
 const hookGeometry = new BoxGeometry(1, 1, 1);
@@ -238,10 +249,70 @@ function nextLevel(): void {
 
 // ---- The crane's jib and cable (drawn only: the physics is the trolley, chain and ball) -------------
 
-const jibMaterial = new MeshStandardMaterial({ color: COLORS.mast, roughness: 0.6, metalness: 0.2 });
-const jib = new Mesh(new BoxGeometry(RADIUS_RANGE[1] + 4, 0.45, 0.45), jibMaterial);
+/**
+ * A lattice: a square frame with one diagonal, drawn into a 64 px canvas and repeated along a box, so
+ * the mast and the jib read as a crane's steel truss (see-through, alphaTest) rather than solid bars.
+ */
+function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 64;
+  const g = c.getContext('2d')!;
+  g.strokeStyle = '#ffffff';
+  g.lineWidth = 7;
+  g.strokeRect(3.5, 3.5, 57, 57);
+  g.beginPath();
+  g.moveTo(4, 60);
+  g.lineTo(60, 4);
+  g.stroke();
+  const t = new CanvasTexture(c);
+  t.wrapS = t.wrapT = RepeatWrapping;
+  t.repeat.set(alongX ? repeatAlong : 1, alongX ? 1 : repeatAlong);
+  t.colorSpace = SRGBColorSpace;
+  return t;
+}
+const JIB_LENGTH = RADIUS_RANGE[1] + 4;
+const jibMaterial = new MeshStandardMaterial({
+  color: COLORS.mast,
+  roughness: 0.6,
+  metalness: 0.2,
+  map: latticeTexture(JIB_LENGTH / 0.55, true),
+  alphaTest: 0.5,
+  transparent: false,
+  side: DoubleSide,
+});
+// Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
+jibMaterial.alphaMap = jibMaterial.map;
+const jib = new Mesh(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
+// The counter-jib's concrete counterweight and the operator's cab at the top of the mast, turning with the jib.
+const counterweight = new Mesh(new BoxGeometry(1.2, 1.1, 1.0), new MeshStandardMaterial({ color: 0x8d8f94, roughness: 0.9 }));
+counterweight.castShadow = true;
+app.scene.add(counterweight);
+const cab = new Mesh(new BoxGeometry(0.9, 0.8, 0.9), new MeshStandardMaterial({ color: 0xe8eef4, roughness: 0.5, metalness: 0.1 }));
+cab.castShadow = true;
+app.scene.add(cab);
+// The mast drawn as a lattice over the physics' box (which the renderer draws in the same colour).
+const mastLattice = new Mesh(
+  new BoxGeometry(0.82, JIB_HEIGHT, 0.82),
+  new MeshStandardMaterial({
+    color: COLORS.mast,
+    roughness: 0.6,
+    metalness: 0.2,
+    map: latticeTexture(JIB_HEIGHT / 0.82, false),
+    alphaTest: 0.5,
+    side: DoubleSide,
+  }),
+);
+(mastLattice.material as MeshStandardMaterial).alphaMap = (mastLattice.material as MeshStandardMaterial).map;
+mastLattice.position.set(0, JIB_HEIGHT / 2, 0);
+mastLattice.castShadow = true;
+app.scene.add(mastLattice);
+// A concrete footing under the mast.
+const footing = new Mesh(new BoxGeometry(2.4, 0.3, 2.4), new MeshStandardMaterial({ color: 0x9a9a94, roughness: 0.95 }));
+footing.position.set(0, 0.15, 0);
+footing.receiveShadow = true;
+app.scene.add(footing);
 const cableGeometry = new BufferGeometry();
 const cablePositions = new Float32Array(6);
 cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
@@ -331,6 +402,7 @@ window.addEventListener('keydown', (event) => {
   if (!DRIVE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
   held.add(k);
   handles.controls.goal = null;
+  handles.controls.moves = [];
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -372,20 +444,29 @@ const groundHit = new Vector3();
 let pressId = -1;
 
 /**
- * A press at (ndcX, ndcY): on the ball, grabs it; elsewhere, sends the hook to the ground point under
- * the pointer. @returns 'ball', 'hook' or 'none'.
+ * A press at (ndcX, ndcY): on the ball, grabs it; on a piece of a target, swings the ball at it
+ * (./scene `aimAt`: the crane winds up and runs through); elsewhere, sends the hook to the ground
+ * point under the pointer. @returns 'ball', 'swing', 'hook' or 'none'.
  */
-function pressAt(ndcX: number, ndcY: number): 'ball' | 'hook' | 'none' {
+function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none' {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (hit && hit.eid === handles.ball) {
     drag.grab(ndcX, ndcY, app.camera);
     return drag.body === handles.ball ? 'ball' : 'none';
   }
+  if (hit && handles.pieces.some((p) => p.body === hit.eid)) {
+    aimAt(shell.world, handles, hit.eid);
+    aimed = hit.eid;
+    return 'swing';
+  }
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   if (raycaster.ray.intersectPlane(ground, groundHit) === null) return 'none';
+  handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
   return 'hook';
 }
+/** The piece the last swing was aimed at (marked with a ring while the swing runs), or 0. */
+let aimed = 0;
 
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
@@ -461,6 +542,10 @@ function frame(): void {
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
+  counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
+  counterweight.rotation.set(0, c.angle, 0);
+  cab.position.set(0.2 * ca, JIB_HEIGHT - 0.6, -0.2 * sa);
+  cab.rotation.set(0, c.angle, 0);
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
   followAction();
@@ -472,8 +557,13 @@ function frame(): void {
   cablePositions[5] = hp[2]!;
   cableGeometry.attributes.position!.needsUpdate = true;
   const goal = handles.controls.goal;
-  goalMarker.visible = goal !== null;
+  const swinging = handles.controls.moves.length > 0 && aimed !== 0 && isAlive(shell.world, aimed);
+  goalMarker.visible = goal !== null || swinging;
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
+  else if (swinging) {
+    const P = shell.world.components.Position;
+    goalMarker.position.set(P.x[aimed]!, 0.02, P.z[aimed]!);
+  }
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);

@@ -9,8 +9,8 @@
  * moves the trolley toward them at limited speeds by setting its velocity each substep, so the ball
  * swings behind it like a real pendulum (period 2 pi sqrt(L / g) for a chain of length L).
  *
- * Scoring (`scorePieces`): a piece has fallen once its centre is FALL_DROP below where it stood or
- * its up axis has tipped past TIP_ANGLE; each fallen piece scores 10 points plus 10 per metre it
+ * Scoring (`scorePieces`): a piece has fallen once its centre is FALL_DROP below where it stood, its
+ * up axis has tipped past TIP_ANGLE or it has been knocked KNOCK_DISTANCE along the ground; each fallen piece scores 10 points plus 10 per metre it
  * stood above the ground. A level is cleared when CLEAR_FRACTION of its pieces have fallen.
  */
 import {
@@ -22,6 +22,7 @@ import {
   addSystem,
   type PhysicsWorld,
   type PhysicsWorldOptions,
+  setDrag,
 } from '@bitphysics/physics';
 
 /** Height of the jib, m. */
@@ -29,7 +30,7 @@ export const JIB_HEIGHT = 11.5;
 /** Smallest and largest trolley radius on the jib, m. */
 export const RADIUS_RANGE: readonly [number, number] = [3, 11];
 /** Lowest and highest hook height, m. */
-export const HOOK_RANGE: readonly [number, number] = [6, 10.5];
+export const HOOK_RANGE: readonly [number, number] = [5.7, 10.5];
 /** Largest slew rate, rad/s; trolley speed along the jib and hoist speed, m/s. */
 export const SLEW_RATE = 0.7;
 export const TROLLEY_SPEED = 3.5;
@@ -38,6 +39,8 @@ export const HOIST_SPEED = 2;
 export const CHAIN_LINKS = 8;
 export const LINK_RADIUS = 0.07;
 export const LINK_HALF = 0.22;
+/** Time constant, s, with which the ball's swing decays (see buildWreckingBall). */
+export const SWAY_DAMPING_TIME = 4;
 /** The ball: radius, m, and density, kg/m^3 (steel). */
 export const BALL_RADIUS = 0.55;
 export const BALL_DENSITY = 7800;
@@ -45,6 +48,12 @@ export const BALL_DENSITY = 7800;
 export const PIECE_DENSITY = 450;
 /** A piece has fallen when its centre is this far below its start, m, or it has tipped past TIP_ANGLE (rad). */
 export const FALL_DROP = 0.4;
+/**
+ * A piece has also fallen when its centre has moved this far across the ground from where it stood,
+ * m: a bottom brick or plank swept away cannot drop, and counted as standing it made a level's
+ * clearing share unreachable.
+ */
+export const KNOCK_DISTANCE = 1;
 export const TIP_ANGLE = Math.PI / 3;
 /** Fraction of a level's pieces that must fall to clear it. */
 export const CLEAR_FRACTION = 0.7;
@@ -59,8 +68,29 @@ export interface CraneControls {
   trolley: number;
   /** Hoist: -1 down, 0, 1 up. */
   hoist: number;
-  /** A point to drive the hook to (m, x and z), or null: set by a click on the ground. */
+  /**
+   * A point to drive the hook to (m, x and z), or null: set by a click on the ground or a target. The
+   * crane runs there at full speed and stops at once, so the lagging ball swings on through the point.
+   */
   goal: [number, number] | null;
+  /** A hook height to hoist to while driving to `goal` (m, clamped to HOOK_RANGE), or null to keep it. */
+  goalHeight: number | null;
+  /**
+   * Timed moves (a swing at a target, see `aimAt`), done in order before `goal`: each takes the crane
+   * from where it is to (angle rad, radius m, height m) at a constant rate over `duration` s.
+   */
+  moves: CraneMove[];
+}
+
+/** One timed move of the crane (see `CraneControls.moves`). */
+export interface CraneMove {
+  angle: number;
+  radius: number;
+  height: number;
+  /** Seconds the move takes, > 0. */
+  duration: number;
+  /** Seconds of it done (the system counts it). */
+  elapsed: number;
 }
 
 /** The crane's state: where the jib points and where the trolley is on it. */
@@ -78,6 +108,9 @@ export interface Piece {
   body: number;
   /** Start height of its centre, m. */
   y0: number;
+  /** Start place of its centre across the ground, m. */
+  x0: number;
+  z0: number;
   /** Half extents, m. */
   half: [number, number, number];
   /** What it belongs to. */
@@ -159,7 +192,7 @@ function addPiece(
   addShape3D(world, body, { type: 'box', halfExtents: half, density: PIECE_DENSITY, friction: 0.6, restitution: 0.05 });
   let upAxis = 0;
   for (let i = 1; i < 3; i++) if (Math.abs(upComponent(world, body, i)) > Math.abs(upComponent(world, body, upAxis))) upAxis = i;
-  pieces.push({ body, kind, y0: y, half, points: 10 + Math.round(10 * y), fallen: false, upAxis });
+  pieces.push({ body, kind, y0: y, x0: x, z0: z, half, points: 10 + Math.round(10 * y), fallen: false, upAxis });
 }
 
 /** A tower of `n` cubes of edge `edge` (m) at (x, z), turned by yaw. */
@@ -225,7 +258,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null };
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null, goalHeight: null, moves: [] };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -244,6 +277,10 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   }
   const ball = addBody(world, { position: [hx, top - BALL_RADIUS, hz] });
   addShape3D(world, ball, { type: 'sphere', radius: BALL_RADIUS, density: BALL_DENSITY * weight, friction: 0.4, restitution: 0.1 });
+  // Sway damping, as a crane's anti-sway control gives: a swing left behind by a hit or a stop
+  // decays with time constant m / k, about 4 s for the 5.4 t ball (a hanging ball under a hook
+  // moving at 1.3 m/s lags about 2 degrees more for it).
+  setDrag(world, ball, { linear: (BALL_DENSITY * weight * (4 / 3) * Math.PI * BALL_RADIUS ** 3) / SWAY_DAMPING_TIME });
   addBallJoint3D(world, { a: prev, b: ball, anchor: [hx, top, hz] });
   // The chain's links are light next to the ball: a rope from the hook to the ball (its length the
   // chain's) carries the load, so the chain cannot stretch (Box2D's advice for heavy ends on chains).
@@ -280,6 +317,56 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   return handles;
 }
 
+/** Length from the hook to the ball's centre with the chain straight, m. */
+export const HANG = CHAIN_LINKS * 2 * (LINK_HALF + LINK_RADIUS) + BALL_RADIUS;
+
+/** Period of the ball's swing on its chain, s: a pendulum of length HANG, T = 2 pi sqrt(L / g). */
+export const SWING_PERIOD = 2 * Math.PI * Math.sqrt(HANG / 9.81);
+
+/** Arc, m, the hook runs up to a target in half a swing period (see `aimAt`). */
+export const RUN_UP = 6;
+
+/**
+ * Swings the ball at piece `piece` with two timed moves (`CraneControls.moves`), from what a
+ * pendulum does when its pivot starts to move at a constant speed u: the ball lags, then passes
+ * under the pivot half a period later moving at 2u (its speed relative to the pivot, u, plus the
+ * pivot's).
+ * - Wind-up: to RUN_UP m of arc before the piece (on the side the hook is on), at the piece's
+ *   radius, hoisted so the ball's centre passes at the piece's height, over a whole number of swing
+ *   periods (a constant-speed move of one period leaves little swing behind).
+ * - Run: the RUN_UP m to the piece at constant speed over half a period; the ball meets the piece
+ *   at up to 2 x 6 / 2.3 = 5 m/s as the hook stops over it. Measured on levels 1 to 3, one swing
+ *   at the middle piece of a tower, wall or plank stack brings down 0 to 14 of its pieces.
+ * The wind-up is skipped when the hook is already there.
+ */
+export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
+  const P = world.components.Position;
+  const x = P.x[piece]!,
+    z = P.z[piece]!;
+  const radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(x, z)));
+  // The ball's centre at the piece's, but never lower than skimming the ground.
+  const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], Math.max(P.y[piece]!, BALL_RADIUS + 0.05) + HANG));
+  const target = Math.atan2(-z, x);
+  const c = h.crane;
+  const side = wrap(target - c.angle) >= 0 ? 1 : -1; // the slew direction to the piece
+  const start = wrap(target - side * (RUN_UP / radius));
+  const moves: CraneMove[] = [];
+  const away = Math.hypot(radius * Math.cos(start) - c.radius * Math.cos(c.angle), radius * Math.sin(start) - c.radius * Math.sin(c.angle));
+  if (away > 0.5 || Math.abs(height - c.height) > 0.3) {
+    // As many whole periods as the crane's rates need.
+    const need = Math.max(
+      Math.abs(wrap(start - c.angle)) / SLEW_RATE,
+      Math.abs(radius - c.radius) / TROLLEY_SPEED,
+      Math.abs(height - c.height) / HOIST_SPEED,
+    );
+    moves.push({ angle: start, radius, height, duration: Math.max(1, Math.ceil(need / SWING_PERIOD)) * SWING_PERIOD, elapsed: 0 });
+  }
+  moves.push({ angle: target, radius, height, duration: SWING_PERIOD / 2, elapsed: 0 });
+  h.controls.goal = null;
+  h.controls.goalHeight = null;
+  h.controls.moves = moves;
+}
+
 /** Wraps an angle into (-pi, pi]. */
 function wrap(a: number): number {
   return a - 2 * Math.PI * Math.floor((a + Math.PI) / (2 * Math.PI));
@@ -296,20 +383,44 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       k = h.controls,
       dt = world.dt / world.substeps;
     let slew = k.slew,
-      run = k.trolley;
+      run = k.trolley,
+      hoist = k.hoist;
     if (k.goal !== null) {
+      // Full speed until the last substep's worth, then exactly there: no easing in, so the ball,
+      // lagging behind the hook, swings on through the goal with the crane's speed.
       const [gx, gz] = k.goal;
       const want = Math.atan2(-gz, gx),
         d = wrap(want - c.angle);
       const wantR = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(gx, gz)));
-      slew = Math.max(-1, Math.min(1, d / (SLEW_RATE * 0.3)));
-      run = Math.max(-1, Math.min(1, (wantR - c.radius) / (TROLLEY_SPEED * 0.3)));
-      if (Math.abs(d) < 1e-3 && Math.abs(wantR - c.radius) < 1e-3) k.goal = null;
+      slew = Math.max(-1, Math.min(1, d / (SLEW_RATE * dt)));
+      run = Math.max(-1, Math.min(1, (wantR - c.radius) / (TROLLEY_SPEED * dt)));
+      let there = Math.abs(d) < 1e-9 && Math.abs(wantR - c.radius) < 1e-9;
+      if (k.goalHeight !== null) {
+        const wantH = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], k.goalHeight));
+        hoist = Math.max(-1, Math.min(1, (wantH - c.height) / (HOIST_SPEED * dt)));
+        there &&= Math.abs(wantH - c.height) < 1e-9;
+      }
+      if (there) {
+        k.goal = null;
+        k.goalHeight = null;
+      }
     }
     const before = hookPosition(c);
-    c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
-    c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
-    c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
+    const move = k.moves[0];
+    if (move !== undefined) {
+      // A timed move: the rest of the way at a constant rate over the time left.
+      const left = move.duration - move.elapsed,
+        f = Math.min(1, dt / Math.max(left, 1e-9));
+      c.angle = wrap(c.angle + f * wrap(move.angle - c.angle));
+      c.radius += f * (move.radius - c.radius);
+      c.height += f * (move.height - c.height);
+      move.elapsed += dt;
+      if (f === 1) k.moves.shift();
+    } else {
+      c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
+      c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
+      c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + hoist * HOIST_SPEED * dt));
+    }
     const after = hookPosition(c);
     const V = world.components.Velocity,
       P = world.components.Position,
@@ -335,7 +446,11 @@ export function scorePieces(world: PhysicsWorld, pieces: Piece[]): number {
   for (const p of pieces) {
     if (p.fallen) continue;
     const e = p.body;
-    if (P.y[e]! < p.y0 - FALL_DROP || Math.abs(upComponent(world, e, p.upAxis)) < cosTip) {
+    if (
+      P.y[e]! < p.y0 - FALL_DROP ||
+      Math.abs(upComponent(world, e, p.upAxis)) < cosTip ||
+      Math.hypot(P.x[e]! - p.x0, P.z[e]! - p.z0) > KNOCK_DISTANCE
+    ) {
       p.fallen = true;
       points += p.points;
     }

@@ -6,7 +6,9 @@
 import { addBody, addDistanceJoint3D, createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
+  aimAt,
   buildWreckingBall,
+  CLEAR_FRACTION,
   fallenCount,
   HOOK_RANGE,
   SLEW_RATE,
@@ -137,5 +139,46 @@ describe('wrecking-ball scene', () => {
     const down = tower.filter((p) => p.fallen).length;
     expect(down).toBeGreaterThanOrEqual(Math.ceil(tower.length / 2));
     expect(score).toBeGreaterThan(10 * down);
+  });
+
+  it('a tap on a piece swings the ball into it: one swing at the tower of level 1 brings most of it down', () => {
+    // The playtester's complaint: sending the hook with a click knocked nothing down in 30 s. aimAt
+    // winds the crane up (a constant-speed move over whole swing periods), then runs the hook over
+    // the piece in half a period, so the ball meets it at up to twice the hook's speed. Measured:
+    // 5 of 5 tower blocks down.
+    const { world, h } = build(1);
+    for (let k = 0; k < 60; k++) step(world);
+    const tower = h.pieces.filter((p) => p.kind === 'tower');
+    aimAt(world, h, tower[Math.floor(tower.length / 2)]!.body);
+    for (let k = 0; k < 60 * 10; k++) {
+      step(world);
+      scorePieces(world, h.pieces);
+    }
+    expect(h.controls.moves.length).toBe(0);
+    expect(tower.filter((p) => p.fallen).length).toBeGreaterThanOrEqual(Math.ceil(tower.length / 2));
+  });
+
+  it('a player tapping standing pieces one after another clears levels 1 and 2 within 90 s of game time', () => {
+    // Each tap aims at a standing piece picked by a fixed stride through them, lowest first (not the
+    // best choice: a player aims better), once the last swing is over and 1 s has passed. Measured:
+    // cleared at 47 s and 40 s; 1,000 s of taps at the lowest pieces only stalled near half.
+    for (const level of [1, 2]) {
+      const { world, h } = build(level);
+      let taps = 0,
+        wait = 60,
+        clearedAt = -1;
+      for (let k = 0; k < 60 * 90 && clearedAt < 0; k++) {
+        if (h.controls.moves.length === 0 && --wait <= 0) {
+          const standing = h.pieces.filter((p) => !p.fallen).sort((a, b) => a.y0 - b.y0);
+          aimAt(world, h, standing[(taps * 7919) % standing.length]!.body);
+          taps++;
+          wait = 60;
+        }
+        step(world);
+        scorePieces(world, h.pieces);
+        if (fallenCount(h.pieces) >= CLEAR_FRACTION * h.pieces.length) clearedAt = k / 60;
+      }
+      expect(clearedAt, `level ${level}`).toBeGreaterThan(0);
+    }
   });
 });
