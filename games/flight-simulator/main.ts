@@ -411,6 +411,61 @@ function drawHorizon(pitch: number, roll: number): void {
   g.stroke();
 }
 
+// ---- Guidance: where the next ring is ---------------------------------------------------------------
+
+/**
+ * A marker for the next ring (the first not yet passed, in the order they are laid out along x): a
+ * label under it with its distance while it is in view, else an arrow at the edge of the scene
+ * pointing the way to turn, so a player always knows where to fly (there was no guidance at all).
+ */
+const ringPointer = document.createElement('div');
+ringPointer.dataset.sceneOverlay = '';
+ringPointer.dataset.hud = 'ring-pointer';
+ringPointer.style.cssText =
+  'position: absolute; z-index: 4; pointer-events: none; transform: translate(-50%, -50%); padding: 2px 8px; border-radius: 10px;' +
+  'background: rgba(10, 14, 22, 0.8); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;';
+pageLayout().stage.append(ringPointer);
+const ringAt = new Vector3();
+/** What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text. */
+const ringAim = { index: -1, inView: false, text: '' };
+function pointToNextRing(): void {
+  const i = rings.findIndex((r) => !r.passed);
+  ringAim.index = i;
+  ringPointer.style.display = i < 0 || state.crashed ? 'none' : 'block';
+  if (i < 0 || state.crashed) return;
+  const ring = rings[i]!;
+  ringAt.set(ring.x, ring.y, ring.z);
+  const d = ringAt.distanceTo(at);
+  const w = app.canvas.clientWidth,
+    h = app.canvas.clientHeight;
+  ringAt.project(app.camera);
+  const ahead = ringAt.z < 1;
+  let x = ((ringAt.x + 1) / 2) * w,
+    y = ((1 - ringAt.y) / 2) * h;
+  ringAim.inView = ahead && x > 0 && x < w && y > 0 && y < h;
+  const distance = d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
+  if (ringAim.inView) {
+    ringAim.text = `ring ${i + 1} · ${distance}`;
+    y = Math.min(h - 14, y + 30);
+  } else {
+    // Behind the camera the projection is mirrored: point the other way.
+    let dx = x - w / 2,
+      dy = y - h / 2;
+    if (!ahead) {
+      dx = -dx;
+      dy = -dy;
+    }
+    const k = Math.min((w / 2 - 60) / Math.max(1e-6, Math.abs(dx)), (h / 2 - 24) / Math.max(1e-6, Math.abs(dy)));
+    x = w / 2 + dx * k;
+    y = h / 2 + dy * k;
+    const arrow = Math.abs(dx) * (h / 2) > Math.abs(dy) * (w / 2) ? (dx > 0 ? '▶' : '◀') : dy > 0 ? '▼' : '▲';
+    ringAim.text = `${arrow} ring ${i + 1} · ${distance}`;
+  }
+  ringPointer.textContent = ringAim.text;
+  ringPointer.style.left = `${x}px`;
+  ringPointer.style.top = `${y}px`;
+}
+
 function frame(): void {
   const world = shell.world;
   if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
@@ -437,6 +492,7 @@ function frame(): void {
     look.set(100, 0, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   }
+  pointToNextRing();
   engine.set(state.crashed ? 0 : state.throttle);
   const cockpit = state.camera === 'cockpit';
   horizon.style.display = cockpit ? 'block' : 'none';
@@ -532,6 +588,8 @@ const panel = createPanel(
 );
 
 shell.expose({
+  /** The pointer to the next ring: its index (-1: none left), whether it is in view, and its text. */
+  ringPointer: () => ({ ...ringAim }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */
   attitude: () => ({ ...shownAttitude }),
   params,

@@ -118,6 +118,13 @@ describe('projects', () => {
   it('flight-simulator: the cockpit view shows an attitude indicator that follows the roll', async () => {
     const g = await h.openGame('flight-simulator');
     type Att = { attitude(): { pitch: number; roll: number; visible: boolean } };
+    // The next ring is pointed at, with its distance (there was no guidance to it).
+    const pointer = await g.page.evaluate(() =>
+      (window.game as unknown as { ringPointer(): { index: number; inView: boolean; text: string } }).ringPointer(),
+    );
+    expect(pointer.index).toBe(0);
+    expect(pointer.text).toMatch(/^(. )?ring 1 · \d+(\.\d)? k?m$/);
+    expect(await g.page.locator('[data-hud="ring-pointer"]').isVisible()).toBe(true);
     expect(await g.page.evaluate(() => (window.game as unknown as Att).attitude().visible)).toBe(false);
     await g.press('c');
     await g.waitFor(() => (window.game as unknown as Att).attitude().visible, null);
