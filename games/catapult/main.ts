@@ -85,8 +85,10 @@ function stepWorld(world: PhysicsWorld): void {
 
 /**
  * The campaign: each level's best score and stars once it is over, and the total. A level is cleared
- * when at least PASS_SHARE of its pieces fell (one star; two from 75 %, three from 95 %); a level not
- * cleared is played again, and after the last level the end screen shows the total.
+ * when at least PASS_SHARE of its pieces fell (one star; two from 75 %, three from 95 %), with
+ * SHOT_BONUS points for each shot not thrown; it ends once the shots are spent or three stars' worth
+ * is down, 4 s after the last throw. A level not cleared is played again, and after the last level
+ * the end screen shows the total.
  */
 const PASS_SHARE = 0.5;
 const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
@@ -379,8 +381,14 @@ function drawBackdrop(world: PhysicsWorld): void {
 
 /** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
 function levelOver(world: PhysicsWorld, t: Tally): boolean {
-  return t.fallen === lv.pieces.length || (shotsLeft === 0 && world.time - lastShotTime > 4);
+  // Three stars' worth down (nothing more to win but the unused shots' bonus) ends it too: a
+  // playtester had to throw the shots left after the castle was down.
+  const settled = world.time - lastShotTime > 4;
+  return t.fallen === lv.pieces.length || (settled && (shotsLeft === 0 || starsOf(t.fallen / Math.max(1, lv.pieces.length)) === 3));
 }
+
+/** Points for each shot not thrown when a level is cleared (fewer shots, more points). */
+const SHOT_BONUS = 150;
 
 /** Pebbles in the earth under the ground: x, y and radius, m (fixed, from a seeded generator). */
 const PEBBLES: number[] = (() => {
@@ -456,10 +464,12 @@ function draw(world: PhysicsWorld): void {
     const share = t.fallen / Math.max(1, lv.pieces.length);
     const earned = starsOf(share);
     const i = params.level - 1;
+    const bonus = earned > 0 ? shotsLeft * SHOT_BONUS : 0;
+    const score = t.score + bonus;
     if (!levelEnded) {
       // A level's score and stars count once, and only its best try.
       levelEnded = true;
-      if (t.score > campaign.scores[i]!) campaign.scores[i] = t.score;
+      if (score > campaign.scores[i]!) campaign.scores[i] = score;
       if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
     }
     const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
@@ -474,7 +484,8 @@ function draw(world: PhysicsWorld): void {
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
-      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${t.score}: ${t.fallen} pieces fell, ${t.broken} welds broke   Total ${total()}\n${keys}`;
+      const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
+      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
