@@ -75,17 +75,14 @@ describe('lab-cloth grab', () => {
     }
   });
 
-  it('a slow 1.25 m pull in any of six directions tears nothing at the default tear strain', () => {
+  it('a slow 1.25 m pull tears nothing at the default tear strain', () => {
     // A playtester's slow 80 x 60 px drag (1 x 0.75 m at the lab's 80 px a metre) tore 69 to 320
     // links at tear strain 0.2: measured then, 1.25 m pulls over 1 s tore 369 (down-right), 351
-    // (right) and 225 (up-right) links. At 0.3 they tear none in six directions, while a 2.4 m pull
-    // tears 245 and the yanks below still tear.
+    // (right) and 225 (up-right) links. At 0.3 they tear none (nor up-left, down or left), while a
+    // 2.4 m pull tears 245 and the yanks below still tear. The three that tore are checked.
     for (const [dx, dy] of [
       [1, -0.75],
-      [-1, 0.75],
-      [0, -1.25],
       [1.25, 0],
-      [-1.25, 0],
       [0.9, 0.9],
     ] as const) {
       expect(pull(true, dx, dy, 1).torn, `pull ${dx}, ${dy}`).toBe(0);
