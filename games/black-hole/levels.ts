@@ -18,12 +18,10 @@ import { addBody, removeBody, setAttractor, setPosition, setVelocity, slotOf } f
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
-  FIELD,
   gravitationalConstant,
   LINE_Y,
   MAX_HOLES,
   resetShip,
-  START,
   schwarzschildMass,
   setThrust,
   stepBlackHole,
@@ -37,7 +35,7 @@ export interface LevelSpec {
   readonly holes: number;
   /** Range of the holes' horizon radii, m. */
   readonly radius: readonly [number, number];
-  /** Half-width, m, of a corridor around the start's x (x = 16 m) that no hole's centre enters (0: none). Blockers excepted. */
+  /** Half-width, m, of a corridor around the start's x (the field's middle) that no hole's centre enters (0: none). Blockers excepted. */
   readonly corridor: number;
   /**
    * Holes laid across the straight path up (integer in [0, 2], at most `holes`): each one's centre is
@@ -198,22 +196,25 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
       let x: number, y: number;
       if (k < spec.blockers) {
         // Across the straight path up, one blocker in each band of heights (lower band first).
-        x = START[0] + rng.range(-0.5, 0.5) * r;
+        // Bands measured on the 22 m climb of the default field, scaled to this field's.
+        const s = game.lineY / LINE_Y;
+        x = game.start[0] + rng.range(-0.5, 0.5) * r;
         const [lo, hi] = spec.blockers === 1 ? [9, 15] : k === 0 ? [7.5, 10.5] : [14, 17];
-        y = rng.range(lo, hi);
+        y = rng.range(lo * s, hi * s);
       } else {
-        x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
+        const W = game.field.width;
+        x = rng.range(1.5 + r, W - 1.5 - r);
         if (spec.corridor > 0) {
           // Outside the corridor: on the side the draw fell on.
-          const side = x < START[0] ? -1 : 1;
-          const lo = START[0] + spec.corridor,
-            hi = FIELD.width - 1.5 - r;
-          x = side > 0 ? Math.max(x, lo) : Math.min(x, FIELD.width - lo);
-          if (lo > hi) x = side > 0 ? hi : FIELD.width - hi;
+          const side = x < game.start[0] ? -1 : 1;
+          const lo = game.start[0] + spec.corridor,
+            hi = W - 1.5 - r;
+          x = side > 0 ? Math.max(x, lo) : Math.min(x, W - lo);
+          if (lo > hi) x = side > 0 ? hi : W - hi;
         }
-        y = rng.range(5 + r, LINE_Y - 3 - r);
+        y = rng.range(5 + r, game.lineY - 3 - r);
       }
-      let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
+      let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - 4;
       for (let j = 0; j < game.holes.length; j++) {
         const h = game.holes[j]!;
         const P = world.components.Position;
@@ -254,7 +255,7 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
     if (vx === 0) continue;
     let x = P.x[slotOf(h)]! + vx * dt;
     const lo = 1.5 + r,
-      hi = FIELD.width - 1.5 - r;
+      hi = game.field.width - 1.5 - r;
     if (x < lo) {
       x = 2 * lo - x;
       run.holeVx[i] = Math.abs(run.holeVx[i]!);
@@ -291,7 +292,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   const event = stepBlackHole(game);
   if (event === 'fell' || event === 'lost') run.parked = true;
   else if (event === 'none' && run.parked) {
-    setPosition(game.world, game.ship, START);
+    setPosition(game.world, game.ship, game.start);
     setVelocity(game.world, game.ship, REST);
   }
   if (event !== 'scored') return event;

@@ -31,7 +31,6 @@ import {
   createBlackHoleGame,
   createPredictor,
   FIELD,
-  LINE_Y,
   MAX_HOLES,
   type Predictor,
   predictPath,
@@ -96,8 +95,21 @@ const PATH_STEPS = 60;
 const path = new Float64Array(2 * (PATH_STEPS + 1));
 let pathPoints = 0;
 
+/**
+ * The field: the default 32 x 24 m on a wide screen; on a phone held upright a tall 20 x 30 m one,
+ * which fills the screen (the wide field was a band across its middle).
+ */
+const PLAY_FIELD = window.innerHeight > 1.2 * window.innerWidth ? { width: 20, height: 30 } : FIELD;
+
 function createWorld(): PhysicsWorld {
-  bh = createBlackHoleGame({ seed: params.seed, holes: params.holes, gScale: params.gScale, c: params.c, thrust: params.thrust });
+  bh = createBlackHoleGame({
+    seed: params.seed,
+    holes: params.holes,
+    gScale: params.gScale,
+    c: params.c,
+    thrust: params.thrust,
+    field: PLAY_FIELD,
+  });
   run = levels ? startLevel(bh, firstLevel) : null;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
@@ -138,7 +150,7 @@ const game = await startPixiGame({
     },
   ],
   renderer: {
-    view: { minX: 0, minY: 0, maxX: FIELD.width, maxY: FIELD.height },
+    view: { minX: 0, minY: 0, maxX: PLAY_FIELD.width, maxY: PLAY_FIELD.height },
     padding: 8,
     particles: { blend: 'add', minPixelSize: 1.5 },
   },
@@ -327,7 +339,7 @@ let backdropVersion = -1,
 const stars = (() => {
   const rng = new Rng(7);
   const out: [number, number, number][] = [];
-  for (let i = 0; i < 220; i++) out.push([rng.range(0, FIELD.width), rng.range(0, FIELD.height), rng.range(0.2, 0.8)]);
+  for (let i = 0; i < 220; i++) out.push([rng.range(0, PLAY_FIELD.width), rng.range(0, PLAY_FIELD.height), rng.range(0.2, 0.8)]);
   return out;
 })();
 
@@ -336,22 +348,20 @@ function drawBackdrop(): void {
   if (cam.version === backdropVersion) return;
   backdropVersion = cam.version;
   backdrop.clear();
-  backdrop
-    .rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
-    .fill(0x070a16);
+  const W = PLAY_FIELD.width,
+    H = PLAY_FIELD.height;
+  backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0x070a16);
   for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
-  backdrop
-    .rect(cam.toScreenX(0), cam.toScreenY(FIELD.height), cam.toScreenLength(FIELD.width), cam.toScreenLength(FIELD.height))
-    .stroke({ width: 1, color: 0x3a4560 });
+  backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 1, color: 0x3a4560 });
   // The finish line, dashed.
-  const y = cam.toScreenY(LINE_Y),
+  const y = cam.toScreenY(bh.lineY),
     dash = 12;
-  for (let x = cam.toScreenX(0); x < cam.toScreenX(FIELD.width); x += 2 * dash) {
-    backdrop.moveTo(x, y).lineTo(Math.min(x + dash, cam.toScreenX(FIELD.width)), y);
+  for (let x = cam.toScreenX(0); x < cam.toScreenX(W); x += 2 * dash) {
+    backdrop.moveTo(x, y).lineTo(Math.min(x + dash, cam.toScreenX(W)), y);
   }
   backdrop.stroke({ width: 3, color: 0x4cff7a, alpha: 0.8 });
   // Start pad.
-  backdrop.rect(cam.toScreenX(FIELD.width / 2 - 1.2), cam.toScreenY(0.9), cam.toScreenLength(2.4), 3).fill({ color: 0x8d99ae, alpha: 0.7 });
+  backdrop.rect(cam.toScreenX(W / 2 - 1.2), cam.toScreenY(0.9), cam.toScreenLength(2.4), 3).fill({ color: 0x8d99ae, alpha: 0.7 });
 }
 
 function drawHoles(world: PhysicsWorld): void {

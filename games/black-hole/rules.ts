@@ -101,10 +101,18 @@ export interface BlackHoleOptions {
   thrust?: number;
   /** Lives at the start, integer in [1, 9]. Default 3. */
   lives?: number;
+  /**
+   * Size of the playing field, m: width in [12, 64], height in [16, 64]. Default `FIELD` (32 x 24);
+   * a phone held upright plays a tall one. The start is at the middle of the bottom, 1.5 m up, and
+   * the finish line 2 m below the top.
+   */
+  field?: { readonly width: number; readonly height: number };
 }
 
 /** Resolved options. */
-export type BlackHoleParams = Required<BlackHoleOptions>;
+export type BlackHoleParams = Required<Omit<BlackHoleOptions, 'field'>> & {
+  readonly field: { readonly width: number; readonly height: number };
+};
 
 /** The state of a game: world, ship, holes, lives, score, last message. */
 export interface BlackHoleGame {
@@ -132,6 +140,12 @@ export interface BlackHoleGame {
   version: number;
   /** Generator of the layouts. */
   readonly rng: Rng;
+  /** The playing field (`params.field`), m: x in [0, width], y in [0, height]. */
+  readonly field: { readonly width: number; readonly height: number };
+  /** Where the ship starts, m: the middle of the field's bottom, 1.5 m up. */
+  readonly start: readonly [number, number];
+  /** The finish line: crossing y = lineY (m, 2 m below the top) scores. */
+  readonly lineY: number;
 }
 
 function check(cond: boolean, message: string): void {
@@ -143,7 +157,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHoleParams {
-  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives'];
+  const known = ['seed', 'holes', 'gScale', 'c', 'thrust', 'lives', 'field'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k)) throw new TypeError(`black-hole: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
   }
@@ -154,6 +168,7 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
     c: options.c ?? C_GAME,
     thrust: options.thrust ?? 6,
     lives: options.lives ?? 3,
+    field: { width: options.field?.width ?? FIELD.width, height: options.field?.height ?? FIELD.height },
   };
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
   check(Number.isInteger(p.holes) && p.holes >= 1 && p.holes <= MAX_HOLES, `holes must be an integer in [1, ${MAX_HOLES}], got ${p.holes}`);
@@ -161,6 +176,14 @@ export function resolveBlackHoleOptions(options: BlackHoleOptions = {}): BlackHo
   checkC(p.c);
   checkThrust(p.thrust);
   check(Number.isInteger(p.lives) && p.lives >= 1 && p.lives <= 9, `lives must be an integer in [1, 9], got ${p.lives}`);
+  check(
+    typeof p.field.width === 'number' && p.field.width >= 12 && p.field.width <= 64,
+    `field.width must be in [12, 64] m, got ${String(p.field.width)}`,
+  );
+  check(
+    typeof p.field.height === 'number' && p.field.height >= 16 && p.field.height <= 64,
+    `field.height must be in [16, 64] m, got ${String(p.field.height)}`,
+  );
   return p;
 }
 
@@ -228,7 +251,8 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
   const p = resolveBlackHoleOptions(options);
   const world = createPhysicsWorld({ dimensions: 2, gravity: [0, 0], capacity: 1500, seed: p.seed });
   setGravitation(world, { constant: G_GAME * p.gScale });
-  const ship = addBody(world, { position: START, mass: SHIP_MASS });
+  const start: [number, number] = [p.field.width / 2, 1.5];
+  const ship = addBody(world, { position: start, mass: SHIP_MASS });
   addEmitter(world, {
     attachTo: ship,
     rate: 160,
@@ -258,6 +282,9 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     resets: 0,
     version: 0,
     rng: new Rng(p.seed),
+    field: p.field,
+    start,
+    lineY: p.field.height - 2,
   };
   addSystem(world, 'forces', thrustLaw(game, ship));
   layoutHoles(game, p.holes);
@@ -293,10 +320,10 @@ export function layoutHoles(game: BlackHoleGame, count = game.holes.length): voi
       bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
       const r = rng.range(HOLE_RADIUS[0], HOLE_RADIUS[1]);
-      const x = rng.range(1.5 + r, FIELD.width - 1.5 - r);
-      const y = rng.range(5 + r, LINE_Y - 3 - r);
+      const x = rng.range(1.5 + r, game.field.width - 1.5 - r);
+      const y = rng.range(5 + r, game.lineY - 3 - r);
       // Smallest clearance to the other horizons (minus 3 m) and to the start (minus 4 m).
-      let gap = Math.hypot(x - START[0], y - START[1]) - r - 4;
+      let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - 4;
       for (let j = 0; j < xs.length; j++) gap = Math.min(gap, Math.hypot(x - xs[j]!, y - ys[j]!) - r - game.holeRadius[j]! - 3);
       if (gap > bestGap) {
         bestGap = gap;
@@ -372,7 +399,7 @@ export function setThrust(game: BlackHoleGame, thrust: Thrust): void {
 
 /** Puts the ship back at the start, at rest (a teleport: no interpolation across it). */
 export function resetShip(game: BlackHoleGame): void {
-  setPosition(game.world, game.ship, START);
+  setPosition(game.world, game.ship, game.start);
   setVelocity(game.world, game.ship, [0, 0]);
   game.resets++;
 }
@@ -415,7 +442,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
   const P = world.components.Position,
     O = world.components.PreviousPosition;
   if (game.over) {
-    setPosition(world, ship, START);
+    setPosition(world, ship, game.start);
     setVelocity(world, ship, [0, 0]);
     return 'none';
   }
@@ -436,7 +463,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     game.message = `Swallowed by a black hole! ${game.lives} ${game.lives === 1 ? 'life' : 'lives'} left.`;
     return 'fell';
   }
-  if (y >= LINE_Y) {
+  if (y >= game.lineY) {
     const n = game.holes.length;
     game.score += n;
     game.crossings++;
@@ -445,7 +472,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     game.message = `Made it! +${n} (one hole per hole on screen). Now ${game.holes.length} ${game.holes.length === 1 ? 'hole' : 'holes'}.`;
     return 'scored';
   }
-  if (x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) {
+  if (x < 0 || x > game.field.width || y < 0 || y > game.field.height) {
     resetShip(game);
     game.message = 'Lost in space: back to the start (no penalty).';
     return 'lost';
@@ -517,7 +544,7 @@ export function createPredictor(game: BlackHoleGame): Predictor {
     dt: game.world.dt,
     integrator: game.world.integrator,
   });
-  const ship = addBody(world, { position: START, mass: SHIP_MASS });
+  const ship = addBody(world, { position: game.start, mass: SHIP_MASS });
   const pred: Predictor = { world, ship, version: -1, holes: [] };
   addSystem(world, 'forces', thrustLaw(game, ship));
   return pred;
@@ -588,7 +615,7 @@ export function predictPath(game: BlackHoleGame, pred: Predictor, out: Float64Ar
         break;
       }
     }
-    if (inside || x < 0 || x > FIELD.width || y < 0 || y > FIELD.height) break;
+    if (inside || x < 0 || x > game.field.width || y < 0 || y > game.field.height) break;
   }
   return n;
 }
