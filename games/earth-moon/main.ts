@@ -11,7 +11,7 @@
  * URL: ?timeScale=days-per-second (0..30), ?follow=barycentre|earth|moon, ?size=1..20, ?trails=0|1, ?texture=256..2048.
  */
 
-import { choiceParam, createPanel, flagParam, numberParam } from '@bitphysics/game-kit';
+import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, step, totalEnergy } from '@bitphysics/physics';
 import {
@@ -183,7 +183,53 @@ const p3 = [0, 0, 0],
   q4 = [0, 0, 0, 1];
 let followReset = true;
 
-/** Per frame: clouds on the Earth, the camera target on the followed body, the readout. */
+// Names beside the bodies, with a dot of the body's colour while it is drawn under 4 px across: at
+// the scale of the Moon's orbit the Moon is a speck a player could not find.
+const nameLayer = document.createElement('div');
+nameLayer.dataset.sceneOverlay = '';
+nameLayer.style.cssText =
+  'position: absolute; inset: 0; pointer-events: none; z-index: 5; font: 13px system-ui, sans-serif; color: #e6ecff';
+pageLayout().stage.append(nameLayer);
+const names = (['Earth', 'Moon'] as const).map((name) => {
+  const dot = document.createElement('div');
+  dot.dataset.dot = name;
+  const colour = name === 'Earth' ? '#5aa9ff' : '#d8dde8';
+  dot.style.cssText = `position: absolute; width: 6px; height: 6px; margin: -3px 0 0 -3px; border-radius: 50%; background: ${colour}; box-shadow: 0 0 5px ${colour}`;
+  const label = document.createElement('div');
+  label.dataset.label = name;
+  label.textContent = name;
+  label.style.cssText =
+    'position: absolute; transform: translate(8px, -50%); padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.7)';
+  nameLayer.append(dot, label);
+  return { name, dot, label };
+});
+const projected = new Vector3();
+/** Places the names (and dots) over the bodies' drawn places. */
+function placeNames(): void {
+  const k = UNITS_PER_METER;
+  const w = app.canvas.clientWidth,
+    h = app.canvas.clientHeight;
+  for (const n of names) {
+    const body = n.name === 'Earth' ? handles.earth : handles.moon;
+    const shown = renderer.drawnPosition(body, p3) !== null;
+    if (shown) projected.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
+    const distance = projected.distanceTo(app.camera.position);
+    if (shown) projected.project(app.camera);
+    const visible = shown && projected.z < 1 && Math.abs(projected.x) < 1.05 && Math.abs(projected.y) < 1.05;
+    const x = ((projected.x + 1) / 2) * w,
+      y = ((1 - projected.y) / 2) * h;
+    const radius = (n.name === 'Earth' ? EARTH_RADIUS : MOON_RADIUS) * params.size * k;
+    const px = (radius * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
+    n.dot.style.display = visible && px < 2 ? 'block' : 'none';
+    n.label.style.display = visible ? 'block' : 'none';
+    if (!visible) continue;
+    n.dot.style.left = n.label.style.left = `${x}px`;
+    n.dot.style.top = n.label.style.top = `${y}px`;
+    n.label.style.transform = `translate(${Math.max(8, px + 4)}px, -50%)`;
+  }
+}
+
+/** Per frame: clouds on the Earth, the camera target on the followed body, the names, the readout. */
 function frame(): void {
   const k = UNITS_PER_METER;
   if (renderer.drawnPosition(handles.earth, p3) && renderer.drawnOrientation(handles.earth, q4)) {
@@ -216,6 +262,7 @@ function frame(): void {
     }
   }
   lastFollowed.copy(followed);
+  placeNames();
   updateReadout();
 }
 

@@ -670,6 +670,11 @@ describe('3D games in headless Chromium', () => {
     await field.fill('0.5');
     await field.press('Enter');
     expect(await g.page.evaluate(() => (window.game as unknown as { params: { timeScale: number } }).params.timeScale)).toBe(0.5);
+    // Both bodies are named on screen (the Moon is a few pixels across at the scale of its orbit).
+    await g.waitFor(
+      () => ['Earth', 'Moon'].every((n) => document.querySelector<HTMLElement>(`[data-label="${n}"]`)?.style.display === 'block'),
+      null,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });
