@@ -111,14 +111,23 @@ function axes(world: PhysicsWorld): void {
   r.set(0, 0, 1).applyQuaternion(q);
 }
 
+/** Aileron the rudder adds, as a fraction of full, to bank into the turn it asks for. */
+const RUDDER_ROLL = 0.33;
+
 function stepWorld(world: PhysicsWorld): void {
   if (state.crashed) return;
   const dt = world.dt;
   const clamp = (x: number): number => Math.max(-1, Math.min(1, x));
   // Keys and the on-screen stick add up (stick up = push = nose down, as a real stick).
   const pitch = clamp((held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0) - stickInput.y);
-  const roll = clamp((held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x);
   const yaw = (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0);
+  // The rudder alone only yaws the nose into a sideslip of about 6 degrees (the fin's own lift
+  // balances it) and turns the flight path hardly at all; a playtester read it as broken. As a
+  // turn-coordinator does, held rudder also asks for a third of full aileron the same way, so the
+  // aircraft banks into the turn.
+  const roll = clamp(
+    (held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x + RUDDER_ROLL * yaw,
+  );
   // Stick inputs spring back to neutral; the throttle stays where it is put.
   state.elevator = approach(state.elevator, pitch, 3, dt);
   state.aileron = approach(state.aileron, roll, 3, dt);

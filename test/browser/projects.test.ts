@@ -162,6 +162,23 @@ describe('projects', () => {
     expect(during.throttle).toBeGreaterThan(before.throttle);
     expect(during.elevator).toBeGreaterThan(0.5);
     expect(during.pitch).toBeGreaterThan(before.pitch + 1); // degrees: the nose came up
+    // Right rudder (E) turns the aircraft right: it also banks it (a turn-coordinator's third of full
+    // aileron), so the heading swings 5 degrees; the rudder alone yawed about 1 degree in 0.8 s.
+    await g.press('r');
+    const h0 = await g.page.evaluate(() => (window.game as unknown as Game & { instruments(): { heading: number } }).instruments().heading);
+    await g.page.keyboard.down('e');
+    const turned = await g.waitFor(
+      (start) => {
+        const i = (window.game as unknown as Game & { instruments(): { heading: number; roll: number } }).instruments();
+        const d = ((i.heading - start + 540) % 360) - 180;
+        return d > 5 ? { d, roll: i.roll } : null;
+      },
+      h0,
+      30_000,
+    );
+    await g.page.keyboard.up('e');
+    expect(turned.d).toBeGreaterThan(5);
+    expect(turned.roll).toBeGreaterThan(2); // banked right (the instruments' sign)
     expect(g.errors).toEqual([]);
     await g.close();
   });
