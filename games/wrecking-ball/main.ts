@@ -569,10 +569,22 @@ function frame(): void {
       f = fallenCount(handles.pieces);
     status.textContent = cleared
       ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})`;
+      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})${swingPhase()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
+}
+
+/**
+ * What the crane is doing for a swing at a target, for the status line: a swing takes a wind-up of
+ * a few seconds before the run, and a playtester who looked after 5 s took it for a miss.
+ */
+function swingPhase(): string {
+  const moves = handles.controls.moves;
+  if (moves.length === 0) return '';
+  const m = moves[0]!;
+  const left = Math.max(0, m.duration - m.elapsed + (moves.length > 1 ? moves[1]!.duration : 0));
+  return moves.length > 1 ? ` · winding up, swing in ${left.toFixed(0)} s` : ' · swinging!';
 }
 
 // ---- window.game ---------------------------------------------------------------------------
