@@ -304,10 +304,9 @@ const dots = Object.fromEntries(
     const size = name === 'Sun' ? 12 : name === 'Jupiter' || name === 'Saturn' ? 8 : 6;
     const colour = `#${COLOR[name]!.toString(16).padStart(6, '0')}`;
     el.style.cssText = `position: absolute; width: ${size}px; height: ${size}px; margin: ${-size / 2}px 0 0 ${-size / 2}px; border-radius: 50%; background: ${colour}; box-shadow: 0 0 6px ${colour}`;
-    el.dataset.size = String(size);
     el.dataset.dot = name;
     labelLayer.append(el);
-    return [name, el];
+    return [name, { el, size }];
   }),
 );
 
@@ -359,8 +358,7 @@ function frame(): void {
       y = ((1 - v.y) / 2) * h;
     // Radius the body is drawn with, px (perspective: h / 2 px span tan(fov / 2) x distance).
     const drawnPx = (drawnRadius(name) * k * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
-    const dot = dots[name]!;
-    const dotSize = Number(dot.dataset.size);
+    const { el: dot, size: dotSize } = dots[name]!;
     const showDot = visible && drawnPx < dotSize / 2;
     dot.style.display = showDot ? 'block' : 'none';
     if (showDot) {

@@ -69,12 +69,10 @@ export interface CraneControls {
   /** Hoist: -1 down, 0, 1 up. */
   hoist: number;
   /**
-   * A point to drive the hook to (m, x and z), or null: set by a click on the ground or a target. The
-   * crane runs there at full speed and stops at once, so the lagging ball swings on through the point.
+   * A point to drive the hook to (m, x and z), or null: set by a click on the ground. The crane runs
+   * there at full speed and stops at once, so the lagging ball swings on through the point.
    */
   goal: [number, number] | null;
-  /** A hook height to hoist to while driving to `goal` (m, clamped to HOOK_RANGE), or null to keep it. */
-  goalHeight: number | null;
   /**
    * Timed moves (a swing at a target, see `aimAt`), done in order before `goal`: each takes the crane
    * from where it is to (angle rad, radius m, height m) at a constant rate over `duration` s.
@@ -258,7 +256,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null, goalHeight: null, moves: [] };
+  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, goal: null, moves: [] };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -363,7 +361,6 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
   }
   moves.push({ angle: target, radius, height, duration: SWING_PERIOD / 2, elapsed: 0 });
   h.controls.goal = null;
-  h.controls.goalHeight = null;
   h.controls.moves = moves;
 }
 
@@ -383,8 +380,7 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       k = h.controls,
       dt = world.dt / world.substeps;
     let slew = k.slew,
-      run = k.trolley,
-      hoist = k.hoist;
+      run = k.trolley;
     if (k.goal !== null) {
       // Full speed until the last substep's worth, then exactly there: no easing in, so the ball,
       // lagging behind the hook, swings on through the goal with the crane's speed.
@@ -394,16 +390,7 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       const wantR = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(gx, gz)));
       slew = Math.max(-1, Math.min(1, d / (SLEW_RATE * dt)));
       run = Math.max(-1, Math.min(1, (wantR - c.radius) / (TROLLEY_SPEED * dt)));
-      let there = Math.abs(d) < 1e-9 && Math.abs(wantR - c.radius) < 1e-9;
-      if (k.goalHeight !== null) {
-        const wantH = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], k.goalHeight));
-        hoist = Math.max(-1, Math.min(1, (wantH - c.height) / (HOIST_SPEED * dt)));
-        there &&= Math.abs(wantH - c.height) < 1e-9;
-      }
-      if (there) {
-        k.goal = null;
-        k.goalHeight = null;
-      }
+      if (Math.abs(d) < 1e-9 && Math.abs(wantR - c.radius) < 1e-9) k.goal = null;
     }
     const before = hookPosition(c);
     const move = k.moves[0];
@@ -419,7 +406,7 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
     } else {
       c.angle = wrap(c.angle + slew * SLEW_RATE * dt);
       c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + run * TROLLEY_SPEED * dt));
-      c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + hoist * HOIST_SPEED * dt));
+      c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + k.hoist * HOIST_SPEED * dt));
     }
     const after = hookPosition(c);
     const V = world.components.Velocity,

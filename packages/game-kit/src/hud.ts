@@ -83,6 +83,17 @@ function injectStyle(): void {
   document.head.append(style);
 }
 
+/** One line of a controls list: the keys or gesture in a `tag` element, then what it does. */
+function controlLine(tag: 'kbd' | 'b', keys: string, action: string): HTMLElement {
+  const line = document.createElement('div');
+  const k = document.createElement(tag);
+  k.textContent = keys;
+  const a = document.createElement('span');
+  a.textContent = action;
+  line.append(k, a);
+  return line;
+}
+
 /** How long the touch hint stays up without input, ms. */
 const TOUCH_HINT_MS = 9000;
 
@@ -100,13 +111,7 @@ function showTouchHint(stage: HTMLElement, controls: readonly ControlHint[]): vo
     const gesture = touchGesture(c);
     // The toolbar's own buttons (pause, step, reset) are in view already.
     if (gesture === '' || /\bbutton$/i.test(gesture) || gesture.toLowerCase() === c.action.toLowerCase() || lines.length === 4) continue;
-    const line = document.createElement('div');
-    const b = document.createElement('b');
-    b.textContent = gesture;
-    const action = document.createElement('span');
-    action.textContent = c.action;
-    line.append(b, action);
-    lines.push(line);
+    lines.push(controlLine('b', gesture, c.action));
   }
   if (lines.length === 0) return;
   const hint = document.createElement('div');
@@ -202,13 +207,7 @@ export function createHud(options: HudOptions): Hud {
       for (const c of controls) {
         const keys = touch ? touchGesture(c) : c.keys;
         if (keys === '') continue;
-        const line = document.createElement('div');
-        const kbd = document.createElement('kbd');
-        kbd.textContent = keys;
-        const action = document.createElement('span');
-        action.textContent = c.action;
-        line.append(kbd, action);
-        lines.push(line);
+        lines.push(controlLine('kbd', keys, c.action));
       }
       legend.replaceChildren(...lines);
       if (layout && touch && layout.compact()) showTouchHint(layout.stage, controls);
