@@ -1,13 +1,13 @@
 /**
  * Catapult: drag back from the catapult's cup and release to throw a stone at a castle of posts,
  * planks and stones glued by breakable welds. A dashed arc shows the drag-free path. Score: 100 a
- * fallen piece, 25 a broken weld; a few shots a level, four seeded levels.
+ * fallen piece, 25 a broken weld; a few shots a level, five seeded levels. The last throw leaves a trail of dots and a word on what it did.
  *
  * Input: drag from the cup and release. Keys: L next level, R reset the level, P pause, N step.
  * A "Next level" button under the scene when the level is over (touch and mouse).
  * Sound: a whoosh per throw; impacts as loud as their impulse, wood for posts and planks, stone for
  * blocks, stones and the projectile.
- * URL: ?level=1..4, ?seed=S.
+ * URL: ?level=1..5, ?seed=S.
  */
 
 import {
@@ -35,6 +35,7 @@ import {
   launchVelocity,
   PULL,
   predictArc,
+  ROCK,
   type Tally,
   tally,
   worldOptions,
@@ -50,12 +51,29 @@ const params = {
   next: () => nextLevel(),
 };
 
-let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0, castleTop: 0, ground: 0, mound: 0 };
+let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0, castleTop: 0, ground: 0, mound: 0, rock: 0 };
 let shotsLeft = 0;
 let shots: number[] = [];
 let best: Tally = { fallen: 0, broken: 0, score: 0 };
 let lastShotTime = 0;
 
+/**
+ * The last throw, so a player sees what it did: its path (x, y pairs, m) stays on screen as a trail
+ * of dots until the next throw, and once it has settled a word over the scene says what it earned
+ * ("+450") or why it missed (short of the castle, over it, or too soft to knock anything down).
+ */
+const lastThrow = {
+  body: 0,
+  path: [] as number[],
+  scoreBefore: 0,
+  /** World time of the throw, s. */
+  time: 0,
+  /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
+  verdict: '',
+  good: false,
+  at: [0, 0] as [number, number],
+  decidedAt: 0,
+};
 /** A fresh world with the current level (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(worldOptions(params));
@@ -64,6 +82,9 @@ function createWorld(): PhysicsWorld {
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
   lastShotTime = 0;
+  lastThrow.body = 0;
+  lastThrow.path.length = 0;
+  lastThrow.verdict = '';
   levelEnded = false;
   materials.clear();
   for (const p of lv.pieces) materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : 'stone');
@@ -148,6 +169,7 @@ function paint(): void {
   for (const p of lv.pieces) if (isAlive(shell.world, p.body)) renderer.setColor(p.body, MATERIAL_COLORS[p.kind]);
   if (lv.ground) renderer.setColor(lv.ground, GRASS);
   if (lv.mound) renderer.setColor(lv.mound, 0x7a5533);
+  if (lv.rock) renderer.setColor(lv.rock, 0x7d776e);
 }
 paint();
 shell.onWorldChange(() => {
@@ -170,8 +192,8 @@ let framedFor = '';
 function frameCamera(): void {
   const cam = renderer.camera;
   const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
-  const minX = LAUNCH.x - 2.5,
-    maxX = lv.castleMaxX + 2;
+  const minX = LAUNCH.x - 1.8,
+    maxX = lv.castleMaxX + ROCK.gap + 2 * ROCK.hx + 0.3;
   const width = maxX - minX;
   const height = width * aspect;
   // Wide: from just under the ground up, taller than the castle. Tall: the ground GROUND_AT up.
@@ -280,8 +302,89 @@ function fire(dx: number, dy: number): number {
   shots.push(ball);
   shotsLeft--;
   lastShotTime = shell.world.time;
+  lastThrow.body = ball;
+  lastThrow.path.length = 0;
+  lastThrow.path.push(LAUNCH.x, LAUNCH.y);
+  lastThrow.scoreBefore = tally(shell.world, lv).score;
+  lastThrow.time = shell.world.time;
+  lastThrow.verdict = '';
   sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
   return ball;
+}
+
+/** Trail: a dot every this many metres of flight, for at most TRAIL_TIME seconds. */
+const TRAIL_SPACING = 0.5,
+  TRAIL_TIME = 4;
+/** The verdict comes this long after the throw (s), or as soon as the projectile is nearly at rest. */
+const VERDICT_AFTER = 2.5;
+/** How long the verdict shows, s. */
+const VERDICT_SHOWN = 2.5;
+
+/** Extends the last throw's trail and decides its verdict once it has settled. */
+function followThrow(world: PhysicsWorld, t: Tally): void {
+  const b = lastThrow.body;
+  if (!b) return;
+  const since = world.time - lastThrow.time;
+  const alive = isAlive(world, b);
+  let x = lastThrow.path[lastThrow.path.length - 2]!,
+    y = lastThrow.path[lastThrow.path.length - 1]!;
+  let speed = 0;
+  if (alive) {
+    const s = slotOf(b);
+    const P = world.components.Position,
+      V = world.components.Velocity;
+    const px = P.x[s]!,
+      py = P.y[s]!;
+    speed = Math.hypot(V.x[s]!, V.y[s]!);
+    if (since < TRAIL_TIME && Math.hypot(px - x, py - y) >= TRAIL_SPACING) lastThrow.path.push(px, py);
+    x = px;
+    y = py;
+  }
+  if (lastThrow.verdict || !(since > VERDICT_AFTER || (since > 0.6 && speed < 0.3))) return;
+  const gained = t.score - lastThrow.scoreBefore;
+  lastThrow.decidedAt = world.time;
+  lastThrow.good = gained > 0;
+  if (gained > 0) {
+    lastThrow.verdict = `+${gained}`;
+    lastThrow.at = [(lv.castleMinX + lv.castleMaxX) / 2, lv.castleTop + 0.8];
+    return;
+  }
+  // Where the projectile first came down to the castle's height tells short from long.
+  const path = lastThrow.path;
+  let landX = x;
+  for (let i = 2; i < path.length; i += 2)
+    if (path[i + 1]! < lv.castleTop && path[i + 1]! < path[i - 1]!) {
+      landX = path[i]!;
+      break;
+    }
+  lastThrow.verdict =
+    landX < lv.castleMinX - 0.3
+      ? 'Short: pull further back'
+      : landX > lv.castleMaxX + 0.3
+        ? 'Over the top: pull less, or aim lower'
+        : 'No damage: throw harder, or hit lower';
+  lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
+}
+
+/** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
+function drawThrow(world: PhysicsWorld): void {
+  const cam = renderer.camera;
+  const path = lastThrow.path;
+  for (let i = 2; i < path.length; i += 2)
+    overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2).fill({ color: 0xffffff, alpha: 0.55 });
+  const age = world.time - lastThrow.decidedAt;
+  if (!lastThrow.verdict || age > VERDICT_SHOWN) {
+    verdictText.visible = false;
+    return;
+  }
+  verdictText.visible = true;
+  if (verdictText.text !== lastThrow.verdict) verdictText.text = lastThrow.verdict;
+  verdictText.style.fill = lastThrow.good ? 0xffe066 : 0xffffff;
+  verdictText.style.fontSize = lastThrow.good ? 34 : app.screen.width < 600 ? 16 : 20;
+  const half = verdictText.width / 2 + 8;
+  verdictText.x = Math.min(Math.max(cam.toScreenX(lastThrow.at[0]), half), app.screen.width - half);
+  verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * age, 70);
+  verdictText.alpha = Math.min(1, 3 * (1 - age / VERDICT_SHOWN));
 }
 
 /** The on-screen "Next level" button, shown when a level is over. */
@@ -302,7 +405,13 @@ const banner = new Text({
   },
 });
 banner.anchor.set(0.5, 0);
-renderer.root.addChild(overlay, banner);
+const verdictText = new Text({
+  text: '',
+  style: { fill: 0xffffff, fontSize: 20, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
+});
+verdictText.anchor.set(0.5, 1);
+verdictText.visible = false;
+renderer.root.addChild(overlay, banner, verdictText);
 
 /**
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
@@ -398,6 +507,22 @@ const PEBBLES: number[] = (() => {
   return out;
 })();
 
+/** The rock's outline around its box, in units of its half extents (x, y pairs from the bottom left). */
+const ROCK_OUTLINE = [-1.25, -1, -1.15, 0.6, -1.0, 1.1, -0.3, 1.25, 0.5, 1.2, 1.1, 1.05, 1.25, 0.3, 1.3, -1];
+/** Draws the rock past the castle as a boulder with a lit face, over its box. */
+function drawRock(): void {
+  if (!lv.rock || !isAlive(shell.world, lv.rock)) return;
+  const cam = renderer.camera;
+  const cx = lv.castleMaxX + ROCK.gap + ROCK.hx,
+    cy = ROCK.hy;
+  const pts = ROCK_OUTLINE.map((v, i) => (i % 2 === 0 ? cam.toScreenX(cx + v * ROCK.hx) : cam.toScreenY(cy + v * ROCK.hy)));
+  overlay.poly(pts).fill(0x7d776e).stroke({ width: 1.5, color: 0x4f4a43 });
+  const lit = [-1.15, 0.6, -1.0, 1.1, -0.3, 1.25, -0.1, 0.3, -0.6, -0.4].map((v, i) =>
+    i % 2 === 0 ? cam.toScreenX(cx + v * ROCK.hx) : cam.toScreenY(cy + v * ROCK.hy),
+  );
+  overlay.poly(lit).fill({ color: 0xb3ab9e, alpha: 0.7 });
+}
+
 function draw(world: PhysicsWorld): void {
   frameCamera();
   drawBackdrop(world);
@@ -420,6 +545,7 @@ function draw(world: PhysicsWorld): void {
         .ellipse(x, y, cam.toScreenLength(PEBBLES[i + 2]!), cam.toScreenLength(0.6 * PEBBLES[i + 2]!))
         .fill({ color: 0x9a8468, alpha: 0.55 });
   }
+  drawRock();
   // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
   overlay
     .moveTo(sx(LAUNCH.x - 0.6), sy(0.9))
@@ -440,6 +566,8 @@ function draw(world: PhysicsWorld): void {
   }
   const t = tally(world, lv);
   if (t.score > best.score) best = t;
+  followThrow(world, t);
+  drawThrow(world);
   // Fallen pieces get a red ring: what scored.
   const P = world.components.Position;
   for (const p of lv.pieces) {
@@ -491,7 +619,8 @@ function draw(world: PhysicsWorld): void {
   } else {
     // The total counts this level's score as it grows (its best try, once the level is over).
     const i = params.level - 1;
-    banner.text = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}`;
+    const tip = touch && shots.length === 0 && app.screen.height > 1.2 * app.screen.width ? '\nTip: turn sideways for a bigger view' : '';
+    banner.text = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}${tip}`;
     showNext(false);
   }
 }
@@ -504,7 +633,8 @@ shell.expose({
   campaign,
   /** Whether the level on screen is over. */
   levelEnded: (): boolean => levelEnded,
-  /** The text pointing at the castle while it is off screen ('' when it is in view). */
+  /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
+  lastVerdict: (): string => lastThrow.verdict,
   /** Whether the camera is at rest (tests aim at the cup once it is). */
   cameraSettled: (): boolean => cameraSettled,
   /** The level's tally now. */

@@ -24,7 +24,18 @@ export const FALL_DROP = 0.6;
 export const FALL_POINTS = 100;
 export const BREAK_POINTS = 25;
 /** Number of levels. */
-export const LEVEL_COUNT = 4;
+export const LEVEL_COUNT = 5;
+
+/**
+ * Each level's castle: towers side by side, storeys in each, where the first tower stands (m, give
+ * or take 1 m from the seed) and the shots the player has. From one throw over a grid of launch
+ * angles (10-60 degrees) and speeds (12-27 m/s), a third of throws cleared the old first level (one
+ * tower of two storeys); each level now asks a little more than the one before.
+ */
+const LEVEL_TOWERS = [1, 2, 2, 3, 4],
+  LEVEL_STOREYS = [3, 2, 3, 3, 4],
+  LEVEL_X0 = [18, 17, 17, 16, 15],
+  LEVEL_SHOTS = [3, 3, 3, 4, 5];
 
 /** Options of a level. */
 export interface LevelOptions {
@@ -62,7 +73,15 @@ export interface Level {
   /** The ground's and the catapult mound's handles (0 before a level is built). */
   ground: number;
   mound: number;
+  /**
+   * A static rock past the castle (its handle, 0 before a level is built) that stops debris sliding
+   * out of the view; its right face is at `castleMaxX + ROCK.gap + 2 ROCK.hx`.
+   */
+  rock: number;
 }
+
+/** The rock behind the castle: its gap from the castle's right end, half width and half height, m. */
+export const ROCK = { gap: 1.9, hx: 0.5, hy: 1.4 } as const;
 
 /** The world options: 2D, 4 contact substeps, room for the castle and shots. */
 export function worldOptions(o: { gravity: number }): PhysicsWorldOptions {
@@ -91,16 +110,17 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
   const lv: Level = {
     pieces: [],
     joints: [],
-    shots: [3, 3, 4, 5][o.level]!,
+    shots: LEVEL_SHOTS[o.level]!,
     castleMinX: Infinity,
     castleMaxX: -Infinity,
     castleTop: 0,
     ground,
     mound,
+    rock: 0,
   };
-  const towers = [1, 2, 3, 4][o.level]!,
-    storeys = [2, 2, 3, 4][o.level]!;
-  const x0 = [18, 17, 16, 15][o.level]! + rng.range(-1, 1);
+  const towers = LEVEL_TOWERS[o.level]!,
+    storeys = LEVEL_STOREYS[o.level]!;
+  const x0 = LEVEL_X0[o.level]! + rng.range(-1, 1);
   const span = 2.4; // width of a storey: two posts under a plank
   const weld = (a: number, b: number, anchor: [number, number]): void => {
     lv.joints.push(addWeldJoint(world, { a, b, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
@@ -145,7 +165,7 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
     // Crown: a stone (or two) on the top plank.
     const stones = o.level >= 2 ? 2 : 1;
     for (let k = 0; k < stones; k++) {
-      const r = 0.3 + 0.05 * o.level;
+      const r = 0.3 + 0.04 * o.level;
       piece(
         addBody(world, {
           position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01],
@@ -173,6 +193,12 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
       }
     }
   }
+  lv.rock = addBox(world, {
+    position: [lv.castleMaxX + ROCK.gap + ROCK.hx, ROCK.hy],
+    halfExtents: [ROCK.hx, ROCK.hy],
+    static: true,
+    friction: 0.9,
+  });
   return lv;
 }
 

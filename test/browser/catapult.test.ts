@@ -21,6 +21,7 @@ interface CatapultGame {
   params: { level: number };
   campaign: { scores: number[]; stars: number[] };
   levelEnded(): boolean;
+  lastVerdict(): string;
   panel: { gui: { controllersRecursive(): { property: string; $input?: HTMLInputElement }[] } };
   renderer: { camera: Cam };
   world: { steps: number; components: { Position: { x: Float64Array; y: Float64Array } } };
@@ -95,6 +96,9 @@ describe('catapult', () => {
     });
     expect(t.before).toBe(0);
     expect(t.after).toBeGreaterThan(0);
+    // The next frame says what the throw earned, over the scene.
+    await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
+    expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict())).toBe(`+${t.after}`);
     expect(g.errors).toEqual([]);
   });
 
@@ -113,9 +117,10 @@ describe('catapult', () => {
     await g.waitFor(() => (window.game as unknown as CatapultGame).levelEnded(), null);
     const state = await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
-      return { fallen: w.tally().fallen, stars: w.campaign.stars[0], level: w.params.level };
+      return { fallen: w.tally().fallen, stars: w.campaign.stars[0], level: w.params.level, verdict: w.lastVerdict() };
     });
-    expect(state).toEqual({ fallen: 0, stars: 0, level: 1 });
+    // A throw that came down short of the castle says so.
+    expect(state).toEqual({ fallen: 0, stars: 0, level: 1, verdict: 'Short: pull further back' });
     const again = g.page.getByRole('button', { name: /Try again/ });
     await again.click();
     await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
