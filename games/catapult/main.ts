@@ -135,6 +135,8 @@ function nextLevel(): void {
 
 /** Whether the level on screen is over (its score is in the campaign). */
 let levelEnded = false;
+/** Whether the camera can be framed (its state exists): set once the page's setup has run. */
+let framing = false;
 
 /** Sky, grass (the ground slab) and earth (below it). */
 const SKY = 0x9fd0f5,
@@ -153,6 +155,10 @@ const game = await startPixiGame({
   keys: [{ key: 'l', label: 'next level', action: () => nextLevel() }],
   renderer: { view: { minX: -4, minY: -1, maxX: 30, maxY: 14 } },
   app: { background: SKY },
+  // The camera moves before the bodies are placed, so they and the overlay share it.
+  beforeFrame: () => {
+    if (framing) frameCamera();
+  },
   onFrame: (_alpha, world) => draw(world),
 });
 const { shell, renderer, app } = game;
@@ -217,6 +223,7 @@ function frameCamera(): void {
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
+framing = true;
 
 const panel = createPanel(
   params,
@@ -524,7 +531,6 @@ function drawRock(): void {
 }
 
 function draw(world: PhysicsWorld): void {
-  frameCamera();
   drawBackdrop(world);
   const cam = renderer.camera,
     sx = (x: number) => cam.toScreenX(x),

@@ -67,6 +67,12 @@ export interface PixiGameOptions extends Omit<GameShellOptions, 'render'> {
   /** Extra drawing each frame, after the world renderer and before the frame is presented (pointer previews, overlays). */
   onFrame?: (alpha: number, world: PhysicsWorld) => void;
   /**
+   * Work each frame before the world renderer places the bodies: move the camera here. The renderer
+   * turns metres into pixels with the camera as it is when it places the bodies, so a camera moved in
+   * `onFrame` shows the bodies one frame behind the extras drawn there.
+   */
+  beforeFrame?: (alpha: number, world: PhysicsWorld) => void;
+  /**
    * Most frames whose GPU work may still be unfinished when the next is drawn, integer in [1, 8].
    * Default 2. A frame while that many are outstanding is not drawn (the canvas keeps the last one;
    * the world still steps). See ./frame-pacer.
@@ -98,14 +104,14 @@ function webgl2Of(app: Application): WebGL2RenderingContext | null {
 /**
  * Starts a 2D pixi game: Application, shell (world, loop, keys, HUD, window.game, ready flag) and a
  * WorldRenderer that follows the shell's world across resets. Each frame: the renderer places the
- * display objects for alpha, `onFrame` draws extras, `app.render()` presents, unless the GPU has not
+ * display objects for alpha (after `beforeFrame`), `onFrame` draws extras, `app.render()` presents, unless the GPU has not
  * finished `maxFramesInFlight` earlier frames (WebGL 2 fences, ./frame-pacer; never under WebGPU or
  * WebGL 1): then that frame is not drawn and the canvas keeps the last one.
  * @throws whatever createPixiApp, createGameShell or the WorldRenderer constructor throws (bad
  *   options); RangeError if maxFramesInFlight is not an integer in [1, 8].
  */
 export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame> {
-  const { renderer: rendererOptions, app: appOptions, onFrame, maxFramesInFlight, ...shellOptions } = options;
+  const { renderer: rendererOptions, app: appOptions, onFrame, beforeFrame, maxFramesInFlight, ...shellOptions } = options;
   const app = await createPixiApp(appOptions);
   const pacer = createFramePacer(webgl2Of(app), maxFramesInFlight ?? 2);
   const draw = (): void => {
@@ -118,6 +124,7 @@ export async function startPixiGame(options: PixiGameOptions): Promise<PixiGame>
     (world) => new WorldRenderer(world, { ...rendererOptions, app }),
     draw,
     onFrame,
+    beforeFrame,
   );
   const exposed = shell.expose({ renderer: worldRenderer, app, pacer });
   shell.start();

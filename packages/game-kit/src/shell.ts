@@ -237,8 +237,9 @@ export interface WorldView {
 
 /**
  * The part `startPixiGame` and `startThreeGame` share: a shell whose frames are drawn by the world
- * renderer `createRenderer(shell.world)` makes. Each frame the renderer places its objects for alpha,
- * `onFrame` draws extras, `present()` shows the frame (frames before the renderer exists draw nothing);
+ * renderer `createRenderer(shell.world)` makes. Each frame `beforeFrame` runs (a camera that moves
+ * moves here, so the bodies and the extras are placed with the same camera), the renderer places its
+ * objects for alpha, `onFrame` draws extras, `present()` shows the frame (frames before the renderer exists draw nothing);
  * after a reset the renderer follows the new world. Neither exposed nor started: the caller adds its
  * fields with `shell.expose` and calls `shell.start()`.
  * @throws whatever createGameShell or `createRenderer` throws.
@@ -248,12 +249,14 @@ export function createRenderedShell<R extends WorldView>(
   createRenderer: (world: PhysicsWorld) => R,
   present: () => void,
   onFrame?: (alpha: number, world: PhysicsWorld) => void,
+  beforeFrame?: (alpha: number, world: PhysicsWorld) => void,
 ): { shell: GameShell; renderer: R } {
   let renderer: R | null = null;
   const shell = createGameShell({
     ...options,
     render: (alpha, world) => {
       if (!renderer) return;
+      beforeFrame?.(alpha, world);
       renderer.render(alpha);
       onFrame?.(alpha, world);
       present();
