@@ -183,7 +183,7 @@ const game = await startThreeGame({
   },
   // A tall phone screen frames the crane and the near targets from lower down, so they fill its
   // width and the sky its height; a wide screen frames the whole reach of the jib.
-  view: PORTRAIT ? { min: [-6.5, 0, -6.5], max: [6.5, 6, 6.5] } : { min: [-9, 0, -9], max: [9, 5, 9] },
+  view: PORTRAIT ? { min: [-6.5, 0, -6.5], max: [7.5, 6, 6.5] } : { min: [-9, 0, -9], max: [9, 5, 9] },
   viewDirection: PORTRAIT ? [0.8, 0.5, 1] : [0.8, 0.75, 1],
   onFrame: () => frame(),
 });

@@ -108,7 +108,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; }
 @media (pointer: coarse) { .bp-toolbar button { min-width: 44px; height: 44px; } }
 .bp-info { grid-area: info; display: flex; flex-direction: column; gap: 8px; padding: calc(var(--bp-toolbar-height, 68px) + 4px) 10px 10px; overflow-y: auto; min-height: 0; box-sizing: border-box; }
 .bp-info, .bp-side, .bp-status, .bp-controls { background: ${BACKING}; }
-.bp-info .bp-help { margin-top: auto; }
+.bp-info .bp-help { margin-top: 4px; padding-top: 10px; border-top: 1px solid #2a3242; }
 .bp-status { grid-area: status; min-width: 0; }
 .bp-status:empty, .bp-controls:empty, .bp-side:empty { display: none; }
 .bp-stage { grid-area: stage; position: relative; overflow: hidden; min-width: 0; min-height: 0; }
