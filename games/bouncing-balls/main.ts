@@ -24,6 +24,7 @@ import {
   DRAG_MODES,
   type DragMode,
   isHeavy,
+  layoutOf,
   meanRadiusFor,
   removeBall,
   spawnBall,
@@ -53,6 +54,8 @@ const params = {
 };
 const mode = choiceParam('mode', ['auto', 'sprites', 'particles'] as const, 'auto');
 
+/** A screen taller than wide (a phone held upright) gets the tall box, which fills it. */
+const TALL = window.innerHeight > 1.2 * window.innerWidth;
 let handles: BouncingBallsHandles;
 /** Crates dropped with X (boxes: shapes that tumble among the balls), oldest first. */
 let crates: number[] = [];
@@ -67,6 +70,7 @@ function createWorld(): PhysicsWorld {
     friction: params.friction,
     drag: params.drag,
     dragK: params.dragK,
+    tall: TALL,
   };
   const world = createPhysicsWorld(bouncingBallsWorldOptions(options));
   handles = buildBouncingBalls(world, options);
@@ -78,8 +82,10 @@ function createWorld(): PhysicsWorld {
 function dropCrate(): number {
   const r = handles.meanRadius,
     n = crates.length;
+  const { box } = layoutOf(TALL);
+  const span = box.max[0] - box.min[0] - 8;
   const crate = addBox(shell.world, {
-    position: [4 + ((n * 2.7) % 8), 9],
+    position: [box.min[0] + 4 + ((n * 2.7) % span), box.max[1] - 1],
     angle: 0.4 * ((n % 5) - 2),
     halfExtents: [2 * r, 1.4 * r],
     density: 1 / (Math.PI * r * r),

@@ -2,9 +2,10 @@
  * The bouncing-balls scene: a pure, seeded builder in the shape of the physics package's scenes
  * (world options + build), kept next to the game. No DOM, no pixi: it runs in Node too.
  *
- * A 16 m x 10 m box; three inclined static segments (two ramps fixed to the side walls with free
- * inner ends, and a floating bar with two free ends); `count` balls of three densities on a
- * jittered grid in the upper part of the box, kept clear of the segments.
+ * A 16 m x 10 m box (10 m x 16 m with `tall`, for a screen held upright); three inclined static
+ * segments (two ramps fixed to the side walls with free inner ends, and a floating bar with two
+ * free ends); `count` balls of three densities on a jittered grid in the upper part of the box, kept
+ * clear of the segments.
  */
 import {
   addBody,
@@ -43,6 +44,8 @@ export interface BouncingBallsOptions {
   dragK?: number;
   /** Extra room for balls spawned later (clicks), integer in [0, 100_000]. Default 500. */
   spawnBudget?: number;
+  /** The tall layout (BOX_TALL and SEGMENTS_TALL, for a screen taller than wide). Default false. */
+  tall?: boolean;
 }
 
 /** Resolved options. */
@@ -57,6 +60,27 @@ export const SEGMENTS: readonly (readonly [number, number, number, number])[] = 
   [16, 4.4, 9.6, 2.9],
   [6.6, 7.1, 8.9, 7.6],
 ]);
+
+/** The tall layout's box, m: as much room as BOX, turned upright. */
+export const BOX_TALL = Object.freeze({ min: [0, 0] as const, max: [10, 16] as const });
+
+/** The tall layout's inclined walls, m: ramps from each side wall in turn, and a floating bar. */
+export const SEGMENTS_TALL: readonly (readonly [number, number, number, number])[] = Object.freeze([
+  [0, 10.6, 6.2, 9.1],
+  [10, 6.6, 3.8, 5.1],
+  [1.6, 2.6, 3.9, 3.1],
+]);
+
+/** A box's inner corners, m. */
+export interface BoxCorners {
+  readonly min: readonly [number, number];
+  readonly max: readonly [number, number];
+}
+
+/** The box and walls of a layout (`tall` or the default wide one). */
+export function layoutOf(tall: boolean): { box: BoxCorners; segments: typeof SEGMENTS } {
+  return tall ? { box: BOX_TALL, segments: SEGMENTS_TALL } : { box: BOX, segments: SEGMENTS };
+}
 
 /** Thickness radius of the segments, m. */
 export const SEGMENT_RADIUS = 0.06;
@@ -87,7 +111,7 @@ function check(cond: boolean, message: string): void {
  * @throws TypeError on an unknown option; RangeError naming the option and value when out of range.
  */
 export function resolveOptions(options: BouncingBallsOptions = {}): BouncingBallsParams {
-  const known = ['count', 'seed', 'gravity', 'restitution', 'friction', 'drag', 'dragK', 'spawnBudget'];
+  const known = ['count', 'seed', 'gravity', 'restitution', 'friction', 'drag', 'dragK', 'spawnBudget', 'tall'];
   for (const k of Object.keys(options)) {
     if (!known.includes(k))
       throw new TypeError(`bouncing-balls: unknown option ${JSON.stringify(k)}; known options are ${known.join(', ')}`);
@@ -101,6 +125,7 @@ export function resolveOptions(options: BouncingBallsOptions = {}): BouncingBall
     drag: options.drag ?? 'none',
     dragK: options.dragK ?? 0.05,
     spawnBudget: options.spawnBudget ?? 500,
+    tall: options.tall ?? false,
   };
   check(Number.isInteger(p.count) && p.count >= 1 && p.count <= 10_000, `count must be an integer in [1, 10000], got ${p.count}`);
   check(Number.isFinite(p.seed), `seed must be finite, got ${p.seed}`);
@@ -109,6 +134,7 @@ export function resolveOptions(options: BouncingBallsOptions = {}): BouncingBall
   check(p.friction >= 0 && Number.isFinite(p.friction), `friction must be >= 0, got ${p.friction}`);
   check(DRAG_MODES.includes(p.drag), `drag must be one of ${DRAG_MODES.join(', ')}, got ${JSON.stringify(p.drag)}`);
   check(p.dragK >= 0 && Number.isFinite(p.dragK), `dragK must be >= 0, got ${p.dragK}`);
+  check(typeof p.tall === 'boolean', `tall must be a boolean, got ${JSON.stringify(p.tall)}`);
   check(
     Number.isInteger(p.spawnBudget) && p.spawnBudget >= 0 && p.spawnBudget <= 100_000,
     `spawnBudget must be an integer in [0, 100000], got ${p.spawnBudget}`,
@@ -122,7 +148,7 @@ export function bouncingBallsWorldOptions(options: BouncingBallsOptions = {}): P
   return { dimensions: 2, capacity: p.count + p.spawnBudget + SEGMENTS.length + 8, gravity: [0, -p.gravity], seed: p.seed };
 }
 
-/** Mean radius, m, for `count` balls: balls cover about a fifth of the box, clamped to [0.035, 0.42] m. */
+/** Mean radius, m, for `count` balls: balls cover about a fifth of the box (either layout's: both are 160 m^2), clamped to [0.035, 0.42] m. */
 export function meanRadiusFor(count: number): number {
   const area = (BOX.max[0] - BOX.min[0]) * (BOX.max[1] - BOX.min[1]);
   return Math.min(0.42, Math.max(0.035, Math.sqrt((0.2 * area) / (count * Math.PI))));
@@ -146,9 +172,10 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
   const p = resolveOptions(options);
   check(world.dimensions === 2, `needs a 2D world, got dimensions ${world.dimensions}`);
   const rng = new Rng(p.seed);
-  setBoundary(world, { min: BOX.min, max: BOX.max, restitution: p.restitution, friction: p.friction });
+  const { box, segments: walls } = layoutOf(p.tall);
+  setBoundary(world, { min: box.min, max: box.max, restitution: p.restitution, friction: p.friction });
   const segments: number[] = [];
-  for (const [ax, ay, bx, by] of SEGMENTS) {
+  for (const [ax, ay, bx, by] of walls) {
     segments.push(
       addSegment(world, { a: [ax, ay], b: [bx, by], radius: SEGMENT_RADIUS, restitution: p.restitution, friction: p.friction }),
     );
@@ -161,20 +188,20 @@ export function buildBouncingBalls(world: PhysicsWorld, options: BouncingBallsOp
   settings.speculativeDistance = Math.min(settings.speculativeDistance, rMean);
   const rMax = 1.4 * rMean;
   const pitch = 2 * rMax + Math.max(0.02, 0.3 * rMax);
-  const x0 = BOX.min[0] + rMax + 0.05,
-    x1 = BOX.max[0] - rMax - 0.05;
+  const x0 = box.min[0] + rMax + 0.05,
+    x1 = box.max[0] - rMax - 0.05;
   const cols = Math.max(1, Math.floor((x1 - x0) / pitch) + 1);
   const jitter = 0.5 * (pitch - 2 * rMax);
   const handles: BouncingBallsHandles = { balls: [], segments, meanRadius: rMean, params: p, rng };
   const pos = [0, 0],
     vel = [0, 0];
-  let y = BOX.max[1] - rMax - 0.05;
+  let y = box.max[1] - rMax - 0.05;
   while (handles.balls.length < p.count) {
-    check(y >= BOX.min[1] + rMax, `${p.count} balls do not fit the box`);
+    check(y >= box.min[1] + rMax, `${p.count} balls do not fit the box`);
     for (let c = 0; c < cols && handles.balls.length < p.count; c++) {
       const cx = x0 + c * pitch;
       let clear = true;
-      for (const [ax, ay, bx, by] of SEGMENTS) {
+      for (const [ax, ay, bx, by] of walls) {
         if (distanceToSegment(cx, y, ax, ay, bx, by) < rMax + SEGMENT_RADIUS + jitter + 0.05) {
           clear = false;
           break;
@@ -238,8 +265,9 @@ export function spawnBall(world: PhysicsWorld, h: BouncingBallsHandles, x: numbe
   }
   const r = radius ?? h.meanRadius * h.rng.range(0.6, 1.4);
   check(r > 0 && Number.isFinite(r), `spawnBall: radius must be > 0, got ${r}`);
-  const cx = Math.min(BOX.max[0] - r, Math.max(BOX.min[0] + r, x));
-  const cy = Math.min(BOX.max[1] - r, Math.max(BOX.min[1] + r, y));
+  const { box } = layoutOf(h.params.tall);
+  const cx = Math.min(box.max[0] - r, Math.max(box.min[0] + r, x));
+  const cy = Math.min(box.max[1] - r, Math.max(box.min[1] + r, y));
   if (world.entityIndex.aliveCount >= world.capacity && h.balls.length > 0) removeBody(world, h.balls.shift()!);
   const eid = addBallUnchecked(world, h.params, [cx, cy], [vx, vy], r, DENSITIES.normal);
   h.balls.push(eid);
@@ -266,7 +294,8 @@ export function applyMaterial(world: PhysicsWorld, h: BouncingBallsHandles, rest
   const m = { restitution, friction };
   for (const e of h.balls) setMaterial(world, e, m);
   for (const e of h.segments) setMaterial(world, e, m);
-  setBoundary(world, { min: BOX.min, max: BOX.max, restitution, friction });
+  const { box } = layoutOf(h.params.tall);
+  setBoundary(world, { min: box.min, max: box.max, restitution, friction });
 }
 
 /**
