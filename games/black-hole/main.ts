@@ -14,15 +14,16 @@
  * URL: ?level=N (start level, default 1), ?holes=N (1..16: the classic endless game with N holes
  * instead of levels), ?seed=S, ?c=C (m/s), ?thrust=A (m/s^2), ?path=0|1.
  *
- * Drawn: each hole as a black disc of its Schwarzschild radius with a glow; the exhaust (particles,
- * additive); the ship; its predicted path for the next second, integrated in a small second world
+ * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
+ * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next second, integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 
 import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
-import { Graphics } from 'pixi.js';
+import { Container, Graphics, Sprite, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -330,12 +331,45 @@ function updateStatus(force = false): void {
 
 const backdrop = new Graphics({ label: 'backdrop' });
 app.stage.addChildAt(backdrop, 0);
+/** A soft round glow, white at the centre to clear at the rim (a 128 px canvas), tinted per use. */
+function glowTexture(): Texture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 128;
+  const g = c.getContext('2d')!;
+  const grad = g.createRadialGradient(64, 64, 0, 64, 64, 64);
+  grad.addColorStop(0, 'rgba(255, 255, 255, 1)');
+  grad.addColorStop(0.35, 'rgba(255, 255, 255, 0.45)');
+  grad.addColorStop(1, 'rgba(255, 255, 255, 0)');
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 128, 128);
+  return Texture.from(c);
+}
+const glow = glowTexture();
+/** Nebulae behind the stars: x, y (fractions of the field), size (m) and colour. */
+const NEBULAE: ReadonlyArray<readonly [number, number, number, number]> = [
+  [0.22, 0.7, 16, 0x5b3fa0],
+  [0.78, 0.35, 20, 0x1f6f8b],
+  [0.55, 0.88, 12, 0x8a3f7a],
+  [0.15, 0.2, 12, 0x2d4f9a],
+];
+const nebulaLayer = new Container({ label: 'nebulae' });
+const nebulaSprites = NEBULAE.map(([, , , color]) => {
+  const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', tint: color, alpha: 0.22 });
+  nebulaLayer.addChild(sprite);
+  return sprite;
+});
+app.stage.addChildAt(nebulaLayer, 1);
+/** Keeps the nebulae inside the field (they are larger than the gaps around it). */
+const nebulaMask = new Graphics({ label: 'nebula-mask' });
+app.stage.addChild(nebulaMask);
+nebulaLayer.mask = nebulaMask;
+/** Each hole's accretion glow (additive, under the disc drawn in holesLayer). */
+const holeGlowLayer = new Container({ label: 'hole-glows' });
+const holeGlows: Sprite[] = [];
 const holesLayer = new Graphics({ label: 'holes' });
 const overlay = new Graphics({ label: 'ship-and-path' });
-app.stage.addChild(holesLayer, overlay);
-let backdropVersion = -1,
-  holesVersion = -1,
-  holesCamera = -1;
+app.stage.addChild(holeGlowLayer, holesLayer, overlay);
+let backdropVersion = -1;
 const stars = (() => {
   const rng = new Rng(7);
   const out: [number, number, number][] = [];
@@ -351,6 +385,13 @@ function drawBackdrop(): void {
   const W = PLAY_FIELD.width,
     H = PLAY_FIELD.height;
   backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0x070a16);
+  nebulaMask.clear().rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0xffffff);
+  for (let i = 0; i < NEBULAE.length; i++) {
+    const [fx, fy, size] = NEBULAE[i]!;
+    const sprite = nebulaSprites[i]!;
+    sprite.position.set(cam.toScreenX(fx * W), cam.toScreenY(fy * H));
+    sprite.width = sprite.height = cam.toScreenLength(size);
+  }
   for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
   backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 1, color: 0x3a4560 });
   // The finish line, dashed.
@@ -364,24 +405,83 @@ function drawBackdrop(): void {
   backdrop.rect(cam.toScreenX(W / 2 - 1.2), cam.toScreenY(0.9), cam.toScreenLength(2.4), 3).fill({ color: 0x8d99ae, alpha: 0.7 });
 }
 
+/** Disc of hot gas around each hole: outer radius (x the horizon's), tilt (minor / major axis), turns a second. */
+const DISC = { outer: 2.6, tilt: 0.32, spin: 0.35 } as const;
+/** Clumps of gas drawn on each disc, carried round it. */
+const CLUMPS = 14;
+
+/** Half an ellipse (centre x, y, radii a, b) from angle t0 to t1, as a polyline, rad. */
+function arc(g: Graphics, x: number, y: number, a: number, b: number, t0: number, t1: number): Graphics {
+  const n = 24;
+  g.moveTo(x + a * Math.cos(t0), y + b * Math.sin(t0));
+  for (let i = 1; i <= n; i++) {
+    const t = t0 + ((t1 - t0) * i) / n;
+    g.lineTo(x + a * Math.cos(t), y + b * Math.sin(t));
+  }
+  return g;
+}
+
+/**
+ * Each hole, every frame: an orange glow, the far half of a tilted disc of hot gas, the horizon (a
+ * black disc of the Schwarzschild radius with a thin bright photon ring), then the near half of the
+ * disc across its face. Clumps of gas ride the disc, faster near the hole.
+ */
 function drawHoles(world: PhysicsWorld): void {
   const cam = renderer.camera;
-  if (bh.version === holesVersion && cam.version === holesCamera) return;
-  holesVersion = bh.version;
-  holesCamera = cam.version;
   holesLayer.clear();
   const P = world.components.Position;
+  const t = world.time;
+  while (holeGlows.length < bh.holes.length) {
+    const sprite = new Sprite({ texture: glow, anchor: 0.5, blendMode: 'add', tint: 0xff7a2a, alpha: 0.75 });
+    holeGlows.push(sprite);
+    holeGlowLayer.addChild(sprite);
+  }
+  for (let i = 0; i < holeGlows.length; i++) holeGlows[i]!.visible = i < bh.holes.length;
   for (let i = 0; i < bh.holes.length; i++) {
     const h = bh.holes[i]!;
     const x = cam.toScreenX(P.x[slotOf(h)]!),
       y = cam.toScreenY(P.y[slotOf(h)]!),
       r = cam.toScreenLength(bh.holeRadius[i]!);
-    // Glow outside the horizon (the photon sphere is at 1.5 r), then the horizon itself.
-    for (let k = 6; k >= 1; k--) holesLayer.circle(x, y, r * (1 + 0.12 * k)).fill({ color: 0xff8a3c, alpha: 0.05 });
-    holesLayer.circle(x, y, r * 1.5).stroke({ width: 1, color: 0xffc080, alpha: 0.25 });
-    holesLayer.circle(x, y, r).fill(0x000000).stroke({ width: 1.5, color: 0xffb060, alpha: 0.9 });
+    const sprite = holeGlows[i]!;
+    sprite.position.set(x, y);
+    sprite.width = sprite.height = 7 * r;
+    const a = DISC.outer * r,
+      b = DISC.tilt * a;
+    // Far half of the disc (behind the hole): wide dim band, then a hotter inner edge.
+    arc(holesLayer, x, y, a, b, Math.PI, 2 * Math.PI).stroke({ width: 0.9 * r, color: 0xff8a3c, alpha: 0.35 });
+    arc(holesLayer, x, y, 0.7 * a, 0.7 * b, Math.PI, 2 * Math.PI).stroke({ width: 0.35 * r, color: 0xffd089, alpha: 0.55 });
+    clumps(x, y, a, b, r, t, false);
+    holesLayer.circle(x, y, r * 1.08).fill({ color: 0xfff0d0, alpha: 0.9 });
+    holesLayer.circle(x, y, r).fill(0x000000);
+    // Near half, over the hole's face.
+    arc(holesLayer, x, y, a, b, 0, Math.PI).stroke({ width: 0.9 * r, color: 0xff8a3c, alpha: 0.45 });
+    arc(holesLayer, x, y, 0.7 * a, 0.7 * b, 0, Math.PI).stroke({ width: 0.35 * r, color: 0xffe2a8, alpha: 0.75 });
+    clumps(x, y, a, b, r, t, true);
   }
 }
+
+/**
+ * The disc's clumps on its near half (screen y below the centre) or far half, at time t, s. A clump at
+ * a fraction u of the outer radius goes round in 1 / (DISC.spin u^-1.5) s, as Kepler's third law has it.
+ */
+function clumps(x: number, y: number, a: number, b: number, r: number, t: number, near: boolean): void {
+  for (let k = 0; k < CLUMPS; k++) {
+    const u = 0.55 + (0.45 * ((k * 7) % CLUMPS)) / CLUMPS;
+    const ang = (2 * Math.PI * k) / CLUMPS + (2 * Math.PI * DISC.spin * t) / (u * Math.sqrt(u));
+    const sin = Math.sin(ang);
+    if (sin > 0 !== near) continue;
+    holesLayer.circle(x + u * a * Math.cos(ang), y + u * b * sin, Math.max(1, 0.1 * r)).fill({ color: 0xfff2d6, alpha: near ? 0.8 : 0.35 });
+  }
+}
+
+/** Screen direction (x right, y down) the flame points for each thrust: away from where the ship is pushed. */
+const FLAME: Record<Thrust, readonly [number, number] | null> = {
+  none: null,
+  up: [0, 1],
+  down: [0, -1],
+  left: [1, 0],
+  right: [-1, 0],
+};
 
 function drawFrame(alpha: number, world: PhysicsWorld): void {
   engine.set(bh.thrust === 'none' || bh.over ? 0 : 0.7);
@@ -404,10 +504,27 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   } else {
     pathPoints = 0;
   }
-  // The ship: a small arrowhead, nose up, 1 m tall.
+  // The ship: a small arrowhead, nose up, 1 m tall, with a flame out of the side opposite the thrust.
   const sx = cam.toScreenX(x),
     sy = cam.toScreenY(y),
     k = cam.toScreenLength(1);
+  const flame = FLAME[bh.thrust];
+  if (flame && !bh.over) {
+    const [fx, fy] = flame;
+    const len = k * (0.75 + 0.25 * Math.sin(world.time * 60));
+    const px = -fy,
+      py = fx;
+    overlay
+      .poly([
+        sx + fx * 0.3 * k + px * 0.2 * k,
+        sy + fy * 0.3 * k + py * 0.2 * k,
+        sx + fx * (0.3 * k + len),
+        sy + fy * (0.3 * k + len),
+        sx + fx * 0.3 * k - px * 0.2 * k,
+        sy + fy * 0.3 * k - py * 0.2 * k,
+      ])
+      .fill({ color: 0xffb347, alpha: 0.9 });
+  }
   overlay
     .poly([sx, sy - 0.55 * k, sx + 0.38 * k, sy + 0.45 * k, sx, sy + 0.25 * k, sx - 0.38 * k, sy + 0.45 * k])
     .fill(bh.over ? 0x5c677d : 0xe8ecf1);
