@@ -1,5 +1,6 @@
-// `npm run thumbnails [-- folder ...] [-- --seconds=1.5]`: opens each registered game (or the named
-// folders) in headless Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play,
+// `npm run thumbnails [-- folder[?query] ...] [-- --seconds=1.5]`: opens each registered game (or the
+// named folders, each with the URL query given after it, e.g. `black-hole?level=4` for a level with
+// more to see) in headless Chromium at 640x400, waits for its ready flag plus 1.5 s of simulated play,
 // and writes a screenshot of its canvas (HUD and panels hidden) to games/<folder>/thumbnail.png.
 import { statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -16,7 +17,9 @@ if (!(seconds >= 0 && Number.isFinite(seconds))) {
   process.exit(1);
 }
 const registry = await readRegistry();
-const wanted = args.filter((a) => !a.startsWith('--'));
+const named = args.filter((a) => !a.startsWith('--'));
+const wanted = named.map((a) => a.split('?')[0]);
+const queryOf = new Map(named.map((a) => [a.split('?')[0], a.includes('?') ? a.slice(a.indexOf('?')) : '']));
 for (const folder of wanted) {
   if (!registry.some((e) => e.folder === folder)) {
     console.error(`${folder} is not a registered game (games/${folder}/ needs main.ts, index.html and game.json)`);
@@ -38,7 +41,7 @@ try {
     });
     page.on('pageerror', (e) => errors.push(e.message));
     try {
-      await page.goto(`${site.url}${entry.folder}/`);
+      await page.goto(`${site.url}${entry.folder}/${queryOf.get(entry.folder) ?? ''}`);
       await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 60_000 });
       // Play `seconds` of simulated time (independent of how fast software WebGL draws).
       await page.waitForFunction((s) => (window.game?.world?.time ?? 0) >= s, seconds, { timeout: 120_000 });
