@@ -14,7 +14,7 @@
 
 import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
-import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
+import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, Rng, slotOf, step } from '@bitphysics/physics';
 import {
   SOLAR_SYSTEM_BODIES,
   SOLAR_SYSTEM_EPOCH,
@@ -25,7 +25,9 @@ import {
   solarSystemErrors,
 } from '@bitphysics/projects';
 import {
+  AdditiveBlending,
   BufferGeometry,
+  CanvasTexture,
   Float32BufferAttribute,
   Group,
   type Line,
@@ -35,7 +37,11 @@ import {
   MeshBasicMaterial,
   MeshStandardMaterial,
   PointLight,
+  Points,
+  PointsMaterial,
   SphereGeometry,
+  Sprite,
+  SpriteMaterial,
   Vector3,
 } from 'three';
 
@@ -165,6 +171,58 @@ shell.onWorldChange(() => shell.loop.setTimeStep(TICK));
 app.scene.add(new PointLight(0xfff2d0, 3, 0, 0));
 app.camera.far = 5000;
 app.camera.updateProjectionMatrix();
+
+/**
+ * The sky: STAR_COUNT stars on a sphere of STAR_SKY_RADIUS scene units (beyond the farthest the
+ * camera goes, inside its far plane), a third of them crowded towards a tilted band like the Milky
+ * Way, white to pale blue and gold, drawn a pixel or two wide whatever the zoom. Fixed (seeded).
+ */
+const STAR_COUNT = 3000,
+  STAR_SKY_RADIUS = 3000;
+{
+  const rng = new Rng(2012);
+  const pos = new Float32Array(3 * STAR_COUNT),
+    col = new Float32Array(3 * STAR_COUNT);
+  const tilt = 1.05;
+  for (let i = 0; i < STAR_COUNT; i++) {
+    let x = rng.normal(),
+      y = rng.normal(),
+      z = rng.normal();
+    if (i % 3 === 0) y *= 0.08; // the band: squashed towards the plane y = 0, then tilted
+    const n = Math.hypot(x, y, z) || 1;
+    x /= n;
+    y /= n;
+    z /= n;
+    const ty = y * Math.cos(tilt) - z * Math.sin(tilt),
+      tz = y * Math.sin(tilt) + z * Math.cos(tilt);
+    pos.set([x * STAR_SKY_RADIUS, ty * STAR_SKY_RADIUS, tz * STAR_SKY_RADIUS], 3 * i);
+    const b = 0.35 + 0.65 * rng.next() ** 3,
+      hue = rng.next();
+    col.set(hue < 0.2 ? [b, b * 0.9, b * 0.7] : hue < 0.4 ? [b * 0.8, b * 0.9, b] : [b, b, b], 3 * i);
+  }
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(pos, 3));
+  geometry.setAttribute('color', new Float32BufferAttribute(col, 3));
+  app.scene.add(new Points(geometry, new PointsMaterial({ size: 1.6, sizeAttenuation: false, vertexColors: true, depthWrite: false })));
+}
+
+/** The Sun's glow: an additive sprite of a radial gradient, following the Sun, a few times its drawn size. */
+const sunGlow = (() => {
+  const c = document.createElement('canvas');
+  c.width = c.height = 128;
+  const g = c.getContext('2d')!;
+  const grad = g.createRadialGradient(64, 64, 0, 64, 64, 64);
+  grad.addColorStop(0, 'rgba(255, 244, 214, 0.9)');
+  grad.addColorStop(0.25, 'rgba(255, 200, 110, 0.35)');
+  grad.addColorStop(1, 'rgba(255, 150, 60, 0)');
+  g.fillStyle = grad;
+  g.fillRect(0, 0, 128, 128);
+  const sprite = new Sprite(
+    new SpriteMaterial({ map: new CanvasTexture(c), blending: AdditiveBlending, depthWrite: false, transparent: true }),
+  );
+  app.scene.add(sprite);
+  return sprite;
+})();
 
 const sphere = new SphereGeometry(1, 32, 20);
 const materials = Object.fromEntries(
@@ -336,17 +394,27 @@ function labelFree(x0: number, y: number, width: number): boolean {
   return true;
 }
 
+/** Per body (in SOLAR_SYSTEM_BODIES order): screen x, y (px), drawn radius (px), on screen (1) or not (0). */
+const onScreen = new Float64Array(4 * SOLAR_SYSTEM_BODIES.length);
+/** The order names are placed in this frame (indices into SOLAR_SYSTEM_BODIES). */
+const labelOrder = SOLAR_SYSTEM_BODIES.map((_, i) => i);
+
 function frame(): void {
   const k = UNITS_PER_AU;
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
-  for (const name of SOLAR_SYSTEM_BODIES) {
-    const el = labels[name]!;
+  SOLAR_SYSTEM_BODIES.forEach((name, i) => {
+    onScreen[4 * i + 3] = 0;
     if (!renderer.drawnPosition(handles.bodies[name], p3)) {
-      el.style.display = 'none';
-      continue;
+      labels[name]!.style.display = 'none';
+      dots[name]!.el.style.display = 'none';
+      return;
     }
     v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
+    if (name === 'Sun') {
+      sunGlow.position.copy(v);
+      sunGlow.scale.setScalar(drawnRadius('Sun') * k * 9);
+    }
     if (name === 'Saturn') {
       rings.position.copy(v);
       rings.scale.set(1, 0.01, 1).multiplyScalar(drawnRadius('Saturn') * k * 2.2);
@@ -365,9 +433,27 @@ function frame(): void {
       dot.style.left = `${x}px`;
       dot.style.top = `${y}px`;
     }
+    onScreen[4 * i] = x;
+    onScreen[4 * i + 1] = y;
+    onScreen[4 * i + 2] = drawnPx;
+    onScreen[4 * i + 3] = visible ? 1 : 0;
+  });
+  // Names are placed the Sun first, then the planets farthest from it on the screen first: zoomed out,
+  // the inner planets crowd the Sun and the outer ones, each alone on its orbit, keep their names.
+  const sx = onScreen[0]!,
+    sy = onScreen[1]!;
+  const apart = (i: number) => (i === 0 ? Infinity : Math.hypot(onScreen[4 * i]! - sx, onScreen[4 * i + 1]! - sy));
+  labelOrder.sort((a, b) => apart(b) - apart(a));
+  for (const i of labelOrder) {
+    const name = SOLAR_SYSTEM_BODIES[i]!;
+    const el = labels[name]!;
+    const x = onScreen[4 * i]!,
+      y = onScreen[4 * i + 1]!,
+      drawnPx = onScreen[4 * i + 2]!,
+      visible = onScreen[4 * i + 3] === 1;
     // The name goes right of the body, else left, else above or below either side: the first place
-    // that covers no name placed before (the Sun first, then outwards) and stays in the view. With
-    // none free it waits until the view separates them.
+    // that covers no name placed before and stays in the view. With none free it waits until the view
+    // separates them.
     const width = 7.5 * (el.textContent?.length ?? 4) + 14;
     const gap = Math.max(6, drawnPx + 3);
     let free = false,
