@@ -118,6 +118,12 @@ const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
 
 /** The next level after a clear, the same one again after a miss, level 1 (a new campaign) after the end. */
 function nextLevel(): void {
+  // A level cleared with shots to spare ends here, its score and stars counted, when the player moves on.
+  if (!levelEnded && clearedEarly(shell.world)) {
+    recordLevel(tally(shell.world, lv));
+    // After the last level the end screen shows first; the next press starts a new campaign.
+    if (params.level === LEVEL_COUNT) return;
+  }
   const finished = levelEnded;
   const cleared = finished && campaign.stars[params.level - 1]! > 0;
   if (finished && !cleared) {
@@ -198,7 +204,8 @@ let framedFor = '';
 function frameCamera(): void {
   const cam = renderer.camera;
   const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
-  const minX = LAUNCH.x - 1.8,
+  // Room behind the catapult for the longest pull (PULL.max), so the band stays in view.
+  const minX = LAUNCH.x - PULL.max - 0.4,
     maxX = lv.castleMaxX + ROCK.gap + 2 * ROCK.hx + 0.3;
   const width = maxX - minX;
   const height = width * aspect;
@@ -267,13 +274,13 @@ const panel = createPanel(
 const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen at no
-// fewer than AIM_PX_PER_M pixels a metre of pull. On a phone, where the whole play area is 12-16 px
-// a metre and the catapult is near the left edge, a full pull (PULL.max) is a drag of 120 px that
-// starts wherever the thumb is.
+// fewer than AIM_PX_PER_M pixels a metre of pull, so a full pull (PULL.max) is a drag of at least
+// 165 px that starts wherever the finger or mouse goes down. (At 40 px a metre, a playtester's phone
+// drags of 36-48 px already spanned the range: 1 px of wobble moved the landing 4 px.)
 const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const pointer = { x: 0, y: 0 };
 /** Least screen pixels per metre of pull. */
-const AIM_PX_PER_M = 40;
+const AIM_PX_PER_M = 55;
 const aimScale = (): number => Math.max(renderer.camera.toScreenLength(1), AIM_PX_PER_M);
 app.canvas.addEventListener('pointerdown', (e) => {
   if (shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
@@ -300,9 +307,9 @@ app.canvas.addEventListener('pointercancel', () => {
   aim.active = false;
 });
 
-/** Throws with the pull (dx, dy), m, if shots are left and the pull is long enough (0.3 m). */
+/** Throws with the pull (dx, dy), m, if the level is on, shots are left and the pull is long enough (0.3 m). */
 function fire(dx: number, dy: number): number {
-  if (shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
+  if (levelEnded || shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
   const ball = launch(shell.world, vx, vy, params.projectileMass);
   renderer.setColor(ball, 0x3d434d);
@@ -594,18 +601,12 @@ function draw(world: PhysicsWorld): void {
     banner.style.wordWrapWidth = app.screen.width - 24;
     banner.style.fontSize = narrow ? 17 : 22;
   }
-  if (levelOver(world, t)) {
+  if (levelEnded || levelOver(world, t)) {
     const share = t.fallen / Math.max(1, lv.pieces.length);
     const earned = starsOf(share);
-    const i = params.level - 1;
     const bonus = earned > 0 ? shotsLeft * SHOT_BONUS : 0;
     const score = t.score + bonus;
-    if (!levelEnded) {
-      // A level's score and stars count once, and only its best try.
-      levelEnded = true;
-      if (score > campaign.scores[i]!) campaign.scores[i] = score;
-      if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
-    }
+    if (!levelEnded) recordLevel(t);
     const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
     const last = params.level === LEVEL_COUNT;
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
@@ -626,9 +627,38 @@ function draw(world: PhysicsWorld): void {
     // The total counts this level's score as it grows (its best try, once the level is over).
     const i = params.level - 1;
     const tip = touch && shots.length === 0 && app.screen.height > 1.2 * app.screen.width ? '\nTip: turn sideways for a bigger view' : '';
-    banner.text = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}${tip}`;
-    showNext(false);
+    const running = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}${tip}`;
+    if (clearedEarly(world)) {
+      // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
+      // throw again for more stars.
+      const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
+      const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
+      banner.text = `Cleared!  ${stars}   +${shotsLeft * SHOT_BONUS} for shots left if you move on now\n${running}`;
+      showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
+    } else {
+      banner.text = running;
+      showNext(false);
+    }
   }
+}
+
+/**
+ * Whether the level on screen is cleared (a star's worth down) while shots are left, 4 s after the
+ * last throw: the player may move on before throwing them.
+ */
+function clearedEarly(world: PhysicsWorld): boolean {
+  if (levelEnded || shots.length === 0 || world.time - lastShotTime <= 4) return false;
+  return starsOf(tally(world, lv).fallen / Math.max(1, lv.pieces.length)) > 0;
+}
+
+/** Ends the level on screen: its score (with the unused shots' bonus once cleared) and stars count, once and only its best try. */
+function recordLevel(t: Tally): void {
+  const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
+  const score = t.score + (earned > 0 ? shotsLeft * SHOT_BONUS : 0);
+  const i = params.level - 1;
+  levelEnded = true;
+  if (score > campaign.scores[i]!) campaign.scores[i] = score;
+  if (earned > campaign.stars[i]!) campaign.stars[i] = earned;
 }
 
 // window.game: the shell (stats, pause, step, reset) plus what tests and the console need.

@@ -85,20 +85,43 @@ describe('catapult', () => {
       w.reset();
       w.advance(30);
       const before = w.tally().score;
-      // Aim the low angle at the castle's front: sin(2 theta) = g R / v^2 at v = 24 m/s (pull 24 / 9 m).
+      // Aim the low angle at the castle's front: sin(2 theta) = g R / v^2 at v = 20 m/s (pull 20 / 7 m).
       const R = w.level().castleMinX + 0.5,
-        v = 24,
+        v = 20,
         th = 0.5 * Math.asin((9.81 * R) / (v * v)),
-        d = v / 9;
+        d = v / 7;
       w.fire(-d * Math.cos(th), -d * Math.sin(th));
       w.advance(300);
-      return { before, after: w.tally().score };
+      return {
+        before,
+        after: w.tally().score,
+        fallen: w.tally().fallen,
+        pieces: (w.level() as unknown as { pieces: unknown[] }).pieces.length,
+      };
     });
     expect(t.before).toBe(0);
     expect(t.after).toBeGreaterThan(0);
     // The next frame says what the throw earned, over the scene.
     await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
     expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict())).toBe(`+${t.after}`);
+    // That throw brought down over half the castle with two shots left: the level is cleared and the
+    // player may move on at once; the level then counts its score with 150 a shot left.
+    expect(t.fallen / t.pieces).toBeGreaterThanOrEqual(0.5);
+    const next = g.page.getByRole('button', { name: /Level 2/ });
+    await next.waitFor({ state: 'visible' });
+    await next.click();
+    await g.waitFor(() => (window.game as unknown as CatapultGame).params.level === 2, null);
+    const campaign = await g.page.evaluate(() => (window.game as unknown as CatapultGame).campaign);
+    expect(campaign.scores[0]).toBe(t.after + 2 * 150);
+    expect(campaign.stars[0]).toBeGreaterThan(0);
+    // Back to a new campaign at level 1 for the next test.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.campaign.scores.fill(0);
+      w.campaign.stars.fill(0);
+      w.params.level = 1;
+      w.reset();
+    });
     expect(g.errors).toEqual([]);
   });
 

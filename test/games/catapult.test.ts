@@ -84,6 +84,18 @@ describe('catapult rules', () => {
     expect(t.score).toBe(100 * t.fallen + 25 * t.broken);
   });
 
+  it('a piece that fell stays counted when it is knocked back up: the score never drops', () => {
+    // A playtester saw the score fall from 1550 to 1450 as a fallen piece was thrown back up.
+    const { w, lv } = level(0);
+    const P = w.components.Position;
+    const p = lv.pieces[0]!,
+      s = slotOf(p.body);
+    P.y[s] = p.startY - 1;
+    expect(tally(w, lv).fallen).toBe(1);
+    P.y[s] = p.startY;
+    expect(tally(w, lv)).toEqual({ fallen: 1, broken: 0, score: 100 });
+  });
+
   it('rejects a level out of range', () => {
     const w = createPhysicsWorld(worldOptions({ gravity: G }));
     expect(() => buildLevel(w, { level: LEVEL_COUNT, seed: 1, gravity: G, jointStrength: 400 })).toThrow(
