@@ -1,3 +1,4 @@
+import { BS3_STRIDE, BX_STRIDE, IMPACT_STRIDE } from '../solver/body-state-layout.js';
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
 
@@ -206,12 +207,16 @@ export interface CollisionState {
    * components users touch): 2D rows of 8 (vx, vy, w, dx, dy, 1/m, 1/I, pushed), 3D rows of 12 (vx, vy,
    * vz, wx, wy, wz, dx, dy, dz, 1/m, 1/I, pushed); d is the displacement within the step, m; pushed is
    * 1 once a solver row has applied an impulse to the body this step (0: free flight, see solver/contact-solver.ts).
+   * Offsets and strides: BS2_* and BS3_* in solver/body-state-layout.ts.
    */
   bodyState: Float64Array;
-  /** Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply (x, y, z), rad. */
+  /**
+   * Per solver body, rows of 6: the base the displacement is added to (x, y, z), m, and the rotation still to apply
+   * (x, y, z), rad. Offsets: BX_* in solver/body-state-layout.ts.
+   */
   bodyExtra: Float64Array;
   /**
-   * Per solver body, rows of 5 (impact stage, see `IMPACT_STRIDE` in solver/impacts.ts): the end-position
+   * Per solver body, rows of 5 (impact stage, solver/impacts.ts; offsets in solver/body-state-layout.ts): the end-position
    * correction of this step's impacts (x, y, z), m (-dv t* summed over impacts), the time of its
    * latest impact in the step, s, and whether the soft substeps leave the body alone (1) or not (0).
    */
@@ -329,9 +334,9 @@ export function createCollisionState(
     solverMark: new Float64Array(n),
     solverIndex: new Int32Array(n),
     solverStamp: 0,
-    bodyState: new Float64Array(12 * 256),
-    bodyExtra: new Float64Array(6 * 256),
-    bodyImpact: new Float64Array(5 * 256),
+    bodyState: new Float64Array(BS3_STRIDE * 256),
+    bodyExtra: new Float64Array(BX_STRIDE * 256),
+    bodyImpact: new Float64Array(IMPACT_STRIDE * 256),
     looseBall: 0,
     impactOrder: new Int32Array(256),
     impactKey: new Float64Array(256),

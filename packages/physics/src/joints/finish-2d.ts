@@ -1,3 +1,4 @@
+import { BS2_DX, BS2_DY, BS2_STRIDE } from '../solver/body-state-layout.js';
 import { currentHandle } from '../world/handles.js';
 import { pushBreak } from '../world/joint-state-2d.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
@@ -81,8 +82,8 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
       tf = ri[q + TF]!;
     const type = tf === POINT_LINK ? JointType.Distance : tf === PIN ? JointType.Revolute : tf & 255,
       flags = tf >> 8;
-    const oA = ia * 8,
-      oB = ib * 8;
+    const oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -91,8 +92,8 @@ export function finishJoints(world: PhysicsWorld, hs: number): void {
       rAy = sA * rows[o + RAX]! + cA * rows[o + RAY]!;
     const rBx = cB * rows[o + RBX]! - sB * rows[o + RBY]!,
       rBy = sB * rows[o + RBX]! + cB * rows[o + RBY]!;
-    const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx;
-    const dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx;
+    const dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
     let force = 0,
       torque = 0,
       error = 0,

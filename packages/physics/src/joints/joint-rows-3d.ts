@@ -1,3 +1,4 @@
+import { BS3_INV_MASS, BS3_STRIDE, BS3_WX, BS3_WY, BS3_WZ } from '../solver/body-state-layout.js';
 import {
   anchorSpeed,
   anchorVelocity,
@@ -189,11 +190,11 @@ function errorRotation(p: JointPass3D, j: number): void {
  */
 function solveAngularLock(p: JointPass3D, j: number, a: number, b: number, hinge: boolean): void {
   const { s, sb, T, bRate, ms, is } = p;
-  const oa = 12 * a,
-    ob = 12 * b;
-  const wx = sb[ob + 3]! - sb[oa + 3]!,
-    wy = sb[ob + 4]! - sb[oa + 4]!,
-    wz = sb[ob + 5]! - sb[oa + 5]!;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
+  const wx = sb[ob + BS3_WX]! - sb[oa + BS3_WX]!,
+    wy = sb[ob + BS3_WY]! - sb[oa + BS3_WY]!,
+    wz = sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!;
   const ex = E[0]!,
     ey = E[1]!,
     ez = E[2]!;
@@ -243,8 +244,8 @@ function solveAngularLock(p: JointPass3D, j: number, a: number, b: number, hinge
 /** A hinge's motor and angle limit about its axis (bx, from solveAngularLock), on the angle of E. */
 function solveHingeAxial(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
   const { s, sb, T, hs, useBias, bRate, ms, is } = p;
-  const oa = 12 * a,
-    ob = 12 * b;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
   const ex = E[0]!,
     ey = E[1]!,
     ez = E[2]!,
@@ -255,7 +256,8 @@ function solveHingeAxial(p: JointPass3D, j: number, a: number, b: number, flags:
   const angle = 2 * Math.atan2(ex * s.uax[j]! + ey * s.uay[j]! + ez * s.uaz[j]!, ew);
   if (flags & Joint3DFlag.Motor) {
     const maxL = s.maxMotorTorque[j]! * hs;
-    const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+    const rel =
+      (sb[ob + BS3_WX]! - sb[oa + BS3_WX]!) * hx + (sb[ob + BS3_WY]! - sb[oa + BS3_WY]!) * hy + (sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!) * hz;
     s.motor[j] = angularRow(sb, T, a, b, hx, hy, hz, rel, -s.motorSpeed[j]!, 1, 0, s.motor[j]!, -maxL, maxL);
   }
   if (flags & Joint3DFlag.Limit) {
@@ -279,7 +281,8 @@ function solveHingeAxial(p: JointPass3D, j: number, a: number, b: number, flags:
       applyAngular(sb, T, a, b, l * hx, l * hy, l * hz);
       s.limit[j] = 0;
     }
-    const rel = (sb[ob + 3]! - sb[oa + 3]!) * hx + (sb[ob + 4]! - sb[oa + 4]!) * hy + (sb[ob + 5]! - sb[oa + 5]!) * hz;
+    const rel =
+      (sb[ob + BS3_WX]! - sb[oa + BS3_WX]!) * hx + (sb[ob + BS3_WY]! - sb[oa + BS3_WY]!) * hy + (sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!) * hz;
     const lam = angularRow(sb, T, a, b, sg * hx, sg * hy, sg * hz, sg * rel, bias, m, im, sg * s.limit[j]!, 0, Infinity);
     s.limit[j] = sg * lam;
   }
@@ -288,14 +291,14 @@ function solveHingeAxial(p: JointPass3D, j: number, a: number, b: number, flags:
 /** The point block: its error in C3, the anchors' relative velocity in v3 and K (3 x 3). */
 function preparePointBlock(p: JointPass3D, a: number, b: number): void {
   const { sb, T } = p;
-  const oa = 12 * a,
-    ob = 12 * b;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
   C3[0] = pb[0]! + rb[0]! - pa[0]! - ra[0]!;
   C3[1] = pb[1]! + rb[1]! - pa[1]! - ra[1]!;
   C3[2] = pb[2]! + rb[2]! - pa[2]! - ra[2]!;
   anchorVelocity(sb, a, b, v3);
-  const ma = sb[oa + 9]!,
-    mb = sb[ob + 9]!;
+  const ma = sb[oa + BS3_INV_MASS]!,
+    mb = sb[ob + BS3_INV_MASS]!;
   for (let c = 0; c < 3; c++) {
     const px = c === 0 ? 1 : 0,
       py = c === 1 ? 1 : 0,
@@ -434,8 +437,8 @@ function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags:
 /** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
 function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
   const { s, sb, T, hs, useBias, bRate, ms, is } = p;
-  const oa = 12 * a,
-    ob = 12 * b;
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
   rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
   let nx = ax[1]! * bx[2]! - ax[2]! * bx[1]!,
@@ -457,7 +460,11 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
       m = ms;
       im = is;
     }
-    const cdot = -((sb[ob + 3]! - sb[oa + 3]!) * nx + (sb[ob + 4]! - sb[oa + 4]!) * ny + (sb[ob + 5]! - sb[oa + 5]!) * nz);
+    const cdot = -(
+      (sb[ob + BS3_WX]! - sb[oa + BS3_WX]!) * nx +
+      (sb[ob + BS3_WY]! - sb[oa + BS3_WY]!) * ny +
+      (sb[ob + BS3_WZ]! - sb[oa + BS3_WZ]!) * nz
+    );
     s.limit[j] = angularRow(sb, T, a, b, -nx, -ny, -nz, cdot, bias, m, im, s.limit[j]!, 0, Infinity);
   } else s.limit[j] = 0; // axes parallel: n undefined, far inside the cone; the row starts again from zero
 }

@@ -1,3 +1,14 @@
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+} from '../solver/body-state-layout.js';
 import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -23,12 +34,12 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
       i = l * PIN_INTS;
     const ia = pint[i]!,
       ib = pint[i + 1]!,
-      oA = ia * 8,
-      oB = ib * 8;
-    const mA = sb[oA + 5]!,
-      iA = sb[oA + 6]!,
-      mB = sb[oB + 5]!,
-      iB = sb[oB + 6]!;
+      oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
+    const mA = sb[oA + BS2_INV_MASS]!,
+      iA = sb[oA + BS2_INV_INERTIA]!,
+      mB = sb[oB + BS2_INV_MASS]!,
+      iB = sb[oB + BS2_INV_INERTIA]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -37,19 +48,19 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
       rAy = sA * pf[f]! + cA * pf[f + 1]!;
     const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
       rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    let vAx = sb[oA]!,
-      vAy = sb[oA + 1]!,
-      wA = sb[oA + 2]!,
-      vBx = sb[oB]!,
-      vBy = sb[oB + 1]!,
-      wB = sb[oB + 2]!;
+    let vAx = sb[oA + BS2_VX]!,
+      vAy = sb[oA + BS2_VY]!,
+      wA = sb[oA + BS2_W]!,
+      vBx = sb[oB + BS2_VX]!,
+      vBy = sb[oB + BS2_VY]!,
+      wB = sb[oB + BS2_W]!;
     const cdx = vBx - wB * rBy - vAx + wA * rAy,
       cdy = vBy + wB * rBx - vAy - wA * rAx;
     let bx = 0,
       by = 0;
     if (useBias) {
-      bx = jb * (sb[oB + 3]! - sb[oA + 3]! + pf[f + 4]! + rBx - rAx);
-      by = jb * (sb[oB + 4]! - sb[oA + 4]! + pf[f + 5]! + rBy - rAy);
+      bx = jb * (sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + pf[f + 4]! + rBx - rAx);
+      by = jb * (sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + pf[f + 5]! + rBy - rAy);
     }
     const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
     const k12 = -rAy * rAx * iA - rBy * rBx * iB;
@@ -70,14 +81,14 @@ export function solvePins(world: PhysicsWorld, useBias: boolean): void {
     vBx += mB * ix;
     vBy += mB * iy;
     wB += iB * (rBx * iy - rBy * ix);
-    sb[oA] = vAx;
-    sb[oA + 1] = vAy;
-    sb[oA + 2] = wA;
-    sb[oA + 7] = 1;
-    sb[oB] = vBx;
-    sb[oB + 1] = vBy;
-    sb[oB + 2] = wB;
-    sb[oB + 7] = 1;
+    sb[oA + BS2_VX] = vAx;
+    sb[oA + BS2_VY] = vAy;
+    sb[oA + BS2_W] = wA;
+    sb[oA + BS2_PUSHED] = 1;
+    sb[oB + BS2_VX] = vBx;
+    sb[oB + BS2_VY] = vBy;
+    sb[oB + BS2_W] = wB;
+    sb[oB + BS2_PUSHED] = 1;
   }
 }
 
@@ -101,16 +112,16 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
       i = l * LINK_INTS;
     const oA = lint[i]!,
       oB = lint[i + 1]!;
-    const dx = sb[oB + 3]! - sb[oA + 3]! + lf[f]!,
-      dy = sb[oB + 4]! - sb[oA + 4]! + lf[f + 1]!;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
+      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const ux = dx / L,
       uy = dy / L;
-    const vAx = sb[oA]!,
-      vAy = sb[oA + 1]!,
-      vBx = sb[oB]!,
-      vBy = sb[oB + 1]!;
+    const vAx = sb[oA + BS2_VX]!,
+      vAy = sb[oA + BS2_VY]!,
+      vBx = sb[oB + BS2_VX]!,
+      vBy = sb[oB + BS2_VY]!;
     const vr = (vBx - vAx) * ux + (vBy - vAy) * uy;
     const C = L - lf[f + 3]!;
     const acc = lf[f + 4]!;
@@ -137,15 +148,15 @@ export function solvePointLinks(world: PhysicsWorld, invH: number, useBias: bool
     }
     const Px = impulse * ux,
       Py = impulse * uy,
-      mA = sb[oA + 5]!,
-      mB = sb[oB + 5]!;
-    sb[oA] = vAx - mA * Px;
-    sb[oA + 1] = vAy - mA * Py;
-    sb[oB] = vBx + mB * Px;
-    sb[oB + 1] = vBy + mB * Py;
+      mA = sb[oA + BS2_INV_MASS]!,
+      mB = sb[oB + BS2_INV_MASS]!;
+    sb[oA + BS2_VX] = vAx - mA * Px;
+    sb[oA + BS2_VY] = vAy - mA * Py;
+    sb[oB + BS2_VX] = vBx + mB * Px;
+    sb[oB + BS2_VY] = vBy + mB * Py;
     if (lf[f + 4] !== 0) {
-      sb[oA + 7] = 1;
-      sb[oB + 7] = 1;
+      sb[oA + BS2_PUSHED] = 1;
+      sb[oB + BS2_PUSHED] = 1;
     }
   }
 }

@@ -1,3 +1,4 @@
+import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BX_BASE_X, BX_BASE_Y, BX_ROT_Z, BX_STRIDE } from '../solver/body-state-layout.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES, LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -109,7 +110,7 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     list = cs.solverBodies,
     angle = c.Angle.value;
   for (let k = 1; k < count; k++) {
-    const t = angle[list[k]!]! + ex[k * 6 + 5]!;
+    const t = angle[list[k]!]! + ex[k * BX_STRIDE + BX_ROT_Z]!;
     pose[k * 3] = Math.cos(t);
     pose[k * 3 + 1] = Math.sin(t);
     pose[k * 3 + 2] = t;
@@ -149,12 +150,12 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     let flags = ri[q + TF]! >> 8;
     const a = J.a[j]!,
       b = J.b[j]!;
-    const oA = ia * 8,
-      oB = ib * 8;
-    const mA = sb[oA + 5]!,
-      iA = sb[oA + 6]!,
-      mB = sb[oB + 5]!,
-      iB = sb[oB + 6]!;
+    const oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
+    const mA = sb[oA + BS2_INV_MASS]!,
+      iA = sb[oA + BS2_INV_INERTIA]!,
+      mB = sb[oB + BS2_INV_MASS]!,
+      iB = sb[oB + BS2_INV_INERTIA]!;
     // Start-of-step pose of A and B: solver bodies from their base and owed rotation; fixed bodies where they are.
     let cAx = 0,
       cAy = 0,
@@ -170,8 +171,8 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     let cA = 1,
       sA = 0;
     if (ia !== 0) {
-      cAx = ex[ia * 6]!;
-      cAy = ex[ia * 6 + 1]!;
+      cAx = ex[ia * BX_STRIDE + BX_BASE_X]!;
+      cAy = ex[ia * BX_STRIDE + BX_BASE_Y]!;
       tA = pose[ia * 3 + 2]!;
       cA = pose[ia * 3]!;
       sA = pose[ia * 3 + 1]!;
@@ -191,8 +192,8 @@ export function prepareJoints(world: PhysicsWorld, hs: number): void {
     {
       let cb: number, sbn: number;
       if (ib !== 0) {
-        cBx = ex[ib * 6]!;
-        cBy = ex[ib * 6 + 1]!;
+        cBx = ex[ib * BX_STRIDE + BX_BASE_X]!;
+        cBy = ex[ib * BX_STRIDE + BX_BASE_Y]!;
         tB = pose[ib * 3 + 2]!;
         cb = pose[ib * 3]!;
         sbn = pose[ib * 3 + 1]!;

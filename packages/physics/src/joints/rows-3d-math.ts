@@ -1,3 +1,23 @@
+import {
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_MASS,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+  BX_BASE_X,
+  BX_BASE_Y,
+  BX_BASE_Z,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -45,9 +65,9 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   }
   const ex = world.collision.bodyExtra,
     sb = world.collision.bodyState;
-  const rx = ex[6 * k + 3]!,
-    ry = ex[6 * k + 4]!,
-    rz = ex[6 * k + 5]!,
+  const rx = ex[BX_STRIDE * k + BX_ROT_X]!,
+    ry = ex[BX_STRIDE * k + BX_ROT_Y]!,
+    rz = ex[BX_STRIDE * k + BX_ROT_Z]!,
     a = Math.hypot(rx, ry, rz);
   if (a > 0) {
     const f = Math.sin(a / 2) / a,
@@ -68,9 +88,9 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
   q[1] = y;
   q[2] = z;
   q[3] = w;
-  p[0] = ex[6 * k]! + sb[12 * k + 6]!;
-  p[1] = ex[6 * k + 1]! + sb[12 * k + 7]!;
-  p[2] = ex[6 * k + 2]! + sb[12 * k + 8]!;
+  p[0] = ex[BX_STRIDE * k + BX_BASE_X]! + sb[BS3_STRIDE * k + BS3_DX]!;
+  p[1] = ex[BX_STRIDE * k + BX_BASE_Y]! + sb[BS3_STRIDE * k + BS3_DY]!;
+  p[2] = ex[BX_STRIDE * k + BX_BASE_Z]! + sb[BS3_STRIDE * k + BS3_DZ]!;
 }
 
 export function rot(q: Float64Array, vx: number, vy: number, vz: number, out: Float64Array): void {
@@ -99,26 +119,26 @@ export const tmp = new Float64Array(6);
 /** Linear impulse P at the anchors: -P to A, +P to B. */
 export function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: number, px: number, py: number, pz: number): void {
   if (a > 0) {
-    const o = 12 * a,
-      m = sb[o + 9]!;
-    sb[o] = sb[o]! - m * px;
-    sb[o + 1] = sb[o + 1]! - m * py;
-    sb[o + 2] = sb[o + 2]! - m * pz;
+    const o = BS3_STRIDE * a,
+      m = sb[o + BS3_INV_MASS]!;
+    sb[o + BS3_VX] = sb[o + BS3_VX]! - m * px;
+    sb[o + BS3_VY] = sb[o + BS3_VY]! - m * py;
+    sb[o + BS3_VZ] = sb[o + BS3_VZ]! - m * pz;
     invI(T, a, ra[1]! * pz - ra[2]! * py, ra[2]! * px - ra[0]! * pz, ra[0]! * py - ra[1]! * px, tmp, 0);
-    sb[o + 3] = sb[o + 3]! - tmp[0]!;
-    sb[o + 4] = sb[o + 4]! - tmp[1]!;
-    sb[o + 5] = sb[o + 5]! - tmp[2]!;
+    sb[o + BS3_WX] = sb[o + BS3_WX]! - tmp[0]!;
+    sb[o + BS3_WY] = sb[o + BS3_WY]! - tmp[1]!;
+    sb[o + BS3_WZ] = sb[o + BS3_WZ]! - tmp[2]!;
   }
   if (b > 0) {
-    const o = 12 * b,
-      m = sb[o + 9]!;
-    sb[o] = sb[o]! + m * px;
-    sb[o + 1] = sb[o + 1]! + m * py;
-    sb[o + 2] = sb[o + 2]! + m * pz;
+    const o = BS3_STRIDE * b,
+      m = sb[o + BS3_INV_MASS]!;
+    sb[o + BS3_VX] = sb[o + BS3_VX]! + m * px;
+    sb[o + BS3_VY] = sb[o + BS3_VY]! + m * py;
+    sb[o + BS3_VZ] = sb[o + BS3_VZ]! + m * pz;
     invI(T, b, rb[1]! * pz - rb[2]! * py, rb[2]! * px - rb[0]! * pz, rb[0]! * py - rb[1]! * px, tmp, 0);
-    sb[o + 3] = sb[o + 3]! + tmp[0]!;
-    sb[o + 4] = sb[o + 4]! + tmp[1]!;
-    sb[o + 5] = sb[o + 5]! + tmp[2]!;
+    sb[o + BS3_WX] = sb[o + BS3_WX]! + tmp[0]!;
+    sb[o + BS3_WY] = sb[o + BS3_WY]! + tmp[1]!;
+    sb[o + BS3_WZ] = sb[o + BS3_WZ]! + tmp[2]!;
   }
 }
 
@@ -126,27 +146,42 @@ export function applyLinear(sb: Float64Array, T: Float64Array, a: number, b: num
 export function applyAngular(sb: Float64Array, T: Float64Array, a: number, b: number, lx: number, ly: number, lz: number): void {
   if (a > 0) {
     invI(T, a, lx, ly, lz, tmp, 0);
-    const o = 12 * a;
-    sb[o + 3] = sb[o + 3]! - tmp[0]!;
-    sb[o + 4] = sb[o + 4]! - tmp[1]!;
-    sb[o + 5] = sb[o + 5]! - tmp[2]!;
+    const o = BS3_STRIDE * a;
+    sb[o + BS3_WX] = sb[o + BS3_WX]! - tmp[0]!;
+    sb[o + BS3_WY] = sb[o + BS3_WY]! - tmp[1]!;
+    sb[o + BS3_WZ] = sb[o + BS3_WZ]! - tmp[2]!;
   }
   if (b > 0) {
     invI(T, b, lx, ly, lz, tmp, 0);
-    const o = 12 * b;
-    sb[o + 3] = sb[o + 3]! + tmp[0]!;
-    sb[o + 4] = sb[o + 4]! + tmp[1]!;
-    sb[o + 5] = sb[o + 5]! + tmp[2]!;
+    const o = BS3_STRIDE * b;
+    sb[o + BS3_WX] = sb[o + BS3_WX]! + tmp[0]!;
+    sb[o + BS3_WY] = sb[o + BS3_WY]! + tmp[1]!;
+    sb[o + BS3_WZ] = sb[o + BS3_WZ]! + tmp[2]!;
   }
 }
 
 /** Relative velocity of the anchors, vB + wB x rB - vA - wA x rA, into out[0..2]. */
 export function anchorVelocity(sb: Float64Array, a: number, b: number, out: Float64Array): void {
-  const oa = 12 * a,
-    ob = 12 * b;
-  out[0] = sb[ob]! + sb[ob + 4]! * rb[2]! - sb[ob + 5]! * rb[1]! - sb[oa]! - (sb[oa + 4]! * ra[2]! - sb[oa + 5]! * ra[1]!);
-  out[1] = sb[ob + 1]! + sb[ob + 5]! * rb[0]! - sb[ob + 3]! * rb[2]! - sb[oa + 1]! - (sb[oa + 5]! * ra[0]! - sb[oa + 3]! * ra[2]!);
-  out[2] = sb[ob + 2]! + sb[ob + 3]! * rb[1]! - sb[ob + 4]! * rb[0]! - sb[oa + 2]! - (sb[oa + 3]! * ra[1]! - sb[oa + 4]! * ra[0]!);
+  const oa = BS3_STRIDE * a,
+    ob = BS3_STRIDE * b;
+  out[0] =
+    sb[ob + BS3_VX]! +
+    sb[ob + BS3_WY]! * rb[2]! -
+    sb[ob + BS3_WZ]! * rb[1]! -
+    sb[oa + BS3_VX]! -
+    (sb[oa + BS3_WY]! * ra[2]! - sb[oa + BS3_WZ]! * ra[1]!);
+  out[1] =
+    sb[ob + BS3_VY]! +
+    sb[ob + BS3_WZ]! * rb[0]! -
+    sb[ob + BS3_WX]! * rb[2]! -
+    sb[oa + BS3_VY]! -
+    (sb[oa + BS3_WZ]! * ra[0]! - sb[oa + BS3_WX]! * ra[2]!);
+  out[2] =
+    sb[ob + BS3_VZ]! +
+    sb[ob + BS3_WX]! * rb[1]! -
+    sb[ob + BS3_WY]! * rb[0]! -
+    sb[oa + BS3_VZ]! -
+    (sb[oa + BS3_WX]! * ra[1]! - sb[oa + BS3_WY]! * ra[0]!);
 }
 
 /** Solves the 3 x 3 system M x = r (M row-major) in place into x by Cramer's rule; a singular M gives 0. */
@@ -199,7 +234,16 @@ export function linearK(sb: Float64Array, T: Float64Array, a: number, b: number,
     cbz = rb[0]! * uy - rb[1]! * ux;
   invI(T, a, cax, cay, caz, tmp, 0);
   invI(T, b, cbx, cby, cbz, tmp, 3);
-  return sb[12 * a + 9]! + sb[12 * b + 9]! + cax * tmp[0]! + cay * tmp[1]! + caz * tmp[2]! + cbx * tmp[3]! + cby * tmp[4]! + cbz * tmp[5]!;
+  return (
+    sb[BS3_STRIDE * a + BS3_INV_MASS]! +
+    sb[BS3_STRIDE * b + BS3_INV_MASS]! +
+    cax * tmp[0]! +
+    cay * tmp[1]! +
+    caz * tmp[2]! +
+    cbx * tmp[3]! +
+    cby * tmp[4]! +
+    cbz * tmp[5]!
+  );
 }
 
 /**
@@ -219,7 +263,7 @@ export function referenceK(sb: Float64Array, T: Float64Array, a: number, b: numb
   const kb =
     (T[tb]! + T[tb + 1]! + T[tb + 2]!) * (rb[0]! ** 2 + rb[1]! ** 2 + rb[2]! ** 2) -
     (rb[0]! * tmp[3]! + rb[1]! * tmp[4]! + rb[2]! * tmp[5]!);
-  return sb[12 * a + 9]! + sb[12 * b + 9]! + (ka + kb) / 3;
+  return sb[BS3_STRIDE * a + BS3_INV_MASS]! + sb[BS3_STRIDE * b + BS3_INV_MASS]! + (ka + kb) / 3;
 }
 
 /**

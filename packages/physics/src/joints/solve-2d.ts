@@ -1,3 +1,14 @@
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+} from '../solver/body-state-layout.js';
 import { JointType } from '../world/joint-store-2d.js';
 import { ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -93,18 +104,18 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
     const type = tf & 255,
       flags = tf >> 8;
     if (type === POINT_LINK || type === PIN) continue;
-    const oA = ia * 8,
-      oB = ib * 8;
-    f[F_MA] = sb[oA + 5]!;
-    f[F_IA] = sb[oA + 6]!;
-    f[F_MB] = sb[oB + 5]!;
-    f[F_IB] = sb[oB + 6]!;
-    f[F_VAX] = sb[oA]!;
-    f[F_VAY] = sb[oA + 1]!;
-    f[F_WA] = sb[oA + 2]!;
-    f[F_VBX] = sb[oB]!;
-    f[F_VBY] = sb[oB + 1]!;
-    f[F_WB] = sb[oB + 2]!;
+    const oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
+    f[F_MA] = sb[oA + BS2_INV_MASS]!;
+    f[F_IA] = sb[oA + BS2_INV_INERTIA]!;
+    f[F_MB] = sb[oB + BS2_INV_MASS]!;
+    f[F_IB] = sb[oB + BS2_INV_INERTIA]!;
+    f[F_VAX] = sb[oA + BS2_VX]!;
+    f[F_VAY] = sb[oA + BS2_VY]!;
+    f[F_WA] = sb[oA + BS2_W]!;
+    f[F_VBX] = sb[oB + BS2_VX]!;
+    f[F_VBY] = sb[oB + BS2_VY]!;
+    f[F_WB] = sb[oB + BS2_W]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -118,8 +129,8 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
     f[F_RBX] = rBx;
     f[F_RBY] = rBy;
     // Current separation of the anchors, B minus A.
-    f[F_DX] = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx;
-    f[F_DY] = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+    f[F_DX] = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx;
+    f[F_DY] = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
     f[F_CA] = cA;
     f[F_SA] = sA;
     // Relative angle since the joint was made, minus the reference.
@@ -133,20 +144,20 @@ function solveJointRows(world: PhysicsWorld, hs: number, useBias: boolean): void
       done = solveAxisRow(rows, o, flags, useBias, f, type === JointType.Prismatic);
     else if (type === JointType.Mouse) done = solveMouseRow(rows, o, flags, useBias, f);
     if (done === ROW_SKIPPED) continue;
-    sb[oA] = f[F_VAX]!;
-    sb[oA + 1] = f[F_VAY]!;
-    sb[oA + 2] = f[F_WA]!;
-    sb[oB] = f[F_VBX]!;
-    sb[oB + 1] = f[F_VBY]!;
-    sb[oB + 2] = f[F_WB]!;
+    sb[oA + BS2_VX] = f[F_VAX]!;
+    sb[oA + BS2_VY] = f[F_VAY]!;
+    sb[oA + BS2_W] = f[F_WA]!;
+    sb[oB + BS2_VX] = f[F_VBX]!;
+    sb[oB + BS2_VY] = f[F_VBY]!;
+    sb[oB + BS2_W] = f[F_WB]!;
     // The joint pushes its bodies (the contact solver's `pushed` slot: they are not in free flight).
     if (done === ROW_PUSHED) {
-      sb[oA + 7] = 1;
-      sb[oB + 7] = 1;
+      sb[oA + BS2_PUSHED] = 1;
+      sb[oB + BS2_PUSHED] = 1;
     }
   }
   // The static world's row must stay at rest whatever a fixed body's joint wrote into it.
-  sb[0] = 0;
-  sb[1] = 0;
-  sb[2] = 0;
+  sb[BS2_VX] = 0;
+  sb[BS2_VY] = 0;
+  sb[BS2_W] = 0;
 }

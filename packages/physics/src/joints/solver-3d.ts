@@ -1,6 +1,7 @@
 import { BodyType } from '../collision/broadphase/grid.js';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { classifyBody3D } from '../collision/shapes-3d.js';
+import { BS3_PUSHED, BS3_STRIDE } from '../solver/body-state-layout.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
@@ -152,8 +153,8 @@ export function prepareJoints3D(world: PhysicsWorld, hs: number): void {
   makeSoft(jsoft, Math.min(JOINT_HERTZ, 0.25 / hs), JOINT_DAMPING, hs);
   const sb = world.collision.bodyState;
   for (let i = 0; i < s.list.length; i++) {
-    if (ka[i]! > 0) sb[12 * ka[i]! + 11] = 1;
-    if (kb[i]! > 0) sb[12 * kb[i]! + 11] = 1;
+    if (ka[i]! > 0) sb[BS3_STRIDE * ka[i]! + BS3_PUSHED] = 1;
+    if (kb[i]! > 0) sb[BS3_STRIDE * kb[i]! + BS3_PUSHED] = 1;
   }
 }
 

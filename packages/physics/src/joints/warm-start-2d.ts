@@ -1,3 +1,4 @@
+import { BS2_DX, BS2_DY, BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from '../solver/body-state-layout.js';
 import { JointType } from '../world/joint-store-2d.js';
 import { LINK_FLOATS, LINK_INTS, PIN_FLOATS, PIN_INTS, ROW_FLOATS, ROW_INTS } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -17,9 +18,9 @@ export function integrateJointRotations(world: PhysicsWorld, hs: number): void {
   const sb = cs.bodyState,
     rot = world.joints.rotation;
   for (let k = 1, n = cs.solverBodyCount; k < n; k++) {
-    const o = k * 8;
-    if (sb[o + 6]! === 0) continue;
-    const w = sb[o + 2]! * hs;
+    const o = k * BS2_STRIDE;
+    if (sb[o + BS2_INV_INERTIA]! === 0) continue;
+    const w = sb[o + BS2_W]! * hs;
     if (w === 0) continue;
     const r = k * 3;
     const c0 = rot[r]!,
@@ -54,19 +55,19 @@ export function warmStartJoints(world: PhysicsWorld): void {
     if (acc === 0) continue;
     const oA = lint[i]!,
       oB = lint[i + 1]!;
-    const dx = sb[oB + 3]! - sb[oA + 3]! + lf[f]!,
-      dy = sb[oB + 4]! - sb[oA + 4]! + lf[f + 1]!;
+    const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + lf[f]!,
+      dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + lf[f + 1]!;
     const L = Math.sqrt(dx * dx + dy * dy);
     if (L < 1e-12) continue;
     const s = acc / L,
       Px = s * dx,
       Py = s * dy,
-      mA = sb[oA + 5]!,
-      mB = sb[oB + 5]!;
-    sb[oA] = sb[oA]! - mA * Px;
-    sb[oA + 1] = sb[oA + 1]! - mA * Py;
-    sb[oB] = sb[oB]! + mB * Px;
-    sb[oB + 1] = sb[oB + 1]! + mB * Py;
+      mA = sb[oA + BS2_INV_MASS]!,
+      mB = sb[oB + BS2_INV_MASS]!;
+    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
+    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
+    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
+    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
   }
   const pf = js.pins,
     pint = js.pinInts;
@@ -80,8 +81,8 @@ export function warmStartJoints(world: PhysicsWorld): void {
     if (Math.abs(Px) + Math.abs(Py) === 0) continue;
     const ia = pint[i]!,
       ib = pint[i + 1]!,
-      oA = ia * 8,
-      oB = ib * 8;
+      oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -90,16 +91,16 @@ export function warmStartJoints(world: PhysicsWorld): void {
       rAy = sA * pf[f]! + cA * pf[f + 1]!;
     const rBx = cB * pf[f + 2]! - sB * pf[f + 3]!,
       rBy = sB * pf[f + 2]! + cB * pf[f + 3]!;
-    const mA = sb[oA + 5]!,
-      iA = sb[oA + 6]!,
-      mB = sb[oB + 5]!,
-      iB = sb[oB + 6]!;
-    sb[oA] = sb[oA]! - mA * Px;
-    sb[oA + 1] = sb[oA + 1]! - mA * Py;
-    sb[oA + 2] = sb[oA + 2]! - iA * (rAx * Py - rAy * Px);
-    sb[oB] = sb[oB]! + mB * Px;
-    sb[oB + 1] = sb[oB + 1]! + mB * Py;
-    sb[oB + 2] = sb[oB + 2]! + iB * (rBx * Py - rBy * Px);
+    const mA = sb[oA + BS2_INV_MASS]!,
+      iA = sb[oA + BS2_INV_INERTIA]!,
+      mB = sb[oB + BS2_INV_MASS]!,
+      iB = sb[oB + BS2_INV_INERTIA]!;
+    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
+    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
+    sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * (rAx * Py - rAy * Px);
+    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
+    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
+    sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * (rBx * Py - rBy * Px);
   }
   for (let r = 0, end = js.generalCount === 0 ? 0 : n; r < end; r++) {
     const o = r * ROW_FLOATS,
@@ -108,12 +109,12 @@ export function warmStartJoints(world: PhysicsWorld): void {
       ib = ri[q + IB]!,
       type = ri[q + TF]! & 255;
     if (type === POINT_LINK || type === PIN) continue;
-    const oA = ia * 8,
-      oB = ib * 8;
-    const mA = sb[oA + 5]!,
-      iA = sb[oA + 6]!,
-      mB = sb[oB + 5]!,
-      iB = sb[oB + 6]!;
+    const oA = ia * BS2_STRIDE,
+      oB = ib * BS2_STRIDE;
+    const mA = sb[oA + BS2_INV_MASS]!,
+      iA = sb[oA + BS2_INV_INERTIA]!,
+      mB = sb[oB + BS2_INV_MASS]!,
+      iB = sb[oB + BS2_INV_INERTIA]!;
     const cA = rot[ia * 3]!,
       sA = rot[ia * 3 + 1]!,
       cB = rot[ib * 3]!,
@@ -130,8 +131,8 @@ export function warmStartJoints(world: PhysicsWorld): void {
       case JointType.Distance: {
         const axial = rows[o + ISPR]! + rows[o + ILOW]! - rows[o + IUP]!;
         if (axial === 0) continue;
-        const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx,
-          dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+        const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx,
+          dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
         const L = Math.sqrt(dx * dx + dy * dy);
         if (L < 1e-12) continue;
         Px = (axial * dx) / L;
@@ -152,8 +153,8 @@ export function warmStartJoints(world: PhysicsWorld): void {
       }
       case JointType.Prismatic:
       case JointType.Wheel: {
-        const dx = sb[oB + 3]! - sb[oA + 3]! + rows[o + DCX]! + rBx - rAx,
-          dy = sb[oB + 4]! - sb[oA + 4]! + rows[o + DCY]! + rBy - rAy;
+        const dx = sb[oB + BS2_DX]! - sb[oA + BS2_DX]! + rows[o + DCX]! + rBx - rAx,
+          dy = sb[oB + BS2_DY]! - sb[oA + BS2_DY]! + rows[o + DCY]! + rBy - rAy;
         const axx = cA * rows[o + AXX]! - sA * rows[o + AXY]!,
           axy = sA * rows[o + AXX]! + cA * rows[o + AXY]!;
         const px = -axy,
@@ -175,11 +176,11 @@ export function warmStartJoints(world: PhysicsWorld): void {
         break;
       }
     }
-    sb[oA] = sb[oA]! - mA * Px;
-    sb[oA + 1] = sb[oA + 1]! - mA * Py;
-    sb[oA + 2] = sb[oA + 2]! - iA * LA;
-    sb[oB] = sb[oB]! + mB * Px;
-    sb[oB + 1] = sb[oB + 1]! + mB * Py;
-    sb[oB + 2] = sb[oB + 2]! + iB * LB;
+    sb[oA + BS2_VX] = sb[oA + BS2_VX]! - mA * Px;
+    sb[oA + BS2_VY] = sb[oA + BS2_VY]! - mA * Py;
+    sb[oA + BS2_W] = sb[oA + BS2_W]! - iA * LA;
+    sb[oB + BS2_VX] = sb[oB + BS2_VX]! + mB * Px;
+    sb[oB + BS2_VY] = sb[oB + BS2_VY]! + mB * Py;
+    sb[oB + BS2_W] = sb[oB + BS2_W]! + iB * LB;
   }
 }

@@ -4,12 +4,14 @@
  * approach speeds the restitution stage reads. 2D runs as range kernels (solver/prepare-contacts-kernel.ts,
  * solver/stages-threads.ts) on the world's threads or inline; 3D runs here.
  */
+
 import { type ContactBuffer, ContactKind, findWarmStart } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
 import { KERNEL, type KernelArray } from '../threads/kernels.js';
 import { runOnPool } from '../threads/parallel.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { BS3_INV_INERTIA, BS3_INV_MASS, BS3_STRIDE, BS3_VX, BS3_VY, BS3_VZ, BS3_WX, BS3_WY, BS3_WZ } from './body-state-layout.js';
 import { shareContactBuffer } from './coloring.js';
 import { prepareContacts2D } from './prepare-contacts-kernel.js';
 import { approach2DStage } from './stages-threads.js';
@@ -189,15 +191,15 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
       b = B[i]!,
       kind = K[i]!,
       f = F[i]!;
-    const oa = IA[i]! * 12,
-      ob = IB[i]! * 12;
+    const oa = IA[i]! * BS3_STRIDE,
+      ob = IB[i]! * BS3_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const imA = sb[oa + 9]!,
-      imB = sb[ob + 9]!;
-    const iiA = sb[oa + 10]!,
-      iiB = sb[ob + 10]!;
+    const imA = sb[oa + BS3_INV_MASS]!,
+      imB = sb[ob + BS3_INV_MASS]!;
+    const iiA = sb[oa + BS3_INV_INERTIA]!,
+      iiB = sb[ob + BS3_INV_INERTIA]!;
     const ra = RA[i]!,
       rb = RB[i]!;
     const k = imA + imB;
@@ -242,13 +244,13 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
     MU[i] = mu;
 
     // Tangential speed at the start of the step (gravity rewound): stick or slip.
-    const dvx = sb[ob]! - sb[oa]!,
-      dvy = sb[ob + 1]! - sb[oa + 1]!,
-      dvz = sb[ob + 2]! - sb[oa + 2]!;
+    const dvx = sb[ob + BS3_VX]! - sb[oa + BS3_VX]!,
+      dvy = sb[ob + BS3_VY]! - sb[oa + BS3_VY]!,
+      dvz = sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
     // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
-    const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
-      sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
-      sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
+    const sx = -rb * sb[ob + BS3_WX]! - ra * sb[oa + BS3_WX]!,
+      sy = -rb * sb[ob + BS3_WY]! - ra * sb[oa + BS3_WY]!,
+      sz = -rb * sb[ob + BS3_WZ]! - ra * sb[oa + BS3_WZ]!;
     const cx = dvx + sy * nz - sz * ny,
       cy = dvy + sz * nx - sx * nz,
       cz = dvz + sx * ny - sy * nx;
@@ -259,7 +261,8 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
       u2 = cx * t2x + cy * t2y + cz * t2z;
     const vt = Math.sqrt(u1 * u1 + u2 * u2);
     // Predicted approach for the impact stage's ordering (measureApproach recomputes it after).
-    RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    RV[i] =
+      (sb[ob + BS3_VX]! - sb[oa + BS3_VX]!) * nx + (sb[ob + BS3_VY]! - sb[oa + BS3_VY]!) * ny + (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
     TOT[i] = 0;
     IMP[i] = 0;
     FB[i] = vt < stick ? Math.max(mus, mu) : mu;
@@ -320,12 +323,13 @@ export function measureApproach(world: PhysicsWorld, buf: ContactBuffer): void {
     S0 = buf.separation,
     IMP = buf.impulse;
   for (let i = 0, n = buf.count; i < n; i++) {
-    const oa = IA[i]! * 12,
-      ob = IB[i]! * 12;
+    const oa = IA[i]! * BS3_STRIDE,
+      ob = IB[i]! * BS3_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    const rv =
+      (sb[ob + BS3_VX]! - sb[oa + BS3_VX]!) * nx + (sb[ob + BS3_VY]! - sb[oa + BS3_VY]!) * ny + (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
     RV[i] = rv;
     // A row the impact stage bounced and that now separates keeps the approach speed of its impact.
     if (IMP[i]! > 0 && rv >= 0) continue;

@@ -13,10 +13,12 @@
  * `endBallSubstep`; `ballRestitution`; `storeBallRows` (the impulses kept for the next step's warm start).
  * The rows' preparation is in solver/ball-prepare.ts, their sweeps in solver/ball-sweeps.ts.
  */
+
 import { type ContactBuffer, storeWarmStart } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { measureApproach, prepareContacts } from './ball-prepare.js';
 import { solve2D, solve3D, warmStart2D, warmStart3D } from './ball-sweeps.js';
+import { BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS3_INV_MASS, BS3_STRIDE, BS3_VZ } from './body-state-layout.js';
 import { solveColoredSubsteps, startStripPlan, useColoredSolve } from './coloring.js';
 import { ballContactHertz, ballContactPushSpeed, ballStickSpeed, contactLength } from './contact-scale.js';
 import { applyImpacts, releaseImpactedRows } from './impacts.js';
@@ -80,7 +82,7 @@ export function planBallRows(world: PhysicsWorld, buf: ContactBuffer, colored: b
     buf.count,
     cs.solverBodyCount,
     cs.bodyState,
-    is2D ? 8 : 12,
+    is2D ? BS2_STRIDE : BS3_STRIDE,
     sp,
     is2D ? 2 : 10,
   );
@@ -196,9 +198,9 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
   const iterations = cs.settings.restitutionIterations;
   const n = buf.count,
     sb = cs.bodyState;
-  const S = world.dimensions === 2 ? 8 : 12,
-    is2D = S === 8,
-    im = is2D ? 5 : 9;
+  const S = world.dimensions === 2 ? BS2_STRIDE : BS3_STRIDE,
+    is2D = S === BS2_STRIDE,
+    im = is2D ? BS2_INV_MASS : BS3_INV_MASS;
   const IA = buf.ia,
     IB = buf.ib,
     NX = buf.nx,
@@ -232,8 +234,8 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       RV[i] = -e * IV[i]!;
       const a = IA[i]! * S,
         b = IB[i]! * S;
-      let vn = (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
-      if (!is2D) vn += (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
+      let vn = (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
+      if (!is2D) vn += (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
       bouncing++;
@@ -249,8 +251,8 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       const nx = NX[i]!,
         ny = NY[i]!,
         nz = NZ[i]!;
-      let vn = (sb[b]! - sb[a]!) * nx + (sb[b + 1]! - sb[a + 1]!) * ny;
-      if (!is2D) vn += (sb[b + 2]! - sb[a + 2]!) * nz;
+      let vn = (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * ny;
+      if (!is2D) vn += (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz;
       const old = MAXN[i]!;
       let acc = old - NM[i]! * (vn - target);
       if (acc < 0) acc = 0;
@@ -261,13 +263,13 @@ function applyRestitution(world: PhysicsWorld, buf: ContactBuffer): void {
       IMP[i] = IMP[i]! + dl;
       const ka = sb[a + im]! * dl,
         kb = sb[b + im]! * dl;
-      sb[a] = sb[a]! - ka * nx;
-      sb[a + 1] = sb[a + 1]! - ka * ny;
-      sb[b] = sb[b]! + kb * nx;
-      sb[b + 1] = sb[b + 1]! + kb * ny;
+      sb[a + BS2_VX] = sb[a + BS2_VX]! - ka * nx;
+      sb[a + BS2_VY] = sb[a + BS2_VY]! - ka * ny;
+      sb[b + BS2_VX] = sb[b + BS2_VX]! + kb * nx;
+      sb[b + BS2_VY] = sb[b + BS2_VY]! + kb * ny;
       if (!is2D) {
-        sb[a + 2] = sb[a + 2]! - ka * nz;
-        sb[b + 2] = sb[b + 2]! + kb * nz;
+        sb[a + BS3_VZ] = sb[a + BS3_VZ]! - ka * nz;
+        sb[b + BS3_VZ] = sb[b + BS3_VZ]! + kb * nz;
       }
     }
   }

@@ -3,8 +3,33 @@
  * solve with soft bias, then relaxed, for 2D discs (rows of 8 in the packed solver state) and 3D spheres
  * (rows of 12).
  */
+
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { CollisionState } from '../collision/state.js';
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_PUSHED,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+} from './body-state-layout.js';
 import { heavierAbove, holdsLower, SUPPORT_COS } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
 export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
@@ -22,22 +47,22 @@ export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
     const ln = LN[i]!,
       lt = LT[i]!;
     if (ln === 0 && lt === 0) continue;
-    const a = IA[i]! * 8,
-      b = IB[i]! * 8;
-    sb[a + 7] = 1;
-    sb[b + 7] = 1;
+    const a = IA[i]! * BS2_STRIDE,
+      b = IB[i]! * BS2_STRIDE;
+    sb[a + BS2_PUSHED] = 1;
+    sb[b + BS2_PUSHED] = 1;
     const nx = NX[i]!,
       ny = NY[i]!;
     const Px = ln * nx - lt * ny,
       Py = ln * ny + lt * nx;
-    const imA = sb[a + 5]!,
-      imB = sb[b + 5]!;
-    sb[a] = sb[a]! - imA * Px;
-    sb[a + 1] = sb[a + 1]! - imA * Py;
-    sb[b] = sb[b]! + imB * Px;
-    sb[b + 1] = sb[b + 1]! + imB * Py;
-    sb[a + 2] = sb[a + 2]! - sb[a + 6]! * RA[i]! * lt;
-    sb[b + 2] = sb[b + 2]! - sb[b + 6]! * RB[i]! * lt;
+    const imA = sb[a + BS2_INV_MASS]!,
+      imB = sb[b + BS2_INV_MASS]!;
+    sb[a + BS2_VX] = sb[a + BS2_VX]! - imA * Px;
+    sb[a + BS2_VY] = sb[a + BS2_VY]! - imA * Py;
+    sb[b + BS2_VX] = sb[b + BS2_VX]! + imB * Px;
+    sb[b + BS2_VY] = sb[b + BS2_VY]! + imB * Py;
+    sb[a + BS2_W] = sb[a + BS2_W]! - sb[a + BS2_INV_INERTIA]! * RA[i]! * lt;
+    sb[b + BS2_W] = sb[b + BS2_W]! - sb[b + BS2_INV_INERTIA]! * RB[i]! * lt;
   }
 }
 
@@ -63,10 +88,10 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
       l1 = L1[i]!,
       l2 = L2[i]!;
     if (ln === 0 && l1 === 0 && l2 === 0) continue;
-    const a = IA[i]! * 12,
-      b = IB[i]! * 12;
-    sb[a + 11] = 1;
-    sb[b + 11] = 1;
+    const a = IA[i]! * BS3_STRIDE,
+      b = IB[i]! * BS3_STRIDE;
+    sb[a + BS3_PUSHED] = 1;
+    sb[b + BS3_PUSHED] = 1;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!,
@@ -79,25 +104,25 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
     const Px = ln * nx + l1 * t1x + l2 * t2x,
       Py = ln * ny + l1 * t1y + l2 * t2y,
       Pz = ln * nz + l1 * t1z + l2 * t2z;
-    const imA = sb[a + 9]!,
-      imB = sb[b + 9]!;
-    sb[a] = sb[a]! - imA * Px;
-    sb[a + 1] = sb[a + 1]! - imA * Py;
-    sb[a + 2] = sb[a + 2]! - imA * Pz;
-    sb[b] = sb[b]! + imB * Px;
-    sb[b + 1] = sb[b + 1]! + imB * Py;
-    sb[b + 2] = sb[b + 2]! + imB * Pz;
+    const imA = sb[a + BS3_INV_MASS]!,
+      imB = sb[b + BS3_INV_MASS]!;
+    sb[a + BS3_VX] = sb[a + BS3_VX]! - imA * Px;
+    sb[a + BS3_VY] = sb[a + BS3_VY]! - imA * Py;
+    sb[a + BS3_VZ] = sb[a + BS3_VZ]! - imA * Pz;
+    sb[b + BS3_VX] = sb[b + BS3_VX]! + imB * Px;
+    sb[b + BS3_VY] = sb[b + BS3_VY]! + imB * Py;
+    sb[b + BS3_VZ] = sb[b + BS3_VZ]! + imB * Pz;
     const cx = ny * Pz - nz * Py,
       cy = nz * Px - nx * Pz,
       cz = nx * Py - ny * Px;
-    const ka = sb[a + 10]! * RA[i]!,
-      kb = sb[b + 10]! * RB[i]!;
-    sb[a + 3] = sb[a + 3]! - ka * cx;
-    sb[a + 4] = sb[a + 4]! - ka * cy;
-    sb[a + 5] = sb[a + 5]! - ka * cz;
-    sb[b + 3] = sb[b + 3]! - kb * cx;
-    sb[b + 4] = sb[b + 4]! - kb * cy;
-    sb[b + 5] = sb[b + 5]! - kb * cz;
+    const ka = sb[a + BS3_INV_INERTIA]! * RA[i]!,
+      kb = sb[b + BS3_INV_INERTIA]! * RB[i]!;
+    sb[a + BS3_WX] = sb[a + BS3_WX]! - ka * cx;
+    sb[a + BS3_WY] = sb[a + BS3_WY]! - ka * cy;
+    sb[a + BS3_WZ] = sb[a + BS3_WZ]! - ka * cz;
+    sb[b + BS3_WX] = sb[b + BS3_WX]! - kb * cx;
+    sb[b + BS3_WY] = sb[b + BS3_WY]! - kb * cy;
+    sb[b + BS3_WZ] = sb[b + BS3_WZ]! - kb * cz;
   }
 }
 
@@ -146,16 +171,16 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
   for (let k = 0; k < end; k++) {
     const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
     if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
-    const a = IA[i]! * 8,
-      b = IB[i]! * 8;
+    const a = IA[i]! * BS2_STRIDE,
+      b = IB[i]! * BS2_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!;
-    const imA = sb[a + 5]!,
-      imB = sb[b + 5]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      vbx = sb[b]!,
-      vby = sb[b + 1]!;
+    const imA = sb[a + BS2_INV_MASS]!,
+      imB = sb[b + BS2_INV_MASS]!;
+    let vax = sb[a + BS2_VX]!,
+      vay = sb[a + BS2_VY]!,
+      vbx = sb[b + BS2_VX]!,
+      vby = sb[b + BS2_VY]!;
     // The normal impulse's inverse masses and effective mass: a support row of the relax sweep, one
     // without friction or one whose upper ball is the heavier, may hold its lower ball (solver/support.ts).
     let jmA = imA,
@@ -175,7 +200,7 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     }
 
     // Non-penetration, soft when overlapping and useBias, speculative when apart.
-    const s = S0[i]! + (sb[b + 3]! - sb[a + 3]!) * nx + (sb[b + 4]! - sb[a + 4]!) * ny;
+    const s = S0[i]! + (sb[b + BS2_DX]! - sb[a + BS2_DX]!) * nx + (sb[b + BS2_DY]! - sb[a + BS2_DY]!) * ny;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
@@ -213,8 +238,8 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     // Coulomb friction along t = (-ny, nx) at the contact point.
     const ra = RA[i]!,
       rb = RB[i]!;
-    let wa = sb[a + 2]!,
-      wb = sb[b + 2]!;
+    let wa = sb[a + BS2_W]!,
+      wb = sb[b + BS2_W]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
     lambda = -TM[i]! * vt;
     const maxF = FB[i]! * newN;
@@ -229,18 +254,18 @@ export function solve2D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     vay -= imA * Py;
     vbx += imB * Px;
     vby += imB * Py;
-    wa -= sb[a + 6]! * ra * lambda;
-    wb -= sb[b + 6]! * rb * lambda;
+    wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
+    wb -= sb[b + BS2_INV_INERTIA]! * rb * lambda;
 
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = wa;
-    sb[b] = vbx;
-    sb[b + 1] = vby;
-    sb[b + 2] = wb;
+    sb[a + BS2_VX] = vax;
+    sb[a + BS2_VY] = vay;
+    sb[a + BS2_W] = wa;
+    sb[b + BS2_VX] = vbx;
+    sb[b + BS2_VY] = vby;
+    sb[b + BS2_W] = wb;
     if (newN !== 0 || newT !== 0) {
-      sb[a + 7] = 1;
-      sb[b + 7] = 1;
+      sb[a + BS2_PUSHED] = 1;
+      sb[b + BS2_PUSHED] = 1;
     }
   }
 }
@@ -284,19 +309,19 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
   for (let k = 0; k < end; k++) {
     const i = k < n ? k : k < 2 * n ? k - n : k - 2 * n;
     if (!useBias && (k < n ? first[i] === 0 : k < 2 * n === (IA[i] === 0))) continue;
-    const a = IA[i]! * 12,
-      b = IB[i]! * 12;
+    const a = IA[i]! * BS3_STRIDE,
+      b = IB[i]! * BS3_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const imA = sb[a + 9]!,
-      imB = sb[b + 9]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      vaz = sb[a + 2]!,
-      vbx = sb[b]!,
-      vby = sb[b + 1]!,
-      vbz = sb[b + 2]!;
+    const imA = sb[a + BS3_INV_MASS]!,
+      imB = sb[b + BS3_INV_MASS]!;
+    let vax = sb[a + BS3_VX]!,
+      vay = sb[a + BS3_VY]!,
+      vaz = sb[a + BS3_VZ]!,
+      vbx = sb[b + BS3_VX]!,
+      vby = sb[b + BS3_VY]!,
+      vbz = sb[b + BS3_VZ]!;
     // A support row of the relax sweep may hold its lower ball (solver/support.ts), as in solve2D.
     let jmA = imA,
       jmB = imB,
@@ -314,7 +339,11 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       }
     }
 
-    const s = S0[i]! + (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
+    const s =
+      S0[i]! +
+      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx +
+      (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny +
+      (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
@@ -344,12 +373,12 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
     // Friction in the tangent plane, clamped to the Coulomb cone.
     const ra = RA[i]!,
       rb = RB[i]!;
-    let wax = sb[a + 3]!,
-      way = sb[a + 4]!,
-      waz = sb[a + 5]!,
-      wbx = sb[b + 3]!,
-      wby = sb[b + 4]!,
-      wbz = sb[b + 5]!;
+    let wax = sb[a + BS3_WX]!,
+      way = sb[a + BS3_WY]!,
+      waz = sb[a + BS3_WZ]!,
+      wbx = sb[b + BS3_WX]!,
+      wby = sb[b + BS3_WY]!,
+      wbz = sb[b + BS3_WZ]!;
     let ux = vbx - vax,
       uy = vby - vay,
       uz = vbz - vaz;
@@ -394,8 +423,8 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       const cx = ny * Pz - nz * Py,
         cy = nz * Px - nx * Pz,
         cz = nx * Py - ny * Px;
-      const ka = sb[a + 10]! * ra,
-        kb = sb[b + 10]! * rb;
+      const ka = sb[a + BS3_INV_INERTIA]! * ra,
+        kb = sb[b + BS3_INV_INERTIA]! * rb;
       wax -= ka * cx;
       way -= ka * cy;
       waz -= ka * cz;
@@ -403,21 +432,21 @@ export function solve3D(cs: CollisionState, buf: ContactBuffer, useBias: boolean
       wby -= kb * cy;
       wbz -= kb * cz;
     }
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = vaz;
-    sb[a + 3] = wax;
-    sb[a + 4] = way;
-    sb[a + 5] = waz;
-    sb[b] = vbx;
-    sb[b + 1] = vby;
-    sb[b + 2] = vbz;
-    sb[b + 3] = wbx;
-    sb[b + 4] = wby;
-    sb[b + 5] = wbz;
+    sb[a + BS3_VX] = vax;
+    sb[a + BS3_VY] = vay;
+    sb[a + BS3_VZ] = vaz;
+    sb[a + BS3_WX] = wax;
+    sb[a + BS3_WY] = way;
+    sb[a + BS3_WZ] = waz;
+    sb[b + BS3_VX] = vbx;
+    sb[b + BS3_VY] = vby;
+    sb[b + BS3_VZ] = vbz;
+    sb[b + BS3_WX] = wbx;
+    sb[b + BS3_WY] = wby;
+    sb[b + BS3_WZ] = wbz;
     if (newN !== 0 || n1 !== 0 || n2 !== 0) {
-      sb[a + 11] = 1;
-      sb[b + 11] = 1;
+      sb[a + BS3_PUSHED] = 1;
+      sb[b + BS3_PUSHED] = 1;
     }
   }
 }

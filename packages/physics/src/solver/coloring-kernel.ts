@@ -28,7 +28,7 @@ import type { approach2D } from './stages-kernel.js';
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
  * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
- * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of 8), 2 solver extra
+ * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of 8, BS2_* in body-state-layout.ts written out), 2 solver extra
  * (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours C, 5
  * solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are

@@ -45,6 +45,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE } from './body-state-layout.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
 import { impactChangedRows } from './impact-state.js';
@@ -289,8 +290,8 @@ function colorRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, part
       const a = IA[i]!,
         b = IB[i]!;
       // Only bodies an impulse can move take a colour's slot (the static world and kinematic bodies are read only).
-      const ma = a !== 0 && (sb[a * 8 + 5]! > 0 || sb[a * 8 + 6]! > 0);
-      const mb = sb[b * 8 + 5]! > 0 || sb[b * 8 + 6]! > 0;
+      const ma = a !== 0 && (sb[a * BS2_STRIDE + BS2_INV_MASS]! > 0 || sb[a * BS2_STRIDE + BS2_INV_INERTIA]! > 0);
+      const mb = sb[b * BS2_STRIDE + BS2_INV_MASS]! > 0 || sb[b * BS2_STRIDE + BS2_INV_INERTIA]! > 0;
       const used = (ma ? mask[a]! : 0) | (mb ? mask[b]! : 0);
       const free = ~used;
       let c = MAX_COLORS;
@@ -505,7 +506,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
     for (let j = plan[PLAN_HEAD + c]!; j < plan[PLAN_HEAD + c + 1]!; j++) {
       for (let k = bounds[j]!; k < bounds[j + 1]!; k++) {
         for (const off of [pair[2 * k]!, pair[2 * k + 1]!]) {
-          if (!(sb[off + 5]! > 0 || sb[off + 6]! > 0)) continue;
+          if (!(sb[off + BS2_INV_MASS]! > 0 || sb[off + BS2_INV_INERTIA]! > 0)) continue;
           const key = c * 1e9 + off,
             was = seen.get(key);
           if (was !== undefined && was !== j) conflicts++;

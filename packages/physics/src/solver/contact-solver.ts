@@ -9,8 +9,40 @@ import { rotateInPlace } from '../math/quaternion.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BI_CORR_X,
+  BI_CORR_Y,
+  BI_CORR_Z,
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_PUSHED,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+  BX_BASE_X,
+  BX_BASE_Y,
+  BX_BASE_Z,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+  IMPACT_STRIDE,
+} from './body-state-layout.js';
 import { withScaledSubsteps } from './contact-scale.js';
-import { IMPACT_STRIDE } from './impact-state.js';
 import { finishManifolds, gatherManifoldBodies, prepareManifolds } from './manifold-prepare-2d.js';
 import {
   accumulateManifoldImpulses,
@@ -173,7 +205,7 @@ function clearBodyImpacts(world: PhysicsWorld): void {
 
 /** Row stride of the packed solver state: 8 in 2D, 12 in 3D (see CollisionState.bodyState). */
 function stride(world: PhysicsWorld): number {
-  return world.dimensions === 2 ? 8 : 12;
+  return world.dimensions === 2 ? BS2_STRIDE : BS3_STRIDE;
 }
 
 /**
@@ -237,9 +269,9 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   const S = stride(world);
   // A threaded world keeps the solver state on shared memory (the coloured solve, solver/coloring.ts).
   const shared = world.threadPool !== null && world.dimensions === 2;
-  if (cs.bodyState.length < count * 12 || (shared && !isShared(cs.bodyState))) {
-    const sizeS = Math.max(count * 12, cs.bodyState.length * 2),
-      sizeE = Math.max(count * 6, cs.bodyExtra.length * 2);
+  if (cs.bodyState.length < count * BS3_STRIDE || (shared && !isShared(cs.bodyState))) {
+    const sizeS = Math.max(count * BS3_STRIDE, cs.bodyState.length * 2),
+      sizeE = Math.max(count * BX_STRIDE, cs.bodyExtra.length * 2);
     cs.bodyState = shared ? sharedFloat64(sizeS) : new Float64Array(sizeS);
     cs.bodyExtra = shared ? sharedFloat64(sizeE) : new Float64Array(sizeE);
   }
@@ -269,14 +301,14 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   // Joint rows push their bodies without marking them: with joints, no body counts as free flying.
   const pushed = jointsToSolve(world) ? 1 : 0;
   // 2D: the fill is a range kernel, run on the threads or inline (solver/stages-threads.ts).
-  if (S === 8) {
+  if (S === BS2_STRIDE) {
     gatherFill2DStage(world, count, pushed);
     return;
   }
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
-    const o = k * 12,
-      q = k * 6;
+    const o = k * BS3_STRIDE,
+      q = k * BX_STRIDE;
     const ii = invInertia[e]!;
     const dynamic = type[e] === BodyType.Dynamic;
     // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is not
@@ -289,25 +321,25 @@ function gatherBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    ex[q] = px[e]! - vx[e]! * h + gx * gb;
-    ex[q + 1] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + 2] = pz[e]! - vz[e]! * h + gz * gb;
+    ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
+    ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
+    ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    ex[q + 3] = ii > 0 ? -wx[e]! * h : 0;
-    ex[q + 4] = ii > 0 ? -wy[e]! * h : 0;
-    ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
-    sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
-    sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + 2] = dynamic ? vz[e]! - gz : vz[e]!;
-    sb[o + 3] = ii > 0 || spins ? wx[e]! : 0;
-    sb[o + 4] = ii > 0 || spins ? wy[e]! : 0;
-    sb[o + 5] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + 6] = 0;
-    sb[o + 7] = 0;
-    sb[o + 8] = 0;
-    sb[o + 9] = invMass[e]!;
-    sb[o + 10] = ii;
-    sb[o + 11] = held;
+    ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
+    ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
+    ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
+    sb[o + BS3_VX] = dynamic ? vx[e]! - gx : vx[e]!;
+    sb[o + BS3_VY] = dynamic ? vy[e]! - gy : vy[e]!;
+    sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
+    sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
+    sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
+    sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
+    sb[o + BS3_DX] = 0;
+    sb[o + BS3_DY] = 0;
+    sb[o + BS3_DZ] = 0;
+    sb[o + BS3_INV_MASS] = invMass[e]!;
+    sb[o + BS3_INV_INERTIA] = ii;
+    sb[o + BS3_PUSHED] = held;
   }
 }
 
@@ -326,9 +358,10 @@ function integrateVelocities(world: PhysicsWorld, hs: number): void {
   for (let k = 1; k < count; k++) {
     if (type[list[k]!] !== BodyType.Dynamic) continue;
     const o = k * S;
-    sb[o] = sb[o]! + gx;
-    sb[o + 1] = sb[o + 1]! + gy;
-    if (S === 12) sb[o + 2] = sb[o + 2]! + gz;
+    // vx and vy sit at the same offsets in both dimensions.
+    sb[o + BS2_VX] = sb[o + BS2_VX]! + gx;
+    sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
+    if (S === BS3_STRIDE) sb[o + BS3_VZ] = sb[o + BS3_VZ]! + gz;
   }
 }
 
@@ -338,25 +371,25 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
   const count = cs.solverBodyCount,
     sb = cs.bodyState,
     ex = cs.bodyExtra;
-  if (stride(world) === 8) {
+  if (stride(world) === BS2_STRIDE) {
     for (let k = 1; k < count; k++) {
-      const o = k * 8;
-      sb[o + 3] = sb[o + 3]! + sb[o]! * hs;
-      sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
-      if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+      const o = k * BS2_STRIDE;
+      sb[o + BS2_DX] = sb[o + BS2_DX]! + sb[o + BS2_VX]! * hs;
+      sb[o + BS2_DY] = sb[o + BS2_DY]! + sb[o + BS2_VY]! * hs;
+      if (sb[o + BS2_INV_INERTIA]! > 0) ex[k * BX_STRIDE + BX_ROT_Z] = ex[k * BX_STRIDE + BX_ROT_Z]! + sb[o + BS2_W]! * hs;
     }
     return;
   }
   for (let k = 1; k < count; k++) {
-    const o = k * 12;
-    sb[o + 6] = sb[o + 6]! + sb[o]! * hs;
-    sb[o + 7] = sb[o + 7]! + sb[o + 1]! * hs;
-    sb[o + 8] = sb[o + 8]! + sb[o + 2]! * hs;
-    if (sb[o + 10]! > 0) {
-      const q = k * 6;
-      ex[q + 3] = ex[q + 3]! + sb[o + 3]! * hs;
-      ex[q + 4] = ex[q + 4]! + sb[o + 4]! * hs;
-      ex[q + 5] = ex[q + 5]! + sb[o + 5]! * hs;
+    const o = k * BS3_STRIDE;
+    sb[o + BS3_DX] = sb[o + BS3_DX]! + sb[o + BS3_VX]! * hs;
+    sb[o + BS3_DY] = sb[o + BS3_DY]! + sb[o + BS3_VY]! * hs;
+    sb[o + BS3_DZ] = sb[o + BS3_DZ]! + sb[o + BS3_VZ]! * hs;
+    if (sb[o + BS3_INV_INERTIA]! > 0) {
+      const q = k * BX_STRIDE;
+      ex[q + BX_ROT_X] = ex[q + BX_ROT_X]! + sb[o + BS3_WX]! * hs;
+      ex[q + BX_ROT_Y] = ex[q + BX_ROT_Y]! + sb[o + BS3_WY]! * hs;
+      ex[q + BX_ROT_Z] = ex[q + BX_ROT_Z]! + sb[o + BS3_WZ]! * hs;
     }
   }
 }
@@ -399,24 +432,24 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
   for (let k = 1; k < count; k++) {
     const e = list[k]!;
     if (type[e] !== BodyType.Dynamic) continue;
-    const o = k * 12,
-      r = k * 6;
-    const free = sb[o + 11] === 0 ? 1 : 0;
-    vx[e] = sb[o]!;
-    vy[e] = sb[o + 1]!;
-    vz[e] = sb[o + 2]!;
-    const x = ex[r]! + sb[o + 6]! + imp[k * IMPACT_STRIDE]! + free * fx,
-      y = ex[r + 1]! + sb[o + 7]! + imp[k * IMPACT_STRIDE + 1]! + free * fy;
-    const z = ex[r + 2]! + sb[o + 8]! + imp[k * IMPACT_STRIDE + 2]! + free * fz;
+    const o = k * BS3_STRIDE,
+      r = k * BX_STRIDE;
+    const free = sb[o + BS3_PUSHED] === 0 ? 1 : 0;
+    vx[e] = sb[o + BS3_VX]!;
+    vy[e] = sb[o + BS3_VY]!;
+    vz[e] = sb[o + BS3_VZ]!;
+    const x = ex[r + BX_BASE_X]! + sb[o + BS3_DX]! + imp[k * IMPACT_STRIDE + BI_CORR_X]! + free * fx,
+      y = ex[r + BX_BASE_Y]! + sb[o + BS3_DY]! + imp[k * IMPACT_STRIDE + BI_CORR_Y]! + free * fy;
+    const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * IMPACT_STRIDE + BI_CORR_Z]! + free * fz;
     px[e] = x;
     py[e] = y;
     pz[e] = z;
-    check += x + y + z + sb[o]! + sb[o + 1]! + sb[o + 2]!;
-    if (sb[o + 10]! > 0) {
-      wx[e] = sb[o + 3]!;
-      wy[e] = sb[o + 4]!;
-      wz[e] = sb[o + 5]!;
-      rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + 3]!, ex[r + 4]!, ex[r + 5]!);
+    check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
+    if (sb[o + BS3_INV_INERTIA]! > 0) {
+      wx[e] = sb[o + BS3_WX]!;
+      wy[e] = sb[o + BS3_WY]!;
+      wz[e] = sb[o + BS3_WZ]!;
+      rotateInPlace(q.x, q.y, q.z, q.w, e, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
     }
   }
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
@@ -429,9 +462,13 @@ function finishBodies(world: PhysicsWorld, buf: ContactBuffer): void {
     NZ = buf.nz;
   // The start separations already hold the impact corrections (solver/impacts.ts).
   for (let i = 0, n = buf.count; i < n; i++) {
-    const a = IA[i]! * 12 + 6,
-      b = IB[i]! * 12 + 6;
-    const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]! + (sb[b + 2]! - sb[a + 2]!) * NZ[i]!;
+    const a = IA[i]! * BS3_STRIDE,
+      b = IB[i]! * BS3_STRIDE;
+    const s =
+      S0[i]! +
+      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * NX[i]! +
+      (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * NY[i]! +
+      (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   cs.stats.maxOverlap = -deepest;

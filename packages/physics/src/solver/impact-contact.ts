@@ -1,7 +1,32 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { IMPACT_STRIDE, impactScalars, markChanged, sweepIO } from './impact-state.js';
+import {
+  BI_CORR_X,
+  BI_CORR_Y,
+  BI_CORR_Z,
+  BI_TIME,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+  IMPACT_STRIDE,
+} from './body-state-layout.js';
+import { impactScalars, markChanged, sweepIO } from './impact-state.js';
 
 /** One impact of the impact stage (solver/impacts.ts): a contact's state at its time of impact (swept), and the impulse that stops or bounces it. */
 
@@ -16,9 +41,9 @@ export function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: n
   if (floor === 0) return true;
   const oa = buf.ia[i]! * S,
     ob = buf.ib[i]! * S;
-  const wx = sb[ob]! - sb[oa]!,
-    wy = sb[ob + 1]! - sb[oa + 1]!,
-    wz = S === 8 ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
+    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
+    wz = S === BS2_STRIDE ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
   const lim = floor - gh;
   return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
 }
@@ -46,7 +71,7 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
   const a = buf.a[i]!,
     b = buf.b[i]!,
     kind = buf.kind[i]!;
-  const is2D = S === 8;
+  const is2D = S === BS2_STRIDE;
   const g = world.gravity;
   const dynA = a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0,
     dynB = type[b] === BodyType.Dynamic ? 1 : 0;
@@ -54,10 +79,10 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
   const ax = gr * g[0]!,
     ay = gr * g[1]!,
     az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob]! - sb[oa]!,
-    wy = sb[ob + 1]! - sb[oa + 1]!,
-    wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
-  const t0 = Math.max(imp[qa + 3]!, imp[qb + 3]!);
+  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
+    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
+    wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
+  const t0 = Math.max(imp[qa + BI_TIME]!, imp[qb + BI_TIME]!);
   if (t0 > h) return false;
   if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
     const P = c.PreviousPosition,
@@ -66,9 +91,9 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
     const pa = kind === ContactKind.Ball ? P : c.Position;
     const R = radius[f]! + radius[b]!;
     // Relative position at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2.
-    let rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + wx * t0 + 0.5 * ax * t0 * t0;
-    let ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + wy * t0 + 0.5 * ay * t0 * t0;
-    let rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + wz * t0 + 0.5 * az * t0 * t0;
+    let rx = P.x[b]! + imp[qb + BI_CORR_X]! - pa.x[f]! - imp[qa + BI_CORR_X]! + wx * t0 + 0.5 * ax * t0 * t0;
+    let ry = P.y[b]! + imp[qb + BI_CORR_Y]! - pa.y[f]! - imp[qa + BI_CORR_Y]! + wy * t0 + 0.5 * ay * t0 * t0;
+    let rz = is2D ? 0 : P.z[b]! + imp[qb + BI_CORR_Z]! - pa.z[f]! - imp[qa + BI_CORR_Z]! + wz * t0 + 0.5 * az * t0 * t0;
     let ux = wx + ax * t0,
       uy = wy + ay * t0,
       uz = wz + az * t0;
@@ -131,7 +156,11 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
     nz = buf.nz[i]!;
   const an = ax * nx + ay * ny + az * nz;
   const vn0 = wx * nx + wy * ny + wz * nz;
-  const s0 = buf.separation[i]! + (imp[qb]! - imp[qa]!) * nx + (imp[qb + 1]! - imp[qa + 1]!) * ny + (imp[qb + 2]! - imp[qa + 2]!) * nz;
+  const s0 =
+    buf.separation[i]! +
+    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
+    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
+    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz;
   const s = s0 + vn0 * t0 + 0.5 * an * t0 * t0;
   const v = vn0 + an * t0;
   let t = 0;
@@ -207,9 +236,9 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     ib = buf.ib[i]!;
   const oa = ia * S,
     ob = ib * S;
-  const is2D = S === 8;
-  const im = is2D ? 5 : 9,
-    iI = is2D ? 6 : 10;
+  const is2D = S === BS2_STRIDE;
+  const im = is2D ? BS2_INV_MASS : BS3_INV_MASS,
+    iI = is2D ? BS2_INV_INERTIA : BS3_INV_INERTIA;
   const imA = sb[oa + im]!,
     imB = sb[ob + im]!,
     iiA = sb[oa + iI]!,
@@ -235,7 +264,11 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     const tm = buf.tangentMass[i]!;
     const maxF = mu * J;
     if (is2D) {
-      const vt = (sb[ob]! - sb[oa]!) * -ny + (sb[ob + 1]! - sb[oa + 1]!) * nx - sb[ob + 2]! * rb - sb[oa + 2]! * ra;
+      const vt =
+        (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * -ny +
+        (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * nx -
+        sb[ob + BS2_W]! * rb -
+        sb[oa + BS2_W]! * ra;
       let lt = -tm * vt;
       lt = lt < -maxF ? -maxF : lt > maxF ? maxF : lt;
       Px += -lt * ny;
@@ -258,12 +291,12 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
-      const sx = -rb * sb[ob + 3]! - ra * sb[oa + 3]!,
-        sy = -rb * sb[ob + 4]! - ra * sb[oa + 4]!,
-        sz = -rb * sb[ob + 5]! - ra * sb[oa + 5]!;
-      const ux = sb[ob]! - sb[oa]! + sy * nz - sz * ny,
-        uy = sb[ob + 1]! - sb[oa + 1]! + sz * nx - sx * nz,
-        uz = sb[ob + 2]! - sb[oa + 2]! + sx * ny - sy * nx;
+      const sx = -rb * sb[ob + BS3_WX]! - ra * sb[oa + BS3_WX]!,
+        sy = -rb * sb[ob + BS3_WY]! - ra * sb[oa + BS3_WY]!,
+        sz = -rb * sb[ob + BS3_WZ]! - ra * sb[oa + BS3_WZ]!;
+      const ux = sb[ob + BS3_VX]! - sb[oa + BS3_VX]! + sy * nz - sz * ny,
+        uy = sb[ob + BS3_VY]! - sb[oa + BS3_VY]! + sz * nx - sx * nz,
+        uz = sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]! + sx * ny - sy * nx;
       let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z),
         l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
       const mag2 = l1 * l1 + l2 * l2;
@@ -291,50 +324,50 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
   }
   const qa = ia * IMPACT_STRIDE,
     qb = ib * IMPACT_STRIDE;
-  const xa = ia * 6,
-    xb = ib * 6;
+  const xa = ia * BX_STRIDE,
+    xb = ib * BX_STRIDE;
   // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
-  sb[oa] = sb[oa]! - imA * Px;
-  sb[oa + 1] = sb[oa + 1]! - imA * Py;
-  sb[ob] = sb[ob]! + imB * Px;
-  sb[ob + 1] = sb[ob + 1]! + imB * Py;
-  imp[qa] = imp[qa]! + imA * Px * t;
-  imp[qa + 1] = imp[qa + 1]! + imA * Py * t;
-  imp[qb] = imp[qb]! - imB * Px * t;
-  imp[qb + 1] = imp[qb + 1]! - imB * Py * t;
+  sb[oa + BS2_VX] = sb[oa + BS2_VX]! - imA * Px;
+  sb[oa + BS2_VY] = sb[oa + BS2_VY]! - imA * Py;
+  sb[ob + BS2_VX] = sb[ob + BS2_VX]! + imB * Px;
+  sb[ob + BS2_VY] = sb[ob + BS2_VY]! + imB * Py;
+  imp[qa + BI_CORR_X] = imp[qa + BI_CORR_X]! + imA * Px * t;
+  imp[qa + BI_CORR_Y] = imp[qa + BI_CORR_Y]! + imA * Py * t;
+  imp[qb + BI_CORR_X] = imp[qb + BI_CORR_X]! - imB * Px * t;
+  imp[qb + BI_CORR_Y] = imp[qb + BI_CORR_Y]! - imB * Py * t;
   if (is2D) {
     if (iiA > 0) {
-      sb[oa + 2] = sb[oa + 2]! + dwa2;
-      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+      sb[oa + BS2_W] = sb[oa + BS2_W]! + dwa2;
+      ex[xa + BX_ROT_Z] = ex[xa + BX_ROT_Z]! - dwa2 * t;
     }
     if (iiB > 0) {
-      sb[ob + 2] = sb[ob + 2]! + dwb2;
-      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+      sb[ob + BS2_W] = sb[ob + BS2_W]! + dwb2;
+      ex[xb + BX_ROT_Z] = ex[xb + BX_ROT_Z]! - dwb2 * t;
     }
   } else {
-    sb[oa + 2] = sb[oa + 2]! - imA * Pz;
-    sb[ob + 2] = sb[ob + 2]! + imB * Pz;
-    imp[qa + 2] = imp[qa + 2]! + imA * Pz * t;
-    imp[qb + 2] = imp[qb + 2]! - imB * Pz * t;
+    sb[oa + BS3_VZ] = sb[oa + BS3_VZ]! - imA * Pz;
+    sb[ob + BS3_VZ] = sb[ob + BS3_VZ]! + imB * Pz;
+    imp[qa + BI_CORR_Z] = imp[qa + BI_CORR_Z]! + imA * Pz * t;
+    imp[qb + BI_CORR_Z] = imp[qb + BI_CORR_Z]! - imB * Pz * t;
     if (iiA > 0) {
-      sb[oa + 3] = sb[oa + 3]! + dwa0;
-      sb[oa + 4] = sb[oa + 4]! + dwa1;
-      sb[oa + 5] = sb[oa + 5]! + dwa2;
-      ex[xa + 3] = ex[xa + 3]! - dwa0 * t;
-      ex[xa + 4] = ex[xa + 4]! - dwa1 * t;
-      ex[xa + 5] = ex[xa + 5]! - dwa2 * t;
+      sb[oa + BS3_WX] = sb[oa + BS3_WX]! + dwa0;
+      sb[oa + BS3_WY] = sb[oa + BS3_WY]! + dwa1;
+      sb[oa + BS3_WZ] = sb[oa + BS3_WZ]! + dwa2;
+      ex[xa + BX_ROT_X] = ex[xa + BX_ROT_X]! - dwa0 * t;
+      ex[xa + BX_ROT_Y] = ex[xa + BX_ROT_Y]! - dwa1 * t;
+      ex[xa + BX_ROT_Z] = ex[xa + BX_ROT_Z]! - dwa2 * t;
     }
     if (iiB > 0) {
-      sb[ob + 3] = sb[ob + 3]! + dwb0;
-      sb[ob + 4] = sb[ob + 4]! + dwb1;
-      sb[ob + 5] = sb[ob + 5]! + dwb2;
-      ex[xb + 3] = ex[xb + 3]! - dwb0 * t;
-      ex[xb + 4] = ex[xb + 4]! - dwb1 * t;
-      ex[xb + 5] = ex[xb + 5]! - dwb2 * t;
+      sb[ob + BS3_WX] = sb[ob + BS3_WX]! + dwb0;
+      sb[ob + BS3_WY] = sb[ob + BS3_WY]! + dwb1;
+      sb[ob + BS3_WZ] = sb[ob + BS3_WZ]! + dwb2;
+      ex[xb + BX_ROT_X] = ex[xb + BX_ROT_X]! - dwb0 * t;
+      ex[xb + BX_ROT_Y] = ex[xb + BX_ROT_Y]! - dwb1 * t;
+      ex[xb + BX_ROT_Z] = ex[xb + BX_ROT_Z]! - dwb2 * t;
     }
   }
-  if (ia !== 0 && imA > 0) imp[qa + 3] = t;
-  if (imB > 0) imp[qb + 3] = t;
+  if (ia !== 0 && imA > 0) imp[qa + BI_TIME] = t;
+  if (imB > 0) imp[qb + BI_TIME] = t;
   buf.nx[i] = nx;
   buf.ny[i] = ny;
   buf.nz[i] = nz;

@@ -2,8 +2,20 @@ import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
 import { jointsToSolve } from '../joints/solver-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BI_ALONE,
+  BI_CORR_X,
+  BI_CORR_Y,
+  BI_CORR_Z,
+  BI_TIME,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS3_VZ,
+  IMPACT_STRIDE,
+} from './body-state-layout.js';
 import { contactState, sweep } from './impact-contact.js';
-import { IMPACT_STRIDE, impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
+import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
 import { joints3DToSolve } from './rows-3d.js';
 
 /**
@@ -57,8 +69,8 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
   // Without joints the band is not widened: in a pile many rows fall in it (mostly balls falling onto
   // the floor), and taking them from the substeps changed how an 800-ball pile settles.
   const within = jointsToSolve(world) || joints3DToSolve(world) ? 1.1 : 1;
-  // First, while slot 3 still holds each body's latest impact time: which rows stay active, into
-  // the spent order array (1 active, 0 not). Slot 4 of a body's row: 1 clean, 0 not (the static world
+  // First, while BI_TIME still holds each body's latest impact time: which rows stay active, into
+  // the spent order array (1 active, 0 not). BI_ALONE of a body's row: 1 clean, 0 not (the static world
   // is clean), marked here as rows are found active; the corrections of unclean bodies are dropped
   // only after this pass (the sweeps read them). A row whose bodies are both unclean already changes
   // nothing below, so it is not swept (marked 1); a row that carried load last step and starts
@@ -67,9 +79,9 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
   const Q = IMPACT_STRIDE;
   const act = cs.impactOrder;
   // The loaded rows that start touching: carriesLoad from applyImpacts' first pass, whose bodies it
-  // marked -1 in slot 4; an impacted row's normal has changed since, so it is asked again (the
+  // marked -1 in BI_ALONE; an impacted row's normal has changed since, so it is asked again (the
   // candidates are still at the front of `act`, the order array, until the pass below).
-  for (let k = 0; k < count; k++) imp[k * Q + 4] = imp[k * Q + 4] === -1 ? 0 : 1;
+  for (let k = 0; k < count; k++) imp[k * Q + BI_ALONE] = imp[k * Q + BI_ALONE] === -1 ? 0 : 1;
   const loaded = impactScratch.loaded;
   for (let k = 0; k < candidates; k++) {
     const i = act[k]!;
@@ -80,7 +92,7 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
       imp[IB[i]! * Q + 4] = 0;
     }
   }
-  imp[4] = 1;
+  imp[BI_ALONE] = 1;
   // The rows left inactive, in row order, for the repeated pass below.
   if (impactScratch.idle.length < n) impactScratch.idle = new Int32Array(Math.max(n, 2 * impactScratch.idle.length));
   const idle = impactScratch.idle;
@@ -93,7 +105,7 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
     act[i] = 0;
     const ia = IA[i]!,
       ib = IB[i]!;
-    if (imp[ib * Q + 4] === 0 && (ia === 0 || imp[ia * Q + 4] === 0)) {
+    if (imp[ib * Q + BI_ALONE] === 0 && (ia === 0 || imp[ia * Q + BI_ALONE] === 0)) {
       act[i] = 1;
       continue;
     }
@@ -112,12 +124,12 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
     }
     if (active) {
       act[i] = 1;
-      if (ia !== 0) imp[ia * Q + 4] = 0;
-      imp[ib * Q + 4] = 0;
+      if (ia !== 0) imp[ia * Q + BI_ALONE] = 0;
+      imp[ib * Q + BI_ALONE] = 0;
     } else idle[idleCount++] = i;
   }
   // An unclean body loses its corrections (the substeps move it from where it was at the start of the step).
-  for (let k = 1; k < count; k++) if (imp[k * Q + 4] === 0) unclean(imp, k);
+  for (let k = 1; k < count; k++) if (imp[k * Q + BI_ALONE] === 0) unclean(imp, k);
   // A clean body with a row to an unclean one becomes unclean too if the substeps' linear gap model
   // of that row could close within the step: the substeps would push it. Repeated until nothing changes.
   // (Only the inactive rows are visited; a row made active leaves the list, which keeps row order.)
@@ -132,8 +144,8 @@ export function separateImpactedBodies(world: PhysicsWorld, buf: ContactBuffer, 
       const i = idle[k]!;
       const ia = IA[i]!,
         ib = IB[i]!;
-      const ca = ia === 0 || imp[ia * Q + 4] === 1,
-        cb = imp[ib * Q + 4] === 1;
+      const ca = ia === 0 || imp[ia * Q + BI_ALONE] === 1,
+        cb = imp[ib * Q + BI_ALONE] === 1;
       if (ca && cb) {
         idle[kept++] = i;
         continue;
@@ -242,14 +254,14 @@ export function carriesLoad(world: PhysicsWorld, buf: ContactBuffer, i: number):
   return !(Math.abs(buf.separation[i]!) <= tiny && Math.abs(buf.relativeVelocity[i]!) * h <= tiny && gn * gn <= LEVEL * LEVEL * g2);
 }
 
-/** Marks solver body k unclean (slot 4 = 0) and drops its end-position corrections; the static world stays clean. */
+/** Marks solver body k unclean (BI_ALONE = 0) and drops its end-position corrections; the static world stays clean. */
 function unclean(imp: Float64Array, k: number): void {
   if (k === 0) return;
   const q = k * IMPACT_STRIDE;
-  imp[q] = 0;
-  imp[q + 1] = 0;
-  imp[q + 2] = 0;
-  imp[q + 4] = 0;
+  imp[q + BI_CORR_X] = 0;
+  imp[q + BI_CORR_Y] = 0;
+  imp[q + BI_CORR_Z] = 0;
+  imp[q + BI_ALONE] = 0;
 }
 
 /**
@@ -268,8 +280,8 @@ function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
     nz = buf.nz[i]!;
-  let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-  if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+  let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+  if (S !== BS2_STRIDE) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
   const a = buf.a[i]!,
     b = buf.b[i]!;
   const an =
@@ -289,7 +301,11 @@ function linearCloses(world: PhysicsWorld, buf: ContactBuffer, i: number, S: num
 function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number {
   const qa = buf.ia[i]! * IMPACT_STRIDE,
     qb = buf.ib[i]! * IMPACT_STRIDE;
-  return (imp[qb]! - imp[qa]!) * buf.nx[i]! + (imp[qb + 1]! - imp[qa + 1]!) * buf.ny[i]! + (imp[qb + 2]! - imp[qa + 2]!) * buf.nz[i]!;
+  return (
+    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * buf.nx[i]! +
+    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * buf.ny[i]! +
+    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * buf.nz[i]!
+  );
 }
 
 /**
@@ -314,13 +330,19 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const a = buf.a[i]!,
     b = buf.b[i]!,
     kind = buf.kind[i]!;
-  const is2D = S === 8;
+  const is2D = S === BS2_STRIDE;
   const P = c.PreviousPosition,
     radius = c.Ball.radius;
   const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
   const pa = kind === ContactKind.Ball ? P : c.Position;
   const R = radius[f]! + radius[b]!;
-  const still = imp[qa] === 0 && imp[qa + 1] === 0 && imp[qa + 2] === 0 && imp[qb] === 0 && imp[qb + 1] === 0 && imp[qb + 2] === 0;
+  const still =
+    imp[qa + BI_CORR_X] === 0 &&
+    imp[qa + BI_CORR_Y] === 0 &&
+    imp[qa + BI_CORR_Z] === 0 &&
+    imp[qb + BI_CORR_X] === 0 &&
+    imp[qb + BI_CORR_Y] === 0 &&
+    imp[qb + BI_CORR_Z] === 0;
   const s0 = buf.separation[i]!;
   const g = world.gravity;
   const gr = (type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0);
@@ -331,23 +353,27 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     const nx = buf.nx[i]!,
       ny = buf.ny[i]!,
       nz = buf.nz[i]!;
-    let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-    if (!is2D) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+    let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+    if (!is2D) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
     return vn * world.h < -ROUNDING * R || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
-  const ta = imp[qa + 3]!,
-    tb = imp[qb + 3]!;
+  const ta = imp[qa + BI_TIME]!,
+    tb = imp[qb + BI_TIME]!;
   const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
   const ax = gr * g[0]!,
     ay = gr * g[1]!,
     az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob]! - sb[oa]! + ax * t0,
-    wy = sb[ob + 1]! - sb[oa + 1]! + ay * t0,
-    wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]! + az * t0;
-  const rx = P.x[b]! + imp[qb]! - pa.x[f]! - imp[qa]! + (sb[ob]! - sb[oa]!) * t0 + 0.5 * ax * t0 * t0;
-  const ry = P.y[b]! + imp[qb + 1]! - pa.y[f]! - imp[qa + 1]! + (sb[ob + 1]! - sb[oa + 1]!) * t0 + 0.5 * ay * t0 * t0;
-  const rz = is2D ? 0 : P.z[b]! + imp[qb + 2]! - pa.z[f]! - imp[qa + 2]! + (sb[ob + 2]! - sb[oa + 2]!) * t0 + 0.5 * az * t0 * t0;
+  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]! + ax * t0,
+    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]! + ay * t0,
+    wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]! + az * t0;
+  const rx =
+    P.x[b]! + imp[qb + BI_CORR_X]! - pa.x[f]! - imp[qa + BI_CORR_X]! + (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * t0 + 0.5 * ax * t0 * t0;
+  const ry =
+    P.y[b]! + imp[qb + BI_CORR_Y]! - pa.y[f]! - imp[qa + BI_CORR_Y]! + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * t0 + 0.5 * ay * t0 * t0;
+  const rz = is2D
+    ? 0
+    : P.z[b]! + imp[qb + BI_CORR_Z]! - pa.z[f]! - imp[qa + BI_CORR_Z]! + (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * t0 + 0.5 * az * t0 * t0;
   const rest = span - t0;
   const r2 = rx * rx + ry * ry + rz * rz;
   if (r2 <= R * R * (1 + 1e-9)) {
@@ -409,18 +435,18 @@ function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
     nz = buf.nz[i]!;
-  let vn = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
-  if (S !== 8) vn += (sb[ob + 2]! - sb[oa + 2]!) * nz;
+  let vn = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
+  if (S !== BS2_STRIDE) vn += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
   const an =
     ((type[b] === BodyType.Dynamic ? 1 : 0) - (a !== 0 && type[a] === BodyType.Dynamic ? 1 : 0)) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-  const ta = imp[qa + 3]!,
-    tb = imp[qb + 3]!;
+  const ta = imp[qa + BI_TIME]!,
+    tb = imp[qb + BI_TIME]!;
   const t0 = ta > tb ? (ta > 0 ? ta : 0) : tb > 0 ? tb : 0;
   const s =
     buf.separation[i]! +
-    (imp[qb]! - imp[qa]!) * nx +
-    (imp[qb + 1]! - imp[qa + 1]!) * ny +
-    (imp[qb + 2]! - imp[qa + 2]!) * nz +
+    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
+    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
+    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz +
     vn * t0 +
     0.5 * an * t0 * t0;
   if (s <= 0) return true;

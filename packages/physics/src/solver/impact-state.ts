@@ -1,12 +1,4 @@
-/** The impact stage's layout and scratch (solver/impacts.ts): the row of `CollisionState.bodyImpact`, the stage's per-row marks and lists, and the arrays that carry doubles to its helpers. */
-
-/**
- * Row length of `CollisionState.bodyImpact`: the end-position correction (x, y, z), m; the time of the
- * body's latest impact this step, s (-1: the body carried a load and is left to the substeps); and
- * whether the soft substeps leave the body alone (1) or not (0), set by `separateImpactedBodies`.
- * @category Collision
- */
-export const IMPACT_STRIDE = 5;
+/** The impact stage's scratch (solver/impacts.ts; its row of `CollisionState.bodyImpact` is laid out in body-state-layout.ts): its per-row marks and lists, and the arrays that carry doubles to its helpers. */
 
 /**
  * Scratch of the impact stage (not world state):

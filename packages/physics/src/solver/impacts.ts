@@ -1,8 +1,9 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { BI_ALONE, BI_TIME, BS2_STRIDE, BS2_VX, BS2_VY, BS3_STRIDE, BS3_VZ, IMPACT_STRIDE } from './body-state-layout.js';
 import { fastEnough, impact } from './impact-contact.js';
 import { carriesLoad, separateImpactedBodies } from './impact-separation.js';
-import { IMPACT_STRIDE, impactScalars, impactScratch } from './impact-state.js';
+import { impactScalars, impactScratch } from './impact-state.js';
 import { sortByKey } from './sort-by-key.js';
 
 /**
@@ -89,10 +90,10 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const S0 = buf.separation,
     RV = buf.relativeVelocity;
   const count = cs.solverBodyCount;
-  const S = world.dimensions === 2 ? 8 : 12;
+  const S = world.dimensions === 2 ? BS2_STRIDE : BS3_STRIDE;
   // cs.bodyImpact holds a zeroed row for each solver body (solver/contact-solver.ts clearBodyImpacts).
   // Bodies that carried a load last step (a warm-started contact: resting in a pile, on the floor)
-  // are left to the soft substeps and the restitution stage; slot 3 (time of the latest impact)
+  // are left to the soft substeps and the restitution stage; BI_TIME (time of the latest impact)
   // marks them -1 until the passes are done.
   const imp = cs.bodyImpact,
     IA = buf.ia,
@@ -118,13 +119,13 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     loaded[i] = 1;
     const qa = IA[i]! * IMPACT_STRIDE,
       qb = IB[i]! * IMPACT_STRIDE;
-    if (qa !== 0) imp[qa + 3] = -1;
-    imp[qb + 3] = -1;
+    if (qa !== 0) imp[qa + BI_TIME] = -1;
+    imp[qb + BI_TIME] = -1;
     // A loaded row that starts touching makes its bodies unclean in separateImpactedBodies: marked
-    // here in slot 4 (-1; nothing reads slot 4 before separateImpactedBodies).
+    // here in BI_ALONE (-1; nothing reads it before separateImpactedBodies).
     if (S0[i]! <= 0) {
-      if (qa !== 0) imp[qa + 4] = -1;
-      imp[qb + 4] = -1;
+      if (qa !== 0) imp[qa + BI_ALONE] = -1;
+      imp[qb + BI_ALONE] = -1;
     }
   }
   // One pass picks the candidates: seeds (fast enough) from the front of `order`, the others from its
@@ -132,7 +133,7 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const sb = cs.bodyState;
   const lim = resting - gh,
     lim2 = lim * lim,
-    is2D = S === 8;
+    is2D = S === BS2_STRIDE;
   let m = 0,
     back = n;
   for (let i = 0; i < n; i++) {
@@ -140,15 +141,15 @@ export function applyImpacts(world: PhysicsWorld, buf: ContactBuffer): void {
     if (!(E[i]! > 0)) continue;
     const ia = IA[i]!,
       ib = IB[i]!;
-    if (imp[ib * IMPACT_STRIDE + 3] === -1 || (ia !== 0 && imp[ia * IMPACT_STRIDE + 3] === -1)) continue;
+    if (imp[ib * IMPACT_STRIDE + BI_TIME] === -1 || (ia !== 0 && imp[ia * IMPACT_STRIDE + BI_TIME] === -1)) continue;
     // fastEnough, inline.
     let fast = true;
     if (resting !== 0 && lim > 0) {
       const oa = ia * S,
         ob = ib * S;
-      const wx = sb[ob]! - sb[oa]!,
-        wy = sb[ob + 1]! - sb[oa + 1]!,
-        wz = is2D ? 0 : sb[ob + 2]! - sb[oa + 2]!;
+      const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
+        wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
+        wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
       fast = wx * wx + wy * wy + wz * wz > lim2;
     }
     if (!fast) {

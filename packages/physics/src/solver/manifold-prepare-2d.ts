@@ -2,6 +2,18 @@ import { pushEvent } from '../collision/events.js';
 import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BX_BASE_X,
+  BX_BASE_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
 import { atLeast, packManifoldRows } from './manifold-rows-2d.js';
 
 /**
@@ -105,7 +117,7 @@ export function prepareManifolds(world: PhysicsWorld): void {
   st.angleBase = atLeast(st.angleBase, count);
   const ex = cs.bodyExtra,
     base = st.angleBase;
-  for (let k = 1; k < count; k++) base[k] = ex[k * 6 + 5]!;
+  for (let k = 1; k < count; k++) base[k] = ex[k * BX_STRIDE + BX_ROT_Z]!;
   base[0] = 0;
   if (n === 0) return;
   const set = cs.settings;
@@ -132,12 +144,12 @@ export function prepareManifolds(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const ea = buf.shapeA[i]!,
       eb = buf.shapeB[i]!;
-    const oa = buf.ia[i]! * 8,
-      ob = buf.ib[i]! * 8;
-    const mA = sb[oa + 5]!,
-      iA = sb[oa + 6]!,
-      mB = sb[ob + 5]!,
-      iB = sb[ob + 6]!;
+    const oa = buf.ia[i]! * BS2_STRIDE,
+      ob = buf.ib[i]! * BS2_STRIDE;
+    const mA = sb[oa + BS2_INV_MASS]!,
+      iA = sb[oa + BS2_INV_INERTIA]!,
+      mB = sb[ob + BS2_INV_MASS]!,
+      iB = sb[ob + BS2_INV_INERTIA]!;
     const nx = buf.nx[i]!,
       ny = buf.ny[i]!;
     // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
@@ -169,20 +181,20 @@ export function prepareManifolds(world: PhysicsWorld): void {
     let j = findPrevious(st, ea, eb);
     if (j >= 0 && (prev.stampA[j] !== buf.stampA[i] || prev.stampB[j] !== buf.stampB[i])) j = -1;
     if (j >= 0) buf.rollingImpulse[i] = prev.rollingImpulse[j]!;
-    const vax = sb[oa]!,
-      vay = sb[oa + 1]!,
-      wa = sb[oa + 2]!,
-      vbx = sb[ob]!,
-      vby = sb[ob + 1]!,
-      wb = sb[ob + 2]!;
+    const vax = sb[oa + BS2_VX]!,
+      vay = sb[oa + BS2_VY]!,
+      wa = sb[oa + BS2_W]!,
+      vbx = sb[ob + BS2_VX]!,
+      vby = sb[ob + BS2_VY]!,
+      wb = sb[ob + BS2_W]!;
     const ka = buf.ia[i]!,
       kb = buf.ib[i]!;
-    const ea6 = ka * 6,
-      eb6 = kb * 6;
-    const offAx = ka === 0 ? 0 : ex[ea6]! - ox[list[ka]!]!,
-      offAy = ka === 0 ? 0 : ex[ea6 + 1]! - oy[list[ka]!]!;
-    const offBx = kb === 0 ? 0 : ex[eb6]! - ox[list[kb]!]!,
-      offBy = kb === 0 ? 0 : ex[eb6 + 1]! - oy[list[kb]!]!;
+    const ea6 = ka * BX_STRIDE,
+      eb6 = kb * BX_STRIDE;
+    const offAx = ka === 0 ? 0 : ex[ea6 + BX_BASE_X]! - ox[list[ka]!]!,
+      offAy = ka === 0 ? 0 : ex[ea6 + BX_BASE_Y]! - oy[list[ka]!]!;
+    const offBx = kb === 0 ? 0 : ex[eb6 + BX_BASE_X]! - ox[list[kb]!]!,
+      offBy = kb === 0 ? 0 : ex[eb6 + BX_BASE_Y]! - oy[list[kb]!]!;
     let vtMax = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p;

@@ -1,5 +1,23 @@
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BS3_INV_INERTIA,
+  BS3_INV_MASS,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+  BX_BASE_X,
+  BX_BASE_Y,
+  BX_BASE_Z,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
 import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
 
 /** Preparation of the 3D manifold rows at the start of a step (solver/manifold-rows-3d.ts): world inverse inertia tensors of the solver bodies, Jacobians, effective masses, softness and separations on the solver's base. */
@@ -62,12 +80,12 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   for (let i = 0; i < n; i++) {
     const ka = buf.ia[i]!,
       kb = buf.ib[i]!,
-      a = 12 * ka,
-      b = 12 * kb,
+      a = BS3_STRIDE * ka,
+      b = BS3_STRIDE * kb,
       ta = 6 * ka,
       tb = 6 * kb;
-    const mA = sb[a + 9]!,
-      mB = sb[b + 9]!;
+    const mA = sb[a + BS3_INV_MASS]!,
+      mB = sb[b + BS3_INV_MASS]!;
     const iso = isotropic(T, ta) && isotropic(T, tb);
     buf.iso[i] = iso ? 1 : 0;
     const nx = buf.nx[i]!,
@@ -77,11 +95,17 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     let shift = 0;
     if (ka > 0) {
       const e = buf.bodyA[i]!;
-      shift -= (ex[6 * ka]! - ox[e]!) * nx + (ex[6 * ka + 1]! - oy[e]!) * ny + (ex[6 * ka + 2]! - oz[e]!) * nz;
+      shift -=
+        (ex[BX_STRIDE * ka + BX_BASE_X]! - ox[e]!) * nx +
+        (ex[BX_STRIDE * ka + BX_BASE_Y]! - oy[e]!) * ny +
+        (ex[BX_STRIDE * ka + BX_BASE_Z]! - oz[e]!) * nz;
     }
     if (kb > 0) {
       const e = buf.bodyB[i]!;
-      shift += (ex[6 * kb]! - ox[e]!) * nx + (ex[6 * kb + 1]! - oy[e]!) * ny + (ex[6 * kb + 2]! - oz[e]!) * nz;
+      shift +=
+        (ex[BX_STRIDE * kb + BX_BASE_X]! - ox[e]!) * nx +
+        (ex[BX_STRIDE * kb + BX_BASE_Y]! - oy[e]!) * ny +
+        (ex[BX_STRIDE * kb + BX_BASE_Z]! - oz[e]!) * nz;
     }
     let minSep = Infinity,
       reachA = 0,
@@ -132,15 +156,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       buf.mn[q] = k0 > 0 ? 1 / k0 : 0;
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] =
-        (sb[b]! - sb[a]!) * nx +
-        (sb[b + 1]! - sb[a + 1]!) * ny +
-        (sb[b + 2]! - sb[a + 2]!) * nz +
-        sb[b + 3]! * xbx +
-        sb[b + 4]! * xby +
-        sb[b + 5]! * xbz -
-        sb[a + 3]! * xax -
-        sb[a + 4]! * xay -
-        sb[a + 5]! * xaz;
+        (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
+        (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
+        (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
+        sb[b + BS3_WX]! * xbx +
+        sb[b + BS3_WY]! * xby +
+        sb[b + BS3_WZ]! * xbz -
+        sb[a + BS3_WX]! * xax -
+        sb[a + BS3_WY]! * xay -
+        sb[a + BS3_WZ]! * xaz;
     }
     // For the solver's skip of a speculative manifold (solveManifolds3D); padded for the single-precision crosses.
     buf.minSep[i] = minSep;
@@ -245,10 +269,10 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
   for (let k = 1; k < count; k++) {
     const e = list[k]!,
       o = 6 * k;
-    base[3 * k] = ex[6 * k + 3]!;
-    base[3 * k + 1] = ex[6 * k + 4]!;
-    base[3 * k + 2] = ex[6 * k + 5]!;
-    const ii = sb[12 * k + 10]!;
+    base[3 * k] = ex[BX_STRIDE * k + BX_ROT_X]!;
+    base[3 * k + 1] = ex[BX_STRIDE * k + BX_ROT_Y]!;
+    base[3 * k + 2] = ex[BX_STRIDE * k + BX_ROT_Z]!;
+    const ii = sb[BS3_STRIDE * k + BS3_INV_INERTIA]!;
     if (!(ii > 0)) {
       T.fill(0, o, o + 6);
       continue;

@@ -1,5 +1,18 @@
 import type { CollisionState } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
 
 /**
  * The shape contacts' rows of the contact solver (solver/contact-solver.ts runs these calls next to the ball
@@ -195,20 +208,20 @@ export function warmStartManifolds(cs: CollisionState): void {
     sb = cs.bodyState;
   for (let i = 0, n = cs.shapes.manifolds.count; i < n; i++) {
     const r = i * Row.Stride;
-    const a = R[r + Row.BodyA]! * 8,
-      b = R[r + Row.BodyB]! * 8;
-    const mA = sb[a + 5]!,
-      iA = sb[a + 6]!,
-      mB = sb[b + 5]!,
-      iB = sb[b + 6]!;
+    const a = R[r + Row.BodyA]! * BS2_STRIDE,
+      b = R[r + Row.BodyB]! * BS2_STRIDE;
+    const mA = sb[a + BS2_INV_MASS]!,
+      iA = sb[a + BS2_INV_INERTIA]!,
+      mB = sb[b + BS2_INV_MASS]!,
+      iB = sb[b + BS2_INV_INERTIA]!;
     const nx = R[r + Row.Nx]!,
       ny = R[r + Row.Ny]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      wa = sb[a + 2]!,
-      vbx = sb[b]!,
-      vby = sb[b + 1]!,
-      wb = sb[b + 2]!;
+    let vax = sb[a + BS2_VX]!,
+      vay = sb[a + BS2_VY]!,
+      wa = sb[a + BS2_W]!,
+      vbx = sb[b + BS2_VX]!,
+      vby = sb[b + BS2_VY]!,
+      wb = sb[b + BS2_W]!;
     for (let p = 0, m = R[r + Row.PointCount]!; p < m; p++) {
       const o = r + Row.Point0 + p * Point.Stride;
       const ln = R[o + Point.NormalImpulse]!,
@@ -225,15 +238,15 @@ export function warmStartManifolds(cs: CollisionState): void {
     const lr = R[r + Row.RollingImpulse]!;
     wa -= iA * lr;
     wb += iB * lr;
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = wa;
-    sb[b] = vbx;
-    sb[b + 1] = vby;
-    sb[b + 2] = wb;
+    sb[a + BS2_VX] = vax;
+    sb[a + BS2_VY] = vay;
+    sb[a + BS2_W] = wa;
+    sb[b + BS2_VX] = vbx;
+    sb[b + BS2_VY] = vby;
+    sb[b + BS2_W] = wb;
     if (pushes(R, r)) {
-      sb[a + 7] = 1;
-      sb[b + 7] = 1;
+      sb[a + BS2_PUSHED] = 1;
+      sb[b + BS2_PUSHED] = 1;
     }
   }
 }
@@ -271,24 +284,24 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
     const r = i * Row.Stride;
     const ia = R[r + Row.BodyA]!,
       ib = R[r + Row.BodyB]!;
-    const a = ia * 8,
-      b = ib * 8;
-    const mA = sb[a + 5]!,
-      iA = sb[a + 6]!,
-      mB = sb[b + 5]!,
-      iB = sb[b + 6]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      wa = sb[a + 2]!,
-      vbx = sb[b]!,
-      vby = sb[b + 1]!,
-      wb = sb[b + 2]!;
-    const dax = sb[a + 3]!,
-      day = sb[a + 4]!,
-      dbx = sb[b + 3]!,
-      dby = sb[b + 4]!;
-    const ta = ia === 0 ? 0 : ex[ia * 6 + 5]! - base[ia]!,
-      tb = ib === 0 ? 0 : ex[ib * 6 + 5]! - base[ib]!;
+    const a = ia * BS2_STRIDE,
+      b = ib * BS2_STRIDE;
+    const mA = sb[a + BS2_INV_MASS]!,
+      iA = sb[a + BS2_INV_INERTIA]!,
+      mB = sb[b + BS2_INV_MASS]!,
+      iB = sb[b + BS2_INV_INERTIA]!;
+    let vax = sb[a + BS2_VX]!,
+      vay = sb[a + BS2_VY]!,
+      wa = sb[a + BS2_W]!,
+      vbx = sb[b + BS2_VX]!,
+      vby = sb[b + BS2_VY]!,
+      wb = sb[b + BS2_W]!;
+    const dax = sb[a + BS2_DX]!,
+      day = sb[a + BS2_DY]!,
+      dbx = sb[b + BS2_DX]!,
+      dby = sb[b + BS2_DY]!;
+    const ta = ia === 0 ? 0 : ex[ia * BX_STRIDE + BX_ROT_Z]! - base[ia]!,
+      tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
     const nx = R[r + Row.Nx]!,
       ny = R[r + Row.Ny]!;
     const rigidPartner = mA === 0 || mB === 0;
@@ -462,15 +475,15 @@ export function solveManifolds(cs: CollisionState, hs: number, useBias: boolean)
       wa -= iA * dl;
       wb += iB * dl;
     }
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = wa;
-    sb[b] = vbx;
-    sb[b + 1] = vby;
-    sb[b + 2] = wb;
+    sb[a + BS2_VX] = vax;
+    sb[a + BS2_VY] = vay;
+    sb[a + BS2_W] = wa;
+    sb[b + BS2_VX] = vbx;
+    sb[b + BS2_VY] = vby;
+    sb[b + BS2_W] = wb;
     if (total > 0 || pushes(R, r)) {
-      sb[a + 7] = 1;
-      sb[b + 7] = 1;
+      sb[a + BS2_PUSHED] = 1;
+      sb[b + BS2_PUSHED] = 1;
     }
   }
 }
@@ -507,20 +520,20 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     const r = i * Row.Stride;
     const e = R[r + Row.Restitution]!;
     if (e === 0) continue;
-    const a = R[r + Row.BodyA]! * 8,
-      b = R[r + Row.BodyB]! * 8;
-    const mA = sb[a + 5]!,
-      iA = sb[a + 6]!,
-      mB = sb[b + 5]!,
-      iB = sb[b + 6]!;
+    const a = R[r + Row.BodyA]! * BS2_STRIDE,
+      b = R[r + Row.BodyB]! * BS2_STRIDE;
+    const mA = sb[a + BS2_INV_MASS]!,
+      iA = sb[a + BS2_INV_INERTIA]!,
+      mB = sb[b + BS2_INV_MASS]!,
+      iB = sb[b + BS2_INV_INERTIA]!;
     const nx = R[r + Row.Nx]!,
       ny = R[r + Row.Ny]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      wa = sb[a + 2]!,
-      vbx = sb[b]!,
-      vby = sb[b + 1]!,
-      wb = sb[b + 2]!;
+    let vax = sb[a + BS2_VX]!,
+      vay = sb[a + BS2_VY]!,
+      wa = sb[a + BS2_W]!,
+      vbx = sb[b + BS2_VX]!,
+      vby = sb[b + BS2_VY]!,
+      wb = sb[b + BS2_W]!;
     const m = R[r + Row.PointCount]!;
     const o1 = r + Row.Point0,
       o2 = o1 + Point.Stride;
@@ -589,12 +602,12 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
           vbx += mB * (P1x + P2x);
           vby += mB * (P1y + P2y);
           wb += iB * (r1bx * P1y - r1by * P1x + r2bx * P2y - r2by * P2x);
-          sb[a] = vax;
-          sb[a + 1] = vay;
-          sb[a + 2] = wa;
-          sb[b] = vbx;
-          sb[b + 1] = vby;
-          sb[b + 2] = wb;
+          sb[a + BS2_VX] = vax;
+          sb[a + BS2_VY] = vay;
+          sb[a + BS2_W] = wa;
+          sb[b + BS2_VX] = vbx;
+          sb[b + BS2_VY] = vby;
+          sb[b + BS2_W] = wb;
           continue;
         }
       }
@@ -623,11 +636,11 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       vby += mB * Py;
       wb += iB * (rbx * Py - rby * Px);
     }
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = wa;
-    sb[b] = vbx;
-    sb[b + 1] = vby;
-    sb[b + 2] = wb;
+    sb[a + BS2_VX] = vax;
+    sb[a + BS2_VY] = vay;
+    sb[a + BS2_W] = wa;
+    sb[b + BS2_VX] = vbx;
+    sb[b + BS2_VY] = vby;
+    sb[b + BS2_W] = wb;
   }
 }

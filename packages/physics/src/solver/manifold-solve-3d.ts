@@ -1,5 +1,23 @@
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
+import {
+  BS3_DX,
+  BS3_DY,
+  BS3_DZ,
+  BS3_INV_MASS,
+  BS3_PUSHED,
+  BS3_STRIDE,
+  BS3_VX,
+  BS3_VY,
+  BS3_VZ,
+  BS3_WX,
+  BS3_WY,
+  BS3_WZ,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
 import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
@@ -107,29 +125,29 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     }
     const ka = buf.ia[i]!,
       kb = buf.ib[i]!,
-      a = 12 * ka,
-      b = 12 * kb;
+      a = BS3_STRIDE * ka,
+      b = BS3_STRIDE * kb;
     if (ka > 0) {
-      const mA = sb[a + 9]!,
+      const mA = sb[a + BS3_INV_MASS]!,
         gA = iso ? T[6 * ka]! : 1;
-      sb[a] = sb[a]! - mA * px;
-      sb[a + 1] = sb[a + 1]! - mA * py;
-      sb[a + 2] = sb[a + 2]! - mA * pz;
-      sb[a + 3] = sb[a + 3]! - gA * ax;
-      sb[a + 4] = sb[a + 4]! - gA * ay;
-      sb[a + 5] = sb[a + 5]! - gA * az;
-      sb[a + 11] = 1;
+      sb[a + BS3_VX] = sb[a + BS3_VX]! - mA * px;
+      sb[a + BS3_VY] = sb[a + BS3_VY]! - mA * py;
+      sb[a + BS3_VZ] = sb[a + BS3_VZ]! - mA * pz;
+      sb[a + BS3_WX] = sb[a + BS3_WX]! - gA * ax;
+      sb[a + BS3_WY] = sb[a + BS3_WY]! - gA * ay;
+      sb[a + BS3_WZ] = sb[a + BS3_WZ]! - gA * az;
+      sb[a + BS3_PUSHED] = 1;
     }
     if (kb > 0) {
-      const mB = sb[b + 9]!,
+      const mB = sb[b + BS3_INV_MASS]!,
         gB = iso ? T[6 * kb]! : 1;
-      sb[b] = sb[b]! + mB * px;
-      sb[b + 1] = sb[b + 1]! + mB * py;
-      sb[b + 2] = sb[b + 2]! + mB * pz;
-      sb[b + 3] = sb[b + 3]! + gB * bx;
-      sb[b + 4] = sb[b + 4]! + gB * by;
-      sb[b + 5] = sb[b + 5]! + gB * bz;
-      sb[b + 11] = 1;
+      sb[b + BS3_VX] = sb[b + BS3_VX]! + mB * px;
+      sb[b + BS3_VY] = sb[b + BS3_VY]! + mB * py;
+      sb[b + BS3_VZ] = sb[b + BS3_VZ]! + mB * pz;
+      sb[b + BS3_WX] = sb[b + BS3_WX]! + gB * bx;
+      sb[b + BS3_WY] = sb[b + BS3_WY]! + gB * by;
+      sb[b + BS3_WZ] = sb[b + BS3_WZ]! + gB * bz;
+      sb[b + BS3_PUSHED] = 1;
     }
   }
 }
@@ -192,8 +210,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
-      a = 12 * ka,
-      b = 12 * kb;
+      a = BS3_STRIDE * ka,
+      b = BS3_STRIDE * kb;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
@@ -202,22 +220,23 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       massScale = isRigid ? rMass : sMass,
       impScale = isRigid ? rImp : sImp;
     // Velocities of both bodies in locals for the manifold's rows (written back once at the end).
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      vaz = sb[a + 2]!,
-      wax = sb[a + 3]!,
-      way = sb[a + 4]!,
-      waz = sb[a + 5]!;
-    let vbx = sb[b]!,
-      vby = sb[b + 1]!,
-      vbz = sb[b + 2]!,
-      wbx = sb[b + 3]!,
-      wby = sb[b + 4]!,
-      wbz = sb[b + 5]!;
-    const mA = sb[a + 9]!,
-      mB = sb[b + 9]!;
+    let vax = sb[a + BS3_VX]!,
+      vay = sb[a + BS3_VY]!,
+      vaz = sb[a + BS3_VZ]!,
+      wax = sb[a + BS3_WX]!,
+      way = sb[a + BS3_WY]!,
+      waz = sb[a + BS3_WZ]!;
+    let vbx = sb[b + BS3_VX]!,
+      vby = sb[b + BS3_VY]!,
+      vbz = sb[b + BS3_VZ]!,
+      wbx = sb[b + BS3_WX]!,
+      wby = sb[b + BS3_WY]!,
+      wbz = sb[b + BS3_WZ]!;
+    const mA = sb[a + BS3_INV_MASS]!,
+      mB = sb[b + BS3_INV_MASS]!;
     // Displacement along n and rotation of each body so far this step.
-    const dn = (sb[b + 6]! - sb[a + 6]!) * nx + (sb[b + 7]! - sb[a + 7]!) * ny + (sb[b + 8]! - sb[a + 8]!) * nz;
+    const dn =
+      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx + (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny + (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
     let hax = 0,
       hay = 0,
       haz = 0,
@@ -225,18 +244,18 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       hby = 0,
       hbz = 0;
     if (ka > 0) {
-      const e = 6 * ka,
+      const e = BX_STRIDE * ka,
         r = 3 * ka;
-      hax = ex[e + 3]! - base[r]!;
-      hay = ex[e + 4]! - base[r + 1]!;
-      haz = ex[e + 5]! - base[r + 2]!;
+      hax = ex[e + BX_ROT_X]! - base[r]!;
+      hay = ex[e + BX_ROT_Y]! - base[r + 1]!;
+      haz = ex[e + BX_ROT_Z]! - base[r + 2]!;
     }
     if (kb > 0) {
-      const e = 6 * kb,
+      const e = BX_STRIDE * kb,
         r = 3 * kb;
-      hbx = ex[e + 3]! - base[r]!;
-      hby = ex[e + 4]! - base[r + 1]!;
-      hbz = ex[e + 5]! - base[r + 2]!;
+      hbx = ex[e + BX_ROT_X]! - base[r]!;
+      hby = ex[e + BX_ROT_Y]! - base[r + 1]!;
+      hbz = ex[e + BX_ROT_Z]! - base[r + 2]!;
     }
     const m = PTS[i]!;
     // A speculative manifold that cannot close this substep is skipped, exactly: no impulse yet, and every
@@ -467,22 +486,22 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     }
     if (pushed) {
       if (ka > 0) {
-        sb[a] = vax;
-        sb[a + 1] = vay;
-        sb[a + 2] = vaz;
-        sb[a + 3] = wax;
-        sb[a + 4] = way;
-        sb[a + 5] = waz;
-        sb[a + 11] = 1;
+        sb[a + BS3_VX] = vax;
+        sb[a + BS3_VY] = vay;
+        sb[a + BS3_VZ] = vaz;
+        sb[a + BS3_WX] = wax;
+        sb[a + BS3_WY] = way;
+        sb[a + BS3_WZ] = waz;
+        sb[a + BS3_PUSHED] = 1;
       }
       if (kb > 0) {
-        sb[b] = vbx;
-        sb[b + 1] = vby;
-        sb[b + 2] = vbz;
-        sb[b + 3] = wbx;
-        sb[b + 4] = wby;
-        sb[b + 5] = wbz;
-        sb[b + 11] = 1;
+        sb[b + BS3_VX] = vbx;
+        sb[b + BS3_VY] = vby;
+        sb[b + BS3_VZ] = vbz;
+        sb[b + BS3_WX] = wbx;
+        sb[b + BS3_WY] = wby;
+        sb[b + BS3_WZ] = wbz;
+        sb[b + BS3_PUSHED] = 1;
       }
     }
   }
@@ -513,8 +532,8 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
       if (e === 0) continue;
       const ka = buf.ia[i]!,
         kb = buf.ib[i]!,
-        a = 12 * ka,
-        b = 12 * kb;
+        a = BS3_STRIDE * ka,
+        b = BS3_STRIDE * kb;
       // Isotropic: I^-1 (r x n) = i (r x n), from the crosses; else the stored products.
       const iso = buf.iso[i] === 1,
         iA = iso ? T[6 * ka]! : 0,
@@ -527,15 +546,15 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         if (VN0[q]! > -threshold || MAX[q] === 0) continue;
         const o = JAC * q;
         const vn =
-          (sb[b]! - sb[a]!) * nx +
-          (sb[b + 1]! - sb[a + 1]!) * ny +
-          (sb[b + 2]! - sb[a + 2]!) * nz +
-          sb[b + 3]! * J[o + 3]! +
-          sb[b + 4]! * J[o + 4]! +
-          sb[b + 5]! * J[o + 5]! -
-          sb[a + 3]! * J[o]! -
-          sb[a + 4]! * J[o + 1]! -
-          sb[a + 5]! * J[o + 2]!;
+          (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
+          (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
+          (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
+          sb[b + BS3_WX]! * J[o + 3]! +
+          sb[b + BS3_WY]! * J[o + 4]! +
+          sb[b + BS3_WZ]! * J[o + 5]! -
+          sb[a + BS3_WX]! * J[o]! -
+          sb[a + BS3_WY]! * J[o + 1]! -
+          sb[a + BS3_WZ]! * J[o + 2]!;
         const old = LN[q]!;
         const lam = Math.max(old - MN[q]! * (vn + e * VN0[q]!), 0);
         const dl = lam - old;
@@ -543,38 +562,38 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
         if (ka > 0) {
-          const f = sb[a + 9]! * dl;
-          sb[a] = sb[a]! - f * nx;
-          sb[a + 1] = sb[a + 1]! - f * ny;
-          sb[a + 2] = sb[a + 2]! - f * nz;
+          const f = sb[a + BS3_INV_MASS]! * dl;
+          sb[a + BS3_VX] = sb[a + BS3_VX]! - f * nx;
+          sb[a + BS3_VY] = sb[a + BS3_VY]! - f * ny;
+          sb[a + BS3_VZ] = sb[a + BS3_VZ]! - f * nz;
           if (iso) {
             const g = iA * dl;
-            sb[a + 3] = sb[a + 3]! - g * J[o]!;
-            sb[a + 4] = sb[a + 4]! - g * J[o + 1]!;
-            sb[a + 5] = sb[a + 5]! - g * J[o + 2]!;
+            sb[a + BS3_WX] = sb[a + BS3_WX]! - g * J[o]!;
+            sb[a + BS3_WY] = sb[a + BS3_WY]! - g * J[o + 1]!;
+            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - g * J[o + 2]!;
           } else {
-            sb[a + 3] = sb[a + 3]! - dl * JI[o]!;
-            sb[a + 4] = sb[a + 4]! - dl * JI[o + 1]!;
-            sb[a + 5] = sb[a + 5]! - dl * JI[o + 2]!;
+            sb[a + BS3_WX] = sb[a + BS3_WX]! - dl * JI[o]!;
+            sb[a + BS3_WY] = sb[a + BS3_WY]! - dl * JI[o + 1]!;
+            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - dl * JI[o + 2]!;
           }
-          sb[a + 11] = 1;
+          sb[a + BS3_PUSHED] = 1;
         }
         if (kb > 0) {
-          const f = sb[b + 9]! * dl;
-          sb[b] = sb[b]! + f * nx;
-          sb[b + 1] = sb[b + 1]! + f * ny;
-          sb[b + 2] = sb[b + 2]! + f * nz;
+          const f = sb[b + BS3_INV_MASS]! * dl;
+          sb[b + BS3_VX] = sb[b + BS3_VX]! + f * nx;
+          sb[b + BS3_VY] = sb[b + BS3_VY]! + f * ny;
+          sb[b + BS3_VZ] = sb[b + BS3_VZ]! + f * nz;
           if (iso) {
             const g = iB * dl;
-            sb[b + 3] = sb[b + 3]! + g * J[o + 3]!;
-            sb[b + 4] = sb[b + 4]! + g * J[o + 4]!;
-            sb[b + 5] = sb[b + 5]! + g * J[o + 5]!;
+            sb[b + BS3_WX] = sb[b + BS3_WX]! + g * J[o + 3]!;
+            sb[b + BS3_WY] = sb[b + BS3_WY]! + g * J[o + 4]!;
+            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + g * J[o + 5]!;
           } else {
-            sb[b + 3] = sb[b + 3]! + dl * JI[o + 3]!;
-            sb[b + 4] = sb[b + 4]! + dl * JI[o + 4]!;
-            sb[b + 5] = sb[b + 5]! + dl * JI[o + 5]!;
+            sb[b + BS3_WX] = sb[b + BS3_WX]! + dl * JI[o + 3]!;
+            sb[b + BS3_WY] = sb[b + BS3_WY]! + dl * JI[o + 4]!;
+            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + dl * JI[o + 5]!;
           }
-          sb[b + 11] = 1;
+          sb[b + BS3_PUSHED] = 1;
         }
       }
     }

@@ -12,7 +12,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
 /**
  * Prepares 2D contact rows lo .. hi - 1.
  * A, the contact buffer's: 0 a, 1 b, 2 ia, 3 ib (Int32), 4 kind (Uint8), 5 feature (Int32), 6 nx, 7 ny,
- * 8 ra, 9 rb; 10 the solver state (rows of 8); the Material stores 11 restitution, 12 friction,
+ * 8 ra, 9 rb; 10 the solver state (rows of 8, BS2_* in body-state-layout.ts written out); the Material stores 11 restitution, 12 friction,
  * 13 static friction; 14 the spawn stamps (Uint32, a copy); the buffer's outputs 15 normalMass,
  * 16 tangentMass, 17 rigidPartner (Uint8), 18 t1x, 19 t1y, 20 t1z, 21 restitution, 22 friction,
  * 23 frictionBound, 24 relativeVelocity, 25 totalNormalImpulse, 26 impulse, 27 normalImpulse,

@@ -18,7 +18,7 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
  * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
  * i + 1). A: 0-2 Position x, y, z, 3-5 Velocity x, y, z, 6-8 AngularVelocity x, y, z, 9-11 Force x, y,
- * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of 8), 16 solver extra (rows
+ * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of 8, BS2_* in body-state-layout.ts written out), 16 solver extra (rows
  * of 6); of the components, x and y and the spin about z are read (slots 2 to 4 of the extra rows, z
  * and the turn about x and y, are 0 in 2D). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step,
  * every body counts as pushed), 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.

@@ -36,8 +36,8 @@ import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { IMPACT_STRIDE } from './body-state-layout.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
-import { IMPACT_STRIDE } from './impact-state.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 
 /**

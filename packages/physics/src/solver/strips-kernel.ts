@@ -18,7 +18,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
  * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
  * solver/strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state
- * (rows of 8), 1 solver extra (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity),
+ * (rows of 8, BS2_* in body-state-layout.ts written out), 1 solver extra (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity),
  * 3 the solver bodies' entity ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out;
  * 255: not movable), 6 bin (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's
  * strip (Uint8, out), 9 ia, 10 ib (Int32, the rows' solver bodies).

@@ -1,3 +1,4 @@
+import { BS2_INV_MASS, BS2_STRIDE, BS3_INV_MASS } from './body-state-layout.js';
 /**
  * Support rows of the ball contacts' relax sweep (solver/contact-solver.ts, solve2D and solve3D, and the coloured solve
  * of a threaded 2D world, solver/coloring-kernel.ts, which repeats the test inline for frictionless rows
@@ -125,7 +126,8 @@ let firstRelax = new Uint8Array(64);
  * body (solver index 0 on side A) whose ball is the lower ball of a support row with a heavier ball
  * above. Relaxed first, such a ball is at rest when the row above it is relaxed, so that row may hold
  * it (`holdsLower`). Returns the per-row flags (valid for the first `buf.count` rows until the next call).
- * @param stride the solver state's row stride (8 in 2D, 12 in 3D); the inverse mass sits at 5 or 9.
+ * @param stride the solver state's row stride (BS2_STRIDE in 2D, BS3_STRIDE in 3D, solver/body-state-layout.ts); the
+ *   inverse mass sits at BS2_INV_MASS or BS3_INV_MASS.
  * @param down the unit vector along gravity (its first 2 or 3 components at `at`).
  * @category Collision
  */
@@ -147,7 +149,7 @@ export function markFirstRelaxRows(
   const under = underHeavier,
     flags = firstRelax;
   under.fill(0, 0, bodyCount);
-  const im = stride === 8 ? 5 : 9;
+  const im = stride === BS2_STRIDE ? BS2_INV_MASS : BS3_INV_MASS;
   const dx = down[at]!,
     dy = down[at + 1]!,
     dz = nz === null ? 0 : down[at + 2]!;
