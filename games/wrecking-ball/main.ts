@@ -52,7 +52,7 @@ import {
   BALL_RADIUS,
   buildWreckingBall,
   CHAIN_LINKS,
-  CLEAR_FRACTION,
+  clearTarget,
   fallenCount,
   hookPosition,
   JIB_HEIGHT,
@@ -136,7 +136,7 @@ function gameStep(world: PhysicsWorld): void {
     // A fallen piece keeps its material, darkened (grey read as a different material).
     for (const p of handles.pieces) if (p.fallen && isAlive(world, p.body)) renderer.setColor(p.body, darken(COLORS[p.kind], 0.62));
   }
-  if (!cleared && fallenCount(handles.pieces) >= CLEAR_FRACTION * handles.pieces.length) {
+  if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces)) {
     cleared = true;
     sound.chime(1046, 0.6);
     levelScore += 500;
@@ -151,7 +151,7 @@ const game = await startThreeGame({
   step: gameStep,
   bodies: () => handles.pieces.length,
   controls: [
-    { keys: 'A D / ← →', action: 'slew the jib', touch: 'Slew' },
+    { keys: 'A D / ← →', action: 'slew the jib', touch: '⟲ ⟳' },
     { keys: 'W S / ↑ ↓', action: 'trolley out / in', touch: 'Out / In' },
     { keys: 'Q E', action: 'hook up / down', touch: 'Up / Down' },
     { keys: 'Click a target', action: 'swing the ball at it', touch: 'Tap a target' },
@@ -366,17 +366,24 @@ function drawChain(hook: ArrayLike<number>): void {
   }
 }
 
-// The camera follows the action: the orbit's target eases toward a point between the mast and the
-// ball (FOLLOW of the way a frame), and the camera moves with it, so a player's own orbit and zoom
-// are kept while the ball swings out to the far side of the crane.
-const FOLLOW = 0.04;
+// The camera follows the action only when it would leave the view: while the ball is within the
+// middle FOLLOW_EDGE of the view (in normalised device coordinates) the camera holds still, so a
+// target a player is about to tap stays where they saw it (a camera always easing toward the ball
+// moved the targets under a playtester's finger); past that the orbit's target eases toward a point
+// between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
+// player's own orbit and zoom.
+const FOLLOW = 0.04,
+  FOLLOW_EDGE = 0.8;
 const followGoal = new Vector3(),
   followStep = new Vector3(),
-  followBall = [0, 0, 0];
-/** Eases the camera and its orbit target toward the action (see FOLLOW). */
+  followBall = [0, 0, 0],
+  followNdc = new Vector3();
+/** Eases the camera and its orbit target toward the action when the ball nears the view's edge (see FOLLOW). */
 function followAction(): void {
   const controls = app.controls;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
+  followNdc.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
+  if (Math.abs(followNdc.x) < FOLLOW_EDGE && Math.abs(followNdc.y) < FOLLOW_EDGE && followNdc.z < 1) return;
   followGoal.set(0.6 * followBall[0]!, 2.5, 0.6 * followBall[2]!);
   followStep.subVectors(followGoal, controls.target).multiplyScalar(FOLLOW);
   controls.target.add(followStep);
@@ -411,12 +418,12 @@ window.addEventListener('blur', () => held.clear());
 // Touch: the crane's six drives as hold buttons (the same keys), and "Next level" once cleared.
 createButtonBar(
   [
-    { label: '⟲ Slew', name: 'slew the jib left', key: 'a' },
-    { label: 'Slew ⟳', name: 'slew the jib right', key: 'd' },
+    { label: '⟲', name: 'slew the jib left', key: 'a' },
+    { label: '⟳', name: 'slew the jib right', key: 'd' },
     { label: 'Out', name: 'trolley out', key: 'w' },
     { label: 'In', name: 'trolley in', key: 's' },
-    { label: 'Up ▲', name: 'hook up', key: 'q' },
-    { label: 'Down ▼', name: 'hook down', key: 'e' },
+    { label: 'Up', name: 'hook up', key: 'q' },
+    { label: 'Down', name: 'hook down', key: 'e' },
   ],
   { label: 'crane' },
 );
@@ -569,7 +576,7 @@ function frame(): void {
       f = fallenCount(handles.pieces);
     status.textContent = cleared
       ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${Math.ceil(CLEAR_FRACTION * n)})${swingPhase()}`;
+      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
