@@ -4,11 +4,15 @@
  * auto-show. The page (main.ts) adds input, the panel and the renderer.
  *
  * Physics (all SI, y up):
- * - A shell is a body (1 kg, no drag), launched from the ground with the velocity that puts
- *   the apex of its (drag-free) parabola at the target: v_y = sqrt(2 g h), flight time T = v_y / g,
- *   v_x = dx / T (Ramtal and Dobre ch. 4, projectiles). With g = 0 it flies straight to the target
- *   in T = 2 s. Its fuse is T: at the first step where its age reaches T it bursts and is removed.
- *   An emitter attached to it sheds a glittering tail.
+ * - A shell is a body (1 kg) launched from the ground and timed to burst at the target `FUSE` (2 s)
+ *   after launch, so a tap answers quickly whatever the height. A target low enough for a drag-free
+ *   parabola to peak there within FUSE (h <= g FUSE^2 / 2, 19.6 m) gets that parabola: v_y =
+ *   sqrt(2 g h), fuse T = v_y / g, v_x = dx / T (Ramtal and Dobre ch. 4, projectiles). A higher one
+ *   is launched faster and slowed by linear air drag F = -c m v (Ramtal and Dobre ch. 7), c chosen
+ *   so that the apex comes at FUSE, as a real shell decelerates to its apex (`shellFlight`; c is
+ *   capped at `SHELL_DRAG_MAX`, above which the shell bursts still rising). With g = 0 it flies
+ *   straight to the target in FUSE. At the first step where its age reaches the fuse it bursts and
+ *   is removed. An emitter attached to it sheds a glittering tail.
  * - A burst spawns `sparks x burstScale(hold)` sparks of one random colour at the shell's position,
  *   passing on its velocity, with launch speeds scaled by sqrt(burstScale) (the burst's area grows
  *   with its spark count, so it looks as dense). Sparks fall under gravity with quadratic drag
@@ -68,6 +72,28 @@ export const MAX_SHELLS = 64;
  * frames a little instead of one frame a lot (each spawn costs the physics tens of microseconds).
  */
 export const BURST_SPARKS_PER_STEP = 2000;
+
+/**
+ * Time from launch to burst of a shell aimed higher than g FUSE^2 / 2 (19.6 m), s: a tap bursts
+ * about this long after it at every height (lower targets peak sooner, 1.5 s at the lowest).
+ */
+export const FUSE = 2;
+
+/**
+ * Largest linear drag rate c = k / m of a shell, 1/s: enough for a 400 m apex in FUSE at 9.81 m/s^2;
+ * beyond it (a weak gravity) the shell bursts at the target still rising. Kept well below the
+ * engine's stiff limit (c dt < 0.25) so the drag stays an explicit force the launch can solve for.
+ */
+export const SHELL_DRAG_MAX = 4;
+
+/**
+ * Width of the sky, m, in which a burst has its nominal size (BURST_SPEED, the drag option): a
+ * phone held upright, 64 m across. A sky w wide scales every burst by w / this (`FireworksShow.reach`).
+ */
+export const BURST_REFERENCE_WIDTH = 64;
+
+/** How long the auto-show waits after a player's launch, s, so the player's shells are the only ones in the sky. */
+export const PLAYER_PAUSE = 8;
 
 /** Longest hold that still makes the burst bigger, s. */
 export const MAX_HOLD = 1.5;
@@ -393,9 +419,10 @@ export function createFireworks(options: FireworksOptions = {}): { world: Physic
 }
 
 /**
- * Launches a shell from the ground towards (targetX, targetY), m, where it bursts at the apex (the
- * target is clamped into the show's sky, `params.sky`: x in [4, width - 4], y in [12, height - 3]). The launch point is on
- * the ground between the middle of the sky and the target, jittered. The burst's size follows
+ * Launches a shell from the ground towards (targetX, targetY), m, where it bursts FUSE (2 s) later
+ * at the apex of its flight, or sooner for a low target (see `shellFlight`). The target is clamped
+ * into the show's sky, `params.sky`: x in [4, width - 4], y in [12, height - 3]. The launch point is
+ * on the ground between the middle of the sky and the target, jittered. The burst's size follows
  * `burstScale(holdSeconds)`; its colour is drawn from the palette; what it does is `recipe`
  * (./recipes.ts; default 'crackle', the book's stars that burst into stars).
  * @returns the shell's entity id, or 0 if `MAX_SHELLS` shells are already in flight.
@@ -420,22 +447,18 @@ export function launchShell(
   const ty = Math.min(sky.height - 3, Math.max(12, targetY));
   const x0 = Math.min(sky.width - 2, Math.max(2, 0.5 * sky.width + 0.5 * (tx - 0.5 * sky.width) + rng.range(-4, 4)));
   const y0 = 0.5;
-  const g = -world.gravity[1]!;
-  const h = ty - y0;
-  let vx: number, vy: number, fuse: number;
-  if (g > 1e-6) {
-    vy = Math.sqrt(2 * g * h);
-    fuse = vy / g;
-    vx = (tx - x0) / fuse;
-  } else {
-    fuse = 2;
-    vx = (tx - x0) / fuse;
-    vy = h / fuse;
-  }
+  const flight = shellFlight(-world.gravity[1]!, ty - y0, world.dt / world.substeps);
+  const vx = (tx - x0) * flight.perMetreX,
+    vy = flight.vy;
   const color = rng.int(0, PALETTE.length - 1);
   // Take a placeholder's room (so a world full of sparks still has room for the shell).
   removeBody(world, show.placeholders.pop()!);
-  const id = addBody(world, { position: [x0, y0], velocity: [vx, vy], mass: 1 });
+  const id = addBody(world, {
+    position: [x0, y0],
+    velocity: [vx, vy],
+    mass: 1,
+    ...(flight.drag > 0 ? { linearDrag: flight.drag } : {}),
+  });
   addEmitter(world, {
     attachTo: id,
     rate: 90,
@@ -456,12 +479,72 @@ export function launchShell(
   });
   const i = show.shellCount++;
   show.shellIds[i] = id;
-  show.shellBurstTime[i] = world.time + fuse;
+  show.shellBurstTime[i] = world.time + flight.fuse;
   show.shellScale[i] = scale;
   show.shellColor[i] = color;
   show.shellRecipe[i] = recipeIndex;
   show.launched++;
   return id;
+}
+
+/** How a shell flies to a target: see `shellFlight`. */
+export interface ShellFlight {
+  /** Time from launch to burst, s. */
+  fuse: number;
+  /** Vertical launch speed, m/s. */
+  vy: number;
+  /** Horizontal launch speed per metre of horizontal distance to the target, 1/s. */
+  perMetreX: number;
+  /** Linear drag coefficient of the 1 kg shell, N s/m (= its decay rate c, 1/s); 0 for none. */
+  drag: number;
+}
+
+/**
+ * The flight of a shell climbing `height` m (> 0) under gravity `g` m/s^2 in steps of `h` s: it
+ * reaches the height after `fuse` s, at its apex when it can.
+ *
+ * - g = 0: a straight line in FUSE, no drag.
+ * - height <= g FUSE^2 / 2: the drag-free parabola peaking there, fuse sqrt(2 height / g) (the
+ *   integrator follows a drag-free body's parabola exactly).
+ * - higher: linear drag c (F = -c m v) and a launch speed that make the apex come after N = FUSE / h
+ *   steps at the height. It is solved on the integrator's own recursion (semi-implicit Euler with
+ *   the drag as a force, v' = (1 - c h) v - g h, y' = y + h v'), whose closed form with r = 1 - c h
+ *   is v_N = r^N (v0 + g / c) - g / c and y_N = v0 A - (g / c)(N h - A), A = r (1 - r^N) / c: so the
+ *   burst lands on the target to rounding, not to the time step's error. v_N = 0 gives v0; the
+ *   apex height grows with c, found by bisection. If even SHELL_DRAG_MAX does not reach the height,
+ *   the shell keeps that drag and is launched to reach it after N steps still rising.
+ *   The horizontal motion has the same decay and no gravity: x_N = vx0 A.
+ * @throws RangeError unless g >= 0, height > 0 and h > 0 are finite.
+ */
+export function shellFlight(g: number, height: number, h: number): ShellFlight {
+  check(Number.isFinite(g) && g >= 0, `shellFlight: g must be finite and >= 0, got ${g}`);
+  check(Number.isFinite(height) && height > 0, `shellFlight: height must be finite and > 0, got ${height}`);
+  check(Number.isFinite(h) && h > 0, `shellFlight: h must be finite and > 0, got ${h}`);
+  if (g <= 1e-6) return { fuse: FUSE, vy: height / FUSE, perMetreX: 1 / FUSE, drag: 0 };
+  if (height <= 0.5 * g * FUSE * FUSE) {
+    const vy = Math.sqrt(2 * g * height);
+    return { fuse: vy / g, vy, perMetreX: g / vy, drag: 0 };
+  }
+  const n = Math.max(1, Math.round(FUSE / h));
+  // A(c), the distance per m/s of launch speed after n steps, and the apex height for drag c.
+  const perSpeed = (c: number): number => ((1 - c * h) * (1 - (1 - c * h) ** n)) / c;
+  const apexHeight = (c: number): number => {
+    const a = perSpeed(c);
+    return (g / c) * ((1 - c * h) ** -n - 1) * a - (g / c) * (n * h - a);
+  };
+  let c = SHELL_DRAG_MAX;
+  if (apexHeight(SHELL_DRAG_MAX) > height) {
+    let lo = 1e-3,
+      hi = SHELL_DRAG_MAX;
+    for (let i = 0; i < 60; i++) {
+      const mid = 0.5 * (lo + hi);
+      if (apexHeight(mid) < height) lo = mid;
+      else hi = mid;
+    }
+    c = 0.5 * (lo + hi);
+  }
+  const a = perSpeed(c);
+  return { fuse: n * h, vy: (height + (g / c) * (n * h - a)) / a, perMetreX: 1 / a, drag: c };
 }
 
 /** Removes shell entry i (swap with the last). */

@@ -21,7 +21,15 @@ interface LayerStats {
 }
 interface FireworksGame {
   params: { autoShow: boolean; trails: boolean };
-  show: { launched: number; bursts: number; shellCount: number; shellScale: Float64Array };
+  show: {
+    launched: number;
+    bursts: number;
+    shellCount: number;
+    shellScale: Float64Array;
+    flashCount: number;
+    flashes: Float64Array;
+    autoPause: number;
+  };
   launch(x: number, y: number, hold?: number): number;
   particleCount(): number;
   particleStats(): LayerStats;
@@ -65,14 +73,17 @@ describe('fireworks', () => {
     expect(page.errors).toEqual([]);
   });
 
-  it('a click launches a shell whose sparks appear, fall and all expire', async () => {
+  it('a click launches a shell that bursts where clicked about 2 s later, whose sparks appear, fall and all expire', async () => {
     const g = page;
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleCount())).toBe(0);
-    // Low in the sky, so the flight is short.
+    // Paused from the click on: the test steps the show itself, synchronously in the page, and then
+    // lets two frames draw it (a loaded machine drawing a frame a second takes the same steps as a
+    // fast one), so the steps counted from the launch are its fuse.
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
     await g.clickCanvas(0.5, 0.62);
     await g.waitFor(() => (window.game as unknown as FireworksGame).show.launched === 1, null);
-    // From here the test steps the show itself, synchronously in the page, and then lets two frames
-    // draw it: a loaded machine drawing a frame a second takes the same steps as a fast one.
     type Stepped = FireworksGame & { loop: { stepOnce(): void } };
     // The rising tail, then the burst (generation 1 only).
     const burstAfter = await g.page.evaluate(() => {
@@ -86,7 +97,18 @@ describe('fireworks', () => {
       (game as unknown as { paused: boolean }).paused = true; // drawn as it is: no step between frames
       return steps;
     });
-    expect(burstAfter).toBeLessThan(1200);
+    // About 2 s after the click (the drag-free flight to the apex used to take 3 to 5 s).
+    expect(burstAfter / 60).toBeGreaterThan(1.6);
+    expect(burstAfter / 60).toBeLessThan(2.4);
+    // On the clicked point, in page px.
+    const b = await g.canvasBox();
+    const at = await g.page.evaluate(() => {
+      const { show, renderer } = window.game as unknown as FireworksGame & {
+        renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+      };
+      return [renderer.camera.toScreenX(show.flashes[0]!), renderer.camera.toScreenY(show.flashes[1]!)];
+    });
+    expect(Math.hypot(at[0]! - 0.5 * b.width, at[1]! - 0.62 * b.height)).toBeLessThan(4);
     await g.frames(2);
     const peak = await g.page.evaluate(() => (window.game as unknown as FireworksGame).particleStats());
     // The burst's first frames draw its flash at the centre (they were a ring of sparks with nothing inside).

@@ -268,8 +268,21 @@ describe('phone controls', () => {
     };
     expect(await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played)).toBe(0);
     // High in the canvas: on the old wide sky fitted into a tall screen, taps above the sky's band
-    // burst about 145 px below the finger.
+    // burst about 145 px below the finger. Paused for the tap, so its fuse can be read exactly.
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
     await g.page.locator('canvas').tap({ position: { x: 200, y: 150 } });
+    const fuse = await g.waitFor(() => {
+      const game = window.game as unknown as { show: { shellCount: number; shellBurstTime: Float64Array }; world: { time: number } };
+      return game.show.shellCount === 1 ? game.show.shellBurstTime[0]! - game.world.time : null;
+    }, null);
+    // About 2 s after the tap (the drag-free flight to the apex used to take 3 to 5 s).
+    expect(fuse).toBeGreaterThan(1.6);
+    expect(fuse).toBeLessThan(2.4);
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     // The first input starts the audio context; the launch and its burst (2 s later) make sounds.
     await g.waitFor(
       () => (window.game as unknown as Sounding).sound.running && (window.game as unknown as Sounding).sound.played >= 2,

@@ -34,13 +34,16 @@ function burstOne(recipe: RecipeName, drag = 0) {
   launchShell(world, show, 60, 40, 0, recipe);
   let v: [number, number] = [0, 0];
   const shell = show.shellIds[0]!;
+  // The shell's linear drag rate, 1/s (a 1 kg body: k = c).
+  const c = world.components.LinearDrag.k[slotOf(shell)]!;
   for (let i = 0; i < 600 && show.bursts === 0; i++) {
     v = [world.components.Velocity.x[slotOf(shell)]!, world.components.Velocity.y[slotOf(shell)]!];
     stepFireworks(world, show);
   }
   expect(show.bursts).toBe(1);
-  // v was read before the burst step; the shell has no drag, so the step added exactly g dt downwards.
-  v[1] -= 9.81 * world.dt;
+  // v was read before the burst step, which added the shell's drag -c v dt and gravity -g dt.
+  const dt = world.dt;
+  v = [v[0] - c * v[0] * dt, v[1] - c * v[1] * dt - 9.81 * dt];
   return { world, show, shellVelocity: v, em: recipeEmitterOf(world, show, recipe) };
 }
 

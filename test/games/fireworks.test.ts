@@ -1,7 +1,9 @@
 /**
  * The fireworks show without a page (games/fireworks/show.ts): launches reach their target, burst
  * into as many sparks as the hold asks for, the sparks fall, fade and expire; generations; a long
- * auto-show stays within the world's capacity; the same seed replays the same show.
+ * auto-show stays within the world's capacity; the same seed replays the same show. A shell bursts on
+ * its target about FUSE (2 s) after launch at any height; bursts grow with the sky's width and the
+ * hold; a player's launch holds the auto-show for PLAYER_PAUSE.
  */
 
 import { type PhysicsWorld, slotOf, stepMany } from '@bitphysics/physics';
@@ -13,6 +15,7 @@ import {
   CRACKLES,
   createFireworks,
   type FireworksShow,
+  FUSE,
   launchShell,
   MAX_HOLD,
   MAX_SHELLS,
@@ -24,6 +27,7 @@ import {
   setShowGenerations,
   setShowGravity,
   setShowSparks,
+  shellFlight,
   stepFireworks,
 } from '../../games/fireworks/show';
 
@@ -272,5 +276,63 @@ describe('the show', () => {
     const at = sparkCentre(world, show);
     expect(at[0]).toBeCloseTo(30, 6);
     expect(at[1]).toBeCloseTo(40, 6);
+  });
+});
+
+describe('quick response: the fuse', () => {
+  /** Time from launch to burst, where the burst centre is, and the shell's vertical speed just before. */
+  const flight = (sky: { width: number; height: number }, x: number, y: number) => {
+    const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 50, seed: 21, sky });
+    const e = slotOf(launchShell(world, show, x, y, 0));
+    let steps = 0,
+      speed = 0;
+    while (show.bursts === 0 && steps < 1000) {
+      speed = Math.abs(world.components.Velocity.y[e]!);
+      stepFireworks(world, show);
+      steps++;
+    }
+    return { seconds: steps * world.dt, at: sparkCentre(world, show), speed };
+  };
+
+  test('a shell aimed anywhere in a desktop or phone sky bursts on its target 1.5 to 2 s after launch, near its apex', () => {
+    for (const sky of [
+      { width: 120, height: 124 }, // desktop, 1280 x 800
+      { width: 64, height: 125 }, // phone held upright, 390 x 844
+    ]) {
+      for (const y of [12, 16, 25, 40, 70, 100, sky.height - 3]) {
+        const x = 0.3 * sky.width;
+        const f = flight(sky, x, y);
+        // The old apex-of-a-parabola flight took sqrt(2 y / g): 3.6 s at 65 m, 4.9 s at 121 m.
+        expect(f.seconds).toBeLessThanOrEqual(FUSE + 1e-9);
+        expect(f.seconds).toBeGreaterThan(1.5);
+        if (y - 0.5 > 0.5 * 9.81 * FUSE * FUSE) expect(f.seconds).toBeCloseTo(FUSE, 9);
+        // On target to a few cm (the launch is solved on the integrator's own recursion)...
+        expect(Math.hypot(f.at[0] - x, f.at[1] - y)).toBeLessThan(0.05);
+        // ...and at the apex: the sparks do not inherit a climb (one step's g dt, plus rounding).
+        expect(f.speed).toBeLessThan(0.5);
+      }
+    }
+  });
+
+  test('shellFlight: drag only above g FUSE^2 / 2, capped at SHELL_DRAG_MAX (then it bursts still rising); zero gravity flies straight', () => {
+    const h = 1 / 60;
+    expect(shellFlight(9.81, 15, h).drag).toBe(0);
+    expect(shellFlight(9.81, 15, h).fuse).toBeCloseTo(Math.sqrt(30 / 9.81), 12);
+    const high = shellFlight(9.81, 120, h);
+    expect(high.drag).toBeGreaterThan(1);
+    expect(high.fuse).toBeCloseTo(FUSE, 12);
+    expect(shellFlight(0, 50, h)).toEqual({ fuse: FUSE, vy: 25, perMetreX: 0.5, drag: 0 });
+    // Weak gravity: the apex would need more drag than the cap; the shell reaches 100 m rising.
+    const weak = createFireworks({ opening: 0, generations: 1, sparks: 50, gravity: 0.3, seed: 3, sky: { width: 120, height: 124 } });
+    const e = slotOf(launchShell(weak.world, weak.show, 60, 100.5, 0));
+    expect(weak.world.components.LinearDrag.k[e]).toBe(4);
+    let vy = 0;
+    while (weak.show.bursts === 0) {
+      vy = weak.world.components.Velocity.y[e]!;
+      stepFireworks(weak.world, weak.show);
+    }
+    expect(vy).toBeGreaterThan(0.02); // at an apex it would be g dt / (1 - c dt), 0.005 m/s
+    expect(sparkCentre(weak.world, weak.show)[1]).toBeCloseTo(100.5, 6);
+    expect(() => shellFlight(9.81, 0, h)).toThrow(/height must be finite and > 0/);
   });
 });
