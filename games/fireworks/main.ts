@@ -381,7 +381,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const fade = 1 - age / FLASH_SECONDS,
       x = cam.toScreenX(show.flashes[f]!),
       y = cam.toScreenY(show.flashes[f + 1]!),
-      r = cam.toScreenLength(1.6 * Math.sqrt(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
+      r = cam.toScreenLength(1.6 * show.reach * Math.sqrt(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
     const sprite = flashSprites[k % FLASHES]!;
     sprite.visible = true;
     sprite.position.set(x, y);
@@ -392,7 +392,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   if (pointerId !== -1) {
     const hold = (performance.now() - pressedAt) / 1000;
     const s = burstScale(hold);
-    const r = cam.toScreenLength(2.5 * Math.sqrt(s));
+    const r = cam.toScreenLength(2.5 * show.reach * Math.sqrt(s));
     overlay.circle(pointerX, pointerY, r).stroke({ width: 2, color: 0xffe8a0, alpha: 0.35 + 0.25 * (s - 1) });
     overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.8 });
   }

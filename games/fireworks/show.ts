@@ -14,10 +14,14 @@
  *   straight to the target in FUSE. At the first step where its age reaches the fuse it bursts and
  *   is removed. An emitter attached to it sheds a glittering tail.
  * - A burst spawns `sparks x burstScale(hold)` sparks of one random colour at the shell's position,
- *   passing on its velocity, with launch speeds scaled by sqrt(burstScale) (the burst's area grows
- *   with its spark count, so it looks as dense). Sparks fall under gravity with quadratic drag
- *   F = -k |v| v (mass 1 g; terminal speed sqrt(m g / k), 14 m/s at the default k), and fade and
- *   shrink over their lifetime (the look over life of the physics emitters).
+ *   passing on its velocity. Its size follows the sky (`reach`: sky width / BURST_REFERENCE_WIDTH,
+ *   so a burst covers the same fraction of a wide desktop sky as of a phone's) and the hold
+ *   (sqrt(burstScale): the area grows with the spark count, so it looks as dense): for a size
+ *   factor R the stars leave R times faster under 1 / R times the drag, which makes the whole
+ *   drag-dominated burst R times larger (x(t) = ln(1 + k v0 t / m) m / k scales with v0 at fixed
+ *   k v0). Sparks fall under gravity with quadratic drag F = -k |v| v (mass 1 g; terminal speed
+ *   sqrt(m g / k), 14 m/s at the default k), and fade and shrink over their lifetime (the look over
+ *   life of the physics emitters).
  * - Generations: with `generations` >= 2 every spark bursts into crackles when it dies, and with 3
  *   the crackles burst once more (the emitters' onDeath with a generation limit, Ramtal and Dobre
  *   ch. 12).
@@ -51,7 +55,10 @@ export const SKY = Object.freeze({ width: 120, height: 70 });
 /** Mass of a spark, kg (1 g): the drag coefficient k is per spark of this mass. */
 export const SPARK_MASS = 1e-3;
 
-/** Launch speed of the sparks of a normal-size burst (burstScale 1), m/s: uniform in [SPEED_MIN, 1] x this. */
+/**
+ * Launch speed of the sparks of a normal-size burst (burstScale 1) in a BURST_REFERENCE_WIDTH sky,
+ * m/s: uniform in [SPEED_MIN, 1] x this (x `reach` in another sky).
+ */
 export const BURST_SPEED = 16;
 
 /** Slowest spark of a burst as a fraction of the fastest (a filled disc with a bright rim, like a peony shell seen from the side). */
@@ -166,6 +173,13 @@ export interface FireworksShow {
   act: number;
   /** Seconds until the auto-show's next launch. */
   autoTimer: number;
+  /** Seconds the auto-show still waits after a player's launch (`pauseAutoShow`); 0 when not waiting. */
+  autoPause: number;
+  /**
+   * Size factor of every burst for this sky: sky width / BURST_REFERENCE_WIDTH (1 on a phone, 1.875
+   * in the 120 m desktop sky). Star speeds are multiplied and star drag divided by it.
+   */
+  readonly reach: number;
   /** Shells launched and burst since the start. */
   launched: number;
   bursts: number;
@@ -179,14 +193,14 @@ export interface FireworksShow {
   readonly placeholders: number[];
   /**
    * Bursts still spawning (see BURST_SPARKS_PER_STEP), entries 0..pendingCount-1: position (m),
-   * velocity passed on (m/s), emitter, sparks left, speed factor sqrt(scale).
+   * velocity passed on (m/s), emitter, sparks left, slowest and fastest star speed (m/s), star drag (kg/m).
    */
   readonly pending: Float64Array;
   pendingCount: number;
 }
 
-/** Fields of a pending burst in `FireworksShow.pending`: x, y, vx, vy, emitter, stars left, slowest and fastest speed (m/s). */
-const PEND = 8;
+/** Fields of a pending burst in `FireworksShow.pending`: x, y, vx, vy, emitter, stars left, slowest and fastest speed (m/s), drag (kg/m). */
+const PEND = 9;
 
 /**
  * One act of the auto-show: `count` shells of `recipe` (a salvo when more than one) then a pause of
@@ -318,14 +332,16 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
   const p = resolveFireworksOptions(options);
   check(world.dimensions === 2, `needs a 2D world, got dimensions ${world.dimensions}`);
   const policy = 'recycle-oldest' as const;
+  // The crackles scale with the sky like the bursts they come from (see `reach`).
+  const reach = p.sky.width / BURST_REFERENCE_WIDTH;
   const crackle2 = addEmitter(world, {
-    speed: [1.5, 4],
+    speed: [1.5 * reach, 4 * reach],
     lifetime: [0.3, 0.6],
     inheritVelocity: 1,
     policy,
     particle: {
       mass: SPARK_MASS,
-      quadraticDrag: p.drag,
+      quadraticDrag: p.drag / reach,
       colorStart: 0xffffff,
       colorEnd: 0xffa040,
       sizeStart: 0.8,
@@ -336,13 +352,13 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
   });
   const crackles = PALETTE.map((color) =>
     addEmitter(world, {
-      speed: [2, 5],
+      speed: [2 * reach, 5 * reach],
       lifetime: [0.35, 0.7],
       inheritVelocity: 1,
       policy,
       particle: {
         mass: SPARK_MASS,
-        quadraticDrag: p.drag,
+        quadraticDrag: p.drag / reach,
         colorStart: mix(color, 0xffffff, 0.55),
         colorEnd: shade(color, 0.6),
         sizeStart: 0.9,
@@ -355,6 +371,7 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
   );
   const sparks = PALETTE.map((color, i) =>
     addEmitter(world, {
+      // Speeds and drag here are nominal: each burst sets its own (emitPending).
       speed: [SPEED_MIN * BURST_SPEED, BURST_SPEED],
       // A spherical shell seen from the side (RECIPES.crackle.sphere).
       projectSphere: true,
@@ -390,6 +407,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
     recipeDrag: new Map(),
     act: 0,
     autoTimer: 0.5,
+    autoPause: 0,
+    reach,
     launched: 0,
     bursts: 0,
     flashes: new Float64Array(4 * FLASHES),
@@ -565,8 +584,8 @@ function burstColor(burst: 'same' | 'white' | 'gold', color: number): number {
 /**
  * The emitter of `recipe`'s stars in palette colour `colorIndex` (or the recipe's own colour), with
  * its chain of onDeath emitters (innermost first: a star's burst is an emitter of the physics package
- * too). `buildFireworks` makes them all up front, so a full world never refuses one; later calls
- * return the same emitter.
+ * too; their speeds and drag follow the show's `reach`). `buildFireworks` makes them all up front,
+ * so a full world never refuses one; later calls return the same emitter.
  * @throws RangeError (from addEmitter) if called for a new one in a full world.
  */
 export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: ShellRecipe, colorIndex: number): number {
@@ -576,6 +595,7 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
   if (known !== undefined) return known;
   const policy = 'recycle-oldest' as const;
   const drag = show.params.drag;
+  const reach = show.reach;
   let onDeath: { emitter: number; count: number; maxGeneration: number } | undefined;
   const b = recipe.onDeath;
   if (b) {
@@ -584,13 +604,13 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
     let inner: number | null = null;
     for (let level = levels; level >= 1; level--) {
       const em: number = addEmitter(world, {
-        speed: [b.speed[0], b.speed[1]],
+        speed: [b.speed[0] * reach, b.speed[1] * reach],
         lifetime: [b.lifetime[0], b.lifetime[1]],
         inheritVelocity: 1,
         policy,
         particle: {
           mass: SPARK_MASS,
-          quadraticDrag: drag * recipe.drag,
+          quadraticDrag: (drag * recipe.drag) / reach,
           colorStart: c,
           colorEnd: shade(c, 0.6),
           sizeStart: b.size,
@@ -600,11 +620,12 @@ export function recipeEmitter(world: PhysicsWorld, show: FireworksShow, recipe: 
         },
         ...(inner !== null ? { onDeath: { emitter: inner, count: b.count, maxGeneration: 16 } } : {}),
       });
-      show.recipeDrag.set(em, recipe.drag);
+      show.recipeDrag.set(em, recipe.drag / reach);
       inner = em;
     }
     onDeath = { emitter: inner!, count: b.count, maxGeneration: 16 };
   }
+  // Speeds and drag of the burst's own stars are nominal: each burst sets its own (emitPending).
   const em = addEmitter(world, {
     speed: [recipe.speed[0] * BURST_SPEED, recipe.speed[1] * BURST_SPEED],
     projectSphere: recipe.sphere,
@@ -633,7 +654,8 @@ const burstPos = [0, 0],
 
 /**
  * Bursts every shell whose fuse has burnt: `sparks x scale` sparks of its colour at its position,
- * passing on its velocity, launched at sqrt(scale) x the normal speeds; the shell is removed and its
+ * passing on its velocity, launched at R = reach x sqrt(scale) times the normal speeds under 1 / R
+ * times the drag (a burst R times larger, see the file's header); the shell is removed and its
  * room given back to a placeholder. At most BURST_SPARKS_PER_STEP sparks are spawned a step; the
  * rest of a big burst follows in the next steps. Called by `stepFireworks` after each step.
  */
@@ -650,7 +672,7 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
       const recipe: ShellRecipe = RECIPES[RECIPE_NAMES[show.shellRecipe[i]!]!];
       const colorIndex = show.shellColor[i]!;
       const crackle = recipe.name === 'crackle';
-      const s = Math.sqrt(scale);
+      const s = show.reach * Math.sqrt(scale);
       Q[o] = c.Position.x[slotOf(e)]!;
       Q[o + 1] = c.Position.y[slotOf(e)]!;
       Q[o + 2] = c.Velocity.x[slotOf(e)]!;
@@ -659,6 +681,7 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
       Q[o + 5] = Math.max(1, Math.round(show.params.sparks * scale * recipe.stars));
       Q[o + 6] = (crackle ? SPEED_MIN : recipe.speed[0]) * BURST_SPEED * s;
       Q[o + 7] = (crackle ? 1 : recipe.speed[1]) * BURST_SPEED * s;
+      Q[o + 8] = (show.params.drag * (crackle ? 1 : recipe.drag)) / s;
     }
     const f = 4 * (show.flashCount++ % FLASHES);
     show.flashes[f] = c.Position.x[slotOf(e)]!;
@@ -683,15 +706,19 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
     const n = Math.min(Q[5]!, budget);
     E.speedMin[slotOf(em)] = Q[6]!;
     E.speedMax[slotOf(em)] = Q[7]!;
+    // This burst's drag for its stars only: the emitter keeps the show's nominal drag.
+    const nominal = E.quadraticDrag[slotOf(em)]!;
+    E.quadraticDrag[slotOf(em)] = Q[8]!;
     burstPos[0] = Q[0]!;
     burstPos[1] = Q[1]!;
     burstVel[0] = Q[2]!;
     burstVel[1] = Q[3]!;
     emitNow(world, em, n, burstPos, burstVel);
+    E.quadraticDrag[slotOf(em)] = nominal;
     budget -= n;
     Q[5] = Q[5]! - n;
     if (Q[5] === 0) {
-      // Drop the head entry (at most MAX_SHELLS entries of 7 numbers: a short copy).
+      // Drop the head entry (at most MAX_SHELLS entries of PEND numbers: a short copy).
       Q.copyWithin(0, PEND, PEND * show.pendingCount);
       show.pendingCount--;
     }
@@ -732,14 +759,16 @@ export function setShowGravity(world: PhysicsWorld, show: FireworksShow, g: numb
 }
 
 /**
- * Sets the sparks' quadratic drag coefficient, kg/m in [0, 1e-3]: for sparks, crackles and tails
- * born from now on. @throws RangeError out of range.
+ * Sets the sparks' quadratic drag coefficient, kg/m in [0, 1e-3] (nominal: stars get it divided by
+ * their burst's size factor, see `burstShells`): for sparks, crackles and tails born from now on.
+ * @throws RangeError out of range.
  */
 export function setShowDrag(world: PhysicsWorld, show: FireworksShow, k: number): void {
   checkDrag(k);
   show.params.drag = k;
   const E = world.components.Emitter;
-  for (const em of [...show.emitters.sparks, ...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[slotOf(em)] = k;
+  for (const em of show.emitters.sparks) E.quadraticDrag[slotOf(em)] = k;
+  for (const em of [...show.emitters.crackles, show.emitters.crackle2]) E.quadraticDrag[slotOf(em)] = k / show.reach;
   for (const [em, factor] of show.recipeDrag) E.quadraticDrag[slotOf(em)] = k * factor;
   // The shells' tails (emitters attached to the shells).
   for (let i = 0; i < show.shellCount; i++) E.quadraticDrag[slotOf(show.shellIds[i]!)] = k;

@@ -11,6 +11,7 @@ import { query } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import { RECIPE_NAMES, RECIPES, type RecipeName } from '../../games/fireworks/recipes';
 import {
+  BURST_REFERENCE_WIDTH,
   BURST_SPEED,
   createFireworks,
   type FireworksShow,
@@ -28,10 +29,14 @@ function starsOf(world: PhysicsWorld, em: number): number[] {
   return Array.from(query(world, [P])).filter((e) => P.emitter[e] === slotOf(em));
 }
 
-/** A quiet show (no opening, no auto-show, no drag unless asked) with one shell of `recipe` launched; steps until it bursts. */
+/**
+ * A quiet show (no opening, no auto-show, no drag unless asked) with one shell of `recipe` launched;
+ * steps until it bursts. The sky is BURST_REFERENCE_WIDTH wide, where stars leave at their nominal
+ * speeds under the nominal drag (a wider sky scales both).
+ */
 function burstOne(recipe: RecipeName, drag = 0) {
-  const { world, show } = createFireworks({ seed: 5, opening: 0, sparks: 400, drag });
-  launchShell(world, show, 60, 40, 0, recipe);
+  const { world, show } = createFireworks({ seed: 5, opening: 0, sparks: 400, drag, sky: { width: BURST_REFERENCE_WIDTH, height: 70 } });
+  launchShell(world, show, 40, 40, 0, recipe);
   let v: [number, number] = [0, 0];
   const shell = show.shellIds[0]!;
   // The shell's linear drag rate, 1/s (a 1 kg body: k = c).

@@ -10,6 +10,7 @@ import { type PhysicsWorld, slotOf, stepMany } from '@bitphysics/physics';
 import { query } from 'bitecs';
 import { describe, expect, test } from 'vitest';
 import {
+  BURST_REFERENCE_WIDTH,
   BURST_SPARKS_PER_STEP,
   burstScale,
   CRACKLES,
@@ -334,5 +335,39 @@ describe('quick response: the fuse', () => {
     expect(vy).toBeGreaterThan(0.02); // at an apex it would be g dt / (1 - c dt), 0.005 m/s
     expect(sparkCentre(weak.world, weak.show)[1]).toBeCloseTo(100.5, 6);
     expect(() => shellFlight(9.81, 0, h)).toThrow(/height must be finite and > 0/);
+  });
+});
+
+describe('burst size', () => {
+  /** Radius (m) holding 90% of the first-generation stars 1 s after the burst, and the sky's width. */
+  const radius = (width: number, hold: number) => {
+    const sky = { width, height: 124 };
+    const { world, show } = createFireworks({ opening: 0, generations: 1, sparks: 400, seed: 31, sky });
+    launchShell(world, show, width / 2, 80, hold);
+    while (show.bursts === 0) stepFireworks(world, show);
+    run(world, show, 60);
+    const P = world.components.Particle,
+      X = world.components.Position;
+    const ids = Array.from(query(world, [P])).filter((e) => show.emitters.sparks.includes(P.emitter[e]!));
+    const [cx, cy] = [show.flashes[0]!, show.flashes[1]!];
+    const d = ids.map((e) => Math.hypot(X.x[e]! - cx, X.y[e]! - cy)).sort((a, b) => a - b);
+    return d[Math.floor(0.9 * d.length)]!;
+  };
+
+  test('a burst covers about the same fraction of the sky on a desktop (120 m) as on a phone (64 m)', () => {
+    const phone = radius(BURST_REFERENCE_WIDTH, 0),
+      desktop = radius(120, 0);
+    // Before, both were the same size in metres (desktop / phone fraction 64 / 120 = 0.53).
+    expect(desktop / 120 / (phone / BURST_REFERENCE_WIDTH)).toBeGreaterThan(0.85);
+    expect(desktop / 120 / (phone / BURST_REFERENCE_WIDTH)).toBeLessThan(1.15);
+  });
+
+  test('a held burst is larger in radius, not only in count: about sqrt(3) at MAX_HOLD', () => {
+    for (const width of [BURST_REFERENCE_WIDTH, 120]) {
+      const ratio = radius(width, MAX_HOLD) / radius(width, 0);
+      // Before, the drag held it to about 1.35 (speeds x sqrt(3) under the same drag).
+      expect(ratio).toBeGreaterThan(1.5);
+      expect(ratio).toBeLessThan(1.9);
+    }
   });
 });
