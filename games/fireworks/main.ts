@@ -2,9 +2,11 @@
  * Fireworks: a show that runs on its own (the auto-show plays ./show.ts `PROGRAMME`: peonies,
  * chrysanthemums, willows, rings, crossettes, palms, strobes and the book's crackling stars, singly
  * and in salvos), and click (or tap) to launch a shell from the ground towards the pointer; it bursts
- * at the apex into stars as its recipe says (./recipes.ts), which fall under gravity with quadratic
- * drag and fade over their lifetime. Hold the button longer for a bigger burst (up to three times the
- * stars at 1.5 s). Random colours, additive blending, star trails.
+ * there about 2 s later (show.ts FUSE) into stars as its recipe says (./recipes.ts), which fall under
+ * gravity with quadratic drag and fade over their lifetime. Hold the button longer for a bigger
+ * burst (up to three times the stars, 1.7 times the radius, at 1.5 s). A player's launch (click, tap,
+ * Space, the panel's button) holds the auto-show for 8 s (show.ts PLAYER_PAUSE), so the player's
+ * shells are the only new ones in the sky. Random colours, additive blending, star trails.
  *
  * Keys: P pause, N single step, R reset, A auto-show on / off, T trails on / off, Space random shell.
  * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3 (the crackle recipe), ?auto=0|1
@@ -43,6 +45,8 @@ import {
   fireworksWorldOptions,
   launchShell,
   MAX_HOLD,
+  PLAYER_PAUSE,
+  pauseAutoShow,
   SKY,
   setAutoShow,
   setShowDrag,
@@ -135,7 +139,7 @@ const game = await startPixiGame({
   step: (world) => stepFireworks(world, show),
   controls: [
     { keys: 'Click', action: 'launch a shell (hold: bigger burst)' },
-    { keys: 'A', action: 'auto-show on / off' },
+    { keys: 'A', action: `auto-show on / off (waits ${PLAYER_PAUSE} s after your shell)` },
     { keys: 'T', action: 'trails on / off' },
     { keys: 'Space', action: 'random shell' },
   ],
@@ -169,9 +173,13 @@ function setTrails(on: boolean): void {
   panel.refresh();
 }
 
-/** Launches a shell at a random point of the upper sky with a random hold. @returns its id or 0. */
+/**
+ * Launches a shell at a random point of the upper sky with a random hold: a player's launch (Space,
+ * the panel's button), so it holds the auto-show. @returns its id or 0.
+ */
 function randomLaunch(): number {
   const r = show.rng;
+  pauseAutoShow(show);
   return launchShell(
     shell.world,
     show,
@@ -427,6 +435,7 @@ canvas.addEventListener('pointerup', (event) => {
   local(event);
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
+  pauseAutoShow(show);
   launchShell(shell.world, show, cam.toWorldX(pointerX), cam.toWorldY(pointerY), hold, nextRecipe());
 });
 canvas.addEventListener('pointercancel', (event) => {

@@ -727,10 +727,15 @@ function emitPending(world: PhysicsWorld, show: FireworksShow): void {
 
 /**
  * The auto-show: plays `PROGRAMME` act by act (a salvo spreads its shells across the sky), then
- * again; launch points and holds come from the show's generator. Called by `stepFireworks` before
- * each step while `params.autoShow` is on.
+ * again; launch points and holds come from the show's generator. It waits while `autoPause` runs
+ * down (after a player's launch), its own clock stopped. Called by `stepFireworks` before each step
+ * while `params.autoShow` is on.
  */
 export function autoShow(world: PhysicsWorld, show: FireworksShow): void {
+  if (show.autoPause > 0) {
+    show.autoPause = Math.max(0, show.autoPause - world.dt);
+    return;
+  }
   show.autoTimer -= world.dt;
   if (show.autoTimer > 0) return;
   const rng = show.rng;
@@ -791,8 +796,19 @@ export function setShowGenerations(world: PhysicsWorld, show: FireworksShow, g: 
   for (const em of [...show.emitters.sparks, ...show.emitters.crackles]) E.maxGeneration[slotOf(em)] = g - 1;
 }
 
-/** Turns the auto-show on or off (its clock restarts at 0.3 s). */
+/** Turns the auto-show on or off (its clock restarts at 0.3 s and a player's pause is cleared: asked for, it starts now). */
 export function setAutoShow(show: FireworksShow, on: boolean): void {
   show.params.autoShow = on;
   show.autoTimer = 0.3;
+  show.autoPause = 0;
+}
+
+/**
+ * Holds the auto-show for `seconds` (default PLAYER_PAUSE, 8 s) from now, so a player's shells are
+ * the only new ones in the sky; it then resumes where it was, if it is on. Call it on each launch a
+ * player makes. @throws RangeError unless seconds is finite and >= 0.
+ */
+export function pauseAutoShow(show: FireworksShow, seconds = PLAYER_PAUSE): void {
+  check(Number.isFinite(seconds) && seconds >= 0, `pauseAutoShow: seconds must be finite and >= 0, got ${seconds}`);
+  show.autoPause = seconds;
 }

@@ -1,7 +1,8 @@
 /**
  * The particle games in headless Chromium: fireworks and black hole load without errors and draw;
- * a click in fireworks launches a shell whose sparks appear and later all expire (particle count
- * rises then falls), a longer hold makes a bigger burst, A toggles the auto-show; in black hole the
+ * a click in fireworks launches a shell that bursts where clicked 2 s later and whose sparks appear
+ * and later all expire (particle count rises then falls), a longer hold makes a bigger burst, A
+ * toggles the auto-show, a click holds the auto-show for 8 s; in black hole the
  * arrow keys and the touch buttons move the ship (its velocity read through window.game), the
  * exhaust runs while thrusting, and the status shows lives and score. The particle layer is checked
  * through window.game.renderer.particles on the way.
@@ -172,6 +173,37 @@ describe('fireworks', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).renderer.particles.trailsEnabled)).toBe(false);
     await g.press('t');
     expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).renderer.particles.trailsEnabled)).toBe(true);
+    expect(g.errors).toEqual([]);
+  });
+
+  it("a click holds the auto-show for 8 s, so the player's shell is the only new one; the legend says so", async () => {
+    const g = page;
+    expect(await g.page.locator('.bp-legend').textContent()).toContain('waits 8 s after your shell');
+    await g.press('a');
+    expect(await g.page.evaluate(() => (window.game as unknown as FireworksGame).params.autoShow)).toBe(true);
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = true;
+    });
+    const before = await g.page.evaluate(() => (window.game as unknown as FireworksGame).show.launched);
+    await g.clickCanvas(0.4, 0.3);
+    await g.waitFor((n) => (window.game as unknown as FireworksGame).show.launched === n + 1, before);
+    type Stepped = FireworksGame & { loop: { stepOnce(): void } };
+    // Launches after 7.9 s and after 8 s + 3.6 s (the pause, then at most the longest act's pause).
+    const launches = await g.page.evaluate((n) => {
+      const game = window.game as unknown as Stepped;
+      const pause = game.show.autoPause;
+      for (let i = 0; i < 474; i++) game.loop.stepOnce();
+      const during = game.show.launched - n;
+      for (let i = 0; i < 222; i++) game.loop.stepOnce();
+      return { pause, during, after: game.show.launched - n };
+    }, before);
+    expect(launches.pause).toBeCloseTo(8, 6);
+    expect(launches.during).toBe(1);
+    expect(launches.after).toBeGreaterThan(1);
+    await g.press('a');
+    await g.page.evaluate(() => {
+      (window.game as unknown as { paused: boolean }).paused = false;
+    });
     expect(g.errors).toEqual([]);
   });
 });

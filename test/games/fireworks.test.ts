@@ -21,6 +21,8 @@ import {
   MAX_HOLD,
   MAX_SHELLS,
   PALETTE,
+  PLAYER_PAUSE,
+  pauseAutoShow,
   resolveFireworksOptions,
   SKY,
   setAutoShow,
@@ -369,5 +371,28 @@ describe('burst size', () => {
       expect(ratio).toBeGreaterThan(1.5);
       expect(ratio).toBeLessThan(1.9);
     }
+  });
+});
+
+describe('the auto-show makes way for the player', () => {
+  test('after pauseAutoShow it launches nothing for PLAYER_PAUSE, then resumes; setAutoShow clears the pause', () => {
+    const { world, show } = createFireworks({ opening: 0, autoShow: true, generations: 1, sparks: 50, seed: 41 });
+    const steps = (s: number) => Math.round(s / world.dt);
+    run(world, show, steps(3));
+    const before = show.launched;
+    expect(before).toBeGreaterThan(1); // it runs: a launch every 1 to 3.5 s
+    pauseAutoShow(show);
+    launchShell(world, show, 30, 60, 0); // the player's shell
+    run(world, show, steps(PLAYER_PAUSE - 0.05));
+    expect(show.launched).toBe(before + 1);
+    run(world, show, steps(0.1 + 3.6)); // the pause ends, then at most the longest act's pause
+    expect(show.launched).toBeGreaterThan(before + 1);
+    pauseAutoShow(show);
+    setAutoShow(show, true);
+    expect(show.autoPause).toBe(0);
+    const n = show.launched;
+    run(world, show, steps(0.4));
+    expect(show.launched).toBeGreaterThan(n);
+    expect(() => pauseAutoShow(show, -1)).toThrow(/seconds must be finite and >= 0/);
   });
 });
