@@ -9,9 +9,10 @@
  *   push at once, so the boat starts to move before the water has moved; the bow dips (rises) by
  *   `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the fore tank first. Rise
  *   slows the climb near the surface and blows the tanks dry once the deck is out.
- * - Released under water: depth hold. The thrusters and tanks brake the vertical speed, then hold
- *   the depth where the boat stopped (tanks back at neutral). Released on the surface: the tanks
- *   stay blown and the boat floats.
+ * - Released under water: depth hold at the depth where the key was let go. The boat's momentum
+ *   carries it on (about 6.7 m from a full-speed dive: the thrusters push at once and the tanks blow
+ *   as far as needed), then the helm brings it back to that depth, tanks at neutral, within about
+ *   6 s. Released on the surface: the tanks stay blown and the boat floats.
  * - Nose down / up (held): pitch to `HELM.noseAngle` by the thrusters at once and by moving water
  *   between the tanks; meanwhile the thrusters stop the hull sliding across its axis, so with the
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
@@ -82,6 +83,13 @@ export const HELM = Object.freeze({
   climbSpeed: 4,
   /** Most tank fill the helm adds or takes away (each tank) to speed the boat up or slow it down. */
   ballastExcess: 0.2,
+  /**
+   * Most tank fill the helm adds or takes away while holding a depth: all of it, so the tanks blow
+   * (flood) as far as the boat's sinking (rising) speed asks, ballastGain per m/s. Stopping 110 t at
+   * 5 m/s takes about 6.7 m even so (60 kN of thrusters, drag k v^2, and the tanks' weight changing
+   * at fillRate x 2 x 20 t x g = 196 kN/s); with ballastExcess, as while diving, it took 10.3 m.
+   */
+  holdExcess: 1,
   /** Tank fill added per m/s that the boat sinks slower (or rises faster) than asked, s/m. */
   ballastGain: 0.2,
   /** Pitch while a Nose key is held, rad (15 degrees). */
@@ -90,9 +98,9 @@ export const HELM = Object.freeze({
   diveAngle: 5 * DEG,
   /** Time constant of the vertical speed loop, s: the thrusters push m dv / heaveTime. */
   heaveTime: 0.4,
-  /** Depth hold: climb asked per metre of depth error, 1/s. */
+  /** Depth hold: climb asked per metre of depth error, 1/s (the P of the hold's PD law; the D is the speed loop). */
   holdGain: 0.5,
-  /** Vertical speed under which braking ends and the depth is held, m/s. */
+  /** Vertical speed under which braking after a bounce off the seabed ends and that depth is held, m/s. */
   holdSpeed: 0.3,
   /** Pitch loop of the thrusters: torque per radian of pitch error, N m / rad. */
   pitchGain: 3e6,
@@ -155,7 +163,10 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // Steering by the nose: no depth held, so with the screw ahead the boat follows its nose.
     state.mode = 'steering';
   } else {
-    if (state.mode !== 'braking' && state.mode !== 'holding') state.holdY = Number.NaN;
+    // Let go: hold the depth where the key was released (the boat's momentum carries it on a few
+    // metres, then the helm brings it back). After a bounce off the seabed (holdY cleared while
+    // braking or holding) the helm brakes first and holds where the boat stops instead.
+    if (state.mode !== 'braking' && state.mode !== 'holding') state.holdY = y;
     if (Number.isNaN(state.holdY) && Math.abs(vy) < HELM.holdSpeed) state.holdY = y;
     state.mode = Number.isNaN(state.holdY) ? 'braking' : 'holding';
     vCmd = Number.isNaN(state.holdY) ? 0 : clamp(HELM.holdGain * (state.holdY - y), -HELM.climbSpeed, HELM.climbSpeed);
@@ -167,7 +178,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // The weight that carries the boat at vCmd against drag (k v^2 = 2 capacity g df), and more
     // while the boat is slower or faster than asked (heavier while it rises too fast).
     const carry = (-Math.sign(vCmd) * S.dragCoefficient * vCmd * vCmd) / (2 * S.tankCapacity * 9.81);
-    state.fill = clamp(neutral + carry + clamp(HELM.ballastGain * (vy - vCmd), -HELM.ballastExcess, HELM.ballastExcess), 0, 1);
+    const hold = state.mode === 'holding' || state.mode === 'braking';
+    const excess = hold ? HELM.holdExcess : HELM.ballastExcess;
+    state.fill = clamp(neutral + carry + clamp(HELM.ballastGain * (vy - vCmd), -excess, excess), 0, 1);
   }
   // The thrusters push across the hull. Steering by the nose, they stop the hull sliding across its
   // own axis (the speed v_n = -vx sin(angle) + vy cos(angle)), so it goes where it points, as a moving

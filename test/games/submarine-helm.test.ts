@@ -112,6 +112,29 @@ describe('submarine helm', () => {
     expect(Math.abs(b.helm.fore) + Math.abs(b.helm.aft)).toBeLessThan(0.05 * SUBMARINE.thrusterForce);
   });
 
+  it('let go of Dive at 50 m: the boat settles back within 2 m of that depth (was 10.3 m deeper)', () => {
+    // Dive from the surface, letting go the step the hull passes 50 m.
+    const c = boat();
+    for (let t = 0; y(c) > -50 && t < 30; t += c.world.dt) run(c, { dive: true }, c.world.dt);
+    const released = y(c);
+    expect(vy(c)).toBeLessThan(-0.95 * HELM.diveSpeed); // at full dive speed when let go
+    let deepest = 0,
+      settled = Number.NaN;
+    run(c, {}, 15, (s) => {
+      deepest = Math.max(deepest, released - y(c));
+      if (Math.abs(y(c) - released) > 0.5) settled = Number.NaN;
+      else if (Number.isNaN(settled)) settled = s;
+    });
+    // Measured: 6.7 m past it at most (110 t at 5 m/s against 60 kN of thrusters, drag and tanks
+    // blowing at 196 kN/s), back within 0.5 m after 5.6 s, no overshoot above it. The old helm held
+    // where the boat stopped: 10.4 m deeper, and it stayed there.
+    expect(c.helm.mode).toBe('holding');
+    expect(Math.abs(y(c) - released)).toBeLessThan(2);
+    expect(settled).toBeLessThan(8);
+    expect(deepest).toBeLessThan(8);
+    expect(c.helm.holdY).toBeCloseTo(released, 6); // the gauge reads the depth let go at
+  });
+
   it('Rise to the surface comes up gently, blows the tanks and floats at the draft rho L d = m', () => {
     const b = boat(-20);
     let top = -Infinity;
