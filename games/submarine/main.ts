@@ -16,6 +16,7 @@ import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
+import { beaconLabel, chooseBeacon } from './beacons';
 import { createHelmState, type HelmInput, steer } from './helm';
 
 const params = {
@@ -34,11 +35,19 @@ const state = { ...createHelmState(), collected: 0, hits: 0, spared: 0, touching
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
 
+/**
+ * What the pointer shows: the beacon it leads to (index, -1: none left), its distance (m), its
+ * offset from the hull (dx, dy, m, y up), the arrow's screen angle (rad, y down; NaN while the
+ * beacon is on screen and no arrow is drawn) and whether the beacon is on screen.
+ */
+const aim = { index: -1, distance: 0, dx: 0, dy: 0, angle: Number.NaN, onScreen: false };
+
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
   handles = submarine.build(world, { seed: params.seed, count: params.beacons });
   Object.assign(state, createHelmState(), { collected: 0, hits: 0, spared: 0, touching: false, over: '', time: 0 });
   taken = new Array(params.beacons).fill(false);
+  aim.index = -1;
   return world;
 }
 
@@ -154,15 +163,13 @@ const { shell, app } = game;
 
 const g = new Graphics();
 app.stage.addChild(g);
-/** The pointer to the nearest beacon left: its distance, beside an arrow at the screen's edge (or over the beacon in view). */
+/** The beacon pointer's label: distance and depth of the beacon it leads to, beside its arrow at the screen's edge (or over the beacon in view). */
 const pointer = new Text({
   text: '',
   style: { fill: 0xffe066, fontSize: 15, fontWeight: '700', fontFamily: 'system-ui, sans-serif' },
 });
 pointer.anchor.set(0.5);
 app.stage.addChild(pointer);
-/** What the pointer shows: the nearest beacon's index (-1: none left), its distance (m) and whether it is on screen. */
-const aim = { index: -1, distance: 0, onScreen: false };
 // The gauges: a text block in the status row above the scene (on its dark backing, never cut off).
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
@@ -312,28 +319,27 @@ function draw(): void {
     g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
     g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
   }
-  // The nearest beacon left: an arrow at the screen's edge pointing to it while it is off screen,
-  // with its distance (there was nothing to say where the beacons are).
-  aim.index = -1;
-  let best = Infinity;
-  for (let i = 0; i < taken.length; i++) {
-    if (taken[i]) continue;
-    const d = Math.hypot(handles.beacons[2 * i]! - c.Position.x[e]!, handles.beacons[2 * i + 1]! - c.Position.y[e]!);
-    if (d < best) {
-      best = d;
-      aim.index = i;
-    }
-  }
+  // The pointer: an arrow at the screen's edge leading to one beacon (./beacons.ts: kept until it is
+  // collected or another is much nearer) while it is off screen, with its distance and depth.
+  const hxw = c.Position.x[e]!,
+    hyw = c.Position.y[e]!;
+  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   pointer.visible = aim.index >= 0;
   if (aim.index >= 0) {
-    const bx = sx(handles.beacons[2 * aim.index]!),
-      by = sy(handles.beacons[2 * aim.index + 1]!);
-    const m = 34;
+    const wx = handles.beacons[2 * aim.index]!,
+      wy = handles.beacons[2 * aim.index + 1]!;
+    const best = Math.hypot(wx - hxw, wy - hyw);
+    const bx = sx(wx),
+      by = sy(wy);
+    const m = 40;
     aim.distance = best;
+    pointer.text = beaconLabel(best, wy - hyw);
+    aim.dx = wx - hxw;
+    aim.dy = wy - hyw;
     aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
     // From the hull's place on screen toward the beacon, stopped at the margin.
-    const hx = sx(c.Position.x[e]!),
-      hy = sy(c.Position.y[e]!);
+    const hx = sx(hxw),
+      hy = sy(hyw);
     let px = bx,
       py = by;
     if (!aim.onScreen) {
@@ -348,18 +354,32 @@ function draw(): void {
       const ang = Math.atan2(dy, dx),
         ca = Math.cos(ang),
         sa = Math.sin(ang);
-      // A badge: a dark disc ringed in the beacons' yellow with a large arrow in it.
-      g.circle(px, py, 20).fill({ color: 0x06213a, alpha: 0.85 }).stroke({ color: 0xffe066, width: 2 });
-      g.poly([px + 13 * ca, py + 13 * sa, px - 8 * ca - 9 * sa, py - 8 * sa + 9 * ca, px - 8 * ca + 9 * sa, py - 8 * sa - 9 * ca]).fill(
-        0xffe066,
-      );
-      pointer.x = px - 52 * ca;
-      pointer.y = py - 34 * sa;
+      aim.angle = ang;
+      // A badge: a dark disc ringed in the beacons' yellow, drawn out to a point toward the beacon,
+      // with a long arrow (shaft and head) in it: a short broad triangle read as pointing either way.
+      const along = (u: number, v: number): [number, number] => [px + u * ca - v * sa, py + u * sa + v * ca];
+      g.poly([...along(28, 0), ...along(10, 15), ...along(-14, 14), ...along(-20, 0), ...along(-14, -14), ...along(10, -15)])
+        .fill({ color: 0x06213a, alpha: 0.9 })
+        .stroke({ color: 0xffe066, width: 2 });
+      g.poly([
+        ...along(-12, -2.5),
+        ...along(4, -2.5),
+        ...along(4, -8),
+        ...along(19, 0),
+        ...along(4, 8),
+        ...along(4, 2.5),
+        ...along(-12, 2.5),
+      ]).fill(0xffe066);
+      // The label on the badge's far side from the beacon, clear of it.
+      pointer.x = px - (pointer.width / 2 + 30) * ca;
+      pointer.y = py - (pointer.height / 2 + 28) * sa;
     } else {
+      aim.angle = Number.NaN;
       pointer.x = bx;
       pointer.y = by - 2.4 * k - 16;
     }
-    pointer.text = `beacon ${best.toFixed(0)} m`;
+    // Kept inside the view (a long label beside a badge at a side edge).
+    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - pointer.width / 2 - 8, pointer.x));
     // The label on a dark pill, readable over the bright surface water and the sky.
     const pw = pointer.width + 14,
       ph = pointer.height + 4;
@@ -453,7 +473,7 @@ const panel = createPanel(
 );
 
 shell.expose({
-  /** The pointer to the nearest beacon left: its index (-1: none), distance (m) and whether it is on screen. */
+  /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text }),
   params,
   panel,

@@ -125,7 +125,7 @@ describe('phone controls', () => {
       (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
     );
     expect(aim.visible).toBe(true);
-    expect(aim.text).toMatch(/^beacon \d+ m$/);
+    expect(aim.text).toMatch(/^beacon \d+ m( · \d+ m (down|up))?$/);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -3,7 +3,9 @@
  * rate key speeds up its clock and its error table reads the ephemeris; the submarine's keys drive
  * the screw and flood the tanks; the flight simulator's keys open the throttle and pull the nose up).
  */
+
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beaconLabel } from '../../games/submarine/beacons';
 import { Harness } from './harness';
 
 interface Game {
@@ -75,18 +77,30 @@ describe('projects', () => {
 
   it('submarine: D drives the screw ahead, W floods the tanks', async () => {
     const g = await h.openGame('submarine');
-    // At the start no beacon is on screen; an arrow at the edge points to the nearest with its distance.
+    // At the start no beacon is on screen; an arrow at the edge points to the nearest with its
+    // distance and how far down it lies, the arrow along the beacon's direction (screen y down).
     const aim = await g.page.evaluate(() =>
       (
         window.game as unknown as {
-          beaconPointer(): { index: number; distance: number; onScreen: boolean; visible: boolean; text: string };
+          beaconPointer(): {
+            index: number;
+            distance: number;
+            dx: number;
+            dy: number;
+            angle: number;
+            onScreen: boolean;
+            visible: boolean;
+            text: string;
+          };
         }
       ).beaconPointer(),
     );
     expect(aim.index).toBeGreaterThanOrEqual(0);
     expect(aim.visible).toBe(true);
     expect(aim.onScreen).toBe(false);
-    expect(aim.text).toBe(`beacon ${aim.distance.toFixed(0)} m`);
+    expect(aim.text).toBe(beaconLabel(aim.distance, aim.dy));
+    expect(aim.text).toContain('m down');
+    expect(Math.cos(aim.angle - Math.atan2(-aim.dy, aim.dx))).toBeGreaterThan(0.999);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;

@@ -1,0 +1,74 @@
+/**
+ * The submarine's beacon pointer (games/submarine/beacons.ts), headless: it keeps one beacon instead
+ * of flipping between two at about the same distance, and a boat that follows it (ahead at 10 m/s,
+ * down or up at 5 m/s, as the game's boat) sees the distance fall until it collects each beacon.
+ */
+
+import { createPhysicsWorld } from '@bitphysics/physics';
+import { submarine } from '@bitphysics/projects';
+import { describe, expect, it } from 'vitest';
+import { BEACON_SWITCH, beaconLabel, chooseBeacon } from '../../games/submarine/beacons';
+
+describe('submarine beacon pointer', () => {
+  it('does not flip between two beacons at about the same distance (the nearest-each-frame rule did)', () => {
+    const beacons = [100, -50, 200, -50],
+      taken = [false, false];
+    let current = -1,
+      switches = 0,
+      nearestSwitches = 0,
+      nearest = -1;
+    // The boat drifts to and fro across the line halfway between them, as a boat turning there does.
+    for (let i = 0; i < 40; i++) {
+      const x = 150 + (i % 2 === 0 ? 3 : -3);
+      const next = chooseBeacon(beacons, taken, x, -40, current);
+      if (current >= 0 && next !== current) switches++;
+      current = next;
+      const n = chooseBeacon(beacons, taken, x, -40, -1); // the old rule: the nearest, every frame
+      if (nearest >= 0 && n !== nearest) nearestSwitches++;
+      nearest = n;
+    }
+    expect(nearestSwitches).toBe(39);
+    expect(switches).toBe(0);
+    // A clearly nearer beacon takes over; the collected one hands over to the nearest left.
+    expect(chooseBeacon(beacons, taken, 100 + 100 * BEACON_SWITCH, -50, 0)).toBe(0);
+    expect(chooseBeacon(beacons, taken, 170, -50, 0)).toBe(1);
+    expect(chooseBeacon(beacons, [true, false], 100, -50, 0)).toBe(1);
+    expect(chooseBeacon(beacons, [true, true], 100, -50, 1)).toBe(-1);
+  });
+
+  it('following the pointer from the surface, the distance shown falls until each beacon is taken', () => {
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { seed: 1, count: 6 });
+    const taken = new Array<boolean>(6).fill(false);
+    let x = 0,
+      y = -1,
+      current = -1,
+      last = Infinity,
+      rises = 0;
+    const dt = 1 / 60;
+    for (let t = 0; t < 600 && taken.includes(false); t += dt) {
+      const i = chooseBeacon(h.beacons, taken, x, y, current);
+      const dx = h.beacons[2 * i]! - x,
+        dy = h.beacons[2 * i + 1]! - y;
+      const d = Math.hypot(dx, dy);
+      if (i === current && d > last + 1e-9) rises++;
+      current = i;
+      last = d;
+      if (d < 7) {
+        taken[i] = true; // collected (the game's 7 m radius)
+        last = Infinity;
+        continue;
+      }
+      x += Math.sign(dx) * Math.min(10 * dt, Math.abs(dx));
+      y += Math.sign(dy) * Math.min(5 * dt, Math.abs(dy));
+    }
+    expect(taken.every(Boolean)).toBe(true);
+    expect(rises).toBe(0);
+  });
+
+  it('the label gives the distance, and how far down or up when more than 5 m', () => {
+    expect(beaconLabel(83.3, -43.6)).toBe('beacon 83 m · 44 m down');
+    expect(beaconLabel(45, 30)).toBe('beacon 45 m · 30 m up');
+    expect(beaconLabel(20, -4)).toBe('beacon 20 m');
+  });
+});
