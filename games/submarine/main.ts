@@ -8,7 +8,7 @@
  * Keys: W / S or up / down arrows dive / rise, Q / E nose down / up, A / D or left / right arrows
  * astern / ahead, P pause, N step, R reset. Touch: the same controls as buttons under the scene
  * (hold them). Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks
- * blow, a chime for each beacon, a thump on the seabed.
+ * blow, a rising chime for each beacon (rings spread from it and a banner counts it), a thump on the seabed.
  */
 
 import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
@@ -42,12 +42,21 @@ let taken: boolean[] = [];
  */
 const aim = { index: -1, distance: 0, dx: 0, dy: 0, angle: Number.NaN, onScreen: false };
 
+/**
+ * Beacons collected, for the effect drawn at each (drawing only): world position (m), the game time
+ * it was taken (s) and the banner's text ("Beacon 2 of 6").
+ */
+const pickups: { x: number; y: number; time: number; text: string }[] = [];
+/** How long a pickup's rings and banner last, s of game time. */
+const PICKUP_LIFE = 2;
+
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
   handles = submarine.build(world, { seed: params.seed, count: params.beacons });
   Object.assign(state, createHelmState(), { collected: 0, hits: 0, spared: 0, touching: false, over: '', time: 0 });
   taken = new Array(params.beacons).fill(false);
   aim.index = -1;
+  pickups.length = 0;
   return world;
 }
 
@@ -133,8 +142,21 @@ function stepWorld(world: PhysicsWorld): void {
       dy = handles.beacons[2 * i + 1]! - c.Position.y[e]!;
     if (dx * dx + dy * dy < 7 * 7) {
       taken[i] = true;
-      sound.chime(state.collected === taken.length - 1 ? 1320 : 880);
       state.collected++;
+      const last = state.collected === taken.length;
+      pickups.push({
+        x: handles.beacons[2 * i]!,
+        y: handles.beacons[2 * i + 1]!,
+        time: world.time,
+        text: last ? `All ${taken.length} beacons!` : `Beacon ${state.collected} of ${taken.length}`,
+      });
+      // A rising two-note chime (a fifth apart); the last beacon a third note and a crackle.
+      sound.chime(last ? 1047 : 784, 0.3);
+      setTimeout(() => sound.chime(last ? 1568 : 1175, 0.45), 110);
+      if (last) {
+        setTimeout(() => sound.chime(2093, 0.6), 230);
+        sound.crackle(14, 0.9);
+      }
       if (state.collected === taken.length) state.over = 'won';
     }
   }
@@ -170,6 +192,21 @@ const pointer = new Text({
 });
 pointer.anchor.set(0.5);
 app.stage.addChild(pointer);
+/** The banner over the scene when a beacon is collected ("Beacon 2 of 6"), fading out. */
+const banner = new Text({
+  text: '',
+  style: {
+    fill: 0xffe066,
+    fontSize: 30,
+    fontWeight: '800',
+    fontFamily: 'system-ui, sans-serif',
+    stroke: { color: 0x06213a, width: 5 },
+    dropShadow: { color: 0x000000, alpha: 0.5, blur: 6, distance: 0 },
+  },
+});
+banner.anchor.set(0.5);
+banner.visible = false;
+app.stage.addChild(banner);
 // The gauges: a text block in the status row above the scene (on its dark backing, never cut off).
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
@@ -318,6 +355,38 @@ function draw(): void {
       by = sy(handles.beacons[2 * i + 1]!);
     g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
     g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+  }
+  // Collected beacons: a flash, two rings expanding from the beacon and rays, fading over
+  // PICKUP_LIFE s of game time; the banner shows the newest one.
+  for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
+  for (const p of pickups) {
+    const u = (t - p.time) / PICKUP_LIFE,
+      px = sx(p.x),
+      py = sy(p.y),
+      fade = 1 - u;
+    if (u < 0.25) g.circle(px, py, (1.2 + 8 * u) * k).fill({ color: 0xfff6c0, alpha: 0.7 * (1 - u / 0.25) });
+    for (const lag of [0, 0.18]) {
+      const v = u - lag;
+      if (v > 0) g.circle(px, py, (1.5 + 16 * Math.sqrt(v)) * k).stroke({ color: 0xffe066, alpha: 0.8 * (1 - v), width: 3 * (1 - v) + 1 });
+    }
+    for (let r = 0; r < 10; r++) {
+      const ang = (r / 10) * 2 * Math.PI + 0.3,
+        r0 = (2 + 10 * u) * k,
+        r1 = r0 + 2.5 * k * fade;
+      g.moveTo(px + r0 * Math.cos(ang), py + r0 * Math.sin(ang))
+        .lineTo(px + r1 * Math.cos(ang), py + r1 * Math.sin(ang))
+        .stroke({ color: 0xfff6c0, alpha: 0.9 * fade, width: 2 });
+    }
+  }
+  const newest = pickups[pickups.length - 1];
+  banner.visible = newest !== undefined;
+  if (newest) {
+    const u = (t - newest.time) / PICKUP_LIFE;
+    banner.text = newest.text;
+    banner.x = W / 2;
+    banner.y = H * 0.28;
+    banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
+    banner.scale.set(u < 0.08 ? 0.6 + 0.4 * (u / 0.08) + 0.15 * Math.sin((Math.PI * u) / 0.08) : 1);
   }
   // The pointer: an arrow at the screen's edge leading to one beacon (./beacons.ts: kept until it is
   // collected or another is much nearer) while it is off screen, with its distance and depth.
@@ -475,6 +544,8 @@ const panel = createPanel(
 shell.expose({
   /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text }),
+  /** The collect effect: pickups still drawn (rings at the beacons) and the banner over the scene. */
+  pickupEffect: () => ({ count: pickups.length, banner: banner.visible ? banner.text : '', alpha: banner.alpha }),
   params,
   panel,
   state,

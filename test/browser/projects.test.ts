@@ -129,6 +129,42 @@ describe('projects', () => {
     await g.close();
   });
 
+  it('submarine: collecting a beacon spreads rings from it and shows "Beacon 1 of 6" for 2 s', async () => {
+    const g = await h.openGame('submarine', { query: { waves: 0 } });
+    type Sub = {
+      world: { time: number; components: { Position: { x: Float64Array; y: Float64Array } } };
+      hull(): number;
+      handles(): { beacons: Float64Array };
+      state: { collected: number };
+      pickupEffect(): { count: number; banner: string; alpha: number };
+    };
+    expect(await g.page.evaluate(() => (window.game as unknown as Sub).pickupEffect().count)).toBe(0);
+    // The hull put 3 m from the first beacon (the game collects within 7 m).
+    const t0 = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 3;
+      c.Position.y[e] = b[1]!;
+      return w.world.time;
+    });
+    const fx = await g.waitFor(() => {
+      const w = window.game as unknown as Sub;
+      return w.state.collected === 1 ? w.pickupEffect() : null;
+    }, null);
+    expect(fx.count).toBe(1);
+    expect(fx.banner).toBe('Beacon 1 of 6');
+    // Gone after PICKUP_LIFE (2 s) of game time.
+    await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 2.5, t0, 60_000);
+    await g.frames(2);
+    const after = await g.page.evaluate(() => (window.game as unknown as Sub).pickupEffect());
+    expect(after.count).toBe(0);
+    expect(after.banner).toBe('');
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('flight-simulator: the cockpit view shows an attitude indicator that follows the roll', async () => {
     const g = await h.openGame('flight-simulator');
     type Att = { attitude(): { pitch: number; roll: number; visible: boolean } };
