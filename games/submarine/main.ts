@@ -327,6 +327,35 @@ function draw(): void {
       bottom = Math.min(H, sy(surface - d - 5));
     if (bottom > top) g.rect(0, top, W, bottom - top).fill({ color: 0x020a14, alpha: Math.min(0.65, (0.65 * d) / 150) });
   }
+  // Sunlight: shafts slanting down from the surface, fixed in the water every 16 m (some cells have
+  // none), swaying and flickering slowly, each fading out in six steps by 45 m down.
+  const rayCell = 16,
+    reach = 45;
+  if (sy(surface - reach) > 0)
+    for (let i = Math.floor((cx - W / 2 / k - reach) / rayCell); i <= Math.ceil((cx + W / 2 / k) / rayCell); i++) {
+      const h = speckHash(i, 7919);
+      if ((h & 3) === 0) continue;
+      const x = (i + ((h >>> 4) & 0xff) / 256) * rayCell,
+        w = 1.5 + ((h >>> 12) & 7) * 0.5,
+        slant = 0.35 + 0.1 * Math.sin(0.15 * t + (h & 0xff)),
+        glow = 0.05 + 0.025 * Math.sin(0.7 * t + ((h >>> 16) & 0xff));
+      for (let part = 0; part < 6; part++) {
+        const d0 = (part * reach) / 6,
+          d1 = ((part + 1) * reach) / 6,
+          spread0 = w * (1 + d0 / 20),
+          spread1 = w * (1 + d1 / 20);
+        g.poly([
+          sx(x + slant * d0),
+          sy(surface - d0),
+          sx(x + slant * d0 + spread0),
+          sy(surface - d0),
+          sx(x + slant * d1 + spread1),
+          sy(surface - d1),
+          sx(x + slant * d1),
+          sy(surface - d1),
+        ]).fill({ color: 0xbfe6ff, alpha: glow * (1 - (part + 0.5) / 6) });
+      }
+    }
   // Marine snow: specks fixed in the water, one to each 6 m cell, so the boat is seen to move past them.
   const cell = 6;
   const x0 = Math.floor((cx - W / 2 / k) / cell),
@@ -348,6 +377,48 @@ function draw(): void {
     if (px >= W) break;
   }
   g.lineTo(W, H).closePath().fill(0x5b4a32);
+  // Its detail, every 3 m cell fixed to the bed (drawing only): a darker layer 3 m down, a lighter
+  // sand line on top, stones and swaying weed.
+  const bedAt = (x: number) => seabedHeight(handles.seabed, x);
+  const left = cx - W / 2 / k,
+    right = cx + W / 2 / k;
+  if (sy(bedAt(cx)) < H + 40 * k) {
+    g.moveTo(0, H);
+    for (let px = 0; ; px = Math.min(W, px + 12)) {
+      g.lineTo(px, sy(bedAt(cx + (px - W / 2) / k) - 3));
+      if (px >= W) break;
+    }
+    g.lineTo(W, H).closePath().fill({ color: 0x2e2418, alpha: 0.6 });
+    for (let px = 0; ; px = Math.min(W, px + 6)) {
+      const y = sy(bedAt(cx + (px - W / 2) / k));
+      if (px === 0) g.moveTo(px, y);
+      else g.lineTo(px, y);
+      if (px >= W) break;
+    }
+    g.stroke({ color: 0xa58d5f, width: 2, alpha: 0.8 });
+    const bedCell = 3;
+    for (let i = Math.floor(left / bedCell) - 1; i <= Math.ceil(right / bedCell) + 1; i++) {
+      const h = speckHash(i, 104729),
+        x = (i + (h & 0xff) / 256) * bedCell,
+        y = bedAt(x),
+        kind = (h >>> 8) & 15;
+      if (kind < 3) {
+        // A stone half sunk in the bed.
+        const r = 0.4 + ((h >>> 12) & 7) * 0.15;
+        g.ellipse(sx(x), sy(y), 1.5 * r * k, r * k).fill(kind === 0 ? 0x6f6656 : 0x5e5546);
+      } else if (kind < 6) {
+        // Weed: a stalk of five segments, swaying with a period of about 5 s.
+        const tall = 2.5 + ((h >>> 12) & 7) * 0.8,
+          phase = (h >>> 16) & 0xff;
+        g.moveTo(sx(x), sy(y));
+        for (let j = 1; j <= 5; j++) {
+          const f = j / 5;
+          g.lineTo(sx(x + f * f * 0.9 * Math.sin(1.2 * t + phase)), sy(y + f * tall));
+        }
+        g.stroke({ color: kind === 3 ? 0x3f7a4a : 0x2f6a5a, width: Math.max(1.5, 0.35 * k), alpha: 0.9 });
+      }
+    }
+  }
   // Beacons.
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
