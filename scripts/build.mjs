@@ -142,7 +142,7 @@ export function isConstantModule(file) {
  * minifySyntax folds its constants into the code that reads them. In Node, a hot loop reading offsets
  * imported from another module ran 20 to 25% slower than with the numbers written in.
  */
-function inlineConstantModules() {
+export function inlineConstantModules() {
   return {
     name: 'inline-constant-modules',
     setup(build) {
