@@ -3,7 +3,8 @@
  * joints) into towers, brick walls and plank stacks of 3D boxes. Steer the crane: slew the jib, run the
  * trolley in and out, raise and lower the hook; the ball lags behind and swings, so pump it like a
  * pendulum. Or grab the ball with the mouse, pull it back and let go. Every piece that falls scores
- * (more for pieces that stood high); knock down 70 % of a level to clear it; levels are seeded.
+ * (more for pieces that stood high); knock down 70 % of the pieces that stood above the ground
+ * (`clearTarget`) to clear a level; levels are seeded.
  *
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: click a target to swing the ball
