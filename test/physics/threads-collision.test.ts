@@ -12,8 +12,8 @@ import {
 import { afterEach, expect, test } from 'vitest';
 import { broadphaseSystem } from '../../packages/physics/src/collision/broadphase/grid.js';
 import { PAIRS_MIN_PER_THREAD } from '../../packages/physics/src/collision/broadphase/grid-pairs.js';
+import { ballPairs } from '../../packages/physics/src/collision/broadphase/grid-pairs-kernel.js';
 import { Rng } from '../../packages/physics/src/math/rng.js';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 import { query } from '../../packages/physics/src/world/query.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
@@ -119,7 +119,7 @@ test('sleeping balls: the cell pass stays on the threads, wakes the same balls i
     wokenAfterHit = 0;
   const run = pool.run.bind(pool);
   pool.run = (system, kernel, arrays, params, n, ids) => {
-    if (kernel === KERNEL.ballPairs && asleep(two) > 0) pairRunsAsleep++;
+    if (kernel === ballPairs && asleep(two) > 0) pairRunsAsleep++;
     return run(system, kernel, arrays, params, n, ids);
   };
   for (let s = 0; s < 230; s++) {

@@ -13,8 +13,8 @@ import { Rng } from '../../packages/physics/src/math/rng.js';
 import { PREPARE_MIN_PER_THREAD } from '../../packages/physics/src/solver/ball-prepare.js';
 import { coloringConflicts, lastColorCount } from '../../packages/physics/src/solver/coloring.js';
 import { impactChangedRows } from '../../packages/physics/src/solver/impact-state.js';
+import { stripPlan2D } from '../../packages/physics/src/solver/strip-plan-kernel.js';
 import { stripCut2D } from '../../packages/physics/src/solver/strips-kernel.js';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
@@ -68,7 +68,7 @@ test("a threaded 2D pile plans and packs its strips on a worker beside the impac
     start = pool.start.bind(pool);
   let plans = 0;
   pool.start = (system, kernel, arrays, params, n) => {
-    if (kernel === KERNEL.stripPlan2D) plans++;
+    if (kernel === stripPlan2D) plans++;
     start(system, kernel, arrays, params, n);
   };
   stepMany(world, 90);
@@ -166,7 +166,7 @@ test('rows packed on a worker while the impact stage runs: the state of a pack m
       start = pool.start.bind(pool);
     let changed = 0;
     pool.start = (system, kernel, arrays, params, n) => {
-      if (kernel === KERNEL.stripPlan2D && !packOnWorker) {
+      if (kernel === stripPlan2D && !packOnWorker) {
         const Q = Float64Array.from(params);
         Q[8] = 0;
         params = Q;
@@ -229,7 +229,7 @@ test('the strip cut made on a worker (ThreadPool.start, beside the impact stage)
   const inline = outputs(),
     worker = outputs();
   stripCut2D([sb, ex, type, list, ...inline, IA, IB], P, null, 0, 1);
-  pool.start('contactSolverSystem', KERNEL.stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);
+  pool.start('contactSolverSystem', stripCut2D, [sb, ex, type, list, ...worker, IA, IB], P, 1);
   pool.join();
   for (let j = 0; j < inline.length; j++) expect(Array.from(worker[j]!)).toEqual(Array.from(inline[j]!));
   // A real cut: fixed bodies in no strip, the others spread over all 32 strips, every row counted once.

@@ -95,7 +95,7 @@ test('a worker that dies gives a clear error within a second, the pool is shut d
     entry,
     `
 import { addParticle, createPhysicsWorld, enableThreads, stepMany } from '@bitphysics/physics';
-import { KERNEL } from '${src}/threads/kernels.ts';
+import { testKernel } from '${src}/step/kernel-table.ts';
 import { sharedFloat64 } from '${src}/threads/pool.ts';
 enableThreads();
 const results: unknown[] = [];
@@ -105,7 +105,7 @@ function timed(f: () => unknown) {
   try { f(); return { ok: true, ms: Date.now() - t0 }; }
   catch (e) { return { ok: false, ms: Date.now() - t0, message: (e as Error).message }; }
 }
-const run = (pool: any, out: Float64Array) => pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null);
+const run = (pool: any, out: Float64Array) => pool.run('testSystem', testKernel, [out], [2, -1], 1000, null);
 // 1. A worker killed between two runs, with no turn of the event loop in between (its exit event unseen).
 {
   const world = createPhysicsWorld({ capacity: 10, threads: 2 });

@@ -1,7 +1,7 @@
 import { createPhysicsWorld, disposeWorld, enableThreads, type PhysicsWorld, SCENES, stateHash, step, stepMany } from '@bitphysics/physics';
 import { afterEach, expect, test } from 'vitest';
 import { stageThreading } from '../../packages/physics/src/solver/stages-threads.js';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { warmStartTable } from '../../packages/physics/src/solver/warm-start-kernel.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
@@ -60,7 +60,7 @@ test('solver rows, approach speeds, write-back and the warm-start table on 2 thr
     start = pool.start.bind(pool);
   let tables = 0;
   pool.start = (system, kernel, arrays, params, n) => {
-    if (kernel === KERNEL.warmStartTable) tables++;
+    if (kernel === warmStartTable) tables++;
     start(system, kernel, arrays, params, n);
   };
   stepMany(two, steps);

@@ -19,7 +19,7 @@ import { addComponent, removeEntity } from 'bitecs';
 import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
-import { KERNEL } from '../../packages/physics/src/threads/kernels.js';
+import { testKernel } from '../../packages/physics/src/step/kernel-table.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
@@ -114,11 +114,11 @@ test("a worker that throws surfaces its error in the main thread with the system
   expect(pool.usable()).toBe(true);
   const out = sharedFloat64(1000);
   // Worker (thread 1) owns indices 500..999; index 700 throws there.
-  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, 700], 1000, null)).toThrow(
+  expect(() => pool.run('testSystem', testKernel, [out], [2, 700], 1000, null)).toThrow(
     /^testSystem: a worker thread failed: test kernel: index 700/,
   );
   // The pool still works after a failure, and both halves are written.
-  expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
+  expect(pool.run('testSystem', testKernel, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
   expect(out[1]).toBe(2);
 });
@@ -132,13 +132,13 @@ test('a kernel takes up to 64 parameters; more are refused before anything runs 
   const params = new Float64Array(64).fill(7);
   params[0] = 2;
   params[1] = -1;
-  expect(pool.run('testSystem', KERNEL.test, [out], params, 1000, null)).toBe((999 * 1000) / 2);
+  expect(pool.run('testSystem', testKernel, [out], params, 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
   out.fill(-1);
-  expect(() => pool.run('testSystem', KERNEL.test, [out], new Float64Array(65), 1000, null)).toThrow(
+  expect(() => pool.run('testSystem', testKernel, [out], new Float64Array(65), 1000, null)).toThrow(
     /^testSystem: a kernel takes at most 64 parameters, got 65$/,
   );
-  expect(() => pool.start('testSystem', KERNEL.test, [out], new Float64Array(65), 1000)).toThrow(
+  expect(() => pool.start('testSystem', testKernel, [out], new Float64Array(65), 1000)).toThrow(
     /^testSystem: a kernel takes at most 64 parameters, got 65$/,
   );
   expect(out[999]).toBe(-1);
@@ -150,7 +150,7 @@ test('start runs a kernel on a worker while the caller goes on; join (or the nex
   expect(pool.usable()).toBe(true);
   const out = sharedFloat64(1000).fill(-1);
   // The first worker takes all of [0, 1000); the caller's range and the second worker's are empty.
-  pool.start('testSystem', KERNEL.test, [out], [3, -1], 1000);
+  pool.start('testSystem', testKernel, [out], [3, -1], 1000);
   // The caller works meanwhile on memory the kernel does not touch, then joins: the kernel's sum.
   let own = 0;
   for (let i = 0; i < 1e5; i++) own += i;
@@ -161,15 +161,15 @@ test('start runs a kernel on a worker while the caller goes on; join (or the nex
   // Nothing left to join.
   expect(pool.join()).toBe(0);
   // A started kernel that throws: join names the system and the worker's message.
-  pool.start('cutSystem', KERNEL.test, [out], [1, 10], 1000);
+  pool.start('cutSystem', testKernel, [out], [1, 10], 1000);
   expect(() => pool.join()).toThrow(/^cutSystem: a worker thread failed: test kernel: index 10/);
   // A run joins a started kernel first, and reports its error.
-  pool.start('cutSystem', KERNEL.test, [out], [1, 20], 1000);
-  expect(() => pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toThrow(
+  pool.start('cutSystem', testKernel, [out], [1, 20], 1000);
+  expect(() => pool.run('testSystem', testKernel, [out], [2, -1], 1000, null)).toThrow(
     /^cutSystem: a worker thread failed: test kernel: index 20/,
   );
-  pool.start('cutSystem', KERNEL.test, [out], [5, -1], 1000);
-  expect(pool.run('testSystem', KERNEL.test, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
+  pool.start('cutSystem', testKernel, [out], [5, -1], 1000);
+  expect(pool.run('testSystem', testKernel, [out], [2, -1], 1000, null)).toBe((999 * 1000) / 2);
   expect(out[999]).toBe(1998);
 });
 

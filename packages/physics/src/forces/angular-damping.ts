@@ -1,6 +1,6 @@
 import { hasComponent } from 'bitecs';
 import { rotateInPlace, rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { KERNEL } from '../threads/kernels.js';
+import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
@@ -48,24 +48,23 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
   const h = world.h;
   const is2D = world.dimensions === 2;
   const ii = c.Inertia.inv;
-  // 2D (a scalar moment of inertia) on the world's threads when that pays; null: this thread.
-  const par = is2D
-    ? runParallel(
-        world,
-        'angularDampingSystem',
-        KERNEL.angularDampingScalar,
-        [k, ii, wx, wy, wz, tx, ty, tz],
-        [h, STIFF_RATE],
-        ents.length,
-        ents,
-      )
-    : null;
-  let stiff = par ?? 0;
-  if (par === null)
+  // 2D (a scalar moment of inertia): kernel `angularDampingScalar`, on the world's threads when that pays.
+  let stiff = 0;
+  if (is2D) {
+    stiff = runParallel(
+      world,
+      'angularDampingSystem',
+      angularDampingScalar,
+      [k, ii, wx, wy, wz, tx, ty, tz],
+      [h, STIFF_RATE],
+      ents.length,
+      ents,
+    );
+  } else {
     for (let i = 0; i < ents.length; i++) {
       const e = ents[i]!;
       const d = k[e]!;
-      if (d * (is2D ? ii[e]! : largestInverseInertia(world, e, false)) * h >= STIFF_RATE) {
+      if (d * largestInverseInertia(world, e, false) * h >= STIFF_RATE) {
         stiff++;
         continue;
       }
@@ -73,6 +72,7 @@ export const angularDampingSystem: ForceLaw = (world: PhysicsWorld): void => {
       ty[e] = ty[e]! - d * wy[e]!;
       tz[e] = tz[e]! - d * wz[e]!;
     }
+  }
   if (stiff > 0) {
     const s = dissipationState(world);
     s.angularSeen = s.epoch;
@@ -154,3 +154,35 @@ export const stiffAngularDampingSystem = (world: PhysicsWorld): void => {
     rotateInPlace(q.x, q.y, q.z, q.w, e, h * (wx[e]! - ox), h * (wy[e]! - oy), h * (wz[e]! - oz));
   }
 };
+
+/**
+ * Angular damping with a scalar moment of inertia (forces/angular-damping.ts, 2D): tau -= k w unless
+ * k h / I >= the stiff rate. A: k, inv (Inertia.inv), wx, wy, wz, tx, ty, tz. P: h, stiff rate.
+ * Returns the count of stiff bodies.
+ */
+export function angularDampingScalar(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const wx = A[2] as Float64Array,
+    wy = A[3] as Float64Array,
+    wz = A[4] as Float64Array;
+  const tx = A[5] as Float64Array,
+    ty = A[6] as Float64Array,
+    tz = A[7] as Float64Array;
+  const h = P[0]!,
+    rate = P[1]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const d = k[e]!;
+    if (d * inv[e]! * h >= rate) {
+      stiff++;
+      continue;
+    }
+    tx[e] = tx[e]! - d * wx[e]!;
+    ty[e] = ty[e]! - d * wy[e]!;
+    tz[e] = tz[e]! - d * wz[e]!;
+  }
+  return stiff;
+}

@@ -1,4 +1,4 @@
-import { KERNEL } from '../threads/kernels.js';
+import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import { reportNonFinite } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
@@ -56,23 +56,8 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   // Stiff when k h / m >= STIFF_RATE, i.e. k / m >= limit.
   const limit = STIFF_RATE / world.h;
   let stiff = 0;
-  const par = calmAir(world)
-    ? runParallel(world, 'linearDragSystem', KERNEL.linearDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents)
-    : null;
-  if (par !== null) {
-    stiff = par;
-  } else if (calmAir(world)) {
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const c = k[e]!;
-      if (c * inv[e]! >= limit) {
-        stiff++;
-        continue;
-      }
-      fx[e] = fx[e]! - c * vx[e]!;
-      fy[e] = fy[e]! - c * vy[e]!;
-      fz[e] = fz[e]! - c * vz[e]!;
-    }
+  if (calmAir(world)) {
+    stiff = runParallel(world, 'linearDragSystem', linearDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents);
   } else {
     const t = world.time,
       px = Position.x,
@@ -124,42 +109,24 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
     fz = Force.z;
   const limit = STIFF_RATE / world.h;
   if (calmAir(world)) {
+    // The kernel adds the force of every body that is not stiff; the stiff ones are stamped here.
     const stiff = runParallel(
       world,
       'quadraticDragSystem',
-      KERNEL.quadraticDragCalm,
+      quadraticDragCalm,
       [k, inv, vx, vy, vz, fx, fy, fz],
       [limit],
       ents.length,
       ents,
     );
-    if (stiff !== null) {
-      // The threads added the force of every body that is not stiff; stamp the stiff ones here.
-      if (stiff > 0) {
-        for (let i = 0; i < ents.length; i++) {
-          const e = ents[i]!;
-          const x = vx[e]!,
-            y = vy[e]!,
-            z = vz[e]!;
-          if (k[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! >= limit) markStiffQuadratic(world, e, k[e]!);
-        }
+    if (stiff > 0) {
+      for (let i = 0; i < ents.length; i++) {
+        const e = ents[i]!;
+        const x = vx[e]!,
+          y = vy[e]!,
+          z = vz[e]!;
+        if (k[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! >= limit) markStiffQuadratic(world, e, k[e]!);
       }
-      return;
-    }
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const x = vx[e]!,
-        y = vy[e]!,
-        z = vz[e]!;
-      const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-      // Stiff at this state: no force; stamped for the exact update after the integrator.
-      if (c * inv[e]! >= limit) {
-        markStiffQuadratic(world, e, k[e]!);
-        continue;
-      }
-      fx[e] = fx[e]! - c * x;
-      fy[e] = fy[e]! - c * y;
-      fz[e] = fz[e]! - c * z;
     }
     return;
   }
@@ -318,3 +285,67 @@ export const liftSystem: ForceLaw = (world: PhysicsWorld): void => {
     fz[e] = fz[e]! + k * (ax * y - ay * x);
   }
 };
+
+/**
+ * Linear drag in still air (forces/drag.ts): F -= k v unless k / m >= limit (then the body is stiff and
+ * left to the exact decay). A: k, inv, vx, vy, vz, fx, fy, fz. P: limit. Returns the count of stiff bodies.
+ */
+export function linearDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array,
+    vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
+  const limit = P[0]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const c = k[e]!;
+    if (c * inv[e]! >= limit) {
+      stiff++;
+      continue;
+    }
+    fx[e] = fx[e]! - c * vx[e]!;
+    fy[e] = fy[e]! - c * vy[e]!;
+    fz[e] = fz[e]! - c * vz[e]!;
+  }
+  return stiff;
+}
+
+/**
+ * Quadratic drag in still air (forces/drag.ts): F -= k |v| v unless k |v| / m >= limit (then the body
+ * is stiff: no force here; the caller stamps it for the exact update). A: k, inv, vx, vy, vz, fx, fy,
+ * fz. P: limit. Returns the count of stiff bodies.
+ */
+export function quadraticDragCalm(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const k = A[0] as Float64Array,
+    inv = A[1] as Float64Array;
+  const vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array,
+    vz = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
+  const limit = P[0]!;
+  const list = ids as Int32Array;
+  let stiff = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const x = vx[e]!,
+      y = vy[e]!,
+      z = vz[e]!;
+    const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
+    if (c * inv[e]! >= limit) {
+      stiff++;
+      continue;
+    }
+    fx[e] = fx[e]! - c * x;
+    fy[e] = fy[e]! - c * y;
+    fz[e] = fz[e]! - c * z;
+  }
+  return stiff;
+}

@@ -1,6 +1,6 @@
-import { KERNEL } from '../threads/kernels.js';
-import { MIN_PARALLEL_PER_THREAD, runParallel } from '../threads/parallel.js';
-import { sharedFloat64 } from '../threads/pool.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { runParallel } from '../threads/parallel.js';
+import { isShared, sharedFloat64 } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import type { ForceLaw } from './law.js';
@@ -8,11 +8,16 @@ import { inverseSquarePairs } from './pairwise.js';
 
 const sourcesOf = new WeakMap<PhysicsWorld, Float64Array>();
 
-/** The world's packed attractor list for the threads (6 slots a source), on shared memory, grown by doubling. */
+/**
+ * The world's packed attractor list (6 slots a source), grown by doubling; on shared memory once the
+ * world has a thread pool, so the pool's workers can read it.
+ */
 function attractorSources(world: PhysicsWorld, n: number): Float64Array {
   let S = sourcesOf.get(world);
-  if (S === undefined || S.length < 6 * n) {
-    S = sharedFloat64(6 * Math.max(n, 2 * (S ? S.length / 6 : 4)));
+  const shared = world.threadPool !== null;
+  if (S === undefined || S.length < 6 * n || (shared && !isShared(S))) {
+    const length = 6 * Math.max(n, 2 * (S ? S.length / 6 : 4));
+    S = shared ? sharedFloat64(length) : new Float64Array(length);
     sourcesOf.set(world, S);
   }
   return S;
@@ -20,8 +25,8 @@ function attractorSources(world: PhysicsWorld, n: number): Float64Array {
 
 /**
  * Per-body gravity scale: adds (s - 1) m g, so that with the world's g (which every integrator
- * applies as an acceleration) the body feels s m g. Position-only. Split over the world's threads
- * when it has several (threads/kernels.ts; the same arithmetic per body).
+ * applies as an acceleration) the body feels s m g. Position-only. One kernel (`gravityScale`), split
+ * over the world's threads when that pays.
  * @category Forces
  */
 export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
@@ -37,18 +42,7 @@ export const gravityScaleSystem: ForceLaw = (world: PhysicsWorld): void => {
     fx = c.Force.x,
     fy = c.Force.y,
     fz = c.Force.z;
-  if (
-    world.threadPool !== null &&
-    runParallel(world, 'gravityScaleSystem', KERNEL.gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents) !== null
-  )
-    return;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    const k = (s[e]! - 1) * m[e]!;
-    fx[e] = fx[e]! + k * gx;
-    fy[e] = fy[e]! + k * gy;
-    fz[e] = fz[e]! + k * gz;
-  }
+  runParallel(world, 'gravityScaleSystem', gravityScale, [s, m, fx, fy, fz], [gx, gy, gz], ents.length, ents);
 };
 gravityScaleSystem.velocityDependent = false;
 
@@ -113,46 +107,77 @@ export const attractorSystem: ForceLaw = (world: PhysicsWorld): void => {
     fz = c.Force.z;
   const M = c.Attractor.mass,
     soft = c.Attractor.softening;
-  // On the world's threads when that pays: each body sums its sources in the same order
-  // (threads/kernels.ts attractors), so the forces are the one-thread ones to the bit.
-  if (world.threadPool !== null && bodies.length >= 2 * MIN_PARALLEL_PER_THREAD) {
-    const S = attractorSources(world, sources.length);
-    for (let s = 0; s < sources.length; s++) {
-      const a = sources[s]!,
-        o = 6 * s;
-      S[o] = a;
-      S[o + 1] = px[a]!;
-      S[o + 2] = py[a]!;
-      S[o + 3] = pz[a]!;
-      S[o + 4] = G * M[a]!;
-      S[o + 5] = soft[a]! * soft[a]!;
-    }
-    if (
-      runParallel(world, 'attractorSystem', KERNEL.attractors, [S, px, py, pz, m, fx, fy, fz], [sources.length], bodies.length, bodies) !==
-      null
-    )
-      return;
-  }
+  // Each body sums its sources in their order (kernel `attractors`), on the world's threads when that pays.
+  const S = attractorSources(world, sources.length);
   for (let s = 0; s < sources.length; s++) {
-    const a = sources[s]!;
-    const xa = px[a]!,
-      ya = py[a]!,
-      za = pz[a]!,
-      gm = G * M[a]!,
-      eps2 = soft[a]! * soft[a]!;
-    for (let i = 0; i < bodies.length; i++) {
-      const b = bodies[i]!;
-      if (b === a) continue;
-      const dx = px[b]! - xa,
-        dy = py[b]! - ya,
-        dz = pz[b]! - za;
-      const r2 = dx * dx + dy * dy + dz * dz + eps2;
+    const a = sources[s]!,
+      o = 6 * s;
+    S[o] = a;
+    S[o + 1] = px[a]!;
+    S[o + 2] = py[a]!;
+    S[o + 3] = pz[a]!;
+    S[o + 4] = G * M[a]!;
+    S[o + 5] = soft[a]! * soft[a]!;
+  }
+  runParallel(world, 'attractorSystem', attractors, [S, px, py, pz, m, fx, fy, fz], [sources.length], bodies.length, bodies);
+};
+attractorSystem.velocityDependent = false;
+
+/**
+ * Per-body gravity scale (forces/gravity.ts): F += (s - 1) m g. A: s, m, fx, fy, fz. P: gx, gy, gz. Returns 0.
+ */
+export function gravityScale(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const s = A[0] as Float64Array,
+    m = A[1] as Float64Array;
+  const fx = A[2] as Float64Array,
+    fy = A[3] as Float64Array,
+    fz = A[4] as Float64Array;
+  const gx = P[0]!,
+    gy = P[1]!,
+    gz = P[2]!;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const k = (s[e]! - 1) * m[e]!;
+    fx[e] = fx[e]! + k * gx;
+    fy[e] = fy[e]! + k * gy;
+    fz[e] = fz[e]! + k * gz;
+  }
+  return 0;
+}
+
+/**
+ * Attractors (forces/gravity.ts): each body gets -G M m (x - x_a) / (r^2 + eps^2)^(3/2) from every
+ * source a in the sources' order (itself excepted). A: sources (Float64, 6 slots a source: entity
+ * id, x, y, z (m), G M (m^3 s^-2), eps^2 (m^2)), px, py, pz, m, fx, fy, fz. P: 0 source count.
+ * Returns 0.
+ */
+export function attractors(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const S = A[0] as Float64Array;
+  const px = A[1] as Float64Array,
+    py = A[2] as Float64Array,
+    pz = A[3] as Float64Array,
+    m = A[4] as Float64Array;
+  const fx = A[5] as Float64Array,
+    fy = A[6] as Float64Array,
+    fz = A[7] as Float64Array;
+  const ns = P[0]!;
+  const list = ids as Int32Array;
+  for (let i = lo; i < hi; i++) {
+    const b = list[i]!;
+    for (let s = 0; s < ns; s++) {
+      const o = s * 6;
+      if (b === S[o]) continue;
+      const dx = px[b]! - S[o + 1]!,
+        dy = py[b]! - S[o + 2]!,
+        dz = pz[b]! - S[o + 3]!;
+      const r2 = dx * dx + dy * dy + dz * dz + S[o + 5]!;
       if (r2 === 0) continue;
-      const k = (-gm * m[b]!) / (r2 * Math.sqrt(r2));
+      const k = (-S[o + 4]! * m[b]!) / (r2 * Math.sqrt(r2));
       fx[b] = fx[b]! + k * dx;
       fy[b] = fy[b]! + k * dy;
       fz[b] = fz[b]! + k * dz;
     }
   }
-};
-attractorSystem.velocityDependent = false;
+  return 0;
+}

@@ -1,13 +1,16 @@
 import { dissipationState, STIFF_RATE } from '../forces/dissipation.js';
 import { markStiffQuadratic } from '../forces/drag.js';
 import { reportNonFiniteForces } from '../step/finite.js';
-import { KERNEL } from '../threads/kernels.js';
+import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
 import { reportNonFinite } from '../world/errors.js';
 import { fusedForcesOn, setFusedForces } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
+
+/** The name a worker's error gives the integrator. */
+const INTEGRATE = 'integrate (semi-implicit Euler)';
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -32,8 +35,9 @@ import { advanceOrientations, applyTorques } from './rotation.js';
  * new velocity or position is NaN or infinite (x * 0 is NaN exactly then, so the positions join the
  * running check without overflowing it).
  *
- * In a world with threads > 1 the two body loops are split over the threads (threads/kernels.ts
- * holds the same loops); each body's arithmetic is unchanged, so the state is identical to the bit.
+ * The two body loops are kernels (`sieForced2` and `sieForced3`, `sieFree2` and `sieFree3`), run
+ * inline or split over the world's threads when that pays: each body's arithmetic is the same either
+ * way, so the state is identical to the bit on any thread count.
  *
  * In a substep that runs the fused force-and-integrate pass (integrators/fused-gate.ts says when), the
  * forced bodies' forces are written here, in the same pass that moves them (`fusedForced2`), and a
@@ -70,73 +74,15 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   let check = 0;
   const fused = fusedForcesOn(world);
   if (fused) setFusedForces(world, false);
-  const par =
-    fused || world.threadPool === null
-      ? null
-      : is2D
-        ? runParallel(
-            world,
-            'integrate (semi-implicit Euler)',
-            KERNEL.sieForced2,
-            [px, py, vx, vy, ox, oy, fx, fy, im],
-            [h, gxh, gyh, hx, hy],
-            ents.length,
-            ents,
-          )
-        : runParallel(
-            world,
-            'integrate (semi-implicit Euler)',
-            KERNEL.sieForced3,
-            [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im],
-            [h, gxh, gyh, gzh, hx, hy, hz],
-            ents.length,
-            ents,
-          );
   if (fused) {
     if (is2D) fusedForced2(world, h);
     else fusedForced3(world, h);
-  } else if (par !== null) {
-    check = par;
   } else if (is2D) {
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const w = im[e]! * h;
-      const nvx = vx[e]! + fx[e]! * w + gxh;
-      const nvy = vy[e]! + fy[e]! * w + gyh;
-      const x = px[e]!,
-        y = py[e]!;
-      ox[e] = x;
-      oy[e] = y;
-      vx[e] = nvx;
-      vy[e] = nvy;
-      // Exact free fall only for a body no force acted on (see the docstring).
-      const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
-      px[e] = x + (nvx - k * hx) * h;
-      py[e] = y + (nvy - k * hy) * h;
-      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-    }
+    const arrays = [px, py, vx, vy, ox, oy, fx, fy, im];
+    check = runParallel(world, INTEGRATE, sieForced2, arrays, [h, gxh, gyh, hx, hy], ents.length, ents);
   } else {
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const w = im[e]! * h;
-      const nvx = vx[e]! + fx[e]! * w + gxh;
-      const nvy = vy[e]! + fy[e]! * w + gyh;
-      const nvz = vz[e]! + fz[e]! * w + gzh;
-      const x = px[e]!,
-        y = py[e]!,
-        z = pz[e]!;
-      ox[e] = x;
-      oy[e] = y;
-      oz[e] = z;
-      vx[e] = nvx;
-      vy[e] = nvy;
-      vz[e] = nvz;
-      const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
-      px[e] = x + (nvx - k * hx) * h;
-      py[e] = y + (nvy - k * hy) * h;
-      pz[e] = z + (nvz - k * hz) * h;
-      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
-    }
+    const arrays = [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im];
+    check = runParallel(world, INTEGRATE, sieForced3, arrays, [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
@@ -144,100 +90,20 @@ export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   // exactly 1..maxId and the loop runs over that range directly; PreviousPosition is kept only if the
   // world interpolates (nothing collides with a bare particle).
   ents = freeBodies(world);
-  check = 0;
   const save = world.interpolation;
   const n = ents.length;
   const dense = n > 0 && n === world.entityIndex.maxId;
-  const parFree =
-    world.threadPool === null
-      ? null
-      : is2D
-        ? runParallel(
-            world,
-            'integrate (semi-implicit Euler)',
-            KERNEL.sieFree2,
-            [px, py, vx, vy, ox, oy],
-            [h, gxh, gyh, hx, hy, save ? 1 : 0],
-            n,
-            dense ? null : ents,
-          )
-        : runParallel(
-            world,
-            'integrate (semi-implicit Euler)',
-            KERNEL.sieFree3,
-            [px, py, pz, vx, vy, vz, ox, oy, oz],
-            [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0],
-            n,
-            dense ? null : ents,
-          );
-  if (parFree !== null) {
-    check = parFree;
-  } else if (is2D && dense) {
-    if (save) {
-      for (let e = 1; e <= n; e++) {
-        const nvx = vx[e]! + gxh,
-          nvy = vy[e]! + gyh;
-        const x = px[e]!,
-          y = py[e]!;
-        ox[e] = x;
-        oy[e] = y;
-        vx[e] = nvx;
-        vy[e] = nvy;
-        px[e] = x + (nvx - hx) * h;
-        py[e] = y + (nvy - hy) * h;
-        check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-      }
-    } else {
-      for (let e = 1; e <= n; e++) {
-        const nvx = vx[e]! + gxh,
-          nvy = vy[e]! + gyh;
-        vx[e] = nvx;
-        vy[e] = nvy;
-        px[e] = px[e]! + (nvx - hx) * h;
-        py[e] = py[e]! + (nvy - hy) * h;
-        check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-      }
-    }
-  } else if (is2D) {
-    for (let i = 0; i < n; i++) {
-      const e = ents[i]!;
-      const nvx = vx[e]! + gxh,
-        nvy = vy[e]! + gyh;
-      const x = px[e]!,
-        y = py[e]!;
-      if (save) {
-        ox[e] = x;
-        oy[e] = y;
-      }
-      vx[e] = nvx;
-      vy[e] = nvy;
-      px[e] = x + (nvx - hx) * h;
-      py[e] = y + (nvy - hy) * h;
-      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
-    }
-  } else {
-    for (let i = 0; i < n; i++) {
-      const e = dense ? i + 1 : ents[i]!;
-      const nvx = vx[e]! + gxh,
-        nvy = vy[e]! + gyh,
-        nvz = vz[e]! + gzh;
-      const x = px[e]!,
-        y = py[e]!,
-        z = pz[e]!;
-      if (save) {
-        ox[e] = x;
-        oy[e] = y;
-        oz[e] = z;
-      }
-      vx[e] = nvx;
-      vy[e] = nvy;
-      vz[e] = nvz;
-      px[e] = x + (nvx - hx) * h;
-      py[e] = y + (nvy - hy) * h;
-      pz[e] = z + (nvz - hz) * h;
-      check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
-    }
-  }
+  check = is2D
+    ? runParallel(world, INTEGRATE, sieFree2, [px, py, vx, vy, ox, oy], [h, gxh, gyh, hx, hy, save ? 1 : 0], n, dense ? null : ents)
+    : runParallel(
+        world,
+        INTEGRATE,
+        sieFree3,
+        [px, py, pz, vx, vy, vz, ox, oy, oz],
+        [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0],
+        n,
+        dense ? null : ents,
+      );
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
   advanceKinematic(world, h);
@@ -583,4 +449,205 @@ export function advanceKinematic(world: PhysicsWorld, h: number): void {
     check += px[e]! + py[e]! + pz[e]!;
   }
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
+}
+
+/**
+ * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
+ * A: px, py, vx, vy, ox, oy, fx, fy, im. P: h, gxh, gyh, hx, hy. Returns the finiteness check sum.
+ */
+export function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array,
+    oy = A[5] as Float64Array,
+    fx = A[6] as Float64Array,
+    fy = A[7] as Float64Array;
+  const im = A[8] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    hx = P[3]!,
+    hy = P[4]!;
+  const list = ids as Int32Array;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const w = im[e]! * h;
+    const nvx = vx[e]! + fx[e]! * w + gxh;
+    const nvy = vy[e]! + fy[e]! * w + gyh;
+    const x = px[e]!,
+      y = py[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    vx[e] = nvx;
+    vy[e] = nvy;
+    const k = fx[e] === 0 && fy[e] === 0 ? 1 : 0;
+    px[e] = x + (nvx - k * hx) * h;
+    py[e] = y + (nvy - k * hy) * h;
+    check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bodies with a force accumulator, 3D.
+ * A: px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im. P: h, gxh, gyh, gzh, hx, hy, hz.
+ */
+export function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array,
+    vy = A[4] as Float64Array,
+    vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array,
+    oy = A[7] as Float64Array,
+    oz = A[8] as Float64Array;
+  const fx = A[9] as Float64Array,
+    fy = A[10] as Float64Array,
+    fz = A[11] as Float64Array;
+  const im = A[12] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    gzh = P[3]!,
+    hx = P[4]!,
+    hy = P[5]!,
+    hz = P[6]!;
+  const list = ids as Int32Array;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = list[i]!;
+    const w = im[e]! * h;
+    const nvx = vx[e]! + fx[e]! * w + gxh;
+    const nvy = vy[e]! + fy[e]! * w + gyh;
+    const nvz = vz[e]! + fz[e]! * w + gzh;
+    const x = px[e]!,
+      y = py[e]!,
+      z = pz[e]!;
+    ox[e] = x;
+    oy[e] = y;
+    oz[e] = z;
+    vx[e] = nvx;
+    vy[e] = nvy;
+    vz[e] = nvz;
+    const k = fx[e] === 0 && fy[e] === 0 && fz[e] === 0 ? 1 : 0;
+    px[e] = x + (nvx - k * hx) * h;
+    py[e] = y + (nvy - k * hy) * h;
+    pz[e] = z + (nvz - k * hz) * h;
+    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bare particles (a = g), 2D. A: px, py, vx, vy, ox, oy.
+ * P: h, gxh, gyh, hx, hy, save (1: keep PreviousPosition). ids null: entities lo + 1 .. hi.
+ */
+export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    vx = A[2] as Float64Array,
+    vy = A[3] as Float64Array;
+  const ox = A[4] as Float64Array,
+    oy = A[5] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    hx = P[3]!,
+    hy = P[4]!,
+    save = P[5] === 1;
+  let check = 0;
+  if (ids === null && save) {
+    for (let e = lo + 1; e <= hi; e++) {
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  } else if (ids === null) {
+    for (let e = lo + 1; e <= hi; e++) {
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = px[e]! + (nvx - hx) * h;
+      py[e] = py[e]! + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  } else {
+    for (let i = lo; i < hi; i++) {
+      const e = ids[i]!;
+      const nvx = vx[e]! + gxh,
+        nvy = vy[e]! + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      if (save) {
+        ox[e] = x;
+        oy[e] = y;
+      }
+      vx[e] = nvx;
+      vy[e] = nvy;
+      px[e] = x + (nvx - hx) * h;
+      py[e] = y + (nvy - hy) * h;
+      check += nvx + nvy + px[e]! * 0 + py[e]! * 0;
+    }
+  }
+  return check;
+}
+
+/**
+ * Semi-implicit Euler for bare particles, 3D. A: px, py, pz, vx, vy, vz, ox, oy, oz.
+ * P: h, gxh, gyh, gzh, hx, hy, hz, save. ids null: entities lo + 1 .. hi.
+ */
+export function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  const px = A[0] as Float64Array,
+    py = A[1] as Float64Array,
+    pz = A[2] as Float64Array;
+  const vx = A[3] as Float64Array,
+    vy = A[4] as Float64Array,
+    vz = A[5] as Float64Array;
+  const ox = A[6] as Float64Array,
+    oy = A[7] as Float64Array,
+    oz = A[8] as Float64Array;
+  const h = P[0]!,
+    gxh = P[1]!,
+    gyh = P[2]!,
+    gzh = P[3]!,
+    hx = P[4]!,
+    hy = P[5]!,
+    hz = P[6]!,
+    save = P[7] === 1;
+  let check = 0;
+  for (let i = lo; i < hi; i++) {
+    const e = ids === null ? i + 1 : ids[i]!;
+    const nvx = vx[e]! + gxh,
+      nvy = vy[e]! + gyh,
+      nvz = vz[e]! + gzh;
+    const x = px[e]!,
+      y = py[e]!,
+      z = pz[e]!;
+    if (save) {
+      ox[e] = x;
+      oy[e] = y;
+      oz[e] = z;
+    }
+    vx[e] = nvx;
+    vy[e] = nvy;
+    vz[e] = nvz;
+    px[e] = x + (nvx - hx) * h;
+    py[e] = y + (nvy - hy) * h;
+    pz[e] = z + (nvz - hz) * h;
+    check += nvx + nvy + nvz + px[e]! * 0 + py[e]! * 0 + pz[e]! * 0;
+  }
+  return check;
 }

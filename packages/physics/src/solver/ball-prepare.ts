@@ -7,7 +7,7 @@
 
 import { type ContactBuffer, ContactKind, findWarmStart } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
-import { KERNEL, type KernelArray } from '../threads/kernels.js';
+import type { KernelArray } from '../threads/kernel-types.js';
 import { runOnPool } from '../threads/parallel.js';
 import { isShared, sharedLike } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -117,8 +117,7 @@ function prepare2DStage(world: PhysicsWorld, buf: ContactBuffer, stick: number):
   P[5] = cache.size;
   P[6] = ContactKind.Ball;
   P[7] = ContactKind.Boundary;
-  if (pool !== null && runOnPool(pool, 'contactSolverSystem', KERNEL.prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null)
-    return;
+  if (pool !== null && runOnPool(pool, 'contactSolverSystem', prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null) return;
   prepareContacts2D(A, P, null, 0, n);
 }
 

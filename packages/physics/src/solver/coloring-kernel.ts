@@ -1,5 +1,5 @@
 /**
- * The coloured 2D contact substeps (solver/coloring.ts) as a thread kernel (threads/kernels.ts: a
+ * The coloured 2D contact substeps (solver/coloring.ts) as a thread kernel (step/kernel-table.ts: a
  * self-contained function the worker threads also run as source text); solver/coloring.ts runs it and
  * says when.
  */
@@ -9,7 +9,7 @@ import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import type { approach2D } from './stages-kernel.js';
 
 /**
- * Thread kernel (threads/kernels.ts rules: self-contained) of the coloured substeps, run by every
+ * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
  * the contact buffer's rows (solver/contact-pack-2d.ts layout) group by group into the pack (one block a
  * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
@@ -96,7 +96,7 @@ export function solveColored2D(
   // function, which runs once a step, they ran in code compiled on the stack (OSR) partway through a
   // call, which every branch first reached later threw away: 14 recompiles of ~50 ms each in 100
   // steps of balls-in-box 20,000 on 2 threads, on the cores the threads need.
-  // (Indices of KERNEL_HELPERS, threads/kernels.ts; the kernel may name nothing outside itself.)
+  // (Indices of KERNEL_HELPERS, solver/kernel-helpers.ts; the kernel may name nothing outside itself.)
   const packRows = H[0] as typeof coloredPack2D,
     unpackRows = H[1] as typeof coloredUnpack2D;
   const bodyStage = H[2] as typeof coloredBodies2D,
@@ -265,7 +265,7 @@ export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: b
 }
 
 /*
- * The coloured kernel's block loops (KERNEL_HELPERS 0 to 3, threads/kernels.ts), self-contained like a
+ * The coloured kernel's block loops (KERNEL_HELPERS 0 to 3, solver/kernel-helpers.ts), self-contained like a
  * kernel; the arithmetic of each row and body is the one the kernel had inline.
  */
 

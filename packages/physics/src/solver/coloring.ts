@@ -42,7 +42,6 @@ import type { ContactBuffer } from '../collision/contacts.js';
 import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
 import type { KernelArray } from '../threads/kernel-types.js';
-import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE } from './body-state-layout.js';
@@ -50,6 +49,7 @@ import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './colorin
 import { PACK_STRIDE } from './contact-pack-2d.js';
 import { impactChangedRows } from './impact-state.js';
 import { releaseImpactedRows } from './impacts.js';
+import { KERNEL_HELPERS } from './kernel-helpers.js';
 import { stripLayout2D, stripPlan2D } from './strip-plan-kernel.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 
@@ -451,7 +451,7 @@ export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: 
   cs.bodyType = sharedCopy(cs.bodyType);
   shareContactBuffer(buf);
   const s = scratch(cs, buf.count, cs.solverBodyCount);
-  pool.start('contactSolverSystem', KERNEL.stripPlan2D, planArguments(cs, buf, s), planParameters(cs, buf, s, STRIPS, 1, true, true), 1);
+  pool.start('contactSolverSystem', stripPlan2D, planArguments(cs, buf, s), planParameters(cs, buf, s, STRIPS, 1, true, true), 1);
   s.cut = STRIPS;
 }
 
@@ -603,7 +603,7 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   s.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[3] = pool.threads;
-    pool.run('contactSolverSystem', KERNEL.solveColored2D, A, P, pool.threads, null);
+    pool.run('contactSolverSystem', solveColored2D, A, P, pool.threads, null);
   } else {
     plan[3] = 1;
     solveColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);

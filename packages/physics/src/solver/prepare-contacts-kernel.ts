@@ -1,6 +1,6 @@
 /**
  * The contact solver's preparation of 2D contact rows (solver/contact-solver.ts prepareContacts) as a thread kernel
- * (threads/kernels.ts: self-contained, also run by the workers as source text). Each row is prepared
+ * (step/kernel-table.ts: self-contained, also run by the workers as source text). Each row is prepared
  * on its own (effective masses, tangent, combined material, stick or slip, the predicted approach, the
  * warm start found in last step's rows), so the rows are identical to the bit whichever thread prepares
  * them. It is the 2D preparation's only code: solver/contact-solver.ts (prepare2DStage) runs it on the

@@ -1,6 +1,6 @@
 /**
  * The 2D contact solver's per-body and per-row stages (solver/contact-solver.ts gatherBodies' fill, measureApproach,
- * finishBodies) and its restitution stage by colours, as thread kernels (threads/kernels.ts rules:
+ * finishBodies) and its restitution stage by colours, as thread kernels (step/kernel-table.ts rules:
  * self-contained functions the worker threads also run as source text). solver/stages-threads.ts
  * runs them, on the threads or inline on one thread, and says when.
  *
@@ -152,7 +152,7 @@ export function finishBodies2D(
   part: number,
   H: readonly KernelHelper[],
 ): number {
-  // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, threads/kernels.ts): this
+  // The three loops are functions of their own (KERNEL_HELPERS 4 to 6, solver/kernel-helpers.ts): this
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
   const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
@@ -372,7 +372,7 @@ export function restitutionColored2D(
         blk = claimNext(claim, base, count, part, threads, cursor)
       ) {
         try {
-          // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, threads/kernels.ts): this kernel
+          // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, solver/kernel-helpers.ts): this kernel
           // runs once a step, and inline they were compiled on the stack partway through a call.
           if (c < 0) {
             const lo = blk * FIRST,

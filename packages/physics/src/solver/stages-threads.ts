@@ -31,14 +31,15 @@ import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from '..
 import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
 import type { Kernel, KernelArray } from '../threads/kernel-types.js';
-import { KERNEL, KERNEL_HELPERS } from '../threads/kernels.js';
 import { MAX_POOL_PARTS, runOnPool } from '../threads/parallel.js';
 import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { IMPACT_STRIDE } from './body-state-layout.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
+import { KERNEL_HELPERS } from './kernel-helpers.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
+import { warmStartTable } from './warm-start-kernel.js';
 
 /**
  * Tuning and counters of the threaded solver stages (every world of the process). `minPerThread`:
@@ -100,26 +101,16 @@ function allShared(arrays: readonly KernelArray[]): boolean {
 }
 
 /**
- * Runs kernel `kernel` over `n` elements on `pool`'s threads when the pool takes it (runOnPool: enough
- * elements a thread, every array shared, the adaptive choice), else `fn` (the function registered as
- * `kernel`) inline on the calling thread over all of them (range 0 .. n, part 0): the same kernel either
- * way. Returns its result. The function is passed, not looked up in the kernel table, so a one-thread
- * program does not bundle the table and every kernel in it.
+ * Runs `kernel` over `n` elements on `pool`'s threads when the pool takes it (runOnPool: enough
+ * elements a thread, every array shared, the adaptive choice), else inline on the calling thread over
+ * all of them (range 0 .. n, part 0): the same kernel either way. Returns its result.
  */
-function runStage(
-  pool: ThreadPool | null,
-  kernel: number,
-  fn: Kernel,
-  A: KernelArray[],
-  P: Float64Array,
-  n: number,
-  ids: Int32Array | null,
-): number {
+function runStage(pool: ThreadPool | null, kernel: Kernel, A: KernelArray[], P: Float64Array, n: number, ids: Int32Array | null): number {
   if (pool !== null && allShared(A)) {
     const result = runOnPool(pool, 'contactSolverSystem', kernel, A, P, n, ids, stageThreading.minPerThread);
     if (ran(result)) return result;
   }
-  return fn(A, P, ids, 0, n, 0, KERNEL_HELPERS);
+  return kernel(A, P, ids, 0, n, 0, KERNEL_HELPERS);
 }
 
 /**
@@ -166,7 +157,7 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
   P[4] = pushed;
   P[5] = BodyType.Dynamic;
   P[6] = BodyType.Kinematic;
-  runStage(pool, KERNEL.gatherFill2D, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
+  runStage(pool, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
 /**
@@ -194,7 +185,7 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[2] = g[2]!;
   P[3] = BodyType.Dynamic;
   P[4] = 0;
-  runStage(pool, KERNEL.approach2D, approach2D, A, P, n, null);
+  runStage(pool, approach2D, A, P, n, null);
 }
 
 /**
@@ -221,7 +212,7 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
   A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
   P[0] = n;
   P[1] = cache.size;
-  pool.start('contactSolverSystem', KERNEL.warmStartTable, A, P, 1);
+  pool.start('contactSolverSystem', warmStartTable, A, P, 1);
   stageThreading.runs++;
   return swapWarmStartRows(cache, buf);
 }
@@ -290,7 +281,7 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   P[11] = g[1]!;
   P[12] = buf.count;
   P[13] = count - 1;
-  const check = runStage(pool, KERNEL.finishBodies2D, finishBodies2D, A, P, count - 1, list.subarray(1, count));
+  const check = runStage(pool, finishBodies2D, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
   let deepest = 0;
@@ -358,7 +349,7 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
     plan[3] = pool.threads;
-    pool.run('contactSolverSystem', KERNEL.restitutionColored2D, A, P, pool.threads, null);
+    pool.run('contactSolverSystem', restitutionColored2D, A, P, pool.threads, null);
   } else {
     plan[3] = 1;
     restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);

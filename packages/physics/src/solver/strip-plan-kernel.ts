@@ -1,6 +1,6 @@
 /**
  * The strip plan of the coloured 2D contact solve (solver/coloring.ts: which pack group each row joins,
- * the blocks, each even block's bodies) as a thread kernel and kernel helpers (threads/kernels.ts
+ * the blocks, each even block's bodies) as a thread kernel and kernel helpers (step/kernel-table.ts
  * rules: self-contained, the worker threads run their source text). A worker makes the plan and packs
  * the rows while the calling thread runs the impact stage (solver/coloring.ts startStripPlan); the
  * calling thread runs the same functions when it plans itself, so the plan is the same either way.

@@ -1,5 +1,5 @@
 /**
- * The strip cut of the coloured solve's plan (solver/coloring.ts) as a thread kernel (threads/kernels.ts
+ * The strip cut of the coloured solve's plan (solver/coloring.ts) as a thread kernel (step/kernel-table.ts
  * rules: self-contained, the worker threads run its source text), and a helper of the strip plan
  * (solver/strip-plan-kernel.ts), which a worker makes while the calling thread runs the impact stage
  * (solver/coloring.ts startStripPlan, ThreadPool.start). The same function cuts inline on the calling

@@ -1,5 +1,5 @@
 /**
- * The warm-start cache's hash table (contacts.ts) built by a thread kernel (threads/kernels.ts rules:
+ * The warm-start cache's hash table (contacts.ts) built by a thread kernel (step/kernel-table.ts rules:
  * self-contained, the worker threads run its source text): storeWarmStart runs it on the calling
  * thread, and a threaded world on a worker while the calling thread finishes the step
  * (solver/stages-threads.ts storeWarmStartOnThreads), so the table is the same either way.

@@ -4,9 +4,9 @@
  * program that never calls it does not bundle the pool, the workers' source or the kernels.
  */
 
+import { KERNEL_HELPERS } from '../solver/kernel-helpers.js';
 import { createThreadPool } from '../threads/pool.js';
 import { setThreadPoolMaker } from '../threads/pool-maker.js';
-import { KERNEL_HELPERS } from './kernel-helpers.js';
 import { KERNELS } from './kernel-table.js';
 
 /**

@@ -1,5 +1,5 @@
-import { KERNEL } from '../threads/kernels.js';
-import { runParallel } from '../threads/parallel.js';
+import type { KernelArray } from '../threads/kernel-types.js';
+import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
 import { NonFiniteStateError } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
 import { currentHandle } from '../world/handles.js';
@@ -151,14 +151,15 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
       const par =
         world.threadPool === null
           ? null
-          : runParallel(
-              world,
+          : runOnPool(
+              world.threadPool,
               'forces stage finiteness check',
-              KERNEL.finiteProbe,
+              finiteProbe,
               is2D ? [F.x, F.y] : [F.x, F.y, F.z],
               EMPTY_PARAMS,
               ents.length,
               dense ? null : ents,
+              MIN_PARALLEL_PER_THREAD,
             );
       if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
         name(
@@ -184,14 +185,15 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
       const par =
         world.threadPool === null
           ? null
-          : runParallel(
-              world,
+          : runOnPool(
+              world.threadPool,
               'forces stage finiteness check',
-              KERNEL.finiteProbe,
+              finiteProbe,
               is2D ? [T.z] : [T.x, T.y, T.z],
               EMPTY_PARAMS,
               ents.length,
               dense ? null : ents,
+              MIN_PARALLEL_PER_THREAD,
             );
       if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
         name(
@@ -217,18 +219,19 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
   let ents = level === 2 ? query(world, [P, V]) : EMPTY;
   if (ents.length > 0) {
     const dense = ents.length === maxId;
-    // A world with threads splits the probe over them (threads/kernels.ts finiteProbe: the same test).
+    // A world with threads splits the probe over them (kernel finiteProbe: the same test).
     const par =
       world.threadPool === null
         ? null
-        : runParallel(
-            world,
+        : runOnPool(
+            world.threadPool,
             `${stage} stage finiteness check`,
-            KERNEL.finiteProbe,
+            finiteProbe,
             is2D ? [V.x, V.y, P.x, P.y] : [V.x, V.y, V.z, P.x, P.y, P.z],
             EMPTY_PARAMS,
             ents.length,
             dense ? null : ents,
+            MIN_PARALLEL_PER_THREAD,
           );
     if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
       name(
@@ -324,4 +327,19 @@ function name(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fi
     }
   }
   throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);
+}
+
+/**
+ * Finiteness probe of the step's stage checks (step/finite.ts): the sum of a[e] * 0 over every
+ * array of A and every entity of the range; 0 when all are finite, NaN as soon as one is not (the
+ * order of the sum cannot change that). P unused.
+ */
+export function finiteProbe(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
+  let s = P.length * 0;
+  for (let j = 0; j < A.length; j++) {
+    const a = A[j] as Float64Array;
+    if (ids === null) for (let e = lo + 1; e <= hi; e++) s += a[e]! * 0;
+    else for (let i = lo; i < hi; i++) s += a[ids[i]!]! * 0;
+  }
+  return s;
 }

@@ -15,7 +15,7 @@
  *
  * Which thread runs which range never changes a result: every kernel writes per-element outputs or
  * per-range buffers appended in range order (the one-thread order), as it must for its results not to
- * depend on the number of threads (threads/kernels.ts). Loops shorter than `BALANCE_MIN_PER_THREAD`
+ * depend on the number of threads (step/kernel-table.ts). Loops shorter than `BALANCE_MIN_PER_THREAD`
  * elements a thread (such as the coloured solve's, whose n is the thread count and whose blocks are
  * claimed dynamically) are cut equally, as before.
  */
@@ -32,7 +32,7 @@ const RATE = 0.25;
 /** Least share of a loop any thread keeps (so its time is still measured). */
 const MIN_SHARE = 0.05;
 
-/** Kernels a pool can hold shares for (threads/kernels.ts has fewer). */
+/** Kernels a pool can hold shares for (step/kernel-table.ts has fewer). */
 const MAX_KERNELS = 64;
 
 /**

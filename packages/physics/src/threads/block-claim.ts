@@ -1,6 +1,6 @@
 /**
  * Claiming the blocks of a unit of work by flags, for kernels whose threads share a unit's blocks
- * (solver/coloring-kernel.ts, solver/stages-kernel.ts). A kernel helper (threads/kernels.ts rules:
+ * (solver/coloring-kernel.ts, solver/stages-kernel.ts). A kernel helper (step/kernel-table.ts rules:
  * self-contained; kernels reach it through KERNEL_HELPERS).
  */
 

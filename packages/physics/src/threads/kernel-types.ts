@@ -1,5 +1,5 @@
 /**
- * The types of a thread kernel (kernels.ts), in a module of their own so that kernels kept beside
+ * The types of a thread kernel (step/kernel-table.ts), in a module of their own so that kernels kept beside
  * their system (forces/barnes-hut/walk.ts) can name them without importing the kernel table.
  */
 
@@ -28,7 +28,7 @@ export type Kernel = (
 ) => number;
 
 /**
- * A function a kernel calls (kernels.ts KERNEL_HELPERS), self-contained like a kernel; every caller of a
+ * A function a kernel calls (solver/kernel-helpers.ts KERNEL_HELPERS), self-contained like a kernel; every caller of a
  * kernel passes the list as its last argument (the workers their own copies, from source text), so a
  * kernel reaches its helpers by index and names nothing outside itself.
  */

@@ -10,7 +10,7 @@
 
 import type { PhysicsWorld } from '../world/options.js';
 import { nowMs } from './adaptive.js';
-import type { KernelArray } from './kernels.js';
+import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 import { isShared, type ThreadPool } from './pool.js';
 
 /**
@@ -25,35 +25,62 @@ import { isShared, type ThreadPool } from './pool.js';
 export const MIN_PARALLEL_PER_THREAD = 8192;
 
 /**
- * Runs kernel `kernel` over n entities on the world's threads when that pays (see the file's
- * header) and returns the summed kernel result; returns null when the caller should run its own
- * single-threaded loop instead. `system` names the system in a worker's error.
+ * Runs `kernel` over n entities: on the world's threads when that pays (see the file's header), else
+ * inline on the calling thread over [0, n) as range 0. It is the same function either way, so a
+ * kernel that treats each entity alone gives the same state on any thread count. Returns the summed
+ * kernel result. `system` names the system in a worker's error.
  * @throws Error naming `system` if a worker's range threw.
  * @category Threads
  */
 export function runParallel(
   world: PhysicsWorld,
   system: string,
-  kernel: number,
+  kernel: Kernel,
   arrays: KernelArray[],
   params: ArrayLike<number>,
   n: number,
   ids: ArrayLike<number> | null,
-): number | null {
-  return runOnPool(world.threadPool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
+): number {
+  return runKernel(world.threadPool, system, kernel, arrays, params, n, ids, MIN_PARALLEL_PER_THREAD);
 }
 
 /**
- * runParallel on a given pool (null: none) with its own threshold: the loop goes parallel when n is
- * at least `minPerThread` times the pool's threads, every array is shared and the workers have
- * started; returns null otherwise (the caller runs its own single-threaded loop).
+ * runOnPool, and when the pool does not take the loop, `kernel` inline over [0, n) (range 0, with
+ * `helpers`: the pool's when there is one). Returns the summed kernel result.
+ * @throws Error naming `system` if a worker's range threw.
+ * @category Threads
+ */
+export function runKernel(
+  pool: ThreadPool | null,
+  system: string,
+  kernel: Kernel,
+  arrays: KernelArray[],
+  params: ArrayLike<number>,
+  n: number,
+  ids: ArrayLike<number> | null,
+  minPerThread: number,
+  helpers: readonly KernelHelper[] = pool === null ? NO_HELPERS : pool.helpers,
+): number {
+  const result = runOnPool(pool, system, kernel, arrays, params, n, ids, minPerThread);
+  return result !== null ? result : kernel(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, helpers);
+}
+
+/** The helper list of a kernel run inline without a pool (the kernels that call helpers pass their own). */
+const NO_HELPERS: readonly KernelHelper[] = Object.freeze([]);
+
+/**
+ * Runs `kernel` (a function of the pool's kernel table) over n entities on the pool's threads when
+ * that pays: n at least `minPerThread` times the pool's threads, every array shared and the workers
+ * started; an adaptive pool may still run it inline over [0, n) when that has been faster
+ * (threads/adaptive.ts). Returns the summed kernel result, or null when the pool (null: none) did not
+ * take the loop, for a caller that then runs the kernel itself (runKernel does).
  * @throws Error naming `system` if a worker's range threw.
  * @category Threads
  */
 export function runOnPool(
   pool: ThreadPool | null,
   system: string,
-  kernel: number,
+  kernel: Kernel,
   arrays: KernelArray[],
   params: ArrayLike<number>,
   n: number,
@@ -66,12 +93,12 @@ export function runOnPool(
   if (!pool.adaptive) return pool.run(system, kernel, arrays, params, n, ids);
   // Threads or this thread alone, whichever has been faster for this loop (threads/adaptive.ts); the
   // same kernel either way, so the result does not depend on the choice.
-  const site = `${system}#${kernel}`;
+  const site = `${system}#${pool.indexOf(kernel)}`;
   const parallel = pool.chooser.choose(site);
   const t0 = nowMs();
   const result = parallel
     ? pool.run(system, kernel, arrays, params, n, ids)
-    : pool.kernels[kernel]!(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, pool.helpers);
+    : kernel(arrays, params as Float64Array, ids as Int32Array | null, 0, n, 0, pool.helpers);
   pool.chooser.record(site, parallel, nowMs() - t0, n);
   return result;
 }

@@ -155,8 +155,10 @@ function canBlock(): boolean {
 export class ThreadPool {
   /** Threads that share a loop: the calling thread and its workers. */
   readonly threads: number;
-  /** The kernel table the pool runs, indexed by kernel number (threads/kernels.ts KERNEL); the workers get its source text. */
+  /** The kernel table the pool runs; the workers get its source text and find a run's kernel by its place in it. */
   readonly kernels: readonly Kernel[];
+  /** Each kernel of `kernels` to its place there. */
+  private readonly kernelIndex: Map<Kernel, number>;
   /** The functions the kernels call, by index (step/kernel-helpers.ts), passed to every kernel as its last argument. */
   readonly helpers: readonly KernelHelper[];
   /** Resolves once every worker has started and can take work (a browser page may await it; Node waits by itself). */
@@ -210,6 +212,7 @@ export class ThreadPool {
   constructor(threads: number, factory: WorkerFactory, kernels: readonly Kernel[], helpers: readonly KernelHelper[]) {
     this.threads = threads;
     this.kernels = kernels;
+    this.kernelIndex = new Map(kernels.map((k, i) => [k, i]));
     this.helpers = helpers;
     this.ctl = new Int32Array(new SharedArrayBuffer(CONTROL.LENGTH * 4));
     this.ctl[CONTROL.SPIN] = IDLE_SPIN_MICROSECONDS;
@@ -306,16 +309,17 @@ export class ThreadPool {
   }
 
   /**
-   * Runs kernel `kernel` (kernels.ts) over [0, n) split into `threads` contiguous ranges (in
+   * Runs `kernel` (a function of the pool's kernel table) over [0, n) split into `threads` contiguous ranges (in
    * proportion to how fast each thread has run this kernel: balance.ts), with
    * `arrays` (each on a SharedArrayBuffer; at most CONTROL.MAX_ARRAYS) and the scalar `params` (at most
    * 64); `ids` (null: dense ids lo+1..hi) is copied to a shared buffer. Returns the sum of the ranges'
    * return values, in thread order.
-   * @throws RangeError naming `system` if `arrays` or `params` is too long (nothing runs).
+   * @throws RangeError naming `system` if `kernel` is not in the pool's table or `arrays` or `params` is
+   *   too long (nothing runs).
    * @throws Error naming `system` if a worker's range threw (the message is the worker's), or if a
    *   worker died (`<system>: worker thread <i> died ...`; the pool is disposed, the world steps on one thread).
    */
-  run(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
+  run(system: string, kernel: Kernel, arrays: KernelArray[], params: ArrayLike<number>, n: number, ids: ArrayLike<number> | null): number {
     this.join();
     if (this.lost !== null) this.fail(system, this.lost);
     const ctl = this.ctl;
@@ -326,8 +330,8 @@ export class ThreadPool {
       for (let i = 0; i < n; i++) buf[i] = ids[i]!;
       idsId = this.idOf(buf);
     }
-    this.setUp(system, kernel, arrays, params, idsId);
-    this.balance.bounds(kernel, n, ctl, CONTROL.BOUNDS);
+    const k = this.setUp(system, kernel, arrays, params, idsId);
+    this.balance.bounds(k, n, ctl, CONTROL.BOUNDS);
     const t0 = epochMs();
     this.dispatch(COMMAND.RUN);
     this.runs++;
@@ -335,24 +339,31 @@ export class ThreadPool {
     let own: number,
       t1 = t0;
     try {
-      own = this.kernels[kernel]!(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, this.helpers);
+      own = kernel(arrays, this.params, ids === null ? null : this.idBuffer, 0, ctl[CONTROL.BOUNDS + 1]!, 0, this.helpers);
       t1 = epochMs();
     } finally {
       this.await(system);
     }
     if (ctl[CONTROL.ERROR] !== 0) throw new Error(`${system}: a worker thread failed: ${this.workerError()}`);
-    this.balance.record(kernel, n, t0, t1, this.finished);
+    this.balance.record(k, n, t0, t1, this.finished);
     let sum = own;
     for (let i = 1; i < t; i++) sum += this.results[i]!;
     return sum;
   }
 
+  /** `kernel`'s place in the pool's kernel table, or -1 if it is not there. */
+  indexOf(kernel: Kernel): number {
+    return this.kernelIndex.get(kernel) ?? -1;
+  }
+
   /**
    * Writes a run's kernel, arrays (posted to the workers first if new), parameters and ids slot
-   * (-1: none) into the control block, and clears the error flag.
-   * @throws RangeError naming `system` if `arrays` or `params` is too long.
+   * (-1: none) into the control block, and clears the error flag. Returns the kernel's place in the table.
+   * @throws RangeError naming `system` if `kernel` is not in the table or `arrays` or `params` is too long.
    */
-  private setUp(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, idsId: number): void {
+  private setUp(system: string, kernel: Kernel, arrays: KernelArray[], params: ArrayLike<number>, idsId: number): number {
+    const k = this.kernelIndex.get(kernel);
+    if (k === undefined) throw new RangeError(`${system}: kernel ${kernel.name || '(anonymous)'} is not in the thread pool's kernel table`);
     if (arrays.length > CONTROL.MAX_ARRAYS) throw new RangeError(`${system}: a kernel takes at most ${CONTROL.MAX_ARRAYS} arrays`);
     if (params.length > MAX_PARAMS)
       throw new RangeError(`${system}: a kernel takes at most ${MAX_PARAMS} parameters, got ${params.length}`);
@@ -361,24 +372,25 @@ export class ThreadPool {
     this.sync(system);
     const P = this.params;
     for (let i = 0; i < params.length; i++) P[i] = params[i]!;
-    ctl[CONTROL.KERNEL] = kernel;
+    ctl[CONTROL.KERNEL] = k;
     ctl[CONTROL.NARRAYS] = arrays.length;
     ctl[CONTROL.IDS] = idsId;
     ctl[CONTROL.ERROR] = 0;
+    return k;
   }
 
   /** The system of the kernel `start` left running on a worker, or null. */
   private started: string | null = null;
 
   /**
-   * Starts kernel `kernel` (kernels.ts) over all of [0, n) on the first worker alone and returns at
+   * Starts `kernel` (a function of the pool's kernel table) over all of [0, n) on the first worker alone and returns at
    * once, so the calling thread can do other work meanwhile (work that neither writes what the kernel
    * reads nor reads what it writes); `join` waits for it. The other threads' ranges are empty
    * ([n, n) and, for the caller, [0, 0)), so the kernel must do nothing on an empty range. The next
    * `run` or `start` joins it first. Needs a usable pool (`usable()`) with at least one worker.
    * @throws RangeError naming `system` if the pool has no usable worker or `arrays` or `params` is too long.
    */
-  start(system: string, kernel: number, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
+  start(system: string, kernel: Kernel, arrays: KernelArray[], params: ArrayLike<number>, n: number): void {
     this.join();
     if (this.lost !== null) this.fail(system, this.lost);
     if (this.workers.length === 0 || !this.usable()) throw new RangeError(`${system}: ThreadPool.start needs a usable worker`);
@@ -528,7 +540,7 @@ export class ThreadPool {
 
 /**
  * Makes a pool of `threads` threads (the caller and threads - 1 workers) that runs the kernels of
- * `kernels` (indexed by kernel number) with `helpers` as their last argument. The pool knows no
+ * `kernels` (a run names its kernel by its place there) with `helpers` as their last argument. The pool knows no
  * physics: a world's pool gets the physics kernel table (step/kernel-table.ts) from `enableThreads`.
  * @throws Error if SharedArrayBuffer is missing (a page that is not cross-origin isolated) or no
  *   worker can be made here; the message starts with `where`.

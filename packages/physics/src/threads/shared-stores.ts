@@ -4,7 +4,7 @@
  * each lazily allocated store when it gets its arrays.
  */
 
-import type { KernelArray } from './kernels.js';
+import type { KernelArray } from './kernel-types.js';
 import { sharedCopy } from './pool.js';
 
 /**

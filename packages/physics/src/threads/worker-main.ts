@@ -84,7 +84,7 @@ export type PoolMessage =
 
 /**
  * The worker's loop, as JavaScript source text: `workerMain(kernels, helpers, nodePort)` (helpers: the
- * kernels' last argument, kernels.ts KERNEL_HELPERS) installs the message
+ * kernels' last argument, solver/kernel-helpers.ts KERNEL_HELPERS) installs the message
  * handler on `nodePort` (Node's parentPort, or null for the browser's `self`) and serves the pool's
  * commands as the file's header describes. It is text, not a function of this module, because
  * bundlers rewrite inner functions (a minifier keeping names wraps them in a helper of its own

@@ -1,5 +1,5 @@
 /**
- * The source text of a pool's worker: the kernels (kernels.ts), written out from the very functions
+ * The source text of a pool's worker: the kernels (step/kernel-table.ts), written out from the very functions
  * the main thread runs, so both sides execute the same arithmetic, and the worker's loop
  * (worker-main.ts). One module for Node (`new Worker(source, { eval: true })`) and the browser (a Blob
  * URL, which a cross-origin isolated page may start).
@@ -22,7 +22,7 @@ export function workerSource(kernels: readonly Kernel[], helpers: readonly Kerne
     // A bundler keeping names may wrap the kernels' names in a __name helper; the worker has none.
     'var __name = function (f) { return f; };',
     `var KERNELS = [${kernels.map((k) => k.toString()).join(',\n')}];`,
-    // The kernels' helpers, reached by index (kernels.ts KERNEL_HELPERS), so no name a bundler chose matters.
+    // The kernels' helpers, reached by index (solver/kernel-helpers.ts KERNEL_HELPERS), so no name a bundler chose matters.
     `var KERNEL_HELPERS = [${helpers.map((k) => k.toString()).join(',\n')}];`,
     WORKER_MAIN_SOURCE,
     "workerMain(KERNELS, KERNEL_HELPERS, typeof require === 'function' ? require('node:worker_threads').parentPort : null);",

@@ -1,5 +1,5 @@
 /**
- * The broadphase's cell pass as a thread kernel (threads/kernels.ts: a self-contained function the
+ * The broadphase's cell pass as a thread kernel (step/kernel-table.ts: a self-contained function the
  * worker threads also run as source text), its only code: collision/broadphase/grid-pairs.ts runs it,
  * on the threads or inline, and says when.
  */

@@ -14,7 +14,6 @@
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
-import { KERNEL } from '../../threads/kernels.js';
 import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedMemoryAvailable, type ThreadPool } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
@@ -133,7 +132,7 @@ export function ballPairsStage(
     P[7] = g.originZ;
     buf.counts.fill(0);
     let threads = 1;
-    if (pool !== null && runOnPool(pool, 'broadphaseSystem', KERNEL.ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) !== null) {
+    if (pool !== null && runOnPool(pool, 'broadphaseSystem', ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) !== null) {
       threads = pool.threads;
     } else {
       pool = null;

@@ -1,5 +1,5 @@
 /**
- * The narrowphase's ball-ball contacts (collision/narrowphase/balls.ts) as a thread kernel (threads/kernels.ts: a
+ * The narrowphase's ball-ball contacts (collision/narrowphase/balls.ts) as a thread kernel (step/kernel-table.ts: a
  * self-contained function the worker threads also run as source text), their only code: collision/narrowphase/balls-threads.ts
  * runs it on the threads or inline and says when.
  */

@@ -11,7 +11,6 @@
 
 import { shareContactBuffer } from '../../solver/coloring.js';
 import type { KernelArray } from '../../threads/kernel-types.js';
-import { KERNEL } from '../../threads/kernels.js';
 import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedLike, type ThreadPool } from '../../threads/pool.js';
 import { jointKeepsApart } from '../../world/joint-no-collide.js';
@@ -145,7 +144,7 @@ export function ballContactsStage(world: PhysicsWorld, cs: CollisionState, buf: 
   counts.fill(0);
   // The kernel's ranges cover lo .. hi - 1: the pool splits 0 .. m, so the pair arrays are offset views.
   if (pool !== null && lo !== 0) pool = null;
-  if (pool !== null && runOnPool(pool, 'narrowphaseSystem', KERNEL.ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) !== null) {
+  if (pool !== null && runOnPool(pool, 'narrowphaseSystem', ballContacts, A, P, m, null, CONTACTS_MIN_PER_THREAD) !== null) {
     let total = 0,
       overflow = false;
     for (let p = 0; p < threads; p++) {

@@ -1,5 +1,5 @@
 /**
- * The loops of the Barnes-Hut build (forces/barnes-hut/tree.ts) as thread kernels (threads/kernels.ts:
+ * The loops of the Barnes-Hut build (forces/barnes-hut/tree.ts) as thread kernels (step/kernel-table.ts:
  * self-contained functions the worker threads also run as source text): gathering the bodies'
  * positions and masses with their bounding box, the Morton sort (keys, buckets of the first digit,
  * each bucket sorted) with the bodies put into tree order, the nodes' moments, and adding m g to the

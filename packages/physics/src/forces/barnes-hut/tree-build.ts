@@ -1,5 +1,4 @@
 import { nowMs } from '../../threads/adaptive.js';
-import { KERNEL } from '../../threads/kernels.js';
 import { MIN_PARALLEL_PER_THREAD } from '../../threads/parallel.js';
 import type { ThreadPool } from '../../threads/pool.js';
 import { BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits, treeMoments } from './gather.js';
@@ -185,7 +184,7 @@ function mortonSort(
     A3 = t.sortLists[2]!;
   A1.length = 0;
   A1.push(x as Float64Array, y as Float64Array, z as Float64Array, t.key, hist);
-  if (parts > 1) pool!.run(system, KERNEL.mortonKeysHist, A1, P, parts, null);
+  if (parts > 1) pool!.run(system, mortonKeysHist, A1, P, parts, null);
   else mortonKeysHist(A1, P, null, 0, 1);
   // First places of each (digit, part), digit-major (so the pass is stable), and each bucket's first slot.
   let acc = 0;
@@ -200,7 +199,7 @@ function mortonSort(
   bucket[R] = acc;
   A2.length = 0;
   A2.push(t.key, t.key2, t.idx2, offset);
-  if (parts > 1) pool!.run(system, KERNEL.mortonScatter, A2, P, parts, null);
+  if (parts > 1) pool!.run(system, mortonScatter, A2, P, parts, null);
   else mortonScatter(A2, P, null, 0, 1);
   // Runs of buckets of about n / parts bodies each, for the last pass.
   group[0] = 0;
@@ -229,7 +228,7 @@ function mortonSort(
     t.z,
     t.m,
   );
-  if (parts > 1) pool!.run(system, KERNEL.mortonBucketSort, A3, P, parts, null);
+  if (parts > 1) pool!.run(system, mortonBucketSort, A3, P, parts, null);
   else mortonBucketSort(A3, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, n);
 }
@@ -464,7 +463,7 @@ function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
   const A = t.momentLists[0]!;
   A.length = 0;
   A.push(t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, skip, t.perm, t.slot, list, cut);
-  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', KERNEL.treeMoments, A, P, parts, null);
+  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', treeMoments, A, P, parts, null);
   else treeMoments(A, P, null, 0, 1);
   if (ntop > 0) {
     // The nodes above the subtrees, deepest first (descending index: children before parents).

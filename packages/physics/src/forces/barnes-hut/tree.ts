@@ -1,6 +1,5 @@
 import { nowMs } from '../../threads/adaptive.js';
 import type { KernelArray } from '../../threads/kernel-types.js';
-import { KERNEL, KERNEL_HELPERS, KERNELS } from '../../threads/kernels.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../../threads/parallel.js';
 import { sharedFloat64, type ThreadPool } from '../../threads/pool.js';
 import { CONTROL } from '../../threads/worker-main.js';
@@ -9,6 +8,8 @@ import { BOX_STRIDE, treeForces, treeGather } from './gather.js';
 import { buildTreeWith } from './tree-build.js';
 import { f64, type GravityTree, MAX_PARTS, NF2, NF3, NL2, NL3, worldTree } from './tree-store.js';
 import { INFO_STRIDE } from './walk.js';
+import { barnesHutWalk2 } from './walk-2d.js';
+import { barnesHutWalk3 } from './walk-3d.js';
 
 /**
  * Tree code for mutual gravity: a quadtree in 2D, an octree in 3D, rebuilt over the bodies at every
@@ -193,10 +194,10 @@ function treeFieldsWith(
   P[7] = accOffset + 2 * t.x.length;
   P[8] = forces !== null ? 1 : 0;
   P[9] = 13 + threads;
-  const kernel = t.dims === 3 ? KERNEL.barnesHutWalk3 : KERNEL.barnesHutWalk2;
+  const kernel = t.dims === 3 ? barnesHutWalk3 : barnesHutWalk2;
   const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
-  else KERNELS[kernel]!(arrays, P, null, 0, 1, 0, KERNEL_HELPERS);
+  else kernel(arrays, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {
@@ -454,7 +455,7 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
     box[o + 5] = -Infinity;
     box[o + 6] = 0;
   }
-  if (runOnPool(world.threadPool, system, KERNEL.treeGather, arrays, P, n, ents, MIN_PARALLEL_PER_THREAD) === null) {
+  if (runOnPool(world.threadPool, system, treeGather, arrays, P, n, ents, MIN_PARALLEL_PER_THREAD) === null) {
     parts = 1;
     treeGather(arrays, P, ents as unknown as Int32Array, 0, n, 0);
   }

@@ -1,6 +1,6 @@
 /**
  * The evaluation half of the Barnes-Hut tree code (forces/barnes-hut/tree.ts): the dual-tree walk and the
- * downward pass, written as thread kernels (threads/kernels.ts: self-contained functions whose
+ * downward pass, written as thread kernels (step/kernel-table.ts: self-contained functions whose
  * source text the worker threads also run), so that the field can be evaluated on several threads.
  * The one-thread evaluation runs the very same kernel with one part.
  *

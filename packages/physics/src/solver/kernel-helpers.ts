@@ -1,20 +1,14 @@
 /**
- * The functions kernels call, by index (threads/kernels.ts): a module of its own so a program that
- * runs the block loops of the coloured solve on one thread does not bring in the whole kernel table.
+ * The functions kernels call, by index: a module of its own so a program that runs the block loops
+ * of the coloured solve on one thread does not bring in the whole kernel table (step/kernel-table.ts).
  */
-import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from '../solver/coloring-kernel.js';
-import {
-  approach2D,
-  containBodies2D,
-  deepestRow2D,
-  finishBodyRows2D,
-  restitutionRows2D,
-  restitutionTargets2D,
-} from '../solver/stages-kernel.js';
-import { stripLayout2D } from '../solver/strip-plan-kernel.js';
-import { stripCut2D } from '../solver/strips-kernel.js';
+
 import { claimBlock } from '../threads/block-claim.js';
 import type { KernelHelper } from '../threads/kernel-types.js';
+import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from './coloring-kernel.js';
+import { approach2D, containBodies2D, deepestRow2D, finishBodyRows2D, restitutionRows2D, restitutionTargets2D } from './stages-kernel.js';
+import { stripLayout2D } from './strip-plan-kernel.js';
+import { stripCut2D } from './strips-kernel.js';
 
 /**
  * Functions kernels call, by index (passed to every kernel as its last argument; the workers get
