@@ -14,7 +14,8 @@ import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
 import { createClothState } from './world/cloth-state.js';
-import { BODY_STORES, createComponents, DEFAULT_MATERIAL, DEFAULT_RADIUS, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
+import { COMPONENT_DEFAULTS } from './world/component-defaults.js';
+import { BODY_STORES, createComponents, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
 import { createForceLawSettings } from './world/force-settings.js';
 import { INTEGRATOR_NAMES } from './world/integrator-names.js';
 import { createJointState } from './world/joint-state-2d.js';
@@ -216,8 +217,7 @@ function installDefaults(world: PhysicsWorld): void {
   // In this order: a lazily allocated store gets its arrays before any other observer writes defaults.
   allocateOnAdd(world);
   resetMotionOnAdd(world);
-  resetRigidBodyOnAdd(world);
-  resetForceLawsOnAdd(world);
+  resetFieldsOnAdd(world);
   completeBodiesOnAdd(world);
 }
 
@@ -242,7 +242,7 @@ function allocateOnAdd(world: PhysicsWorld): void {
   }
 }
 
-/** installDefaults: position, motion, mass, ball, material and segment fields reset when their components are added. */
+/** installDefaults: position and motion (velocity, spin, force and torque) reset when their components are added. */
 function resetMotionOnAdd(world: PhysicsWorld): void {
   const c = world.components;
   const zero3 = (s: { x: Float64Array; y: Float64Array; z: Float64Array }) => (eid: number) => {
@@ -279,191 +279,36 @@ function resetMotionOnAdd(world: PhysicsWorld): void {
   observe(world, onAdd(c.Force), zero3(c.Force));
   observe(world, onAdd(c.AngularVelocity), zero3(c.AngularVelocity));
   observe(world, onAdd(c.Torque), zero3(c.Torque));
-  observe(world, onAdd(c.Mass), (eid: number) => {
-    c.Mass.value[eid] = 1;
-    c.Mass.inv[eid] = 1;
-  });
-  observe(world, onAdd(c.Ball), (eid: number) => {
-    c.Ball.radius[eid] = DEFAULT_RADIUS;
-  });
-  observe(world, onAdd(c.Material), (eid: number) => {
-    c.Material.restitution[eid] = DEFAULT_MATERIAL.restitution;
-    c.Material.friction[eid] = DEFAULT_MATERIAL.friction;
-    c.Material.staticFriction[eid] = DEFAULT_MATERIAL.friction;
-  });
-  observe(world, onAdd(c.Segment), (eid: number) => {
-    const s = c.Segment;
-    s.ax[eid] = 0;
-    s.ay[eid] = 0;
-    s.az[eid] = 0;
-    s.bx[eid] = 0;
-    s.by[eid] = 0;
-    s.bz[eid] = 0;
-    s.radius[eid] = 0;
-  });
 }
 
-/** installDefaults: angle, orientation, inertia, angular damping and plane fields reset when added (the inertia tensor also when removed). */
-function resetRigidBodyOnAdd(world: PhysicsWorld): void {
+/**
+ * installDefaults: every component of COMPONENT_DEFAULTS (world/component-defaults.ts) gets its fields'
+ * defaults when added; the inertia tensor is zeroed on removal too; angular damping brings a Torque;
+ * a random force is seeded with its entity's id.
+ */
+function resetFieldsOnAdd(world: PhysicsWorld): void {
   const c = world.components;
-  observe(world, onAdd(c.Angle), (eid: number) => {
-    c.Angle.value[eid] = 0;
-  });
-  observe(world, onAdd(c.Orientation), (eid: number) => {
-    c.Orientation.x[eid] = 0;
-    c.Orientation.y[eid] = 0;
-    c.Orientation.z[eid] = 0;
-    c.Orientation.w[eid] = 1;
-  });
-  observe(world, onAdd(c.Inertia), (eid: number) => {
-    c.Inertia.value[eid] = 0;
-    c.Inertia.inv[eid] = 0;
-  });
-  observe(world, onAdd(c.InertiaTensor), (eid: number) => {
-    const T = c.InertiaTensor;
-    T.x[eid] = 0;
-    T.y[eid] = 0;
-    T.z[eid] = 0;
-    T.invX[eid] = 0;
-    T.invY[eid] = 0;
-    T.invZ[eid] = 0;
-  });
+  const stores = c as unknown as Record<string, Record<string, Float64Array>>;
+  const reset = (name: string, defaults: Readonly<Record<string, number | undefined>>) => {
+    // The store is looked up at each add: a lazily allocated component's arrays are replaced when its
+    // group is first allocated (allocateOnAdd).
+    const store = stores[name]!;
+    const fields = Object.keys(defaults),
+      values = fields.map((f) => defaults[f]!);
+    return (eid: number) => {
+      for (let i = 0; i < fields.length; i++) store[fields[i]!]![eid] = values[i]!;
+    };
+  };
+  for (const [name, defaults] of Object.entries(COMPONENT_DEFAULTS) as [string, Record<string, number>][])
+    observe(world, onAdd(stores[name]!), reset(name, defaults));
   // Zeroed on removal too: the 3D contact solver and angular damping read a body's tensor wherever it
   // is non-zero, so a ball body made later in the slot (which has none) must find zeros there, not the
   // inverse moments of the shape body that held the slot before (a snapshot keeps no store that no live
   // entity has, so a restored world would read zeros where the original read the stale tensor).
-  observe(world, onRemove(c.InertiaTensor), (eid: number) => {
-    const T = c.InertiaTensor;
-    T.x[eid] = 0;
-    T.y[eid] = 0;
-    T.z[eid] = 0;
-    T.invX[eid] = 0;
-    T.invY[eid] = 0;
-    T.invZ[eid] = 0;
-  });
-  observe(world, onAdd(c.AngularDamping), (eid: number) => {
-    c.AngularDamping.k[eid] = 0;
-    addComponentIfMissing(world, eid, c.Torque);
-  });
-  observe(world, onAdd(c.Plane), (eid: number) => {
-    c.Plane.nx[eid] = 0;
-    c.Plane.ny[eid] = 1;
-    c.Plane.nz[eid] = 0;
-    c.Plane.d[eid] = 0;
-  });
-}
-
-/** installDefaults: every force law's fields reset to their documented defaults when its component is added. */
-function resetForceLawsOnAdd(world: PhysicsWorld): void {
-  const c = world.components;
-  observe(world, onAdd(c.LinearDrag), (eid: number) => {
-    c.LinearDrag.k[eid] = 0;
-  });
-  observe(world, onAdd(c.QuadraticDrag), (eid: number) => {
-    c.QuadraticDrag.k[eid] = 0;
-  });
-  observe(world, onAdd(c.GravityScale), (eid: number) => {
-    c.GravityScale.value[eid] = 1;
-  });
-  observe(world, onAdd(c.Attractor), (eid: number) => {
-    c.Attractor.mass[eid] = 0;
-    c.Attractor.softening[eid] = 0;
-  });
-  observe(world, onAdd(c.Charge), (eid: number) => {
-    c.Charge.value[eid] = 0;
-  });
-  const zeroField = (F: typeof c.ElectricField) => (eid: number) => {
-    F.x[eid] = 0;
-    F.y[eid] = 0;
-    F.z[eid] = 0;
-    F.ampX[eid] = 0;
-    F.ampY[eid] = 0;
-    F.ampZ[eid] = 0;
-    F.omega[eid] = 0;
-    F.phase[eid] = 0;
-  };
-  observe(world, onAdd(c.ElectricField), zeroField(c.ElectricField));
-  observe(world, onAdd(c.MagneticField), zeroField(c.MagneticField));
-  observe(world, onAdd(c.CentralForce), (eid: number) => {
-    const C = c.CentralForce;
-    C.cx[eid] = 0;
-    C.cy[eid] = 0;
-    C.cz[eid] = 0;
-    C.k[eid] = 0;
-    C.n[eid] = 2;
-  });
-  observe(world, onAdd(c.Lift), (eid: number) => {
-    c.Lift.k[eid] = 0;
-    c.Lift.axisX[eid] = 0;
-    c.Lift.axisY[eid] = 0;
-    c.Lift.axisZ[eid] = 1;
-  });
-  observe(world, onAdd(c.Buoyancy), (eid: number) => {
-    const B = c.Buoyancy;
-    B.shape[eid] = 0;
-    B.radius[eid] = 0.5;
-    B.halfX[eid] = 0.5;
-    B.halfY[eid] = 0.5;
-    B.halfZ[eid] = 0.5;
-    B.dragCoefficient[eid] = 0;
-  });
-  observe(world, onAdd(c.FluidRegion), (eid: number) => {
-    const F = c.FluidRegion;
-    F.surface[eid] = 0;
-    F.density[eid] = 1000;
-    F.minX[eid] = -Infinity;
-    F.maxX[eid] = Infinity;
-    F.minZ[eid] = -Infinity;
-    F.maxZ[eid] = Infinity;
-  });
-  observe(world, onAdd(c.Spring), (eid: number) => {
-    const S = c.Spring;
-    S.a[eid] = 0;
-    S.b[eid] = 0;
-    S.restLength[eid] = 1;
-    S.stiffness[eid] = 0;
-    S.damping[eid] = 0;
-    S.oneSided[eid] = 0;
-    S.anchorX[eid] = 0;
-    S.anchorY[eid] = 0;
-    S.anchorZ[eid] = 0;
-  });
-  observe(world, onAdd(c.DrivingForce), (eid: number) => {
-    const D = c.DrivingForce;
-    D.x[eid] = 0;
-    D.y[eid] = 0;
-    D.z[eid] = 0;
-    D.omega[eid] = 0;
-    D.phase[eid] = 0;
-  });
+  observe(world, onRemove(c.InertiaTensor), reset('InertiaTensor', COMPONENT_DEFAULTS.InertiaTensor!));
+  observe(world, onAdd(c.AngularDamping), (eid: number) => addComponentIfMissing(world, eid, c.Torque));
   observe(world, onAdd(c.RandomForce), (eid: number) => {
-    c.RandomForce.magnitude[eid] = 0;
-    c.RandomForce.correlationTime[eid] = 1;
     c.RandomForce.seed[eid] = eid;
-  });
-  observe(world, onAdd(c.Thrust), (eid: number) => {
-    const T = c.Thrust;
-    T.exhaustVelocity[eid] = 0;
-    T.massFlowRate[eid] = 0;
-    T.fuel[eid] = 0;
-    T.dirX[eid] = 0;
-    T.dirY[eid] = 1;
-    T.dirZ[eid] = 0;
-  });
-  observe(world, onAdd(c.Vortex), (eid: number) => {
-    const V = c.Vortex;
-    V.cx[eid] = 0;
-    V.cy[eid] = 0;
-    V.cz[eid] = 0;
-    V.axisX[eid] = 0;
-    V.axisY[eid] = 0;
-    V.axisZ[eid] = 1;
-    V.k[eid] = 0;
-    V.n[eid] = 1;
-  });
-  observe(world, onAdd(c.Lifetime), (eid: number) => {
-    c.Lifetime.age[eid] = 0;
-    c.Lifetime.duration[eid] = 1;
   });
 }
 
