@@ -149,6 +149,8 @@ console.log(JSON.stringify(results));
     entryPoints: [entry],
     outfile: out,
     bundle: true,
+    // As the package ships: its layout constants folded into the kernels' text (scripts/build.mjs).
+    minifySyntax: true,
     platform: 'node',
     format: 'esm',
     logLevel: 'silent',

@@ -19,8 +19,10 @@ import { addComponent, removeEntity } from 'bitecs';
 import { build } from 'esbuild';
 import { afterEach, expect, test } from 'vitest';
 import { Rng } from '../../packages/physics/src/math/rng.js';
-import { testKernel } from '../../packages/physics/src/step/kernel-table.js';
+import { KERNEL_HELPERS } from '../../packages/physics/src/solver/kernel-helpers.js';
+import { KERNELS, testKernel } from '../../packages/physics/src/step/kernel-table.js';
 import { sharedFloat64 } from '../../packages/physics/src/threads/pool.js';
+import { workerSource } from '../../packages/physics/src/threads/worker-source.js';
 
 // Worlds with threads > 1 need the thread pool (step/enable-threads.ts).
 enableThreads();
@@ -123,6 +125,19 @@ test("a worker that throws surfaces its error in the main thread with the system
   expect(out[1]).toBe(2);
 });
 
+test("a kernel whose text still names a layout constant is refused with its name, before any worker starts; the table's own kernels name none", () => {
+  // This file is not folded by the build, so the name stays in the function's text, as in an unfolded bundle.
+  const BS2_INV_MASS = 5;
+  const unfolded = (A: Float64Array[], _P: Float64Array, _ids: Int32Array | null, lo: number, hi: number) => {
+    for (let i = lo; i < hi; i++) A[0]![i] = A[1]![i * 8 + BS2_INV_MASS]!;
+    return 0;
+  };
+  expect(() => workerSource([unfolded as never], [])).toThrow(/kernel unfolded names the constant BS2_INV_MASS/);
+  const source = workerSource(KERNELS, KERNEL_HELPERS);
+  expect(source).not.toMatch(/(?<![.\w$])(BS2|BS3|BX|PK)_[A-Z_]+/);
+  expect(source).toContain('function solveColored2D');
+});
+
 test('a kernel takes up to 64 parameters; more are refused before anything runs (they were cut to 24 without a word)', () => {
   const world = make({ capacity: 10, threads: 2 });
   const pool = world.threadPool!;
@@ -214,6 +229,8 @@ test('a Node process with a threaded world exits by itself when its script ends,
     entryPoints: [entry],
     outfile: out,
     bundle: true,
+    // As the package ships: its layout constants folded into the kernels' text (scripts/build.mjs).
+    minifySyntax: true,
     platform: 'node',
     format: 'esm',
     logLevel: 'silent',

@@ -3,9 +3,9 @@
  * collision/state.ts): one row per solver body of the step, row k at k * stride, row 0 the static
  * world. Each offset and stride is named here once.
  *
- * The range kernels and their helpers (step/kernel-table.ts, step/kernel-helpers.ts: solver/*-kernel.ts)
- * cannot import these: the workers get their source text, which may refer to nothing outside itself
- * (threads/worker-source.ts). They index the rows with the same numbers written out; keep them in step.
+ * A module of numeric constants only (scripts/build.mjs isConstantModule): every build folds them into
+ * the code that reads them, so the range kernels (solver/*-kernel.ts) may use them too, though the
+ * workers get the kernels' source text (threads/worker-source.ts checks that none is left as a name).
  */
 
 // bodyState, 2D: rows of BS2_STRIDE. vx and vy sit at 0 and 1 in both dimensions: code written for both

@@ -6,6 +6,34 @@
 
 import type { claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
+import {
+  PACK_STRIDE,
+  PK_A_FIXED,
+  PK_FRICTION,
+  PK_MAX_NORMAL_IMPULSE,
+  PK_NORMAL_IMPULSE,
+  PK_NORMAL_MASS,
+  PK_NX,
+  PK_NY,
+  PK_RA,
+  PK_RB,
+  PK_SEPARATION,
+  PK_TANGENT_IMPULSE,
+  PK_TANGENT_MASS,
+} from './contact-pack-2d.js';
 import type { approach2D } from './stages-kernel.js';
 
 /**
@@ -28,7 +56,7 @@ import type { approach2D } from './stages-kernel.js';
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
  * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
- * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of 8, BS2_* in body-state-layout.ts written out), 2 solver extra
+ * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of BS2_STRIDE, body-state-layout.ts), 2 solver extra
  * (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
  * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours C, 5
  * solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are
@@ -306,21 +334,21 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     if (c === 255) continue;
     const k = offsets[o0 + c]!;
     offsets[o0 + c] = k + 1;
-    const o = k * 12;
-    pair[2 * k] = IA[i]! * 8;
-    pair[2 * k + 1] = IB[i]! * 8;
-    pk[o] = NX[i]!;
-    pk[o + 1] = NY[i]!;
-    pk[o + 2] = RA[i]!;
-    pk[o + 3] = RB[i]!;
-    pk[o + 4] = S0[i]!;
-    pk[o + 5] = NM[i]!;
-    pk[o + 6] = TM[i]!;
-    pk[o + 7] = FB[i]!;
-    pk[o + 8] = LN[i]!;
-    pk[o + 9] = LT[i]!;
-    pk[o + 10] = RP[i]!;
-    pk[o + 11] = 0;
+    const o = k * PACK_STRIDE;
+    pair[2 * k] = IA[i]! * BS2_STRIDE;
+    pair[2 * k + 1] = IB[i]! * BS2_STRIDE;
+    pk[o + PK_NX] = NX[i]!;
+    pk[o + PK_NY] = NY[i]!;
+    pk[o + PK_RA] = RA[i]!;
+    pk[o + PK_RB] = RB[i]!;
+    pk[o + PK_SEPARATION] = S0[i]!;
+    pk[o + PK_NORMAL_MASS] = NM[i]!;
+    pk[o + PK_TANGENT_MASS] = TM[i]!;
+    pk[o + PK_FRICTION] = FB[i]!;
+    pk[o + PK_NORMAL_IMPULSE] = LN[i]!;
+    pk[o + PK_TANGENT_IMPULSE] = LT[i]!;
+    pk[o + PK_A_FIXED] = RP[i]!;
+    pk[o + PK_MAX_NORMAL_IMPULSE] = 0;
     tot[k] = 0;
     row[k] = i;
     slot[i] = k;
@@ -351,19 +379,19 @@ export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: numbe
   for (let j = 0; j < count; j++) {
     const i = rows[j]!;
     if (color[i] === 255) continue;
-    const o = slot[i]! * 12;
-    pk[o] = NX[i]!;
-    pk[o + 1] = NY[i]!;
-    pk[o + 2] = RA[i]!;
-    pk[o + 3] = RB[i]!;
-    pk[o + 4] = S0[i]!;
-    pk[o + 5] = NM[i]!;
-    pk[o + 6] = TM[i]!;
-    pk[o + 7] = FB[i]!;
-    pk[o + 8] = LN[i]!;
-    pk[o + 9] = LT[i]!;
-    pk[o + 10] = RP[i]!;
-    pk[o + 11] = 0;
+    const o = slot[i]! * PACK_STRIDE;
+    pk[o + PK_NX] = NX[i]!;
+    pk[o + PK_NY] = NY[i]!;
+    pk[o + PK_RA] = RA[i]!;
+    pk[o + PK_RB] = RB[i]!;
+    pk[o + PK_SEPARATION] = S0[i]!;
+    pk[o + PK_NORMAL_MASS] = NM[i]!;
+    pk[o + PK_TANGENT_MASS] = TM[i]!;
+    pk[o + PK_FRICTION] = FB[i]!;
+    pk[o + PK_NORMAL_IMPULSE] = LN[i]!;
+    pk[o + PK_TANGENT_IMPULSE] = LT[i]!;
+    pk[o + PK_A_FIXED] = RP[i]!;
+    pk[o + PK_MAX_NORMAL_IMPULSE] = 0;
   }
 }
 
@@ -380,11 +408,11 @@ export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void 
   const tot = A[27] as Float64Array,
     row = A[28] as Int32Array;
   for (let k = k0; k < k1; k++) {
-    const o = k * 12,
+    const o = k * PACK_STRIDE,
       i = row[k]!;
-    LN[i] = pk[o + 8]!;
-    LT[i] = pk[o + 9]!;
-    MAXN[i] = pk[o + 11]!;
+    LN[i] = pk[o + PK_NORMAL_IMPULSE]!;
+    LT[i] = pk[o + PK_TANGENT_IMPULSE]!;
+    MAXN[i] = pk[o + PK_MAX_NORMAL_IMPULSE]!;
     TOT[i] = tot[k]!;
   }
 }
@@ -412,18 +440,18 @@ export function coloredBodies2D(
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q;
       if (dyn[k] !== 1) continue;
-      const o = k * 8;
-      sb[o] = sb[o]! + gx;
-      sb[o + 1] = sb[o + 1]! + gy;
+      const o = k * BS2_STRIDE;
+      sb[o + BS2_VX] = sb[o + BS2_VX]! + gx;
+      sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
     }
   } else {
     const hs = P[8]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q,
-        o = k * 8;
-      sb[o + 3] = sb[o + 3]! + sb[o]! * hs;
-      sb[o + 4] = sb[o + 4]! + sb[o + 1]! * hs;
-      if (sb[o + 6]! > 0) ex[k * 6 + 5] = ex[k * 6 + 5]! + sb[o + 2]! * hs;
+        o = k * BS2_STRIDE;
+      sb[o + BS2_DX] = sb[o + BS2_DX]! + sb[o + BS2_VX]! * hs;
+      sb[o + BS2_DY] = sb[o + BS2_DY]! + sb[o + BS2_VY]! * hs;
+      if (sb[o + BS2_INV_INERTIA]! > 0) ex[k * BX_STRIDE + BX_ROT_Z] = ex[k * BX_STRIDE + BX_ROT_Z]! + sb[o + BS2_W]! * hs;
     }
   }
 }
@@ -446,26 +474,26 @@ export function coloredRows2D(
 ): void {
   if (mode === 0) {
     for (let k = r0; k < r1; k++) {
-      const o = k * 12;
-      const ln = pk[o + 8]!,
-        lt = pk[o + 9]!;
+      const o = k * PACK_STRIDE;
+      const ln = pk[o + PK_NORMAL_IMPULSE]!,
+        lt = pk[o + PK_TANGENT_IMPULSE]!;
       if (ln === 0 && lt === 0) continue;
       const a = pair[2 * k]!,
         bb = pair[2 * k + 1]!;
-      sb[a + 7] = 1;
-      sb[bb + 7] = 1;
-      const nx = pk[o]!,
-        ny = pk[o + 1]!;
+      sb[a + BS2_PUSHED] = 1;
+      sb[bb + BS2_PUSHED] = 1;
+      const nx = pk[o + PK_NX]!,
+        ny = pk[o + PK_NY]!;
       const Px = ln * nx - lt * ny,
         Py = ln * ny + lt * nx;
-      const imA = sb[a + 5]!,
-        imB = sb[bb + 5]!;
-      sb[a] = sb[a]! - imA * Px;
-      sb[a + 1] = sb[a + 1]! - imA * Py;
-      sb[bb] = sb[bb]! + imB * Px;
-      sb[bb + 1] = sb[bb + 1]! + imB * Py;
-      sb[a + 2] = sb[a + 2]! - sb[a + 6]! * pk[o + 2]! * lt;
-      sb[bb + 2] = sb[bb + 2]! - sb[bb + 6]! * pk[o + 3]! * lt;
+      const imA = sb[a + BS2_INV_MASS]!,
+        imB = sb[bb + BS2_INV_MASS]!;
+      sb[a + BS2_VX] = sb[a + BS2_VX]! - imA * Px;
+      sb[a + BS2_VY] = sb[a + BS2_VY]! - imA * Py;
+      sb[bb + BS2_VX] = sb[bb + BS2_VX]! + imB * Px;
+      sb[bb + BS2_VY] = sb[bb + BS2_VY]! + imB * Py;
+      sb[a + BS2_W] = sb[a + BS2_W]! - sb[a + BS2_INV_INERTIA]! * pk[o + PK_RA]! * lt;
+      sb[bb + BS2_W] = sb[bb + BS2_W]! - sb[bb + BS2_INV_INERTIA]! * pk[o + PK_RB]! * lt;
     }
     return;
   }
@@ -483,23 +511,23 @@ export function coloredRows2D(
   const useBias = (mode & 2) !== 0,
     total = (mode & 4) !== 0;
   for (let k = r0; k < r1; k++) {
-    const o = k * 12;
+    const o = k * PACK_STRIDE;
     const a = pair[2 * k]!,
       bb = pair[2 * k + 1]!;
-    const nx = pk[o]!,
-      ny = pk[o + 1]!;
-    const imA = sb[a + 5]!,
-      imB = sb[bb + 5]!;
-    let vax = sb[a]!,
-      vay = sb[a + 1]!,
-      vbx = sb[bb]!,
-      vby = sb[bb + 1]!;
+    const nx = pk[o + PK_NX]!,
+      ny = pk[o + PK_NY]!;
+    const imA = sb[a + BS2_INV_MASS]!,
+      imB = sb[bb + BS2_INV_MASS]!;
+    let vax = sb[a + BS2_VX]!,
+      vay = sb[a + BS2_VY]!,
+      vbx = sb[bb + BS2_VX]!,
+      vby = sb[bb + BS2_VY]!;
     // The normal impulse's inverse masses and effective mass: a frictionless support row of
     // a relax pass may hold its lower ball (solver/support.ts's holdsLower: lower speed <= upper).
     let jmA = imA,
       jmB = imB,
-      nm = pk[o + 5]!;
-    if (!useBias && pk[o + 7] === 0 && imA > 0 && imB > 0 && nm > 0) {
+      nm = pk[o + PK_NORMAL_MASS]!;
+    if (!useBias && pk[o + PK_FRICTION] === 0 && imA > 0 && imB > 0 && nm > 0) {
       const up = -(downX * nx + downY * ny);
       if (up > supportCos || up < -supportCos) {
         const va = Math.abs(vax * nx + vay * ny),
@@ -511,14 +539,14 @@ export function coloredRows2D(
         }
       }
     }
-    const sep = pk[o + 4]! + (sb[bb + 3]! - sb[a + 3]!) * nx + (sb[bb + 4]! - sb[a + 4]!) * ny;
+    const sep = pk[o + PK_SEPARATION]! + (sb[bb + BS2_DX]! - sb[a + BS2_DX]!) * nx + (sb[bb + BS2_DY]! - sb[a + BS2_DY]!) * ny;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
     if (sep > 0) {
       bias = sep * invH;
     } else if (useBias) {
-      if (pk[o + 10] === 1) {
+      if (pk[o + PK_A_FIXED] === 1) {
         bias = rBias * sep;
         massScale = rMass;
         impulseScale = rImp;
@@ -530,16 +558,16 @@ export function coloredRows2D(
       if (bias < -push) bias = -push;
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny;
-    const oldN = pk[o + 8]!;
+    const oldN = pk[o + PK_NORMAL_IMPULSE]!;
     // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse
     // below is 0), as in solver/contact-solver.ts's solve2D: a fifth of the pass's time in a settled pile.
-    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + 9] === 0) continue;
+    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + PK_TANGENT_IMPULSE] === 0) continue;
     let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
     lambda = newN - oldN;
-    pk[o + 8] = newN;
-    if (lambda > pk[o + 11]!) pk[o + 11] = lambda;
+    pk[o + PK_NORMAL_IMPULSE] = newN;
+    if (lambda > pk[o + PK_MAX_NORMAL_IMPULSE]!) pk[o + PK_MAX_NORMAL_IMPULSE] = lambda;
     if (total) tot[k] = tot[k]! + newN;
     let Px = lambda * nx,
       Py = lambda * ny;
@@ -547,35 +575,35 @@ export function coloredRows2D(
     vay -= jmA * Py;
     vbx += jmB * Px;
     vby += jmB * Py;
-    const ra = pk[o + 2]!,
-      rb = pk[o + 3]!;
-    let wa = sb[a + 2]!,
-      wb = sb[bb + 2]!;
+    const ra = pk[o + PK_RA]!,
+      rb = pk[o + PK_RB]!;
+    let wa = sb[a + BS2_W]!,
+      wb = sb[bb + BS2_W]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
-    lambda = -pk[o + 6]! * vt;
-    const maxF = pk[o + 7]! * newN;
-    const oldT = pk[o + 9]!;
+    lambda = -pk[o + PK_TANGENT_MASS]! * vt;
+    const maxF = pk[o + PK_FRICTION]! * newN;
+    const oldT = pk[o + PK_TANGENT_IMPULSE]!;
     let newT = oldT + lambda;
     newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
     lambda = newT - oldT;
-    pk[o + 9] = newT;
+    pk[o + PK_TANGENT_IMPULSE] = newT;
     Px = -lambda * ny;
     Py = lambda * nx;
     vax -= imA * Px;
     vay -= imA * Py;
     vbx += imB * Px;
     vby += imB * Py;
-    wa -= sb[a + 6]! * ra * lambda;
-    wb -= sb[bb + 6]! * rb * lambda;
-    sb[a] = vax;
-    sb[a + 1] = vay;
-    sb[a + 2] = wa;
-    sb[bb] = vbx;
-    sb[bb + 1] = vby;
-    sb[bb + 2] = wb;
+    wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
+    wb -= sb[bb + BS2_INV_INERTIA]! * rb * lambda;
+    sb[a + BS2_VX] = vax;
+    sb[a + BS2_VY] = vay;
+    sb[a + BS2_W] = wa;
+    sb[bb + BS2_VX] = vbx;
+    sb[bb + BS2_VY] = vby;
+    sb[bb + BS2_W] = wb;
     if (newN !== 0 || newT !== 0) {
-      sb[a + 7] = 1;
-      sb[bb + 7] = 1;
+      sb[a + BS2_PUSHED] = 1;
+      sb[bb + BS2_PUSHED] = 1;
     }
   }
 }

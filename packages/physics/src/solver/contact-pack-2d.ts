@@ -12,10 +12,32 @@
  * once a colour, and every number a row carries costs memory traffic on every pass (solver/coloring-kernel.ts).
  */
 
+/** The contact normal x, from A to B (a unit vector). */
+export const PK_NX = 0;
+/** The contact normal y. */
+export const PK_NY = 1;
+/** A's radius along the normal to the contact point, m. */
+export const PK_RA = 2;
+/** B's radius along the normal to the contact point, m. */
+export const PK_RB = 3;
+/** The separation at the start of the step, m (negative: overlap). */
+export const PK_SEPARATION = 4;
+/** The normal effective mass, kg. */
+export const PK_NORMAL_MASS = 5;
+/** The tangent effective mass, kg. */
+export const PK_TANGENT_MASS = 6;
+/** The friction bound (the friction coefficient in use: static while the contact sticks, else kinetic). */
+export const PK_FRICTION = 7;
+/** The accumulated normal impulse, N s. */
+export const PK_NORMAL_IMPULSE = 8;
+/** The accumulated tangent impulse, N s. */
+export const PK_TANGENT_IMPULSE = 9;
+/** 1 if body A has infinite mass (the static world or a static or kinematic body), else 0. */
+export const PK_A_FIXED = 10;
+/** The largest normal impulse of a solve pass, N s (for restitution). */
+export const PK_MAX_NORMAL_IMPULSE = 11;
 /**
- * Numbers a packed row: 0 nx, 1 ny, 2 ra, 3 rb (m), 4 start separation (m), 5 normal mass,
- * 6 tangent mass (kg), 7 friction bound, 8 normal impulse, 9 tangent impulse (N s), 10 1 if A has
- * infinite mass, 11 largest normal impulse of a solve pass (N s).
+ * Numbers a packed row (the PK_ offsets above).
  * @category Collision
  */
 export const PACK_STRIDE = 12;

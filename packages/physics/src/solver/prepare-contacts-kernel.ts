@@ -8,11 +8,12 @@
  */
 
 import type { KernelArray } from '../threads/kernel-types.js';
+import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from './body-state-layout.js';
 
 /**
  * Prepares 2D contact rows lo .. hi - 1.
  * A, the contact buffer's: 0 a, 1 b, 2 ia, 3 ib (Int32), 4 kind (Uint8), 5 feature (Int32), 6 nx, 7 ny,
- * 8 ra, 9 rb; 10 the solver state (rows of 8, BS2_* in body-state-layout.ts written out); the Material stores 11 restitution, 12 friction,
+ * 8 ra, 9 rb; 10 the solver state (rows of BS2_STRIDE, body-state-layout.ts); the Material stores 11 restitution, 12 friction,
  * 13 static friction; 14 the spawn stamps (Uint32, a copy); the buffer's outputs 15 normalMass,
  * 16 tangentMass, 17 rigidPartner (Uint8), 18 t1x, 19 t1y, 20 t1z, 21 restitution, 22 friction,
  * 23 frictionBound, 24 relativeVelocity, 25 totalNormalImpulse, 26 impulse, 27 normalImpulse,
@@ -83,14 +84,14 @@ export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32
       b = CB[i]!,
       kind = K[i]!,
       f = F[i]!;
-    const oa = IA[i]! * 8,
-      ob = IB[i]! * 8;
+    const oa = IA[i]! * BS2_STRIDE,
+      ob = IB[i]! * BS2_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!;
-    const imA = sb[oa + 5]!,
-      imB = sb[ob + 5]!;
-    const iiA = sb[oa + 6]!,
-      iiB = sb[ob + 6]!;
+    const imA = sb[oa + BS2_INV_MASS]!,
+      imB = sb[ob + BS2_INV_MASS]!;
+    const iiA = sb[oa + BS2_INV_INERTIA]!,
+      iiB = sb[ob + BS2_INV_INERTIA]!;
     const ra = RA[i]!,
       rb = RB[i]!;
     const k = imA + imB;
@@ -119,10 +120,10 @@ export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32
     }
     E[i] = e;
     MU[i] = mu;
-    const dvx = sb[ob]! - sb[oa]!,
-      dvy = sb[ob + 1]! - sb[oa + 1]!;
-    const vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + 2]! * rb - sb[oa + 2]! * ra);
-    RV[i] = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny + 0;
+    const dvx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
+      dvy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!;
+    const vt = Math.abs(dvx * t1x + dvy * t1y - sb[ob + BS2_W]! * rb - sb[oa + BS2_W]! * ra);
+    RV[i] = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny + 0;
     TOT[i] = 0;
     IMP[i] = 0;
     FB[i] = vt < stick ? Math.max(mus, mu) : mu;

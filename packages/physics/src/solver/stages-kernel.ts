@@ -13,12 +13,31 @@
 
 import type { claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
+import {
+  BS2_DX,
+  BS2_DY,
+  BS2_INV_INERTIA,
+  BS2_INV_MASS,
+  BS2_PUSHED,
+  BS2_STRIDE,
+  BS2_VX,
+  BS2_VY,
+  BS2_W,
+  BX_BASE_X,
+  BX_BASE_Y,
+  BX_BASE_Z,
+  BX_ROT_X,
+  BX_ROT_Y,
+  BX_ROT_Z,
+  BX_STRIDE,
+} from './body-state-layout.js';
+import { PACK_STRIDE, PK_NORMAL_MASS, PK_NX, PK_NY } from './contact-pack-2d.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
  * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
  * i + 1). A: 0-2 Position x, y, z, 3-5 Velocity x, y, z, 6-8 AngularVelocity x, y, z, 9-11 Force x, y,
- * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of 8, BS2_* in body-state-layout.ts written out), 16 solver extra (rows
+ * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of BS2_STRIDE, body-state-layout.ts), 16 solver extra (rows
  * of 6); of the components, x and y and the spin about z are read (slots 2 to 4 of the extra rows, z
  * and the turn about x and y, are 0 in 2D). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step,
  * every body counts as pushed), 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
@@ -48,8 +67,8 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
-    const o = k * 8,
-      q = k * 6;
+    const o = k * BS2_STRIDE,
+      q = k * BX_STRIDE;
     const ii = invInertia[e]!;
     const dynamic = type[e] === DYNAMIC;
     const spins = type[e] === KINEMATIC;
@@ -57,20 +76,20 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
     // Slots 2 to 4 (z, and the turn about x and y) are not read in 2D, nor their stores here.
-    ex[q] = px[e]! - vx[e]! * h + gx * gb;
-    ex[q + 1] = py[e]! - vy[e]! * h + gy * gb;
-    ex[q + 2] = 0;
-    ex[q + 3] = 0;
-    ex[q + 4] = 0;
-    ex[q + 5] = ii > 0 ? -wz[e]! * h : 0;
-    sb[o] = dynamic ? vx[e]! - gx : vx[e]!;
-    sb[o + 1] = dynamic ? vy[e]! - gy : vy[e]!;
-    sb[o + 2] = ii > 0 || spins ? wz[e]! : 0;
-    sb[o + 3] = 0;
-    sb[o + 4] = 0;
-    sb[o + 5] = invMass[e]!;
-    sb[o + 6] = ii;
-    sb[o + 7] = held;
+    ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
+    ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
+    ex[q + BX_BASE_Z] = 0;
+    ex[q + BX_ROT_X] = 0;
+    ex[q + BX_ROT_Y] = 0;
+    ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
+    sb[o + BS2_VX] = dynamic ? vx[e]! - gx : vx[e]!;
+    sb[o + BS2_VY] = dynamic ? vy[e]! - gy : vy[e]!;
+    sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
+    sb[o + BS2_DX] = 0;
+    sb[o + BS2_DY] = 0;
+    sb[o + BS2_INV_MASS] = invMass[e]!;
+    sb[o + BS2_INV_INERTIA] = ii;
+    sb[o + BS2_PUSHED] = held;
   }
   return 0;
 }
@@ -104,12 +123,12 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
     gz = P[2]!,
     DYNAMIC = P[3]!;
   for (let i = lo; i < hi; i++) {
-    const oa = IA[i]! * 8,
-      ob = IB[i]! * 8;
+    const oa = IA[i]! * BS2_STRIDE,
+      ob = IB[i]! * BS2_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const rv = (sb[ob]! - sb[oa]!) * nx + (sb[ob + 1]! - sb[oa + 1]!) * ny;
+    const rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
     RV[i] = rv;
     if (IMP[i]! > 0 && rv >= 0) continue;
     const gap = S0[i]!;
@@ -185,19 +204,19 @@ export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32A
     const k = i + 1,
       e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
-    const o = k * 8,
-      r = k * 6;
-    const free = sb[o + 7] === 0 ? 1 : 0;
-    vx[e] = sb[o]!;
-    vy[e] = sb[o + 1]!;
-    const x = ex[r]! + sb[o + 3]! + imp[k * Q]! + free * fx,
-      y = ex[r + 1]! + sb[o + 4]! + imp[k * Q + 1]! + free * fy;
+    const o = k * BS2_STRIDE,
+      r = k * BX_STRIDE;
+    const free = sb[o + BS2_PUSHED] === 0 ? 1 : 0;
+    vx[e] = sb[o + BS2_VX]!;
+    vy[e] = sb[o + BS2_VY]!;
+    const x = ex[r + BX_BASE_X]! + sb[o + BS2_DX]! + imp[k * Q]! + free * fx,
+      y = ex[r + BX_BASE_Y]! + sb[o + BS2_DY]! + imp[k * Q + 1]! + free * fy;
     px[e] = x;
     py[e] = y;
-    check += x + y + sb[o]! + sb[o + 1]!;
-    if (sb[o + 6]! > 0) {
-      wz[e] = sb[o + 2]!;
-      angle[e] = angle[e]! + ex[r + 5]!;
+    check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
+    if (sb[o + BS2_INV_INERTIA]! > 0) {
+      wz[e] = sb[o + BS2_W]!;
+      angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
     }
   }
   return check;
@@ -269,9 +288,9 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
   for (let i = r0; i < r1; i++) {
-    const a = IA[i]! * 8 + 3,
-      b = IB[i]! * 8 + 3;
-    const s = S0[i]! + (sb[b]! - sb[a]!) * NX[i]! + (sb[b + 1]! - sb[a + 1]!) * NY[i]!;
+    const a = IA[i]! * BS2_STRIDE,
+      b = IB[i]! * BS2_STRIDE;
+    const s = S0[i]! + (sb[b + BS2_DX]! - sb[a + BS2_DX]!) * NX[i]! + (sb[b + BS2_DY]! - sb[a + BS2_DY]!) * NY[i]!;
     if (s < deepest) deepest = s;
   }
   return deepest;
@@ -430,9 +449,9 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
     MAXN[i] = 0;
     if (e > 0 && RV[i]! < -(e >= 1 ? elasticThreshold : threshold)) {
       RV[i] = -e * IV[i]!;
-      const a = IA[i]! * 8,
-        bb = IB[i]! * 8;
-      const vn = (sb[bb]! - sb[a]!) * NX[i]! + (sb[bb + 1]! - sb[a + 1]!) * NY[i]!;
+      const a = IA[i]! * BS2_STRIDE,
+        bb = IB[i]! * BS2_STRIDE;
+      const vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
       const stop = vn < 0 ? -NM[i]! * vn : 0;
       TOT[i] = stop + e * (TOT[i]! + stop);
       bouncing++;
@@ -455,28 +474,28 @@ export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): voi
   const pair = A[16] as Int32Array,
     row = A[17] as Int32Array;
   for (let k = r0; k < r1; k++) {
-    const o = k * 12;
+    const o = k * PACK_STRIDE;
     const i = row[k]!;
     const target = RV[i]!;
     if (target < 0) continue;
     const a = pair[2 * k]!,
       bb = pair[2 * k + 1]!;
-    const nx = pk[o]!,
-      ny = pk[o + 1]!;
-    const vn = (sb[bb]! - sb[a]!) * nx + (sb[bb + 1]! - sb[a + 1]!) * ny;
+    const nx = pk[o + PK_NX]!,
+      ny = pk[o + PK_NY]!;
+    const vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * ny;
     const old = MAXN[i]!;
-    let acc = old - pk[o + 5]! * (vn - target);
+    let acc = old - pk[o + PK_NORMAL_MASS]! * (vn - target);
     if (acc < 0) acc = 0;
     if (target > 0 && acc > TOT[i]!) acc = TOT[i]!;
     const dl = acc - old;
     if (dl === 0) continue;
     MAXN[i] = acc;
     IMP[i] = IMP[i]! + dl;
-    const ka = sb[a + 5]! * dl,
-      kb = sb[bb + 5]! * dl;
-    sb[a] = sb[a]! - ka * nx;
-    sb[a + 1] = sb[a + 1]! - ka * ny;
-    sb[bb] = sb[bb]! + kb * nx;
-    sb[bb + 1] = sb[bb + 1]! + kb * ny;
+    const ka = sb[a + BS2_INV_MASS]! * dl,
+      kb = sb[bb + BS2_INV_MASS]! * dl;
+    sb[a + BS2_VX] = sb[a + BS2_VX]! - ka * nx;
+    sb[a + BS2_VY] = sb[a + BS2_VY]! - ka * ny;
+    sb[bb + BS2_VX] = sb[bb + BS2_VX]! + kb * nx;
+    sb[bb + BS2_VY] = sb[bb + BS2_VY]! + kb * ny;
   }
 }

@@ -7,6 +7,7 @@
  */
 
 import type { KernelArray } from '../threads/kernel-types.js';
+import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W, BX_BASE_X, BX_BASE_Y, BX_STRIDE } from './body-state-layout.js';
 
 /**
  * Cuts a step's movable solver bodies into `P[2]` strips across the longer axis of their spread, each
@@ -18,7 +19,7 @@ import type { KernelArray } from '../threads/kernel-types.js';
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
  * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
  * solver/strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state
- * (rows of 8, BS2_* in body-state-layout.ts written out), 1 solver extra (rows of 6, base position x and y first), 2 bodyType (Uint8, by entity),
+ * (rows of BS2_STRIDE, body-state-layout.ts), 1 solver extra (rows of BX_STRIDE, body-state-layout.ts), 2 bodyType (Uint8, by entity),
  * 3 the solver bodies' entity ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out;
  * 255: not movable), 6 bin (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's
  * strip (Uint8, out), 9 ia, 10 ib (Int32, the rows' solver bodies).
@@ -57,14 +58,23 @@ export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
     y1 = -Infinity;
   strip[0] = 255;
   for (let k = 1; k < bodies; k++) {
-    const o = k * 8;
-    if (!(sb[o + 5]! > 0 || sb[o + 6]! > 0 || dyn[k] === 1 || sb[o] !== 0 || sb[o + 1] !== 0 || sb[o + 2] !== 0)) {
+    const o = k * BS2_STRIDE;
+    if (
+      !(
+        sb[o + BS2_INV_MASS]! > 0 ||
+        sb[o + BS2_INV_INERTIA]! > 0 ||
+        dyn[k] === 1 ||
+        sb[o + BS2_VX] !== 0 ||
+        sb[o + BS2_VY] !== 0 ||
+        sb[o + BS2_W] !== 0
+      )
+    ) {
       strip[k] = 255;
       continue;
     }
     strip[k] = 0;
-    const x = ex[k * 6]!,
-      y = ex[k * 6 + 1]!;
+    const x = ex[k * BX_STRIDE + BX_BASE_X]!,
+      y = ex[k * BX_STRIDE + BX_BASE_Y]!;
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
     if (y < y0) y0 = y;
@@ -82,7 +92,7 @@ export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
       binOf[k] = NO_BIN;
       continue;
     }
-    const bin = Math.floor((ex[k * 6 + axis]! - low) * scale);
+    const bin = Math.floor((ex[k * BX_STRIDE + BX_BASE_X + axis]! - low) * scale);
     binOf[k] = bin >= 0 && bin < BINS ? bin : 0;
   }
   hist.fill(0, 0, BINS);

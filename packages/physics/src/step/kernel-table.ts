@@ -8,7 +8,9 @@
  * thread count and the results are identical to the bit.
  *
  * Rules for a kernel (its source is sent to the workers as text):
- * - it refers to nothing outside itself but its arguments and JavaScript's globals (Math);
+ * - it refers to nothing outside itself but its arguments, JavaScript's globals (Math) and the
+ *   numeric constants of constant modules (solver/body-state-layout.ts, solver/contact-pack-2d.ts),
+ *   which every build folds into its text (threads/worker-source.ts refuses a kernel that still names one);
  * - no inner functions (bundlers may wrap them in helpers the worker does not have);
  * - `A` holds the typed arrays in the order its caller documents, `P` the scalar parameters,
  *   `ids` the entity ids of the loop (null: the loop is over the dense ids lo + 1 .. hi);

@@ -12,11 +12,29 @@ import { WORKER_MAIN_SOURCE } from './worker-main.js';
 let cached: { kernels: readonly Kernel[]; helpers: readonly KernelHelper[]; source: string } | null = null;
 
 /**
+ * A layout constant left as a name in a kernel's text (solver/body-state-layout.ts BS2_, BS3_, BX_,
+ * BI_; solver/contact-pack-2d.ts PK_ and the strides): the build that made this code did not fold the
+ * constant modules, and a worker would not know the name.
+ */
+const UNFOLDED = /(?<![.\w$])((?:BS2|BS3|BX|BI|PK)_[A-Z0-9_]+|[A-Z][A-Z0-9]*_STRIDE)\b/;
+
+/**
  * The worker's source text for a kernel table and its helpers (kept for the next pool of the same ones).
+ * @throws Error naming the kernel and the constant if a kernel's text still names a layout constant
+ *   (the code was bundled without folding constants: scripts/build.mjs `inlineConstantModules` or a
+ *   minifying bundler does it).
  * @category Threads
  */
 export function workerSource(kernels: readonly Kernel[], helpers: readonly KernelHelper[]): string {
   if (cached !== null && cached.kernels === kernels && cached.helpers === helpers) return cached.source;
+  for (const f of [...kernels, ...helpers]) {
+    const m = UNFOLDED.exec(f.toString());
+    if (m !== null)
+      throw new Error(
+        `bitphysics threads: kernel ${f.name || '(anonymous)'} names the constant ${m[1]}, which its workers cannot see: ` +
+          'bundle the package with its constants folded (an esbuild minify, or scripts/build.mjs inlineConstantModules)',
+      );
+  }
   const source = [
     "'use strict';",
     // A bundler keeping names may wrap the kernels' names in a __name helper; the worker has none.
