@@ -34,6 +34,7 @@ import {
   PK_TANGENT_IMPULSE,
   PK_TANGENT_MASS,
 } from './contact-pack-2d.js';
+import { AP_BASE, AP_DYNAMIC, AP_GX, AP_GY, AP_GZ } from './stage-slots-2d.js';
 import type { approach2D } from './stages-kernel.js';
 
 /**
@@ -136,11 +137,11 @@ export function solveColored2D(
     rows = P[11]!,
     approachBlocks = P[21] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
   const approachParams = new Float64Array(5);
-  approachParams[0] = P[17]!;
-  approachParams[1] = P[18]!;
-  approachParams[2] = P[19]!;
-  approachParams[3] = P[20]!;
-  approachParams[4] = 31;
+  approachParams[AP_GX] = P[17]!;
+  approachParams[AP_GY] = P[18]!;
+  approachParams[AP_GZ] = P[19]!;
+  approachParams[AP_DYNAMIC] = P[20]!;
+  approachParams[AP_BASE] = 31;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256,
     BB = 1024;

@@ -50,6 +50,21 @@ import { PACK_STRIDE } from './contact-pack-2d.js';
 import { impactChangedRows } from './impact-state.js';
 import { releaseImpactedRows } from './impacts.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
+import {
+  AP_A,
+  AP_B,
+  AP_BODY_STATE,
+  AP_BODY_TYPE,
+  AP_IA,
+  AP_IB,
+  AP_IMPACT_VELOCITY,
+  AP_IMPULSE,
+  AP_NX,
+  AP_NY,
+  AP_NZ,
+  AP_RELATIVE_VELOCITY,
+  AP_SEPARATION,
+} from './stage-slots-2d.js';
 import { stripLayout2D, stripPlan2D } from './strip-plan-kernel.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 
@@ -365,26 +380,25 @@ function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch,
 }
 
 /**
- * Appends approach2D's arrays for `buf`'s rows (solver/stages-kernel.ts: ia, ib, a, b, the normal,
- * relativeVelocity, impactVelocity, separation, impulse, body types, solver state) to `A`; returns `A`.
+ * Appends approach2D's arrays for `buf`'s rows (the AP_ slots of solver/stage-slots-2d.ts, from
+ * A.length on) to `A`; returns `A`.
  * @category Collision
  */
 export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: KernelArray[]): KernelArray[] {
-  A.push(
-    buf.ia,
-    buf.ib,
-    buf.a,
-    buf.b,
-    buf.nx,
-    buf.ny,
-    buf.nz,
-    buf.relativeVelocity,
-    buf.impactVelocity,
-    buf.separation,
-    buf.impulse,
-    cs.bodyType,
-    cs.bodyState,
-  );
+  const b = A.length;
+  A[b + AP_IA] = buf.ia;
+  A[b + AP_IB] = buf.ib;
+  A[b + AP_A] = buf.a;
+  A[b + AP_B] = buf.b;
+  A[b + AP_NX] = buf.nx;
+  A[b + AP_NY] = buf.ny;
+  A[b + AP_NZ] = buf.nz;
+  A[b + AP_RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[b + AP_IMPACT_VELOCITY] = buf.impactVelocity;
+  A[b + AP_SEPARATION] = buf.separation;
+  A[b + AP_IMPULSE] = buf.impulse;
+  A[b + AP_BODY_TYPE] = cs.bodyType;
+  A[b + AP_BODY_STATE] = cs.bodyState;
   return A;
 }
 

@@ -32,37 +32,103 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import { PACK_STRIDE, PK_NORMAL_MASS, PK_NX, PK_NY } from './contact-pack-2d.js';
+import {
+  AP_A,
+  AP_B,
+  AP_BASE,
+  AP_BODY_STATE,
+  AP_BODY_TYPE,
+  AP_DYNAMIC,
+  AP_GX,
+  AP_GY,
+  AP_GZ,
+  AP_IA,
+  AP_IB,
+  AP_IMPACT_VELOCITY,
+  AP_IMPULSE,
+  AP_NX,
+  AP_NY,
+  AP_NZ,
+  AP_RELATIVE_VELOCITY,
+  AP_SEPARATION,
+  FB_ANGLE,
+  FB_BODIES,
+  FB_BODY_EXTRA,
+  FB_BODY_IMPACT,
+  FB_BODY_STATE,
+  FB_BODY_TYPE,
+  FB_BOX_RESTITUTION,
+  FB_CONTAIN,
+  FB_DEEPEST,
+  FB_DYNAMIC,
+  FB_FREE_X,
+  FB_FREE_Y,
+  FB_GX,
+  FB_GY,
+  FB_IA,
+  FB_IB,
+  FB_IMPACT_STRIDE,
+  FB_MAX_X,
+  FB_MIN_X,
+  FB_NX,
+  FB_NY,
+  FB_PX,
+  FB_PY,
+  FB_RADIUS,
+  FB_RESTITUTION,
+  FB_ROWS,
+  FB_SEPARATION,
+  FB_VX,
+  FB_VY,
+  FB_WZ,
+  GF_BODY_EXTRA,
+  GF_BODY_STATE,
+  GF_BODY_TYPE,
+  GF_DYNAMIC,
+  GF_FX,
+  GF_FY,
+  GF_FZ,
+  GF_GX_H,
+  GF_GY_H,
+  GF_H,
+  GF_INV_INERTIA,
+  GF_INV_MASS,
+  GF_KINEMATIC,
+  GF_PUSHED,
+  GF_PX,
+  GF_PY,
+  GF_VX,
+  GF_VY,
+  GF_WZ,
+} from './stage-slots-2d.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
  * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
- * i + 1). A: 0-2 Position x, y, z, 3-5 Velocity x, y, z, 6-8 AngularVelocity x, y, z, 9-11 Force x, y,
- * z, 12 bodyType (Uint8), 13 invMass, 14 invInertia, 15 solver state (rows of BS2_STRIDE, body-state-layout.ts), 16 solver extra (rows
- * of 6); of the components, x and y and the spin about z are read (slots 2 to 4 of the extra rows, z
- * and the turn about x and y, are 0 in 2D). P: 0 h (s), 1-3 g h (m/s), 4 pushed (1: joints in the step,
- * every body counts as pushed), 5 BodyType.Dynamic, 6 BodyType.Kinematic. Returns 0.
+ * i + 1). A and P: the GF_ slots of solver/stage-slots-2d.ts (slots z, and the turns about x and y,
+ * of the extra rows are 0 in 2D). Returns 0.
  * @category Collision
  */
 export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array;
-  const vx = A[3] as Float64Array,
-    vy = A[4] as Float64Array,
-    wz = A[8] as Float64Array;
-  const fx = A[9] as Float64Array,
-    fy = A[10] as Float64Array,
-    fz = A[11] as Float64Array;
-  const type = A[12] as Uint8Array,
-    invMass = A[13] as Float64Array,
-    invInertia = A[14] as Float64Array;
-  const sb = A[15] as Float64Array,
-    ex = A[16] as Float64Array;
-  const h = P[0]!,
-    gx = P[1]!,
-    gy = P[2]!,
-    pushed = P[4]!,
-    DYNAMIC = P[5]!,
-    KINEMATIC = P[6]!;
+  const px = A[GF_PX] as Float64Array,
+    py = A[GF_PY] as Float64Array;
+  const vx = A[GF_VX] as Float64Array,
+    vy = A[GF_VY] as Float64Array,
+    wz = A[GF_WZ] as Float64Array;
+  const fx = A[GF_FX] as Float64Array,
+    fy = A[GF_FY] as Float64Array,
+    fz = A[GF_FZ] as Float64Array;
+  const type = A[GF_BODY_TYPE] as Uint8Array,
+    invMass = A[GF_INV_MASS] as Float64Array,
+    invInertia = A[GF_INV_INERTIA] as Float64Array;
+  const sb = A[GF_BODY_STATE] as Float64Array,
+    ex = A[GF_BODY_EXTRA] as Float64Array;
+  const h = P[GF_H]!,
+    gx = P[GF_GX_H]!,
+    gy = P[GF_GY_H]!,
+    pushed = P[GF_PUSHED]!,
+    DYNAMIC = P[GF_DYNAMIC]!,
+    KINEMATIC = P[GF_KINEMATIC]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
@@ -96,32 +162,30 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
 
 /**
  * measureApproach (solver/contact-solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
- * impact stage and the speed at impact across a closing gap. A: 0 ia, 1 ib, 2 a, 3 b (Int32), 4 nx,
- * 5 ny, 6 nz, 7 relativeVelocity (out), 8 impactVelocity (out), 9 separation, 10 impulse, 11 bodyType
- * (Uint8), 12 solver state (rows of 8), each at A[b + j] for b = P[4] (0 when these are A's only
- * arrays; the coloured solve, solver/coloring-kernel.ts, passes them after its own). P: 0-2 gravity
- * (m/s^2), 3 BodyType.Dynamic, 4 b. Returns 0.
+ * impact stage and the speed at impact across a closing gap. A and P: the AP_ slots of
+ * solver/stage-slots-2d.ts, the arrays from A[P[AP_BASE]] on (0 when they are A's only arrays; the
+ * coloured solve, solver/coloring-kernel.ts, passes them after its own). Returns 0.
  * @category Collision
  */
 export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const b0 = P[4]!;
-  const IA = A[b0] as Int32Array,
-    IB = A[b0 + 1] as Int32Array,
-    CA = A[b0 + 2] as Int32Array,
-    CB = A[b0 + 3] as Int32Array;
-  const NX = A[b0 + 4] as Float64Array,
-    NY = A[b0 + 5] as Float64Array,
-    NZ = A[b0 + 6] as Float64Array;
-  const RV = A[b0 + 7] as Float64Array,
-    IV = A[b0 + 8] as Float64Array,
-    S0 = A[b0 + 9] as Float64Array,
-    IMP = A[b0 + 10] as Float64Array;
-  const type = A[b0 + 11] as Uint8Array,
-    sb = A[b0 + 12] as Float64Array;
-  const gx = P[0]!,
-    gy = P[1]!,
-    gz = P[2]!,
-    DYNAMIC = P[3]!;
+  const b0 = P[AP_BASE]!;
+  const IA = A[b0 + AP_IA] as Int32Array,
+    IB = A[b0 + AP_IB] as Int32Array,
+    CA = A[b0 + AP_A] as Int32Array,
+    CB = A[b0 + AP_B] as Int32Array;
+  const NX = A[b0 + AP_NX] as Float64Array,
+    NY = A[b0 + AP_NY] as Float64Array,
+    NZ = A[b0 + AP_NZ] as Float64Array;
+  const RV = A[b0 + AP_RELATIVE_VELOCITY] as Float64Array,
+    IV = A[b0 + AP_IMPACT_VELOCITY] as Float64Array,
+    S0 = A[b0 + AP_SEPARATION] as Float64Array,
+    IMP = A[b0 + AP_IMPULSE] as Float64Array;
+  const type = A[b0 + AP_BODY_TYPE] as Uint8Array,
+    sb = A[b0 + AP_BODY_STATE] as Float64Array;
+  const gx = P[AP_GX]!,
+    gy = P[AP_GY]!,
+    gz = P[AP_GZ]!,
+    DYNAMIC = P[AP_DYNAMIC]!;
   for (let i = lo; i < hi; i++) {
     const oa = IA[i]! * BS2_STRIDE,
       ob = IB[i]! * BS2_STRIDE;
@@ -151,14 +215,9 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * then, if P[4] = 1, containInBoundary (solver/contact-solver.ts) of the same bodies (put back on a wall of the box
  * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
  * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
- * contact rows (rows floor(m lo / nb) .. floor(m hi / nb) - 1, m = P[12] rows, nb = P[13] bodies), as
- * min(0, min s) into out[part] (m). `ids`: the solver bodies' entity ids from solver index 1. A: 0
- * Position x, 1 y, 2 Velocity x, 3 y, 4 AngularVelocity z, 5 Angle, 6 bodyType (Uint8), 7 solver state
- * (rows of 8), 8 solver extra (rows of 6), 9 bodyImpact (rows of P[3]), 10 Ball radius, 11 Material
- * restitution, 12 out (one slot a thread), 13 ia, 14 ib (Int32), 15 separation, 16 nx, 17 ny. P: 0-1
- * the free-flight correction -g h h_s / 2 (m), 2 BodyType.Dynamic, 3 the impact row stride, 4 contain
- * (1: the boundary box is on), 5-6 the box's min x, y, 7-8 max x, y (m), 9 its restitution, 10-11
- * gravity (m/s^2), 12 contact rows, 13 solver bodies - 1. Returns the sum of the positions and
+ * contact rows (rows floor(m lo / nb) .. floor(m hi / nb) - 1, m rows, nb bodies), as min(0, min s)
+ * into A[FB_DEEPEST][part] (m). `ids`: the solver bodies' entity ids from solver index 1. A and P: the
+ * FB_ slots of solver/stage-slots-2d.ts. Returns the sum of the positions and
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  * @category Collision
  */
@@ -175,8 +234,8 @@ export function finishBodies2D(
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
   const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
-  if (P[4] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
-  (A[12] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
+  if (P[FB_CONTAIN] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
+  (A[FB_DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
   return check;
 }
 
@@ -185,20 +244,20 @@ export function finishBodies2D(
  * @category Collision
  */
 export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    vx = A[2] as Float64Array,
-    vy = A[3] as Float64Array;
-  const wz = A[4] as Float64Array,
-    angle = A[5] as Float64Array,
-    type = A[6] as Uint8Array;
-  const sb = A[7] as Float64Array,
-    ex = A[8] as Float64Array,
-    imp = A[9] as Float64Array;
-  const fx = P[0]!,
-    fy = P[1]!,
-    DYNAMIC = P[2]!,
-    Q = P[3]!;
+  const px = A[FB_PX] as Float64Array,
+    py = A[FB_PY] as Float64Array,
+    vx = A[FB_VX] as Float64Array,
+    vy = A[FB_VY] as Float64Array;
+  const wz = A[FB_WZ] as Float64Array,
+    angle = A[FB_ANGLE] as Float64Array,
+    type = A[FB_BODY_TYPE] as Uint8Array;
+  const sb = A[FB_BODY_STATE] as Float64Array,
+    ex = A[FB_BODY_EXTRA] as Float64Array,
+    imp = A[FB_BODY_IMPACT] as Float64Array;
+  const fx = P[FB_FREE_X]!,
+    fy = P[FB_FREE_Y]!,
+    DYNAMIC = P[FB_DYNAMIC]!,
+    Q = P[FB_IMPACT_STRIDE]!;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
@@ -227,17 +286,17 @@ export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32A
  * @category Collision
  */
 export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    vx = A[2] as Float64Array,
-    vy = A[3] as Float64Array;
-  const type = A[6] as Uint8Array,
-    radius = A[10] as Float64Array,
-    eM = A[11] as Float64Array;
-  const DYNAMIC = P[2]!,
-    boxE = P[9]!,
-    g0 = P[10]!,
-    g1 = P[11]!;
+  const px = A[FB_PX] as Float64Array,
+    py = A[FB_PY] as Float64Array,
+    vx = A[FB_VX] as Float64Array,
+    vy = A[FB_VY] as Float64Array;
+  const type = A[FB_BODY_TYPE] as Uint8Array,
+    radius = A[FB_RADIUS] as Float64Array,
+    eM = A[FB_RESTITUTION] as Float64Array;
+  const DYNAMIC = P[FB_DYNAMIC]!,
+    boxE = P[FB_BOX_RESTITUTION]!,
+    g0 = P[FB_GX]!,
+    g1 = P[FB_GY]!;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
@@ -247,8 +306,8 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
       const p = d === 0 ? px : py,
         v = d === 0 ? vx : vy,
         g = d === 0 ? g0 : g1;
-      const wlo = P[5 + d]! + rad,
-        whi = P[7 + d]! - rad;
+      const wlo = P[FB_MIN_X + d]! + rad,
+        whi = P[FB_MAX_X + d]! - rad;
       const x = p[e]!;
       if (x < wlo && wlo <= whi) {
         p[e] = wlo;
@@ -276,14 +335,14 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
  * @category Collision
  */
 export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
-  const sb = A[7] as Float64Array;
-  const IA = A[13] as Int32Array,
-    IB = A[14] as Int32Array,
-    S0 = A[15] as Float64Array,
-    NX = A[16] as Float64Array,
-    NY = A[17] as Float64Array;
-  const m = P[12]!,
-    nb = P[13]!;
+  const sb = A[FB_BODY_STATE] as Float64Array;
+  const IA = A[FB_IA] as Int32Array,
+    IB = A[FB_IB] as Int32Array,
+    S0 = A[FB_SEPARATION] as Float64Array,
+    NX = A[FB_NX] as Float64Array,
+    NY = A[FB_NY] as Float64Array;
+  const m = P[FB_ROWS]!,
+    nb = P[FB_BODIES]!;
   const r0 = Math.floor((m * lo) / nb),
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;

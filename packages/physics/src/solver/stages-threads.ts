@@ -38,6 +38,64 @@ import type { PhysicsWorld } from '../world/options.js';
 import { IMPACT_STRIDE } from './body-state-layout.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
+import {
+  AP_BASE,
+  AP_DYNAMIC,
+  AP_GX,
+  AP_GY,
+  AP_GZ,
+  FB_ANGLE,
+  FB_BODIES,
+  FB_BODY_EXTRA,
+  FB_BODY_IMPACT,
+  FB_BODY_STATE,
+  FB_BODY_TYPE,
+  FB_BOX_RESTITUTION,
+  FB_CONTAIN,
+  FB_DEEPEST,
+  FB_DYNAMIC,
+  FB_FREE_X,
+  FB_FREE_Y,
+  FB_GX,
+  FB_GY,
+  FB_IA,
+  FB_IB,
+  FB_IMPACT_STRIDE,
+  FB_MAX_X,
+  FB_MAX_Y,
+  FB_MIN_X,
+  FB_MIN_Y,
+  FB_NX,
+  FB_NY,
+  FB_PX,
+  FB_PY,
+  FB_RADIUS,
+  FB_RESTITUTION,
+  FB_ROWS,
+  FB_SEPARATION,
+  FB_VX,
+  FB_VY,
+  FB_WZ,
+  GF_BODY_EXTRA,
+  GF_BODY_STATE,
+  GF_BODY_TYPE,
+  GF_DYNAMIC,
+  GF_FX,
+  GF_FY,
+  GF_FZ,
+  GF_GX_H,
+  GF_GY_H,
+  GF_H,
+  GF_INV_INERTIA,
+  GF_INV_MASS,
+  GF_KINEMATIC,
+  GF_PUSHED,
+  GF_PX,
+  GF_PY,
+  GF_VX,
+  GF_VY,
+  GF_WZ,
+} from './stage-slots-2d.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
@@ -129,34 +187,27 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
     A = s.arrays,
     P = s.params;
   A.length = 0;
-  A.push(
-    c.Position.x,
-    c.Position.y,
-    c.Position.z,
-    c.Velocity.x,
-    c.Velocity.y,
-    c.Velocity.z,
-    c.AngularVelocity.x,
-    c.AngularVelocity.y,
-    c.AngularVelocity.z,
-    c.Force.x,
-    c.Force.y,
-    c.Force.z,
-    cs.bodyType,
-    cs.invMass,
-    cs.invInertia,
-    cs.bodyState,
-    cs.bodyExtra,
-  );
+  A[GF_PX] = c.Position.x;
+  A[GF_PY] = c.Position.y;
+  A[GF_VX] = c.Velocity.x;
+  A[GF_VY] = c.Velocity.y;
+  A[GF_WZ] = c.AngularVelocity.z;
+  A[GF_FX] = c.Force.x;
+  A[GF_FY] = c.Force.y;
+  A[GF_FZ] = c.Force.z;
+  A[GF_BODY_TYPE] = cs.bodyType;
+  A[GF_INV_MASS] = cs.invMass;
+  A[GF_INV_INERTIA] = cs.invInertia;
+  A[GF_BODY_STATE] = cs.bodyState;
+  A[GF_BODY_EXTRA] = cs.bodyExtra;
   const h = world.h,
     g = world.gravity;
-  P[0] = h;
-  P[1] = g[0]! * h;
-  P[2] = g[1]! * h;
-  P[3] = g[2]! * h;
-  P[4] = pushed;
-  P[5] = BodyType.Dynamic;
-  P[6] = BodyType.Kinematic;
+  P[GF_H] = h;
+  P[GF_GX_H] = g[0]! * h;
+  P[GF_GY_H] = g[1]! * h;
+  P[GF_PUSHED] = pushed;
+  P[GF_DYNAMIC] = BodyType.Dynamic;
+  P[GF_KINEMATIC] = BodyType.Kinematic;
   runStage(pool, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
@@ -180,11 +231,11 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   A.length = 0;
   approachArguments(cs, buf, A);
   const g = world.gravity;
-  P[0] = g[0]!;
-  P[1] = g[1]!;
-  P[2] = g[2]!;
-  P[3] = BodyType.Dynamic;
-  P[4] = 0;
+  P[AP_GX] = g[0]!;
+  P[AP_GY] = g[1]!;
+  P[AP_GZ] = g[2]!;
+  P[AP_DYNAMIC] = BodyType.Dynamic;
+  P[AP_BASE] = 0;
   runStage(pool, approach2D, A, P, n, null);
 }
 
@@ -243,44 +294,42 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
     out = s.deepest;
   out.fill(0);
   A.length = 0;
-  A.push(
-    c.Position.x,
-    c.Position.y,
-    c.Velocity.x,
-    c.Velocity.y,
-    c.AngularVelocity.z,
-    c.Angle.value,
-    cs.bodyType,
-    cs.bodyState,
-    cs.bodyExtra,
-    cs.bodyImpact,
-    c.Ball.radius,
-    c.Material.restitution,
-    out,
-    buf.ia,
-    buf.ib,
-    buf.separation,
-    buf.nx,
-    buf.ny,
-  );
+  A[FB_PX] = c.Position.x;
+  A[FB_PY] = c.Position.y;
+  A[FB_VX] = c.Velocity.x;
+  A[FB_VY] = c.Velocity.y;
+  A[FB_WZ] = c.AngularVelocity.z;
+  A[FB_ANGLE] = c.Angle.value;
+  A[FB_BODY_TYPE] = cs.bodyType;
+  A[FB_BODY_STATE] = cs.bodyState;
+  A[FB_BODY_EXTRA] = cs.bodyExtra;
+  A[FB_BODY_IMPACT] = cs.bodyImpact;
+  A[FB_RADIUS] = c.Ball.radius;
+  A[FB_RESTITUTION] = c.Material.restitution;
+  A[FB_DEEPEST] = out;
+  A[FB_IA] = buf.ia;
+  A[FB_IB] = buf.ib;
+  A[FB_SEPARATION] = buf.separation;
+  A[FB_NX] = buf.nx;
+  A[FB_NY] = buf.ny;
   const list = cs.solverBodies,
     box = cs.boundary;
   const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
     g = world.gravity;
-  P[0] = g[0]! * fh;
-  P[1] = g[1]! * fh;
-  P[2] = BodyType.Dynamic;
-  P[3] = IMPACT_STRIDE;
-  P[4] = box.enabled ? 1 : 0;
-  P[5] = box.min[0]!;
-  P[6] = box.min[1]!;
-  P[7] = box.max[0]!;
-  P[8] = box.max[1]!;
-  P[9] = box.restitution;
-  P[10] = g[0]!;
-  P[11] = g[1]!;
-  P[12] = buf.count;
-  P[13] = count - 1;
+  P[FB_FREE_X] = g[0]! * fh;
+  P[FB_FREE_Y] = g[1]! * fh;
+  P[FB_DYNAMIC] = BodyType.Dynamic;
+  P[FB_IMPACT_STRIDE] = IMPACT_STRIDE;
+  P[FB_CONTAIN] = box.enabled ? 1 : 0;
+  P[FB_MIN_X] = box.min[0]!;
+  P[FB_MIN_Y] = box.min[1]!;
+  P[FB_MAX_X] = box.max[0]!;
+  P[FB_MAX_Y] = box.max[1]!;
+  P[FB_BOX_RESTITUTION] = box.restitution;
+  P[FB_GX] = g[0]!;
+  P[FB_GY] = g[1]!;
+  P[FB_ROWS] = buf.count;
+  P[FB_BODIES] = count - 1;
   const check = runStage(pool, finishBodies2D, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
