@@ -14,7 +14,61 @@ import type { PhysicsWorld } from '../world/options.js';
 import { BS3_INV_INERTIA, BS3_INV_MASS, BS3_STRIDE, BS3_VX, BS3_VY, BS3_VZ, BS3_WX, BS3_WY, BS3_WZ } from './body-state-layout.js';
 import { shareContactBuffer } from './coloring.js';
 import { prepareContacts2D } from './prepare-contacts-kernel.js';
+import {
+  PC_A,
+  PC_B,
+  PC_BALL,
+  PC_BODY_STATE,
+  PC_BOUNDARY,
+  PC_BOX_FRICTION,
+  PC_BOX_RESTITUTION,
+  PC_BOX_STATIC_FRICTION,
+  PC_FEATURE,
+  PC_FRICTION,
+  PC_FRICTION_BOUND,
+  PC_FRICTION_OF,
+  PC_IA,
+  PC_IB,
+  PC_IMPULSE,
+  PC_KIND,
+  PC_MAX_NORMAL_IMPULSE,
+  PC_NORMAL_IMPULSE,
+  PC_NORMAL_MASS,
+  PC_NX,
+  PC_NY,
+  PC_PREV_A,
+  PC_PREV_B,
+  PC_PREV_FEATURE,
+  PC_PREV_KIND,
+  PC_PREV_NORMAL_IMPULSE,
+  PC_PREV_ROWS,
+  PC_PREV_STAMP_A,
+  PC_PREV_STAMP_B,
+  PC_PREV_TANGENT_IMPULSE_1,
+  PC_PREV_TANGENT_IMPULSE_2,
+  PC_RA,
+  PC_RB,
+  PC_RELATIVE_VELOCITY,
+  PC_RESTITUTION,
+  PC_RESTITUTION_OF,
+  PC_RIGID_PARTNER,
+  PC_SLOT_COUNT,
+  PC_SLOTS,
+  PC_SPAWN_STAMP,
+  PC_STAMP_A,
+  PC_STAMP_B,
+  PC_STATIC_FRICTION_OF,
+  PC_STICK_SPEED,
+  PC_T1X,
+  PC_T1Y,
+  PC_T1Z,
+  PC_TANGENT_IMPULSE_1,
+  PC_TANGENT_IMPULSE_2,
+  PC_TANGENT_MASS,
+  PC_TOTAL_NORMAL_IMPULSE,
+} from './prepare-slots-2d.js';
 import { approach2DStage } from './stages-threads.js';
+
 /**
  * Fewest contact rows a thread for a threaded 2D world to prepare its rows on its threads.
  * @category Collision
@@ -63,60 +117,58 @@ function prepare2DStage(world: PhysicsWorld, buf: ContactBuffer, stick: number):
     box = cs.boundary;
   const A = S.arrays;
   A.length = 0;
-  A.push(
-    buf.a,
-    buf.b,
-    buf.ia,
-    buf.ib,
-    buf.kind,
-    buf.feature,
-    buf.nx,
-    buf.ny,
-    buf.ra,
-    buf.rb,
-    cs.bodyState,
-    M.restitution,
-    M.friction,
-    M.staticFriction,
-    stamp,
-    buf.normalMass,
-    buf.tangentMass,
-    buf.rigidPartner,
-    buf.t1x,
-    buf.t1y,
-    buf.t1z,
-    buf.restitution,
-    buf.friction,
-    buf.frictionBound,
-    buf.relativeVelocity,
-    buf.totalNormalImpulse,
-    buf.impulse,
-    buf.normalImpulse,
-    buf.tangentImpulse1,
-    buf.tangentImpulse2,
-    buf.maxNormalImpulse,
-    buf.stampA,
-    buf.stampB,
-    prev.kind,
-    prev.a,
-    prev.b,
-    prev.feature,
-    prev.stampA,
-    prev.stampB,
-    prev.normalImpulse,
-    prev.tangentImpulse1,
-    prev.tangentImpulse2,
-    cache.slots,
-  );
+  A[PC_A] = buf.a;
+  A[PC_B] = buf.b;
+  A[PC_IA] = buf.ia;
+  A[PC_IB] = buf.ib;
+  A[PC_KIND] = buf.kind;
+  A[PC_FEATURE] = buf.feature;
+  A[PC_NX] = buf.nx;
+  A[PC_NY] = buf.ny;
+  A[PC_RA] = buf.ra;
+  A[PC_RB] = buf.rb;
+  A[PC_BODY_STATE] = cs.bodyState;
+  A[PC_RESTITUTION_OF] = M.restitution;
+  A[PC_FRICTION_OF] = M.friction;
+  A[PC_STATIC_FRICTION_OF] = M.staticFriction;
+  A[PC_SPAWN_STAMP] = stamp;
+  A[PC_NORMAL_MASS] = buf.normalMass;
+  A[PC_TANGENT_MASS] = buf.tangentMass;
+  A[PC_RIGID_PARTNER] = buf.rigidPartner;
+  A[PC_T1X] = buf.t1x;
+  A[PC_T1Y] = buf.t1y;
+  A[PC_T1Z] = buf.t1z;
+  A[PC_RESTITUTION] = buf.restitution;
+  A[PC_FRICTION] = buf.friction;
+  A[PC_FRICTION_BOUND] = buf.frictionBound;
+  A[PC_RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[PC_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[PC_IMPULSE] = buf.impulse;
+  A[PC_NORMAL_IMPULSE] = buf.normalImpulse;
+  A[PC_TANGENT_IMPULSE_1] = buf.tangentImpulse1;
+  A[PC_TANGENT_IMPULSE_2] = buf.tangentImpulse2;
+  A[PC_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[PC_STAMP_A] = buf.stampA;
+  A[PC_STAMP_B] = buf.stampB;
+  A[PC_PREV_KIND] = prev.kind;
+  A[PC_PREV_A] = prev.a;
+  A[PC_PREV_B] = prev.b;
+  A[PC_PREV_FEATURE] = prev.feature;
+  A[PC_PREV_STAMP_A] = prev.stampA;
+  A[PC_PREV_STAMP_B] = prev.stampB;
+  A[PC_PREV_NORMAL_IMPULSE] = prev.normalImpulse;
+  A[PC_PREV_TANGENT_IMPULSE_1] = prev.tangentImpulse1;
+  A[PC_PREV_TANGENT_IMPULSE_2] = prev.tangentImpulse2;
+  A[PC_SLOTS] = cache.slots;
   const P = S.params;
-  P[0] = stick;
-  P[1] = box.restitution;
-  P[2] = box.friction;
-  P[3] = box.staticFriction;
-  P[4] = cache.size === 0 ? 0 : prev.count;
-  P[5] = cache.size;
-  P[6] = ContactKind.Ball;
-  P[7] = ContactKind.Boundary;
+  P[PC_STICK_SPEED] = stick;
+  P[PC_BOX_RESTITUTION] = box.restitution;
+  P[PC_BOX_FRICTION] = box.friction;
+  P[PC_BOX_STATIC_FRICTION] = box.staticFriction;
+  P[PC_PREV_ROWS] = cache.size === 0 ? 0 : prev.count;
+  P[PC_SLOT_COUNT] = cache.size;
+  P[PC_BALL] = ContactKind.Ball;
+  P[PC_BOUNDARY] = ContactKind.Boundary;
   if (pool !== null && runOnPool(pool, 'contactSolverSystem', prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null) return;
   prepareContacts2D(A, P, null, 0, n);
 }

@@ -9,74 +9,118 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from './body-state-layout.js';
+import {
+  PC_A,
+  PC_B,
+  PC_BALL,
+  PC_BODY_STATE,
+  PC_BOUNDARY,
+  PC_BOX_FRICTION,
+  PC_BOX_RESTITUTION,
+  PC_BOX_STATIC_FRICTION,
+  PC_FEATURE,
+  PC_FRICTION,
+  PC_FRICTION_BOUND,
+  PC_FRICTION_OF,
+  PC_IA,
+  PC_IB,
+  PC_IMPULSE,
+  PC_KIND,
+  PC_MAX_NORMAL_IMPULSE,
+  PC_NORMAL_IMPULSE,
+  PC_NORMAL_MASS,
+  PC_NX,
+  PC_NY,
+  PC_PREV_A,
+  PC_PREV_B,
+  PC_PREV_FEATURE,
+  PC_PREV_KIND,
+  PC_PREV_NORMAL_IMPULSE,
+  PC_PREV_ROWS,
+  PC_PREV_STAMP_A,
+  PC_PREV_STAMP_B,
+  PC_PREV_TANGENT_IMPULSE_1,
+  PC_PREV_TANGENT_IMPULSE_2,
+  PC_RA,
+  PC_RB,
+  PC_RELATIVE_VELOCITY,
+  PC_RESTITUTION,
+  PC_RESTITUTION_OF,
+  PC_RIGID_PARTNER,
+  PC_SLOT_COUNT,
+  PC_SLOTS,
+  PC_SPAWN_STAMP,
+  PC_STAMP_A,
+  PC_STAMP_B,
+  PC_STATIC_FRICTION_OF,
+  PC_STICK_SPEED,
+  PC_T1X,
+  PC_T1Y,
+  PC_T1Z,
+  PC_TANGENT_IMPULSE_1,
+  PC_TANGENT_IMPULSE_2,
+  PC_TANGENT_MASS,
+  PC_TOTAL_NORMAL_IMPULSE,
+} from './prepare-slots-2d.js';
 
 /**
  * Prepares 2D contact rows lo .. hi - 1.
- * A, the contact buffer's: 0 a, 1 b, 2 ia, 3 ib (Int32), 4 kind (Uint8), 5 feature (Int32), 6 nx, 7 ny,
- * 8 ra, 9 rb; 10 the solver state (rows of BS2_STRIDE, body-state-layout.ts); the Material stores 11 restitution, 12 friction,
- * 13 static friction; 14 the spawn stamps (Uint32, a copy); the buffer's outputs 15 normalMass,
- * 16 tangentMass, 17 rigidPartner (Uint8), 18 t1x, 19 t1y, 20 t1z, 21 restitution, 22 friction,
- * 23 frictionBound, 24 relativeVelocity, 25 totalNormalImpulse, 26 impulse, 27 normalImpulse,
- * 28 tangentImpulse1, 29 tangentImpulse2, 30 maxNormalImpulse, 31 stampA, 32 stampB (Uint32); last
- * step's rows 33 kind (Uint8), 34 a, 35 b, 36 feature (Int32), 37 stampA, 38 stampB (Uint32),
- * 39 normalImpulse, 40 tangentImpulse1, 41 tangentImpulse2, and 42 the warm-start hash slots (Int32,
- * row + 1, contacts.ts). P: 0 stick speed (m/s), 1-3 the boundary's restitution, friction and static
- * friction, 4 last step's rows (0: no cache), 5 hash slots (a power of two), 6 ContactKind.Ball,
- * 7 ContactKind.Boundary. Returns 0.
+ * A and P: the PC_ slots of solver/prepare-slots-2d.ts (the contact buffer's rows, the Material
+ * stores, last step's rows and the warm-start hash slots). Returns 0.
  * @category Collision
  */
 export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const CA = A[0] as Int32Array,
-    CB = A[1] as Int32Array,
-    IA = A[2] as Int32Array,
-    IB = A[3] as Int32Array;
-  const K = A[4] as Uint8Array,
-    F = A[5] as Int32Array,
-    NX = A[6] as Float64Array,
-    NY = A[7] as Float64Array;
-  const RA = A[8] as Float64Array,
-    RB = A[9] as Float64Array,
-    sb = A[10] as Float64Array;
-  const eM = A[11] as Float64Array,
-    fM = A[12] as Float64Array,
-    sM = A[13] as Float64Array,
-    stamp = A[14] as Uint32Array;
-  const NM = A[15] as Float64Array,
-    TM = A[16] as Float64Array,
-    RP = A[17] as Uint8Array;
-  const T1X = A[18] as Float64Array,
-    T1Y = A[19] as Float64Array,
-    T1Z = A[20] as Float64Array;
-  const E = A[21] as Float64Array,
-    MU = A[22] as Float64Array,
-    FB = A[23] as Float64Array,
-    RV = A[24] as Float64Array;
-  const TOT = A[25] as Float64Array,
-    IMP = A[26] as Float64Array,
-    LN = A[27] as Float64Array,
-    L1 = A[28] as Float64Array;
-  const L2 = A[29] as Float64Array,
-    MAXN = A[30] as Float64Array,
-    SA = A[31] as Uint32Array,
-    SB = A[32] as Uint32Array;
-  const pK = A[33] as Uint8Array,
-    pA = A[34] as Int32Array,
-    pB = A[35] as Int32Array,
-    pF = A[36] as Int32Array;
-  const pSA = A[37] as Uint32Array,
-    pSB = A[38] as Uint32Array;
-  const pN = A[39] as Float64Array,
-    p1 = A[40] as Float64Array,
-    p2 = A[41] as Float64Array,
-    slots = A[42] as Int32Array;
-  const stick = P[0]!,
-    boxE = P[1]!,
-    boxF = P[2]!,
-    boxS = P[3]!,
-    prevCount = P[4]!,
-    size = P[5]!;
-  const BALL = P[6]!,
-    BOUNDARY = P[7]!;
+  const CA = A[PC_A] as Int32Array,
+    CB = A[PC_B] as Int32Array,
+    IA = A[PC_IA] as Int32Array,
+    IB = A[PC_IB] as Int32Array;
+  const K = A[PC_KIND] as Uint8Array,
+    F = A[PC_FEATURE] as Int32Array,
+    NX = A[PC_NX] as Float64Array,
+    NY = A[PC_NY] as Float64Array;
+  const RA = A[PC_RA] as Float64Array,
+    RB = A[PC_RB] as Float64Array,
+    sb = A[PC_BODY_STATE] as Float64Array;
+  const eM = A[PC_RESTITUTION_OF] as Float64Array,
+    fM = A[PC_FRICTION_OF] as Float64Array,
+    sM = A[PC_STATIC_FRICTION_OF] as Float64Array,
+    stamp = A[PC_SPAWN_STAMP] as Uint32Array;
+  const NM = A[PC_NORMAL_MASS] as Float64Array,
+    TM = A[PC_TANGENT_MASS] as Float64Array,
+    RP = A[PC_RIGID_PARTNER] as Uint8Array;
+  const T1X = A[PC_T1X] as Float64Array,
+    T1Y = A[PC_T1Y] as Float64Array,
+    T1Z = A[PC_T1Z] as Float64Array;
+  const E = A[PC_RESTITUTION] as Float64Array,
+    MU = A[PC_FRICTION] as Float64Array,
+    FB = A[PC_FRICTION_BOUND] as Float64Array,
+    RV = A[PC_RELATIVE_VELOCITY] as Float64Array;
+  const TOT = A[PC_TOTAL_NORMAL_IMPULSE] as Float64Array,
+    IMP = A[PC_IMPULSE] as Float64Array,
+    LN = A[PC_NORMAL_IMPULSE] as Float64Array,
+    L1 = A[PC_TANGENT_IMPULSE_1] as Float64Array;
+  const L2 = A[PC_TANGENT_IMPULSE_2] as Float64Array,
+    MAXN = A[PC_MAX_NORMAL_IMPULSE] as Float64Array,
+    SA = A[PC_STAMP_A] as Uint32Array,
+    SB = A[PC_STAMP_B] as Uint32Array;
+  const pK = A[PC_PREV_KIND] as Uint8Array,
+    pA = A[PC_PREV_A] as Int32Array,
+    pB = A[PC_PREV_B] as Int32Array,
+    pF = A[PC_PREV_FEATURE] as Int32Array;
+  const pSA = A[PC_PREV_STAMP_A] as Uint32Array,
+    pSB = A[PC_PREV_STAMP_B] as Uint32Array;
+  const pN = A[PC_PREV_NORMAL_IMPULSE] as Float64Array,
+    p1 = A[PC_PREV_TANGENT_IMPULSE_1] as Float64Array,
+    p2 = A[PC_PREV_TANGENT_IMPULSE_2] as Float64Array,
+    slots = A[PC_SLOTS] as Int32Array;
+  const stick = P[PC_STICK_SPEED]!,
+    boxE = P[PC_BOX_RESTITUTION]!,
+    boxF = P[PC_BOX_FRICTION]!,
+    boxS = P[PC_BOX_STATIC_FRICTION]!,
+    prevCount = P[PC_PREV_ROWS]!,
+    size = P[PC_SLOT_COUNT]!;
+  const BALL = P[PC_BALL]!,
+    BOUNDARY = P[PC_BOUNDARY]!;
   const mask = size - 1;
   let next = 0;
   for (let i = lo; i < hi; i++) {

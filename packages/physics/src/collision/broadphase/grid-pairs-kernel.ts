@@ -5,19 +5,41 @@
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
+import {
+  BP_BODY_TYPE,
+  BP_BUCKET_START,
+  BP_CAPACITY,
+  BP_CELL_X,
+  BP_CELL_Y,
+  BP_CELL_Z,
+  BP_COUNTS,
+  BP_DIMENSIONS,
+  BP_HASH_MASK,
+  BP_MARGIN,
+  BP_ORIGIN_X,
+  BP_ORIGIN_Y,
+  BP_ORIGIN_Z,
+  BP_OUT,
+  BP_OUT_A,
+  BP_OUT_B,
+  BP_OUT_FIELDS,
+  BP_OUT_WAKE,
+  BP_OX,
+  BP_OY,
+  BP_OZ,
+  BP_RADIUS,
+  BP_REST_TIME,
+  BP_SORTED,
+  BP_SPAN_X,
+  BP_SPAN_XZ,
+  BP_WAKE_COUNTS,
+} from './ball-pair-slots.js';
 
 /**
  * The cell pass over grid bodies lo .. hi - 1 (collision/broadphase/grid.ts's grid bodies, with the body types as
- * they were when the pass began). A: 0 sorted (grid order), 1 cellX, 2 cellY, 3 cellZ,
- * 4 bucketStart, 5 ox, 6 oy, 7 oz (PreviousPosition), 8 radius, 9 margin, 10 bodyType (Uint8:
- * BodyType's 0 dynamic, 1 kinematic, 2 static, 3 sleeping), 11 counts (Int32: at `part` the pairs the
- * range found, at 16 + `part` its wake requests; -1 when a buffer was too small), 12 restTime (s, 0:
- * the body moves), then per range p: 13 + 3p first and 14 + 3p second entity of each pair (the
- * smaller id first), 15 + 3p the sleeping balls the range found met by a moving or kinematic ball, in
- * the order met (a ball may be named more than once), which the caller wakes in range order. P: 0 hash
- * mask, 1 dimensions, 2 capacity of a range's buffers, 3 spanX and 4 spanXZ of a dense grid (0: the
- * hash), 5-7 its origin cell (see GridScratch in state.ts: bucket (cx - 5) + (cz - 7) spanX + (6 - cy)
- * spanXZ). The pairs are those of collision/broadphase/grid.ts's loop (addBallPair: no pair of two sleeping balls, nor of
+ * they were when the pass began). A and P: the BP_ slots of collision/broadphase/ball-pair-slots.ts;
+ * range p writes its pairs and its wake requests to its own output arrays, which the caller appends,
+ * and wakes, in range order. The pairs are those of collision/broadphase/grid.ts's loop (addBallPair: no pair of two sleeping balls, nor of
  * two balls neither of which is dynamic unless a kinematic one meets a sleeping one). The one-thread
  * loop wakes a ball as it meets it; the pass is run again whenever any ball woke, and the set of balls
  * woken, and their order, is the same either way (a woken ball has rested, so it wakes nobody itself).
@@ -25,30 +47,31 @@ import type { KernelArray } from '../../threads/kernel-types.js';
  * @category Collision
  */
 export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const sorted = A[0] as Int32Array,
-    cellX = A[1] as Int32Array,
-    cellY = A[2] as Int32Array,
-    cellZ = A[3] as Int32Array;
-  const start = A[4] as Int32Array,
-    ox = A[5] as Float64Array,
-    oy = A[6] as Float64Array,
-    oz = A[7] as Float64Array;
-  const radius = A[8] as Float64Array,
-    margin = A[9] as Float64Array,
-    type = A[10] as Uint8Array,
-    counts = A[11] as Int32Array;
-  const rest = A[12] as Float64Array;
-  const outA = A[13 + 3 * part] as Int32Array,
-    outB = A[14 + 3 * part] as Int32Array,
-    outW = A[15 + 3 * part] as Int32Array;
-  const mask = P[0]!,
-    is3D = P[1] === 3,
-    cap = P[2]!;
-  const sX = P[3]!,
-    sXZ = P[4]!,
-    gx0 = P[5]!,
-    gy0 = P[6]!,
-    gz0 = P[7]!,
+  const sorted = A[BP_SORTED] as Int32Array,
+    cellX = A[BP_CELL_X] as Int32Array,
+    cellY = A[BP_CELL_Y] as Int32Array,
+    cellZ = A[BP_CELL_Z] as Int32Array;
+  const start = A[BP_BUCKET_START] as Int32Array,
+    ox = A[BP_OX] as Float64Array,
+    oy = A[BP_OY] as Float64Array,
+    oz = A[BP_OZ] as Float64Array;
+  const radius = A[BP_RADIUS] as Float64Array,
+    margin = A[BP_MARGIN] as Float64Array,
+    type = A[BP_BODY_TYPE] as Uint8Array,
+    counts = A[BP_COUNTS] as Int32Array;
+  const rest = A[BP_REST_TIME] as Float64Array;
+  const out = BP_OUT + BP_OUT_FIELDS * part;
+  const outA = A[out + BP_OUT_A] as Int32Array,
+    outB = A[out + BP_OUT_B] as Int32Array,
+    outW = A[out + BP_OUT_WAKE] as Int32Array;
+  const mask = P[BP_HASH_MASK]!,
+    is3D = P[BP_DIMENSIONS] === 3,
+    cap = P[BP_CAPACITY]!;
+  const sX = P[BP_SPAN_X]!,
+    sXZ = P[BP_SPAN_XZ]!,
+    gx0 = P[BP_ORIGIN_X]!,
+    gy0 = P[BP_ORIGIN_Y]!,
+    gz0 = P[BP_ORIGIN_Z]!,
     dense = sX > 0;
   // The half neighbourhood, as (dx, dy, dz) triples: each unordered pair of neighbouring cells once
   // (2D: 4 of the 8 neighbours; 3D: 13 of the 26).
@@ -113,6 +136,6 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
     }
   }
   counts[part] = count;
-  counts[16 + part] = count < 0 ? -1 : woken;
+  counts[BP_WAKE_COUNTS + part] = count < 0 ? -1 : woken;
   return ids === null ? 0 : 0;
 }

@@ -5,54 +5,83 @@
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
+import {
+  BC_BALL,
+  BC_BODY_TYPE,
+  BC_CAPACITY,
+  BC_CAPACITY_0,
+  BC_COUNTS,
+  BC_DIMENSIONS,
+  BC_FIRST_ROW,
+  BC_H,
+  BC_OUT,
+  BC_OUT_A,
+  BC_OUT_B,
+  BC_OUT_FEATURE,
+  BC_OUT_FIELDS,
+  BC_OUT_KIND,
+  BC_OUT_NX,
+  BC_OUT_NY,
+  BC_OUT_NZ,
+  BC_OUT_RA,
+  BC_OUT_RB,
+  BC_OUT_SEPARATION,
+  BC_OX,
+  BC_OY,
+  BC_OZ,
+  BC_PAIR_A,
+  BC_PAIR_B,
+  BC_RADIUS,
+  BC_SKIP,
+  BC_SPECULATIVE,
+  BC_STATIC,
+  BC_STATIC_BALL,
+  BC_VX,
+  BC_VY,
+  BC_VZ,
+} from './ball-contact-slots.js';
 
 /**
  * Ball-ball contacts of pairs lo .. hi - 1 (all BallBall pairs): the normal where the balls first
  * touch this step (swept test, Ericson 5.5.7), the separation where they were at the start of the
  * step, kept when the gap can close this step; pairs whose skip flag is set (a joint keeps the bodies
- * apart) make none. A: 0 pairA, 1 pairB, 2 ox, 3 oy, 4 oz, 5 vx, 6 vy, 7 vz, 8 radius, 9 bodyType
- * (Uint8), 10 counts (Int32, the contacts of each range at `part`; -1: its arrays were too small),
- * then per range p the 10 arrays it writes its contacts to at 11 + 10 p: kind (Uint8), nx, ny, nz,
- * separation, ra, rb (Float64), a, b, feature (Int32), range 0 from row P[8], the others from row 0
- * (range 0's are the contact buffer's own, so its rows need no copy); at A[P[9]] (when P[9] >= 0) the
- * skip flags (Uint8, one a pair). P: 0 h (s), 1 speculative distance (m), 2 the Static body type, 3
- * ContactKind.Ball, 4 ContactKind.StaticBall, 5 rows range p > 0's arrays hold, 6 rows range 0's hold,
- * 7 dimensions (2: z is not read; a 2D world's z stores hold 0, so the arithmetic is the same), 8 range
- * 0's first row, 9 the skip flags' index in A (-1: none). Returns 0.
+ * apart) make none. A and P: the BC_ slots of collision/narrowphase/ball-contact-slots.ts; range p
+ * writes its contacts to its own output arrays, range 0 from row P[BC_FIRST_ROW] (its arrays are the
+ * contact buffer's own, so its rows need no copy), the others from row 0. Returns 0.
  * @category Collision
  */
 export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const pairA = A[0] as Int32Array,
-    pairB = A[1] as Int32Array;
-  const ox = A[2] as Float64Array,
-    oy = A[3] as Float64Array,
-    oz = A[4] as Float64Array;
-  const vx = A[5] as Float64Array,
-    vy = A[6] as Float64Array,
-    vz = A[7] as Float64Array;
-  const radius = A[8] as Float64Array,
-    type = A[9] as Uint8Array,
-    counts = A[10] as Int32Array;
-  const o = 11 + 10 * part;
-  const K = A[o] as Uint8Array,
-    NX = A[o + 1] as Float64Array,
-    NY = A[o + 2] as Float64Array,
-    NZ = A[o + 3] as Float64Array;
-  const SEP = A[o + 4] as Float64Array,
-    RA = A[o + 5] as Float64Array,
-    RB = A[o + 6] as Float64Array;
-  const CA = A[o + 7] as Int32Array,
-    CB = A[o + 8] as Int32Array,
-    FE = A[o + 9] as Int32Array;
-  const h = P[0]!,
-    spec = P[1]!,
-    STATIC = P[2]!,
-    BALL = P[3]!,
-    STATIC_BALL = P[4]!,
-    cap = part === 0 ? P[6]! : P[5]!;
-  const is3D = P[7] === 3;
-  const base = part === 0 ? P[8]! : 0,
-    skip = P[9]! >= 0 ? (A[P[9]!] as Uint8Array) : null;
+  const pairA = A[BC_PAIR_A] as Int32Array,
+    pairB = A[BC_PAIR_B] as Int32Array;
+  const ox = A[BC_OX] as Float64Array,
+    oy = A[BC_OY] as Float64Array,
+    oz = A[BC_OZ] as Float64Array;
+  const vx = A[BC_VX] as Float64Array,
+    vy = A[BC_VY] as Float64Array,
+    vz = A[BC_VZ] as Float64Array;
+  const radius = A[BC_RADIUS] as Float64Array,
+    type = A[BC_BODY_TYPE] as Uint8Array,
+    counts = A[BC_COUNTS] as Int32Array;
+  const o = BC_OUT + BC_OUT_FIELDS * part;
+  const K = A[o + BC_OUT_KIND] as Uint8Array,
+    NX = A[o + BC_OUT_NX] as Float64Array,
+    NY = A[o + BC_OUT_NY] as Float64Array,
+    NZ = A[o + BC_OUT_NZ] as Float64Array;
+  const SEP = A[o + BC_OUT_SEPARATION] as Float64Array,
+    RA = A[o + BC_OUT_RA] as Float64Array,
+    RB = A[o + BC_OUT_RB] as Float64Array;
+  const CA = A[o + BC_OUT_A] as Int32Array,
+    CB = A[o + BC_OUT_B] as Int32Array,
+    FE = A[o + BC_OUT_FEATURE] as Int32Array;
+  const h = P[BC_H]!,
+    spec = P[BC_SPECULATIVE]!,
+    STATIC = P[BC_STATIC]!,
+    BALL = P[BC_BALL]!,
+    STATIC_BALL = P[BC_STATIC_BALL]!,
+    cap = part === 0 ? P[BC_CAPACITY_0]! : P[BC_CAPACITY]!;
+  const is3D = P[BC_DIMENSIONS] === 3;
+  const base = part === 0 ? P[BC_FIRST_ROW]! : 0,
+    skip = P[BC_SKIP]! >= 0 ? (A[P[BC_SKIP]!] as Uint8Array) : null;
   let count = 0;
   for (let i = lo; i < hi; i++) {
     if (skip !== null && skip[i] === 1) continue;
