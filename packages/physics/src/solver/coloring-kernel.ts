@@ -20,6 +20,73 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import {
+  CS_APPROACH,
+  CS_BODY_BOUNDS,
+  CS_BODY_EXTRA,
+  CS_BODY_ORDER,
+  CS_BODY_STATE,
+  CS_BOUNDS,
+  CS_CLAIM,
+  CS_COUNTERS,
+  CS_DOWN_X,
+  CS_DOWN_Y,
+  CS_DYN,
+  CS_DYNAMIC,
+  CS_FRICTION_BOUND,
+  CS_GROUP,
+  CS_GROUP_SLOTS,
+  CS_GX,
+  CS_GX_HS,
+  CS_GY,
+  CS_GY_HS,
+  CS_GZ,
+  CS_HS,
+  CS_IA,
+  CS_IB,
+  CS_INV_HS,
+  CS_MAX_NORMAL_IMPULSE,
+  CS_MEASURE_APPROACH,
+  CS_NORMAL_IMPULSE,
+  CS_NORMAL_MASS,
+  CS_NX,
+  CS_NY,
+  CS_OFFSETS,
+  CS_PACK,
+  CS_PAIR,
+  CS_PLAN,
+  CS_PUSH_SPEED,
+  CS_RA,
+  CS_RB,
+  CS_RIGID_BIAS,
+  CS_RIGID_IMPULSE,
+  CS_RIGID_MASS,
+  CS_RIGID_PARTNER,
+  CS_ROW,
+  CS_ROWS,
+  CS_SEPARATION,
+  CS_SLOT,
+  CS_SOFT_BIAS,
+  CS_SOFT_IMPULSE,
+  CS_SOFT_MASS,
+  CS_SPIN_US,
+  CS_SUPPORT_COS,
+  CS_TANGENT_IMPULSE,
+  CS_TANGENT_MASS,
+  CS_TOT,
+  CS_TOTAL_NORMAL_IMPULSE,
+  PL_BODIES,
+  PL_COLOR_BLOCKS,
+  PL_COLORS,
+  PL_ITERATIONS,
+  PL_MAY_WAIT,
+  PL_PACKED_ROWS,
+  PL_PARTS,
+  PL_RELAX,
+  PL_STRIPS,
+  PL_SUBSTEPS,
+  PL_THREADS,
+} from './colored-slots-2d.js';
+import {
   PACK_STRIDE,
   PK_A_FIXED,
   PK_FRICTION,
@@ -42,7 +109,7 @@ import type { approach2D } from './stages-kernel.js';
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
  * the contact buffer's rows (solver/contact-pack-2d.ts layout) group by group into the pack (one block a
  * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
- * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[21] = 1), then each
+ * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[CS_MEASURE_APPROACH] = 1), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
  * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
@@ -55,33 +122,12 @@ import type { approach2D } from './stages-kernel.js';
  * instead of as units of their own: gravity before a block's warm start, positions before its first
  * relax pass (when there is one), each block for its strip pair's bodies (`bodyOrder` from
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
- * touches. A thread that finds the next unit not ready spins for up to P[13] microseconds, then
+ * touches. A thread that finds the next unit not ready spins for up to P[CS_SPIN_US] microseconds, then
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
- * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 solver state (rows of BS2_STRIDE, body-state-layout.ts), 2 solver extra
- * (rows of 6: slot 5 the rotation owed), 3 dyn (Uint8, 1: the solver body takes gravity), 4 plan
- * (Int32: 0 substeps, 1 biased passes, 2 relax passes, 3 threads running the kernel, 4 colours C, 5
- * solver bodies, 6 the calling thread may block in Atomics.wait, 7 packing ranges (0: the rows are
- * packed already, solver/strip-plan-kernel.ts), 8 rows packed, 9 strips (1: fused body stages), 10
- * even blocks, 11 1 when the strip plan packed the rows, 12 + c colour c's first block (c = 0 .. C;
- * colour C the overflow colour, 12 + C + 1 the end)), 5 counters (Int32, 0 on entry: 0 unused, 1 blocks
- * done, 2 abort), 6 each row's packing group (Uint8: 0 .. P[12] - 2, P[12] - 1 the overflow group, 255
- * not packed), 7 offsets (Int32, P[12] a packing range: its next pack slot of each group; advanced as
- * it packs), the contact buffer's 8 ia, 9 ib (Int32), 10 nx, 11 ny, 12 ra, 13 rb, 14 separation, 15
- * normalMass, 16 tangentMass, 17 frictionBound, 18 normalImpulse, 19 tangentImpulse1, 20 rigidPartner
- * (Uint8), 21 maxNormalImpulse, 22 totalNormalImpulse, 23 bounds (Int32: block j is pack rows bounds[j]
- * .. bounds[j + 1] - 1), 24 bodyOrder (Int32 solver indices), 25 bodyBounds (Int32), 26 pair (Int32,
- * two a pack row: its bodies' solver state offsets; indexing by an integer array was 17 % faster a pass
- * than by doubles, measured on a captured 47,000-row step), 27 tot (Float64, a pack row: the normal
- * impulse delivered over the substeps, written on each substep's last pass only), 28 row (Int32, a pack
- * row: its row in the contact buffer, read by the unpacking only), 29 claim (Int32, 0 on entry, a flag
- * a block of every unit, numbered across the units; at least solveColoredBlocks2D of them), 30 slot
- * (Int32, a buffer row: its pack row, written by the packing), 31 to 43 approach2D's arrays
- * (solver/stages-kernel.ts: measureApproach of the buffer's rows, run as the unit after the packing,
- * when P[21] > 0); the parts running are 0 .. plan[3] - 1. P: 0 1 / h_s, 1-3 dynamic softness, 4-6
- * rigid softness, 7 push-out speed, 8 h_s, 9-10 gravity times h_s, 11 the buffer's rows, 12 group slots
- * a thread in offsets, 13 spin before blocking (microseconds), 14-15 the unit vector along gravity (0,
- * 0 without gravity), 16 solver/support.ts's SUPPORT_COS, 17-19 gravity (m/s^2), 20 BodyType.Dynamic, 21 1 to
- * measure the approach speeds (in blocks of 2,048 rows), else 0. The arithmetic of each row and body is
+ * A and P: the CS_ slots of solver/colored-slots-2d.ts, the plan at A[CS_PLAN] its PL_ slots, and
+ * approach2D's arrays from A[CS_APPROACH] (measureApproach of the buffer's rows, run as the unit after
+ * the packing when P[CS_MEASURE_APPROACH] = 1); the parts running are 0 .. plan[PL_THREADS] - 1.
+ * The arithmetic of each row and body is
  * that of solver/contact-solver.ts's buffer-order loops (solve2D, warmStart2D, the body stages), with
  * the support rows of the relax passes for frictionless rows only (solver/support.ts: a frictionless
  * row with one ball resting on another holds the lower ball when that slows the upper one less than
@@ -98,27 +144,27 @@ export function solveColored2D(
   part: number,
   H: readonly KernelHelper[],
 ): number {
-  const pk = A[0] as Float64Array,
-    sb = A[1] as Float64Array,
-    ex = A[2] as Float64Array,
-    dyn = A[3] as Uint8Array;
-  const plan = A[4] as Int32Array,
-    bar = A[5] as Int32Array;
-  const substeps = plan[0]!,
-    iters = plan[1]!,
-    relax = plan[2]!,
-    C = plan[4]!,
-    nb = plan[5]!,
-    parts = plan[7]!;
-  const np = plan[8]!,
-    fused = plan[9] === 1;
-  const wait = part !== 0 || plan[6] === 1;
-  const bounds = A[23] as Int32Array,
-    order = A[24] as Int32Array,
-    bodyBounds = A[25] as Int32Array,
-    pair = A[26] as Int32Array;
-  const tot = A[27] as Float64Array;
-  const spinMs = P[13]! / 1000;
+  const pk = A[CS_PACK] as Float64Array,
+    sb = A[CS_BODY_STATE] as Float64Array,
+    ex = A[CS_BODY_EXTRA] as Float64Array,
+    dyn = A[CS_DYN] as Uint8Array;
+  const plan = A[CS_PLAN] as Int32Array,
+    bar = A[CS_COUNTERS] as Int32Array;
+  const substeps = plan[PL_SUBSTEPS]!,
+    iters = plan[PL_ITERATIONS]!,
+    relax = plan[PL_RELAX]!,
+    C = plan[PL_COLORS]!,
+    nb = plan[PL_BODIES]!,
+    parts = plan[PL_PARTS]!;
+  const np = plan[PL_PACKED_ROWS]!,
+    fused = plan[PL_STRIPS] === 1;
+  const wait = part !== 0 || plan[PL_MAY_WAIT] === 1;
+  const bounds = A[CS_BOUNDS] as Int32Array,
+    order = A[CS_BODY_ORDER] as Int32Array,
+    bodyBounds = A[CS_BODY_BOUNDS] as Int32Array,
+    pair = A[CS_PAIR] as Int32Array;
+  const tot = A[CS_TOT] as Float64Array;
+  const spinMs = P[CS_SPIN_US]! / 1000;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
   // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
@@ -131,17 +177,17 @@ export function solveColored2D(
   const bodyStage = H[2] as typeof coloredBodies2D,
     rowPass = H[3] as typeof coloredRows2D;
   const approachRows = H[12] as typeof approach2D;
-  // The approach speeds' blocks (when P[21] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
+  // The approach speeds' blocks (when P[CS_MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
   // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
   const APPROACH_ROWS = 2048,
-    rows = P[11]!,
-    approachBlocks = P[21] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
+    rows = P[CS_ROWS]!,
+    approachBlocks = P[CS_MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
   const approachParams = new Float64Array(5);
-  approachParams[AP_GX] = P[17]!;
-  approachParams[AP_GY] = P[18]!;
-  approachParams[AP_GZ] = P[19]!;
-  approachParams[AP_DYNAMIC] = P[20]!;
-  approachParams[AP_BASE] = 31;
+  approachParams[AP_GX] = P[CS_GX]!;
+  approachParams[AP_GY] = P[CS_GY]!;
+  approachParams[AP_GZ] = P[CS_GZ]!;
+  approachParams[AP_DYNAMIC] = P[CS_DYNAMIC]!;
+  approachParams[AP_BASE] = CS_APPROACH;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256,
     BB = 1024;
@@ -157,11 +203,11 @@ export function solveColored2D(
   // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
   // counts finished blocks, so a unit starts once bar[1] reaches its first block.
   const units = 2 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
-  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[3])
+  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[PL_THREADS])
   // from its own share of a unit first: with strips, block j of either colour is strip pair j's, so a
   // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
-  const claim = A[29] as Int32Array,
-    threads = plan[3]! > 0 ? plan[3]! : 1;
+  const claim = A[CS_CLAIM] as Int32Array,
+    threads = plan[PL_THREADS]! > 0 ? plan[PL_THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
     cursor = new Int32Array(2);
   let base = 0,
@@ -188,8 +234,8 @@ export function solveColored2D(
         count = stage === 0 ? gravityUnits : positionUnits;
       } else {
         kind = 3;
-        first = plan[12 + u]!;
-        count = plan[13 + u]! - first;
+        first = plan[PL_COLOR_BLOCKS + u]!;
+        count = plan[PL_COLOR_BLOCKS + u + 1]! - first;
       }
     }
     const end = base + count;
@@ -273,22 +319,22 @@ export function solveColored2D(
 
 /**
  * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
- * filled), over `rows` buffer rows (its P[11]), measuring the approach speeds if `approach` (its P[21] = 1):
+ * filled), over `rows` buffer rows (its P[CS_ROWS]), measuring the approach speeds if `approach` (its P[CS_MEASURE_APPROACH] = 1):
  * the size its claim array needs.
  * @category Collision
  */
 export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: boolean): number {
-  const substeps = plan[0]!,
-    iters = plan[1]!,
-    relax = plan[2]!,
-    C = plan[4]!,
-    nb = plan[5]!,
-    parts = plan[7]!;
-  const np = plan[8]!,
-    fused = plan[9] === 1;
+  const substeps = plan[PL_SUBSTEPS]!,
+    iters = plan[PL_ITERATIONS]!,
+    relax = plan[PL_RELAX]!,
+    C = plan[PL_COLORS]!,
+    nb = plan[PL_BODIES]!,
+    parts = plan[PL_PARTS]!;
+  const np = plan[PL_PACKED_ROWS]!,
+    fused = plan[PL_STRIPS] === 1;
   const bodyUnits = Math.ceil((nb - 1) / 1024);
   const bodies = (fused ? 0 : bodyUnits) + (fused && relax > 0 ? 0 : bodyUnits);
-  const colorBlocks = plan[12 + C + 1]! - plan[12]!;
+  const colorBlocks = plan[PL_COLOR_BLOCKS + C + 1]! - plan[PL_COLOR_BLOCKS]!;
   const approachBlocks = approach ? Math.ceil(rows / 2048) : 0;
   return parts + approachBlocks + substeps * (bodies + (1 + iters + relax) * colorBlocks) + Math.ceil(np / 256);
 }
@@ -305,28 +351,28 @@ export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: b
  * @category Collision
  */
 export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
-  const pk = A[0] as Float64Array,
-    color = A[6] as Uint8Array,
-    offsets = A[7] as Int32Array;
-  const IA = A[8] as Int32Array,
-    IB = A[9] as Int32Array,
-    NX = A[10] as Float64Array,
-    NY = A[11] as Float64Array;
-  const RA = A[12] as Float64Array,
-    RB = A[13] as Float64Array,
-    S0 = A[14] as Float64Array,
-    NM = A[15] as Float64Array;
-  const TM = A[16] as Float64Array,
-    FB = A[17] as Float64Array,
-    LN = A[18] as Float64Array,
-    LT = A[19] as Float64Array;
-  const RP = A[20] as Uint8Array,
-    pair = A[26] as Int32Array,
-    tot = A[27] as Float64Array,
-    row = A[28] as Int32Array;
-  const slot = A[30] as Int32Array;
-  const rows = P[11]!,
-    W = P[12]!;
+  const pk = A[CS_PACK] as Float64Array,
+    color = A[CS_GROUP] as Uint8Array,
+    offsets = A[CS_OFFSETS] as Int32Array;
+  const IA = A[CS_IA] as Int32Array,
+    IB = A[CS_IB] as Int32Array,
+    NX = A[CS_NX] as Float64Array,
+    NY = A[CS_NY] as Float64Array;
+  const RA = A[CS_RA] as Float64Array,
+    RB = A[CS_RB] as Float64Array,
+    S0 = A[CS_SEPARATION] as Float64Array,
+    NM = A[CS_NORMAL_MASS] as Float64Array;
+  const TM = A[CS_TANGENT_MASS] as Float64Array,
+    FB = A[CS_FRICTION_BOUND] as Float64Array,
+    LN = A[CS_NORMAL_IMPULSE] as Float64Array,
+    LT = A[CS_TANGENT_IMPULSE] as Float64Array;
+  const RP = A[CS_RIGID_PARTNER] as Uint8Array,
+    pair = A[CS_PAIR] as Int32Array,
+    tot = A[CS_TOT] as Float64Array,
+    row = A[CS_ROW] as Int32Array;
+  const slot = A[CS_SLOT] as Int32Array;
+  const rows = P[CS_ROWS]!,
+    W = P[CS_GROUP_SLOTS]!;
   const lo = Math.floor((rows * blk) / parts),
     hi = Math.floor((rows * (blk + 1)) / parts),
     o0 = blk * W;
@@ -363,20 +409,20 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
  * @category Collision
  */
 export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
-  const pk = A[0] as Float64Array,
-    color = A[6] as Uint8Array,
-    slot = A[30] as Int32Array;
-  const NX = A[10] as Float64Array,
-    NY = A[11] as Float64Array,
-    RA = A[12] as Float64Array,
-    RB = A[13] as Float64Array;
-  const S0 = A[14] as Float64Array,
-    NM = A[15] as Float64Array,
-    TM = A[16] as Float64Array,
-    FB = A[17] as Float64Array;
-  const LN = A[18] as Float64Array,
-    LT = A[19] as Float64Array,
-    RP = A[20] as Uint8Array;
+  const pk = A[CS_PACK] as Float64Array,
+    color = A[CS_GROUP] as Uint8Array,
+    slot = A[CS_SLOT] as Int32Array;
+  const NX = A[CS_NX] as Float64Array,
+    NY = A[CS_NY] as Float64Array,
+    RA = A[CS_RA] as Float64Array,
+    RB = A[CS_RB] as Float64Array;
+  const S0 = A[CS_SEPARATION] as Float64Array,
+    NM = A[CS_NORMAL_MASS] as Float64Array,
+    TM = A[CS_TANGENT_MASS] as Float64Array,
+    FB = A[CS_FRICTION_BOUND] as Float64Array;
+  const LN = A[CS_NORMAL_IMPULSE] as Float64Array,
+    LT = A[CS_TANGENT_IMPULSE] as Float64Array,
+    RP = A[CS_RIGID_PARTNER] as Uint8Array;
   for (let j = 0; j < count; j++) {
     const i = rows[j]!;
     if (color[i] === 255) continue;
@@ -401,13 +447,13 @@ export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: numbe
  * @category Collision
  */
 export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
-  const pk = A[0] as Float64Array,
-    LN = A[18] as Float64Array,
-    LT = A[19] as Float64Array,
-    MAXN = A[21] as Float64Array,
-    TOT = A[22] as Float64Array;
-  const tot = A[27] as Float64Array,
-    row = A[28] as Int32Array;
+  const pk = A[CS_PACK] as Float64Array,
+    LN = A[CS_NORMAL_IMPULSE] as Float64Array,
+    LT = A[CS_TANGENT_IMPULSE] as Float64Array,
+    MAXN = A[CS_MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[CS_TOTAL_NORMAL_IMPULSE] as Float64Array;
+  const tot = A[CS_TOT] as Float64Array,
+    row = A[CS_ROW] as Int32Array;
   for (let k = k0; k < k1; k++) {
     const o = k * PACK_STRIDE,
       i = row[k]!;
@@ -436,8 +482,8 @@ export function coloredBodies2D(
   P: Float64Array,
 ): void {
   if (stage === 1) {
-    const gx = P[9]!,
-      gy = P[10]!;
+    const gx = P[CS_GX_HS]!,
+      gy = P[CS_GY_HS]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q;
       if (dyn[k] !== 1) continue;
@@ -446,7 +492,7 @@ export function coloredBodies2D(
       sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
     }
   } else {
-    const hs = P[8]!;
+    const hs = P[CS_HS]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q,
         o = k * BS2_STRIDE;
@@ -498,17 +544,17 @@ export function coloredRows2D(
     }
     return;
   }
-  const invH = P[0]!,
-    dBias = P[1]!,
-    dMass = P[2]!,
-    dImp = P[3]!,
-    rBias = P[4]!,
-    rMass = P[5]!,
-    rImp = P[6]!,
-    push = P[7]!;
-  const downX = P[14]!,
-    downY = P[15]!,
-    supportCos = P[16]!;
+  const invH = P[CS_INV_HS]!,
+    dBias = P[CS_SOFT_BIAS]!,
+    dMass = P[CS_SOFT_MASS]!,
+    dImp = P[CS_SOFT_IMPULSE]!,
+    rBias = P[CS_RIGID_BIAS]!,
+    rMass = P[CS_RIGID_MASS]!,
+    rImp = P[CS_RIGID_IMPULSE]!,
+    push = P[CS_PUSH_SPEED]!;
+  const downX = P[CS_DOWN_X]!,
+    downY = P[CS_DOWN_Y]!,
+    supportCos = P[CS_SUPPORT_COS]!;
   const useBias = (mode & 2) !== 0,
     total = (mode & 4) !== 0;
   for (let k = r0; k < r1; k++) {

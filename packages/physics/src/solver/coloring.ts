@@ -45,6 +45,95 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE } from './body-state-layout.js';
+import {
+  CS_BODY_BOUNDS,
+  CS_BODY_EXTRA,
+  CS_BODY_ORDER,
+  CS_BODY_STATE,
+  CS_BOUNDS,
+  CS_CLAIM,
+  CS_COUNTERS,
+  CS_DOWN_X,
+  CS_DYN,
+  CS_DYNAMIC,
+  CS_FRICTION_BOUND,
+  CS_GROUP,
+  CS_GROUP_SLOTS,
+  CS_GX,
+  CS_GX_HS,
+  CS_GY,
+  CS_GY_HS,
+  CS_GZ,
+  CS_HS,
+  CS_IA,
+  CS_IB,
+  CS_INV_HS,
+  CS_MAX_NORMAL_IMPULSE,
+  CS_MEASURE_APPROACH,
+  CS_NORMAL_IMPULSE,
+  CS_NORMAL_MASS,
+  CS_NX,
+  CS_NY,
+  CS_OFFSETS,
+  CS_PACK,
+  CS_PAIR,
+  CS_PLAN,
+  CS_PUSH_SPEED,
+  CS_RA,
+  CS_RB,
+  CS_RIGID_PARTNER,
+  CS_ROW,
+  CS_ROWS,
+  CS_SEPARATION,
+  CS_SLOT,
+  CS_SOFT_BIAS,
+  CS_SPIN_US,
+  CS_SUPPORT_COS,
+  CS_TANGENT_IMPULSE,
+  CS_TANGENT_MASS,
+  CS_TOT,
+  CS_TOTAL_NORMAL_IMPULSE,
+  PL_BODIES,
+  PL_COLORS,
+  PL_ITERATIONS,
+  PL_MAY_WAIT,
+  PL_PACKED,
+  PL_PACKED_ROWS,
+  PL_PARTS,
+  PL_RELAX,
+  PL_STRIPS,
+  PL_SUBSTEPS,
+  PL_THREADS,
+  SC_BASE,
+  SC_BIN,
+  SC_BIN_ROWS,
+  SC_BIN_STRIP,
+  SC_BINS,
+  SC_BODIES,
+  SC_BODY_EXTRA,
+  SC_BODY_STATE,
+  SC_BODY_TYPE,
+  SC_DYN,
+  SC_IA,
+  SC_IB,
+  SC_NO_BIN,
+  SC_P_BODIES,
+  SC_P_DYNAMIC,
+  SC_P_ROWS,
+  SC_P_STRIPS,
+  SC_STRIP,
+  SP_BLOCK_ROWS,
+  SP_COUNTS,
+  SP_CUT,
+  SP_CUT_HERE,
+  SP_MAX_COLORS,
+  SP_MAX_OVERFLOW,
+  SP_NEXT,
+  SP_PACK,
+  SP_PARTS,
+  SP_PLAN_HEAD,
+  SP_START,
+} from './colored-slots-2d.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
 import { impactChangedRows } from './impact-state.js';
@@ -335,47 +424,57 @@ const PLAN_PARAMS = 16;
  */
 function planArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
   const A = solveArguments(cs, buf, s, s.planArrays);
-  A.push(cs.bodyState, cs.bodyExtra, cs.bodyType, cs.solverBodies, s.dyn, s.strip, s.bin, s.hist, s.binStrip, buf.ia, buf.ib);
-  A.push(s.counts, s.start, s.next);
+  A[SP_CUT + SC_BODY_STATE] = cs.bodyState;
+  A[SP_CUT + SC_BODY_EXTRA] = cs.bodyExtra;
+  A[SP_CUT + SC_BODY_TYPE] = cs.bodyType;
+  A[SP_CUT + SC_BODIES] = cs.solverBodies;
+  A[SP_CUT + SC_DYN] = s.dyn;
+  A[SP_CUT + SC_STRIP] = s.strip;
+  A[SP_CUT + SC_BIN] = s.bin;
+  A[SP_CUT + SC_BIN_ROWS] = s.hist;
+  A[SP_CUT + SC_BIN_STRIP] = s.binStrip;
+  A[SP_CUT + SC_IA] = buf.ia;
+  A[SP_CUT + SC_IB] = buf.ib;
+  A[SP_COUNTS] = s.counts;
+  A[SP_START] = s.start;
+  A[SP_NEXT] = s.next;
   return A;
 }
 
 /** solveColored2D's arrays for `buf`'s rows (solver/coloring-kernel.ts, 0 to 30), into `A` (emptied first). */
 function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, A: KernelArray[]): KernelArray[] {
   A.length = 0;
-  A.push(
-    s.pack,
-    cs.bodyState,
-    cs.bodyExtra,
-    s.dyn,
-    s.plan,
-    s.bar,
-    s.color,
-    s.offsets,
-    buf.ia,
-    buf.ib,
-    buf.nx,
-    buf.ny,
-    buf.ra,
-    buf.rb,
-    buf.separation,
-    buf.normalMass,
-    buf.tangentMass,
-    buf.frictionBound,
-    buf.normalImpulse,
-    buf.tangentImpulse1,
-    buf.rigidPartner,
-    buf.maxNormalImpulse,
-    buf.totalNormalImpulse,
-    s.bounds,
-    s.bodyOrder,
-    s.bodyBounds,
-    s.pair,
-    s.tot,
-    s.row,
-    s.claim,
-    s.slot,
-  );
+  A[CS_PACK] = s.pack;
+  A[CS_BODY_STATE] = cs.bodyState;
+  A[CS_BODY_EXTRA] = cs.bodyExtra;
+  A[CS_DYN] = s.dyn;
+  A[CS_PLAN] = s.plan;
+  A[CS_COUNTERS] = s.bar;
+  A[CS_GROUP] = s.color;
+  A[CS_OFFSETS] = s.offsets;
+  A[CS_IA] = buf.ia;
+  A[CS_IB] = buf.ib;
+  A[CS_NX] = buf.nx;
+  A[CS_NY] = buf.ny;
+  A[CS_RA] = buf.ra;
+  A[CS_RB] = buf.rb;
+  A[CS_SEPARATION] = buf.separation;
+  A[CS_NORMAL_MASS] = buf.normalMass;
+  A[CS_TANGENT_MASS] = buf.tangentMass;
+  A[CS_FRICTION_BOUND] = buf.frictionBound;
+  A[CS_NORMAL_IMPULSE] = buf.normalImpulse;
+  A[CS_TANGENT_IMPULSE] = buf.tangentImpulse1;
+  A[CS_RIGID_PARTNER] = buf.rigidPartner;
+  A[CS_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[CS_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[CS_BOUNDS] = s.bounds;
+  A[CS_BODY_ORDER] = s.bodyOrder;
+  A[CS_BODY_BOUNDS] = s.bodyBounds;
+  A[CS_PAIR] = s.pair;
+  A[CS_TOT] = s.tot;
+  A[CS_ROW] = s.row;
+  A[CS_CLAIM] = s.claim;
+  A[CS_SLOT] = s.slot;
   return A;
 }
 
@@ -416,22 +515,22 @@ function planParameters(
   cut: boolean,
 ): Float64Array {
   const P = s.planParams;
-  P[0] = cs.solverBodyCount;
-  P[1] = buf.count;
-  P[2] = strips;
-  P[3] = BINS;
-  P[4] = BodyType.Dynamic;
-  P[5] = NO_BIN;
-  P[6] = 31;
-  P[7] = parts;
-  P[8] = pack ? 1 : 0;
-  P[9] = cut ? 1 : 0;
-  P[10] = Math.max(64, buf.count >> 6);
-  P[11] = buf.count;
-  P[12] = MAX_COLORS + 1;
-  P[13] = PLAN_HEAD;
-  P[14] = MAX_COLORS;
-  P[15] = BLOCK_ROWS;
+  P[SC_P_BODIES] = cs.solverBodyCount;
+  P[SC_P_ROWS] = buf.count;
+  P[SC_P_STRIPS] = strips;
+  P[SC_BINS] = BINS;
+  P[SC_P_DYNAMIC] = BodyType.Dynamic;
+  P[SC_NO_BIN] = NO_BIN;
+  P[SC_BASE] = SP_CUT;
+  P[SP_PARTS] = parts;
+  P[SP_PACK] = pack ? 1 : 0;
+  P[SP_CUT_HERE] = cut ? 1 : 0;
+  P[SP_MAX_OVERFLOW] = Math.max(64, buf.count >> 6);
+  P[CS_ROWS] = buf.count;
+  P[CS_GROUP_SLOTS] = MAX_COLORS + 1;
+  P[SP_PLAN_HEAD] = PLAN_HEAD;
+  P[SP_MAX_COLORS] = MAX_COLORS;
+  P[SP_BLOCK_ROWS] = BLOCK_ROWS;
   return P;
 }
 
@@ -457,7 +556,7 @@ export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: 
   const old = scratchOf.get(cs);
   if (old !== undefined) {
     old.cut = 0;
-    old.plan[11] = 0;
+    old.plan[PL_PACKED] = 0;
   }
   const pool = colored(world, buf, others) ? coloredPool(world) : null;
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
@@ -482,10 +581,10 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
   for (let strips = STRIPS; strips >= 4; strips >>= 1) {
     const P = planParameters(cs, buf, s, strips, parts, false, s.cut !== strips);
     s.cut = strips;
-    if (stripPlan2D(A, P, null, 0, 1, 0, KERNEL_HELPERS) > 0) return s.plan[8]!;
+    if (stripPlan2D(A, P, null, 0, 1, 0, KERNEL_HELPERS) > 0) return s.plan[PL_PACKED_ROWS]!;
   }
   const used = colorRows(cs, buf, s, parts);
-  s.plan[9] = 0;
+  s.plan[PL_STRIPS] = 0;
   return stripLayout2D(A, planParameters(cs, buf, s, used, parts, false, false), used, 0);
 }
 
@@ -495,7 +594,7 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
  */
 export function lastColorCount(cs: CollisionState): number {
   const s = scratchOf.get(cs);
-  return s === undefined ? 0 : s.plan[4]!;
+  return s === undefined ? 0 : s.plan[PL_COLORS]!;
 }
 
 /**
@@ -510,7 +609,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
   const s = scratchOf.get(cs);
   if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
   const plan = s.plan,
-    C = plan[4]!,
+    C = plan[PL_COLORS]!,
     pair = s.pair,
     sb = cs.bodyState,
     bounds = s.bounds;
@@ -531,7 +630,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
   }
   const o0 = plan[PLAN_HEAD + C]!,
     o1 = plan[PLAN_HEAD + C + 1]!;
-  return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[8]!, strips: plan[9] === 1 };
+  return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[PL_PACKED_ROWS]!, strips: plan[PL_STRIPS] === 1 };
 }
 
 /** Whether this thread may block in Atomics.wait (not a browser's main thread); cached. */
@@ -567,9 +666,9 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
     pool.join(); // the strip plan startStripPlan left on a worker
   }
   const plan = s.plan;
-  const packed = plan[11] === 1;
+  const packed = plan[PL_PACKED] === 1;
   const parts = pool === null ? 1 : pool.threads;
-  const np = packed ? plan[8]! : planRows(cs, buf, s, parts);
+  const np = packed ? plan[PL_PACKED_ROWS]! : planRows(cs, buf, s, parts);
   // Planned from the masses and impulses before the impact stage took its resolved rows out: they stay
   // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
   releaseImpactedRows(buf);
@@ -582,32 +681,32 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   }
   const P = s.params,
     g = world.gravity;
-  plan[0] = st.solverSubsteps;
-  plan[1] = st.solverIterations;
-  plan[2] = st.relaxIterations;
-  plan[5] = cs.solverBodyCount;
-  plan[6] = mayWait() ? 1 : 0;
-  plan[7] = packed ? 0 : parts;
-  P[0] = 1 / hs;
-  for (let k = 0; k < 6; k++) P[1 + k] = soft[k]!;
-  P[7] = push;
-  P[8] = hs;
-  P[9] = g[0]! * hs;
-  P[10] = g[1]! * hs;
-  P[11] = buf.count;
-  P[12] = MAX_COLORS + 1;
-  P[13] = SPIN_MICROSECONDS;
+  plan[PL_SUBSTEPS] = st.solverSubsteps;
+  plan[PL_ITERATIONS] = st.solverIterations;
+  plan[PL_RELAX] = st.relaxIterations;
+  plan[PL_BODIES] = cs.solverBodyCount;
+  plan[PL_MAY_WAIT] = mayWait() ? 1 : 0;
+  plan[PL_PARTS] = packed ? 0 : parts;
+  P[CS_INV_HS] = 1 / hs;
+  for (let k = 0; k < 6; k++) P[CS_SOFT_BIAS + k] = soft[k]!;
+  P[CS_PUSH_SPEED] = push;
+  P[CS_HS] = hs;
+  P[CS_GX_HS] = g[0]! * hs;
+  P[CS_GY_HS] = g[1]! * hs;
+  P[CS_ROWS] = buf.count;
+  P[CS_GROUP_SLOTS] = MAX_COLORS + 1;
+  P[CS_SPIN_US] = SPIN_MICROSECONDS;
   // The relax passes' support rows (solver/support.ts): which way is down, and the cosine past which a row is one.
-  downwardInto(g, P, 14);
-  P[16] = SUPPORT_COS;
-  P[17] = g[0]!;
-  P[18] = g[1]!;
-  P[19] = g[2]!;
-  P[20] = BodyType.Dynamic;
-  P[21] = 1;
+  downwardInto(g, P, CS_DOWN_X);
+  P[CS_SUPPORT_COS] = SUPPORT_COS;
+  P[CS_GX] = g[0]!;
+  P[CS_GY] = g[1]!;
+  P[CS_GZ] = g[2]!;
+  P[CS_DYNAMIC] = BodyType.Dynamic;
+  P[CS_MEASURE_APPROACH] = 1;
   const blocks = solveColoredBlocks2D(plan, buf.count, true);
   if (s.claim.length < blocks) s.claim = grown(s.claim, Math.max(blocks, 2 * s.claim.length));
-  A[29] = s.claim;
+  A[CS_CLAIM] = s.claim;
   const site = 'contactSolverSystem#colors';
   const parallel = pool?.usable() === true && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
@@ -616,10 +715,10 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   s.bar[2] = 0;
   s.claim.fill(0, 0, blocks);
   if (parallel) {
-    plan[3] = pool.threads;
+    plan[PL_THREADS] = pool.threads;
     pool.run('contactSolverSystem', solveColored2D, A, P, pool.threads, null);
   } else {
-    plan[3] = 1;
+    plan[PL_THREADS] = 1;
     solveColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, np);

@@ -31,6 +31,7 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
+import { PL_COLOR_BLOCKS, PL_COLORS, PL_THREADS } from './colored-slots-2d.js';
 import { PACK_STRIDE, PK_NORMAL_MASS, PK_NX, PK_NY } from './contact-pack-2d.js';
 import {
   AP_A,
@@ -394,7 +395,7 @@ export function restitutionColored2D(
   const n = P[0]!,
     iterations = P[3]!,
     spinMs = P[5]! / 1000;
-  const C = plan[4]!;
+  const C = plan[PL_COLORS]!;
   const wait = part !== 0 || P[4] === 1;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
@@ -421,13 +422,13 @@ export function restitutionColored2D(
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
   const claim = A[18] as Int32Array,
-    threads = plan[3]! > 0 ? plan[3]! : 1;
+    threads = plan[PL_THREADS]! > 0 ? plan[PL_THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
     cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
-    const first = c < 0 ? 0 : plan[12 + c]!;
-    const count = c < 0 ? Math.ceil(n / FIRST) : plan[13 + c]! - first;
+    const first = c < 0 ? 0 : plan[PL_COLOR_BLOCKS + c]!;
+    const count = c < 0 ? Math.ceil(n / FIRST) : plan[PL_COLOR_BLOCKS + c + 1]! - first;
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
@@ -476,8 +477,8 @@ export function restitutionColored2D(
  * @category Collision
  */
 export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: number): number {
-  const C = plan[4]!;
-  return Math.ceil(n / 1024) + iterations * (plan[12 + C + 1]! - plan[12]!);
+  const C = plan[PL_COLORS]!;
+  return Math.ceil(n / 1024) + iterations * (plan[PL_COLOR_BLOCKS + C + 1]! - plan[PL_COLOR_BLOCKS]!);
 }
 
 /**

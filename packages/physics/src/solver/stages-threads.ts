@@ -36,6 +36,7 @@ import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type Thread
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { IMPACT_STRIDE } from './body-state-layout.js';
+import { PL_THREADS } from './colored-slots-2d.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
 import {
@@ -397,10 +398,10 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   bar[3] = 0;
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
-    plan[3] = pool.threads;
+    plan[PL_THREADS] = pool.threads;
     pool.run('contactSolverSystem', restitutionColored2D, A, P, pool.threads, null);
   } else {
-    plan[3] = 1;
+    plan[PL_THREADS] = 1;
     restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);

@@ -8,6 +8,26 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W, BX_BASE_X, BX_BASE_Y, BX_STRIDE } from './body-state-layout.js';
+import {
+  SC_BASE,
+  SC_BIN,
+  SC_BIN_ROWS,
+  SC_BIN_STRIP,
+  SC_BINS,
+  SC_BODIES,
+  SC_BODY_EXTRA,
+  SC_BODY_STATE,
+  SC_BODY_TYPE,
+  SC_DYN,
+  SC_IA,
+  SC_IB,
+  SC_NO_BIN,
+  SC_P_BODIES,
+  SC_P_DYNAMIC,
+  SC_P_ROWS,
+  SC_P_STRIPS,
+  SC_STRIP,
+} from './colored-slots-2d.js';
 
 /**
  * Cuts a step's movable solver bodies into `P[2]` strips across the longer axis of their spread, each
@@ -17,37 +37,32 @@ import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W, BX_BA
  * bin (by the row's first movable body), each bin's strip at the rows' quantiles (the strip of the
  * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
- * Its arrays, j = 0 .. 10, are A[b + j] for b = P[6] (0 when they are A's only arrays; the strip plan,
- * solver/strip-plan-kernel.ts, passes them after its own and calls this as a helper): 0 solver state
- * (rows of BS2_STRIDE, body-state-layout.ts), 1 solver extra (rows of BX_STRIDE, body-state-layout.ts), 2 bodyType (Uint8, by entity),
- * 3 the solver bodies' entity ids (Int32, by solver index), 4 dyn (Uint8, out), 5 strip (Uint8, out;
- * 255: not movable), 6 bin (Uint16, out; P[5]: not movable), 7 rows a bin (Int32, out), 8 each bin's
- * strip (Uint8, out), 9 ia, 10 ib (Int32, the rows' solver bodies).
- * P: 0 solver bodies, 1 rows, 2 strips (2 .. 255), 3 bins (<= P[5]), 4 BodyType.Dynamic, 5 the "no bin"
- * mark, 6 b.
+ * A and P: the SC_ slots of solver/colored-slots-2d.ts; the arrays are A[b + slot] for b = P[SC_BASE] (0
+ * when they are A's only arrays; the strip plan, solver/strip-plan-kernel.ts, passes them after its own
+ * and calls this as a helper).
  * Returns 0.
  * @category Collision
  */
 export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
-  const b = P[6]!;
-  const sb = A[b] as Float64Array,
-    ex = A[b + 1] as Float64Array,
-    type = A[b + 2] as Uint8Array,
-    list = A[b + 3] as Int32Array;
-  const dyn = A[b + 4] as Uint8Array,
-    strip = A[b + 5] as Uint8Array,
-    binOf = A[b + 6] as Uint16Array;
-  const hist = A[b + 7] as Int32Array,
-    binStrip = A[b + 8] as Uint8Array;
-  const IA = A[b + 9] as Int32Array,
-    IB = A[b + 10] as Int32Array;
-  const bodies = P[0]!,
-    n = P[1]!,
-    strips = P[2]!,
-    BINS = P[3]!,
-    DYNAMIC = P[4]!,
-    NO_BIN = P[5]!;
+  const b = P[SC_BASE]!;
+  const sb = A[b + SC_BODY_STATE] as Float64Array,
+    ex = A[b + SC_BODY_EXTRA] as Float64Array,
+    type = A[b + SC_BODY_TYPE] as Uint8Array,
+    list = A[b + SC_BODIES] as Int32Array;
+  const dyn = A[b + SC_DYN] as Uint8Array,
+    strip = A[b + SC_STRIP] as Uint8Array,
+    binOf = A[b + SC_BIN] as Uint16Array;
+  const hist = A[b + SC_BIN_ROWS] as Int32Array,
+    binStrip = A[b + SC_BIN_STRIP] as Uint8Array;
+  const IA = A[b + SC_IA] as Int32Array,
+    IB = A[b + SC_IB] as Int32Array;
+  const bodies = P[SC_P_BODIES]!,
+    n = P[SC_P_ROWS]!,
+    strips = P[SC_P_STRIPS]!,
+    BINS = P[SC_BINS]!,
+    DYNAMIC = P[SC_P_DYNAMIC]!,
+    NO_BIN = P[SC_NO_BIN]!;
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver/contact-solver.ts).
   dyn[0] = 0;
   for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === DYNAMIC ? 1 : 0;
