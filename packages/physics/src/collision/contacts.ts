@@ -12,6 +12,7 @@
  */
 
 import { warmStartTable } from '../solver/warm-start-kernel.js';
+import { WS_A, WS_B, WS_FEATURE, WS_KIND, WS_ROWS, WS_SLOT_COUNT, WS_SLOTS } from '../solver/warm-start-slots.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 
 /**
@@ -268,12 +269,25 @@ const tableParams = new Float64Array(2);
  */
 export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): ContactBuffer {
   reserveWarmStartTable(cache, current.count, false);
-  tableArrays.length = 0;
-  tableArrays.push(cache.slots, current.kind, current.a, current.b, current.feature);
-  tableParams[0] = current.count;
-  tableParams[1] = cache.size;
+  warmStartArguments(cache, current, tableArrays, tableParams);
   warmStartTable(tableArrays, tableParams, null, 0, 1);
   return swapWarmStartRows(cache, current);
+}
+
+/**
+ * Fills warmStartTable's arguments (the WS_ slots of solver/warm-start-slots.ts) for the table of
+ * `cache` over the rows of `rows`: `A` is emptied first, `P` needs 2 slots.
+ * @category Collision
+ */
+export function warmStartArguments(cache: WarmStartCache, rows: ContactBuffer, A: KernelArray[], P: Float64Array): void {
+  A.length = 0;
+  A[WS_SLOTS] = cache.slots;
+  A[WS_KIND] = rows.kind;
+  A[WS_A] = rows.a;
+  A[WS_B] = rows.b;
+  A[WS_FEATURE] = rows.feature;
+  P[WS_ROWS] = rows.count;
+  P[WS_SLOT_COUNT] = cache.size;
 }
 
 /**

@@ -1,5 +1,6 @@
 /**
- * The argument slots of the 2D solver's stage kernels (solver/stages-kernel.ts): where each array sits
+ * The argument slots of the 2D solver's stage kernels (solver/stages-kernel.ts: gatherFill2D GF_,
+ * approach2D AP_, finishBodies2D FB_, restitutionColored2D RC_): where each array sits
  * in a kernel's `A` and each number in its `P`. A caller fills the slots by these names and the kernel
  * reads them by the same names. A module of numeric constants only, which every build folds into the
  * code, so the kernels' source text that the workers get stays self-contained (threads/worker-source.ts).
@@ -153,3 +154,55 @@ export const FB_GY = 11;
 export const FB_ROWS = 12;
 /** Solver bodies - 1 (the loop's length). */
 export const FB_BODIES = 13;
+// restitutionColored2D: A.
+/** The packed contact rows (solver/contact-pack-2d.ts), colour by colour. */
+export const RC_PACK = 0;
+/** The coloured solve's plan (Int32, the PL_ slots of solver/colored-slots-2d.ts). */
+export const RC_PLAN = 1;
+/** Counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort, 3 bouncing rows). */
+export const RC_COUNTERS = 2;
+/** The solver body state (rows of BS2_STRIDE). */
+export const RC_BODY_STATE = 3;
+/** Solver index of body A of each contact row (Int32). */
+export const RC_IA = 4;
+/** Solver index of body B (Int32). */
+export const RC_IB = 5;
+/** Contact normal x. */
+export const RC_NX = 6;
+/** Contact normal y. */
+export const RC_NY = 7;
+/** Normal effective mass, kg. */
+export const RC_NORMAL_MASS = 8;
+/** Combined restitution. */
+export const RC_RESTITUTION = 9;
+/** Normal relative velocity, m/s. */
+export const RC_RELATIVE_VELOCITY = 10;
+/** Normal speed at impact, m/s. */
+export const RC_IMPACT_VELOCITY = 11;
+/** Largest normal impulse of a pass, N s. */
+export const RC_MAX_NORMAL_IMPULSE = 12;
+/** Normal impulse delivered over the step, N s. */
+export const RC_TOTAL_NORMAL_IMPULSE = 13;
+/** The impact stage's impulse, N s. */
+export const RC_IMPULSE = 14;
+/** Block j is pack rows bounds[j] .. bounds[j + 1] - 1 (Int32). */
+export const RC_BOUNDS = 15;
+/** Two a pack row: its bodies' solver state offsets (Int32). */
+export const RC_PAIR = 16;
+/** A pack row's row in the contact buffer (Int32). */
+export const RC_ROW = 17;
+/** A flag a block, numbered across the units (Int32, 0 on entry; restitutionBlocks2D of them). */
+export const RC_CLAIM = 18;
+// restitutionColored2D: P.
+/** Contact rows. */
+export const RC_ROWS = 0;
+/** restitutionThreshold, m/s. */
+export const RC_THRESHOLD = 1;
+/** elasticRestitutionThreshold, m/s. */
+export const RC_ELASTIC_THRESHOLD = 2;
+/** restitutionIterations. */
+export const RC_ITERATIONS = 3;
+/** 1: the calling thread may block in Atomics.wait. */
+export const RC_MAY_WAIT = 4;
+/** How long a thread spins before it blocks, microseconds. */
+export const RC_SPIN_US = 5;

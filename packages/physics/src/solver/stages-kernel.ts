@@ -101,6 +101,31 @@ import {
   GF_VX,
   GF_VY,
   GF_WZ,
+  RC_BODY_STATE,
+  RC_BOUNDS,
+  RC_CLAIM,
+  RC_COUNTERS,
+  RC_ELASTIC_THRESHOLD,
+  RC_IA,
+  RC_IB,
+  RC_IMPACT_VELOCITY,
+  RC_IMPULSE,
+  RC_ITERATIONS,
+  RC_MAX_NORMAL_IMPULSE,
+  RC_MAY_WAIT,
+  RC_NORMAL_MASS,
+  RC_NX,
+  RC_NY,
+  RC_PACK,
+  RC_PAIR,
+  RC_PLAN,
+  RC_RELATIVE_VELOCITY,
+  RC_RESTITUTION,
+  RC_ROW,
+  RC_ROWS,
+  RC_SPIN_US,
+  RC_THRESHOLD,
+  RC_TOTAL_NORMAL_IMPULSE,
 } from './stage-slots-2d.js';
 
 /**
@@ -367,16 +392,7 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
  * the earlier units is done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
- * A: 0 pack (solver/contact-pack-2d.ts rows, colour by colour), 1 plan (Int32, solver/coloring-kernel.ts: 4
- * threads running the kernel (parts 0 .. plan[3] - 1), 4 colours C, 12 + c colour c's first block, c =
- * 0 .. C + 1), 2 counters (Int32, 0 on entry: 0 unused, 1 blocks done, 2 abort, 3 bouncing rows), 3 solver state (rows of 8), 4 ia, 5 ib (Int32),
- * 6 nx, 7 ny, 8 normalMass, 9 restitution, 10 relativeVelocity, 11 impactVelocity, 12
- * maxNormalImpulse, 13 totalNormalImpulse, 14 impulse, 15 bounds (Int32: block j is pack rows
- * bounds[j] .. bounds[j + 1] - 1), 16 pair (Int32, two a pack row: its bodies' solver state
- * offsets), 17 row (Int32, a pack row: its row in the contact buffer), 18 claim (Int32, 0 on entry:
- * a flag a block, numbered across the units; restitutionBlocks2D of them). P: 0 contact rows, 1 restitutionThreshold (m/s), 2
- * elasticRestitutionThreshold (m/s), 3 restitutionIterations, 4 the calling thread may block in
- * Atomics.wait (1), 5 spin before blocking (microseconds). Returns 0 (-1 if another thread failed and
+ * A and P: the RC_ slots of solver/stage-slots-2d.ts. Returns 0 (-1 if another thread failed and
  * this one stopped).
  * @category Collision
  */
@@ -389,14 +405,14 @@ export function restitutionColored2D(
   part: number,
   H: readonly KernelHelper[],
 ): number {
-  const plan = A[1] as Int32Array,
-    bar = A[2] as Int32Array,
-    bounds = A[15] as Int32Array;
-  const n = P[0]!,
-    iterations = P[3]!,
-    spinMs = P[5]! / 1000;
+  const plan = A[RC_PLAN] as Int32Array,
+    bar = A[RC_COUNTERS] as Int32Array,
+    bounds = A[RC_BOUNDS] as Int32Array;
+  const n = P[RC_ROWS]!,
+    iterations = P[RC_ITERATIONS]!,
+    spinMs = P[RC_SPIN_US]! / 1000;
   const C = plan[PL_COLORS]!;
-  const wait = part !== 0 || P[4] === 1;
+  const wait = part !== 0 || P[RC_MAY_WAIT] === 1;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
@@ -421,7 +437,7 @@ export function restitutionColored2D(
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
-  const claim = A[18] as Int32Array,
+  const claim = A[RC_CLAIM] as Int32Array,
     threads = plan[PL_THREADS]! > 0 ? plan[PL_THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
     cursor = new Int32Array(2);
@@ -486,19 +502,19 @@ export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: num
  * @category Collision
  */
 export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
-  const sb = A[3] as Float64Array,
-    IA = A[4] as Int32Array,
-    IB = A[5] as Int32Array,
-    NX = A[6] as Float64Array,
-    NY = A[7] as Float64Array;
-  const NM = A[8] as Float64Array,
-    E = A[9] as Float64Array,
-    RV = A[10] as Float64Array,
-    IV = A[11] as Float64Array;
-  const MAXN = A[12] as Float64Array,
-    TOT = A[13] as Float64Array;
-  const threshold = P[1]!,
-    elasticThreshold = P[2]!;
+  const sb = A[RC_BODY_STATE] as Float64Array,
+    IA = A[RC_IA] as Int32Array,
+    IB = A[RC_IB] as Int32Array,
+    NX = A[RC_NX] as Float64Array,
+    NY = A[RC_NY] as Float64Array;
+  const NM = A[RC_NORMAL_MASS] as Float64Array,
+    E = A[RC_RESTITUTION] as Float64Array,
+    RV = A[RC_RELATIVE_VELOCITY] as Float64Array,
+    IV = A[RC_IMPACT_VELOCITY] as Float64Array;
+  const MAXN = A[RC_MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[RC_TOTAL_NORMAL_IMPULSE] as Float64Array;
+  const threshold = P[RC_THRESHOLD]!,
+    elasticThreshold = P[RC_ELASTIC_THRESHOLD]!;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     const e = E[i]!;
@@ -525,14 +541,14 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
  * @category Collision
  */
 export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
-  const pk = A[0] as Float64Array,
-    sb = A[3] as Float64Array,
-    RV = A[10] as Float64Array;
-  const MAXN = A[12] as Float64Array,
-    TOT = A[13] as Float64Array,
-    IMP = A[14] as Float64Array;
-  const pair = A[16] as Int32Array,
-    row = A[17] as Int32Array;
+  const pk = A[RC_PACK] as Float64Array,
+    sb = A[RC_BODY_STATE] as Float64Array,
+    RV = A[RC_RELATIVE_VELOCITY] as Float64Array;
+  const MAXN = A[RC_MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[RC_TOTAL_NORMAL_IMPULSE] as Float64Array,
+    IMP = A[RC_IMPULSE] as Float64Array;
+  const pair = A[RC_PAIR] as Int32Array,
+    row = A[RC_ROW] as Int32Array;
   for (let k = r0; k < r1; k++) {
     const o = k * PACK_STRIDE;
     const i = row[k]!;

@@ -27,7 +27,7 @@
  * otherwise its kernel runs inline over every body or row.
  */
 
-import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows } from '../collision/contacts.js';
+import { type ContactBuffer, reserveWarmStartTable, swapWarmStartRows, warmStartArguments } from '../collision/contacts.js';
 import { BodyType, type CollisionState } from '../collision/state.js';
 import { nowMs } from '../threads/adaptive.js';
 import type { Kernel, KernelArray } from '../threads/kernel-types.js';
@@ -96,6 +96,31 @@ import {
   GF_VX,
   GF_VY,
   GF_WZ,
+  RC_BODY_STATE,
+  RC_BOUNDS,
+  RC_CLAIM,
+  RC_COUNTERS,
+  RC_ELASTIC_THRESHOLD,
+  RC_IA,
+  RC_IB,
+  RC_IMPACT_VELOCITY,
+  RC_IMPULSE,
+  RC_ITERATIONS,
+  RC_MAX_NORMAL_IMPULSE,
+  RC_MAY_WAIT,
+  RC_NORMAL_MASS,
+  RC_NX,
+  RC_NY,
+  RC_PACK,
+  RC_PAIR,
+  RC_PLAN,
+  RC_RELATIVE_VELOCITY,
+  RC_RESTITUTION,
+  RC_ROW,
+  RC_ROWS,
+  RC_SPIN_US,
+  RC_THRESHOLD,
+  RC_TOTAL_NORMAL_IMPULSE,
 } from './stage-slots-2d.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
@@ -260,10 +285,7 @@ export function storeWarmStartOnThreads(world: PhysicsWorld, buf: ContactBuffer)
   const s = scratch(world),
     A = s.arrays,
     P = s.params;
-  A.length = 0;
-  A.push(cache.slots, buf.kind, buf.a, buf.b, buf.feature);
-  P[0] = n;
-  P[1] = cache.size;
+  warmStartArguments(cache, buf, A, P);
   pool.start('contactSolverSystem', warmStartTable, A, P, 1);
   stageThreading.runs++;
   return swapWarmStartRows(cache, buf);
@@ -360,33 +382,31 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
   if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
-  A.push(
-    colored.pack,
-    colored.plan,
-    colored.bar,
-    cs.bodyState,
-    buf.ia,
-    buf.ib,
-    buf.nx,
-    buf.ny,
-    buf.normalMass,
-    buf.restitution,
-    buf.relativeVelocity,
-    buf.impactVelocity,
-    buf.maxNormalImpulse,
-    buf.totalNormalImpulse,
-    buf.impulse,
-    colored.bounds,
-    colored.pair,
-    colored.row,
-    colored.claim,
-  );
-  P[0] = buf.count;
-  P[1] = st.restitutionThreshold;
-  P[2] = st.elasticRestitutionThreshold;
-  P[3] = st.restitutionIterations;
-  P[4] = callerMayWait() ? 1 : 0;
-  P[5] = SPIN_MICROSECONDS;
+  A[RC_PACK] = colored.pack;
+  A[RC_PLAN] = colored.plan;
+  A[RC_COUNTERS] = colored.bar;
+  A[RC_BODY_STATE] = cs.bodyState;
+  A[RC_IA] = buf.ia;
+  A[RC_IB] = buf.ib;
+  A[RC_NX] = buf.nx;
+  A[RC_NY] = buf.ny;
+  A[RC_NORMAL_MASS] = buf.normalMass;
+  A[RC_RESTITUTION] = buf.restitution;
+  A[RC_RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[RC_IMPACT_VELOCITY] = buf.impactVelocity;
+  A[RC_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[RC_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[RC_IMPULSE] = buf.impulse;
+  A[RC_BOUNDS] = colored.bounds;
+  A[RC_PAIR] = colored.pair;
+  A[RC_ROW] = colored.row;
+  A[RC_CLAIM] = colored.claim;
+  P[RC_ROWS] = buf.count;
+  P[RC_THRESHOLD] = st.restitutionThreshold;
+  P[RC_ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
+  P[RC_ITERATIONS] = st.restitutionIterations;
+  P[RC_MAY_WAIT] = callerMayWait() ? 1 : 0;
+  P[RC_SPIN_US] = SPIN_MICROSECONDS;
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
