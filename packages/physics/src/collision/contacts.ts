@@ -11,8 +11,8 @@
  * contacts with the boundary box, static segments and static balls.
  */
 
+import * as WARM from '../solver/slots/warm-start.js';
 import { warmStartTable } from '../solver/warm-start-kernel.js';
-import { WS_A, WS_B, WS_FEATURE, WS_KIND, WS_ROWS, WS_SLOT_COUNT, WS_SLOTS } from '../solver/warm-start-slots.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 
 /**
@@ -275,19 +275,19 @@ export function storeWarmStart(cache: WarmStartCache, current: ContactBuffer): C
 }
 
 /**
- * Fills warmStartTable's arguments (the WS_ slots of solver/warm-start-slots.ts) for the table of
+ * Fills warmStartTable's arguments (the WARM slots of solver/slots/warm-start.ts) for the table of
  * `cache` over the rows of `rows`: `A` is emptied first, `P` needs 2 slots.
  * @category Collision
  */
 export function warmStartArguments(cache: WarmStartCache, rows: ContactBuffer, A: KernelArray[], P: Float64Array): void {
   A.length = 0;
-  A[WS_SLOTS] = cache.slots;
-  A[WS_KIND] = rows.kind;
-  A[WS_A] = rows.a;
-  A[WS_B] = rows.b;
-  A[WS_FEATURE] = rows.feature;
-  P[WS_ROWS] = rows.count;
-  P[WS_SLOT_COUNT] = cache.size;
+  A[WARM.SLOTS] = cache.slots;
+  A[WARM.KIND] = rows.kind;
+  A[WARM.A] = rows.a;
+  A[WARM.B] = rows.b;
+  A[WARM.FEATURE] = rows.feature;
+  P[WARM.ROWS] = rows.count;
+  P[WARM.SLOT_COUNT] = cache.size;
 }
 
 /**

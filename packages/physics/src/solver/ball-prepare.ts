@@ -14,59 +14,7 @@ import type { PhysicsWorld } from '../world/options.js';
 import { BS3_INV_INERTIA, BS3_INV_MASS, BS3_STRIDE, BS3_VX, BS3_VY, BS3_VZ, BS3_WX, BS3_WY, BS3_WZ } from './body-state-layout.js';
 import { shareContactBuffer } from './coloring.js';
 import { prepareContacts2D } from './prepare-contacts-kernel.js';
-import {
-  PC_A,
-  PC_B,
-  PC_BALL,
-  PC_BODY_STATE,
-  PC_BOUNDARY,
-  PC_BOX_FRICTION,
-  PC_BOX_RESTITUTION,
-  PC_BOX_STATIC_FRICTION,
-  PC_FEATURE,
-  PC_FRICTION,
-  PC_FRICTION_BOUND,
-  PC_FRICTION_OF,
-  PC_IA,
-  PC_IB,
-  PC_IMPULSE,
-  PC_KIND,
-  PC_MAX_NORMAL_IMPULSE,
-  PC_NORMAL_IMPULSE,
-  PC_NORMAL_MASS,
-  PC_NX,
-  PC_NY,
-  PC_PREV_A,
-  PC_PREV_B,
-  PC_PREV_FEATURE,
-  PC_PREV_KIND,
-  PC_PREV_NORMAL_IMPULSE,
-  PC_PREV_ROWS,
-  PC_PREV_STAMP_A,
-  PC_PREV_STAMP_B,
-  PC_PREV_TANGENT_IMPULSE_1,
-  PC_PREV_TANGENT_IMPULSE_2,
-  PC_RA,
-  PC_RB,
-  PC_RELATIVE_VELOCITY,
-  PC_RESTITUTION,
-  PC_RESTITUTION_OF,
-  PC_RIGID_PARTNER,
-  PC_SLOT_COUNT,
-  PC_SLOTS,
-  PC_SPAWN_STAMP,
-  PC_STAMP_A,
-  PC_STAMP_B,
-  PC_STATIC_FRICTION_OF,
-  PC_STICK_SPEED,
-  PC_T1X,
-  PC_T1Y,
-  PC_T1Z,
-  PC_TANGENT_IMPULSE_1,
-  PC_TANGENT_IMPULSE_2,
-  PC_TANGENT_MASS,
-  PC_TOTAL_NORMAL_IMPULSE,
-} from './prepare-slots-2d.js';
+import * as PREPARE from './slots/prepare-contacts.js';
 import { approach2DStage } from './stages-threads.js';
 
 /**
@@ -117,58 +65,58 @@ function prepare2DStage(world: PhysicsWorld, buf: ContactBuffer, stick: number):
     box = cs.boundary;
   const A = S.arrays;
   A.length = 0;
-  A[PC_A] = buf.a;
-  A[PC_B] = buf.b;
-  A[PC_IA] = buf.ia;
-  A[PC_IB] = buf.ib;
-  A[PC_KIND] = buf.kind;
-  A[PC_FEATURE] = buf.feature;
-  A[PC_NX] = buf.nx;
-  A[PC_NY] = buf.ny;
-  A[PC_RA] = buf.ra;
-  A[PC_RB] = buf.rb;
-  A[PC_BODY_STATE] = cs.bodyState;
-  A[PC_RESTITUTION_OF] = M.restitution;
-  A[PC_FRICTION_OF] = M.friction;
-  A[PC_STATIC_FRICTION_OF] = M.staticFriction;
-  A[PC_SPAWN_STAMP] = stamp;
-  A[PC_NORMAL_MASS] = buf.normalMass;
-  A[PC_TANGENT_MASS] = buf.tangentMass;
-  A[PC_RIGID_PARTNER] = buf.rigidPartner;
-  A[PC_T1X] = buf.t1x;
-  A[PC_T1Y] = buf.t1y;
-  A[PC_T1Z] = buf.t1z;
-  A[PC_RESTITUTION] = buf.restitution;
-  A[PC_FRICTION] = buf.friction;
-  A[PC_FRICTION_BOUND] = buf.frictionBound;
-  A[PC_RELATIVE_VELOCITY] = buf.relativeVelocity;
-  A[PC_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
-  A[PC_IMPULSE] = buf.impulse;
-  A[PC_NORMAL_IMPULSE] = buf.normalImpulse;
-  A[PC_TANGENT_IMPULSE_1] = buf.tangentImpulse1;
-  A[PC_TANGENT_IMPULSE_2] = buf.tangentImpulse2;
-  A[PC_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
-  A[PC_STAMP_A] = buf.stampA;
-  A[PC_STAMP_B] = buf.stampB;
-  A[PC_PREV_KIND] = prev.kind;
-  A[PC_PREV_A] = prev.a;
-  A[PC_PREV_B] = prev.b;
-  A[PC_PREV_FEATURE] = prev.feature;
-  A[PC_PREV_STAMP_A] = prev.stampA;
-  A[PC_PREV_STAMP_B] = prev.stampB;
-  A[PC_PREV_NORMAL_IMPULSE] = prev.normalImpulse;
-  A[PC_PREV_TANGENT_IMPULSE_1] = prev.tangentImpulse1;
-  A[PC_PREV_TANGENT_IMPULSE_2] = prev.tangentImpulse2;
-  A[PC_SLOTS] = cache.slots;
+  A[PREPARE.A] = buf.a;
+  A[PREPARE.B] = buf.b;
+  A[PREPARE.IA] = buf.ia;
+  A[PREPARE.IB] = buf.ib;
+  A[PREPARE.KIND] = buf.kind;
+  A[PREPARE.FEATURE] = buf.feature;
+  A[PREPARE.NX] = buf.nx;
+  A[PREPARE.NY] = buf.ny;
+  A[PREPARE.RA] = buf.ra;
+  A[PREPARE.RB] = buf.rb;
+  A[PREPARE.BODY_STATE] = cs.bodyState;
+  A[PREPARE.RESTITUTION_OF] = M.restitution;
+  A[PREPARE.FRICTION_OF] = M.friction;
+  A[PREPARE.STATIC_FRICTION_OF] = M.staticFriction;
+  A[PREPARE.SPAWN_STAMP] = stamp;
+  A[PREPARE.NORMAL_MASS] = buf.normalMass;
+  A[PREPARE.TANGENT_MASS] = buf.tangentMass;
+  A[PREPARE.RIGID_PARTNER] = buf.rigidPartner;
+  A[PREPARE.T1X] = buf.t1x;
+  A[PREPARE.T1Y] = buf.t1y;
+  A[PREPARE.T1Z] = buf.t1z;
+  A[PREPARE.RESTITUTION] = buf.restitution;
+  A[PREPARE.FRICTION] = buf.friction;
+  A[PREPARE.FRICTION_BOUND] = buf.frictionBound;
+  A[PREPARE.RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[PREPARE.TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[PREPARE.IMPULSE] = buf.impulse;
+  A[PREPARE.NORMAL_IMPULSE] = buf.normalImpulse;
+  A[PREPARE.TANGENT_IMPULSE_1] = buf.tangentImpulse1;
+  A[PREPARE.TANGENT_IMPULSE_2] = buf.tangentImpulse2;
+  A[PREPARE.MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[PREPARE.STAMP_A] = buf.stampA;
+  A[PREPARE.STAMP_B] = buf.stampB;
+  A[PREPARE.PREV_KIND] = prev.kind;
+  A[PREPARE.PREV_A] = prev.a;
+  A[PREPARE.PREV_B] = prev.b;
+  A[PREPARE.PREV_FEATURE] = prev.feature;
+  A[PREPARE.PREV_STAMP_A] = prev.stampA;
+  A[PREPARE.PREV_STAMP_B] = prev.stampB;
+  A[PREPARE.PREV_NORMAL_IMPULSE] = prev.normalImpulse;
+  A[PREPARE.PREV_TANGENT_IMPULSE_1] = prev.tangentImpulse1;
+  A[PREPARE.PREV_TANGENT_IMPULSE_2] = prev.tangentImpulse2;
+  A[PREPARE.SLOTS] = cache.slots;
   const P = S.params;
-  P[PC_STICK_SPEED] = stick;
-  P[PC_BOX_RESTITUTION] = box.restitution;
-  P[PC_BOX_FRICTION] = box.friction;
-  P[PC_BOX_STATIC_FRICTION] = box.staticFriction;
-  P[PC_PREV_ROWS] = cache.size === 0 ? 0 : prev.count;
-  P[PC_SLOT_COUNT] = cache.size;
-  P[PC_BALL] = ContactKind.Ball;
-  P[PC_BOUNDARY] = ContactKind.Boundary;
+  P[PREPARE.STICK_SPEED] = stick;
+  P[PREPARE.BOX_RESTITUTION] = box.restitution;
+  P[PREPARE.BOX_FRICTION] = box.friction;
+  P[PREPARE.BOX_STATIC_FRICTION] = box.staticFriction;
+  P[PREPARE.PREV_ROWS] = cache.size === 0 ? 0 : prev.count;
+  P[PREPARE.SLOT_COUNT] = cache.size;
+  P[PREPARE.BALL] = ContactKind.Ball;
+  P[PREPARE.BOUNDARY] = ContactKind.Boundary;
   if (pool !== null && runOnPool(pool, 'contactSolverSystem', prepareContacts2D, A, P, n, null, PREPARE_MIN_PER_THREAD) !== null) return;
   prepareContacts2D(A, P, null, 0, n);
 }

@@ -20,73 +20,6 @@ import {
   BX_STRIDE,
 } from './body-state-layout.js';
 import {
-  CS_APPROACH,
-  CS_BODY_BOUNDS,
-  CS_BODY_EXTRA,
-  CS_BODY_ORDER,
-  CS_BODY_STATE,
-  CS_BOUNDS,
-  CS_CLAIM,
-  CS_COUNTERS,
-  CS_DOWN_X,
-  CS_DOWN_Y,
-  CS_DYN,
-  CS_DYNAMIC,
-  CS_FRICTION_BOUND,
-  CS_GROUP,
-  CS_GROUP_SLOTS,
-  CS_GX,
-  CS_GX_HS,
-  CS_GY,
-  CS_GY_HS,
-  CS_GZ,
-  CS_HS,
-  CS_IA,
-  CS_IB,
-  CS_INV_HS,
-  CS_MAX_NORMAL_IMPULSE,
-  CS_MEASURE_APPROACH,
-  CS_NORMAL_IMPULSE,
-  CS_NORMAL_MASS,
-  CS_NX,
-  CS_NY,
-  CS_OFFSETS,
-  CS_PACK,
-  CS_PAIR,
-  CS_PLAN,
-  CS_PUSH_SPEED,
-  CS_RA,
-  CS_RB,
-  CS_RIGID_BIAS,
-  CS_RIGID_IMPULSE,
-  CS_RIGID_MASS,
-  CS_RIGID_PARTNER,
-  CS_ROW,
-  CS_ROWS,
-  CS_SEPARATION,
-  CS_SLOT,
-  CS_SOFT_BIAS,
-  CS_SOFT_IMPULSE,
-  CS_SOFT_MASS,
-  CS_SPIN_US,
-  CS_SUPPORT_COS,
-  CS_TANGENT_IMPULSE,
-  CS_TANGENT_MASS,
-  CS_TOT,
-  CS_TOTAL_NORMAL_IMPULSE,
-  PL_BODIES,
-  PL_COLOR_BLOCKS,
-  PL_COLORS,
-  PL_ITERATIONS,
-  PL_MAY_WAIT,
-  PL_PACKED_ROWS,
-  PL_PARTS,
-  PL_RELAX,
-  PL_STRIPS,
-  PL_SUBSTEPS,
-  PL_THREADS,
-} from './colored-slots-2d.js';
-import {
   PACK_STRIDE,
   PK_A_FIXED,
   PK_FRICTION,
@@ -101,7 +34,9 @@ import {
   PK_TANGENT_IMPULSE,
   PK_TANGENT_MASS,
 } from './contact-pack-2d.js';
-import { AP_BASE, AP_DYNAMIC, AP_GX, AP_GY, AP_GZ } from './stage-slots-2d.js';
+import * as APPROACH from './slots/approach.js';
+import * as PLAN from './slots/colored-plan.js';
+import * as SOLVE from './slots/colored-solve.js';
 import type { approach2D } from './stages-kernel.js';
 
 /**
@@ -109,7 +44,7 @@ import type { approach2D } from './stages-kernel.js';
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
  * the contact buffer's rows (solver/contact-pack-2d.ts layout) group by group into the pack (one block a
  * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
- * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[CS_MEASURE_APPROACH] = 1), then each
+ * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[SOLVE.MEASURE_APPROACH] = 1), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
  * the buffer (normal, tangent, largest pass impulse, delivered total). Threads
@@ -122,11 +57,12 @@ import type { approach2D } from './stages-kernel.js';
  * instead of as units of their own: gravity before a block's warm start, positions before its first
  * relax pass (when there is one), each block for its strip pair's bodies (`bodyOrder` from
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
- * touches. A thread that finds the next unit not ready spins for up to P[CS_SPIN_US] microseconds, then
+ * touches. A thread that finds the next unit not ready spins for up to P[SOLVE.SPIN_US] microseconds, then
  * blocks in Atomics.wait (a browser's main thread, which may not block, spins on).
- * A and P: the CS_ slots of solver/colored-slots-2d.ts, the plan at A[CS_PLAN] its PL_ slots, and
- * approach2D's arrays from A[CS_APPROACH] (measureApproach of the buffer's rows, run as the unit after
- * the packing when P[CS_MEASURE_APPROACH] = 1); the parts running are 0 .. plan[PL_THREADS] - 1.
+ * A and P: the SOLVE slots (solver/slots/colored-solve.ts), the plan at A[SOLVE.PLAN] its PLAN slots
+ * (solver/slots/colored-plan.ts), and
+ * approach2D's arrays from A[SOLVE.APPROACH] (measureApproach of the buffer's rows, run as the unit after
+ * the packing when P[SOLVE.MEASURE_APPROACH] = 1); the parts running are 0 .. plan[PLAN.THREADS] - 1.
  * The arithmetic of each row and body is
  * that of solver/contact-solver.ts's buffer-order loops (solve2D, warmStart2D, the body stages), with
  * the support rows of the relax passes for frictionless rows only (solver/support.ts: a frictionless
@@ -144,27 +80,27 @@ export function solveColored2D(
   part: number,
   H: readonly KernelHelper[],
 ): number {
-  const pk = A[CS_PACK] as Float64Array,
-    sb = A[CS_BODY_STATE] as Float64Array,
-    ex = A[CS_BODY_EXTRA] as Float64Array,
-    dyn = A[CS_DYN] as Uint8Array;
-  const plan = A[CS_PLAN] as Int32Array,
-    bar = A[CS_COUNTERS] as Int32Array;
-  const substeps = plan[PL_SUBSTEPS]!,
-    iters = plan[PL_ITERATIONS]!,
-    relax = plan[PL_RELAX]!,
-    C = plan[PL_COLORS]!,
-    nb = plan[PL_BODIES]!,
-    parts = plan[PL_PARTS]!;
-  const np = plan[PL_PACKED_ROWS]!,
-    fused = plan[PL_STRIPS] === 1;
-  const wait = part !== 0 || plan[PL_MAY_WAIT] === 1;
-  const bounds = A[CS_BOUNDS] as Int32Array,
-    order = A[CS_BODY_ORDER] as Int32Array,
-    bodyBounds = A[CS_BODY_BOUNDS] as Int32Array,
-    pair = A[CS_PAIR] as Int32Array;
-  const tot = A[CS_TOT] as Float64Array;
-  const spinMs = P[CS_SPIN_US]! / 1000;
+  const pk = A[SOLVE.PACK] as Float64Array,
+    sb = A[SOLVE.BODY_STATE] as Float64Array,
+    ex = A[SOLVE.BODY_EXTRA] as Float64Array,
+    dyn = A[SOLVE.DYN] as Uint8Array;
+  const plan = A[SOLVE.PLAN] as Int32Array,
+    bar = A[SOLVE.COUNTERS] as Int32Array;
+  const substeps = plan[PLAN.SUBSTEPS]!,
+    iters = plan[PLAN.ITERATIONS]!,
+    relax = plan[PLAN.RELAX]!,
+    C = plan[PLAN.COLORS]!,
+    nb = plan[PLAN.BODIES]!,
+    parts = plan[PLAN.PARTS]!;
+  const np = plan[PLAN.PACKED_ROWS]!,
+    fused = plan[PLAN.STRIPS] === 1;
+  const wait = part !== 0 || plan[PLAN.MAY_WAIT] === 1;
+  const bounds = A[SOLVE.BOUNDS] as Int32Array,
+    order = A[SOLVE.BODY_ORDER] as Int32Array,
+    bodyBounds = A[SOLVE.BODY_BOUNDS] as Int32Array,
+    pair = A[SOLVE.PAIR] as Int32Array;
+  const tot = A[SOLVE.TOT] as Float64Array;
+  const spinMs = P[SOLVE.SPIN_US]! / 1000;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   // The blocks' loops, each a function of its own (KERNEL_HELPERS, passed in as H): called thousands
   // of times a step, V8 compiles them whole, with every branch's type feedback. Inline in this
@@ -177,17 +113,17 @@ export function solveColored2D(
   const bodyStage = H[2] as typeof coloredBodies2D,
     rowPass = H[3] as typeof coloredRows2D;
   const approachRows = H[12] as typeof approach2D;
-  // The approach speeds' blocks (when P[CS_MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
+  // The approach speeds' blocks (when P[SOLVE.MEASURE_APPROACH] = 1), of APPROACH_ROWS buffer rows (as solveColoredBlocks2D),
   // with approach2D's parameters: gravity, BodyType.Dynamic and where its arrays start in A (31).
   const APPROACH_ROWS = 2048,
-    rows = P[CS_ROWS]!,
-    approachBlocks = P[CS_MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
+    rows = P[SOLVE.ROWS]!,
+    approachBlocks = P[SOLVE.MEASURE_APPROACH] === 1 ? Math.ceil(rows / APPROACH_ROWS) : 0;
   const approachParams = new Float64Array(5);
-  approachParams[AP_GX] = P[CS_GX]!;
-  approachParams[AP_GY] = P[CS_GY]!;
-  approachParams[AP_GZ] = P[CS_GZ]!;
-  approachParams[AP_DYNAMIC] = P[CS_DYNAMIC]!;
-  approachParams[AP_BASE] = CS_APPROACH;
+  approachParams[APPROACH.GX] = P[SOLVE.GX]!;
+  approachParams[APPROACH.GY] = P[SOLVE.GY]!;
+  approachParams[APPROACH.GZ] = P[SOLVE.GZ]!;
+  approachParams[APPROACH.DYNAMIC] = P[SOLVE.DYNAMIC]!;
+  approachParams[APPROACH.BASE] = SOLVE.APPROACH;
   // Rows a block of the unpacking, bodies a block of a body stage.
   const RB_ = 256,
     BB = 1024;
@@ -203,11 +139,11 @@ export function solveColored2D(
   // unpacking. Blocks are numbered across the units in that order (claim[b] for block b); bar[1]
   // counts finished blocks, so a unit starts once bar[1] reaches its first block.
   const units = 2 + substeps * (2 + (1 + iters + relax) * (C + 1)) + 1;
-  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[PL_THREADS])
+  // Blocks are claimed by flags (claimBlock, threads/block-claim.ts), each thread (`part` of plan[PLAN.THREADS])
   // from its own share of a unit first: with strips, block j of either colour is strip pair j's, so a
   // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
-  const claim = A[CS_CLAIM] as Int32Array,
-    threads = plan[PL_THREADS]! > 0 ? plan[PL_THREADS]! : 1;
+  const claim = A[SOLVE.CLAIM] as Int32Array,
+    threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
     cursor = new Int32Array(2);
   let base = 0,
@@ -234,8 +170,8 @@ export function solveColored2D(
         count = stage === 0 ? gravityUnits : positionUnits;
       } else {
         kind = 3;
-        first = plan[PL_COLOR_BLOCKS + u]!;
-        count = plan[PL_COLOR_BLOCKS + u + 1]! - first;
+        first = plan[PLAN.COLOR_BLOCKS + u]!;
+        count = plan[PLAN.COLOR_BLOCKS + u + 1]! - first;
       }
     }
     const end = base + count;
@@ -319,22 +255,22 @@ export function solveColored2D(
 
 /**
  * The blocks of every unit of solveColored2D for `plan` (its layout, the colours' first blocks
- * filled), over `rows` buffer rows (its P[CS_ROWS]), measuring the approach speeds if `approach` (its P[CS_MEASURE_APPROACH] = 1):
+ * filled), over `rows` buffer rows (its P[SOLVE.ROWS]), measuring the approach speeds if `approach` (its P[SOLVE.MEASURE_APPROACH] = 1):
  * the size its claim array needs.
  * @category Collision
  */
 export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: boolean): number {
-  const substeps = plan[PL_SUBSTEPS]!,
-    iters = plan[PL_ITERATIONS]!,
-    relax = plan[PL_RELAX]!,
-    C = plan[PL_COLORS]!,
-    nb = plan[PL_BODIES]!,
-    parts = plan[PL_PARTS]!;
-  const np = plan[PL_PACKED_ROWS]!,
-    fused = plan[PL_STRIPS] === 1;
+  const substeps = plan[PLAN.SUBSTEPS]!,
+    iters = plan[PLAN.ITERATIONS]!,
+    relax = plan[PLAN.RELAX]!,
+    C = plan[PLAN.COLORS]!,
+    nb = plan[PLAN.BODIES]!,
+    parts = plan[PLAN.PARTS]!;
+  const np = plan[PLAN.PACKED_ROWS]!,
+    fused = plan[PLAN.STRIPS] === 1;
   const bodyUnits = Math.ceil((nb - 1) / 1024);
   const bodies = (fused ? 0 : bodyUnits) + (fused && relax > 0 ? 0 : bodyUnits);
-  const colorBlocks = plan[PL_COLOR_BLOCKS + C + 1]! - plan[PL_COLOR_BLOCKS]!;
+  const colorBlocks = plan[PLAN.COLOR_BLOCKS + C + 1]! - plan[PLAN.COLOR_BLOCKS]!;
   const approachBlocks = approach ? Math.ceil(rows / 2048) : 0;
   return parts + approachBlocks + substeps * (bodies + (1 + iters + relax) * colorBlocks) + Math.ceil(np / 256);
 }
@@ -351,28 +287,28 @@ export function solveColoredBlocks2D(plan: Int32Array, rows: number, approach: b
  * @category Collision
  */
 export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, parts: number): void {
-  const pk = A[CS_PACK] as Float64Array,
-    color = A[CS_GROUP] as Uint8Array,
-    offsets = A[CS_OFFSETS] as Int32Array;
-  const IA = A[CS_IA] as Int32Array,
-    IB = A[CS_IB] as Int32Array,
-    NX = A[CS_NX] as Float64Array,
-    NY = A[CS_NY] as Float64Array;
-  const RA = A[CS_RA] as Float64Array,
-    RB = A[CS_RB] as Float64Array,
-    S0 = A[CS_SEPARATION] as Float64Array,
-    NM = A[CS_NORMAL_MASS] as Float64Array;
-  const TM = A[CS_TANGENT_MASS] as Float64Array,
-    FB = A[CS_FRICTION_BOUND] as Float64Array,
-    LN = A[CS_NORMAL_IMPULSE] as Float64Array,
-    LT = A[CS_TANGENT_IMPULSE] as Float64Array;
-  const RP = A[CS_RIGID_PARTNER] as Uint8Array,
-    pair = A[CS_PAIR] as Int32Array,
-    tot = A[CS_TOT] as Float64Array,
-    row = A[CS_ROW] as Int32Array;
-  const slot = A[CS_SLOT] as Int32Array;
-  const rows = P[CS_ROWS]!,
-    W = P[CS_GROUP_SLOTS]!;
+  const pk = A[SOLVE.PACK] as Float64Array,
+    color = A[SOLVE.GROUP] as Uint8Array,
+    offsets = A[SOLVE.OFFSETS] as Int32Array;
+  const IA = A[SOLVE.IA] as Int32Array,
+    IB = A[SOLVE.IB] as Int32Array,
+    NX = A[SOLVE.NX] as Float64Array,
+    NY = A[SOLVE.NY] as Float64Array;
+  const RA = A[SOLVE.RA] as Float64Array,
+    RB = A[SOLVE.RB] as Float64Array,
+    S0 = A[SOLVE.SEPARATION] as Float64Array,
+    NM = A[SOLVE.NORMAL_MASS] as Float64Array;
+  const TM = A[SOLVE.TANGENT_MASS] as Float64Array,
+    FB = A[SOLVE.FRICTION_BOUND] as Float64Array,
+    LN = A[SOLVE.NORMAL_IMPULSE] as Float64Array,
+    LT = A[SOLVE.TANGENT_IMPULSE] as Float64Array;
+  const RP = A[SOLVE.RIGID_PARTNER] as Uint8Array,
+    pair = A[SOLVE.PAIR] as Int32Array,
+    tot = A[SOLVE.TOT] as Float64Array,
+    row = A[SOLVE.ROW] as Int32Array;
+  const slot = A[SOLVE.SLOT] as Int32Array;
+  const rows = P[SOLVE.ROWS]!,
+    W = P[SOLVE.GROUP_SLOTS]!;
   const lo = Math.floor((rows * blk) / parts),
     hi = Math.floor((rows * (blk + 1)) / parts),
     o0 = blk * W;
@@ -409,20 +345,20 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
  * @category Collision
  */
 export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: number): void {
-  const pk = A[CS_PACK] as Float64Array,
-    color = A[CS_GROUP] as Uint8Array,
-    slot = A[CS_SLOT] as Int32Array;
-  const NX = A[CS_NX] as Float64Array,
-    NY = A[CS_NY] as Float64Array,
-    RA = A[CS_RA] as Float64Array,
-    RB = A[CS_RB] as Float64Array;
-  const S0 = A[CS_SEPARATION] as Float64Array,
-    NM = A[CS_NORMAL_MASS] as Float64Array,
-    TM = A[CS_TANGENT_MASS] as Float64Array,
-    FB = A[CS_FRICTION_BOUND] as Float64Array;
-  const LN = A[CS_NORMAL_IMPULSE] as Float64Array,
-    LT = A[CS_TANGENT_IMPULSE] as Float64Array,
-    RP = A[CS_RIGID_PARTNER] as Uint8Array;
+  const pk = A[SOLVE.PACK] as Float64Array,
+    color = A[SOLVE.GROUP] as Uint8Array,
+    slot = A[SOLVE.SLOT] as Int32Array;
+  const NX = A[SOLVE.NX] as Float64Array,
+    NY = A[SOLVE.NY] as Float64Array,
+    RA = A[SOLVE.RA] as Float64Array,
+    RB = A[SOLVE.RB] as Float64Array;
+  const S0 = A[SOLVE.SEPARATION] as Float64Array,
+    NM = A[SOLVE.NORMAL_MASS] as Float64Array,
+    TM = A[SOLVE.TANGENT_MASS] as Float64Array,
+    FB = A[SOLVE.FRICTION_BOUND] as Float64Array;
+  const LN = A[SOLVE.NORMAL_IMPULSE] as Float64Array,
+    LT = A[SOLVE.TANGENT_IMPULSE] as Float64Array,
+    RP = A[SOLVE.RIGID_PARTNER] as Uint8Array;
   for (let j = 0; j < count; j++) {
     const i = rows[j]!;
     if (color[i] === 255) continue;
@@ -447,13 +383,13 @@ export function coloredRepack2D(A: KernelArray[], rows: Int32Array, count: numbe
  * @category Collision
  */
 export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void {
-  const pk = A[CS_PACK] as Float64Array,
-    LN = A[CS_NORMAL_IMPULSE] as Float64Array,
-    LT = A[CS_TANGENT_IMPULSE] as Float64Array,
-    MAXN = A[CS_MAX_NORMAL_IMPULSE] as Float64Array,
-    TOT = A[CS_TOTAL_NORMAL_IMPULSE] as Float64Array;
-  const tot = A[CS_TOT] as Float64Array,
-    row = A[CS_ROW] as Int32Array;
+  const pk = A[SOLVE.PACK] as Float64Array,
+    LN = A[SOLVE.NORMAL_IMPULSE] as Float64Array,
+    LT = A[SOLVE.TANGENT_IMPULSE] as Float64Array,
+    MAXN = A[SOLVE.MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[SOLVE.TOTAL_NORMAL_IMPULSE] as Float64Array;
+  const tot = A[SOLVE.TOT] as Float64Array,
+    row = A[SOLVE.ROW] as Int32Array;
   for (let k = k0; k < k1; k++) {
     const o = k * PACK_STRIDE,
       i = row[k]!;
@@ -482,8 +418,8 @@ export function coloredBodies2D(
   P: Float64Array,
 ): void {
   if (stage === 1) {
-    const gx = P[CS_GX_HS]!,
-      gy = P[CS_GY_HS]!;
+    const gx = P[SOLVE.GX_HS]!,
+      gy = P[SOLVE.GY_HS]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q;
       if (dyn[k] !== 1) continue;
@@ -492,7 +428,7 @@ export function coloredBodies2D(
       sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
     }
   } else {
-    const hs = P[CS_HS]!;
+    const hs = P[SOLVE.HS]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q,
         o = k * BS2_STRIDE;
@@ -544,17 +480,17 @@ export function coloredRows2D(
     }
     return;
   }
-  const invH = P[CS_INV_HS]!,
-    dBias = P[CS_SOFT_BIAS]!,
-    dMass = P[CS_SOFT_MASS]!,
-    dImp = P[CS_SOFT_IMPULSE]!,
-    rBias = P[CS_RIGID_BIAS]!,
-    rMass = P[CS_RIGID_MASS]!,
-    rImp = P[CS_RIGID_IMPULSE]!,
-    push = P[CS_PUSH_SPEED]!;
-  const downX = P[CS_DOWN_X]!,
-    downY = P[CS_DOWN_Y]!,
-    supportCos = P[CS_SUPPORT_COS]!;
+  const invH = P[SOLVE.INV_HS]!,
+    dBias = P[SOLVE.SOFT_BIAS]!,
+    dMass = P[SOLVE.SOFT_MASS]!,
+    dImp = P[SOLVE.SOFT_IMPULSE]!,
+    rBias = P[SOLVE.RIGID_BIAS]!,
+    rMass = P[SOLVE.RIGID_MASS]!,
+    rImp = P[SOLVE.RIGID_IMPULSE]!,
+    push = P[SOLVE.PUSH_SPEED]!;
+  const downX = P[SOLVE.DOWN_X]!,
+    downY = P[SOLVE.DOWN_Y]!,
+    supportCos = P[SOLVE.SUPPORT_COS]!;
   const useBias = (mode & 2) !== 0,
     total = (mode & 4) !== 0;
   for (let k = r0; k < r1; k++) {

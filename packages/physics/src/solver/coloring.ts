@@ -45,115 +45,16 @@ import type { KernelArray } from '../threads/kernel-types.js';
 import { isShared, sharedCopy, sharedLike, sharedMemoryAvailable, type ThreadPool } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE } from './body-state-layout.js';
-import {
-  CS_BODY_BOUNDS,
-  CS_BODY_EXTRA,
-  CS_BODY_ORDER,
-  CS_BODY_STATE,
-  CS_BOUNDS,
-  CS_CLAIM,
-  CS_COUNTERS,
-  CS_DOWN_X,
-  CS_DYN,
-  CS_DYNAMIC,
-  CS_FRICTION_BOUND,
-  CS_GROUP,
-  CS_GROUP_SLOTS,
-  CS_GX,
-  CS_GX_HS,
-  CS_GY,
-  CS_GY_HS,
-  CS_GZ,
-  CS_HS,
-  CS_IA,
-  CS_IB,
-  CS_INV_HS,
-  CS_MAX_NORMAL_IMPULSE,
-  CS_MEASURE_APPROACH,
-  CS_NORMAL_IMPULSE,
-  CS_NORMAL_MASS,
-  CS_NX,
-  CS_NY,
-  CS_OFFSETS,
-  CS_PACK,
-  CS_PAIR,
-  CS_PLAN,
-  CS_PUSH_SPEED,
-  CS_RA,
-  CS_RB,
-  CS_RIGID_PARTNER,
-  CS_ROW,
-  CS_ROWS,
-  CS_SEPARATION,
-  CS_SLOT,
-  CS_SOFT_BIAS,
-  CS_SPIN_US,
-  CS_SUPPORT_COS,
-  CS_TANGENT_IMPULSE,
-  CS_TANGENT_MASS,
-  CS_TOT,
-  CS_TOTAL_NORMAL_IMPULSE,
-  PL_BODIES,
-  PL_COLORS,
-  PL_ITERATIONS,
-  PL_MAY_WAIT,
-  PL_PACKED,
-  PL_PACKED_ROWS,
-  PL_PARTS,
-  PL_RELAX,
-  PL_STRIPS,
-  PL_SUBSTEPS,
-  PL_THREADS,
-  SC_BASE,
-  SC_BIN,
-  SC_BIN_ROWS,
-  SC_BIN_STRIP,
-  SC_BINS,
-  SC_BODIES,
-  SC_BODY_EXTRA,
-  SC_BODY_STATE,
-  SC_BODY_TYPE,
-  SC_DYN,
-  SC_IA,
-  SC_IB,
-  SC_NO_BIN,
-  SC_P_BODIES,
-  SC_P_DYNAMIC,
-  SC_P_ROWS,
-  SC_P_STRIPS,
-  SC_STRIP,
-  SP_BLOCK_ROWS,
-  SP_COUNTS,
-  SP_CUT,
-  SP_CUT_HERE,
-  SP_MAX_COLORS,
-  SP_MAX_OVERFLOW,
-  SP_NEXT,
-  SP_PACK,
-  SP_PARTS,
-  SP_PLAN_HEAD,
-  SP_START,
-} from './colored-slots-2d.js';
 import { coloredRepack2D, solveColored2D, solveColoredBlocks2D } from './coloring-kernel.js';
 import { PACK_STRIDE } from './contact-pack-2d.js';
 import { impactChangedRows } from './impact-state.js';
 import { releaseImpactedRows } from './impacts.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
-import {
-  AP_A,
-  AP_B,
-  AP_BODY_STATE,
-  AP_BODY_TYPE,
-  AP_IA,
-  AP_IB,
-  AP_IMPACT_VELOCITY,
-  AP_IMPULSE,
-  AP_NX,
-  AP_NY,
-  AP_NZ,
-  AP_RELATIVE_VELOCITY,
-  AP_SEPARATION,
-} from './stage-slots-2d.js';
+import * as APPROACH from './slots/approach.js';
+import * as PLAN from './slots/colored-plan.js';
+import * as SOLVE from './slots/colored-solve.js';
+import * as CUT from './slots/strip-cut.js';
+import * as STRIP_PLAN from './slots/strip-plan.js';
 import { stripLayout2D, stripPlan2D } from './strip-plan-kernel.js';
 import { downwardInto, SUPPORT_COS } from './support.js';
 
@@ -424,80 +325,80 @@ const PLAN_PARAMS = 16;
  */
 function planArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch): KernelArray[] {
   const A = solveArguments(cs, buf, s, s.planArrays);
-  A[SP_CUT + SC_BODY_STATE] = cs.bodyState;
-  A[SP_CUT + SC_BODY_EXTRA] = cs.bodyExtra;
-  A[SP_CUT + SC_BODY_TYPE] = cs.bodyType;
-  A[SP_CUT + SC_BODIES] = cs.solverBodies;
-  A[SP_CUT + SC_DYN] = s.dyn;
-  A[SP_CUT + SC_STRIP] = s.strip;
-  A[SP_CUT + SC_BIN] = s.bin;
-  A[SP_CUT + SC_BIN_ROWS] = s.hist;
-  A[SP_CUT + SC_BIN_STRIP] = s.binStrip;
-  A[SP_CUT + SC_IA] = buf.ia;
-  A[SP_CUT + SC_IB] = buf.ib;
-  A[SP_COUNTS] = s.counts;
-  A[SP_START] = s.start;
-  A[SP_NEXT] = s.next;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BODY_STATE] = cs.bodyState;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BODY_EXTRA] = cs.bodyExtra;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BODY_TYPE] = cs.bodyType;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BODIES] = cs.solverBodies;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.DYN] = s.dyn;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.STRIP] = s.strip;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BIN] = s.bin;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BIN_ROWS] = s.hist;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.BIN_STRIP] = s.binStrip;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.IA] = buf.ia;
+  A[STRIP_PLAN.CUT_ARRAYS + CUT.IB] = buf.ib;
+  A[STRIP_PLAN.COUNTS] = s.counts;
+  A[STRIP_PLAN.START] = s.start;
+  A[STRIP_PLAN.NEXT] = s.next;
   return A;
 }
 
 /** solveColored2D's arrays for `buf`'s rows (solver/coloring-kernel.ts, 0 to 30), into `A` (emptied first). */
 function solveArguments(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, A: KernelArray[]): KernelArray[] {
   A.length = 0;
-  A[CS_PACK] = s.pack;
-  A[CS_BODY_STATE] = cs.bodyState;
-  A[CS_BODY_EXTRA] = cs.bodyExtra;
-  A[CS_DYN] = s.dyn;
-  A[CS_PLAN] = s.plan;
-  A[CS_COUNTERS] = s.bar;
-  A[CS_GROUP] = s.color;
-  A[CS_OFFSETS] = s.offsets;
-  A[CS_IA] = buf.ia;
-  A[CS_IB] = buf.ib;
-  A[CS_NX] = buf.nx;
-  A[CS_NY] = buf.ny;
-  A[CS_RA] = buf.ra;
-  A[CS_RB] = buf.rb;
-  A[CS_SEPARATION] = buf.separation;
-  A[CS_NORMAL_MASS] = buf.normalMass;
-  A[CS_TANGENT_MASS] = buf.tangentMass;
-  A[CS_FRICTION_BOUND] = buf.frictionBound;
-  A[CS_NORMAL_IMPULSE] = buf.normalImpulse;
-  A[CS_TANGENT_IMPULSE] = buf.tangentImpulse1;
-  A[CS_RIGID_PARTNER] = buf.rigidPartner;
-  A[CS_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
-  A[CS_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
-  A[CS_BOUNDS] = s.bounds;
-  A[CS_BODY_ORDER] = s.bodyOrder;
-  A[CS_BODY_BOUNDS] = s.bodyBounds;
-  A[CS_PAIR] = s.pair;
-  A[CS_TOT] = s.tot;
-  A[CS_ROW] = s.row;
-  A[CS_CLAIM] = s.claim;
-  A[CS_SLOT] = s.slot;
+  A[SOLVE.PACK] = s.pack;
+  A[SOLVE.BODY_STATE] = cs.bodyState;
+  A[SOLVE.BODY_EXTRA] = cs.bodyExtra;
+  A[SOLVE.DYN] = s.dyn;
+  A[SOLVE.PLAN] = s.plan;
+  A[SOLVE.COUNTERS] = s.bar;
+  A[SOLVE.GROUP] = s.color;
+  A[SOLVE.OFFSETS] = s.offsets;
+  A[SOLVE.IA] = buf.ia;
+  A[SOLVE.IB] = buf.ib;
+  A[SOLVE.NX] = buf.nx;
+  A[SOLVE.NY] = buf.ny;
+  A[SOLVE.RA] = buf.ra;
+  A[SOLVE.RB] = buf.rb;
+  A[SOLVE.SEPARATION] = buf.separation;
+  A[SOLVE.NORMAL_MASS] = buf.normalMass;
+  A[SOLVE.TANGENT_MASS] = buf.tangentMass;
+  A[SOLVE.FRICTION_BOUND] = buf.frictionBound;
+  A[SOLVE.NORMAL_IMPULSE] = buf.normalImpulse;
+  A[SOLVE.TANGENT_IMPULSE] = buf.tangentImpulse1;
+  A[SOLVE.RIGID_PARTNER] = buf.rigidPartner;
+  A[SOLVE.MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[SOLVE.TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[SOLVE.BOUNDS] = s.bounds;
+  A[SOLVE.BODY_ORDER] = s.bodyOrder;
+  A[SOLVE.BODY_BOUNDS] = s.bodyBounds;
+  A[SOLVE.PAIR] = s.pair;
+  A[SOLVE.TOT] = s.tot;
+  A[SOLVE.ROW] = s.row;
+  A[SOLVE.CLAIM] = s.claim;
+  A[SOLVE.SLOT] = s.slot;
   return A;
 }
 
 /**
- * Appends approach2D's arrays for `buf`'s rows (the AP_ slots of solver/stage-slots-2d.ts, from
+ * Appends approach2D's arrays for `buf`'s rows (the APPROACH slots of solver/slots/approach.ts, from
  * A.length on) to `A`; returns `A`.
  * @category Collision
  */
 export function approachArguments(cs: CollisionState, buf: ContactBuffer, A: KernelArray[]): KernelArray[] {
   const b = A.length;
-  A[b + AP_IA] = buf.ia;
-  A[b + AP_IB] = buf.ib;
-  A[b + AP_A] = buf.a;
-  A[b + AP_B] = buf.b;
-  A[b + AP_NX] = buf.nx;
-  A[b + AP_NY] = buf.ny;
-  A[b + AP_NZ] = buf.nz;
-  A[b + AP_RELATIVE_VELOCITY] = buf.relativeVelocity;
-  A[b + AP_IMPACT_VELOCITY] = buf.impactVelocity;
-  A[b + AP_SEPARATION] = buf.separation;
-  A[b + AP_IMPULSE] = buf.impulse;
-  A[b + AP_BODY_TYPE] = cs.bodyType;
-  A[b + AP_BODY_STATE] = cs.bodyState;
+  A[b + APPROACH.IA] = buf.ia;
+  A[b + APPROACH.IB] = buf.ib;
+  A[b + APPROACH.A] = buf.a;
+  A[b + APPROACH.B] = buf.b;
+  A[b + APPROACH.NX] = buf.nx;
+  A[b + APPROACH.NY] = buf.ny;
+  A[b + APPROACH.NZ] = buf.nz;
+  A[b + APPROACH.RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[b + APPROACH.IMPACT_VELOCITY] = buf.impactVelocity;
+  A[b + APPROACH.SEPARATION] = buf.separation;
+  A[b + APPROACH.IMPULSE] = buf.impulse;
+  A[b + APPROACH.BODY_TYPE] = cs.bodyType;
+  A[b + APPROACH.BODY_STATE] = cs.bodyState;
   return A;
 }
 
@@ -515,22 +416,22 @@ function planParameters(
   cut: boolean,
 ): Float64Array {
   const P = s.planParams;
-  P[SC_P_BODIES] = cs.solverBodyCount;
-  P[SC_P_ROWS] = buf.count;
-  P[SC_P_STRIPS] = strips;
-  P[SC_BINS] = BINS;
-  P[SC_P_DYNAMIC] = BodyType.Dynamic;
-  P[SC_NO_BIN] = NO_BIN;
-  P[SC_BASE] = SP_CUT;
-  P[SP_PARTS] = parts;
-  P[SP_PACK] = pack ? 1 : 0;
-  P[SP_CUT_HERE] = cut ? 1 : 0;
-  P[SP_MAX_OVERFLOW] = Math.max(64, buf.count >> 6);
-  P[CS_ROWS] = buf.count;
-  P[CS_GROUP_SLOTS] = MAX_COLORS + 1;
-  P[SP_PLAN_HEAD] = PLAN_HEAD;
-  P[SP_MAX_COLORS] = MAX_COLORS;
-  P[SP_BLOCK_ROWS] = BLOCK_ROWS;
+  P[CUT.P_BODIES] = cs.solverBodyCount;
+  P[CUT.P_ROWS] = buf.count;
+  P[CUT.P_STRIPS] = strips;
+  P[CUT.BINS] = BINS;
+  P[CUT.P_DYNAMIC] = BodyType.Dynamic;
+  P[CUT.NO_BIN] = NO_BIN;
+  P[CUT.BASE] = STRIP_PLAN.CUT_ARRAYS;
+  P[STRIP_PLAN.PARTS] = parts;
+  P[STRIP_PLAN.PACK] = pack ? 1 : 0;
+  P[STRIP_PLAN.CUT_HERE] = cut ? 1 : 0;
+  P[STRIP_PLAN.MAX_OVERFLOW] = Math.max(64, buf.count >> 6);
+  P[SOLVE.ROWS] = buf.count;
+  P[SOLVE.GROUP_SLOTS] = MAX_COLORS + 1;
+  P[STRIP_PLAN.PLAN_HEAD] = PLAN_HEAD;
+  P[STRIP_PLAN.MAX_COLORS] = MAX_COLORS;
+  P[STRIP_PLAN.BLOCK_ROWS] = BLOCK_ROWS;
   return P;
 }
 
@@ -556,7 +457,7 @@ export function startStripPlan(world: PhysicsWorld, buf: ContactBuffer, others: 
   const old = scratchOf.get(cs);
   if (old !== undefined) {
     old.cut = 0;
-    old.plan[PL_PACKED] = 0;
+    old.plan[PLAN.PACKED] = 0;
   }
   const pool = colored(world, buf, others) ? coloredPool(world) : null;
   if (pool === null || pool.threads < 2 || !isShared(cs.solverBodies) || !pool.usable()) return;
@@ -581,10 +482,10 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
   for (let strips = STRIPS; strips >= 4; strips >>= 1) {
     const P = planParameters(cs, buf, s, strips, parts, false, s.cut !== strips);
     s.cut = strips;
-    if (stripPlan2D(A, P, null, 0, 1, 0, KERNEL_HELPERS) > 0) return s.plan[PL_PACKED_ROWS]!;
+    if (stripPlan2D(A, P, null, 0, 1, 0, KERNEL_HELPERS) > 0) return s.plan[PLAN.PACKED_ROWS]!;
   }
   const used = colorRows(cs, buf, s, parts);
-  s.plan[PL_STRIPS] = 0;
+  s.plan[PLAN.STRIPS] = 0;
   return stripLayout2D(A, planParameters(cs, buf, s, used, parts, false, false), used, 0);
 }
 
@@ -594,7 +495,7 @@ function planRows(cs: CollisionState, buf: ContactBuffer, s: ColorScratch, parts
  */
 export function lastColorCount(cs: CollisionState): number {
   const s = scratchOf.get(cs);
-  return s === undefined ? 0 : s.plan[PL_COLORS]!;
+  return s === undefined ? 0 : s.plan[PLAN.COLORS]!;
 }
 
 /**
@@ -609,7 +510,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
   const s = scratchOf.get(cs);
   if (s === undefined) return { conflicts: 0, overflow: 0, rows: 0, strips: false };
   const plan = s.plan,
-    C = plan[PL_COLORS]!,
+    C = plan[PLAN.COLORS]!,
     pair = s.pair,
     sb = cs.bodyState,
     bounds = s.bounds;
@@ -630,7 +531,7 @@ export function coloringConflicts(cs: CollisionState): { conflicts: number; over
   }
   const o0 = plan[PLAN_HEAD + C]!,
     o1 = plan[PLAN_HEAD + C + 1]!;
-  return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[PL_PACKED_ROWS]!, strips: plan[PL_STRIPS] === 1 };
+  return { conflicts, overflow: bounds[o1]! - bounds[o0]!, rows: plan[PLAN.PACKED_ROWS]!, strips: plan[PLAN.STRIPS] === 1 };
 }
 
 /** Whether this thread may block in Atomics.wait (not a browser's main thread); cached. */
@@ -666,9 +567,9 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
     pool.join(); // the strip plan startStripPlan left on a worker
   }
   const plan = s.plan;
-  const packed = plan[PL_PACKED] === 1;
+  const packed = plan[PLAN.PACKED] === 1;
   const parts = pool === null ? 1 : pool.threads;
-  const np = packed ? plan[PL_PACKED_ROWS]! : planRows(cs, buf, s, parts);
+  const np = packed ? plan[PLAN.PACKED_ROWS]! : planRows(cs, buf, s, parts);
   // Planned from the masses and impulses before the impact stage took its resolved rows out: they stay
   // in the pack with nothing to do (no mass, no impulse: every pass changes nothing by them).
   releaseImpactedRows(buf);
@@ -681,32 +582,32 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   }
   const P = s.params,
     g = world.gravity;
-  plan[PL_SUBSTEPS] = st.solverSubsteps;
-  plan[PL_ITERATIONS] = st.solverIterations;
-  plan[PL_RELAX] = st.relaxIterations;
-  plan[PL_BODIES] = cs.solverBodyCount;
-  plan[PL_MAY_WAIT] = mayWait() ? 1 : 0;
-  plan[PL_PARTS] = packed ? 0 : parts;
-  P[CS_INV_HS] = 1 / hs;
-  for (let k = 0; k < 6; k++) P[CS_SOFT_BIAS + k] = soft[k]!;
-  P[CS_PUSH_SPEED] = push;
-  P[CS_HS] = hs;
-  P[CS_GX_HS] = g[0]! * hs;
-  P[CS_GY_HS] = g[1]! * hs;
-  P[CS_ROWS] = buf.count;
-  P[CS_GROUP_SLOTS] = MAX_COLORS + 1;
-  P[CS_SPIN_US] = SPIN_MICROSECONDS;
+  plan[PLAN.SUBSTEPS] = st.solverSubsteps;
+  plan[PLAN.ITERATIONS] = st.solverIterations;
+  plan[PLAN.RELAX] = st.relaxIterations;
+  plan[PLAN.BODIES] = cs.solverBodyCount;
+  plan[PLAN.MAY_WAIT] = mayWait() ? 1 : 0;
+  plan[PLAN.PARTS] = packed ? 0 : parts;
+  P[SOLVE.INV_HS] = 1 / hs;
+  for (let k = 0; k < 6; k++) P[SOLVE.SOFT_BIAS + k] = soft[k]!;
+  P[SOLVE.PUSH_SPEED] = push;
+  P[SOLVE.HS] = hs;
+  P[SOLVE.GX_HS] = g[0]! * hs;
+  P[SOLVE.GY_HS] = g[1]! * hs;
+  P[SOLVE.ROWS] = buf.count;
+  P[SOLVE.GROUP_SLOTS] = MAX_COLORS + 1;
+  P[SOLVE.SPIN_US] = SPIN_MICROSECONDS;
   // The relax passes' support rows (solver/support.ts): which way is down, and the cosine past which a row is one.
-  downwardInto(g, P, CS_DOWN_X);
-  P[CS_SUPPORT_COS] = SUPPORT_COS;
-  P[CS_GX] = g[0]!;
-  P[CS_GY] = g[1]!;
-  P[CS_GZ] = g[2]!;
-  P[CS_DYNAMIC] = BodyType.Dynamic;
-  P[CS_MEASURE_APPROACH] = 1;
+  downwardInto(g, P, SOLVE.DOWN_X);
+  P[SOLVE.SUPPORT_COS] = SUPPORT_COS;
+  P[SOLVE.GX] = g[0]!;
+  P[SOLVE.GY] = g[1]!;
+  P[SOLVE.GZ] = g[2]!;
+  P[SOLVE.DYNAMIC] = BodyType.Dynamic;
+  P[SOLVE.MEASURE_APPROACH] = 1;
   const blocks = solveColoredBlocks2D(plan, buf.count, true);
   if (s.claim.length < blocks) s.claim = grown(s.claim, Math.max(blocks, 2 * s.claim.length));
-  A[CS_CLAIM] = s.claim;
+  A[SOLVE.CLAIM] = s.claim;
   const site = 'contactSolverSystem#colors';
   const parallel = pool?.usable() === true && (!pool.adaptive || pool.chooser.choose(site));
   const t0 = nowMs();
@@ -715,10 +616,10 @@ export function solveColoredSubsteps(world: PhysicsWorld, buf: ContactBuffer, hs
   s.bar[2] = 0;
   s.claim.fill(0, 0, blocks);
   if (parallel) {
-    plan[PL_THREADS] = pool.threads;
+    plan[PLAN.THREADS] = pool.threads;
     pool.run('contactSolverSystem', solveColored2D, A, P, pool.threads, null);
   } else {
-    plan[PL_THREADS] = 1;
+    plan[PLAN.THREADS] = 1;
     solveColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, np);

@@ -9,118 +9,66 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W } from './body-state-layout.js';
-import {
-  PC_A,
-  PC_B,
-  PC_BALL,
-  PC_BODY_STATE,
-  PC_BOUNDARY,
-  PC_BOX_FRICTION,
-  PC_BOX_RESTITUTION,
-  PC_BOX_STATIC_FRICTION,
-  PC_FEATURE,
-  PC_FRICTION,
-  PC_FRICTION_BOUND,
-  PC_FRICTION_OF,
-  PC_IA,
-  PC_IB,
-  PC_IMPULSE,
-  PC_KIND,
-  PC_MAX_NORMAL_IMPULSE,
-  PC_NORMAL_IMPULSE,
-  PC_NORMAL_MASS,
-  PC_NX,
-  PC_NY,
-  PC_PREV_A,
-  PC_PREV_B,
-  PC_PREV_FEATURE,
-  PC_PREV_KIND,
-  PC_PREV_NORMAL_IMPULSE,
-  PC_PREV_ROWS,
-  PC_PREV_STAMP_A,
-  PC_PREV_STAMP_B,
-  PC_PREV_TANGENT_IMPULSE_1,
-  PC_PREV_TANGENT_IMPULSE_2,
-  PC_RA,
-  PC_RB,
-  PC_RELATIVE_VELOCITY,
-  PC_RESTITUTION,
-  PC_RESTITUTION_OF,
-  PC_RIGID_PARTNER,
-  PC_SLOT_COUNT,
-  PC_SLOTS,
-  PC_SPAWN_STAMP,
-  PC_STAMP_A,
-  PC_STAMP_B,
-  PC_STATIC_FRICTION_OF,
-  PC_STICK_SPEED,
-  PC_T1X,
-  PC_T1Y,
-  PC_T1Z,
-  PC_TANGENT_IMPULSE_1,
-  PC_TANGENT_IMPULSE_2,
-  PC_TANGENT_MASS,
-  PC_TOTAL_NORMAL_IMPULSE,
-} from './prepare-slots-2d.js';
+import * as PREPARE from './slots/prepare-contacts.js';
 
 /**
  * Prepares 2D contact rows lo .. hi - 1.
- * A and P: the PC_ slots of solver/prepare-slots-2d.ts (the contact buffer's rows, the Material
+ * A and P: the PREPARE slots (solver/slots/prepare-contacts.ts: the contact buffer's rows, the Material
  * stores, last step's rows and the warm-start hash slots). Returns 0.
  * @category Collision
  */
 export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const CA = A[PC_A] as Int32Array,
-    CB = A[PC_B] as Int32Array,
-    IA = A[PC_IA] as Int32Array,
-    IB = A[PC_IB] as Int32Array;
-  const K = A[PC_KIND] as Uint8Array,
-    F = A[PC_FEATURE] as Int32Array,
-    NX = A[PC_NX] as Float64Array,
-    NY = A[PC_NY] as Float64Array;
-  const RA = A[PC_RA] as Float64Array,
-    RB = A[PC_RB] as Float64Array,
-    sb = A[PC_BODY_STATE] as Float64Array;
-  const eM = A[PC_RESTITUTION_OF] as Float64Array,
-    fM = A[PC_FRICTION_OF] as Float64Array,
-    sM = A[PC_STATIC_FRICTION_OF] as Float64Array,
-    stamp = A[PC_SPAWN_STAMP] as Uint32Array;
-  const NM = A[PC_NORMAL_MASS] as Float64Array,
-    TM = A[PC_TANGENT_MASS] as Float64Array,
-    RP = A[PC_RIGID_PARTNER] as Uint8Array;
-  const T1X = A[PC_T1X] as Float64Array,
-    T1Y = A[PC_T1Y] as Float64Array,
-    T1Z = A[PC_T1Z] as Float64Array;
-  const E = A[PC_RESTITUTION] as Float64Array,
-    MU = A[PC_FRICTION] as Float64Array,
-    FB = A[PC_FRICTION_BOUND] as Float64Array,
-    RV = A[PC_RELATIVE_VELOCITY] as Float64Array;
-  const TOT = A[PC_TOTAL_NORMAL_IMPULSE] as Float64Array,
-    IMP = A[PC_IMPULSE] as Float64Array,
-    LN = A[PC_NORMAL_IMPULSE] as Float64Array,
-    L1 = A[PC_TANGENT_IMPULSE_1] as Float64Array;
-  const L2 = A[PC_TANGENT_IMPULSE_2] as Float64Array,
-    MAXN = A[PC_MAX_NORMAL_IMPULSE] as Float64Array,
-    SA = A[PC_STAMP_A] as Uint32Array,
-    SB = A[PC_STAMP_B] as Uint32Array;
-  const pK = A[PC_PREV_KIND] as Uint8Array,
-    pA = A[PC_PREV_A] as Int32Array,
-    pB = A[PC_PREV_B] as Int32Array,
-    pF = A[PC_PREV_FEATURE] as Int32Array;
-  const pSA = A[PC_PREV_STAMP_A] as Uint32Array,
-    pSB = A[PC_PREV_STAMP_B] as Uint32Array;
-  const pN = A[PC_PREV_NORMAL_IMPULSE] as Float64Array,
-    p1 = A[PC_PREV_TANGENT_IMPULSE_1] as Float64Array,
-    p2 = A[PC_PREV_TANGENT_IMPULSE_2] as Float64Array,
-    slots = A[PC_SLOTS] as Int32Array;
-  const stick = P[PC_STICK_SPEED]!,
-    boxE = P[PC_BOX_RESTITUTION]!,
-    boxF = P[PC_BOX_FRICTION]!,
-    boxS = P[PC_BOX_STATIC_FRICTION]!,
-    prevCount = P[PC_PREV_ROWS]!,
-    size = P[PC_SLOT_COUNT]!;
-  const BALL = P[PC_BALL]!,
-    BOUNDARY = P[PC_BOUNDARY]!;
+  const CA = A[PREPARE.A] as Int32Array,
+    CB = A[PREPARE.B] as Int32Array,
+    IA = A[PREPARE.IA] as Int32Array,
+    IB = A[PREPARE.IB] as Int32Array;
+  const K = A[PREPARE.KIND] as Uint8Array,
+    F = A[PREPARE.FEATURE] as Int32Array,
+    NX = A[PREPARE.NX] as Float64Array,
+    NY = A[PREPARE.NY] as Float64Array;
+  const RA = A[PREPARE.RA] as Float64Array,
+    RB = A[PREPARE.RB] as Float64Array,
+    sb = A[PREPARE.BODY_STATE] as Float64Array;
+  const eM = A[PREPARE.RESTITUTION_OF] as Float64Array,
+    fM = A[PREPARE.FRICTION_OF] as Float64Array,
+    sM = A[PREPARE.STATIC_FRICTION_OF] as Float64Array,
+    stamp = A[PREPARE.SPAWN_STAMP] as Uint32Array;
+  const NM = A[PREPARE.NORMAL_MASS] as Float64Array,
+    TM = A[PREPARE.TANGENT_MASS] as Float64Array,
+    RP = A[PREPARE.RIGID_PARTNER] as Uint8Array;
+  const T1X = A[PREPARE.T1X] as Float64Array,
+    T1Y = A[PREPARE.T1Y] as Float64Array,
+    T1Z = A[PREPARE.T1Z] as Float64Array;
+  const E = A[PREPARE.RESTITUTION] as Float64Array,
+    MU = A[PREPARE.FRICTION] as Float64Array,
+    FB = A[PREPARE.FRICTION_BOUND] as Float64Array,
+    RV = A[PREPARE.RELATIVE_VELOCITY] as Float64Array;
+  const TOT = A[PREPARE.TOTAL_NORMAL_IMPULSE] as Float64Array,
+    IMP = A[PREPARE.IMPULSE] as Float64Array,
+    LN = A[PREPARE.NORMAL_IMPULSE] as Float64Array,
+    L1 = A[PREPARE.TANGENT_IMPULSE_1] as Float64Array;
+  const L2 = A[PREPARE.TANGENT_IMPULSE_2] as Float64Array,
+    MAXN = A[PREPARE.MAX_NORMAL_IMPULSE] as Float64Array,
+    SA = A[PREPARE.STAMP_A] as Uint32Array,
+    SB = A[PREPARE.STAMP_B] as Uint32Array;
+  const pK = A[PREPARE.PREV_KIND] as Uint8Array,
+    pA = A[PREPARE.PREV_A] as Int32Array,
+    pB = A[PREPARE.PREV_B] as Int32Array,
+    pF = A[PREPARE.PREV_FEATURE] as Int32Array;
+  const pSA = A[PREPARE.PREV_STAMP_A] as Uint32Array,
+    pSB = A[PREPARE.PREV_STAMP_B] as Uint32Array;
+  const pN = A[PREPARE.PREV_NORMAL_IMPULSE] as Float64Array,
+    p1 = A[PREPARE.PREV_TANGENT_IMPULSE_1] as Float64Array,
+    p2 = A[PREPARE.PREV_TANGENT_IMPULSE_2] as Float64Array,
+    slots = A[PREPARE.SLOTS] as Int32Array;
+  const stick = P[PREPARE.STICK_SPEED]!,
+    boxE = P[PREPARE.BOX_RESTITUTION]!,
+    boxF = P[PREPARE.BOX_FRICTION]!,
+    boxS = P[PREPARE.BOX_STATIC_FRICTION]!,
+    prevCount = P[PREPARE.PREV_ROWS]!,
+    size = P[PREPARE.SLOT_COUNT]!;
+  const BALL = P[PREPARE.BALL]!,
+    BOUNDARY = P[PREPARE.BOUNDARY]!;
   const mask = size - 1;
   let next = 0;
   for (let i = lo; i < hi; i++) {

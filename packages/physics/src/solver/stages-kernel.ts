@@ -31,130 +31,40 @@ import {
   BX_ROT_Z,
   BX_STRIDE,
 } from './body-state-layout.js';
-import { PL_COLOR_BLOCKS, PL_COLORS, PL_THREADS } from './colored-slots-2d.js';
 import { PACK_STRIDE, PK_NORMAL_MASS, PK_NX, PK_NY } from './contact-pack-2d.js';
-import {
-  AP_A,
-  AP_B,
-  AP_BASE,
-  AP_BODY_STATE,
-  AP_BODY_TYPE,
-  AP_DYNAMIC,
-  AP_GX,
-  AP_GY,
-  AP_GZ,
-  AP_IA,
-  AP_IB,
-  AP_IMPACT_VELOCITY,
-  AP_IMPULSE,
-  AP_NX,
-  AP_NY,
-  AP_NZ,
-  AP_RELATIVE_VELOCITY,
-  AP_SEPARATION,
-  FB_ANGLE,
-  FB_BODIES,
-  FB_BODY_EXTRA,
-  FB_BODY_IMPACT,
-  FB_BODY_STATE,
-  FB_BODY_TYPE,
-  FB_BOX_RESTITUTION,
-  FB_CONTAIN,
-  FB_DEEPEST,
-  FB_DYNAMIC,
-  FB_FREE_X,
-  FB_FREE_Y,
-  FB_GX,
-  FB_GY,
-  FB_IA,
-  FB_IB,
-  FB_IMPACT_STRIDE,
-  FB_MAX_X,
-  FB_MIN_X,
-  FB_NX,
-  FB_NY,
-  FB_PX,
-  FB_PY,
-  FB_RADIUS,
-  FB_RESTITUTION,
-  FB_ROWS,
-  FB_SEPARATION,
-  FB_VX,
-  FB_VY,
-  FB_WZ,
-  GF_BODY_EXTRA,
-  GF_BODY_STATE,
-  GF_BODY_TYPE,
-  GF_DYNAMIC,
-  GF_FX,
-  GF_FY,
-  GF_FZ,
-  GF_GX_H,
-  GF_GY_H,
-  GF_H,
-  GF_INV_INERTIA,
-  GF_INV_MASS,
-  GF_KINEMATIC,
-  GF_PUSHED,
-  GF_PX,
-  GF_PY,
-  GF_VX,
-  GF_VY,
-  GF_WZ,
-  RC_BODY_STATE,
-  RC_BOUNDS,
-  RC_CLAIM,
-  RC_COUNTERS,
-  RC_ELASTIC_THRESHOLD,
-  RC_IA,
-  RC_IB,
-  RC_IMPACT_VELOCITY,
-  RC_IMPULSE,
-  RC_ITERATIONS,
-  RC_MAX_NORMAL_IMPULSE,
-  RC_MAY_WAIT,
-  RC_NORMAL_MASS,
-  RC_NX,
-  RC_NY,
-  RC_PACK,
-  RC_PAIR,
-  RC_PLAN,
-  RC_RELATIVE_VELOCITY,
-  RC_RESTITUTION,
-  RC_ROW,
-  RC_ROWS,
-  RC_SPIN_US,
-  RC_THRESHOLD,
-  RC_TOTAL_NORMAL_IMPULSE,
-} from './stage-slots-2d.js';
+import * as APPROACH from './slots/approach.js';
+import * as PLAN from './slots/colored-plan.js';
+import * as FINISH from './slots/finish-bodies.js';
+import * as GATHER from './slots/gather-fill.js';
+import * as RESTITUTION from './slots/restitution.js';
 
 /**
  * Fills the 2D solver rows of solver bodies lo + 1 .. hi (gatherBodies' second loop, solver/contact-solver.ts), one
  * body at a time. `ids`: the solver bodies' entity ids from solver index 1 (ids[i] is solver body
- * i + 1). A and P: the GF_ slots of solver/stage-slots-2d.ts (slots z, and the turns about x and y,
+ * i + 1). A and P: the GATHER slots (solver/slots/gather-fill.ts; slots z, and the turns about x and y,
  * of the extra rows are 0 in 2D). Returns 0.
  * @category Collision
  */
 export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[GF_PX] as Float64Array,
-    py = A[GF_PY] as Float64Array;
-  const vx = A[GF_VX] as Float64Array,
-    vy = A[GF_VY] as Float64Array,
-    wz = A[GF_WZ] as Float64Array;
-  const fx = A[GF_FX] as Float64Array,
-    fy = A[GF_FY] as Float64Array,
-    fz = A[GF_FZ] as Float64Array;
-  const type = A[GF_BODY_TYPE] as Uint8Array,
-    invMass = A[GF_INV_MASS] as Float64Array,
-    invInertia = A[GF_INV_INERTIA] as Float64Array;
-  const sb = A[GF_BODY_STATE] as Float64Array,
-    ex = A[GF_BODY_EXTRA] as Float64Array;
-  const h = P[GF_H]!,
-    gx = P[GF_GX_H]!,
-    gy = P[GF_GY_H]!,
-    pushed = P[GF_PUSHED]!,
-    DYNAMIC = P[GF_DYNAMIC]!,
-    KINEMATIC = P[GF_KINEMATIC]!;
+  const px = A[GATHER.PX] as Float64Array,
+    py = A[GATHER.PY] as Float64Array;
+  const vx = A[GATHER.VX] as Float64Array,
+    vy = A[GATHER.VY] as Float64Array,
+    wz = A[GATHER.WZ] as Float64Array;
+  const fx = A[GATHER.FX] as Float64Array,
+    fy = A[GATHER.FY] as Float64Array,
+    fz = A[GATHER.FZ] as Float64Array;
+  const type = A[GATHER.BODY_TYPE] as Uint8Array,
+    invMass = A[GATHER.INV_MASS] as Float64Array,
+    invInertia = A[GATHER.INV_INERTIA] as Float64Array;
+  const sb = A[GATHER.BODY_STATE] as Float64Array,
+    ex = A[GATHER.BODY_EXTRA] as Float64Array;
+  const h = P[GATHER.H]!,
+    gx = P[GATHER.GX_H]!,
+    gy = P[GATHER.GY_H]!,
+    pushed = P[GATHER.PUSHED]!,
+    DYNAMIC = P[GATHER.DYNAMIC]!,
+    KINEMATIC = P[GATHER.KINEMATIC]!;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
@@ -188,30 +98,30 @@ export function gatherFill2D(A: KernelArray[], P: Float64Array, ids: Int32Array 
 
 /**
  * measureApproach (solver/contact-solver.ts) of 2D contact rows lo .. hi - 1: the normal relative velocity after the
- * impact stage and the speed at impact across a closing gap. A and P: the AP_ slots of
- * solver/stage-slots-2d.ts, the arrays from A[P[AP_BASE]] on (0 when they are A's only arrays; the
+ * impact stage and the speed at impact across a closing gap. A and P: the APPROACH slots
+ * (solver/slots/approach.ts), the arrays from A[P[APPROACH.BASE]] on (0 when they are A's only arrays; the
  * coloured solve, solver/coloring-kernel.ts, passes them after its own). Returns 0.
  * @category Collision
  */
 export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
-  const b0 = P[AP_BASE]!;
-  const IA = A[b0 + AP_IA] as Int32Array,
-    IB = A[b0 + AP_IB] as Int32Array,
-    CA = A[b0 + AP_A] as Int32Array,
-    CB = A[b0 + AP_B] as Int32Array;
-  const NX = A[b0 + AP_NX] as Float64Array,
-    NY = A[b0 + AP_NY] as Float64Array,
-    NZ = A[b0 + AP_NZ] as Float64Array;
-  const RV = A[b0 + AP_RELATIVE_VELOCITY] as Float64Array,
-    IV = A[b0 + AP_IMPACT_VELOCITY] as Float64Array,
-    S0 = A[b0 + AP_SEPARATION] as Float64Array,
-    IMP = A[b0 + AP_IMPULSE] as Float64Array;
-  const type = A[b0 + AP_BODY_TYPE] as Uint8Array,
-    sb = A[b0 + AP_BODY_STATE] as Float64Array;
-  const gx = P[AP_GX]!,
-    gy = P[AP_GY]!,
-    gz = P[AP_GZ]!,
-    DYNAMIC = P[AP_DYNAMIC]!;
+  const b0 = P[APPROACH.BASE]!;
+  const IA = A[b0 + APPROACH.IA] as Int32Array,
+    IB = A[b0 + APPROACH.IB] as Int32Array,
+    CA = A[b0 + APPROACH.A] as Int32Array,
+    CB = A[b0 + APPROACH.B] as Int32Array;
+  const NX = A[b0 + APPROACH.NX] as Float64Array,
+    NY = A[b0 + APPROACH.NY] as Float64Array,
+    NZ = A[b0 + APPROACH.NZ] as Float64Array;
+  const RV = A[b0 + APPROACH.RELATIVE_VELOCITY] as Float64Array,
+    IV = A[b0 + APPROACH.IMPACT_VELOCITY] as Float64Array,
+    S0 = A[b0 + APPROACH.SEPARATION] as Float64Array,
+    IMP = A[b0 + APPROACH.IMPULSE] as Float64Array;
+  const type = A[b0 + APPROACH.BODY_TYPE] as Uint8Array,
+    sb = A[b0 + APPROACH.BODY_STATE] as Float64Array;
+  const gx = P[APPROACH.GX]!,
+    gy = P[APPROACH.GY]!,
+    gz = P[APPROACH.GZ]!,
+    DYNAMIC = P[APPROACH.DYNAMIC]!;
   for (let i = lo; i < hi; i++) {
     const oa = IA[i]! * BS2_STRIDE,
       ob = IB[i]! * BS2_STRIDE;
@@ -242,8 +152,8 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
  * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
  * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
  * contact rows (rows floor(m lo / nb) .. floor(m hi / nb) - 1, m rows, nb bodies), as min(0, min s)
- * into A[FB_DEEPEST][part] (m). `ids`: the solver bodies' entity ids from solver index 1. A and P: the
- * FB_ slots of solver/stage-slots-2d.ts. Returns the sum of the positions and
+ * into A[FINISH.DEEPEST][part] (m). `ids`: the solver bodies' entity ids from solver index 1. A and P: the
+ * FINISH slots (solver/slots/finish-bodies.ts). Returns the sum of the positions and
  * velocities finishBodies wrote (finite exactly when they all are: the caller's check).
  * @category Collision
  */
@@ -260,8 +170,8 @@ export function finishBodies2D(
   // kernel runs once a step, and inline, its later loops and the code between them first ran after V8
   // had compiled the first loop on the stack (OSR), throwing that code away at every step.
   const check = (H[4] as typeof finishBodyRows2D)(A, P, ids as Int32Array, lo, hi);
-  if (P[FB_CONTAIN] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
-  (A[FB_DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
+  if (P[FINISH.CONTAIN] === 1) (H[5] as typeof containBodies2D)(A, P, ids as Int32Array, lo, hi);
+  (A[FINISH.DEEPEST] as Float64Array)[part] = (H[6] as typeof deepestRow2D)(A, P, lo, hi);
   return check;
 }
 
@@ -270,20 +180,20 @@ export function finishBodies2D(
  * @category Collision
  */
 export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): number {
-  const px = A[FB_PX] as Float64Array,
-    py = A[FB_PY] as Float64Array,
-    vx = A[FB_VX] as Float64Array,
-    vy = A[FB_VY] as Float64Array;
-  const wz = A[FB_WZ] as Float64Array,
-    angle = A[FB_ANGLE] as Float64Array,
-    type = A[FB_BODY_TYPE] as Uint8Array;
-  const sb = A[FB_BODY_STATE] as Float64Array,
-    ex = A[FB_BODY_EXTRA] as Float64Array,
-    imp = A[FB_BODY_IMPACT] as Float64Array;
-  const fx = P[FB_FREE_X]!,
-    fy = P[FB_FREE_Y]!,
-    DYNAMIC = P[FB_DYNAMIC]!,
-    Q = P[FB_IMPACT_STRIDE]!;
+  const px = A[FINISH.PX] as Float64Array,
+    py = A[FINISH.PY] as Float64Array,
+    vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array;
+  const wz = A[FINISH.WZ] as Float64Array,
+    angle = A[FINISH.ANGLE] as Float64Array,
+    type = A[FINISH.BODY_TYPE] as Uint8Array;
+  const sb = A[FINISH.BODY_STATE] as Float64Array,
+    ex = A[FINISH.BODY_EXTRA] as Float64Array,
+    imp = A[FINISH.BODY_IMPACT] as Float64Array;
+  const fx = P[FINISH.FREE_X]!,
+    fy = P[FINISH.FREE_Y]!,
+    DYNAMIC = P[FINISH.DYNAMIC]!,
+    Q = P[FINISH.IMPACT_STRIDE]!;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
@@ -312,17 +222,17 @@ export function finishBodyRows2D(A: KernelArray[], P: Float64Array, list: Int32A
  * @category Collision
  */
 export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Array, lo: number, hi: number): void {
-  const px = A[FB_PX] as Float64Array,
-    py = A[FB_PY] as Float64Array,
-    vx = A[FB_VX] as Float64Array,
-    vy = A[FB_VY] as Float64Array;
-  const type = A[FB_BODY_TYPE] as Uint8Array,
-    radius = A[FB_RADIUS] as Float64Array,
-    eM = A[FB_RESTITUTION] as Float64Array;
-  const DYNAMIC = P[FB_DYNAMIC]!,
-    boxE = P[FB_BOX_RESTITUTION]!,
-    g0 = P[FB_GX]!,
-    g1 = P[FB_GY]!;
+  const px = A[FINISH.PX] as Float64Array,
+    py = A[FINISH.PY] as Float64Array,
+    vx = A[FINISH.VX] as Float64Array,
+    vy = A[FINISH.VY] as Float64Array;
+  const type = A[FINISH.BODY_TYPE] as Uint8Array,
+    radius = A[FINISH.RADIUS] as Float64Array,
+    eM = A[FINISH.RESTITUTION] as Float64Array;
+  const DYNAMIC = P[FINISH.DYNAMIC]!,
+    boxE = P[FINISH.BOX_RESTITUTION]!,
+    g0 = P[FINISH.GX]!,
+    g1 = P[FINISH.GY]!;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
@@ -332,8 +242,8 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
       const p = d === 0 ? px : py,
         v = d === 0 ? vx : vy,
         g = d === 0 ? g0 : g1;
-      const wlo = P[FB_MIN_X + d]! + rad,
-        whi = P[FB_MAX_X + d]! - rad;
+      const wlo = P[FINISH.MIN_X + d]! + rad,
+        whi = P[FINISH.MAX_X + d]! - rad;
       const x = p[e]!;
       if (x < wlo && wlo <= whi) {
         p[e] = wlo;
@@ -361,14 +271,14 @@ export function containBodies2D(A: KernelArray[], P: Float64Array, list: Int32Ar
  * @category Collision
  */
 export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
-  const sb = A[FB_BODY_STATE] as Float64Array;
-  const IA = A[FB_IA] as Int32Array,
-    IB = A[FB_IB] as Int32Array,
-    S0 = A[FB_SEPARATION] as Float64Array,
-    NX = A[FB_NX] as Float64Array,
-    NY = A[FB_NY] as Float64Array;
-  const m = P[FB_ROWS]!,
-    nb = P[FB_BODIES]!;
+  const sb = A[FINISH.BODY_STATE] as Float64Array;
+  const IA = A[FINISH.IA] as Int32Array,
+    IB = A[FINISH.IB] as Int32Array,
+    S0 = A[FINISH.SEPARATION] as Float64Array,
+    NX = A[FINISH.NX] as Float64Array,
+    NY = A[FINISH.NY] as Float64Array;
+  const m = P[FINISH.ROWS]!,
+    nb = P[FINISH.BODIES]!;
   const r0 = Math.floor((m * lo) / nb),
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
@@ -392,7 +302,7 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
  * the earlier units is done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
- * A and P: the RC_ slots of solver/stage-slots-2d.ts. Returns 0 (-1 if another thread failed and
+ * A and P: the RESTITUTION slots (solver/slots/restitution.ts). Returns 0 (-1 if another thread failed and
  * this one stopped).
  * @category Collision
  */
@@ -405,14 +315,14 @@ export function restitutionColored2D(
   part: number,
   H: readonly KernelHelper[],
 ): number {
-  const plan = A[RC_PLAN] as Int32Array,
-    bar = A[RC_COUNTERS] as Int32Array,
-    bounds = A[RC_BOUNDS] as Int32Array;
-  const n = P[RC_ROWS]!,
-    iterations = P[RC_ITERATIONS]!,
-    spinMs = P[RC_SPIN_US]! / 1000;
-  const C = plan[PL_COLORS]!;
-  const wait = part !== 0 || P[RC_MAY_WAIT] === 1;
+  const plan = A[RESTITUTION.PLAN] as Int32Array,
+    bar = A[RESTITUTION.COUNTERS] as Int32Array,
+    bounds = A[RESTITUTION.BOUNDS] as Int32Array;
+  const n = P[RESTITUTION.ROWS]!,
+    iterations = P[RESTITUTION.ITERATIONS]!,
+    spinMs = P[RESTITUTION.SPIN_US]! / 1000;
+  const C = plan[PLAN.COLORS]!;
+  const wait = part !== 0 || P[RESTITUTION.MAY_WAIT] === 1;
   const clock = (globalThis as { performance?: { now(): number } }).performance;
   const FIRST = 1024;
   // Unit 0: the rows' targets and caps; then `iterations` passes of C + 1 colours each.
@@ -437,14 +347,14 @@ export function restitutionColored2D(
   // Blocks are claimed by flags, each thread from its own share of a unit first (claimBlock,
   // threads/block-claim.ts), as solveColored2D: with strips a thread keeps the strips, and their
   // bodies, it solved in the substeps.
-  const claim = A[RC_CLAIM] as Int32Array,
-    threads = plan[PL_THREADS]! > 0 ? plan[PL_THREADS]! : 1;
+  const claim = A[RESTITUTION.CLAIM] as Int32Array,
+    threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
   const claimNext = H[9] as typeof claimBlock,
     cursor = new Int32Array(2);
   for (let u = 0; u < units; u++) {
     const c = u === 0 ? -1 : (u - 1) % (C + 1);
-    const first = c < 0 ? 0 : plan[PL_COLOR_BLOCKS + c]!;
-    const count = c < 0 ? Math.ceil(n / FIRST) : plan[PL_COLOR_BLOCKS + c + 1]! - first;
+    const first = c < 0 ? 0 : plan[PLAN.COLOR_BLOCKS + c]!;
+    const count = c < 0 ? Math.ceil(n / FIRST) : plan[PLAN.COLOR_BLOCKS + c + 1]! - first;
     const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
@@ -493,8 +403,8 @@ export function restitutionColored2D(
  * @category Collision
  */
 export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: number): number {
-  const C = plan[PL_COLORS]!;
-  return Math.ceil(n / 1024) + iterations * (plan[PL_COLOR_BLOCKS + C + 1]! - plan[PL_COLOR_BLOCKS]!);
+  const C = plan[PLAN.COLORS]!;
+  return Math.ceil(n / 1024) + iterations * (plan[PLAN.COLOR_BLOCKS + C + 1]! - plan[PLAN.COLOR_BLOCKS]!);
 }
 
 /**
@@ -502,19 +412,19 @@ export function restitutionBlocks2D(plan: Int32Array, n: number, iterations: num
  * @category Collision
  */
 export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: number, hi: number): number {
-  const sb = A[RC_BODY_STATE] as Float64Array,
-    IA = A[RC_IA] as Int32Array,
-    IB = A[RC_IB] as Int32Array,
-    NX = A[RC_NX] as Float64Array,
-    NY = A[RC_NY] as Float64Array;
-  const NM = A[RC_NORMAL_MASS] as Float64Array,
-    E = A[RC_RESTITUTION] as Float64Array,
-    RV = A[RC_RELATIVE_VELOCITY] as Float64Array,
-    IV = A[RC_IMPACT_VELOCITY] as Float64Array;
-  const MAXN = A[RC_MAX_NORMAL_IMPULSE] as Float64Array,
-    TOT = A[RC_TOTAL_NORMAL_IMPULSE] as Float64Array;
-  const threshold = P[RC_THRESHOLD]!,
-    elasticThreshold = P[RC_ELASTIC_THRESHOLD]!;
+  const sb = A[RESTITUTION.BODY_STATE] as Float64Array,
+    IA = A[RESTITUTION.IA] as Int32Array,
+    IB = A[RESTITUTION.IB] as Int32Array,
+    NX = A[RESTITUTION.NX] as Float64Array,
+    NY = A[RESTITUTION.NY] as Float64Array;
+  const NM = A[RESTITUTION.NORMAL_MASS] as Float64Array,
+    E = A[RESTITUTION.RESTITUTION] as Float64Array,
+    RV = A[RESTITUTION.RELATIVE_VELOCITY] as Float64Array,
+    IV = A[RESTITUTION.IMPACT_VELOCITY] as Float64Array;
+  const MAXN = A[RESTITUTION.MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array;
+  const threshold = P[RESTITUTION.THRESHOLD]!,
+    elasticThreshold = P[RESTITUTION.ELASTIC_THRESHOLD]!;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     const e = E[i]!;
@@ -541,14 +451,14 @@ export function restitutionTargets2D(A: KernelArray[], P: Float64Array, lo: numb
  * @category Collision
  */
 export function restitutionRows2D(A: KernelArray[], r0: number, r1: number): void {
-  const pk = A[RC_PACK] as Float64Array,
-    sb = A[RC_BODY_STATE] as Float64Array,
-    RV = A[RC_RELATIVE_VELOCITY] as Float64Array;
-  const MAXN = A[RC_MAX_NORMAL_IMPULSE] as Float64Array,
-    TOT = A[RC_TOTAL_NORMAL_IMPULSE] as Float64Array,
-    IMP = A[RC_IMPULSE] as Float64Array;
-  const pair = A[RC_PAIR] as Int32Array,
-    row = A[RC_ROW] as Int32Array;
+  const pk = A[RESTITUTION.PACK] as Float64Array,
+    sb = A[RESTITUTION.BODY_STATE] as Float64Array,
+    RV = A[RESTITUTION.RELATIVE_VELOCITY] as Float64Array;
+  const MAXN = A[RESTITUTION.MAX_NORMAL_IMPULSE] as Float64Array,
+    TOT = A[RESTITUTION.TOTAL_NORMAL_IMPULSE] as Float64Array,
+    IMP = A[RESTITUTION.IMPULSE] as Float64Array;
+  const pair = A[RESTITUTION.PAIR] as Int32Array,
+    row = A[RESTITUTION.ROW] as Int32Array;
   for (let k = r0; k < r1; k++) {
     const o = k * PACK_STRIDE;
     const i = row[k]!;

@@ -36,92 +36,13 @@ import { isShared, sharedCopy, sharedFloat64, sharedMemoryAvailable, type Thread
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { IMPACT_STRIDE } from './body-state-layout.js';
-import { PL_THREADS } from './colored-slots-2d.js';
 import { approachArguments, callerMayWait, coloredPlan, grown, SPIN_MICROSECONDS, shareContactBuffer } from './coloring.js';
 import { KERNEL_HELPERS } from './kernel-helpers.js';
-import {
-  AP_BASE,
-  AP_DYNAMIC,
-  AP_GX,
-  AP_GY,
-  AP_GZ,
-  FB_ANGLE,
-  FB_BODIES,
-  FB_BODY_EXTRA,
-  FB_BODY_IMPACT,
-  FB_BODY_STATE,
-  FB_BODY_TYPE,
-  FB_BOX_RESTITUTION,
-  FB_CONTAIN,
-  FB_DEEPEST,
-  FB_DYNAMIC,
-  FB_FREE_X,
-  FB_FREE_Y,
-  FB_GX,
-  FB_GY,
-  FB_IA,
-  FB_IB,
-  FB_IMPACT_STRIDE,
-  FB_MAX_X,
-  FB_MAX_Y,
-  FB_MIN_X,
-  FB_MIN_Y,
-  FB_NX,
-  FB_NY,
-  FB_PX,
-  FB_PY,
-  FB_RADIUS,
-  FB_RESTITUTION,
-  FB_ROWS,
-  FB_SEPARATION,
-  FB_VX,
-  FB_VY,
-  FB_WZ,
-  GF_BODY_EXTRA,
-  GF_BODY_STATE,
-  GF_BODY_TYPE,
-  GF_DYNAMIC,
-  GF_FX,
-  GF_FY,
-  GF_FZ,
-  GF_GX_H,
-  GF_GY_H,
-  GF_H,
-  GF_INV_INERTIA,
-  GF_INV_MASS,
-  GF_KINEMATIC,
-  GF_PUSHED,
-  GF_PX,
-  GF_PY,
-  GF_VX,
-  GF_VY,
-  GF_WZ,
-  RC_BODY_STATE,
-  RC_BOUNDS,
-  RC_CLAIM,
-  RC_COUNTERS,
-  RC_ELASTIC_THRESHOLD,
-  RC_IA,
-  RC_IB,
-  RC_IMPACT_VELOCITY,
-  RC_IMPULSE,
-  RC_ITERATIONS,
-  RC_MAX_NORMAL_IMPULSE,
-  RC_MAY_WAIT,
-  RC_NORMAL_MASS,
-  RC_NX,
-  RC_NY,
-  RC_PACK,
-  RC_PAIR,
-  RC_PLAN,
-  RC_RELATIVE_VELOCITY,
-  RC_RESTITUTION,
-  RC_ROW,
-  RC_ROWS,
-  RC_SPIN_US,
-  RC_THRESHOLD,
-  RC_TOTAL_NORMAL_IMPULSE,
-} from './stage-slots-2d.js';
+import * as APPROACH from './slots/approach.js';
+import * as PLAN from './slots/colored-plan.js';
+import * as FINISH from './slots/finish-bodies.js';
+import * as GATHER from './slots/gather-fill.js';
+import * as RESTITUTION from './slots/restitution.js';
 import { approach2D, finishBodies2D, gatherFill2D, restitutionBlocks2D, restitutionColored2D } from './stages-kernel.js';
 import { warmStartTable } from './warm-start-kernel.js';
 
@@ -213,27 +134,27 @@ export function gatherFill2DStage(world: PhysicsWorld, count: number, pushed: nu
     A = s.arrays,
     P = s.params;
   A.length = 0;
-  A[GF_PX] = c.Position.x;
-  A[GF_PY] = c.Position.y;
-  A[GF_VX] = c.Velocity.x;
-  A[GF_VY] = c.Velocity.y;
-  A[GF_WZ] = c.AngularVelocity.z;
-  A[GF_FX] = c.Force.x;
-  A[GF_FY] = c.Force.y;
-  A[GF_FZ] = c.Force.z;
-  A[GF_BODY_TYPE] = cs.bodyType;
-  A[GF_INV_MASS] = cs.invMass;
-  A[GF_INV_INERTIA] = cs.invInertia;
-  A[GF_BODY_STATE] = cs.bodyState;
-  A[GF_BODY_EXTRA] = cs.bodyExtra;
+  A[GATHER.PX] = c.Position.x;
+  A[GATHER.PY] = c.Position.y;
+  A[GATHER.VX] = c.Velocity.x;
+  A[GATHER.VY] = c.Velocity.y;
+  A[GATHER.WZ] = c.AngularVelocity.z;
+  A[GATHER.FX] = c.Force.x;
+  A[GATHER.FY] = c.Force.y;
+  A[GATHER.FZ] = c.Force.z;
+  A[GATHER.BODY_TYPE] = cs.bodyType;
+  A[GATHER.INV_MASS] = cs.invMass;
+  A[GATHER.INV_INERTIA] = cs.invInertia;
+  A[GATHER.BODY_STATE] = cs.bodyState;
+  A[GATHER.BODY_EXTRA] = cs.bodyExtra;
   const h = world.h,
     g = world.gravity;
-  P[GF_H] = h;
-  P[GF_GX_H] = g[0]! * h;
-  P[GF_GY_H] = g[1]! * h;
-  P[GF_PUSHED] = pushed;
-  P[GF_DYNAMIC] = BodyType.Dynamic;
-  P[GF_KINEMATIC] = BodyType.Kinematic;
+  P[GATHER.H] = h;
+  P[GATHER.GX_H] = g[0]! * h;
+  P[GATHER.GY_H] = g[1]! * h;
+  P[GATHER.PUSHED] = pushed;
+  P[GATHER.DYNAMIC] = BodyType.Dynamic;
+  P[GATHER.KINEMATIC] = BodyType.Kinematic;
   runStage(pool, gatherFill2D, A, P, count - 1, cs.solverBodies.subarray(1, count));
 }
 
@@ -257,11 +178,11 @@ export function approach2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
   A.length = 0;
   approachArguments(cs, buf, A);
   const g = world.gravity;
-  P[AP_GX] = g[0]!;
-  P[AP_GY] = g[1]!;
-  P[AP_GZ] = g[2]!;
-  P[AP_DYNAMIC] = BodyType.Dynamic;
-  P[AP_BASE] = 0;
+  P[APPROACH.GX] = g[0]!;
+  P[APPROACH.GY] = g[1]!;
+  P[APPROACH.GZ] = g[2]!;
+  P[APPROACH.DYNAMIC] = BodyType.Dynamic;
+  P[APPROACH.BASE] = 0;
   runStage(pool, approach2D, A, P, n, null);
 }
 
@@ -317,42 +238,42 @@ export function finish2DStage(world: PhysicsWorld, buf: ContactBuffer): void {
     out = s.deepest;
   out.fill(0);
   A.length = 0;
-  A[FB_PX] = c.Position.x;
-  A[FB_PY] = c.Position.y;
-  A[FB_VX] = c.Velocity.x;
-  A[FB_VY] = c.Velocity.y;
-  A[FB_WZ] = c.AngularVelocity.z;
-  A[FB_ANGLE] = c.Angle.value;
-  A[FB_BODY_TYPE] = cs.bodyType;
-  A[FB_BODY_STATE] = cs.bodyState;
-  A[FB_BODY_EXTRA] = cs.bodyExtra;
-  A[FB_BODY_IMPACT] = cs.bodyImpact;
-  A[FB_RADIUS] = c.Ball.radius;
-  A[FB_RESTITUTION] = c.Material.restitution;
-  A[FB_DEEPEST] = out;
-  A[FB_IA] = buf.ia;
-  A[FB_IB] = buf.ib;
-  A[FB_SEPARATION] = buf.separation;
-  A[FB_NX] = buf.nx;
-  A[FB_NY] = buf.ny;
+  A[FINISH.PX] = c.Position.x;
+  A[FINISH.PY] = c.Position.y;
+  A[FINISH.VX] = c.Velocity.x;
+  A[FINISH.VY] = c.Velocity.y;
+  A[FINISH.WZ] = c.AngularVelocity.z;
+  A[FINISH.ANGLE] = c.Angle.value;
+  A[FINISH.BODY_TYPE] = cs.bodyType;
+  A[FINISH.BODY_STATE] = cs.bodyState;
+  A[FINISH.BODY_EXTRA] = cs.bodyExtra;
+  A[FINISH.BODY_IMPACT] = cs.bodyImpact;
+  A[FINISH.RADIUS] = c.Ball.radius;
+  A[FINISH.RESTITUTION] = c.Material.restitution;
+  A[FINISH.DEEPEST] = out;
+  A[FINISH.IA] = buf.ia;
+  A[FINISH.IB] = buf.ib;
+  A[FINISH.SEPARATION] = buf.separation;
+  A[FINISH.NX] = buf.nx;
+  A[FINISH.NY] = buf.ny;
   const list = cs.solverBodies,
     box = cs.boundary;
   const fh = (-0.5 * world.h * world.h) / cs.settings.solverSubsteps,
     g = world.gravity;
-  P[FB_FREE_X] = g[0]! * fh;
-  P[FB_FREE_Y] = g[1]! * fh;
-  P[FB_DYNAMIC] = BodyType.Dynamic;
-  P[FB_IMPACT_STRIDE] = IMPACT_STRIDE;
-  P[FB_CONTAIN] = box.enabled ? 1 : 0;
-  P[FB_MIN_X] = box.min[0]!;
-  P[FB_MIN_Y] = box.min[1]!;
-  P[FB_MAX_X] = box.max[0]!;
-  P[FB_MAX_Y] = box.max[1]!;
-  P[FB_BOX_RESTITUTION] = box.restitution;
-  P[FB_GX] = g[0]!;
-  P[FB_GY] = g[1]!;
-  P[FB_ROWS] = buf.count;
-  P[FB_BODIES] = count - 1;
+  P[FINISH.FREE_X] = g[0]! * fh;
+  P[FINISH.FREE_Y] = g[1]! * fh;
+  P[FINISH.DYNAMIC] = BodyType.Dynamic;
+  P[FINISH.IMPACT_STRIDE] = IMPACT_STRIDE;
+  P[FINISH.CONTAIN] = box.enabled ? 1 : 0;
+  P[FINISH.MIN_X] = box.min[0]!;
+  P[FINISH.MIN_Y] = box.min[1]!;
+  P[FINISH.MAX_X] = box.max[0]!;
+  P[FINISH.MAX_Y] = box.max[1]!;
+  P[FINISH.BOX_RESTITUTION] = box.restitution;
+  P[FINISH.GX] = g[0]!;
+  P[FINISH.GY] = g[1]!;
+  P[FINISH.ROWS] = buf.count;
+  P[FINISH.BODIES] = count - 1;
   const check = runStage(pool, finishBodies2D, A, P, count - 1, list.subarray(1, count));
   if (check - check !== 0) reportNonFinite(world, list.subarray(1, count), 'collide');
   // The deepest overlap left: one slot a thread, the least of them (0 where a thread had no rows).
@@ -382,31 +303,31 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   const blocks = restitutionBlocks2D(colored.plan, buf.count, st.restitutionIterations);
   if (colored.claim.length < blocks) colored.claim = grown(colored.claim, Math.max(blocks, 2 * colored.claim.length));
   A.length = 0;
-  A[RC_PACK] = colored.pack;
-  A[RC_PLAN] = colored.plan;
-  A[RC_COUNTERS] = colored.bar;
-  A[RC_BODY_STATE] = cs.bodyState;
-  A[RC_IA] = buf.ia;
-  A[RC_IB] = buf.ib;
-  A[RC_NX] = buf.nx;
-  A[RC_NY] = buf.ny;
-  A[RC_NORMAL_MASS] = buf.normalMass;
-  A[RC_RESTITUTION] = buf.restitution;
-  A[RC_RELATIVE_VELOCITY] = buf.relativeVelocity;
-  A[RC_IMPACT_VELOCITY] = buf.impactVelocity;
-  A[RC_MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
-  A[RC_TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
-  A[RC_IMPULSE] = buf.impulse;
-  A[RC_BOUNDS] = colored.bounds;
-  A[RC_PAIR] = colored.pair;
-  A[RC_ROW] = colored.row;
-  A[RC_CLAIM] = colored.claim;
-  P[RC_ROWS] = buf.count;
-  P[RC_THRESHOLD] = st.restitutionThreshold;
-  P[RC_ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
-  P[RC_ITERATIONS] = st.restitutionIterations;
-  P[RC_MAY_WAIT] = callerMayWait() ? 1 : 0;
-  P[RC_SPIN_US] = SPIN_MICROSECONDS;
+  A[RESTITUTION.PACK] = colored.pack;
+  A[RESTITUTION.PLAN] = colored.plan;
+  A[RESTITUTION.COUNTERS] = colored.bar;
+  A[RESTITUTION.BODY_STATE] = cs.bodyState;
+  A[RESTITUTION.IA] = buf.ia;
+  A[RESTITUTION.IB] = buf.ib;
+  A[RESTITUTION.NX] = buf.nx;
+  A[RESTITUTION.NY] = buf.ny;
+  A[RESTITUTION.NORMAL_MASS] = buf.normalMass;
+  A[RESTITUTION.RESTITUTION] = buf.restitution;
+  A[RESTITUTION.RELATIVE_VELOCITY] = buf.relativeVelocity;
+  A[RESTITUTION.IMPACT_VELOCITY] = buf.impactVelocity;
+  A[RESTITUTION.MAX_NORMAL_IMPULSE] = buf.maxNormalImpulse;
+  A[RESTITUTION.TOTAL_NORMAL_IMPULSE] = buf.totalNormalImpulse;
+  A[RESTITUTION.IMPULSE] = buf.impulse;
+  A[RESTITUTION.BOUNDS] = colored.bounds;
+  A[RESTITUTION.PAIR] = colored.pair;
+  A[RESTITUTION.ROW] = colored.row;
+  A[RESTITUTION.CLAIM] = colored.claim;
+  P[RESTITUTION.ROWS] = buf.count;
+  P[RESTITUTION.THRESHOLD] = st.restitutionThreshold;
+  P[RESTITUTION.ELASTIC_THRESHOLD] = st.elasticRestitutionThreshold;
+  P[RESTITUTION.ITERATIONS] = st.restitutionIterations;
+  P[RESTITUTION.MAY_WAIT] = callerMayWait() ? 1 : 0;
+  P[RESTITUTION.SPIN_US] = SPIN_MICROSECONDS;
   const bar = colored.bar,
     plan = colored.plan;
   const site = 'contactSolverSystem#restitution';
@@ -418,10 +339,10 @@ export function restitutionOnThreads(world: PhysicsWorld, buf: ContactBuffer): b
   bar[3] = 0;
   colored.claim.fill(0, 0, blocks);
   if (parallel) {
-    plan[PL_THREADS] = pool.threads;
+    plan[PLAN.THREADS] = pool.threads;
     pool.run('contactSolverSystem', restitutionColored2D, A, P, pool.threads, null);
   } else {
-    plan[PL_THREADS] = 1;
+    plan[PLAN.THREADS] = 1;
     restitutionColored2D(A, P, null, 0, 1, 0, KERNEL_HELPERS);
   }
   if (pool?.adaptive === true) pool.chooser.record(site, parallel, nowMs() - t0, buf.count);

@@ -7,61 +7,30 @@
  */
 
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
-import {
-  CS_BODY_BOUNDS,
-  CS_BODY_ORDER,
-  CS_BOUNDS,
-  CS_GROUP,
-  CS_GROUP_SLOTS,
-  CS_IA,
-  CS_IB,
-  CS_NORMAL_IMPULSE,
-  CS_NORMAL_MASS,
-  CS_OFFSETS,
-  CS_PLAN,
-  CS_TANGENT_IMPULSE,
-  CS_TANGENT_MASS,
-  PL_COLORS,
-  PL_EVEN_BLOCKS,
-  PL_PACKED,
-  PL_PACKED_ROWS,
-  PL_STRIPS,
-  SC_P_BODIES,
-  SC_P_ROWS,
-  SC_P_STRIPS,
-  SC_STRIP,
-  SP_BLOCK_ROWS,
-  SP_COUNTS,
-  SP_CUT,
-  SP_CUT_HERE,
-  SP_MAX_COLORS,
-  SP_MAX_OVERFLOW,
-  SP_NEXT,
-  SP_PACK,
-  SP_PARTS,
-  SP_PLAN_HEAD,
-  SP_START,
-} from './colored-slots-2d.js';
 import type { coloredPack2D } from './coloring-kernel.js';
+import * as PLAN from './slots/colored-plan.js';
+import * as SOLVE from './slots/colored-solve.js';
+import * as CUT from './slots/strip-cut.js';
+import * as STRIP_PLAN from './slots/strip-plan.js';
 import type { stripCut2D } from './strips-kernel.js';
 
 /**
- * Thread kernel: plans the coloured solve of the contact buffer's rows by `P[SC_P_STRIPS]` strips, on the thread
+ * Thread kernel: plans the coloured solve of the contact buffer's rows by `P[CUT.P_STRIPS]` strips, on the thread
  * whose range is not empty (lo < hi; other ranges do nothing). In order:
- * 1. the strip cut (solver/strips-kernel.ts stripCut2D, when P[SP_CUT_HERE] = 1; else the cut in `strip` is
- *    already one of P[SC_P_STRIPS] strips);
+ * 1. the strip cut (solver/strips-kernel.ts stripCut2D, when P[STRIP_PLAN.CUT_HERE] = 1; else the cut in `strip` is
+ *    already one of P[CUT.P_STRIPS] strips);
  * 2. each row's pack group, that of its lower strip (even strips first: strip 2j is group j, strip
- *    2j + 1 group strips / 2 + j; P[SP_MAX_COLORS] the overflow group, rows joining bodies more than one
+ *    2j + 1 group strips / 2 + j; P[STRIP_PLAN.MAX_COLORS] the overflow group, rows joining bodies more than one
  *    strip apart; 255 not packed: a row that can do nothing, no mass and no impulse), counted per group
- *    and per packing range; if more than P[SP_MAX_OVERFLOW] rows overflow, stops and returns -1 (fewer strips may do);
+ *    and per packing range; if more than P[STRIP_PLAN.MAX_OVERFLOW] rows overflow, stops and returns -1 (fewer strips may do);
  * 3. the movable bodies by strip pair (a counting sort into `bodyOrder`) and each even block's range of
  *    them (`bodyBounds`: block m covers the pairs from its own, or 0 for the first, to the next
  *    block's, so an even strip without rows passes its bodies to the block before it);
  * 4. the layout (stripLayout2D: two colours, even and odd groups, a group one block);
- * 5. when P[SP_PACK] = 1, the packing of every row into the pack (solver/coloring-kernel.ts coloredPack2D,
- *    each of the P[SP_PARTS] packing ranges), and plan[PL_PACKED] = 1 to say so.
- * A and P: the SP_ slots of solver/colored-slots-2d.ts (A starts with solveColored2D's CS_ arrays,
- * then stripCut2D's SC_ arrays from SP_CUT; P's first slots are stripCut2D's). `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
+ * 5. when P[STRIP_PLAN.PACK] = 1, the packing of every row into the pack (solver/coloring-kernel.ts coloredPack2D,
+ *    each of the P[STRIP_PLAN.PARTS] packing ranges), and plan[PLAN.PACKED] = 1 to say so.
+ * A and P: the STRIP_PLAN slots (solver/slots/strip-plan.ts: A starts with solveColored2D's SOLVE
+ * arrays, then stripCut2D's CUT arrays from STRIP_PLAN.CUT_ARRAYS; P's first slots are stripCut2D's). `H` is KERNEL_HELPERS: 0 coloredPack2D, 10 stripCut2D,
  * 11 stripLayout2D. Returns 1 when planned, -1 when too many rows overflow.
  * @category Collision
  */
@@ -75,27 +44,27 @@ export function stripPlan2D(
   H: readonly KernelHelper[],
 ): number {
   if (lo >= hi) return 0;
-  const plan = A[CS_PLAN] as Int32Array;
-  const bodies = P[SC_P_BODIES]!,
-    n = P[SC_P_ROWS]!,
-    strips = P[SC_P_STRIPS]!,
-    parts = P[SP_PARTS]!,
-    W = P[CS_GROUP_SLOTS]!,
-    MAXC = P[SP_MAX_COLORS]!;
-  if (P[SP_CUT_HERE] === 1) (H[10] as typeof stripCut2D)(A, P, null, 0, 1);
+  const plan = A[SOLVE.PLAN] as Int32Array;
+  const bodies = P[CUT.P_BODIES]!,
+    n = P[CUT.P_ROWS]!,
+    strips = P[CUT.P_STRIPS]!,
+    parts = P[STRIP_PLAN.PARTS]!,
+    W = P[SOLVE.GROUP_SLOTS]!,
+    MAXC = P[STRIP_PLAN.MAX_COLORS]!;
+  if (P[STRIP_PLAN.CUT_HERE] === 1) (H[10] as typeof stripCut2D)(A, P, null, 0, 1);
   // Each row's group, counted per group and per packing range.
-  const IA = A[CS_IA] as Int32Array,
-    IB = A[CS_IB] as Int32Array,
-    NM = A[CS_NORMAL_MASS] as Float64Array,
-    TM = A[CS_TANGENT_MASS] as Float64Array;
-  const LN = A[CS_NORMAL_IMPULSE] as Float64Array,
-    LT = A[CS_TANGENT_IMPULSE] as Float64Array,
-    color = A[CS_GROUP] as Uint8Array,
-    partCounts = A[CS_OFFSETS] as Int32Array;
-  const strip = A[SP_CUT + SC_STRIP] as Uint8Array,
-    counts = A[SP_COUNTS] as Int32Array,
-    start = A[SP_START] as Int32Array,
-    next = A[SP_NEXT] as Int32Array;
+  const IA = A[SOLVE.IA] as Int32Array,
+    IB = A[SOLVE.IB] as Int32Array,
+    NM = A[SOLVE.NORMAL_MASS] as Float64Array,
+    TM = A[SOLVE.TANGENT_MASS] as Float64Array;
+  const LN = A[SOLVE.NORMAL_IMPULSE] as Float64Array,
+    LT = A[SOLVE.TANGENT_IMPULSE] as Float64Array,
+    color = A[SOLVE.GROUP] as Uint8Array,
+    partCounts = A[SOLVE.OFFSETS] as Int32Array;
+  const strip = A[STRIP_PLAN.CUT_ARRAYS + CUT.STRIP] as Uint8Array,
+    counts = A[STRIP_PLAN.COUNTS] as Int32Array,
+    start = A[STRIP_PLAN.START] as Int32Array,
+    next = A[STRIP_PLAN.NEXT] as Int32Array;
   const half = strips >> 1;
   partCounts.fill(0, 0, parts * W);
   counts.fill(0);
@@ -132,10 +101,10 @@ export function stripPlan2D(
       partCounts[base + c] = partCounts[base + c]! + 1;
     }
   }
-  if (overflow > P[SP_MAX_OVERFLOW]!) return -1;
+  if (overflow > P[STRIP_PLAN.MAX_OVERFLOW]!) return -1;
   // The movable bodies by strip pair (counting sort), for the even blocks' body stages.
-  const bb = A[CS_BODY_BOUNDS] as Int32Array,
-    order = A[CS_BODY_ORDER] as Int32Array;
+  const bb = A[SOLVE.BODY_BOUNDS] as Int32Array,
+    order = A[SOLVE.BODY_ORDER] as Int32Array;
   bb.fill(0, 0, half + 1);
   for (let k = 1; k < bodies; k++) if (strip[k] !== 255) bb[(strip[k]! >> 1) + 1]++;
   for (let j = 0; j < half; j++) bb[j + 1] = bb[j + 1]! + bb[j]!;
@@ -152,40 +121,40 @@ export function stripPlan2D(
   let blocks = 0;
   for (let j = 0; j < half; j++) if (counts[j]! > 0) start[blocks++] = j;
   for (let m = 0; m <= blocks; m++) bb[m] = bb[m === 0 ? 0 : m === blocks ? half : start[m]!]!;
-  plan[PL_STRIPS] = blocks === 0 ? 0 : 1;
-  plan[PL_EVEN_BLOCKS] = blocks;
+  plan[PLAN.STRIPS] = blocks === 0 ? 0 : 1;
+  plan[PLAN.EVEN_BLOCKS] = blocks;
   (H[11] as typeof stripLayout2D)(A, P, strips, half);
-  if (P[SP_PACK] === 1) {
+  if (P[STRIP_PLAN.PACK] === 1) {
     for (let blk = 0; blk < parts; blk++) (H[0] as typeof coloredPack2D)(A, P, blk, parts);
-    plan[PL_PACKED] = 1;
+    plan[PLAN.PACKED] = 1;
   }
   return 1;
 }
 
 /**
  * Kernel helper: lays the pack out from the rows' groups (counted by stripPlan2D or solver/coloring.ts
- * colorRows): groups 0 .. `groups` - 1 in order, then the overflow group (P[SP_MAX_COLORS]); turns the offsets
- * (A[CS_OFFSETS], P[CS_GROUP_SLOTS] slots a packing range) into each packing range's first slot of each group (a range's
+ * colorRows): groups 0 .. `groups` - 1 in order, then the overflow group (P[STRIP_PLAN.MAX_COLORS]); turns the offsets
+ * (A[SOLVE.OFFSETS], P[SOLVE.GROUP_SLOTS] slots a packing range) into each packing range's first slot of each group (a range's
  * rows of a group follow the earlier ranges' rows of it, so the pack is in buffer order within each
- * group however many threads pack it) and fills the blocks (A[CS_BOUNDS]). With `half` > 0 (strips) group g
+ * group however many threads pack it) and fills the blocks (A[SOLVE.BOUNDS]). With `half` > 0 (strips) group g
  * has colour 0 below `half` and 1 from it, and is one block; with `half` = 0 (graph colours) group g is
- * colour g, cut into blocks of P[SP_BLOCK_ROWS] rows. The plan (A[CS_PLAN]) gets colour c's first block at P[SP_PLAN_HEAD] + c (the
+ * colour g, cut into blocks of P[STRIP_PLAN.BLOCK_ROWS] rows. The plan (A[SOLVE.PLAN]) gets colour c's first block at P[STRIP_PLAN.PLAN_HEAD] + c (the
  * overflow colour, after the others, one block), the colours at slot 4 and the rows to pack at slot 8.
  * A and P as stripPlan2D's (42 counts, 43 start, 44 next). Returns the rows to pack.
  * @category Collision
  */
 export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number, half: number): number {
-  const plan = A[CS_PLAN] as Int32Array,
-    partCounts = A[CS_OFFSETS] as Int32Array,
-    bounds = A[CS_BOUNDS] as Int32Array;
-  const counts = A[SP_COUNTS] as Int32Array,
-    start = A[SP_START] as Int32Array,
-    next = A[SP_NEXT] as Int32Array;
-  const parts = P[SP_PARTS]!,
-    W = P[CS_GROUP_SLOTS]!,
-    HEAD = P[SP_PLAN_HEAD]!,
-    MAXC = P[SP_MAX_COLORS]!,
-    blockRows = P[SP_BLOCK_ROWS]!;
+  const plan = A[SOLVE.PLAN] as Int32Array,
+    partCounts = A[SOLVE.OFFSETS] as Int32Array,
+    bounds = A[SOLVE.BOUNDS] as Int32Array;
+  const counts = A[STRIP_PLAN.COUNTS] as Int32Array,
+    start = A[STRIP_PLAN.START] as Int32Array,
+    next = A[STRIP_PLAN.NEXT] as Int32Array;
+  const parts = P[STRIP_PLAN.PARTS]!,
+    W = P[SOLVE.GROUP_SLOTS]!,
+    HEAD = P[STRIP_PLAN.PLAN_HEAD]!,
+    MAXC = P[STRIP_PLAN.MAX_COLORS]!,
+    blockRows = P[STRIP_PLAN.BLOCK_ROWS]!;
   const colors = half > 0 ? 2 : groups;
   start.fill(0);
   let at = 0;
@@ -222,7 +191,7 @@ export function stripLayout2D(A: KernelArray[], P: Float64Array, groups: number,
   if (start[groups + 1]! > start[groups]!) bounds[nb++] = start[groups]!;
   plan[HEAD + colors + 1] = nb;
   bounds[nb] = at;
-  plan[PL_COLORS] = colors;
-  plan[PL_PACKED_ROWS] = at;
+  plan[PLAN.COLORS] = colors;
+  plan[PLAN.PACKED_ROWS] = at;
   return at;
 }

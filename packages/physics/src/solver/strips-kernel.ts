@@ -8,26 +8,7 @@
 
 import type { KernelArray } from '../threads/kernel-types.js';
 import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W, BX_BASE_X, BX_BASE_Y, BX_STRIDE } from './body-state-layout.js';
-import {
-  SC_BASE,
-  SC_BIN,
-  SC_BIN_ROWS,
-  SC_BIN_STRIP,
-  SC_BINS,
-  SC_BODIES,
-  SC_BODY_EXTRA,
-  SC_BODY_STATE,
-  SC_BODY_TYPE,
-  SC_DYN,
-  SC_IA,
-  SC_IB,
-  SC_NO_BIN,
-  SC_P_BODIES,
-  SC_P_DYNAMIC,
-  SC_P_ROWS,
-  SC_P_STRIPS,
-  SC_STRIP,
-} from './colored-slots-2d.js';
+import * as CUT from './slots/strip-cut.js';
 
 /**
  * Cuts a step's movable solver bodies into `P[2]` strips across the longer axis of their spread, each
@@ -37,7 +18,7 @@ import {
  * bin (by the row's first movable body), each bin's strip at the rows' quantiles (the strip of the
  * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
- * A and P: the SC_ slots of solver/colored-slots-2d.ts; the arrays are A[b + slot] for b = P[SC_BASE] (0
+ * A and P: the CUT slots (solver/slots/strip-cut.ts); the arrays are A[b + slot] for b = P[CUT.BASE] (0
  * when they are A's only arrays; the strip plan, solver/strip-plan-kernel.ts, passes them after its own
  * and calls this as a helper).
  * Returns 0.
@@ -45,24 +26,24 @@ import {
  */
 export function stripCut2D(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
-  const b = P[SC_BASE]!;
-  const sb = A[b + SC_BODY_STATE] as Float64Array,
-    ex = A[b + SC_BODY_EXTRA] as Float64Array,
-    type = A[b + SC_BODY_TYPE] as Uint8Array,
-    list = A[b + SC_BODIES] as Int32Array;
-  const dyn = A[b + SC_DYN] as Uint8Array,
-    strip = A[b + SC_STRIP] as Uint8Array,
-    binOf = A[b + SC_BIN] as Uint16Array;
-  const hist = A[b + SC_BIN_ROWS] as Int32Array,
-    binStrip = A[b + SC_BIN_STRIP] as Uint8Array;
-  const IA = A[b + SC_IA] as Int32Array,
-    IB = A[b + SC_IB] as Int32Array;
-  const bodies = P[SC_P_BODIES]!,
-    n = P[SC_P_ROWS]!,
-    strips = P[SC_P_STRIPS]!,
-    BINS = P[SC_BINS]!,
-    DYNAMIC = P[SC_P_DYNAMIC]!,
-    NO_BIN = P[SC_NO_BIN]!;
+  const b = P[CUT.BASE]!;
+  const sb = A[b + CUT.BODY_STATE] as Float64Array,
+    ex = A[b + CUT.BODY_EXTRA] as Float64Array,
+    type = A[b + CUT.BODY_TYPE] as Uint8Array,
+    list = A[b + CUT.BODIES] as Int32Array;
+  const dyn = A[b + CUT.DYN] as Uint8Array,
+    strip = A[b + CUT.STRIP] as Uint8Array,
+    binOf = A[b + CUT.BIN] as Uint16Array;
+  const hist = A[b + CUT.BIN_ROWS] as Int32Array,
+    binStrip = A[b + CUT.BIN_STRIP] as Uint8Array;
+  const IA = A[b + CUT.IA] as Int32Array,
+    IB = A[b + CUT.IB] as Int32Array;
+  const bodies = P[CUT.P_BODIES]!,
+    n = P[CUT.P_ROWS]!,
+    strips = P[CUT.P_STRIPS]!,
+    BINS = P[CUT.BINS]!,
+    DYNAMIC = P[CUT.P_DYNAMIC]!,
+    NO_BIN = P[CUT.NO_BIN]!;
   // Gravity goes to the dynamic solver bodies (as integrateVelocities in solver/contact-solver.ts).
   dyn[0] = 0;
   for (let k = 1; k < bodies; k++) dyn[k] = type[list[k]!] === DYNAMIC ? 1 : 0;

@@ -6,25 +6,25 @@
  */
 
 import type { KernelArray } from '../threads/kernel-types.js';
-import { WS_A, WS_B, WS_FEATURE, WS_KIND, WS_ROWS, WS_SLOT_COUNT, WS_SLOTS } from './warm-start-slots.js';
+import * as WARM from './slots/warm-start.js';
 
 /**
- * Fills the warm-start table of P[WS_ROWS] contact rows: slots zeroed, then each row i stored as i + 1 at
+ * Fills the warm-start table of P[WARM.ROWS] contact rows: slots zeroed, then each row i stored as i + 1 at
  * the first free slot from hashKey(kind, a, b, feature) (contacts.ts: the hash and linear probing that
  * findWarmStart and the preparation kernel read the table with). The whole table is built on the thread whose range is
- * not empty (lo < hi); other ranges do nothing. A and P: the WS_ slots of solver/warm-start-slots.ts.
+ * not empty (lo < hi); other ranges do nothing. A and P: the WARM slots (solver/slots/warm-start.ts).
  * Returns 0.
  * @category Collision
  */
 export function warmStartTable(A: KernelArray[], P: Float64Array, _ids: Int32Array | null, lo: number, hi: number): number {
   if (lo >= hi) return 0;
-  const slots = A[WS_SLOTS] as Int32Array,
-    kind = A[WS_KIND] as Uint8Array,
-    CA = A[WS_A] as Int32Array,
-    CB = A[WS_B] as Int32Array,
-    F = A[WS_FEATURE] as Int32Array;
-  const n = P[WS_ROWS]!,
-    size = P[WS_SLOT_COUNT]!,
+  const slots = A[WARM.SLOTS] as Int32Array,
+    kind = A[WARM.KIND] as Uint8Array,
+    CA = A[WARM.A] as Int32Array,
+    CB = A[WARM.B] as Int32Array,
+    F = A[WARM.FEATURE] as Int32Array;
+  const n = P[WARM.ROWS]!,
+    size = P[WARM.SLOT_COUNT]!,
     mask = size - 1;
   slots.fill(0, 0, size);
   for (let i = 0; i < n; i++) {

@@ -12,11 +12,12 @@ import { WORKER_MAIN_SOURCE } from './worker-main.js';
 let cached: { kernels: readonly Kernel[]; helpers: readonly KernelHelper[]; source: string } | null = null;
 
 /**
- * A layout constant left as a name in a kernel's text (solver/body-state-layout.ts BS2_, BS3_, BX_,
- * BI_; solver/contact-pack-2d.ts PK_ and the strides): the build that made this code did not fold the
- * constant modules, and a worker would not know the name.
+ * A layout constant left as a name in a kernel's text: an offset of solver/body-state-layout.ts (BS2_,
+ * BS3_, BX_, BI_) or solver/contact-pack-2d.ts (PK_), a stride, or a slot of a namespace-imported slot
+ * module (`GATHER.PX`: an all-capitals name, a dot and an all-capitals name). The build that made this
+ * code did not fold the constant modules, and a worker would not know the name.
  */
-const UNFOLDED = /(?<![.\w$])((?:BS2|BS3|BX|BI|PK)_[A-Z0-9_]+|[A-Z][A-Z0-9]*_STRIDE)\b/;
+const UNFOLDED = /(?<![.\w$])((?:BS2|BS3|BX|BI|PK)_[A-Z0-9_]+|[A-Z][A-Z0-9]*_STRIDE|[A-Z][A-Z0-9_]*\.[A-Z][A-Z0-9_]*)\b/;
 
 /**
  * The worker's source text for a kernel table and its helpers (kept for the next pool of the same ones).

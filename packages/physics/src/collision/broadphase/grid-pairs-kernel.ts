@@ -5,39 +5,11 @@
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
-import {
-  BP_BODY_TYPE,
-  BP_BUCKET_START,
-  BP_CAPACITY,
-  BP_CELL_X,
-  BP_CELL_Y,
-  BP_CELL_Z,
-  BP_COUNTS,
-  BP_DIMENSIONS,
-  BP_HASH_MASK,
-  BP_MARGIN,
-  BP_ORIGIN_X,
-  BP_ORIGIN_Y,
-  BP_ORIGIN_Z,
-  BP_OUT,
-  BP_OUT_A,
-  BP_OUT_B,
-  BP_OUT_FIELDS,
-  BP_OUT_WAKE,
-  BP_OX,
-  BP_OY,
-  BP_OZ,
-  BP_RADIUS,
-  BP_REST_TIME,
-  BP_SORTED,
-  BP_SPAN_X,
-  BP_SPAN_XZ,
-  BP_WAKE_COUNTS,
-} from './ball-pair-slots.js';
+import * as PAIRS from './ball-pair-slots.js';
 
 /**
  * The cell pass over grid bodies lo .. hi - 1 (collision/broadphase/grid.ts's grid bodies, with the body types as
- * they were when the pass began). A and P: the BP_ slots of collision/broadphase/ball-pair-slots.ts;
+ * they were when the pass began). A and P: the PAIRS slots (collision/broadphase/ball-pair-slots.ts);
  * range p writes its pairs and its wake requests to its own output arrays, which the caller appends,
  * and wakes, in range order. The pairs are those of collision/broadphase/grid.ts's loop (addBallPair: no pair of two sleeping balls, nor of
  * two balls neither of which is dynamic unless a kinematic one meets a sleeping one). The one-thread
@@ -47,31 +19,31 @@ import {
  * @category Collision
  */
 export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const sorted = A[BP_SORTED] as Int32Array,
-    cellX = A[BP_CELL_X] as Int32Array,
-    cellY = A[BP_CELL_Y] as Int32Array,
-    cellZ = A[BP_CELL_Z] as Int32Array;
-  const start = A[BP_BUCKET_START] as Int32Array,
-    ox = A[BP_OX] as Float64Array,
-    oy = A[BP_OY] as Float64Array,
-    oz = A[BP_OZ] as Float64Array;
-  const radius = A[BP_RADIUS] as Float64Array,
-    margin = A[BP_MARGIN] as Float64Array,
-    type = A[BP_BODY_TYPE] as Uint8Array,
-    counts = A[BP_COUNTS] as Int32Array;
-  const rest = A[BP_REST_TIME] as Float64Array;
-  const out = BP_OUT + BP_OUT_FIELDS * part;
-  const outA = A[out + BP_OUT_A] as Int32Array,
-    outB = A[out + BP_OUT_B] as Int32Array,
-    outW = A[out + BP_OUT_WAKE] as Int32Array;
-  const mask = P[BP_HASH_MASK]!,
-    is3D = P[BP_DIMENSIONS] === 3,
-    cap = P[BP_CAPACITY]!;
-  const sX = P[BP_SPAN_X]!,
-    sXZ = P[BP_SPAN_XZ]!,
-    gx0 = P[BP_ORIGIN_X]!,
-    gy0 = P[BP_ORIGIN_Y]!,
-    gz0 = P[BP_ORIGIN_Z]!,
+  const sorted = A[PAIRS.SORTED] as Int32Array,
+    cellX = A[PAIRS.CELL_X] as Int32Array,
+    cellY = A[PAIRS.CELL_Y] as Int32Array,
+    cellZ = A[PAIRS.CELL_Z] as Int32Array;
+  const start = A[PAIRS.BUCKET_START] as Int32Array,
+    ox = A[PAIRS.OX] as Float64Array,
+    oy = A[PAIRS.OY] as Float64Array,
+    oz = A[PAIRS.OZ] as Float64Array;
+  const radius = A[PAIRS.RADIUS] as Float64Array,
+    margin = A[PAIRS.MARGIN] as Float64Array,
+    type = A[PAIRS.BODY_TYPE] as Uint8Array,
+    counts = A[PAIRS.COUNTS] as Int32Array;
+  const rest = A[PAIRS.REST_TIME] as Float64Array;
+  const out = PAIRS.OUT + PAIRS.OUT_FIELDS * part;
+  const outA = A[out + PAIRS.OUT_A] as Int32Array,
+    outB = A[out + PAIRS.OUT_B] as Int32Array,
+    outW = A[out + PAIRS.OUT_WAKE] as Int32Array;
+  const mask = P[PAIRS.HASH_MASK]!,
+    is3D = P[PAIRS.DIMENSIONS] === 3,
+    cap = P[PAIRS.CAPACITY]!;
+  const sX = P[PAIRS.SPAN_X]!,
+    sXZ = P[PAIRS.SPAN_XZ]!,
+    gx0 = P[PAIRS.ORIGIN_X]!,
+    gy0 = P[PAIRS.ORIGIN_Y]!,
+    gz0 = P[PAIRS.ORIGIN_Z]!,
     dense = sX > 0;
   // The half neighbourhood, as (dx, dy, dz) triples: each unordered pair of neighbouring cells once
   // (2D: 4 of the 8 neighbours; 3D: 13 of the 26).
@@ -136,6 +108,6 @@ export function ballPairs(A: KernelArray[], P: Float64Array, ids: Int32Array | n
     }
   }
   counts[part] = count;
-  counts[BP_WAKE_COUNTS + part] = count < 0 ? -1 : woken;
+  counts[PAIRS.WAKE_COUNTS + part] = count < 0 ? -1 : woken;
   return ids === null ? 0 : 0;
 }

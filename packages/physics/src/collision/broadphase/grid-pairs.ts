@@ -18,30 +18,7 @@ import { runOnPool } from '../../threads/parallel.js';
 import { sharedCopy, sharedMemoryAvailable, type ThreadPool } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { BodyType, type CollisionState, PairKind } from '../state.js';
-import {
-  BP_BODY_TYPE,
-  BP_BUCKET_START,
-  BP_CAPACITY,
-  BP_CELL_X,
-  BP_CELL_Y,
-  BP_CELL_Z,
-  BP_COUNTS,
-  BP_DIMENSIONS,
-  BP_HASH_MASK,
-  BP_MARGIN,
-  BP_ORIGIN_X,
-  BP_ORIGIN_Y,
-  BP_ORIGIN_Z,
-  BP_OX,
-  BP_OY,
-  BP_OZ,
-  BP_RADIUS,
-  BP_REST_TIME,
-  BP_SORTED,
-  BP_SPAN_X,
-  BP_SPAN_XZ,
-  BP_WAKE_COUNTS,
-} from './ball-pair-slots.js';
+import * as PAIRS from './ball-pair-slots.js';
 import { ballPairs } from './grid-pairs-kernel.js';
 
 export { ballPairs } from './grid-pairs-kernel.js';
@@ -52,8 +29,8 @@ export { ballPairs } from './grid-pairs-kernel.js';
  */
 export const PAIRS_MIN_PER_THREAD = 2048;
 
-/** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at BP_WAKE_COUNTS + p their wake counts. */
-const MAX_PARTS = BP_WAKE_COUNTS;
+/** Most threads the pass runs on: `counts` holds the ranges' pair counts, then at PAIRS.WAKE_COUNTS + p their wake counts. */
+const MAX_PARTS = PAIRS.WAKE_COUNTS;
 
 interface PairBuffers {
   a: Int32Array[];
@@ -129,30 +106,30 @@ export function ballPairsStage(
     }
     const A = buf.arrays;
     A.length = 0;
-    A[BP_SORTED] = g.sorted;
-    A[BP_CELL_X] = g.cellX;
-    A[BP_CELL_Y] = g.cellY;
-    A[BP_CELL_Z] = g.cellZ;
-    A[BP_BUCKET_START] = g.bucketStart;
-    A[BP_OX] = c.PreviousPosition.x;
-    A[BP_OY] = c.PreviousPosition.y;
-    A[BP_OZ] = c.PreviousPosition.z;
-    A[BP_RADIUS] = c.Ball.radius;
-    A[BP_MARGIN] = cs.margin;
-    A[BP_BODY_TYPE] = cs.bodyType;
-    A[BP_COUNTS] = buf.counts;
-    A[BP_REST_TIME] = cs.sleep.restTime;
-    // From BP_OUT on: each range's output arrays, in the order of the BP_OUT_ slots.
+    A[PAIRS.SORTED] = g.sorted;
+    A[PAIRS.CELL_X] = g.cellX;
+    A[PAIRS.CELL_Y] = g.cellY;
+    A[PAIRS.CELL_Z] = g.cellZ;
+    A[PAIRS.BUCKET_START] = g.bucketStart;
+    A[PAIRS.OX] = c.PreviousPosition.x;
+    A[PAIRS.OY] = c.PreviousPosition.y;
+    A[PAIRS.OZ] = c.PreviousPosition.z;
+    A[PAIRS.RADIUS] = c.Ball.radius;
+    A[PAIRS.MARGIN] = cs.margin;
+    A[PAIRS.BODY_TYPE] = cs.bodyType;
+    A[PAIRS.COUNTS] = buf.counts;
+    A[PAIRS.REST_TIME] = cs.sleep.restTime;
+    // From PAIRS.OUT on: each range's output arrays, in the order of the PAIRS.OUT_ slots.
     for (let p = 0; p < parts; p++) A.push(buf.a[p]!, buf.b[p]!, buf.w[p]!);
     const P = buf.params;
-    P[BP_HASH_MASK] = mask;
-    P[BP_DIMENSIONS] = world.dimensions;
-    P[BP_CAPACITY] = buf.a[0]!.length;
-    P[BP_SPAN_X] = g.spanX;
-    P[BP_SPAN_XZ] = g.spanXZ;
-    P[BP_ORIGIN_X] = g.originX;
-    P[BP_ORIGIN_Y] = g.originY;
-    P[BP_ORIGIN_Z] = g.originZ;
+    P[PAIRS.HASH_MASK] = mask;
+    P[PAIRS.DIMENSIONS] = world.dimensions;
+    P[PAIRS.CAPACITY] = buf.a[0]!.length;
+    P[PAIRS.SPAN_X] = g.spanX;
+    P[PAIRS.SPAN_XZ] = g.spanXZ;
+    P[PAIRS.ORIGIN_X] = g.originX;
+    P[PAIRS.ORIGIN_Y] = g.originY;
+    P[PAIRS.ORIGIN_Z] = g.originZ;
     buf.counts.fill(0);
     let threads = 1;
     if (pool !== null && runOnPool(pool, 'broadphaseSystem', ballPairs, A, P, small, null, PAIRS_MIN_PER_THREAD) !== null) {

@@ -5,83 +5,49 @@
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
-import {
-  BC_BALL,
-  BC_BODY_TYPE,
-  BC_CAPACITY,
-  BC_CAPACITY_0,
-  BC_COUNTS,
-  BC_DIMENSIONS,
-  BC_FIRST_ROW,
-  BC_H,
-  BC_OUT,
-  BC_OUT_A,
-  BC_OUT_B,
-  BC_OUT_FEATURE,
-  BC_OUT_FIELDS,
-  BC_OUT_KIND,
-  BC_OUT_NX,
-  BC_OUT_NY,
-  BC_OUT_NZ,
-  BC_OUT_RA,
-  BC_OUT_RB,
-  BC_OUT_SEPARATION,
-  BC_OX,
-  BC_OY,
-  BC_OZ,
-  BC_PAIR_A,
-  BC_PAIR_B,
-  BC_RADIUS,
-  BC_SKIP,
-  BC_SPECULATIVE,
-  BC_STATIC,
-  BC_STATIC_BALL,
-  BC_VX,
-  BC_VY,
-  BC_VZ,
-} from './ball-contact-slots.js';
+import * as CONTACT from './ball-contact-slots.js';
 
 /**
  * Ball-ball contacts of pairs lo .. hi - 1 (all BallBall pairs): the normal where the balls first
  * touch this step (swept test, Ericson 5.5.7), the separation where they were at the start of the
  * step, kept when the gap can close this step; pairs whose skip flag is set (a joint keeps the bodies
- * apart) make none. A and P: the BC_ slots of collision/narrowphase/ball-contact-slots.ts; range p
- * writes its contacts to its own output arrays, range 0 from row P[BC_FIRST_ROW] (its arrays are the
+ * apart) make none. A and P: the CONTACT slots (collision/narrowphase/ball-contact-slots.ts); range p
+ * writes its contacts to its own output arrays, range 0 from row P[CONTACT.FIRST_ROW] (its arrays are the
  * contact buffer's own, so its rows need no copy), the others from row 0. Returns 0.
  * @category Collision
  */
 export function ballContacts(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const pairA = A[BC_PAIR_A] as Int32Array,
-    pairB = A[BC_PAIR_B] as Int32Array;
-  const ox = A[BC_OX] as Float64Array,
-    oy = A[BC_OY] as Float64Array,
-    oz = A[BC_OZ] as Float64Array;
-  const vx = A[BC_VX] as Float64Array,
-    vy = A[BC_VY] as Float64Array,
-    vz = A[BC_VZ] as Float64Array;
-  const radius = A[BC_RADIUS] as Float64Array,
-    type = A[BC_BODY_TYPE] as Uint8Array,
-    counts = A[BC_COUNTS] as Int32Array;
-  const o = BC_OUT + BC_OUT_FIELDS * part;
-  const K = A[o + BC_OUT_KIND] as Uint8Array,
-    NX = A[o + BC_OUT_NX] as Float64Array,
-    NY = A[o + BC_OUT_NY] as Float64Array,
-    NZ = A[o + BC_OUT_NZ] as Float64Array;
-  const SEP = A[o + BC_OUT_SEPARATION] as Float64Array,
-    RA = A[o + BC_OUT_RA] as Float64Array,
-    RB = A[o + BC_OUT_RB] as Float64Array;
-  const CA = A[o + BC_OUT_A] as Int32Array,
-    CB = A[o + BC_OUT_B] as Int32Array,
-    FE = A[o + BC_OUT_FEATURE] as Int32Array;
-  const h = P[BC_H]!,
-    spec = P[BC_SPECULATIVE]!,
-    STATIC = P[BC_STATIC]!,
-    BALL = P[BC_BALL]!,
-    STATIC_BALL = P[BC_STATIC_BALL]!,
-    cap = part === 0 ? P[BC_CAPACITY_0]! : P[BC_CAPACITY]!;
-  const is3D = P[BC_DIMENSIONS] === 3;
-  const base = part === 0 ? P[BC_FIRST_ROW]! : 0,
-    skip = P[BC_SKIP]! >= 0 ? (A[P[BC_SKIP]!] as Uint8Array) : null;
+  const pairA = A[CONTACT.PAIR_A] as Int32Array,
+    pairB = A[CONTACT.PAIR_B] as Int32Array;
+  const ox = A[CONTACT.OX] as Float64Array,
+    oy = A[CONTACT.OY] as Float64Array,
+    oz = A[CONTACT.OZ] as Float64Array;
+  const vx = A[CONTACT.VX] as Float64Array,
+    vy = A[CONTACT.VY] as Float64Array,
+    vz = A[CONTACT.VZ] as Float64Array;
+  const radius = A[CONTACT.RADIUS] as Float64Array,
+    type = A[CONTACT.BODY_TYPE] as Uint8Array,
+    counts = A[CONTACT.COUNTS] as Int32Array;
+  const o = CONTACT.OUT + CONTACT.OUT_FIELDS * part;
+  const K = A[o + CONTACT.OUT_KIND] as Uint8Array,
+    NX = A[o + CONTACT.OUT_NX] as Float64Array,
+    NY = A[o + CONTACT.OUT_NY] as Float64Array,
+    NZ = A[o + CONTACT.OUT_NZ] as Float64Array;
+  const SEP = A[o + CONTACT.OUT_SEPARATION] as Float64Array,
+    RA = A[o + CONTACT.OUT_RA] as Float64Array,
+    RB = A[o + CONTACT.OUT_RB] as Float64Array;
+  const CA = A[o + CONTACT.OUT_A] as Int32Array,
+    CB = A[o + CONTACT.OUT_B] as Int32Array,
+    FE = A[o + CONTACT.OUT_FEATURE] as Int32Array;
+  const h = P[CONTACT.H]!,
+    spec = P[CONTACT.SPECULATIVE]!,
+    STATIC = P[CONTACT.STATIC]!,
+    BALL = P[CONTACT.BALL]!,
+    STATIC_BALL = P[CONTACT.STATIC_BALL]!,
+    cap = part === 0 ? P[CONTACT.CAPACITY_0]! : P[CONTACT.CAPACITY]!;
+  const is3D = P[CONTACT.DIMENSIONS] === 3;
+  const base = part === 0 ? P[CONTACT.FIRST_ROW]! : 0,
+    skip = P[CONTACT.SKIP]! >= 0 ? (A[P[CONTACT.SKIP]!] as Uint8Array) : null;
   let count = 0;
   for (let i = lo; i < hi; i++) {
     if (skip !== null && skip[i] === 1) continue;

@@ -17,29 +17,7 @@ import { jointKeepsApart } from '../../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../../world/options.js';
 import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
 import { BodyType, type CollisionState } from '../state.js';
-import {
-  BC_BALL,
-  BC_BODY_TYPE,
-  BC_CAPACITY,
-  BC_CAPACITY_0,
-  BC_COUNTS,
-  BC_DIMENSIONS,
-  BC_FIRST_ROW,
-  BC_H,
-  BC_OX,
-  BC_OY,
-  BC_OZ,
-  BC_PAIR_A,
-  BC_PAIR_B,
-  BC_RADIUS,
-  BC_SKIP,
-  BC_SPECULATIVE,
-  BC_STATIC,
-  BC_STATIC_BALL,
-  BC_VX,
-  BC_VY,
-  BC_VZ,
-} from './ball-contact-slots.js';
+import * as CONTACT from './ball-contact-slots.js';
 import { ballContacts } from './balls-kernel.js';
 
 /**
@@ -48,7 +26,7 @@ import { ballContacts } from './balls-kernel.js';
  */
 export const CONTACTS_MIN_PER_THREAD = 2048;
 
-/** The contact buffer's fields a range writes, in the order of the BC_OUT_ slots (collision/narrowphase/ball-contact-slots.ts). */
+/** The contact buffer's fields a range writes, in the order of the CONTACT.OUT_ slots (collision/narrowphase/ball-contact-slots.ts). */
 const FIELDS = ['kind', 'nx', 'ny', 'nz', 'separation', 'ra', 'rb', 'a', 'b', 'feature'] as const;
 
 /** Each range after the first: its arrays (FIELDS', typed as the buffer's), `cap` rows each; the ranges' counts. */
@@ -133,18 +111,18 @@ export function ballContactsStage(world: PhysicsWorld, cs: CollisionState, buf: 
   const c = world.components;
   const A = s.arrays;
   A.length = 0;
-  A[BC_PAIR_A] = cs.pairA;
-  A[BC_PAIR_B] = cs.pairB;
-  A[BC_OX] = c.PreviousPosition.x;
-  A[BC_OY] = c.PreviousPosition.y;
-  A[BC_OZ] = c.PreviousPosition.z;
-  A[BC_VX] = c.Velocity.x;
-  A[BC_VY] = c.Velocity.y;
-  A[BC_VZ] = c.Velocity.z;
-  A[BC_RADIUS] = c.Ball.radius;
-  A[BC_BODY_TYPE] = cs.bodyType;
-  A[BC_COUNTS] = s.counts;
-  // From BC_OUT on: each range's output arrays (FIELDS, in the order of the BC_OUT_ slots).
+  A[CONTACT.PAIR_A] = cs.pairA;
+  A[CONTACT.PAIR_B] = cs.pairB;
+  A[CONTACT.OX] = c.PreviousPosition.x;
+  A[CONTACT.OY] = c.PreviousPosition.y;
+  A[CONTACT.OZ] = c.PreviousPosition.z;
+  A[CONTACT.VX] = c.Velocity.x;
+  A[CONTACT.VY] = c.Velocity.y;
+  A[CONTACT.VZ] = c.Velocity.z;
+  A[CONTACT.RADIUS] = c.Ball.radius;
+  A[CONTACT.BODY_TYPE] = cs.bodyType;
+  A[CONTACT.COUNTS] = s.counts;
+  // From CONTACT.OUT on: each range's output arrays (FIELDS, in the order of the CONTACT.OUT_ slots).
   for (const f of FIELDS) A.push(buf[f]);
   if (pool !== null) for (let p = 1; p < threads; p++) for (const a of B!.out[p - 1]!) A.push(a);
   if (joints.noCollidePairs.size > 0) {
@@ -152,16 +130,16 @@ export function ballContactsStage(world: PhysicsWorld, cs: CollisionState, buf: 
     A.push(s.skip);
   }
   const P = s.params;
-  P[BC_H] = world.h;
-  P[BC_SPECULATIVE] = cs.settings.speculativeDistance;
-  P[BC_STATIC] = BodyType.Static;
-  P[BC_BALL] = ContactKind.Ball;
-  P[BC_STATIC_BALL] = ContactKind.StaticBall;
-  P[BC_CAPACITY] = B === null ? 0 : B.cap;
-  P[BC_CAPACITY_0] = buf.capacity;
-  P[BC_DIMENSIONS] = world.dimensions;
-  P[BC_FIRST_ROW] = buf.count;
-  P[BC_SKIP] = skipAt;
+  P[CONTACT.H] = world.h;
+  P[CONTACT.SPECULATIVE] = cs.settings.speculativeDistance;
+  P[CONTACT.STATIC] = BodyType.Static;
+  P[CONTACT.BALL] = ContactKind.Ball;
+  P[CONTACT.STATIC_BALL] = ContactKind.StaticBall;
+  P[CONTACT.CAPACITY] = B === null ? 0 : B.cap;
+  P[CONTACT.CAPACITY_0] = buf.capacity;
+  P[CONTACT.DIMENSIONS] = world.dimensions;
+  P[CONTACT.FIRST_ROW] = buf.count;
+  P[CONTACT.SKIP] = skipAt;
   const counts = s.counts;
   counts.fill(0);
   // The kernel's ranges cover lo .. hi - 1: the pool splits 0 .. m, so the pair arrays are offset views.

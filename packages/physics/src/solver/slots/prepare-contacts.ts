@@ -1,110 +1,112 @@
 /**
- * The argument slots of prepareContacts2D (solver/prepare-contacts-kernel.ts): where each array sits
- * in its `A` and each number in its `P`, for the kernel and its caller (solver/ball-prepare.ts). A
- * module of numeric constants only, which every build folds into the code (threads/worker-source.ts).
+ * The argument slots of prepareContacts2D (solver/prepare-contacts-kernel.ts), filled by
+ * prepare2DStage (solver/ball-prepare.ts): where each array sits in the kernel's `A` and each
+ * number in its `P`, imported as `PREPARE` (`A[PREPARE.NAME]`) by the kernel and by its caller. A
+ * module of numeric constants only, which every build folds into the code (threads/worker-
+ * source.ts).
  */
 
-// prepareContacts2D: A.
+// A: the arrays.
 /** Entity of body A of each contact row, 0 for the static world (Int32). */
-export const PC_A = 0;
+export const A = 0;
 /** Entity of body B (Int32). */
-export const PC_B = 1;
+export const B = 1;
 /** Solver index of body A (Int32). */
-export const PC_IA = 2;
+export const IA = 2;
 /** Solver index of body B (Int32). */
-export const PC_IB = 3;
+export const IB = 3;
 /** ContactKind of each row (Uint8). */
-export const PC_KIND = 4;
+export const KIND = 4;
 /** Feature id of each row, for the warm start (Int32). */
-export const PC_FEATURE = 5;
+export const FEATURE = 5;
 /** Contact normal x, from A to B. */
-export const PC_NX = 6;
+export const NX = 6;
 /** Contact normal y. */
-export const PC_NY = 7;
+export const NY = 7;
 /** A's radius along the normal to the contact point, m. */
-export const PC_RA = 8;
+export const RA = 8;
 /** B's radius along the normal to the contact point, m. */
-export const PC_RB = 9;
+export const RB = 9;
 /** The solver body state (rows of BS2_STRIDE, solver/body-state-layout.ts). */
-export const PC_BODY_STATE = 10;
+export const BODY_STATE = 10;
 /** Material restitution, by entity. */
-export const PC_RESTITUTION_OF = 11;
+export const RESTITUTION_OF = 11;
 /** Material friction, by entity. */
-export const PC_FRICTION_OF = 12;
+export const FRICTION_OF = 12;
 /** Material static friction, by entity. */
-export const PC_STATIC_FRICTION_OF = 13;
+export const STATIC_FRICTION_OF = 13;
 /** Each entity's spawn stamp (Uint32, a copy), so a recycled id matches no old row. */
-export const PC_SPAWN_STAMP = 14;
+export const SPAWN_STAMP = 14;
 /** Normal effective mass, kg (written). */
-export const PC_NORMAL_MASS = 15;
+export const NORMAL_MASS = 15;
 /** Tangent effective mass, kg (written). */
-export const PC_TANGENT_MASS = 16;
+export const TANGENT_MASS = 16;
 /** 1 if body A has infinite mass (Uint8, written). */
-export const PC_RIGID_PARTNER = 17;
+export const RIGID_PARTNER = 17;
 /** Tangent x (written). */
-export const PC_T1X = 18;
+export const T1X = 18;
 /** Tangent y (written). */
-export const PC_T1Y = 19;
+export const T1Y = 19;
 /** Tangent z (written). */
-export const PC_T1Z = 20;
+export const T1Z = 20;
 /** Combined restitution (written). */
-export const PC_RESTITUTION = 21;
+export const RESTITUTION = 21;
 /** Combined kinetic friction (written). */
-export const PC_FRICTION = 22;
+export const FRICTION = 22;
 /** The friction coefficient in use, static while the row sticks (written). */
-export const PC_FRICTION_BOUND = 23;
+export const FRICTION_BOUND = 23;
 /** Normal relative velocity of the bodies' solver velocities, m/s (written). */
-export const PC_RELATIVE_VELOCITY = 24;
+export const RELATIVE_VELOCITY = 24;
 /** Normal impulse delivered over the step, N s (written, 0). */
-export const PC_TOTAL_NORMAL_IMPULSE = 25;
+export const TOTAL_NORMAL_IMPULSE = 25;
 /** The impact stage's impulse, N s (written, 0). */
-export const PC_IMPULSE = 26;
+export const IMPULSE = 26;
 /** Warm-start normal impulse, N s (written). */
-export const PC_NORMAL_IMPULSE = 27;
+export const NORMAL_IMPULSE = 27;
 /** Warm-start tangent impulse, N s (written). */
-export const PC_TANGENT_IMPULSE_1 = 28;
+export const TANGENT_IMPULSE_1 = 28;
 /** Warm-start second tangent impulse (3D), N s (written). */
-export const PC_TANGENT_IMPULSE_2 = 29;
+export const TANGENT_IMPULSE_2 = 29;
 /** Largest normal impulse of a pass, N s (written, 0). */
-export const PC_MAX_NORMAL_IMPULSE = 30;
+export const MAX_NORMAL_IMPULSE = 30;
 /** Spawn stamp of body A (Uint32, written). */
-export const PC_STAMP_A = 31;
+export const STAMP_A = 31;
 /** Spawn stamp of body B (Uint32, written). */
-export const PC_STAMP_B = 32;
+export const STAMP_B = 32;
 /** Last step's rows: ContactKind (Uint8). */
-export const PC_PREV_KIND = 33;
+export const PREV_KIND = 33;
 /** Last step's rows: entity of body A (Int32). */
-export const PC_PREV_A = 34;
+export const PREV_A = 34;
 /** Last step's rows: entity of body B (Int32). */
-export const PC_PREV_B = 35;
+export const PREV_B = 35;
 /** Last step's rows: feature id (Int32). */
-export const PC_PREV_FEATURE = 36;
+export const PREV_FEATURE = 36;
 /** Last step's rows: spawn stamp of A (Uint32). */
-export const PC_PREV_STAMP_A = 37;
+export const PREV_STAMP_A = 37;
 /** Last step's rows: spawn stamp of B (Uint32). */
-export const PC_PREV_STAMP_B = 38;
+export const PREV_STAMP_B = 38;
 /** Last step's rows: normal impulse, N s. */
-export const PC_PREV_NORMAL_IMPULSE = 39;
+export const PREV_NORMAL_IMPULSE = 39;
 /** Last step's rows: tangent impulse, N s. */
-export const PC_PREV_TANGENT_IMPULSE_1 = 40;
+export const PREV_TANGENT_IMPULSE_1 = 40;
 /** Last step's rows: second tangent impulse, N s. */
-export const PC_PREV_TANGENT_IMPULSE_2 = 41;
+export const PREV_TANGENT_IMPULSE_2 = 41;
 /** The warm-start hash slots (Int32, row + 1; collision/contacts.ts). */
-export const PC_SLOTS = 42;
-// prepareContacts2D: P.
+export const SLOTS = 42;
+// P: the numbers.
 /** Below this tangential speed a row sticks (static friction), m/s. */
-export const PC_STICK_SPEED = 0;
+export const STICK_SPEED = 0;
 /** The boundary box's restitution. */
-export const PC_BOX_RESTITUTION = 1;
+export const BOX_RESTITUTION = 1;
 /** The boundary box's friction. */
-export const PC_BOX_FRICTION = 2;
+export const BOX_FRICTION = 2;
 /** The boundary box's static friction. */
-export const PC_BOX_STATIC_FRICTION = 3;
+export const BOX_STATIC_FRICTION = 3;
 /** Last step's rows (0: no cache). */
-export const PC_PREV_ROWS = 4;
+export const PREV_ROWS = 4;
 /** Hash slots (a power of two). */
-export const PC_SLOT_COUNT = 5;
+export const SLOT_COUNT = 5;
 /** ContactKind.Ball. */
-export const PC_BALL = 6;
+export const BALL = 6;
 /** ContactKind.Boundary. */
-export const PC_BOUNDARY = 7;
+export const BOUNDARY = 7;
