@@ -159,7 +159,7 @@ export class ThreadPool {
   readonly kernels: readonly Kernel[];
   /** Each kernel of `kernels` to its place there. */
   private readonly kernelIndex: Map<Kernel, number>;
-  /** The functions the kernels call, by index (step/kernel-helpers.ts), passed to every kernel as its last argument. */
+  /** The functions the kernels call, by index (solver/kernel-helpers.ts), passed to every kernel as its last argument. */
   readonly helpers: readonly KernelHelper[];
   /** Resolves once every worker has started and can take work (a browser page may await it; Node waits by itself). */
   readonly ready: Promise<void>;
