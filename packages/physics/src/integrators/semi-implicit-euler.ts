@@ -8,9 +8,14 @@ import { fusedForcesOn, setFusedForces } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
 import { advanceOrientations, applyTorques } from './rotation.js';
+import * as SIE from './slots/semi-implicit-euler.js';
 
 /** The name a worker's error gives the integrator. */
 const INTEGRATE = 'integrate (semi-implicit Euler)';
+
+/** The kernels' arguments (the SIE slots), filled by each call of semiImplicitEuler. Not state. */
+const sieArrays: KernelArray[] = [];
+const sieParams = new Float64Array(8);
 
 /**
  * Semi-implicit (symplectic) Euler: v(t+h) = v(t) + a(t) h, then x(t+h) = x(t) + v(t+h) h, with
@@ -47,63 +52,56 @@ const INTEGRATE = 'integrate (semi-implicit Euler)';
  */
 export function semiImplicitEuler(world: PhysicsWorld, h: number): void {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const fx = c.Force.x,
-    fy = c.Force.y,
-    fz = c.Force.z;
-  const im = c.Mass.inv;
   const g = world.gravity;
   const gxh = g[0]! * h,
     gyh = g[1]! * h,
     gzh = g[2]! * h;
-  // Half of this step's gravity velocity, taken off the drift velocity: exact free fall.
-  const hx = 0.5 * gxh,
-    hy = 0.5 * gyh,
-    hz = 0.5 * gzh;
   const is2D = world.dimensions === 2;
+  const A = sieArrays,
+    P = sieParams;
+  A.length = 0;
+  A[SIE.PX] = c.Position.x;
+  A[SIE.PY] = c.Position.y;
+  A[SIE.PZ] = c.Position.z;
+  A[SIE.VX] = c.Velocity.x;
+  A[SIE.VY] = c.Velocity.y;
+  A[SIE.VZ] = c.Velocity.z;
+  A[SIE.OX] = c.PreviousPosition.x;
+  A[SIE.OY] = c.PreviousPosition.y;
+  A[SIE.OZ] = c.PreviousPosition.z;
+  A[SIE.FX] = c.Force.x;
+  A[SIE.FY] = c.Force.y;
+  A[SIE.FZ] = c.Force.z;
+  A[SIE.INV_MASS] = c.Mass.inv;
+  P[SIE.H] = h;
+  P[SIE.GX_H] = gxh;
+  P[SIE.GY_H] = gyh;
+  P[SIE.GZ_H] = gzh;
+  // Half of this step's gravity velocity, taken off the drift velocity: exact free fall.
+  P[SIE.HALF_GX_H] = 0.5 * gxh;
+  P[SIE.HALF_GY_H] = 0.5 * gyh;
+  P[SIE.HALF_GZ_H] = 0.5 * gzh;
 
   let ents = forcedBodies(world);
   let check = 0;
   const fused = fusedForcesOn(world);
-  if (fused) setFusedForces(world, false);
   if (fused) {
+    setFusedForces(world, false);
     if (is2D) fusedForced2(world, h);
     else fusedForced3(world, h);
-  } else if (is2D) {
-    const arrays = [px, py, vx, vy, ox, oy, fx, fy, im];
-    check = runParallel(world, INTEGRATE, sieForced2, arrays, [h, gxh, gyh, hx, hy], ents.length, ents);
-  } else {
-    const arrays = [px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im];
-    check = runParallel(world, INTEGRATE, sieForced3, arrays, [h, gxh, gyh, gzh, hx, hy, hz], ents.length, ents);
-  }
+  } else check = runParallel(world, INTEGRATE, is2D ? sieForced2 : sieForced3, A, P, ents.length, ents);
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
   // Bare particles: a = g. When the query holds every live id (a world of particles), its ids are
   // exactly 1..maxId and the loop runs over that range directly; PreviousPosition is kept only if the
   // world interpolates (nothing collides with a bare particle).
   ents = freeBodies(world);
-  const save = world.interpolation;
   const n = ents.length;
   const dense = n > 0 && n === world.entityIndex.maxId;
-  check = is2D
-    ? runParallel(world, INTEGRATE, sieFree2, [px, py, vx, vy, ox, oy], [h, gxh, gyh, hx, hy, save ? 1 : 0], n, dense ? null : ents)
-    : runParallel(
-        world,
-        INTEGRATE,
-        sieFree3,
-        [px, py, pz, vx, vy, vz, ox, oy, oz],
-        [h, gxh, gyh, gzh, hx, hy, hz, save ? 1 : 0],
-        n,
-        dense ? null : ents,
-      );
+  P[SIE.SAVE] = world.interpolation ? 1 : 0;
+  // Bare particles have no force or mass to pass (a world of them may never allocate those stores).
+  A.length = SIE.FX;
+  check = runParallel(world, INTEGRATE, is2D ? sieFree2 : sieFree3, A, P, n, dense ? null : ents);
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
   advanceKinematic(world, h);
@@ -453,23 +451,23 @@ export function advanceKinematic(world: PhysicsWorld, h: number): void {
 
 /**
  * Semi-implicit Euler for bodies with a force accumulator, 2D (see integrators/semi-implicit-euler.ts).
- * A: px, py, vx, vy, ox, oy, fx, fy, im. P: h, gxh, gyh, hx, hy. Returns the finiteness check sum.
+ * A and P: the SIE slots (integrators/slots/semi-implicit-euler.ts). Returns the finiteness check sum.
  */
 export function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    vx = A[2] as Float64Array,
-    vy = A[3] as Float64Array;
-  const ox = A[4] as Float64Array,
-    oy = A[5] as Float64Array,
-    fx = A[6] as Float64Array,
-    fy = A[7] as Float64Array;
-  const im = A[8] as Float64Array;
-  const h = P[0]!,
-    gxh = P[1]!,
-    gyh = P[2]!,
-    hx = P[3]!,
-    hy = P[4]!;
+  const px = A[SIE.PX] as Float64Array,
+    py = A[SIE.PY] as Float64Array,
+    vx = A[SIE.VX] as Float64Array,
+    vy = A[SIE.VY] as Float64Array;
+  const ox = A[SIE.OX] as Float64Array,
+    oy = A[SIE.OY] as Float64Array,
+    fx = A[SIE.FX] as Float64Array,
+    fy = A[SIE.FY] as Float64Array;
+  const im = A[SIE.INV_MASS] as Float64Array;
+  const h = P[SIE.H]!,
+    gxh = P[SIE.GX_H]!,
+    gyh = P[SIE.GY_H]!,
+    hx = P[SIE.HALF_GX_H]!,
+    hy = P[SIE.HALF_GY_H]!;
   const list = ids as Int32Array;
   let check = 0;
   for (let i = lo; i < hi; i++) {
@@ -493,29 +491,29 @@ export function sieForced2(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 
 /**
  * Semi-implicit Euler for bodies with a force accumulator, 3D.
- * A: px, py, pz, vx, vy, vz, ox, oy, oz, fx, fy, fz, im. P: h, gxh, gyh, gzh, hx, hy, hz.
+ * A and P: the SIE slots (integrators/slots/semi-implicit-euler.ts).
  */
 export function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    pz = A[2] as Float64Array;
-  const vx = A[3] as Float64Array,
-    vy = A[4] as Float64Array,
-    vz = A[5] as Float64Array;
-  const ox = A[6] as Float64Array,
-    oy = A[7] as Float64Array,
-    oz = A[8] as Float64Array;
-  const fx = A[9] as Float64Array,
-    fy = A[10] as Float64Array,
-    fz = A[11] as Float64Array;
-  const im = A[12] as Float64Array;
-  const h = P[0]!,
-    gxh = P[1]!,
-    gyh = P[2]!,
-    gzh = P[3]!,
-    hx = P[4]!,
-    hy = P[5]!,
-    hz = P[6]!;
+  const px = A[SIE.PX] as Float64Array,
+    py = A[SIE.PY] as Float64Array,
+    pz = A[SIE.PZ] as Float64Array;
+  const vx = A[SIE.VX] as Float64Array,
+    vy = A[SIE.VY] as Float64Array,
+    vz = A[SIE.VZ] as Float64Array;
+  const ox = A[SIE.OX] as Float64Array,
+    oy = A[SIE.OY] as Float64Array,
+    oz = A[SIE.OZ] as Float64Array;
+  const fx = A[SIE.FX] as Float64Array,
+    fy = A[SIE.FY] as Float64Array,
+    fz = A[SIE.FZ] as Float64Array;
+  const im = A[SIE.INV_MASS] as Float64Array;
+  const h = P[SIE.H]!,
+    gxh = P[SIE.GX_H]!,
+    gyh = P[SIE.GY_H]!,
+    gzh = P[SIE.GZ_H]!,
+    hx = P[SIE.HALF_GX_H]!,
+    hy = P[SIE.HALF_GY_H]!,
+    hz = P[SIE.HALF_GZ_H]!;
   const list = ids as Int32Array;
   let check = 0;
   for (let i = lo; i < hi; i++) {
@@ -543,22 +541,22 @@ export function sieForced3(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 }
 
 /**
- * Semi-implicit Euler for bare particles (a = g), 2D. A: px, py, vx, vy, ox, oy.
- * P: h, gxh, gyh, hx, hy, save (1: keep PreviousPosition). ids null: entities lo + 1 .. hi.
+ * Semi-implicit Euler for bare particles (a = g), 2D. A and P: the SIE slots
+ * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi.
  */
 export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    vx = A[2] as Float64Array,
-    vy = A[3] as Float64Array;
-  const ox = A[4] as Float64Array,
-    oy = A[5] as Float64Array;
-  const h = P[0]!,
-    gxh = P[1]!,
-    gyh = P[2]!,
-    hx = P[3]!,
-    hy = P[4]!,
-    save = P[5] === 1;
+  const px = A[SIE.PX] as Float64Array,
+    py = A[SIE.PY] as Float64Array,
+    vx = A[SIE.VX] as Float64Array,
+    vy = A[SIE.VY] as Float64Array;
+  const ox = A[SIE.OX] as Float64Array,
+    oy = A[SIE.OY] as Float64Array;
+  const h = P[SIE.H]!,
+    gxh = P[SIE.GX_H]!,
+    gyh = P[SIE.GY_H]!,
+    hx = P[SIE.HALF_GX_H]!,
+    hy = P[SIE.HALF_GY_H]!,
+    save = P[SIE.SAVE] === 1;
   let check = 0;
   if (ids === null && save) {
     for (let e = lo + 1; e <= hi; e++) {
@@ -606,27 +604,27 @@ export function sieFree2(A: KernelArray[], P: Float64Array, ids: Int32Array | nu
 }
 
 /**
- * Semi-implicit Euler for bare particles, 3D. A: px, py, pz, vx, vy, vz, ox, oy, oz.
- * P: h, gxh, gyh, gzh, hx, hy, hz, save. ids null: entities lo + 1 .. hi.
+ * Semi-implicit Euler for bare particles, 3D. A and P: the SIE slots
+ * (integrators/slots/semi-implicit-euler.ts). ids null: entities lo + 1 .. hi.
  */
 export function sieFree3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    pz = A[2] as Float64Array;
-  const vx = A[3] as Float64Array,
-    vy = A[4] as Float64Array,
-    vz = A[5] as Float64Array;
-  const ox = A[6] as Float64Array,
-    oy = A[7] as Float64Array,
-    oz = A[8] as Float64Array;
-  const h = P[0]!,
-    gxh = P[1]!,
-    gyh = P[2]!,
-    gzh = P[3]!,
-    hx = P[4]!,
-    hy = P[5]!,
-    hz = P[6]!,
-    save = P[7] === 1;
+  const px = A[SIE.PX] as Float64Array,
+    py = A[SIE.PY] as Float64Array,
+    pz = A[SIE.PZ] as Float64Array;
+  const vx = A[SIE.VX] as Float64Array,
+    vy = A[SIE.VY] as Float64Array,
+    vz = A[SIE.VZ] as Float64Array;
+  const ox = A[SIE.OX] as Float64Array,
+    oy = A[SIE.OY] as Float64Array,
+    oz = A[SIE.OZ] as Float64Array;
+  const h = P[SIE.H]!,
+    gxh = P[SIE.GX_H]!,
+    gyh = P[SIE.GY_H]!,
+    gzh = P[SIE.GZ_H]!,
+    hx = P[SIE.HALF_GX_H]!,
+    hy = P[SIE.HALF_GY_H]!,
+    hz = P[SIE.HALF_GZ_H]!,
+    save = P[SIE.SAVE] === 1;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const e = ids === null ? i + 1 : ids[i]!;
