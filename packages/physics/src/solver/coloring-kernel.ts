@@ -43,7 +43,7 @@ import type { approach2D } from './stages-kernel.js';
  * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
  * thread of the pool at once (or by one thread alone). The work is cut into units, in order: packing
  * the contact buffer's rows (solver/contact-pack-2d.ts layout) group by group into the pack (one block a
- * range of plan[7] ranges, each from its own first slot of every group, `offsets`), the approach
+ * range of plan[PLAN.PARTS] ranges, each from its own first slot of every group, `offsets`), the approach
  * speeds of the buffer's rows (solver/contact-solver.ts measureApproach, 2,048 rows a block, when P[SOLVE.MEASURE_APPROACH] = 1), then each
  * substep's stages (gravity and positions over the bodies, 1,024 a block; the warm start and every
  * pass colour by colour, a colour's blocks from the block table), then writing the impulses back to
@@ -53,7 +53,7 @@ import type { approach2D } from './stages-kernel.js';
  * the system has not scheduled holds nothing up unless it holds a block (work sharing, as Box2D v3's
  * solver stages), a thread keeps the same strips pass after pass, and which thread runs a block
  * never changes a result: blocks of a colour touch disjoint movable bodies, a block's rows run in pack
- * order. With strips (plan[9] = 1, solver/coloring.ts) the body stages run inside colour 0's blocks
+ * order. With strips (plan[PLAN.STRIPS] = 1, solver/coloring.ts) the body stages run inside colour 0's blocks
  * instead of as units of their own: gravity before a block's warm start, positions before its first
  * relax pass (when there is one), each block for its strip pair's bodies (`bodyOrder` from
  * bodyBounds[j] to bodyBounds[j + 1] for colour 0's block j), bodies no other block of the colour
@@ -340,7 +340,7 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
 
 /**
  * Packs rows[0 .. count - 1] of the contact buffer again, each into the pack row coloredPack2D gave it
- * (A[30], slot), from the buffer's values now (A as coloredPack2D's): for rows whose values changed
+ * (A[SOLVE.SLOT]), from the buffer's values now (A as coloredPack2D's): for rows whose values changed
  * after they were packed (solver/impacts.ts impactChangedRows). Rows left out of the pack (group 255) stay out.
  * @category Collision
  */

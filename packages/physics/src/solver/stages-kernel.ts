@@ -148,7 +148,7 @@ export function approach2D(A: KernelArray[], P: Float64Array, _ids: Int32Array |
 /**
  * finishBodies (solver/contact-solver.ts) of 2D solver bodies lo + 1 .. hi: velocities, positions (base +
  * displacement + impact correction, free flight's -g h h_s / 2) and angles back to the components;
- * then, if P[4] = 1, containInBoundary (solver/contact-solver.ts) of the same bodies (put back on a wall of the box
+ * then, if P[FINISH.CONTAIN] = 1, containInBoundary (solver/contact-solver.ts) of the same bodies (put back on a wall of the box
  * they went through, the outward normal velocity reflected and scaled by the restitution, the potential
  * energy gained taken from the kinetic); and the deepest overlap left over this thread's share of the
  * contact rows (rows floor(m lo / nb) .. floor(m hi / nb) - 1, m rows, nb bodies), as min(0, min s)
@@ -301,7 +301,7 @@ export function deepestRow2D(A: KernelArray[], P: Float64Array, lo: number, hi: 
  * blocks of a colour share no movable body (solver/coloring.ts: strips or graph colours; the overflow
  * colour one block), so they may go to any thread. Threads claim blocks by flags, each from its own
  * share of a unit first, and start a unit (the first stage, or a colour of a pass) once every block of
- * the earlier units is done, as solveColored2D (spinning up to P[5] microseconds, then blocking).
+ * the earlier units is done, as solveColored2D (spinning up to P[RESTITUTION.SPIN_US] microseconds, then blocking).
  * A and P: the RESTITUTION slots (solver/slots/restitution.ts). Returns 0 (-1 if another thread failed and
  * this one stopped).
  * @category Collision

@@ -11,10 +11,10 @@ import { BS2_INV_INERTIA, BS2_INV_MASS, BS2_STRIDE, BS2_VX, BS2_VY, BS2_W, BX_BA
 import * as CUT from './slots/strip-cut.js';
 
 /**
- * Cuts a step's movable solver bodies into `P[2]` strips across the longer axis of their spread, each
+ * Cuts a step's movable solver bodies into `P[CUT.P_STRIPS]` strips across the longer axis of their spread, each
  * with about as many contact rows as the others: which solver bodies take gravity (dyn: dynamic
  * bodies), the movable bodies' spread (a body is movable unless nothing can change it: no inverse mass
- * or inertia, not dynamic, no velocity), each movable body's bin of `P[3]` along the axis, the rows a
+ * or inertia, not dynamic, no velocity), each movable body's bin of `P[CUT.BINS]` along the axis, the rows a
  * bin (by the row's first movable body), each bin's strip at the rows' quantiles (the strip of the
  * bin's middle row: floor(strips * rows before its middle / rows)), and each movable body's strip.
  * The whole cut runs on the thread whose range is not empty (lo < hi); other ranges do nothing.
