@@ -1,10 +1,7 @@
-import { addBody } from '../bodies/api.js';
 import { addPlane } from '../bodies/rigid.js';
-import { addShape3D } from '../shapes/api-3d.js';
-import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
-import { jitteredGrid3D } from './jittered-grid.js';
+import { addCubes } from './cubes.js';
+import { type JitteredBox3D, jitteredBox3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -22,11 +19,7 @@ export interface BoxPile3DOptions {
  * The resolved layout of `box-pile-3d`, for peer engines (SI units).
  * @category Scenes
  */
-export interface BoxPile3DLayout {
-  /** Number of boxes. */
-  count: number;
-  /** Box centres, m: x0, y0, z0, x1, ... (boxes start axis-aligned, at rest). */
-  positions: Float64Array;
+export interface BoxPile3DLayout extends JitteredBox3D {
   /** Half extent of every box, m (1 x 1 x 1 m boxes). */
   half: number;
   /** Mass of a box, kg (density 1 kg/m^3). */
@@ -35,12 +28,6 @@ export interface BoxPile3DLayout {
   restitution: number;
   /** Friction coefficient of boxes and walls (>= 0). */
   friction: number;
-  /** Inner corner of the closed box with the smallest coordinates, m (the origin). */
-  min: [number, number, number];
-  /** Inner corner of the closed box with the largest coordinates, m. */
-  max: [number, number, number];
-  /** Gravity, m/s^2. */
-  gravity: [number, number, number];
 }
 
 /**
@@ -52,26 +39,8 @@ export interface BoxPile3DLayout {
  * @category Scenes
  */
 export function boxPile3DLayout(options: BoxPile3DOptions = {}): BoxPile3DLayout {
-  const where = 'box-pile-3d';
-  assertKnownKeys(where, options, ['count', 'seed']);
-  const count = options.count ?? 5000;
-  assertInteger(where, 'count', count, 1, 200_000);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
-  const spacing = 1.5,
-    half = 0.5;
-  const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * half);
-  return {
-    count,
-    positions,
-    half,
-    mass: 1,
-    restitution: 0.1,
-    friction: 0.6,
-    min: [0, 0, 0],
-    max: [side * spacing, (layers + 1) * spacing, side * spacing],
-    gravity: [0, -10, 0],
-  };
+  const half = 0.5;
+  return { ...jitteredBox3D('box-pile-3d', options, 200_000, 2 * half), half, mass: 1, restitution: 0.1, friction: 0.6 };
 }
 
 /**
@@ -132,16 +101,7 @@ export const boxPile3D: SceneDefinition<BoxPile3DOptions, BoxPile3DHandles> = {
       ],
     ];
     for (const [normal, point] of walls) addPlane(world, { normal, point, ...material });
-    const boxes = new Uint32Array(layout.count);
-    const p = layout.positions,
-      h = layout.half,
-      extents = [h, h, h];
-    const density = layout.mass / (8 * h * h * h);
-    for (let i = 0; i < layout.count; i++) {
-      const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });
-      addShape3D(world, b, { type: 'box', halfExtents: extents, density, ...material });
-      boxes[i] = slotOf(b);
-    }
+    const boxes = addCubes(world, layout.positions, layout.count, layout.half, layout.mass, material);
     return { boxes, layout };
   },
 };

@@ -1,9 +1,8 @@
-import { addBody } from '../bodies/api.js';
 import { addPlane } from '../bodies/rigid.js';
-import { addShape3D } from '../shapes/api-3d.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertInteger, assertKnownKeys } from '../world/validate.js';
+import { addCubes } from './cubes.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -103,16 +102,7 @@ export const pyramid3D: SceneDefinition<Pyramid3DOptions, Pyramid3DHandles> = {
     const layout = pyramid3DLayout(options);
     const material = { friction: layout.friction, restitution: layout.restitution };
     const ground = slotOf(addPlane(world, { normal: [0, 1, 0], ...material }));
-    const boxes = new Uint32Array(layout.count);
-    const p = layout.positions,
-      h = layout.half,
-      extents = [h, h, h];
-    const density = layout.mass / (8 * h * h * h);
-    for (let i = 0; i < layout.count; i++) {
-      const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });
-      addShape3D(world, b, { type: 'box', halfExtents: extents, density, ...material });
-      boxes[i] = slotOf(b);
-    }
+    const boxes = addCubes(world, layout.positions, layout.count, layout.half, layout.mass, material);
     return { boxes, ground, layout };
   },
 };

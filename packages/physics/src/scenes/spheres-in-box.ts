@@ -1,7 +1,6 @@
 import { addBody, setBoundary } from '../bodies/api.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
-import { jitteredGrid3D } from './jittered-grid.js';
+import { type JitteredBox3D, jitteredBox3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -19,18 +18,15 @@ export interface SpheresInBoxOptions {
  * The resolved layout of `spheres-in-box`, for peer engines.
  * @category Scenes
  */
-export interface SpheresInBoxLayout {
-  count: number;
-  /** Centres, m: x0, y0, z0, x1, ... */
-  positions: Float64Array;
+export interface SpheresInBoxLayout extends JitteredBox3D {
+  /** Sphere radius, m. */
   radius: number;
+  /** Mass of a sphere, kg. */
   mass: number;
+  /** Restitution of spheres and walls, in [0, 1]. */
   restitution: number;
+  /** Friction coefficient of spheres and walls (>= 0). */
   friction: number;
-  /** Inner corners of the box, m. */
-  min: [number, number, number];
-  max: [number, number, number];
-  gravity: [number, number, number];
 }
 
 /**
@@ -41,26 +37,8 @@ export interface SpheresInBoxLayout {
  * @category Scenes
  */
 export function spheresInBoxLayout(options: SpheresInBoxOptions = {}): SpheresInBoxLayout {
-  const where = 'spheres-in-box';
-  assertKnownKeys(where, options, ['count', 'seed']);
-  const count = options.count ?? 5000;
-  assertInteger(where, 'count', count, 1, 2_000_000);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
-  const spacing = 1.5,
-    radius = 0.5;
-  const { positions, side, layers } = jitteredGrid3D(count, seed, spacing, 2 * radius);
-  return {
-    count,
-    positions,
-    radius,
-    mass: 1,
-    restitution: 0.5,
-    friction: 0.1,
-    min: [0, 0, 0],
-    max: [side * spacing, (layers + 1) * spacing, side * spacing],
-    gravity: [0, -10, 0],
-  };
+  const radius = 0.5;
+  return { ...jitteredBox3D('spheres-in-box', options, 2_000_000, 2 * radius), radius, mass: 1, restitution: 0.5, friction: 0.1 };
 }
 
 /**

@@ -1,0 +1,30 @@
+import { addBody } from '../bodies/api.js';
+import { addShape3D } from '../shapes/api-3d.js';
+import { slotOf } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+
+/**
+ * Adds `count` cubes of half extent `half` (m) and mass `mass` (kg) at rest, axis-aligned, centred at
+ * positions (x0, y0, z0, x1, ...; m), each a body with one box shape of the given friction and
+ * restitution; returns their body slots in that order. Shared by the box-pile-3d and pyramid-3d scenes.
+ * @category Scenes
+ */
+export function addCubes(
+  world: PhysicsWorld,
+  positions: Float64Array,
+  count: number,
+  half: number,
+  mass: number,
+  material: { friction: number; restitution: number },
+): Uint32Array {
+  const boxes = new Uint32Array(count);
+  const p = positions,
+    extents = [half, half, half];
+  const density = mass / (8 * half * half * half);
+  for (let i = 0; i < count; i++) {
+    const b = addBody(world, { position: [p[3 * i]!, p[3 * i + 1]!, p[3 * i + 2]!] });
+    addShape3D(world, b, { type: 'box', halfExtents: extents, density, ...material });
+    boxes[i] = slotOf(b);
+  }
+  return boxes;
+}
