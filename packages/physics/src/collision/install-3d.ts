@@ -6,8 +6,7 @@
  */
 
 import { setIslands3D } from '../islands/hooks-3d.js';
-import { joinJoint3DIslands, markJoint3DSupport } from '../islands/joints-3d.js';
-import { joinShape3DIslands, markShape3DSupport, wakeTouching3D, withShape3DBodies } from '../islands/shapes-3d.js';
+import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from '../islands/shapes-3d.js';
 import {
   finishJoints3D,
   gatherJoint3DBodies,
@@ -52,7 +51,7 @@ export function install3D(world: PhysicsWorld): void {
       solveManifolds3D,
       applyManifold3DRestitution,
     });
-    setIslands3D({ withShape3DBodies, markShape3DSupport, joinShape3DIslands, wakeTouching3D, markJoint3DSupport, joinJoint3DIslands });
+    setIslands3D({ withShape3DBodies, addIslandEdges3D, wakeTouching3D });
     // Trusted (step/finite.ts) only while it has nothing to collide, when it writes nothing.
     trustFiniteOutput([shape3DCollisionSystem], 'all', (w) => w.dimensions !== 3 || shapes3DOf(w)?.active !== true);
   }

@@ -395,7 +395,7 @@ export interface ShapeCollisionState {
   bodyMark: number;
   /** Whether any collider moves this step (else the broadphase has nothing to pair). */
   anyMoving: boolean;
-  /** Scratch list of the bodies that may sleep (islands/shapes-2d.ts). */
+  /** Scratch list of the bodies that may sleep (islands/sleep.ts). */
   sleepList: Uint32Array;
   /** Per entity: the body's angular velocity this step (0 if it does not turn), rad/s. */
   bodyW: Float64Array;

@@ -1,20 +1,22 @@
 import { hasComponent } from 'bitecs';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { BodyType } from '../collision/state.js';
+import { joints3DOf } from '../joints/store-3d.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
+import { addIslandEdge, EdgeFlag, type IslandEdges } from './edges.js';
 import { wakeIslandForStep } from './step-wake.js';
 
 /**
- * Sleeping for 3D shape bodies (used by islands/sleep.ts and collision/shapes-3d.ts), as for 2D shapes
- * (islands/shapes-2d.ts), after Box2D v3's island sleep:
+ * Sleeping for 3D shape bodies and 3D joints (used by islands/sleep.ts and collision/shapes-3d.ts),
+ * after Box2D v3's island sleep:
  *
- * - a 3D manifold whose points carried a normal impulse this step supports both its bodies;
- * - manifolds between two dynamic bodies that pushed tie them into one island;
+ * - the 3D manifolds and joints add their edges to the step's island graph (islands/edges.ts), which
+ *   the sleep system reads for support and islands as it does the 2D stores';
  * - a sleeping body met in the 3D broadphase by a moving body (rest time 0) or a kinematic one that
- *   can reach it within the step (`wakesSleeper3D`) wakes with its whole island, and joins the step as a dynamic body with the velocity and position the
- *   integration it skipped would have given it (v = g h, x += g h^2 / 2); met by a resting body it
+ *   can reach it within the step (`wakesSleeper3D`) wakes with its whole island, and joins the step as a dynamic body with the velocity and
+ *   position the integration it skipped would have given it (v = g h, x += g h^2 / 2); met by a resting body it
  *   stays asleep and holds it up as immovable geometry, so a box settling onto a sleeping pile can
  *   fall asleep too;
  * - removing a body wakes the sleeping islands its manifolds touched.
@@ -43,45 +45,40 @@ export function withShape3DBodies(world: PhysicsWorld, others: ArrayLike<number>
   return out.subarray(0, k);
 }
 
-/** Whether any point of row i of the 3D manifold buffer carried a normal impulse this step. */
-function pushed(maxLn: Float64Array, points: Uint8Array, i: number): boolean {
-  for (let k = 0, m = points[i]!; k < m; k++) if (maxLn[4 * i + k]! > 0) return true;
-  return false;
-}
-
 /**
- * Marks `supported[e] = stamp` for both bodies of every 3D manifold that carried a normal impulse this step.
+ * Adds the 3D world's edges to `e` (islands/edges.ts): 3D manifolds any of whose points carried a
+ * normal impulse this step (supporting and joining), and 3D joints (one that carried an impulse, any
+ * of its rows' accumulated impulses not 0, supports its bodies: a bob at rest on its string may sleep).
  * @category Collision
  */
-export function markShape3DSupport(world: PhysicsWorld, supported: Uint32Array, stamp: number): void {
+export function addIslandEdges3D(world: PhysicsWorld, e: IslandEdges): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
-  if (st === undefined) return;
-  const b = st.current;
-  for (let i = 0, n = b.count; i < n; i++) {
-    if (!pushed(b.maxLn, b.points, i)) continue;
-    supported[b.bodyA[i]!] = stamp;
-    supported[b.bodyB[i]!] = stamp;
+  if (st !== undefined) {
+    const b = st.current,
+      maxLn = b.maxLn,
+      points = b.points;
+    for (let i = 0, n = b.count; i < n; i++) {
+      let pushed = false;
+      for (let k = 0, m = points[i]!; k < m; k++) if (maxLn[4 * i + k]! > 0) pushed = true;
+      if (pushed) addIslandEdge(e, b.bodyA[i]!, b.bodyB[i]!, EdgeFlag.SUPPORTS | EdgeFlag.JOINS);
+    }
   }
-}
-
-/**
- * Unites, in the union-find `parent` (with its `find`), the two bodies of every 3D manifold between dynamic bodies that pushed.
- * @category Collision
- */
-export function joinShape3DIslands(world: PhysicsWorld, parent: Int32Array, find: (x: number) => number): void {
-  if (world.dimensions !== 3) return;
-  const st = contact3DStateOf(world);
-  if (st === undefined) return;
-  const b = st.current,
-    type = world.collision.bodyType;
-  for (let i = 0, n = b.count; i < n; i++) {
-    const a = b.bodyA[i]!,
-      c = b.bodyB[i]!;
-    if (a === 0 || c === 0 || type[a] !== BodyType.Dynamic || type[c] !== BodyType.Dynamic || !pushed(b.maxLn, b.points, i)) continue;
-    const ra = find(a),
-      rc = find(c);
-    if (ra !== rc) parent[ra] = rc;
+  const s = joints3DOf(world);
+  if (s === undefined) return;
+  const list = s.list;
+  for (let i = 0; i < list.length; i++) {
+    const j: number = list[i]!;
+    const load =
+      Math.abs(s.lx[j]!) +
+      Math.abs(s.ly[j]!) +
+      Math.abs(s.lz[j]!) +
+      Math.abs(s.wx[j]!) +
+      Math.abs(s.wy[j]!) +
+      Math.abs(s.wz[j]!) +
+      Math.abs(s.limit[j]!) +
+      Math.abs(s.motor[j]!);
+    addIslandEdge(e, s.a[j]!, s.b[j]!, load > 0 ? EdgeFlag.JOINT | EdgeFlag.SUPPORTS : EdgeFlag.JOINT);
   }
 }
 

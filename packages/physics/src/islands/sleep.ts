@@ -3,16 +3,8 @@ import { ecsOf } from '../particles/archetype.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
-import {
-  joinJoint3DIslands,
-  joinShape3DIslands,
-  markJoint3DSupport,
-  markShape3DSupport,
-  wakeTouching3D,
-  withShape3DBodies,
-} from './hooks-3d.js';
-import { joinJointIslands, markJointSupport } from './joints-2d.js';
-import { joinShapeIslands, markShapeSupport, withShapeBodies } from './shapes-2d.js';
+import { addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
+import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
 /**
  * Sleeping islands (after Box2D v3's island sleep; Catto, "Solver2D", 2024): a resting pile stops
@@ -156,19 +148,14 @@ export function sleepSystem(world: PhysicsWorld): void {
   const lin2 = sl.linearSpeed * sl.linearSpeed,
     ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
-  const rows = cs.cache.rows;
-  // Support: a body rests only while some contact pushed it this step.
+  // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
+  const edges = emptyIslandEdges();
+  if (world.dimensions === 2) addIslandEdges2D(world, edges);
+  else addIslandEdges3D(world, edges);
+  // Support: a body rests only while some contact or joint pushed it this step.
   const stamp = ++sl.stamp,
     supported = sl.supported;
-  for (let i = 0; i < rows.count; i++) {
-    if (rows.normalImpulse[i]! <= 0) continue;
-    supported[rows.a[i]!] = stamp;
-    supported[rows.b[i]!] = stamp;
-  }
-  markJointSupport(world, supported, stamp);
-  markJoint3DSupport(world, supported, stamp);
-  markShapeSupport(world, supported, stamp);
-  markShape3DSupport(world, supported, stamp);
+  markSupport(edges, supported, stamp);
   // Whether a body has AngularVelocity, from bitecs' component masks (what hasComponent reads, without
   // its lookups per body): no entry, no body has it.
   const ecs = ecsOf(world);
@@ -204,34 +191,15 @@ export function sleepSystem(world: PhysicsWorld): void {
       break;
     }
   if (candidates === 0) {
-    joinJointIslands(world, bodies, rest, parent);
-    wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
+    wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
     cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
     return;
   }
-  // Islands over contacts between dynamic awake bodies that pushed.
-  const find = (x: number): number => {
-    while (parent[x] !== x) {
-      parent[x] = parent[parent[x]!]!;
-      x = parent[x]!;
-    }
-    return x;
-  };
-  for (let i = 0; i < rows.count; i++) {
-    if (rows.kind[i] !== 0 || rows.normalImpulse[i]! <= 0) continue;
-    const a = rows.a[i]!,
-      b = rows.b[i]!;
-    if (cs.bodyType[a] !== 0 || cs.bodyType[b] !== 0) continue;
-    const ra = find(a),
-      rb = find(b);
-    if (ra !== rb) parent[ra] = rb;
-  }
-  // ... over shape contacts ...
-  joinShapeIslands(world, parent, find);
-  joinShape3DIslands(world, parent, find);
-  // ... and over joints (2D and 3D; `supported` is read no more this step, and marks the candidates).
-  joinJointIslands(world, bodies, rest, parent);
-  wakeIslandsOf(world, joinJoint3DIslands(world, bodies, rest, parent, supported, ++sl.stamp));
+  // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
+  // read no more this step, and marks the candidates).
+  const find = (x: number): number => findRoot(parent, x);
+  joinContactEdges(world, edges, parent);
+  wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
   for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
   for (let i = 0; i < n; i++) {
     const e = bodies[i]!;
@@ -265,6 +233,24 @@ export function sleepSystem(world: PhysicsWorld): void {
     sl.anyAsleep = true;
   }
   cs.stats.sleeping = sl.anyAsleep ? query(world, [c.Sleeping]).length : 0;
+}
+
+/**
+ * The bodies that may fall asleep this step: `balls` (islands/sleep.ts's query of awake dynamic balls) plus
+ * the awake dynamic bodies carrying a shape. Returns `balls` itself when the world has no shapes;
+ * otherwise a view of a reused array (valid until the next call).
+ */
+function withShapeBodies(world: PhysicsWorld, balls: ArrayLike<number>): ArrayLike<number> {
+  const st = world.collision.shapes;
+  if (!st.active) return balls;
+  const c = world.components;
+  const shaped = query(world, [c.Position, c.Velocity, c.Shape, c.Force, Not(c.Ball), Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);
+  const n = balls.length + shaped.length;
+  if (st.sleepList.length < n) st.sleepList = new Uint32Array(Math.max(n, 2 * st.sleepList.length));
+  const out = st.sleepList;
+  for (let i = 0; i < balls.length; i++) out[i] = balls[i]!;
+  for (let i = 0; i < shaped.length; i++) out[balls.length + i] = shaped[i]!;
+  return out.subarray(0, n);
 }
 
 /**
