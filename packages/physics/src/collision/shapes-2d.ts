@@ -340,6 +340,11 @@ function collidePairs(world: PhysicsWorld, st: ShapeCollisionState): void {
   const h = world.h;
   const sensorNow = st.sensorNow;
   sensorNow.clear();
+  // A pair makes at most one manifold. Grown here with half again as much room, a settling scene's
+  // buffers grow once each rather than double row by row over its first steps (fresh memory is
+  // costly to touch: each doubling writes every column anew).
+  const needed = st.manifolds.count + sc.pairCount;
+  if (needed > st.manifolds.capacity) growManifoldBuffer(st.manifolds, needed + (needed >> 1));
   for (let k = 0, n = sc.pairCount; k < n; k++) {
     let i = sc.pairI[k]!,
       j = sc.pairJ[k]!;
