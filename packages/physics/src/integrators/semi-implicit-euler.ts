@@ -202,100 +202,61 @@ function fusedForced2(world: PhysicsWorld, h: number): void {
   // The force is 0 here: only a velocity or position can be non-finite.
   if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 
-  // Quadratic drag F = -k |v| v (forces/drag.ts, calm air).
-  ents = fusedQuadraticBodies(world);
-  check = 0;
-  // The first body whose force is not finite (-1: none); the pass stops before moving it.
-  let bad = -1;
-  const kq = c.QuadraticDrag.k;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    const u = vx[e]!,
-      v = vy[e]!,
-      z = vz[e]!;
-    const inv = im[e]!;
-    const cq = kq[e]! * Math.sqrt(u * u + v * v + z * z);
-    let fxe = 0,
-      fye = 0;
-    if (cq * inv >= limit) markStiffQuadratic(world, e, kq[e]!);
-    else {
-      fxe = 0 - cq * u;
-      fye = 0 - cq * v;
-      // The z component as the law writes it (0 in a 2D world unless set by hand: then unchanged but for a -0).
-      if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cq * z;
-    }
-    fx[e] = fxe;
-    fy[e] = fye;
-    // A NaN or infinite force stops the pass before this body moves (x * 0 is 0 or -0 exactly when x is finite).
-    if (fxe * 0 + fye * 0 !== 0) {
-      bad = e;
-      break;
-    }
-    const w = inv * h;
-    const nvx = u + fxe * w + gxh,
-      nvy = v + fye * w + gyh;
-    const x = px[e]!,
-      y = py[e]!;
-    ox[e] = x;
-    oy[e] = y;
-    vx[e] = nvx;
-    vy[e] = nvy;
-    const k = fxe === 0 && fye === 0 ? 1 : 0;
-    const nx = x + (nvx - k * hx) * h,
-      ny = y + (nvy - k * hy) * h;
-    px[e] = nx;
-    py[e] = ny;
-    check += nvx + nvy + nx * 0 + ny * 0;
-  }
-  if (bad >= 0) nonFiniteForce(world, bad);
-  if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
-
-  // Linear drag F = -k v (forces/drag.ts, calm air).
-  ents = fusedLinearBodies(world);
-  check = 0;
-  bad = -1;
+  // Quadratic drag F = -k |v| v (kind 1), then linear drag F = -k v (kind 2) (forces/drag.ts, calm air).
+  const kq = c.QuadraticDrag.k,
+    kl = c.LinearDrag.k;
   let stiff = 0;
-  const kl = c.LinearDrag.k;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    const u = vx[e]!,
-      v = vy[e]!;
-    const inv = im[e]!;
-    const cl = kl[e]!;
-    let fxe = 0,
-      fye = 0;
-    if (cl * inv >= limit) stiff++;
-    else {
-      fxe = 0 - cl * u;
-      fye = 0 - cl * v;
-      const z = vz[e]!;
-      if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cl * z;
+  for (let kind = 1; kind < 3; kind++) {
+    ents = kind === 1 ? fusedQuadraticBodies(world) : fusedLinearBodies(world);
+    check = 0;
+    // The first body whose force is not finite (-1: none); the pass stops before moving it.
+    let bad = -1;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      const u = vx[e]!,
+        v = vy[e]!,
+        z = vz[e]!;
+      const inv = im[e]!;
+      // F = -cd v: cd = k |v| (quadratic) or k (linear).
+      const cd = kind === 1 ? kq[e]! * Math.sqrt(u * u + v * v + z * z) : kl[e]!;
+      let fxe = 0,
+        fye = 0;
+      if (cd * inv >= limit) {
+        if (kind === 1) markStiffQuadratic(world, e, kq[e]!);
+        else stiff++;
+      } else {
+        fxe = 0 - cd * u;
+        fye = 0 - cd * v;
+        // The z component as the law writes it (0 in a 2D world unless set by hand: then unchanged but for a -0).
+        if (z !== 0 || 1 / z < 0) fz[e] = fz[e]! - cd * z;
+      }
+      fx[e] = fxe;
+      fy[e] = fye;
+      // A NaN or infinite force stops the pass before this body moves (x * 0 is 0 or -0 exactly when x is finite).
+      if (fxe * 0 + fye * 0 !== 0) {
+        bad = e;
+        break;
+      }
+      const w = inv * h;
+      const nvx = u + fxe * w + gxh,
+        nvy = v + fye * w + gyh;
+      const x = px[e]!,
+        y = py[e]!;
+      ox[e] = x;
+      oy[e] = y;
+      vx[e] = nvx;
+      vy[e] = nvy;
+      const k = fxe === 0 && fye === 0 ? 1 : 0;
+      const nx = x + (nvx - k * hx) * h,
+        ny = y + (nvy - k * hy) * h;
+      px[e] = nx;
+      py[e] = ny;
+      check += nvx + nvy + nx * 0 + ny * 0;
     }
-    fx[e] = fxe;
-    fy[e] = fye;
-    if (fxe * 0 + fye * 0 !== 0) {
-      bad = e;
-      break;
-    }
-    const w = inv * h;
-    const nvx = u + fxe * w + gxh,
-      nvy = v + fye * w + gyh;
-    const x = px[e]!,
-      y = py[e]!;
-    ox[e] = x;
-    oy[e] = y;
-    vx[e] = nvx;
-    vy[e] = nvy;
-    const k = fxe === 0 && fye === 0 ? 1 : 0;
-    const nx = x + (nvx - k * hx) * h,
-      ny = y + (nvy - k * hy) * h;
-    px[e] = nx;
-    py[e] = ny;
-    check += nvx + nvy + nx * 0 + ny * 0;
+    if (stiff > 0) stampLinear(world);
+    if (bad >= 0) nonFiniteForce(world, bad);
+    if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
   }
-  if (stiff > 0) stampLinear(world);
-  if (bad >= 0) nonFiniteForce(world, bad);
-  if (check - check !== 0) reportNonFinite(world, ents, 'integrate');
 }
 
 /**
