@@ -1,7 +1,7 @@
 /**
  * Catapult rules (games/catapult/scene.ts), headless: castles stand under their own weight, a throw at
- * the angle from sin(2 theta) = g R / v^2 lands at the drag-free range, and a strong hit on the castle
- * breaks welds and scores.
+ * the angle from sin(2 theta) = g R / v^2 lands at the drag-free range, a weak throw stops on the
+ * grass short of the castle, and a strong hit on the castle breaks welds and scores.
  */
 
 import { createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
@@ -94,6 +94,22 @@ describe('catapult rules', () => {
     expect(tally(w, lv).fallen).toBe(1);
     P.y[s] = p.startY;
     expect(tally(w, lv)).toEqual({ fallen: 1, broken: 0, score: 100 });
+  });
+
+  it('a weak throw that lands short stops on the grass: it does not roll into the castle and score', () => {
+    // A playtester scored 650 on level 1 with a short pull: the stone landed 3 m out and rolled on
+    // into the tower. A pull of 1 m (7 m/s) at 15 degrees, on three seeds of level 1.
+    for (const seed of [1, 2, 3]) {
+      const w = createPhysicsWorld(worldOptions({ gravity: G }));
+      const lv = buildLevel(w, { level: 0, seed, gravity: G, jointStrength: 400 });
+      const a = (15 * Math.PI) / 180;
+      const ball = launch(w, 7 * Math.cos(a), 7 * Math.sin(a), 3);
+      for (let i = 0; i < 300; i++) step(w);
+      const s = slotOf(ball);
+      expect(tally(w, lv).score).toBe(0);
+      expect(w.components.Position.x[s]!).toBeLessThan(lv.castleMinX - 3);
+      expect(Math.abs(w.components.Velocity.x[s]!)).toBeLessThan(0.05);
+    }
   });
 
   it('rejects a level out of range', () => {
