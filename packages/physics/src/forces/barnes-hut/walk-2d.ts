@@ -78,39 +78,10 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         grown.set(st);
         st = grown;
       }
-      if (a === b) {
+      const self = a === b;
+      if (self && !(skip[a] === a + 1 || hi1 - lo1 <= 8)) {
+        // The cell with itself: its children with themselves and each other.
         const sa = skip[a]!;
-        if (sa === a + 1 || hi1 - lo1 <= 8) {
-          // Direct sum over the pairs of the cell (each pair once, both bodies).
-          for (let i = lo1; i < hi1 - 1; i++) {
-            const xi = X[i]!,
-              yi = Y[i]!,
-              mi = Mb[i]!;
-            let sx = 0,
-              sy = 0;
-            for (let j = i + 1; j < hi1; j++) {
-              const dx = X[j]! - xi,
-                dy = Y[j]! - yi;
-              const r2 = dx * dx + dy * dy + eps2;
-              if (r2 > 0) {
-                const w = 1 / (r2 * Math.sqrt(r2)),
-                  wx = w * dx,
-                  wy = w * dy,
-                  mj = Mb[j]!;
-                sx += mj * wx;
-                sy += mj * wy;
-                L[offX + j] = L[offX + j]! - mi * wx;
-                L[offY + j] = L[offY + j]! - mi * wy;
-              }
-            }
-            L[offX + i] = L[offX + i]! + sx;
-            L[offY + i] = L[offY + i]! + sy;
-          }
-          const np = ((hi1 - lo1) * (hi1 - lo1 - 1)) >> 1;
-          if (mine) bodyPairs += np;
-          work += np;
-          continue;
-        }
         for (let c = a + 1; c < sa; c = skip[c]!) {
           st[sp++] = c;
           st[sp++] = c;
@@ -133,37 +104,11 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         rs = ra + rb;
       const leafA = skip[a] === a + 1,
         leafB = skip[b] === b + 1;
-      if (na * nb <= 16 || (!(u > rs * rs * f) && leafA && leafB)) {
-        // Direct sum between the two cells, both ways.
-        for (let i = lo1; i < hi1; i++) {
-          const xi = X[i]!,
-            yi = Y[i]!,
-            mi = Mb[i]!;
-          let sx = 0,
-            sy = 0;
-          for (let j = lo2; j < hi2; j++) {
-            const dx = X[j]! - xi,
-              dy = Y[j]! - yi;
-            const r2 = dx * dx + dy * dy + eps2;
-            if (r2 > 0) {
-              const w = 1 / (r2 * Math.sqrt(r2)),
-                wx = w * dx,
-                wy = w * dy,
-                mj = Mb[j]!;
-              sx += mj * wx;
-              sy += mj * wy;
-              L[offX + j] = L[offX + j]! - mi * wx;
-              L[offY + j] = L[offY + j]! - mi * wy;
-            }
-          }
-          L[offX + i] = L[offX + i]! + sx;
-          L[offY + i] = L[offY + i]! + sy;
-        }
-        if (mine) bodyPairs += na * nb;
-        work += na * nb;
-        continue;
-      }
-      if (u > rs * rs * f) {
+      // Two cells of many bodies: expanded when far apart, else the larger cell (or the one not a
+      // leaf) split; otherwise, and for a small cell with itself, the direct sum below.
+      const many = !self && na * nb > 16,
+        far = u > rs * rs * f;
+      if (many && far) {
         // Mutual cell-cell expansion to order 4 (see forces/barnes-hut/tree.ts).
         const X1 = Rx,
           Y1 = Ry;
@@ -276,19 +221,51 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         work += 8;
         continue;
       }
-      if (!leafA && (leafB || ra >= rb)) {
-        const sa = skip[a]!;
-        for (let c = a + 1; c < sa; c = skip[c]!) {
-          st[sp++] = c;
-          st[sp++] = b;
+      if (many && !(leafA && leafB)) {
+        if (!leafA && (leafB || ra >= rb)) {
+          const sa = skip[a]!;
+          for (let c = a + 1; c < sa; c = skip[c]!) {
+            st[sp++] = c;
+            st[sp++] = b;
+          }
+        } else {
+          const sb = skip[b]!;
+          for (let c = b + 1; c < sb; c = skip[c]!) {
+            st[sp++] = a;
+            st[sp++] = c;
+          }
         }
-      } else {
-        const sb = skip[b]!;
-        for (let c = b + 1; c < sb; c = skip[c]!) {
-          st[sp++] = a;
-          st[sp++] = c;
-        }
+        continue;
       }
+      // Direct sum over the body pairs, both bodies of each: within the cell (each pair once) or
+      // between the two cells.
+      for (let i = lo1, iEnd = self ? hi1 - 1 : hi1; i < iEnd; i++) {
+        const xi = X[i]!,
+          yi = Y[i]!,
+          mi = Mb[i]!;
+        let sx = 0,
+          sy = 0;
+        for (let j = self ? i + 1 : lo2; j < hi2; j++) {
+          const dx = X[j]! - xi,
+            dy = Y[j]! - yi;
+          const r2 = dx * dx + dy * dy + eps2;
+          if (r2 > 0) {
+            const w = 1 / (r2 * Math.sqrt(r2)),
+              wx = w * dx,
+              wy = w * dy,
+              mj = Mb[j]!;
+            sx += mj * wx;
+            sy += mj * wy;
+            L[offX + j] = L[offX + j]! - mi * wx;
+            L[offY + j] = L[offY + j]! - mi * wy;
+          }
+        }
+        L[offX + i] = L[offX + i]! + sx;
+        L[offY + i] = L[offY + i]! + sy;
+      }
+      const np = self ? ((hi1 - lo1) * (hi1 - lo1 - 1)) >> 1 : na * nb;
+      if (mine) bodyPairs += np;
+      work += np;
     }
     // Downward pass over the nodes holding slots of the part: shift each cell's polynomial
     // a(d) = a0 + J d + K d d / 2 + H d d d / 6 to its children, evaluate it at the part's bodies.
