@@ -32,19 +32,39 @@ function idList(e: Encoded, lists: readonly Int32Array[], path: string): Int32Ar
   return list;
 }
 
+/**
+ * Writes the stored ECS state `ecs` (component layout, masks, entity index, queries) into `world`
+ * from reader `r`; `oldMaxId` is the world's highest entity id before the restore.
+ * @throws RangeError on a damaged snapshot or one with a component this world does not have.
+ */
 export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r: Reader, oldMaxId: number): void {
   const ctx = internals(world);
-  const ix = ctx.entityIndex;
-  const C = world.components as unknown as Record<string, object>;
   const lists = readIdLists(ecs.lists as Encoded[], r, world.capacity);
-  // Layout: the target's bit of each snapshot component (registering components the target has not seen).
+  const { map, same } = componentLayout(world, ctx, ecs);
+  const byKey = snapshotQueries(world, ctx, ecs);
+  const maxId = ecs.maxId as number;
+  restoreMasks(ctx, ecs, r, map, same, Math.max(maxId, oldMaxId) + 1);
+  restoreEntityIndex(world, ctx, ecs, lists);
+  restoreQueries(ctx, ecs, lists, byKey, ecs.aliveCount as number);
+}
+
+/** One snapshot component's bit (generation `sg`, bit `sbit`) and the target world's (generation `tg`, flag `tflag`). */
+interface BitMap {
+  sg: number;
+  sbit: number;
+  tg: number;
+  tflag: number;
+}
+
+/**
+ * The target's bit of each snapshot component (registering components the target has not seen), and
+ * whether every bit is the same in both.
+ */
+function componentLayout(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<string, Encoded>): { map: BitMap[]; same: boolean } {
+  const C = world.components as unknown as Record<string, object>;
   const layout = ecs.layout as [string, number, number][];
-  // The stored masks: views into the snapshot, checked here (before anything is written); a repeated
-  // value is expanded only where the layouts differ (else written straight into the world's masks).
-  const maskEnc = (ecs.masks as Encoded[]).map((m) => m as Record<string, Encoded>);
-  const maskViews = maskEnc.map((m, g) => r.array(m, `masks[${g}]`) as Int32Array);
   let same = true;
-  const map: Array<{ sg: number; sbit: number; tg: number; tflag: number }> = [];
+  const map: BitMap[] = [];
   for (const [name, sg, sbit] of layout) {
     const comp = C[name];
     if (comp === undefined) throw new RangeError(`restore: snapshot has component '${name}', which this world does not`);
@@ -52,9 +72,17 @@ export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r:
     if (data.generationId !== sg || bitIndex(data.bitflag) !== sbit) same = false;
     map.push({ sg, sbit, tg: data.generationId, tflag: data.bitflag });
   }
-  // Queries of the snapshot this world lacks are made now, before its masks and entity index change:
-  // bitecs fills a new query by testing every live entity (about 0.5 s for 100,000 entities and the
-  // 40-odd queries of a world that has not stepped yet), and these lists are overwritten below anyway.
+  return { map, same };
+}
+
+/**
+ * The world's queries by key, with the snapshot's queries this world lacks made now, before its masks
+ * and entity index change: bitecs fills a new query by testing every live entity (about 0.5 s for
+ * 100,000 entities and the 40-odd queries of a world that has not stepped yet), and these lists are
+ * overwritten by restoreQueries anyway.
+ */
+function snapshotQueries(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<string, Encoded>): Map<string, QueryData> {
+  const C = world.components as unknown as Record<string, object>;
   const names = namesOf(world);
   const byKey = new Map<string, QueryData>();
   for (const q of ctx.queries) {
@@ -77,10 +105,26 @@ export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r:
     if (q === undefined) throw new Error(`restore: could not make the query ${key}`);
     byKey.set(key, q);
   }
-  const maxId = ecs.maxId as number;
+  return byKey;
+}
+
+/**
+ * The component masks, written in place for ids below `top` (the larger of the two highest ids, plus
+ * one; ids above both are 0). The stored masks are views into the snapshot, checked before anything is
+ * written; a repeated value is expanded only where the layouts differ (else written straight into the
+ * world's masks).
+ */
+function restoreMasks(
+  ctx: EcsInternals,
+  ecs: Record<string, Encoded>,
+  r: Reader,
+  map: readonly BitMap[],
+  same: boolean,
+  top: number,
+): void {
+  const maskEnc = (ecs.masks as Encoded[]).map((m) => m as Record<string, Encoded>);
+  const maskViews = maskEnc.map((m, g) => r.array(m, `masks[${g}]`) as Int32Array);
   const gens = ctx.entityMasks.length;
-  // Masks, written in place: entries up to the larger of the two highest ids (ids above both are 0).
-  const top = Math.max(maxId, oldMaxId) + 1;
   if (same) {
     for (let g = 0; g < gens; g++) {
       const arr = ctx.entityMasks[g]!,
@@ -94,19 +138,26 @@ export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r:
         writeMask(arr, e === undefined ? undefined : (r.used(e, `masks[${g}]`) as Int32Array), top);
       }
     }
-  } else {
-    const srcMasks = maskEnc.map((m, g) => r.used(m, `masks[${g}]`) as Int32Array);
-    const newMasks: Int32Array[] = [];
-    for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(top));
-    for (const { sg, sbit, tg, tflag } of map) {
-      const s = srcMasks[sg]!,
-        t = newMasks[tg]!;
-      const f = 1 << sbit;
-      for (let e = 0; e < s.length; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
-    }
-    for (let g = 0; g < gens; g++) writeMask(ctx.entityMasks[g]!, newMasks[g], top);
+    return;
   }
-  // Entity index (written in place: its arrays stay packed).
+  const srcMasks = maskEnc.map((m, g) => r.used(m, `masks[${g}]`) as Int32Array);
+  const newMasks: Int32Array[] = [];
+  for (let g = 0; g < gens; g++) newMasks.push(new Int32Array(top));
+  for (const { sg, sbit, tg, tflag } of map) {
+    const s = srcMasks[sg]!,
+      t = newMasks[tg]!;
+    const f = 1 << sbit;
+    for (let e = 0; e < s.length; e++) if ((s[e]! & f) !== 0) t[e]! |= tflag;
+  }
+  for (let g = 0; g < gens; g++) writeMask(ctx.entityMasks[g]!, newMasks[g], top);
+}
+
+/**
+ * The entity index (written in place: its arrays stay packed) and, in a world not made by
+ * createPhysicsWorld, the entities' component sets rebuilt from the masks.
+ */
+function restoreEntityIndex(world: PhysicsWorld, ctx: EcsInternals, ecs: Record<string, Encoded>, lists: readonly Int32Array[]): void {
+  const ix = ctx.entityIndex;
   const dense = idList(ecs.dense!, lists, 'ecs.dense');
   const aliveCount = ecs.aliveCount as number;
   // Unchanged (a rewind without births or deaths): its sparse array, kept in step with it, is too.
@@ -116,27 +167,39 @@ export function restoreEcs(world: PhysicsWorld, ecs: Record<string, Encoded>, r:
     for (let i = 0; i < dense.length; i++) sparse[dense[i]!] = i;
   }
   ix.aliveCount = aliveCount;
-  ix.maxId = maxId;
-  // Component sets: derived from the masks in a world made by createPhysicsWorld; rebuilt otherwise.
-  if (!hasMaskComponentSets(world)) {
-    const bits: object[][] = [];
-    for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
-    ctx.entityComponents.clear();
-    for (let i = 0; i < aliveCount; i++) {
-      const e = dense[i]!;
-      const set = new Set<object>();
-      for (let g = 0; g < gens; g++) {
-        let m = ctx.entityMasks[g]![e] ?? 0;
-        while (m !== 0) {
-          const b = 31 - Math.clz32(m);
-          set.add(bits[g]![b]!);
-          m &= ~(1 << b);
-        }
+  ix.maxId = ecs.maxId as number;
+  if (hasMaskComponentSets(world)) return;
+  const gens = ctx.entityMasks.length;
+  const bits: object[][] = [];
+  for (const data of ctx.componentMap.values()) (bits[data.generationId] ??= [])[bitIndex(data.bitflag)] = data.ref;
+  ctx.entityComponents.clear();
+  for (let i = 0; i < aliveCount; i++) {
+    const e = dense[i]!;
+    const set = new Set<object>();
+    for (let g = 0; g < gens; g++) {
+      let m = ctx.entityMasks[g]![e] ?? 0;
+      while (m !== 0) {
+        const b = 31 - Math.clz32(m);
+        set.add(bits[g]![b]!);
+        m &= ~(1 << b);
       }
-      ctx.entityComponents.set(e, set);
     }
+    ctx.entityComponents.set(e, set);
   }
-  // Queries: the snapshot's in their order; any other query of this world is rebuilt in entity order.
+}
+
+/**
+ * The queries: the snapshot's in their order (each made by snapshotQueries, in `byKey`); any other
+ * query of this world is rebuilt in entity order over the first `aliveCount` entities.
+ */
+function restoreQueries(
+  ctx: EcsInternals,
+  ecs: Record<string, Encoded>,
+  lists: readonly Int32Array[],
+  byKey: ReadonlyMap<string, QueryData>,
+  aliveCount: number,
+): void {
+  const ix = ctx.entityIndex;
   const done = new Set<QueryData>();
   let known = matching.get(ecs);
   // The first set this restore gave each stored list, its version before, and whether it was written.
