@@ -149,6 +149,48 @@ const SKY = 0x9fd0f5,
   GRASS = 0x4f8f3a,
   EARTH = 0x6b4a2e;
 
+// The panel goes in before the game starts: made after, it took the right column from a canvas
+// already drawn, which shrank from 1060 to 735 px wide at 1280 x 800 and the scene jumped twice in
+// its first second.
+const panel = createPanel(
+  params,
+  [
+    {
+      type: 'slider',
+      key: 'level',
+      label: 'level (rebuilds)',
+      min: 1,
+      max: LEVEL_COUNT,
+      step: 1,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
+    {
+      type: 'slider',
+      key: 'gravity',
+      label: 'gravity (m/s²)',
+      min: 1,
+      max: 30,
+      step: 0.01,
+      onChange: (g) => setGravity(shell.world, [0, -g]),
+    },
+    {
+      type: 'slider',
+      key: 'jointStrength',
+      label: 'joint strength (N, rebuilds)',
+      min: 50,
+      max: 3000,
+      step: 10,
+      onRelease: true,
+      onChange: () => shell.reset(),
+    },
+    { type: 'button', key: 'reset', label: 'reset level (R)' },
+    { type: 'button', key: 'next', label: 'next level (L)' },
+  ],
+  { title: 'Catapult' },
+);
+
 const game = await startPixiGame({
   title: 'Catapult',
   createWorld,
@@ -201,6 +243,8 @@ const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 const GROUND_AT = 0.26;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
 let framedFor = '';
+/** Every screen size the view has been framed for since the page loaded (one, unless the window was resized). */
+const sizesFramed = new Set<string>();
 function frameCamera(): void {
   const cam = renderer.camera;
   const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
@@ -214,6 +258,7 @@ function frameCamera(): void {
   const target = { minX, minY, maxX, maxY: Math.max(minY + height, lv.castleTop + 4) };
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
+  if (size !== framedFor) sizesFramed.add(size);
   framedFor = size;
   cameraView.minX += k * (target.minX - cameraView.minX);
   cameraView.maxX += k * (target.maxX - cameraView.maxX);
@@ -231,45 +276,8 @@ function frameCamera(): void {
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
 framing = true;
-
-const panel = createPanel(
-  params,
-  [
-    {
-      type: 'slider',
-      key: 'level',
-      label: 'level (rebuilds)',
-      min: 1,
-      max: LEVEL_COUNT,
-      step: 1,
-      onRelease: true,
-      onChange: () => shell.reset(),
-    },
-    { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
-    {
-      type: 'slider',
-      key: 'gravity',
-      label: 'gravity (m/s²)',
-      min: 1,
-      max: 30,
-      step: 0.01,
-      onChange: (g) => setGravity(shell.world, [0, -g]),
-    },
-    {
-      type: 'slider',
-      key: 'jointStrength',
-      label: 'joint strength (N, rebuilds)',
-      min: 50,
-      max: 3000,
-      step: 10,
-      onRelease: true,
-      onChange: () => shell.reset(),
-    },
-    { type: 'button', key: 'reset', label: 'reset level (R)' },
-    { type: 'button', key: 'next', label: 'next level (L)' },
-  ],
-  { title: 'Catapult' },
-);
+// Framed now, not at the first frame: the camera holds the aim view from the start.
+frameCamera();
 
 const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
 
@@ -682,6 +690,8 @@ shell.expose({
   level: (): Level => lv,
   /** Throws with a pull (dx, dy), m (tests). @returns the projectile's handle, or 0 if none was thrown. */
   fire,
+  /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
+  sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */
   positionOf: (h: number): [number, number] => [
     shell.world.components.Position.x[slotOf(h)]!,

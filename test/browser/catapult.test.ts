@@ -53,6 +53,11 @@ describe('catapult', () => {
     const legend = await g.page.locator('.bp-legend').textContent();
     for (const key of ['P', 'R', 'L', 'Drag']) expect(legend).toContain(key);
     expect(await g.page.locator('.lil-gui').count()).toBeGreaterThan(0);
+    // The view was framed for one canvas size since load: the panel is in place before the first
+    // frame (made after it, it narrowed the canvas from 1060 to 735 px and the scene jumped twice).
+    const sizes = await g.page.evaluate(() => (window.game as unknown as { sizesFramed(): string[] }).sizesFramed());
+    const canvas = await g.page.evaluate(() => document.querySelector('canvas')!.getBoundingClientRect().toJSON() as DOMRect);
+    expect(sizes).toEqual([`${canvas.width}x${canvas.height}`]);
     expect(g.errors).toEqual([]);
   });
 
