@@ -66,6 +66,11 @@ const lastThrow = {
   body: 0,
   path: [] as number[],
   scoreBefore: 0,
+  /** Farthest x (m) the throw reached above the ground's level (where it came down, once it did). */
+  farthest: 0,
+  /** Launch velocity, m/s. */
+  vx: 0,
+  vy: 0,
   /** World time of the throw, s. */
   time: 0,
   /** What the throw did ('' until it settles), where to show it (m) and when it was decided (s). */
@@ -330,6 +335,9 @@ function fire(dx: number, dy: number): number {
   lastThrow.scoreBefore = tally(shell.world, lv).score;
   lastThrow.time = shell.world.time;
   lastThrow.verdict = '';
+  lastThrow.farthest = LAUNCH.x;
+  lastThrow.vx = vx;
+  lastThrow.vy = vy;
   sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
   return ball;
 }
@@ -358,6 +366,7 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
     const px = P.x[s]!,
       py = P.y[s]!;
     speed = Math.hypot(V.x[s]!, V.y[s]!);
+    if (py >= 0) lastThrow.farthest = Math.max(lastThrow.farthest, px);
     if (since < TRAIL_TIME && Math.hypot(px - x, py - y) >= TRAIL_SPACING) lastThrow.path.push(px, py);
     x = px;
     y = py;
@@ -379,13 +388,63 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
       landX = path[i]!;
       break;
     }
+  // By how far: where the throw would have come down on open ground (drag-free), from the castle's
+  // near or far end, in whole metres (at least 1).
+  const g = -world.gravity[1]!,
+    vy = lastThrow.vy;
+  const ground = LAUNCH.x + (lastThrow.vx * (vy + Math.sqrt(vy * vy + 2 * g * LAUNCH.y))) / g;
+  const by = (d: number): number => Math.max(1, Math.round(d));
   lastThrow.verdict =
     landX < lv.castleMinX - 0.3
-      ? 'Short: pull further back'
+      ? `Short by ${by(lv.castleMinX - Math.min(ground, landX))} m: pull further back`
       : landX > lv.castleMaxX + 0.3
-        ? 'Over the top: pull less, or aim lower'
+        ? `Long by ${by(ground - lv.castleMaxX)} m: pull less, or aim lower`
         : 'No damage: throw harder, or hit lower';
   lastThrow.at = [Math.min(Math.max(x, lv.castleMinX - 4), lv.castleMaxX), Math.max(y, 0) + 2.2];
+}
+
+/**
+ * Where the last throw is when it is off the screen (over the top, past the right edge, or fallen off
+ * the ground's end): an arrow at the screen's edge pointing at it, and how far it is past the rock
+ * when it went long, until the next throw. A full pull flew off the edge and a playtester saw nothing.
+ */
+function drawOffscreen(world: PhysicsWorld): void {
+  offscreenText.visible = false;
+  const b = lastThrow.body;
+  if (!b || !isAlive(world, b)) return;
+  const cam = renderer.camera;
+  const [x, y] = positionOf(b);
+  const px = cam.toScreenX(x),
+    py = cam.toScreenY(y),
+    W = cam.width,
+    H = cam.height;
+  const m = 18;
+  if (px >= 0 && px <= W && py >= 0 && py <= H) return;
+  // The arrow's tip on the screen's edge, on the line from the screen's centre to the stone.
+  const ax = Math.min(Math.max(px, m), W - m),
+    ay = Math.min(Math.max(py, m + 56), H - m);
+  const ang = Math.atan2(py - ay, px - ax);
+  const c = Math.cos(ang),
+    sn = Math.sin(ang);
+  const tip = (d: number, side: number): [number, number] => [ax + c * d - sn * side, ay + sn * d + c * side];
+  overlay
+    .poly([...tip(10, 0), ...tip(-10, 9), ...tip(-5, 0), ...tip(-10, -9)])
+    .fill({ color: 0xffe066 })
+    .stroke({ width: 2, color: 0x000000 });
+  const past = lastThrow.farthest - lv.castleMaxX;
+  if (px <= W || past < 1) return;
+  offscreenText.visible = true;
+  const label = `${Math.round(past)} m past ▸`;
+  if (offscreenText.text !== label) offscreenText.text = label;
+  offscreenText.x = W - m - 14;
+  offscreenText.y = ay;
+}
+
+/** Position of a body by handle, m. */
+function positionOf(h: number): [number, number] {
+  const P = shell.world.components.Position,
+    s = slotOf(h);
+  return [P.x[s]!, P.y[s]!];
 }
 
 /** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
@@ -394,6 +453,7 @@ function drawThrow(world: PhysicsWorld): void {
   const path = lastThrow.path;
   for (let i = 2; i < path.length; i += 2)
     overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2).fill({ color: 0xffffff, alpha: 0.55 });
+  drawOffscreen(world);
   const age = world.time - lastThrow.decidedAt;
   if (!lastThrow.verdict || age > VERDICT_SHOWN) {
     verdictText.visible = false;
@@ -433,7 +493,14 @@ const verdictText = new Text({
 });
 verdictText.anchor.set(0.5, 1);
 verdictText.visible = false;
-renderer.root.addChild(overlay, banner, verdictText);
+/** How far past the castle an off-screen throw came down (see drawOffscreen). */
+const offscreenText = new Text({
+  text: '',
+  style: { fill: 0xffe066, fontSize: 15, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 4 } },
+});
+offscreenText.anchor.set(1, 0.5);
+offscreenText.visible = false;
+renderer.root.addChild(overlay, banner, verdictText, offscreenText);
 
 /**
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
@@ -693,10 +760,9 @@ shell.expose({
   /** The screen sizes (CSS px, 'WxH') the camera has framed since the page loaded. */
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */
-  positionOf: (h: number): [number, number] => [
-    shell.world.components.Position.x[slotOf(h)]!,
-    shell.world.components.Position.y[slotOf(h)]!,
-  ],
+  positionOf,
+  /** The off-screen marker's distance while it shows ('N m past ▸'), else ''. */
+  offscreen: (): string => (offscreenText.visible ? offscreenText.text : ''),
   /** Steps the world n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) shell.step();

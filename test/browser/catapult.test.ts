@@ -1,6 +1,7 @@
 /**
  * Catapult in headless Chromium: the page draws and lists its controls; a mouse drag back from the
- * cup and release throws a projectile that flies; a throw at the castle raises the score; P pauses.
+ * cup and release throws a projectile that flies; a throw at the castle raises the score; a throw
+ * that overshoots or falls short says by how much, with an arrow to where it went; P pauses.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
@@ -130,6 +131,24 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('a full pull overshoots: an arrow at the edge points where it went and the verdict says by how much', async () => {
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = false;
+      w.reset();
+      w.fire(-3 * Math.SQRT1_2, -3 * Math.SQRT1_2);
+    });
+    await g.waitFor(() => (window.game as unknown as CatapultGame).lastVerdict() !== '', null);
+    const verdict = await g.page.evaluate(() => (window.game as unknown as CatapultGame).lastVerdict());
+    // 21 m/s at 45 degrees comes down 46 m out, 27 m past the castle (at 16-19 m).
+    const long = /^Long by (\d+) m: pull less, or aim lower$/.exec(verdict);
+    expect(long, verdict).not.toBeNull();
+    expect(Number(long![1])).toBeGreaterThan(20);
+    const off = await g.page.evaluate(() => (window.game as unknown as { offscreen(): string }).offscreen());
+    expect(off).toMatch(/^\d+ m past ▸$/);
+    expect(g.errors).toEqual([]);
+  });
+
   it('a level where under half the pieces fell is not cleared: the button plays it again; L moves the level slider', async () => {
     // Every shot thrown straight up, away from the castle: nothing falls, so the level is over once
     // the shots are spent and 4 s passed, not cleared (the pass mark is half the pieces).
@@ -147,8 +166,10 @@ describe('catapult', () => {
       const w = window.game as unknown as CatapultGame;
       return { fallen: w.tally().fallen, stars: w.campaign.stars[0], level: w.params.level, verdict: w.lastVerdict() };
     });
-    // A throw that came down short of the castle says so.
-    expect(state).toEqual({ fallen: 0, stars: 0, level: 1, verdict: 'Short: pull further back' });
+    // A throw that came down short of the castle says so, and by how much (thrown straight up from
+    // x = 0, the castle's front is 16 to 18 m away).
+    expect(state).toMatchObject({ fallen: 0, stars: 0, level: 1 });
+    expect(state.verdict).toMatch(/^Short by 1[5-9] m: pull further back$/);
     const again = g.page.getByRole('button', { name: /Try again/ });
     await again.click();
     await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
