@@ -129,7 +129,6 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
   const table = archetypes(world);
   // Pending deaths (a call from a death hook) leave their queries first: bulk births append.
   settle(world, table);
-  const c = world.components;
   const at = (a: ArrayLike<number> | undefined, i: number, j: number): number => (a && j < d ? a[i * d + j]! : 0);
   let done = 0;
   while (done < count) {
@@ -147,113 +146,148 @@ export function addParticles(world: PhysicsWorld, count: number, options: BulkPa
       done++;
       continue;
     }
-    const n = count - done;
-    const fresh = world.entityIndex.maxId; // slots above it were never used: their z and previous state are 0
-    // Slots freed earlier first (bitecs hands them out before new ones), one at a time.
-    const recycled = Math.min(n, world.entityIndex.dense.length - world.entityIndex.aliveCount);
-    const slots = new Int32Array(recycled);
-    if (recycled > 0) bornSlots(world, a, recycled, slots);
-    const X = c.Position.x,
-      Y = c.Position.y,
-      Z = c.Position.z,
-      OX = c.PreviousPosition.x,
-      OY = c.PreviousPosition.y,
-      OZ = c.PreviousPosition.z;
-    const VX = c.Velocity.x,
-      VY = c.Velocity.y,
-      VZ = c.Velocity.z;
-    const prev = OX.length > world.capacity;
-    for (let k = 0; k < recycled; k++) {
-      const e = slots[k]!;
-      if (e <= fresh) {
-        Z[e] = 0;
-        OZ[e] = 0;
-        VZ[e] = 0;
-      }
-      handles[done + k] = currentHandle(world, e);
-    }
-    // One array at a time: coordinate j of particle i is at i * d + j.
-    const fill = (T: Float64Array, U: Float64Array | null, src: ArrayLike<number> | undefined, j: number) => {
-      for (let k = 0; k < recycled; k++) {
-        const e = slots[k]!,
-          x = src ? src[(done + k) * d + j]! : 0;
-        T[e] = x;
-        if (U) U[e] = x;
-      }
-    };
-    fill(X, prev ? OX : null, p, 0);
-    fill(Y, prev ? OY : null, p, 1);
-    fill(VX, null, v, 0);
-    fill(VY, null, v, 1);
-    if (d === 3) {
-      fill(Z, prev ? OZ : null, p, 2);
-      fill(VZ, null, v, 2);
-    }
-    // What the Position observer resets besides (create-world.ts), for stores that exist.
-    for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
-      if (s.x.length <= world.capacity) continue;
-      for (let k = 0; k < recycled; k++) {
-        const e = slots[k]!;
-        s.x[e] = 0;
-        s.y[e] = 0;
-        s.z[e] = 0;
-      }
-    }
-    if (key !== BARE_PARTICLE) for (let k = 0; k < recycled; k++) writeProperties(world, slots[k]!, done + k, options, propertyOf);
-    done += recycled;
-    // The rest in new slots, consecutive ids: bulk writes of the entity index, masks and query lists.
-    const m = count - done;
-    if (m > 0) {
-      const first = bornFresh(world, a, m);
-      const end = first + m;
-      // Handles: slot + generation x SLOT_RANGE; slots of one spawn stamp share the offset (new slots
-      // usually all have stamp 1), others ask currentHandle.
-      const spawn = world.spawnStamp,
-        s0 = spawn[first]!,
-        offset = currentHandle(world, first) - first;
-      for (let e = first, i = done; e < end; e++, i++) handles[i] = spawn[e] === s0 ? e + offset : currentHandle(world, e);
-      // Consecutive slots: coordinate j of particle i (= done + e - first) is at i * d + j.
-      if (d === 2 && p !== undefined && v !== undefined) {
-        // Both given in 2D (the common case): one pass, as a bare loop would copy them.
-        for (let e = first, o = 2 * done; e < end; e++, o += 2) {
-          X[e] = p[o]!;
-          Y[e] = p[o + 1]!;
-          VX[e] = v[o]!;
-          VY[e] = v[o + 1]!;
-        }
-      } else {
-        const run = (T: Float64Array, src: ArrayLike<number> | undefined, j: number) => {
-          if (src === undefined) {
-            T.fill(0, first, end);
-            return;
-          }
-          for (let e = first, o = done * d + j; e < end; e++, o += d) T[e] = src[o]!;
-        };
-        run(X, p, 0);
-        run(Y, p, 1);
-        run(VX, v, 0);
-        run(VY, v, 1);
-        if (d === 3) {
-          run(Z, p, 2);
-          run(VZ, v, 2);
-        }
-      }
-      if (prev) {
-        OX.set(X.subarray(first, end), first);
-        OY.set(Y.subarray(first, end), first);
-        if (d === 3) OZ.set(Z.subarray(first, end), first);
-      }
-      for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
-        if (s.x.length <= world.capacity) continue;
-        s.x.fill(0, first, end);
-        s.y.fill(0, first, end);
-        s.z.fill(0, first, end);
-      }
-      if (key !== BARE_PARTICLE) for (let e = first, i = done; e < end; e++, i++) writeProperties(world, e, i, options, propertyOf);
-    }
+    const prev = world.components.PreviousPosition.x.length > world.capacity;
+    const job: BulkJob = { world, archetype: a, handles, options, propertyOf, key, p, v, count, prev };
+    done = fillRecycled(job, done);
+    if (done < count) fillFresh(job, done);
     done = count;
   }
   return handles;
+}
+
+/** What one addParticles call fills: its world, archetype, inputs and the handles it returns. */
+interface BulkJob {
+  world: PhysicsWorld;
+  archetype: Parameters<typeof prepareArchetype>[1];
+  handles: Float64Array;
+  options: BulkParticleOptions;
+  propertyOf: (name: PropertyKey, i: number) => number;
+  key: number;
+  p: ArrayLike<number> | undefined;
+  v: ArrayLike<number> | undefined;
+  count: number;
+  /** Whether the PreviousPosition store has arrays (then it is written too). */
+  prev: boolean;
+}
+
+/**
+ * Births particles done.. of `job` in slots freed earlier (bitecs hands them out before new ones), one
+ * at a time, as many as there are; returns the new `done`.
+ */
+function fillRecycled(job: BulkJob, done: number): number {
+  const { world, handles, options, propertyOf, key, p, v } = job;
+  const d = world.dimensions;
+  const c = world.components;
+  const fresh = world.entityIndex.maxId; // slots above it were never used: their z and previous state are 0
+  const recycled = Math.min(job.count - done, world.entityIndex.dense.length - world.entityIndex.aliveCount);
+  if (recycled <= 0) return done;
+  const slots = new Int32Array(recycled);
+  bornSlots(world, job.archetype, recycled, slots);
+  const OX = c.PreviousPosition.x,
+    OY = c.PreviousPosition.y,
+    OZ = c.PreviousPosition.z;
+  const prev = job.prev;
+  for (let k = 0; k < recycled; k++) {
+    const e = slots[k]!;
+    if (e <= fresh) {
+      c.Position.z[e] = 0;
+      OZ[e] = 0;
+      c.Velocity.z[e] = 0;
+    }
+    handles[done + k] = currentHandle(world, e);
+  }
+  // One array at a time: coordinate j of particle i is at i * d + j.
+  const fill = (T: Float64Array, U: Float64Array | null, src: ArrayLike<number> | undefined, j: number) => {
+    for (let k = 0; k < recycled; k++) {
+      const e = slots[k]!,
+        x = src ? src[(done + k) * d + j]! : 0;
+      T[e] = x;
+      if (U) U[e] = x;
+    }
+  };
+  fill(c.Position.x, prev ? OX : null, p, 0);
+  fill(c.Position.y, prev ? OY : null, p, 1);
+  fill(c.Velocity.x, null, v, 0);
+  fill(c.Velocity.y, null, v, 1);
+  if (d === 3) {
+    fill(c.Position.z, prev ? OZ : null, p, 2);
+    fill(c.Velocity.z, null, v, 2);
+  }
+  // What the Position observer resets besides (create-world.ts), for stores that exist.
+  for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
+    if (s.x.length <= world.capacity) continue;
+    for (let k = 0; k < recycled; k++) {
+      const e = slots[k]!;
+      s.x[e] = 0;
+      s.y[e] = 0;
+      s.z[e] = 0;
+    }
+  }
+  if (key !== BARE_PARTICLE) for (let k = 0; k < recycled; k++) writeProperties(world, slots[k]!, done + k, options, propertyOf);
+  return done + recycled;
+}
+
+/**
+ * Births particles done..count-1 of `job` in new slots, consecutive ids: bulk writes of the entity
+ * index, masks and query lists.
+ */
+function fillFresh(job: BulkJob, done: number): void {
+  const { world, handles, options, propertyOf, key, p, v } = job;
+  const d = world.dimensions;
+  const c = world.components;
+  const X = c.Position.x,
+    Y = c.Position.y,
+    Z = c.Position.z,
+    VX = c.Velocity.x,
+    VY = c.Velocity.y,
+    VZ = c.Velocity.z;
+  const m = job.count - done;
+  const first = bornFresh(world, job.archetype, m);
+  const end = first + m;
+  // Handles: slot + generation x SLOT_RANGE; slots of one spawn stamp share the offset (new slots
+  // usually all have stamp 1), others ask currentHandle.
+  const spawn = world.spawnStamp,
+    s0 = spawn[first]!,
+    offset = currentHandle(world, first) - first;
+  for (let e = first, i = done; e < end; e++, i++) handles[i] = spawn[e] === s0 ? e + offset : currentHandle(world, e);
+  // Consecutive slots: coordinate j of particle i (= done + e - first) is at i * d + j.
+  if (d === 2 && p !== undefined && v !== undefined) {
+    // Both given in 2D (the common case): one pass, as a bare loop would copy them.
+    for (let e = first, o = 2 * done; e < end; e++, o += 2) {
+      X[e] = p[o]!;
+      Y[e] = p[o + 1]!;
+      VX[e] = v[o]!;
+      VY[e] = v[o + 1]!;
+    }
+  } else {
+    const run = (T: Float64Array, src: ArrayLike<number> | undefined, j: number) => {
+      if (src === undefined) {
+        T.fill(0, first, end);
+        return;
+      }
+      for (let e = first, o = done * d + j; e < end; e++, o += d) T[e] = src[o]!;
+    };
+    run(X, p, 0);
+    run(Y, p, 1);
+    run(VX, v, 0);
+    run(VY, v, 1);
+    if (d === 3) {
+      run(Z, p, 2);
+      run(VZ, v, 2);
+    }
+  }
+  if (job.prev) {
+    c.PreviousPosition.x.set(X.subarray(first, end), first);
+    c.PreviousPosition.y.set(Y.subarray(first, end), first);
+    if (d === 3) c.PreviousPosition.z.set(Z.subarray(first, end), first);
+  }
+  for (const s of [c.AngularVelocity, c.Force, c.Torque]) {
+    if (s.x.length <= world.capacity) continue;
+    s.x.fill(0, first, end);
+    s.y.fill(0, first, end);
+    s.z.fill(0, first, end);
+  }
+  if (key !== BARE_PARTICLE) for (let e = first, i = done; e < end; e++, i++) writeProperties(world, e, i, options, propertyOf);
 }
 
 /**
