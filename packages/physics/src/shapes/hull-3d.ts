@@ -62,6 +62,80 @@ interface Face {
  * @category Shapes
  */
 export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): Hull {
+  const P = hullPoints(where, points);
+  const n = P.length / 3;
+  // Scale of the cloud for the tolerance.
+  let scale = 0;
+  for (let i = 0; i < 3 * n; i++) scale = Math.max(scale, Math.abs(P[i]!));
+  const eps = 1e-9 * Math.max(scale, 1e-300) * 3;
+  const { faces, simplex } = initialSimplex(where, P, eps);
+  const addFace = (a: number, b: number, c: number): void => {
+    faces.push({ a, b, c, ...plane(P, a, b, c), alive: true });
+  };
+  const used = new Uint8Array(n);
+  for (const i of simplex) used[i] = 1;
+  // Expand: the point farthest outside any face, until none is outside. That point is the cloud's
+  // extreme in the face's normal direction, so it is a vertex of the final hull: once more than
+  // MAX_HULL_VERTICES have been added the hull is too big, and the cloud is refused at once instead of
+  // after building a hull of up to MAX_HULL_INPUT vertices.
+  let added = 4;
+  for (let guard = 0; guard < 4 * n + 16; guard++) {
+    let far = -1,
+      farD = eps * 10;
+    for (const f of faces) {
+      if (!f.alive) continue;
+      for (let i = 0; i < n; i++) {
+        if (used[i]) continue;
+        const d = f.nx * P[3 * i]! + f.ny * P[3 * i + 1]! + f.nz * P[3 * i + 2]! - f.d;
+        if (d > farD) {
+          farD = d;
+          far = i;
+        }
+      }
+    }
+    if (far < 0) break;
+    used[far] = 1;
+    if (++added > MAX_HULL_VERTICES)
+      throw new RangeError(
+        `${where}: vertices must have a convex hull of at most ${MAX_HULL_VERTICES} vertices, got more than ${MAX_HULL_VERTICES}`,
+      );
+    const px = P[3 * far]!,
+      py = P[3 * far + 1]!,
+      pz = P[3 * far + 2]!;
+    // Faces the point sees; the horizon is their directed edges whose twin belongs to a face it does not see.
+    const edges = new Map<number, [number, number]>();
+    for (const f of faces) {
+      if (!f.alive || f.nx * px + f.ny * py + f.nz * pz - f.d <= eps) continue;
+      f.alive = false;
+      for (const [a, b] of [
+        [f.a, f.b],
+        [f.b, f.c],
+        [f.c, f.a],
+      ] as const) {
+        const twin = b * n + a;
+        if (edges.has(twin)) edges.delete(twin);
+        else edges.set(a * n + b, [a, b]);
+      }
+    }
+    for (const [a, b] of edges.values()) addFace(a, b, far);
+    // Drop the faces the point buried, so each round scans the live hull only.
+    let live = 0;
+    for (const f of faces) if (f.alive) faces[live++] = f;
+    faces.length = live;
+  }
+  return buildHull(
+    where,
+    P,
+    faces.filter((f) => f.alive),
+    eps,
+  );
+}
+
+/**
+ * The points as a flat array (x0, y0, z0, x1, ...).
+ * @throws TypeError | RangeError as quickhull, on the count, a point's shape or a coordinate.
+ */
+function hullPoints(where: string, points: ArrayLike<ArrayLike<number>>): Float64Array {
   if (points === null || typeof points !== 'object' || typeof points.length !== 'number') {
     throw new TypeError(`${where}: vertices must be an array of [x, y, z] points, got ${describe(points)}`);
   }
@@ -79,13 +153,18 @@ export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): 
       P[3 * i + k] = v;
     }
   }
-  // Scale of the cloud for the tolerance.
-  let scale = 0;
-  for (let i = 0; i < 3 * n; i++) scale = Math.max(scale, Math.abs(P[i]!));
-  const eps = 1e-9 * Math.max(scale, 1e-300) * 3;
+  return P;
+}
+
+/**
+ * The starting tetrahedron: the extreme points along x, then the point farthest from their line, then
+ * the one farthest from their plane; its four faces wound outward, and its four points.
+ * @throws RangeError as quickhull, when the points span no volume (to `eps`, m).
+ */
+function initialSimplex(where: string, P: Float64Array, eps: number): { faces: Face[]; simplex: number[] } {
+  const n = P.length / 3;
   const degenerate = (): RangeError =>
     new RangeError(`${where}: vertices must span a volume (not all on one plane, line or point), got ${n} points that do not`);
-  // Initial simplex: extreme points along x, then farthest from the line, then from the plane.
   let i0 = 0,
     i1 = 0;
   for (let i = 1; i < n; i++) {
@@ -152,66 +231,7 @@ export function quickhull(where: string, points: ArrayLike<ArrayLike<number>>): 
     addFace(i1, i3, i2);
     addFace(i2, i3, i0);
   }
-  const used = new Uint8Array(n);
-  used[i0] = 1;
-  used[i1] = 1;
-  used[i2] = 1;
-  used[i3] = 1;
-  // Expand: the point farthest outside any face, until none is outside. That point is the cloud's
-  // extreme in the face's normal direction, so it is a vertex of the final hull: once more than
-  // MAX_HULL_VERTICES have been added the hull is too big, and the cloud is refused at once instead of
-  // after building a hull of up to MAX_HULL_INPUT vertices.
-  let added = 4;
-  for (let guard = 0; guard < 4 * n + 16; guard++) {
-    let far = -1,
-      farD = eps * 10;
-    for (const f of faces) {
-      if (!f.alive) continue;
-      for (let i = 0; i < n; i++) {
-        if (used[i]) continue;
-        const d = f.nx * P[3 * i]! + f.ny * P[3 * i + 1]! + f.nz * P[3 * i + 2]! - f.d;
-        if (d > farD) {
-          farD = d;
-          far = i;
-        }
-      }
-    }
-    if (far < 0) break;
-    used[far] = 1;
-    if (++added > MAX_HULL_VERTICES)
-      throw new RangeError(
-        `${where}: vertices must have a convex hull of at most ${MAX_HULL_VERTICES} vertices, got more than ${MAX_HULL_VERTICES}`,
-      );
-    const px = P[3 * far]!,
-      py = P[3 * far + 1]!,
-      pz = P[3 * far + 2]!;
-    // Faces the point sees; the horizon is their directed edges whose twin belongs to a face it does not see.
-    const edges = new Map<number, [number, number]>();
-    for (const f of faces) {
-      if (!f.alive || f.nx * px + f.ny * py + f.nz * pz - f.d <= eps) continue;
-      f.alive = false;
-      for (const [a, b] of [
-        [f.a, f.b],
-        [f.b, f.c],
-        [f.c, f.a],
-      ] as const) {
-        const twin = b * n + a;
-        if (edges.has(twin)) edges.delete(twin);
-        else edges.set(a * n + b, [a, b]);
-      }
-    }
-    for (const [a, b] of edges.values()) addFace(a, b, far);
-    // Drop the faces the point buried, so each round scans the live hull only.
-    let live = 0;
-    for (const f of faces) if (f.alive) faces[live++] = f;
-    faces.length = live;
-  }
-  return buildHull(
-    where,
-    P,
-    faces.filter((f) => f.alive),
-    eps,
-  );
+  return { faces, simplex: [i0, i1, i2, i3] };
 }
 
 function dist2(P: Float64Array, i: number, j: number): number {
