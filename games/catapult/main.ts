@@ -233,34 +233,70 @@ function paint(): void {
 paint();
 shell.onWorldChange(() => {
   paint();
+  shotView = false;
   framedFor = '';
 });
 
 /**
- * The camera: the whole play area, from just behind the catapult to just past the castle, fitted to
- * the screen's width, so the player always sees both the catapult and the castle and never waits on
- * a pan. On a wide screen the view is as tall as the castle needs; on a tall one (a phone upright)
- * the ground sits GROUND_AT of the way up the screen, earth below it and sky above, and the scene
- * fills the middle. The view eases (a tenth of the way each frame) when a level changes its width.
+ * The camera has two views. The aim view: the whole play area, from behind the catapult to just
+ * past the rock, fitted to the screen's width, so the player sees both the catapult and the castle
+ * while aiming and never waits on a pan. On a narrow screen (a phone) it starts just behind the cup
+ * (the band of a long pull may leave the screen; a drag aims from anywhere). The shot view: after a
+ * throw, the castle and the rock with room for debris around them, on a phone only, over 2 x
+ * closer there (held upright, a level 1 castle 100 px wide instead of 45): the camera eases to it
+ * while the stone flies and back to the aim view once the throw's verdict has faded, or at once
+ * when a finger or the mouse goes down to aim. On a wide view the scene is as tall as the castle needs; on a tall one
+ * the ground sits GROUND_AT of the way up the screen, earth below it and sky above. The view eases
+ * a tenth of the way each frame; it jumps when the screen's size changes.
  */
 const cameraView = { minX: -4, minY: -1, maxX: 30, maxY: 14 };
 /** On a tall screen, where the ground line sits: this fraction of the screen's height from the bottom. */
 const GROUND_AT = 0.26;
+/** Screens narrower than this (CSS px) get the tighter aim view. */
+const NARROW = 600;
 /** Screen size the view was framed for; the view jumps (no easing) when it changes. */
 let framedFor = '';
 /** Every screen size the view has been framed for since the page loaded (one, unless the window was resized). */
 const sizesFramed = new Set<string>();
-function frameCamera(): void {
+/** Whether the camera shows the shot view (set by a throw, cleared when the player aims again). */
+let shotView = false;
+/** The view (m) fitted to the screen for a horizontal span [minX, maxX]: as tall as the screen's aspect allows. */
+function viewFor(minX: number, maxX: number): { minX: number; minY: number; maxX: number; maxY: number } {
   const cam = renderer.camera;
   const aspect = Math.max(1, cam.height) / Math.max(1, cam.width);
-  // Room behind the catapult for the longest pull (PULL.max), so the band stays in view.
-  const minX = LAUNCH.x - PULL.max - 0.4,
-    maxX = lv.castleMaxX + ROCK.gap + 2 * ROCK.hx + 0.3;
-  const width = maxX - minX;
-  const height = width * aspect;
-  // Wide: from just under the ground up, taller than the castle. Tall: the ground GROUND_AT up.
-  const minY = height > 3 * (lv.castleTop + 4) ? -GROUND_AT * height : -1;
-  const target = { minX, minY, maxX, maxY: Math.max(minY + height, lv.castleTop + 4) };
+  const height = (maxX - minX) * aspect;
+  // Wide: from just under the ground up, taller than the castle. Tall (or a screen taller than
+  // wide): the ground GROUND_AT up, earth below it.
+  const minY = aspect > 1.2 || height > 3 * (lv.castleTop + 4) ? -GROUND_AT * height : -1;
+  return { minX, minY, maxX, maxY: Math.max(minY + height, lv.castleTop + 4) };
+}
+/** The right face of the rock behind the castle, m. */
+const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
+/** The aim view (see above). */
+function aimView(): { minX: number; minY: number; maxX: number; maxY: number } {
+  // Room behind the catapult for the longest pull (PULL.max) where the screen is wide enough.
+  const behind = renderer.camera.width < NARROW ? 1.2 : PULL.max + 0.4;
+  return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
+}
+/** The shot view (see above): the castle, the rock and 2.5 m either side for debris. */
+function shotViewRect(): { minX: number; minY: number; maxX: number; maxY: number } {
+  return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
+}
+/** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
+function pxPerM(v: { minX: number; minY: number; maxX: number; maxY: number }): number {
+  const cam = renderer.camera;
+  return Math.min(cam.width / (v.maxX - v.minX), cam.height / (v.maxY - v.minY));
+}
+/**
+ * Whether the shot view is used: on a narrow screen (a phone), where it shows the castle at least
+ * 1.5 x as large as the aim view. A desktop's aim view shows the castle large enough.
+ */
+const zoomsIn = (): boolean => renderer.camera.width < NARROW && pxPerM(shotViewRect()) >= 1.5 * pxPerM(aimView());
+function frameCamera(): void {
+  const cam = renderer.camera;
+  // Back to the aim view once the verdict has been up for VERDICT_READ seconds (or the level ended).
+  if (shotView && lastThrow.verdict && (shell.world.time - lastThrow.decidedAt > VERDICT_READ || levelEnded)) shotView = false;
+  const target = shotView && zoomsIn() ? shotViewRect() : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -294,10 +330,12 @@ const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const pointer = { x: 0, y: 0 };
 /** Least screen pixels per metre of pull. */
 const AIM_PX_PER_M = 55;
-const aimScale = (): number => Math.max(renderer.camera.toScreenLength(1), AIM_PX_PER_M);
+// Measured in the aim view's scale, so a drag pulls as far while the camera eases back from the shot view.
+const aimScale = (): number => Math.max(pxPerM(aimView()), AIM_PX_PER_M);
 app.canvas.addEventListener('pointerdown', (e) => {
   if (shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
+  shotView = false;
   aim.active = true;
   aim.x0 = pointer.x;
   aim.y0 = pointer.y;
@@ -338,6 +376,7 @@ function fire(dx: number, dy: number): number {
   lastThrow.farthest = LAUNCH.x;
   lastThrow.vx = vx;
   lastThrow.vy = vy;
+  shotView = true;
   sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
   return ball;
 }
@@ -349,6 +388,8 @@ const TRAIL_SPACING = 0.5,
 const VERDICT_AFTER = 2.5;
 /** How long the verdict shows, s. */
 const VERDICT_SHOWN = 2.5;
+/** How long after the verdict the camera goes back from the shot view to the aim view (once it has faded), s. */
+const VERDICT_READ = VERDICT_SHOWN;
 
 /** Extends the last throw's trail and decides its verdict once it has settled. */
 function followThrow(world: PhysicsWorld, t: Tally): void {
@@ -761,6 +802,8 @@ shell.expose({
   sizesFramed: (): string[] => [...sizesFramed],
   /** Position of a body by handle, m (tests). */
   positionOf,
+  /** Whether the camera shows (or eases to) the shot view, close on the castle after a throw. */
+  shotView: (): boolean => shotView && zoomsIn(),
   /** The off-screen marker's distance while it shows ('N m past ▸'), else ''. */
   offscreen: (): string => (offscreenText.visible ? offscreenText.text : ''),
   /** Steps the world n times (tests). */

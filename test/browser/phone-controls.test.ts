@@ -241,6 +241,21 @@ describe('phone controls', () => {
     );
     await g.waitFor(() => (window.game as unknown as { shots(): number[] }).shots().length === 1, null);
     await hint.waitFor({ state: 'detached', timeout: 3000 });
+    // After the throw the camera closes in on the castle: over 80 px wide (45 px in the view that
+    // holds the catapult too), the rock and room for debris past it still in view.
+    const shotView = await g.waitFor(() => {
+      const game = window.game as unknown as {
+        shotView(): boolean;
+        level(): { castleMinX: number; castleMaxX: number };
+        renderer: { camera: { toScreenX(x: number): number; width: number } };
+      };
+      const cam = game.renderer.camera,
+        lv = game.level();
+      const castle = cam.toScreenX(lv.castleMaxX) - cam.toScreenX(lv.castleMinX);
+      return game.shotView() && castle > 80 ? { castle, rock: cam.toScreenX(lv.castleMaxX + 2.9), width: cam.width } : null;
+    }, null);
+    expect(shotView.castle).toBeGreaterThan(80);
+    expect(shotView.rock).toBeLessThan(shotView.width - 30);
     // Spend the remaining shots and let 4 s pass: the level is over.
     await g.page.evaluate(() => {
       const game = window.game as unknown as { shotsLeft(): number; fire(dx: number, dy: number): number; advance(n: number): void };
