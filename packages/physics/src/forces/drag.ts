@@ -40,47 +40,7 @@ export function calmAir(world: PhysicsWorld): boolean {
  * applies this law to every body that has it, with the same arithmetic, and this system does nothing.
  * @category Forces
  */
-export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
-  if (fusedForcesOn(world)) return;
-  const { LinearDrag, Velocity, Force, Position, Mass } = world.components;
-  const ents = query(world, [LinearDrag, Velocity, Force]);
-  if (ents.length === 0) return;
-  const k = LinearDrag.k,
-    inv = Mass.inv,
-    vx = Velocity.x,
-    vy = Velocity.y,
-    vz = Velocity.z;
-  const fx = Force.x,
-    fy = Force.y,
-    fz = Force.z;
-  // Stiff when k h / m >= STIFF_RATE, i.e. k / m >= limit.
-  const limit = STIFF_RATE / world.h;
-  let stiff = 0;
-  if (calmAir(world)) {
-    stiff = runParallel(world, 'linearDragSystem', linearDragCalm, [k, inv, vx, vy, vz, fx, fy, fz], [limit], ents.length, ents);
-  } else {
-    const t = world.time,
-      px = Position.x,
-      py = Position.y,
-      pz = Position.z;
-    for (let i = 0; i < ents.length; i++) {
-      const e = ents[i]!;
-      const c = k[e]!;
-      if (c * inv[e]! >= limit) {
-        stiff++;
-        continue;
-      }
-      windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-      fx[e] = fx[e]! - c * (vx[e]! - wind[0]!);
-      fy[e] = fy[e]! - c * (vy[e]! - wind[1]!);
-      fz[e] = fz[e]! - c * (vz[e]! - wind[2]!);
-    }
-  }
-  if (stiff > 0) {
-    const s = dissipationState(world);
-    s.linearSeen = s.epoch;
-  }
-};
+export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => dragForces(world, false);
 
 /**
  * Quadratic drag F = -k |v - u| (v - u) on every body with `QuadraticDrag` (k in kg/m, >= 0), u the
@@ -94,12 +54,22 @@ export const linearDragSystem: ForceLaw = (world: PhysicsWorld): void => {
  * (integrators/fused-gate.ts) the integrator applies it instead, with the same arithmetic.
  * @category Forces
  */
-export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
+export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => dragForces(world, true);
+
+/**
+ * The force of linear drag (`quadratic` false: c = k) or quadratic drag (true: c = k |v - u|),
+ * F = -c (v - u), on every body with the law's component, and the stiff bodies left to
+ * `stiffDragSystem` (c / m >= STIFF_RATE / h): linear drag records that some body was stiff, quadratic
+ * drag stamps each stiff body. In still air the kernel `linearDragCalm` or `quadraticDragCalm` adds the
+ * forces, on the world's threads when that pays. Does nothing in a substep that runs the fused pass.
+ */
+function dragForces(world: PhysicsWorld, quadratic: boolean): void {
   if (fusedForcesOn(world)) return;
-  const { QuadraticDrag, Velocity, Force, Position, Mass } = world.components;
-  const ents = query(world, [QuadraticDrag, Velocity, Force]);
+  const { Velocity, Force, Position, Mass } = world.components;
+  const Drag = quadratic ? world.components.QuadraticDrag : world.components.LinearDrag;
+  const ents = query(world, [Drag, Velocity, Force]);
   if (ents.length === 0) return;
-  const k = QuadraticDrag.k,
+  const k = Drag.k,
     inv = Mass.inv,
     vx = Velocity.x,
     vy = Velocity.y,
@@ -107,19 +77,21 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
   const fx = Force.x,
     fy = Force.y,
     fz = Force.z;
+  // Stiff when c h / m >= STIFF_RATE, i.e. c / m >= limit.
   const limit = STIFF_RATE / world.h;
+  let stiff = 0;
   if (calmAir(world)) {
-    // The kernel adds the force of every body that is not stiff; the stiff ones are stamped here.
-    const stiff = runParallel(
+    stiff = runParallel(
       world,
-      'quadraticDragSystem',
-      quadraticDragCalm,
+      quadratic ? 'quadraticDragSystem' : 'linearDragSystem',
+      quadratic ? quadraticDragCalm : linearDragCalm,
       [k, inv, vx, vy, vz, fx, fy, fz],
       [limit],
       ents.length,
       ents,
     );
-    if (stiff > 0) {
+    // The kernel adds the force of every body that is not stiff; the stiff quadratic ones are stamped here.
+    if (quadratic && stiff > 0) {
       for (let i = 0; i < ents.length; i++) {
         const e = ents[i]!;
         const x = vx[e]!,
@@ -128,28 +100,37 @@ export const quadraticDragSystem: ForceLaw = (world: PhysicsWorld): void => {
         if (k[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! >= limit) markStiffQuadratic(world, e, k[e]!);
       }
     }
-    return;
-  }
-  const t = world.time,
-    px = Position.x,
-    py = Position.y,
-    pz = Position.z;
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
-    const x = vx[e]! - wind[0]!,
-      y = vy[e]! - wind[1]!,
-      z = vz[e]! - wind[2]!;
-    const c = k[e]! * Math.sqrt(x * x + y * y + z * z);
-    if (c * inv[e]! >= limit) {
-      markStiffQuadratic(world, e, k[e]!);
-      continue;
+  } else {
+    const t = world.time,
+      px = Position.x,
+      py = Position.y,
+      pz = Position.z;
+    for (let i = 0; i < ents.length; i++) {
+      const e = ents[i]!;
+      // Linear drag's stiffness does not depend on the wind: such a body skips the wind.
+      if (!quadratic && k[e]! * inv[e]! >= limit) {
+        stiff++;
+        continue;
+      }
+      windAt(world, px[e]!, py[e]!, pz[e]!, t, wind);
+      const x = vx[e]! - wind[0]!,
+        y = vy[e]! - wind[1]!,
+        z = vz[e]! - wind[2]!;
+      const c = quadratic ? k[e]! * Math.sqrt(x * x + y * y + z * z) : k[e]!;
+      if (quadratic && c * inv[e]! >= limit) {
+        markStiffQuadratic(world, e, k[e]!);
+        continue;
+      }
+      fx[e] = fx[e]! - c * x;
+      fy[e] = fy[e]! - c * y;
+      fz[e] = fz[e]! - c * z;
     }
-    fx[e] = fx[e]! - c * x;
-    fy[e] = fy[e]! - c * y;
-    fz[e] = fz[e]! - c * z;
   }
-};
+  if (!quadratic && stiff > 0) {
+    const s = dissipationState(world);
+    s.linearSeen = s.epoch;
+  }
+}
 
 /**
  * Stamps body e for the exact quadratic-drag update of this (sub)step (the cold path of the law; the fused pass calls it too).
