@@ -251,19 +251,21 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
     for (let q = cut[part]!, qEnd = cut[part + 1]!; q < qEnd; q++) {
       const root = list[q]!;
       for (let k = alone ? root : skip[root]! - 1; k >= root; k--) {
-        if (skip[k] === k + 1) {
-          // A leaf: sums over its bodies.
-          const s0 = start[k]!,
-            s1 = end[k]!;
-          for (let s = s0; s < s1; s++) slot[perm[s]!] = s;
-          if (!is3D) {
-            let M = 0,
-              X = 0,
-              Y = 0,
-              minX = Infinity,
-              minY = Infinity,
-              maxX = -Infinity,
-              maxY = -Infinity;
+        // A leaf's moments are sums over its bodies, a cell's are combined from its children's.
+        const after = skip[k]!,
+          leaf = after === k + 1,
+          s0 = start[k]!,
+          s1 = end[k]!;
+        if (leaf) for (let s = s0; s < s1; s++) slot[perm[s]!] = s;
+        if (!is3D) {
+          let M = 0,
+            X = 0,
+            Y = 0,
+            minX = Infinity,
+            minY = Infinity,
+            maxX = -Infinity,
+            maxY = -Infinity;
+          if (leaf) {
             for (let s = s0; s < s1; s++) {
               const w = m[s]!,
                 px = x[s]!,
@@ -276,21 +278,38 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
               if (py < minY) minY = py;
               if (py > maxY) maxY = py;
             }
-            let cx: number, cy: number;
-            if (M > 0) {
-              cx = X / M;
-              cy = Y / M;
-            } else {
-              cx = 0.5 * (minX + maxX);
-              cy = 0.5 * (minY + maxY);
+          } else {
+            for (let c = k + 1; c < after; c = skip[c]!) {
+              const o = c * 12,
+                w = F[o + 2]!,
+                b = c * 6;
+              M += w;
+              X += w * F[o]!;
+              Y += w * F[o + 1]!;
+              if (B[b]! < minX) minX = B[b]!;
+              if (B[b + 1]! < minY) minY = B[b + 1]!;
+              if (B[b + 3]! > maxX) maxX = B[b + 3]!;
+              if (B[b + 4]! > maxY) maxY = B[b + 4]!;
             }
-            let sxx = 0,
-              sxy = 0,
-              syy = 0,
-              txxx = 0,
-              txxy = 0,
-              txyy = 0,
-              tyyy = 0;
+          }
+          let cx: number, cy: number;
+          if (M > 0) {
+            cx = X / M;
+            cy = Y / M;
+          } else {
+            cx = 0.5 * (minX + maxX);
+            cy = 0.5 * (minY + maxY);
+          }
+          // reach: a cell's farthest child extent, |c_child - c| + b_max(child); a leaf's is not needed.
+          let sxx = 0,
+            sxy = 0,
+            syy = 0,
+            txxx = 0,
+            txxy = 0,
+            txyy = 0,
+            tyyy = 0,
+            reach = Infinity;
+          if (leaf) {
             for (let s = s0; s < s1; s++) {
               const w = m[s]!,
                 dx = x[s]! - cx,
@@ -306,166 +325,30 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
               txyy += wyy * dx;
               tyyy += wyy * dy;
             }
-            const ex = Math.max(cx - minX, maxX - cx),
-              ey = Math.max(cy - minY, maxY - cy);
-            const o = k * 12;
-            F[o] = cx;
-            F[o + 1] = cy;
-            F[o + 2] = M;
-            F[o + 3] = sxx;
-            F[o + 4] = sxy;
-            F[o + 5] = syy;
-            F[o + 6] = Math.sqrt(ex * ex + ey * ey);
-            F[o + 7] = txxx;
-            F[o + 8] = txxy;
-            F[o + 9] = txyy;
-            F[o + 10] = tyyy;
-            F[o + 11] = 0;
-            const b = k * 6;
-            B[b] = minX;
-            B[b + 1] = minY;
-            B[b + 2] = 0;
-            B[b + 3] = maxX;
-            B[b + 4] = maxY;
-            B[b + 5] = 0;
           } else {
-            let M = 0,
-              X = 0,
-              Y = 0,
-              Z = 0;
-            let minX = Infinity,
-              minY = Infinity,
-              minZ = Infinity,
-              maxX = -Infinity,
-              maxY = -Infinity,
-              maxZ = -Infinity;
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                px = x[s]!,
-                py = y[s]!,
-                pz = z[s]!;
-              M += w;
-              X += w * px;
-              Y += w * py;
-              Z += w * pz;
-              if (px < minX) minX = px;
-              if (px > maxX) maxX = px;
-              if (py < minY) minY = py;
-              if (py > maxY) maxY = py;
-              if (pz < minZ) minZ = pz;
-              if (pz > maxZ) maxZ = pz;
-            }
-            let cx: number, cy: number, cz: number;
-            if (M > 0) {
-              cx = X / M;
-              cy = Y / M;
-              cz = Z / M;
-            } else {
-              cx = 0.5 * (minX + maxX);
-              cy = 0.5 * (minY + maxY);
-              cz = 0.5 * (minZ + maxZ);
-            }
-            let sxx = 0,
-              syy = 0,
-              szz = 0,
-              sxy = 0,
-              sxz = 0,
-              syz = 0;
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                dx = x[s]! - cx,
-                dy = y[s]! - cy,
-                dz = z[s]! - cz;
-              sxx += w * dx * dx;
-              syy += w * dy * dy;
-              szz += w * dz * dz;
-              sxy += w * dx * dy;
-              sxz += w * dx * dz;
-              syz += w * dy * dz;
-            }
-            const ex = Math.max(cx - minX, maxX - cx),
-              ey = Math.max(cy - minY, maxY - cy),
-              ez = Math.max(cz - minZ, maxZ - cz);
-            const o = k * 12;
-            F[o] = cx;
-            F[o + 1] = cy;
-            F[o + 2] = cz;
-            F[o + 3] = M;
-            F[o + 4] = sxx;
-            F[o + 5] = syy;
-            F[o + 6] = szz;
-            F[o + 7] = sxy;
-            F[o + 8] = sxz;
-            F[o + 9] = syz;
-            F[o + 10] = Math.sqrt(ex * ex + ey * ey + ez * ez);
-            F[o + 11] = 0;
-            const b = k * 6;
-            B[b] = minX;
-            B[b + 1] = minY;
-            B[b + 2] = minZ;
-            B[b + 3] = maxX;
-            B[b + 4] = maxY;
-            B[b + 5] = maxZ;
-          }
-        } else if (!is3D) {
-          // A cell, 2D: from its children.
-          const after = skip[k]!;
-          let M = 0,
-            X = 0,
-            Y = 0,
-            minX = Infinity,
-            minY = Infinity,
-            maxX = -Infinity,
-            maxY = -Infinity;
-          for (let c = k + 1; c < after; c = skip[c]!) {
-            const o = c * 12,
-              w = F[o + 2]!,
-              b = c * 6;
-            M += w;
-            X += w * F[o]!;
-            Y += w * F[o + 1]!;
-            if (B[b]! < minX) minX = B[b]!;
-            if (B[b + 1]! < minY) minY = B[b + 1]!;
-            if (B[b + 3]! > maxX) maxX = B[b + 3]!;
-            if (B[b + 4]! > maxY) maxY = B[b + 4]!;
-          }
-          let cx: number, cy: number;
-          if (M > 0) {
-            cx = X / M;
-            cy = Y / M;
-          } else {
-            cx = 0.5 * (minX + maxX);
-            cy = 0.5 * (minY + maxY);
-          }
-          // Parallel-axis theorem, d = c_child - c: S += S_c + M_c d d; T += T_c + 3 sym(d S_c) + M_c d d d.
-          let sxx = 0,
-            sxy = 0,
-            syy = 0,
-            txxx = 0,
-            txxy = 0,
-            txyy = 0,
-            tyyy = 0,
+            // Parallel-axis theorem, d = c_child - c: S += S_c + M_c d d; T += T_c + 3 sym(d S_c) + M_c d d d.
             reach = 0;
-          for (let c = k + 1; c < after; c = skip[c]!) {
-            const o = c * 12,
-              w = F[o + 2]!,
-              dx = F[o]! - cx,
-              dy = F[o + 1]! - cy;
-            const cxx = F[o + 3]!,
-              cxy = F[o + 4]!,
-              cyy = F[o + 5]!;
-            const wxx = w * dx * dx,
-              wxy = w * dx * dy,
-              wyy = w * dy * dy;
-            sxx += cxx + wxx;
-            sxy += cxy + wxy;
-            syy += cyy + wyy;
-            txxx += F[o + 7]! + 3 * dx * cxx + wxx * dx;
-            txxy += F[o + 8]! + 2 * dx * cxy + dy * cxx + wxx * dy;
-            txyy += F[o + 9]! + 2 * dy * cxy + dx * cyy + wyy * dx;
-            tyyy += F[o + 10]! + 3 * dy * cyy + wyy * dy;
-            const r = Math.sqrt(dx * dx + dy * dy) + F[o + 6]!;
-            if (r > reach) reach = r;
+            for (let c = k + 1; c < after; c = skip[c]!) {
+              const o = c * 12,
+                w = F[o + 2]!,
+                dx = F[o]! - cx,
+                dy = F[o + 1]! - cy;
+              const cxx = F[o + 3]!,
+                cxy = F[o + 4]!,
+                cyy = F[o + 5]!;
+              const wxx = w * dx * dx,
+                wxy = w * dx * dy,
+                wyy = w * dy * dy;
+              sxx += cxx + wxx;
+              sxy += cxy + wxy;
+              syy += cyy + wyy;
+              txxx += F[o + 7]! + 3 * dx * cxx + wxx * dx;
+              txxy += F[o + 8]! + 2 * dx * cxy + dy * cxx + wxx * dy;
+              txyy += F[o + 9]! + 2 * dy * cxy + dx * cyy + wyy * dx;
+              tyyy += F[o + 10]! + 3 * dy * cyy + wyy * dy;
+              const r = Math.sqrt(dx * dx + dy * dy) + F[o + 6]!;
+              if (r > reach) reach = r;
+            }
           }
           const ex = Math.max(cx - minX, maxX - cx),
             ey = Math.max(cy - minY, maxY - cy);
@@ -490,8 +373,6 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
           B[b + 4] = maxY;
           B[b + 5] = 0;
         } else {
-          // A cell, 3D.
-          const after = skip[k]!;
           let M = 0,
             X = 0,
             Y = 0,
@@ -502,20 +383,39 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
             maxX = -Infinity,
             maxY = -Infinity,
             maxZ = -Infinity;
-          for (let c = k + 1; c < after; c = skip[c]!) {
-            const o = c * 12,
-              w = F[o + 3]!,
-              b = c * 6;
-            M += w;
-            X += w * F[o]!;
-            Y += w * F[o + 1]!;
-            Z += w * F[o + 2]!;
-            if (B[b]! < minX) minX = B[b]!;
-            if (B[b + 1]! < minY) minY = B[b + 1]!;
-            if (B[b + 2]! < minZ) minZ = B[b + 2]!;
-            if (B[b + 3]! > maxX) maxX = B[b + 3]!;
-            if (B[b + 4]! > maxY) maxY = B[b + 4]!;
-            if (B[b + 5]! > maxZ) maxZ = B[b + 5]!;
+          if (leaf) {
+            for (let s = s0; s < s1; s++) {
+              const w = m[s]!,
+                px = x[s]!,
+                py = y[s]!,
+                pz = z[s]!;
+              M += w;
+              X += w * px;
+              Y += w * py;
+              Z += w * pz;
+              if (px < minX) minX = px;
+              if (px > maxX) maxX = px;
+              if (py < minY) minY = py;
+              if (py > maxY) maxY = py;
+              if (pz < minZ) minZ = pz;
+              if (pz > maxZ) maxZ = pz;
+            }
+          } else {
+            for (let c = k + 1; c < after; c = skip[c]!) {
+              const o = c * 12,
+                w = F[o + 3]!,
+                b = c * 6;
+              M += w;
+              X += w * F[o]!;
+              Y += w * F[o + 1]!;
+              Z += w * F[o + 2]!;
+              if (B[b]! < minX) minX = B[b]!;
+              if (B[b + 1]! < minY) minY = B[b + 1]!;
+              if (B[b + 2]! < minZ) minZ = B[b + 2]!;
+              if (B[b + 3]! > maxX) maxX = B[b + 3]!;
+              if (B[b + 4]! > maxY) maxY = B[b + 4]!;
+              if (B[b + 5]! > maxZ) maxZ = B[b + 5]!;
+            }
           }
           let cx: number, cy: number, cz: number;
           if (M > 0) {
@@ -533,21 +433,37 @@ export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array |
             sxy = 0,
             sxz = 0,
             syz = 0,
+            reach = Infinity;
+          if (leaf) {
+            for (let s = s0; s < s1; s++) {
+              const w = m[s]!,
+                dx = x[s]! - cx,
+                dy = y[s]! - cy,
+                dz = z[s]! - cz;
+              sxx += w * dx * dx;
+              syy += w * dy * dy;
+              szz += w * dz * dz;
+              sxy += w * dx * dy;
+              sxz += w * dx * dz;
+              syz += w * dy * dz;
+            }
+          } else {
             reach = 0;
-          for (let c = k + 1; c < after; c = skip[c]!) {
-            const o = c * 12,
-              w = F[o + 3]!,
-              dx = F[o]! - cx,
-              dy = F[o + 1]! - cy,
-              dz = F[o + 2]! - cz;
-            sxx += F[o + 4]! + w * dx * dx;
-            syy += F[o + 5]! + w * dy * dy;
-            szz += F[o + 6]! + w * dz * dz;
-            sxy += F[o + 7]! + w * dx * dy;
-            sxz += F[o + 8]! + w * dx * dz;
-            syz += F[o + 9]! + w * dy * dz;
-            const r = Math.sqrt(dx * dx + dy * dy + dz * dz) + F[o + 10]!;
-            if (r > reach) reach = r;
+            for (let c = k + 1; c < after; c = skip[c]!) {
+              const o = c * 12,
+                w = F[o + 3]!,
+                dx = F[o]! - cx,
+                dy = F[o + 1]! - cy,
+                dz = F[o + 2]! - cz;
+              sxx += F[o + 4]! + w * dx * dx;
+              syy += F[o + 5]! + w * dy * dy;
+              szz += F[o + 6]! + w * dz * dz;
+              sxy += F[o + 7]! + w * dx * dy;
+              sxz += F[o + 8]! + w * dx * dz;
+              syz += F[o + 9]! + w * dy * dz;
+              const r = Math.sqrt(dx * dx + dy * dy + dz * dz) + F[o + 10]!;
+              if (r > reach) reach = r;
+            }
           }
           const ex = Math.max(cx - minX, maxX - cx),
             ey = Math.max(cy - minY, maxY - cy),
