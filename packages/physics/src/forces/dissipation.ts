@@ -150,3 +150,28 @@ export function linearDecay(lambda: number): number {
 export function quadraticDecay(lambda: number): number {
   return 1 / (1 + lambda);
 }
+
+/**
+ * The stiff systems' update of one body: sets body e's velocity to (vx, vy, vz) (m/s) and moves it
+ * from where the (sub)step began (PreviousPosition) with that velocity, x = x_start + h v; in a 2D
+ * world z and its velocity are left as they are. Returns the finiteness term of what it wrote:
+ * 0 (or -0) when every value is finite, NaN otherwise (x * 0).
+ * @category Forces
+ */
+export function moveFromStart(world: PhysicsWorld, e: number, h: number, vx: number, vy: number, vz: number): number {
+  const c = world.components;
+  const V = c.Velocity,
+    O = c.PreviousPosition,
+    X = c.Position;
+  V.x[e] = vx;
+  V.y[e] = vy;
+  const x = O.x[e]! + h * vx,
+    y = O.y[e]! + h * vy;
+  X.x[e] = x;
+  X.y[e] = y;
+  if (world.dimensions === 2) return vx * 0 + vy * 0 + x * 0 + y * 0;
+  V.z[e] = vz;
+  const z = O.z[e]! + h * vz;
+  X.z[e] = z;
+  return vx * 0 + vy * 0 + x * 0 + y * 0 + vz * 0 + z * 0;
+}

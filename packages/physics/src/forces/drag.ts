@@ -5,7 +5,7 @@ import { fusedForcesOn } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
 import { windAt } from './configure.js';
-import { allocateStiffStamps, dissipationState, linearDecay, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { allocateStiffStamps, dissipationState, linearDecay, moveFromStart, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
 const wind = new Float64Array(3);
@@ -166,9 +166,6 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
   const px = c.Position.x,
     py = c.Position.y,
     pz = c.Position.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
   const vx = c.Velocity.x,
     vy = c.Velocity.y,
     vz = c.Velocity.z,
@@ -184,19 +181,7 @@ export const stiffDragSystem = (world: PhysicsWorld): void => {
     const ux = wind[0]!,
       uy = wind[1]!,
       uz = wind[2]!;
-    const nx = ux + (vx[e]! - ux) * factor,
-      ny = uy + (vy[e]! - uy) * factor;
-    vx[e] = nx;
-    vy[e] = ny;
-    px[e] = ox[e]! + h * nx;
-    py[e] = oy[e]! + h * ny;
-    check += nx * 0 + ny * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) {
-      const nz = uz + (vz[e]! - uz) * factor;
-      vz[e] = nz;
-      pz[e] = oz[e]! + h * nz;
-      check += pz[e]! * 0;
-    }
+    check += moveFromStart(world, e, h, ux + (vx[e]! - ux) * factor, uy + (vy[e]! - uy) * factor, uz + (vz[e]! - uz) * factor);
   };
   if (linear) {
     const ents = query(world, [c.LinearDrag, c.Velocity, c.Force, Not(c.Static), Not(c.Kinematic), Not(c.Sleeping)]);

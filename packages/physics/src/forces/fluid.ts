@@ -1,7 +1,7 @@
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
-import { allocateStiffStamps, dissipationState, quadraticDecay, STIFF_RATE } from './dissipation.js';
+import { allocateStiffStamps, dissipationState, moveFromStart, quadraticDecay, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -147,12 +147,6 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
     stamp = st.fluidStamp,
     stiffK = st.fluidK,
     inv = c.Mass.inv;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
   const vx = c.Velocity.x,
     vy = c.Velocity.y,
     vz = c.Velocity.z;
@@ -165,16 +159,7 @@ export const stiffFluidDragSystem = (world: PhysicsWorld): void => {
       y = vy[e]!,
       z = is2D ? 0 : vz[e]!;
     const f = quadraticDecay(stiffK[e]! * Math.sqrt(x * x + y * y + z * z) * inv[e]! * h);
-    vx[e] = x * f;
-    vy[e] = y * f;
-    px[e] = ox[e]! + h * vx[e]!;
-    py[e] = oy[e]! + h * vy[e]!;
-    check += vx[e]! * 0 + vy[e]! * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) {
-      vz[e] = z * f;
-      pz[e] = oz[e]! + h * vz[e]!;
-      check += pz[e]! * 0;
-    }
+    check += moveFromStart(world, e, h, x * f, y * f, z * f);
   }
   if (check !== 0) reportNonFinite(world, ents, 'integrate');
 };

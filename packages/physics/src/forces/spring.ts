@@ -2,7 +2,7 @@ import { hasComponent, removeEntity } from 'bitecs';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { dissipationState, linearDecay, STIFF_RATE } from './dissipation.js';
+import { dissipationState, linearDecay, moveFromStart, STIFF_RATE } from './dissipation.js';
 import type { ForceLaw } from './law.js';
 
 /**
@@ -105,25 +105,13 @@ export const stiffSpringDampingSystem = (world: PhysicsWorld): void => {
   const px = c.Position.x,
     py = c.Position.y,
     pz = c.Position.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
   const vx = c.Velocity.x,
     vy = c.Velocity.y,
     vz = c.Velocity.z;
   const is2D = world.dimensions === 2;
   let check = 0;
   const move = (e: number, j: number, ux: number, uy: number, uz: number): void => {
-    vx[e] = vx[e]! + j * ux;
-    vy[e] = vy[e]! + j * uy;
-    px[e] = ox[e]! + h * vx[e]!;
-    py[e] = oy[e]! + h * vy[e]!;
-    check += vx[e]! * 0 + vy[e]! * 0 + px[e]! * 0 + py[e]! * 0;
-    if (!is2D) {
-      vz[e] = vz[e]! + j * uz;
-      pz[e] = oz[e]! + h * vz[e]!;
-      check += vz[e]! * 0 + pz[e]! * 0;
-    }
+    check += moveFromStart(world, e, h, vx[e]! + j * ux, vy[e]! + j * uy, vz[e]! + j * uz);
   };
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
