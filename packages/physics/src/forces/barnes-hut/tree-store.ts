@@ -246,23 +246,17 @@ export function growNodes(t: GravityTree, needed: number): void {
   let n = cap;
   while (n < needed) n *= 2;
   const nf = t.dims === 3 ? NF3 : NF2;
-  const node = f64(t, n * nf);
-  node.set(t.node);
-  t.node = node;
-  const box = f64(t, n * 6);
-  box.set(t.box);
-  t.box = box;
-  const s = i32(t, n);
-  s.set(t.start);
-  t.start = s;
-  const e = i32(t, n);
-  e.set(t.end);
-  t.end = e;
-  const k = i32(t, n);
-  k.set(t.skip);
-  t.skip = k;
-  const p = i32(t, n);
-  p.set(t.parent);
-  t.parent = p;
+  t.node = copyInto(f64(t, n * nf), t.node);
+  t.box = copyInto(f64(t, n * 6), t.box);
+  t.start = copyInto(i32(t, n), t.start);
+  t.end = copyInto(i32(t, n), t.end);
+  t.skip = copyInto(i32(t, n), t.skip);
+  t.parent = copyInto(i32(t, n), t.parent);
   t.scratch.length = 0;
+}
+
+/** Copies `from` to the start of the larger array `into` and returns `into`. */
+function copyInto<T extends Float64Array | Int32Array>(into: T, from: T): T {
+  into.set(from);
+  return into;
 }
