@@ -1,7 +1,8 @@
 import { addBody, setBoundary } from '../bodies/api.js';
 import { Rng } from '../math/rng.js';
+import { assertInRange, assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInRange, assertInteger, assertKnownKeys, assertNonNegative, assertPositive } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -59,11 +60,7 @@ const OPTIONS = ['count', 'seed', 'radius', 'spacing', 'restitution', 'friction'
  */
 export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLayout {
   const where = 'balls-in-box';
-  assertKnownKeys(where, options, OPTIONS);
-  const count = options.count ?? 1000;
-  assertInteger(where, 'count', count, 1, 10_000_000);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
+  const { count, seed } = countAndSeed(where, options, OPTIONS, 1000, 1, 10_000_000);
   const radius = options.radius ?? 0.5;
   assertPositive(where, 'radius', radius);
   const spacing = options.spacing ?? 1.5;

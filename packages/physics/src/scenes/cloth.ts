@@ -1,7 +1,7 @@
 import { type Cloth, createCloth } from '../cloth/create.js';
 import { setWind } from '../forces/configure.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -33,11 +33,7 @@ export const clothScene: SceneDefinition<ClothSceneOptions, Cloth> = {
   build(world: PhysicsWorld, options: ClothSceneOptions = {}): Cloth {
     const where = 'cloth';
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
-    assertKnownKeys(where, options, ['count', 'seed']);
-    const n = options.count ?? 64;
-    assertInteger(where, 'count', n, 2, 512);
-    const seed = options.seed ?? 1;
-    assertFinite(where, 'seed', seed);
+    const { count: n, seed } = countAndSeed(where, options, ['count', 'seed'], 64, 2, 512);
     setWind(world, { velocity: [4, 0], turbulence: { intensity: 1, lengthScale: 2, timeScale: 1, seed, modes: 8 } });
     return createCloth(world, { columns: n, rows: n, width: 6.4, height: 6.4, origin: [0, 6.4], mass: 1, drag: 0.05 / n });
   },

@@ -1,6 +1,6 @@
 import { addEmitter } from '../particles/emitter.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -32,11 +32,8 @@ export const fireworks: SceneDefinition<FireworksOptions, { shells: number; spar
   },
   build(world: PhysicsWorld, options: FireworksOptions = {}) {
     const where = 'fireworks';
-    assertKnownKeys(where, options, ['count', 'seed']);
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
-    const count = options.count ?? 50_000;
-    assertInteger(where, 'count', count, 100, 10_000_000);
-    if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
+    const { count } = countAndSeed(where, options, ['count', 'seed'], 50_000, 100, 10_000_000);
     const embers = addEmitter(world, {
       speed: [1, 3],
       lifetime: [0.5, 1],

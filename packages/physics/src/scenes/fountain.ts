@@ -1,6 +1,6 @@
 import { addEmitter } from '../particles/emitter.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -39,11 +39,8 @@ export const fountain: SceneDefinition<FountainOptions, { emitter: number }> = {
   },
   build(world: PhysicsWorld, options: FountainOptions = {}) {
     const where = 'fountain';
-    assertKnownKeys(where, options, ['count', 'seed']);
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
-    const count = options.count ?? 1_000_000;
-    assertInteger(where, 'count', count, 100, 16_000_000);
-    if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
+    const { count } = countAndSeed(where, options, ['count', 'seed'], 1_000_000, 100, 16_000_000);
     const emitter = addEmitter(world, {
       position: [0, 0],
       shape: 'disc',

@@ -2,8 +2,9 @@ import { addBody } from '../bodies/api.js';
 import { enableMutualGravity } from '../forces/api.js';
 import { setGravitation } from '../forces/configure.js';
 import { Rng } from '../math/rng.js';
+import { assertPositive } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys, assertPositive } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -39,12 +40,8 @@ export const galaxy: SceneDefinition<GalaxyOptions, { stars: Uint32Array; nucleu
   },
   build(world: PhysicsWorld, options: GalaxyOptions = {}) {
     const where = 'galaxy';
-    assertKnownKeys(where, options, ['count', 'seed', 'openingAngle', 'method']);
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
-    const count = options.count ?? 100_000;
-    assertInteger(where, 'count', count, 1, 2_000_000);
-    const seed = options.seed ?? 1;
-    assertFinite(where, 'seed', seed);
+    const { count, seed } = countAndSeed(where, options, ['count', 'seed', 'openingAngle', 'method'], 100_000, 1, 2_000_000);
     const theta = options.openingAngle ?? 0.5;
     assertPositive(where, 'openingAngle', theta);
     const method = options.method ?? 'barnes-hut';

@@ -1,5 +1,5 @@
 import { Rng } from '../math/rng.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 
 /**
  * Bodies on a jittered cubic grid in a closed box, from `jitteredBox3D`.
@@ -29,11 +29,7 @@ export interface JitteredBox3D {
  * @category Scenes
  */
 export function jitteredBox3D(where: string, options: { count?: number; seed?: number }, maxCount: number, size: number): JitteredBox3D {
-  assertKnownKeys(where, options, ['count', 'seed']);
-  const count = options.count ?? 5000;
-  assertInteger(where, 'count', count, 1, maxCount);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
+  const { count, seed } = countAndSeed(where, options, ['count', 'seed'], 5000, 1, maxCount);
   const spacing = 1.5;
   const side = Math.max(1, Math.ceil(Math.sqrt(count / 8)));
   const layers = Math.ceil(count / (side * side));

@@ -1,7 +1,7 @@
 import { addBody } from '../bodies/api.js';
 import { addRevoluteJoint } from '../joints/revolute-joint.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -47,10 +47,7 @@ export const jointGrid: SceneDefinition<JointGridOptions, JointGridHandles> = {
   build(world: PhysicsWorld, options: JointGridOptions = {}): JointGridHandles {
     const where = 'joint-grid';
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
-    assertKnownKeys(where, options, ['count', 'seed']);
-    const n = options.count ?? 100;
-    assertInteger(where, 'count', n, 2, 400);
-    if (options.seed !== undefined) assertFinite(where, 'seed', options.seed);
+    const { count: n } = countAndSeed(where, options, ['count', 'seed'], 100, 2, 400);
     const inertia = 0.5 * 1 * 0.4 * 0.4;
     const bodies = new Float64Array(n * n);
     const joints: number[] = [];

@@ -1,7 +1,7 @@
 import { Rng } from '../math/rng.js';
 import { addParticles } from '../particles/bulk.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertInteger, assertKnownKeys } from '../world/validate.js';
+import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
 /**
@@ -35,11 +35,7 @@ export interface ParticlesLayout {
  */
 export function particlesLayout(options: ParticlesOptions = {}): ParticlesLayout {
   const where = 'particles';
-  assertKnownKeys(where, options, ['count', 'seed']);
-  const count = options.count ?? 100_000;
-  assertInteger(where, 'count', count, 1, 16_000_000);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
+  const { count, seed } = countAndSeed(where, options, ['count', 'seed'], 100_000, 1, 16_000_000);
   const rng = new Rng(seed);
   const positions = new Float64Array(2 * count);
   const velocities = new Float64Array(2 * count);
