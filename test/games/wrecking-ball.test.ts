@@ -7,6 +7,7 @@ import { addBody, addDistanceJoint3D, createPhysicsWorld, slotOf, step } from '@
 import { describe, expect, it } from 'vitest';
 import {
   aimAt,
+  BALL_RADIUS,
   buildWreckingBall,
   clearTarget,
   fallenCount,
@@ -169,6 +170,33 @@ describe('wrecking-ball scene', () => {
     }
     expect(h.controls.moves.length).toBe(0);
     expect(tower.filter((p) => p.fallen).length).toBeGreaterThanOrEqual(Math.ceil(tower.length / 2));
+  });
+
+  it('a tap on a brick in the middle of a wall: the ball reaches that brick, not the end of the wall', () => {
+    // The swing used to run along the jib's arc, which runs along a wall (walls stand across the
+    // swing about the mast): the ball hit the end brick and stopped 0.6 to 2.8 m short of the brick
+    // tapped. The run now comes from the side with the fewest pieces in the way. Measured (gap from
+    // the ball's surface to the brick's bounding sphere): -0.27, -0.02, -0.01 m (was 0.69, 2.75, 1.86).
+    for (const [level, index] of [
+      [1, 5],
+      [2, 20],
+      [3, 17],
+    ] as const) {
+      const { world, h } = build(level);
+      for (let k = 0; k < 30; k++) step(world);
+      const brick = h.pieces[index]!;
+      expect(brick.kind).toBe('wall');
+      aimAt(world, h, brick.body);
+      const P = world.components.Position,
+        b = h.ball,
+        e = brick.body;
+      let gap = Number.POSITIVE_INFINITY;
+      for (let k = 0; k < 60 * 12; k++) {
+        step(world);
+        gap = Math.min(gap, Math.hypot(P.x[b]! - P.x[e]!, P.y[b]! - P.y[e]!, P.z[b]! - P.z[e]!) - BALL_RADIUS - Math.max(...brick.half));
+      }
+      expect(gap, `level ${level} piece ${index}`).toBeLessThan(0.05);
+    }
   });
 
   it('a player tapping standing pieces one after another clears level 1 within 90 s of game time', () => {
