@@ -91,6 +91,6 @@ describe('module layering', () => {
   it("the world's data (world/options.ts) imports no system and no assembly: only types, bitecs and validation", () => {
     const text = readFileSync(join(root, 'packages/physics/src/world/options.ts'), 'utf8');
     const valueImports = [...text.matchAll(/^import\s+(?!type\b)[^;]*?from\s+['"]([^'"]+)['"]/gms)].map((m) => m[1]);
-    expect(valueImports.sort()).toEqual(['./validate.js', 'bitecs']);
+    expect(valueImports.sort()).toEqual(['../validation/validate.js', 'bitecs']);
   });
 });

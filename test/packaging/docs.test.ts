@@ -79,7 +79,7 @@ function documented(r: Reflection, depth = 0): boolean {
 /** Each package export and its source entry. */
 const PACKAGES: [string, string][] = [
   ['@bitphysics/physics', 'packages/physics/src/index.ts'],
-  ['@bitphysics/physics/validate', 'packages/physics/src/world/validate.ts'],
+  ['@bitphysics/physics/validate', 'packages/physics/src/validation/validate.ts'],
   ['@bitphysics/render-common', 'packages/render-common/src/index.ts'],
   ['@bitphysics/render-pixi', 'packages/render-pixi/src/index.ts'],
   ['@bitphysics/render-three', 'packages/render-three/src/index.ts'],

@@ -4,7 +4,7 @@
  */
 import { expect, it, describe as suite } from 'vitest';
 import { addBody, createPhysicsWorld, setVelocity } from '../../packages/physics/src/index.js';
-import { describe } from '../../packages/physics/src/world/validate.js';
+import { describe } from '../../packages/physics/src/validation/validate.js';
 
 suite('values in error messages', () => {
   it('a NaN in a vector is shown as NaN', () => {

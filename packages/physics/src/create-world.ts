@@ -13,6 +13,15 @@ import { Rng } from './math/rng.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
+import {
+  assertBoolean,
+  assertFinite,
+  assertInteger,
+  assertNonNegative,
+  assertOptions,
+  assertVector,
+  describe,
+} from './validation/validate.js';
 import { createClothState } from './world/cloth-state.js';
 import { COMPONENT_DEFAULTS } from './world/component-defaults.js';
 import { BODY_STORES, createComponents, LAZY_COMPONENTS, materializeGroup } from './world/components.js';
@@ -31,7 +40,6 @@ import {
   type StageTimings,
   type System,
 } from './world/options.js';
-import { assertBoolean, assertFinite, assertInteger, assertNonNegative, assertOptions, assertVector, describe } from './world/validate.js';
 
 const KNOWN_OPTIONS = [
   'dimensions',

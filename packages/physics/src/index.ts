@@ -127,6 +127,7 @@ export { setElectrostatics, setGravitation, setWind, windAt } from './forces/con
 export { liftSystem, linearDragSystem, quadraticDragSystem } from './forces/drag.js';
 export { drivingForceSystem, randomForceSystem, valueNoise } from './forces/driving.js';
 export { coulombSystem, fieldsAt, lorentzSystem } from './forces/electromagnetism.js';
+export { evaluateForces } from './forces/evaluate.js';
 export { BuoyancyShape, buoyancySystem, submergedMeasure } from './forces/fluid.js';
 export { attractorSystem, gravityScaleSystem, mutualGravitySystem } from './forces/gravity.js';
 export type { FieldErrorStats, GravityMomentumRate } from './forces/gravity-accuracy.js';
@@ -247,7 +248,7 @@ export { createFixedStepLoop } from './step/loop.js';
 export type { StageName, System } from './step/stages.js';
 export { PIPELINE, STAGES, SUBSTEP_STAGES } from './step/stages.js';
 export type { AddSystemOptions } from './step/step.js';
-export { addSystem, evaluateForces, removeSystem, step, stepMany } from './step/step.js';
+export { addSystem, removeSystem, step, stepMany } from './step/step.js';
 export { MIN_PARALLEL_PER_THREAD } from './threads/parallel.js';
 export type { ClothState } from './world/cloth-state.js';
 export type { ClothLinkStore } from './world/cloth-store.js';

@@ -4,4 +4,4 @@
  * @packageDocumentation
  * @module @bitphysics/physics/validate
  */
-export * from '../../../packages/physics/src/world/validate.js';
+export * from '../../../packages/physics/src/validation/validate.js';

@@ -17,7 +17,7 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
 
 /**
  * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of

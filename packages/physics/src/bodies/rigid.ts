@@ -1,9 +1,6 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
-import { addComponentIfMissing } from '../world/options.js';
 import {
   assertFinite,
   assertInRange,
@@ -12,7 +9,10 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
 
 /**
  * Rigid-body rotation helpers: moments of inertia of standard solids, setting a body's inertia,

@@ -1,12 +1,5 @@
 import { addComponent } from 'bitecs';
 import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
-import { ClothLinkKind } from '../world/cloth-store.js';
-import { currentHandle, isAlive, slotOf } from '../world/handles.js';
-import { installSystem } from '../world/install.js';
-import { ensureJointArrays } from '../world/joint-state-2d.js';
-import type { PhysicsWorld } from '../world/options.js';
-import { query } from '../world/query.js';
-import { trustFiniteOutput } from '../world/trusted-systems.js';
 import {
   assertFinite,
   assertInteger,
@@ -15,7 +8,14 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { ClothLinkKind } from '../world/cloth-store.js';
+import { currentHandle, isAlive, slotOf } from '../world/handles.js';
+import { installSystem } from '../world/install.js';
+import { ensureJointArrays } from '../world/joint-state-2d.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { query } from '../world/query.js';
+import { trustFiniteOutput } from '../world/trusted-systems.js';
 import { clothSystem } from './solver.js';
 
 /**

@@ -1,8 +1,8 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
+import { assertNonNegative, assertOptions, assertPositive, assertVector } from '../validation/validate.js';
 import type { ClothState } from '../world/cloth-state.js';
 import { isAlive, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertNonNegative, assertOptions, assertPositive, assertVector } from '../world/validate.js';
 
 /**
  * Options of `pinClothPoint` that make its pin soft.

@@ -4,9 +4,9 @@
  * lists (collision/manifolds-2d.ts in 2D, collision/manifolds-3d.ts in 3D) and the step's manifolds.
  */
 
+import { assertNonNegative } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertNonNegative } from '../world/validate.js';
 import type { EventList } from './manifolds-2d.js';
 import { findPrevious } from './manifolds-2d.js';
 import { contact3DStateOf, type EventList3D } from './manifolds-3d.js';

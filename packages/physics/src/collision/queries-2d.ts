@@ -1,10 +1,10 @@
 import { hasComponent } from 'bitecs';
 import { type ConvexGeometry, createGeometry } from '../shapes/geometry-2d.js';
+import { assertVector, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { SHAPE_STRIDE } from '../world/shape-store-2d.js';
-import { assertVector, describe } from '../world/validate.js';
 
 /**
  * Queries games need (2D): ray casts (closest hit, all hits), the shapes covering a point, and the

@@ -1,10 +1,10 @@
 import { hasComponent } from 'bitecs';
 import { meshesOf } from '../shapes/mesh-3d.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
+import { assertVector, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
-import { assertVector, describe } from '../world/validate.js';
 
 /**
  * Queries in 3D, for picking, line of sight, aiming and spawning: ray casts (nearest hit, all hits),

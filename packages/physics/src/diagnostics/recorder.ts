@@ -1,5 +1,5 @@
+import { assertInteger, assertOptions, describe } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertInteger, assertOptions, describe } from '../world/validate.js';
 
 /**
  * A quantity to record: a function of the world returning a number (J, m, kg m/s, ...).

@@ -1,7 +1,4 @@
 import { addComponent, hasComponent } from 'bitecs';
-import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
-import { addComponentIfMissing } from '../world/options.js';
 import {
   assertFinite,
   assertInteger,
@@ -12,7 +9,10 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
 import { BuoyancyShape } from './fluid.js';
 
 /**

@@ -1,9 +1,9 @@
 import { hasComponent } from 'bitecs';
+import { assertVector } from '../validation/validate.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { query } from '../world/query.js';
-import { assertVector } from '../world/validate.js';
 import type { ForceLaw } from './law.js';
 
 /**

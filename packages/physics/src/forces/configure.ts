@@ -5,8 +5,6 @@
 
 import { cosine } from '../math/cosine.js';
 import { Rng } from '../math/rng.js';
-import { type GravityMethod, MAX_WIND_MODES } from '../world/force-settings.js';
-import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
   assertInteger,
@@ -15,7 +13,9 @@ import {
   assertOptions,
   assertPositive,
   assertVector,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { type GravityMethod, MAX_WIND_MODES } from '../world/force-settings.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { barnesHutGravity } from './barnes-hut/tree.js';
 import { setBarnesHutGravity } from './gravity.js';
 

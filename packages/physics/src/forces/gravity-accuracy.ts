@@ -1,6 +1,6 @@
 import { query } from 'bitecs';
+import { assertInteger } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertInteger } from '../world/validate.js';
 import { worldTreeFields } from './barnes-hut/tree.js';
 
 /**

@@ -1,8 +1,4 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
-import { addComponentIfMissing } from '../world/options.js';
-import { query } from '../world/query.js';
 import {
   assertFinite,
   assertInRange,
@@ -11,7 +7,11 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
+import { query } from '../world/query.js';
 import type { ForceLaw } from './law.js';
 
 /**

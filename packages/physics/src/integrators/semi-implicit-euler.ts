@@ -1,9 +1,8 @@
 import { dissipationState, STIFF_RATE } from '../forces/dissipation.js';
 import { markStiffQuadratic } from '../forces/drag.js';
-import { reportNonFiniteForces } from '../step/finite.js';
 import type { KernelArray } from '../threads/kernel-types.js';
 import { runParallel } from '../threads/parallel.js';
-import { reportNonFinite } from '../world/errors.js';
+import { reportNonFinite, throwNonFinite } from '../world/errors.js';
 import { fusedForcesOn, setFusedForces } from '../world/fused-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { forcedBodies, freeBodies, fusedBareBodies, fusedLinearBodies, fusedQuadraticBodies, kinematicBodies } from './queries.js';
@@ -367,13 +366,19 @@ function stampLinear(world: PhysicsWorld): void {
 
 /**
  * The fused pass found body `e`'s force NaN or infinite, before moving it: throws what the forces
- * stage's check would (step/finite.ts `reportNonFiniteForces`: Force.x, Force.y or Force.z, stage
+ * stage's check would (as step/finite.ts `reportNonFiniteForces`: Force.x, Force.y or Force.z, stage
  * 'forces', this body). Called after the loop has stopped at the body, so the loop's only cost is
  * one well-predicted branch a body (fireworks: no measurable change, see the commit).
  * @throws NonFiniteStateError always.
  */
 function nonFiniteForce(world: PhysicsWorld, e: number): never {
-  reportNonFiniteForces(world, [e]);
+  const F = world.components.Force;
+  const fields: Array<readonly [string, Float64Array]> = [
+    ['Force.x', F.x],
+    ['Force.y', F.y],
+  ];
+  if (world.dimensions === 3) fields.push(['Force.z', F.z]);
+  for (const [, values] of fields) if (!Number.isFinite(values[e]!)) throwNonFinite(world, 'forces', [e], fields);
   throw new Error(`bitphysics: fusedForced: the force of entity ${e} failed the finiteness test yet every component is finite`);
 }
 

@@ -1,6 +1,6 @@
 import { hasComponent } from 'bitecs';
+import { evaluateForces } from '../forces/evaluate.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import { evaluateForces } from '../step/step.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { eulerAcceleration, eulerBodyAcceleration } from './euler-equations.js';

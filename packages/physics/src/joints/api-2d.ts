@@ -1,10 +1,10 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
 import { detachClothLink } from '../cloth/solver.js';
+import { assertFinite, assertNonNegative, assertPositive } from '../validation/validate.js';
 import { currentHandle, resolveEntity, SLOT_RANGE } from '../world/handles.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertNonNegative, assertPositive } from '../world/validate.js';
 import { checkLimits, requireJoint, wakeJoint } from './joint-2d.js';
 import { removeJointUnchecked } from './remove.js';
 

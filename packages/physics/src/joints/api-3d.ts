@@ -1,6 +1,6 @@
+import { assertFinite, assertNonNegative, describe } from '../validation/validate.js';
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertNonNegative, describe } from '../world/validate.js';
 import { requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import { removeJoint3DUnchecked } from './remove-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';

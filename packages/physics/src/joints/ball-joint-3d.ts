@@ -1,6 +1,6 @@
+import { assertFinite, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, describe } from '../world/validate.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 

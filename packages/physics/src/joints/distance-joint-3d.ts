@@ -1,6 +1,6 @@
+import { assertNonNegative, assertPositive, describe } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertNonNegative, assertPositive, describe } from '../world/validate.js';
 import { centre, ends, type Joint3DBaseOptions, make, point, requireJoint3D, wakeJoint3D } from './joint-3d.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType, joints3DOf } from './store-3d.js';
 

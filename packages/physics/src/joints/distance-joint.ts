@@ -1,6 +1,6 @@
+import { assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validation/validate.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertKnownKeys, assertNonNegative, assertPositive, describe } from '../world/validate.js';
 import { assertBreakLimit, BASE_KEYS, centre, checkEnds, handle, type JointBaseOptions, makeJoint, optionalPoint } from './joint-2d.js';
 import {
   F_DX,

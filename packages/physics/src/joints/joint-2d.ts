@@ -1,12 +1,12 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
+import { assertFinite, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import { JOINT_TYPE_NAMES, JointFlag, type JointTypeCode } from '../world/joint-store-2d.js';
 import { IMPULSES } from '../world/joint-strides-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../world/validate.js';
 
 /**
  * Joints between 2D bodies (Box2D v3's set, solved in the contact solver's soft substeps; see

@@ -1,11 +1,11 @@
 import { hasComponent } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
 import { wakeIsland } from '../islands/sleep.js';
+import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../validation/validate.js';
 import { createSlot, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertFinite, assertKnownKeys, assertNonNegative, assertOptionalBoolean, assertVector, describe } from '../world/validate.js';
 import { assertBreakLimit } from './joint-2d.js';
 import { removeJoints3DOf } from './remove-3d.js';
 import { Joint3DFlag, type Joint3DStore, joints3DOf } from './store-3d.js';

@@ -1,7 +1,7 @@
 import { hasComponent } from 'bitecs';
+import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../validation/validate.js';
 import { JointFlag, JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertKnownKeys, assertNonNegative, assertPositive, assertVector, describe } from '../world/validate.js';
 import { centre, checkEnds, handle, makeJoint, optionalPoint, requireJoint, wakeJoint } from './joint-2d.js';
 import {
   AI,

@@ -1,6 +1,6 @@
+import { assertKnownKeys } from '../validation/validate.js';
 import { JointType } from '../world/joint-store-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertKnownKeys } from '../world/validate.js';
 import {
   BASE_KEYS,
   centre,

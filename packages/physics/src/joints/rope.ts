@@ -1,7 +1,5 @@
 import { addBodyAs, removeBody } from '../bodies/api.js';
 import { installBalls } from '../collision/install-balls.js';
-import { isAlive } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
 import {
   assertInteger,
   assertNonNegative,
@@ -10,7 +8,9 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { isAlive } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { addDistanceJoint } from './distance-joint.js';
 
 /**

@@ -1,4 +1,4 @@
-import { assertFinite, assertInteger } from '../world/validate.js';
+import { assertFinite, assertInteger } from '../validation/validate.js';
 
 /**
  * Seeded pseudo-random numbers for deterministic scenes, emitters and turbulence.

@@ -1,10 +1,10 @@
 import { addComponent } from 'bitecs';
 import { addParticle, setMass } from '../bodies/api.js';
 import { setCharge, setDrag } from '../forces/api.js';
+import { assertInteger, assertOptions, describe } from '../validation/validate.js';
 import { currentHandle, slotOf } from '../world/handles.js';
 import { touchSparseSet } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertInteger, assertOptions, describe } from '../world/validate.js';
 import {
   type Archetype,
   archetypeFromEntity,

@@ -1,6 +1,4 @@
 import { installBalls } from '../collision/install-balls.js';
-import { resolveKind } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
   assertInRange,
@@ -12,7 +10,9 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /** The options of emitters and their particles: types, bounds, and the checks and writes shared by addEmitter and setEmitter. */
 

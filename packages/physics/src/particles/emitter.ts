@@ -1,7 +1,7 @@
 import { addComponent, hasComponent } from 'bitecs';
+import { assertBoolean, assertInRange, assertInteger, assertOptions, assertVector, describe } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertBoolean, assertInRange, assertInteger, assertOptions, assertVector, describe } from '../world/validate.js';
 import { flushBirths, queueBirth } from './birth-queue.js';
 import {
   CapacityPolicy,

@@ -1,7 +1,7 @@
 import { addPlane } from '../bodies/rigid.js';
+import { assertInteger, assertKnownKeys } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertInteger, assertKnownKeys } from '../world/validate.js';
 import { addCubes } from './cubes.js';
 import type { SceneDefinition } from './types.js';
 

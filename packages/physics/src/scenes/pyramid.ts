@@ -1,7 +1,7 @@
 import { addBox } from '../shapes/api-2d.js';
+import { assertInteger } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertInteger } from '../world/validate.js';
 import type { SceneDefinition } from './types.js';
 
 /**

@@ -1,10 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { addBodyAs, type BodyOptions, createSlot } from '../bodies/api.js';
 import { ensureShapeState } from '../collision/manifolds-2d.js';
-import { currentHandle, resolveEntity, resolveKind, slotOf } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
-import { addComponentIfMissing } from '../world/options.js';
-import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import {
   assertFinite,
   assertInRange,
@@ -15,7 +11,11 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { currentHandle, resolveEntity, resolveKind, slotOf } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
+import { addComponentIfMissing } from '../world/options.js';
+import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
 import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from './geometry-2d.js';
 import { shapeMassProperties } from './mass-2d.js';
 

@@ -1,8 +1,6 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { setInertiaUnchecked } from '../bodies/rigid.js';
 import { install3D } from '../collision/install-3d.js';
-import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
 import {
   assertFinite,
   assertInRange,
@@ -13,7 +11,9 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
 import { type Hull, quickhull } from './hull-3d.js';
 import {
   addMovedInertia,

@@ -1,4 +1,4 @@
-import { describe } from '../world/validate.js';
+import { describe } from '../validation/validate.js';
 
 /**
  * Convex shape geometry in 2D, shared by every shape kind: a shape is a convex core of 1 to 8

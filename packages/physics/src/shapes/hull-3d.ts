@@ -1,4 +1,4 @@
-import { describe } from '../world/validate.js';
+import { describe } from '../validation/validate.js';
 
 /**
  * Convex hulls of 3D point clouds by quickhull (Barber, Dobkin and Huhdanpaa, "The Quickhull

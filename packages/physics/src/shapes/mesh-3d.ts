@@ -1,7 +1,4 @@
 import { addComponent, entityExists } from 'bitecs';
-import { registerExternalWorldState } from '../world/external-state.js';
-import { createSlot, currentHandle } from '../world/handles.js';
-import type { PhysicsWorld } from '../world/options.js';
 import {
   assertInRange,
   assertInteger,
@@ -10,7 +7,10 @@ import {
   assertPositive,
   assertVector,
   describe,
-} from '../world/validate.js';
+} from '../validation/validate.js';
+import { registerExternalWorldState } from '../world/external-state.js';
+import { createSlot, currentHandle } from '../world/handles.js';
+import type { PhysicsWorld } from '../world/options.js';
 
 /**
  * Static triangle meshes and height fields for ground and level geometry in 3D (a ramp, a terrain).

@@ -1,8 +1,8 @@
 import { MAX_AUTO_SUBSTEPS } from '../solver/contact-scale.js';
+import { describe } from '../validation/validate.js';
 import { MAX_WIND_MODES } from '../world/force-settings.js';
 import { INTEGRATOR_NAMES } from '../world/integrator-names.js';
 import { MAX_TIME_STEP } from '../world/options.js';
-import { describe } from '../world/validate.js';
 
 /**
  * The checks `restore` makes on the values a snapshot holds in its header (scalars: settings, clocks,

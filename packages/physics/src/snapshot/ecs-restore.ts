@@ -1,7 +1,7 @@
 import { query as bitecsQuery, Not, Or, registerComponent } from 'bitecs';
+import { describe } from '../validation/validate.js';
 import { assignSparseSet, hasMaskComponentSets } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { describe } from '../world/validate.js';
 import {
   bitIndex,
   type ComponentData,

@@ -1,4 +1,4 @@
-import { describe } from '../world/validate.js';
+import { describe } from '../validation/validate.js';
 import type { Encoded } from './format.js';
 import { TANGENT_2D } from './state-scope.js';
 import { countingTo, iotaFrom1, sameFrom1Native, TYPED, type TypedArray, zeroFill } from './typed-arrays.js';

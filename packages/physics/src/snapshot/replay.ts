@@ -1,6 +1,6 @@
 import { step } from '../step/step.js';
+import { assertOptions, describe } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { assertOptions, describe } from '../world/validate.js';
 import type { WorldSnapshot } from './format.js';
 import { restore, snapshot } from './snapshot.js';
 

@@ -1,8 +1,7 @@
 import type { KernelArray } from '../threads/kernel-types.js';
 import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../threads/parallel.js';
-import { NonFiniteStateError } from '../world/errors.js';
+import { throwNonFinite } from '../world/errors.js';
 import { fusedForcesOn } from '../world/fused-state.js';
-import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import type { StageName } from '../world/stage-names.js';
@@ -127,8 +126,6 @@ function sum7(
   return s0;
 }
 
-type Field = readonly [name: string, values: Float64Array];
-
 const EMPTY: ArrayLike<number> = new Int32Array(0);
 const EMPTY_PARAMS: ArrayLike<number> = [];
 
@@ -162,7 +159,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
               MIN_PARALLEL_PER_THREAD,
             );
       if ((par ?? (is2D ? sum2(ents, dense, F.x, F.y) : sum3(ents, dense, F.x, F.y, F.z))) !== 0) {
-        name(
+        throwNonFinite(
           world,
           stage,
           ents,
@@ -196,7 +193,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
               MIN_PARALLEL_PER_THREAD,
             );
       if ((par ?? (is2D ? sum2(ents, dense, T.z, T.z) : sum3(ents, dense, T.x, T.y, T.z))) !== 0) {
-        name(
+        throwNonFinite(
           world,
           stage,
           ents,
@@ -234,7 +231,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
             MIN_PARALLEL_PER_THREAD,
           );
     if ((par ?? (is2D ? sum4(ents, dense, V.x, V.y, P.x, P.y) : sum6(ents, dense, V.x, V.y, V.z, P.x, P.y, P.z))) !== 0) {
-      name(
+      throwNonFinite(
         world,
         stage,
         ents,
@@ -260,7 +257,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
     const A = c.Angle.value;
     ents = query(world, [W, c.Angle]);
     if (ents.length > 0 && sum2(ents, ents.length === maxId, W.z, A) !== 0) {
-      name(world, stage, ents, [
+      throwNonFinite(world, stage, ents, [
         ['AngularVelocity.z', W.z],
         ['Angle.value', A],
       ]);
@@ -269,7 +266,7 @@ export function checkStageState(world: PhysicsWorld, stage: StageName, level: 0 
     const Q = c.Orientation;
     ents = query(world, [W, Q]);
     if (ents.length > 0 && sum7(ents, ents.length === maxId, W.x, W.y, W.z, Q.x, Q.y, Q.z, Q.w) !== 0) {
-      name(world, stage, ents, [
+      throwNonFinite(world, stage, ents, [
         ['AngularVelocity.x', W.x],
         ['AngularVelocity.y', W.y],
         ['AngularVelocity.z', W.z],
@@ -293,40 +290,17 @@ export function reportNonFiniteForces(world: PhysicsWorld, ents: ArrayLike<numbe
   const F = world.components.Force;
   if (world.dimensions === 2) {
     if (sum2(ents, false, F.x, F.y) !== 0)
-      name(world, 'forces', ents, [
+      throwNonFinite(world, 'forces', ents, [
         ['Force.x', F.x],
         ['Force.y', F.y],
       ]);
   } else if (sum3(ents, false, F.x, F.y, F.z) !== 0) {
-    name(world, 'forces', ents, [
+    throwNonFinite(world, 'forces', ents, [
       ['Force.x', F.x],
       ['Force.y', F.y],
       ['Force.z', F.z],
     ]);
   }
-}
-
-/** The slow pass, run once a fast pass found a non-finite value: throws naming the first culprit. */
-function name(world: PhysicsWorld, stage: StageName, ents: ArrayLike<number>, fields: Field[]): never {
-  for (let i = 0; i < ents.length; i++) {
-    const e = ents[i]!;
-    for (const [field, values] of fields) {
-      const v = values[e]!;
-      if (Number.isFinite(v)) continue;
-      const c = world.components;
-      const at = (a: Float64Array) => a[e];
-      throw new NonFiniteStateError(
-        currentHandle(world, e),
-        field,
-        v,
-        stage,
-        `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
-          `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
-          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`,
-      );
-    }
-  }
-  throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);
 }
 
 /**

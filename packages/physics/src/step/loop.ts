@@ -1,4 +1,4 @@
-import { assertInteger, assertOptions, assertPositive } from '../world/validate.js';
+import { assertInteger, assertOptions, assertPositive } from '../validation/validate.js';
 
 /**
  * Options of `createFixedStepLoop`.

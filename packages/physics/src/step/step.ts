@@ -1,10 +1,9 @@
 import { armFusedForces } from '../integrators/fused-gate.js';
-import { setFusedForces } from '../world/fused-state.js';
+import { assertOptions, describe } from '../validation/validate.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { query } from '../world/query.js';
 import { STAGES, type StageName, SUBSTEP_STAGES } from '../world/stage-names.js';
 import { systemNeedsCheck } from '../world/trusted-systems.js';
-import { assertOptions, describe } from '../world/validate.js';
 import { checkStageState } from './finite.js';
 
 /** The host's clock (`performance` is not in the ES library this package is built against). */
@@ -153,20 +152,6 @@ export function stepMany(world: PhysicsWorld, count: number): void {
     throw new RangeError(`stepMany: count must be a non-negative integer, got ${describe(count)}`);
   }
   for (let i = 0; i < count; i++) step(world);
-}
-
-/**
- * Evaluates every force law at the world's current state: clears the accumulators and runs the
- * `forces` stage. Multi-stage integrators call it at each trial state, which is why every force
- * law must be a pure function of the state arrays it reads.
- * @category World and step
- */
-export function evaluateForces(world: PhysicsWorld): void {
-  setFusedForces(world, false);
-  const clear = world.stages.clearForces;
-  for (let i = 0; i < clear.length; i++) clear[i]!(world);
-  const forces = world.stages.forces;
-  for (let i = 0; i < forces.length; i++) forces[i]!(world);
 }
 
 /**

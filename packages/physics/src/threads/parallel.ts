@@ -8,7 +8,6 @@
  * costs at most the occasional probe.
  */
 
-import type { PhysicsWorld } from '../world/options.js';
 import { nowMs } from './adaptive.js';
 import type { Kernel, KernelArray, KernelHelper } from './kernel-types.js';
 import { isShared, type ThreadPool } from './pool.js';
@@ -28,12 +27,13 @@ export const MIN_PARALLEL_PER_THREAD = 8192;
  * Runs `kernel` over n entities: on the world's threads when that pays (see the file's header), else
  * inline on the calling thread over [0, n) as range 0. It is the same function either way, so a
  * kernel that treats each entity alone gives the same state on any thread count. Returns the summed
- * kernel result. `system` names the system in a worker's error.
+ * kernel result. `world` is any object with the world's pool (`PhysicsWorld` is); `system` names the
+ * system in a worker's error.
  * @throws Error naming `system` if a worker's range threw.
  * @category Threads
  */
 export function runParallel(
-  world: PhysicsWorld,
+  world: { readonly threadPool: ThreadPool | null },
   system: string,
   kernel: Kernel,
   arrays: KernelArray[],

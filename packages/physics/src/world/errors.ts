@@ -62,3 +62,37 @@ export function reportNonFinite(world: PhysicsWorld, ents: ArrayLike<number>, st
     }
   }
 }
+
+/**
+ * The slow pass of a finiteness check (step/finite.ts), run once a fast pass found a non-finite value:
+ * throws a NonFiniteStateError naming the first entity of `ents` (slots) and the first of `fields`
+ * ([name, values] pairs) that is not finite, found by `stage`.
+ * @throws NonFiniteStateError, or an Error when no value of the fields is non-finite.
+ * @category Utilities
+ */
+export function throwNonFinite(
+  world: PhysicsWorld,
+  stage: string,
+  ents: ArrayLike<number>,
+  fields: ReadonlyArray<readonly [string, Float64Array]>,
+): never {
+  for (let i = 0; i < ents.length; i++) {
+    const e = ents[i]!;
+    for (const [field, values] of fields) {
+      const v = values[e]!;
+      if (Number.isFinite(v)) continue;
+      const c = world.components;
+      const at = (a: Float64Array) => a[e];
+      throw new NonFiniteStateError(
+        currentHandle(world, e),
+        field,
+        v,
+        stage,
+        `Its state: position (${at(c.Position.x)}, ${at(c.Position.y)}, ${at(c.Position.z)}) m, ` +
+          `velocity (${at(c.Velocity.x)}, ${at(c.Velocity.y)}, ${at(c.Velocity.z)}) m/s, ` +
+          `force (${at(c.Force.x)}, ${at(c.Force.y)}, ${at(c.Force.z)}) N, inverse mass ${at(c.Mass.inv)} 1/kg.`,
+      );
+    }
+  }
+  throw new Error(`bitphysics: the finiteness check of stage '${stage}' found a non-finite value it could not name`);
+}

@@ -1,6 +1,6 @@
 import { addEntity, entityExists, hasComponent } from 'bitecs';
+import { describe } from '../validation/validate.js';
 import type { PhysicsWorld } from './options.js';
-import { describe } from './validate.js';
 
 /**
  * Generational entity handles: what the public API hands out and accepts.

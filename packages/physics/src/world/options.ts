@@ -2,13 +2,13 @@ import { addComponent, type createEntityIndex, hasComponent, observe, onAdd, typ
 import type { CollisionState } from '../collision/state.js';
 import type { Rng } from '../math/rng.js';
 import type { ThreadPool } from '../threads/pool.js';
+import { assertPositive } from '../validation/validate.js';
 import type { ClothState } from './cloth-state.js';
 import type { Components } from './components.js';
 import type { ForceLawSettings } from './force-settings.js';
 import type { IntegratorName } from './integrator-names.js';
 import type { JointState } from './joint-state-2d.js';
 import type { StageName } from './stage-names.js';
-import { assertPositive } from './validate.js';
 
 /** Options of `createPhysicsWorld`. Every field is optional; unknown fields and null values are rejected. */
 /**
