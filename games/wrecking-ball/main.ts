@@ -175,17 +175,20 @@ const game = await startThreeGame({
   app: { controls: { leftButton: 'none', minDistance: 4, maxDistance: 60, target: [0, 2, 0] }, cameraPosition: [16, 12, 18] },
   renderer: {
     boundary: 'none',
-    planeSize: 50,
+    // Wide enough that its edges stay out of the steeper phone view.
+    planeSize: 90,
     // A building site: packed earth under a dusk sky (see SKY).
     floorColor: 0x6b5d48,
     debug: params.debug ? debugOptions() : false,
     initialInstances: 128,
     shadowBounds: { min: [-13, 0, -13], max: [13, 12, 13] },
   },
-  // A tall phone screen frames the crane and the near targets from lower down, so they fill its
-  // width and the sky its height; a wide screen frames the whole reach of the jib.
-  view: PORTRAIT ? { min: [-6.5, 0, -6.5], max: [7.5, 6, 6.5] } : { min: [-9, 0, -9], max: [9, 5, 9] },
-  viewDirection: PORTRAIT ? [0.8, 0.5, 1] : [0.8, 0.75, 1],
+  // A wide screen frames the whole site from the side. A tall phone screen frames the site and the
+  // jib's whole reach at its height from higher up, so the jib stays on screen whichever way it
+  // points (the nearer view it had cut the jib off at the screen's edge; 1.31 x the half-width out
+  // at worst, now 0.92) and the site fills more of the screen's height.
+  view: PORTRAIT ? { min: [-9, 0, -9], max: [9, JIB_HEIGHT, 9] } : { min: [-9, 0, -9], max: [9, 5, 9] },
+  viewDirection: PORTRAIT ? [0.55, 1, 0.7] : [0.8, 0.75, 1],
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;

@@ -174,6 +174,28 @@ describe('phone controls', () => {
 
   it('wrecking ball: holding Slew turns the jib; Next level shows once the level is cleared', async () => {
     const g = await h.openGame('wrecking-ball', { ...PHONE, query: { shadows: 0 } });
+    // The jib stays on the screen whichever way it points: its tip and the counterweight's end, at
+    // every slew angle, project inside the canvas (the nearer view put the tip 1.31 half-widths out).
+    const jib = await g.page.evaluate(() => {
+      const cam = (
+        window.game as unknown as {
+          app: {
+            camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } };
+          };
+        }
+      ).app.camera;
+      let worst = 0;
+      for (let a = 0; a < 2 * Math.PI; a += Math.PI / 36)
+        for (const r of [13, -3.2]) {
+          const s = cam.position
+            .clone()
+            .set(r * Math.cos(a), 11.7, -r * Math.sin(a))
+            .project(cam);
+          worst = Math.max(worst, Math.abs(s.x), Math.abs(s.y));
+        }
+      return worst;
+    });
+    expect(jib).toBeLessThan(0.98);
     const a0 = await read(g, 'handles().crane.angle');
     await hold(g.page, 'slew the jib left', 500);
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);
