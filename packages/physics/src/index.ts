@@ -47,6 +47,10 @@ export {
   spinAngularMomentum,
   spinKineticEnergy,
 } from './bodies/rigid.js';
+export type { BoxOptions, ShapeOptions } from './bodies/shapes-2d.js';
+export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './bodies/shapes-2d.js';
+export type { Shape3DOptions } from './bodies/shapes-3d.js';
+export { addShape3D, hullOfShape3D, shapes3DOfBody, updateMassFromShapes3D } from './bodies/shapes-3d.js';
 export type { Cloth, ClothOptions } from './cloth/create.js';
 export { clothPointIndex, createCloth } from './cloth/create.js';
 export type { ClothPinOptions } from './cloth/pin.js';
@@ -217,10 +221,6 @@ export type { EmittedParticleOptions, EmitterOptions, ParticleBirthHook, Particl
 export { CapacityPolicy, EmitterShape, MAX_EMITTER_RATE, maxSpawnsPerStep } from './particles/emitter-options.js';
 export { emitterSystem, lifetimeSystem } from './particles/emitter-systems.js';
 export * from './scenes/index.js';
-export type { BoxOptions, ShapeOptions } from './shapes/api-2d.js';
-export { addBox, addShape, setShapeFilter, shapesOf, updateMassFromShapes } from './shapes/api-2d.js';
-export type { Shape3DOptions } from './shapes/api-3d.js';
-export { addShape3D, hullOfShape3D, shapes3DOfBody, updateMassFromShapes3D } from './shapes/api-3d.js';
 export type { ConvexGeometry } from './shapes/geometry-2d.js';
 export { MAX_POLYGON_VERTICES, makeBox, makeCapsule, makeCircle, makePolygon, ShapeKind } from './shapes/geometry-2d.js';
 export type { Hull } from './shapes/hull-3d.js';

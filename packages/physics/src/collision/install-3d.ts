@@ -6,7 +6,7 @@
  */
 
 import { setIslands3D } from '../islands/hooks-3d.js';
-import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from '../islands/shapes-3d.js';
+import { addContactEdges3D, wakeTouching3D, withShape3DBodies } from '../islands/shapes-3d.js';
 import {
   finishJoints3D,
   gatherJoint3DBodies,
@@ -15,6 +15,7 @@ import {
   solveJoints3D,
   warmStartJoints3D,
 } from '../joints/solver-3d.js';
+import { addJointEdges3D } from '../joints/store-3d.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import { prepareManifolds3D } from '../solver/manifold-prepare-3d.js';
 import { finishManifolds3D, gatherManifold3DBodies, manifolds3DToSolve } from '../solver/manifold-rows-3d.js';
@@ -51,7 +52,14 @@ export function install3D(world: PhysicsWorld): void {
       solveManifolds3D,
       applyManifold3DRestitution,
     });
-    setIslands3D({ withShape3DBodies, addIslandEdges3D, wakeTouching3D });
+    setIslands3D({
+      withShape3DBodies,
+      addIslandEdges3D: (w, e) => {
+        addContactEdges3D(w, e);
+        addJointEdges3D(w, e);
+      },
+      wakeTouching3D,
+    });
     // Trusted (step/finite.ts) only while it has nothing to collide, when it writes nothing.
     trustFiniteOutput([shape3DCollisionSystem], 'all', (w) => w.dimensions !== 3 || shapes3DOf(w)?.active !== true);
   }

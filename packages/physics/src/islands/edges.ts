@@ -72,20 +72,28 @@ export function addIslandEdge(e: IslandEdges, a: number, b: number, flags: numbe
 }
 
 /**
- * Adds the 2D world's edges to `e`: ball contacts that carried a normal impulse this step (joining
- * when ball meets ball), 2D shape manifolds any of whose points did (joining), and 2D joints (a joint
- * that carried force supports its bodies: a pendulum at rest hangs on its pin).
+ * Adds the ball contacts' edges to `e`, in 2D and 3D: a ball contact that carried a normal impulse
+ * this step supports its bodies, and joins them when ball meets ball.
  * @category Sleep
  */
-export function addIslandEdges2D(world: PhysicsWorld, e: IslandEdges): void {
-  const cs = world.collision;
-  const rows = cs.cache.rows;
+export function addBallEdges(world: PhysicsWorld, e: IslandEdges): void {
+  const rows = world.collision.cache.rows;
   const F = EdgeFlag;
   for (let i = 0; i < rows.count; i++) {
     if (rows.normalImpulse[i]! <= 0) continue;
     addIslandEdge(e, rows.a[i]!, rows.b[i]!, rows.kind[i] === 0 ? F.SUPPORTS | F.JOINS : F.SUPPORTS);
   }
-  const st = cs.shapes;
+}
+
+/**
+ * Adds the 2D shapes' and joints' edges to `e`: 2D shape manifolds any of whose points carried a
+ * normal impulse this step (joining), and 2D joints (a joint that carried force supports its bodies:
+ * a pendulum at rest hangs on its pin).
+ * @category Sleep
+ */
+export function addIslandEdges2D(world: PhysicsWorld, e: IslandEdges): void {
+  const F = EdgeFlag;
+  const st = world.collision.shapes;
   if (st.active) {
     const m = st.previous; // this step's rows (finishManifolds made them the cache)
     for (let i = 0, n = m.count; i < n; i++) {

@@ -1,7 +1,6 @@
 import { hasComponent } from 'bitecs';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import { BodyType } from '../collision/state.js';
-import { joints3DOf } from '../joints/store-3d.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
@@ -9,11 +8,11 @@ import { addIslandEdge, EdgeFlag, type IslandEdges } from './edges.js';
 import { wakeIslandForStep } from './step-wake.js';
 
 /**
- * Sleeping for 3D shape bodies and 3D joints (used by islands/sleep.ts and collision/shapes-3d.ts),
- * after Box2D v3's island sleep:
+ * Sleeping for 3D shape bodies (used by islands/sleep.ts and collision/shapes-3d.ts), after Box2D
+ * v3's island sleep:
  *
- * - the 3D manifolds and joints add their edges to the step's island graph (islands/edges.ts), which
- *   the sleep system reads for support and islands as it does the 2D stores';
+ * - the 3D manifolds add their edges to the step's island graph (islands/edges.ts), as the 3D joints
+ *   do theirs (joints/store-3d.ts), which the sleep system reads as it does the 2D stores';
  * - a sleeping body met in the 3D broadphase by a moving body (rest time 0) or a kinematic one that
  *   can reach it within the step (`wakesSleeper3D`) wakes with its whole island, and joins the step as a dynamic body with the velocity and
  *   position the integration it skipped would have given it (v = g h, x += g h^2 / 2); met by a resting body it
@@ -46,12 +45,12 @@ export function withShape3DBodies(world: PhysicsWorld, others: ArrayLike<number>
 }
 
 /**
- * Adds the 3D world's edges to `e` (islands/edges.ts): 3D manifolds any of whose points carried a
- * normal impulse this step (supporting and joining), and 3D joints (one that carried an impulse, any
- * of its rows' accumulated impulses not 0, supports its bodies: a bob at rest on its string may sleep).
+ * Adds the 3D manifolds' edges to `e` (islands/edges.ts): manifolds any of whose points carried a
+ * normal impulse this step support and join their bodies. (The 3D joints add theirs in
+ * joints/store-3d.ts `addJointEdges3D`.)
  * @category Collision
  */
-export function addIslandEdges3D(world: PhysicsWorld, e: IslandEdges): void {
+export function addContactEdges3D(world: PhysicsWorld, e: IslandEdges): void {
   if (world.dimensions !== 3) return;
   const st = contact3DStateOf(world);
   if (st !== undefined) {
@@ -63,22 +62,6 @@ export function addIslandEdges3D(world: PhysicsWorld, e: IslandEdges): void {
       for (let k = 0, m = points[i]!; k < m; k++) if (maxLn[4 * i + k]! > 0) pushed = true;
       if (pushed) addIslandEdge(e, b.bodyA[i]!, b.bodyB[i]!, EdgeFlag.SUPPORTS | EdgeFlag.JOINS);
     }
-  }
-  const s = joints3DOf(world);
-  if (s === undefined) return;
-  const list = s.list;
-  for (let i = 0; i < list.length; i++) {
-    const j: number = list[i]!;
-    const load =
-      Math.abs(s.lx[j]!) +
-      Math.abs(s.ly[j]!) +
-      Math.abs(s.lz[j]!) +
-      Math.abs(s.wx[j]!) +
-      Math.abs(s.wy[j]!) +
-      Math.abs(s.wz[j]!) +
-      Math.abs(s.limit[j]!) +
-      Math.abs(s.motor[j]!);
-    addIslandEdge(e, s.a[j]!, s.b[j]!, load > 0 ? EdgeFlag.JOINT | EdgeFlag.SUPPORTS : EdgeFlag.JOINT);
   }
 }
 

@@ -1,9 +1,9 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
-import { ecsOf } from '../particles/archetype.js';
+import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { Not, query } from '../world/query.js';
-import { addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
+import { addBallEdges, addIslandEdges2D, emptyIslandEdges, findRoot, joinContactEdges, joinJointEdges, markSupport } from './edges.js';
 import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.js';
 
 /**
@@ -150,6 +150,7 @@ export function sleepSystem(world: PhysicsWorld): void {
   const dt = world.dt;
   // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
   const edges = emptyIslandEdges();
+  addBallEdges(world, edges);
   if (world.dimensions === 2) addIslandEdges2D(world, edges);
   else addIslandEdges3D(world, edges);
   // Support: a body rests only while some contact or joint pushed it this step.

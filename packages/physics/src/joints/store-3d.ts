@@ -1,3 +1,4 @@
+import { addIslandEdge, EdgeFlag, type IslandEdges } from '../islands/edges.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -144,3 +145,29 @@ registerExternalWorldState({
     world.features.joints3d = undefined;
   },
 });
+
+/**
+ * Adds the 3D joints' edges to the step's island graph `e` (islands/edges.ts): every joint ties its
+ * bodies' islands, and one that carried an impulse (any of its rows' accumulated impulses not 0)
+ * supports its bodies: a bob at rest on its string may sleep.
+ * @category Joints and ropes
+ */
+export function addJointEdges3D(world: PhysicsWorld, e: IslandEdges): void {
+  if (world.dimensions !== 3) return;
+  const s = joints3DOf(world);
+  if (s === undefined) return;
+  const list = s.list;
+  for (let i = 0; i < list.length; i++) {
+    const j: number = list[i]!;
+    const load =
+      Math.abs(s.lx[j]!) +
+      Math.abs(s.ly[j]!) +
+      Math.abs(s.lz[j]!) +
+      Math.abs(s.wx[j]!) +
+      Math.abs(s.wy[j]!) +
+      Math.abs(s.wz[j]!) +
+      Math.abs(s.limit[j]!) +
+      Math.abs(s.motor[j]!);
+    addIslandEdge(e, s.a[j]!, s.b[j]!, load > 0 ? EdgeFlag.JOINT | EdgeFlag.SUPPORTS : EdgeFlag.JOINT);
+  }
+}

@@ -1,4 +1,5 @@
-import { $internal, commitRemovals } from 'bitecs';
+import { commitRemovals } from 'bitecs';
+import { type EcsInternals, ecsOf, type QueryData } from '../world/ecs-internals.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import { touchSparseSet } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -44,47 +45,6 @@ import type { PhysicsWorld } from '../world/options.js';
  * the sets of live entities only). Where the world answers component sets from the masks (no Map),
  * there is nothing to keep.
  */
-
-/** bitecs 0.4 sparse set (queries and their pending removals). */
-interface SparseSet {
-  dense: number[];
-  sparse: number[];
-  has(v: number): boolean;
-  add(v: number): void;
-  remove(v: number): void;
-}
-/** bitecs 0.4 query data. */
-interface QueryData extends SparseSet {
-  masks: Record<number, number>;
-  notMasks: Record<number, number>;
-  orMasks: Record<number, number>;
-  generations: number[];
-  toRemove: SparseSet;
-}
-interface ComponentData {
-  generationId: number;
-  bitflag: number;
-  ref: object;
-}
-/** bitecs 0.4 world internals used here. */
-interface EcsInternals {
-  entityIndex: { aliveCount: number; dense: number[]; sparse: number[]; maxId: number; versioning: boolean };
-  entityMasks: number[][];
-  /** A Map of Sets in bitecs; a view answered from the masks where the world made its storage lean. */
-  entityComponents: Map<number, Set<object>> | object;
-  componentMap: Map<object, ComponentData>;
-  queries: Set<QueryData>;
-  dirtyQueries: Set<QueryData>;
-  entitiesWithRelations: Set<unknown>;
-}
-
-/**
- * bitecs' data of `world`.
- * @category Particles
- */
-export function ecsOf(world: PhysicsWorld): EcsInternals {
-  return (world as unknown as Record<symbol, EcsInternals>)[$internal]!;
-}
 
 /**
  * A fixed component set and the queries an entity with exactly that set belongs to.

@@ -2,19 +2,11 @@ import { addComponent } from 'bitecs';
 import { addParticle, setMass } from '../bodies/api.js';
 import { setCharge, setDrag } from '../forces/api.js';
 import { assertInteger, assertOptions, describe } from '../validation/validate.js';
+import { ecsOf } from '../world/ecs-internals.js';
 import { currentHandle, slotOf } from '../world/handles.js';
 import { touchSparseSet } from '../world/lean-ecs.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  type Archetype,
-  archetypeFromEntity,
-  archetypes,
-  bornSlots,
-  ecsOf,
-  pendingArchetype,
-  prepareArchetype,
-  settle,
-} from './archetype.js';
+import { type Archetype, archetypeFromEntity, archetypes, bornSlots, pendingArchetype, prepareArchetype, settle } from './archetype.js';
 
 /**
  * Key of the bare particle (Position and Velocity) in the world's archetype table; emitter kinds use

@@ -1,9 +1,10 @@
 import { query as bitecsQuery, entityExists, hasComponent, noCommit, removeEntity } from 'bitecs';
+import { ecsOf } from '../world/ecs-internals.js';
 import { installSystem } from '../world/install.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { trustFiniteOutput } from '../world/trusted-systems.js';
-import { archetypes, defragment, ecsOf, killSlot } from './archetype.js';
+import { archetypes, defragment, killSlot } from './archetype.js';
 import { flushBirths, spawnFrom } from './birth-queue.js';
 import { book, type ParticleBook } from './particle-book.js';
 

@@ -1,7 +1,8 @@
 import { entityExists, hasComponent, removeEntity } from 'bitecs';
+import { ecsOf } from '../world/ecs-internals.js';
 import { registerExternalWorldState } from '../world/external-state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { archetypes, ecsOf, killSlot } from './archetype.js';
+import { archetypes, killSlot } from './archetype.js';
 import { maxSpawnsPerStep, type ParticleBirthHook, type ParticleDeathHook } from './emitter-options.js';
 
 /** The particle book of a world: its live particles in spawn order (the FIFO that recycle-oldest uses), the lifetime system's scratch, and the death and birth hooks. */

@@ -1,5 +1,5 @@
 import { addBody } from '../bodies/api.js';
-import { addShape3D } from '../shapes/api-3d.js';
+import { addShape3D } from '../bodies/shapes-3d.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 

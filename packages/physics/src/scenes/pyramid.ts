@@ -1,4 +1,4 @@
-import { addBox } from '../shapes/api-2d.js';
+import { addBox } from '../bodies/shapes-2d.js';
 import { assertInteger } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';

@@ -1,6 +1,7 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import { addBodyAs, type BodyOptions, createSlot } from '../bodies/api.js';
 import { ensureShapeState } from '../collision/manifolds-2d.js';
+import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from '../shapes/geometry-2d.js';
+import { shapeMassProperties } from '../shapes/mass-2d.js';
 import {
   assertFinite,
   assertInRange,
@@ -16,8 +17,7 @@ import { currentHandle, resolveEntity, resolveKind, slotOf } from '../world/hand
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
 import { ensureShapeStore, SHAPE_STRIDE } from '../world/shape-store-2d.js';
-import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from './geometry-2d.js';
-import { shapeMassProperties } from './mass-2d.js';
+import { addBodyAs, type BodyOptions, createSlot } from './api.js';
 
 /**
  * Shapes of 2D bodies: adding them, their filter, and the body's mass from them.

@@ -1,6 +1,17 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import { setInertiaUnchecked } from '../bodies/rigid.js';
 import { install3D } from '../collision/install-3d.js';
+import { type Hull, quickhull } from '../shapes/hull-3d.js';
+import {
+  addMovedInertia,
+  boxMass,
+  capsuleMass,
+  cylinderMass,
+  hullMass,
+  type MassProperties3D,
+  principalAxes,
+  sphereMass,
+} from '../shapes/mass-3d.js';
+import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import {
   assertFinite,
   assertInRange,
@@ -14,18 +25,7 @@ import {
 } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { type Hull, quickhull } from './hull-3d.js';
-import {
-  addMovedInertia,
-  boxMass,
-  capsuleMass,
-  cylinderMass,
-  hullMass,
-  type MassProperties3D,
-  principalAxes,
-  sphereMass,
-} from './mass-3d.js';
-import { Shape3DKind, type Shape3DStore, shapes3DOf } from './store-3d.js';
+import { setInertiaUnchecked } from './rigid.js';
 
 /**
  * Shapes of 3D bodies: adding them (a body with several is a compound), and the body's mass, centre
