@@ -33,6 +33,7 @@ import {
   BufferAttribute,
   BufferGeometry,
   CanvasTexture,
+  ConeGeometry,
   CylinderGeometry,
   DoubleSide,
   Line,
@@ -241,6 +242,10 @@ dress();
 shell.onWorldChange(() => {
   drag.release();
   dress();
+  aimed = 0;
+  lit = 0;
+  runEndedAt = -1;
+  swing.result = '';
 });
 
 /** Next level: bank the score and build the next one. */
@@ -399,6 +404,11 @@ const goalMarker = new Mesh(new RingGeometry(0.35, 0.5, 32), new MeshBasicMateri
 goalMarker.rotation.x = -Math.PI / 2;
 goalMarker.visible = false;
 app.scene.add(goalMarker);
+// Over the piece a swing is aimed at: a bobbing arrow pointing down at it, seen from afar.
+const aimArrow = new Mesh(new ConeGeometry(0.5, 1.2, 16), new MeshBasicMaterial({ color: 0xffd166 }));
+aimArrow.rotation.x = Math.PI;
+aimArrow.visible = false;
+app.scene.add(aimArrow);
 
 // ---- Keys held -------------------------------------------------------------------------------
 
@@ -414,6 +424,7 @@ window.addEventListener('keydown', (event) => {
   held.add(k);
   handles.controls.goal = null;
   handles.controls.moves = [];
+  aimed = 0;
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -465,19 +476,69 @@ function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none'
     drag.grab(ndcX, ndcY, app.camera);
     return drag.body === handles.ball ? 'ball' : 'none';
   }
-  if (hit && handles.pieces.some((p) => p.body === hit.eid)) {
-    aimAt(shell.world, handles, hit.eid);
-    aimed = hit.eid;
+  const target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
+  if (target !== 0) {
+    swingAt(target);
     return 'swing';
   }
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   if (raycaster.ray.intersectPlane(ground, groundHit) === null) return 'none';
   handles.controls.moves = [];
   handles.controls.goal = [groundHit.x, groundHit.z];
+  aimed = 0;
   return 'hook';
 }
-/** The piece the last swing was aimed at (marked with a ring while the swing runs), or 0. */
+/** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
+/** The standing pieces when the last swing was aimed (to count what it brought down), and what it did. */
+const swing = { downBefore: 0, result: '', resultAt: 0 };
+/**
+ * Distance, CSS px, within which a press that misses every piece still takes the nearest standing
+ * one: a finger's width on a touch screen, a few pixels for a mouse.
+ */
+const NEAR_TAP_PX = isTouchDevice() ? 36 : 10;
+const nearAt = new Vector3();
+/**
+ * The standing piece whose centre is drawn nearest the point (ndcX, ndcY), if within NEAR_TAP_PX
+ * (a tower 0.7 m wide is about 15 px on a phone: a finger's tap a little off it sent the hook to
+ * the ground instead, and nothing was hit), else 0.
+ */
+function nearPiece(ndcX: number, ndcY: number): number {
+  const w = canvas.clientWidth / 2,
+    hgt = canvas.clientHeight / 2;
+  let best = 0,
+    bestD = NEAR_TAP_PX;
+  for (const p of handles.pieces) {
+    if (p.fallen || !renderer.drawnPosition(p.body, followBall)) continue;
+    nearAt.set(followBall[0]!, followBall[1]!, followBall[2]!).project(app.camera);
+    if (nearAt.z > 1) continue;
+    const d = Math.hypot((nearAt.x - ndcX) * w, (nearAt.y - ndcY) * hgt);
+    if (d < bestD) {
+      bestD = d;
+      best = p.body;
+    }
+  }
+  return best;
+}
+/** The piece drawn lit as the target of a swing (0 when none). */
+let lit = 0;
+/** Lights piece `piece` (0: none) as the swing's target; the one lit before gets its own colour back. */
+function light(piece: number): void {
+  const before = handles.pieces.find((p) => p.body === lit);
+  if (before && isAlive(shell.world, before.body))
+    renderer.setColor(before.body, before.fallen ? darken(COLORS[before.kind], 0.62) : COLORS[before.kind]);
+  lit = piece;
+  if (piece !== 0) renderer.setColor(piece, 0xffe08a);
+}
+/** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime. */
+function swingAt(piece: number): void {
+  aimAt(shell.world, handles, piece);
+  light(piece);
+  aimed = piece;
+  swing.downBefore = fallenCount(handles.pieces);
+  swing.result = '';
+  sound.chime(660, 0.15);
+}
 
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
@@ -543,6 +604,10 @@ readout.style.cssText = 'position: static; margin-top: 8px';
 pageLayout().info.prepend(readout);
 
 let frames = 0;
+/** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
+let runEndedAt = -1;
+/** How long a swing's result stays in the status line, s. */
+const RESULT_SHOWN = 3;
 const hookAt = new Float64Array(3);
 function frame(): void {
   updateControls();
@@ -570,17 +635,39 @@ function frame(): void {
   const goal = handles.controls.goal;
   const swinging = handles.controls.moves.length > 0 && aimed !== 0 && isAlive(shell.world, aimed);
   goalMarker.visible = goal !== null || swinging;
+  // A swing's ring is wide enough to show round the foot of a tower or a crib.
+  goalMarker.scale.setScalar(goal === null && swinging ? 2.6 : 1);
+  aimArrow.visible = swinging;
+  if (!swinging && lit !== 0) light(0);
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   else if (swinging) {
     const P = shell.world.components.Position;
     goalMarker.position.set(P.x[aimed]!, 0.02, P.z[aimed]!);
+    // Over the top of whatever stands on the piece (an arrow at a tower's middle block was inside it).
+    const ax = P.x[aimed]!,
+      az = P.z[aimed]!;
+    let top = 0;
+    for (const q of handles.pieces)
+      if (Math.hypot(P.x[q.body]! - ax, P.z[q.body]! - az) < 1.3) top = Math.max(top, P.y[q.body]! + Math.max(...q.half));
+    aimArrow.position.set(ax, top + 0.8 + 0.2 * Math.sin(shell.world.time * 6), az);
+  }
+  // Once a swing's run is over, what it did: how many pieces it brought down, said for RESULT_SHOWN s.
+  if (aimed !== 0 && handles.controls.moves.length === 0 && swing.result === '' && runEndedAt < 0) runEndedAt = shell.world.time;
+  if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) {
+    const down = fallenCount(handles.pieces) - swing.downBefore;
+    swing.result = down > 0 ? `Hit! ${down} down` : 'Missed: tap it again';
+    swing.resultAt = shell.world.time;
+    runEndedAt = -1;
+    aimed = 0;
   }
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
     status.textContent = cleared
       ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}`;
+      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
+          swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
+        }`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
@@ -593,9 +680,10 @@ function frame(): void {
 function swingPhase(): string {
   const moves = handles.controls.moves;
   if (moves.length === 0) return '';
-  const m = moves[0]!;
-  const left = Math.max(0, m.duration - m.elapsed + (moves.length > 1 ? moves[1]!.duration : 0));
-  return moves.length > 1 ? ` · winding up, swing in ${left.toFixed(0)} s` : ' · swinging!';
+  if (moves[0]!.run) return ' · swinging!';
+  let left = 0;
+  for (const m of moves) if (!m.run) left += m.duration - m.elapsed;
+  return ` · target set: winding up, swing in ${Math.max(1, Math.ceil(left))} s`;
 }
 
 // ---- window.game ---------------------------------------------------------------------------
@@ -623,8 +711,12 @@ shell.expose({
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */
   stepTime: (): number => stepMs,
-  /** A press at (ndcX, ndcY) as the mouse would: 'ball' (grabbed), 'hook' (sent there) or 'none'. */
+  /** A press at (ndcX, ndcY) as the mouse would: 'ball' (grabbed), 'swing' (at a piece), 'hook' (sent there) or 'none'. */
   pressAt,
+  /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
+  aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
+  /** What the last swing did, once counted ('Hit! N down' or 'Missed: tap it again'; '' before). */
+  swingResult: (): string => swing.result,
   /** Goes to the next level (banks the score). */
   nextLevel,
 });

@@ -196,6 +196,32 @@ describe('phone controls', () => {
       return worst;
     });
     expect(jib).toBeLessThan(0.98);
+    // A tap 26 px beside a tower block (a tower is about 15 px wide here) swings the ball at it
+    // instead of sending the hook to the ground there; an arrow marks it.
+    const near = await g.page.evaluate(() => {
+      type V = { x: number; y: number };
+      const game = window.game as unknown as {
+        handles(): { pieces: { body: number; kind: string }[] };
+        renderer: { drawnPosition(e: number): number[] | null };
+        app: {
+          canvas: HTMLCanvasElement;
+          camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): V } } } };
+        };
+      };
+      const piece = game.handles().pieces.filter((p) => p.kind === 'tower')[1]!.body;
+      const at = game.renderer.drawnPosition(piece)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const box = game.app.canvas.getBoundingClientRect();
+      return { piece, x: box.left + ((s.x + 1) / 2) * box.width + 26, y: box.top + ((1 - s.y) / 2) * box.height };
+    });
+    await g.page.touchscreen.tap(near.x, near.y);
+    await g.waitFor((p) => {
+      const a = (window.game as unknown as { aimed(): { piece: number; arrow: boolean } }).aimed();
+      return a.piece === p && a.arrow;
+    }, near.piece);
+    await g.page.evaluate(() => {
+      (window.game as unknown as { handles(): { controls: { moves: unknown[] } } }).handles().controls.moves = [];
+    });
     const a0 = await read(g, 'handles().crane.angle');
     await hold(g.page, 'slew the jib left', 500);
     expect(await read(g, 'handles().crane.angle')).toBeGreaterThan(a0 + 0.02);

@@ -107,6 +107,8 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(swing.pressed).toBe('swing');
     expect(swing.moves).toBeGreaterThan(0);
+    // The swing's target is marked from the next frame (paused or not): a ring and an arrow over it.
+    await g.waitFor(() => (window.game as unknown as { aimed(): { piece: number; arrow: boolean } }).aimed().arrow, null);
     // A press on the ball grabs it; moving the hand pulls it.
     const r = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
