@@ -280,6 +280,8 @@ function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
   return t;
 }
 const JIB_LENGTH = RADIUS_RANGE[1] + 4;
+/** How far the jib reaches out from the mast, m (it reaches 2 m back). */
+const JIB_LENGTH_OUT = JIB_LENGTH - 2;
 const jibMaterial = new MeshStandardMaterial({
   color: COLORS.mast,
   roughness: 0.6,
@@ -603,6 +605,84 @@ readout.className = 'bp-hud';
 readout.style.cssText = 'position: static; margin-top: 8px';
 pageLayout().info.prepend(readout);
 
+// ---- Site plan: the left column's foot (it stood empty, 230 px at 1280 x 800) ------------------
+
+/**
+ * A plan of the site seen from above, under the controls' legend: the jib's reach, the jib, the
+ * hook and the ball, every piece in its colour (fallen ones dark) and the target of a swing ringed.
+ * A click on a piece's mark swings the ball at it; elsewhere inside the reach sends the hook there.
+ */
+const PLAN_PX = 180;
+/** Metres from the mast to the plan's edge. */
+const PLAN_HALF = 13;
+const planBox = document.createElement('figure');
+planBox.style.cssText = 'margin: 0';
+// An SVG, not a canvas: tests and the thumbnail script take the page's first canvas for the scene.
+const plan = document.createElement('div');
+plan.dataset.hud = 'site-plan';
+plan.setAttribute('role', 'img');
+plan.setAttribute('aria-label', 'site plan: click a piece to swing the ball at it');
+plan.style.cssText = `width: ${PLAN_PX}px; height: ${PLAN_PX}px; border-radius: 6px; cursor: pointer; background: #4a4033; overflow: hidden`;
+plan.title = 'Site plan: click a piece to swing at it';
+planBox.append(plan);
+pageLayout().info.append(planBox);
+const planScale = PLAN_PX / (2 * PLAN_HALF);
+const hexColor = (c: number): string => `#${c.toString(16).padStart(6, '0')}`;
+/** Draws the site plan (see above). */
+function drawPlan(): void {
+  const cx = PLAN_PX / 2;
+  const X = (x: number): string => (cx + x * planScale).toFixed(1),
+    Z = (z: number): string => (cx + z * planScale).toFixed(1);
+  const out: string[] = [`<svg width="${PLAN_PX}" height="${PLAN_PX}" viewBox="0 0 ${PLAN_PX} ${PLAN_PX}" aria-hidden="true">`];
+  for (const r of RADIUS_RANGE)
+    out.push(`<circle cx="${cx}" cy="${cx}" r="${r * planScale}" fill="none" stroke="rgba(255,255,255,0.25)" stroke-dasharray="4 4"/>`);
+  const P = shell.world.components.Position;
+  for (const p of handles.pieces) {
+    if (!isAlive(shell.world, p.body)) continue;
+    const fill = p.body === lit ? '#ffe08a' : hexColor(p.fallen ? darken(COLORS[p.kind], 0.45) : COLORS[p.kind]);
+    const size = p.fallen ? 3 : 5;
+    out.push(
+      `<rect x="${X(P.x[p.body]! - size / 2 / planScale)}" y="${Z(P.z[p.body]! - size / 2 / planScale)}" width="${size}" height="${size}" fill="${fill}"/>`,
+    );
+  }
+  const c = handles.crane;
+  out.push(
+    `<line x1="${X(-2.6 * Math.cos(c.angle))}" y1="${Z(2.6 * Math.sin(c.angle))}" x2="${X(JIB_LENGTH_OUT * Math.cos(c.angle))}" y2="${Z(-JIB_LENGTH_OUT * Math.sin(c.angle))}" stroke="${hexColor(COLORS.mast)}" stroke-width="3"/>`,
+    `<rect x="${cx - 4}" y="${cx - 4}" width="8" height="8" fill="#9a9a94"/>`,
+  );
+  const [hx, , hz] = hookPosition(c);
+  out.push(`<rect x="${X(hx - 3 / planScale)}" y="${Z(hz - 3 / planScale)}" width="6" height="6" fill="${hexColor(COLORS.hook)}"/>`);
+  out.push(
+    `<circle cx="${X(P.x[handles.ball]!)}" cy="${Z(P.z[handles.ball]!)}" r="${BALL_RADIUS * planScale + 1}" fill="${hexColor(COLORS.ball)}"/>`,
+  );
+  if (aimed !== 0 && isAlive(shell.world, aimed))
+    out.push(`<circle cx="${X(P.x[aimed]!)}" cy="${Z(P.z[aimed]!)}" r="8" fill="none" stroke="#ffd166" stroke-width="2"/>`);
+  out.push('</svg>');
+  plan.innerHTML = out.join('');
+}
+plan.addEventListener('click', (event) => {
+  const box = plan.getBoundingClientRect();
+  const x = (event.clientX - box.left - box.width / 2) / planScale,
+    z = (event.clientY - box.top - box.height / 2) / planScale;
+  const P = shell.world.components.Position;
+  let best = 0,
+    bestD = 1.2;
+  for (const p of handles.pieces) {
+    if (p.fallen || !isAlive(shell.world, p.body)) continue;
+    const d = Math.hypot(P.x[p.body]! - x, P.z[p.body]! - z);
+    if (d < bestD) {
+      bestD = d;
+      best = p.body;
+    }
+  }
+  if (best !== 0) swingAt(best);
+  else if (Math.hypot(x, z) <= RADIUS_RANGE[1]) {
+    handles.controls.moves = [];
+    handles.controls.goal = [x, z];
+    aimed = 0;
+  }
+});
+
 let frames = 0;
 /** World time the last swing's run ended (the result is counted 1.5 s later), or -1. */
 let runEndedAt = -1;
@@ -669,6 +749,7 @@ function frame(): void {
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
         }`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
+    drawPlan();
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
   }
 }

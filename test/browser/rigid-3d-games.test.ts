@@ -126,6 +126,22 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(r.pressed).toBe('ball');
     expect(r.moved).toBeGreaterThan(0.5);
+    // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
+    // was 230 px), and nothing pushed out of view.
+    await g.page.setViewportSize({ width: 1280, height: 800 });
+    await g.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const column = await g.page.evaluate(() => {
+      const info = document.querySelector('.bp-info')!;
+      const last = info.lastElementChild!.getBoundingClientRect();
+      return {
+        gap: info.getBoundingClientRect().bottom - last.bottom,
+        overflow: info.scrollHeight - info.clientHeight,
+        plan: !!info.querySelector('[data-hud="site-plan"]'),
+      };
+    });
+    expect(column.plan).toBe(true);
+    expect(column.gap).toBeLessThan(60);
+    expect(column.overflow).toBeLessThanOrEqual(0);
     expect(g.errors).toEqual([]);
     await g.close();
   });
