@@ -616,13 +616,14 @@ const PLAN_PX = 180;
 /** Metres from the mast to the plan's edge. */
 const PLAN_HALF = 13;
 const planBox = document.createElement('figure');
-planBox.style.cssText = 'margin: 0';
+// As tall as the column has room for under the legend, from 120 to PLAN_PX px, square.
+planBox.style.cssText = `margin: 0; flex: 1 1 ${PLAN_PX}px; min-height: 120px; max-height: ${PLAN_PX}px; display: flex`;
 // An SVG, not a canvas: tests and the thumbnail script take the page's first canvas for the scene.
 const plan = document.createElement('div');
 plan.dataset.hud = 'site-plan';
 plan.setAttribute('role', 'img');
 plan.setAttribute('aria-label', 'site plan: click a piece to swing the ball at it');
-plan.style.cssText = `width: ${PLAN_PX}px; height: ${PLAN_PX}px; border-radius: 6px; cursor: pointer; background: #4a4033; overflow: hidden`;
+plan.style.cssText = 'height: 100%; aspect-ratio: 1; border-radius: 6px; cursor: pointer; background: #4a4033; overflow: hidden';
 plan.title = 'Site plan: click a piece to swing at it';
 planBox.append(plan);
 pageLayout().info.append(planBox);
@@ -633,7 +634,7 @@ function drawPlan(): void {
   const cx = PLAN_PX / 2;
   const X = (x: number): string => (cx + x * planScale).toFixed(1),
     Z = (z: number): string => (cx + z * planScale).toFixed(1);
-  const out: string[] = [`<svg width="${PLAN_PX}" height="${PLAN_PX}" viewBox="0 0 ${PLAN_PX} ${PLAN_PX}" aria-hidden="true">`];
+  const out: string[] = [`<svg width="100%" height="100%" viewBox="0 0 ${PLAN_PX} ${PLAN_PX}" aria-hidden="true">`];
   for (const r of RADIUS_RANGE)
     out.push(`<circle cx="${cx}" cy="${cx}" r="${r * planScale}" fill="none" stroke="rgba(255,255,255,0.25)" stroke-dasharray="4 4"/>`);
   const P = shell.world.components.Position;
@@ -662,8 +663,9 @@ function drawPlan(): void {
 }
 plan.addEventListener('click', (event) => {
   const box = plan.getBoundingClientRect();
-  const x = (event.clientX - box.left - box.width / 2) / planScale,
-    z = (event.clientY - box.top - box.height / 2) / planScale;
+  const perM = (planScale * box.width) / PLAN_PX;
+  const x = (event.clientX - box.left - box.width / 2) / perM,
+    z = (event.clientY - box.top - box.height / 2) / perM;
   const P = shell.world.components.Position;
   let best = 0,
     bestD = 1.2;
