@@ -8,8 +8,14 @@ import { createEntityIndex, createWorld, observe, onAdd, onRemove } from 'bitecs
 import { allocateCollisionScratch, createCollisionState } from './collision/state.js';
 import { removeSpringsOf } from './forces/spring.js';
 import { wakeTouching } from './islands/sleep.js';
+import { finishJoints } from './joints/finish-2d.js';
+import { prepareJoints } from './joints/prepare-2d.js';
 import { removeJointsOf } from './joints/remove.js';
+import { solveJoints } from './joints/solve-2d.js';
+import { gatherJointBodies, jointsToSolve } from './joints/solver-2d.js';
+import { integrateJointRotations, warmStartJoints } from './joints/warm-start-2d.js';
 import { Rng } from './math/rng.js';
+import { setJointRows2D } from './solver/rows-joints-2d.js';
 import { createStages, STAGES } from './step/stages.js';
 import { makeThreadPool } from './threads/pool-maker.js';
 import { shareStores } from './threads/shared-stores.js';
@@ -40,6 +46,9 @@ import {
   type StageTimings,
   type System,
 } from './world/options.js';
+
+// The contact solver runs the 2D joints' stages through this table (solver/rows-joints-2d.ts).
+setJointRows2D({ jointsToSolve, gatherJointBodies, prepareJoints, warmStartJoints, integrateJointRotations, solveJoints, finishJoints });
 
 const KNOWN_OPTIONS = [
   'dimensions',

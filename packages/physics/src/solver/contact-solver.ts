@@ -1,10 +1,5 @@
 import type { ContactBuffer } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
-import { finishJoints } from '../joints/finish-2d.js';
-import { prepareJoints } from '../joints/prepare-2d.js';
-import { solveJoints } from '../joints/solve-2d.js';
-import { gatherJointBodies, jointsToSolve } from '../joints/solver-2d.js';
-import { integrateJointRotations, warmStartJoints } from '../joints/warm-start-2d.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import { reportNonFinite } from '../world/errors.js';
@@ -67,6 +62,15 @@ import {
   warmStartManifolds3D,
 } from './rows-3d.js';
 import { ballRows } from './rows-balls.js';
+import {
+  finishJoints,
+  gatherJointBodies,
+  integrateJointRotations,
+  jointsToSolve,
+  prepareJoints,
+  solveJoints,
+  warmStartJoints,
+} from './rows-joints-2d.js';
 import { finish2DStage, gatherFill2DStage } from './stages-threads.js';
 
 /**

@@ -1,6 +1,5 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import { BodyType } from '../collision/state.js';
-import { jointsToSolve } from '../joints/solver-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   BI_ALONE,
@@ -17,6 +16,7 @@ import {
 import { contactState, sweep } from './impact-contact.js';
 import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
 import { joints3DToSolve } from './rows-3d.js';
+import { jointsToSolve } from './rows-joints-2d.js';
 
 /**
  * The impact stage's separation pass (solver/impacts.ts): after the impacts, which bodies the soft
