@@ -324,8 +324,8 @@ const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score'
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen at no
 // fewer than AIM_PX_PER_M pixels a metre of pull, so a full pull (PULL.max) is a drag of at least
-// 165 px that starts wherever the finger or mouse goes down. (At 40 px a metre, a playtester's phone
-// drags of 36-48 px already spanned the range: 1 px of wobble moved the landing 4 px.)
+// 165 px that starts wherever the finger or mouse goes down (fewer pixels a metre would make a finger's
+// wobble of a pixel move the landing several pixels).
 const aim = { active: false, dx: 0, dy: 0, x0: 0, y0: 0 };
 const pointer = { x: 0, y: 0 };
 /** Least screen pixels per metre of pull. */
@@ -447,7 +447,7 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
 /**
  * Where the last throw is when it is off the screen (over the top, past the right edge, or fallen off
  * the ground's end): an arrow at the screen's edge pointing at it, and how far it is past the rock
- * when it went long, until the next throw. A full pull flew off the edge and a playtester saw nothing.
+ * when it went long, until the next throw, so a shot that left the screen is not lost from sight.
  */
 function drawOffscreen(world: PhysicsWorld): void {
   offscreenText.visible = false;
@@ -620,8 +620,8 @@ function drawBackdrop(world: PhysicsWorld): void {
 
 /** The level is over when no shots are left and 4 s passed since the last, or everything fell. */
 function levelOver(world: PhysicsWorld, t: Tally): boolean {
-  // Three stars' worth down (nothing more to win but the unused shots' bonus) ends it too: a
-  // playtester had to throw the shots left after the castle was down.
+  // Three stars' worth down (nothing more to win but the unused shots' bonus) ends it too, so the
+  // player need not throw the shots left after the castle is down.
   const settled = world.time - lastShotTime > 4;
   return t.fallen === lv.pieces.length || (settled && (shotsLeft === 0 || starsOf(t.fallen / Math.max(1, lv.pieces.length)) === 3));
 }

@@ -26,17 +26,16 @@ export const LAUNCH = { x: 0, y: 1.5 } as const;
 export const GROUND = { minX: -6, maxX: 34 } as const;
 /**
  * Longest pull, m, and launch speed per metre of pull, 1/s: the top speed is 3 x 7 = 21 m/s, which
- * carries a stone 45 m at 45 degrees (the farthest castle ends at about 28 m). At 27 m/s (gain 9) a
- * playtester's ordinary pulls all flew off past the castle.
+ * carries a stone 45 m at 45 degrees (the farthest castle ends at about 28 m); a higher gain would
+ * send ordinary pulls past the castle.
  */
 export const PULL = { max: 3, gain: 7 } as const;
 /** Projectile radius, m. */
 export const PROJECTILE_RADIUS = 0.3;
 /**
  * Rolling resistance of the grass: a projectile on the ground is slowed by ROLL_RESISTANCE x its
- * weight (and its spin by as much at its rim), so a stone that lands short thuds and stops. Without
- * it a stone rolled on for ever: a playtester's short, weak pull (a stone that landed 3 m out) rolled
- * 14 m into level 1's tower and scored 650, and 64 % of a grid of throws scored on level 1.
+ * weight (and its spin by as much at its rim), so a stone that lands short thuds and stops instead
+ * of rolling on into the castle (a ball rolling without slipping on flat ground never slows).
  */
 export const ROLL_RESISTANCE = 1.2;
 /** Drop (m) below its start past which a castle piece counts as fallen. */

@@ -122,7 +122,7 @@ function stepWorld(world: PhysicsWorld): void {
   const pitch = clamp((held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0) - stickInput.y);
   const yaw = (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0);
   // The rudder alone only yaws the nose into a sideslip of about 6 degrees (the fin's own lift
-  // balances it) and turns the flight path hardly at all; a playtester read it as broken. As a
+  // balances it) and turns the flight path hardly at all, which reads as broken. As a
   // turn-coordinator does, held rudder also asks for a third of full aileron the same way, so the
   // aircraft banks into the turn.
   const roll = clamp(

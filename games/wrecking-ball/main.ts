@@ -380,7 +380,7 @@ function drawChain(hook: ArrayLike<number>): void {
 // The camera follows the action only when it would leave the view: while the ball is within the
 // middle FOLLOW_EDGE of the view (in normalised device coordinates) the camera holds still, so a
 // target a player is about to tap stays where they saw it (a camera always easing toward the ball
-// moved the targets under a playtester's finger); past that the orbit's target eases toward a point
+// would move the targets under the player's finger); past that the orbit's target eases toward a point
 // between the mast and the ball (FOLLOW of the way a frame) and the camera moves with it, keeping the
 // player's own orbit and zoom.
 const FOLLOW = 0.04,
@@ -758,7 +758,7 @@ function frame(): void {
 
 /**
  * What the crane is doing for a swing at a target, for the status line: a swing takes a wind-up of
- * a few seconds before the run, and a playtester who looked after 5 s took it for a miss.
+ * a few seconds before the run, which a player looking after 5 s would take for a miss.
  */
 function swingPhase(): string {
   const moves = handles.controls.moves;

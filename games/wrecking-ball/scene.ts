@@ -59,8 +59,8 @@ export const TIP_ANGLE = Math.PI / 3;
 /**
  * Fraction of a level's raised pieces (those not standing on the ground) whose count must fall to
  * clear it. The bottom row (a wall's lowest bricks, a crib's lowest logs, a tower's base) rarely falls,
- * tips or slides a metre however it is hit: counted against all pieces, a playtester flattened level 1
- * and was stuck at 16 of the 19 needed (of 27).
+ * tips or slides a metre however it is hit, so counted against all pieces a flattened level could
+ * still fall short of the share needed.
  */
 export const CLEAR_FRACTION = 0.7;
 
