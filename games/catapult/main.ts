@@ -78,6 +78,8 @@ const lastThrow = {
   good: false,
   at: [0, 0] as [number, number],
   decidedAt: 0,
+  /** Set when the player starts aiming again: the trail and the off-screen marker go. */
+  hidden: false,
 };
 /** A fresh world with the current level (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -90,7 +92,12 @@ function createWorld(): PhysicsWorld {
   lastThrow.body = 0;
   lastThrow.path.length = 0;
   lastThrow.verdict = '';
+  lastThrow.hidden = false;
   levelEnded = false;
+  // A fresh try at a level drops what earlier tries on it scored, so Total is back to its value at
+  // the level's start and retries cannot pile up points.
+  campaign.scores[params.level - 1] = 0;
+  campaign.stars[params.level - 1] = 0;
   materials.clear();
   for (const p of lv.pieces) materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : 'stone');
   return world;
@@ -120,6 +127,8 @@ const PASS_SHARE = 0.5;
 const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
 const starsOf = (share: number): number => (share >= 0.95 ? 3 : share >= 0.75 ? 2 : share >= PASS_SHARE ? 1 : 0);
 const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
+/** What earns the stars, shown on the level's start hint and its end card. */
+const STAR_RULE = '★ half the pieces down   ★★ 75 %   ★★★ 95 %';
 
 /** The next level after a clear, the same one again after a miss, level 1 (a new campaign) after the end. */
 function nextLevel(): void {
@@ -320,7 +329,7 @@ framing = true;
 // Framed now, not at the first frame: the camera holds the aim view from the start.
 frameCamera();
 
-const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'pieces fallen', 'welds broken']);
+const readout = createReadout(shell.hud.readout, ['level', 'shots left', 'score', 'total', 'pieces fallen', 'welds broken']);
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen at no
 // fewer than AIM_PX_PER_M pixels a metre of pull, so a full pull (PULL.max) is a drag of at least
@@ -333,9 +342,10 @@ const AIM_PX_PER_M = 55;
 // Measured in the aim view's scale, so a drag pulls as far while the camera eases back from the shot view.
 const aimScale = (): number => Math.max(pxPerM(aimView()), AIM_PX_PER_M);
 app.canvas.addEventListener('pointerdown', (e) => {
-  if (shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
+  if (shell.paused || shotsLeft <= 0 || (e.pointerType === 'mouse' && e.button !== 0)) return;
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
+  lastThrow.hidden = true;
   aim.active = true;
   aim.x0 = pointer.x;
   aim.y0 = pointer.y;
@@ -351,7 +361,8 @@ app.canvas.addEventListener('pointermove', (e) => {
 const release = (): void => {
   if (!aim.active) return;
   aim.active = false;
-  fire(aim.dx, aim.dy);
+  // Paused mid-drag: the pull is dropped, not thrown.
+  if (!shell.paused) fire(aim.dx, aim.dy);
 };
 app.canvas.addEventListener('pointerup', release);
 app.canvas.addEventListener('pointercancel', () => {
@@ -368,6 +379,7 @@ function fire(dx: number, dy: number): number {
   shotsLeft--;
   lastShotTime = shell.world.time;
   lastThrow.body = ball;
+  lastThrow.hidden = false;
   lastThrow.path.length = 0;
   lastThrow.path.push(LAUNCH.x, LAUNCH.y);
   lastThrow.scoreBefore = tally(shell.world, lv).score;
@@ -452,7 +464,7 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
 function drawOffscreen(world: PhysicsWorld): void {
   offscreenText.visible = false;
   const b = lastThrow.body;
-  if (!b || !isAlive(world, b)) return;
+  if (!b || lastThrow.hidden || !isAlive(world, b)) return;
   const cam = renderer.camera;
   const [x, y] = positionOf(b);
   const px = cam.toScreenX(x),
@@ -462,8 +474,10 @@ function drawOffscreen(world: PhysicsWorld): void {
   const m = 18;
   if (px >= 0 && px <= W && py >= 0 && py <= H) return;
   // The arrow's tip on the screen's edge, on the line from the screen's centre to the stone.
+  // Past the right edge, the arrow and its label sit above the castle and the rock, not over them.
+  const top = px > W ? Math.min(cam.toScreenY(Math.max(lv.castleTop, 2 * ROCK.hy) + 1.2), H - m) : H - m;
   const ax = Math.min(Math.max(px, m), W - m),
-    ay = Math.min(Math.max(py, m + 56), H - m);
+    ay = Math.max(Math.min(py, top), m + 56);
   const ang = Math.atan2(py - ay, px - ax);
   const c = Math.cos(ang),
     sn = Math.sin(ang);
@@ -491,7 +505,8 @@ function positionOf(h: number): [number, number] {
 /** Draws the last throw's trail and, for VERDICT_SHOWN seconds, its verdict. */
 function drawThrow(world: PhysicsWorld): void {
   const cam = renderer.camera;
-  const path = lastThrow.path;
+  const path = lastThrow.hidden ? [] : lastThrow.path;
+  trailDots = Math.max(0, path.length / 2 - 1);
   for (let i = 2; i < path.length; i += 2)
     overlay.circle(cam.toScreenX(path[i]!), cam.toScreenY(path[i + 1]!), 2).fill({ color: 0xffffff, alpha: 0.55 });
   drawOffscreen(world);
@@ -509,6 +524,11 @@ function drawThrow(world: PhysicsWorld): void {
   verdictText.y = Math.max(cam.toScreenY(lastThrow.at[1]) - 18 * age, 70);
   verdictText.alpha = Math.min(1, 3 * (1 - age / VERDICT_SHOWN));
 }
+
+/** Dots of the last throw's trail drawn in the last frame. */
+let trailDots = 0;
+/** The level score shown in the last frame (banner and readout). */
+let shownScore = 0;
 
 /** The on-screen "Next level" button, shown when a level is over. */
 const showNext = createActionButton('Next level ▶', () => nextLevel());
@@ -541,7 +561,34 @@ const offscreenText = new Text({
 });
 offscreenText.anchor.set(1, 0.5);
 offscreenText.visible = false;
-renderer.root.addChild(overlay, banner, verdictText, offscreenText);
+/** Over the play area while paused: a dimmed scene and the word, so a pause is not mistaken for a hang. */
+const pauseShade = new Graphics({ label: 'paused' });
+const pauseText = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 40,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    align: 'center',
+    stroke: { color: 0x000000, width: 6 },
+  },
+});
+pauseText.anchor.set(0.5);
+renderer.root.addChild(overlay, banner, verdictText, offscreenText, pauseShade, pauseText);
+
+/** Shows or hides the pause overlay. */
+function drawPause(): void {
+  const on = shell.paused;
+  pauseShade.visible = pauseText.visible = on;
+  if (!on) return;
+  const W = app.screen.width,
+    H = app.screen.height;
+  pauseShade.clear().rect(0, 0, W, H).fill({ color: 0x000000, alpha: 0.45 });
+  const text = touch ? 'Paused\n▶ to resume' : 'Paused\nP to resume';
+  if (pauseText.text !== text) pauseText.text = text;
+  pauseText.position.set(W / 2, H / 2);
+}
 
 /**
  * The backdrop behind the castle: a sky shading from deep blue overhead to a pale horizon, the sun,
@@ -704,11 +751,20 @@ function draw(world: PhysicsWorld): void {
     const s = slotOf(p.body);
     if (hasFallen(world, p)) overlay.circle(sx(P.x[s]!), sy(P.y[s]!), 5).fill({ color: 0xe63946 });
   }
+  drawPause();
+  if (!levelEnded && levelOver(world, t)) recordLevel(t);
+  // One level score everywhere (banner and readout): the live tally while the level is on; once it is
+  // over, the score it counted (with the bonus for shots left), which later debris no longer changes.
+  const i = params.level - 1;
+  const score = levelEnded ? campaign.scores[i]! : t.score;
+  const runningTotal = total() - (levelEnded ? 0 : campaign.scores[i]!) + (levelEnded ? 0 : score);
+  shownScore = score;
   readout.set(0, `${params.level} / ${LEVEL_COUNT}`);
   readout.set(1, String(shotsLeft));
-  readout.set(2, String(t.score));
-  readout.set(3, `${t.fallen} / ${lv.pieces.length}`);
-  readout.set(4, `${t.broken} / ${lv.joints.length}`);
+  readout.set(2, String(score));
+  readout.set(3, String(runningTotal));
+  readout.set(4, `${t.fallen} / ${lv.pieces.length}`);
+  readout.set(5, `${t.broken} / ${lv.joints.length}`);
   banner.x = app.screen.width / 2;
   banner.y = 16;
   // Narrow screens (phones): smaller type, wrapped inside the canvas.
@@ -717,33 +773,30 @@ function draw(world: PhysicsWorld): void {
     banner.style.wordWrapWidth = app.screen.width - 24;
     banner.style.fontSize = narrow ? 17 : 22;
   }
-  if (levelEnded || levelOver(world, t)) {
-    const share = t.fallen / Math.max(1, lv.pieces.length);
-    const earned = starsOf(share);
+  if (levelEnded) {
+    const earned = campaign.stars[i]!;
     const bonus = earned > 0 ? shotsLeft * SHOT_BONUS : 0;
-    const score = t.score + bonus;
-    if (!levelEnded) recordLevel(t);
     const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
     const last = params.level === LEVEL_COUNT;
     const starsWon = campaign.stars.reduce((a, b) => a + b, 0);
     if (earned === 0) {
       const keys = touch ? 'Tap the button below to try again' : 'L or the button below: try again';
-      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${keys}`;
+      banner.text = `Level ${params.level} not cleared  ${stars}\n${t.fallen} of ${lv.pieces.length} pieces fell: bring down half to pass\n${STAR_RULE}\n${keys}`;
       showNext(true, 'Try again ↺');
     } else if (last) {
-      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
+      banner.text = `All ${LEVEL_COUNT} castles down!  ${stars}\nTotal score ${total()}   Stars ${starsWon} / ${3 * LEVEL_COUNT}\n${STAR_RULE}\n${touch ? 'Tap below to play again' : 'L or the button below: play again'}`;
       showNext(true, 'Play again from level 1 ▶');
     } else {
       const keys = touch ? 'Tap the button below for the next level, ↺ to try again' : 'L or the button below: next level   R: try again';
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
-      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${keys}`;
+      banner.text = `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces fell, ${t.broken} welds broke${extra}   Total ${total()}\n${STAR_RULE}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
-    // The total counts this level's score as it grows (its best try, once the level is over).
-    const i = params.level - 1;
+    // The total counts this level's score as it grows; before the first throw, the star rule.
     const tip = touch && shots.length === 0 && app.screen.height > 1.2 * app.screen.width ? '\nTip: turn sideways for a bigger view' : '';
-    const running = `Score ${t.score}   Total ${total() - campaign.scores[i]! + Math.max(campaign.scores[i]!, t.score)}   shots ${shotsLeft}${tip}`;
+    const rule = shots.length === 0 ? `\nStars: ${STAR_RULE}` : '';
+    const running = `Score ${score}   Total ${runningTotal}   shots ${shotsLeft}${rule}${tip}`;
     if (clearedEarly(world)) {
       // Cleared with shots to spare: the player may move on now (the shots left score their bonus) or
       // throw again for more stars.
@@ -806,6 +859,16 @@ shell.expose({
   shotView: (): boolean => shotView && zoomsIn(),
   /** The off-screen marker's distance while it shows ('N m past ▸'), else ''. */
   offscreen: (): string => (offscreenText.visible ? offscreenText.text : ''),
+  /** The off-screen marker's screen y, px (its label's middle). */
+  offscreenY: (): number => offscreenText.y,
+  /** Dots of the last throw's trail drawn in the last frame. */
+  trailDots: (): number => trailDots,
+  /** The level score shown in the last frame, and the running total. */
+  shownScore: (): number => shownScore,
+  total,
+  /** The banner's text and whether the pause overlay shows. */
+  bannerText: (): string => banner.text,
+  pauseShown: (): boolean => pauseText.visible,
   /** Steps the world n times (tests). */
   advance: (n: number) => {
     for (let i = 0; i < n; i++) shell.step();

@@ -146,6 +146,75 @@ describe('catapult', () => {
     expect(Number(long![1])).toBeGreaterThan(20);
     const off = await g.page.evaluate(() => (window.game as unknown as { offscreen(): string }).offscreen());
     expect(off).toMatch(/^\d+ m past ▸$/);
+    // The marker sits above the castle, not over it.
+    const marker = await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame & { offscreenY(): number; level(): { castleTop: number } };
+      return { y: w.offscreenY(), castle: w.renderer.camera.toScreenY(w.level().castleTop) };
+    });
+    expect(marker.y).toBeLessThan(marker.castle);
+    // A new aim clears the last throw's trail and marker; a press without a pull throws nothing.
+    // A press anywhere on the scene starts an aim.
+    const box = (await g.page.locator('canvas').boundingBox())!;
+    await g.page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await g.page.mouse.down();
+    await g.waitFor(() => (window.game as unknown as { trailDots(): number }).trailDots() === 0, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as { offscreen(): string }).offscreen())).toBe('');
+    await g.page.mouse.up();
+    // Paused (P): an overlay says so and a drag throws nothing.
+    await g.page.keyboard.press('p');
+    await g.waitFor(() => (window.game as unknown as { pauseShown(): boolean }).pauseShown(), null);
+    const before = await g.page.evaluate(() => (window.game as unknown as CatapultGame).shotsLeft());
+    await g.page.mouse.down();
+    await g.page.mouse.move(box.x + box.width / 2 - 150, box.y + box.height / 2 + 80, { steps: 6 });
+    await g.page.mouse.up();
+    expect(await g.page.evaluate(() => (window.game as unknown as CatapultGame).shotsLeft())).toBe(before);
+    await g.page.keyboard.press('p');
+    await g.waitFor(() => !(window.game as unknown as { pauseShown(): boolean }).pauseShown(), null);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('one level score everywhere, the star rule shown, and a retry (R) takes its points out of Total', async () => {
+    type W = CatapultGame & { shownScore(): number; total(): number; bannerText(): string };
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = true;
+      w.params.level = 1;
+      w.reset();
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as { bannerText(): string }).bannerText().includes('★★★ 95 %'), null);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as CatapultGame;
+      w.paused = true;
+      w.advance(30);
+      const R = w.level().castleMinX + 0.5,
+        th = 0.5 * Math.asin((9.81 * R) / 400),
+        d = 20 / 7;
+      w.fire(-d * Math.cos(th), -d * Math.sin(th));
+      w.advance(300);
+      while (w.shotsLeft() > 0) w.fire(0, -1.5);
+      w.advance(60 * 9);
+      w.paused = false;
+    });
+    await g.waitFor(() => (window.game as unknown as CatapultGame).levelEnded(), null);
+    await g.waitFor(() => (window.game as unknown as W).shownScore() > 0, null);
+    const end = await g.page.evaluate(() => {
+      const w = window.game as unknown as W;
+      return { shown: w.shownScore(), recorded: w.campaign.scores[0], total: w.total(), banner: w.bannerText() };
+    });
+    expect(end.shown).toBe(end.recorded);
+    expect(end.total).toBe(end.recorded);
+    expect(end.banner).toContain(`Score ${end.shown}`);
+    expect(end.banner).toContain('★★★ 95 %');
+    expect(await g.page.locator('[data-readout="2"]').textContent()).toBe(String(end.shown));
+    // R: the level again, and Total back to its value at the level's start (0).
+    await g.page.keyboard.press('r');
+    await g.waitFor(() => !(window.game as unknown as CatapultGame).levelEnded(), null);
+    const after = await g.page.evaluate(() => {
+      const w = window.game as unknown as W;
+      return { total: w.total(), score: w.campaign.scores[0] };
+    });
+    expect(after).toEqual({ total: 0, score: 0 });
     expect(g.errors).toEqual([]);
   });
 
