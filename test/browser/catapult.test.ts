@@ -18,7 +18,7 @@ interface CatapultGame {
   shotsLeft(): number;
   fire(dx: number, dy: number): number;
   tally(): { fallen: number; broken: number; score: number };
-  level(): { castleMinX: number };
+  level(): { castleMinX: number; castleTop: number };
   params: { level: number };
   campaign: { scores: number[]; stars: number[] };
   levelEnded(): boolean;
@@ -148,7 +148,7 @@ describe('catapult', () => {
     expect(off).toMatch(/^\d+ m past ▸$/);
     // The marker sits above the castle, not over it.
     const marker = await g.page.evaluate(() => {
-      const w = window.game as unknown as CatapultGame & { offscreenY(): number; level(): { castleTop: number } };
+      const w = window.game as unknown as CatapultGame & { offscreenY(): number };
       return { y: w.offscreenY(), castle: w.renderer.camera.toScreenY(w.level().castleTop) };
     });
     expect(marker.y).toBeLessThan(marker.castle);
