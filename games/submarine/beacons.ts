@@ -35,11 +35,16 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
 }
 
 /**
- * The pointer's label: the straight-line distance, and how far down or up the beacon lies when that
- * is more than 5 m (the boat moves about twice as fast ahead as it dives, so a beacon far below
- * is easily passed over while the distance alone is shown). `dy` is the beacon's y minus the hull's, m.
+ * The pointer's label: how far ahead or behind the beacon lies (along the hull's heading, so "ahead"
+ * means "keep the screw ahead") and how far down or up, each when it is 3 m or more, e.g.
+ * "beacon 85 m ahead, 30 m down". The boat moves about twice as fast ahead as it dives, so the depth
+ * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
+ * hull's, m (y up); `angle`: the hull's pitch, rad.
  */
-export function beaconLabel(distance: number, dy: number): string {
-  const vertical = Math.abs(dy) > 5 ? ` · ${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}` : '';
-  return `beacon ${distance.toFixed(0)} m${vertical}`;
+export function beaconLabel(dx: number, dy: number, angle = 0): string {
+  const along = dx * Math.cos(angle) + dy * Math.sin(angle);
+  const parts: string[] = [];
+  if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
+  if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
+  return `beacon ${parts.length > 0 ? parts.join(', ') : 'here'}`;
 }

@@ -38,9 +38,19 @@ let taken: boolean[] = [];
 /**
  * What the pointer shows: the beacon it leads to (index, -1: none left), its distance (m), its
  * offset from the hull (dx, dy, m, y up), the arrow's screen angle (rad, y down; NaN while the
- * beacon is on screen and no arrow is drawn) and whether the beacon is on screen.
+ * beacon is on screen and no arrow is drawn), whether the beacon is on screen, and where the label is drawn.
  */
-const aim = { index: -1, distance: 0, dx: 0, dy: 0, angle: Number.NaN, onScreen: false };
+const aim = {
+  index: -1,
+  distance: 0,
+  dx: 0,
+  dy: 0,
+  angle: Number.NaN,
+  onScreen: false,
+  /** The label's box and the hull's (x, y, width, height, px), to check the label stays off the hull. */
+  label: [0, 0, 0, 0],
+  hull: [0, 0, 0, 0],
+};
 
 /**
  * Beacons collected, for the effect drawn at each (drawing only): world position (m), the game time
@@ -49,6 +59,12 @@ const aim = { index: -1, distance: 0, dx: 0, dy: 0, angle: Number.NaN, onScreen:
 const pickups: { x: number; y: number; time: number; text: string }[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
+/** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
+const FRAME_MARGIN = 60;
+/** The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on). */
+const FRAME_MIN_ZOOM = 2;
+/** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
+let zoom = Number.NaN;
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(submarine.worldOptions());
@@ -56,6 +72,7 @@ function createWorld(): PhysicsWorld {
   Object.assign(state, createHelmState(), { collected: 0, hits: 0, spared: 0, touching: false, over: '', time: 0 });
   taken = new Array(params.beacons).fill(false);
   aim.index = -1;
+  zoom = Number.NaN;
   pickups.length = 0;
   return world;
 }
@@ -211,9 +228,22 @@ app.stage.addChild(banner);
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
 gauge.dataset.hud = 'gauges';
-gauge.style.cssText = 'font: 12px/1.4 ui-monospace, Menlo, Consolas, monospace; color: #e8f4ff; padding: 4px 10px; white-space: pre-wrap;';
+gauge.style.cssText = 'font: 13px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px 10px;';
+const goal = document.createElement('div');
+goal.dataset.hud = 'goal';
+goal.style.cssText = 'font-weight: 700; color: #ffe066;';
+const readout = document.createElement('div');
+readout.dataset.hud = 'readout';
+const instruments = document.createElement('div');
+instruments.dataset.hud = 'instruments';
+instruments.style.cssText = 'font-size: 11px; opacity: 0.6;';
+gauge.append(goal, readout, instruments);
 pageLayout().status.append(gauge);
 let gaugeFrame = 0;
+/** The "beacon" tags under beacons in view other than the pointer's (a pool, hidden when unused). */
+const tags: Text[] = [];
+/** How many tags are shown this frame. */
+let otherTags = 0;
 
 // Touch: hold a button as a key (the same six controls as W S Q E A D).
 createButtonBar(
@@ -300,12 +330,31 @@ function draw(): void {
   const world = shell.world,
     c = world.components,
     e = handles.hull;
-  const k = params.pixelsPerMeter,
-    W = app.screen.width,
+  const W = app.screen.width,
     H = app.screen.height;
-  // The camera follows the hull, but never shows more sky than the top 15% of the view.
-  const cx = c.Position.x[e]!,
-    cy = Math.min(-H / k / 2 + (0.15 * H) / k, c.Position.y[e]!);
+  const hxw = c.Position.x[e]!,
+    hyw = c.Position.y[e]!;
+  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
+  // The camera frames the hull and the beacon the pointer leads to: it centres between them and
+  // zooms out (down to FRAME_MIN_ZOOM px/m) until both fit inside FRAME_MARGIN px of the edges, so
+  // the player sees where to go instead of steering by an arrow to a point off screen.
+  const fx = aim.index >= 0 ? handles.beacons[2 * aim.index]! : hxw,
+    fy = aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : hyw;
+  const fit = Math.min(
+    params.pixelsPerMeter,
+    (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
+    (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
+  );
+  const target = Math.max(Math.min(FRAME_MIN_ZOOM, params.pixelsPerMeter), fit);
+  // Eased (a new beacon or a collected one does not make the view jump).
+  zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
+  const k = zoom;
+  // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
+  // inside the view when both do not fit; never more sky than the top 15% of the view.
+  const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
+    reachY = Math.max(0, H / 2 - FRAME_MARGIN) / k;
+  const cx = Math.max(hxw - reachX, Math.min(hxw + reachX, (hxw + fx) / 2)),
+    cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, (hyw + fy) / 2)));
   const sx = (x: number) => W / 2 + (x - cx) * k,
     sy = (y: number) => H / 2 - (y - cy) * k;
   g.clear();
@@ -419,14 +468,30 @@ function draw(): void {
       }
     }
   }
-  // Beacons.
+  // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
+  // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
+  // reads as another beacon to collect, not as something unexplained.
+  let tagged = 0;
   for (let i = 0; i < taken.length; i++) {
     if (taken[i]) continue;
     const bx = sx(handles.beacons[2 * i]!),
       by = sy(handles.beacons[2 * i + 1]!);
-    g.circle(bx, by, 1.2 * k).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
-    g.circle(bx, by, (2 + Math.sin(3 * t)) * k).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+    g.circle(bx, by, Math.max(5, 1.2 * k)).fill({ color: 0xffe066, alpha: 0.9 + 0.1 * Math.sin(4 * t) });
+    g.circle(bx, by, Math.max(9, (2 + Math.sin(3 * t)) * k)).stroke({ color: 0xffe066, alpha: 0.4, width: 2 });
+    if (i === aim.index || bx < 0 || bx > W || by < 0 || by > H) continue;
+    let tag = tags[tagged];
+    if (!tag) {
+      tag = new Text({ text: 'beacon', style: { fill: 0xffe066, fontSize: 12, fontWeight: '600', fontFamily: 'system-ui, sans-serif' } });
+      tag.anchor.set(0.5, 0);
+      tags.push(tag);
+      app.stage.addChild(tag);
+    }
+    tag.visible = true;
+    tag.position.set(bx, by + Math.max(11, 3 * k));
+    tagged++;
   }
+  for (let i = tagged; i < tags.length; i++) tags[i]!.visible = false;
+  otherTags = tagged;
   // Collected beacons: a flash, two rings expanding from the beacon and rays, fading over
   // PICKUP_LIFE s of game time; the banner shows the newest one.
   for (let i = pickups.length - 1; i >= 0; i--) if (t - pickups[i]!.time > PICKUP_LIFE || t < pickups[i]!.time) pickups.splice(i, 1);
@@ -461,9 +526,6 @@ function draw(): void {
   }
   // The pointer: an arrow at the screen's edge leading to one beacon (./beacons.ts: kept until it is
   // collected or another is much nearer) while it is off screen, with its distance and depth.
-  const hxw = c.Position.x[e]!,
-    hyw = c.Position.y[e]!;
-  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
   pointer.visible = aim.index >= 0;
   if (aim.index >= 0) {
     const wx = handles.beacons[2 * aim.index]!,
@@ -473,7 +535,7 @@ function draw(): void {
       by = sy(wy);
     const m = 40;
     aim.distance = best;
-    pointer.text = beaconLabel(best, wy - hyw);
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!);
     aim.dx = wx - hxw;
     aim.dy = wy - hyw;
     aim.onScreen = bx >= m && bx <= W - m && by >= m && by <= H - m;
@@ -520,6 +582,18 @@ function draw(): void {
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - pointer.width / 2 - 8, pointer.x));
+    // Kept off the hull: a label that would cross the hull's box (its sail and a margin included)
+    // moves above or below it, whichever is nearer and inside the view.
+    const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
+      hx0 = sx(hxw),
+      hy0 = sy(hyw);
+    if (Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2) {
+      const above = hy0 - hr - pointer.height / 2 - 4,
+        below = hy0 + hr + pointer.height / 2 + 4;
+      pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
+    }
+    aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
+    aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The label on a dark pill, readable over the bright surface water and the sky.
     const pw = pointer.width + 14,
       ph = pointer.height + 4;
@@ -531,7 +605,7 @@ function draw(): void {
     s = Math.sin(a);
   const L = SUBMARINE.length / 2,
     Hh = SUBMARINE.height / 2;
-  const pt = (u: number, v: number): [number, number] => [sx(cx + u * co - v * s), sy(c.Position.y[e]! + u * s + v * co)];
+  const pt = (u: number, v: number): [number, number] => [sx(hxw + u * co - v * s), sy(hyw + u * s + v * co)];
   const hull = [
     [-L, -Hh * 0.6],
     [-L * 0.9, -Hh],
@@ -582,22 +656,12 @@ function draw(): void {
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
   if (gaugeFrame++ % 6 !== 0) return;
-  const narrow = W < 520;
   const end = state.over === 'won' ? 'ALL COLLECTED!' : state.over === 'sunk' ? 'HULL BREACHED (reset to retry)' : '';
   const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
-  gauge.textContent = (
-    narrow
-      ? [
-          `depth ${depth.toFixed(1)} m (bed ${(-floor).toFixed(0)} m)  speed ${speed.toFixed(1)} m/s`,
-          `ballast ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)  screw ${(state.throttle * 100).toFixed(0)}%`,
-          `beacons ${state.collected}/${taken.length}  hull ${3 - state.hits}/3  ${end || helm}`,
-        ]
-      : [
-          `depth ${depth.toFixed(1)} m (seabed ${(-floor).toFixed(0)} m)   speed ${speed.toFixed(2)} m/s   climb ${c.Velocity.y[e]!.toFixed(2)} m/s`,
-          `ballast fore ${(B.fore[e]! * 100).toFixed(0)}% aft ${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)   pitch ${((a * 180) / Math.PI).toFixed(1)}°   screw ${(state.throttle * 100).toFixed(0)}%`,
-          `beacons ${state.collected}/${taken.length}   hull ${3 - state.hits}/3   helm: ${helm}${end ? `   ${end}` : ''}`,
-        ]
-  ).join('\n');
+  // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
+  goal.textContent = end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} so far`;
+  readout.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · beacons ${state.collected}/${taken.length} · hull ${3 - state.hits}/3`;
+  instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
 }
 
 const panel = createPanel(
@@ -614,7 +678,7 @@ const panel = createPanel(
 
 shell.expose({
   /** The beacon pointer: the beacon it leads to (-1: none), distance (m), offset (m), arrow angle and whether it is on screen. */
-  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text }),
+  beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags }),
   /** The collect effect: pickups still drawn (rings at the beacons) and the banner over the scene. */
   pickupEffect: () => ({ count: pickups.length, banner: banner.visible ? banner.text : '', alpha: banner.alpha }),
   params,

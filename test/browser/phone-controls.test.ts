@@ -125,7 +125,25 @@ describe('phone controls', () => {
       (window.game as unknown as { beaconPointer(): { visible: boolean; text: string } }).beaconPointer(),
     );
     expect(aim.visible).toBe(true);
-    expect(aim.text).toMatch(/^beacon \d+ m( · \d+ m (down|up))?$/);
+    expect(aim.text).toMatch(/^beacon (\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+    // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
+    // above its beacon, the label over the beacon would cross the hull.
+    const clear = await g.page.evaluate(async () => {
+      const w = window.game as unknown as {
+        world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+        hull(): number;
+        beaconPointer(): { index: number; label: number[]; hull: number[] };
+        handles(): { beacons: Float64Array };
+      };
+      const i = w.beaconPointer().index,
+        b = w.handles().beacons;
+      w.world.components.Position.x[w.hull()] = b[2 * i]!;
+      w.world.components.Position.y[w.hull()] = b[2 * i + 1]! + 10;
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      const { label: l, hull: hb } = w.beaconPointer();
+      return l[0]! + l[2]! <= hb[0]! || hb[0]! + hb[2]! <= l[0]! || l[1]! + l[3]! <= hb[1]! || hb[1]! + hb[3]! <= l[1]!;
+    });
+    expect(clear).toBe(true);
     expect(g.errors).toEqual([]);
     await g.close();
   });

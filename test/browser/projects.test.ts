@@ -5,7 +5,6 @@
  */
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { beaconLabel } from '../../games/submarine/beacons';
 import { Harness } from './harness';
 
 interface Game {
@@ -76,31 +75,21 @@ describe('projects', () => {
   });
 
   it('submarine: D drives the screw ahead, W floods the tanks', async () => {
-    const g = await h.openGame('submarine');
-    // At the start no beacon is on screen; an arrow at the edge points to the nearest with its
-    // distance and how far down it lies, the arrow along the beacon's direction (screen y down).
-    const aim = await g.page.evaluate(() =>
-      (
-        window.game as unknown as {
-          beaconPointer(): {
-            index: number;
-            distance: number;
-            dx: number;
-            dy: number;
-            angle: number;
-            onScreen: boolean;
-            visible: boolean;
-            text: string;
-          };
-        }
-      ).beaconPointer(),
-    );
+    const g = await h.openGame('submarine', { viewport: { width: 1280, height: 800 } });
+    // At the start the camera zooms out to frame the hull and the nearest beacon (it was 8 px/m on
+    // the hull, the beacon off screen); the label says it lies ahead and how far down.
+    type Pointer = { index: number; dy: number; onScreen: boolean; visible: boolean; text: string; zoom: number };
+    const aim = await g.waitFor(() => {
+      const p = (window.game as unknown as { beaconPointer(): Pointer }).beaconPointer();
+      return p.onScreen ? p : null;
+    }, null);
     expect(aim.index).toBeGreaterThanOrEqual(0);
     expect(aim.visible).toBe(true);
-    expect(aim.onScreen).toBe(false);
-    expect(aim.text).toBe(beaconLabel(aim.distance, aim.dy));
-    expect(aim.text).toContain('m down');
-    expect(Math.cos(aim.angle - Math.atan2(-aim.dy, aim.dx))).toBeGreaterThan(0.999);
+    expect(aim.onScreen).toBe(true);
+    expect(aim.zoom).toBeLessThan(8);
+    expect(aim.text).toBe(`beacon ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
+    // The goal is stated above the scene.
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toContain('Collect the 6 beacons');
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;

@@ -66,9 +66,11 @@ describe('submarine beacon pointer', () => {
     expect(rises).toBe(0);
   });
 
-  it('the label gives the distance, and how far down or up when more than 5 m', () => {
-    expect(beaconLabel(83.3, -43.6)).toBe('beacon 83 m · 44 m down');
-    expect(beaconLabel(45, 30)).toBe('beacon 45 m · 30 m up');
-    expect(beaconLabel(20, -4)).toBe('beacon 20 m');
+  it('the label says ahead or behind and how far down or up, each from 3 m', () => {
+    // Ahead or behind along the heading, and how far down or up (the label once gave the distance only).
+    expect(beaconLabel(83.3, -43.6)).toBe('beacon 83 m ahead, 44 m down');
+    expect(beaconLabel(-45, 30)).toBe('beacon 45 m behind, 30 m up');
+    expect(beaconLabel(20, -2)).toBe('beacon 20 m ahead');
+    expect(beaconLabel(1, -2)).toBe('beacon here');
   });
 });
