@@ -49,9 +49,9 @@ export interface LevelSpec {
 }
 
 /**
- * The spec of level `level`, one new difficulty at a time: level 1 one small hole well away from the
- * straight path up (holding thrust up wins); level 2 a second hole across that path, so the player
- * must steer round it; level 3 a third hole; level 4 two holes across the path, one above the other;
+ * The spec of level `level`, one new difficulty at a time: level 1 one small hole across the
+ * straight path up (holding thrust up falls in; a nudge sideways passes it); level 2 a second hole
+ * off that path; level 3 a third hole; level 4 two holes across the path, one above the other;
  * from level 5 the holes drift (0.6, then 0.9, 1.2 m/s); level 6 a fourth hole; from level 7 the fuel
  * is limited (16 s, then 14 s down to 5 s); from level 8 a hole more every second level (up to
  * MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -63,7 +63,7 @@ export function levelSpec(level: number): LevelSpec {
     Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel });
   switch (level) {
     case 1:
-      return spec(1, [0.45, 0.6], 9, 0, 0, Infinity);
+      return spec(1, [0.45, 0.6], 9, 1, 0, Infinity);
     case 2:
       return spec(2, [0.5, 0.8], 6, 1, 0, Infinity);
     case 3:
@@ -94,8 +94,10 @@ export function levelSpec(level: number): LevelSpec {
 export interface LevelSummary {
   /** The level cleared. */
   readonly level: number;
-  /** Time from its start to the line, s. */
+  /** Time of the winning attempt, s: from the last start (first thrust after the level began, a fall or an exit) to the line. */
   readonly time: number;
+  /** Time from the level's start to the line, failed attempts included, s. */
+  readonly totalTime: number;
   /** Lives left. */
   readonly lives: number;
   /** Points it scored (one per hole). */
@@ -122,6 +124,8 @@ export interface LevelRun {
   summary: LevelSummary | null;
   /** Falls counted at the level's start (to report the level's own). */
   fallsAtStart: number;
+  /** `time` when the current attempt began (the first thrust after the level's start, a fall or an exit), s. */
+  attemptStart: number;
   /**
    * The ship waits at the start, held at rest, until the player thrusts: set when a level begins and
    * after each fall or exit, so a hole's pull (or a hole drifting near) cannot take a life before the
@@ -144,6 +148,7 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     waiting: false,
     summary: null,
     fallsAtStart: 0,
+    attemptStart: 0,
     parked: true,
   };
   layLevel(game, run, level);
@@ -156,6 +161,7 @@ export function beginLevel(game: BlackHoleGame, run: LevelRun): void {
   run.waiting = false;
   run.parked = true;
   run.time = 0;
+  run.attemptStart = 0;
   run.fuelLeft = run.spec.fuel;
   run.fallsAtStart = game.falls;
   game.message = levelMessage(run.spec);
@@ -174,6 +180,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   const spec = levelSpec(level);
   run.spec = spec;
   run.time = 0;
+  run.attemptStart = 0;
   run.fuelLeft = spec.fuel;
   run.fallsAtStart = game.falls;
   const world = game.world;
@@ -286,7 +293,12 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     run.fuelLeft = Math.max(0, run.fuelLeft - dt);
     if (run.fuelLeft === 0) setThrust(game, 'none');
   }
-  if (game.thrust !== 'none') run.parked = false;
+  if (game.thrust !== 'none' && run.parked) {
+    // A new attempt: its clock starts, and the message about the last one (a fall, an exit) goes.
+    run.parked = false;
+    run.attemptStart = run.time;
+    game.message = levelMessage(run.spec);
+  }
   const time = run.time + dt;
   run.time = time;
   const event = stepBlackHole(game);
@@ -298,7 +310,8 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   if (event !== 'scored') return event;
   run.summary = Object.freeze({
     level: run.spec.level,
-    time,
+    time: time - run.attemptStart,
+    totalTime: time,
     lives: game.lives,
     points: run.spec.holes,
     fuelLeft: run.fuelLeft,
@@ -310,7 +323,9 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   run.waiting = true;
   const s = run.summary;
   game.message =
-    `Level ${s.level} cleared in ${s.time.toFixed(1)} s with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
+    `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
+    (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
+    ` with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
     `Tap here or press Enter for level ${run.spec.level}.`;
   return 'cleared';
 }
