@@ -23,7 +23,7 @@
 import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
-import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, startLevel } from './levels';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -59,10 +59,17 @@ let best = readBest();
 function onGameStep(event: GameStepEvent): void {
   if (event === 'cleared' || event === 'scored' || event === 'over') recordScore(bh.score);
   // Sound (not while a replay plays the run back silently fast).
+  if (event === 'fell' || event === 'over') startSwallow();
+  if (event === 'fell' || event === 'lost') restarted = true;
   if (event === 'scored') sound.chime(880);
   else if (event === 'cleared') sound.chime(1320, 0.6);
   else if (event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : 0.6);
 }
+/**
+ * Set by a fall or an exit: the keys and buttons held are let go, so the ship waits at the start
+ * (and the message says what happened) until the player thrusts again.
+ */
+let restarted = false;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -123,6 +130,14 @@ const game = await startPixiGame({
   step: () => {
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) held.length = 0;
+    if (restarted) {
+      restarted = false;
+      // Not while a replay plays: its inputs are the recorded ones.
+      if (!replay.player && held.length > 0) {
+        held.length = 0;
+        applyHeld();
+      }
+    }
   },
   controls: [
     { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
@@ -304,9 +319,9 @@ function updateStatus(force = false): void {
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   const n = run
-    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score}   Best ${Math.max(best, bh.score)}` +
+    ? `Level ${run.spec.level}   ${lives}   Score ${bh.score} (holes passed)   Best ${Math.max(best, bh.score)}` +
       (Number.isFinite(run.fuelLeft) ? `   Fuel ${run.fuelLeft.toFixed(1)} s` : '')
-    : `${lives}   Score ${bh.score}   Holes ${bh.holes.length}`;
+    : `${lives}   Score ${bh.score} (holes passed)   Holes ${bh.holes.length}`;
   const playing = replay.player ? `   ▶ Replay ${replay.player.played} steps` : '';
   if (force || n + playing !== shownNumbers) {
     shownNumbers = n + playing;
@@ -393,7 +408,8 @@ function drawBackdrop(): void {
     sprite.width = sprite.height = cam.toScreenLength(size);
   }
   for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
-  backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 1, color: 0x3a4560 });
+  // The field's edge, plain to see: leaving the field puts the ship back at the start.
+  backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 3, color: 0x6a83b8 });
   // The finish line, dashed.
   const y = cam.toScreenY(bh.lineY),
     dash = 12;
@@ -483,6 +499,86 @@ const FLAME: Record<Thrust, readonly [number, number] | null> = {
   right: [-1, 0],
 };
 
+/**
+ * Within EDGE_WARN m of a side (or BOTTOM_WARN m of the bottom, under the start's 1.5 m), the edge
+ * glows red and a warning shows.
+ */
+const EDGE_WARN = 2.5,
+  BOTTOM_WARN = 1;
+const edgeText = new Text({
+  text: '⚠ Edge: leaving the field sends you back to the start',
+  style: {
+    fill: 0xff8c8c,
+    fontSize: 16,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 4 },
+    align: 'center',
+  },
+});
+edgeText.anchor.set(0.5, 0);
+edgeText.visible = false;
+app.stage.addChild(edgeText);
+
+/** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */
+function drawEdgeWarning(x: number, y: number): void {
+  const cam = renderer.camera;
+  const W = PLAY_FIELD.width,
+    H = PLAY_FIELD.height;
+  const near = !bh.over && !run?.waiting ? Math.min(x, W - x, (y * EDGE_WARN) / BOTTOM_WARN) : Infinity;
+  edgeText.visible = near < EDGE_WARN;
+  if (!edgeText.visible) return;
+  const a = 0.5 + 0.5 * (1 - Math.max(0, near) / EDGE_WARN);
+  const x0 = cam.toScreenX(0),
+    x1 = cam.toScreenX(W),
+    y0 = cam.toScreenY(H),
+    y1 = cam.toScreenY(0);
+  if (x < EDGE_WARN) overlay.moveTo(x0, y0).lineTo(x0, y1);
+  if (W - x < EDGE_WARN) overlay.moveTo(x1, y0).lineTo(x1, y1);
+  if (y < BOTTOM_WARN) overlay.moveTo(x0, y1).lineTo(x1, y1);
+  overlay.stroke({ width: 6, color: 0xff4d4d, alpha: a });
+  edgeText.style.wordWrap = true;
+  edgeText.style.wordWrapWidth = Math.max(160, x1 - x0 - 24);
+  edgeText.position.set((x0 + x1) / 2, cam.toScreenY(0.75 * H));
+}
+
+/**
+ * The ship falling into a hole: for SWALLOW_MS it spirals in to the hole's centre, shrinking and
+ * reddening, before it shows again at the start. Where it was comes from the last frame drawn (the
+ * rules have already put it back at the start when the step reports the fall).
+ */
+const SWALLOW_MS = 900;
+const swallow = { active: false, start: 0, hx: 0, hy: 0, dx: 0, dy: 0 };
+/** The ship's position (m) in the last frame drawn. */
+const lastShip = [0, 0];
+function startSwallow(): void {
+  const P = bh.world.components.Position;
+  let best = Infinity;
+  for (const h of bh.holes) {
+    const d = Math.hypot(P.x[slotOf(h)]! - lastShip[0]!, P.y[slotOf(h)]! - lastShip[1]!);
+    if (d < best) {
+      best = d;
+      swallow.hx = P.x[slotOf(h)]!;
+      swallow.hy = P.y[slotOf(h)]!;
+    }
+  }
+  if (best === Infinity) return;
+  swallow.dx = lastShip[0]! - swallow.hx;
+  swallow.dy = lastShip[1]! - swallow.hy;
+  swallow.active = true;
+  swallow.start = performance.now();
+}
+
+/** The ship's arrowhead at screen (sx, sy), k px a metre, turned by `turn` rad. */
+function drawShip(sx: number, sy: number, k: number, turn: number, color: number): void {
+  const c = Math.cos(turn),
+    n = Math.sin(turn);
+  const pts = [0, -0.55, 0.38, 0.45, 0, 0.25, -0.38, 0.45];
+  const out: number[] = [];
+  for (let i = 0; i < pts.length; i += 2) out.push(sx + k * (c * pts[i]! - n * pts[i + 1]!), sy + k * (n * pts[i]! + c * pts[i + 1]!));
+  overlay.poly(out).fill(color);
+}
+
 function drawFrame(alpha: number, world: PhysicsWorld): void {
   engine.set(bh.thrust === 'none' || bh.over ? 0 : 0.7);
   drawBackdrop();
@@ -508,6 +604,26 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const sx = cam.toScreenX(x),
     sy = cam.toScreenY(y),
     k = cam.toScreenLength(1);
+  const age = performance.now() - swallow.start;
+  if (swallow.active && age > SWALLOW_MS) swallow.active = false;
+  if (swallow.active) {
+    // Spiralling in: 1.5 turns, the distance and the size shrinking to nothing.
+    const u = age / SWALLOW_MS,
+      turn = 3 * Math.PI * u,
+      f = 1 - u;
+    const ox = f * (swallow.dx * Math.cos(turn) - swallow.dy * Math.sin(turn)),
+      oy = f * (swallow.dx * Math.sin(turn) + swallow.dy * Math.cos(turn));
+    const hx = cam.toScreenX(swallow.hx),
+      hy = cam.toScreenY(swallow.hy);
+    overlay.circle(hx, hy, k * (0.6 + 1.5 * u)).stroke({ width: 2, color: 0xff7a2a, alpha: f });
+    drawShip(cam.toScreenX(swallow.hx + ox), cam.toScreenY(swallow.hy + oy), k * f, 4 * turn, u < 0.5 ? 0xffd0a0 : 0xff6a3c);
+    edgeText.visible = false;
+    updateStatus();
+    return;
+  }
+  lastShip[0] = x;
+  lastShip[1] = y;
+  drawEdgeWarning(x, y);
   const flame = FLAME[bh.thrust];
   if (flame && !bh.over) {
     const [fx, fy] = flame;
@@ -525,9 +641,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       ])
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
-  overlay
-    .poly([sx, sy - 0.55 * k, sx + 0.38 * k, sy + 0.45 * k, sx, sy + 0.25 * k, sx - 0.38 * k, sy + 0.45 * k])
-    .fill(bh.over ? 0x5c677d : 0xe8ecf1);
+  drawShip(sx, sy, k, 0, bh.over ? 0x5c677d : 0xe8ecf1);
   updateStatus();
 }
 
@@ -543,6 +657,9 @@ shell.expose({
   },
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
+  /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
+  swallowing: (): boolean => swallow.active,
+  edgeWarning: (): boolean => edgeText.visible,
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });
