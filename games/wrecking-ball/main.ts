@@ -42,10 +42,12 @@ import {
   MeshBasicMaterial,
   MeshStandardMaterial,
   Plane,
+  Quaternion,
   Raycaster,
   RepeatWrapping,
   RingGeometry,
   SRGBColorSpace,
+  TorusGeometry,
   Vector2,
   Vector3,
 } from 'three';
@@ -60,7 +62,9 @@ import {
   JIB_HEIGHT,
   LINK_RADIUS,
   RADIUS_RANGE,
+  SWING_BUDGET,
   scorePieces,
+  swingStars,
   type WreckingBallHandles,
   wreckingBallWorldOptions,
 } from './scene';
@@ -85,6 +89,8 @@ let handles: WreckingBallHandles;
 let banked = 0;
 let levelScore = 0;
 let cleared = false;
+/** Swings used on this level (taps on targets, drags of the ball), out of SWING_BUDGET. */
+let swingsUsed = 0;
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
 let stepMs = 0;
 let worstMs = 0;
@@ -110,6 +116,7 @@ function createWorld(): PhysicsWorld {
   handles = buildWreckingBall(world, { level: params.level, seed: params.seed, ballWeight: params.ballWeight });
   levelScore = 0;
   cleared = false;
+  swingsUsed = 0;
   return world;
 }
 
@@ -141,7 +148,8 @@ function gameStep(world: PhysicsWorld): void {
   if (!cleared && fallenCount(handles.pieces) >= clearTarget(handles.pieces)) {
     cleared = true;
     sound.chime(1046, 0.6);
-    levelScore += 500;
+    // 500 for clearing and 250 for each star (fewer swings).
+    levelScore += 500 + 250 * swingStars(swingsUsed, true);
   }
 }
 
@@ -193,6 +201,10 @@ const game = await startThreeGame({
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+// The run-state line under the step count ('paused' or empty) keeps its line's height while empty,
+// so pausing does not push the left column down and shrink the site plan at its foot.
+const runState = document.querySelector<HTMLElement>('[data-hud="status"]');
+if (runState) runState.style.minHeight = '1lh';
 app.scene.background = skyTexture();
 
 /**
@@ -330,10 +342,23 @@ cableGeometry.setAttribute('position', new BufferAttribute(cablePositions, 3));
 const cable = new Line(cableGeometry, new LineBasicMaterial({ color: 0x20242b }));
 cable.frustumCulled = false;
 app.scene.add(cable);
-// The chain, drawn as one: a steel rod from the hook through every link's centre to the top of the
-// ball, so it reads as a chain whatever the links' joints give (the capsule links themselves were
-// drawn apart, with gaps between them, whenever a joint stretched under the swing).
-const chainMaterial = new MeshStandardMaterial({ color: COLORS.link, roughness: 0.45, metalness: 0.7 });
+// The chain, drawn as one: a thin dark core from the hook through every link's centre to the top of
+// the ball, so it stays whole whatever the links' joints give (the capsule links themselves were
+// drawn apart, with gaps between them, whenever a joint stretched under the swing), threaded with
+// LINKS_PER_SEGMENT oval steel rings per segment, each turned a quarter turn from the last, so it
+// reads as a chain of links and not as a rod.
+const chainMaterial = new MeshStandardMaterial({ color: 0x3a3f46, roughness: 0.6, metalness: 0.5 });
+const LINKS_PER_SEGMENT = 2;
+const ringGeometry = new TorusGeometry(1, 0.3, 6, 12);
+const ringMaterial = new MeshStandardMaterial({ color: 0xb9c0c8, roughness: 0.35, metalness: 0.85 });
+const chainRings = Array.from({ length: (CHAIN_LINKS + 1) * LINKS_PER_SEGMENT }, () => {
+  const m = new Mesh(ringGeometry, ringMaterial);
+  m.castShadow = true;
+  m.frustumCulled = false;
+  app.scene.add(m);
+  return m;
+});
+const quarterTurn = new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI / 2);
 const chainSegments = Array.from({ length: CHAIN_LINKS + 1 }, () => {
   const m = new Mesh(chainGeometry, chainMaterial);
   m.castShadow = true;
@@ -353,10 +378,21 @@ function placeSegment(i: number): void {
   chainDir.subVectors(chainTo, chainFrom);
   const length = chainDir.length();
   m.visible = length > 1e-6;
+  for (let j = 0; j < LINKS_PER_SEGMENT; j++) chainRings[i * LINKS_PER_SEGMENT + j]!.visible = m.visible;
   if (!m.visible) return;
   m.position.addVectors(chainFrom, chainTo).multiplyScalar(0.5);
   m.quaternion.setFromUnitVectors(chainUp, chainDir.divideScalar(length));
-  m.scale.set(1.3 * LINK_RADIUS, length, 1.3 * LINK_RADIUS);
+  m.scale.set(0.5 * LINK_RADIUS, length, 0.5 * LINK_RADIUS);
+  // The rings: ovals along the segment (the torus's y axis along it), long enough to overlap the next.
+  const pitch = length / LINKS_PER_SEGMENT;
+  for (let j = 0; j < LINKS_PER_SEGMENT; j++) {
+    const r = chainRings[i * LINKS_PER_SEGMENT + j]!;
+    r.visible = true;
+    r.position.copy(chainFrom).addScaledVector(chainDir, (j + 0.5) * pitch);
+    r.quaternion.copy(m.quaternion);
+    if ((i * LINKS_PER_SEGMENT + j) % 2 === 1) r.quaternion.multiply(quarterTurn);
+    r.scale.set(1.6 * LINK_RADIUS, 0.62 * pitch, 1.6 * LINK_RADIUS);
+  }
 }
 /** Draws the chain: hook, link centres, the ball's top (toward the last link). */
 function drawChain(hook: ArrayLike<number>): void {
@@ -475,14 +511,14 @@ let pressId = -1;
 function pressAt(ndcX: number, ndcY: number): 'ball' | 'swing' | 'hook' | 'none' {
   const hit = renderer.pick(ndcX, ndcY, app.camera);
   if (hit && hit.eid === handles.ball) {
+    if (outOfSwings()) return 'none';
     drag.grab(ndcX, ndcY, app.camera);
-    return drag.body === handles.ball ? 'ball' : 'none';
+    if (drag.body !== handles.ball) return 'none';
+    swingsUsed++;
+    return 'ball';
   }
   const target = hit && handles.pieces.some((p) => p.body === hit.eid) ? hit.eid : nearPiece(ndcX, ndcY);
-  if (target !== 0) {
-    swingAt(target);
-    return 'swing';
-  }
+  if (target !== 0) return swingAt(target) ? 'swing' : 'none';
   raycaster.setFromCamera(new Vector2(ndcX, ndcY), app.camera);
   if (raycaster.ray.intersectPlane(ground, groundHit) === null) return 'none';
   handles.controls.moves = [];
@@ -532,14 +568,24 @@ function light(piece: number): void {
   lit = piece;
   if (piece !== 0) renderer.setColor(piece, 0xffe08a);
 }
-/** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime. */
-function swingAt(piece: number): void {
+/** Whether the level's swings are all used and it is not cleared (a swing is refused). */
+function outOfSwings(): boolean {
+  return !cleared && swingsUsed >= SWING_BUDGET;
+}
+/** Swings the ball at piece `piece`: the crane's moves, the marks on it, a chime; false (and a low tone) when out of swings. */
+function swingAt(piece: number): boolean {
+  if (outOfSwings()) {
+    sound.chime(220, 0.2);
+    return false;
+  }
+  swingsUsed++;
   aimAt(shell.world, handles, piece);
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
   swing.result = '';
   sound.chime(660, 0.15);
+  return true;
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -745,11 +791,13 @@ function frame(): void {
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
       f = fallenCount(handles.pieces);
+    const stars = swingStars(swingsUsed, cleared);
+    const left = SWING_BUDGET - swingsUsed;
     status.textContent = cleared
-      ? `Level ${handles.level} cleared! +500 · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
-      : `Level ${handles.level} · score ${banked + levelScore} · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
+      ? `Level ${handles.level} cleared in ${swingsUsed} ${swingsUsed === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
+      : `Level ${handles.level} · swings left ${left}/${SWING_BUDGET} (★★★ in 2) · down ${f}/${n} (clear at ${clearTarget(handles.pieces)})${swingPhase()}${
           swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
-        }`;
+        }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     drawPlan();
     readout.textContent = `step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`;
@@ -781,7 +829,7 @@ shell.expose({
     const low = end.position.clone().add(tip);
     renderer.drawnPosition(handles.ball, ballAt);
     const gap = Math.abs(Math.hypot(low.x - ballAt[0]!, low.y - ballAt[1]!, low.z - ballAt[2]!) - BALL_RADIUS);
-    return { segments: chainSegments.filter((m) => m.visible).length, gap };
+    return { segments: chainSegments.filter((m) => m.visible).length, rings: chainRings.filter((m) => m.visible).length, gap };
   },
   params,
   panel,
@@ -790,6 +838,8 @@ shell.expose({
   handles: (): WreckingBallHandles => handles,
   /** Total score (levels cleared plus this one). */
   score: (): number => banked + levelScore,
+  /** Swings used on this level, the level's budget and the stars earned (0 until cleared). */
+  swings: () => ({ used: swingsUsed, budget: SWING_BUDGET, stars: swingStars(swingsUsed, cleared) }),
   /** Whether this level is cleared. */
   cleared: (): boolean => cleared,
   /** Smoothed step time, ms. */

@@ -542,3 +542,18 @@ export function fallenCount(pieces: readonly Piece[]): number {
   for (const p of pieces) if (p.fallen) n++;
   return n;
 }
+
+/**
+ * Swings a level allows: taps (or site-plan clicks) on a target and drags of the ball each use one.
+ * Without a limit a level fell to any two taps; with it, where the ball is sent is the skill.
+ */
+export const SWING_BUDGET = 4;
+
+/**
+ * Stars for a level cleared in `swings` swings: 3 for 2 or fewer, 2 for 3, 1 for 4 (SWING_BUDGET);
+ * 0 when it is not cleared.
+ */
+export function swingStars(swings: number, cleared: boolean): number {
+  if (!cleared) return 0;
+  return swings <= 2 ? 3 : swings === 3 ? 2 : 1;
+}

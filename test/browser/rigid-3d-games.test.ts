@@ -53,8 +53,11 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(drawn.boxes).toBe(drawn.pieces); // the pieces (the mast's box is drawn as a lattice of its own)
     // The chain is drawn as one rod from the hook through the links to the ball's surface (the capsule
     // links were drawn apart, with gaps, when their joints gave): 9 segments, ending on the ball within 1 mm.
-    const chain = await g.page.evaluate(() => (window.game as unknown as { chain(): { segments: number; gap: number } }).chain());
+    const chain = await g.page.evaluate(() =>
+      (window.game as unknown as { chain(): { segments: number; rings: number; gap: number } }).chain(),
+    );
     expect(chain.segments).toBe(9);
+    expect(chain.rings).toBe(18); // two links drawn on each segment, so it reads as a chain, not a rod
     expect(chain.gap).toBeLessThan(1e-3);
     expect(drawn.capsules).toBe(0); // the chain's links: drawn as the rod (drawChain), their own meshes hidden
     expect(drawn.spheres).toBe(1); // the ball
@@ -126,6 +129,22 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
     expect(r.pressed).toBe('ball');
     expect(r.moved).toBeGreaterThan(0.5);
+    // Each swing (a tap on a target, a drag of the ball) uses one of the level's 4; the fifth is refused.
+    const budget = await g.page.evaluate(() => {
+      type Swings = WB & { swings(): { used: number; budget: number; stars: number } };
+      const game = window.game as unknown as Swings;
+      const used = game.swings().used;
+      const piece = game.handles().pieces.find((p) => p.kind === 'tower')!.body;
+      const at = game.renderer.drawnPosition(piece)!;
+      const s = game.app.camera.position.clone().set(at[0]!, at[1]!, at[2]!).project(game.app.camera);
+      const presses = [game.pressAt(s.x, s.y), game.pressAt(s.x, s.y), game.pressAt(s.x, s.y)];
+      return { used, presses, after: game.swings() };
+    });
+    expect(budget.used).toBe(2);
+    expect(budget.presses).toEqual(['swing', 'swing', 'none']);
+    expect(budget.after).toEqual({ used: 4, budget: 4, stars: 0 });
+    await g.frames(8);
+    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toContain('swings left 0/4');
     // At 1280 x 800 the left column's foot holds the site plan: no empty gap under the legend (it
     // was 230 px), and nothing pushed out of view.
     await g.page.setViewportSize({ width: 1280, height: 800 });
@@ -142,6 +161,17 @@ describe('3D rigid-body games in headless Chromium', () => {
     expect(column.plan).toBe(true);
     expect(column.gap).toBeLessThan(60);
     expect(column.overflow).toBeLessThanOrEqual(0);
+    // Pausing does not move the layout: the site plan keeps its place and size (the 'paused' line
+    // pushed the column down and shrank it). Paused since the click above; resumed here.
+    const planBox = () =>
+      g.page.evaluate(() => {
+        const b = document.querySelector('[data-hud="site-plan"]')!.getBoundingClientRect();
+        return [b.top, b.height];
+      });
+    const pausedPlan = await planBox();
+    await g.press('p');
+    await g.frames(2);
+    expect(await planBox()).toEqual(pausedPlan);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -13,7 +13,9 @@ import {
   fallenCount,
   HOOK_RANGE,
   SLEW_RATE,
+  SWING_BUDGET,
   scorePieces,
+  swingStars,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
 
@@ -222,5 +224,11 @@ describe('wrecking-ball scene', () => {
       }
       expect(clearedAt, `level ${level}`).toBeGreaterThan(0);
     }
+  });
+
+  it('stars for a cleared level: 3 in 2 swings or fewer, 2 in 3, 1 in 4 (the budget), none uncleared', () => {
+    expect(SWING_BUDGET).toBe(4);
+    expect([1, 2, 3, 4].map((n) => swingStars(n, true))).toEqual([3, 3, 2, 1]);
+    expect(swingStars(2, false)).toBe(0);
   });
 });
