@@ -221,7 +221,7 @@ describe('black hole', () => {
 
   it('loads with the holes, the ship, lives and score on screen and no errors', async () => {
     expect(await page.canvasColors()).toBeGreaterThan(16);
-    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0\s+Holes 2/);
+    expect(await page.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Holes 2/);
     const s = await page.stats();
     expect(s.entities).toBe(3); // the ship (with its exhaust emitter) and two holes
     await page.waitFor(() => (window.game as unknown as BlackHoleGameHandle).pathPoints() > 1, null);
@@ -292,7 +292,7 @@ describe('black hole', () => {
       return gui.controllersRecursive().find((c) => c.property === 'holes')?.$input?.value;
     });
     expect(shown).toBe('1');
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Score 0 \(holes passed\)\s+Best \d+/);
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);

@@ -275,7 +275,9 @@ describe('WorldRenderer in the browser', () => {
           pacer: { drawn: number };
           app: { canvas: HTMLCanvasElement };
         };
-        game.paused = true;
+        // Running, not paused: paused, the page dims the scene under its 'Paused' overlay. The castle
+        // stands at rest, so the post stays where it is drawn.
+        game.paused = false;
         // A post: 0.3 m x 1.2 m, about 10 px wide on a 1280 px page, so its centre is fill, not outline.
         const piece = game.level().pieces.find((p) => p.kind === 'post')!;
         game.renderer.setColor(piece.body, color);
