@@ -127,8 +127,8 @@ const PASS_SHARE = 0.5;
 const campaign = { scores: new Array<number>(LEVEL_COUNT).fill(0), stars: new Array<number>(LEVEL_COUNT).fill(0) };
 const starsOf = (share: number): number => (share >= 0.95 ? 3 : share >= 0.75 ? 2 : share >= PASS_SHARE ? 1 : 0);
 const total = (): number => campaign.scores.reduce((a, b) => a + b, 0);
-/** What earns the stars, shown on the level's start hint and its end card. */
-const STAR_RULE = '★ half the pieces down   ★★ 75 %   ★★★ 95 %';
+/** What earns the stars, shown on the level's start hint and its end card (no-break spaces inside each entry: a narrow screen wraps between entries). */
+const STAR_RULE = ['★ half the pieces down', '★★ 75 %', '★★★ 95 %'].map((e) => e.replaceAll(' ', '\u00a0')).join('   ');
 
 /** The next level after a clear, the same one again after a miss, level 1 (a new campaign) after the end. */
 function nextLevel(): void {

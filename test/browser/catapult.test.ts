@@ -182,7 +182,7 @@ describe('catapult', () => {
       w.reset();
       w.paused = false;
     });
-    await g.waitFor(() => (window.game as unknown as { bannerText(): string }).bannerText().includes('★★★ 95 %'), null);
+    await g.waitFor(() => (window.game as unknown as { bannerText(): string }).bannerText().includes('★★★\u00a095\u00a0%'), null);
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.paused = true;
@@ -205,7 +205,7 @@ describe('catapult', () => {
     expect(end.shown).toBe(end.recorded);
     expect(end.total).toBe(end.recorded);
     expect(end.banner).toContain(`Score ${end.shown}`);
-    expect(end.banner).toContain('★★★ 95 %');
+    expect(end.banner).toMatch(/★★★\s95\s%/);
     expect(await g.page.locator('[data-readout="2"]').textContent()).toBe(String(end.shown));
     // R: the level again, and Total back to its value at the level's start (0).
     await g.page.keyboard.press('r');
