@@ -587,7 +587,10 @@ function draw(): void {
     const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k + 6,
       hx0 = sx(hxw),
       hy0 = sy(hyw);
-    if (Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2) {
+    const onHull = () => Math.abs(pointer.x - hx0) < hr + pointer.width / 2 + 7 && Math.abs(pointer.y - hy0) < hr + pointer.height / 2 + 2;
+    // Under the beacon first (the label stays with it), else above or below the hull.
+    if (onHull() && aim.onScreen) pointer.y = by + 2.4 * k + 16;
+    if (onHull()) {
       const above = hy0 - hr - pointer.height / 2 - 4,
         below = hy0 + hr + pointer.height / 2 + 4;
       pointer.y = (pointer.y < hy0 && above > pointer.height) || below > H - pointer.height ? above : below;
