@@ -680,7 +680,8 @@ function drawPlan(): void {
   const cx = PLAN_PX / 2;
   const X = (x: number): string => (cx + x * planScale).toFixed(1),
     Z = (z: number): string => (cx + z * planScale).toFixed(1);
-  const out: string[] = [`<svg width="100%" height="100%" viewBox="0 0 ${PLAN_PX} ${PLAN_PX}" aria-hidden="true">`];
+  // A block SVG: an inline one sits on a text line whose descent overflowed the plan by a few pixels.
+  const out: string[] = [`<svg width="100%" height="100%" viewBox="0 0 ${PLAN_PX} ${PLAN_PX}" style="display: block" aria-hidden="true">`];
   for (const r of RADIUS_RANGE)
     out.push(`<circle cx="${cx}" cy="${cx}" r="${r * planScale}" fill="none" stroke="rgba(255,255,255,0.25)" stroke-dasharray="4 4"/>`);
   const P = shell.world.components.Position;
