@@ -1,5 +1,6 @@
 /**
- * contactEvents(world): one function for the contact events of 2D and 3D worlds. A box dropped from
+ * contactEvents(world): one function for the contact events of 2D and 3D worlds, of shapes and of
+ * balls (ball bodies against each other, segments and the boundary box) alike. A box dropped from
  * rest onto a static ground must give one begin (and hit) event naming its body and the ground's, with
  * the normal pointing up and an impulse equal to the momentum the contact took from the box in that
  * step (momentum balance: J = m (v_after - v_before) + m g dt, velocities read from the body); lifting
@@ -14,11 +15,13 @@ import { describe, expect, it } from 'vitest';
 import {
   addBody,
   addBox,
+  addSegment,
   addShape3D,
   contactEvents,
   contactEvents3D,
   createPhysicsWorld,
   type PhysicsWorld,
+  setBoundary,
   setPosition,
   setVelocity,
   slotOf,
@@ -179,5 +182,100 @@ describe('contactEvents in 3D', () => {
     const { end } = contactEvents(world);
     expect(end.count).toBe(1);
     expect([end.bodyA[0], end.bodyB[0]].sort()).toEqual([box, ground].sort());
+  });
+});
+
+/**
+ * Two equal balls meet head-on at 2 m/s each with restitution 1 and no gravity: the impact stage
+ * bounces them exactly (an elastic exchange), so the one begin event's approach speed is 4 m/s and
+ * its impulse the momentum one ball lost, m (v_before - v_after) = 4 m, both to rounding
+ * (BALANCE_TOLERANCE); they part within a few steps, which gives one end event.
+ */
+function headOn(dimensions: 2 | 3): void {
+  const world = createPhysicsWorld({ dimensions, capacity: 16, gravity: [0, 0, 0].slice(0, dimensions) });
+  const along = dimensions === 3 ? 2 : 0; // the line of centres: z in 3D, x in 2D
+  const at = (u: number): number[] => [0, 0, 0].map((_, k) => (k === along ? u : 0)).slice(0, dimensions);
+  const a = addBody(world, { position: at(-1), velocity: at(2), radius: 0.25, mass: 1.5, restitution: 1 });
+  const b = addBody(world, { position: at(1), velocity: at(-2), radius: 0.25, mass: 1.5, restitution: 1 });
+  const V = [world.components.Velocity.x, world.components.Velocity.y, world.components.Velocity.z][along]!;
+  let begins = 0,
+    ends = 0,
+    hits = 0;
+  for (let i = 0; i < 60; i++) {
+    const before = V[slotOf(a)]!;
+    step(world);
+    const { begin, end, hit } = contactEvents(world);
+    hits += hit.count;
+    ends += end.count;
+    if (end.count > 0) expect([end.shapeA[0], end.shapeB[0]].sort()).toEqual([a, b].sort());
+    if (begin.count === 0) continue;
+    begins += begin.count;
+    // A ball is its own shape and body; the lower slot is A, the normal points from A to B.
+    expect([begin.shapeA[0], begin.shapeB[0]]).toEqual([a, b]);
+    expect([begin.bodyA[0], begin.bodyB[0]]).toEqual([a, b]);
+    const n = [begin.nx[0]!, begin.ny[0]!, begin.nz[0]!];
+    expect(n[along]).toBeCloseTo(1, 12);
+    expect(Math.hypot(...n)).toBeCloseTo(1, 12);
+    expect(begin.approachSpeed[0]).toBeCloseTo(4, 9);
+    const lost = 1.5 * (before - V[slotOf(a)]!);
+    expect(Math.abs(begin.impulse[0]! - lost) / lost).toBeLessThan(BALANCE_TOLERANCE);
+    expect(begin.impulse[0]).toBeCloseTo(6, 9);
+    // The point lies between the centres, on the line of centres.
+    const p = [begin.px[0]!, begin.py[0]!, begin.pz[0]!];
+    expect(Math.abs(p[along]!)).toBeLessThan(0.25);
+  }
+  expect(begins).toBe(1);
+  expect(hits).toBe(1);
+  expect(ends).toBe(1);
+}
+
+describe('contactEvents of balls', () => {
+  it('two balls meeting head-on in 2D give one begin (a hit) with the elastic impulse, then one end', () => headOn(2));
+
+  it('two spheres meeting head-on in 3D give one begin (a hit) with the elastic impulse, then one end', () => headOn(3));
+
+  it('a ball dropped on a segment begins once, naming the segment and the static world, and rests without more events', () => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 16, gravity: [0, -G] });
+    const floor = addSegment(world, { a: [-5, 0], b: [5, 0] });
+    const ball = addBody(world, { position: [0, 2], radius: 0.25 });
+    const vy = world.components.Velocity.y;
+    let before = 0;
+    for (let i = 0; i < 120 && contactEvents(world).begin.count === 0; i++) {
+      before = -vy[slotOf(ball)]!;
+      step(world);
+    }
+    const { begin, hit } = contactEvents(world);
+    expect(begin.count).toBe(1);
+    expect([begin.shapeA[0], begin.bodyA[0], begin.shapeB[0], begin.bodyB[0]]).toEqual([floor, 0, ball, ball]);
+    expect(begin.ny[0]).toBeCloseTo(1, 9);
+    // Fell 1.75 m: sqrt(2 g h) = 5.86 m/s; the approach speed is the speed at impact, at least the
+    // step's start speed and at most what the rest of the step's fall adds (g dt = 0.16 m/s).
+    expect(begin.approachSpeed[0]).toBeGreaterThanOrEqual(before - 1e-9);
+    expect(begin.approachSpeed[0]).toBeLessThan(before + G * world.dt + 1e-9);
+    expect(hit.count).toBe(1);
+    // Resting (before it falls asleep, 0.5 s on): no new begin or end events.
+    for (let i = 0; i < 20; i++) {
+      step(world);
+      expect(contactEvents(world).begin.count).toBe(0);
+      expect(contactEvents(world).end.count).toBe(0);
+    }
+  });
+
+  it("a ball landing on the boundary box's floor names the face as shape -1 - face and the static world as body", () => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 16, gravity: [0, -G] });
+    setBoundary(world, { min: [-2, 0], max: [2, 4] });
+    const ball = addBody(world, { position: [0, 1], radius: 0.25 });
+    let found = false;
+    for (let i = 0; i < 120 && !found; i++) {
+      step(world);
+      const { begin } = contactEvents(world);
+      if (begin.count === 0) continue;
+      found = true;
+      expect(begin.count).toBe(1);
+      // Faces 0 -x, 1 +x, 2 -y, 3 +y: the floor is face 2, shape -3.
+      expect([begin.shapeA[0], begin.bodyA[0], begin.shapeB[0]]).toEqual([-3, 0, ball]);
+      expect(begin.ny[0]).toBeCloseTo(1, 9);
+    }
+    expect(found).toBe(true);
   });
 });

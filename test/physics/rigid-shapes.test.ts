@@ -317,7 +317,7 @@ describe('filtering, sensors and events', () => {
     const box = slotOf(addBox(world, { position: [0, 3], halfExtents: [0.25, 0.25] }));
     let begins = 0,
       ends = 0;
-    const ev = world.collision.shapes.events;
+    const ev = world.collision.events;
     for (let i = 0; i < 90; i++) {
       step(world);
       for (let k = 0; k < ev.sensorBegin.count; k++) {
@@ -336,7 +336,7 @@ describe('filtering, sensors and events', () => {
     const world = createPhysicsWorld({ gravity: [0, -G], sleep: false });
     const ground = slotOf(addBox(world, { position: [0, -0.5], halfExtents: [5, 0.5], static: true }));
     const box = slotOf(addBox(world, { position: [0, 2.5], halfExtents: [0.5, 0.5] }));
-    const ev = world.collision.shapes.events;
+    const ev = world.collision.events;
     let begins = 0,
       ends = 0,
       speed = 0;

@@ -99,6 +99,13 @@ export interface ContactBuffer {
   /** Spawn stamps of A (or of the static feature) and B when the contact was made, to validate the warm-start cache. */
   stampA: Uint32Array;
   stampB: Uint32Array;
+  /**
+   * The row of the same contact among the previous step's rows (`cache.rows`), or -1 for a new
+   * contact: found with the warm start when the rows are prepared, read by the contact events.
+   */
+  previous: Int32Array;
+  /** 1 if the contact touched in its step (it carried a normal impulse, or overlapped at the start), else 0: begin and end events. */
+  touching: Uint8Array;
 }
 
 const FLOAT_FIELDS = [
@@ -125,7 +132,7 @@ const FLOAT_FIELDS = [
   't1z',
   'relativeVelocity',
 ] as const;
-const INT_FIELDS = ['a', 'b', 'ia', 'ib', 'feature'] as const;
+const INT_FIELDS = ['a', 'b', 'ia', 'ib', 'feature', 'previous'] as const;
 const UINT_FIELDS = ['stampA', 'stampB'] as const;
 
 /**
@@ -169,6 +176,8 @@ export function createContactBuffer(capacity = 1024): ContactBuffer {
     relativeVelocity: f(),
     stampA: new Uint32Array(capacity),
     stampB: new Uint32Array(capacity),
+    previous: new Int32Array(capacity),
+    touching: new Uint8Array(capacity),
   };
 }
 
@@ -188,6 +197,7 @@ export function growContactBuffer(buf: ContactBuffer, needed: number): void {
   };
   buf.kind = grow(buf.kind, (n) => new Uint8Array(n));
   buf.rigidPartner = grow(buf.rigidPartner, (n) => new Uint8Array(n));
+  buf.touching = grow(buf.touching, (n) => new Uint8Array(n));
   for (const f of FLOAT_FIELDS) rec[f] = grow(rec[f] as Float64Array, (n) => new Float64Array(n));
   for (const f of INT_FIELDS) rec[f] = grow(rec[f] as Int32Array, (n) => new Int32Array(n));
   for (const f of UINT_FIELDS) rec[f] = grow(rec[f] as Uint32Array, (n) => new Uint32Array(n));

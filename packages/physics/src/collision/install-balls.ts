@@ -6,6 +6,7 @@
  * leaves the ball contacts, the impact stage and the coloured solve out of a game of shapes and joints.
  */
 
+import { ballContactEvents } from '../solver/ball-events.js';
 import {
   approachBallRows,
   ballRestitution,
@@ -44,6 +45,7 @@ export function installBalls(world: PhysicsWorld): void {
       solve: solveBallRows,
       endSubstep: endBallSubstep,
       restitution: ballRestitution,
+      events: ballContactEvents,
       store: storeBallRows,
     });
     // The broadphase and narrowphase write only pairs and contacts (step/finite.ts).

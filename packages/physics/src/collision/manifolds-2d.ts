@@ -206,70 +206,6 @@ export function growManifoldBuffer(buf: ManifoldBuffer, needed: number): void {
 }
 
 /**
- * Contact and sensor events of the last step, read after `step` (no callbacks run inside the solver).
- * Each list holds `count` entries in parallel arrays; entity values are handles (as the API hands out;
- * index stores with `slotOf`), 0 for the static world and -1 - face for a boundary face.
- * - begin: a pair of shapes started touching (a manifold point carried a normal impulse or overlapped),
- *   with the first point (m), the normal from A to B, and the approach speed along it at the start of
- *   the step (m/s, >= 0);
- * - end: a pair that touched at the end of the previous step no longer does (or one was removed);
- * - sensorBegin / sensorEnd: a shape started or stopped overlapping a sensor shape (`shapeA` the sensor).
- * @category Collision
- */
-export interface ContactEvents {
-  /** Pairs that started touching. */
-  begin: EventList;
-  /** Pairs that stopped touching. */
-  end: EventList;
-  /** Shapes that started overlapping a sensor. */
-  sensorBegin: EventList;
-  /** Shapes that stopped overlapping a sensor. */
-  sensorEnd: EventList;
-}
-
-/**
- * One list of events (see ContactEvents). Arrays grow by doubling; read rows 0..count-1.
- * @category Collision
- */
-export interface EventList {
-  /** Events in the list (rows 0..count-1). */
-  count: number;
-  /** Shape A (the sensor, for sensor events). */
-  shapeA: Float64Array;
-  /** Shape B. */
-  shapeB: Float64Array;
-  /** Body of shape A (0: the static world). */
-  bodyA: Float64Array;
-  /** Body of shape B. */
-  bodyB: Float64Array;
-  /** Contact point x, m (`begin` only). */
-  px: Float64Array;
-  /** Contact point y, m (`begin` only). */
-  py: Float64Array;
-  /** Normal from A to B, x (`begin` only). */
-  nx: Float64Array;
-  /** Normal from A to B, y (`begin` only). */
-  ny: Float64Array;
-  /** Approach speed along the normal at the start of the step, m/s, >= 0 (`begin` only). */
-  approachSpeed: Float64Array;
-}
-
-function createEventList(n = 16): EventList {
-  return {
-    count: 0,
-    shapeA: new Float64Array(n),
-    shapeB: new Float64Array(n),
-    bodyA: new Float64Array(n),
-    bodyB: new Float64Array(n),
-    px: new Float64Array(n),
-    py: new Float64Array(n),
-    nx: new Float64Array(n),
-    ny: new Float64Array(n),
-    approachSpeed: new Float64Array(n),
-  };
-}
-
-/**
  * Collider flags (ShapeScratch.flags).
  * @category Collision
  */
@@ -358,8 +294,6 @@ export interface ShapeCollisionState {
   slots: Int32Array;
   /** Sensor overlaps of the last step, as keys shapeA * 2^25 + shapeB. */
   sensorPairs: Set<number>;
-  /** Last step's events. */
-  readonly events: ContactEvents;
   /** Broadphase scratch. */
   readonly scratch: ShapeScratch;
   /** Soft-constraint coefficients of this step's shape contacts between dynamic bodies (bias rate 1/s, mass scale, impulse scale); see solver/manifold-prepare-2d.ts. */
@@ -387,8 +321,6 @@ export interface ShapeCollisionState {
   lastCount: number;
   /** Sensor overlaps found this step (swapped with `sensorPairs`). */
   sensorNow: Set<number>;
-  /** The step whose events the lists hold (events of a step's substeps accumulate). */
-  eventStep: number;
   /** Per entity: stamp of the step in which the body was classified. */
   bodyMarks: Uint32Array;
   /** The step counter of `bodyMarks`. */
@@ -414,7 +346,6 @@ export function createShapeCollisionState(): ShapeCollisionState {
     previous: createManifoldBuffer(),
     slots: new Int32Array(0),
     sensorPairs: new Set(),
-    events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
     scratch: createShapeScratch(),
     softness: new Float64Array(3),
     rigidSoftness: new Float64Array(3),
@@ -427,7 +358,6 @@ export function createShapeCollisionState(): ShapeCollisionState {
     wakeNow: [],
     lastCount: 0,
     sensorNow: new Set(),
-    eventStep: -1,
     bodyMarks: new Uint32Array(0),
     bodyMark: 0,
     bodyW: new Float64Array(0),

@@ -147,78 +147,6 @@ export function growManifold3DBuffer(b: Manifold3DBuffer, rows = 0): Manifold3DB
 }
 
 /**
- * One list of 3D contact events; read rows 0..count-1. Entities are handles (0: the static world).
- * @category Collision
- */
-export interface EventList3D {
-  count: number;
-  /** Shape A (the sensor, for sensor events; a plane or mesh entity for those), shape B, and their bodies. */
-  shapeA: Float64Array;
-  shapeB: Float64Array;
-  bodyA: Float64Array;
-  bodyB: Float64Array;
-  /** A contact point, m, and the normal from A to B (`begin` only). */
-  px: Float64Array;
-  py: Float64Array;
-  pz: Float64Array;
-  nx: Float64Array;
-  ny: Float64Array;
-  nz: Float64Array;
-  /** Approach speed along the normal at the start of the step, m/s, >= 0 (`begin` only). */
-  approachSpeed: Float64Array;
-}
-
-/**
- * The 3D contact events of the last step, as in 2D: `begin` (a pair started touching: a point carried
- * a normal impulse or overlapped), `end` (a pair that touched no longer does, or a shape was removed),
- * `sensorBegin` / `sensorEnd` (a shape started or stopped overlapping a sensor; `shapeA` the sensor).
- * @category Collision
- */
-export interface ContactEvents3D {
-  begin: EventList3D;
-  end: EventList3D;
-  sensorBegin: EventList3D;
-  sensorEnd: EventList3D;
-}
-
-const EVENT_FIELDS = ['shapeA', 'shapeB', 'bodyA', 'bodyB', 'px', 'py', 'pz', 'nx', 'ny', 'nz', 'approachSpeed'] as const;
-
-function createEventList(n = 16): EventList3D {
-  const l = { count: 0 } as Record<string, unknown>;
-  for (const k of EVENT_FIELDS) l[k] = new Float64Array(n);
-  return l as unknown as EventList3D;
-}
-
-/**
- * Appends a row to an event list (growing it) and returns the row.
- * @category Collision
- */
-export function pushEvent3D(list: EventList3D, shapeA: number, shapeB: number, bodyA: number, bodyB: number): number {
-  const i = list.count;
-  if (i >= list.shapeA.length) {
-    const rec = list as unknown as Record<string, Float64Array>;
-    for (const k of EVENT_FIELDS) {
-      const next = new Float64Array(rec[k]!.length * 2);
-      next.set(rec[k]!);
-      rec[k] = next;
-    }
-  }
-  list.shapeA[i] = shapeA;
-  list.shapeB[i] = shapeB;
-  list.bodyA[i] = bodyA;
-  list.bodyB[i] = bodyB;
-  list.px[i] = 0;
-  list.py[i] = 0;
-  list.pz[i] = 0;
-  list.nx[i] = 0;
-  list.ny[i] = 0;
-  list.nz[i] = 0;
-  list.approachSpeed[i] = 0;
-  list.count++;
-  return i;
-}
-
-/**
  * The world's 3D contact state.
  * @category Collision
  */
@@ -229,10 +157,6 @@ export interface Contact3DState {
   previousIndex: RowIndex;
   /** World inverse inertia tensor per solver body index (6 a body: xx, yy, zz, xy, xz, yz), 1 / (kg m^2). */
   invInertia: Float64Array;
-  /** The step whose events the lists hold (they are cleared once a step, not once a substep). */
-  eventStep: number;
-  /** Events of the last step. */
-  events: ContactEvents3D;
   /** Pairs touching at the end of the last step (for begin and end events). */
   touching: TouchList;
   /** The list the next step's touching pairs are written into (swapped with `touching`). */
@@ -405,12 +329,10 @@ export function contact3DStateOf(world: PhysicsWorld, create = false): Contact3D
       previousIndex: createRowIndex(),
       invInertia: new Float64Array(6 * 64),
       rotationBase: new Float64Array(3 * 64),
-      events: { begin: createEventList(), end: createEventList(), sensorBegin: createEventList(), sensorEnd: createEventList() },
       touching: createTouchList(),
       touchingNext: createTouchList(),
       sensing: new Map(),
       sensingNow: new Map(),
-      eventStep: -1,
       solveParity: 0,
       jacobians: new Float32Array(0),
       jacobiansInv: new Float32Array(0),

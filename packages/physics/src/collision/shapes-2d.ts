@@ -43,14 +43,6 @@ export function shapeCollisionSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const st = cs.shapes;
   if (!st.active || world.dimensions !== 2) return;
-  if (st.eventStep !== world.steps) {
-    st.eventStep = world.steps;
-    const ev = st.events;
-    ev.begin.count = 0;
-    ev.end.count = 0;
-    ev.sensorBegin.count = 0;
-    ev.sensorEnd.count = 0;
-  }
   // A sleeping island that a moving or kinematic body reaches wakes and joins this step's solve (so
   // the hit's momentum goes into it); the pairs are then found again with it awake. Woken balls are
   // classified by the ball broadphase, which runs again with them (their ball contacts too).
@@ -457,7 +449,7 @@ function sensorEvents(world: PhysicsWorld, st: ShapeCollisionState): void {
   const S = world.components.Shape,
     sensorNow = st.sensorNow;
   const prev = st.sensorPairs,
-    ev = st.events;
+    ev = world.collision.events;
   for (const key of sensorNow) {
     if (prev.has(key)) continue;
     const a = Math.floor(key / 33554432),

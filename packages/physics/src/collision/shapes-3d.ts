@@ -1,20 +1,12 @@
 import { hasComponent } from 'bitecs';
 import { wakeIsland3D } from '../islands/shapes-3d.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
-import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { pairs } from './broadphase/pairs-3d.js';
 import { ensure, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
-import {
-  type Contact3DState,
-  clearRowIndex,
-  contact3DStateOf,
-  growManifold3DBuffer,
-  insertRow,
-  pushEvent3D,
-  rowKey,
-} from './manifolds-3d.js';
+import { pushEvent } from './events.js';
+import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
 import { BodyType } from './state.js';
 
 /**
@@ -48,14 +40,6 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   const s = shapes3DOf(world);
   if (s === undefined || !s.active) return;
   const st = contact3DStateOf(world, true);
-  if (st.eventStep !== world.steps) {
-    st.eventStep = world.steps;
-    const ev = st.events;
-    ev.begin.count = 0;
-    ev.end.count = 0;
-    ev.sensorBegin.count = 0;
-    ev.sensorEnd.count = 0;
-  }
   // Last step's rows become the warm-start source.
   const prev = st.previous;
   st.previous = st.current;
@@ -91,10 +75,9 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
 
 /** Sensor events: overlaps found this step against those of the last. */
 function sensorEvents(world: PhysicsWorld, st: Contact3DState): void {
-  const ev = st.events,
-    h = (e: number): number => (e === 0 ? 0 : currentHandle(world, e));
-  for (const [k, v] of st.sensingNow) if (!st.sensing.has(k)) pushEvent3D(ev.sensorBegin, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
-  for (const [k, v] of st.sensing) if (!st.sensingNow.has(k)) pushEvent3D(ev.sensorEnd, h(v[0]!), h(v[1]!), h(v[2]!), h(v[3]!));
+  const ev = world.collision.events;
+  for (const [k, v] of st.sensingNow) if (!st.sensing.has(k)) pushEvent(world, ev.sensorBegin, v[0]!, v[1]!, v[2]!, v[3]!);
+  for (const [k, v] of st.sensing) if (!st.sensingNow.has(k)) pushEvent(world, ev.sensorEnd, v[0]!, v[1]!, v[2]!, v[3]!);
   const t = st.sensing;
   st.sensing = st.sensingNow;
   st.sensingNow = t;

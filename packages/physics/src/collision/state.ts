@@ -1,5 +1,6 @@
 import { BS3_STRIDE, BX_STRIDE, IMPACT_STRIDE } from '../solver/body-state-layout.js';
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
+import { type ContactEventLists, createContactEventStore } from './event-lists.js';
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
 
 /**
@@ -237,8 +238,13 @@ export interface CollisionState {
   wakeCount: number;
   /** Sleep: whether resting islands go to sleep, and the per-entity scratch it keeps; see islands/sleep.ts. */
   readonly sleep: SleepState;
-  /** Contacts of 2D shapes (boxes, polygons, capsules, circles): manifolds, warm start, events; see collision/manifolds-2d.ts. */
+  /** Contacts of 2D shapes (boxes, polygons, capsules, circles): manifolds and their warm start; see collision/manifolds-2d.ts. */
   readonly shapes: ShapeCollisionState;
+  /**
+   * The contact and sensor events of the step being run or last run, of every contact in 2D and 3D
+   * (balls, shapes, segments, planes, the boundary box): see collision/events.ts; read with `contactEvents`.
+   */
+  readonly events: ContactEventLists;
   /** Statistics of the last step: candidate pairs, contacts, the deepest overlap left at its end (m), bodies asleep. */
   readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
 }
@@ -375,6 +381,7 @@ export function createCollisionState(
       anyAsleep: false,
     },
     shapes: createShapeCollisionState(),
+    events: createContactEventStore(),
     stats: new CollisionStats(),
   };
   // The ball contacts' buffer and the warm-start cache's rows trade places every step

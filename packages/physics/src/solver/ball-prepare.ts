@@ -108,6 +108,7 @@ function prepare2DStage(world: PhysicsWorld, buf: ContactBuffer, stick: number):
   A[PREPARE.PREV_TANGENT_IMPULSE_1] = prev.tangentImpulse1;
   A[PREPARE.PREV_TANGENT_IMPULSE_2] = prev.tangentImpulse2;
   A[PREPARE.SLOTS] = cache.slots;
+  A[PREPARE.PREVIOUS] = buf.previous;
   const P = S.params;
   P[PREPARE.STICK_SPEED] = stick;
   P[PREPARE.BOX_RESTITUTION] = box.restitution;
@@ -172,7 +173,8 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
     L2 = buf.tangentImpulse2,
     MAXN = buf.maxNormalImpulse;
   const SA = buf.stampA,
-    SB = buf.stampB;
+    SB = buf.stampB,
+    PREV = buf.previous;
   const pN = prev.normalImpulse,
     p1 = prev.tangentImpulse1,
     p2 = prev.tangentImpulse2;
@@ -277,6 +279,7 @@ export function prepareContacts(world: PhysicsWorld, buf: ContactBuffer, stick: 
     let j = next;
     if (j < prevCount && pK[j] === kind && pA[j] === a && pB[j] === b && pF[j] === f) j = pSA[j] === sA && pSB[j] === sB ? j : -1;
     else j = findWarmStart(cache, kind, a, b, f, sA, sB);
+    PREV[i] = j;
     if (j >= 0) {
       next = j + 1;
       LN[i] = pN[j]!;

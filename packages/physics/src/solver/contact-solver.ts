@@ -132,7 +132,10 @@ function solveContacts(world: PhysicsWorld): void {
     !manifolds3DToSolve(world) &&
     !joints3DToSolve(world)
   ) {
-    if (balls !== null) cs.contacts = balls.store(world, buf, false);
+    if (balls !== null) {
+      balls.events(world, buf, false);
+      cs.contacts = balls.store(world, buf, false);
+    }
     finishManifolds(world);
     if (world.dimensions === 3) finishManifolds3D(world);
     return;
@@ -190,8 +193,11 @@ function solveContacts(world: PhysicsWorld): void {
   if (world.dimensions === 3) finishManifolds3D(world);
   finishJoints(world, hs);
   finishJoints3D(world, hs);
-  // A threaded 2D world builds the warm-start table on a worker while the step finishes (solver/stages-threads.ts).
-  if (balls !== null) cs.contacts = balls.store(world, buf, true);
+  if (balls !== null) {
+    balls.events(world, buf, true);
+    // A threaded 2D world builds the warm-start table on a worker while the step finishes (solver/stages-threads.ts).
+    cs.contacts = balls.store(world, buf, true);
+  }
 }
 
 /**

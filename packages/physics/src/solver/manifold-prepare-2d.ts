@@ -268,14 +268,7 @@ export function finishManifolds(world: PhysicsWorld): void {
   if (!st.active) return;
   const buf = st.manifolds,
     prev = st.previous,
-    ev = st.events;
-  if (st.eventStep !== world.steps) {
-    st.eventStep = world.steps;
-    ev.begin.count = 0;
-    ev.end.count = 0;
-    ev.sensorBegin.count = 0;
-    ev.sensorEnd.count = 0;
-  }
+    ev = world.collision.events;
   for (let i = 0, n = buf.count; i < n; i++) {
     let touching = 0;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
@@ -291,9 +284,14 @@ export function finishManifolds(world: PhysicsWorld): void {
     ev.begin.py[k] = buf.py[2 * i]!;
     ev.begin.nx[k] = buf.nx[i]!;
     ev.begin.ny[k] = buf.ny[i]!;
-    let approach = 0;
-    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
+    let approach = 0,
+      impulse = 0;
+    for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
+      approach = Math.max(approach, -buf.relativeVelocity[2 * i + p]!);
+      impulse += buf.totalNormalImpulse[2 * i + p]!;
+    }
     ev.begin.approachSpeed[k] = approach;
+    ev.begin.impulse[k] = impulse;
   }
   rotateManifolds(st);
   // End events: pairs that touched last step and do not now (`previous` is now this step's rows).

@@ -1,6 +1,6 @@
-import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushEvent3D, pushTouch } from '../collision/manifolds-3d.js';
+import { pushEvent } from '../collision/events.js';
+import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushTouch } from '../collision/manifolds-3d.js';
 import { BodyType } from '../collision/state.js';
-import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 /**
  * The 3D shape contacts' rows of the contact solver (solver/contact-solver.ts calls these next to the ball contacts',
@@ -93,19 +93,11 @@ export function gatherManifold3DBodies(world: PhysicsWorld, count: number): numb
 export function finishManifolds3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world);
   if (st === undefined) return;
-  if (st.eventStep !== world.steps) {
-    st.eventStep = world.steps;
-    const ev = st.events;
-    ev.begin.count = 0;
-    ev.end.count = 0;
-    ev.sensorBegin.count = 0;
-    ev.sensorEnd.count = 0;
-  }
   const buf = st.current,
     key = world.capacity + 1,
     prev = st.touching,
     now = st.touchingNext;
-  const h = (e: number): number => (e === 0 ? 0 : currentHandle(world, e));
+  const events = world.collision.events;
   now.count = 0;
   clearRowIndex(now.index, buf.count);
   for (let i = 0; i < buf.count; i++) {
@@ -122,8 +114,8 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     if (lookupRow(now.index, k) >= 0) continue;
     insertRow(now.index, k, pushTouch(now, k, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!));
     if (lookupRow(prev.index, k) >= 0) continue;
-    const ev = st.events.begin;
-    const r = pushEvent3D(ev, h(buf.shapeA[i]!), h(buf.shapeB[i]!), h(buf.bodyA[i]!), h(buf.bodyB[i]!));
+    const ev = events.begin;
+    const r = pushEvent(world, ev, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
     const c = world.components,
       b = buf.bodyB[i]!;
     ev.px[r] = c.PreviousPosition.x[b]! + buf.rbx[touch]!;
@@ -133,19 +125,14 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     ev.ny[r] = buf.ny[i]!;
     ev.nz[r] = buf.nz[i]!;
     ev.approachSpeed[r] = Math.max(0, -buf.vn0[touch]!);
+    let impulse = 0;
+    for (let k = 0, m = buf.points[i]!; k < m; k++) impulse += buf.ln[4 * i + k]!;
+    ev.impulse[r] = impulse;
   }
   for (let i = 0; i < prev.count; i++) {
     if (lookupRow(now.index, prev.keys[i]!) >= 0) continue;
-    pushEvent3D(st.events.end, h(prev.shapeA[i]!), h(prev.shapeB[i]!), h(prev.bodyA[i]!), h(prev.bodyB[i]!));
+    pushEvent(world, events.end, prev.shapeA[i]!, prev.shapeB[i]!, prev.bodyA[i]!, prev.bodyB[i]!);
   }
   st.touching = now;
   st.touchingNext = prev;
-}
-
-/**
- * The 3D contact and sensor events of the last step (empty lists in a world without 3D shapes). Read rows 0..count-1 of each list; entities are handles.
- * @category Collision
- */
-export function contactEvents3D(world: PhysicsWorld): import('../collision/manifolds-3d.js').ContactEvents3D {
-  return contact3DStateOf(world, true).events;
 }

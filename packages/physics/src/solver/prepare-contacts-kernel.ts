@@ -60,7 +60,8 @@ export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32
   const pN = A[PREPARE.PREV_NORMAL_IMPULSE] as Float64Array,
     p1 = A[PREPARE.PREV_TANGENT_IMPULSE_1] as Float64Array,
     p2 = A[PREPARE.PREV_TANGENT_IMPULSE_2] as Float64Array,
-    slots = A[PREPARE.SLOTS] as Int32Array;
+    slots = A[PREPARE.SLOTS] as Int32Array,
+    PREV = A[PREPARE.PREVIOUS] as Int32Array;
   const stick = P[PREPARE.STICK_SPEED]!,
     boxE = P[PREPARE.BOX_RESTITUTION]!,
     boxF = P[PREPARE.BOX_FRICTION]!,
@@ -148,6 +149,7 @@ export function prepareContacts2D(A: KernelArray[], P: Float64Array, _ids: Int32
         s = (s + 1) & mask;
       }
     }
+    PREV[i] = j;
     if (j >= 0) {
       next = j + 1;
       LN[i] = pN[j]!;

@@ -20,6 +20,7 @@ export interface BallRows {
   solve(world: PhysicsWorld, buf: ContactBuffer, useBias: boolean): void;
   endSubstep(buf: ContactBuffer): void;
   restitution(world: PhysicsWorld, buf: ContactBuffer): void;
+  events(world: PhysicsWorld, buf: ContactBuffer, prepared: boolean): void;
   store(world: PhysicsWorld, buf: ContactBuffer, onThreads: boolean): ContactBuffer;
 }
 

@@ -1,3 +1,4 @@
+import { clearContactEvents } from '../collision/event-lists.js';
 import { armFusedForces } from '../integrators/fused-gate.js';
 import { assertOptions, describe } from '../validation/validate.js';
 import type { PhysicsWorld, System } from '../world/options.js';
@@ -71,6 +72,7 @@ export function step(world: PhysicsWorld): void {
   }
   const timings = world.timings;
   for (const s of STAGES) timings[s] = 0;
+  clearContactEvents(world.collision.events);
   try {
     runStages(world);
   } finally {

@@ -93,6 +93,8 @@ export const PREV_TANGENT_IMPULSE_1 = 40;
 export const PREV_TANGENT_IMPULSE_2 = 41;
 /** The warm-start hash slots (Int32, row + 1; collision/contacts.ts). */
 export const SLOTS = 42;
+/** Each row's row among last step's rows, -1 for a new contact (Int32, written). */
+export const PREVIOUS = 43;
 // P: the numbers.
 /** Below this tangential speed a row sticks (static friction), m/s. */
 export const STICK_SPEED = 0;

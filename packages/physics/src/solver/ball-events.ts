@@ -1,0 +1,76 @@
+/**
+ * The contact events of the ball rows (ball-ball, ball-boundary, ball-segment, ball-static-ball,
+ * ball-plane), written to the world's one event store (collision/events.ts) next to the shapes' own,
+ * at the end of the contact solver: a row touches if it carried a normal impulse in the step or
+ * overlapped at its start (as a shape manifold does); a touching row whose contact did not touch in the
+ * previous step is a begin event, a previous step's touching row that no row continues is an end event.
+ * The previous row of each contact is the one its warm start found (`ContactBuffer.previous`, set when
+ * the rows are prepared), so no pair is looked up again.
+ */
+
+import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
+import { pushEvent } from '../collision/events.js';
+import type { PhysicsWorld } from '../world/options.js';
+
+/** Per row of the previous step: 1 once a touching row of this step continues it. Scratch, not world state. */
+let continued = new Uint8Array(256);
+
+/**
+ * Marks this step's ball rows touching or not and writes their begin and end events. `prepared` is
+ * false when the solver skipped the rows' preparation (a step without rows): then no row of `buf` is
+ * read and every previous touching row ends.
+ * @category Collision
+ */
+export function ballContactEvents(world: PhysicsWorld, buf: ContactBuffer, prepared: boolean): void {
+  const cs = world.collision,
+    prev = cs.cache.rows,
+    events = cs.events;
+  const m = prev.count,
+    n = prepared ? buf.count : 0;
+  if (continued.length < m) continued = new Uint8Array(Math.max(m, 2 * continued.length));
+  const done = continued;
+  done.fill(0, 0, m);
+  const IMP = buf.impulse,
+    S0 = buf.separation,
+    PREV = buf.previous,
+    T = buf.touching,
+    pT = prev.touching;
+  const P = world.components.PreviousPosition;
+  for (let i = 0; i < n; i++) {
+    const touching = IMP[i]! > 0 || S0[i]! < 0 ? 1 : 0;
+    T[i] = touching;
+    if (touching === 0) continue;
+    const j = PREV[i]!;
+    if (j >= 0) {
+      done[j] = 1;
+      if (pT[j] === 1) continue;
+    }
+    const k = pushRow(world, events.begin, buf, i);
+    const b = buf.b[i]!,
+      rb = buf.rb[i]!;
+    const nx = buf.nx[i]!,
+      ny = buf.ny[i]!,
+      nz = buf.nz[i]!;
+    const list = events.begin;
+    list.px[k] = P.x[b]! - rb * nx;
+    list.py[k] = P.y[b]! - rb * ny;
+    list.pz[k] = world.dimensions === 3 ? P.z[b]! - rb * nz : 0;
+    list.nx[k] = nx;
+    list.ny[k] = ny;
+    list.nz[k] = world.dimensions === 3 ? nz : 0;
+    list.approachSpeed[k] = Math.max(0, -buf.impactVelocity[i]!);
+    list.impulse[k] = IMP[i]!;
+  }
+  for (let j = 0; j < m; j++) if (pT[j] === 1 && done[j] === 0) pushRow(world, events.end, prev, j);
+}
+
+/** Pushes an event naming the shapes and bodies of row `i` of `rows` (see ContactKind); returns its row. */
+function pushRow(world: PhysicsWorld, list: Parameters<typeof pushEvent>[1], rows: ContactBuffer, i: number): number {
+  const kind = rows.kind[i]!,
+    b = rows.b[i]!,
+    f = rows.feature[i]!;
+  if (kind === ContactKind.Ball) return pushEvent(world, list, rows.a[i]!, b, rows.a[i]!, b);
+  if (kind === ContactKind.Boundary) return pushEvent(world, list, -1 - f, b, 0, b);
+  // A static ball is a body of its own; a segment and a plane belong to the static world.
+  return pushEvent(world, list, f, b, kind === ContactKind.StaticBall ? f : 0, b);
+}
