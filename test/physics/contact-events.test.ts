@@ -20,7 +20,9 @@ import {
   contactEvents,
   contactEvents3D,
   createPhysicsWorld,
+  isSleeping,
   type PhysicsWorld,
+  removeBody,
   setBoundary,
   setPosition,
   setVelocity,
@@ -253,8 +255,8 @@ describe('contactEvents of balls', () => {
     expect(begin.approachSpeed[0]).toBeGreaterThanOrEqual(before - 1e-9);
     expect(begin.approachSpeed[0]).toBeLessThan(before + G * world.dt + 1e-9);
     expect(hit.count).toBe(1);
-    // Resting (before it falls asleep, 0.5 s on): no new begin or end events.
-    for (let i = 0; i < 20; i++) {
+    // Resting, then asleep (0.5 s on): no new begin or end events.
+    for (let i = 0; i < 120; i++) {
       step(world);
       expect(contactEvents(world).begin.count).toBe(0);
       expect(contactEvents(world).end.count).toBe(0);
@@ -277,5 +279,78 @@ describe('contactEvents of balls', () => {
       expect(begin.ny[0]).toBeCloseTo(1, 9);
     }
     expect(found).toBe(true);
+  });
+});
+
+/**
+ * Contacts keep touching while their bodies sleep (Box2D v3's rule): falling asleep on the ground gives
+ * no end event and waking up again no begin event; a pair that parts after the wake ends once, and
+ * removing a sleeping body ends its contacts, with its old handle.
+ */
+describe('contact events across sleep', () => {
+  function settle(world: PhysicsWorld, body: number): { begins: number; ends: number } {
+    let begins = 0,
+      ends = 0;
+    for (let i = 0; i < 150; i++) {
+      step(world);
+      begins += contactEvents(world).begin.count;
+      ends += contactEvents(world).end.count;
+    }
+    expect(isSleeping(world, body)).toBe(true);
+    return { begins, ends };
+  }
+
+  for (const dimensions of [2, 3] as const) {
+    it(`${dimensions}D: a box falls asleep on the ground and is hit awake without ending or beginning its ground contact; lifted off, it ends once`, () => {
+      const g = dimensions === 2 ? [0, -G] : [0, -G, 0];
+      const world = createPhysicsWorld({ dimensions, capacity: 16, gravity: g });
+      const at = (x: number, y: number): number[] => (dimensions === 2 ? [x, y] : [x, y, 0]);
+      const box = (y: number): number => {
+        if (dimensions === 2) return addBox(world, { position: at(0, y), halfExtents: [0.5, 0.5] });
+        const b = addBody(world, { position: at(0, y) });
+        addShape3D(world, b, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+        return b;
+      };
+      let ground: number;
+      if (dimensions === 2) ground = addBox(world, { position: [0, -0.5], halfExtents: [5, 0.5], static: true });
+      else {
+        ground = addBody(world, { position: [0, -0.5, 0], static: true });
+        addShape3D(world, ground, { type: 'box', halfExtents: [5, 0.5, 5] });
+      }
+      const lower = box(0.5);
+      expect(settle(world, lower)).toEqual({ begins: 1, ends: 0 });
+      // A second box dropped on it wakes it: the only new pair is the two boxes.
+      const upper = box(2.5);
+      const pairs: number[][] = [];
+      let ends = 0;
+      for (let i = 0; i < 60; i++) {
+        step(world);
+        const { begin, end } = contactEvents(world);
+        for (let k = 0; k < begin.count; k++) pairs.push([begin.bodyA[k]!, begin.bodyB[k]!].sort());
+        ends += end.count;
+      }
+      expect(pairs).toEqual([[lower, upper].sort()]);
+      expect(ends).toBe(0);
+      // Lifted off the ground (a move wakes nothing by itself; the step sees the gap): one end event.
+      setPosition(world, lower, at(3, 4));
+      setVelocity(world, lower, at(0, 0));
+      step(world);
+      const { end } = contactEvents(world);
+      const ended = Array.from({ length: end.count }, (_, k) => [end.bodyA[k]!, end.bodyB[k]!].sort());
+      expect(ended).toContainEqual([ground, lower].sort());
+      expect(ended.filter((p) => p.includes(ground))).toHaveLength(1);
+    });
+  }
+
+  it('a sleeping ball removed from a segment ends its contact, naming its old handle', () => {
+    const world = createPhysicsWorld({ dimensions: 2, capacity: 16, gravity: [0, -G] });
+    const floor = addSegment(world, { a: [-5, 0], b: [5, 0] });
+    const ball = addBody(world, { position: [0, 1], radius: 0.25 });
+    expect(settle(world, ball)).toEqual({ begins: 1, ends: 0 });
+    removeBody(world, ball);
+    step(world);
+    const { end } = contactEvents(world);
+    expect(end.count).toBe(1);
+    expect([end.shapeA[0], end.bodyA[0], end.shapeB[0], end.bodyB[0]]).toEqual([floor, 0, ball, ball]);
   });
 });

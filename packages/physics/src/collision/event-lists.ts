@@ -126,3 +126,33 @@ export function reserveEvent(list: ContactEventList): void {
     rec[k] = next;
   }
 }
+
+/**
+ * Contacts kept touching while their bodies sleep (Box2D v3's rule: a contact does not end when its
+ * island falls asleep, nor begin again when it wakes): a touching pair whose rows vanish because every
+ * moving body of it fell asleep is kept here instead of ending, and a pair found touching again after
+ * the wake resumes without a begin event. `world.collision.sleepingContacts`.
+ * @category Events
+ */
+export interface SleepingContacts {
+  /** Pair key (`sleepingPairKey`) -> the pair's shape A, shape B, body A and body B as handles (0: the static world). */
+  readonly pairs: Map<number, number[]>;
+  /** `sleep.wakes` when the pairs were last checked for bodies that woke (collision/events.ts endWokenContacts). */
+  checkedWakes: number;
+}
+
+/**
+ * An empty set of resting contacts (createCollisionState makes the world's).
+ * @category Events
+ */
+export function createSleepingContacts(): SleepingContacts {
+  return { pairs: new Map(), checkedWakes: 0 };
+}
+
+/**
+ * Key of a pair of shape slots: shape A may be a boundary face's id (-6 to -1), shape B is an entity.
+ * @category Events
+ */
+export function sleepingPairKey(shapeA: number, shapeB: number): number {
+  return (shapeA + 8) * 67_108_864 + shapeB;
+}

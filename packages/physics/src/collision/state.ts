@@ -1,6 +1,6 @@
 import { BS3_STRIDE, BX_STRIDE, IMPACT_STRIDE } from '../solver/body-state-layout.js';
 import { type ContactBuffer, createContactBuffer, createWarmStartCache, type WarmStartCache } from './contacts.js';
-import { type ContactEventLists, createContactEventStore } from './event-lists.js';
+import { type ContactEventLists, createContactEventStore, createSleepingContacts, type SleepingContacts } from './event-lists.js';
 import { createShapeCollisionState, type ShapeCollisionState } from './manifolds-2d.js';
 
 /**
@@ -152,6 +152,8 @@ export interface SleepState {
   readonly lastGravity: Float64Array;
   /** Whether any body may be asleep (skips the wake checks when false). */
   anyAsleep: boolean;
+  /** Counts the bodies woken (their Sleeping tag removed) since the world was made: the contact events of sleeping pairs check it. */
+  wakes: number;
 }
 
 /**
@@ -245,6 +247,8 @@ export interface CollisionState {
    * (balls, shapes, segments, planes, the boundary box): see collision/events.ts; read with `contactEvents`.
    */
   readonly events: ContactEventLists;
+  /** Touching contacts of sleeping bodies, kept across their sleep so it gives no end and begin events (collision/event-lists.ts). */
+  readonly sleepingContacts: SleepingContacts;
   /** Statistics of the last step: candidate pairs, contacts, the deepest overlap left at its end (m), bodies asleep. */
   readonly stats: { pairs: number; contacts: number; maxOverlap: number; sleeping: number };
 }
@@ -379,9 +383,11 @@ export function createCollisionState(
       stamp: 0,
       lastGravity: new Float64Array(3),
       anyAsleep: false,
+      wakes: 0,
     },
     shapes: createShapeCollisionState(),
     events: createContactEventStore(),
+    sleepingContacts: createSleepingContacts(),
     stats: new CollisionStats(),
   };
   // The ball contacts' buffer and the warm-start cache's rows trade places every step

@@ -28,7 +28,10 @@ import { addIslandEdges3D, wakeTouching3D, withShape3DBodies } from './hooks-3d.
  */
 export function wakeTag(world: PhysicsWorld, eid: number): void {
   const c = world.components;
-  if (hasComponent(world, eid, c.Sleeping)) removeComponent(world, eid, c.Sleeping);
+  if (hasComponent(world, eid, c.Sleeping)) {
+    removeComponent(world, eid, c.Sleeping);
+    world.collision.sleep.wakes++;
+  }
   world.collision.sleep.restTime[eid] = 0;
 }
 

@@ -27,6 +27,7 @@ export function wakeIslandForStep(world: PhysicsWorld, e: number): number {
     V = c.Velocity;
   for (const b of list) {
     removeComponent(world, b, c.Sleeping);
+    world.collision.sleep.wakes++;
     world.collision.sleep.restTime[b] = 0;
     V.x[b] = g[0]! * h;
     V.y[b] = g[1]! * h;

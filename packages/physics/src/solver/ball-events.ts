@@ -5,11 +5,12 @@
  * overlapped at its start (as a shape manifold does); a touching row whose contact did not touch in the
  * previous step is a begin event, a previous step's touching row that no row continues is an end event.
  * The previous row of each contact is the one its warm start found (`ContactBuffer.previous`, set when
- * the rows are prepared), so no pair is looked up again.
+ * the rows are prepared), so no pair is looked up again. A pair whose rows vanish because its bodies
+ * fell asleep is kept touching while they sleep (collision/events.ts keepWhileAsleep), as the shapes' are.
  */
 
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
-import { pushEvent } from '../collision/events.js';
+import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /** Per row of the previous step: 1 once a touching row of this step continues it. Scratch, not world state. */
@@ -45,6 +46,7 @@ export function ballContactEvents(world: PhysicsWorld, buf: ContactBuffer, prepa
       done[j] = 1;
       if (pT[j] === 1) continue;
     }
+    if (resumeAfterSleep(world, shapeOf(buf, i, 0), shapeOf(buf, i, 1))) continue;
     const k = pushRow(world, events.begin, buf, i);
     const b = buf.b[i]!,
       rb = buf.rb[i]!;
@@ -61,16 +63,33 @@ export function ballContactEvents(world: PhysicsWorld, buf: ContactBuffer, prepa
     list.approachSpeed[k] = Math.max(0, -buf.impactVelocity[i]!);
     list.impulse[k] = IMP[i]!;
   }
-  for (let j = 0; j < m; j++) if (pT[j] === 1 && done[j] === 0) pushRow(world, events.end, prev, j);
+  for (let j = 0; j < m; j++) {
+    if (pT[j] !== 1 || done[j] === 1) continue;
+    if (keepWhileAsleep(world, shapeOf(prev, j, 0), shapeOf(prev, j, 1), bodyOf(prev, j, 0), bodyOf(prev, j, 1))) continue;
+    pushRow(world, events.end, prev, j);
+  }
 }
 
-/** Pushes an event naming the shapes and bodies of row `i` of `rows` (see ContactKind); returns its row. */
+/**
+ * Shape A (`side` 0) or B (1) of row `i` as the events name it (ContactKind): a ball is its own shape,
+ * a boundary face is -1 - face, a segment, plane or static ball is its entity.
+ */
+function shapeOf(rows: ContactBuffer, i: number, side: number): number {
+  if (side === 1) return rows.b[i]!;
+  const kind = rows.kind[i]!;
+  if (kind === ContactKind.Ball) return rows.a[i]!;
+  return kind === ContactKind.Boundary ? -1 - rows.feature[i]! : rows.feature[i]!;
+}
+
+/** Body A (`side` 0) or B (1) of row `i` as the events name it: a static ball is a body, a segment, plane or boundary face belongs to the static world (0). */
+function bodyOf(rows: ContactBuffer, i: number, side: number): number {
+  if (side === 1) return rows.b[i]!;
+  const kind = rows.kind[i]!;
+  if (kind === ContactKind.Ball) return rows.a[i]!;
+  return kind === ContactKind.StaticBall ? rows.feature[i]! : 0;
+}
+
+/** Pushes an event naming the shapes and bodies of row `i` of `rows` (shapeOf, bodyOf); returns its row. */
 function pushRow(world: PhysicsWorld, list: Parameters<typeof pushEvent>[1], rows: ContactBuffer, i: number): number {
-  const kind = rows.kind[i]!,
-    b = rows.b[i]!,
-    f = rows.feature[i]!;
-  if (kind === ContactKind.Ball) return pushEvent(world, list, rows.a[i]!, b, rows.a[i]!, b);
-  if (kind === ContactKind.Boundary) return pushEvent(world, list, -1 - f, b, 0, b);
-  // A static ball is a body of its own; a segment and a plane belong to the static world.
-  return pushEvent(world, list, f, b, kind === ContactKind.StaticBall ? f : 0, b);
+  return pushEvent(world, list, shapeOf(rows, i, 0), rows.b[i]!, bodyOf(rows, i, 0), rows.b[i]!);
 }

@@ -1,4 +1,5 @@
 import type { ContactBuffer } from '../collision/contacts.js';
+import { endWokenContacts } from '../collision/events.js';
 import { BodyType } from '../collision/state.js';
 import { rotateInPlace } from '../math/quaternion.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
@@ -138,6 +139,7 @@ function solveContacts(world: PhysicsWorld): void {
     }
     finishManifolds(world);
     if (world.dimensions === 3) finishManifolds3D(world);
+    endWokenContacts(world);
     return;
   }
   gatherBodies(world, buf);
@@ -198,6 +200,7 @@ function solveContacts(world: PhysicsWorld): void {
     // A threaded 2D world builds the warm-start table on a worker while the step finishes (solver/stages-threads.ts).
     cs.contacts = balls.store(world, buf, true);
   }
+  endWokenContacts(world);
 }
 
 /**

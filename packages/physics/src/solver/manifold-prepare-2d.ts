@@ -1,4 +1,4 @@
-import { pushEvent } from '../collision/events.js';
+import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { findPrevious, rotateManifolds } from '../collision/manifolds-2d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -279,6 +279,7 @@ export function finishManifolds(world: PhysicsWorld): void {
     if (touching === 0) continue;
     const j = findPrevious(st, buf.shapeA[i]!, buf.shapeB[i]!);
     if (j >= 0 && prev.touching[j] === 1 && prev.stampB[j] === buf.stampB[i] && prev.stampA[j] === buf.stampA[i]) continue;
+    if (resumeAfterSleep(world, buf.shapeA[i]!, buf.shapeB[i]!)) continue;
     const k = pushEvent(world, ev.begin, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
     ev.begin.px[k] = buf.px[2 * i]!;
     ev.begin.py[k] = buf.py[2 * i]!;
@@ -301,6 +302,7 @@ export function finishManifolds(world: PhysicsWorld): void {
     if (old.touching[i] !== 1) continue;
     const j = findPrevious(st, old.shapeA[i]!, old.shapeB[i]!);
     if (j >= 0 && now.touching[j] === 1 && now.stampB[j] === old.stampB[i] && now.stampA[j] === old.stampA[i]) continue;
+    if (keepWhileAsleep(world, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!)) continue;
     pushEvent(world, ev.end, old.shapeA[i]!, old.shapeB[i]!, old.bodyA[i]!, old.bodyB[i]!);
   }
 }

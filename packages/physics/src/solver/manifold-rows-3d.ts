@@ -1,4 +1,4 @@
-import { pushEvent } from '../collision/events.js';
+import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import { clearRowIndex, contact3DStateOf, insertRow, lookupRow, pushTouch } from '../collision/manifolds-3d.js';
 import { BodyType } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -114,6 +114,7 @@ export function finishManifolds3D(world: PhysicsWorld): void {
     if (lookupRow(now.index, k) >= 0) continue;
     insertRow(now.index, k, pushTouch(now, k, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!));
     if (lookupRow(prev.index, k) >= 0) continue;
+    if (resumeAfterSleep(world, buf.shapeA[i]!, buf.shapeB[i]!)) continue;
     const ev = events.begin;
     const r = pushEvent(world, ev, buf.shapeA[i]!, buf.shapeB[i]!, buf.bodyA[i]!, buf.bodyB[i]!);
     const c = world.components,
@@ -131,6 +132,7 @@ export function finishManifolds3D(world: PhysicsWorld): void {
   }
   for (let i = 0; i < prev.count; i++) {
     if (lookupRow(now.index, prev.keys[i]!) >= 0) continue;
+    if (keepWhileAsleep(world, prev.shapeA[i]!, prev.shapeB[i]!, prev.bodyA[i]!, prev.bodyB[i]!)) continue;
     pushEvent(world, events.end, prev.shapeA[i]!, prev.shapeB[i]!, prev.bodyA[i]!, prev.bodyB[i]!);
   }
   st.touching = now;
