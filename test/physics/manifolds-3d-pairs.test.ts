@@ -150,7 +150,7 @@ describe('3D manifolds: reduction to four points and feature ids', () => {
     let impulse = 0;
     forEachContact3D(world, (v) => {
       pts.push([v.x, v.z]);
-      impulse += v.normalImpulse;
+      impulse += v.impulse;
     });
     expect(pts.length).toBe(4);
     // Each kept point is an octagon vertex: at the circumradius h / cos(22.5 deg) from the axis (1 mm).

@@ -1,4 +1,4 @@
-import type { PhysicsWorld } from '@bitphysics/physics';
+import { type ContactView, forEachContact, type PhysicsWorld } from '@bitphysics/physics';
 import { type OptionRules, resolveOptions } from '@bitphysics/render-common';
 import { query } from 'bitecs';
 import { Graphics } from 'pixi.js';
@@ -15,7 +15,7 @@ export interface DebugOptions {
   /** Most velocity arrows drawn (the first balls shown), integer in [0, 1_000_000]. Default 2000. */
   maxArrows?: number;
   /**
-   * Draw the last step's contacts (from `world.collision.cache.rows`): a dot at each contact point
+   * Draw the last step's contacts (`forEachContact`: balls and shapes): a dot at each contact point
    * and its normal (from body A to body B). Contacts that carried impulse are red, speculative
    * ones (no impulse) grey. Default true.
    */
@@ -159,27 +159,23 @@ export class DebugLayer {
     }
 
     if (o.contacts && o.maxContacts > 0) {
-      const rows = world.collision.cache.rows;
-      const n = Math.min(rows.count, o.maxContacts);
-      const b = rows.b,
-        nx = rows.nx,
-        ny = rows.ny,
-        rb = rows.rb,
-        J = rows.totalNormalImpulse;
+      // Every contact point of the last step (balls and shapes), moved with B to where B is drawn.
+      const pts = this.gatherContacts(world, o.maxContacts);
+      const n = this.contactCount;
       const L = o.normalLength;
       // Two passes (active, then speculative) so each colour is one stroke.
       for (let pass = 0; pass < 2; pass++) {
         let any = false;
         for (let i = 0; i < n; i++) {
-          const active = J[i]! > 0;
+          const q = 6 * i;
+          const active = pts[q + 5]! > 0;
           if (active !== (pass === 0)) continue;
-          const e = b[i]!;
-          // The contact point lies rb behind B's centre along the normal (contacts.ts: rb is measured along -n).
-          const cx = ox[e]! + (px[e]! - ox[e]!) * alpha - nx[i]! * rb[i]!;
-          const cy = oy[e]! + (py[e]! - oy[e]!) * alpha - ny[i]! * rb[i]!;
+          const e = pts[q + 4]!;
+          const cx = ox[e]! + (px[e]! - ox[e]!) * alpha + pts[q]!;
+          const cy = oy[e]! + (py[e]! - oy[e]!) * alpha + pts[q + 1]!;
           const sx = x0 + cx * ppm,
             sy = y0 - cy * ppm;
-          g.moveTo(sx, sy).lineTo(sx + nx[i]! * L, sy - ny[i]! * L);
+          g.moveTo(sx, sy).lineTo(sx + pts[q + 2]! * L, sy - pts[q + 3]! * L);
           g.circle(sx, sy, 2.5);
           any = true;
         }
@@ -188,6 +184,44 @@ export class DebugLayer {
       this.contactsDrawn = n;
     }
   }
+
+  /**
+   * The last step's contact points (at most `most`), 6 numbers each in the returned scratch: the
+   * point's offset from body B's centre at the end of the step (m, x and y), the normal (x, y), B's
+   * slot and the impulse (N s); their number in `contactCount`.
+   */
+  private gatherContacts(world: PhysicsWorld, most: number): Float64Array {
+    this.contactCount = 0;
+    this.contactMost = most;
+    this.contactWorld = world;
+    forEachContact(world, this.onContact);
+    return this.contactScratch;
+  }
+
+  /** Points gathered by the last `gatherContacts`. */
+  private contactCount = 0;
+  private contactMost = 0;
+  private contactWorld: PhysicsWorld | null = null;
+  private contactScratch = new Float64Array(6 * 256);
+  /** The callback handed to forEachContact (made once, so a frame allocates nothing but growth). */
+  private readonly onContact = (v: Readonly<ContactView>): void => {
+    if (this.contactCount >= this.contactMost) return;
+    const P = this.contactWorld!.components.Position;
+    let buf = this.contactScratch;
+    const q = 6 * this.contactCount;
+    if (q + 6 > buf.length) {
+      const grown = new Float64Array(2 * buf.length);
+      grown.set(buf);
+      this.contactScratch = buf = grown;
+    }
+    buf[q] = v.x - P.x[v.bodyB]!;
+    buf[q + 1] = v.y - P.y[v.bodyB]!;
+    buf[q + 2] = v.nx;
+    buf[q + 3] = v.ny;
+    buf[q + 4] = v.bodyB;
+    buf[q + 5] = v.impulse;
+    this.contactCount++;
+  };
 
   /** Releases the Graphics. */
   destroy(): void {

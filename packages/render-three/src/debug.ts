@@ -1,4 +1,4 @@
-import { type Contact3DView, forEachContact3D, type PhysicsWorld } from '@bitphysics/physics';
+import { type ContactView, forEachContact, type PhysicsWorld } from '@bitphysics/physics';
 import { type OptionRules, resolveOptions } from '@bitphysics/render-common';
 import { BufferAttribute, BufferGeometry, DynamicDrawUsage, Group, LineBasicMaterial, LineSegments, Points, PointsMaterial } from 'three';
 import type { InstanceBook } from './book.js';
@@ -29,8 +29,7 @@ export interface DebugOptions {
   /** Most bodies given axes and arrows (the first shown), integer in [0, 100_000]. Default 2000. */
   maxBodies?: number;
   /**
-   * Draw the last step's contacts (balls: `world.collision.cache.rows`; 3D shapes: `forEachContact3D`,
-   * up to four points a manifold): a dot at each contact point and its normal (from body A to body B).
+   * Draw the last step's contacts (`forEachContact`: balls, and 3D shapes up to four points a manifold): a dot at each contact point and its normal (from body A to body B).
    * Contacts that carried impulse are red, speculative ones (no impulse) grey. Default true.
    */
   contacts?: boolean;
@@ -178,20 +177,20 @@ export class DebugLayer {
   private contactPoints = 0;
   private contactFrame: DebugFrame | null = null;
   private contactWorld: PhysicsWorld | null = null;
-  private readonly onContact3D = (v: Readonly<Contact3DView>): void => {
+  private readonly onContact = (v: Readonly<ContactView>): void => {
     const o = this.options,
       f = this.contactFrame!,
       world = this.contactWorld!;
     if (this.contactsDrawn >= o.maxContacts) return;
-    // The point was measured where B was at the start of the step; move it with B to where B was drawn.
+    // The point is on B where B was at the end of the step; move it with B to where B was drawn.
     const b = v.bodyB,
-      P = world.components.PreviousPosition;
+      P = world.components.Position;
     const shown = f.book.has(b),
       pos = f.drawnPosition;
     const cx = shown ? v.x - P.x[b]! + pos[3 * b]! : v.x,
       cy = shown ? v.y - P.y[b]! + pos[3 * b + 1]! : v.y,
       cz = shown ? v.z - P.z[b]! + pos[3 * b + 2]! : v.z;
-    const color = v.normalImpulse > 0 ? 5 : 6,
+    const color = v.impulse > 0 ? 5 : 6,
       L = o.normalLength,
       k = f.scale;
     this.segment(cx, cy, cz, cx + v.nx * L, cy + v.ny * L, cz + v.nz * L, color, k);
@@ -307,46 +306,10 @@ export class DebugLayer {
 
     let points = 0;
     if (o.contacts && o.maxContacts > 0) {
-      const rows = world.collision.cache.rows;
-      const n = Math.min(rows.count, o.maxContacts);
-      const b = rows.b,
-        nx = rows.nx,
-        ny = rows.ny,
-        nz = rows.nz,
-        rb = rows.rb,
-        J = rows.totalNormalImpulse;
-      const P = c.Position;
-      const L = o.normalLength;
-      const pp = this.pointPos,
-        pc = this.pointCol,
-        rgb = this.rgb;
-      for (let i = 0; i < n; i++) {
-        const e = b[i]!;
-        // Where B was drawn (or, if it is not shown, its current position), minus rb along the normal:
-        // the contact point (contacts.ts: rb is measured from B's centre along -n).
-        const shown = book.has(e);
-        const bx = shown ? pos[3 * e]! : P.x[e]!,
-          by = shown ? pos[3 * e + 1]! : P.y[e]!,
-          bz = shown ? pos[3 * e + 2]! : P.z[e]!;
-        const cx = bx - nx[i]! * rb[i]!,
-          cy = by - ny[i]! * rb[i]!,
-          cz = bz - nz[i]! * rb[i]!;
-        const color = J[i]! > 0 ? 5 : 6;
-        this.segment(cx, cy, cz, cx + nx[i]! * L, cy + ny[i]! * L, cz + nz[i]! * L, color, k);
-        const p = points * 3;
-        pp[p] = cx * k;
-        pp[p + 1] = cy * k;
-        pp[p + 2] = cz * k;
-        pc[p] = rgb[3 * color]!;
-        pc[p + 1] = rgb[3 * color + 1]!;
-        pc[p + 2] = rgb[3 * color + 2]!;
-        points++;
-      }
-      this.contactsDrawn = n;
-      this.contactPoints = points;
+      this.contactPoints = 0;
       this.contactFrame = frame;
       this.contactWorld = world;
-      forEachContact3D(world, this.onContact3D);
+      forEachContact(world, this.onContact);
       points = this.contactPoints;
     }
 

@@ -2,7 +2,7 @@
  * Contact storage: one row per contact point, structure of arrays, grown by doubling (never per step).
  *
  * Contacts are transient solver data, not entities: tens of thousands a step would be too slow as
- * bitecs entities. After a step, read the step's contacts with `forEachContact` (the rows then live in
+ * bitecs entities. After a step, read the step's contacts with `forEachContact` (collision/contact-view.ts; the rows then live in
  * `world.collision.cache.rows`, rows 0..count-1; `world.collision.contacts` is the buffer the next
  * step fills and holds no rows between steps).
  *
@@ -22,10 +22,12 @@ import type { KernelArray } from '../threads/kernel-types.js';
  *   (0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z);
  * - `Segment` (2): ball B against the static segment entity `feature`;
  * - `StaticBall` (3): ball B against the static ball entity `feature`;
- * - `Plane` (4): ball B against the static plane entity `feature`.
+ * - `Plane` (4): ball B against the static plane entity `feature`;
+ * - `Shape` (5): never a row of this buffer: the kind `forEachContact` gives a contact of shapes (the 2D
+ *   and 3D manifolds, collision/manifolds-2d.ts and manifolds-3d.ts).
  * @category Collision
  */
-export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3, Plane: 4 } as const);
+export const ContactKind = Object.freeze({ Ball: 0, Boundary: 1, Segment: 2, StaticBall: 3, Plane: 4, Shape: 5 } as const);
 
 /**
  * The contact rows of one step.
@@ -327,70 +329,5 @@ export function findWarmStart(
       return rows.stampA[i] === stampA && rows.stampB[i] === stampB ? i : -1;
     }
     s = (s + 1) & mask;
-  }
-}
-
-/**
- * One contact of the last step, as `forEachContact` hands it out (the same object each call: copy what you keep).
- * @category Collision
- */
-export interface ContactView {
-  /** Body A's entity id, or the static feature's (static ball, segment or plane entity); 0 for the boundary box. */
-  a: number;
-  /** Body B's entity id (always a moving ball). */
-  b: number;
-  /** ContactKind of the row. */
-  kind: number;
-  /** Unit normal from A to B (z is 0 in 2D). */
-  nx: number;
-  ny: number;
-  nz: number;
-  /** Contact point, m: on B's surface, B's centre at the end of the step minus rb n. */
-  x: number;
-  y: number;
-  z: number;
-  /** Normal impulse the contact delivered over the step, N s (>= 0): B got +impulse n, A -impulse n. */
-  impulse: number;
-  /**
-   * Separation along the normal at the start of the step, m (negative: overlap); for a body the impact
-   * stage moved, from where its end-position correction puts its start (see solver/impacts.ts).
-   */
-  separation: number;
-}
-
-const view: ContactView = { a: 0, b: 0, kind: 0, nx: 0, ny: 0, nz: 0, x: 0, y: 0, z: 0, impulse: 0, separation: 0 };
-
-/**
- * Calls `fn` once for every contact of the last step (ball-ball, ball-boundary, ball-segment,
- * ball-static-ball, ball-plane), with a reused view object (see ContactView). The contact list is the
- * narrowphase's: it includes speculative contacts that did not touch (impulse 0).
- * @throws whatever `fn` throws (the world is not changed by reading).
- * @category Collision
- */
-export function forEachContact(
-  world: { collision: { cache: WarmStartCache }; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } },
-  fn: (contact: Readonly<ContactView>) => void,
-): void {
-  const rows = world.collision.cache.rows;
-  const P = world.components.Position;
-  for (let i = 0, n = rows.count; i < n; i++) {
-    const kind = rows.kind[i]!,
-      b = rows.b[i]!;
-    view.kind = kind;
-    view.a = kind === ContactKind.Ball ? rows.a[i]! : kind === ContactKind.Boundary ? 0 : rows.feature[i]!;
-    view.b = b;
-    const nx = rows.nx[i]!,
-      ny = rows.ny[i]!,
-      nz = rows.nz[i]!,
-      rb = rows.rb[i]!;
-    view.nx = nx;
-    view.ny = ny;
-    view.nz = nz;
-    view.x = P.x[b]! - rb * nx;
-    view.y = P.y[b]! - rb * ny;
-    view.z = P.z[b]! - rb * nz;
-    view.impulse = rows.impulse[i]!;
-    view.separation = rows.separation[i]!;
-    fn(view);
   }
 }
