@@ -194,9 +194,40 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const n = balls.length;
   cs.stats.pairs = 0;
   if (n === 0) return;
+  const reachSum = classifyBalls(world, balls);
+  // Cell size from the reach of ordinary bodies; outliers go to the oversized list.
+  const limit = OVERSIZED_FACTOR * (reachSum / n);
+  const maxReachAll = layoutGrid(world, balls, limit);
+  const small = sortIntoBuckets(world, balls, limit);
+  // Pair generation. Waking a sleeping body wakes its whole island; the pass is then run again so the
+  // woken bodies meet their neighbours (which were still asleep, and skipped, in the first pass).
+  for (let pass = 0; pass < 4; pass++) {
+    cs.pairCount = 0;
+    const woken = cs.wakeCount;
+    // Pairs among grid bodies: own cell (later entries only) and half the neighbours. A dense grid's
+    // buckets hold one cell each (no coordinates to compare), its neighbours a fixed bucket offset away.
+    // One range kernel, on the world's threads or here (collision/broadphase/grid-pairs.ts: the same
+    // pairs and wakes in the same order on any thread count).
+    ballPairsStage(world, cs, small, cs.grid.tableSize - 1, wakeForContact);
+    oversizedPairs(world, small);
+    segmentPairs(world, small, maxReachAll);
+    if (cs.wakeCount === woken) break;
+    wakeIslands(world, cs, woken);
+  }
+  cs.stats.pairs = cs.pairCount;
+  for (let i = 0; i < cs.wakeCount; i++) wakeTag(world, cs.wakeList[i]!);
+}
 
+/**
+ * The per-body scratch the solver reads, for every ball: effective inverse mass and inertia (0 for
+ * static and kinematic bodies), body type and speculative margin; a static ball's previous position
+ * is where it is. Returns the sum of the balls' reaches (radius plus margin), m.
+ */
+function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
+  const c = world.components;
+  const cs = world.collision;
+  const n = balls.length;
   const h = world.h;
-  const is3D = world.dimensions === 3;
   const invMass = cs.invMass,
     invInertia = cs.invInertia,
     margin = cs.margin,
@@ -214,7 +245,7 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const mInv = c.Mass.inv;
   const halfSpec = 0.5 * cs.settings.speculativeDistance;
 
-  // Per-body scratch. Dynamic first, then overwrite the special cases.
+  // Dynamic first, then overwrite the special cases.
   let reachSum = 0;
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
@@ -263,11 +294,27 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     oy[e] = py[e]!;
     oz[e] = pz[e]!;
   }
+  return reachSum;
+}
 
-  // Cell size from the reach of ordinary bodies; outliers go to the oversized list. The ordinary
-  // bodies' extent too (NaN positions are counted in cell 0, as cellOf puts them).
-  const g = cs.grid;
-  const limit = OVERSIZED_FACTOR * (reachSum / n);
+/**
+ * Chooses the grid for balls whose reach is at most `limit` (m): the cell size (twice the largest
+ * reach), and a dense grid over the bodies' cells when they are few enough (buckets in space order:
+ * the pairs, contacts and solver bodies follow, which keeps the solver's reads near each other), else
+ * the spatial hash; written to `cs.grid` (ensureGrid sizes its arrays). Returns the largest reach of
+ * any ball, oversized ones included, m.
+ */
+function layoutGrid(world: PhysicsWorld, balls: ArrayLike<number>, limit: number): number {
+  const cs = world.collision,
+    g = cs.grid;
+  const n = balls.length;
+  const is3D = world.dimensions === 3;
+  const margin = cs.margin,
+    radius = world.components.Ball.radius;
+  const ox = world.components.PreviousPosition.x,
+    oy = world.components.PreviousPosition.y,
+    oz = world.components.PreviousPosition.z;
+  // The ordinary bodies' extent too (NaN positions are counted in cell 0, as cellOf puts them).
   let maxReach = 0;
   let maxReachAll = 0;
   let loX = Infinity,
@@ -297,9 +344,6 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const cell = 2 * maxReach;
   const invCell = 1 / cell;
   g.cellSize = cell;
-
-  // Dense grid when the cells around the bodies are few enough (buckets in space order: the pairs,
-  // contacts and solver bodies follow, which keeps the solver's reads near each other); else the hash.
   // cellOf is monotonic, so the extreme positions give the extreme cells.
   let cx0 = cellOf(loX, invCell),
     cx1 = cellOf(hiX, invCell),
@@ -336,12 +380,33 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     g.spanX = 0;
     g.spanXZ = 0;
   }
+  ensureGrid(cs, n, table);
+  return maxReachAll;
+}
+
+/**
+ * Counting sort of the balls by the bucket of their cell (count, prefix sum, place) into the grid
+ * `layoutGrid` chose; balls whose reach is over `limit` go to the oversized list. Returns the number
+ * of balls in the grid.
+ */
+function sortIntoBuckets(world: PhysicsWorld, balls: ArrayLike<number>, limit: number): number {
+  const cs = world.collision,
+    g = cs.grid;
+  const n = balls.length;
+  const is3D = world.dimensions === 3;
+  const margin = cs.margin,
+    radius = world.components.Ball.radius;
+  const ox = world.components.PreviousPosition.x,
+    oy = world.components.PreviousPosition.y,
+    oz = world.components.PreviousPosition.z;
+  const invCell = 1 / g.cellSize,
+    table = g.tableSize,
+    dense = g.spanX !== 0;
   const gx0 = g.originX,
     gy0 = g.originY,
     gz0 = g.originZ,
     sX = g.spanX,
     sXZ = g.spanXZ;
-  ensureGrid(cs, n, table);
   const mask = table - 1;
   const start = g.bucketStart;
   start.fill(0, 0, table + 1);
@@ -352,8 +417,6 @@ export function broadphaseSystem(world: PhysicsWorld): void {
     bucketOf = g.bucketOf,
     over = g.oversized;
   let overCount = 0;
-
-  // Counting sort by bucket: count, prefix sum, place.
   for (let i = 0; i < n; i++) {
     const e = balls[i]!;
     if (radius[e]! + margin[e]! > limit) {
@@ -384,93 +447,96 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   }
   for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
-  const small = n - overCount;
+  return n - overCount;
+}
 
-  // Pair generation. Waking a sleeping body wakes its whole island; the pass is then run again so the
-  // woken bodies meet their neighbours (which were still asleep, and skipped, in the first pass).
-  for (let pass = 0; pass < 4; pass++) {
-    cs.pairCount = 0;
-    const woken = cs.wakeCount;
-    // Pairs among grid bodies: own cell (later entries only) and half the neighbours. A dense grid's
-    // buckets hold one cell each (no coordinates to compare), its neighbours a fixed bucket offset away.
-    // One range kernel, on the world's threads or here (collision/broadphase/grid-pairs.ts: the same
-    // pairs and wakes in the same order on any thread count).
-    ballPairsStage(world, cs, small, mask, wakeForContact);
-
-    // Oversized bodies: against each other directly, against grid bodies by a range query.
-    for (let i = 0; i < overCount; i++) {
-      const e = over[i]!;
-      const x = ox[e]!,
-        y = oy[e]!,
-        z = oz[e]!;
-      const reach = radius[e]! + margin[e]!;
-      const te = type[e]!;
-      for (let j = i + 1; j < overCount; j++) {
-        const f = over[j]!;
-        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x,
-          dy = oy[f]! - y,
-          dz = oz[f]! - z;
-        const rr = reach + radius[f]! + margin[f]!;
-        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-      }
-      const B = boxArgs;
-      B[0] = x - reach;
-      B[1] = y - reach;
-      B[2] = z - reach;
-      B[3] = x + reach;
-      B[4] = y + reach;
-      B[5] = z + reach;
-      const found = queryBox(world, cs, small);
-      const cand = g.candidates;
-      for (let k = 0; k < found; k++) {
-        const f = cand[k]!;
-        if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-        const dx = ox[f]! - x,
-          dy = oy[f]! - y,
-          dz = oz[f]! - z;
-        const rr = reach + radius[f]! + margin[f]!;
-        if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-      }
+/** Pairs of the oversized balls: against each other directly, against the `small` grid balls by a range query. */
+function oversizedPairs(world: PhysicsWorld, small: number): void {
+  const cs = world.collision,
+    g = cs.grid;
+  const over = g.oversized,
+    overCount = g.oversizedCount;
+  const type = cs.bodyType,
+    margin = cs.margin,
+    radius = world.components.Ball.radius;
+  const ox = world.components.PreviousPosition.x,
+    oy = world.components.PreviousPosition.y,
+    oz = world.components.PreviousPosition.z;
+  for (let i = 0; i < overCount; i++) {
+    const e = over[i]!;
+    const x = ox[e]!,
+      y = oy[e]!,
+      z = oz[e]!;
+    const reach = radius[e]! + margin[e]!;
+    const te = type[e]!;
+    for (let j = i + 1; j < overCount; j++) {
+      const f = over[j]!;
+      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+      const dx = ox[f]! - x,
+        dy = oy[f]! - y,
+        dz = oz[f]! - z;
+      const rr = reach + radius[f]! + margin[f]!;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
     }
-
-    // Static segments against moving balls near their bounding box.
-    const segs = query(world, [c.Segment]);
-    if (segs.length > 0) {
-      const S = c.Segment;
-      for (let i = 0; i < segs.length; i++) {
-        const s = segs[i]!;
-        const pad = S.radius[s]! + maxReachAll;
-        const ax = S.ax[s]!,
-          ay = S.ay[s]!,
-          az = S.az[s]!,
-          bx = S.bx[s]!,
-          by = S.by[s]!,
-          bz = S.bz[s]!;
-        const B = boxArgs;
-        B[0] = Math.min(ax, bx) - pad;
-        B[1] = Math.min(ay, by) - pad;
-        B[2] = Math.min(az, bz) - pad;
-        B[3] = Math.max(ax, bx) + pad;
-        B[4] = Math.max(ay, by) + pad;
-        B[5] = Math.max(az, bz) + pad;
-        const found = queryBox(world, cs, small);
-        const cand = g.candidates;
-        for (let k = 0; k < found; k++) {
-          const f = cand[k]!;
-          if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
-        }
-        for (let j = 0; j < overCount; j++) {
-          const f = over[j]!;
-          if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
-        }
-      }
+    const B = boxArgs;
+    B[0] = x - reach;
+    B[1] = y - reach;
+    B[2] = z - reach;
+    B[3] = x + reach;
+    B[4] = y + reach;
+    B[5] = z + reach;
+    const found = queryBox(world, cs, small);
+    const cand = g.candidates;
+    for (let k = 0; k < found; k++) {
+      const f = cand[k]!;
+      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
+      const dx = ox[f]! - x,
+        dy = oy[f]! - y,
+        dz = oz[f]! - z;
+      const rr = reach + radius[f]! + margin[f]!;
+      if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
     }
-    if (cs.wakeCount === woken) break;
-    wakeIslands(world, cs, woken);
   }
-  cs.stats.pairs = cs.pairCount;
-  for (let i = 0; i < cs.wakeCount; i++) wakeTag(world, cs.wakeList[i]!);
+}
+
+/** Static segments against the moving balls near their bounding box, padded by the largest ball reach `maxReachAll` (m). */
+function segmentPairs(world: PhysicsWorld, small: number, maxReachAll: number): void {
+  const c = world.components;
+  const segs = query(world, [c.Segment]);
+  if (segs.length === 0) return;
+  const cs = world.collision,
+    g = cs.grid,
+    type = cs.bodyType;
+  const over = g.oversized,
+    overCount = g.oversizedCount;
+  const S = c.Segment;
+  for (let i = 0; i < segs.length; i++) {
+    const s = segs[i]!;
+    const pad = S.radius[s]! + maxReachAll;
+    const ax = S.ax[s]!,
+      ay = S.ay[s]!,
+      az = S.az[s]!,
+      bx = S.bx[s]!,
+      by = S.by[s]!,
+      bz = S.bz[s]!;
+    const B = boxArgs;
+    B[0] = Math.min(ax, bx) - pad;
+    B[1] = Math.min(ay, by) - pad;
+    B[2] = Math.min(az, bz) - pad;
+    B[3] = Math.max(ax, bx) + pad;
+    B[4] = Math.max(ay, by) + pad;
+    B[5] = Math.max(az, bz) + pad;
+    const found = queryBox(world, cs, small);
+    const cand = g.candidates;
+    for (let k = 0; k < found; k++) {
+      const f = cand[k]!;
+      if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+    }
+    for (let j = 0; j < overCount; j++) {
+      const f = over[j]!;
+      if (type[f] < BodyType.Static) pushPair(cs, PairKind.SegmentBall, s, f);
+    }
+  }
 }
 
 /**
