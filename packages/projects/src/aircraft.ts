@@ -19,29 +19,50 @@ import { assertFinite, assertKnownKeys, assertPositive } from '@bitphysics/physi
  * lifting surfaces acting at their own points (forces/lifting-surface.ts): two wing halves of 75 m^2
  * (150 m^2, span 30 m, aspect ratio 6) with ailerons, a tailplane with the elevator and a fin with the
  * rudder 12 m behind the centre of mass, and a jet's thrust along the body x axis (`BodyThrust`).
- * The wing is set at an incidence of 3 degrees, so with the body level and the elevator neutral the
- * tail carries no lift and lift = weight at the trim speed `AIRCRAFT_TRIM_SPEED`. The roll, pitch and
- * yaw damping come from the surfaces meeting their own motion (no damping term).
+ * The wing is set at an incidence of 3 degrees, so with the body level and the elevator neutral
+ * lift = weight at the trim speed `AIRCRAFT_TRIM_SPEED`. The roll, pitch and yaw damping come from
+ * the surfaces meeting their own motion (no damping term).
+ *
+ * Lateral stability: each wing half is tilted up by the dihedral angle (its normal leans inboard),
+ * so in a sideslip the wing the air comes from meets it at a larger angle of attack (about
+ * beta sin(dihedral)) and lifts more: the aircraft rolls away from the slip (the dihedral effect), and
+ * the fin, whose centre of pressure stands `finHeight` above the centre of mass, adds its side force's
+ * rolling moment. Together with the fin's weathercock yaw this makes the spiral mode converge (a bank
+ * left alone slowly levels out) where a flat wing lets it diverge: the spiral mode converges when
+ * L_beta N_r - L_r N_beta > 0, the sign of the constant term of the lateral characteristic equation
+ * (Etkin and Reid, Dynamics of Flight: Stability and Control). The fin's drag above the centre of
+ * mass pitches the nose up; the tailplane is set at the small incidence `AIRCRAFT_TAIL_INCIDENCE`
+ * whose lift balances it at every speed.
  */
 export const AIRCRAFT = Object.freeze({
   mass: 30_000,
   inertia: Object.freeze([2e4, 1.6e5, 1.6e5]) as readonly number[],
   wingArea: 150,
-  /** Distance of each wing half's centre of pressure from the centre line, m (a quarter of the 30 m span). */
+  /**
+   * Distance of each wing half's centre of pressure from the centre line, m (a quarter of the 30 m
+   * span). It sits at the height of the centre of mass: the wing's root is below it (a low wing), so
+   * the halves' drag makes no pitching moment.
+   */
   wingHalfOffset: 7.5,
   /** Wing incidence to the body x axis, rad. */
   incidence: (3 * Math.PI) / 180,
+  /** Dihedral: the upward tilt of each wing half about the body x axis, rad (7 degrees, a low wing's usual). */
+  dihedral: (7 * Math.PI) / 180,
   /** Lift per radian of aileron deflection on each wing half, 1/rad. */
   aileronPower: 0.6,
   tailArea: 30,
   tailArm: 12,
   tailSlope: 3.5,
   elevatorPower: 1.5,
-  /** The fin's centre of pressure sits at the height of the centre of mass (its drag makes no pitching moment). */
+  /** Induced drag factor of the tailplane. */
+  tailInducedDrag: 0.08,
   finArea: 15,
-  finHeight: 0,
+  /** Height of the fin's centre of pressure above the centre of mass, m (mid-height of a 5 m fin on the tail cone). */
+  finHeight: 2.5,
   finSlope: 3,
   rudderPower: 1.2,
+  /** Induced drag factor of the fin. */
+  finInducedDrag: 0.1,
   /** Largest thrust, N. */
   maxThrust: 150_000,
   airDensity: 1.225,
@@ -55,24 +76,57 @@ export const AIRCRAFT = Object.freeze({
 const G = 9.81;
 
 /**
- * The trim speed, m/s: lift = weight with the body level, from m g = rho V^2 S a i / 2,
- * V = sqrt(2 m g / (rho S a i)) (a the wing's lift slope, i its incidence; about 114 m/s).
+ * The tailplane's incidence, rad (about 0.017 degrees): its lift L_t at the tail arm l balances the
+ * pitching moment of the fin's drag D_f at the fin height h, l L_t = h D_f, i.e.
+ * l q S_t a_t i_t = h q S_f C_D0, so i_t = h S_f C_D0 / (l S_t a_t), the same at every speed.
  */
-export const AIRCRAFT_TRIM_SPEED = Math.sqrt(
-  (2 * AIRCRAFT.mass * G) / (AIRCRAFT.airDensity * AIRCRAFT.wingArea * DEFAULT_LIFT_SLOPE * AIRCRAFT.incidence),
-);
+export const AIRCRAFT_TAIL_INCIDENCE =
+  (AIRCRAFT.finHeight * AIRCRAFT.finArea * AIRCRAFT.tailDragZero) / (AIRCRAFT.tailArm * AIRCRAFT.tailArea * AIRCRAFT.tailSlope);
 
 /**
- * Drag of the level, trimmed aircraft at `speed` m/s, N: wing C_D0 + K C_L^2 at its incidence, tail
- * and fin at zero angle of attack (C_D0 each): the thrust steady level flight needs.
+ * The trim speed, m/s, of an aircraft whose wing has dihedral `dihedral` (rad, default
+ * `AIRCRAFT.dihedral`): lift = weight with the body level. Each wing half meets the air at its
+ * incidence i and lifts q (S/2) a i square to its span, so the vertical part of the wing's lift is
+ * q S a i cos(dihedral); the tailplane adds q S_t a_t i_t. From
+ * m g = (rho V^2 / 2)(S a i cos(dihedral) + S_t a_t i_t), V = sqrt(2 m g / (rho (S a i cos(dihedral) + S_t a_t i_t))) (a the wing's lift slope; about 114 m/s).
+ * @throws RangeError if `dihedral` is not in [0, pi/6].
+ */
+export function aircraftTrimSpeed(dihedral: number = AIRCRAFT.dihedral): number {
+  assertDihedral('aircraftTrimSpeed', dihedral);
+  const A = AIRCRAFT;
+  return Math.sqrt(
+    (2 * A.mass * G) /
+      (A.airDensity *
+        (A.wingArea * DEFAULT_LIFT_SLOPE * A.incidence * Math.cos(dihedral) + A.tailArea * A.tailSlope * AIRCRAFT_TAIL_INCIDENCE)),
+  );
+}
+
+/** The trim speed of the aircraft with its own dihedral, m/s (`aircraftTrimSpeed()`, about 114 m/s). */
+export const AIRCRAFT_TRIM_SPEED = aircraftTrimSpeed();
+
+/**
+ * Drag of the level, trimmed aircraft at `speed` m/s (> 0), N: wing C_D0 + K C_L^2 at its incidence
+ * (a wing half with dihedral meets air along the body x axis at its incidence too), tailplane
+ * C_D0 + K_t (a_t i_t)^2 at its incidence, fin C_D0 at zero angle of attack: the thrust steady level
+ * flight needs.
  */
 export function aircraftLevelDrag(speed: number): number {
   const A = AIRCRAFT,
     q = 0.5 * A.airDensity * speed * speed;
   const cl = liftCoefficient(A.incidence, DEFAULT_LIFT_SLOPE, A.stallAngle, 0);
+  const clTail = A.tailSlope * AIRCRAFT_TAIL_INCIDENCE;
   return (
-    q * (A.wingArea * dragCoefficient(A.incidence, cl, A.stallAngle, A.dragZero, A.inducedDrag) + (A.tailArea + A.finArea) * A.tailDragZero)
+    q *
+    (A.wingArea * dragCoefficient(A.incidence, cl, A.stallAngle, A.dragZero, A.inducedDrag) +
+      A.tailArea * (A.tailDragZero + A.tailInducedDrag * clTail * clTail) +
+      A.finArea * A.tailDragZero)
   );
+}
+
+/** Refuses a dihedral that is not a finite angle in [0, pi/6] rad (0 to 30 degrees). */
+function assertDihedral(where: string, dihedral: number): void {
+  assertFinite(where, 'dihedral', dihedral);
+  if (dihedral < 0 || dihedral > Math.PI / 6) throw new RangeError(`${where}: dihedral must be in [0, pi/6] rad, got ${dihedral}`);
 }
 
 /** Options of the `aircraft` scene. */
@@ -83,10 +137,16 @@ export interface AircraftOptions {
   seed?: number;
   /** Start altitude, m, > 0. Default 1,200. */
   altitude?: number;
-  /** Start speed along +x, m/s, > 0. Default the trim speed. */
+  /** Start speed along +x, m/s, > 0. Default the trim speed (`aircraftTrimSpeed(dihedral)`). */
   speed?: number;
   /** Start thrust, N, in [0, maxThrust]. Default the level drag at the start speed. */
   thrust?: number;
+  /**
+   * Dihedral of the wing halves, rad, in [0, pi/6]. Default `AIRCRAFT.dihedral`. 0 gives a flat wing
+   * with no dihedral effect (spirally unstable: a bank left alone steepens). The default start speed
+   * is the trim speed of this dihedral.
+   */
+  dihedral?: number;
 }
 
 /** What `aircraft.build` returns. */
@@ -125,14 +185,16 @@ export const aircraft: SceneDefinition<AircraftOptions, AircraftHandles> = {
   },
   build(world: PhysicsWorld, options: AircraftOptions = {}) {
     const where = 'aircraft.build';
-    assertKnownKeys(where, options, ['count', 'seed', 'altitude', 'speed', 'thrust']);
+    assertKnownKeys(where, options, ['count', 'seed', 'altitude', 'speed', 'thrust', 'dihedral']);
     if (world.dimensions !== 3) throw new RangeError(`${where}: needs a 3D world, got dimensions ${world.dimensions}`);
     if (options.count !== undefined && options.count !== 1) throw new RangeError(`${where}: count must be 1, got ${String(options.count)}`);
     const seed = options.seed ?? 1;
     assertFinite(where, 'seed', seed);
     const altitude = options.altitude ?? 1200;
     assertPositive(where, 'altitude', altitude);
-    const speed = options.speed ?? AIRCRAFT_TRIM_SPEED;
+    const dihedral = options.dihedral ?? AIRCRAFT.dihedral;
+    assertDihedral(where, dihedral);
+    const speed = options.speed ?? aircraftTrimSpeed(dihedral);
     assertPositive(where, 'speed', speed);
     const A = AIRCRAFT;
     const thrust = options.thrust ?? aircraftLevelDrag(speed);
@@ -142,27 +204,32 @@ export const aircraft: SceneDefinition<AircraftOptions, AircraftHandles> = {
 
     const body = addBody(world, { position: [0, altitude, 0], velocity: [speed, 0, 0], mass: A.mass });
     setInertia(world, body, A.inertia);
+    // Each half's normal: the wing's at its incidence, (-sin i, cos i, 0), turned about the body x
+    // axis by the dihedral so that it leans inboard (the tip is raised).
+    const ci = Math.cos(A.incidence),
+      si = Math.sin(A.incidence),
+      cg = Math.cos(dihedral),
+      sg = Math.sin(dihedral);
     const wing = {
       area: A.wingArea / 2,
-      normal: [-Math.sin(A.incidence), Math.cos(A.incidence), 0],
       controlPower: A.aileronPower,
       stallAngle: A.stallAngle,
       dragZero: A.dragZero,
       inducedDrag: A.inducedDrag,
       airDensity: A.airDensity,
     };
-    const leftWing = addLiftingSurface(world, { body, offset: [0, 0, -A.wingHalfOffset], ...wing });
-    const rightWing = addLiftingSurface(world, { body, offset: [0, 0, A.wingHalfOffset], ...wing });
+    const leftWing = addLiftingSurface(world, { body, offset: [0, 0, -A.wingHalfOffset], normal: [-si, ci * cg, ci * sg], ...wing });
+    const rightWing = addLiftingSurface(world, { body, offset: [0, 0, A.wingHalfOffset], normal: [-si, ci * cg, -ci * sg], ...wing });
     const tail = addLiftingSurface(world, {
       body,
       offset: [-A.tailArm, 0, 0],
-      normal: [0, 1, 0],
+      normal: [-Math.sin(AIRCRAFT_TAIL_INCIDENCE), Math.cos(AIRCRAFT_TAIL_INCIDENCE), 0],
       area: A.tailArea,
       liftSlope: A.tailSlope,
       controlPower: A.elevatorPower,
       stallAngle: A.stallAngle,
       dragZero: A.tailDragZero,
-      inducedDrag: 0.08,
+      inducedDrag: A.tailInducedDrag,
       airDensity: A.airDensity,
     });
     const fin = addLiftingSurface(world, {
@@ -174,7 +241,7 @@ export const aircraft: SceneDefinition<AircraftOptions, AircraftHandles> = {
       controlPower: A.rudderPower,
       stallAngle: A.stallAngle,
       dragZero: A.tailDragZero,
-      inducedDrag: 0.1,
+      inducedDrag: A.finInducedDrag,
       airDensity: A.airDensity,
     });
     setBodyThrust(world, body, [thrust, 0, 0]);

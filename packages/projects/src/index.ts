@@ -8,7 +8,15 @@
  */
 
 export type { AircraftHandles, AircraftOptions } from './aircraft.js';
-export { AIRCRAFT, AIRCRAFT_TRIM_SPEED, aircraft, aircraftLevelDrag, terrainHeight } from './aircraft.js';
+export {
+  AIRCRAFT,
+  AIRCRAFT_TAIL_INCIDENCE,
+  AIRCRAFT_TRIM_SPEED,
+  aircraft,
+  aircraftLevelDrag,
+  aircraftTrimSpeed,
+  terrainHeight,
+} from './aircraft.js';
 export type { SolarSystemBody, SolarSystemHandles, SolarSystemOptions, SolarSystemPlanet } from './solar-system.js';
 export {
   AU,
