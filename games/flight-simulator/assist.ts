@@ -1,0 +1,195 @@
+/**
+ * The flight simulator's flight assist: turns the pilot's stick into aileron, elevator and rudder
+ * each step, the way a fly-by-wire control law does, so a player who has never flown can steer. The
+ * physics stays the aircraft scene's own (lifting surfaces, Euler's equations); the assist only
+ * decides where the control surfaces point.
+ *
+ * - Stick sideways: a bank angle, up to `ASSIST.maxBank` at full stick (the ailerons roll the
+ *   aircraft there and hold it); let go, the wings roll level.
+ * - Stick forward and back: a flight-path angle, up to `ASSIST.maxClimb` up or down at full stick
+ *   (the elevator pitches the aircraft until its path climbs or dives at that angle, pulling harder
+ *   in a bank to keep the height); let go, the aircraft flies level.
+ * - Rudder: as held, plus what cancels the sideslip (a coordinated turn).
+ * - Throttle: the engine holds the speed the pilot sets (`autoThrottle`): the level drag there and
+ *   the weight's pull along a climb, plus more while the aircraft is slower than set.
+ * - A wing angle of attack past `ASSIST.alphaLimit` is not asked for: the elevator eases off before
+ *   the stall (the aircraft still stalls if it is slowed far enough by a long climb).
+ *
+ * Without the assist (the panel's switch) the stick moves the control surfaces directly.
+ * Headless (no DOM), so its behaviour is tested in node (test/games/flight-simulator-assist.test.ts).
+ */
+
+import type { PhysicsWorld } from '@bitphysics/physics';
+import { AIRCRAFT, aircraftLevelDrag } from '@bitphysics/projects';
+
+const DEG = Math.PI / 180;
+
+/** The pilot's inputs, each in [-1, 1]. */
+export interface PilotInput {
+  /** Stick sideways: + right. */
+  roll: number;
+  /** Stick forward and back: + nose up (climb). */
+  pitch: number;
+  /** Rudder pedals: + nose right. */
+  yaw: number;
+}
+
+/** Control surface commands, each a fraction of full deflection in [-1, 1]. */
+export interface ControlCommand {
+  /** + rolls right (the left aileron down, the right one up). */
+  aileron: number;
+  /** + pitches the nose up (the elevator's trailing edge up). */
+  elevator: number;
+  /** + yaws the nose right. */
+  rudder: number;
+}
+
+/** The aircraft's state as the assist and the instruments read it. Angles in rad, speeds in m/s. */
+export interface FlightState {
+  /** Airspeed |v|, m/s. */
+  speed: number;
+  /** Bank angle, rad, + right wing down, in (-pi, pi]: atan2(-r_y, u_y) of the body's right and up axes. */
+  bank: number;
+  /** Pitch of the nose above the horizon, rad, in [-pi/2, pi/2]. */
+  pitch: number;
+  /** Flight-path angle: the climb of the velocity above the horizon, rad. */
+  path: number;
+  /** Heading of the nose, rad, in [0, 2 pi): 0 along +x, pi/2 along +z (to the right). */
+  heading: number;
+  /** The wing's angle of attack, rad: the body's (atan2(-v.u, v.f)) plus the wing's incidence. */
+  alpha: number;
+  /** Sideslip, rad, + with the air meeting the aircraft from its right: asin(v.r / |v|). */
+  sideslip: number;
+  /** Body rates, rad/s: roll (+ right wing down), pitch (+ nose up), yaw (+ nose right). */
+  rollRate: number;
+  pitchRate: number;
+  yawRate: number;
+}
+
+/** The assist's settings. */
+export const ASSIST = Object.freeze({
+  /** Bank at full sideways stick, rad (50 degrees: a turn of about 1.6 g). */
+  maxBank: 50 * DEG,
+  /** Flight-path angle at full stick forward or back, rad. */
+  maxClimb: 20 * DEG,
+  /** Aileron per radian of bank error (1/rad): full aileron rolls at about 0.5 rad/s at cruise. */
+  bankGain: 2.5,
+  /** Aileron per rad/s of roll rate, s: damps the roll towards the bank asked for. */
+  rollDamping: 0.4,
+  /** Elevator per radian of flight-path error (1/rad). */
+  pathGain: 5,
+  /** Elevator per radian-second of flight-path error (1/(rad s)): the integral that finds the trim. */
+  pathIntegral: 0.8,
+  /**
+   * Elevator per unit of extra load factor 1 / cos(bank) - 1 (the lift a level turn needs beyond the
+   * weight), asked for at once so that a bank does not first lose height while the integral catches up.
+   */
+  turnElevator: 0.7,
+  /** Elevator per rad/s of pitch rate, s: damps the short-period pitching. */
+  pitchDamping: 1.5,
+  /** Largest wing angle of attack the assist asks for, rad (the wing stalls at 20 degrees). */
+  alphaLimit: 14 * DEG,
+  /** Elevator taken off per radian of angle of attack past the limit (1/rad). */
+  alphaGain: 8,
+  /** Rudder per radian of sideslip (1/rad): turns the nose into the air. */
+  sideslipGain: 3,
+  /** Fastest change of the bank asked for, rad/s (a full stick's bank is reached smoothly). */
+  bankRate: 90 * DEG,
+  /** Throttle added per m/s the aircraft is slower than the speed set, s/m. */
+  speedGain: 0.03,
+  /** Slowest and fastest speed the pilot can set, m/s (the wing stalls near 60 m/s in level flight). */
+  minSpeed: 90,
+  maxSpeed: 220,
+});
+
+/** What the assist keeps between steps: the integral of the flight-path error and the bank asked for. */
+export interface AssistState {
+  /** Integral of the flight-path error, rad s (kept within what makes full elevator). */
+  integral: number;
+  /** Bank asked for now, rad (moves towards the stick's at `ASSIST.bankRate`). */
+  bankTarget: number;
+}
+
+/** A new assist state: no integral, wings level asked for. */
+export function createAssistState(): AssistState {
+  return { integral: 0, bankTarget: 0 };
+}
+
+const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
+
+/** Reads the flight state of `body` (a 3D body with an orientation) from the world. */
+export function flightState(world: PhysicsWorld, body: number): FlightState {
+  const c = world.components;
+  const qx = c.Orientation.x[body]!,
+    qy = c.Orientation.y[body]!,
+    qz = c.Orientation.z[body]!,
+    qw = c.Orientation.w[body]!;
+  // The body's axes in world coordinates (the rotation matrix's columns): forward f, up u, right r.
+  const fx = 1 - 2 * (qy * qy + qz * qz),
+    fy = 2 * (qx * qy + qz * qw),
+    fz = 2 * (qx * qz - qy * qw);
+  const ux = 2 * (qx * qy - qz * qw),
+    uy = 1 - 2 * (qx * qx + qz * qz),
+    uz = 2 * (qy * qz + qx * qw);
+  const rx = 2 * (qx * qz + qy * qw),
+    ry = 2 * (qy * qz - qx * qw),
+    rz = 1 - 2 * (qx * qx + qy * qy);
+  const vx = c.Velocity.x[body]!,
+    vy = c.Velocity.y[body]!,
+    vz = c.Velocity.z[body]!;
+  const speed = Math.hypot(vx, vy, vz);
+  const wx = c.AngularVelocity.x[body]!,
+    wy = c.AngularVelocity.y[body]!,
+    wz = c.AngularVelocity.z[body]!;
+  const vf = vx * fx + vy * fy + vz * fz,
+    vu = vx * ux + vy * uy + vz * uz,
+    vr = vx * rx + vy * ry + vz * rz;
+  return {
+    speed,
+    bank: Math.atan2(-ry, uy),
+    pitch: Math.asin(clamp(fy, -1, 1)),
+    path: speed > 0 ? Math.asin(clamp(vy / speed, -1, 1)) : 0,
+    heading: (Math.atan2(fz, fx) + 2 * Math.PI) % (2 * Math.PI),
+    alpha: Math.atan2(-vu, vf) + AIRCRAFT.incidence,
+    sideslip: speed > 0 ? Math.asin(clamp(vr / speed, -1, 1)) : 0,
+    rollRate: wx * fx + wy * fy + wz * fz,
+    pitchRate: wx * rx + wy * ry + wz * rz,
+    // A rotation about the body's up axis turns the nose to the left: nose right is its negative.
+    yawRate: -(wx * ux + wy * uy + wz * uz),
+  };
+}
+
+/**
+ * One step of the assist: the control surfaces that fly the aircraft in `s` where the pilot's
+ * `input` asks (see the header), over a step of `dt` s (> 0). Updates `state`.
+ */
+export function assist(s: FlightState, input: PilotInput, state: AssistState, dt: number): ControlCommand {
+  const A = ASSIST;
+  // Bank: towards the stick's bank at a limited rate, the ailerons on the error and the roll rate.
+  const wanted = A.maxBank * clamp(input.roll, -1, 1);
+  state.bankTarget += clamp(wanted - state.bankTarget, -A.bankRate * dt, A.bankRate * dt);
+  const aileron = clamp(A.bankGain * (state.bankTarget - s.bank) - A.rollDamping * s.rollRate, -1, 1);
+  // Flight path: proportional, integral and pitch-rate damping. The integral finds the elevator the
+  // trim needs (more in a bank, where the lift must also carry the turn) and winds no further than
+  // full elevator.
+  const error = A.maxClimb * clamp(input.pitch, -1, 1) - s.path;
+  const limit = 1 / A.pathIntegral;
+  state.integral = clamp(state.integral + error * dt, -limit, limit);
+  const turn = 1 / Math.max(0.3, Math.cos(s.bank)) - 1;
+  let elevator = A.pathGain * error + A.pathIntegral * state.integral + A.turnElevator * turn - A.pitchDamping * s.pitchRate;
+  // Angle of attack limit: past it, nose-up elevator is taken off (never beyond what brings it back).
+  if (s.alpha > A.alphaLimit) elevator = Math.min(elevator, -A.alphaGain * (s.alpha - A.alphaLimit));
+  elevator = clamp(elevator, -1, 1);
+  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip, -1, 1);
+  return { aileron, elevator, rudder };
+}
+
+/**
+ * The throttle, a fraction of `AIRCRAFT.maxThrust` in [0, 1], that holds `setSpeed` (m/s): the
+ * level drag at that speed (`aircraftLevelDrag`) plus the weight's part along the path m g sin(path),
+ * over the largest thrust, plus `ASSIST.speedGain` per m/s the aircraft is slower than set.
+ */
+export function autoThrottle(s: FlightState, setSpeed: number): number {
+  const need = aircraftLevelDrag(setSpeed) + AIRCRAFT.mass * 9.81 * Math.sin(s.path);
+  return clamp(need / AIRCRAFT.maxThrust + ASSIST.speedGain * (setSpeed - s.speed), 0, 1);
+}
