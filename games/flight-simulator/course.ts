@@ -1,0 +1,112 @@
+/**
+ * The flight simulator's course: a chain of rings to fly through, laid out from the start along a
+ * path that turns and climbs a little more at each ring, always clear of the hills; and the rule
+ * that decides when a ring is passed or missed. Headless (no drawing), so it is tested in node
+ * (test/games/flight-simulator-course.test.ts).
+ */
+
+import { Rng } from '@bitphysics/physics';
+import { terrainHeight } from '@bitphysics/projects';
+
+/** Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside. */
+export const RING_RADIUS = 45;
+
+/** A crossing of a ring's plane farther than this from its centre, m, is not counted (the pilot is elsewhere). */
+export const MISS_RANGE = 600;
+
+/** Least height of a ring above the ground under it, m. */
+export const RING_CLEARANCE = 150;
+
+/** One ring of the course. */
+export interface Ring {
+  /** Centre, m (world; y up). */
+  x: number;
+  y: number;
+  z: number;
+  /** Unit normal of the ring's plane, the way through it (from the ring before towards this one). */
+  nx: number;
+  ny: number;
+  nz: number;
+  /** 'ahead' until the aircraft crosses its plane, then 'passed' (inside the ring) or 'missed'. */
+  status: 'ahead' | 'passed' | 'missed';
+}
+
+/** Options of `layCourse`. */
+export interface CourseOptions {
+  /** Terrain parameters of the aircraft scene (`AircraftHandles.terrain`). */
+  terrain: Float64Array;
+  /** Seed of the layout; any finite number. */
+  seed: number;
+  /** Rings, integer >= 1. */
+  count: number;
+  /** Where the aircraft starts, m: the course leads away from here along +x. */
+  start: readonly [number, number, number];
+}
+
+/**
+ * Lays out `count` rings from `start`: the first 1.6 km straight ahead at the start height (an easy
+ * first ring), then each 1.5 to 2.2 km after the one before, turning by up to 20 degrees more at
+ * each ring (up to 40 degrees from the 6th; within 100 degrees of +x) and changing height by up to 150 m (250 m from the 6th),
+ * kept between 400 and 1,300 m and at least RING_CLEARANCE above the ground.
+ * @throws RangeError on a count that is not an integer >= 1 or a seed or start that is not finite.
+ */
+export function layCourse(options: CourseOptions): Ring[] {
+  const { terrain, seed, count, start } = options;
+  if (!Number.isInteger(count) || count < 1) throw new RangeError(`layCourse: count must be an integer >= 1, got ${count}`);
+  if (!Number.isFinite(seed)) throw new RangeError(`layCourse: seed must be finite, got ${seed}`);
+  if (!start.every(Number.isFinite)) throw new RangeError(`layCourse: start must be finite, got ${start.join(', ')}`);
+  const rng = new Rng(seed);
+  const rings: Ring[] = [];
+  let [x, y, z] = start;
+  let heading = 0;
+  for (let i = 0; i < count; i++) {
+    const hard = i >= 5;
+    const step = i === 0 ? 1600 : rng.range(1500, 2200);
+    // Turns, kept within 100 degrees of +x so that the course leads on and never folds back.
+    if (i > 0) heading = Math.max(-1.75, Math.min(1.75, heading + rng.range(-1, 1) * (hard ? 40 : 20) * (Math.PI / 180)));
+    const nx0 = x + step * Math.cos(heading),
+      nz0 = z + step * Math.sin(heading);
+    const ground = terrainHeight(terrain, nx0, nz0);
+    const ny0 = Math.max(ground + RING_CLEARANCE, Math.min(1300, Math.max(400, y + (i === 0 ? 0 : rng.range(-1, 1) * (hard ? 250 : 150)))));
+    const dx = nx0 - x,
+      dy = ny0 - y,
+      dz = nz0 - z,
+      d = Math.hypot(dx, dy, dz);
+    rings.push({ x: nx0, y: ny0, z: nz0, nx: dx / d, ny: dy / d, nz: dz / d, status: 'ahead' });
+    x = nx0;
+    y = ny0;
+    z = nz0;
+  }
+  return rings;
+}
+
+/**
+ * What a move of the aircraft's centre from `a` to `b` (m, world) does to `ring`: 'passed' when it
+ * crosses the ring's plane the way through it inside RING_RADIUS of the centre, 'missed' when it
+ * crosses it outside but within MISS_RANGE, else null (no crossing, a crossing the wrong way or far
+ * off). The crossing point is where the segment meets the plane.
+ */
+export function crossRing(ring: Ring, a: readonly number[], b: readonly number[]): 'passed' | 'missed' | null {
+  const da = (a[0]! - ring.x) * ring.nx + (a[1]! - ring.y) * ring.ny + (a[2]! - ring.z) * ring.nz,
+    db = (b[0]! - ring.x) * ring.nx + (b[1]! - ring.y) * ring.ny + (b[2]! - ring.z) * ring.nz;
+  if (!(da < 0 && db >= 0)) return null;
+  const t = da / (da - db);
+  const px = a[0]! + t * (b[0]! - a[0]!) - ring.x,
+    py = a[1]! + t * (b[1]! - a[1]!) - ring.y,
+    pz = a[2]! + t * (b[2]! - a[2]!) - ring.z;
+  const off = Math.hypot(px, py, pz);
+  if (off < RING_RADIUS) return 'passed';
+  return off < MISS_RANGE ? 'missed' : null;
+}
+
+/** The first ring still ahead (the one to fly through next), or -1 when none is. */
+export function nextRing(rings: readonly Ring[]): number {
+  return rings.findIndex((r) => r.status === 'ahead');
+}
+
+/** Stars for a finished course: 3 for every ring, 2 for at least 70 %, 1 for at least 40 %, else 0. */
+export function courseStars(passed: number, total: number): number {
+  if (total <= 0) return 0;
+  const f = passed / total;
+  return f >= 1 ? 3 : f >= 0.7 ? 2 : f >= 0.4 ? 1 : 0;
+}
