@@ -1,80 +1,119 @@
 /**
- * Flight simulator: the book's aircraft (Ramtal and Dobre ch. 16; the `aircraft` scene) flown with
- * the keyboard over seeded hills. Lift and drag come from each surface's angle of attack (wing
- * halves with ailerons, tailplane with the elevator, fin with the rudder), with a stall past 20
- * degrees; the controls act where the surfaces are, so they turn the aircraft through Euler's
- * equations; the damping of every rotation comes from the surfaces meeting their own motion. Fly
- * through the rings for points; do not fly into the hills.
- * Keys: arrows or W/S/A/D: pitch and roll; Q / E: rudder; Shift / Ctrl (or + / -): throttle;
+ * Flight simulator: the book's aircraft (Ramtal and Dobre ch. 16; the `aircraft` scene) flown over
+ * seeded hills through a course of rings. Lift and drag come from each surface's angle of attack
+ * (wing halves with dihedral and ailerons, tailplane with the elevator, fin with the rudder), with a
+ * stall past 20 degrees; the controls act where the surfaces are, so they turn the aircraft through
+ * Euler's equations. The flight assist (./assist.ts, on by default) turns the stick into a bank and
+ * a climb or dive and holds the speed set; without it the stick moves the surfaces directly.
+ * Fly through every ring (./course.ts) as fast as you can; do not hit the ground.
+ * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up);
+ * Q / E: rudder; Shift / Ctrl (or + / -): faster / slower (throttle without the assist);
  * C: camera (chase / cockpit); P pause, N step, R reset.
- * Touch: a virtual stick under the scene (drag up to push the nose down, sideways to roll), hold
- * buttons for throttle and rudder, a camera button. Sound: the engine's hum follows the throttle.
- * URL: ?seed=n, ?rings=n (1..30).
+ * Touch: a stick under the scene (up climbs, sideways banks), buttons for speed, rudder and camera.
+ * Sound: the engine follows the throttle; chimes for rings, a low tone for a miss, a stall horn,
+ * a ground warning and the crash.
+ * URL: ?seed=n, ?rings=n (1..30), ?assist=0.
  */
 
-import { createButtonBar, createPanel, createStick, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import {
+  createActionButton,
+  createButtonBar,
+  createPanel,
+  createStick,
+  flagParam,
+  getSound,
+  numberParam,
+  pageLayout,
+  seedParam,
+} from '@bitphysics/game-kit';
 import { startThreeGame } from '@bitphysics/game-kit/three';
-import { createPhysicsWorld, type PhysicsWorld, Rng, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
+import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
   BoxGeometry,
-  type BufferAttribute,
   type BufferGeometry,
-  Color,
   ConeGeometry,
   CylinderGeometry,
   DoubleSide,
   Float32BufferAttribute,
-  Fog,
   HemisphereLight,
+  IcosahedronGeometry,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
-  PlaneGeometry,
   Quaternion,
   TorusGeometry,
   Vector3,
 } from 'three';
 import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
+import { ASSIST, assist, autoThrottle, createAssistState, type FlightState, flightState } from './assist';
+import { courseStars, crossRing, layCourse, nextRing, RING_RADIUS, type Ring } from './course';
+import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
 const params = {
   seed: seedParam(),
   rings: numberParam('rings', { default: 10, min: 1, max: 30, integer: true }),
+  /** The flight assist: the stick asks for a bank and a climb, the engine holds the speed set. */
+  assist: new URLSearchParams(location.search).has('assist') ? flagParam('assist') : true,
+  /** Pilot's pitch: stick back (down arrow, stick down) pulls the nose up, as in an aircraft. */
+  pilotPitch: flagParam('pilotPitch'),
   /** Full deflection of each control, degrees. */
   authority: 15,
   reset: () => shell.reset(),
 };
 
+/** Height the aircraft starts at, m. */
+const START_ALTITUDE = 900;
+/** Speed set at the start, m/s (the assist's engine accelerates to it from the trim speed). */
+const START_SPEED = 130;
+/** Sea level of the scenery, m: below it is water, which ends the flight as the ground does. */
+const SEA_LEVEL = 60;
+
 /** Controls and game state beside the physics. */
 const state = {
+  /** Throttle, fraction of the largest thrust, [0, 1]. */
   throttle: 0,
+  /** Speed set for the assist's engine, m/s. */
+  setSpeed: START_SPEED,
+  /** Control surfaces, fractions of full deflection in [-1, 1]: + roll right, + nose up, + nose right. */
   elevator: 0,
   aileron: 0,
   rudder: 0,
+  /** Rings passed and missed. */
   score: 0,
-  crashed: false,
+  missed: 0,
+  /** 'flying', then 'crashed' (into the ground or the sea) or 'done' (no ring left). */
+  phase: 'flying' as 'flying' | 'crashed' | 'done',
+  /** Time since the start, s of game time; stops when the course is done. */
+  time: 0,
   camera: 'chase' as 'chase' | 'cockpit',
   stalled: false,
+  /** Warnings shown now: the wing near or past the stall, the ground coming up fast. */
+  warning: '' as '' | 'STALL' | 'PULL UP',
 };
-let handles: AircraftHandles;
-/** Rings: centre (x, y, z) and whether passed. */
-let rings: { x: number; y: number; z: number; passed: boolean }[] = [];
+let handles!: AircraftHandles;
+let rings: Ring[] = [];
+const assistState = createAssistState();
 
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(aircraft.worldOptions());
-  handles = aircraft.build(world, { seed: params.seed, altitude: 900 });
-  state.throttle = aircraftLevelDrag(AIRCRAFT_TRIM_SPEED) / AIRCRAFT.maxThrust;
-  Object.assign(state, { elevator: 0, aileron: 0, rudder: 0, score: 0, crashed: false, stalled: false });
-  const rng = new Rng(params.seed + 7);
-  rings = [];
-  let x = 0,
-    z = 0;
-  for (let i = 0; i < params.rings; i++) {
-    x += rng.range(1500, 2500);
-    z += rng.range(-600, 600);
-    // Near the cruise altitude, but always 200 m clear of the hills below.
-    rings.push({ x, y: Math.max(terrainHeight(handles.terrain, x, z) + 200, 900 + rng.range(-250, 250)), z, passed: false });
-  }
+  handles = aircraft.build(world, { seed: params.seed, altitude: START_ALTITUDE });
+  Object.assign(state, {
+    throttle: aircraftLevelDrag(AIRCRAFT_TRIM_SPEED) / AIRCRAFT.maxThrust,
+    setSpeed: START_SPEED,
+    elevator: 0,
+    aileron: 0,
+    rudder: 0,
+    score: 0,
+    missed: 0,
+    phase: 'flying',
+    time: 0,
+    stalled: false,
+    warning: '',
+  });
+  Object.assign(assistState, createAssistState());
+  rings = layCourse({ terrain: handles.terrain, seed: params.seed + 7, count: params.rings, start: [0, START_ALTITUDE, 0] });
+  events.length = 0;
   return world;
 }
 
@@ -95,77 +134,159 @@ function approach(value: number, target: number, rate: number, dt: number): numb
   return value + Math.max(-rate * dt, Math.min(rate * dt, target - value));
 }
 
-const q = new Quaternion(),
-  f = new Vector3(),
-  u = new Vector3(),
-  r = new Vector3(),
-  v = new Vector3();
+const clamp1 = (x: number): number => Math.max(-1, Math.min(1, x));
 
-/** The body's axes in world coordinates: forward f, up u, right r. */
-function axes(world: PhysicsWorld): void {
-  const O = world.components.Orientation,
-    e = handles.body;
-  q.set(O.x[e]!, O.y[e]!, O.z[e]!, O.w[e]!);
-  f.set(1, 0, 0).applyQuaternion(q);
-  u.set(0, 1, 0).applyQuaternion(q);
-  r.set(0, 0, 1).applyQuaternion(q);
+/** The pilot's inputs now, keys and stick added: roll + right, pitch + nose up, yaw + nose right. */
+function pilotInput(): { roll: number; pitch: number; yaw: number } {
+  const up = held.has('arrowup') || held.has('w') ? 1 : 0,
+    down = held.has('arrowdown') || held.has('s') ? 1 : 0;
+  // Up climbs, as most players expect; with the pilot's pitch, down (stick back) pulls up.
+  const sign = params.pilotPitch ? -1 : 1;
+  return {
+    roll: clamp1((held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x),
+    pitch: clamp1(sign * (up - down + stickInput.y)),
+    yaw: (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0),
+  };
 }
 
-/** Aileron the rudder adds, as a fraction of full, to bank into the turn it asks for. */
-const RUDDER_ROLL = 0.33;
-
-function stepWorld(world: PhysicsWorld): void {
-  if (state.crashed) return;
-  const dt = world.dt;
-  const clamp = (x: number): number => Math.max(-1, Math.min(1, x));
-  // Keys and the on-screen stick add up (stick up = push = nose down, as a real stick).
-  const pitch = clamp((held.has('arrowdown') || held.has('s') ? 1 : 0) - (held.has('arrowup') || held.has('w') ? 1 : 0) - stickInput.y);
-  const yaw = (held.has('e') ? 1 : 0) - (held.has('q') ? 1 : 0);
-  // The rudder alone only yaws the nose into a sideslip of about 6 degrees (the fin's own lift
-  // balances it) and turns the flight path hardly at all, which reads as broken. As a
-  // turn-coordinator does, held rudder also asks for a third of full aileron the same way, so the
-  // aircraft banks into the turn.
-  const roll = clamp(
-    (held.has('arrowright') || held.has('d') ? 1 : 0) - (held.has('arrowleft') || held.has('a') ? 1 : 0) + stickInput.x + RUDDER_ROLL * yaw,
-  );
-  // Stick inputs spring back to neutral; the throttle stays where it is put.
-  state.elevator = approach(state.elevator, pitch, 3, dt);
-  state.aileron = approach(state.aileron, roll, 3, dt);
-  state.rudder = approach(state.rudder, yaw, 3, dt);
-  if (held.has('shift') || held.has('+') || held.has('=')) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
-  if (held.has('control') || held.has('-')) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
-  const full = (params.authority * Math.PI) / 180;
-  const s = handles.surfaces;
-  // Pull (down arrow) = elevator trailing edge up = less tail lift = nose up.
-  setControlDeflection(world, s.tail, -state.elevator * full);
-  // Roll right: the left aileron down (more lift), the right one up.
-  setControlDeflection(world, s.leftWing, state.aileron * full);
-  setControlDeflection(world, s.rightWing, -state.aileron * full);
-  // Right rudder: the fin's force to the left at the tail swings the nose right.
-  setControlDeflection(world, s.fin, -state.rudder * full);
-  setBodyThrust(world, handles.body, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
-  const P = world.components.Position,
-    e = handles.body;
-  const x0 = P.x[e]!;
-  step(world);
-  // Rings: passed when the aircraft crosses a ring's plane (x = const) within 45 m of its centre.
-  for (const ring of rings) {
-    if (ring.passed || !(x0 < ring.x && P.x[e]! >= ring.x)) continue;
-    if (Math.hypot(P.y[e]! - ring.y, P.z[e]! - ring.z) < 45) {
-      ring.passed = true;
-      state.score++;
-      sound.chime(state.score === rings.length ? 1320 : 880);
-      ringMeshes[rings.indexOf(ring)]!.material = passedMaterial;
-    }
-  }
-  if (P.y[e]! < terrainHeight(handles.terrain, P.x[e]!, P.z[e]!) + 2) {
-    state.crashed = true;
-    sound.explosion(1);
-  }
-}
-
+/** Game events for the banner and the sounds, newest last: text, colour, game time. */
+const events: { text: string; colour: string; time: number }[] = [];
 const sound = getSound();
 const engine = sound.engine('propeller');
+/** Game time of the last warning beep, s. */
+let lastBeep = 0;
+
+const prev = [0, 0, 0],
+  now = [0, 0, 0];
+
+function stepWorld(world: PhysicsWorld): void {
+  if (state.phase === 'crashed') return;
+  const dt = world.dt,
+    e = handles.body;
+  const input = pilotInput();
+  const s = flightState(world, e);
+  const faster = held.has('shift') || held.has('+') || held.has('='),
+    slower = held.has('control') || held.has('-');
+  if (params.assist) {
+    const c = assist(s, input, assistState, dt);
+    state.aileron = approach(state.aileron, c.aileron, 6, dt);
+    state.elevator = approach(state.elevator, c.elevator, 6, dt);
+    state.rudder = approach(state.rudder, c.rudder, 6, dt);
+    if (faster) state.setSpeed = Math.min(ASSIST.maxSpeed, state.setSpeed + 25 * dt);
+    if (slower) state.setSpeed = Math.max(ASSIST.minSpeed, state.setSpeed - 25 * dt);
+    state.throttle = approach(state.throttle, autoThrottle(s, state.setSpeed), 0.8, dt);
+  } else {
+    // Stick inputs spring back to neutral; the throttle stays where it is put.
+    state.elevator = approach(state.elevator, input.pitch, 3, dt);
+    state.aileron = approach(state.aileron, input.roll, 3, dt);
+    state.rudder = approach(state.rudder, input.yaw, 3, dt);
+    if (faster) state.throttle = Math.min(1, state.throttle + 0.4 * dt);
+    if (slower) state.throttle = Math.max(0, state.throttle - 0.4 * dt);
+  }
+  const full = (params.authority * Math.PI) / 180;
+  const surfaces = handles.surfaces;
+  // Nose up: the elevator's trailing edge up, less tail lift.
+  setControlDeflection(world, surfaces.tail, -state.elevator * full);
+  // Roll right: the left aileron down (more lift), the right one up.
+  setControlDeflection(world, surfaces.leftWing, state.aileron * full);
+  setControlDeflection(world, surfaces.rightWing, -state.aileron * full);
+  // Right rudder: the fin's force to the left at the tail swings the nose right.
+  setControlDeflection(world, surfaces.fin, -state.rudder * full);
+  setBodyThrust(world, e, [state.throttle * AIRCRAFT.maxThrust, 0, 0]);
+  const P = world.components.Position;
+  prev[0] = P.x[e]!;
+  prev[1] = P.y[e]!;
+  prev[2] = P.z[e]!;
+  step(world);
+  now[0] = P.x[e]!;
+  now[1] = P.y[e]!;
+  now[2] = P.z[e]!;
+  if (state.phase === 'flying') {
+    state.time += dt;
+    checkRings(world.time);
+  }
+  const ground = Math.max(SEA_LEVEL, terrainHeight(handles.terrain, now[0]!, now[2]!));
+  if (now[1]! < ground + 2) {
+    state.phase = 'crashed';
+    state.warning = '';
+    sound.explosion(1);
+    events.push({ text: 'Crashed!', colour: '#ff6b5a', time: world.time });
+    return;
+  }
+  // Warnings: the wing within 3 degrees of the stall, or the ground less than 8 s away at this sink rate.
+  const after = flightState(world, e);
+  state.stalled = Math.abs(after.alpha) > AIRCRAFT.stallAngle;
+  const sink = -world.components.Velocity.y[e]!;
+  const agl = now[1]! - ground;
+  state.warning = Math.abs(after.alpha) > AIRCRAFT.stallAngle - (3 * Math.PI) / 180 ? 'STALL' : sink > 0 && agl < sink * 8 ? 'PULL UP' : '';
+  if (state.warning && world.time - lastBeep > 0.45) {
+    lastBeep = world.time;
+    sound.chime(state.warning === 'STALL' ? 1250 : 660, 0.12);
+  }
+}
+
+/** Passes or misses the next ring (or the one after it, which misses the next). */
+function checkRings(time: number): void {
+  const i = nextRing(rings);
+  if (i < 0) return;
+  for (const j of [i, i + 1]) {
+    const ring = rings[j];
+    if (!ring) continue;
+    const result = crossRing(ring, prev, now);
+    if (!result) continue;
+    if (j === i + 1) miss(i, time);
+    ring.status = result;
+    if (result === 'passed') {
+      state.score++;
+      const last = nextRing(rings) < 0;
+      events.push({ text: last ? 'Last ring!' : `Ring ${j + 1} ✓`, colour: '#7dff9a', time });
+      sound.chime(880, 0.18);
+      setTimeout(() => sound.chime(1320, 0.3), 110);
+    } else miss(j, time);
+    break;
+  }
+  if (nextRing(rings) < 0) finish(time);
+}
+
+function miss(i: number, time: number): void {
+  const ring = rings[i]!;
+  if (ring.status === 'missed') return;
+  ring.status = 'missed';
+  state.missed++;
+  events.push({ text: `Missed ring ${i + 1}`, colour: '#ffb35a', time });
+  sound.chime(220, 0.4);
+}
+
+/** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter time. */
+const BEST_KEY = 'bitphysics.flight-simulator.best';
+function bestOf(): { passed: number; time: number } | null {
+  try {
+    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, { passed: number; time: number }>;
+    return all[`${params.seed}/${params.rings}`] ?? null;
+  } catch {
+    return null;
+  }
+}
+/** Whether the last finish set a new best. */
+let newBest = false;
+
+function finish(time: number): void {
+  state.phase = 'done';
+  const best = bestOf();
+  newBest = !best || state.score > best.passed || (state.score === best.passed && state.time < best.time);
+  if (newBest) {
+    try {
+      const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, unknown>;
+      all[`${params.seed}/${params.rings}`] = { passed: state.score, time: state.time };
+      localStorage.setItem(BEST_KEY, JSON.stringify(all));
+    } catch {
+      /* storage refused: no best kept */
+    }
+  }
+  events.push({ text: state.score === rings.length ? 'Course complete!' : 'Course over', colour: '#ffd166', time });
+  const notes = [1047, 1319, 1568, 2093];
+  for (let k = 0; k < notes.length; k++) setTimeout(() => sound.chime(notes[k], 0.35), 120 * k);
+}
 
 const game = await startThreeGame({
   title: 'Flight simulator',
@@ -173,10 +294,10 @@ const game = await startThreeGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: '↑ ↓ / W S', action: 'pitch (↓ pulls up)', touch: 'stick ↑ ↓' },
-    { keys: '← → / A D', action: 'roll', touch: 'stick ← →' },
+    { keys: '↑ ↓ / W S', action: 'climb / dive', touch: 'stick ↑ ↓' },
+    { keys: '← → / A D', action: 'bank left / right', touch: 'stick ← →' },
+    { keys: 'Shift / Ctrl', action: 'faster / slower', touch: 'Faster / Slower' },
     { keys: 'Q / E', action: 'rudder', touch: 'Rudder' },
-    { keys: 'Shift / Ctrl', action: 'throttle up / down', touch: 'Throttle + / −' },
     { keys: 'C', action: 'camera: chase / cockpit', touch: 'Camera' },
   ],
   keys: [
@@ -188,47 +309,85 @@ const game = await startThreeGame({
       },
     },
   ],
-  app: { background: 0x9cc8f0, shadows: false, controls: false, fov: 60 },
+  app: { background: HORIZON_COLOUR, shadows: false, controls: false, fov: 60 },
   renderer: {
     unitsPerMeter: 1,
     boundary: 'none',
     shadows: false,
-    lights: { direction: [0.4, 1, 0.3], intensity: 2.2, hemisphereIntensity: 0.6, ambientIntensity: 0.2, shadows: false },
+    lights: { direction: [...SUN_DIRECTION], intensity: 2.2, hemisphereIntensity: 0.6, ambientIntensity: 0.2, shadows: false },
   },
   view: null,
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
 app.camera.near = 1;
-app.camera.far = 30_000;
+app.camera.far = 40_000;
 app.camera.updateProjectionMatrix();
-app.scene.fog = new Fog(0x9cc8f0, 4000, 16_000);
 app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
+const scenery = createScenery(app.scene);
+scenery.setTerrain(handles.terrain, params.seed);
 
-// ---- The aircraft's looks: fuselage, wings, tailplane and fin in the body frame (x forward, y up) -----
+// ---- The aircraft's looks: fuselage, wings with dihedral, tailplane and fin (x forward, y up) ------
+
+/** A part of the model in one colour (a vertex colour on the merged geometry). */
+function painted(g: BufferGeometry, colour: number): BufferGeometry {
+  const part = g.toNonIndexed();
+  const n = part.attributes.position!.count;
+  const r = ((colour >> 16) & 255) / 255,
+    gr = ((colour >> 8) & 255) / 255,
+    b = (colour & 255) / 255;
+  const c = new Float32Array(3 * n);
+  for (let i = 0; i < n; i++) c.set([r, gr, b], 3 * i);
+  part.setAttribute('color', new Float32BufferAttribute(c, 3));
+  return part;
+}
 
 function aircraftGeometry(): BufferGeometry {
+  const white = 0xf2f4f7,
+    red = 0xd8342c,
+    blue = 0x1f4e8c,
+    glass = 0x1b2a3a;
   const parts: BufferGeometry[] = [];
-  const fuselage = new CylinderGeometry(1.3, 1.1, 24, 16);
+  const fuselage = new CylinderGeometry(1.3, 1.0, 24, 16);
   fuselage.rotateZ(-Math.PI / 2);
   fuselage.translate(-1, 0, 0);
-  parts.push(fuselage);
+  parts.push(painted(fuselage, white));
+  const stripe = new CylinderGeometry(1.33, 1.2, 14, 16, 1, true, Math.PI * 0.35, Math.PI * 0.3);
+  stripe.rotateZ(-Math.PI / 2);
+  stripe.translate(1, 0, 0);
+  parts.push(painted(stripe, blue), painted(stripe.clone().rotateX(Math.PI), blue));
   const nose = new ConeGeometry(1.3, 4, 16);
   nose.rotateZ(-Math.PI / 2);
   nose.translate(13, 0, 0);
-  parts.push(nose);
-  const wing = new BoxGeometry(4, 0.35, 30);
-  wing.translate(0.5, -0.4, 0);
-  parts.push(wing);
+  parts.push(painted(nose, red));
+  const canopy = new CylinderGeometry(0.75, 0.75, 4.5, 12, 1, false, 0, Math.PI);
+  canopy.rotateZ(-Math.PI / 2);
+  canopy.rotateX(-Math.PI / 2);
+  canopy.translate(8.5, 0.9, 0);
+  parts.push(painted(canopy, glass));
+  // Each wing half tilted up by the dihedral from a root under the fuselage.
+  const dihedral = AIRCRAFT.dihedral;
+  for (const side of [-1, 1]) {
+    const half = new BoxGeometry(4, 0.35, 15);
+    half.translate(0.5, 0, side * 7.5);
+    half.rotateX(side * dihedral);
+    half.translate(0, -0.9, 0);
+    parts.push(painted(half, white));
+    const tip = new BoxGeometry(4.05, 0.4, 1.2);
+    tip.translate(0.5, 0, side * 14.4);
+    tip.rotateX(side * dihedral);
+    tip.translate(0, -0.9, 0);
+    parts.push(painted(tip, red));
+  }
   const tail = new BoxGeometry(2.6, 0.25, 10);
   tail.translate(-12, 0.3, 0);
-  parts.push(tail);
+  parts.push(painted(tail, white));
   const fin = new BoxGeometry(3, 5, 0.3);
   fin.translate(-12, 2.8, 0);
-  parts.push(fin);
-  return mergeGeometries(parts.map((p) => p.toNonIndexed()))!;
+  parts.push(painted(fin, red));
+  return mergeGeometries(parts)!;
 }
-const planeMaterial = new MeshStandardMaterial({ color: 0xe8ecf2, roughness: 0.5, metalness: 0.2 });
+const planeMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.45, metalness: 0.15 });
 const planeGeometry = aircraftGeometry();
 function dress(): void {
   renderer.setShape(handles.body, { geometry: planeGeometry, material: planeMaterial, scale: 1 });
@@ -236,108 +395,240 @@ function dress(): void {
 dress();
 shell.onWorldChange(() => {
   dress();
-  terrainCentre = null;
+  scenery.setTerrain(handles.terrain, params.seed);
+  placeRings();
+  smoothReady = false;
 });
-
-// ---- Terrain: a 24 km grid that follows the aircraft, heights from the scene's terrain function --------
-
-const SIZE = 24_000,
-  SEGMENTS = 160;
-const terrainGeometry = new PlaneGeometry(SIZE, SIZE, SEGMENTS, SEGMENTS);
-terrainGeometry.rotateX(-Math.PI / 2);
-terrainGeometry.setAttribute('color', new Float32BufferAttribute(new Float32Array(terrainGeometry.attributes.position!.count * 3), 3));
-const base = Float32Array.from(terrainGeometry.attributes.position!.array as Float32Array);
-const terrain = new Mesh(terrainGeometry, new MeshStandardMaterial({ vertexColors: true, roughness: 1, flatShading: true }));
-app.scene.add(terrain);
-const sea = new Mesh(new PlaneGeometry(SIZE * 2, SIZE * 2), new MeshStandardMaterial({ color: 0x2d6e9e, roughness: 0.4 }));
-sea.rotateX(-Math.PI / 2);
-sea.position.y = 60;
-app.scene.add(sea);
-let terrainCentre: [number, number] | null = null;
-const low = new Color(0x4f8a3c),
-  mid = new Color(0x8a7a52),
-  high = new Color(0xf2f4f6),
-  tmpColor = new Color();
-
-/** Rebuilds the grid's heights and colours around (cx, cz), snapped to whole cells. */
-function rebuildTerrain(cx: number, cz: number): void {
-  const cell = SIZE / SEGMENTS;
-  const sx = Math.round(cx / cell) * cell,
-    sz = Math.round(cz / cell) * cell;
-  terrainCentre = [sx, sz];
-  const pos = terrainGeometry.attributes.position as BufferAttribute,
-    col = terrainGeometry.attributes.color as BufferAttribute;
-  for (let i = 0; i < pos.count; i++) {
-    const x = base[3 * i]! + sx,
-      z = base[3 * i + 2]! + sz;
-    const h = terrainHeight(handles.terrain, x, z);
-    pos.setXYZ(i, x, h, z);
-    if (h < 300) tmpColor.copy(low).lerp(mid, h / 300);
-    else tmpColor.copy(mid).lerp(high, Math.min(1, (h - 300) / 300));
-    col.setXYZ(i, tmpColor.r, tmpColor.g, tmpColor.b);
-  }
-  pos.needsUpdate = true;
-  col.needsUpdate = true;
-  terrainGeometry.computeVertexNormals();
-  terrainGeometry.computeBoundingSphere();
-}
 
 // ---- Rings ----------------------------------------------------------------------------------------
 
-const ringGeometry = new TorusGeometry(45, 3, 10, 40);
-ringGeometry.rotateY(Math.PI / 2);
-const ringMaterial = new MeshBasicMaterial({ color: 0xffb020, side: DoubleSide });
-const passedMaterial = new MeshBasicMaterial({ color: 0x50e070, transparent: true, opacity: 0.35 });
+const ringGeometry = new TorusGeometry(RING_RADIUS, 3, 10, 48);
+const haloGeometry = new TorusGeometry(RING_RADIUS + 9, 1.2, 6, 48);
+const materials = {
+  next: new MeshBasicMaterial({ color: 0xffc21f }),
+  halo: new MeshBasicMaterial({ color: 0xfff0a0, transparent: true, opacity: 0.6, side: DoubleSide }),
+  ahead: new MeshBasicMaterial({ color: 0xff9a1f, transparent: true, opacity: 0.55 }),
+  passed: new MeshBasicMaterial({ color: 0x50e070, transparent: true, opacity: 0.35 }),
+  missed: new MeshBasicMaterial({ color: 0xff5a4a, transparent: true, opacity: 0.3 }),
+};
 let ringMeshes: Mesh[] = [];
+const halo = new Mesh(haloGeometry, materials.halo);
+app.scene.add(halo);
+const zAxis = new Vector3(0, 0, 1),
+  ringNormal = new Vector3();
 function placeRings(): void {
   for (const m of ringMeshes) app.scene.remove(m);
   ringMeshes = rings.map((ring) => {
-    const m = new Mesh(ringGeometry, ringMaterial);
+    const m = new Mesh(ringGeometry, materials.ahead);
     m.position.set(ring.x, ring.y, ring.z);
+    // The torus lies in its x-y plane: turn its axis (z) to the ring's normal.
+    m.quaternion.setFromUnitVectors(zAxis, ringNormal.set(ring.nx, ring.ny, ring.nz));
     app.scene.add(m);
     return m;
   });
 }
 placeRings();
-shell.onWorldChange(() => placeRings());
 
-// ---- Camera and instruments, every frame ----------------------------------------------------------
+/** Colours the rings by their status, the next one brightest with a pulsing halo. */
+function paintRings(t: number): void {
+  const i = nextRing(rings);
+  rings.forEach((ring, k) => {
+    ringMeshes[k]!.material = k === i ? materials.next : materials[ring.status];
+  });
+  halo.visible = i >= 0 && state.phase !== 'crashed';
+  if (i >= 0) {
+    halo.position.copy(ringMeshes[i]!.position);
+    halo.quaternion.copy(ringMeshes[i]!.quaternion);
+    halo.scale.setScalar(1 + 0.06 * Math.sin(5 * t));
+    materials.halo.opacity = 0.35 + 0.3 * (0.5 + 0.5 * Math.sin(5 * t));
+  }
+}
 
-const p3 = [0, 0, 0],
-  q4 = [0, 0, 0, 1];
-const drawnQ = new Quaternion(),
-  at = new Vector3(),
-  eye = new Vector3(),
-  look = new Vector3(),
-  smoothEye = new Vector3();
-let smoothReady = false;
+// ---- The crash: a fireball and smoke where the aircraft hit (drawing only) ----------------------
 
+const fireball = new Mesh(
+  new IcosahedronGeometry(1, 2),
+  new MeshBasicMaterial({ color: 0xffa030, transparent: true, fog: false, depthWrite: false }),
+);
+const smoke = Array.from(
+  { length: 6 },
+  () => new Mesh(new IcosahedronGeometry(1, 1), new MeshBasicMaterial({ color: 0x3a3530, transparent: true })),
+);
+fireball.visible = false;
+for (const m of smoke) m.visible = false;
+app.scene.add(fireball, ...smoke);
+/** When the crash was seen, ms (performance.now), or NaN while flying; the heading then, rad (+x 0, +z pi/2). */
+let crashedAt = Number.NaN,
+  crashHeading = 0;
+
+/** Grows the fireball (1.5 s, yellow to red) and lets the smoke rise and fade (6 s) from the crash point. */
+function drawCrash(): void {
+  if (state.phase !== 'crashed') {
+    crashedAt = Number.NaN;
+    fireball.visible = false;
+    for (const m of smoke) m.visible = false;
+    planeMaterial.visible = true;
+    return;
+  }
+  if (Number.isNaN(crashedAt)) {
+    crashedAt = performance.now();
+    // Lifted clear of the drawn ground, whose flat cells can stand above the true surface.
+    fireball.position.copy(at).setY(at.y + 15);
+    crashHeading = flightState(shell.world, handles.body).heading;
+  }
+  planeMaterial.visible = false;
+  const u = (performance.now() - crashedAt) / 1000;
+  fireball.visible = u < 1.5;
+  fireball.scale.setScalar(12 + 50 * Math.min(1, u / 0.8));
+  const fire = fireball.material as MeshBasicMaterial;
+  fire.color.setHSL(0.13 - 0.1 * Math.min(1, u / 1.5), 1, 0.6);
+  fire.opacity = Math.max(0, 1 - u / 1.5);
+  smoke.forEach((m, k) => {
+    const v = Math.max(0, u - 0.3 - 0.25 * k) / 6;
+    m.visible = v > 0 && v < 1;
+    m.position.set(
+      fireball.position.x + 10 * Math.cos(2.4 * k),
+      fireball.position.y + 10 + 160 * v,
+      fireball.position.z + 10 * Math.sin(2.4 * k),
+    );
+    m.scale.setScalar(16 + 60 * v);
+    (m.material as MeshBasicMaterial).opacity = 0.6 * (1 - v);
+  });
+}
+
+// ---- HUD: the goal and readout above the scene, instruments beside it, banner, warnings, end card ---
+
+const layout = pageLayout();
+const compact = layout.compact();
+const statusEl = document.createElement('div');
+statusEl.dataset.hud = 'flight-status';
+statusEl.style.cssText = `font: ${compact ? 13 : 14}px/1.4 system-ui, sans-serif; color: #eef3f8; padding: 4px 10px;`;
+const goalLine = document.createElement('div');
+goalLine.dataset.hud = 'goal';
+goalLine.style.cssText = 'font-weight: 700; color: #ffd166;';
+const readLine = document.createElement('div');
+readLine.dataset.hud = 'readout';
+statusEl.append(goalLine, readLine);
+layout.status.append(statusEl);
+
+/** The full instruments, in the side column on wide screens (the status row has the essentials). */
 const panelEl = document.createElement('div');
 panelEl.className = 'bp-hud';
 panelEl.dataset.hud = 'instruments';
-/** On small screens the instruments are a short block in the status row above the scene (the side column is a closed drawer there). */
-const compact = pageLayout().compact();
-if (compact) {
-  panelEl.style.cssText = 'padding: 4px 10px; white-space: pre; font-size: 12px';
-  pageLayout().status.append(panelEl);
-} else {
-  panelEl.style.cssText = 'top: auto; bottom: 10px; left: auto; right: 10px; min-width: 250px; white-space: pre';
-  document.body.append(panelEl);
-}
-let readoutFrame = 0;
+panelEl.style.cssText = 'white-space: pre; padding: 6px 4px;';
+if (!compact) layout.side.append(panelEl);
 
-// The attitude indicator (artificial horizon), drawn in the cockpit view at the top of the scene (clear of the touch stick):
-// sky over ground split by the horizon, turned by the roll and moved by the pitch (PITCH_PX a
-// degree), a pitch ladder every 10 degrees, the bank scale, and the fixed aircraft symbol.
-const HORIZON_SIZE = 150;
-const PITCH_PX = 2.2;
+/** Text over the scene: dark pills, so it reads over the bright sky and the dark hills alike. */
+function overlay(css: string): HTMLDivElement {
+  const el = document.createElement('div');
+  el.dataset.sceneOverlay = '';
+  el.style.cssText = `position: absolute; z-index: 4; pointer-events: none; transform: translate(-50%, -50%); ${css}`;
+  layout.stage.append(el);
+  return el;
+}
+const banner = overlay(
+  'left: 50%; top: 24%; padding: 6px 18px; border-radius: 14px; background: rgba(8, 12, 20, 0.78); font: 800 26px system-ui, sans-serif; white-space: nowrap; display: none;',
+);
+banner.dataset.hud = 'banner';
+const warningEl = overlay(
+  'left: 50%; top: 62%; padding: 4px 16px; border-radius: 10px; background: rgba(120, 10, 10, 0.88); color: #fff; font: 800 22px system-ui, sans-serif; letter-spacing: 2px; display: none;',
+);
+warningEl.dataset.hud = 'warning';
+const endCard = overlay(
+  'left: 50%; top: 28%; width: min(88%, 420px); box-sizing: border-box; padding: 14px 18px; border-radius: 14px; background: rgba(8, 12, 20, 0.86); color: #eef3f8; font: 16px/1.45 system-ui, sans-serif; text-align: center; display: none;',
+);
+endCard.dataset.hud = 'end';
+const showAgain = createActionButton('Fly again ▶', () => shell.reset());
+/** How long a banner stays, s of game time. */
+const BANNER_LIFE = 2;
+
+/** m:ss of `t` seconds. */
+function clock(t: number): string {
+  const s = Math.floor(t);
+  return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
+}
+
+function updateHud(i: ReturnType<typeof instruments>): void {
+  const n = nextRing(rings);
+  const total = rings.length;
+  const distance = n >= 0 ? Math.hypot(rings[n]!.x - now[0]!, rings[n]!.y - now[1]!, rings[n]!.z - now[2]!) : 0;
+  goalLine.textContent =
+    state.phase === 'crashed'
+      ? `Crashed · ${state.score} of ${total} rings`
+      : n < 0
+        ? `Course done · ${state.score} of ${total} rings in ${clock(state.time)}`
+        : `Fly through ring ${n + 1} of ${total} · ${distance >= 1000 ? `${(distance / 1000).toFixed(1)} km` : `${distance.toFixed(0)} m`} · ${clock(state.time)}`;
+  const speed = params.assist && !compact ? `${i.speed.toFixed(0)} m/s (set ${state.setSpeed.toFixed(0)})` : `${i.speed.toFixed(0)} m/s`;
+  readLine.textContent = compact
+    ? `${speed} · alt ${i.altitude.toFixed(0)} m · engine ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`
+    : `${speed} · alt ${i.altitude.toFixed(0)} m · throttle ${(state.throttle * 100).toFixed(0)}% · rings ${state.score}/${total}`;
+  if (!compact)
+    panelEl.textContent = [
+      `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
+      `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
+      `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
+      `pitch ${i.pitch.toFixed(1).padStart(6)}°  bank ${i.roll.toFixed(1).padStart(6)}°`,
+      `heading   ${i.heading.toFixed(0).padStart(4)}°`,
+      `AoA (wing) ${i.aoa.toFixed(1).padStart(5)}°  ${state.stalled ? 'STALL' : `stall at ${((AIRCRAFT.stallAngle * 180) / Math.PI).toFixed(0)}°`}`,
+      `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%${params.assist ? `  set ${state.setSpeed.toFixed(0)} m/s` : ''}`,
+      `assist    ${params.assist ? 'on' : 'off'}`,
+    ].join('\n');
+  // The end card and its button.
+  if (state.phase === 'flying') {
+    endCard.style.display = 'none';
+    showAgain(false);
+  } else {
+    const best = bestOf();
+    const stars = courseStars(state.score, total);
+    const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
+    endCard.style.display = 'block';
+    endCard.replaceChildren();
+    const title = document.createElement('div');
+    title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${state.phase === 'crashed' ? '#ff8a7a' : '#ffd166'};`;
+    title.textContent = state.phase === 'crashed' ? 'Crashed!' : state.score === total ? 'Course complete!' : 'Course over';
+    const line = document.createElement('div');
+    line.textContent =
+      state.phase === 'crashed'
+        ? `${state.score} of ${total} rings before the crash.`
+        : `${state.score} of ${total} rings in ${clock(state.time)}  ${starText}`;
+    const bestLine = document.createElement('div');
+    bestLine.style.cssText = 'color: #c7d3e0; font-size: 14px;';
+    bestLine.textContent =
+      state.phase === 'done' && newBest
+        ? 'A new best for this course!'
+        : best
+          ? `Best: ${best.passed} of ${total} rings in ${clock(best.time)}`
+          : 'Watch the height: the hills reach 700 m.';
+    endCard.append(title, line, bestLine);
+    showAgain(true, state.phase === 'crashed' ? 'Try again ↺' : 'Fly again ▶');
+  }
+}
+
+/** Shows the newest event in the banner for BANNER_LIFE s, and the warning, flashing. */
+function updateBanner(t: number): void {
+  const last = events[events.length - 1];
+  const age = last ? t - last.time : Infinity;
+  if (last && age >= 0 && age < BANNER_LIFE && state.phase === 'flying') {
+    banner.style.display = 'block';
+    banner.textContent = last.text;
+    banner.style.color = last.colour;
+    banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
+  } else banner.style.display = 'none';
+  warningEl.style.display = state.warning && state.phase === 'flying' && Math.floor(t * 3) % 2 === 0 ? 'block' : 'none';
+  warningEl.textContent = state.warning;
+}
+
+// ---- The attitude indicator (cockpit view), drawn at the top of the scene -------------------------
+
+const HORIZON_SIZE = compact ? 120 : 150;
+const PITCH_PX = HORIZON_SIZE / 68;
 const horizon = document.createElement('canvas');
 horizon.width = HORIZON_SIZE * devicePixelRatio;
 horizon.height = HORIZON_SIZE * devicePixelRatio;
 horizon.dataset.sceneOverlay = '';
 horizon.setAttribute('aria-label', 'attitude indicator');
 horizon.style.cssText = `position: absolute; left: 50%; top: 8px; width: ${HORIZON_SIZE}px; height: ${HORIZON_SIZE}px; transform: translateX(-50%); pointer-events: none; z-index: 5; display: none`;
-pageLayout().stage.append(horizon);
+layout.stage.append(horizon);
 /** What the indicator showed last: pitch and roll, degrees (tests read them). */
 const shownAttitude = { pitch: 0, roll: 0, visible: false };
 
@@ -355,9 +646,9 @@ function drawHorizon(pitch: number, roll: number): void {
   g.translate(c, c);
   g.rotate((-roll * Math.PI) / 180);
   const dy = pitch * PITCH_PX;
-  g.fillStyle = '#3d8fd6';
+  g.fillStyle = '#2a6fb8';
   g.fillRect(-S, -2 * S + dy, 2 * S, 2 * S);
-  g.fillStyle = '#7a5230';
+  g.fillStyle = '#6b4526';
   g.fillRect(-S, dy, 2 * S, 2 * S);
   g.strokeStyle = '#ffffff';
   g.lineWidth = 2;
@@ -366,7 +657,7 @@ function drawHorizon(pitch: number, roll: number): void {
   g.lineTo(S, dy);
   g.stroke();
   g.lineWidth = 1;
-  g.font = '9px system-ui, sans-serif';
+  g.font = 'bold 10px system-ui, sans-serif';
   g.fillStyle = '#ffffff';
   for (let p = -30; p <= 30; p += 10) {
     if (p === 0) continue;
@@ -379,7 +670,6 @@ function drawHorizon(pitch: number, roll: number): void {
     g.fillText(String(Math.abs(p)), half + 3, y + 3);
   }
   g.restore();
-  // Bank marks at 0, 10, 20, 30, 60 degrees each side, and the bank pointer.
   g.strokeStyle = '#ffffff';
   g.lineWidth = 2;
   for (const b of [-60, -30, -20, -10, 0, 10, 20, 30, 60]) {
@@ -398,14 +688,13 @@ function drawHorizon(pitch: number, roll: number): void {
   g.lineTo(c + (c - 26) * Math.cos(pa + 0.09), c + (c - 26) * Math.sin(pa + 0.09));
   g.lineTo(c + (c - 26) * Math.cos(pa - 0.09), c + (c - 26) * Math.sin(pa - 0.09));
   g.fill();
-  // The aircraft symbol: wings and a centre dot, fixed.
   g.strokeStyle = '#ffd166';
   g.lineWidth = 4;
   g.beginPath();
-  g.moveTo(c - 42, c);
+  g.moveTo(c - 0.28 * S, c);
   g.lineTo(c - 14, c);
   g.lineTo(c - 8, c + 7);
-  g.moveTo(c + 42, c);
+  g.moveTo(c + 0.28 * S, c);
   g.lineTo(c + 14, c);
   g.lineTo(c + 8, c + 7);
   g.stroke();
@@ -420,28 +709,25 @@ function drawHorizon(pitch: number, roll: number): void {
   g.stroke();
 }
 
-// ---- Guidance: where the next ring is ---------------------------------------------------------------
+// ---- Guidance: where the next ring is -----------------------------------------------------------
 
 /**
- * A marker for the next ring (the first not yet passed, in the order they are laid out along x): a
- * label under it with its distance while it is in view, else an arrow at the edge of the scene
- * pointing the way to turn, so a player always knows where to fly (there was no guidance at all).
+ * A marker for the next ring: a label under it with its number and distance while it is in view,
+ * else an arrow at the edge of the scene pointing the way to turn. The label is kept wholly inside
+ * the scene.
  */
-const ringPointer = document.createElement('div');
-ringPointer.dataset.sceneOverlay = '';
+const ringPointer = overlay(
+  'padding: 2px 8px; border-radius: 10px; background: rgba(10, 14, 22, 0.85); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;',
+);
 ringPointer.dataset.hud = 'ring-pointer';
-ringPointer.style.cssText =
-  'position: absolute; z-index: 4; pointer-events: none; transform: translate(-50%, -50%); padding: 2px 8px; border-radius: 10px;' +
-  'background: rgba(10, 14, 22, 0.8); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;';
-pageLayout().stage.append(ringPointer);
 const ringAt = new Vector3();
-/** What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text. */
-const ringAim = { index: -1, inView: false, text: '' };
+/** What the pointer shows (tests): the ring's index (-1: none left), whether it is in view, the text, its box in the stage (px). */
+const ringAim = { index: -1, inView: false, text: '', box: [0, 0, 0, 0] };
 function pointToNextRing(): void {
-  const i = rings.findIndex((r) => !r.passed);
+  const i = nextRing(rings);
   ringAim.index = i;
-  ringPointer.style.display = i < 0 || state.crashed ? 'none' : 'block';
-  if (i < 0 || state.crashed) return;
+  ringPointer.style.display = i < 0 || state.phase !== 'flying' ? 'none' : 'block';
+  if (i < 0 || state.phase !== 'flying') return;
   const ring = rings[i]!;
   ringAt.set(ring.x, ring.y, ring.z);
   const d = ringAt.distanceTo(at);
@@ -455,7 +741,7 @@ function pointToNextRing(): void {
   const distance = d >= 1000 ? `${(d / 1000).toFixed(1)} km` : `${d.toFixed(0)} m`;
   if (ringAim.inView) {
     ringAim.text = `ring ${i + 1} · ${distance}`;
-    y = Math.min(h - 14, y + 30);
+    y += 30;
   } else {
     // Behind the camera the projection is mirrored: point the other way.
     let dx = x - w / 2,
@@ -464,58 +750,88 @@ function pointToNextRing(): void {
       dx = -dx;
       dy = -dy;
     }
-    const k = Math.min((w / 2 - 60) / Math.max(1e-6, Math.abs(dx)), (h / 2 - 24) / Math.max(1e-6, Math.abs(dy)));
+    const k = Math.min((w / 2 - 70) / Math.max(1e-6, Math.abs(dx)), (h / 2 - 24) / Math.max(1e-6, Math.abs(dy)));
     x = w / 2 + dx * k;
     y = h / 2 + dy * k;
     const arrow = Math.abs(dx) * (h / 2) > Math.abs(dy) * (w / 2) ? (dx > 0 ? '▶' : '◀') : dy > 0 ? '▼' : '▲';
-    ringAim.text = `${arrow} ring ${i + 1} · ${distance}`;
+    ringAim.text = dx > 0 && arrow === '▶' ? `ring ${i + 1} · ${distance} ${arrow}` : `${arrow} ring ${i + 1} · ${distance}`;
   }
-  ringPointer.textContent = ringAim.text;
+  if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
+  // Kept inside the scene: the label's half width (and height) from each edge.
+  const hw = ringPointer.offsetWidth / 2 + 4,
+    hh = ringPointer.offsetHeight / 2 + 4;
+  x = Math.max(hw, Math.min(w - hw, x));
+  y = Math.max(hh, Math.min(h - hh, y));
   ringPointer.style.left = `${x}px`;
   ringPointer.style.top = `${y}px`;
+  ringAim.box = [x - hw + 4, y - hh + 4, 2 * hw - 8, 2 * hh - 8];
 }
+
+// ---- Camera, every frame ------------------------------------------------------------------------
+
+const p3 = [0, 0, 0],
+  q4 = [0, 0, 0, 1];
+const drawnQ = new Quaternion(),
+  at = new Vector3(),
+  eye = new Vector3(),
+  look = new Vector3(),
+  smoothEye = new Vector3();
+let smoothReady = false;
+let readoutFrame = 0;
 
 function frame(): void {
   const world = shell.world;
   if (!renderer.drawnPosition(handles.body, p3) || !renderer.drawnOrientation(handles.body, q4)) return;
   at.set(p3[0]!, p3[1]!, p3[2]!);
   drawnQ.set(q4[0]!, q4[1]!, q4[2]!, q4[3]!);
-  if (!terrainCentre || Math.hypot(at.x - terrainCentre[0], at.z - terrainCentre[1]) > 2000) rebuildTerrain(at.x, at.z);
-  sea.position.x = at.x;
-  sea.position.z = at.z;
-  if (state.camera === 'chase') {
-    eye.set(-45, 12, 0).applyQuaternion(drawnQ).add(at);
-    // Keep the chase camera level-ish: follow the heading, not all of the roll.
+  if (state.phase === 'crashed' && !Number.isNaN(crashedAt)) {
+    // After a crash: a slow circle round the crash point, well above the ground.
+    const u = (performance.now() - crashedAt) / 1000,
+      a = crashHeading + Math.PI + 0.12 * u;
+    const cx = fireball.position.x + 160 * Math.cos(a),
+      cz = fireball.position.z + 160 * Math.sin(a);
+    app.camera.position.set(cx, Math.max(terrainHeight(handles.terrain, cx, cz) + 60, fireball.position.y + 90), cz);
+    app.camera.up.set(0, 1, 0);
+    app.camera.lookAt(fireball.position);
+  } else if (state.camera === 'chase') {
+    eye.set(-42, 10, 0).applyQuaternion(drawnQ).add(at);
+    // Keep the chase camera level-ish: it follows the heading, with the horizon kept level.
     if (!smoothReady) {
       smoothEye.copy(eye);
       smoothReady = true;
     }
-    smoothEye.lerp(eye, 0.12);
+    smoothEye.lerp(eye, 0.15);
     app.camera.position.copy(smoothEye);
     app.camera.up.set(0, 1, 0);
     look.set(30, 0, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   } else {
-    app.camera.position.set(14, 1.8, 0).applyQuaternion(drawnQ).add(at);
+    // From the canopy, over the nose.
+    app.camera.position.set(11.5, 2.1, 0).applyQuaternion(drawnQ).add(at);
     app.camera.up.set(0, 1, 0).applyQuaternion(drawnQ);
-    look.set(100, 0, 0).applyQuaternion(drawnQ).add(at);
+    look.set(100, 0.8, 0).applyQuaternion(drawnQ).add(at);
     app.camera.lookAt(look);
   }
+  app.camera.updateMatrixWorld();
+  scenery.update(app.camera.position, at);
+  paintRings(world.time);
   pointToNextRing();
-  engine.set(state.crashed ? 0 : state.throttle);
+  engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const cockpit = state.camera === 'cockpit';
   horizon.style.display = cockpit ? 'block' : 'none';
   shownAttitude.visible = cockpit;
+  const i = instruments(world);
   if (cockpit) {
-    const i = instruments(world);
     shownAttitude.pitch = i.pitch;
     shownAttitude.roll = i.roll;
     drawHorizon(i.pitch, i.roll);
   }
-  if (readoutFrame++ % 6 === 0) updateInstruments(world);
+  drawCrash();
+  updateBanner(world.time);
+  if (readoutFrame++ % 6 === 0) updateHud(i);
 }
 
-/** Instrument readings of the aircraft now: speed, altitude, attitude, heading, angle of attack. */
+/** Instrument readings of the aircraft now: speed, altitude, attitude, heading, the wing's angle of attack (m/s, m, degrees). */
 function instruments(world: PhysicsWorld): {
   speed: number;
   altitude: number;
@@ -526,49 +842,25 @@ function instruments(world: PhysicsWorld): {
   heading: number;
   aoa: number;
 } {
-  axes(world);
+  const s: FlightState = flightState(world, handles.body);
   const c = world.components,
     e = handles.body;
-  v.set(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!);
   const deg = 180 / Math.PI;
   return {
-    speed: v.length(),
+    speed: s.speed,
     altitude: c.Position.y[e]!,
-    agl: c.Position.y[e]! - terrainHeight(handles.terrain, c.Position.x[e]!, c.Position.z[e]!),
-    climb: v.y,
-    pitch: Math.asin(Math.max(-1, Math.min(1, f.y))) * deg,
-    roll: Math.atan2(-r.y, u.y) * deg,
-    heading: (Math.atan2(f.z, f.x) * deg + 360) % 360,
-    aoa: Math.atan2(-v.dot(u), v.dot(f)) * deg,
+    agl: c.Position.y[e]! - Math.max(SEA_LEVEL, terrainHeight(handles.terrain, c.Position.x[e]!, c.Position.z[e]!)),
+    climb: c.Velocity.y[e]!,
+    pitch: s.pitch * deg,
+    roll: s.bank * deg,
+    heading: s.heading * deg,
+    aoa: s.alpha * deg,
   };
 }
 
-function updateInstruments(world: PhysicsWorld): void {
-  const i = instruments(world);
-  state.stalled = Math.abs(i.aoa) > (AIRCRAFT.stallAngle * 180) / Math.PI;
-  const end = state.crashed ? '   CRASHED (reset to retry)' : state.score === rings.length ? '   ALL RINGS!' : '';
-  if (compact) {
-    panelEl.textContent = [
-      `${i.speed.toFixed(0)} m/s  alt ${i.altitude.toFixed(0)} m (ground ${i.agl.toFixed(0)} m)  climb ${i.climb.toFixed(1)}`,
-      `throttle ${(state.throttle * 100).toFixed(0)}%  AoA ${i.aoa.toFixed(1)}°${state.stalled ? ' STALL!' : ''}  rings ${state.score}/${rings.length}${end}`,
-    ].join('\n');
-    return;
-  }
-  panelEl.textContent = [
-    `airspeed  ${i.speed.toFixed(0).padStart(4)} m/s  ${(i.speed * 1.944).toFixed(0).padStart(4)} kt`,
-    `altitude  ${i.altitude.toFixed(0).padStart(5)} m   above ground ${i.agl.toFixed(0)} m`,
-    `climb     ${i.climb.toFixed(1).padStart(6)} m/s`,
-    `pitch ${i.pitch.toFixed(1).padStart(6)}°  roll ${i.roll.toFixed(1).padStart(6)}°`,
-    `heading   ${i.heading.toFixed(0).padStart(4)}°`,
-    `AoA   ${i.aoa.toFixed(1).padStart(6)}°  ${state.stalled ? 'STALL!' : ''}`,
-    `throttle  ${(state.throttle * 100).toFixed(0).padStart(4)}%`,
-    `rings     ${state.score}/${rings.length}${end}`,
-  ].join('\n');
-}
-
-// Touch: a stick for pitch and roll, hold buttons for throttle and rudder, a camera switch.
+// Touch: a stick for bank and climb, buttons for speed, rudder and camera.
 createStick({
-  label: 'stick: pitch and roll',
+  label: 'stick: bank and climb',
   onChange: (x, y) => {
     stickInput.x = x;
     stickInput.y = y;
@@ -576,18 +868,20 @@ createStick({
 });
 createButtonBar(
   [
-    { label: 'Throttle +', name: 'throttle up', key: '+' },
-    { label: 'Throttle −', name: 'throttle down', key: '-' },
+    { label: 'Faster', name: 'faster', key: '+' },
+    { label: 'Slower', name: 'slower', key: '-' },
     { label: '◀ Rudder', name: 'rudder left', key: 'q' },
     { label: 'Rudder ▶', name: 'rudder right', key: 'e' },
     { label: 'Camera', name: 'camera: chase / cockpit', key: 'c' },
   ],
-  { label: 'throttle, rudder and camera' },
+  { label: 'speed, rudder and camera' },
 ).element.style.maxWidth = '240px';
 
 const panel = createPanel(
   params,
   [
+    { type: 'checkbox', key: 'assist', label: 'flight assist' },
+    { type: 'checkbox', key: 'pilotPitch', label: "pilot's pitch (↓ pulls up)" },
     { type: 'slider', key: 'authority', label: 'control authority (°)', min: 5, max: 30, step: 1 },
     { type: 'slider', key: 'rings', min: 1, max: 30, step: 1, onChange: () => shell.reset() },
     { type: 'slider', key: 'seed', min: 0, max: 1000, step: 1, onChange: () => shell.reset() },
@@ -597,15 +891,24 @@ const panel = createPanel(
 );
 
 shell.expose({
-  /** The pointer to the next ring: its index (-1: none left), whether it is in view, and its text. */
+  /** The pointer to the next ring: its index (-1: none left), whether it is in view, its text and box (px). */
   ringPointer: () => ({ ...ringAim }),
   /** The attitude indicator: shown (cockpit view) and the pitch and roll it drew last, degrees. */
   attitude: () => ({ ...shownAttitude }),
+  /** The course: each ring's centre (m), normal and status. */
+  rings: () => rings.map((r) => ({ ...r })),
+  /** The banner's text now ('' when none shows) and the warning. */
+  banner: () => ({ text: banner.style.display === 'none' ? '' : (banner.textContent ?? ''), warning: state.warning }),
   params,
   panel,
   state,
   /** The aircraft entity. */
   aircraftBody: () => handles.body,
-  /** Speed, altitude, attitude, heading and angle of attack now (m/s, m, degrees). */
+  /** Sets the stick as the on-screen one does: x right, y up, each clamped to [-1, 1]. */
+  setStick: (x: number, y: number): void => {
+    stickInput.x = clamp1(x);
+    stickInput.y = clamp1(y);
+  },
+  /** Speed, altitude, attitude, heading and the wing's angle of attack now (m/s, m, degrees). */
   instruments: () => instruments(shell.world),
 });
