@@ -37,7 +37,7 @@ export function chooseBeacon(beacons: ArrayLike<number>, taken: readonly boolean
 /**
  * The pointer's label: how far ahead or behind the beacon lies (along the hull's heading, so "ahead"
  * means "keep the screw ahead") and how far down or up, each when it is 3 m or more, e.g.
- * "beacon 85 m ahead, 30 m down". The boat moves about twice as fast ahead as it dives, so the depth
+ * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
  * hull's, m (y up); `angle`: the hull's pitch, rad.
  */

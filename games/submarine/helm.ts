@@ -10,9 +10,9 @@
  *   `HELM.diveAngle`. On the surface Dive floods the tanks from empty, the fore tank first. Rise
  *   slows the climb near the surface and blows the tanks dry once the deck is out.
  * - Released under water: depth hold at the depth where the key was let go. The boat's momentum
- *   carries it on (about 6.7 m from a full-speed dive: the thrusters push at once and the tanks blow
- *   as far as needed), then the helm brings it back to that depth, tanks at neutral, within about
- *   6 s. Released on the surface: the tanks stay blown and the boat floats.
+ *   carries it on (under 8 m from a full-speed dive: the thrusters push at once and the tanks blow
+ *   as far as needed), then the helm brings it back to that depth, tanks at neutral, within 8 s.
+ *   Released on the surface: the tanks stay blown and the boat floats.
  * - Nose down / up (held): pitch to `HELM.noseAngle` by the thrusters at once and by moving water
  *   between the tanks; meanwhile the thrusters stop the hull sliding across its axis, so with the
  *   screw ahead the boat follows its nose. Released, the hull levels out and the depth is held.
@@ -77,17 +77,17 @@ const DEG = Math.PI / 180;
 
 /** The helm's settings. */
 export const HELM = Object.freeze({
-  /** Vertical speed asked for while Dive is held, m/s (the boat cruises at about 10 m/s ahead). */
-  diveSpeed: 5,
+  /** Vertical speed asked for while Dive is held, m/s (the boat runs at up to 12.9 m/s ahead). */
+  diveSpeed: 7,
   /** Vertical speed asked for while Rise is held, m/s (less than diving: the boat must slow before the surface). */
-  climbSpeed: 4,
+  climbSpeed: 5.5,
   /** Most tank fill the helm adds or takes away (each tank) to speed the boat up or slow it down. */
   ballastExcess: 0.2,
   /**
    * Most tank fill the helm adds or takes away while holding a depth: all of it, so the tanks blow
    * (flood) as far as the boat's sinking (rising) speed asks, ballastGain per m/s. Stopping 110 t at
-   * 5 m/s takes about 6.7 m even so (60 kN of thrusters, drag k v^2, and the tanks' weight changing
-   * at fillRate x 2 x 20 t x g = 196 kN/s); with ballastExcess, as while diving, it took 10.3 m.
+   * the dive speed still takes metres (100 kN of thrusters, drag k v^2, and the tanks' weight
+   * changing at fillRate x 2 x 20 t x g = 392 kN/s); with only ballastExcess it takes more.
    */
   holdExcess: 1,
   /** Tank fill added per m/s that the boat sinks slower (or rises faster) than asked, s/m. */
@@ -111,9 +111,9 @@ export const HELM = Object.freeze({
   /** A surfaced boat counts as surfaced while its deck bobs less than this under the surface, m. */
   surfaceBand: 1.5,
   /** Throttle change per second while Ahead or Astern is held. */
-  throttleRate: 0.8,
+  throttleRate: 2.5,
   /** Throttle change per second towards stop while neither is held. */
-  throttleRelease: 0.5,
+  throttleRelease: 1,
 });
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);

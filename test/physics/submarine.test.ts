@@ -49,8 +49,8 @@ describe('ballast and buoyancy (Archimedes)', () => {
   test('the tanks fill at their rate and the mass follows', () => {
     const { world, hull } = submerged(0);
     setBallastTarget(world, hull, 1);
-    run(world, 1); // fillRate (0.5 / s) for 1 s: half full
-    const fill = SUBMARINE.fillRate * 1;
+    run(world, 0.5); // fillRate (1 / s) for 0.5 s: half full
+    const fill = SUBMARINE.fillRate * 0.5;
     expect(world.components.Ballast.fore[hull]).toBeCloseTo(fill, 9);
     expect(world.components.Mass.value[hull]).toBeCloseTo(SUBMARINE.dryMass + 2 * SUBMARINE.tankCapacity * fill, 6);
     expect(world.components.Mass.inv[hull]).toBeCloseTo(1 / world.components.Mass.value[hull]!, 15);
@@ -59,7 +59,7 @@ describe('ballast and buoyancy (Archimedes)', () => {
   test('a held dive takes the surfaced boat 2 m under within 6 s', () => {
     // The game's Dive key raises the tanks' target by 0.5 a second; the tanks follow at fillRate. From
     // floating empty on a calm sea (the scene's start), the boat must be 2 m lower within 6 s: a player
-    // sees it respond. At the old fillRate of 0.08 it took 12.5 s (measured with this test's loop).
+    // sees it respond.
     const world = createPhysicsWorld(submarine.worldOptions());
     const { hull } = submarine.build(world, { seed: 1, count: 0 });
     world.components.FluidRegion.surface.fill(0);
@@ -76,9 +76,8 @@ describe('ballast and buoyancy (Archimedes)', () => {
     expect(under).toBeLessThan(6);
   });
 
-  test('vents open on the surface: 2 m under within 3 s, the tanks flooding at 0.5 a second', () => {
+  test('vents open on the surface: 2 m under within 2.2 s, the tanks flooding at 1 a second', () => {
     // Both tanks' target set to full at once (vents open) on the boat floating empty on a calm sea.
-    // Measured with this loop: 2.52 s at fillRate 0.5; at the old 0.25 it took 5.12 s.
     const world = createPhysicsWorld(submarine.worldOptions());
     const { hull } = submarine.build(world, { seed: 1, count: 0 });
     world.components.FluidRegion.surface.fill(0);
@@ -90,11 +89,11 @@ describe('ballast and buoyancy (Archimedes)', () => {
       step(world);
       if (world.components.Position.y[hull]! < y0 - 2) under = i / 60;
     }
-    expect(under).toBeLessThan(3);
+    expect(under).toBeLessThan(2.2);
   });
 
   test('equal vertical thrusters heave the hull: v(t) = v_t tanh(a0 t / v_t), v_t = sqrt(2 T / k)', () => {
-    // Neutral tanks 400 m down, both thrusters at +30 kN: m dv/dt = 2 T - k v^2 (no torque: the
+    // Neutral tanks 400 m down, both thrusters at +50 kN: m dv/dt = 2 T - k v^2 (no torque: the
     // pushes are equal and opposite about the centre), the same exact solution as the screw's.
     const world = createPhysicsWorld(submarine.worldOptions());
     const h = submarine.build(world, { fill: SUBMARINE_NEUTRAL_FILL, position: [0, -400], count: 0 });
@@ -111,8 +110,8 @@ describe('ballast and buoyancy (Archimedes)', () => {
   });
 
   test('opposite vertical thrusters pitch the hull to sin(theta) = arm (F_fore - F_aft) / (M g GM)', () => {
-    // Fore up 15 kN, aft down 15 kN: no net force, torque arm (F_fore - F_aft) = 4.5 m x 30 kN, nose
-    // up, balanced by the righting moment M g GM sin(theta) (forces/ballast.ts): 4.76 degrees.
+    // Fore up 25 kN, aft down 25 kN: no net force, torque arm (F_fore - F_aft) = 4.5 m x 50 kN, nose
+    // up, balanced by the righting moment M g GM sin(theta) (forces/ballast.ts): 7.9 degrees.
     const world = createPhysicsWorld(submarine.worldOptions());
     const h = submarine.build(world, { fill: SUBMARINE_NEUTRAL_FILL, position: [0, -400], count: 0 });
     const F = SUBMARINE.thrusterForce / 2;
@@ -128,7 +127,7 @@ describe('ballast and buoyancy (Archimedes)', () => {
     const { world, hull } = submerged(SUBMARINE_NEUTRAL_FILL);
     setBodyThrust(world, hull, [SUBMARINE.maxThrust, 0]);
     run(world, 40);
-    // F = 120 kN, k = 1200 kg/m: v_t = 10 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
+    // F = 200 kN, k = 1200 kg/m: v_t = 12.9 m/s; m dv/dt = F - k v^2 with m constant (neutral tanks).
     const m = world.components.Mass.value[hull]!;
     const vt = Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient),
       a0 = SUBMARINE.maxThrust / m;

@@ -37,35 +37,38 @@ export const SUBMARINE = Object.freeze({
   /** Water each of the two tanks holds, kg. */
   tankCapacity: 20_000,
   /**
-   * Tank fill rate, fraction per second: 2 s from empty to full, flooding or blowing. The tanks are
+   * Tank fill rate, fraction per second: 1 s from empty to full, flooding or blowing. The tanks are
    * open to the sea at the bottom and vented at the top, so flooding is as fast as the air leaves:
    * through a vent of area A it escapes at v = sqrt(2 dp / rho_air) (Bernoulli) with dp = rho g h
    * the head of water over the tank's air, Q = C_d A v. With h = 1.5 m (dp = 15 kPa, v = 158 m/s),
-   * C_d = 0.6 and A = 0.1 m^2 (one 36 cm vent a tank) Q = 9.5 m^3/s: a 19.5 m^3 tank (20 t of sea
-   * water) in about 2 s. Blowing at 150 m (16 bar) needs 9.75 m^3/s of air at 16 bar, 190 kg/s,
-   * which a 200 bar bank passes through 40 cm^2 of pipe at choked flow (m' = 0.0404 A p0 / sqrt(T0),
-   * Anderson, Modern Compressible Flow, ch. 5). Real boats are slower (a WWII fleet boat got under in
+   * C_d = 0.6 and A = 0.2 m^2 (one 50 cm vent a tank) Q = 19 m^3/s: a 19.5 m^3 tank (20 t of sea
+   * water) in about 1 s. Blowing at 150 m (16 bar, air of 19.4 kg/m^3) needs 19.5 m^3/s of air,
+   * 380 kg/s, which a 200 bar bank passes through 80 cm^2 of pipe at choked flow
+   * (m' = 0.0404 A p0 / sqrt(T0), Anderson, Modern Compressible Flow, ch. 5). Real boats are slower (a WWII fleet boat got under in
    * 30 to 60 s) because their tanks hold hundreds of tonnes and their vents are sized for that.
    */
-  fillRate: 0.5,
+  fillRate: 1,
   /** Distance of each tank from the centre along the hull, m. */
   tankArm: 4,
   /** Height of the centre of buoyancy above the centre of mass, m. */
   metacentricHeight: 1.5,
   /** Quadratic drag coefficient of the fully submerged hull, kg/m: F = k v^2. */
   dragCoefficient: 1200,
-  /** Largest screw thrust, N. */
-  maxThrust: 120_000,
+  /**
+   * Largest screw thrust, N: against the drag k v^2 of the submerged hull it drives the boat at up to
+   * sqrt(F / k) = 12.9 m/s (25 knots), about 2.6 MW of thrust power.
+   */
+  maxThrust: 200_000,
   /** Rotational damping of the hull in water, N m s. */
   angularDamping: 1.5e6,
   /**
    * Largest push of each of the two vertical thrusters, N (up or down, across the hull). A ducted
    * thruster of diameter D (m) and power P (kW) gives T (kN) = (D P)^(2/3) at zero speed (Wartsila,
-   * Encyclopedia of Ship Technology, "bollard pull"): 30 kN is a 1 m thruster of 165 kW. Nordenfelt
+   * Encyclopedia of Ship Technology, "bollard pull"): 50 kN is a 1.2 m thruster of 295 kW. Nordenfelt
    * dived his boats of 1885-7 with such vertical "sinking screws" (BR 3043, The Development of HM
    * Submarines, ch. 18); small submersibles hover and change depth with them today.
    */
-  thrusterForce: 30_000,
+  thrusterForce: 50_000,
   /** Distance of each vertical thruster from the centre along the hull, m (fore at +, aft at -). */
   thrusterArm: 4.5,
 });
