@@ -3,7 +3,14 @@
 // same speed law and the righting moment.
 
 import { addBody, createPhysicsWorld, type PhysicsWorld, setBallast, setBallastTarget, setBodyThrust, step } from '@bitphysics/physics';
-import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, SUBMARINE_WATER_DENSITY, setSubmarineThrusters, submarine } from '@bitphysics/projects';
+import {
+  SUBMARINE,
+  SUBMARINE_NEUTRAL_FILL,
+  SUBMARINE_WATER_DENSITY,
+  seabedHeight,
+  setSubmarineThrusters,
+  submarine,
+} from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 
 /** A submerged hull 40 m down with both tanks at `fill`. */
@@ -162,6 +169,26 @@ describe('ballast and buoyancy (Archimedes)', () => {
     run(world, 30);
     const draft = SUBMARINE.dryMass / (SUBMARINE_WATER_DENSITY * SUBMARINE.length);
     expect(world.components.Position.y[hull]).toBeCloseTo(SUBMARINE.height / 2 - draft, 3);
+  });
+
+  test('lays the first beacon close and shallow, the others over the course between the seabed and the surface', () => {
+    for (const seed of [1, 2, 3, 4, 5, 6]) {
+      const h = submarine.build(createPhysicsWorld(submarine.worldOptions()), { seed, count: 8 });
+      const b = h.beacons;
+      expect(b[0]!).toBeGreaterThanOrEqual(55);
+      expect(b[0]!).toBeLessThanOrEqual(75);
+      expect(b[1]!).toBeGreaterThanOrEqual(-28);
+      expect(b[1]!).toBeLessThanOrEqual(-15);
+      for (let i = 1; i < 8; i++) {
+        const x = b[2 * i]!,
+          y = b[2 * i + 1]!;
+        expect(x).toBeGreaterThanOrEqual(100);
+        expect(x).toBeLessThanOrEqual(1000);
+        expect(x).toBeGreaterThan(b[2 * i - 2]!); // in order along the course
+        expect(y).toBeLessThanOrEqual(-10);
+        expect(y).toBeGreaterThanOrEqual(seabedHeight(h.seabed, x) + 8);
+      }
+    }
   });
 
   test('bad input is refused and leaves the body as it was', () => {

@@ -164,7 +164,8 @@ export function seabedHeight(seabed: SubmarineHandles['seabed'], x: number): num
 
 /**
  * `submarine`: the hull floating at x = 0 (or where asked), the sea (y < 0), a seeded seabed from
- * x = -100 to 1,100 m between 40 and 150 m deep, and `count` beacons between it and the surface.
+ * x = -100 to 1,100 m between 40 and 150 m deep, and `count` beacons between it and the surface
+ * (the first 55 to 75 m ahead and 15 to 28 m down, the others from x = 100 to 1,000 m).
  */
 export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
   name: 'submarine',
@@ -227,12 +228,15 @@ export const submarine: SceneDefinition<SubmarineOptions, SubmarineHandles> = {
       y[i] = Math.max(-150, Math.min(-40, h));
     }
     const seabed = { x0, dx, y };
+    // The first beacon close and shallow (55 to 75 m ahead, 15 to 28 m down: in view from the
+    // start, an easy first catch); the others spread over x = 100 to 1,000 m, each between 8 m
+    // over the seabed and 10 m under the surface.
     const beacons = new Float64Array(2 * count);
     for (let i = 0; i < count; i++) {
-      const bx = 80 + (i + rng.range(0.1, 0.9)) * (900 / Math.max(1, count));
+      const bx = i === 0 ? rng.range(55, 75) : 100 + (i - 1 + rng.range(0.1, 0.9)) * (900 / Math.max(1, count - 1));
       const floor = seabedHeight(seabed, bx);
       beacons[2 * i] = bx;
-      beacons[2 * i + 1] = rng.range(floor + 8, -10);
+      beacons[2 * i + 1] = i === 0 ? Math.max(floor + 8, rng.range(-28, -15)) : rng.range(floor + 8, -10);
     }
     return { hull, sea, seabed, beacons, thrusters };
   },
