@@ -4,20 +4,32 @@
  * helm holds the depth (./helm.ts). Hold Nose down or up to pitch, and drive the screw ahead or
  * astern. The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
  * to how much of it is under water and bobs in the waves. Collect every beacon without scraping the
- * seabed three times.
- * Keys: W / S or up / down arrows dive / rise, Q / E nose down / up, A / D or left / right arrows
- * astern / ahead, P pause, N step, R reset. Touch: the same controls as buttons under the scene
- * (hold them). Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks
- * blow, a rising chime for each beacon (rings spread from it and a banner counts it), a thump on the seabed.
+ * seabed three times, as fast as you can (the clock runs; the best time of each course is kept).
+ * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
+ * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
+ * right ahead, left astern) and Nose buttons. Sound: the screw's hum follows the throttle, a hiss
+ * when the vents open or the tanks blow, a sonar ping that quickens as the next beacon nears, a
+ * rising chime for each beacon (rings spread from it and a banner counts it), a thump on the seabed.
  */
 
-import { createButtonBar, createPanel, getSound, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import {
+  createActionButton,
+  createButtonBar,
+  createPanel,
+  createStick,
+  getSound,
+  numberParam,
+  pageLayout,
+  seedParam,
+} from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, type PhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight, submarine } from '@bitphysics/projects';
 import { Graphics, Text } from 'pixi.js';
 import { beaconLabel, chooseBeacon } from './beacons';
+import { drawBoat } from './boat-drawing';
 import { createHelmState, type HelmInput, steer } from './helm';
+import { drawFish } from './sea-life';
 
 const params = {
   seed: seedParam(),
@@ -61,8 +73,11 @@ const pickups: { x: number; y: number; time: number; text: string }[] = [];
 const PICKUP_LIFE = 2;
 /** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
 const FRAME_MARGIN = 60;
-/** The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on). */
-const FRAME_MIN_ZOOM = 2;
+/**
+ * The framing camera zooms out no further than this, px/m (beyond, the edge arrow leads on): 2 on
+ * a wide screen, 3 on a small one, where the hull would otherwise shrink to a few pixels.
+ */
+const FRAME_MIN_ZOOM = pageLayout().compact() ? 3 : 2;
 /** The camera's zoom now, px/m (eased toward the framing zoom; NaN: set at the next frame). */
 let zoom = Number.NaN;
 
@@ -78,6 +93,10 @@ function createWorld(): PhysicsWorld {
 }
 
 const held = new Set<string>();
+/** The on-screen stick (phones): x right (ahead), y up (rise), each in [-1, 1]. */
+const stickInput = { x: 0, y: 0 };
+/** How far the stick must move before it counts as a held control. */
+const STICK_DEAD = 0.35;
 addEventListener('keydown', (e) => {
   held.add(e.key.toLowerCase());
 });
@@ -104,20 +123,22 @@ function hullPoints(world: PhysicsWorld): number[][] {
   ];
 }
 
-/** The controls held now (keys and on-screen buttons, which send the same keys). */
+/** The controls held now (keys, the on-screen buttons, which send the same keys, and the stick). */
 function heldInput(): HelmInput {
   return {
-    dive: held.has('w') || held.has('arrowdown'),
-    rise: held.has('s') || held.has('arrowup'),
+    dive: held.has('s') || held.has('arrowdown') || stickInput.y < -STICK_DEAD,
+    rise: held.has('w') || held.has('arrowup') || stickInput.y > STICK_DEAD,
     noseDown: held.has('q'),
     noseUp: held.has('e'),
-    ahead: held.has('d') || held.has('arrowright'),
-    astern: held.has('a') || held.has('arrowleft'),
+    ahead: held.has('d') || held.has('arrowright') || stickInput.x > STICK_DEAD,
+    astern: held.has('a') || held.has('arrowleft') || stickInput.x < -STICK_DEAD,
   };
 }
 
 /** The vertical command last step (-1 dive, 1 rise, 0 none): a hiss when it starts. */
 let lastVertical = 0;
+/** Game time of the last sonar ping, s. */
+let lastPing = 0;
 
 function stepWorld(world: PhysicsWorld): void {
   const input = heldInput();
@@ -131,6 +152,19 @@ function stepWorld(world: PhysicsWorld): void {
   step(world);
   if (state.over) return;
   state.time = world.time;
+  // Sonar: a ping towards the next beacon, quicker the nearer it is (every 0.7 s near, 2.5 s far),
+  // under water only.
+  const next = aim.index;
+  if (next >= 0 && world.components.Position.y[handles.hull]! < -SUBMARINE.height) {
+    const d = Math.hypot(
+      handles.beacons[2 * next]! - world.components.Position.x[handles.hull]!,
+      handles.beacons[2 * next + 1]! - world.components.Position.y[handles.hull]!,
+    );
+    if (world.time - lastPing > Math.min(2.5, Math.max(0.7, d / 50))) {
+      lastPing = world.time;
+      sound.chime(d < 40 ? 1568 : 1175, 0.22);
+    }
+  }
   // The seabed: scraping it costs hull integrity and bounces the boat up.
   const c = world.components,
     e = handles.hull;
@@ -174,7 +208,10 @@ function stepWorld(world: PhysicsWorld): void {
         setTimeout(() => sound.chime(2093, 0.6), 230);
         sound.crackle(14, 0.9);
       }
-      if (state.collected === taken.length) state.over = 'won';
+      if (state.collected === taken.length) {
+        state.over = 'won';
+        recordWin(world.time);
+      }
     }
   }
 }
@@ -188,9 +225,9 @@ const game = await startPixiGame({
   step: stepWorld,
   bodies: () => 1,
   controls: [
-    { keys: 'W / S', action: 'dive / rise (let go: hold depth)', touch: 'Dive / Rise' },
+    { keys: '↓ ↑ / S W', action: 'dive / rise (let go: hold depth)', touch: 'stick ↓ ↑' },
+    { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
-    { keys: 'A / D', action: 'screw astern / ahead', touch: 'Astern / Ahead' },
   ],
   app: { background: 0x0b2340, antialias: true },
   renderer: { pixelsPerMeter: params.pixelsPerMeter },
@@ -236,26 +273,99 @@ const readout = document.createElement('div');
 readout.dataset.hud = 'readout';
 const instruments = document.createElement('div');
 instruments.dataset.hud = 'instruments';
-instruments.style.cssText = 'font-size: 11px; opacity: 0.6;';
+instruments.style.cssText = 'font-size: 11px; color: #b4c4d4;';
+// On a phone the status row keeps two short lines (the instruments are for wide screens).
+if (pageLayout().compact()) instruments.style.display = 'none';
 gauge.append(goal, readout, instruments);
 pageLayout().status.append(gauge);
+
+/** The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again. */
+const endCard = document.createElement('div');
+endCard.dataset.sceneOverlay = '';
+endCard.dataset.hud = 'end';
+endCard.style.cssText =
+  'position: absolute; z-index: 4; left: 50%; top: 26%; transform: translate(-50%, -50%); width: min(88%, 400px); box-sizing: border-box;' +
+  'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.88); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
+  'text-align: center; pointer-events: none; display: none;';
+pageLayout().stage.append(endCard);
+const showAgain = createActionButton('Play again ▶', () => shell.reset());
+/** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
+const BEST_KEY = 'bitphysics.submarine.best';
+function bestTime(): number | null {
+  try {
+    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
+    return all[`${params.seed}/${params.beacons}`] ?? null;
+  } catch {
+    return null;
+  }
+}
+/** Whether the last win set a new best (shown on the end card). */
+let newBest = false;
+/** Keeps `time` as the best of this course if it is one. */
+function recordWin(time: number): void {
+  const best = bestTime();
+  newBest = best === null || time < best;
+  if (!newBest) return;
+  try {
+    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
+    all[`${params.seed}/${params.beacons}`] = time;
+    localStorage.setItem(BEST_KEY, JSON.stringify(all));
+  } catch {
+    /* storage refused: no best kept */
+  }
+}
+/** m:ss of `t` seconds. */
+function clock(t: number): string {
+  const s = Math.floor(t);
+  return `${Math.floor(s / 60)}:${String(s % 60).padStart(2, '0')}`;
+}
+/** Shows or hides the end card for the state now. */
+function showEnd(): void {
+  if (!state.over) {
+    endCard.style.display = 'none';
+    showAgain(false);
+    return;
+  }
+  const won = state.over === 'won',
+    hull = 3 - state.hits;
+  const best = bestTime();
+  endCard.style.display = 'block';
+  endCard.replaceChildren();
+  const title = document.createElement('div');
+  title.style.cssText = `font: 800 24px system-ui, sans-serif; color: ${won ? '#ffe066' : '#ff8a7a'};`;
+  title.textContent = won ? (taken.length === 1 ? 'Beacon collected!' : `All ${taken.length} beacons!`) : 'Hull breached!';
+  const line = document.createElement('div');
+  line.textContent = won
+    ? `${clock(state.time)} · hull ${hull}/3  ${'★'.repeat(hull)}${'☆'.repeat(3 - hull)}`
+    : `${state.collected} of ${taken.length} beacons before the third scrape.`;
+  const bestLine = document.createElement('div');
+  bestLine.style.cssText = 'color: #b8c8d8; font-size: 14px;';
+  bestLine.textContent =
+    won && newBest ? 'A new best time for this sea!' : best !== null ? `Best: ${clock(best)}` : 'Keep clear of the seabed.';
+  endCard.append(title, line, bestLine);
+  showAgain(true, won ? 'Play again ▶' : 'Try again ↺');
+}
 let gaugeFrame = 0;
 /** The "beacon" tags under beacons in view other than the pointer's (a pool, hidden when unused). */
 const tags: Text[] = [];
 /** How many tags are shown this frame. */
 let otherTags = 0;
 
-// Touch: hold a button as a key (the same six controls as W S Q E A D).
+// Touch: a stick (up rise, down dive, right ahead, left astern, diagonals both) and two buttons
+// for the nose (hold them as the Q and E keys).
+createStick({
+  label: 'stick: dive, rise, ahead, astern',
+  onChange: (x, y) => {
+    stickInput.x = x;
+    stickInput.y = y;
+  },
+});
 createButtonBar(
   [
-    { label: 'Dive ▼', name: 'flood ballast (dive)', key: 'w' },
-    { label: 'Rise ▲', name: 'blow ballast (rise)', key: 's' },
     { label: 'Nose ↘', name: 'nose down', key: 'q' },
     { label: 'Nose ↗', name: 'nose up', key: 'e' },
-    { label: '◀ Astern', name: 'screw astern', key: 'a' },
-    { label: 'Ahead ▶', name: 'screw ahead', key: 'd' },
   ],
-  { label: 'ballast, trim and screw' },
+  { label: 'trim' },
 );
 
 /** A well-mixed 32-bit hash of a cell (i, j) of the marine snow: its speck's offset, size and brightness. */
@@ -269,6 +379,8 @@ function speckHash(i: number, j: number): number {
 /** Bubbles and spray (drawing only): world position (m), age and life (s), radius (m). */
 const bubbles: { x: number; y: number; age: number; life: number; r: number }[] = [];
 let bubbleTime = 0;
+/** The screw's turn for drawing, rad. */
+let screwPhase = 0;
 let lastFill = [0, 0];
 
 /**
@@ -468,6 +580,7 @@ function draw(): void {
       }
     }
   }
+  drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a pulsing ring; each one
   // on screen but the pointer's is tagged "beacon" under it, so a yellow light elsewhere in the view
   // reads as another beacon to collect, not as something unexplained.
@@ -515,7 +628,8 @@ function draw(): void {
     }
   }
   const newest = pickups[pickups.length - 1];
-  banner.visible = newest !== undefined;
+  // The end card takes over from the banner once the run is over.
+  banner.visible = newest !== undefined && !state.over;
   if (newest) {
     const u = (t - newest.time) / PICKUP_LIFE;
     banner.text = newest.text;
@@ -602,36 +716,27 @@ function draw(): void {
       ph = pointer.height + 4;
     g.roundRect(pointer.x - pw / 2, pointer.y - ph / 2, pw, ph, ph / 2).fill({ color: 0x06213a, alpha: 0.85 });
   }
-  // Hull: a rounded rectangle with a sail, rotated by the hull's angle.
+  // The boat (./boat-drawing.ts), turned by the hull's angle; the screw's blades turn with the throttle.
   const a = c.Angle.value[e]!,
     co = Math.cos(a),
     s = Math.sin(a);
-  const L = SUBMARINE.length / 2,
-    Hh = SUBMARINE.height / 2;
+  const Hh = SUBMARINE.height / 2;
   const pt = (u: number, v: number): [number, number] => [sx(hxw + u * co - v * s), sy(hyw + u * s + v * co)];
-  const hull = [
-    [-L, -Hh * 0.6],
-    [-L * 0.9, -Hh],
-    [L * 0.8, -Hh],
-    [L, 0],
-    [L * 0.8, Hh],
-    [-L * 0.9, Hh],
-    [-L, Hh * 0.6],
-  ].map(([u, v]) => pt(u!, v!));
-  g.poly(hull.flat())
-    .fill(state.touching ? 0xd05050 : 0x2f3b45)
-    .stroke({ color: 0x9fb3c2, width: 1.5 });
-  g.poly([pt(-1, Hh), pt(-0.5, Hh + 2), pt(1.5, Hh + 2), pt(2, Hh)].flat()).fill(0x2f3b45);
-  // Water in the tanks.
   const B = c.Ballast;
-  for (const [u, f] of [
-    [SUBMARINE.tankArm, B.fore[e]!],
-    [-SUBMARINE.tankArm, B.aft[e]!],
-  ] as const) {
-    g.poly(
-      [pt(u - 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8), pt(u + 1.5, -Hh * 0.8 + 1.6 * Hh * f), pt(u - 1.5, -Hh * 0.8 + 1.6 * Hh * f)].flat(),
-    ).fill({ color: 0x4fa3ff, alpha: 0.8 });
-  }
+  screwPhase += state.throttle * 0.5;
+  drawBoat(g, {
+    length: SUBMARINE.length,
+    height: SUBMARINE.height,
+    pt,
+    scale: k,
+    angle: a,
+    tanks: [B.fore[e]!, B.aft[e]!],
+    tankArm: SUBMARINE.tankArm,
+    screwPhase,
+    throttle: state.throttle,
+    depth: -hyw,
+    touching: state.touching,
+  });
   // The vertical thrusters' wash: water thrown opposite to each one's push, as long as it is strong.
   const n = SUBMARINE.thrusterForce;
   for (const [u, f] of [
@@ -659,11 +764,17 @@ function draw(): void {
   const floor = seabedHeight(handles.seabed, cx);
   engine.set(state.over ? 0 : Math.abs(state.throttle));
   if (gaugeFrame++ % 6 !== 0) return;
-  const end = state.over === 'won' ? 'ALL COLLECTED!' : state.over === 'sunk' ? 'HULL BREACHED (reset to retry)' : '';
+  const end =
+    state.over === 'won'
+      ? `All ${taken.length} beacons in ${clock(state.time)}!`
+      : state.over === 'sunk'
+        ? `Hull breached · ${state.collected} of ${taken.length} beacons`
+        : '';
+  showEnd();
   const helm = state.mode === 'holding' ? `holding ${(-state.holdY).toFixed(0)} m` : state.mode === 'braking' ? 'stopping' : state.mode;
   // The goal and a short readout first; the instruments (tanks, pitch, climb, helm) after, small and dim.
-  goal.textContent = end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} so far`;
-  readout.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · beacons ${state.collected}/${taken.length} · hull ${3 - state.hits}/3`;
+  goal.textContent = end || `Collect the ${taken.length} beacons · ${state.collected} of ${taken.length} · ${clock(state.time)}`;
+  readout.textContent = `depth ${depth.toFixed(0)} m · speed ${speed.toFixed(1)} m/s · hull ${3 - state.hits}/3`;
   instruments.textContent = `seabed ${(-floor).toFixed(0)} m · climb ${c.Velocity.y[e]!.toFixed(1)} m/s · pitch ${((a * 180) / Math.PI).toFixed(0)}° · screw ${(state.throttle * 100).toFixed(0)}% · tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%) · ${helm}`;
 }
 
@@ -691,6 +802,13 @@ shell.expose({
   hull: () => handles.hull,
   /** The scene's handles: hull, sea, seabed, beacons (x, y pairs, m) and vertical thrusters. */
   handles: () => handles,
+  /** Sets the stick as the on-screen one does: x right (ahead), y up (rise), each clamped to [-1, 1]. */
+  setStick: (x: number, y: number): void => {
+    stickInput.x = Math.max(-1, Math.min(1, x));
+    stickInput.y = Math.max(-1, Math.min(1, y));
+  },
+  /** The end card's text ('' while the run goes on). */
+  endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
   /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */
   setControls: (controls: { throttle?: number }): void => {
     if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-0.5, controls.throttle));

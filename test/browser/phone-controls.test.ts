@@ -44,27 +44,48 @@ describe('phone controls', () => {
     await h?.close();
   });
 
-  it('submarine: holding Dive floods the tanks, Ahead drives the screw', async () => {
+  it('submarine: the stick down floods the tanks, right drives the screw', async () => {
     const g = await h.openGame('submarine', PHONE);
     expect(await read(g, 'state.fill')).toBe(0);
+    const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
+    const cx = stick.x + stick.width / 2,
+      cy = stick.y + stick.height / 2;
     // Read while the finger is down: let go on the surface, the helm blows the tanks again.
-    const box = (await g.page.getByRole('button', { name: 'flood ballast (dive)', exact: true }).boundingBox())!;
     let fill = 0;
-    await touchPath(g.page, [[box.x + box.width / 2, box.y + box.height / 2]], 400, async () => {
-      fill = await read(g, 'state.fill');
-    });
+    await touchPath(
+      g.page,
+      [
+        [cx, cy],
+        [cx, cy + 45],
+      ],
+      400,
+      async () => {
+        fill = await read(g, 'state.fill');
+      },
+    );
     expect(fill).toBeGreaterThan(0.02);
-    await hold(g.page, 'screw ahead');
-    expect(await read(g, 'state.throttle')).toBeGreaterThan(0.05);
+    let throttle = 0;
+    await touchPath(
+      g.page,
+      [
+        [cx, cy],
+        [cx + 45, cy],
+      ],
+      400,
+      async () => {
+        throttle = await read(g, 'state.throttle');
+      },
+    );
+    expect(throttle).toBeGreaterThan(0.05);
     expect(g.errors).toEqual([]);
     await g.close();
   });
 
-  it('submarine: a touch on Dive starts the boat down within 0.5 s of game time; gauges and beacon arrow fit', async () => {
+  it('submarine: a touch on the stick starts the boat down within 0.5 s of game time; gauges and beacon arrow fit', async () => {
     // A calm sea (waves=0), so the heave measured is the boat's own. The page records, every frame,
     // the game time and the hull's height and climb from the moment the finger goes down; the helm
     // (games/submarine/helm.ts) must have it sinking at 0.2 m/s within 0.5 s and 2 m down within 3 s
-    // of game time (the old controls: 0.65 s and 5.1 s, test/games/submarine-helm.test.ts).
+    // of game time.
     const g = await h.openGame('submarine', { ...PHONE, query: { waves: 0 } });
     type Sub = {
       world: { time: number; components: { Position: { y: Float64Array }; Velocity: { y: Float64Array } } };
@@ -82,12 +103,13 @@ describe('phone controls', () => {
       };
       requestAnimationFrame(frame);
     });
-    const box = (await g.page.getByRole('button', { name: 'flood ballast (dive)', exact: true }).boundingBox())!;
+    // The finger goes down at the bottom of the stick: full dive from the first touch.
+    const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
     const cdp = await g.page.context().newCDPSession(g.page);
     const t0 = await read(g, 'world.time');
     await cdp.send('Input.dispatchTouchEvent', {
       type: 'touchStart',
-      touchPoints: [{ x: box.x + box.width / 2, y: box.y + box.height / 2, id: 1 }],
+      touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
     });
     // Held until 3.5 s of game time have passed (a slow machine runs fewer frames, not less game time).
     await g.waitFor((start) => (window.game as unknown as Sub).world.time > start + 3.5, t0, 60_000);
@@ -117,7 +139,7 @@ describe('phone controls', () => {
       const b = el.getBoundingClientRect();
       return { text: el.textContent ?? '', right: b.right, bottom: b.bottom, scroll: el.scrollWidth, client: el.clientWidth };
     });
-    expect(gauge.text).toContain('HULL BREACHED');
+    expect(gauge.text).toContain('Hull breached');
     expect(gauge.right).toBeLessThanOrEqual(390);
     expect(gauge.scroll).toBeLessThanOrEqual(gauge.client);
     expect((await checkLayout(g.page)).clipped).toEqual([]);
