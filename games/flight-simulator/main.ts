@@ -30,12 +30,7 @@ import { startThreeGame } from '@bitphysics/game-kit/three';
 import { createPhysicsWorld, type PhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
 import { AIRCRAFT, AIRCRAFT_TRIM_SPEED, type AircraftHandles, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';
 import {
-  BoxGeometry,
-  type BufferGeometry,
-  ConeGeometry,
-  CylinderGeometry,
   DoubleSide,
-  Float32BufferAttribute,
   HemisphereLight,
   IcosahedronGeometry,
   Mesh,
@@ -45,8 +40,9 @@ import {
   TorusGeometry,
   Vector3,
 } from 'three';
-import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
+import { aircraftGeometry } from './aircraft-model';
 import { ASSIST, assist, autoThrottle, createAssistState, type FlightState, flightState } from './assist';
+import { createAttitudeIndicator } from './attitude-indicator';
 import { courseStars, crossRing, layCourse, nextRing, RING_RADIUS, type Ring } from './course';
 import { createScenery, HORIZON_COLOUR, SUN_DIRECTION } from './scenery';
 
@@ -327,66 +323,8 @@ app.scene.add(new HemisphereLight(0xcfe6ff, 0x4a5a3a, 0.4));
 const scenery = createScenery(app.scene);
 scenery.setTerrain(handles.terrain, params.seed);
 
-// ---- The aircraft's looks: fuselage, wings with dihedral, tailplane and fin (x forward, y up) ------
+// ---- The aircraft's looks (./aircraft-model.ts) ---------------------------------------------------
 
-/** A part of the model in one colour (a vertex colour on the merged geometry). */
-function painted(g: BufferGeometry, colour: number): BufferGeometry {
-  const part = g.toNonIndexed();
-  const n = part.attributes.position!.count;
-  const r = ((colour >> 16) & 255) / 255,
-    gr = ((colour >> 8) & 255) / 255,
-    b = (colour & 255) / 255;
-  const c = new Float32Array(3 * n);
-  for (let i = 0; i < n; i++) c.set([r, gr, b], 3 * i);
-  part.setAttribute('color', new Float32BufferAttribute(c, 3));
-  return part;
-}
-
-function aircraftGeometry(): BufferGeometry {
-  const white = 0xf2f4f7,
-    red = 0xd8342c,
-    blue = 0x1f4e8c,
-    glass = 0x1b2a3a;
-  const parts: BufferGeometry[] = [];
-  const fuselage = new CylinderGeometry(1.3, 1.0, 24, 16);
-  fuselage.rotateZ(-Math.PI / 2);
-  fuselage.translate(-1, 0, 0);
-  parts.push(painted(fuselage, white));
-  const stripe = new CylinderGeometry(1.33, 1.2, 14, 16, 1, true, Math.PI * 0.35, Math.PI * 0.3);
-  stripe.rotateZ(-Math.PI / 2);
-  stripe.translate(1, 0, 0);
-  parts.push(painted(stripe, blue), painted(stripe.clone().rotateX(Math.PI), blue));
-  const nose = new ConeGeometry(1.3, 4, 16);
-  nose.rotateZ(-Math.PI / 2);
-  nose.translate(13, 0, 0);
-  parts.push(painted(nose, red));
-  const canopy = new CylinderGeometry(0.75, 0.75, 4.5, 12, 1, false, 0, Math.PI);
-  canopy.rotateZ(-Math.PI / 2);
-  canopy.rotateX(-Math.PI / 2);
-  canopy.translate(8.5, 0.9, 0);
-  parts.push(painted(canopy, glass));
-  // Each wing half tilted up by the dihedral from a root under the fuselage.
-  const dihedral = AIRCRAFT.dihedral;
-  for (const side of [-1, 1]) {
-    const half = new BoxGeometry(4, 0.35, 15);
-    half.translate(0.5, 0, side * 7.5);
-    half.rotateX(side * dihedral);
-    half.translate(0, -0.9, 0);
-    parts.push(painted(half, white));
-    const tip = new BoxGeometry(4.05, 0.4, 1.2);
-    tip.translate(0.5, 0, side * 14.4);
-    tip.rotateX(side * dihedral);
-    tip.translate(0, -0.9, 0);
-    parts.push(painted(tip, red));
-  }
-  const tail = new BoxGeometry(2.6, 0.25, 10);
-  tail.translate(-12, 0.3, 0);
-  parts.push(painted(tail, white));
-  const fin = new BoxGeometry(3, 5, 0.3);
-  fin.translate(-12, 2.8, 0);
-  parts.push(painted(fin, red));
-  return mergeGeometries(parts)!;
-}
 const planeMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.45, metalness: 0.15 });
 const planeGeometry = aircraftGeometry();
 function dress(): void {
@@ -620,94 +558,9 @@ function updateBanner(t: number): void {
 
 // ---- The attitude indicator (cockpit view), drawn at the top of the scene -------------------------
 
-const HORIZON_SIZE = compact ? 120 : 150;
-const PITCH_PX = HORIZON_SIZE / 68;
-const horizon = document.createElement('canvas');
-horizon.width = HORIZON_SIZE * devicePixelRatio;
-horizon.height = HORIZON_SIZE * devicePixelRatio;
-horizon.dataset.sceneOverlay = '';
-horizon.setAttribute('aria-label', 'attitude indicator');
-horizon.style.cssText = `position: absolute; left: 50%; top: 8px; width: ${HORIZON_SIZE}px; height: ${HORIZON_SIZE}px; transform: translateX(-50%); pointer-events: none; z-index: 5; display: none`;
-layout.stage.append(horizon);
+const horizon = createAttitudeIndicator(layout.stage, compact ? 120 : 150);
 /** What the indicator showed last: pitch and roll, degrees (tests read them). */
 const shownAttitude = { pitch: 0, roll: 0, visible: false };
-
-function drawHorizon(pitch: number, roll: number): void {
-  const g = horizon.getContext('2d');
-  if (!g) return;
-  const S = HORIZON_SIZE,
-    c = S / 2;
-  g.setTransform(devicePixelRatio, 0, 0, devicePixelRatio, 0, 0);
-  g.clearRect(0, 0, S, S);
-  g.save();
-  g.beginPath();
-  g.arc(c, c, c - 2, 0, 2 * Math.PI);
-  g.clip();
-  g.translate(c, c);
-  g.rotate((-roll * Math.PI) / 180);
-  const dy = pitch * PITCH_PX;
-  g.fillStyle = '#2a6fb8';
-  g.fillRect(-S, -2 * S + dy, 2 * S, 2 * S);
-  g.fillStyle = '#6b4526';
-  g.fillRect(-S, dy, 2 * S, 2 * S);
-  g.strokeStyle = '#ffffff';
-  g.lineWidth = 2;
-  g.beginPath();
-  g.moveTo(-S, dy);
-  g.lineTo(S, dy);
-  g.stroke();
-  g.lineWidth = 1;
-  g.font = 'bold 10px system-ui, sans-serif';
-  g.fillStyle = '#ffffff';
-  for (let p = -30; p <= 30; p += 10) {
-    if (p === 0) continue;
-    const y = dy - p * PITCH_PX,
-      half = p % 20 === 0 ? 22 : 14;
-    g.beginPath();
-    g.moveTo(-half, y);
-    g.lineTo(half, y);
-    g.stroke();
-    g.fillText(String(Math.abs(p)), half + 3, y + 3);
-  }
-  g.restore();
-  g.strokeStyle = '#ffffff';
-  g.lineWidth = 2;
-  for (const b of [-60, -30, -20, -10, 0, 10, 20, 30, 60]) {
-    const a = ((b - 90) * Math.PI) / 180,
-      r1 = c - 4,
-      r2 = c - (b % 30 === 0 ? 14 : 9);
-    g.beginPath();
-    g.moveTo(c + r1 * Math.cos(a), c + r1 * Math.sin(a));
-    g.lineTo(c + r2 * Math.cos(a), c + r2 * Math.sin(a));
-    g.stroke();
-  }
-  const pa = ((-roll - 90) * Math.PI) / 180;
-  g.fillStyle = '#ffd166';
-  g.beginPath();
-  g.moveTo(c + (c - 16) * Math.cos(pa), c + (c - 16) * Math.sin(pa));
-  g.lineTo(c + (c - 26) * Math.cos(pa + 0.09), c + (c - 26) * Math.sin(pa + 0.09));
-  g.lineTo(c + (c - 26) * Math.cos(pa - 0.09), c + (c - 26) * Math.sin(pa - 0.09));
-  g.fill();
-  g.strokeStyle = '#ffd166';
-  g.lineWidth = 4;
-  g.beginPath();
-  g.moveTo(c - 0.28 * S, c);
-  g.lineTo(c - 14, c);
-  g.lineTo(c - 8, c + 7);
-  g.moveTo(c + 0.28 * S, c);
-  g.lineTo(c + 14, c);
-  g.lineTo(c + 8, c + 7);
-  g.stroke();
-  g.fillStyle = '#ffd166';
-  g.beginPath();
-  g.arc(c, c, 3, 0, 2 * Math.PI);
-  g.fill();
-  g.strokeStyle = '#0b0f14';
-  g.lineWidth = 3;
-  g.beginPath();
-  g.arc(c, c, c - 2, 0, 2 * Math.PI);
-  g.stroke();
-}
 
 // ---- Guidance: where the next ring is -----------------------------------------------------------
 
@@ -818,13 +671,13 @@ function frame(): void {
   pointToNextRing();
   engine.set(state.phase === 'crashed' ? 0 : 0.25 + 0.75 * state.throttle);
   const cockpit = state.camera === 'cockpit';
-  horizon.style.display = cockpit ? 'block' : 'none';
+  horizon.show(cockpit);
   shownAttitude.visible = cockpit;
   const i = instruments(world);
   if (cockpit) {
     shownAttitude.pitch = i.pitch;
     shownAttitude.roll = i.roll;
-    drawHorizon(i.pitch, i.roll);
+    horizon.draw(i.pitch, i.roll);
   }
   drawCrash();
   updateBanner(world.time);
