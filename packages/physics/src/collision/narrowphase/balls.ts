@@ -194,13 +194,121 @@ function segmentSweep(): void {
  * @category Collision
  */
 export function narrowphaseSystem(world: PhysicsWorld): void {
-  const c = world.components;
   const cs = world.collision;
   const buf = cs.contacts;
   buf.count = 0;
+  const pairA = cs.pairA,
+    pairB = cs.pairB,
+    pairKind = cs.pairKind;
+  for (let i = 0, n = cs.pairCount; i < n; i++) {
+    if (pairKind[i] === PairKind.BallBall) {
+      // A run of ball-ball pairs: one range kernel, on the world's threads or here
+      // (collision/narrowphase/balls-threads.ts: the same contacts in the same order).
+      let j = i + 1;
+      while (j < n && pairKind[j] === PairKind.BallBall) j++;
+      ballContactsStage(world, cs, buf, i, j);
+      i = j - 1;
+    } else segmentContact(world, buf, pairA[i]!, pairB[i]!);
+  }
+  if (cs.boundary.enabled) boundaryContacts(world, buf);
+  planeContacts(world, buf);
+  cs.stats.contacts = buf.count;
+}
+
+/**
+ * The contact of ball `b` with the static segment `s` (a capsule of the segment's radius), if the ball
+ * comes within the speculative distance of it this step: the normal from where the ball's centre first
+ * touches the segment (or where it starts), the gap from the start of the step.
+ */
+function segmentContact(world: PhysicsWorld, buf: ContactBuffer, s: number, b: number): void {
+  const c = world.components;
   const h = world.h;
-  const spec = cs.settings.speculativeDistance;
-  const spec0 = spec;
+  const spec = world.collision.settings.speculativeDistance;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const radius = c.Ball.radius;
+  const S = c.Segment;
+  const W = rowArgs,
+    GA = segmentArgs;
+  const ax = S.ax[s]!,
+    ay = S.ay[s]!,
+    az = S.az[s]!;
+  const ex = S.bx[s]! - ax,
+    ey = S.by[s]! - ay,
+    ez = S.bz[s]! - az;
+  const wx = vx[b]!,
+    wy = vy[b]!,
+    wz = vz[b]!;
+  const R = S.radius[s]! + radius[b]!;
+  // Where the ball's centre is when it first touches the segment this step (or at the start).
+  GA[0] = ox[b]! - ax;
+  GA[1] = oy[b]! - ay;
+  GA[2] = oz[b]! - az;
+  GA[3] = ex;
+  GA[4] = ey;
+  GA[5] = ez;
+  GA[6] = wx;
+  GA[7] = wy;
+  GA[8] = wz;
+  GA[9] = R;
+  GA[10] = h;
+  segmentSweep();
+  const t = GA[11]!;
+  const px = ox[b]! + wx * t,
+    py = oy[b]! + wy * t,
+    pz = oz[b]! + wz * t;
+  const len2 = ex * ex + ey * ey + ez * ez;
+  let u = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
+  u = u < 0 ? 0 : u > 1 ? 1 : u;
+  const qx = ax + u * ex,
+    qy = ay + u * ey,
+    qz = az + u * ez;
+  let dx = px - qx,
+    dy = py - qy,
+    dz = pz - qz;
+  const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+  if (d > 1e-12) {
+    const inv = 1 / d;
+    dx *= inv;
+    dy *= inv;
+    dz *= inv;
+  } else {
+    // Centre exactly on the segment: push out along the segment's left normal (2D) or +y.
+    const el = Math.sqrt(len2);
+    if (el > 0 && world.dimensions === 2) {
+      dx = -ey / el;
+      dy = ex / el;
+      dz = 0;
+    } else {
+      dx = 0;
+      dy = 1;
+      dz = 0;
+    }
+  }
+  // Gap along that normal from the same feature point, where the ball was at the start of the step.
+  const sep = (ox[b]! - qx) * dx + (oy[b]! - qy) * dy + (oz[b]! - qz) * dz - R;
+  const vn = wx * dx + wy * dy + wz * dz;
+  const rb = radius[b]!;
+  if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.5 * rb ? spec : 0.5 * rb)) return;
+  W[0] = dx;
+  W[1] = dy;
+  W[2] = dz;
+  W[3] = sep;
+  W[4] = 0;
+  W[5] = radius[b]!;
+  pushContact(buf, ContactKind.Segment, 0, b, s);
+}
+
+/** Contacts of the moving balls with the faces of the boundary box near which they come this step (2D: four faces, 3D: six). */
+function boundaryContacts(world: PhysicsWorld, buf: ContactBuffer): void {
+  const c = world.components;
+  const cs = world.collision;
+  const h = world.h;
+  const spec0 = cs.settings.speculativeDistance;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
     oz = c.PreviousPosition.z;
@@ -209,210 +317,135 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
     vz = c.Velocity.z;
   const radius = c.Ball.radius;
   const type = cs.bodyType;
-
-  const pairA = cs.pairA,
-    pairB = cs.pairB,
-    pairKind = cs.pairKind;
-  const S = c.Segment;
   // A 2D world's z stores hold 0 (bodies/api.ts writes them so; nothing integrates them): not read.
   const is3D = world.dimensions === 3;
-  const W = rowArgs,
-    GA = segmentArgs;
-  for (let i = 0, n = cs.pairCount; i < n; i++) {
-    const kind = pairKind[i]!;
-    const b = pairB[i]!;
-    if (kind === PairKind.BallBall) {
-      // A run of ball-ball pairs: one range kernel, on the world's threads or here
-      // (collision/narrowphase/balls-threads.ts: the same contacts in the same order).
-      let j = i + 1;
-      while (j < n && pairKind[j] === PairKind.BallBall) j++;
-      ballContactsStage(world, cs, buf, i, j);
-      i = j - 1;
-    } else {
-      const s = pairA[i]!;
-      const ax = S.ax[s]!,
-        ay = S.ay[s]!,
-        az = S.az[s]!;
-      const ex = S.bx[s]! - ax,
-        ey = S.by[s]! - ay,
-        ez = S.bz[s]! - az;
-      const wx = vx[b]!,
-        wy = vy[b]!,
-        wz = vz[b]!;
-      const R = S.radius[s]! + radius[b]!;
-      // Where the ball's centre is when it first touches the segment this step (or at the start).
-      GA[0] = ox[b]! - ax;
-      GA[1] = oy[b]! - ay;
-      GA[2] = oz[b]! - az;
-      GA[3] = ex;
-      GA[4] = ey;
-      GA[5] = ez;
-      GA[6] = wx;
-      GA[7] = wy;
-      GA[8] = wz;
-      GA[9] = R;
-      GA[10] = h;
-      segmentSweep();
-      const t = GA[11]!;
-      const px = ox[b]! + wx * t,
-        py = oy[b]! + wy * t,
-        pz = oz[b]! + wz * t;
-      const len2 = ex * ex + ey * ey + ez * ez;
-      let u = len2 > 0 ? ((px - ax) * ex + (py - ay) * ey + (pz - az) * ez) / len2 : 0;
-      u = u < 0 ? 0 : u > 1 ? 1 : u;
-      const qx = ax + u * ex,
-        qy = ay + u * ey,
-        qz = az + u * ez;
-      let dx = px - qx,
-        dy = py - qy,
-        dz = pz - qz;
-      const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (d > 1e-12) {
-        const inv = 1 / d;
-        dx *= inv;
-        dy *= inv;
-        dz *= inv;
-      } else {
-        // Centre exactly on the segment: push out along the segment's left normal (2D) or +y.
-        const el = Math.sqrt(len2);
-        if (el > 0 && world.dimensions === 2) {
-          dx = -ey / el;
-          dy = ex / el;
-          dz = 0;
-        } else {
-          dx = 0;
-          dy = 1;
-          dz = 0;
-        }
-      }
-      // Gap along that normal from the same feature point, where the ball was at the start of the step.
-      const sep = (ox[b]! - qx) * dx + (oy[b]! - qy) * dy + (oz[b]! - qz) * dz - R;
-      const vn = wx * dx + wy * dy + wz * dz;
-      const rb = radius[b]!;
-      if (sep >= (vn < 0 ? -vn * h : 0) + (spec < 0.5 * rb ? spec : 0.5 * rb)) continue;
-      W[0] = dx;
-      W[1] = dy;
-      W[2] = dz;
+  const W = rowArgs;
+  const box = cs.boundary;
+  const balls = query(world, [c.Position, c.Ball]);
+  const minX = box.min[0]!,
+    minY = box.min[1]!,
+    minZ = box.min[2]!;
+  const maxX = box.max[0]!,
+    maxY = box.max[1]!,
+    maxZ = box.max[2]!;
+  for (let i = 0; i < balls.length; i++) {
+    const b = balls[i]!;
+    if (type[b] >= BodyType.Static) continue;
+    const r = radius[b]!;
+    const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
+    const x = ox[b]!,
+      y = oy[b]!;
+    const sx = vx[b]!,
+      sy = vy[b]!;
+    let sep = x - r - minX;
+    if (sep < (sx < 0 ? -sx * h : 0) + spec) {
+      W[0] = 1;
+      W[1] = 0;
+      W[2] = 0;
       W[3] = sep;
       W[4] = 0;
-      W[5] = radius[b]!;
-      pushContact(buf, ContactKind.Segment, 0, b, s);
+      W[5] = r;
+      pushContact(buf, ContactKind.Boundary, 0, b, 0);
+    }
+    sep = maxX - x - r;
+    if (sep < (sx > 0 ? sx * h : 0) + spec) {
+      W[0] = -1;
+      W[1] = 0;
+      W[2] = 0;
+      W[3] = sep;
+      W[4] = 0;
+      W[5] = r;
+      pushContact(buf, ContactKind.Boundary, 0, b, 1);
+    }
+    sep = y - r - minY;
+    if (sep < (sy < 0 ? -sy * h : 0) + spec) {
+      W[0] = 0;
+      W[1] = 1;
+      W[2] = 0;
+      W[3] = sep;
+      W[4] = 0;
+      W[5] = r;
+      pushContact(buf, ContactKind.Boundary, 0, b, 2);
+    }
+    sep = maxY - y - r;
+    if (sep < (sy > 0 ? sy * h : 0) + spec) {
+      W[0] = 0;
+      W[1] = -1;
+      W[2] = 0;
+      W[3] = sep;
+      W[4] = 0;
+      W[5] = r;
+      pushContact(buf, ContactKind.Boundary, 0, b, 3);
+    }
+    if (is3D) {
+      const z = oz[b]!,
+        sz = vz[b]!;
+      sep = z - r - minZ;
+      if (sep < (sz < 0 ? -sz * h : 0) + spec) {
+        W[0] = 0;
+        W[1] = 0;
+        W[2] = 1;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 4);
+      }
+      sep = maxZ - z - r;
+      if (sep < (sz > 0 ? sz * h : 0) + spec) {
+        W[0] = 0;
+        W[1] = 0;
+        W[2] = -1;
+        W[3] = sep;
+        W[4] = 0;
+        W[5] = r;
+        pushContact(buf, ContactKind.Boundary, 0, b, 5);
+      }
     }
   }
+}
 
-  const box = cs.boundary;
-  if (box.enabled) {
-    const balls = query(world, [c.Position, c.Ball]);
-    const minX = box.min[0]!,
-      minY = box.min[1]!,
-      minZ = box.min[2]!;
-    const maxX = box.max[0]!,
-      maxY = box.max[1]!,
-      maxZ = box.max[2]!;
+/** Contacts of the moving balls with the static planes (half-spaces) they come near this step. */
+function planeContacts(world: PhysicsWorld, buf: ContactBuffer): void {
+  const c = world.components;
+  const cs = world.collision;
+  const planes = query(world, [c.Plane]);
+  if (planes.length === 0) return;
+  const h = world.h;
+  const spec = cs.settings.speculativeDistance;
+  const ox = c.PreviousPosition.x,
+    oy = c.PreviousPosition.y,
+    oz = c.PreviousPosition.z;
+  const vx = c.Velocity.x,
+    vy = c.Velocity.y,
+    vz = c.Velocity.z;
+  const radius = c.Ball.radius;
+  const type = cs.bodyType;
+  const W = rowArgs;
+  const balls = query(world, [c.Position, c.Ball]);
+  const Pl = c.Plane;
+  for (let j = 0; j < planes.length; j++) {
+    const p = planes[j]!;
+    const nx = Pl.nx[p]!,
+      ny = Pl.ny[p]!,
+      nz = Pl.nz[p]!,
+      d = Pl.d[p]!;
     for (let i = 0; i < balls.length; i++) {
       const b = balls[i]!;
       if (type[b] >= BodyType.Static) continue;
       const r = radius[b]!;
-      const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
-      const x = ox[b]!,
-        y = oy[b]!;
-      const sx = vx[b]!,
-        sy = vy[b]!;
-      let sep = x - r - minX;
-      if (sep < (sx < 0 ? -sx * h : 0) + spec) {
-        W[0] = 1;
-        W[1] = 0;
-        W[2] = 0;
+      const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
+      const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;
+      if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) {
+        W[0] = nx;
+        W[1] = ny;
+        W[2] = nz;
         W[3] = sep;
         W[4] = 0;
         W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 0);
-      }
-      sep = maxX - x - r;
-      if (sep < (sx > 0 ? sx * h : 0) + spec) {
-        W[0] = -1;
-        W[1] = 0;
-        W[2] = 0;
-        W[3] = sep;
-        W[4] = 0;
-        W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 1);
-      }
-      sep = y - r - minY;
-      if (sep < (sy < 0 ? -sy * h : 0) + spec) {
-        W[0] = 0;
-        W[1] = 1;
-        W[2] = 0;
-        W[3] = sep;
-        W[4] = 0;
-        W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 2);
-      }
-      sep = maxY - y - r;
-      if (sep < (sy > 0 ? sy * h : 0) + spec) {
-        W[0] = 0;
-        W[1] = -1;
-        W[2] = 0;
-        W[3] = sep;
-        W[4] = 0;
-        W[5] = r;
-        pushContact(buf, ContactKind.Boundary, 0, b, 3);
-      }
-      if (is3D) {
-        const z = oz[b]!,
-          sz = vz[b]!;
-        sep = z - r - minZ;
-        if (sep < (sz < 0 ? -sz * h : 0) + spec) {
-          W[0] = 0;
-          W[1] = 0;
-          W[2] = 1;
-          W[3] = sep;
-          W[4] = 0;
-          W[5] = r;
-          pushContact(buf, ContactKind.Boundary, 0, b, 4);
-        }
-        sep = maxZ - z - r;
-        if (sep < (sz > 0 ? sz * h : 0) + spec) {
-          W[0] = 0;
-          W[1] = 0;
-          W[2] = -1;
-          W[3] = sep;
-          W[4] = 0;
-          W[5] = r;
-          pushContact(buf, ContactKind.Boundary, 0, b, 5);
-        }
+        pushContact(buf, ContactKind.Plane, 0, b, p);
       }
     }
   }
-  const planes = query(world, [c.Plane]);
-  if (planes.length > 0) {
-    const balls = query(world, [c.Position, c.Ball]);
-    const Pl = c.Plane;
-    for (let j = 0; j < planes.length; j++) {
-      const p = planes[j]!;
-      const nx = Pl.nx[p]!,
-        ny = Pl.ny[p]!,
-        nz = Pl.nz[p]!,
-        d = Pl.d[p]!;
-      for (let i = 0; i < balls.length; i++) {
-        const b = balls[i]!;
-        if (type[b] >= BodyType.Static) continue;
-        const r = radius[b]!;
-        const sep = ox[b]! * nx + oy[b]! * ny + oz[b]! * nz - d - r;
-        const vn = vx[b]! * nx + vy[b]! * ny + vz[b]! * nz;
-        if (sep < (vn < 0 ? -vn * h : 0) + (spec < 0.5 * r ? spec : 0.5 * r)) {
-          W[0] = nx;
-          W[1] = ny;
-          W[2] = nz;
-          W[3] = sep;
-          W[4] = 0;
-          W[5] = r;
-          pushContact(buf, ContactKind.Plane, 0, b, p);
-        }
-      }
-    }
-  }
-  cs.stats.contacts = buf.count;
 }
 
 /**
