@@ -9,10 +9,19 @@
  * From 1000 balls on (mode auto) the renderer draws with pixi's ParticleContainer.
  */
 
-import { choiceParam, createPanel, flagParam, numberParam, seedParam } from '@bitphysics/game-kit';
+import {
+  choiceParam,
+  createPanel,
+  flagParam,
+  forEachImpact,
+  getSound,
+  numberParam,
+  type SoundMaterial,
+  seedParam,
+} from '@bitphysics/game-kit';
 import { enableMouseDrag } from '@bitphysics/game-kit/drag';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
-import { addBox, createPhysicsWorld, type PhysicsWorld, slotOf } from '@bitphysics/physics';
+import { addBox, createPhysicsWorld, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { Graphics } from 'pixi.js';
 import {
   applyDrag,
@@ -101,9 +110,30 @@ function trailOptions(count: number) {
   return { length: 36, maxEntities: Math.min(400, Math.max(1, count + 200)) };
 }
 
+const sound = getSound();
+
+/** What a body sounds like: a crate wood, a heavy ball metal, the others rubber; walls stone. */
+function materialOf(world: PhysicsWorld, body: number): SoundMaterial {
+  if (body <= 0) return 'stone';
+  if (crates.includes(body)) return 'wood';
+  return isHeavy(world, body) ? 'metal' : 'soft';
+}
+
+/** One step, then a knock for each impact: loudness from its impulse, the harder of the two materials. */
+function stepWorld(world: PhysicsWorld): void {
+  step(world);
+  forEachImpact(world, (a, b, impulse) => {
+    const ma = materialOf(world, a),
+      mb = materialOf(world, b);
+    const m = ma === 'metal' || mb === 'metal' ? 'metal' : ma === 'wood' || mb === 'wood' ? 'wood' : ma === 'soft' ? mb : ma;
+    sound.impact(impulse, m, { threshold: 0.5, loud: 20 });
+  });
+}
+
 const game = await startPixiGame({
   title: 'Bouncing balls',
   createWorld,
+  step: stepWorld,
   bodies: () => handles.balls.length,
   controls: [
     { keys: 'Drag a body', action: 'pull a ball or crate' },

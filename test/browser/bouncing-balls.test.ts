@@ -88,6 +88,20 @@ describe('bouncing balls', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('balls knock when they hit: ball contacts play impact sounds once an input started the sound', async () => {
+    const g = await open();
+    type Sounding = { sound: { running: boolean; played: number } };
+    await g.clickCanvas(0.5, 0.2);
+    const before = await g.page.evaluate(() => (window.game as unknown as Sounding).sound.played);
+    // The bouncing balls hit each other and the walls: begin events of ball contacts (contactEvents),
+    // each a knock unless quieter than the threshold. Balls alone gave no events and no sound.
+    await g.waitFor((n) => {
+      const s = (window.game as unknown as Sounding).sound;
+      return s.running && s.played >= n + 3;
+    }, before);
+    expect(g.errors).toEqual([]);
+  });
+
   it('a drag throws a ball in the direction of the drag', async () => {
     const g = await open();
     await g.press('p'); // paused, so the new ball keeps the velocity it was thrown with
