@@ -10,7 +10,7 @@
  * URL: ?count (2-8), ?lift (1-7), ?angle (5-80 deg).
  */
 
-import { createPanel, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
+import { createPanel, forEachImpact, getSound, numberParam, pointerOnCanvas } from '@bitphysics/game-kit';
 import { createLabDock, createReadout, drawnPosition, fmt, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
@@ -86,8 +86,10 @@ function update(world: PhysicsWorld): void {
   measure.moving = moving;
 }
 
+const sound = getSound();
+
 /**
- * One step: physics, then the energy and momentum charts. While a ball is held the hand keeps the row
+ * One step: physics (with a click for each ball hit), then the energy and momentum charts. While a ball is held the hand keeps the row
  * in its lifted pose at rest instead (no step): the lifted balls must not swing down and strike the
  * row before they are let go, nor leave at whatever speed they had gathered since the last move.
  */
@@ -97,6 +99,9 @@ function labStep(world: PhysicsWorld): void {
     return;
   }
   physicsStep(world);
+  // The click of steel on steel: a knock for each ball hit, loudness from its impulse (two 1 kg balls
+  // meeting at 1 m/s: 0.5 N s).
+  forEachImpact(world, (_a, _b, impulse) => sound.impact(impulse, 'metal', { threshold: 0.05, loud: 2 }));
   update(world);
   plot?.push(world.time, measure.energy, measure.kinetic);
   momentumPlot?.push(world.time, measure.momentum);

@@ -109,6 +109,18 @@ describe('lab-newtons-cradle', () => {
     const lifted = await g.page.evaluate((s) => (window.game as unknown as LabWindow).world.components.Position.x[s]!, start.s);
     await g.page.mouse.up();
     expect(lifted).toBeLessThan(start.x - 0.2);
+    // Let go and running, it swings back into the row: the hit clicks (a ball contact's begin event,
+    // a metal knock; the press started the sound).
+    await g.page.evaluate(() => {
+      (window.game as unknown as LabWindow).paused = false;
+    });
+    await g.waitFor(() => {
+      const s = (window.game as unknown as { sound: { running: boolean; played: number } }).sound;
+      return s.running && s.played >= 1;
+    }, null);
+    await g.page.evaluate(() => {
+      (window.game as unknown as LabWindow).paused = true;
+    });
     expect(g.errors).toEqual([]);
   });
   /**
