@@ -1,0 +1,442 @@
+/**
+ * The solar system's missions, DOM-free (Node tests fly them): send a probe from the Earth to another
+ * planet. The player picks the launch (a direction in the ecliptic and a speed leaving the Earth) and
+ * the moment; a flight plan (`planFlight`) says at once where that launch would go, and the probe then
+ * flies in the page's physics world, pulled by the Sun and every planet.
+ *
+ * - The probe is a body of negligible mass (`PROBE_MASS` solar masses) in mutual gravity with the Sun
+ *   and the planets. It starts `LAUNCH_OFFSET` AU from the Earth-Moon barycentre along the launch
+ *   direction d, with the Earth's velocity plus w d, w = sqrt(v_inf^2 + 2 mu_E / LAUNCH_OFFSET): the
+ *   speed that climbs out of the Earth's pull with v_inf left (energy conservation, vis-viva), so the
+ *   launch speed the player sets is the speed relative to the Earth far from it (v-infinity).
+ * - The plan is the two-body (Sun and probe) Kepler motion of that departure, v = v_Earth + v_inf d,
+ *   against the target's own Kepler orbit about the Sun (./kepler.ts), sampled over the plan's window.
+ *   The planets' pulls on the probe, which the flight feels, bend its real path a little from the plan.
+ * - A mission is won when the probe comes within the target's `zone` (AU): the ring drawn round it.
+ *   It fails when the probe falls into the Sun (within `SUN_ZONE`), leaves the solar system (beyond
+ *   `ESCAPE_DISTANCE`) or flies past the plan's end without arriving.
+ * - Stars: 3 for a launch speed at most `stars3` km/s, 2 for at most `stars2`, else 1. The least a
+ *   launch can take is about the Hohmann transfer's v_inf = v_E (sqrt(2 r / (1 AU + r)) - 1) for
+ *   circular orbits (Hohmann 1925; Curtis, Orbital Mechanics, sect. 6.3); the thresholds leave room
+ *   above it, since the planets' orbits are not circles and the window is rarely ideal.
+ *
+ * Units: the world's (AU, days, solar masses; see @bitphysics/projects solar-system). Speeds the
+ * player sees are km/s (`KM_S` AU/day each).
+ */
+
+import { addBody, enableMutualGravity, type PhysicsWorld, removeBody, slotOf } from '@bitphysics/physics';
+import { AU, DAY, type SolarSystemHandles, type SolarSystemPlanet, solarSystemMass } from '@bitphysics/projects';
+import { keplerState } from './kepler';
+
+/** One km/s in AU/day: 1000 m/s x DAY s / AU m. */
+export const KM_S = (1000 * DAY) / AU;
+
+/** Mass of the probe, solar masses (a 1,000 kg craft is 5e-28: below anything the planets would feel). */
+export const PROBE_MASS = 1e-24;
+
+/** Distance from the Earth-Moon barycentre the probe starts at, AU (beyond the Earth's Hill sphere, 0.01 AU). */
+export const LAUNCH_OFFSET = 0.012;
+
+/** Within this distance of the Sun's centre the probe has fallen into it, AU (the drawn Sun's size). */
+export const SUN_ZONE = 0.04;
+
+/** Beyond this distance from the Sun the probe has left the solar system, AU. */
+export const ESCAPE_DISTANCE = 60;
+
+/** Fastest launch the player can set, km/s. */
+export const MAX_SPEED = 20;
+
+/**
+ * Share of the zone within which a plan calls a launch a hit: the flight, whose path the other
+ * planets bend a little from the plan, then still arrives.
+ */
+export const PLAN_MARGIN = 0.85;
+
+/** Samples of a flight plan (points of its path). */
+export const PLAN_SAMPLES = 400;
+
+/** One mission: the planet to reach, the ring round it that counts as reaching it, and the star thresholds. */
+export interface Mission {
+  /** The planet to reach. */
+  readonly target: SolarSystemPlanet;
+  /** Radius of the arrival zone round the target, AU (drawn as a ring; see the file's header). */
+  readonly zone: number;
+  /** Launch speeds (v_inf, km/s) that still earn 3 stars and 2 stars. */
+  readonly stars3: number;
+  readonly stars2: number;
+}
+
+/**
+ * The missions in order: Mars, then Venus (inwards: the probe must slow down), Jupiter, Mercury, Saturn,
+ * Uranus, Neptune. Zones grow outwards with the orbits, so each ring looks about as large on the
+ * compressed scale (./distance-scale.ts).
+ */
+export const MISSIONS: readonly Mission[] = Object.freeze(
+  (
+    [
+      { target: 'Mars', zone: 0.14, stars3: 3.6, stars2: 5 },
+      { target: 'Venus', zone: 0.1, stars3: 3.2, stars2: 4.5 },
+      { target: 'Jupiter', zone: 0.75, stars3: 9.8, stars2: 12 },
+      { target: 'Mercury', zone: 0.08, stars3: 8.6, stars2: 11 },
+      { target: 'Saturn', zone: 1.2, stars3: 11.5, stars2: 14 },
+      { target: 'Uranus', zone: 1.9, stars3: 12.5, stars2: 15 },
+      { target: 'Neptune', zone: 3, stars3: 13, stars2: 16 },
+    ] satisfies Mission[]
+  ).map((m) => Object.freeze(m)),
+);
+
+/** A launch: direction and speed. */
+export interface Aim {
+  /**
+   * Direction in the ecliptic, degrees in (-180, 180]: 0 along the Earth's motion round the Sun, 90
+   * straight away from the Sun, 180 against the Earth's motion, -90 towards the Sun.
+   */
+  angle: number;
+  /** Speed relative to the Earth once clear of its pull (v_inf), km/s, in [0, MAX_SPEED]. */
+  speed: number;
+}
+
+/** What a launch would do (`planFlight`); one object, filled in place. */
+export interface FlightPlan {
+  /** Whether the probe would come within PLAN_MARGIN of the target's zone. */
+  hit: boolean;
+  /** Days from launch to the arrival (a hit) or to the closest approach (a miss). */
+  time: number;
+  /** Closest approach to the target's centre, AU (within the zone for a hit). */
+  distance: number;
+  /** Days the plan covers: one orbit of the probe, at most 3 Hohmann transfer times to the target. */
+  window: number;
+  /** Whether the probe would fall into the Sun within the window (the path stops there). */
+  sun: boolean;
+  /** Farthest and nearest the probe gets from the Sun over the window, AU. */
+  farthest: number;
+  nearest: number;
+  /**
+   * Where the target would be at `time` relative to the probe, degrees of heliocentric longitude:
+   * positive ahead of the probe (in the direction the planets go round), negative behind.
+   */
+  ahead: number;
+  /** Heliocentric path points, AU (x, y, z each), `points` of them, from the launch to `time` (a hit) or the window's end. */
+  readonly path: Float64Array;
+  points: number;
+  /** The probe's and the target's heliocentric places at `time`, AU. */
+  readonly probeAt: Float64Array;
+  readonly targetAt: Float64Array;
+}
+
+/** A fresh, empty flight plan. */
+export function createFlightPlan(): FlightPlan {
+  return {
+    hit: false,
+    time: 0,
+    distance: Infinity,
+    window: 0,
+    sun: false,
+    farthest: 0,
+    nearest: 0,
+    ahead: 0,
+    path: new Float64Array(3 * (PLAN_SAMPLES + 1)),
+    points: 0,
+    probeAt: new Float64Array(3),
+    targetAt: new Float64Array(3),
+  };
+}
+
+/** Stars a launch speed earns on `mission`: 3, 2 or 1. */
+export function starsFor(mission: Mission, speed: number): 1 | 2 | 3 {
+  return speed <= mission.stars3 + 1e-9 ? 3 : speed <= mission.stars2 + 1e-9 ? 2 : 1;
+}
+
+/** The Sun's gravitational parameter G M_sun in the world, AU^3/day^2. */
+function muSun(world: PhysicsWorld, handles: SolarSystemHandles): number {
+  return world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+}
+
+/**
+ * The heliocentric state of `body` now: position (AU) into out[0..2], velocity (AU/day) into
+ * out[3..5]. @returns out.
+ */
+export function heliocentricState(
+  world: PhysicsWorld,
+  handles: SolarSystemHandles,
+  body: number,
+  out: Float64Array = new Float64Array(6),
+): Float64Array {
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  const s = slotOf(handles.bodies.Sun),
+    e = slotOf(body);
+  out[0] = P.x[e]! - P.x[s]!;
+  out[1] = P.y[e]! - P.y[s]!;
+  out[2] = P.z[e]! - P.z[s]!;
+  out[3] = V.x[e]! - V.x[s]!;
+  out[4] = V.y[e]! - V.y[s]!;
+  out[5] = V.z[e]! - V.z[s]!;
+  return out;
+}
+
+function checkAim(where: string, aim: Aim): void {
+  if (!(aim.angle > -180 - 1e-9 && aim.angle <= 180 + 1e-9))
+    throw new RangeError(`${where}: aim.angle must be in (-180, 180] degrees, got ${aim.angle}`);
+  if (!(aim.speed >= 0 && aim.speed <= MAX_SPEED))
+    throw new RangeError(`${where}: aim.speed must be in [0, ${MAX_SPEED}] km/s, got ${aim.speed}`);
+}
+
+const earthState = new Float64Array(6);
+
+/**
+ * The launch direction of `aim` in the scene's axes (a unit vector in the ecliptic, y = 0), written
+ * into out[0..2], from the Earth's heliocentric state `earth` (position and velocity, 6 numbers):
+ * cos(angle) along the Earth's motion plus sin(angle) away from the Sun (made square to the motion).
+ * @returns out.
+ */
+export function launchDirection(
+  earth: ArrayLike<number>,
+  angle: number,
+  out: Float64Array | number[] = new Float64Array(3),
+): Float64Array | number[] {
+  // Along the motion (prograde), in the ecliptic.
+  let px = earth[3]!,
+    pz = earth[5]!;
+  const pn = Math.hypot(px, pz) || 1;
+  px /= pn;
+  pz /= pn;
+  // Away from the Sun, made square to the motion.
+  let ox = earth[0]!,
+    oz = earth[2]!;
+  const along = ox * px + oz * pz;
+  ox -= along * px;
+  oz -= along * pz;
+  const on = Math.hypot(ox, oz) || 1;
+  ox /= on;
+  oz /= on;
+  const a = (angle * Math.PI) / 180;
+  out[0] = Math.cos(a) * px + Math.sin(a) * ox;
+  out[1] = 0;
+  out[2] = Math.cos(a) * pz + Math.sin(a) * oz;
+  return out;
+}
+
+const dir = new Float64Array(3);
+const probe0 = new Float64Array(6);
+const target0 = new Float64Array(6);
+const pState = new Float64Array(6);
+const tState = new Float64Array(6);
+
+/**
+ * Fills `plan` with what launching `aim` now towards `mission`'s target would do: the probe's and the
+ * target's two-body Kepler motions about the Sun (see the file's header), sampled PLAN_SAMPLES times
+ * over the window, the first sample inside PLAN_MARGIN of the zone refined by bisection (a hit) or the closest
+ * sample refined by a golden-section search (a miss). @returns plan.
+ * @throws RangeError on an aim out of range.
+ */
+export function planFlight(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, aim: Aim, plan: FlightPlan): FlightPlan {
+  checkAim('planFlight', aim);
+  const G = world.laws.gravitationalConstant;
+  const mu = muSun(world, handles);
+  const target = handles.bodies[mission.target];
+  heliocentricState(world, handles, handles.bodies.Earth, earthState);
+  heliocentricState(world, handles, target, target0);
+  const muTarget = G * (world.components.Mass.value[slotOf(handles.bodies.Sun)]! + world.components.Mass.value[slotOf(target)]!);
+  launchDirection(earthState, aim.angle, dir);
+  const vInf = aim.speed * KM_S;
+  for (let i = 0; i < 3; i++) {
+    probe0[i] = earthState[i]! + LAUNCH_OFFSET * dir[i]!;
+    probe0[3 + i] = earthState[3 + i]! + vInf * dir[i]!;
+  }
+  // The window: one orbit of the probe, at most three Hohmann transfer times to the target's distance.
+  const r0 = Math.hypot(probe0[0]!, probe0[1]!, probe0[2]!);
+  const v0sq = probe0[3]! ** 2 + probe0[4]! ** 2 + probe0[5]! ** 2;
+  const alpha = 2 / r0 - v0sq / mu;
+  const rT = Math.hypot(target0[0]!, target0[1]!, target0[2]!);
+  const hohmann = Math.PI * Math.sqrt(((r0 + rT) / 2) ** 3 / mu);
+  const period = alpha > 0 ? (2 * Math.PI) / Math.sqrt(mu * alpha * alpha * alpha) : Infinity;
+  const window = Math.min(period, 3 * hohmann);
+  plan.window = window;
+  plan.hit = false;
+  plan.sun = false;
+  plan.farthest = 0;
+  plan.nearest = Infinity;
+  let best = Infinity,
+    bestT = 0,
+    prevT = 0,
+    points = 0;
+  const at = (t: number): number => {
+    keplerState(probe0, probe0.subarray(3), mu, t, pState);
+    keplerState(target0, target0.subarray(3), muTarget, t, tState);
+    return Math.hypot(pState[0]! - tState[0]!, pState[1]! - tState[1]!, pState[2]! - tState[2]!);
+  };
+  let hitT = -1;
+  for (let k = 0; k <= PLAN_SAMPLES; k++) {
+    const t = (window * k) / PLAN_SAMPLES;
+    const d = at(t);
+    const r = Math.hypot(pState[0]!, pState[1]!, pState[2]!);
+    plan.farthest = Math.max(plan.farthest, r);
+    plan.nearest = Math.min(plan.nearest, r);
+    plan.path.set(pState.subarray(0, 3), 3 * points++);
+    if (r < SUN_ZONE) {
+      plan.sun = true;
+      break;
+    }
+    if (d < PLAN_MARGIN * mission.zone) {
+      hitT = t;
+      break;
+    }
+    if (d < best) {
+      best = d;
+      bestT = t;
+    }
+    prevT = t;
+  }
+  if (hitT >= 0) {
+    // The zone's edge between the last sample outside and the first inside.
+    let lo = prevT,
+      hi = hitT;
+    for (let i = 0; i < 40; i++) {
+      const mid = (lo + hi) / 2;
+      if (at(mid) < PLAN_MARGIN * mission.zone) hi = mid;
+      else lo = mid;
+    }
+    plan.hit = true;
+    plan.time = hi;
+    plan.distance = at(hi);
+  } else {
+    // The closest approach near the closest sample.
+    const step = window / PLAN_SAMPLES;
+    let lo = Math.max(0, bestT - step),
+      hi = Math.min(window, bestT + step);
+    const g = (Math.sqrt(5) - 1) / 2;
+    for (let i = 0; i < 40; i++) {
+      const a = hi - g * (hi - lo),
+        b = lo + g * (hi - lo);
+      if (at(a) < at(b)) hi = b;
+      else lo = a;
+    }
+    plan.time = (lo + hi) / 2;
+    plan.distance = at(plan.time);
+  }
+  // at() left the states at plan.time.
+  plan.points = points;
+  if (plan.hit) plan.path.set(pState.subarray(0, 3), 3 * (plan.points - 1));
+  plan.probeAt.set(pState.subarray(0, 3));
+  plan.targetAt.set(tState.subarray(0, 3));
+  const lonP = Math.atan2(-pState[2]!, pState[0]!),
+    lonT = Math.atan2(-tState[2]!, tState[0]!);
+  // Longitude grows the way the planets go (counter-clockwise seen from +y is -z from +x: atan2(-z, x)).
+  plan.ahead = ((((lonT - lonP) * 180) / Math.PI + 540) % 360) - 180;
+  return plan;
+}
+
+/** What a flight step reports. */
+export type FlightEvent = 'flying' | 'arrived' | 'sun' | 'missed';
+
+/** A flight under way (`launchProbe`) and how it ended. */
+export interface Flight {
+  /** The mission flown. */
+  readonly mission: Mission;
+  /** The launch. */
+  readonly aim: Readonly<Aim>;
+  /** The probe's entity. */
+  readonly probe: number;
+  /** world.time at the launch, days. */
+  readonly launchTime: number;
+  /** Days of flight after which a probe that has not arrived has missed: the plan's time with a margin, within its window. */
+  readonly deadline: number;
+  /** The plan at the launch. */
+  readonly planned: Readonly<Pick<FlightPlan, 'hit' | 'time' | 'distance'>>;
+  /** Closest approach to the target so far, AU, and the flight time then, days. */
+  closest: number;
+  closestAt: number;
+  /** How the flight ended ('flying' while it goes on). */
+  state: FlightEvent;
+  /** Days from the launch to the end (or to now while flying). */
+  elapsed: number;
+}
+
+const launchPos = new Float64Array(3);
+const launchVel = new Float64Array(3);
+
+/**
+ * Launches a probe now with `aim` on `mission`: adds it to the world (see the file's header) and
+ * returns its flight, with the deadline taken from `plan` (made for the same aim and moment by
+ * `planFlight`). @throws RangeError on a bad aim or a world without room for one more body.
+ */
+export function launchProbe(world: PhysicsWorld, handles: SolarSystemHandles, mission: Mission, aim: Aim, plan: FlightPlan): Flight {
+  checkAim('launchProbe', aim);
+  const P = world.components.Position,
+    V = world.components.Velocity;
+  const earth = slotOf(handles.bodies.Earth);
+  heliocentricState(world, handles, handles.bodies.Earth, earthState);
+  launchDirection(earthState, aim.angle, dir);
+  const G = world.laws.gravitationalConstant;
+  const muEarth = G * solarSystemMass('Earth');
+  const vInf = aim.speed * KM_S;
+  const w = Math.sqrt(vInf * vInf + (2 * muEarth) / LAUNCH_OFFSET);
+  launchPos[0] = P.x[earth]! + LAUNCH_OFFSET * dir[0]!;
+  launchPos[1] = P.y[earth]! + LAUNCH_OFFSET * dir[1]!;
+  launchPos[2] = P.z[earth]! + LAUNCH_OFFSET * dir[2]!;
+  launchVel[0] = V.x[earth]! + w * dir[0]!;
+  launchVel[1] = V.y[earth]! + w * dir[1]!;
+  launchVel[2] = V.z[earth]! + w * dir[2]!;
+  const probe = addBody(world, { position: launchPos, velocity: launchVel, mass: PROBE_MASS });
+  enableMutualGravity(world, probe);
+  const deadline = Math.min(plan.window, plan.time) * 1.2 + 30;
+  return {
+    mission,
+    aim: Object.freeze({ ...aim }),
+    probe,
+    launchTime: world.time,
+    deadline,
+    planned: Object.freeze({ hit: plan.hit, time: plan.time, distance: plan.distance }),
+    closest: Infinity,
+    closestAt: 0,
+    state: 'flying',
+    elapsed: 0,
+  };
+}
+
+/**
+ * Checks a flight after a step of the world: arrived within the zone, fallen into the Sun, gone past
+ * ESCAPE_DISTANCE or the deadline (missed), or still flying. The probe stays in the world (the page
+ * removes it with `endFlight`). A flight that has ended keeps its state. @returns the state.
+ */
+export function checkFlight(world: PhysicsWorld, handles: SolarSystemHandles, flight: Flight): FlightEvent {
+  if (flight.state !== 'flying') return flight.state;
+  const P = world.components.Position;
+  const p = slotOf(flight.probe),
+    t = slotOf(handles.bodies[flight.mission.target]),
+    s = slotOf(handles.bodies.Sun);
+  const px = P.x[p]!,
+    py = P.y[p]!,
+    pz = P.z[p]!;
+  const d = Math.hypot(px - P.x[t]!, py - P.y[t]!, pz - P.z[t]!);
+  const r = Math.hypot(px - P.x[s]!, py - P.y[s]!, pz - P.z[s]!);
+  flight.elapsed = world.time - flight.launchTime;
+  if (d < flight.closest) {
+    flight.closest = d;
+    flight.closestAt = flight.elapsed;
+  }
+  if (d < flight.mission.zone) flight.state = 'arrived';
+  else if (r < SUN_ZONE) flight.state = 'sun';
+  else if (r > ESCAPE_DISTANCE || flight.elapsed > flight.deadline) flight.state = 'missed';
+  return flight.state;
+}
+
+/** Removes a flight's probe from the world (after it ended, or to abandon it). No effect if it is already gone. */
+export function endFlight(world: PhysicsWorld, flight: Flight): void {
+  try {
+    removeBody(world, flight.probe);
+  } catch {
+    /* already removed (a reset made a new world) */
+  }
+}
+
+/**
+ * The Hohmann transfer's launch speed from the Earth (a circular orbit of radius rEarth, AU) to a
+ * circular orbit of radius rTarget (AU) about a centre of parameter mu (AU^3/day^2), km/s: positive
+ * outwards (along the Earth's motion), negative inwards (against it).
+ */
+export function hohmannSpeed(rEarth: number, rTarget: number, mu: number): number {
+  const v = Math.sqrt(mu / rEarth);
+  return (v * (Math.sqrt((2 * rTarget) / (rEarth + rTarget)) - 1)) / KM_S;
+}
