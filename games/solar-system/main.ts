@@ -1,25 +1,58 @@
 /**
- * Solar system: the book's closing project (Ramtal and Dobre ch. 16) against a real ephemeris. The
- * Sun and the eight planets (Earth as the Earth-Moon barycentre) attract each other; they start from
- * astronomy-engine's positions and velocities at the chosen date and are integrated with the world's
- * scheme at the chosen step (default RK4, 1 hour). A table compares each planet with the ephemeris
- * as the simulation runs: |r - r_ephemeris| / |r_ephemeris|, heliocentric.
+ * Solar system: fly a probe from the Earth to the other planets, in the solar system of the book's
+ * closing project (Ramtal and Dobre ch. 16). The Sun and the eight planets (Earth as the Earth-Moon
+ * barycentre) attract each other; they start from astronomy-engine's positions and velocities at the
+ * start date and are integrated with the world's scheme (default RK4, steps of at most 1 hour).
  *
- * Units: AU, days, solar masses (the scene's; see packages/projects/src/solar-system.ts). One
- * scene unit is 0.1 AU. Time: the rate is simulated days per real second; each loop tick runs as many
- * steps of the chosen size as the rate needs.
- * Keys: P pause, N single step, R reset, [ ] slower / faster, T trails, E exaggerated sizes.
- * URL: ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name, ?date=ISO date.
+ * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
+ * Earth and sets the launch speed; a dashed line shows at once where the probe would go (a two-body
+ * Kepler plan, ./kepler.ts) and a ghost ring where the planet would be then. Launch, and the probe
+ * flies in the physics world, pulled by the Sun and every planet, while time speeds up; reaching the
+ * ring round the planet wins the mission, with stars for a slow (cheap) launch. Waiting (time 10x
+ * faster) lets the planets line up.
+ *
+ * Drawn on a compressed distance scale (./distance-scale.ts), so the eight planets fit on one screen
+ * with room between the inner four (D switches to the true scale); orbit lines are each planet's
+ * Kepler ellipse now; every body keeps a dot and a name beside it. The comparison with the real
+ * ephemeris (|r - r_ephemeris| / |r_ephemeris|, heliocentric) is in the side column, folded.
+ *
+ * Units: AU, days, solar masses (see packages/projects/src/solar-system.ts). One scene unit is 0.1 AU
+ * of the display scale. Time: the rate is simulated days per real second; each loop tick runs steps
+ * of the chosen size, at most MAX_STEPS_PER_TICK of them (a faster rate takes longer steps).
+ * Keys: ← → turn the launch, ↑ ↓ its speed, Space launch, W (held) wait, Enter next mission or try
+ * again, [ ] slower / faster, D distances, 1 2 3 views, E sizes, P pause, N single step, R reset (back to
+ * the last start: the first date, or the last launch after a Try again).
+ * URL: ?mission=1..7, ?rate=days-per-second (0..400), ?step=hours (0.25|1|6|24), ?integrator=name,
+ * ?date=ISO date, ?distances=compressed|true.
  */
 
-import { choiceParam, createPanel, flagParam, numberParam, pageLayout } from '@bitphysics/game-kit';
-import { ORBIT_CONTROLS, startThreeGame } from '@bitphysics/game-kit/three';
-import { createPhysicsWorld, INTEGRATOR_NAMES, type IntegratorName, type PhysicsWorld, Rng, slotOf, step } from '@bitphysics/physics';
+import {
+  choiceParam,
+  createButtonBar,
+  createPanel,
+  flagParam,
+  getSound,
+  isTouchDevice,
+  numberParam,
+  pageLayout,
+} from '@bitphysics/game-kit';
+import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
+import {
+  createPhysicsWorld,
+  INTEGRATOR_NAMES,
+  type IntegratorName,
+  type PhysicsWorld,
+  Rng,
+  setTimeStep,
+  slotOf,
+  step,
+} from '@bitphysics/physics';
 import {
   SOLAR_SYSTEM_BODIES,
   SOLAR_SYSTEM_EPOCH,
   SOLAR_SYSTEM_FLOOR,
   SOLAR_SYSTEM_PLANETS,
+  type SolarSystemBody,
   type SolarSystemHandles,
   solarSystem,
   solarSystemErrors,
@@ -28,28 +61,56 @@ import {
   AdditiveBlending,
   BufferGeometry,
   CanvasTexture,
+  ConeGeometry,
+  CylinderGeometry,
   Float32BufferAttribute,
   Group,
-  type Line,
+  Line,
   LineBasicMaterial,
   LineLoop,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
+  Plane,
   PointLight,
   Points,
   PointsMaterial,
+  Raycaster,
   SphereGeometry,
   Sprite,
   SpriteMaterial,
+  Vector2,
   Vector3,
 } from 'three';
+import { displayRadius, fromDisplay, toDisplay } from './distance-scale';
+import {
+  type Aim,
+  checkFlight,
+  createFlightPlan,
+  endFlight,
+  type Flight,
+  heliocentricState,
+  hohmannSpeed,
+  launchDirection,
+  launchProbe,
+  MAX_SPEED,
+  MISSIONS,
+  type Mission,
+  planFlight,
+  starsFor,
+} from './missions';
 
-/** Scene units per AU. */
+/** Scene units per display AU. */
 const UNITS_PER_AU = 10;
 const STEPS = ['0.25', '1', '6', '24'] as const;
+/** Most physics steps a loop tick runs; a rate that needs more takes longer steps. */
+const MAX_STEPS_PER_TICK = 24;
+/** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
+const WAIT_RATE = 40;
+/** Real seconds a flight should take: its rate is the planned flight time over this, within [10, 400] days/s. */
+const FLIGHT_SECONDS = 12;
 /** Mean radii, AU (IAU), for true-size drawing. */
-const RADIUS_AU: Record<string, number> = {
+const RADIUS_AU: Record<SolarSystemBody, number> = {
   Sun: 4.652e-3,
   Mercury: 1.631e-5,
   Venus: 4.045e-5,
@@ -60,7 +121,7 @@ const RADIUS_AU: Record<string, number> = {
   Uranus: 1.695e-4,
   Neptune: 1.646e-4,
 };
-const COLOR: Record<string, number> = {
+const COLOR: Record<SolarSystemBody, number> = {
   Sun: 0xffd27a,
   Mercury: 0xb5a89a,
   Venus: 0xe8cf94,
@@ -71,106 +132,342 @@ const COLOR: Record<string, number> = {
   Uranus: 0x9fd8e0,
   Neptune: 0x5a78e0,
 };
+const hex = (c: number): string => `#${c.toString(16).padStart(6, '0')}`;
 
+const search = new URLSearchParams(location.search);
 const params = {
-  rate: numberParam('rate', { default: 30, min: 0, max: 400 }),
+  /** Simulated days per real second while aiming (flights pick their own). */
+  rate: numberParam('rate', { default: 1, min: 0, max: 400 }),
   step: choiceParam('step', STEPS, '1'),
   integrator: choiceParam('integrator', INTEGRATOR_NAMES, 'rk4') as IntegratorName,
-  date: new URLSearchParams(location.search).get('date') ?? SOLAR_SYSTEM_EPOCH.slice(0, 10),
-  exaggerate: new URLSearchParams(location.search).has('exaggerate') ? flagParam('exaggerate') : true,
-  trails: new URLSearchParams(location.search).has('trails') ? flagParam('trails') : true,
-  reset: () => game.shell.reset(),
-  /** Frames Mercury to Mars (key 1). */
-  inner: () => frameView(INNER_VIEW),
-  /** Frames all eight planets (key 2). */
-  all: () => frameView(ALL_VIEW),
+  date: search.get('date') ?? SOLAR_SYSTEM_EPOCH.slice(0, 10),
+  distances: choiceParam('distances', ['compressed', 'true'] as const, 'compressed'),
+  exaggerate: search.has('exaggerate') ? flagParam('exaggerate') : true,
+  mission: String(numberParam('mission', { default: 1, min: 1, max: MISSIONS.length, integer: true })),
+  reset: () => restartMission(),
+  inner: () => frameView('inner'),
+  all: () => frameView('all'),
+  /** Frames the mission's planets (key 3). */
+  missionView: () => frameView('mission'),
 };
 
-/** Half-widths of the two framings, AU: Mars' orbit (1.67 AU at aphelion) and Neptune's (30.3 AU) with a small margin. */
-const INNER_VIEW = 1.8;
-/** The camera looks along this, steep enough that the orbits read as near circles. */
-const VIEW_DIRECTION: [number, number, number] = [0.15, 1, 0.7];
-const ALL_VIEW = 31;
+// ---- World: the ephemeris at the start date; steps of at most the chosen size ----------------------
 
 let handles: SolarSystemHandles;
+/** The start of the world now, ms since 1970 UTC (a retry starts again from its launch's moment). */
+let startMs = parseDate(params.date);
+/** Days of simulated time owed to the next steps (the rate's fraction of a step carried over). */
 let carry = 0;
 
-/** A fresh world from the ephemeris at params.date with the chosen scheme and step. */
+/** Milliseconds since 1970 of an ISO date, or throws naming the field. */
+function parseDate(text: string): number {
+  const ms = Date.parse(/T/.test(text) ? text : `${text}T00:00:00Z`);
+  if (!Number.isFinite(ms)) throw new RangeError(`start date: not a date: ${JSON.stringify(text)}`);
+  return ms;
+}
+
+/** A fresh world from the ephemeris at startMs with the chosen scheme and step; any flight is over. */
 function createWorld(): PhysicsWorld {
-  const options = { stepHours: Number(params.step), integrator: params.integrator, date: `${params.date}T00:00:00Z` };
+  const options = { stepHours: Number(params.step), integrator: params.integrator, date: startMs };
   const world = createPhysicsWorld(solarSystem.worldOptions(options));
   handles = solarSystem.build(world, options);
   carry = 0;
+  flight = null;
+  phase = 'aim';
+  trailCount = 0;
+  planAt = -Infinity;
   return world;
 }
 
-/** Real seconds a loop tick stands for (the loop is set to 60 Hz, whatever the world's step in days). */
+/** Real seconds a loop tick stands for (the loop runs at 60 Hz, whatever the world's step in days). */
 const TICK = 1 / 60;
 
-/** One loop tick: `rate` days a second need rate TICK / dt steps of dt days a tick; the fraction carries over. */
-function stepWorld(world: PhysicsWorld): void {
-  carry += (params.rate * TICK) / world.dt;
-  const n = Math.min(2000, Math.floor(carry));
-  carry -= n;
-  for (let i = 0; i < n; i++) step(world);
+/**
+ * Days per real second now: the aiming rate (WAIT_RATE or 4 times it while Wait is held), a flight's
+ * rate (3 times it while held, at most 400), nothing after a flight ends.
+ */
+function currentRate(): number {
+  if (phase === 'done') return 0;
+  if (phase === 'flight') return waiting ? Math.min(400, 3 * flightRate) : flightRate;
+  return waiting ? Math.max(WAIT_RATE, 4 * params.rate) : params.rate;
 }
 
-const TRAILS = { length: 600, maxEntities: 9, spacing: 0.02, alpha: 0.7 };
+/**
+ * One loop tick: rate x TICK days in steps of the chosen size (at most MAX_STEPS_PER_TICK; beyond that
+ * the steps grow to fit); during a flight the probe is checked after every step.
+ */
+function stepWorld(world: PhysicsWorld): void {
+  const base = Number(params.step) / 24;
+  carry += currentRate() * TICK;
+  let n = Math.floor(carry / base + 1e-9);
+  let dt = base;
+  if (n > MAX_STEPS_PER_TICK) {
+    n = MAX_STEPS_PER_TICK;
+    dt = carry / n;
+  }
+  if (n === 0) return;
+  carry = Math.max(0, carry - n * dt);
+  if (world.dt !== dt) setTimeStep(world, dt);
+  for (let i = 0; i < n; i++) {
+    step(world);
+    if (flight && phase === 'flight') {
+      if (i % 2 === 0 || i === n - 1) recordTrail(world);
+      if (checkFlight(world, handles, flight) !== 'flying') {
+        endOfFlight();
+        carry = 0;
+        break;
+      }
+    }
+  }
+}
 
-/** Labels placed this frame: left, centre y, right (px) and a spare, four numbers each. */
-const placed: number[] = [];
-/** Labels the last frame showed. */
-let shownLabels = 0;
+// ---- Missions --------------------------------------------------------------------------------------
 
+type Phase = 'aim' | 'flight' | 'done';
+let phase: Phase = 'aim';
+let missionIndex = Number(params.mission) - 1;
+const aim: Aim = { angle: 0, speed: 3 };
+const plan = createFlightPlan();
+/** world.time of the plan shown (-Infinity: stale). */
+let planAt = -Infinity;
+let planShownHit = false;
+let flight: Flight | null = null;
+/** Most points of the probe's trail. */
+const TRAIL_POINTS = 4096;
+/** The probe's flown path, heliocentric AU (x, y, z each), trailCount points. */
+const trail = new Float64Array(3 * TRAIL_POINTS);
+let trailCount = 0;
+/** The date of the last launch, ms (Try again starts there). */
+let launchMs = 0;
+/** performance.now() of the last plan (plans are redrawn at most every 90 ms while time runs). */
+let planClock = 0;
+/** The rate of the flight under way, days/s. */
+let flightRate = 30;
+/** Whether Wait (W or the button) is held. */
+let waiting = false;
+/** The date a mission began, ms (R restarts it there). */
+let missionStartMs = startMs;
+const STARS_KEY = 'bitphysics.solar-system.stars';
+/** Best stars of each mission (0: not flown), kept in local storage. */
+const best: number[] = readBest();
+
+function readBest(): number[] {
+  try {
+    const v = JSON.parse(localStorage.getItem(STARS_KEY) ?? '[]') as unknown;
+    if (Array.isArray(v)) return MISSIONS.map((_, i) => (Number.isInteger(v[i]) && v[i] >= 0 && v[i] <= 3 ? (v[i] as number) : 0));
+  } catch {
+    /* no storage or a bad entry: nothing flown */
+  }
+  return MISSIONS.map(() => 0);
+}
+
+function saveBest(): void {
+  try {
+    localStorage.setItem(STARS_KEY, JSON.stringify(best));
+  } catch {
+    /* private mode: this page only */
+  }
+}
+
+const mission = (): Mission => MISSIONS[missionIndex]!;
+
+/** The heliocentric distance of `body` now, AU. */
+function distanceFromSun(body: SolarSystemBody): number {
+  heliocentricState(shell.world, handles, handles.bodies[body], state6);
+  return Math.hypot(state6[0]!, state6[1]!, state6[2]!);
+}
+const state6 = new Float64Array(6);
+
+/**
+ * Starts mission `index` (0-based) where the world is: the launch arrow along the Earth's motion
+ * (outwards) or against it (inwards) at a round Hohmann transfer speed, the view framing its planets.
+ */
+function startMission(index: number): void {
+  if (flight) endFlight(shell.world, flight);
+  flight = null;
+  missionIndex = Math.max(0, Math.min(MISSIONS.length - 1, index));
+  params.mission = String(missionIndex + 1);
+  phase = 'aim';
+  trailCount = 0;
+  const m = mission();
+  const mu = shell.world.laws.gravitationalConstant * shell.world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+  const v = hohmannSpeed(distanceFromSun('Earth'), distanceFromSun(m.target), mu);
+  aim.angle = v >= 0 ? 0 : 180;
+  aim.speed = Math.min(MAX_SPEED, Math.round(Math.abs(v) * 10) / 10);
+  // The first mission starts on a course that arrives (when one is near the Hohmann guess), so a
+  // newcomer's first launch succeeds; from the second on, the player finds the course.
+  if (missionIndex === 0) {
+    const guess = aim.speed;
+    found: for (const angle of [0, 10, -10, 20, -20]) {
+      for (let k = -10; k <= 15; k++) {
+        const speed = Math.round((guess + 0.1 * k) * 10) / 10;
+        if (speed < 0 || speed > MAX_SPEED) continue;
+        planFlight(shell.world, handles, m, { angle, speed }, plan);
+        if (plan.hit) {
+          aim.angle = angle;
+          aim.speed = speed;
+          break found;
+        }
+      }
+    }
+  }
+  missionStartMs = handles.epoch + shell.world.time * 86_400_000;
+  planAt = -Infinity;
+  frameView('mission');
+  panel?.refresh();
+  updateStatus(true);
+}
+
+/** Restarts the current mission at the date it began (R): a fresh world from the ephemeris there. */
+function restartMission(): void {
+  startMs = missionStartMs;
+  shell.reset();
+  startMission(missionIndex);
+}
+
+/** Launches the probe with the current aim (Space, the Launch button). No effect unless aiming. */
+function launch(): void {
+  if (phase !== 'aim') return;
+  planFlight(shell.world, handles, mission(), aim, plan);
+  planAt = shell.world.time;
+  launchMs = handles.epoch + shell.world.time * 86_400_000;
+  flight = launchProbe(shell.world, handles, mission(), aim, plan);
+  flightRate = Math.min(400, Math.max(10, flight.deadline / FLIGHT_SECONDS));
+  phase = 'flight';
+  trailCount = 0;
+  recordTrail(shell.world);
+  sound.launch(0.9);
+  updateStatus(true);
+}
+/** After the probe arrived, fell into the Sun or missed: stars, sound, the result and its buttons. */
+function endOfFlight(): void {
+  if (!flight) return;
+  phase = 'done';
+  if (flight.state === 'arrived') {
+    arrivalAt = performance.now();
+    const stars = starsFor(flight.mission, flight.aim.speed);
+    if (stars > best[missionIndex]!) {
+      best[missionIndex] = stars;
+      saveBest();
+    }
+    sound.chime(784, 0.4);
+    setTimeout(() => sound.chime(1175, 0.7), 160);
+  } else if (flight.state === 'sun') {
+    sound.explosion(0.4);
+  } else {
+    sound.chime(196, 0.6);
+  }
+  updateStatus(true);
+}
+
+/** Try again: back to the moment of the last launch, same aim. */
+function retry(): void {
+  if (phase === 'aim') return;
+  const keep = { ...aim };
+  startMs = launchMs;
+  shell.reset();
+  Object.assign(aim, keep);
+  planAt = -Infinity;
+  updateStatus(true);
+}
+
+/** Enter or the result's main button: the next mission after an arrival, else try again. */
+function advance(): void {
+  if (phase !== 'done' || !flight) return;
+  if (flight.state === 'arrived') {
+    endFlight(shell.world, flight);
+    startMission(missionIndex + 1 < MISSIONS.length ? missionIndex + 1 : 0);
+  } else retry();
+}
+
+function turn(degrees: number): void {
+  if (phase !== 'aim') return;
+  let a = aim.angle + degrees;
+  a = ((((a + 180) % 360) + 360) % 360) - 180;
+  aim.angle = a === -180 ? 180 : Math.round(a * 10) / 10;
+  planAt = -Infinity;
+}
+
+function changeSpeed(kms: number): void {
+  if (phase !== 'aim') return;
+  aim.speed = Math.min(MAX_SPEED, Math.max(0, Math.round((aim.speed + kms) * 10) / 10));
+  planAt = -Infinity;
+}
+
+// ---- The page ---------------------------------------------------------------------------------------
+
+const touch = isTouchDevice();
 const game = await startThreeGame({
   title: 'Solar system',
   createWorld,
   step: stepWorld,
-  bodies: () => SOLAR_SYSTEM_BODIES.length,
   controls: [
-    ...ORBIT_CONTROLS,
-    { keys: '[ ]', action: 'slower / faster' },
-    { keys: 'T', action: 'trails on / off' },
+    { keys: '← →', action: 'turn the launch arrow', touch: '↺ ↻ buttons' },
+    { keys: '↑ ↓', action: 'launch speed', touch: '− + buttons' },
+    { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
+    { keys: 'Space', action: 'launch the probe', touch: 'Launch button' },
+    { keys: 'W (hold)', action: 'wait: time runs fast', touch: 'hold Wait' },
+    { keys: 'Enter', action: 'next mission / try again', touch: 'the result buttons' },
+    { keys: '[ ]', action: 'time slower / faster' },
+    { keys: 'D', action: 'compressed / true distances' },
+    { keys: '1 2 3', action: 'view: inner planets / all eight / mission' },
     { keys: 'E', action: 'exaggerated sizes on / off' },
-    { keys: '1 2', action: 'inner planets / all eight' },
+    ...ORBIT_CONTROLS_RIGHT,
+    { keys: 'Pinch', action: 'zoom and turn the view', touch: 'Pinch' },
   ],
   keys: [
+    { key: 'ArrowLeft', label: 'turn left', action: () => turn(-2), repeat: true },
+    { key: 'ArrowRight', label: 'turn right', action: () => turn(2), repeat: true },
+    { key: 'ArrowUp', label: 'faster launch', action: () => changeSpeed(0.1), repeat: true },
+    { key: 'ArrowDown', label: 'slower launch', action: () => changeSpeed(-0.1), repeat: true },
+    { key: ' ', label: 'launch', action: () => launch() },
+    { key: 'Enter', label: 'next / try again', action: () => advance() },
     { key: '[', label: 'slower', action: () => setRate(params.rate / 1.5), repeat: true },
     { key: ']', label: 'faster', action: () => setRate(params.rate === 0 ? 1 : params.rate * 1.5), repeat: true },
-    { key: 't', label: 'trails', action: () => setTrails(!params.trails) },
-    { key: '1', label: 'inner', action: () => frameView(INNER_VIEW) },
-    { key: '2', label: 'all', action: () => frameView(ALL_VIEW) },
+    { key: 'd', label: 'distances', action: () => setDistances(params.distances === 'true' ? 'compressed' : 'true') },
+    { key: '1', label: 'inner', action: () => frameView('inner') },
+    { key: '2', label: 'all', action: () => frameView('all') },
+    { key: '3', label: 'mission', action: () => frameView('mission') },
     {
       key: 'e',
       label: 'sizes',
       action: () => {
         params.exaggerate = !params.exaggerate;
-        dress();
         panel.refresh();
       },
     },
   ],
-  app: { background: 0x020308, shadows: false, controls: { minDistance: 0.5, maxDistance: 1500 }, cameraPosition: [0, 60, 90] },
-  renderer: {
-    unitsPerMeter: UNITS_PER_AU,
-    boundary: 'none',
+  app: {
+    background: 0x020308,
     shadows: false,
-    lights: { direction: [0, 1, 0], intensity: 0.2, hemisphereIntensity: 0.25, ambientIntensity: 0.25, shadows: false },
-    trails: params.trails ? TRAILS : false,
+    controls: { minDistance: 0.5, maxDistance: 1500, leftButton: 'none' },
+    cameraPosition: [0, 60, 90],
   },
-  // All eight planets at start (Neptune's orbit fits; the orbit lines show where each goes); 1 zooms
-  // to the inner planets.
-  view: { min: [-ALL_VIEW, -0.2, -ALL_VIEW], max: [ALL_VIEW, 0.2, ALL_VIEW] },
-  viewDirection: VIEW_DIRECTION,
+  renderer: { unitsPerMeter: UNITS_PER_AU, boundary: 'none', shadows: false, lights: false },
+  view: null,
   onFrame: () => frame(),
 });
 const { shell, renderer, app } = game;
+// The bodies are drawn here, on the display scale; the world renderer's own meshes stay hidden.
+renderer.root.visible = false;
 // The loop ticks at 60 Hz of real time; the world's dt is the physical step in days.
 shell.loop.setTimeStep(TICK);
 shell.onWorldChange(() => shell.loop.setTimeStep(TICK));
 app.scene.add(new PointLight(0xfff2d0, 3, 0, 0));
 app.camera.far = 5000;
 app.camera.updateProjectionMatrix();
+const sound = getSound();
+
+// W held: wait (time runs faster).
+window.addEventListener('keydown', (e) => {
+  if ((e.key === 'w' || e.key === 'W') && !e.ctrlKey && !e.metaKey) waiting = true;
+});
+window.addEventListener('keyup', (e) => {
+  if (e.key === 'w' || e.key === 'W') waiting = false;
+});
+window.addEventListener('blur', () => {
+  waiting = false;
+});
 
 /**
  * The sky: STAR_COUNT stars on a sphere of STAR_SKY_RADIUS scene units (beyond the farthest the
@@ -206,133 +503,339 @@ const STAR_COUNT = 3000,
   app.scene.add(new Points(geometry, new PointsMaterial({ size: 1.6, sizeAttenuation: false, vertexColors: true, depthWrite: false })));
 }
 
-/** The Sun's glow: an additive sprite of a radial gradient, following the Sun, a few times its drawn size. */
-const sunGlow = (() => {
+/** A soft radial glow texture (white core to clear rim), for the Sun and the arrival flash. */
+function glowTexture(inner: string, mid: string, outer: string): CanvasTexture {
   const c = document.createElement('canvas');
   c.width = c.height = 128;
   const g = c.getContext('2d')!;
   const grad = g.createRadialGradient(64, 64, 0, 64, 64, 64);
-  grad.addColorStop(0, 'rgba(255, 244, 214, 0.9)');
-  grad.addColorStop(0.25, 'rgba(255, 200, 110, 0.35)');
-  grad.addColorStop(1, 'rgba(255, 150, 60, 0)');
+  grad.addColorStop(0, inner);
+  grad.addColorStop(0.25, mid);
+  grad.addColorStop(1, outer);
   g.fillStyle = grad;
   g.fillRect(0, 0, 128, 128);
-  const sprite = new Sprite(
-    new SpriteMaterial({ map: new CanvasTexture(c), blending: AdditiveBlending, depthWrite: false, transparent: true }),
-  );
-  app.scene.add(sprite);
-  return sprite;
-})();
+  return new CanvasTexture(c);
+}
+const sunGlow = new Sprite(
+  new SpriteMaterial({
+    map: glowTexture('rgba(255, 244, 214, 0.9)', 'rgba(255, 200, 110, 0.35)', 'rgba(255, 150, 60, 0)'),
+    blending: AdditiveBlending,
+    depthWrite: false,
+    transparent: true,
+  }),
+);
+app.scene.add(sunGlow);
+/** The arrival flash: a glow that swells and fades at the target for ARRIVAL_FLASH_MS. */
+const arrivalGlow = new Sprite(
+  new SpriteMaterial({
+    map: glowTexture('rgba(255, 255, 240, 1)', 'rgba(160, 255, 180, 0.5)', 'rgba(80, 255, 140, 0)'),
+    blending: AdditiveBlending,
+    depthWrite: false,
+    transparent: true,
+  }),
+);
+arrivalGlow.visible = false;
+app.scene.add(arrivalGlow);
+const ARRIVAL_FLASH_MS = 1400;
+let arrivalAt = -Infinity;
+
+// ---- Bodies on the display scale ---------------------------------------------------------------------
 
 const sphere = new SphereGeometry(1, 32, 20);
-const materials = Object.fromEntries(
-  SOLAR_SYSTEM_BODIES.map((b) => [
-    b,
-    b === 'Sun'
-      ? new MeshBasicMaterial({ color: COLOR[b] })
-      : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.25 }),
-  ]),
-);
-
-/**
- * Drawn radius of a body, AU: the true radius, or exaggerated so every body shows at the scale of
- * the orbits (planets 0.03 AU + 150 times their radius, keeping the giants larger; the Sun 20 times).
- */
-function drawnRadius(name: string): number {
-  const r = RADIUS_AU[name]!;
-  if (!params.exaggerate) return r;
-  return name === 'Sun' ? 20 * r : 0.03 + 150 * r;
-}
-
-/** Body sizes (see drawnRadius) and colours. */
-function dress(): void {
-  for (const name of SOLAR_SYSTEM_BODIES) {
-    const r = drawnRadius(name);
-    renderer.setShape(handles.bodies[name], { geometry: sphere, material: materials[name]!, scale: r });
-    renderer.setColor(handles.bodies[name], COLOR[name]!);
-  }
-}
-dress();
-shell.onWorldChange(() => dress());
-
+const bodyMeshes = Object.fromEntries(
+  SOLAR_SYSTEM_BODIES.map((b) => {
+    const material =
+      b === 'Sun'
+        ? new MeshBasicMaterial({ color: COLOR[b] })
+        : new MeshStandardMaterial({ color: COLOR[b], roughness: 0.8, emissive: COLOR[b], emissiveIntensity: 0.3 });
+    const mesh = new Mesh(sphere, material);
+    app.scene.add(mesh);
+    return [b, mesh];
+  }),
+) as unknown as Record<SolarSystemBody, Mesh>;
 // Saturn's rings: a flat disc that follows Saturn.
 const rings = new Mesh(new SphereGeometry(1, 32, 4), new MeshBasicMaterial({ color: 0xcdb98a, transparent: true, opacity: 0.5 }));
 app.scene.add(rings);
 
 /**
- * Frames the Sun and the orbits out to `half` AU, from the start's direction. The box is 5 % of
- * `half` thick either side of the ecliptic: the planets' inclinations lift them up to 0.93 AU
- * (Neptune: 1.77 deg at 30 AU) above it, and the camera fits the box's corners.
+ * Drawn radius of a body, display AU: the true radius, or exaggerated so every body shows at the
+ * scale of the orbits (planets 0.012 AU + 120 times their radius, keeping the giants larger; the Sun 12 times).
  */
-function frameView(half: number): void {
-  const k = UNITS_PER_AU;
-  const thick = 0.05 * half;
-  app.frame([-half * k, -thick * k, -half * k], [half * k, thick * k, half * k], VIEW_DIRECTION);
+function drawnRadius(name: SolarSystemBody): number {
+  const r = RADIUS_AU[name];
+  if (!params.exaggerate) return r;
+  return name === 'Sun' ? 12 * r : 0.012 + 120 * r;
 }
 
-// ---- Orbit lines: each planet's Kepler ellipse about the Sun from its state at the start ----------
+/** Share of the true scale drawn now (0 compressed, 1 true), eased towards the chosen one. */
+let trueScale = params.distances === 'true' ? 1 : 0;
+/** Display places of the bodies this frame, scene units (x, y, z each, SOLAR_SYSTEM_BODIES order). */
+const shown = new Float64Array(3 * SOLAR_SYSTEM_BODIES.length);
 
-const orbitLines = new Group();
-app.scene.add(orbitLines);
-/** Points a drawn orbit. */
+/** The display place (scene units) of the heliocentric point (x, y, z) AU, into out[o..o+2]. */
+function place(x: number, y: number, z: number, out: { [index: number]: number }, o = 0): void {
+  toDisplay(x, y, z, trueScale, out, o);
+  out[o] = out[o]! * UNITS_PER_AU;
+  out[o + 1] = out[o + 1]! * UNITS_PER_AU;
+  out[o + 2] = out[o + 2]! * UNITS_PER_AU;
+}
+
+/**
+ * The display direction (unit, scene axes) of the heliocentric direction d at the heliocentric point
+ * r: the radial part stretched by d rho / dr and the rest by rho / r (./distance-scale.ts).
+ */
+function displayDirection(r: ArrayLike<number>, d: ArrayLike<number>, out: Vector3): Vector3 {
+  const rn = Math.hypot(r[0]!, r[1]!, r[2]!);
+  const rho = displayRadius(rn, trueScale);
+  const h = 1e-6 * rn;
+  const drho = (displayRadius(rn + h, trueScale) - rho) / h;
+  const ux = r[0]! / rn,
+    uy = r[1]! / rn,
+    uz = r[2]! / rn;
+  const along = d[0]! * ux + d[1]! * uy + d[2]! * uz;
+  const k = rho / rn;
+  out.set(
+    drho * along * ux + k * (d[0]! - along * ux),
+    drho * along * uy + k * (d[1]! - along * uy),
+    drho * along * uz + k * (d[2]! - along * uz),
+  );
+  return out.normalize();
+}
+
+// ---- Orbit lines: each planet's Kepler ellipse about the Sun from its state now ---------------------
+
+/** Points of a drawn orbit. */
 const ORBIT_POINTS = 256;
+const orbitLines = Object.fromEntries(
+  SOLAR_SYSTEM_PLANETS.map((name) => {
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * ORBIT_POINTS), 3));
+    const line = new LineLoop(geometry, new LineBasicMaterial({ color: COLOR[name], transparent: true, opacity: 0.5 }));
+    app.scene.add(line);
+    return [name, line];
+  }),
+) as Record<string, LineLoop>;
+let orbitsDrawn = 0;
+let orbitsAt = -Infinity,
+  orbitsScale = -1;
+const orbitPoint = [0, 0, 0];
 
 /**
  * Redraws every planet's orbit: the two-body (Sun and planet) Kepler ellipse through its position and
  * velocity now, mu = G (M_sun + m) (AU^3/day^2), from the eccentricity vector e = (v x h) / mu - r / |r|
  * and the semi-major axis a = 1 / (2 / |r| - |v|^2 / mu) (vis-viva): r(f) = a (1 - e^2) / (1 + e cos f)
- * around the focus at the Sun, in the orbit's plane. The giants' pull makes the real paths wander a
- * little from these ellipses over the years.
+ * around the focus at the Sun, in the orbit's plane, each point on the display scale. The giants'
+ * pull makes the real paths wander a little from these ellipses over the years.
  */
 function drawOrbits(world: PhysicsWorld): void {
-  for (const line of orbitLines.children) (line as Line).geometry.dispose();
-  orbitLines.clear();
   const c = world.components,
     G = world.laws.gravitationalConstant,
-    sun = slotOf(handles.bodies.Sun),
-    k = UNITS_PER_AU;
+    sun = slotOf(handles.bodies.Sun);
+  orbitsDrawn = 0;
   for (const name of SOLAR_SYSTEM_PLANETS) {
-    const e = slotOf(handles.bodies[name]);
-    const r = new Vector3(
-      c.Position.x[e]! - c.Position.x[sun]!,
-      c.Position.y[e]! - c.Position.y[sun]!,
-      c.Position.z[e]! - c.Position.z[sun]!,
-    );
-    const u = new Vector3(
-      c.Velocity.x[e]! - c.Velocity.x[sun]!,
-      c.Velocity.y[e]! - c.Velocity.y[sun]!,
-      c.Velocity.z[e]! - c.Velocity.z[sun]!,
-    );
-    const mu = G * (c.Mass.value[sun]! + c.Mass.value[e]!);
+    const s = heliocentricState(world, handles, handles.bodies[name], state6);
+    const r = new Vector3(s[0], s[1], s[2]);
+    const u = new Vector3(s[3], s[4], s[5]);
+    const mu = G * (c.Mass.value[sun]! + c.Mass.value[slotOf(handles.bodies[name])]!);
     const h = new Vector3().crossVectors(r, u);
     const ecc = new Vector3().crossVectors(u, h).divideScalar(mu).sub(r.clone().divideScalar(r.length()));
     const a = 1 / (2 / r.length() - u.lengthSq() / mu);
     const en = ecc.length();
-    if (!(a > 0) || !(en < 1)) continue;
+    const line = orbitLines[name]!;
+    line.visible = a > 0 && en < 1;
+    if (!line.visible) continue;
     // Orbit frame: p toward the perihelion (or along r for a circle), q = h x p.
     const p = en > 1e-9 ? ecc.clone().normalize() : r.clone().normalize();
     const q = new Vector3().crossVectors(h, p).normalize();
-    const pts: number[] = [];
+    const attr = line.geometry.getAttribute('position') as Float32BufferAttribute;
+    const arr = attr.array as Float32Array;
     for (let i = 0; i < ORBIT_POINTS; i++) {
       const f = (2 * Math.PI * i) / ORBIT_POINTS;
       const rr = (a * (1 - en * en)) / (1 + en * Math.cos(f));
       const x = rr * Math.cos(f),
         y = rr * Math.sin(f);
-      pts.push(
-        (c.Position.x[sun]! + x * p.x + y * q.x) * k,
-        (c.Position.y[sun]! + x * p.y + y * q.y) * k,
-        (c.Position.z[sun]! + x * p.z + y * q.z) * k,
-      );
+      place(x * p.x + y * q.x, x * p.y + y * q.y, x * p.z + y * q.z, orbitPoint);
+      arr[3 * i] = orbitPoint[0]!;
+      arr[3 * i + 1] = orbitPoint[1]!;
+      arr[3 * i + 2] = orbitPoint[2]!;
     }
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new Float32BufferAttribute(pts, 3));
-    orbitLines.add(new LineLoop(geometry, new LineBasicMaterial({ color: COLOR[name], transparent: true, opacity: 0.45 })));
+    attr.needsUpdate = true;
+    line.geometry.computeBoundingSphere();
+    orbitsDrawn++;
   }
 }
-drawOrbits(shell.world);
-shell.onWorldChange((world) => drawOrbits(world));
 
-// ---- Labels, date and the error table ---------------------------------------------------------
+// ---- The launch: arrow, plan, ghost, zone; the probe and its trail -----------------------------------
+
+/** The launch arrow: a shaft and a head (unit length along +y, scaled and turned per frame). */
+const arrow = new Group();
+{
+  const material = new MeshBasicMaterial({ color: 0xffe066 });
+  const shaft = new Mesh(new CylinderGeometry(0.035, 0.035, 0.72, 10), material);
+  shaft.position.y = 0.36;
+  const head = new Mesh(new ConeGeometry(0.11, 0.28, 16), material);
+  head.position.y = 0.86;
+  arrow.add(shaft, head);
+  app.scene.add(arrow);
+}
+const arrowUp = new Vector3(0, 1, 0);
+app.scene.add(arrow);
+
+/** A line of up to `n` points with its own buffer, drawn with `material`. */
+function dynamicLine(n: number, material: LineBasicMaterial, loop = false): Line {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(3 * n), 3));
+  const line = loop ? new LineLoop(geometry, material) : new Line(geometry, material);
+  line.frustumCulled = false;
+  app.scene.add(line);
+  return line;
+}
+/** Every PLAN_STRIDE-th point of the plan is drawn as a dot: dots at equal times, closer where the probe is slow. */
+const PLAN_STRIDE = 4;
+const planDots = (() => {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(plan.path.length), 3));
+  const points = new Points(
+    geometry,
+    new PointsMaterial({ color: 0x9fd3ff, size: 3.5, sizeAttenuation: false, transparent: true, opacity: 0.95 }),
+  );
+  points.frustumCulled = false;
+  app.scene.add(points);
+  return points;
+})();
+/** The gap between where the probe and the target would be at the closest approach. */
+const missLine = dynamicLine(2, new LineBasicMaterial({ color: 0xff9b9b, transparent: true, opacity: 0.8 }));
+const CIRCLE = 64;
+/** A unit circle in the x-z plane (scaled and placed per use). */
+function circle(color: number, opacity: number): LineLoop {
+  const line = dynamicLine(CIRCLE, new LineBasicMaterial({ color, transparent: true, opacity }), true) as LineLoop;
+  const arr = (line.geometry.getAttribute('position') as Float32BufferAttribute).array as Float32Array;
+  for (let i = 0; i < CIRCLE; i++) {
+    arr[3 * i] = Math.cos((2 * Math.PI * i) / CIRCLE);
+    arr[3 * i + 2] = Math.sin((2 * Math.PI * i) / CIRCLE);
+  }
+  line.geometry.computeBoundingSphere();
+  return line;
+}
+/** The arrival zone round the target, and the ghost of the target where the plan meets it. */
+const zoneRing = circle(0x7ee787, 0.9);
+const ghostRing = circle(0xffffff, 0.8);
+const trailLine = dynamicLine(TRAIL_POINTS, new LineBasicMaterial({ color: 0xfff1b8, transparent: true, opacity: 0.85 }));
+const probeMesh = new Mesh(sphere, new MeshBasicMaterial({ color: 0xffffff }));
+app.scene.add(probeMesh);
+
+/** Adds the probe's heliocentric place now to its trail (every other step; thinned to half when full). */
+function recordTrail(world: PhysicsWorld): void {
+  if (!flight) return;
+  if (trailCount === TRAIL_POINTS) {
+    for (let i = 0; i < TRAIL_POINTS / 2; i++) trail.copyWithin(3 * i, 6 * i, 6 * i + 3);
+    trailCount = TRAIL_POINTS / 2;
+  }
+  heliocentricState(world, handles, flight.probe, state6);
+  trail.set(state6.subarray(0, 3), 3 * trailCount++);
+}
+
+/** Writes heliocentric points (AU) into a line's buffer on the display scale and shows `count` of them. */
+function setLinePoints(line: Line, points: Float64Array, count: number): void {
+  const attr = line.geometry.getAttribute('position') as Float32BufferAttribute;
+  const arr = attr.array as Float32Array;
+  for (let i = 0; i < count; i++) place(points[3 * i]!, points[3 * i + 1]!, points[3 * i + 2]!, arr, 3 * i);
+  attr.needsUpdate = true;
+  line.geometry.setDrawRange(0, count);
+}
+
+// ---- Camera views ------------------------------------------------------------------------------------
+
+/** The camera looks along this, steep enough that the orbits read as near circles. */
+const VIEW_DIRECTION: [number, number, number] = [0.1, 1, 0.75];
+type View = 'inner' | 'all' | 'mission';
+let view: View = 'mission';
+/** Radius of the framed view, scene units. */
+let viewHalf = 10;
+
+/**
+ * Frames the Sun and the orbits out to: Mars (inner), Neptune (all), or the farther of the Earth and
+ * the mission's planet (mission), at its farthest from the Sun, on the display scale, with a margin
+ * (`frameDisc`).
+ */
+function frameView(which: View): void {
+  view = which;
+  const far = (name: SolarSystemBody): number => APHELION[name] ?? 1;
+  const out = which === 'inner' ? far('Mars') : which === 'all' ? far('Neptune') : Math.max(far('Earth'), far(mission().target));
+  frameDisc(displayRadius(out, targetScale()) * UNITS_PER_AU * 1.04 + 0.4);
+}
+/** Each planet's greatest distance from the Sun, AU (aphelion, rounded up). */
+const APHELION: Partial<Record<SolarSystemBody, number>> = {
+  Mercury: 0.47,
+  Venus: 0.73,
+  Earth: 1.02,
+  Mars: 1.67,
+  Jupiter: 5.46,
+  Saturn: 10.1,
+  Uranus: 20.1,
+  Neptune: 30.3,
+};
+
+/** The disc the camera frames (scene units), kept through resizes until the player moves the camera; null once moved. */
+let framedRadius: number | null = null;
+const ndcPoint = new Vector3();
+
+/**
+ * Places the camera along VIEW_DIRECTION from the Sun at the least distance that keeps the whole
+ * ecliptic disc of `radius` scene units inside the view with a 6 % margin (bisection on the distance,
+ * the disc's rim sampled every 10 degrees, a little above and below the plane).
+ */
+function frameDisc(radius: number): void {
+  framedRadius = radius;
+  const camera = app.camera;
+  const dir = new Vector3(...VIEW_DIRECTION).normalize();
+  let lo = radius * 0.05,
+    hi = radius * 40;
+  const fits = (d: number): boolean => {
+    camera.position.copy(dir).multiplyScalar(d);
+    camera.lookAt(0, 0, 0);
+    camera.updateMatrixWorld();
+    for (let k = 0; k < 72; k++) {
+      const a = (k * Math.PI) / 36;
+      ndcPoint.set(radius * Math.cos(a), (k % 2 ? 0.04 : -0.04) * radius, radius * Math.sin(a)).project(camera);
+      if (ndcPoint.z > 1 || Math.abs(ndcPoint.x) > 0.94 || Math.abs(ndcPoint.y) > 0.94) return false;
+    }
+    return true;
+  };
+  camera.near = radius / 400;
+  camera.far = 6000;
+  camera.updateProjectionMatrix();
+  for (let i = 0; i < 40; i++) {
+    const mid = (lo + hi) / 2;
+    if (fits(mid)) hi = mid;
+    else lo = mid;
+  }
+  camera.position.copy(dir).multiplyScalar(hi);
+  camera.lookAt(0, 0, 0);
+  viewHalf = radius;
+  if (app.controls) {
+    app.controls.target.set(0, 0, 0);
+    app.controls.update();
+  }
+}
+app.controls?.addEventListener('start', () => {
+  framedRadius = null;
+});
+const refit = (): void => {
+  if (framedRadius !== null) frameDisc(framedRadius);
+};
+window.addEventListener('resize', refit);
+new ResizeObserver(refit).observe(pageLayout().stage);
+
+const targetScale = (): number => (params.distances === 'true' ? 1 : 0);
+
+function setDistances(which: 'compressed' | 'true'): void {
+  params.distances = which;
+  frameView(view);
+  panel.refresh();
+}
+
+// ---- Labels and dots --------------------------------------------------------------------------------
 
 const labelLayer = document.createElement('div');
 labelLayer.style.cssText =
@@ -340,153 +843,496 @@ labelLayer.style.cssText =
 // Over the canvas (in the layout's stage): the labels are part of the scene.
 labelLayer.dataset.sceneOverlay = '';
 pageLayout().stage.append(labelLayer);
+/** Names on the screen: the bodies, then the probe. */
+const LABELS = [...SOLAR_SYSTEM_BODIES, 'probe'] as const;
+type LabelName = (typeof LABELS)[number];
 const labels = Object.fromEntries(
-  SOLAR_SYSTEM_BODIES.map((name) => {
+  LABELS.map((name) => {
     const el = document.createElement('div');
-    el.textContent = name === 'Earth' ? 'Earth–Moon' : name;
+    el.textContent = name === 'Earth' ? 'Earth' : name;
     el.dataset.label = name;
-    // A dark translucent backing keeps the name legible over a bright planet or trail.
+    // A dark translucent backing keeps the name legible over a bright planet or line.
     el.style.cssText =
-      'position: absolute; transform: translate(6px, -50%); white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.72)';
+      'position: absolute; white-space: nowrap; padding: 0 4px; border-radius: 3px; background: rgba(8, 10, 16, 0.78); line-height: 16px';
     labelLayer.append(el);
     return [name, el];
   }),
-);
+) as Record<LabelName, HTMLDivElement>;
 
-// A dot of the body's colour at its place, kept at least a few pixels wide: at the scale of
-// Neptune's orbit (60 AU across a few hundred pixels) even the exaggerated planets are under a
-// pixel, and a player could not find them. The dot hides once the body itself is drawn larger.
+// A dot of the body's colour at its place, kept a few pixels wide: at the scale of the whole system
+// even the exaggerated planets are a pixel or two, and a player could not find them. The dot hides once
+// the body itself is drawn larger.
 const dots = Object.fromEntries(
-  SOLAR_SYSTEM_BODIES.map((name) => {
+  LABELS.map((name) => {
     const el = document.createElement('div');
-    const size = name === 'Sun' ? 12 : name === 'Jupiter' || name === 'Saturn' ? 8 : 6;
-    const colour = `#${COLOR[name]!.toString(16).padStart(6, '0')}`;
+    const size = name === 'Sun' ? 12 : name === 'Jupiter' || name === 'Saturn' ? 8 : name === 'probe' ? 7 : 6;
+    const colour = name === 'probe' ? '#ffffff' : hex(COLOR[name]);
     el.style.cssText = `position: absolute; width: ${size}px; height: ${size}px; margin: ${-size / 2}px 0 0 ${-size / 2}px; border-radius: 50%; background: ${colour}; box-shadow: 0 0 6px ${colour}`;
     el.dataset.dot = name;
     labelLayer.append(el);
     return [name, { el, size }];
   }),
-);
+) as Record<LabelName, { el: HTMLDivElement; size: number }>;
 
-const table = document.createElement('div');
-table.className = 'bp-hud';
-table.dataset.hud = 'ephemeris';
-pageLayout().side.append(table);
-const dateLine = table.appendChild(document.createElement('div'));
-dateLine.style.whiteSpace = 'pre-line';
-const head = table.appendChild(document.createElement('div'));
-head.textContent = 'error vs ephemeris (floor)';
-const rows = Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p) => [p, table.appendChild(document.createElement('div'))]));
-const errors = new Float64Array(SOLAR_SYSTEM_PLANETS.length);
+/** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
+const placed: number[] = [];
+/** Labels the last frame showed. */
+let shownLabels = 0;
+/**
+ * Places a name may take beside its dot, as (side, shift) pairs: side +1 right of it, -1 left, 0
+ * centred over (shift -1) or under (shift +1) it; shift in label heights, so a name never sits more
+ * than a few pixels from its dot.
+ */
+const LABEL_PLACES = [1, 0, -1, 0, 1, -0.5, 1, 0.5, -1, -0.5, -1, 0.5, 0, -1, 0, 1, 1, -1, 1, 1, -1, -1, -1, 1];
+const LABEL_HEIGHT = 16;
 
-const p3 = [0, 0, 0];
-const v = new Vector3();
-let tableFrame = 0;
-
-/** Places a name may take, as (side, rows) pairs: side +1 right of the body, -1 left; rows of 17 px down. */
-const LABEL_PLACES = [1, 0, -1, 0, 1, -1, -1, -1, 1, 1, -1, 1, 1, -2, -1, -2, 1, 2, -1, 2];
-
-/** Whether a label box from `x0` to `x0 + width` at height `y` (px) clears every label placed this frame. */
-function labelFree(x0: number, y: number, width: number): boolean {
+/** Whether the box (x0, y0)-(x1, y1) px clears every label placed this frame and every dot but its own. */
+function labelFree(x0: number, y0: number, x1: number, y1: number, own: number): boolean {
   for (let i = 0; i < placed.length; i += 4) {
-    if (x0 < placed[i + 2]! && x0 + width > placed[i]! && Math.abs(y - placed[i + 1]!) < 16) return false;
+    if (x0 < placed[i + 2]! && x1 > placed[i]! && y0 < placed[i + 3]! && y1 > placed[i + 1]!) return false;
+  }
+  for (let j = 0; j < LABELS.length; j++) {
+    if (j === own || onScreen[4 * j + 3] !== 1) continue;
+    const x = onScreen[4 * j]!,
+      y = onScreen[4 * j + 1]!;
+    if (x > x0 - 3 && x < x1 + 3 && y > y0 - 3 && y < y1 + 3) return false;
   }
   return true;
 }
 
-/** Per body (in SOLAR_SYSTEM_BODIES order): screen x, y (px), drawn radius (px), on screen (1) or not (0). */
-const onScreen = new Float64Array(4 * SOLAR_SYSTEM_BODIES.length);
-/** The order names are placed in this frame (indices into SOLAR_SYSTEM_BODIES). */
-const labelOrder = SOLAR_SYSTEM_BODIES.map((_, i) => i);
+/** Per label (LABELS order): screen x, y (px), drawn radius (px), on screen (1) or not (0). */
+const onScreen = new Float64Array(4 * LABELS.length);
+/** The order names are placed in this frame (indices into LABELS). */
+const labelOrder = LABELS.map((_, i) => i);
+const v = new Vector3();
+const dirV = new Vector3();
+const scratch3 = [0, 0, 0];
 
-function frame(): void {
-  const k = UNITS_PER_AU;
+/** Projects scene point (x, y, z) into onScreen entry `i` and shows or hides its dot. */
+function project(i: number, name: LabelName, x: number, y: number, z: number, radius: number, show: boolean): void {
   const w = app.canvas.clientWidth,
     h = app.canvas.clientHeight;
-  SOLAR_SYSTEM_BODIES.forEach((name, i) => {
-    onScreen[4 * i + 3] = 0;
-    if (!renderer.drawnPosition(handles.bodies[name], p3)) {
-      labels[name]!.style.display = 'none';
-      dots[name]!.el.style.display = 'none';
-      return;
-    }
-    v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k);
-    if (name === 'Sun') {
-      sunGlow.position.copy(v);
-      sunGlow.scale.setScalar(drawnRadius('Sun') * k * 9);
-    }
-    if (name === 'Saturn') {
-      rings.position.copy(v);
-      rings.scale.set(1, 0.01, 1).multiplyScalar(drawnRadius('Saturn') * k * 2.2);
-    }
-    const distance = v.distanceTo(app.camera.position);
-    v.project(app.camera);
-    const visible = v.z < 1 && Math.abs(v.x) < 1.1 && Math.abs(v.y) < 1.1;
-    const x = ((v.x + 1) / 2) * w,
-      y = ((1 - v.y) / 2) * h;
-    // Radius the body is drawn with, px (perspective: h / 2 px span tan(fov / 2) x distance).
-    const drawnPx = (drawnRadius(name) * k * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
-    const { el: dot, size: dotSize } = dots[name]!;
-    const showDot = visible && drawnPx < dotSize / 2;
-    dot.style.display = showDot ? 'block' : 'none';
-    if (showDot) {
-      dot.style.left = `${x}px`;
-      dot.style.top = `${y}px`;
-    }
-    onScreen[4 * i] = x;
-    onScreen[4 * i + 1] = y;
-    onScreen[4 * i + 2] = drawnPx;
-    onScreen[4 * i + 3] = visible ? 1 : 0;
-  });
-  // Names are placed the Sun first, then the planets farthest from it on the screen first: zoomed out,
-  // the inner planets crowd the Sun and the outer ones, each alone on its orbit, keep their names.
-  const sx = onScreen[0]!,
-    sy = onScreen[1]!;
-  const apart = (i: number) => (i === 0 ? Infinity : Math.hypot(onScreen[4 * i]! - sx, onScreen[4 * i + 1]! - sy));
-  labelOrder.sort((a, b) => apart(b) - apart(a));
+  onScreen[4 * i + 3] = 0;
+  const { el: dot, size: dotSize } = dots[name];
+  if (!show) {
+    dot.style.display = 'none';
+    return;
+  }
+  v.set(x, y, z);
+  const distance = v.distanceTo(app.camera.position);
+  v.project(app.camera);
+  const visible = v.z < 1 && Math.abs(v.x) < 1.05 && Math.abs(v.y) < 1.05;
+  const sx = ((v.x + 1) / 2) * w,
+    sy = ((1 - v.y) / 2) * h;
+  // Radius the body is drawn with, px (perspective: h / 2 px span tan(fov / 2) x distance).
+  const drawnPx = (radius * h) / (2 * distance * Math.tan((app.camera.fov * Math.PI) / 360));
+  const showDot = visible && drawnPx < dotSize / 2;
+  dot.style.display = showDot ? 'block' : 'none';
+  if (showDot) {
+    dot.style.left = `${sx}px`;
+    dot.style.top = `${sy}px`;
+  }
+  onScreen[4 * i] = sx;
+  onScreen[4 * i + 1] = sy;
+  onScreen[4 * i + 2] = drawnPx;
+  onScreen[4 * i + 3] = visible ? 1 : 0;
+}
+
+/** Places the names: the Sun, the target, the probe and the Earth first, then the planets farthest from the Sun on the screen. */
+function placeLabels(): void {
+  const w = app.canvas.clientWidth;
+  const target = LABELS.indexOf(mission().target);
+  const rank = (i: number): number => {
+    const name = LABELS[i]!;
+    if (name === 'Sun') return 4e6;
+    if (i === target) return 3e6;
+    if (name === 'probe') return 2e6;
+    if (name === 'Earth') return 1e6;
+    return Math.hypot(onScreen[4 * i]! - onScreen[0]!, onScreen[4 * i + 1]! - onScreen[1]!);
+  };
+  labelOrder.sort((a, b) => rank(b) - rank(a));
+  placed.length = 0;
   for (const i of labelOrder) {
-    const name = SOLAR_SYSTEM_BODIES[i]!;
-    const el = labels[name]!;
+    const name = LABELS[i]!;
+    const el = labels[name];
     const x = onScreen[4 * i]!,
       y = onScreen[4 * i + 1]!,
       drawnPx = onScreen[4 * i + 2]!,
       visible = onScreen[4 * i + 3] === 1;
-    // The name goes right of the body, else left, else above or below either side: the first place
-    // that covers no name placed before and stays in the view. With none free it waits until the view
-    // separates them.
-    const width = 7.5 * (el.textContent?.length ?? 4) + 14;
-    const gap = Math.max(6, drawnPx + 3);
+    const width = el.offsetWidth || 7.5 * (el.textContent?.length ?? 4) + 8;
+    const gap = Math.max(7, drawnPx + 4);
     let free = false,
       x0 = 0,
-      y0 = y;
+      y0 = 0;
     if (visible) {
       for (let c = 0; c < LABEL_PLACES.length && !free; c += 2) {
-        x0 = LABEL_PLACES[c]! > 0 ? x + gap : x - gap - width;
-        y0 = y + LABEL_PLACES[c + 1]! * 17;
-        free = x0 >= 0 && x0 + width <= w && labelFree(x0, y0, width);
+        const side = LABEL_PLACES[c]!,
+          shift = LABEL_PLACES[c + 1]!;
+        if (side === 0) {
+          x0 = x - width / 2;
+          y0 = shift < 0 ? y - gap - LABEL_HEIGHT + 3 : y + gap - 3;
+        } else {
+          x0 = side > 0 ? x + gap : x - gap - width;
+          y0 = y - LABEL_HEIGHT / 2 + shift * LABEL_HEIGHT * (Math.abs(shift) === 1 ? 0.75 : 1);
+        }
+        free = x0 >= 0 && x0 + width <= w && labelFree(x0, y0, x0 + width, y0 + LABEL_HEIGHT, i);
       }
     }
     el.style.display = free ? 'block' : 'none';
     if (free) {
       el.style.left = `${x0}px`;
       el.style.top = `${y0}px`;
-      el.style.transform = 'translate(0, -50%)';
-      placed.push(x0, y0, x0 + width, 0);
+      placed.push(x0, y0, x0 + width, y0 + LABEL_HEIGHT);
     }
   }
   shownLabels = placed.length / 4;
-  placed.length = 0;
-  if (tableFrame++ % 15 === 0) updateTable();
 }
+
+// ---- Each frame -------------------------------------------------------------------------------------
+
+const earthHelio = new Float64Array(6);
+const launchDir = new Float64Array(3);
+let lastFrame = performance.now();
+
+function frame(): void {
+  const now = performance.now();
+  const dtReal = Math.min(0.1, (now - lastFrame) / 1000);
+  lastFrame = now;
+  const world = shell.world;
+  // Ease the distance scale towards the chosen one.
+  const goal = targetScale();
+  if (trueScale !== goal) {
+    trueScale = goal > trueScale ? Math.min(goal, trueScale + 2 * dtReal) : Math.max(goal, trueScale - 2 * dtReal);
+    if (Math.abs(trueScale - goal) < 1e-3) trueScale = goal;
+  }
+  SOLAR_SYSTEM_BODIES.forEach((name, i) => {
+    heliocentricState(world, handles, handles.bodies[name], state6);
+    place(state6[0]!, state6[1]!, state6[2]!, shown, 3 * i);
+    const mesh = bodyMeshes[name];
+    const r = drawnRadius(name) * UNITS_PER_AU;
+    mesh.position.set(shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!);
+    mesh.scale.setScalar(r);
+    project(i, name, shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!, r, true);
+  });
+  sunGlow.position.set(0, 0, 0);
+  sunGlow.scale.setScalar(drawnRadius('Sun') * UNITS_PER_AU * 9);
+  const sat = SOLAR_SYSTEM_BODIES.indexOf('Saturn');
+  rings.position.set(shown[3 * sat]!, shown[3 * sat + 1]!, shown[3 * sat + 2]!);
+  rings.scale.set(1, 0.01, 1).multiplyScalar(drawnRadius('Saturn') * UNITS_PER_AU * 2.2);
+  if (world.time - orbitsAt > 30 || orbitsAt > world.time || orbitsScale !== trueScale) {
+    drawOrbits(world);
+    orbitsAt = world.time;
+    orbitsScale = trueScale;
+  }
+  drawLaunch(world);
+  placeLabels();
+  updateStatus();
+  if (tableFrame++ % 15 === 0 && table.open) updateTable();
+}
+
+/** The aim arrow, the plan, the ghost and the zone (aiming), or the probe and its trail (flying). */
+function drawLaunch(world: PhysicsWorld): void {
+  const m = mission();
+  const targetI = SOLAR_SYSTEM_BODIES.indexOf(m.target);
+  const earthI = SOLAR_SYSTEM_BODIES.indexOf('Earth');
+  const aiming = phase === 'aim';
+  // The zone: a ring round the target, its radius the zone on the display scale there.
+  heliocentricState(world, handles, handles.bodies[m.target], state6);
+  const rT = Math.hypot(state6[0]!, state6[1]!, state6[2]!);
+  const zoneShown = ((displayRadius(rT + m.zone, trueScale) - displayRadius(Math.max(0, rT - m.zone), trueScale)) / 2) * UNITS_PER_AU;
+  const zone = Math.max(zoneShown, drawnRadius(m.target) * UNITS_PER_AU * 1.6);
+  zoneRing.position.set(shown[3 * targetI]!, shown[3 * targetI + 1]!, shown[3 * targetI + 2]!);
+  zoneRing.scale.setScalar(zone * (1 + 0.06 * Math.sin(performance.now() / 250)));
+  (zoneRing.material as LineBasicMaterial).color.setHex(phase === 'done' && flight?.state === 'arrived' ? 0xffe066 : 0x7ee787);
+  const flashAge = (performance.now() - arrivalAt) / ARRIVAL_FLASH_MS;
+  arrivalGlow.visible = flashAge >= 0 && flashAge < 1;
+  if (arrivalGlow.visible) {
+    arrivalGlow.position.copy(zoneRing.position);
+    arrivalGlow.scale.setScalar(zone * (2 + 10 * flashAge));
+    arrivalGlow.material.opacity = 1 - flashAge;
+  }
+  arrow.visible = aiming;
+  planDots.visible = aiming;
+  ghostRing.visible = aiming;
+  missLine.visible = false;
+  if (aiming) {
+    if (world.time !== planAt && (planAt === -Infinity || performance.now() - planClock > 90)) {
+      planFlight(world, handles, m, aim, plan);
+      planAt = world.time;
+      planClock = performance.now();
+      if (plan.hit && !planShownHit) sound.chime(1320, 0.12);
+      planShownHit = plan.hit;
+    }
+    heliocentricState(world, handles, handles.bodies.Earth, earthHelio);
+    launchDirection(earthHelio, aim.angle, launchDir);
+    displayDirection(earthHelio, launchDir, dirV);
+    const len = viewHalf * (0.1 + (0.3 * aim.speed) / MAX_SPEED);
+    arrow.position.set(shown[3 * earthI]!, shown[3 * earthI + 1]!, shown[3 * earthI + 2]!);
+    arrow.quaternion.setFromUnitVectors(arrowUp, dirV);
+    arrow.scale.set(viewHalf * 0.12, len, viewHalf * 0.12);
+    const attr = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
+    const arr = attr.array as Float32Array;
+    let n = 0;
+    for (let i = 0; i < plan.points; i += i + PLAN_STRIDE < plan.points || i === plan.points - 1 ? PLAN_STRIDE : plan.points - 1 - i)
+      place(plan.path[3 * i]!, plan.path[3 * i + 1]!, plan.path[3 * i + 2]!, arr, 3 * n++);
+    attr.needsUpdate = true;
+    planDots.geometry.setDrawRange(0, n);
+    (planDots.material as PointsMaterial).color.setHex(plan.hit ? 0x7ee787 : 0x9fd3ff);
+    place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, scratch3);
+    ghostRing.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
+    ghostRing.scale.setScalar(zone);
+    (ghostRing.material as LineBasicMaterial).color.setHex(plan.hit ? 0x7ee787 : hexColor(m.target));
+    if (!plan.hit && !plan.sun) {
+      missLine.visible = true;
+      const attr = missLine.geometry.getAttribute('position') as Float32BufferAttribute;
+      const arr = attr.array as Float32Array;
+      place(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!, arr, 0);
+      place(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!, arr, 3);
+      attr.needsUpdate = true;
+    }
+  }
+  const flying = flight !== null && phase !== 'aim';
+  trailLine.visible = flying;
+  probeMesh.visible = flying;
+  const probeI = LABELS.indexOf('probe');
+  if (flying && flight) {
+    setLinePoints(trailLine, trail, trailCount);
+    heliocentricState(world, handles, flight.probe, state6);
+    place(state6[0]!, state6[1]!, state6[2]!, scratch3);
+    probeMesh.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
+    probeMesh.scale.setScalar(viewHalf * 0.006);
+    project(probeI, 'probe', scratch3[0]!, scratch3[1]!, scratch3[2]!, viewHalf * 0.006, true);
+  } else {
+    project(probeI, 'probe', 0, 0, 0, 0, false);
+  }
+}
+const hexColor = (name: SolarSystemBody): number => COLOR[name];
+
+// ---- Aiming with the pointer: a click or tap on the sky turns the launch towards that point ----------
+
+const raycaster = new Raycaster();
+const ecliptic = new Plane(new Vector3(0, 1, 0), 0);
+const ndc = new Vector2();
+const hitPoint = new Vector3();
+const aimAt = [0, 0, 0];
+
+/** Turns the launch towards the display point under the pointer (on the ecliptic). */
+function aimAtPointer(clientX: number, clientY: number): void {
+  if (phase !== 'aim') return;
+  const [x, y] = app.toNdc(clientX, clientY);
+  ndc.set(x, y);
+  raycaster.setFromCamera(ndc, app.camera);
+  if (!raycaster.ray.intersectPlane(ecliptic, hitPoint)) return;
+  const earthI = SOLAR_SYSTEM_BODIES.indexOf('Earth');
+  // The pointer's direction from the Earth on the display, back to a heliocentric direction.
+  const ex = shown[3 * earthI]!,
+    ez = shown[3 * earthI + 2]!;
+  fromDisplay(hitPoint.x / UNITS_PER_AU, 0, hitPoint.z / UNITS_PER_AU, trueScale, aimAt);
+  heliocentricState(shell.world, handles, handles.bodies.Earth, earthHelio);
+  if (Math.hypot(hitPoint.x - ex, hitPoint.z - ez) < 1e-6) return;
+  const dx = aimAt[0]! - earthHelio[0]!,
+    dz = aimAt[2]! - earthHelio[2]!;
+  const p = launchDirection(earthHelio, 0, [0, 0, 0]),
+    o = launchDirection(earthHelio, 90, [0, 0, 0]);
+  const angle = (Math.atan2(dx * o[0]! + dz * o[2]!, dx * p[0]! + dz * p[2]!) * 180) / Math.PI;
+  aim.angle = Math.round(angle) === -180 ? 180 : Math.round(angle);
+  planAt = -Infinity;
+}
+let aiming = -1;
+app.canvas.addEventListener('pointerdown', (e) => {
+  if (e.button !== 0 || !e.isPrimary) return;
+  aiming = e.pointerId;
+  aimAtPointer(e.clientX, e.clientY);
+});
+app.canvas.addEventListener('pointermove', (e) => {
+  if (e.pointerId === aiming) aimAtPointer(e.clientX, e.clientY);
+});
+for (const type of ['pointerup', 'pointercancel'] as const)
+  app.canvas.addEventListener(type, (e) => {
+    if (e.pointerId === aiming) aiming = -1;
+  });
+
+// ---- Status: the mission, the plan or the flight, the date; the on-screen buttons --------------------
+
+const style = document.createElement('style');
+style.textContent = `
+.ss-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; }
+.ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
+.ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
+.ss-status .ss-line.ok { color: #7ee787; }
+.ss-status .ss-line.bad { color: #ffb4a8; }
+.ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
+.ss-status .ss-date { color: #b8c4d6; font-size: 12px; }
+.ss-pad button { min-width: 48px; }
+.ss-pad button.ss-go { background: #1f7a3a; border-color: #7ee2a0; min-width: 76px; }
+details.ss-table summary { cursor: pointer; color: #cfd8e6; }
+`;
+document.head.append(style);
+const status = document.createElement('div');
+status.className = 'ss-status';
+status.setAttribute('role', 'status');
+const goalLine = document.createElement('div');
+goalLine.className = 'ss-goal';
+goalLine.dataset.hud = 'goal';
+const planText = document.createElement('div');
+planText.className = 'ss-line';
+planText.dataset.hud = 'plan';
+const dateText = document.createElement('div');
+dateText.className = 'ss-date';
+dateText.dataset.hud = 'date';
+status.append(goalLine, planText, dateText);
+pageLayout().status.append(status);
+
+const PAD = [
+  { label: '↺', name: 'turn the launch left (←)', press: () => turn(-2) },
+  { label: '↻', name: 'turn the launch right (→)', press: () => turn(2) },
+  { label: '−', name: 'slower launch (↓)', press: () => changeSpeed(-0.1) },
+  { label: '+', name: 'faster launch (↑)', press: () => changeSpeed(0.1) },
+] as const;
+/** Repeats a held pad button: once at once, then every 70 ms after 350 ms. */
+let repeatTimer = 0;
+function holdRepeat(action: () => void): void {
+  action();
+  window.clearTimeout(repeatTimer);
+  const again = (delay: number): void => {
+    repeatTimer = window.setTimeout(() => {
+      action();
+      again(70);
+    }, delay);
+  };
+  again(350);
+}
+const stopRepeat = (): void => window.clearTimeout(repeatTimer);
+const pad = createButtonBar(
+  [
+    ...PAD.map((b) => ({ label: b.label, name: b.name, onPress: () => holdRepeat(b.press), onRelease: stopRepeat })),
+    { label: 'Launch', name: 'launch the probe (Space)', onTap: () => launch() },
+    {
+      label: 'Wait',
+      name: 'wait: time runs fast while held (W)',
+      onPress: () => {
+        waiting = true;
+      },
+      onRelease: () => {
+        waiting = false;
+      },
+    },
+    { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
+    { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
+    { label: 'Next mission', name: 'next mission (Enter)', onTap: () => advance() },
+  ],
+  { label: 'launch controls', touchOnly: false },
+);
+pad.element.classList.add('ss-pad');
+pad.buttons[4]!.classList.add('ss-go');
+pad.buttons[8]!.classList.add('ss-go');
+pad.buttons.forEach((b, i) => {
+  b.dataset.pad = ['left', 'right', 'slower', 'faster', 'launch', 'wait', 'abort', 'retry', 'next'][i]!;
+});
+
+const starText = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
+const aimWords = (a: number): string =>
+  Math.abs(a) < 1
+    ? 'along the Earth’s path'
+    : Math.abs(a) > 179
+      ? 'against the Earth’s path'
+      : `${Math.abs(Math.round(a))}° ${a > 0 ? 'outwards' : 'inwards'}${Math.abs(a) > 90 ? ' (backwards)' : ''}`;
+let shownStatus = '';
+
+function updateStatus(force = false): void {
+  const m = mission();
+  const world = shell.world;
+  const total = best.reduce((s, n) => s + n, 0);
+  const goal = `Mission ${missionIndex + 1} of ${MISSIONS.length}: fly a probe to ${m.target}`;
+  let line = '',
+    cls = '';
+  if (phase === 'aim') {
+    const head = `${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)}: `;
+    if (plan.hit) {
+      line = `${head}✓ reaches ${m.target} in ${Math.round(plan.time)} days ${starText(starsFor(m, aim.speed))}. Launch!`;
+      cls = 'ok';
+    } else if (plan.sun) {
+      line = `${head}✗ falls into the Sun`;
+      cls = 'bad';
+    } else {
+      const outward = distanceFromSun(m.target) > distanceFromSun('Earth');
+      const rT = distanceFromSun(m.target);
+      if (outward && plan.farthest < rT - m.zone) line = `${head}✗ too slow to reach ${m.target}’s orbit: more speed`;
+      else if (!outward && plan.nearest > rT + m.zone) line = `${head}✗ does not fall to ${m.target}’s orbit: more speed, aimed backwards`;
+      else {
+        const a = Math.round(Math.abs(plan.ahead));
+        const inside =
+          Math.hypot(plan.probeAt[0]!, plan.probeAt[1]!, plan.probeAt[2]!) <
+          Math.hypot(plan.targetAt[0]!, plan.targetAt[1]!, plan.targetAt[2]!);
+        const miss = `${head}✗ misses ${m.target} by ${plan.distance.toFixed(2)} AU`;
+        if (a < 6) line = `${miss}, passing ${inside ? 'inside' : 'outside'} it: a little ${inside === outward ? 'more' : 'less'} speed`;
+        else line = `${miss}: it will be ${a}° ${plan.ahead > 0 ? 'ahead' : 'behind'}. Turn, or hold Wait`;
+      }
+      cls = 'bad';
+    }
+  } else if (phase === 'flight' && flight) {
+    heliocentricState(world, handles, flight.probe, state6);
+    const P = world.components.Position;
+    const t = slotOf(handles.bodies[m.target]),
+      p = slotOf(flight.probe);
+    const d = Math.hypot(P.x[t]! - P.x[p]!, P.y[t]! - P.y[p]!, P.z[t]! - P.z[p]!);
+    line = `Flying to ${m.target}: day ${Math.round(flight.elapsed)} · ${d.toFixed(2)} AU to go`;
+  } else if (phase === 'done' && flight) {
+    if (flight.state === 'arrived') {
+      const s = starsFor(m, flight.aim.speed);
+      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s; 3 stars up to ${m.stars3} km/s)`;
+      if (missionIndex === MISSIONS.length - 1) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
+      cls = 'won';
+    } else if (flight.state === 'sun') {
+      line = '✗ The probe fell into the Sun. Try again?';
+      cls = 'bad';
+    } else {
+      line = `✗ Missed ${m.target}: closest ${flight.closest.toFixed(2)} AU (the ring is ${m.zone} AU). Try again?`;
+      cls = 'bad';
+    }
+  }
+  const date = new Date(handles.epoch + world.time * 86_400_000).toISOString().slice(0, 10);
+  const rate = currentRate();
+  const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
+  const dateLine = `${date} · ${rate === 0 ? 'time stopped' : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second`}${waiting ? ' (waiting)' : ''} · ${stars}`;
+  const key = `${goal}|${line}|${cls}|${dateLine}|${phase}`;
+  if (!force && key === shownStatus) return;
+  shownStatus = key;
+  goalLine.textContent = goal;
+  planText.textContent = line;
+  planText.className = `ss-line ${cls}`;
+  dateText.textContent = dateLine;
+  const aimingNow = phase === 'aim';
+  for (let i = 0; i < 5; i++) pad.show(i, aimingNow);
+  pad.show(5, phase !== 'done');
+  pad.show(6, phase === 'flight');
+  pad.show(7, phase === 'done');
+  pad.show(8, phase === 'done' && flight?.state === 'arrived');
+  pad.setActive(5, waiting);
+}
+
+// ---- The engineer's comparison with the ephemeris (folded) ------------------------------------------
+
+const table = document.createElement('details');
+table.className = 'bp-hud ss-table';
+table.dataset.hud = 'ephemeris';
+const summary = table.appendChild(document.createElement('summary'));
+summary.textContent = 'Accuracy against the real ephemeris';
+const tableBody = table.appendChild(document.createElement('div'));
+tableBody.style.whiteSpace = 'pre-line';
+const rows = Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p) => [p, table.appendChild(document.createElement('div'))]));
+pageLayout().side.append(table);
+table.addEventListener('toggle', () => updateTable());
+const errors = new Float64Array(SOLAR_SYSTEM_PLANETS.length);
+let tableFrame = 0;
 
 function updateTable(): void {
   const world = shell.world;
   const date = new Date(handles.epoch + world.time * 86_400_000);
-  // Two short lines: the side column's width must not follow the date's length.
-  dateLine.textContent = `${date.toISOString().slice(0, 16).replace('T', ' ')} UTC · day ${world.time.toFixed(1)}\n${params.integrator} ${params.step} h · ${params.rate.toFixed(1)} d/s`;
+  tableBody.textContent = `Position error |r − r_ephemeris| / |r_ephemeris| against astronomy-engine, heliocentric (floor of this point-mass model after a year in brackets).\n${date.toISOString().slice(0, 16).replace('T', ' ')} UTC · day ${world.time.toFixed(1)} since the start\n${params.integrator}, steps of ${params.step} h at most`;
   solarSystemErrors(world, handles, errors);
   SOLAR_SYSTEM_PLANETS.forEach((p, i) => {
-    rows[p]!.textContent = `${p.padEnd(8)} ${errors[i]!.toExponential(2)}  (${SOLAR_SYSTEM_FLOOR[p].toExponential(1)} at 1 yr)`;
+    rows[p]!.textContent = `${p.padEnd(8)} ${errors[i]!.toExponential(2)}  (${SOLAR_SYSTEM_FLOOR[p].toExponential(1)})`;
   });
 }
 
@@ -495,38 +1341,56 @@ function setRate(days: number): void {
   panel.refresh();
 }
 
-function setTrails(on: boolean): void {
-  params.trails = on;
-  renderer.setTrails(on ? TRAILS : false);
-  panel.refresh();
-}
-
+const MISSION_CHOICES = MISSIONS.map((_, i) => String(i + 1));
 const panel = createPanel(
   params,
   [
-    { type: 'slider', key: 'rate', label: 'rate (days/s)', min: 0, max: 400, step: 0.5 },
-    { type: 'choice', key: 'step', label: 'step (hours)', options: STEPS, onChange: () => shell.reset() },
-    { type: 'choice', key: 'integrator', label: 'integrator', options: INTEGRATOR_NAMES, onChange: () => shell.reset() },
+    {
+      type: 'choice',
+      key: 'mission',
+      label: 'mission',
+      options: Object.fromEntries(MISSIONS.map((m, i) => [`${i + 1}: ${m.target}`, MISSION_CHOICES[i]!])),
+      onChange: (n) => startMission(Number(n) - 1),
+    },
+    { type: 'slider', key: 'rate', label: 'time while aiming (days/s)', min: 0, max: 400, step: 0.5 },
+    {
+      type: 'choice',
+      key: 'distances',
+      label: 'distances (D)',
+      options: ['compressed', 'true'],
+      onChange: (d) => setDistances(d as 'compressed' | 'true'),
+    },
+    { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes (E)' },
+    { type: 'button', key: 'missionView', label: 'view the mission (3)' },
+    { type: 'button', key: 'inner', label: 'view the inner planets (1)' },
+    { type: 'button', key: 'all', label: 'view all eight planets (2)' },
+    { type: 'choice', key: 'step', label: 'longest step (hours)', options: STEPS, onChange: () => restartMission() },
+    { type: 'choice', key: 'integrator', label: 'integrator', options: INTEGRATOR_NAMES, onChange: () => restartMission() },
     {
       type: 'text',
       key: 'date',
       label: 'start date (UTC)',
       onChange: () => {
         try {
+          startMs = parseDate(params.date);
           shell.reset();
+          startMission(missionIndex);
         } catch (error) {
           shell.hud.showError(String((error as Error).message));
         }
       },
     },
-    { type: 'checkbox', key: 'exaggerate', label: 'exaggerated sizes', onChange: () => dress() },
-    { type: 'checkbox', key: 'trails', label: 'trails', onChange: (x) => setTrails(x === true) },
-    { type: 'button', key: 'inner', label: 'inner planets (1)' },
-    { type: 'button', key: 'all', label: 'all eight planets (2)' },
-    { type: 'button', key: 'reset', label: 'reset (R)' },
+    { type: 'button', key: 'reset', label: 'restart the mission (R)' },
   ],
   { title: 'Solar system' },
 );
+// R (the shell's reset) restarts the mission at its start date.
+shell.onWorldChange(() => {
+  planAt = -Infinity;
+  orbitsAt = -Infinity;
+});
+startMission(missionIndex);
+if (touch) pageLayout().help.dataset.touch = 'true';
 
 shell.expose({
   params,
@@ -538,19 +1402,56 @@ shell.expose({
     solarSystemErrors(shell.world, handles, errors);
     return Object.fromEntries(SOLAR_SYSTEM_PLANETS.map((p, i) => [p, errors[i]!]));
   },
-  /** Sets the rate, simulated days per real second, clamped to [0, 400]. */
+  /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
   /** Orbit lines drawn (one a planet). */
-  orbitCount: (): number => orbitLines.children.length,
+  orbitCount: (): number => orbitsDrawn,
   /** Labels the last frame showed (overlapping ones hidden). */
   shownLabels: (): number => shownLabels,
+  /**
+   * What the last frame showed of each body and the probe, by name: its place on the canvas (px),
+   * its drawn radius (px), whether its dot shows and whether it is on screen.
+   */
+  markers: (): Record<string, { x: number; y: number; radius: number; dot: boolean; visible: boolean }> =>
+    Object.fromEntries(
+      LABELS.map((name, i) => [
+        name,
+        {
+          x: onScreen[4 * i]!,
+          y: onScreen[4 * i + 1]!,
+          radius: onScreen[4 * i + 2]!,
+          dot: dots[name].el.style.display !== 'none',
+          visible: onScreen[4 * i + 3] === 1,
+        },
+      ]),
+    ),
   /** The planets whose centre the camera sees now (projected inside the canvas). */
-  planetsInView: (): string[] => {
-    const k = UNITS_PER_AU;
-    return SOLAR_SYSTEM_PLANETS.filter((name) => {
-      if (!renderer.drawnPosition(handles.bodies[name], p3)) return false;
-      v.set(p3[0]! * k, p3[1]! * k, p3[2]! * k).project(app.camera);
+  planetsInView: (): string[] =>
+    SOLAR_SYSTEM_PLANETS.filter((name) => {
+      const i = SOLAR_SYSTEM_BODIES.indexOf(name);
+      v.set(shown[3 * i]!, shown[3 * i + 1]!, shown[3 * i + 2]!).project(app.camera);
       return v.z < 1 && Math.abs(v.x) <= 1 && Math.abs(v.y) <= 1;
-    });
+    }),
+  /** The mission state: its number (1-based), target, phase, the aim, the plan and the flight. */
+  mission: () => ({
+    number: missionIndex + 1,
+    target: mission().target,
+    phase,
+    aim: { ...aim },
+    plan: { hit: plan.hit, time: plan.time, distance: plan.distance, sun: plan.sun },
+    flight: flight ? { state: flight.state, elapsed: flight.elapsed, closest: flight.closest } : null,
+    stars: [...best],
+    trueScale,
+  }),
+  /** Sets the aim (degrees, km/s) as the keys would. */
+  setAim: (angle: number, speed: number): void => {
+    if (phase !== 'aim') return;
+    aim.angle = angle;
+    aim.speed = speed;
+    planAt = -Infinity;
   },
+  /** Launches (Space), starts a mission (0-based), goes on after a flight (Enter). */
+  launch,
+  startMission,
+  advance,
 });

@@ -298,6 +298,24 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it('solar system: + raises the launch speed, Launch sends the probe off, Abort brings it back to the launch', async () => {
+    const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0 } });
+    type Solar = { mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number } | null } };
+    const speed = await read(g, 'mission().aim.speed');
+    await g.page.getByRole('button', { name: 'faster launch (↑)', exact: true }).tap();
+    await g.waitFor((s) => (window.game as unknown as Solar).mission().aim.speed > s, speed);
+    await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
+    await g.waitFor(() => {
+      const m = (window.game as unknown as Solar).mission();
+      return m.phase === 'flight' && m.flight!.elapsed > 1;
+    }, null);
+    await g.page.getByRole('button', { name: 'abort the flight: back to the launch', exact: true }).tap();
+    await g.waitFor(() => (window.game as unknown as Solar).mission().phase === 'aim', null);
+    expect(await read(g, 'mission().aim.speed')).toBeGreaterThan(speed);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('catapult: the catapult and the castle both in view; a drag from anywhere throws; the next-level (or try-again) button goes on when the level is over', async () => {
     const g = await h.openGame('catapult', PHONE);
     await g.waitFor(() => (window.game as unknown as { cameraSettled(): boolean }).cameraSettled(), null);

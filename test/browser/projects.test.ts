@@ -1,7 +1,8 @@
 /**
  * The book's simulation projects in headless Chromium: input changes each game (the solar system's
- * rate key speeds up its clock and its error table reads the ephemeris; the submarine's keys drive
- * the screw and flood the tanks; the flight simulator's keys open the throttle and pull the nose up).
+ * keys aim and launch the probe, its rate key speeds up its clock and its error table reads the
+ * ephemeris; the submarine's keys drive the screw and flood the tanks; the flight simulator's keys
+ * open the throttle and pull the nose up).
  */
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -23,53 +24,91 @@ describe('projects', () => {
     await h?.close();
   });
 
-  it('solar-system: ] raises the rate; the error table starts at the ephemeris', async () => {
-    const g = await h.openGame('solar-system');
-    const before = await g.page.evaluate(() => (window.game as unknown as { params: { rate: number } }).params.rate);
+  it('solar-system: the keys turn and speed up the launch, Space launches the probe; ] raises the rate; the error table starts at the ephemeris', async () => {
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
+    type Mission = {
+      number: number;
+      target: string;
+      phase: string;
+      aim: { angle: number; speed: number };
+      plan: { hit: boolean };
+      flight: { state: string; elapsed: number } | null;
+    };
+    type Solar = { mission(): Mission; params: { rate: number } };
+    const m0 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
+    expect([m0.number, m0.target, m0.phase]).toEqual([1, 'Mars', 'aim']);
+    // The first mission starts on a course that arrives, and the goal is stated above the scene.
+    expect(m0.plan.hit).toBe(true);
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toBe('Mission 1 of 7: fly a probe to Mars');
+    expect(await g.page.locator('[data-hud="plan"]').textContent()).toMatch(/✓ reaches Mars in \d+ days/);
+    for (let i = 0; i < 3; i++) await g.press('ArrowUp');
+    await g.press('ArrowRight');
+    const m1 = await g.page.evaluate(() => (window.game as unknown as Solar).mission());
+    expect(m1.aim.speed).toBeCloseTo(m0.aim.speed + 0.3, 9);
+    expect(m1.aim.angle).toBeCloseTo(m0.aim.angle + 2, 9);
+    const before = await g.page.evaluate(() => (window.game as unknown as Solar).params.rate);
     await g.press(']');
-    const after = await g.page.evaluate(() => (window.game as unknown as { params: { rate: number } }).params.rate);
-    expect(after).toBeGreaterThan(before);
+    expect(await g.page.evaluate(() => (window.game as unknown as Solar).params.rate)).toBeGreaterThan(before);
     const errors = await g.page.evaluate(() => (window.game as unknown as { errors(): Record<string, number> }).errors());
     // A few simulated days in: every planet still within 1e-3 of the ephemeris (the one-year floor is 2.9e-3 for Mercury).
     for (const e of Object.values(errors)) expect(e).toBeLessThan(1e-3);
+    // The comparison is there, folded.
+    expect(await g.page.locator('details[data-hud="ephemeris"]').getAttribute('open')).toBeNull();
+    await g.press('Space');
+    const flying = await g.waitFor(() => {
+      const m = (window.game as unknown as Solar).mission();
+      return m.phase === 'flight' && m.flight!.elapsed > 5 ? m : null;
+    }, null);
+    expect(flying.flight!.state).toBe('flying');
     expect(g.errors).toEqual([]);
     await g.close();
   });
 
-  it('solar-system: all eight planets in view at start with their orbits; 1 frames the inner four; labels never overlap', async () => {
-    const g = await h.openGame('solar-system');
+  it('solar-system: orbit lines; 2 frames all eight planets, 1 the inner four; labels by their dots never overlap', async () => {
+    const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
     type Solar = { orbitCount(): number; planetsInView(): string[]; shownLabels(): number };
     expect(await g.page.evaluate(() => (window.game as unknown as Solar).orbitCount())).toBe(8);
-    // At the start only Mercury to Mars were on screen; now Neptune's orbit fits.
-    expect(await g.page.evaluate(() => (window.game as unknown as Solar).planetsInView().length)).toBe(8);
-    // Every planet shows as a dot at least 6 px wide (the exaggerated spheres are under a pixel at
-    // this scale), and every name shows with no two labels' boxes intersecting.
-    const dots = await g.page.evaluate(() =>
-      [...document.querySelectorAll<HTMLElement>('[data-dot]')].filter((el) => el.style.display !== 'none').map((el) => el.dataset.dot),
-    );
-    expect(dots.length).toBe(9);
-    const overlaps = await g.page.evaluate(() => {
-      const boxes = [...document.querySelectorAll<HTMLElement>('[data-label]')]
-        .filter((el) => el.style.display !== 'none')
-        .map((el) => el.getBoundingClientRect());
-      let n = 0;
+    await g.press('2');
+    await g.waitFor(() => (window.game as unknown as Solar).planetsInView().length === 8, null);
+    // Every body shows as a dot at least 6 px wide or is drawn at least 3 px in radius (the exaggerated
+    // spheres of the small planets are a pixel or two at this scale), and every name shows beside its
+    // body, no two labels' boxes intersecting.
+    await g.frames(2);
+    type Marker = { x: number; y: number; radius: number; dot: boolean; visible: boolean };
+    const report = await g.page.evaluate(() => {
+      const markers = (window.game as unknown as { markers(): Record<string, Marker> }).markers();
+      const labels = [...document.querySelectorAll<HTMLElement>('[data-label]')].filter((el) => el.style.display !== 'none');
+      const boxes = labels.map((el) => el.getBoundingClientRect());
+      let overlaps = 0;
       for (let i = 0; i < boxes.length; i++)
         for (let j = i + 1; j < boxes.length; j++) {
           const a = boxes[i]!,
             b = boxes[j]!;
-          if (a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom) n++;
+          if (a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom) overlaps++;
         }
-      return { n, shown: boxes.length };
+      // How far each name's box is from its body's rim, px.
+      const stage = document.querySelector('.bp-stage')!.getBoundingClientRect();
+      let farthest = 0;
+      for (const [i, el] of labels.entries()) {
+        const m = markers[el.dataset.label!]!,
+          b = boxes[i]!;
+        const dx = Math.max(b.left - stage.left - m.x, m.x - (b.right - stage.left), 0),
+          dy = Math.max(b.top - stage.top - m.y, m.y - (b.bottom - stage.top), 0);
+        farthest = Math.max(farthest, Math.hypot(dx, dy) - m.radius);
+      }
+      const seen = Object.entries(markers).filter(([name, m]) => name !== 'probe' && m.visible && (m.dot || m.radius >= 3));
+      return { overlaps, shown: labels.length, farthest, seen: seen.length };
     });
-    expect(overlaps.n).toBe(0);
-    // Nine names fit (ten places each); a name may wait a frame while two bodies pass each other.
-    expect(overlaps.shown).toBeGreaterThanOrEqual(8);
+    expect(report.seen).toBe(9);
+    expect(report.overlaps).toBe(0);
+    // Nine names fit; a name may wait a frame while two bodies pass each other.
+    expect(report.shown).toBeGreaterThanOrEqual(8);
+    // Beside its body: the gap is a few pixels, never a row or more away.
+    expect(report.farthest).toBeLessThan(16);
     await g.press('1');
     await g.waitFor(() => !(window.game as unknown as Solar).planetsInView().includes('Neptune'), null);
     const inner = await g.page.evaluate(() => (window.game as unknown as Solar).planetsInView());
     for (const p of ['Mercury', 'Venus', 'Earth', 'Mars']) expect(inner).toContain(p);
-    await g.press('2');
-    await g.waitFor(() => (window.game as unknown as Solar).planetsInView().length === 8, null);
     expect(g.errors).toEqual([]);
     await g.close();
   });
