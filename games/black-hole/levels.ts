@@ -1,7 +1,7 @@
 /**
  * Levels for black hole, DOM-free (Node tests run them): a first level a newcomer wins, then holes
  * across the straight path up (the player must steer), more and bigger holes, holes that drift, and
- * a fuel limit. The ship waits at the start until the player thrusts. The page (main.ts) shows the level, the fuel, an
+ * a fuel limit. Each cleared level gives a lost life back (up to the starting three). The ship waits at the start until the player thrusts. The page (main.ts) shows the level, the fuel, an
  * end-of-level summary and the best score.
  *
  * A level is a `LevelSpec` (`levelSpec(n)`); `startLevel` lays its holes out in a game made by
@@ -52,9 +52,9 @@ export interface LevelSpec {
  * The spec of level `level`, one new difficulty at a time: level 1 one small hole across the
  * straight path up (holding thrust up falls in; a nudge sideways passes it); level 2 a second hole
  * off that path; level 3 a third hole; level 4 two holes across the path, one above the other;
- * from level 5 the holes drift (0.6, then 0.9, 1.2 m/s); level 6 a fourth hole; from level 7 the fuel
- * is limited (16 s, then 14 s down to 5 s); from level 8 a hole more every second level (up to
- * MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
+ * level 5 a fourth hole; from level 6 the holes drift, slowly at first (0.35, then 0.6, 0.8 m/s);
+ * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
+ * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
  */
 export function levelSpec(level: number): LevelSpec {
@@ -63,28 +63,30 @@ export function levelSpec(level: number): LevelSpec {
     Object.freeze({ level, holes, radius: Object.freeze(radius) as readonly [number, number], corridor, blockers, drift, fuel });
   switch (level) {
     case 1:
-      return spec(1, [0.45, 0.6], 9, 1, 0, Infinity);
+      return spec(1, [0.55, 0.7], 9, 1, 0, Infinity);
     case 2:
-      return spec(2, [0.5, 0.8], 6, 1, 0, Infinity);
+      return spec(2, [0.55, 0.9], 6, 1, 0, Infinity);
     case 3:
-      return spec(3, [0.5, 1.0], 3, 1, 0, Infinity);
+      return spec(3, [0.55, 1.0], 3, 1, 0, Infinity);
     case 4:
-      return spec(3, [0.5, 1.1], 0, 2, 0, Infinity);
+      return spec(3, [0.6, 1.1], 0, 2, 0, Infinity);
     case 5:
-      return spec(3, [0.6, 1.2], 0, 2, 0.6, Infinity);
+      return spec(4, [0.6, 1.1], 0, 2, 0, Infinity);
     case 6:
-      return spec(4, [0.6, 1.3], 0, 2, 0.9, Infinity);
+      return spec(4, [0.6, 1.2], 0, 2, 0.35, Infinity);
     case 7:
-      return spec(4, [0.6, 1.3], 0, 2, 1.2, 16);
+      return spec(4, [0.6, 1.2], 0, 2, 0.6, Infinity);
+    case 8:
+      return spec(4, [0.6, 1.3], 0, 2, 0.8, 18);
     default: {
-      const k = level - 8;
+      const k = level - 9;
       return spec(
         Math.min(MAX_HOLES, 5 + Math.floor(k / 2)),
-        [0.6, Math.min(2, 1.4 + 0.08 * k)],
+        [0.6, Math.min(2, 1.35 + 0.07 * k)],
         0,
         2,
-        Math.min(3, 1.4 + 0.2 * k),
-        Math.max(5, 14 - k),
+        Math.min(3, 1 + 0.2 * k),
+        Math.max(5, 15 - k),
       );
     }
   }
@@ -98,7 +100,7 @@ export interface LevelSummary {
   readonly time: number;
   /** Time from the level's start to the line, failed attempts included, s. */
   readonly totalTime: number;
-  /** Lives left. */
+  /** Lives after the clear (a cleared level gives one back, up to the starting lives). */
   readonly lives: number;
   /** Points it scored (one per hole). */
   readonly points: number;
@@ -282,7 +284,8 @@ function driftHoles(game: BlackHoleGame, run: LevelRun, dt: number): void {
  * One step of a level: nothing while waiting; else the holes drift, the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
  * ship (see `LevelRun.parked`) is put back at the start at rest. A crossing of
- * the line becomes 'cleared': the summary is kept, the next level is laid out and the run waits.
+ * the line becomes 'cleared': a lost life comes back, the summary is kept, the next level is laid out
+ * and the run waits.
  * @returns the game's event, with 'scored' reported as 'cleared', or 'waiting'.
  */
 export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 'cleared' | 'waiting' {
@@ -308,6 +311,9 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     setVelocity(game.world, game.ship, REST);
   }
   if (event !== 'scored') return event;
+  // A life back for every level cleared, up to the game's starting lives.
+  const bonus = game.lives < game.params.lives;
+  if (bonus) game.lives++;
   run.summary = Object.freeze({
     level: run.spec.level,
     time: time - run.attemptStart,
@@ -325,7 +331,9 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   game.message =
     `Level ${s.level} cleared in ${s.time.toFixed(1)} s` +
     (s.falls > 0 ? ` (${s.totalTime.toFixed(1)} s in all, ${s.falls} ${s.falls === 1 ? 'fall' : 'falls'})` : '') +
-    ` with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. ` +
+    (bonus
+      ? `: a life back, ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} now. `
+      : ` with ${s.lives} ${s.lives === 1 ? 'life' : 'lives'} left. `) +
     `Tap here or press Enter for level ${run.spec.level}.`;
   return 'cleared';
 }
