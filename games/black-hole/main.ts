@@ -20,7 +20,17 @@
  * (rules.ts `predictPath`) and drawn as fading dots.
  */
 
-import { createButtonBar, createPanel, flagParam, getSound, isTouchDevice, numberParam, pageLayout, seedParam } from '@bitphysics/game-kit';
+import {
+  createActionButton,
+  createButtonBar,
+  createPanel,
+  flagParam,
+  getSound,
+  isTouchDevice,
+  numberParam,
+  pageLayout,
+  seedParam,
+} from '@bitphysics/game-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
@@ -41,7 +51,7 @@ import {
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
 const levels = !search.has('holes');
-const firstLevel = numberParam('level', { default: 1, min: 1, max: 99, integer: true });
+
 const BEST_KEY = 'bitphysics.black-hole.best';
 
 /** The best score kept in local storage (0 when none, or storage is unavailable). */
@@ -86,6 +96,8 @@ function recordScore(score: number): void {
 }
 const params = {
   holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),
+  /** The level a new game starts at (levels only). */
+  level: numberParam('level', { default: 1, min: 1, max: 99, integer: true }),
   seed: seedParam(),
   gScale: 1,
   c: numberParam('c', { default: C_GAME, min: 2, max: 50 }),
@@ -104,10 +116,18 @@ const path = new Float64Array(2 * (PATH_STEPS + 1));
 let pathPoints = 0;
 
 /**
- * The field: the default 32 x 24 m on a wide screen; on a phone held upright a tall 20 x 30 m one,
- * which fills the screen (the wide field was a band across its middle).
+ * The field for the stage's shape: on a wide screen 32 m across and as tall as the stage allows
+ * within 24 to 30 m, so the field fills it; on a phone held upright a tall 20 x 30 m one (the wide
+ * field was a band across its middle).
  */
-const PLAY_FIELD = window.innerHeight > 1.2 * window.innerWidth ? { width: 20, height: 30 } : FIELD;
+function fieldForStage(): { width: number; height: number } {
+  const stage = pageLayout().stage;
+  const w = stage.clientWidth || window.innerWidth,
+    h = stage.clientHeight || window.innerHeight;
+  if (h > 1.2 * w) return { width: 20, height: 30 };
+  return { width: FIELD.width, height: Math.min(30, Math.max(FIELD.height, Math.round((2 * FIELD.width * h) / w) / 2)) };
+}
+let playField = fieldForStage();
 
 function createWorld(): PhysicsWorld {
   bh = createBlackHoleGame({
@@ -116,9 +136,9 @@ function createWorld(): PhysicsWorld {
     gScale: params.gScale,
     c: params.c,
     thrust: params.thrust,
-    field: PLAY_FIELD,
+    field: playField,
   });
-  run = levels ? startLevel(bh, firstLevel) : null;
+  run = levels ? startLevel(bh, params.level) : null;
   predictor = createPredictor(bh);
   replay = createBlackHoleReplay(bh, run, onGameStep);
   return bh.world;
@@ -141,7 +161,7 @@ const game = await startPixiGame({
   },
   controls: [
     { keys: '← ↑ → ↓', action: 'thrust (one at a time)', touch: 'hold ← ↑ → ↓' },
-    { keys: 'Enter', action: 'next level / play again', touch: 'tap the message' },
+    { keys: 'Enter', action: 'next level / play again', touch: 'the big button' },
     { keys: 'F', action: 'predicted path on / off' },
     { keys: 'V', action: 'replay the run from the start' },
   ],
@@ -166,7 +186,7 @@ const game = await startPixiGame({
     },
   ],
   renderer: {
-    view: { minX: 0, minY: 0, maxX: PLAY_FIELD.width, maxY: PLAY_FIELD.height },
+    view: { minX: 0, minY: 0, maxX: playField.width, maxY: playField.height },
     padding: 8,
     particles: { blend: 'add', minPixelSize: 1.5 },
   },
@@ -182,18 +202,33 @@ shell.onWorldChange(() => {
 const panel = createPanel(
   params,
   [
-    {
-      type: 'slider',
-      key: 'holes',
-      label: 'holes (new layout)',
-      min: 1,
-      max: MAX_HOLES,
-      step: 1,
-      onChange: (n) => {
-        params.holes = Math.round(n);
-        replay.input('holes', params.holes);
-      },
-    },
+    // Levels lay out their own holes; the classic game (?holes=N) takes its count from the panel.
+    levels
+      ? {
+          type: 'slider',
+          key: 'level',
+          label: 'start at level (restarts)',
+          min: 1,
+          max: 20,
+          step: 1,
+          onRelease: true,
+          onChange: (n) => {
+            params.level = Math.round(n);
+            game.shell.reset();
+          },
+        }
+      : {
+          type: 'slider',
+          key: 'holes',
+          label: 'holes (new layout)',
+          min: 1,
+          max: MAX_HOLES,
+          step: 1,
+          onChange: (n) => {
+            params.holes = Math.round(n);
+            replay.input('holes', params.holes);
+          },
+        },
     {
       type: 'slider',
       key: 'gScale',
@@ -273,6 +308,7 @@ style.textContent = `
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
+@media (pointer: coarse) { .bh-pad button { min-width: 70px; min-height: 56px; } }
 `;
 document.head.append(style);
 const DIRS = ['left', 'up', 'down', 'right'] as const;
@@ -307,13 +343,16 @@ message.dataset.hud = 'message';
 status.append(numbers, message);
 pageLayout().status.append(status);
 message.addEventListener('click', () => advance());
+/** The big next-level / play-again button over the scene. */
+const setAction = createActionButton('Level 2 ▶', () => advance());
+let shownAction = '';
 let shownNumbers = '',
   shownMessage = '',
   shownThrust: Thrust | '' = '';
 
 function updateStatus(force = false): void {
-  // The panel's hole count follows the field: a level lays out its own number of holes.
-  if (params.holes !== bh.holes.length && bh.holes.length > 0) {
+  // The classic game's hole count follows the field (a crossing adds a hole).
+  if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
     params.holes = bh.holes.length;
     panel.refresh();
   }
@@ -336,6 +375,12 @@ function updateStatus(force = false): void {
   }
   status.classList.toggle('over', bh.over);
   status.classList.toggle('cleared', !bh.over && (run?.waiting ?? false));
+  // A big button over the scene says what comes next: the next level, or a new game.
+  const next = bh.over ? 'Play again ↺' : run?.waiting ? `Level ${run.spec.level} ▶` : '';
+  if (next !== shownAction) {
+    shownAction = next;
+    setAction(next !== '', next || undefined);
+  }
   if (force || bh.thrust !== shownThrust) {
     shownThrust = bh.thrust;
     for (const [i, dir] of DIRS.entries()) pad.setActive(i, dir === bh.thrust);
@@ -385,10 +430,11 @@ const holesLayer = new Graphics({ label: 'holes' });
 const overlay = new Graphics({ label: 'ship-and-path' });
 app.stage.addChild(holeGlowLayer, holesLayer, overlay);
 let backdropVersion = -1;
+/** Stars: x, y as fractions of the canvas, alpha (fixed, seeded); those inside the field are brighter. */
 const stars = (() => {
   const rng = new Rng(7);
   const out: [number, number, number][] = [];
-  for (let i = 0; i < 220; i++) out.push([rng.range(0, PLAY_FIELD.width), rng.range(0, PLAY_FIELD.height), rng.range(0.2, 0.8)]);
+  for (let i = 0; i < 320; i++) out.push([rng.range(0, 1), rng.range(0, 1), rng.range(0.2, 0.8)]);
   return out;
 })();
 
@@ -397,8 +443,20 @@ function drawBackdrop(): void {
   if (cam.version === backdropVersion) return;
   backdropVersion = cam.version;
   backdrop.clear();
-  const W = PLAY_FIELD.width,
-    H = PLAY_FIELD.height;
+  const W = playField.width,
+    H = playField.height;
+  // Space beyond the field (dimmer), then the field.
+  backdrop.rect(0, 0, cam.width, cam.height).fill(0x03050c);
+  const fx0 = cam.toScreenX(0),
+    fx1 = cam.toScreenX(W),
+    fy0 = cam.toScreenY(H),
+    fy1 = cam.toScreenY(0);
+  for (const [sx, sy, a] of stars) {
+    const px = sx * cam.width,
+      py = sy * cam.height;
+    const inside = px > fx0 && px < fx1 && py > fy0 && py < fy1;
+    if (!inside) backdrop.circle(px, py, 0.8).fill({ color: 0xc8d4ff, alpha: 0.35 * a });
+  }
   backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0x070a16);
   nebulaMask.clear().rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).fill(0xffffff);
   for (let i = 0; i < NEBULAE.length; i++) {
@@ -407,7 +465,11 @@ function drawBackdrop(): void {
     sprite.position.set(cam.toScreenX(fx * W), cam.toScreenY(fy * H));
     sprite.width = sprite.height = cam.toScreenLength(size);
   }
-  for (const [x, y, a] of stars) backdrop.circle(cam.toScreenX(x), cam.toScreenY(y), 0.9).fill({ color: 0xffffff, alpha: a });
+  for (const [sx, sy, a] of stars) {
+    const px = sx * cam.width,
+      py = sy * cam.height;
+    if (px > fx0 && px < fx1 && py > fy0 && py < fy1) backdrop.circle(px, py, 0.9).fill({ color: 0xffffff, alpha: a });
+  }
   // The field's edge, plain to see: leaving the field puts the ship back at the start.
   backdrop.rect(cam.toScreenX(0), cam.toScreenY(H), cam.toScreenLength(W), cam.toScreenLength(H)).stroke({ width: 3, color: 0x6a83b8 });
   // The finish line, dashed.
@@ -523,8 +585,8 @@ app.stage.addChild(edgeText);
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */
 function drawEdgeWarning(x: number, y: number): void {
   const cam = renderer.camera;
-  const W = PLAY_FIELD.width,
-    H = PLAY_FIELD.height;
+  const W = playField.width,
+    H = playField.height;
   const near = !bh.over && !run?.waiting ? Math.min(x, W - x, (y * EDGE_WARN) / BOTTOM_WARN) : Infinity;
   edgeText.visible = near < EDGE_WARN;
   if (!edgeText.visible) return;
@@ -674,3 +736,15 @@ Object.defineProperty(shell, 'stateHash', { value: (): string => stateHash(bh.wo
 /** Enter: the next level after a clear, a new game after the last life. */
 Object.defineProperty(shell, 'advance', { value: advance, enumerable: true });
 updateStatus(true);
+
+// The first world was made before the status and the pad took their rows: make it again for the
+// stage's final shape, and frame it.
+{
+  const wanted = fieldForStage();
+  if (wanted.width !== playField.width || wanted.height !== playField.height) {
+    playField = wanted;
+    shell.reset();
+    renderer.camera.fit({ minX: 0, minY: 0, maxX: playField.width, maxY: playField.height });
+    backdropVersion = -1;
+  }
+}
