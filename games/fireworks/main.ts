@@ -4,9 +4,10 @@
  * and in salvos), and click (or tap) to launch a shell from the ground towards the pointer; it bursts
  * there about 2 s later (show.ts FUSE) into stars as its recipe says (./recipes.ts), which fall under
  * gravity with quadratic drag and fade over their lifetime. Hold the button longer for a bigger
- * burst (up to three times the stars, 1.7 times the radius, at 1.5 s). A player's launch (click, tap,
+ * burst (up to three times the stars, 1.44 times the radius, at 1.5 s). A player's launch (click, tap,
  * Space, the panel's button) holds the auto-show for 8 s (show.ts PLAYER_PAUSE), so the player's
- * shells are the only new ones in the sky. Random colours, additive blending, star trails.
+ * shells are the only new ones in the sky; a ring marks where each of them will burst. Random
+ * colours, additive blending, star trails.
  *
  * Keys: P pause, N single step, R reset, A auto-show on / off, T trails on / off, Space random shell.
  * URL: ?sparks=N (per normal burst, 10..10000), ?generations=1|2|3 (the crackle recipe), ?auto=0|1
@@ -38,10 +39,13 @@ import {
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
 import { RECIPE_NAMES, type RecipeName } from './recipes';
 import {
+  BURST_SPEED,
   buildFireworks,
   burstScale,
+  burstSize,
   type FireworksShow,
   FLASHES,
+  FUSE,
   fireworksWorldOptions,
   launchShell,
   MAX_HOLD,
@@ -80,7 +84,7 @@ const params = {
 };
 
 /** Streaks behind the stars: long and bright enough to read as trails on a phone too. */
-const TRAILS = { duration: 0.14, width: 0.6, alpha: 0.75 };
+const TRAILS = { duration: 0.13, width: 0.55, alpha: 0.7 };
 /** How long a burst's flash lasts, s. */
 const FLASH_SECONDS = 0.25;
 /** Bursts whose flash the last frame drew. */
@@ -338,6 +342,14 @@ function drawSkyAndGround(): void {
     .fill(0x020306);
 }
 
+/**
+ * The charging ring's radius over the burst's fastest star speed, s: the ring is BURST_SPEED x reach x
+ * burstSize x this, 11.2 m for a click in a phone's sky, about how far a peony's fastest stars get in
+ * their first second (x(t) = ln(1 + k v0 t / m) m / k: 11.8 m at 16 m/s under the default drag).
+ */
+const PREVIEW_SECONDS = 0.7;
+/** The player's shells in flight: entity handle and target (m), for the marker where each will burst. */
+const targets: { id: number; x: number; y: number }[] = [];
 let pointerId = -1;
 let pressedAt = 0;
 let pointerX = 0,
@@ -373,7 +385,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const x = O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
       y = O.y[e]! + (P.y[e]! - O.y[e]!) * alpha;
     overlay
-      .circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * Math.sqrt(show.shellScale[i]!))))
+      .circle(cam.toScreenX(x), cam.toScreenY(y), Math.max(1.5, cam.toScreenLength(0.35 * burstSize(show.shellScale[i]!))))
       .fill({ color: 0xfff3d0 });
   }
   // The flash of a burst: a glow, white at its core and warm at its rim, at the shell's last place that fades in
@@ -389,21 +401,37 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const fade = 1 - age / FLASH_SECONDS,
       x = cam.toScreenX(show.flashes[f]!),
       y = cam.toScreenY(show.flashes[f + 1]!),
-      r = cam.toScreenLength(1.6 * show.reach * Math.sqrt(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
+      r = cam.toScreenLength(1.6 * show.reach * burstSize(show.flashes[f + 3]!)) * (0.6 + 0.8 * (1 - fade));
     const sprite = flashSprites[k % FLASHES]!;
     sprite.visible = true;
     sprite.position.set(x, y);
     sprite.width = sprite.height = 5 * r;
     sprite.alpha = fade;
   }
-  // Charging ring: its radius grows with the burst the hold would make.
+  // Charging: a faint ring about as large as the burst the hold would make (it grows while held), and
+  // a bright inner ring that fills up to the longest hold.
   if (pointerId !== -1) {
     const hold = (performance.now() - pressedAt) / 1000;
     const s = burstScale(hold);
-    const r = cam.toScreenLength(2.5 * show.reach * Math.sqrt(s));
-    overlay.circle(pointerX, pointerY, r).stroke({ width: 2, color: 0xffe8a0, alpha: 0.35 + 0.25 * (s - 1) });
-    overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.8 });
+    const r = cam.toScreenLength(PREVIEW_SECONDS * BURST_SPEED * show.reach * burstSize(s));
+    overlay.circle(pointerX, pointerY, r).stroke({ width: 1.5, color: 0xffe8a0, alpha: 0.2 + 0.08 * (s - 1) });
+    overlay.circle(pointerX, pointerY, 6 + 10 * ((s - 1) / 2)).stroke({ width: 2.5, color: 0xffe8a0, alpha: 0.9 });
+    overlay.circle(pointerX, pointerY, 3).fill({ color: 0xffe8a0, alpha: 0.9 });
   }
+  // Where each of the player's shells will burst: a ring that closes in as its fuse burns down.
+  let k = 0;
+  for (const m of targets) {
+    let burstAt = -1;
+    for (let i = 0; i < show.shellCount; i++) if (show.shellIds[i] === m.id) burstAt = show.shellBurstTime[i]!;
+    if (burstAt < 0) continue;
+    targets[k++] = m;
+    const left = Math.max(0, Math.min(1, (burstAt - world.time) / FUSE));
+    const x = cam.toScreenX(m.x),
+      y = cam.toScreenY(m.y);
+    overlay.circle(x, y, 5 + 16 * left).stroke({ width: 2, color: 0xffe8a0, alpha: 0.35 + 0.4 * (1 - left) });
+    overlay.circle(x, y, 2).fill({ color: 0xffe8a0, alpha: 0.8 });
+  }
+  targets.length = k;
   const n = layer.stats.particles;
   if (n !== sparkShown) {
     sparkShown = n;
@@ -436,7 +464,14 @@ canvas.addEventListener('pointerup', (event) => {
   const hold = Math.max(0, (performance.now() - pressedAt) / 1000);
   const cam = renderer.camera;
   pauseAutoShow(show);
-  launchShell(shell.world, show, cam.toWorldX(pointerX), cam.toWorldY(pointerY), hold, nextRecipe());
+  const x = cam.toWorldX(pointerX),
+    y = cam.toWorldY(pointerY);
+  const id = launchShell(shell.world, show, x, y, hold, nextRecipe());
+  if (id !== 0) {
+    // The marker sits where the shell will burst (launchShell clamps the target into the sky the same way).
+    const sky = show.params.sky;
+    targets.push({ id, x: Math.min(sky.width - 4, Math.max(4, x)), y: Math.min(sky.height - 3, Math.max(12, y)) });
+  }
 });
 canvas.addEventListener('pointercancel', (event) => {
   if (event.pointerId === pointerId) pointerId = -1;
@@ -461,6 +496,8 @@ shell.expose({
   stateHash: (): string => stateHash(shell.world),
   /** Bursts whose flash the last frame drew (younger than FLASH_SECONDS). */
   flashing: (): number => flashing,
+  /** Markers drawn where the player's shells in flight will burst: their targets, m. */
+  targetMarkers: (): { x: number; y: number }[] => targets.map((m) => ({ x: m.x, y: m.y })),
   /** Turns the auto-show on or off. */
   setAutoShow: (on: boolean): void => setAuto(on),
 });

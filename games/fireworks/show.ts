@@ -16,8 +16,8 @@
  * - A burst spawns `sparks x burstScale(hold)` sparks of one random colour at the shell's position,
  *   passing on its velocity. Its size follows the sky (`reach`: sky width / BURST_REFERENCE_WIDTH,
  *   so a burst covers the same fraction of a wide desktop sky as of a phone's) and the hold
- *   (sqrt(burstScale): the area grows with the spark count, so it looks as dense): for a size
- *   factor R the stars leave R times faster under 1 / R times the drag, which makes the whole
+ *   (`burstSize`: the cube root of burstScale, so the largest burst, with 3 times the stars, is
+ *   1.44 times as wide and a little denser, and still fits the sky): for a size factor R the stars leave R times faster under 1 / R times the drag, which makes the whole
  *   drag-dominated burst R times larger (x(t) = ln(1 + k v0 t / m) m / k scales with v0 at fixed
  *   k v0). Sparks fall under gravity with quadratic drag F = -k |v| v (mass 1 g; terminal speed
  *   sqrt(m g / k), 14 m/s at the default k), and fade and shrink over their lifetime (the look over
@@ -300,13 +300,23 @@ export function fireworksWorldOptions(options: FireworksOptions = {}): PhysicsWo
 
 /**
  * How much bigger a burst is for a button held `holdSeconds`: 1 for a click, rising linearly to 3 at
- * `MAX_HOLD` (1.5 s) and staying there. The burst has burstScale x `sparks` sparks launched at
- * sqrt(burstScale) x the normal speed.
+ * `MAX_HOLD` (1.5 s) and staying there. The burst has burstScale x `sparks` sparks and is
+ * `burstSize(burstScale)` times as large.
  * @throws RangeError if holdSeconds is negative or not finite.
  */
 export function burstScale(holdSeconds: number): number {
   check(Number.isFinite(holdSeconds) && holdSeconds >= 0, `burstScale: holdSeconds must be a finite number >= 0, got ${holdSeconds}`);
   return 1 + 2 * Math.min(1, holdSeconds / MAX_HOLD);
+}
+
+/**
+ * The size factor of a burst of scale `scale` (>= 1, from `burstScale`): scale^(1/3), 1 for a click
+ * and 1.44 at the longest hold. Its stars leave this many times faster under 1 / this times the drag
+ * (see the file's header). @throws RangeError unless scale is finite and >= 1.
+ */
+export function burstSize(scale: number): number {
+  check(Number.isFinite(scale) && scale >= 1, `burstSize: scale must be a finite number >= 1, got ${scale}`);
+  return Math.cbrt(scale);
 }
 
 /** Mixes two 0xRRGGBB colours per channel: a (f = 0) to b (f = 1). */
@@ -383,8 +393,8 @@ export function buildFireworks(world: PhysicsWorld, options: FireworksOptions = 
         quadraticDrag: p.drag,
         colorStart: color,
         colorEnd: shade(color, 0.55),
-        sizeStart: 1.3,
-        sizeEnd: 0.35,
+        sizeStart: RECIPES.crackle.size[0],
+        sizeEnd: RECIPES.crackle.size[1],
         alphaStart: 1,
         alphaEnd: 0,
       },
@@ -654,7 +664,7 @@ const burstPos = [0, 0],
 
 /**
  * Bursts every shell whose fuse has burnt: `sparks x scale` sparks of its colour at its position,
- * passing on its velocity, launched at R = reach x sqrt(scale) times the normal speeds under 1 / R
+ * passing on its velocity, launched at R = reach x burstSize(scale) times the normal speeds under 1 / R
  * times the drag (a burst R times larger, see the file's header); the shell is removed and its
  * room given back to a placeholder. At most BURST_SPARKS_PER_STEP sparks are spawned a step; the
  * rest of a big burst follows in the next steps. Called by `stepFireworks` after each step.
@@ -672,7 +682,7 @@ export function burstShells(world: PhysicsWorld, show: FireworksShow): void {
       const recipe: ShellRecipe = RECIPES[RECIPE_NAMES[show.shellRecipe[i]!]!];
       const colorIndex = show.shellColor[i]!;
       const crackle = recipe.name === 'crackle';
-      const s = show.reach * Math.sqrt(scale);
+      const s = show.reach * burstSize(scale);
       Q[o] = c.Position.x[slotOf(e)]!;
       Q[o + 1] = c.Position.y[slotOf(e)]!;
       Q[o + 2] = c.Velocity.x[slotOf(e)]!;

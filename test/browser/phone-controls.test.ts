@@ -422,6 +422,18 @@ describe('phone controls', () => {
     // About 2 s after the tap (the drag-free flight to the apex used to take 3 to 5 s).
     expect(fuse).toBeGreaterThan(1.6);
     expect(fuse).toBeLessThan(2.4);
+    // A marker shows at once where it will burst: under the finger.
+    await g.frames(1);
+    const marker = await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        targetMarkers(): { x: number; y: number }[];
+        renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number } };
+      };
+      const m = game.targetMarkers();
+      return m.map((p) => [game.renderer.camera.toScreenX(p.x), game.renderer.camera.toScreenY(p.y)]);
+    });
+    expect(marker.length).toBe(1);
+    expect(Math.hypot(marker[0]![0]! - 200, marker[0]![1]! - 150)).toBeLessThan(2);
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = false;
     });

@@ -13,6 +13,7 @@ import {
   BURST_REFERENCE_WIDTH,
   BURST_SPARKS_PER_STEP,
   burstScale,
+  burstSize,
   CRACKLES,
   createFireworks,
   type FireworksShow,
@@ -133,7 +134,8 @@ describe('a launch', () => {
     expect(click.count).toBe(100);
     expect(half.count).toBe(200);
     expect(held.count).toBe(300);
-    expect(held.maxSpeed).toBeGreaterThan(1.5 * click.maxSpeed);
+    // Star speeds grow with burstSize (1.44 at the longest hold).
+    expect(held.maxSpeed).toBeGreaterThan(1.35 * click.maxSpeed);
   });
 
   test('a burst bigger than BURST_SPARKS_PER_STEP spawns over several steps from the same point', () => {
@@ -364,13 +366,16 @@ describe('burst size', () => {
     expect(desktop / 120 / (phone / BURST_REFERENCE_WIDTH)).toBeLessThan(1.15);
   });
 
-  test('a held burst is larger in radius, not only in count: about sqrt(3) at MAX_HOLD', () => {
+  test('a held burst is larger in radius, not only in count: about the cube root of 3 (1.44) at MAX_HOLD', () => {
+    expect(burstSize(burstScale(MAX_HOLD))).toBeCloseTo(Math.cbrt(3), 12);
     for (const width of [BURST_REFERENCE_WIDTH, 120]) {
       const ratio = radius(width, MAX_HOLD) / radius(width, 0);
-      // Before, the drag held it to about 1.35 (speeds x sqrt(3) under the same drag).
-      expect(ratio).toBeGreaterThan(1.5);
-      expect(ratio).toBeLessThan(1.9);
+      // The drag scales with the size factor, so the burst's radius follows it (1.44 at the
+      // longest hold; speeds x 1.44 under the same drag would give about 1.25).
+      expect(ratio).toBeGreaterThan(1.33);
+      expect(ratio).toBeLessThan(1.55);
     }
+    expect(() => burstSize(0.5)).toThrow(/burstSize: scale must be a finite number >= 1, got 0.5/);
   });
 });
 
