@@ -26,16 +26,7 @@
  * ?date=ISO date, ?distances=compressed|true.
  */
 
-import {
-  choiceParam,
-  createButtonBar,
-  createPanel,
-  flagParam,
-  getSound,
-  isTouchDevice,
-  numberParam,
-  pageLayout,
-} from '@bitphysics/game-kit';
+import { choiceParam, createButtonBar, createPanel, flagParam, getSound, numberParam, pageLayout } from '@bitphysics/game-kit';
 import { ORBIT_CONTROLS_RIGHT, startThreeGame } from '@bitphysics/game-kit/three';
 import {
   createPhysicsWorld,
@@ -107,7 +98,7 @@ const STEPS = ['0.25', '1', '6', '24'] as const;
 const MAX_STEPS_PER_TICK = 24;
 /** Days per real second while Wait (W) is held: the aiming rate (if faster) times 4, at least this. */
 const WAIT_RATE = 40;
-/** Real seconds a flight should take: its rate is the planned flight time over this, within [10, 400] days/s. */
+/** Real seconds a flight takes at most: its rate is the flight's deadline (the planned time and a margin) over this, within [10, 400] days/s. */
 const FLIGHT_SECONDS = 12;
 /** Mean radii, AU (IAU), for true-size drawing. */
 const RADIUS_AU: Record<SolarSystemBody, number> = {
@@ -245,7 +236,7 @@ let planClock = 0;
 let flightRate = 30;
 /** Whether Wait (W or the button) is held. */
 let waiting = false;
-/** The date a mission began, ms (R restarts it there). */
+/** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
 const STARS_KEY = 'bitphysics.solar-system.stars';
 /** Best stars of each mission (0: not flown), kept in local storage. */
@@ -314,11 +305,11 @@ function startMission(index: number): void {
   missionStartMs = handles.epoch + shell.world.time * 86_400_000;
   planAt = -Infinity;
   frameView('mission');
-  panel?.refresh();
+  panel.refresh();
   updateStatus(true);
 }
 
-/** Restarts the current mission at the date it began (R): a fresh world from the ephemeris there. */
+/** Restarts the current mission at the date it began (the panel's button): a fresh world from the ephemeris there. */
 function restartMission(): void {
   startMs = missionStartMs;
   shell.reset();
@@ -396,7 +387,6 @@ function changeSpeed(kms: number): void {
 
 // ---- The page ---------------------------------------------------------------------------------------
 
-const touch = isTouchDevice();
 const game = await startThreeGame({
   title: 'Solar system',
   createWorld,
@@ -413,7 +403,6 @@ const game = await startThreeGame({
     { keys: '1 2 3', action: 'view: inner planets / all eight / mission' },
     { keys: 'E', action: 'exaggerated sizes on / off' },
     ...ORBIT_CONTROLS_RIGHT,
-    { keys: 'Pinch', action: 'zoom and turn the view', touch: 'Pinch' },
   ],
   keys: [
     { key: 'ArrowLeft', label: 'turn left', action: () => turn(-2), repeat: true },
@@ -789,8 +778,10 @@ function frameDisc(radius: number): void {
   framedRadius = radius;
   const camera = app.camera;
   const dir = new Vector3(...VIEW_DIRECTION).normalize();
+  // Bisection between a distance too close and one far enough (a 50-degree view fits the disc
+  // within 4 radii); the far plane lies beyond both, so every rim point is in front of it.
   let lo = radius * 0.05,
-    hi = radius * 40;
+    hi = radius * 8;
   const fits = (d: number): boolean => {
     camera.position.copy(dir).multiplyScalar(d);
     camera.lookAt(0, 0, 0);
@@ -803,7 +794,7 @@ function frameDisc(radius: number): void {
     return true;
   };
   camera.near = radius / 400;
-  camera.far = 6000;
+  camera.far = Math.max(6000, 20 * radius);
   camera.updateProjectionMatrix();
   for (let i = 0; i < 40; i++) {
     const mid = (lo + hi) / 2;
@@ -1380,17 +1371,16 @@ const panel = createPanel(
         }
       },
     },
-    { type: 'button', key: 'reset', label: 'restart the mission (R)' },
+    { type: 'button', key: 'reset', label: 'restart the mission' },
   ],
   { title: 'Solar system' },
 );
-// R (the shell's reset) restarts the mission at its start date.
+// R (the shell's reset) goes back to startMs: a fresh plan and orbits.
 shell.onWorldChange(() => {
   planAt = -Infinity;
   orbitsAt = -Infinity;
 });
 startMission(missionIndex);
-if (touch) pageLayout().help.dataset.touch = 'true';
 
 shell.expose({
   params,
