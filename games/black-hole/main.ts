@@ -582,6 +582,47 @@ edgeText.anchor.set(0.5, 0);
 edgeText.visible = false;
 app.stage.addChild(edgeText);
 
+/**
+ * The level's title under the finish line while the ship waits for its first thrust of the level:
+ * "Level N" and its holes, white on a dark outline.
+ */
+const levelBanner = new Text({
+  text: '',
+  style: {
+    fill: 0xffffff,
+    fontSize: 30,
+    fontFamily: 'sans-serif',
+    fontWeight: 'bold',
+    stroke: { color: 0x000000, width: 5 },
+    align: 'center',
+    lineHeight: 34,
+  },
+});
+levelBanner.anchor.set(0.5, 0.5);
+levelBanner.visible = false;
+app.stage.addChild(levelBanner);
+
+/** What a level adds, in a few words, for the banner. */
+function levelNews(spec: LevelRun['spec']): string {
+  const holes = `${spec.holes} ${spec.holes === 1 ? 'hole' : 'holes'}`;
+  const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
+  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}`;
+}
+
+/** Shows the banner at a level's start, until the first thrust. */
+function drawLevelBanner(): void {
+  const show = run?.parked === true && run.attemptStart === 0 && !run.waiting && !bh.over && bh.falls === run.fallsAtStart;
+  levelBanner.visible = show;
+  if (!show || !run) return;
+  const text = `Level ${run.spec.level}\n${levelNews(run.spec)}`;
+  if (levelBanner.text !== text) levelBanner.text = text;
+  const cam = renderer.camera;
+  levelBanner.style.fontSize = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
+  levelBanner.style.lineHeight = 1.2 * levelBanner.style.fontSize;
+  // Just under the line, above every hole (holes keep 3 m clear of it).
+  levelBanner.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(bh.lineY) + 1.25 * levelBanner.style.fontSize + 6);
+}
+
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */
 function drawEdgeWarning(x: number, y: number): void {
   const cam = renderer.camera;
@@ -686,6 +727,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   lastShip[0] = x;
   lastShip[1] = y;
   drawEdgeWarning(x, y);
+  drawLevelBanner();
   const flame = FLAME[bh.thrust];
   if (flame && !bh.over) {
     const [fx, fy] = flame;
@@ -719,6 +761,8 @@ shell.expose({
   },
   /** Points of the predicted path drawn in the last frame. */
   pathPoints: (): number => pathPoints,
+  /** The level banner's text while it shows (at a level's start, until the first thrust), else ''. */
+  levelBanner: (): string => (levelBanner.visible ? levelBanner.text : ''),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
   edgeWarning: (): boolean => edgeText.visible,
