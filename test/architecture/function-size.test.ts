@@ -19,7 +19,6 @@ const LEFT: Readonly<Record<string, number>> = {
   'solver/manifold-solve-3d.ts solveManifolds3D': 349,
   'forces/barnes-hut/walk-2d.ts barnesHutWalk2': 327,
   'forces/barnes-hut/walk-3d.ts barnesHutWalk3': 325,
-  'forces/barnes-hut/gather.ts treeMoments': 262,
   'joints/prepare-2d.ts prepareJoints': 251,
   'collision/broadphase/pairs-3d.ts pairs': 228,
   'solver/manifold-rows-2d.ts solveManifolds': 215,

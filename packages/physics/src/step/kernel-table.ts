@@ -22,7 +22,8 @@
 import { ballPairs } from '../collision/broadphase/grid-pairs-kernel.js';
 import { ballContacts } from '../collision/narrowphase/balls-kernel.js';
 import { angularDampingScalar } from '../forces/angular-damping.js';
-import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather, treeMoments } from '../forces/barnes-hut/gather.js';
+import { mortonBucketSort, mortonKeysHist, mortonScatter, treeForces, treeGather } from '../forces/barnes-hut/gather.js';
+import { treeMoments2, treeMoments3 } from '../forces/barnes-hut/moments.js';
 import { barnesHutWalk2 } from '../forces/barnes-hut/walk-2d.js';
 import { barnesHutWalk3 } from '../forces/barnes-hut/walk-3d.js';
 import { centralForce } from '../forces/central.js';
@@ -78,7 +79,8 @@ export const KERNELS: readonly Kernel[] = /* @__PURE__ */ Object.freeze([
   ballPairs,
   ballContacts,
   mortonBucketSort,
-  treeMoments,
+  treeMoments2,
+  treeMoments3,
   mortonScatter,
   centralForce,
   attractors,

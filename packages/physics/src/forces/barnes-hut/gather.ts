@@ -2,39 +2,36 @@
  * The loops of the Barnes-Hut build (forces/barnes-hut/tree.ts) as thread kernels (step/kernel-table.ts:
  * self-contained functions the worker threads also run as source text): gathering the bodies'
  * positions and masses with their bounding box, the Morton sort (keys, buckets of the first digit,
- * each bucket sorted) with the bodies put into tree order, the nodes' moments, and adding m g to the
- * force accumulators. Each body's and node's arithmetic is the same on any thread, the bounding box
+ * each bucket sorted) with the bodies put into tree order, and adding m g to the force accumulators
+ * (the nodes' moments are in moments.ts). Each body's arithmetic is the same on any thread, the bounding box
  * is a min and max (exact in any order) and the sorted order is that of a stable sort, so the
  * results do not depend on the number of threads.
  */
 
 import type { KernelArray } from '../../threads/kernel-types.js';
+import * as BOX from './bounds.js';
+import * as SORT from './slots/morton-sort.js';
+import * as TREE_FORCES from './slots/tree-forces.js';
+import * as TREE_GATHER from './slots/tree-gather.js';
 
 /**
- * Slots of the bounding box a range writes: min x, y, z, max x, y, z, non-finite flag, unused.
- * @category Forces
- */
-export const BOX_STRIDE = 8;
-
-/**
- * Gathers body i = ids[i]'s Position and Mass into dense arrays and the range's bounding box.
- * A: px, py, pz, m (component stores), gx, gy, gz, gm (out, index i; gz only in 3D), box (out,
- * BOX_STRIDE slots a range, at `part`), ge (Int32, out: ge[i] = ids[i]). P: 0 dimensions (2 or 3).
- * Writes z = 0 bounds in 2D. Returns 0.
+ * Gathers body i = ids[i]'s Position and Mass into dense arrays (index i; z only in 3D) and the
+ * range's bounding box (at `part`: forces/barnes-hut/bounds.ts; z = 0 bounds in 2D). A and P:
+ * forces/barnes-hut/slots/tree-gather.ts. Returns 0.
  * @category Forces
  */
 export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number, part: number): number {
-  const px = A[0] as Float64Array,
-    py = A[1] as Float64Array,
-    pz = A[2] as Float64Array,
-    m = A[3] as Float64Array;
-  const gx = A[4] as Float64Array,
-    gy = A[5] as Float64Array,
-    gz = A[6] as Float64Array,
-    gm = A[7] as Float64Array;
-  const box = A[8] as Float64Array,
-    ge = A[9] as Int32Array;
-  const is3D = P[0] === 3,
+  const px = A[TREE_GATHER.PX] as Float64Array,
+    py = A[TREE_GATHER.PY] as Float64Array,
+    pz = A[TREE_GATHER.PZ] as Float64Array,
+    m = A[TREE_GATHER.MASS] as Float64Array;
+  const gx = A[TREE_GATHER.GX] as Float64Array,
+    gy = A[TREE_GATHER.GY] as Float64Array,
+    gz = A[TREE_GATHER.GZ] as Float64Array,
+    gm = A[TREE_GATHER.GM] as Float64Array;
+  const box = A[TREE_GATHER.BOX] as Float64Array,
+    ge = A[TREE_GATHER.ENTS] as Int32Array;
+  const is3D = P[TREE_GATHER.DIMENSIONS] === 3,
     list = ids as Int32Array;
   let minX = Infinity,
     minY = Infinity,
@@ -68,14 +65,14 @@ export function treeGather(A: KernelArray[], P: Float64Array, ids: Int32Array | 
     minZ = 0;
     maxZ = 0;
   }
-  const o = part * 8;
-  box[o] = minX;
-  box[o + 1] = minY;
-  box[o + 2] = minZ;
-  box[o + 3] = maxX;
-  box[o + 4] = maxY;
-  box[o + 5] = maxZ;
-  box[o + 6] = bad;
+  const o = part * BOX.RANGE_STRIDE;
+  box[o + BOX.MIN_X] = minX;
+  box[o + BOX.MIN_Y] = minY;
+  box[o + BOX.MIN_Z] = minZ;
+  box[o + BOX.MAX_X] = maxX;
+  box[o + BOX.MAX_Y] = maxY;
+  box[o + BOX.MAX_Z] = maxZ;
+  box[o + BOX.NON_FINITE] = bad;
   return 0;
 }
 
@@ -106,40 +103,27 @@ export const BUCKET_RADIX = 256;
 export const BUCKET_INSERTION_MAX = 48;
 
 /**
- * The Morton sort's parameters `P` (the three kernels below share them): 0 x0, 1 y0, 2 z0 (the root
- * cube's low corner, m), 3 scale (key units per m), 4 top (largest key coordinate), 5 dimensions,
- * 6 n (bodies), 7 parts, 8 first digit's shift (key bits - P[9]), 9 first digit's bits (at most
- * SORT_RADIX_BITS; the part's counts and places are 2^P[9] slots at part * 2^P[9]). A call's range
- * [lo, hi) is a range of parts; part p of the first two kernels holds bodies
- * floor(n p / parts) .. floor(n (p + 1) / parts) - 1 (the same in both, so the scatter sees the
- * histogram's bodies); the last kernel's parts are ranges of buckets.
- * @category Forces
- */
-export const SORT_PARAMS = 10;
-
-/**
  * Morton sort, pass 1: the Morton (Z-order) keys of a part's bodies in the root cube (16 bits per
  * axis interleaved in 2D, 10 in 3D; forces/barnes-hut/tree.ts) and the part's histogram of their first digit
- * (key >>> P[8]). A: x, y, z (positions, input order), key (Uint32, out, input order), hist (Int32,
- * 2^P[9] counts a part, the part's at p * 2^P[9]). P: SORT_PARAMS. Returns 0.
+ * (key >>> P[SORT.SHIFT]). A (the KEYS_ slots) and P: forces/barnes-hut/slots/morton-sort.ts. Returns 0.
  * @category Forces
  */
 export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const x = A[0] as Float64Array,
-    y = A[1] as Float64Array,
-    z = A[2] as Float64Array;
-  const key = A[3] as Uint32Array,
-    hist = A[4] as Int32Array;
-  const x0 = P[0]!,
-    y0 = P[1]!,
-    z0 = P[2]!,
-    scale = P[3]!,
-    top = P[4]!,
-    is3D = P[5] === 3;
-  const n = P[6]!,
-    parts = P[7]!,
-    topShift = P[8]!,
-    R = 1 << P[9]!;
+  const x = A[SORT.KEYS_X] as Float64Array,
+    y = A[SORT.KEYS_Y] as Float64Array,
+    z = A[SORT.KEYS_Z] as Float64Array;
+  const key = A[SORT.KEYS_KEY] as Uint32Array,
+    hist = A[SORT.KEYS_HIST] as Int32Array;
+  const x0 = P[SORT.X0]!,
+    y0 = P[SORT.Y0]!,
+    z0 = P[SORT.Z0]!,
+    scale = P[SORT.SCALE]!,
+    top = P[SORT.TOP]!,
+    is3D = P[SORT.DIMENSIONS] === 3;
+  const n = P[SORT.COUNT]!,
+    parts = P[SORT.PARTS]!,
+    topShift = P[SORT.SHIFT]!,
+    R = 1 << P[SORT.BITS]!;
   for (let part = lo; part < hi; part++) {
     const b0 = Math.floor((n * part) / parts),
       b1 = Math.floor((n * (part + 1)) / parts),
@@ -194,19 +178,18 @@ export function mortonKeysHist(A: KernelArray[], P: Float64Array, ids: Int32Arra
 
 /**
  * Adds the tree's gravity to the bodies' forces: F_e += m g for e = ids[i], g the field at body i's
- * slot. A: fx, fy, fz (Force store), slot (Int32: slot of input body i), m, ax, ay, az (tree order:
- * mass, kg, and field, m/s^2). P unused. Returns 0.
+ * slot. A: forces/barnes-hut/slots/tree-forces.ts; P unused. Returns 0.
  * @category Forces
  */
 export function treeForces(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const fx = A[0] as Float64Array,
-    fy = A[1] as Float64Array,
-    fz = A[2] as Float64Array,
-    slot = A[3] as Int32Array;
-  const m = A[4] as Float64Array,
-    ax = A[5] as Float64Array,
-    ay = A[6] as Float64Array,
-    az = A[7] as Float64Array;
+  const fx = A[TREE_FORCES.FX] as Float64Array,
+    fy = A[TREE_FORCES.FY] as Float64Array,
+    fz = A[TREE_FORCES.FZ] as Float64Array,
+    slot = A[TREE_FORCES.SLOT] as Int32Array;
+  const m = A[TREE_FORCES.MASS] as Float64Array,
+    ax = A[TREE_FORCES.AX] as Float64Array,
+    ay = A[TREE_FORCES.AY] as Float64Array,
+    az = A[TREE_FORCES.AZ] as Float64Array;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const e = list[i]!,
@@ -220,298 +203,20 @@ export function treeForces(A: KernelArray[], P: Float64Array, ids: Int32Array | 
 }
 
 /**
- * Moments of tree nodes (forces/barnes-hut/tree.ts: centre of mass, mass, second moment, in 2D third moment,
- * b_max, tight box), and slot[perm[s]] = s for the bodies of the leaves. A leaf's are summed over
- * its bodies; a cell's are combined from its children's (parallel-axis theorem), which must be done
- * already. `skip` must be complete (the node after each subtree; k + 1 for a leaf). Part p takes
- * the nodes list[cut[p]] .. list[cut[p + 1] - 1]: with P[1] = 0 each listed node's whole subtree,
- * children before parents (descending node index, so the result is that of one bottom-up pass),
- * with P[1] = 1 each listed node alone, in list order. A: x, y, z, m (tree order), node (moments,
- * stride 12), box (stride 6), start, end, skip (Int32), perm, slot (Int32), list, cut (Int32).
- * P: 0 dimensions, 1 mode. Range over parts. Returns 0.
- * @category Forces
- */
-export function treeMoments(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const x = A[0] as Float64Array,
-    y = A[1] as Float64Array,
-    z = A[2] as Float64Array,
-    m = A[3] as Float64Array;
-  const F = A[4] as Float64Array,
-    B = A[5] as Float64Array;
-  const start = A[6] as Int32Array,
-    end = A[7] as Int32Array,
-    skip = A[8] as Int32Array;
-  const perm = A[9] as Int32Array,
-    slot = A[10] as Int32Array,
-    list = A[11] as Int32Array,
-    cut = A[12] as Int32Array;
-  const is3D = P[0] === 3,
-    alone = P[1] === 1;
-  for (let part = lo; part < hi; part++) {
-    for (let q = cut[part]!, qEnd = cut[part + 1]!; q < qEnd; q++) {
-      const root = list[q]!;
-      for (let k = alone ? root : skip[root]! - 1; k >= root; k--) {
-        // A leaf's moments are sums over its bodies, a cell's are combined from its children's.
-        const after = skip[k]!,
-          leaf = after === k + 1,
-          s0 = start[k]!,
-          s1 = end[k]!;
-        if (leaf) for (let s = s0; s < s1; s++) slot[perm[s]!] = s;
-        if (!is3D) {
-          let M = 0,
-            X = 0,
-            Y = 0,
-            minX = Infinity,
-            minY = Infinity,
-            maxX = -Infinity,
-            maxY = -Infinity;
-          if (leaf) {
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                px = x[s]!,
-                py = y[s]!;
-              M += w;
-              X += w * px;
-              Y += w * py;
-              if (px < minX) minX = px;
-              if (px > maxX) maxX = px;
-              if (py < minY) minY = py;
-              if (py > maxY) maxY = py;
-            }
-          } else {
-            for (let c = k + 1; c < after; c = skip[c]!) {
-              const o = c * 12,
-                w = F[o + 2]!,
-                b = c * 6;
-              M += w;
-              X += w * F[o]!;
-              Y += w * F[o + 1]!;
-              if (B[b]! < minX) minX = B[b]!;
-              if (B[b + 1]! < minY) minY = B[b + 1]!;
-              if (B[b + 3]! > maxX) maxX = B[b + 3]!;
-              if (B[b + 4]! > maxY) maxY = B[b + 4]!;
-            }
-          }
-          let cx: number, cy: number;
-          if (M > 0) {
-            cx = X / M;
-            cy = Y / M;
-          } else {
-            cx = 0.5 * (minX + maxX);
-            cy = 0.5 * (minY + maxY);
-          }
-          // reach: a cell's farthest child extent, |c_child - c| + b_max(child); a leaf's is not needed.
-          let sxx = 0,
-            sxy = 0,
-            syy = 0,
-            txxx = 0,
-            txxy = 0,
-            txyy = 0,
-            tyyy = 0,
-            reach = Infinity;
-          if (leaf) {
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                dx = x[s]! - cx,
-                dy = y[s]! - cy;
-              const wxx = w * dx * dx,
-                wyy = w * dy * dy,
-                wxy = w * dx * dy;
-              sxx += wxx;
-              sxy += wxy;
-              syy += wyy;
-              txxx += wxx * dx;
-              txxy += wxx * dy;
-              txyy += wyy * dx;
-              tyyy += wyy * dy;
-            }
-          } else {
-            // Parallel-axis theorem, d = c_child - c: S += S_c + M_c d d; T += T_c + 3 sym(d S_c) + M_c d d d.
-            reach = 0;
-            for (let c = k + 1; c < after; c = skip[c]!) {
-              const o = c * 12,
-                w = F[o + 2]!,
-                dx = F[o]! - cx,
-                dy = F[o + 1]! - cy;
-              const cxx = F[o + 3]!,
-                cxy = F[o + 4]!,
-                cyy = F[o + 5]!;
-              const wxx = w * dx * dx,
-                wxy = w * dx * dy,
-                wyy = w * dy * dy;
-              sxx += cxx + wxx;
-              sxy += cxy + wxy;
-              syy += cyy + wyy;
-              txxx += F[o + 7]! + 3 * dx * cxx + wxx * dx;
-              txxy += F[o + 8]! + 2 * dx * cxy + dy * cxx + wxx * dy;
-              txyy += F[o + 9]! + 2 * dy * cxy + dx * cyy + wyy * dx;
-              tyyy += F[o + 10]! + 3 * dy * cyy + wyy * dy;
-              const r = Math.sqrt(dx * dx + dy * dy) + F[o + 6]!;
-              if (r > reach) reach = r;
-            }
-          }
-          const ex = Math.max(cx - minX, maxX - cx),
-            ey = Math.max(cy - minY, maxY - cy);
-          const o = k * 12;
-          F[o] = cx;
-          F[o + 1] = cy;
-          F[o + 2] = M;
-          F[o + 3] = sxx;
-          F[o + 4] = sxy;
-          F[o + 5] = syy;
-          F[o + 6] = Math.min(Math.sqrt(ex * ex + ey * ey), reach);
-          F[o + 7] = txxx;
-          F[o + 8] = txxy;
-          F[o + 9] = txyy;
-          F[o + 10] = tyyy;
-          F[o + 11] = 0;
-          const b = k * 6;
-          B[b] = minX;
-          B[b + 1] = minY;
-          B[b + 2] = 0;
-          B[b + 3] = maxX;
-          B[b + 4] = maxY;
-          B[b + 5] = 0;
-        } else {
-          let M = 0,
-            X = 0,
-            Y = 0,
-            Z = 0;
-          let minX = Infinity,
-            minY = Infinity,
-            minZ = Infinity,
-            maxX = -Infinity,
-            maxY = -Infinity,
-            maxZ = -Infinity;
-          if (leaf) {
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                px = x[s]!,
-                py = y[s]!,
-                pz = z[s]!;
-              M += w;
-              X += w * px;
-              Y += w * py;
-              Z += w * pz;
-              if (px < minX) minX = px;
-              if (px > maxX) maxX = px;
-              if (py < minY) minY = py;
-              if (py > maxY) maxY = py;
-              if (pz < minZ) minZ = pz;
-              if (pz > maxZ) maxZ = pz;
-            }
-          } else {
-            for (let c = k + 1; c < after; c = skip[c]!) {
-              const o = c * 12,
-                w = F[o + 3]!,
-                b = c * 6;
-              M += w;
-              X += w * F[o]!;
-              Y += w * F[o + 1]!;
-              Z += w * F[o + 2]!;
-              if (B[b]! < minX) minX = B[b]!;
-              if (B[b + 1]! < minY) minY = B[b + 1]!;
-              if (B[b + 2]! < minZ) minZ = B[b + 2]!;
-              if (B[b + 3]! > maxX) maxX = B[b + 3]!;
-              if (B[b + 4]! > maxY) maxY = B[b + 4]!;
-              if (B[b + 5]! > maxZ) maxZ = B[b + 5]!;
-            }
-          }
-          let cx: number, cy: number, cz: number;
-          if (M > 0) {
-            cx = X / M;
-            cy = Y / M;
-            cz = Z / M;
-          } else {
-            cx = 0.5 * (minX + maxX);
-            cy = 0.5 * (minY + maxY);
-            cz = 0.5 * (minZ + maxZ);
-          }
-          let sxx = 0,
-            syy = 0,
-            szz = 0,
-            sxy = 0,
-            sxz = 0,
-            syz = 0,
-            reach = Infinity;
-          if (leaf) {
-            for (let s = s0; s < s1; s++) {
-              const w = m[s]!,
-                dx = x[s]! - cx,
-                dy = y[s]! - cy,
-                dz = z[s]! - cz;
-              sxx += w * dx * dx;
-              syy += w * dy * dy;
-              szz += w * dz * dz;
-              sxy += w * dx * dy;
-              sxz += w * dx * dz;
-              syz += w * dy * dz;
-            }
-          } else {
-            reach = 0;
-            for (let c = k + 1; c < after; c = skip[c]!) {
-              const o = c * 12,
-                w = F[o + 3]!,
-                dx = F[o]! - cx,
-                dy = F[o + 1]! - cy,
-                dz = F[o + 2]! - cz;
-              sxx += F[o + 4]! + w * dx * dx;
-              syy += F[o + 5]! + w * dy * dy;
-              szz += F[o + 6]! + w * dz * dz;
-              sxy += F[o + 7]! + w * dx * dy;
-              sxz += F[o + 8]! + w * dx * dz;
-              syz += F[o + 9]! + w * dy * dz;
-              const r = Math.sqrt(dx * dx + dy * dy + dz * dz) + F[o + 10]!;
-              if (r > reach) reach = r;
-            }
-          }
-          const ex = Math.max(cx - minX, maxX - cx),
-            ey = Math.max(cy - minY, maxY - cy),
-            ez = Math.max(cz - minZ, maxZ - cz);
-          const o = k * 12;
-          F[o] = cx;
-          F[o + 1] = cy;
-          F[o + 2] = cz;
-          F[o + 3] = M;
-          F[o + 4] = sxx;
-          F[o + 5] = syy;
-          F[o + 6] = szz;
-          F[o + 7] = sxy;
-          F[o + 8] = sxz;
-          F[o + 9] = syz;
-          F[o + 10] = Math.min(Math.sqrt(ex * ex + ey * ey + ez * ez), reach);
-          F[o + 11] = 0;
-          const b = k * 6;
-          B[b] = minX;
-          B[b + 1] = minY;
-          B[b + 2] = minZ;
-          B[b + 3] = maxX;
-          B[b + 4] = maxY;
-          B[b + 5] = maxZ;
-        }
-      }
-    }
-  }
-  return ids === null ? 0 : 0;
-}
-
-/**
  * Morton sort, pass 2: a part's bodies to their first digit's bucket, in order (so the pass is
- * stable: within a bucket the bodies keep their input order). A: key (Uint32, input order), key2
- * (Uint32, out), idx2 (Int32, out: the input index of each placed key), offset (Int32, 2^P[9]
- * first places a part, the part's at p * 2^P[9], advanced as it goes). P: SORT_PARAMS. The
- * parts must be those of mortonKeysHist. Returns 0.
+ * stable: within a bucket the bodies keep their input order). A (the SCATTER_ slots) and P:
+ * forces/barnes-hut/slots/morton-sort.ts. The parts must be those of mortonKeysHist. Returns 0.
  * @category Forces
  */
 export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const key = A[0] as Uint32Array,
-    key2 = A[1] as Uint32Array,
-    idx2 = A[2] as Int32Array,
-    offset = A[3] as Int32Array;
-  const n = P[6]!,
-    parts = P[7]!,
-    topShift = P[8]!,
-    R = 1 << P[9]!;
+  const key = A[SORT.SCATTER_KEY] as Uint32Array,
+    key2 = A[SORT.SCATTER_KEY2] as Uint32Array,
+    idx2 = A[SORT.SCATTER_IDX2] as Int32Array,
+    offset = A[SORT.SCATTER_OFFSET] as Int32Array;
+  const n = P[SORT.COUNT]!,
+    parts = P[SORT.PARTS]!,
+    topShift = P[SORT.SHIFT]!,
+    R = 1 << P[SORT.BITS]!;
   for (let part = lo; part < hi; part++) {
     const b0 = Math.floor((n * part) / parts),
       b1 = Math.floor((n * (part + 1)) / parts),
@@ -532,31 +237,27 @@ export function mortonScatter(A: KernelArray[], P: Float64Array, ids: Int32Array
  * fewer, else least-significant-digit radix passes of 8 bits, each skipped when all its digits are
  * equal), so the keys end in (key, input index) order, the order of a stable sort of the whole
  * array; then slot s of the bucket gets input body perm[s]'s position and mass.
- * A: key2, idx2 (pass 2's output; also scratch), key (Uint32, out: sorted keys), perm (Int32, out:
- * input index in sorted order, the tree's perm), bucket (Int32: first slot of each bucket, 2^P[9] + 1 entries),
- * group (Int32: part p sorts buckets group[p] .. group[p + 1] - 1), local (Int32, BUCKET_RADIX
- * counts a part), x, y, z, m (input order), tx, ty, tz, tm (out, tree order; tz only in 3D: in 2D
- * it stays 0). P: SORT_PARAMS. Returns 0.
+ * A (the BUCKETS_ slots) and P: forces/barnes-hut/slots/morton-sort.ts. Returns 0.
  * @category Forces
  */
 export function mortonBucketSort(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const key2 = A[0] as Uint32Array,
-    idx2 = A[1] as Int32Array,
-    key = A[2] as Uint32Array,
-    perm = A[3] as Int32Array;
-  const bucket = A[4] as Int32Array,
-    group = A[5] as Int32Array,
-    local = A[6] as Int32Array;
-  const x = A[7] as Float64Array,
-    y = A[8] as Float64Array,
-    z = A[9] as Float64Array,
-    m = A[10] as Float64Array;
-  const tx = A[11] as Float64Array,
-    ty = A[12] as Float64Array,
-    tz = A[13] as Float64Array,
-    tm = A[14] as Float64Array;
-  const is3D = P[5] === 3,
-    topShift = P[8]!;
+  const key2 = A[SORT.BUCKETS_KEY2] as Uint32Array,
+    idx2 = A[SORT.BUCKETS_IDX2] as Int32Array,
+    key = A[SORT.BUCKETS_KEY] as Uint32Array,
+    perm = A[SORT.BUCKETS_PERM] as Int32Array;
+  const bucket = A[SORT.BUCKETS_FIRST] as Int32Array,
+    group = A[SORT.BUCKETS_GROUP] as Int32Array,
+    local = A[SORT.BUCKETS_LOCAL] as Int32Array;
+  const x = A[SORT.BUCKETS_X] as Float64Array,
+    y = A[SORT.BUCKETS_Y] as Float64Array,
+    z = A[SORT.BUCKETS_Z] as Float64Array,
+    m = A[SORT.BUCKETS_MASS] as Float64Array;
+  const tx = A[SORT.BUCKETS_TX] as Float64Array,
+    ty = A[SORT.BUCKETS_TY] as Float64Array,
+    tz = A[SORT.BUCKETS_TZ] as Float64Array,
+    tm = A[SORT.BUCKETS_TM] as Float64Array;
+  const is3D = P[SORT.DIMENSIONS] === 3,
+    topShift = P[SORT.SHIFT]!;
   for (let part = lo; part < hi; part++) {
     const base = part * 256;
     for (let r = group[part]!, rEnd = group[part + 1]!; r < rEnd; r++) {

@@ -1,7 +1,13 @@
 import { nowMs } from '../../threads/adaptive.js';
+import type { KernelArray } from '../../threads/kernel-types.js';
 import { MIN_PARALLEL_PER_THREAD } from '../../threads/parallel.js';
 import type { ThreadPool } from '../../threads/pool.js';
-import { BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits, treeMoments } from './gather.js';
+import * as BOX from './bounds.js';
+import * as TASK from './build-task.js';
+import { BUCKET_RADIX, mortonBucketSort, mortonKeysHist, mortonScatter, sortDigitBits } from './gather.js';
+import { treeMoments2, treeMoments3 } from './moments.js';
+import * as MOMENTS from './slots/moments.js';
+import * as SORT from './slots/morton-sort.js';
 import { type GravityTree, growBodies, growNodes, i32, LEAF_SIZE, MAX_DEPTH, MAX_PARTS, MIN_CELL_FRACTION } from './tree-store.js';
 
 /**
@@ -37,8 +43,8 @@ export function buildTree(
 }
 
 /**
- * buildTree, with the bounding box already known (`bounds`: min x, y, z, max x, y, z, non-finite
- * flag; null: computed here) and the Morton keys computed on `pool`'s threads when the arrays are
+ * buildTree, with the bounding box already known (`bounds`: a gathered range's box,
+ * forces/barnes-hut/bounds.ts; null: computed here) and the Morton keys computed on `pool`'s threads when the arrays are
  * shared and the bodies many enough (MIN_PARALLEL_PER_THREAD a thread).
  */
 export function buildTreeWith(
@@ -61,13 +67,13 @@ export function buildTreeWith(
     maxZ = -Infinity;
   let bad = false;
   if (bounds !== null) {
-    minX = bounds[0]!;
-    minY = bounds[1]!;
-    minZ = bounds[2]!;
-    maxX = bounds[3]!;
-    maxY = bounds[4]!;
-    maxZ = bounds[5]!;
-    bad = bounds[6] !== 0;
+    minX = bounds[BOX.MIN_X]!;
+    minY = bounds[BOX.MIN_Y]!;
+    minZ = bounds[BOX.MIN_Z]!;
+    maxX = bounds[BOX.MAX_X]!;
+    maxY = bounds[BOX.MAX_Y]!;
+    maxZ = bounds[BOX.MAX_Z]!;
+    bad = bounds[BOX.NON_FINITE] !== 0;
   } else {
     for (let i = 0; i < n; i++) {
       const px = x[i]!,
@@ -118,19 +124,17 @@ export function buildTreeWith(
     y0 = cy - half,
     z0 = cz - half;
   const KP = t.keyParams;
-  KP[0] = x0;
-  KP[1] = y0;
-  KP[2] = z0;
-  KP[3] = scale;
-  KP[4] = top;
-  KP[5] = t.dims;
+  KP[SORT.X0] = x0;
+  KP[SORT.Y0] = y0;
+  KP[SORT.Z0] = z0;
+  KP[SORT.SCALE] = scale;
+  KP[SORT.TOP] = top;
+  KP[SORT.DIMENSIONS] = t.dims;
   const digitBits = sortDigitBits(n);
-  KP[6] = n;
-  KP[8] = (is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2) - digitBits;
-  KP[9] = digitBits;
+  KP[SORT.COUNT] = n;
+  KP[SORT.SHIFT] = (is3D ? 3 * KEY_BITS3 : 2 * KEY_BITS2) - digitBits;
+  KP[SORT.BITS] = digitBits;
   mortonSort(t, n, x, y, z, m, pool);
-  const KM = t.momentParams;
-  KM[0] = t.dims;
   growNodes(t, Math.max(64, Math.ceil((3 * n) / LEAF_SIZE) + 64));
   splitCells(t, n, cx, cy, cz, half, bits);
   treeMomentsAll(t, pool);
@@ -145,7 +149,7 @@ export function buildTreeWith(
  * parts bodies. On `pool`'s threads (one part a thread) when the tree's arrays are shared and the
  * bodies many enough (MIN_PARALLEL_PER_THREAD a thread), and an adaptive pool has found that faster;
  * else here as one part. The order does not depend on the parts, so neither does the tree.
- * The parameters (t.keyParams, SORT_PARAMS) are set by the caller but for the part count.
+ * The parameters (t.keyParams: forces/barnes-hut/slots/morton-sort.ts) are set by the caller but for the part count.
  */
 function mortonSort(
   t: GravityTree,
@@ -164,7 +168,7 @@ function mortonSort(
   const adaptive = parts > 1 && pool!.adaptive;
   if (adaptive && !pool!.chooser.choose(site)) parts = 1;
   const t0 = adaptive ? nowMs() : 0;
-  const R = 1 << t.keyParams[9]!;
+  const R = 1 << t.keyParams[SORT.BITS]!;
   if (t.sortHist.length < parts * R) {
     const size = Math.max(parts, pool?.threads ?? 1) * R;
     t.sortHist = i32(t, size);
@@ -177,13 +181,17 @@ function mortonSort(
     bucket = t.sortBucket,
     group = t.sortGroup,
     P = t.keyParams;
-  P[7] = parts;
+  P[SORT.PARTS] = parts;
   const system = 'mutualGravitySystem (Barnes-Hut sort)';
   const A1 = t.sortLists[0]!,
     A2 = t.sortLists[1]!,
     A3 = t.sortLists[2]!;
   A1.length = 0;
-  A1.push(x as Float64Array, y as Float64Array, z as Float64Array, t.key, hist);
+  A1[SORT.KEYS_X] = x as Float64Array;
+  A1[SORT.KEYS_Y] = y as Float64Array;
+  A1[SORT.KEYS_Z] = z as Float64Array;
+  A1[SORT.KEYS_KEY] = t.key;
+  A1[SORT.KEYS_HIST] = hist;
   if (parts > 1) pool!.run(system, mortonKeysHist, A1, P, parts, null);
   else mortonKeysHist(A1, P, null, 0, 1);
   // First places of each (digit, part), digit-major (so the pass is stable), and each bucket's first slot.
@@ -198,7 +206,10 @@ function mortonSort(
   }
   bucket[R] = acc;
   A2.length = 0;
-  A2.push(t.key, t.key2, t.idx2, offset);
+  A2[SORT.SCATTER_KEY] = t.key;
+  A2[SORT.SCATTER_KEY2] = t.key2;
+  A2[SORT.SCATTER_IDX2] = t.idx2;
+  A2[SORT.SCATTER_OFFSET] = offset;
   if (parts > 1) pool!.run(system, mortonScatter, A2, P, parts, null);
   else mortonScatter(A2, P, null, 0, 1);
   // Runs of buckets of about n / parts bodies each, for the last pass.
@@ -211,23 +222,21 @@ function mortonSort(
   }
   group[parts] = R;
   A3.length = 0;
-  A3.push(
-    t.key2,
-    t.idx2,
-    t.key,
-    t.perm,
-    bucket,
-    group,
-    t.sortLocal,
-    x as Float64Array,
-    y as Float64Array,
-    z as Float64Array,
-    m as Float64Array,
-    t.x,
-    t.y,
-    t.z,
-    t.m,
-  );
+  A3[SORT.BUCKETS_KEY2] = t.key2;
+  A3[SORT.BUCKETS_IDX2] = t.idx2;
+  A3[SORT.BUCKETS_KEY] = t.key;
+  A3[SORT.BUCKETS_PERM] = t.perm;
+  A3[SORT.BUCKETS_FIRST] = bucket;
+  A3[SORT.BUCKETS_GROUP] = group;
+  A3[SORT.BUCKETS_LOCAL] = t.sortLocal;
+  A3[SORT.BUCKETS_X] = x as Float64Array;
+  A3[SORT.BUCKETS_Y] = y as Float64Array;
+  A3[SORT.BUCKETS_Z] = z as Float64Array;
+  A3[SORT.BUCKETS_MASS] = m as Float64Array;
+  A3[SORT.BUCKETS_TX] = t.x;
+  A3[SORT.BUCKETS_TY] = t.y;
+  A3[SORT.BUCKETS_TZ] = t.z;
+  A3[SORT.BUCKETS_TM] = t.m;
   if (parts > 1) pool!.run(system, mortonBucketSort, A3, P, parts, null);
   else mortonBucketSort(A3, P, null, 0, 1);
   if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, n);
@@ -253,28 +262,30 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
     key = t.key;
   let ti = t.taskI,
     tf = t.taskF;
-  ti[0] = 0;
-  ti[1] = n;
-  ti[2] = 1;
-  ti[3] = 0;
-  ti[4] = -1;
-  tf[0] = cx;
-  tf[1] = cy;
-  tf[2] = cz;
-  tf[3] = half;
+  ti[TASK.LO] = 0;
+  ti[TASK.HI] = n;
+  ti[TASK.IN_FIRST] = 1;
+  ti[TASK.DEPTH] = 0;
+  ti[TASK.PARENT] = -1;
+  tf[TASK.CX] = cx;
+  tf[TASK.CY] = cy;
+  tf[TASK.CZ] = cz;
+  tf[TASK.HALF] = half;
   let tp = 1;
   const minHalf = t.minHalf;
   while (tp > 0) {
     tp--;
-    const lo = ti[tp * 5]!,
-      hi = ti[tp * 5 + 1]!,
-      inA = ti[tp * 5 + 2] === 1,
-      depth = ti[tp * 5 + 3]!,
-      parent = ti[tp * 5 + 4]!;
-    const ccx = tf[tp * 4]!,
-      ccy = tf[tp * 4 + 1]!,
-      ccz = tf[tp * 4 + 2]!,
-      h = tf[tp * 4 + 3]!;
+    const oi = tp * TASK.INT_STRIDE,
+      of = tp * TASK.FLOAT_STRIDE;
+    const lo = ti[oi + TASK.LO]!,
+      hi = ti[oi + TASK.HI]!,
+      inA = ti[oi + TASK.IN_FIRST] === 1,
+      depth = ti[oi + TASK.DEPTH]!,
+      parent = ti[oi + TASK.PARENT]!;
+    const ccx = tf[of + TASK.CX]!,
+      ccy = tf[of + TASK.CY]!,
+      ccz = tf[of + TASK.CZ]!,
+      h = tf[of + TASK.HALF]!;
     const k = t.nodeCount++;
     if (k >= t.start.length) growNodes(t, k + 1);
     t.start[k] = lo;
@@ -364,7 +375,7 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
     }
     // Children as tasks, last quadrant pushed first so that quadrant 0 is built next (preorder).
     const hh = 0.5 * h;
-    if ((tp + kids) * 5 > ti.length) {
+    if ((tp + kids) * TASK.INT_STRIDE > ti.length) {
       growTasks(t, tp + kids);
       ti = t.taskI;
       tf = t.taskF;
@@ -373,15 +384,17 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
     for (let q = kids - 1; q >= 0; q--) {
       const c = cnt[q]!;
       if (c === 0) continue;
-      ti[tp * 5] = end - c;
-      ti[tp * 5 + 1] = end;
-      ti[tp * 5 + 2] = movedTo ? 1 : 0;
-      ti[tp * 5 + 3] = depth + 1;
-      ti[tp * 5 + 4] = k;
-      tf[tp * 4] = ccx + (q & 1 ? hh : -hh);
-      tf[tp * 4 + 1] = ccy + (q & 2 ? hh : -hh);
-      tf[tp * 4 + 2] = is3D ? ccz + (q & 4 ? hh : -hh) : 0;
-      tf[tp * 4 + 3] = hh;
+      const ci = tp * TASK.INT_STRIDE,
+        cf = tp * TASK.FLOAT_STRIDE;
+      ti[ci + TASK.LO] = end - c;
+      ti[ci + TASK.HI] = end;
+      ti[ci + TASK.IN_FIRST] = movedTo ? 1 : 0;
+      ti[ci + TASK.DEPTH] = depth + 1;
+      ti[ci + TASK.PARENT] = k;
+      tf[cf + TASK.CX] = ccx + (q & 1 ? hh : -hh);
+      tf[cf + TASK.CY] = ccy + (q & 2 ? hh : -hh);
+      tf[cf + TASK.CZ] = is3D ? ccz + (q & 4 ? hh : -hh) : 0;
+      tf[cf + TASK.HALF] = hh;
       tp++;
       end -= c;
     }
@@ -389,17 +402,17 @@ function splitCells(t: GravityTree, n: number, cx: number, cy: number, cz: numbe
 }
 
 function growTasks(t: GravityTree, needed: number): void {
-  const size = Math.max(needed, 2 * (t.taskF.length / 4));
-  const i = new Int32Array(size * 5);
+  const size = Math.max(needed, 2 * (t.taskF.length / TASK.FLOAT_STRIDE));
+  const i = new Int32Array(size * TASK.INT_STRIDE);
   i.set(t.taskI);
   t.taskI = i;
-  const f = new Float64Array(size * 4);
+  const f = new Float64Array(size * TASK.FLOAT_STRIDE);
   f.set(t.taskF);
   t.taskF = f;
 }
 
 /**
- * Subtree ends (skip) and the moments of every node (kernel treeMoments), children before parents.
+ * Subtree ends (skip) and the moments of every node (kernels treeMoments2 and treeMoments3, moments.ts), children before parents.
  * With `pool` (shared tree arrays, at least MIN_NODES_PER_THREAD nodes a thread, and an adaptive
  * pool finding it faster), the tree is cut into its largest subtrees of at most 1 / (8 parts) of
  * the nodes, handed out to the threads in runs of about equal node counts, and the few nodes above
@@ -458,13 +471,11 @@ function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
   while (q < parts) cut[q++] = nl;
   cut[parts] = nl;
   const P = t.momentParams;
-  P[0] = t.dims;
-  P[1] = 0;
-  const A = t.momentLists[0]!;
-  A.length = 0;
-  A.push(t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, skip, t.perm, t.slot, list, cut);
-  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', treeMoments, A, P, parts, null);
-  else treeMoments(A, P, null, 0, 1);
+  P[MOMENTS.ALONE] = 0;
+  const kernel = t.dims === 3 ? treeMoments3 : treeMoments2;
+  const A = momentArrays(t, t.momentLists[0]!, list, cut);
+  if (parts > 1) pool!.run('mutualGravitySystem (Barnes-Hut moments)', kernel, A, P, parts, null);
+  else kernel(A, P, null, 0, 1);
   if (ntop > 0) {
     // The nodes above the subtrees, deepest first (descending index: children before parents).
     const down = t.momentDown.length >= ntop ? t.momentDown : (t.momentDown = new Int32Array(2 * ntop));
@@ -472,11 +483,27 @@ function treeMomentsAll(t: GravityTree, pool: ThreadPool | null): void {
     const cut1 = t.momentCut1;
     cut1[0] = 0;
     cut1[1] = ntop;
-    P[1] = 1;
-    const B = t.momentLists[1]!;
-    B.length = 0;
-    B.push(t.x, t.y, t.z, t.m, t.node, t.box, t.start, t.end, skip, t.perm, t.slot, down, cut1);
-    treeMoments(B, P, null, 0, 1);
+    P[MOMENTS.ALONE] = 1;
+    kernel(momentArrays(t, t.momentLists[1]!, down, cut1), P, null, 0, 1);
   }
   if (adaptive) pool!.chooser.record(site, parts > 1, nowMs() - t0, nc);
+}
+
+/** The moments kernels' arrays (forces/barnes-hut/slots/moments.ts) in the list `A`, for the nodes `list` cut into parts at `cut`. */
+function momentArrays(t: GravityTree, A: KernelArray[], list: Int32Array, cut: Int32Array): KernelArray[] {
+  A.length = 0;
+  A[MOMENTS.X] = t.x;
+  A[MOMENTS.Y] = t.y;
+  A[MOMENTS.Z] = t.z;
+  A[MOMENTS.MASS] = t.m;
+  A[MOMENTS.NODE] = t.node;
+  A[MOMENTS.BOX] = t.box;
+  A[MOMENTS.START] = t.start;
+  A[MOMENTS.END] = t.end;
+  A[MOMENTS.SKIP] = t.skip;
+  A[MOMENTS.PERM] = t.perm;
+  A[MOMENTS.SLOT] = t.slot;
+  A[MOMENTS.LIST] = list;
+  A[MOMENTS.CUT] = cut;
+  return A;
 }

@@ -1,12 +1,19 @@
 import type { KernelArray } from '../../threads/kernel-types.js';
 import { sharedFloat64, sharedMemoryAvailable } from '../../threads/pool.js';
 import type { PhysicsWorld } from '../../world/options.js';
-import { SORT_PARAMS } from './gather.js';
-import { INFO_STRIDE } from './walk.js';
+import * as BOX from './bounds.js';
+import * as TASK from './build-task.js';
+import * as N2 from './node-2d.js';
+import * as N3 from './node-3d.js';
+import * as MOMENTS from './slots/moments.js';
+import * as SORT from './slots/morton-sort.js';
+import * as WALK from './walk.js';
 
 /**
- * The Barnes-Hut tree's storage (see tree.ts for the method): its layout constants, the GravityTree
- * arrays of one world, and their growth by doubling.
+ * The Barnes-Hut tree's storage (see tree.ts for the method): its size constants, the GravityTree
+ * arrays of one world, and their growth by doubling. The packed arrays' layouts are modules of their
+ * own: a node's moments (node-2d.ts, node-3d.ts), its field polynomial (field-2d.ts, field-3d.ts), its
+ * box (bounds.ts), a build task (build-task.ts) and a part's counts (walk.ts).
  */
 
 /** Most parts (threads) an evaluation is cut into. */
@@ -18,15 +25,6 @@ export const LEAF_SIZE = 8;
 export const MIN_CELL_FRACTION = 1e-9;
 /** Depth bound: MIN_CELL_FRACTION > 2^-31, with margin. */
 export const MAX_DEPTH = 64;
-
-/** Float64 slots per node, 2D: [cx, cy, M, Sxx, Sxy, Syy, r, Txxx, Txxy, Txyy, Tyyy, -] (T: third moment). */
-export const NF2 = 12;
-/** 3D: [cx, cy, cz, M, Sxx, Syy, Szz, Sxy, Sxz, Syz, r, -]. */
-export const NF3 = 12;
-/** Local field polynomial per node, 2D: [a0x, a0y, Jxx, Jxy, Jyy, Kxxx, Kxxy, Kxyy, Kyyy, Hxxxx, Hxxxy, Hxxyy, Hxyyy, Hyyyy]. */
-export const NL2 = 14;
-/** 3D: [a0 x y z, J xx yy zz xy xz yz, K xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz]. */
-export const NL3 = 19;
 
 /**
  * The tree's arrays; one per world, reused between evaluations.
@@ -53,17 +51,17 @@ export interface GravityTree {
   m2: Float64Array;
   perm2: Int32Array;
   code: Uint8Array;
-  /** Per node, stride 12 (layouts at NF2, NF3): centre of mass (m), mass (kg), second moment S (kg m^2), r = b_max (m), 2D third moment T (kg m^3). */
+  /** Per node: centre of mass (m), mass (kg), second moment S (kg m^2), r = b_max (m), 2D third moment T (kg m^3); layouts in node-2d.ts and node-3d.ts. */
   node: Float64Array;
-  /** Per node, stride 6: tight bounding box min x, y, z, max x, y, z, m. */
+  /** Per node, BOX.NODE_STRIDE: tight bounding box min x, y, z, max x, y, z, m (bounds.ts). */
   box: Float64Array;
   /** Per node: first slot, end slot (exclusive), and the node after its subtree (k + 1 for a leaf). */
   start: Int32Array;
   end: Int32Array;
   skip: Int32Array;
   /**
-   * The evaluation's scratch, one array a part (forces/barnes-hut/walk.ts): per node, stride 14 (2D) or 19
-   * (3D), the field polynomial about the centre of mass (without G; layouts at NL2, NL3), then the
+   * The evaluation's scratch, one array a part (forces/barnes-hut/walk.ts): per node, the field
+   * polynomial about the centre of mass (without G; layouts in field-2d.ts and field-3d.ts), then the
    * direct sums x, y, z of every slot (without G) from the offsets `accOffset`.
    */
   scratch: Float64Array[];
@@ -71,7 +69,7 @@ export interface GravityTree {
   accOffset: number;
   /** Slot boundaries of the parts of the last evaluation (part p: cut[p] .. cut[p + 1] - 1), at leaf starts. */
   cut: Int32Array;
-  /** Per part, stride 4: counts and work of the last evaluation (see forces/barnes-hut/walk.ts). */
+  /** Per part, WALK.INFO_STRIDE: counts and work of the last evaluation (the INFO_ offsets of forces/barnes-hut/walk.ts). */
   info: Float64Array;
   /** Parts of the last evaluation (1 on one thread). */
   parts: number;
@@ -85,8 +83,8 @@ export interface GravityTree {
   momentParams: Float64Array;
   /**
    * The Morton sort's scratch (mortonSort): per part, the first digit's histogram and first places
-   * (2^keyParams[9] each, at most SORT_RADIX) and a bucket sort's counts (BUCKET_RADIX); each bucket's
-   * first slot (2^keyParams[9] + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
+   * (2^keyParams[SORT.BITS] each, at most SORT_RADIX) and a bucket sort's counts (BUCKET_RADIX); each bucket's
+   * first slot (2^keyParams[SORT.BITS] + 1), each part's first bucket (MAX_PARTS + 1), and the kernels' array lists.
    */
   sortHist: Int32Array;
   sortOffset: Int32Array;
@@ -111,7 +109,7 @@ export interface GravityTree {
   key: Uint32Array;
   key2: Uint32Array;
   idx2: Int32Array;
-  /** Task stack of the build: per task [lo, hi, inA, depth, parent] and [cx, cy, cz, half]. */
+  /** Task stack of the build: a task's integers and numbers (build-task.ts). */
   taskI: Int32Array;
   taskF: Float64Array;
   /** Parent of each node (-1 for the root). */
@@ -148,22 +146,22 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     m2: new Float64Array(0),
     perm2: new Int32Array(0),
     code: new Uint8Array(0),
-    node: F64(nodes * (dims === 3 ? NF3 : NF2)),
-    box: F64(nodes * 6),
+    node: F64(nodes * (dims === 3 ? N3.STRIDE : N2.STRIDE)),
+    box: F64(nodes * BOX.NODE_STRIDE),
     start: I32(nodes),
     end: I32(nodes),
     skip: I32(nodes),
     scratch: [],
     accOffset: 0,
     cut: I32(MAX_PARTS + 1),
-    info: F64(MAX_PARTS * INFO_STRIDE),
+    info: F64(MAX_PARTS * WALK.INFO_STRIDE),
     parts: 1,
     shared,
     cutWant: new Int32Array(MAX_PARTS + 1),
     walkList: [],
-    walkParams: new Float64Array(10),
-    keyParams: new Float64Array(SORT_PARAMS),
-    momentParams: new Float64Array(2),
+    walkParams: new Float64Array(WALK.PARAMS),
+    keyParams: new Float64Array(SORT.PARAMS),
+    momentParams: new Float64Array(MOMENTS.PARAMS),
     sortHist: new Int32Array(0),
     sortOffset: new Int32Array(0),
     sortLocal: new Int32Array(0),
@@ -180,8 +178,8 @@ function createTree(dims: 2 | 3, shared: boolean): GravityTree {
     key: new Uint32Array(0),
     key2: new Uint32Array(0),
     idx2: new Int32Array(0),
-    taskI: new Int32Array(MAX_DEPTH * 8 * 5),
-    taskF: new Float64Array(MAX_DEPTH * 8 * 4),
+    taskI: new Int32Array(MAX_DEPTH * 8 * TASK.INT_STRIDE),
+    taskF: new Float64Array(MAX_DEPTH * 8 * TASK.FLOAT_STRIDE),
     parent: I32(nodes),
     ax: new Float64Array(0),
     ay: new Float64Array(0),
@@ -245,9 +243,9 @@ export function growNodes(t: GravityTree, needed: number): void {
   if (needed <= cap) return;
   let n = cap;
   while (n < needed) n *= 2;
-  const nf = t.dims === 3 ? NF3 : NF2;
+  const nf = t.dims === 3 ? N3.STRIDE : N2.STRIDE;
   t.node = copyInto(f64(t, n * nf), t.node);
-  t.box = copyInto(f64(t, n * 6), t.box);
+  t.box = copyInto(f64(t, n * BOX.NODE_STRIDE), t.box);
   t.start = copyInto(i32(t, n), t.start);
   t.end = copyInto(i32(t, n), t.end);
   t.skip = copyInto(i32(t, n), t.skip);

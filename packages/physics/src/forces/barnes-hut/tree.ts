@@ -4,10 +4,17 @@ import { MIN_PARALLEL_PER_THREAD, runOnPool } from '../../threads/parallel.js';
 import { sharedFloat64, type ThreadPool } from '../../threads/pool.js';
 import { CONTROL } from '../../threads/worker-main.js';
 import type { PhysicsWorld } from '../../world/options.js';
-import { BOX_STRIDE, treeForces, treeGather } from './gather.js';
+import * as BOX from './bounds.js';
+import * as L2 from './field-2d.js';
+import * as L3 from './field-3d.js';
+import { treeForces, treeGather } from './gather.js';
+import * as N2 from './node-2d.js';
+import * as N3 from './node-3d.js';
+import * as TREE_FORCES from './slots/tree-forces.js';
+import * as TREE_GATHER from './slots/tree-gather.js';
 import { buildTreeWith } from './tree-build.js';
-import { f64, type GravityTree, MAX_PARTS, NF2, NF3, NL2, NL3, worldTree } from './tree-store.js';
-import { INFO_STRIDE } from './walk.js';
+import { f64, type GravityTree, MAX_PARTS, worldTree } from './tree-store.js';
+import * as WALK from './walk.js';
 import { barnesHutWalk2 } from './walk-2d.js';
 import { barnesHutWalk3 } from './walk-3d.js';
 
@@ -158,12 +165,12 @@ function treeFieldsWith(
     t.ay.fill(NaN, 0, n);
     t.az.fill(NaN, 0, n);
     // Every force NaN too (m NaN), so the integrator names the bodies.
-    if (forces !== null) treeForces([forces.fx, forces.fy, forces.fz, t.slot, t.m, t.ax, t.ay, t.az], t.walkParams, forces.ents, 0, n);
+    if (forces !== null) treeForces(treeForcesArrays(t, forces), t.walkParams, forces.ents, 0, n);
     return;
   }
   if (n === 0) return;
-  // At most MAX_PARTS parts, and a kernel call's arrays (13, a scratch a part, 5 for the forces) within the pool's limit.
-  const maxParts = Math.min(MAX_PARTS, CONTROL.MAX_ARRAYS - 18);
+  // At most MAX_PARTS parts, and a kernel call's arrays (WALK.SCRATCH, a scratch a part, 5 for the forces) within the pool's limit.
+  const maxParts = Math.min(MAX_PARTS, CONTROL.MAX_ARRAYS - WALK.SCRATCH - (WALK.ENTS + 1));
   let threads =
     pool !== null && t.shared && n >= BARNES_HUT_MIN_PER_THREAD * pool.threads && pool.threads <= maxParts && pool.usable()
       ? pool.threads
@@ -172,7 +179,7 @@ function treeFieldsWith(
   const site = t.dims === 3 ? 'barnes-hut walk 3D' : 'barnes-hut walk 2D';
   const adaptive = threads > 1 && pool!.adaptive;
   if (adaptive && !pool!.chooser.choose(site)) threads = 1;
-  const nl = t.dims === 3 ? NL3 : NL2;
+  const nl = t.dims === 3 ? L3.STRIDE : L2.STRIDE;
   const accOffset = t.start.length * nl,
     size = accOffset + 3 * t.x.length;
   if (t.scratch.length < threads || t.scratch[0]!.length !== size) {
@@ -184,16 +191,16 @@ function treeFieldsWith(
   cutParts(t, threads);
   const arrays = walkArrays(t, threads, forces);
   const P = t.walkParams;
-  P[0] = G;
-  P[1] = eps2;
-  P[2] = openFactor(theta);
-  P[3] = t.nodeCount;
-  P[4] = n;
-  P[5] = accOffset;
-  P[6] = accOffset + t.x.length;
-  P[7] = accOffset + 2 * t.x.length;
-  P[8] = forces !== null ? 1 : 0;
-  P[9] = 13 + threads;
+  P[WALK.G] = G;
+  P[WALK.EPS2] = eps2;
+  P[WALK.OPEN] = openFactor(theta);
+  P[WALK.NODE_COUNT] = t.nodeCount;
+  P[WALK.BODY_COUNT] = n;
+  P[WALK.ACC_X] = accOffset;
+  P[WALK.ACC_Y] = accOffset + t.x.length;
+  P[WALK.ACC_Z] = accOffset + 2 * t.x.length;
+  P[WALK.ADD_FORCES] = forces !== null ? 1 : 0;
+  P[WALK.FORCES_AT] = WALK.SCRATCH + threads;
   const kernel = t.dims === 3 ? barnesHutWalk3 : barnesHutWalk2;
   const t0 = adaptive ? nowMs() : 0;
   if (threads > 1) pool!.run(system, kernel, arrays, P, threads, null);
@@ -201,10 +208,25 @@ function treeFieldsWith(
   if (adaptive) pool!.chooser.record(site, threads > 1, nowMs() - t0, n);
   const info = t.info;
   for (let p = 0; p < threads; p++) {
-    t.stats.cellPairs += info[p * INFO_STRIDE]!;
-    t.stats.bodyPairs += info[p * INFO_STRIDE + 1]!;
-    t.stats.visits += info[p * INFO_STRIDE + 2]!;
+    const o = p * WALK.INFO_STRIDE;
+    t.stats.cellPairs += info[o + WALK.INFO_CELL_PAIRS]!;
+    t.stats.bodyPairs += info[o + WALK.INFO_BODY_PAIRS]!;
+    t.stats.visits += info[o + WALK.INFO_VISITS]!;
   }
+}
+
+/** treeForces' arrays (forces/barnes-hut/slots/tree-forces.ts) for the tree's fields and the world's `forces`. */
+function treeForcesArrays(t: GravityTree, forces: WalkForces): KernelArray[] {
+  const A: KernelArray[] = [];
+  A[TREE_FORCES.FX] = forces.fx;
+  A[TREE_FORCES.FY] = forces.fy;
+  A[TREE_FORCES.FZ] = forces.fz;
+  A[TREE_FORCES.SLOT] = t.slot;
+  A[TREE_FORCES.MASS] = t.m;
+  A[TREE_FORCES.AX] = t.ax;
+  A[TREE_FORCES.AY] = t.ay;
+  A[TREE_FORCES.AZ] = t.az;
+  return A;
 }
 
 /**
@@ -218,7 +240,7 @@ function cutParts(t: GravityTree, parts: number): void {
     n = t.n;
   const prev = t.parts === parts && cut[parts] === n ? parts : 0;
   let total = 0;
-  for (let p = 0; p < prev; p++) total += info[p * INFO_STRIDE + 3]!;
+  for (let p = 0; p < prev; p++) total += info[p * WALK.INFO_STRIDE + WALK.INFO_WORK]!;
   const want = t.cutWant;
   want[0] = 0;
   for (let q = 1; q < parts; q++) {
@@ -228,11 +250,11 @@ function cutParts(t: GravityTree, parts: number): void {
       const goal = (total * q) / parts;
       let acc = 0,
         p = 0;
-      while (p < prev - 1 && acc + info[p * INFO_STRIDE + 3]! < goal) {
-        acc += info[p * INFO_STRIDE + 3]!;
+      while (p < prev - 1 && acc + info[p * WALK.INFO_STRIDE + WALK.INFO_WORK]! < goal) {
+        acc += info[p * WALK.INFO_STRIDE + WALK.INFO_WORK]!;
         p++;
       }
-      const w = info[p * INFO_STRIDE + 3]!,
+      const w = info[p * WALK.INFO_STRIDE + WALK.INFO_WORK]!,
         a = cut[p]!,
         b = cut[p + 1]!;
       s = w > 0 ? Math.round(a + ((goal - acc) / w) * (b - a)) : a;
@@ -263,14 +285,33 @@ function leafStart(t: GravityTree, s: number): number {
 
 /**
  * The kernel's arrays for `parts` parts (order in forces/barnes-hut/walk.ts), in a list kept on the tree,
- * with the force arrays after the parts' scratch (at 13 + parts) when there are `forces`.
+ * with the force arrays after the parts' scratch (at WALK.SCRATCH + parts) when there are `forces`.
  */
 function walkArrays(t: GravityTree, parts: number, forces: WalkForces | null): KernelArray[] {
   const a = t.walkList;
   a.length = 0;
-  a.push(t.x, t.y, t.z, t.m, t.node, t.start, t.end, t.skip, t.ax, t.ay, t.az, t.cut, t.info);
-  for (let p = 0; p < parts; p++) a.push(t.scratch[p]!);
-  if (forces !== null) a.push(forces.fx, forces.fy, forces.fz, t.perm, forces.ents);
+  a[WALK.X] = t.x;
+  a[WALK.Y] = t.y;
+  a[WALK.Z] = t.z;
+  a[WALK.MASS] = t.m;
+  a[WALK.NODE] = t.node;
+  a[WALK.START] = t.start;
+  a[WALK.END] = t.end;
+  a[WALK.SKIP] = t.skip;
+  a[WALK.AX] = t.ax;
+  a[WALK.AY] = t.ay;
+  a[WALK.AZ] = t.az;
+  a[WALK.CUT] = t.cut;
+  a[WALK.INFO] = t.info;
+  for (let p = 0; p < parts; p++) a[WALK.SCRATCH + p] = t.scratch[p]!;
+  if (forces !== null) {
+    const f = WALK.SCRATCH + parts;
+    a[f + WALK.FORCE_X] = forces.fx;
+    a[f + WALK.FORCE_Y] = forces.fy;
+    a[f + WALK.FORCE_Z] = forces.fz;
+    a[f + WALK.PERM] = t.perm;
+    a[f + WALK.ENTS] = forces.ents;
+  }
   return a;
 }
 
@@ -319,7 +360,7 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
   }
   const s = t.slot[i]!;
   const is3D = t.dims === 3,
-    nf = is3D ? NF3 : NF2;
+    nf = is3D ? N3.STRIDE : N2.STRIDE;
   const F = t.node,
     skip = t.skip,
     start = t.start,
@@ -338,11 +379,12 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
   let k = 0;
   while (k < t.nodeCount) {
     const o = k * nf;
-    const Dx = F[o]! - xi,
-      Dy = F[o + 1]! - yi,
-      Dz = is3D ? F[o + 2]! - zi : 0;
+    // The centre of mass is at the same offsets in both dimensions.
+    const Dx = F[o + N2.CX]! - xi,
+      Dy = F[o + N2.CY]! - yi,
+      Dz = is3D ? F[o + N3.CZ]! - zi : 0;
     const u = Dx * Dx + Dy * Dy + Dz * Dz;
-    const r = F[o + (is3D ? 10 : 6)]!;
+    const r = F[o + (is3D ? N3.RADIUS : N2.RADIUS)]!;
     const next = skip[k]!;
     if (!(u > r * r * f)) {
       if (next === k + 1) {
@@ -368,17 +410,17 @@ export function treeField(t: GravityTree, i: number, G: number, eps2: number, th
       g5 = g3 * g2;
     let sx: number, sy: number, sz: number, M: number, tr: number;
     if (is3D) {
-      sx = F[o + 4]! * Dx + F[o + 7]! * Dy + F[o + 8]! * Dz;
-      sy = F[o + 7]! * Dx + F[o + 5]! * Dy + F[o + 9]! * Dz;
-      sz = F[o + 8]! * Dx + F[o + 9]! * Dy + F[o + 6]! * Dz;
-      M = F[o + 3]!;
-      tr = F[o + 4]! + F[o + 5]! + F[o + 6]!;
+      sx = F[o + N3.SXX]! * Dx + F[o + N3.SXY]! * Dy + F[o + N3.SXZ]! * Dz;
+      sy = F[o + N3.SXY]! * Dx + F[o + N3.SYY]! * Dy + F[o + N3.SYZ]! * Dz;
+      sz = F[o + N3.SXZ]! * Dx + F[o + N3.SYZ]! * Dy + F[o + N3.SZZ]! * Dz;
+      M = F[o + N3.MASS]!;
+      tr = F[o + N3.SXX]! + F[o + N3.SYY]! + F[o + N3.SZZ]!;
     } else {
-      sx = F[o + 3]! * Dx + F[o + 4]! * Dy;
-      sy = F[o + 4]! * Dx + F[o + 5]! * Dy;
+      sx = F[o + N2.SXX]! * Dx + F[o + N2.SXY]! * Dy;
+      sy = F[o + N2.SXY]! * Dx + F[o + N2.SYY]! * Dy;
       sz = 0;
-      M = F[o + 2]!;
-      tr = F[o + 3]! + F[o + 5]!;
+      M = F[o + N2.MASS]!;
+      tr = F[o + N2.SXX]! + F[o + N2.SYY]!;
     }
     const w = M * g3 + g5 * (7.5 * g2 * (Dx * sx + Dy * sy + Dz * sz) - 1.5 * tr);
     ax += w * Dx - 3 * g5 * sx;
@@ -405,9 +447,9 @@ function gatherScratch(world: PhysicsWorld, n: number, shared: boolean): Gathere
   if (!holder.gravityGather || holder.gravityGather.ents.length < n) {
     const size = Math.max(n, 2 * (holder.gravityGather?.ents.length ?? 0), 1024);
     const f = (k: number): Float64Array => (shared ? sharedFloat64(k) : new Float64Array(k));
-    // x, y, z, m, and the bounding box of each thread's range (BOX_STRIDE slots a thread).
+    // x, y, z, m, and the bounding box of each thread's range (BOX.RANGE_STRIDE slots a thread).
     holder.gravityGather = {
-      f: [f(size), f(size), f(size), f(size), f(BOX_STRIDE * 64)],
+      f: [f(size), f(size), f(size), f(size), f(BOX.RANGE_STRIDE * 64)],
       ents: shared ? new Int32Array(new SharedArrayBuffer(4 * size)) : new Int32Array(size),
     };
   }
@@ -439,21 +481,32 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
     gz = xs[2]!,
     gm = xs[3]!,
     box = xs[4]!;
-  const arrays = [c.Position.x, c.Position.y, c.Position.z, c.Mass.value, gx, gy, gz, gm, box, gathered.ents] as KernelArray[];
+  const arrays: KernelArray[] = [];
+  arrays[TREE_GATHER.PX] = c.Position.x;
+  arrays[TREE_GATHER.PY] = c.Position.y;
+  arrays[TREE_GATHER.PZ] = c.Position.z;
+  arrays[TREE_GATHER.MASS] = c.Mass.value;
+  arrays[TREE_GATHER.GX] = gx;
+  arrays[TREE_GATHER.GY] = gy;
+  arrays[TREE_GATHER.GZ] = gz;
+  arrays[TREE_GATHER.GM] = gm;
+  arrays[TREE_GATHER.BOX] = box;
+  arrays[TREE_GATHER.ENTS] = gathered.ents;
+  // The gather's numbers, in the sort's parameter array (buildTreeWith writes the sort's over them).
   const P = t.keyParams;
-  P[0] = world.dimensions;
+  P[TREE_GATHER.DIMENSIONS] = world.dimensions;
   const system = 'mutualGravitySystem (Barnes-Hut)';
   let parts = world.threadPool?.threads ?? 1;
   // Neutral boxes for the other ranges: an adaptive pool may run the kernel as one range (part 0).
   for (let p = 1; p < parts; p++) {
-    const o = p * BOX_STRIDE;
-    box[o] = Infinity;
-    box[o + 1] = Infinity;
-    box[o + 2] = Infinity;
-    box[o + 3] = -Infinity;
-    box[o + 4] = -Infinity;
-    box[o + 5] = -Infinity;
-    box[o + 6] = 0;
+    const o = p * BOX.RANGE_STRIDE;
+    box[o + BOX.MIN_X] = Infinity;
+    box[o + BOX.MIN_Y] = Infinity;
+    box[o + BOX.MIN_Z] = Infinity;
+    box[o + BOX.MAX_X] = -Infinity;
+    box[o + BOX.MAX_Y] = -Infinity;
+    box[o + BOX.MAX_Z] = -Infinity;
+    box[o + BOX.NON_FINITE] = 0;
   }
   if (runOnPool(world.threadPool, system, treeGather, arrays, P, n, ents, MIN_PARALLEL_PER_THREAD) === null) {
     parts = 1;
@@ -461,12 +514,15 @@ function worldTreeFieldsWith(world: PhysicsWorld, ents: ArrayLike<number>, addFo
   }
   // The bounding box over the ranges (min and max: exact in any order).
   for (let p = 1; p < parts; p++) {
-    const o = p * BOX_STRIDE;
+    const o = p * BOX.RANGE_STRIDE;
+    // Axis q's smallest at MIN_X + q, its largest at MAX_X + q.
     for (let q = 0; q < 3; q++) {
-      if (box[o + q]! < box[q]!) box[q] = box[o + q]!;
-      if (box[o + 3 + q]! > box[3 + q]!) box[3 + q] = box[o + 3 + q]!;
+      const lo = BOX.MIN_X + q,
+        hi = BOX.MAX_X + q;
+      if (box[o + lo]! < box[lo]!) box[lo] = box[o + lo]!;
+      if (box[o + hi]! > box[hi]!) box[hi] = box[o + hi]!;
     }
-    if (box[o + 6] !== 0) box[6] = 1;
+    if (box[o + BOX.NON_FINITE] !== 0) box[BOX.NON_FINITE] = 1;
   }
   buildTreeWith(t, n, gx, gy, gz, gm, box, world.threadPool);
   const L = world.laws;

@@ -1,4 +1,7 @@
 import type { KernelArray } from '../../threads/kernel-types.js';
+import * as L2 from './field-2d.js';
+import * as N2 from './node-2d.js';
+import * as WALK from './walk.js';
 
 /** The 2D dual-tree walk and downward pass of the Barnes-Hut evaluation (see walk.ts), a thread kernel. */
 
@@ -7,36 +10,34 @@ import type { KernelArray } from '../../threads/kernel-types.js';
  * @category Forces
  */
 export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const X = A[0] as Float64Array,
-    Y = A[1] as Float64Array,
-    Mb = A[3] as Float64Array,
-    F = A[4] as Float64Array;
-  const start = A[5] as Int32Array,
-    end = A[6] as Int32Array,
-    skip = A[7] as Int32Array;
-  const OX = A[8] as Float64Array,
-    OY = A[9] as Float64Array,
-    OZ = A[10] as Float64Array;
-  const cut = A[11] as Int32Array,
-    info = A[12] as Float64Array;
-  const G = P[0]!,
-    eps2 = P[1]!,
-    f = P[2]!,
-    nodeCount = P[3]!,
-    offX = P[5]!,
-    offY = P[6]!,
-    addForces = P[8] === 1;
-  const fa = P[9]!,
-    FX = A[fa] as Float64Array,
-    FY = A[fa + 1] as Float64Array,
-    perm = A[fa + 3] as Int32Array,
-    ents = A[fa + 4] as Int32Array;
-  const NF = 12,
-    NL = 14,
-    third = 1 / 3;
+  const X = A[WALK.X] as Float64Array,
+    Y = A[WALK.Y] as Float64Array,
+    Mb = A[WALK.MASS] as Float64Array,
+    F = A[WALK.NODE] as Float64Array;
+  const start = A[WALK.START] as Int32Array,
+    end = A[WALK.END] as Int32Array,
+    skip = A[WALK.SKIP] as Int32Array;
+  const OX = A[WALK.AX] as Float64Array,
+    OY = A[WALK.AY] as Float64Array,
+    OZ = A[WALK.AZ] as Float64Array;
+  const cut = A[WALK.CUT] as Int32Array,
+    info = A[WALK.INFO] as Float64Array;
+  const G = P[WALK.G]!,
+    eps2 = P[WALK.EPS2]!,
+    f = P[WALK.OPEN]!,
+    nodeCount = P[WALK.NODE_COUNT]!,
+    offX = P[WALK.ACC_X]!,
+    offY = P[WALK.ACC_Y]!,
+    addForces = P[WALK.ADD_FORCES] === 1;
+  const fa = P[WALK.FORCES_AT]!,
+    FX = A[fa + WALK.FORCE_X] as Float64Array,
+    FY = A[fa + WALK.FORCE_Y] as Float64Array,
+    perm = A[fa + WALK.PERM] as Int32Array,
+    ents = A[fa + WALK.ENTS] as Int32Array;
+  const third = 1 / 3;
   let st = new Int32Array(4096);
   for (let part = lo; part < hi; part++) {
-    const L = A[13 + part] as Float64Array;
+    const L = A[WALK.SCRATCH + part] as Float64Array;
     const s0 = cut[part]!,
       s1 = cut[part + 1]!;
     let cellPairs = 0,
@@ -44,16 +45,16 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
       visits = 0,
       work = 0;
     if (s0 >= s1) {
-      info[part * 4] = 0;
-      info[part * 4 + 1] = 0;
-      info[part * 4 + 2] = 0;
-      info[part * 4 + 3] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_CELL_PAIRS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_BODY_PAIRS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_VISITS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_WORK] = 0;
       continue;
     }
     // Zero the part's accumulators: the nodes holding some of its slots, and its slots.
     for (let k = 0; k < nodeCount; ) {
       if (start[k]! < s1 && end[k]! > s0) {
-        L.fill(0, k * NL, k * NL + NL);
+        L.fill(0, k * L2.STRIDE, k * L2.STRIDE + L2.STRIDE);
         k++;
       } else k = skip[k]!;
     }
@@ -72,7 +73,7 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
       if (!(lo1 < s1 && hi1 > s0) && !(lo2 < s1 && hi2 > s0)) continue;
       const mine = lo1 >= s0 && lo1 < s1;
       if (mine) visits++;
-      work += 1;
+      work += WALK.WORK_VISIT;
       if (sp + 80 > st.length) {
         const grown = new Int32Array(2 * st.length);
         grown.set(st);
@@ -94,13 +95,13 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
       }
       const na = hi1 - lo1,
         nb = hi2 - lo2;
-      const oa = a * NF,
-        ob = b * NF;
-      const Rx = F[ob]! - F[oa]!,
-        Ry = F[ob + 1]! - F[oa + 1]!;
+      const oa = a * N2.STRIDE,
+        ob = b * N2.STRIDE;
+      const Rx = F[ob + N2.CX]! - F[oa + N2.CX]!,
+        Ry = F[ob + N2.CY]! - F[oa + N2.CY]!;
       const u = Rx * Rx + Ry * Ry;
-      const ra = F[oa + 6]!,
-        rb = F[ob + 6]!,
+      const ra = F[oa + N2.RADIUS]!,
+        rb = F[ob + N2.RADIUS]!,
         rs = ra + rb;
       const leafA = skip[a] === a + 1,
         leafB = skip[b] === b + 1;
@@ -139,11 +140,11 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         // terms change sign with the direction R).
         for (let side = 0; side < 2; side++) {
           const o = side === 0 ? ob : oa,
-            l = (side === 0 ? a : b) * NL,
+            l = (side === 0 ? a : b) * L2.STRIDE,
             sg = side === 0 ? -1 : 1;
-          const sxx = F[o + 3]!,
-            sxy = F[o + 4]!,
-            syy = F[o + 5]!;
+          const sxx = F[o + N2.SXX]!,
+            sxy = F[o + N2.SXY]!,
+            syy = F[o + N2.SYY]!;
           const srx = sxx * X1 + sxy * Y1,
             sry = sxy * X1 + syy * Y1,
             rsr = X1 * srx + Y1 * sry,
@@ -155,10 +156,10 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const pxx = 0.5 * (x2 * c1 + c0) + 2 * D3 * X1 * srx + D2 * sxx;
           const pxy = 0.5 * xy * c1 + D3 * (srx * Y1 + X1 * sry) + D2 * sxy;
           const pyy = 0.5 * (y2 * c1 + c0) + 2 * D3 * Y1 * sry + D2 * syy;
-          const txxx = F[o + 7]!,
-            txxy = F[o + 8]!,
-            txyy = F[o + 9]!,
-            tyyy = F[o + 10]!;
+          const txxx = F[o + N2.TXXX]!,
+            txxy = F[o + N2.TXXY]!,
+            txyy = F[o + N2.TXYY]!,
+            tyyy = F[o + N2.TYYY]!;
           const s3x = txxx * x2 + 2 * txxy * xy + txyy * y2,
             s3y = txxy * x2 + 2 * txyy * xy + tyyy * y2;
           const vx = txxx + txyy,
@@ -166,25 +167,25 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const c3 = D4 * (X1 * s3x + Y1 * s3y) + 3 * D3 * (vx * X1 + vy * Y1);
           const ox = (X1 * c3 + 3 * D3 * s3x + 3 * D2 * vx) / 6,
             oy = (Y1 * c3 + 3 * D3 * s3y + 3 * D2 * vy) / 6;
-          const M = F[o + 2]!,
+          const M = F[o + N2.MASS]!,
             Ms = sg * M;
-          L[l] = L[l]! + (sg * (M * t1x + qx) - ox);
-          L[l + 1] = L[l + 1]! + (sg * (M * t1y + qy) - oy);
-          L[l + 2] = L[l + 2]! + M * t2xx + pxx;
-          L[l + 3] = L[l + 3]! + M * t2xy + pxy;
-          L[l + 4] = L[l + 4]! + M * t2yy + pyy;
-          L[l + 5] = L[l + 5]! + Ms * t3xxx;
-          L[l + 6] = L[l + 6]! + Ms * t3xxy;
-          L[l + 7] = L[l + 7]! + Ms * t3xyy;
-          L[l + 8] = L[l + 8]! + Ms * t3yyy;
-          L[l + 9] = L[l + 9]! + M * t4xxxx;
-          L[l + 10] = L[l + 10]! + M * t4xxxy;
-          L[l + 11] = L[l + 11]! + M * t4xxyy;
-          L[l + 12] = L[l + 12]! + M * t4xyyy;
-          L[l + 13] = L[l + 13]! + M * t4yyyy;
+          L[l + L2.A0X] = L[l + L2.A0X]! + (sg * (M * t1x + qx) - ox);
+          L[l + L2.A0Y] = L[l + L2.A0Y]! + (sg * (M * t1y + qy) - oy);
+          L[l + L2.JXX] = L[l + L2.JXX]! + M * t2xx + pxx;
+          L[l + L2.JXY] = L[l + L2.JXY]! + M * t2xy + pxy;
+          L[l + L2.JYY] = L[l + L2.JYY]! + M * t2yy + pyy;
+          L[l + L2.KXXX] = L[l + L2.KXXX]! + Ms * t3xxx;
+          L[l + L2.KXXY] = L[l + L2.KXXY]! + Ms * t3xxy;
+          L[l + L2.KXYY] = L[l + L2.KXYY]! + Ms * t3xyy;
+          L[l + L2.KYYY] = L[l + L2.KYYY]! + Ms * t3yyy;
+          L[l + L2.HXXXX] = L[l + L2.HXXXX]! + M * t4xxxx;
+          L[l + L2.HXXXY] = L[l + L2.HXXXY]! + M * t4xxxy;
+          L[l + L2.HXXYY] = L[l + L2.HXXYY]! + M * t4xxyy;
+          L[l + L2.HXYYY] = L[l + L2.HXYYY]! + M * t4xyyy;
+          L[l + L2.HYYYY] = L[l + L2.HYYYY]! + M * t4yyyy;
         }
         if (mine) cellPairs++;
-        work += 8;
+        work += WALK.WORK_CELL_PAIR;
         continue;
       }
       if (many && !(leafA && leafB)) {
@@ -241,24 +242,24 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         k = sk;
         continue;
       }
-      const o = k * NF,
-        l = k * NL;
-      const cx = F[o]!,
-        cy = F[o + 1]!;
-      const a0x = L[l]!,
-        a0y = L[l + 1]!,
-        jxx = L[l + 2]!,
-        jxy = L[l + 3]!,
-        jyy = L[l + 4]!;
-      const kxxx = L[l + 5]!,
-        kxxy = L[l + 6]!,
-        kxyy = L[l + 7]!,
-        kyyy = L[l + 8]!;
-      const h0 = L[l + 9]!,
-        h1 = L[l + 10]!,
-        h2 = L[l + 11]!,
-        h3 = L[l + 12]!,
-        h4 = L[l + 13]!;
+      const o = k * N2.STRIDE,
+        l = k * L2.STRIDE;
+      const cx = F[o + N2.CX]!,
+        cy = F[o + N2.CY]!;
+      const a0x = L[l + L2.A0X]!,
+        a0y = L[l + L2.A0Y]!,
+        jxx = L[l + L2.JXX]!,
+        jxy = L[l + L2.JXY]!,
+        jyy = L[l + L2.JYY]!;
+      const kxxx = L[l + L2.KXXX]!,
+        kxxy = L[l + L2.KXXY]!,
+        kxyy = L[l + L2.KXYY]!,
+        kyyy = L[l + L2.KYYY]!;
+      const h0 = L[l + L2.HXXXX]!,
+        h1 = L[l + L2.HXXXY]!,
+        h2 = L[l + L2.HXXYY]!,
+        h3 = L[l + L2.HXYYY]!,
+        h4 = L[l + L2.HYYYY]!;
       if (sk === k + 1) {
         for (let s = start[k]!, e = end[k]!; s < e; s++) {
           const dx = X[s]! - cx,
@@ -290,10 +291,10 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
       }
       for (let c = k + 1; c < sk; c = skip[c]!) {
         if (!(start[c]! < s1 && end[c]! > s0)) continue;
-        const oc = c * NF,
-          lc = c * NL;
-        const dx = F[oc]! - cx,
-          dy = F[oc + 1]! - cy;
+        const oc = c * N2.STRIDE,
+          lc = c * L2.STRIDE;
+        const dx = F[oc + N2.CX]! - cx,
+          dy = F[oc + N2.CY]! - cy;
         // Hd, then K' = K + Hd, J' = J + (K + Hd / 2) d, a0' = a0 + (J + (K + Hd / 3) d / 2) d.
         const hd0 = h0 * dx + h1 * dy,
           hd1 = h1 * dx + h2 * dy,
@@ -306,31 +307,31 @@ export function barnesHutWalk2(A: KernelArray[], P: Float64Array, ids: Int32Arra
         const j0 = jxx + 0.5 * (k0 * dx + k1 * dy),
           j1 = jxy + 0.5 * (k1 * dx + k2 * dy),
           j2 = jyy + 0.5 * (k2 * dx + k3 * dy);
-        L[lc] = L[lc]! + a0x + j0 * dx + j1 * dy;
-        L[lc + 1] = L[lc + 1]! + a0y + j1 * dx + j2 * dy;
+        L[lc + L2.A0X] = L[lc + L2.A0X]! + a0x + j0 * dx + j1 * dy;
+        L[lc + L2.A0Y] = L[lc + L2.A0Y]! + a0y + j1 * dx + j2 * dy;
         k0 = kxxx + 0.5 * hd0;
         k1 = kxxy + 0.5 * hd1;
         k2 = kxyy + 0.5 * hd2;
         k3 = kyyy + 0.5 * hd3;
-        L[lc + 2] = L[lc + 2]! + jxx + k0 * dx + k1 * dy;
-        L[lc + 3] = L[lc + 3]! + jxy + k1 * dx + k2 * dy;
-        L[lc + 4] = L[lc + 4]! + jyy + k2 * dx + k3 * dy;
-        L[lc + 5] = L[lc + 5]! + kxxx + hd0;
-        L[lc + 6] = L[lc + 6]! + kxxy + hd1;
-        L[lc + 7] = L[lc + 7]! + kxyy + hd2;
-        L[lc + 8] = L[lc + 8]! + kyyy + hd3;
-        L[lc + 9] = L[lc + 9]! + h0;
-        L[lc + 10] = L[lc + 10]! + h1;
-        L[lc + 11] = L[lc + 11]! + h2;
-        L[lc + 12] = L[lc + 12]! + h3;
-        L[lc + 13] = L[lc + 13]! + h4;
+        L[lc + L2.JXX] = L[lc + L2.JXX]! + jxx + k0 * dx + k1 * dy;
+        L[lc + L2.JXY] = L[lc + L2.JXY]! + jxy + k1 * dx + k2 * dy;
+        L[lc + L2.JYY] = L[lc + L2.JYY]! + jyy + k2 * dx + k3 * dy;
+        L[lc + L2.KXXX] = L[lc + L2.KXXX]! + kxxx + hd0;
+        L[lc + L2.KXXY] = L[lc + L2.KXXY]! + kxxy + hd1;
+        L[lc + L2.KXYY] = L[lc + L2.KXYY]! + kxyy + hd2;
+        L[lc + L2.KYYY] = L[lc + L2.KYYY]! + kyyy + hd3;
+        L[lc + L2.HXXXX] = L[lc + L2.HXXXX]! + h0;
+        L[lc + L2.HXXXY] = L[lc + L2.HXXXY]! + h1;
+        L[lc + L2.HXXYY] = L[lc + L2.HXXYY]! + h2;
+        L[lc + L2.HXYYY] = L[lc + L2.HXYYY]! + h3;
+        L[lc + L2.HYYYY] = L[lc + L2.HYYYY]! + h4;
       }
       k++;
     }
-    info[part * 4] = cellPairs;
-    info[part * 4 + 1] = bodyPairs;
-    info[part * 4 + 2] = visits;
-    info[part * 4 + 3] = work;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_CELL_PAIRS] = cellPairs;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_BODY_PAIRS] = bodyPairs;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_VISITS] = visits;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_WORK] = work;
   }
   return ids === null ? 0 : 0;
 }

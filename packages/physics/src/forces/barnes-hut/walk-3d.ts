@@ -1,4 +1,7 @@
 import type { KernelArray } from '../../threads/kernel-types.js';
+import * as L3 from './field-3d.js';
+import * as N3 from './node-3d.js';
+import * as WALK from './walk.js';
 
 /** The 3D dual-tree walk and downward pass of the Barnes-Hut evaluation (see walk.ts), a thread kernel. */
 
@@ -7,38 +10,36 @@ import type { KernelArray } from '../../threads/kernel-types.js';
  * @category Forces
  */
 export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Array | null, lo: number, hi: number): number {
-  const X = A[0] as Float64Array,
-    Y = A[1] as Float64Array,
-    Z = A[2] as Float64Array,
-    Mb = A[3] as Float64Array;
-  const F = A[4] as Float64Array,
-    start = A[5] as Int32Array,
-    end = A[6] as Int32Array,
-    skip = A[7] as Int32Array;
-  const OX = A[8] as Float64Array,
-    OY = A[9] as Float64Array,
-    OZ = A[10] as Float64Array;
-  const cut = A[11] as Int32Array,
-    info = A[12] as Float64Array;
-  const G = P[0]!,
-    eps2 = P[1]!,
-    f = P[2]!,
-    nodeCount = P[3]!,
-    offX = P[5]!,
-    offY = P[6]!,
-    offZ = P[7]!,
-    addForces = P[8] === 1;
-  const fa = P[9]!,
-    FX = A[fa] as Float64Array,
-    FY = A[fa + 1] as Float64Array,
-    FZ = A[fa + 2] as Float64Array;
-  const perm = A[fa + 3] as Int32Array,
-    ents = A[fa + 4] as Int32Array;
-  const NF = 12,
-    NL = 19;
+  const X = A[WALK.X] as Float64Array,
+    Y = A[WALK.Y] as Float64Array,
+    Z = A[WALK.Z] as Float64Array,
+    Mb = A[WALK.MASS] as Float64Array;
+  const F = A[WALK.NODE] as Float64Array,
+    start = A[WALK.START] as Int32Array,
+    end = A[WALK.END] as Int32Array,
+    skip = A[WALK.SKIP] as Int32Array;
+  const OX = A[WALK.AX] as Float64Array,
+    OY = A[WALK.AY] as Float64Array,
+    OZ = A[WALK.AZ] as Float64Array;
+  const cut = A[WALK.CUT] as Int32Array,
+    info = A[WALK.INFO] as Float64Array;
+  const G = P[WALK.G]!,
+    eps2 = P[WALK.EPS2]!,
+    f = P[WALK.OPEN]!,
+    nodeCount = P[WALK.NODE_COUNT]!,
+    offX = P[WALK.ACC_X]!,
+    offY = P[WALK.ACC_Y]!,
+    offZ = P[WALK.ACC_Z]!,
+    addForces = P[WALK.ADD_FORCES] === 1;
+  const fa = P[WALK.FORCES_AT]!,
+    FX = A[fa + WALK.FORCE_X] as Float64Array,
+    FY = A[fa + WALK.FORCE_Y] as Float64Array,
+    FZ = A[fa + WALK.FORCE_Z] as Float64Array;
+  const perm = A[fa + WALK.PERM] as Int32Array,
+    ents = A[fa + WALK.ENTS] as Int32Array;
   let st = new Int32Array(8192);
   for (let part = lo; part < hi; part++) {
-    const L = A[13 + part] as Float64Array;
+    const L = A[WALK.SCRATCH + part] as Float64Array;
     const s0 = cut[part]!,
       s1 = cut[part + 1]!;
     let cellPairs = 0,
@@ -46,15 +47,15 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
       visits = 0,
       work = 0;
     if (s0 >= s1) {
-      info[part * 4] = 0;
-      info[part * 4 + 1] = 0;
-      info[part * 4 + 2] = 0;
-      info[part * 4 + 3] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_CELL_PAIRS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_BODY_PAIRS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_VISITS] = 0;
+      info[part * WALK.INFO_STRIDE + WALK.INFO_WORK] = 0;
       continue;
     }
     for (let k = 0; k < nodeCount; ) {
       if (start[k]! < s1 && end[k]! > s0) {
-        L.fill(0, k * NL, k * NL + NL);
+        L.fill(0, k * L3.STRIDE, k * L3.STRIDE + L3.STRIDE);
         k++;
       } else k = skip[k]!;
     }
@@ -74,7 +75,7 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
       if (!(lo1 < s1 && hi1 > s0) && !(lo2 < s1 && hi2 > s0)) continue;
       const mine = lo1 >= s0 && lo1 < s1;
       if (mine) visits++;
-      work += 1;
+      work += WALK.WORK_VISIT;
       if (sp + 160 > st.length) {
         const grown = new Int32Array(2 * st.length);
         grown.set(st);
@@ -96,14 +97,14 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
       }
       const na = hi1 - lo1,
         nb = hi2 - lo2;
-      const oa = a * NF,
-        ob = b * NF;
-      const Rx = F[ob]! - F[oa]!,
-        Ry = F[ob + 1]! - F[oa + 1]!,
-        Rz = F[ob + 2]! - F[oa + 2]!;
+      const oa = a * N3.STRIDE,
+        ob = b * N3.STRIDE;
+      const Rx = F[ob + N3.CX]! - F[oa + N3.CX]!,
+        Ry = F[ob + N3.CY]! - F[oa + N3.CY]!,
+        Rz = F[ob + N3.CZ]! - F[oa + N3.CZ]!;
       const u = Rx * Rx + Ry * Ry + Rz * Rz;
-      const ra = F[oa + 10]!,
-        rb = F[ob + 10]!,
+      const ra = F[oa + N3.RADIUS]!,
+        rb = F[ob + N3.RADIUS]!,
         rs = ra + rb;
       const leafA = skip[a] === a + 1,
         leafB = skip[b] === b + 1;
@@ -146,14 +147,14 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
         // terms change sign with the direction R).
         for (let side = 0; side < 2; side++) {
           const o = side === 0 ? ob : oa,
-            l = (side === 0 ? a : b) * NL,
+            l = (side === 0 ? a : b) * L3.STRIDE,
             sg = side === 0 ? -1 : 1;
-          const sxx = F[o + 4]!,
-            syy = F[o + 5]!,
-            szz = F[o + 6]!,
-            sxy = F[o + 7]!,
-            sxz = F[o + 8]!,
-            syz = F[o + 9]!;
+          const sxx = F[o + N3.SXX]!,
+            syy = F[o + N3.SYY]!,
+            szz = F[o + N3.SZZ]!,
+            sxy = F[o + N3.SXY]!,
+            sxz = F[o + N3.SXZ]!,
+            syz = F[o + N3.SYZ]!;
           const srx = sxx * X1 + sxy * Y1 + sxz * Z1,
             sry = sxy * X1 + syy * Y1 + syz * Z1,
             srz = sxz * X1 + syz * Y1 + szz * Z1;
@@ -161,30 +162,30 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
           const qx = 0.5 * (X1 * kk + 2 * D2 * srx),
             qy = 0.5 * (Y1 * kk + 2 * D2 * sry),
             qz = 0.5 * (Z1 * kk + 2 * D2 * srz);
-          const M = F[o + 3]!,
+          const M = F[o + N3.MASS]!,
             Ms = sg * M;
-          L[l] = L[l]! + sg * (M * t1x + qx);
-          L[l + 1] = L[l + 1]! + sg * (M * t1y + qy);
-          L[l + 2] = L[l + 2]! + sg * (M * t1z + qz);
-          L[l + 3] = L[l + 3]! + M * t2xx;
-          L[l + 4] = L[l + 4]! + M * t2yy;
-          L[l + 5] = L[l + 5]! + M * t2zz;
-          L[l + 6] = L[l + 6]! + M * t2xy;
-          L[l + 7] = L[l + 7]! + M * t2xz;
-          L[l + 8] = L[l + 8]! + M * t2yz;
-          L[l + 9] = L[l + 9]! + Ms * t3xxx;
-          L[l + 10] = L[l + 10]! + Ms * t3xxy;
-          L[l + 11] = L[l + 11]! + Ms * t3xxz;
-          L[l + 12] = L[l + 12]! + Ms * t3xyy;
-          L[l + 13] = L[l + 13]! + Ms * t3xyz;
-          L[l + 14] = L[l + 14]! + Ms * t3xzz;
-          L[l + 15] = L[l + 15]! + Ms * t3yyy;
-          L[l + 16] = L[l + 16]! + Ms * t3yyz;
-          L[l + 17] = L[l + 17]! + Ms * t3yzz;
-          L[l + 18] = L[l + 18]! + Ms * t3zzz;
+          L[l + L3.A0X] = L[l + L3.A0X]! + sg * (M * t1x + qx);
+          L[l + L3.A0Y] = L[l + L3.A0Y]! + sg * (M * t1y + qy);
+          L[l + L3.A0Z] = L[l + L3.A0Z]! + sg * (M * t1z + qz);
+          L[l + L3.JXX] = L[l + L3.JXX]! + M * t2xx;
+          L[l + L3.JYY] = L[l + L3.JYY]! + M * t2yy;
+          L[l + L3.JZZ] = L[l + L3.JZZ]! + M * t2zz;
+          L[l + L3.JXY] = L[l + L3.JXY]! + M * t2xy;
+          L[l + L3.JXZ] = L[l + L3.JXZ]! + M * t2xz;
+          L[l + L3.JYZ] = L[l + L3.JYZ]! + M * t2yz;
+          L[l + L3.KXXX] = L[l + L3.KXXX]! + Ms * t3xxx;
+          L[l + L3.KXXY] = L[l + L3.KXXY]! + Ms * t3xxy;
+          L[l + L3.KXXZ] = L[l + L3.KXXZ]! + Ms * t3xxz;
+          L[l + L3.KXYY] = L[l + L3.KXYY]! + Ms * t3xyy;
+          L[l + L3.KXYZ] = L[l + L3.KXYZ]! + Ms * t3xyz;
+          L[l + L3.KXZZ] = L[l + L3.KXZZ]! + Ms * t3xzz;
+          L[l + L3.KYYY] = L[l + L3.KYYY]! + Ms * t3yyy;
+          L[l + L3.KYYZ] = L[l + L3.KYYZ]! + Ms * t3yyz;
+          L[l + L3.KYZZ] = L[l + L3.KYZZ]! + Ms * t3yzz;
+          L[l + L3.KZZZ] = L[l + L3.KZZZ]! + Ms * t3zzz;
         }
         if (mine) cellPairs++;
-        work += 8;
+        work += WALK.WORK_CELL_PAIR;
         continue;
       }
       if (many && !(leafA && leafB)) {
@@ -246,30 +247,30 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
         k = sk;
         continue;
       }
-      const o = k * NF,
-        l = k * NL;
-      const cx = F[o]!,
-        cy = F[o + 1]!,
-        cz = F[o + 2]!;
-      const a0x = L[l]!,
-        a0y = L[l + 1]!,
-        a0z = L[l + 2]!;
-      const jxx = L[l + 3]!,
-        jyy = L[l + 4]!,
-        jzz = L[l + 5]!,
-        jxy = L[l + 6]!,
-        jxz = L[l + 7]!,
-        jyz = L[l + 8]!;
-      const kxxx = L[l + 9]!,
-        kxxy = L[l + 10]!,
-        kxxz = L[l + 11]!,
-        kxyy = L[l + 12]!,
-        kxyz = L[l + 13]!;
-      const kxzz = L[l + 14]!,
-        kyyy = L[l + 15]!,
-        kyyz = L[l + 16]!,
-        kyzz = L[l + 17]!,
-        kzzz = L[l + 18]!;
+      const o = k * N3.STRIDE,
+        l = k * L3.STRIDE;
+      const cx = F[o + N3.CX]!,
+        cy = F[o + N3.CY]!,
+        cz = F[o + N3.CZ]!;
+      const a0x = L[l + L3.A0X]!,
+        a0y = L[l + L3.A0Y]!,
+        a0z = L[l + L3.A0Z]!;
+      const jxx = L[l + L3.JXX]!,
+        jyy = L[l + L3.JYY]!,
+        jzz = L[l + L3.JZZ]!,
+        jxy = L[l + L3.JXY]!,
+        jxz = L[l + L3.JXZ]!,
+        jyz = L[l + L3.JYZ]!;
+      const kxxx = L[l + L3.KXXX]!,
+        kxxy = L[l + L3.KXXY]!,
+        kxxz = L[l + L3.KXXZ]!,
+        kxyy = L[l + L3.KXYY]!,
+        kxyz = L[l + L3.KXYZ]!;
+      const kxzz = L[l + L3.KXZZ]!,
+        kyyy = L[l + L3.KYYY]!,
+        kyyz = L[l + L3.KYYZ]!,
+        kyzz = L[l + L3.KYZZ]!,
+        kzzz = L[l + L3.KZZZ]!;
       if (sk === k + 1) {
         for (let s = start[k]!, e = end[k]!; s < e; s++) {
           const dx = X[s]! - cx,
@@ -301,34 +302,34 @@ export function barnesHutWalk3(A: KernelArray[], P: Float64Array, ids: Int32Arra
       }
       for (let c = k + 1; c < sk; c = skip[c]!) {
         if (!(start[c]! < s1 && end[c]! > s0)) continue;
-        const oc = c * NF,
-          lc = c * NL;
-        const dx = F[oc]! - cx,
-          dy = F[oc + 1]! - cy,
-          dz = F[oc + 2]! - cz;
+        const oc = c * N3.STRIDE,
+          lc = c * L3.STRIDE;
+        const dx = F[oc + N3.CX]! - cx,
+          dy = F[oc + N3.CY]! - cy,
+          dz = F[oc + N3.CZ]! - cz;
         const kdxx = kxxx * dx + kxxy * dy + kxxz * dz,
           kdyy = kxyy * dx + kyyy * dy + kyyz * dz;
         const kdzz = kxzz * dx + kyzz * dy + kzzz * dz,
           kdxy = kxxy * dx + kxyy * dy + kxyz * dz;
         const kdxz = kxxz * dx + kxyz * dy + kxzz * dz,
           kdyz = kxyz * dx + kyyz * dy + kyzz * dz;
-        L[lc] = L[lc]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
-        L[lc + 1] = L[lc + 1]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
-        L[lc + 2] = L[lc + 2]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
-        L[lc + 3] = L[lc + 3]! + jxx + kdxx;
-        L[lc + 4] = L[lc + 4]! + jyy + kdyy;
-        L[lc + 5] = L[lc + 5]! + jzz + kdzz;
-        L[lc + 6] = L[lc + 6]! + jxy + kdxy;
-        L[lc + 7] = L[lc + 7]! + jxz + kdxz;
-        L[lc + 8] = L[lc + 8]! + jyz + kdyz;
-        for (let q = 9; q < NL; q++) L[lc + q] = L[lc + q]! + L[l + q]!;
+        L[lc + L3.A0X] = L[lc + L3.A0X]! + a0x + jxx * dx + jxy * dy + jxz * dz + 0.5 * (kdxx * dx + kdxy * dy + kdxz * dz);
+        L[lc + L3.A0Y] = L[lc + L3.A0Y]! + a0y + jxy * dx + jyy * dy + jyz * dz + 0.5 * (kdxy * dx + kdyy * dy + kdyz * dz);
+        L[lc + L3.A0Z] = L[lc + L3.A0Z]! + a0z + jxz * dx + jyz * dy + jzz * dz + 0.5 * (kdxz * dx + kdyz * dy + kdzz * dz);
+        L[lc + L3.JXX] = L[lc + L3.JXX]! + jxx + kdxx;
+        L[lc + L3.JYY] = L[lc + L3.JYY]! + jyy + kdyy;
+        L[lc + L3.JZZ] = L[lc + L3.JZZ]! + jzz + kdzz;
+        L[lc + L3.JXY] = L[lc + L3.JXY]! + jxy + kdxy;
+        L[lc + L3.JXZ] = L[lc + L3.JXZ]! + jxz + kdxz;
+        L[lc + L3.JYZ] = L[lc + L3.JYZ]! + jyz + kdyz;
+        for (let q = L3.KXXX; q < L3.STRIDE; q++) L[lc + q] = L[lc + q]! + L[l + q]!;
       }
       k++;
     }
-    info[part * 4] = cellPairs;
-    info[part * 4 + 1] = bodyPairs;
-    info[part * 4 + 2] = visits;
-    info[part * 4 + 3] = work;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_CELL_PAIRS] = cellPairs;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_BODY_PAIRS] = bodyPairs;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_VISITS] = visits;
+    info[part * WALK.INFO_STRIDE + WALK.INFO_WORK] = work;
   }
   return ids === null ? 0 : 0;
 }

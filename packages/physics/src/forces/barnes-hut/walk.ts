@@ -15,21 +15,10 @@
  * The downward pass of a part visits only the nodes that hold some of its slots and writes the
  * fields of its own slots to the output arrays.
  *
- * Arrays `A` (all indexed as in forces/barnes-hut/tree-store.ts's GravityTree):
- *   0 x, 1 y, 2 z, 3 m (bodies in tree order; z unused in 2D), 4 node (moments, stride 12),
- *   5 start, 6 end, 7 skip (Int32), 8 ax, 9 ay, 10 az (output field, m/s^2, tree order; az = 0 in 2D),
- *   11 cut (Int32: part p holds slots cut[p] .. cut[p + 1] - 1), 12 info (Float64, stride 4 a part:
- *   cell pairs, body pairs and visits counted by the part that holds the first cell's first slot, so
- *   they sum to the one-part walk's counts; then the part's own work, duplicates included, in the
- *   units of `WORK_*`), 13 + p: scratch of part p (Float64: the field polynomials of every node,
- *   stride NL, from 0, then the direct-sum accumulators x, y, z of every slot from P[5], P[6], P[7]);
- *   with P[8] = 1, from index P[9] on (after the scratch arrays): fx, fy, fz (the Force store, N),
- *   perm (Int32: input index of each slot), ents (Int32: entity of each input index).
- * Parameters `P`: 0 G (m^3 kg^-1 s^-2), 1 eps^2 (m^2), 2 1 / min(theta, 1)^2, 3 node count, 4 body
- * count, 5, 6, 7 offsets of the accumulators in the scratch arrays, 8 forces (1: the downward pass
- * also adds m g to the force of each of the part's bodies, entity ents[perm[s]], as it writes the
- * field; in 2D to x and y only. Each body is written once, so the order does not matter), 9 index
- * of the force arrays in A.
+ * The kernels' arguments are named below (imported as `WALK`: `A[WALK.NODE]`, `P[WALK.G]`); the
+ * arrays are indexed as in forces/barnes-hut/tree-store.ts's GravityTree. The counts a part writes to
+ * `info` (INFO_ offsets) are counted by the part that holds the first cell's first slot, so they sum
+ * to the one-part walk's counts; its work counts its own, duplicates included, in the units of `WORK_*`.
  * The range [lo, hi) of a call is a range of parts. Returns 0.
  */
 
@@ -46,3 +35,86 @@ export const WORK_VISIT = 1,
  * @category Forces
  */
 export const INFO_STRIDE = 4;
+
+// A: the arrays.
+/** Bodies' position x in tree order, m (Float64). */
+export const X = 0;
+/** Bodies' position y, m. */
+export const Y = 1;
+/** Bodies' position z, m (unused in 2D). */
+export const Z = 2;
+/** Bodies' mass in tree order, kg (Float64). */
+export const MASS = 3;
+/** The nodes' moments (Float64, forces/barnes-hut/node-2d.ts or node-3d.ts). */
+export const NODE = 4;
+/** Each node's first slot (Int32). */
+export const START = 5;
+/** Each node's end slot, exclusive (Int32). */
+export const END = 6;
+/** The node after each node's subtree (Int32; k + 1 for a leaf). */
+export const SKIP = 7;
+/** The field x at each slot, m/s^2 (Float64, out, tree order). */
+export const AX = 8;
+/** The field y at each slot, m/s^2 (out). */
+export const AY = 9;
+/** The field z at each slot, m/s^2 (out; 0 in 2D). */
+export const AZ = 10;
+/** The parts' slot ranges (Int32: part p holds slots cut[p] .. cut[p + 1] - 1). */
+export const CUT = 11;
+/** The parts' counts (Float64, INFO_STRIDE a part, out). */
+export const INFO = 12;
+/**
+ * Part p's scratch is A[SCRATCH + p] (Float64): the field polynomials of every node from 0
+ * (forces/barnes-hut/field-2d.ts or field-3d.ts), then the direct-sum accumulators x, y, z of every slot
+ * from P[ACC_X], P[ACC_Y], P[ACC_Z].
+ */
+export const SCRATCH = 13;
+// With P[ADD_FORCES] = 1, from A[P[FORCES_AT]] on (after the scratch arrays):
+/** The Force store x, N (Float64, by entity), at P[FORCES_AT] + FORCE_X. */
+export const FORCE_X = 0;
+/** The Force store y, N. */
+export const FORCE_Y = 1;
+/** The Force store z, N (unused in 2D). */
+export const FORCE_Z = 2;
+/** The input index of each slot (Int32, the tree's perm). */
+export const PERM = 3;
+/** The entity of each input index (Int32). */
+export const ENTS = 4;
+
+// P: the numbers.
+/** The gravitational constant G, m^3 kg^-1 s^-2. */
+export const G = 0;
+/** The softening squared eps^2, m^2. */
+export const EPS2 = 1;
+/** 1 / min(theta, 1)^2: cells interact by expansion when |R|^2 > (r_A + r_B)^2 times this. */
+export const OPEN = 2;
+/** The tree's node count. */
+export const NODE_COUNT = 3;
+/** The body count. */
+export const BODY_COUNT = 4;
+/** Where the direct sums x start in each scratch array. */
+export const ACC_X = 5;
+/** Where the direct sums y start. */
+export const ACC_Y = 6;
+/** Where the direct sums z start. */
+export const ACC_Z = 7;
+/**
+ * 1: the downward pass also adds m g to the force of each of the part's bodies, entity ents[perm[s]],
+ * as it writes the field (in 2D to x and y only; each body is written once, so the order does not
+ * matter); 0: not.
+ */
+export const ADD_FORCES = 8;
+/** The index in A of the force arrays (FORCE_X ...). */
+export const FORCES_AT = 9;
+/** Numbers in P. */
+export const PARAMS = 10;
+
+// info: a part's counts, INFO_STRIDE a part.
+/** Cell pairs expanded. */
+export const INFO_CELL_PAIRS = 0;
+/** Body pairs summed directly. */
+export const INFO_BODY_PAIRS = 1;
+/** Cell pairs visited. */
+export const INFO_VISITS = 2;
+/** The part's own work, in the units of WORK_*. */
+export const INFO_WORK = 3;
