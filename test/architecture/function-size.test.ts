@@ -23,7 +23,6 @@ const LEFT: Readonly<Record<string, number>> = {
   'collision/broadphase/pairs-3d.ts pairs': 228,
   'solver/manifold-rows-2d.ts solveManifolds': 215,
   'solver/coloring-kernel.ts solveColored2D': 180,
-  'solver/manifold-prepare-3d.ts prepareManifolds3D': 179,
   'solver/ball-sweeps.ts solve3D': 174,
   'solver/ball-prepare.ts prepareContacts': 164,
   'solver/impact-contact.ts impact': 160,

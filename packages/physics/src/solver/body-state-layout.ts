@@ -1,7 +1,7 @@
 /**
  * The layout of the packed solver body rows (CollisionState.bodyState, bodyExtra and bodyImpact,
- * collision/state.ts): one row per solver body of the step, row k at k * stride, row 0 the static
- * world. Each offset and stride is named here once.
+ * collision/state.ts, and in 3D Contact3DState.invInertia, collision/manifolds-3d.ts): one row per
+ * solver body of the step, row k at k * stride, row 0 the static world. Each offset and stride is named here once.
  *
  * A module of numeric constants only (scripts/build.mjs isConstantModule): every build folds them into
  * the code that reads them, so the range kernels (solver/*-kernel.ts) may use them too, though the
@@ -72,6 +72,24 @@ export const BX_ROT_Y = 4;
 export const BX_ROT_Z = 5;
 /** Numbers a bodyExtra row. */
 export const BX_STRIDE = 6;
+
+// Contact3DState.invInertia (collision/manifolds-3d.ts), 3D: rows of II3_STRIDE, the world inverse inertia
+// tensor I^-1 = R diag(1 / I_k) R^T of each solver body (symmetric: six numbers), 1/(kg m^2), written by
+// prepareSolverBodies3D (solver/manifold-prepare-3d.ts).
+/** 3D: the inverse inertia tensor's xx. */
+export const II3_XX = 0;
+/** 3D: the inverse inertia tensor's yy. */
+export const II3_YY = 1;
+/** 3D: the inverse inertia tensor's zz. */
+export const II3_ZZ = 2;
+/** 3D: the inverse inertia tensor's xy (= yx). */
+export const II3_XY = 3;
+/** 3D: the inverse inertia tensor's xz (= zx). */
+export const II3_XZ = 4;
+/** 3D: the inverse inertia tensor's yz (= zy). */
+export const II3_YZ = 5;
+/** 3D: numbers an invInertia row. */
+export const II3_STRIDE = 6;
 
 // bodyImpact, 2D and 3D: rows of IMPACT_STRIDE (the impact stage, solver/impacts.ts).
 /** The end-position correction x of this step's impacts (-dv t* summed over impacts), m. */

@@ -1,24 +1,41 @@
-/** The layout of the 3D manifold rows' per-step arrays (solver/manifold-rows-3d.ts), and the step's soft-constraint coefficients that preparation writes and the solve reads. */
+/**
+ * The layout of the 3D manifold rows' per-step packed arrays (Contact3DState's jacobians, jacobiansInv,
+ * frictionJacobians and frictionInv, collision/manifolds-3d.ts), written by prepareManifolds3D
+ * (solver/manifold-prepare-3d.ts) and read by the solve (solver/manifold-solve-3d.ts). Every row there is
+ * a row of angular parts along a direction u: body A's (ROW_AX ..) then body B's (ROW_BX ..); in
+ * `jacobians` and `frictionJacobians` the crosses r x u (m), in `jacobiansInv` and `frictionInv` their
+ * products with the world inverse inertia tensor, I^-1 (r x u) (1/(kg m)), kept only for a manifold
+ * whose bodies are not isotropic (a pile of cubes streams the crosses alone).
+ *
+ * A module of numeric constants only, which every build folds into the code that reads it
+ * (scripts/build.mjs isConstantModule).
+ */
 
-/**
- * Numbers a point keeps in `jacobians` (r_A x n, r_B x n) and in `jacobiansInv` (I_A^-1 (r_A x n),
- * I_B^-1 (r_B x n), only for a manifold whose bodies are not isotropic: a pile of cubes streams the crosses alone).
- */
-export const JAC = 6;
-/**
- * Numbers a manifold keeps in `frictionJacobians`: r_A x u, r_B x u of the friction anchor for u = t1, t2
- * (at 6 d, d = 0, 1); and in `frictionInv` (not isotropic manifolds only, FI a row): I_A^-1 (r_A x u),
- * I_B^-1 (r_B x u) in the same order, then I_A^-1 n, I_B^-1 n (at TWIST) for the twist row.
- */
-export const FJ = 12;
-export const FI = 18;
-export const TWIST = 12;
+// A row of angular parts.
+/** Body A's part, x. */
+export const ROW_AX = 0;
+/** Body A's part, y. */
+export const ROW_AY = 1;
+/** Body A's part, z. */
+export const ROW_AZ = 2;
+/** Body B's part, x. */
+export const ROW_BX = 3;
+/** Body B's part, y. */
+export const ROW_BY = 4;
+/** Body B's part, z. */
+export const ROW_BZ = 5;
 
-/**
- * This step's soft-constraint coefficients (Catto, "Soft Constraints", GDC 2011): bias rate (1/s), mass
- * scale and impulse scale of the normal rows (`soft`), and twice as stiff for a row against infinite
- * mass (`rigid`).
- * Written by prepareManifolds3D, read by the solve.
- */
-export const soft = new Float64Array(3),
-  rigid = new Float64Array(3);
+/** Numbers a contact point keeps in `jacobians` and in `jacobiansInv` (one row, u = n): point q's at q * JAC_STRIDE. */
+export const JAC_STRIDE = 6;
+
+// A manifold's friction rows, at FRICTION_STRIDE i in frictionJacobians and FRICTION_INV_STRIDE i in frictionInv.
+/** Where the t1 row of the friction anchor starts. */
+export const FRICTION_T1 = 0;
+/** Where the t2 row of the friction anchor starts. */
+export const FRICTION_T2 = 6;
+/** frictionInv only: where the twist row starts (I_A^-1 n, I_B^-1 n, 1/(kg m^2)). */
+export const FRICTION_TWIST = 12;
+/** Numbers a manifold keeps in frictionJacobians (the t1 and t2 rows). */
+export const FRICTION_STRIDE = 12;
+/** Numbers a manifold keeps in frictionInv (the t1, t2 and twist rows). */
+export const FRICTION_INV_STRIDE = 18;

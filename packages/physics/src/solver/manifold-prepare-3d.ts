@@ -1,4 +1,4 @@
-import { contact3DStateOf } from '../collision/manifolds-3d.js';
+import { type Contact3DState, contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import {
   BS3_INV_INERTIA,
@@ -17,8 +17,29 @@ import {
   BX_ROT_Y,
   BX_ROT_Z,
   BX_STRIDE,
+  II3_STRIDE,
+  II3_XX,
+  II3_XY,
+  II3_XZ,
+  II3_YY,
+  II3_YZ,
+  II3_ZZ,
 } from './body-state-layout.js';
-import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
+import {
+  FRICTION_INV_STRIDE,
+  FRICTION_STRIDE,
+  FRICTION_T1,
+  FRICTION_T2,
+  FRICTION_TWIST,
+  JAC_STRIDE,
+  ROW_AX,
+  ROW_AY,
+  ROW_AZ,
+  ROW_BX,
+  ROW_BY,
+  ROW_BZ,
+} from './manifold-layout-3d.js';
+import { rigid, soft } from './manifold-softness-3d.js';
 
 /** Preparation of the 3D manifold rows at the start of a step (solver/manifold-rows-3d.ts): world inverse inertia tensors of the solver bodies, Jacobians, effective masses, softness and separations on the solver's base. */
 
@@ -63,17 +84,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
   makeSoftInto(rigid, 2 * hertz, set.contactDampingRatio, hs);
   void count;
   if (n === 0) return;
-  if (st.jacobians.length < JAC * 4 * n) {
-    const rows = Math.max(n, (2 * st.jacobians.length) / (4 * JAC));
-    st.jacobians = new Float32Array(JAC * 4 * rows);
-    st.jacobiansInv = new Float32Array(JAC * 4 * rows);
-    st.frictionJacobians = new Float32Array(FJ * rows);
-    st.frictionInv = new Float32Array(FI * rows);
+  if (st.jacobians.length < JAC_STRIDE * 4 * n) {
+    const rows = Math.max(n, (2 * st.jacobians.length) / (4 * JAC_STRIDE));
+    st.jacobians = new Float32Array(JAC_STRIDE * 4 * rows);
+    st.jacobiansInv = new Float32Array(JAC_STRIDE * 4 * rows);
+    st.frictionJacobians = new Float32Array(FRICTION_STRIDE * rows);
+    st.frictionInv = new Float32Array(FRICTION_INV_STRIDE * rows);
   }
   const J = st.jacobians,
-    JI = st.jacobiansInv,
-    F = st.frictionJacobians,
-    FV = st.frictionInv;
+    JI = st.jacobiansInv;
   const ox = c.PreviousPosition.x,
     oy = c.PreviousPosition.y,
     oz = c.PreviousPosition.z;
@@ -82,8 +101,8 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       kb = buf.ib[i]!,
       a = BS3_STRIDE * ka,
       b = BS3_STRIDE * kb,
-      ta = 6 * ka,
-      tb = 6 * kb;
+      ta = II3_STRIDE * ka,
+      tb = II3_STRIDE * kb;
     const mA = sb[a + BS3_INV_MASS]!,
       mB = sb[b + BS3_INV_MASS]!;
     const iso = isotropic(T, ta) && isotropic(T, tb);
@@ -110,17 +129,10 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     let minSep = Infinity,
       reachA = 0,
       reachB = 0;
-    // The friction anchor: the points' centre.
-    let cax = 0,
-      cay = 0,
-      caz = 0,
-      cbx = 0,
-      cby = 0,
-      cbz = 0;
     const m = buf.points[i]!;
     for (let k = 0; k < m; k++) {
       const q = 4 * i + k,
-        o = JAC * q;
+        o = JAC_STRIDE * q;
       buf.sep[q] = buf.sep[q]! + shift;
       const rax = buf.rax[q]!,
         ray = buf.ray[q]!,
@@ -131,12 +143,6 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       if (buf.sep[q]! < minSep) minSep = buf.sep[q]!;
       reachA = Math.max(reachA, rax * rax + ray * ray + raz * raz);
       reachB = Math.max(reachB, rbx * rbx + rby * rby + rbz * rbz);
-      cax += rax;
-      cay += ray;
-      caz += raz;
-      cbx += rbx;
-      cby += rby;
-      cbz += rbz;
       // r_A x n, r_B x n, and I_A^-1 (r_A x n), I_B^-1 (r_B x n), then the effective mass.
       const xax = ray * nz - raz * ny,
         xay = raz * nx - rax * nz,
@@ -144,15 +150,15 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
       const xbx = rby * nz - rbz * ny,
         xby = rbz * nx - rbx * nz,
         xbz = rbx * ny - rby * nx;
-      J[o] = xax;
-      J[o + 1] = xay;
-      J[o + 2] = xaz;
-      J[o + 3] = xbx;
-      J[o + 4] = xby;
-      J[o + 5] = xbz;
+      J[o + ROW_AX] = xax;
+      J[o + ROW_AY] = xay;
+      J[o + ROW_AZ] = xaz;
+      J[o + ROW_BX] = xbx;
+      J[o + ROW_BY] = xby;
+      J[o + ROW_BZ] = xbz;
       const k0 = iso
-        ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
-        : mA + mB + inertiaInto(JI, o, T, ta, xax, xay, xaz) + inertiaInto(JI, o + 3, T, tb, xbx, xby, xbz);
+        ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
+        : mA + mB + inertiaInto(JI, o + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(JI, o + ROW_BX, T, tb, xbx, xby, xbz);
       buf.mn[q] = k0 > 0 ? 1 / k0 : 0;
       // Normal relative velocity at the start (for restitution): n . (v_B - v_A) + w_B . (r_B x n) - w_A . (r_A x n).
       buf.vn0[q] =
@@ -170,76 +176,116 @@ export function prepareManifolds3D(world: PhysicsWorld): void {
     buf.minSep[i] = minSep;
     buf.reachA[i] = Math.sqrt(reachA) * (1 + 1e-5) + 1e-9;
     buf.reachB[i] = Math.sqrt(reachB) * (1 + 1e-5) + 1e-9;
-    const iw = 1 / m;
-    cax *= iw;
-    cay *= iw;
-    caz *= iw;
-    cbx *= iw;
-    cby *= iw;
-    cbz *= iw;
-    // Twist arm: the points' mean distance from the anchor across n.
-    let arm = 0;
-    for (let k = 0; k < m; k++) {
-      const q = 4 * i + k;
-      const dx = buf.rax[q]! - cax,
-        dy = buf.ray[q]! - cay,
-        dz = buf.raz[q]! - caz,
-        dn = dx * nx + dy * ny + dz * nz;
-      arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
-    }
-    buf.arm[i] = arm / m;
-    const t1x = buf.t1x[i]!,
-      t1y = buf.t1y[i]!,
-      t1z = buf.t1z[i]!;
-    const t2x = ny * t1z - nz * t1y,
-      t2y = nz * t1x - nx * t1z,
-      t2z = nx * t1y - ny * t1x;
-    const f = FJ * i;
-    for (let d = 0; d < 2; d++) {
-      const ux = d === 0 ? t1x : t2x,
-        uy = d === 0 ? t1y : t2y,
-        uz = d === 0 ? t1z : t2z;
-      const xax = cay * uz - caz * uy,
-        xay = caz * ux - cax * uz,
-        xaz = cax * uy - cay * ux;
-      const xbx = cby * uz - cbz * uy,
-        xby = cbz * ux - cbx * uz,
-        xbz = cbx * uy - cby * ux;
-      const o = f + 6 * d;
-      F[o] = xax;
-      F[o + 1] = xay;
-      F[o + 2] = xaz;
-      F[o + 3] = xbx;
-      F[o + 4] = xby;
-      F[o + 5] = xbz;
-      const k0 = iso
-        ? mA + mB + T[ta]! * (xax * xax + xay * xay + xaz * xaz) + T[tb]! * (xbx * xbx + xby * xby + xbz * xbz)
-        : mA + mB + inertiaInto(FV, FI * i + 6 * d, T, ta, xax, xay, xaz) + inertiaInto(FV, FI * i + 6 * d + 3, T, tb, xbx, xby, xbz);
-      if (d === 0) buf.mt1[i] = k0 > 0 ? 1 / k0 : 0;
-      else buf.mt2[i] = k0 > 0 ? 1 / k0 : 0;
-    }
-    // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
-    const kw = iso
-      ? T[ta]! + T[tb]!
-      : inertiaInto(FV, FI * i + TWIST, T, ta, nx, ny, nz) + inertiaInto(FV, FI * i + TWIST + 3, T, tb, nx, ny, nz);
-    buf.mtw[i] = kw > 0 ? 1 / kw : 0;
+    prepareFriction3D(st, i, iso, mA, mB, ta, tb);
   }
 }
 
-/** Writes I^-1 x (I^-1 at T[t..t+5]: xx, yy, zz, xy, xz, yz) into out[o..o+2] and returns x . I^-1 x. */
+/**
+ * Manifold i's friction rows (solver/manifold-rows-3d.ts): the anchor at its points'
+ * centre, the twist arm (the points' mean distance from the anchor across n), and the rows along t1, t2
+ * (crosses, effective masses) and about n (twist), at i's place in frictionJacobians and frictionInv
+ * (solver/manifold-layout-3d.ts). `iso`: both bodies are isotropic; mA, mB their inverse masses (1/kg);
+ * ta, tb their rows of st.invInertia.
+ */
+function prepareFriction3D(st: Contact3DState, i: number, iso: boolean, mA: number, mB: number, ta: number, tb: number): void {
+  const buf = st.current,
+    T = st.invInertia,
+    F = st.frictionJacobians,
+    FV = st.frictionInv;
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = buf.nz[i]!;
+  const m = buf.points[i]!;
+  // The friction anchor: the points' centre.
+  let cax = 0,
+    cay = 0,
+    caz = 0,
+    cbx = 0,
+    cby = 0,
+    cbz = 0;
+  for (let k = 0; k < m; k++) {
+    const q = 4 * i + k;
+    cax += buf.rax[q]!;
+    cay += buf.ray[q]!;
+    caz += buf.raz[q]!;
+    cbx += buf.rbx[q]!;
+    cby += buf.rby[q]!;
+    cbz += buf.rbz[q]!;
+  }
+  const iw = 1 / m;
+  cax *= iw;
+  cay *= iw;
+  caz *= iw;
+  cbx *= iw;
+  cby *= iw;
+  cbz *= iw;
+  // Twist arm: the points' mean distance from the anchor across n.
+  let arm = 0;
+  for (let k = 0; k < m; k++) {
+    const q = 4 * i + k;
+    const dx = buf.rax[q]! - cax,
+      dy = buf.ray[q]! - cay,
+      dz = buf.raz[q]! - caz,
+      dn = dx * nx + dy * ny + dz * nz;
+    arm += Math.sqrt(Math.max(dx * dx + dy * dy + dz * dz - dn * dn, 0));
+  }
+  buf.arm[i] = arm / m;
+  const t1x = buf.t1x[i]!,
+    t1y = buf.t1y[i]!,
+    t1z = buf.t1z[i]!;
+  const t2x = ny * t1z - nz * t1y,
+    t2y = nz * t1x - nx * t1z,
+    t2z = nx * t1y - ny * t1x;
+  const f = FRICTION_STRIDE * i,
+    fv = FRICTION_INV_STRIDE * i;
+  for (let d = 0; d < 2; d++) {
+    const ux = d === 0 ? t1x : t2x,
+      uy = d === 0 ? t1y : t2y,
+      uz = d === 0 ? t1z : t2z;
+    const xax = cay * uz - caz * uy,
+      xay = caz * ux - cax * uz,
+      xaz = cax * uy - cay * ux;
+    const xbx = cby * uz - cbz * uy,
+      xby = cbz * ux - cbx * uz,
+      xbz = cbx * uy - cby * ux;
+    const row = d === 0 ? FRICTION_T1 : FRICTION_T2,
+      o = f + row,
+      ov = fv + row;
+    F[o + ROW_AX] = xax;
+    F[o + ROW_AY] = xay;
+    F[o + ROW_AZ] = xaz;
+    F[o + ROW_BX] = xbx;
+    F[o + ROW_BY] = xby;
+    F[o + ROW_BZ] = xbz;
+    const k0 = iso
+      ? mA + mB + T[ta + II3_XX]! * (xax * xax + xay * xay + xaz * xaz) + T[tb + II3_XX]! * (xbx * xbx + xby * xby + xbz * xbz)
+      : mA + mB + inertiaInto(FV, ov + ROW_AX, T, ta, xax, xay, xaz) + inertiaInto(FV, ov + ROW_BX, T, tb, xbx, xby, xbz);
+    if (d === 0) buf.mt1[i] = k0 > 0 ? 1 / k0 : 0;
+    else buf.mt2[i] = k0 > 0 ? 1 / k0 : 0;
+  }
+  // Twist about n: 1 / (n . I_A^-1 n + n . I_B^-1 n).
+  const kw = iso
+    ? T[ta + II3_XX]! + T[tb + II3_XX]!
+    : inertiaInto(FV, fv + FRICTION_TWIST + ROW_AX, T, ta, nx, ny, nz) + inertiaInto(FV, fv + FRICTION_TWIST + ROW_BX, T, tb, nx, ny, nz);
+  buf.mtw[i] = kw > 0 ? 1 / kw : 0;
+}
+
+/** Writes I^-1 x (I^-1 the invInertia row at T[t]) into out[o..o+2] (a row's part, x, y, z) and returns x . I^-1 x. */
 function inertiaInto(out: Float32Array, o: number, T: Float64Array, t: number, x: number, y: number, z: number): number {
-  const ix = T[t]! * x + T[t + 3]! * y + T[t + 4]! * z,
-    iy = T[t + 3]! * x + T[t + 1]! * y + T[t + 5]! * z,
-    iz = T[t + 4]! * x + T[t + 5]! * y + T[t + 2]! * z;
+  const ix = T[t + II3_XX]! * x + T[t + II3_XY]! * y + T[t + II3_XZ]! * z,
+    iy = T[t + II3_XY]! * x + T[t + II3_YY]! * y + T[t + II3_YZ]! * z,
+    iz = T[t + II3_XZ]! * x + T[t + II3_YZ]! * y + T[t + II3_ZZ]! * z;
   out[o] = ix;
   out[o + 1] = iy;
   out[o + 2] = iz;
   return x * ix + y * iy + z * iz;
 }
 
-/** Whether the world inverse inertia tensor at T[o..o+5] is i 1 (prepareSolverBodies3D writes it exactly so for isotropic bodies). */
+/** Whether the world inverse inertia tensor at T[o + II3_XX] is i 1 (prepareSolverBodies3D writes it exactly so for isotropic bodies). */
 function isotropic(T: Float64Array, o: number): boolean {
-  return T[o + 3] === 0 && T[o + 4] === 0 && T[o + 5] === 0 && T[o] === T[o + 1] && T[o] === T[o + 2];
+  return (
+    T[o + II3_XY] === 0 && T[o + II3_XZ] === 0 && T[o + II3_YZ] === 0 && T[o + II3_XX] === T[o + II3_YY] && T[o + II3_XX] === T[o + II3_ZZ]
+  );
 }
 
 /**
@@ -252,8 +298,8 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
   const st = contact3DStateOf(world, true);
   const cs = world.collision;
   const count = cs.solverBodyCount;
-  if (st.invInertia.length < 6 * count) {
-    st.invInertia = new Float64Array(12 * count);
+  if (st.invInertia.length < II3_STRIDE * count) {
+    st.invInertia = new Float64Array(2 * II3_STRIDE * count);
     st.rotationBase = new Float64Array(6 * count);
   }
   const c = world.components,
@@ -265,16 +311,16 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
   const Q = c.Orientation,
     IT = c.InertiaTensor;
   const hasT = IT.invX.length > 0;
-  T.fill(0, 0, 6);
+  T.fill(0, 0, II3_STRIDE);
   for (let k = 1; k < count; k++) {
     const e = list[k]!,
-      o = 6 * k;
+      o = II3_STRIDE * k;
     base[3 * k] = ex[BX_STRIDE * k + BX_ROT_X]!;
     base[3 * k + 1] = ex[BX_STRIDE * k + BX_ROT_Y]!;
     base[3 * k + 2] = ex[BX_STRIDE * k + BX_ROT_Z]!;
     const ii = sb[BS3_STRIDE * k + BS3_INV_INERTIA]!;
     if (!(ii > 0)) {
-      T.fill(0, o, o + 6);
+      T.fill(0, o, o + II3_STRIDE);
       continue;
     }
     const ix = hasT ? IT.invX[e]! : 0,
@@ -282,21 +328,21 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
       iz = hasT ? IT.invZ[e]! : 0;
     // No tensor (a ball), or equal principal moments (a cube, a sphere): R diag(i, i, i) R^T = i 1 exactly.
     if ((ix === 0 && iy === 0 && iz === 0) || !(Q.w.length > e)) {
-      T[o] = ii;
-      T[o + 1] = ii;
-      T[o + 2] = ii;
-      T[o + 3] = 0;
-      T[o + 4] = 0;
-      T[o + 5] = 0;
+      T[o + II3_XX] = ii;
+      T[o + II3_YY] = ii;
+      T[o + II3_ZZ] = ii;
+      T[o + II3_XY] = 0;
+      T[o + II3_XZ] = 0;
+      T[o + II3_YZ] = 0;
       continue;
     }
     if (ix === iy && iy === iz) {
-      T[o] = ix;
-      T[o + 1] = ix;
-      T[o + 2] = ix;
-      T[o + 3] = 0;
-      T[o + 4] = 0;
-      T[o + 5] = 0;
+      T[o + II3_XX] = ix;
+      T[o + II3_YY] = ix;
+      T[o + II3_ZZ] = ix;
+      T[o + II3_XY] = 0;
+      T[o + II3_XZ] = 0;
+      T[o + II3_YZ] = 0;
       continue;
     }
     const x = Q.x[e]!,
@@ -312,11 +358,11 @@ export function prepareSolverBodies3D(world: PhysicsWorld): void {
     const r20 = 2 * (x * z - y * w),
       r21 = 2 * (y * z + x * w),
       r22 = 1 - 2 * (x * x + y * y);
-    T[o] = r00 * r00 * ix + r01 * r01 * iy + r02 * r02 * iz;
-    T[o + 1] = r10 * r10 * ix + r11 * r11 * iy + r12 * r12 * iz;
-    T[o + 2] = r20 * r20 * ix + r21 * r21 * iy + r22 * r22 * iz;
-    T[o + 3] = r00 * r10 * ix + r01 * r11 * iy + r02 * r12 * iz;
-    T[o + 4] = r00 * r20 * ix + r01 * r21 * iy + r02 * r22 * iz;
-    T[o + 5] = r10 * r20 * ix + r11 * r21 * iy + r12 * r22 * iz;
+    T[o + II3_XX] = r00 * r00 * ix + r01 * r01 * iy + r02 * r02 * iz;
+    T[o + II3_YY] = r10 * r10 * ix + r11 * r11 * iy + r12 * r12 * iz;
+    T[o + II3_ZZ] = r20 * r20 * ix + r21 * r21 * iy + r22 * r22 * iz;
+    T[o + II3_XY] = r00 * r10 * ix + r01 * r11 * iy + r02 * r12 * iz;
+    T[o + II3_XZ] = r00 * r20 * ix + r01 * r21 * iy + r02 * r22 * iz;
+    T[o + II3_YZ] = r10 * r20 * ix + r11 * r21 * iy + r12 * r22 * iz;
   }
 }

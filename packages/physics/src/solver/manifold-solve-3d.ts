@@ -17,8 +17,24 @@ import {
   BX_ROT_Y,
   BX_ROT_Z,
   BX_STRIDE,
+  II3_STRIDE,
+  II3_XX,
 } from './body-state-layout.js';
-import { FI, FJ, JAC, rigid, soft, TWIST } from './manifold-layout-3d.js';
+import {
+  FRICTION_INV_STRIDE,
+  FRICTION_STRIDE,
+  FRICTION_T1,
+  FRICTION_T2,
+  FRICTION_TWIST,
+  JAC_STRIDE,
+  ROW_AX,
+  ROW_AY,
+  ROW_AZ,
+  ROW_BX,
+  ROW_BY,
+  ROW_BZ,
+} from './manifold-layout-3d.js';
+import { rigid, soft } from './manifold-softness-3d.js';
 
 /** The 3D manifold rows' substep stages (solver/manifold-rows-3d.ts): warm start, the solve (normal rows with their sweeps, the friction patch and twist), and restitution after the substeps. */
 
@@ -76,14 +92,14 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
         ln = LN[q]!;
       if (ln === 0) continue;
       // Isotropic: i sum(ln r x n) from the crosses (scaled by i below); else the stored products.
-      const o = JAC * q;
+      const o = JAC_STRIDE * q;
       sn += ln;
-      ax += ln * J[o]!;
-      ay += ln * J[o + 1]!;
-      az += ln * J[o + 2]!;
-      bx += ln * J[o + 3]!;
-      by += ln * J[o + 4]!;
-      bz += ln * J[o + 5]!;
+      ax += ln * J[o + ROW_AX]!;
+      ay += ln * J[o + ROW_AY]!;
+      az += ln * J[o + ROW_AZ]!;
+      bx += ln * J[o + ROW_BX]!;
+      by += ln * J[o + ROW_BY]!;
+      bz += ln * J[o + ROW_BZ]!;
     }
     if (sn === 0 && f1 === 0 && f2 === 0 && fw === 0) continue;
     const nx = buf.nx[i]!,
@@ -100,13 +116,15 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       pz = sn * nz + f1 * t1z + f2 * t2z;
     // The friction rows' angular parts (anchor crosses for t1, t2; n for the twist).
     const F = iso ? st.frictionJacobians : st.frictionInv,
-      o = (iso ? FJ : FI) * i;
-    ax += f1 * F[o]! + f2 * F[o + 6]!;
-    ay += f1 * F[o + 1]! + f2 * F[o + 7]!;
-    az += f1 * F[o + 2]! + f2 * F[o + 8]!;
-    bx += f1 * F[o + 3]! + f2 * F[o + 9]!;
-    by += f1 * F[o + 4]! + f2 * F[o + 10]!;
-    bz += f1 * F[o + 5]! + f2 * F[o + 11]!;
+      o = (iso ? FRICTION_STRIDE : FRICTION_INV_STRIDE) * i,
+      o1 = o + FRICTION_T1,
+      o2 = o + FRICTION_T2;
+    ax += f1 * F[o1 + ROW_AX]! + f2 * F[o2 + ROW_AX]!;
+    ay += f1 * F[o1 + ROW_AY]! + f2 * F[o2 + ROW_AY]!;
+    az += f1 * F[o1 + ROW_AZ]! + f2 * F[o2 + ROW_AZ]!;
+    bx += f1 * F[o1 + ROW_BX]! + f2 * F[o2 + ROW_BX]!;
+    by += f1 * F[o1 + ROW_BY]! + f2 * F[o2 + ROW_BY]!;
+    bz += f1 * F[o1 + ROW_BZ]! + f2 * F[o2 + ROW_BZ]!;
     if (iso) {
       ax += fw * nx;
       ay += fw * ny;
@@ -115,13 +133,13 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       by += fw * ny;
       bz += fw * nz;
     } else {
-      const w = o + TWIST;
-      ax += fw * F[w]!;
-      ay += fw * F[w + 1]!;
-      az += fw * F[w + 2]!;
-      bx += fw * F[w + 3]!;
-      by += fw * F[w + 4]!;
-      bz += fw * F[w + 5]!;
+      const w = o + FRICTION_TWIST;
+      ax += fw * F[w + ROW_AX]!;
+      ay += fw * F[w + ROW_AY]!;
+      az += fw * F[w + ROW_AZ]!;
+      bx += fw * F[w + ROW_BX]!;
+      by += fw * F[w + ROW_BY]!;
+      bz += fw * F[w + ROW_BZ]!;
     }
     const ka = buf.ia[i]!,
       kb = buf.ib[i]!,
@@ -129,7 +147,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       b = BS3_STRIDE * kb;
     if (ka > 0) {
       const mA = sb[a + BS3_INV_MASS]!,
-        gA = iso ? T[6 * ka]! : 1;
+        gA = iso ? T[II3_STRIDE * ka + II3_XX]! : 1;
       sb[a + BS3_VX] = sb[a + BS3_VX]! - mA * px;
       sb[a + BS3_VY] = sb[a + BS3_VY]! - mA * py;
       sb[a + BS3_VZ] = sb[a + BS3_VZ]! - mA * pz;
@@ -140,7 +158,7 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
     }
     if (kb > 0) {
       const mB = sb[b + BS3_INV_MASS]!,
-        gB = iso ? T[6 * kb]! : 1;
+        gB = iso ? T[II3_STRIDE * kb + II3_XX]! : 1;
       sb[b + BS3_VX] = sb[b + BS3_VX]! + mB * px;
       sb[b + BS3_VY] = sb[b + BS3_VY]! + mB * py;
       sb[b + BS3_VZ] = sb[b + BS3_VZ]! + mB * pz;
@@ -288,8 +306,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     }
     // Isotropic bodies: I^-1 (r x u) = i (r x u), from the crosses (the stored products are not read).
     const iso = ISO[i] === 1,
-      iA = iso ? T[6 * ka]! : 0,
-      iB = iso ? T[6 * kb]! : 0;
+      iA = iso ? T[II3_STRIDE * ka + II3_XX]! : 0,
+      iB = iso ? T[II3_STRIDE * kb + II3_XX]! : 0;
     let pushed = false;
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
@@ -308,13 +326,13 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       for (let kk = 0; kk < m; kk++) {
         const k = backward !== odd ? m - 1 - kk : kk;
         const q = 4 * i + k,
-          o = JAC * q;
-        const ra0 = J[o]!,
-          ra1 = J[o + 1]!,
-          ra2 = J[o + 2]!,
-          rb0 = J[o + 3]!,
-          rb1 = J[o + 4]!,
-          rb2 = J[o + 5]!;
+          o = JAC_STRIDE * q;
+        const ra0 = J[o + ROW_AX]!,
+          ra1 = J[o + ROW_AY]!,
+          ra2 = J[o + ROW_AZ]!,
+          rb0 = J[o + ROW_BX]!,
+          rb1 = J[o + ROW_BY]!,
+          rb2 = J[o + ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
         const s = sep[q]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
         // Both biases are worked out on every row (branches first taken after V8 optimised the loop
@@ -363,12 +381,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += gb * rb1;
           wbz += gb * rb2;
         } else {
-          wax -= dl * JI[o]!;
-          way -= dl * JI[o + 1]!;
-          waz -= dl * JI[o + 2]!;
-          wbx += dl * JI[o + 3]!;
-          wby += dl * JI[o + 4]!;
-          wbz += dl * JI[o + 5]!;
+          wax -= dl * JI[o + ROW_AX]!;
+          way -= dl * JI[o + ROW_AY]!;
+          waz -= dl * JI[o + ROW_AZ]!;
+          wbx += dl * JI[o + ROW_BX]!;
+          wby += dl * JI[o + ROW_BY]!;
+          wbz += dl * JI[o + ROW_BZ]!;
         }
         pushed = pushed || dl !== 0;
         change += Math.abs(dl);
@@ -394,22 +412,22 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
-      // t1 (crosses at f, inverse products at FI i) and t2 (6 further on in both), both from the same
+      // t1 and t2 (the manifold's rows of crosses and of inverse products), both from the same
       // velocities, the impulse (l1, l2) then held within the circle of radius mu sum(lambda_n): the same
       // limit in every direction of sliding (clamping each separately let a diagonal slide take sqrt 2 of it).
-      const f = FJ * i;
-      const a10 = F[f]!,
-        a11 = F[f + 1]!,
-        a12 = F[f + 2]!,
-        b10 = F[f + 3]!,
-        b11 = F[f + 4]!,
-        b12 = F[f + 5]!;
-      const a20 = F[f + 6]!,
-        a21 = F[f + 7]!,
-        a22 = F[f + 8]!,
-        b20 = F[f + 9]!,
-        b21 = F[f + 10]!,
-        b22 = F[f + 11]!;
+      const f = FRICTION_STRIDE * i;
+      const a10 = F[f + FRICTION_T1 + ROW_AX]!,
+        a11 = F[f + FRICTION_T1 + ROW_AY]!,
+        a12 = F[f + FRICTION_T1 + ROW_AZ]!,
+        b10 = F[f + FRICTION_T1 + ROW_BX]!,
+        b11 = F[f + FRICTION_T1 + ROW_BY]!,
+        b12 = F[f + FRICTION_T1 + ROW_BZ]!;
+      const a20 = F[f + FRICTION_T2 + ROW_AX]!,
+        a21 = F[f + FRICTION_T2 + ROW_AY]!,
+        a22 = F[f + FRICTION_T2 + ROW_AZ]!,
+        b20 = F[f + FRICTION_T2 + ROW_BX]!,
+        b21 = F[f + FRICTION_T2 + ROW_BY]!,
+        b22 = F[f + FRICTION_T2 + ROW_BZ]!;
       const dvx = vbx - vax,
         dvy = vby - vay,
         dvz = vbz - vaz;
@@ -445,13 +463,13 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += iB * (d1 * b11 + d2 * b21);
           wbz += iB * (d1 * b12 + d2 * b22);
         } else {
-          const p = FI * i;
-          wax -= d1 * FV[p]! + d2 * FV[p + 6]!;
-          way -= d1 * FV[p + 1]! + d2 * FV[p + 7]!;
-          waz -= d1 * FV[p + 2]! + d2 * FV[p + 8]!;
-          wbx += d1 * FV[p + 3]! + d2 * FV[p + 9]!;
-          wby += d1 * FV[p + 4]! + d2 * FV[p + 10]!;
-          wbz += d1 * FV[p + 5]! + d2 * FV[p + 11]!;
+          const p = FRICTION_INV_STRIDE * i;
+          wax -= d1 * FV[p + FRICTION_T1 + ROW_AX]! + d2 * FV[p + FRICTION_T2 + ROW_AX]!;
+          way -= d1 * FV[p + FRICTION_T1 + ROW_AY]! + d2 * FV[p + FRICTION_T2 + ROW_AY]!;
+          waz -= d1 * FV[p + FRICTION_T1 + ROW_AZ]! + d2 * FV[p + FRICTION_T2 + ROW_AZ]!;
+          wbx += d1 * FV[p + FRICTION_T1 + ROW_BX]! + d2 * FV[p + FRICTION_T2 + ROW_BX]!;
+          wby += d1 * FV[p + FRICTION_T1 + ROW_BY]! + d2 * FV[p + FRICTION_T2 + ROW_BY]!;
+          wbz += d1 * FV[p + FRICTION_T1 + ROW_BZ]! + d2 * FV[p + FRICTION_T2 + ROW_BZ]!;
         }
         pushed = true;
       }
@@ -473,13 +491,13 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           wby += gb * ny;
           wbz += gb * nz;
         } else {
-          const p = FI * i + TWIST;
-          wax -= dw * FV[p]!;
-          way -= dw * FV[p + 1]!;
-          waz -= dw * FV[p + 2]!;
-          wbx += dw * FV[p + 3]!;
-          wby += dw * FV[p + 4]!;
-          wbz += dw * FV[p + 5]!;
+          const p = FRICTION_INV_STRIDE * i + FRICTION_TWIST;
+          wax -= dw * FV[p + ROW_AX]!;
+          way -= dw * FV[p + ROW_AY]!;
+          waz -= dw * FV[p + ROW_AZ]!;
+          wbx += dw * FV[p + ROW_BX]!;
+          wby += dw * FV[p + ROW_BY]!;
+          wbz += dw * FV[p + ROW_BZ]!;
         }
         pushed = true;
       }
@@ -536,25 +554,25 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
         b = BS3_STRIDE * kb;
       // Isotropic: I^-1 (r x n) = i (r x n), from the crosses; else the stored products.
       const iso = buf.iso[i] === 1,
-        iA = iso ? T[6 * ka]! : 0,
-        iB = iso ? T[6 * kb]! : 0;
+        iA = iso ? T[II3_STRIDE * ka + II3_XX]! : 0,
+        iB = iso ? T[II3_STRIDE * kb + II3_XX]! : 0;
       const nx = buf.nx[i]!,
         ny = buf.ny[i]!,
         nz = buf.nz[i]!;
       for (let k = 0, m = buf.points[i]!; k < m; k++) {
         const q = 4 * i + k;
         if (VN0[q]! > -threshold || MAX[q] === 0) continue;
-        const o = JAC * q;
+        const o = JAC_STRIDE * q;
         const vn =
           (sb[b + BS3_VX]! - sb[a + BS3_VX]!) * nx +
           (sb[b + BS3_VY]! - sb[a + BS3_VY]!) * ny +
           (sb[b + BS3_VZ]! - sb[a + BS3_VZ]!) * nz +
-          sb[b + BS3_WX]! * J[o + 3]! +
-          sb[b + BS3_WY]! * J[o + 4]! +
-          sb[b + BS3_WZ]! * J[o + 5]! -
-          sb[a + BS3_WX]! * J[o]! -
-          sb[a + BS3_WY]! * J[o + 1]! -
-          sb[a + BS3_WZ]! * J[o + 2]!;
+          sb[b + BS3_WX]! * J[o + ROW_BX]! +
+          sb[b + BS3_WY]! * J[o + ROW_BY]! +
+          sb[b + BS3_WZ]! * J[o + ROW_BZ]! -
+          sb[a + BS3_WX]! * J[o + ROW_AX]! -
+          sb[a + BS3_WY]! * J[o + ROW_AY]! -
+          sb[a + BS3_WZ]! * J[o + ROW_AZ]!;
         const old = LN[q]!;
         const lam = Math.max(old - MN[q]! * (vn + e * VN0[q]!), 0);
         const dl = lam - old;
@@ -568,13 +586,13 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           sb[a + BS3_VZ] = sb[a + BS3_VZ]! - f * nz;
           if (iso) {
             const g = iA * dl;
-            sb[a + BS3_WX] = sb[a + BS3_WX]! - g * J[o]!;
-            sb[a + BS3_WY] = sb[a + BS3_WY]! - g * J[o + 1]!;
-            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - g * J[o + 2]!;
+            sb[a + BS3_WX] = sb[a + BS3_WX]! - g * J[o + ROW_AX]!;
+            sb[a + BS3_WY] = sb[a + BS3_WY]! - g * J[o + ROW_AY]!;
+            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - g * J[o + ROW_AZ]!;
           } else {
-            sb[a + BS3_WX] = sb[a + BS3_WX]! - dl * JI[o]!;
-            sb[a + BS3_WY] = sb[a + BS3_WY]! - dl * JI[o + 1]!;
-            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - dl * JI[o + 2]!;
+            sb[a + BS3_WX] = sb[a + BS3_WX]! - dl * JI[o + ROW_AX]!;
+            sb[a + BS3_WY] = sb[a + BS3_WY]! - dl * JI[o + ROW_AY]!;
+            sb[a + BS3_WZ] = sb[a + BS3_WZ]! - dl * JI[o + ROW_AZ]!;
           }
           sb[a + BS3_PUSHED] = 1;
         }
@@ -585,13 +603,13 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           sb[b + BS3_VZ] = sb[b + BS3_VZ]! + f * nz;
           if (iso) {
             const g = iB * dl;
-            sb[b + BS3_WX] = sb[b + BS3_WX]! + g * J[o + 3]!;
-            sb[b + BS3_WY] = sb[b + BS3_WY]! + g * J[o + 4]!;
-            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + g * J[o + 5]!;
+            sb[b + BS3_WX] = sb[b + BS3_WX]! + g * J[o + ROW_BX]!;
+            sb[b + BS3_WY] = sb[b + BS3_WY]! + g * J[o + ROW_BY]!;
+            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + g * J[o + ROW_BZ]!;
           } else {
-            sb[b + BS3_WX] = sb[b + BS3_WX]! + dl * JI[o + 3]!;
-            sb[b + BS3_WY] = sb[b + BS3_WY]! + dl * JI[o + 4]!;
-            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + dl * JI[o + 5]!;
+            sb[b + BS3_WX] = sb[b + BS3_WX]! + dl * JI[o + ROW_BX]!;
+            sb[b + BS3_WY] = sb[b + BS3_WY]! + dl * JI[o + ROW_BY]!;
+            sb[b + BS3_WZ] = sb[b + BS3_WZ]! + dl * JI[o + ROW_BZ]!;
           }
           sb[b + BS3_PUSHED] = 1;
         }
