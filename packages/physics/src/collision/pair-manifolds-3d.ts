@@ -1,9 +1,11 @@
 import { wakesSleeper3D } from '../islands/shapes-3d.js';
+import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
 import { jointKeepsApart } from '../world/joint-no-collide.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { colA, colB, collider, manifold, queueWake, scratch } from './colliders-3d.js';
 import { type Contact3DState, growManifold3DBuffer, lookupRow, rowKey } from './manifolds-3d.js';
+import { BOX_A, BOX_B, BOX_CX, BOX_CY, BOX_CZ, BOX_HX, BOX_HY, BOX_HZ, BOX_MARGIN } from './narrowphase/box-args-3d.js';
 import { boxArgs, boxBox3DAt } from './narrowphase/box-box-3d.js';
 import { collide3D } from './narrowphase/collide-3d.js';
 import { BodyType } from './state.js';
@@ -66,20 +68,20 @@ export function pair(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, i
       const margin = scratch.spec + (sc.speed[a]! + sc.speed[b]!) * world.h;
       // The numbers go through boxArgs (doubles passed to a call are boxed: garbage every step).
       const g = boxArgs;
-      g[0] = sc.px[a]!;
-      g[1] = sc.py[a]!;
-      g[2] = sc.pz[a]!;
-      g[3] = s.hx[ea]!;
-      g[4] = s.hy[ea]!;
-      g[5] = s.hz[ea]!;
-      g[6] = sc.px[b]!;
-      g[7] = sc.py[b]!;
-      g[8] = sc.pz[b]!;
-      g[9] = s.hx[eb]!;
-      g[10] = s.hy[eb]!;
-      g[11] = s.hz[eb]!;
-      g[12] = margin;
-      boxBox3DAt(sc.R, 9 * a, sc.R, 9 * b, manifold);
+      g[BOX_A + BOX_CX] = sc.px[a]!;
+      g[BOX_A + BOX_CY] = sc.py[a]!;
+      g[BOX_A + BOX_CZ] = sc.pz[a]!;
+      g[BOX_A + BOX_HX] = s.hx[ea]!;
+      g[BOX_A + BOX_HY] = s.hy[ea]!;
+      g[BOX_A + BOX_HZ] = s.hz[ea]!;
+      g[BOX_B + BOX_CX] = sc.px[b]!;
+      g[BOX_B + BOX_CY] = sc.py[b]!;
+      g[BOX_B + BOX_CZ] = sc.pz[b]!;
+      g[BOX_B + BOX_HX] = s.hx[eb]!;
+      g[BOX_B + BOX_HY] = s.hy[eb]!;
+      g[BOX_B + BOX_HZ] = s.hz[eb]!;
+      g[BOX_MARGIN] = margin;
+      boxBox3DAt(sc.R, MAT3_STRIDE * a, sc.R, MAT3_STRIDE * b, manifold);
       boxRow.from = -1;
     }
     boxRow.a = a;
@@ -141,34 +143,52 @@ const REUSE_TURN = 0.005;
 /** The box pair being emitted: scratch indices (-1: not a box pair), the previous row reused (-1: computed), and its previous row (-1: none). */
 const boxRow = { a: -1, b: -1, from: -1, prev: -1 };
 /** Relative pose of the pair in `relativePose`'s order. */
-const rel = new Float64Array(12);
+/**
+ * The layout of a box-box row's relative pose (Manifold3DBuffer.relPose, collision/manifolds-3d.ts, a row
+ * at STRIDE i; and `rel`): B's centre in A's frame, R_A^T (c_B - c_A), m, then R_A^T R_B from TURN on
+ * (math/mat3-layout.ts).
+ */
+enum RelPose {
+  /** B's centre in A's frame, x, m. */
+  X = 0,
+  /** y, m. */
+  Y = 1,
+  /** z, m. */
+  Z = 2,
+  /** Where R_A^T R_B starts. */
+  TURN = 3,
+  /** Numbers a row. */
+  STRIDE = 12,
+}
+const rel = new Float64Array(RelPose.STRIDE);
 
 /** rel = (R_A^T (c_B - c_A), R_A^T R_B) of scratch colliders a and b. */
 function relativePose(a: number, b: number): void {
   const sc = scratch,
     R = sc.R,
-    oa = 9 * a,
-    ob = 9 * b;
+    oa = MAT3_STRIDE * a,
+    ob = MAT3_STRIDE * b;
   const dx = sc.px[b]! - sc.px[a]!,
     dy = sc.py[b]! - sc.py[a]!,
     dz = sc.pz[b]! - sc.pz[a]!;
   for (let i = 0; i < 3; i++) {
-    const a0 = R[oa + i]!,
-      a1 = R[oa + 3 + i]!,
-      a2 = R[oa + 6 + i]!;
-    rel[i] = a0 * dx + a1 * dy + a2 * dz;
-    for (let j = 0; j < 3; j++) rel[3 + 3 * i + j] = a0 * R[ob + j]! + a1 * R[ob + 3 + j]! + a2 * R[ob + 6 + j]!;
+    const a0 = R[oa + M00 + i]!,
+      a1 = R[oa + M10 + i]!,
+      a2 = R[oa + M20 + i]!;
+    rel[RelPose.X + i] = a0 * dx + a1 * dy + a2 * dz;
+    // Element (i, j) of R_A^T R_B: column i of R_A dotted with column j of R_B.
+    for (let j = 0; j < 3; j++) rel[RelPose.TURN + 3 * i + j] = a0 * R[ob + M00 + j]! + a1 * R[ob + M10 + j]! + a2 * R[ob + M20 + j]!;
   }
 }
 
 /** Whether previous row `r` is a box-box row whose relative pose is within the reuse bounds of `rel`. */
 function reusable(P: Contact3DState['previous'], r: number, size: number): boolean {
   if (P.local[r] !== 1) return false;
-  const o = 12 * r,
+  const o = RelPose.STRIDE * r,
     RP = P.relPose,
     shift = REUSE_SHIFT * size;
-  for (let k = 0; k < 3; k++) if (Math.abs(RP[o + k]! - rel[k]!) > shift) return false;
-  for (let k = 3; k < 12; k++) if (Math.abs(RP[o + k]! - rel[k]!) > REUSE_TURN) return false;
+  for (let k = RelPose.X; k <= RelPose.Z; k++) if (Math.abs(RP[o + k]! - rel[k]!) > shift) return false;
+  for (let k = RelPose.TURN; k < RelPose.STRIDE; k++) if (Math.abs(RP[o + k]! - rel[k]!) > REUSE_TURN) return false;
   return true;
 }
 
@@ -176,8 +196,8 @@ function reusable(P: Contact3DState['previous'], r: number, size: number): boole
 function reuseManifold(P: Contact3DState['previous'], r: number, a: number, b: number): void {
   const sc = scratch,
     R = sc.R,
-    oa = 9 * a,
-    ob = 9 * b,
+    oa = MAT3_STRIDE * a,
+    ob = MAT3_STRIDE * b,
     m = manifold;
   const ax = sc.px[a]!,
     ay = sc.py[a]!,
@@ -189,9 +209,9 @@ function reuseManifold(P: Contact3DState['previous'], r: number, a: number, b: n
     u = N[3 * r]!,
     v = N[3 * r + 1]!,
     w = N[3 * r + 2]!;
-  const nx = R[oa]! * u + R[oa + 1]! * v + R[oa + 2]! * w,
-    ny = R[oa + 3]! * u + R[oa + 4]! * v + R[oa + 5]! * w,
-    nz = R[oa + 6]! * u + R[oa + 7]! * v + R[oa + 8]! * w;
+  const nx = R[oa + M00]! * u + R[oa + M01]! * v + R[oa + M02]! * w,
+    ny = R[oa + M10]! * u + R[oa + M11]! * v + R[oa + M12]! * w,
+    nz = R[oa + M20]! * u + R[oa + M21]! * v + R[oa + M22]! * w;
   m.nx = nx;
   m.ny = ny;
   m.nz = nz;
@@ -200,12 +220,12 @@ function reuseManifold(P: Contact3DState['previous'], r: number, a: number, b: n
     count = P.points[r]!;
   for (let k = 0; k < count; k++) {
     const q = 3 * (4 * r + k);
-    const pax = ax + R[oa]! * LA[q]! + R[oa + 1]! * LA[q + 1]! + R[oa + 2]! * LA[q + 2]!;
-    const pay = ay + R[oa + 3]! * LA[q]! + R[oa + 4]! * LA[q + 1]! + R[oa + 5]! * LA[q + 2]!;
-    const paz = az + R[oa + 6]! * LA[q]! + R[oa + 7]! * LA[q + 1]! + R[oa + 8]! * LA[q + 2]!;
-    const pbx = bx + R[ob]! * LB[q]! + R[ob + 1]! * LB[q + 1]! + R[ob + 2]! * LB[q + 2]!;
-    const pby = by + R[ob + 3]! * LB[q]! + R[ob + 4]! * LB[q + 1]! + R[ob + 5]! * LB[q + 2]!;
-    const pbz = bz + R[ob + 6]! * LB[q]! + R[ob + 7]! * LB[q + 1]! + R[ob + 8]! * LB[q + 2]!;
+    const pax = ax + R[oa + M00]! * LA[q]! + R[oa + M01]! * LA[q + 1]! + R[oa + M02]! * LA[q + 2]!;
+    const pay = ay + R[oa + M10]! * LA[q]! + R[oa + M11]! * LA[q + 1]! + R[oa + M12]! * LA[q + 2]!;
+    const paz = az + R[oa + M20]! * LA[q]! + R[oa + M21]! * LA[q + 1]! + R[oa + M22]! * LA[q + 2]!;
+    const pbx = bx + R[ob + M00]! * LB[q]! + R[ob + M01]! * LB[q + 1]! + R[ob + M02]! * LB[q + 2]!;
+    const pby = by + R[ob + M10]! * LB[q]! + R[ob + M11]! * LB[q + 1]! + R[ob + M12]! * LB[q + 2]!;
+    const pbz = bz + R[ob + M20]! * LB[q]! + R[ob + M21]! * LB[q + 1]! + R[ob + M22]! * LB[q + 2]!;
     m.x[k] = (pax + pbx) / 2;
     m.y[k] = (pay + pby) / 2;
     m.z[k] = (paz + pbz) / 2;
@@ -225,7 +245,7 @@ function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: numbe
       PR = P.relPose,
       NL = buf.localNormal,
       PN = P.localNormal;
-    for (let k = 0, o = 12 * i, po = 12 * from; k < 12; k++) RP[o + k] = PR[po + k]!;
+    for (let k = 0, o = RelPose.STRIDE * i, po = RelPose.STRIDE * from; k < RelPose.STRIDE; k++) RP[o + k] = PR[po + k]!;
     NL[3 * i] = PN[3 * from]!;
     NL[3 * i + 1] = PN[3 * from + 1]!;
     NL[3 * i + 2] = PN[3 * from + 2]!;
@@ -246,16 +266,16 @@ function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: numbe
     R = sc.R,
     a = boxRow.a,
     b = boxRow.b,
-    oa = 9 * a,
-    ob = 9 * b,
+    oa = MAT3_STRIDE * a,
+    ob = MAT3_STRIDE * b,
     m = manifold;
-  for (let k = 0; k < 12; k++) buf.relPose[12 * i + k] = rel[k]!;
+  for (let k = 0; k < RelPose.STRIDE; k++) buf.relPose[RelPose.STRIDE * i + k] = rel[k]!;
   const nx = m.nx,
     ny = m.ny,
     nz = m.nz;
-  buf.localNormal[3 * i] = R[oa]! * nx + R[oa + 3]! * ny + R[oa + 6]! * nz;
-  buf.localNormal[3 * i + 1] = R[oa + 1]! * nx + R[oa + 4]! * ny + R[oa + 7]! * nz;
-  buf.localNormal[3 * i + 2] = R[oa + 2]! * nx + R[oa + 5]! * ny + R[oa + 8]! * nz;
+  buf.localNormal[3 * i] = R[oa + M00]! * nx + R[oa + M10]! * ny + R[oa + M20]! * nz;
+  buf.localNormal[3 * i + 1] = R[oa + M01]! * nx + R[oa + M11]! * ny + R[oa + M21]! * nz;
+  buf.localNormal[3 * i + 2] = R[oa + M02]! * nx + R[oa + M12]! * ny + R[oa + M22]! * nz;
   for (let k = 0; k < m.count; k++) {
     const h = m.sep[k]! / 2,
       q = 3 * (4 * i + k);
@@ -266,12 +286,12 @@ function storeLocal(st: Contact3DState, buf: Contact3DState['current'], i: numbe
     const dbx = m.x[k]! + nx * h - sc.px[b]!,
       dby = m.y[k]! + ny * h - sc.py[b]!,
       dbz = m.z[k]! + nz * h - sc.pz[b]!;
-    buf.localA[q] = R[oa]! * dax + R[oa + 3]! * day + R[oa + 6]! * daz;
-    buf.localA[q + 1] = R[oa + 1]! * dax + R[oa + 4]! * day + R[oa + 7]! * daz;
-    buf.localA[q + 2] = R[oa + 2]! * dax + R[oa + 5]! * day + R[oa + 8]! * daz;
-    buf.localB[q] = R[ob]! * dbx + R[ob + 3]! * dby + R[ob + 6]! * dbz;
-    buf.localB[q + 1] = R[ob + 1]! * dbx + R[ob + 4]! * dby + R[ob + 7]! * dbz;
-    buf.localB[q + 2] = R[ob + 2]! * dbx + R[ob + 5]! * dby + R[ob + 8]! * dbz;
+    buf.localA[q] = R[oa + M00]! * dax + R[oa + M10]! * day + R[oa + M20]! * daz;
+    buf.localA[q + 1] = R[oa + M01]! * dax + R[oa + M11]! * day + R[oa + M21]! * daz;
+    buf.localA[q + 2] = R[oa + M02]! * dax + R[oa + M12]! * day + R[oa + M22]! * daz;
+    buf.localB[q] = R[ob + M00]! * dbx + R[ob + M10]! * dby + R[ob + M20]! * dbz;
+    buf.localB[q + 1] = R[ob + M01]! * dbx + R[ob + M11]! * dby + R[ob + M21]! * dbz;
+    buf.localB[q + 2] = R[ob + M02]! * dbx + R[ob + M12]! * dby + R[ob + M22]! * dbz;
   }
 }
 
@@ -443,13 +463,13 @@ function meridianPoints(world: PhysicsWorld, s: Shape3DStore, e: number, body: n
   const i = scratch.colliderOf[e]!,
     sc = scratch,
     R = sc.R,
-    o = 9 * i,
+    o = MAT3_STRIDE * i,
     W = world.components.AngularVelocity;
   if (!(W.x.length > body)) return;
   // The cylinder's axis (its shape y axis) and u = a x n, across the meridian plane.
-  const ax = R[o + 1]!,
-    ay = R[o + 4]!,
-    az = R[o + 7]!;
+  const ax = R[o + M01]!,
+    ay = R[o + M11]!,
+    az = R[o + M21]!;
   const ux = ay * nz - az * ny,
     uy = az * nx - ax * nz,
     uz = ax * ny - ay * nx,

@@ -1,9 +1,24 @@
+import { BOX3_MAX_X, BOX3_MAX_Y, BOX3_MAX_Z, BOX3_MIN_X, BOX3_MIN_Y, BOX3_MIN_Z, BOX3_STRIDE } from '../math/box-layout-3d.js';
+import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { type Mesh3D, meshesOf } from '../shapes/mesh-3d.js';
 import { Shape3DKind, type Shape3DStore } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
 import { colB, collider, manifold, scratch } from './colliders-3d.js';
 import type { Contact3DState } from './manifolds-3d.js';
+import {
+  PLANE_BOX_CX,
+  PLANE_BOX_CY,
+  PLANE_BOX_CZ,
+  PLANE_BOX_HX,
+  PLANE_BOX_HY,
+  PLANE_BOX_HZ,
+  PLANE_D,
+  PLANE_MARGIN,
+  PLANE_NX,
+  PLANE_NY,
+  PLANE_NZ,
+} from './narrowphase/box-args-3d.js';
 import { planeArgs, planeBox3DAt } from './narrowphase/box-box-3d.js';
 import { collidePlane3D } from './narrowphase/collide-3d.js';
 import { ColliderKind3D } from './narrowphase/manifold-3d.js';
@@ -84,18 +99,18 @@ function collidePlaneAt(
   if (nx * sc.px[i]! + ny * sc.py[i]! + nz * sc.pz[i]! - d - s.reach[e]! > margin) return false;
   if (s.kind[e] === Shape3DKind.Box) {
     const g = planeArgs;
-    g[0] = nx;
-    g[1] = ny;
-    g[2] = nz;
-    g[3] = d;
-    g[4] = sc.px[i]!;
-    g[5] = sc.py[i]!;
-    g[6] = sc.pz[i]!;
-    g[7] = s.hx[e]!;
-    g[8] = s.hy[e]!;
-    g[9] = s.hz[e]!;
-    g[10] = margin;
-    planeBox3DAt(sc.R, 9 * i, manifold);
+    g[PLANE_NX] = nx;
+    g[PLANE_NY] = ny;
+    g[PLANE_NZ] = nz;
+    g[PLANE_D] = d;
+    g[PLANE_BOX_CX] = sc.px[i]!;
+    g[PLANE_BOX_CY] = sc.py[i]!;
+    g[PLANE_BOX_CZ] = sc.pz[i]!;
+    g[PLANE_BOX_HX] = s.hx[e]!;
+    g[PLANE_BOX_HY] = s.hy[e]!;
+    g[PLANE_BOX_HZ] = s.hz[e]!;
+    g[PLANE_MARGIN] = margin;
+    planeBox3DAt(sc.R, MAT3_STRIDE * i, manifold);
   } else {
     if (!posed) {
       collider(world, s, i, colB);
@@ -189,14 +204,14 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
   const reach = sc.ball[i] ? colB.radius : s.reach[e]!;
   const out = manifold;
   for (let t = 0, nt = T.length / 3; t < nt; t++) {
-    const o = 6 * t;
+    const o = BOX3_STRIDE * t;
     if (
-      Bd[o]! > sc.maxX[i]! + g ||
-      Bd[o + 3]! < sc.minX[i]! - g ||
-      Bd[o + 1]! > sc.maxY[i]! + g ||
-      Bd[o + 4]! < sc.minY[i]! - g ||
-      Bd[o + 2]! > sc.maxZ[i]! + g ||
-      Bd[o + 5]! < sc.minZ[i]! - g
+      Bd[o + BOX3_MIN_X]! > sc.maxX[i]! + g ||
+      Bd[o + BOX3_MAX_X]! < sc.minX[i]! - g ||
+      Bd[o + BOX3_MIN_Y]! > sc.maxY[i]! + g ||
+      Bd[o + BOX3_MAX_Y]! < sc.minY[i]! - g ||
+      Bd[o + BOX3_MIN_Z]! > sc.maxZ[i]! + g ||
+      Bd[o + BOX3_MAX_Z]! < sc.minZ[i]! - g
     )
       continue;
     const nx = N[3 * t]!,
@@ -219,9 +234,10 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
         r = colB.radius;
       for (let end = 0; end < (hy > 0 ? 2 : 1); end++) {
         const sgn = end === 0 ? -1 : 1;
-        const px = colB.px + sgn * colB.R[1]! * hy,
-          py = colB.py + sgn * colB.R[4]! * hy,
-          pz = colB.pz + sgn * colB.R[7]! * hy;
+        // The capsule's axis is its shape y axis, the rotation's column 1.
+        const px = colB.px + sgn * colB.R[M01]! * hy,
+          py = colB.py + sgn * colB.R[M11]! * hy,
+          pz = colB.pz + sgn * colB.R[M21]! * hy;
         closestOnTriangle(V, a, bb, c, px, py, pz);
         let ux = px - triQ[0]!,
           uy = py - triQ[1]!,
@@ -261,9 +277,9 @@ function collideMesh(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, m
         const lx = HV[3 * v]!,
           ly = HV[3 * v + 1]!,
           lz = HV[3 * v + 2]!;
-        const wx = colB.px + R[0]! * lx + R[1]! * ly + R[2]! * lz,
-          wy = colB.py + R[3]! * lx + R[4]! * ly + R[5]! * lz,
-          wz = colB.pz + R[6]! * lx + R[7]! * ly + R[8]! * lz;
+        const wx = colB.px + R[M00]! * lx + R[M01]! * ly + R[M02]! * lz,
+          wy = colB.py + R[M10]! * lx + R[M11]! * ly + R[M12]! * lz,
+          wz = colB.pz + R[M20]! * lx + R[M21]! * ly + R[M22]! * lz;
         const sep = nx * wx + ny * wy + nz * wz - d;
         if (sep > margin) continue;
         // Inside the triangle's prism (barycentric signs of the projection).

@@ -38,7 +38,7 @@ export interface Hull {
   /** Outward unit normal (x, y, z) and plane offset d (n . p = d on the face) of each polygonal face. */
   faceNormals: Float64Array;
   faceOffsets: Float64Array;
-  /** Edges between polygonal faces: (u, v, left, right) per edge, u < v, `left` the face holding u -> v counter-clockwise, `right` the other. */
+  /** Edges between polygonal faces: (u, v, left, right) per edge, u < v, `left` the face holding u -> v counter-clockwise, `right` the other (layout: shapes/hull-edges-3d.ts). */
   edges: Int32Array;
 }
 

@@ -32,7 +32,7 @@ export interface Mesh3D {
   vertices: Float64Array;
   /** Triangles: three vertex indices each, counter-clockwise seen from the front. */
   triangles: Int32Array;
-  /** Per triangle: unit normal (x, y, z) and the bounding box (min x, y, z, max x, y, z), m. */
+  /** Per triangle: unit normal (x, y, z) and the bounding box (min x, y, z, max x, y, z, m: math/box-layout-3d.ts). */
   normals: Float64Array;
   bounds: Float64Array;
 }

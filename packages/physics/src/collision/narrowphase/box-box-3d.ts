@@ -1,3 +1,29 @@
+import { M00, M01, M02, M10, M11, M12, M20, M21, M22 } from '../../math/mat3-layout.js';
+import {
+  BOX_A,
+  BOX_ARGS,
+  BOX_B,
+  BOX_CX,
+  BOX_CY,
+  BOX_CZ,
+  BOX_HX,
+  BOX_HY,
+  BOX_HZ,
+  BOX_MARGIN,
+  PLANE_ARGS,
+  PLANE_BOX_CX,
+  PLANE_BOX_CY,
+  PLANE_BOX_CZ,
+  PLANE_BOX_HX,
+  PLANE_BOX_HY,
+  PLANE_BOX_HZ,
+  PLANE_D,
+  PLANE_MARGIN,
+  PLANE_NX,
+  PLANE_NY,
+  PLANE_NZ,
+} from './box-args-3d.js';
+
 /** Where the manifold goes: collision/narrowphase/manifold-3d.ts's Manifold3D (declared here by shape, so the two modules do not import each other). */
 interface Manifold3D {
   count: number;
@@ -68,7 +94,7 @@ const kx = new Float64Array(16),
   kid = new Float64Array(16);
 
 /**
- * The manifold of box A (centre a, rotation RA[oa..oa+8] row-major shape-to-world, half extents ea*)
+ * The manifold of box A (centre a, rotation at RA[oa] shape-to-world in the layout of math/mat3-layout.ts, half extents ea*)
  * against box B, or count 0 when farther apart than `margin` (m).
  * @category Collision
  */
@@ -93,29 +119,30 @@ export function boxBox3D(
   out: Manifold3D,
 ): void {
   const g = boxArgs;
-  g[0] = ax;
-  g[1] = ay;
-  g[2] = az;
-  g[3] = ea0;
-  g[4] = ea1;
-  g[5] = ea2;
-  g[6] = bx;
-  g[7] = by;
-  g[8] = bz;
-  g[9] = eb0;
-  g[10] = eb1;
-  g[11] = eb2;
-  g[12] = margin;
+  g[BOX_A + BOX_CX] = ax;
+  g[BOX_A + BOX_CY] = ay;
+  g[BOX_A + BOX_CZ] = az;
+  g[BOX_A + BOX_HX] = ea0;
+  g[BOX_A + BOX_HY] = ea1;
+  g[BOX_A + BOX_HZ] = ea2;
+  g[BOX_B + BOX_CX] = bx;
+  g[BOX_B + BOX_CY] = by;
+  g[BOX_B + BOX_CZ] = bz;
+  g[BOX_B + BOX_HX] = eb0;
+  g[BOX_B + BOX_HY] = eb1;
+  g[BOX_B + BOX_HZ] = eb2;
+  g[BOX_MARGIN] = margin;
   boxBox3DAt(RA, oa, RB, ob, out);
 }
 
 /**
  * `boxBox3D`'s numbers, for `boxBox3DAt`: A's centre (m) and half extents (m), B's centre and half
- * extents, then the margin (m). A hot caller writes them here instead of passing them: V8 boxes every
- * double passed to a call it does not inline (a heap number each, garbage every step).
+ * extents, then the margin (m), in the layout of collision/narrowphase/box-args-3d.ts. A hot caller
+ * writes them here instead of passing them: V8 boxes every double passed to a call it does not inline
+ * (a heap number each, garbage every step).
  * @category Collision
  */
-export const boxArgs = new Float64Array(13);
+export const boxArgs = new Float64Array(BOX_ARGS);
 
 /**
  * `boxBox3D` with its numbers read from `boxArgs` (A's centre, half extents, B's centre, half extents, margin).
@@ -123,41 +150,41 @@ export const boxArgs = new Float64Array(13);
  */
 export function boxBox3DAt(RA: Float64Array, oa: number, RB: Float64Array, ob: number, out: Manifold3D): void {
   const g = boxArgs;
-  const ax = g[0]!,
-    ay = g[1]!,
-    az = g[2]!,
-    ea0 = g[3]!,
-    ea1 = g[4]!,
-    ea2 = g[5]!;
-  const bx = g[6]!,
-    by = g[7]!,
-    bz = g[8]!,
-    eb0 = g[9]!,
-    eb1 = g[10]!,
-    eb2 = g[11]!,
-    margin = g[12]!;
+  const ax = g[BOX_A + BOX_CX]!,
+    ay = g[BOX_A + BOX_CY]!,
+    az = g[BOX_A + BOX_CZ]!,
+    ea0 = g[BOX_A + BOX_HX]!,
+    ea1 = g[BOX_A + BOX_HY]!,
+    ea2 = g[BOX_A + BOX_HZ]!;
+  const bx = g[BOX_B + BOX_CX]!,
+    by = g[BOX_B + BOX_CY]!,
+    bz = g[BOX_B + BOX_CZ]!,
+    eb0 = g[BOX_B + BOX_HX]!,
+    eb1 = g[BOX_B + BOX_HY]!,
+    eb2 = g[BOX_B + BOX_HZ]!,
+    margin = g[BOX_MARGIN]!;
   out.count = 0;
   const tx = bx - ax,
     ty = by - ay,
     tz = bz - az;
   // C_ij = a_i . b_j (columns of R are the box axes in the world).
   for (let i = 0; i < 3; i++) {
-    const a0 = RA[oa + i]!,
-      a1 = RA[oa + 3 + i]!,
-      a2 = RA[oa + 6 + i]!;
+    const a0 = RA[oa + M00 + i]!,
+      a1 = RA[oa + M10 + i]!,
+      a2 = RA[oa + M20 + i]!;
     for (let j = 0; j < 3; j++) {
-      const c = a0 * RB[ob + j]! + a1 * RB[ob + 3 + j]! + a2 * RB[ob + 6 + j]!;
+      const c = a0 * RB[ob + M00 + j]! + a1 * RB[ob + M10 + j]! + a2 * RB[ob + M20 + j]!;
       C[3 * i + j] = c;
       AC[3 * i + j] = Math.abs(c) + 1e-9;
     }
   }
   // t in A's frame and in B's frame.
-  const ta0 = tx * RA[oa]! + ty * RA[oa + 3]! + tz * RA[oa + 6]!;
-  const ta1 = tx * RA[oa + 1]! + ty * RA[oa + 4]! + tz * RA[oa + 7]!;
-  const ta2 = tx * RA[oa + 2]! + ty * RA[oa + 5]! + tz * RA[oa + 8]!;
-  const tb0 = tx * RB[ob]! + ty * RB[ob + 3]! + tz * RB[ob + 6]!;
-  const tb1 = tx * RB[ob + 1]! + ty * RB[ob + 4]! + tz * RB[ob + 7]!;
-  const tb2 = tx * RB[ob + 2]! + ty * RB[ob + 5]! + tz * RB[ob + 8]!;
+  const ta0 = tx * RA[oa + M00]! + ty * RA[oa + M10]! + tz * RA[oa + M20]!;
+  const ta1 = tx * RA[oa + M01]! + ty * RA[oa + M11]! + tz * RA[oa + M21]!;
+  const ta2 = tx * RA[oa + M02]! + ty * RA[oa + M12]! + tz * RA[oa + M22]!;
+  const tb0 = tx * RB[ob + M00]! + ty * RB[ob + M10]! + tz * RB[ob + M20]!;
+  const tb1 = tx * RB[ob + M01]! + ty * RB[ob + M11]! + tz * RB[ob + M21]!;
+  const tb2 = tx * RB[ob + M02]! + ty * RB[ob + M12]! + tz * RB[ob + M22]!;
   // A's faces.
   let sA = -Infinity,
     fA = 0;
@@ -262,32 +289,32 @@ function faceContact(
 ): void {
   // Centre and half extents of the reference box R and the incident box I (boxArgs: A then B; R is B when flipped).
   const g = boxArgs,
-    r = flipped === 0 ? 0 : 6,
-    io = 6 - r,
-    margin = g[12]!;
-  const rx = g[r]!,
-    ry = g[r + 1]!,
-    rz = g[r + 2]!,
-    er0 = g[r + 3]!,
-    er1 = g[r + 4]!,
-    er2 = g[r + 5]!;
-  const ix = g[io]!,
-    iy = g[io + 1]!,
-    iz = g[io + 2]!,
-    ei0 = g[io + 3]!,
-    ei1 = g[io + 4]!,
-    ei2 = g[io + 5]!;
+    r = flipped === 0 ? BOX_A : BOX_B,
+    io = flipped === 0 ? BOX_B : BOX_A,
+    margin = g[BOX_MARGIN]!;
+  const rx = g[r + BOX_CX]!,
+    ry = g[r + BOX_CY]!,
+    rz = g[r + BOX_CZ]!,
+    er0 = g[r + BOX_HX]!,
+    er1 = g[r + BOX_HY]!,
+    er2 = g[r + BOX_HZ]!;
+  const ix = g[io + BOX_CX]!,
+    iy = g[io + BOX_CY]!,
+    iz = g[io + BOX_CZ]!,
+    ei0 = g[io + BOX_HX]!,
+    ei1 = g[io + BOX_HY]!,
+    ei2 = g[io + BOX_HZ]!;
   const k1 = k === 2 ? 0 : k + 1,
     k2 = k === 0 ? 2 : k - 1;
-  const nx = sg * RR[or + k]!,
-    ny = sg * RR[or + 3 + k]!,
-    nz = sg * RR[or + 6 + k]!;
-  const ux = RR[or + k1]!,
-    uy = RR[or + 3 + k1]!,
-    uz = RR[or + 6 + k1]!;
-  const vx = RR[or + k2]!,
-    vy = RR[or + 3 + k2]!,
-    vz = RR[or + 6 + k2]!;
+  const nx = sg * RR[or + M00 + k]!,
+    ny = sg * RR[or + M10 + k]!,
+    nz = sg * RR[or + M20 + k]!;
+  const ux = RR[or + M00 + k1]!,
+    uy = RR[or + M10 + k1]!,
+    uz = RR[or + M20 + k1]!;
+  const vx = RR[or + M00 + k2]!,
+    vy = RR[or + M10 + k2]!,
+    vz = RR[or + M20 + k2]!;
   const ek = k === 0 ? er0 : k === 1 ? er1 : er2,
     eu = k1 === 0 ? er0 : k1 === 1 ? er1 : er2,
     ev = k2 === 0 ? er0 : k2 === 1 ? er1 : er2;
@@ -296,7 +323,7 @@ function faceContact(
     best = -1,
     dsg = 0;
   for (let j = 0; j < 3; j++) {
-    const d = nx * RI[oi + j]! + ny * RI[oi + 3 + j]! + nz * RI[oi + 6 + j]!;
+    const d = nx * RI[oi + M00 + j]! + ny * RI[oi + M10 + j]! + nz * RI[oi + M20 + j]!;
     if (Math.abs(d) > best) {
       best = Math.abs(d);
       m = j;
@@ -309,15 +336,15 @@ function faceContact(
     e1 = m1 === 0 ? ei0 : m1 === 1 ? ei1 : ei2,
     e2 = m2 === 0 ? ei0 : m2 === 1 ? ei1 : ei2;
   // Face centre and its two half-edge vectors, in R's face coordinates (u, v, w) about R's centre.
-  const fcx = ix + dsg * em * RI[oi + m]! - rx,
-    fcy = iy + dsg * em * RI[oi + 3 + m]! - ry,
-    fcz = iz + dsg * em * RI[oi + 6 + m]! - rz;
-  const ax_ = e1 * RI[oi + m1]!,
-    ay_ = e1 * RI[oi + 3 + m1]!,
-    az_ = e1 * RI[oi + 6 + m1]!;
-  const bx_ = e2 * RI[oi + m2]!,
-    by_ = e2 * RI[oi + 3 + m2]!,
-    bz_ = e2 * RI[oi + 6 + m2]!;
+  const fcx = ix + dsg * em * RI[oi + M00 + m]! - rx,
+    fcy = iy + dsg * em * RI[oi + M10 + m]! - ry,
+    fcz = iz + dsg * em * RI[oi + M20 + m]! - rz;
+  const ax_ = e1 * RI[oi + M00 + m1]!,
+    ay_ = e1 * RI[oi + M10 + m1]!,
+    az_ = e1 * RI[oi + M20 + m1]!;
+  const bx_ = e2 * RI[oi + M00 + m2]!,
+    by_ = e2 * RI[oi + M10 + m2]!,
+    bz_ = e2 * RI[oi + M20 + m2]!;
   const cu = fcx * ux + fcy * uy + fcz * uz,
     cv = fcx * vx + fcy * vy + fcz * vz,
     cw = fcx * nx + fcy * ny + fcz * nz;
@@ -344,8 +371,41 @@ function faceContact(
   pv[3] = cv + av - bv;
   pw[3] = cw + aw - bw;
   pid[3] = 3;
+  faceHalf[0] = eu;
+  faceHalf[1] = ev;
+  const n = clipIncident();
+  // After four passes the points are back in p*.
+  out.nx = nx;
+  out.ny = ny;
+  out.nz = nz;
+  const base = (((flipped * 3 + k) * 2 + (sg > 0 ? 1 : 0)) * 6 + 2 * m + (dsg > 0 ? 1 : 0)) * 256;
+  let c = 0;
+  for (let i = 0; i < n; i++) {
+    const s = pw[i]! - ek;
+    if (s > margin) continue;
+    const w = pw[i]! - s / 2;
+    kx[c] = rx + pu[i]! * ux + pv[i]! * vx + w * nx;
+    ky[c] = ry + pu[i]! * uy + pv[i]! * vy + w * ny;
+    kz[c] = rz + pu[i]! * uz + pv[i]! * vz + w * nz;
+    ks[c] = s;
+    kid[c] = base + pid[i]!;
+    c++;
+  }
+  reduceToFour(c, out);
+}
+
+/** The reference face's half widths along u and v (m), for clipIncident: a typed array, so no double is passed to a call. */
+const faceHalf = new Float64Array(2);
+
+/**
+ * Clips the incident face's four corners (p*, in the reference face's coordinates) against the reference
+ * face's sides u <= eu, u >= -eu, v <= ev, v >= -ev (sides 0..3; eu, ev from faceHalf), each widened by
+ * CLIP_SLACK (Sutherland and Hodgman); returns how many points are left, back in p* after the four passes.
+ */
+function clipIncident(): number {
+  const eu = faceHalf[0]!,
+    ev = faceHalf[1]!;
   let n = 4;
-  // Clip against u <= eu, u >= -eu, v <= ev, v >= -ev (sides 0..3), each widened by CLIP_SLACK.
   for (let side = 0; side < 4 && n > 0; side++) {
     const useV = side >= 2,
       sgn = (side & 1) === 0 ? 1 : -1,
@@ -382,24 +442,7 @@ function faceContact(
     }
     n = m2c;
   }
-  // After four passes the points are back in p*.
-  out.nx = nx;
-  out.ny = ny;
-  out.nz = nz;
-  const base = (((flipped * 3 + k) * 2 + (sg > 0 ? 1 : 0)) * 6 + 2 * m + (dsg > 0 ? 1 : 0)) * 256;
-  let c = 0;
-  for (let i = 0; i < n; i++) {
-    const s = pw[i]! - ek;
-    if (s > margin) continue;
-    const w = pw[i]! - s / 2;
-    kx[c] = rx + pu[i]! * ux + pv[i]! * vx + w * nx;
-    ky[c] = ry + pu[i]! * uy + pv[i]! * vy + w * ny;
-    kz[c] = rz + pu[i]! * uz + pv[i]! * vz + w * nz;
-    ks[c] = s;
-    kid[c] = base + pid[i]!;
-    c++;
-  }
-  reduceToFour(c, out);
+  return n;
 }
 
 /** Edge a_i of A against edge b_j of B: one point between their closest points. */
@@ -428,12 +471,12 @@ function edgeContact(
   margin: number,
   out: Manifold3D,
 ): void {
-  const dax = RA[oa + i]!,
-    day = RA[oa + 3 + i]!,
-    daz = RA[oa + 6 + i]!;
-  const dbx = RB[ob + j]!,
-    dby = RB[ob + 3 + j]!,
-    dbz = RB[ob + 6 + j]!;
+  const dax = RA[oa + M00 + i]!,
+    day = RA[oa + M10 + i]!,
+    daz = RA[oa + M20 + i]!;
+  const dbx = RB[ob + M00 + j]!,
+    dby = RB[ob + M10 + j]!,
+    dbz = RB[ob + M20 + j]!;
   let nx = day * dbz - daz * dby,
     ny = daz * dbx - dax * dbz,
     nz = dax * dby - day * dbx;
@@ -458,9 +501,9 @@ function edgeContact(
   for (let k = 0; k < 3; k++) {
     if (k !== i) {
       const e = k === 0 ? ea0 : k === 1 ? ea1 : ea2;
-      const cx = RA[oa + k]!,
-        cy = RA[oa + 3 + k]!,
-        cz = RA[oa + 6 + k]!;
+      const cx = RA[oa + M00 + k]!,
+        cy = RA[oa + M10 + k]!,
+        cz = RA[oa + M20 + k]!;
       const s = nx * cx + ny * cy + nz * cz > 0 ? 1 : -1;
       pax += s * e * cx;
       pay += s * e * cy;
@@ -469,9 +512,9 @@ function edgeContact(
     }
     if (k !== j) {
       const e = k === 0 ? eb0 : k === 1 ? eb1 : eb2;
-      const cx = RB[ob + k]!,
-        cy = RB[ob + 3 + k]!,
-        cz = RB[ob + 6 + k]!;
+      const cx = RB[ob + M00 + k]!,
+        cy = RB[ob + M10 + k]!,
+        cz = RB[ob + M20 + k]!;
       const s = nx * cx + ny * cy + nz * cz > 0 ? -1 : 1;
       pbx += s * e * cx;
       pby += s * e * cy;
@@ -521,7 +564,7 @@ function edgeContact(
 }
 
 /**
- * A plane n . x = d (solid below, A) against box B (centre c, rotation R[o..o+8], half extents e*):
+ * A plane n . x = d (solid below, A) against box B (centre c, rotation at R[o] (math/mat3-layout.ts), half extents e*):
  * the corners below the margin, reduced to four; normal the plane's; ids the corner numbers.
  * @category Collision
  */
@@ -542,25 +585,25 @@ export function planeBox3D(
   out: Manifold3D,
 ): void {
   const g = planeArgs;
-  g[0] = nx;
-  g[1] = ny;
-  g[2] = nz;
-  g[3] = d;
-  g[4] = cx;
-  g[5] = cy;
-  g[6] = cz;
-  g[7] = e0;
-  g[8] = e1;
-  g[9] = e2;
-  g[10] = margin;
+  g[PLANE_NX] = nx;
+  g[PLANE_NY] = ny;
+  g[PLANE_NZ] = nz;
+  g[PLANE_D] = d;
+  g[PLANE_BOX_CX] = cx;
+  g[PLANE_BOX_CY] = cy;
+  g[PLANE_BOX_CZ] = cz;
+  g[PLANE_BOX_HX] = e0;
+  g[PLANE_BOX_HY] = e1;
+  g[PLANE_BOX_HZ] = e2;
+  g[PLANE_MARGIN] = margin;
   planeBox3DAt(R, o, out);
 }
 
 /**
- * `planeBox3D`'s numbers for `planeBox3DAt` (see `boxArgs`): the plane's n and d, the box's centre and half extents, the margin.
+ * `planeBox3D`'s numbers for `planeBox3DAt` (see `boxArgs`): the plane's n and d, the box's centre and half extents, the margin (collision/narrowphase/box-args-3d.ts).
  * @category Collision
  */
-export const planeArgs = new Float64Array(11);
+export const planeArgs = new Float64Array(PLANE_ARGS);
 
 /**
  * `planeBox3D` with its numbers read from `planeArgs`.
@@ -568,26 +611,26 @@ export const planeArgs = new Float64Array(11);
  */
 export function planeBox3DAt(R: Float64Array, o: number, out: Manifold3D): void {
   const g = planeArgs;
-  const nx = g[0]!,
-    ny = g[1]!,
-    nz = g[2]!,
-    d = g[3]!,
-    cx = g[4]!,
-    cy = g[5]!,
-    cz = g[6]!,
-    e0 = g[7]!,
-    e1 = g[8]!,
-    e2 = g[9]!,
-    margin = g[10]!;
+  const nx = g[PLANE_NX]!,
+    ny = g[PLANE_NY]!,
+    nz = g[PLANE_NZ]!,
+    d = g[PLANE_D]!,
+    cx = g[PLANE_BOX_CX]!,
+    cy = g[PLANE_BOX_CY]!,
+    cz = g[PLANE_BOX_CZ]!,
+    e0 = g[PLANE_BOX_HX]!,
+    e1 = g[PLANE_BOX_HY]!,
+    e2 = g[PLANE_BOX_HZ]!,
+    margin = g[PLANE_MARGIN]!;
   out.count = 0;
   out.nx = nx;
   out.ny = ny;
   out.nz = nz;
   const c0 = cx * nx + cy * ny + cz * nz - d;
   // Corner heights above the plane: c0 +- e_k (n . r_k).
-  const h0 = e0 * (nx * R[o]! + ny * R[o + 3]! + nz * R[o + 6]!),
-    h1 = e1 * (nx * R[o + 1]! + ny * R[o + 4]! + nz * R[o + 7]!),
-    h2 = e2 * (nx * R[o + 2]! + ny * R[o + 5]! + nz * R[o + 8]!);
+  const h0 = e0 * (nx * R[o + M00]! + ny * R[o + M10]! + nz * R[o + M20]!),
+    h1 = e1 * (nx * R[o + M01]! + ny * R[o + M11]! + nz * R[o + M21]!),
+    h2 = e2 * (nx * R[o + M02]! + ny * R[o + M12]! + nz * R[o + M22]!);
   if (c0 - Math.abs(h0) - Math.abs(h1) - Math.abs(h2) > margin) return;
   let c = 0;
   for (let v = 0; v < 8; v++) {
@@ -596,9 +639,9 @@ export function planeBox3DAt(R: Float64Array, o: number, out: Manifold3D): void 
       s2 = v & 4 ? 1 : -1;
     const s = c0 + s0 * h0 + s1 * h1 + s2 * h2;
     if (s > margin) continue;
-    const x = cx + s0 * e0 * R[o]! + s1 * e1 * R[o + 1]! + s2 * e2 * R[o + 2]!;
-    const y = cy + s0 * e0 * R[o + 3]! + s1 * e1 * R[o + 4]! + s2 * e2 * R[o + 5]!;
-    const z = cz + s0 * e0 * R[o + 6]! + s1 * e1 * R[o + 7]! + s2 * e2 * R[o + 8]!;
+    const x = cx + s0 * e0 * R[o + M00]! + s1 * e1 * R[o + M01]! + s2 * e2 * R[o + M02]!;
+    const y = cy + s0 * e0 * R[o + M10]! + s1 * e1 * R[o + M11]! + s2 * e2 * R[o + M12]!;
+    const z = cz + s0 * e0 * R[o + M20]! + s1 * e1 * R[o + M21]! + s2 * e2 * R[o + M22]!;
     kx[c] = x - (nx * s) / 2;
     ky[c] = y - (ny * s) / 2;
     kz[c] = z - (nz * s) / 2;

@@ -1,3 +1,4 @@
+import { EDGE_LEFT, EDGE_RIGHT, EDGE_STRIDE, EDGE_U, EDGE_V } from '../../shapes/hull-edges-3d.js';
 import { CAND, finishCandidates, pushCandidate } from './candidates-3d.js';
 import { addPoint, flip, type Manifold3D } from './manifold-3d.js';
 import type { Posed } from './posed-3d.js';
@@ -53,23 +54,23 @@ export function polyhedra(A: Posed, B: Posed, margin: number, out: Manifold3D): 
     enx = 0,
     eny = 0,
     enz = 0;
-  for (let i = 0; i < EA.length; i += 4) {
-    const a1 = 3 * EA[i + 2]!,
-      a2 = 3 * EA[i + 3]!;
+  for (let i = 0; i < EA.length; i += EDGE_STRIDE) {
+    const a1 = 3 * EA[i + EDGE_LEFT]!,
+      a2 = 3 * EA[i + EDGE_RIGHT]!;
     const ax = A.fn[a1]!,
       ay = A.fn[a1 + 1]!,
       az = A.fn[a1 + 2]!,
       bx = A.fn[a2]!,
       by = A.fn[a2 + 1]!,
       bz = A.fn[a2 + 2]!;
-    const u = 3 * EA[i]!,
-      v = 3 * EA[i + 1]!;
+    const u = 3 * EA[i + EDGE_U]!,
+      v = 3 * EA[i + EDGE_V]!;
     const e1x = A.v[v]! - A.v[u]!,
       e1y = A.v[v + 1]! - A.v[u + 1]!,
       e1z = A.v[v + 2]! - A.v[u + 2]!;
-    for (let j = 0; j < EB.length; j += 4) {
-      const b1 = 3 * EB[j + 2]!,
-        b2 = 3 * EB[j + 3]!;
+    for (let j = 0; j < EB.length; j += EDGE_STRIDE) {
+      const b1 = 3 * EB[j + EDGE_LEFT]!,
+        b2 = 3 * EB[j + EDGE_RIGHT]!;
       const cx_ = -B.fn[b1]!,
         cy_ = -B.fn[b1 + 1]!,
         cz_ = -B.fn[b1 + 2]!,
@@ -89,8 +90,8 @@ export function polyhedra(A: Posed, B: Posed, margin: number, out: Manifold3D): 
       const adc = ax * dxcx + ay * dxcy + az * dxcz,
         bdc = bx * dxcx + by * dxcy + bz * dxcz;
       if (!(adc * bdc < 0 && cba * bdc > 0)) continue;
-      const p = 3 * EB[j]!,
-        q = 3 * EB[j + 1]!;
+      const p = 3 * EB[j + EDGE_U]!,
+        q = 3 * EB[j + EDGE_V]!;
       const e2x = B.v[q]! - B.v[p]!,
         e2y = B.v[q + 1]! - B.v[p + 1]!,
         e2z = B.v[q + 2]! - B.v[p + 2]!;
@@ -123,10 +124,10 @@ export function polyhedra(A: Posed, B: Posed, margin: number, out: Manifold3D): 
   const tol = 0.005 * margin + 1e-6;
   if (ea >= 0 && se > faceBest + tol) {
     // Edge-edge: one point midway between the closest points of the two edges.
-    const u = 3 * EA[ea]!,
-      v = 3 * EA[ea + 1]!,
-      p = 3 * EB[eb]!,
-      q = 3 * EB[eb + 1]!;
+    const u = 3 * EA[ea + EDGE_U]!,
+      v = 3 * EA[ea + EDGE_V]!,
+      p = 3 * EB[eb + EDGE_U]!,
+      q = 3 * EB[eb + EDGE_V]!;
     closestSegmentParams(
       A.v[u]!,
       A.v[u + 1]!,
@@ -149,7 +150,7 @@ export function polyhedra(A: Posed, B: Posed, margin: number, out: Manifold3D): 
     out.nx = enx;
     out.ny = eny;
     out.nz = enz;
-    addPoint(out, x, y, z, se, 2 ** 40 + (ea / 4) * 4096 + eb / 4);
+    addPoint(out, x, y, z, se, 2 ** 40 + (ea / EDGE_STRIDE) * 4096 + eb / EDGE_STRIDE);
     return;
   }
   // Face contact: the reference face is A's unless B's separates clearly more.

@@ -1,5 +1,7 @@
+import { EDGE_LEFT, EDGE_RIGHT, EDGE_STRIDE, EDGE_U, EDGE_V } from '../../shapes/hull-edges-3d.js';
 import { addPoint, type Collider3D, type Manifold3D } from './manifold-3d.js';
 import type { Posed } from './posed-3d.js';
+import { SEG_P0X, SEG_P0Y, SEG_P0Z, SEG_P1X, SEG_P1Y, SEG_P1Z } from './segment-layout-3d.js';
 import { clamp01, closestSegmentParams, seg, segmentOf, st } from './segments-3d.js';
 
 /** Sphere and capsule against a convex polyhedron: closest points to its faces and edges; a capsule on a face keeps both ends (the segment clipped to the face) so it lies still. */
@@ -72,9 +74,9 @@ export function spherePolyhedron(S: Collider3D, P: Posed, margin: number, out: M
       }
     }
     const E = h.edges;
-    for (let k = 0; k < E.length; k += 4) {
-      const a = 3 * E[k]!,
-        b = 3 * E[k + 1]!;
+    for (let k = 0; k < E.length; k += EDGE_STRIDE) {
+      const a = 3 * E[k + EDGE_U]!,
+        b = 3 * E[k + EDGE_V]!;
       const ex = P.v[b]! - P.v[a]!,
         ey = P.v[b + 1]! - P.v[a + 1]!,
         ez = P.v[b + 2]! - P.v[a + 2]!;
@@ -88,7 +90,7 @@ export function spherePolyhedron(S: Collider3D, P: Posed, margin: number, out: M
         qx = px;
         qy = py;
         qz = pz;
-        id = 1000 + (t === 0 ? 2000 + E[k]! : t === 1 ? 2000 + E[k + 1]! : k / 4);
+        id = 1000 + (t === 0 ? 2000 + E[k + EDGE_U]! : t === 1 ? 2000 + E[k + EDGE_V]! : k / EDGE_STRIDE);
       }
     }
     if (dist - r > margin) return;
@@ -119,12 +121,12 @@ export function capsulePolyhedron(C: Collider3D, P: Posed, margin: number, out: 
   const h = P.hull,
     nf = h.faceOffsets.length,
     r = C.radius;
-  const p0x = seg[0]!,
-    p0y = seg[1]!,
-    p0z = seg[2]!,
-    p1x = seg[3]!,
-    p1y = seg[4]!,
-    p1z = seg[5]!;
+  const p0x = seg[SEG_P0X]!,
+    p0y = seg[SEG_P0Y]!,
+    p0z = seg[SEG_P0Z]!,
+    p1x = seg[SEG_P1X]!,
+    p1y = seg[SEG_P1Y]!,
+    p1z = seg[SEG_P1Z]!;
   let faceSep = -Infinity,
     bf = 0;
   for (let f = 0; f < nf; f++) {
@@ -144,14 +146,14 @@ export function capsulePolyhedron(C: Collider3D, P: Posed, margin: number, out: 
   let edgeSep = -Infinity,
     be = -1;
   const E = h.edges;
-  for (let k = 0; k < E.length; k += 4) {
-    const n1 = 3 * E[k + 2]!,
-      n2 = 3 * E[k + 3]!;
+  for (let k = 0; k < E.length; k += EDGE_STRIDE) {
+    const n1 = 3 * E[k + EDGE_LEFT]!,
+      n2 = 3 * E[k + EDGE_RIGHT]!;
     const d1 = P.fn[n1]! * dx + P.fn[n1 + 1]! * dy + P.fn[n1 + 2]! * dz,
       d2 = P.fn[n2]! * dx + P.fn[n2 + 1]! * dy + P.fn[n2 + 2]! * dz;
     if (d1 * d2 >= 0) continue; // not a face of the Minkowski difference
-    const a = 3 * E[k]!,
-      b = 3 * E[k + 1]!;
+    const a = 3 * E[k + EDGE_U]!,
+      b = 3 * E[k + EDGE_V]!;
     const ex = P.v[b]! - P.v[a]!,
       ey = P.v[b + 1]! - P.v[a + 1]!,
       ez = P.v[b + 2]! - P.v[a + 2]!;
@@ -222,8 +224,8 @@ export function capsulePolyhedron(C: Collider3D, P: Posed, margin: number, out: 
     if (be < 0) return;
   }
   // Edge contact: closest points of the segment and the edge.
-  const a = 3 * E[be]!,
-    b = 3 * E[be + 1]!;
+  const a = 3 * E[be + EDGE_U]!,
+    b = 3 * E[be + EDGE_V]!;
   closestSegmentParams(p0x, p0y, p0z, p1x, p1y, p1z, P.v[a]!, P.v[a + 1]!, P.v[a + 2]!, P.v[b]!, P.v[b + 1]!, P.v[b + 2]!);
   const s = st[0]!,
     t = st[1]!;
@@ -246,5 +248,5 @@ export function capsulePolyhedron(C: Collider3D, P: Posed, margin: number, out: 
   out.nx = -nx;
   out.ny = -ny;
   out.nz = -nz;
-  addPoint(out, ex + (nx * sep) / 2, ey + (ny * sep) / 2, ez + (nz * sep) / 2, sep, 10000 + be / 4);
+  addPoint(out, ex + (nx * sep) / 2, ey + (ny * sep) / 2, ez + (nz * sep) / 2, sep, 10000 + be / EDGE_STRIDE);
 }

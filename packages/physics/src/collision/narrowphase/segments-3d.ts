@@ -1,21 +1,25 @@
+import { M01, M11, M21 } from '../../math/mat3-layout.js';
 import { addPoint, type Collider3D, ColliderKind3D, type Manifold3D } from './manifold-3d.js';
+import { SEG_P0X, SEG_P0Y, SEG_P0Z, SEG_P1X, SEG_P1Y, SEG_P1Z, SEG_STRIDE } from './segment-layout-3d.js';
 
 /** Segments of spheres and capsules in the 3D narrowphase: their closest points (Ericson, Real-Time Collision Detection, 5.1.9) and the sphere and capsule pairs. */
 
-export const seg = new Float64Array(12);
+/** Two segments (collision/narrowphase/segment-layout-3d.ts), at 0 and at SEG_STRIDE. */
+export const seg = new Float64Array(2 * SEG_STRIDE);
 
-/** Writes the segment of a sphere or capsule into seg[o..o+5]. */
+/** Writes the segment of a sphere or capsule into seg at o. */
 export function segmentOf(c: Collider3D, o: number): void {
   const h = c.kind === ColliderKind3D.Capsule ? c.hy : 0;
-  const ax = c.R[1]! * h,
-    ay = c.R[4]! * h,
-    az = c.R[7]! * h;
-  seg[o] = c.px - ax;
-  seg[o + 1] = c.py - ay;
-  seg[o + 2] = c.pz - az;
-  seg[o + 3] = c.px + ax;
-  seg[o + 4] = c.py + ay;
-  seg[o + 5] = c.pz + az;
+  // The capsule's axis is its shape y axis, the rotation's column 1.
+  const ax = c.R[M01]! * h,
+    ay = c.R[M11]! * h,
+    az = c.R[M21]! * h;
+  seg[o + SEG_P0X] = c.px - ax;
+  seg[o + SEG_P0Y] = c.py - ay;
+  seg[o + SEG_P0Z] = c.pz - az;
+  seg[o + SEG_P1X] = c.px + ax;
+  seg[o + SEG_P1Y] = c.py + ay;
+  seg[o + SEG_P1Z] = c.pz + az;
 }
 
 export const st = new Float64Array(2);
@@ -85,17 +89,30 @@ export function clamp01(x: number): number {
 /** Sphere or capsule A against sphere or capsule B: one point, or two for capsules lying side by side. */
 export function segmentSegment(A: Collider3D, B: Collider3D, margin: number, out: Manifold3D): void {
   segmentOf(A, 0);
-  segmentOf(B, 6);
+  segmentOf(B, SEG_STRIDE);
+  const b = SEG_STRIDE;
+  const a0x = seg[SEG_P0X]!,
+    a0y = seg[SEG_P0Y]!,
+    a0z = seg[SEG_P0Z]!,
+    a1x = seg[SEG_P1X]!,
+    a1y = seg[SEG_P1Y]!,
+    a1z = seg[SEG_P1Z]!;
+  const b0x = seg[b + SEG_P0X]!,
+    b0y = seg[b + SEG_P0Y]!,
+    b0z = seg[b + SEG_P0Z]!,
+    b1x = seg[b + SEG_P1X]!,
+    b1y = seg[b + SEG_P1Y]!,
+    b1z = seg[b + SEG_P1Z]!;
   const r = A.radius + B.radius;
-  closestSegmentParams(seg[0]!, seg[1]!, seg[2]!, seg[3]!, seg[4]!, seg[5]!, seg[6]!, seg[7]!, seg[8]!, seg[9]!, seg[10]!, seg[11]!);
+  closestSegmentParams(a0x, a0y, a0z, a1x, a1y, a1z, b0x, b0y, b0z, b1x, b1y, b1z);
   const s = st[0]!,
     t = st[1]!;
-  const ax = seg[0]! + (seg[3]! - seg[0]!) * s,
-    ay = seg[1]! + (seg[4]! - seg[1]!) * s,
-    az = seg[2]! + (seg[5]! - seg[2]!) * s;
-  const bx = seg[6]! + (seg[9]! - seg[6]!) * t,
-    by = seg[7]! + (seg[10]! - seg[7]!) * t,
-    bz = seg[8]! + (seg[11]! - seg[8]!) * t;
+  const ax = a0x + (a1x - a0x) * s,
+    ay = a0y + (a1y - a0y) * s,
+    az = a0z + (a1z - a0z) * s;
+  const bx = b0x + (b1x - b0x) * t,
+    by = b0y + (b1y - b0y) * t,
+    bz = b0z + (b1z - b0z) * t;
   let nx = bx - ax,
     ny = by - ay,
     nz = bz - az;
@@ -114,17 +131,17 @@ export function segmentSegment(A: Collider3D, B: Collider3D, margin: number, out
   out.ny = ny;
   out.nz = nz;
   // Two capsules nearly parallel: both ends of the overlap of A's segment projected onto B's line.
-  const ux = seg[3]! - seg[0]!,
-    uy = seg[4]! - seg[1]!,
-    uz = seg[5]! - seg[2]!;
-  const vx = seg[9]! - seg[6]!,
-    vy = seg[10]! - seg[7]!,
-    vz = seg[11]! - seg[8]!;
+  const ux = a1x - a0x,
+    uy = a1y - a0y,
+    uz = a1z - a0z;
+  const vx = b1x - b0x,
+    vy = b1y - b0y,
+    vz = b1z - b0z;
   const lu = Math.hypot(ux, uy, uz),
     lv = Math.hypot(vx, vy, vz);
   if (lu > 0 && lv > 0 && Math.abs(ux * vx + uy * vy + uz * vz) > 0.995 * lu * lv) {
-    let t0 = ((seg[0]! - seg[6]!) * vx + (seg[1]! - seg[7]!) * vy + (seg[2]! - seg[8]!) * vz) / (lv * lv);
-    let t1 = ((seg[3]! - seg[6]!) * vx + (seg[4]! - seg[7]!) * vy + (seg[5]! - seg[8]!) * vz) / (lv * lv);
+    let t0 = ((a0x - b0x) * vx + (a0y - b0y) * vy + (a0z - b0z) * vz) / (lv * lv);
+    let t1 = ((a1x - b0x) * vx + (a1y - b0y) * vy + (a1z - b0z) * vz) / (lv * lv);
     if (t0 > t1) {
       const x = t0;
       t0 = t1;
@@ -137,14 +154,14 @@ export function segmentSegment(A: Collider3D, B: Collider3D, margin: number, out
         [t0, 2],
         [t1, 3],
       ] as const) {
-        const qx = seg[6]! + vx * tt,
-          qy = seg[7]! + vy * tt,
-          qz = seg[8]! + vz * tt;
+        const qx = b0x + vx * tt,
+          qy = b0y + vy * tt,
+          qz = b0z + vz * tt;
         // The closest point on A's segment to q.
-        const ss = clamp01(((qx - seg[0]!) * ux + (qy - seg[1]!) * uy + (qz - seg[2]!) * uz) / (lu * lu));
-        const px = seg[0]! + ux * ss,
-          py = seg[1]! + uy * ss,
-          pz = seg[2]! + uz * ss;
+        const ss = clamp01(((qx - a0x) * ux + (qy - a0y) * uy + (qz - a0z) * uz) / (lu * lu));
+        const px = a0x + ux * ss,
+          py = a0y + uy * ss,
+          pz = a0z + uz * ss;
         const sep = (qx - px) * nx + (qy - py) * ny + (qz - pz) * nz - r;
         if (sep <= margin)
           addPoint(
