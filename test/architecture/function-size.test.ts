@@ -26,7 +26,6 @@ const LEFT: Readonly<Record<string, number>> = {
   'solver/ball-sweeps.ts solve3D': 174,
   'solver/ball-prepare.ts prepareContacts': 164,
   'solver/impact-contact.ts impact': 160,
-  'collision/shapes-3d.ts gather': 157,
   'collision/narrowphase/manifold-2d.ts collidePolygonsLocal': 152,
 };
 

@@ -1,5 +1,6 @@
 import { hasComponent } from 'bitecs';
 import { wakeIsland3D } from '../islands/shapes-3d.js';
+import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -206,6 +207,60 @@ function markClasses(world: PhysicsWorld): number {
   return stamp;
 }
 
+/** The offset of a shape's centre from its body's centre, m (world), written by colliderRotation. */
+const shapeShift = new Float64Array(3);
+
+/**
+ * Writes the world rotation of shape e's collider at R[o + M00] (math/mat3-layout.ts): its body's start-of-step
+ * orientation (bodyQ) composed with the shape's placement, and the placement's offset turned by bodyQ into
+ * shapeShift; a shapeless ball's is the identity (shapeShift is not written).
+ */
+function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float64Array, o: number): void {
+  if (isBall) {
+    R[o + M00] = 1;
+    R[o + M01] = 0;
+    R[o + M02] = 0;
+    R[o + M10] = 0;
+    R[o + M11] = 1;
+    R[o + M12] = 0;
+    R[o + M20] = 0;
+    R[o + M21] = 0;
+    R[o + M22] = 1;
+    return;
+  }
+  const qx = bodyQ[0]!,
+    qy = bodyQ[1]!,
+    qz = bodyQ[2]!,
+    qw = bodyQ[3]!;
+  // Shape pose: body pose composed with the placement.
+  const px = s.px[e]!,
+    py = s.py[e]!,
+    pz = s.pz[e]!;
+  const tx = 2 * (qy * pz - qz * py),
+    ty = 2 * (qz * px - qx * pz),
+    tz = 2 * (qx * py - qy * px);
+  shapeShift[0] = px + qw * tx + (qy * tz - qz * ty);
+  shapeShift[1] = py + qw * ty + (qz * tx - qx * tz);
+  shapeShift[2] = pz + qw * tz + (qx * ty - qy * tx);
+  const ax = s.qx[e]!,
+    ay = s.qy[e]!,
+    az = s.qz[e]!,
+    aw = s.qw[e]!;
+  const x = qw * ax + qx * aw + qy * az - qz * ay,
+    y = qw * ay - qx * az + qy * aw + qz * ax,
+    z = qw * az + qx * ay - qy * ax + qz * aw,
+    w = qw * aw - qx * ax - qy * ay - qz * az;
+  R[o + M00] = 1 - 2 * (y * y + z * z);
+  R[o + M01] = 2 * (x * y - z * w);
+  R[o + M02] = 2 * (x * z + y * w);
+  R[o + M10] = 2 * (x * y + z * w);
+  R[o + M11] = 1 - 2 * (x * x + z * z);
+  R[o + M12] = 2 * (y * z - x * w);
+  R[o + M20] = 2 * (x * z - y * w);
+  R[o + M21] = 2 * (y * z + x * w);
+  R[o + M22] = 1 - 2 * (x * x + y * y);
+}
+
 /** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
 function gather(world: PhysicsWorld, s: Shape3DStore): void {
   const stamp = markClasses(world);
@@ -249,55 +304,18 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       y0 = t === BodyType.Static ? c.Position.y[b]! : oy[b]!,
       z0 = t === BodyType.Static ? c.Position.z[b]! : oz[b]!;
     startOrientation(world, b, turning, isBall);
-    const qx = bodyQ[0]!,
-      qy = bodyQ[1]!,
-      qz = bodyQ[2]!,
-      qw = bodyQ[3]!;
+    const R = sc.R,
+      o = MAT3_STRIDE * n;
+    colliderRotation(s, e, isBall, R, o);
     let cx = x0,
       cy = y0,
       cz = z0,
       reach: number;
-    const R = sc.R,
-      o = 9 * n;
-    if (isBall) {
-      reach = c.Ball.radius[b]!;
-      R[o] = 1;
-      R[o + 1] = 0;
-      R[o + 2] = 0;
-      R[o + 3] = 0;
-      R[o + 4] = 1;
-      R[o + 5] = 0;
-      R[o + 6] = 0;
-      R[o + 7] = 0;
-      R[o + 8] = 1;
-    } else {
-      // Shape pose: body pose composed with the placement.
-      const px = s.px[e]!,
-        py = s.py[e]!,
-        pz = s.pz[e]!;
-      const tx = 2 * (qy * pz - qz * py),
-        ty = 2 * (qz * px - qx * pz),
-        tz = 2 * (qx * py - qy * px);
-      cx += px + qw * tx + (qy * tz - qz * ty);
-      cy += py + qw * ty + (qz * tx - qx * tz);
-      cz += pz + qw * tz + (qx * ty - qy * tx);
-      const ax = s.qx[e]!,
-        ay = s.qy[e]!,
-        az = s.qz[e]!,
-        aw = s.qw[e]!;
-      const x = qw * ax + qx * aw + qy * az - qz * ay,
-        y = qw * ay - qx * az + qy * aw + qz * ax,
-        z = qw * az + qx * ay - qy * ax + qz * aw,
-        w = qw * aw - qx * ax - qy * ay - qz * az;
-      R[o] = 1 - 2 * (y * y + z * z);
-      R[o + 1] = 2 * (x * y - z * w);
-      R[o + 2] = 2 * (x * z + y * w);
-      R[o + 3] = 2 * (x * y + z * w);
-      R[o + 4] = 1 - 2 * (x * x + z * z);
-      R[o + 5] = 2 * (y * z - x * w);
-      R[o + 6] = 2 * (x * z - y * w);
-      R[o + 7] = 2 * (y * z + x * w);
-      R[o + 8] = 1 - 2 * (x * x + y * y);
+    if (isBall) reach = c.Ball.radius[b]!;
+    else {
+      cx += shapeShift[0]!;
+      cy += shapeShift[1]!;
+      cz += shapeShift[2]!;
       reach = s.reach[e]!;
     }
     let speed = 0;
@@ -330,9 +348,9 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
       const ex = s.hx[e]!,
         ey = s.hy[e]!,
         ez = s.hz[e]!;
-      wx = ex * Math.abs(R[o]!) + ey * Math.abs(R[o + 1]!) + ez * Math.abs(R[o + 2]!);
-      wy = ex * Math.abs(R[o + 3]!) + ey * Math.abs(R[o + 4]!) + ez * Math.abs(R[o + 5]!);
-      wz = ex * Math.abs(R[o + 6]!) + ey * Math.abs(R[o + 7]!) + ez * Math.abs(R[o + 8]!);
+      wx = ex * Math.abs(R[o + M00]!) + ey * Math.abs(R[o + M01]!) + ez * Math.abs(R[o + M02]!);
+      wy = ex * Math.abs(R[o + M10]!) + ey * Math.abs(R[o + M11]!) + ez * Math.abs(R[o + M12]!);
+      wz = ex * Math.abs(R[o + M20]!) + ey * Math.abs(R[o + M21]!) + ez * Math.abs(R[o + M22]!);
     }
     sc.shape[n] = e;
     sc.body[n] = b;
