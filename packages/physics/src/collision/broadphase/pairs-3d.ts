@@ -37,11 +37,28 @@ const grid = {
   packed: new Float64Array(0),
   searching: new Uint8Array(0),
   firstRest: new Int32Array(0),
+  /** How many of `large` are in use this step. */
+  largeCount: 0,
 };
 
 /** Bucket of cell (x, y, z) in a table of mask + 1 buckets (Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable Objects", 2003). */
 function cellHash(x: number, y: number, z: number, mask: number): number {
   return (Math.imul(x, 73856093) ^ Math.imul(y, 19349663) ^ Math.imul(z, 83492791)) & mask;
+}
+
+/**
+ * The layout of a box in the grid's packed boxes (`grid.packed`, box k of the bucket order at STRIDE k):
+ * the bounds axis by axis, m, so the neighbour search reads memory in sequence.
+ */
+enum PackedBox {
+  MIN_X = 0,
+  MAX_X = 1,
+  MIN_Y = 2,
+  MAX_Y = 3,
+  MIN_Z = 4,
+  MAX_Z = 5,
+  /** Numbers a box. */
+  STRIDE = 6,
 }
 
 /**
@@ -52,10 +69,32 @@ function cellHash(x: number, y: number, z: number, mask: number): number {
  * index) and goes to `pair`. Then every collider against the meshes and the planes.
  */
 export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
+  const n = scratch.n;
+  const cell = gridCell(n);
+  // No moving collider (a pile asleep): no pair can be new, and the grid is not built.
+  if (!anyMoving(world, n)) {
+    planesAndMeshes(world, s, st);
+    return;
+  }
+  const inv = 1 / cell;
+  let size = 64;
+  while (size < 2 * n) size *= 2;
+  markSearching(world, s, n);
+  fillGrid(n, inv, size);
+  searchNeighbours(world, s, st, n, inv, size - 1);
+  restingPairs(world, s, st);
+  largePairs(world, s, st, n);
+  planesAndMeshes(world, s, st);
+}
+
+/**
+ * Each collider's box's widest side (grid.width), the "large" ones (wider than four times the mean: into
+ * grid.large, grid.largeCount of them, and sc.order -1; the others 0), and the grid's cell: the widest
+ * ordinary box's side (1 when there is none), m.
+ */
+function gridCell(n: number): number {
   const sc = scratch,
-    n = sc.n,
-    type = world.collision.bodyType;
-  const minX = sc.minX,
+    minX = sc.minX,
     maxX = sc.maxX,
     minY = sc.minY,
     maxY = sc.maxY,
@@ -91,41 +130,25 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
       sc.order[i] = 0;
     }
   }
-  if (!(cell > 0)) cell = 1;
-  // No moving collider (a pile asleep): no pair can be new, and the grid is not built.
-  let sources = 0;
+  grid.largeCount = nl;
+  return cell > 0 ? cell : 1;
+}
+
+/** Whether any of the n colliders belongs to a dynamic or kinematic body. */
+function anyMoving(world: PhysicsWorld, n: number): boolean {
+  const sc = scratch,
+    type = world.collision.bodyType;
   for (let i = 0; i < n; i++) {
     const t = type[sc.body[i]!]!;
-    if (t === BodyType.Dynamic || t === BodyType.Kinematic) {
-      sources++;
-      break;
-    }
+    if (t === BodyType.Dynamic || t === BodyType.Kinematic) return true;
   }
-  if (sources === 0) {
-    planesAndMeshes(world, s, st);
-    return;
-  }
-  const inv = 1 / cell;
-  let size = 64;
-  while (size < 2 * n) size *= 2;
-  const mask = size - 1;
-  if (grid.start.length < size + 1) {
-    grid.start = new Int32Array(2 * size + 1);
-    grid.seen = new Int32Array(2 * size + 1);
-  }
-  grid.seen.fill(0, 0, size);
-  if (grid.items.length < n) {
-    grid.items = new Int32Array(Math.max(64, 2 * n));
-    grid.bucket = new Int32Array(Math.max(64, 2 * n));
-  }
-  if (grid.firstRest.length < size) grid.firstRest = new Int32Array(2 * size);
-  const start = grid.start,
-    items = grid.items,
-    bucket = grid.bucket,
-    seen = grid.seen,
-    order = sc.order,
-    firstRest = grid.firstRest;
-  // Which colliders search their neighbourhood this step (see the note at RESTING_SEARCH_PERIOD).
+  return false;
+}
+
+/** Which colliders search their neighbourhood this step (grid.searching; see the note at RESTING_SEARCH_PERIOD). */
+function markSearching(world: PhysicsWorld, s: Shape3DStore, n: number): void {
+  const sc = scratch,
+    type = world.collision.bodyType;
   if (grid.searching.length < n) grid.searching = new Uint8Array(Math.max(64, 2 * n));
   const sl = world.collision.sleep,
     searching = grid.searching,
@@ -148,6 +171,36 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
       (phase + i) % RESTING_SEARCH_PERIOD !== 0;
     searching[i] = (t === BodyType.Kinematic || t === BodyType.Dynamic) && !skips ? 1 : 0;
   }
+}
+
+/**
+ * The grid of `size` buckets (a power of two) of the ordinary colliders, by the cell (1 / inv wide) of
+ * their box's low corner: grid.items in bucket order from grid.start[b], the searching colliders of a
+ * bucket first, then the others from grid.firstRest[b], each part in ascending collider index; and their
+ * boxes packed in that order (grid.packed, PackedBox).
+ */
+function fillGrid(n: number, inv: number, size: number): void {
+  const sc = scratch,
+    mask = size - 1;
+  if (grid.start.length < size + 1) {
+    grid.start = new Int32Array(2 * size + 1);
+    grid.seen = new Int32Array(2 * size + 1);
+  }
+  grid.seen.fill(0, 0, size);
+  if (grid.items.length < n) {
+    grid.items = new Int32Array(Math.max(64, 2 * n));
+    grid.bucket = new Int32Array(Math.max(64, 2 * n));
+  }
+  if (grid.firstRest.length < size) grid.firstRest = new Int32Array(2 * size);
+  const start = grid.start,
+    items = grid.items,
+    bucket = grid.bucket,
+    order = sc.order,
+    firstRest = grid.firstRest,
+    searching = grid.searching;
+  const minX = sc.minX,
+    minY = sc.minY,
+    minZ = sc.minZ;
   // Counting sort by bucket; within a bucket the searching colliders first, then the others (from
   // firstRest[b]), each part in ascending collider index, so a collider meets the searching ones above
   // its own index without testing those below (their own search finds the pair).
@@ -177,23 +230,45 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
   }
   for (let b = size; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
-  // The boxes in bucket order, packed (min x, max x, min y, max y, min z, max z), so the neighbour
-  // search below reads memory in sequence instead of jumping through the collider arrays.
+  // The boxes in bucket order, packed, so the neighbour search reads memory in sequence instead of
+  // jumping through the collider arrays.
   const placed = start[size]!;
-  if (grid.packed.length < 6 * placed) grid.packed = new Float64Array(12 * placed);
+  if (grid.packed.length < PackedBox.STRIDE * placed) grid.packed = new Float64Array(2 * PackedBox.STRIDE * placed);
   const pk = grid.packed;
   for (let k = 0; k < placed; k++) {
     const j = items[k]!,
-      o = 6 * k;
-    pk[o] = minX[j]!;
-    pk[o + 1] = maxX[j]!;
-    pk[o + 2] = minY[j]!;
-    pk[o + 3] = maxY[j]!;
-    pk[o + 4] = minZ[j]!;
-    pk[o + 5] = maxZ[j]!;
+      o = PackedBox.STRIDE * k;
+    pk[o + PackedBox.MIN_X] = minX[j]!;
+    pk[o + PackedBox.MAX_X] = sc.maxX[j]!;
+    pk[o + PackedBox.MIN_Y] = minY[j]!;
+    pk[o + PackedBox.MAX_Y] = sc.maxY[j]!;
+    pk[o + PackedBox.MIN_Z] = minZ[j]!;
+    pk[o + PackedBox.MAX_Z] = sc.maxZ[j]!;
   }
-  // Sources: the colliders of moving (dynamic or kinematic) bodies; a resting pile's sleeping and static
-  // colliders are only ever met as neighbours, so an asleep pile costs no neighbour search.
+}
+
+/**
+ * The searching colliders against their grid neighbours (fillGrid's grid, cells 1 / inv wide, bucket
+ * mask `mask`): every overlapping pair that may collide goes to `pair`. Sources are the colliders of
+ * moving (dynamic or kinematic) bodies; a resting pile's sleeping and static colliders are only ever met
+ * as neighbours, so an asleep pile costs no neighbour search.
+ */
+function searchNeighbours(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number, inv: number, mask: number): void {
+  const sc = scratch,
+    type = world.collision.bodyType;
+  const start = grid.start,
+    items = grid.items,
+    seen = grid.seen,
+    order = sc.order,
+    firstRest = grid.firstRest,
+    searching = grid.searching,
+    pk = grid.packed;
+  const minX = sc.minX,
+    maxX = sc.maxX,
+    minY = sc.minY,
+    maxY = sc.maxY,
+    minZ = sc.minZ,
+    maxZ = sc.maxZ;
   for (let i = 0; i < n; i++) {
     if (order[i] === -1 || searching[i] === 0) continue;
     const ti = type[sc.body[i]!]!;
@@ -226,15 +301,30 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
           let k = firstRest[b]!;
           while (k > b0 && items[k - 1]! > i) k--;
           for (; k < e; k++) {
-            const o = 6 * k;
-            if (pk[o]! > x1 || pk[o + 1]! < x0 || pk[o + 2]! > y1 || pk[o + 3]! < y0 || pk[o + 4]! > z1 || pk[o + 5]! < z0) continue;
+            const o = PackedBox.STRIDE * k;
+            if (
+              pk[o + PackedBox.MIN_X]! > x1 ||
+              pk[o + PackedBox.MAX_X]! < x0 ||
+              pk[o + PackedBox.MIN_Y]! > y1 ||
+              pk[o + PackedBox.MAX_Y]! < y0 ||
+              pk[o + PackedBox.MIN_Z]! > z1 ||
+              pk[o + PackedBox.MAX_Z]! < z0
+            )
+              continue;
             const j = items[k]!;
             if (!meets(ti, type[sc.body[j]!]!)) continue;
             pair(world, s, st, i, j);
           }
         }
   }
-  // Pairs of which neither collider searched: those that had a manifold last step (resting neighbours).
+}
+
+/** Pairs of which neither collider searched: those that had a manifold last step (resting neighbours), to `pair` if their boxes still overlap. */
+function restingPairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState): void {
+  const sc = scratch,
+    type = world.collision.bodyType,
+    order = sc.order,
+    searching = grid.searching;
   const P = st.previous,
     cap = world.capacity,
     colliderOf = sc.colliderOf,
@@ -248,35 +338,40 @@ export function pairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
     const i = colliderOf[ea]!,
       j = colliderOf[eb]!;
     if (searching[i] === 1 || searching[j] === 1 || order[i] === -1 || order[j] === -1) continue;
-    if (
-      minX[j]! > maxX[i]! ||
-      maxX[j]! < minX[i]! ||
-      minY[j]! > maxY[i]! ||
-      maxY[j]! < minY[i]! ||
-      minZ[j]! > maxZ[i]! ||
-      maxZ[j]! < minZ[i]!
-    )
-      continue;
+    if (!boxesOverlap(i, j)) continue;
     if (!meets(type[sc.body[i]!]!, type[sc.body[j]!]!)) continue;
     pair(world, s, st, i, j);
   }
+}
+
+/** The large colliders (gridCell) against every other collider whose box overlaps theirs, to `pair`. */
+function largePairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState, n: number): void {
+  const sc = scratch,
+    type = world.collision.bodyType,
+    order = sc.order,
+    large = grid.large,
+    nl = grid.largeCount;
   for (let l = 0; l < nl; l++) {
     const i = large[l]!;
     const ti = type[sc.body[i]!]!;
     for (let j = 0; j < n; j++) {
       if (j === i || (order[j] === -1 && j < i)) continue;
-      if (
-        minX[j]! > maxX[i]! ||
-        maxX[j]! < minX[i]! ||
-        minY[j]! > maxY[i]! ||
-        maxY[j]! < minY[i]! ||
-        minZ[j]! > maxZ[i]! ||
-        maxZ[j]! < minZ[i]!
-      )
-        continue;
+      if (!boxesOverlap(i, j)) continue;
       if (!meets(ti, type[sc.body[j]!]!)) continue;
       pair(world, s, st, i, j);
     }
   }
-  planesAndMeshes(world, s, st);
+}
+
+/** Whether the fattened boxes of colliders i and j overlap (touching counts). */
+function boxesOverlap(i: number, j: number): boolean {
+  const sc = scratch;
+  return !(
+    sc.minX[j]! > sc.maxX[i]! ||
+    sc.maxX[j]! < sc.minX[i]! ||
+    sc.minY[j]! > sc.maxY[i]! ||
+    sc.maxY[j]! < sc.minY[i]! ||
+    sc.minZ[j]! > sc.maxZ[i]! ||
+    sc.maxZ[j]! < sc.minZ[i]!
+  );
 }
