@@ -6,6 +6,28 @@ import { currentHandle, isAlive, slotOf } from '../world/handles.js';
 import { pushBreak } from '../world/joint-state-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
+import {
+  BEFORE_AT,
+  BUFFER_STRIDE,
+  PAIR_A,
+  PAIR_B,
+  PAIR_STRIDE,
+  PT_INV_MASS,
+  PT_STRIDE,
+  PT_X,
+  PT_Y,
+  SC_GX_H,
+  SC_GX_HS,
+  SC_GY_H,
+  SC_GY_HS,
+  SC_HS,
+  SC_INV_HS,
+  SC_INV_HS2,
+  SOLVE_K,
+  SOLVE_P,
+  SOLVE_STRIDE,
+  VELOCITY_AT,
+} from './layout.js';
 
 /**
  * The cloth solver (stage 6, `constraints`): every `ClothLink` is a distance constraint solved on
@@ -55,13 +77,13 @@ export function clothSystem(world: PhysicsWorld): void {
   const gx = world.gravity[0]!,
     gy = world.gravity[1]!;
   const k = cl.scalars;
-  k[0] = hs;
-  k[1] = ihs;
-  k[2] = gx * hs;
-  k[3] = gy * hs;
-  k[4] = gx * h;
-  k[5] = gy * h;
-  k[6] = ihs2;
+  k[SC_HS] = hs;
+  k[SC_INV_HS] = ihs;
+  k[SC_GX_HS] = gx * hs;
+  k[SC_GY_HS] = gy * hs;
+  k[SC_GX_H] = gx * h;
+  k[SC_GY_H] = gy * h;
+  k[SC_INV_HS2] = ihs2;
   const np = cl.pointCount,
     rigid = cl.rigidCount;
   let massesChanged = false;
@@ -116,9 +138,9 @@ const CHUNK = 2048;
 function gatherPoints(cl: ClothState, c: Components, from: number, to: number): boolean {
   const P = cl.points,
     xb = cl.buffer,
-    U = 5 * cl.pointCount,
-    gxh = cl.scalars[4]!,
-    gyh = cl.scalars[5]!;
+    U = VELOCITY_AT * cl.pointCount,
+    gxh = cl.scalars[SC_GX_H]!,
+    gyh = cl.scalars[SC_GY_H]!;
   const px = c.Position.x,
     py = c.Position.y,
     inv = c.Mass.inv;
@@ -129,21 +151,21 @@ function gatherPoints(cl: ClothState, c: Components, from: number, to: number): 
   let changed = false;
   for (let i = from; i < to; i++) {
     const e = P[i]!,
-      o = 3 * i,
+      o = PT_STRIDE * i,
       v = 2 * i,
       w = inv[e]!;
-    if (xb[o + 2] !== w) {
-      xb[o + 2] = w;
+    if (xb[o + PT_INV_MASS] !== w) {
+      xb[o + PT_INV_MASS] = w;
       changed = true;
     }
     if (w > 0) {
-      xb[o] = ox[e]!;
-      xb[o + 1] = oy[e]!;
+      xb[o + PT_X] = ox[e]!;
+      xb[o + PT_Y] = oy[e]!;
       xb[U + v] = vx[e]! - gxh;
       xb[U + v + 1] = vy[e]! - gyh;
     } else {
-      xb[o] = px[e]!;
-      xb[o + 1] = py[e]!;
+      xb[o + PT_X] = px[e]!;
+      xb[o + PT_Y] = py[e]!;
       xb[U + v] = 0;
       xb[U + v + 1] = 0;
     }
@@ -162,12 +184,12 @@ function prepareLinks(cl: ClothState, from: number, to: number): void {
     R = cl.rest,
     K = cl.compliance,
     F = cl.solve,
-    ihs2 = cl.scalars[6]!;
+    ihs2 = cl.scalars[SC_INV_HS2]!;
   for (let l = from; l < to; l++) {
-    const d = xb[I[2 * l]! + 2]! + xb[I[2 * l + 1]! + 2]! + K[l]! * ihs2,
+    const d = xb[I[PAIR_STRIDE * l + PAIR_A]! + PT_INV_MASS]! + xb[I[PAIR_STRIDE * l + PAIR_B]! + PT_INV_MASS]! + K[l]! * ihs2,
       r = R[l]!;
-    F[2 * l] = (r * r) / 3;
-    F[2 * l + 1] = d > 0 ? 2 / (3 * d) : 0;
+    F[SOLVE_STRIDE * l + SOLVE_P] = (r * r) / 3;
+    F[SOLVE_STRIDE * l + SOLVE_K] = d > 0 ? 2 / (3 * d) : 0;
   }
 }
 
@@ -175,19 +197,19 @@ function prepareLinks(cl: ClothState, from: number, to: number): void {
 function predictPoints(cl: ClothState, after: boolean, from: number, to: number): void {
   const xb = cl.buffer,
     np = cl.pointCount,
-    Q = 3 * np,
-    U = 5 * np,
+    Q = BEFORE_AT * np,
+    U = VELOCITY_AT * np,
     k = cl.scalars;
-  const hs = k[0]!,
-    ihs = k[1]!,
-    dvx = k[2]!,
-    dvy = k[3]!;
+  const hs = k[SC_HS]!,
+    ihs = k[SC_INV_HS]!,
+    dvx = k[SC_GX_HS]!,
+    dvy = k[SC_GY_HS]!;
   for (let i = from; i < to; i++) {
-    const o = 3 * i;
-    if (xb[o + 2] === 0) continue;
+    const o = PT_STRIDE * i;
+    if (xb[o + PT_INV_MASS] === 0) continue;
     const v = 2 * i,
-      x = xb[o]!,
-      y = xb[o + 1]!;
+      x = xb[o + PT_X]!,
+      y = xb[o + PT_Y]!;
     let v1: number, v2: number;
     if (after) {
       v1 = (x - xb[Q + v]!) * ihs + dvx;
@@ -198,8 +220,8 @@ function predictPoints(cl: ClothState, after: boolean, from: number, to: number)
     }
     xb[Q + v] = x;
     xb[Q + v + 1] = y;
-    xb[o] = x + v1 * hs;
-    xb[o + 1] = y + v2 * hs;
+    xb[o + PT_X] = x + v1 * hs;
+    xb[o + PT_Y] = y + v2 * hs;
   }
 }
 
@@ -210,8 +232,8 @@ function predictPoints(cl: ClothState, after: boolean, from: number, to: number)
  */
 function projectSoftPins(world: PhysicsWorld, cl: ClothState): void {
   const xb = cl.buffer,
-    hs = cl.scalars[0]!,
-    ihs2 = cl.scalars[6]!,
+    hs = cl.scalars[SC_HS]!,
+    ihs2 = cl.scalars[SC_INV_HS2]!,
     T = cl.softPinTarget,
     F = cl.softPinForce;
   for (let i = 0; i < cl.softPinCount; i++) {
@@ -220,17 +242,17 @@ function projectSoftPins(world: PhysicsWorld, cl: ClothState): void {
     if (!isAlive(world, h)) continue;
     const e = slotOf(h);
     if (cl.seen[e] !== cl.seenStamp) continue;
-    const o = 3 * cl.compact[e]!,
-      w = xb[o + 2]!;
+    const o = PT_STRIDE * cl.compact[e]!,
+      w = xb[o + PT_INV_MASS]!;
     if (w === 0) continue;
-    const dx = xb[o]! - T[2 * i]!,
-      dy = xb[o + 1]! - T[2 * i + 1]!,
+    const dx = xb[o + PT_X]! - T[2 * i]!,
+      dy = xb[o + PT_Y]! - T[2 * i + 1]!,
       C = Math.sqrt(dx * dx + dy * dy);
     if (C === 0) continue;
     const dl = Math.min(C / (w + cl.softPinCompliance[i]! * ihs2), cl.softPinMaxForce[i]! * hs * hs),
       s = (w * dl) / C;
-    xb[o] = xb[o]! - s * dx;
-    xb[o + 1] = xb[o + 1]! - s * dy;
+    xb[o + PT_X] = xb[o + PT_X]! - s * dx;
+    xb[o + PT_Y] = xb[o + PT_Y]! - s * dy;
     F[i] = dl * ihs2;
   }
 }
@@ -245,7 +267,7 @@ function projectSoftPins(world: PhysicsWorld, cl: ClothState): void {
  */
 function projectBoundary(cl: ClothState, box: Boundary, from: number, to: number): void {
   const xb = cl.buffer,
-    Q = 3 * cl.pointCount;
+    Q = BEFORE_AT * cl.pointCount;
   const x0 = box.min[0]!,
     y0 = box.min[1]!,
     x1 = box.max[0]!,
@@ -253,10 +275,10 @@ function projectBoundary(cl: ClothState, box: Boundary, from: number, to: number
     mu = box.friction,
     mus = box.staticFriction;
   for (let i = from; i < to; i++) {
-    const o = 3 * i;
-    if (xb[o + 2] === 0) continue;
-    let x = xb[o]!,
-      y = xb[o + 1]!;
+    const o = PT_STRIDE * i;
+    if (xb[o + PT_INV_MASS] === 0) continue;
+    let x = xb[o + PT_X]!,
+      y = xb[o + PT_Y]!;
     if (x >= x0 && x <= x1 && y >= y0 && y <= y1) continue;
     const px = xb[Q + 2 * i]!,
       py = xb[Q + 2 * i + 1]!;
@@ -270,8 +292,8 @@ function projectBoundary(cl: ClothState, box: Boundary, from: number, to: number
       y = alongWall(y, py, Math.abs(wall - x), mu, mus);
       x = wall;
     }
-    xb[o] = x;
-    xb[o + 1] = y;
+    xb[o + PT_X] = x;
+    xb[o + PT_Y] = y;
   }
 }
 
@@ -289,23 +311,23 @@ function projectLinks(cl: ClothState, from: number, to: number): void {
     I = cl.pair,
     F = cl.solve;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!,
-      ob = I[2 * l + 1]!;
-    const ax = xb[oa]!,
-      ay = xb[oa + 1]!,
-      bx = xb[ob]!,
-      by = xb[ob + 1]!;
+    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
+      ob = I[PAIR_STRIDE * l + PAIR_B]!;
+    const ax = xb[oa + PT_X]!,
+      ay = xb[oa + PT_Y]!,
+      bx = xb[ob + PT_X]!,
+      by = xb[ob + PT_Y]!;
     const dx = bx - ax,
       dy = by - ay;
-    const p = F[2 * l]!,
+    const p = F[SOLVE_STRIDE * l + SOLVE_P]!,
       d2 = dx * dx + dy * dy;
-    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)),
-      sa = xb[oa + 2]! * ks,
-      sb = xb[ob + 2]! * ks;
-    xb[oa] = ax - sa * dx;
-    xb[oa + 1] = ay - sa * dy;
-    xb[ob] = bx + sb * dx;
-    xb[ob + 1] = by + sb * dy;
+    const ks = F[SOLVE_STRIDE * l + SOLVE_K]! * ((3 * p - d2) / (p + d2)),
+      sa = xb[oa + PT_INV_MASS]! * ks,
+      sb = xb[ob + PT_INV_MASS]! * ks;
+    xb[oa + PT_X] = ax - sa * dx;
+    xb[oa + PT_Y] = ay - sa * dy;
+    xb[ob + PT_X] = bx + sb * dx;
+    xb[ob + PT_Y] = by + sb * dy;
   }
 }
 
@@ -316,25 +338,25 @@ function projectLinksRecording(cl: ClothState, from: number, to: number): void {
     F = cl.solve,
     lam = cl.lambda;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!,
-      ob = I[2 * l + 1]!;
-    const ax = xb[oa]!,
-      ay = xb[oa + 1]!,
-      bx = xb[ob]!,
-      by = xb[ob + 1]!;
+    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
+      ob = I[PAIR_STRIDE * l + PAIR_B]!;
+    const ax = xb[oa + PT_X]!,
+      ay = xb[oa + PT_Y]!,
+      bx = xb[ob + PT_X]!,
+      by = xb[ob + PT_Y]!;
     const dx = bx - ax,
       dy = by - ay;
-    const p = F[2 * l]!,
+    const p = F[SOLVE_STRIDE * l + SOLVE_P]!,
       d2 = dx * dx + dy * dy;
-    const ks = F[2 * l + 1]! * ((3 * p - d2) / (p + d2)),
-      sa = xb[oa + 2]! * ks,
-      sb = xb[ob + 2]! * ks;
+    const ks = F[SOLVE_STRIDE * l + SOLVE_K]! * ((3 * p - d2) / (p + d2)),
+      sa = xb[oa + PT_INV_MASS]! * ks,
+      sb = xb[ob + PT_INV_MASS]! * ks;
     // The multiplier of this projection: dlambda = -C / D = (r - L) / D = (s / D) L, with s / D = ks.
     lam[l] = ks * Math.sqrt(d2);
-    xb[oa] = ax - sa * dx;
-    xb[oa + 1] = ay - sa * dy;
-    xb[ob] = bx + sb * dx;
-    xb[ob + 1] = by + sb * dy;
+    xb[oa + PT_X] = ax - sa * dx;
+    xb[oa + PT_Y] = ay - sa * dy;
+    xb[ob + PT_X] = bx + sb * dx;
+    xb[ob + PT_Y] = by + sb * dy;
   }
 }
 
@@ -342,21 +364,21 @@ function projectLinksRecording(cl: ClothState, from: number, to: number): void {
 function scatterPoints(cl: ClothState, c: Components, from: number, to: number): void {
   const P = cl.points,
     xb = cl.buffer,
-    Q = 3 * cl.pointCount,
-    ihs = cl.scalars[1]!;
+    Q = BEFORE_AT * cl.pointCount,
+    ihs = cl.scalars[SC_INV_HS]!;
   const px = c.Position.x,
     py = c.Position.y,
     vx = c.Velocity.x,
     vy = c.Velocity.y;
   for (let i = from; i < to; i++) {
-    const o = 3 * i;
-    if (xb[o + 2] === 0) continue;
+    const o = PT_STRIDE * i;
+    if (xb[o + PT_INV_MASS] === 0) continue;
     const e = P[i]!,
       v = 2 * i;
-    px[e] = xb[o]!;
-    py[e] = xb[o + 1]!;
-    vx[e] = (xb[o]! - xb[Q + v]!) * ihs;
-    vy[e] = (xb[o + 1]! - xb[Q + v + 1]!) * ihs;
+    px[e] = xb[o + PT_X]!;
+    py[e] = xb[o + PT_Y]!;
+    vx[e] = (xb[o + PT_X]! - xb[Q + v]!) * ihs;
+    vy[e] = (xb[o + PT_Y]! - xb[Q + v + 1]!) * ihs;
   }
 }
 
@@ -366,11 +388,11 @@ function largestStretch(cl: ClothState, from: number, to: number, maxQ: number):
     I = cl.pair,
     F = cl.solve;
   for (let l = from; l < to; l++) {
-    const oa = I[2 * l]!,
-      ob = I[2 * l + 1]!;
-    const dx = xb[ob]! - xb[oa]!,
-      dy = xb[ob + 1]! - xb[oa + 1]!;
-    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!);
+    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
+      ob = I[PAIR_STRIDE * l + PAIR_B]!;
+    const dx = xb[ob + PT_X]! - xb[oa + PT_X]!,
+      dy = xb[ob + PT_Y]! - xb[oa + PT_Y]!;
+    const q = (dx * dx + dy * dy) / (3 * F[SOLVE_STRIDE * l + SOLVE_P]!);
     if (q > maxQ) maxQ = q;
   }
   return maxQ;
@@ -390,11 +412,11 @@ function tearLinks(world: PhysicsWorld, ihs2: number): void {
     xb = cl.buffer;
   const doomed: number[] = [];
   for (let l = 0; l < n; l++) {
-    const oa = I[2 * l]!,
-      ob = I[2 * l + 1]!;
-    const dx = xb[ob]! - xb[oa]!,
-      dy = xb[ob + 1]! - xb[oa + 1]!;
-    const q = (dx * dx + dy * dy) / (3 * F[2 * l]!),
+    const oa = I[PAIR_STRIDE * l + PAIR_A]!,
+      ob = I[PAIR_STRIDE * l + PAIR_B]!;
+    const dx = xb[ob + PT_X]! - xb[oa + PT_X]!,
+      dy = xb[ob + PT_Y]! - xb[oa + PT_Y]!;
+    const q = (dx * dx + dy * dy) / (3 * F[SOLVE_STRIDE * l + SOLVE_P]!),
       t1 = 1 + T[l]!;
     if (q > t1 * t1) {
       const strain = Math.sqrt(q) - 1;
@@ -429,12 +451,12 @@ function pack(world: PhysicsWorld): void {
   if (cl.rest.length < n) {
     const cap = Math.max(16, n * 2);
     cl.link = new Int32Array(cap);
-    cl.pair = new Int32Array(2 * cap);
+    cl.pair = new Int32Array(PAIR_STRIDE * cap);
     cl.rest = new Float64Array(cap);
     cl.compliance = new Float64Array(cap);
     cl.tear = new Float64Array(cap);
     cl.lambda = new Float64Array(cap);
-    cl.solve = new Float64Array(2 * cap);
+    cl.solve = new Float64Array(SOLVE_STRIDE * cap);
   }
   if (cl.seen.length < world.capacity + 1) {
     cl.seen = new Uint32Array(world.capacity + 1);
@@ -450,7 +472,7 @@ function pack(world: PhysicsWorld): void {
       compact[e] = points.length;
       points.push(e);
     }
-    return compact[e]! * 3;
+    return compact[e]! * PT_STRIDE;
   };
   // Inextensible links go first, the compliant ones after (see clothSystem).
   let front = 0,
@@ -460,8 +482,8 @@ function pack(world: PhysicsWorld): void {
     const e = links[i]!;
     const k = L.compliance[e]! === 0 ? front++ : back--;
     cl.link[k] = e;
-    cl.pair[2 * k] = index(L.a[e]!);
-    cl.pair[2 * k + 1] = index(L.b[e]!);
+    cl.pair[PAIR_STRIDE * k + PAIR_A] = index(L.a[e]!);
+    cl.pair[PAIR_STRIDE * k + PAIR_B] = index(L.b[e]!);
     cl.rest[k] = L.restLength[e]!;
     cl.compliance[k] = L.compliance[e]!;
     cl.tear[k] = L.tearStretch[e]!;
@@ -481,7 +503,7 @@ function pack(world: PhysicsWorld): void {
   cl.points = Int32Array.from(points);
   cl.pointCount = points.length;
   cl.pointHandles = Float64Array.from(points, (e) => currentHandle(world, e));
-  if (cl.buffer.length < 7 * points.length) cl.buffer = new Float64Array(7 * points.length);
+  if (cl.buffer.length < BUFFER_STRIDE * points.length) cl.buffer = new Float64Array(BUFFER_STRIDE * points.length);
   cl.built = cl.version;
 }
 
@@ -499,8 +521,8 @@ function colourOrder(cl: ClothState, from: number, to: number, pointCount: numbe
   const colour = new Int32Array(m);
   let colours = 0;
   for (let k = 0; k < m; k++) {
-    const a = cl.pair[2 * (from + k)]! / 3,
-      b = cl.pair[2 * (from + k) + 1]! / 3;
+    const a = cl.pair[PAIR_STRIDE * (from + k) + PAIR_A]! / PT_STRIDE,
+      b = cl.pair[PAIR_STRIDE * (from + k) + PAIR_B]! / PT_STRIDE;
     let c = 0;
     for (; c < 64; c++) {
       const word = c >> 5,
@@ -520,15 +542,15 @@ function colourOrder(cl: ClothState, from: number, to: number, pointCount: numbe
   for (let k = 0; k < m; k++) start[colour[k]! + 1]!++;
   for (let c = 0; c < colours; c++) start[c + 1]! += start[c]!;
   const link = cl.link.slice(from, to),
-    pair = cl.pair.slice(2 * from, 2 * to);
+    pair = cl.pair.slice(PAIR_STRIDE * from, PAIR_STRIDE * to);
   const rest = cl.rest.slice(from, to),
     comp = cl.compliance.slice(from, to),
     tear = cl.tear.slice(from, to);
   for (let k = 0; k < m; k++) {
     const j = from + start[colour[k]!]!++;
     cl.link[j] = link[k]!;
-    cl.pair[2 * j] = pair[2 * k]!;
-    cl.pair[2 * j + 1] = pair[2 * k + 1]!;
+    cl.pair[PAIR_STRIDE * j + PAIR_A] = pair[PAIR_STRIDE * k + PAIR_A]!;
+    cl.pair[PAIR_STRIDE * j + PAIR_B] = pair[PAIR_STRIDE * k + PAIR_B]!;
     cl.rest[j] = rest[k]!;
     cl.compliance[j] = comp[k]!;
     cl.tear[j] = tear[k]!;

@@ -27,7 +27,7 @@ export interface ClothState {
   points: Int32Array;
   /** Generational handles of `points` (see world/handles.ts), so a point that lost every link stays a cloth point while it lives. */
   pointHandles: Float64Array;
-  /** Per point, in sections of the point count n: x, y (m) and inverse mass (1/kg), 3 a point, at [0, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n). */
+  /** Per point, in sections of the point count n: x, y (m) and inverse mass (1/kg), 3 a point, at [0, 3n); x, y before the substep (m) at [3n, 5n); vx, vy at the start of the step (m/s) at [5n, 7n) (named in cloth/layout.ts, as `pair`, `solve` and `scalars`). */
   buffer: Float64Array;
   /** Per link (2 each): r^2 / 3 (m^2) and (2/3) / D (kg), with D = w_a + w_b + alpha~ (alpha~ = compliance / h_s^2). */
   solve: Float64Array;
