@@ -108,6 +108,8 @@ export interface ContactBuffer {
   previous: Int32Array;
   /** 1 if the contact touched in its step (it carried a normal impulse, or overlapped at the start), else 0: begin and end events. */
   touching: Uint8Array;
+  /** Rows whose `touching` is 1 (set with them). */
+  touchingCount: number;
 }
 
 const FLOAT_FIELDS = [
@@ -180,6 +182,7 @@ export function createContactBuffer(capacity = 1024): ContactBuffer {
     stampB: new Uint32Array(capacity),
     previous: new Int32Array(capacity),
     touching: new Uint8Array(capacity),
+    touchingCount: 0,
   };
 }
 

@@ -13,8 +13,12 @@ import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/events.js';
 import type { PhysicsWorld } from '../world/options.js';
 
-/** Per row of the previous step: 1 once a touching row of this step continues it. Scratch, not world state. */
-let continued = new Uint8Array(256);
+/**
+ * Per row of the previous step: `mark` once a touching row of this step continues it (a stamp, so the
+ * array is never cleared). Scratch, not world state.
+ */
+let continued = new Uint32Array(256);
+let mark = 0;
 
 /**
  * Marks this step's ball rows touching or not and writes their begin and end events. `prepared` is
@@ -24,50 +28,68 @@ let continued = new Uint8Array(256);
  */
 export function ballContactEvents(world: PhysicsWorld, buf: ContactBuffer, prepared: boolean): void {
   const cs = world.collision,
-    prev = cs.cache.rows,
-    events = cs.events;
+    prev = cs.cache.rows;
   const m = prev.count,
     n = prepared ? buf.count : 0;
-  if (continued.length < m) continued = new Uint8Array(Math.max(m, 2 * continued.length));
-  const done = continued;
-  done.fill(0, 0, m);
+  if (continued.length < m) continued = new Uint32Array(Math.max(m, 2 * continued.length));
+  if (++mark === 0xffffffff) {
+    continued.fill(0);
+    mark = 1;
+  }
+  const done = continued,
+    stamp = mark;
   const IMP = buf.impulse,
     S0 = buf.separation,
     PREV = buf.previous,
     T = buf.touching,
     pT = prev.touching;
-  const P = world.components.PreviousPosition;
+  // A row that touches and continues a touching row of the last step (the common case) only marks it.
+  let touchingNow = 0,
+    continuing = 0;
   for (let i = 0; i < n; i++) {
     const touching = IMP[i]! > 0 || S0[i]! < 0 ? 1 : 0;
     T[i] = touching;
     if (touching === 0) continue;
+    touchingNow++;
     const j = PREV[i]!;
     if (j >= 0) {
-      done[j] = 1;
-      if (pT[j] === 1) continue;
+      done[j] = stamp;
+      if (pT[j] === 1) {
+        continuing++;
+        continue;
+      }
     }
-    if (resumeAfterSleep(world, shapeOf(buf, i, 0), shapeOf(buf, i, 1))) continue;
-    const k = pushRow(world, events.begin, buf, i);
-    const b = buf.b[i]!,
-      rb = buf.rb[i]!;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!,
-      nz = buf.nz[i]!;
-    const list = events.begin;
-    list.px[k] = P.x[b]! - rb * nx;
-    list.py[k] = P.y[b]! - rb * ny;
-    list.pz[k] = world.dimensions === 3 ? P.z[b]! - rb * nz : 0;
-    list.nx[k] = nx;
-    list.ny[k] = ny;
-    list.nz[k] = world.dimensions === 3 ? nz : 0;
-    list.approachSpeed[k] = Math.max(0, -buf.impactVelocity[i]!);
-    list.impulse[k] = IMP[i]!;
+    if (!resumeAfterSleep(world, shapeOf(buf, i, 0), shapeOf(buf, i, 1))) beginEvent(world, buf, i);
   }
+  buf.touchingCount = touchingNow;
+  // Ends: last step's touching rows that no row continued (none when all of them were continued).
+  if (continuing === prev.touchingCount) return;
   for (let j = 0; j < m; j++) {
-    if (pT[j] !== 1 || done[j] === 1) continue;
+    if (pT[j] !== 1 || done[j] === stamp) continue;
     if (keepWhileAsleep(world, shapeOf(prev, j, 0), shapeOf(prev, j, 1), bodyOf(prev, j, 0), bodyOf(prev, j, 1))) continue;
-    pushRow(world, events.end, prev, j);
+    pushRow(world, cs.events.end, prev, j);
   }
+}
+
+/** Writes the begin event of row `i` of `buf`: its shapes and bodies, the point on B, the normal, the approach speed at impact and the step's impulse. */
+function beginEvent(world: PhysicsWorld, buf: ContactBuffer, i: number): void {
+  const list = world.collision.events.begin;
+  const k = pushRow(world, list, buf, i);
+  const P = world.components.PreviousPosition;
+  const b = buf.b[i]!,
+    rb = buf.rb[i]!;
+  const is3D = world.dimensions === 3;
+  const nx = buf.nx[i]!,
+    ny = buf.ny[i]!,
+    nz = is3D ? buf.nz[i]! : 0;
+  list.px[k] = P.x[b]! - rb * nx;
+  list.py[k] = P.y[b]! - rb * ny;
+  list.pz[k] = is3D ? P.z[b]! - rb * nz : 0;
+  list.nx[k] = nx;
+  list.ny[k] = ny;
+  list.nz[k] = nz;
+  list.approachSpeed[k] = Math.max(0, -buf.impactVelocity[i]!);
+  list.impulse[k] = buf.impulse[i]!;
 }
 
 /**
