@@ -1,7 +1,7 @@
 import {
   contactSpringEnergy,
   createPhysicsWorld,
-  forEachContact3D,
+  forEachContact,
   gravitationalPotentialEnergy,
   kineticEnergy,
   type PhysicsWorld,
@@ -59,7 +59,7 @@ export function pairContacts(world: PhysicsWorld, a: number, b: number): { point
     eb = slotOf(b);
   let points = 0,
     minSep = Infinity;
-  forEachContact3D(world, (c) => {
+  forEachContact(world, (c) => {
     if ((c.bodyA === ea && c.bodyB === eb) || (c.bodyA === eb && c.bodyB === ea)) {
       points++;
       minSep = Math.min(minSep, c.separation);

@@ -5,7 +5,7 @@ import {
   addHingeJoint3D,
   addShape3D,
   createPhysicsWorld,
-  forEachContact3D,
+  forEachContact,
   type PhysicsWorld,
   slotOf,
   step,
@@ -80,7 +80,7 @@ describe('3D fixed joint between two dynamic bodies', () => {
     };
     const pairContacts = (w: PhysicsWorld, a: number, b: number): number => {
       let n = 0;
-      forEachContact3D(w, (c) => {
+      forEachContact(w, (c) => {
         if ((c.bodyA === a && c.bodyB === b) || (c.bodyA === b && c.bodyB === a)) n++;
       });
       return n;

@@ -10,7 +10,7 @@ const G = 9.81;
  * at the lab's settings: the lab's top on a 5 mm tip precesses within 0.04 % of the steady root at its
  * 16 substeps (1 cm: 0.04 %, 1.5 cm: 0.06 %), and this test's top at dt 1/240 moves the same at every
  * tip size to 1e-10. The normal impulse is right too: a step's solver substeps sum to m g h (reading
- * only the last substep's, as `forEachContact3D` gives it, shows 0.67 m g h_s on the lab's top, the
+ * only the last substep's, as `forEachContact` gives it for a 3D shape, shows 0.67 m g h_s on the lab's top, the
  * first substep carrying 2.0, probably as the integrator turns the body by Euler's equations before the contacts
  * are solved). What did depend on the tip was at the default step (dt 1/60): the disc's spinning rim
  * threw the top up, the more the smaller its tip (last test; fixed in shape3d-collision.ts).
