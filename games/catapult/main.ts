@@ -352,14 +352,20 @@ app.canvas.addEventListener('pointerdown', (e) => {
   aim.dx = aim.dy = 0;
   app.canvas.setPointerCapture(e.pointerId);
 });
-app.canvas.addEventListener('pointermove', (e) => {
-  if (!aim.active) return;
+/** Sets the pull from the pointer's position in `e` (the drag from where it went down). */
+function pullTo(e: PointerEvent): void {
   pointerOnCanvas(app.canvas, e, pointer);
   aim.dx = (pointer.x - aim.x0) / aimScale();
   aim.dy = -(pointer.y - aim.y0) / aimScale();
+}
+app.canvas.addEventListener('pointermove', (e) => {
+  if (aim.active) pullTo(e);
 });
-const release = (): void => {
+const release = (e: PointerEvent): void => {
   if (!aim.active) return;
+  // The throw takes the pull where the pointer came up: the browser may merge or drop the moves
+  // just before a release (a busy page gets fewer), so the last move can lag the hand.
+  pullTo(e);
   aim.active = false;
   // Paused mid-drag: the pull is dropped, not thrown.
   if (!shell.paused) fire(aim.dx, aim.dy);
@@ -840,6 +846,10 @@ shell.expose({
   levelEnded: (): boolean => levelEnded,
   /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
   lastVerdict: (): string => lastThrow.verdict,
+  /** Screen pixels a metre of pull (a drag this many px long pulls 1 m), at least AIM_PX_PER_M. */
+  aimPxPerM: aimScale,
+  /** The last throw's launch velocity [vx, vy], m/s ([0, 0] before a throw). */
+  lastLaunch: (): [number, number] => (lastThrow.body ? [lastThrow.vx, lastThrow.vy] : [0, 0]),
   /** Whether the camera is at rest (tests aim at the cup once it is). */
   cameraSettled: (): boolean => cameraSettled,
   /** The level's tally now. */
