@@ -33,9 +33,10 @@ export const PULL = { max: 3, gain: 7 } as const;
 /** Projectile radius, m. */
 export const PROJECTILE_RADIUS = 0.3;
 /**
- * Rolling resistance of the grass: a projectile on the ground is slowed by ROLL_RESISTANCE x its
- * weight (and its spin by as much at its rim), so a stone that lands short thuds and stops instead
- * of rolling on into the castle (a ball rolling without slipping on flat ground never slows).
+ * Rolling resistance of the grass: a projectile or a crown stone on the ground is slowed by
+ * ROLL_RESISTANCE x its weight (and its spin by as much at its rim), so a stone that lands short
+ * thuds and stops instead of rolling on into the castle (a ball rolling without slipping on flat
+ * ground never slows).
  */
 export const ROLL_RESISTANCE = 1.2;
 /** Drop (m) below its start past which a castle piece counts as fallen. */
@@ -48,13 +49,13 @@ export const LEVEL_COUNT = 5;
 
 /**
  * Each level's castle: towers side by side, storeys in each, where the first tower stands (m, give
- * or take 1 m from the seed) and the shots the player has. From one throw over a grid of launch
- * angles (10-60 degrees) and speeds (12-27 m/s), a third of throws cleared the old first level (one
- * tower of two storeys); each level now asks a little more than the one before.
+ * or take 1 m from the seed) and the shots the player has. Each level asks a little more than the
+ * one before. The castle stands 11 to 12 m out, so the catapult and the castle share the screen at a
+ * scale where a piece reads (a 1.2 m post about 55 px tall on a 1060 px wide view).
  */
 const LEVEL_TOWERS = [1, 2, 2, 3, 4],
   LEVEL_STOREYS = [3, 2, 3, 3, 4],
-  LEVEL_X0 = [18, 17, 17, 16, 15],
+  LEVEL_X0 = [12, 12, 12, 11.5, 11],
   LEVEL_SHOTS = [3, 3, 3, 4, 5];
 
 /** Options of a level. */
@@ -75,6 +76,8 @@ export interface Piece {
   startX: number;
   startY: number;
   kind: 'post' | 'plank' | 'block' | 'stone';
+  /** Half width and half height of a box, m; a stone's radius twice. */
+  half: [number, number];
   /** Whether the piece has counted as fallen: once it has, it stays fallen (set by `tally`). */
   down?: boolean;
 }
@@ -85,6 +88,8 @@ export interface Level {
   pieces: Piece[];
   /** Weld joints built (handles). */
   joints: number[];
+  /** The two bodies each weld joint holds together, in the order of `joints`. */
+  jointBodies: Array<[number, number]>;
   /** Shots the player has at the start. */
   shots: number;
   /** Left and right end of the castle, m (for aiming and framing). */
@@ -112,8 +117,9 @@ export function worldOptions(o: { gravity: number }): PhysicsWorldOptions {
 
 /**
  * Builds level `o.level` into an empty `world`: the ground and a castle of seeded towers.
- * Level 0: one tower of two storeys; 1: two towers with a bridge plank; 2: three towers of three
- * storeys with stones; 3: a fortress of four towers, four storeys, heavier stones.
+ * Level 0: one tower of three storeys; 1: two towers of two storeys joined by a bridge plank; 2: two
+ * towers of three storeys, two stones on each; 3: three towers; 4: a fortress of four towers of four
+ * storeys, heavier stones.
  * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
  */
 export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
@@ -126,12 +132,13 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
     static: true,
     friction: 0.9,
   });
-  // The catapult's mound (static, under the cup).
-  const mound = addBox(world, { position: [LAUNCH.x - 0.4, 0.45], halfExtents: [0.5, 0.45], static: true, friction: 0.9 });
+  // The catapult's mound (static, under the catapult): 0.3 m high, from 1.2 m behind the cup to 0.6 m past it.
+  const mound = addBox(world, { position: [LAUNCH.x - 0.3, 0.15], halfExtents: [0.9, 0.15], static: true, friction: 0.9 });
   const rng = new Rng(o.seed * 7919 + o.level);
   const lv: Level = {
     pieces: [],
     joints: [],
+    jointBodies: [],
     shots: LEVEL_SHOTS[o.level]!,
     castleMinX: Infinity,
     castleMaxX: -Infinity,
@@ -146,13 +153,17 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
   const span = 2.4; // width of a storey: two posts under a plank
   const weld = (a: number, b: number, anchor: [number, number]): void => {
     lv.joints.push(addWeldJoint(world, { a, b, anchor, breakForce: o.jointStrength, breakTorque: o.jointStrength * 0.25 }));
+    lv.jointBodies.push([a, b]);
   };
-  const piece = (body: number, kind: Piece['kind']): number => {
+  const piece = (body: number, kind: Piece['kind'], half: [number, number]): number => {
     const P = world.components.Position,
       s = slotOf(body);
-    lv.pieces.push({ body, startX: P.x[s]!, startY: P.y[s]!, kind });
+    lv.pieces.push({ body, startX: P.x[s]!, startY: P.y[s]!, kind, half });
     return body;
   };
+  // Round bodies slowed on the grass by `rollingResistance`: handle, radius (m) pairs.
+  const rolling: number[] = [];
+  thrown.set(world, rolling);
   const POST = { hx: 0.15, hy: 0.6 },
     PLANK = { hx: span / 2 + 0.2, hy: 0.12 };
   for (let t = 0; t < towers; t++) {
@@ -167,6 +178,7 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
         const post = piece(
           addBox(world, { position: [px, y + POST.hy], halfExtents: [POST.hx, POST.hy], density: 2, friction: 0.7 }),
           'post',
+          [POST.hx, POST.hy],
         );
         posts.push(post);
         // Glue the post to the plank under it.
@@ -176,19 +188,20 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
       const plank = piece(
         addBox(world, { position: [cx, y + PLANK.hy], halfExtents: [PLANK.hx, PLANK.hy], density: 2, friction: 0.7 }),
         'plank',
+        [PLANK.hx, PLANK.hy],
       );
       for (const post of posts) weld(post, plank, [world.components.Position.x[slotOf(post)]!, y]);
       y += 2 * PLANK.hy;
       below = [plank];
       // A block in the middle of some storeys, from the seed.
       if (s > 0 && rng.next() < 0.5)
-        piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block');
+        piece(addBox(world, { position: [cx, base + 0.31], halfExtents: [0.3, 0.3], density: 1.5, friction: 0.7 }), 'block', [0.3, 0.3]);
     }
     // Crown: a stone (or two) on the top plank.
     const stones = o.level >= 2 ? 2 : 1;
     for (let k = 0; k < stones; k++) {
       const r = 0.3 + 0.04 * o.level;
-      piece(
+      const stone = piece(
         addBody(world, {
           position: [cx + (stones === 1 ? 0 : (k - 0.5) * 1.1), y + r + 0.01],
           radius: r,
@@ -197,7 +210,9 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
           restitution: 0.1,
         }),
         'stone',
+        [r, r],
       );
+      rolling.push(stone, r);
     }
     lv.castleMinX = Math.min(lv.castleMinX, cx - span / 2 - 0.2);
     lv.castleMaxX = Math.max(lv.castleMaxX, cx + span / 2 + 0.2);
@@ -209,13 +224,17 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
         b = prevRoof[prevRoof.length - 1];
       if (a && b) {
         const mid = (a.startX + b.startX) / 2;
-        const bridge = piece(addBox(world, { position: [mid, y + 0.12], halfExtents: [0.75, 0.12], density: 2, friction: 0.7 }), 'plank');
+        const bridge = piece(
+          addBox(world, { position: [mid, y + 0.12], halfExtents: [0.75, 0.12], density: 2, friction: 0.7 }),
+          'plank',
+          [0.75, 0.12],
+        );
         weld(a.body, bridge, [mid - 0.6, y]);
         weld(b.body, bridge, [mid + 0.6, y]);
       }
     }
   }
-  addSystem(world, 'forces', rollingResistance(world));
+  addSystem(world, 'forces', rollingResistance(rolling));
   lv.rock = addBox(world, {
     position: [lv.castleMaxX + ROCK.gap + ROCK.hx, ROCK.hy],
     halfExtents: [ROCK.hx, ROCK.hy],
@@ -267,33 +286,34 @@ export function predictArc(x0: number, y0: number, vx: number, vy: number, g: nu
   return out;
 }
 
-/** The projectiles thrown in each world (`launch` adds them; `rollingResistance` slows them on the ground). */
+/** The round bodies of each world that the grass slows: handle, radius (m) pairs (`buildLevel` and `launch` add them). */
 const thrown = new WeakMap<PhysicsWorld, number[]>();
 
 /**
- * A forces-stage system: each projectile touching the ground (its bottom within 3 cm of y = 0, on the
- * ground's length) gets a force against its motion of ROLL_RESISTANCE x its weight and a torque
- * against its spin of as much at its rim, each capped so that it stops the projectile within the
- * substep rather than turn it back.
+ * A forces-stage system: each round body of `list` (handle, radius pairs: the projectiles and the
+ * castle's crown stones) touching the ground (its bottom within 3 cm of y = 0, on the ground's
+ * length) gets a force against its motion of ROLL_RESISTANCE x its weight and a torque against its
+ * spin of as much at its rim, each capped so that it stops the body within the substep rather than
+ * turn it back. A stone knocked off the castle so stops near it instead of rolling back to the catapult.
  */
-function rollingResistance(world: PhysicsWorld): (w: PhysicsWorld) => void {
-  const list: number[] = [];
-  thrown.set(world, list);
+function rollingResistance(list: number[]): (w: PhysicsWorld) => void {
   return (w) => {
     const c = w.components,
       h = w.dt / w.substeps,
       g = Math.abs(w.gravity[1]!);
-    for (const b of list) {
+    for (let i = 0; i < list.length; i += 2) {
+      const b = list[i]!,
+        r = list[i + 1]!;
       if (!isAlive(w, b)) continue;
       const s = slotOf(b);
       const x = c.Position.x[s]!;
-      if (c.Position.y[s]! - PROJECTILE_RADIUS > 0.03 || x < GROUND.minX || x > GROUND.maxX) continue;
+      if (c.Position.y[s]! - r > 0.03 || x < GROUND.minX || x > GROUND.maxX) continue;
       const m = c.Mass.value[s]!,
         f = ROLL_RESISTANCE * m * g;
       const vx = c.Velocity.x[s]!,
         w0 = c.AngularVelocity.z[s]!;
       c.Force.x[s] = c.Force.x[s]! - Math.sign(vx) * Math.min(f, (m * Math.abs(vx)) / h);
-      c.Torque.z[s] = c.Torque.z[s]! - Math.sign(w0) * Math.min(f * PROJECTILE_RADIUS, (c.Inertia.value[s]! * Math.abs(w0)) / h);
+      c.Torque.z[s] = c.Torque.z[s]! - Math.sign(w0) * Math.min(f * r, (c.Inertia.value[s]! * Math.abs(w0)) / h);
     }
   };
 }
@@ -308,7 +328,7 @@ export function launch(world: PhysicsWorld, vx: number, vy: number, mass: number
     friction: 0.6,
     restitution: 0.2,
   });
-  thrown.get(world)?.push(b);
+  thrown.get(world)?.push(b, PROJECTILE_RADIUS);
   return b;
 }
 
