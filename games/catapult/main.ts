@@ -17,6 +17,7 @@ import {
   getSound,
   isTouchDevice,
   numberParam,
+  pageLayout,
   pointerOnCanvas,
   type SoundMaterial,
   seedParam,
@@ -24,15 +25,18 @@ import {
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step } from '@bitphysics/physics';
-import { Graphics, Text } from 'pixi.js';
+import { Container, Graphics, Text } from 'pixi.js';
+import { type DebrisKind, Effects } from './effects';
+import { CATAPULT, cupAt, drawCatapult, drawGlass, drawMound, drawStone, drawWood, mixColor } from './look';
 import {
   buildLevel,
-  hasFallen,
+  FALL_POINTS,
   LAUNCH,
   LEVEL_COUNT,
   type Level,
   launch,
   launchVelocity,
+  PROJECTILE_RADIUS,
   PULL,
   predictArc,
   ROCK,
@@ -51,7 +55,20 @@ const params = {
   next: () => nextLevel(),
 };
 
-let lv: Level = { pieces: [], joints: [], shots: 0, castleMinX: 0, castleMaxX: 0, castleTop: 0, ground: 0, mound: 0, rock: 0 };
+/** The effects of hits (dust, splinters, popups, shake); made once the renderer is up. */
+let effects: Effects | null = null;
+let lv: Level = {
+  pieces: [],
+  joints: [],
+  jointBodies: [],
+  shots: 0,
+  castleMinX: 0,
+  castleMaxX: 0,
+  castleTop: 0,
+  ground: 0,
+  mound: 0,
+  rock: 0,
+};
 let shotsLeft = 0;
 let shots: number[] = [];
 let best: Tally = { fallen: 0, broken: 0, score: 0 };
@@ -99,21 +116,79 @@ function createWorld(): PhysicsWorld {
   campaign.scores[params.level - 1] = 0;
   campaign.stars[params.level - 1] = 0;
   materials.clear();
-  for (const p of lv.pieces) materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : 'stone');
+  for (const p of lv.pieces)
+    materials.set(p.body, p.kind === 'post' || p.kind === 'plank' ? 'wood' : p.kind === 'block' ? 'glass' : 'stone');
+  popped.clear();
+  celebrated = false;
+  weldsHeld.length = 0;
+  for (let i = 0; i < lv.joints.length; i++) weldsHeld.push(true);
+  effects?.clear();
+  arm.angle = CATAPULT.cocked;
+  arm.velocity = 0;
+  arm.firedAt = Number.NEGATIVE_INFINITY;
+  lastDrawTime = 0;
   return world;
 }
+
+/**
+ * The catapult's arm: its angle (rad, see CATAPULT) and angular velocity (rad/s), and the world time
+ * of the last throw (s). It follows the pull while aiming, swings forward to the crossbar on a throw
+ * and, RELOAD s later, swings back with the next stone in its cup.
+ */
+const arm = { angle: CATAPULT.cocked as number, velocity: 0, firedAt: Number.NEGATIVE_INFINITY };
+/** Seconds from a throw until the arm swings back to load the next stone. */
+const RELOAD = 0.8;
+/** World time of the last frame drawn, s (effects and the arm advance by the world's time, so a pause stops them). */
+let lastDrawTime = 0;
 
 /** Sound material of each piece's body; the projectiles and the ground sound as stone. */
 const materials = new Map<number, SoundMaterial>();
 const sound = getSound();
+/** Pieces whose fall has been shown (a popup and a puff), by body handle. */
+const popped = new Set<number>();
+/** Whether each weld of the level held at the last frame (a break throws splinters once). */
+const weldsHeld: boolean[] = [];
+/** Debris kind a material's bits are. */
+const DEBRIS: Record<SoundMaterial, DebrisKind> = { wood: 'wood', glass: 'glass', stone: 'stone', metal: 'stone', soft: 'dust' };
 
-/** One step, then a sound for each impact (louder of the two bodies' materials: wood over stone). */
+/**
+ * One step, then for each impact a sound (wood over glass over stone, the louder material of the two
+ * bodies, as loud as the impulse) and what it throws up where the bodies met: dust where something
+ * lands on the grass, splinters, shards or chips of what a stone hits, and a shake of the camera
+ * for a hard hit by a thrown stone (its size from the impulse).
+ */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  const material = (b: number): SoundMaterial => materials.get(b) ?? 'stone';
   forEachImpact(world, (a, b, impulse) => {
-    const m = materials.get(a) === 'wood' || materials.get(b) === 'wood' ? 'wood' : 'stone';
+    const ma = material(a),
+      mb = material(b);
+    const m = ma === 'wood' || mb === 'wood' ? 'wood' : ma === 'glass' || mb === 'glass' ? 'glass' : 'stone';
     sound.impact(impulse, m, { threshold: 2, loud: 60 });
   });
+  if (!effects) return;
+  const ev = world.collision.shapes.events.begin;
+  for (let i = 0; i < ev.count; i++) {
+    const a = ev.bodyA[i]!,
+      b = ev.bodyB[i]!,
+      v = ev.approachSpeed[i]!,
+      x = ev.px[i]!,
+      y = ev.py[i]!;
+    if (v < 2.5) continue;
+    const stoneA = shots.includes(a),
+      stoneB = shots.includes(b);
+    const ground = a === lv.ground || b === lv.ground;
+    if (ground) effects.burst('dust', x, y, Math.min(12, Math.round(2 + v)), 1.5 + 0.3 * v);
+    for (const [body, hitByStone] of [
+      [a, stoneB],
+      [b, stoneA],
+    ] as const) {
+      if (!materials.has(body)) continue;
+      const n = Math.min(hitByStone ? 9 : 4, Math.round((hitByStone ? 2 : 0) + v / (hitByStone ? 2 : 4)));
+      effects.burst(DEBRIS[material(body)], x, y, n, 1 + 0.45 * v, -ev.nx[i]! * (body === a ? 1 : -1), 0.8);
+    }
+    if (stoneA || stoneB) effects.shake(Math.min(12, 1.2 * v));
+  }
 }
 
 /**
@@ -163,9 +238,15 @@ const SKY = 0x9fd0f5,
   GRASS = 0x4f8f3a,
   EARTH = 0x6b4a2e;
 
-// The panel goes in before the game starts: made after, it took the right column from a canvas
-// already drawn, which shrank from 1060 to 735 px wide at 1280 x 800 and the scene jumped twice in
-// its first second.
+/** Whether the main pointer is a finger: touch wording, no key hints. */
+const touch = isTouchDevice();
+/** A panel label with its key (a phone has no keys: the label alone). */
+const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
+
+// The panel goes in before the game starts (made after, it narrowed the canvas already drawn and
+// the scene jumped). It sits in the left column under the controls, closed, so the scene has the
+// rest of the width (1060 px at 1280 x 800; a right-hand column left it 735 px, taller than wide);
+// on a phone it is in the menu drawer.
 const panel = createPanel(
   params,
   [
@@ -199,10 +280,10 @@ const panel = createPanel(
       onRelease: true,
       onChange: () => shell.reset(),
     },
-    { type: 'button', key: 'reset', label: 'reset level (R)' },
-    { type: 'button', key: 'next', label: 'next level (L)' },
+    { type: 'button', key: 'reset', label: withKey('reset level', 'R') },
+    { type: 'button', key: 'next', label: withKey('next level', 'L') },
   ],
-  { title: 'Catapult' },
+  { title: 'Settings', container: pageLayout().info, closed: !pageLayout().compact() },
 );
 
 const game = await startPixiGame({
@@ -221,7 +302,7 @@ const game = await startPixiGame({
   beforeFrame: () => {
     if (framing) frameCamera();
   },
-  onFrame: (_alpha, world) => draw(world),
+  onFrame: (alpha, world) => draw(world, alpha),
 });
 const { shell, renderer, app } = game;
 
@@ -249,8 +330,8 @@ shell.onWorldChange(() => {
 /**
  * The camera has two views. The aim view: the whole play area, from behind the catapult to just
  * past the rock, fitted to the screen's width, so the player sees both the catapult and the castle
- * while aiming and never waits on a pan. On a narrow screen (a phone) it starts just behind the cup
- * (the band of a long pull may leave the screen; a drag aims from anywhere). The shot view: after a
+ * while aiming and never waits on a pan: from just behind the stones stacked by the catapult, or on a
+ * narrow screen (a phone) just behind the catapult (a drag aims from anywhere). The shot view: after a
  * throw, the castle and the rock with room for debris around them, on a phone only, over 2 x
  * closer there (held upright, a level 1 castle 100 px wide instead of 45): the camera eases to it
  * while the stone flies and back to the aim view once the throw's verdict has faded, or at once
@@ -283,8 +364,8 @@ function viewFor(minX: number, maxX: number): { minX: number; minY: number; maxX
 const rockRight = (): number => lv.castleMaxX + ROCK.gap + 2 * ROCK.hx;
 /** The aim view (see above). */
 function aimView(): { minX: number; minY: number; maxX: number; maxY: number } {
-  // Room behind the catapult for the longest pull (PULL.max) where the screen is wide enough.
-  const behind = renderer.camera.width < NARROW ? 1.2 : PULL.max + 0.4;
+  // Room behind the catapult for its stones where the screen is wide enough.
+  const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
 }
 /** The shot view (see above): the castle, the rock and 2.5 m either side for debris. */
@@ -395,6 +476,8 @@ function fire(dx: number, dy: number): number {
   lastThrow.vx = vx;
   lastThrow.vy = vy;
   shotView = true;
+  arm.firedAt = shell.world.time;
+  arm.velocity = -(8 + 22 * Math.min(1, Math.hypot(dx, dy) / PULL.max));
   sound.launch(Math.min(1, Math.hypot(dx, dy) / PULL.max));
   return ball;
 }
@@ -538,7 +621,6 @@ let shownScore = 0;
 
 /** The on-screen "Next level" button, shown when a level is over. */
 const showNext = createActionButton('Next level ▶', () => nextLevel());
-const touch = isTouchDevice();
 
 const overlay = new Graphics({ label: 'catapult' });
 const banner = new Text({
@@ -581,7 +663,135 @@ const pauseText = new Text({
   },
 });
 pauseText.anchor.set(0.5);
-renderer.root.addChild(overlay, banner, verdictText, offscreenText, pauseShade, pauseText);
+const popupLayer = new Container({ label: 'popups' });
+effects = new Effects(popupLayer);
+renderer.root.addChild(overlay, effects.graphics, popupLayer, banner, verdictText, offscreenText, pauseShade, pauseText);
+
+/** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
+function loaded(): boolean {
+  return shotsLeft > 0 && shell.world.time - arm.firedAt > RELOAD && arm.angle > CATAPULT.cocked - 0.35;
+}
+
+/**
+ * Moves the arm by `dt` s: toward the pull while aiming (a stiff spring), forward to the crossbar
+ * after a throw (its launch speed, bouncing off the bar), and back to cocked RELOAD s later if a
+ * shot is left (a soft spring). Integrated in 1/240 s steps (the springs are stiff).
+ */
+function swingArm(dt: number): void {
+  const since = shell.world.time - arm.firedAt;
+  let target: number = CATAPULT.cocked,
+    k = 60,
+    c = 2 * Math.sqrt(60);
+  if (since < RELOAD || shotsLeft === 0) {
+    target = CATAPULT.stop;
+    k = 250;
+    c = 8;
+  } else if (aim.active) {
+    target = CATAPULT.cocked + CATAPULT.fullPull * Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
+    k = 500;
+    c = 2 * Math.sqrt(500);
+  }
+  for (let left = dt; left > 1e-9; left -= 1 / 240) {
+    const h = Math.min(left, 1 / 240);
+    arm.velocity += (-k * (arm.angle - target) - c * arm.velocity) * h;
+    arm.angle += arm.velocity * h;
+    if (arm.angle < CATAPULT.stop) {
+      arm.angle = CATAPULT.stop;
+      arm.velocity = -0.3 * arm.velocity;
+    }
+  }
+}
+
+/** The stone in the cup (when loaded) and the stones left beside the catapult, stacked. */
+function drawAmmo(): void {
+  const cam = renderer.camera;
+  const inCup = loaded();
+  if (inCup) {
+    const [, , x, y] = cupAt(arm.angle, PROJECTILE_RADIUS);
+    drawStone(overlay, cam, x, y, 0.6, PROJECTILE_RADIUS, STONE_COLOR);
+  }
+  const pile = shotsLeft - (inCup ? 1 : 0);
+  for (let k = 0; k < pile; k++) {
+    const row = k < 3 ? 0 : 1,
+      col = row === 0 ? k : k - 3;
+    drawStone(overlay, cam, -1.75 - 0.5 * col - 0.25 * row, 0.24 + 0.42 * row, 1.3 * k, 0.24, STONE_COLOR);
+  }
+}
+
+/** The thrown stones' colour. */
+const STONE_COLOR = 0x6b6660;
+
+/**
+ * Draws the castle's pieces (wood, glass, stones) over their plain shapes, where and as turned as the
+ * renderer draws them this frame, and the thrown stones; a piece that has just fallen gets its
+ * popup ("+100") and a puff of dust.
+ */
+function drawPieces(world: PhysicsWorld, alpha: number): void {
+  const cam = renderer.camera;
+  const A = world.components.Angle.value,
+    W = world.components.AngularVelocity.z,
+    P = world.components.Position,
+    O = world.components.PreviousPosition;
+  const back = (1 - alpha) * world.dt;
+  const at = { x: 0, y: 0 };
+  // Where and as turned as the renderer draws a body this frame: its position interpolated from the
+  // last step's by alpha, its angle taken back by the rest of the step's turn.
+  const place = (b: number): boolean => {
+    if (!isAlive(world, b)) return false;
+    const s = slotOf(b);
+    at.x = O.x[s]! + (P.x[s]! - O.x[s]!) * alpha;
+    at.y = O.y[s]! + (P.y[s]! - O.y[s]!) * alpha;
+    return true;
+  };
+  const angleOf = (b: number): number => {
+    const s = slotOf(b);
+    return A[s]! - W[s]! * back;
+  };
+  for (const p of lv.pieces) {
+    if (!place(p.body)) continue;
+    const a = angleOf(p.body),
+      color = renderer.colorOf(p.body),
+      down = p.down === true;
+    if (p.kind === 'stone') drawStone(overlay, cam, at.x, at.y, a, p.half[0], down ? mixColor(color, 0x000000, 0.25) : color);
+    else if (p.kind === 'block') drawGlass(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
+    else drawWood(overlay, cam, at.x, at.y, a, p.half[0], p.half[1], color, down);
+    if (down && !popped.has(p.body)) {
+      popped.add(p.body);
+      effects!.popup(at.x, at.y + 0.4, `+${FALL_POINTS}`);
+      effects!.burst('dust', at.x, Math.max(0.1, at.y - p.half[1]), 5, 1.6);
+    }
+  }
+  for (const b of shots) {
+    if (!place(b)) continue;
+    drawStone(overlay, cam, at.x, at.y, angleOf(b), PROJECTILE_RADIUS, STONE_COLOR);
+  }
+}
+
+/** Splinters and a crack for each weld that broke since the last frame. */
+function showBreaks(world: PhysicsWorld): void {
+  const P = world.components.Position;
+  for (let i = 0; i < lv.joints.length; i++) {
+    if (!weldsHeld[i] || isAlive(world, lv.joints[i]!)) continue;
+    weldsHeld[i] = false;
+    const [a, b] = lv.jointBodies[i]!;
+    if (!isAlive(world, a) || !isAlive(world, b)) continue;
+    const sa = slotOf(a),
+      sb = slotOf(b);
+    effects!.burst('wood', (P.x[sa]! + P.x[sb]!) / 2, (P.y[sa]! + P.y[sb]!) / 2, 6, 3);
+    sound.impact(25, 'wood', { threshold: 2, loud: 60 });
+  }
+}
+
+/** A power bar over the catapult while aiming: how hard the pull throws (full at PULL.max). */
+function drawPower(power: number): void {
+  const cam = renderer.camera;
+  const w = Math.max(60, cam.toScreenLength(1.6)),
+    h = 8;
+  const x = cam.toScreenX(-0.5) - w / 2,
+    y = cam.toScreenY(2.9);
+  overlay.roundRect(x - 2, y - 2, w + 4, h + 4, 4).fill({ color: 0x000000, alpha: 0.55 });
+  overlay.roundRect(x, y, Math.max(2, w * power), h, 3).fill(mixColor(0x5cd65c, 0xff5040, power));
+}
 
 /** Shows or hides the pause overlay. */
 function drawPause(): void {
@@ -616,12 +826,6 @@ const CLOUDS: ReadonlyArray<readonly [number, number, number]> = [
   [45, 15, 1.5],
 ];
 const CLOUD_SPAN = 54;
-
-/** The colour a fraction t of the way from a to b (0xRRGGBB). */
-function mixColor(a: number, b: number, t: number): number {
-  const c = (s: number) => Math.round(((a >> s) & 255) * (1 - t) + ((b >> s) & 255) * t) << s;
-  return c(16) | c(8) | c(0);
-}
 
 /** A range of hills at parallax `p` (0 far, 1 near): height `amp` m above the ground, in `color`. */
 function hills(p: number, amp: number, seed: number, color: number): void {
@@ -706,7 +910,7 @@ function drawRock(): void {
   overlay.poly(lit).fill({ color: 0xb3ab9e, alpha: 0.7 });
 }
 
-function draw(world: PhysicsWorld): void {
+function draw(world: PhysicsWorld, alpha: number): void {
   drawBackdrop(world);
   const cam = renderer.camera,
     sx = (x: number) => cam.toScreenX(x),
@@ -728,37 +932,33 @@ function draw(world: PhysicsWorld): void {
         .fill({ color: 0x9a8468, alpha: 0.55 });
   }
   drawRock();
-  // The catapult: a frame and its arm to the cup; the band to the pull while aiming.
-  overlay
-    .moveTo(sx(LAUNCH.x - 0.6), sy(0.9))
-    .lineTo(sx(LAUNCH.x), sy(LAUNCH.y))
-    .lineTo(sx(LAUNCH.x + 0.3), sy(0.9))
-    .stroke({ width: 6, color: 0x8d5a2b });
-  overlay.circle(sx(LAUNCH.x), sy(LAUNCH.y), Math.abs(sx(0.35) - sx(0))).stroke({ width: 2, color: 0xffd166 });
-  if (aim.active) {
-    const d = Math.hypot(aim.dx, aim.dy),
-      k = d > PULL.max ? PULL.max / d : 1;
-    const hx = LAUNCH.x + aim.dx * k,
-      hy = LAUNCH.y + aim.dy * k;
-    overlay.moveTo(sx(LAUNCH.x), sy(LAUNCH.y)).lineTo(sx(hx), sy(hy)).stroke({ width: 3, color: 0xe76f51 });
-    overlay.circle(sx(hx), sy(hy), 6).fill({ color: 0xe76f51 });
-    const [vx, vy] = launchVelocity(aim.dx, aim.dy);
-    const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
-    for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 2.5).fill({ color: 0xffffff, alpha: 0.8 });
-  }
+  // The grass's top edge, lit, over the ground slab.
+  overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  drawMound(overlay, cam, 0x7a5533, 0x5e9c45);
+  const dt = Math.min(0.1, Math.max(0, world.time - lastDrawTime));
+  lastDrawTime = world.time;
+  swingArm(dt);
+  drawCatapult(overlay, cam, arm.angle);
+  drawAmmo();
   const t = tally(world, lv);
   if (t.score > best.score) best = t;
+  showBreaks(world);
+  drawPieces(world, alpha);
   followThrow(world, t);
   drawThrow(world);
-  // Fallen pieces get a red ring: what scored.
-  const P = world.components.Position;
-  for (const p of lv.pieces) {
-    if (!isAlive(world, p.body)) continue;
-    const s = slotOf(p.body);
-    if (hasFallen(world, p)) overlay.circle(sx(P.x[s]!), sy(P.y[s]!), 5).fill({ color: 0xe63946 });
+  if (aim.active) {
+    const [vx, vy] = launchVelocity(aim.dx, aim.dy);
+    const arc = predictArc(LAUNCH.x, LAUNCH.y, vx, vy, -world.gravity[1]!, 60, 0.05);
+    const power = Math.min(1, Math.hypot(aim.dx, aim.dy) / PULL.max);
+    const dot = mixColor(0xffffff, 0xffb03b, power);
+    for (let i = 0; i < arc.length; i += 2) overlay.circle(sx(arc[i]![0]), sy(arc[i]![1]), 3).fill({ color: dot, alpha: 0.9 });
+    drawPower(power);
   }
+  effects!.update(dt, -world.gravity[1]!);
+  effects!.draw(cam);
   drawPause();
   if (!levelEnded && levelOver(world, t)) recordLevel(t);
+  if (!celebrated && (levelEnded ? campaign.stars[params.level - 1]! > 0 : clearedEarly(world))) celebrate();
   // One level score everywhere (banner and readout): the live tally while the level is on; once it is
   // over, the score it counted (with the bonus for shots left), which later debris no longer changes.
   const i = params.level - 1;
@@ -826,6 +1026,15 @@ function clearedEarly(world: PhysicsWorld): boolean {
   return starsOf(tally(world, lv).fallen / Math.max(1, lv.pieces.length)) > 0;
 }
 
+/** Whether this level's clear has been celebrated (once a level). */
+let celebrated = false;
+/** A level cleared: a rising three-note chime and confetti over the castle. */
+function celebrate(): void {
+  celebrated = true;
+  for (const [k, pitch] of [523, 659, 784].entries()) setTimeout(() => sound.chime(pitch, 0.35), 140 * k);
+  effects!.burst('confetti', (lv.castleMinX + lv.castleMaxX) / 2, lv.castleTop + 1.5, 60, 7);
+}
+
 /** Ends the level on screen: its score (with the unused shots' bonus once cleared) and stars count, once and only its best try. */
 function recordLevel(t: Tally): void {
   const earned = starsOf(t.fallen / Math.max(1, lv.pieces.length));
@@ -846,6 +1055,10 @@ shell.expose({
   levelEnded: (): boolean => levelEnded,
   /** What the last throw did once it settled ('' before): '+N' points, or why it missed. */
   lastVerdict: (): string => lastThrow.verdict,
+  /** The effects now: bits of debris in flight and score popups showing. */
+  effects: (): { bits: number; popups: number } => ({ bits: effects!.bitCount, popups: effects!.popupCount }),
+  /** The catapult's arm angle, rad (see CATAPULT in ./look: cocked at pi, upright at pi / 2). */
+  armAngle: (): number => arm.angle,
   /** Screen pixels a metre of pull (a drag this many px long pulls 1 m), at least AIM_PX_PER_M. */
   aimPxPerM: aimScale,
   /** The last throw's launch velocity [vx, vy], m/s ([0, 0] before a throw). */
