@@ -124,8 +124,10 @@ export interface Piece {
   /** Start place of its centre across the ground, m. */
   x0: number;
   z0: number;
-  /** Half extents, m. */
+  /** Half extents, m, along the box's own axes: its x and z turned by `yaw` about the vertical, its y up. */
   half: [number, number, number];
+  /** How the box was turned about the vertical when built, rad. */
+  yaw: number;
   /** What it belongs to. */
   kind: 'tower' | 'wall' | 'planks';
   /** Score it gives when it falls. */
@@ -205,7 +207,7 @@ function addPiece(
   addShape3D(world, body, { type: 'box', halfExtents: half, density: PIECE_DENSITY, friction: 0.6, restitution: 0.05 });
   let upAxis = 0;
   for (let i = 1; i < 3; i++) if (Math.abs(upComponent(world, body, i)) > Math.abs(upComponent(world, body, upAxis))) upAxis = i;
-  pieces.push({ body, kind, y0: y, x0: x, z0: z, half, points: 10 + Math.round(10 * y), fallen: false, upAxis });
+  pieces.push({ body, kind, y0: y, x0: x, z0: z, half, yaw, points: 10 + Math.round(10 * y), fallen: false, upAxis });
 }
 
 /** A tower of `n` cubes of edge `edge` (m) at (x, z), turned by yaw. */
@@ -342,23 +344,31 @@ export const RUN_UP = 6;
 export const RUN_STEPS = 8;
 /** Swing amplitude, m, a wind-up waits for the ball's swing to decay under (see `aimAt`). */
 export const SWING_LEFT = 0.3;
+/** How far off the run's line, m, the hook may be for a wind-up of odd half periods (see `aimAt`). */
+export const SIDE_LEFT = 1;
 /** Directions `aimAt` tries for the run, evenly spaced around the target. */
 const RUN_DIRECTIONS = 24;
 
 /**
  * Swings the ball at piece `piece` with timed moves (`CraneControls.moves`), from what a pendulum
- * does when its pivot starts to move at a constant speed u: the ball lags, then passes under the
- * pivot half a period later moving at 2u (its speed relative to the pivot, u, plus the pivot's).
+ * does when its pivot moves at a constant velocity: starting at rest under the pivot, the ball lags,
+ * then passes under it again half a period (T / 2) later moving at 2 w, and at rest a whole period
+ * later; a pivot that moves at w1 for an odd number of half periods and then at w2 for one more
+ * leaves the ball under it moving at 2 (w2 - w1) (small swings; T = SWING_PERIOD).
  * - The run: a straight line of RUN_UP m (shorter where the jib's reach asks) that ends over the
- *   piece, at constant speed over half a period (RUN_STEPS moves); the ball meets the piece at up to
- *   2 x 6 / 2.3 = 5 m/s as the hook stops over it. Of RUN_DIRECTIONS directions around the piece,
- *   the run takes the one with the fewest other pieces (standing or fallen) in the ball's way (a run along
- *   the jib's arc, as before, hit a wall's end brick and stopped short of the brick tapped), then
- *   the one nearest the hook. Measured with taps one after another on levels 1 to 3: the ball
- *   reached the piece tapped in 6 of 18 swings along the arc (and moved it in 11).
- * - Wind-up: to the run's start, hoisted so the ball's centre passes at the piece's height, over a
- *   whole number of swing periods (a constant-speed move of one period leaves little swing behind).
- *   Skipped when the hook is already there.
+ *   piece, at constant speed over half a period (RUN_STEPS moves); the ball meets the piece at
+ *   2 x 6 / 2.3 = 5 m/s and more as the hook stops over it. Of RUN_DIRECTIONS directions around the
+ *   piece, the run takes the one with the fewest other pieces (standing or fallen) in the ball's
+ *   way (a run along the jib's arc hit a wall's end brick and stopped short of the brick tapped),
+ *   then the one whose start is nearest the hook.
+ * - The wind-up before it: a straight move to the run's start, hoisted so the ball's centre passes
+ *   at the piece's height, over the fewest odd half periods the crane's rates allow (one, 2.3 s,
+ *   when the start is within reach of them) if the hook is within SIDE_LEFT of the run's line (as
+ *   a hook near the piece is): the ball comes to the run's start swinging along the line, which the
+ *   run turns into speed toward the piece (a hook backing away from the piece before the run adds
+ *   to the hit). Skipped when the hook is already there. A ball still swinging from the last swing
+ *   would meet the run off its line: then the wind-up takes whole periods, as many as the sway
+ *   damping needs to bring the swing under SWING_LEFT, and the ball starts the run at rest.
  */
 export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number): void {
   const P = world.components.Position;
@@ -378,7 +388,21 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     const r = Math.hypot(x, z);
     return r >= RADIUS_RANGE[0] - 1e-9 && r <= RADIUS_RANGE[1] + 1e-9;
   };
-  let best: { sx: number; sz: number; blocked: number; away: number } | null = null;
+  /** Pieces, standing or fallen, the ball (at the piece's height) would meet from (sx, sz) along (dx, dz) for `length` m. */
+  const blockedOn = (sx: number, sz: number, dx: number, dz: number, length: number): number => {
+    let blocked = 0;
+    for (const q of h.pieces) {
+      if (q.body === piece) continue;
+      const qx = P.x[q.body]! - sx,
+        qy = P.y[q.body]! - ballY,
+        qz = P.z[q.body]! - sz;
+      const along = Math.min(length - 0.3, Math.max(0, qx * dx + qz * dz));
+      const d = Math.hypot(qx - along * dx, qy, qz - along * dz);
+      if (d < BALL_RADIUS + Math.max(...q.half) + 0.05) blocked++;
+    }
+    return blocked;
+  };
+  let best: { sx: number; sz: number; blocked: number; away: number; side: number } | null = null;
   for (const length of [RUN_UP, 0.75 * RUN_UP, 0.5 * RUN_UP]) {
     for (let i = 0; i < RUN_DIRECTIONS; i++) {
       const t = (2 * Math.PI * i) / RUN_DIRECTIONS;
@@ -389,57 +413,54 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
       let ok = true;
       for (let k = 0; k <= RUN_STEPS && ok; k++) ok = reachable(sx + ((ex - sx) * k) / RUN_STEPS, sz + ((ez - sz) * k) / RUN_STEPS);
       if (!ok) continue;
-      // Pieces, standing or fallen, the ball (at the piece's height) would meet on the way there.
-      let blocked = 0;
-      for (const q of h.pieces) {
-        if (q.body === piece) continue;
-        const qx = P.x[q.body]! - sx,
-          qy = P.y[q.body]! - ballY,
-          qz = P.z[q.body]! - sz;
-        const along = Math.min(length - 0.3, Math.max(0, qx * dx + qz * dz));
-        const d = Math.hypot(qx - along * dx, qy, qz - along * dz);
-        if (d < BALL_RADIUS + Math.max(...q.half) + 0.05) blocked++;
-      }
+      const blocked = blockedOn(sx, sz, dx, dz, length);
       const away = Math.hypot(sx - hx, sz - hz);
+      // How far the hook is off the run's line (a wind-up across it would send the ball in sideways).
+      const side = Math.abs((sx - hx) * dz - (sz - hz) * dx);
       if (best === null || blocked < best.blocked || (blocked === best.blocked && away < best.away - 1e-9))
-        best = { sx, sz, blocked, away };
+        best = { sx, sz, blocked, away, side };
     }
     if (best !== null) break;
   }
   const moves: CraneMove[] = [];
   const at = (x: number, z: number): { angle: number; radius: number } => ({ angle: Math.atan2(-z, x), radius: Math.hypot(x, z) });
+  /** RUN_STEPS straight moves from (x0, z0) to (x1, z1) over `duration` s in all, the hook's height going from y0 to `height`. */
+  const straight = (x0: number, z0: number, x1: number, z1: number, y0: number, duration: number, run: boolean): void => {
+    for (let k = 1; k <= RUN_STEPS; k++) {
+      const f = k / RUN_STEPS;
+      const y = y0 + (height - y0) * f;
+      moves.push({ ...at(x0 + (x1 - x0) * f, z0 + (z1 - z0) * f), height: y, duration: duration / RUN_STEPS, elapsed: 0, run });
+    }
+  };
+  // How far the ball swings from under the hook now, m (its offset and its relative velocity over the swing's angular frequency).
+  const V = world.components.Velocity,
+    b = h.ball,
+    tr = h.trolley,
+    w = (2 * Math.PI) / SWING_PERIOD;
+  const amp = Math.hypot(P.x[b]! - P.x[tr]!, P.z[b]! - P.z[tr]!, (V.x[b]! - V.x[tr]!) / w, (V.z[b]! - V.z[tr]!) / w);
+  const half = SWING_PERIOD / 2;
   if (best === null) {
     // Nowhere to run from (cannot happen inside the jib's reach): straight to the piece.
-    moves.push({ ...at(ex, ez), height, duration: SWING_PERIOD / 2, elapsed: 0, run: true });
+    moves.push({ ...at(ex, ez), height, duration: half, elapsed: 0, run: true });
   } else {
     const start = at(best.sx, best.sz);
     // A ball still swinging from the last swing would meet the run off its line: the wind-up lasts
     // the whole periods the sway damping needs to bring the swing's amplitude under SWING_LEFT.
-    const V = world.components.Velocity,
-      b = h.ball,
-      tr = h.trolley,
-      w = (2 * Math.PI) / SWING_PERIOD;
-    const amp = Math.hypot(P.x[b]! - P.x[tr]!, P.z[b]! - P.z[tr]!, (V.x[b]! - V.x[tr]!) / w, (V.z[b]! - V.z[tr]!) / w);
     const settle = amp > SWING_LEFT ? Math.ceil((SWAY_DAMPING_TIME * Math.log(amp / SWING_LEFT)) / SWING_PERIOD) : 0;
-    if (settle > 0 || best.away > 0.5 || Math.abs(height - c.height) > 0.3) {
-      // As many whole periods as the crane's rates need.
-      const need = Math.max(
-        Math.abs(wrap(start.angle - c.angle)) / SLEW_RATE,
-        Math.abs(start.radius - c.radius) / TROLLEY_SPEED,
-        Math.abs(height - c.height) / HOIST_SPEED,
-      );
-      moves.push({ ...start, height, duration: Math.max(1, Math.ceil(need / SWING_PERIOD), settle) * SWING_PERIOD, elapsed: 0 });
-    }
-    for (let k = 1; k <= RUN_STEPS; k++) {
-      const f = k / RUN_STEPS;
-      moves.push({
-        ...at(best.sx + (ex - best.sx) * f, best.sz + (ez - best.sz) * f),
-        height,
-        duration: SWING_PERIOD / 2 / RUN_STEPS,
-        elapsed: 0,
-        run: true,
-      });
-    }
+    // The time the crane's rates need to reach the run's start.
+    const need = Math.max(
+      Math.abs(wrap(start.angle - c.angle)) / SLEW_RATE,
+      Math.abs(start.radius - c.radius) / TROLLEY_SPEED,
+      Math.abs(height - c.height) / HOIST_SPEED,
+    );
+    // Half periods the wind-up takes: the fewest odd ones the rates allow (the ball starts the run
+    // swinging along its line), unless as many whole periods are as quick or the hook is off the
+    // run's line by more than SIDE_LEFT (a swing across the line would carry the ball off it).
+    const odd = 2 * Math.max(0, Math.ceil((need / half - 1) / 2)) + 1,
+      whole = 2 * Math.max(1, Math.ceil(need / SWING_PERIOD), settle);
+    if (settle > 0 || whole < odd || best.side > SIDE_LEFT) moves.push({ ...start, height, duration: whole * half, elapsed: 0 });
+    else if (best.away > 0.5 || Math.abs(height - c.height) > 0.3) straight(hx, hz, best.sx, best.sz, c.height, odd * half, false);
+    straight(best.sx, best.sz, ex, ez, height, half, true);
   }
   h.controls.goal = null;
   h.controls.moves = moves;
